@@ -1,0 +1,39 @@
+#include "app/vm_options.h"
+
+#include <cstdlib>
+
+#include "core/files.h"
+#include "core/paths.h"
+
+namespace squawk::app {
+
+Args::Spec with_vm_flags(Args::Spec spec) {
+  for (const char* f : {"--seed", "--out", "--max-instructions", "--navdata"})
+    spec.value_flags.emplace_back(f);
+  spec.bool_flags.emplace_back("--unsafe");
+  return spec;
+}
+
+Result<script::VmOptions> vm_options(const Args& args) {
+  script::VmOptions o;
+  auto seed = args.get_int("--seed", 0);
+  if (!seed) return seed.status();
+  if (*seed < 0) return Status::invalid("flag --seed expects a non-negative integer");
+  o.seed = static_cast<uint64_t>(*seed);
+  auto maxi = args.get_int("--max-instructions", o.max_instructions);
+  if (!maxi) return maxi.status();
+  o.max_instructions = *maxi;
+  o.unsafe = args.has("--unsafe");
+  if (auto out = args.get("--out")) {
+    SQUAWK_RETURN_IF_ERROR(files::make_dirs(*out));
+    o.out_dir = paths::absolute(*out);
+  }
+  if (auto nav = args.get("--navdata")) {
+    o.navdata_dir = *nav;
+  } else if (const char* env = std::getenv("SQUAWK_NAVDATA"); env && *env) {
+    o.navdata_dir = env;
+  }
+  return o;
+}
+
+}  // namespace squawk::app

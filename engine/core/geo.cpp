@@ -1,0 +1,87 @@
+#include "core/geo.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/units.h"
+
+namespace squawk::geo {
+
+using units::kDeg;
+using units::kNm;
+using units::kREarth;
+
+namespace {
+// Python's floor-mod for the longitude wrap ((x + 180) % 360 - 180).
+double pymod(double a, double m) {
+  double r = std::fmod(a, m);
+  return (r < 0) ? r + m : r;
+}
+}  // namespace
+
+QdrDist kwikqdrdist(double lata, double lona, double latb, double lonb) {
+  const double dlat = (latb - lata) * kDeg;
+  const double dlon = (pymod(lonb - lona + 180.0, 360.0) - 180.0) * kDeg;
+  const double cavelat = std::cos((lata + latb) * kDeg * 0.5);
+  const double dangle = std::sqrt(dlat * dlat + dlon * dlon * cavelat * cavelat);
+  const double dist = kREarth * dangle / kNm;
+  const double qdr = pymod(std::atan2(dlon * cavelat, dlat) / kDeg, 360.0);
+  return {qdr, dist};
+}
+
+double kwikdist_nm(double lata, double lona, double latb, double lonb) {
+  return kwikqdrdist(lata, lona, latb, lonb).dist_nm;
+}
+
+LatLon kwikpos(double lat, double lon, double qdr_deg, double dist_nm) {
+  const double dx = dist_nm * std::sin(qdr_deg * kDeg);
+  const double dy = dist_nm * std::cos(qdr_deg * kDeg);
+  const double dlat = dy / 60.0;
+  const double dlon = dx / std::max(0.01, 60.0 * std::cos(lat * kDeg));
+  return {lat + dlat, pymod(lon + dlon + 180.0, 360.0) - 180.0};
+}
+
+LatLon gc_destination(double lat, double lon, double bearing_deg, double dist_m) {
+  const double R = kREarth;
+  const double phi1 = lat * kDeg, lam1 = lon * kDeg, brg = bearing_deg * kDeg;
+  const double d = dist_m / R;
+  const double phi2 = std::asin(std::sin(phi1) * std::cos(d) + std::cos(phi1) * std::sin(d) * std::cos(brg));
+  const double lam2 = lam1 + std::atan2(std::sin(brg) * std::sin(d) * std::cos(phi1),
+                                        std::cos(d) - std::sin(phi1) * std::sin(phi2));
+  return {phi2 / kDeg, lam2 / kDeg};
+}
+
+double gc_distance_m(double lata, double lona, double latb, double lonb) {
+  const double p1 = lata * kDeg, p2 = latb * kDeg;
+  const double dp = p2 - p1, dl = (lonb - lona) * kDeg;
+  const double a = std::sin(dp / 2) * std::sin(dp / 2) +
+                   std::cos(p1) * std::cos(p2) * std::sin(dl / 2) * std::sin(dl / 2);
+  return 2.0 * kREarth * std::atan2(std::sqrt(a), std::sqrt(std::max(0.0, 1.0 - a)));
+}
+
+double gc_bearing_deg(double lata, double lona, double latb, double lonb) {
+  const double p1 = lata * kDeg, p2 = latb * kDeg, dl = (lonb - lona) * kDeg;
+  const double y = std::sin(dl) * std::cos(p2);
+  const double x = std::cos(p1) * std::sin(p2) - std::sin(p1) * std::cos(p2) * std::cos(dl);
+  return wrap360(std::atan2(y, x) / kDeg);
+}
+
+double wrap360(double deg) {
+  double r = std::fmod(deg, 360.0);
+  if (r < 0) r += 360.0;
+  if (r >= 360.0) r -= 360.0;  // fmod of -tiny + 360 rounds to 360
+  return r;
+}
+
+double wrap180(double deg) {
+  double r = wrap360(deg);
+  return r > 180.0 ? r - 360.0 : r;
+}
+
+double gym_wrap180(double deg) {
+  if (deg > 180.0) return -(360.0 - deg);
+  if (deg < -180.0) return 360.0 + deg;
+  return deg;
+}
+
+}  // namespace squawk::geo

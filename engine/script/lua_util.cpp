@@ -1,0 +1,111 @@
+#include "script/lua_util.h"
+
+namespace squawk::script {
+
+std::string type_error(lua_State* L, int idx, const char* name, const char* expected) {
+  lua_Debug ar;
+  std::string fn = "?";
+  if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) fn = ar.name;
+  return "bad argument #" + std::to_string(idx) + " '" + name + "' to '" + fn + "': expected " +
+         expected + ", got " + luaL_typename(L, idx);
+}
+
+double arg_number(lua_State* L, int idx, const char* name) {
+  int ok = 0;
+  double v = lua_tonumberx(L, idx, &ok);
+  if (!ok) throw ArgError(type_error(L, idx, name, "number"));
+  return v;
+}
+
+double opt_number(lua_State* L, int idx, const char* name, double fallback) {
+  return lua_isnoneornil(L, idx) ? fallback : arg_number(L, idx, name);
+}
+
+long long arg_integer(lua_State* L, int idx, const char* name) {
+  int ok = 0;
+  lua_Integer v = lua_tointegerx(L, idx, &ok);
+  if (!ok) throw ArgError(type_error(L, idx, name, "integer"));
+  return v;
+}
+
+long long opt_integer(lua_State* L, int idx, const char* name, long long fallback) {
+  return lua_isnoneornil(L, idx) ? fallback : arg_integer(L, idx, name);
+}
+
+std::string arg_string(lua_State* L, int idx, const char* name) {
+  if (lua_type(L, idx) != LUA_TSTRING && lua_type(L, idx) != LUA_TNUMBER)
+    throw ArgError(type_error(L, idx, name, "string"));
+  size_t n = 0;
+  const char* s = lua_tolstring(L, idx, &n);
+  return std::string(s, n);
+}
+
+std::string opt_string(lua_State* L, int idx, const char* name, const std::string& fallback) {
+  return lua_isnoneornil(L, idx) ? fallback : arg_string(L, idx, name);
+}
+
+bool opt_boolean(lua_State* L, int idx, bool fallback) {
+  return lua_isnoneornil(L, idx) ? fallback : lua_toboolean(L, idx) != 0;
+}
+
+double field_number(lua_State* L, int idx, const char* key, double fallback) {
+  idx = lua_absindex(L, idx);
+  lua_getfield(L, idx, key);
+  double v = fallback;
+  if (!lua_isnil(L, -1)) {
+    int ok = 0;
+    v = lua_tonumberx(L, -1, &ok);
+    if (!ok) {
+      std::string t = luaL_typename(L, -1);
+      lua_pop(L, 1);
+      throw ArgError(std::string("field '") + key + "': expected number, got " + t);
+    }
+  }
+  lua_pop(L, 1);
+  return v;
+}
+
+std::string field_string(lua_State* L, int idx, const char* key, const std::string& fallback) {
+  idx = lua_absindex(L, idx);
+  lua_getfield(L, idx, key);
+  std::string v = fallback;
+  if (!lua_isnil(L, -1)) {
+    if (lua_type(L, -1) != LUA_TSTRING && lua_type(L, -1) != LUA_TNUMBER) {
+      std::string t = luaL_typename(L, -1);
+      lua_pop(L, 1);
+      throw ArgError(std::string("field '") + key + "': expected string, got " + t);
+    }
+    size_t n = 0;
+    const char* s = lua_tolstring(L, -1, &n);
+    v.assign(s, n);
+  }
+  lua_pop(L, 1);
+  return v;
+}
+
+bool field_boolean(lua_State* L, int idx, const char* key, bool fallback) {
+  idx = lua_absindex(L, idx);
+  lua_getfield(L, idx, key);
+  bool v = lua_isnil(L, -1) ? fallback : lua_toboolean(L, -1) != 0;
+  lua_pop(L, 1);
+  return v;
+}
+
+void push_squawk_subtable(lua_State* L, const char* name) {
+  lua_getglobal(L, "squawk");
+  if (!lua_istable(L, -1)) {
+    lua_pop(L, 1);
+    lua_newtable(L);
+    lua_pushvalue(L, -1);
+    lua_setglobal(L, "squawk");
+  }
+  if (lua_getfield(L, -1, name) != LUA_TTABLE) {
+    lua_pop(L, 1);
+    lua_newtable(L);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, -3, name);
+  }
+  lua_remove(L, -2);
+}
+
+}  // namespace squawk::script

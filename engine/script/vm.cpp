@@ -1,0 +1,282 @@
+#include "script/vm.h"
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "core/paths.h"
+#include "script/bindings.h"
+#include "script/lua_util.h"
+
+namespace squawk::script {
+
+namespace {
+
+constexpr int kHookEvery = 10000;  // instructions between hook calls
+
+// print: tostring of each argument, tab-separated, newline, to stdout.
+int safe_print(lua_State* L) {
+  const int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    size_t len = 0;
+    const char* s = luaL_tolstring(L, i, &len);
+    if (i > 1) std::fputc('\t', stdout);
+    std::fwrite(s, 1, len, stdout);
+    lua_pop(L, 1);
+  }
+  std::fputc('\n', stdout);
+  std::fflush(stdout);
+  return 0;
+}
+
+// A stand-in for a function the sandbox withholds; upvalue 1 is its name.
+int forbidden(lua_State* L) {
+  const char* name = lua_tostring(L, lua_upvalueindex(1));
+  return luaL_error(L,
+                    "%s is not allowed in the sandbox; run squawk with --unsafe to allow it "
+                    "(only for scripts you trust)",
+                    name);
+}
+
+void set_forbidden(lua_State* L, int table, const char* lib, const char* fn) {
+  table = lua_absindex(L, table);
+  lua_pushfstring(L, "%s.%s", lib, fn);
+  lua_pushcclosure(L, forbidden, 1);
+  lua_setfield(L, table, fn);
+}
+
+// load(chunk, name, mode, env) with mode forced to text.
+int text_only_load(lua_State* L) {
+  lua_settop(L, 4);
+  lua_pushstring(L, "t");
+  lua_replace(L, 3);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, 4, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+// io.open(path, mode) allowing writes only inside the VM's output folder.
+int checked_open(lua_State* L) {
+  const char* path = luaL_checkstring(L, 1);
+  const char* mode = luaL_optstring(L, 2, "r");
+  const bool writes = std::strpbrk(mode, "wa+") != nullptr;
+  if (writes) {
+    const Vm& vm = Vm::of(L);
+    const std::string& out = vm.options().out_dir;
+    if (out.empty())
+      return luaL_error(L,
+                        "writing '%s' is not allowed: the sandbox writes only inside the output "
+                        "folder given with --out DIR (or run with --unsafe)",
+                        path);
+    if (!paths::is_within(path, out))
+      return luaL_error(L, "writing '%s' is not allowed: it is outside the output folder '%s'", path,
+                        out.c_str());
+  }
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_pushvalue(L, 1);
+  lua_pushstring(L, mode);
+  lua_call(L, 2, LUA_MULTRET);
+  return lua_gettop(L) - 2;
+}
+
+// package.searchers entry: Lua files under the allowed folders only.
+int lua_file_searcher(lua_State* L) {
+  const char* name = luaL_checkstring(L, 1);
+  std::string rel = name;
+  for (auto& c : rel)
+    if (c == '.') c = '/';
+  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.require_dirs");
+  const int dirs = lua_gettop(L);
+  const lua_Integer n = luaL_len(L, dirs);
+  luaL_Buffer tried;
+  luaL_buffinit(L, &tried);
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, dirs, i);
+    const char* dir = lua_tostring(L, -1);
+    for (const char* pattern : {"%s/%s.lua", "%s/%s/init.lua"}) {
+      lua_pushfstring(L, pattern, dir, rel.c_str());
+      const char* file = lua_tostring(L, -1);
+      if (FILE* f = std::fopen(file, "r")) {
+        std::fclose(f);
+        if (luaL_loadfilex(L, file, "t") != LUA_OK)
+          return luaL_error(L, "error loading module '%s' from '%s':\n\t%s", name, file,
+                            lua_tostring(L, -1));
+        lua_pushvalue(L, -2);  // file name as second loader argument
+        return 2;
+      }
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  lua_pushfstring(L, "no file '%s.lua' in the allowed folders (scripts/, the script's folder)",
+                  rel.c_str());
+  return 1;
+}
+
+int message_handler(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  if (!msg) {
+    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
+    msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  }
+  luaL_traceback(L, L, msg, 1);
+  return 1;
+}
+
+}  // namespace
+
+void count_hook(lua_State* L, lua_Debug* ar) {
+  Vm& vm = Vm::of(L);
+  vm.instructions_ += kHookEvery;
+  const long long limit = vm.options_.max_instructions;
+  if (limit > 0 && vm.instructions_ >= limit) {
+    lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);  // keep failing if a pcall catches it
+    lua_getinfo(L, "Sl", ar);
+    luaL_error(L,
+               "%s:%d: stopped: the script ran %I Lua instructions, the limit (runaway loop?); "
+               "raise it with --max-instructions N, or 0 for no limit",
+               ar->short_src, ar->currentline, static_cast<lua_Integer>(limit));
+  }
+}
+
+Vm& Vm::of(lua_State* L) { return **static_cast<Vm**>(lua_getextraspace(L)); }
+
+Vm::Vm(VmOptions options) : options_(std::move(options)), rng_(options_.seed) {
+  L_ = luaL_newstate();
+  *static_cast<Vm**>(lua_getextraspace(L_)) = this;
+  open_sandbox();
+  bind_all(L_);
+  if (options_.max_instructions > 0) lua_sethook(L_, count_hook, LUA_MASKCOUNT, kHookEvery);
+}
+
+Vm::~Vm() {
+  if (L_) lua_close(L_);
+}
+
+void Vm::open_sandbox() {
+  lua_State* L = L_;
+  if (options_.unsafe) {
+    luaL_openlibs(L);
+  } else {
+    const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},       {LUA_LOADLIBNAME, luaopen_package},
+                             {LUA_TABLIBNAME, luaopen_table}, {LUA_STRLIBNAME, luaopen_string},
+                             {LUA_MATHLIBNAME, luaopen_math}, {LUA_UTF8LIBNAME, luaopen_utf8},
+                             {LUA_IOLIBNAME, luaopen_io},     {LUA_OSLIBNAME, luaopen_os},
+                             {LUA_COLIBNAME, luaopen_coroutine}};
+    for (const auto& lib : libs) {
+      luaL_requiref(L, lib.name, lib.func, 1);
+      lua_pop(L, 1);
+    }
+    lua_pushglobaltable(L);
+    const int g = lua_gettop(L);
+    lua_pushcfunction(L, safe_print);
+    lua_setfield(L, g, "print");
+    set_forbidden(L, g, "_G", "dofile");
+    set_forbidden(L, g, "_G", "loadfile");
+    lua_getfield(L, g, "load");
+    lua_pushcclosure(L, text_only_load, 1);
+    lua_setfield(L, g, "load");
+
+    lua_getfield(L, g, "os");
+    for (const char* fn : {"execute", "exit", "remove", "rename", "tmpname", "setlocale"})
+      set_forbidden(L, -1, "os", fn);
+    lua_pop(L, 1);
+
+    lua_getfield(L, g, "io");
+    for (const char* fn : {"popen", "tmpfile", "output"}) set_forbidden(L, -1, "io", fn);
+    lua_getfield(L, -1, "open");
+    lua_pushcclosure(L, checked_open, 1);
+    lua_setfield(L, -2, "open");
+    lua_pop(L, 1);
+
+    lua_getfield(L, g, "package");
+    set_forbidden(L, -1, "package", "loadlib");
+    lua_pushstring(L, "");
+    lua_setfield(L, -2, "cpath");
+    lua_pushstring(L, "");
+    lua_setfield(L, -2, "path");
+    lua_getfield(L, -1, "searchers");  // keep the preload searcher, replace the rest
+    const lua_Integer n = luaL_len(L, -1);
+    for (lua_Integer i = n; i >= 2; --i) {
+      lua_pushnil(L);
+      lua_seti(L, -2, i);
+    }
+    lua_pushcfunction(L, lua_file_searcher);
+    lua_seti(L, -2, 2);
+    lua_pop(L, 2);
+    lua_pop(L, 1);  // globals
+  }
+  if (options_.unsafe) {  // the shipped scripts stay reachable in unsafe mode too
+    lua_getglobal(L, "package");
+    lua_getfield(L, -1, "searchers");
+    lua_pushcfunction(L, lua_file_searcher);
+    lua_seti(L, -2, luaL_len(L, -2) + 1);
+    lua_pop(L, 2);
+  }
+  // Folders for `require`: scripts/, extra folders; run_file adds the script's.
+  lua_newtable(L);
+  lua_Integer k = 0;
+  lua_pushstring(L, paths::resource("scripts").c_str());
+  lua_seti(L, -2, ++k);
+  for (const auto& d : options_.require_dirs) {
+    lua_pushstring(L, d.c_str());
+    lua_seti(L, -2, ++k);
+  }
+  lua_setfield(L, LUA_REGISTRYINDEX, "squawk.require_dirs");
+}
+
+Status Vm::call_protected(int nargs) {
+  lua_State* L = L_;
+  const int base = lua_gettop(L) - nargs;
+  lua_pushcfunction(L, message_handler);
+  lua_insert(L, base);
+  const int rc = lua_pcall(L, nargs, 0, base);
+  lua_remove(L, base);
+  if (rc == LUA_OK) return Status::ok();
+  std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
+  lua_pop(L, 1);
+  return Status::error(Code::kInvalidArgument, msg);
+}
+
+Status Vm::run_string(const std::string& code, const std::string& chunkname) {
+  if (luaL_loadbufferx(L_, code.data(), code.size(), ("=" + chunkname).c_str(), "t") != LUA_OK) {
+    std::string msg = lua_tostring(L_, -1);
+    lua_pop(L_, 1);
+    return Status::invalid(msg);
+  }
+  return call_protected(0);
+}
+
+Status Vm::run_file(const std::string& path, const std::vector<std::string>& args) {
+  lua_State* L = L_;
+  // The script's folder joins the require path (first, so local modules win).
+  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.require_dirs");
+  const lua_Integer n = luaL_len(L, -1);
+  for (lua_Integer i = n; i >= 1; --i) {
+    lua_geti(L, -1, i);
+    lua_seti(L, -2, i + 1);
+  }
+  lua_pushstring(L, paths::dirname(path).c_str());
+  lua_seti(L, -2, 1);
+  lua_pop(L, 1);
+
+  lua_createtable(L, static_cast<int>(args.size()), 1);
+  lua_pushstring(L, path.c_str());
+  lua_seti(L, -2, 0);
+  for (size_t i = 0; i < args.size(); ++i) {
+    lua_pushstring(L, args[i].c_str());
+    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setglobal(L, "arg");
+
+  if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK) {
+    std::string msg = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    return Status::invalid(msg);
+  }
+  for (const auto& a : args) lua_pushstring(L, a.c_str());  // also as `...`
+  return call_protected(static_cast<int>(args.size()));
+}
+
+}  // namespace squawk::script

@@ -1,0 +1,77 @@
+// Vm: one sandboxed Lua 5.4 state with the squawk API.
+//
+// Sandbox (unless options.unsafe): base functions without dofile/loadfile,
+// `load` restricted to text chunks, string, table, math, utf8, a safe print;
+// `require` finds Lua files only under the shipped scripts/ folder, the running
+// script's folder and options.require_dirs; io.open may write only inside
+// options.out_dir; os.execute, io.popen, package.loadlib and C modules raise an
+// error that says how to allow them (--unsafe).
+// math.random/randomseed draw from the engine Rng seeded with options.seed.
+// An instruction-count hook stops a script after options.max_instructions.
+// Errors come back as Status with "file:line: message" and a traceback.
+//
+// Only files in engine/script/ include lua.h; other code sees lua_State as an
+// opaque type.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/rng.h"
+#include "core/status.h"
+
+struct lua_State;
+struct lua_Debug;
+
+namespace squawk::script {
+
+struct VmOptions {
+  uint64_t seed = 0;
+  bool unsafe = false;
+  std::string out_dir;  // the only folder files may be written to; "" = none
+  long long max_instructions = 500'000'000;  // 0 = no limit
+  std::vector<std::string> require_dirs;       // extra folders for `require`
+  std::string navdata_dir;                     // BlueSky navdata, "" = none
+};
+
+// Counters of the assertion API (check, check_eq, check_near).
+struct CheckCounts {
+  long passed = 0;
+  long failed = 0;
+};
+
+class Vm {
+ public:
+  explicit Vm(VmOptions options);
+  ~Vm();
+  Vm(const Vm&) = delete;
+  Vm& operator=(const Vm&) = delete;
+
+  // Runs a Lua file; `args` become the global `arg` (arg[0] = path).
+  Status run_file(const std::string& path, const std::vector<std::string>& args = {});
+  // Runs Lua source text under `chunkname` (shown in error messages).
+  Status run_string(const std::string& code, const std::string& chunkname);
+
+  const VmOptions& options() const { return options_; }
+  Rng& rng() { return rng_; }
+  CheckCounts& checks() { return checks_; }
+  lua_State* state() { return L_; }
+
+  // The Vm that owns `L` (stored in the state's extra space).
+  static Vm& of(lua_State* L);
+
+ private:
+  void open_sandbox();
+  Status call_protected(int nargs);  // calls the function on top of the stack
+
+  VmOptions options_;
+  Rng rng_;
+  CheckCounts checks_;
+  long long instructions_ = 0;
+  lua_State* L_ = nullptr;
+  friend void count_hook(lua_State* L, ::lua_Debug* ar);
+};
+
+}  // namespace squawk::script
