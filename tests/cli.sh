@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# CLI behaviour of the foundation: exit codes, sandbox messages, error
+# locations, the instruction cap, seeded randomness, `squawk test` totals.
+# usage: tests/cli.sh path/to/squawk   (run from the repo root)
+set -u
+sq=${1:?usage: tests/cli.sh SQUAWK_BINARY}
+d=tests/data/cli
+fails=0
+pass=0
+expect() {  # expect NAME WANT_RC PATTERN -- CMD...
+  local name=$1 want=$2 pattern=$3
+  shift 4
+  local out rc
+  out=$("$@" 2>&1)
+  rc=$?
+  if [ "$rc" -ne "$want" ] || ! grep -qE -- "$pattern" <<<"$out"; then
+    echo "FAIL $name: rc=$rc (want $want), output:"
+    sed 's/^/    /' <<<"$out" | head -20
+    fails=$((fails + 1))
+  else
+    echo "ok   $name"
+    pass=$((pass + 1))
+  fi
+}
+
+expect "help"            0 "subcommands:" -- "$sq" --help
+expect "version"         0 "^squawk [0-9]+\.[0-9]+\.[0-9]+" -- "$sq" --version
+expect "help run"        0 "usage: squawk run" -- "$sq" help run
+expect "no subcommand"   2 "" -- "$sq"
+expect "unknown sub"     2 "unknown subcommand 'frobnicate'" -- "$sq" frobnicate
+expect "unknown flag"    2 "unknown flag '--bogus'" -- "$sq" test --bogus
+expect "missing file"    2 "missing FILE.lua" -- "$sq" run
+expect "bad seed"        2 "--seed expects an integer" -- "$sq" run "$d/args.lua" --seed x
+expect "args"            0 "^2	a	b$" -- "$sq" run "$d/args.lua" a b
+expect "sandbox"         1 "os.execute is not allowed in the sandbox; run squawk with --unsafe" -- "$sq" run "$d/execute.lua"
+expect "unsafe"          0 "^executed$" -- "$sq" run "$d/execute.lua" --unsafe
+expect "module line"     1 "mod.lua:7: value too large: 6" -- "$sq" run "$d/module/main.lua"
+start=$(date +%s)
+expect "runaway"         1 "stopped: the script ran .* Lua instructions" -- "$sq" run "$d/runaway.lua"
+elapsed=$(( $(date +%s) - start ))
+if [ "$elapsed" -gt 5 ]; then echo "FAIL runaway took ${elapsed}s (want <= 5 s)"; fails=$((fails + 1)); fi
+expect "test totals"     1 "^1 passed, 1 failed$" -- "$sq" test "$d/pass_fail"
+expect "test location"   1 "fail.lua:1: check failed: got 4, want 5 \(arithmetic\)" -- "$sq" test "$d/pass_fail"
+a=$("$sq" run "$d/random.lua" --seed 11)
+b=$("$sq" run "$d/random.lua" --seed 11)
+c=$("$sq" run "$d/random.lua" --seed 12)
+if [ -n "$a" ] && [ "$a" = "$b" ] && [ "$a" != "$c" ]; then echo "ok   seeded random"; pass=$((pass + 1));
+else echo "FAIL seeded random: '$a' / '$b' / '$c'"; fails=$((fails + 1)); fi
+
+echo "$pass passed, $fails failed"
+[ "$fails" -eq 0 ]

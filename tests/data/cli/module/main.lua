@@ -1,0 +1,2 @@
+local mod = require "mod"
+print(mod.run(3))

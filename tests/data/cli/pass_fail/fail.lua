@@ -1,0 +1,1 @@
+check_eq(2 + 2, 5, "arithmetic")

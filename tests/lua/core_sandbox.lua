@@ -1,0 +1,17 @@
+-- The sandbox as a script sees it.
+check_eq(type(squawk), "table")
+check_eq(type(squawk.version), "string")
+check(not pcall(os.execute, "true"), "os.execute is withheld")
+local ok, err = pcall(io.popen, "ls")
+check(not ok)
+check(tostring(err):find("--unsafe", 1, true) ~= nil, "the error says how to allow it")
+check_eq(type(string.format), "function")
+check_eq(utf8.char(72, 105), "Hi")
+check_eq(#table.pack(1, 2, 3), 3)
+-- math.random is the engine RNG: a reseed replays the sequence.
+math.randomseed(42)
+local a, b = math.random(), math.random(1, 6)
+math.randomseed(42)
+check_eq(math.random(), a)
+check_eq(math.random(1, 6), b)
+check(a >= 0 and a < 1)

@@ -1,0 +1,124 @@
+// The Lua host: sandbox, require, errors with file:line, instruction cap,
+// engine-seeded math.random, the assertion API.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "core/rng.h"
+#include "script/vm.h"
+
+using namespace squawk;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path scratch() {
+  fs::path d = fs::temp_directory_path() / "squawk-test-vm";
+  fs::create_directories(d);
+  return d;
+}
+void write(const fs::path& p, const std::string& s) { std::ofstream(p) << s; }
+}  // namespace
+
+TEST_CASE("sandbox withholds os.execute, io.popen, loadlib, dofile with a hint") {
+  script::Vm vm({});
+  for (const char* code : {"os.execute('true')", "io.popen('ls')", "package.loadlib('x','y')",
+                           "dofile('/etc/passwd')", "os.remove('x')"}) {
+    Status st = vm.run_string(code, "t.lua");
+    REQUIRE(!st.is_ok());
+    CHECK(st.message().find("not allowed in the sandbox") != std::string::npos);
+    CHECK(st.message().find("--unsafe") != std::string::npos);
+  }
+  // Binary chunks are refused by load.
+  Status st = vm.run_string("local f = load(string.dump(function() end)); assert(f)", "t.lua");
+  CHECK(!st.is_ok());
+}
+
+TEST_CASE("unsafe mode opens the standard library") {
+  script::VmOptions o;
+  o.unsafe = true;
+  script::Vm vm(o);
+  CHECK(vm.run_string("assert(type(os.execute) == 'function'); assert(io.popen)", "t.lua").is_ok());
+}
+
+TEST_CASE("writes only inside the output folder") {
+  const fs::path d = scratch();
+  script::VmOptions o;
+  o.out_dir = (d / "out").string();
+  fs::create_directories(o.out_dir);
+  script::Vm vm(o);
+  const std::string inside = (d / "out" / "a.txt").string();
+  CHECK(vm.run_string("local f = assert(io.open('" + inside + "', 'w')); f:write('x'); f:close()", "t")
+            .is_ok());
+  CHECK(fs::exists(inside));
+  Status st = vm.run_string("io.open('" + (d / "b.txt").string() + "', 'w')", "t");
+  REQUIRE(!st.is_ok());
+  CHECK(st.message().find("outside the output folder") != std::string::npos);
+  script::Vm closed({});
+  st = closed.run_string("io.open('" + inside + "', 'a')", "t");
+  CHECK(st.message().find("--out DIR") != std::string::npos);
+  CHECK(closed.run_string("local f = assert(io.open('" + inside + "', 'r')); f:close()", "t").is_ok());
+}
+
+TEST_CASE("require finds modules next to the script; errors carry file:line") {
+  const fs::path d = scratch() / "req";
+  fs::create_directories(d);
+  write(d / "helper.lua", "local M = {}\n\n\n\n\n\nfunction M.fail() error('deliberate') end\nreturn M\n");
+  write(d / "main.lua", "local h = require 'helper'\nh.fail()\n");
+  script::Vm vm({});
+  Status st = vm.run_file((d / "main.lua").string());
+  REQUIRE(!st.is_ok());
+  CHECK(st.message().find("helper.lua:7: deliberate") != std::string::npos);
+  CHECK(st.message().find("stack traceback") != std::string::npos);
+  CHECK(st.message().find("main.lua:2") != std::string::npos);
+  // Modules outside the allowed folders are not found, with a clear message.
+  st = vm.run_string("require 'no_such_module_xyz'", "t");
+  CHECK(st.message().find("allowed folders") != std::string::npos);
+}
+
+TEST_CASE("instruction cap stops a runaway loop with a clear message") {
+  script::VmOptions o;
+  o.max_instructions = 1'000'000;
+  script::Vm vm(o);
+  Status st = vm.run_string("local x = 0\nwhile true do x = x + 1 end", "loop.lua");
+  REQUIRE(!st.is_ok());
+  CHECK(st.message().find("loop.lua:2:") != std::string::npos);
+  CHECK(st.message().find("--max-instructions") != std::string::npos);
+  // A pcall cannot swallow the stop.
+  script::Vm vm2(o);
+  st = vm2.run_string("while true do pcall(function() while true do end end) end", "p.lua");
+  CHECK(!st.is_ok());
+}
+
+TEST_CASE("math.random draws from the engine RNG: same seed, same numbers") {
+  for (uint64_t seed : {5u, 5u, 77u}) {
+    script::VmOptions o;
+    o.seed = seed;
+    script::Vm vm(o);
+    Rng ref(seed);
+    char code[256];
+    std::snprintf(code, sizeof code, "check_eq(math.random(), %.17g)", ref.uniform());
+    REQUIRE(vm.run_string(code, "t").is_ok());
+    std::snprintf(code, sizeof code, "check_eq(math.random(6), %lld)",
+                  static_cast<long long>(ref.uniform_int(1, 6)));
+    REQUIRE(vm.run_string(code, "t").is_ok());
+    std::snprintf(code, sizeof code, "math.randomseed(3); check_eq(math.random(10, 20), %lld)",
+                  static_cast<long long>(Rng(3).uniform_int(10, 20)));
+    REQUIRE(vm.run_string(code, "t").is_ok());
+    CHECK(vm.checks().passed == 3);
+    CHECK(vm.checks().failed == 0);
+  }
+}
+
+TEST_CASE("assertion API counts and reports") {
+  script::Vm vm({});
+  REQUIRE(vm.run_string("check(true); check_eq(1 + 1, 2); check_near(0.1 + 0.2, 0.3, 1e-12)", "t").is_ok());
+  CHECK(vm.checks().passed == 3);
+  CHECK(vm.checks().failed == 0);
+  REQUIRE(vm.run_string("check(false, 'oops'); check_eq('a', 'b'); check_near(1, 2, 0.5)", "t").is_ok());
+  CHECK(vm.checks().failed == 3);
+  Status st = vm.run_string("check_near('x', 1, 1)", "t");
+  CHECK(!st.is_ok());
+  CHECK(st.message().find("expected number") != std::string::npos);
+}
