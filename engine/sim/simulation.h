@@ -1,0 +1,201 @@
+// Simulation: the traffic simulator (BlueSky-compatible dynamics, clock, run
+// state, conflict detection and resolution).
+//
+// Contract:
+// - Clock: an integer tick count and a step dt (default 0.05 s, BlueSky's
+//   simdt). simt() = t_base + ticks_since_base * dt, so time never drifts;
+//   set_dt() rebases t_base at the current time.
+// - step() advances one dt in BlueSky's order: conflict detection and MVP
+//   (every asas_dt of sim time, when enabled), autopilot (LNAV/VNAV), choice
+//   of autopilot or resolution targets, performance limits, airspeed
+//   (+-axmax, snapping to the target), heading (turn rate
+//   g0 tan(bank)/TAS, snapping to the target), vertical speed, then the
+//   flat-earth position update with R = 6 371 000 m (facts §1.8).
+//   No heap allocation happens in step() once buffers have grown.
+// - Every operation that can fail validates all its arguments first and
+//   leaves the simulation unchanged on error; the message starts with the
+//   aircraft id (or the setting) and names the expected form.
+// - Aircraft ids are case-insensitive and stored upper-case.
+// - Copying a Simulation makes an independent deep copy.
+// - snapshot() is a deterministic byte image of all observable state (clock,
+//   run state, settings, every aircraft field, routes, conflict and
+//   resolution state, RNG state): equal bytes iff equal state.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/rng.h"
+#include "core/status.h"
+#include "sim/conflict.h"
+#include "sim/mvp.h"
+#include "sim/performance.h"
+#include "sim/route.h"
+#include "sim/traffic.h"
+
+namespace squawk::sim {
+
+inline constexpr double kDefaultDt = 0.05;              // [s] BlueSky simdt
+inline constexpr double kDefaultBankDeg = 25.0;         // [deg] BlueSky ap.bankdef
+// [m/s] vertical speed used when none is selected (1500 ft/min).
+inline constexpr double kDefaultVs = 1500.0 * 0.3048 / 60.0;
+
+enum class RunState { kHold = 0, kOp = 1 };
+
+class Simulation {
+ public:
+  explicit Simulation(uint64_t seed = 0);
+
+  // --- Clock and run state -------------------------------------------------
+  double simt() const { return t_base_ + static_cast<double>(ticks_since_base_) * dt_; }  // [s]
+  int64_t ticks() const { return ticks_; }  // steps taken since reset
+  double dt() const { return dt_; }         // [s]
+  // Error unless 0 < dt <= 60 s and finite.
+  Status set_dt(double dt);
+  RunState run_state() const { return run_state_; }
+  void op();    // run (BlueSky OP)
+  void hold();  // pause (BlueSky HOLD)
+  // Fast-time: with a duration [s] >= 0, until simt() + duration; without,
+  // until hold(). Also sets OP.
+  Status fast_forward(std::optional<double> duration);
+  bool fast() const { return ff_; }
+  std::optional<double> ff_end() const { return ff_end_; }  // [s]
+  // Steps as the run state asks, at most max_steps: HOLD none; FF until the
+  // end time (FF then ends, OP stays); OP real-time, wall_s seconds of wall
+  // clock worth of steps (the fraction of a step is carried over).
+  // Returns the number of steps taken.
+  int64_t advance(double wall_s, int64_t max_steps);
+
+  // One step of dt.
+  void step();
+  // Steps while simt() + dt/2 <= t_end, i.e. the steps that end at or before
+  // t_end on the dt grid. Error when t_end is not finite or seconds < 0.
+  Status run_for(double seconds);
+  Status run_until(double t_end);
+
+  // Clears traffic, conflicts and settings, time 0, dt default, HOLD
+  // (BlueSky RESET). The RNG is reseeded with `seed`.
+  void reset(uint64_t seed = 0);
+
+  // --- Traffic --------------------------------------------------------------
+  // Creates an aircraft (BlueSky CRE). casmach: CAS [m/s] or Mach (is_mach).
+  // hdg is wrapped into [0, 360). Errors: empty or duplicate id (naming it),
+  // lat outside [-90, 90], lon outside [-180, 180], non-finite values, alt
+  // outside [-300, 30000] m, speed <= 0.
+  Status create(std::string_view acid, std::string_view actype, double lat, double lon,
+                double hdg_deg, double alt_m, double casmach);
+  // Creates an intruder in conflict with `target` (BlueSky CRECONFS, facts
+  // §1.3): relative track dpsi [deg], dcpa [m] >= 0, tlosh [s] > 0 to
+  // horizontal loss of separation at the current rpz. Optional vertical
+  // geometry: dh [m] altitude offset and tlosv [s] (default tlosh), giving
+  // vs = vs_target - sign(dh) (|dh| - hpz) / tlosv. Optional spd: intruder
+  // ground speed [m/s] (default the target's).
+  Status creconfs(std::string_view acid, std::string_view actype, std::string_view target,
+                  double dpsi_deg, double dcpa_m, double tlosh_s,
+                  std::optional<double> dh_m = std::nullopt,
+                  std::optional<double> tlosv_s = std::nullopt,
+                  std::optional<double> spd = std::nullopt);
+  Status remove(std::string_view acid);
+  // BlueSky MOVE: new position, optionally altitude (also selected), heading
+  // (also selected), speed (CAS/Mach, also selected) and vertical speed.
+  Status move(std::string_view acid, double lat, double lon,
+              std::optional<double> alt_m = std::nullopt,
+              std::optional<double> hdg_deg = std::nullopt,
+              std::optional<double> casmach = std::nullopt,
+              std::optional<double> vs = std::nullopt);
+
+  // --- Autopilot ------------------------------------------------------------
+  // HDG: selected heading [deg], any finite value, wrapped; switches LNAV off.
+  Status set_heading(std::string_view acid, double hdg_deg);
+  // ALT: selected altitude [m] in [-300, 30000], optional |vs| [m/s] > 0;
+  // switches VNAV off.
+  Status set_altitude(std::string_view acid, double alt_m, std::optional<double> vs = std::nullopt);
+  // VS: selected vertical speed magnitude [m/s] (sign ignored; the aircraft
+  // climbs or descends toward its selected altitude); switches VNAV off.
+  Status set_vs(std::string_view acid, double vs);
+  // SPD: selected CAS [m/s] or Mach, > 0; switches VNAV speed off.
+  Status set_speed(std::string_view acid, double casmach);
+  // BANK: bank angle [deg] in (0, 90).
+  Status set_bank(std::string_view acid, double bank_deg);
+  // LNAV / VNAV switches. Turning on needs a route with an active waypoint;
+  // VNAV on also turns LNAV on.
+  Status set_lnav(std::string_view acid, bool on);
+  Status set_vnav(std::string_view acid, bool on);
+
+  // --- Routes ---------------------------------------------------------------
+  // ADDWPT: appends (before the destination). The first waypoint of an empty
+  // route becomes active and switches LNAV on (as BlueSky).
+  Status add_waypoint(std::string_view acid, Waypoint wp);
+  Status add_waypoint_after(std::string_view acid, std::string_view ref, Waypoint wp);
+  Status add_waypoint_before(std::string_view acid, std::string_view ref, Waypoint wp);
+  Status delete_waypoint(std::string_view acid, std::string_view name);
+  // DELRTE: empties the route and switches LNAV and VNAV off.
+  Status delete_route(std::string_view acid);
+  // DIRECT: makes `name` active and switches LNAV on.
+  Status direct_to(std::string_view acid, std::string_view name);
+  Status set_dest(std::string_view acid, Waypoint dest);
+  Status set_orig(std::string_view acid, Waypoint orig);
+
+  // --- Conflict detection and resolution ------------------------------------
+  const CdSettings& cd_settings() const { return cds_; }
+  const CrSettings& cr_settings() const { return crs_; }
+  // ASAS / CDMETHOD ON|OFF. Off clears current pairs and resolutions.
+  void set_cd(bool on);
+  Status set_rpz(double rpz_m);        // > 0
+  Status set_hpz(double hpz_m);        // > 0
+  Status set_dtlook(double dtlook_s);  // > 0
+  Status set_asas_dt(double asas_dt_s);  // > 0
+  // RESO MVP|OFF. On also switches detection on (resolution needs it).
+  void set_reso(bool on);
+  Status set_resofach(double f);  // >= 1
+  Status set_resofacv(double f);  // >= 1
+  void set_reso_vertical(bool on);
+  const ConflictDetector& cd() const { return cd_; }
+  const MvpResolver& cr() const { return cr_; }
+  const std::vector<ConflictPair>& conflicts() const { return cd_.pairs(); }
+  const std::vector<LosPair>& los() const { return cd_.los(); }
+
+  // --- Performance ----------------------------------------------------------
+  const PerformanceOptions& performance_options() const { return perf_opts_; }
+  // Error when a value is not finite or not positive.
+  Status set_performance_options(const PerformanceOptions& opts);
+
+  // --- Access ---------------------------------------------------------------
+  const Traffic& traffic() const { return traf_; }
+  int n() const { return traf_.n(); }
+  int index_of(std::string_view acid) const { return traf_.index_of(acid); }
+  Rng& rng() { return rng_; }
+
+  std::string snapshot() const;
+
+ private:
+  Result<int> lookup(std::string_view acid) const;
+  void update_autopilot();
+  void update_asas();
+  void update_kinematics();
+  void refresh_speed_outputs(int i);
+  void set_heading_cache(int i);
+
+  Traffic traf_;
+  ConflictDetector cd_;
+  MvpResolver cr_;
+  CdSettings cds_;
+  CrSettings crs_;
+  PerformanceOptions perf_opts_;
+  Rng rng_;
+  uint64_t next_uid_ = 1;
+
+  double dt_ = kDefaultDt;        // [s]
+  double t_base_ = 0.0;           // [s] time at the last dt change
+  int64_t ticks_since_base_ = 0;  // steps since the last dt change
+  int64_t ticks_ = 0;             // steps since reset
+  double next_asas_t_ = 0.0;      // [s] sim time of the next detection
+  RunState run_state_ = RunState::kHold;
+  bool ff_ = false;
+  std::optional<double> ff_end_;  // [s]
+  double wall_carry_ = 0.0;       // [s] real time not yet stepped (not observable)
+};
+
+}  // namespace squawk::sim

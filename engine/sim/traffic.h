@@ -1,0 +1,82 @@
+// Traffic: all aircraft state as a structure of arrays.
+//
+// Contract:
+// - Every per-aircraft vector has size n(); index i is the same aircraft in
+//   all of them. Creation appends; deletion erases in place so the remaining
+//   aircraft keep their relative order (BlueSky's ordering: the first created
+//   aircraft stays index 0).
+// - Ids are upper-case and unique; index_of() maps id -> index in O(1).
+// - Fields are written by Simulation only; readers (env, commands, Lua) may
+//   read them directly. Angles in degrees unless the name says rad.
+// - uid is a creation serial number, never reused, used to follow pairs of
+//   aircraft across deletions.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "sim/performance.h"
+#include "sim/route.h"
+
+namespace squawk::sim {
+
+struct Traffic {
+  // Identity
+  std::vector<std::string> id;       // upper-case callsign
+  std::vector<std::string> type;     // upper-case ICAO type designator
+  std::vector<uint64_t> uid;         // creation serial
+
+  // State
+  std::vector<double> lat, lon;      // [deg]
+  std::vector<double> alt;           // [m]
+  std::vector<double> hdg, trk;      // [deg] in [0, 360)
+  std::vector<double> tas, cas, gs;  // [m/s]
+  std::vector<double> mach;          // [-]
+  std::vector<double> gsnorth, gseast;  // [m/s]
+  std::vector<double> vs;            // [m/s] current vertical speed
+  std::vector<double> coslat;        // [-] cos(lat), kept current
+
+  // Autopilot selections (what the pilot flies when no resolution is active)
+  std::vector<double> sel_hdg;       // [deg] selected heading/track
+  std::vector<double> sel_alt;       // [m] selected altitude
+  std::vector<double> sel_spd;       // CAS [m/s] or Mach (is_mach), the selected speed
+  std::vector<double> sel_vs;        // [m/s] selected |vertical speed|; 0 = class default
+  std::vector<double> bank;          // [rad] bank angle used for turns (default 25 deg)
+  std::vector<uint8_t> lnav, vnav;   // 0/1 switches
+  std::vector<Route> route;
+
+  // Performance
+  std::vector<PerfClass> perf_class;
+  std::vector<PerfLimits> perf;      // per-aircraft copy of the class limits
+
+  // Conflict resolution output (mvp.h), followed while cr_active is set
+  std::vector<uint8_t> cr_active;    // 0/1
+  std::vector<double> cr_trk;        // [deg]
+  std::vector<double> cr_tas;        // [m/s]
+  std::vector<double> cr_vs;         // [m/s]
+  std::vector<double> cr_alt;        // [m]
+
+  // Caches kept by Simulation::step (derived state, not observable):
+  std::vector<double> sin_hdg, cos_hdg;  // [-] of hdg
+  std::vector<double> tgt_tas;       // [m/s] TAS meant by sel_spd at tgt_tas_alt
+  std::vector<double> tgt_tas_alt;   // [m] altitude at which tgt_tas was computed (NaN: stale)
+
+  std::unordered_map<std::string, int> index;  // id -> index
+
+  int n() const { return static_cast<int>(id.size()); }
+  // Index of `acid` (case-insensitive), or -1.
+  int index_of(std::string_view acid) const;
+
+  // Appends one aircraft with every field given a neutral value (zeros,
+  // empty route, switches off, bank 25 deg); the caller fills the state.
+  // Precondition: `acid` (upper-case) is not present.
+  int append(const std::string& acid, const std::string& actype, uint64_t serial);
+  // Erases aircraft i, keeping the others' order and the id map consistent.
+  void erase(int i);
+  void clear();
+};
+
+}  // namespace squawk::sim
