@@ -31,6 +31,22 @@ const std::vector<Subcommand>& subcommands() {
        "passes when it ends without error and with no failed check. The last line\n"
        "is `N passed, N failed`; the exit code is 1 when any script failed.\n",
        cmd_test},
+      {"render", "render EPISODE.jsonl      draw a recorded episode as SVG (Fig. 2 style)",
+       "usage: squawk render EPISODE.jsonl [--frame N] [--size PX] [--out FILE.svg|-]\n\n"
+       "Draws a recorded episode top-down, north up: the ownship's and intruders'\n"
+       "tracks, each intruder's separation circle (red while the ownship is inside),\n"
+       "the waypoint with its capture circle, a scale bar and a north arrow.\n"
+       "Episodes are recorded by `squawk demo --record FILE` and `squawk eval --record FILE`.\n"
+       "  --frame N   draw aircraft where they were at recorded frame N (default: last)\n"
+       "  --out FILE  output path (default: the input with .svg; `-` = stdout)\n"
+       "For a PNG: rsvg-convert -o out.png out.svg (Debian package librsvg2-bin).\n",
+       cmd_render},
+      {"plot", "plot RUN_DIR|FILE.csv      draw training curves as SVG (Fig. 3 style)",
+       "usage: squawk plot RUN_DIR|FILE.csv [--out FILE.svg|-]\n\n"
+       "Reads the CSV logs a training run writes (columns episodes, success_rate,\n"
+       "mean_reward) and draws success rate and mean reward against episodes\n"
+       "trained, one line per CSV file. Default output: RUN_DIR/curves.svg.\n",
+       cmd_plot},
   };
   return table;
 }

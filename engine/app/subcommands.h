@@ -11,5 +11,7 @@ using ArgV = std::vector<std::string>;
 
 int cmd_run(const ArgV& args);   // cli_script.cpp
 int cmd_test(const ArgV& args);  // cli_script.cpp
+int cmd_render(const ArgV& args);  // cli_viz.cpp
+int cmd_plot(const ArgV& args);    // cli_viz.cpp
 
 }  // namespace squawk::app

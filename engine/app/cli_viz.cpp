@@ -1,0 +1,101 @@
+// squawk render / squawk plot: SVG pictures of episodes and training curves.
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include "app/cli.h"
+#include "app/subcommands.h"
+#include "core/files.h"
+#include "core/text.h"
+#include "viz/chart.h"
+#include "viz/csv.h"
+#include "viz/scene.h"
+
+namespace fs = std::filesystem;
+
+namespace squawk::app {
+
+namespace {
+
+int write_output(const std::string& out, const std::string& svg) {
+  if (out == "-") {
+    std::fputs(svg.c_str(), stdout);
+    return kExitOk;
+  }
+  Status st = files::write_atomic(out, svg);
+  if (!st.is_ok()) return failure(st);
+  std::printf("wrote %s\n", out.c_str());
+  return kExitOk;
+}
+
+// The first column of `t` whose name is in `names`, or -1.
+int find_column(const viz::Table& t, std::initializer_list<const char*> names) {
+  for (const char* n : names)
+    if (int c = t.column(n); c >= 0) return c;
+  return -1;
+}
+
+}  // namespace
+
+int cmd_render(const ArgV& argv) {
+  auto args = Args::parse(argv, {{"--out", "--frame", "--size"}, {}});
+  if (!args) return usage_error("render", args.status().message());
+  if (args->positional().size() != 1) return usage_error("render", "expected one EPISODE.jsonl");
+  const std::string in = args->positional()[0];
+  auto frame = args->get_int("--frame", -1);
+  auto size = args->get_double("--size", 720);
+  if (!frame) return usage_error("render", frame.status().message());
+  if (!size || *size < 100 || *size > 8000)
+    return usage_error("render", "--size expects pixels between 100 and 8000");
+  auto text = files::read(in);
+  if (!text) return failure(text.status());
+  auto scene = viz::parse_episode_jsonl(*text);
+  if (!scene) return failure(scene.status().with_context(in));
+  const std::string out = args->get_or("--out", fs::path(in).replace_extension(".svg").string());
+  return write_output(out, viz::render_scene(*scene, {*size, static_cast<int>(*frame)}));
+}
+
+int cmd_plot(const ArgV& argv) {
+  auto args = Args::parse(argv, {{"--out"}, {}});
+  if (!args) return usage_error("plot", args.status().message());
+  if (args->positional().size() != 1) return usage_error("plot", "expected one RUN_DIR or FILE.csv");
+  const std::string target = args->positional()[0];
+  std::vector<std::string> csvs;
+  std::error_code ec;
+  if (fs::is_directory(target, ec)) {
+    for (const auto& e : fs::directory_iterator(target, ec))
+      if (e.path().extension() == ".csv") csvs.push_back(e.path().string());
+    std::sort(csvs.begin(), csvs.end());
+  } else if (fs::is_regular_file(target, ec)) {
+    csvs.push_back(target);
+  }
+  if (csvs.empty()) return failure(Status::not_found("no CSV log in '" + target + "'"));
+
+  viz::Panel success{"Average success rate", "episodes trained", "success rate", {}, true, 0, 1};
+  viz::Panel reward{"Average reward", "episodes trained", "mean episode reward", {}, false, 0, 0};
+  const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
+  size_t used = 0;
+  for (const auto& path : csvs) {
+    auto text = files::read(path);
+    if (!text) return failure(text.status());
+    auto table = viz::parse_csv(*text);
+    if (!table) return failure(table.status().with_context(path));
+    const int x = find_column(*table, {"episodes", "episode", "episodes_trained"});
+    const int s = find_column(*table, {"success_rate", "success"});
+    const int r = find_column(*table, {"mean_reward", "reward"});
+    if (x < 0 || (s < 0 && r < 0)) continue;
+    const std::string label = fs::path(path).stem().string();
+    const std::string colour = colours[used++ % 5];
+    if (s >= 0) success.series.push_back({label, table->values(x), table->values(s), colour});
+    if (r >= 0) reward.series.push_back({label, table->values(x), table->values(r), colour});
+  }
+  if (used == 0)
+    return failure(Status::invalid("no CSV in '" + target +
+                                   "' has an episodes column and a success_rate or mean_reward column"));
+  const std::string out = args->get_or(
+      "--out", fs::is_directory(target, ec) ? (fs::path(target) / "curves.svg").string()
+                                             : fs::path(target).replace_extension(".svg").string());
+  return write_output(out, viz::panels_svg({success, reward}));
+}
+
+}  // namespace squawk::app
