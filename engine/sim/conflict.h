@@ -1,7 +1,8 @@
 // State-based conflict detection (BlueSky asas/statebased.py; facts §3.2).
 //
 // For every ordered pair (i ownship, j intruder), with kwikqdrdist positions
-// (R = 6 371 000 m) and no-wind ground velocities:
+// (R = 6 371 000 m), ground velocities (gseast, gsnorth) and relative
+// position/velocity of j with respect to i:
 //   tcpa = -(du dx + dv dy) / dv2,  dcpa^2 = |dist^2 - tcpa^2 dv2|,
 //   horizontal window tcpa -+ sqrt(R^2 - dcpa^2)/vrel, vertical window from
 //   (dalt -+ H) / -dvs (IEEE infinities when dvs = 0),
@@ -51,7 +52,8 @@ struct LosPair {
 class ConflictDetector {
  public:
   // Runs detection over all aircraft of `traf` with settings `s`.
-  // Fills pairs() and los() (both orders, own < intruder first) and updates
+  // Fills pairs() and los() (both orders, sorted by own then intruder, as
+  // BlueSky's confpairs) and updates
   // the per-aircraft inconf flags and the cumulative counts.
   void detect(const Traffic& traf, const CdSettings& s);
   // Forgets current pairs (CD switched off or traffic reset); cumulative
@@ -81,8 +83,9 @@ class ConflictDetector {
   std::vector<uint8_t> inconf_;
   // uid pairs (low, high) of the previous detection, sorted, for the counts.
   std::vector<std::pair<uint64_t, uint64_t>> prev_conf_, prev_los_, cur_conf_, cur_los_;
-  // Per-aircraft scratch (half-angle latitude terms, velocities).
-  std::vector<double> chl_, shl_, u_, v_;
+  // Per-aircraft scratch: half-latitude cos/sin, candidate flags.
+  std::vector<double> chl_, shl_;
+  std::vector<uint8_t> flag_;
   int64_t total_conf_ = 0;
   int64_t total_los_ = 0;
 };

@@ -7,16 +7,19 @@
 // zone, the 10 m head-on guard) and both aircraft take their share:
 // dv_i -= dv_mvp summed over i's conflicts. The new ground velocity gives
 // cr_trk and cr_tas (clipped to the aircraft's [vmin, vmax] as TAS at its
-// altitude); cr_vs keeps the current vs and cr_alt = sel_alt.
-// The vertical component is computed per facts §3.3 step 6 and halved, but
-// only applied when `vertical` is set (BlueSky's RMETHV, off by default).
+// altitude). The vertical component (facts §3.3 step 6, halved) gives cr_vs
+// (clipped to [vsmin, vsmax]); it is flown only when `vertical` is set
+// (BlueSky's RMETHV, off by default), with cr_alt = alt + cr_vs * max tcpa
+// (a simplification of BlueSky's level-off rule). Otherwise the vertical
+// autopilot is unaffected (cr_alt = sel_alt).
 //
 // Resume (PASTCPA): every detected conflict pair joins a set of resolution
 // pairs; an aircraft stays cr_active while one of its pairs is not yet past
 // CPA (dot(d_rel, v_rel) <= 0), in horizontal LoS, or "bouncing"
 // (|trk_i - trk_j| < 30 deg and distance < R resofach). When it has none
 // left, cr_active is cleared and, if its route has an active waypoint, LNAV
-// resumes DIRECT to it.
+// resumes DIRECT to it; otherwise it returns to its selected heading and speed.
+// The track difference of the bouncing test is wrapped to (-180, 180].
 #pragma once
 
 #include <cstdint>
@@ -42,8 +45,9 @@ class MvpResolver {
   // Computes cr_* for every aircraft in a current conflict of `cd` and sets
   // cr_active; then applies the PASTCPA resume rule to all resolution pairs.
   // Needs cd.detect() to have run on the same traffic.
+  // `po` supplies the ground cap for the speed clip.
   void resolve(Traffic& traf, const ConflictDetector& cd, const CdSettings& cds,
-               const CrSettings& crs);
+               const CrSettings& crs, const PerformanceOptions& po);
   // Drops resolution pairs involving the aircraft with this uid.
   void on_erase(uint64_t uid);
   void clear();
@@ -53,8 +57,11 @@ class MvpResolver {
   void serialize(std::string& out) const;
 
  private:
+  void resume(Traffic& traf, const CdSettings& cds, const CrSettings& crs);
+
   std::vector<std::pair<uint64_t, uint64_t>> reso_pairs_;
   std::vector<double> dve_, dvn_, dvz_;          // per-aircraft scratch [m/s]
+  std::vector<double> tsol_;                     // per-aircraft scratch [s]
   std::vector<int8_t> keep_;                     // per-aircraft scratch: -1 none, 0 off, 1 on
   std::vector<std::pair<uint64_t, uint64_t>> scratch_;
 };

@@ -78,6 +78,10 @@ class Simulation {
   // Clears traffic, conflicts and settings, time 0, dt default, HOLD
   // (BlueSky RESET). The RNG is reseeded with `seed`.
   void reset(uint64_t seed = 0);
+  // Deletes every aircraft and the conflict/resolution state (cumulative
+  // counts included); clock, run state and settings stay (BlueSky's
+  // traf.reset(), what BlueSky-Gym calls on every episode).
+  void delete_all();
 
   // --- Traffic --------------------------------------------------------------
   // Creates an aircraft (BlueSky CRE). casmach: CAS [m/s] or Mach (is_mach).
@@ -115,7 +119,8 @@ class Simulation {
   // VS: selected vertical speed magnitude [m/s] (sign ignored; the aircraft
   // climbs or descends toward its selected altitude); switches VNAV off.
   Status set_vs(std::string_view acid, double vs);
-  // SPD: selected CAS [m/s] or Mach, > 0; switches VNAV speed off.
+  // SPD: selected CAS [m/s] or Mach, > 0. With VNAV on, passing a waypoint
+  // with a speed constraint replaces it.
   Status set_speed(std::string_view acid, double casmach);
   // BANK: bank angle [deg] in (0, 90).
   Status set_bank(std::string_view acid, double bank_deg);
@@ -172,6 +177,15 @@ class Simulation {
 
  private:
   Result<int> lookup(std::string_view acid) const;
+  Status check_new_id(std::string_view acid, std::string_view actype) const;
+  // Appends a validated aircraft flying at `tas` [m/s] with selected speed
+  // sel_spd (CAS or Mach); returns its index.
+  int add_aircraft(std::string_view acid, std::string_view actype, double lat, double lon,
+                   double hdg_deg, double alt_m, double tas, double sel_spd);
+  // Runs a route mutation of aircraft `acid` and updates LNAV/VNAV: on when
+  // the route gains its first active waypoint, off when none is left.
+  template <class Op>
+  Status route_op(std::string_view acid, Op&& op);
   void update_autopilot();
   void update_asas();
   void update_kinematics();

@@ -1,0 +1,67 @@
+#include "sim/atmosphere.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace squawk::sim {
+
+namespace {
+constexpr double kTStrat = 216.65;            // [K] isothermal layer temperature
+constexpr double kTropExp = 4.256848030018761;  // [-] -(g0 / (R L)) - 1 for the density ratio
+constexpr double kStratScale = 6341.552161;   // [m] density scale height above the tropopause
+}  // namespace
+
+double isa_temperature(double alt_m) { return std::max(kT0 + kLapse * alt_m, kTStrat); }
+
+double isa_density(double alt_m) {
+  const double t = isa_temperature(alt_m);
+  const double rho_trop = kRho0 * std::pow(t / kT0, kTropExp);
+  const double above = std::max(0.0, alt_m - kTropopause);
+  return rho_trop * std::exp(-above / kStratScale);
+}
+
+double isa_pressure(double alt_m) { return isa_density(alt_m) * kRGas * isa_temperature(alt_m); }
+
+Atmos isa(double alt_m) {
+  const double t = isa_temperature(alt_m);
+  const double rho = isa_density(alt_m);
+  return {rho * kRGas * t, rho, t};
+}
+
+double speed_of_sound(double alt_m) { return std::sqrt(kGamma * kRGas * isa_temperature(alt_m)); }
+
+double tas_to_cas(double tas, double alt_m) {
+  const Atmos a = isa(alt_m);
+  const double qdyn = a.p * (std::pow(1.0 + a.rho * tas * tas / (7.0 * a.p), 3.5) - 1.0);
+  const double cas = std::sqrt(7.0 * kP0 / kRho0 * (std::pow(qdyn / kP0 + 1.0, 2.0 / 7.0) - 1.0));
+  return tas < 0 ? -cas : cas;
+}
+
+double cas_to_tas(double cas, double alt_m) {
+  const Atmos a = isa(alt_m);
+  const double qdyn = kP0 * (std::pow(1.0 + kRho0 * cas * cas / (7.0 * kP0), 3.5) - 1.0);
+  const double tas = std::sqrt(7.0 * a.p / a.rho * (std::pow(1.0 + qdyn / a.p, 2.0 / 7.0) - 1.0));
+  return cas < 0 ? -tas : tas;
+}
+
+double tas_to_mach(double tas, double alt_m) { return tas / speed_of_sound(alt_m); }
+double mach_to_tas(double mach, double alt_m) { return mach * speed_of_sound(alt_m); }
+double cas_to_mach(double cas, double alt_m) { return tas_to_mach(cas_to_tas(cas, alt_m), alt_m); }
+double mach_to_cas(double mach, double alt_m) { return tas_to_cas(mach_to_tas(mach, alt_m), alt_m); }
+
+bool is_mach(double spd) { return spd > 0.1 && spd < kCasMachThreshold; }
+
+AirSpeeds casormach(double spd, double alt_m) {
+  if (is_mach(spd)) {
+    const double tas = mach_to_tas(spd, alt_m);
+    return {tas, tas_to_cas(tas, alt_m), spd};
+  }
+  const double tas = cas_to_tas(spd, alt_m);
+  return {tas, spd, tas_to_mach(tas, alt_m)};
+}
+
+double casormach_to_tas(double spd, double alt_m) {
+  return is_mach(spd) ? mach_to_tas(spd, alt_m) : cas_to_tas(spd, alt_m);
+}
+
+}  // namespace squawk::sim

@@ -1,0 +1,157 @@
+#include "sim/route.h"
+
+#include <cmath>
+
+#include "core/geo.h"
+#include "core/text.h"
+#include "core/units.h"
+#include "sim/byte_image.h"
+
+namespace squawk::sim {
+
+namespace {
+std::string wp_error(const Waypoint& wp, const char* what) {
+  std::string m = "waypoint ";
+  m.append(text::quoted(wp.name)).append(": ").append(what);
+  return m;
+}
+Status not_in_route(std::string_view name) {
+  return Status::not_found(std::string("waypoint ").append(text::quoted(name)).append(" is not in the route"));
+}
+Waypoint normalized(Waypoint wp) {
+  wp.name = text::upper(text::trim(wp.name));
+  return wp;
+}
+}  // namespace
+
+int Route::find(std::string_view name) const {
+  for (size_t k = 0; k < wps_.size(); ++k)
+    if (text::iequals(wps_[k].name, name)) return static_cast<int>(k);
+  return -1;
+}
+
+Status Route::validate(const Waypoint& wp) const {
+  if (text::trim(wp.name).empty()) return Status::invalid("waypoint: empty name, expected a waypoint name");
+  if (!std::isfinite(wp.lat) || wp.lat < -90.0 || wp.lat > 90.0)
+    return Status::invalid(wp_error(wp, "latitude must be a number in [-90, 90] deg"));
+  if (!std::isfinite(wp.lon) || wp.lon < -180.0 || wp.lon > 180.0)
+    return Status::invalid(wp_error(wp, "longitude must be a number in [-180, 180] deg"));
+  if (wp.has_alt() && (!std::isfinite(wp.alt) || wp.alt < -300.0))
+    return Status::invalid(wp_error(wp, "altitude constraint must be a finite altitude >= -300 m"));
+  if (wp.has_spd() && (!std::isfinite(wp.spd) || wp.spd <= 0.0))
+    return Status::invalid(wp_error(wp, "speed constraint must be a positive CAS or Mach"));
+  return Status::ok();
+}
+
+Status Route::add(Waypoint wp) {
+  SQUAWK_RETURN_IF_ERROR(validate(wp));
+  const int at = dest_.empty() ? size() : size() - 1;
+  wps_.insert(wps_.begin() + at, normalized(std::move(wp)));
+  if (active_ < 0) active_ = at;
+  else if (active_ >= at) ++active_;
+  return Status::ok();
+}
+
+Status Route::insert_after(std::string_view ref, Waypoint wp) {
+  SQUAWK_RETURN_IF_ERROR(validate(wp));
+  const int k = find(ref);
+  if (k < 0) return not_in_route(ref);
+  if (!dest_.empty() && k == size() - 1)
+    return Status::invalid(std::string("waypoint ").append(text::quoted(ref)).append(" is the destination; nothing can follow it"));
+  wps_.insert(wps_.begin() + k + 1, normalized(std::move(wp)));
+  if (active_ > k) ++active_;
+  return Status::ok();
+}
+
+Status Route::insert_before(std::string_view ref, Waypoint wp) {
+  SQUAWK_RETURN_IF_ERROR(validate(wp));
+  const int k = find(ref);
+  if (k < 0) return not_in_route(ref);
+  wps_.insert(wps_.begin() + k, normalized(std::move(wp)));
+  if (active_ >= k) ++active_;
+  return Status::ok();
+}
+
+Status Route::remove(std::string_view name) {
+  const int k = find(name);
+  if (k < 0) return not_in_route(name);
+  if (!dest_.empty() && k == size() - 1) dest_.clear();
+  wps_.erase(wps_.begin() + k);
+  if (active_ > k) --active_;
+  if (active_ >= size()) active_ = -1;
+  return Status::ok();
+}
+
+void Route::clear() {
+  wps_.clear();
+  active_ = -1;
+  dest_.clear();
+  orig_name_.clear();
+  orig_lat_ = orig_lon_ = 0.0;
+}
+
+Status Route::direct_to(std::string_view name) {
+  const int k = find(name);
+  if (k < 0) return not_in_route(name);
+  active_ = k;
+  return Status::ok();
+}
+
+Status Route::set_dest(Waypoint dest) {
+  SQUAWK_RETURN_IF_ERROR(validate(dest));
+  Waypoint wp = normalized(std::move(dest));
+  if (!dest_.empty()) {
+    wps_.back() = wp;
+  } else {
+    wps_.push_back(wp);
+    if (active_ < 0) active_ = size() - 1;
+  }
+  dest_ = wp.name;
+  return Status::ok();
+}
+
+Status Route::set_orig(Waypoint orig) {
+  SQUAWK_RETURN_IF_ERROR(validate(orig));
+  orig_name_ = text::upper(text::trim(orig.name));
+  orig_lat_ = orig.lat;
+  orig_lon_ = orig.lon;
+  return Status::ok();
+}
+
+bool Route::advance() {
+  if (active_ < 0) return false;
+  if (active_ + 1 >= size()) {
+    active_ = -1;
+    return false;
+  }
+  ++active_;
+  return true;
+}
+
+void Route::serialize(std::string& out) const {
+  using bytes::put;
+  put<int64_t>(out, static_cast<int64_t>(wps_.size()));
+  for (const Waypoint& w : wps_) {
+    bytes::put_str(out, w.name);
+    put(out, w.lat);
+    put(out, w.lon);
+    put(out, w.has_alt() ? w.alt : -1e300);  // one fixed image for "no constraint"
+    put(out, w.has_spd() ? w.spd : -1e300);
+    put<uint8_t>(out, w.flyover ? 1 : 0);
+  }
+  put<int64_t>(out, active_);
+  bytes::put_str(out, dest_);
+  bytes::put_str(out, orig_name_);
+  put(out, orig_lat_);
+  put(out, orig_lon_);
+}
+
+bool waypoint_reached(double dist, double qdr, double next_qdr, double trk, double tas, double bank) {
+  const double turn_radius = tas * tas / (units::kG0 * std::tan(bank));
+  const double dpsi = std::fabs(geo::wrap180(next_qdr - qdr)) * units::kDeg;
+  const double turn_dist = std::fabs(turn_radius * std::tan(0.5 * dpsi));
+  const bool away = std::fabs(geo::wrap180(trk - qdr)) > 90.0;
+  return dist < turn_dist || (away && dist < 1.02 * turn_radius);
+}
+
+}  // namespace squawk::sim

@@ -1,0 +1,629 @@
+#include "sim/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/geo.h"
+#include "core/text.h"
+#include "core/units.h"
+#include "sim/atmosphere.h"
+#include "sim/byte_image.h"
+
+namespace squawk::sim {
+
+using units::kDeg;
+using units::kREarth;
+
+namespace {
+constexpr double kMinAlt = -300.0;    // [m] lowest accepted altitude
+constexpr double kMaxAlt = 30000.0;   // [m] highest accepted altitude
+constexpr double kTasEps = 1e-6;      // [m/s] floor of TAS in the turn rate
+
+std::string num(double v) { return text::fmt_double(v, 6); }
+
+// "<ACID>: <what>" as an invalid-argument Status.
+Status bad(std::string_view who, const std::string& what) {
+  std::string m(who);
+  m.append(": ").append(what);
+  return Status::invalid(std::move(m));
+}
+
+Status check_latlon(std::string_view who, double lat, double lon) {
+  if (!std::isfinite(lat) || lat < -90.0 || lat > 90.0)
+    return bad(who, "latitude " + num(lat) + " is not in [-90, 90] deg");
+  if (!std::isfinite(lon) || lon < -180.0 || lon > 180.0)
+    return bad(who, "longitude " + num(lon) + " is not in [-180, 180] deg");
+  return Status::ok();
+}
+
+Status check_alt(std::string_view who, double alt) {
+  if (!std::isfinite(alt) || alt < kMinAlt || alt > kMaxAlt)
+    return bad(who, "altitude " + num(alt) + " m is not in [-300, 30000] m");
+  return Status::ok();
+}
+
+Status check_positive(std::string_view who, const char* what, double v) {
+  if (!std::isfinite(v) || v <= 0.0) {
+    std::string m(what);
+    m.append(" ").append(num(v)).append(" must be a positive number");
+    return bad(who, m);
+  }
+  return Status::ok();
+}
+
+Status check_finite(std::string_view who, const char* what, double v) {
+  if (!std::isfinite(v)) {
+    std::string m(what);
+    m.append(" must be a finite number");
+    return bad(who, m);
+  }
+  return Status::ok();
+}
+}  // namespace
+
+Simulation::Simulation(uint64_t seed) : rng_(seed) {}
+
+// --- Clock and run state ----------------------------------------------------
+
+Status Simulation::set_dt(double dt) {
+  if (!std::isfinite(dt) || dt <= 0.0 || dt > 60.0)
+    return bad("DT", "time step " + num(dt) + " s is not in (0, 60] s");
+  t_base_ = simt();
+  ticks_since_base_ = 0;
+  dt_ = dt;
+  return Status::ok();
+}
+
+void Simulation::op() { run_state_ = RunState::kOp; }
+
+void Simulation::hold() {
+  run_state_ = RunState::kHold;
+  ff_ = false;
+  ff_end_.reset();
+}
+
+Status Simulation::fast_forward(std::optional<double> duration) {
+  if (duration && (!std::isfinite(*duration) || *duration < 0.0))
+    return bad("FF", "duration " + num(*duration) + " s must be a finite number >= 0");
+  ff_ = true;
+  ff_end_.reset();
+  if (duration) ff_end_ = simt() + *duration;
+  run_state_ = RunState::kOp;
+  return Status::ok();
+}
+
+int64_t Simulation::advance(double wall_s, int64_t max_steps) {
+  if (run_state_ == RunState::kHold || max_steps <= 0) return 0;
+  int64_t k = 0;
+  if (ff_) {
+    while (k < max_steps) {
+      if (ff_end_ && simt() + 0.5 * dt_ > *ff_end_) {
+        ff_ = false;
+        ff_end_.reset();
+        break;
+      }
+      step();
+      ++k;
+    }
+    return k;
+  }
+  if (std::isfinite(wall_s) && wall_s > 0.0) wall_carry_ += wall_s;
+  const int64_t due = static_cast<int64_t>(std::floor(wall_carry_ / dt_));
+  k = std::min(due, max_steps);
+  wall_carry_ = k < due ? 0.0 : wall_carry_ - static_cast<double>(k) * dt_;
+  for (int64_t s = 0; s < k; ++s) step();
+  return k;
+}
+
+Status Simulation::run_for(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0.0)
+    return bad("RUN", "duration " + num(seconds) + " s must be a finite number >= 0");
+  return run_until(simt() + seconds);
+}
+
+Status Simulation::run_until(double t_end) {
+  if (!std::isfinite(t_end)) return bad("RUN", "end time must be a finite number of seconds");
+  while (simt() + 0.5 * dt_ <= t_end) step();
+  return Status::ok();
+}
+
+void Simulation::reset(uint64_t seed) { *this = Simulation(seed); }
+
+void Simulation::delete_all() {
+  traf_.clear();
+  cd_.clear(true);
+  cr_.clear();
+}
+
+// --- Step ---------------------------------------------------------------------
+
+void Simulation::step() {
+  if (traf_.n() > 0) {
+    update_autopilot();
+    if (cds_.enabled && simt() + 1e-9 >= next_asas_t_) {
+      update_asas();
+      next_asas_t_ += cds_.asas_dt;
+      if (next_asas_t_ <= simt()) next_asas_t_ = simt() + cds_.asas_dt;
+    }
+    update_kinematics();
+  }
+  ++ticks_;
+  ++ticks_since_base_;
+}
+
+void Simulation::update_asas() {
+  cd_.detect(traf_, cds_);
+  if (crs_.enabled) cr_.resolve(traf_, cd_, cds_, crs_, perf_opts_);
+}
+
+// LNAV: fly to the active waypoint, switch at passage (route.h); VNAV: aim at
+// the altitude constraint of the active waypoint so that it is reached there
+// (vs = |dh| gs / dist, capped by the class), and take a waypoint's speed
+// constraint when passing it.
+void Simulation::update_autopilot() {
+  Traffic& t = traf_;
+  const int n = t.n();
+  for (int i = 0; i < n; ++i) {
+    if (!t.lnav[i]) continue;
+    Route& r = t.route[i];
+    const Waypoint* wp = r.active_waypoint();
+    if (!wp) {
+      t.lnav[i] = t.vnav[i] = 0;
+      continue;
+    }
+    geo::QdrDist qd = geo::kwikqdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
+    const int a = r.active();
+    double next_qdr = qd.qdr_deg;
+    if (!wp->flyover && a + 1 < r.size()) {
+      const Waypoint& nx = r.waypoints()[a + 1];
+      next_qdr = geo::kwikqdrdist(wp->lat, wp->lon, nx.lat, nx.lon).qdr_deg;
+    }
+    if (waypoint_reached(units::nm_to_m(qd.dist_nm), qd.qdr_deg, next_qdr, t.trk[i], t.tas[i], t.bank[i])) {
+      if (t.vnav[i] && wp->has_spd()) {
+        t.sel_spd[i] = wp->spd;
+        t.tgt_tas_alt[i] = std::nan("");
+      }
+      if (!r.advance()) {
+        t.lnav[i] = t.vnav[i] = 0;
+        continue;
+      }
+      wp = r.active_waypoint();
+      qd = geo::kwikqdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
+    }
+    t.sel_hdg[i] = qd.qdr_deg;
+    if (t.vnav[i] && wp->has_alt()) {
+      const double dh = std::fabs(wp->alt - t.alt[i]);
+      const double dist = std::max(units::nm_to_m(qd.dist_nm), 1.0);
+      const double vsmax = wp->alt > t.alt[i] ? t.perf[i].vsmax : -t.perf[i].vsmin;
+      t.sel_alt[i] = wp->alt;
+      t.sel_vs[i] = std::min(std::max(dh * t.gs[i] / dist, 0.1), vsmax);
+    }
+  }
+}
+
+void Simulation::refresh_speed_outputs(int i) {
+  traf_.cas[i] = tas_to_cas(traf_.tas[i], traf_.alt[i]);
+  traf_.mach[i] = tas_to_mach(traf_.tas[i], traf_.alt[i]);
+}
+
+void Simulation::set_heading_cache(int i) {
+  const double h = traf_.hdg[i] * kDeg;
+  traf_.sin_hdg[i] = std::sin(h);
+  traf_.cos_hdg[i] = std::cos(h);
+}
+
+void Simulation::update_kinematics() {
+  Traffic& t = traf_;
+  const int n = t.n();
+  const double dt = dt_;
+  for (int i = 0; i < n; ++i) {
+    const bool cr = t.cr_active[i] != 0;
+    const bool ground = perf_opts_.ground_cap && t.alt[i] <= perf_opts_.ground_alt;
+    const double axmax = ground ? perf_opts_.ground_axmax : t.perf[i].axmax;
+
+    // Targets (APorASAS + limits)
+    if (!(t.tgt_tas_alt[i] == t.alt[i])) {
+      double vmax = t.perf[i].vmax;
+      if (ground) vmax = std::min(vmax, perf_opts_.ground_vmax);
+      const double want = casormach_to_tas(t.sel_spd[i], t.alt[i]);
+      t.tgt_tas[i] = std::clamp(want, cas_to_tas(t.perf[i].vmin, t.alt[i]), cas_to_tas(vmax, t.alt[i]));
+      t.tgt_tas_alt[i] = t.alt[i];
+    }
+    const double tas_t = cr ? t.cr_tas[i] : t.tgt_tas[i];
+    const double hdg_t = cr ? t.cr_trk[i] : t.sel_hdg[i];
+    const bool cr_vert = cr && crs_.vertical;
+    const double alt_t = std::min(cr_vert ? t.cr_alt[i] : t.sel_alt[i], t.perf[i].hmax);
+
+    // Airspeed: +-axmax, snapping to the target within one step.
+    const double old_tas = t.tas[i], old_alt = t.alt[i];
+    const double dspd = tas_t - t.tas[i];
+    if (dspd != 0.0) {
+      const double lim = axmax * dt;
+      t.tas[i] = std::fabs(dspd) <= lim ? tas_t : t.tas[i] + std::copysign(lim, dspd);
+    }
+
+    // Heading: turn rate g0 tan(bank) / TAS, snapping within one step.
+    if (t.hdg[i] != hdg_t) {
+      const double rate = std::tan(t.bank[i]) * units::kG0 / std::max(t.tas[i], kTasEps) / kDeg;  // [deg/s]
+      const double dh = geo::wrap180(hdg_t - t.hdg[i]);
+      const double lim = rate * dt;
+      t.hdg[i] = std::fabs(dh) <= lim ? hdg_t : geo::wrap360(t.hdg[i] + std::copysign(lim, dh));
+      set_heading_cache(i);
+    }
+
+    // Vertical: BlueSky's altitude-select logic.
+    const double dalt = alt_t - t.alt[i];
+    if (dalt != 0.0 || t.vs[i] != 0.0) {
+      double vs_mag = cr_vert ? std::fabs(t.cr_vs[i]) : (t.sel_vs[i] > 0.0 ? t.sel_vs[i] : kDefaultVs);
+      vs_mag = std::min(vs_mag, dalt > 0.0 ? t.perf[i].vsmax : -t.perf[i].vsmin);
+      const bool sel = std::fabs(dalt) > std::max(10.0 * units::kFt, std::fabs(2.0 * dt * t.vs[i]));
+      t.vs[i] = sel ? std::copysign(vs_mag, dalt) : 0.0;
+      t.alt[i] = sel ? t.alt[i] + t.vs[i] * dt : alt_t;
+    }
+    if (t.tas[i] != old_tas || t.alt[i] != old_alt) refresh_speed_outputs(i);
+
+    // Ground speed (no wind) and flat-earth position update.
+    t.gs[i] = t.tas[i];
+    t.trk[i] = t.hdg[i];
+    t.gsnorth[i] = t.tas[i] * t.cos_hdg[i];
+    t.gseast[i] = t.tas[i] * t.sin_hdg[i];
+    t.lat[i] += dt * t.gsnorth[i] / kREarth / kDeg;
+    t.coslat[i] = std::cos(t.lat[i] * kDeg);
+    double lon = t.lon[i] + dt * t.gseast[i] / t.coslat[i] / kREarth / kDeg;
+    if (lon >= 180.0) lon -= 360.0;
+    else if (lon < -180.0) lon += 360.0;
+    t.lon[i] = lon;
+  }
+}
+
+// --- Traffic ------------------------------------------------------------------
+
+Result<int> Simulation::lookup(std::string_view acid) const {
+  const int i = traf_.index_of(acid);
+  if (i < 0) {
+    std::string m(text::upper(text::trim(acid)));
+    m.append(": no aircraft with this id");
+    return Status::not_found(std::move(m));
+  }
+  return i;
+}
+
+Status Simulation::check_new_id(std::string_view acid, std::string_view actype) const {
+  const std::string id = text::upper(text::trim(acid));
+  if (id.empty()) return bad("CRE", "empty aircraft id; expected a callsign such as KL204");
+  for (char c : id)
+    if (c == ',' || c == ';' || c <= ' ') return bad(id, "aircraft id must not contain spaces, ',' or ';'");
+  if (traf_.index_of(id) >= 0) return bad(id, "an aircraft with this id already exists");
+  if (text::trim(actype).empty()) return bad(id, "empty aircraft type; expected an ICAO type such as A320");
+  return Status::ok();
+}
+
+int Simulation::add_aircraft(std::string_view acid, std::string_view actype, double lat, double lon,
+                             double hdg_deg, double alt_m, double tas, double sel_spd) {
+  const std::string type = text::upper(text::trim(actype));
+  const int i = traf_.append(text::upper(text::trim(acid)), type, next_uid_++);
+  Traffic& t = traf_;
+  t.lat[i] = lat;
+  t.lon[i] = lon;
+  t.alt[i] = alt_m;
+  t.hdg[i] = t.trk[i] = t.sel_hdg[i] = geo::wrap360(hdg_deg);
+  t.tas[i] = t.gs[i] = tas;
+  t.sel_alt[i] = alt_m;
+  t.sel_spd[i] = sel_spd;
+  t.perf_class[i] = perf_class_of(type);
+  t.perf[i] = perf_limits(t.perf_class[i]);
+  t.coslat[i] = std::cos(lat * kDeg);
+  set_heading_cache(i);
+  t.gsnorth[i] = tas * t.cos_hdg[i];
+  t.gseast[i] = tas * t.sin_hdg[i];
+  refresh_speed_outputs(i);
+  return i;
+}
+
+Status Simulation::create(std::string_view acid, std::string_view actype, double lat, double lon,
+                          double hdg_deg, double alt_m, double casmach) {
+  SQUAWK_RETURN_IF_ERROR(check_new_id(acid, actype));
+  const std::string id = text::upper(text::trim(acid));
+  SQUAWK_RETURN_IF_ERROR(check_latlon(id, lat, lon));
+  SQUAWK_RETURN_IF_ERROR(check_finite(id, "heading", hdg_deg));
+  SQUAWK_RETURN_IF_ERROR(check_alt(id, alt_m));
+  SQUAWK_RETURN_IF_ERROR(check_positive(id, "speed", casmach));
+  add_aircraft(id, actype, lat, lon, hdg_deg, alt_m, casormach_to_tas(casmach, alt_m), casmach);
+  return Status::ok();
+}
+
+Status Simulation::creconfs(std::string_view acid, std::string_view actype, std::string_view target,
+                            double dpsi_deg, double dcpa_m, double tlosh_s, std::optional<double> dh_m,
+                            std::optional<double> tlosv_s, std::optional<double> spd) {
+  SQUAWK_ASSIGN_OR_RETURN(const int o, lookup(target));
+  SQUAWK_RETURN_IF_ERROR(check_new_id(acid, actype));
+  const std::string id = text::upper(text::trim(acid));
+  SQUAWK_RETURN_IF_ERROR(check_finite(id, "dpsi", dpsi_deg));
+  if (!std::isfinite(dcpa_m) || dcpa_m < 0.0) return bad(id, "dcpa " + num(dcpa_m) + " m must be >= 0");
+  SQUAWK_RETURN_IF_ERROR(check_positive(id, "tlosh", tlosh_s));
+  if (dh_m) SQUAWK_RETURN_IF_ERROR(check_finite(id, "dH", *dh_m));
+  if (tlosv_s) SQUAWK_RETURN_IF_ERROR(check_positive(id, "tlosv", *tlosv_s));
+  if (spd) SQUAWK_RETURN_IF_ERROR(check_positive(id, "spd", *spd));
+  const Traffic& t = traf_;
+  const double alt_o = t.alt[o];
+  double alt = alt_o, vs = 0.0;
+  if (dh_m) {
+    alt = alt_o + *dh_m;
+    const double tv = tlosv_s.value_or(tlosh_s);
+    vs = t.vs[o] - std::copysign(1.0, *dh_m) * (std::fabs(*dh_m) - cds_.hpz) / tv;
+  }
+  SQUAWK_RETURN_IF_ERROR(check_alt(id, alt));
+  const double pzr = cds_.rpz;
+  const double trk_o = t.trk[o] * kDeg, trk = trk_o + dpsi_deg * kDeg;
+  const double gs_o = t.gs[o], gs = spd.value_or(gs_o);
+  const double gsn = gs * std::cos(trk), gse = gs * std::sin(trk);
+  const double vreln = gs_o * std::cos(trk_o) - gsn, vrele = gs_o * std::sin(trk_o) - gse;
+  const double vrel = std::hypot(vreln, vrele);
+  const double drelcpa = tlosh_s * vrel + (dcpa_m > pzr ? 0.0 : std::sqrt(pzr * pzr - dcpa_m * dcpa_m));
+  const double dist = std::hypot(drelcpa, dcpa_m);
+  if (!(dist > 0.0)) return bad(id, "the requested geometry puts the intruder on top of " + t.id[o]);
+  const double rd = drelcpa / dist, rx = dcpa_m / dist;
+  const double brn = std::atan2(-rx * vreln + rd * vrele, rd * vreln + rx * vrele) / kDeg;
+  const geo::LatLon pos = geo::kwikpos(t.lat[o], t.lon[o], brn, units::m_to_nm(dist));
+  SQUAWK_RETURN_IF_ERROR(check_latlon(id, pos.lat_deg, pos.lon_deg));
+  const double hdg = std::atan2(gse, gsn) / kDeg;
+  const int i = add_aircraft(id, actype, pos.lat_deg, pos.lon_deg, hdg, alt, gs, tas_to_cas(gs, alt));
+  traf_.sel_alt[i] = alt_o;
+  traf_.sel_vs[i] = std::fabs(vs);
+  traf_.vs[i] = vs;
+  return Status::ok();
+}
+
+Status Simulation::remove(std::string_view acid) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  cr_.on_erase(traf_.uid[i]);
+  cd_.on_erase(i);
+  traf_.erase(i);
+  return Status::ok();
+}
+
+Status Simulation::move(std::string_view acid, double lat, double lon, std::optional<double> alt_m,
+                        std::optional<double> hdg_deg, std::optional<double> casmach,
+                        std::optional<double> vs) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  const std::string& id = traf_.id[i];
+  SQUAWK_RETURN_IF_ERROR(check_latlon(id, lat, lon));
+  if (alt_m) SQUAWK_RETURN_IF_ERROR(check_alt(id, *alt_m));
+  if (hdg_deg) SQUAWK_RETURN_IF_ERROR(check_finite(id, "heading", *hdg_deg));
+  if (casmach) SQUAWK_RETURN_IF_ERROR(check_positive(id, "speed", *casmach));
+  if (vs) SQUAWK_RETURN_IF_ERROR(check_finite(id, "vertical speed", *vs));
+  Traffic& t = traf_;
+  t.lat[i] = lat;
+  t.lon[i] = lon;
+  t.coslat[i] = std::cos(lat * kDeg);
+  if (alt_m) t.alt[i] = t.sel_alt[i] = *alt_m;
+  if (hdg_deg) {
+    t.hdg[i] = t.trk[i] = t.sel_hdg[i] = geo::wrap360(*hdg_deg);
+    set_heading_cache(i);
+  }
+  if (casmach) {
+    t.sel_spd[i] = *casmach;
+    t.tas[i] = t.gs[i] = casormach_to_tas(*casmach, t.alt[i]);
+  }
+  if (vs) {
+    t.vs[i] = *vs;
+    t.vnav[i] = 0;
+  }
+  t.gsnorth[i] = t.tas[i] * t.cos_hdg[i];
+  t.gseast[i] = t.tas[i] * t.sin_hdg[i];
+  t.tgt_tas_alt[i] = std::nan("");
+  refresh_speed_outputs(i);
+  return Status::ok();
+}
+
+// --- Autopilot ----------------------------------------------------------------
+
+Status Simulation::set_heading(std::string_view acid, double hdg_deg) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "heading", hdg_deg));
+  traf_.sel_hdg[i] = geo::wrap360(hdg_deg);
+  traf_.lnav[i] = traf_.vnav[i] = 0;
+  return Status::ok();
+}
+
+Status Simulation::set_altitude(std::string_view acid, double alt_m, std::optional<double> vs) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  SQUAWK_RETURN_IF_ERROR(check_alt(traf_.id[i], alt_m));
+  if (vs) SQUAWK_RETURN_IF_ERROR(check_positive(traf_.id[i], "vertical speed", std::fabs(*vs)));
+  traf_.sel_alt[i] = alt_m;
+  if (vs) traf_.sel_vs[i] = std::fabs(*vs);
+  traf_.vnav[i] = 0;
+  return Status::ok();
+}
+
+Status Simulation::set_vs(std::string_view acid, double vs) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "vertical speed", vs));
+  traf_.sel_vs[i] = std::fabs(vs);
+  traf_.vnav[i] = 0;
+  return Status::ok();
+}
+
+Status Simulation::set_speed(std::string_view acid, double casmach) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  SQUAWK_RETURN_IF_ERROR(check_positive(traf_.id[i], "speed", casmach));
+  traf_.sel_spd[i] = casmach;
+  traf_.tgt_tas_alt[i] = std::nan("");
+  return Status::ok();
+}
+
+Status Simulation::set_bank(std::string_view acid, double bank_deg) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  if (!std::isfinite(bank_deg) || bank_deg <= 0.0 || bank_deg >= 90.0)
+    return bad(traf_.id[i], "bank angle " + num(bank_deg) + " deg is not in (0, 90) deg");
+  traf_.bank[i] = bank_deg * kDeg;
+  return Status::ok();
+}
+
+Status Simulation::set_lnav(std::string_view acid, bool on) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  if (on && traf_.route[i].active() < 0)
+    return bad(traf_.id[i], "LNAV needs a route with a waypoint to fly to (add one with ADDWPT)");
+  traf_.lnav[i] = on;
+  if (!on) traf_.vnav[i] = 0;
+  return Status::ok();
+}
+
+Status Simulation::set_vnav(std::string_view acid, bool on) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  if (on && traf_.route[i].active() < 0)
+    return bad(traf_.id[i], "VNAV needs a route with a waypoint to fly to (add one with ADDWPT)");
+  traf_.vnav[i] = on;
+  if (on) traf_.lnav[i] = 1;
+  return Status::ok();
+}
+
+// --- Routes -------------------------------------------------------------------
+
+template <class Op>
+Status Simulation::route_op(std::string_view acid, Op&& op) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  Route& r = traf_.route[i];
+  const bool had_active = r.active() >= 0;
+  const Status st = op(r);
+  if (!st.is_ok()) return st.with_context(traf_.id[i]);
+  if (!had_active && r.active() >= 0) traf_.lnav[i] = 1;
+  if (r.active() < 0) traf_.lnav[i] = traf_.vnav[i] = 0;
+  return Status::ok();
+}
+
+Status Simulation::add_waypoint(std::string_view acid, Waypoint wp) {
+  return route_op(acid, [&](Route& r) { return r.add(std::move(wp)); });
+}
+Status Simulation::add_waypoint_after(std::string_view acid, std::string_view ref, Waypoint wp) {
+  return route_op(acid, [&](Route& r) { return r.insert_after(ref, std::move(wp)); });
+}
+Status Simulation::add_waypoint_before(std::string_view acid, std::string_view ref, Waypoint wp) {
+  return route_op(acid, [&](Route& r) { return r.insert_before(ref, std::move(wp)); });
+}
+Status Simulation::delete_waypoint(std::string_view acid, std::string_view name) {
+  return route_op(acid, [&](Route& r) { return r.remove(name); });
+}
+Status Simulation::delete_route(std::string_view acid) {
+  return route_op(acid, [](Route& r) {
+    r.clear();
+    return Status::ok();
+  });
+}
+Status Simulation::direct_to(std::string_view acid, std::string_view name) {
+  SQUAWK_RETURN_IF_ERROR(route_op(acid, [&](Route& r) { return r.direct_to(name); }));
+  traf_.lnav[traf_.index_of(acid)] = 1;
+  return Status::ok();
+}
+Status Simulation::set_dest(std::string_view acid, Waypoint dest) {
+  return route_op(acid, [&](Route& r) { return r.set_dest(std::move(dest)); });
+}
+Status Simulation::set_orig(std::string_view acid, Waypoint orig) {
+  return route_op(acid, [&](Route& r) { return r.set_orig(std::move(orig)); });
+}
+
+// --- Conflict detection and resolution ------------------------------------------
+
+void Simulation::set_cd(bool on) {
+  cds_.enabled = on;
+  next_asas_t_ = simt();
+  if (!on) {
+    cd_.clear(false);
+    cr_.clear();
+    std::fill(traf_.cr_active.begin(), traf_.cr_active.end(), 0);
+  }
+}
+
+Status Simulation::set_rpz(double rpz_m) {
+  SQUAWK_RETURN_IF_ERROR(check_positive("ZONER", "radius [m]", rpz_m));
+  cds_.rpz = rpz_m;
+  return Status::ok();
+}
+Status Simulation::set_hpz(double hpz_m) {
+  SQUAWK_RETURN_IF_ERROR(check_positive("ZONEDH", "half height [m]", hpz_m));
+  cds_.hpz = hpz_m;
+  return Status::ok();
+}
+Status Simulation::set_dtlook(double dtlook_s) {
+  SQUAWK_RETURN_IF_ERROR(check_positive("DTLOOK", "look-ahead time [s]", dtlook_s));
+  cds_.dtlook = dtlook_s;
+  return Status::ok();
+}
+Status Simulation::set_asas_dt(double asas_dt_s) {
+  SQUAWK_RETURN_IF_ERROR(check_positive("ASAS", "update interval [s]", asas_dt_s));
+  cds_.asas_dt = asas_dt_s;
+  next_asas_t_ = simt();
+  return Status::ok();
+}
+
+void Simulation::set_reso(bool on) {
+  crs_.enabled = on;
+  if (on && !cds_.enabled) set_cd(true);
+  if (!on) {
+    cr_.clear();
+    std::fill(traf_.cr_active.begin(), traf_.cr_active.end(), 0);
+  }
+}
+Status Simulation::set_resofach(double f) {
+  if (!std::isfinite(f) || f < 1.0) return bad("RFACH", "factor " + num(f) + " must be a number >= 1");
+  crs_.resofach = f;
+  return Status::ok();
+}
+Status Simulation::set_resofacv(double f) {
+  if (!std::isfinite(f) || f < 1.0) return bad("RFACV", "factor " + num(f) + " must be a number >= 1");
+  crs_.resofacv = f;
+  return Status::ok();
+}
+void Simulation::set_reso_vertical(bool on) { crs_.vertical = on; }
+
+Status Simulation::set_performance_options(const PerformanceOptions& o) {
+  SQUAWK_RETURN_IF_ERROR(check_positive("PERF", "ground_alt", o.ground_alt));
+  SQUAWK_RETURN_IF_ERROR(check_positive("PERF", "ground_vmax", o.ground_vmax));
+  SQUAWK_RETURN_IF_ERROR(check_positive("PERF", "ground_axmax", o.ground_axmax));
+  perf_opts_ = o;
+  std::fill(traf_.tgt_tas_alt.begin(), traf_.tgt_tas_alt.end(), std::nan(""));
+  return Status::ok();
+}
+
+// --- Snapshot -------------------------------------------------------------------
+
+std::string Simulation::snapshot() const {
+  using bytes::put;
+  using bytes::put_vec;
+  std::string out;
+  put(out, dt_), put(out, t_base_), put(out, ticks_since_base_), put(out, ticks_), put(out, next_asas_t_);
+  put<int32_t>(out, static_cast<int32_t>(run_state_));
+  put<uint8_t>(out, ff_), put<uint8_t>(out, ff_end_.has_value()), put(out, ff_end_.value_or(0.0));
+  put<uint8_t>(out, cds_.enabled), put(out, cds_.rpz), put(out, cds_.hpz), put(out, cds_.dtlook);
+  put(out, cds_.asas_dt);
+  put<uint8_t>(out, crs_.enabled), put(out, crs_.resofach), put(out, crs_.resofacv);
+  put<uint8_t>(out, crs_.vertical), put<uint8_t>(out, crs_.resume);
+  put<uint8_t>(out, perf_opts_.ground_cap), put(out, perf_opts_.ground_alt);
+  put(out, perf_opts_.ground_vmax), put(out, perf_opts_.ground_axmax);
+  put(out, next_uid_);
+  Rng probe = rng_;  // the RNG state, observed through its next draws
+  for (int k = 0; k < 4; ++k) put(out, probe.next_u64());
+  put(out, probe.normal());
+
+  const Traffic& t = traf_;
+  put<int64_t>(out, t.n());
+  for (int i = 0; i < t.n(); ++i) {
+    bytes::put_str(out, t.id[i]);
+    bytes::put_str(out, t.type[i]);
+    t.route[i].serialize(out);
+    put<int32_t>(out, static_cast<int32_t>(t.perf_class[i]));
+    const PerfLimits& p = t.perf[i];
+    put(out, p.vmin), put(out, p.vmax), put(out, p.vsmin), put(out, p.vsmax), put(out, p.hmax), put(out, p.axmax);
+  }
+  put_vec(out, t.uid);
+  for (const auto* v : {&t.lat, &t.lon, &t.alt, &t.hdg, &t.trk, &t.tas, &t.cas, &t.gs, &t.mach, &t.gsnorth,
+                        &t.gseast, &t.vs, &t.sel_hdg, &t.sel_alt, &t.sel_spd, &t.sel_vs, &t.bank, &t.cr_trk,
+                        &t.cr_tas, &t.cr_vs, &t.cr_alt})
+    put_vec(out, *v);
+  put_vec(out, t.lnav), put_vec(out, t.vnav), put_vec(out, t.cr_active);
+  cd_.serialize(out);
+  cr_.serialize(out);
+  return out;
+}
+
+}  // namespace squawk::sim
