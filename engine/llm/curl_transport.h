@@ -1,0 +1,15 @@
+// CurlTransport: HttpTransport over libcurl (the only code that includes
+// curl.h). One easy handle per request, no signals, both timeouts enforced.
+#pragma once
+
+#include "llm/http_transport.h"
+
+namespace squawk::llm {
+
+class CurlTransport : public HttpTransport {
+ public:
+  CurlTransport();
+  Result<long> post(const HttpRequest& request, const BodySink& sink) override;
+};
+
+}  // namespace squawk::llm
