@@ -1,0 +1,78 @@
+#include "env/fleet.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/geo.h"
+#include "core/units.h"
+
+namespace squawk::env {
+
+using units::kDeg;
+
+void Fleet::clear() {
+  for (auto* v : {&lat_, &lon_, &hdg_, &tas_, &sel_hdg_, &sel_tas_, &cos_hdg_, &sin_hdg_,
+                  &cos_lat_, &sin_lat_, &dlat_, &cos_dlat_, &sin_dlat_})
+    v->clear();
+}
+
+int Fleet::add(double lat, double lon, double hdg, double tas) {
+  lat_.push_back(lat);
+  lon_.push_back(lon);
+  hdg_.push_back(hdg);
+  tas_.push_back(tas);
+  sel_hdg_.push_back(geo::wrap360(hdg));
+  sel_tas_.push_back(tas);
+  cos_hdg_.push_back(std::cos(hdg * kDeg));
+  sin_hdg_.push_back(std::sin(hdg * kDeg));
+  cos_lat_.push_back(std::cos(lat * kDeg));
+  sin_lat_.push_back(std::sin(lat * kDeg));
+  dlat_.push_back(0.0);
+  cos_dlat_.push_back(1.0);
+  sin_dlat_.push_back(0.0);
+  return static_cast<int>(lat_.size()) - 1;
+}
+
+void Fleet::set_heading(int i, double hdg_deg) { sel_hdg_[static_cast<size_t>(i)] = geo::wrap360(hdg_deg); }
+void Fleet::set_speed(int i, double tas) { sel_tas_[static_cast<size_t>(i)] = tas; }
+
+void Fleet::step(double dt, const FleetLimits& lim) {
+  const double tan_bank = std::tan(lim.bank * kDeg);
+  const double dv_max = lim.accel * dt;
+  for (size_t i = 0; i < lat_.size(); ++i) {
+    // 1. speed
+    const double target = lim.speed_cap > 0.0 ? std::min(sel_tas_[i], lim.speed_cap) : sel_tas_[i];
+    const double dv = target - tas_[i];
+    tas_[i] = std::fabs(dv) > dv_max ? tas_[i] + std::copysign(dv_max, dv) : target;
+    // 2. heading
+    const double want = sel_hdg_[i];
+    double hdg = hdg_[i];
+    if (hdg != want) {
+      const double rate = units::rad_to_deg(units::kG0 * tan_bank / std::max(tas_[i], 0.01));
+      double del = std::fmod(want - hdg + 180.0, 360.0);
+      if (del < 0) del += 360.0;
+      del -= 180.0;
+      hdg = std::fabs(del) > dt * rate ? hdg + std::copysign(dt * rate, del) : want;
+      hdg = geo::wrap360(hdg);
+      hdg_[i] = hdg;
+      cos_hdg_[i] = std::cos(hdg * kDeg);
+      sin_hdg_[i] = std::sin(hdg * kDeg);
+    }
+    // 3. position
+    const double gsn = tas_[i] * cos_hdg_[i], gse = tas_[i] * sin_hdg_[i];
+    const double dlat = dt * gsn / units::kREarth;  // [rad]
+    if (dlat != dlat_[i]) {
+      dlat_[i] = dlat;
+      cos_dlat_[i] = std::cos(dlat);
+      sin_dlat_[i] = std::sin(dlat);
+    }
+    lat_[i] += dlat / kDeg;
+    const double c = cos_lat_[i] * cos_dlat_[i] - sin_lat_[i] * sin_dlat_[i];
+    const double s = sin_lat_[i] * cos_dlat_[i] + cos_lat_[i] * sin_dlat_[i];
+    cos_lat_[i] = c;
+    sin_lat_[i] = s;
+    lon_[i] += dt * gse / c / units::kREarth / kDeg;
+  }
+}
+
+}  // namespace squawk::env
