@@ -1,0 +1,118 @@
+#include "command/navdb.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/files.h"
+#include "core/geo.h"
+#include "core/text.h"
+
+namespace squawk::command {
+
+namespace {
+
+// Lines of a text file, CR/LF/CRLF tolerant.
+std::vector<std::string_view> lines_of(std::string_view data) {
+  std::vector<std::string_view> out;
+  size_t start = 0;
+  for (size_t i = 0; i < data.size(); ++i) {
+    if (data[i] == '\n' || data[i] == '\r') {
+      out.push_back(data.substr(start, i - start));
+      if (data[i] == '\r' && i + 1 < data.size() && data[i + 1] == '\n') ++i;
+      start = i + 1;
+    }
+  }
+  if (start < data.size()) out.push_back(data.substr(start));
+  return out;
+}
+
+bool valid_latlon(double lat, double lon) { return std::fabs(lat) <= 90.0 && std::fabs(lon) <= 180.0; }
+
+Status parse_airports(std::string_view data, const std::string& path, std::vector<NavPoint>& out) {
+  size_t lineno = 0;
+  for (auto raw : lines_of(data)) {
+    ++lineno;
+    std::string_view line = text::trim(raw);
+    if (line.empty() || line.front() == '#') continue;
+    const auto f = text::split(line, ',');
+    if (f.size() < 4) continue;
+    auto lat = text::to_double(f[2]);
+    auto lon = text::to_double(f[3]);
+    const std::string id = text::upper(text::trim(f[0]));
+    if (!lat || !lon || id.empty() || !valid_latlon(*lat, *lon))
+      return Status::corruption(path + ":" + std::to_string(lineno) +
+                                ": expected 'code, name, lat, lon, ...' with lat/lon in degrees");
+    out.push_back({id, "APT", *lat, *lon});
+  }
+  return Status::ok();
+}
+
+void parse_navaids(std::string_view data, std::vector<NavPoint>& out) {
+  for (auto raw : lines_of(data)) {
+    const auto f = text::split_ws(raw);
+    if (f.size() < 8) continue;
+    auto type = text::to_int(f[0]);
+    if (!type) continue;
+    const char* name = *type == 2 ? "NDB" : *type == 3 ? "VOR" : *type == 12 ? "DME" : *type == 13 ? "TACAN" : nullptr;
+    if (!name) continue;
+    auto lat = text::to_double(f[1]);
+    auto lon = text::to_double(f[2]);
+    if (!lat || !lon || !valid_latlon(*lat, *lon)) continue;
+    out.push_back({text::upper(f[7]), name, *lat, *lon});
+  }
+}
+
+void parse_fixes(std::string_view data, std::vector<NavPoint>& out) {
+  for (auto raw : lines_of(data)) {
+    const auto f = text::split_ws(raw);
+    if (f.size() < 3) continue;
+    auto lat = text::to_double(f[0]);
+    auto lon = text::to_double(f[1]);
+    if (!lat || !lon || !valid_latlon(*lat, *lon)) continue;
+    out.push_back({text::upper(f[2]), "FIX", *lat, *lon});
+  }
+}
+
+}  // namespace
+
+NavDb::NavDb(std::vector<NavPoint> airports, std::vector<NavPoint> waypoints)
+    : airports_(std::move(airports)), waypoints_(std::move(waypoints)) {
+  for (size_t i = 0; i < airports_.size(); ++i) airport_index_.emplace(airports_[i].id, i);
+  for (size_t i = 0; i < waypoints_.size(); ++i) waypoint_index_.emplace(waypoints_[i].id, i);
+}
+
+Result<std::shared_ptr<const NavDb>> NavDb::load(const std::string& dir) {
+  std::vector<NavPoint> airports, waypoints;
+  const std::string apt_path = dir + "/airports.dat";
+  SQUAWK_ASSIGN_OR_RETURN(std::string apt, files::read(apt_path));
+  SQUAWK_RETURN_IF_ERROR(parse_airports(apt, apt_path, airports));
+  SQUAWK_ASSIGN_OR_RETURN(std::string nav, files::read(dir + "/nav.dat"));
+  parse_navaids(nav, waypoints);
+  SQUAWK_ASSIGN_OR_RETURN(std::string fix, files::read(dir + "/fix.dat"));
+  parse_fixes(fix, waypoints);
+  if (airports.empty() && waypoints.empty())
+    return Status::corruption("navdata folder '" + dir + "' holds no airports, navaids or fixes");
+  return std::shared_ptr<const NavDb>(std::make_shared<NavDb>(std::move(airports), std::move(waypoints)));
+}
+
+const NavPoint* NavDb::airport(std::string_view id) const {
+  auto it = airport_index_.find(text::upper(id));
+  return it == airport_index_.end() ? nullptr : &airports_[it->second];
+}
+
+const NavPoint* NavDb::waypoint(std::string_view id, double ref_lat, double ref_lon) const {
+  auto [lo, hi] = waypoint_index_.equal_range(text::upper(id));
+  const NavPoint* best = nullptr;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (auto it = lo; it != hi; ++it) {
+    const NavPoint& p = waypoints_[it->second];
+    const double d = geo::kwikdist_nm(ref_lat, ref_lon, p.lat, p.lon);
+    if (d < best_d || (d == best_d && best && it->second < static_cast<size_t>(best - waypoints_.data()))) {
+      best_d = d;
+      best = &p;
+    }
+  }
+  return best;
+}
+
+}  // namespace squawk::command

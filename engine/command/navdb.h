@@ -1,0 +1,54 @@
+// NavDb: BlueSky's navigation database (airports, fixes, navaids), read-only.
+//
+// Files (in one folder, as BlueSky ships them in resources/navdata):
+//   airports.dat  "code, name, lat, lon, class, maxrunway, country, elevation"
+//                 comma separated, '#' comments
+//   nav.dat       X-Plane 810 navaids: "type lat lon elev freq range var id desc";
+//                 types 2 NDB, 3 VOR, 12 DME, 13 TACAN are kept
+//   fix.dat       X-Plane 600 fixes: "lat lon id"
+// Names are upper case. Several navaids/fixes may share a name: lookups take
+// the one nearest a reference position (flat-earth distance), as BlueSky does.
+// Runways ("EHAM/RW18L") are not in these files; position lookups resolve
+// them to the airport's reference point (see resolve in stack.h).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "core/status.h"
+
+namespace squawk::command {
+
+struct NavPoint {
+  std::string id;    // upper case
+  std::string type;  // "APT", "FIX", "VOR", "NDB", "DME", "TACAN"
+  double lat = 0.0;  // [deg]
+  double lon = 0.0;  // [deg]
+};
+
+class NavDb {
+ public:
+  // Reads the three files from `dir`. Errors name the file and line.
+  static Result<std::shared_ptr<const NavDb>> load(const std::string& dir);
+  // Builds a database from lists (tests, or callers with their own data).
+  NavDb(std::vector<NavPoint> airports, std::vector<NavPoint> waypoints);
+
+  const NavPoint* airport(std::string_view id) const;
+  // The waypoint (fix or navaid) named `id` nearest (ref_lat, ref_lon) [deg].
+  const NavPoint* waypoint(std::string_view id, double ref_lat, double ref_lon) const;
+
+  size_t airport_count() const { return airports_.size(); }
+  size_t waypoint_count() const { return waypoints_.size(); }
+
+ private:
+  std::vector<NavPoint> airports_;
+  std::vector<NavPoint> waypoints_;
+  std::unordered_map<std::string, size_t> airport_index_;
+  std::unordered_multimap<std::string, size_t> waypoint_index_;
+};
+
+}  // namespace squawk::command

@@ -1,0 +1,358 @@
+#include "command/stack.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "command/line.h"
+#include "command/registry.h"
+#include "command/scn.h"
+#include "core/geo.h"
+#include "core/paths.h"
+#include "core/text.h"
+#include "core/units.h"
+#include "sim/byte_image.h"
+
+namespace fs = std::filesystem;
+
+namespace squawk::command {
+
+namespace {
+
+constexpr int kMaxIncludeDepth = 16;
+
+// A failure's grouping key: the message with quoted values blanked, so
+// "no aircraft 'KL1'" and "no aircraft 'KL2'" count as one reason.
+std::string reason_key(std::string_view msg) {
+  std::string out;
+  bool in_quote = false;
+  for (char c : msg) {
+    if (c == '\'') {
+      out.push_back(c);
+      if (!in_quote) out.append("...");
+      in_quote = !in_quote;
+      continue;
+    }
+    if (!in_quote) out.push_back(c);
+  }
+  if (auto nl = out.find('\n'); nl != std::string::npos) out.resize(nl);
+  if (auto u = out.find(" (usage:"); u != std::string::npos) out.resize(u);
+  return out;
+}
+
+// The resolved command of one text: its declaration and argument text.
+struct Resolved {
+  const CommandDecl* decl = nullptr;
+  std::string name;     // as typed, upper case (the unknown name when decl is null)
+  std::string argtext;  // arguments, with a leading acid moved in place
+  bool acid_unknown = false;  // "X CMD ..." where X is no aircraft but CMD is a command
+};
+
+Resolved resolve(std::string_view text, const sim::Traffic& traf) {
+  const Registry& reg = Registry::instance();
+  ArgReader r(text);
+  Resolved out;
+  out.name = text::upper(r.next());
+  out.decl = reg.find(out.name);
+  out.argtext = std::string(r.rest());
+  if (out.decl) return out;
+  ArgReader look = r;
+  const std::string second = text::upper(look.next());
+  if (traf.index_of(out.name) >= 0) {
+    const std::string acid = out.name;
+    out.name = second.empty() ? "POS" : second;
+    out.decl = reg.find(out.name);
+    out.argtext = acid;
+    if (!look.rest().empty()) out.argtext.append(" ").append(look.rest());
+    return out;
+  }
+  if (!second.empty() && reg.find(second)) {
+    out.acid_unknown = true;
+    out.decl = reg.find(second);
+  }
+  return out;
+}
+
+std::string usage_suffix(const CommandDecl& d) { return " (usage: " + d.usage + ")"; }
+
+}  // namespace
+
+const ArgValue& Call::operator[](size_t i) const {
+  static const ArgValue kAbsent;
+  return i < args.size() ? args[i] : kAbsent;
+}
+
+Stack::Stack(uint64_t seed) : sim_(seed), seed_(seed) {}
+
+ParseContext Stack::parse_context() const {
+  ParseContext ctx;
+  ctx.traffic = &sim_.traffic();
+  ctx.navdb = navdb_.get();
+  ctx.user_wpts = &user_wpts_;
+  return ctx;
+}
+
+Result<std::string> Stack::run_command(std::string_view text, bool from_queue, bool* skipped) {
+  const std::string typed(text::trim(text));
+  Resolved rc = resolve(typed, sim_.traffic());
+  if (!rc.decl) {
+    if (from_queue) {
+      ++tally_.skipped[rc.name];
+      *skipped = true;
+      return std::string();
+    }
+    return Status::not_found(typed + ": unknown command or aircraft " + text::quoted(rc.name) +
+                             " (`HELP` lists the commands)");
+  }
+  if (rc.acid_unknown)
+    return Status::not_found(typed + ": no aircraft " + text::quoted(rc.name) + usage_suffix(*rc.decl));
+  auto args = parse_args(rc.decl->signature, rc.argtext, parse_context());
+  if (!args)
+    return Status::error(args.status().code(),
+                         typed + ": " + args.status().message() + usage_suffix(*rc.decl));
+  Call call{*this, rc.decl->name, *args};
+  auto out = rc.decl->handler(call);
+  if (!out) return Status::error(out.status().code(), typed + ": " + out.status().message());
+  return out;
+}
+
+Result<std::string> Stack::exec(std::string_view line) {
+  std::string joined;
+  for (const auto& cmd : split_commands(line)) {
+    bool skipped = false;
+    auto r = run_command(cmd, false, &skipped);
+    if (!r) {
+      ++tally_.failed[reason_key(r.status().message())];
+      return r.status();
+    }
+    ++tally_.executed;
+    if (!r->empty()) {
+      if (!joined.empty()) joined.push_back('\n');
+      joined.append(*r);
+    }
+  }
+  return joined;
+}
+
+Status Stack::check(std::string_view line) const {
+  for (const auto& cmd : split_commands(line)) {
+    const std::string typed(text::trim(cmd));
+    Resolved rc = resolve(typed, sim_.traffic());
+    if (!rc.decl)
+      return Status::not_found(typed + ": unknown command or aircraft " + text::quoted(rc.name));
+    if (rc.acid_unknown)
+      return Status::not_found(typed + ": no aircraft " + text::quoted(rc.name) + usage_suffix(*rc.decl));
+    auto args = parse_args(rc.decl->signature, rc.argtext, parse_context());
+    if (!args)
+      return Status::error(args.status().code(),
+                           typed + ": " + args.status().message() + usage_suffix(*rc.decl));
+  }
+  return Status::ok();
+}
+
+void Stack::run_queued(const std::string& line) {
+  for (const auto& cmd : split_commands(line)) {
+    bool skipped = false;
+    auto r = run_command(cmd, true, &skipped);
+    if (!r) {
+      ++tally_.failed[reason_key(r.status().message())];
+      std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + r.status().message();
+      if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
+      output_.push_back(std::move(msg));
+      continue;
+    }
+    if (!skipped) ++tally_.executed;
+    if (!r->empty()) output_.push_back(*r);
+  }
+}
+
+void Stack::process_due() {
+  std::vector<std::string> fired;
+  fired.swap(fired_);
+  for (const auto& cmd : fired) run_queued(cmd);
+  while (!queue_.empty() && queue_.begin()->first.first <= sim_.simt()) {
+    std::string line = std::move(queue_.begin()->second);
+    queue_.erase(queue_.begin());
+    run_queued(line);
+  }
+}
+
+void Stack::test_conditions() {
+  const sim::Traffic& t = sim_.traffic();
+  std::vector<Condition> keep;
+  keep.reserve(conditions_.size());
+  for (auto& c : conditions_) {
+    const int i = t.index_of(c.acid);
+    if (i < 0) continue;  // the aircraft is gone: drop its conditions
+    double actual = 0.0;
+    switch (c.kind) {
+      case Condition::Kind::kAlt: actual = t.alt[i]; break;
+      case Condition::Kind::kSpd: actual = t.cas[i]; break;
+      case Condition::Kind::kDist:
+        actual = units::m_to_nm(geo::gc_distance_m(t.lat[i], t.lon[i], c.pos.lat, c.pos.lon));
+        break;
+    }
+    const double diff = c.target - actual;
+    if (diff * c.last_diff <= 0.0) {
+      fired_.push_back(c.command);
+      continue;
+    }
+    c.last_diff = diff;
+    keep.push_back(std::move(c));
+  }
+  conditions_.swap(keep);
+}
+
+void Stack::step() {
+  process_due();
+  sim_.step();
+  test_conditions();
+}
+
+Status Stack::run_until(double t_end) {
+  if (!std::isfinite(t_end)) return Status::invalid("run until: time must be finite");
+  while (true) {
+    process_due();
+    if (sim_.simt() + 0.5 * sim_.dt() > t_end) break;
+    sim_.step();
+    test_conditions();
+  }
+  return Status::ok();
+}
+
+void Stack::schedule(double t, std::string line) { queue_.emplace(std::make_pair(t, next_seq_++), std::move(line)); }
+
+std::optional<double> Stack::last_queued_time() const {
+  if (queue_.empty()) return std::nullopt;
+  return queue_.rbegin()->first.first;
+}
+
+Result<std::string> Stack::find_scenario(const std::string& name) const {
+  if (name.empty()) return Status::invalid("scenario file name is empty");
+  fs::path p(name);
+  if (p.is_relative()) p = fs::path(base_dir_) / p;
+  std::error_code ec;
+  if (fs::is_regular_file(p, ec)) return p.string();
+  // BlueSky forces the .scn suffix; accept any case of it and of the name.
+  fs::path stem = p;
+  if (text::iequals(stem.extension().string(), ".scn")) stem.replace_extension();
+  const std::string want = text::upper(stem.filename().string() + ".scn");
+  const fs::path dir = stem.parent_path().empty() ? fs::path(".") : stem.parent_path();
+  if (fs::is_directory(dir, ec)) {
+    for (const auto& e : fs::directory_iterator(dir, ec))
+      if (e.is_regular_file(ec) && text::upper(e.path().filename().string()) == want) return e.path().string();
+  }
+  return Status::not_found("no scenario file " + text::quoted(name) + " (looked in " +
+                           text::quoted(dir.string()) + ")");
+}
+
+Status Stack::merge_scenario(const std::string& path, const std::vector<std::string>& args, bool relative) {
+  if (include_depth_ >= kMaxIncludeDepth)
+    return Status::invalid("scenario " + text::quoted(path) + ": more than " +
+                           std::to_string(kMaxIncludeDepth) + " nested PCALLs");
+  SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
+  SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
+  merge_entries(file, std::move(scn), args, relative);
+  return Status::ok();
+}
+
+void Stack::merge_entries(const std::string& file, ScnFile scn, const std::vector<std::string>& args,
+                          bool relative) {
+  const double offset = relative ? sim_.simt() : 0.0;
+  for (auto& e : scn.entries) {
+    std::string line = std::move(e.command);
+    for (size_t k = 0; k < args.size(); ++k) {
+      const std::string key = "%" + std::to_string(k);
+      for (size_t pos = line.find(key); pos != std::string::npos; pos = line.find(key, pos + args[k].size()))
+        line.replace(pos, key.size(), args[k]);
+    }
+    schedule(e.time + offset, std::move(line));
+  }
+  for (const auto& bad : scn.rejected) {
+    ++tally_.failed["scenario line with an unreadable timestamp"];
+    std::string msg = file + ":" + std::to_string(bad.line) + ": unreadable timestamp, line skipped";
+    if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
+    output_.push_back(std::move(msg));
+  }
+  ++include_depth_;
+  process_due();
+  --include_depth_;
+}
+
+Status Stack::load_scenario(const std::string& path) {
+  SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
+  SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
+  reset();
+  merge_entries(file, std::move(scn), {}, false);
+  return Status::ok();
+}
+
+void Stack::reset() {
+  sim_.reset(seed_);
+  queue_.clear();
+  next_seq_ = 0;
+  conditions_.clear();
+  fired_.clear();
+  user_wpts_.clear();
+  dtmult_ = 1.0;
+  noise_ = false;
+}
+
+void Stack::set_seed(uint64_t seed) {
+  seed_ = seed;
+  sim_.rng().reseed(seed);
+}
+
+Status Stack::define_waypoint(const std::string& name, GeoPoint pos) {
+  if (name.empty()) return Status::invalid("waypoint name is empty");
+  user_wpts_[text::upper(name)] = pos;
+  return Status::ok();
+}
+
+Status Stack::delete_user_waypoint(const std::string& name) {
+  if (user_wpts_.erase(text::upper(name)) == 0)
+    return Status::not_found("no user waypoint " + text::quoted(name));
+  return Status::ok();
+}
+
+std::vector<std::string> Stack::take_output() {
+  std::vector<std::string> out;
+  out.swap(output_);
+  return out;
+}
+
+std::string Stack::snapshot() const {
+  namespace b = sim::bytes;
+  std::string out = sim_.snapshot();
+  b::put<int64_t>(out, static_cast<int64_t>(queue_.size()));
+  for (const auto& [key, line] : queue_) {
+    b::put<double>(out, key.first);
+    b::put<uint64_t>(out, key.second);
+    b::put_str(out, line);
+  }
+  b::put<uint64_t>(out, next_seq_);
+  b::put<int64_t>(out, static_cast<int64_t>(conditions_.size()));
+  for (const auto& c : conditions_) {
+    b::put_str(out, c.acid);
+    b::put<int32_t>(out, static_cast<int32_t>(c.kind));
+    b::put<double>(out, c.target);
+    b::put<double>(out, c.last_diff);
+    b::put<double>(out, c.pos.lat);
+    b::put<double>(out, c.pos.lon);
+    b::put_str(out, c.command);
+  }
+  b::put<int64_t>(out, static_cast<int64_t>(fired_.size()));
+  for (const auto& f : fired_) b::put_str(out, f);
+  b::put<int64_t>(out, static_cast<int64_t>(user_wpts_.size()));
+  for (const auto& [name, p] : user_wpts_) {
+    b::put_str(out, name);
+    b::put<double>(out, p.lat);
+    b::put<double>(out, p.lon);
+  }
+  b::put<uint64_t>(out, seed_);
+  b::put<double>(out, dtmult_);
+  b::put<uint8_t>(out, noise_ ? 1 : 0);
+  b::put_str(out, base_dir_);
+  return out;
+}
+
+}  // namespace squawk::command

@@ -1,0 +1,162 @@
+// Stack: a Simulation plus the command layer around it: the TrafScript
+// console that the CLI, .scn runner, Lua and the translator drive.
+//
+// State it owns beside the Simulation (all part of snapshot()):
+//  - the queue of timed commands (scenario lines, SCHEDULE, DELAY, PCALL),
+//    ordered by (time, arrival);
+//  - conditional commands (ATALT / ATSPD / ATDIST);
+//  - user waypoints (DEFWPT);
+//  - the seed RESET uses, and switches squawk records without modelling
+//    (DTMULT, NOISE).
+// Counters (tally) and collected output are bookkeeping, not state.
+//
+// Line rules (BlueSky, facts §2.1): `;` splits commands; names are
+// case-insensitive; an aircraft id may come before the command
+// ("KL204 ALT FL100"); a bare aircraft id means POS.
+//
+// Errors: a failed command returns a Status whose message starts with the
+// command as typed, names the argument and the expected form, and ends with
+// the usage; the stack and the simulation are exactly as before.
+//
+// Time: run_until() processes, at each step, the queued commands whose time is
+// <= simt, then steps the simulation, then tests the conditions (a condition
+// whose threshold was crossed runs its command at the next step, as BlueSky).
+// Headless runs ignore the run state (HOLD/OP/FF only set it).
+//
+// Copying a Stack copies everything (navdata is shared, read-only): the
+// translator validates commands on a scratch copy.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "command/args.h"
+#include "command/navdb.h"
+#include "command/scn.h"
+#include "core/status.h"
+#include "sim/simulation.h"
+
+namespace squawk::command {
+
+// What happened to the commands a stack ran (for summaries and conformance).
+struct Tally {
+  long executed = 0;                      // commands that succeeded
+  std::map<std::string, long> skipped;    // scenario commands squawk lacks, by name
+  std::map<std::string, long> failed;     // failures by command and reason (values blanked)
+  std::vector<std::string> first_failures;  // the first kMaxKept failure messages, with time
+  static constexpr size_t kMaxKept = 50;
+};
+
+struct Condition {
+  enum class Kind { kAlt = 0, kSpd = 1, kDist = 2 };
+  std::string acid;
+  Kind kind = Kind::kAlt;
+  double target = 0.0;     // [m] alt, [m/s] CAS, or [NM] distance
+  double last_diff = 0.0;  // target - actual at the previous test
+  GeoPoint pos;            // kDist: the reference position
+  std::string command;     // run when target - actual changes sign
+};
+
+class Stack {
+ public:
+  explicit Stack(uint64_t seed = 0);
+
+  sim::Simulation& sim() { return sim_; }
+  const sim::Simulation& sim() const { return sim_; }
+
+  void set_navdb(std::shared_ptr<const NavDb> db) { navdb_ = std::move(db); }
+  const NavDb* navdb() const { return navdb_.get(); }
+  // Folder where IC / PCALL file names are looked up when relative.
+  void set_base_dir(std::string dir) { base_dir_ = std::move(dir); }
+  const std::string& base_dir() const { return base_dir_; }
+
+  // Runs a line now (one or more `;` commands, as typed by a user). Stops at
+  // the first failing command (earlier ones keep their effect) and returns its
+  // error; otherwise the joined output of the commands.
+  Result<std::string> exec(std::string_view line);
+  // Parse-only validation of a line: command names and argument forms are
+  // checked against the current state; nothing runs. Checks that need the
+  // handler (duplicate callsign, LNAV without route) are not made here.
+  Status check(std::string_view line) const;
+
+  // IC: resets everything, then queues `path`'s commands at their times.
+  Status load_scenario(const std::string& path);
+  // PCALL: merges a scenario file. Times are relative to now unless
+  // `relative` is false; %0, %1, ... are replaced by `args`.
+  Status merge_scenario(const std::string& path, const std::vector<std::string>& args, bool relative);
+  // Queues a command line to run when simt >= t [s].
+  void schedule(double t, std::string line);
+
+  // Runs (queued commands, steps, conditions) up to t_end [s]; see above.
+  // Queued commands that fail are counted and logged, not returned.
+  Status run_until(double t_end);
+  // One step: due commands, Simulation::step, conditions.
+  void step();
+  // Runs the commands due at the current time without stepping.
+  void process_due();
+
+  // Time of the last queued command [s], if any.
+  std::optional<double> last_queued_time() const;
+  size_t queued() const { return queue_.size(); }
+  const std::vector<Condition>& conditions() const { return conditions_; }
+  const std::map<std::string, GeoPoint>& user_waypoints() const { return user_wpts_; }
+
+  // Deterministic bytes of the full state: Simulation::snapshot() followed by
+  // the command-layer state listed at the top.
+  std::string snapshot() const;
+
+  const Tally& tally() const { return tally_; }
+  // Output of queued commands (ECHO text, failures) since the last call.
+  std::vector<std::string> take_output();
+
+  // --- For handlers (commands_*.cpp) ----------------------------------------
+  ParseContext parse_context() const;
+  void add_condition(Condition c) { conditions_.push_back(std::move(c)); }
+  Status define_waypoint(const std::string& name, GeoPoint pos);
+  Status delete_user_waypoint(const std::string& name);
+  // RESET: simulation, queue, conditions, user waypoints (seed kept).
+  void reset();
+  uint64_t seed() const { return seed_; }
+  void set_seed(uint64_t seed);
+  double dtmult() const { return dtmult_; }
+  void set_dtmult(double m) { dtmult_ = m; }
+  bool noise() const { return noise_; }
+  void set_noise(bool on) { noise_ = on; }
+  // Resolves a scenario file name against base_dir (adds .scn, any case).
+  Result<std::string> find_scenario(const std::string& name) const;
+
+ private:
+  // Runs one command (no `;`). from_queue: it came from a scenario/schedule,
+  // so unknown command names are skipped (BlueSky forwards them to its GUI)
+  // and *skipped is set.
+  Result<std::string> run_command(std::string_view text, bool from_queue, bool* skipped);
+  void run_queued(const std::string& line);
+  // Queues a parsed file's entries (with %n replaced) and runs those due now.
+  void merge_entries(const std::string& file, ScnFile scn, const std::vector<std::string>& args,
+                     bool relative);
+  void test_conditions();
+
+  sim::Simulation sim_;
+  std::shared_ptr<const NavDb> navdb_;
+  std::string base_dir_ = ".";
+  std::map<std::pair<double, uint64_t>, std::string> queue_;  // (time [s], arrival) -> line
+  uint64_t next_seq_ = 0;
+  std::vector<Condition> conditions_;
+  std::vector<std::string> fired_;  // condition commands due at the next step
+  std::map<std::string, GeoPoint> user_wpts_;
+  uint64_t seed_ = 0;
+  double dtmult_ = 1.0;
+  bool noise_ = false;
+  int include_depth_ = 0;  // PCALL nesting guard (not state: always 0 between calls)
+
+  Tally tally_;
+  std::vector<std::string> output_;
+};
+
+}  // namespace squawk::command
