@@ -355,7 +355,7 @@ Status Simulation::creconfs(std::string_view acid, std::string_view actype, std:
   SQUAWK_RETURN_IF_ERROR(check_alt(id, alt));
   const double pzr = cds_.rpz;
   const double trk_o = t.trk[o] * kDeg, trk = trk_o + dpsi_deg * kDeg;
-  const double gs_o = t.gs[o], gs = spd.value_or(gs_o);
+  const double gs_o = t.gs[o], gs = spd ? casormach_to_tas(*spd, alt) : gs_o;
   const double gsn = gs * std::cos(trk), gse = gs * std::sin(trk);
   const double vreln = gs_o * std::cos(trk_o) - gsn, vrele = gs_o * std::sin(trk_o) - gse;
   const double vrel = std::hypot(vreln, vrele);

@@ -95,7 +95,9 @@ class Simulation {
   // horizontal loss of separation at the current rpz. Optional vertical
   // geometry: dh [m] altitude offset and tlosv [s] (default tlosh), giving
   // vs = vs_target - sign(dh) (|dh| - hpz) / tlosv. Optional spd: intruder
-  // ground speed [m/s] (default the target's).
+  // CAS [m/s] or Mach (default: the target's ground speed). The intruder
+  // selects the target's altitude. Positions use kwikpos, as BlueSky does,
+  // so the detector sees tLOS/dcpa within ~0.1 % (equator) to ~1 % (60 deg).
   Status creconfs(std::string_view acid, std::string_view actype, std::string_view target,
                   double dpsi_deg, double dcpa_m, double tlosh_s,
                   std::optional<double> dh_m = std::nullopt,
