@@ -78,27 +78,30 @@ HorizontalCrEnv::HorizontalCrEnv(HorizontalCrConfig config) : config_(std::move(
   dist_.assign(n, 0.0);
 }
 
+EpisodeSetup::Intruder creconfs(const HorizontalCrConfig& c, double dpsi, double cpa_nm,
+                                double tlos) {
+  const double gs = c.own_speed, trk_o = 0.0;
+  const double pzr = c.zone_radius, cpa = cpa_nm * units::kNm;
+  const double trk = trk_o + dpsi * kDeg;
+  const double gsn = gs * std::cos(trk), gse = gs * std::sin(trk);
+  const double vreln = gs * std::cos(trk_o) - gsn, vrele = gs * std::sin(trk_o) - gse;
+  const double vrel = std::sqrt(vreln * vreln + vrele * vrele);
+  const double drelcpa = tlos * vrel + (cpa > pzr ? 0.0 : std::sqrt(pzr * pzr - cpa * cpa));
+  const double dist = std::sqrt(drelcpa * drelcpa + cpa * cpa);
+  const double rd = drelcpa / dist, rx = cpa / dist;
+  const double brn = std::atan2(-rx * vreln + rd * vrele, rd * vreln + rx * vrele) / kDeg;
+  const geo::LatLon pos = geo::kwikpos(c.start_lat, c.start_lon, brn, dist / units::kNm);
+  return {pos.lat_deg, pos.lon_deg, std::atan2(gse, gsn) / kDeg, std::sqrt(gsn * gsn + gse * gse)};
+}
+
 EpisodeSetup HorizontalCrEnv::draw_setup(Rng& rng) const {
   const HorizontalCrConfig& c = config_;
   EpisodeSetup s;
-  // BlueSky's creconfs against the ownship at its start (track 0, speed gs).
-  const double gs = c.own_speed, trk_o = 0.0;
-  const double pzr = c.zone_radius;
   for (int i = 0; i < c.num_intruders; ++i) {
     const auto dpsi = static_cast<double>(rng.uniform_int(c.dpsi.lo, c.dpsi.hi));
-    const double cpa = static_cast<double>(rng.uniform_int(c.cpa.lo, c.cpa.hi)) * units::kNm;
+    const auto cpa = static_cast<double>(rng.uniform_int(c.cpa.lo, c.cpa.hi));
     const auto tlos = static_cast<double>(rng.uniform_int(c.tlos.lo, c.tlos.hi));
-    const double trk = trk_o + dpsi * kDeg;
-    const double gsn = gs * std::cos(trk), gse = gs * std::sin(trk);
-    const double vreln = gs * std::cos(trk_o) - gsn, vrele = gs * std::sin(trk_o) - gse;
-    const double vrel = std::sqrt(vreln * vreln + vrele * vrele);
-    const double drelcpa = tlos * vrel + (cpa > pzr ? 0.0 : std::sqrt(pzr * pzr - cpa * cpa));
-    const double dist = std::sqrt(drelcpa * drelcpa + cpa * cpa);
-    const double rd = drelcpa / dist, rx = cpa / dist;
-    const double brn = std::atan2(-rx * vreln + rd * vrele, rd * vreln + rx * vrele) / kDeg;
-    const geo::LatLon pos = geo::kwikpos(c.start_lat, c.start_lon, brn, dist / units::kNm);
-    s.intruders.push_back({pos.lat_deg, pos.lon_deg, std::atan2(gse, gsn) / kDeg,
-                           std::sqrt(gsn * gsn + gse * gse)});
+    s.intruders.push_back(creconfs(c, dpsi, cpa, tlos));
   }
   const auto wpt_km = static_cast<double>(rng.uniform_int(c.waypoint_distance.lo, c.waypoint_distance.hi));
   const geo::LatLon w = geo::gc_destination(c.start_lat, c.start_lon, 0.0, wpt_km * 1000.0);
@@ -108,10 +111,17 @@ EpisodeSetup HorizontalCrEnv::draw_setup(Rng& rng) const {
 }
 
 bool HorizontalCrEnv::reset(Rng& rng, uint64_t episode_index) {
-  return reset_to(draw_setup(rng), episode_index);
+  return start(draw_setup(rng), episode_index);
 }
 
-bool HorizontalCrEnv::reset_to(const EpisodeSetup& setup, uint64_t episode_index) {
+Result<bool> HorizontalCrEnv::reset_to(const EpisodeSetup& setup, uint64_t episode_index) {
+  if (setup.intruders.size() != static_cast<size_t>(config_.num_intruders))
+    return Status::invalid("episode setup has " + std::to_string(setup.intruders.size()) +
+                           " intruders, expected " + std::to_string(config_.num_intruders));
+  return start(setup, episode_index);
+}
+
+bool HorizontalCrEnv::start(const EpisodeSetup& setup, uint64_t episode_index) {
   fleet_.clear();
   fleet_.add(config_.start_lat, config_.start_lon, 0.0, config_.own_speed);
   for (const auto& in : setup.intruders) fleet_.add(in.lat, in.lon, in.hdg, in.tas);

@@ -96,13 +96,19 @@ struct EpisodeSetup {
   struct Intruder {
     double lat = 0.0;  // [deg]
     double lon = 0.0;  // [deg]
-    double hdg = 0.0;  // [deg]
+    double hdg = 0.0;  // [deg] may be negative, as creconfs leaves it
     double tas = 0.0;  // [m/s]
   };
   std::vector<Intruder> intruders;
   double waypoint_lat = 0.0;  // [deg]
   double waypoint_lon = 0.0;  // [deg]
 };
+
+// BlueSky's CRECONFS against the ownship at the configured start (heading 0,
+// own_speed): an intruder at the same speed whose track differs by dpsi [deg],
+// that passes at cpa_nm [NM] and enters the zone after tlos [s].
+EpisodeSetup::Intruder creconfs(const HorizontalCrConfig& config, double dpsi, double cpa_nm,
+                                double tlos);
 
 struct EpisodeStats {
   uint64_t index = 0;       // [-] episode number within its run
@@ -143,8 +149,9 @@ class HorizontalCrEnv {
   // Starts an episode drawn from rng. Returns true when the agent must decide,
   // false when the episode already ended (paper rules, no conflict needed it).
   bool reset(Rng& rng, uint64_t episode_index = 0);
-  // Starts the episode `setup` (ownship at the configured start).
-  bool reset_to(const EpisodeSetup& setup, uint64_t episode_index = 0);
+  // Starts the episode `setup` (ownship at the configured start); same
+  // meaning as reset(). Error when setup has not num_intruders intruders.
+  Result<bool> reset_to(const EpisodeSetup& setup, uint64_t episode_index = 0);
   // The draws of one episode without starting it.
   EpisodeSetup draw_setup(Rng& rng) const;
 
@@ -175,6 +182,7 @@ class HorizontalCrEnv {
 
  private:
   explicit HorizontalCrEnv(HorizontalCrConfig config);
+  bool start(const EpisodeSetup& setup, uint64_t episode_index);
   void advance(double hdg_cmd);  // one env step of sub-steps
   void compute_observation();
   StepFacts step_facts(double hdg_before) const;
