@@ -108,7 +108,7 @@ int64_t Simulation::advance(double wall_s, int64_t max_steps) {
     return k;
   }
   if (std::isfinite(wall_s) && wall_s > 0.0) wall_carry_ += wall_s;
-  const int64_t due = static_cast<int64_t>(std::floor(wall_carry_ / dt_));
+  const int64_t due = static_cast<int64_t>(std::floor(wall_carry_ / dt_ + 1e-9));  // 1e-9: rounding of the carry
   k = std::min(due, max_steps);
   wall_carry_ = k < due ? 0.0 : wall_carry_ - static_cast<double>(k) * dt_;
   for (int64_t s = 0; s < k; ++s) step();
