@@ -47,6 +47,21 @@ const std::vector<Subcommand>& subcommands() {
        "mean_reward) and draws success rate and mean reward against episodes\n"
        "trained, one line per CSV file. Default output: RUN_DIR/curves.svg.\n",
        cmd_plot},
+      {"rag", "rag search QUERY | rag eval CORPUS.tsv   command retrieval (BM25)",
+       "usage: squawk rag search QUERY... [--k N] [--text] [--notes FILE] [--no-notes]\n"
+       "       squawk rag eval CORPUS.tsv [--k N] [--misses] [--notes FILE] [--no-notes]\n\n"
+       "Ranks the TrafScript commands for an English request with BM25 over the\n"
+       "command registry's documentation plus the retrieval notes in\n"
+       "scripts/translate/phraseology.txt (NAME: words per line).\n"
+       "`search` prints the best N commands with their scores (--text adds the\n"
+       "documents). `eval` reads a translator corpus (id, setup, utterance,\n"
+       "expected, category) and prints Recall@1 and Recall@N: the share of cases\n"
+       "whose expected commands are all among the first N retrieved. ASK cases\n"
+       "are counted apart; --misses lists the cases retrieval got wrong.\n\n"
+       "  --k N          how many documents to retrieve (default 5)\n"
+       "  --notes FILE   retrieval notes to use instead of the shipped ones\n"
+       "  --no-notes     the registry documentation alone\n",
+       cmd_rag},
   };
   return table;
 }

@@ -13,5 +13,6 @@ int cmd_run(const ArgV& args);   // cli_script.cpp
 int cmd_test(const ArgV& args);  // cli_script.cpp
 int cmd_render(const ArgV& args);  // cli_viz.cpp
 int cmd_plot(const ArgV& args);    // cli_viz.cpp
+int cmd_rag(const ArgV& args);     // cli_rag.cpp
 
 }  // namespace squawk::app
