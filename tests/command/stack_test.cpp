@@ -1,0 +1,274 @@
+// Stack: line rules, handlers, errors that leave state unchanged, timed and
+// conditional commands, scenario files.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "command/registry.h"
+#include "command/stack.h"
+#include "core/files.h"
+#include "core/geo.h"
+#include "core/units.h"
+
+using namespace squawk;
+using namespace squawk::command;
+namespace fs = std::filesystem;
+
+namespace {
+
+Stack with_kl204() {
+  Stack s(1);
+  auto r = s.exec("CRE KL204 B744 52.0 4.0 90 FL200 250");
+  REQUIRE(r);
+  return s;
+}
+
+std::string error_of(Stack& s, const std::string& line) {
+  const std::string before = s.snapshot();
+  auto r = s.exec(line);
+  REQUIRE_MESSAGE(!r, line);
+  CHECK_MESSAGE(s.snapshot() == before, line);
+  return r.status().message();
+}
+
+fs::path temp_dir(const char* name) {
+  fs::path d = fs::temp_directory_path() / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("CRE then state in SI; acid-first form; bare callsign = POS") {
+  Stack s = with_kl204();
+  const auto& t = s.sim().traffic();
+  REQUIRE(t.n() == 1);
+  CHECK(t.alt[0] == doctest::Approx(20000 * 0.3048));
+  CHECK(t.hdg[0] == doctest::Approx(90));
+  CHECK(t.cas[0] == doctest::Approx(250 * 0.514444).epsilon(1e-6));
+  REQUIRE(s.exec("kl204 alt fl300"));
+  CHECK(t.sel_alt[0] == doctest::Approx(30000 * 0.3048));
+  REQUIRE(s.exec("KL204, SPD, M.80"));
+  CHECK(t.sel_spd[0] == doctest::Approx(0.80));
+  auto pos = s.exec("KL204");
+  REQUIRE(pos);
+  CHECK(pos->find("KL204 B744 at 52.00000 4.00000") == 0);
+  auto both = s.exec("HDG KL204 180; VS KL204 2000");
+  REQUIRE(both);
+  CHECK(t.sel_hdg[0] == doctest::Approx(180));
+}
+
+TEST_CASE("errors name the argument and the expected form; state unchanged") {
+  Stack s = with_kl204();
+  CHECK(error_of(s, "ALT KL204 FL9X") ==
+        "ALT KL204 FL9X: argument 2: altitude 'FL9X' is not a flight level (FL0..FL1000) or feet "
+        "(usage: ALT acid,alt,[vspd])");
+  CHECK(error_of(s, "ALT KL999 FL100").find("no aircraft 'KL999'") != std::string::npos);
+  CHECK(error_of(s, "KL999 ALT FL100").find("no aircraft 'KL999'") != std::string::npos);
+  CHECK(error_of(s, "FROB 1 2").find("unknown command or aircraft 'FROB'") != std::string::npos);
+  CHECK(error_of(s, "ALT KL204").find("missing argument 2 (altitude)") != std::string::npos);
+  CHECK(error_of(s, "HDG KL204 90 12").find("takes 2 arguments, but 3 were given") != std::string::npos);
+  CHECK(error_of(s, "CRE KL204 B744 52 4 0 FL100 250").find("KL204") != std::string::npos);
+  CHECK(error_of(s, "CRE X1 B744 EHAM").find("no navdata loaded") != std::string::npos);
+  CHECK(error_of(s, "LNAV KL204 ON").find("KL204") != std::string::npos);
+  CHECK(error_of(s, "DIRECT KL204 SPY").find("not in the route") != std::string::npos);
+  // Only the failing command of a line is undone; earlier ones stay.
+  auto r = s.exec("HDG KL204 10; ALT KL204 nope");
+  CHECK_FALSE(r);
+  CHECK(s.sim().traffic().sel_hdg[0] == doctest::Approx(10));
+}
+
+TEST_CASE("check() validates without running") {
+  Stack s = with_kl204();
+  const std::string before = s.snapshot();
+  CHECK(s.check("ALT KL204 FL100; KL204 SPD 250"));
+  CHECK_FALSE(s.check("ALT KL204 FL1X"));
+  CHECK_FALSE(s.check("WIBBLE"));
+  CHECK(s.snapshot() == before);
+}
+
+TEST_CASE("HDG turns at the bank-angle rate; run_until reaches the target") {
+  Stack s = with_kl204();
+  REQUIRE(s.exec("HDG KL204 180"));
+  REQUIRE(s.run_until(5.0));
+  const auto& t = s.sim().traffic();
+  // Turn rate g0 tan(25 deg) / TAS [deg/s] (BlueSky traffic.py).
+  const double rate = units::rad_to_deg(9.80665 * std::tan(units::deg_to_rad(25)) / t.tas[0]);
+  CHECK(t.hdg[0] == doctest::Approx(90 + 5 * rate).epsilon(0.02));
+  REQUIRE(s.run_until(200.0));
+  CHECK(t.hdg[0] == doctest::Approx(180));
+}
+
+TEST_CASE("SCHEDULE, DELAY and ECHO run at their times") {
+  Stack s = with_kl204();
+  REQUIRE(s.exec("SCHEDULE 00:00:10 KL204 ALT FL100"));
+  REQUIRE(s.exec("DELAY 5 ECHO five seconds"));
+  CHECK(s.queued() == 2);
+  REQUIRE(s.run_until(4.9));
+  CHECK(s.take_output().empty());
+  REQUIRE(s.run_until(5.0));
+  CHECK(s.take_output() == std::vector<std::string>{"five seconds"});
+  CHECK(s.sim().traffic().sel_alt[0] == doctest::Approx(20000 * 0.3048));
+  REQUIRE(s.run_until(10.0));
+  CHECK(s.sim().traffic().sel_alt[0] == doctest::Approx(10000 * 0.3048));
+  CHECK(s.queued() == 0);
+}
+
+TEST_CASE("ATALT / ATSPD / ATDIST fire once when the threshold is crossed") {
+  Stack s = with_kl204();
+  REQUIRE(s.exec("ALT KL204 FL210 2000"));
+  REQUIRE(s.exec("KL204 ATALT 20500 ECHO passing 20500"));
+  REQUIRE(s.exec("KL204 ATDIST 52.0 4.2 5 ECHO within 5"));
+  CHECK(s.conditions().size() == 2);
+  // Climb at 2000 fpm: 500 ft take 15 s.
+  REQUIRE(s.run_until(14.0));
+  CHECK(s.take_output().empty());
+  REQUIRE(s.run_until(16.5));
+  CHECK(s.take_output() == std::vector<std::string>{"passing 20500"});
+  CHECK(s.conditions().size() == 1);
+  // 0.2 deg of longitude at 52N is 7.39 NM; at ~300 kt TAS it takes ~29 s to close 2.4 NM.
+  REQUIRE(s.run_until(60.0));
+  CHECK(s.take_output() == std::vector<std::string>{"within 5"});
+  CHECK(s.conditions().empty());
+}
+
+TEST_CASE("DEFWPT, ADDWPT, route listing, AT constraints, DIRECT, DELWPT") {
+  Stack s = with_kl204();
+  REQUIRE(s.exec("DEFWPT ALPHA 52.0 4.5"));
+  REQUIRE(s.exec("DEFWPT BRAVO N52'10'00\" E004'50'00\""));
+  REQUIRE(s.exec("ADDWPT KL204 ALPHA FL200"));
+  REQUIRE(s.exec("ADDWPT KL204 BRAVO,,280"));
+  REQUIRE(s.exec("ADDWPT KL204 52.3 5.0"));
+  // AT works on a copy that replaces the simulation: read the route afresh.
+  auto route = [&s]() -> const sim::Route& { return s.sim().traffic().route[0]; };
+  REQUIRE(route().size() == 3);
+  CHECK(route().waypoints()[2].name == "KL204003");
+  CHECK(route().waypoints()[1].spd == doctest::Approx(280 * 0.514444));
+  CHECK(s.sim().traffic().lnav[0] == 1);
+  auto list = s.exec("LISTRTE KL204");
+  REQUIRE(list);
+  CHECK(list->find("* ALPHA") != std::string::npos);
+  REQUIRE(s.exec("KL204 AT BRAVO ALT FL150"));
+  CHECK(route().waypoints()[1].alt == doctest::Approx(15000 * 0.3048));
+  CHECK(route().waypoints()[1].spd == doctest::Approx(280 * 0.514444));
+  CHECK(route().active() == 0);
+  REQUIRE(s.exec("KL204 AT ALPHA FL180/250"));
+  CHECK(route().waypoints()[0].alt == doctest::Approx(18000 * 0.3048));
+  CHECK(route().active() == 0);
+  REQUIRE(s.exec("DIRECT KL204 BRAVO"));
+  CHECK(route().active() == 1);
+  CHECK(error_of(s, "KL204 AFTER BRAVO ADDWPT CHARLIE").find("'CHARLIE'") != std::string::npos);
+  REQUIRE(s.exec("DEFWPT CHARLIE 52.2 4.9"));
+  REQUIRE(s.exec("KL204 AFTER BRAVO ADDWPT CHARLIE FL120"));
+  CHECK(route().waypoints()[2].name == "CHARLIE");
+  REQUIRE(s.exec("DELWPT KL204 CHARLIE"));
+  CHECK(route().size() == 3);
+  REQUIRE(s.exec("DELRTE KL204"));
+  CHECK(route().empty());
+  CHECK(s.sim().traffic().lnav[0] == 0);
+}
+
+TEST_CASE("IC and PCALL: relative times, %n arguments, CR line ends, unknown commands skipped by name") {
+  const fs::path d = temp_dir("squawk_command_scn");
+  REQUIRE(files::write_atomic((d / "main.scn").string(),
+                              "00:00:00.00>CRE KL204 B744 52 4 90 FL200 250\r"
+                              "00:00:00.00>PAN KL204;ZOOM 2\r"
+                              "00:00:10.00>PCALL proc.SCN KL204 FL100\r"
+                              "00:00:30.00>ECHO done\r"));
+  REQUIRE(files::write_atomic((d / "proc.SCN").string(),
+                              "00:00:00.00>%0 ALT %1\n"
+                              "00:00:05.00>ECHO proc five %0\n"));
+  Stack s(3);
+  s.set_base_dir(d.string());
+  REQUIRE(s.exec("IC main"));
+  CHECK(s.sim().n() == 1);
+  CHECK(s.tally().skipped.at("PAN") == 1);
+  CHECK(s.tally().skipped.at("ZOOM") == 1);
+  REQUIRE(s.run_until(10.0));
+  CHECK(s.sim().traffic().sel_alt[0] == doctest::Approx(10000 * 0.3048));
+  REQUIRE(s.run_until(14.9));
+  CHECK(s.take_output().empty());
+  REQUIRE(s.run_until(15.0));
+  CHECK(s.take_output() == std::vector<std::string>{"proc five KL204"});
+  REQUIRE(s.run_until(30.0));
+  CHECK(s.take_output() == std::vector<std::string>{"done"});
+  CHECK(s.tally().failed.empty());
+  // IC resets: the aircraft is recreated at time 0.
+  REQUIRE(s.exec("IC main.scn"));
+  CHECK(s.sim().simt() == 0.0);
+  CHECK(s.sim().n() == 1);
+  CHECK(error_of(s, "IC nowhere").find("no scenario file 'nowhere'") != std::string::npos);
+}
+
+TEST_CASE("RESET, SEED and MCRE are reproducible") {
+  Stack a(0), b(0);
+  REQUIRE(a.exec("SEED 42; MCRE 5"));
+  REQUIRE(b.exec("SEED 42; MCRE 5"));
+  CHECK(a.sim().n() == 5);
+  CHECK(a.snapshot() == b.snapshot());
+  REQUIRE(a.exec("RESET"));
+  CHECK(a.sim().n() == 0);
+  CHECK(a.sim().simt() == 0.0);
+}
+
+TEST_CASE("CRECONFS with ASAS ON gives a conflict at the set geometry") {
+  Stack s = with_kl204();
+  REQUIRE(s.exec("ASAS ON"));
+  REQUIRE(s.exec("CRECONFS INT1 A320 KL204 90 0 120"));
+  REQUIRE(s.run_until(2.0));
+  REQUIRE(s.sim().conflicts().size() == 2);
+  const auto& c = s.sim().conflicts()[0];
+  CHECK(c.dcpa < 0.05 * 1852.0);  // set to 0 NM; flat-earth placement vs detection differ slightly
+  CHECK(c.tlos == doctest::Approx(118.0).epsilon(0.02));
+  auto r = s.exec("DTLOOK");
+  REQUIRE(r);
+  CHECK(*r == "DTLOOK 300 s");
+  REQUIRE(s.exec("ZONER 3; ZONEDH 500; RESO MVP; RFACH 1.1"));
+  CHECK(s.sim().cd_settings().rpz == doctest::Approx(3 * 1852.0));
+  CHECK(s.sim().cd_settings().hpz == doctest::Approx(500 * 0.3048));
+  CHECK(s.sim().cr_settings().enabled);
+}
+
+TEST_CASE("copies are independent (the translator validates on a scratch copy)") {
+  Stack s = with_kl204();
+  Stack scratch = s;
+  REQUIRE(scratch.exec("DEL KL204"));
+  CHECK(scratch.sim().n() == 0);
+  CHECK(s.sim().n() == 1);
+}
+
+TEST_CASE("navdata: airports, fixes and navaids resolve where BlueSky accepts them") {
+  const fs::path dir = fs::path(SQUAWK_SHARED_DIR) / "bluesky" / "navdata";
+  if (!fs::is_directory(dir)) {
+    MESSAGE("skipped: " << dir.string() << " not found (BlueSky navdata is optional)");
+    return;
+  }
+  auto db = NavDb::load(dir.string());
+  REQUIRE(db);
+  MESSAGE((*db)->airport_count() << " airports, " << (*db)->waypoint_count() << " fixes and navaids");
+  Stack s(0);
+  s.set_navdb(*db);
+  REQUIRE(s.exec("CRE KL204,B744,EHAM/RW18L,0,2000,150"));
+  const auto& t = s.sim().traffic();
+  // EHAM's reference point in airports.dat.
+  CHECK(t.lat[0] == doctest::Approx(52.309).epsilon(1e-3));
+  CHECK(t.lon[0] == doctest::Approx(4.764).epsilon(1e-3));
+  REQUIRE(s.exec("KL204 ADDWPT SPY FL100"));
+  REQUIRE(s.exec("DEST KL204 EGLL"));
+  REQUIRE(s.exec("ORIG KL204 EHAM"));
+  const auto& r = t.route[0];
+  REQUIRE(r.size() == 2);
+  CHECK(r.waypoints()[0].name == "SPY");
+  CHECK(r.waypoints()[1].name == "EGLL");
+  // HDG to a name: the bearing from the aircraft to it.
+  REQUIRE(s.exec("HDG KL204 EGLL"));
+  CHECK(t.sel_hdg[0] == doctest::Approx(geo::kwikqdrdist(t.lat[0], t.lon[0], r.waypoints()[1].lat,
+                                                         r.waypoints()[1].lon).qdr_deg));
+  auto pos = s.exec("POS SPY");
+  REQUIRE(pos);
+  CHECK(pos->rfind("SPY at 52.5", 0) == 0);
+  CHECK_FALSE(s.exec("ADDWPT KL204 NOSUCHFIX"));
+}
+
