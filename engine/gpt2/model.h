@@ -1,0 +1,128 @@
+// GPT-2 forward pass (batched, with a prefix KV cache) and the backward pass
+// of a trainable tail (the last k blocks + final LayerNorm + extra tensors).
+//
+// Shape legend: B sequences in a batch, T positions (the longest sequence),
+// P cached prefix positions, C channels, NH heads, L blocks, V vocabulary.
+// The model is exactly GPT-2: h = wte[tok] + wpe[pos]; per block
+// h += attn(ln_1(h)); h += mlp(ln_2(h)) with causal attention and tanh GELU;
+// out = ln_f(h); logits = out @ wte^T. "Hidden" below always means ln_f's
+// output, the input of the LM head or of any other head.
+//
+// Variable-length sequences in a batch are right-padded internally; causal
+// attention makes the padding invisible to each sequence's last position.
+// Sequence positions continue after the prefix: token t of a sequence sits at
+// position P + t, and P + T must not exceed n_ctx.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/rng.h"
+#include "core/status.h"
+#include "gpt2/config.h"
+#include "gpt2/params.h"
+
+namespace squawk::gpt2 {
+
+// Keys, values and block inputs of a token prefix, per block l: k[l], v[l],
+// resid[l] are [P, C]. Built and grown by Model::extend(); valid for the
+// parameters it was built with (rebuild it after an optimiser step, except
+// for Model::forward_train, which recomputes the trainable blocks itself).
+struct PrefixCache {
+  int len = 0;  // P
+  std::vector<std::vector<float>> k, v, resid;
+};
+
+class Model {
+ public:
+  // A zero-filled model; extras are appended after ln_f (see params.h).
+  static Result<Model> create(const Config& cfg, const std::vector<TensorSpec>& extras = {});
+
+  const Config& config() const { return layout_.config(); }
+  const ParamLayout& layout() const { return layout_; }
+  std::span<float> params() { return params_; }
+  std::span<const float> params() const { return params_; }
+  // The named tensor's floats; empty when there is no such tensor.
+  std::span<float> tensor(const std::string& name);
+
+  // GPT-2's initialisation: weights ~ N(0, std), the two residual projections
+  // per block N(0, std / sqrt(2 L)), biases 0, LayerNorm weights 1. Extras 0.
+  void init_random(Rng& rng, float std = 0.02f);
+
+  // ---- inference -------------------------------------------------------
+  // Runs `tokens` (at least one) after the cache's P positions and appends
+  // their keys, values and block inputs to the cache. When last_hidden is
+  // given it receives the hidden state of the last token [C].
+  Status extend(PrefixCache& cache, std::span<const int> tokens,
+                std::vector<float>* last_hidden = nullptr) const;
+  // Hidden state of the last token of each sequence [B, C], every sequence
+  // (each at least one token) continuing the cached prefix (may be empty).
+  Status forward_last(const PrefixCache& cache, const std::vector<std::vector<int>>& seqs,
+                      std::vector<float>& hidden) const;
+  // LM logits of every position of one sequence without cache [T, V].
+  Status logits_all(std::span<const int> tokens, std::vector<float>& logits) const;
+  // LM-head logits of chosen token ids: out[b, j] = hidden[b] . wte[ids[j]],
+  // hidden [B, C], out [B, n]. Ids must be in range (checked).
+  Status head_logits(std::span<const float> hidden, std::span<const int> ids,
+                     std::vector<float>& out) const;
+  // Backward of head_logits into the hidden state (wte is frozen):
+  // dhidden [B, C] += dlogits [B, n] @ wte[ids].
+  Status head_logits_backward(std::span<const float> dlogits, std::span<const int> ids,
+                              std::span<float> dhidden) const;
+
+  // ---- fine-tuning -----------------------------------------------------
+  // Makes the last k blocks (0..L), ln_f and the extras trainable and
+  // allocates their gradients (zeroed).
+  Status set_trainable_blocks(int k);
+  int trainable_blocks() const { return trainable_; }
+  // The trainable parameters: one contiguous span at the end of params()
+  // (blocks L-k..L-1, ln_f, extras), and their gradients, same length.
+  std::span<float> trainable_params();
+  std::span<float> grads() { return grads_; }
+  // Gradient of a trainable tensor; empty when the name is not trainable.
+  std::span<float> grad(const std::string& name);
+  void zero_grads();
+
+  // Like forward_last, storing the activations of the trainable blocks. The
+  // prefix part of those blocks is recomputed from the cache's input of the
+  // first trainable block, so gradients through the prefix keys and values
+  // are exact and the cache's frozen part stays valid across updates.
+  Status forward_train(const PrefixCache& cache, const std::vector<std::vector<int>>& seqs,
+                       std::vector<float>& hidden);
+  // Accumulates into grads() the gradient of a loss whose derivative with
+  // respect to the last forward_train's hidden output is dhidden [B, C].
+  Status backward(std::span<const float> dhidden);
+
+  // Activations of one block over R rows (kept per trainable block).
+  struct Acts {
+    std::vector<float> x_in, ln1, ln1_mean, ln1_rstd, qkv, att, atty, x_mid, ln2, ln2_mean,
+        ln2_rstd, fch, fch_gelu;
+  };
+
+ private:
+  struct Batch {
+    int B = 0, T = 0;
+    std::vector<int> tokens;  // [B, T], right-padded with token 0
+    std::vector<int> last;    // [B] index of each sequence's last token
+  };
+  struct AttnArgs;
+  Result<Batch> make_batch(int prefix_len, const std::vector<std::vector<int>>& seqs) const;
+  void embed(const Batch& batch, int pos0, float* x) const;
+  void block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a,
+                     bool store) const;
+  void block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& attn);
+  void gather_last(const Batch& batch, int row0, const float* x, float* out) const;
+
+  ParamLayout layout_;
+  std::vector<float> params_;
+  int trainable_ = 0;
+  std::vector<float> grads_;
+  // State of the last forward_train.
+  std::vector<Acts> tail_acts_;
+  Batch train_batch_;
+  int train_prefix_ = 0;
+  std::vector<float> lnf_in_, lnf_mean_, lnf_rstd_;
+};
+
+}  // namespace squawk::gpt2

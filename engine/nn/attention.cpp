@@ -1,0 +1,249 @@
+// GCC 12 reports -Wmaybe-uninitialized falsely inside Eigen's AVX-512 product kernels.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include "nn/attention.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace squawk::nn {
+
+namespace {
+
+using RowMat = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using ConstMap = Eigen::Map<const RowMat, 0, Eigen::OuterStride<>>;
+using MutMap = Eigen::Map<RowMat, 0, Eigen::OuterStride<>>;
+
+// One attention problem: nq queries (rows q0.. of qkv) over nc context keys
+// (ctx_k/ctx_v with row stride ctx_stride) followed by their own keys, causal.
+struct Group {
+  int q0 = 0, nq = 0, nc = 0;
+  const float* ctx_k = nullptr;
+  const float* ctx_v = nullptr;
+  int ctx_stride = 0;
+  bool ctx_is_inline = false;  // context rows are rows 0..nc-1 of qkv
+  size_t att_offset = 0;       // start of this group's [NH, nq, nc+nq] probabilities
+};
+
+std::vector<Group> groups(const float* qkv, const float* k_ext, const float* v_ext, int ext_stride,
+                          const AttentionShape& s) {
+  std::vector<Group> g;
+  const int C = s.C;
+  size_t att = 0;
+  int row = 0;
+  if (s.inline_prefix && s.P > 0) {
+    g.push_back({0, s.P, 0, nullptr, nullptr, 0, false, 0});
+    att += static_cast<size_t>(s.NH) * s.P * s.P;
+    row = s.P;
+  }
+  for (int b = 0; b < s.B; ++b) {
+    Group gr{row, s.T, s.P, nullptr, nullptr, 0, false, att};
+    if (s.P > 0) {
+      if (s.inline_prefix) {
+        gr.ctx_k = qkv + C;
+        gr.ctx_v = qkv + 2 * C;
+        gr.ctx_stride = 3 * C;
+        gr.ctx_is_inline = true;
+      } else {
+        gr.ctx_k = k_ext;
+        gr.ctx_v = v_ext;
+        gr.ctx_stride = ext_stride;
+      }
+    }
+    g.push_back(gr);
+    att += static_cast<size_t>(s.NH) * s.T * (s.P + s.T);
+    row += s.T;
+  }
+  return g;
+}
+
+}  // namespace
+
+size_t attention_probs_size(const AttentionShape& s) {
+  size_t n = static_cast<size_t>(s.B) * s.NH * s.T * (s.P + s.T);
+  if (s.inline_prefix) n += static_cast<size_t>(s.NH) * s.P * s.P;
+  return n;
+}
+
+void attention_forward(float* out, float* att, const float* qkv, const float* k_ext,
+                       const float* v_ext, int ext_stride, const AttentionShape& s) {
+  const int C = s.C, C3 = 3 * C, hs = C / s.NH;
+  const float scale = 1.0f / std::sqrt(static_cast<float>(hs));
+  RowMat S;
+  for (const Group& g : groups(qkv, k_ext, v_ext, ext_stride, s)) {
+    const int nq = g.nq, nc = g.nc, nk = nc + nq;
+    for (int h = 0; h < s.NH; ++h) {
+      const float* base = qkv + static_cast<long>(g.q0) * C3 + h * hs;
+      ConstMap Q(base, nq, hs, Eigen::OuterStride<>(C3));
+      ConstMap Ks(base + C, nq, hs, Eigen::OuterStride<>(C3));
+      ConstMap Vs(base + 2 * C, nq, hs, Eigen::OuterStride<>(C3));
+      S.resize(nq, nk);
+      if (nc > 0) {
+        ConstMap Kc(g.ctx_k + h * hs, nc, hs, Eigen::OuterStride<>(g.ctx_stride));
+        S.leftCols(nc).noalias() = scale * (Q * Kc.transpose());
+      }
+      S.rightCols(nq).noalias() = scale * (Q * Ks.transpose());
+      for (int i = 0; i < nq; ++i) {
+        float* r = S.row(i).data();
+        const int valid = nc + i + 1;
+        float mx = -std::numeric_limits<float>::infinity();
+        for (int j = 0; j < valid; ++j) mx = std::max(mx, r[j]);
+        float sum = 0.0f;
+        for (int j = 0; j < valid; ++j) {
+          r[j] = std::exp(r[j] - mx);
+          sum += r[j];
+        }
+        const float inv = 1.0f / sum;
+        for (int j = 0; j < valid; ++j) r[j] *= inv;
+        for (int j = valid; j < nk; ++j) r[j] = 0.0f;
+      }
+      MutMap O(out + static_cast<long>(g.q0) * C + h * hs, nq, hs, Eigen::OuterStride<>(C));
+      O.noalias() = S.rightCols(nq) * Vs;
+      if (nc > 0) {
+        ConstMap Vc(g.ctx_v + h * hs, nc, hs, Eigen::OuterStride<>(g.ctx_stride));
+        O.noalias() += S.leftCols(nc) * Vc;
+      }
+      if (att) {
+        Eigen::Map<RowMat>(att + g.att_offset + static_cast<size_t>(h) * nq * nk, nq, nk) = S;
+      }
+    }
+  }
+}
+
+void attention_backward(float* dqkv, const float* dout, const float* att, const float* qkv,
+                        const float* k_ext, const float* v_ext, int ext_stride,
+                        const AttentionShape& s) {
+  const int C = s.C, C3 = 3 * C, hs = C / s.NH;
+  const float scale = 1.0f / std::sqrt(static_cast<float>(hs));
+  RowMat dA, dS;
+  for (const Group& g : groups(qkv, k_ext, v_ext, ext_stride, s)) {
+    const int nq = g.nq, nc = g.nc, nk = nc + nq;
+    for (int h = 0; h < s.NH; ++h) {
+      const long off = static_cast<long>(g.q0) * C3 + h * hs;
+      ConstMap Q(qkv + off, nq, hs, Eigen::OuterStride<>(C3));
+      ConstMap Ks(qkv + off + C, nq, hs, Eigen::OuterStride<>(C3));
+      ConstMap Vs(qkv + off + 2 * C, nq, hs, Eigen::OuterStride<>(C3));
+      MutMap dQ(dqkv + off, nq, hs, Eigen::OuterStride<>(C3));
+      MutMap dKs(dqkv + off + C, nq, hs, Eigen::OuterStride<>(C3));
+      MutMap dVs(dqkv + off + 2 * C, nq, hs, Eigen::OuterStride<>(C3));
+      ConstMap dO(dout + static_cast<long>(g.q0) * C + h * hs, nq, hs, Eigen::OuterStride<>(C));
+      Eigen::Map<const RowMat> A(att + g.att_offset + static_cast<size_t>(h) * nq * nk, nq, nk);
+      dA.resize(nq, nk);
+      dA.rightCols(nq).noalias() = dO * Vs.transpose();
+      if (nc > 0) {
+        ConstMap Vc(g.ctx_v + h * hs, nc, hs, Eigen::OuterStride<>(g.ctx_stride));
+        dA.leftCols(nc).noalias() = dO * Vc.transpose();
+      }
+      // Softmax backward: dS = A .* (dA - rowsum(A .* dA)), then the 1/sqrt(hs) scale.
+      dS.resize(nq, nk);
+      for (int i = 0; i < nq; ++i) {
+        const float dot = A.row(i).dot(dA.row(i));
+        dS.row(i) = scale * (A.row(i).array() * (dA.row(i).array() - dot)).matrix();
+      }
+      dVs.noalias() += A.rightCols(nq).transpose() * dO;
+      dQ.noalias() += dS.rightCols(nq) * Ks;
+      dKs.noalias() += dS.rightCols(nq).transpose() * Q;
+      if (nc > 0) {
+        ConstMap Kc(g.ctx_k + h * hs, nc, hs, Eigen::OuterStride<>(g.ctx_stride));
+        dQ.noalias() += dS.leftCols(nc) * Kc;
+        if (g.ctx_is_inline) {
+          MutMap dKc(dqkv + C + h * hs, nc, hs, Eigen::OuterStride<>(C3));
+          MutMap dVc(dqkv + 2 * C + h * hs, nc, hs, Eigen::OuterStride<>(C3));
+          dKc.noalias() += dS.leftCols(nc).transpose() * Q;
+          dVc.noalias() += A.leftCols(nc).transpose() * dO;
+        }
+      }
+    }
+  }
+}
+
+void attention_forward_ref(float* out, float* att, const float* qkv, const float* k_ext,
+                           const float* v_ext, int ext_stride, const AttentionShape& s) {
+  const int C = s.C, C3 = 3 * C, hs = C / s.NH;
+  const double scale = 1.0 / std::sqrt(static_cast<double>(hs));
+  std::vector<double> w;
+  for (const Group& g : groups(qkv, k_ext, v_ext, ext_stride, s)) {
+    const int nq = g.nq, nc = g.nc, nk = nc + nq;
+    for (int h = 0; h < s.NH; ++h) {
+      for (int i = 0; i < nq; ++i) {
+        const float* q = qkv + static_cast<long>(g.q0 + i) * C3 + h * hs;
+        auto key = [&](int j) {
+          return j < nc ? g.ctx_k + static_cast<long>(j) * g.ctx_stride + h * hs
+                        : qkv + static_cast<long>(g.q0 + j - nc) * C3 + C + h * hs;
+        };
+        auto val = [&](int j) {
+          return j < nc ? g.ctx_v + static_cast<long>(j) * g.ctx_stride + h * hs
+                        : qkv + static_cast<long>(g.q0 + j - nc) * C3 + 2 * C + h * hs;
+        };
+        w.assign(nk, 0.0);
+        double mx = -1e300, sum = 0.0;
+        for (int j = 0; j <= nc + i; ++j) {
+          double d = 0.0;
+          for (int e = 0; e < hs; ++e) d += static_cast<double>(q[e]) * key(j)[e];
+          w[j] = d * scale;
+          mx = std::max(mx, w[j]);
+        }
+        for (int j = 0; j <= nc + i; ++j) sum += (w[j] = std::exp(w[j] - mx));
+        for (int j = 0; j <= nc + i; ++j) w[j] /= sum;
+        float* o = out + static_cast<long>(g.q0 + i) * C + h * hs;
+        for (int e = 0; e < hs; ++e) {
+          double acc = 0.0;
+          for (int j = 0; j <= nc + i; ++j) acc += w[j] * val(j)[e];
+          o[e] = static_cast<float>(acc);
+        }
+        if (att) {
+          float* a = att + g.att_offset + (static_cast<size_t>(h) * nq + i) * nk;
+          for (int j = 0; j < nk; ++j) a[j] = static_cast<float>(w[j]);
+        }
+      }
+    }
+  }
+}
+
+void attention_backward_ref(float* dqkv, const float* dout, const float* att, const float* qkv,
+                            const float* k_ext, const float* v_ext, int ext_stride,
+                            const AttentionShape& s) {
+  const int C = s.C, C3 = 3 * C, hs = C / s.NH;
+  const double scale = 1.0 / std::sqrt(static_cast<double>(hs));
+  std::vector<double> da;
+  for (const Group& g : groups(qkv, k_ext, v_ext, ext_stride, s)) {
+    const int nq = g.nq, nc = g.nc, nk = nc + nq;
+    auto row_of = [&](int j) { return j < nc ? j : g.q0 + j - nc; };
+    for (int h = 0; h < s.NH; ++h) {
+      for (int i = 0; i < nq; ++i) {
+        const long qrow = static_cast<long>(g.q0 + i) * C3 + h * hs;
+        const float* a = att + g.att_offset + (static_cast<size_t>(h) * nq + i) * nk;
+        const float* dout_i = dout + static_cast<long>(g.q0 + i) * C + h * hs;
+        const int valid = nc + i + 1;
+        da.assign(nk, 0.0);
+        double dot = 0.0;
+        for (int j = 0; j < valid; ++j) {
+          const float* v = j < nc ? g.ctx_v + static_cast<long>(j) * g.ctx_stride + h * hs
+                                  : qkv + static_cast<long>(row_of(j)) * C3 + 2 * C + h * hs;
+          for (int e = 0; e < hs; ++e) da[j] += static_cast<double>(dout_i[e]) * v[e];
+          dot += da[j] * a[j];
+        }
+        for (int j = 0; j < valid; ++j) {
+          const double ds = a[j] * (da[j] - dot) * scale;
+          const bool ctx = j < nc;
+          const float* k = ctx ? g.ctx_k + static_cast<long>(j) * g.ctx_stride + h * hs
+                               : qkv + static_cast<long>(row_of(j)) * C3 + C + h * hs;
+          const bool grads_to_key = !ctx || g.ctx_is_inline;
+          const long krow = static_cast<long>(row_of(j)) * C3 + h * hs;
+          for (int e = 0; e < hs; ++e) {
+            dqkv[qrow + e] += static_cast<float>(ds * k[e]);
+            if (grads_to_key) {
+              dqkv[krow + C + e] += static_cast<float>(ds * qkv[qrow + e]);
+              dqkv[krow + 2 * C + e] += static_cast<float>(a[j] * dout_i[e]);
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace squawk::nn

@@ -1,0 +1,101 @@
+// GCC 12 reports -Wmaybe-uninitialized falsely inside Eigen's AVX-512 product kernels.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include "nn/gemm.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+
+#include <Eigen/Core>
+
+// OpenBLAS entry points, weak so that a build without BLAS links and falls
+// back to Eigen (the pointers are then null).
+extern "C" {
+void cblas_sgemm(int order, int trans_a, int trans_b, int m, int n, int k, float alpha,
+                 const float* a, int lda, const float* b, int ldb, float beta, float* c, int ldc)
+    __attribute__((weak));
+void openblas_set_num_threads(int n) __attribute__((weak));
+}
+
+namespace squawk::nn {
+
+namespace {
+
+constexpr int kCblasRowMajor = 101, kCblasNoTrans = 111, kCblasTrans = 112;
+
+std::atomic<int64_t> g_flops{0};
+std::atomic<int64_t> g_nanos{0};
+int g_threads = 1;
+
+using RowMat = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using ConstMap = Eigen::Map<const RowMat, 0, Eigen::OuterStride<>>;
+using MutMap = Eigen::Map<RowMat, 0, Eigen::OuterStride<>>;
+
+void gemm_eigen(bool ta, bool tb, int m, int n, int k, float alpha, const float* a, int lda,
+                const float* b, int ldb, float beta, float* c, int ldc) {
+  ConstMap A(a, ta ? k : m, ta ? m : k, Eigen::OuterStride<>(lda));
+  ConstMap B(b, tb ? n : k, tb ? k : n, Eigen::OuterStride<>(ldb));
+  MutMap C(c, m, n, Eigen::OuterStride<>(ldc));
+  if (beta == 0.0f) C.setZero();
+  else if (beta != 1.0f) C *= beta;
+  if (!ta && !tb) C.noalias() += alpha * (A * B);
+  else if (ta && !tb) C.noalias() += alpha * (A.transpose() * B);
+  else if (!ta && tb) C.noalias() += alpha * (A * B.transpose());
+  else C.noalias() += alpha * (A.transpose() * B.transpose());
+}
+
+}  // namespace
+
+void gemm(bool trans_a, bool trans_b, int m, int n, int k, float alpha, const float* a, int lda,
+          const float* b, int ldb, float beta, float* c, int ldc) {
+  if (m <= 0 || n <= 0) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (k <= 0) {
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < n; ++j) c[static_cast<int64_t>(i) * ldc + j] *= beta;
+  } else if (cblas_sgemm) {
+    cblas_sgemm(kCblasRowMajor, trans_a ? kCblasTrans : kCblasNoTrans,
+                trans_b ? kCblasTrans : kCblasNoTrans, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+  } else {
+    gemm_eigen(trans_a, trans_b, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+  }
+  const auto dt = std::chrono::steady_clock::now() - t0;
+  g_flops += 2 * static_cast<int64_t>(m) * n * std::max(k, 0);
+  g_nanos += std::chrono::duration_cast<std::chrono::nanoseconds>(dt).count();
+}
+
+void gemm_ref(bool trans_a, bool trans_b, int m, int n, int k, float alpha, const float* a, int lda,
+              const float* b, int ldb, float beta, float* c, int ldc) {
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < n; ++j) {
+      double acc = 0.0;
+      for (int p = 0; p < k; ++p) {
+        const float av = trans_a ? a[static_cast<int64_t>(p) * lda + i] : a[static_cast<int64_t>(i) * lda + p];
+        const float bv = trans_b ? b[static_cast<int64_t>(j) * ldb + p] : b[static_cast<int64_t>(p) * ldb + j];
+        acc += static_cast<double>(av) * bv;
+      }
+      float& cv = c[static_cast<int64_t>(i) * ldc + j];
+      cv = static_cast<float>(alpha * acc + (beta == 0.0f ? 0.0 : static_cast<double>(beta) * cv));
+    }
+  }
+}
+
+const char* gemm_backend() { return cblas_sgemm ? "openblas" : "eigen"; }
+
+void set_num_threads(int n) {
+  g_threads = std::max(1, n);
+  if (openblas_set_num_threads) openblas_set_num_threads(g_threads);
+}
+
+int num_threads() { return cblas_sgemm ? g_threads : 1; }
+
+GemmStats gemm_stats() {
+  return {g_flops.load(), static_cast<double>(g_nanos.load()) * 1e-9};
+}
+
+void reset_gemm_stats() {
+  g_flops = 0;
+  g_nanos = 0;
+}
+
+}  // namespace squawk::nn

@@ -1,0 +1,227 @@
+// GPT-2 model: forward against an independent numpy implementation, KV cache
+// against the full forward, tail backward against finite differences.
+#include <doctest/doctest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/rng.h"
+#include "gpt2/checkpoint.h"
+#include "gpt2/model.h"
+
+using namespace squawk;
+using namespace squawk::gpt2;
+
+namespace {
+
+// A model whose every parameter is random (LayerNorm weights around 1), so that
+// every term of the forward pass matters.
+Model random_model(const Config& cfg, uint64_t seed, const std::vector<TensorSpec>& extras = {}) {
+  auto m = Model::create(cfg, extras);
+  REQUIRE(m.is_ok());
+  Rng rng(seed);
+  for (const TensorSpec& t : m->layout().tensors()) {
+    const bool ln = t.name.find("ln_") != std::string::npos && t.name.find(".weight") != std::string::npos;
+    for (float& v : m->tensor(t.name)) v = static_cast<float>((ln ? 1.0 : 0.0) + rng.normal(0.0, 0.2));
+  }
+  return std::move(m).value();
+}
+
+std::string temp_dir(const std::string& tag) {
+  auto p = std::filesystem::temp_directory_path() /
+           ("squawk_gpt2_" + tag + "_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(p);
+  return p.string();
+}
+
+std::string run_capture(const std::string& cmd) {
+  std::string out;
+  FILE* f = ::popen(cmd.c_str(), "r");
+  if (!f) return out;
+  char buf[65536];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) out.append(buf, n);
+  ::pclose(f);
+  return out;
+}
+
+bool python_has_numpy() {
+  return std::system("/usr/bin/python3 -c 'import numpy' >/dev/null 2>&1") == 0;
+}
+
+float max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
+  REQUIRE(a.size() == b.size());
+  float m = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
+  return m;
+}
+
+const Config kSmall{3, 4, 32, 48, 61, 1e-5f};
+
+}  // namespace
+
+TEST_CASE("forward logits equal the independent numpy GPT-2") {
+  if (!python_has_numpy()) {
+    MESSAGE("skipped: /usr/bin/python3 lacks numpy");
+    return;
+  }
+  const Config cfg{2, 4, 64, 64, 257, 1e-5f};
+  Model model = random_model(cfg, 7);
+  const std::string dir = temp_dir("numpy");
+  REQUIRE(save_model(dir, model).is_ok());
+  const std::vector<int> tokens = {256, 72, 101, 108, 108, 111, 32, 75, 76, 77, 0, 255, 3, 200, 17, 9};
+  std::string arg;
+  for (int t : tokens) arg.append(arg.empty() ? "" : ",").append(std::to_string(t));
+  const std::string out = run_capture("/usr/bin/python3 " SQUAWK_SOURCE_DIR
+                                      "/tests/gpt2/numpy_ref.py " + dir + " " + arg);
+  const auto j = nlohmann::json::parse(out, nullptr, false);
+  REQUIRE_MESSAGE(!j.is_discarded(), "numpy_ref.py printed: " << out.substr(0, 300));
+  std::vector<float> want;
+  for (const auto& row : j["logits"])
+    for (const auto& v : row) want.push_back(v.get<float>());
+  auto loaded = load_model(dir);
+  REQUIRE(loaded.is_ok());
+  std::vector<float> got;
+  REQUIRE(loaded->logits_all(tokens, got).is_ok());
+  const float diff = max_abs_diff(got, want);
+  MESSAGE("max |squawk - numpy| over " << got.size() << " logits: " << diff);
+  CHECK(diff < 1e-4f);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("KV-cached forward equals the full forward") {
+  Model model = random_model(kSmall, 11);
+  const std::vector<int> prefix = {5, 9, 2, 44, 60, 1, 7};
+  const std::vector<std::vector<int>> suffixes = {{3, 4, 5}, {8}, {10, 11, 12, 13, 14}};
+  PrefixCache cache;
+  REQUIRE(model.extend(cache, prefix).is_ok());
+  CHECK(cache.len == 7);
+  std::vector<float> cached, full, one;
+  REQUIRE(model.forward_last(cache, suffixes, cached).is_ok());
+  std::vector<std::vector<int>> whole;
+  for (const auto& s : suffixes) {
+    whole.push_back(prefix);
+    whole.back().insert(whole.back().end(), s.begin(), s.end());
+  }
+  REQUIRE(model.forward_last({}, whole, full).is_ok());
+  CHECK(max_abs_diff(cached, full) < 1e-5f);
+
+  SUBCASE("token-by-token extension matches too") {
+    PrefixCache inc;
+    std::vector<float> h;
+    for (int t : whole[2]) REQUIRE(model.extend(inc, std::vector<int>{t}, &h).is_ok());
+    std::vector<float> want(full.begin() + 2 * kSmall.n_embd, full.end());
+    CHECK(max_abs_diff(h, want) < 1e-5f);
+  }
+  SUBCASE("head logits equal the LM logits at the last position") {
+    std::vector<float> all, picked;
+    REQUIRE(model.logits_all(whole[0], all).is_ok());
+    const std::vector<int> ids = {0, 17, 60};
+    REQUIRE(model.head_logits(std::span<const float>(full.data(), kSmall.n_embd), ids, picked).is_ok());
+    const size_t last = (whole[0].size() - 1) * kSmall.vocab_size;
+    for (size_t j = 0; j < ids.size(); ++j) CHECK(picked[j] == doctest::Approx(all[last + ids[j]]).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("bad inputs to the model are errors") {
+  Model model = random_model(kSmall, 3);
+  std::vector<float> h;
+  PrefixCache cache;
+  CHECK_FALSE(model.forward_last(cache, {}, h).is_ok());
+  CHECK_FALSE(model.forward_last(cache, {{}}, h).is_ok());
+  auto st = model.forward_last(cache, {{1, 61}}, h);
+  CHECK(st.message().find("outside the vocabulary") != std::string::npos);
+  CHECK_FALSE(model.forward_last(cache, {std::vector<int>(49, 1)}, h).is_ok());
+  REQUIRE(model.extend(cache, std::vector<int>(40, 1)).is_ok());
+  CHECK_FALSE(model.forward_last(cache, {std::vector<int>(9, 1)}, h).is_ok());
+  CHECK_FALSE(model.backward(std::vector<float>(32, 0.0f)).is_ok());
+  REQUIRE(model.set_trainable_blocks(1).is_ok());
+  CHECK_FALSE(model.backward(std::vector<float>(32, 0.0f)).is_ok());
+  CHECK_FALSE(model.set_trainable_blocks(4).is_ok());
+  PrefixCache other;
+  other.len = 3;
+  CHECK_FALSE(model.forward_last(other, {{1}}, h).is_ok());
+}
+
+TEST_CASE("tail backward matches finite differences for every trainable tensor") {
+  const std::vector<TensorSpec> extras = {{"head.weight", {32, 3}, 0, 0}};
+  Model model = random_model(kSmall, 5, extras);
+  const int k = 2;
+  REQUIRE(model.set_trainable_blocks(k).is_ok());
+  const std::vector<int> prefix = {4, 8, 15, 16, 23};
+  const std::vector<std::vector<int>> seqs = {{42, 1, 2}, {7}, {9, 9, 30, 31}};
+  PrefixCache cache;
+  REQUIRE(model.extend(cache, prefix).is_ok());
+  const int C = kSmall.n_embd, A = 3, B = 3;
+  Rng rng(99);
+  std::vector<double> r(static_cast<size_t>(B) * A);
+  for (double& v : r) v = rng.normal();
+  // Loss = sum(R .* tanh(hidden @ head)): exercises the head tensor too.
+  auto loss_and_dhidden = [&](std::vector<float>* dhidden) {
+    std::vector<float> hidden;
+    REQUIRE(model.forward_train(cache, seqs, hidden).is_ok());
+    auto head = model.tensor("head.weight");
+    double loss = 0.0;
+    if (dhidden) dhidden->assign(hidden.size(), 0.0f);
+    auto ghead = model.grad("head.weight");
+    for (int b = 0; b < B; ++b)
+      for (int a = 0; a < A; ++a) {
+        double z = 0.0;
+        for (int c = 0; c < C; ++c) z += static_cast<double>(hidden[b * C + c]) * head[c * A + a];
+        const double th = std::tanh(z);
+        loss += r[b * A + a] * th;
+        if (dhidden) {
+          const double dz = r[b * A + a] * (1.0 - th * th);
+          for (int c = 0; c < C; ++c) {
+            (*dhidden)[b * C + c] += static_cast<float>(dz * head[c * A + a]);
+            ghead[c * A + a] += static_cast<float>(dz * hidden[b * C + c]);
+          }
+        }
+      }
+    return loss;
+  };
+  model.zero_grads();
+  std::vector<float> dh;
+  loss_and_dhidden(&dh);
+  REQUIRE(model.backward(dh).is_ok());
+  std::vector<float> analytic(model.grads().begin(), model.grads().end());
+
+  const size_t start = model.params().size() - model.grads().size();
+  int checked = 0, tensors = 0;
+  for (const TensorSpec& t : model.layout().tensors()) {
+    if (t.offset < start) continue;
+    ++tensors;
+    Rng pick(t.offset);
+    for (int s = 0; s < 4; ++s) {
+      const size_t i = t.offset + static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1));
+      float& p = model.params()[i];
+      const float saved = p, eps = 1e-2f;
+      p = saved + eps;
+      const double lp = loss_and_dhidden(nullptr);
+      p = saved - eps;
+      const double lm = loss_and_dhidden(nullptr);
+      p = saved;
+      const double fd = (lp - lm) / (2.0 * eps);
+      const double an = analytic[i - start];
+      INFO(t.name << "[" << (i - t.offset) << "]: analytic " << an << ", finite difference " << fd);
+      CHECK(std::fabs(an - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
+      ++checked;
+    }
+  }
+  CHECK(tensors == k * 12 + 2 + 1);
+  MESSAGE(checked << " finite-difference checks over " << tensors << " trainable tensors");
+
+  SUBCASE("training forward equals the inference forward") {
+    std::vector<float> a, b;
+    REQUIRE(model.forward_train(cache, seqs, a).is_ok());
+    REQUIRE(model.forward_last(cache, seqs, b).is_ok());
+    CHECK(max_abs_diff(a, b) < 1e-5f);
+  }
+}
