@@ -8,6 +8,26 @@
 
 namespace squawk::rag {
 
+namespace {
+
+// Optimal string alignment distance: insertions, deletions, substitutions and
+// swaps of neighbours each cost 1.
+size_t osa_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (size_t i = 1; i <= a.size(); ++i)
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+}  // namespace
+
 Bm25Index::Bm25Index(std::vector<Document> docs, double k1, double b)
     : docs_(std::move(docs)), k1_(k1), b_(b) {
   lengths_.reserve(docs_.size());
@@ -23,11 +43,22 @@ Bm25Index::Bm25Index(std::vector<Document> docs, double k1, double b)
   avg_len_ = docs_.empty() ? 0.0 : total / static_cast<double>(docs_.size());
 }
 
+std::string Bm25Index::nearest_term(const std::string& word) const {
+  if (word.size() < kMinFuzzyLength) return {};
+  std::string best;
+  for (const auto& [term, posting] : postings_) {
+    if (term.size() + 1 < word.size() || term.size() > word.size() + 1) continue;
+    if (osa_distance(word, term) == 1 && (best.empty() || term < best)) best = term;
+  }
+  return best;
+}
+
 std::vector<Hit> Bm25Index::search(std::string_view query, size_t k) const {
   std::vector<double> score(docs_.size(), 0.0);
   const double n_docs = static_cast<double>(docs_.size());
   for (const auto& t : tokenize(query)) {
     auto it = postings_.find(t);
+    if (it == postings_.end()) it = postings_.find(nearest_term(t));
     if (it == postings_.end()) continue;
     const double n_t = static_cast<double>(it->second.size());
     const double idf = std::log(1.0 + (n_docs - n_t + 0.5) / (n_t + 0.5));

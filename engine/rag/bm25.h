@@ -5,7 +5,11 @@
 //   idf(t) = ln(1 + (N - n(t) + 0.5) / (n(t) + 0.5)),
 // with f the term count in d, |d| its length in tokens, N the number of
 // documents and n(t) how many contain t. A query term counts once per
-// occurrence. Ties keep document order, so results are deterministic.
+// occurrence. A query word of kMinFuzzyLength or more letters that no
+// document contains stands for the indexed term one edit away (insertion,
+// deletion, substitution or swap of neighbours; the alphabetically first when
+// several), so typing slips ("tunr", "dleete") still retrieve. Ties keep
+// document order, so results are deterministic.
 #pragma once
 
 #include <string>
@@ -31,6 +35,10 @@ class Bm25Index {
   const std::vector<Document>& documents() const { return docs_; }
 
  private:
+  static constexpr size_t kMinFuzzyLength = 4;
+  // The indexed term one edit from `word`, or "" (see above).
+  std::string nearest_term(const std::string& word) const;
+
   std::vector<Document> docs_;
   double k1_, b_;
   double avg_len_ = 0.0;

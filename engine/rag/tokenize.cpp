@@ -50,6 +50,8 @@ std::vector<std::string> tokenize(std::string_view text) {
   };
   for (char ch : text) {
     const auto c = static_cast<unsigned char>(ch);
+    const bool digit = std::isdigit(c) != 0;
+    if (!word.empty() && digit != (std::isdigit(static_cast<unsigned char>(word.back())) != 0)) flush();
     if (std::isalnum(c)) word.push_back(static_cast<char>(std::tolower(c)));
     else flush();
   }
