@@ -1,0 +1,57 @@
+// Translation corpora (shared/corpora/*.tsv) and their evaluation.
+//
+// Contract: read_corpus() reads the TSV format `id setup utterance expected
+// category` (a header line first); a row with fewer than 5 fields is an
+// error naming the file and line. evaluate() runs a translator on every case
+// and scores it with score_case(); the report keeps per-case outcomes and
+// per-category counts in first-seen order. format_report() prints a table in
+// the style of the paper's Table 2 (category, cases, correct, accuracy).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/status.h"
+#include "translate/offline_translator.h"
+
+namespace squawk::translate {
+
+struct CorpusCase {
+  std::string id, setup, utterance, expected, category;
+};
+
+Result<std::vector<CorpusCase>> read_corpus(const std::string& path);
+// Parses TSV text; `name` is used in error messages.
+Result<std::vector<CorpusCase>> parse_corpus(const std::string& tsv, const std::string& name);
+
+struct CaseOutcome {
+  std::string id, category, produced, expected;
+  bool asked = false;
+  bool correct = false;
+};
+
+struct CategoryScore {
+  std::string category;
+  int cases = 0;
+  int correct = 0;
+};
+
+struct EvalReport {
+  std::vector<CaseOutcome> outcomes;
+  std::vector<CategoryScore> categories;
+  int cases = 0;
+  int correct = 0;
+  double accuracy() const { return cases ? static_cast<double>(correct) / cases : 0.0; }
+};
+
+// A translator for one case: its own setup and utterance -> a Translation,
+// or an error (for example a setup line it could not run).
+using CaseTranslator = std::function<Result<Translation>(const CorpusCase&)>;
+
+EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& translate);
+// The offline translator on a StaticWorld built from the case's setup.
+Result<Translation> translate_case_offline(const CorpusCase& c);
+std::string format_report(const EvalReport& r, const std::string& title);
+
+}  // namespace squawk::translate

@@ -1,0 +1,155 @@
+#include "translate/number_words.h"
+
+#include <array>
+#include <cstdlib>
+
+namespace squawk::translate {
+namespace {
+
+int teen_word(const std::string& w) {
+  static const std::array<const char*, 10> kTeens = {"ten",     "eleven",  "twelve",    "thirteen", "fourteen",
+                                                     "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"};
+  for (size_t i = 0; i < kTeens.size(); ++i)
+    if (w == kTeens[i]) return static_cast<int>(10 + i);
+  return -1;
+}
+
+int tens_word(const std::string& w) {
+  static const std::array<const char*, 8> kTens = {"twenty", "thirty",  "forty",  "fifty",
+                                                   "sixty",  "seventy", "eighty", "ninety"};
+  for (size_t i = 0; i < kTens.size(); ++i)
+    if (w == kTens[i]) return static_cast<int>(20 + 10 * i);
+  if (w == "fourty") return 40;
+  return -1;
+}
+
+bool is_word(const std::vector<Token>& t, size_t i, const char* w) {
+  return i < t.size() && t[i].kind == TokKind::kWord && t[i].text == w;
+}
+
+int digit_at(const std::vector<Token>& t, size_t i) {
+  return i < t.size() && t[i].kind == TokKind::kWord ? digit_word(t[i].text) : -1;
+}
+
+bool group_at(const std::vector<Token>& t, size_t i) {
+  return i < t.size() && t[i].kind == TokKind::kWord &&
+         (digit_word(t[i].text) >= 0 || teen_word(t[i].text) >= 0 || tens_word(t[i].text) >= 0);
+}
+
+double value_of(const std::string& digits) { return digits.empty() ? 0.0 : std::strtod(digits.c_str(), nullptr); }
+
+// Digits after "point"/"decimal" starting at i; advances i.
+std::string fraction_digits(const std::vector<Token>& t, size_t& i) {
+  std::string f;
+  while (digit_at(t, i) >= 0) f += static_cast<char>('0' + digit_at(t, i++));
+  return f;
+}
+
+}  // namespace
+
+int digit_word(const std::string& w) {
+  static const std::array<const char*, 10> kDigits = {"zero", "one", "two",   "three", "four",
+                                                      "five", "six", "seven", "eight", "nine"};
+  for (size_t i = 0; i < kDigits.size(); ++i)
+    if (w == kDigits[i]) return static_cast<int>(i);
+  if (w == "niner") return 9;
+  if (w == "fife") return 5;
+  if (w == "tree") return 3;
+  if (w == "fower") return 4;
+  return -1;
+}
+
+bool is_number_word(const Token& t) {
+  if (t.kind == TokKind::kNumber) return true;
+  if (t.kind != TokKind::kWord) return false;
+  return digit_word(t.text) >= 0 || teen_word(t.text) >= 0 || tens_word(t.text) >= 0 || t.text == "hundred" ||
+         t.text == "thousand";
+}
+
+std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
+  if (i >= t.size()) return std::nullopt;
+  SpokenNumber n;
+  n.begin = i;
+  if (t[i].kind == TokKind::kNumber) {
+    n.typed = true;
+    n.value = t[i].num;
+    n.digits = t[i].raw;
+    n.has_decimal = t[i].spelled;
+    n.groups = 1;
+    size_t j = i + 1;
+    if (is_word(t, j, "thousand")) {
+      n.value *= 1000.0;
+      n.has_thousand = true;
+      ++j;
+    } else if (is_word(t, j, "hundred")) {
+      n.value *= 100.0;
+      n.has_hundred = true;
+      ++j;
+    }
+    n.end = j;
+    return n;
+  }
+  // Leading "point seven eight" (a Mach number).
+  if ((is_word(t, i, "point") || is_word(t, i, "decimal")) && digit_at(t, i + 1) >= 0) {
+    size_t j = i + 1;
+    std::string f = fraction_digits(t, j);
+    if (is_word(t, j, "thousand") || is_word(t, j, "hundred")) return std::nullopt;
+    n.value = value_of("0." + f);
+    n.digits = f;
+    n.has_decimal = true;
+    n.groups = 1;
+    n.end = j;
+    return n;
+  }
+  double acc = 0.0;
+  std::string cur;  // digits of the groups since the last multiplier
+  size_t j = i;
+  bool any = false;
+  while (j < t.size() && t[j].kind == TokKind::kWord && cur.size() < 15 && n.digits.size() < 30) {
+    const std::string& w = t[j].text;
+    int d = digit_word(w), teen = teen_word(w), tens = tens_word(w);
+    if (d >= 0 || teen >= 0 || tens >= 0) {
+      int v = d >= 0 ? d : teen >= 0 ? teen : tens;
+      if (tens >= 0 && digit_at(t, j + 1) > 0) {
+        v += digit_at(t, j + 1);
+        ++j;
+      }
+      if (!any) n.leading_digit_word = d >= 0;
+      std::string g = std::to_string(v);
+      cur += g;
+      n.digits += g;
+      ++n.groups;
+      any = true;
+      ++j;
+    } else if (w == "hundred" && any && !cur.empty()) {
+      acc += value_of(cur) * 100.0;
+      cur.clear();
+      n.has_hundred = true;
+      ++j;
+    } else if (w == "thousand" && any) {
+      acc = (acc + value_of(cur)) * 1000.0;
+      cur.clear();
+      n.has_thousand = true;
+      ++j;
+    } else if (w == "and" && (n.has_hundred || n.has_thousand) && group_at(t, j + 1)) {
+      ++j;
+    } else if ((w == "point" || w == "decimal") && any && digit_at(t, j + 1) >= 0) {
+      size_t k = j + 1;
+      std::string f = fraction_digits(t, k);
+      if (is_word(t, k, "thousand") || is_word(t, k, "hundred")) break;
+      double whole = acc + value_of(cur);
+      n.value = whole + value_of("0." + f);
+      n.has_decimal = true;
+      n.end = k;
+      return n;
+    } else {
+      break;
+    }
+  }
+  if (!any) return std::nullopt;
+  n.value = acc + value_of(cur);
+  n.end = j;
+  return n;
+}
+
+}  // namespace squawk::translate

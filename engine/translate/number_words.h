@@ -1,0 +1,44 @@
+// Numbers as people say or type them.
+//
+// Contract: read_number() reads the number that starts at token i:
+//  - a typed number, optionally followed by "hundred" / "thousand";
+//  - cardinal words ("thirty one thousand", "one hundred and twenty",
+//    "twelve hundred", "four thousand five hundred");
+//  - ATC digit-by-digit and grouped forms ("one two zero", "niner", "fife",
+//    "tree", "one eighty", "fifty one twenty"): adjacent groups concatenate;
+//  - a decimal part after "point" / "decimal" ("point seven eight" = 0.78),
+//    unless "thousand"/"hundred" follows (speech errors for "descend").
+// `digits` is the concatenation of the spoken groups with multipliers left
+// out ("fifty one twenty" -> "5120"), which is how callsign digits are read.
+// Returns nullopt when no number starts at i.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "translate/lexer.h"
+
+namespace squawk::translate {
+
+struct SpokenNumber {
+  double value = 0.0;
+  std::string digits;         // groups concatenated, no multipliers
+  size_t begin = 0;           // first token
+  size_t end = 0;             // one past the last token
+  bool typed = false;         // a digit token, not words
+  bool has_thousand = false;  // "thousand" (or typed then "thousand") was said
+  bool has_hundred = false;
+  bool has_decimal = false;
+  int groups = 0;             // spoken groups ("one eighty" = 2)
+  bool leading_digit_word = false;  // first group is a single digit word
+};
+
+// Value 0-9 of a digit word ("niner" = 9, "fife" = 5), or -1.
+int digit_word(const std::string& w);
+// True when the token can start or continue a spoken number.
+bool is_number_word(const Token& t);
+
+std::optional<SpokenNumber> read_number(const std::vector<Token>& toks, size_t i);
+
+}  // namespace squawk::translate

@@ -1,0 +1,199 @@
+#include "translate/quantities.h"
+
+#include <cmath>
+
+namespace squawk::translate {
+namespace {
+
+bool word_at(const std::vector<Token>& t, size_t i, std::initializer_list<const char*> words) {
+  if (i >= t.size() || t[i].kind != TokKind::kWord) return false;
+  for (const char* w : words)
+    if (t[i].text == w) return true;
+  return false;
+}
+
+// +1 / -1 for a hemisphere word, 0 otherwise; `lat` tells which axis.
+int hemisphere(const std::vector<Token>& t, size_t i, bool& lat) {
+  if (word_at(t, i, {"n", "north"})) return lat = true, 1;
+  // A lone "s" is south only when a longitude follows ("33.95 S 151.18 E"); else seconds.
+  bool lon_follows = (i + 1 < t.size() && t[i + 1].kind == TokKind::kNumber) ||
+                     (i + 2 < t.size() && t[i + 1].kind == TokKind::kPunct && t[i + 2].kind == TokKind::kNumber);
+  if (word_at(t, i, {"south"}) || (word_at(t, i, {"s"}) && lon_follows)) return lat = true, -1;
+  if (word_at(t, i, {"e", "east"})) return lat = false, 1;
+  if (word_at(t, i, {"w", "west"})) return lat = false, -1;
+  return 0;
+}
+
+void set_position(Quantity& q, bool lat, int sign) {
+  q.kind = lat ? QKind::kLat : QKind::kLon;
+  q.value = sign * std::fabs(q.value);
+}
+
+}  // namespace
+
+std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t begin, size_t end,
+                                         const std::vector<bool>& skip) {
+  std::vector<Quantity> out;
+  size_t i = begin;
+  size_t floor = begin;  // tokens before it belong to an earlier quantity
+  while (i < end && i < t.size()) {
+    if (skip[i]) {
+      ++i;
+      continue;
+    }
+    if (word_at(t, i, {"half"})) {  // "half a second", "half speed"
+      Quantity q;
+      q.begin = i;
+      q.value = 0.5;
+      size_t j = i + 1;
+      if (word_at(t, j, {"a", "an"})) ++j;
+      if (word_at(t, j, {"second", "seconds", "sec"})) {
+        q.kind = QKind::kTime;
+        q.end = j + 1;
+        out.push_back(q);
+        i = j + 1;
+        continue;
+      }
+      if (word_at(t, j, {"speed"})) {
+        q.kind = QKind::kMult;
+        q.end = j + 1;
+        out.push_back(q);
+        i = j + 1;
+        continue;
+      }
+      ++i;
+      continue;
+    }
+    auto n = read_number(t, i);
+    if (!n || n->end > end) {
+      ++i;
+      continue;
+    }
+    Quantity q;
+    q.number = *n;
+    q.value = n->value;
+    q.begin = i;
+    size_t j = n->end;
+    size_t p = i;  // walks back over prefix words
+    auto prev = [&](std::initializer_list<const char*> w) { return p > floor && word_at(t, p - 1, w); };
+    bool lat = false;
+    if (prev({"fl"}) || prev({"level"})) {
+      q.kind = QKind::kAlt;
+      q.flight_level = true;
+      if (q.value < 1000.0) q.value *= 100.0;
+      --p;
+      if (prev({"flight"})) --p;
+    } else if (prev({"mach", "m"})) {
+      q.kind = QKind::kMach;
+      if (q.value >= 1.0 && !n->has_decimal) q.value /= 100.0;
+      --p;
+    } else if (prev({"heading", "hdg", "headings"})) {
+      q.kind = QKind::kHeading;
+    } else if (prev({"latitude", "lat"})) {
+      q.kind = QKind::kLat;
+    } else if (prev({"longitude", "lon", "long"})) {
+      q.kind = QKind::kLon;
+    } else if (p > floor && t[i].kind == TokKind::kNumber && t[i].glued && hemisphere(t, p - 1, lat) != 0 &&
+               t[p - 1].text.size() == 1) {
+      set_position(q, lat, hemisphere(t, p - 1, lat));
+      --p;
+    }
+    if (q.kind == QKind::kPlain || q.kind == QKind::kAlt || q.kind == QKind::kMach) {
+      if (word_at(t, j, {"ft", "feet", "foot"})) {
+        ++j;
+        if (word_at(t, j, {"per"}) && word_at(t, j + 1, {"minute", "min", "mn"})) {
+          q.kind = QKind::kVs;
+          j += 2;
+        } else if (q.kind != QKind::kAlt) {
+          q.kind = QKind::kAlt;
+        }
+      } else if (word_at(t, j, {"fpm"})) {
+        q.kind = QKind::kVs;
+        ++j;
+      } else if (word_at(t, j, {"k"})) {
+        q.kind = QKind::kAlt;
+        q.value *= 1000.0;
+        ++j;
+        if (word_at(t, j, {"ft", "feet"})) ++j;
+      } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) && q.kind == QKind::kPlain) {
+        q.kind = QKind::kAlt;
+        q.value = std::round(q.value / 0.3048 / 100.0) * 100.0;
+        ++j;
+      } else if (word_at(t, j, {"kt", "kts", "knots", "knot", "kias", "kn", "kts."})) {
+        q.kind = QKind::kSpeed;
+        ++j;
+      } else if (word_at(t, j, {"mach"})) {
+        q.kind = QKind::kMach;
+        ++j;
+      } else if (word_at(t, j, {"degrees", "degree", "deg", "\xC2\xB0"})) {
+        ++j;
+        Quantity dms = q;
+        if (j < end && t[j].kind == TokKind::kNumber && word_at(t, j + 1, {"minutes", "min", "minute"})) {
+          dms.value = q.value + t[j].num / 60.0;
+          j += 2;
+        }
+        int h = hemisphere(t, j, lat);
+        if (h != 0) {
+          q = dms;
+          set_position(q, lat, h);
+          ++j;
+        } else if (word_at(t, j, {"left", "right"})) {
+          q.kind = QKind::kAngle;
+          q.turn = t[j].text == "left" ? -1 : 1;
+          ++j;
+        } else if (word_at(t, j, {"to"}) && word_at(t, j + 1, {"the"}) && word_at(t, j + 2, {"left", "right"})) {
+          q.kind = QKind::kAngle;
+          q.turn = t[j + 2].text == "left" ? -1 : 1;
+          j += 3;
+        } else {
+          q.kind = QKind::kAngle;
+        }
+      } else if (hemisphere(t, j, lat) != 0) {
+        set_position(q, lat, hemisphere(t, j, lat));
+        ++j;
+      } else if (word_at(t, j, {"nm", "miles", "mile", "nautical"})) {
+        q.kind = QKind::kDist;
+        ++j;
+        if (word_at(t, j, {"mile", "miles"})) ++j;
+      } else if (word_at(t, j, {"seconds", "second", "s", "sec", "secs"})) {
+        q.kind = QKind::kTime;
+        ++j;
+      } else if (word_at(t, j, {"minutes", "minute", "min", "mins"})) {
+        q.kind = QKind::kTime;
+        q.value *= 60.0;
+        ++j;
+      } else if (word_at(t, j, {"hours", "hour", "h"})) {
+        q.kind = QKind::kTime;
+        q.value *= 3600.0;
+        ++j;
+      } else if (word_at(t, j, {"%", "percent"})) {
+        q.kind = QKind::kPercent;
+        ++j;
+      } else if (word_at(t, j, {"x", "times"})) {
+        q.kind = QKind::kMult;
+        ++j;
+      } else if (word_at(t, j, {"left", "right"}) && q.kind == QKind::kPlain && !n->has_thousand) {
+        q.kind = QKind::kAngle;
+        q.turn = t[j].text == "left" ? -1 : 1;
+        ++j;
+      } else if (q.kind == QKind::kPlain && n->has_thousand) {
+        q.kind = QKind::kAlt;
+      }
+    }
+    if (q.kind == QKind::kAngle && q.turn == 0 && prev({"left", "right"})) q.turn = t[p - 1].text == "left" ? -1 : 1;
+    if (prev({"by"})) q.by = true;
+    if (prev({"to"})) q.to = true;
+    if (prev({"minus", "negative"})) {
+      q.value = -q.value;
+      --p;
+    }
+    q.begin = p;
+    q.end = j;
+    floor = j;
+    out.push_back(q);
+    i = j > i ? j : i + 1;
+  }
+  return out;
+}
+
+}  // namespace squawk::translate

@@ -1,0 +1,269 @@
+#include "translate/references.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/text.h"
+#include "translate/fuzzy.h"
+#include "translate/number_words.h"
+#include "translate/tables.h"
+#include "translate/vocabulary.h"
+
+namespace squawk::translate {
+namespace {
+
+// Digits and letters of a spoken callsign, one entry per spoken group.
+struct Suffix {
+  std::vector<std::string> groups;
+  std::vector<size_t> ends;  // token index one past each group
+  std::string joined(size_t k) const {
+    std::string s;
+    for (size_t i = 0; i < k && i < groups.size(); ++i) s += groups[i];
+    return s;
+  }
+};
+
+bool is_word(const Token& t) { return t.kind == TokKind::kWord; }
+
+Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used) {
+  Suffix s;
+  while (j < t.size() && !used[j] && s.groups.size() < 8) {
+    const Token& k = t[j];
+    if (k.kind == TokKind::kNumber) {
+      if (k.spelled || k.num >= 1e6 || k.num != static_cast<long long>(k.num)) break;
+      s.groups.push_back(k.raw.find(',') == std::string::npos ? k.raw : std::to_string(static_cast<long long>(k.num)));
+      s.ends.push_back(++j);
+      continue;
+    }
+    if (!is_word(k)) break;
+    if (k.text == "hundred" || k.text == "thousand") {
+      if (!s.groups.empty()) {
+        s.groups.pop_back();
+        s.ends.pop_back();
+      }
+      break;
+    }
+    if (is_number_word(k)) {
+      // One spoken group: a digit, a teen, or a tens word with its unit digit.
+      size_t e = j + 1;
+      if (j + 1 < t.size() && digit_word(t[j + 1].text) > 0 && digit_word(k.text) < 0 && k.text.ends_with("ty")) e = j + 2;
+      std::vector<Token> group(t.begin() + static_cast<long>(j), t.begin() + static_cast<long>(e));
+      auto v = read_number(group, 0);
+      if (!v) break;
+      s.groups.push_back(v->digits);
+      s.ends.push_back(e);
+      j = e;
+      continue;
+    }
+    char letter = phonetic_letter(k.text);
+    if (letter == 0 && k.raw.size() == 1 && std::isupper(static_cast<unsigned char>(k.raw[0])) && k.raw != "A" &&
+        k.raw != "I")
+      letter = k.raw[0];
+    if (letter != 0 && !s.groups.empty()) {
+      s.groups.emplace_back(1, letter);
+      s.ends.push_back(++j);
+      continue;
+    }
+    break;
+  }
+  return s;
+}
+
+std::vector<std::string> route_and_defined_waypoints(const WorldView* world) {
+  std::vector<std::string> names;
+  if (!world) return names;
+  names = world->waypoints();
+  for (const auto& a : world->aircraft())
+    for (const auto& w : a.route) names.push_back(w);
+  return names;
+}
+
+bool in_list(const std::vector<std::string>& names, const std::string& s) {
+  return std::any_of(names.begin(), names.end(), [&](const std::string& n) { return text::iequals(n, s); });
+}
+
+// Letters at the front of an id ("DLH4AB" -> "DLH") and the rest ("4AB").
+std::pair<std::string, std::string> split_id(const std::string& id) {
+  size_t i = 0;
+  while (i < id.size() && i < 3 && std::isalpha(static_cast<unsigned char>(id[i]))) ++i;
+  return {id.substr(0, i), id.substr(i)};
+}
+
+struct CallsignMatch {
+  std::string id;
+  double score = -1.0;
+  size_t groups = 0;  // suffix groups used
+};
+
+// Matches a spoken airline (ICAO prefix if known, else the spoken words) and
+// suffix against the world's aircraft.
+CallsignMatch match_world(const std::string& icao, const std::string& words, const Suffix& suf,
+                          const std::vector<AircraftView>& fleet) {
+  CallsignMatch best;
+  for (const auto& a : fleet) {
+    auto [prefix, rest] = split_id(a.id);
+    double airline = 0.0;
+    if (!icao.empty()) {
+      airline = text::iequals(icao, prefix) ? 1.0 : 0.0;
+    } else if (!words.empty()) {
+      airline = similarity(words, prefix);
+      for (const auto& tel : telephony_of(prefix)) airline = std::max(airline, similarity(words, tel));
+    }
+    double digits = 0.0;
+    size_t groups = 0;
+    for (size_t k = 1; k <= suf.groups.size(); ++k) {
+      double d = plain_similarity(suf.joined(k), rest);
+      if (d > digits) {
+        digits = d;
+        groups = k;
+      }
+    }
+    double score = 0.4 * airline + 0.6 * digits;
+    if (score > best.score) best = {a.id, score, groups};
+  }
+  return best;
+}
+
+void mark(std::vector<bool>& used, size_t b, size_t e) {
+  for (size_t i = b; i < e && i < used.size(); ++i) used[i] = true;
+}
+
+// Skips "heavy" / "super" after a callsign.
+size_t after_weight(const std::vector<Token>& t, size_t e) {
+  while (e < t.size() && is_word(t[e]) && (t[e].text == "heavy" || t[e].text == "super")) ++e;
+  return e;
+}
+
+}  // namespace
+
+char phonetic_letter(const std::string& w) {
+  static const char* kAlphabet[] = {"alpha",  "bravo",   "charlie", "delta",  "echo",   "foxtrot", "golf",
+                                    "hotel",  "india",   "juliett", "kilo",   "lima",   "mike",    "november",
+                                    "oscar",  "papa",    "quebec",  "romeo",  "sierra", "tango",   "uniform",
+                                    "victor", "whiskey", "xray",    "yankee", "zulu"};
+  for (int i = 0; i < 26; ++i)
+    if (w == kAlphabet[i]) return static_cast<char>('A' + i);
+  if (w == "alfa") return 'A';
+  if (w == "juliet") return 'J';
+  if (w == "whisky") return 'W';
+  return 0;
+}
+
+std::vector<Reference> find_references(const std::vector<Token>& t, const WorldView* world, std::vector<bool>& used) {
+  std::vector<Reference> refs;
+  const std::vector<AircraftView> fleet = world ? world->aircraft() : std::vector<AircraftView>{};
+  const std::vector<std::string> wpts = route_and_defined_waypoints(world);
+  auto world_id = [&](const std::string& s) -> const AircraftView* {
+    for (const auto& a : fleet)
+      if (text::iequals(a.id, s)) return &a;
+    return nullptr;
+  };
+  auto add = [&](RefKind kind, std::string name, size_t b, size_t e, bool exists, bool spoken) {
+    mark(used, b, e);
+    refs.push_back({kind, std::move(name), b, e, exists, spoken});
+  };
+
+  // Typed aircraft ids and aircraft types.
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (used[i] || !is_word(t[i])) continue;
+    const std::string& raw = t[i].raw;
+    if (const AircraftView* a = world_id(raw)) {
+      add(RefKind::kAircraft, a->id, i, i + 1, true, false);
+      continue;
+    }
+    if (in_list(wpts, raw)) {
+      add(RefKind::kWaypoint, text::upper(raw), i, i + 1, true, false);
+      continue;
+    }
+    if (is_manufacturer(t[i].text) && i + 1 < t.size()) {
+      if (auto ty = aircraft_type(t[i].text, t[i + 1].raw)) {
+        add(RefKind::kType, *ty, i, i + 2, false, false);
+        continue;
+      }
+    }
+    if (i > 0 && t[i - 1].text == "type" && has_digit(raw)) {
+      add(RefKind::kType, aircraft_type("", raw).value_or(text::upper(raw)), i, i + 1, false, false);
+      continue;
+    }
+    if (has_digit(raw)) {
+      if (auto ty = aircraft_type("", raw)) {
+        add(RefKind::kType, *ty, i, i + 1, false, false);
+        continue;
+      }
+      bool id_like = std::isalpha(static_cast<unsigned char>(raw[0])) && raw.size() >= 2 && raw.size() <= 10 &&
+                     std::all_of(raw.begin(), raw.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)); });
+      if (id_like) add(RefKind::kAircraft, raw, i, i + 1, false, false);
+    }
+  }
+  // Telephony designator + digits/letters.
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (used[i] || !is_word(t[i])) continue;
+    for (size_t len = std::min(max_telephony_words(), t.size() - i); len >= 1; --len) {
+      std::string phrase;
+      bool ok = true;
+      for (size_t k = i; k < i + len; ++k) {
+        ok = ok && !used[k] && is_word(t[k]);
+        if (k > i) phrase += ' ';
+        phrase += t[k].text;
+      }
+      if (!ok) continue;
+      auto icao = airline_by_telephony(phrase);
+      if (!icao) continue;
+      Suffix suf = read_suffix(t, i + len, used);
+      if (suf.groups.empty() || phonetic_letter(t[i + len].text) != 0) break;
+      std::string id = *icao + text::upper(suf.joined(suf.groups.size()));
+      size_t end = suf.ends.back();
+      bool exists = world_id(id) != nullptr;
+      if (exists) {
+        id = world_id(id)->id;
+      } else if (!fleet.empty()) {
+        CallsignMatch m = match_world(*icao, phrase, suf, fleet);
+        if (m.score >= 0.45 || fleet.size() == 1) {
+          id = m.id;
+          end = suf.ends[m.groups - 1 < suf.ends.size() ? m.groups - 1 : 0];
+          exists = true;
+        }
+      }
+      add(RefKind::kAircraft, id, i, after_weight(t, end), exists, true);
+      i = end - 1;
+      break;
+    }
+  }
+  // An opening callsign the table does not know (garbled by speech recognition).
+  bool opened = std::any_of(refs.begin(), refs.end(),
+                            [](const Reference& r) { return r.kind == RefKind::kAircraft && r.begin <= 2; });
+  if (!fleet.empty() && !opened) {
+    size_t i = 0;
+    while (i < t.size() && is_word(t[i]) && is_filler(t[i].text) && !used[i]) ++i;
+    size_t words_begin = i;
+    std::string words;
+    while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
+           !is_keyword(t[i].text) && phonetic_letter(t[i].text) == 0) {
+      words += t[i].text;
+      ++i;
+    }
+    while (i < t.size() && t[i].kind == TokKind::kPunct && t[i].text == ",") ++i;
+    Suffix suf = read_suffix(t, i, used);
+    if (!suf.groups.empty()) {
+      CallsignMatch m = match_world("", words, suf, fleet);
+      double need = fleet.size() == 1 ? 0.3 : 0.5;
+      if (m.score >= need && m.groups > 0) add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
+    }
+  }
+  // Waypoint and airport names: upper-case words that are nothing else.
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (used[i] || !is_word(t[i])) continue;
+    const std::string& raw = t[i].raw;
+    bool upper = raw.size() >= 3 && raw.size() <= 6 &&
+                 std::all_of(raw.begin(), raw.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)); }) &&
+                 std::isalpha(static_cast<unsigned char>(raw[0]));
+    static const char* kNotNames[] = {"LNAV", "VNAV", "MVP", "ADS", "NM", "FL", "ASAS", "PZ", "KLM", "VS", "HDG",
+                                      "ALT", "SPD", "CRE", "DEL", "ATC", "OFF", "ON", "ILS", "RNAV", "TCAS", "UTC", "GPS"};
+    bool reserved = std::any_of(std::begin(kNotNames), std::end(kNotNames), [&](const char* n) { return raw == n; });
+    if (upper && !reserved && !airline_by_telephony(t[i].text)) add(RefKind::kWaypoint, raw, i, i + 1, false, false);
+  }
+  std::sort(refs.begin(), refs.end(), [](const Reference& a, const Reference& b) { return a.begin < b.begin; });
+  return refs;
+}
+
+}  // namespace squawk::translate

@@ -1,0 +1,166 @@
+#include "translate/scorer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "core/text.h"
+
+namespace squawk::translate {
+namespace {
+
+enum class Arg { kWord, kNum, kAlt, kSpd, kHdg, kLat, kLon, kRest };
+
+std::vector<std::string> tokens(std::string_view cmd) {
+  std::string c(cmd);
+  std::replace(c.begin(), c.end(), ',', ' ');
+  return text::split_ws(c);
+}
+
+std::optional<double> alt_ft(const std::string& s) {
+  if (text::starts_with_ci(s, "FL")) {
+    auto v = text::to_double(s.substr(2));
+    return v ? std::optional<double>(*v * 100.0) : std::nullopt;
+  }
+  return text::to_double(s);
+}
+
+// Speed as (value, is_mach).
+std::optional<std::pair<double, bool>> speed(const std::string& s) {
+  std::string u = text::upper(s);
+  if (u.empty()) return std::nullopt;
+  if (u[0] == 'M' || u[0] == '.') {
+    std::string m = u[0] == 'M' ? u.substr(1) : u;
+    if (!m.empty() && m[0] == '.') m.insert(m.begin(), '0');
+    auto v = text::to_double(m);
+    if (!v) return std::nullopt;
+    return std::make_pair(*v >= 1.0 ? *v / 100.0 : *v, true);
+  }
+  auto v = text::to_double(u);
+  if (!v) return std::nullopt;
+  if (*v > 0.1 && *v < 1.0) return std::make_pair(*v, true);
+  return std::make_pair(*v, false);
+}
+
+bool same_arg(const std::string& a, const std::string& b, Arg kind) {
+  auto num_eq = [](const std::string& x, const std::string& y, double tol) {
+    auto u = text::to_double(x), v = text::to_double(y);
+    return u && v && std::fabs(*u - *v) <= tol;
+  };
+  switch (kind) {
+    case Arg::kAlt: {
+      auto u = alt_ft(a), v = alt_ft(b);
+      return u && v && std::fabs(*u - *v) <= 50.0;
+    }
+    case Arg::kSpd: {
+      auto u = speed(a), v = speed(b);
+      if (!u || !v || u->second != v->second) return false;
+      return std::fabs(u->first - v->first) <= (u->second ? 0.0005 : 0.5);
+    }
+    case Arg::kHdg: {
+      auto u = text::to_double(a), v = text::to_double(b);
+      if (!u || !v) return text::iequals(a, b);
+      double d = std::fmod(std::fabs(*u - *v), 360.0);
+      return std::min(d, 360.0 - d) <= 0.5;
+    }
+    case Arg::kLat:
+    case Arg::kLon:
+      return num_eq(a, b, 1e-3) || text::iequals(a, b);
+    case Arg::kNum:
+    case Arg::kWord:
+    case Arg::kRest: {
+      if (text::iequals(a, b)) return true;
+      auto u = text::to_double(a), v = text::to_double(b);
+      return u && v && std::fabs(*u - *v) <= 1e-9 * std::max(1.0, std::fabs(*v));
+    }
+  }
+  return false;
+}
+
+// Argument kinds after the command name; the last kind repeats.
+std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string>& args) {
+  using A = Arg;
+  if (cmd == "CRE") return {A::kWord, A::kWord, A::kLat, A::kLon, A::kHdg, A::kAlt, A::kSpd};
+  if (cmd == "MOVE") return {A::kWord, A::kLat, A::kLon, A::kAlt, A::kHdg, A::kSpd, A::kNum};
+  if (cmd == "ALT") return {A::kWord, A::kAlt, A::kNum};
+  if (cmd == "SPD") return {A::kWord, A::kSpd};
+  if (cmd == "HDG") return {A::kWord, A::kHdg};
+  if (cmd == "DEFWPT") return {A::kWord, A::kLat, A::kLon, A::kWord};
+  if (cmd == "ADDWPT" || cmd == "DEST" || cmd == "ORIG") {
+    if (args.size() >= 3 && text::to_double(args[1]) && text::to_double(args[2]))
+      return {A::kWord, A::kLat, A::kLon, A::kAlt, A::kSpd, A::kWord};
+    return {A::kWord, A::kWord, A::kAlt, A::kSpd, A::kWord};
+  }
+  return {A::kNum};
+}
+
+}  // namespace
+
+std::vector<std::string> split_commands(std::string_view list) {
+  std::vector<std::string> out;
+  for (auto& part : text::split(list, ';')) {
+    auto t = text::trim(part);
+    if (!t.empty()) out.emplace_back(t);
+  }
+  return out;
+}
+
+std::string canonical_command(std::string_view name) {
+  std::string u = text::upper(name);
+  if (u == "CREATE") return "CRE";
+  if (u == "HEADING" || u == "TURN") return "HDG";
+  if (u == "SPEED") return "SPD";
+  if (u == "DCT" || u == "DIRECTTO" || u == "DIRTO") return "DIRECT";
+  if (u == "PAUSE") return "HOLD";
+  if (u == "CDMETHOD") return "ASAS";
+  if (u == "DELETE") return "DEL";
+  return u;
+}
+
+bool same_command(std::string_view produced, std::string_view expected) {
+  auto p = tokens(produced), e = tokens(expected);
+  if (p.empty() || e.empty()) return p.empty() && e.empty();
+  std::string cmd = canonical_command(p[0]);
+  if (cmd != canonical_command(e[0])) return false;
+  if (cmd == "ECHO") {
+    auto rest = [](const std::vector<std::string>& v) {
+      return text::lower(text::join(std::vector<std::string>(v.begin() + 1, v.end()), " "));
+    };
+    return rest(p) == rest(e);
+  }
+  if (cmd == "ATALT" || cmd == "ATSPD") {
+    if (p.size() < 4 || e.size() < 4) return p.size() == e.size() && text::iequals(text::join(p, " "), text::join(e, " "));
+    Arg k = cmd == "ATALT" ? Arg::kAlt : Arg::kSpd;
+    if (!text::iequals(p[1], e[1]) || !same_arg(p[2], e[2], k)) return false;
+    return same_command(text::join(std::vector<std::string>(p.begin() + 3, p.end()), " "),
+                        text::join(std::vector<std::string>(e.begin() + 3, e.end()), " "));
+  }
+  if (p.size() != e.size()) return false;
+  std::vector<std::string> args(e.begin() + 1, e.end());
+  auto kinds = arg_kinds(cmd, args);
+  for (size_t i = 1; i < p.size(); ++i) {
+    Arg k = kinds[std::min(i - 1, kinds.size() - 1)];
+    if (!same_arg(p[i], e[i], k)) return false;
+  }
+  return true;
+}
+
+bool score_case(std::string_view produced, bool asked, std::string_view expected) {
+  for (const auto& alt_raw : text::split(expected, '|')) {
+    auto alt = text::trim(alt_raw);
+    if (alt.empty()) continue;
+    if (text::iequals(alt, "ASK")) {
+      if (asked) return true;
+      continue;
+    }
+    if (asked) continue;
+    auto p = split_commands(produced), e = split_commands(alt);
+    if (p.size() != e.size()) continue;
+    bool all = true;
+    for (size_t i = 0; i < p.size() && all; ++i) all = same_command(p[i], e[i]);
+    if (all) return true;
+  }
+  return false;
+}
+
+}  // namespace squawk::translate
