@@ -133,6 +133,8 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
       ++j;
     } else if (w == "and" && (n.has_hundred || n.has_thousand) && group_at(t, j + 1)) {
       ++j;
+    } else if ((w == "ah" || w == "uh" || w == "um" || w == "er") && group_at(t, j + 1)) {
+      ++j;  // a hesitation inside a number: "one ah zero eight zero"
     } else if ((w == "point" || w == "decimal") && any && digit_at(t, j + 1) >= 0) {
       size_t k = j + 1;
       std::string f = fraction_digits(t, k);

@@ -6,6 +6,7 @@
 //    "twelve hundred", "four thousand five hundred");
 //  - ATC digit-by-digit and grouped forms ("one two zero", "niner", "fife",
 //    "tree", "one eighty", "fifty one twenty"): adjacent groups concatenate;
+//  - hesitations ("ah", "uh", "um", "er") between groups are skipped;
 //  - a decimal part after "point" / "decimal" ("point seven eight" = 0.78),
 //    unless "thousand"/"hundred" follows (speech errors for "descend").
 // `digits` is the concatenation of the spoken groups with multipliers left

@@ -106,6 +106,7 @@ class Parser {
  private:
   Translation finish() {
     Translation tr;
+    if (ask_.empty() && out_.empty()) ask_ = pending_;
     if (!ask_.empty()) {
       tr.ask = ask_;
     } else if (out_.empty()) {
@@ -187,6 +188,7 @@ class Parser {
     if (i >= t_.size() || used_[i] || t_[i].kind != TokKind::kWord) return std::nullopt;
     const std::string& w = t_[i].text;
     const size_t n = t_.size();
+    if (preceded_by(i, 2, {"expect"})) return std::nullopt;  // "expect direct X" is not a clearance
     auto near = [&](size_t span, std::initializer_list<const char*> ws) { return followed_by(i, span, ws); };
     if (w == "climb" || w == "climbing" || w == "descend" || w == "descending" || w == "altitude" ||
         w == "cruise" || w == "altitudes")
@@ -202,7 +204,7 @@ class Parser {
       return Intent::kSpd;
     }
     if (w == "slow" || w == "slower") return sim_word_near(i) ? Intent::kDtMult : Intent::kSpd;
-    if (w == "faster" || w == "accelerate" || w == "decelerate" || w == "knots") return Intent::kSpd;
+    if (w == "faster" || w == "accelerate" || w == "decelerate") return Intent::kSpd;
     if ((w == "reduce" || w == "increase" || w == "decrease") && !near(4, {"altitude", "rate", "vertical"}))
       return Intent::kSpd;
     if (w == "heading" || w == "hdg" || w == "headings") return Intent::kHdg;
@@ -256,7 +258,10 @@ class Parser {
         (w == "put" && near(3, {"back"})))
       return Intent::kMove;
     if (w == "pause" || w == "hold" || w == "freeze") return Intent::kHold;
-    if (w == "resume" || w == "continue" || w == "unpause") return Intent::kOp;
+    if (w == "resume" || w == "unpause") return Intent::kOp;
+    if (w == "continue" && (i + 1 >= n || t_[i + 1].kind == TokKind::kPunct || sim_word_near(i) ||
+                            word(i + 1, {"running", "and"})))
+      return Intent::kOp;
     if (w == "real" && word(i + 1, {"time"})) {
       if (i > 0 && word(i - 1, {"x", "times"})) return Intent::kDtMult;
       return Intent::kOp;
@@ -309,10 +314,12 @@ class Parser {
         if (!segs.empty() && segs.back().intent == Intent::kCreate && trig[k].intent == Intent::kCreate &&
             refs_in(segs.back().trig, trig[k].pos, RefKind::kAircraft).empty())
           continue;  // "make a new ...": one request
-        if (!segs.empty() && (segs.back().intent == trig[k].intent ||
-                              (segs.back().intent == Intent::kMaintain && trig[k].intent == Intent::kAlt) ||
-                              (segs.back().intent == Intent::kAlt && trig[k].intent == Intent::kMaintain)) &&
-            mergeable(trig[k].intent) && !then) {
+        bool alt_pair = (segs.empty() ? false
+                                      : (segs.back().intent == Intent::kMaintain && trig[k].intent == Intent::kAlt) ||
+                                            (segs.back().intent == Intent::kAlt && trig[k].intent == Intent::kMaintain)) &&
+                        extract_quantities(t_, segs.back().trig, trig[k].pos, used_).empty();
+        if (!segs.empty() && (segs.back().intent == trig[k].intent || alt_pair) && mergeable(trig[k].intent) &&
+            !then) {
           if (trig[k].intent == Intent::kAlt) segs.back().intent = Intent::kAlt;
           continue;
         }
@@ -333,12 +340,38 @@ class Parser {
       LastTarget before = last_;
       last_.cond.clear();
       size_t n_before = out_.size();
+      std::string at = at_altitude(segs[k]);
       handle(segs[k]);
+      if (!at.empty())
+        for (size_t c = n_before; c < out_.size(); ++c) out_[c] = std::string(at).append(" ").append(out_[c]);
+      // A value instruction said without its value next to other, complete
+      // instructions ("turn left direct X", "... ten is a parallel climb") is
+      // left out; it only becomes the question when nothing else was understood.
+      if (!ask_.empty() && value_intent(segs[k].intent) && quantities(segs[k]).empty()) {
+        if (pending_.empty()) pending_ = ask_;
+        ask_.clear();
+        continue;
+      }
       if (segs[k].then && !before.cond.empty() && out_.size() == n_before + 1 &&
           text::starts_with_ci(out_.back(), "SPD ") != text::starts_with_ci(before.cond, "ATSPD")) {
         out_.back() = std::string(before.cond).append(" ").append(out_.back());
       }
     }
+  }
+
+  // "at four thousand reduce speed to 210": a speed or heading instruction
+  // that waits for an altitude. Returns "ATALT id alt" or "".
+  std::string at_altitude(const Segment& s) {
+    if (s.intent != Intent::kSpd && s.intent != Intent::kHdg) return "";
+    size_t a = find_word(s.begin, s.trig, {"at"});
+    if (a >= s.trig) return "";
+    auto qs = extract_quantities(t_, a + 1, s.trig, used_);
+    if (qs.empty() || qs.front().begin != a + 1 || qs.front().end != s.trig) return "";
+    const Quantity& q = qs.front();
+    if (q.kind != QKind::kAlt && !(q.kind == QKind::kPlain && (q.number.has_thousand || q.value >= 1000))) return "";
+    auto ids = acids(s);
+    if (ids.empty()) return "";
+    return "ATALT " + ids.front() + " " + fmt_alt(q.value, q.flight_level);
   }
 
   // ---- values ----
@@ -368,11 +401,17 @@ class Parser {
   // else the utterance's subject, else the world's only aircraft.
   std::vector<std::string> acids(const Segment& s) {
     std::vector<std::string> ids;
-    for (const auto* r : refs_in(s.trig, s.end, RefKind::kAircraft))
-      if (std::find(ids.begin(), ids.end(), r->name) == ids.end()) ids.push_back(r->name);
-    if (ids.empty())
-      for (const auto* r : refs_in(s.begin, s.trig, RefKind::kAircraft))
-        if (std::find(ids.begin(), ids.end(), r->name) == ids.end()) ids.push_back(r->name);
+    // With aircraft in the world, a name that matches none of them is noise
+    // when another name does match.
+    bool any_known = std::any_of(refs_.begin(), refs_.end(),
+                                 [](const Reference& r) { return r.kind == RefKind::kAircraft && r.exists; });
+    auto take = [&](size_t b, size_t e) {
+      for (const auto* r : refs_in(b, e, RefKind::kAircraft))
+        if ((r->exists || !any_known) && std::find(ids.begin(), ids.end(), r->name) == ids.end())
+          ids.push_back(r->name);
+    };
+    take(s.trig, s.end);
+    if (ids.empty()) take(s.begin, s.trig);
     if (ids.empty() && !subject_.empty()) ids.push_back(subject_);
     if (ids.empty()) {
       // an aircraft named later in the utterance ("Switch on LNAV and VNAV for AC01")
@@ -403,11 +442,36 @@ class Parser {
   std::optional<double> repaired(const Quantity& q, double lo, double hi) const {
     if (q.value >= lo && q.value <= hi) return q.value;
     if (q.number.typed) return std::nullopt;
-    for (size_t k = q.number.begin + 1; k < q.number.end; ++k) {
-      auto n = read_number(t_, k);
-      if (n && n->end == q.number.end && n->value >= lo && n->value <= hi) return n->value;
-    }
+    // Drop trailing words first ("one nine zero nine"), then leading ones.
+    for (size_t b = q.number.begin; b < q.number.end; ++b)
+      for (size_t e = q.number.end; e > b; --e) {
+        if (b == q.number.begin && e == q.number.end) continue;
+        std::vector<Token> part(t_.begin() + static_cast<long>(b), t_.begin() + static_cast<long>(e));
+        auto n = read_number(part, 0);
+        if (n && n->end == part.size() && n->has_thousand == q.number.has_thousand && n->value >= lo &&
+            n->value <= hi)
+          return n->value;
+      }
     return std::nullopt;
+  }
+
+  // Which candidate value counts: after "correction"/"disregard" the first
+  // one after it; when the instruction word is repeated ("right heading 270
+  // ah right heading 090") the last one; else the first.
+  std::optional<Quantity> pick(const std::vector<Quantity>& c, const Segment& s, const char* repeated) const {
+    if (c.empty()) return std::nullopt;
+    size_t corr = s.end;
+    for (size_t i = s.begin; i < s.end; ++i)
+      if (word(i, {"correction", "disregard"})) corr = i;
+    if (corr < s.end) {
+      for (const auto& q : c)
+        if (q.begin > corr) return q;
+      return c.back();
+    }
+    size_t reps = 0;
+    for (size_t i = s.begin; i < s.end; ++i)
+      if (word(i, {repeated})) ++reps;
+    return reps >= 2 ? c.back() : c.front();
   }
 
   // ---- handlers ----
@@ -460,6 +524,11 @@ class Parser {
       if (q.kind == QKind::kVs) return vspeed(s);
       if (q.kind == QKind::kLat) return move(s);
     }
+    // Three digits said one by one with no other cue: a heading ("... flighting zero four zero").
+    for (const auto& q : qs)
+      if (q.kind == QKind::kPlain && !q.number.typed && q.number.groups == 3 && q.number.leading_digit_word &&
+          q.value <= 360 && !q.number.has_hundred)
+        return heading(s);
     if (!acids(s).empty() && qs.empty() && refs_in(s.begin, s.end, RefKind::kAircraft).size() == 1 &&
         s.end - s.begin == 1)
       return one_acid(s, "POS", "be shown");
@@ -486,17 +555,14 @@ class Parser {
     auto ids = acids(s);
     if (ids.empty()) return need("Which aircraft should change altitude? Please give its callsign.");
     auto qs = quantities(s);
-    bool correction = word_in(s.begin, s.end, {"correction"});
-    std::optional<Quantity> target, rate;
+    std::optional<Quantity> rate;
+    std::vector<Quantity> with_unit, plain;
     for (const auto& q : qs) {
-      if (q.kind == QKind::kVs) {
-        if (!rate) rate = q;
-        continue;
-      }
-      bool alt_like = q.kind == QKind::kAlt || (q.kind == QKind::kPlain && q.begin >= s.trig);
-      if (!alt_like) continue;
-      if (!target || correction) target = q;
+      if (q.kind == QKind::kVs && !rate) rate = q;
+      if (q.kind == QKind::kAlt) with_unit.push_back(q);
+      if (q.kind == QKind::kPlain && q.begin >= s.trig) plain.push_back(q);
     }
+    std::optional<Quantity> target = pick(with_unit.empty() ? plain : with_unit, s, "maintain");
     const AircraftView* now = state(ids.front());
     const std::string verb = direction(s) > 0 ? "climb" : direction(s) < 0 ? "descend" : "fly";
     if (word_in(s.begin, s.end, {"double"}) && now) {
@@ -508,11 +574,17 @@ class Parser {
     Quantity q = *target;
     double ft = q.value;
     bool fl = q.flight_level;
+    if (q.kind == QKind::kPlain && !q.number.typed && !q.number.has_thousand) {
+      // a stutter: "one four fourteen" -> 14 (thousand)
+      const std::string& d = q.number.digits;
+      if (d.size() >= 4 && d.size() % 2 == 0 && d.substr(0, d.size() / 2) == d.substr(d.size() / 2))
+        ft = std::stod(d.substr(0, d.size() / 2));
+    }
     if (q.kind == QKind::kPlain) {
-      if (q.value < 100 && !q.number.typed) {
-        ft = q.value * 1000.0;  // "maintain niner (thousand)"
-      } else if (q.value >= 100 && q.value < 1000 && !q.number.has_hundred) {
-        ft = q.value * 100.0;  // "climb three five zero": a flight level
+      if (ft < 100 && !q.number.typed) {
+        ft *= 1000.0;  // "maintain niner (thousand)"
+      } else if (ft >= 100 && ft < 1000 && !q.number.has_hundred) {
+        ft *= 100.0;  // "climb three five zero": a flight level
         fl = true;
       }
     }
@@ -560,13 +632,12 @@ class Parser {
     auto ids = acids(s);
     if (ids.empty()) return need("Which aircraft should change speed? Please give its callsign.");
     auto qs = quantities(s);
-    bool correction = word_in(s.begin, s.end, {"correction"});
-    std::optional<Quantity> v;
+    std::vector<Quantity> with_unit, plain;
     for (const auto& q : qs) {
-      bool ok = q.kind == QKind::kSpeed || q.kind == QKind::kMach || q.kind == QKind::kPercent ||
-                (q.kind == QKind::kPlain && (q.begin >= s.trig || q.number.typed));
-      if (ok && (!v || correction)) v = q;
+      if (q.kind == QKind::kSpeed || q.kind == QKind::kMach || q.kind == QKind::kPercent) with_unit.push_back(q);
+      if (q.kind == QKind::kPlain && (q.begin >= s.trig || q.number.typed)) plain.push_back(q);
     }
+    std::optional<Quantity> v = pick(with_unit.empty() ? plain : with_unit, s, "speed");
     // "Match AC02's speed to AC01" / "the same speed as AC01"
     auto refs = refs_in(s.begin, s.end, RefKind::kAircraft);
     if (!v && refs.size() >= 2 && word_in(s.begin, s.end, {"match", "same", "as"})) {
@@ -594,6 +665,8 @@ class Parser {
         if (!q.number.typed && kt >= 10 && kt < 100 && q.number.groups == 2) kt *= 10.0;  // "speed one nine"
         auto r = repaired(Quantity{q.kind, kt, q.begin, q.end, false, false, false, 0, q.number}, 40.0, 700.0);
         if (!r) return need("What speed should " + id + " fly? I heard " + fmt_int(kt) + ".");
+        // Assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error.
+        if (!q.number.typed && std::fmod(*r, 5.0) != 0.0) *r = std::floor(*r / 10.0) * 10.0;
         spd = fmt_int(*r);
       }
       out_.push_back("SPD " + id + " " + spd);
@@ -605,17 +678,16 @@ class Parser {
     auto ids = acids(s);
     if (ids.empty()) return need("Which aircraft should turn? Please give its callsign.");
     auto qs = quantities(s);
-    bool correction = word_in(s.begin, s.end, {"correction"});
-    std::optional<Quantity> abs, rel;
+    std::vector<Quantity> abs_c, rel_c;
     for (const auto& q : qs) {
-      if (q.kind == QKind::kHeading || (q.kind == QKind::kPlain && q.begin > s.trig && !q.number.has_thousand &&
-                                        !word(q.end, {"thousand"}))) {
-        if (!abs || correction) abs = q;
-      } else if (q.kind == QKind::kAngle) {
-        if (!rel || correction) rel = q;
-      }
+      if (q.kind == QKind::kHeading || (q.kind == QKind::kPlain && q.begin > s.trig && !q.number.has_thousand))
+        abs_c.push_back(q);
+      else if (q.kind == QKind::kAngle)
+        rel_c.push_back(q);
       if (q.kind == QKind::kAlt || q.kind == QKind::kSpeed) break;
     }
+    std::optional<Quantity> abs = pick(abs_c, s, "heading"), rel = pick(rel_c, s, "heading");
+    bool correction = word_in(s.begin, s.end, {"correction", "disregard"});
     int turn = 0;
     if (word_in(s.begin, s.end, {"left"})) turn = -1;
     if (word_in(s.begin, s.end, {"right"}) && find_word(s.begin, s.end, {"right"}) < find_word(s.begin, s.end, {"left"}))
@@ -629,7 +701,7 @@ class Parser {
     double hdg = -1;
     std::string id = ids.front();
     auto refs = refs_in(s.begin, s.end, RefKind::kAircraft);
-    if (abs && !(rel && rel->begin < abs->begin && !correction)) {
+    if (abs && (abs->kind == QKind::kHeading || !(rel && rel->begin < abs->begin && !correction))) {
       hdg = abs->value;
       if (!abs->number.typed && abs->number.leading_digit_word && abs->number.groups == 2 && hdg < 40) hdg *= 10.0;
       if (hdg > 360) {
@@ -871,6 +943,10 @@ class Parser {
     if (!wp) wp = single_route_waypoint(*id);
     if (!wp) return need("Direct to which waypoint should " + *id + " fly?");
     out_.push_back("DIRECT " + *id + " " + *wp);
+    // a level said in the same breath without its verb ("direct LIVVN ... six thousand")
+    for (const auto& q : quantities(s))
+      if (q.begin > s.trig && q.kind == QKind::kAlt && q.number.has_thousand)
+        return out_.push_back("ALT " + *id + " " + fmt_alt(q.value, q.flight_level));
   }
 
   void add_waypoint(const Segment& s) {
@@ -1039,6 +1115,7 @@ class Parser {
   std::vector<Reference> refs_;
   std::vector<std::string> out_;
   std::string ask_;
+  std::string pending_;  // question of a value instruction without a value
   std::string subject_;
   std::string last_waypoint_;
   LastTarget last_;

@@ -237,8 +237,10 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     while (i < t.size() && is_word(t[i]) && is_filler(t[i].text) && !used[i]) ++i;
     size_t words_begin = i;
     std::string words;
+    bool keyword = false;  // an instruction word may be a misheard airline name ("front turn" = Frontier)
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
-           !is_keyword(t[i].text) && phonetic_letter(t[i].text) == 0) {
+           phonetic_letter(t[i].text) == 0) {
+      keyword = keyword || is_keyword(t[i].text);
       words += t[i].text;
       ++i;
     }
@@ -246,7 +248,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     Suffix suf = read_suffix(t, i, used);
     if (!suf.groups.empty()) {
       CallsignMatch m = match_world("", words, suf, fleet);
-      double need = fleet.size() == 1 ? 0.3 : 0.5;
+      double need = keyword ? 0.55 : fleet.size() == 1 ? 0.3 : 0.5;
       if (m.score >= need && m.groups > 0) add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
     }
   }

@@ -97,7 +97,7 @@ const std::vector<Airline>& airlines() {
       {"exec jet", "EJA"},       {"flexjet", "LXJ"},        {"air shuttle", "ASH"},      {"air transport", "ATN"},
       {"compass", "CPZ"},        {"citrus", "TCF"},         {"cactus", "AWE"},           {"fiji", "FJI"},
       {"gemini", "GXA"},         {"chronos", "CNS"},        {"jetcard", "DPJ"},          {"fraction", "NJE"},
-      {"itarrow", "ITY"},        {"cobalt", "FCB"},         {"jetset", "JSX"},           {"aer lingus", "EIN"},
+      {"itarrow", "ITY"},        {"november", "N"},        {"cobalt", "FCB"},         {"jetset", "JSX"},           {"aer lingus", "EIN"},
   };
   return kAirlines;
 }

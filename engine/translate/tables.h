@@ -20,7 +20,7 @@ namespace squawk::translate {
 
 struct Airline {
   const char* telephony;  // lower case, words separated by one space
-  const char* icao;       // three-letter prefix
+  const char* icao;       // three-letter prefix ("N" for US registrations, "november")
 };
 
 const std::vector<Airline>& airlines();

@@ -54,6 +54,21 @@ size_t osa_distance(std::string_view a, std::string_view b) {
   return d[n][m];
 }
 
+// Words a typo is corrected to: instruction verbs, nouns and units whose
+// misspelling would otherwise lose the instruction. Short everyday words
+// ("load", "trail", "rate") are left out: speech recognition produces real
+// words near them ("loan", "train", "rare") far more often than typists do.
+const std::vector<std::string>& fix_targets() {
+  static const std::vector<std::string> kTargets = {
+      "climb", "descend", "descent", "maintain", "altitude", "heading", "speed", "knots", "reduce", "increase",
+      "decrease", "delete", "remove", "waypoint", "direct", "create", "aircraft", "destination", "origin",
+      "vertical", "simulation", "scenario", "turbulence", "conflict", "detection", "resolution", "separation",
+      "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite", "define", "teleport",
+      "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes", "timestep", "protected",
+      "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude", "minimum", "horizontal"};
+  return kTargets;
+}
+
 }  // namespace
 
 bool is_keyword(const std::string& w) { return keyword_set().count(w) > 0; }
@@ -77,7 +92,7 @@ std::string spell_fix(const std::string& w) {
   std::string best;
   size_t best_d = limit + 1;
   bool tie = false;
-  for (const auto& k : keyword_list()) {
+  for (const auto& k : fix_targets()) {
     if (k[0] != w[0] || k.size() + limit < w.size() || w.size() + limit < k.size()) continue;
     size_t d = osa_distance(w, k);
     if (d < best_d) {

@@ -2,8 +2,8 @@
 //
 // Contract: is_keyword() is true for words that carry meaning in an
 // instruction (verbs, units, nouns such as "altitude"); spell_fix() returns
-// the keyword a misspelt word stands for ("heding" -> "heading", "tunr" ->
-// "turn", "kots" -> "knots") when exactly one keyword with the same first
+// the instruction word a misspelt word stands for ("heding" -> "heading",
+// "tunr" -> "turn", "kots" -> "knots") when exactly one such word with the same first
 // letter is one edit away (two for words of 7+ letters; a swap of adjacent
 // letters is one edit), else the word unchanged. Words of 3 letters or
 // fewer, and known words, are never changed.
