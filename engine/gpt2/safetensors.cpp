@@ -32,6 +32,9 @@ std::string shape_str(const std::vector<int64_t>& s) {
   return r.append("]");
 }
 
+// Byte counts saturate here instead of overflowing.
+constexpr size_t kSaturated = size_t{1} << 62;
+
 Status bad(const std::string& msg) { return Status::corruption("safetensors: " + msg); }
 
 uint64_t read_u64_le(const char* p) {
@@ -93,8 +96,7 @@ Result<SafetensorsFile> SafetensorsFile::parse(std::string bytes) {
       if (!d.is_number_unsigned()) return bad(who + ": shape entries must be non-negative integers");
       const uint64_t dv = d.get<uint64_t>();
       if (dv > (uint64_t{1} << 40)) return bad(who + ": shape dimension " + std::to_string(dv) + " is implausibly large");
-      if (dv != 0 && bytes_needed > data_size / dv + 1) bytes_needed = data_size + 1;
-      else bytes_needed *= dv;
+      bytes_needed = (dv != 0 && bytes_needed > kSaturated / dv) ? kSaturated : bytes_needed * dv;
       t.shape.push_back(static_cast<int64_t>(dv));
     }
     if (!(*off)[0].is_number_unsigned() || !(*off)[1].is_number_unsigned())
@@ -105,7 +107,7 @@ Result<SafetensorsFile> SafetensorsFile::parse(std::string bytes) {
                  "] fall outside the data buffer of " + std::to_string(data_size) + " bytes");
     if (e - b != bytes_needed)
       return bad(who + ": " + t.dtype + " " + shape_str(t.shape) + " needs " +
-                 (bytes_needed > data_size ? std::string("more bytes than the file holds")
+                 (bytes_needed >= kSaturated ? std::string("more bytes than the file holds")
                                            : std::to_string(bytes_needed) + " bytes") +
                  " but data_offsets span " + std::to_string(e - b));
     t.begin = static_cast<size_t>(b);

@@ -1,0 +1,127 @@
+// Optimised kernels against their plain-loop references, and the element-wise
+// ops against finite differences.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/rng.h"
+#include "nn/attention.h"
+#include "nn/gelu.h"
+#include "nn/gemm.h"
+#include "nn/layernorm.h"
+
+using namespace squawk;
+
+namespace {
+
+std::vector<float> randn(size_t n, uint64_t seed, double sd = 1.0) {
+  Rng rng(seed);
+  std::vector<float> v(n);
+  for (float& x : v) x = static_cast<float>(rng.normal(0.0, sd));
+  return v;
+}
+
+float max_diff(const std::vector<float>& a, const std::vector<float>& b) {
+  REQUIRE(a.size() == b.size());
+  float m = 0.0f;
+  for (size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(a[i] - b[i]));
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("gemm equals the plain-loop reference for every transpose") {
+  const int m = 37, n = 29, k = 53;
+  for (int ta = 0; ta < 2; ++ta)
+    for (int tb = 0; tb < 2; ++tb) {
+      auto a = randn(static_cast<size_t>(m) * k, 1), b = randn(static_cast<size_t>(k) * n, 2);
+      auto c1 = randn(static_cast<size_t>(m) * n, 3), c2 = c1;
+      const int lda = ta ? m : k, ldb = tb ? k : n;
+      nn::gemm(ta, tb, m, n, k, 0.7f, a.data(), lda, b.data(), ldb, 0.3f, c1.data(), n);
+      nn::gemm_ref(ta, tb, m, n, k, 0.7f, a.data(), lda, b.data(), ldb, 0.3f, c2.data(), n);
+      CHECK(max_diff(c1, c2) < 1e-4f);
+    }
+}
+
+TEST_CASE("attention kernel equals the plain-loop reference, with and without a prefix") {
+  for (int mode = 0; mode < 3; ++mode) {
+    nn::AttentionShape s;
+    s.B = 3, s.T = 5, s.C = 16, s.NH = 4;
+    s.P = mode == 0 ? 0 : 4;
+    s.inline_prefix = mode == 2;
+    const int R = s.rows(), C = s.C;
+    auto qkv = randn(static_cast<size_t>(R) * 3 * C, 10 + mode);
+    auto kext = randn(static_cast<size_t>(s.P) * C, 20), vext = randn(static_cast<size_t>(s.P) * C, 21);
+    std::vector<float> out1(static_cast<size_t>(R) * C), out2 = out1;
+    std::vector<float> att1(nn::attention_probs_size(s)), att2 = att1;
+    nn::attention_forward(out1.data(), att1.data(), qkv.data(), kext.data(), vext.data(), C, s);
+    nn::attention_forward_ref(out2.data(), att2.data(), qkv.data(), kext.data(), vext.data(), C, s);
+    CHECK(max_diff(out1, out2) < 1e-5f);
+    CHECK(max_diff(att1, att2) < 1e-6f);
+    auto dout = randn(out1.size(), 30);
+    std::vector<float> d1(qkv.size(), 0.0f), d2 = d1;
+    nn::attention_backward(d1.data(), dout.data(), att1.data(), qkv.data(), kext.data(), vext.data(), C, s);
+    nn::attention_backward_ref(d2.data(), dout.data(), att2.data(), qkv.data(), kext.data(), vext.data(), C, s);
+    CHECK(max_diff(d1, d2) < 1e-5f);
+    // Finite differences of sum(out .* dout) against the reference backward.
+    Rng pick(mode);
+    for (int trial = 0; trial < 12; ++trial) {
+      const size_t i = static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(qkv.size()) - 1));
+      auto f = [&](float delta) {
+        auto q = qkv;
+        q[i] += delta;
+        std::vector<float> o(out1.size());
+        nn::attention_forward_ref(o.data(), nullptr, q.data(), kext.data(), vext.data(), C, s);
+        double acc = 0.0;
+        for (size_t j = 0; j < o.size(); ++j) acc += static_cast<double>(o[j]) * dout[j];
+        return acc;
+      };
+      const double fd = (f(1e-3f) - f(-1e-3f)) / 2e-3;
+      CHECK(std::fabs(fd - d2[i]) < 2e-3 + 1e-2 * std::fabs(fd));
+    }
+  }
+}
+
+TEST_CASE("layernorm and gelu backward match finite differences") {
+  const int N = 3, C = 7;
+  auto x = randn(N * C, 40), w = randn(C, 41), b = randn(C, 42), dy = randn(N * C, 43);
+  std::vector<float> y(N * C), mean(N), rstd(N);
+  nn::layernorm_forward(y.data(), mean.data(), rstd.data(), x.data(), w.data(), b.data(), N, C, 1e-5f);
+  std::vector<float> dx(N * C, 0.0f), dw(C, 0.0f), db(C, 0.0f);
+  nn::layernorm_backward(dx.data(), dw.data(), db.data(), dy.data(), x.data(), w.data(), mean.data(),
+                         rstd.data(), N, C);
+  auto loss = [&](const std::vector<float>& xx, const std::vector<float>& ww) {
+    std::vector<float> yy(N * C);
+    nn::layernorm_forward(yy.data(), nullptr, nullptr, xx.data(), ww.data(), b.data(), N, C, 1e-5f);
+    double acc = 0.0;
+    for (int i = 0; i < N * C; ++i) acc += static_cast<double>(yy[i]) * dy[i];
+    return acc;
+  };
+  for (int i = 0; i < N * C; ++i) {
+    auto xp = x, xm = x;
+    xp[i] += 1e-3f;
+    xm[i] -= 1e-3f;
+    CHECK(dx[i] == doctest::Approx((loss(xp, w) - loss(xm, w)) / 2e-3).epsilon(1e-2).scale(1.0));
+  }
+  for (int i = 0; i < C; ++i) {
+    auto wp = w, wm = w;
+    wp[i] += 1e-3f;
+    wm[i] -= 1e-3f;
+    CHECK(dw[i] == doctest::Approx((loss(x, wp) - loss(x, wm)) / 2e-3).epsilon(1e-2).scale(1.0));
+  }
+  std::vector<float> g(1), gd(1, 0.0f);
+  for (float v : {-3.0f, -0.5f, 0.0f, 0.7f, 2.5f}) {
+    const float one = 1.0f;
+    std::vector<float> vp = {v + 1e-3f}, vm = {v - 1e-3f}, yp(1), ym(1);
+    nn::gelu_forward(yp.data(), vp.data(), 1);
+    nn::gelu_forward(ym.data(), vm.data(), 1);
+    gd[0] = 0.0f;
+    nn::gelu_backward(gd.data(), &v, &one, 1);
+    CHECK(gd[0] == doctest::Approx((yp[0] - ym[0]) / 2e-3).epsilon(2e-3).scale(1.0));
+  }
+  // Published value: gelu_new(1) = 0.5 (1 + tanh(sqrt(2/pi) * 1.044715)) = 0.841192.
+  const float x1 = 1.0f;
+  nn::gelu_forward(g.data(), &x1, 1);
+  CHECK(g[0] == doctest::Approx(0.8411920).epsilon(1e-6));
+}
