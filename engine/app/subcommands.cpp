@@ -31,6 +31,30 @@ const std::vector<Subcommand>& subcommands() {
        "passes when it ends without error and with no failed check. The last line\n"
        "is `N passed, N failed`; the exit code is 1 when any script failed.\n",
        cmd_test},
+      {"gpt2", "gpt2 info|generate|logits|bench DIR|tiny   the GPT-2 model on the CPU",
+       "usage: squawk gpt2 info DIR\n"
+       "       squawk gpt2 generate DIR \"PROMPT\" [--max-tokens N] [--top-k K] [--seed N]\n"
+       "       squawk gpt2 logits DIR \"TEXT\" [--json]\n"
+       "       squawk gpt2 bench [--json] [--tiny] [--seq T] [--batch 1,8] [--threads 1,2]\n"
+       "                         [--seconds S]\n"
+       "       squawk gpt2 train-bpe OUT_DIR FILE... [--merges N]\n\n"
+       "DIR is a Hugging Face GPT-2 folder (config.json, model.safetensors in F32,\n"
+       "F16 or BF16, vocab.json + merges.txt) or the word `tiny`: a random 2-layer,\n"
+       "64-wide model over the byte-level vocabulary, seeded by --seed (default 0).\n\n"
+       "  info        sizes of the model and its tokenizer, and the matrix backend\n"
+       "  generate    continue PROMPT token by token through the KV cache, sampling\n"
+       "              among the K most likely tokens (default 40; 1 = greedy) for up\n"
+       "              to N tokens (default 32) or until <|endoftext|>\n"
+       "  logits      the tokens of TEXT and the logits at its last position; --json\n"
+       "              prints {\"tokens\": [...], \"logits\": [...]}\n"
+       "  bench       forward throughput of GPT-2 small (random weights, T = 256,\n"
+       "              B = 1 and 8, 1 and 2 threads) against the machine's measured\n"
+       "              sgemm peak, and forward+backward time per prompt with the last\n"
+       "              block trainable; --json prints gflops, peak_gflops,\n"
+       "              fraction_of_peak and every run; --tiny uses the tiny model\n"
+       "  train-bpe   learn N byte-level BPE merges (default 256) on the text files\n"
+       "              and write vocab.json + merges.txt to OUT_DIR\n",
+       cmd_gpt2},
       {"render", "render EPISODE.jsonl      draw a recorded episode as SVG (Fig. 2 style)",
        "usage: squawk render EPISODE.jsonl [--frame N] [--size PX] [--out FILE.svg|-]\n\n"
        "Draws a recorded episode top-down, north up: the ownship's and intruders'\n"
@@ -62,6 +86,93 @@ const std::vector<Subcommand>& subcommands() {
        "  --notes FILE   retrieval notes to use instead of the shipped ones\n"
        "  --no-notes     the registry documentation alone\n",
        cmd_rag},
+      {"scn", "scn FILE.scn               run a BlueSky scenario headless and summarise it",
+       "usage: squawk scn FILE.scn [--until SECONDS] [--navdata DIR] [--dump-json] [--seed N]\n"
+       "       squawk scn DIR --conformance [--max-time SECONDS] [--navdata DIR]\n\n"
+       "Loads a BlueSky scenario file and runs it without display until every timed\n"
+       "command has run (at most --max-time, default 3600 s of sim time) or until\n"
+       "--until. Prints ECHO output and failures as they happen, then a summary:\n"
+       "commands executed, commands skipped because squawk lacks them (display and\n"
+       "plugin commands such as PAN, ZOOM, SWRAD), failures grouped by reason,\n"
+       "aircraft, conflicts and losses of separation. Exit code 1 when a command\n"
+       "failed.\n\n"
+       "  --navdata DIR   BlueSky navdata (airports.dat, fix.dat, nav.dat); default\n"
+       "                  $SQUAWK_NAVDATA. Without it, named places are errors.\n"
+       "  --dump-json     print only the final state as JSON: simt and per aircraft\n"
+       "                  id, type, lat, lon, alt_ft, hdg_deg, tas_kt, cas_kt, gs_kt,\n"
+       "                  vs_fpm\n"
+       "  --conformance   run every file under DIR and print Markdown tables of the\n"
+       "                  totals, skipped commands and failure reasons\n",
+       cmd_scn},
+      {"commands", "commands [NAME] [--json]   list the TrafScript commands (the registry)",
+       "usage: squawk commands [NAME] [--json]\n\n"
+       "Prints the TrafScript command registry: every command's usage line, or the\n"
+       "full help of one command (aliases, what it does, examples). --json prints\n"
+       "the whole registry as a JSON array of {name, aliases, args, usage, help,\n"
+       "examples}; the translator and its retrieval index read this.\n",
+       cmd_commands},
+      {"translate", "translate \"TEXT\" [--scenario FILE]  English -> TrafScript with the offline grammar",
+       "usage: squawk translate \"TEXT\" [--scenario FILE] [--setup \"CMD ; CMD\"] [--jsonl]\n"
+       "       squawk translate --tsv CORPUS.tsv\n\n"
+       "Translates a controller's or experimenter's request into TrafScript with the\n"
+       "built-in grammar (no language model) and prints the commands, separated by\n"
+       "' ; ', or the question it asks back when a value is missing. Relative\n"
+       "instructions and spoken callsigns are resolved against the traffic that the\n"
+       "scenario (its time-0 commands) and the setup commands create. Exit code 1\n"
+       "when a produced command does not validate.\n\n"
+       "  --scenario FILE  a .scn file whose time-0 commands set up the traffic\n"
+       "  --setup CMDS     TrafScript commands run first, separated by ';'\n"
+       "  --jsonl          print {\"output\": ...} or {\"ask\": ...} as one JSON line\n"
+       "  --tsv CORPUS     run each case of a corpus (id setup utterance expected\n"
+       "                   category) on a fresh simulation after its setup and print\n"
+       "                   one JSON line per case: {\"id\", \"output\"} or {\"id\", \"ask\"}\n",
+       cmd_translate},
+      {"eval-translate", "eval-translate CORPUS.tsv [--mode M]  translation accuracy per category",
+       "usage: squawk eval-translate CORPUS.tsv [--mode offline|single|multi] [--failures] [--json]\n\n"
+       "Translates every case of a corpus on a fresh simulation after the case's\n"
+       "setup and scores it with the corpus rules (shared/corpora/README.md):\n"
+       "aliases folded, altitudes within 50 ft, headings modulo 360, and so on. Prints\n"
+       "cases, correct answers and accuracy per category and overall.\n\n"
+       "  --mode offline   the built-in grammar (default)\n"
+       "  --mode single    the Lua translation graph with one LLM call per request\n"
+       "  --mode multi     the Lua translation graph with its multi-agent pipeline;\n"
+       "                   single and multi need SQUAWK_LLM_URL (an LLM server)\n"
+       "  --failures       list the cases it got wrong with what it produced\n"
+       "  --json           print the figures as JSON\n",
+       cmd_eval_translate},
+      {"train", "train SCENARIO.lua --out DIR   train the conflict-resolution MLP policy",
+       "usage: squawk train SCENARIO.lua --out DIR [--policy mlp] [--episodes N] [--seed N]\n"
+       "                    [--estimator vpg|improved] [--lr X] [--envs N] [--eval-every N]\n"
+       "                    [--eval-episodes N] [--resume] [--quiet]\n\n"
+       "Trains the MLP policy of a conflict-resolution scenario (scenarios/*.lua) by\n"
+       "policy gradient with Adam, on the scenario's training settings, evaluating\n"
+       "it on the scenario's evaluation settings every --eval-every episodes. The\n"
+       "scenario's train table gives the defaults; flags override them. Writes into\n"
+       "DIR a checkpoint (checkpoint.ckpt, replaced atomically after each\n"
+       "evaluation) and log.csv (one row per evaluation interval). A progress bar\n"
+       "with ETA goes to the terminal.\n\n"
+       "  --estimator E   vpg: the paper's Eq. 5 (log-prob times the step reward);\n"
+       "                  improved: reward-to-go, learned value baseline,\n"
+       "                  normalised advantages and an entropy bonus\n"
+       "  --resume        continue from DIR/checkpoint.ckpt (same seed): the run goes\n"
+       "                  on exactly as if it had not stopped\n",
+       cmd_train},
+      {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
+       "usage: squawk eval SCENARIO.lua [--policy random|zero|mvp|mlp] [--checkpoint FILE]\n"
+       "                   [--episodes N] [--seed N] [--greedy] [--json] [--record FILE.jsonl]\n\n"
+       "Runs the scenario's evaluation episodes (default 1000, numbered from the\n"
+       "seed) with one policy and prints Table 3's columns: success rate, mean\n"
+       "episode reward and its standard deviation.\n\n"
+       "  --policy random  an untrained MLP, initialised from the seed\n"
+       "  --policy zero    never turn\n"
+       "  --policy mvp     BlueSky's MVP resolution steering the ownship (a classical\n"
+       "                   reference, heading only)\n"
+       "  --policy mlp     a trained MLP: --checkpoint FILE, by default the checkpoint\n"
+       "                   shipped in models/\n"
+       "  --greedy         take the most likely action instead of sampling\n"
+       "  --json           print {success_rate, mean_reward, std_reward, episodes}\n"
+       "  --record FILE    write every episode as JSON lines (squawk render reads it)\n",
+       cmd_eval},
   };
   return table;
 }

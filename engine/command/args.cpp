@@ -58,6 +58,7 @@ Result<ArgValue> parse_one(ArgType t, ArgReader& r, const ParseContext& ctx, Geo
   switch (t) {
     case ArgType::kAcid: {
       if (v.text == "*") {
+        if (ctx.traffic->n() == 0) return Status::not_found("'*' (every aircraft) matched no aircraft");
         for (int i = 0; i < ctx.traffic->n(); ++i) v.acids.push_back(i);
         return v;
       }

@@ -255,7 +255,7 @@ void add_route_commands(std::vector<CommandDecl>& out) {
   out.push_back({"DELRTE", {"DELROUTE"}, "acid", "DELRTE acid",
                  "Clears an aircraft's whole route, origin and destination included, and switches LNAV and "
                  "VNAV off.",
-                 {"DELRTE KL204"}, delrte, {}});
+                 {"DELRTE KL204"}, delrte, {}, true});
   out.push_back({"DIRECT", {"DIRECTTO", "DIRTO", "DCT"}, "acid,wpinroute", "DIRECT acid,wpname",
                  "Sends the aircraft straight to a waypoint of its route, skipping the ones before it, and "
                  "switches LNAV on.",
@@ -273,11 +273,11 @@ void add_route_commands(std::vector<CommandDecl>& out) {
   out.push_back({"LNAV", {}, "acid,[onoff]", "LNAV acid,[ON/OFF]",
                  "Switches lateral navigation along the route on or off, or shows it. On needs a route with an "
                  "active waypoint.",
-                 {"LNAV KL204 ON"}, lnav, {}});
+                 {"LNAV KL204 ON"}, lnav, {}, true});
   out.push_back({"VNAV", {}, "acid,[onoff]", "VNAV acid,[ON/OFF]",
                  "Switches vertical navigation (following the route's altitude and speed constraints) on or "
                  "off, or shows it. On also switches LNAV on.",
-                 {"VNAV KL204 ON"}, vnav, {}});
+                 {"VNAV KL204 ON"}, vnav, {}, true});
   out.push_back({"DEFWPT", {}, "txt,latlon,[txt]", "DEFWPT name,lat,lon,[FIX/VOR/DME/NDB/DELETE]",
                  "Defines a named waypoint for this run (it can then be used wherever a position is expected), "
                  "or deletes one with DELETE.",

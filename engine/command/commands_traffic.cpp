@@ -225,7 +225,7 @@ void add_traffic_commands(std::vector<CommandDecl>& out) {
   out.push_back({"DEL", {"DELETE"}, "acid/txt,...", "DEL acid,[acid...]",
                  "Deletes aircraft (or all aircraft with *). DEL WIND is accepted and does nothing: squawk has "
                  "no wind field.",
-                 {"DEL KL204", "DEL *"}, del, {}});
+                 {"DEL KL204", "DEL *"}, del, {}, true});
   out.push_back({"MOVE", {}, "acid,latlon,[alt,hdg,spd,vspd]", "MOVE acid,lat,lon,[alt,hdg,spd,vspd]",
                  "Puts an aircraft at a new position at once; optional altitude, heading, speed and vertical "
                  "speed are set (and selected) too.",
@@ -233,25 +233,25 @@ void add_traffic_commands(std::vector<CommandDecl>& out) {
   out.push_back({"POS", {}, "acid/wpt", "POS acid/waypoint",
                  "Shows an aircraft's state (position, altitude, speeds, selections, LNAV/VNAV, active "
                  "waypoint), or where a named airport, waypoint or navaid is. A bare callsign means POS.",
-                 {"POS KL204", "KL204", "POS EHAM"}, pos, {}});
+                 {"POS KL204", "KL204", "POS EHAM"}, pos, {}, true});
   out.push_back({"HDG", {"HEADING", "TURN"}, "acid,hdg", "HDG acid,hdg",
                  "Selects a heading in degrees; the aircraft turns the short way at its bank angle. Switches "
                  "LNAV off. A name instead of a number means the bearing to that airport, waypoint or aircraft.",
-                 {"HDG KL204 270", "KL204 HDG 045"}, hdg, {}});
+                 {"HDG KL204 270", "KL204 HDG 045"}, hdg, {}, true});
   out.push_back({"ALT", {}, "acid,alt,[vspd]", "ALT acid,alt,[vspd]",
                  "Selects an altitude in feet or as a flight level; the aircraft climbs or descends to it, at "
                  "vspd feet per minute when given. Switches VNAV off.",
-                 {"ALT KL204 FL250", "KL204 ALT 5000 1000"}, alt, {}});
+                 {"ALT KL204 FL250", "KL204 ALT 5000 1000"}, alt, {}, true});
   out.push_back({"VS", {}, "acid,vspd", "VS acid,vspd",
                  "Selects the vertical speed in feet per minute used to reach the selected altitude. Switches "
                  "VNAV off.",
-                 {"VS KL204 2000"}, vs, {}});
+                 {"VS KL204 2000"}, vs, {}, true});
   out.push_back({"SPD", {"SPEED"}, "acid,spd", "SPD acid,spd",
                  "Selects a speed: knots CAS (250) or a Mach number (M.78, .78). Switches VNAV speed off.",
-                 {"SPD KL204 250", "KL204 SPD M.82"}, spd, {}});
+                 {"SPD KL204 250", "KL204 SPD M.82"}, spd, {}, true});
   out.push_back({"BANK", {"BANKLIM"}, "acid,[float]", "BANK acid,[bankangle]",
                  "Sets the bank angle in degrees an aircraft uses in turns (default 25), or shows it.",
-                 {"BANK KL204 30"}, bank, {}});
+                 {"BANK KL204 30"}, bank, {}, true});
   out.push_back({"ATALT", {}, "acid,alt,string", "ATALT acid,alt,command",
                  "Runs a command once the aircraft's altitude crosses the given altitude.",
                  {"KL204 ATALT FL100 KL204 SPD 300"}, atalt, {}});

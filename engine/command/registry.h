@@ -46,6 +46,7 @@ struct CommandDecl {
   std::vector<std::string> examples;
   Handler handler = nullptr;
   Signature signature;               // parsed from `args` when registered
+  bool all_aircraft = false;         // acid arguments may be `*` (every aircraft)
 };
 
 class Registry {

@@ -74,6 +74,21 @@ Resolved resolve(std::string_view text, const sim::Traffic& traf) {
 
 std::string usage_suffix(const CommandDecl& d) { return " (usage: " + d.usage + ")"; }
 
+// Parses the arguments of a resolved command; `*` only where the command
+// takes every aircraft.
+Result<std::vector<ArgValue>> parse_call(const Resolved& rc, const std::string& typed, const ParseContext& ctx) {
+  auto args = parse_args(rc.decl->signature, rc.argtext, ctx);
+  if (!args)
+    return Status::error(args.status().code(), typed + ": " + args.status().message() + usage_suffix(*rc.decl));
+  if (!rc.decl->all_aircraft)
+    for (size_t k = 0; k < args->size(); ++k)
+      if ((*args)[k].type == ArgType::kAcid && (*args)[k].acids.size() > 1)
+        return Status::invalid(typed + ": argument " + std::to_string(k + 1) +
+                               ": '*' (every aircraft) is not accepted here; name one aircraft" +
+                               usage_suffix(*rc.decl));
+  return args;
+}
+
 }  // namespace
 
 const ArgValue& Call::operator[](size_t i) const {
@@ -105,11 +120,8 @@ Result<std::string> Stack::run_command(std::string_view text, bool from_queue, b
   }
   if (rc.acid_unknown)
     return Status::not_found(typed + ": no aircraft " + text::quoted(rc.name) + usage_suffix(*rc.decl));
-  auto args = parse_args(rc.decl->signature, rc.argtext, parse_context());
-  if (!args)
-    return Status::error(args.status().code(),
-                         typed + ": " + args.status().message() + usage_suffix(*rc.decl));
-  Call call{*this, rc.decl->name, *args};
+  SQUAWK_ASSIGN_OR_RETURN(auto args, parse_call(rc, typed, parse_context()));
+  Call call{*this, rc.decl->name, args};
   auto out = rc.decl->handler(call);
   if (!out) return Status::error(out.status().code(), typed + ": " + out.status().message());
   return out;
@@ -141,10 +153,7 @@ Status Stack::check(std::string_view line) const {
       return Status::not_found(typed + ": unknown command or aircraft " + text::quoted(rc.name));
     if (rc.acid_unknown)
       return Status::not_found(typed + ": no aircraft " + text::quoted(rc.name) + usage_suffix(*rc.decl));
-    auto args = parse_args(rc.decl->signature, rc.argtext, parse_context());
-    if (!args)
-      return Status::error(args.status().code(),
-                           typed + ": " + args.status().message() + usage_suffix(*rc.decl));
+    SQUAWK_RETURN_IF_ERROR(parse_call(rc, typed, parse_context()).status());
   }
   return Status::ok();
 }
@@ -177,6 +186,7 @@ void Stack::process_due() {
 }
 
 void Stack::test_conditions() {
+  if (conditions_.empty()) return;
   const sim::Traffic& t = sim_.traffic();
   std::vector<Condition> keep;
   keep.reserve(conditions_.size());

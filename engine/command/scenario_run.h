@@ -1,0 +1,36 @@
+// Headless run of one scenario file: the engine of `squawk scn` and of the
+// conformance sweep over BlueSky's scenario folder.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "command/navdb.h"
+#include "command/stack.h"
+#include "core/status.h"
+
+namespace squawk::command {
+
+struct ScenarioRunOptions {
+  std::optional<double> until;  // [s] stop time; default: the last queued command time
+  double max_time = 3600.0;     // [s] cap on the default stop time
+  std::shared_ptr<const NavDb> navdb;  // may be null
+  uint64_t seed = 0;
+};
+
+struct ScenarioRunResult {
+  double end_time = 0.0;  // [s] sim time reached
+  Tally tally;            // commands executed / skipped / failed
+  int aircraft = 0;       // aircraft at the end
+  int64_t conflicts = 0;  // conflict pairs entered (when detection was on)
+  int64_t los = 0;        // losses of separation entered
+  double wall_s = 0.0;    // [s] wall-clock time of the run
+};
+
+// Loads `path` (IC) and runs it to `until`, or until every queued command has
+// run (following PCALL/SCHEDULE additions) or max_time is reached. `stack` receives
+// the final state. Error: the file cannot be found or read.
+Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRunOptions& opts, Stack& stack);
+
+}  // namespace squawk::command
