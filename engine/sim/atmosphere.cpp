@@ -29,20 +29,28 @@ Atmos isa(double alt_m) {
 }
 
 double speed_of_sound(double alt_m) { return std::sqrt(kGamma * kRGas * isa_temperature(alt_m)); }
+double speed_of_sound(const Atmos& a) { return std::sqrt(kGamma * kRGas * a.temp); }
 
-double tas_to_cas(double tas, double alt_m) {
-  const Atmos a = isa(alt_m);
-  const double qdyn = a.p * (std::pow(1.0 + a.rho * tas * tas / (7.0 * a.p), 3.5) - 1.0);
+namespace {
+double pow3_5(double x) { return x * x * x * std::sqrt(x); }
+}  // namespace
+
+// Impact pressure qdyn = p ((1 + rho v^2 / (7 p))^3.5 - 1) at one density and
+// pressure, inverted at the other.
+double tas_to_cas(double tas, const Atmos& a) {
+  const double qdyn = a.p * (pow3_5(1.0 + a.rho * tas * tas / (7.0 * a.p)) - 1.0);
   const double cas = std::sqrt(7.0 * kP0 / kRho0 * (std::pow(qdyn / kP0 + 1.0, 2.0 / 7.0) - 1.0));
   return tas < 0 ? -cas : cas;
 }
 
-double cas_to_tas(double cas, double alt_m) {
-  const Atmos a = isa(alt_m);
-  const double qdyn = kP0 * (std::pow(1.0 + kRho0 * cas * cas / (7.0 * kP0), 3.5) - 1.0);
+double cas_to_tas(double cas, const Atmos& a) {
+  const double qdyn = kP0 * (pow3_5(1.0 + kRho0 * cas * cas / (7.0 * kP0)) - 1.0);
   const double tas = std::sqrt(7.0 * a.p / a.rho * (std::pow(1.0 + qdyn / a.p, 2.0 / 7.0) - 1.0));
   return cas < 0 ? -tas : tas;
 }
+
+double tas_to_cas(double tas, double alt_m) { return tas_to_cas(tas, isa(alt_m)); }
+double cas_to_tas(double cas, double alt_m) { return cas_to_tas(cas, isa(alt_m)); }
 
 double tas_to_mach(double tas, double alt_m) { return tas / speed_of_sound(alt_m); }
 double mach_to_tas(double mach, double alt_m) { return mach * speed_of_sound(alt_m); }

@@ -31,9 +31,13 @@ double isa_temperature(double alt_m);   // [K]
 double isa_pressure(double alt_m);      // [Pa]
 double isa_density(double alt_m);       // [kg/m^3]
 double speed_of_sound(double alt_m);    // [m/s]
+double speed_of_sound(const Atmos& a);  // [m/s]
 
 double tas_to_cas(double tas, double alt_m);    // [m/s] -> [m/s]; sign kept
 double cas_to_tas(double cas, double alt_m);    // [m/s] -> [m/s]; sign kept
+// The same with the atmosphere at the altitude already computed (hot path).
+double tas_to_cas(double tas, const Atmos& a);
+double cas_to_tas(double cas, const Atmos& a);
 double tas_to_mach(double tas, double alt_m);   // [m/s] -> [-]
 double mach_to_tas(double mach, double alt_m);  // [-] -> [m/s]
 double cas_to_mach(double cas, double alt_m);

@@ -201,9 +201,30 @@ void Simulation::update_autopilot() {
   }
 }
 
-void Simulation::refresh_speed_outputs(int i) {
-  traf_.cas[i] = tas_to_cas(traf_.tas[i], traf_.alt[i]);
-  traf_.mach[i] = tas_to_mach(traf_.tas[i], traf_.alt[i]);
+void Simulation::refresh_speed_outputs(int i, const Atmos& a) {
+  traf_.cas[i] = tas_to_cas(traf_.tas[i], a);
+  traf_.mach[i] = traf_.tas[i] / speed_of_sound(a);
+}
+
+// Selected speed -> TAS target, limited to [vmin, vmax] CAS (ground cap
+// included), at the aircraft's current altitude.
+void Simulation::retarget(int i, const Atmos& a) {
+  Traffic& t = traf_;
+  double vmax = t.perf[i].vmax;
+  if (perf_opts_.ground_cap && t.alt[i] <= perf_opts_.ground_alt) vmax = std::min(vmax, perf_opts_.ground_vmax);
+  const double spd = t.sel_spd[i];
+  double cas = spd;
+  if (is_mach(spd)) {
+    const double tas = spd * speed_of_sound(a);
+    cas = tas_to_cas(tas, a);
+    if (cas >= t.perf[i].vmin && cas <= vmax) {
+      t.tgt_tas[i] = tas;
+      t.tgt_tas_alt[i] = t.alt[i];
+      return;
+    }
+  }
+  t.tgt_tas[i] = cas_to_tas(std::clamp(cas, t.perf[i].vmin, vmax), a);
+  t.tgt_tas_alt[i] = t.alt[i];
 }
 
 void Simulation::set_heading_cache(int i) {
@@ -222,13 +243,7 @@ void Simulation::update_kinematics() {
     const double axmax = ground ? perf_opts_.ground_axmax : t.perf[i].axmax;
 
     // Targets (APorASAS + limits)
-    if (!(t.tgt_tas_alt[i] == t.alt[i])) {
-      double vmax = t.perf[i].vmax;
-      if (ground) vmax = std::min(vmax, perf_opts_.ground_vmax);
-      const double want = casormach_to_tas(t.sel_spd[i], t.alt[i]);
-      t.tgt_tas[i] = std::clamp(want, cas_to_tas(t.perf[i].vmin, t.alt[i]), cas_to_tas(vmax, t.alt[i]));
-      t.tgt_tas_alt[i] = t.alt[i];
-    }
+    if (!(t.tgt_tas_alt[i] == t.alt[i])) retarget(i, isa(t.alt[i]));
     const double tas_t = cr ? t.cr_tas[i] : t.tgt_tas[i];
     const double hdg_t = cr ? t.cr_trk[i] : t.sel_hdg[i];
     const bool cr_vert = cr && crs_.vertical;
@@ -260,7 +275,13 @@ void Simulation::update_kinematics() {
       t.vs[i] = sel ? std::copysign(vs_mag, dalt) : 0.0;
       t.alt[i] = sel ? t.alt[i] + t.vs[i] * dt : alt_t;
     }
-    if (t.tas[i] != old_tas || t.alt[i] != old_alt) refresh_speed_outputs(i);
+    if (t.alt[i] != old_alt) {
+      const Atmos a = isa(t.alt[i]);
+      retarget(i, a);
+      refresh_speed_outputs(i, a);
+    } else if (t.tas[i] != old_tas) {
+      refresh_speed_outputs(i, isa(t.alt[i]));
+    }
 
     // Ground speed (no wind) and flat-earth position update.
     t.gs[i] = t.tas[i];
@@ -316,7 +337,7 @@ int Simulation::add_aircraft(std::string_view acid, std::string_view actype, dou
   set_heading_cache(i);
   t.gsnorth[i] = tas * t.cos_hdg[i];
   t.gseast[i] = tas * t.sin_hdg[i];
-  refresh_speed_outputs(i);
+  refresh_speed_outputs(i, isa(alt_m));
   return i;
 }
 
@@ -412,7 +433,7 @@ Status Simulation::move(std::string_view acid, double lat, double lon, std::opti
   t.gsnorth[i] = t.tas[i] * t.cos_hdg[i];
   t.gseast[i] = t.tas[i] * t.sin_hdg[i];
   t.tgt_tas_alt[i] = std::nan("");
-  refresh_speed_outputs(i);
+  refresh_speed_outputs(i, isa(t.alt[i]));
   return Status::ok();
 }
 

@@ -29,6 +29,7 @@
 
 #include "core/rng.h"
 #include "core/status.h"
+#include "sim/atmosphere.h"
 #include "sim/conflict.h"
 #include "sim/mvp.h"
 #include "sim/performance.h"
@@ -191,7 +192,9 @@ class Simulation {
   void update_autopilot();
   void update_asas();
   void update_kinematics();
-  void refresh_speed_outputs(int i);
+  // cas and mach from tas at the atmosphere `a` of the aircraft's altitude.
+  void refresh_speed_outputs(int i, const Atmos& a);
+  void retarget(int i, const Atmos& a);
   void set_heading_cache(int i);
 
   Traffic traf_;
