@@ -6,6 +6,7 @@
 #include "core/files.h"
 #include "core/text.h"
 #include "translate/scorer.h"
+#include "translate/stack_world.h"
 
 namespace squawk::translate {
 
@@ -62,8 +63,9 @@ EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& 
 }
 
 Result<Translation> translate_case_offline(const CorpusCase& c) {
-  StaticWorld world;
-  SQUAWK_RETURN_IF_ERROR(world.apply_setup(c.setup).with_context(c.id));
+  command::Stack stack;
+  SQUAWK_RETURN_IF_ERROR(setup_stack(stack, c.setup).with_context(c.id));
+  StackWorld world(stack);
   return translate_offline(c.utterance, &world);
 }
 

@@ -50,7 +50,7 @@ struct EvalReport {
 using CaseTranslator = std::function<Result<Translation>(const CorpusCase&)>;
 
 EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& translate);
-// The offline translator on a StaticWorld built from the case's setup.
+// The offline translator on a fresh simulation after the case's setup.
 Result<Translation> translate_case_offline(const CorpusCase& c);
 std::string format_report(const EvalReport& r, const std::string& title);
 

@@ -2,11 +2,9 @@
 //
 // Contract: the offline grammar reads current aircraft states (for relative
 // instructions such as "climb 2000 ft" and for matching a spoken callsign)
-// and the names of defined waypoints through WorldView only, so it needs no
-// simulation. StaticWorld is an in-memory WorldView; apply_setup() fills it
-// from the TrafScript subset that scenario setups use (CRE, MOVE, DEL,
-// DEFWPT, ADDWPT; other commands leave the view as it is) and reports a line
-// it cannot read as an error naming the line.
+// and the names of defined waypoints through WorldView only, so the grammar
+// needs no simulation. StaticWorld is an in-memory WorldView (tests, fuzzing,
+// callers without a simulation); StackWorld (stack_world.h) views a live one.
 #pragma once
 
 #include <optional>
@@ -14,7 +12,6 @@
 #include <string_view>
 #include <vector>
 
-#include "core/status.h"
 
 namespace squawk::translate {
 
@@ -45,11 +42,8 @@ class StaticWorld : public WorldView {
   std::vector<std::string> waypoints() const override { return waypoints_; }
   void add_aircraft(AircraftView a) { aircraft_.push_back(std::move(a)); }
   void add_waypoint(std::string name) { waypoints_.push_back(std::move(name)); }
-  // Applies commands separated by ';' in order; stops at the first bad one.
-  Status apply_setup(std::string_view trafscript);
 
  private:
-  Status apply_line(std::string_view line);
   std::vector<AircraftView> aircraft_;
   std::vector<std::string> waypoints_;
 };
