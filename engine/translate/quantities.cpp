@@ -15,9 +15,12 @@ bool word_at(const std::vector<Token>& t, size_t i, std::initializer_list<const 
 // +1 / -1 for a hemisphere word, 0 otherwise; `lat` tells which axis.
 int hemisphere(const std::vector<Token>& t, size_t i, bool& lat) {
   if (word_at(t, i, {"n", "north"})) return lat = true, 1;
-  // A lone "s" is south only when a longitude follows ("33.95 S 151.18 E"); else seconds.
-  bool lon_follows = (i + 1 < t.size() && t[i + 1].kind == TokKind::kNumber) ||
-                     (i + 2 < t.size() && t[i + 1].kind == TokKind::kPunct && t[i + 2].kind == TokKind::kNumber);
+  // A lone "s" is south only when a longitude with its hemisphere follows
+  // ("33.95 S 151.18 E"); else it is seconds.
+  size_t k = i + 1;
+  if (k < t.size() && t[k].kind == TokKind::kPunct) ++k;
+  bool lon_follows = k + 1 < t.size() && t[k].kind == TokKind::kNumber &&
+                     word_at(t, k + 1, {"e", "east", "w", "west"});
   if (word_at(t, i, {"south"}) || (word_at(t, i, {"s"}) && lon_follows)) return lat = true, -1;
   if (word_at(t, i, {"e", "east"})) return lat = false, 1;
   if (word_at(t, i, {"w", "west"})) return lat = false, -1;

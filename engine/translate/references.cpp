@@ -118,7 +118,8 @@ CallsignMatch match_world(const std::string& icao, const std::string& words, con
         groups = k;
       }
     }
-    double score = 0.4 * airline + 0.6 * digits;
+    // Nothing said for the airline: the digits alone decide.
+    double score = icao.empty() && words.empty() ? digits : 0.4 * airline + 0.6 * digits;
     if (score > best.score) best = {a.id, score, groups};
   }
   return best;

@@ -1,0 +1,152 @@
+// Lexer and spoken numbers.
+#include <doctest/doctest.h>
+
+#include "translate/lexer.h"
+#include "translate/number_words.h"
+#include "translate/quantities.h"
+
+using namespace squawk::translate;
+
+namespace {
+
+SpokenNumber num(const char* text) {
+  auto toks = lex(text);
+  auto n = read_number(toks, 0);
+  REQUIRE(n.has_value());
+  return *n;
+}
+
+std::vector<Quantity> qty(const char* text) {
+  auto toks = lex(text);
+  std::vector<bool> skip(toks.size(), false);
+  return extract_quantities(toks, 0, toks.size(), skip);
+}
+
+}  // namespace
+
+TEST_CASE("number words: cardinals") {
+  CHECK(num("thirty-one thousand").value == 31000);
+  CHECK(num("one hundred and twenty").value == 120);
+  CHECK(num("two hundred ninety").value == 290);
+  CHECK(num("twelve hundred").value == 1200);
+  CHECK(num("four thousand five hundred").value == 4500);
+  CHECK(num("seventeen").value == 17);
+  CHECK_FALSE(read_number(lex("heading"), 0).has_value());
+}
+
+TEST_CASE("number words: ATC digit by digit and groups") {
+  CHECK(num("one two zero").value == 120);
+  CHECK(num("three five zero").value == 350);
+  CHECK(num("niner").value == 9);
+  CHECK(num("fife tree").value == 53);
+  CHECK(num("one one thousand").value == 11000);
+  CHECK(num("one zero thousand").value == 10000);
+  SpokenNumber g = num("fifty one twenty");
+  CHECK(g.digits == "5120");
+  CHECK(g.groups == 2);
+  CHECK(num("one eighty").value == 180);
+  CHECK(num("two ten").value == 210);
+  CHECK(num("one ah zero eight zero").value == 1080);  // hesitation skipped
+}
+
+TEST_CASE("number words: decimals") {
+  CHECK(num("point seven eight").value == doctest::Approx(0.78));
+  CHECK(num("decimal eight two").value == doctest::Approx(0.82));
+  // "decimal" before thousand is a misheard verb, not a decimal point
+  auto n = num("nine decimal four thousand");
+  CHECK(n.value == 9);
+}
+
+TEST_CASE("lexer: glued units, ids, possessives, quotes, degrees") {
+  auto t = lex("Climb AC01's altitude to 30k, FL250 and M.78 \"hello there\" 41,000 N52\xC2\xB0" "18.6'");
+  std::vector<std::string> words;
+  for (const auto& k : t) words.push_back(k.kind == TokKind::kNumber ? "#" : k.text);
+  CHECK(words == std::vector<std::string>{"climb", "ac01", "altitude", "to", "#", "k", ",", "fl", "#", "and",
+                                          "mach", "#", "hello there", "#", "#", "n"});
+  CHECK(t[1].raw == "AC01");
+  CHECK(t[13].num == 41000);
+  CHECK(t[14].num == doctest::Approx(52.31));
+  CHECK(lex("737-800")[0].text == "737-800");
+  CHECK(lex("thirty-one").size() == 2);
+  CHECK(lex("").empty());
+}
+
+TEST_CASE("quantities: units decide the kind") {
+  auto q = qty("flight level three five zero");
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].kind == QKind::kAlt);
+  CHECK(q[0].value == 35000);
+  CHECK(q[0].flight_level);
+
+  q = qty("30k ft");
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].kind == QKind::kAlt);
+  CHECK(q[0].value == 30000);
+
+  q = qty("M.78");
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].kind == QKind::kMach);
+  CHECK(q[0].value == doctest::Approx(0.78));
+
+  q = qty("mach point seven eight");
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].kind == QKind::kMach);
+  CHECK(q[0].value == doctest::Approx(0.78));
+
+  q = qty("250 kts 1500 fpm 2000 feet per minute");
+  REQUIRE(q.size() == 3);
+  CHECK(q[0].kind == QKind::kSpeed);
+  CHECK(q[1].kind == QKind::kVs);
+  CHECK(q[2].kind == QKind::kVs);
+  CHECK(q[2].value == 2000);
+
+  q = qty("3000 m");
+  REQUIRE(q.size() == 1);
+  CHECK(q[0].kind == QKind::kAlt);
+  CHECK(q[0].value == 9800);  // metres converted and rounded to 100 ft
+
+  q = qty("10 minutes 0.5 s 2.5 NM 10% 5x");
+  REQUIRE(q.size() == 5);
+  CHECK(q[0].kind == QKind::kTime);
+  CHECK(q[0].value == 600);
+  CHECK(q[1].kind == QKind::kTime);
+  CHECK(q[2].kind == QKind::kDist);
+  CHECK(q[3].kind == QKind::kPercent);
+  CHECK(q[4].kind == QKind::kMult);
+}
+
+TEST_CASE("quantities: latitude and longitude forms") {
+  auto q = qty("52 deg 18 min N, 4 deg 45 min E");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].kind == QKind::kLat);
+  CHECK(q[0].value == doctest::Approx(52.3));
+  CHECK(q[1].kind == QKind::kLon);
+  CHECK(q[1].value == doctest::Approx(4.75));
+
+  q = qty("N52.3 E4.76");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].kind == QKind::kLat);
+  CHECK(q[0].value == doctest::Approx(52.3));
+  CHECK(q[1].kind == QKind::kLon);
+  CHECK(q[1].value == doctest::Approx(4.76));
+
+  q = qty("33.95 S 151.18 E");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].value == doctest::Approx(-33.95));
+
+  q = qty("40.5 south 60 west");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].value == doctest::Approx(-40.5));
+  CHECK(q[1].value == doctest::Approx(-60));
+
+  q = qty("51 degrees 30 minutes north, 0 degrees 7 minutes west");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].value == doctest::Approx(51.5));
+  CHECK(q[1].value == doctest::Approx(-7.0 / 60.0));
+
+  q = qty("N52\xC2\xB0" "18.6' E004\xC2\xB0" "45.8'");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].kind == QKind::kLat);
+  CHECK(q[1].kind == QKind::kLon);
+  CHECK(q[1].value == doctest::Approx(4.763333).epsilon(1e-5));
+}

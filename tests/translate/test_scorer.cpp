@@ -1,0 +1,80 @@
+// Corpus scoring rules (shared/corpora/README.md) and the evaluator.
+#include <doctest/doctest.h>
+
+#include "translate/corpus.h"
+#include "translate/scorer.h"
+
+using namespace squawk::translate;
+
+TEST_CASE("aliases fold and names ignore case") {
+  CHECK(canonical_command("turn") == "HDG");
+  CHECK(canonical_command("Heading") == "HDG");
+  CHECK(canonical_command("create") == "CRE");
+  CHECK(canonical_command("dct") == "DIRECT");
+  CHECK(canonical_command("pause") == "HOLD");
+  CHECK(canonical_command("cdmethod") == "ASAS");
+  CHECK(same_command("heading klm123 90", "HDG KLM123 090"));
+  CHECK_FALSE(same_command("HDG KLM123 90", "HDG KLM124 90"));
+}
+
+TEST_CASE("altitudes compare in feet within 50 ft") {
+  CHECK(same_command("ALT KL1 FL300", "ALT KL1 30000"));
+  CHECK(same_command("ALT KL1 30040", "ALT KL1 FL300"));
+  CHECK_FALSE(same_command("ALT KL1 30060", "ALT KL1 FL300"));
+  CHECK(same_command("ALT KL1 FL90", "ALT KL1 9000"));
+}
+
+TEST_CASE("speeds: knots or Mach, never mixed") {
+  CHECK(same_command("SPD KL1 M0.78", "SPD KL1 .78"));
+  CHECK(same_command("SPD KL1 0.78", "SPD KL1 M0.78"));
+  CHECK_FALSE(same_command("SPD KL1 250", "SPD KL1 M0.78"));
+  CHECK_FALSE(same_command("SPD KL1 251", "SPD KL1 250"));
+}
+
+TEST_CASE("headings modulo 360, positions within 1e-3 degree") {
+  CHECK(same_command("HDG KL1 360", "HDG KL1 0"));
+  CHECK(same_command("HDG KL1 359.7", "HDG KL1 0"));
+  CHECK_FALSE(same_command("HDG KL1 358", "HDG KL1 0"));
+  CHECK(same_command("DEFWPT X 51.5 -0.1167", "DEFWPT X 51.5 -0.116667"));
+  CHECK_FALSE(same_command("DEFWPT X 51.5 -0.118", "DEFWPT X 51.5 -0.116667"));
+  CHECK(same_command("CRE A B738 52 4 90 FL250 280", "CRE A B738 52.0 4.0 090 25000 280"));
+}
+
+TEST_CASE("conditionals compare the condition and the nested command") {
+  CHECK(same_command("ATALT AC01 20000 SPD AC01 280", "ATALT AC01 FL200 SPD AC01 280"));
+  CHECK_FALSE(same_command("ATALT AC01 20000 SPD AC01 290", "ATALT AC01 FL200 SPD AC01 280"));
+  CHECK(same_command("ECHO hello World", "ECHO Hello world"));
+}
+
+TEST_CASE("lists, alternatives and ASK") {
+  CHECK(score_case("DEL AC02 ; DEL AC01", false, "DEL AC01 ; DEL AC02 || DEL AC02 ; DEL AC01"));
+  CHECK_FALSE(score_case("DEL AC01", false, "DEL AC01 ; DEL AC02"));
+  CHECK(score_case("", true, "ASK"));
+  CHECK_FALSE(score_case("ALT AC01 FL100", false, "ASK"));
+  CHECK_FALSE(score_case("ALT AC01 FL100", true, "ALT AC01 FL100"));
+  CHECK(split_commands(" A ; ; B ") == std::vector<std::string>{"A", "B"});
+}
+
+TEST_CASE("corpus reading and per-category evaluation") {
+  const std::string tsv =
+      "id\tsetup\tutterance\texpected\tcategory\n"
+      "a1\tCRE AC01 A320 52 4 90 FL250 280\tClimb AC01 by 2000 feet\tALT AC01 27000\trelative\n"
+      "a2\t\tChange the speed\tASK\task\n"
+      "a3\t\tPause the simulation\tOP\tsim\n";
+  auto cases = parse_corpus(tsv, "mem");
+  REQUIRE(cases.is_ok());
+  REQUIRE(cases->size() == 3);
+  auto r = evaluate(*cases, translate_case_offline);
+  CHECK(r.cases == 3);
+  CHECK(r.correct == 2);
+  REQUIRE(r.categories.size() == 3);
+  CHECK(r.categories[2].category == "sim");
+  CHECK(r.categories[2].correct == 0);
+  CHECK(format_report(r, "t").find("overall") != std::string::npos);
+  auto bad = parse_corpus("h\nonly\ttwo\n", "mem");
+  CHECK_FALSE(bad.is_ok());
+  CHECK(bad.status().message().find("mem:2") != std::string::npos);
+  auto err = evaluate({{"b1", "CRE", "Delete it", "DEL X", "delete"}}, translate_case_offline);
+  CHECK(err.correct == 0);
+  CHECK(err.outcomes[0].produced.rfind("error:", 0) == 0);
+}
