@@ -39,7 +39,9 @@ struct Rel {
 inline Rel relative(double lat_i, double lon_i, double chl_i, double shl_i, double u_i, double v_i,
                     double lat_j, double lon_j, double chl_j, double shl_j, double u_j, double v_j) {
   double dlon = lon_j - lon_i;
-  dlon = dlon >= 180.0 ? dlon - 360.0 : (dlon < -180.0 ? dlon + 360.0 : dlon);
+  // Into [-180, 180) with selects, which keep the caller's loop vectorisable.
+  dlon = dlon >= 180.0 ? dlon - 360.0 : dlon;
+  dlon = dlon < -180.0 ? dlon + 360.0 : dlon;
   const double cavelat = chl_i * chl_j - shl_i * shl_j;
   Rel g;
   g.dx = kREarth * dlon * kDeg * cavelat;
@@ -93,8 +95,8 @@ void ConflictDetector::detect(const Traffic& t, const CdSettings& s) {
       const Rel g = relative(lat_i, lon_i, chl_i, shl_i, u_i, v_i, lat[j], lon[j], chl[j], shl[j], ue[j], vn[j]);
       const double dd = g.du * g.dx + g.dv * g.dy;
       const bool hor = std::fabs(g.dist2 * g.dv2 - dd * dd) < r2 * g.dv2;
-      const bool never_vert = vs[j] == vs_i && std::fabs(alt_i - alt[j]) >= h;
-      flag[j] = hor && !never_vert;
+      const bool never_vert = (vs[j] == vs_i) & (std::fabs(alt_i - alt[j]) >= h);
+      flag[j] = static_cast<uint8_t>(hor & !never_vert);
     }
     // Pass 2: full state-based test of the candidates.
     for (int j = i + 1; j < n; ++j) {
