@@ -291,6 +291,18 @@ Status check_ids(std::span<const int> ids, int V) {
 
 }  // namespace
 
+Status Model::lm_logits(std::span<const float> hidden, std::vector<float>& out) const {
+  const int C = config().n_embd, V = config().vocab_size;
+  if (hidden.size() % C != 0)
+    return Status::invalid("gpt2: hidden holds " + str(static_cast<long long>(hidden.size())) +
+                           " floats, not a multiple of C = " + str(C));
+  const int B = static_cast<int>(hidden.size() / C);
+  out.resize(static_cast<size_t>(B) * V);
+  nn::gemm(false, true, B, V, C, 1.0f, hidden.data(), C, params_.data() + layout_.wte(), C, 0.0f,
+           out.data(), V);
+  return Status::ok();
+}
+
 Status Model::head_logits(std::span<const float> hidden, std::span<const int> ids,
                           std::vector<float>& out) const {
   const int C = config().n_embd;

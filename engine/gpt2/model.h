@@ -62,6 +62,8 @@ class Model {
                       std::vector<float>& hidden) const;
   // LM logits of every position of one sequence without cache [T, V].
   Status logits_all(std::span<const int> tokens, std::vector<float>& logits) const;
+  // LM-head logits over the whole vocabulary: out [B, V] = hidden [B, C] @ wte^T.
+  Status lm_logits(std::span<const float> hidden, std::vector<float>& out) const;
   // LM-head logits of chosen token ids: out[b, j] = hidden[b] . wte[ids[j]],
   // hidden [B, C], out [B, n]. Ids must be in range (checked).
   Status head_logits(std::span<const float> hidden, std::span<const int> ids,

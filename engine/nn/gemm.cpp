@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <string_view>
 
 #include <Eigen/Core>
 
@@ -26,6 +27,9 @@ constexpr int kCblasRowMajor = 101, kCblasNoTrans = 111, kCblasTrans = 112;
 std::atomic<int64_t> g_flops{0};
 std::atomic<int64_t> g_nanos{0};
 int g_threads = 1;
+bool g_use_blas = true;
+
+bool blas() { return g_use_blas && cblas_sgemm; }
 
 using RowMat = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using ConstMap = Eigen::Map<const RowMat, 0, Eigen::OuterStride<>>;
@@ -53,7 +57,7 @@ void gemm(bool trans_a, bool trans_b, int m, int n, int k, float alpha, const fl
   if (k <= 0) {
     for (int i = 0; i < m; ++i)
       for (int j = 0; j < n; ++j) c[static_cast<int64_t>(i) * ldc + j] *= beta;
-  } else if (cblas_sgemm) {
+  } else if (blas()) {
     cblas_sgemm(kCblasRowMajor, trans_a ? kCblasTrans : kCblasNoTrans,
                 trans_b ? kCblasTrans : kCblasNoTrans, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
   } else {
@@ -80,14 +84,22 @@ void gemm_ref(bool trans_a, bool trans_b, int m, int n, int k, float alpha, cons
   }
 }
 
-const char* gemm_backend() { return cblas_sgemm ? "openblas" : "eigen"; }
+const char* gemm_backend() { return blas() ? "openblas" : "eigen"; }
+
+bool set_gemm_backend(const char* name) {
+  const std::string_view n = name;
+  if (n == "eigen") g_use_blas = false;
+  else if (n == "openblas" && cblas_sgemm) g_use_blas = true;
+  else return false;
+  return true;
+}
 
 void set_num_threads(int n) {
   g_threads = std::max(1, n);
   if (openblas_set_num_threads) openblas_set_num_threads(g_threads);
 }
 
-int num_threads() { return cblas_sgemm ? g_threads : 1; }
+int num_threads() { return blas() ? g_threads : 1; }
 
 GemmStats gemm_stats() {
   return {g_flops.load(), static_cast<double>(g_nanos.load()) * 1e-9};

@@ -20,8 +20,11 @@ void gemm(bool trans_a, bool trans_b, int m, int n, int k, float alpha, const fl
 void gemm_ref(bool trans_a, bool trans_b, int m, int n, int k, float alpha, const float* a, int lda,
               const float* b, int ldb, float beta, float* c, int ldc);
 
-// "openblas" or "eigen".
+// "openblas" or "eigen": the backend gemm() uses now.
 const char* gemm_backend();
+// Selects the backend by name; false (and no change) for "openblas" when the
+// executable does not link it, or for an unknown name.
+bool set_gemm_backend(const char* name);
 // Threads the gemm backend may use (OpenBLAS only; Eigen runs on one).
 void set_num_threads(int n);
 int num_threads();

@@ -1,0 +1,245 @@
+// squawk gpt2 info | generate | logits | bench | train-bpe.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli.h"
+#include "app/subcommands.h"
+#include "core/files.h"
+#include "core/rng.h"
+#include "core/text.h"
+#include "gpt2/benchmark.h"
+#include "gpt2/bpe.h"
+#include "gpt2/checkpoint.h"
+#include "gpt2/model.h"
+#include "nn/gemm.h"
+
+namespace squawk::app {
+
+namespace {
+
+struct Loaded {
+  gpt2::Model model;
+  std::optional<gpt2::Tokenizer> tokenizer;
+  std::string source;
+};
+
+// DIR is a Hugging Face GPT-2 folder or the word `tiny` (the seeded random
+// tiny model with the byte-level vocabulary).
+Result<Loaded> load(const std::string& dir, uint64_t seed) {
+  if (dir == "tiny") {
+    SQUAWK_ASSIGN_OR_RETURN(gpt2::Model m, gpt2::Model::create(gpt2::Config::tiny()));
+    Rng rng(seed);
+    m.init_random(rng);
+    return Loaded{std::move(m), gpt2::Tokenizer::bytes_only(),
+                  "tiny (random, seed " + std::to_string(seed) + ")"};
+  }
+  SQUAWK_ASSIGN_OR_RETURN(gpt2::Model m, gpt2::load_model(dir));
+  Loaded l{std::move(m), std::nullopt, dir};
+  if (files::exists(dir + "/vocab.json")) {
+    SQUAWK_ASSIGN_OR_RETURN(gpt2::Tokenizer t, gpt2::Tokenizer::load(dir));
+    l.tokenizer = std::move(t);
+  } else if (l.model.config().vocab_size == 257) {
+    l.tokenizer = gpt2::Tokenizer::bytes_only();
+  }
+  return l;
+}
+
+Result<const gpt2::Tokenizer*> tokenizer_of(const Loaded& l) {
+  if (!l.tokenizer)
+    return Status::not_found(l.source + ": no vocab.json/merges.txt (and the vocabulary of " +
+                             std::to_string(l.model.config().vocab_size) +
+                             " is not the byte-level 257)");
+  if (l.tokenizer->vocab_size() > l.model.config().vocab_size)
+    return Status::invalid(l.source + ": the tokenizer has " +
+                           std::to_string(l.tokenizer->vocab_size()) + " tokens, the model " +
+                           std::to_string(l.model.config().vocab_size));
+  return &*l.tokenizer;
+}
+
+int info(const Args& a) {
+  if (a.positional().size() != 2) return usage_error("gpt2", "info expects DIR");
+  auto l = load(a.positional()[1], static_cast<uint64_t>(a.get_int("--seed", 0).value_or(0)));
+  if (!l) return failure(l.status());
+  const gpt2::Config& c = l->model.config();
+  std::printf("model       %s\n", l->source.c_str());
+  std::printf("layers      %d\nheads       %d\nwidth       %d\ncontext     %d\nvocabulary  %d\n",
+              c.n_layer, c.n_head, c.n_embd, c.n_ctx, c.vocab_size);
+  std::printf("parameters  %lld (%.1f MB as float32)\n", c.num_params(),
+              static_cast<double>(c.num_params()) * 4e-6);
+  if (l->tokenizer)
+    std::printf("tokenizer   %d tokens, %zu merges%s\n", l->tokenizer->vocab_size(),
+                l->tokenizer->num_merges(), l->tokenizer->eot() ? ", <|endoftext|>" : "");
+  else
+    std::printf("tokenizer   none\n");
+  std::printf("gemm        %s\n", nn::gemm_backend());
+  return kExitOk;
+}
+
+// Samples from the top-k logits at temperature 1 (k = 1: greedy).
+int sample_top_k(const std::vector<float>& logits, int k, Rng& rng) {
+  std::vector<int> idx(logits.size());
+  for (size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
+  k = std::max(1, std::min(k, static_cast<int>(idx.size())));
+  std::partial_sort(idx.begin(), idx.begin() + k, idx.end(),
+                    [&](int x, int y) { return logits[x] > logits[y]; });
+  std::vector<double> p(k);
+  double sum = 0.0;
+  for (int i = 0; i < k; ++i) sum += p[i] = std::exp(static_cast<double>(logits[idx[i]] - logits[idx[0]]));
+  double u = rng.uniform() * sum;
+  for (int i = 0; i < k; ++i)
+    if ((u -= p[i]) <= 0) return idx[i];
+  return idx[k - 1];
+}
+
+int generate(const Args& a) {
+  if (a.positional().size() != 3) return usage_error("gpt2", "generate expects DIR \"prompt\"");
+  auto max_tokens = a.get_int("--max-tokens", 32);
+  auto top_k = a.get_int("--top-k", 40);
+  auto seed = a.get_int("--seed", 0);
+  if (!max_tokens || !top_k || !seed)
+    return usage_error("gpt2", (!max_tokens ? max_tokens.status() : !top_k ? top_k.status() : seed.status()).message());
+  if (*max_tokens < 0 || *top_k < 1) return usage_error("gpt2", "--max-tokens must be >= 0 and --top-k >= 1");
+  auto l = load(a.positional()[1], static_cast<uint64_t>(*seed));
+  if (!l) return failure(l.status());
+  auto tok = tokenizer_of(*l);
+  if (!tok) return failure(tok.status());
+  auto ids = (*tok)->encode(a.positional()[2]);
+  if (!ids) return failure(ids.status());
+  if (ids->empty()) {
+    if (!(*tok)->eot()) return failure(Status::invalid("empty prompt and no <|endoftext|> token to start from"));
+    ids->push_back(*(*tok)->eot());
+  }
+  const gpt2::Model& m = l->model;
+  gpt2::PrefixCache cache;
+  std::vector<float> hidden, logits;
+  Status st = m.extend(cache, *ids, &hidden);
+  if (!st.is_ok()) return failure(st);
+  Rng rng(static_cast<uint64_t>(*seed));
+  std::fputs(a.positional()[2].c_str(), stdout);
+  for (long long i = 0; i < *max_tokens && cache.len < m.config().n_ctx; ++i) {
+    st = m.lm_logits(hidden, logits);
+    if (!st.is_ok()) return failure(st);
+    const int next = sample_top_k(logits, static_cast<int>(*top_k), rng);
+    if ((*tok)->eot() && next == *(*tok)->eot()) break;
+    auto piece = (*tok)->decode(std::vector<int>{next});
+    if (!piece) return failure(piece.status());
+    std::fputs(piece->c_str(), stdout);
+    std::fflush(stdout);
+    st = m.extend(cache, std::vector<int>{next}, &hidden);
+    if (!st.is_ok()) return failure(st);
+  }
+  std::fputs("\n", stdout);
+  return kExitOk;
+}
+
+int logits(const Args& a) {
+  if (a.positional().size() != 3) return usage_error("gpt2", "logits expects DIR \"text\"");
+  auto l = load(a.positional()[1], static_cast<uint64_t>(a.get_int("--seed", 0).value_or(0)));
+  if (!l) return failure(l.status());
+  auto tok = tokenizer_of(*l);
+  if (!tok) return failure(tok.status());
+  auto ids = (*tok)->encode(a.positional()[2]);
+  if (!ids) return failure(ids.status());
+  if (ids->empty()) return failure(Status::invalid("the text encodes to no tokens"));
+  std::vector<float> hidden, out;
+  Status st = l->model.forward_last({}, {*ids}, hidden);
+  if (st.is_ok()) st = l->model.lm_logits(hidden, out);
+  if (!st.is_ok()) return failure(st);
+  if (a.has("--json")) {
+    nlohmann::json j = {{"tokens", *ids}, {"logits", out}};
+    std::printf("%s\n", j.dump().c_str());
+    return kExitOk;
+  }
+  std::printf("tokens (%zu):", ids->size());
+  for (int id : *ids) std::printf(" %d", id);
+  std::printf("\ntop logits at the last position:\n");
+  std::vector<int> idx(out.size());
+  for (size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
+  const size_t k = std::min<size_t>(10, idx.size());
+  std::partial_sort(idx.begin(), idx.begin() + static_cast<long>(k), idx.end(),
+                    [&](int x, int y) { return out[x] > out[y]; });
+  for (size_t i = 0; i < k; ++i) {
+    auto piece = (*tok)->decode(std::vector<int>{idx[i]});
+    std::printf("  %6d %10.4f  %s\n", idx[i], out[idx[i]], piece ? text::quoted(*piece).c_str() : "?");
+  }
+  return kExitOk;
+}
+
+Result<std::vector<int>> int_list(const std::string& s, const char* flag) {
+  std::vector<int> out;
+  for (const auto& part : text::split(s, ',')) {
+    auto v = text::to_int(part);
+    if (!v || *v < 1 || *v > 4096)
+      return Status::invalid(std::string("flag ") + flag + " expects comma-separated integers in 1..4096, got " + text::quoted(s));
+    out.push_back(static_cast<int>(*v));
+  }
+  return out;
+}
+
+int bench(const Args& a) {
+  gpt2::BenchOptions opt;
+  if (a.has("--tiny")) opt.cfg = gpt2::Config::tiny();
+  auto T = a.get_int("--seq", opt.T);
+  if (!T) return usage_error("gpt2", T.status().message());
+  opt.T = static_cast<int>(*T);
+  if (auto v = a.get("--batch")) {
+    auto b = int_list(*v, "--batch");
+    if (!b) return usage_error("gpt2", b.status().message());
+    opt.batches = *b;
+  }
+  if (auto v = a.get("--threads")) {
+    auto t = int_list(*v, "--threads");
+    if (!t) return usage_error("gpt2", t.status().message());
+    opt.threads = *t;
+  }
+  auto secs = a.get_double("--seconds", opt.min_seconds);
+  if (!secs) return usage_error("gpt2", secs.status().message());
+  opt.min_seconds = *secs;
+  auto rep = gpt2::run_benchmark(opt);
+  if (!rep) return failure(rep.status());
+  if (a.has("--json")) std::printf("%s\n", gpt2::bench_json(*rep, opt).c_str());
+  else std::fputs(gpt2::bench_table(*rep, opt).c_str(), stdout);
+  return kExitOk;
+}
+
+int train_bpe(const Args& a) {
+  if (a.positional().size() < 3) return usage_error("gpt2", "train-bpe expects OUT_DIR FILE...");
+  auto merges = a.get_int("--merges", 256);
+  if (!merges || *merges < 0 || *merges > 100000)
+    return usage_error("gpt2", "--merges expects an integer in 0..100000");
+  std::string corpus;
+  for (size_t i = 2; i < a.positional().size(); ++i) {
+    auto t = files::read(a.positional()[i]);
+    if (!t) return failure(t.status());
+    corpus.append(*t).append("\n");
+  }
+  const gpt2::Tokenizer tok = gpt2::Tokenizer::train(corpus, static_cast<int>(*merges));
+  Status st = tok.save(a.positional()[1]);
+  if (!st.is_ok()) return failure(st);
+  std::printf("wrote %s/vocab.json (%d tokens) and merges.txt (%zu merges)\n",
+              a.positional()[1].c_str(), tok.vocab_size(), tok.num_merges());
+  return kExitOk;
+}
+
+}  // namespace
+
+int cmd_gpt2(const ArgV& argv) {
+  auto a = Args::parse(argv, {{"--max-tokens", "--top-k", "--seed", "--seq", "--batch", "--threads",
+                               "--seconds", "--merges"},
+                              {"--json", "--tiny"}});
+  if (!a) return usage_error("gpt2", a.status().message());
+  if (a->positional().empty()) return usage_error("gpt2", "missing action (info, generate, logits, bench, train-bpe)");
+  const std::string& what = a->positional()[0];
+  if (what == "info") return info(*a);
+  if (what == "generate") return generate(*a);
+  if (what == "logits") return logits(*a);
+  if (what == "bench") return bench(*a);
+  if (what == "train-bpe") return train_bpe(*a);
+  return usage_error("gpt2", "unknown action " + text::quoted(what));
+}
+
+}  // namespace squawk::app
