@@ -9,7 +9,8 @@
 //   tLOS = max(tin_hor, tin_ver), conflict when dcpa < R, tin <= tout,
 //   tout > 0 and tLOS < dtlook. Loss of separation: dist < R and |dalt| < H.
 // The geometry is symmetric, so each unordered pair is computed once and
-// reported in both orders, as BlueSky's confpairs are.
+// reported in both orders, as BlueSky's confpairs are. rpz, hpz and dtlook
+// are global (BlueSky's per-aircraft ZONER/ZONEDH values are not modelled).
 //
 // Cost: O(n^2) per detect() with no trig per pair (cos of the mean latitude
 // comes from per-aircraft half-angle sines/cosines) and no allocation once

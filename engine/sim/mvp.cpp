@@ -107,7 +107,12 @@ void MvpResolver::resolve(Traffic& t, const ConflictDetector& cd, const CdSettin
     std::sort(reso_pairs_.begin(), reso_pairs_.end());
     reso_pairs_.erase(std::unique(reso_pairs_.begin(), reso_pairs_.end()), reso_pairs_.end());
   }
-  if (crs.resume) resume(t, cds, crs);
+  if (crs.resume) {
+    resume(t, cds, crs);
+  } else {  // without PASTCPA an aircraft follows MVP exactly while in conflict
+    for (int i = 0; i < n; ++i) t.cr_active[i] = cd.inconf()[i];
+    reso_pairs_.clear();
+  }
 }
 
 // PASTCPA (facts §3.3, "Which values the aircraft follows").

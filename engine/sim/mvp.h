@@ -20,6 +20,7 @@
 // left, cr_active is cleared and, if its route has an active waypoint, LNAV
 // resumes DIRECT to it; otherwise it returns to its selected heading and speed.
 // The track difference of the bouncing test is wrapped to (-180, 180].
+// With `resume` off (RESNAV OFF), cr_active simply follows "in conflict now".
 #pragma once
 
 #include <cstdint>

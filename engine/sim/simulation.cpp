@@ -596,6 +596,7 @@ Status Simulation::set_resofacv(double f) {
   return Status::ok();
 }
 void Simulation::set_reso_vertical(bool on) { crs_.vertical = on; }
+void Simulation::set_reso_resume(bool on) { crs_.resume = on; }
 
 Status Simulation::set_performance_options(const PerformanceOptions& o) {
   SQUAWK_RETURN_IF_ERROR(check_positive("PERF", "ground_alt", o.ground_alt));

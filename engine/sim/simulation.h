@@ -160,6 +160,8 @@ class Simulation {
   Status set_resofach(double f);  // >= 1
   Status set_resofacv(double f);  // >= 1
   void set_reso_vertical(bool on);
+  // RESNAV PASTCPA|OFF (on by default).
+  void set_reso_resume(bool on);
   const ConflictDetector& cd() const { return cd_; }
   const MvpResolver& cr() const { return cr_; }
   const std::vector<ConflictPair>& conflicts() const { return cd_.pairs(); }

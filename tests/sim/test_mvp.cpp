@@ -98,3 +98,23 @@ TEST_CASE("switching ASAS off clears pairs and resolutions") {
   CHECK(sim.traffic().cr_active[0] == 0);
   CHECK(sim.cr().reso_pairs().empty());
 }
+
+TEST_CASE("without PASTCPA, resolution is flown only while a conflict is detected") {
+  Simulation sim = head_on(true);
+  CHECK(sim.cr_settings().resume);
+  sim.set_reso_resume(false);
+  int releases = 0;
+  uint8_t prev = 0;
+  for (int k = 0; k < 20 * 300; ++k) {
+    sim.step();
+    const uint8_t now = sim.traffic().cr_active[0];
+    CHECK(now == sim.cd().inconf()[0]);
+    releases += prev && !now;
+    prev = now;
+  }
+  // Once the new velocity clears the conflict the aircraft turns back, which
+  // re-creates it: the release happens before CPA (BlueSky's chatter with
+  // RESNAV OFF).
+  CHECK(releases >= 1);
+  CHECK(sim.cr().reso_pairs().empty());
+}
