@@ -221,3 +221,44 @@ TEST_CASE("LoS and cumulative counts follow pairs in and out of conflict") {
   REQUIRE(sim.remove("A").is_ok());
   CHECK(sim.traffic().index_of("B") == 0);
 }
+
+TEST_CASE("detection runs every asas_dt of sim time, and on every step when asas_dt <= dt") {
+  Simulation sim;
+  sim.set_cd(true);
+  REQUIRE(sim.create("A", "A320", 52.0, 4.0, 90.0, 3000.0, 150.0).is_ok());
+  REQUIRE(sim.create("B", "A320", 52.0, 4.5, 270.0, 3000.0, 150.0).is_ok());
+  sim.step();  // detection at t = 0
+  REQUIRE(sim.conflicts().size() == 2);
+  const double d0 = sim.conflicts()[0].dist;
+  REQUIRE(sim.run_until(0.96).is_ok());  // steps starting at 0.05 .. 0.90: no detection
+  CHECK(sim.conflicts()[0].dist == d0);
+  sim.step();  // starts at t = 0.95 (< 1 s): still none
+  CHECK(sim.conflicts()[0].dist == d0);
+  sim.step();  // starts at t = 1.0: detection on the state at 1.0
+  const double closing = sim.traffic().tas[0] + sim.traffic().tas[1];
+  CHECK(sim.conflicts()[0].dist == doctest::Approx(d0 - closing * 1.0).epsilon(1e-6));
+  REQUIRE(sim.set_asas_dt(0.01).is_ok());
+  const double d1 = sim.conflicts()[0].dist;
+  sim.step();
+  sim.step();
+  CHECK(sim.conflicts()[0].dist == doctest::Approx(d1 - closing * 0.1).epsilon(1e-6));
+}
+
+TEST_CASE("deleting an aircraft re-indexes the current pairs") {
+  Simulation sim;
+  sim.set_cd(true);
+  REQUIRE(sim.create("A", "A320", 52.0, 4.0, 90.0, 3000.0, 150.0).is_ok());
+  REQUIRE(sim.create("X", "A320", 10.0, 4.0, 0.0, 3000.0, 150.0).is_ok());  // far away
+  REQUIRE(sim.create("B", "A320", 52.0, 4.5, 270.0, 3000.0, 150.0).is_ok());
+  sim.step();
+  REQUIRE(sim.conflicts().size() == 2);
+  CHECK(sim.conflicts()[0].intruder == 2);
+  REQUIRE(sim.remove("X").is_ok());
+  REQUIRE(sim.conflicts().size() == 2);
+  CHECK(sim.conflicts()[0].own == 0);
+  CHECK(sim.conflicts()[0].intruder == 1);
+  CHECK(sim.cd().inconf().size() == 2);
+  REQUIRE(sim.remove("A").is_ok());
+  CHECK(sim.conflicts().empty());
+  sim.step();
+}
