@@ -2,6 +2,10 @@
 
 namespace squawk::script {
 
-void bind_all(lua_State* L) { bind_core(L); }
+void bind_all(lua_State* L) {
+  bind_core(L);
+  bind_llm(L);
+  bind_rag(L);
+}
 
 }  // namespace squawk::script
