@@ -9,27 +9,24 @@
 
 #include <Eigen/Core>
 
-// OpenBLAS entry points, weak so that a build without BLAS links and falls
-// back to Eigen (the pointers are then null).
-extern "C" {
-void cblas_sgemm(int order, int trans_a, int trans_b, int m, int n, int k, float alpha,
-                 const float* a, int lda, const float* b, int ldb, float beta, float* c, int ldc)
-    __attribute__((weak));
-void openblas_set_num_threads(int n) __attribute__((weak));
-}
+#ifdef SQUAWK_HAVE_BLAS
+#include <cblas.h>
+#endif
 
 namespace squawk::nn {
 
 namespace {
 
-constexpr int kCblasRowMajor = 101, kCblasNoTrans = 111, kCblasTrans = 112;
-
 std::atomic<int64_t> g_flops{0};
 std::atomic<int64_t> g_nanos{0};
-int g_threads = 1;
-bool g_use_blas = true;
+#ifdef SQUAWK_HAVE_BLAS
+constexpr bool kHaveBlas = true;
+#else
+constexpr bool kHaveBlas = false;
+#endif
+bool g_use_blas = kHaveBlas;
 
-bool blas() { return g_use_blas && cblas_sgemm; }
+bool blas() { return g_use_blas; }
 
 using RowMat = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using ConstMap = Eigen::Map<const RowMat, 0, Eigen::OuterStride<>>;
@@ -57,9 +54,11 @@ void gemm(bool trans_a, bool trans_b, int m, int n, int k, float alpha, const fl
   if (k <= 0) {
     for (int i = 0; i < m; ++i)
       for (int j = 0; j < n; ++j) c[static_cast<int64_t>(i) * ldc + j] *= beta;
+#ifdef SQUAWK_HAVE_BLAS
   } else if (blas()) {
-    cblas_sgemm(kCblasRowMajor, trans_a ? kCblasTrans : kCblasNoTrans,
-                trans_b ? kCblasTrans : kCblasNoTrans, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+    cblas_sgemm(CblasRowMajor, trans_a ? CblasTrans : CblasNoTrans, trans_b ? CblasTrans : CblasNoTrans,
+                m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+#endif
   } else {
     gemm_eigen(trans_a, trans_b, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
   }
@@ -89,17 +88,25 @@ const char* gemm_backend() { return blas() ? "openblas" : "eigen"; }
 bool set_gemm_backend(const char* name) {
   const std::string_view n = name;
   if (n == "eigen") g_use_blas = false;
-  else if (n == "openblas" && cblas_sgemm) g_use_blas = true;
+  else if (n == "openblas" && kHaveBlas) g_use_blas = true;
   else return false;
   return true;
 }
 
 void set_num_threads(int n) {
-  g_threads = std::max(1, n);
-  if (openblas_set_num_threads) openblas_set_num_threads(g_threads);
+#ifdef OPENBLAS_VERSION
+  openblas_set_num_threads(std::max(1, n));
+#else
+  (void)n;
+#endif
 }
 
-int num_threads() { return blas() ? g_threads : 1; }
+int num_threads() {
+#ifdef OPENBLAS_VERSION
+  if (blas()) return openblas_get_num_threads();
+#endif
+  return 1;
+}
 
 GemmStats gemm_stats() {
   return {g_flops.load(), static_cast<double>(g_nanos.load()) * 1e-9};

@@ -1,9 +1,9 @@
 // Row-major single-precision matrix products, the one place squawk calls BLAS.
 //
-// Backend: OpenBLAS's cblas_sgemm when the executable links it (squawk_nn links
-// BLAS_LIBRARIES when CMake finds them), else Eigen. OpenBLAS was measured
-// faster on this project's AVX-512 machine (about 155 vs 135 GFLOP/s on one
-// core for 2048^3) and it threads by itself; Eigen needs OpenMP for that.
+// Backend: OpenBLAS's cblas_sgemm when CMake found BLAS (SQUAWK_HAVE_BLAS),
+// else Eigen. OpenBLAS was measured faster on this project's AVX-512 machine
+// (about 155 vs 135 GFLOP/s on one core for 2048^3, unloaded) and threads by
+// itself; Eigen would need OpenMP for that. `squawk gpt2 bench` reports both.
 // All matrices are row-major with explicit leading dimensions (elements).
 #pragma once
 
@@ -25,7 +25,8 @@ const char* gemm_backend();
 // Selects the backend by name; false (and no change) for "openblas" when the
 // executable does not link it, or for an unknown name.
 bool set_gemm_backend(const char* name);
-// Threads the gemm backend may use (OpenBLAS only; Eigen runs on one).
+// Threads the gemm backend may use (OpenBLAS only, whose default is its
+// OPENBLAS_NUM_THREADS or every core; Eigen runs on one).
 void set_num_threads(int n);
 int num_threads();
 
