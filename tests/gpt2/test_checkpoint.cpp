@@ -238,3 +238,23 @@ TEST_CASE("checkpoint folders with wrong content are clear errors") {
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("fine-tuned weights with a head save and load back exactly") {
+  const std::vector<TensorSpec> extras = {{"head.weight", {8, 5}, 0, 0}, {"head.bias", {5}, 0, 0}};
+  auto m = Model::create(kCfg, extras);
+  REQUIRE(m.is_ok());
+  Rng rng(8);
+  m->init_random(rng, 0.5f);
+  REQUIRE(m->set_trainable_blocks(1).is_ok());
+  for (float& v : m->trainable_params()) v += static_cast<float>(rng.normal(0.0, 0.1));
+  const std::string dir = temp_dir("head");
+  REQUIRE(save_model(dir, *m).is_ok());
+  auto back = load_model(dir, extras);
+  REQUIRE_MESSAGE(back.is_ok(), back.status().message());
+  CHECK(std::equal(back->params().begin(), back->params().end(), m->params().begin()));
+  // The head's tensors are unknown to a model that does not declare them.
+  auto plain = load_model(dir);
+  REQUIRE_FALSE(plain.is_ok());
+  CHECK(has(plain.status().message(), "unexpected tensor 'head."));
+  std::filesystem::remove_all(dir);
+}

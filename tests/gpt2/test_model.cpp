@@ -127,6 +127,18 @@ TEST_CASE("KV-cached forward equals the full forward") {
     REQUIRE(model.head_logits(std::span<const float>(full.data(), kSmall.n_embd), ids, picked).is_ok());
     const size_t last = (whole[0].size() - 1) * kSmall.vocab_size;
     for (size_t j = 0; j < ids.size(); ++j) CHECK(picked[j] == doctest::Approx(all[last + ids[j]]).epsilon(1e-4));
+    // Its backward: d(sum_j w_j logit_j)/dhidden = sum_j w_j wte[ids_j].
+    const std::vector<float> w = {0.5f, -2.0f, 1.5f};
+    std::vector<float> dh(kSmall.n_embd, 0.0f);
+    REQUIRE(model.head_logits_backward(w, ids, dh).is_ok());
+    auto wte = model.tensor("wte.weight");
+    for (int c = 0; c < kSmall.n_embd; ++c) {
+      const float want = 0.5f * wte[c] - 2.0f * wte[17 * kSmall.n_embd + c] + 1.5f * wte[60 * kSmall.n_embd + c];
+      CHECK(dh[c] == doctest::Approx(want).epsilon(1e-5));
+    }
+    std::vector<float> lm;
+    REQUIRE(model.lm_logits(std::span<const float>(full.data(), kSmall.n_embd), lm).is_ok());
+    CHECK(lm[17] == doctest::Approx(all[last + 17]).epsilon(1e-4));
   }
 }
 
