@@ -1,68 +1,28 @@
 // squawk gpt2 info | generate | logits | bench | train-bpe.
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli.h"
 #include "app/subcommands.h"
 #include "core/files.h"
-#include "core/rng.h"
 #include "core/text.h"
 #include "gpt2/benchmark.h"
 #include "gpt2/bpe.h"
-#include "gpt2/checkpoint.h"
-#include "gpt2/model.h"
+#include "gpt2/bundle.h"
+#include "gpt2/generate.h"
 #include "nn/gemm.h"
 
 namespace squawk::app {
 
 namespace {
 
-struct Loaded {
-  gpt2::Model model;
-  std::optional<gpt2::Tokenizer> tokenizer;
-  std::string source;
-};
-
-// DIR is a Hugging Face GPT-2 folder or the word `tiny` (the seeded random
-// tiny model with the byte-level vocabulary).
-Result<Loaded> load(const std::string& dir, uint64_t seed) {
-  if (dir == "tiny") {
-    SQUAWK_ASSIGN_OR_RETURN(gpt2::Model m, gpt2::Model::create(gpt2::Config::tiny()));
-    Rng rng(seed);
-    m.init_random(rng);
-    return Loaded{std::move(m), gpt2::Tokenizer::bytes_only(),
-                  "tiny (random, seed " + std::to_string(seed) + ")"};
-  }
-  SQUAWK_ASSIGN_OR_RETURN(gpt2::Model m, gpt2::load_model(dir));
-  Loaded l{std::move(m), std::nullopt, dir};
-  if (files::exists(dir + "/vocab.json")) {
-    SQUAWK_ASSIGN_OR_RETURN(gpt2::Tokenizer t, gpt2::Tokenizer::load(dir));
-    l.tokenizer = std::move(t);
-  } else if (l.model.config().vocab_size == 257) {
-    l.tokenizer = gpt2::Tokenizer::bytes_only();
-  }
-  return l;
-}
-
-Result<const gpt2::Tokenizer*> tokenizer_of(const Loaded& l) {
-  if (!l.tokenizer)
-    return Status::not_found(l.source + ": no vocab.json/merges.txt (and the vocabulary of " +
-                             std::to_string(l.model.config().vocab_size) +
-                             " is not the byte-level 257)");
-  if (l.tokenizer->vocab_size() > l.model.config().vocab_size)
-    return Status::invalid(l.source + ": the tokenizer has " +
-                           std::to_string(l.tokenizer->vocab_size()) + " tokens, the model " +
-                           std::to_string(l.model.config().vocab_size));
-  return &*l.tokenizer;
-}
-
 int info(const Args& a) {
   if (a.positional().size() != 2) return usage_error("gpt2", "info expects DIR");
-  auto l = load(a.positional()[1], static_cast<uint64_t>(a.get_int("--seed", 0).value_or(0)));
+  auto seed = a.get_int("--seed", 0);
+  if (!seed) return usage_error("gpt2", seed.status().message());
+  auto l = gpt2::load_bundle(a.positional()[1], static_cast<uint64_t>(*seed));
   if (!l) return failure(l.status());
   const gpt2::Config& c = l->model.config();
   std::printf("model       %s\n", l->source.c_str());
@@ -79,68 +39,38 @@ int info(const Args& a) {
   return kExitOk;
 }
 
-// Samples from the top-k logits at temperature 1 (k = 1: greedy).
-int sample_top_k(const std::vector<float>& logits, int k, Rng& rng) {
-  std::vector<int> idx(logits.size());
-  for (size_t i = 0; i < idx.size(); ++i) idx[i] = static_cast<int>(i);
-  k = std::max(1, std::min(k, static_cast<int>(idx.size())));
-  std::partial_sort(idx.begin(), idx.begin() + k, idx.end(),
-                    [&](int x, int y) { return logits[x] > logits[y]; });
-  std::vector<double> p(k);
-  double sum = 0.0;
-  for (int i = 0; i < k; ++i) sum += p[i] = std::exp(static_cast<double>(logits[idx[i]] - logits[idx[0]]));
-  double u = rng.uniform() * sum;
-  for (int i = 0; i < k; ++i)
-    if ((u -= p[i]) <= 0) return idx[i];
-  return idx[k - 1];
-}
-
 int generate(const Args& a) {
   if (a.positional().size() != 3) return usage_error("gpt2", "generate expects DIR \"prompt\"");
   auto max_tokens = a.get_int("--max-tokens", 32);
   auto top_k = a.get_int("--top-k", 40);
   auto seed = a.get_int("--seed", 0);
-  if (!max_tokens || !top_k || !seed)
-    return usage_error("gpt2", (!max_tokens ? max_tokens.status() : !top_k ? top_k.status() : seed.status()).message());
-  if (*max_tokens < 0 || *top_k < 1) return usage_error("gpt2", "--max-tokens must be >= 0 and --top-k >= 1");
-  auto l = load(a.positional()[1], static_cast<uint64_t>(*seed));
-  if (!l) return failure(l.status());
-  auto tok = tokenizer_of(*l);
+  for (const auto* r : {&max_tokens, &top_k, &seed})
+    if (!*r) return usage_error("gpt2", r->status().message());
+  if (*max_tokens < 0 || *max_tokens > 1000000 || *top_k < 1 || *top_k > 1000000)
+    return usage_error("gpt2", "--max-tokens expects 0..1000000 and --top-k 1..1000000");
+  auto b = gpt2::load_bundle(a.positional()[1], static_cast<uint64_t>(*seed));
+  if (!b) return failure(b.status());
+  auto tok = b->text_tokenizer();
   if (!tok) return failure(tok.status());
-  auto ids = (*tok)->encode(a.positional()[2]);
-  if (!ids) return failure(ids.status());
-  if (ids->empty()) {
-    if (!(*tok)->eot()) return failure(Status::invalid("empty prompt and no <|endoftext|> token to start from"));
-    ids->push_back(*(*tok)->eot());
-  }
-  const gpt2::Model& m = l->model;
-  gpt2::PrefixCache cache;
-  std::vector<float> hidden, logits;
-  Status st = m.extend(cache, *ids, &hidden);
-  if (!st.is_ok()) return failure(st);
-  Rng rng(static_cast<uint64_t>(*seed));
+  const gpt2::GenerateOptions opt{static_cast<int>(*max_tokens), static_cast<int>(*top_k),
+                                  static_cast<uint64_t>(*seed)};
   std::fputs(a.positional()[2].c_str(), stdout);
-  for (long long i = 0; i < *max_tokens && cache.len < m.config().n_ctx; ++i) {
-    st = m.lm_logits(hidden, logits);
-    if (!st.is_ok()) return failure(st);
-    const int next = sample_top_k(logits, static_cast<int>(*top_k), rng);
-    if ((*tok)->eot() && next == *(*tok)->eot()) break;
-    auto piece = (*tok)->decode(std::vector<int>{next});
-    if (!piece) return failure(piece.status());
-    std::fputs(piece->c_str(), stdout);
+  auto out = gpt2::generate(b->model, **tok, a.positional()[2], opt, [](const std::string& piece) {
+    std::fputs(piece.c_str(), stdout);
     std::fflush(stdout);
-    st = m.extend(cache, std::vector<int>{next}, &hidden);
-    if (!st.is_ok()) return failure(st);
-  }
+  });
   std::fputs("\n", stdout);
+  if (!out) return failure(out.status());
   return kExitOk;
 }
 
 int logits(const Args& a) {
   if (a.positional().size() != 3) return usage_error("gpt2", "logits expects DIR \"text\"");
-  auto l = load(a.positional()[1], static_cast<uint64_t>(a.get_int("--seed", 0).value_or(0)));
+  auto seed = a.get_int("--seed", 0);
+  if (!seed) return usage_error("gpt2", seed.status().message());
+  auto l = gpt2::load_bundle(a.positional()[1], static_cast<uint64_t>(*seed));
   if (!l) return failure(l.status());
-  auto tok = tokenizer_of(*l);
+  auto tok = l->text_tokenizer();
   if (!tok) return failure(tok.status());
   auto ids = (*tok)->encode(a.positional()[2]);
   if (!ids) return failure(ids.status());
