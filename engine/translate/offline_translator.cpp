@@ -217,6 +217,8 @@ class Parser {
     if ((w == "left" || w == "right") && number_at(i + 1) && !word(i + 2, {"degrees", "degree"}) &&
         !preceded_by(i, 2, {"turn", "heading"}))
       return Intent::kHdg;
+    if ((w == "left" || w == "right") && word(i + 1, {"by"}) && number_at(i + 2) && !preceded_by(i, 2, {"turn"}))
+      return Intent::kHdg;  // "further left by ten degrees"
     if ((w == "point" || w == "fly" || w == "towards" || w == "toward" || w == "head") &&
         near(4, {"north", "south", "east", "west"}))
       return Intent::kHdg;
@@ -243,6 +245,7 @@ class Parser {
       return Intent::kDelWpt;
     if (w == "delete" || w == "del" || w == "remove" || w == "rid" || (w == "take" && near(5, {"out"})))
       return Intent::kDelete;
+    if (w == "proceed" && near(3, {"heading"})) return std::nullopt;  // "proceed on heading 230"
     if (w == "direct" || w == "directly" || w == "dct" || w == "proceed" || w == "direct-to")
       return Intent::kDirect;
     if (w == "cleared" && world_ && !world_->waypoints().empty()) return Intent::kDirect;
@@ -258,8 +261,8 @@ class Parser {
         (w == "put" && near(3, {"back"})))
       return Intent::kMove;
     if (w == "pause" || w == "hold" || w == "freeze") return Intent::kHold;
-    if (w == "resume" || w == "unpause") return Intent::kOp;
-    if (w == "continue" && (i + 1 >= n || t_[i + 1].kind == TokKind::kPunct || sim_word_near(i) ||
+    if (w == "unpause") return Intent::kOp;
+    if ((w == "continue" || w == "resume") && (i + 1 >= n || t_[i + 1].kind == TokKind::kPunct || sim_word_near(i) ||
                             word(i + 1, {"running", "and"})))
       return Intent::kOp;
     if (w == "real" && word(i + 1, {"time"})) {
@@ -274,7 +277,7 @@ class Parser {
       return Intent::kReset;
     if (w == "seed") return Intent::kSeed;
     if (w == "scenario" || w == "load" || w == "open" || w == "ic") return Intent::kIc;
-    if (w == "print" || w == "echo") return Intent::kEcho;
+    if (w == "print" || (w == "echo" && i + 1 < n && t_[i + 1].kind == TokKind::kQuoted)) return Intent::kEcho;
     if (w == "detection" || w == "asas" || w == "cdmethod") return Intent::kAsas;
     if (w == "resolution" || w == "resolve" || w == "reso") return Intent::kReso;
     if (w == "protected" || w == "pz" || w == "separation" || w == "zoner" || w == "zonedh" || w == "radius" ||
@@ -347,7 +350,7 @@ class Parser {
       // A value instruction said without its value next to other, complete
       // instructions ("turn left direct X", "... ten is a parallel climb") is
       // left out; it only becomes the question when nothing else was understood.
-      if (!ask_.empty() && value_intent(segs[k].intent) && quantities(segs[k]).empty()) {
+      if (!ask_.empty() && value_intent(segs[k].intent) && values_after_trigger(segs[k]) == 0) {
         if (pending_.empty()) pending_ = ask_;
         ask_.clear();
         continue;
@@ -376,6 +379,10 @@ class Parser {
 
   // ---- values ----
   std::vector<Quantity> quantities(const Segment& s) const { return extract_quantities(t_, s.begin, s.end, used_); }
+  size_t values_after_trigger(const Segment& s) const {
+    auto qs = quantities(s);
+    return static_cast<size_t>(std::count_if(qs.begin(), qs.end(), [&](const Quantity& q) { return q.begin >= s.trig; }));
+  }
 
   // +1 for up/more words, -1 for down/less words, 0 when none.
   int direction(const Segment& s) const {
@@ -562,6 +569,15 @@ class Parser {
       if (q.kind == QKind::kAlt) with_unit.push_back(q);
       if (q.kind == QKind::kPlain && q.begin >= s.trig) plain.push_back(q);
     }
+    // "rate fifteen hundred": a plain number after "rate" is the vertical speed
+    size_t rate_word = find_word(s.begin, s.end, {"rate"});
+    for (auto* list : {&plain, &with_unit})
+      for (auto it = list->begin(); !rate && rate_word < s.end && it != list->end(); ++it)
+        if (it->begin > rate_word && !it->flight_level) {
+          rate = *it;
+          list->erase(it);
+          break;
+        }
     std::optional<Quantity> target = pick(with_unit.empty() ? plain : with_unit, s, "maintain");
     const AircraftView* now = state(ids.front());
     const std::string verb = direction(s) > 0 ? "climb" : direction(s) < 0 ? "descend" : "fly";
@@ -721,7 +737,7 @@ class Parser {
     } else if (word_in(s.begin, s.end, {"around", "opposite", "reverse"})) {
       if (!now) return need("What is the current heading of " + id + "?");
       hdg = now->hdg_deg + 180.0;
-    } else if (word_in(s.begin, s.end, {"present", "current"}) && now) {
+    } else if (word_in(s.begin, s.end, {"present", "current", "continue"}) && now) {
       hdg = now->hdg_deg;
     } else if (refs.size() >= 2 && word_in(s.begin, s.end, {"same", "match", "as"})) {
       const AircraftView* src = state(refs.back()->name);
@@ -745,7 +761,7 @@ class Parser {
     std::optional<Quantity> v;
     for (const auto& q : quantities(s))
       if (q.kind == QKind::kVs || (q.kind == QKind::kPlain && q.begin > s.trig) ||
-          (q.kind == QKind::kAlt && q.number.has_thousand && word_in(q.end, q.end + 3, {"per", "minute"}))) {
+          (q.kind == QKind::kAlt && !q.flight_level && q.begin > s.trig)) {
         v = q;
         break;
       }
@@ -930,6 +946,25 @@ class Parser {
     return std::nullopt;
   }
 
+  // A name said after "direct (to)" that nothing in the world matches: the
+  // word as spoken, or letters spelled with the phonetic alphabet ("november
+  // tango mike" -> NTM). Used when there is no world to match against.
+  std::optional<std::string> spoken_name(size_t b, size_t e) const {
+    if (world_ && !world_->waypoints().empty()) return std::nullopt;
+    for (const auto& a : fleet_)
+      if (!a.route.empty()) return std::nullopt;
+    size_t i = b;
+    while (i < e && (word(i, {"to", "the", "ah", "uh", "direct", "via", "now", "point"}) || used_[i])) ++i;
+    std::string letters;
+    for (size_t k = i; k < e && t_[k].kind == TokKind::kWord && phonetic_letter(t_[k].text) != 0; ++k)
+      letters += phonetic_letter(t_[k].text);
+    if (letters.size() >= 2) return letters;
+    if (i < e && t_[i].kind == TokKind::kWord && is_alpha(t_[i].text) && t_[i].text.size() >= 3 &&
+        !is_keyword(t_[i].text) && !is_number_word(t_[i]))
+      return text::upper(t_[i].text);
+    return std::nullopt;
+  }
+
   std::optional<std::string> single_route_waypoint(const std::string& id) const {
     const AircraftView* a = state(id);
     if (a && a->route.size() == 1) return a->route.front();
@@ -941,6 +976,7 @@ class Parser {
     if (!id) return;
     auto wp = waypoint(s.trig, s.end, *id);
     if (!wp) wp = single_route_waypoint(*id);
+    if (!wp) wp = spoken_name(s.trig + 1, s.end);
     if (!wp) return need("Direct to which waypoint should " + *id + " fly?");
     out_.push_back("DIRECT " + *id + " " + *wp);
     // a level said in the same breath without its verb ("direct LIVVN ... six thousand")

@@ -83,6 +83,20 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
     if (prev({"fl"}) || prev({"level"})) {
       q.kind = QKind::kAlt;
       q.flight_level = true;
+      if (!n->typed && (n->has_thousand || n->digits.size() > 3)) {
+        // A flight level is three digits; what follows is another value
+        // ("flight level three one zero one thousand five hundred feet per minute").
+        size_t k = i;
+        while (k < end && k < i + 3 && t[k].kind == TokKind::kWord && digit_word(t[k].text) >= 0) ++k;
+        if (k > i) {
+          std::vector<Token> three(t.begin() + static_cast<long>(i), t.begin() + static_cast<long>(k));
+          if (auto fl = read_number(three, 0)) {
+            q.number = *fl;
+            q.value = fl->value;
+            j = k;
+          }
+        }
+      }
       if (q.value < 1000.0) q.value *= 100.0;
       --p;
       if (prev({"flight"})) --p;
@@ -175,10 +189,15 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       } else if (word_at(t, j, {"x", "times"})) {
         q.kind = QKind::kMult;
         ++j;
-      } else if (word_at(t, j, {"left", "right"}) && q.kind == QKind::kPlain && !n->has_thousand) {
+      } else if (word_at(t, j, {"left", "right"}) && q.kind == QKind::kPlain && !n->has_thousand &&
+                 q.value <= 180.0 && !word_at(t, j + 1, {"turn", "heading"})) {
         q.kind = QKind::kAngle;
         q.turn = t[j].text == "left" ? -1 : 1;
         ++j;
+      } else if (q.kind == QKind::kPlain && !n->has_decimal && q.value >= 500 && q.value <= 8000 &&
+                 word_at(t, j, {"or"}) && word_at(t, j + 1, {"more", "greater"})) {
+        q.kind = QKind::kVs;  // "fifteen hundred or greater": a minimum rate
+        j += 2;
       } else if (q.kind == QKind::kPlain && n->has_thousand) {
         q.kind = QKind::kAlt;
       }

@@ -110,7 +110,7 @@ CallsignMatch match_world(const std::string& icao, const std::string& words, con
       for (const auto& tel : telephony_of(prefix)) airline = std::max(airline, similarity(words, tel));
     }
     double digits = 0.0;
-    size_t groups = 0;
+    size_t groups = suf.groups.size();
     for (size_t k = 1; k <= suf.groups.size(); ++k) {
       double d = plain_similarity(suf.joined(k), rest);
       if (d > digits) {
@@ -197,8 +197,37 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     }
   }
   // Telephony designator + digits/letters.
+  auto single_letter = [&](size_t k) {
+    return k < t.size() && !used[k] && is_word(t[k]) && t[k].text.size() == 1 && std::isalpha(static_cast<unsigned char>(t[k].text[0]));
+  };
   for (size_t i = 0; i < t.size(); ++i) {
     if (used[i] || !is_word(t[i])) continue;
+    // A designator spelled out letter by letter: "k l m two six four".
+    size_t letters = 0;
+    while (letters < 3 && single_letter(i + letters)) ++letters;
+    if (letters >= 2) {
+      std::string prefix;
+      for (size_t k = i; k < i + letters; ++k) prefix += t[k].text;
+      Suffix suf = read_suffix(t, i + letters, used);
+      if (!suf.groups.empty() && std::isdigit(static_cast<unsigned char>(suf.groups[0][0]))) {
+        std::string id = text::upper(prefix) + text::upper(suf.joined(suf.groups.size()));
+        size_t end = suf.ends.back();
+        bool exists = world_id(id) != nullptr;
+        if (exists) {
+          id = world_id(id)->id;
+        } else if (!fleet.empty()) {
+          CallsignMatch m = match_world("", prefix, suf, fleet);
+          if ((m.score >= 0.45 || fleet.size() == 1) && m.groups > 0) {
+            id = m.id;
+            end = suf.ends[m.groups - 1];
+            exists = true;
+          }
+        }
+        add(RefKind::kAircraft, id, i, after_weight(t, end), exists, true);
+        i = end - 1;
+        continue;
+      }
+    }
     for (size_t len = std::min(max_telephony_words(), t.size() - i); len >= 1; --len) {
       std::string phrase;
       bool ok = true;
@@ -219,15 +248,41 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
         id = world_id(id)->id;
       } else if (!fleet.empty()) {
         CallsignMatch m = match_world(*icao, phrase, suf, fleet);
-        if (m.score >= 0.45 || fleet.size() == 1) {
+        if ((m.score >= 0.45 || fleet.size() == 1) && m.groups > 0) {
           id = m.id;
-          end = suf.ends[m.groups - 1 < suf.ends.size() ? m.groups - 1 : 0];
+          end = suf.ends[m.groups - 1];
           exists = true;
         }
       }
       add(RefKind::kAircraft, id, i, after_weight(t, end), exists, true);
       i = end - 1;
       break;
+    }
+  }
+  // A registration spelled in the phonetic alphabet at the opening ("delta
+  // mike echo climb ..."): three letters or more.
+  {
+    size_t i = 0;
+    while (i < t.size() && is_word(t[i]) && is_filler(t[i].text) && !used[i]) ++i;
+    size_t b = i;
+    std::string letters;
+    while (i < t.size() && is_word(t[i]) && !used[i] && phonetic_letter(t[i].text) != 0) letters += phonetic_letter(t[i++].text);
+    if (letters.size() >= 3) {
+      const AircraftView* known = world_id(letters);
+      std::string id = known ? known->id : letters;
+      bool exists = known != nullptr;
+      if (!exists && !fleet.empty()) {
+        auto m = best_match(letters, [&] {
+          std::vector<std::string> ids;
+          for (const auto& a : fleet) ids.push_back(a.id);
+          return ids;
+        }());
+        if (m && (m->score >= 0.6 || fleet.size() == 1)) {
+          id = fleet[m->index].id;
+          exists = true;
+        }
+      }
+      add(RefKind::kAircraft, id, b, after_weight(t, i), exists, true);
     }
   }
   // An opening callsign the table does not know (garbled by speech recognition).
@@ -249,7 +304,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     Suffix suf = read_suffix(t, i, used);
     if (!suf.groups.empty()) {
       CallsignMatch m = match_world("", words, suf, fleet);
-      double need = keyword ? 0.55 : fleet.size() == 1 ? 0.3 : 0.5;
+      // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
+      double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;
       if (m.score >= need && m.groups > 0) add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
     }
   }
