@@ -1,0 +1,257 @@
+-- The nodes of the translation graph (see translate/graph.lua for the graph).
+--
+-- Each node is node(state, ctx) -> edge label. `state` holds the request and
+-- what the nodes found: docs (retrieved), cmd (selected command), candidate
+-- (the TrafScript line to try), feedback {previous, error}, retries, source
+-- ("llm" or "offline"), and at the end commands or ask, and error. `ctx`
+-- holds the collaborators: llm (or nil), sim (never changed), index, prompts,
+-- k, max_retries. Every node records what it did with say().
+local M = {}
+
+function M.say(state, node, text)
+  state.trace[#state.trace + 1] = { node = node, said = text }
+end
+
+-- ${name} placeholders replaced literally from `vars` (missing: empty).
+function M.render(template, vars)
+  return (template:gsub("%${([%w_]+)}", function(k)
+    local v = vars[k]
+    return v == nil and "" or tostring(v)
+  end))
+end
+
+-- The text inside the last \boxed{...} (braces balanced), trimmed; nil if none.
+function M.boxed(reply)
+  local start, pos = nil, 1
+  while true do
+    local s, e = reply:find("\\boxed{", pos, true)
+    if not s then break end
+    start, pos = e + 1, e + 1
+  end
+  if not start then return nil end
+  local depth, i = 1, start
+  while i <= #reply do
+    local c = reply:sub(i, i)
+    if c == "{" then depth = depth + 1 elseif c == "}" then depth = depth - 1 end
+    if depth == 0 then break end
+    i = i + 1
+  end
+  return (reply:sub(start, i - 1):gsub("^%s+", ""):gsub("%s+$", ""))
+end
+
+local function trim(s) return (s:gsub("^%s+", ""):gsub("%s+$", "")) end
+
+-- "CMD a ; CMD b" -> {"CMD a", "CMD b"} (empty parts dropped).
+function M.split_commands(line)
+  local out = {}
+  for part in (line .. ";"):gmatch("([^;]*);") do
+    part = trim(part)
+    if part ~= "" then out[#out + 1] = part end
+  end
+  return out
+end
+
+-- Known command names and aliases -> canonical name, from the registry.
+local canonical
+local function canonical_name(word)
+  if not canonical then
+    canonical = {}
+    for _, c in ipairs(squawk.sim.commands()) do
+      canonical[c.name:upper()] = c.name
+      for _, a in ipairs(c.aliases or {}) do canonical[a:upper()] = c.name end
+    end
+  end
+  return canonical[(word or ""):upper()]
+end
+M.canonical_name = canonical_name
+
+local function usage_of(name)
+  for _, c in ipairs(squawk.sim.commands()) do
+    if c.name == name then return c.usage end
+  end
+  return name
+end
+
+-- One line per aircraft: what the LLM needs to fill relative values.
+function M.state_lines(sim)
+  local lines = {}
+  for _, a in ipairs(sim:aircraft()) do
+    lines[#lines + 1] = string.format("%s %s at %.4f %.4f, heading %.0f, altitude %.0f ft, CAS %.0f kt",
+      a.id, a.type or "?", a.lat, a.lon, a.hdg_deg, a.alt_ft, a.cas_kt)
+  end
+  return table.concat(lines, "\n")
+end
+
+local function content(state)
+  local blocks = {}
+  for _, d in ipairs(state.docs or {}) do blocks[#blocks + 1] = d.text end
+  return table.concat(blocks, "\n\n")
+end
+
+-- The selected command's document (retrieved, or looked up by name).
+local function command_context(state, ctx)
+  for _, d in ipairs(state.docs or {}) do
+    if d.command == state.cmd then return d.text end
+  end
+  for _, d in ipairs(ctx.index:search(state.cmd, ctx.k)) do
+    if d.command == state.cmd then return d.text end
+  end
+  return usage_of(state.cmd)
+end
+
+-- Asks the LLM; returns the reply, or nil after recording the failure.
+local function ask_llm(state, ctx, node, prompt)
+  local reply, info = ctx.llm:chat(prompt, { on_token = ctx.on_token })
+  if not reply then
+    M.say(state, node, "LLM failed, falling back to the offline translator: " .. tostring(info))
+    return nil
+  end
+  M.say(state, node, "LLM replied: " .. reply)
+  return reply
+end
+
+local function with_feedback(prompt, state, ctx)
+  if not state.feedback then return prompt end
+  return prompt .. M.render(ctx.prompts.feedback, state.feedback)
+end
+
+-- Reads a candidate line (or a question) out of an LLM reply.
+local function take_candidate(state, reply)
+  local line = M.boxed(reply) or trim(reply:match("[^\n]+") or "")
+  if line:upper():sub(1, 3) == "ASK" then
+    local q = trim(line:sub(4))
+    state.ask = q ~= "" and q or "Some required information is missing: could you give the missing values?"
+    return "ask"
+  end
+  state.candidate, state.source = line, "llm"
+  return "ok"
+end
+
+function M.retrieve(state, ctx)
+  state.docs = ctx.index:search(state.request, ctx.k)
+  local names = {}
+  for _, d in ipairs(state.docs) do names[#names + 1] = string.format("%s %.2f", d.command, d.score) end
+  M.say(state, "retrieve", "top " .. ctx.k .. ": " .. (#names > 0 and table.concat(names, ", ") or "nothing"))
+  return "next"
+end
+
+function M.select(state, ctx)
+  local reply = ask_llm(state, ctx, "select",
+    M.render(ctx.prompts.selector, { content = content(state), request = state.request }))
+  if not reply then return "llm_failed" end
+  local word = (M.boxed(reply) or reply):match("[%a][%w]*")
+  local name = canonical_name(word)
+  if not name then
+    name = state.docs[1] and state.docs[1].command
+    if not name then
+      M.say(state, "select", "no known command in the reply and nothing retrieved")
+      return "llm_failed"
+    end
+    M.say(state, "select", string.format("'%s' is not a command; taking the best retrieved, %s", tostring(word), name))
+  end
+  state.cmd = name
+  M.say(state, "select", "command " .. name)
+  return "ok"
+end
+
+function M.verify(state, ctx)
+  local reply = ask_llm(state, ctx, "verify", M.render(ctx.prompts.verifier,
+    { cmd = state.cmd, context = command_context(state, ctx), request = state.request }))
+  if not reply then return "llm_failed" end
+  local up = reply:upper()
+  local yes, no = up:find("%f[%a]YES%f[%A]"), up:find("%f[%a]NO%f[%A]")
+  if no and (not yes or no < yes) then return "no" end
+  if not yes then M.say(state, "verify", "neither YES nor NO; going on as if YES") end
+  return "yes"
+end
+
+function M.ask(state, ctx)
+  state.ask = M.render(ctx.prompts.ask, { cmd = state.cmd, usage = usage_of(state.cmd) })
+  M.say(state, "ask", state.ask)
+  return "done"
+end
+
+function M.fill(state, ctx)
+  local prompt = M.render(ctx.prompts.state, { state = M.state_lines(ctx.sim) })
+    .. M.render(ctx.prompts.parameters,
+      { cmd = state.cmd, context = command_context(state, ctx), request = state.request })
+  local reply = ask_llm(state, ctx, "fill", with_feedback(prompt, state, ctx))
+  if not reply then return "llm_failed" end
+  local label = take_candidate(state, reply)
+  M.say(state, "fill", label == "ask" and ("asks: " .. state.ask) or ("candidate: " .. state.candidate))
+  return label
+end
+
+function M.single(state, ctx)
+  local prompt = M.render(ctx.prompts.single,
+    { content = content(state), state = M.state_lines(ctx.sim), request = state.request })
+  local reply = ask_llm(state, ctx, "single", with_feedback(prompt, state, ctx))
+  if not reply then return "llm_failed" end
+  local label = take_candidate(state, reply)
+  M.say(state, "single", label == "ask" and ("asks: " .. state.ask) or ("candidate: " .. state.candidate))
+  return label
+end
+
+function M.offline(state, ctx)
+  local world = { aircraft = ctx.sim:aircraft() }
+  local tr = squawk.translate.offline(state.request, world)
+  if tr.ask then
+    state.ask = tr.ask
+    M.say(state, "offline", "asks: " .. tr.ask)
+    return "ask"
+  end
+  state.candidate, state.source = table.concat(tr.commands, " ; "), "offline"
+  M.say(state, "offline", "candidate: " .. (state.candidate ~= "" and state.candidate or "(nothing)"))
+  return "ok"
+end
+
+-- A rejected candidate: back to the producing LLM node with the error while
+-- retries last, else the end with state.error set.
+local function rejected(state, ctx, node, msg)
+  state.feedback = { previous = state.candidate, error = msg }
+  state.commands = M.split_commands(state.candidate or "")
+  if state.source == "llm" and state.retries < ctx.max_retries then
+    state.retries = state.retries + 1
+    M.say(state, node, string.format("rejected (retry %d of %d): %s", state.retries, ctx.max_retries, msg))
+    return "retry"
+  end
+  state.error = msg
+  M.say(state, node, "rejected, giving up: " .. msg)
+  return "fail"
+end
+
+-- The registry's own parser, command by command, on a scratch copy where the
+-- earlier commands of the line have run (so "CRE X ... ; HDG X 90" checks).
+function M.validate(state, ctx)
+  local cmds = M.split_commands(state.candidate or "")
+  if #cmds == 0 then return rejected(state, ctx, "validate", "no command was produced") end
+  local scratch = ctx.sim:copy()
+  for _, c in ipairs(cmds) do
+    if not canonical_name(c:match("^(%S+)")) and not canonical_name(c:match("^%S+%s+(%S+)")) then
+      return rejected(state, ctx, "validate", string.format("'%s': unknown command", c))
+    end
+    local ok, msg = scratch:check(c)
+    if not ok then return rejected(state, ctx, "validate", msg) end
+    scratch:exec(c)
+  end
+  M.say(state, "validate", "parses: " .. table.concat(cmds, " ; "))
+  return "ok"
+end
+
+-- Runs the whole line on a fresh scratch copy; the real sim is untouched.
+function M.execute(state, ctx)
+  local cmds = M.split_commands(state.candidate)
+  local scratch = ctx.sim:copy()
+  local outputs = {}
+  for _, c in ipairs(cmds) do
+    local ok, msg = scratch:exec(c)
+    if not ok then return rejected(state, ctx, "execute", msg) end
+    if msg and msg ~= "" then outputs[#outputs + 1] = msg end
+  end
+  state.commands = cmds
+  state.error = nil
+  M.say(state, "execute", "ran on a scratch copy: ok" .. (#outputs > 0 and ("; " .. table.concat(outputs, " / ")) or ""))
+  return "ok"
+end
+
+return M
