@@ -1,8 +1,6 @@
 // squawk scn / squawk commands.
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <map>
 
 #include <nlohmann/json.hpp>
@@ -10,11 +8,10 @@
 #include "app/cli.h"
 #include "app/subcommands.h"
 #include "command/registry.h"
+#include "command/conformance.h"
 #include "command/scenario_run.h"
 #include "core/text.h"
 #include "core/units.h"
-
-namespace fs = std::filesystem;
 
 namespace squawk::app {
 
@@ -47,30 +44,10 @@ std::string final_state_json(const command::Stack& stack) {
   return out.dump(2);
 }
 
-long total(const std::map<std::string, long>& m) {
-  long n = 0;
-  for (const auto& [k, v] : m) n += v;
-  return n;
-}
-
-// Entries of a count map, largest first.
-std::vector<std::pair<std::string, long>> by_count(const std::map<std::string, long>& m) {
-  std::vector<std::pair<std::string, long>> v(m.begin(), m.end());
-  std::stable_sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
-  return v;
-}
-
-void print_counts(const char* title, const std::map<std::string, long>& m, size_t limit) {
+void print_counts(const char* title, const std::map<std::string, long>& m) {
   if (m.empty()) return;
   std::printf("%s:\n", title);
-  size_t k = 0;
-  for (const auto& [name, n] : by_count(m)) {
-    if (k++ == limit) {
-      std::printf("  ... %zu more\n", m.size() - limit);
-      break;
-    }
-    std::printf("  %6ld  %s\n", n, name.c_str());
-  }
+  for (const auto& [name, n] : m) std::printf("  %6ld  %s\n", n, name.c_str());
 }
 
 int run_one(const std::string& file, const Args& args, const command::ScenarioRunOptions& opts) {
@@ -83,54 +60,13 @@ int run_one(const std::string& file, const Args& args, const command::ScenarioRu
   }
   for (const auto& line : stack.take_output()) std::printf("%s\n", line.c_str());
   std::printf("scenario %s: ran to t = %.2f s in %.2f s wall\n", file.c_str(), r->end_time, r->wall_s);
-  std::printf("commands: %ld executed, %ld skipped, %ld failed\n", r->tally.executed, total(r->tally.skipped),
-              total(r->tally.failed));
-  print_counts("skipped (not squawk commands), by name", r->tally.skipped, 1000);
-  print_counts("failed, by reason", r->tally.failed, 1000);
+  std::printf("commands: %ld executed, %ld skipped, %ld failed\n", r->tally.executed, command::total_count(r->tally.skipped),
+              command::total_count(r->tally.failed));
+  print_counts("skipped (not squawk commands), by name", r->tally.skipped);
+  print_counts("failed, by reason", r->tally.failed);
   std::printf("aircraft: %d; conflicts: %lld; losses of separation: %lld\n", r->aircraft,
               static_cast<long long>(r->conflicts), static_cast<long long>(r->los));
   return r->tally.failed.empty() ? kExitOk : kExitFail;
-}
-
-// Runs every file under `dir` and prints the conformance table (Markdown).
-int run_conformance(const std::string& dir, const command::ScenarioRunOptions& opts) {
-  std::vector<std::string> paths;
-  std::error_code ec;
-  for (const auto& e : fs::recursive_directory_iterator(dir, ec))
-    if (e.is_regular_file()) paths.push_back(e.path().string());
-  if (ec || paths.empty()) return failure(Status::not_found("no files under " + text::quoted(dir)));
-  std::sort(paths.begin(), paths.end());
-  int loaded = 0, full = 0;
-  long executed = 0;
-  double sim_s = 0, wall_s = 0;
-  std::map<std::string, long> skipped, failed, load_errors;
-  for (const auto& p : paths) {
-    command::Stack stack;
-    auto r = command::run_scenario(p, opts, stack);
-    if (!r) {
-      ++load_errors[r.status().message()];
-      continue;
-    }
-    ++loaded;
-    if (r->end_time + 0.5 * stack.sim().dt() >= opts.max_time || stack.queued() == 0) ++full;
-    executed += r->tally.executed;
-    for (const auto& [k, v] : r->tally.skipped) skipped[k] += v;
-    for (const auto& [k, v] : r->tally.failed) failed[k] += v;
-    sim_s += r->end_time;
-    wall_s += r->wall_s;
-    std::fprintf(stderr, "%-60s t=%8.1f s  %6ld ok %5ld skipped %5ld failed  %.2f s\n", p.c_str(), r->end_time,
-                 r->tally.executed, total(r->tally.skipped), total(r->tally.failed), r->wall_s);
-  }
-  std::printf("| files | loaded | fully run | commands executed | skipped | failed | sim time | wall time |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
-  std::printf("| %zu | %d | %d | %ld | %ld | %ld | %.0f s | %.1f s |\n\n", paths.size(), loaded, full, executed,
-              total(skipped), total(failed), sim_s, wall_s);
-  std::printf("| skipped command (not in squawk) | count |\n|---|---|\n");
-  for (const auto& [k, v] : by_count(skipped)) std::printf("| %s | %ld |\n", k.c_str(), v);
-  std::printf("\n| failure reason | count |\n|---|---|\n");
-  for (const auto& [k, v] : by_count(failed)) std::printf("| %s | %ld |\n", k.c_str(), v);
-  for (const auto& [k, v] : load_errors) std::printf("| (file not loaded) %s | %ld |\n", k.c_str(), v);
-  return loaded == static_cast<int>(paths.size()) ? kExitOk : kExitFail;
 }
 
 }  // namespace
@@ -158,7 +94,14 @@ int cmd_scn(const ArgV& argv) {
   if (!db) return failure(db.status());
   opts.navdb = *db;
   const std::string& target = args->positional()[0];
-  if (args->has("--conformance")) return run_conformance(target, opts);
+  if (args->has("--conformance")) {
+    const auto rep = command::run_conformance(target, opts, [](const std::string& line) {
+      std::fprintf(stderr, "%s\n", line.c_str());
+    });
+    if (rep.files == 0) return failure(Status::not_found("no files under " + text::quoted(target)));
+    std::fputs(command::conformance_markdown(rep).c_str(), stdout);
+    return rep.loaded == rep.files ? kExitOk : kExitFail;
+  }
   return run_one(target, *args, opts);
 }
 

@@ -1,5 +1,6 @@
 #include "command/formats.h"
 
+#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -145,15 +146,13 @@ Result<double> parse_time(std::string_view token) {
 
 bool is_lat(std::string_view token) {
   std::string u = text::upper(text::trim(token));
-  if (!u.empty() && (u.front() == 'N' || u.front() == 'S') && u.size() > 1) u.erase(0, 1);
   while (!u.empty() && (u.front() == '-' || u.front() == '+')) u.erase(0, 1);
-  std::string digits;
+  std::string rest;
   for (char c : u)
-    if (c != '\'' && c != '"' && c != '.') digits.push_back(c);
-  if (digits.empty()) return false;
-  for (char c : digits)
-    if (c < '0' || c > '9') return false;
-  return true;
+    if (c != '\'' && c != '"' && c != '.') rest.push_back(c);
+  if (rest.size() > 1 && (rest.front() == 'N' || rest.front() == 'S')) rest.erase(0, 1);
+  return !rest.empty() && (std::isdigit(static_cast<unsigned char>(rest.front())) != 0) &&
+         text::to_double(rest).has_value();
 }
 
 Result<double> parse_lat(std::string_view token) {

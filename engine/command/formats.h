@@ -40,9 +40,9 @@ Result<bool> parse_onoff(std::string_view token);
 Result<double> parse_float(std::string_view token);  // finite real
 Result<long long> parse_int(std::string_view token);
 
-// True when `token` looks like a latitude (BlueSky's islat): an optional
-// N/S, sign, digits, '.', ' and ". Used to decide whether a position is a
-// lat/lon pair or a name.
+// True when `token` looks like a latitude (BlueSky's islat): after a sign,
+// quotes, dots and one N/S are dropped, a number remains (exponents allowed,
+// as in -5.5e-17). Decides whether a position is a lat/lon pair or a name.
 bool is_lat(std::string_view token);
 
 // True when `token` is a heading number (parse_hdg accepts it without a lookup).

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
 
 #include "core/files.h"
 #include "core/geo.h"
@@ -93,6 +95,16 @@ Result<std::shared_ptr<const NavDb>> NavDb::load(const std::string& dir) {
   if (airports.empty() && waypoints.empty())
     return Status::corruption("navdata folder '" + dir + "' holds no airports, navaids or fixes");
   return std::shared_ptr<const NavDb>(std::make_shared<NavDb>(std::move(airports), std::move(waypoints)));
+}
+
+Result<std::shared_ptr<const NavDb>> NavDb::load_cached(const std::string& dir) {
+  static std::mutex mu;
+  static std::map<std::string, std::shared_ptr<const NavDb>> cache;
+  std::lock_guard<std::mutex> lock(mu);
+  if (auto it = cache.find(dir); it != cache.end()) return it->second;
+  SQUAWK_ASSIGN_OR_RETURN(auto db, load(dir));
+  cache.emplace(dir, db);
+  return db;
 }
 
 const NavPoint* NavDb::airport(std::string_view id) const {

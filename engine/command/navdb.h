@@ -34,6 +34,9 @@ class NavDb {
  public:
   // Reads the three files from `dir`. Errors name the file and line.
   static Result<std::shared_ptr<const NavDb>> load(const std::string& dir);
+  // As load(), but each folder is read once per process (thread-safe); later
+  // calls share the same database.
+  static Result<std::shared_ptr<const NavDb>> load_cached(const std::string& dir);
   // Builds a database from lists (tests, or callers with their own data).
   NavDb(std::vector<NavPoint> airports, std::vector<NavPoint> waypoints);
 

@@ -20,9 +20,15 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 16;
 
-// A failure's grouping key: the message with quoted values blanked, so
-// "no aircraft 'KL1'" and "no aircraft 'KL2'" count as one reason.
-std::string reason_key(std::string_view msg) {
+// A failure's grouping key: the message with quoted values and a leading
+// aircraft id ("KL1: ...", as the simulation words it) blanked, so failures
+// that differ only in names count as one reason.
+std::string blank_names(std::string_view msg) {
+  if (auto colon = msg.find(": "); colon != std::string_view::npos && colon > 0 &&
+                                   msg.substr(0, colon).find(' ') == std::string_view::npos &&
+                                   msg.substr(0, colon) != "argument") {
+    return "<acid>: " + blank_names(msg.substr(colon + 2));
+  }
   std::string out;
   bool in_quote = false;
   for (char c : msg) {
@@ -34,7 +40,6 @@ std::string reason_key(std::string_view msg) {
     }
     if (!in_quote) out.push_back(c);
   }
-  if (auto nl = out.find('\n'); nl != std::string::npos) out.resize(nl);
   if (auto u = out.find(" (usage:"); u != std::string::npos) out.resize(u);
   return out;
 }
@@ -65,11 +70,23 @@ Resolved resolve(std::string_view text, const sim::Traffic& traf) {
     if (!look.rest().empty()) out.argtext.append(" ").append(look.rest());
     return out;
   }
-  if (!second.empty() && reg.find(second)) {
+  // "KL999 ALT FL100": a command whose first argument is an aircraft, after
+  // something that is no aircraft. Anything else is an unknown command.
+  const CommandDecl* d = second.empty() ? nullptr : reg.find(second);
+  if (d && !d->signature.params.empty() && d->signature.params[0].alternatives.front() == ArgType::kAcid) {
     out.acid_unknown = true;
-    out.decl = reg.find(second);
+    out.decl = d;
   }
   return out;
+}
+
+// "NAME: reason" for a failed command `typed` whose message starts with it.
+std::string reason_key(std::string_view typed, const std::string& msg, const sim::Traffic& traf) {
+  const Resolved rc = resolve(typed, traf);
+  std::string_view rest = msg;
+  if (rest.substr(0, typed.size()) == typed) rest.remove_prefix(typed.size());
+  if (rest.substr(0, 2) == ": ") rest.remove_prefix(2);
+  return (rc.decl ? rc.decl->name : rc.name) + ": " + blank_names(rest);
 }
 
 std::string usage_suffix(const CommandDecl& d) { return " (usage: " + d.usage + ")"; }
@@ -133,7 +150,7 @@ Result<std::string> Stack::exec(std::string_view line) {
     bool skipped = false;
     auto r = run_command(cmd, false, &skipped);
     if (!r) {
-      ++tally_.failed[reason_key(r.status().message())];
+      ++tally_.failed[reason_key(text::trim(cmd), r.status().message(), sim_.traffic())];
       return r.status();
     }
     ++tally_.executed;
@@ -163,7 +180,7 @@ void Stack::run_queued(const std::string& line) {
     bool skipped = false;
     auto r = run_command(cmd, true, &skipped);
     if (!r) {
-      ++tally_.failed[reason_key(r.status().message())];
+      ++tally_.failed[reason_key(text::trim(cmd), r.status().message(), sim_.traffic())];
       std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + r.status().message();
       if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
       output_.push_back(std::move(msg));
@@ -236,23 +253,42 @@ std::optional<double> Stack::last_queued_time() const {
   return queue_.rbegin()->first.first;
 }
 
-Result<std::string> Stack::find_scenario(const std::string& name) const {
-  if (name.empty()) return Status::invalid("scenario file name is empty");
-  fs::path p(name);
-  if (p.is_relative()) p = fs::path(base_dir_) / p;
+namespace {
+
+// `name` in `dir`: as given, else with a .scn suffix of any case (BlueSky
+// forces .scn), else any file whose name matches case-insensitively.
+std::optional<std::string> find_in(const fs::path& dir, const fs::path& name) {
   std::error_code ec;
+  const fs::path p = dir / name;
   if (fs::is_regular_file(p, ec)) return p.string();
-  // BlueSky forces the .scn suffix; accept any case of it and of the name.
   fs::path stem = p;
   if (text::iequals(stem.extension().string(), ".scn")) stem.replace_extension();
   const std::string want = text::upper(stem.filename().string() + ".scn");
-  const fs::path dir = stem.parent_path().empty() ? fs::path(".") : stem.parent_path();
-  if (fs::is_directory(dir, ec)) {
-    for (const auto& e : fs::directory_iterator(dir, ec))
-      if (e.is_regular_file(ec) && text::upper(e.path().filename().string()) == want) return e.path().string();
+  const fs::path folder = stem.parent_path();
+  if (!fs::is_directory(folder, ec)) return std::nullopt;
+  for (const auto& e : fs::directory_iterator(folder, ec))
+    if (e.is_regular_file(ec) && text::upper(e.path().filename().string()) == want) return e.path().string();
+  return std::nullopt;
+}
+
+}  // namespace
+
+Result<std::string> Stack::find_scenario(const std::string& name) const {
+  if (text::trim(name).empty()) return Status::invalid("scenario file name is empty");
+  const fs::path p(std::string(text::trim(name)));
+  if (p.is_absolute()) {
+    if (auto f = find_in(p.root_path(), p.relative_path())) return *f;
+  } else {
+    // The base folder, then its parents: scenarios in sub-folders of a
+    // scenario tree name their includes relative to the tree's root.
+    std::error_code ec;
+    for (fs::path dir = fs::absolute(base_dir_, ec); !dir.empty(); dir = dir.parent_path()) {
+      if (auto f = find_in(dir, p)) return *f;
+      if (dir == dir.parent_path()) break;
+    }
   }
-  return Status::not_found("no scenario file " + text::quoted(name) + " (looked in " +
-                           text::quoted(dir.string()) + ")");
+  return Status::not_found("no scenario file " + text::quoted(name) + " (looked in " + text::quoted(base_dir_) +
+                           " and its parent folders)");
 }
 
 Status Stack::merge_scenario(const std::string& path, const std::vector<std::string>& args, bool relative) {
@@ -268,6 +304,7 @@ Status Stack::merge_scenario(const std::string& path, const std::vector<std::str
 void Stack::merge_entries(const std::string& file, ScnFile scn, const std::vector<std::string>& args,
                           bool relative) {
   const double offset = relative ? sim_.simt() : 0.0;
+  std::vector<std::string> now;  // due already: run at once, in file order (BlueSky's merge)
   for (auto& e : scn.entries) {
     std::string line = std::move(e.command);
     for (size_t k = 0; k < args.size(); ++k) {
@@ -275,16 +312,17 @@ void Stack::merge_entries(const std::string& file, ScnFile scn, const std::vecto
       for (size_t pos = line.find(key); pos != std::string::npos; pos = line.find(key, pos + args[k].size()))
         line.replace(pos, key.size(), args[k]);
     }
-    schedule(e.time + offset, std::move(line));
+    if (e.time + offset <= sim_.simt()) now.push_back(std::move(line));
+    else schedule(e.time + offset, std::move(line));
   }
   for (const auto& bad : scn.rejected) {
-    ++tally_.failed["scenario line with an unreadable timestamp"];
+    ++tally_.failed["(scenario file): unreadable timestamp, line skipped"];
     std::string msg = file + ":" + std::to_string(bad.line) + ": unreadable timestamp, line skipped";
     if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
     output_.push_back(std::move(msg));
   }
   ++include_depth_;
-  process_due();
+  for (const auto& line : now) run_queued(line);
   --include_depth_;
 }
 

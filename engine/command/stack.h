@@ -72,7 +72,8 @@ class Stack {
 
   void set_navdb(std::shared_ptr<const NavDb> db) { navdb_ = std::move(db); }
   const NavDb* navdb() const { return navdb_.get(); }
-  // Folder where IC / PCALL file names are looked up when relative.
+  // Folder where IC / PCALL file names are looked up when relative (see
+  // find_scenario).
   void set_base_dir(std::string dir) { base_dir_ = std::move(dir); }
   const std::string& base_dir() const { return base_dir_; }
 
@@ -128,7 +129,9 @@ class Stack {
   void set_dtmult(double m) { dtmult_ = m; }
   bool noise() const { return noise_; }
   void set_noise(bool on) { noise_ = on; }
-  // Resolves a scenario file name against base_dir (adds .scn, any case).
+  // Resolves a scenario file name: absolute as given; relative in base_dir,
+  // then in each parent folder of base_dir; the .scn suffix is added and
+  // matched in any case. Error names the file and where it looked.
   Result<std::string> find_scenario(const std::string& name) const;
 
  private:
@@ -137,7 +140,8 @@ class Stack {
   // and *skipped is set.
   Result<std::string> run_command(std::string_view text, bool from_queue, bool* skipped);
   void run_queued(const std::string& line);
-  // Queues a parsed file's entries (with %n replaced) and runs those due now.
+  // Queues a parsed file's entries (with %n replaced); those already due run
+  // at once, in file order, before anything else queued (as BlueSky merges).
   void merge_entries(const std::string& file, ScnFile scn, const std::vector<std::string>& args,
                      bool relative);
   void test_conditions();

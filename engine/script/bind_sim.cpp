@@ -1,0 +1,287 @@
+// squawk.sim: a simulation driven by TrafScript, from Lua.
+//
+//   squawk.sim.new([{seed = 0, navdata = dir}]) -> sim
+//       navdata defaults to the VM's --navdata / $SQUAWK_NAVDATA (none: named
+//       places are errors). Scenario files load relative to the script folder.
+//   sim:exec(line)       -> ok, message   (TrafScript; `;` separates commands)
+//   sim:check(line)      -> ok, message   (parse-only validation, nothing runs)
+//   sim:load(file)       -> ok, message   (IC: reset, then the .scn file)
+//   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
+//   sim:run_until(t) / sim:run_for(s)     [s]
+//   sim:time() -> s;  sim:dt() -> s;  sim:count() -> number of aircraft
+//   sim:aircraft()       -> { {id=, type=, lat=, lon=, alt_ft=, hdg_deg=, trk_deg=,
+//                              tas_kt=, cas_kt=, gs_kt=, vs_fpm=, lnav=, vnav=}, ... }
+//   sim:get(acid)        -> one such table, or nil
+//   sim:conflicts()      -> { {own=, intruder=, tcpa=, tlos= [s], dcpa_nm=, dist_nm=}, ... }
+//   sim:los()            -> { {own=, intruder=, dist_nm=, dalt_ft=}, ... }
+//   sim:totals()         -> {conflicts=, los=}  (pairs entered since reset)
+//   sim:output()         -> { line, ... }     (ECHO / queued failures since last call)
+//   sim:copy()           -> an independent copy
+//   sim:snapshot()       -> string            (the full state as bytes)
+//   squawk.sim.commands() -> { {name=, aliases={...}, args=, usage=, help=}, ... }
+#include <string>
+
+#include "command/registry.h"
+#include "command/stack.h"
+#include "core/paths.h"
+#include "core/units.h"
+#include "script/bindings.h"
+#include "script/lua_util.h"
+#include "script/vm.h"
+
+namespace squawk::script {
+
+namespace {
+
+constexpr const char* kSimMt = "squawk.sim.Sim";
+
+command::Stack* self(lua_State* L) { return arg_object<command::Stack>(L, 1, kSimMt); }
+
+// The folder of the running script (for IC / PCALL names), else ".".
+std::string script_dir(lua_State* L) {
+  lua_Debug ar;
+  if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "S", &ar) && ar.source[0] == '@')
+    return paths::dirname(ar.source + 1);
+  return ".";
+}
+
+int push_outcome(lua_State* L, const Result<std::string>& r) {
+  lua_pushboolean(L, r.is_ok());
+  const std::string& msg = r.is_ok() ? r.value() : r.status().message();
+  lua_pushlstring(L, msg.data(), msg.size());
+  return 2;
+}
+
+void set_num(lua_State* L, const char* k, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, k);
+}
+
+void set_str(lua_State* L, const char* k, const std::string& v) {
+  lua_pushlstring(L, v.data(), v.size());
+  lua_setfield(L, -2, k);
+}
+
+void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
+  lua_createtable(L, 0, 13);
+  set_str(L, "id", t.id[i]);
+  set_str(L, "type", t.type[i]);
+  set_num(L, "lat", t.lat[i]);
+  set_num(L, "lon", t.lon[i]);
+  set_num(L, "alt_ft", units::m_to_ft(t.alt[i]));
+  set_num(L, "hdg_deg", t.hdg[i]);
+  set_num(L, "trk_deg", t.trk[i]);
+  set_num(L, "tas_kt", units::ms_to_kt(t.tas[i]));
+  set_num(L, "cas_kt", units::ms_to_kt(t.cas[i]));
+  set_num(L, "gs_kt", units::ms_to_kt(t.gs[i]));
+  set_num(L, "vs_fpm", units::ms_to_fpm(t.vs[i]));
+  lua_pushboolean(L, t.lnav[i]);
+  lua_setfield(L, -2, "lnav");
+  lua_pushboolean(L, t.vnav[i]);
+  lua_setfield(L, -2, "vnav");
+}
+
+int l_new(lua_State* L) {
+  const bool opts = lua_istable(L, 1);
+  if (!opts && !lua_isnoneornil(L, 1)) throw ArgError(type_error(L, 1, "options", "table or nil"));
+  const long long seed = opts ? static_cast<long long>(field_number(L, 1, "seed", 0)) : 0;
+  if (seed < 0) throw ArgError("seed must be >= 0");
+  std::string nav = Vm::of(L).options().navdata_dir;
+  if (opts) nav = field_string(L, 1, "navdata", nav);
+  std::shared_ptr<const command::NavDb> db;
+  if (!nav.empty()) {
+    auto loaded = command::NavDb::load_cached(nav);
+    check_status(loaded.status());
+    db = *loaded;
+  }
+  const std::string dir = script_dir(L);
+  command::Stack* s = new_object<command::Stack>(L, kSimMt, static_cast<uint64_t>(seed));
+  s->set_navdb(std::move(db));
+  s->set_base_dir(dir);
+  return 1;
+}
+
+int l_exec(lua_State* L) {
+  command::Stack* s = self(L);
+  return push_outcome(L, s->exec(arg_string(L, 2, "line")));
+}
+
+int l_check(lua_State* L) {
+  command::Stack* s = self(L);
+  const Status st = s->check(arg_string(L, 2, "line"));
+  return push_outcome(L, st.is_ok() ? Result<std::string>(std::string()) : Result<std::string>(st));
+}
+
+int l_load(lua_State* L) {
+  command::Stack* s = self(L);
+  const Status st = s->load_scenario(arg_string(L, 2, "file"));
+  return push_outcome(L, st.is_ok() ? Result<std::string>(std::string()) : Result<std::string>(st));
+}
+
+int l_step(lua_State* L) {
+  command::Stack* s = self(L);
+  const long long n = opt_integer(L, 2, "n", 1);
+  if (n < 0) throw ArgError("n must be >= 0");
+  for (long long k = 0; k < n; ++k) s->step();
+  return 0;
+}
+
+int l_run_until(lua_State* L) {
+  command::Stack* s = self(L);
+  check_status(s->run_until(arg_number(L, 2, "t")));
+  return 0;
+}
+
+int l_run_for(lua_State* L) {
+  command::Stack* s = self(L);
+  const double d = arg_number(L, 2, "seconds");
+  if (!(d >= 0)) throw ArgError("seconds must be >= 0");
+  check_status(s->run_until(s->sim().simt() + d));
+  return 0;
+}
+
+int l_time(lua_State* L) {
+  lua_pushnumber(L, self(L)->sim().simt());
+  return 1;
+}
+
+int l_dt(lua_State* L) {
+  lua_pushnumber(L, self(L)->sim().dt());
+  return 1;
+}
+
+int l_count(lua_State* L) {
+  lua_pushinteger(L, self(L)->sim().n());
+  return 1;
+}
+
+int l_aircraft(lua_State* L) {
+  const sim::Traffic& t = self(L)->sim().traffic();
+  lua_createtable(L, t.n(), 0);
+  for (int i = 0; i < t.n(); ++i) {
+    push_aircraft(L, t, i);
+    lua_seti(L, -2, i + 1);
+  }
+  return 1;
+}
+
+int l_get(lua_State* L) {
+  const sim::Traffic& t = self(L)->sim().traffic();
+  const int i = t.index_of(arg_string(L, 2, "acid"));
+  if (i < 0) {
+    lua_pushnil(L);
+    return 1;
+  }
+  push_aircraft(L, t, i);
+  return 1;
+}
+
+int l_conflicts(lua_State* L) {
+  const sim::Simulation& s = self(L)->sim();
+  const auto& c = s.conflicts();
+  lua_createtable(L, static_cast<int>(c.size()), 0);
+  for (size_t k = 0; k < c.size(); ++k) {
+    lua_createtable(L, 0, 6);
+    set_str(L, "own", s.traffic().id[c[k].own]);
+    set_str(L, "intruder", s.traffic().id[c[k].intruder]);
+    set_num(L, "tcpa", c[k].tcpa);
+    set_num(L, "tlos", c[k].tlos);
+    set_num(L, "dcpa_nm", units::m_to_nm(c[k].dcpa));
+    set_num(L, "dist_nm", units::m_to_nm(c[k].dist));
+    lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  return 1;
+}
+
+int l_los(lua_State* L) {
+  const sim::Simulation& s = self(L)->sim();
+  const auto& c = s.los();
+  lua_createtable(L, static_cast<int>(c.size()), 0);
+  for (size_t k = 0; k < c.size(); ++k) {
+    lua_createtable(L, 0, 4);
+    set_str(L, "own", s.traffic().id[c[k].own]);
+    set_str(L, "intruder", s.traffic().id[c[k].intruder]);
+    set_num(L, "dist_nm", units::m_to_nm(c[k].dist));
+    set_num(L, "dalt_ft", units::m_to_ft(c[k].dalt));
+    lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  return 1;
+}
+
+int l_totals(lua_State* L) {
+  const sim::Simulation& s = self(L)->sim();
+  lua_createtable(L, 0, 2);
+  lua_pushinteger(L, s.cd().total_conflicts());
+  lua_setfield(L, -2, "conflicts");
+  lua_pushinteger(L, s.cd().total_los());
+  lua_setfield(L, -2, "los");
+  return 1;
+}
+
+int l_output(lua_State* L) {
+  const auto lines = self(L)->take_output();
+  lua_createtable(L, static_cast<int>(lines.size()), 0);
+  for (size_t k = 0; k < lines.size(); ++k) {
+    lua_pushlstring(L, lines[k].data(), lines[k].size());
+    lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  return 1;
+}
+
+int l_copy(lua_State* L) {
+  const command::Stack& s = *self(L);
+  new_object<command::Stack>(L, kSimMt, s);
+  return 1;
+}
+
+int l_snapshot(lua_State* L) {
+  const std::string snap = self(L)->snapshot();
+  lua_pushlstring(L, snap.data(), snap.size());
+  return 1;
+}
+
+int l_commands(lua_State* L) {
+  const auto& cmds = command::Registry::instance().commands();
+  lua_createtable(L, static_cast<int>(cmds.size()), 0);
+  for (size_t k = 0; k < cmds.size(); ++k) {
+    const auto& d = cmds[k];
+    lua_createtable(L, 0, 5);
+    set_str(L, "name", d.name);
+    set_str(L, "args", d.args);
+    set_str(L, "usage", d.usage);
+    set_str(L, "help", d.help);
+    lua_createtable(L, static_cast<int>(d.aliases.size()), 0);
+    for (size_t a = 0; a < d.aliases.size(); ++a) {
+      lua_pushstring(L, d.aliases[a].c_str());
+      lua_seti(L, -2, static_cast<lua_Integer>(a + 1));
+    }
+    lua_setfield(L, -2, "aliases");
+    lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  return 1;
+}
+
+}  // namespace
+
+void bind_sim(lua_State* L) {
+  static const luaL_Reg methods[] = {
+      {"exec", guarded<l_exec>},         {"check", guarded<l_check>},
+      {"load", guarded<l_load>},         {"step", guarded<l_step>},
+      {"run_until", guarded<l_run_until>}, {"run_for", guarded<l_run_for>},
+      {"time", guarded<l_time>},         {"dt", guarded<l_dt>},
+      {"count", guarded<l_count>},       {"aircraft", guarded<l_aircraft>},
+      {"get", guarded<l_get>},           {"conflicts", guarded<l_conflicts>},
+      {"los", guarded<l_los>},           {"totals", guarded<l_totals>},
+      {"output", guarded<l_output>},     {"copy", guarded<l_copy>},
+      {"snapshot", guarded<l_snapshot>}, {nullptr, nullptr},
+  };
+  define_class<command::Stack>(L, kSimMt, methods);
+  push_squawk_subtable(L, "sim");
+  lua_pushcfunction(L, guarded<l_new>);
+  lua_setfield(L, -2, "new");
+  lua_pushcfunction(L, guarded<l_commands>);
+  lua_setfield(L, -2, "commands");
+  lua_pop(L, 1);
+}
+
+}  // namespace squawk::script
