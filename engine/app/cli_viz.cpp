@@ -1,4 +1,5 @@
 // squawk render / squawk plot: SVG pictures of episodes and training curves.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <vector>
