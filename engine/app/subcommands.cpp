@@ -86,6 +86,20 @@ const std::vector<Subcommand>& subcommands() {
        "  --notes FILE   retrieval notes to use instead of the shipped ones\n"
        "  --no-notes     the registry documentation alone\n",
        cmd_rag},
+      {"repl", "repl [SCENARIO.scn]        talk to the simulation in English (or !TrafScript)",
+       "usage: squawk repl [SCENARIO.scn] [--mode offline|single|multi] [--llm-url URL]\n"
+       "                   [--llm-model NAME] [--llm-api ollama|openai] [--seed N] [--navdata DIR]\n\n"
+       "An interactive session on one simulation. Each English line goes through\n"
+       "the translation graph; the TrafScript it produced is shown, run, and the\n"
+       "aircraft it touched are listed. Lines starting with ! are TrafScript as\n"
+       "typed. :state lists the traffic, :run SECONDS advances time, :trace shows\n"
+       "the graph's path for the last request, :mode M switches the translator,\n"
+       ":help, :quit. From a pipe there is no banner or prompt, only replies.\n\n"
+       "The LLM comes from --llm-url/--llm-model/--llm-api or SQUAWK_LLM_URL,\n"
+       "SQUAWK_LLM_MODEL, SQUAWK_LLM_API; with none (or when the server fails) the\n"
+       "offline grammar translates. The default mode is multi with an LLM, else\n"
+       "offline.\n",
+       cmd_repl},
       {"scn", "scn FILE.scn               run a BlueSky scenario headless and summarise it",
        "usage: squawk scn FILE.scn [--until SECONDS] [--navdata DIR] [--dump-json] [--seed N]\n"
        "       squawk scn DIR --conformance [--max-time SECONDS] [--navdata DIR]\n\n"

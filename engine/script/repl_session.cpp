@@ -1,0 +1,93 @@
+#include "script/repl_session.h"
+
+#include <lua.hpp>
+
+namespace squawk::script {
+
+namespace {
+
+constexpr const char* kSessionKey = "squawk.repl.session";  // registry slot
+constexpr const char* kModule = "translate.repl";
+
+int traceback(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
+  return 1;
+}
+
+// pcall of the function below `nargs` arguments, with a traceback; on error
+// the stack is back to `base` and the message is returned.
+Status pcall(lua_State* L, int nargs, int nresults) {
+  const int fn = lua_gettop(L) - nargs;
+  lua_pushcfunction(L, traceback);
+  lua_insert(L, fn);
+  const int rc = lua_pcall(L, nargs, nresults, fn);
+  lua_remove(L, fn);
+  if (rc == LUA_OK) return Status::ok();
+  std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
+  lua_pop(L, 1);
+  return Status::invalid(msg);
+}
+
+}  // namespace
+
+Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const std::string& mode) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, kModule);
+  SQUAWK_RETURN_IF_ERROR(pcall(L, 1, 1));
+  lua_getfield(L, -1, "new");
+  lua_createtable(L, 0, 2);
+  if (!scenario.empty()) {
+    lua_pushstring(L, scenario.c_str());
+    lua_setfield(L, -2, "scenario");
+  }
+  if (!mode.empty()) {
+    lua_pushstring(L, mode.c_str());
+    lua_setfield(L, -2, "mode");
+  }
+  lua_pushinteger(L, static_cast<lua_Integer>(vm.options().seed));
+  lua_setfield(L, -2, "seed");
+  Status st = pcall(L, 1, 1);
+  if (!st.is_ok()) {
+    lua_settop(L, top);
+    return st;
+  }
+  lua_setfield(L, LUA_REGISTRYINDEX, kSessionKey);
+  lua_settop(L, top);
+  return ReplSession(vm);
+}
+
+Status ReplSession::call(const char* method, const std::string* arg, int nresults) {
+  lua_State* L = vm_->state();
+  lua_getfield(L, LUA_REGISTRYINDEX, kSessionKey);
+  lua_getfield(L, -1, method);
+  lua_insert(L, -2);  // method, session
+  if (arg) lua_pushlstring(L, arg->data(), arg->size());
+  return pcall(L, arg ? 2 : 1, nresults);
+}
+
+Result<ReplReply> ReplSession::handle(const std::string& line) {
+  lua_State* L = vm_->state();
+  const int top = lua_gettop(L);
+  SQUAWK_RETURN_IF_ERROR(call("handle", &line, 2));
+  ReplReply r;
+  size_t n = 0;
+  const char* s = lua_tolstring(L, -2, &n);
+  if (s) r.text.assign(s, n);
+  r.quit = lua_toboolean(L, -1) != 0;
+  lua_settop(L, top);
+  return r;
+}
+
+Result<std::string> ReplSession::banner() {
+  lua_State* L = vm_->state();
+  const int top = lua_gettop(L);
+  SQUAWK_RETURN_IF_ERROR(call("banner", nullptr, 1));
+  std::string text = lua_tostring(L, -1) ? lua_tostring(L, -1) : "";
+  lua_settop(L, top);
+  return text;
+}
+
+}  // namespace squawk::script

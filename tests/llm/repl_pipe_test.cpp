@@ -1,0 +1,111 @@
+// `squawk repl` driven through a pipe: English in, the simulation changes.
+// Runs the built binary (SQUAWK_BINARY); skips when it has not been built.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/files.h"
+#include "loopback_server.h"
+
+using squawk::testing::HttpRequestSeen;
+using squawk::testing::LoopbackServer;
+using squawk::testing::Reply;
+
+namespace {
+
+// Runs `squawk repl ARGS` with `input` on stdin; returns stdout+stderr.
+std::string run_repl(const std::string& args, const std::string& input) {
+  const std::string in_path = "/tmp/squawk_repl_test_input.txt";
+  std::ofstream(in_path) << input;
+  std::string cmd = "env -u SQUAWK_LLM_URL -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API timeout 60 ";
+  cmd.append(SQUAWK_BINARY).append(" repl ").append(args).append(" < ").append(in_path).append(" 2>&1");
+  std::string out;
+  if (FILE* p = ::popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+    ::pclose(p);
+  }
+  return out;
+}
+
+// The heading [deg] on the last state line of aircraft `id`, or -1.
+double last_heading(const std::string& out, const std::string& id) {
+  double hdg = -1;
+  std::istringstream lines(out);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream w(line);
+    std::string first;
+    w >> first;
+    if (first != id) continue;
+    const auto at = line.find("hdg");
+    if (at != std::string::npos) hdg = std::stod(line.substr(at + 3));
+  }
+  return hdg;
+}
+
+}  // namespace
+
+TEST_CASE("repl from a pipe: create in English, turn, run, heading changed") {
+  if (!squawk::files::exists(SQUAWK_BINARY)) {
+    MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
+    return;
+  }
+  const std::string out = run_repl("--mode offline",
+                                   "Create aircraft KL204 type A320 at 52 N 4 E heading 90 at FL250, 280 knots\n"
+                                   "turn KL204 to heading 180\n"
+                                   ":run 120\n"
+                                   ":quit\n"
+                                   "turn KL204 to heading 90\n");
+  INFO(out);
+  CHECK(out.find("> CRE KL204 A320 52 4 90 FL250 280") != std::string::npos);
+  CHECK(out.find("> HDG KL204 180") != std::string::npos);
+  CHECK(out.find("t = 120.0 s") != std::string::npos);
+  CHECK(last_heading(out, "KL204") == doctest::Approx(180.0).epsilon(0.005));
+  CHECK(out.find("HDG KL204 90") == std::string::npos);  // nothing after :quit
+  CHECK(out.find("squawk>") == std::string::npos);      // no prompt on a pipe
+}
+
+TEST_CASE("repl with an Ollama server: the multi-agent graph, and :trace") {
+  if (!squawk::files::exists(SQUAWK_BINARY)) {
+    MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
+    return;
+  }
+  LoopbackServer server([](const HttpRequestSeen& req, int) {
+    std::string content = "I cannot help";
+    if (req.body.find("Select one command") != std::string::npos) content = "\\boxed{HDG}";
+    else if (req.body.find("Determine if the user gave") != std::string::npos) content = "YES";
+    else if (req.body.find("valid instance of the command") != std::string::npos) content = "\\boxed{HDG KL204 180}";
+    nlohmann::json j = {{"model", "fake"}, {"message", {{"role", "assistant"}, {"content", content}}}, {"done", true}};
+    return Reply::json(200, j.dump());
+  });
+  const std::string out = run_repl("--llm-url " + server.url() + " --llm-model fake --mode multi",
+                                   "!CRE KL204 A320 52 4 90 FL250 280\n"
+                                   "point KL204 towards the south\n"
+                                   ":trace\n"
+                                   ":run 120\n");
+  INFO(out);
+  CHECK(out.find("> HDG KL204 180") != std::string::npos);
+  CHECK(out.find("LLM replied: \\boxed{HDG}") != std::string::npos);
+  CHECK(out.find("verify") != std::string::npos);
+  CHECK(last_heading(out, "KL204") == doctest::Approx(180.0).epsilon(0.005));
+  CHECK(server.requests().size() == 3);
+}
+
+TEST_CASE("repl with a dead server falls back to the offline grammar") {
+  if (!squawk::files::exists(SQUAWK_BINARY)) {
+    MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
+    return;
+  }
+  const int port = squawk::testing::closed_port();
+  const std::string out = run_repl("--llm-url http://127.0.0.1:" + std::to_string(port) + " --llm-model m",
+                                   "!CRE KL204 A320 52 4 90 FL250 280\nturn KL204 to heading 270\n:trace\n");
+  INFO(out);
+  CHECK(out.find("> HDG KL204 270") != std::string::npos);
+  CHECK(out.find("falling back to the offline translator") != std::string::npos);
+}
