@@ -22,10 +22,14 @@
 --   translate(text, opts) -> {commands = {...}} or {ask = "..."}, plus
 --       .trace, .mode, .error (when no valid command came out)
 --     opts.mode     "offline" | "single" | "multi"; default multi with an LLM,
---                   else offline
+--                   else offline; single/multi without an LLM run offline
+--                   (the trace says so, result.mode is "offline")
 --     opts.sim      a squawk.sim to translate against (read, never changed:
 --                   candidates run on a copy); default a new sim with opts.setup
---     opts.setup    TrafScript run on the new sim when opts.sim is absent
+--     opts.setup    TrafScript run on the new sim when opts.sim is absent; a
+--                   line the sim rejects is skipped and noted in the trace
+--     opts.waypoints names of user waypoints (DEFWPT) in opts.sim; those
+--                   defined in opts.setup are found by themselves
 --     opts.llm      a squawk.llm client; default squawk.llm.from_env()
 --     opts.k        documents retrieved (default 5)
 --     opts.max_retries  feedback rounds (default 3)
@@ -156,14 +160,19 @@ function M.translate(text, opts)
   if not M.modes[mode] then
     error("translate: mode '" .. tostring(mode) .. "' is not one of offline, single, multi")
   end
-  local sim = opts.sim
+  local requested = mode
+  if mode ~= "offline" and not llm then mode = "offline" end
+  local sim, setup_notes = opts.sim, {}
   if not sim then
     sim = squawk.sim.new()
-    if opts.setup and opts.setup ~= "" then
-      local ok, msg = sim:exec(opts.setup)
-      if not ok then error("translate: setup failed: " .. msg) end
+    for _, line in ipairs(nodes.split_commands(opts.setup or "")) do
+      local ok, msg = sim:exec(line)
+      if not ok then setup_notes[#setup_notes + 1] = "setup line skipped: " .. msg end
     end
   end
+  local waypoints = {}
+  for _, w in ipairs(opts.waypoints or {}) do waypoints[#waypoints + 1] = w end
+  for _, w in ipairs(nodes.defined_waypoints(opts.setup or "")) do waypoints[#waypoints + 1] = w end
   local ctx = {
     llm = llm,
     sim = sim,
@@ -173,9 +182,12 @@ function M.translate(text, opts)
     max_retries = opts.max_retries or 3,
     max_steps = opts.max_steps or 40,
     on_token = opts.on_token,
+    waypoints = waypoints,
   }
   local state = { request = text, trace = {}, retries = 0, mode = mode }
-  nodes.say(state, "start", string.format("mode %s, %s", mode, llm and llm:describe() or "no LLM"))
+  nodes.say(state, "start", string.format("mode %s, %s", mode, llm and llm:describe() or "no LLM")
+    .. (requested ~= mode and (" (" .. requested .. " needs an LLM: set SQUAWK_LLM_URL)") or ""))
+  for _, note in ipairs(setup_notes) do nodes.say(state, "setup", note) end
   M.modes[mode]():run(state, ctx)
   local result = { trace = state.trace, mode = mode, error = state.error }
   if state.ask then

@@ -192,8 +192,37 @@ function M.single(state, ctx)
   return label
 end
 
+-- Names defined by DEFWPT commands in a TrafScript line.
+function M.defined_waypoints(line)
+  local names = {}
+  for _, c in ipairs(M.split_commands(line)) do
+    local cmd, name = c:match("^(%S+)[%s,]+([^%s,]+)")
+    if cmd and cmd:upper() == "DEFWPT" then names[#names + 1] = name end
+  end
+  return names
+end
+
+-- The route waypoint names of an aircraft, read from LISTRTE on a copy.
+local function route_of(sim, id)
+  local ok, text = sim:copy():exec("LISTRTE " .. id)
+  local names = {}
+  if not ok then return names end
+  for line in text:gmatch("[^\n]+") do
+    local name = line:match("^[%*%s]%s*(%S+)%s+%-?%d+%.%d+%s+%-?%d+%.%d+")
+    if name then names[#names + 1] = name end
+  end
+  return names
+end
+
+-- What the offline translator may know of the simulation.
+function M.world(sim, waypoints)
+  local aircraft = sim:aircraft()
+  for _, a in ipairs(aircraft) do a.route = route_of(sim, a.id) end
+  return { aircraft = aircraft, waypoints = waypoints or {} }
+end
+
 function M.offline(state, ctx)
-  local world = { aircraft = ctx.sim:aircraft() }
+  local world = M.world(ctx.sim, ctx.waypoints)
   local tr = squawk.translate.offline(state.request, world)
   if tr.ask then
     state.ask = tr.ask
