@@ -51,6 +51,16 @@ TEST_CASE("BM25 scores match a hand computation") {
   CHECK(h2[0].score > h2[1].score);
 }
 
+TEST_CASE("an unknown query word one edit from an indexed term stands for it") {
+  Bm25Index idx({{"HDG", "heading turn"}, {"DEL", "delete remove"}});
+  REQUIRE(idx.search("dleete", 1).size() == 1);
+  CHECK(idx.search("dleete", 1)[0].doc == 1);  // swap of neighbours
+  CHECK(idx.search("tunr", 1)[0].doc == 0);
+  CHECK(idx.search("headinx", 1)[0].doc == 0);  // substitution
+  CHECK(idx.search("trn", 1).empty());         // too short to guess
+  CHECK(idx.search("dlt", 1).empty());         // more than one edit
+}
+
 TEST_CASE("registry documents carry name, aliases, usage, help and examples") {
   const auto& reg = squawk::command::Registry::instance();
   auto docs = registry_documents(reg);
