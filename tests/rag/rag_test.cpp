@@ -53,10 +53,11 @@ TEST_CASE("BM25 scores match a hand computation") {
 
 TEST_CASE("an unknown query word one edit from an indexed term stands for it") {
   Bm25Index idx({{"HDG", "heading turn"}, {"DEL", "delete remove"}});
-  REQUIRE(idx.search("dleete", 1).size() == 1);
-  CHECK(idx.search("dleete", 1)[0].doc == 1);  // swap of neighbours
-  CHECK(idx.search("tunr", 1)[0].doc == 0);
-  CHECK(idx.search("headinx", 1)[0].doc == 0);  // substitution
+  auto first = [&](const char* q) { auto h = idx.search(q, 1); return h.empty() ? size_t{99} : h[0].doc; };
+  CHECK(first("dleete") == 1);  // swap of neighbours
+  CHECK(first("tunr") == 0);
+  CHECK(first("delate") == 1);  // substitution
+  CHECK(first("turnn") == 0);   // insertion
   CHECK(idx.search("trn", 1).empty());         // too short to guess
   CHECK(idx.search("dlt", 1).empty());         // more than one edit
 }
