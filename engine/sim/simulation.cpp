@@ -156,10 +156,11 @@ void Simulation::update_asas() {
   if (crs_.enabled) cr_.resolve(traf_, cd_, cds_, crs_, perf_opts_);
 }
 
-// LNAV: fly to the active waypoint, switch at passage (route.h); VNAV: aim at
-// the altitude constraint of the active waypoint so that it is reached there
-// (vs = |dh| gs / dist, capped by the class), and take a waypoint's speed
-// constraint when passing it.
+// LNAV: fly to the active waypoint, switch at passage (route.h). VNAV, for
+// the altitude constraint of the active waypoint (BlueSky's ToC/ToD idea):
+// climb at once at the default V/S; descend from the top of descent, where
+// the 3000 ft per 10 NM path (vs = steepness * gs) meets the constraint at
+// the waypoint. Passing a waypoint with a speed constraint selects it.
 void Simulation::update_autopilot() {
   Traffic& t = traf_;
   const int n = t.n();
@@ -191,12 +192,14 @@ void Simulation::update_autopilot() {
       qd = geo::kwikqdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
     }
     t.sel_hdg[i] = qd.qdr_deg;
-    if (t.vnav[i] && wp->has_alt()) {
-      const double dh = std::fabs(wp->alt - t.alt[i]);
-      const double dist = std::max(units::nm_to_m(qd.dist_nm), 1.0);
-      const double vsmax = wp->alt > t.alt[i] ? t.perf[i].vsmax : -t.perf[i].vsmin;
-      t.sel_alt[i] = wp->alt;
-      t.sel_vs[i] = std::min(std::max(dh * t.gs[i] / dist, 0.1), vsmax);
+    if (t.vnav[i] && wp->has_alt() && wp->alt != t.sel_alt[i]) {
+      if (wp->alt > t.alt[i]) {  // climb as soon as possible
+        t.sel_alt[i] = wp->alt;
+        t.sel_vs[i] = kDefaultVs;
+      } else if (units::nm_to_m(qd.dist_nm) <= (t.alt[i] - wp->alt) / kVnavSteepness) {  // top of descent
+        t.sel_alt[i] = wp->alt;
+        t.sel_vs[i] = kVnavSteepness * t.gs[i];
+      }
     }
   }
 }

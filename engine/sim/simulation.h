@@ -43,6 +43,9 @@ inline constexpr double kDefaultBankDeg = 25.0;         // [deg] BlueSky ap.bank
 // [m/s] vertical speed used when none is selected (1500 ft/min).
 inline constexpr double kDefaultVs = 1500.0 * 0.3048 / 60.0;
 
+// [-] VNAV descent path gradient: 3000 ft per 10 NM (BlueSky's steepness).
+inline constexpr double kVnavSteepness = 3000.0 * 0.3048 / (10.0 * 1852.0);
+
 enum class RunState { kHold = 0, kOp = 1 };
 
 class Simulation {
@@ -128,7 +131,8 @@ class Simulation {
   // BANK: bank angle [deg] in (0, 90).
   Status set_bank(std::string_view acid, double bank_deg);
   // LNAV / VNAV switches. Turning on needs a route with an active waypoint;
-  // VNAV on also turns LNAV on.
+  // VNAV on also turns LNAV on. While VNAV is on it sets sel_alt and sel_vs
+  // from the active waypoint's altitude constraint (rule in simulation.cpp).
   Status set_lnav(std::string_view acid, bool on);
   Status set_vnav(std::string_view acid, bool on);
 

@@ -67,12 +67,30 @@ TEST_CASE("LNAV flies a 3-waypoint route and switches at each waypoint") {
   CHECK(t.lnav[0] == 0);
   CHECK(t.vnav[0] == 0);
   CHECK(t.route[0].active() == -1);
-  // VNAV aims to meet TWO's constraint at TWO; the switch comes R early, so
-  // the aircraft is then short by at most vs R / gs (~100 m) and levels off
-  // at the constraint afterwards.
-  CHECK(alt_at_two > units::fl_to_m(50) - 150.0);
-  CHECK(alt_at_two < units::fl_to_m(50));
-  CHECK(t.alt[0] == doctest::Approx(units::fl_to_m(50)));
+  // VNAV climbs at once (1500 ft/min): level at TWO's constraint well before TWO.
+  CHECK(alt_at_two == doctest::Approx(units::fl_to_m(50)));
+}
+
+TEST_CASE("VNAV descends from the top of descent on a 3000 ft / 10 NM path") {
+  Simulation sim;
+  const double alt0 = units::fl_to_m(100), alt1 = units::fl_to_m(40);
+  REQUIRE(sim.create("KL1", "A320", 52.0, 4.0, 0.0, alt0, 150.0).is_ok());
+  const Waypoint w = wpt("LOW", 53.0, 4.0, alt1);
+  REQUIRE(sim.add_waypoint("KL1", w).is_ok());
+  REQUIRE(sim.set_vnav("KL1", true).is_ok());
+  const Traffic& t = sim.traffic();
+  const double tod = (alt0 - alt1) / kVnavSteepness;  // 18 000 ft * 10 NM / 3000 ft = 20 NM
+  CHECK(tod == doctest::Approx(units::nm_to_m(20.0)));
+  double dist_at_tod = -1, alt_halfway = -1;
+  while (t.lnav[0] && sim.simt() < 2000.0) {
+    sim.step();
+    if (dist_at_tod < 0 && t.vs[0] < 0.0) dist_at_tod = dist_m(t, 0, w);
+    if (alt_halfway < 0 && dist_m(t, 0, w) < 0.5 * tod) alt_halfway = t.alt[0];
+  }
+  CHECK(dist_at_tod == doctest::Approx(tod).epsilon(0.01));
+  CHECK(alt_halfway == doctest::Approx(0.5 * (alt0 + alt1)).epsilon(0.03));
+  // The path gradient brings it down to (about) the constraint at the waypoint.
+  CHECK(t.alt[0] == doctest::Approx(alt1).epsilon(0.02));
 }
 
 TEST_CASE("route edits, DIRECT, DEST and ORIG") {
