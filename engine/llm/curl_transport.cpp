@@ -8,6 +8,9 @@ namespace squawk::llm {
 
 namespace {
 
+// A local server is never reached through a proxy from http_proxy & co.
+constexpr const char* kNoProxy = "localhost,127.0.0.1,::1";
+
 struct Transfer {
   CURL* curl = nullptr;
   const BodySink* sink = nullptr;
@@ -47,6 +50,7 @@ Result<long> CurlTransport::post(const HttpRequest& request, const BodySink& sin
   curl_easy_setopt(curl, CURLOPT_POSTFIELDSIZE_LARGE, static_cast<curl_off_t>(request.body.size()));
   curl_easy_setopt(curl, CURLOPT_HTTPHEADER, headers);
   curl_easy_setopt(curl, CURLOPT_NOSIGNAL, 1L);
+  curl_easy_setopt(curl, CURLOPT_NOPROXY, kNoProxy);
   curl_easy_setopt(curl, CURLOPT_CONNECTTIMEOUT_MS, to_ms(request.connect_timeout_s));
   curl_easy_setopt(curl, CURLOPT_TIMEOUT_MS, to_ms(request.timeout_s));
   curl_easy_setopt(curl, CURLOPT_WRITEFUNCTION, on_write);

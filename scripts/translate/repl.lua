@@ -98,7 +98,9 @@ function Session:handle(line)
     end
     if cmd == "run" then
       local s = tonumber(arg)
-      if not s or s < 0 then return "  :run expects a number of seconds, e.g. :run 60", false end
+      if not s or s < 0 or s > 86400 then
+        return "  :run expects a number of seconds from 0 to 86400, e.g. :run 60", false
+      end
       self.sim:run_for(s)
       return self:state_text(), false
     end
