@@ -80,7 +80,7 @@ int logits(const Args& a) {
   if (st.is_ok()) st = l->model.lm_logits(hidden, out);
   if (!st.is_ok()) return failure(st);
   if (a.has("--json")) {
-    nlohmann::json j = {{"tokens", *ids}, {"logits", out}};
+    nlohmann::ordered_json j = {{"tokens", *ids}, {"logits", out}};
     std::printf("%s\n", j.dump().c_str());
     return kExitOk;
   }

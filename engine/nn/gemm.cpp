@@ -1,5 +1,7 @@
 // GCC 12 reports -Wmaybe-uninitialized falsely inside Eigen's AVX-512 product kernels.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include "nn/gemm.h"
 
 #include <algorithm>
