@@ -10,6 +10,10 @@ namespace squawk::env {
 
 using units::kDeg;
 
+namespace {
+constexpr double kRadToDeg = 1.0 / kDeg;
+}  // namespace
+
 void Fleet::clear() {
   for (auto* v : {&lat_, &lon_, &hdg_, &tas_, &sel_hdg_, &sel_tas_, &cos_hdg_, &sin_hdg_,
                   &cos_lat_, &sin_lat_, &dlat_, &cos_dlat_, &sin_dlat_})
@@ -37,41 +41,48 @@ void Fleet::set_heading(int i, double hdg_deg) { sel_hdg_[static_cast<size_t>(i)
 void Fleet::set_speed(int i, double tas) { sel_tas_[static_cast<size_t>(i)] = tas; }
 
 void Fleet::step(double dt, const FleetLimits& lim) {
-  const double tan_bank = std::tan(lim.bank * kDeg);
+  if (lim.bank != bank_) {
+    bank_ = lim.bank;
+    rate_factor_ = units::rad_to_deg(units::kG0 * std::tan(lim.bank * kDeg));
+  }
   const double dv_max = lim.accel * dt;
+  const double dlat_per_ms = dt / units::kREarth;  // [rad] per m/s of northward speed
+  const double cap = lim.speed_cap > 0.0 ? lim.speed_cap : 1e300;
   for (size_t i = 0; i < lat_.size(); ++i) {
     // 1. speed
-    const double target = lim.speed_cap > 0.0 ? std::min(sel_tas_[i], lim.speed_cap) : sel_tas_[i];
-    const double dv = target - tas_[i];
-    tas_[i] = std::fabs(dv) > dv_max ? tas_[i] + std::copysign(dv_max, dv) : target;
+    const double target = std::min(sel_tas_[i], cap);
+    double tas = tas_[i];
+    if (tas != target) {
+      const double dv = target - tas;
+      tas = std::fabs(dv) > dv_max ? tas + std::copysign(dv_max, dv) : target;
+      tas_[i] = tas;
+    }
     // 2. heading
     const double want = sel_hdg_[i];
-    double hdg = hdg_[i];
-    if (hdg != want) {
-      const double rate = units::rad_to_deg(units::kG0 * tan_bank / std::max(tas_[i], 0.01));
+    if (hdg_[i] != want) {
+      const double hdg = hdg_[i];
+      const double rate = rate_factor_ / std::max(tas, 0.01);
       double del = std::fmod(want - hdg + 180.0, 360.0);
       if (del < 0) del += 360.0;
       del -= 180.0;
-      hdg = std::fabs(del) > dt * rate ? hdg + std::copysign(dt * rate, del) : want;
-      hdg = geo::wrap360(hdg);
-      hdg_[i] = hdg;
-      cos_hdg_[i] = std::cos(hdg * kDeg);
-      sin_hdg_[i] = std::sin(hdg * kDeg);
+      const double next = geo::wrap360(std::fabs(del) > dt * rate ? hdg + std::copysign(dt * rate, del) : want);
+      hdg_[i] = next;
+      cos_hdg_[i] = std::cos(next * kDeg);
+      sin_hdg_[i] = std::sin(next * kDeg);
     }
-    // 3. position
-    const double gsn = tas_[i] * cos_hdg_[i], gse = tas_[i] * sin_hdg_[i];
-    const double dlat = dt * gsn / units::kREarth;  // [rad]
+    // 3. position; cos/sin of latitude rotated by the step's increment
+    const double dlat = dlat_per_ms * tas * cos_hdg_[i];  // [rad]
     if (dlat != dlat_[i]) {
       dlat_[i] = dlat;
       cos_dlat_[i] = std::cos(dlat);
       sin_dlat_[i] = std::sin(dlat);
     }
-    lat_[i] += dlat / kDeg;
+    lat_[i] += dlat * kRadToDeg;
     const double c = cos_lat_[i] * cos_dlat_[i] - sin_lat_[i] * sin_dlat_[i];
     const double s = sin_lat_[i] * cos_dlat_[i] + cos_lat_[i] * sin_dlat_[i];
     cos_lat_[i] = c;
     sin_lat_[i] = s;
-    lon_[i] += dt * gse / c / units::kREarth / kDeg;
+    lon_[i] += dlat_per_ms * kRadToDeg * tas * sin_hdg_[i] / c;
   }
 }
 

@@ -62,6 +62,8 @@ class Fleet {
   std::vector<double> cos_hdg_, sin_hdg_, cos_lat_, sin_lat_;
   // Latitude increment [rad] of the last step and its cos/sin.
   std::vector<double> dlat_, cos_dlat_, sin_dlat_;
+  double bank_ = -1.0;         // [deg] bank angle rate_factor_ was computed for
+  double rate_factor_ = 0.0;   // [deg/s * m/s] turn rate times TAS
 };
 
 }  // namespace squawk::env

@@ -135,7 +135,9 @@ bool HorizontalCrEnv::start(const EpisodeSetup& setup, uint64_t episode_index) {
   stats_.index = episode_index;
   compute_observation();
   if (observer_) observer_->on_reset(*this);
-  return config_.rules == Rules::kGym ? true : run_automatic();
+  if (config_.rules == Rules::kGym) return true;
+  run_automatic();
+  return !done_;
 }
 
 void HorizontalCrEnv::compute_observation() {
@@ -198,13 +200,13 @@ StepFacts HorizontalCrEnv::step_facts(double hdg_before) const {
 
 void HorizontalCrEnv::advance(double hdg_cmd) {
   fleet_.set_heading(0, hdg_cmd);
-  const bool paper = config_.rules == Rules::kPaper;
+  const bool each_substep = config_.rules == Rules::kPaper && config_.substep_intrusions;
   const double r2 = config_.zone_radius * config_.zone_radius;
   const Fleet& f = fleet_;
   for (int s = 0; s < config_.substeps; ++s) {
     fleet_.step(config_.dt, config_.limits);
     sim_time_ += config_.dt;
-    if (!paper) continue;
+    if (!each_substep) continue;
     const double lat0 = f.lat(0), lon0 = f.lon(0), c0 = f.cos_lat(0), s0 = f.sin_lat(0);
     for (int j = 1; j <= config_.num_intruders; ++j) {
       const Vec2 p = kwik_relative(lat0, lon0, c0, s0, f.lat(j), f.lon(j), f.cos_lat(j), f.sin_lat(j));
@@ -217,6 +219,8 @@ void HorizontalCrEnv::advance(double hdg_cmd) {
   ++stats_.steps;
   stats_.sim_time = sim_time_;
   compute_observation();
+  if (config_.rules == Rules::kPaper && !config_.substep_intrusions && intruders_in_zone() > 0)
+    ++stats_.intrusions;
 }
 
 bool HorizontalCrEnv::conflict_ahead() const {
@@ -231,8 +235,7 @@ bool HorizontalCrEnv::conflict_ahead() const {
 }
 
 double HorizontalCrEnv::mvp_action() const {
-  const double tas = fleet_.tas(0);
-  const Vec2 vo{tas * std::sin(wpt_qdr_ * kDeg), tas * std::cos(wpt_qdr_ * kDeg)};
+  const Vec2 vo{fleet_.gs_east(0), fleet_.gs_north(0)};
   Vec2 dv;
   bool any = false;
   for (int i = 0; i < config_.num_intruders; ++i) {
@@ -245,7 +248,14 @@ double HorizontalCrEnv::mvp_action() const {
     dv.y += d.y;
     any = true;
   }
-  const double target = any ? std::atan2(vo.x + dv.x, vo.y + dv.y) / kDeg : wpt_qdr_;
+  // No conflict on the current track: hold it while the direct route is in
+  // conflict, else turn toward the waypoint (BlueSky's resume-navigation idea).
+  double target = fleet_.hdg(0);
+  if (any) {
+    target = std::atan2(vo.x + dv.x, vo.y + dv.y) / kDeg;
+  } else if (!conflict_ahead()) {
+    target = wpt_qdr_;
+  }
   return std::clamp(geo::wrap180(target - fleet_.hdg(0)) / config_.heading_per_action, -1.0, 1.0);
 }
 
@@ -259,6 +269,11 @@ void HorizontalCrEnv::finish(bool truncated) {
   if (observer_) observer_->on_end(*this, stats_);
 }
 
+double HorizontalCrEnv::reward_of(const StepFacts& f) const {
+  if (config_.reward_fn) return config_.reward_fn(f);
+  return config_.rules == Rules::kGym ? gym_reward(config_.weights, f) : paper_reward(config_.weights, f);
+}
+
 double HorizontalCrEnv::step(double action) {
   if (done_) return 0.0;
   const double a = std::clamp(std::isfinite(action) ? action : 0.0, -1.0, 1.0);
@@ -270,47 +285,44 @@ double HorizontalCrEnv::step(double action) {
   advance(info.hdg_cmd);
   info.facts = step_facts(hdg_before);
   const StepFacts& f = info.facts;
-  if (config_.reward_fn) {
-    info.reward = config_.reward_fn(f);
-  } else {
-    info.reward = config_.rules == Rules::kGym ? gym_reward(config_.weights, f)
-                                               : paper_reward(config_.weights, f);
-  }
+  info.reward = reward_of(f);
   stats_.total_reward += info.reward;
   ++stats_.decisions;
   if (config_.rules == Rules::kGym) stats_.intrusions += f.intrusions;
   if (observer_) observer_->on_step(*this, info);
+  double reward = info.reward;
   if (f.reached) {
     stats_.reached = true;
     finish(false);
   } else if (stats_.steps >= config_.max_steps) {
     finish(true);
   } else if (config_.rules == Rules::kPaper) {
-    run_automatic();
+    reward += run_automatic();
   }
-  return info.reward;
+  return reward;
 }
 
-bool HorizontalCrEnv::run_automatic() {
+double HorizontalCrEnv::run_automatic() {
+  double reward = 0.0;
   while (!done_) {
-    if (conflict_ahead()) return true;
+    if (conflict_ahead()) return reward;
     const double hdg_before = fleet_.hdg(0);
-    const double hdg_cmd = wpt_qdr_;
-    advance(hdg_cmd);
-    if (observer_) {
-      StepInfo info;
-      info.hdg_cmd = hdg_cmd;
-      info.facts = step_facts(hdg_before);
-      observer_->on_step(*this, info);
-    }
-    if (wpt_dist_ < config_.reach_radius) {
+    StepInfo info;
+    info.hdg_cmd = wpt_qdr_;
+    advance(info.hdg_cmd);
+    info.facts = step_facts(hdg_before);
+    info.reward = reward_of(info.facts);
+    reward += info.reward;
+    stats_.total_reward += info.reward;
+    if (observer_) observer_->on_step(*this, info);
+    if (info.facts.reached) {
       stats_.reached = true;
       finish(false);
     } else if (stats_.steps >= config_.max_steps) {
       finish(true);
     }
   }
-  return false;
+  return reward;
 }
 
 }  // namespace squawk::env

@@ -28,13 +28,16 @@
 //   intruder's current velocity with the zone radius and `lookahead` [s]
 //   (a pair already inside the zone is a conflict too). With no conflict the
 //   ownship is steered at the waypoint by itself (no decision, no reward);
-//   with one the agent is asked, and its action's step earns paper_reward
-//   (Eq. 1-4). The episode ends when the waypoint is reached; max_steps env
-//   steps (agent and automatic) is a safety cap that counts as a failure.
-//   An intrusion is any intruder inside the zone at any sub-step (every 5 s),
-//   whoever was steering; success = waypoint reached with no intrusion.
+//   with one the agent is asked. Every env step, agent or automatic, earns
+//   paper_reward (Eq. 1-4); step() returns the reward of the agent's step plus
+//   those of the automatic steps that follow it until the next decision (the
+//   consequences of that action), and the episode return is the sum over all
+//   its env steps. The episode ends when the waypoint is reached; max_steps
+//   env steps (agent and automatic) is a safety cap that counts as a failure.
+//   An intrusion is any intruder inside the zone at any sub-step (every 5 s;
+//   only at step ends when substep_intrusions is false), whoever was
+//   steering; success = waypoint reached with no intrusion.
 //   An episode whose conflicts never need the agent ends inside reset().
-//   Episode return = sum of the rewards of agent steps.
 //
 // Randomness: reset(rng) draws the whole scenario from the rng it is given,
 // in a fixed order (per intruder dpsi, cpa, tlos; then the waypoint
@@ -83,6 +86,9 @@ struct HorizontalCrConfig {
   double dist_scale = 150000.0;      // [m] observation distance normaliser
   double speed_scale = 150.0;        // [m/s] observation speed normaliser
   double mvp_margin = 1.05;          // [-] MVP zone factor (BlueSky resofach)
+  // Paper rules: look for intrusions at every sub-step (true) or only at the
+  // end of each env step, as BlueSky-Gym does (false).
+  bool substep_intrusions = true;
   RewardWeights weights;
   // Replaces the built-in reward when set (e.g. a scenario's Lua function).
   std::function<double(const StepFacts&)> reward_fn;
@@ -112,7 +118,7 @@ EpisodeSetup::Intruder creconfs(const HorizontalCrConfig& config, double dpsi, d
 
 struct EpisodeStats {
   uint64_t index = 0;       // [-] episode number within its run
-  double total_reward = 0;  // [-] sum of the rewards the agent received
+  double total_reward = 0;  // [-] sum of the rewards of all env steps
   int decisions = 0;        // [-] agent steps
   int steps = 0;            // [-] env steps, agent and automatic
   int intrusions = 0;       // [-] intrusion count (gym: intruders at step ends; paper: sub-steps with one)
@@ -127,7 +133,7 @@ struct StepInfo {
   bool agent = false;      // the agent's action (false: automatic steering)
   double action = 0.0;     // [-] units of heading_per_action (agent steps)
   double hdg_cmd = 0.0;    // [deg] heading commanded
-  double reward = 0.0;     // [-] reward of the step (agent steps)
+  double reward = 0.0;     // [-] reward of this env step
   StepFacts facts;
 };
 
@@ -188,7 +194,10 @@ class HorizontalCrEnv {
   StepFacts step_facts(double hdg_before) const;
   int intruders_in_zone() const;
   void finish(bool truncated);
-  bool run_automatic();  // paper rules; returns true when the agent must act
+  // Paper rules: automatic steps until a conflict needs the agent or the
+  // episode ends; returns the sum of their rewards.
+  double run_automatic();
+  double reward_of(const StepFacts& f) const;
 
   HorizontalCrConfig config_;
   Fleet fleet_;

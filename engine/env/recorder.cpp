@@ -29,12 +29,10 @@ void JsonlRecorder::on_reset(const HorizontalCrEnv& env) {
 
 void JsonlRecorder::on_step(const HorizontalCrEnv& env, const StepInfo& info) {
   json j = {{"event", "step"},  {"episode", env.stats().index}, {"t", env.sim_time()},
-            {"agent", info.agent}, {"hdg_cmd", info.hdg_cmd}, {"intrusions", info.facts.intrusions},
+            {"agent", info.agent}, {"hdg_cmd", info.hdg_cmd}, {"reward", info.reward},
+            {"intrusions", info.facts.intrusions},
             {"own", aircraft(env.fleet(), 0)}, {"intruders", intruders(env.fleet())}};
-  if (info.agent) {
-    j["action"] = info.action;
-    j["reward"] = info.reward;
-  }
+  if (info.agent) j["action"] = info.action;
   out_ << j.dump() << '\n';
 }
 

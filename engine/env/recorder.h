@@ -8,7 +8,7 @@
 //    "reward":..,"intrusions":n,"own":[...],"intruders":[[...],...]}
 //   {"event":"end","episode":k,"return":..,"success":bool,"reached":bool,
 //    "truncated":bool,"steps":n,"decisions":n,"intrusions":n,"t":..}
-// "action" and "reward" are present only on agent steps.
+// "action" is present only on agent steps.
 #pragma once
 
 #include <ostream>

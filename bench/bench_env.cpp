@@ -1,0 +1,156 @@
+// Environment throughput: env steps per second of HorizontalCrEnv under both
+// rule sets, on one thread and on two (one environment per thread), next to a
+// same-run reference: a plain re-statement of the same BlueSky update that
+// recomputes every cos/sin/atan2 the way the Python code does, and the real
+// BlueSky-Gym's measured 119-132 env steps/s on this machine
+// (facts/bluesky_gym_measured.md). One env step = 10 x 5 s sub-steps.
+// Prints figures only; no timing is asserted anywhere.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+#include <vector>
+
+#include "core/geo.h"
+#include "core/rng.h"
+#include "core/units.h"
+#include "env/horizontal_cr.h"
+
+using namespace squawk;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr double kBlueSkyGymRandom = 119.3;  // env steps/s, measured (random actions)
+constexpr double kBlueSkyGymZero = 132.2;    // env steps/s, measured (zero action)
+
+struct Run {
+  long long steps = 0;
+  long long episodes = 0;
+  double seconds = 0.0;
+  double checksum = 0.0;  // keeps the work observable
+};
+
+env::HorizontalCrConfig config(env::Rules rules) {
+  env::HorizontalCrConfig c;
+  c.rules = rules;
+  if (rules == env::Rules::kPaper) {
+    c.tlos = {300, 1000};
+    c.lookahead = 600;
+  }
+  return c;
+}
+
+// Steps one environment with uniform random (or zero) actions for `seconds`.
+Run drive(env::Rules rules, bool random_actions, double seconds, uint64_t seed) {
+  auto e = env::HorizontalCrEnv::make(config(rules));
+  Rng rng(seed);
+  Run r;
+  const auto t0 = Clock::now();
+  uint64_t k = 0;
+  while (true) {
+    Rng ep(seed * 1000003 + k++);
+    bool ask = e->reset(ep, k);
+    while (ask) {
+      r.checksum += e->step(random_actions ? rng.uniform(-1.0, 1.0) : 0.0);
+      ask = !e->done();
+    }
+    r.steps += e->stats().steps;
+    ++r.episodes;
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (r.seconds >= seconds) return r;
+  }
+}
+
+// The reference: the same flat-earth update and gym observation written the
+// direct way (cos(lat), kwikqdrdist with atan2, cos/sin of every angle).
+Run reference_gym(double seconds, uint64_t seed) {
+  auto e = env::HorizontalCrEnv::make(config(env::Rules::kGym));
+  Rng rng(seed);
+  Run r;
+  const double dt = 5.0, tan_bank = std::tan(25 * units::kDeg);
+  const auto t0 = Clock::now();
+  uint64_t k = 0;
+  std::vector<double> lat(6), lon(6), hdg(6), tas(6), sel(6), obs(28);
+  while (true) {
+    Rng ep(seed * 1000003 + k++);
+    const env::EpisodeSetup s = e->draw_setup(ep);
+    lat[0] = 52;
+    lon[0] = 4;
+    hdg[0] = 0;
+    tas[0] = 150;
+    sel[0] = 0;
+    for (int i = 0; i < 5; ++i) {
+      lat[i + 1] = s.intruders[i].lat;
+      lon[i + 1] = s.intruders[i].lon;
+      hdg[i + 1] = s.intruders[i].hdg;
+      tas[i + 1] = s.intruders[i].tas;
+      sel[i + 1] = geo::wrap360(hdg[i + 1]);
+    }
+    for (int step = 0; step < 300; ++step) {
+      sel[0] = geo::wrap360(hdg[0] + 45.0 * rng.uniform(-1.0, 1.0));
+      for (int sub = 0; sub < 10; ++sub)
+        for (int i = 0; i < 6; ++i) {
+          const double target = std::min(150.0, 89.0);
+          tas[i] = std::fabs(target - tas[i]) > 2 * dt ? tas[i] + std::copysign(2 * dt, target - tas[i]) : target;
+          const double rate = units::rad_to_deg(units::kG0 * tan_bank / tas[i]);
+          const double del = geo::wrap180(sel[i] - hdg[i]);
+          hdg[i] = geo::wrap360(std::fabs(del) > dt * rate ? hdg[i] + std::copysign(dt * rate, del) : sel[i]);
+          lat[i] += units::rad_to_deg(dt * tas[i] * std::cos(hdg[i] * units::kDeg) / units::kREarth);
+          lon[i] += units::rad_to_deg(dt * tas[i] * std::sin(hdg[i] * units::kDeg) /
+                                      std::cos(lat[i] * units::kDeg) / units::kREarth);
+        }
+      for (int i = 0; i < 5; ++i) {
+        const auto qd = geo::kwikqdrdist(lat[0], lon[0], lat[i + 1], lon[i + 1]);
+        const double b = geo::gym_wrap180(hdg[0] - qd.qdr_deg) * units::kDeg;
+        const double dh = (hdg[0] - hdg[i + 1]) * units::kDeg;
+        obs[i] = qd.dist_nm * 1.852 / 150;
+        obs[5 + i] = std::cos(b);
+        obs[10 + i] = std::sin(b);
+        obs[15 + i] = -std::cos(dh) * tas[i + 1] / 150;
+        obs[20 + i] = (tas[0] - std::sin(dh) * tas[i + 1]) / 150;
+      }
+      const auto w = geo::kwikqdrdist(lat[0], lon[0], s.waypoint_lat, s.waypoint_lon);
+      obs[25] = w.dist_nm * 1.852 / 150;
+      obs[26] = std::cos((hdg[0] - w.qdr_deg) * units::kDeg);
+      obs[27] = std::sin((hdg[0] - w.qdr_deg) * units::kDeg);
+      r.checksum += obs[0] + obs[27];
+      ++r.steps;
+      if (w.dist_nm * 1.852 < 5) break;
+    }
+    ++r.episodes;
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (r.seconds >= seconds) return r;
+  }
+}
+
+void print(const char* name, const Run& r, double reference) {
+  const double sps = static_cast<double>(r.steps) / r.seconds;
+  std::printf("  %-44s %12.0f env steps/s  %8.0f episodes/s  %8.0fx BlueSky-Gym\n", name, sps,
+              static_cast<double>(r.episodes) / r.seconds, sps / reference);
+}
+
+Run two_threads(env::Rules rules, double seconds) {
+  Run a, b;
+  std::thread t([&] { a = drive(rules, true, seconds, 1); });
+  b = drive(rules, true, seconds, 2);
+  t.join();
+  return {a.steps + b.steps, a.episodes + b.episodes, std::max(a.seconds, b.seconds), a.checksum + b.checksum};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double seconds = argc > 1 ? std::atof(argv[1]) : 2.0;
+  std::printf("bench_env: %.1f s per row; one env step = 10 sub-steps of 5 s, 6 aircraft\n", seconds);
+  std::printf("gym rules (HorizontalCREnv-v0, ground cap 89 m/s):\n");
+  print("random actions, 1 thread", drive(env::Rules::kGym, true, seconds, 1), kBlueSkyGymRandom);
+  print("zero action, 1 thread", drive(env::Rules::kGym, false, seconds, 1), kBlueSkyGymZero);
+  print("random actions, 2 threads (1 env each)", two_threads(env::Rules::kGym, seconds), kBlueSkyGymRandom);
+  print("reference: direct trig, random, 1 thread", reference_gym(seconds, 1), kBlueSkyGymRandom);
+  std::printf("paper rules (evaluation settings; agent and automatic steps counted):\n");
+  print("random actions, 1 thread", drive(env::Rules::kPaper, true, seconds, 1), kBlueSkyGymRandom);
+  print("zero action, 1 thread", drive(env::Rules::kPaper, false, seconds, 1), kBlueSkyGymZero);
+  print("random actions, 2 threads (1 env each)", two_threads(env::Rules::kPaper, seconds), kBlueSkyGymRandom);
+  return 0;
+}

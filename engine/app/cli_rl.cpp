@@ -1,0 +1,328 @@
+// squawk train / squawk eval: the conflict-resolution learner and evaluator.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli.h"
+#include "app/gpt2_policy_factory.h"
+#include "app/subcommands.h"
+#include "app/vm_options.h"
+#include "core/files.h"
+#include "core/paths.h"
+#include "env/recorder.h"
+#include "env/vec_env.h"
+#include "rl/baseline_policies.h"
+#include "rl/checkpoint.h"
+#include "rl/evaluator.h"
+#include "rl/vpg.h"
+#include "script/scenario.h"
+
+namespace squawk::app {
+
+namespace {
+
+// The checkpoint `squawk eval --policy mlp` uses when none is given.
+constexpr const char* kShippedCheckpoint = "models/horizontal_cr_mlp.ckpt";
+
+std::string fmt_duration(double s) {
+  char buf[32];
+  const long t = std::lround(std::max(0.0, s));
+  std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  return buf;
+}
+
+// A one-line progress bar with ETA on stderr, redrawn at most 5 times a second.
+class ProgressBar {
+ public:
+  ProgressBar(std::string label, long long total, bool enabled)
+      : label_(std::move(label)), total_(total), enabled_(enabled && isatty(STDERR_FILENO)) {}
+  void update(long long done, const std::string& extra = "") {
+    if (!enabled_) return;
+    const double el = elapsed();
+    if (done < total_ && el - last_ < 0.2) return;
+    last_ = el;
+    const double frac = total_ > 0 ? static_cast<double>(done) / static_cast<double>(total_) : 1.0;
+    const int width = 30, fill = static_cast<int>(frac * width);
+    std::string bar(static_cast<size_t>(fill), '#');
+    bar.append(static_cast<size_t>(width - fill), '.');
+    const double eta = frac > 0 ? el * (1.0 - frac) / frac : 0.0;
+    std::fprintf(stderr, "\r%s [%s] %5.1f%% %lld/%lld  %s elapsed, ETA %s %s", label_.c_str(),
+                 bar.c_str(), 100.0 * frac, done, total_, fmt_duration(el).c_str(),
+                 fmt_duration(eta).c_str(), extra.c_str());
+    std::fflush(stderr);
+  }
+  void finish() {
+    if (enabled_) std::fprintf(stderr, "\n");
+  }
+  double elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  }
+
+ private:
+  std::string label_;
+  long long total_;
+  bool enabled_;
+  double last_ = -1.0;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+Result<script::Scenario> scenario_from(const Args& args, const char* sub) {
+  if (args.positional().size() != 1)
+    return Status::invalid(std::string("expected exactly one SCENARIO.lua, got ") +
+                           std::to_string(args.positional().size()) + " positional arguments");
+  SQUAWK_ASSIGN_OR_RETURN(script::VmOptions vo, vm_options(args));
+  vo.out_dir.clear();
+  (void)sub;
+  return script::load_scenario(args.positional()[0], vo);
+}
+
+rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainProgress& progress) {
+  rl::Checkpoint c;
+  c.spec = p.spec();
+  c.params.assign(p.params().begin(), p.params().end());
+  if (tr) {
+    c.has_adam = true;
+    c.adam_t = tr->adam().t();
+    c.adam_m = tr->adam().m();
+    c.adam_v = tr->adam().v();
+  }
+  c.progress = progress;
+  return c;
+}
+
+}  // namespace
+
+int cmd_train(const ArgV& argv) {
+  if (wants_gpt2(argv)) return cmd_train_gpt2(argv);
+  Args::Spec spec = with_vm_flags({{"--policy", "--episodes", "--estimator", "--envs", "--eval-every",
+                                    "--eval-episodes", "--lr"},
+                                   {"--resume", "--quiet"}});
+  auto args = Args::parse(argv, spec);
+  if (!args) return usage_error("train", args.status().message());
+  if (args->get_or("--policy", "mlp") != "mlp")
+    return usage_error("train", "--policy: only 'mlp' trains here, got '" + args->get_or("--policy", "") + "'");
+  if (!args->has("--out")) return usage_error("train", "missing --out DIR");
+  auto sc = scenario_from(*args, "train");
+  if (!sc) {
+    if (sc.status().code() == Code::kInvalidArgument && args->positional().size() != 1)
+      return usage_error("train", sc.status().message());
+    return failure(sc.status());
+  }
+  rl::TrainConfig cfg = sc->train;
+  auto episodes = args->get_int("--episodes", cfg.episodes);
+  auto envs_n = args->get_int("--envs", cfg.num_envs);
+  auto eval_every = args->get_int("--eval-every", cfg.eval_every);
+  auto eval_eps = args->get_int("--eval-episodes", cfg.eval_episodes);
+  auto lr = args->get_double("--lr", cfg.lr);
+  auto seed = args->get_int("--seed", static_cast<long long>(cfg.seed));
+  for (const Status& st : {episodes.status(), envs_n.status(), eval_every.status(), eval_eps.status(),
+                           lr.status(), seed.status()})
+    if (!st.is_ok()) return usage_error("train", st.message());
+  cfg.episodes = *episodes;
+  cfg.num_envs = static_cast<int>(*envs_n);
+  cfg.eval_every = *eval_every;
+  cfg.eval_episodes = *eval_eps;
+  cfg.lr = *lr;
+  cfg.seed = static_cast<uint64_t>(*seed);
+  cfg.estimator = args->get_or("--estimator", cfg.estimator);
+  if (Status st = cfg.validate(); !st.is_ok()) return usage_error("train", st.message());
+
+  const std::string out = *args->get("--out");
+  if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
+  const std::string ckpt_path = out + "/checkpoint.ckpt";
+  const std::string log_path = out + "/log.csv";
+
+  std::unique_ptr<rl::MlpPolicy> policy;
+  rl::TrainProgress progress;
+  rl::Checkpoint resume;
+  const bool resuming = args->has("--resume") && files::exists(ckpt_path);
+  if (resuming) {
+    auto c = rl::load_checkpoint(ckpt_path);
+    if (!c) return failure(c.status());
+    auto p = rl::policy_from_checkpoint(*c);
+    if (!p) return failure(p.status());
+    policy = std::move(*p);
+    progress = c->progress;
+    resume = std::move(*c);
+    if (progress.seed != cfg.seed)
+      return failure(Status::invalid("checkpoint " + ckpt_path + " was trained with seed " +
+                                     std::to_string(progress.seed) + ", not " + std::to_string(cfg.seed)));
+  } else {
+    Rng init(cfg.seed);
+    auto p = rl::MlpPolicy::make(sc->policy, init);
+    if (!p) return failure(p.status());
+    policy = std::move(*p);
+    progress.seed = cfg.seed;
+  }
+  progress.estimator = cfg.estimator;
+  progress.scenario = sc->path;
+  if (policy->obs_size() != env::observation_size(sc->train_env.num_intruders))
+    return failure(Status::invalid("policy expects " + std::to_string(policy->obs_size()) +
+                                   " observation values, the scenario gives " +
+                                   std::to_string(env::observation_size(sc->train_env.num_intruders))));
+
+  auto train_envs = env::VecEnv::make(sc->train_env, cfg.num_envs);
+  auto eval_envs = env::VecEnv::make(sc->eval_env, cfg.num_envs);
+  if (!train_envs) return failure(train_envs.status());
+  if (!eval_envs) return failure(eval_envs.status());
+  const long long m = cfg.episodes_per_update;
+  rl::Trainer trainer(*policy, *train_envs, cfg, progress.episodes / m);
+  if (resuming && resume.has_adam) {
+    trainer.adam().m() = resume.adam_m;
+    trainer.adam().v() = resume.adam_v;
+    trainer.adam().set_t(resume.adam_t);
+  }
+
+  const bool append = resuming && files::exists(log_path);
+  std::ofstream log(log_path, append ? std::ios::app : std::ios::trunc);
+  if (!log) return failure(Status::io_error("cannot write " + log_path));
+  if (!append)
+    log << "episodes,updates,wall_s,train_mean_return,train_success_rate,entropy,grad_norm,"
+           "eval_success_rate,eval_mean_reward,eval_std_reward\n";
+  const bool quiet = args->has("--quiet");
+  if (!quiet)
+    std::printf("training %s on %s (%s rules): %lld episodes, estimator %s, %zu parameters, seed %llu%s\n",
+                policy->name().c_str(), sc->path.c_str(),
+                sc->train_env.rules == env::Rules::kGym ? "gym" : "paper", cfg.episodes,
+                cfg.estimator.c_str(), policy->params().size(),
+                static_cast<unsigned long long>(cfg.seed), resuming ? " (resumed)" : "");
+  ProgressBar bar("train", cfg.episodes, !quiet);
+  const double wall0 = progress.wall_s;
+  double ret_sum = 0.0, succ_sum = 0.0, ent = 0.0, gnorm = 0.0;
+  long long interval_updates = 0;
+  long long next_eval = cfg.eval_every > 0 ? (progress.episodes / cfg.eval_every + 1) * cfg.eval_every
+                                           : cfg.episodes;
+  while (progress.episodes < cfg.episodes) {
+    const rl::UpdateStats st = trainer.update();
+    progress.episodes += st.episodes;
+    progress.updates = trainer.updates();
+    progress.wall_s = wall0 + bar.elapsed();
+    ret_sum += st.mean_return;
+    succ_sum += st.success_rate;
+    ent = st.entropy;
+    gnorm = st.grad_norm;
+    ++interval_updates;
+    if (Status rs = sc->reward_error(); !rs.is_ok()) {
+      bar.finish();
+      return failure(rs);
+    }
+    char extra[96];
+    std::snprintf(extra, sizeof extra, "return %.3f", st.mean_return);
+    bar.update(progress.episodes, extra);
+    if (progress.episodes < next_eval && progress.episodes < cfg.episodes) continue;
+    next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
+    auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, sc->eval_seed, false});
+    if (!ev) return failure(ev.status());
+    const double k = static_cast<double>(interval_updates);
+    char row[256];
+    std::snprintf(row, sizeof row, "%lld,%lld,%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n",
+                  progress.episodes, progress.updates, progress.wall_s, ret_sum / k, succ_sum / k, ent,
+                  gnorm, ev->success_rate, ev->mean_reward, ev->std_reward);
+    log << row << std::flush;
+    ret_sum = succ_sum = 0.0;
+    interval_updates = 0;
+    if (Status s = rl::save_checkpoint(ckpt_path, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
+      return failure(s);
+    if (!quiet && !isatty(STDERR_FILENO))
+      std::printf("%lld episodes, %.0f s: eval success %.1f %%, mean reward %.3f\n", progress.episodes,
+                  progress.wall_s, 100.0 * ev->success_rate, ev->mean_reward);
+  }
+  bar.finish();
+  if (!quiet)
+    std::printf("done: %lld episodes in %s; checkpoint %s, log %s\n", progress.episodes,
+                fmt_duration(progress.wall_s).c_str(), ckpt_path.c_str(), log_path.c_str());
+  return kExitOk;
+}
+
+int cmd_eval(const ArgV& argv) {
+  if (wants_gpt2(argv)) return cmd_eval_gpt2(argv);
+  Args::Spec spec = with_vm_flags({{"--policy", "--checkpoint", "--episodes", "--envs", "--record"},
+                                   {"--json", "--greedy"}});
+  auto args = Args::parse(argv, spec);
+  if (!args) return usage_error("eval", args.status().message());
+  const std::string kind = args->get_or("--policy", "mlp");
+  if (kind != "random" && kind != "zero" && kind != "mvp" && kind != "mlp")
+    return usage_error("eval", "--policy '" + kind + "': expected random, zero, mvp or mlp");
+  if (args->has("--checkpoint") && kind != "mlp")
+    return usage_error("eval", "--checkpoint goes with --policy mlp");
+  if (args->positional().size() != 1)
+    return usage_error("eval", "expected exactly one SCENARIO.lua");
+  auto sc = scenario_from(*args, "eval");
+  if (!sc) return failure(sc.status());
+  auto episodes = args->get_int("--episodes", sc->eval_episodes);
+  auto seed = args->get_int("--seed", static_cast<long long>(sc->eval_seed));
+  auto envs_n = args->get_int("--envs", 64);
+  for (const Status& st : {episodes.status(), seed.status(), envs_n.status()})
+    if (!st.is_ok()) return usage_error("eval", st.message());
+  if (*episodes < 1 || *envs_n < 1) return usage_error("eval", "--episodes and --envs must be >= 1");
+
+  auto envs = env::VecEnv::make(sc->eval_env, static_cast<int>(*envs_n));
+  if (!envs) return failure(envs.status());
+  std::unique_ptr<rl::Policy> policy;
+  std::string source;
+  if (kind == "zero") {
+    policy = std::make_unique<rl::ZeroPolicy>(envs->obs_size());
+  } else if (kind == "mvp") {
+    policy = std::make_unique<rl::MvpPolicy>(*envs);
+  } else if (kind == "random") {
+    Rng init(static_cast<uint64_t>(*seed));
+    auto p = rl::MlpPolicy::make(sc->policy, init);
+    if (!p) return failure(p.status());
+    policy = std::move(*p);
+    source = "untrained, initialised from the seed";
+  } else {
+    const std::string path = args->get_or("--checkpoint", paths::resource(kShippedCheckpoint));
+    auto c = rl::load_checkpoint(path);
+    if (!c) return failure(c.status());
+    auto p = rl::policy_from_checkpoint(*c);
+    if (!p) return failure(p.status());
+    policy = std::move(*p);
+    source = path;
+  }
+  if (policy->obs_size() != envs->obs_size())
+    return failure(Status::invalid("policy expects " + std::to_string(policy->obs_size()) +
+                                   " observation values, the scenario gives " +
+                                   std::to_string(envs->obs_size())));
+  std::ofstream rec_file;
+  std::unique_ptr<env::JsonlRecorder> recorder;
+  if (auto rec = args->get("--record")) {
+    rec_file.open(*rec, std::ios::trunc);
+    if (!rec_file) return failure(Status::io_error("cannot write " + *rec));
+    recorder = std::make_unique<env::JsonlRecorder>(rec_file);
+    for (int s = 0; s < envs->size(); ++s) envs->env(s).set_observer(recorder.get());
+  }
+  const bool json = args->has("--json");
+  ProgressBar bar("eval", *episodes, !json);
+  auto res = rl::evaluate(*policy, *envs, {*episodes, static_cast<uint64_t>(*seed), args->has("--greedy")},
+                          [&](long long done, long long) { bar.update(done); });
+  bar.finish();
+  if (!res) return failure(res.status());
+  if (Status rs = sc->reward_error(); !rs.is_ok()) return failure(rs);
+  if (json) {
+    nlohmann::json j = {{"success_rate", res->success_rate},
+                        {"mean_reward", res->mean_reward},
+                        {"std_reward", res->std_reward},
+                        {"episodes", res->episodes}};
+    std::printf("%s\n", j.dump().c_str());
+    return kExitOk;
+  }
+  std::printf("scenario  %s (%s rules)\n", sc->path.c_str(),
+              sc->eval_env.rules == env::Rules::kGym ? "gym" : "paper");
+  std::printf("policy    %s%s%s%s\n", kind.c_str(), source.empty() ? "" : " (", source.c_str(),
+              source.empty() ? "" : ")");
+  std::printf("episodes  %lld, seed %lld, %s actions\n", res->episodes, *seed,
+              args->has("--greedy") ? "greedy" : "sampled");
+  std::printf("\n  %-10s %-22s %-20s\n", "success", "mean episode reward", "std of episode reward");
+  std::printf("  %6.1f %%   %-22.3f %-20.3f\n\n", 100.0 * res->success_rate, res->mean_reward, res->std_reward);
+  std::printf("waypoint reached %.1f %%, %.1f agent decisions and %.1f env steps per episode, %.2f s\n",
+              100.0 * res->reached_rate, res->mean_decisions, res->mean_steps, res->wall_s);
+  return kExitOk;
+}
+
+}  // namespace squawk::app

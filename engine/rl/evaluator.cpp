@@ -1,0 +1,63 @@
+#include "rl/evaluator.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace squawk::rl {
+
+Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions& opts,
+                            const std::function<void(long long, long long)>& progress) {
+  if (opts.episodes < 1)
+    return Status::invalid("evaluation needs at least 1 episode, got " + std::to_string(opts.episodes));
+  if (policy.obs_size() != envs.obs_size())
+    return Status::invalid("policy '" + policy.name() + "' expects " + std::to_string(policy.obs_size()) +
+                           " observation values, the environment gives " + std::to_string(envs.obs_size()));
+  const auto t0 = std::chrono::steady_clock::now();
+  const long long steps0 = envs.env_steps();
+  Rng rng(opts.seed ^ kEvalPolicySalt);
+  envs.completed().clear();
+  envs.start(opts.seed, 0, static_cast<uint64_t>(opts.episodes));
+  std::vector<ActionSample> acts;
+  std::vector<double> actions, rewards;
+  std::vector<uint8_t> dones;
+  while (!envs.finished()) {
+    const auto n = envs.waiting().size();
+    acts.resize(n);
+    actions.resize(n);
+    rewards.resize(n);
+    dones.resize(n);
+    policy.act(envs.observations(), static_cast<int>(n), envs.waiting(), rng, opts.greedy, acts);
+    for (size_t r = 0; r < n; ++r) actions[r] = acts[r].value;
+    envs.step(actions, rewards, dones);
+    if (progress) progress(static_cast<long long>(envs.completed().size()), opts.episodes);
+  }
+  std::vector<env::EpisodeStats> eps = envs.completed();
+  std::sort(eps.begin(), eps.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  EvalResult res;
+  res.episodes = static_cast<long long>(eps.size());
+  double sum = 0.0;
+  for (const auto& e : eps) {
+    res.success_rate += e.success;
+    res.reached_rate += e.reached;
+    res.mean_decisions += e.decisions;
+    res.mean_steps += e.steps;
+    sum += e.total_reward;
+  }
+  const double n = static_cast<double>(eps.size());
+  res.mean_reward = sum / n;
+  double var = 0.0;
+  for (const auto& e : eps) var += (e.total_reward - res.mean_reward) * (e.total_reward - res.mean_reward);
+  res.std_reward = std::sqrt(var / n);
+  res.success_rate /= n;
+  res.reached_rate /= n;
+  res.mean_decisions /= n;
+  res.mean_steps /= n;
+  res.env_steps = envs.env_steps() - steps0;
+  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  envs.completed().clear();
+  return res;
+}
+
+}  // namespace squawk::rl

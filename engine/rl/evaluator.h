@@ -1,0 +1,43 @@
+// Evaluation: runs a fixed, numbered set of episodes (0..episodes-1 of the
+// given seed, see env/vec_env.h) with a policy and reports Table 3's columns.
+//
+// success_rate: fraction of episodes whose EpisodeStats::success is set.
+// mean_reward / std_reward: mean and population standard deviation (ddof 0)
+// of the episode returns (EpisodeStats::total_reward).
+// Policy samples come from Rng(seed ^ kEvalPolicySalt), so one seed fixes the
+// whole evaluation on one build.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "env/vec_env.h"
+#include "rl/policy.h"
+
+namespace squawk::rl {
+
+inline constexpr uint64_t kEvalPolicySalt = 0xE7A1D5EEDull;
+
+struct EvalOptions {
+  long long episodes = 1000;  // [-]
+  uint64_t seed = 0;
+  bool greedy = false;        // take the mode instead of sampling
+};
+
+struct EvalResult {
+  long long episodes = 0;
+  double success_rate = 0.0;    // [-] 0..1
+  double mean_reward = 0.0;     // [-]
+  double std_reward = 0.0;      // [-]
+  double mean_decisions = 0.0;  // [-] agent steps per episode
+  double mean_steps = 0.0;      // [-] env steps per episode
+  double reached_rate = 0.0;    // [-] 0..1
+  long long env_steps = 0;      // [-]
+  double wall_s = 0.0;          // [s]
+};
+
+// progress(done, total) is called after every batched step when given.
+Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions& opts,
+                            const std::function<void(long long, long long)>& progress = {});
+
+}  // namespace squawk::rl

@@ -1,0 +1,106 @@
+#include "rl/mlp_policy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "nn/categorical.h"
+#include "nn/gaussian.h"
+
+namespace squawk::rl {
+
+Status MlpPolicySpec::validate() const {
+  if (obs_size < 1) return Status::invalid("policy obs_size must be positive");
+  for (int h : hidden)
+    if (h < 1 || h > 4096)
+      return Status::invalid("policy hidden width " + std::to_string(h) + ": expected 1..4096");
+  if (head == "categorical") {
+    if (action_values.size() < 2)
+      return Status::invalid("categorical policy needs at least 2 action values");
+    for (double v : action_values)
+      if (!(v >= -1.0 && v <= 1.0))
+        return Status::invalid("action value " + std::to_string(v) + " lies outside [-1, 1]");
+    return Status::ok();
+  }
+  if (head == "gaussian") return Status::ok();
+  return Status::invalid("policy head '" + head + "': expected \"categorical\" or \"gaussian\"");
+}
+
+Result<std::unique_ptr<MlpPolicy>> MlpPolicy::make(const MlpPolicySpec& spec, Rng& rng) {
+  SQUAWK_RETURN_IF_ERROR(spec.validate());
+  std::vector<int> sizes = {spec.obs_size};
+  sizes.insert(sizes.end(), spec.hidden.begin(), spec.hidden.end());
+  sizes.push_back(spec.head == "gaussian" ? 1 : static_cast<int>(spec.action_values.size()));
+  SQUAWK_ASSIGN_OR_RETURN(nn::Mlp mlp, nn::Mlp::make(sizes));
+  std::unique_ptr<MlpPolicy> p(new MlpPolicy(spec, std::move(mlp)));
+  p->mlp_.init(std::span<float>(p->params_).first(p->mlp_.num_params()), rng);
+  if (p->gaussian()) p->params_.back() = static_cast<float>(spec.init_log_std);
+  return p;
+}
+
+MlpPolicy::MlpPolicy(MlpPolicySpec spec, nn::Mlp mlp) : spec_(std::move(spec)), mlp_(std::move(mlp)) {
+  const size_t n = mlp_.num_params() + (gaussian() ? 1 : 0);
+  params_.assign(n, 0.0f);
+  grads_.assign(n, 0.0f);
+}
+
+void MlpPolicy::forward(std::span<const float> obs, int n, std::vector<float>& out) {
+  out.resize(static_cast<size_t>(n) * static_cast<size_t>(mlp_.out_dim()));
+  mlp_.forward(params_, obs.data(), n, out.data(), &cache_);
+}
+
+void MlpPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, Rng& rng,
+                    bool greedy, std::span<ActionSample> out) {
+  forward(obs, n, out_);
+  const auto k = static_cast<size_t>(mlp_.out_dim());
+  if (gaussian()) {
+    const float log_std = params_.back();
+    for (int r = 0; r < n; ++r) {
+      const float mu = out_[static_cast<size_t>(r)];
+      out[static_cast<size_t>(r)] = {-1, greedy ? mu : nn::gaussian_sample(mu, log_std, rng)};
+    }
+    return;
+  }
+  logp_.resize(k);
+  for (int r = 0; r < n; ++r) {
+    nn::log_softmax(std::span<const float>(out_).subspan(static_cast<size_t>(r) * k, k), logp_);
+    const int a = greedy ? nn::categorical_argmax(logp_) : nn::categorical_sample(logp_, rng);
+    out[static_cast<size_t>(r)] = {a, static_cast<float>(spec_.action_values[static_cast<size_t>(a)])};
+  }
+}
+
+float MlpPolicy::accumulate_gradient(std::span<const float> obs, int n,
+                                     std::span<const ActionSample> actions,
+                                     std::span<const float> coef, float ent_coef) {
+  forward(obs, n, out_);
+  const auto k = static_cast<size_t>(mlp_.out_dim());
+  dout_.assign(out_.size(), 0.0f);
+  double entropy = 0.0;
+  // dout holds dL/d(output) with L = -(coef log pi + ent_coef H).
+  if (gaussian()) {
+    const float log_std = params_.back();
+    float d_log_std = 0.0f;
+    for (int r = 0; r < n; ++r) {
+      const auto i = static_cast<size_t>(r);
+      const nn::GaussianGrad g = nn::gaussian_grad(actions[i].value, out_[i], log_std, coef[i], ent_coef);
+      dout_[i] = -g.d_mu;
+      d_log_std -= g.d_log_std;
+      entropy += nn::gaussian_entropy(log_std);
+    }
+    grads_.back() += d_log_std;
+  } else {
+    logp_.resize(k);
+    for (int r = 0; r < n; ++r) {
+      const auto off = static_cast<size_t>(r) * k;
+      nn::log_softmax(std::span<const float>(out_).subspan(off, k), logp_);
+      entropy += nn::categorical_entropy(logp_);
+      std::span<float> dz(dout_.data() + off, k);
+      nn::categorical_grad(logp_, actions[static_cast<size_t>(r)].index, -coef[static_cast<size_t>(r)],
+                           -ent_coef, dz);
+    }
+  }
+  mlp_.backward(params_, cache_, dout_.data(),
+                std::span<float>(grads_).first(mlp_.num_params()));
+  return n > 0 ? static_cast<float>(entropy / n) : 0.0f;
+}
+
+}  // namespace squawk::rl

@@ -1,0 +1,63 @@
+// MlpPolicy: the paper's neural-network policy (§IV.C): linear layers with
+// ReLU, ending in a linear layer whose outputs parametrise the action
+// distribution.
+//   head "categorical": K logits over action_values (the paper's
+//     {-1, -0.5, 0, 0.5, 1}); default hidden {96, 96} gives 28-96-96-5 =
+//     12,581 parameters, the paper's "~12,000".
+//   head "gaussian": one output = the mean, plus one free parameter log sigma
+//     (state-independent), for the gym rules' continuous action.
+// Parameter buffer: the Mlp's parameters (nn/mlp.h layout), then log sigma
+// for the Gaussian head.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/status.h"
+#include "nn/mlp.h"
+#include "rl/policy.h"
+
+namespace squawk::rl {
+
+struct MlpPolicySpec {
+  int obs_size = 28;                                      // [-]
+  std::vector<int> hidden = {96, 96};                     // [-] hidden layer widths
+  std::string head = "categorical";                       // "categorical" | "gaussian"
+  std::vector<double> action_values = {-1, -0.5, 0, 0.5, 1};  // categorical classes
+  double init_log_std = -0.5;                             // gaussian: initial log sigma
+
+  Status validate() const;
+};
+
+class MlpPolicy : public Policy {
+ public:
+  // A policy with parameters initialised from rng (PyTorch's default scheme).
+  static Result<std::unique_ptr<MlpPolicy>> make(const MlpPolicySpec& spec, Rng& rng);
+
+  std::string name() const override { return "mlp"; }
+  int obs_size() const override { return spec_.obs_size; }
+  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+           std::span<ActionSample> out) override;
+  bool trainable() const override { return true; }
+  std::span<float> params() override { return params_; }
+  std::span<float> grads() override { return grads_; }
+  float accumulate_gradient(std::span<const float> obs, int n, std::span<const ActionSample> actions,
+                            std::span<const float> coef, float ent_coef) override;
+
+  const MlpPolicySpec& spec() const { return spec_; }
+  bool gaussian() const { return spec_.head == "gaussian"; }
+  // Output rows for obs [n, obs_size]: logits [n, K] (categorical) or means [n, 1].
+  void forward(std::span<const float> obs, int n, std::vector<float>& out);
+
+ private:
+  MlpPolicy(MlpPolicySpec spec, nn::Mlp mlp);
+
+  MlpPolicySpec spec_;
+  nn::Mlp mlp_;
+  std::vector<float> params_, grads_;
+  nn::MlpCache cache_;
+  std::vector<float> out_, dout_, logp_;
+};
+
+}  // namespace squawk::rl

@@ -1,0 +1,50 @@
+// Policy: what the learner and the evaluator drive. Batched.
+//
+// Shapes: obs [n, obs_size()] row-major floats (the flat observation of
+// env/observation.h), one ActionSample per row.
+// An action's `value` is what the environment receives (units of 45 deg,
+// clipped to [-1, 1] by the environment); `index` is the class of a discrete
+// head (-1 for continuous heads, whose `value` is the raw Gaussian sample).
+// `slots` names the VecEnv slot of each row, for policies that read the
+// environment's state rather than the observation (MVP).
+// Trainable policies expose one contiguous parameter buffer and its gradient
+// buffer (same length) for nn::Adam and checkpoints.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "core/rng.h"
+
+namespace squawk::rl {
+
+struct ActionSample {
+  int index = -1;      // [-] class of a discrete head, -1 when continuous
+  float value = 0.0f;  // [-] action in units of the env's heading step
+};
+
+class Policy {
+ public:
+  virtual ~Policy() = default;
+  virtual std::string name() const = 0;
+  virtual int obs_size() const = 0;
+
+  // Fills out[0..n) for obs [n, obs_size]. greedy: the distribution's mode
+  // instead of a sample.
+  virtual void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng,
+                   bool greedy, std::span<ActionSample> out) = 0;
+
+  virtual bool trainable() const { return false; }
+  virtual std::span<float> params() { return {}; }
+  virtual std::span<float> grads() { return {}; }
+  // Adds to grads() the gradient of
+  //   L = -sum_r coef[r] log pi(a_r | s_r) - ent_coef sum_r H(pi(. | s_r))
+  // over the n rows, and returns the mean entropy of those rows.
+  virtual float accumulate_gradient(std::span<const float> /*obs*/, int /*n*/,
+                                    std::span<const ActionSample> /*actions*/,
+                                    std::span<const float> /*coef*/, float /*ent_coef*/) {
+    return 0.0f;
+  }
+};
+
+}  // namespace squawk::rl

@@ -1,0 +1,172 @@
+#include "rl/vpg.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace squawk::rl {
+
+namespace {
+constexpr uint64_t kTrainPolicySalt = 0x7EA1ull;
+}
+
+Status TrainConfig::validate() const {
+  if (estimator != "vpg" && estimator != "improved")
+    return Status::invalid("train estimator '" + estimator + "': expected \"vpg\" or \"improved\"");
+  if (episodes < 1) return Status::invalid("train episodes must be at least 1");
+  if (episodes_per_update < 1) return Status::invalid("train episodes_per_update must be at least 1");
+  if (num_envs < 1) return Status::invalid("train num_envs must be at least 1");
+  if (!(lr > 0.0)) return Status::invalid("train lr must be positive");
+  if (!(gamma > 0.0 && gamma <= 1.0)) return Status::invalid("train gamma must lie in (0, 1]");
+  if (entropy_coef < 0.0) return Status::invalid("train entropy_coef must be >= 0");
+  for (int h : value_hidden)
+    if (h < 1 || h > 4096) return Status::invalid("train value_hidden widths must lie in 1..4096");
+  if (value_iters < 0) return Status::invalid("train value_iters must be >= 0");
+  if (eval_every < 0 || eval_episodes < 1)
+    return Status::invalid("train eval_every must be >= 0 and eval_episodes >= 1");
+  return Status::ok();
+}
+
+Trainer::Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, long long update_index)
+    : policy_(policy),
+      envs_(envs),
+      cfg_(config),
+      adam_(policy.params(), policy.grads(),
+            nn::AdamConfig{.lr = static_cast<float>(config.lr),
+                           .grad_clip = static_cast<float>(config.grad_clip)}),
+      updates_(update_index),
+      slot_obs_(static_cast<size_t>(envs.size())),
+      slot_samples_(static_cast<size_t>(envs.size())) {
+  if (cfg_.estimator != "improved" || cfg_.value_hidden.empty()) return;
+  std::vector<int> sizes = {envs.obs_size()};
+  sizes.insert(sizes.end(), cfg_.value_hidden.begin(), cfg_.value_hidden.end());
+  sizes.push_back(1);
+  auto mlp = nn::Mlp::make(sizes);
+  if (!mlp) return;  // widths were validated; an empty result keeps the mean baseline
+  value_ = std::make_unique<nn::Mlp>(std::move(*mlp));
+  value_params_.assign(value_->num_params(), 0.0f);
+  value_grads_.assign(value_->num_params(), 0.0f);
+  Rng init(cfg_.seed ^ 0xBA5E11Eull);
+  value_->init(value_params_, init);
+  value_adam_ = std::make_unique<nn::Adam>(value_params_, value_grads_,
+                                           nn::AdamConfig{.lr = static_cast<float>(cfg_.lr)});
+}
+
+double Trainer::coefficients(std::vector<float>& coef) {
+  const size_t n = batch_samples_.size();
+  coef.assign(n, 0.0f);
+  const double inv_n = 1.0 / static_cast<double>(n);
+  if (cfg_.estimator == "vpg") {
+    for (size_t i = 0; i < n; ++i) coef[i] = static_cast<float>(batch_samples_[i].reward * inv_n);
+    return 0.0;
+  }
+  std::vector<float> g(n);
+  size_t start = 0;
+  for (int len : batch_lengths_) {
+    double acc = 0.0;
+    for (size_t t = start + static_cast<size_t>(len); t-- > start;) {
+      acc = batch_samples_[t].reward + cfg_.gamma * acc;
+      g[t] = static_cast<float>(acc);
+    }
+    start += static_cast<size_t>(len);
+  }
+  std::vector<double> adv(n);
+  double value_loss = 0.0;
+  if (value_) {
+    std::vector<float> v(n);
+    nn::MlpCache cache;
+    value_->forward(value_params_, batch_obs_.data(), static_cast<int>(n), v.data(), &cache);
+    for (size_t i = 0; i < n; ++i) {
+      adv[i] = g[i] - v[i];
+      value_loss += adv[i] * adv[i] * inv_n;
+    }
+    std::vector<float> dv(n);
+    for (int it = 0; it < cfg_.value_iters; ++it) {
+      if (it > 0) value_->forward(value_params_, batch_obs_.data(), static_cast<int>(n), v.data(), &cache);
+      for (size_t i = 0; i < n; ++i) dv[i] = static_cast<float>(2.0 * (v[i] - g[i]) * inv_n);
+      std::fill(value_grads_.begin(), value_grads_.end(), 0.0f);
+      value_->backward(value_params_, cache, dv.data(), value_grads_);
+      value_adam_->step();
+    }
+  } else {
+    double mean_g = 0.0;
+    for (float x : g) mean_g += x * inv_n;
+    for (size_t i = 0; i < n; ++i) adv[i] = g[i] - mean_g;
+  }
+  double mean = 0.0, var = 0.0;
+  for (double a : adv) mean += a * inv_n;
+  for (double a : adv) var += (a - mean) * (a - mean) * inv_n;
+  const double sd = std::sqrt(var);
+  for (size_t i = 0; i < n; ++i) coef[i] = static_cast<float>((adv[i] - mean) / (sd + 1e-8) * inv_n);
+  return value_loss;
+}
+
+UpdateStats Trainer::update() {
+  const int obs = envs_.obs_size();
+  const auto m = static_cast<uint64_t>(cfg_.episodes_per_update);
+  Rng rng(env::episode_seed(cfg_.seed ^ kTrainPolicySalt, static_cast<uint64_t>(updates_)));
+  batch_obs_.clear();
+  batch_samples_.clear();
+  batch_lengths_.clear();
+  for (auto& v : slot_obs_) v.clear();
+  for (auto& v : slot_samples_) v.clear();
+  envs_.completed().clear();
+  envs_.start(cfg_.seed, static_cast<uint64_t>(updates_) * m, m);
+
+  std::vector<ActionSample> acts;
+  std::vector<double> actions, rewards;
+  std::vector<uint8_t> dones;
+  while (!envs_.finished()) {
+    const std::vector<int> slots = envs_.waiting();
+    const auto n = slots.size();
+    acts.resize(n);
+    actions.resize(n);
+    rewards.resize(n);
+    dones.resize(n);
+    const std::span<const float> o = envs_.observations();
+    policy_.act(o, static_cast<int>(n), slots, rng, false, acts);
+    for (size_t r = 0; r < n; ++r) {
+      actions[r] = acts[r].value;
+      auto& so = slot_obs_[static_cast<size_t>(slots[r])];
+      so.insert(so.end(), o.begin() + static_cast<long>(r * static_cast<size_t>(obs)),
+                o.begin() + static_cast<long>((r + 1) * static_cast<size_t>(obs)));
+    }
+    envs_.step(actions, rewards, dones);
+    for (size_t r = 0; r < n; ++r) {
+      const auto s = static_cast<size_t>(slots[r]);
+      slot_samples_[s].push_back({acts[r], static_cast<float>(rewards[r])});
+      if (!dones[r]) continue;
+      batch_obs_.insert(batch_obs_.end(), slot_obs_[s].begin(), slot_obs_[s].end());
+      batch_samples_.insert(batch_samples_.end(), slot_samples_[s].begin(), slot_samples_[s].end());
+      batch_lengths_.push_back(static_cast<int>(slot_samples_[s].size()));
+      slot_obs_[s].clear();
+      slot_samples_[s].clear();
+    }
+  }
+
+  UpdateStats st;
+  const auto& eps = envs_.completed();
+  st.episodes = static_cast<long long>(eps.size());
+  for (const auto& e : eps) {
+    st.mean_return += e.total_reward;
+    st.success_rate += e.success;
+  }
+  if (st.episodes > 0) {
+    st.mean_return /= static_cast<double>(st.episodes);
+    st.success_rate /= static_cast<double>(st.episodes);
+  }
+  st.samples = static_cast<int>(batch_samples_.size());
+  ++updates_;
+  if (st.samples == 0) return st;
+
+  std::vector<float> coef;
+  st.value_loss = coefficients(coef);
+  std::vector<ActionSample> batch_acts(batch_samples_.size());
+  for (size_t i = 0; i < batch_samples_.size(); ++i) batch_acts[i] = batch_samples_[i].action;
+  const float ent = cfg_.estimator == "improved" ? static_cast<float>(cfg_.entropy_coef / st.samples) : 0.0f;
+  std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
+  st.entropy = policy_.accumulate_gradient(batch_obs_, st.samples, batch_acts, coef, ent);
+  st.grad_norm = adam_.step();
+  return st;
+}
+
+}  // namespace squawk::rl

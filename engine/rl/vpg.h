@@ -1,0 +1,95 @@
+// Policy-gradient learner: the paper's vanilla policy gradient (Eq. 5) and an
+// improved estimator, both with nn::Adam.
+//
+// One update collects `episodes_per_update` whole episodes with the current
+// policy (sampling), numbered consecutively over the run (env/vec_env.h), then
+// takes one Adam step on the mean over the N agent steps of the batch of
+//   "vpg"      (Eq. 5):   L = -(1/N) sum_t log pi(a_t|s_t) r_t
+//   "improved":          L = -(1/N) sum_t log pi(a_t|s_t) A_t - c_H (1/N) sum_t H(pi(.|s_t))
+//     with G_t = sum_{k>=t} gamma^(k-t) r_k (reward-to-go), the baseline b_t =
+//     V(s_t) from a learned value MLP (value_hidden; the batch mean of G when
+//     value_hidden is empty), A_t = (G_t - b_t) normalised to zero mean and
+//     unit deviation over the batch, c_H = entropy_coef. The value MLP is
+//     fitted to G by value_iters Adam steps on the mean squared error after
+//     each policy step.
+// Episodes that end without any agent step contribute no sample.
+// Policy samples of update u come from Rng(episode_seed(seed ^ salt, u)), and
+// the batch of update u is episodes [u M, (u+1) M) of the seed, so a run
+// resumed from a checkpoint continues exactly as an uninterrupted one.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "env/vec_env.h"
+#include "nn/adam.h"
+#include "nn/mlp.h"
+#include "rl/policy.h"
+
+namespace squawk::rl {
+
+struct TrainConfig {
+  std::string estimator = "improved";  // "vpg" | "improved"
+  long long episodes = 20000;          // [-] total training episodes
+  int episodes_per_update = 32;        // [-] M
+  int num_envs = 32;                   // [-] VecEnv slots
+  double lr = 1e-3;                    // [-] Adam step size
+  double gamma = 0.99;                 // [-] improved: discount of the reward-to-go
+  double entropy_coef = 0.01;          // [-] improved: entropy bonus c_H
+  double grad_clip = 1.0;              // [-] global gradient-norm clip (0 = none)
+  std::vector<int> value_hidden = {64, 64};  // [-] improved: value MLP widths ({} = mean baseline)
+  int value_iters = 5;                 // [-] improved: value-fit steps per update
+  long long eval_every = 2000;         // [-] episodes between evaluations (0 = none)
+  long long eval_episodes = 200;       // [-] episodes per evaluation
+  uint64_t seed = 0;
+
+  Status validate() const;
+};
+
+struct UpdateStats {
+  long long episodes = 0;    // [-] episodes in the batch
+  int samples = 0;           // [-] agent steps in the batch
+  double mean_return = 0.0;  // [-]
+  double success_rate = 0.0; // [-] 0..1
+  double entropy = 0.0;      // [-] mean policy entropy over the samples
+  double grad_norm = 0.0;    // [-] before clipping
+  double value_loss = 0.0;   // [-] value MLP mean squared error (improved, before fitting)
+};
+
+class Trainer {
+ public:
+  // `update_index` is the number of updates already taken (resume).
+  Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, long long update_index);
+  UpdateStats update();
+  nn::Adam& adam() { return adam_; }
+  long long updates() const { return updates_; }
+
+ private:
+  struct Sample {
+    ActionSample action;
+    float reward = 0.0f;
+  };
+  // Fills coef (one per batch sample) for the estimator; returns the value loss.
+  double coefficients(std::vector<float>& coef);
+
+  Policy& policy_;
+  env::VecEnv& envs_;
+  TrainConfig cfg_;
+  nn::Adam adam_;
+  long long updates_ = 0;
+  // Value baseline (improved estimator with value_hidden).
+  std::unique_ptr<nn::Mlp> value_;
+  std::vector<float> value_params_, value_grads_;
+  std::unique_ptr<nn::Adam> value_adam_;
+  // Per slot: the running episode's observations [T, obs] and samples.
+  std::vector<std::vector<float>> slot_obs_;
+  std::vector<std::vector<Sample>> slot_samples_;
+  // The batch: finished episodes, concatenated.
+  std::vector<float> batch_obs_;
+  std::vector<Sample> batch_samples_;
+  std::vector<int> batch_lengths_;
+};
+
+}  // namespace squawk::rl

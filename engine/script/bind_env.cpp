@@ -1,0 +1,231 @@
+// squawk.env: the conflict-resolution environment and evaluator from Lua.
+//
+//   local env = squawk.env.new("scenarios/horizontal_cr.lua" [, "train"|"eval"])
+//   env:reset(seed) -> needs_decision      (episode drawn from Rng(seed))
+//   env:step(action) -> reward, done       (action in [-1, 1], units of 45 deg)
+//   env:observation() -> {intruder_distance = {..}, ..., sin_drift = x}
+//   env:flat() -> {28 numbers}             (the MLP's input order)
+//   env:stats() -> {total_reward, decisions, steps, intrusions, reached, truncated, success}
+//   env:state() -> {t, own = {lat, lon, hdg, tas}, intruders = {{..}, ..}, waypoint = {lat, lon}}
+//   env:mvp_action() -> number
+//   squawk.env.evaluate{scenario = path, policy = "zero"|"mvp"|"random"|"mlp",
+//                       checkpoint = file, episodes = n, seed = s, greedy = bool}
+//     -> {success_rate, mean_reward, std_reward, episodes}
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/paths.h"
+#include "env/horizontal_cr.h"
+#include "env/vec_env.h"
+#include "rl/baseline_policies.h"
+#include "rl/checkpoint.h"
+#include "rl/evaluator.h"
+#include "script/bindings.h"
+#include "script/lua_util.h"
+#include "script/scenario.h"
+#include "script/vm.h"
+
+namespace squawk::script {
+
+namespace {
+
+constexpr const char* kEnvMt = "squawk.Env";
+
+struct EnvBox {
+  Scenario scenario;
+  std::unique_ptr<env::HorizontalCrEnv> env;
+};
+
+Scenario load_or_throw(lua_State* L, const std::string& path) {
+  VmOptions vo = Vm::of(L).options();
+  vo.out_dir.clear();
+  auto sc = load_scenario(path, vo);
+  check_status(sc.status());
+  return std::move(*sc);
+}
+
+void push_array(lua_State* L, const std::vector<double>& v) {
+  lua_createtable(L, static_cast<int>(v.size()), 0);
+  for (size_t i = 0; i < v.size(); ++i) {
+    lua_pushnumber(L, v[i]);
+    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+}
+
+void set_number(lua_State* L, const char* key, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, key);
+}
+
+int l_new(lua_State* L) {
+  const std::string path = arg_string(L, 1, "scenario");
+  const std::string which = opt_string(L, 2, "settings", "eval");
+  if (which != "train" && which != "eval")
+    throw ArgError("squawk.env.new: settings '" + which + "': expected \"train\" or \"eval\"");
+  Scenario sc = load_or_throw(L, path);
+  auto e = env::HorizontalCrEnv::make(which == "train" ? sc.train_env : sc.eval_env);
+  check_status(e.status());
+  auto envp = std::make_unique<env::HorizontalCrEnv>(std::move(*e));
+  EnvBox* box = new_object<EnvBox>(L, kEnvMt);
+  box->scenario = std::move(sc);
+  box->env = std::move(envp);
+  return 1;
+}
+
+env::HorizontalCrEnv& self(lua_State* L) { return *arg_object<EnvBox>(L, 1, kEnvMt)->env; }
+
+int l_reset(lua_State* L) {
+  env::HorizontalCrEnv& e = self(L);
+  Rng rng(static_cast<uint64_t>(arg_integer(L, 2, "seed")));
+  lua_pushboolean(L, e.reset(rng));
+  return 1;
+}
+
+int l_step(lua_State* L) {
+  EnvBox* box = arg_object<EnvBox>(L, 1, kEnvMt);
+  const double r = box->env->step(arg_number(L, 2, "action"));
+  check_status(box->scenario.reward_error());
+  lua_pushnumber(L, r);
+  lua_pushboolean(L, box->env->done());
+  return 2;
+}
+
+int l_observation(lua_State* L) {
+  const env::Observation& o = self(L).observation();
+  lua_createtable(L, 0, 8);
+  push_array(L, o.intruder_distance);
+  lua_setfield(L, -2, "intruder_distance");
+  push_array(L, o.cos_difference_pos);
+  lua_setfield(L, -2, "cos_difference_pos");
+  push_array(L, o.sin_difference_pos);
+  lua_setfield(L, -2, "sin_difference_pos");
+  push_array(L, o.x_difference_speed);
+  lua_setfield(L, -2, "x_difference_speed");
+  push_array(L, o.y_difference_speed);
+  lua_setfield(L, -2, "y_difference_speed");
+  set_number(L, "waypoint_distance", o.waypoint_distance);
+  set_number(L, "cos_drift", o.cos_drift);
+  set_number(L, "sin_drift", o.sin_drift);
+  return 1;
+}
+
+int l_flat(lua_State* L) {
+  env::HorizontalCrEnv& e = self(L);
+  std::vector<float> flat(static_cast<size_t>(e.observation_size()));
+  e.observe_flat(flat);
+  push_array(L, std::vector<double>(flat.begin(), flat.end()));
+  return 1;
+}
+
+int l_stats(lua_State* L) {
+  const env::EpisodeStats& s = self(L).stats();
+  lua_createtable(L, 0, 7);
+  set_number(L, "total_reward", s.total_reward);
+  set_number(L, "decisions", s.decisions);
+  set_number(L, "steps", s.steps);
+  set_number(L, "intrusions", s.intrusions);
+  lua_pushboolean(L, s.reached);
+  lua_setfield(L, -2, "reached");
+  lua_pushboolean(L, s.truncated);
+  lua_setfield(L, -2, "truncated");
+  lua_pushboolean(L, s.success);
+  lua_setfield(L, -2, "success");
+  return 1;
+}
+
+void push_aircraft(lua_State* L, const env::Fleet& f, int i) {
+  lua_createtable(L, 0, 4);
+  set_number(L, "lat", f.lat(i));
+  set_number(L, "lon", f.lon(i));
+  set_number(L, "hdg", f.hdg(i));
+  set_number(L, "tas", f.tas(i));
+}
+
+int l_state(lua_State* L) {
+  const env::HorizontalCrEnv& e = self(L);
+  const env::Fleet& f = e.fleet();
+  lua_createtable(L, 0, 4);
+  set_number(L, "t", e.sim_time());
+  push_aircraft(L, f, 0);
+  lua_setfield(L, -2, "own");
+  lua_createtable(L, static_cast<int>(f.size()) - 1, 0);
+  for (int i = 1; i < static_cast<int>(f.size()); ++i) {
+    push_aircraft(L, f, i);
+    lua_seti(L, -2, i);
+  }
+  lua_setfield(L, -2, "intruders");
+  lua_createtable(L, 0, 2);
+  set_number(L, "lat", e.waypoint_lat());
+  set_number(L, "lon", e.waypoint_lon());
+  lua_setfield(L, -2, "waypoint");
+  return 1;
+}
+
+int l_mvp_action(lua_State* L) {
+  lua_pushnumber(L, self(L).mvp_action());
+  return 1;
+}
+
+int l_evaluate(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TTABLE);
+  const std::string path = field_string(L, 1, "scenario", "");
+  if (path.empty()) throw ArgError("squawk.env.evaluate: field 'scenario' (a scenario file) is required");
+  const std::string kind = field_string(L, 1, "policy", "mlp");
+  Scenario sc = load_or_throw(L, path);
+  const auto episodes = static_cast<long long>(field_number(L, 1, "episodes", static_cast<double>(sc.eval_episodes)));
+  const auto seed = static_cast<uint64_t>(field_number(L, 1, "seed", static_cast<double>(sc.eval_seed)));
+  auto envs = env::VecEnv::make(sc.eval_env, 32);
+  check_status(envs.status());
+  std::unique_ptr<rl::Policy> policy;
+  if (kind == "zero") {
+    policy = std::make_unique<rl::ZeroPolicy>(envs->obs_size());
+  } else if (kind == "mvp") {
+    policy = std::make_unique<rl::MvpPolicy>(*envs);
+  } else if (kind == "random") {
+    Rng init(seed);
+    auto p = rl::MlpPolicy::make(sc.policy, init);
+    check_status(p.status());
+    policy = std::move(*p);
+  } else if (kind == "mlp") {
+    auto c = rl::load_checkpoint(field_string(L, 1, "checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt")));
+    check_status(c.status());
+    auto p = rl::policy_from_checkpoint(*c);
+    check_status(p.status());
+    policy = std::move(*p);
+  } else {
+    throw ArgError("squawk.env.evaluate: policy '" + kind + "': expected zero, mvp, random or mlp");
+  }
+  auto res = rl::evaluate(*policy, *envs, {episodes, seed, field_boolean(L, 1, "greedy", false)});
+  check_status(res.status());
+  check_status(sc.reward_error());
+  lua_createtable(L, 0, 4);
+  set_number(L, "success_rate", res->success_rate);
+  set_number(L, "mean_reward", res->mean_reward);
+  set_number(L, "std_reward", res->std_reward);
+  lua_pushinteger(L, res->episodes);
+  lua_setfield(L, -2, "episodes");
+  return 1;
+}
+
+}  // namespace
+
+void bind_env(lua_State* L) {
+  static const luaL_Reg methods[] = {{"reset", guarded<l_reset>},
+                                     {"step", guarded<l_step>},
+                                     {"observation", guarded<l_observation>},
+                                     {"flat", guarded<l_flat>},
+                                     {"stats", guarded<l_stats>},
+                                     {"state", guarded<l_state>},
+                                     {"mvp_action", guarded<l_mvp_action>},
+                                     {nullptr, nullptr}};
+  define_class<EnvBox>(L, kEnvMt, methods);
+  push_squawk_subtable(L, "env");
+  lua_pushcfunction(L, guarded<l_new>);
+  lua_setfield(L, -2, "new");
+  lua_pushcfunction(L, guarded<l_evaluate>);
+  lua_setfield(L, -2, "evaluate");
+  lua_pop(L, 1);
+}
+
+}  // namespace squawk::script

@@ -1,0 +1,291 @@
+#include "script/scenario.h"
+
+#include <set>
+#include <string>
+
+#include "core/files.h"
+#include "core/units.h"
+#include "script/lua_util.h"
+
+namespace squawk::script {
+
+namespace {
+
+int traceback_handler(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  luaL_traceback(L, L, msg ? msg : "(error without message)", 1);
+  return 1;
+}
+
+// Throws ArgError naming the first key of the table at idx not in `known`.
+void check_keys(lua_State* L, int idx, const char* table, const std::set<std::string>& known) {
+  idx = lua_absindex(L, idx);
+  lua_pushnil(L);
+  while (lua_next(L, idx) != 0) {
+    lua_pop(L, 1);
+    std::string key = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "(non-string key)";
+    if (!known.count(key)) {
+      lua_pop(L, 1);
+      std::string all;
+      for (const auto& k : known) all.append(all.empty() ? "" : ", ").append(k);
+      throw ArgError("scenario table '" + std::string(table) + "' has unknown key '" + key +
+                     "'; known keys: " + all);
+    }
+  }
+}
+
+// Pushes field `key` of the table at idx when it is a table; false (nothing
+// pushed) when nil; ArgError otherwise.
+bool push_table_field(lua_State* L, int idx, const char* key) {
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    return false;
+  }
+  if (!lua_istable(L, -1)) {
+    std::string t = luaL_typename(L, -1);
+    lua_pop(L, 1);
+    throw ArgError(std::string("scenario field '") + key + "': expected a table, got " + t);
+  }
+  return true;
+}
+
+std::vector<double> number_list(lua_State* L, int idx, const char* key, std::vector<double> fallback) {
+  idx = lua_absindex(L, idx);
+  if (!push_table_field(L, idx, key)) return fallback;
+  std::vector<double> out;
+  const lua_Integer n = luaL_len(L, -1);
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, -1, i);
+    int ok = 0;
+    const double v = lua_tonumberx(L, -1, &ok);
+    lua_pop(L, 1);
+    if (!ok) {
+      lua_pop(L, 1);
+      throw ArgError(std::string("scenario field '") + key + "': entry " + std::to_string(i) +
+                     " is not a number");
+    }
+    out.push_back(v);
+  }
+  lua_pop(L, 1);
+  return out;
+}
+
+env::IntRange int_range(lua_State* L, int idx, const char* key, env::IntRange fallback) {
+  const std::vector<double> v = number_list(L, idx, key, {double(fallback.lo), double(fallback.hi)});
+  if (v.size() != 2 || v[0] != static_cast<int>(v[0]) || v[1] != static_cast<int>(v[1]))
+    throw ArgError(std::string("scenario field '") + key + "': expected {lo, hi} integers");
+  return {static_cast<int>(v[0]), static_cast<int>(v[1])};
+}
+
+int int_field(lua_State* L, int idx, const char* key, int fallback) {
+  const double v = field_number(L, idx, key, fallback);
+  if (v != static_cast<int>(v))
+    throw ArgError(std::string("scenario field '") + key + "': expected an integer");
+  return static_cast<int>(v);
+}
+
+const std::set<std::string> kEnvKeys = {
+    "intruders", "own_speed_ms", "speed_cap_ms", "accel_ms2", "bank_deg", "dt_s", "substeps",
+    "start_lat", "start_lon", "dpsi_deg", "cpa_nm", "tlos_s", "waypoint_km", "zone_radius_nm",
+    "reach_radius_km", "heading_step_deg", "max_steps", "lookahead_s", "mvp_margin"};
+
+void read_env(lua_State* L, int idx, env::HorizontalCrConfig& c) {
+  c.num_intruders = int_field(L, idx, "intruders", c.num_intruders);
+  c.own_speed = field_number(L, idx, "own_speed_ms", c.own_speed);
+  c.limits.speed_cap = field_number(L, idx, "speed_cap_ms", c.limits.speed_cap);
+  c.limits.accel = field_number(L, idx, "accel_ms2", c.limits.accel);
+  c.limits.bank = field_number(L, idx, "bank_deg", c.limits.bank);
+  c.dt = field_number(L, idx, "dt_s", c.dt);
+  c.substeps = int_field(L, idx, "substeps", c.substeps);
+  c.start_lat = field_number(L, idx, "start_lat", c.start_lat);
+  c.start_lon = field_number(L, idx, "start_lon", c.start_lon);
+  c.dpsi = int_range(L, idx, "dpsi_deg", c.dpsi);
+  c.cpa = int_range(L, idx, "cpa_nm", c.cpa);
+  c.tlos = int_range(L, idx, "tlos_s", c.tlos);
+  c.waypoint_distance = int_range(L, idx, "waypoint_km", c.waypoint_distance);
+  c.zone_radius = units::nm_to_m(field_number(L, idx, "zone_radius_nm", units::m_to_nm(c.zone_radius)));
+  c.reach_radius = 1000.0 * field_number(L, idx, "reach_radius_km", c.reach_radius / 1000.0);
+  c.heading_per_action = field_number(L, idx, "heading_step_deg", c.heading_per_action);
+  c.max_steps = int_field(L, idx, "max_steps", c.max_steps);
+  c.lookahead = field_number(L, idx, "lookahead_s", c.lookahead);
+  c.mvp_margin = field_number(L, idx, "mvp_margin", c.mvp_margin);
+}
+
+void read_weights(lua_State* L, int idx, env::RewardWeights& w) {
+  check_keys(L, idx, "reward",
+             {"reach", "drift_per_rad", "intrusion", "w_i", "w_d", "w_h", "clear_bonus",
+              "drift_limit_deg", "drift_beyond", "exp_rate", "delta_norm_deg"});
+  w.reach = field_number(L, idx, "reach", w.reach);
+  w.drift_per_rad = field_number(L, idx, "drift_per_rad", w.drift_per_rad);
+  w.intrusion = field_number(L, idx, "intrusion", w.intrusion);
+  w.w_i = field_number(L, idx, "w_i", w.w_i);
+  w.w_d = field_number(L, idx, "w_d", w.w_d);
+  w.w_h = field_number(L, idx, "w_h", w.w_h);
+  w.clear_bonus = field_number(L, idx, "clear_bonus", w.clear_bonus);
+  w.drift_limit = field_number(L, idx, "drift_limit_deg", w.drift_limit);
+  w.drift_beyond = field_number(L, idx, "drift_beyond", w.drift_beyond);
+  w.exp_rate = field_number(L, idx, "exp_rate", w.exp_rate);
+  w.delta_norm = field_number(L, idx, "delta_norm_deg", w.delta_norm);
+}
+
+void read_policy(lua_State* L, int idx, rl::MlpPolicySpec& p) {
+  check_keys(L, idx, "policy", {"hidden", "head", "actions", "init_log_std"});
+  std::vector<double> hidden_default(p.hidden.begin(), p.hidden.end());
+  p.hidden.clear();
+  for (double h : number_list(L, idx, "hidden", hidden_default)) p.hidden.push_back(static_cast<int>(h));
+  p.head = field_string(L, idx, "head", p.head);
+  p.action_values = number_list(L, idx, "actions", p.action_values);
+  p.init_log_std = field_number(L, idx, "init_log_std", p.init_log_std);
+}
+
+void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
+  check_keys(L, idx, "train",
+             {"estimator", "episodes", "episodes_per_update", "num_envs", "lr", "gamma",
+              "entropy_coef", "grad_clip", "eval_every", "eval_episodes", "seed"});
+  t.estimator = field_string(L, idx, "estimator", t.estimator);
+  t.episodes = static_cast<long long>(field_number(L, idx, "episodes", static_cast<double>(t.episodes)));
+  t.episodes_per_update = int_field(L, idx, "episodes_per_update", t.episodes_per_update);
+  t.num_envs = int_field(L, idx, "num_envs", t.num_envs);
+  t.lr = field_number(L, idx, "lr", t.lr);
+  t.gamma = field_number(L, idx, "gamma", t.gamma);
+  t.entropy_coef = field_number(L, idx, "entropy_coef", t.entropy_coef);
+  t.grad_clip = field_number(L, idx, "grad_clip", t.grad_clip);
+  t.eval_every = static_cast<long long>(field_number(L, idx, "eval_every", static_cast<double>(t.eval_every)));
+  t.eval_episodes =
+      static_cast<long long>(field_number(L, idx, "eval_episodes", static_cast<double>(t.eval_episodes)));
+  t.seed = static_cast<uint64_t>(field_number(L, idx, "seed", static_cast<double>(t.seed)));
+}
+
+// Wraps the Lua function at idx as a reward; errors go to *status.
+std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, std::shared_ptr<Vm> vm,
+                                                         std::shared_ptr<Status> status) {
+  lua_pushvalue(L, idx);
+  const int ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  return [vm, status, ref](const env::StepFacts& f) -> double {
+    lua_State* S = vm->state();
+    lua_pushcfunction(S, traceback_handler);
+    const int handler = lua_gettop(S);
+    lua_rawgeti(S, LUA_REGISTRYINDEX, ref);
+    lua_createtable(S, 0, 7);
+    lua_pushinteger(S, f.step);
+    lua_setfield(S, -2, "step");
+    lua_pushinteger(S, f.intrusions);
+    lua_setfield(S, -2, "intrusions");
+    lua_pushnumber(S, f.cpa_ratio);
+    lua_setfield(S, -2, "cpa_ratio");
+    lua_pushnumber(S, f.drift);
+    lua_setfield(S, -2, "drift_deg");
+    lua_pushnumber(S, f.heading_change);
+    lua_setfield(S, -2, "heading_change_deg");
+    lua_pushnumber(S, f.waypoint_distance);
+    lua_setfield(S, -2, "waypoint_distance_m");
+    lua_pushboolean(S, f.reached);
+    lua_setfield(S, -2, "reached");
+    double r = 0.0;
+    if (lua_pcall(S, 1, 1, handler) != LUA_OK) {
+      if (status->is_ok()) status->operator=(Status::invalid(std::string("reward function: ") + lua_tostring(S, -1)));
+    } else if (lua_type(S, -1) != LUA_TNUMBER) {
+      if (status->is_ok())
+        *status = Status::invalid(std::string("reward function returned ") + luaL_typename(S, -1) +
+                                  ", expected a number");
+    } else {
+      r = lua_tonumber(S, -1);
+    }
+    lua_settop(S, handler - 1);
+    return r;
+  };
+}
+
+void read_scenario(lua_State* L, int top, Scenario& s) {
+  check_keys(L, top, "scenario", {"rules", "env", "eval", "reward", "policy", "train", "name", "description"});
+  const std::string rules = field_string(L, top, "rules", "paper");
+  env::HorizontalCrConfig& c = s.train_env;
+  if (rules == "gym") {
+    c.rules = env::Rules::kGym;
+    s.policy.head = "gaussian";
+  } else if (rules == "paper") {
+    c.rules = env::Rules::kPaper;
+  } else {
+    throw ArgError("scenario field 'rules' is '" + rules + "': expected \"paper\" or \"gym\"");
+  }
+  if (push_table_field(L, top, "env")) {
+    check_keys(L, -1, "env", kEnvKeys);
+    read_env(L, -1, c);
+    lua_pop(L, 1);
+  }
+  lua_getfield(L, top, "reward");
+  if (lua_isfunction(L, -1)) {
+    s.reward_status = std::make_shared<Status>();
+    c.reward_fn = lua_reward(L, -1, s.vm, s.reward_status);
+    s.lua_reward = true;
+  } else if (lua_istable(L, -1)) {
+    read_weights(L, -1, c.weights);
+  } else if (!lua_isnil(L, -1)) {
+    throw ArgError(std::string("scenario field 'reward': expected a table of weights or a function, got ") +
+                   luaL_typename(L, -1));
+  }
+  lua_pop(L, 1);
+  if (push_table_field(L, top, "policy")) {
+    read_policy(L, -1, s.policy);
+    lua_pop(L, 1);
+  }
+  if (push_table_field(L, top, "train")) {
+    read_train(L, -1, s.train);
+    lua_pop(L, 1);
+  }
+  s.eval_env = c;
+  if (push_table_field(L, top, "eval")) {
+    std::set<std::string> keys = kEnvKeys;
+    keys.insert({"episodes", "seed"});
+    check_keys(L, -1, "eval", keys);
+    read_env(L, -1, s.eval_env);
+    s.eval_episodes = static_cast<long long>(field_number(L, -1, "episodes", 1000));
+    s.eval_seed = static_cast<uint64_t>(field_number(L, -1, "seed", 0));
+    lua_pop(L, 1);
+  }
+}
+
+}  // namespace
+
+Result<Scenario> load_scenario(const std::string& path, const VmOptions& options) {
+  if (!files::exists(path)) return Status::not_found("no scenario file '" + path + "'");
+  Scenario s;
+  s.path = path;
+  s.vm = std::make_shared<Vm>(options);
+  lua_State* L = s.vm->state();
+  const int base = lua_gettop(L);
+  lua_pushcfunction(L, traceback_handler);
+  if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK) {
+    std::string msg = lua_tostring(L, -1);
+    lua_settop(L, base);
+    return Status::invalid(msg);
+  }
+  if (lua_pcall(L, 0, 1, base + 1) != LUA_OK) {
+    std::string msg = lua_tostring(L, -1);
+    lua_settop(L, base);
+    return Status::invalid(msg);
+  }
+  if (!lua_istable(L, -1)) {
+    std::string t = luaL_typename(L, -1);
+    lua_settop(L, base);
+    return Status::invalid("scenario " + path + " returned " + t + ", expected a table of parameters");
+  }
+  std::string error;
+  try {
+    read_scenario(L, lua_gettop(L), s);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  lua_settop(L, base);
+  if (!error.empty()) return Status::invalid("scenario " + path + ": " + error);
+  SQUAWK_RETURN_IF_ERROR(s.train_env.validate().with_context("scenario " + path));
+  SQUAWK_RETURN_IF_ERROR(s.eval_env.validate().with_context("scenario " + path + " (eval)"));
+  SQUAWK_RETURN_IF_ERROR(s.policy.validate().with_context("scenario " + path));
+  SQUAWK_RETURN_IF_ERROR(s.train.validate().with_context("scenario " + path));
+  if (s.eval_episodes < 1) return Status::invalid("scenario " + path + ": eval episodes must be >= 1");
+  if (!s.lua_reward) s.vm.reset();
+  return s;
+}
+
+}  // namespace squawk::script

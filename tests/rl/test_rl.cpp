@@ -1,0 +1,196 @@
+// Learner tests: gradients against finite differences, checkpoints, exact
+// reproducibility and resumption of training.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include "core/files.h"
+#include "env/vec_env.h"
+#include "nn/categorical.h"
+#include "nn/gaussian.h"
+#include "nn/mlp.h"
+#include "rl/checkpoint.h"
+#include "rl/evaluator.h"
+#include "rl/mlp_policy.h"
+#include "rl/vpg.h"
+
+using namespace squawk;
+
+namespace {
+
+// Loss L(params) = sum_b sum_k c[b,k] y[b,k] for fixed c, so dL/dy = c.
+double mlp_loss(const nn::Mlp& m, const std::vector<float>& p, const std::vector<float>& x, int batch,
+                const std::vector<float>& c) {
+  std::vector<float> y(static_cast<size_t>(batch * m.out_dim()));
+  m.forward(p, x.data(), batch, y.data(), nullptr);
+  double l = 0.0;
+  for (size_t i = 0; i < y.size(); ++i) l += static_cast<double>(c[i]) * y[i];
+  return l;
+}
+
+std::string temp_path(const char* name) {
+  return (std::filesystem::temp_directory_path() / name).string();
+}
+
+}  // namespace
+
+TEST_CASE("MLP backward matches central finite differences") {
+  auto m = nn::Mlp::make({4, 6, 5, 3});
+  REQUIRE(m);
+  CHECK(m->num_params() == (4 * 6 + 6) + (6 * 5 + 5) + (5 * 3 + 3));
+  Rng rng(3);
+  std::vector<float> p(m->num_params()), g(m->num_params(), 0.0f);
+  m->init(p, rng);
+  const int batch = 3;
+  std::vector<float> x(12), c(9);
+  for (auto& v : x) v = static_cast<float>(rng.uniform(-1, 1));
+  for (auto& v : c) v = static_cast<float>(rng.uniform(-1, 1));
+  nn::MlpCache cache;
+  std::vector<float> y(9);
+  m->forward(p, x.data(), batch, y.data(), &cache);
+  m->backward(p, cache, c.data(), g);
+  double worst = 0.0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    const float h = 1e-2f, keep = p[i];
+    p[i] = keep + h;
+    const double lp = mlp_loss(*m, p, x, batch, c);
+    p[i] = keep - h;
+    const double lm = mlp_loss(*m, p, x, batch, c);
+    p[i] = keep;
+    worst = std::max(worst, std::fabs((lp - lm) / (2 * h) - g[i]));
+  }
+  CHECK(worst < 2e-3);
+  CHECK_FALSE(nn::Mlp::make({4}));
+  CHECK_FALSE(nn::Mlp::make({4, 0, 2}));
+}
+
+TEST_CASE("paper-sized MLP policy has about 12,000 parameters") {
+  Rng rng(0);
+  auto p = rl::MlpPolicy::make({}, rng);
+  REQUIRE(p);
+  CHECK((*p)->params().size() == 12581);
+}
+
+TEST_CASE("categorical and Gaussian log-prob gradients match finite differences") {
+  const std::vector<float> z = {0.3f, -1.2f, 2.0f, 0.1f, -0.4f};
+  std::vector<float> lp(5), dz(5, 0.0f);
+  nn::log_softmax(z, lp);
+  nn::categorical_grad(lp, 2, 1.0f, 0.5f, dz);
+  auto obj = [&](std::vector<float> zz) {
+    std::vector<float> l(5);
+    nn::log_softmax(zz, l);
+    return static_cast<double>(l[2]) + 0.5 * nn::categorical_entropy(l);
+  };
+  for (size_t k = 0; k < 5; ++k) {
+    auto zp = z, zm = z;
+    zp[k] += 1e-3f;
+    zm[k] -= 1e-3f;
+    CHECK(dz[k] == doctest::Approx((obj(zp) - obj(zm)) / 2e-3).epsilon(1e-2));
+  }
+  const nn::GaussianGrad g = nn::gaussian_grad(0.4f, 0.1f, -0.7f, 1.0f, 0.0f);
+  const double h = 1e-3;
+  CHECK(g.d_mu == doctest::Approx((nn::gaussian_log_prob(0.4f, 0.1f + h, -0.7f) -
+                                   nn::gaussian_log_prob(0.4f, 0.1f - h, -0.7f)) / (2 * h)).epsilon(1e-2));
+  CHECK(g.d_log_std == doctest::Approx((nn::gaussian_log_prob(0.4f, 0.1f, -0.7f + h) -
+                                        nn::gaussian_log_prob(0.4f, 0.1f, -0.7f - h)) / (2 * h)).epsilon(1e-2));
+}
+
+TEST_CASE("checkpoint round trip and clear errors on damaged files") {
+  Rng rng(1);
+  auto p = rl::MlpPolicy::make({}, rng);
+  REQUIRE(p);
+  rl::Checkpoint c;
+  c.spec = (*p)->spec();
+  c.params.assign((*p)->params().begin(), (*p)->params().end());
+  c.has_adam = true;
+  c.adam_t = 7;
+  c.adam_m.assign(c.params.size(), 0.5f);
+  c.adam_v.assign(c.params.size(), 0.25f);
+  c.progress.episodes = 1234;
+  const std::string path = temp_path("squawk_test_rl.ckpt");
+  REQUIRE(rl::save_checkpoint(path, c).is_ok());
+  auto back = rl::load_checkpoint(path);
+  REQUIRE(back);
+  CHECK(back->params == c.params);
+  CHECK(back->adam_v == c.adam_v);
+  CHECK(back->adam_t == 7);
+  CHECK(back->progress.episodes == 1234);
+  auto q = rl::policy_from_checkpoint(*back);
+  REQUIRE(q);
+  CHECK(std::vector<float>((*q)->params().begin(), (*q)->params().end()) == c.params);
+
+  auto data = files::read(path);
+  REQUIRE(data);
+  REQUIRE(files::write_atomic(path, data->substr(0, data->size() - 10)).is_ok());
+  auto cut = rl::load_checkpoint(path);
+  REQUIRE_FALSE(cut);
+  CHECK(cut.status().message().find("expected") != std::string::npos);
+  REQUIRE(files::write_atomic(path, "not a checkpoint").is_ok());
+  CHECK(rl::load_checkpoint(path).status().message().find("first line") != std::string::npos);
+  std::remove(path.c_str());
+  CHECK(rl::load_checkpoint(path).status().code() != Code::kOk);
+}
+
+TEST_CASE("training is reproducible and a resumed run continues exactly") {
+  env::HorizontalCrConfig ec;
+  rl::TrainConfig tc;
+  tc.episodes_per_update = 8;
+  tc.num_envs = 4;
+  tc.seed = 9;
+  auto train = [&](int first, int count, std::vector<float> params, rl::Checkpoint* adam_in,
+                   rl::Checkpoint* adam_out) {
+    Rng init(0);
+    auto p = rl::MlpPolicy::make({}, init);
+    REQUIRE(p);
+    if (!params.empty()) std::copy(params.begin(), params.end(), (*p)->params().begin());
+    auto v = env::VecEnv::make(ec, tc.num_envs);
+    REQUIRE(v);
+    rl::Trainer tr(**p, *v, tc, first);
+    if (adam_in) {
+      tr.adam().m() = adam_in->adam_m;
+      tr.adam().v() = adam_in->adam_v;
+      tr.adam().set_t(adam_in->adam_t);
+    }
+    for (int i = 0; i < count; ++i) CHECK(tr.update().episodes == 8);
+    if (adam_out) {
+      adam_out->adam_m = tr.adam().m();
+      adam_out->adam_v = tr.adam().v();
+      adam_out->adam_t = tr.adam().t();
+    }
+    return std::vector<float>((*p)->params().begin(), (*p)->params().end());
+  };
+  tc.value_hidden = {};  // the mean baseline carries no extra state across a resume
+  const auto straight = train(0, 4, {}, nullptr, nullptr);
+  CHECK(straight == train(0, 4, {}, nullptr, nullptr));
+  rl::Checkpoint mid;
+  const auto half = train(0, 2, {}, nullptr, &mid);
+  CHECK(half != straight);
+  CHECK(train(2, 2, half, &mid, nullptr) == straight);
+}
+
+TEST_CASE("evaluation is deterministic for a seed and rejects a mismatched policy") {
+  env::HorizontalCrConfig ec;
+  ec.tlos = {300, 1000};
+  ec.lookahead = 600;
+  auto v = env::VecEnv::make(ec, 16);
+  REQUIRE(v);
+  Rng init(5);
+  auto p = rl::MlpPolicy::make({}, init);
+  REQUIRE(p);
+  auto a = rl::evaluate(**p, *v, {100, 3, false});
+  auto b = rl::evaluate(**p, *v, {100, 3, false});
+  REQUIRE(a);
+  REQUIRE(b);
+  CHECK(a->mean_reward == b->mean_reward);
+  CHECK(a->std_reward == b->std_reward);
+  CHECK(a->success_rate == b->success_rate);
+  CHECK(a->episodes == 100);
+  rl::MlpPolicySpec small;
+  small.obs_size = 13;
+  auto q = rl::MlpPolicy::make(small, init);
+  REQUIRE(q);
+  CHECK_FALSE(rl::evaluate(**q, *v, {10, 3, false}));
+}
