@@ -1,4 +1,4 @@
-// squawk gpt2 info | generate | logits | bench | train-bpe.
+// squawk gpt2 info | generate | logits | bench | train-bpe | init.
 #include <algorithm>
 #include <cstdio>
 
@@ -7,10 +7,12 @@
 #include "app/cli.h"
 #include "app/subcommands.h"
 #include "core/files.h"
+#include "core/rng.h"
 #include "core/text.h"
 #include "gpt2/benchmark.h"
 #include "gpt2/bpe.h"
 #include "gpt2/bundle.h"
+#include "gpt2/checkpoint.h"
 #include "gpt2/generate.h"
 #include "nn/gemm.h"
 
@@ -155,20 +157,57 @@ int train_bpe(const Args& a) {
   return kExitOk;
 }
 
+// A random GPT-2 in Hugging Face format, over the vocabulary of --vocab DIR
+// (vocab.json + merges.txt, copied along) or the byte-level 257 tokens.
+int init(const Args& a) {
+  if (a.positional().size() != 2) return usage_error("gpt2", "init expects OUT_DIR");
+  gpt2::Config cfg = gpt2::Config::tiny();
+  const std::pair<const char*, int*> dims[] = {{"--layers", &cfg.n_layer}, {"--heads", &cfg.n_head},
+                                               {"--width", &cfg.n_embd}, {"--context", &cfg.n_ctx}};
+  for (const auto& [flag, field] : dims) {
+    auto v = a.get_int(flag, *field);
+    if (!v || *v < 1 || *v > 65536) return usage_error("gpt2", std::string(flag) + " expects an integer in 1..65536");
+    *field = static_cast<int>(*v);
+  }
+  auto seed = a.get_int("--seed", 0);
+  if (!seed) return usage_error("gpt2", seed.status().message());
+  gpt2::Tokenizer tok = gpt2::Tokenizer::bytes_only();
+  if (auto dir = a.get("--vocab")) {
+    auto t = gpt2::Tokenizer::load(*dir);
+    if (!t) return failure(t.status());
+    tok = std::move(t).value();
+  }
+  cfg.vocab_size = tok.vocab_size();
+  auto model = gpt2::Model::create(cfg);
+  if (!model) return failure(model.status());
+  Rng rng(static_cast<uint64_t>(*seed));
+  model->init_random(rng);
+  const std::string& out = a.positional()[1];
+  Status st = gpt2::save_model(out, *model);
+  if (st.is_ok()) st = tok.save(out);
+  if (!st.is_ok()) return failure(st);
+  std::printf("wrote %s: %d layers, %d heads, %d wide, %d positions, %d tokens (%lld parameters)\n",
+              out.c_str(), cfg.n_layer, cfg.n_head, cfg.n_embd, cfg.n_ctx, cfg.vocab_size,
+              cfg.num_params());
+  return kExitOk;
+}
+
 }  // namespace
 
 int cmd_gpt2(const ArgV& argv) {
   auto a = Args::parse(argv, {{"--max-tokens", "--top-k", "--seed", "--seq", "--batch", "--threads",
-                               "--seconds", "--merges"},
+                               "--seconds", "--merges", "--layers", "--heads", "--width", "--context",
+                               "--vocab"},
                               {"--json", "--tiny"}});
   if (!a) return usage_error("gpt2", a.status().message());
-  if (a->positional().empty()) return usage_error("gpt2", "missing action (info, generate, logits, bench, train-bpe)");
+  if (a->positional().empty()) return usage_error("gpt2", "missing action (info, generate, logits, bench, train-bpe, init)");
   const std::string& what = a->positional()[0];
   if (what == "info") return info(*a);
   if (what == "generate") return generate(*a);
   if (what == "logits") return logits(*a);
   if (what == "bench") return bench(*a);
   if (what == "train-bpe") return train_bpe(*a);
+  if (what == "init") return init(*a);
   return usage_error("gpt2", "unknown action " + text::quoted(what));
 }
 

@@ -37,7 +37,9 @@ const std::vector<Subcommand>& subcommands() {
        "       squawk gpt2 logits DIR \"TEXT\" [--json]\n"
        "       squawk gpt2 bench [--json] [--tiny] [--seq T] [--batch 1,8] [--threads 1,2]\n"
        "                         [--seconds S]\n"
-       "       squawk gpt2 train-bpe OUT_DIR FILE... [--merges N]\n\n"
+       "       squawk gpt2 train-bpe OUT_DIR FILE... [--merges N]\n"
+       "       squawk gpt2 init OUT_DIR [--vocab DIR] [--layers N] [--heads N] [--width N]\n"
+       "                        [--context N] [--seed N]\n\n"
        "DIR is a Hugging Face GPT-2 folder (config.json, model.safetensors in F32,\n"
        "F16 or BF16, vocab.json + merges.txt) or the word `tiny`: a random 2-layer,\n"
        "64-wide model over the byte-level vocabulary, seeded by --seed (default 0).\n\n"
@@ -53,7 +55,9 @@ const std::vector<Subcommand>& subcommands() {
        "              block trainable; --json prints gflops, peak_gflops,\n"
        "              fraction_of_peak and every run; --tiny uses the tiny model\n"
        "  train-bpe   learn N byte-level BPE merges (default 256) on the text files\n"
-       "              and write vocab.json + merges.txt to OUT_DIR\n",
+       "              and write vocab.json + merges.txt to OUT_DIR\n"
+       "  init        write a random GPT-2 folder (GPT-2's initialisation; default the\n"
+       "              tiny shape) over the vocabulary of --vocab DIR or the bytes\n",
        cmd_gpt2},
       {"render", "render EPISODE.jsonl      draw a recorded episode as SVG (Fig. 2 style)",
        "usage: squawk render EPISODE.jsonl [--frame N] [--size PX] [--out FILE.svg|-]\n\n"
