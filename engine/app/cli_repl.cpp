@@ -16,6 +16,9 @@
 #include "app/cli.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
+#include "core/files.h"
+#include "core/paths.h"
+#include "llm/llm_config.h"
 #include "script/repl_session.h"
 
 namespace squawk::app {
@@ -54,10 +57,14 @@ int cmd_repl(const ArgV& argv) {
   for (const auto& [flag, var] : {std::pair{"--llm-url", "SQUAWK_LLM_URL"}, std::pair{"--llm-model", "SQUAWK_LLM_MODEL"},
                                   std::pair{"--llm-api", "SQUAWK_LLM_API"}})
     if (auto v = args->get(flag)) ::setenv(var, v->c_str(), 1);
+  if (auto llm = llm::config_from_env(); !llm && llm.status().code() != Code::kNotFound)
+    return usage_error("repl", llm.status().message());
   opts->max_instructions = 0;  // an interactive session has no instruction budget
 
+  const std::string scenario = args->positional().empty() ? "" : paths::absolute(args->positional()[0]);
+  if (!scenario.empty() && !files::exists(scenario))
+    return failure(Status::not_found("no scenario file '" + args->positional()[0] + "'"));
   script::Vm vm(*opts);
-  const std::string scenario = args->positional().empty() ? "" : args->positional()[0];
   auto session = script::ReplSession::open(vm, scenario, args->get_or("--mode", ""));
   if (!session) return failure(session.status());
 

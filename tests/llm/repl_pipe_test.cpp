@@ -1,6 +1,7 @@
 // `squawk repl` driven through a pipe: English in, the simulation changes.
 // Runs the built binary (SQUAWK_BINARY); skips when it has not been built.
 #include <doctest/doctest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -20,7 +21,7 @@ namespace {
 
 // Runs `squawk repl ARGS` with `input` on stdin; returns stdout+stderr.
 std::string run_repl(const std::string& args, const std::string& input) {
-  const std::string in_path = "/tmp/squawk_repl_test_input.txt";
+  const std::string in_path = "/tmp/squawk_repl_test_input_" + std::to_string(::getpid()) + ".txt";
   std::ofstream(in_path) << input;
   std::string cmd = "env -u SQUAWK_LLM_URL -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API timeout 60 ";
   cmd.append(SQUAWK_BINARY).append(" repl ").append(args).append(" < ").append(in_path).append(" 2>&1");
@@ -31,6 +32,7 @@ std::string run_repl(const std::string& args, const std::string& input) {
     while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
     ::pclose(p);
   }
+  std::remove(in_path.c_str());
   return out;
 }
 
