@@ -91,6 +91,12 @@ rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainP
     c.adam_t = tr->adam().t();
     c.adam_m = tr->adam().m();
     c.adam_v = tr->adam().v();
+    if (nn::Adam* va = tr->value_adam()) {
+      c.value_params = tr->value_params();
+      c.value_m = va->m();
+      c.value_v = va->v();
+      c.value_t = va->t();
+    }
   }
   c.progress = progress;
   return c;
@@ -177,6 +183,18 @@ int cmd_train(const ArgV& argv) {
     trainer.adam().m() = resume.adam_m;
     trainer.adam().v() = resume.adam_v;
     trainer.adam().set_t(resume.adam_t);
+    nn::Adam* va = trainer.value_adam();
+    if (va && resume.value_params.size() == trainer.value_params().size()) {
+      trainer.value_params() = resume.value_params;
+      va->m() = resume.value_m;
+      va->v() = resume.value_v;
+      va->set_t(resume.value_t);
+    } else if (va || !resume.value_params.empty()) {
+      return failure(Status::invalid("checkpoint " + ckpt_path + " holds " +
+                                     std::to_string(resume.value_params.size()) +
+                                     " value-baseline parameters, the scenario's learner has " +
+                                     std::to_string(trainer.value_params().size())));
+    }
   }
 
   const bool append = resuming && files::exists(log_path);

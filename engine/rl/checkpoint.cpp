@@ -35,7 +35,12 @@ Status save_checkpoint(const std::string& path, const Checkpoint& c) {
                       {"seed", c.progress.seed},
                       {"estimator", c.progress.estimator},
                       {"scenario", c.progress.scenario},
-                      {"wall_s", c.progress.wall_s}};
+                      {"wall_s", c.progress.wall_s},
+                      {"num_value_params", c.value_params.size()},
+                      {"value_adam_t", c.value_t}};
+  const size_t nv = c.value_params.size();
+  if (c.value_m.size() != nv || c.value_v.size() != nv)
+    return Status::internal("checkpoint " + path + ": value-baseline Adam state size differs");
   if (c.has_adam && (c.adam_m.size() != c.params.size() || c.adam_v.size() != c.params.size()))
     return Status::internal("checkpoint " + path + ": Adam state size differs from the parameters");
   std::string out = kMagic;
@@ -47,6 +52,9 @@ Status save_checkpoint(const std::string& path, const Checkpoint& c) {
     append_floats(out, c.adam_m);
     append_floats(out, c.adam_v);
   }
+  append_floats(out, c.value_params);
+  append_floats(out, c.value_m);
+  append_floats(out, c.value_v);
   return files::write_atomic(path, out);
 }
 
@@ -75,17 +83,20 @@ Result<Checkpoint> load_checkpoint(const std::string& path) {
     c.progress.estimator = h.value("estimator", "");
     c.progress.scenario = h.value("scenario", "");
     c.progress.wall_s = h.value("wall_s", 0.0);
+    c.value_params.resize(h.value("num_value_params", size_t{0}));
+    c.value_t = h.value("value_adam_t", 0LL);
   } catch (const std::exception& e) {
     return Status::corruption("checkpoint " + path + ": bad JSON header: " + e.what());
   }
   SQUAWK_RETURN_IF_ERROR(c.spec.validate().with_context("checkpoint " + path));
-  const size_t n = c.params.size();
-  const size_t want = (c.has_adam ? 3 : 1) * n * sizeof(float);
+  const size_t n = c.params.size(), nv = c.value_params.size();
+  const size_t want = ((c.has_adam ? 3 : 1) * n + 3 * nv) * sizeof(float);
   const size_t got = data.size() - nl2 - 1;
   if (got != want)
     return Status::corruption("checkpoint " + path + ": " + std::to_string(got) +
                               " bytes of tensors, expected " + std::to_string(want) + " (" +
-                              std::to_string(n) + " parameters" + (c.has_adam ? " + Adam m, v)" : ")"));
+                              std::to_string(n) + " parameters" + (c.has_adam ? " + Adam m, v" : "") +
+                              ", " + std::to_string(nv) + " value parameters x 3)");
   const char* p = data.data() + nl2 + 1;
   std::memcpy(c.params.data(), p, n * sizeof(float));
   if (c.has_adam) {
@@ -93,7 +104,15 @@ Result<Checkpoint> load_checkpoint(const std::string& path) {
     c.adam_v.resize(n);
     std::memcpy(c.adam_m.data(), p + n * sizeof(float), n * sizeof(float));
     std::memcpy(c.adam_v.data(), p + 2 * n * sizeof(float), n * sizeof(float));
+    p += 3 * n * sizeof(float);
+  } else {
+    p += n * sizeof(float);
   }
+  c.value_m.resize(nv);
+  c.value_v.resize(nv);
+  std::memcpy(c.value_params.data(), p, nv * sizeof(float));
+  std::memcpy(c.value_m.data(), p + nv * sizeof(float), nv * sizeof(float));
+  std::memcpy(c.value_v.data(), p + 2 * nv * sizeof(float), nv * sizeof(float));
   return c;
 }
 

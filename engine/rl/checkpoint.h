@@ -7,7 +7,8 @@
 //           num_params, has_adam, adam_t, and the training progress
 //           (episodes, updates, seed, estimator, scenario, wall_s)
 //   then raw little-endian float32: params[num_params], and when has_adam
-//   Adam's m[num_params] and v[num_params].
+//   Adam's m[num_params] and v[num_params]; then, when num_value_params > 0,
+//   the learner's value baseline: params, Adam m, Adam v (num_value_params each).
 // Errors name the file and what was expected vs found.
 #pragma once
 
@@ -34,6 +35,9 @@ struct Checkpoint {
   bool has_adam = false;
   long long adam_t = 0;
   std::vector<float> adam_m, adam_v;
+  // Value baseline of the improved estimator (empty when none).
+  std::vector<float> value_params, value_m, value_v;
+  long long value_t = 0;
   TrainProgress progress;
 };
 

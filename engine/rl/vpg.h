@@ -65,6 +65,10 @@ class Trainer {
   UpdateStats update();
   nn::Adam& adam() { return adam_; }
   long long updates() const { return updates_; }
+  // The value baseline's parameters and optimiser, for checkpoints (empty /
+  // null without a value baseline).
+  std::vector<float>& value_params() { return value_params_; }
+  nn::Adam* value_adam() { return value_adam_.get(); }
 
  private:
   struct Sample {

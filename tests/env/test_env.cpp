@@ -75,8 +75,8 @@ TEST_CASE("closest approach of a head-on pair") {
   CHECK(c.t_in == doctest::Approx(100 - 46.3));
   CHECK(c.conflict(300));
   CHECK_FALSE(c.conflict(50));
-  // Passing 6 km abeam: no conflict with a 5 NM zone.
-  CHECK_FALSE(closest_approach({6000, 20000}, {0, -200}, 9260).conflict(300));
+  // Passing 12 km abeam: no conflict with a 5 NM (9.26 km) zone.
+  CHECK_FALSE(closest_approach({12000, 20000}, {0, -200}, 9260).conflict(300));
 }
 
 TEST_CASE("fleet: BlueSky's 2 m/s^2 deceleration to 89 m/s and 25 deg bank turn rate") {

@@ -54,15 +54,16 @@ TEST_CASE("MLP backward matches central finite differences") {
   m->backward(p, cache, c.data(), g);
   double worst = 0.0;
   for (size_t i = 0; i < p.size(); ++i) {
-    const float h = 1e-2f, keep = p[i];
+    const float h = 1e-3f, keep = p[i];
     p[i] = keep + h;
     const double lp = mlp_loss(*m, p, x, batch, c);
     p[i] = keep - h;
     const double lm = mlp_loss(*m, p, x, batch, c);
     p[i] = keep;
-    worst = std::max(worst, std::fabs((lp - lm) / (2 * h) - g[i]));
+    const double fd = (lp - lm) / (2 * h);
+    worst = std::max(worst, std::fabs(fd - g[i]));
   }
-  CHECK(worst < 2e-3);
+  CHECK(worst < 5e-3);  // float32 central differences, h = 1e-3
   CHECK_FALSE(nn::Mlp::make({4}));
   CHECK_FALSE(nn::Mlp::make({4, 0, 2}));
 }
@@ -110,6 +111,10 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   c.adam_m.assign(c.params.size(), 0.5f);
   c.adam_v.assign(c.params.size(), 0.25f);
   c.progress.episodes = 1234;
+  c.value_params.assign(10, 0.125f);
+  c.value_m.assign(10, 1.0f);
+  c.value_v.assign(10, 2.0f);
+  c.value_t = 3;
   const std::string path = temp_path("squawk_test_rl.ckpt");
   REQUIRE(rl::save_checkpoint(path, c).is_ok());
   auto back = rl::load_checkpoint(path);
@@ -118,6 +123,9 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   CHECK(back->adam_v == c.adam_v);
   CHECK(back->adam_t == 7);
   CHECK(back->progress.episodes == 1234);
+  CHECK(back->value_params == c.value_params);
+  CHECK(back->value_v == c.value_v);
+  CHECK(back->value_t == 3);
   auto q = rl::policy_from_checkpoint(*back);
   REQUIRE(q);
   CHECK(std::vector<float>((*q)->params().begin(), (*q)->params().end()) == c.params);
@@ -153,16 +161,23 @@ TEST_CASE("training is reproducible and a resumed run continues exactly") {
       tr.adam().m() = adam_in->adam_m;
       tr.adam().v() = adam_in->adam_v;
       tr.adam().set_t(adam_in->adam_t);
+      tr.value_params() = adam_in->value_params;
+      tr.value_adam()->m() = adam_in->value_m;
+      tr.value_adam()->v() = adam_in->value_v;
+      tr.value_adam()->set_t(adam_in->value_t);
     }
     for (int i = 0; i < count; ++i) CHECK(tr.update().episodes == 8);
     if (adam_out) {
       adam_out->adam_m = tr.adam().m();
       adam_out->adam_v = tr.adam().v();
       adam_out->adam_t = tr.adam().t();
+      adam_out->value_params = tr.value_params();
+      adam_out->value_m = tr.value_adam()->m();
+      adam_out->value_v = tr.value_adam()->v();
+      adam_out->value_t = tr.value_adam()->t();
     }
     return std::vector<float>((*p)->params().begin(), (*p)->params().end());
   };
-  tc.value_hidden = {};  // the mean baseline carries no extra state across a resume
   const auto straight = train(0, 4, {}, nullptr, nullptr);
   CHECK(straight == train(0, 4, {}, nullptr, nullptr));
   rl::Checkpoint mid;
