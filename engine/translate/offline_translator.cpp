@@ -280,6 +280,9 @@ class Parser {
     if (w == "print" || (w == "echo" && i + 1 < n && t_[i + 1].kind == TokKind::kQuoted)) return Intent::kEcho;
     if (w == "detection" || w == "asas" || w == "cdmethod") return Intent::kAsas;
     if (w == "resolution" || w == "resolve" || w == "reso") return Intent::kReso;
+    if (w == "separation" && !preceded_by(i, 2, {"minimum", "horizontal", "vertical", "lateral"}) &&
+        !near(4, {"minimum", "nm", "nautical", "miles", "radius", "ft", "feet"}))
+      return std::nullopt;  // "maintain visual separation" is no setting
     if (w == "protected" || w == "pz" || w == "separation" || w == "zoner" || w == "zonedh" || w == "radius" ||
         (w == "half" && word(i + 1, {"height"})))
       return Intent::kZone;

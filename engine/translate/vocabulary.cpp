@@ -39,10 +39,12 @@ const std::unordered_set<std::string>& keyword_set() {
   return kSet;
 }
 
-// Optimal string alignment distance (adjacent swaps count once), capped.
+// Optimal string alignment distance (adjacent swaps count once). Both words
+// are at most kMaxLen letters (callers check).
+constexpr size_t kMaxLen = 24;
 size_t osa_distance(std::string_view a, std::string_view b) {
+  size_t d[kMaxLen + 1][kMaxLen + 1];
   const size_t n = a.size(), m = b.size();
-  std::vector<std::vector<size_t>> d(n + 1, std::vector<size_t>(m + 1));
   for (size_t i = 0; i <= n; ++i) d[i][0] = i;
   for (size_t j = 0; j <= m; ++j) d[0][j] = j;
   for (size_t i = 1; i <= n; ++i)
@@ -86,6 +88,7 @@ std::string spell_fix(const std::string& w) {
       "should", "could", "their", "there", "these", "those", "about", "after", "again", "both", "each",
       "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs", "show", "send", "sent", "held", "lead"};
   if (w.size() <= 3 || is_keyword(w) || w.size() > 20 || kCommon.count(w)) return w;
+  static_assert(20 <= kMaxLen);
   for (char c : w)
     if (c < 'a' || c > 'z') return w;
   const size_t limit = w.size() >= 7 ? 2 : 1;
