@@ -104,6 +104,20 @@ const std::vector<Subcommand>& subcommands() {
        "offline grammar translates. The default mode is multi with an LLM, else\n"
        "offline.\n",
        cmd_repl},
+      {"llm", "llm chat TEXT | llm embed TEXT   ask the configured LLM server directly",
+       "usage: squawk llm chat TEXT... [--stream] [--system TEXT] [--llm-url URL]\n"
+       "                  [--llm-model NAME] [--llm-api ollama|openai] [--temperature T]\n"
+       "                  [--seed N] [--context TOKENS] [--timeout SECONDS]\n"
+       "       squawk llm embed TEXT... [same server flags]\n\n"
+       "Sends one request to the LLM server the translator would use, to check the\n"
+       "configuration: `chat` prints the reply (--stream prints it as it arrives)\n"
+       "and, on stderr, the server, token counts and attempts; `embed` prints the\n"
+       "size of each embedding. The server comes from the flags or SQUAWK_LLM_URL,\n"
+       "SQUAWK_LLM_MODEL, SQUAWK_LLM_API. A URL ending in /v1 speaks the\n"
+       "OpenAI-compatible API (llama.cpp server, vLLM, Ollama's /v1); any other\n"
+       "URL Ollama's native API. Temperature, seed and context size are sent with\n"
+       "every request; transport failures and 5xx replies are retried with backoff.\n",
+       cmd_llm},
       {"scn", "scn FILE.scn               run a BlueSky scenario headless and summarise it",
        "usage: squawk scn FILE.scn [--until SECONDS] [--navdata DIR] [--dump-json] [--seed N]\n"
        "       squawk scn DIR --conformance [--max-time SECONDS] [--navdata DIR]\n\n"
@@ -173,7 +187,12 @@ const std::vector<Subcommand>& subcommands() {
        "                  improved: reward-to-go, learned value baseline,\n"
        "                  normalised advantages and an entropy bonus\n"
        "  --resume        continue from DIR/checkpoint.ckpt (same seed): the run goes\n"
-       "                  on exactly as if it had not stopped\n",
+       "                  on exactly as if it had not stopped\n"
+       "  --policy gpt2   fine-tune the GPT-2 prompt policy instead: --model tiny|DIR,\n"
+       "                  --blocks K (trainable last blocks; default 2 for tiny, 1 for\n"
+       "                  a folder), --head action|lm, --prompt FILE (default\n"
+       "                  prompts/observation.lua), --episodes-per-update M; the\n"
+       "                  checkpoint is written after every update\n",
        cmd_train},
       {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
        "usage: squawk eval SCENARIO.lua [--policy random|zero|mvp|mlp] [--checkpoint FILE]\n"
@@ -187,10 +206,24 @@ const std::vector<Subcommand>& subcommands() {
        "                   reference, heading only)\n"
        "  --policy mlp     a trained MLP: --checkpoint FILE, by default the checkpoint\n"
        "                   shipped in models/\n"
+       "  --policy gpt2    the GPT-2 prompt policy: --checkpoint FILE (default the\n"
+       "                   fine-tuned tiny policy in models/), or --model tiny|DIR\n"
+       "                   for an untrained head; --prompt FILE, --head action|lm\n"
        "  --greedy         take the most likely action instead of sampling\n"
        "  --json           print {success_rate, mean_reward, std_reward, episodes}\n"
        "  --record FILE    write every episode as JSON lines (squawk render reads it)\n",
        cmd_eval},
+      {"table3", "table3 SCENARIO.lua   the paper's Table 3: untrained/trained MLP and GPT-2",
+       "usage: squawk table3 SCENARIO.lua [--episodes N] [--seed N] [--mlp-checkpoint FILE]\n"
+       "                     [--gpt2-checkpoint FILE] [--model tiny|DIR] [--csv FILE]\n\n"
+       "Evaluates the four agents of the paper's Table 3 on the same evaluation\n"
+       "episodes (default 1000) with one fixed seed (default the scenario's eval\n"
+       "seed): an untrained MLP (initialised from the seed), an untrained GPT-2\n"
+       "policy (the fine-tuned one's base model with a fresh action head, or\n"
+       "--model), the trained MLP and the fine-tuned GPT-2 (checkpoints shipped in\n"
+       "models/ unless given). Prints a markdown table, then CSV (or writes the CSV\n"
+       "to --csv FILE).\n",
+       cmd_table3},
   };
   return table;
 }

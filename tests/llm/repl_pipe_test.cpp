@@ -1,17 +1,15 @@
 // `squawk repl` driven through a pipe: English in, the simulation changes.
 // Runs the built binary (SQUAWK_BINARY); skips when it has not been built.
+// Also `squawk llm chat` against a loopback OpenAI-compatible server.
 #include <doctest/doctest.h>
-#include <unistd.h>
 
-#include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "core/files.h"
 #include "loopback_server.h"
+#include "run_binary.h"
 
 using squawk::testing::HttpRequestSeen;
 using squawk::testing::LoopbackServer;
@@ -19,21 +17,8 @@ using squawk::testing::Reply;
 
 namespace {
 
-// Runs `squawk repl ARGS` with `input` on stdin; returns stdout+stderr.
 std::string run_repl(const std::string& args, const std::string& input) {
-  const std::string in_path = "/tmp/squawk_repl_test_input_" + std::to_string(::getpid()) + ".txt";
-  std::ofstream(in_path) << input;
-  std::string cmd = "env -u SQUAWK_LLM_URL -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API timeout 60 ";
-  cmd.append(SQUAWK_BINARY).append(" repl ").append(args).append(" < ").append(in_path).append(" 2>&1");
-  std::string out;
-  if (FILE* p = ::popen(cmd.c_str(), "r")) {
-    char buf[4096];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-    ::pclose(p);
-  }
-  std::remove(in_path.c_str());
-  return out;
+  return squawk::testing::run_squawk("repl " + args, input).out;
 }
 
 // The heading [deg] on the last state line of aircraft `id`, or -1.
@@ -54,7 +39,7 @@ double last_heading(const std::string& out, const std::string& id) {
 }  // namespace
 
 TEST_CASE("repl from a pipe: create in English, turn, run, heading changed") {
-  if (!squawk::files::exists(SQUAWK_BINARY)) {
+  if (!squawk::testing::binary_built()) {
     MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
     return;
   }
@@ -74,7 +59,7 @@ TEST_CASE("repl from a pipe: create in English, turn, run, heading changed") {
 }
 
 TEST_CASE("repl with an Ollama server: the multi-agent graph, and :trace") {
-  if (!squawk::files::exists(SQUAWK_BINARY)) {
+  if (!squawk::testing::binary_built()) {
     MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
     return;
   }
@@ -100,7 +85,7 @@ TEST_CASE("repl with an Ollama server: the multi-agent graph, and :trace") {
 }
 
 TEST_CASE("repl with a dead server falls back to the offline grammar") {
-  if (!squawk::files::exists(SQUAWK_BINARY)) {
+  if (!squawk::testing::binary_built()) {
     MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
     return;
   }
@@ -110,4 +95,36 @@ TEST_CASE("repl with a dead server falls back to the offline grammar") {
   INFO(out);
   CHECK(out.find("> HDG KL204 270") != std::string::npos);
   CHECK(out.find("falling back to the offline translator") != std::string::npos);
+}
+
+TEST_CASE("squawk llm chat --stream prints the SSE tokens; a 404 is a clear failure") {
+  if (!squawk::testing::binary_built()) {
+    MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
+    return;
+  }
+  LoopbackServer server([](const HttpRequestSeen& req, int) {
+    if (req.body.find("nosuchmodel") != std::string::npos)
+      return Reply::json(404, R"({"error":{"message":"model 'nosuchmodel' not found"}})");
+    Reply r;
+    r.chunked = true;
+    r.content_type = "text/event-stream";
+    for (const char* piece : {"FF", " 600"})
+      r.pieces.push_back("data: " + nlohmann::json{{"choices", {{{"index", 0}, {"delta", {{"content", piece}}}}}}}.dump() + "\n\n");
+    r.pieces.push_back("data: [DONE]\n\n");
+    return r;
+  });
+  const auto [out, rc] = squawk::testing::run_squawk(
+      "llm chat speed it up --stream --llm-url " + server.url() + "/v1 --llm-model fake --seed 7", "");
+  INFO(out);
+  CHECK(rc == 0);
+  CHECK(out.find("FF 600") != std::string::npos);
+  CHECK(out.find("openai server " + server.url() + "/v1 (model fake)") != std::string::npos);
+  REQUIRE(server.requests().size() == 1);
+  CHECK(nlohmann::json::parse(server.requests()[0].body)["seed"] == 7);
+
+  const auto bad = squawk::testing::run_squawk(
+      "llm chat hi --llm-url " + server.url() + "/v1 --llm-model nosuchmodel", "");
+  INFO(bad.out);
+  CHECK(bad.out.find("HTTP 404: model 'nosuchmodel' not found") != std::string::npos);
+  CHECK(bad.rc == 1);
 }

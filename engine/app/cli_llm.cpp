@@ -1,0 +1,80 @@
+// squawk llm: talk to the configured LLM server directly (a configuration check).
+#include <cstdio>
+
+#include "app/cli.h"
+#include "app/subcommands.h"
+#include "core/text.h"
+#include "llm/client.h"
+
+namespace squawk::app {
+
+namespace {
+
+// The configuration from the environment, overridden by the flags.
+Result<llm::LlmConfig> config_from(const Args& args) {
+  llm::LlmConfig c;
+  if (auto env = llm::config_from_env(); env.is_ok()) c = *env;
+  c.url = args.get_or("--llm-url", c.url);
+  c.model = args.get_or("--llm-model", c.model);
+  if (auto api = args.get("--llm-api")) {
+    SQUAWK_ASSIGN_OR_RETURN(c.api, llm::parse_api(*api));
+  } else if (args.has("--llm-url")) {
+    c.api = llm::infer_api(c.url);
+  }
+  SQUAWK_ASSIGN_OR_RETURN(c.temperature, args.get_double("--temperature", c.temperature));
+  SQUAWK_ASSIGN_OR_RETURN(c.seed, args.get_int("--seed", c.seed));
+  SQUAWK_ASSIGN_OR_RETURN(long long ctx, args.get_int("--context", c.context_size));
+  c.context_size = static_cast<int>(ctx);
+  SQUAWK_ASSIGN_OR_RETURN(c.timeout_s, args.get_double("--timeout", c.timeout_s));
+  if (c.url.empty()) return Status::invalid("no LLM server: pass --llm-url URL or set SQUAWK_LLM_URL");
+  return c;
+}
+
+}  // namespace
+
+int cmd_llm(const ArgV& argv) {
+  Args::Spec spec;
+  spec.value_flags = {"--llm-url", "--llm-model", "--llm-api", "--system", "--temperature",
+                      "--seed",    "--context",   "--timeout"};
+  spec.bool_flags = {"--stream"};
+  auto args = Args::parse(argv, spec);
+  if (!args) return usage_error("llm", args.status().message());
+  const auto& pos = args->positional();
+  if (pos.size() < 2 || (pos[0] != "chat" && pos[0] != "embed"))
+    return usage_error("llm", "expected `llm chat TEXT...` or `llm embed TEXT...`");
+  auto cfg = config_from(*args);
+  if (!cfg) return usage_error("llm", cfg.status().message());
+  auto client = llm::make_client(*cfg);
+  if (!client) return usage_error("llm", client.status().message());
+
+  if (pos[0] == "embed") {
+    auto e = (*client)->embed({pos.begin() + 1, pos.end()});
+    if (!e) return failure(e.status());
+    for (size_t i = 0; i < e->size(); ++i)
+      std::printf("%s: %zu dimensions\n", text::quoted(pos[i + 1]).c_str(), (*e)[i].size());
+    return kExitOk;
+  }
+  llm::ChatRequest req;
+  if (auto sys = args->get("--system")) req.messages.push_back({"system", *sys});
+  req.messages.push_back({"user", text::join({pos.begin() + 1, pos.end()}, " ")});
+  llm::TokenSink sink;
+  if (args->has("--stream")) {
+    sink = [](std::string_view piece) {
+      std::fwrite(piece.data(), 1, piece.size(), stdout);
+      std::fflush(stdout);
+    };
+  }
+  auto reply = (*client)->chat(req, sink);
+  if (!reply) {
+    if (sink) std::printf("\n");
+    return failure(reply.status());
+  }
+  if (!sink) std::printf("%s", reply->content.c_str());
+  std::printf("\n");
+  std::fprintf(stderr, "[%s: %ld prompt + %ld reply tokens, %d attempt(s), %s]\n",
+               (*client)->config().describe().c_str(), reply->prompt_tokens, reply->completion_tokens,
+               reply->attempts, reply->finish_reason.c_str());
+  return kExitOk;
+}
+
+}  // namespace squawk::app
