@@ -187,12 +187,7 @@ const std::vector<Subcommand>& subcommands() {
        "                  improved: reward-to-go, learned value baseline,\n"
        "                  normalised advantages and an entropy bonus\n"
        "  --resume        continue from DIR/checkpoint.ckpt (same seed): the run goes\n"
-       "                  on exactly as if it had not stopped\n"
-       "  --policy gpt2   fine-tune the GPT-2 prompt policy instead: --model tiny|DIR,\n"
-       "                  --blocks K (trainable last blocks; default 2 for tiny, 1 for\n"
-       "                  a folder), --head action|lm, --prompt FILE (default\n"
-       "                  prompts/observation.lua), --episodes-per-update M; the\n"
-       "                  checkpoint is written after every update\n",
+       "                  on exactly as if it had not stopped\n",
        cmd_train},
       {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
        "usage: squawk eval SCENARIO.lua [--policy random|zero|mvp|mlp] [--checkpoint FILE]\n"
@@ -206,24 +201,10 @@ const std::vector<Subcommand>& subcommands() {
        "                   reference, heading only)\n"
        "  --policy mlp     a trained MLP: --checkpoint FILE, by default the checkpoint\n"
        "                   shipped in models/\n"
-       "  --policy gpt2    the GPT-2 prompt policy: --checkpoint FILE (default the\n"
-       "                   fine-tuned tiny policy in models/), or --model tiny|DIR\n"
-       "                   for an untrained head; --prompt FILE, --head action|lm\n"
        "  --greedy         take the most likely action instead of sampling\n"
        "  --json           print {success_rate, mean_reward, std_reward, episodes}\n"
        "  --record FILE    write every episode as JSON lines (squawk render reads it)\n",
        cmd_eval},
-      {"table3", "table3 SCENARIO.lua   the paper's Table 3: untrained/trained MLP and GPT-2",
-       "usage: squawk table3 SCENARIO.lua [--episodes N] [--seed N] [--mlp-checkpoint FILE]\n"
-       "                     [--gpt2-checkpoint FILE] [--model tiny|DIR] [--csv FILE]\n\n"
-       "Evaluates the four agents of the paper's Table 3 on the same evaluation\n"
-       "episodes (default 1000) with one fixed seed (default the scenario's eval\n"
-       "seed): an untrained MLP (initialised from the seed), an untrained GPT-2\n"
-       "policy (the fine-tuned one's base model with a fresh action head, or\n"
-       "--model), the trained MLP and the fine-tuned GPT-2 (checkpoints shipped in\n"
-       "models/ unless given). Prints a markdown table, then CSV (or writes the CSV\n"
-       "to --csv FILE).\n",
-       cmd_table3},
   };
   return table;
 }
