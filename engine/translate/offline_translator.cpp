@@ -292,6 +292,35 @@ class Parser {
     return std::nullopt;
   }
 
+  static bool same_family(Intent a, Intent b) {
+    auto alt = [](Intent x) { return x == Intent::kAlt || x == Intent::kMaintain; };
+    return a == b || (alt(a) && alt(b));
+  }
+
+  // Three digits said one by one before the first instruction word, with no
+  // cue of their own, are a heading whose "fly heading" was lost in
+  // recognition ("... Flighting Two Seven Zero maintain one eight zero knots").
+  void orphan_heading(const Segment& s) {
+    if (s.trig == s.begin || s.intent == Intent::kHdg || s.intent == Intent::kInfer) return;
+    for (const auto& q : extract_quantities(t_, s.begin, s.trig, used_)) {
+      if (q.kind != QKind::kPlain || q.number.typed || q.number.groups != 3 || !q.number.leading_digit_word ||
+          q.value > 360 || q.number.has_hundred || (q.begin > 0 && word(q.begin - 1, {"at"})))
+        continue;
+      // Only after a recognised callsign and a word of its own: digits right
+      // after an unrecognised callsign may be the callsign's.
+      const Reference* call = nullptr;
+      for (const auto& r : refs_)
+        if (r.kind == RefKind::kAircraft && r.end <= q.begin) call = &r;
+      if (!call || q.begin <= call->end || t_[q.begin - 1].kind != TokKind::kWord || is_number_word(t_[q.begin - 1]))
+        continue;
+      auto ids = acids(s);
+      if (ids.size() != 1) return;
+      out_.push_back("HDG " + ids.front() + " " + fmt(wrap_heading(q.value)));
+      for (size_t i = q.begin; i < q.end; ++i) used_[i] = true;
+      return;
+    }
+  }
+
   // Intents that never merge with a neighbour of the same intent.
   static bool mergeable(Intent a) { return a != Intent::kCreate && a != Intent::kDelete; }
   static bool value_intent(Intent a) {
@@ -337,7 +366,15 @@ class Parser {
     }
     // A "correction" restarts the instruction it corrects: keep the last
     // segment of each intent after the last correction.
+    size_t prev_out = out_.size();  // where the previous segment's commands start
+    if (!segs.empty()) orphan_heading(segs.front());
     for (size_t k = 0; k < segs.size() && ask_.empty(); ++k) {
+      // "descend and maintain four th- correction descend and maintain three
+      // thousand": the corrected instruction replaces the one before it.
+      if (k > 0 && word_in(segs[k - 1].trig, segs[k].trig, {"correction", "disregard"}) &&
+          same_family(segs[k - 1].intent, segs[k].intent))
+        out_.resize(prev_out);
+      prev_out = out_.size();
       // "Status of BAW45? Altitude, speed, everything": a bare noun after a
       // handled instruction names what to show, not a new instruction.
       if (k > 0 && !out_.empty() && word(segs[k].trig, {"altitude", "speed", "heading", "airspeed"}) &&
@@ -448,20 +485,23 @@ class Parser {
   }
 
   // A numeric value that grew out of range from a stutter or a misheard
-  // word before it ("one four fourteen thousand"): re-read from later groups.
-  std::optional<double> repaired(const Quantity& q, double lo, double hi) const {
+  // word ("one four fourteen thousand", "one one six zero"): re-read from a
+  // shorter run of its words, longest run first, preferring values that are
+  // multiples of `step` (assigned speeds, headings and levels are round).
+  std::optional<double> repaired(const Quantity& q, double lo, double hi, double step) const {
     if (q.value >= lo && q.value <= hi) return q.value;
     if (q.number.typed) return std::nullopt;
-    // Drop trailing words first ("one nine zero nine"), then leading ones.
-    for (size_t b = q.number.begin; b < q.number.end; ++b)
-      for (size_t e = q.number.end; e > b; --e) {
-        if (b == q.number.begin && e == q.number.end) continue;
-        std::vector<Token> part(t_.begin() + static_cast<long>(b), t_.begin() + static_cast<long>(e));
-        auto n = read_number(part, 0);
-        if (n && n->end == part.size() && n->has_thousand == q.number.has_thousand && n->value >= lo &&
-            n->value <= hi)
+    const size_t b0 = q.number.begin, e0 = q.number.end;
+    for (bool round_only : {true, false})
+      for (size_t len = e0 - b0 - 1; len >= 1; --len)
+        for (size_t b = b0; b + len <= e0; ++b) {
+          std::vector<Token> part(t_.begin() + static_cast<long>(b), t_.begin() + static_cast<long>(b + len));
+          auto n = read_number(part, 0);
+          if (!n || n->end != part.size() || n->has_thousand != q.number.has_thousand) continue;
+          if (n->value < lo || n->value > hi) continue;
+          if (round_only && std::fmod(n->value, step) != 0.0) continue;
           return n->value;
-      }
+        }
     return std::nullopt;
   }
 
@@ -546,7 +586,13 @@ class Parser {
   }
 
   void maintain(const Segment& s) {
-    for (const auto& q : quantities(s)) {
+    auto qs = quantities(s);
+    for (const auto& q : qs) {
+      if (q.begin < s.trig) continue;
+      if (q.kind == QKind::kSpeed || q.kind == QKind::kMach) return speed(s);
+      if (q.kind == QKind::kAlt) return altitude(s);
+    }
+    for (const auto& q : qs) {
       if (q.begin < s.trig) continue;
       if (q.kind == QKind::kAlt) return altitude(s);
       if (q.kind == QKind::kSpeed || q.kind == QKind::kMach) return speed(s);
@@ -608,7 +654,7 @@ class Parser {
       }
     }
     if (!fl) {
-      auto r = repaired(Quantity{q.kind, ft, q.begin, q.end, fl, q.by, q.to, q.turn, q.number}, 0.0, 60000.0);
+      auto r = repaired(Quantity{q.kind, ft, q.begin, q.end, fl, q.by, q.to, q.turn, q.number}, 0.0, 60000.0, 100.0);
       if (!r) return need("Which altitude for " + ids.front() + "? I heard " + fmt_int(ft) + " ft.");
       if (*r < 100 && !q.number.typed) *r *= 1000.0;
       ft = *r;
@@ -682,7 +728,7 @@ class Parser {
       } else {
         double kt = q.value;
         if (!q.number.typed && kt >= 10 && kt < 100 && q.number.groups == 2) kt *= 10.0;  // "speed one nine"
-        auto r = repaired(Quantity{q.kind, kt, q.begin, q.end, false, false, false, 0, q.number}, 40.0, 700.0);
+        auto r = repaired(Quantity{q.kind, kt, q.begin, q.end, false, false, false, 0, q.number}, 40.0, 700.0, 10.0);
         if (!r) return need("What speed should " + id + " fly? I heard " + fmt_int(kt) + ".");
         // Assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error.
         if (!q.number.typed && std::fmod(*r, 5.0) != 0.0) *r = std::floor(*r / 10.0) * 10.0;
@@ -724,7 +770,7 @@ class Parser {
       hdg = abs->value;
       if (!abs->number.typed && abs->number.leading_digit_word && abs->number.groups == 2 && hdg < 40) hdg *= 10.0;
       if (hdg > 360) {
-        auto r = repaired(*abs, 0.0, 360.0);
+        auto r = repaired(*abs, 0.0, 360.0, 5.0);
         if (!r) return need("What heading should " + id + " fly? I heard " + fmt_int(hdg) + ".");
         hdg = *r;
       }
@@ -740,7 +786,7 @@ class Parser {
     } else if (word_in(s.begin, s.end, {"around", "opposite", "reverse"})) {
       if (!now) return need("What is the current heading of " + id + "?");
       hdg = now->hdg_deg + 180.0;
-    } else if (word_in(s.begin, s.end, {"present", "current", "continue"}) && now) {
+    } else if (word_in(s.trig >= 2 ? s.trig - 2 : 0, s.end, {"present", "current", "continue"}) && now) {
       hdg = now->hdg_deg;
     } else if (refs.size() >= 2 && word_in(s.begin, s.end, {"same", "match", "as"})) {
       const AircraftView* src = state(refs.back()->name);
@@ -985,7 +1031,7 @@ class Parser {
     // a level said in the same breath without its verb ("direct LIVVN ... six thousand")
     for (const auto& q : quantities(s))
       if (q.begin > s.trig && q.kind == QKind::kAlt && q.number.has_thousand)
-        return out_.push_back("ALT " + *id + " " + fmt_alt(q.value, q.flight_level));
+        if (auto ft = repaired(q, 0.0, 60000.0, 100.0)) return out_.push_back("ALT " + *id + " " + fmt_alt(*ft, false));
   }
 
   void add_waypoint(const Segment& s) {
