@@ -14,7 +14,8 @@
 --            error, up to ctx.max_retries times
 --   multi:   retrieve -> select -> verify -> fill -> validate -> execute -> done;
 --            verify NO -> ask; a rejected command goes back to `fill` with the
---            error, up to ctx.max_retries times
+--            error, up to ctx.max_retries times. With opts.verify = false the
+--            selector feeds the filler directly, as in the paper's Table 2 runs
 -- In the LLM modes any server failure goes to the `offline` node (the
 -- embedded grammar translator), so a request is always answered.
 --
@@ -31,10 +32,11 @@
 --     opts.waypoints names of user waypoints (DEFWPT) in opts.sim; those
 --                   defined in opts.setup are found by themselves
 --     opts.llm      a squawk.llm client; default squawk.llm.from_env()
+--     opts.verify   false: multi mode without the verifier node
 --     opts.k        documents retrieved (default 5)
 --     opts.max_retries  feedback rounds (default 3)
 --     opts.on_token streaming callback passed to the LLM
---   new_graph(), modes, format_trace(trace), nodes (the node functions)
+--   new_graph(start), modes[name](opts) -> graph, format_trace(trace), nodes
 local nodes = require("translate.nodes")
 
 local M = {}
@@ -114,14 +116,14 @@ function M.modes.single()
   return common_tail(g, "single")
 end
 
-function M.modes.multi()
+function M.modes.multi(opts)
   local g = M.new_graph("retrieve")
     :node("retrieve", nodes.retrieve)
     :node("select", nodes.select)
     :node("verify", nodes.verify)
     :node("fill", nodes.fill)
     :edge("retrieve", "select")
-    :edge("select", "ok", "verify")
+    :edge("select", "ok", opts.verify == false and "fill" or "verify")
     :edge("select", "llm_failed", "offline")
     :edge("verify", "yes", "fill")
     :edge("verify", "no", "ask")
@@ -188,7 +190,7 @@ function M.translate(text, opts)
   nodes.say(state, "start", string.format("mode %s, %s", mode, llm and llm:describe() or "no LLM")
     .. (requested ~= mode and (" (" .. requested .. " needs an LLM: set SQUAWK_LLM_URL)") or ""))
   for _, note in ipairs(setup_notes) do nodes.say(state, "setup", note) end
-  M.modes[mode]():run(state, ctx)
+  M.modes[mode](opts):run(state, ctx)
   local result = { trace = state.trace, mode = mode, error = state.error }
   if state.ask then
     result.ask = state.ask

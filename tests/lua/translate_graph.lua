@@ -102,3 +102,11 @@ local p = squawk.load_config("prompts/translator.lua")
 for _, k in ipairs({ "verifier", "selector", "parameters", "single", "feedback", "ask" }) do
   check_eq(type(p[k]), "string", k)
 end
+
+-- Multi-agent without the verifier (the paper's evaluated pipeline).
+do
+  local llm = fake_llm({ "\\boxed{SPD}", "\\boxed{SPD KL204 250}" })
+  local r = graph.translate("slow KL204 to 250 knots", { sim = sim, llm = llm, mode = "multi", verify = false })
+  check_eq(r.commands and r.commands[1], "SPD KL204 250")
+  check_eq(path(r.trace), "start retrieve select select fill fill validate execute")
+end
