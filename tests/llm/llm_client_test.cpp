@@ -142,6 +142,22 @@ TEST_CASE("ollama chat: an error object mid-stream fails at once with the server
   CHECK(server.requests().size() == 1);  // no retry once text was streamed
 }
 
+TEST_CASE("a connection lost mid-stream is an error, not retried once text arrived") {
+  LoopbackServer server([](const HttpRequestSeen&, int) {
+    Reply r;
+    r.chunked = true;
+    r.truncate = true;
+    r.pieces = {ollama_line("HDG ", false)};
+    return r;
+  });
+  Fixture f;
+  auto reply = f.client(server.url(), Api::kOllama)->chat(ask("turn"), [](std::string_view) {});
+  REQUIRE_FALSE(reply.is_ok());
+  CHECK(reply.status().code() == Code::kUnavailable);
+  CHECK(reply.status().message().find("the stream broke after it had started") != std::string::npos);
+  CHECK(server.requests().size() == 1);
+}
+
 TEST_CASE("a 500 then success is retried once with backoff") {
   LoopbackServer server([](const HttpRequestSeen&, int i) {
     if (i == 0) return Reply::json(500, R"({"error":"out of memory"})");

@@ -182,7 +182,7 @@ void LoopbackServer::serve(int fd, int index) {
       ok = write_all(fd, p);
     }
   }
-  if (ok && r.chunked) write_all(fd, "0\r\n\r\n");
+  if (ok && r.chunked && !r.truncate) write_all(fd, "0\r\n\r\n");
   ::shutdown(fd, SHUT_WR);
   ::close(fd);
 }

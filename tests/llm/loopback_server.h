@@ -30,6 +30,7 @@ struct Reply {
   int delay_ms = 0;                 // pause before each piece (and before headers)
   bool chunked = false;             // Transfer-Encoding: chunked instead of Content-Length
   bool drop = false;                // close the connection without replying
+  bool truncate = false;            // chunked: close before the final empty chunk
 
   static Reply json(int status, std::string body);
 };
