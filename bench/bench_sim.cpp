@@ -1,10 +1,16 @@
 // Simulation throughput: aircraft-steps per second with conflict detection
 // off, every asas_dt = 1 s (BlueSky's default; every 20th step at dt 0.05 s)
 // and every step, for 100, 1000 and 5000 aircraft; one thread (the simulator
-// is single-threaded). Also the env's shape (6 aircraft, dt 5 s) and, as a
+// is single-threaded). Also BlueSky-Gym's scene (6 aircraft, dt 5 s) and, as a
 // same-run reference, a per-pair CD using the trig kwikqdrdist.
 //
-// Usage: bench_sim [seconds per row, default 1.0]
+// Rates are per second of this thread's CPU time (CLOCK_THREAD_CPUTIME_ID),
+// so other processes on a shared machine do not deflate them; the wall-clock
+// share (cpu / wall) of each row is printed alongside.
+//
+// Usage: bench_sim [CPU seconds per row, default 1.0]
+#include <time.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -22,8 +28,32 @@ using namespace squawk::sim;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
+double wall_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double thread_cpu_s() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+struct Rate {
+  double per_cpu_s;  // [1/s] events per CPU second
+  double cpu_share;  // [-] CPU time / wall time over the measurement
+};
+
+// Calls f() until `budget` CPU seconds (and at least 3 calls) have passed.
+template <class F>
+Rate measure(F&& f, double budget) {
+  int64_t calls = 0;
+  const auto w0 = Clock::now();
+  const double c0 = thread_cpu_s();
+  double cpu = 0.0;
+  do {
+    f();
+    ++calls;
+    cpu = thread_cpu_s() - c0;
+  } while (cpu < budget || calls < 3);
+  return {static_cast<double>(calls) / cpu, cpu / wall_since(w0)};
 }
 
 // n aircraft in a 3 x 3 deg box, flight levels 100-300 every 1000 ft, 20 %
@@ -39,19 +69,6 @@ Simulation make_sim(int n, uint64_t seed) {
     if (rng.uniform() < 0.2) (void)sim.set_altitude(id, alt + rng.uniform(-3000.0, 3000.0));
   }
   return sim;
-}
-
-// Steps `sim` for about `budget` seconds; returns steps per second.
-double steps_per_s(Simulation& sim, double budget) {
-  int64_t steps = 0;
-  const auto t0 = Clock::now();
-  double el = 0.0;
-  do {
-    sim.step();
-    ++steps;
-    el = seconds_since(t0);
-  } while (el < budget || steps < 3);
-  return static_cast<double>(steps) / el;
 }
 
 // Reference CD: per ordered pair, trig kwikqdrdist + the same formulas.
@@ -84,8 +101,8 @@ int reference_cd(const Traffic& t, const CdSettings& s) {
 int main(int argc, char** argv) {
   const double budget = argc > 1 ? std::atof(argv[1]) : 1.0;
   std::printf("squawk sim benchmark, 1 thread, dt 0.05 s, %.1f s per row\n\n", budget);
-  std::printf("%8s  %-22s %14s %16s %10s\n", "aircraft", "conflict detection", "steps/s", "aircraft-steps/s",
-              "conf pairs");
+  std::printf("%8s  %-22s %14s %16s %10s %9s\n", "aircraft", "conflict detection", "steps/s", "aircraft-steps/s",
+              "conf pairs", "cpu/wall");
   for (int n : {100, 1000, 5000}) {
     struct Mode {
       const char* name;
@@ -97,17 +114,33 @@ int main(int argc, char** argv) {
       Simulation sim = make_sim(n, 42);
       sim.set_cd(m.cd);
       (void)sim.set_asas_dt(m.asas_dt);
-      const double sps = steps_per_s(sim, budget);
-      std::printf("%8d  %-22s %14.1f %16.3e %10zu\n", n, m.name, sps, sps * n, sim.conflicts().size());
+      const Rate r = measure([&] { sim.step(); }, budget);
+      std::printf("%8d  %-22s %14.1f %16.3e %10zu %9.2f\n", n, m.name, r.per_cpu_s, r.per_cpu_s * n,
+                  sim.conflicts().size(), r.cpu_share);
     }
   }
 
-  // The RL environment's shape: 6 aircraft, dt 5 s, CD off.
+  // The RL environment's shape: BlueSky-Gym's scene (ownship at altitude 0,
+  // five CRECONFS intruders, ground cap, dt 5 s, CD off), a new HDG every
+  // 10 steps as the env's actions.
   {
-    Simulation sim = make_sim(6, 7);
+    Simulation sim(7);
     (void)sim.set_dt(5.0);
-    const double sps = steps_per_s(sim, budget);
-    std::printf("\nenv shape (6 aircraft, dt 5 s, CD off): %.3e steps/s = %.3f us/step\n", sps, 1e6 / sps);
+    PerformanceOptions po;
+    po.ground_cap = true;
+    (void)sim.set_performance_options(po);
+    (void)sim.create("KL001", "A320", 52.0, 4.0, 0.0, 0.0, 150.0);
+    for (int k = 0; k < 5; ++k)
+      (void)sim.creconfs(std::to_string(k), "A320", "KL001", 60.0 * (k + 1), 1852.0 * k, 300.0 + 100.0 * k);
+    int64_t steps = 0;
+    const Rate r = measure(
+        [&] {
+          if (steps++ % 10 == 0) (void)sim.set_heading("KL001", (steps % 20 == 1) ? 30.0 : 330.0);
+          sim.step();
+        },
+        budget);
+    std::printf("\nenv shape (6 aircraft, dt 5 s, CD off, HDG every 10 steps): %.3e steps/s = %.3f us/step (cpu/wall %.2f)\n",
+                r.per_cpu_s, 1e6 / r.per_cpu_s, r.cpu_share);
     std::printf("  (BlueSky measured ~800 us per sim step for this env: facts/bluesky_gym_measured.md)\n");
   }
 
@@ -117,22 +150,11 @@ int main(int argc, char** argv) {
     CdSettings s;
     s.enabled = true;
     ConflictDetector cd;
-    int reps = 0;
-    auto t0 = Clock::now();
-    do {
-      cd.detect(sim.traffic(), s);
-      ++reps;
-    } while (seconds_since(t0) < budget);
-    const double soa = seconds_since(t0) / reps;
-    int reps_ref = 0, nref = 0;
-    t0 = Clock::now();
-    do {
-      nref = reference_cd(sim.traffic(), s);
-      ++reps_ref;
-    } while (seconds_since(t0) < budget);
-    const double ref = seconds_since(t0) / reps_ref;
+    const Rate soa = measure([&] { cd.detect(sim.traffic(), s); }, budget);
+    int nref = 0;
+    const Rate ref = measure([&] { nref = reference_cd(sim.traffic(), s); }, budget);
     std::printf("\none detection, 1000 aircraft: SoA loop %.2f ms (%zu pairs), per-pair trig reference %.2f ms (%d pairs): %.1fx\n",
-                soa * 1e3, cd.pairs().size(), ref * 1e3, nref, ref / soa);
+                1e3 / soa.per_cpu_s, cd.pairs().size(), 1e3 / ref.per_cpu_s, nref, soa.per_cpu_s / ref.per_cpu_s);
   }
   return 0;
 }
