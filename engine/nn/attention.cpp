@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -89,18 +88,11 @@ void attention_forward(float* out, float* att, const float* qkv, const float* k_
       }
       S.rightCols(nq).noalias() = scale * (Q * Ks.transpose());
       for (int i = 0; i < nq; ++i) {
-        float* r = S.row(i).data();
         const int valid = nc + i + 1;
-        float mx = -std::numeric_limits<float>::infinity();
-        for (int j = 0; j < valid; ++j) mx = std::max(mx, r[j]);
-        float sum = 0.0f;
-        for (int j = 0; j < valid; ++j) {
-          r[j] = std::exp(r[j] - mx);
-          sum += r[j];
-        }
-        const float inv = 1.0f / sum;
-        for (int j = 0; j < valid; ++j) r[j] *= inv;
-        for (int j = valid; j < nk; ++j) r[j] = 0.0f;
+        auto row = S.row(i).head(valid).array();
+        row = (row - row.maxCoeff()).exp();
+        row /= row.sum();
+        S.row(i).tail(nk - valid).setZero();
       }
       MutMap O(out + static_cast<long>(g.q0) * C + h * hs, nq, hs, Eigen::OuterStride<>(C));
       O.noalias() = S.rightCols(nq) * Vs;
