@@ -5,12 +5,13 @@
 // - Clock: an integer tick count and a step dt (default 0.05 s, BlueSky's
 //   simdt). simt() = t_base + ticks_since_base * dt, so time never drifts;
 //   set_dt() rebases t_base at the current time.
-// - step() advances one dt in BlueSky's order: conflict detection and MVP
-//   (every asas_dt of sim time, when enabled), autopilot (LNAV/VNAV), choice
-//   of autopilot or resolution targets, performance limits, airspeed
-//   (+-axmax, snapping to the target), heading (turn rate
-//   g0 tan(bank)/TAS, snapping to the target), vertical speed, then the
+// - step() advances one dt in BlueSky's order: autopilot (LNAV/VNAV),
+//   conflict detection and MVP (every asas_dt of sim time, when enabled),
+//   choice of autopilot or resolution targets, performance limits, airspeed
+//   (+-axmax, snapping to the target), heading (turn rate g0 tan(bank)/TAS
+//   with the new TAS, snapping to the target), vertical speed, then the
 //   flat-earth position update with R = 6 371 000 m (facts §1.8).
+//   No wind: gs = tas and trk = hdg.
 //   No heap allocation happens in step() once buffers have grown.
 // - Every operation that can fail validates all its arguments first and
 //   leaves the simulation unchanged on error; the message starts with the
@@ -19,7 +20,8 @@
 // - Copying a Simulation makes an independent deep copy.
 // - snapshot() is a deterministic byte image of all observable state (clock,
 //   run state, settings, every aircraft field, routes, conflict and
-//   resolution state, RNG state): equal bytes iff equal state.
+//   resolution state, RNG state as its next draws): equal bytes iff equal
+//   state. Caches derived from the state are left out.
 #pragma once
 
 #include <cstdint>
