@@ -96,13 +96,12 @@ class Model {
   // respect to the last forward_train's hidden output is dhidden [B, C].
   Status backward(std::span<const float> dhidden);
 
+ private:
   // Activations of one block over R rows (kept per trainable block).
   struct Acts {
     std::vector<float> x_in, ln1, ln1_mean, ln1_rstd, qkv, att, atty, x_mid, ln2, ln2_mean,
         ln2_rstd, fch, fch_gelu;
   };
-
- private:
   struct Batch {
     int B = 0, T = 0;
     std::vector<int> tokens;  // [B, T], right-padded with token 0
