@@ -6,6 +6,23 @@ namespace squawk::app {
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
+      {"demo", "demo                      the team loop: agent -> English -> translator -> simulator",
+       "usage: squawk demo [--policy mlp] [--checkpoint FILE] [--seed N] [--record FILE.jsonl]\n"
+       "                   [--svg FILE.svg] [--scenario FILE.lua] [--advisory FILE.lua] [--quiet]\n\n"
+       "Runs one conflict episode of the paper's HorizontalCR evaluation setup\n"
+       "(scenarios/horizontal_cr.lua) as a team: the deconfliction agent (the shipped\n"
+       "trained MLP) decides on the environment's observation; prompts/advisory.lua\n"
+       "says the decision in controller English (\"KL001, turn right heading 045\");\n"
+       "the offline translator turns that into TrafScript; the simulator's command\n"
+       "stack executes it and flies the traffic, with conflict detection on. Steps\n"
+       "without a predicted conflict steer to the waypoint (logged as autopilot).\n"
+       "Every hop is logged with sim time; a summary follows: conflicts met and\n"
+       "resolved, losses of separation, extra track length, waypoint reached.\n"
+       "  --seed N        the episode: the first of seed N's sequence that needs the agent\n"
+       "  --record FILE   write the episode as JSON lines (for `squawk render`)\n"
+       "  --svg FILE      draw the episode (Fig. 2 style)\n"
+       "Exit 1 when an advisory could not be translated or executed.\n",
+       cmd_demo},
       {"run", "run FILE.lua [ARGS...]   run a Lua script (the script sees ARGS as `arg`)",
        "usage: squawk run FILE.lua [ARGS...] [--seed N] [--unsafe] [--out DIR]\n"
        "                 [--max-instructions N] [--navdata DIR]\n\n"
@@ -181,13 +198,19 @@ const std::vector<Subcommand>& subcommands() {
        "it on the scenario's evaluation settings every --eval-every episodes. The\n"
        "scenario's train table gives the defaults; flags override them. Writes into\n"
        "DIR a checkpoint (checkpoint.ckpt, replaced atomically after each\n"
-       "evaluation) and log.csv (one row per evaluation interval). A progress bar\n"
-       "with ETA goes to the terminal.\n\n"
+       "evaluation), log.csv (one row per evaluation interval) and, at the end,\n"
+       "policy.ckpt (the policy alone, for `squawk eval --checkpoint`). A progress\n"
+       "bar with ETA goes to the terminal.\n\n"
        "  --estimator E   vpg: the paper's Eq. 5 (log-prob times the step reward);\n"
        "                  improved: reward-to-go, learned value baseline,\n"
        "                  normalised advantages and an entropy bonus\n"
        "  --resume        continue from DIR/checkpoint.ckpt (same seed): the run goes\n"
-       "                  on exactly as if it had not stopped\n",
+       "                  on exactly as if it had not stopped\n"
+       "  --policy gpt2   fine-tune the GPT-2 prompt policy instead: --model tiny|DIR,\n"
+       "                  --blocks K (trainable last blocks; default 2 for tiny, 1 for\n"
+       "                  a folder), --head action|lm, --prompt FILE (default\n"
+       "                  prompts/observation.lua), --episodes-per-update M; the\n"
+       "                  checkpoint is written after every update\n",
        cmd_train},
       {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
        "usage: squawk eval SCENARIO.lua [--policy random|zero|mvp|mlp] [--checkpoint FILE]\n"
@@ -201,10 +224,24 @@ const std::vector<Subcommand>& subcommands() {
        "                   reference, heading only)\n"
        "  --policy mlp     a trained MLP: --checkpoint FILE, by default the checkpoint\n"
        "                   shipped in models/\n"
+       "  --policy gpt2    the GPT-2 prompt policy: --checkpoint FILE (default the\n"
+       "                   fine-tuned tiny policy in models/), or --model tiny|DIR\n"
+       "                   for an untrained head; --prompt FILE, --head action|lm\n"
        "  --greedy         take the most likely action instead of sampling\n"
        "  --json           print {success_rate, mean_reward, std_reward, episodes}\n"
        "  --record FILE    write every episode as JSON lines (squawk render reads it)\n",
        cmd_eval},
+      {"table3", "table3 SCENARIO.lua   the paper's Table 3: untrained/trained MLP and GPT-2",
+       "usage: squawk table3 SCENARIO.lua [--episodes N] [--seed N] [--mlp-checkpoint FILE]\n"
+       "                     [--gpt2-checkpoint FILE] [--model tiny|DIR] [--csv FILE]\n\n"
+       "Evaluates the four agents of the paper's Table 3 on the same evaluation\n"
+       "episodes (default 1000) with one fixed seed (default the scenario's eval\n"
+       "seed): an untrained MLP (initialised from the seed), an untrained GPT-2\n"
+       "policy (the fine-tuned one's base model with a fresh action head, or\n"
+       "--model), the trained MLP and the fine-tuned GPT-2 (checkpoints shipped in\n"
+       "models/ unless given). Prints a markdown table, then CSV (or writes the CSV\n"
+       "to --csv FILE).\n",
+       cmd_table3},
   };
   return table;
 }

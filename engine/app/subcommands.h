@@ -13,7 +13,9 @@ int cmd_run(const ArgV& args);   // cli_script.cpp
 int cmd_test(const ArgV& args);  // cli_script.cpp
 int cmd_train(const ArgV& args);  // cli_rl.cpp
 int cmd_eval(const ArgV& args);   // cli_rl.cpp
+int cmd_table3(const ArgV& args);  // cli_table3.cpp
 int cmd_gpt2(const ArgV& args);  // cli_gpt2.cpp
+int cmd_demo(const ArgV& args);    // cli_demo.cpp
 int cmd_render(const ArgV& args);  // cli_viz.cpp
 int cmd_plot(const ArgV& args);    // cli_viz.cpp
 int cmd_rag(const ArgV& args);     // cli_rag.cpp

@@ -248,6 +248,31 @@ Status Vm::run_string(const std::string& code, const std::string& chunkname) {
   return call_protected(0);
 }
 
+Status Vm::load_table(const std::string& path, const std::string& key) {
+  lua_State* L = L_;
+  if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK) {
+    std::string msg = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    return Status::invalid(msg);
+  }
+  lua_pushcfunction(L, message_handler);
+  lua_insert(L, -2);
+  const int rc = lua_pcall(L, 0, 1, -2);
+  if (rc != LUA_OK) {
+    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
+    lua_pop(L, 2);
+    return Status::invalid(msg);
+  }
+  if (!lua_istable(L, -1)) {
+    std::string got = luaL_typename(L, -1);
+    lua_pop(L, 2);
+    return Status::invalid(path + ": expected the file to return a table, got " + got);
+  }
+  lua_setfield(L, LUA_REGISTRYINDEX, key.c_str());
+  lua_pop(L, 1);
+  return Status::ok();
+}
+
 Status Vm::run_file(const std::string& path, const std::vector<std::string>& args) {
   lua_State* L = L_;
   // The script's folder joins the require path (first, so local modules win).

@@ -53,6 +53,10 @@ class Vm {
   Status run_file(const std::string& path, const std::vector<std::string>& args = {});
   // Runs Lua source text under `chunkname` (shown in error messages).
   Status run_string(const std::string& code, const std::string& chunkname);
+  // Runs a Lua file that returns a table (a prompt, template or config file)
+  // and keeps that table in the Lua registry under `key`. Error when the file
+  // fails or returns anything else.
+  Status load_table(const std::string& path, const std::string& key);
 
   const VmOptions& options() const { return options_; }
   Rng& rng() { return rng_; }

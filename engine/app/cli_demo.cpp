@@ -1,0 +1,287 @@
+// squawk demo: the paper's team loop end to end. The deconfliction agent
+// decides on the HorizontalCR environment's observation; its decision is said
+// in controller English by the Lua template prompts/advisory.lua; the
+// translator turns the English into TrafScript; the simulator's command stack
+// executes it, and the simulator flies the traffic.
+//
+// Two worlds run side by side: the environment (the agent's observation and
+// the paper's rules) and the Simulation (what the TrafScript commands act
+// on). The environment flies exactly the heading the simulator was told, so
+// the two stay together; the summary prints their largest difference.
+// Automatic steering toward the waypoint (paper rules: no conflict predicted)
+// reaches the simulator as a plain HDG command, marked "autopilot".
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <set>
+
+#include "app/cli.h"
+#include "app/subcommands.h"
+#include "app/vm_options.h"
+#include "command/stack.h"
+#include "core/files.h"
+#include "core/geo.h"
+#include "core/paths.h"
+#include "core/text.h"
+#include "core/units.h"
+#include "env/horizontal_cr.h"
+#include "rl/checkpoint.h"
+#include "script/advisory.h"
+#include "script/scenario.h"
+#include "translate/offline_translator.h"
+#include "translate/stack_world.h"
+#include "viz/scene.h"
+
+namespace squawk::app {
+
+namespace {
+
+constexpr const char* kOwn = "KL001";
+
+class Demo : public env::EpisodeObserver {
+ public:
+  Demo(command::Stack& stack, bool quiet) : stack_(stack), quiet_(quiet) {}
+
+  void log(const char* hop, const std::string& what) {
+    if (!quiet_) std::printf("[t=%5.0f s] %-10s %s\n", stack_.sim().simt(), hop, what.c_str());
+  }
+
+  // Runs a TrafScript line on the simulator, logging it under `hop`.
+  Status exec(const char* hop, const std::string& line) {
+    auto r = stack_.exec(line);
+    if (!r.is_ok()) {
+      log(hop, line + "  -> ERROR " + r.status().message());
+      return r.status();
+    }
+    log(hop, line + (r->empty() ? "" : "  -> " + *r));
+    return Status::ok();
+  }
+
+  void on_reset(const env::HorizontalCrEnv&) override {}
+  void on_end(const env::HorizontalCrEnv&, const env::EpisodeStats&) override {}
+
+  // Every environment step: automatic steering becomes an HDG command; then
+  // the simulator flies the same step and is compared with the environment.
+  void on_step(const env::HorizontalCrEnv& e, const env::StepInfo& info) override {
+    if (!info.agent) {
+      char line[64];
+      std::snprintf(line, sizeof line, "HDG %s %.2f", kOwn, geo::wrap360(info.hdg_cmd));
+      if (!exec("autopilot", line).is_ok()) failed_ = true;
+    }
+    const double t_end = stack_.sim().simt() + e.config().dt * e.config().substeps;
+    if (!stack_.run_until(t_end).is_ok()) failed_ = true;
+    observe(e);
+  }
+
+  // Conflicts and losses of separation the simulator's detector reports for
+  // the ownship; track length; agreement with the environment; one frame.
+  void observe(const env::HorizontalCrEnv& e) {
+    const auto& t = stack_.sim().traffic();
+    const int own = stack_.sim().index_of(kOwn);
+    for (const auto& c : stack_.sim().conflicts())
+      if (c.own == own) conflicts_.insert(t.id[static_cast<size_t>(c.intruder)]);
+    for (const auto& l : stack_.sim().los())
+      if (l.own == own || l.intruder == own)
+        los_.insert(t.id[static_cast<size_t>(l.own == own ? l.intruder : l.own)]);
+    const size_t o = static_cast<size_t>(own);
+    if (have_last_) flown_m_ += geo::gc_distance_m(last_lat_, last_lon_, t.lat[o], t.lon[o]);
+    last_lat_ = t.lat[o], last_lon_ = t.lon[o], have_last_ = true;
+    for (int i = 0; i < static_cast<int>(e.fleet().size()); ++i) {
+      const size_t k = static_cast<size_t>(i);
+      worst_m_ = std::max(worst_m_, geo::gc_distance_m(t.lat[k], t.lon[k], e.fleet().lat(i), e.fleet().lon(i)));
+    }
+    viz::Frame f;
+    f.t = stack_.sim().simt();
+    for (int i = 0; i < t.n(); ++i) {
+      const size_t k = static_cast<size_t>(i);
+      f.aircraft.push_back({t.id[k], t.lat[k], t.lon[k], t.hdg[k]});
+    }
+    f.note = note_;
+    note_.clear();
+    scene.frames.push_back(std::move(f));
+  }
+
+  // The most urgent conflict of the ownship, for the advisory's traffic info.
+  std::optional<script::Advisory::Traffic> traffic() const {
+    const auto& t = stack_.sim().traffic();
+    const int own = stack_.sim().index_of(kOwn);
+    const sim::ConflictPair* best = nullptr;
+    for (const auto& c : stack_.sim().conflicts())
+      if (c.own == own && (!best || c.tlos < best->tlos)) best = &c;
+    if (!best) return std::nullopt;
+    const double rel = geo::wrap360(best->qdr - t.hdg[static_cast<size_t>(own)]);
+    int clock = static_cast<int>(std::lround(rel / 30.0)) % 12;
+    if (clock == 0) clock = 12;
+    return script::Advisory::Traffic{t.id[static_cast<size_t>(best->intruder)], clock,
+                                     best->dist / units::kNm};
+  }
+
+  command::Stack& stack_;
+  bool quiet_;
+  bool failed_ = false;
+  std::set<std::string> conflicts_, los_;
+  double flown_m_ = 0, worst_m_ = 0;
+  double last_lat_ = 0, last_lon_ = 0;
+  bool have_last_ = false;
+  std::string note_;
+  viz::Scene scene;
+};
+
+std::string fmt(const char* f, double a, double b = 0, double c = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, a, b, c);
+  return buf;
+}
+
+}  // namespace
+
+int cmd_demo(const ArgV& argv) {
+  auto args = Args::parse(argv, with_vm_flags({{"--policy", "--checkpoint", "--scenario", "--record",
+                                                "--svg", "--advisory"},
+                                               {"--quiet"}}));
+  if (!args) return usage_error("demo", args.status().message());
+  if (!args->positional().empty()) return usage_error("demo", "takes no positional arguments");
+  auto vmo = vm_options(*args);
+  if (!vmo) return usage_error("demo", vmo.status().message());
+  const std::string policy_kind = args->get_or("--policy", "mlp");
+  if (policy_kind != "mlp")
+    return usage_error("demo", "--policy '" + policy_kind + "': expected mlp");
+  const bool quiet = args->has("--quiet");
+  const auto wall0 = std::chrono::steady_clock::now();
+
+  auto sc = script::load_scenario(args->get_or("--scenario", paths::resource("scenarios/horizontal_cr.lua")), *vmo);
+  if (!sc) return failure(sc.status());
+  auto made = env::HorizontalCrEnv::make(sc->eval_env);
+  if (!made) return failure(made.status());
+  env::HorizontalCrEnv& e = made.value();
+  const auto& cfg = e.config();
+
+  const std::string ckpt_path = args->get_or("--checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt"));
+  auto ckpt = rl::load_checkpoint(ckpt_path);
+  if (!ckpt)
+    return failure(ckpt.status().with_context(
+        "the demo needs a trained policy (train one with `squawk train scenarios/horizontal_cr.lua "
+        "--policy mlp --out DIR`, then pass --checkpoint DIR/checkpoint.ckpt)"));
+  auto policy = rl::policy_from_checkpoint(*ckpt);
+  if (!policy) return failure(policy.status());
+  auto phraser = script::AdvisoryPhraser::load(args->get_or("--advisory", paths::resource("prompts/advisory.lua")), *vmo);
+  if (!phraser) return failure(phraser.status());
+
+  // The first episode of the seed's sequence in which the agent has to act.
+  Rng rng(vmo->seed);
+  env::EpisodeSetup setup;
+  bool agent_needed = false;
+  for (int tries = 0; tries < 1000 && !agent_needed; ++tries) {
+    setup = e.draw_setup(rng);
+    auto r = e.reset_to(setup);
+    if (!r) return failure(r.status());
+    agent_needed = *r;
+  }
+  if (!agent_needed) return failure(Status::internal("no episode in 1000 needed the agent"));
+
+  // The simulator: same time step, BlueSky's ground-phase speed cap, CD on.
+  command::Stack stack(vmo->seed);
+  if (cfg.limits.speed_cap > 0) {
+    sim::PerformanceOptions perf;
+    perf.ground_cap = true;
+    perf.ground_vmax = cfg.limits.speed_cap;
+    perf.ground_axmax = cfg.limits.accel;
+    if (Status st = stack.sim().set_performance_options(perf); !st.is_ok()) return failure(st);
+  }
+  Demo demo(stack, quiet);
+  if (!quiet)
+    std::printf("squawk demo: %s agent on %s (paper rules, look-ahead %.0f s), seed %llu\n",
+                policy_kind.c_str(), sc->path.c_str(), cfg.lookahead,
+                static_cast<unsigned long long>(vmo->seed));
+  bool ok = demo.exec("sim", fmt("DT %g", cfg.dt)).is_ok() &&
+            demo.exec("sim", fmt("ZONER %g", cfg.zone_radius / units::kNm)).is_ok() &&
+            demo.exec("sim", fmt("DTLOOK %g", cfg.lookahead)).is_ok() &&
+            demo.exec("sim", "ASAS ON").is_ok() &&
+            demo.exec("sim", std::string("CRE ") + kOwn + " A320 " +
+                                 fmt("%.8f %.8f 0 0 %.6f", cfg.start_lat, cfg.start_lon,
+                                     units::ms_to_kt(cfg.own_speed))).is_ok();
+  for (size_t i = 0; ok && i < setup.intruders.size(); ++i) {
+    const auto& in = setup.intruders[i];
+    ok = demo.exec("sim", "CRE " + std::to_string(i) + " A320 " +
+                              fmt("%.8f %.8f %.4f", in.lat, in.lon, geo::wrap360(in.hdg)) +
+                              fmt(" 0 %.6f", units::ms_to_kt(in.tas))).is_ok();
+  }
+  if (!ok) return failure(Status::internal("the simulator refused the scenario set-up"));
+  demo.scene.title = "squawk demo, seed " + std::to_string(vmo->seed);
+  demo.scene.wpt_lat = e.waypoint_lat();
+  demo.scene.wpt_lon = e.waypoint_lon();
+  demo.scene.rpz_nm = cfg.zone_radius / units::kNm;
+  demo.scene.wpt_radius_km = cfg.reach_radius / 1000.0;
+  demo.log("waypoint", fmt("%.5f %.5f, %.1f km north", e.waypoint_lat(), e.waypoint_lon(),
+                           geo::gc_distance_m(cfg.start_lat, cfg.start_lon, e.waypoint_lat(), e.waypoint_lon()) / 1000));
+  demo.observe(e);
+  e.set_observer(&demo);
+
+  translate::StackWorld world(stack);
+  std::vector<float> obs(static_cast<size_t>(e.observation_size()));
+  int decisions = 0, untranslated = 0;
+  while (!e.done() && !demo.failed_) {
+    e.observe_flat(obs);
+    rl::ActionSample a;
+    const int slot = 0;
+    (*policy)->act(obs, 1, {&slot, 1}, rng, /*greedy=*/true, {&a, 1});
+    const double hdg_now = e.fleet().hdg(0);
+    int target = static_cast<int>(std::lround(geo::wrap360(hdg_now + a.value * cfg.heading_per_action)));
+    if (target <= 0) target += 360;
+    script::Advisory adv{kOwn, a.value, target, hdg_now,
+                         a.value > 0 ? "right" : (a.value < 0 ? "left" : "none"), demo.traffic()};
+    auto english = phraser->phrase(adv);
+    if (!english) return failure(english.status());
+    ++decisions;
+    demo.log("agent", fmt("action %+.2f: heading %03.0f -> %03.0f", a.value, hdg_now, target));
+    demo.log("advisory", "\"" + *english + "\"");
+    demo.note_ = *english;
+    const translate::Translation tr = translate::translate_offline(*english, &world);
+    if (tr.asked()) {
+      ++untranslated;
+      demo.log("translator", "asked: " + tr.ask + " (no command; heading kept)");
+    } else {
+      demo.log("translator", tr.text());
+      for (const auto& cmd : tr.commands)
+        if (!demo.exec("sim", cmd).is_ok()) ++untranslated;
+    }
+    const double hdg_sel = stack.sim().traffic().sel_hdg[static_cast<size_t>(stack.sim().index_of(kOwn))];
+    e.step(geo::wrap180(hdg_sel - hdg_now) / cfg.heading_per_action);
+  }
+  if (demo.failed_) return failure(Status::internal("the simulator failed during the episode"));
+
+  const auto& st = e.stats();
+  const double direct = geo::gc_distance_m(cfg.start_lat, cfg.start_lon, e.waypoint_lat(), e.waypoint_lon()) -
+                        geo::gc_distance_m(demo.last_lat_, demo.last_lon_, e.waypoint_lat(), e.waypoint_lon());
+  size_t resolved = 0;
+  for (const auto& id : demo.conflicts_) resolved += demo.los_.count(id) == 0;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  std::printf("\nsummary\n");
+  std::printf("  agent decisions           %d (advisories the translator could not turn into a command: %d)\n",
+              decisions, untranslated);
+  std::printf("  conflicts met             %zu (intruders the simulator's detector flagged for %s)\n",
+              demo.conflicts_.size(), kOwn);
+  std::printf("  conflicts resolved        %zu\n", resolved);
+  std::printf("  losses of separation      %zu\n", demo.los_.size());
+  std::printf("  extra track length        %.1f km (flown %.1f km, direct %.1f km)\n",
+              (demo.flown_m_ - direct) / 1000, demo.flown_m_ / 1000, direct / 1000);
+  std::printf("  waypoint reached          %s after %.0f s of flight; episode %s\n", st.reached ? "yes" : "no",
+              stack.sim().simt(), st.success ? "successful" : "failed");
+  std::printf("  environment vs simulator  %.3f m largest position difference\n", demo.worst_m_);
+  std::printf("  wall time                 %.2f s\n", wall);
+
+  if (auto rec = args->get("--record")) {
+    std::string text = viz::to_jsonl_header(demo.scene);
+    for (const auto& f : demo.scene.frames) text += viz::to_jsonl_frame(f, 0, false);
+    if (Status s = files::write_atomic(*rec, text); !s.is_ok()) return failure(s);
+    std::printf("  recorded episode          %s\n", rec->c_str());
+  }
+  if (auto svg = args->get("--svg")) {
+    if (Status s = files::write_atomic(*svg, viz::render_scene(demo.scene)); !s.is_ok()) return failure(s);
+    std::printf("  picture                   %s\n", svg->c_str());
+  }
+  return untranslated == 0 ? kExitOk : kExitFail;
+}
+
+}  // namespace squawk::app

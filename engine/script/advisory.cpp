@@ -1,0 +1,64 @@
+#include "script/advisory.h"
+
+#include "script/lua_util.h"
+
+namespace squawk::script {
+
+namespace {
+constexpr const char* kModuleKey = "squawk.advisory";
+}
+
+Result<AdvisoryPhraser> AdvisoryPhraser::load(const std::string& path, const VmOptions& options) {
+  AdvisoryPhraser p;
+  p.vm_ = std::make_shared<Vm>(options);
+  SQUAWK_RETURN_IF_ERROR(p.vm_->load_table(path, kModuleKey));
+  lua_State* L = p.vm_->state();
+  lua_getfield(L, LUA_REGISTRYINDEX, kModuleKey);
+  const bool ok = lua_getfield(L, -1, "advise") == LUA_TFUNCTION;
+  lua_pop(L, 2);
+  if (!ok) return Status::invalid(path + ": the returned table has no function advise(d)");
+  return p;
+}
+
+Result<std::string> AdvisoryPhraser::phrase(const Advisory& a) {
+  lua_State* L = vm_->state();
+  const int top = lua_gettop(L);
+  lua_getfield(L, LUA_REGISTRYINDEX, kModuleKey);
+  lua_getfield(L, -1, "advise");
+  lua_createtable(L, 0, 7);
+  lua_pushstring(L, a.callsign.c_str());
+  lua_setfield(L, -2, "callsign");
+  lua_pushnumber(L, a.action);
+  lua_setfield(L, -2, "action");
+  lua_pushinteger(L, a.heading);
+  lua_setfield(L, -2, "heading");
+  lua_pushnumber(L, a.current_heading);
+  lua_setfield(L, -2, "current_heading");
+  lua_pushstring(L, a.turn.c_str());
+  lua_setfield(L, -2, "turn");
+  if (a.traffic) {
+    lua_createtable(L, 0, 3);
+    lua_pushstring(L, a.traffic->id.c_str());
+    lua_setfield(L, -2, "id");
+    lua_pushinteger(L, a.traffic->clock);
+    lua_setfield(L, -2, "clock");
+    lua_pushnumber(L, a.traffic->distance_nm);
+    lua_setfield(L, -2, "distance_nm");
+    lua_setfield(L, -2, "traffic");
+  }
+  std::string out;
+  Status st;
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    st = Status::invalid(std::string("advise(): ") + lua_tostring(L, -1));
+  } else if (lua_type(L, -1) != LUA_TSTRING || lua_rawlen(L, -1) == 0) {
+    st = Status::invalid(std::string("advise() must return a non-empty string, got ") +
+                         luaL_typename(L, -1));
+  } else {
+    out = lua_tostring(L, -1);
+  }
+  lua_settop(L, top);
+  if (!st.is_ok()) return st;
+  return out;
+}
+
+}  // namespace squawk::script
