@@ -1,0 +1,132 @@
+// GPT-2 prompt policy speed: decisions per second at B = 1 and batched, and
+// the time of one fine-tuning update, for the tiny offline model and for a
+// GPT-2 small folder. Prints figures only; asserts nothing.
+//
+// usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M]
+//   --write-small DIR  writes a GPT-2 small folder with random weights in the
+//                      Hugging Face format (config.json, model.safetensors,
+//                      vocab.json, merges.txt: the gpt2 checkpoint writer, and
+//                      the tiny policy's prompt-trained BPE vocabulary, since
+//                      no real GPT-2 vocabulary is reachable offline) and exits
+//   --small DIR        also measures the policy on that folder (k = 1)
+// Observations come from the training episodes of scenarios/horizontal_cr.lua.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "app/gpt2_policy_factory.h"
+#include "core/paths.h"
+#include "env/vec_env.h"
+#include "gpt2/checkpoint.h"
+#include "rl/vpg.h"
+#include "script/scenario.h"
+
+using namespace squawk;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Observations of the first decisions of a few training episodes [n, obs].
+std::vector<float> observations(const env::HorizontalCrConfig& cfg, int n) {
+  auto envs = env::VecEnv::make(cfg, n);
+  envs->start(1, 0, static_cast<uint64_t>(n));
+  return {envs->observations().begin(), envs->observations().end()};
+}
+
+int measure(const std::string& model, const script::Scenario& sc, int batch, int update_episodes) {
+  app::Gpt2PolicyOptions o;
+  o.model = model;
+  auto g = app::make_gpt2_policy(o, sc.train_env, {});
+  if (!g) {
+    std::fprintf(stderr, "bench_policy: %s\n", g.status().message().c_str());
+    return 1;
+  }
+  rl::PromptPolicy& p = *g->policy;
+  const std::vector<float> obs = observations(sc.train_env, batch);
+  const int n = static_cast<int>(obs.size()) / p.obs_size();
+  auto len = p.suffix_tokens(std::span<const float>(obs).first(static_cast<size_t>(p.obs_size())));
+  std::printf("%s: %zu trainable parameters (k = %d), prompt %zu prefix + %zu tokens\n", model.c_str(),
+              p.params().size(), p.spec().trainable_blocks, p.prefix_tokens().size(), len ? len->size() : 0);
+  Rng rng(1);
+  std::vector<rl::ActionSample> out(static_cast<size_t>(n));
+  p.act(obs, 1, {}, rng, false, out);  // builds the prefix cache
+  for (int b : {1, n}) {
+    p.set_chunk_rows(b);
+    const int reps = b == 1 ? std::min(n, 8) : 1;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int r = 0; r < reps; ++r)
+      p.act(std::span<const float>(obs).subspan(static_cast<size_t>(r * b * p.obs_size())), b, {}, rng, false, out);
+    const double s = seconds_since(t0);
+    std::printf("  B = %-3d  %8.1f ms per decision  %8.1f decisions/s\n", b, 1e3 * s / (reps * b), reps * b / s);
+  }
+  p.set_chunk_rows(32);
+  rl::TrainConfig cfg = sc.train;
+  cfg.episodes_per_update = update_episodes;
+  cfg.num_envs = update_episodes;
+  cfg.estimator = "vpg";
+  auto envs = env::VecEnv::make(sc.train_env, cfg.num_envs);
+  rl::Trainer trainer(p, *envs, cfg, 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  const rl::UpdateStats st = trainer.update();
+  const double s = seconds_since(t0);
+  std::printf("  update of %d episodes (%d decisions, rollout + forward/backward + Adam): %.2f s, %.1f ms per "
+              "decision\n",
+              update_episodes, st.samples, s, st.samples > 0 ? 1e3 * s / st.samples : 0.0);
+  if (!p.error().is_ok()) std::fprintf(stderr, "bench_policy: %s\n", p.error().message().c_str());
+  return p.error().is_ok() ? 0 : 1;
+}
+
+int write_small(const std::string& dir, const script::Scenario& sc) {
+  app::Gpt2PolicyOptions o;
+  auto tiny = app::make_gpt2_policy(o, sc.train_env, {});
+  if (!tiny) {
+    std::fprintf(stderr, "bench_policy: %s\n", tiny.status().message().c_str());
+    return 1;
+  }
+  auto m = gpt2::Model::create(gpt2::Config::gpt2_small());
+  Rng rng(124);
+  m->init_random(rng);
+  Status st = gpt2::save_model(dir, *m);
+  if (st.is_ok()) st = tiny->policy->tokenizer().save(dir);
+  if (!st.is_ok()) {
+    std::fprintf(stderr, "bench_policy: %s\n", st.message().c_str());
+    return 1;
+  }
+  std::printf("wrote a random GPT-2 small folder to %s\n", dir.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string small, write;
+  int batch = 32, update_episodes = 8;
+  for (int i = 1; i < argc; ++i) {
+    const bool more = i + 1 < argc;
+    if (std::strcmp(argv[i], "--small") == 0 && more) {
+      small = argv[++i];
+    } else if (std::strcmp(argv[i], "--write-small") == 0 && more) {
+      write = argv[++i];
+    } else if (std::strcmp(argv[i], "--batch") == 0 && more) {
+      batch = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--update-episodes") == 0 && more) {
+      update_episodes = std::atoi(argv[++i]);
+    } else {
+      std::fprintf(stderr, "usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M]\n");
+      return 2;
+    }
+  }
+  auto sc = script::load_scenario(paths::resource("scenarios/horizontal_cr.lua"), {});
+  if (!sc) {
+    std::fprintf(stderr, "bench_policy: %s\n", sc.status().message().c_str());
+    return 1;
+  }
+  if (!write.empty()) return write_small(write, *sc);
+  if (int rc = measure("tiny", *sc, batch, update_episodes); rc != 0) return rc;
+  return small.empty() ? 0 : measure(small, *sc, batch, update_episodes);
+}

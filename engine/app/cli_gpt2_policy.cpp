@@ -1,0 +1,269 @@
+// squawk train / eval --policy gpt2: fine-tuning and evaluation of the GPT-2
+// prompt policy (paper §III.C.3-5). Reached through the --policy hook of
+// cmd_train / cmd_eval (cli_rl.cpp).
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/gpt2_policy_factory.h"
+#include "app/vm_options.h"
+#include "core/files.h"
+#include "core/paths.h"
+#include "env/vec_env.h"
+#include "rl/evaluator.h"
+#include "rl/vpg.h"
+#include "script/scenario.h"
+
+namespace squawk::app {
+
+namespace {
+
+constexpr const char* kLogHeader =
+    "episodes,updates,wall_s,train_mean_return,train_success_rate,entropy,grad_norm,"
+    "eval_success_rate,eval_mean_reward,eval_std_reward\n";
+// Adam step size on a Hugging Face folder unless --lr says otherwise.
+constexpr double kFolderLr = 1e-5;
+
+Args::Spec with_policy_flags(std::vector<std::string> values, std::vector<std::string> bools) {
+  values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
+  values.push_back("--policy");
+  return with_vm_flags({std::move(values), std::move(bools)});
+}
+
+Result<script::Scenario> scenario_of(const Args& args) {
+  if (args.positional().size() != 1)
+    return Status::invalid("expected exactly one SCENARIO.lua, got " + std::to_string(args.positional().size()) +
+                           " positional arguments");
+  SQUAWK_ASSIGN_OR_RETURN(script::VmOptions vo, vm_options(args));
+  vo.out_dir.clear();
+  return script::load_scenario(args.positional()[0], vo);
+}
+
+// Keeps the header and the rows of at most `episodes` episodes (a resumed run
+// redoes whatever came after its checkpoint).
+Status trim_log(const std::string& path, long long episodes) {
+  SQUAWK_ASSIGN_OR_RETURN(std::string text, files::read(path));
+  std::istringstream in(text);
+  std::string line, out;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (header || std::stoll(line) <= episodes) out += line + "\n";
+    header = false;
+  }
+  return files::write_atomic(path, out);
+}
+
+}  // namespace
+
+int cmd_train_gpt2(const ArgV& argv) {
+  auto args = Args::parse(argv, with_policy_flags({"--episodes", "--estimator", "--envs", "--episodes-per-update",
+                                                   "--eval-every", "--eval-episodes", "--lr"},
+                                                  {"--resume", "--quiet"}));
+  if (!args) return usage_error("train", args.status().message());
+  if (!args->has("--out")) return usage_error("train", "missing --out DIR");
+  auto popts = gpt2_options(*args);
+  if (!popts) return usage_error("train", popts.status().message());
+  auto sc = scenario_of(*args);
+  if (!sc) return failure(sc.status());
+  rl::TrainConfig cfg = sc->train;
+  const double lr_default = popts->model == "tiny" ? cfg.lr : kFolderLr;
+  auto episodes = args->get_int("--episodes", 20000);
+  auto envs_n = args->get_int("--envs", cfg.num_envs);
+  auto per_update = args->get_int("--episodes-per-update", cfg.episodes_per_update);
+  auto eval_every = args->get_int("--eval-every", cfg.eval_every);
+  auto eval_eps = args->get_int("--eval-episodes", cfg.eval_episodes);
+  auto lr = args->get_double("--lr", lr_default);
+  auto seed = args->get_int("--seed", static_cast<long long>(cfg.seed));
+  for (const Status& st : {episodes.status(), envs_n.status(), per_update.status(), eval_every.status(),
+                           eval_eps.status(), lr.status(), seed.status()})
+    if (!st.is_ok()) return usage_error("train", st.message());
+  cfg.episodes = *episodes;
+  cfg.num_envs = static_cast<int>(*envs_n);
+  cfg.episodes_per_update = static_cast<int>(*per_update);
+  cfg.eval_every = *eval_every;
+  cfg.eval_episodes = *eval_eps;
+  cfg.lr = *lr;
+  cfg.seed = static_cast<uint64_t>(*seed);
+  cfg.estimator = args->get_or("--estimator", cfg.estimator);
+  if (Status st = cfg.validate(); !st.is_ok()) return usage_error("train", st.message());
+  auto vo = vm_options(*args);
+  if (!vo) return usage_error("train", vo.status().message());
+  vo->out_dir.clear();
+
+  const std::string out = *args->get("--out");
+  if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
+  const std::string ckpt_path = out + "/checkpoint.ckpt";
+  const std::string log_path = out + "/log.csv";
+
+  Gpt2Policy g;
+  rl::PromptCheckpoint resume;
+  const bool resuming = args->has("--resume") && files::exists(ckpt_path);
+  if (resuming) {
+    auto c = rl::load_prompt_checkpoint(ckpt_path);
+    if (!c) return failure(c.status());
+    if (c->progress.seed != cfg.seed)
+      return failure(Status::invalid("checkpoint " + ckpt_path + " was trained with seed " +
+                                     std::to_string(c->progress.seed) + ", not " + std::to_string(cfg.seed)));
+    auto p = gpt2_policy_from_checkpoint(*c, popts->prompt, *vo);
+    if (!p) return failure(p.status());
+    g = std::move(*p);
+    resume = std::move(*c);
+  } else {
+    auto p = make_gpt2_policy(*popts, sc->train_env, *vo);
+    if (!p) return failure(p.status());
+    g = std::move(*p);
+    g.meta.progress.seed = cfg.seed;
+  }
+  rl::PromptPolicy& policy = *g.policy;
+  rl::PromptCheckpoint& meta = g.meta;
+  if (resuming) meta.progress = resume.progress;
+  meta.progress.estimator = cfg.estimator;
+  meta.progress.scenario = sc->path;
+  if (policy.obs_size() != env::observation_size(sc->train_env.num_intruders))
+    return failure(Status::invalid("policy expects " + std::to_string(policy.obs_size()) +
+                                   " observation values, the scenario gives " +
+                                   std::to_string(env::observation_size(sc->train_env.num_intruders))));
+  auto train_envs = env::VecEnv::make(sc->train_env, cfg.num_envs);
+  auto eval_envs = env::VecEnv::make(sc->eval_env, cfg.num_envs);
+  if (!train_envs) return failure(train_envs.status());
+  if (!eval_envs) return failure(eval_envs.status());
+  rl::Trainer trainer(policy, *train_envs, cfg, meta.progress.updates);
+  if (resuming && resume.has_adam) {
+    trainer.adam().m() = resume.adam_m;
+    trainer.adam().v() = resume.adam_v;
+    trainer.adam().set_t(resume.adam_t);
+  }
+  if (resuming && files::exists(log_path)) {
+    if (Status st = trim_log(log_path, meta.progress.episodes); !st.is_ok()) return failure(st);
+  } else if (Status st = files::write_atomic(log_path, kLogHeader); !st.is_ok()) {
+    return failure(st);
+  }
+  std::ofstream log(log_path, std::ios::app);
+  if (!log) return failure(Status::io_error("cannot write " + log_path));
+
+  const bool quiet = args->has("--quiet");
+  if (!quiet)
+    std::printf("training gpt2 (%s, %d trainable blocks, head %s, %zu trainable parameters) on %s: "
+                "%lld episodes, estimator %s, lr %g, seed %llu%s\n",
+                meta.source.c_str(), meta.spec.trainable_blocks, meta.spec.head.c_str(), policy.params().size(),
+                sc->path.c_str(), cfg.episodes, cfg.estimator.c_str(), cfg.lr,
+                static_cast<unsigned long long>(cfg.seed), resuming ? " (resumed)" : "");
+  const auto t0 = std::chrono::steady_clock::now();
+  const double wall0 = meta.progress.wall_s;
+  double ret_sum = 0.0, succ_sum = 0.0;
+  long long interval = 0;
+  long long next_eval = cfg.eval_every > 0 ? (meta.progress.episodes / cfg.eval_every + 1) * cfg.eval_every
+                                           : cfg.episodes;
+  while (meta.progress.episodes < cfg.episodes) {
+    const auto u0 = std::chrono::steady_clock::now();
+    const rl::UpdateStats st = trainer.update();
+    const double update_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - u0).count();
+    if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
+    if (Status rs = sc->reward_error(); !rs.is_ok()) return failure(rs);
+    meta.progress.episodes += st.episodes;
+    meta.progress.updates = trainer.updates();
+    meta.progress.wall_s = wall0 + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ret_sum += st.mean_return;
+    succ_sum += st.success_rate;
+    ++interval;
+    if (!quiet)
+      std::printf("update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, %.2f s\n",
+                  meta.progress.updates, meta.progress.episodes, st.samples, st.mean_return,
+                  100.0 * st.success_rate, st.entropy, update_s);
+    if (meta.progress.episodes >= next_eval || meta.progress.episodes >= cfg.episodes) {
+      next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
+      auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, sc->eval_seed, false});
+      if (!ev) return failure(ev.status());
+      const double k = static_cast<double>(interval);
+      char row[256];
+      std::snprintf(row, sizeof row, "%lld,%lld,%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", meta.progress.episodes,
+                    meta.progress.updates, meta.progress.wall_s, ret_sum / k, succ_sum / k, st.entropy,
+                    st.grad_norm, ev->success_rate, ev->mean_reward, ev->std_reward);
+      log << row << std::flush;
+      ret_sum = succ_sum = 0.0;
+      interval = 0;
+      if (!quiet)
+        std::printf("%lld episodes: eval success %.1f %%, mean reward %.3f (%lld episodes)\n",
+                    meta.progress.episodes, 100.0 * ev->success_rate, ev->mean_reward, ev->episodes);
+    }
+    meta.params.assign(policy.params().begin(), policy.params().end());
+    meta.has_adam = true;
+    meta.adam_t = trainer.adam().t();
+    meta.adam_m = trainer.adam().m();
+    meta.adam_v = trainer.adam().v();
+    if (Status s = rl::save_prompt_checkpoint(ckpt_path, meta); !s.is_ok()) return failure(s);
+    std::fflush(stdout);
+  }
+  if (!quiet)
+    std::printf("done: %lld episodes in %.0f s; checkpoint %s, log %s\n", meta.progress.episodes,
+                meta.progress.wall_s, ckpt_path.c_str(), log_path.c_str());
+  return kExitOk;
+}
+
+int cmd_eval_gpt2(const ArgV& argv) {
+  auto args = Args::parse(argv, with_policy_flags({"--checkpoint", "--episodes", "--envs"}, {"--json", "--greedy"}));
+  if (!args) return usage_error("eval", args.status().message());
+  auto popts = gpt2_options(*args);
+  if (!popts) return usage_error("eval", popts.status().message());
+  if (args->has("--checkpoint") && args->has("--model"))
+    return usage_error("eval", "--checkpoint and --model exclude each other (a checkpoint names its model)");
+  auto sc = scenario_of(*args);
+  if (!sc) return failure(sc.status());
+  auto episodes = args->get_int("--episodes", sc->eval_episodes);
+  auto seed = args->get_int("--seed", static_cast<long long>(sc->eval_seed));
+  auto envs_n = args->get_int("--envs", 64);
+  for (const Status& st : {episodes.status(), seed.status(), envs_n.status()})
+    if (!st.is_ok()) return usage_error("eval", st.message());
+  if (*episodes < 1 || *envs_n < 1) return usage_error("eval", "--episodes and --envs must be >= 1");
+  auto vo = vm_options(*args);
+  if (!vo) return usage_error("eval", vo.status().message());
+  vo->out_dir.clear();
+
+  Result<Gpt2Policy> g = Status::internal("unset");
+  std::string source;
+  if (args->has("--model")) {
+    g = make_gpt2_policy(*popts, sc->train_env, *vo);
+    source = *args->get("--model") + ", untrained head";
+  } else {
+    const std::string path = args->get_or("--checkpoint", paths::resource(kShippedGpt2Checkpoint));
+    auto c = rl::load_prompt_checkpoint(path);
+    if (!c) return failure(c.status());
+    g = gpt2_policy_from_checkpoint(*c, popts->prompt, *vo);
+    source = path;
+  }
+  if (!g) return failure(g.status());
+  rl::PromptPolicy& policy = *g->policy;
+  if (args->has("--chunk")) policy.set_chunk_rows(popts->spec.chunk_rows);
+  auto envs = env::VecEnv::make(sc->eval_env, static_cast<int>(*envs_n));
+  if (!envs) return failure(envs.status());
+  if (policy.obs_size() != envs->obs_size())
+    return failure(Status::invalid("policy expects " + std::to_string(policy.obs_size()) +
+                                   " observation values, the scenario gives " + std::to_string(envs->obs_size())));
+  auto res = rl::evaluate(policy, *envs, {*episodes, static_cast<uint64_t>(*seed), args->has("--greedy")});
+  if (!res) return failure(res.status());
+  if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
+  if (Status rs = sc->reward_error(); !rs.is_ok()) return failure(rs);
+  if (args->has("--json")) {
+    nlohmann::json j = {{"success_rate", res->success_rate},
+                        {"mean_reward", res->mean_reward},
+                        {"std_reward", res->std_reward},
+                        {"episodes", res->episodes}};
+    std::printf("%s\n", j.dump().c_str());
+    return kExitOk;
+  }
+  const double decisions = res->mean_decisions * static_cast<double>(res->episodes);
+  std::printf("scenario  %s\npolicy    gpt2 (%s; %s, head %s)\n", sc->path.c_str(), source.c_str(),
+              g->meta.source.c_str(), g->meta.spec.head.c_str());
+  std::printf("episodes  %lld, seed %lld, %s actions\n", res->episodes, *seed,
+              args->has("--greedy") ? "greedy" : "sampled");
+  std::printf("\n  %-10s %-22s %-20s\n", "success", "mean episode reward", "std of episode reward");
+  std::printf("  %6.1f %%   %-22.3f %-20.3f\n\n", 100.0 * res->success_rate, res->mean_reward, res->std_reward);
+  std::printf("%.1f decisions per episode, %.2f s, %.1f decisions/s\n", res->mean_decisions, res->wall_s,
+              res->wall_s > 0 ? decisions / res->wall_s : 0.0);
+  return kExitOk;
+}
+
+}  // namespace squawk::app

@@ -1,0 +1,161 @@
+#include "app/gpt2_policy_factory.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli.h"
+#include "app/vm_options.h"
+#include "core/files.h"
+#include "core/paths.h"
+#include "env/vec_env.h"
+#include "gpt2/checkpoint.h"
+#include "rl/evaluator.h"
+#include "rl/vpg.h"
+#include "script/prompt_renderer.h"
+#include "script/scenario.h"
+
+namespace squawk::app {
+
+namespace {
+
+std::string prompt_path(const std::string& prompt) {
+  return prompt.empty() ? paths::resource(kDefaultPromptFile) : prompt;
+}
+
+rl::PromptRenderFn render_fn(std::shared_ptr<script::PromptRenderer> r) {
+  return [r](const env::Observation& o) { return r->render(o); };
+}
+
+// Prompts for the first kTinyVocabEpisodes episodes of `env` under the zero action.
+Result<std::string> vocabulary_text(script::PromptRenderer& r, const env::HorizontalCrConfig& env) {
+  SQUAWK_ASSIGN_OR_RETURN(env::VecEnv envs, env::VecEnv::make(env, 16));
+  envs.start(0, 0, kTinyVocabEpisodes);
+  std::string text;
+  std::vector<double> actions, rewards;
+  std::vector<uint8_t> dones;
+  while (!envs.finished()) {
+    const size_t n = envs.waiting().size();
+    const auto d = static_cast<size_t>(envs.obs_size());
+    for (size_t i = 0; i < n; ++i) {
+      SQUAWK_ASSIGN_OR_RETURN(env::Observation o, env::unflatten(envs.observations().subspan(i * d, d)));
+      SQUAWK_ASSIGN_OR_RETURN(std::string p, r.render(o));
+      text += p;
+    }
+    actions.assign(n, 0.0);
+    rewards.assign(n, 0.0);
+    dones.assign(n, 0);
+    envs.step(actions, rewards, dones);
+  }
+  return text;
+}
+
+Result<gpt2::Model> base_model(const std::string& source, uint64_t seed, const gpt2::Config& tiny_cfg,
+                               const std::vector<gpt2::TensorSpec>& extras) {
+  if (source != "tiny") return gpt2::load_model(source, extras);
+  SQUAWK_ASSIGN_OR_RETURN(gpt2::Model m, gpt2::Model::create(tiny_cfg, extras));
+  Rng rng(seed);
+  m.init_random(rng);
+  return m;
+}
+
+Result<Gpt2Policy> assemble(rl::PromptCheckpoint meta, gpt2::Tokenizer tok,
+                            std::shared_ptr<script::PromptRenderer> r) {
+  SQUAWK_ASSIGN_OR_RETURN(gpt2::Config cfg, gpt2::parse_hf_config(meta.config_json));
+  const auto extras = meta.spec.head == "action"
+                          ? rl::PromptPolicy::head_extras(cfg.n_embd, static_cast<int>(meta.spec.action_values.size()))
+                          : std::vector<gpt2::TensorSpec>{};
+  SQUAWK_ASSIGN_OR_RETURN(gpt2::Model model, base_model(meta.source, meta.model_seed, cfg, extras));
+  SQUAWK_ASSIGN_OR_RETURN(std::unique_ptr<rl::PromptPolicy> p,
+                          rl::PromptPolicy::make(std::move(model), std::move(tok), r->prefix(), render_fn(r),
+                                                 meta.spec));
+  return Gpt2Policy{std::move(p), std::move(meta)};
+}
+
+}  // namespace
+
+Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::HorizontalCrConfig& env,
+                                    const script::VmOptions& vm) {
+  const std::string prompt = prompt_path(opts.prompt);
+  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<script::PromptRenderer> r, script::PromptRenderer::load(prompt, vm));
+  rl::PromptCheckpoint meta;
+  meta.source = opts.model;
+  meta.model_seed = opts.model_seed;
+  meta.spec = opts.spec;
+  meta.spec.obs_size = env::observation_size(env.num_intruders);
+  meta.prompt = prompt;
+  const bool tiny = opts.model == "tiny";
+  if (meta.spec.trainable_blocks < 0) meta.spec.trainable_blocks = tiny ? kTinyTrainableBlocks : 1;
+  gpt2::Tokenizer tok = gpt2::Tokenizer::bytes_only();
+  gpt2::Config cfg = gpt2::Config::tiny();
+  if (tiny) {
+    SQUAWK_ASSIGN_OR_RETURN(std::string text, vocabulary_text(*r, env));
+    tok = gpt2::Tokenizer::train(text, kTinyMerges);
+    cfg.vocab_size = tok.vocab_size();
+    cfg.n_ctx = kTinyContext;
+  } else {
+    if (!files::exists(opts.model + "/config.json"))
+      return Status::not_found("--model " + opts.model + ": no config.json (expected \"tiny\" or a Hugging Face GPT-2 folder)");
+    SQUAWK_ASSIGN_OR_RETURN(std::string cj, files::read(opts.model + "/config.json"));
+    SQUAWK_ASSIGN_OR_RETURN(cfg, gpt2::parse_hf_config(cj));
+    if (files::exists(opts.model + "/vocab.json")) {
+      SQUAWK_ASSIGN_OR_RETURN(tok, gpt2::Tokenizer::load(opts.model));
+    } else if (cfg.vocab_size != 257) {
+      return Status::not_found("--model " + opts.model + ": no vocab.json/merges.txt for its " +
+                               std::to_string(cfg.vocab_size) + "-token vocabulary");
+    }
+  }
+  meta.config_json = gpt2::hf_config_json(cfg);
+  meta.vocab_json = tok.vocab_json();
+  meta.merges_txt = tok.merges_txt();
+  SQUAWK_ASSIGN_OR_RETURN(Gpt2Policy g, assemble(std::move(meta), std::move(tok), r));
+  Rng head_rng(opts.model_seed ^ 0x4EADull);
+  g.policy->init_head(head_rng);
+  return g;
+}
+
+Result<Gpt2Policy> gpt2_policy_from_checkpoint(const rl::PromptCheckpoint& ckpt, const std::string& prompt,
+                                               const script::VmOptions& vm) {
+  rl::PromptCheckpoint meta = ckpt;
+  meta.params.clear();
+  meta.adam_m.clear();
+  meta.adam_v.clear();
+  if (!prompt.empty()) meta.prompt = prompt;
+  if (meta.prompt.empty() || !files::exists(meta.prompt)) meta.prompt = prompt_path("");
+  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<script::PromptRenderer> r, script::PromptRenderer::load(meta.prompt, vm));
+  SQUAWK_ASSIGN_OR_RETURN(gpt2::Tokenizer tok, gpt2::Tokenizer::from_hf(meta.vocab_json, meta.merges_txt));
+  SQUAWK_ASSIGN_OR_RETURN(Gpt2Policy g, assemble(std::move(meta), std::move(tok), r));
+  std::span<float> tail = g.policy->params();
+  if (tail.size() != ckpt.params.size())
+    return Status::corruption("gpt2 checkpoint holds " + std::to_string(ckpt.params.size()) +
+                              " tail parameters, the rebuilt policy has " + std::to_string(tail.size()));
+  std::copy(ckpt.params.begin(), ckpt.params.end(), tail.begin());
+  g.policy->invalidate_cache();
+  return g;
+}
+
+Result<Gpt2PolicyOptions> gpt2_options(const Args& args) {
+  Gpt2PolicyOptions o;
+  o.model = args.get_or("--model", "tiny");
+  o.prompt = args.get_or("--prompt", "");
+  o.spec.head = args.get_or("--head", "action");
+  SQUAWK_ASSIGN_OR_RETURN(long long seed, args.get_int("--model-seed", 0));
+  SQUAWK_ASSIGN_OR_RETURN(long long blocks, args.get_int("--blocks", -1));
+  SQUAWK_ASSIGN_OR_RETURN(long long chunk, args.get_int("--chunk", o.spec.chunk_rows));
+  o.model_seed = static_cast<uint64_t>(seed);
+  o.spec.trainable_blocks = static_cast<int>(blocks);
+  o.spec.chunk_rows = static_cast<int>(chunk);
+  return o;
+}
+
+bool wants_gpt2(const ArgV& argv) {
+  for (size_t i = 0; i < argv.size(); ++i) {
+    if (argv[i] == "--policy=gpt2") return true;
+    if (argv[i] == "--policy" && i + 1 < argv.size() && argv[i + 1] == "gpt2") return true;
+  }
+  return false;
+}
+
+}  // namespace squawk::app

@@ -1,0 +1,105 @@
+#include "script/prompt_renderer.h"
+
+#include <lua.hpp>
+
+#include "core/files.h"
+
+namespace squawk::script {
+
+namespace {
+
+int traceback_handler(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
+  return 1;
+}
+
+void push_array(lua_State* L, const std::vector<double>& v) {
+  lua_createtable(L, static_cast<int>(v.size()), 0);
+  for (size_t i = 0; i < v.size(); ++i) {
+    lua_pushnumber(L, v[i]);
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+}
+
+}  // namespace
+
+Result<std::shared_ptr<PromptRenderer>> PromptRenderer::load(const std::string& path,
+                                                             const VmOptions& options) {
+  if (!files::exists(path)) return Status::not_found("no prompt template file '" + path + "'");
+  std::shared_ptr<PromptRenderer> r(new PromptRenderer(path, std::make_unique<Vm>(options)));
+  lua_State* L = r->vm_->state();
+  const int base = lua_gettop(L);
+  lua_pushcfunction(L, traceback_handler);
+  if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK || lua_pcall(L, 0, 1, base + 1) != LUA_OK) {
+    std::string msg = lua_tostring(L, -1);
+    lua_settop(L, base);
+    return Status::invalid("prompt template " + path + ": " + msg);
+  }
+  if (!lua_istable(L, -1)) {
+    std::string t = luaL_typename(L, -1);
+    lua_settop(L, base);
+    return Status::invalid("prompt template " + path + " returned " + t +
+                           ", expected a table with `prefix` and `render`");
+  }
+  lua_getfield(L, -1, "prefix");
+  if (!lua_isstring(L, -1)) {
+    lua_settop(L, base);
+    return Status::invalid("prompt template " + path + ": field `prefix` must be a string");
+  }
+  r->prefix_ = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  lua_getfield(L, -1, "render");
+  if (!lua_isfunction(L, -1)) {
+    lua_settop(L, base);
+    return Status::invalid("prompt template " + path + ": field `render` must be a function");
+  }
+  r->render_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  lua_settop(L, base);
+  return r;
+}
+
+PromptRenderer::~PromptRenderer() {
+  if (vm_ && render_ref_ >= 0) luaL_unref(vm_->state(), LUA_REGISTRYINDEX, render_ref_);
+}
+
+Result<std::string> PromptRenderer::render(const env::Observation& obs) {
+  lua_State* L = vm_->state();
+  const int base = lua_gettop(L);
+  lua_pushcfunction(L, traceback_handler);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, render_ref_);
+  lua_createtable(L, 0, 8);
+  push_array(L, obs.intruder_distance);
+  lua_setfield(L, -2, "intruder_distance");
+  push_array(L, obs.cos_difference_pos);
+  lua_setfield(L, -2, "cos_difference_pos");
+  push_array(L, obs.sin_difference_pos);
+  lua_setfield(L, -2, "sin_difference_pos");
+  push_array(L, obs.x_difference_speed);
+  lua_setfield(L, -2, "x_difference_speed");
+  push_array(L, obs.y_difference_speed);
+  lua_setfield(L, -2, "y_difference_speed");
+  push_array(L, {obs.waypoint_distance});
+  lua_setfield(L, -2, "waypoint_distance");
+  push_array(L, {obs.cos_drift});
+  lua_setfield(L, -2, "cos_drift");
+  push_array(L, {obs.sin_drift});
+  lua_setfield(L, -2, "sin_drift");
+  if (lua_pcall(L, 1, 1, base + 1) != LUA_OK) {
+    std::string msg = lua_tostring(L, -1);
+    lua_settop(L, base);
+    return Status::invalid("prompt template " + path_ + ": render failed: " + msg);
+  }
+  if (!lua_isstring(L, -1)) {
+    std::string t = luaL_typename(L, -1);
+    lua_settop(L, base);
+    return Status::invalid("prompt template " + path_ + ": render returned " + t + ", expected a string");
+  }
+  std::string text = lua_tostring(L, -1);
+  lua_settop(L, base);
+  if (text.compare(0, prefix_.size(), prefix_) != 0)
+    return Status::invalid("prompt template " + path_ + ": the rendered prompt does not start with `prefix`");
+  return text;
+}
+
+}  // namespace squawk::script
