@@ -15,7 +15,7 @@ return {
   env = {
     intruders = 5,
     own_speed_ms = 150,        -- commanded speed [m/s] (gym's AC_SPD, a CAS at 0 m)
-    speed_cap_ms = 89,         -- BlueSky's OpenAP ground-phase limit of the A320 [m/s]; 0 = none
+    speed_cap_ms = 0,          -- no ground-phase cap: the nominal 150 m/s (89 = what BlueSky does at 0 m)
     accel_ms2 = 2,             -- [m/s^2]
     bank_deg = 25,             -- BlueSky's default bank angle [deg]
     dt_s = 5,                  -- sub-step [s]
@@ -65,10 +65,11 @@ return {
 
   train = {
     estimator = "improved",   -- "vpg" = Eq. 5 exactly
-    episodes = 100000,
+    episodes = 200000,
     episodes_per_update = 64,
     num_envs = 64,
     lr = 1e-3,
+    lr_final = 1e-4,          -- linear decay of the Adam step size over the run
     gamma = 0.95,
     entropy_coef = 0.01,
     grad_clip = 1.0,

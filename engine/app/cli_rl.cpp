@@ -27,6 +27,10 @@ namespace squawk::app {
 
 namespace {
 
+// Evaluations during training use the episodes of eval seed + this offset, so
+// the best-checkpoint choice never sees the episodes of `squawk eval`'s default seed.
+constexpr uint64_t kValidationSeedOffset = 1000003;
+
 // The checkpoint `squawk eval --policy mlp` uses when none is given.
 constexpr const char* kShippedCheckpoint = "models/horizontal_cr_mlp.ckpt";
 
@@ -134,6 +138,7 @@ int cmd_train(const ArgV& argv) {
   cfg.num_envs = static_cast<int>(*envs_n);
   cfg.eval_every = *eval_every;
   cfg.eval_episodes = *eval_eps;
+  if (args->has("--lr")) cfg.lr_final = cfg.lr_final / cfg.lr * *lr;
   cfg.lr = *lr;
   cfg.seed = static_cast<uint64_t>(*seed);
   cfg.estimator = args->get_or("--estimator", cfg.estimator);
@@ -143,6 +148,7 @@ int cmd_train(const ArgV& argv) {
   if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
   const std::string ckpt_path = out + "/checkpoint.ckpt";
   const std::string log_path = out + "/log.csv";
+  const std::string best_path = out + "/best.ckpt";
 
   std::unique_ptr<rl::MlpPolicy> policy;
   rl::TrainProgress progress;
@@ -214,6 +220,7 @@ int cmd_train(const ArgV& argv) {
   const double wall0 = progress.wall_s;
   double ret_sum = 0.0, succ_sum = 0.0, ent = 0.0, gnorm = 0.0;
   long long interval_updates = 0;
+  double best_success = -1.0;
   long long next_eval = cfg.eval_every > 0 ? (progress.episodes / cfg.eval_every + 1) * cfg.eval_every
                                            : cfg.episodes;
   while (progress.episodes < cfg.episodes) {
@@ -235,7 +242,7 @@ int cmd_train(const ArgV& argv) {
     bar.update(progress.episodes, extra);
     if (progress.episodes < next_eval && progress.episodes < cfg.episodes) continue;
     next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
-    auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, sc->eval_seed, false});
+    auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, sc->eval_seed + kValidationSeedOffset, false});
     if (!ev) return failure(ev.status());
     const double k = static_cast<double>(interval_updates);
     char row[256];
@@ -247,14 +254,24 @@ int cmd_train(const ArgV& argv) {
     interval_updates = 0;
     if (Status s = rl::save_checkpoint(ckpt_path, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
       return failure(s);
+    if (ev->success_rate > best_success) {
+      best_success = ev->success_rate;
+      if (Status s = rl::save_checkpoint(best_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
+        return failure(s);
+    }
     if (!quiet && !isatty(STDERR_FILENO))
       std::printf("%lld episodes, %.0f s: eval success %.1f %%, mean reward %.3f\n", progress.episodes,
                   progress.wall_s, 100.0 * ev->success_rate, ev->mean_reward);
   }
   bar.finish();
+  // The policy alone (no optimiser state): what `squawk eval --checkpoint` needs.
+  const std::string policy_path = out + "/policy.ckpt";
+  if (Status s = rl::save_checkpoint(policy_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
+    return failure(s);
   if (!quiet)
-    std::printf("done: %lld episodes in %s; checkpoint %s, log %s\n", progress.episodes,
-                fmt_duration(progress.wall_s).c_str(), ckpt_path.c_str(), log_path.c_str());
+    std::printf("done: %lld episodes in %s; checkpoint %s, policy %s, log %s\n", progress.episodes,
+                fmt_duration(progress.wall_s).c_str(), ckpt_path.c_str(), policy_path.c_str(),
+                log_path.c_str());
   return kExitOk;
 }
 

@@ -15,7 +15,7 @@ Status TrainConfig::validate() const {
   if (episodes < 1) return Status::invalid("train episodes must be at least 1");
   if (episodes_per_update < 1) return Status::invalid("train episodes_per_update must be at least 1");
   if (num_envs < 1) return Status::invalid("train num_envs must be at least 1");
-  if (!(lr > 0.0)) return Status::invalid("train lr must be positive");
+  if (!(lr > 0.0) || !(lr_final > 0.0)) return Status::invalid("train lr and lr_final must be positive");
   if (!(gamma > 0.0 && gamma <= 1.0)) return Status::invalid("train gamma must lie in (0, 1]");
   if (entropy_coef < 0.0) return Status::invalid("train entropy_coef must be >= 0");
   for (int h : value_hidden)
@@ -163,6 +163,9 @@ UpdateStats Trainer::update() {
   std::vector<ActionSample> batch_acts(batch_samples_.size());
   for (size_t i = 0; i < batch_samples_.size(); ++i) batch_acts[i] = batch_samples_[i].action;
   const float ent = cfg_.estimator == "improved" ? static_cast<float>(cfg_.entropy_coef / st.samples) : 0.0f;
+  const double total = std::max(1.0, static_cast<double>(cfg_.episodes) / static_cast<double>(m));
+  const double frac = std::min(1.0, static_cast<double>(updates_ - 1) / total);
+  adam_.config().lr = static_cast<float>(cfg_.lr + (cfg_.lr_final - cfg_.lr) * frac);
   std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
   st.entropy = policy_.accumulate_gradient(batch_obs_, st.samples, batch_acts, coef, ent);
   st.grad_norm = adam_.step();

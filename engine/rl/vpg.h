@@ -12,7 +12,8 @@
 //     unit deviation over the batch, c_H = entropy_coef. The value MLP is
 //     fitted to G by value_iters Adam steps on the mean squared error after
 //     each policy step.
-// Episodes that end without any agent step contribute no sample.
+// Episodes that end without any agent step contribute no sample. The Adam
+// step size falls linearly from lr to lr_final over the run's updates.
 // Policy samples of update u come from Rng(episode_seed(seed ^ salt, u)), and
 // the batch of update u is episodes [u M, (u+1) M) of the seed, so a run
 // resumed from a checkpoint continues exactly as an uninterrupted one.
@@ -35,7 +36,8 @@ struct TrainConfig {
   long long episodes = 20000;          // [-] total training episodes
   int episodes_per_update = 32;        // [-] M
   int num_envs = 32;                   // [-] VecEnv slots
-  double lr = 1e-3;                    // [-] Adam step size
+  double lr = 1e-3;                    // [-] Adam step size at the start ...
+  double lr_final = 1e-3;              // [-] ... decayed linearly to this at `episodes`
   double gamma = 0.99;                 // [-] improved: discount of the reward-to-go
   double entropy_coef = 0.01;          // [-] improved: entropy bonus c_H
   double grad_clip = 1.0;              // [-] global gradient-norm clip (0 = none)

@@ -141,13 +141,14 @@ void read_policy(lua_State* L, int idx, rl::MlpPolicySpec& p) {
 
 void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   check_keys(L, idx, "train",
-             {"estimator", "episodes", "episodes_per_update", "num_envs", "lr", "gamma",
+             {"estimator", "episodes", "episodes_per_update", "num_envs", "lr", "lr_final", "gamma",
               "entropy_coef", "grad_clip", "eval_every", "eval_episodes", "seed"});
   t.estimator = field_string(L, idx, "estimator", t.estimator);
   t.episodes = static_cast<long long>(field_number(L, idx, "episodes", static_cast<double>(t.episodes)));
   t.episodes_per_update = int_field(L, idx, "episodes_per_update", t.episodes_per_update);
   t.num_envs = int_field(L, idx, "num_envs", t.num_envs);
   t.lr = field_number(L, idx, "lr", t.lr);
+  t.lr_final = field_number(L, idx, "lr_final", t.lr);
   t.gamma = field_number(L, idx, "gamma", t.gamma);
   t.entropy_coef = field_number(L, idx, "entropy_coef", t.entropy_coef);
   t.grad_clip = field_number(L, idx, "grad_clip", t.grad_clip);

@@ -18,7 +18,7 @@
 //               drift_deg, heading_change_deg, waypoint_distance_m, reached }
 //   policy  = { hidden = {..}, head = "categorical"|"gaussian", actions = {..},
 //               init_log_std }
-//   train   = { estimator, episodes, episodes_per_update, num_envs, lr, gamma,
+//   train   = { estimator, episodes, episodes_per_update, num_envs, lr, lr_final, gamma,
 //               entropy_coef, grad_clip, eval_every, eval_episodes, seed }
 // A Lua reward function that raises an error makes that step's reward 0 and
 // records the first error in reward_error(); callers check it.

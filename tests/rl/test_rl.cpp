@@ -209,3 +209,29 @@ TEST_CASE("evaluation is deterministic for a seed and rejects a mismatched polic
   REQUIRE(q);
   CHECK_FALSE(rl::evaluate(**q, *v, {10, 3, false}));
 }
+
+TEST_CASE("the shipped checkpoint resolves conflicts on the paper's evaluation settings") {
+  const std::string path = std::string(SQUAWK_TEST_DATA) + "/../../models/horizontal_cr_mlp.ckpt";
+  auto c = rl::load_checkpoint(path);
+  REQUIRE_MESSAGE(c, c.status().message());
+  auto p = rl::policy_from_checkpoint(*c);
+  REQUIRE(p);
+  CHECK((*p)->params().size() == 12581);
+  env::HorizontalCrConfig ec;  // scenarios/horizontal_cr.lua, eval table
+  ec.limits.speed_cap = 0.0;
+  ec.tlos = {300, 1000};
+  ec.lookahead = 600;
+  auto v = env::VecEnv::make(ec, 32);
+  REQUIRE(v);
+  auto trained = rl::evaluate(**p, *v, {300, 2024, false});
+  Rng init(2024);
+  auto fresh = rl::MlpPolicy::make({}, init);
+  REQUIRE(fresh);
+  auto untrained = rl::evaluate(**fresh, *v, {300, 2024, false});
+  REQUIRE(trained);
+  REQUIRE(untrained);
+  MESSAGE("shipped " << trained->success_rate << ", untrained " << untrained->success_rate);
+  CHECK(trained->success_rate >= 0.93);
+  CHECK(trained->success_rate > untrained->success_rate + 0.15);
+  CHECK(trained->mean_reward > untrained->mean_reward);
+}

@@ -1,0 +1,134 @@
+// Scenario files (Lua) -> environment and learner configs, Lua reward
+// functions, and the train/eval command line.
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/files.h"
+#include "env/horizontal_cr.h"
+#include "script/scenario.h"
+
+using namespace squawk;
+
+namespace {
+
+std::string write_temp(const char* name, const std::string& text) {
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string repo(const char* rel) { return std::string(SQUAWK_TEST_DATA) + "/../../" + rel; }
+
+std::string run(const std::string& cmd) {
+  std::string out;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return out;
+  char buf[512];
+  while (fgets(buf, sizeof buf, p)) out += buf;
+  pclose(p);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the shipped paper scenario sets the paper's training and evaluation settings") {
+  auto s = script::load_scenario(repo("scenarios/horizontal_cr.lua"), {});
+  REQUIRE_MESSAGE(s, s.status().message());
+  CHECK(s->train_env.rules == env::Rules::kPaper);
+  CHECK(s->train_env.tlos.lo == 120);
+  CHECK(s->train_env.tlos.hi == 1000);
+  CHECK(s->train_env.lookahead == 300);
+  CHECK(s->eval_env.tlos.lo == 300);
+  CHECK(s->eval_env.lookahead == 600);
+  CHECK(s->train_env.weights.w_i == 0.4);
+  CHECK(s->train_env.weights.w_d == -0.005);
+  CHECK(s->train_env.weights.w_h == -0.01);
+  CHECK(s->train_env.zone_radius == doctest::Approx(9260));
+  CHECK(s->policy.action_values == std::vector<double>{-1, -0.5, 0, 0.5, 1});
+  CHECK(s->eval_episodes == 1000);
+  auto g = script::load_scenario(repo("scenarios/horizontal_cr_gym.lua"), {});
+  REQUIRE_MESSAGE(g, g.status().message());
+  CHECK(g->train_env.rules == env::Rules::kGym);
+  CHECK(g->policy.head == "gaussian");
+  CHECK(g->train_env.limits.speed_cap == 89);
+}
+
+TEST_CASE("a Lua reward function replaces the built-in reward") {
+  const std::string path = write_temp("squawk_test_reward.lua",
+                                      "return { rules = 'paper', env = { lookahead_s = 600 },\n"
+                                      "  reward = function(f) return f.intrusions > 0 and -7 or 1 end }\n");
+  auto s = script::load_scenario(path, {});
+  REQUIRE_MESSAGE(s, s.status().message());
+  REQUIRE(s->lua_reward);
+  auto e = env::HorizontalCrEnv::make(s->train_env);
+  REQUIRE(e);
+  Rng rng(3);
+  bool ask = e->reset(rng);
+  while (ask) {
+    e->step(0.0);
+    ask = !e->done();
+  }
+  // Every env step earned 1 or -7: the return is steps - 8 k for a whole k.
+  const double k = (e->stats().steps - e->stats().total_reward) / 8.0;
+  CHECK(k == doctest::Approx(std::round(k)));
+  CHECK(e->stats().total_reward != 0.0);
+  CHECK(s->reward_error().is_ok());
+
+  const std::string bad = write_temp("squawk_test_reward_bad.lua",
+                                     "return { reward = function(f) return 'x' end }\n");
+  auto b = script::load_scenario(bad, {});
+  REQUIRE(b);
+  auto be = env::HorizontalCrEnv::make(b->train_env);
+  REQUIRE(be);
+  Rng rng2(1);
+  if (be->reset(rng2)) be->step(0.0);
+  CHECK_FALSE(b->reward_error().is_ok());
+  CHECK(b->reward_error().message().find("expected a number") != std::string::npos);
+}
+
+TEST_CASE("scenario errors name the culprit") {
+  auto typo = script::load_scenario(write_temp("squawk_test_typo.lua", "return { env = { tlos = {1, 2} } }"), {});
+  REQUIRE_FALSE(typo);
+  CHECK(typo.status().message().find("unknown key 'tlos'") != std::string::npos);
+  auto range = script::load_scenario(write_temp("squawk_test_range.lua", "return { env = { tlos_s = {900, 100} } }"), {});
+  REQUIRE_FALSE(range);
+  CHECK(range.status().message().find("tlos") != std::string::npos);
+  auto rules = script::load_scenario(write_temp("squawk_test_rules.lua", "return { rules = 'atc' }"), {});
+  REQUIRE_FALSE(rules);
+  CHECK(rules.status().message().find("'rules'") != std::string::npos);
+  auto notable = script::load_scenario(write_temp("squawk_test_num.lua", "return 42"), {});
+  REQUIRE_FALSE(notable);
+  CHECK(notable.status().message().find("expected a table") != std::string::npos);
+  auto syntax = script::load_scenario(write_temp("squawk_test_syntax.lua", "return {"), {});
+  CHECK_FALSE(syntax);
+  CHECK(script::load_scenario("/nonexistent/x.lua", {}).status().code() == Code::kNotFound);
+}
+
+TEST_CASE("squawk eval --json prints the four keys; bad usage exits 2") {
+  const std::string bin = SQUAWK_BINARY;
+  const std::string scen = repo("scenarios/horizontal_cr.lua");
+  const std::string out = run(bin + " eval " + scen + " --policy zero --episodes 40 --seed 3 --json 2>&1");
+  auto j = nlohmann::json::parse(out, nullptr, false);
+  REQUIRE_MESSAGE(!j.is_discarded(), out);
+  CHECK(j.size() == 4);
+  CHECK(j.at("episodes") == 40);
+  CHECK(j.at("success_rate").get<double>() >= 0.0);
+  CHECK(j.at("success_rate").get<double>() <= 1.0);
+  CHECK(j.contains("mean_reward"));
+  CHECK(j.contains("std_reward"));
+  // Same seed, same numbers.
+  CHECK(run(bin + " eval " + scen + " --policy random --episodes 30 --seed 5 --json") ==
+        run(bin + " eval " + scen + " --policy random --episodes 30 --seed 5 --json"));
+  const int bad_policy = std::system((bin + " eval " + scen + " --policy nope > /dev/null 2>&1").c_str());
+  CHECK(WEXITSTATUS(bad_policy) == 2);
+  const int no_out = std::system((bin + " train " + scen + " > /dev/null 2>&1").c_str());
+  CHECK(WEXITSTATUS(no_out) == 2);
+}
