@@ -74,8 +74,16 @@ void Fleet::step(double dt, const FleetLimits& lim) {
     const double dlat = dlat_per_ms * tas * cos_hdg_[i];  // [rad]
     if (dlat != dlat_[i]) {
       dlat_[i] = dlat;
-      cos_dlat_[i] = std::cos(dlat);
-      sin_dlat_[i] = std::sin(dlat);
+      if (std::fabs(dlat) < 1e-3) {
+        // Taylor series; the first omitted terms (x^6/720, x^7/5040) are below
+        // 2e-21 for |x| < 1e-3, i.e. under half an ulp of the results.
+        const double x2 = dlat * dlat;
+        cos_dlat_[i] = 1.0 - x2 * (0.5 - x2 * (1.0 / 24.0));
+        sin_dlat_[i] = dlat * (1.0 - x2 * (1.0 / 6.0 - x2 * (1.0 / 120.0)));
+      } else {
+        cos_dlat_[i] = std::cos(dlat);
+        sin_dlat_[i] = std::sin(dlat);
+      }
     }
     lat_[i] += dlat * kRadToDeg;
     const double c = cos_lat_[i] * cos_dlat_[i] - sin_lat_[i] * sin_dlat_[i];

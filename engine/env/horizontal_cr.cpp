@@ -164,10 +164,10 @@ void HorizontalCrEnv::compute_observation() {
   const Vec2 w = kwik_relative(lat0, lon0, c0, s0, wpt_lat_, wpt_lon_, wpt_cos_lat_, wpt_sin_lat_);
   wpt_dist_ = std::sqrt(w.x * w.x + w.y * w.y);
   wpt_qdr_ = geo::wrap360(std::atan2(w.x, w.y) / kDeg);
-  const double drift = geo::gym_wrap180(f.hdg(0) - wpt_qdr_) * kDeg;
+  const double cw = wpt_dist_ > 0.0 ? w.y / wpt_dist_ : 1.0, sw = wpt_dist_ > 0.0 ? w.x / wpt_dist_ : 0.0;
   obs_.waypoint_distance = wpt_dist_ * inv_d;
-  obs_.cos_drift = std::cos(drift);
-  obs_.sin_drift = std::sin(drift);
+  obs_.cos_drift = ch * cw + sh * sw;
+  obs_.sin_drift = sh * cw - ch * sw;
 }
 
 int HorizontalCrEnv::intruders_in_zone() const {
