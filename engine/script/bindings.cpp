@@ -4,6 +4,7 @@ namespace squawk::script {
 
 void bind_all(lua_State* L) {
   bind_core(L);
+  bind_env(L);
   bind_gpt2(L);
   bind_llm(L);
   bind_rag(L);

@@ -6,6 +6,7 @@ struct lua_State;
 namespace squawk::script {
 
 void bind_core(lua_State* L);  // squawk.version/home/seed/out_dir, check*, math.random
+void bind_env(lua_State* L);   // squawk.env (conflict-resolution environment, evaluate)
 void bind_gpt2(lua_State* L);  // squawk.gpt2 (GPT-2 model and tokenizer)
 void bind_llm(lua_State* L);   // squawk.llm (LLM clients), squawk.load_config
 void bind_rag(lua_State* L);   // squawk.rag (BM25 over the command docs)
