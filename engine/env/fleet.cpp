@@ -48,49 +48,67 @@ void Fleet::step(double dt, const FleetLimits& lim) {
   const double dv_max = lim.accel * dt;
   const double dlat_per_ms = dt / units::kREarth;  // [rad] per m/s of northward speed
   const double cap = lim.speed_cap > 0.0 ? lim.speed_cap : 1e300;
-  for (size_t i = 0; i < lat_.size(); ++i) {
+  // Raw, non-aliasing views: lets the compiler keep values in registers.
+  double* __restrict lat = lat_.data();
+  double* __restrict lon = lon_.data();
+  double* __restrict hdg = hdg_.data();
+  double* __restrict tas = tas_.data();
+  const double* __restrict sel_hdg = sel_hdg_.data();
+  const double* __restrict sel_tas = sel_tas_.data();
+  double* __restrict ch = cos_hdg_.data();
+  double* __restrict sh = sin_hdg_.data();
+  double* __restrict cl = cos_lat_.data();
+  double* __restrict sl = sin_lat_.data();
+  double* __restrict dl = dlat_.data();
+  double* __restrict cd = cos_dlat_.data();
+  double* __restrict sd = sin_dlat_.data();
+  const size_t n = lat_.size();
+  for (size_t i = 0; i < n; ++i) {
     // 1. speed
-    const double target = std::min(sel_tas_[i], cap);
-    double tas = tas_[i];
-    if (tas != target) {
-      const double dv = target - tas;
-      tas = std::fabs(dv) > dv_max ? tas + std::copysign(dv_max, dv) : target;
-      tas_[i] = tas;
+    const double target = std::min(sel_tas[i], cap);
+    double v = tas[i];
+    if (v != target) {
+      const double dv = target - v;
+      v = std::fabs(dv) > dv_max ? v + std::copysign(dv_max, dv) : target;
+      tas[i] = v;
     }
     // 2. heading
-    const double want = sel_hdg_[i];
-    if (hdg_[i] != want) {
-      const double hdg = hdg_[i];
-      const double rate = rate_factor_ / std::max(tas, 0.01);
-      double del = std::fmod(want - hdg + 180.0, 360.0);
-      if (del < 0) del += 360.0;
-      del -= 180.0;
-      const double next = geo::wrap360(std::fabs(del) > dt * rate ? hdg + std::copysign(dt * rate, del) : want);
-      hdg_[i] = next;
-      cos_hdg_[i] = std::cos(next * kDeg);
-      sin_hdg_[i] = std::sin(next * kDeg);
+    const double want = sel_hdg[i];
+    if (hdg[i] != want) {
+      const double h = hdg[i];
+      const double rate = rate_factor_ / std::max(v, 0.01);
+      // Both angles lie in [0, 360): BlueSky's (x + 180) % 360 - 180 by branches.
+      double del = want - h;
+      if (del >= 180.0) del -= 360.0;
+      if (del < -180.0) del += 360.0;
+      double next = std::fabs(del) > dt * rate ? h + std::copysign(dt * rate, del) : want;
+      if (next < 0.0) next += 360.0;
+      if (next >= 360.0) next -= 360.0;
+      hdg[i] = next;
+      ch[i] = std::cos(next * kDeg);
+      sh[i] = std::sin(next * kDeg);
     }
     // 3. position; cos/sin of latitude rotated by the step's increment
-    const double dlat = dlat_per_ms * tas * cos_hdg_[i];  // [rad]
-    if (dlat != dlat_[i]) {
-      dlat_[i] = dlat;
+    const double dlat = dlat_per_ms * v * ch[i];  // [rad]
+    if (dlat != dl[i]) {
+      dl[i] = dlat;
       if (std::fabs(dlat) < 1e-3) {
         // Taylor series; the first omitted terms (x^6/720, x^7/5040) are below
         // 2e-21 for |x| < 1e-3, i.e. under half an ulp of the results.
         const double x2 = dlat * dlat;
-        cos_dlat_[i] = 1.0 - x2 * (0.5 - x2 * (1.0 / 24.0));
-        sin_dlat_[i] = dlat * (1.0 - x2 * (1.0 / 6.0 - x2 * (1.0 / 120.0)));
+        cd[i] = 1.0 - x2 * (0.5 - x2 * (1.0 / 24.0));
+        sd[i] = dlat * (1.0 - x2 * (1.0 / 6.0 - x2 * (1.0 / 120.0)));
       } else {
-        cos_dlat_[i] = std::cos(dlat);
-        sin_dlat_[i] = std::sin(dlat);
+        cd[i] = std::cos(dlat);
+        sd[i] = std::sin(dlat);
       }
     }
-    lat_[i] += dlat * kRadToDeg;
-    const double c = cos_lat_[i] * cos_dlat_[i] - sin_lat_[i] * sin_dlat_[i];
-    const double s = sin_lat_[i] * cos_dlat_[i] + cos_lat_[i] * sin_dlat_[i];
-    cos_lat_[i] = c;
-    sin_lat_[i] = s;
-    lon_[i] += dlat_per_ms * kRadToDeg * tas * sin_hdg_[i] / c;
+    lat[i] += dlat * kRadToDeg;
+    const double c = cl[i] * cd[i] - sl[i] * sd[i];
+    const double s = sl[i] * cd[i] + cl[i] * sd[i];
+    cl[i] = c;
+    sl[i] = s;
+    lon[i] += dlat_per_ms * kRadToDeg * v * sh[i] / c;
   }
 }
 
