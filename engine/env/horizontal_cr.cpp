@@ -202,6 +202,7 @@ void HorizontalCrEnv::advance(double hdg_cmd) {
   fleet_.set_heading(0, hdg_cmd);
   const bool each_substep = config_.rules == Rules::kPaper && config_.substep_intrusions;
   const double r2 = config_.zone_radius * config_.zone_radius;
+  const double dlat_zone = config_.zone_radius / (kREarth * kDeg);  // [deg]
   const Fleet& f = fleet_;
   for (int s = 0; s < config_.substeps; ++s) {
     fleet_.step(config_.dt, config_.limits);
@@ -209,6 +210,7 @@ void HorizontalCrEnv::advance(double hdg_cmd) {
     if (!each_substep) continue;
     const double lat0 = f.lat(0), lon0 = f.lon(0), c0 = f.cos_lat(0), s0 = f.sin_lat(0);
     for (int j = 1; j <= config_.num_intruders; ++j) {
+      if (std::fabs(f.lat(j) - lat0) > dlat_zone) continue;  // north-south gap alone exceeds the zone
       const Vec2 p = kwik_relative(lat0, lon0, c0, s0, f.lat(j), f.lon(j), f.cos_lat(j), f.sin_lat(j));
       if (p.x * p.x + p.y * p.y < r2) {
         ++stats_.intrusions;
