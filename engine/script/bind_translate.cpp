@@ -1,9 +1,10 @@
 // squawk.translate: the offline translator and the corpus scorer.
 //
-//   squawk.translate.offline(text, [world]) -> {commands = {"CMD", ...}, ask = nil}
-//                                            | {commands = {}, ask = "question"}
-//       world (optional) describes the current traffic for relative
-//       instructions and callsign matching:
+//   squawk.translate.offline(text, [sim | world]) -> {commands = {"CMD", ...}, ask = nil}
+//                                                  | {commands = {}, ask = "question"}
+//       The optional second argument gives the current traffic for relative
+//       instructions and callsign matching: a squawk.sim object (its aircraft
+//       and DEFWPT waypoints are read, nothing is run), or a plain table:
 //         {aircraft = {{id=, type=, lat=, lon=, hdg_deg=, alt_ft=, cas_kt=,
 //                       mach=, route = {"WPT", ...}}, ...},
 //          waypoints = {"NAME", ...}}
@@ -19,10 +20,14 @@
 #include "translate/corpus.h"
 #include "translate/offline_translator.h"
 #include "translate/scorer.h"
+#include "translate/stack_world.h"
 
 namespace squawk::script {
 
 namespace {
+
+// Metatable of squawk.sim objects (bind_sim.cpp): full userdata holding a command::Stack.
+constexpr const char* kSimMt = "squawk.sim.Sim";
 
 std::vector<std::string> string_list(lua_State* L, int idx, const char* what) {
   std::vector<std::string> out;
@@ -91,11 +96,14 @@ int l_offline(lua_State* L) {
   translate::Translation tr;
   if (lua_isnoneornil(L, 2)) {
     tr = translate::translate_offline(text, nullptr);
+  } else if (void* p = luaL_testudata(L, 2, kSimMt)) {
+    translate::StackWorld w(*static_cast<const command::Stack*>(p));
+    tr = translate::translate_offline(text, &w);
   } else if (lua_istable(L, 2)) {
     translate::StaticWorld w = read_world(L, 2);
     tr = translate::translate_offline(text, &w);
   } else {
-    throw ArgError(type_error(L, 2, "world", "nil or a world table"));
+    throw ArgError(type_error(L, 2, "world", "nil, a squawk.sim object or a world table"));
   }
   push_translation(L, tr);
   return 1;

@@ -8,6 +8,7 @@ void bind_all(lua_State* L) {
   bind_gpt2(L);
   bind_llm(L);
   bind_rag(L);
+  bind_translate(L);
   bind_sim(L);
 }
 

@@ -6,10 +6,11 @@ struct lua_State;
 namespace squawk::script {
 
 void bind_core(lua_State* L);  // squawk.version/home/seed/out_dir, check*, math.random
-void bind_env(lua_State* L);   // squawk.env (conflict-resolution environment, evaluate)
 void bind_gpt2(lua_State* L);  // squawk.gpt2 (GPT-2 model and tokenizer)
+void bind_env(lua_State* L);   // squawk.env (conflict-resolution environment, evaluate)
 void bind_llm(lua_State* L);   // squawk.llm (LLM clients), squawk.load_config
 void bind_rag(lua_State* L);   // squawk.rag (BM25 over the command docs)
+void bind_translate(lua_State* L);  // squawk.translate (offline translator, corpus scorer)
 void bind_sim(lua_State* L);   // squawk.sim (simulation driven by TrafScript)
 
 // Registers every area's bindings (called once per Vm).

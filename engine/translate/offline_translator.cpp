@@ -36,13 +36,6 @@ struct Segment {
   bool then = false; // "then" stood before the trigger
 };
 
-// The state a command leaves for a following "then" (vice phraseology:
-// "descend and maintain 4000 then reduce speed to 210").
-struct LastTarget {
-  std::string acid;
-  std::string cond;  // "ATALT KLM1 4000" or "ATSPD KLM1 210"; empty when none
-};
-
 std::string fmt(double v) { return text::fmt_double(v, 6); }
 std::string fmt_int(double v) { return std::to_string(static_cast<long long>(std::llround(v))); }
 
@@ -91,7 +84,6 @@ class Parser {
   }
 
   Translation run() {
-    Translation tr;
     size_t cond_end = 0;
     std::string cond = condition(cond_end);
     if (!ask_.empty()) return finish();
@@ -135,7 +127,6 @@ class Parser {
       if (word(i, ws)) return i;
     return e;
   }
-  bool free_word(size_t i, std::initializer_list<const char*> ws) const { return i < used_.size() && !used_[i] && word(i, ws); }
 
   std::vector<const Reference*> refs_in(size_t b, size_t e, RefKind kind) const {
     std::vector<const Reference*> r;
@@ -380,8 +371,8 @@ class Parser {
       if (k > 0 && !out_.empty() && word(segs[k].trig, {"altitude", "speed", "heading", "airspeed"}) &&
           quantities(segs[k]).empty())
         continue;
-      LastTarget before = last_;
-      last_.cond.clear();
+      std::string before = last_cond_;
+      last_cond_.clear();
       size_t n_before = out_.size();
       std::string at = at_altitude(segs[k]);
       handle(segs[k]);
@@ -395,9 +386,9 @@ class Parser {
         ask_.clear();
         continue;
       }
-      if (segs[k].then && !before.cond.empty() && out_.size() == n_before + 1 &&
-          text::starts_with_ci(out_.back(), "SPD ") != text::starts_with_ci(before.cond, "ATSPD")) {
-        out_.back() = std::string(before.cond).append(" ").append(out_.back());
+      if (segs[k].then && !before.empty() && out_.size() == n_before + 1 &&
+          text::starts_with_ci(out_.back(), "SPD ") != text::starts_with_ci(before, "ATSPD")) {
+        out_.back() = std::string(before).append(" ").append(out_.back());
       }
     }
   }
@@ -689,7 +680,7 @@ class Parser {
       std::string cmd = "ALT " + id + " " + alt;
       if (rate) cmd += " " + fmt_int(rate->value);
       out_.push_back(cmd);
-      last_ = {id, "ATALT " + id + " " + alt};
+      last_cond_ = "ATALT " + id + " " + alt;
     }
   }
 
@@ -735,7 +726,7 @@ class Parser {
         spd = fmt_int(*r);
       }
       out_.push_back("SPD " + id + " " + spd);
-      last_ = {id, "ATSPD " + id + " " + spd};
+      last_cond_ = "ATSPD " + id + " " + spd;
     }
   }
 
@@ -798,10 +789,7 @@ class Parser {
       return need("What heading should " + id + " fly?");
     }
     std::string h = fmt(wrap_heading(std::round(hdg * 1000.0) / 1000.0));
-    for (auto& a : ids) {
-      out_.push_back("HDG " + a + " " + h);
-      last_ = {a, ""};
-    }
+    for (auto& a : ids) out_.push_back("HDG " + a + " " + h);
   }
 
   void vspeed(const Segment& s) {
@@ -1203,7 +1191,10 @@ class Parser {
   std::string pending_;  // question of a value instruction without a value
   std::string subject_;
   std::string last_waypoint_;
-  LastTarget last_;
+  // The condition a target command leaves for a following "then" (US
+  // phraseology: "descend and maintain 4000 then reduce speed to 210"):
+  // "ATALT KLM1 4000" or "ATSPD KLM1 210"; empty when none.
+  std::string last_cond_;
   int last_on_ = -1;
 };
 

@@ -7,9 +7,7 @@
 // callers without a simulation); StackWorld (stack_world.h) views a live one.
 #pragma once
 
-#include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 
@@ -32,8 +30,6 @@ class WorldView {
   virtual ~WorldView() = default;
   virtual std::vector<AircraftView> aircraft() const = 0;
   virtual std::vector<std::string> waypoints() const = 0;  // defined waypoint names
-  // The aircraft whose id equals `id` ignoring case.
-  std::optional<AircraftView> find(std::string_view id) const;
 };
 
 class StaticWorld : public WorldView {
