@@ -58,9 +58,18 @@ std::vector<int> read_ints(lua_State* L, int idx, const char* name) {
   return out;
 }
 
+// Integer field `key` of the table at idx in [lo, 2^30], or fallback when nil.
+int bounded_field(lua_State* L, int idx, const char* key, int fallback, int lo) {
+  const double v = field_number(L, idx, key, fallback);
+  if (!(v >= lo && v <= (1 << 30)) || v != static_cast<double>(static_cast<long long>(v)))
+    throw ArgError(std::string(key) + ": expected an integer in " + std::to_string(lo) + "..2^30");
+  return static_cast<int>(v);
+}
+
 int l_load(lua_State* L) {
   const std::string dir = arg_string(L, 1, "dir");
   const long long seed = opt_integer(L, 2, "seed", 0);
+  if (seed < 0) throw ArgError("seed: expected an integer >= 0");
   auto b = gpt2::load_bundle(dir, static_cast<uint64_t>(seed));
   check_status(b.status());
   new_object<gpt2::Bundle>(L, kModelMt, std::move(b).value());
@@ -102,9 +111,9 @@ int l_generate(lua_State* L) {
   const std::string prompt = arg_string(L, 2, "prompt");
   gpt2::GenerateOptions opt;
   if (lua_istable(L, 3)) {
-    opt.max_tokens = static_cast<int>(field_number(L, 3, "max_tokens", opt.max_tokens));
-    opt.top_k = static_cast<int>(field_number(L, 3, "top_k", opt.top_k));
-    opt.seed = static_cast<uint64_t>(field_number(L, 3, "seed", 0));
+    opt.max_tokens = bounded_field(L, 3, "max_tokens", opt.max_tokens, 0);
+    opt.top_k = bounded_field(L, 3, "top_k", opt.top_k, 1);
+    opt.seed = static_cast<uint64_t>(bounded_field(L, 3, "seed", 0, 0));
   }
   auto out = gpt2::generate(b->model, tokenizer(*b), prompt, opt);
   check_status(out.status());
