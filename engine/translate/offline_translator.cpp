@@ -190,8 +190,10 @@ class Parser {
     if (w == "maintain" || w == "maintained") return Intent::kMaintain;
     if (w == "speed" || w == "spd" || w == "airspeed") {
       if (preceded_by(i, 1, {"vertical"})) return std::nullopt;
-      if (sim_word_near(i) || (word(i + 1, {"up"}) && preceded_by(i, 3, {"simulation", "sim"}))) return Intent::kFf;
-      if (preceded_by(i, 2, {"half"})) return std::nullopt;
+      if (sim_word_near(i) || (word(i + 1, {"up"}) && preceded_by(i, 3, {"simulation", "sim"})) ||
+          preceded_by(i, 1, {"simulation", "sim"}))
+        return Intent::kFf;
+      if (preceded_by(i, 2, {"half", "double"})) return std::nullopt;
       return Intent::kSpd;
     }
     if (w == "slow" || w == "slower") return sim_word_near(i) ? Intent::kDtMult : Intent::kSpd;
@@ -251,7 +253,10 @@ class Parser {
     if (w == "move" || w == "reposition" || w == "teleport" || w == "shift" || w == "place" || w == "relocate" ||
         (w == "put" && near(3, {"back"})))
       return Intent::kMove;
-    if (w == "pause" || w == "hold" || w == "freeze") return Intent::kHold;
+    if (w == "pause" || w == "hold" || w == "freeze" || (w == "stop" && sim_word_near(i))) return Intent::kHold;
+    if (w == "restart" && sim_word_near(i)) return Intent::kReset;
+    if ((w == "what" || w == "how") && near(4, {"altitude", "speed", "heading", "position", "level"}))
+      return Intent::kPos;  // "What is the altitude of KLM123?"
     if (w == "unpause") return Intent::kOp;
     if ((w == "continue" || w == "resume") && (i + 1 >= n || t_[i + 1].kind == TokKind::kPunct || sim_word_near(i) ||
                             word(i + 1, {"running", "and"})))
@@ -269,7 +274,7 @@ class Parser {
     if (w == "seed") return Intent::kSeed;
     if (w == "scenario" || w == "load" || w == "open" || w == "ic") return Intent::kIc;
     if (w == "print" || (w == "echo" && i + 1 < n && t_[i + 1].kind == TokKind::kQuoted)) return Intent::kEcho;
-    if (w == "detection" || w == "asas" || w == "cdmethod") return Intent::kAsas;
+    if (w == "detection" || w == "asas" || w == "cdmethod" || w == "cd") return Intent::kAsas;
     if (w == "resolution" || w == "resolve" || w == "reso") return Intent::kReso;
     if (w == "separation" && !preceded_by(i, 2, {"minimum", "horizontal", "vertical", "lateral"}) &&
         !near(4, {"minimum", "nm", "nautical", "miles", "radius", "ft", "feet"}))
@@ -376,6 +381,7 @@ class Parser {
       size_t n_before = out_.size();
       std::string at = at_altitude(segs[k]);
       handle(segs[k]);
+      if (ask_.empty() && out_.size() > n_before) leftovers(segs[k]);
       if (!at.empty())
         for (size_t c = n_before; c < out_.size(); ++c) out_[c] = std::string(at).append(" ").append(out_[c]);
       // A value instruction said without its value next to other, complete
@@ -406,6 +412,26 @@ class Parser {
     auto ids = acids(s);
     if (ids.empty()) return "";
     return "ATALT " + ids.front() + " " + fmt_alt(q.value, q.flight_level);
+  }
+
+  // "AC02: heading 180, FL200, 250 kts": values with their own units after a
+  // value instruction, of another kind and with no instruction word of their
+  // own, are instructions too.
+  void leftovers(const Segment& s) {
+    if (s.intent != Intent::kHdg && s.intent != Intent::kAlt && s.intent != Intent::kSpd) return;
+    auto ids = acids(s);
+    if (ids.size() != 1) return;
+    bool alt_done = s.intent == Intent::kAlt, spd_done = s.intent == Intent::kSpd;
+    for (const auto& q : quantities(s)) {
+      if (q.begin <= s.trig) continue;
+      if (q.kind == QKind::kAlt && !alt_done && (q.flight_level || word(q.end - 1, {"ft", "feet", "foot"}))) {
+        out_.push_back("ALT " + ids.front() + " " + fmt_alt(q.value, q.flight_level));
+        alt_done = true;
+      } else if ((q.kind == QKind::kSpeed || q.kind == QKind::kMach) && !spd_done) {
+        out_.push_back("SPD " + ids.front() + " " + (q.kind == QKind::kMach ? fmt_mach(q.value) : fmt_int(q.value)));
+        spd_done = true;
+      }
+    }
   }
 
   // ---- values ----
@@ -564,11 +590,12 @@ class Parser {
       if (q.kind == QKind::kHeading) return heading(s);
       if (q.kind == QKind::kVs) return vspeed(s);
       if (q.kind == QKind::kLat) return move(s);
+      if (q.kind == QKind::kMult) return time_mult(s);
     }
     // Three digits said one by one with no other cue: a heading ("... flighting zero four zero").
     for (const auto& q : qs)
       if (q.kind == QKind::kPlain && !q.number.typed && q.number.groups == 3 && q.number.leading_digit_word &&
-          q.value <= 360 && !q.number.has_hundred)
+          q.value <= 360 && !q.number.has_hundred && !q.number.has_decimal)
         return heading(s);
     if (!acids(s).empty() && qs.empty() && refs_in(s.begin, s.end, RefKind::kAircraft).size() == 1 &&
         s.end - s.begin == 1)
@@ -1118,8 +1145,10 @@ class Parser {
 
   // ---- simulation control ----
   void fast_forward(const Segment& s) {
-    for (const auto& q : quantities(s))
+    for (const auto& q : quantities(s)) {
       if (q.kind == QKind::kTime) return out_.push_back("FF " + fmt(q.value));
+      if (q.kind == QKind::kMult) return out_.push_back("DTMULT " + fmt(q.value));  // "speed the sim up 10 times"
+    }
     out_.push_back("FF");
   }
   void time_step(const Segment& s) {

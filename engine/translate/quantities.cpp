@@ -44,13 +44,13 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       ++i;
       continue;
     }
-    if (word_at(t, i, {"half"})) {  // "half a second", "half speed"
+    if (word_at(t, i, {"half", "double"})) {  // "half a second", "half speed", "double speed"
       Quantity q;
       q.begin = i;
-      q.value = 0.5;
+      q.value = t[i].text == "half" ? 0.5 : 2.0;
       size_t j = i + 1;
       if (word_at(t, j, {"a", "an"})) ++j;
-      if (word_at(t, j, {"second", "seconds", "sec"})) {
+      if (q.value == 0.5 && word_at(t, j, {"second", "seconds", "sec"})) {
         q.kind = QKind::kTime;
         q.end = j + 1;
         out.push_back(q);

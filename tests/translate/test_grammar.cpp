@@ -91,6 +91,7 @@ TEST_CASE("several instructions in one utterance keep their order") {
   CHECK(tr("Turn on conflict detection and use MVP for resolution") == "ASAS ON ; RESO MVP");
   CHECK(tr("Reset, then set seed 99 and a time step of 0.05 seconds") == "RESET ; SEED 99 ; DT 0.05");
   CHECK(tr("Set AC01 and AC02 to FL300") == "ALT AC01 FL300 ; ALT AC02 FL300");
+  CHECK(tr("AC02: heading 180, FL200, 250 kts") == "HDG AC02 180 ; ALT AC02 FL200 ; SPD AC02 250");
   CHECK(tr("When AC01 reaches FL200, set its speed to 280 knots") == "ATALT AC01 FL200 SPD AC01 280");
   CHECK(tr("Delta 30, descend and maintain 4000, then reduce speed to 210") ==
         "ALT DAL30 4000 ; ATALT DAL30 4000 SPD DAL30 210");
@@ -103,6 +104,10 @@ TEST_CASE("experimenter requests") {
   CHECK(tr("Slow the sim down to half speed") == "DTMULT 0.5");
   CHECK(tr("Load the scenario super16.scn and then set the random seed to 7") == "IC super16.scn ; SEED 7");
   CHECK(tr("Print \"phase 2\" to the console") == "ECHO phase 2");
+  CHECK(tr("run at double speed") == "DTMULT 2");
+  CHECK(tr("speed the simulation up 10 times") == "DTMULT 10");
+  CHECK(tr("turn off CD") == "ASAS OFF");
+  CHECK(tr("What is the altitude of KLM123?") == "POS KLM123");
   StaticWorld w;
   w.add_aircraft(plane("AC01", 90, 25000, 280));
   w.add_aircraft(plane("AC02", 20, 26000, 290));
