@@ -12,6 +12,19 @@
 // attention makes the padding invisible to each sequence's last position.
 // Sequence positions continue after the prefix: token t of a sequence sits at
 // position P + t, and P + T must not exceed n_ctx.
+//
+// Fine-tuning the last block and a head (the paper's setting):
+//   auto m = load_model(dir, {{"head.weight", {C, A}}, {"head.bias", {A}}});
+//   m->set_trainable_blocks(1);
+//   nn::Adam adam(m->trainable_params(), m->grads());  // block L-1, ln_f, head
+//   PrefixCache cache;  m->extend(cache, shared_prompt_ids);
+//   m->zero_grads();  m->forward_train(cache, observations, hidden);  // [B, C]
+//   (head forward/backward: add head gradients into m->grad("head.weight"), ...,
+//    and compute dhidden [B, C])
+//   m->backward(dhidden);  adam.step();
+//   save_model(out_dir, *m);  // the head travels as extra tensors
+// The cache stays valid for forward_train across steps; rebuild it before using
+// forward_last with updated weights.
 #pragma once
 
 #include <span>
