@@ -15,6 +15,7 @@
 #include "core/rng.h"
 #include "gpt2/checkpoint.h"
 #include "gpt2/model.h"
+#include "nn/adam.h"
 
 using namespace squawk;
 using namespace squawk::gpt2;
@@ -236,4 +237,48 @@ TEST_CASE("tail backward matches finite differences for every trainable tensor")
     REQUIRE(model.forward_last(cache, seqs, b).is_ok());
     CHECK(max_abs_diff(a, b) < 1e-5f);
   }
+}
+
+TEST_CASE("Adam on the trainable tail and a head fits a small target") {
+  const int C = kSmall.n_embd, A = 2;
+  const std::vector<TensorSpec> extras = {{"head.weight", {C, A}, 0, 0}};
+  Model model = random_model(kSmall, 21, extras);
+  REQUIRE(model.set_trainable_blocks(1).is_ok());
+  nn::Adam adam(model.trainable_params(), model.grads(), {1e-2f});
+  PrefixCache cache;
+  REQUIRE(model.extend(cache, std::vector<int>{1, 2, 3, 4}).is_ok());
+  const std::vector<std::vector<int>> seqs = {{10, 11}, {12}, {13, 14, 15}};
+  const float target[3][2] = {{1.0f, -1.0f}, {-0.5f, 0.5f}, {0.0f, 2.0f}};
+  auto step = [&]() {
+    std::vector<float> hidden;
+    model.zero_grads();
+    REQUIRE(model.forward_train(cache, seqs, hidden).is_ok());
+    auto w = model.tensor("head.weight");
+    auto gw = model.grad("head.weight");
+    std::vector<float> dh(hidden.size(), 0.0f);
+    double loss = 0.0;
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < A; ++a) {
+        double y = 0.0;
+        for (int c = 0; c < C; ++c) y += static_cast<double>(hidden[b * C + c]) * w[c * A + a];
+        const double e = y - target[b][a];
+        loss += e * e;
+        for (int c = 0; c < C; ++c) {
+          gw[c * A + a] += static_cast<float>(2 * e * hidden[b * C + c]);
+          dh[b * C + c] += static_cast<float>(2 * e * w[c * A + a]);
+        }
+      }
+    REQUIRE(model.backward(dh).is_ok());
+    adam.step();
+    return loss;
+  };
+  const double first = step();
+  double last = first;
+  for (int i = 0; i < 60; ++i) last = step();
+  MESSAGE("loss " << first << " -> " << last << " after 60 Adam steps");
+  CHECK(last < 0.05 * first);
+  // Only the tail moved: the embeddings and block 0..L-2 are as loaded.
+  Model fresh = random_model(kSmall, 21, extras);
+  const size_t tail = model.params().size() - model.grads().size();
+  CHECK(std::equal(fresh.params().begin(), fresh.params().begin() + static_cast<long>(tail), model.params().begin()));
 }
