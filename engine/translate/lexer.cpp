@@ -123,6 +123,16 @@ void lex_core(std::string_view c, std::vector<Token>& out) {
     }
     return;
   }
+  if (c.size() > 1 && c.front() == '-' && (is_digit(c[1]) || c[1] == '.')) {  // "-1000 fpm", "-73.5"
+    const size_t first = out.size();
+    lex_core(c.substr(1), out);
+    if (out.size() > first && out[first].kind == TokKind::kNumber) {
+      out[first].num = -out[first].num;
+      out[first].raw.insert(out[first].raw.begin(), '-');
+      out[first].text = out[first].raw;
+    }
+    return;
+  }
   if (c.find('\xB0') != std::string_view::npos && lex_dms(c, out)) return;
   if (thousands_grouped(c)) {
     std::string digits;

@@ -2,7 +2,8 @@
 //
 // Contract: splits an utterance into tokens that the offline grammar reads.
 //  - words are lower-cased (`raw` keeps the original spelling, used for ids);
-//  - typed numbers become kNumber tokens ("41,000" -> 41000, "0.5", ".78");
+//  - typed numbers become kNumber tokens ("41,000" -> 41000, "0.5", ".78",
+//    "-1000");
 //    a unit glued to a number is split off ("30k" -> 30 "k", "250kt" -> 250
 //    "kt", "52.3N" -> 52.3 "n", "FL250" -> "fl" 250, "M.78" -> "mach" 0.78,
 //    "N52.3" -> "n" 52.3);

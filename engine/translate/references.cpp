@@ -30,7 +30,7 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
   while (j < t.size() && !used[j] && s.groups.size() < 8) {
     const Token& k = t[j];
     if (k.kind == TokKind::kNumber) {
-      if (k.spelled || k.num >= 1e6 || k.num != static_cast<long long>(k.num)) break;
+      if (k.spelled || k.num < 0 || k.num >= 1e6 || k.num != static_cast<long long>(k.num)) break;
       s.groups.push_back(k.raw.find(',') == std::string::npos ? k.raw : std::to_string(static_cast<long long>(k.num)));
       s.ends.push_back(++j);
       continue;

@@ -37,6 +37,8 @@ TEST_CASE("altitudes: flight levels, feet, thousands, 30k, metres") {
   CHECK(tr("I'd like aircraft TEST2 to cruise at 41,000 ft") == "ALT TEST2 41000");
   CHECK(tr("Bring AC03 up to thirty-seven thousand feet") == "ALT AC03 37000");
   CHECK(tr("Climb AC01 to 28000 ft at 1500 fpm") == "ALT AC01 28000 1500");
+  CHECK(tr("change AC02 vertical speed to -1000 fpm") == "VS AC02 -1000");
+  CHECK(tr("Make AC01 descend at 1500 feet per minute") == "VS AC01 -1500");
 }
 
 TEST_CASE("speeds: knots and Mach in every common form") {

@@ -67,6 +67,8 @@ TEST_CASE("lexer: glued units, ids, possessives, quotes, degrees") {
   CHECK(t[13].num == 41000);
   CHECK(t[14].num == doctest::Approx(52.31));
   CHECK(lex("737-800")[0].text == "737-800");
+  CHECK(lex("-1000")[0].num == -1000);
+  CHECK(lex("-73.5")[0].num == doctest::Approx(-73.5));
   CHECK(lex("thirty-one").size() == 2);
   CHECK(lex("").empty());
 }
