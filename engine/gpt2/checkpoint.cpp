@@ -1,5 +1,6 @@
 #include "gpt2/checkpoint.h"
 
+#include <algorithm>
 #include <map>
 #include <regex>
 
@@ -96,6 +97,7 @@ Status load_weights(const SafetensorsFile& file, Model& model) {
   const ParamLayout& layout = model.layout();
   const Config& cfg = layout.config();
   std::map<std::string, const SafeTensor*> by_name;
+  const SafeTensor* lm_head = nullptr;
   const size_t np = sizeof kPrefix - 1;
   for (const SafeTensor& t : file.tensors()) {
     std::string name = t.name.rfind(kPrefix, 0) == 0 ? t.name.substr(np) : t.name;
@@ -105,6 +107,7 @@ Status load_weights(const SafetensorsFile& file, Model& model) {
       if (t.shape != want)
         return Status::corruption("checkpoint: lm_head.weight has shape " + shape_str(t.shape) +
                                   ", expected " + shape_str(want) + " (tied to wte)");
+      lm_head = &t;
       continue;
     }
     if (!layout.find(name))
@@ -129,6 +132,14 @@ Status load_weights(const SafetensorsFile& file, Model& model) {
       return Status::corruption("checkpoint: tensor " + text::quoted(t.name) + " has shape " +
                                 shape_str(t.shape) + ", expected " + shape_str(spec.shape));
     SQUAWK_RETURN_IF_ERROR(file.read_f32(t, model.tensor(spec.name)));
+  }
+  if (lm_head) {
+    std::vector<float> head(lm_head->numel());
+    SQUAWK_RETURN_IF_ERROR(file.read_f32(*lm_head, head));
+    auto wte = model.tensor("wte.weight");
+    if (!std::equal(head.begin(), head.end(), wte.begin()))
+      return Status::unsupported("checkpoint: lm_head.weight differs from wte.weight; squawk's GPT-2 "
+                                 "ties the LM head to the token embedding");
   }
   return Status::ok();
 }

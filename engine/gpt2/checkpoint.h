@@ -4,7 +4,8 @@
 // Reading accepts both tensor-name layouts found in practice: the hub's gpt2
 // file (bare names such as h.0.attn.c_attn.weight, plus causal-mask buffers
 // h.N.attn.bias / h.N.attn.masked_bias, which are ignored) and save_pretrained's
-// (names prefixed "transformer.", lm_head.weight tied to wte or absent).
+// (names prefixed "transformer.", lm_head.weight tied to wte or absent; an
+// lm_head.weight that differs from wte is refused).
 // Weights may be F32, F16 or BF16; GPT-2's Conv1D weights are stored [in, out],
 // the layout of params.h, so no transpose happens. Extra tensors of the model
 // (heads) are read when present and left untouched when absent.

@@ -209,6 +209,14 @@ TEST_CASE("checkpoint folders with wrong content are clear errors") {
     write_tensors(refs);
     CHECK(has(load_error(), "both with and without"));
   }
+  SUBCASE("untied lm_head") {
+    auto refs = all;
+    std::vector<float> other(model.tensor("wte.weight").begin(), model.tensor("wte.weight").end());
+    other[3] += 1.0f;
+    refs.push_back({"lm_head.weight", {kCfg.vocab_size, kCfg.n_embd}, other});
+    write_tensors(refs);
+    CHECK(has(load_error(), "lm_head.weight differs from wte.weight"));
+  }
   SUBCASE("truncated file") {
     const std::string bytes = *files::read(dir + "/model.safetensors");
     REQUIRE(files::write_atomic(dir + "/model.safetensors", bytes.substr(0, bytes.size() - 10)).is_ok());
