@@ -82,10 +82,12 @@ int cmd_plot(const ArgV& argv) {
     auto table = viz::parse_csv(*text);
     if (!table) return failure(table.status().with_context(path));
     const int x = find_column(*table, {"episodes", "episode", "episodes_trained"});
-    const int s = find_column(*table, {"success_rate", "success"});
-    const int r = find_column(*table, {"mean_reward", "reward"});
+    const int s = find_column(*table, {"eval_success_rate", "success_rate", "success"});
+    const int r = find_column(*table, {"eval_mean_reward", "mean_reward", "reward"});
     if (x < 0 || (s < 0 && r < 0)) continue;
-    const std::string label = fs::path(path).stem().string();
+    // A run's log.csv is named after its run folder.
+    std::string label = fs::path(path).stem().string();
+    if (label == "log") label = fs::absolute(path).parent_path().filename().string();
     const std::string colour = colours[used++ % 5];
     if (s >= 0) success.series.push_back({label, table->values(x), table->values(s), colour});
     if (r >= 0) reward.series.push_back({label, table->values(x), table->values(r), colour});

@@ -88,9 +88,10 @@ const std::vector<Subcommand>& subcommands() {
        cmd_render},
       {"plot", "plot RUN_DIR|FILE.csv      draw training curves as SVG (Fig. 3 style)",
        "usage: squawk plot RUN_DIR|FILE.csv [--out FILE.svg|-]\n\n"
-       "Reads the CSV logs a training run writes (columns episodes, success_rate,\n"
-       "mean_reward) and draws success rate and mean reward against episodes\n"
-       "trained, one line per CSV file. Default output: RUN_DIR/curves.svg.\n",
+       "Reads the CSV logs a training run writes (columns episodes and\n"
+       "eval_success_rate / eval_mean_reward, or success_rate / mean_reward)\n"
+       "and draws success rate and mean reward against episodes trained, one\n"
+       "line per CSV file. Default output: RUN_DIR/curves.svg.\n",
        cmd_plot},
       {"rag", "rag search QUERY | rag eval CORPUS.tsv   command retrieval (BM25)",
        "usage: squawk rag search QUERY... [--k N] [--text] [--notes FILE] [--no-notes]\n"

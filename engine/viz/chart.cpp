@@ -27,7 +27,7 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
 }
 
 void draw_panel(Svg& svg, const Panel& panel, double x0, double y0, double w, double h) {
-  const double left = x0 + 62, right = x0 + w - 14, top = y0 + 30, bottom = y0 + h - 46;
+  const double left = x0 + 62, right = x0 + w - 34, top = y0 + 30, bottom = y0 + h - 46;
   double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
   for (const auto& s : panel.series)
     for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
@@ -60,7 +60,7 @@ void draw_panel(Svg& svg, const Panel& panel, double x0, double y0, double w, do
   svg.text({(left + right) / 2, bottom + 36}, panel.xlabel, 12, "middle");
   svg.text({x0 + 16, (top + bottom) / 2}, panel.ylabel, 12, "middle", "black", -90);
 
-  double ly = top + 16;
+  double ly = bottom - 10 - 16.0 * static_cast<double>(panel.series.size() - 1);  // legend, bottom right
   for (const auto& s : panel.series) {
     std::vector<Point> pts;
     for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
@@ -68,8 +68,8 @@ void draw_panel(Svg& svg, const Panel& panel, double x0, double y0, double w, do
     svg.polyline(pts, s.colour, 2);
     if (pts.size() == 1) svg.circle(pts[0], 3, s.colour, s.colour);
     if (!s.label.empty()) {
-      svg.line({right - 120, ly - 4}, {right - 100, ly - 4}, s.colour, 2);
-      svg.text({right - 95, ly}, s.label, 11);
+      svg.line({right - 140, ly - 4}, {right - 120, ly - 4}, s.colour, 2);
+      svg.text({right - 115, ly}, s.label, 11);
       ly += 16;
     }
   }

@@ -146,9 +146,13 @@ std::string render_scene(const Scene& scene, const RenderOptions& opt) {
     const std::string col = intrusion ? "#dc143c" : "#303030";
     svg.circle(c, rpz_km * scale, col, "none", 1.5);
     svg.polygon(needle(c, a.hdg, 9, 5), col);
-    svg.text({c.x + 8, c.y + 14}, a.id, 11, "start", col);
+    const double off = rpz_km * scale * 0.72 + 2;  // label just outside the circle
+    svg.text({c.x + off, c.y - off}, a.id, 12, "start", col, 0, true);
   }
-  // Ownship needle.
+  // Ownship start and needle.
+  const Point s0 = P(own0.lat, own0.lon);
+  svg.rect({s0.x - 4, s0.y - 4}, 8, 8, "none", "#000080", 1.5);
+  svg.text({s0.x + 8, s0.y + 4}, "start", 11, "start", "#000080");
   const Point o = P(own.lat, own.lon);
   svg.polygon(needle(o, own.hdg, 13, 7), "#000080");
   svg.text({o.x + 10, o.y + 16}, own.id, 12, "start", "#000080", 0, true);
@@ -157,7 +161,7 @@ std::string render_scene(const Scene& scene, const RenderOptions& opt) {
   svg.line({size - 30, 78}, {size - 30, 48}, "black", 2);
   svg.polygon({{size - 30, 42}, {size - 36, 54}, {size - 24, 54}}, "black");
   svg.text({size - 30, 94}, "N", 13, "middle", "black", 0, true);
-  const auto ticks = nice_ticks(0, span / 4, 1);
+  const auto ticks = nice_ticks(0, span / 4, 2);  // a round length, at most a quarter of the view
   const double bar_km = ticks.size() > 1 ? ticks[1] : span / 4;
   const double y = size - 22;
   svg.line({20, y}, {20 + bar_km * scale, y}, "black", 3);
@@ -171,7 +175,7 @@ std::string render_scene(const Scene& scene, const RenderOptions& opt) {
   caption += "   t = " + text::fmt_double(now.t, 0) + " s   circles: " + text::fmt_double(scene.rpz_nm, 1) +
              " NM separation";
   svg.text({10, 22}, caption, 13, "start", "black", 0, true);
-  if (!now.note.empty()) svg.text({10, size - 40}, now.note, 12, "start", "black");
+  if (!now.note.empty()) svg.text({10, size - 54}, now.note, 12, "start", "black");
   return svg.str();
 }
 
