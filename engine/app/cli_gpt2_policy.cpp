@@ -3,6 +3,7 @@
 // cmd_train / cmd_eval (cli_rl.cpp).
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -50,7 +51,7 @@ Status trim_log(const std::string& path, long long episodes) {
   std::string line, out;
   bool header = true;
   while (std::getline(in, line)) {
-    if (header || std::stoll(line) <= episodes) out += line + "\n";
+    if (header || std::strtoll(line.c_str(), nullptr, 10) <= episodes) out += line + "\n";
     header = false;
   }
   return files::write_atomic(path, out);

@@ -1,21 +1,12 @@
 #include "app/gpt2_policy_factory.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <fstream>
 
-#include <nlohmann/json.hpp>
-
-#include "app/cli.h"
-#include "app/vm_options.h"
 #include "core/files.h"
 #include "core/paths.h"
 #include "env/vec_env.h"
 #include "gpt2/checkpoint.h"
-#include "rl/evaluator.h"
-#include "rl/vpg.h"
 #include "script/prompt_renderer.h"
-#include "script/scenario.h"
 
 namespace squawk::app {
 

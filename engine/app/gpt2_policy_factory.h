@@ -40,7 +40,8 @@ struct Gpt2PolicyOptions {
   std::string model = "tiny";  // "tiny" | Hugging Face folder
   uint64_t model_seed = 0;     // tiny: weights; both: action-head init
   std::string prompt;          // template file; "" = the shipped prompts/observation.lua
-  rl::PromptPolicySpec spec;   // trainable_blocks < 0 picks the default for the model
+  // trainable_blocks < 0 (the default here) picks the model's default depth.
+  rl::PromptPolicySpec spec{.trainable_blocks = -1};
 };
 
 struct Gpt2Policy {
