@@ -9,9 +9,10 @@
 // the template renders for the first kTinyVocabEpisodes training episodes of
 // the scenario (seed 0) under the zero action, so numbers and the fixed lines
 // tokenise compactly; weights from init_random(model_seed). Its default
-// trainable depth is both blocks (kTinyTrainableBlocks): with random frozen
-// weights below the trained part, only a fully trainable stack learns within
-// minutes; a real GPT-2 folder keeps the paper's k = 1.
+// trainable depth is both blocks (kTinyTrainableBlocks): a random block is no
+// pretrained feature extractor worth freezing, so everything above the frozen
+// embeddings trains (k = 2 reached 96.5 % in 2048 episodes; k = 1 was not
+// tried); a real GPT-2 folder keeps the paper's k = 1.
 #pragma once
 
 #include <memory>
