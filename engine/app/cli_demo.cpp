@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <memory>
 #include <set>
+#include <sstream>
 
 #include "app/cli.h"
 #include "app/subcommands.h"
@@ -26,6 +27,7 @@
 #include "core/text.h"
 #include "core/units.h"
 #include "env/horizontal_cr.h"
+#include "env/recorder.h"
 #include "rl/checkpoint.h"
 #include "script/advisory.h"
 #include "script/scenario.h"
@@ -41,7 +43,8 @@ constexpr const char* kOwn = "KL001";
 
 class Demo : public env::EpisodeObserver {
  public:
-  Demo(command::Stack& stack, bool quiet) : stack_(stack), quiet_(quiet) {}
+  Demo(command::Stack& stack, bool quiet, env::EpisodeObserver* recorder)
+      : stack_(stack), quiet_(quiet), recorder_(recorder) {}
 
   void log(const char* hop, const std::string& what) {
     if (!quiet_) std::printf("[t=%5.0f s] %-10s %s\n", stack_.sim().simt(), hop, what.c_str());
@@ -58,12 +61,17 @@ class Demo : public env::EpisodeObserver {
     return Status::ok();
   }
 
-  void on_reset(const env::HorizontalCrEnv&) override {}
-  void on_end(const env::HorizontalCrEnv&, const env::EpisodeStats&) override {}
+  void on_reset(const env::HorizontalCrEnv& e) override {
+    if (recorder_) recorder_->on_reset(e);
+  }
+  void on_end(const env::HorizontalCrEnv& e, const env::EpisodeStats& st) override {
+    if (recorder_) recorder_->on_end(e, st);
+  }
 
   // Every environment step: automatic steering becomes an HDG command; then
   // the simulator flies the same step and is compared with the environment.
   void on_step(const env::HorizontalCrEnv& e, const env::StepInfo& info) override {
+    if (recorder_) recorder_->on_step(e, info);
     if (!info.agent) {
       char line[64];
       std::snprintf(line, sizeof line, "HDG %s %.2f", kOwn, geo::wrap360(info.hdg_cmd));
@@ -119,6 +127,7 @@ class Demo : public env::EpisodeObserver {
 
   command::Stack& stack_;
   bool quiet_;
+  env::EpisodeObserver* recorder_;
   bool failed_ = false;
   std::set<std::string> conflicts_, los_;
   double flown_m_ = 0, worst_m_ = 0;
@@ -189,7 +198,9 @@ int cmd_demo(const ArgV& argv) {
     perf.ground_axmax = cfg.limits.accel;
     if (Status st = stack.sim().set_performance_options(perf); !st.is_ok()) return failure(st);
   }
-  Demo demo(stack, quiet);
+  std::ostringstream recording;
+  env::JsonlRecorder recorder(recording);
+  Demo demo(stack, quiet, args->has("--record") ? &recorder : nullptr);
   if (!quiet)
     std::printf("squawk demo: %s agent on %s (paper rules, look-ahead %.0f s), seed %llu\n",
                 policy_kind.c_str(), sc->path.c_str(), cfg.lookahead,
@@ -216,6 +227,7 @@ int cmd_demo(const ArgV& argv) {
   demo.log("waypoint", fmt("%.5f %.5f, %.1f km north", e.waypoint_lat(), e.waypoint_lon(),
                            geo::gc_distance_m(cfg.start_lat, cfg.start_lon, e.waypoint_lat(), e.waypoint_lon()) / 1000));
   demo.observe(e);
+  demo.on_reset(e);
   e.set_observer(&demo);
 
   translate::StackWorld world(stack);
@@ -272,9 +284,7 @@ int cmd_demo(const ArgV& argv) {
   std::printf("  wall time                 %.2f s\n", wall);
 
   if (auto rec = args->get("--record")) {
-    std::string text = viz::to_jsonl_header(demo.scene);
-    for (const auto& f : demo.scene.frames) text += viz::to_jsonl_frame(f, 0, false);
-    if (Status s = files::write_atomic(*rec, text); !s.is_ok()) return failure(s);
+    if (Status s = files::write_atomic(*rec, recording.str()); !s.is_ok()) return failure(s);
     std::printf("  recorded episode          %s\n", rec->c_str());
   }
   if (auto svg = args->get("--svg")) {

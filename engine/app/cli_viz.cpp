@@ -39,18 +39,20 @@ int find_column(const viz::Table& t, std::initializer_list<const char*> names) {
 }  // namespace
 
 int cmd_render(const ArgV& argv) {
-  auto args = Args::parse(argv, {{"--out", "--frame", "--size"}, {}});
+  auto args = Args::parse(argv, {{"--out", "--frame", "--size", "--episode"}, {}});
   if (!args) return usage_error("render", args.status().message());
   if (args->positional().size() != 1) return usage_error("render", "expected one EPISODE.jsonl");
   const std::string in = args->positional()[0];
   auto frame = args->get_int("--frame", -1);
+  auto episode = args->get_int("--episode", -1);
+  if (!episode) return usage_error("render", episode.status().message());
   auto size = args->get_double("--size", 720);
   if (!frame) return usage_error("render", frame.status().message());
   if (!size || *size < 100 || *size > 8000)
     return usage_error("render", "--size expects pixels between 100 and 8000");
   auto text = files::read(in);
   if (!text) return failure(text.status());
-  auto scene = viz::parse_episode_jsonl(*text);
+  auto scene = viz::parse_episode_jsonl(*text, *episode);
   if (!scene) return failure(scene.status().with_context(in));
   const std::string out = args->get_or("--out", fs::path(in).replace_extension(".svg").string());
   return write_output(out, viz::render_scene(*scene, {*size, static_cast<int>(*frame)}));

@@ -77,11 +77,13 @@ const std::vector<Subcommand>& subcommands() {
        "              tiny shape) over the vocabulary of --vocab DIR or the bytes\n",
        cmd_gpt2},
       {"render", "render EPISODE.jsonl      draw a recorded episode as SVG (Fig. 2 style)",
-       "usage: squawk render EPISODE.jsonl [--frame N] [--size PX] [--out FILE.svg|-]\n\n"
+       "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"
+       "                     [--out FILE.svg|-]\n\n"
        "Draws a recorded episode top-down, north up: the ownship's and intruders'\n"
        "tracks, each intruder's separation circle (red while the ownship is inside),\n"
        "the waypoint with its capture circle, a scale bar and a north arrow.\n"
        "Episodes are recorded by `squawk demo --record FILE` and `squawk eval --record FILE`.\n"
+       "  --episode K draw episode K of the recording (default: the first one)\n"
        "  --frame N   draw aircraft where they were at recorded frame N (default: last)\n"
        "  --out FILE  output path (default: the input with .svg; `-` = stdout)\n"
        "For a PNG: rsvg-convert -o out.png out.svg (Debian package librsvg2-bin).\n",

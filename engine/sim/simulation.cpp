@@ -51,6 +51,16 @@ Status check_positive(std::string_view who, const char* what, double v) {
   return Status::ok();
 }
 
+// Speeds may be 0 (a parked or holding aircraft, as BlueSky allows), not negative.
+Status check_speed(std::string_view who, double v) {
+  if (!std::isfinite(v) || v < 0.0) {
+    std::string m("speed ");
+    m.append(num(v)).append(" must be 0 or a positive CAS or Mach");
+    return bad(who, m);
+  }
+  return Status::ok();
+}
+
 Status check_finite(std::string_view who, const char* what, double v) {
   if (!std::isfinite(v)) {
     std::string m(what);
@@ -351,7 +361,7 @@ Status Simulation::create(std::string_view acid, std::string_view actype, double
   SQUAWK_RETURN_IF_ERROR(check_latlon(id, lat, lon));
   SQUAWK_RETURN_IF_ERROR(check_finite(id, "heading", hdg_deg));
   SQUAWK_RETURN_IF_ERROR(check_alt(id, alt_m));
-  SQUAWK_RETURN_IF_ERROR(check_positive(id, "speed", casmach));
+  SQUAWK_RETURN_IF_ERROR(check_speed(id, casmach));
   add_aircraft(id, actype, lat, lon, hdg_deg, alt_m, casormach_to_tas(casmach, alt_m), casmach);
   return Status::ok();
 }
@@ -414,7 +424,7 @@ Status Simulation::move(std::string_view acid, double lat, double lon, std::opti
   SQUAWK_RETURN_IF_ERROR(check_latlon(id, lat, lon));
   if (alt_m) SQUAWK_RETURN_IF_ERROR(check_alt(id, *alt_m));
   if (hdg_deg) SQUAWK_RETURN_IF_ERROR(check_finite(id, "heading", *hdg_deg));
-  if (casmach) SQUAWK_RETURN_IF_ERROR(check_positive(id, "speed", *casmach));
+  if (casmach) SQUAWK_RETURN_IF_ERROR(check_speed(id, *casmach));
   if (vs) SQUAWK_RETURN_IF_ERROR(check_finite(id, "vertical speed", *vs));
   Traffic& t = traf_;
   t.lat[i] = lat;
@@ -470,7 +480,7 @@ Status Simulation::set_vs(std::string_view acid, double vs) {
 
 Status Simulation::set_speed(std::string_view acid, double casmach) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
-  SQUAWK_RETURN_IF_ERROR(check_positive(traf_.id[i], "speed", casmach));
+  SQUAWK_RETURN_IF_ERROR(check_speed(traf_.id[i], casmach));
   traf_.sel_spd[i] = casmach;
   traf_.tgt_tas_alt[i] = std::nan("");
   return Status::ok();

@@ -93,7 +93,7 @@ class Simulation {
   // Creates an aircraft (BlueSky CRE). casmach: CAS [m/s] or Mach (is_mach).
   // hdg is wrapped into [0, 360). Errors: empty or duplicate id (naming it),
   // lat outside [-90, 90], lon outside [-180, 180], non-finite values, alt
-  // outside [-300, 30000] m, speed <= 0.
+  // outside [-300, 30000] m, speed < 0 (0 is allowed, as in BlueSky).
   Status create(std::string_view acid, std::string_view actype, double lat, double lon,
                 double hdg_deg, double alt_m, double casmach);
   // Creates an intruder in conflict with `target` (BlueSky CRECONFS, facts
@@ -127,7 +127,7 @@ class Simulation {
   // VS: selected vertical speed magnitude [m/s] (sign ignored; the aircraft
   // climbs or descends toward its selected altitude); switches VNAV off.
   Status set_vs(std::string_view acid, double vs);
-  // SPD: selected CAS [m/s] or Mach, > 0. With VNAV on, passing a waypoint
+  // SPD: selected CAS [m/s] or Mach, >= 0. With VNAV on, passing a waypoint
   // with a speed constraint replaces it.
   Status set_speed(std::string_view acid, double casmach);
   // BANK: bank angle [deg] in (0, 90).

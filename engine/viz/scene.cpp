@@ -15,9 +15,28 @@ namespace squawk::viz {
 
 using nlohmann::json;
 
-Result<Scene> parse_episode_jsonl(const std::string& text) {
+namespace {
+
+// [lat, lon, hdg, tas] -> Pose.
+Pose pose(const json& a, std::string id) {
+  return {std::move(id), a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>()};
+}
+
+Frame frame_of(const json& j) {
+  Frame f;
+  f.t = j.at("t").get<double>();
+  f.note = j.value("note", "");
+  f.aircraft.push_back(pose(j.at("own"), "KL001"));
+  const json& in = j.at("intruders");
+  for (size_t i = 0; i < in.size(); ++i) f.aircraft.push_back(pose(in[i], std::to_string(i)));
+  return f;
+}
+
+}  // namespace
+
+Result<Scene> parse_episode_jsonl(const std::string& text, long long episode) {
   Scene s;
-  bool have_header = false;
+  bool found = false;
   size_t line_no = 0;
   for (const auto& raw : text::split(text, '\n')) {
     ++line_no;
@@ -26,51 +45,28 @@ Result<Scene> parse_episode_jsonl(const std::string& text) {
     json j = json::parse(raw, nullptr, false);
     if (j.is_discarded() || !j.is_object()) return Status::corruption(where + ": not a JSON object");
     try {
-      if (j.contains("episode")) {
-        const json& e = j["episode"];
-        s.title = e.value("title", "");
-        s.rpz_nm = e.value("rpz_nm", 5.0);
-        s.wpt_radius_km = e.value("wpt_radius_km", 5.0);
-        if (!e.contains("waypoint")) return Status::corruption(where + ": episode has no waypoint");
-        s.wpt_lat = e["waypoint"].at("lat").get<double>();
-        s.wpt_lon = e["waypoint"].at("lon").get<double>();
-        have_header = true;
-        continue;
+      const std::string event = j.at("event").get<std::string>();
+      const long long k = j.at("episode").get<long long>();
+      if (episode < 0 && event == "reset" && !found) episode = k;
+      if (k != episode) continue;
+      if (event == "reset") {
+        s.title = "episode " + std::to_string(k) + " (" + j.value("rules", "") + " rules)";
+        s.wpt_lat = j.at("waypoint").at(0).get<double>();
+        s.wpt_lon = j.at("waypoint").at(1).get<double>();
+        s.frames.push_back(frame_of(j));
+        found = true;
+      } else if (event == "step") {
+        if (!found) return Status::corruption(where + ": a step of episode " + std::to_string(k) + " before its reset");
+        s.frames.push_back(frame_of(j));
       }
-      Frame f;
-      f.t = j.at("t").get<double>();
-      f.note = j.value("note", "");
-      for (const auto& a : j.at("aircraft"))
-        f.aircraft.push_back({a.at("id").get<std::string>(), a.at("lat").get<double>(),
-                              a.at("lon").get<double>(), a.value("hdg", 0.0)});
-      if (f.aircraft.empty()) return Status::corruption(where + ": a frame needs at least the ownship");
-      s.frames.push_back(std::move(f));
     } catch (const json::exception& e) {
-      return Status::corruption(where + ": " + e.what());
+      return Status::corruption(where + ": expected a recorder event (reset, step or end): " + e.what());
     }
   }
-  if (!have_header) return Status::corruption("episode has no {\"episode\": ...} header line");
-  if (s.frames.empty()) return Status::corruption("episode has no frames");
+  if (!found)
+    return Status::not_found(episode < 0 ? std::string("the recording holds no episode")
+                                         : "the recording holds no episode " + std::to_string(episode));
   return s;
-}
-
-std::string to_jsonl_header(const Scene& scene) {
-  json j = {{"episode",
-             {{"title", scene.title},
-              {"waypoint", {{"lat", scene.wpt_lat}, {"lon", scene.wpt_lon}}},
-              {"rpz_nm", scene.rpz_nm},
-              {"wpt_radius_km", scene.wpt_radius_km}}}};
-  return j.dump() + "\n";
-}
-
-std::string to_jsonl_frame(const Frame& frame, double action, bool has_action) {
-  json ac = json::array();
-  for (const auto& a : frame.aircraft)
-    ac.push_back({{"id", a.id}, {"lat", a.lat}, {"lon", a.lon}, {"hdg", a.hdg}});
-  json j = {{"t", frame.t}, {"aircraft", ac}};
-  if (has_action) j["action"] = action;
-  if (!frame.note.empty()) j["note"] = frame.note;
-  return j.dump() + "\n";
 }
 
 namespace {

@@ -1,14 +1,13 @@
-// Episode scenes: the recorded-episode format and its top-down SVG picture
-// (the paper's Fig. 2: ownship, intruders with protected-zone circles,
-// waypoint, tracks, north up, scale bar).
+// Episode scenes: a recorded episode and its top-down SVG picture (the
+// paper's Fig. 2: ownship, intruders with separation circles, waypoint,
+// tracks, north up, scale bar).
 //
-// Recording format (JSON lines, written by the demo and `squawk eval --record`):
-//   line 1: {"episode": {"title": str, "waypoint": {"lat": deg, "lon": deg},
-//            "rpz_nm": NM, "wpt_radius_km": km}}
-//   then one line per recorded state:
-//           {"t": s, "aircraft": [{"id": str, "lat": deg, "lon": deg, "hdg": deg}, ...],
-//            "action": number (optional), "note": str (optional)}
-//   aircraft[0] is the ownship. Unknown keys are ignored.
+// Recorded episodes are the JSON lines of env::JsonlRecorder (env/recorder.h;
+// written by `squawk eval --record` and `squawk demo --record`): a "reset"
+// event, "step" events and an "end" event per episode, possibly interleaved
+// with other episodes' lines. Ownship and intruder states are
+// [lat, lon, hdg, tas]; the ownship is named KL001 and intruder i is named
+// "i", as in BlueSky-Gym. A step may carry a "note" (the demo's advisory).
 #pragma once
 
 #include <string>
@@ -39,10 +38,9 @@ struct Scene {
   std::vector<Frame> frames;
 };
 
-// Errors name the line and what was expected.
-Result<Scene> parse_episode_jsonl(const std::string& text);
-std::string to_jsonl_header(const Scene& scene);
-std::string to_jsonl_frame(const Frame& frame, double action, bool has_action);
+// Reads episode `episode` (-1: the first one in the file) of a recording.
+// Errors name the line and what was expected, or the episode that is absent.
+Result<Scene> parse_episode_jsonl(const std::string& text, long long episode = -1);
 
 struct RenderOptions {
   double size_px = 720;  // square picture side

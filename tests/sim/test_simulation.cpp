@@ -150,7 +150,7 @@ TEST_CASE("property: a failed operation leaves the state byte for byte unchanged
   Rng rng(11);
   const std::vector<std::function<Status(Simulation&)>> bad_ops = {
       [](Simulation& s) { return s.create("A", "A320", 52, 4, 0, 0, 150); },
-      [](Simulation& s) { return s.create("Z", "A320", 52, 4, 0, 0, 0); },
+      [](Simulation& s) { return s.create("Z", "A320", 52, 4, 0, 0, -1); },
       [](Simulation& s) { return s.creconfs("Z", "A320", "A", 90, -1, 100); },
       [](Simulation& s) { return s.creconfs("Z", "A320", "Q", 90, 0, 100); },
       [](Simulation& s) { return s.creconfs("Z", "A320", "A", 90, 0, 100, 1e9); },
@@ -163,7 +163,7 @@ TEST_CASE("property: a failed operation leaves the state byte for byte unchanged
       [](Simulation& s) { return s.set_altitude("A", -5000); },
       [](Simulation& s) { return s.set_altitude("A", 3000, 0.0); },
       [](Simulation& s) { return s.set_vs("A", NAN); },
-      [](Simulation& s) { return s.set_speed("A", 0); },
+      [](Simulation& s) { return s.set_speed("A", -10); },
       [](Simulation& s) { return s.set_bank("A", 95); },
       [](Simulation& s) { return s.set_lnav("A", true); },
       [](Simulation& s) { return s.set_vnav("B", true); },

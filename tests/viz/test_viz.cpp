@@ -38,40 +38,49 @@ TEST_CASE("CSV: header, NaN for non-numbers, ragged lines are errors") {
   CHECK(bad.status().message().find("line 3 has 1 cells") != std::string::npos);
 }
 
-TEST_CASE("episode JSONL round trip and rendering") {
-  viz::Scene s;
-  s.title = "demo";
-  s.wpt_lat = 53.1;
-  s.wpt_lon = 4.0;
-  viz::Frame f0{0, {{"KL001", 52.0, 4.0, 0}, {"I1", 52.5, 4.1, 200}, {"I2", 52.3, 3.8, 90}}, ""};
-  viz::Frame f1{50, {{"KL001", 52.04, 4.0, 10}, {"I1", 52.05, 4.01, 200}, {"I2", 52.3, 3.85, 90}},
-                "KL001, turn right heading 010"};
-  std::string text = viz::to_jsonl_header(s) + viz::to_jsonl_frame(f0, 0, false) +
-                     viz::to_jsonl_frame(f1, 0.5, true);
-  auto back = viz::parse_episode_jsonl(text);
-  REQUIRE(back.is_ok());
-  CHECK(back->frames.size() == 2);
-  CHECK(back->frames[1].aircraft[1].id == "I1");
-  CHECK(back->frames[1].note == "KL001, turn right heading 010");
-  const std::string svg = viz::render_scene(*back);
+namespace {
+// Two interleaved episodes as env::JsonlRecorder writes them.
+const char* kRecording =
+    R"({"event":"reset","episode":0,"rules":"paper","t":0,"waypoint":[53.1,4.0],"own":[52.0,4.0,0,150],"intruders":[[52.5,4.1,200,150],[52.3,3.8,90,150]]})" "\n"
+    R"({"event":"reset","episode":1,"rules":"paper","t":0,"waypoint":[53.0,4.0],"own":[52.0,4.0,0,150],"intruders":[[52.9,4.1,180,150],[52.3,3.9,90,150]]})" "\n"
+    R"({"event":"step","episode":0,"t":50,"agent":true,"action":0.5,"hdg_cmd":10,"reward":0.02,"intrusions":0,"own":[52.04,4.0,10,150],"intruders":[[52.05,4.01,200,150],[52.3,3.85,90,150]],"note":"KL001, turn right heading 010"})" "\n"
+    R"({"event":"step","episode":1,"t":50,"agent":false,"hdg_cmd":0,"reward":0,"intrusions":0,"own":[52.04,4.0,0,150],"intruders":[[52.85,4.1,180,150],[52.3,3.95,90,150]]})" "\n"
+    R"({"event":"end","episode":0,"return":0.02,"success":true,"reached":true,"truncated":false,"steps":1,"decisions":1,"intrusions":0,"t":50})" "\n";
+}  // namespace
+
+TEST_CASE("recorded episodes are read per episode and rendered") {
+  auto first = viz::parse_episode_jsonl(kRecording);
+  REQUIRE(first.is_ok());
+  CHECK(first->frames.size() == 2);
+  CHECK(first->wpt_lat == 53.1);
+  CHECK(first->frames[1].aircraft[0].id == "KL001");
+  CHECK(first->frames[1].aircraft[1].id == "0");
+  CHECK(first->frames[1].note == "KL001, turn right heading 010");
+  auto second = viz::parse_episode_jsonl(kRecording, 1);
+  REQUIRE(second.is_ok());
+  CHECK(second->wpt_lat == 53.0);
+  CHECK(second->frames[1].aircraft[1].lat == 52.85);
+  CHECK(viz::parse_episode_jsonl(kRecording, 7).status().message().find("no episode 7") != std::string::npos);
+
+  const std::string svg = viz::render_scene(*first);
   CHECK(svg.rfind("<?xml", 0) == 0);
   // One separation circle per intruder plus two waypoint circles.
   CHECK(count(svg, "<circle") == 4);
-  // I1 is 0.6 NM from the ownship in the last frame: its circle is red.
+  // Intruder 0 is 0.6 NM from the ownship in the last frame: its circle is red.
   CHECK(count(svg, "stroke=\"#dc143c\"") >= 1);
   CHECK(svg.find(">N</text>") != std::string::npos);
   CHECK(svg.find(" km</text>") != std::string::npos);
   CHECK(svg.find("KL001, turn right heading 010") != std::string::npos);
 }
 
-TEST_CASE("episode JSONL errors name the line") {
-  auto e = viz::parse_episode_jsonl("{\"episode\": {\"waypoint\": {\"lat\": 1, \"lon\": 2}}}\nnot json\n");
+TEST_CASE("recording errors name the line") {
+  auto e = viz::parse_episode_jsonl(std::string(kRecording) + "not json\n");
   REQUIRE(!e.is_ok());
-  CHECK(e.status().message().find("episode line 2") != std::string::npos);
-  e = viz::parse_episode_jsonl("{\"t\": 0, \"aircraft\": [{\"id\": \"A\", \"lat\": 1, \"lon\": 2}]}\n");
-  CHECK(e.status().message().find("header") != std::string::npos);
-  e = viz::parse_episode_jsonl("{\"episode\": {}}\n");
-  CHECK(e.status().message().find("waypoint") != std::string::npos);
+  CHECK(e.status().message().find("episode line 6") != std::string::npos);
+  e = viz::parse_episode_jsonl(R"({"event":"step","episode":0,"t":0,"own":[1,2,3,4],"intruders":[]})" "\n", 0);
+  CHECK(e.status().message().find("before its reset") != std::string::npos);
+  e = viz::parse_episode_jsonl(R"({"event":"reset","episode":0})" "\n");
+  CHECK(e.status().message().find("expected a recorder event") != std::string::npos);
 }
 
 TEST_CASE("panels draw every series") {
