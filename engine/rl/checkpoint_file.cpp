@@ -1,0 +1,76 @@
+#include "rl/checkpoint_file.h"
+
+#include <bit>
+#include <cstring>
+
+#include "core/files.h"
+
+namespace squawk::rl {
+
+static_assert(std::endian::native == std::endian::little, "checkpoints are little-endian float32");
+
+Status write_checkpoint_file(const std::string& path, std::string_view magic,
+                             const nlohmann::json& header,
+                             std::initializer_list<const std::vector<float>*> arrays) {
+  std::string out(magic);
+  out += '\n';
+  out += header.dump();
+  out += '\n';
+  for (const auto* v : arrays)
+    out.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(float));
+  return files::write_atomic(path, out);
+}
+
+Result<CheckpointFile> read_checkpoint_file(const std::string& path, std::string_view magic) {
+  CheckpointFile f;
+  SQUAWK_ASSIGN_OR_RETURN(f.data, files::read(path));
+  const size_t nl1 = f.data.find('\n');
+  if (nl1 == std::string::npos || std::string_view(f.data).substr(0, nl1) != magic)
+    return Status::corruption("checkpoint " + path + ": first line is not '" + std::string(magic) + "'");
+  const size_t nl2 = f.data.find('\n', nl1 + 1);
+  if (nl2 == std::string::npos)
+    return Status::corruption("checkpoint " + path + ": missing the JSON header line");
+  f.header = nlohmann::json::parse(f.data.substr(nl1 + 1, nl2 - nl1 - 1), nullptr, false);
+  if (f.header.is_discarded() || !f.header.is_object())
+    return Status::corruption("checkpoint " + path + ": the header line is not a JSON object");
+  f.tensors = nl2 + 1;
+  return f;
+}
+
+Status CheckpointFile::read_arrays(const std::string& path, const std::string& what,
+                                   std::initializer_list<std::vector<float>*> arrays) const {
+  size_t want = 0;
+  for (const auto* v : arrays) want += v->size() * sizeof(float);
+  const size_t got = data.size() - tensors;
+  if (got != want)
+    return Status::corruption("checkpoint " + path + ": " + std::to_string(got) +
+                              " bytes of tensors, expected " + std::to_string(want) + " (" + what + ")");
+  const char* p = data.data() + tensors;
+  for (auto* v : arrays) {
+    std::memcpy(v->data(), p, v->size() * sizeof(float));
+    p += v->size() * sizeof(float);
+  }
+  return Status::ok();
+}
+
+void put_progress(nlohmann::json& h, const TrainProgress& p) {
+  h["episodes"] = p.episodes;
+  h["updates"] = p.updates;
+  h["seed"] = p.seed;
+  h["estimator"] = p.estimator;
+  h["scenario"] = p.scenario;
+  h["wall_s"] = p.wall_s;
+}
+
+TrainProgress get_progress(const nlohmann::json& h) {
+  TrainProgress p;
+  p.episodes = h.value("episodes", 0LL);
+  p.updates = h.value("updates", 0LL);
+  p.seed = h.value("seed", 0ULL);
+  p.estimator = h.value("estimator", "");
+  p.scenario = h.value("scenario", "");
+  p.wall_s = h.value("wall_s", 0.0);
+  return p;
+}
+
+}  // namespace squawk::rl

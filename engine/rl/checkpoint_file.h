@@ -1,0 +1,44 @@
+// The container every squawk policy checkpoint uses:
+//   line 1: a magic string naming the kind and version ("squawk-checkpoint 1")
+//   line 2: one JSON object (the header: spec, counters, array lengths)
+//   then float32 arrays, little-endian, back to back, in an order and with
+//   lengths the kind's header defines.
+// Writers go through files::write_atomic (temp file + rename).
+#pragma once
+
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/status.h"
+#include "rl/checkpoint.h"
+
+namespace squawk::rl {
+
+// Magic line, header line and the arrays, written atomically to `path`.
+Status write_checkpoint_file(const std::string& path, std::string_view magic,
+                             const nlohmann::json& header,
+                             std::initializer_list<const std::vector<float>*> arrays);
+
+struct CheckpointFile {
+  nlohmann::json header;
+  std::string data;      // the whole file
+  size_t tensors = 0;    // offset of the first array in data
+
+  // Fills `arrays` (each already sized) from the tensor section; error, naming
+  // `path` and `what` the sizes mean, unless the section has exactly that many bytes.
+  Status read_arrays(const std::string& path, const std::string& what,
+                     std::initializer_list<std::vector<float>*> arrays) const;
+};
+
+// Reads `path`, checks the magic line and parses the header line.
+Result<CheckpointFile> read_checkpoint_file(const std::string& path, std::string_view magic);
+
+// The training counters every checkpoint kind carries in its header.
+void put_progress(nlohmann::json& header, const TrainProgress& p);
+TrainProgress get_progress(const nlohmann::json& header);
+
+}  // namespace squawk::rl
