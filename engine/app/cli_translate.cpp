@@ -68,10 +68,12 @@ int cmd_translate(const ArgV& argv) {
   } else {
     std::printf("%s\n", tr.text().c_str());
   }
-  // With traffic given, the commands must parse against it; say so when not.
+  // With traffic given, the commands must run, in order, on a scratch copy of
+  // it (a later command may need an earlier one: ADDWPT before DIRECT).
   const bool have_traffic = args->has("--scenario") || args->has("--setup");
+  command::Stack scratch = stack;
   for (const auto& cmd : have_traffic ? tr.commands : std::vector<std::string>{}) {
-    Status st = stack.check(cmd);
+    Status st = scratch.exec(cmd).status();
     if (!st.is_ok()) {
       std::fprintf(stderr, "squawk translate: produced command does not validate: %s\n", st.message().c_str());
       return kExitFail;

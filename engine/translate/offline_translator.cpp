@@ -258,6 +258,14 @@ class Parser {
     if ((w == "what" || w == "how") && near(4, {"altitude", "speed", "heading", "position", "level"}))
       return Intent::kPos;  // "What is the altitude of KLM123?"
     if (w == "unpause") return Intent::kOp;
+    // "resume own navigation", "resume navigation", "back on your own navigation"
+    if ((w == "resume" && near(3, {"navigation", "nav", "route"})) || (w == "own" && word(i + 1, {"navigation"})))
+      return Intent::kLnav;
+    // "run the simulation for ten minutes" is fast-time for a while; without a duration it is OP.
+    if ((w == "run" || w == "advance") && sim_word_near(i) && !near(7, {"real", "times", "faster", "x"}))
+      return near(7, {"for", "minutes", "minute", "seconds", "second", "hours", "hour", "min", "sec"})
+                 ? Intent::kFf
+                 : Intent::kOp;
     if ((w == "continue" || w == "resume") && (i + 1 >= n || t_[i + 1].kind == TokKind::kPunct || sim_word_near(i) ||
                             word(i + 1, {"running", "and"})))
       return Intent::kOp;
@@ -1042,6 +1050,12 @@ class Parser {
     if (!wp) wp = single_route_waypoint(*id);
     if (!wp) wp = spoken_name(s.trig + 1, s.end);
     if (!wp) return need("Direct to which waypoint should " + *id + " fly?");
+    // DIRECT needs the waypoint in the route: a known aircraft whose route
+    // lacks it gets it added first.
+    for (const auto& a : fleet_)
+      if (text::iequals(a.id, *id) &&
+          std::none_of(a.route.begin(), a.route.end(), [&](const std::string& r) { return text::iequals(r, *wp); }))
+        out_.push_back("ADDWPT " + *id + " " + *wp);
     out_.push_back("DIRECT " + *id + " " + *wp);
     // a level said in the same breath without its verb ("direct LIVVN ... six thousand")
     for (const auto& q : quantities(s))

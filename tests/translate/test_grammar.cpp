@@ -160,3 +160,19 @@ TEST_CASE("bad input never crashes and gets a question") {
     CHECK((t.asked() || !t.commands.empty()));
   }
 }
+
+TEST_CASE("navigation and simulation phrases: own navigation, direct to a new fix, run for a time") {
+  StaticWorld w;
+  AircraftView a = plane("KLM123", 90, 25000, 280);
+  a.route = {"SPY"};
+  w.add_aircraft(a);
+  w.add_waypoint("SUGOL");
+  w.add_waypoint("SPY");
+  CHECK(tr("KLM123 resume own navigation", &w) == "LNAV KLM123 ON");
+  // DIRECT needs the fix in the route: one the route lacks is added first.
+  CHECK(tr("KLM123 fly direct SUGOL", &w) == "ADDWPT KLM123 SUGOL ; DIRECT KLM123 SUGOL");
+  CHECK(tr("KLM123 proceed direct SPY", &w) == "DIRECT KLM123 SPY");
+  CHECK(tr("Run the simulation for ten minutes") == "FF 600");
+  CHECK(tr("Run the sim") == "OP");
+  CHECK(tr("Run the simulation at 5x real time") == "DTMULT 5");
+}
