@@ -30,15 +30,6 @@ Result<int> int_field(const json& j, const char* key, bool required, int fallbac
   return static_cast<int>(it->get<long long>());
 }
 
-std::string shape_str(const std::vector<int64_t>& s) {
-  std::string r = "[";
-  for (size_t i = 0; i < s.size(); ++i) {
-    if (i) r.append(", ");
-    r.append(std::to_string(s[i]));
-  }
-  return r.append("]");
-}
-
 bool is_ignored_buffer(const std::string& name) {
   static const std::regex mask(R"(h\.\d+\.attn\.(bias|masked_bias))");
   return std::regex_match(name, mask);

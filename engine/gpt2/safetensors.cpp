@@ -23,14 +23,6 @@ size_t dtype_size(const std::string& d) {
   return it == sizes.end() ? 0 : it->second;
 }
 
-std::string shape_str(const std::vector<int64_t>& s) {
-  std::string r = "[";
-  for (size_t i = 0; i < s.size(); ++i) {
-    if (i) r.append(", ");
-    r.append(std::to_string(s[i]));
-  }
-  return r.append("]");
-}
 
 // Byte counts saturate here instead of overflowing.
 constexpr size_t kSaturated = size_t{1} << 62;
@@ -214,6 +206,15 @@ Status write_safetensors(const std::string& path, const std::vector<TensorRef>& 
                          const std::map<std::string, std::string>& metadata) {
   SQUAWK_ASSIGN_OR_RETURN(std::string bytes, serialize_safetensors(tensors, metadata));
   return files::write_atomic(path, bytes);
+}
+
+std::string shape_str(const std::vector<int64_t>& s) {
+  std::string r = "[";
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (i) r.append(", ");
+    r.append(std::to_string(s[i]));
+  }
+  return r.append("]");
 }
 
 }  // namespace squawk::gpt2

@@ -66,6 +66,9 @@ Status write_safetensors(const std::string& path, const std::vector<TensorRef>& 
                          const std::map<std::string, std::string>& metadata = {});
 
 // IEEE half and bfloat16 bit patterns to float (exact).
+// "[2, 3]": a shape as error messages print it.
+std::string shape_str(const std::vector<int64_t>& shape);
+
 float f16_to_f32(uint16_t h);
 float bf16_to_f32(uint16_t b);
 

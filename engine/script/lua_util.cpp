@@ -10,6 +10,16 @@ std::string type_error(lua_State* L, int idx, const char* name, const char* expe
          expected + ", got " + luaL_typename(L, idx);
 }
 
+int traceback_handler(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  if (!msg) {
+    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
+    msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  }
+  luaL_traceback(L, L, msg, 1);
+  return 1;
+}
+
 double arg_number(lua_State* L, int idx, const char* name) {
   int ok = 0;
   double v = lua_tonumberx(L, idx, &ok);

@@ -49,6 +49,10 @@ int guarded(lua_State* L) {
 
 std::string type_error(lua_State* L, int idx, const char* name, const char* expected);
 
+// Message handler for lua_pcall: the error message plus a traceback (a
+// non-string error object is described by its __tostring or its type).
+int traceback_handler(lua_State* L);
+
 double arg_number(lua_State* L, int idx, const char* name);
 double opt_number(lua_State* L, int idx, const char* name, double fallback);
 long long arg_integer(lua_State* L, int idx, const char* name);

@@ -3,16 +3,11 @@
 #include <lua.hpp>
 
 #include "core/files.h"
+#include "script/lua_util.h"
 
 namespace squawk::script {
 
 namespace {
-
-int traceback_handler(lua_State* L) {
-  const char* msg = lua_tostring(L, 1);
-  luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
-  return 1;
-}
 
 void push_array(lua_State* L, const std::vector<double>& v) {
   lua_createtable(L, static_cast<int>(v.size()), 0);

@@ -11,12 +11,6 @@ namespace squawk::script {
 
 namespace {
 
-int traceback_handler(lua_State* L) {
-  const char* msg = lua_tostring(L, 1);
-  luaL_traceback(L, L, msg ? msg : "(error without message)", 1);
-  return 1;
-}
-
 // Throws ArgError naming the first key of the table at idx not in `known`.
 void check_keys(lua_State* L, int idx, const char* table, const std::set<std::string>& known) {
   idx = lua_absindex(L, idx);

@@ -114,16 +114,6 @@ int lua_file_searcher(lua_State* L) {
   return 1;
 }
 
-int message_handler(lua_State* L) {
-  const char* msg = lua_tostring(L, 1);
-  if (!msg) {
-    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
-    msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
-  }
-  luaL_traceback(L, L, msg, 1);
-  return 1;
-}
-
 }  // namespace
 
 void count_hook(lua_State* L, lua_Debug* ar) {
@@ -229,7 +219,7 @@ void Vm::open_sandbox() {
 Status Vm::call_protected(int nargs) {
   lua_State* L = L_;
   const int base = lua_gettop(L) - nargs;
-  lua_pushcfunction(L, message_handler);
+  lua_pushcfunction(L, traceback_handler);
   lua_insert(L, base);
   const int rc = lua_pcall(L, nargs, 0, base);
   lua_remove(L, base);
@@ -255,7 +245,7 @@ Status Vm::load_table(const std::string& path, const std::string& key) {
     lua_pop(L, 1);
     return Status::invalid(msg);
   }
-  lua_pushcfunction(L, message_handler);
+  lua_pushcfunction(L, traceback_handler);
   lua_insert(L, -2);
   const int rc = lua_pcall(L, 0, 1, -2);
   if (rc != LUA_OK) {
