@@ -41,6 +41,17 @@ elapsed=$(( $(date +%s) - start ))
 if [ "$elapsed" -gt 5 ]; then echo "FAIL runaway took ${elapsed}s (want <= 5 s)"; fails=$((fails + 1)); fi
 expect "test totals"     1 "^1 passed, 1 failed$" -- "$sq" test "$d/pass_fail"
 expect "test location"   1 "fail.lua:1: check failed: got 4, want 5 \(arithmetic\)" -- "$sq" test "$d/pass_fail"
+tmp=$(mktemp -d)
+expect "demo"            0 "translator HDG KL001" -- "$sq" demo --record "$tmp/ep.jsonl" --svg "$tmp/ep.svg"
+expect "demo summary"    0 "waypoint reached +yes" -- "$sq" demo --quiet
+expect "demo gpt2"       0 "advisories the translator could not turn into a command: 0" -- "$sq" demo --policy gpt2 --quiet
+expect "demo bad policy" 2 "expected mlp or gpt2" -- "$sq" demo --policy nope
+expect "render"          0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --out "$tmp/r.svg"
+grep -q "<circle" "$tmp/r.svg" && grep -q "<circle" "$tmp/ep.svg" && { echo "ok   svg has circles"; pass=$((pass + 1)); } || { echo "FAIL svg"; fails=$((fails + 1)); }
+printf 'episodes,eval_success_rate,eval_mean_reward\n1000,0.5,-1\n2000,0.8,-0.5\n' > "$tmp/log.csv"
+expect "plot"            0 "wrote" -- "$sq" plot "$tmp"
+expect "render bad file" 1 "episode line 1" -- "$sq" render "$tmp/log.csv" --out "$tmp/x.svg"
+rm -rf "$tmp"
 a=$("$sq" run "$d/random.lua" --seed 11)
 b=$("$sq" run "$d/random.lua" --seed 11)
 c=$("$sq" run "$d/random.lua" --seed 12)

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "app/cli.h"
+#include "app/gpt2_policy_factory.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
 #include "command/stack.h"
@@ -29,6 +30,7 @@
 #include "env/horizontal_cr.h"
 #include "env/recorder.h"
 #include "rl/checkpoint.h"
+#include "rl/prompt_checkpoint.h"
 #include "script/advisory.h"
 #include "script/scenario.h"
 #include "translate/offline_translator.h"
@@ -154,8 +156,8 @@ int cmd_demo(const ArgV& argv) {
   auto vmo = vm_options(*args);
   if (!vmo) return usage_error("demo", vmo.status().message());
   const std::string policy_kind = args->get_or("--policy", "mlp");
-  if (policy_kind != "mlp")
-    return usage_error("demo", "--policy '" + policy_kind + "': expected mlp");
+  if (policy_kind != "mlp" && policy_kind != "gpt2")
+    return usage_error("demo", "--policy '" + policy_kind + "': expected mlp or gpt2");
   const bool quiet = args->has("--quiet");
   const auto wall0 = std::chrono::steady_clock::now();
 
@@ -166,14 +168,24 @@ int cmd_demo(const ArgV& argv) {
   env::HorizontalCrEnv& e = made.value();
   const auto& cfg = e.config();
 
-  const std::string ckpt_path = args->get_or("--checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt"));
-  auto ckpt = rl::load_checkpoint(ckpt_path);
-  if (!ckpt)
-    return failure(ckpt.status().with_context(
-        "the demo needs a trained policy (train one with `squawk train scenarios/horizontal_cr.lua "
-        "--policy mlp --out DIR`, then pass --checkpoint DIR/checkpoint.ckpt)"));
-  auto policy = rl::policy_from_checkpoint(*ckpt);
-  if (!policy) return failure(policy.status());
+  // The agent: the shipped trained MLP, or the fine-tuned GPT-2 prompt policy.
+  std::unique_ptr<rl::Policy> policy;
+  const char* hint =
+      "the demo needs a trained policy (train one with `squawk train scenarios/horizontal_cr.lua "
+      "--policy mlp|gpt2 --out DIR`, then pass --checkpoint DIR/policy.ckpt)";
+  if (policy_kind == "mlp") {
+    auto ckpt = rl::load_checkpoint(args->get_or("--checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt")));
+    if (!ckpt) return failure(ckpt.status().with_context(hint));
+    auto p = rl::policy_from_checkpoint(*ckpt);
+    if (!p) return failure(p.status());
+    policy = std::move(*p);
+  } else {
+    auto ckpt = rl::load_prompt_checkpoint(args->get_or("--checkpoint", paths::resource(kShippedGpt2Checkpoint)));
+    if (!ckpt) return failure(ckpt.status().with_context(hint));
+    auto g = gpt2_policy_from_checkpoint(*ckpt, "", *vmo);
+    if (!g) return failure(g.status());
+    policy = std::move(g->policy);
+  }
   auto phraser = script::AdvisoryPhraser::load(args->get_or("--advisory", paths::resource("prompts/advisory.lua")), *vmo);
   if (!phraser) return failure(phraser.status());
 
@@ -237,7 +249,7 @@ int cmd_demo(const ArgV& argv) {
     e.observe_flat(obs);
     rl::ActionSample a;
     const int slot = 0;
-    (*policy)->act(obs, 1, {&slot, 1}, rng, /*greedy=*/true, {&a, 1});
+    policy->act(obs, 1, {&slot, 1}, rng, /*greedy=*/true, {&a, 1});
     const double hdg_now = e.fleet().hdg(0);
     int target = static_cast<int>(std::lround(geo::wrap360(hdg_now + a.value * cfg.heading_per_action)));
     if (target <= 0) target += 360;

@@ -7,11 +7,12 @@ namespace squawk::app {
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
       {"demo", "demo                      the team loop: agent -> English -> translator -> simulator",
-       "usage: squawk demo [--policy mlp] [--checkpoint FILE] [--seed N] [--record FILE.jsonl]\n"
+       "usage: squawk demo [--policy mlp|gpt2] [--checkpoint FILE] [--seed N] [--record FILE.jsonl]\n"
        "                   [--svg FILE.svg] [--scenario FILE.lua] [--advisory FILE.lua] [--quiet]\n\n"
        "Runs one conflict episode of the paper's HorizontalCR evaluation setup\n"
        "(scenarios/horizontal_cr.lua) as a team: the deconfliction agent (the shipped\n"
-       "trained MLP) decides on the environment's observation; prompts/advisory.lua\n"
+       "trained MLP, or with --policy gpt2 the shipped fine-tuned tiny GPT-2 prompt\n"
+       "policy) decides on the environment's observation; prompts/advisory.lua\n"
        "says the decision in controller English (\"KL001, turn right heading 045\");\n"
        "the offline translator turns that into TrafScript; the simulator's command\n"
        "stack executes it and flies the traffic, with conflict detection on. Steps\n"
