@@ -50,6 +50,7 @@ expect "render"          0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --out "$tmp/r
 grep -q "<circle" "$tmp/r.svg" && grep -q "<circle" "$tmp/ep.svg" && { echo "ok   svg has circles"; pass=$((pass + 1)); } || { echo "FAIL svg"; fails=$((fails + 1)); }
 printf 'episodes,eval_success_rate,eval_mean_reward\n1000,0.5,-1\n2000,0.8,-0.5\n' > "$tmp/log.csv"
 expect "plot"            0 "wrote" -- "$sq" plot "$tmp"
+expect "render scenario" 0 "wrote" -- "$sq" render scenarios/horizontal_cr.lua --seed 4 --out "$tmp/s.svg"
 expect "render bad file" 1 "episode line 1" -- "$sq" render "$tmp/log.csv" --out "$tmp/x.svg"
 rm -rf "$tmp"
 a=$("$sq" run "$d/random.lua" --seed 11)

@@ -2,12 +2,16 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <vector>
 
 #include "app/cli.h"
 #include "app/subcommands.h"
 #include "core/files.h"
 #include "core/text.h"
+#include "env/horizontal_cr.h"
+#include "env/recorder.h"
+#include "script/scenario.h"
 #include "viz/chart.h"
 #include "viz/csv.h"
 #include "viz/scene.h"
@@ -38,10 +42,26 @@ int find_column(const viz::Table& t, std::initializer_list<const char*> names) {
 
 }  // namespace
 
+// The recording of a scenario's first evaluation episode, as drawn at reset.
+Result<std::string> scenario_start(const std::string& path, const script::VmOptions& vmo) {
+  SQUAWK_ASSIGN_OR_RETURN(script::Scenario sc, script::load_scenario(path, vmo));
+  SQUAWK_ASSIGN_OR_RETURN(env::HorizontalCrEnv e, env::HorizontalCrEnv::make(sc.eval_env));
+  std::ostringstream out;
+  env::JsonlRecorder rec(out);
+  Rng rng(vmo.seed);
+  SQUAWK_RETURN_IF_ERROR(e.reset_to(e.draw_setup(rng)).status());
+  rec.on_reset(e);
+  return out.str();
+}
+
 int cmd_render(const ArgV& argv) {
-  auto args = Args::parse(argv, {{"--out", "--frame", "--size", "--episode"}, {}});
+  auto args = Args::parse(argv, {{"--out", "--frame", "--size", "--episode", "--seed"}, {}});
   if (!args) return usage_error("render", args.status().message());
-  if (args->positional().size() != 1) return usage_error("render", "expected one EPISODE.jsonl");
+  if (args->positional().size() != 1) return usage_error("render", "expected one EPISODE.jsonl or SCENARIO.lua");
+  auto seed = args->get_int("--seed", 0);
+  if (!seed || *seed < 0) return usage_error("render", "--seed expects a non-negative integer");
+  script::VmOptions vmo;
+  vmo.seed = static_cast<uint64_t>(*seed);
   const std::string in = args->positional()[0];
   auto frame = args->get_int("--frame", -1);
   auto episode = args->get_int("--episode", -1);
@@ -50,7 +70,7 @@ int cmd_render(const ArgV& argv) {
   if (!frame) return usage_error("render", frame.status().message());
   if (!size || *size < 100 || *size > 8000)
     return usage_error("render", "--size expects pixels between 100 and 8000");
-  auto text = files::read(in);
+  auto text = fs::path(in).extension() == ".lua" ? scenario_start(in, vmo) : files::read(in);
   if (!text) return failure(text.status());
   auto scene = viz::parse_episode_jsonl(*text, *episode);
   if (!scene) return failure(scene.status().with_context(in));

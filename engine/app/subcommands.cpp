@@ -77,9 +77,11 @@ const std::vector<Subcommand>& subcommands() {
        "  init        write a random GPT-2 folder (GPT-2's initialisation; default the\n"
        "              tiny shape) over the vocabulary of --vocab DIR or the bytes\n",
        cmd_gpt2},
-      {"render", "render EPISODE.jsonl      draw a recorded episode as SVG (Fig. 2 style)",
+      {"render", "render EPISODE.jsonl|SCENARIO.lua   draw an episode as SVG (Fig. 2 style)",
        "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"
-       "                     [--out FILE.svg|-]\n\n"
+       "                     [--out FILE.svg|-]\n"
+       "       squawk render SCENARIO.lua [--seed N] [--out FILE.svg|-]\n\n"
+       "With a scenario file, draws the start of its evaluation episode for the seed.\n"
        "Draws a recorded episode top-down, north up: the ownship's and intruders'\n"
        "tracks, each intruder's separation circle (red while the ownship is inside),\n"
        "the waypoint with its capture circle, a scale bar and a north arrow.\n"
