@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gpt2_policy_factory.h"
+#include "app/rl_eval.h"
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/paths.h"
@@ -205,7 +206,8 @@ int cmd_train_gpt2(const ArgV& argv) {
 }
 
 int cmd_eval_gpt2(const ArgV& argv) {
-  auto args = Args::parse(argv, with_policy_flags({"--checkpoint", "--episodes", "--envs"}, {"--json", "--greedy"}));
+  auto args = Args::parse(argv, with_policy_flags({"--checkpoint", "--episodes", "--envs", "--record"},
+                                                  {"--json", "--greedy"}));
   if (!args) return usage_error("eval", args.status().message());
   auto popts = gpt2_options(*args);
   if (!popts) return usage_error("eval", popts.status().message());
@@ -213,12 +215,8 @@ int cmd_eval_gpt2(const ArgV& argv) {
     return usage_error("eval", "--checkpoint and --model exclude each other (a checkpoint names its model)");
   auto sc = scenario_of(*args);
   if (!sc) return failure(sc.status());
-  auto episodes = args->get_int("--episodes", sc->eval_episodes);
-  auto seed = args->get_int("--seed", static_cast<long long>(sc->eval_seed));
-  auto envs_n = args->get_int("--envs", 64);
-  for (const Status& st : {episodes.status(), seed.status(), envs_n.status()})
-    if (!st.is_ok()) return usage_error("eval", st.message());
-  if (*episodes < 1 || *envs_n < 1) return usage_error("eval", "--episodes and --envs must be >= 1");
+  auto req = eval_request(*args, *sc);
+  if (!req) return usage_error("eval", req.status().message());
   auto vo = vm_options(*args);
   if (!vo) return usage_error("eval", vo.status().message());
   vo->out_dir.clear();
@@ -238,33 +236,10 @@ int cmd_eval_gpt2(const ArgV& argv) {
   if (!g) return failure(g.status());
   rl::PromptPolicy& policy = *g->policy;
   if (args->has("--chunk")) policy.set_chunk_rows(popts->spec.chunk_rows);
-  auto envs = env::VecEnv::make(sc->eval_env, static_cast<int>(*envs_n));
+  auto envs = env::VecEnv::make(sc->eval_env, req->envs);
   if (!envs) return failure(envs.status());
-  if (policy.obs_size() != envs->obs_size())
-    return failure(Status::invalid("policy expects " + std::to_string(policy.obs_size()) +
-                                   " observation values, the scenario gives " + std::to_string(envs->obs_size())));
-  auto res = rl::evaluate(policy, *envs, {*episodes, static_cast<uint64_t>(*seed), args->has("--greedy")});
-  if (!res) return failure(res.status());
-  if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
-  if (Status rs = sc->reward_error(); !rs.is_ok()) return failure(rs);
-  if (args->has("--json")) {
-    nlohmann::json j = {{"success_rate", res->success_rate},
-                        {"mean_reward", res->mean_reward},
-                        {"std_reward", res->std_reward},
-                        {"episodes", res->episodes}};
-    std::printf("%s\n", j.dump().c_str());
-    return kExitOk;
-  }
-  const double decisions = res->mean_decisions * static_cast<double>(res->episodes);
-  std::printf("scenario  %s\npolicy    gpt2 (%s; %s, head %s)\n", sc->path.c_str(), source.c_str(),
-              g->meta.source.c_str(), g->meta.spec.head.c_str());
-  std::printf("episodes  %lld, seed %lld, %s actions\n", res->episodes, *seed,
-              args->has("--greedy") ? "greedy" : "sampled");
-  std::printf("\n  %-10s %-22s %-20s\n", "success", "mean episode reward", "std of episode reward");
-  std::printf("  %6.1f %%   %-22.3f %-20.3f\n\n", 100.0 * res->success_rate, res->mean_reward, res->std_reward);
-  std::printf("%.1f decisions per episode, %.2f s, %.1f decisions/s\n", res->mean_decisions, res->wall_s,
-              res->wall_s > 0 ? decisions / res->wall_s : 0.0);
-  return kExitOk;
+  return run_eval(policy, *envs, *sc, *req,
+                  "gpt2 (" + source + "; " + g->meta.source + ", head " + g->meta.spec.head + ")");
 }
 
 }  // namespace squawk::app

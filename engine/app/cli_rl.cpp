@@ -11,6 +11,7 @@
 
 #include "app/cli.h"
 #include "app/gpt2_policy_factory.h"
+#include "app/rl_eval.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
 #include "core/files.h"
@@ -275,6 +276,67 @@ int cmd_train(const ArgV& argv) {
   return kExitOk;
 }
 
+Result<EvalRequest> eval_request(const Args& args, const script::Scenario& sc) {
+  EvalRequest r;
+  auto episodes = args.get_int("--episodes", sc.eval_episodes);
+  auto seed = args.get_int("--seed", static_cast<long long>(sc.eval_seed));
+  auto envs_n = args.get_int("--envs", r.envs);
+  for (const Status& st : {episodes.status(), seed.status(), envs_n.status()})
+    if (!st.is_ok()) return st;
+  if (*episodes < 1 || *envs_n < 1) return Status::invalid("--episodes and --envs must be >= 1");
+  r.episodes = *episodes;
+  r.seed = *seed;
+  r.envs = static_cast<int>(*envs_n);
+  r.greedy = args.has("--greedy");
+  r.json = args.has("--json");
+  r.record = args.get_or("--record", "");
+  return r;
+}
+
+int run_eval(rl::Policy& policy, env::VecEnv& envs, const script::Scenario& sc, const EvalRequest& req,
+             const std::string& label) {
+  if (policy.obs_size() != envs.obs_size())
+    return failure(Status::invalid("policy expects " + std::to_string(policy.obs_size()) +
+                                   " observation values, the scenario gives " +
+                                   std::to_string(envs.obs_size())));
+  std::ofstream rec_file;
+  std::unique_ptr<env::JsonlRecorder> recorder;
+  if (!req.record.empty()) {
+    rec_file.open(req.record, std::ios::trunc);
+    if (!rec_file) return failure(Status::io_error("cannot write " + req.record));
+    recorder = std::make_unique<env::JsonlRecorder>(rec_file);
+    for (int s = 0; s < envs.size(); ++s) envs.env(s).set_observer(recorder.get());
+  }
+  ProgressBar bar("eval", req.episodes, !req.json);
+  auto res = rl::evaluate(policy, envs, {req.episodes, static_cast<uint64_t>(req.seed), req.greedy},
+                          [&](long long done, long long) { bar.update(done); });
+  bar.finish();
+  if (!res) return failure(res.status());
+  if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
+  if (Status rs = sc.reward_error(); !rs.is_ok()) return failure(rs);
+  if (req.json) {
+    nlohmann::json j = {{"success_rate", res->success_rate},
+                        {"mean_reward", res->mean_reward},
+                        {"std_reward", res->std_reward},
+                        {"episodes", res->episodes}};
+    std::printf("%s\n", j.dump().c_str());
+    return kExitOk;
+  }
+  const double decisions = res->mean_decisions * static_cast<double>(res->episodes);
+  std::printf("scenario  %s (%s rules)\n", sc.path.c_str(),
+              sc.eval_env.rules == env::Rules::kGym ? "gym" : "paper");
+  std::printf("policy    %s\n", label.c_str());
+  std::printf("episodes  %lld, seed %lld, %s actions\n", res->episodes, req.seed,
+              req.greedy ? "greedy" : "sampled");
+  std::printf("\n  %-10s %-22s %-20s\n", "success", "mean episode reward", "std of episode reward");
+  std::printf("  %6.1f %%   %-22.3f %-20.3f\n\n", 100.0 * res->success_rate, res->mean_reward, res->std_reward);
+  std::printf("waypoint reached %.1f %%, %.1f agent decisions and %.1f env steps per episode, %.2f s, "
+              "%.0f decisions/s\n",
+              100.0 * res->reached_rate, res->mean_decisions, res->mean_steps, res->wall_s,
+              res->wall_s > 0 ? decisions / res->wall_s : 0.0);
+  return kExitOk;
+}
+
 int cmd_eval(const ArgV& argv) {
   if (wants_gpt2(argv)) return cmd_eval_gpt2(argv);
   Args::Spec spec = with_vm_flags({{"--policy", "--checkpoint", "--episodes", "--envs", "--record"},
@@ -283,34 +345,30 @@ int cmd_eval(const ArgV& argv) {
   if (!args) return usage_error("eval", args.status().message());
   const std::string kind = args->get_or("--policy", "mlp");
   if (kind != "random" && kind != "zero" && kind != "mvp" && kind != "mlp")
-    return usage_error("eval", "--policy '" + kind + "': expected random, zero, mvp or mlp");
+    return usage_error("eval", "--policy '" + kind + "': expected random, zero, mvp, mlp or gpt2");
   if (args->has("--checkpoint") && kind != "mlp")
     return usage_error("eval", "--checkpoint goes with --policy mlp");
   if (args->positional().size() != 1)
     return usage_error("eval", "expected exactly one SCENARIO.lua");
   auto sc = scenario_from(*args, "eval");
   if (!sc) return failure(sc.status());
-  auto episodes = args->get_int("--episodes", sc->eval_episodes);
-  auto seed = args->get_int("--seed", static_cast<long long>(sc->eval_seed));
-  auto envs_n = args->get_int("--envs", 64);
-  for (const Status& st : {episodes.status(), seed.status(), envs_n.status()})
-    if (!st.is_ok()) return usage_error("eval", st.message());
-  if (*episodes < 1 || *envs_n < 1) return usage_error("eval", "--episodes and --envs must be >= 1");
+  auto req = eval_request(*args, *sc);
+  if (!req) return usage_error("eval", req.status().message());
 
-  auto envs = env::VecEnv::make(sc->eval_env, static_cast<int>(*envs_n));
+  auto envs = env::VecEnv::make(sc->eval_env, req->envs);
   if (!envs) return failure(envs.status());
   std::unique_ptr<rl::Policy> policy;
-  std::string source;
+  std::string label = kind;
   if (kind == "zero") {
     policy = std::make_unique<rl::ZeroPolicy>(envs->obs_size());
   } else if (kind == "mvp") {
     policy = std::make_unique<rl::MvpPolicy>(*envs);
   } else if (kind == "random") {
-    Rng init(static_cast<uint64_t>(*seed));
+    Rng init(static_cast<uint64_t>(req->seed));
     auto p = rl::MlpPolicy::make(sc->policy, init);
     if (!p) return failure(p.status());
     policy = std::move(*p);
-    source = "untrained, initialised from the seed";
+    label += " (untrained, initialised from the seed)";
   } else {
     const std::string path = args->get_or("--checkpoint", paths::resource(kShippedCheckpoint));
     auto c = rl::load_checkpoint(path);
@@ -318,46 +376,9 @@ int cmd_eval(const ArgV& argv) {
     auto p = rl::policy_from_checkpoint(*c);
     if (!p) return failure(p.status());
     policy = std::move(*p);
-    source = path;
+    label += " (" + path + ")";
   }
-  if (policy->obs_size() != envs->obs_size())
-    return failure(Status::invalid("policy expects " + std::to_string(policy->obs_size()) +
-                                   " observation values, the scenario gives " +
-                                   std::to_string(envs->obs_size())));
-  std::ofstream rec_file;
-  std::unique_ptr<env::JsonlRecorder> recorder;
-  if (auto rec = args->get("--record")) {
-    rec_file.open(*rec, std::ios::trunc);
-    if (!rec_file) return failure(Status::io_error("cannot write " + *rec));
-    recorder = std::make_unique<env::JsonlRecorder>(rec_file);
-    for (int s = 0; s < envs->size(); ++s) envs->env(s).set_observer(recorder.get());
-  }
-  const bool json = args->has("--json");
-  ProgressBar bar("eval", *episodes, !json);
-  auto res = rl::evaluate(*policy, *envs, {*episodes, static_cast<uint64_t>(*seed), args->has("--greedy")},
-                          [&](long long done, long long) { bar.update(done); });
-  bar.finish();
-  if (!res) return failure(res.status());
-  if (Status rs = sc->reward_error(); !rs.is_ok()) return failure(rs);
-  if (json) {
-    nlohmann::json j = {{"success_rate", res->success_rate},
-                        {"mean_reward", res->mean_reward},
-                        {"std_reward", res->std_reward},
-                        {"episodes", res->episodes}};
-    std::printf("%s\n", j.dump().c_str());
-    return kExitOk;
-  }
-  std::printf("scenario  %s (%s rules)\n", sc->path.c_str(),
-              sc->eval_env.rules == env::Rules::kGym ? "gym" : "paper");
-  std::printf("policy    %s%s%s%s\n", kind.c_str(), source.empty() ? "" : " (", source.c_str(),
-              source.empty() ? "" : ")");
-  std::printf("episodes  %lld, seed %lld, %s actions\n", res->episodes, *seed,
-              args->has("--greedy") ? "greedy" : "sampled");
-  std::printf("\n  %-10s %-22s %-20s\n", "success", "mean episode reward", "std of episode reward");
-  std::printf("  %6.1f %%   %-22.3f %-20.3f\n\n", 100.0 * res->success_rate, res->mean_reward, res->std_reward);
-  std::printf("waypoint reached %.1f %%, %.1f agent decisions and %.1f env steps per episode, %.2f s\n",
-              100.0 * res->reached_rate, res->mean_decisions, res->mean_steps, res->wall_s);
-  return kExitOk;
+  return run_eval(*policy, *envs, *sc, *req, label);
 }
 
 }  // namespace squawk::app

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "core/rng.h"
+#include "core/status.h"
 
 namespace squawk::rl {
 
@@ -33,6 +34,10 @@ class Policy {
   // instead of a sample.
   virtual void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng,
                    bool greedy, std::span<ActionSample> out) = 0;
+
+  // A policy whose decisions can fail (a Lua prompt template) keeps the first
+  // failure here; callers check it after a run.
+  virtual Status error() const { return Status::ok(); }
 
   virtual bool trainable() const { return false; }
   virtual std::span<float> params() { return {}; }

@@ -89,7 +89,7 @@ class PromptPolicy : public Policy {
   void invalidate_cache() { cache_valid_ = false; }
   // Rows per batched forward (>= 1); the results do not depend on it.
   void set_chunk_rows(int rows) { spec_.chunk_rows = rows < 1 ? 1 : rows; }
-  Status error() const { return error_; }
+  Status error() const override { return error_; }
   const PromptPolicySpec& spec() const { return spec_; }
   gpt2::Model& model() { return model_; }
   const gpt2::Tokenizer& tokenizer() const { return tokenizer_; }
