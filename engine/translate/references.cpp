@@ -196,6 +196,22 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       if (id_like) add(RefKind::kAircraft, raw, i, i + 1, false, false);
     }
   }
+  // The spoken callsign `id` as it exists in the world: the aircraft of that
+  // id, else the best match by sound and digits, whose matched digits then end
+  // the reference at `end`. False when nothing in the world fits.
+  auto resolve = [&](std::string& id, const std::string& icao, const std::string& spoken, const Suffix& suf,
+                     size_t& end) {
+    if (const AircraftView* a = world_id(id)) {
+      id = a->id;
+      return true;
+    }
+    if (fleet.empty()) return false;
+    CallsignMatch m = match_world(icao, spoken, suf, fleet);
+    if ((m.score < 0.45 && fleet.size() != 1) || m.groups == 0) return false;
+    id = m.id;
+    end = suf.ends[m.groups - 1];
+    return true;
+  };
   // Telephony designator + digits/letters.
   auto single_letter = [&](size_t k) {
     return k < t.size() && !used[k] && is_word(t[k]) && t[k].text.size() == 1 && std::isalpha(static_cast<unsigned char>(t[k].text[0]));
@@ -212,17 +228,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       if (!suf.groups.empty() && std::isdigit(static_cast<unsigned char>(suf.groups[0][0]))) {
         std::string id = text::upper(prefix) + text::upper(suf.joined(suf.groups.size()));
         size_t end = suf.ends.back();
-        bool exists = world_id(id) != nullptr;
-        if (exists) {
-          id = world_id(id)->id;
-        } else if (!fleet.empty()) {
-          CallsignMatch m = match_world("", prefix, suf, fleet);
-          if ((m.score >= 0.45 || fleet.size() == 1) && m.groups > 0) {
-            id = m.id;
-            end = suf.ends[m.groups - 1];
-            exists = true;
-          }
-        }
+        const bool exists = resolve(id, "", prefix, suf, end);
         add(RefKind::kAircraft, id, i, after_weight(t, end), exists, true);
         i = end - 1;
         continue;
@@ -243,17 +249,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       if (suf.groups.empty() || phonetic_letter(t[i + len].text) != 0) break;
       std::string id = *icao + text::upper(suf.joined(suf.groups.size()));
       size_t end = suf.ends.back();
-      bool exists = world_id(id) != nullptr;
-      if (exists) {
-        id = world_id(id)->id;
-      } else if (!fleet.empty()) {
-        CallsignMatch m = match_world(*icao, phrase, suf, fleet);
-        if ((m.score >= 0.45 || fleet.size() == 1) && m.groups > 0) {
-          id = m.id;
-          end = suf.ends[m.groups - 1];
-          exists = true;
-        }
-      }
+      const bool exists = resolve(id, *icao, phrase, suf, end);
       add(RefKind::kAircraft, id, i, after_weight(t, end), exists, true);
       i = end - 1;
       break;
