@@ -17,7 +17,7 @@ Status write_checkpoint_file(const std::string& path, std::string_view magic,
   out += header.dump();
   out += '\n';
   for (const auto* v : arrays)
-    out.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(float));
+    if (!v->empty()) out.append(reinterpret_cast<const char*>(v->data()), v->size() * sizeof(float));
   return files::write_atomic(path, out);
 }
 
@@ -47,6 +47,7 @@ Status CheckpointFile::read_arrays(const std::string& path, const std::string& w
                               " bytes of tensors, expected " + std::to_string(want) + " (" + what + ")");
   const char* p = data.data() + tensors;
   for (auto* v : arrays) {
+    if (v->empty()) continue;  // an empty vector's data() may be null
     std::memcpy(v->data(), p, v->size() * sizeof(float));
     p += v->size() * sizeof(float);
   }
