@@ -124,10 +124,8 @@ int cmd_train_gpt2(const ArgV& argv) {
   if (resuming) meta.progress = resume.progress;
   meta.progress.estimator = cfg.estimator;
   meta.progress.scenario = sc->path;
-  if (policy.obs_size() != env::observation_size(sc->train_env.num_intruders))
-    return failure(Status::invalid("policy expects " + std::to_string(policy.obs_size()) +
-                                   " observation values, the scenario gives " +
-                                   std::to_string(env::observation_size(sc->train_env.num_intruders))));
+  if (Status st = rl::check_obs_size(policy, env::observation_size(sc->train_env.num_intruders)); !st.is_ok())
+    return failure(st);
   auto train_envs = env::VecEnv::make(sc->train_env, cfg.num_envs);
   auto eval_envs = env::VecEnv::make(sc->eval_env, cfg.num_envs);
   if (!train_envs) return failure(train_envs.status());

@@ -175,10 +175,8 @@ int cmd_train(const ArgV& argv) {
   }
   progress.estimator = cfg.estimator;
   progress.scenario = sc->path;
-  if (policy->obs_size() != env::observation_size(sc->train_env.num_intruders))
-    return failure(Status::invalid("policy expects " + std::to_string(policy->obs_size()) +
-                                   " observation values, the scenario gives " +
-                                   std::to_string(env::observation_size(sc->train_env.num_intruders))));
+  if (Status st = rl::check_obs_size(*policy, env::observation_size(sc->train_env.num_intruders)); !st.is_ok())
+    return failure(st);
 
   auto train_envs = env::VecEnv::make(sc->train_env, cfg.num_envs);
   auto eval_envs = env::VecEnv::make(sc->eval_env, cfg.num_envs);
@@ -295,10 +293,7 @@ Result<EvalRequest> eval_request(const Args& args, const script::Scenario& sc) {
 
 int run_eval(rl::Policy& policy, env::VecEnv& envs, const script::Scenario& sc, const EvalRequest& req,
              const std::string& label) {
-  if (policy.obs_size() != envs.obs_size())
-    return failure(Status::invalid("policy expects " + std::to_string(policy.obs_size()) +
-                                   " observation values, the scenario gives " +
-                                   std::to_string(envs.obs_size())));
+  if (Status st = rl::check_obs_size(policy, envs.obs_size()); !st.is_ok()) return failure(st);
   std::ofstream rec_file;
   std::unique_ptr<env::JsonlRecorder> recorder;
   if (!req.record.empty()) {

@@ -79,9 +79,8 @@ int cmd_table3(const ArgV& argv) {
       {"RL Fine-Tuned GPT-2 LLM", gpt2_tuned->policy.get()}};
   std::vector<Row> rows;
   for (const auto& [name, policy] : agents) {
-    if (policy->obs_size() != envs->obs_size())
-      return failure(Status::invalid(name + " expects " + std::to_string(policy->obs_size()) +
-                                     " observation values, the scenario gives " + std::to_string(envs->obs_size())));
+    if (Status st = rl::check_obs_size(*policy, envs->obs_size()); !st.is_ok())
+      return failure(st.with_context(name));
     std::fprintf(stderr, "table3: evaluating %s on %lld episodes...\n", name.c_str(), *episodes);
     auto res = rl::evaluate(*policy, *envs, {*episodes, static_cast<uint64_t>(*seed), false});
     if (!res) return failure(res.status());

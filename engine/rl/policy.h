@@ -52,4 +52,8 @@ class Policy {
   }
 };
 
+// Ok when `policy` reads observations of `obs_size` values, else an error
+// naming both sizes.
+Status check_obs_size(const Policy& policy, int obs_size);
+
 }  // namespace squawk::rl
