@@ -45,14 +45,6 @@ Scenario load_or_throw(lua_State* L, const std::string& path) {
   return std::move(*sc);
 }
 
-void push_array(lua_State* L, const std::vector<double>& v) {
-  lua_createtable(L, static_cast<int>(v.size()), 0);
-  for (size_t i = 0; i < v.size(); ++i) {
-    lua_pushnumber(L, v[i]);
-    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
-}
-
 void set_number(lua_State* L, const char* key, double v) {
   lua_pushnumber(L, v);
   lua_setfield(L, -2, key);

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <lua.hpp>
 
@@ -60,6 +61,9 @@ long long opt_integer(lua_State* L, int idx, const char* name, long long fallbac
 std::string arg_string(lua_State* L, int idx, const char* name);
 std::string opt_string(lua_State* L, int idx, const char* name, const std::string& fallback);
 bool opt_boolean(lua_State* L, int idx, bool fallback);
+
+// Pushes a Lua array (1-based) of the numbers in v.
+void push_array(lua_State* L, const std::vector<double>& v);
 
 // Reads field `key` of the table at `idx`, or `fallback` when it is nil.
 double field_number(lua_State* L, int idx, const char* key, double fallback);

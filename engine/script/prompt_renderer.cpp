@@ -7,17 +7,6 @@
 
 namespace squawk::script {
 
-namespace {
-
-void push_array(lua_State* L, const std::vector<double>& v) {
-  lua_createtable(L, static_cast<int>(v.size()), 0);
-  for (size_t i = 0; i < v.size(); ++i) {
-    lua_pushnumber(L, v[i]);
-    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
-}
-
-}  // namespace
 
 Result<std::shared_ptr<PromptRenderer>> PromptRenderer::load(const std::string& path,
                                                              const VmOptions& options) {
