@@ -36,6 +36,10 @@
 --     opts.k        documents retrieved (default 5)
 --     opts.max_retries  feedback rounds (default 3)
 --     opts.on_token streaming callback passed to the LLM
+--   dialogue(opts) -> d   a conversation: d:say(text) -> result as translate()
+--       returns it. A result that asks keeps its partial command in d.pending
+--       and the next say() may answer it; say("cancel") drops it. opts as
+--       translate(); every front end (REPL, serve, scripts) talks through this.
 --   new_graph(start), modes[name](opts) -> graph, format_trace(trace), nodes
 local nodes = require("translate.nodes")
 
@@ -198,6 +202,23 @@ function M.translate(text, opts)
     result.commands = state.commands or {}
   end
   return result
+end
+
+local Dialogue = {}
+Dialogue.__index = Dialogue
+
+function M.dialogue(opts)
+  return setmetatable({ opts = opts or {}, pending = nil }, Dialogue)
+end
+
+function Dialogue:say(text)
+  if self.pending and text:lower():match("^%s*cancel%s*$") then
+    self.pending = nil
+    return { commands = {}, cancelled = true, trace = {}, mode = self.opts.mode }
+  end
+  local r = M.translate(text, self.opts)
+  self.pending = r.ask and { question = r.ask, request = text } or nil
+  return r
 end
 
 function M.format_trace(trace)

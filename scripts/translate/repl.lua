@@ -27,6 +27,7 @@ local HELP = [[
 function M.new(opts)
   opts = opts or {}
   local self = setmetatable({ sim = squawk.sim.new({ seed = opts.seed or 0 }), mode = opts.mode }, Session)
+  self.dialogue = graph.dialogue({ sim = self.sim, mode = self.mode })
   if opts.scenario and opts.scenario ~= "" then
     local ok, msg = self.sim:load(opts.scenario)
     if not ok then error("repl: scenario '" .. opts.scenario .. "' did not load: " .. msg, 0) end
@@ -107,11 +108,12 @@ function Session:handle(line)
     if cmd == "mode" then
       if not graph.modes[arg] then return "  :mode expects offline, single or multi", false end
       self.mode = arg
+      self.dialogue.opts.mode = arg
       return "  mode " .. arg, false
     end
     return "  unknown command ':" .. tostring(cmd) .. "'; :help lists them", false
   end
-  local r = graph.translate(line, { sim = self.sim, mode = self.mode })
+  local r = self.dialogue:say(line)
   self.last = r
   if r.ask then return "? " .. r.ask, false end
   if r.error then
