@@ -5,7 +5,8 @@
 //       places are errors). Scenario files load relative to the script folder.
 //   sim:exec(line)       -> ok, message   (TrafScript; `;` separates commands)
 //   sim:check(line)      -> ok, message   (parse-only validation, nothing runs)
-//   sim:load(file)       -> ok, message   (IC: reset, then the .scn file)
+//   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
+//                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
 //   sim:run_until(t) / sim:run_for(s)     [s]
 //   sim:time() -> s;  sim:dt() -> s;  sim:count() -> number of aircraft
@@ -145,9 +146,12 @@ int l_check(lua_State* L) {
   return push_outcome(L, st.is_ok() ? Result<std::string>(std::string()) : Result<std::string>(st));
 }
 
+// The scenario's own folder becomes the base for the PCALLs inside it.
 int l_load(lua_State* L) {
   command::Stack* s = self(L);
-  const Status st = s->load_scenario(arg_string(L, 2, "file"));
+  const std::string file = arg_string(L, 2, "file");
+  if (auto found = s->find_scenario(file); found.is_ok()) s->set_base_dir(paths::dirname(*found));
+  const Status st = s->load_scenario(file);
   return push_outcome(L, st.is_ok() ? Result<std::string>(std::string()) : Result<std::string>(st));
 }
 
