@@ -1,13 +1,17 @@
 // squawk render / squawk plot: SVG pictures of episodes and training curves.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <vector>
 
 #include "app/cli.h"
 #include "app/subcommands.h"
+#include "command/conformance.h"
+#include "command/stack.h"
 #include "core/files.h"
+#include "core/paths.h"
 #include "core/text.h"
 #include "env/horizontal_cr.h"
 #include "env/recorder.h"
@@ -15,6 +19,7 @@
 #include "viz/chart.h"
 #include "viz/csv.h"
 #include "viz/scene.h"
+#include "viz/traffic_scene.h"
 
 namespace fs = std::filesystem;
 
@@ -54,26 +59,69 @@ Result<std::string> scenario_start(const std::string& path, const script::VmOpti
   return out.str();
 }
 
+// A scenario file's traffic from t = 0 to `at` [s]; failed commands are
+// summarised on stderr as `squawk scn` counts them.
+Result<viz::Scene> scn_scene(const std::string& path, double at, const script::VmOptions& vmo) {
+  command::Stack stack(vmo.seed);
+  if (!vmo.navdata_dir.empty()) {
+    SQUAWK_ASSIGN_OR_RETURN(auto db, command::NavDb::load_cached(vmo.navdata_dir));
+    stack.set_navdb(std::move(db));
+  }
+  stack.set_base_dir(paths::dirname(path));
+  SQUAWK_RETURN_IF_ERROR(stack.load_scenario(path));
+  SQUAWK_ASSIGN_OR_RETURN(viz::Scene scene, viz::traffic_scene(stack, at));
+  const command::Tally& t = stack.tally();
+  if (const long failed = command::total_count(t.failed); failed > 0) {
+    std::fprintf(stderr, "%s: %ld scenario commands failed up to t = %.0f s (squawk scn lists them), first:\n",
+                 path.c_str(), failed, at);
+    for (size_t k = 0; k < std::min<size_t>(3, t.first_failures.size()); ++k)
+      std::fprintf(stderr, "  %s\n", t.first_failures[k].c_str());
+  }
+  scene.title = fs::path(path).filename().string() + ": traffic at t = " + text::fmt_double(at, 0) + " s";
+  scene.subtitle = std::to_string(scene.frames.back().aircraft.size()) + " aircraft, tracks from t = 0";
+  return scene;
+}
+
 int cmd_render(const ArgV& argv) {
-  auto args = Args::parse(argv, {{"--out", "--frame", "--size", "--episode", "--seed"}, {}});
+  auto args = Args::parse(argv, {{"--out", "--frame", "--size", "--episode", "--seed", "--at", "--navdata"}, {}});
   if (!args) return usage_error("render", args.status().message());
-  if (args->positional().size() != 1) return usage_error("render", "expected one EPISODE.jsonl or SCENARIO.lua");
+  if (args->positional().size() != 1)
+    return usage_error("render", "expected one EPISODE.jsonl, SCENARIO.lua or SCENARIO.scn");
   auto seed = args->get_int("--seed", 0);
   if (!seed || *seed < 0) return usage_error("render", "--seed expects a non-negative integer");
-  script::VmOptions vmo;
-  vmo.seed = static_cast<uint64_t>(*seed);
+  script::VmOptions vmo_value;
+  vmo_value.seed = static_cast<uint64_t>(*seed);
+  const char* nav_env = std::getenv("SQUAWK_NAVDATA");
+  vmo_value.navdata_dir = args->get_or("--navdata", nav_env ? nav_env : "");
+  const script::VmOptions* vmo = &vmo_value;
   const std::string in = args->positional()[0];
+  const std::string ext = fs::path(in).extension().string();
   auto frame = args->get_int("--frame", -1);
+  if (!frame) return usage_error("render", frame.status().message());
   auto episode = args->get_int("--episode", -1);
   if (!episode) return usage_error("render", episode.status().message());
   auto size = args->get_double("--size", 720);
-  if (!frame) return usage_error("render", frame.status().message());
   if (!size || *size < 100 || *size > 8000)
     return usage_error("render", "--size expects pixels between 100 and 8000");
-  auto text = fs::path(in).extension() == ".lua" ? scenario_start(in, vmo) : files::read(in);
-  if (!text) return failure(text.status());
-  auto scene = viz::parse_episode_jsonl(*text, *episode);
+  auto at = args->get_double("--at", 0);
+  if (!at || !(*at >= 0 && *at <= 86400)) return usage_error("render", "--at expects seconds from 0 to 86400");
+  if (args->has("--at") && ext != ".scn") return usage_error("render", "--at applies to a .scn scenario only");
+
+  Result<viz::Scene> scene = Status::internal("unset");
+  if (ext == ".scn") {
+    scene = scn_scene(in, *at, *vmo);
+  } else {
+    auto text = ext == ".lua" ? scenario_start(in, *vmo) : files::read(in);
+    if (!text) return failure(text.status());
+    scene = viz::parse_episode_jsonl(*text, *episode);
+    if (scene) {
+      const std::string name = fs::path(in).filename().string();
+      scene->title = ext == ".lua" ? name + ", seed " + std::to_string(vmo->seed) + ": start of its evaluation episode"
+                                   : name + ": " + scene->title;
+    }
+  }
   if (!scene) return failure(scene.status().with_context(in));
+  if (Status st = viz::check_frame(*scene, *frame); !st.is_ok()) return usage_error("render", "--frame: " + st.message());
   const std::string out = args->get_or("--out", fs::path(in).replace_extension(".svg").string());
   return write_output(out, viz::render_scene(*scene, {*size, static_cast<int>(*frame)}));
 }

@@ -77,17 +77,27 @@ const std::vector<Subcommand>& subcommands() {
        "  init        write a random GPT-2 folder (GPT-2's initialisation; default the\n"
        "              tiny shape) over the vocabulary of --vocab DIR or the bytes\n",
        cmd_gpt2},
-      {"render", "render EPISODE.jsonl|SCENARIO.lua   draw an episode as SVG (Fig. 2 style)",
+      {"render", "render EPISODE.jsonl|SCENARIO.lua|SCENARIO.scn   draw an episode or traffic as SVG",
        "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"
        "                     [--out FILE.svg|-]\n"
-       "       squawk render SCENARIO.lua [--seed N] [--out FILE.svg|-]\n\n"
-       "With a scenario file, draws the start of its evaluation episode for the seed.\n"
-       "Draws a recorded episode top-down, north up: the ownship's and intruders'\n"
-       "tracks, each intruder's separation circle (red while the ownship is inside),\n"
-       "the waypoint with its capture circle, a scale bar and a north arrow.\n"
-       "Episodes are recorded by `squawk demo --record FILE` and `squawk eval --record FILE`.\n"
+       "       squawk render SCENARIO.lua [--seed N] [--size PX] [--out FILE.svg|-]\n"
+       "       squawk render SCENARIO.scn [--at T] [--navdata DIR] [--size PX] [--out FILE.svg|-]\n\n"
+       "Draws a recorded episode top-down, north up (the paper's Fig. 2): the\n"
+       "ownship's and intruders' tracks, each intruder's separation circle (red\n"
+       "while the ownship is inside), the waypoint with its capture circle, the\n"
+       "ownship's closest approach to any intruder so far, a scale bar and a north\n"
+       "arrow; the caption gives the time and the frame. Episodes are recorded by\n"
+       "`squawk demo --record FILE` and `squawk eval --record FILE`.\n"
+       "With a scenario file (.lua), draws the start of its evaluation episode for\n"
+       "the seed. With a BlueSky scenario (.scn), runs it to T seconds (default 0)\n"
+       "and draws every aircraft with its track, flight level and speed, red while\n"
+       "in a detected conflict; commands that fail are summarised on stderr.\n"
        "  --episode K draw episode K of the recording (default: the first one)\n"
-       "  --frame N   draw aircraft where they were at recorded frame N (default: last)\n"
+       "  --frame N   draw aircraft where they were at recorded frame N, 0 to the\n"
+       "              last (default: the last); other numbers are errors\n"
+       "  --at T      .scn: the time drawn [s], 0 to 86400\n"
+       "  --navdata DIR  .scn: BlueSky navdata (default $SQUAWK_NAVDATA)\n"
+       "  --size PX   picture side, 100 to 8000 (default 720)\n"
        "  --out FILE  output path (default: the input with .svg; `-` = stdout)\n"
        "For a PNG: rsvg-convert -o out.png out.svg (Debian package librsvg2-bin).\n",
        cmd_render},
