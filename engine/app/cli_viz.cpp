@@ -129,18 +129,25 @@ int cmd_render(const ArgV& argv) {
 int cmd_plot(const ArgV& argv) {
   auto args = Args::parse(argv, {{"--out"}, {}});
   if (!args) return usage_error("plot", args.status().message());
-  if (args->positional().size() != 1) return usage_error("plot", "expected one RUN_DIR or FILE.csv");
-  const std::string target = args->positional()[0];
+  if (args->positional().empty()) return usage_error("plot", "expected RUN_DIR or FILE.csv, one or more");
+  // Every CSV of every RUN_DIR, then the files named, each drawn as one line.
   std::vector<std::string> csvs;
   std::error_code ec;
-  if (fs::is_directory(target, ec)) {
-    for (const auto& e : fs::directory_iterator(target, ec))
-      if (e.path().extension() == ".csv") csvs.push_back(e.path().string());
-    std::sort(csvs.begin(), csvs.end());
-  } else if (fs::is_regular_file(target, ec)) {
-    csvs.push_back(target);
+  for (const auto& target : args->positional()) {
+    if (fs::is_directory(target, ec)) {
+      std::vector<std::string> in_dir;
+      for (const auto& e : fs::directory_iterator(target, ec))
+        if (e.path().extension() == ".csv") in_dir.push_back(e.path().string());
+      if (in_dir.empty()) return failure(Status::not_found("no CSV log in '" + target + "'"));
+      std::sort(in_dir.begin(), in_dir.end());
+      csvs.insert(csvs.end(), in_dir.begin(), in_dir.end());
+    } else if (fs::is_regular_file(target, ec)) {
+      csvs.push_back(target);
+    } else {
+      return failure(Status::not_found("no CSV file or run folder '" + target + "'"));
+    }
   }
-  if (csvs.empty()) return failure(Status::not_found("no CSV log in '" + target + "'"));
+  const std::string target = args->positional()[0];
 
   viz::Panel success{"Average success rate", "episodes trained", "success rate", {}, true, 0, 1};
   viz::Panel reward{"Average reward", "episodes trained", "mean episode reward", {}, false, 0, 0};
@@ -154,10 +161,14 @@ int cmd_plot(const ArgV& argv) {
     const int x = find_column(*table, {"episodes", "episode", "episodes_trained"});
     const int s = find_column(*table, {"eval_success_rate", "success_rate", "success"});
     const int r = find_column(*table, {"eval_mean_reward", "mean_reward", "reward"});
-    if (x < 0 || (s < 0 && r < 0)) continue;
-    // A run's log.csv is named after its run folder.
+    if (x < 0 || (s < 0 && r < 0)) {
+      std::fprintf(stderr, "plot: skipped %s: no episodes column with success_rate or mean_reward\n", path.c_str());
+      continue;
+    }
+    // A run's log.csv is named after its run folder; NAME.log.csv after NAME.
     std::string label = fs::path(path).stem().string();
     if (label == "log") label = fs::absolute(path).parent_path().filename().string();
+    if (label.size() > 4 && label.substr(label.size() - 4) == ".log") label.resize(label.size() - 4);
     const std::string colour = colours[used++ % 5];
     if (s >= 0) success.series.push_back({label, table->values(x), table->values(s), colour});
     if (r >= 0) reward.series.push_back({label, table->values(x), table->values(r), colour});
@@ -165,9 +176,11 @@ int cmd_plot(const ArgV& argv) {
   if (used == 0)
     return failure(Status::invalid("no CSV in '" + target +
                                    "' has an episodes column and a success_rate or mean_reward column"));
+  const bool one = args->positional().size() == 1;
   const std::string out = args->get_or(
-      "--out", fs::is_directory(target, ec) ? (fs::path(target) / "curves.svg").string()
-                                             : fs::path(target).replace_extension(".svg").string());
+      "--out", !one ? std::string("curves.svg")
+               : fs::is_directory(target, ec) ? (fs::path(target) / "curves.svg").string()
+                                              : fs::path(target).replace_extension(".svg").string());
   return write_output(out, viz::panels_svg({success, reward}));
 }
 

@@ -101,12 +101,14 @@ const std::vector<Subcommand>& subcommands() {
        "  --out FILE  output path (default: the input with .svg; `-` = stdout)\n"
        "For a PNG: rsvg-convert -o out.png out.svg (Debian package librsvg2-bin).\n",
        cmd_render},
-      {"plot", "plot RUN_DIR|FILE.csv      draw training curves as SVG (Fig. 3 style)",
-       "usage: squawk plot RUN_DIR|FILE.csv [--out FILE.svg|-]\n\n"
-       "Reads the CSV logs a training run writes (columns episodes and\n"
+      {"plot", "plot RUN_DIR|FILE.csv...   draw training curves as SVG (Fig. 3 style)",
+       "usage: squawk plot RUN_DIR|FILE.csv... [--out FILE.svg|-]\n\n"
+       "Reads the CSV logs training runs write (columns episodes and\n"
        "eval_success_rate / eval_mean_reward, or success_rate / mean_reward)\n"
-       "and draws success rate and mean reward against episodes trained, one\n"
-       "line per CSV file. Default output: RUN_DIR/curves.svg.\n",
+       "and draws success rate and mean reward against episodes trained (from 0),\n"
+       "one line per CSV file: every CSV in each RUN_DIR, and each FILE.csv named.\n"
+       "Default output: RUN_DIR/curves.svg or FILE.svg for one argument,\n"
+       "curves.svg in the current folder for several.\n",
        cmd_plot},
       {"rag", "rag search QUERY | rag eval CORPUS.tsv   command retrieval (BM25)",
        "usage: squawk rag search QUERY... [--k N] [--text] [--notes FILE] [--no-notes]\n"

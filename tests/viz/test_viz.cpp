@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/text.h"
 #include "viz/chart.h"
 #include "viz/csv.h"
 #include "viz/layout.h"
@@ -89,6 +90,19 @@ TEST_CASE("recording errors name the line") {
   CHECK(e.status().message().find("before its reset") != std::string::npos);
   e = viz::parse_episode_jsonl(R"({"event":"reset","episode":0})" "\n");
   CHECK(e.status().message().find("expected a recorder event") != std::string::npos);
+}
+
+TEST_CASE("axes: padded, ending on labelled ticks; x from 0") {
+  const viz::Axis a = viz::axis(-1.27, 0.04, 0.04, 5);
+  CHECK(a.lo < -1.27);
+  CHECK(a.hi > 0.04);
+  CHECK(a.ticks.front() == doctest::Approx(a.lo));
+  CHECK(a.ticks.back() == doctest::Approx(a.hi));  // the top tick exists, so it is labelled
+  viz::Panel p{"reward", "episodes", "reward", {}, false, 0, 0};
+  p.series.push_back({"run", {5000, 100000, 200000}, {-1.27, -0.1, 0.04}, "#1f77b4"});
+  const std::string svg = viz::panels_svg({p});
+  CHECK(svg.find(">0</text>") != std::string::npos);         // x starts at 0
+  CHECK(svg.find(">" + text::fmt_double(a.hi, 3) + "</text>") != std::string::npos);
 }
 
 TEST_CASE("panels draw every series") {
