@@ -151,6 +151,7 @@ std::vector<llm::Message> read_messages(lua_State* L, int idx) {
 
 int l_chat(lua_State* L) {
   auto* box = arg_object<ClientBox>(L, 1, kClientMt);
+  const Pin pin(L, 1);  // on_token runs Lua code
   llm::ChatRequest req;
   req.messages = read_messages(L, 2);
   const bool has_opts = lua_istable(L, 3);
@@ -269,7 +270,7 @@ void bind_llm(lua_State* L) {
                               {"embed", guarded<l_embed>},
                               {"describe", guarded<l_describe>},
                               {nullptr, nullptr}};
-  define_class<ClientBox>(L, kClientMt, methods);
+  define_class(L, kClientMt, methods);
   push_squawk_subtable(L, "llm");
   lua_pushcfunction(L, guarded<l_client>);
   lua_setfield(L, -2, "client");

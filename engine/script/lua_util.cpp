@@ -109,6 +109,57 @@ bool field_boolean(lua_State* L, int idx, const char* key, bool fallback) {
   return v;
 }
 
+const void* class_tag(lua_State* L, const char* mt) {
+  luaL_getmetatable(L, mt);
+  const void* tag = lua_topointer(L, -1);
+  lua_pop(L, 1);
+  return tag;
+}
+
+ObjectHeader* test_header(lua_State* L, int idx, const char* mt) {
+  void* p = luaL_testudata(L, idx, mt);
+  if (!p || lua_rawlen(L, idx) < sizeof(ObjectHeader)) return nullptr;
+  auto* h = static_cast<ObjectHeader*>(p);
+  return h->tag == class_tag(L, mt) ? h : nullptr;
+}
+
+ObjectHeader* arg_header(lua_State* L, int idx, const char* name, const char* mt) {
+  ObjectHeader* h = test_header(L, idx, mt);
+  if (!h) throw ArgError(type_error(L, idx, name, mt));
+  if (!h->alive)
+    throw ArgError(type_error(L, idx, name, mt) + " that is alive (this one was already finalized)");
+  return h;
+}
+
+Pin::Pin(lua_State* L, int idx) : header_(static_cast<ObjectHeader*>(lua_touserdata(L, idx))) {
+  ++header_->pins;
+}
+
+Pin::~Pin() {
+  if (--header_->pins == 0 && !header_->alive) header_->destroy(header_);
+}
+
+int finalize_object(lua_State* L) {
+  ObjectHeader* h = test_header(L, 1, lua_tostring(L, lua_upvalueindex(1)));
+  if (!h || !h->alive) return 0;  // not ours, or finalized already
+  h->alive = false;
+  if (h->pins == 0) h->destroy(h);
+  return 0;
+}
+
+void define_class(lua_State* L, const char* mt, const luaL_Reg* methods) {
+  luaL_newmetatable(L, mt);
+  lua_newtable(L);
+  luaL_setfuncs(L, methods, 0);
+  lua_setfield(L, -2, "__index");
+  lua_pushstring(L, mt);
+  lua_setfield(L, -2, "__metatable");
+  lua_pushstring(L, mt);
+  lua_pushcclosure(L, finalize_object, 1);
+  lua_setfield(L, -2, "__gc");
+  lua_pop(L, 1);
+}
+
 void push_squawk_subtable(lua_State* L, const char* name) {
   lua_getglobal(L, "squawk");
   if (!lua_istable(L, -1)) {
