@@ -1,5 +1,9 @@
 #include "script/lua_util.h"
 
+#include <cmath>
+
+#include "core/text.h"
+
 namespace squawk::script {
 
 std::string type_error(lua_State* L, int idx, const char* name, const char* expected) {
@@ -158,6 +162,33 @@ void define_class(lua_State* L, const char* mt, const luaL_Reg* methods) {
   lua_pushcclosure(L, finalize_object, 1);
   lua_setfield(L, -2, "__gc");
   lua_pop(L, 1);
+}
+
+namespace {
+
+long long checked_count(double v, const std::string& what, long long lo, long long hi) {
+  if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)) || v != std::floor(v))
+    throw ArgError(what + ": expected a whole number in [" + std::to_string(lo) + ", " +
+                   std::to_string(hi) + "], got " + text::fmt_double(v));
+  return static_cast<long long>(v);
+}
+
+}  // namespace
+
+long long field_count(lua_State* L, int idx, const char* key, long long fallback, long long lo,
+                      long long hi) {
+  idx = lua_absindex(L, idx);
+  lua_getfield(L, idx, key);
+  const bool absent = lua_isnil(L, -1);
+  lua_pop(L, 1);
+  if (absent) return fallback;
+  return checked_count(field_number(L, idx, key, 0), std::string("field '") + key + "'", lo, hi);
+}
+
+long long opt_count(lua_State* L, int idx, const char* name, long long fallback, long long lo,
+                    long long hi) {
+  if (lua_isnoneornil(L, idx)) return fallback;
+  return checked_count(arg_number(L, idx, name), std::string("argument '") + name + "'", lo, hi);
 }
 
 void push_squawk_subtable(lua_State* L, const char* name) {

@@ -69,6 +69,13 @@ void push_array(lua_State* L, const std::vector<double>& v);
 double field_number(lua_State* L, int idx, const char* key, double fallback);
 std::string field_string(lua_State* L, int idx, const char* key, const std::string& fallback);
 bool field_boolean(lua_State* L, int idx, const char* key, bool fallback);
+// Field `key` as a whole number within [lo, hi] (NaN, fractions and values
+// outside are ArgErrors naming the field and the range), or `fallback`.
+long long field_count(lua_State* L, int idx, const char* key, long long fallback, long long lo,
+                      long long hi);
+// Argument `idx` likewise (`fallback` when none or nil).
+long long opt_count(lua_State* L, int idx, const char* name, long long fallback, long long lo,
+                    long long hi);
 
 // Objects: a full userdata holds an ObjectBox<T> (a header, then the T) and
 // has the metatable `mt` created by define_class. Safety contract:
