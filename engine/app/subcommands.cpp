@@ -151,10 +151,26 @@ const std::vector<Subcommand>& subcommands() {
        "offline grammar translates. The default mode is multi with an LLM, else\n"
        "offline.\n",
        cmd_repl},
+      {"serve", "serve [SCENARIO.scn]       the radar scope in a browser, simulation running live",
+       "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--speed X] [--paused]\n"
+       "                    [--mode offline|single|multi] [--seed N] [--navdata DIR] [--web DIR]\n\n"
+       "Serves a radar scope at http://127.0.0.1:8080/ while the simulation runs live\n"
+       "on the server: real time x DTMULT (--speed sets it; HOLD, OP and FF work as\n"
+       "commands). The page shows the traffic, conflicts and their closest points of\n"
+       "approach, a traffic list, and a command line for English (the REPL's\n"
+       "translation graph) or !TrafScript. Several browsers may watch at once.\n\n"
+       "  --port N      listen port (0: any free port; the URL is printed)\n"
+       "  --host ADDR   listen address; default 127.0.0.1 (this machine only)\n"
+       "  --paused      start in HOLD\n"
+       "  --web DIR     serve the page from DIR instead of the shipped web/\n\n"
+       "HTTP API (JSON): GET /api/state, GET /api/stream (server-sent events, 10 Hz),\n"
+       "POST /api/command {\"text\": ...}, POST /api/advisory {\"id\", \"decision\"},\n"
+       "POST /api/auto {\"on\"}, GET /api/navdata?south=&north=&west=&east=.\n",
+       cmd_serve},
       {"llm", "llm chat TEXT | llm embed TEXT   ask the configured LLM server directly",
        "usage: squawk llm chat TEXT... [--stream] [--system TEXT] [--llm-url URL]\n"
        "                  [--llm-model NAME] [--llm-api ollama|openai] [--temperature T]\n"
-       "                  [--seed N] [--context TOKENS] [--timeout SECONDS]\n"
+       "                  [--seed N] [--context TOKENS] [--timeout SECONDS] [--max-reply-mb MB]\n"
        "       squawk llm embed TEXT... [same server flags]\n\n"
        "Sends one request to the LLM server the translator would use, to check the\n"
        "configuration: `chat` prints the reply (--stream prints it as it arrives)\n"

@@ -351,7 +351,7 @@ void bind_sim(lua_State* L) {
       {"dtmult", guarded<l_dtmult>},
       {"snapshot", guarded<l_snapshot>}, {nullptr, nullptr},
   };
-  define_class<command::Stack>(L, kSimMt, methods);
+  define_class(L, kSimMt, methods);
   push_squawk_subtable(L, "sim");
   lua_pushcfunction(L, guarded<l_new>);
   lua_setfield(L, -2, "new");

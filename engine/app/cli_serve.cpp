@@ -1,0 +1,86 @@
+// squawk serve: the radar scope. The simulation runs live on the server
+// (serve/live_sim.h); the page (web/) and the HTTP API (serve/http_server.h)
+// read its published state and post commands to it.
+#include <pthread.h>
+#include <signal.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <thread>
+
+#include "app/cli.h"
+#include "app/subcommands.h"
+#include "app/vm_options.h"
+#include "core/files.h"
+#include "core/paths.h"
+#include "script/serve_session.h"
+#include "serve/http_server.h"
+#include "serve/live_sim.h"
+
+namespace squawk::app {
+
+int cmd_serve(const ArgV& argv) {
+  Args::Spec spec = with_vm_flags({{"--port", "--host", "--mode", "--speed", "--web"}, {"--paused", "--auto"}});
+  auto args = Args::parse(argv, spec);
+  if (!args) return usage_error("serve", args.status().message());
+  if (args->positional().size() > 1) return usage_error("serve", "expected at most one SCENARIO");
+  auto vmo = vm_options(*args);
+  if (!vmo) return usage_error("serve", vmo.status().message());
+  vmo->max_instructions = 0;  // a live session has no instruction budget
+
+  serve::ServerOptions so;
+  so.host = args->get_or("--host", "127.0.0.1");
+  const std::string port = args->get_or("--port", "8080");
+  char* end = nullptr;
+  const long p = std::strtol(port.c_str(), &end, 10);
+  if (port.empty() || *end != '\0' || p < 0 || p > 65535)
+    return usage_error("serve", "--port '" + port + "': expected a port number 0..65535 (0: any free port)");
+  so.port = static_cast<int>(p);
+  so.web_dir = args->get_or("--web", paths::resource("web"));
+  const std::string speed = args->get_or("--speed", "1");
+  const double mult = std::strtod(speed.c_str(), &end);
+  if (speed.empty() || *end != '\0' || !(mult > 0 && mult <= 1000))
+    return usage_error("serve", "--speed '" + speed + "': expected a multiple of real time in (0, 1000]");
+
+  const std::string scenario = args->positional().empty() ? "" : paths::absolute(args->positional()[0]);
+  if (!scenario.empty() && !files::exists(scenario))
+    return failure(Status::not_found("no scenario file '" + args->positional()[0] + "'"));
+  script::Vm vm(*vmo);
+  auto session = script::ServeSession::open(vm, scenario, args->get_or("--mode", ""));
+  if (!session) return failure(session.status());
+  command::Stack& stack = (*session)->stack();
+  stack.set_dtmult(mult);
+  if (!args->has("--paused")) stack.sim().op();
+
+  serve::LiveOptions lo;
+  lo.auto_advisories = args->has("--auto");
+  serve::LiveSim live(**session, lo);
+  serve::HttpServer server(live, stack.navdb(), so);
+  auto bound = server.bind();
+  if (!bound) return failure(bound.status());
+
+  // SIGINT / SIGTERM stop the server from a thread of their own; every other
+  // thread (started below) inherits the blocked mask.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  live.start();
+  std::thread waiter([&] {
+    int sig = 0;
+    sigwait(&stop_signals, &sig);
+    live.stop();
+    server.stop();
+  });
+  std::printf("squawk serve: http://%s:%d/  (%s, %zu aircraft; Ctrl-C stops)\n", so.host.c_str(), *bound,
+              scenario.empty() ? "no scenario" : scenario.c_str(), static_cast<size_t>(stack.sim().n()));
+  std::fflush(stdout);
+  Status st = server.listen();
+  live.stop();
+  pthread_kill(waiter.native_handle(), SIGTERM);
+  waiter.join();
+  return st.is_ok() ? kExitOk : failure(st);
+}
+
+}  // namespace squawk::app
