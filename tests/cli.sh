@@ -49,6 +49,7 @@ printf 'episodes,eval_success_rate,eval_mean_reward\n1000,0.5,-1\n2000,0.8,-0.5\
 expect "plot"            0 "wrote" -- "$sq" plot "$tmp"
 expect "render scenario" 0 "wrote" -- "$sq" render scenarios/horizontal_cr.lua --seed 4 --out "$tmp/s.svg"
 expect "render bad file" 1 "episode line 1" -- "$sq" render "$tmp/log.csv" --out "$tmp/x.svg"
+expect "render shipped episode" 0 "wrote" -- "$sq" render docs/demo_episode.jsonl --frame 7 --out "$tmp/docs7.svg"
 expect "render seed title" 0 "wrote" -- "$sq" render scenarios/horizontal_cr.lua --seed 3 --out "$tmp/s3.svg"
 grep -q ">horizontal_cr.lua, seed 3: start of its evaluation episode<" "$tmp/s3.svg" && { echo "ok   seed in the title"; pass=$((pass + 1)); } || { echo "FAIL seed title"; fails=$((fails + 1)); }
 expect "render frame 999" 2 "numbered 0 to [0-9]+" -- "$sq" render "$tmp/ep.jsonl" --frame 999 --out "$tmp/x.svg"
