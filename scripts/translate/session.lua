@@ -183,7 +183,10 @@ end
 
 function Session:clock_text()
   local state, ff_end = self.sim:run_state()
-  if state == "hold" then return "clock stopped (HOLD): time moves with :run and FF" end
+  if state == "hold" then
+    return string.format("clock stopped (HOLD; OP runs it at %g x real time): time moves with :run and FF",
+      self.sim:dtmult())
+  end
   if state == "ff" then
     return ff_end and string.format("fast-time until t = %.0f s", ff_end)
       or string.format("fast-time until HOLD (%g x real time)", M.kOpenFfRate)
@@ -269,6 +272,10 @@ function Session:command(text)
   local reply = { text = text, commands = {}, results = {}, events = {}, touched = {}, deleted = {} }
   if text:sub(1, 1) == "!" then
     reply.kind = "trafscript"
+    if text:sub(2):match("^%s*$") then
+      reply.error = "nothing to run: type TrafScript after !, e.g. !HDG KL204 270"
+      return reply
+    end
     reply.commands = { text:sub(2) }
     self:run_commands(reply.commands, reply)
     return reply

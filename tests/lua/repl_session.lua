@@ -46,7 +46,7 @@ do
   check_eq(s.sim:time(), 617)
   -- HOLD (or its alias) when already stopped still says where the clock is.
   r = s:command("!PAUSE")
-  check(r.clock and find(r.clock, "clock stopped (HOLD)"), tostring(r.clock))
+  check(r.clock and find(r.clock, "clock stopped (HOLD"), tostring(r.clock))
   -- A bad FF changes nothing and says why.
   r = s:command("!FF -5")
   check(not r.results[1].ok)
