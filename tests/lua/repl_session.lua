@@ -174,3 +174,30 @@ do
     check(find(text, "hdg  90.0 -> 180"), text)
   end
 end
+
+-- The squawk.sim fields the session reads.
+do
+  local sim = squawk.sim.new()
+  check(sim:exec("CRE KL204 A320 52 4 90 FL250 M.78"))
+  check(sim:exec("ADDWPT KL204 52.5 4.5 FL300"))
+  check(sim:exec("ADDWPT KL204 53 5"))
+  local a = sim:get("KL204")
+  check_eq(a.sel_mach, 0.78)
+  check_eq(a.sel_cas_kt, nil)
+  check_eq(#a.route, 2)
+  check_eq(a.route[1].name, "KL204001")
+  check(math.abs(a.route[1].alt_ft - 30000) < 1e-6, "altitude constraint in ft")
+  check_eq(a.route[2].alt_ft, nil)
+  check_eq(a.active_wpt, "KL204001")
+  check_eq(sim:run_state(), "hold")
+  check(sim:exec("FF 30"))
+  local state, ff_end = sim:run_state()
+  check_eq(state, "ff")
+  check_eq(ff_end, 30)
+  check(sim:exec("OP"))
+  check(sim:exec("DTMULT 3"))
+  check_eq(sim:dtmult(), 3)
+  local t = sim:tally()
+  check_eq(t.failed, 0)
+  check_eq(#t.first_failures, 0)
+end
