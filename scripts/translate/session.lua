@@ -26,7 +26,8 @@
 --         deleted = { id, ... } }
 --   s:tick(wall_s) -> { event, ... }
 --       The running clock: advances by wall_s x multiplier when running (OP),
---       to the FF end time at once in fast-time, not at all in HOLD.
+--       to the FF end time at once in fast-time, not at all in HOLD; wall_s
+--       counts up to kMaxTickWall.
 --   s:run(seconds) -> { event, ... }      advance now, whatever the clock
 --   s:set_clock(multiplier|nil) -> sentence   nil: stop (HOLD)
 --   s:state() -> { simt =, clock = {state = "hold"|"op"|"ff", multiplier =,
@@ -51,6 +52,8 @@ Session.__index = Session
 M.kFirstShown = 3     -- failures quoted in a summary
 M.kChunk = 1.0        -- [s] sim time between conflict checks while advancing
 M.kOpenFfRate = 60.0  -- FF without an end time: sim seconds per wall second
+M.kMaxTickWall = 5.0  -- [s] most wall time one tick accounts for (a stopped
+                      -- terminal must not make the simulation jump hours)
 
 local function pair_key(a, b)
   if a > b then a, b = b, a end
@@ -206,6 +209,7 @@ function Session:set_clock(multiplier)
 end
 
 function Session:tick(wall_s)
+  wall_s = math.min(wall_s, M.kMaxTickWall)
   local events = {}
   local state, ff_end = self.sim:run_state()
   if state == "op" then

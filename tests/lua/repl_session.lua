@@ -41,16 +41,19 @@ do
   check(find(s:set_clock(10), "10 x real time"))
   s:tick(1.5)
   check_eq(s.sim:time(), 617)
+  -- A long pause of the terminal counts as kMaxTickWall.
+  s:tick(3600)
+  check_eq(s.sim:time(), 617 + 10 * session.kMaxTickWall)
   s:set_clock(nil)
   s:tick(1.0)
-  check_eq(s.sim:time(), 617)
+  check_eq(s.sim:time(), 617 + 10 * session.kMaxTickWall)
   -- HOLD (or its alias) when already stopped still says where the clock is.
   r = s:command("!PAUSE")
   check(r.clock and find(r.clock, "clock stopped (HOLD"), tostring(r.clock))
   -- A bad FF changes nothing and says why.
   r = s:command("!FF -5")
   check(not r.results[1].ok)
-  check_eq(s.sim:time(), 617)
+  check_eq(s.sim:time(), 667)
 end
 
 -- Head-on at FL300 with ASAS ON: the conflict is reported when it starts and
