@@ -22,6 +22,9 @@ Result<script::VmOptions> vm_options(const Args& args) {
   o.seed = static_cast<uint64_t>(*seed);
   auto maxi = args.get_int("--max-instructions", o.max_instructions);
   if (!maxi) return maxi.status();
+  if (*maxi < 0)
+    return Status::invalid("flag --max-instructions expects a count >= 0 (0 = no limit), got " +
+                           std::to_string(*maxi));
   o.max_instructions = *maxi;
   o.unsafe = args.has("--unsafe");
   if (auto out = args.get("--out")) {

@@ -159,14 +159,19 @@ int l_mvp_action(lua_State* L) {
   return 1;
 }
 
+constexpr long long kMaxEpisodes = 1'000'000;  // per evaluate call
+constexpr long long kEpisodeCost = 10'000;     // [instructions] charged per episode
+
 int l_evaluate(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
   const std::string path = field_string(L, 1, "scenario", "");
   if (path.empty()) throw ArgError("squawk.env.evaluate: field 'scenario' (a scenario file) is required");
   const std::string kind = field_string(L, 1, "policy", "mlp");
   Scenario sc = load_or_throw(L, path);
-  const auto episodes = static_cast<long long>(field_number(L, 1, "episodes", static_cast<double>(sc.eval_episodes)));
-  const auto seed = static_cast<uint64_t>(field_number(L, 1, "seed", static_cast<double>(sc.eval_seed)));
+  const long long episodes = field_count(L, 1, "episodes", sc.eval_episodes, 1, kMaxEpisodes);
+  const auto seed = static_cast<uint64_t>(
+      field_count(L, 1, "seed", static_cast<long long>(sc.eval_seed), 0, 9007199254740992LL));
+  charge(L, episodes * kEpisodeCost);
   auto envs = env::VecEnv::make(sc.eval_env, 32);
   check_status(envs.status());
   std::unique_ptr<rl::Policy> policy;

@@ -16,6 +16,7 @@
 #include "core/units.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
+#include "script/vm.h"
 #include "script/translate_graph.h"
 #include "translate/corpus.h"
 #include "translate/offline_translator.h"
@@ -188,6 +189,7 @@ Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& 
   lua_pushstring(L, text.c_str());
   lua_pushstring(L, mode.c_str());
   lua_pushstring(L, setup.c_str());
+  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (lua_pcall(L, 4, 1, 0) != LUA_OK) {
     std::string msg = std::string("translation graph: ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
     lua_settop(L, top);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/text.h"
+#include "script/vm.h"
 
 namespace squawk::script {
 
@@ -169,7 +170,7 @@ namespace {
 long long checked_count(double v, const std::string& what, long long lo, long long hi) {
   if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)) || v != std::floor(v))
     throw ArgError(what + ": expected a whole number in [" + std::to_string(lo) + ", " +
-                   std::to_string(hi) + "], got " + text::fmt_double(v));
+                   std::to_string(hi) + "], got " + (std::isnan(v) ? std::string("NaN") : text::fmt_double(v)));
   return static_cast<long long>(v);
 }
 
@@ -190,6 +191,8 @@ long long opt_count(lua_State* L, int idx, const char* name, long long fallback,
   if (lua_isnoneornil(L, idx)) return fallback;
   return checked_count(arg_number(L, idx, name), std::string("argument '") + name + "'", lo, hi);
 }
+
+void charge(lua_State* L, long long instructions) { check_status(Vm::of(L).charge(instructions)); }
 
 void push_squawk_subtable(lua_State* L, const char* name) {
   lua_getglobal(L, "squawk");

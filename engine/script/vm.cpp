@@ -116,19 +116,66 @@ int lua_file_searcher(lua_State* L) {
 
 }  // namespace
 
+namespace {
+
+std::string limit_message(long long limit) {
+  return "stopped: the script ran " + std::to_string(limit) +
+         " Lua instructions, the limit for one call (runaway loop?); raise it with "
+         "--max-instructions N, or 0 for no limit";
+}
+
+}  // namespace
+
 void count_hook(lua_State* L, lua_Debug* ar) {
   Vm& vm = Vm::of(L);
+  if (lua_gethookcount(L) == 1 && !vm.stopped_) {  // a thread left failing by an earlier call
+    lua_sethook(L, count_hook, LUA_MASKCOUNT, kHookEvery);
+    return;
+  }
   vm.instructions_ += kHookEvery;
   const long long limit = vm.options_.max_instructions;
-  if (limit > 0 && vm.instructions_ >= limit) {
+  if (limit > 0 && (vm.stopped_ || vm.instructions_ >= limit)) {
+    vm.stopped_ = true;
     lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);  // keep failing if a pcall catches it
+    lua_sethook(vm.L_, count_hook, LUA_MASKCOUNT, 1);  // and in the main thread
     lua_getinfo(L, "Sl", ar);
-    luaL_error(L,
-               "%s:%d: stopped: the script ran %I Lua instructions, the limit (runaway loop?); "
-               "raise it with --max-instructions N, or 0 for no limit",
-               ar->short_src, ar->currentline, static_cast<lua_Integer>(limit));
+    luaL_error(L, "%s:%d: %s", ar->short_src, ar->currentline, limit_message(limit).c_str());
   }
 }
+
+// coroutine.create / coroutine.wrap: charge kHookEvery, then the original
+// (upvalue 1); the new thread inherits the count hook.
+int counted_coroutine(lua_State* L) {
+  Vm& vm = Vm::of(L);
+  if (const Status st = vm.charge(kHookEvery); !st.is_ok()) return luaL_error(L, "%s", st.message().c_str());
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+Status Vm::charge(long long instructions) {
+  const long long limit = options_.max_instructions;
+  if (limit <= 0) return Status::ok();
+  instructions_ += instructions;
+  if (stopped_ || instructions_ >= limit) {
+    stopped_ = true;
+    lua_sethook(L_, count_hook, LUA_MASKCOUNT, 1);
+    return Status::error(Code::kInvalidArgument, limit_message(limit));
+  }
+  return Status::ok();
+}
+
+Vm::Call::Call(Vm& vm) : vm_(vm) {
+  if (vm_.call_depth_++ == 0) {
+    vm_.instructions_ = 0;
+    vm_.stopped_ = false;
+    if (vm_.options_.max_instructions > 0)
+      lua_sethook(vm_.L_, count_hook, LUA_MASKCOUNT, kHookEvery);
+  }
+}
+
+Vm::Call::~Call() { --vm_.call_depth_; }
 
 Vm& Vm::of(lua_State* L) { return **static_cast<Vm**>(lua_getextraspace(L)); }
 
@@ -137,6 +184,13 @@ Vm::Vm(VmOptions options) : options_(std::move(options)), rng_(options_.seed) {
   *static_cast<Vm**>(lua_getextraspace(L_)) = this;
   open_sandbox();
   bind_all(L_);
+  lua_getglobal(L_, "coroutine");
+  for (const char* fn : {"create", "wrap"}) {
+    lua_getfield(L_, -1, fn);
+    lua_pushcclosure(L_, counted_coroutine, 1);
+    lua_setfield(L_, -2, fn);
+  }
+  lua_pop(L_, 1);
   if (options_.max_instructions > 0) lua_sethook(L_, count_hook, LUA_MASKCOUNT, kHookEvery);
 }
 
@@ -217,6 +271,7 @@ void Vm::open_sandbox() {
 }
 
 Status Vm::call_protected(int nargs) {
+  const Call call(*this);
   lua_State* L = L_;
   const int base = lua_gettop(L) - nargs;
   lua_pushcfunction(L, traceback_handler);
@@ -247,6 +302,7 @@ Status Vm::load_table(const std::string& path, const std::string& key) {
   }
   lua_pushcfunction(L, traceback_handler);
   lua_insert(L, -2);
+  const Call call(*this);
   const int rc = lua_pcall(L, 0, 1, -2);
   if (rc != LUA_OK) {
     std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
