@@ -1,14 +1,16 @@
 #include "app/vm_options.h"
 
 #include <cstdlib>
+#include <filesystem>
 
 #include "core/files.h"
 #include "core/paths.h"
+#include "core/text.h"
 
 namespace squawk::app {
 
 Args::Spec with_vm_flags(Args::Spec spec) {
-  for (const char* f : {"--seed", "--out", "--max-instructions", "--navdata"})
+  for (const char* f : {"--seed", "--out", "--max-instructions", "--navdata", "--allow-read"})
     spec.value_flags.emplace_back(f);
   spec.bool_flags.emplace_back("--unsafe");
   return spec;
@@ -30,6 +32,13 @@ Result<script::VmOptions> vm_options(const Args& args) {
   if (auto out = args.get("--out")) {
     SQUAWK_RETURN_IF_ERROR(files::make_dirs(*out));
     o.out_dir = paths::absolute(*out);
+  }
+  if (auto dirs = args.get("--allow-read")) {
+    for (const auto& d : text::split(*dirs, ':')) {
+      if (d.empty()) continue;
+      if (!std::filesystem::is_directory(d)) return Status::not_found("--allow-read " + d + ": no such folder");
+      o.read_dirs.push_back(paths::absolute(d));
+    }
   }
   if (auto nav = args.get("--navdata")) {
     o.navdata_dir = *nav;

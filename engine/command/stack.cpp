@@ -300,6 +300,8 @@ Status Stack::merge_scenario(const std::string& path, const std::vector<std::str
     return Status::invalid("scenario " + text::quoted(path) + ": more than " +
                            std::to_string(kMaxIncludeDepth) + " nested IC/PCALLs");
   SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
+  if (read_filter_ && !read_filter_(file))
+    return Status::invalid("scenario " + text::quoted(file) + ": reading it is not allowed here (sandbox)");
   SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
   merge_entries(file, std::move(scn), args, relative);
   return Status::ok();
@@ -335,6 +337,8 @@ Status Stack::load_scenario(const std::string& path) {
     return Status::invalid("scenario " + text::quoted(path) + ": more than " +
                            std::to_string(kMaxIncludeDepth) + " nested IC/PCALLs");
   SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
+  if (read_filter_ && !read_filter_(file))
+    return Status::invalid("scenario " + text::quoted(file) + ": reading it is not allowed here (sandbox)");
   SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
   reset();
   merge_entries(file, std::move(scn), {}, false);

@@ -51,7 +51,7 @@ void set_number(lua_State* L, const char* key, double v) {
 }
 
 int l_new(lua_State* L) {
-  const std::string path = arg_string(L, 1, "scenario");
+  const std::string path = readable(L, arg_string(L, 1, "scenario"), "scenario");
   const std::string which = opt_string(L, 2, "settings", "eval");
   if (which != "train" && which != "eval")
     throw ArgError("squawk.env.new: settings '" + which + "': expected \"train\" or \"eval\"");
@@ -164,7 +164,7 @@ constexpr long long kEpisodeCost = 10'000;     // [instructions] charged per epi
 
 int l_evaluate(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
-  const std::string path = field_string(L, 1, "scenario", "");
+  const std::string path = readable(L, field_string(L, 1, "scenario", ""), "scenario");
   if (path.empty()) throw ArgError("squawk.env.evaluate: field 'scenario' (a scenario file) is required");
   const std::string kind = field_string(L, 1, "policy", "mlp");
   Scenario sc = load_or_throw(L, path);
@@ -185,7 +185,8 @@ int l_evaluate(lua_State* L) {
     check_status(p.status());
     policy = std::move(*p);
   } else if (kind == "mlp") {
-    auto c = rl::load_checkpoint(field_string(L, 1, "checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt")));
+    auto c = rl::load_checkpoint(readable(
+        L, field_string(L, 1, "checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt")), "checkpoint"));
     check_status(c.status());
     auto p = rl::policy_from_checkpoint(*c);
     check_status(p.status());

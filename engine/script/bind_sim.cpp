@@ -118,6 +118,8 @@ int l_new(lua_State* L) {
   command::Stack* s = new_object<command::Stack>(L, kSimMt, static_cast<uint64_t>(seed));
   s->set_navdb(std::move(db));
   s->set_base_dir(dir);
+  const Vm* vm = &Vm::of(L);  // outlives the sim (its userdata dies with the state)
+  s->set_read_filter([vm](const std::string& p) { return vm->may_read(p); });
   return 1;
 }
 

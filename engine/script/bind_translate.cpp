@@ -119,7 +119,7 @@ int l_score(lua_State* L) {
 }
 
 int l_corpus(lua_State* L) {
-  auto cases = translate::read_corpus(arg_string(L, 1, "path"));
+  auto cases = translate::read_corpus(readable(L, arg_string(L, 1, "path"), "corpus"));
   check_status(cases.status());
   lua_createtable(L, static_cast<int>(cases->size()), 0);
   for (size_t i = 0; i < cases->size(); ++i) {

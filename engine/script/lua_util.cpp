@@ -1,6 +1,7 @@
 #include "script/lua_util.h"
 
 #include <cmath>
+#include <filesystem>
 
 #include "core/text.h"
 #include "script/vm.h"
@@ -190,6 +191,16 @@ long long opt_count(lua_State* L, int idx, const char* name, long long fallback,
                     long long hi) {
   if (lua_isnoneornil(L, idx)) return fallback;
   return checked_count(arg_number(L, idx, name), std::string("argument '") + name + "'", lo, hi);
+}
+
+std::string readable(lua_State* L, const std::string& path, const char* what) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !Vm::of(L).may_read(path))  // else the loader says "not found"
+    throw ArgError(std::string(what) + " '" + path +
+                   "': reading it is not allowed: the sandbox reads only the script's folder, squawk's "
+                   "scripts/prompts/scenarios/models and folders named with --allow-read DIR (or run "
+                   "with --unsafe)");
+  return path;
 }
 
 void charge(lua_State* L, long long instructions) { check_status(Vm::of(L).charge(instructions)); }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/files.h"
+#include "core/paths.h"
 #include "core/units.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
@@ -261,7 +262,9 @@ Result<Scenario> load_scenario(const std::string& path, const VmOptions& options
   } leave;
   Scenario s;
   s.path = path;
-  s.vm = std::make_shared<Vm>(options);
+  VmOptions own = options;  // the scenario may read files beside it
+  own.read_dirs.push_back(paths::dirname(path));
+  s.vm = std::make_shared<Vm>(std::move(own));
   lua_State* L = s.vm->state();
   const int base = lua_gettop(L);
   lua_pushcfunction(L, traceback_handler);
