@@ -1,9 +1,11 @@
 // squawk serve: the radar scope. The simulation runs live on the server
 // (serve/live_sim.h); the page (web/) and the HTTP API (serve/http_server.h)
 // read its published state and post commands to it.
-#include <pthread.h>
 #include <signal.h>
 
+#include <atomic>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
@@ -18,6 +20,11 @@
 #include "serve/live_sim.h"
 
 namespace squawk::app {
+
+namespace {
+volatile std::sig_atomic_t g_stop = 0;
+extern "C" void on_stop_signal(int) { g_stop = 1; }
+}  // namespace
 
 int cmd_serve(const ArgV& argv) {
   Args::Spec spec = with_vm_flags({{"--port", "--host", "--mode", "--speed", "--web"}, {"--paused", "--auto"}});
@@ -59,17 +66,17 @@ int cmd_serve(const ArgV& argv) {
   auto bound = server.bind();
   if (!bound) return failure(bound.status());
 
-  // SIGINT / SIGTERM stop the server from a thread of their own; every other
-  // thread (started below) inherits the blocked mask.
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  // SIGINT / SIGTERM set a flag (whichever thread receives them, library
+  // threads included); a watcher thread stops the server when it is set.
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
   live.start();
-  std::thread waiter([&] {
-    int sig = 0;
-    sigwait(&stop_signals, &sig);
+  std::atomic<bool> done{false};
+  std::thread watcher([&] {
+    while (!g_stop && !done) std::this_thread::sleep_for(std::chrono::milliseconds(50));
     live.stop();
     server.stop();
   });
@@ -77,9 +84,8 @@ int cmd_serve(const ArgV& argv) {
               scenario.empty() ? "no scenario" : scenario.c_str(), static_cast<size_t>(stack.sim().n()));
   std::fflush(stdout);
   Status st = server.listen();
-  live.stop();
-  pthread_kill(waiter.native_handle(), SIGTERM);
-  waiter.join();
+  done = true;
+  watcher.join();
   return st.is_ok() ? kExitOk : failure(st);
 }
 
