@@ -8,9 +8,11 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <thread>
 
 #include "app/cli.h"
+#include "app/scope_teammate.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
 #include "core/files.h"
@@ -27,7 +29,8 @@ extern "C" void on_stop_signal(int) { g_stop = 1; }
 }  // namespace
 
 int cmd_serve(const ArgV& argv) {
-  Args::Spec spec = with_vm_flags({{"--port", "--host", "--mode", "--speed", "--web"}, {"--paused", "--auto"}});
+  Args::Spec spec = with_vm_flags({{"--port", "--host", "--mode", "--speed", "--web", "--policy", "--checkpoint"},
+                                      {"--paused", "--auto", "--agent"}});
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("serve", args.status().message());
   if (args->positional().size() > 1) return usage_error("serve", "expected at most one SCENARIO");
@@ -59,9 +62,22 @@ int cmd_serve(const ArgV& argv) {
   stack.set_dtmult(mult);
   if (!args->has("--paused")) stack.sim().op();
 
+  std::unique_ptr<ScopeTeammate> teammate;
+  if (args->has("--agent")) {
+    TeammateOptions to;
+    to.policy = args->get_or("--policy", "mlp");
+    to.checkpoint = args->get_or("--checkpoint", "");
+    auto made = ScopeTeammate::make(to, *vmo);
+    if (!made) return failure(made.status());
+    teammate = std::move(*made);
+    if (Status st = teammate->start(stack); !st.is_ok()) return failure(st);
+  } else if (args->has("--policy") || args->has("--checkpoint") || args->has("--auto")) {
+    return usage_error("serve", "--policy, --checkpoint and --auto go with --agent");
+  }
+
   serve::LiveOptions lo;
   lo.auto_advisories = args->has("--auto");
-  serve::LiveSim live(**session, lo);
+  serve::LiveSim live(**session, lo, teammate.get());
   serve::HttpServer server(live, stack.navdb(), so);
   auto bound = server.bind();
   if (!bound) return failure(bound.status());
