@@ -9,8 +9,8 @@ const Scope = (() => {
   const ctx = canvas.getContext("2d");
   const colors = {
     bg: "#050908", grid: "#15302a", gridText: "#3f6b5c", ac: "#7cf0b0", sel: "#5ad8ff",
-    conf: "#ff4d4d", warn: "#ffb347", route: "#5ad8ff", fix: "#4d7466", apt: "#8fb3a4",
-    text: "#b9d8cb", pz: "#2f6f58",
+    conf: "#ff4d4d", warn: "#ffb347", route: "#5ad8ff", fix: "#2f4c42", apt: "#7d9c90",
+    text: "#b9d8cb", pz: "#2f6f58", fixText: "#3d5f53",
   };
   const view = { lat0: 52, lon0: 4, ppnm: 8, fitted: false };
   const opts = { pz: false, fixes: true, vectorMin: 1 };
@@ -97,9 +97,9 @@ const Scope = (() => {
     for (const [id, lat, lon] of nav.fixes) {
       const [x, y] = px(lat, lon);
       if (x < -10 || y < -10 || x > canvas.width + 10 || y > canvas.height + 10) continue;
-      ctx.strokeStyle = colors.fix; ctx.fillStyle = colors.fix;
-      ctx.beginPath(); ctx.moveTo(x, y - 4); ctx.lineTo(x - 3.5, y + 2.5); ctx.lineTo(x + 3.5, y + 2.5); ctx.closePath(); ctx.stroke();
-      if (view.ppnm > 6) ctx.fillText(id, x + 5, y + 3);
+      ctx.strokeStyle = colors.fix;
+      ctx.beginPath(); ctx.moveTo(x, y - 3); ctx.lineTo(x - 2.6, y + 1.8); ctx.lineTo(x + 2.6, y + 1.8); ctx.closePath(); ctx.stroke();
+      if (view.ppnm > 14) { ctx.fillStyle = colors.fixText; ctx.fillText(id, x + 4, y + 3); }
     }
     for (const [id, lat, lon] of nav.airports) {
       const [x, y] = px(lat, lon);
@@ -146,6 +146,16 @@ const Scope = (() => {
     }
   }
 
+  // Text on a dark box so that it stays legible over the map.
+  function label(text, x, y) {
+    const w = ctx.measureText(text).width;
+    const fill = ctx.fillStyle;
+    ctx.fillStyle = "rgba(5, 9, 8, 0.75)";
+    ctx.fillRect(x - 2, y - 11, w + 4, 14);
+    ctx.fillStyle = fill;
+    ctx.fillText(text, x, y);
+  }
+
   const fl = (ft) => String(Math.round(ft / 100)).padStart(3, "0");
 
   function drawConflicts() {
@@ -165,7 +175,8 @@ const Scope = (() => {
       const [xa, ya] = px(c.cpa[0][0], c.cpa[0][1]), [xb, yb] = px(c.cpa[1][0], c.cpa[1][1]);
       ctx.beginPath(); ctx.moveTo(xa, ya); ctx.lineTo(xb, yb); ctx.stroke();
       const tlos = c.tlos_s == null ? "" : c.tlos_s > 0 ? `LoS in ${mmss(c.tlos_s)}` : "LoS";
-      ctx.fillText(`${tlos}  CPA ${c.dcpa_nm.toFixed(1)} NM in ${mmss(c.tcpa_s)}`, (xa + xb) / 2 + 8, (ya + yb) / 2 + 14);
+      ctx.font = "bold 11px monospace";
+      label(`${tlos}  CPA ${c.dcpa_nm.toFixed(1)} NM in ${mmss(c.tcpa_s)}`, (xa + xb) / 2 + 8, (ya + yb) / 2 + 16);
     }
   }
 
@@ -202,10 +213,10 @@ const Scope = (() => {
     const trend = a.vs_fpm > 100 ? "↑" : a.vs_fpm < -100 ? "↓" : " ";
     const selfl = Math.abs(a.sel_alt_ft - a.alt_ft) > 50 ? fl(a.sel_alt_ft) : "";
     ctx.font = "bold 12px monospace";
-    ctx.fillText(a.id, bx, by);
+    label(a.id, bx, by);
     ctx.font = "12px monospace";
-    ctx.fillText(`${fl(a.alt_ft)}${trend}${selfl}`, bx, by + 13);
-    ctx.fillText(`${Math.round(a.gs_kt)} ${a.type}`, bx, by + 26);
+    label(`${fl(a.alt_ft)}${trend}${selfl}`, bx, by + 13);
+    label(`${Math.round(a.gs_kt)} ${a.type}`, bx, by + 26);
   }
 
   function draw() {
