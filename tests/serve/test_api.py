@@ -105,7 +105,7 @@ def test_plain(squawk):
         t3 = state(addr)["simt"]
         time.sleep(1.0)
         t4 = state(addr)["simt"]
-        check(2.5 <= t4 - t3 <= 6.0, f"OP x4: {t4 - t3:.2f} s of sim time in 1 s of wall clock")
+        check(2.0 <= t4 - t3 <= 8.0, f"OP x4: {t4 - t3:.2f} s of sim time in 1 s of wall clock")
 
         code, r = request(addr, "/api/command", raw=b"x" * 100_000)
         check(code == 413, f"a 100 kB body is refused (HTTP {code})")
