@@ -153,7 +153,7 @@ const std::vector<Subcommand>& subcommands() {
       {"llm", "llm chat TEXT | llm embed TEXT   ask the configured LLM server directly",
        "usage: squawk llm chat TEXT... [--stream] [--system TEXT] [--llm-url URL]\n"
        "                  [--llm-model NAME] [--llm-api ollama|openai] [--temperature T]\n"
-       "                  [--seed N] [--context TOKENS] [--timeout SECONDS]\n"
+       "                  [--seed N] [--context TOKENS] [--timeout SECONDS] [--max-reply-mb MB]\n"
        "       squawk llm embed TEXT... [same server flags]\n\n"
        "Sends one request to the LLM server the translator would use, to check the\n"
        "configuration: `chat` prints the reply (--stream prints it as it arrives)\n"

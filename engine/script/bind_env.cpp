@@ -211,7 +211,7 @@ void bind_env(lua_State* L) {
                                      {"state", guarded<l_state>},
                                      {"mvp_action", guarded<l_mvp_action>},
                                      {nullptr, nullptr}};
-  define_class<EnvBox>(L, kEnvMt, methods);
+  define_class(L, kEnvMt, methods);
   push_squawk_subtable(L, "env");
   lua_pushcfunction(L, guarded<l_new>);
   lua_setfield(L, -2, "new");

@@ -160,7 +160,7 @@ void bind_gpt2(lua_State* L) {
                               {"decode", guarded<l_decode>},   {"generate", guarded<l_generate>},
                               {"logits", guarded<l_logits>},   {"hidden", guarded<l_hidden>},
                               {nullptr, nullptr}};
-  define_class<gpt2::Bundle>(L, kModelMt, methods);
+  define_class(L, kModelMt, methods);
   push_squawk_subtable(L, "gpt2");
   lua_pushcfunction(L, guarded<l_load>);
   lua_setfield(L, -2, "load");

@@ -96,8 +96,8 @@ int l_offline(lua_State* L) {
   translate::Translation tr;
   if (lua_isnoneornil(L, 2)) {
     tr = translate::translate_offline(text, nullptr);
-  } else if (void* p = luaL_testudata(L, 2, kSimMt)) {
-    translate::StackWorld w(*static_cast<const command::Stack*>(p));
+  } else if (const auto* sim = test_object<command::Stack>(L, 2, kSimMt, "world")) {
+    translate::StackWorld w(*sim);
     tr = translate::translate_offline(text, &w);
   } else if (lua_istable(L, 2)) {
     translate::StaticWorld w = read_world(L, 2);
