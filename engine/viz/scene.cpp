@@ -156,7 +156,7 @@ std::string render_scene(const Scene& scene, const RenderOptions& opt) {
     if (scene.ownship ? k > 0 : now.aircraft[k].alert)
       grow(pr.x_km(now.aircraft[k].lon), pr.y_km(now.aircraft[k].lat), rpz_km);
   if (scene.waypoint) grow(pr.x_km(scene.wpt_lon), pr.y_km(scene.wpt_lat), scene.wpt_radius_km);
-  const double margin = 3.5 * fs + 14;  // [px] room for labels at the map's edge
+  const double margin = std::min(3.5 * fs + 14, 0.08 * size);  // [px] room for labels at the map's edge
   const double w_px = size - 2 * margin, h_px = map_bottom - map_top - 2 * margin;
   const double span_x = std::max(xhi - xlo, 1.0), span_y = std::max(yhi - ylo, 1.0);
   const double scale = std::min(w_px / span_x, h_px / span_y);  // [px/km]
