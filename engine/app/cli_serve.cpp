@@ -1,14 +1,18 @@
 // squawk serve: the radar scope. The simulation runs live on the server
 // (serve/live_sim.h); the page (web/) and the HTTP API (serve/http_server.h)
 // read its published state and post commands to it.
-#include <pthread.h>
 #include <signal.h>
 
+#include <atomic>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <thread>
 
 #include "app/cli.h"
+#include "app/scope_teammate.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
 #include "core/files.h"
@@ -19,8 +23,14 @@
 
 namespace squawk::app {
 
+namespace {
+volatile std::sig_atomic_t g_stop = 0;
+extern "C" void on_stop_signal(int) { g_stop = 1; }
+}  // namespace
+
 int cmd_serve(const ArgV& argv) {
-  Args::Spec spec = with_vm_flags({{"--port", "--host", "--mode", "--speed", "--web"}, {"--paused", "--auto"}});
+  Args::Spec spec = with_vm_flags({{"--port", "--host", "--mode", "--speed", "--web", "--policy", "--checkpoint"},
+                                      {"--paused", "--auto", "--agent"}});
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("serve", args.status().message());
   if (args->positional().size() > 1) return usage_error("serve", "expected at most one SCENARIO");
@@ -52,24 +62,37 @@ int cmd_serve(const ArgV& argv) {
   stack.set_dtmult(mult);
   if (!args->has("--paused")) stack.sim().op();
 
+  std::unique_ptr<ScopeTeammate> teammate;
+  if (args->has("--agent")) {
+    TeammateOptions to;
+    to.policy = args->get_or("--policy", "mlp");
+    to.checkpoint = args->get_or("--checkpoint", "");
+    auto made = ScopeTeammate::make(to, *vmo);
+    if (!made) return failure(made.status());
+    teammate = std::move(*made);
+    if (Status st = teammate->start(stack); !st.is_ok()) return failure(st);
+  } else if (args->has("--policy") || args->has("--checkpoint") || args->has("--auto")) {
+    return usage_error("serve", "--policy, --checkpoint and --auto go with --agent");
+  }
+
   serve::LiveOptions lo;
   lo.auto_advisories = args->has("--auto");
-  serve::LiveSim live(**session, lo);
+  serve::LiveSim live(**session, lo, teammate.get());
   serve::HttpServer server(live, stack.navdb(), so);
   auto bound = server.bind();
   if (!bound) return failure(bound.status());
 
-  // SIGINT / SIGTERM stop the server from a thread of their own; every other
-  // thread (started below) inherits the blocked mask.
-  sigset_t stop_signals;
-  sigemptyset(&stop_signals);
-  sigaddset(&stop_signals, SIGINT);
-  sigaddset(&stop_signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  // SIGINT / SIGTERM set a flag (whichever thread receives them, library
+  // threads included); a watcher thread stops the server when it is set.
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
   live.start();
-  std::thread waiter([&] {
-    int sig = 0;
-    sigwait(&stop_signals, &sig);
+  std::atomic<bool> done{false};
+  std::thread watcher([&] {
+    while (!g_stop && !done) std::this_thread::sleep_for(std::chrono::milliseconds(50));
     live.stop();
     server.stop();
   });
@@ -77,9 +100,8 @@ int cmd_serve(const ArgV& argv) {
               scenario.empty() ? "no scenario" : scenario.c_str(), static_cast<size_t>(stack.sim().n()));
   std::fflush(stdout);
   Status st = server.listen();
-  live.stop();
-  pthread_kill(waiter.native_handle(), SIGTERM);
-  waiter.join();
+  done = true;
+  watcher.join();
   return st.is_ok() ? kExitOk : failure(st);
 }
 

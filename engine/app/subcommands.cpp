@@ -153,7 +153,8 @@ const std::vector<Subcommand>& subcommands() {
        cmd_repl},
       {"serve", "serve [SCENARIO.scn]       the radar scope in a browser, simulation running live",
        "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--speed X] [--paused]\n"
-       "                    [--mode offline|single|multi] [--seed N] [--navdata DIR] [--web DIR]\n\n"
+       "                    [--mode offline|single|multi] [--seed N] [--navdata DIR] [--web DIR]\n"
+       "                    [--agent [--policy mlp|gpt2] [--checkpoint FILE] [--auto]]\n\n"
        "Serves a radar scope at http://127.0.0.1:8080/ while the simulation runs live\n"
        "on the server: real time x DTMULT (--speed sets it; HOLD, OP and FF work as\n"
        "commands). The page shows the traffic, conflicts and their closest points of\n"
@@ -162,7 +163,13 @@ const std::vector<Subcommand>& subcommands() {
        "  --port N      listen port (0: any free port; the URL is printed)\n"
        "  --host ADDR   listen address; default 127.0.0.1 (this machine only)\n"
        "  --paused      start in HOLD\n"
-       "  --web DIR     serve the page from DIR instead of the shipped web/\n\n"
+       "  --web DIR     serve the page from DIR instead of the shipped web/\n"
+       "  --agent       the AI teammate: the demo's episode of --seed (KL001 and its\n"
+       "                intruders) with the deconfliction agent, whose advisories\n"
+       "                the page offers to accept or reject (the log says who decided)\n"
+       "  --policy K    the agent: mlp (default) or gpt2; --checkpoint FILE another one\n"
+       "  --auto        execute the agent's advisories without asking (the page can\n"
+       "                switch this on and off)\n\n"
        "HTTP API (JSON): GET /api/state, GET /api/stream (server-sent events, 10 Hz),\n"
        "POST /api/command {\"text\": ...}, POST /api/advisory {\"id\", \"decision\"},\n"
        "POST /api/auto {\"on\"}, GET /api/navdata?south=&north=&west=&east=.\n",

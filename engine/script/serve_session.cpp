@@ -70,7 +70,8 @@ Result<std::unique_ptr<ServeSession>> ServeSession::open(Vm& vm, const std::stri
     return st;
   }
   lua_getfield(L, -1, "sim");
-  auto* stack = static_cast<command::Stack*>(luaL_testudata(L, -1, kSimMetatable));
+  ObjectHeader* h = test_header(L, -1, kSimMetatable);
+  command::Stack* stack = h && h->alive ? &reinterpret_cast<ObjectBox<command::Stack>*>(h)->value : nullptr;
   lua_pop(L, 1);
   if (!stack) {
     lua_settop(L, top);

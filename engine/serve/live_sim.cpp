@@ -174,7 +174,6 @@ void LiveSim::execute(Advisory& a, const std::string& who) {
                 join(r["commands"].get<std::vector<std::string>>(), " ; ") +
                 (r["ok"].get<bool>() ? "" : " (" + r["message"].get<std::string>() + ")");
   }
-  if (teammate_) teammate_->decided(a.text, true);
 }
 
 json LiveSim::decide(int id, bool accept, const std::string& who) {
@@ -189,7 +188,6 @@ json LiveSim::decide(int id, bool accept, const std::string& who) {
     it->status = "rejected";
     it->decided_by = who;
     log(who, "rejected advisory " + std::to_string(id));
-    if (teammate_) teammate_->decided(it->text, false);
   }
   return {{"ok", true}, {"id", id}, {"status", it->status}, {"outcome", it->outcome}};
 }

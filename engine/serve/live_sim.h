@@ -43,8 +43,6 @@ class Teammate {
   };
   virtual ~Teammate() = default;
   virtual Result<Output> tick(command::Stack& stack) = 0;
-  // Called when an advisory was accepted or rejected (its English text).
-  virtual void decided(const std::string& english, bool accepted) = 0;
 };
 
 struct LiveOptions {
