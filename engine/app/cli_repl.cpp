@@ -201,6 +201,8 @@ int cmd_repl(const ArgV& argv) {
   const std::string scenario = args->positional().empty() ? "" : paths::absolute(args->positional()[0]);
   if (!scenario.empty() && !files::exists(scenario))
     return failure(Status::not_found("no scenario file '" + args->positional()[0] + "'"));
+  // The scenario named on the command line, and the files it PCALLs beside it, may be read.
+  if (!scenario.empty()) opts->read_dirs.push_back(paths::dirname(scenario));
   script::Vm vm(*opts);
   auto session = script::ReplSession::open(vm, scenario, args->get_or("--mode", ""), *clock);
   if (!session) return failure(session.status());
