@@ -133,6 +133,7 @@ std::string render_scene(const Scene& scene, const RenderOptions& opt) {
   const Frame& now = frames[fi];
   const double size = opt.size_px;
   const double fs = std::clamp(size / 60.0, 8.0, 12.0);         // [px] label font
+  const double sym = std::clamp(size / 720.0, 0.6, 1.5);        // [-] symbol scale
   const double fs_title = std::clamp(size / 50.0, 9.0, 14.0);   // [px] caption font
   const double top = fs_title * 1.25 + fs * 1.3 + 12;           // [px] caption band
   const double bottom_band = fs * 2.2 + 12;                     // [px] scale bar and note band
@@ -156,7 +157,7 @@ std::string render_scene(const Scene& scene, const RenderOptions& opt) {
     if (scene.ownship ? k > 0 : now.aircraft[k].alert)
       grow(pr.x_km(now.aircraft[k].lon), pr.y_km(now.aircraft[k].lat), rpz_km);
   if (scene.waypoint) grow(pr.x_km(scene.wpt_lon), pr.y_km(scene.wpt_lat), scene.wpt_radius_km);
-  const double margin = 3.5 * fs + 14;  // [px] room for labels at the map's edge
+  const double margin = std::min(3.5 * fs + 14, 0.08 * size);  // [px] room for labels at the map's edge
   const double w_px = size - 2 * margin, h_px = map_bottom - map_top - 2 * margin;
   const double span_x = std::max(xhi - xlo, 1.0), span_y = std::max(yhi - ylo, 1.0);
   const double scale = std::min(w_px / span_x, h_px / span_y);  // [px/km]
@@ -194,7 +195,7 @@ std::string render_scene(const Scene& scene, const RenderOptions& opt) {
   for (size_t k = 0; k < now.aircraft.size(); ++k) {
     const Pose& a = now.aircraft[k];
     const bool ringed = scene.ownship ? k > 0 : a.alert;
-    labels.block(around(P(a.lat, a.lon), std::max(scene.ownship && k == 0 ? 13.0 : 9.0,
+    labels.block(around(P(a.lat, a.lon), std::max(sym * (scene.ownship && k == 0 ? 13.0 : 9.0),
                                                   ringed ? rpz_km * scale * 0.7 : 0.0)));
   }
   // Closest approach of the ownship to any intruder so far.
@@ -226,12 +227,12 @@ std::string render_scene(const Scene& scene, const RenderOptions& opt) {
     const bool intrusion = own && geo::kwikdist_nm(own->lat, own->lon, a.lat, a.lon) < scene.rpz_nm;
     const std::string col = (intrusion || a.alert) ? kAlert : kOther;
     if (own || a.alert) svg.circle(c, rpz_km * scale, col, "none", 1.5);
-    svg.polygon(needle(c, a.hdg, 9, 5), col);
+    svg.polygon(needle(c, a.hdg, 9 * sym, 5 * sym), col);
     todo.push_back({c, a.id, a.info, col, (own || a.alert) ? std::max(10.0, rpz_km * scale + 3) : 10, true});
   }
   if (own) {
     const Point o = P(own->lat, own->lon);
-    svg.polygon(needle(o, own->hdg, 13, 7), kOwn);
+    svg.polygon(needle(o, own->hdg, 13 * sym, 7 * sym), kOwn);
     todo.insert(todo.begin(), {o, own->id, own->info, kOwn, 15, true});
     todo.push_back({s0, "start", "", kOwn, 9, false});
   }

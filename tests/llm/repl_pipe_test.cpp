@@ -63,7 +63,7 @@ TEST_CASE("repl from a pipe: FF moves the clock, conflicts are shown, a scenario
     MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
     return;
   }
-  const std::string out = run_repl(std::string("--mode offline ") + SQUAWK_TEST_DATA + "/repl/failures.scn",
+  const std::string out = run_repl(std::string("--mode offline ") + SQUAWK_TEST_DATA + "/../lua/repl_failures.scn",
                                    "fast forward 5 minutes\n"
                                    ":state\n"
                                    "!HOLD\n");

@@ -105,7 +105,7 @@ end
 -- A scenario whose commands fail is summarised like `squawk scn`; its ECHO
 -- lines and later failures appear while time runs.
 do
-  local r = repl.new({ scenario = squawk.home .. "/tests/data/repl/failures.scn", mode = "offline" })
+  local r = repl.new({ scenario = squawk.home .. "/tests/lua/repl_failures.scn", mode = "offline" })
   local open = r:opening()
   check(find(open, "2 failed"), open)
   check(find(open, "DEST: argument 2"), open)
