@@ -12,6 +12,7 @@
 
 #include "core/files.h"
 #include "core/rng.h"
+#include "gpt2/bpe.h"
 #include "gpt2/checkpoint.h"
 
 using namespace squawk;
@@ -78,4 +79,18 @@ TEST_CASE("NaN or infinite weights are refused with the tensor's name") {
   auto r = load_model(dir);
   REQUIRE_FALSE(r.is_ok());
   CHECK(r.status().message().find("h.1.mlp.c_fc.weight' holds NaN or infinite weights") != std::string::npos);
+}
+
+TEST_CASE("a merges.txt line with a NUL byte is quoted whole in the error (point 18)") {
+  auto r = Tokenizer::from_hf("{\"a\": 0, \"b\": 1}", std::string("a\0x b c\n", 8));
+  REQUIRE_FALSE(r.is_ok());
+  const std::string& m = r.status().message();
+  CHECK(m.find('\0') == std::string::npos);
+  CHECK(m.find("'a\\x00x b c' is not two tokens") != std::string::npos);
+}
+
+TEST_CASE("a device is not read as a file (point 18: /dev/zero as a corpus)") {
+  auto r = files::read("/dev/zero");
+  REQUIRE_FALSE(r.is_ok());
+  CHECK(r.status().message().find("not a regular file") != std::string::npos);
 }
