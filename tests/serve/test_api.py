@@ -184,8 +184,21 @@ def test_teammate(squawk):
         check(server.wait(timeout=10) == 0, "squawk serve --agent exits 0 on SIGTERM")
 
 
+def test_usage(squawk):
+    import subprocess
+    for args, rc, text in [(["--port", "70000"], 2, "expected a port number"),
+                           (["--speed", "0"], 2, "expected a multiple of real time"),
+                           (["--auto"], 2, "go with --agent"),
+                           (["no-such.scn"], 1, "no scenario file 'no-such.scn'"),
+                           (["--host", "999.1.1.1", "--port", "0"], 1, "cannot listen on 999.1.1.1"),
+                           (["--web", "/no/such/dir", "--port", "0"], 1, "web folder '/no/such/dir' does not exist")]:
+        p = subprocess.run([squawk, "serve", *args], capture_output=True, text=True, timeout=30)
+        check(p.returncode == rc and text in p.stderr, f"serve {' '.join(args)} -> exit {p.returncode}, {p.stderr.strip()!r}")
+
+
 def main():
     squawk = sys.argv[1]
+    test_usage(squawk)
     test_plain(squawk)
     test_teammate(squawk)
     print(f"{failures} failed")
