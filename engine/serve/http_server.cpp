@@ -57,6 +57,12 @@ HttpServer::HttpServer(LiveSim& live, const command::NavDb* navdb, ServerOptions
     : live_(live), navdb_(navdb), options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {
   const int threads = options_.threads;
   server_->new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+  // SO_REUSEADDR only: the library's default adds SO_REUSEPORT, which would
+  // let a second server share the port and take half of the connections.
+  server_->set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   server_->set_payload_max_length(options_.max_body);
   server_->set_read_timeout(5, 0);
   server_->set_write_timeout(5, 0);

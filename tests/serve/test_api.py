@@ -118,6 +118,11 @@ def test_plain(squawk):
         code, r = request(addr, "/api/advisory", {"id": 1, "decision": "accept"})
         check(code == 409 and "no advisory" in r["message"], f"unknown advisory (HTTP {code})")
 
+        import subprocess
+        p = subprocess.run([squawk, "serve", "--port", addr.rsplit(":", 1)[1]], capture_output=True, text=True,
+                           timeout=30)
+        check(p.returncode == 1 and "in use" in p.stderr, f"a second server on the same port is refused: {p.stderr!r}")
+
         # A client that opens a stream and never reads must not stall the
         # simulation or the other streams.
         stalled = socket.create_connection(tuple(addr.rsplit(":", 1)))
