@@ -96,6 +96,19 @@ void HttpServer::routes() {
   httplib::Server& s = *server_;
   const auto command_timeout = std::chrono::seconds(options_.command_timeout_s);
 
+  // Bound to loopback, the server answers only requests addressed to a
+  // loopback name, so a web page whose domain re-resolves to 127.0.0.1 (DNS
+  // rebinding) cannot read the state or send commands.
+  if (options_.host == "127.0.0.1" || options_.host == "localhost" || options_.host == "::1") {
+    s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+      std::string host = req.get_header_value("Host");
+      host = host.substr(0, host.rfind(':') == std::string::npos || host.back() == ']' ? host.size() : host.rfind(':'));
+      if (host == "127.0.0.1" || host == "localhost" || host == "[::1]") return httplib::Server::HandlerResponse::Unhandled;
+      fail(res, 403, "Host '" + req.get_header_value("Host") + "': this server answers 127.0.0.1 and localhost only");
+      return httplib::Server::HandlerResponse::Handled;
+    });
+  }
+
   s.Get("/api/state", [this](const httplib::Request&, httplib::Response& res) {
     res.set_header("Cache-Control", "no-store");
     res.set_content(*live_.state().second, "application/json");

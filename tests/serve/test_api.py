@@ -56,7 +56,7 @@ def aircraft(addr, acid):
 def stream_events(addr, seconds):
     """Counts `data:` events on /api/stream for `seconds`."""
     s = socket.create_connection(tuple(addr.rsplit(":", 1)), timeout=5)
-    s.sendall(b"GET /api/stream HTTP/1.1\r\nHost: x\r\n\r\n")
+    s.sendall(b"GET /api/stream HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
     buf, end = b"", time.time() + seconds
     while time.time() < end:
         buf += s.recv(1 << 20)
@@ -118,6 +118,12 @@ def test_plain(squawk):
         code, r = request(addr, "/api/advisory", {"id": 1, "decision": "accept"})
         check(code == 409 and "no advisory" in r["message"], f"unknown advisory (HTTP {code})")
 
+        s_ = socket.create_connection(tuple(addr.rsplit(":", 1)), timeout=5)
+        s_.sendall(b"GET /api/state HTTP/1.1\r\nHost: evil.example:80\r\nConnection: close\r\n\r\n")
+        head = s_.recv(4096).split(b"\r\n", 1)[0]
+        s_.close()
+        check(b" 403 " in head, f"a request for another host name is refused: {head!r}")
+
         import subprocess
         p = subprocess.run([squawk, "serve", "--port", addr.rsplit(":", 1)[1]], capture_output=True, text=True,
                            timeout=30)
@@ -127,7 +133,7 @@ def test_plain(squawk):
         # simulation or the other streams.
         stalled = socket.create_connection(tuple(addr.rsplit(":", 1)))
         stalled.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
-        stalled.sendall(b"GET /api/stream HTTP/1.1\r\nHost: x\r\n\r\n")
+        stalled.sendall(b"GET /api/stream HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
         t5 = state(addr)["simt"]
         n = stream_events(addr, 2.0)
         t6 = state(addr)["simt"]
