@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `squawk repl` on a real terminal (a tmux pane): Tab completion of commands
 # and callsigns, Ctrl-C clearing the line without leaving, the running clock
-# moving time between keystrokes, Ctrl-D ending the session.
+# moving time between keystrokes and its conflict messages appearing above
+# the line being typed, Ctrl-D ending the session.
 # usage: tests/repl_tty.sh path/to/squawk   (run from the repo root)
 set -u
 sq=$(realpath "${1:?usage: tests/repl_tty.sh SQUAWK_BINARY}")
@@ -49,11 +50,15 @@ if pane | grep -q "HDG KL204 10"; then
 else
   echo "ok   the cleared line did not run"
 fi
+keys '!CRE BAW1 B744 50 4 90 FL300 280' Enter '!CRE DLH2 A320 50 4.8 270 FL300 280' Enter '!ASAS ON' Enter
+wait_for "head-on pair" "ok: ASAS ON"
 keys ':clock 100' Enter
 wait_for "clock started" "clock running at 100 x real time"
-sleep 1.5
-keys ':state' Enter
-wait_for "running clock moved time" "t = [1-9][0-9]{2,}\.[0-9] s, 1 aircraft"
+keys 'BAW1 tur'
+wait_for "conflict reported while typing" "conflict BAW1 & DLH2: loss of separation in"
+wait_for "typed text kept below it" 'squawk> BAW1 tur$'
+keys C-u ':state' Enter
+wait_for "running clock moved time" "t = [1-9][0-9]*\.[0-9] s, 3 aircraft"
 keys C-d
 wait_for "Ctrl-D ends the session" "REPL-EXIT=0"
 echo "$fails failed"

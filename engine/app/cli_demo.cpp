@@ -103,7 +103,7 @@ class Demo : public env::EpisodeObserver {
     f.t = stack_.sim().simt();
     for (int i = 0; i < t.n(); ++i) {
       const size_t k = static_cast<size_t>(i);
-      f.aircraft.push_back({t.id[k], t.lat[k], t.lon[k], t.hdg[k]});
+      f.aircraft.push_back({t.id[k], t.lat[k], t.lon[k], t.hdg[k], {}, false});
     }
     f.note = note_;
     note_.clear();

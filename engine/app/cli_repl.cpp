@@ -198,9 +198,9 @@ int cmd_repl(const ArgV& argv) {
     return usage_error("repl", llm.status().message());
   opts->max_instructions = 0;  // an interactive session has no instruction budget
 
-  const std::string scenario = args->positional().empty() ? "" : paths::absolute(args->positional()[0]);
-  if (!scenario.empty() && !files::exists(scenario))
-    return failure(Status::not_found("no scenario file '" + args->positional()[0] + "'"));
+  auto named = named_scenario(*args, *opts);
+  if (!named) return failure(named.status());
+  const std::string& scenario = *named;
   script::Vm vm(*opts);
   auto session = script::ReplSession::open(vm, scenario, args->get_or("--mode", ""), *clock);
   if (!session) return failure(session.status());

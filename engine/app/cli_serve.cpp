@@ -52,9 +52,9 @@ int cmd_serve(const ArgV& argv) {
   if (speed.empty() || *end != '\0' || !(mult > 0 && mult <= 1000))
     return usage_error("serve", "--speed '" + speed + "': expected a multiple of real time in (0, 1000]");
 
-  const std::string scenario = args->positional().empty() ? "" : paths::absolute(args->positional()[0]);
-  if (!scenario.empty() && !files::exists(scenario))
-    return failure(Status::not_found("no scenario file '" + args->positional()[0] + "'"));
+  auto named = named_scenario(*args, *vmo);
+  if (!named) return failure(named.status());
+  const std::string& scenario = *named;
   script::Vm vm(*vmo);
   auto session = script::ServeSession::open(vm, scenario, args->get_or("--mode", ""));
   if (!session) return failure(session.status());

@@ -85,7 +85,10 @@ nlohmann::json to_json(lua_State* L, int idx, int depth) {
 llm::LlmConfig config_from_table(lua_State* L, int idx) {
   llm::LlmConfig c;
   if (auto env = llm::config_from_env(); env.is_ok()) c = *env;
+  const std::string env_url = c.url;
   c.url = field_string(L, idx, "url", c.url);
+  // The key from the environment goes only to the server the environment names.
+  if (c.url != env_url) c.api_key.clear();
   c.model = field_string(L, idx, "model", c.model);
   lua_getfield(L, idx, "api");
   const bool api_given = !lua_isnil(L, -1);

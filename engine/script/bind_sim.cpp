@@ -28,6 +28,8 @@
 //   sim:copy()           -> an independent copy
 //   sim:snapshot()       -> string            (the full state as bytes)
 //   squawk.sim.commands() -> { {name=, aliases={...}, args=, usage=, help=}, ... }
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "command/conformance.h"
@@ -115,6 +117,24 @@ void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
   if (!r.dest().empty()) set_str(L, "dest", r.dest());
 }
 
+constexpr long long kMaxSteps = 1'000'000'000;  // per step call
+constexpr long long kSlice = 100;                // steps between budget charges
+
+// [instructions] charged per simulation step: the work grows with the traffic.
+long long step_cost(const command::Stack& s) { return 10 + 10LL * s.sim().n(); }
+
+// Stack::run_until(t_end) in slices of kSlice steps, each charged to the budget.
+void run_charged(lua_State* L, command::Stack& s, double t_end) {
+  if (!std::isfinite(t_end)) throw ArgError("time " + std::to_string(t_end) + " s is not finite");
+  while (s.sim().simt() + 0.5 * s.sim().dt() <= t_end) {
+    charge(L, kSlice * step_cost(s));
+    const double before = s.sim().simt();
+    check_status(s.run_until(std::min(t_end, before + kSlice * s.sim().dt())));
+    if (s.sim().simt() == before) break;  // the slice is below the clock's resolution
+  }
+  check_status(s.run_until(t_end));
+}
+
 int l_new(lua_State* L) {
   const bool opts = lua_istable(L, 1);
   if (!opts && !lua_isnoneornil(L, 1)) throw ArgError(type_error(L, 1, "options", "table or nil"));
@@ -132,6 +152,8 @@ int l_new(lua_State* L) {
   command::Stack* s = new_object<command::Stack>(L, kSimMt, static_cast<uint64_t>(seed));
   s->set_navdb(std::move(db));
   s->set_base_dir(dir);
+  const Vm* vm = &Vm::of(L);  // outlives the sim (its userdata dies with the state)
+  s->set_read_filter([vm](const std::string& p) { return vm->may_read(p); });
   return 1;
 }
 
@@ -157,15 +179,17 @@ int l_load(lua_State* L) {
 
 int l_step(lua_State* L) {
   command::Stack* s = self(L);
-  const long long n = opt_integer(L, 2, "n", 1);
-  if (n < 0) throw ArgError("n must be >= 0");
-  for (long long k = 0; k < n; ++k) s->step();
+  const long long n = opt_count(L, 2, "n", 1, 0, kMaxSteps);
+  for (long long k = 0; k < n; ++k) {
+    if (k % kSlice == 0) charge(L, kSlice * step_cost(*s));
+    s->step();
+  }
   return 0;
 }
 
 int l_run_until(lua_State* L) {
   command::Stack* s = self(L);
-  check_status(s->run_until(arg_number(L, 2, "t")));
+  run_charged(L, *s, arg_number(L, 2, "t"));
   return 0;
 }
 
@@ -173,7 +197,7 @@ int l_run_for(lua_State* L) {
   command::Stack* s = self(L);
   const double d = arg_number(L, 2, "seconds");
   if (!(d >= 0)) throw ArgError("seconds must be >= 0");
-  check_status(s->run_until(s->sim().simt() + d));
+  run_charged(L, *s, s->sim().simt() + d);
   return 0;
 }
 

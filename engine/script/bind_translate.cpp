@@ -16,6 +16,7 @@
 #include "core/units.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
+#include "script/vm.h"
 #include "script/translate_graph.h"
 #include "translate/corpus.h"
 #include "translate/offline_translator.h"
@@ -118,7 +119,7 @@ int l_score(lua_State* L) {
 }
 
 int l_corpus(lua_State* L) {
-  auto cases = translate::read_corpus(arg_string(L, 1, "path"));
+  auto cases = translate::read_corpus(readable(L, arg_string(L, 1, "path"), "corpus"));
   check_status(cases.status());
   lua_createtable(L, static_cast<int>(cases->size()), 0);
   for (size_t i = 0; i < cases->size(); ++i) {
@@ -188,6 +189,7 @@ Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& 
   lua_pushstring(L, text.c_str());
   lua_pushstring(L, mode.c_str());
   lua_pushstring(L, setup.c_str());
+  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (lua_pcall(L, 4, 1, 0) != LUA_OK) {
     std::string msg = std::string("translation graph: ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
     lua_settop(L, top);

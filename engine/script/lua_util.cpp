@@ -1,8 +1,10 @@
 #include "script/lua_util.h"
 
 #include <cmath>
+#include <filesystem>
 
 #include "core/text.h"
+#include "script/vm.h"
 
 namespace squawk::script {
 
@@ -169,7 +171,7 @@ namespace {
 long long checked_count(double v, const std::string& what, long long lo, long long hi) {
   if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)) || v != std::floor(v))
     throw ArgError(what + ": expected a whole number in [" + std::to_string(lo) + ", " +
-                   std::to_string(hi) + "], got " + text::fmt_double(v));
+                   std::to_string(hi) + "], got " + (std::isnan(v) ? std::string("NaN") : text::fmt_double(v)));
   return static_cast<long long>(v);
 }
 
@@ -190,6 +192,18 @@ long long opt_count(lua_State* L, int idx, const char* name, long long fallback,
   if (lua_isnoneornil(L, idx)) return fallback;
   return checked_count(arg_number(L, idx, name), std::string("argument '") + name + "'", lo, hi);
 }
+
+std::string readable(lua_State* L, const std::string& path, const char* what) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !Vm::of(L).may_read(path))  // else the loader says "not found"
+    throw ArgError(std::string(what) + " '" + path +
+                   "': reading it is not allowed: the sandbox reads only the script's folder, squawk's "
+                   "scripts/prompts/scenarios/models and folders named with --allow-read DIR (or run "
+                   "with --unsafe)");
+  return path;
+}
+
+void charge(lua_State* L, long long instructions) { check_status(Vm::of(L).charge(instructions)); }
 
 void push_squawk_subtable(lua_State* L, const char* name) {
   lua_getglobal(L, "squawk");

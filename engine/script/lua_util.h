@@ -155,6 +155,15 @@ int finalize_object(lua_State* L);
 // __metatable and the checked finalizer. `methods` ends with {nullptr, nullptr}.
 void define_class(lua_State* L, const char* mt, const luaL_Reg* methods);
 
+// Returns `path` when the sandbox lets scripts read it (Vm::may_read) or it
+// does not exist (the loader then reports it missing), else ArgError naming
+// `what`, the path and --allow-read.
+std::string readable(lua_State* L, const std::string& path, const char* what);
+
+// Charges `instructions` of work done in C to the running VM's budget
+// (Vm::charge); ArgError when the budget is spent.
+void charge(lua_State* L, long long instructions);
+
 // Gets (creating if needed) the table squawk.<name> and leaves it on the stack.
 void push_squawk_subtable(lua_State* L, const char* name);
 

@@ -21,6 +21,7 @@ Status pcall(lua_State* L, int nargs, int nresults) {
   const int fn = lua_gettop(L) - nargs;
   lua_pushcfunction(L, traceback);
   lua_insert(L, fn);
+  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   const int rc = lua_pcall(L, nargs, nresults, fn);
   lua_remove(L, fn);
   if (rc == LUA_OK) return Status::ok();

@@ -148,6 +148,7 @@ end
 function Repl:format_reply(r)
   if r.ask then return "? " .. r.ask .. "   (answer, or say cancel)" end
   if r.cancelled then return "  cancelled" end
+  if r.error and r.kind == "trafscript" then return "  " .. r.error end
   if r.error then return "  could not translate: " .. r.error .. "\n  (:trace shows how it went)" end
   local out = {}
   if r.kind == "english" then out[1] = "> " .. table.concat(r.commands, " ; ") end

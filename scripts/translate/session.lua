@@ -26,7 +26,8 @@
 --         deleted = { id, ... } }
 --   s:tick(wall_s) -> { event, ... }
 --       The running clock: advances by wall_s x multiplier when running (OP),
---       to the FF end time at once in fast-time, not at all in HOLD.
+--       to the FF end time at once in fast-time, not at all in HOLD; wall_s
+--       counts up to kMaxTickWall.
 --   s:run(seconds) -> { event, ... }      advance now, whatever the clock
 --   s:set_clock(multiplier|nil) -> sentence   nil: stop (HOLD)
 --   s:state() -> { simt =, clock = {state = "hold"|"op"|"ff", multiplier =,
@@ -42,6 +43,7 @@
 --             failed =, first = {first failure messages}, reasons = {
 --             {reason =, count =}, ... } }
 local graph = require("translate.graph")
+local nodes = require("translate.nodes")
 
 local M = {}
 local Session = {}
@@ -50,6 +52,8 @@ Session.__index = Session
 M.kFirstShown = 3     -- failures quoted in a summary
 M.kChunk = 1.0        -- [s] sim time between conflict checks while advancing
 M.kOpenFfRate = 60.0  -- FF without an end time: sim seconds per wall second
+M.kMaxTickWall = 5.0  -- [s] most wall time one tick accounts for (a stopped
+                      -- terminal must not make the simulation jump hours)
 
 local function pair_key(a, b)
   if a > b then a, b = b, a end
@@ -98,45 +102,39 @@ function M.report(now, before)
   return r
 end
 
--- Compares the detector's pairs with the known ones; appends start/end events.
-function Session:diff_pairs(events)
-  local t = self.sim:time()
+-- Diffs the pairs of `list` ({own =, intruder =, ...}) against the known set
+-- `known` (key -> true); appends an event when one starts (start(c, key)
+-- gives its text) or ends; returns the new set.
+local function diff(known, list, t, events, kind, start, ended)
   local now = {}
-  for _, c in ipairs(self.sim:conflicts()) do
+  for _, c in ipairs(list) do
     local key, a, b = pair_key(c.own, c.intruder)
     if not now[key] then
       now[key] = true
-      if not self.conflicts[key] then
-        events[#events + 1] = { t = t, kind = "conflict", id1 = a, id2 = b, text = string.format(
-          "conflict %s: loss of separation in %.0f s, closest %.2f NM in %.0f s", key, c.tlos, c.dcpa_nm, c.tcpa) }
+      if not known[key] then
+        events[#events + 1] = { t = t, kind = kind, id1 = a, id2 = b, text = start(c, key) }
       end
     end
   end
-  for key in pairs(self.conflicts) do
+  for key in pairs(known) do
     if not now[key] then
       local a, b = key:match("^(.-) & (.*)$")
-      events[#events + 1] = { t = t, kind = "conflict_end", id1 = a, id2 = b, text = "conflict " .. key .. " ended" }
+      events[#events + 1] = { t = t, kind = kind .. "_end", id1 = a, id2 = b, text = string.format(ended, key) }
     end
   end
-  self.conflicts = now
-  local lnow = {}
-  for _, l in ipairs(self.sim:los()) do
-    local key, a, b = pair_key(l.own, l.intruder)
-    if not lnow[key] then
-      lnow[key] = true
-      if not self.los[key] then
-        events[#events + 1] = { t = t, kind = "los", id1 = a, id2 = b, text = string.format(
-          "LOSS OF SEPARATION %s: %.2f NM, %.0f ft apart", key, l.dist_nm, math.abs(l.dalt_ft)) }
-      end
-    end
-  end
-  for key in pairs(self.los) do
-    if not lnow[key] then
-      local a, b = key:match("^(.-) & (.*)$")
-      events[#events + 1] = { t = t, kind = "los_end", id1 = a, id2 = b, text = "separation regained " .. key }
-    end
-  end
-  self.los = lnow
+  return now
+end
+
+-- Compares the detector's conflicts and losses of separation with the known ones.
+function Session:diff_pairs(events)
+  local t = self.sim:time()
+  self.conflicts = diff(self.conflicts, self.sim:conflicts(), t, events, "conflict", function(c, key)
+    return string.format("conflict %s: loss of separation in %.0f s, closest %.2f NM in %.0f s", key, c.tlos,
+      c.dcpa_nm, c.tcpa)
+  end, "conflict %s ended")
+  self.los = diff(self.los, self.sim:los(), t, events, "los", function(l, key)
+    return string.format("LOSS OF SEPARATION %s: %.2f NM, %.0f ft apart", key, l.dist_nm, math.abs(l.dalt_ft))
+  end, "separation regained %s")
 end
 
 -- Moves ECHO output into events and queued-command failures into `failures`.
@@ -190,7 +188,10 @@ end
 
 function Session:clock_text()
   local state, ff_end = self.sim:run_state()
-  if state == "hold" then return "clock stopped (HOLD): time moves with :run and FF" end
+  if state == "hold" then
+    return string.format("clock stopped (HOLD; OP runs it at %g x real time): time moves with :run and FF",
+      self.sim:dtmult())
+  end
   if state == "ff" then
     return ff_end and string.format("fast-time until t = %.0f s", ff_end)
       or string.format("fast-time until HOLD (%g x real time)", M.kOpenFfRate)
@@ -210,6 +211,7 @@ function Session:set_clock(multiplier)
 end
 
 function Session:tick(wall_s)
+  wall_s = math.min(wall_s, M.kMaxTickWall)
   local events = {}
   local state, ff_end = self.sim:run_state()
   if state == "op" then
@@ -222,20 +224,11 @@ function Session:tick(wall_s)
   return events
 end
 
--- Canonical names of the commands that set the run state, by name and alias.
-local clock_names
+-- Whether a TrafScript line sets the run state (OP, HOLD, FF, DTMULT or an alias).
+local clock_commands = { OP = true, HOLD = true, FF = true, DTMULT = true }
 local function clock_command(line)
-  if not clock_names then
-    clock_names = {}
-    for _, c in ipairs(squawk.sim.commands()) do
-      if c.name == "OP" or c.name == "HOLD" or c.name == "FF" or c.name == "DTMULT" then
-        clock_names[c.name] = true
-        for _, a in ipairs(c.aliases) do clock_names[a:upper()] = true end
-      end
-    end
-  end
   local first = line:match("^%s*([%w_]+)")
-  return first and clock_names[first:upper()] or false
+  return first ~= nil and clock_commands[nodes.canonical_name(first) or ""] == true
 end
 
 local function words_upper(line)
@@ -285,6 +278,10 @@ function Session:command(text)
   local reply = { text = text, commands = {}, results = {}, events = {}, touched = {}, deleted = {} }
   if text:sub(1, 1) == "!" then
     reply.kind = "trafscript"
+    if text:sub(2):match("^%s*$") then
+      reply.error = "nothing to run: type TrafScript after !, e.g. !HDG KL204 270"
+      return reply
+    end
     reply.commands = { text:sub(2) }
     self:run_commands(reply.commands, reply)
     return reply

@@ -41,13 +41,19 @@ do
   check(find(s:set_clock(10), "10 x real time"))
   s:tick(1.5)
   check_eq(s.sim:time(), 617)
+  -- A long pause of the terminal counts as kMaxTickWall.
+  s:tick(3600)
+  check_eq(s.sim:time(), 617 + 10 * session.kMaxTickWall)
   s:set_clock(nil)
   s:tick(1.0)
-  check_eq(s.sim:time(), 617)
+  check_eq(s.sim:time(), 617 + 10 * session.kMaxTickWall)
+  -- HOLD (or its alias) when already stopped still says where the clock is.
+  r = s:command("!PAUSE")
+  check(r.clock and find(r.clock, "clock stopped (HOLD"), tostring(r.clock))
   -- A bad FF changes nothing and says why.
   r = s:command("!FF -5")
   check(not r.results[1].ok)
-  check_eq(s.sim:time(), 617)
+  check_eq(s.sim:time(), 667)
 end
 
 -- Head-on at FL300 with ASAS ON: the conflict is reported when it starts and
@@ -99,7 +105,7 @@ end
 -- A scenario whose commands fail is summarised like `squawk scn`; its ECHO
 -- lines and later failures appear while time runs.
 do
-  local r = repl.new({ scenario = squawk.home .. "/tests/data/repl/failures.scn", mode = "offline" })
+  local r = repl.new({ scenario = squawk.home .. "/tests/lua/repl_failures.scn", mode = "offline" })
   local open = r:opening()
   check(find(open, "2 failed"), open)
   check(find(open, "DEST: argument 2"), open)
@@ -170,4 +176,31 @@ do
     check(find(text, "> HDG KL204 180"), text)
     check(find(text, "hdg  90.0 -> 180"), text)
   end
+end
+
+-- The squawk.sim fields the session reads.
+do
+  local sim = squawk.sim.new()
+  check(sim:exec("CRE KL204 A320 52 4 90 FL250 M.78"))
+  check(sim:exec("ADDWPT KL204 52.5 4.5 FL300"))
+  check(sim:exec("ADDWPT KL204 53 5"))
+  local a = sim:get("KL204")
+  check_eq(a.sel_mach, 0.78)
+  check_eq(a.sel_cas_kt, nil)
+  check_eq(#a.route, 2)
+  check_eq(a.route[1].name, "KL204001")
+  check(math.abs(a.route[1].alt_ft - 30000) < 1e-6, "altitude constraint in ft")
+  check_eq(a.route[2].alt_ft, nil)
+  check_eq(a.active_wpt, "KL204001")
+  check_eq(sim:run_state(), "hold")
+  check(sim:exec("FF 30"))
+  local state, ff_end = sim:run_state()
+  check_eq(state, "ff")
+  check_eq(ff_end, 30)
+  check(sim:exec("OP"))
+  check(sim:exec("DTMULT 3"))
+  check_eq(sim:dtmult(), 3)
+  local t = sim:tally()
+  check_eq(t.failed, 0)
+  check_eq(#t.first_failures, 0)
 end
