@@ -255,10 +255,6 @@ void Stack::step() {
   test_conditions();
 }
 
-int64_t Stack::advance(double wall_s, int64_t max_steps) {
-  return sim_.advance(wall_s, max_steps, [this] { step(); });
-}
-
 Status Stack::run_until(double t_end) {
   if (!std::isfinite(t_end)) return Status::invalid("run until: time must be finite");
   while (true) {

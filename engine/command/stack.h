@@ -105,9 +105,6 @@ class Stack {
   Status run_until(double t_end);
   // One step: due commands, Simulation::step, conditions.
   void step();
-  // Steps as the run state asks (Simulation::advance: HOLD none, FF until its
-  // end, OP wall_s seconds of wall clock), each step through step().
-  int64_t advance(double wall_s, int64_t max_steps);
   // Runs the commands due at the current time without stepping.
   void process_due();
 
