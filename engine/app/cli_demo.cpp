@@ -19,6 +19,7 @@
 
 #include "app/cli.h"
 #include "app/gpt2_policy_factory.h"
+#include "app/rl_eval.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
 #include "command/stack.h"
@@ -29,9 +30,11 @@
 #include "core/units.h"
 #include "env/horizontal_cr.h"
 #include "env/recorder.h"
+#include "env/vec_env.h"
 #include "rl/checkpoint.h"
 #include "rl/prompt_checkpoint.h"
 #include "script/advisory.h"
+#include "script/policy_factory.h"
 #include "script/scenario.h"
 #include "translate/offline_translator.h"
 #include "translate/stack_world.h"
@@ -169,23 +172,18 @@ int cmd_demo(const ArgV& argv) {
   const auto& cfg = e.config();
 
   // The agent: the shipped trained MLP, or the fine-tuned GPT-2 prompt policy.
-  std::unique_ptr<rl::Policy> policy;
   const char* hint =
       "the demo needs a trained policy (train one with `squawk train scenarios/horizontal_cr.lua "
       "--policy mlp|gpt2 --out DIR`, then pass --checkpoint DIR/policy.ckpt)";
-  if (policy_kind == "mlp") {
-    auto ckpt = rl::load_checkpoint(args->get_or("--checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt")));
-    if (!ckpt) return failure(ckpt.status().with_context(hint));
-    auto p = rl::policy_from_checkpoint(*ckpt);
-    if (!p) return failure(p.status());
-    policy = std::move(*p);
-  } else {
-    auto ckpt = rl::load_prompt_checkpoint(args->get_or("--checkpoint", paths::resource(kShippedGpt2Checkpoint)));
-    if (!ckpt) return failure(ckpt.status().with_context(hint));
-    auto g = gpt2_policy_from_checkpoint(*ckpt, "", *vmo);
-    if (!g) return failure(g.status());
-    policy = std::move(g->policy);
-  }
+  auto one_env = env::VecEnv::make(sc->eval_env, 1);
+  if (!one_env) return failure(one_env.status());
+  script::PolicyOptions popts;
+  popts.checkpoint = args->get_or("--checkpoint", "");
+  auto agent = script::make_policy(policy_kind, *sc, *one_env, popts, *vmo);
+  if (!agent) return failure(agent.status().with_context(hint));
+  if (std::string w = trained_elsewhere(*agent, *sc, *vmo); !w.empty())
+    std::fprintf(stderr, "squawk demo: warning: %s\n", w.c_str());
+  std::unique_ptr<rl::Policy> policy = std::move(agent->policy);
   auto phraser = script::AdvisoryPhraser::load(args->get_or("--advisory", paths::resource("prompts/advisory.lua")), *vmo);
   if (!phraser) return failure(phraser.status());
 
@@ -214,8 +212,10 @@ int cmd_demo(const ArgV& argv) {
   env::JsonlRecorder recorder(recording);
   Demo demo(stack, quiet, args->has("--record") ? &recorder : nullptr);
   if (!quiet)
-    std::printf("squawk demo: %s agent on %s (paper rules, look-ahead %.0f s), seed %llu\n",
-                policy_kind.c_str(), sc->path.c_str(), cfg.lookahead,
+    std::printf("squawk demo: %s agent on %s (%s), seed %llu\n", policy_kind.c_str(), sc->path.c_str(),
+                cfg.rules == env::Rules::kGym
+                    ? "gym rules: the agent decides at every step"
+                    : fmt("paper rules, look-ahead %.0f s", cfg.lookahead).c_str(),
                 static_cast<unsigned long long>(vmo->seed));
   bool ok = demo.exec("sim", fmt("DT %g", cfg.dt)).is_ok() &&
             demo.exec("sim", fmt("ZONER %g", cfg.zone_radius / units::kNm)).is_ok() &&
@@ -290,8 +290,9 @@ int cmd_demo(const ArgV& argv) {
   std::printf("  losses of separation      %zu\n", demo.los_.size());
   std::printf("  extra track length        %.1f km (flown %.1f km, direct %.1f km)\n",
               (demo.flown_m_ - direct) / 1000, demo.flown_m_ / 1000, direct / 1000);
-  std::printf("  waypoint reached          %s after %.0f s of flight; episode %s\n", st.reached ? "yes" : "no",
-              stack.sim().simt(), st.success ? "successful" : "failed");
+  std::printf("  waypoint reached          %s after %.0f s of flight; episode %s (%s)\n",
+              st.reached ? "yes" : "no", stack.sim().simt(), st.success ? "successful" : "failed",
+              success_definition(*sc).c_str());
   std::printf("  environment vs simulator  %.3f m largest position difference\n", demo.worst_m_);
   std::printf("  wall time                 %.2f s\n", wall);
 
