@@ -1,5 +1,6 @@
 #include "sim/route.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/geo.h"
@@ -48,7 +49,7 @@ Status Route::add(Waypoint wp) {
   const int at = dest_.empty() ? size() : size() - 1;
   wps_.insert(wps_.begin() + at, normalized(std::move(wp)));
   if (active_ < 0) active_ = at;
-  else if (active_ >= at) ++active_;
+  else if (active_ > at) ++active_;
   return Status::ok();
 }
 
@@ -118,6 +119,16 @@ Status Route::set_orig(Waypoint orig) {
   return Status::ok();
 }
 
+Route::AltTarget Route::alt_target(int k) const {
+  double x = 0.0;
+  for (int j = k; j >= 0 && j < size(); ++j) {
+    if (wps_[j].has_alt()) return {wps_[j].alt, x};
+    if (j + 1 < size())
+      x += units::nm_to_m(geo::qdrdist(wps_[j].lat, wps_[j].lon, wps_[j + 1].lat, wps_[j + 1].lon).dist_nm);
+  }
+  return {kNoConstraint, 0.0};
+}
+
 bool Route::advance() {
   if (active_ < 0) return false;
   if (active_ + 1 >= size()) {
@@ -146,12 +157,17 @@ void Route::serialize(std::string& out) const {
   put(out, orig_lon_);
 }
 
-bool waypoint_reached(double dist, double qdr, double next_qdr, double trk, double tas, double bank) {
-  const double turn_radius = tas * tas / (units::kG0 * std::tan(bank));
-  const double dpsi = std::fabs(geo::wrap180(next_qdr - qdr)) * units::kDeg;
-  const double turn_dist = std::fabs(turn_radius * std::tan(0.5 * dpsi));
-  const bool away = std::fabs(geo::wrap180(trk - qdr)) > 90.0;
-  return dist < turn_dist || (away && dist < 1.02 * turn_radius);
+bool waypoint_reached(double dist, double qdr, double curlegdir, double trk, double gs, double turndist) {
+  const bool close = dist / std::max(1e-4, std::fabs(gs)) < 4.0;  // [s] within 4 s of flight
+  const bool too_close_to_turn = close && std::fabs(geo::wrap180(trk - qdr)) > 90.0;
+  const bool passed = std::fabs(geo::wrap180(qdr - curlegdir)) > 90.0;
+  return too_close_to_turn || passed || dist < turndist;
+}
+
+double turn_distance(double tas, double bank, double qdr, double next_qdr, bool flyby) {
+  if (!flyby) return 0.0;
+  const double r = tas * tas / (units::kG0 * std::tan(bank));
+  return std::fabs(r * std::tan(0.5 * std::fabs(geo::wrap180(qdr - next_qdr)) * units::kDeg));
 }
 
 }  // namespace squawk::sim

@@ -5,13 +5,19 @@
 // - Clock: an integer tick count and a step dt (default 0.05 s, BlueSky's
 //   simdt). simt() = t_base + ticks_since_base * dt, so time never drifts;
 //   set_dt() rebases t_base at the current time.
-// - step() advances one dt in BlueSky's order: autopilot (LNAV/VNAV),
+// - step() advances one dt in BlueSky's order: OpenAP performance update
+//   (every 1 s of sim time, openap_perf.h), autopilot (LNAV/VNAV),
 //   conflict detection and MVP (every asas_dt of sim time, when enabled),
-//   choice of autopilot or resolution targets, performance limits, airspeed
-//   (+-axmax, snapping to the target), heading (turn rate g0 tan(bank)/TAS
-//   with the new TAS, snapping to the target), vertical speed, then the
-//   flat-earth position update with R = 6 371 000 m (facts §1.8).
+//   choice of autopilot or resolution targets, performance limits (OpenAP:
+//   at the selected altitude), airspeed (+-axmax, snapping to the target),
+//   heading (turn rate g0 tan(bank)/TAS with the new TAS, snapping to the
+//   target), vertical speed (altitude select with a time-based capture band
+//   of 1.05 dt max(|vs target|, |vs|), V/S ramped at 300 ft/min per s), then
+//   the flat-earth position update with R = 6 371 000 m (facts §1.8).
 //   No wind: gs = tas and trk = hdg.
+// - Performance model: the class table of performance.h, or OpenAP per type
+//   when OpenAP data is set (set_openap; by default the data named by
+//   SQUAWK_OPENAP, see openap_data.h).
 //   No heap allocation happens in step() once buffers have grown.
 // - Every operation that can fail validates all its arguments first and
 //   leaves the simulation unchanged on error; the message starts with the
@@ -25,6 +31,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,6 +41,7 @@
 #include "sim/atmosphere.h"
 #include "sim/conflict.h"
 #include "sim/mvp.h"
+#include "sim/openap_data.h"
 #include "sim/performance.h"
 #include "sim/route.h"
 #include "sim/traffic.h"
@@ -174,6 +182,10 @@ class Simulation {
   const std::vector<LosPair>& los() const { return cd_.los(); }
 
   // --- Performance ----------------------------------------------------------
+  // OpenAP data for every aircraft (existing ones are re-initialised);
+  // null selects the class model.
+  void set_openap(std::shared_ptr<const OpenapData> data);
+  const std::shared_ptr<const OpenapData>& openap() const { return openap_; }
   const PerformanceOptions& performance_options() const { return perf_opts_; }
   // Error when a value is not finite or not positive.
   Status set_performance_options(const PerformanceOptions& opts);
@@ -196,7 +208,17 @@ class Simulation {
   // Runs a route mutation of aircraft `acid` and updates LNAV/VNAV: on when
   // the route gains its first active waypoint, off when none is left.
   template <class Op>
-  Status route_op(std::string_view acid, Op&& op);
+  Status route_op(std::string_view acid, Op&& op, bool direct = false);
+  void init_perf(int i);
+  void update_perf();
+  // A waypoint became active (BlueSky's direct / waypoint switch): leg
+  // direction, turn distance, next altitude constraint and the VNAV plan.
+  // `passing`: the turn distance is computed before the VNAV plan (switch)
+  // rather than after it (DIRECT, ADDWPT, VNAV ON), as in BlueSky.
+  void start_leg(int i, bool passing);
+  // BlueSky's ComputeVNAV: dist2vs and wp_vs for the constraint toalt [m]
+  // xtoalt [m] beyond the active waypoint.
+  void compute_vnav(int i, double toalt, double xtoalt);
   void update_autopilot();
   void update_asas();
   void update_kinematics();
@@ -211,6 +233,7 @@ class Simulation {
   CdSettings cds_;
   CrSettings crs_;
   PerformanceOptions perf_opts_;
+  std::shared_ptr<const OpenapData> openap_;
   Rng rng_;
   uint64_t next_uid_ = 1;
 
@@ -219,6 +242,7 @@ class Simulation {
   int64_t ticks_since_base_ = 0;  // steps since the last dt change
   int64_t ticks_ = 0;             // steps since reset
   double next_asas_t_ = 0.0;      // [s] sim time of the next detection
+  double next_perf_t_ = 0.0;      // [s] sim time of the next performance update
   RunState run_state_ = RunState::kHold;
   bool ff_ = false;
   std::optional<double> ff_end_;  // [s]
