@@ -19,6 +19,18 @@ constexpr double kMinAlt = -300.0;    // [m] lowest accepted altitude
 constexpr double kMaxAlt = 30000.0;   // [m] highest accepted altitude
 constexpr double kTasEps = 1e-6;      // [m/s] floor of TAS in the turn rate
 constexpr double kPerfDt = 1.0;       // [s] BlueSky's performance_dt
+constexpr double kWindMinAlt = 50.0 * units::kFt;  // [m] wind acts above this altitude
+constexpr double kOnLegDeg = 2.0;        // [deg] track within this of the leg: on the leg
+constexpr double kNoTurnSpd = -990.0;    // turn speed after a waypoint switch (none)
+constexpr double kPassedTurnSpd = -998.0;  // turn speed once on the new leg (used up)
+
+// Heading that flies track trk_deg at TAS tas in wind w (BlueSky's APorASAS).
+double wind_heading(double trk_deg, double tas, const WindNE& w) {
+  const double vw = std::hypot(w.north, w.east);
+  const double drift = trk_deg * kDeg - std::atan2(w.east, w.north);
+  const double steer = std::asin(std::clamp(vw * std::sin(drift) / std::max(0.001, tas), -1.0, 1.0));
+  return geo::wrap360(trk_deg + steer / kDeg);
+}
 constexpr double kMinSelVs = 0.1;     // [m/s] a selected V/S at or below this means the default
 constexpr double kVsAccel = 300.0 * units::kFpm;  // [m/s^2] V/S ramp, and the band within which it snaps
 
@@ -223,7 +235,13 @@ void Simulation::start_leg(int i, bool passing) {
   const Route::AltTarget at = r.alt_target(a);
   const double toalt = at.toalt >= 0.0 ? at.toalt : -999.0;  // NaN (none) and negative: no constraint
   auto turn = [&] { t.turndist[i] = turn_distance(t.tas[i], t.bank[i], qd.qdr_deg, next_qdr, !wp.flyover); };
-  if (passing) turn();
+  if (passing) {
+    turn();
+    t.oldturnspd[i] = t.turnspd[i];
+    t.turnspd[i] = kNoTurnSpd;
+  } else {
+    t.turnspd[i] = t.tas[i];
+  }
   t.nextaltco[i] = at.toalt == at.toalt ? at.toalt : -999.0;
   compute_vnav(i, toalt, at.xtoalt);
   if (!passing) turn();
@@ -303,6 +321,16 @@ void Simulation::update_autopilot() {
       start_leg(i, true);
     }
     t.sel_hdg[i] = qd.qdr_deg;
+    // Turning onto the new leg after a switch, VNAV speed mode selects the
+    // stored turn speed (BlueSky keeps it as the selected speed afterwards).
+    if (t.oldturnspd[i] > 0.0) {
+      if (std::fabs(geo::wrap180(t.trk[i] - qd.qdr_deg)) < kOnLegDeg) {
+        t.oldturnspd[i] = kPassedTurnSpd;
+      } else if (t.vnav_spd[i] && t.vnav[i]) {
+        t.sel_spd[i] = t.oldturnspd[i];
+        t.tgt_tas_alt[i] = std::nan("");
+      }
+    }
     if (t.vnav[i]) {
       const double co = t.nextaltco[i];
       if (co >= -0.1 && ((t.alt[i] > co && t.dist2wp[i] < t.dist2vs[i] + t.turndist[i]) || t.alt[i] < co)) {
@@ -362,16 +390,23 @@ void Simulation::update_kinematics() {
                   : t.vnav_vs_on[i]      ? std::fabs(t.vnav_vs[i])
                   : t.sel_vs[i] > kMinSelVs ? t.sel_vs[i]
                                          : kDefaultVs;
+    const bool windy = wind_.dim() > 0;
+    const WindNE w = windy ? wind_.at(t.lat[i], t.lon[i], t.alt[i]) : WindNE{};
+    double cr_tas = cr ? t.cr_tas[i] : 0.0;
+    if (cr && windy) {
+      const double c = t.cr_trk[i] * kDeg;
+      cr_tas = std::hypot(cr_tas * std::cos(c) - w.north, cr_tas * std::sin(c) - w.east);
+    }
     double tas_t, axmax;
     if (oap) {
-      tas_t = openap_limit_tas(lim, cr ? t.cr_tas[i] : casormach_to_tas(t.sel_spd[i], t.alt[i]), alt_t);
+      tas_t = openap_limit_tas(lim, cr ? cr_tas : casormach_to_tas(t.sel_spd[i], t.alt[i]), alt_t);
       vs_t = openap_limit_vs(*oap, lim, t.phase[i], vs_t, t.ax[i], t.tas[i]);
       axmax = lim.axmax;
     } else {
       const bool ground = perf_opts_.ground_cap && t.alt[i] <= perf_opts_.ground_alt;
       axmax = ground ? perf_opts_.ground_axmax : lim.axmax;
       if (!(t.tgt_tas_alt[i] == t.alt[i])) retarget(i, isa(t.alt[i]));
-      tas_t = cr ? t.cr_tas[i] : t.tgt_tas[i];
+      tas_t = cr ? cr_tas : t.tgt_tas[i];
       vs_t = std::min(vs_t, alt_t > t.alt[i] ? lim.vsmax : -lim.vsmin);
     }
 
@@ -387,7 +422,8 @@ void Simulation::update_kinematics() {
     }
 
     // Heading: turn rate g0 tan(bank) / TAS, snapping within one step.
-    const double hdg_t = cr ? t.cr_trk[i] : t.sel_hdg[i];
+    double hdg_t = cr ? t.cr_trk[i] : t.sel_hdg[i];
+    if (windy) hdg_t = wind_heading(hdg_t, t.tas[i], w);
     if (t.hdg[i] != hdg_t) {
       const double rate = std::tan(t.bank[i]) * units::kG0 / std::max(t.tas[i], kTasEps) / kDeg;  // [deg/s]
       const double dh = geo::wrap180(hdg_t - t.hdg[i]);
@@ -413,11 +449,19 @@ void Simulation::update_kinematics() {
       refresh_speed_outputs(i, isa(t.alt[i]));
     }
 
-    // Ground speed (no wind) and flat-earth position update.
-    t.gs[i] = t.tas[i];
-    t.trk[i] = t.hdg[i];
+    // Ground speed (wind above 50 ft) and flat-earth position update.
     t.gsnorth[i] = t.tas[i] * t.cos_hdg[i];
     t.gseast[i] = t.tas[i] * t.sin_hdg[i];
+    if (windy && t.alt[i] > kWindMinAlt) {
+      const WindNE wn = wind_.at(t.lat[i], t.lon[i], t.alt[i]);
+      t.gsnorth[i] += wn.north;
+      t.gseast[i] += wn.east;
+      t.gs[i] = std::hypot(t.gsnorth[i], t.gseast[i]);
+      t.trk[i] = geo::wrap360(std::atan2(t.gseast[i], t.gsnorth[i]) / kDeg);
+    } else {
+      t.gs[i] = t.tas[i];
+      t.trk[i] = t.hdg[i];
+    }
     t.lat[i] += dt * t.gsnorth[i] / kREarth / kDeg;
     t.coslat[i] = std::cos(t.lat[i] * kDeg);
     double lon = t.lon[i] + dt * t.gseast[i] / t.coslat[i] / kREarth / kDeg;
@@ -466,6 +510,13 @@ int Simulation::add_aircraft(std::string_view acid, std::string_view actype, dou
   set_heading_cache(i);
   t.gsnorth[i] = tas * t.cos_hdg[i];
   t.gseast[i] = tas * t.sin_hdg[i];
+  if (wind_.dim() > 0 && alt_m > kWindMinAlt) {  // the autopilot holds the track it starts on
+    const WindNE w = wind_.at(lat, lon, alt_m);
+    t.gsnorth[i] += w.north;
+    t.gseast[i] += w.east;
+    t.gs[i] = std::hypot(t.gsnorth[i], t.gseast[i]);
+    t.trk[i] = t.sel_hdg[i] = geo::wrap360(std::atan2(t.gseast[i], t.gsnorth[i]) / kDeg);
+  }
   refresh_speed_outputs(i, isa(alt_m));
   return i;
 }
@@ -571,7 +622,14 @@ Status Simulation::move(std::string_view acid, double lat, double lon, std::opti
 Status Simulation::set_heading(std::string_view acid, double hdg_deg) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "heading", hdg_deg));
-  traf_.sel_hdg[i] = geo::wrap360(hdg_deg);
+  const Traffic& t = traf_;
+  double trk = hdg_deg;
+  if (wind_.dim() > 0 && t.alt[i] > kWindMinAlt) {
+    const WindNE w = wind_.at(t.lat[i], t.lon[i], t.alt[i]);
+    const double h = hdg_deg * kDeg;
+    trk = std::atan2(t.tas[i] * std::sin(h) + w.east, t.tas[i] * std::cos(h) + w.north) / kDeg;
+  }
+  traf_.sel_hdg[i] = geo::wrap360(trk);
   traf_.lnav[i] = traf_.vnav[i] = 0;
   return Status::ok();
 }
@@ -598,6 +656,7 @@ Status Simulation::set_speed(std::string_view acid, double casmach) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   SQUAWK_RETURN_IF_ERROR(check_speed(traf_.id[i], casmach));
   traf_.sel_spd[i] = casmach;
+  traf_.vnav_spd[i] = 0;
   traf_.tgt_tas_alt[i] = std::nan("");
   return Status::ok();
 }
@@ -628,6 +687,7 @@ Status Simulation::set_vnav(std::string_view acid, bool on) {
   if (on && traf_.route[i].active() < 0)
     return bad(traf_.id[i], "VNAV needs a route with a waypoint to fly to (add one with ADDWPT)");
   traf_.vnav[i] = on;
+  traf_.vnav_spd[i] = on;
   if (on) {
     traf_.lnav[i] = 1;
     const Route& r = traf_.route[i];
@@ -800,11 +860,13 @@ std::string Simulation::snapshot() const {
   for (const auto* v : {&t.lat, &t.lon, &t.alt, &t.hdg, &t.trk, &t.tas, &t.cas, &t.gs, &t.mach, &t.gsnorth,
                         &t.gseast, &t.vs, &t.sel_hdg, &t.sel_alt, &t.sel_spd, &t.sel_vs, &t.bank, &t.cr_trk,
                         &t.cr_tas, &t.cr_vs, &t.cr_alt, &t.ax, &t.wp_lat, &t.wp_lon, &t.dist2wp,
-                        &t.nextaltco, &t.dist2vs, &t.wp_vs, &t.vnav_vs, &t.turndist, &t.curlegdir})
+                        &t.nextaltco, &t.dist2vs, &t.wp_vs, &t.vnav_vs, &t.turndist, &t.curlegdir, &t.turnspd,
+                        &t.oldturnspd})
     put_vec(out, *v);
-  put_vec(out, t.lnav), put_vec(out, t.vnav), put_vec(out, t.cr_active);
+  put_vec(out, t.lnav), put_vec(out, t.vnav), put_vec(out, t.cr_active), put_vec(out, t.vnav_spd);
   cd_.serialize(out);
   cr_.serialize(out);
+  wind_.serialize(out);
   return out;
 }
 

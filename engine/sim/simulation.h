@@ -14,7 +14,11 @@
 //   target), vertical speed (altitude select with a time-based capture band
 //   of 1.05 dt max(|vs target|, |vs|), V/S ramped at 300 ft/min per s), then
 //   the flat-earth position update with R = 6 371 000 m (facts §1.8).
-//   No wind: gs = tas and trk = hdg.
+//   Wind (wind.h): above 50 ft the ground velocity is TAS along the heading
+//   plus the wind; the autopilot's selected heading is a track, flown with
+//   the wind-correction angle asin(Vw sin(trk - wind dir) / TAS), and a
+//   resolution ground speed becomes the TAS that gives it. No wind: gs = tas
+//   and trk = hdg.
 // - Performance model: the class table of performance.h, or OpenAP per type
 //   when OpenAP data is set (set_openap; by default the data named by
 //   SQUAWK_OPENAP, see openap_data.h).
@@ -45,6 +49,7 @@
 #include "sim/performance.h"
 #include "sim/route.h"
 #include "sim/traffic.h"
+#include "sim/wind.h"
 
 namespace squawk::sim {
 
@@ -128,6 +133,7 @@ class Simulation {
 
   // --- Autopilot ------------------------------------------------------------
   // HDG: selected heading [deg], any finite value, wrapped; switches LNAV off.
+  // With wind (above 50 ft) the track that heading gives now is selected.
   Status set_heading(std::string_view acid, double hdg_deg);
   // ALT: selected altitude [m] in [-300, 30000], optional |vs| [m/s] > 0;
   // switches VNAV off.
@@ -190,6 +196,17 @@ class Simulation {
   // Error when a value is not finite or not positive.
   Status set_performance_options(const PerformanceOptions& opts);
 
+  // --- Wind -----------------------------------------------------------------
+  const WindField& wind() const { return wind_; }
+  // BlueSky WIND lat,lon,dir,spd (every altitude) or WIND lat,lon,alt,dir,spd,...
+  Status add_wind_uniform(double lat, double lon, double dir_deg, double spd) {
+    return wind_.add_uniform(lat, lon, dir_deg, spd);
+  }
+  Status add_wind_profile(double lat, double lon, const std::vector<WindSample>& samples) {
+    return wind_.add_profile(lat, lon, samples);
+  }
+  void clear_wind() { wind_.clear(); }
+
   // --- Access ---------------------------------------------------------------
   const Traffic& traffic() const { return traf_; }
   int n() const { return traf_.n(); }
@@ -234,6 +251,7 @@ class Simulation {
   CrSettings crs_;
   PerformanceOptions perf_opts_;
   std::shared_ptr<const OpenapData> openap_;
+  WindField wind_;
   Rng rng_;
   uint64_t next_uid_ = 1;
 

@@ -66,6 +66,11 @@ struct Traffic {
   std::vector<double> vnav_vs;       // [m/s] V/S last used by VNAV
   std::vector<double> turndist;      // [m] fly-by turn anticipation distance at the active waypoint
   std::vector<double> curlegdir;     // [deg] bearing to the active waypoint when it became active
+  std::vector<double> turnspd;       // BlueSky's stored turn speed: the TAS [m/s] at the last DIRECT
+                                     // (ADDWPT, DEST, LNAV ON), < 0 after a waypoint switch
+  std::vector<double> oldturnspd;    // turn speed of the waypoint just passed (< 0: none); VNAV
+                                     // selects it as CAS while turning onto the new leg
+  std::vector<uint8_t> vnav_spd;     // VNAV speed mode (on with VNAV ON, off with SPD)
 
   // Conflict resolution output (mvp.h), followed while cr_active is set
   std::vector<uint8_t> cr_active;    // 0/1
