@@ -9,6 +9,7 @@
 #include "command/navdb.h"
 #include "command/stack.h"
 #include "core/status.h"
+#include "sim/openap_data.h"
 
 namespace squawk::command {
 
@@ -17,6 +18,9 @@ struct ScenarioRunOptions {
   double max_time = 3600.0;     // [s] cap on the default stop time
   std::shared_ptr<const NavDb> navdb;  // may be null
   uint64_t seed = 0;
+  // Performance data: unset, the process default (SQUAWK_OPENAP / --openap);
+  // set, that data (null: squawk's class model).
+  std::optional<std::shared_ptr<const sim::OpenapData>> openap;
 };
 
 struct ScenarioRunResult {
