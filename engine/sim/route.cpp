@@ -19,8 +19,9 @@ std::string wp_error(const Waypoint& wp, const char* what) {
 Status not_in_route(std::string_view name) {
   return Status::not_found(std::string("waypoint ").append(text::quoted(name)).append(" is not in the route"));
 }
-Waypoint normalized(Waypoint wp) {
+Waypoint normalized(Waypoint wp, bool flyover_mode) {
   wp.name = text::upper(text::trim(wp.name));
+  wp.flyover = wp.flyover || flyover_mode;
   return wp;
 }
 }  // namespace
@@ -47,7 +48,7 @@ Status Route::validate(const Waypoint& wp) const {
 Status Route::add(Waypoint wp) {
   SQUAWK_RETURN_IF_ERROR(validate(wp));
   const int at = dest_.empty() ? size() : size() - 1;
-  wps_.insert(wps_.begin() + at, normalized(std::move(wp)));
+  wps_.insert(wps_.begin() + at, normalized(std::move(wp), flyover_mode_));
   if (active_ < 0) active_ = at;
   else if (active_ > at) ++active_;
   return Status::ok();
@@ -59,7 +60,7 @@ Status Route::insert_after(std::string_view ref, Waypoint wp) {
   if (k < 0) return not_in_route(ref);
   if (!dest_.empty() && k == size() - 1)
     return Status::invalid(std::string("waypoint ").append(text::quoted(ref)).append(" is the destination; nothing can follow it"));
-  wps_.insert(wps_.begin() + k + 1, normalized(std::move(wp)));
+  wps_.insert(wps_.begin() + k + 1, normalized(std::move(wp), flyover_mode_));
   if (active_ > k) ++active_;
   return Status::ok();
 }
@@ -68,7 +69,7 @@ Status Route::insert_before(std::string_view ref, Waypoint wp) {
   SQUAWK_RETURN_IF_ERROR(validate(wp));
   const int k = find(ref);
   if (k < 0) return not_in_route(ref);
-  wps_.insert(wps_.begin() + k, normalized(std::move(wp)));
+  wps_.insert(wps_.begin() + k, normalized(std::move(wp), flyover_mode_));
   if (active_ >= k) ++active_;
   return Status::ok();
 }
@@ -85,6 +86,7 @@ Status Route::remove(std::string_view name) {
 
 void Route::clear() {
   wps_.clear();
+  flyover_mode_ = false;
   active_ = -1;
   dest_.clear();
   orig_name_.clear();
@@ -100,7 +102,7 @@ Status Route::direct_to(std::string_view name) {
 
 Status Route::set_dest(Waypoint dest) {
   SQUAWK_RETURN_IF_ERROR(validate(dest));
-  Waypoint wp = normalized(std::move(dest));
+  Waypoint wp = normalized(std::move(dest), flyover_mode_);
   if (!dest_.empty()) {
     wps_.back() = wp;
   } else {
@@ -151,6 +153,7 @@ void Route::serialize(std::string& out) const {
     put<uint8_t>(out, w.flyover ? 1 : 0);
   }
   put<int64_t>(out, active_);
+  put<uint8_t>(out, flyover_mode_ ? 1 : 0);
   bytes::put_str(out, dest_);
   bytes::put_str(out, orig_name_);
   put(out, orig_lat_);

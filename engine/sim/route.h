@@ -89,6 +89,10 @@ class Route {
   };
   AltTarget alt_target(int k) const;
 
+  // ADDWPT acid FLYOVER / FLYBY: the mode of waypoints added from now on.
+  void set_flyover_mode(bool on) { flyover_mode_ = on; }
+  bool flyover_mode() const { return flyover_mode_; }
+
   // Moves to the next waypoint; returns false (active() becomes -1) when the
   // active waypoint was the last one.
   bool advance();
@@ -100,6 +104,7 @@ class Route {
   Status validate(const Waypoint& wp) const;
   std::vector<Waypoint> wps_;
   int active_ = -1;
+  bool flyover_mode_ = false;
   std::string dest_;
   std::string orig_name_;
   double orig_lat_ = 0.0;  // [deg]

@@ -181,6 +181,11 @@ void Simulation::step() {
     }
     update_kinematics();
   }
+  if (simt() + 1e-9 >= next_area_t_) {
+    if (area_.active) update_area();
+    next_area_t_ += kPerfDt;
+    if (next_area_t_ <= simt()) next_area_t_ = simt() + kPerfDt;
+  }
   ++ticks_;
   ++ticks_since_base_;
 }
@@ -189,6 +194,32 @@ void Simulation::update_asas() {
   cd_.detect(traf_, cds_);
   if (crs_.enabled) cr_.resolve(traf_, cd_, cds_, crs_, perf_opts_);
 }
+
+void Simulation::update_area() {
+  Traffic& t = traf_;
+  for (int i = t.n() - 1; i >= 0; --i) {
+    const bool in = t.lat[i] >= area_.lat0 && t.lat[i] <= area_.lat1 && t.lon[i] >= area_.lon0 &&
+                    t.lon[i] <= area_.lon1 && t.alt[i] >= area_.bottom && t.alt[i] <= area_.top;
+    const bool was = t.in_area[i] != 0;
+    t.in_area[i] = in;
+    if (was && !in) {
+      cr_.on_erase(t.uid[i]);
+      cd_.on_erase(i);
+      t.erase(i);
+    }
+  }
+}
+
+Status Simulation::set_area(double lat0, double lon0, double lat1, double lon1, double top, double bottom) {
+  SQUAWK_RETURN_IF_ERROR(check_latlon("AREA", lat0, lon0));
+  SQUAWK_RETURN_IF_ERROR(check_latlon("AREA", lat1, lon1));
+  if (!(top >= bottom) || std::isnan(top) || std::isnan(bottom))
+    return bad("AREA", "top " + num(top) + " m must not be below bottom " + num(bottom) + " m");
+  area_ = Area{true, std::min(lat0, lat1), std::max(lat0, lat1), std::min(lon0, lon1), std::max(lon0, lon1), top, bottom};
+  return Status::ok();
+}
+
+void Simulation::area_off() { area_.active = false; }
 
 void Simulation::update_perf() {
   Traffic& t = traf_;
@@ -727,6 +758,11 @@ Status Simulation::add_waypoint_after(std::string_view acid, std::string_view re
 Status Simulation::add_waypoint_before(std::string_view acid, std::string_view ref, Waypoint wp) {
   return route_op(acid, [&](Route& r) { return r.insert_before(ref, std::move(wp)); }, true);
 }
+Status Simulation::set_flyover_mode(std::string_view acid, bool flyover) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  traf_.route[i].set_flyover_mode(flyover);
+  return Status::ok();
+}
 Status Simulation::delete_waypoint(std::string_view acid, std::string_view name) {
   return route_op(acid, [&](Route& r) { return r.remove(name); });
 }
@@ -838,6 +874,9 @@ std::string Simulation::snapshot() const {
   put(out, perf_opts_.ground_vmax), put(out, perf_opts_.ground_axmax);
   put(out, next_uid_);
   put(out, next_perf_t_);
+  put(out, next_area_t_);
+  put<uint8_t>(out, area_.active);
+  for (double v : {area_.lat0, area_.lat1, area_.lon0, area_.lon1, area_.top, area_.bottom}) put(out, v);
   bytes::put_str(out, openap_ ? openap_->dir() : std::string());
   Rng probe = rng_;  // the RNG state, observed through its next draws
   for (int k = 0; k < 4; ++k) put(out, probe.next_u64());
@@ -864,6 +903,7 @@ std::string Simulation::snapshot() const {
                         &t.oldturnspd})
     put_vec(out, *v);
   put_vec(out, t.lnav), put_vec(out, t.vnav), put_vec(out, t.cr_active), put_vec(out, t.vnav_spd);
+  put_vec(out, t.in_area);
   cd_.serialize(out);
   cr_.serialize(out);
   wind_.serialize(out);

@@ -159,6 +159,8 @@ class Simulation {
   Status add_waypoint_after(std::string_view acid, std::string_view ref, Waypoint wp);
   Status add_waypoint_before(std::string_view acid, std::string_view ref, Waypoint wp);
   Status delete_waypoint(std::string_view acid, std::string_view name);
+  // ADDWPT acid FLYOVER / FLYBY: mode of the waypoints added from now on.
+  Status set_flyover_mode(std::string_view acid, bool flyover);
   // DELRTE: empties the route and switches LNAV and VNAV off.
   Status delete_route(std::string_view acid);
   // DIRECT: makes `name` active and switches LNAV on.
@@ -195,6 +197,16 @@ class Simulation {
   const PerformanceOptions& performance_options() const { return perf_opts_; }
   // Error when a value is not finite or not positive.
   Status set_performance_options(const PerformanceOptions& opts);
+
+  // --- Deletion area (BlueSky AREA) ---------------------------------------------
+  // A box [lat0, lat1] x [lon0, lon1] (corners in any order) between bottom
+  // and top [m]. Every 1 s of sim time (after the step), aircraft that were
+  // inside at the previous check and are outside now are deleted; aircraft
+  // never inside stay. Errors: non-finite or out-of-range corners, top <
+  // bottom.
+  Status set_area(double lat0, double lon0, double lat1, double lon1, double top = 1e9, double bottom = -1e9);
+  void area_off();
+  bool area_active() const { return area_.active; }
 
   // --- Wind -----------------------------------------------------------------
   const WindField& wind() const { return wind_; }
@@ -252,6 +264,12 @@ class Simulation {
   PerformanceOptions perf_opts_;
   std::shared_ptr<const OpenapData> openap_;
   WindField wind_;
+  struct Area {
+    bool active = false;
+    double lat0 = 0, lat1 = 0, lon0 = 0, lon1 = 0, top = 1e9, bottom = -1e9;  // [deg], [m]
+  } area_;
+  double next_area_t_ = 0.0;  // [s] sim time of the next area check
+  void update_area();
   Rng rng_;
   uint64_t next_uid_ = 1;
 
