@@ -223,8 +223,12 @@ void Simulation::area_off() { area_.active = false; }
 
 void Simulation::update_perf() {
   Traffic& t = traf_;
-  for (int i = 0; i < t.n(); ++i)
-    if (t.oap[i]) openap_update(*t.oap[i], t.tas[i], t.vs[i], t.alt[i], t.phase[i], t.perf[i]);
+  for (int i = 0; i < t.n(); ++i) {
+    if (!t.oap[i]) continue;
+    const double vmin = t.perf[i].vmin, vmax = t.perf[i].vmax;
+    openap_update(*t.oap[i], t.tas[i], t.vs[i], t.alt[i], t.phase[i], t.perf[i]);
+    if (t.perf[i].vmin != vmin || t.perf[i].vmax != vmax) t.tgt_tas_alt[i] = std::nan("");
+  }
 }
 
 void Simulation::init_perf(int i) {
@@ -430,7 +434,17 @@ void Simulation::update_kinematics() {
     }
     double tas_t, axmax;
     if (oap) {
-      tas_t = openap_limit_tas(lim, cr ? cr_tas : casormach_to_tas(t.sel_spd[i], t.alt[i]), alt_t);
+      if (cr) {
+        tas_t = openap_limit_tas(lim, cr_tas, alt_t);
+      } else {
+        // Cached while altitude, target altitude, selected speed and envelope stay.
+        if (!(t.tgt_tas_alt[i] == t.alt[i] && t.tgt_tas_sel[i] == alt_t)) {
+          t.tgt_tas[i] = openap_limit_tas(lim, casormach_to_tas(t.sel_spd[i], t.alt[i]), alt_t);
+          t.tgt_tas_alt[i] = t.alt[i];
+          t.tgt_tas_sel[i] = alt_t;
+        }
+        tas_t = t.tgt_tas[i];
+      }
       vs_t = openap_limit_vs(*oap, lim, t.phase[i], vs_t, t.ax[i], t.tas[i]);
       axmax = lim.axmax;
     } else {

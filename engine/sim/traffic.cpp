@@ -20,7 +20,7 @@ void for_each_column(Traffic& t, F&& f) {
   f(t.wp_lat), f(t.wp_lon), f(t.dist2wp), f(t.nextaltco), f(t.dist2vs), f(t.wp_vs), f(t.vnav_vs), f(t.turndist), f(t.curlegdir);
   f(t.turnspd), f(t.oldturnspd), f(t.vnav_spd), f(t.in_area);
   f(t.cr_active), f(t.cr_trk), f(t.cr_tas), f(t.cr_vs), f(t.cr_alt);
-  f(t.sin_hdg), f(t.cos_hdg), f(t.tgt_tas), f(t.tgt_tas_alt), f(t.vnav_vs_on);
+  f(t.sin_hdg), f(t.cos_hdg), f(t.tgt_tas), f(t.tgt_tas_alt), f(t.tgt_tas_sel), f(t.vnav_vs_on);
 }
 }  // namespace
 

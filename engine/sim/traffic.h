@@ -84,6 +84,7 @@ struct Traffic {
   std::vector<double> sin_hdg, cos_hdg;  // [-] of hdg
   std::vector<double> tgt_tas;       // [m/s] TAS meant by sel_spd at tgt_tas_alt
   std::vector<double> tgt_tas_alt;   // [m] altitude at which tgt_tas was computed (NaN: stale)
+  std::vector<double> tgt_tas_sel;   // [m] OpenAP: target altitude at which the limits were applied
   std::vector<uint8_t> vnav_vs_on;   // VNAV flies vnav_vs to nextaltco this step (set by the autopilot)
 
   std::unordered_map<std::string, int> index;  // id -> index
