@@ -17,7 +17,15 @@
 #include "script/bindings.h"
 #include "script/lua_util.h"
 #include "script/translate_graph.h"
+#include <algorithm>
+
 #include "translate/corpus.h"
+#include "translate/fuzzy.h"
+#include "translate/lexer.h"
+#include "translate/number_words.h"
+#include "translate/quantities.h"
+#include "translate/references.h"
+#include "translate/vocabulary.h"
 #include "translate/offline_translator.h"
 #include "translate/scorer.h"
 #include "translate/stack_world.h"
@@ -152,6 +160,200 @@ int l_call_graph(lua_State* L) {
   return 1;
 }
 
+
+// ---- squawk.translate.utterance: the C++ extractors the Lua grammar reads ----
+
+constexpr const char* kUtteranceMt = "squawk.translate.Utterance";
+
+// Tokens (spelling fixed), the references found in them, and the mask of
+// tokens already consumed (by references and by the grammar).
+struct Utterance {
+  std::vector<translate::Token> tokens;
+  std::vector<bool> used;
+  std::vector<translate::Reference> refs;
+};
+
+const char* tok_kind(translate::TokKind k) {
+  switch (k) {
+    case translate::TokKind::kWord: return "word";
+    case translate::TokKind::kNumber: return "number";
+    case translate::TokKind::kPunct: return "punct";
+    case translate::TokKind::kQuoted: return "quoted";
+  }
+  return "word";
+}
+
+const char* q_kind(translate::QKind k) {
+  static const char* const names[] = {"plain", "alt", "speed", "mach", "heading", "vs", "lat",
+                                      "lon", "time", "dist", "percent", "mult", "angle"};
+  return names[static_cast<int>(k)];
+}
+
+void set_bool(lua_State* L, const char* k, bool v) {
+  lua_pushboolean(L, v);
+  lua_setfield(L, -2, k);
+}
+void set_int(lua_State* L, const char* k, lua_Integer v) {
+  lua_pushinteger(L, v);
+  lua_setfield(L, -2, k);
+}
+void set_num(lua_State* L, const char* k, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, k);
+}
+void set_str(lua_State* L, const char* k, const std::string& v) {
+  lua_pushlstring(L, v.data(), v.size());
+  lua_setfield(L, -2, k);
+}
+
+// Token indices go to Lua 1-based; ranges are [b, e) with e one past the end.
+void push_number(lua_State* L, const translate::SpokenNumber& n, size_t offset) {
+  lua_createtable(L, 0, 10);
+  set_num(L, "value", n.value);
+  set_str(L, "digits", n.digits);
+  set_int(L, "b", static_cast<lua_Integer>(n.begin + offset + 1));
+  set_int(L, "e", static_cast<lua_Integer>(n.end + offset + 1));
+  set_bool(L, "typed", n.typed);
+  set_bool(L, "thousand", n.has_thousand);
+  set_bool(L, "hundred", n.has_hundred);
+  set_bool(L, "decimal", n.has_decimal);
+  set_int(L, "groups", n.groups);
+  set_bool(L, "lead_digit", n.leading_digit_word);
+}
+
+int l_utterance(lua_State* L) {
+  const std::string text = arg_string(L, 1, "text");
+  auto* u = new_object<Utterance>(L, kUtteranceMt);
+  u->tokens = translate::lex(text);
+  for (auto& t : u->tokens)
+    if (t.kind == translate::TokKind::kWord) t.text = translate::spell_fix(t.text);
+  u->used.assign(u->tokens.size(), false);
+  if (lua_isnoneornil(L, 2)) {
+    u->refs = translate::find_references(u->tokens, nullptr, u->used);
+  } else if (lua_istable(L, 2)) {
+    translate::StaticWorld w = read_world(L, 2);
+    u->refs = translate::find_references(u->tokens, &w, u->used);
+  } else {
+    throw ArgError(type_error(L, 2, "world", "nil or a world table"));
+  }
+  return 1;
+}
+
+int l_u_tokens(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  lua_createtable(L, static_cast<int>(u->tokens.size()), 0);
+  for (size_t i = 0; i < u->tokens.size(); ++i) {
+    const auto& t = u->tokens[i];
+    lua_createtable(L, 0, 8);
+    lua_pushstring(L, tok_kind(t.kind));
+    lua_setfield(L, -2, "kind");
+    set_str(L, "text", t.text);
+    set_str(L, "raw", t.raw);
+    set_num(L, "num", t.num);
+    set_bool(L, "number_word", translate::is_number_word(t));
+    if (t.kind == translate::TokKind::kWord) {
+      set_bool(L, "keyword", translate::is_keyword(t.text));
+      set_bool(L, "filler", translate::is_filler(t.text));
+      set_bool(L, "alpha", translate::is_alpha(t.text));
+    }
+    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  return 1;
+}
+
+int l_u_refs(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  lua_createtable(L, static_cast<int>(u->refs.size()), 0);
+  for (size_t i = 0; i < u->refs.size(); ++i) {
+    const auto& r = u->refs[i];
+    lua_createtable(L, 0, 6);
+    lua_pushstring(L, r.kind == translate::RefKind::kAircraft ? "aircraft"
+                      : r.kind == translate::RefKind::kType   ? "type"
+                                                              : "waypoint");
+    lua_setfield(L, -2, "kind");
+    set_str(L, "name", r.name);
+    set_int(L, "b", static_cast<lua_Integer>(r.begin + 1));
+    set_int(L, "e", static_cast<lua_Integer>(r.end + 1));
+    set_bool(L, "exists", r.exists);
+    set_bool(L, "spoken", r.spoken);
+    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  return 1;
+}
+
+// Clamps a Lua [b, e) range to 0-based token indices.
+std::pair<size_t, size_t> range_arg(lua_State* L, const Utterance& u) {
+  const long long n = static_cast<long long>(u.tokens.size());
+  long long b = arg_integer(L, 2, "b") - 1, e = arg_integer(L, 3, "e") - 1;
+  b = std::clamp(b, 0LL, n);
+  e = std::clamp(e, b, n);
+  return {static_cast<size_t>(b), static_cast<size_t>(e)};
+}
+
+int l_u_quantities(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  auto [b, e] = range_arg(L, *u);
+  auto qs = translate::extract_quantities(u->tokens, b, e, u->used);
+  lua_createtable(L, static_cast<int>(qs.size()), 0);
+  for (size_t i = 0; i < qs.size(); ++i) {
+    const auto& q = qs[i];
+    lua_createtable(L, 0, 9);
+    lua_pushstring(L, q_kind(q.kind));
+    lua_setfield(L, -2, "kind");
+    set_num(L, "value", q.value);
+    set_int(L, "b", static_cast<lua_Integer>(q.begin + 1));
+    set_int(L, "e", static_cast<lua_Integer>(q.end + 1));
+    set_bool(L, "fl", q.flight_level);
+    set_bool(L, "by", q.by);
+    set_bool(L, "to", q.to);
+    set_int(L, "turn", q.turn);
+    push_number(L, q.number, 0);
+    lua_setfield(L, -2, "number");
+    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  return 1;
+}
+
+int l_u_mark_used(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  auto [b, e] = range_arg(L, *u);
+  for (size_t i = b; i < e; ++i) u->used[i] = true;
+  return 0;
+}
+
+int l_u_used(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  const long long i = arg_integer(L, 2, "i") - 1;
+  lua_pushboolean(L, i >= 0 && i < static_cast<long long>(u->used.size()) && u->used[static_cast<size_t>(i)]);
+  return 1;
+}
+
+// u:number(b, e) -> the number read from tokens [b, e) alone when it spans
+// all of them, else nil (re-reading part of a misheard number).
+int l_u_number(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  auto [b, e] = range_arg(L, *u);
+  std::vector<translate::Token> part(u->tokens.begin() + static_cast<long>(b), u->tokens.begin() + static_cast<long>(e));
+  auto n = translate::read_number(part, 0);
+  if (!n || n->end != part.size() || part.empty()) {
+    lua_pushnil(L);
+    return 1;
+  }
+  push_number(L, *n, b);
+  return 1;
+}
+
+// squawk.translate.best_match(spoken, {names}) -> index (1-based), score | nil
+int l_best_match(lua_State* L) {
+  const std::string spoken = arg_string(L, 1, "spoken");
+  auto names = string_list(L, 2, "names");
+  auto m = translate::best_match(spoken, names);
+  if (!m) return 0;
+  lua_pushinteger(L, static_cast<lua_Integer>(m->index + 1));
+  lua_pushnumber(L, m->score);
+  return 2;
+}
+
 }  // namespace
 
 void bind_translate(lua_State* L) {
@@ -159,9 +361,19 @@ void bind_translate(lua_State* L) {
   const luaL_Reg fns[] = {{"offline", guarded<l_offline>},
                           {"score", guarded<l_score>},
                           {"corpus", guarded<l_corpus>},
+                          {"utterance", guarded<l_utterance>},
+                          {"best_match", guarded<l_best_match>},
                           {nullptr, nullptr}};
   luaL_setfuncs(L, fns, 0);
   lua_pop(L, 1);
+  const luaL_Reg methods[] = {{"tokens", guarded<l_u_tokens>},
+                              {"refs", guarded<l_u_refs>},
+                              {"quantities", guarded<l_u_quantities>},
+                              {"mark_used", guarded<l_u_mark_used>},
+                              {"used", guarded<l_u_used>},
+                              {"number", guarded<l_u_number>},
+                              {nullptr, nullptr}};
+  define_class<Utterance>(L, kUtteranceMt, methods);
 }
 
 Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const std::string& mode,

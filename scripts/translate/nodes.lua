@@ -6,6 +6,8 @@
 -- ("llm" or "offline"), and at the end commands or ask, and error. `ctx`
 -- holds the collaborators: llm (or nil), sim (never changed), index, prompts,
 -- k, max_retries. Every node records what it did with say().
+local grammar = require("translate.grammar")
+
 local M = {}
 
 function M.say(state, node, text)
@@ -223,7 +225,7 @@ end
 
 function M.offline(state, ctx)
   local world = M.world(ctx.sim, ctx.waypoints)
-  local tr = squawk.translate.offline(state.request, world)
+  local tr = grammar.translate(state.request, world)
   if tr.ask then
     state.ask = tr.ask
     M.say(state, "offline", "asks: " .. tr.ask)
