@@ -1,14 +1,21 @@
-// squawk.translate: the offline translator and the corpus scorer.
+// squawk.translate: the translation graph, the extractors the Lua grammar
+// reads, and the corpus scorer.
 //
-//   squawk.translate.offline(text, [sim | world]) -> {commands = {"CMD", ...}, ask = nil}
-//                                                  | {commands = {}, ask = "question"}
-//       The optional second argument gives the current traffic for relative
-//       instructions and callsign matching: a squawk.sim object (its aircraft
-//       and DEFWPT waypoints are read, nothing is run), or a plain table:
-//         {aircraft = {{id=, type=, lat=, lon=, hdg_deg=, alt_ft=, cas_kt=,
-//                       mach=, route = {"WPT", ...}}, ...},
-//          waypoints = {"NAME", ...}}
-//       Missing fields read as 0 / empty.
+//   squawk.translate.run(text, opts) -> graph.translate(text, opts) of
+//       scripts/translate/graph.lua (the one translation path)
+//   squawk.translate.utterance(text, [world]) -> u   the C++ extractors:
+//       u:tokens()  {{kind = "word"|"number"|"punct"|"quoted", text, raw, num,
+//                    number_word, keyword, filler, alpha}, ...} (spelling fixed)
+//       u:refs()    {{kind = "aircraft"|"type"|"waypoint", name, b, e, exists, spoken}, ...}
+//       u:quantities(b, e)  {{kind, value, b, e, fl, by, to, turn, number = {...}}, ...}
+//                   in tokens [b, e) not yet used (kinds: plain alt speed mach
+//                   heading vs lat lon time dist percent mult angle)
+//       u:mark_used(b, e), u:used(i), u:number(b, e) (re-read a sub-range)
+//       Token ranges are 1-based, [b, e). `world` gives the traffic for
+//       callsign matching: {aircraft = {{id=, type=, lat=, lon=, hdg_deg=,
+//       alt_ft=, cas_kt=, mach=, route = {"WPT", ...}}, ...},
+//       waypoints = {"NAME", ...}}; missing fields read as 0 / empty.
+//   squawk.translate.best_match(spoken, names) -> index, score | nothing
 //   squawk.translate.score(produced, asked, expected) -> boolean
 //       The corpus scoring rules (shared/corpora/README.md): `produced` is
 //       "CMD ; CMD", `asked` true when the translator asked instead.
@@ -17,6 +24,7 @@
 #include "script/bindings.h"
 #include "script/lua_util.h"
 #include "script/translate_graph.h"
+
 #include <algorithm>
 
 #include "translate/corpus.h"
@@ -26,9 +34,7 @@
 #include "translate/quantities.h"
 #include "translate/references.h"
 #include "translate/vocabulary.h"
-#include "translate/offline_translator.h"
 #include "translate/scorer.h"
-#include "translate/stack_world.h"
 
 namespace squawk::script {
 
@@ -85,38 +91,6 @@ translate::StaticWorld read_world(lua_State* L, int idx) {
   return w;
 }
 
-void push_translation(lua_State* L, const translate::Translation& tr) {
-  lua_createtable(L, 0, 2);
-  lua_createtable(L, static_cast<int>(tr.commands.size()), 0);
-  for (size_t i = 0; i < tr.commands.size(); ++i) {
-    lua_pushstring(L, tr.commands[i].c_str());
-    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
-  lua_setfield(L, -2, "commands");
-  if (tr.asked()) {
-    lua_pushstring(L, tr.ask.c_str());
-    lua_setfield(L, -2, "ask");
-  }
-}
-
-int l_offline(lua_State* L) {
-  const std::string text = arg_string(L, 1, "text");
-  translate::Translation tr;
-  if (lua_isnoneornil(L, 2)) {
-    tr = translate::translate_offline(text, nullptr);
-  } else if (void* p = luaL_testudata(L, 2, kSimMt)) {
-    translate::StackWorld w(*static_cast<const command::Stack*>(p));
-    tr = translate::translate_offline(text, &w);
-  } else if (lua_istable(L, 2)) {
-    translate::StaticWorld w = read_world(L, 2);
-    tr = translate::translate_offline(text, &w);
-  } else {
-    throw ArgError(type_error(L, 2, "world", "nil, a squawk.sim object or a world table"));
-  }
-  push_translation(L, tr);
-  return 1;
-}
-
 int l_score(lua_State* L) {
   const std::string produced = arg_string(L, 1, "produced");
   const bool asked = lua_toboolean(L, 2) != 0;
@@ -143,23 +117,6 @@ int l_corpus(lua_State* L) {
   }
   return 1;
 }
-
-// Calls graph.translate(text, {mode=, setup=}) with the module table on the
-// stack top; leaves the result on the stack.
-int l_call_graph(lua_State* L) {
-  // args: module table, text, mode, setup
-  lua_getfield(L, 1, "translate");
-  if (!lua_isfunction(L, -1)) throw ArgError("module translate.graph has no function translate(text, opts)");
-  lua_pushvalue(L, 2);
-  lua_createtable(L, 0, 2);
-  lua_pushvalue(L, 3);
-  lua_setfield(L, -2, "mode");
-  lua_pushvalue(L, 4);
-  lua_setfield(L, -2, "setup");
-  lua_call(L, 2, 1);
-  return 1;
-}
-
 
 // ---- squawk.translate.utterance: the C++ extractors the Lua grammar reads ----
 
@@ -223,6 +180,7 @@ void push_number(lua_State* L, const translate::SpokenNumber& n, size_t offset) 
 
 int l_utterance(lua_State* L) {
   const std::string text = arg_string(L, 1, "text");
+  lua_settop(L, 2);
   auto* u = new_object<Utterance>(L, kUtteranceMt);
   u->tokens = translate::lex(text);
   for (auto& t : u->tokens)
@@ -354,11 +312,94 @@ int l_best_match(lua_State* L) {
   return 2;
 }
 
+// Leaves the translate.graph module on the stack (loaded once per state
+// through the sandbox's require); raises the loading error.
+void push_graph_module(lua_State* L) {
+  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
+  if (!lua_isnil(L, -1)) return;
+  lua_pop(L, 1);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, kTranslationGraphModule);
+  lua_call(L, 1, 1);
+  lua_pushvalue(L, -1);
+  lua_setfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
+}
+
+int l_run(lua_State* L) {
+  lua_settop(L, 2);
+  push_graph_module(L);
+  lua_getfield(L, -1, "translate");
+  lua_pushvalue(L, 1);
+  lua_pushvalue(L, 2);
+  lua_call(L, 2, 1);
+  return 1;
+}
+
+// Pushes the opts table of a GraphRequest (the sim as a copy).
+void push_request(lua_State* L, const GraphRequest& req) {
+  lua_createtable(L, 0, 3);
+  set_str(L, "mode", req.mode);
+  set_str(L, "setup", req.setup);
+  if (req.sim) {
+    new_object<command::Stack>(L, kSimMt, *req.sim);
+    lua_setfield(L, -2, "sim");
+  }
+}
+
+// Reads the graph's result table at the stack top.
+Result<translate::Translation> read_result(lua_State* L) {
+  if (!lua_istable(L, -1))
+    return Status::invalid("translation graph: translate() must return {commands = {...}} or {ask = \"...\"}");
+  translate::Translation tr;
+  lua_getfield(L, -1, "ask");
+  if (lua_type(L, -1) == LUA_TSTRING) tr.ask = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  lua_getfield(L, -1, "error");
+  if (lua_type(L, -1) == LUA_TSTRING) tr.error = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  lua_getfield(L, -1, "commands");
+  if (lua_istable(L, -1)) {
+    const lua_Integer n = luaL_len(L, -1);
+    for (lua_Integer i = 1; i <= n; ++i) {
+      lua_geti(L, -1, i);
+      if (lua_isstring(L, -1)) tr.commands.emplace_back(lua_tostring(L, -1));
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+  if (!tr.error.empty()) tr.commands.clear();  // a rejected candidate is never issued
+  return tr;
+}
+
+// Runs fn(L) (which leaves one value) under pcall; the error becomes a Status.
+template <class F>
+Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  struct Ctx { F* fn; } ctx{&fn};
+  lua_pushcfunction(L, [](lua_State* S) -> int {
+    auto* c = static_cast<Ctx*>(lua_touserdata(S, 1));
+    lua_settop(S, 0);
+    (*c->fn)(S);
+    return 1;
+  });
+  lua_pushlightuserdata(L, &ctx);
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    std::string msg = std::string("translation graph (scripts/translate/graph.lua): ") +
+                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  auto tr = read_result(L);
+  lua_settop(L, top);
+  return tr;
+}
+
 }  // namespace
 
 void bind_translate(lua_State* L) {
   push_squawk_subtable(L, "translate");
-  const luaL_Reg fns[] = {{"offline", guarded<l_offline>},
+  const luaL_Reg fns[] = {{"run", guarded<l_run>},
                           {"score", guarded<l_score>},
                           {"corpus", guarded<l_corpus>},
                           {"utterance", guarded<l_utterance>},
@@ -376,54 +417,44 @@ void bind_translate(lua_State* L) {
   define_class<Utterance>(L, kUtteranceMt, methods);
 }
 
-Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const std::string& mode,
-                                                     const std::string& setup) {
-  lua_State* L = vm.state();
-  const int top = lua_gettop(L);
-  // Load the module once per Vm through the sandbox's require.
-  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
-  if (lua_isnil(L, -1)) {
-    lua_pop(L, 1);
-    lua_getglobal(L, "require");
-    lua_pushstring(L, kTranslationGraphModule);
-    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-      std::string msg = std::string("cannot load the translation graph (scripts/translate/graph.lua): ") +
-                        (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
-      lua_settop(L, top);
-      return Status::not_found(msg);
-    }
+
+Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req) {
+  return protected_call(vm, [&](lua_State* L) {
+    push_graph_module(L);
+    lua_getfield(L, -1, "translate");
+    lua_pushstring(L, text.c_str());
+    push_request(L, req);
+    lua_call(L, 2, 1);
+  });
+}
+
+Result<GraphDialogue> GraphDialogue::open(Vm& vm, const GraphRequest& req) {
+  int ref = LUA_NOREF;
+  auto made = protected_call(vm, [&](lua_State* L) {
+    push_graph_module(L);
+    lua_getfield(L, -1, "dialogue");
+    push_request(L, req);
+    lua_call(L, 1, 1);
     lua_pushvalue(L, -1);
-    lua_setfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
-  }
-  lua_pushcfunction(L, guarded<l_call_graph>);
-  lua_insert(L, -2);
-  lua_pushstring(L, text.c_str());
-  lua_pushstring(L, mode.c_str());
-  lua_pushstring(L, setup.c_str());
-  if (lua_pcall(L, 4, 1, 0) != LUA_OK) {
-    std::string msg = std::string("translation graph: ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
-    lua_settop(L, top);
-    return Status::internal(msg);
-  }
-  translate::Translation tr;
-  if (!lua_istable(L, -1)) {
-    lua_settop(L, top);
-    return Status::invalid("translation graph: translate() must return {commands = {...}} or {ask = \"...\"}");
-  }
-  lua_getfield(L, -1, "ask");
-  if (lua_type(L, -1) == LUA_TSTRING) tr.ask = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  lua_getfield(L, -1, "commands");
-  if (lua_istable(L, -1)) {
-    const lua_Integer n = luaL_len(L, -1);
-    for (lua_Integer i = 1; i <= n; ++i) {
-      lua_geti(L, -1, i);
-      if (lua_isstring(L, -1)) tr.commands.emplace_back(lua_tostring(L, -1));
-      lua_pop(L, 1);
-    }
-  }
-  lua_settop(L, top);
-  return tr;
+    ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    lua_newtable(L);  // a well-shaped result for protected_call
+  });
+  if (!made.is_ok()) return made.status();
+  return GraphDialogue(vm, ref);
+}
+
+GraphDialogue::~GraphDialogue() {
+  if (ref_ >= 0) luaL_unref(vm_->state(), LUA_REGISTRYINDEX, ref_);
+}
+
+Result<translate::Translation> GraphDialogue::say(const std::string& text) {
+  return protected_call(*vm_, [&](lua_State* L) {
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref_);
+    lua_getfield(L, -1, "say");
+    lua_insert(L, -2);
+    lua_pushstring(L, text.c_str());
+    lua_call(L, 2, 1);
+  });
 }
 
 }  // namespace squawk::script

@@ -3,9 +3,15 @@
 // Contract: read_corpus() reads the TSV format `id setup utterance expected
 // category` (a header line first); a row with fewer than 5 fields is an
 // error naming the file and line. evaluate() runs a translator on every case
-// and scores it with score_case(); the report keeps per-case outcomes and
-// per-category counts in first-seen order. format_report() prints a table in
-// the style of the paper's Table 2 (category, cases, correct, accuracy).
+// and scores it with score_case() into one of three outcomes:
+//   right  the expected commands (or a question where ASK was expected);
+//   asked  no command issued (a question, or nothing valid) where commands
+//          were expected: safe, but not done;
+//   wrong  a command issued that is not the expected one, or a command where
+//          a question was expected: a wrong clearance.
+// The report keeps per-case outcomes and per-category counts in first-seen
+// order. format_report() prints a table in the style of the paper's Table 2
+// (category, cases, right, asked, wrong, accuracy).
 #pragma once
 
 #include <functional>
@@ -13,7 +19,7 @@
 #include <vector>
 
 #include "core/status.h"
-#include "translate/offline_translator.h"
+#include "translate/translation.h"
 
 namespace squawk::translate {
 
@@ -27,21 +33,26 @@ Result<std::vector<CorpusCase>> parse_corpus(const std::string& tsv, const std::
 
 struct CaseOutcome {
   std::string id, category, produced, expected;
-  bool asked = false;
-  bool correct = false;
+  bool asked = false;    // no command was issued
+  bool correct = false;  // right
+  bool wrong() const { return !correct && !asked; }
 };
 
 struct CategoryScore {
   std::string category;
   int cases = 0;
-  int correct = 0;
+  int correct = 0;  // right
+  int asked = 0;
+  int wrong = 0;
 };
 
 struct EvalReport {
   std::vector<CaseOutcome> outcomes;
   std::vector<CategoryScore> categories;
   int cases = 0;
-  int correct = 0;
+  int correct = 0;  // right
+  int asked = 0;
+  int wrong = 0;
   double accuracy() const { return cases ? static_cast<double>(correct) / cases : 0.0; }
 };
 
@@ -50,8 +61,6 @@ struct EvalReport {
 using CaseTranslator = std::function<Result<Translation>(const CorpusCase&)>;
 
 EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& translate);
-// The offline translator on a fresh simulation after the case's setup.
-Result<Translation> translate_case_offline(const CorpusCase& c);
 std::string format_report(const EvalReport& r, const std::string& title);
 
 }  // namespace squawk::translate

@@ -18,6 +18,7 @@
 --     checked like the file's (an error names the caller's file:line).
 --     New rules go before the file's rules, so they win.
 --   check_command(name, args, level)  the registry check used for both.
+--   has_instruction(text) -> true when a word of text starts an instruction.
 local lexicon = require("translate.lexicon")
 
 local M = { lexicon = lexicon, intents = {}, rules = {} }
@@ -317,6 +318,18 @@ function G:parse(b, e)
       end
     end
   end
+end
+
+-- True when the text holds a word that starts an instruction of its own
+-- (the dialogue tells an answer to its question from a new request by it).
+function M.has_instruction(text)
+  local u = squawk.translate.utterance(text)
+  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = { aircraft = {}, waypoints = {} },
+    fleet = {}, out = {} }, G)
+  for i = 1, #g.t do
+    if g:intent_at(i) then return true end
+  end
+  return false
 end
 
 local UNDERSTOOD = "I did not understand that. Which command, aircraft and value do you mean?"

@@ -8,7 +8,8 @@
 -- A run stops after ctx.max_steps visits (an error in the trace, never a hang).
 --
 -- Graphs (modes), after paper §III.B and Table 2:
---   offline: retrieve -> offline -> validate -> execute -> done
+--   offline: offline (the grammar, translate/grammar.lua) -> validate -> execute
+--            -> done; no retrieval
 --   single:  retrieve -> single (one LLM call) -> validate -> execute -> done;
 --            a rejected command goes back to `single` with the simulator's
 --            error, up to ctx.max_retries times
@@ -37,11 +38,17 @@
 --     opts.max_retries  feedback rounds (default 3)
 --     opts.on_token streaming callback passed to the LLM
 --   dialogue(opts) -> d   a conversation: d:say(text) -> result as translate()
---       returns it. A result that asks keeps its partial command in d.pending
---       and the next say() may answer it; say("cancel") drops it. opts as
---       translate(); every front end (REPL, serve, scripts) talks through this.
+--       returns it. A result that asks keeps its partial request in d.pending
+--       ({question =, request =}) and the next say() answers it: a line with
+--       no instruction word of its own (or one that does not translate alone)
+--       is joined to the pending request ("KL204 descend" -> "to what
+--       altitude?" -> "flight level 100" -> ALT KL204 FL100; result.answered
+--       holds the question answered); say("cancel") drops it (result.cancelled).
+--       opts as translate(); every front end (REPL, serve, C++ through
+--       script::GraphDialogue, scripts) talks through this.
 --   new_graph(start), modes[name](opts) -> graph, format_trace(trace), nodes
 local nodes = require("translate.nodes")
+local grammar = require("translate.grammar")
 
 local M = {}
 M.nodes = nodes
@@ -105,8 +112,7 @@ end
 M.modes = {}
 
 function M.modes.offline()
-  local g = M.new_graph("retrieve"):node("retrieve", nodes.retrieve):edge("retrieve", "offline")
-  return common_tail(g, "done")
+  return common_tail(M.new_graph("offline"), "done")
 end
 
 function M.modes.single()
@@ -182,7 +188,7 @@ function M.translate(text, opts)
   local ctx = {
     llm = llm,
     sim = sim,
-    index = opts.index or default_index(),
+    index = opts.index or (mode ~= "offline" and default_index() or nil),
     prompts = opts.prompts or default_prompts(),
     k = opts.k or 5,
     max_retries = opts.max_retries or 3,
@@ -211,13 +217,31 @@ function M.dialogue(opts)
   return setmetatable({ opts = opts or {}, pending = nil }, Dialogue)
 end
 
+local CANCEL = { cancel = true, ["never mind"] = true, nevermind = true, ["forget it"] = true, abort = true }
+
+-- The answer to a pending question joins the request it answers ("KL204
+-- descend" + "flight level 100"); a line with an instruction word of its own
+-- that translates by itself is a new request and drops the question.
 function Dialogue:say(text)
-  if self.pending and text:lower():match("^%s*cancel%s*$") then
+  local pending = self.pending
+  local key = text:lower():gsub("[%p%s]+", " "):gsub("^ ", ""):gsub(" $", "")
+  if CANCEL[key] then
     self.pending = nil
-    return { commands = {}, cancelled = true, trace = {}, mode = self.opts.mode }
+    return { commands = {}, cancelled = pending ~= nil, trace = {}, mode = self.opts.mode or "offline",
+             said = pending and ("dropped: " .. pending.request) or "nothing to cancel" }
   end
-  local r = M.translate(text, self.opts)
-  self.pending = r.ask and { question = r.ask, request = text } or nil
+  local r, request = nil, text
+  local own = not pending or grammar.has_instruction(text)
+  if own then r = M.translate(text, self.opts) end
+  if pending and (not r or r.ask or r.error) then
+    local joined = pending.request .. " " .. text
+    local j = M.translate(joined, self.opts)
+    if not r or (j.commands and not j.error) then
+      r, request = j, joined
+      r.answered = pending.question
+    end
+  end
+  self.pending = r.ask and { question = r.ask, request = request } or nil
   return r
 end
 
