@@ -6,7 +6,8 @@
 //   squawk.translate.utterance(text, [world]) -> u   the C++ extractors:
 //       u:tokens()  {{kind = "word"|"number"|"punct"|"quoted", text, raw, num,
 //                    number_word, keyword, filler, alpha}, ...} (spelling fixed)
-//       u:refs()    {{kind = "aircraft"|"type"|"waypoint", name, b, e, exists, spoken}, ...}
+//       u:refs()    {{kind = "aircraft"|"type"|"waypoint", name, b, e, exists, spoken,
+//                    heard = {id, airline, digits} when matched inexactly}, ...}
 //       u:quantities(b, e)  {{kind, value, b, e, fl, by, to, turn, number = {...}}, ...}
 //                   in tokens [b, e) not yet used (kinds: plain alt speed mach
 //                   heading vs lat lon time dist percent mult angle)
@@ -234,6 +235,13 @@ int l_u_refs(lua_State* L) {
     set_int(L, "e", static_cast<lua_Integer>(r.end + 1));
     set_bool(L, "exists", r.exists);
     set_bool(L, "spoken", r.spoken);
+    if (!r.heard.id.empty()) {
+      lua_createtable(L, 0, 3);
+      set_str(L, "id", r.heard.id);
+      set_num(L, "airline", r.heard.airline);
+      set_num(L, "digits", r.heard.digits);
+      lua_setfield(L, -2, "heard");
+    }
     lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
   }
   return 1;

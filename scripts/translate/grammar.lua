@@ -12,8 +12,10 @@
 --   translate(text, world) -> {commands = {"CMD", ...}} | {commands = {}, ask = "question"}
 --     world: {aircraft = {{id=, type=, lat=, lon=, hdg_deg=, alt_ft=, cas_kt=,
 --             mach=, route = {...}}, ...}, waypoints = {"NAME", ...}} or nil.
+--     world.confirmed: {[id] = true} for callsigns the speaker confirmed.
 --     Never fails: a request it cannot fill completely becomes a question
---     naming what is missing.
+--     naming what is missing; a question about an inexactly heard callsign
+--     carries confirm = {id =, heard =}.
 --   rule(spec), intent(name)(spec)   add a rule / an intent at run time,
 --     checked like the file's (an error names the caller's file:line).
 --     New rules go before the file's rules, so they win.
@@ -332,6 +334,16 @@ function M.has_instruction(text)
   return false
 end
 
+-- True when every word of text is in lexicon[list] ("yes", "affirm").
+function M.lexicon_says(text, list)
+  local set, any = word_set("@" .. list, 1), false
+  for w in text:lower():gmatch("[%a']+") do
+    if not set[w] then return false end
+    any = true
+  end
+  return any
+end
+
 local UNDERSTOOD = "I did not understand that. Which command, aircraft and value do you mean?"
 M.not_understood = UNDERSTOOD
 
@@ -350,7 +362,7 @@ function M.translate(text, world)
     end
   end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
-  if g.ask then return { commands = {}, ask = g.ask } end
+  if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm } end
   if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
   return { commands = g.out }
 end

@@ -37,6 +37,10 @@
 --     opts.k        documents retrieved (default 5)
 --     opts.max_retries  feedback rounds (default 3)
 --     opts.on_token streaming callback passed to the LLM
+--     opts.confirmed {[callsign] = true}: inexactly heard callsigns the
+--                   speaker confirmed (the dialogue sets it after "yes")
+--   A question about an inexactly heard callsign carries result.confirm =
+--   {id =, heard =}.
 --   dialogue(opts) -> d   a conversation: d:say(text) -> result as translate()
 --       returns it. A result that asks keeps its partial request in d.pending
 --       ({question =, request =}) and the next say() answers it: a line with
@@ -195,6 +199,7 @@ function M.translate(text, opts)
     max_steps = opts.max_steps or 40,
     on_token = opts.on_token,
     waypoints = waypoints,
+    confirmed = opts.confirmed,
   }
   local state = { request = text, trace = {}, retries = 0, mode = mode }
   nodes.say(state, "start", string.format("mode %s, %s", mode, llm and llm:describe() or "no LLM")
@@ -203,7 +208,7 @@ function M.translate(text, opts)
   M.modes[mode](opts):run(state, ctx)
   local result = { trace = state.trace, mode = mode, error = state.error }
   if state.ask then
-    result.ask = state.ask
+    result.ask, result.confirm = state.ask, state.confirm
   else
     result.commands = state.commands or {}
   end
@@ -230,6 +235,13 @@ function Dialogue:say(text)
     return { commands = {}, cancelled = pending ~= nil, trace = {}, mode = self.opts.mode or "offline",
              said = pending and ("dropped: " .. pending.request) or "nothing to cancel" }
   end
+  if pending and pending.confirm and grammar.lexicon_says(text, "yes") then
+    local opts = setmetatable({ confirmed = { [pending.confirm.id] = true } }, { __index = self.opts })
+    local r = M.translate(pending.request, opts)
+    r.answered = pending.question
+    self.pending = r.ask and { question = r.ask, request = pending.request, confirm = r.confirm } or nil
+    return r
+  end
   local r, request = nil, text
   local own = not pending or grammar.has_instruction(text)
   if own then r = M.translate(text, self.opts) end
@@ -241,7 +253,7 @@ function Dialogue:say(text)
       r.answered = pending.question
     end
   end
-  self.pending = r.ask and { question = r.ask, request = request } or nil
+  self.pending = r.ask and { question = r.ask, request = request, confirm = r.confirm } or nil
   return r
 end
 

@@ -34,9 +34,12 @@ local function wrap(h)
   return r
 end
 
+local BASE = { north = true, east = true, south = true, west = true }
 local function compass(a, b)
   local x, y = L.compass[a], L.compass[b or ""]
   if not x then return nil end
+  if not BASE[a] then return x end  -- "southwest"
+  if y and not BASE[b] then y = nil end
   if not y then return x == 0 and 360 or x end
   if x == 0 and y == 270 then return 315 end
   if x == 0 then return y / 2 end
@@ -45,6 +48,15 @@ local function compass(a, b)
 end
 
 -- ---- values ----
+
+-- A value said digit by digit that lost digits beyond repair: one digit, or
+-- two ending in zero ("one zero knots": 100 or 210?). Two others ("two
+-- five") lost their final zero and read times ten; "zero nine" is 090.
+function H.cut_off(n)
+  if n.hundred or n.thousand or n.decimal then return false end
+  local d = n.digits
+  return #d == 1 or (#d == 2 and d:sub(1, 1) ~= "0" and d:sub(2, 2) == "0")
+end
 function m:values_after_trigger(s)
   local n = 0
   for _, q in ipairs(self:quantities(s.b, s.e)) do if q.b >= s.trig then n = n + 1 end end
@@ -84,6 +96,7 @@ function m:acids(s)
   end
   take(s.trig, s.e)
   if #ids == 0 then take(s.b, s.trig) end
+  self:confirm_callsigns(s)
   if #ids == 0 and self.subject then ids[1] = self.subject end
   if #ids == 0 then
     for _, r in ipairs(self.refs) do
@@ -93,6 +106,19 @@ function m:acids(s)
   if #ids == 0 and #self.fleet == 1 then ids[1] = self.fleet[1].id end
   if #ids > 0 then self.subject = ids[1] end
   return ids
+end
+
+-- A spoken callsign matched to an aircraft whose airline or digits differ
+-- from what was heard is asked about, unless the speaker confirmed it.
+function m:confirm_callsigns(s)
+  local c = L.callsign_confirm
+  for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+    local h = r.heard
+    if h and not (self.world.confirmed or {})[r.name] and (h.airline < c.airline or h.digits < c.digits) then
+      self.confirm = self.confirm or { id = r.name, heard = h.id }
+      self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
+    end
+  end
 end
 
 function m:acid(s, what)

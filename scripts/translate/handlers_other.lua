@@ -345,7 +345,15 @@ return function(H, f, compass)
   function m:fast_forward(s)
     local q = first(self, s, { time = true, mult = true })
     if not q then return self:emit("FF") end
-    if q.kind == "time" then return self:emit("FF " .. f.num(q.value)) end
+    if q.kind == "time" then
+      -- "2 min 30 s": times in a row add up
+      local total, last = 0, nil
+      for _, t in ipairs(self:quantities(q.b, s.e)) do
+        if t.kind ~= "time" or (last and t.b - last.e > 1) then break end
+        total, last = total + t.value, t
+      end
+      return self:emit("FF " .. f.num(total))
+    end
     self:emit("DTMULT " .. f.num(q.value))  -- "speed the sim up 10 times"
   end
   function m:time_step(s)
@@ -356,6 +364,10 @@ return function(H, f, compass)
   function m:time_mult(s)
     local q = first(self, s, { mult = true, plain = true })
     if q then return self:emit("DTMULT " .. f.num(q.value)) end
+    for i = s.b, s.e - 1 do
+      local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
+      if v then return self:emit("DTMULT " .. f.num(v)) end
+    end
     self:need("How many times real time should the simulation run?")
   end
   function m:seed(s)

@@ -53,11 +53,6 @@ return function(H, f, wrap, compass)
     end
     if self:word_in(s.trig, s.e, "heading") then return self:heading(s) end
     -- "maintain present altitude": the current level, read from the traffic
-    if self:word_in(s.trig, s.e, "present current") and self:word_in(s.trig, s.e, "altitude level") then
-      local ids = self:acids(s)
-      local a = ids[1] and self:state(ids[1])
-      if a then return self:emit("ALT " .. ids[1] .. " " .. f.int(a.alt_ft or 0)) end
-    end
     self:altitude(s)
   end
 
@@ -93,6 +88,11 @@ return function(H, f, wrap, compass)
       return
     end
     if not target and rate then return self:vspeed(s) end
+    -- "maintain present altitude": the current level, read from the traffic
+    if not target and now and self:word_in(s.b, s.e, "present current")
+        and not self:word_in(s.b, s.e + 1, "heading hdg speed") then
+      return self:emit("ALT " .. ids[1] .. " " .. f.int(now.alt_ft or 0))
+    end
     if not target then return self:need("What altitude should " .. ids[1] .. " " .. verb .. " to?") end
     local q = target
     local ft, fl = q.value, q.fl
@@ -181,7 +181,8 @@ return function(H, f, wrap, compass)
       local spd
       if q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1) then
         spd = f.mach(q.value)
-      elseif q.kind == "percent" or q.by or (self:word_in(s.b, s.e, "by") and q.value < 100) then
+      elseif q.kind == "percent" or q.by or (self:word_in(s.b, s.e, "by") and q.value < 100)
+          or (q.kind == "speed" and q.value < 40 and dir ~= 0 and not q.to) then  -- "10 knots faster"
         local a = self:state(id)
         if not a or (a.cas_kt or 0) <= 0 then return self:need("What is the current speed of " .. id .. "?") end
         if dir == 0 then return self:need("Should " .. id .. " fly faster or slower?") end
@@ -189,7 +190,11 @@ return function(H, f, wrap, compass)
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
       else
         local kt = q.value
-        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 then kt = kt * 10 end  -- "speed one nine"
+        -- assigned speeds are said as three digits: see H.cut_off
+        if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) then
+          return self:need("What speed should " .. id .. " fly? I heard " .. q.number.digits .. ".")
+        end
+        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 then kt = kt * 10 end  -- "speed one ninety"
         local r = self:repaired(q, kt, 40, 700, 10)
         if not r then return self:need("What speed should " .. id .. " fly? I heard " .. f.int(kt) .. ".") end
         -- assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error
@@ -223,7 +228,8 @@ return function(H, f, wrap, compass)
     local named
     for i = s.b, s.e - 1 do
       if named then break end
-      if self.t[i].kind == "word" and compass(self.t[i].text) then
+      -- a compass word of a callsign ("Southwest 963") or a place ("northeast of") is no heading
+      if self.t[i].kind == "word" and compass(self.t[i].text) and not self.u:used(i) and not self:word(i + 1, "of") then
         named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "")
       end
     end
@@ -234,6 +240,11 @@ return function(H, f, wrap, compass)
     if abs and (abs.kind == "heading" or not (rel and rel.b < abs.b and not correction)) then
       hdg = abs.value
       local n = abs.number
+      -- headings are said as three digits; two ("two five") lost their final zero, unless
+      -- they end in zero themselves ("three zero": 030 or 300?) or one was said
+      if not n.typed and n.lead_digit and H.cut_off(n) then
+        return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
+      end
       if not n.typed and n.lead_digit and n.groups == 2 and hdg < 40 then hdg = hdg * 10 end
       if hdg > 360 then
         local r = self:repaired(abs, hdg, 0, 360, 5)
@@ -241,6 +252,10 @@ return function(H, f, wrap, compass)
         hdg = r
       end
     elseif rel and rel.turn == 0 and turn == 0 then
+      if not (rel.to or self:word_in(s.b, s.e, "heading")) then
+        return self:need(string.format("Should %s turn left or right by %s degrees, or fly heading %s?", id,
+          f.num(rel.value), f.num(rel.value)))
+      end
       hdg = rel.value  -- "to one hundred and twenty degrees"
     elseif rel then
       if not now then return self:need("What is the current heading of " .. id .. "?") end

@@ -25,7 +25,7 @@ return {
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
-  down = { "descend", "down", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
+  down = { "descend", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
            "descending", "decelerate", "minus" },
   below = { "below", "under" },
   above = { "above", "over" },
@@ -39,7 +39,16 @@ return {
   -- turns and compass points
   left = { "left" },
   right = { "right" },
-  compass = { north = 0, east = 90, south = 180, west = 270 },
+  compass = { north = 0, east = 90, south = 180, west = 270,
+              northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
+  -- how many times real time, said in words
+  multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
+  -- a spoken callsign matched to an aircraft it does not spell exactly is
+  -- confirmed by a question unless the airline and the digits both match
+  -- at least this well (similarity 0-1)
+  callsign_confirm = { airline = 0.5, digits = 0.6 },
+  -- answers that confirm a question ("did you mean BAW123?")
+  yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
   turn_around = { "around", "opposite", "reverse" },
   -- names said before a value they introduce
   named = { "named", "called" },

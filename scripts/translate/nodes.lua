@@ -225,9 +225,10 @@ end
 
 function M.offline(state, ctx)
   local world = M.world(ctx.sim, ctx.waypoints)
+  world.confirmed = ctx.confirmed
   local tr = grammar.translate(state.request, world)
   if tr.ask then
-    state.ask = tr.ask
+    state.ask, state.confirm = tr.ask, tr.confirm
     M.say(state, "offline", "asks: " .. tr.ask)
     return "ask"
   end

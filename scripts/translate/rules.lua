@@ -61,8 +61,11 @@ return function(intent, rule)
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
 
   -- altitude
-  rule { "climb climbing descend descending altitude cruise altitudes", false, prev = { 2, "rate" } }
-  rule { "climb climbing descend descending altitude cruise altitudes", "alt" }
+  rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
+  rule { "climb climbing descend descending altitude alt cruise altitudes", "alt" }
+  rule { "drop", "alt", not_near = { 2, "speed" } }
+  rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
   rule { "level", "alt", next = "off" }
@@ -72,12 +75,15 @@ return function(intent, rule)
 
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
+  rule { "speed", "dtmult", prev = { 1, "x times" } }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
   rule { "speed spd airspeed", false, prev = { 2, "half double" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
+  rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow slower faster accelerate decelerate", "spd" }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
 
@@ -89,7 +95,8 @@ return function(intent, rule)
     return g:number_at(i + 1) and not g:word(i + 2, "degrees degree") and not g:preceded_by(i, 2, "turn heading")
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
-  rule { "point fly towards toward head", "hdg", near = { 4, "north south east west" } }
+  rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
+  rule { "due", "hdg", next = "@compass" }
   rule { "around", false, prev = { 3, "turn" } }
 
   -- vertical speed and bank
@@ -107,6 +114,7 @@ return function(intent, rule)
   rule { "add append insert give", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 3, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 6, "@route_nouns" } }
+  rule { "via", "addwpt", prev = { 3, "route" } }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
@@ -143,12 +151,15 @@ return function(intent, rule)
   rule { "unpause", "op" }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", next = "navigation" }
+  rule { "run", "dtmult", near = { 4, "times x" } }
+  rule { "start", "op", near = { 3, "@sim" } }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x" } }
   rule { "continue resume", "op", when = function(g, i)
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
   end }
+  rule { "real", false, prev = { 1, "than" } }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
