@@ -19,6 +19,7 @@
 --   rule(spec), intent(name)(spec)   add a rule / an intent at run time,
 --     checked like the file's (an error names the caller's file:line).
 --     New rules go before the file's rules, so they win.
+--   handler(name, fn)  a new handler fn(g, s, spec) (see translate/handlers.lua)
 --   check_command(name, args, level)  the registry check used for both.
 --   has_instruction(text) -> true when a word of text starts an instruction.
 local lexicon = require("translate.lexicon")
@@ -56,7 +57,13 @@ end
 
 local handlers  -- translate.handlers, loaded after M is complete
 
+local G = {}
+G.__index = G
+
 local function add_intent(name, spec, level)
+  if handlers and not G[spec.handler] then
+    error("grammar: intent '" .. name .. "' has no handler '" .. tostring(spec.handler) .. "'", level + 1)
+  end
   local cmds = spec.cmds or { spec.cmd }
   if #cmds == 0 then error("grammar: intent '" .. name .. "' names no command", level + 1) end
   for _, c in ipairs(cmds) do M.check_command(c, spec.cmds and {} or spec.args, level + 1) end
@@ -121,10 +128,10 @@ end
 require("translate.rules")(M.intent, M.rule)
 loading = false
 
--- ---- the state of one translation ----
+-- handler(name, fn): a new handler method fn(g, s, spec) for intents to name.
+function M.handler(name, fn) G[name] = fn end
 
-local G = {}
-G.__index = G
+-- ---- the state of one translation ----
 
 function G:word(i, words)
   local t = self.t[i]

@@ -131,6 +131,16 @@ return function(H, f, wrap, compass)
         relative = true
       end
     end
+    -- "descend 3000 ft" right after the verb, from higher up: to or by? Both read as descents.
+    if not relative and now and not q.to and not fl and dir ~= 0 and q.kind == "alt" and q.b == s.trig + 1
+        and self:word(q.e - 1, "@feet") then
+      local cur = now.alt_ft or 0
+      local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
+      local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)
+      if by_fits and to_fits then
+        return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
+      end
+    end
     for _, id in ipairs(ids) do
       local alt, target_ft
       if relative then
