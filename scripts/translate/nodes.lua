@@ -252,36 +252,35 @@ local function rejected(state, ctx, node, msg)
   return "fail"
 end
 
--- The registry's own parser, command by command, on a scratch copy where the
--- earlier commands of the line have run (so "CRE X ... ; HDG X 90" checks).
+-- The registry's own parser and then the command itself, command by command,
+-- on one scratch copy where the earlier commands of the line have run (so
+-- "CRE X ... ; HDG X 90" checks); the real sim is untouched. The outputs
+-- wait in state.outputs for the execute node.
 function M.validate(state, ctx)
   local cmds = M.split_commands(state.candidate or "")
   if #cmds == 0 then return rejected(state, ctx, "validate", "no command was produced") end
   local scratch = ctx.sim:copy()
+  local outputs = {}
   for _, c in ipairs(cmds) do
     if not canonical_name(c:match("^(%S+)")) and not canonical_name(c:match("^%S+%s+(%S+)")) then
       return rejected(state, ctx, "validate", string.format("'%s': unknown command", c))
     end
     local ok, msg = scratch:check(c)
     if not ok then return rejected(state, ctx, "validate", msg) end
-    scratch:exec(c)
+    ok, msg = scratch:exec(c)
+    if not ok then return rejected(state, ctx, "validate", msg) end
+    if msg and msg ~= "" then outputs[#outputs + 1] = msg end
   end
-  M.say(state, "validate", "parses: " .. table.concat(cmds, " ; "))
+  state.outputs = outputs
+  M.say(state, "validate", "parses and runs: " .. table.concat(cmds, " ; "))
   return "ok"
 end
 
--- Runs the whole line on a fresh scratch copy; the real sim is untouched.
-function M.execute(state, ctx)
-  local cmds = M.split_commands(state.candidate)
-  local scratch = ctx.sim:copy()
-  local outputs = {}
-  for _, c in ipairs(cmds) do
-    local ok, msg = scratch:exec(c)
-    if not ok then return rejected(state, ctx, "execute", msg) end
-    if msg and msg ~= "" then outputs[#outputs + 1] = msg end
-  end
-  state.commands = cmds
+-- Accepts the line validate ran on its scratch copy.
+function M.execute(state)
+  state.commands = M.split_commands(state.candidate)
   state.error = nil
+  local outputs = state.outputs or {}
   M.say(state, "execute", "ran on a scratch copy: ok" .. (#outputs > 0 and ("; " .. table.concat(outputs, " / ")) or ""))
   return "ok"
 end
