@@ -36,13 +36,16 @@ nlohmann::json result_json(const translate::Translation& tr) {
 }
 
 // One JSON line per case: {"id","output"} | {"id","ask"} | {"id","error"}.
-void print_jsonl(script::Vm& vm, const std::vector<translate::CorpusCase>& cases, const std::string& mode) {
+// A graph that fails to run (not a case it cannot translate) stops it.
+Status print_jsonl(script::Vm& vm, const std::vector<translate::CorpusCase>& cases, const std::string& mode) {
   for (const auto& c : cases) {
     auto tr = script::run_translation_graph(vm, c.utterance, {mode, c.setup, nullptr});
-    nlohmann::json j = tr.is_ok() ? result_json(*tr) : nlohmann::json{{"error", tr.status().message()}};
+    if (!tr) return tr.status().with_context(c.id);
+    nlohmann::json j = result_json(*tr);
     j["id"] = c.id;
     std::printf("%s\n", j.dump().c_str());
   }
+  return Status::ok();
 }
 
 }  // namespace
@@ -59,7 +62,7 @@ int cmd_translate(const ArgV& argv) {
     if (!args->positional().empty()) return usage_error("translate", "give either TEXT or --tsv CORPUS.tsv");
     auto cases = translate::read_corpus(*tsv);
     if (!cases) return failure(cases.status());
-    print_jsonl(vm, *cases, *mode);
+    if (Status st = print_jsonl(vm, *cases, *mode); !st.is_ok()) return failure(st);
     return kExitOk;
   }
   if (args->positional().size() != 1) return usage_error("translate", "expected one quoted TEXT");
