@@ -17,6 +17,7 @@
 //       alt_ft=, cas_kt=, mach=, route = {"WPT", ...}}, ...},
 //       waypoints = {"NAME", ...}}; missing fields read as 0 / empty.
 //   squawk.translate.best_match(spoken, names) -> index, score | nothing
+//   squawk.translate.json_decode(text) -> value (objects/arrays as tables, null as nil)
 //   squawk.translate.score(produced, asked, expected) -> boolean
 //       The corpus scoring rules (shared/corpora/README.md): `produced` is
 //       "CMD ; CMD", `asked` true when the translator asked instead.
@@ -27,6 +28,7 @@
 #include "script/translate_graph.h"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 #include "translate/corpus.h"
 #include "translate/fuzzy.h"
@@ -309,6 +311,45 @@ int l_u_number(lua_State* L) {
   return 1;
 }
 
+// Pushes a JSON value as Lua (objects and arrays as tables, null as nil).
+void push_json(lua_State* L, const nlohmann::json& j, int depth) {
+  if (depth > 64) throw ArgError("json_decode: nested deeper than 64 levels");
+  luaL_checkstack(L, 4, "json_decode");
+  if (j.is_object()) {
+    lua_createtable(L, 0, static_cast<int>(j.size()));
+    for (const auto& [k, v] : j.items()) {
+      push_json(L, v, depth + 1);
+      lua_setfield(L, -2, k.c_str());
+    }
+  } else if (j.is_array()) {
+    lua_createtable(L, static_cast<int>(j.size()), 0);
+    lua_Integer i = 0;
+    for (const auto& v : j) {
+      push_json(L, v, depth + 1);
+      lua_seti(L, -2, ++i);
+    }
+  } else if (j.is_string()) {
+    const auto& str = j.get_ref<const std::string&>();
+    lua_pushlstring(L, str.data(), str.size());
+  } else if (j.is_boolean()) {
+    lua_pushboolean(L, j.get<bool>());
+  } else if (j.is_number_integer()) {
+    lua_pushinteger(L, j.get<lua_Integer>());
+  } else if (j.is_number()) {
+    lua_pushnumber(L, j.get<double>());
+  } else {
+    lua_pushnil(L);
+  }
+}
+
+// squawk.translate.json_decode(text) -> value; raises on text that is not JSON.
+int l_json_decode(lua_State* L) {
+  const auto j = nlohmann::json::parse(arg_string(L, 1, "text"), nullptr, false);
+  if (j.is_discarded()) throw ArgError("json_decode: the text is not valid JSON");
+  push_json(L, j, 0);
+  return 1;
+}
+
 // squawk.translate.best_match(spoken, {names}) -> index (1-based), score | nil
 int l_best_match(lua_State* L) {
   const std::string spoken = arg_string(L, 1, "spoken");
@@ -412,6 +453,7 @@ void bind_translate(lua_State* L) {
                           {"corpus", guarded<l_corpus>},
                           {"utterance", guarded<l_utterance>},
                           {"best_match", guarded<l_best_match>},
+                          {"json_decode", guarded<l_json_decode>},
                           {nullptr, nullptr}};
   luaL_setfuncs(L, fns, 0);
   lua_pop(L, 1);

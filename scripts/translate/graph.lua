@@ -143,6 +143,7 @@ function M.modes.multi(opts)
     :edge("verify", "no", "ask")
     :edge("verify", "llm_failed", "offline")
     :edge("fill", "ok", "validate")
+    :edge("fill", "ask", "done")
     :edge("fill", "llm_failed", "offline")
   return common_tail(g, "fill")
 end

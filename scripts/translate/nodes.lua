@@ -7,6 +7,7 @@
 -- holds the collaborators: llm (or nil), sim (never changed), index, prompts,
 -- k, max_retries. Every node records what it did with say().
 local grammar = require("translate.grammar")
+local schema = require("translate.schema")
 
 local M = {}
 
@@ -101,9 +102,10 @@ local function command_context(state, ctx)
   return usage_of(state.cmd)
 end
 
--- Asks the LLM; returns the reply, or nil after recording the failure.
-local function ask_llm(state, ctx, node, prompt)
-  local reply, info = ctx.llm:chat(prompt, { on_token = ctx.on_token })
+-- Asks the LLM (with a registry JSON schema when `shape` is given); returns
+-- the reply, or nil after recording the failure.
+local function ask_llm(state, ctx, node, prompt, shape)
+  local reply, info = ctx.llm:chat(prompt, { on_token = ctx.on_token, schema = shape })
   if not reply then
     M.say(state, node, "LLM failed, falling back to the offline translator: " .. tostring(info))
     return nil
@@ -117,8 +119,18 @@ local function with_feedback(prompt, state, ctx)
   return prompt .. M.render(ctx.prompts.feedback, state.feedback)
 end
 
--- Reads a candidate line (or a question) out of an LLM reply.
+-- Reads a candidate line (or a question) out of an LLM reply: the schema's
+-- JSON shape, else \boxed{...} or the first line.
 local function take_candidate(state, reply)
+  local json_line, json_ask = schema.read(reply)
+  if json_ask then
+    state.ask = json_ask
+    return "ask"
+  end
+  if json_line then
+    state.candidate, state.source = json_line, "llm"
+    return "ok"
+  end
   local line = M.boxed(reply) or trim(reply:match("[^\n]+") or "")
   if line:upper():sub(1, 3) == "ASK" then
     local q = trim(line:sub(4))
@@ -173,11 +185,22 @@ function M.ask(state, ctx)
   return "done"
 end
 
+-- What the offline grammar makes of the request, offered to the LLM nodes.
+local function grammar_reading(state, ctx)
+  if not state.reading then
+    local world = M.world(ctx.sim, ctx.waypoints)
+    local tr = grammar.translate(state.request, world)
+    state.reading = tr.ask and ("a question: " .. tr.ask) or table.concat(tr.commands, " ; ")
+  end
+  return M.render(ctx.prompts.grammar or "", { reading = state.reading })
+end
+
 function M.fill(state, ctx)
   local prompt = M.render(ctx.prompts.state, { state = M.state_lines(ctx.sim) })
     .. M.render(ctx.prompts.parameters,
       { cmd = state.cmd, context = command_context(state, ctx), request = state.request })
-  local reply = ask_llm(state, ctx, "fill", with_feedback(prompt, state, ctx))
+    .. grammar_reading(state, ctx)
+  local reply = ask_llm(state, ctx, "fill", with_feedback(prompt, state, ctx), schema.for_commands({ state.cmd }))
   if not reply then return "llm_failed" end
   local label = take_candidate(state, reply)
   M.say(state, "fill", label == "ask" and ("asks: " .. state.ask) or ("candidate: " .. state.candidate))
@@ -187,7 +210,8 @@ end
 function M.single(state, ctx)
   local prompt = M.render(ctx.prompts.single,
     { content = content(state), state = M.state_lines(ctx.sim), request = state.request })
-  local reply = ask_llm(state, ctx, "single", with_feedback(prompt, state, ctx))
+    .. grammar_reading(state, ctx)
+  local reply = ask_llm(state, ctx, "single", with_feedback(prompt, state, ctx), schema.for_commands())
   if not reply then return "llm_failed" end
   local label = take_candidate(state, reply)
   M.say(state, "single", label == "ask" and ("asks: " .. state.ask) or ("candidate: " .. state.candidate))
