@@ -24,7 +24,12 @@ Result<llm::LlmConfig> config_from(const Args& args) {
   SQUAWK_ASSIGN_OR_RETURN(c.temperature, args.get_double("--temperature", c.temperature));
   SQUAWK_ASSIGN_OR_RETURN(c.seed, args.get_int("--seed", c.seed));
   SQUAWK_ASSIGN_OR_RETURN(long long ctx, args.get_int("--context", c.context_size));
+  if (ctx < 1 || ctx > 2147483647)
+    return Status::invalid("--context " + std::to_string(ctx) + ": expected 1 to 2147483647 tokens");
   c.context_size = static_cast<int>(ctx);
+  SQUAWK_ASSIGN_OR_RETURN(long long mb, args.get_int("--max-reply-mb", c.max_reply_bytes >> 20));
+  if (mb < 1 || mb > (1 << 20)) return Status::invalid("--max-reply-mb " + std::to_string(mb) + ": expected 1 to 1048576");
+  c.max_reply_bytes = static_cast<size_t>(mb) << 20;
   SQUAWK_ASSIGN_OR_RETURN(c.timeout_s, args.get_double("--timeout", c.timeout_s));
   if (c.url.empty()) return Status::invalid("no LLM server: pass --llm-url URL or set SQUAWK_LLM_URL");
   return c;
@@ -35,7 +40,7 @@ Result<llm::LlmConfig> config_from(const Args& args) {
 int cmd_llm(const ArgV& argv) {
   Args::Spec spec;
   spec.value_flags = {"--llm-url", "--llm-model", "--llm-api", "--system", "--temperature",
-                      "--seed",    "--context",   "--timeout"};
+                      "--seed",    "--context",   "--timeout",   "--max-reply-mb"};
   spec.bool_flags = {"--stream"};
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("llm", args.status().message());

@@ -77,26 +77,38 @@ const std::vector<Subcommand>& subcommands() {
        "  init        write a random GPT-2 folder (GPT-2's initialisation; default the\n"
        "              tiny shape) over the vocabulary of --vocab DIR or the bytes\n",
        cmd_gpt2},
-      {"render", "render EPISODE.jsonl|SCENARIO.lua   draw an episode as SVG (Fig. 2 style)",
+      {"render", "render EPISODE.jsonl|SCENARIO.lua|SCENARIO.scn   draw an episode or traffic as SVG",
        "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"
        "                     [--out FILE.svg|-]\n"
-       "       squawk render SCENARIO.lua [--seed N] [--out FILE.svg|-]\n\n"
-       "With a scenario file, draws the start of its evaluation episode for the seed.\n"
-       "Draws a recorded episode top-down, north up: the ownship's and intruders'\n"
-       "tracks, each intruder's separation circle (red while the ownship is inside),\n"
-       "the waypoint with its capture circle, a scale bar and a north arrow.\n"
-       "Episodes are recorded by `squawk demo --record FILE` and `squawk eval --record FILE`.\n"
+       "       squawk render SCENARIO.lua [--seed N] [--size PX] [--out FILE.svg|-]\n"
+       "       squawk render SCENARIO.scn [--at T] [--navdata DIR] [--size PX] [--out FILE.svg|-]\n\n"
+       "Draws a recorded episode top-down, north up (the paper's Fig. 2): the\n"
+       "ownship's and intruders' tracks, each intruder's separation circle (red\n"
+       "while the ownship is inside), the waypoint with its capture circle, the\n"
+       "ownship's closest approach to any intruder so far, a scale bar and a north\n"
+       "arrow; the caption gives the time and the frame. Episodes are recorded by\n"
+       "`squawk demo --record FILE` and `squawk eval --record FILE`.\n"
+       "With a scenario file (.lua), draws the start of its evaluation episode for\n"
+       "the seed. With a BlueSky scenario (.scn), runs it to T seconds (default 0)\n"
+       "and draws every aircraft with its track, flight level and speed, red while\n"
+       "in a detected conflict; commands that fail are summarised on stderr.\n"
        "  --episode K draw episode K of the recording (default: the first one)\n"
-       "  --frame N   draw aircraft where they were at recorded frame N (default: last)\n"
+       "  --frame N   draw aircraft where they were at recorded frame N, 0 to the\n"
+       "              last (default: the last); other numbers are errors\n"
+       "  --at T      .scn: the time drawn [s], 0 to 86400\n"
+       "  --navdata DIR  .scn: BlueSky navdata (default $SQUAWK_NAVDATA)\n"
+       "  --size PX   picture side, 100 to 8000 (default 720)\n"
        "  --out FILE  output path (default: the input with .svg; `-` = stdout)\n"
        "For a PNG: rsvg-convert -o out.png out.svg (Debian package librsvg2-bin).\n",
        cmd_render},
-      {"plot", "plot RUN_DIR|FILE.csv      draw training curves as SVG (Fig. 3 style)",
-       "usage: squawk plot RUN_DIR|FILE.csv [--out FILE.svg|-]\n\n"
-       "Reads the CSV logs a training run writes (columns episodes and\n"
+      {"plot", "plot RUN_DIR|FILE.csv...   draw training curves as SVG (Fig. 3 style)",
+       "usage: squawk plot RUN_DIR|FILE.csv... [--out FILE.svg|-]\n\n"
+       "Reads the CSV logs training runs write (columns episodes and\n"
        "eval_success_rate / eval_mean_reward, or success_rate / mean_reward)\n"
-       "and draws success rate and mean reward against episodes trained, one\n"
-       "line per CSV file. Default output: RUN_DIR/curves.svg.\n",
+       "and draws success rate and mean reward against episodes trained (from 0),\n"
+       "one line per CSV file: every CSV in each RUN_DIR, and each FILE.csv named.\n"
+       "Default output: RUN_DIR/curves.svg or FILE.svg for one argument,\n"
+       "curves.svg in the current folder for several.\n",
        cmd_plot},
       {"rag", "rag search QUERY | rag eval CORPUS.tsv   command retrieval (BM25)",
        "usage: squawk rag search QUERY... [--k N] [--text] [--notes FILE] [--no-notes]\n"
@@ -114,23 +126,58 @@ const std::vector<Subcommand>& subcommands() {
        "  --no-notes     the registry documentation alone\n",
        cmd_rag},
       {"repl", "repl [SCENARIO.scn]        talk to the simulation in English (or !TrafScript)",
-       "usage: squawk repl [SCENARIO.scn] [--mode offline|single|multi] [--llm-url URL]\n"
-       "                   [--llm-model NAME] [--llm-api ollama|openai] [--seed N] [--navdata DIR]\n\n"
+       "usage: squawk repl [SCENARIO.scn] [--clock X] [--mode offline|single|multi]\n"
+       "                   [--llm-url URL] [--llm-model NAME] [--llm-api ollama|openai]\n"
+       "                   [--seed N] [--navdata DIR]\n\n"
        "An interactive session on one simulation. Each English line goes through\n"
        "the translation graph; the TrafScript it produced is shown, run, and the\n"
-       "aircraft it touched are listed. Lines starting with ! are TrafScript as\n"
-       "typed. :state lists the traffic, :run SECONDS advances time, :trace shows\n"
-       "the graph's path for the last request, :mode M switches the translator,\n"
-       ":help, :quit. From a pipe there is no banner or prompt, only replies.\n\n"
+       "aircraft it touched are listed (current -> selected values, route). Lines\n"
+       "starting with ! are TrafScript as typed. A question back (?) is answered by\n"
+       "the next line; `cancel` drops it. Loading a scenario summarises its failed\n"
+       "commands as `squawk scn` does.\n"
+       "The clock is stopped (HOLD) unless --clock X (X times real time) or OP\n"
+       "starts it; HOLD stops it; FF SECONDS runs at once. While time moves,\n"
+       "conflicts and losses of separation are reported as they start and end,\n"
+       "with ECHO lines and failing scenario commands.\n"
+       "  :state        the clock, the aircraft, the conflicts (tLOS, tCPA, dCPA)\n"
+       "  :run SECONDS  advance now      :clock X|off  running clock on / off\n"
+       "  :trace        the graph's path for the last request\n"
+       "  :mode M       switch the translator      :help, :quit\n"
+       "On a terminal: readline history, Tab completes callsigns and commands,\n"
+       "Ctrl-C clears the line, Ctrl-D leaves. From a pipe there is no banner or\n"
+       "prompt, only replies.\n\n"
        "The LLM comes from --llm-url/--llm-model/--llm-api or SQUAWK_LLM_URL,\n"
        "SQUAWK_LLM_MODEL, SQUAWK_LLM_API; with none (or when the server fails) the\n"
        "offline grammar translates. The default mode is multi with an LLM, else\n"
        "offline.\n",
        cmd_repl},
+      {"serve", "serve [SCENARIO.scn]       the radar scope in a browser, simulation running live",
+       "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--speed X] [--paused]\n"
+       "                    [--mode offline|single|multi] [--seed N] [--navdata DIR] [--web DIR]\n"
+       "                    [--agent [--policy mlp|gpt2] [--checkpoint FILE] [--auto]]\n\n"
+       "Serves a radar scope at http://127.0.0.1:8080/ while the simulation runs live\n"
+       "on the server: real time x DTMULT (--speed sets it; HOLD, OP and FF work as\n"
+       "commands). The page shows the traffic, conflicts and their closest points of\n"
+       "approach, a traffic list, and a command line for English (the REPL's\n"
+       "translation graph) or !TrafScript. Several browsers may watch at once.\n\n"
+       "  --port N      listen port (0: any free port; the URL is printed)\n"
+       "  --host ADDR   listen address; default 127.0.0.1 (this machine only)\n"
+       "  --paused      start in HOLD\n"
+       "  --web DIR     serve the page from DIR instead of the shipped web/\n"
+       "  --agent       the AI teammate: the demo's episode of --seed (KL001 and its\n"
+       "                intruders) with the deconfliction agent, whose advisories\n"
+       "                the page offers to accept or reject (the log says who decided)\n"
+       "  --policy K    the agent: mlp (default) or gpt2; --checkpoint FILE another one\n"
+       "  --auto        execute the agent's advisories without asking (the page can\n"
+       "                switch this on and off)\n\n"
+       "HTTP API (JSON): GET /api/state, GET /api/stream (server-sent events, 10 Hz),\n"
+       "POST /api/command {\"text\": ...}, POST /api/advisory {\"id\", \"decision\"},\n"
+       "POST /api/auto {\"on\"}, GET /api/navdata?south=&north=&west=&east=.\n",
+       cmd_serve},
       {"llm", "llm chat TEXT | llm embed TEXT   ask the configured LLM server directly",
        "usage: squawk llm chat TEXT... [--stream] [--system TEXT] [--llm-url URL]\n"
        "                  [--llm-model NAME] [--llm-api ollama|openai] [--temperature T]\n"
-       "                  [--seed N] [--context TOKENS] [--timeout SECONDS]\n"
+       "                  [--seed N] [--context TOKENS] [--timeout SECONDS] [--max-reply-mb MB]\n"
        "       squawk llm embed TEXT... [same server flags]\n\n"
        "Sends one request to the LLM server the translator would use, to check the\n"
        "configuration: `chat` prints the reply (--stream prints it as it arrives)\n"

@@ -235,13 +235,21 @@ void Stack::step() {
   test_conditions();
 }
 
+int64_t Stack::advance(double wall_s, int64_t max_steps) {
+  return sim_.advance(wall_s, max_steps, [this] { step(); });
+}
+
 Status Stack::run_until(double t_end) {
   if (!std::isfinite(t_end)) return Status::invalid("run until: time must be finite");
   while (true) {
     process_due();
     if (sim_.simt() + 0.5 * sim_.dt() > t_end) break;
+    const double before = sim_.simt();
     sim_.step();
     test_conditions();
+    if (!(sim_.simt() > before))
+      return Status::invalid("run until: the time step " + text::fmt_double(sim_.dt(), 9) +
+                             " s no longer advances the clock at t = " + text::fmt_double(before, 2) + " s");
   }
   return Status::ok();
 }
@@ -294,8 +302,10 @@ Result<std::string> Stack::find_scenario(const std::string& name) const {
 Status Stack::merge_scenario(const std::string& path, const std::vector<std::string>& args, bool relative) {
   if (include_depth_ >= kMaxIncludeDepth)
     return Status::invalid("scenario " + text::quoted(path) + ": more than " +
-                           std::to_string(kMaxIncludeDepth) + " nested PCALLs");
+                           std::to_string(kMaxIncludeDepth) + " nested IC/PCALLs");
   SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
+  if (read_filter_ && !read_filter_(file))
+    return Status::invalid("scenario " + text::quoted(file) + ": reading it is not allowed here (sandbox)");
   SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
   merge_entries(file, std::move(scn), args, relative);
   return Status::ok();
@@ -327,7 +337,12 @@ void Stack::merge_entries(const std::string& file, ScnFile scn, const std::vecto
 }
 
 Status Stack::load_scenario(const std::string& path) {
+  if (include_depth_ >= kMaxIncludeDepth)
+    return Status::invalid("scenario " + text::quoted(path) + ": more than " +
+                           std::to_string(kMaxIncludeDepth) + " nested IC/PCALLs");
   SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
+  if (read_filter_ && !read_filter_(file))
+    return Status::invalid("scenario " + text::quoted(file) + ": reading it is not allowed here (sandbox)");
   SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
   reset();
   merge_entries(file, std::move(scn), {}, false);

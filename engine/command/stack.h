@@ -28,6 +28,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -76,6 +77,9 @@ class Stack {
   // find_scenario).
   void set_base_dir(std::string dir) { base_dir_ = std::move(dir); }
   const std::string& base_dir() const { return base_dir_; }
+  // IC / PCALL open only files this predicate accepts (a sandbox's read
+  // rule); none set: every file.
+  void set_read_filter(std::function<bool(const std::string& path)> f) { read_filter_ = std::move(f); }
 
   // Runs a line now (one or more `;` commands, as typed by a user). Stops at
   // the first failing command (earlier ones keep their effect) and returns its
@@ -99,6 +103,9 @@ class Stack {
   Status run_until(double t_end);
   // One step: due commands, Simulation::step, conditions.
   void step();
+  // Steps as the run state asks (Simulation::advance: HOLD none, FF until its
+  // end, OP wall_s seconds of wall clock), each step through step().
+  int64_t advance(double wall_s, int64_t max_steps);
   // Runs the commands due at the current time without stepping.
   void process_due();
 
@@ -157,6 +164,7 @@ class Stack {
   uint64_t seed_ = 0;
   double dtmult_ = 1.0;
   bool noise_ = false;
+  std::function<bool(const std::string&)> read_filter_;
   int include_depth_ = 0;  // PCALL nesting guard (not state: always 0 between calls)
 
   Tally tally_;

@@ -90,7 +90,7 @@ int l_size(lua_State* L) {
 
 void bind_rag(lua_State* L) {
   const luaL_Reg methods[] = {{"search", guarded<l_search>}, {"size", guarded<l_size>}, {nullptr, nullptr}};
-  define_class<rag::Bm25Index>(L, kIndexMt, methods);
+  define_class(L, kIndexMt, methods);
   push_squawk_subtable(L, "rag");
   lua_pushcfunction(L, guarded<l_index>);
   lua_setfield(L, -2, "index");

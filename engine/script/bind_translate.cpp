@@ -25,6 +25,7 @@
 #include "core/units.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
+#include "script/vm.h"
 #include "script/translate_graph.h"
 
 #include <algorithm>
@@ -103,7 +104,7 @@ int l_score(lua_State* L) {
 }
 
 int l_corpus(lua_State* L) {
-  auto cases = translate::read_corpus(arg_string(L, 1, "path"));
+  auto cases = translate::read_corpus(readable(L, arg_string(L, 1, "path"), "corpus"));
   check_status(cases.status());
   lua_createtable(L, static_cast<int>(cases->size()), 0);
   for (size_t i = 0; i < cases->size(); ++i) {
@@ -433,6 +434,7 @@ Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
     return 1;
   });
   lua_pushlightuserdata(L, &ctx);
+  const Vm::Call budget(vm);  // a fresh instruction budget
   if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
     std::string msg = std::string("translation graph (scripts/translate/graph.lua): ") +
                       (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
@@ -464,7 +466,7 @@ void bind_translate(lua_State* L) {
                               {"used", guarded<l_u_used>},
                               {"number", guarded<l_u_number>},
                               {nullptr, nullptr}};
-  define_class<Utterance>(L, kUtteranceMt, methods);
+  define_class(L, kUtteranceMt, methods);
 }
 
 

@@ -103,6 +103,10 @@ Status Simulation::fast_forward(std::optional<double> duration) {
 }
 
 int64_t Simulation::advance(double wall_s, int64_t max_steps) {
+  return advance(wall_s, max_steps, [this] { step(); });
+}
+
+int64_t Simulation::advance(double wall_s, int64_t max_steps, const std::function<void()>& step_fn) {
   if (run_state_ == RunState::kHold || max_steps <= 0) return 0;
   int64_t k = 0;
   if (ff_) {
@@ -112,7 +116,7 @@ int64_t Simulation::advance(double wall_s, int64_t max_steps) {
         ff_end_.reset();
         break;
       }
-      step();
+      step_fn();
       ++k;
     }
     return k;
@@ -121,7 +125,7 @@ int64_t Simulation::advance(double wall_s, int64_t max_steps) {
   const int64_t due = static_cast<int64_t>(std::floor(wall_carry_ / dt_ + 1e-9));  // 1e-9: rounding of the carry
   k = std::min(due, max_steps);
   wall_carry_ = k < due ? 0.0 : wall_carry_ - static_cast<double>(k) * dt_;
-  for (int64_t s = 0; s < k; ++s) step();
+  for (int64_t s = 0; s < k; ++s) step_fn();
   return k;
 }
 

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -73,6 +74,9 @@ class Simulation {
   // clock worth of steps (the fraction of a step is carried over).
   // Returns the number of steps taken.
   int64_t advance(double wall_s, int64_t max_steps);
+  // The same, taking each step through `step_fn` (a layer above that runs its
+  // own work around Simulation::step, e.g. the command stack's queue).
+  int64_t advance(double wall_s, int64_t max_steps, const std::function<void()>& step_fn);
 
   // One step of dt.
   void step();
