@@ -480,6 +480,37 @@ Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& 
   });
 }
 
+Result<std::vector<rag::Document>> grammar_documents(Vm& vm) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, "translate.grammar");
+  const Vm::Call budget(vm);
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    std::string msg = std::string("grammar (scripts/translate/grammar.lua): ") +
+                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  lua_getfield(L, -1, "documents");
+  if (lua_pcall(L, 0, 1, 0) != LUA_OK || !lua_istable(L, -1)) {
+    std::string msg = std::string("grammar.documents(): ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "no list");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  std::vector<rag::Document> docs;
+  const lua_Integer n = luaL_len(L, -1);
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, -1, i);
+    lua_getfield(L, -1, "command");
+    lua_getfield(L, -2, "text");
+    if (lua_isstring(L, -2) && lua_isstring(L, -1)) docs.push_back({lua_tostring(L, -2), lua_tostring(L, -1)});
+    lua_pop(L, 3);
+  }
+  lua_settop(L, top);
+  return docs;
+}
+
 Result<GraphDialogue> GraphDialogue::open(Vm& vm, const GraphRequest& req) {
   int ref = LUA_NOREF;
   auto made = protected_call(vm, [&](lua_State* L) {

@@ -17,6 +17,7 @@
 
 #include "command/stack.h"
 #include "core/status.h"
+#include "rag/document.h"
 #include "script/vm.h"
 #include "translate/translation.h"
 
@@ -31,6 +32,10 @@ struct GraphRequest {
 };
 
 Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req);
+
+// The grammar's retrieval documents (translate.grammar.documents()): the
+// words of its rules and `words` lines, per registry command.
+Result<std::vector<rag::Document>> grammar_documents(Vm& vm);
 
 // A conversation through graph.dialogue(): a question keeps its partial
 // command and the next say() may answer it; "cancel" drops it. The Vm must

@@ -22,9 +22,11 @@
 --   handler(name, fn)  a new handler fn(g, s, spec) (see translate/handlers.lua)
 --   check_command(name, args, level)  the registry check used for both.
 --   has_instruction(text) -> true when a word of text starts an instruction.
+--   documents() -> {{command =, text =}, ...}  retrieval documents: the
+--     words of the rules, per registry command (squawk.rag.index docs)
 local lexicon = require("translate.lexicon")
 
-local M = { lexicon = lexicon, intents = {}, rules = {} }
+local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
 
 -- ---- the registry check ----
 
@@ -67,6 +69,7 @@ local function add_intent(name, spec, level)
   local cmds = spec.cmds or { spec.cmd }
   if #cmds == 0 then error("grammar: intent '" .. name .. "' names no command", level + 1) end
   for _, c in ipairs(cmds) do M.check_command(c, spec.cmds and {} or spec.args, level + 1) end
+  for _, c in ipairs(spec.also or {}) do M.check_command(c, {}, level + 1) end
   if spec.cmds then
     for _, a in ipairs(spec.args or {}) do
       M.check_command(cmds[1], { a }, level + 1)
@@ -125,7 +128,15 @@ function M.intent(name)
   return function(spec) add_intent(name, spec, 2) end
 end
 
-require("translate.rules")(M.intent, M.rule)
+-- words(cmd)(text): more words people use for a registry command.
+function M.add_words(cmd)
+  return function(text)
+    M.check_command(cmd, {}, 2)
+    M.words[#M.words + 1] = { command = cmd:upper(), text = text }
+  end
+end
+
+require("translate.rules")(M.intent, M.rule, M.add_words)
 loading = false
 
 -- handler(name, fn): a new handler method fn(g, s, spec) for intents to name.
@@ -339,6 +350,47 @@ function M.has_instruction(text)
     if g:intent_at(i) then return true end
   end
   return false
+end
+
+-- Retrieval documents from the grammar: for each registry command, the
+-- words whose rules lead to it and its `words` lines ({command =, text =}
+-- for squawk.rag.index).
+function M.documents()
+  local words, order, extra = {}, {}, {}
+  for _, w in ipairs(M.words) do
+    if not extra[w.command] then
+      extra[w.command] = w.text
+      if not words[w.command] then words[w.command], order[#order + 1] = {}, w.command end
+    end
+  end
+  for _, r in ipairs(M.rules) do
+    local spec = r.intent and M.intents[r.intent]
+    if spec and not r.any then
+      for _, cmd in ipairs(spec.cmds or { spec.cmd }) do
+        if not words[cmd] then words[cmd], order[#order + 1] = {}, cmd end
+        for w in pairs(r.words) do
+          local phrase = w
+          if r.next then
+            local nexts = {}
+            for n in pairs(r.next) do nexts[#nexts + 1] = w .. " " .. n end
+            table.sort(nexts)
+            phrase = table.concat(nexts, ", ")
+          end
+          words[cmd][phrase] = true
+        end
+      end
+    end
+  end
+  local docs = {}
+  for _, cmd in ipairs(order) do
+    local list = {}
+    for w in pairs(words[cmd]) do list[#list + 1] = w end
+    table.sort(list)
+    local text = "Words people use for " .. cmd .. ": " .. table.concat(list, ", ")
+    if extra[cmd] then text = text .. ". " .. extra[cmd] end
+    docs[#docs + 1] = { command = cmd, text = text }
+  end
+  return docs
 end
 
 -- True when every word of text is in lexicon[list] ("yes", "affirm").

@@ -159,7 +159,7 @@ end
 
 local cached_index
 local function default_index()
-  cached_index = cached_index or squawk.rag.index()
+  cached_index = cached_index or squawk.rag.index({ docs = grammar.documents() })
   return cached_index
 end
 

@@ -4,7 +4,7 @@
 -- command or argument is a load error naming this file and line.
 --
 -- intent NAME { cmd = "CMD" | cmds = {...}, args = {registry argument names},
---               handler = "fn in translate/handlers.lua", flags... }
+--               also = {commands it may add}, handler = "fn in translate/handlers.lua", flags... }
 --   flags: value (an instruction carrying one value: ALT, SPD, HDG, VS),
 --          absorbs (takes the value words after it: "create ... heading 090
 --          at FL200"), single (never merges with a neighbour of its kind)
@@ -19,7 +19,10 @@
 --     prev = {n, "w ..."}     one of these within the n words before
 --     not_prev = {n, "w ..."}
 --     when = function(g, i)   any other test (g: the grammar state)
-return function(intent, rule)
+--
+-- words "CMD" "text"   more words people use for a registry command, for
+-- the retrieval documents of the LLM modes (checked against the registry).
+return function(intent, rule, words)
   intent "alt" { cmd = "ALT", args = { "acid", "alt", "vspd" }, handler = "altitude", value = true, family = "alt" }
   intent "maintain" { cmds = { "ALT", "SPD", "HDG" }, handler = "maintain", value = true, family = "alt" }
   intent "spd" { cmd = "SPD", args = { "acid", "spd" }, handler = "speed", value = true }
@@ -32,7 +35,7 @@ return function(intent, rule)
                     absorbs = true }
   intent "defwpt" { cmd = "DEFWPT", args = { "name", "lat", "lon" }, handler = "define_waypoint", absorbs = true }
   intent "delwpt" { cmd = "DELWPT", args = { "acid", "wpname" }, handler = "delete_waypoint" }
-  intent "direct" { cmds = { "DIRECT", "ADDWPT", "ALT" }, args = { "acid", "wpname" }, handler = "direct" }
+  intent "direct" { cmd = "DIRECT", also = { "ADDWPT", "ALT" }, args = { "acid", "wpname" }, handler = "direct" }
   intent "dest" { cmd = "DEST", args = { "acid", "airport" }, handler = "dest" }
   intent "orig" { cmd = "ORIG", args = { "acid", "airport" }, handler = "orig" }
   intent "lnav" { cmd = "LNAV", args = { "acid", "ON", "OFF" }, handler = "lnav" }
@@ -45,7 +48,7 @@ return function(intent, rule)
   intent "hold" { cmd = "HOLD", handler = "bare" }
   intent "op" { cmd = "OP", handler = "bare" }
   intent "reset" { cmd = "RESET", handler = "bare" }
-  intent "ff" { cmds = { "FF", "DTMULT" }, args = { "seconds" }, handler = "fast_forward" }
+  intent "ff" { cmd = "FF", also = { "DTMULT" }, args = { "seconds" }, handler = "fast_forward" }
   intent "dt" { cmd = "DT", args = { "dt" }, handler = "time_step" }
   intent "dtmult" { cmd = "DTMULT", args = { "multiplier" }, handler = "time_mult" }
   intent "seed" { cmd = "SEED", args = { "value" }, handler = "seed" }
@@ -185,4 +188,31 @@ return function(intent, rule)
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }
   rule { "turbulence noise", "noise" }
+
+  -- The words people use for each command, beyond the rule words above:
+  -- retrieval documents for the LLM modes (grammar.documents()).
+  words "CRE" "add, create, spawn, insert or put a new aircraft or flight of a type (Boeing, Airbus) at a position with heading, altitude and speed"
+  words "ALT" "climb, descend, climb and maintain, descend and maintain, cruise at, level off at, flight level FL, feet ft, altitude, higher, lower, raise, put at a level"
+  words "HDG" "turn left, turn right, fly heading, point, steer, vector, head north south east west, due, course, degrees, direction"
+  words "SPD" "speed, knots kts, Mach, slow down, speed up, reduce, increase, accelerate, decelerate, airspeed of an aircraft"
+  words "VS" "vertical speed, vertical rate, rate of climb or descent, feet per minute, fpm, ft/min"
+  words "DEL" "delete, remove, take out, get rid of an aircraft from the simulation"
+  words "MOVE" "teleport, move, place, reposition, relocate an aircraft to a new position, altitude, heading and speed"
+  words "POS" "show, details, status, information, where is, report position, altitude and speed of an aircraft"
+  words "FF" "fast forward, fast-time, speed up or accelerate the simulation, skip ahead in time"
+  words "HOLD" "pause, freeze, stop or halt the simulation"
+  words "OP" "resume, continue, unpause, start or run the simulation"
+  words "DT" "simulation time step, timestep, update interval in seconds"
+  words "DTMULT" "simulation speed factor, run the sim slower or faster than real time, half speed, double speed"
+  words "DEST" "destination, fly to, bound for, land at an airport"
+  words "ORIG" "origin, departure airport, coming from"
+  words "ADDWPT" "add or insert a waypoint, fix or point to the route or flight plan of an aircraft, crossed at an altitude and speed"
+  words "DELWPT" "delete or remove a waypoint from the route or flight plan"
+  words "DEFWPT" "define, create or name a custom waypoint or fix at a position"
+  words "LISTRTE" "list or show the route, flight plan or waypoints of an aircraft"
+  words "DIRECT" "direct to, proceed direct, fly straight to, cleared direct a waypoint"
+  words "ATALT" "when or once an aircraft reaches, passes or gets to an altitude or flight level, then do a command"
+  words "ATSPD" "when or once an aircraft reaches, slows to or accelerates to a speed, then do a command"
+  words "ATDIST" "when or once an aircraft is within a distance in nautical miles of a point, then do a command"
+  words "ECHO" "print, show or display a message or text"
 end
