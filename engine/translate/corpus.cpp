@@ -3,34 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/files.h"
 #include "core/text.h"
 #include "translate/scorer.h"
 
 namespace squawk::translate {
-
-Result<std::vector<CorpusCase>> parse_corpus(const std::string& tsv, const std::string& name) {
-  std::vector<CorpusCase> cases;
-  auto lines = text::split(tsv, '\n');
-  for (size_t i = 1; i < lines.size(); ++i) {
-    std::string line = lines[i];
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (text::trim(line).empty()) continue;
-    auto f = text::split(line, '\t');
-    if (f.size() < 5) {
-      std::string msg = name;
-      msg.append(":").append(std::to_string(i + 1)).append(": expected 5 tab-separated fields (id setup utterance expected category), got ").append(std::to_string(f.size()));
-      return Status::corruption(msg);
-    }
-    cases.push_back({f[0], f[1], f[2], f[3], f[4]});
-  }
-  return cases;
-}
-
-Result<std::vector<CorpusCase>> read_corpus(const std::string& path) {
-  SQUAWK_ASSIGN_OR_RETURN(std::string tsv, files::read(path));
-  return parse_corpus(tsv, path);
-}
 
 EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& translate) {
   EvalReport r;

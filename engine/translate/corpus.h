@@ -1,8 +1,7 @@
 // Translation corpora (shared/corpora/*.tsv) and their evaluation.
 //
-// Contract: read_corpus() reads the TSV format `id setup utterance expected
-// category` (a header line first); a row with fewer than 5 fields is an
-// error naming the file and line. evaluate() runs a translator on every case
+// Contract: the cases are read by the one corpus reader, rag/corpus.h
+// (rag::read_corpus / parse_corpus, errors naming file and line). evaluate() runs a translator on every case
 // and scores it with score_case() into one of three outcomes:
 //   right  the expected commands (or a question where ASK was expected);
 //   asked  no command issued (a question, or nothing valid) where commands
@@ -19,17 +18,14 @@
 #include <vector>
 
 #include "core/status.h"
+#include "rag/corpus.h"
 #include "translate/translation.h"
 
 namespace squawk::translate {
 
-struct CorpusCase {
-  std::string id, setup, utterance, expected, category;
-};
-
-Result<std::vector<CorpusCase>> read_corpus(const std::string& path);
-// Parses TSV text; `name` is used in error messages.
-Result<std::vector<CorpusCase>> parse_corpus(const std::string& tsv, const std::string& name);
+using rag::CorpusCase;
+using rag::parse_corpus;
+using rag::read_corpus;
 
 struct CaseOutcome {
   std::string id, category, produced, expected;

@@ -89,7 +89,7 @@ TEST_CASE("corpus reading and right / asked / wrong per category") {
   CHECK(r.categories[1].wrong == 1);
   CHECK(r.categories[2].asked == 1);
   CHECK(format_report(r, "t").find("wrong") != std::string::npos);
-  auto bad = parse_corpus("h\nonly\ttwo\n", "mem");
+  auto bad = parse_corpus("id\tsetup\tutterance\texpected\tcategory\nonly\ttwo\n", "mem");
   CHECK_FALSE(bad.is_ok());
   CHECK(bad.status().message().find("mem:2") != std::string::npos);
   auto err = evaluate({{"b1", "CRE", "Delete it", "DEL X", "delete"}},
