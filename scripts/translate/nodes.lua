@@ -228,22 +228,16 @@ function M.defined_waypoints(line)
   return names
 end
 
--- The route waypoint names of an aircraft, read from LISTRTE on a copy.
-local function route_of(sim, id)
-  local ok, text = sim:copy():exec("LISTRTE " .. id)
-  local names = {}
-  if not ok then return names end
-  for line in text:gmatch("[^\n]+") do
-    local name = line:match("^[%*%s]%s*(%S+)%s+%-?%d+%.%d+%s+%-?%d+%.%d+")
-    if name then names[#names + 1] = name end
-  end
-  return names
-end
-
--- What the offline translator may know of the simulation.
+-- What the offline grammar may know of the simulation: the aircraft (route
+-- as waypoint names, mach when the selected speed is a Mach number) and
+-- the user waypoints.
 function M.world(sim, waypoints)
   local aircraft = sim:aircraft()
-  for _, a in ipairs(aircraft) do a.route = route_of(sim, a.id) end
+  for _, a in ipairs(aircraft) do
+    local names = {}
+    for _, w in ipairs(a.route or {}) do names[#names + 1] = w.name end
+    a.route, a.mach = names, a.sel_mach
+  end
   return { aircraft = aircraft, waypoints = waypoints or {} }
 end
 
