@@ -189,6 +189,7 @@ int l_utterance(lua_State* L) {
   u->tokens = translate::lex(text);
   for (auto& t : u->tokens)
     if (t.kind == translate::TokKind::kWord) t.text = translate::spell_fix(t.text);
+  translate::fold_digit_homophones(u->tokens);
   u->used.assign(u->tokens.size(), false);
   if (lua_isnoneornil(L, 2)) {
     u->refs = translate::find_references(u->tokens, nullptr, u->used);
