@@ -65,6 +65,23 @@ expect "plot two files"  0 "wrote" -- "$sq" plot "$tmp/log.csv" "$tmp/b.csv" --o
 [ "$(grep -c "<polyline" "$tmp/two.svg")" -eq 4 ] && { echo "ok   one line per file per panel"; pass=$((pass + 1)); } || { echo "FAIL plot two files"; fails=$((fails + 1)); }
 expect "plot missing"    1 "no CSV file or run folder" -- "$sq" plot "$tmp/log.csv" "$tmp/nope.csv" --out "$tmp/x.svg"
 rm -rf "$tmp"
+# One translation path: an error() at the top of scripts/translate/graph.lua
+# reaches every entry point that translates.
+home=$(mktemp -d)
+cp -r scripts prompts scenarios models "$home"/
+sed -i '1i error("one path check")' "$home/scripts/translate/graph.lua"
+printf 'return squawk.translate.run("KL204 climb FL300")\n' > "$home/run.lua"
+h=(env SQUAWK_HOME="$home" "$sq")
+expect "one path: translate" 1 "one path check" -- "${h[@]}" translate "KL204 climb FL300"
+expect "one path: eval"      1 "one path check" -- "${h[@]}" eval-translate tests/data/translate_heldout.tsv
+expect "one path: tsv"       1 "one path check" -- "${h[@]}" translate --tsv tests/data/translate_heldout.tsv
+expect "one path: demo"      1 "one path check" -- "${h[@]}" demo --quiet
+expect "one path: run"       1 "one path check" -- "${h[@]}" run "$home/run.lua"
+expect "one path: repl"      1 "one path check" -- "${h[@]}" repl
+rm -rf "$home"
+expect "translate"       0 "^ALT KL204 FL300$" -- "$sq" translate "KL204 climb FL300" --setup "CRE KL204 A320 52 4 90 FL250 280"
+expect "translate asks"  0 "What altitude should KL204" -- "$sq" translate "KL204 descend" --setup "CRE KL204 A320 52 4 90 FL250 280"
+expect "eval right/asked/wrong" 0 "overall +76 +[0-9]+ +[0-9]+ +[0-9]+" -- "$sq" eval-translate tests/data/translate_heldout.tsv
 a=$("$sq" run "$d/random.lua" --seed 11)
 b=$("$sq" run "$d/random.lua" --seed 11)
 c=$("$sq" run "$d/random.lua" --seed 12)

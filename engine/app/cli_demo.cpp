@@ -33,8 +33,7 @@
 #include "script/advisory.h"
 #include "script/policy_factory.h"
 #include "script/scenario.h"
-#include "translate/offline_translator.h"
-#include "translate/stack_world.h"
+#include "script/translate_graph.h"
 #include "viz/scene.h"
 
 namespace squawk::app {
@@ -193,7 +192,7 @@ int cmd_demo(const ArgV& argv) {
   demo.on_reset(e);
   e.set_observer(&demo);
 
-  translate::StackWorld world(stack);
+  script::Vm translator_vm(*vmo);  // runs the translation graph (scripts/translate/graph.lua)
   int decisions = 0, untranslated = 0;
   while (!e.done() && !demo.failed_) {
     const double hdg_now = e.fleet().hdg(0);
@@ -204,10 +203,12 @@ int cmd_demo(const ArgV& argv) {
     demo.log("agent", fmt("action %+.2f: heading %03.0f -> %03.0f", adv.action, hdg_now, adv.heading));
     demo.log("advisory", "\"" + *english + "\"");
     demo.note_ = *english;
-    const translate::Translation tr = translate::translate_offline(*english, &world);
-    if (tr.asked()) {
+    auto translated = script::run_translation_graph(translator_vm, *english, {"offline", "", &stack});
+    if (!translated) return failure(translated.status());
+    const translate::Translation& tr = *translated;
+    if (!tr.issued()) {
       ++untranslated;
-      demo.log("translator", "asked: " + tr.ask + " (no command; heading kept)");
+      demo.log("translator", tr.text() + " (no command; heading kept)");
     } else {
       demo.log("translator", tr.text());
       for (const auto& cmd : tr.commands)

@@ -114,16 +114,17 @@ const std::vector<Subcommand>& subcommands() {
        "usage: squawk rag search QUERY... [--k N] [--text] [--notes FILE] [--no-notes]\n"
        "       squawk rag eval CORPUS.tsv [--k N] [--misses] [--notes FILE] [--no-notes]\n\n"
        "Ranks the TrafScript commands for an English request with BM25 over the\n"
-       "command registry's documentation plus the retrieval notes in\n"
-       "scripts/translate/phraseology.txt (NAME: words per line).\n"
+       "command registry's documentation plus the grammar's words for each\n"
+       "command (scripts/translate/rules.lua), the documents the translation\n"
+       "graph retrieves from.\n"
        "`search` prints the best N commands with their scores (--text adds the\n"
        "documents). `eval` reads a translator corpus (id, setup, utterance,\n"
        "expected, category) and prints Recall@1 and Recall@N: the share of cases\n"
        "whose expected commands are all among the first N retrieved. ASK cases\n"
        "are counted apart; --misses lists the cases retrieval got wrong.\n\n"
        "  --k N          how many documents to retrieve (default 5)\n"
-       "  --notes FILE   retrieval notes to use instead of the shipped ones\n"
-       "  --no-notes     the registry documentation alone\n",
+       "  --notes FILE   more retrieval notes (NAME: words per line)\n"
+       "  --no-notes     the registry documentation alone, without the grammar's words\n",
        cmd_rag},
       {"repl", "repl [SCENARIO.scn]        talk to the simulation in English (or !TrafScript)",
        "usage: squawk repl [SCENARIO.scn] [--clock X] [--mode offline|single|multi]\n"
