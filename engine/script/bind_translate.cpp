@@ -3,7 +3,11 @@
 //
 //   squawk.translate.run(text, opts) -> graph.translate(text, opts) of
 //       scripts/translate/graph.lua (the one translation path)
-//   squawk.translate.utterance(text, [world]) -> u   the C++ extractors:
+//   squawk.translate.tables(names, phonetic) -> tables   the names the matchers
+//       know: names = {airlines = {{telephony, icao}, ...}, types = {{maker,
+//       model, icao}, ...}, designators = {...}} (scripts/translate/names.lua),
+//       phonetic = {alpha = "A", ...} (lexicon.phonetic)
+//   squawk.translate.utterance(text, world | nil, tables) -> u   the C++ extractors:
 //       u:tokens()  {{kind = "word"|"number"|"punct"|"quoted", text, raw, num,
 //                    number_word, keyword, filler, alpha}, ...} (spelling fixed)
 //       u:refs()    {{kind = "aircraft"|"type"|"waypoint", name, b, e, exists, spoken,
@@ -37,6 +41,7 @@
 #include "translate/number_words.h"
 #include "translate/quantities.h"
 #include "translate/references.h"
+#include "translate/tables.h"
 #include "translate/vocabulary.h"
 #include "translate/scorer.h"
 
@@ -125,6 +130,57 @@ int l_corpus(lua_State* L) {
 // ---- squawk.translate.utterance: the C++ extractors the Lua grammar reads ----
 
 constexpr const char* kUtteranceMt = "squawk.translate.Utterance";
+constexpr const char* kTablesMt = "squawk.translate.Tables";
+
+// The string at t[i] of the table at idx, or an ArgError naming where.
+std::string string_at(lua_State* L, int idx, lua_Integer i, const std::string& where) {
+  lua_geti(L, idx, i);
+  if (!lua_isstring(L, -1)) throw ArgError(where + "[" + std::to_string(i) + "]: expected a string");
+  std::string v = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  return v;
+}
+
+// squawk.translate.tables({airlines = {{telephony, icao}, ...}, types = {{maker,
+// model, icao}, ...}, designators = {...}}, {word = "A", ...}) -> tables
+int l_tables(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TTABLE);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  std::vector<translate::Airline> airlines;
+  std::vector<translate::TypeName> types;
+  std::vector<std::string> designators;
+  std::vector<std::pair<std::string, char>> phonetic;
+  lua_getfield(L, 1, "airlines");
+  for (lua_Integer i = 1; lua_istable(L, -1) && i <= luaL_len(L, -1); ++i) {
+    lua_geti(L, -1, i);
+    const int row = lua_gettop(L);
+    const std::string where = "names.airlines[" + std::to_string(i) + "]";
+    airlines.push_back({string_at(L, row, 1, where), string_at(L, row, 2, where)});
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, 1, "types");
+  for (lua_Integer i = 1; lua_istable(L, -1) && i <= luaL_len(L, -1); ++i) {
+    lua_geti(L, -1, i);
+    const int row = lua_gettop(L);
+    const std::string where = "names.types[" + std::to_string(i) + "]";
+    types.push_back({string_at(L, row, 1, where), string_at(L, row, 2, where), string_at(L, row, 3, where)});
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, 1, "designators");
+  designators = string_list(L, lua_gettop(L), "names.designators");
+  lua_pop(L, 1);
+  lua_pushnil(L);
+  while (lua_next(L, 2) != 0) {
+    if (lua_type(L, -2) == LUA_TSTRING && lua_type(L, -1) == LUA_TSTRING && lua_rawlen(L, -1) == 1)
+      phonetic.emplace_back(lua_tostring(L, -2), lua_tostring(L, -1)[0]);
+    lua_pop(L, 1);
+  }
+  new_object<translate::Tables>(L, kTablesMt, std::move(airlines), std::move(types), std::move(designators),
+                                std::move(phonetic));
+  return 1;
+}
 
 // Tokens (spelling fixed), the references found in them, and the mask of
 // tokens already consumed (by references and by the grammar).
@@ -184,7 +240,8 @@ void push_number(lua_State* L, const translate::SpokenNumber& n, size_t offset) 
 
 int l_utterance(lua_State* L) {
   const std::string text = arg_string(L, 1, "text");
-  lua_settop(L, 2);
+  const auto* names = arg_object<translate::Tables>(L, 3, kTablesMt, "tables");
+  lua_settop(L, 3);
   auto* u = new_object<Utterance>(L, kUtteranceMt);
   u->tokens = translate::lex(text);
   for (auto& t : u->tokens)
@@ -192,10 +249,10 @@ int l_utterance(lua_State* L) {
   translate::fold_digit_homophones(u->tokens);
   u->used.assign(u->tokens.size(), false);
   if (lua_isnoneornil(L, 2)) {
-    u->refs = translate::find_references(u->tokens, nullptr, u->used);
+    u->refs = translate::find_references(u->tokens, nullptr, u->used, *names);
   } else if (lua_istable(L, 2)) {
     translate::StaticWorld w = read_world(L, 2);
-    u->refs = translate::find_references(u->tokens, &w, u->used);
+    u->refs = translate::find_references(u->tokens, &w, u->used, *names);
   } else {
     throw ArgError(type_error(L, 2, "world", "nil or a world table"));
   }
@@ -457,6 +514,7 @@ void bind_translate(lua_State* L) {
                           {"utterance", guarded<l_utterance>},
                           {"best_match", guarded<l_best_match>},
                           {"json_decode", guarded<l_json_decode>},
+                          {"tables", guarded<l_tables>},
                           {nullptr, nullptr}};
   luaL_setfuncs(L, fns, 0);
   lua_pop(L, 1);
@@ -468,6 +526,8 @@ void bind_translate(lua_State* L) {
                               {"number", guarded<l_u_number>},
                               {nullptr, nullptr}};
   define_class(L, kUtteranceMt, methods);
+  const luaL_Reg no_methods[] = {{nullptr, nullptr}};
+  define_class(L, kTablesMt, no_methods);
 }
 
 
