@@ -206,7 +206,21 @@ function G:state(id)
   return nil
 end
 
-function G:quantities(b, e) return self.u:quantities(b, e) end
+-- The quantities in tokens [b, e), read once per range (mark_used forgets them).
+function G:quantities(b, e)
+  local key = b * 65536 + e
+  local q = self.qcache[key]
+  if not q then
+    q = self.u:quantities(b, e)
+    self.qcache[key] = q
+  end
+  return q
+end
+
+function G:mark_used(b, e)
+  self.u:mark_used(b, e)
+  self.qcache = {}
+end
 
 function G:need(question)
   if not self.ask then self.ask = question end
@@ -348,7 +362,7 @@ end
 function M.has_instruction(text)
   local u = squawk.translate.utterance(text, nil, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = { aircraft = {}, waypoints = {} },
-    fleet = {}, out = {} }, G)
+    fleet = {}, out = {}, qcache = {} }, G)
   for i = 1, #g.t do
     if g:intent_at(i) then return true end
   end
@@ -414,7 +428,8 @@ function M.translate(text, world)
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
   local u = squawk.translate.utterance(text, world, NAMES)
-  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {} }, G)
+  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
+    qcache = {} }, G)
   local cond, rest = g:condition()
   if not g.ask then
     g:parse(rest, #g.t + 1)
