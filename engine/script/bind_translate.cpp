@@ -6,7 +6,8 @@
 //   squawk.translate.tables(names, phonetic) -> tables   the names the matchers
 //       know: names = {airlines = {{telephony, icao}, ...}, types = {{maker,
 //       model, icao}, ...}, designators = {...}} (scripts/translate/names.lua),
-//       phonetic = {alpha = "A", ...} (lexicon.phonetic)
+//       lexicon: scripts/translate/lexicon.lua (phonetic, keywords, fillers,
+//       spelling = {targets, common})
 //   squawk.translate.utterance(text, world | nil, tables) -> u   the C++ extractors:
 //       u:tokens()  {{kind = "word"|"number"|"punct"|"quoted", text, raw, num,
 //                    number_word, keyword, filler, alpha}, ...} (spelling fixed)
@@ -141,8 +142,21 @@ std::string string_at(lua_State* L, int idx, lua_Integer i, const std::string& w
   return v;
 }
 
+// A list of strings at field `key` of the table at idx (nested: "a.b").
+std::vector<std::string> field_list(lua_State* L, int idx, const char* key, const char* sub = nullptr) {
+  lua_getfield(L, idx, key);
+  if (sub) {
+    if (!lua_istable(L, -1)) throw ArgError(std::string("lexicon.") + key + ": expected a table");
+    lua_getfield(L, -1, sub);
+    lua_remove(L, -2);
+  }
+  auto out = string_list(L, lua_gettop(L), (std::string("lexicon.") + key + (sub ? std::string(".") + sub : "")).c_str());
+  lua_pop(L, 1);
+  return out;
+}
+
 // squawk.translate.tables({airlines = {{telephony, icao}, ...}, types = {{maker,
-// model, icao}, ...}, designators = {...}}, {word = "A", ...}) -> tables
+// model, icao}, ...}, designators = {...}}, lexicon) -> tables
 int l_tables(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
   luaL_checktype(L, 2, LUA_TTABLE);
@@ -171,14 +185,20 @@ int l_tables(lua_State* L) {
   lua_getfield(L, 1, "designators");
   designators = string_list(L, lua_gettop(L), "names.designators");
   lua_pop(L, 1);
+  translate::Vocabulary vocabulary(field_list(L, 2, "keywords"), field_list(L, 2, "fillers"),
+                                  field_list(L, 2, "spelling", "targets"), field_list(L, 2, "spelling", "common"));
+  lua_getfield(L, 2, "phonetic");
+  if (!lua_istable(L, -1)) throw ArgError("lexicon.phonetic: expected a table {word = \"A\", ...}");
+  const int ph = lua_gettop(L);
   lua_pushnil(L);
-  while (lua_next(L, 2) != 0) {
+  while (lua_next(L, ph) != 0) {
     if (lua_type(L, -2) == LUA_TSTRING && lua_type(L, -1) == LUA_TSTRING && lua_rawlen(L, -1) == 1)
       phonetic.emplace_back(lua_tostring(L, -2), lua_tostring(L, -1)[0]);
     lua_pop(L, 1);
   }
+  lua_pop(L, 1);
   new_object<translate::Tables>(L, kTablesMt, std::move(airlines), std::move(types), std::move(designators),
-                                std::move(phonetic));
+                                std::move(phonetic), std::move(vocabulary));
   return 1;
 }
 
@@ -188,6 +208,7 @@ struct Utterance {
   std::vector<translate::Token> tokens;
   std::vector<bool> used;
   std::vector<translate::Reference> refs;
+  std::vector<bool> keyword, filler;  // per token, from the vocabulary
 };
 
 const char* tok_kind(translate::TokKind k) {
@@ -245,8 +266,12 @@ int l_utterance(lua_State* L) {
   auto* u = new_object<Utterance>(L, kUtteranceMt);
   u->tokens = translate::lex(text);
   for (auto& t : u->tokens)
-    if (t.kind == translate::TokKind::kWord) t.text = translate::spell_fix(t.text);
+    if (t.kind == translate::TokKind::kWord) t.text = names->vocabulary().spell_fix(t.text);
   translate::fold_digit_homophones(u->tokens);
+  for (const auto& t : u->tokens) {
+    u->keyword.push_back(names->vocabulary().is_keyword(t.text));
+    u->filler.push_back(names->vocabulary().is_filler(t.text));
+  }
   u->used.assign(u->tokens.size(), false);
   if (lua_isnoneornil(L, 2)) {
     u->refs = translate::find_references(u->tokens, nullptr, u->used, *names);
@@ -272,8 +297,8 @@ int l_u_tokens(lua_State* L) {
     set_num(L, "num", t.num);
     set_bool(L, "number_word", translate::is_number_word(t));
     if (t.kind == translate::TokKind::kWord) {
-      set_bool(L, "keyword", translate::is_keyword(t.text));
-      set_bool(L, "filler", translate::is_filler(t.text));
+      set_bool(L, "keyword", u->keyword[i]);
+      set_bool(L, "filler", u->filler[i]);
       set_bool(L, "alpha", translate::is_alpha(t.text));
     }
     lua_seti(L, -2, static_cast<lua_Integer>(i + 1));

@@ -253,7 +253,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
   // mike echo climb ..."): three letters or more.
   {
     size_t i = 0;
-    while (i < t.size() && is_word(t[i]) && is_filler(t[i].text) && !used[i]) ++i;
+    while (i < t.size() && is_word(t[i]) && names.vocabulary().is_filler(t[i].text) && !used[i]) ++i;
     size_t b = i;
     std::string letters;
     while (i < t.size() && is_word(t[i]) && !used[i] && names.phonetic_letter(t[i].text) != 0) letters += names.phonetic_letter(t[i++].text);
@@ -280,13 +280,13 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
                             [](const Reference& r) { return r.kind == RefKind::kAircraft && r.begin <= 2; });
   if (!fleet.empty() && !opened) {
     size_t i = 0;
-    while (i < t.size() && is_word(t[i]) && is_filler(t[i].text) && !used[i]) ++i;
+    while (i < t.size() && is_word(t[i]) && names.vocabulary().is_filler(t[i].text) && !used[i]) ++i;
     size_t words_begin = i;
     std::string words;
     bool keyword = false;  // an instruction word may be a misheard airline name ("front turn" = Frontier)
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
            names.phonetic_letter(t[i].text) == 0) {
-      keyword = keyword || is_keyword(t[i].text);
+      keyword = keyword || names.vocabulary().is_keyword(t[i].text);
       words += t[i].text;
       ++i;
     }

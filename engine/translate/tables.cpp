@@ -7,8 +7,11 @@
 namespace squawk::translate {
 
 Tables::Tables(std::vector<Airline> airlines, std::vector<TypeName> types, std::vector<std::string> designators,
-               std::vector<std::pair<std::string, char>> phonetic)
-    : airlines_(std::move(airlines)), types_(std::move(types)), phonetic_(std::move(phonetic)) {
+               std::vector<std::pair<std::string, char>> phonetic, Vocabulary vocabulary)
+    : airlines_(std::move(airlines)),
+      types_(std::move(types)),
+      phonetic_(std::move(phonetic)),
+      vocabulary_(std::move(vocabulary)) {
   for (auto& a : airlines_) a.telephony = text::lower(a.telephony);
   for (auto& t : types_) t.maker = text::lower(t.maker), t.model = text::lower(t.model);
   for (const auto& t : types_) designators_.push_back(text::upper(t.icao));

@@ -1,5 +1,6 @@
 // The names the callsign and type matchers know: airline telephony
-// designators, aircraft type names and designators, the phonetic alphabet.
+// designators, aircraft type names and designators, the phonetic alphabet,
+// and the instruction vocabulary (vocabulary.h).
 // The data lives in Lua (scripts/translate/names.lua and the phonetic
 // alphabet of scripts/translate/lexicon.lua); the grammar hands it over once
 // (squawk.translate.tables) and passes it with each utterance.
@@ -18,6 +19,8 @@
 #include <string_view>
 #include <vector>
 
+#include "translate/vocabulary.h"
+
 namespace squawk::translate {
 
 struct Airline {
@@ -35,7 +38,7 @@ class Tables {
  public:
   Tables() = default;
   Tables(std::vector<Airline> airlines, std::vector<TypeName> types, std::vector<std::string> designators,
-         std::vector<std::pair<std::string, char>> phonetic);
+         std::vector<std::pair<std::string, char>> phonetic, Vocabulary vocabulary = {});
 
   std::optional<std::string> airline_by_telephony(std::string_view phrase) const;
   std::vector<std::string> telephony_of(std::string_view icao) const;
@@ -44,6 +47,7 @@ class Tables {
   std::optional<std::string> aircraft_type(std::string_view manufacturer, std::string_view model) const;
   bool is_type_designator(std::string_view s) const;
   char phonetic_letter(std::string_view word) const;  // "alpha" -> 'A', or 0
+  const Vocabulary& vocabulary() const { return vocabulary_; }
 
  private:
   std::vector<Airline> airlines_;
@@ -51,6 +55,7 @@ class Tables {
   std::vector<std::string> designators_;  // upper case, sorted, unique
   std::vector<std::pair<std::string, char>> phonetic_;
   size_t max_words_ = 1;
+  Vocabulary vocabulary_;
 };
 
 }  // namespace squawk::translate

@@ -27,7 +27,7 @@
 --     words of the rules, per registry command (squawk.rag.index docs)
 local lexicon = require("translate.lexicon")
 -- the airlines, types and phonetic alphabet, handed to the C++ matchers once
-local NAMES = squawk.translate.tables(require("translate.names"), lexicon.phonetic)
+local NAMES = squawk.translate.tables(require("translate.names"), lexicon)
 
 local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
 

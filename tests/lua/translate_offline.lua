@@ -13,7 +13,7 @@ r = tr.run("turn AC01 left 20 degrees", { mode = "offline" })
 check(r.ask ~= nil and r.commands == nil, "a relative turn without traffic asks")
 
 -- The extractors: tokens, names and typed quantities, ranges 1-based [b, e).
-local names = tr.tables(require("translate.names"), require("translate.lexicon").phonetic)
+local names = tr.tables(require("translate.names"), require("translate.lexicon"))
 local u = tr.utterance("KLM123 climb flight level three five zero, then 250 kts", nil, names)
 local toks = u:tokens()
 check_eq(toks[1].raw, "KLM123")
@@ -43,7 +43,17 @@ local function ref(text) return tr.utterance(text, nil, names):refs()[1] end
 check_eq(ref("speedbird one two three climb").name, "BAW123")
 check_eq(ref("add a Boeing 737-800").name, "B738")
 check_eq(ref("shamrock four five kilo").name, "EIN45K")
-check(not pcall(tr.tables, { airlines = { { "x" } } }, {}), "an airline row needs telephony and icao")
+check(not pcall(tr.tables, { airlines = { { "x" } } }, require("translate.lexicon")), "an airline row needs telephony and icao")
+check(not pcall(tr.tables, require("translate.names"), {}), "the lexicon needs its word lists")
+-- Spelling fixes (lexicon.spelling) reach instruction words only.
+local function word(text) return tr.utterance(text, nil, names):tokens()[1].text end
+check_eq(word("heding"), "heading")
+check_eq(word("tunr"), "turn")
+check_eq(word("kots"), "knots")
+check_eq(word("dleete"), "delete")
+check_eq(word("detction"), "detection")
+check_eq(word("train"), "train", "everyday words stay")
+check_eq(word("send"), "send")
 local idx, score = tr.best_match("gale", { "ABC", "GAYEL" })
 check_eq(idx, 2)
 check(score > 0.5)

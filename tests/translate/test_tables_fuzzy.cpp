@@ -45,16 +45,19 @@ TEST_CASE("aircraft type names map to ICAO designators") {
   CHECK(names().is_manufacturer("Cessna"));
 }
 
-TEST_CASE("spelling fixes reach instruction words only") {
-  CHECK(spell_fix("heding") == "heading");
-  CHECK(spell_fix("tunr") == "turn");
-  CHECK(spell_fix("kots") == "knots");
-  CHECK(spell_fix("dleete") == "delete");
-  CHECK(spell_fix("detction") == "detection");
-  CHECK(spell_fix("angel") == "angle");
-  CHECK(spell_fix("train") == "train");  // everyday words stay
-  CHECK(spell_fix("send") == "send");
-  CHECK(spell_fix("ac01") == "ac01");
+TEST_CASE("spelling fixes reach the target words only") {
+  const Vocabulary v({"heading", "turn"}, {"uh"}, {"heading", "turn", "knots", "detection", "angle"}, {"send"});
+  CHECK(v.spell_fix("heding") == "heading");
+  CHECK(v.spell_fix("tunr") == "turn");  // a swap is one edit
+  CHECK(v.spell_fix("kots") == "knots");
+  CHECK(v.spell_fix("detction") == "detection");
+  CHECK(v.spell_fix("angel") == "angle");
+  CHECK(v.spell_fix("train") == "train");  // two edits from "turn": too far for 5 letters
+  CHECK(v.spell_fix("send") == "send");    // a common word
+  CHECK(v.spell_fix("ac01") == "ac01");
+  CHECK(v.is_keyword("turn"));
+  CHECK(v.is_filler("uh"));
+  CHECK_FALSE(v.is_filler("turn"));
 }
 
 TEST_CASE("fuzzy similarity favours how names sound") {
