@@ -473,6 +473,7 @@ void push_request(lua_State* L, const GraphRequest& req) {
   lua_createtable(L, 0, 3);
   set_str(L, "mode", req.mode);
   set_str(L, "setup", req.setup);
+  set_bool(L, "verify", req.verify);
   if (req.sim) {
     new_object<command::Stack>(L, kSimMt, *req.sim);
     lua_setfield(L, -2, "sim");

@@ -29,6 +29,7 @@ struct GraphRequest {
   std::string mode = "offline";          // offline | single | multi
   std::string setup;                      // TrafScript run on a new sim when `sim` is null
   const command::Stack* sim = nullptr;    // the traffic to translate against (copied)
+  bool verify = true;                     // multi mode: false drops the verifier node (paper Table 2)
 };
 
 Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req);
