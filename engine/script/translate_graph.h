@@ -34,6 +34,10 @@ struct GraphRequest {
 
 Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req);
 
+// Pushes the translate.graph module (loaded once per Lua state through the
+// sandbox's require); raises the Lua error of a module that fails to load.
+void push_graph_module(lua_State* L);
+
 // The grammar's retrieval documents (translate.grammar.documents()): the
 // words of its rules and `words` lines, per registry command.
 Result<std::vector<rag::Document>> grammar_documents(Vm& vm);
