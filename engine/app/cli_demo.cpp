@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "app/cli.h"
+#include "app/rl_eval.h"
 #include "app/team_loop.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
@@ -30,6 +31,7 @@
 #include "env/horizontal_cr.h"
 #include "env/recorder.h"
 #include "script/advisory.h"
+#include "script/policy_factory.h"
 #include "script/scenario.h"
 #include "script/translate_graph.h"
 #include "viz/scene.h"
@@ -151,8 +153,11 @@ int cmd_demo(const ArgV& argv) {
   const auto& cfg = e.config();
 
   // The agent: the shipped trained MLP, or the fine-tuned GPT-2 prompt policy.
-  auto policy = load_team_policy(policy_kind, args->get_or("--checkpoint", ""), *vmo);
-  if (!policy) return failure(policy.status());
+  auto agent = load_team_policy(policy_kind, *sc, args->get_or("--checkpoint", ""), *vmo);
+  if (!agent) return failure(agent.status());
+  if (std::string w = trained_elsewhere(*agent, *sc, *vmo); !w.empty())
+    std::fprintf(stderr, "squawk demo: warning: %s\n", w.c_str());
+  std::unique_ptr<rl::Policy> policy = std::move(agent->policy);
   auto phraser = script::AdvisoryPhraser::load(args->get_or("--advisory", paths::resource("prompts/advisory.lua")), *vmo);
   if (!phraser) return failure(phraser.status());
 
@@ -168,8 +173,10 @@ int cmd_demo(const ArgV& argv) {
   env::JsonlRecorder recorder(recording);
   Demo demo(stack, quiet, args->has("--record") ? &recorder : nullptr);
   if (!quiet)
-    std::printf("squawk demo: %s agent on %s (paper rules, look-ahead %.0f s), seed %llu\n",
-                policy_kind.c_str(), sc->path.c_str(), cfg.lookahead,
+    std::printf("squawk demo: %s agent on %s (%s), seed %llu\n", policy_kind.c_str(), sc->path.c_str(),
+                cfg.rules == env::Rules::kGym
+                    ? "gym rules: the agent decides at every step"
+                    : fmt("paper rules, look-ahead %.0f s", cfg.lookahead).c_str(),
                 static_cast<unsigned long long>(vmo->seed));
   bool ok = true;
   for (const auto& line : team_setup_commands(cfg, *setup)) ok = ok && demo.exec("sim", line).is_ok();
@@ -189,7 +196,7 @@ int cmd_demo(const ArgV& argv) {
   int decisions = 0, untranslated = 0;
   while (!e.done() && !demo.failed_) {
     const double hdg_now = e.fleet().hdg(0);
-    const script::Advisory adv = agent_advisory(**policy, e, stack.sim(), rng);
+    const script::Advisory adv = agent_advisory(*policy, e, stack.sim(), rng);
     auto english = phraser->phrase(adv);
     if (!english) return failure(english.status());
     ++decisions;
@@ -226,8 +233,9 @@ int cmd_demo(const ArgV& argv) {
   std::printf("  losses of separation      %zu\n", demo.los_.size());
   std::printf("  extra track length        %.1f km (flown %.1f km, direct %.1f km)\n",
               (demo.flown_m_ - direct) / 1000, demo.flown_m_ / 1000, direct / 1000);
-  std::printf("  waypoint reached          %s after %.0f s of flight; episode %s\n", st.reached ? "yes" : "no",
-              stack.sim().simt(), st.success ? "successful" : "failed");
+  std::printf("  waypoint reached          %s after %.0f s of flight; episode %s (%s)\n",
+              st.reached ? "yes" : "no", stack.sim().simt(), st.success ? "successful" : "failed",
+              success_definition(*sc).c_str());
   std::printf("  environment vs simulator  %.3f m largest position difference\n", demo.worst_m_);
   std::printf("  wall time                 %.2f s\n", wall);
 

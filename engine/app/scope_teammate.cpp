@@ -17,13 +17,13 @@ Result<std::unique_ptr<ScopeTeammate>> ScopeTeammate::make(const TeammateOptions
   if (!sc) return sc.status();
   auto e = env::HorizontalCrEnv::make(sc->eval_env);
   if (!e) return e.status();
-  auto policy = load_team_policy(opts.policy, opts.checkpoint, vm);
-  if (!policy) return policy.status();
+  auto agent = load_team_policy(opts.policy, *sc, opts.checkpoint, vm);
+  if (!agent) return agent.status();
   auto phraser =
       script::AdvisoryPhraser::load(opts.advisory.empty() ? paths::resource("prompts/advisory.lua") : opts.advisory, vm);
   if (!phraser) return phraser.status();
   return std::unique_ptr<ScopeTeammate>(
-      new ScopeTeammate(std::move(*e), std::move(*policy), std::move(*phraser), vm.seed));
+      new ScopeTeammate(std::move(*e), std::move(agent->policy), std::move(*phraser), vm.seed));
 }
 
 Status ScopeTeammate::start(command::Stack& stack) {

@@ -3,12 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/gpt2_policy_factory.h"
 #include "core/geo.h"
 #include "core/paths.h"
 #include "core/units.h"
-#include "rl/checkpoint.h"
-#include "rl/prompt_checkpoint.h"
+#include "env/vec_env.h"
 
 namespace squawk::app {
 
@@ -36,26 +34,20 @@ std::optional<script::Advisory::Traffic> nearest_conflict(const sim::Simulation&
 
 }  // namespace
 
-Result<std::unique_ptr<rl::Policy>> load_team_policy(const std::string& kind, const std::string& checkpoint,
-                                                     const script::VmOptions& vm) {
+Result<script::MadePolicy> load_team_policy(const std::string& kind, const script::Scenario& sc,
+                                            const std::string& checkpoint, const script::VmOptions& vm) {
   const char* hint =
       "the agent needs a trained policy (train one with `squawk train scenarios/horizontal_cr.lua "
       "--policy mlp|gpt2 --out DIR`, then pass --checkpoint DIR/policy.ckpt)";
-  if (kind == "mlp") {
-    auto ckpt = rl::load_checkpoint(checkpoint.empty() ? paths::resource("models/horizontal_cr_mlp.ckpt") : checkpoint);
-    if (!ckpt) return ckpt.status().with_context(hint);
-    auto p = rl::policy_from_checkpoint(*ckpt);
-    if (!p) return p.status();
-    return std::unique_ptr<rl::Policy>(std::move(*p));
-  }
-  if (kind == "gpt2") {
-    auto ckpt = rl::load_prompt_checkpoint(checkpoint.empty() ? paths::resource(kShippedGpt2Checkpoint) : checkpoint);
-    if (!ckpt) return ckpt.status().with_context(hint);
-    auto g = gpt2_policy_from_checkpoint(*ckpt, "", vm);
-    if (!g) return g.status();
-    return std::unique_ptr<rl::Policy>(std::move(g->policy));
-  }
-  return Status::invalid("policy '" + kind + "': expected mlp or gpt2");
+  // Only agents that decide on the observation alone: the VecEnv below dies here.
+  if (kind != "mlp" && kind != "gpt2") return Status::invalid("policy '" + kind + "': expected mlp or gpt2");
+  auto one_env = env::VecEnv::make(sc.eval_env, 1);
+  if (!one_env) return one_env.status();
+  script::PolicyOptions popts;
+  popts.checkpoint = checkpoint;
+  auto made = script::make_policy(kind, sc, *one_env, popts, vm);
+  if (!made) return made.status().with_context(hint);
+  return made;
 }
 
 Result<env::EpisodeSetup> first_agent_episode(env::HorizontalCrEnv& e, Rng& rng) {

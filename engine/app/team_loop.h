@@ -20,17 +20,19 @@
 #include "env/horizontal_cr.h"
 #include "rl/policy.h"
 #include "script/advisory.h"
+#include "script/policy_factory.h"
+#include "script/scenario.h"
 #include "script/vm.h"
 
 namespace squawk::app {
 
 inline constexpr const char* kTeamOwnship = "KL001";
 
-// The agent: "mlp" (trained MLP) or "gpt2" (fine-tuned GPT-2 prompt policy)
-// from `checkpoint` ("" = the shipped one). Errors name the kind or file and
-// say how to train one.
-Result<std::unique_ptr<rl::Policy>> load_team_policy(const std::string& kind, const std::string& checkpoint,
-                                                     const script::VmOptions& vm);
+// The agent for `sc`: "mlp" (trained MLP) or "gpt2" (fine-tuned GPT-2 prompt
+// policy) from `checkpoint` ("" = the shipped one), built by
+// script::make_policy. Errors name the kind or file and say how to train one.
+Result<script::MadePolicy> load_team_policy(const std::string& kind, const script::Scenario& sc,
+                                            const std::string& checkpoint, const script::VmOptions& vm);
 
 // The first episode of rng's sequence in which the agent has to act (the
 // environment is left reset to it). Error after 1000 draws without one.

@@ -9,7 +9,7 @@ namespace squawk::script {
 namespace {
 
 constexpr const char* kSessionKey = "squawk.serve.session";  // registry slot
-constexpr const char* kModule = "serve.session";
+constexpr const char* kModule = "translate.session";
 constexpr const char* kSimMetatable = "squawk.sim.Sim";  // bind_sim.cpp's class
 
 // lua_pcall with a traceback; on error the message is popped and returned.
@@ -39,6 +39,40 @@ bool bool_field(lua_State* L, int idx, const char* key) {
   const bool b = lua_toboolean(L, -1) != 0;
   lua_pop(L, 1);
   return b;
+}
+
+// The events array at `idx` (absent: none).
+std::vector<SessionEvent> events_at(lua_State* L, int idx) {
+  std::vector<SessionEvent> out;
+  if (!lua_istable(L, idx)) return out;
+  const lua_Integer n = luaL_len(L, idx);
+  for (lua_Integer k = 1; k <= n; ++k) {
+    lua_geti(L, idx, k);
+    const int e = lua_gettop(L);
+    if (lua_istable(L, e)) {
+      lua_getfield(L, e, "t");
+      const double t = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+      out.push_back({t, string_field(L, e, "kind"), string_field(L, e, "text")});
+    }
+    lua_pop(L, 1);
+  }
+  return out;
+}
+
+// graph.format_trace(trace) for the trace table at `idx` ("" when absent).
+Result<std::string> format_trace(lua_State* L, int idx) {
+  if (!lua_istable(L, idx)) return std::string();
+  lua_getglobal(L, "require");
+  lua_pushstring(L, "translate.graph");
+  SQUAWK_RETURN_IF_ERROR(pcall(L, 1, 1));
+  lua_getfield(L, -1, "format_trace");
+  lua_remove(L, -2);
+  lua_pushvalue(L, idx);
+  SQUAWK_RETURN_IF_ERROR(pcall(L, 1, 1));
+  std::string out = lua_tostring(L, -1) ? lua_tostring(L, -1) : "";
+  lua_pop(L, 1);
+  return out;
 }
 
 }  // namespace
@@ -96,22 +130,17 @@ Result<CommandReply> ServeSession::command(const std::string& text) {
   lua_insert(L, -2);  // method, session
   lua_pushlstring(L, text.data(), text.size());
   Status st = pcall(L, 2, 1);
+  if (st.is_ok() && !lua_istable(L, -1)) st = Status::internal(std::string(kModule) + ": command() returned no table");
   if (!st.is_ok()) {
     lua_settop(L, top);
     return st;
   }
-  if (!lua_istable(L, -1)) {
-    lua_settop(L, top);
-    return Status::internal(std::string(kModule) + ": command() returned no table");
-  }
   const int r = lua_gettop(L);
   CommandReply out;
   out.text = string_field(L, r, "text");
-  out.ok = bool_field(L, r, "ok");
-  out.message = string_field(L, r, "message");
   out.ask = string_field(L, r, "ask");
   out.cancelled = bool_field(L, r, "cancelled");
-  out.trace = string_field(L, r, "trace");
+  const std::string error = string_field(L, r, "error");
   lua_getfield(L, r, "commands");
   if (lua_istable(L, -1)) {
     const lua_Integer n = luaL_len(L, -1);
@@ -121,8 +150,61 @@ Result<CommandReply> ServeSession::command(const std::string& text) {
       lua_pop(L, 1);
     }
   }
+  lua_pop(L, 1);
+  // One result per command run; the first failure stops the rest.
+  out.ok = out.ask.empty() && error.empty();
+  lua_getfield(L, r, "results");
+  if (lua_istable(L, -1)) {
+    const int res = lua_gettop(L);
+    const lua_Integer n = luaL_len(L, res);
+    for (lua_Integer k = 1; k <= n; ++k) {
+      lua_geti(L, res, k);
+      const bool ok = bool_field(L, -1, "ok");
+      const std::string msg = string_field(L, -1, "message");
+      lua_pop(L, 1);
+      if (!ok) {
+        out.ok = false;
+        out.message = msg;
+        break;
+      }
+      if (!msg.empty()) out.message += (out.message.empty() ? "" : "\n") + msg;
+    }
+  }
+  lua_pop(L, 1);
+  if (!error.empty()) out.message = "could not translate: " + error;
+  if (out.cancelled) out.message = "question dropped";
+  if (out.ok && out.commands.empty() && !out.cancelled) {
+    out.ok = false;
+    out.message = "nothing to run";
+  }
+  const std::string clock = string_field(L, r, "clock");
+  if (!clock.empty()) out.message += (out.message.empty() ? "" : "\n") + clock;
+  lua_getfield(L, r, "events");
+  out.events = events_at(L, lua_gettop(L));
+  lua_pop(L, 1);
+  lua_getfield(L, r, "trace");
+  auto trace = format_trace(L, lua_gettop(L));
   lua_settop(L, top);
+  if (!trace) return trace.status();
+  out.trace = *trace;
   return out;
+}
+
+Result<std::vector<SessionEvent>> ServeSession::tick(double wall_s) {
+  lua_State* L = vm_->state();
+  const int top = lua_gettop(L);
+  lua_getfield(L, LUA_REGISTRYINDEX, kSessionKey);
+  lua_getfield(L, -1, "tick");
+  lua_insert(L, -2);
+  lua_pushnumber(L, wall_s);
+  Status st = pcall(L, 2, 1);
+  if (!st.is_ok()) {
+    lua_settop(L, top);
+    return st;
+  }
+  auto events = events_at(L, lua_gettop(L));
+  lua_settop(L, top);
+  return events;
 }
 
 }  // namespace squawk::script

@@ -1,13 +1,16 @@
-// ServeSession: the Lua side of `squawk serve` (scripts/serve/session.lua,
-// module `serve.session`), driven command by command from C++.
+// ServeSession: the controller's session (scripts/translate/session.lua,
+// module `translate.session`, the one behind `squawk repl`) driven from C++
+// for `squawk serve`.
 //
 // Contract: open() creates the module's session in `vm` with the scenario
 // (empty: none) and translation mode (empty: the graph's default). stack() is
 // the simulation the session's translator and commands act on; it lives as
 // long as the session (the Lua value is kept in the registry) and is used
 // only on the thread that owns `vm`. command() passes one line (English or
-// "!TrafScript") and returns what happened; a Lua error comes back as a Status
-// with its traceback and the session stays usable.
+// "!TrafScript") and returns what happened; tick() advances the clock as the
+// run state asks (session:tick); both report what happened meanwhile as
+// events. A Lua error comes back as a Status with its traceback and the
+// session stays usable.
 #pragma once
 
 #include <memory>
@@ -20,6 +23,14 @@
 
 namespace squawk::script {
 
+// Something that happened while time moved: kind "conflict", "conflict_end",
+// "los", "los_end", "echo" or "failure" (session.lua documents them).
+struct SessionEvent {
+  double t = 0;  // [s] sim time
+  std::string kind;
+  std::string text;
+};
+
 struct CommandReply {
   std::string text;                   // what was typed
   std::vector<std::string> commands;  // TrafScript lines run (or that would have run)
@@ -28,6 +39,7 @@ struct CommandReply {
   std::string ask;                    // the translator's question; nothing ran
   bool cancelled = false;             // a pending question was dropped
   std::string trace;                  // the translation graph's path, one node a line
+  std::vector<SessionEvent> events;   // what happened while the command ran (FF)
 };
 
 class ServeSession {
@@ -39,6 +51,8 @@ class ServeSession {
 
   command::Stack& stack() { return *stack_; }
   Result<CommandReply> command(const std::string& text);
+  // session:tick(wall_s): OP advances wall_s x DTMULT, FF to its end, HOLD not at all [s].
+  Result<std::vector<SessionEvent>> tick(double wall_s);
 
  private:
   ServeSession(Vm& vm, command::Stack* stack) : vm_(&vm), stack_(stack) {}

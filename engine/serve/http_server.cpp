@@ -57,6 +57,12 @@ HttpServer::HttpServer(LiveSim& live, const command::NavDb* navdb, ServerOptions
     : live_(live), navdb_(navdb), options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {
   const int threads = options_.threads;
   server_->new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+  // SO_REUSEADDR only: the library's default adds SO_REUSEPORT, which would
+  // let a second server share the port and take half of the connections.
+  server_->set_socket_options([](socket_t sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   server_->set_payload_max_length(options_.max_body);
   server_->set_read_timeout(5, 0);
   server_->set_write_timeout(5, 0);
@@ -89,6 +95,19 @@ void HttpServer::stop() { server_->stop(); }
 void HttpServer::routes() {
   httplib::Server& s = *server_;
   const auto command_timeout = std::chrono::seconds(options_.command_timeout_s);
+
+  // Bound to loopback, the server answers only requests addressed to a
+  // loopback name, so a web page whose domain re-resolves to 127.0.0.1 (DNS
+  // rebinding) cannot read the state or send commands.
+  if (options_.host == "127.0.0.1" || options_.host == "localhost" || options_.host == "::1") {
+    s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
+      std::string host = req.get_header_value("Host");
+      host = host.substr(0, host.rfind(':') == std::string::npos || host.back() == ']' ? host.size() : host.rfind(':'));
+      if (host == "127.0.0.1" || host == "localhost" || host == "[::1]") return httplib::Server::HandlerResponse::Unhandled;
+      fail(res, 403, "Host '" + req.get_header_value("Host") + "': this server answers 127.0.0.1 and localhost only");
+      return httplib::Server::HandlerResponse::Handled;
+    });
+  }
 
   s.Get("/api/state", [this](const httplib::Request&, httplib::Response& res) {
     res.set_header("Cache-Control", "no-store");

@@ -9,7 +9,8 @@
 //   POST /api/command    {"text": "English or !TrafScript"} -> command reply
 //   POST /api/advisory   {"id": n, "decision": "accept"|"reject"}
 //   POST /api/auto       {"on": true|false}  execute advisories automatically
-// POST bodies must be application/json (a page from another origin cannot
+// Bound to loopback, only requests whose Host is 127.0.0.1, localhost or [::1]
+// are answered (403 otherwise: DNS rebinding). POST bodies must be application/json (a page from another origin cannot
 // send those without a preflight, which is never granted) and at most
 // max_body bytes; command text at most max_text characters. Replies are JSON
 // with "ok"; failures carry "message" and a 4xx/5xx status.

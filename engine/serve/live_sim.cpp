@@ -102,9 +102,8 @@ void LiveSim::run() {
     }
     const auto now = Clock::now();
     if (now < next) continue;
-    stack().advance(std::chrono::duration<double>(now - last).count() * stack().dtmult(), options_.max_steps_per_tick);
+    advance(std::chrono::duration<double>(now - last).count());
     last = now;
-    for (auto& line : stack().take_output()) log("scenario", line);
     tick_teammate();
     publish();
     next += period;
@@ -113,6 +112,32 @@ void LiveSim::run() {
   std::lock_guard lock(mu_);
   for (auto& p : queue_) p.done->set_value({{"ok", false}, {"message", "the server is stopping"}});
   queue_.clear();
+}
+
+void LiveSim::advance(double wall_s) {
+  const sim::Simulation& sim = stack().sim();
+  double tick_s = wall_s;
+  if (sim.run_state() == sim::RunState::kOp && !sim.fast()) {
+    // session:tick moves by whole steps; the sim time owed carries over so
+    // that a step longer than a tick (DT 5 at real time) still comes.
+    owed_ = std::min(owed_ + wall_s * stack().dtmult(), options_.max_owed_s);
+    if (owed_ < 0.5 * sim.dt()) return;
+    tick_s = owed_ / stack().dtmult();
+  } else {
+    owed_ = 0;
+  }
+  const double t0 = sim.simt();
+  auto events = session_.tick(tick_s);
+  if (!events) {
+    log("sim", "error: " + events.status().message());
+    return;
+  }
+  if (sim.run_state() == sim::RunState::kOp && !sim.fast()) owed_ -= sim.simt() - t0;
+  log_events(*events);
+}
+
+void LiveSim::log_events(const std::vector<script::SessionEvent>& events) {
+  for (const auto& e : events) log(e.kind == "echo" || e.kind == "failure" ? "scenario" : "sim", e.text);
 }
 
 void LiveSim::log(const std::string& who, const std::string& text) {
@@ -135,6 +160,7 @@ json LiveSim::command(const std::string& text, const std::string& who) {
   else if (!r->message.empty())
     entry += "  -> " + r->message;
   log(who, entry);
+  log_events(r->events);
   return reply_json(*r);
 }
 

@@ -1,8 +1,8 @@
 // LiveSim: the simulation of `squawk serve`, running live on one owner thread.
 //
 // The owner thread is the only one that touches the simulation, the Lua VM and
-// the teammate. It advances the clock as the run state asks (Stack::advance:
-// HOLD none, OP real time x DTMULT, FF as fast as max_steps_per_tick allows),
+// the teammate. It advances the clock as the run state asks (the session's
+// tick: HOLD none, OP real time x DTMULT, FF to its end at once),
 // runs the requests other threads post, and publishes the state (JSON text,
 // state_json.h plus `log`, `advisories`, `auto`, `teammate`) at publish_hz
 // and after every request. Other threads only post requests (call) and read
@@ -12,7 +12,8 @@
 // The log records who did what: "controller" for typed commands and
 // decisions, "teammate" for advisories, "auto" for advisories executed in the
 // automatic mode, "scenario" for scenario output (ECHO, failed queued lines),
-// "autopilot" for the teammate's own steering.
+// "autopilot" for the teammate's own steering, "sim" for conflicts and losses
+// of separation as they start and end.
 #pragma once
 
 #include <chrono>
@@ -47,7 +48,7 @@ class Teammate {
 
 struct LiveOptions {
   double publish_hz = 10.0;            // [1/s] state pushes (>= 5 for the page)
-  int64_t max_steps_per_tick = 2000;   // [-] steps per advance (bounds fast-forward per tick)
+  double max_owed_s = 60.0;            // [s] sim time the clock may fall behind before it skips
   size_t max_queue = 64;               // [-] pending requests before new ones are refused
   size_t log_shown = 60;               // [-] log entries in the published state
   size_t advisories_shown = 12;        // [-] advisories in the published state
@@ -101,6 +102,8 @@ class LiveSim {
   };
 
   void run();
+  void advance(double wall_s);
+  void log_events(const std::vector<script::SessionEvent>& events);
   void tick_teammate();
   void advise(const std::string& english);
   void execute(Advisory& a, const std::string& who);
@@ -116,6 +119,7 @@ class LiveSim {
   uint64_t log_seq_ = 0;
   int next_advisory_ = 1;
   bool auto_ = false;
+  double owed_ = 0;  // [s] sim time the running clock owes (negative: ahead by part of a step)
 
   mutable std::mutex mu_;
   mutable std::condition_variable wake_;       // owner: a request arrived or stop

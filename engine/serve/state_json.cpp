@@ -51,11 +51,21 @@ json aircraft_json(const sim::Traffic& t, size_t i) {
   return a;
 }
 
-// Where aircraft i will be after `dt` seconds on its present ground velocity.
-json ahead(const sim::Traffic& t, size_t i, double dt) {
-  const double dlat = t.gsnorth[i] * dt / kEarthRadius * 180.0 / std::numbers::pi;
-  const double dlon = t.gseast[i] * dt / (kEarthRadius * std::max(t.coslat[i], 1e-6)) * 180.0 / std::numbers::pi;
-  return json::array({t.lat[i] + dlat, t.lon[i] + dlon});
+// Where aircraft a and b are at their closest approach if both keep their
+// present ground velocity, from the present state (flat earth around the
+// pair's mean latitude); the detector's tcpa may be up to asas_dt older.
+json cpa_points(const sim::Traffic& t, size_t a, size_t b) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  const double coslat = std::cos(0.5 * (t.lat[a] + t.lat[b]) * kDeg);
+  const double px = (t.lon[b] - t.lon[a]) * kDeg * kEarthRadius * coslat, py = (t.lat[b] - t.lat[a]) * kDeg * kEarthRadius;
+  const double vx = t.gseast[b] - t.gseast[a], vy = t.gsnorth[b] - t.gsnorth[a];
+  const double v2 = vx * vx + vy * vy;
+  const double tc = v2 > 1e-9 ? std::max(0.0, -(px * vx + py * vy) / v2) : 0.0;  // [s]
+  auto at = [&](size_t i) {
+    return json::array({t.lat[i] + t.gsnorth[i] * tc / kEarthRadius / kDeg,
+                        t.lon[i] + t.gseast[i] * tc / (kEarthRadius * coslat) / kDeg});
+  };
+  return json::array({at(a), at(b)});
 }
 
 // The pair's ids in order (a < b) and its indices in that order.
@@ -93,7 +103,7 @@ json state_json(const command::Stack& stack) {
                          {"dcpa_nm", units::m_to_nm(c.dcpa)},
                          {"tlos_s", nan_to_null(c.tlos)},
                          {"dist_nm", units::m_to_nm(c.dist)},
-                         {"cpa", {ahead(t, a, std::max(c.tcpa, 0.0)), ahead(t, b, std::max(c.tcpa, 0.0))}}});
+                         {"cpa", cpa_points(t, a, b)}});
   }
   out["conflicts"] = std::move(conflicts);
   json los = json::array();

@@ -11,7 +11,8 @@
 //              null), route [{name, lat, lon, alt_ft|null}]}],
 //   conflicts [{ids [a, b], tcpa_s, dcpa_nm, tlos_s, dist_nm,
 //               cpa [[lat, lon], [lat, lon]]}]  each pair once (a < b), cpa
-//               = where each aircraft will be at tcpa on its present track,
+//               = where each aircraft will be at the closest approach if both
+//               keep their present ground velocity (from the present state),
 //   los [{ids [a, b], dist_nm, dalt_ft}]  each pair once.
 // navdata_json(db, box) lists the airports and waypoints inside the box, at
 // most `limit` of them: {airports: [[id, lat, lon]], fixes: [[id, lat, lon]],

@@ -155,7 +155,9 @@ function Session:advance(seconds, events)
   local t_end = self.sim:time() + seconds
   repeat
     local left = t_end - self.sim:time()
-    self.sim:run_for(math.max(0, math.min(M.kChunk, left)))
+    -- At least one step per chunk: with DT above 2 * kChunk a chunk shorter
+    -- than a step would never move the clock.
+    self.sim:run_for(math.max(0, math.min(math.max(M.kChunk, self.sim:dt()), left)))
     self:collect_output(events, failures)
     self:diff_pairs(events)
   until t_end - self.sim:time() < 0.5 * self.sim:dt()

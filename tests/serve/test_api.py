@@ -56,7 +56,7 @@ def aircraft(addr, acid):
 def stream_events(addr, seconds):
     """Counts `data:` events on /api/stream for `seconds`."""
     s = socket.create_connection(tuple(addr.rsplit(":", 1)), timeout=5)
-    s.sendall(b"GET /api/stream HTTP/1.1\r\nHost: x\r\n\r\n")
+    s.sendall(b"GET /api/stream HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
     buf, end = b"", time.time() + seconds
     while time.time() < end:
         buf += s.recv(1 << 20)
@@ -118,11 +118,22 @@ def test_plain(squawk):
         code, r = request(addr, "/api/advisory", {"id": 1, "decision": "accept"})
         check(code == 409 and "no advisory" in r["message"], f"unknown advisory (HTTP {code})")
 
+        s_ = socket.create_connection(tuple(addr.rsplit(":", 1)), timeout=5)
+        s_.sendall(b"GET /api/state HTTP/1.1\r\nHost: evil.example:80\r\nConnection: close\r\n\r\n")
+        head = s_.recv(4096).split(b"\r\n", 1)[0]
+        s_.close()
+        check(b" 403 " in head, f"a request for another host name is refused: {head!r}")
+
+        import subprocess
+        p = subprocess.run([squawk, "serve", "--port", addr.rsplit(":", 1)[1]], capture_output=True, text=True,
+                           timeout=30)
+        check(p.returncode == 1 and "in use" in p.stderr, f"a second server on the same port is refused: {p.stderr!r}")
+
         # A client that opens a stream and never reads must not stall the
         # simulation or the other streams.
         stalled = socket.create_connection(tuple(addr.rsplit(":", 1)))
         stalled.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
-        stalled.sendall(b"GET /api/stream HTTP/1.1\r\nHost: x\r\n\r\n")
+        stalled.sendall(b"GET /api/stream HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
         t5 = state(addr)["simt"]
         n = stream_events(addr, 2.0)
         t6 = state(addr)["simt"]
@@ -184,8 +195,21 @@ def test_teammate(squawk):
         check(server.wait(timeout=10) == 0, "squawk serve --agent exits 0 on SIGTERM")
 
 
+def test_usage(squawk):
+    import subprocess
+    for args, rc, text in [(["--port", "70000"], 2, "expected a port number"),
+                           (["--speed", "0"], 2, "expected a multiple of real time"),
+                           (["--auto"], 2, "go with --agent"),
+                           (["no-such.scn"], 1, "no scenario file 'no-such.scn'"),
+                           (["--host", "999.1.1.1", "--port", "0"], 1, "cannot listen on 999.1.1.1"),
+                           (["--web", "/no/such/dir", "--port", "0"], 1, "web folder '/no/such/dir' does not exist")]:
+        p = subprocess.run([squawk, "serve", *args], capture_output=True, text=True, timeout=30)
+        check(p.returncode == rc and text in p.stderr, f"serve {' '.join(args)} -> exit {p.returncode}, {p.stderr.strip()!r}")
+
+
 def main():
     squawk = sys.argv[1]
+    test_usage(squawk)
     test_plain(squawk)
     test_teammate(squawk)
     print(f"{failures} failed")
