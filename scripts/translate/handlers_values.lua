@@ -107,6 +107,9 @@ return function(H, f, wrap, compass)
         ft, fl = ft * 100, true  -- "climb three five zero": a flight level
       end
     end
+    if fl and q.number.value >= 1000 then  -- "flight level 9000": levels have three digits
+      return self:need("Which flight level for " .. ids[1] .. "? I heard flight level " .. f.int(q.number.value) .. ".")
+    end
     if fl and ft > 60000 then
       return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
     end
