@@ -98,7 +98,7 @@ int cmd_translate(const ArgV& argv) {
 }
 
 int cmd_eval_translate(const ArgV& argv) {
-  auto args = Args::parse(argv, with_vm_flags({{"--mode"}, {"--failures", "--json"}}));
+  auto args = Args::parse(argv, with_vm_flags({{"--mode"}, {"--failures", "--json", "--no-verify"}}));
   if (!args) return usage_error("eval-translate", args.status().message());
   if (args->positional().size() != 1) return usage_error("eval-translate", "expected one CORPUS.tsv");
   auto mode = mode_of(*args);
@@ -115,7 +115,7 @@ int cmd_eval_translate(const ArgV& argv) {
   script::Vm vm(*opts);
   Status load_error;
   translate::EvalReport report = translate::evaluate(*cases, [&](const translate::CorpusCase& c) {
-    auto tr = script::run_translation_graph(vm, c.utterance, {*mode, c.setup, nullptr});
+    auto tr = script::run_translation_graph(vm, c.utterance, {*mode, c.setup, nullptr, !args->has("--no-verify")});
     if (!tr.is_ok() && load_error.is_ok()) load_error = tr.status().with_context(c.id);
     return tr;
   });

@@ -217,33 +217,39 @@ const std::vector<Subcommand>& subcommands() {
        "the whole registry as a JSON array of {name, aliases, args, usage, help,\n"
        "examples}; the translator and its retrieval index read this.\n",
        cmd_commands},
-      {"translate", "translate \"TEXT\" [--scenario FILE]  English -> TrafScript with the offline grammar",
-       "usage: squawk translate \"TEXT\" [--scenario FILE] [--setup \"CMD ; CMD\"] [--jsonl]\n"
-       "       squawk translate --tsv CORPUS.tsv\n\n"
-       "Translates a controller's or experimenter's request into TrafScript with the\n"
-       "built-in grammar (no language model) and prints the commands, separated by\n"
-       "' ; ', or the question it asks back when a value is missing. Relative\n"
+      {"translate", "translate \"TEXT\" [--scenario FILE]  English -> TrafScript (the translation graph)",
+       "usage: squawk translate \"TEXT\" [--scenario FILE] [--setup \"CMD ; CMD\"] [--mode M] [--jsonl]\n"
+       "       squawk translate --tsv CORPUS.tsv [--mode M]\n\n"
+       "Translates a controller's or experimenter's request into TrafScript through\n"
+       "the translation graph (scripts/translate/graph.lua; offline mode: the Lua\n"
+       "grammar, no language model) and prints the commands, separated by ' ; ',\n"
+       "or the question it asks back when a value is missing or unsure. Relative\n"
        "instructions and spoken callsigns are resolved against the traffic that the\n"
-       "scenario (its time-0 commands) and the setup commands create; with either\n"
-       "given, exit code 1 when a produced command does not validate against it.\n\n"
+       "scenario (its time-0 commands) and the setup commands create; the commands\n"
+       "are validated on a scratch copy of it (exit code 1 when none is valid).\n\n"
        "  --scenario FILE  a .scn file whose time-0 commands set up the traffic\n"
        "  --setup CMDS     TrafScript commands run first, separated by ';'\n"
-       "  --jsonl          print {\"output\": ...} or {\"ask\": ...} as one JSON line\n"
+       "  --mode M         offline (default), single or multi (LLM modes need SQUAWK_LLM_URL)\n"
+       "  --jsonl          print {\"output\": ...}, {\"ask\": ...} or {\"error\": ...} as one JSON line\n"
        "  --tsv CORPUS     run each case of a corpus (id setup utterance expected\n"
        "                   category) on a fresh simulation after its setup and print\n"
-       "                   one JSON line per case: {\"id\", \"output\"} or {\"id\", \"ask\"}\n",
+       "                   one JSON line per case: {\"id\", \"output\"} or {\"id\", \"ask\"};\n"
+       "                   named places read navdata from --navdata or SQUAWK_NAVDATA\n",
        cmd_translate},
-      {"eval-translate", "eval-translate CORPUS.tsv [--mode M]  translation accuracy per category",
-       "usage: squawk eval-translate CORPUS.tsv [--mode offline|single|multi] [--failures] [--json]\n\n"
-       "Translates every case of a corpus on a fresh simulation after the case's\n"
-       "setup and scores it with the corpus rules (shared/corpora/README.md):\n"
-       "aliases folded, altitudes within 50 ft, headings modulo 360, and so on. Prints\n"
-       "cases, correct answers and accuracy per category and overall.\n\n"
-       "  --mode offline   the built-in grammar (default)\n"
-       "  --mode single    the Lua translation graph with one LLM call per request\n"
-       "  --mode multi     the Lua translation graph with its multi-agent pipeline;\n"
-       "                   single and multi need SQUAWK_LLM_URL (an LLM server)\n"
-       "  --failures       list the cases it got wrong with what it produced\n"
+      {"eval-translate", "eval-translate CORPUS.tsv [--mode M]  translation right/asked/wrong per category",
+       "usage: squawk eval-translate CORPUS.tsv [--mode offline|single|multi] [--no-verify] [--failures] [--json]\n\n"
+       "Translates every case of a corpus through the translation graph on a fresh\n"
+       "simulation after the case's setup and scores it with the corpus rules\n"
+       "(shared/corpora/README.md): aliases folded, altitudes within 50 ft, headings\n"
+       "modulo 360, and so on. Prints per category and overall: right, asked (no\n"
+       "command issued) and wrong (a command that is not the expected one, or a\n"
+       "command where a question was expected).\n\n"
+       "  --mode offline   the Lua grammar node alone (default)\n"
+       "  --mode single    one LLM call per request\n"
+       "  --mode multi     the multi-agent pipeline; single and multi need\n"
+       "                   SQUAWK_LLM_URL (an LLM server)\n"
+       "  --no-verify      multi mode without the verifier node (paper Table 2)\n"
+       "  --failures       list the cases it got wrong or asked, with what it produced\n"
        "  --json           print the figures as JSON\n",
        cmd_eval_translate},
       {"train", "train SCENARIO.lua --out DIR   train the conflict-resolution MLP policy",

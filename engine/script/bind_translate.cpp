@@ -3,7 +3,12 @@
 //
 //   squawk.translate.run(text, opts) -> graph.translate(text, opts) of
 //       scripts/translate/graph.lua (the one translation path)
-//   squawk.translate.utterance(text, [world]) -> u   the C++ extractors:
+//   squawk.translate.tables(names, phonetic) -> tables   the names the matchers
+//       know: names = {airlines = {{telephony, icao}, ...}, types = {{maker,
+//       model, icao}, ...}, designators = {...}} (scripts/translate/names.lua),
+//       lexicon: scripts/translate/lexicon.lua (phonetic, keywords, fillers,
+//       spelling = {targets, common})
+//   squawk.translate.utterance(text, world | nil, tables) -> u   the C++ extractors:
 //       u:tokens()  {{kind = "word"|"number"|"punct"|"quoted", text, raw, num,
 //                    number_word, keyword, filler, alpha}, ...} (spelling fixed)
 //       u:refs()    {{kind = "aircraft"|"type"|"waypoint", name, b, e, exists, spoken,
@@ -37,6 +42,7 @@
 #include "translate/number_words.h"
 #include "translate/quantities.h"
 #include "translate/references.h"
+#include "translate/tables.h"
 #include "translate/vocabulary.h"
 #include "translate/scorer.h"
 
@@ -125,6 +131,76 @@ int l_corpus(lua_State* L) {
 // ---- squawk.translate.utterance: the C++ extractors the Lua grammar reads ----
 
 constexpr const char* kUtteranceMt = "squawk.translate.Utterance";
+constexpr const char* kTablesMt = "squawk.translate.Tables";
+
+// The string at t[i] of the table at idx, or an ArgError naming where.
+std::string string_at(lua_State* L, int idx, lua_Integer i, const std::string& where) {
+  lua_geti(L, idx, i);
+  if (!lua_isstring(L, -1)) throw ArgError(where + "[" + std::to_string(i) + "]: expected a string");
+  std::string v = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  return v;
+}
+
+// A list of strings at field `key` of the table at idx (nested: "a.b").
+std::vector<std::string> field_list(lua_State* L, int idx, const char* key, const char* sub = nullptr) {
+  lua_getfield(L, idx, key);
+  if (sub) {
+    if (!lua_istable(L, -1)) throw ArgError(std::string("lexicon.") + key + ": expected a table");
+    lua_getfield(L, -1, sub);
+    lua_remove(L, -2);
+  }
+  auto out = string_list(L, lua_gettop(L), (std::string("lexicon.") + key + (sub ? std::string(".") + sub : "")).c_str());
+  lua_pop(L, 1);
+  return out;
+}
+
+// squawk.translate.tables({airlines = {{telephony, icao}, ...}, types = {{maker,
+// model, icao}, ...}, designators = {...}}, lexicon) -> tables
+int l_tables(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TTABLE);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  std::vector<translate::Airline> airlines;
+  std::vector<translate::TypeName> types;
+  std::vector<std::string> designators;
+  std::vector<std::pair<std::string, char>> phonetic;
+  lua_getfield(L, 1, "airlines");
+  for (lua_Integer i = 1; lua_istable(L, -1) && i <= luaL_len(L, -1); ++i) {
+    lua_geti(L, -1, i);
+    const int row = lua_gettop(L);
+    const std::string where = "names.airlines[" + std::to_string(i) + "]";
+    airlines.push_back({string_at(L, row, 1, where), string_at(L, row, 2, where)});
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, 1, "types");
+  for (lua_Integer i = 1; lua_istable(L, -1) && i <= luaL_len(L, -1); ++i) {
+    lua_geti(L, -1, i);
+    const int row = lua_gettop(L);
+    const std::string where = "names.types[" + std::to_string(i) + "]";
+    types.push_back({string_at(L, row, 1, where), string_at(L, row, 2, where), string_at(L, row, 3, where)});
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, 1, "designators");
+  designators = string_list(L, lua_gettop(L), "names.designators");
+  lua_pop(L, 1);
+  translate::Vocabulary vocabulary(field_list(L, 2, "keywords"), field_list(L, 2, "fillers"),
+                                  field_list(L, 2, "spelling", "targets"), field_list(L, 2, "spelling", "common"));
+  lua_getfield(L, 2, "phonetic");
+  if (!lua_istable(L, -1)) throw ArgError("lexicon.phonetic: expected a table {word = \"A\", ...}");
+  const int ph = lua_gettop(L);
+  lua_pushnil(L);
+  while (lua_next(L, ph) != 0) {
+    if (lua_type(L, -2) == LUA_TSTRING && lua_type(L, -1) == LUA_TSTRING && lua_rawlen(L, -1) == 1)
+      phonetic.emplace_back(lua_tostring(L, -2), lua_tostring(L, -1)[0]);
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  new_object<translate::Tables>(L, kTablesMt, std::move(airlines), std::move(types), std::move(designators),
+                                std::move(phonetic), std::move(vocabulary));
+  return 1;
+}
 
 // Tokens (spelling fixed), the references found in them, and the mask of
 // tokens already consumed (by references and by the grammar).
@@ -132,6 +208,7 @@ struct Utterance {
   std::vector<translate::Token> tokens;
   std::vector<bool> used;
   std::vector<translate::Reference> refs;
+  std::vector<bool> keyword, filler;  // per token, from the vocabulary
 };
 
 const char* tok_kind(translate::TokKind k) {
@@ -184,18 +261,23 @@ void push_number(lua_State* L, const translate::SpokenNumber& n, size_t offset) 
 
 int l_utterance(lua_State* L) {
   const std::string text = arg_string(L, 1, "text");
-  lua_settop(L, 2);
+  const auto* names = arg_object<translate::Tables>(L, 3, kTablesMt, "tables");
+  lua_settop(L, 3);
   auto* u = new_object<Utterance>(L, kUtteranceMt);
   u->tokens = translate::lex(text);
   for (auto& t : u->tokens)
-    if (t.kind == translate::TokKind::kWord) t.text = translate::spell_fix(t.text);
+    if (t.kind == translate::TokKind::kWord) t.text = names->vocabulary().spell_fix(t.text);
   translate::fold_digit_homophones(u->tokens);
+  for (const auto& t : u->tokens) {
+    u->keyword.push_back(names->vocabulary().is_keyword(t.text));
+    u->filler.push_back(names->vocabulary().is_filler(t.text));
+  }
   u->used.assign(u->tokens.size(), false);
   if (lua_isnoneornil(L, 2)) {
-    u->refs = translate::find_references(u->tokens, nullptr, u->used);
+    u->refs = translate::find_references(u->tokens, nullptr, u->used, *names);
   } else if (lua_istable(L, 2)) {
     translate::StaticWorld w = read_world(L, 2);
-    u->refs = translate::find_references(u->tokens, &w, u->used);
+    u->refs = translate::find_references(u->tokens, &w, u->used, *names);
   } else {
     throw ArgError(type_error(L, 2, "world", "nil or a world table"));
   }
@@ -215,8 +297,8 @@ int l_u_tokens(lua_State* L) {
     set_num(L, "num", t.num);
     set_bool(L, "number_word", translate::is_number_word(t));
     if (t.kind == translate::TokKind::kWord) {
-      set_bool(L, "keyword", translate::is_keyword(t.text));
-      set_bool(L, "filler", translate::is_filler(t.text));
+      set_bool(L, "keyword", u->keyword[i]);
+      set_bool(L, "filler", u->filler[i]);
       set_bool(L, "alpha", translate::is_alpha(t.text));
     }
     lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
@@ -363,19 +445,6 @@ int l_best_match(lua_State* L) {
   return 2;
 }
 
-// Leaves the translate.graph module on the stack (loaded once per state
-// through the sandbox's require); raises the loading error.
-void push_graph_module(lua_State* L) {
-  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
-  if (!lua_isnil(L, -1)) return;
-  lua_pop(L, 1);
-  lua_getglobal(L, "require");
-  lua_pushstring(L, kTranslationGraphModule);
-  lua_call(L, 1, 1);
-  lua_pushvalue(L, -1);
-  lua_setfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
-}
-
 int l_run(lua_State* L) {
   lua_settop(L, 2);
   push_graph_module(L);
@@ -384,67 +453,6 @@ int l_run(lua_State* L) {
   lua_pushvalue(L, 2);
   lua_call(L, 2, 1);
   return 1;
-}
-
-// Pushes the opts table of a GraphRequest (the sim as a copy).
-void push_request(lua_State* L, const GraphRequest& req) {
-  lua_createtable(L, 0, 3);
-  set_str(L, "mode", req.mode);
-  set_str(L, "setup", req.setup);
-  if (req.sim) {
-    new_object<command::Stack>(L, kSimMt, *req.sim);
-    lua_setfield(L, -2, "sim");
-  }
-}
-
-// Reads the graph's result table at the stack top.
-Result<translate::Translation> read_result(lua_State* L) {
-  if (!lua_istable(L, -1))
-    return Status::invalid("translation graph: translate() must return {commands = {...}} or {ask = \"...\"}");
-  translate::Translation tr;
-  lua_getfield(L, -1, "ask");
-  if (lua_type(L, -1) == LUA_TSTRING) tr.ask = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  lua_getfield(L, -1, "error");
-  if (lua_type(L, -1) == LUA_TSTRING) tr.error = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  lua_getfield(L, -1, "commands");
-  if (lua_istable(L, -1)) {
-    const lua_Integer n = luaL_len(L, -1);
-    for (lua_Integer i = 1; i <= n; ++i) {
-      lua_geti(L, -1, i);
-      if (lua_isstring(L, -1)) tr.commands.emplace_back(lua_tostring(L, -1));
-      lua_pop(L, 1);
-    }
-  }
-  lua_pop(L, 1);
-  if (!tr.error.empty()) tr.commands.clear();  // a rejected candidate is never issued
-  return tr;
-}
-
-// Runs fn(L) (which leaves one value) under pcall; the error becomes a Status.
-template <class F>
-Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
-  lua_State* L = vm.state();
-  const int top = lua_gettop(L);
-  struct Ctx { F* fn; } ctx{&fn};
-  lua_pushcfunction(L, [](lua_State* S) -> int {
-    auto* c = static_cast<Ctx*>(lua_touserdata(S, 1));
-    lua_settop(S, 0);
-    (*c->fn)(S);
-    return 1;
-  });
-  lua_pushlightuserdata(L, &ctx);
-  const Vm::Call budget(vm);  // a fresh instruction budget
-  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-    std::string msg = std::string("translation graph (scripts/translate/graph.lua): ") +
-                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
-    lua_settop(L, top);
-    return Status::internal(msg);
-  }
-  auto tr = read_result(L);
-  lua_settop(L, top);
-  return tr;
 }
 
 }  // namespace
@@ -457,6 +465,7 @@ void bind_translate(lua_State* L) {
                           {"utterance", guarded<l_utterance>},
                           {"best_match", guarded<l_best_match>},
                           {"json_decode", guarded<l_json_decode>},
+                          {"tables", guarded<l_tables>},
                           {nullptr, nullptr}};
   luaL_setfuncs(L, fns, 0);
   lua_pop(L, 1);
@@ -468,77 +477,8 @@ void bind_translate(lua_State* L) {
                               {"number", guarded<l_u_number>},
                               {nullptr, nullptr}};
   define_class(L, kUtteranceMt, methods);
-}
-
-
-Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req) {
-  return protected_call(vm, [&](lua_State* L) {
-    push_graph_module(L);
-    lua_getfield(L, -1, "translate");
-    lua_pushstring(L, text.c_str());
-    push_request(L, req);
-    lua_call(L, 2, 1);
-  });
-}
-
-Result<std::vector<rag::Document>> grammar_documents(Vm& vm) {
-  lua_State* L = vm.state();
-  const int top = lua_gettop(L);
-  lua_getglobal(L, "require");
-  lua_pushstring(L, "translate.grammar");
-  const Vm::Call budget(vm);
-  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-    std::string msg = std::string("grammar (scripts/translate/grammar.lua): ") +
-                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
-    lua_settop(L, top);
-    return Status::internal(msg);
-  }
-  lua_getfield(L, -1, "documents");
-  if (lua_pcall(L, 0, 1, 0) != LUA_OK || !lua_istable(L, -1)) {
-    std::string msg = std::string("grammar.documents(): ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "no list");
-    lua_settop(L, top);
-    return Status::internal(msg);
-  }
-  std::vector<rag::Document> docs;
-  const lua_Integer n = luaL_len(L, -1);
-  for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, -1, i);
-    lua_getfield(L, -1, "command");
-    lua_getfield(L, -2, "text");
-    if (lua_isstring(L, -2) && lua_isstring(L, -1)) docs.push_back({lua_tostring(L, -2), lua_tostring(L, -1)});
-    lua_pop(L, 3);
-  }
-  lua_settop(L, top);
-  return docs;
-}
-
-Result<GraphDialogue> GraphDialogue::open(Vm& vm, const GraphRequest& req) {
-  int ref = LUA_NOREF;
-  auto made = protected_call(vm, [&](lua_State* L) {
-    push_graph_module(L);
-    lua_getfield(L, -1, "dialogue");
-    push_request(L, req);
-    lua_call(L, 1, 1);
-    lua_pushvalue(L, -1);
-    ref = luaL_ref(L, LUA_REGISTRYINDEX);
-    lua_newtable(L);  // a well-shaped result for protected_call
-  });
-  if (!made.is_ok()) return made.status();
-  return GraphDialogue(vm, ref);
-}
-
-GraphDialogue::~GraphDialogue() {
-  if (ref_ >= 0) luaL_unref(vm_->state(), LUA_REGISTRYINDEX, ref_);
-}
-
-Result<translate::Translation> GraphDialogue::say(const std::string& text) {
-  return protected_call(*vm_, [&](lua_State* L) {
-    lua_rawgeti(L, LUA_REGISTRYINDEX, ref_);
-    lua_getfield(L, -1, "say");
-    lua_insert(L, -2);
-    lua_pushstring(L, text.c_str());
-    lua_call(L, 2, 1);
-  });
+  const luaL_Reg no_methods[] = {{nullptr, nullptr}};
+  define_class(L, kTablesMt, no_methods);
 }
 
 }  // namespace squawk::script

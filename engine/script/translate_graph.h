@@ -29,9 +29,14 @@ struct GraphRequest {
   std::string mode = "offline";          // offline | single | multi
   std::string setup;                      // TrafScript run on a new sim when `sim` is null
   const command::Stack* sim = nullptr;    // the traffic to translate against (copied)
+  bool verify = true;                     // multi mode: false drops the verifier node (paper Table 2)
 };
 
 Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req);
+
+// Pushes the translate.graph module (loaded once per Lua state through the
+// sandbox's require); raises the Lua error of a module that fails to load.
+void push_graph_module(lua_State* L);
 
 // The grammar's retrieval documents (translate.grammar.documents()): the
 // words of its rules and `words` lines, per registry command.

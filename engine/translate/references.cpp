@@ -25,7 +25,7 @@ struct Suffix {
 
 bool is_word(const Token& t) { return t.kind == TokKind::kWord; }
 
-Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used) {
+Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used, const Tables& names) {
   Suffix s;
   while (j < t.size() && !used[j] && s.groups.size() < 8) {
     const Token& k = t[j];
@@ -55,7 +55,7 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       j = e;
       continue;
     }
-    char letter = phonetic_letter(k.text);
+    char letter = names.phonetic_letter(k.text);
     if (letter == 0 && k.raw.size() == 1 && std::isupper(static_cast<unsigned char>(k.raw[0])) && k.raw != "A" &&
         k.raw != "I")
       letter = k.raw[0];
@@ -100,7 +100,7 @@ struct CallsignMatch {
 // Matches a spoken airline (ICAO prefix if known, else the spoken words) and
 // suffix against the world's aircraft.
 CallsignMatch match_world(const std::string& icao, const std::string& words, const Suffix& suf,
-                          const std::vector<AircraftView>& fleet) {
+                          const std::vector<AircraftView>& fleet, const Tables& names) {
   CallsignMatch best;
   for (const auto& a : fleet) {
     auto [prefix, rest] = split_id(a.id);
@@ -109,7 +109,7 @@ CallsignMatch match_world(const std::string& icao, const std::string& words, con
       airline = text::iequals(icao, prefix) ? 1.0 : 0.0;
     } else if (!words.empty()) {
       airline = similarity(words, prefix);
-      for (const auto& tel : telephony_of(prefix)) airline = std::max(airline, similarity(words, tel));
+      for (const auto& tel : names.telephony_of(prefix)) airline = std::max(airline, similarity(words, tel));
     }
     double digits = 0.0;
     size_t groups = suf.groups.size();
@@ -139,20 +139,9 @@ size_t after_weight(const std::vector<Token>& t, size_t e) {
 
 }  // namespace
 
-char phonetic_letter(const std::string& w) {
-  static const char* kAlphabet[] = {"alpha",  "bravo",   "charlie", "delta",  "echo",   "foxtrot", "golf",
-                                    "hotel",  "india",   "juliett", "kilo",   "lima",   "mike",    "november",
-                                    "oscar",  "papa",    "quebec",  "romeo",  "sierra", "tango",   "uniform",
-                                    "victor", "whiskey", "xray",    "yankee", "zulu"};
-  for (int i = 0; i < 26; ++i)
-    if (w == kAlphabet[i]) return static_cast<char>('A' + i);
-  if (w == "alfa") return 'A';
-  if (w == "juliet") return 'J';
-  if (w == "whisky") return 'W';
-  return 0;
-}
 
-std::vector<Reference> find_references(const std::vector<Token>& t, const WorldView* world, std::vector<bool>& used) {
+std::vector<Reference> find_references(const std::vector<Token>& t, const WorldView* world, std::vector<bool>& used,
+                                       const Tables& names) {
   std::vector<Reference> refs;
   const std::vector<AircraftView> fleet = world ? world->aircraft() : std::vector<AircraftView>{};
   const std::vector<std::string> wpts = route_and_defined_waypoints(world);
@@ -180,18 +169,18 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       add(RefKind::kWaypoint, text::upper(raw), i, i + 1, true, false);
       continue;
     }
-    if (is_manufacturer(t[i].text) && i + 1 < t.size()) {
-      if (auto ty = aircraft_type(t[i].text, t[i + 1].raw)) {
+    if (names.is_manufacturer(t[i].text) && i + 1 < t.size()) {
+      if (auto ty = names.aircraft_type(t[i].text, t[i + 1].raw)) {
         add(RefKind::kType, *ty, i, i + 2, false, false);
         continue;
       }
     }
     if (i > 0 && t[i - 1].text == "type" && has_digit(raw)) {
-      add(RefKind::kType, aircraft_type("", raw).value_or(text::upper(raw)), i, i + 1, false, false);
+      add(RefKind::kType, names.aircraft_type("", raw).value_or(text::upper(raw)), i, i + 1, false, false);
       continue;
     }
     if (has_digit(raw)) {
-      if (auto ty = aircraft_type("", raw)) {
+      if (auto ty = names.aircraft_type("", raw)) {
         add(RefKind::kType, *ty, i, i + 1, false, false);
         continue;
       }
@@ -210,7 +199,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       return true;
     }
     if (fleet.empty()) return false;
-    CallsignMatch m = match_world(icao, spoken, suf, fleet);
+    CallsignMatch m = match_world(icao, spoken, suf, fleet, names);
     if ((m.score < 0.45 && fleet.size() != 1) || m.groups == 0) return false;
     heard = {id, m.airline, m.digits};
     id = m.id;
@@ -229,7 +218,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     if (letters >= 2) {
       std::string prefix;
       for (size_t k = i; k < i + letters; ++k) prefix += t[k].text;
-      Suffix suf = read_suffix(t, i + letters, used);
+      Suffix suf = read_suffix(t, i + letters, used, names);
       if (!suf.groups.empty() && std::isdigit(static_cast<unsigned char>(suf.groups[0][0]))) {
         std::string id = text::upper(prefix) + text::upper(suf.joined(suf.groups.size()));
         size_t end = suf.ends.back();
@@ -239,7 +228,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
         continue;
       }
     }
-    for (size_t len = std::min(max_telephony_words(), t.size() - i); len >= 1; --len) {
+    for (size_t len = std::min(names.max_telephony_words(), t.size() - i); len >= 1; --len) {
       std::string phrase;
       bool ok = true;
       for (size_t k = i; k < i + len; ++k) {
@@ -248,10 +237,10 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
         phrase += t[k].text;
       }
       if (!ok) continue;
-      auto icao = airline_by_telephony(phrase);
+      auto icao = names.airline_by_telephony(phrase);
       if (!icao) continue;
-      Suffix suf = read_suffix(t, i + len, used);
-      if (suf.groups.empty() || phonetic_letter(t[i + len].text) != 0) break;
+      Suffix suf = read_suffix(t, i + len, used, names);
+      if (suf.groups.empty() || names.phonetic_letter(t[i + len].text) != 0) break;
       std::string id = *icao + text::upper(suf.joined(suf.groups.size()));
       size_t end = suf.ends.back();
       const bool exists = resolve(id, *icao, phrase, suf, end);
@@ -264,10 +253,10 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
   // mike echo climb ..."): three letters or more.
   {
     size_t i = 0;
-    while (i < t.size() && is_word(t[i]) && is_filler(t[i].text) && !used[i]) ++i;
+    while (i < t.size() && is_word(t[i]) && names.vocabulary().is_filler(t[i].text) && !used[i]) ++i;
     size_t b = i;
     std::string letters;
-    while (i < t.size() && is_word(t[i]) && !used[i] && phonetic_letter(t[i].text) != 0) letters += phonetic_letter(t[i++].text);
+    while (i < t.size() && is_word(t[i]) && !used[i] && names.phonetic_letter(t[i].text) != 0) letters += names.phonetic_letter(t[i++].text);
     if (letters.size() >= 3) {
       const AircraftView* known = world_id(letters);
       std::string id = known ? known->id : letters;
@@ -291,20 +280,20 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
                             [](const Reference& r) { return r.kind == RefKind::kAircraft && r.begin <= 2; });
   if (!fleet.empty() && !opened) {
     size_t i = 0;
-    while (i < t.size() && is_word(t[i]) && is_filler(t[i].text) && !used[i]) ++i;
+    while (i < t.size() && is_word(t[i]) && names.vocabulary().is_filler(t[i].text) && !used[i]) ++i;
     size_t words_begin = i;
     std::string words;
     bool keyword = false;  // an instruction word may be a misheard airline name ("front turn" = Frontier)
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
-           phonetic_letter(t[i].text) == 0) {
-      keyword = keyword || is_keyword(t[i].text);
+           names.phonetic_letter(t[i].text) == 0) {
+      keyword = keyword || names.vocabulary().is_keyword(t[i].text);
       words += t[i].text;
       ++i;
     }
     while (i < t.size() && t[i].kind == TokKind::kPunct && t[i].text == ",") ++i;
-    Suffix suf = read_suffix(t, i, used);
+    Suffix suf = read_suffix(t, i, used, names);
     if (!suf.groups.empty()) {
-      CallsignMatch m = match_world("", words, suf, fleet);
+      CallsignMatch m = match_world("", words, suf, fleet, names);
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
       double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;
       if (m.score >= need && m.groups > 0) add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
@@ -320,7 +309,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     static const char* kNotNames[] = {"LNAV", "VNAV", "MVP", "ADS", "NM", "FL", "ASAS", "PZ", "KLM", "VS", "HDG",
                                       "ALT", "SPD", "CRE", "DEL", "ATC", "OFF", "ON", "ILS", "RNAV", "TCAS", "UTC", "GPS"};
     bool reserved = std::any_of(std::begin(kNotNames), std::end(kNotNames), [&](const char* n) { return raw == n; });
-    if (upper && !reserved && !airline_by_telephony(t[i].text)) add(RefKind::kWaypoint, raw, i, i + 1, false, false);
+    if (upper && !reserved && !names.airline_by_telephony(t[i].text)) add(RefKind::kWaypoint, raw, i, i + 1, false, false);
   }
   std::sort(refs.begin(), refs.end(), [](const Reference& a, const Reference& b) { return a.begin < b.begin; });
   return refs;

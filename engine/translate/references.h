@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "translate/lexer.h"
+#include "translate/tables.h"
 #include "translate/world_view.h"
 
 namespace squawk::translate {
@@ -45,10 +46,8 @@ struct Reference {
   Heard heard;          // set when a spoken callsign was matched inexactly
 };
 
+// `names`: the airlines, types and phonetic alphabet known (tables.h).
 std::vector<Reference> find_references(const std::vector<Token>& toks, const WorldView* world,
-                                       std::vector<bool>& used);
-
-// Phonetic alphabet letter ("alpha" -> 'A'), or 0.
-char phonetic_letter(const std::string& w);
+                                       std::vector<bool>& used, const Tables& names);
 
 }  // namespace squawk::translate

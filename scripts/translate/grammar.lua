@@ -1,7 +1,8 @@
 -- The offline grammar: controller and experimenter English -> TrafScript,
 -- with no language model. The `offline` node of the translation graph.
 --
--- Data: translate/lexicon.lua (words) and translate/rules.lua (which words
+-- Data: translate/lexicon.lua (words), translate/names.lua (airline
+-- telephony, aircraft types) and translate/rules.lua (which words
 -- ask for which registry command), checked against the command registry
 -- when they load; translate/handlers.lua fills each command's arguments.
 -- The C++ extractors (squawk.translate.utterance) lex, read numbers and
@@ -25,6 +26,8 @@
 --   documents() -> {{command =, text =}, ...}  retrieval documents: the
 --     words of the rules, per registry command (squawk.rag.index docs)
 local lexicon = require("translate.lexicon")
+-- the airlines, types and phonetic alphabet, handed to the C++ matchers once
+local NAMES = squawk.translate.tables(require("translate.names"), lexicon)
 
 local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
 
@@ -203,7 +206,21 @@ function G:state(id)
   return nil
 end
 
-function G:quantities(b, e) return self.u:quantities(b, e) end
+-- The quantities in tokens [b, e), read once per range (mark_used forgets them).
+function G:quantities(b, e)
+  local key = b * 65536 + e
+  local q = self.qcache[key]
+  if not q then
+    q = self.u:quantities(b, e)
+    self.qcache[key] = q
+  end
+  return q
+end
+
+function G:mark_used(b, e)
+  self.u:mark_used(b, e)
+  self.qcache = {}
+end
 
 function G:need(question)
   if not self.ask then self.ask = question end
@@ -343,9 +360,9 @@ end
 -- True when the text holds a word that starts an instruction of its own
 -- (the dialogue tells an answer to its question from a new request by it).
 function M.has_instruction(text)
-  local u = squawk.translate.utterance(text)
+  local u = squawk.translate.utterance(text, nil, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = { aircraft = {}, waypoints = {} },
-    fleet = {}, out = {} }, G)
+    fleet = {}, out = {}, qcache = {} }, G)
   for i = 1, #g.t do
     if g:intent_at(i) then return true end
   end
@@ -410,8 +427,9 @@ function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
-  local u = squawk.translate.utterance(text, world)
-  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {} }, G)
+  local u = squawk.translate.utterance(text, world, NAMES)
+  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
+    qcache = {} }, G)
   local cond, rest = g:condition()
   if not g.ask then
     g:parse(rest, #g.t + 1)

@@ -215,7 +215,7 @@ function m:orphan_heading(s)
         local ids = self:acids(s)
         if #ids ~= 1 then return end
         self:emit("HDG " .. ids[1] .. " " .. f.num(wrap(q.value)))
-        self.u:mark_used(q.b, q.e)
+        self:mark_used(q.b, q.e)
         return
       end
     end

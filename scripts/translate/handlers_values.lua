@@ -107,6 +107,9 @@ return function(H, f, wrap, compass)
         ft, fl = ft * 100, true  -- "climb three five zero": a flight level
       end
     end
+    if fl and q.number.value >= 1000 then  -- "flight level 9000": levels have three digits
+      return self:need("Which flight level for " .. ids[1] .. "? I heard flight level " .. f.int(q.number.value) .. ".")
+    end
     if fl and ft > 60000 then
       return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
     end
@@ -131,9 +134,10 @@ return function(H, f, wrap, compass)
         relative = true
       end
     end
-    -- "descend 3000 ft" right after the verb, from higher up: to or by? Both read as descents.
+    -- "descend 3000 ft" typed right after the verb, from higher up: to or by? Both read as
+    -- descents. (Spoken levels, "descend two thousand five hundred feet", are targets.)
     if not relative and now and not q.to and not fl and dir ~= 0 and q.kind == "alt" and q.b == s.trig + 1
-        and self:word(q.e - 1, "@feet") then
+        and q.number.typed and self:word(q.e - 1, "@feet") then
       local cur = now.alt_ft or 0
       local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
       local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)

@@ -9,6 +9,47 @@
 -- (squawk.translate.utterance); this file holds the words that decide what
 -- an instruction means.
 return {
+  -- words that carry meaning in an instruction (never read as names or fillers)
+  keywords = { "climb", "descend", "descent", "maintain", "altitude", "level", "flight", "heading", "turn",
+      "left", "right", "speed", "knots", "reduce", "increase", "decrease", "delete", "remove", "waypoint",
+      "waypoints", "direct", "directly", "proceed", "create", "aircraft", "destination", "origin", "vertical",
+      "rate", "pause", "resume", "continue", "simulation", "scenario", "trail", "trails", "turbulence", "noise",
+      "conflict", "conflicts", "detection", "resolution", "resolve", "separation", "minimum", "radius", "bank",
+      "angle", "callsign", "degrees", "north", "south", "east", "west", "feet", "thousand", "hundred",
+      "expedite", "cleared", "define", "route", "position", "reposition", "teleport", "move", "spawn",
+      "generate", "place", "lateral", "navigation", "enable", "disable", "switch", "heavy", "mach", "seconds",
+      "minutes", "minute", "second", "hours", "speedbird", "lufthansa", "descending", "climbing", "faster",
+      "slower", "slow", "fast", "forward", "skip", "ahead", "timestep", "step", "seed", "random", "reset",
+      "print", "echo", "load", "open", "freeze", "hold", "protected", "zone", "height", "look", "lookahead",
+      "method", "potential", "voltage", "modified", "append", "insert", "add", "show", "hide", "list", "where",
+      "details", "status", "lower", "raise", "cruise", "point", "fly", "towards", "around", "opposite",
+      "direction", "same", "match", "double", "present", "current", "vectors", "vector", "traffic", "approach",
+      "departure", "contact", "radar", "correction", "negative", "immediately", "until", "advised", "then",
+      "when", "once", "reaches", "passes", "through", "below", "above", "fpm", "knot", "airspeed", "sink",
+      "plan", "departed", "shift", "activate", "deactivate", "unpause", "start", "over", "real", "time", "half",
+      "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
+      "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
+      "visual", "runway", "cross", "altimeter", "maintained", },
+  -- words that carry none ("please", "uh"): skipped before a callsign or condition
+  fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
+      "and", "now", },
+  -- typos are corrected to these words (one edit away, two for 7+ letters);
+  -- short everyday words are left out: speech recognition makes real words
+  -- near them ("loan", "train") far more often than typists misspell them
+  spelling = {
+    targets = { "climb", "descend", "descent", "maintain", "altitude", "heading", "speed", "knots", "reduce",
+        "increase", "decrease", "delete", "remove", "waypoint", "direct", "create", "aircraft", "destination",
+        "origin", "vertical", "simulation", "scenario", "turbulence", "conflict", "detection", "resolution",
+        "separation", "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite",
+        "define", "teleport", "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes",
+        "timestep", "protected", "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude",
+        "minimum", "horizontal", },
+    common = { "stop", "them", "last", "want", "have", "from", "with", "what", "also", "back", "give", "make",
+        "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
+        "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
+        "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
+        "show", "send", "sent", "held", "lead", },
+  },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
   -- before an instruction word: the instruction is only announced, not given
@@ -60,7 +101,7 @@ return {
     alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",
     hotel = "H", india = "I", juliet = "J", juliett = "J", kilo = "K", lima = "L", mike = "M",
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
-    uniform = "U", victor = "V", whiskey = "W", xray = "X", yankee = "Y", zulu = "Z",
+    uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
   },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },

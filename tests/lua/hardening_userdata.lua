@@ -33,7 +33,7 @@ check(not ok, "a method on a finalized sim is an error")
 check(tostring(err):find("finalized", 1, true) ~= nil, tostring(err))
 ok = pcall(RESURRECTED.count, RESURRECTED)
 check(not ok)
-ok = pcall(squawk.translate.offline, "KL2 climb FL300", RESURRECTED)
+ok = pcall(squawk.translate.run, "KL2 climb FL300", { sim = RESURRECTED, mode = "offline" })
 check(not ok, "a finalized sim is not a world either")
 RESURRECTED = nil
 collectgarbage()

@@ -1,0 +1,164 @@
+#include "script/translate_graph.h"
+
+#include "script/lua_util.h"
+
+namespace squawk::script {
+
+namespace {
+
+// Metatable of squawk.sim objects (bind_sim.cpp).
+constexpr const char* kSimMt = "squawk.sim.Sim";
+
+void set_field(lua_State* L, const char* k, const std::string& v) {
+  lua_pushlstring(L, v.data(), v.size());
+  lua_setfield(L, -2, k);
+}
+
+// Pushes the opts table of a GraphRequest (the sim as a copy).
+void push_request(lua_State* L, const GraphRequest& req) {
+  lua_createtable(L, 0, 3);
+  set_field(L, "mode", req.mode);
+  set_field(L, "setup", req.setup);
+  lua_pushboolean(L, req.verify);
+  lua_setfield(L, -2, "verify");
+  if (req.sim) {
+    new_object<command::Stack>(L, kSimMt, *req.sim);
+    lua_setfield(L, -2, "sim");
+  }
+}
+
+// Reads the graph's result table at the stack top.
+Result<translate::Translation> read_result(lua_State* L) {
+  if (!lua_istable(L, -1))
+    return Status::invalid("translation graph: translate() must return {commands = {...}} or {ask = \"...\"}");
+  translate::Translation tr;
+  lua_getfield(L, -1, "ask");
+  if (lua_type(L, -1) == LUA_TSTRING) tr.ask = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  lua_getfield(L, -1, "error");
+  if (lua_type(L, -1) == LUA_TSTRING) tr.error = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  lua_getfield(L, -1, "commands");
+  if (lua_istable(L, -1)) {
+    const lua_Integer n = luaL_len(L, -1);
+    for (lua_Integer i = 1; i <= n; ++i) {
+      lua_geti(L, -1, i);
+      if (lua_isstring(L, -1)) tr.commands.emplace_back(lua_tostring(L, -1));
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+  if (!tr.error.empty()) tr.commands.clear();  // a rejected candidate is never issued
+  return tr;
+}
+
+// Runs fn(L) (which leaves one value) under pcall; the error becomes a Status.
+template <class F>
+Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  struct Ctx { F* fn; } ctx{&fn};
+  lua_pushcfunction(L, [](lua_State* S) -> int {
+    auto* c = static_cast<Ctx*>(lua_touserdata(S, 1));
+    lua_settop(S, 0);
+    (*c->fn)(S);
+    return 1;
+  });
+  lua_pushlightuserdata(L, &ctx);
+  const Vm::Call budget(vm);  // a fresh instruction budget
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    std::string msg = std::string("translation graph (scripts/translate/graph.lua): ") +
+                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  auto tr = read_result(L);
+  lua_settop(L, top);
+  return tr;
+}
+
+}  // namespace
+
+// Leaves the translate.graph module on the stack (loaded once per state
+// through the sandbox's require); raises the loading error.
+void push_graph_module(lua_State* L) {
+  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
+  if (!lua_isnil(L, -1)) return;
+  lua_pop(L, 1);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, kTranslationGraphModule);
+  lua_call(L, 1, 1);
+  lua_pushvalue(L, -1);
+  lua_setfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
+}
+
+Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req) {
+  return protected_call(vm, [&](lua_State* L) {
+    push_graph_module(L);
+    lua_getfield(L, -1, "translate");
+    lua_pushstring(L, text.c_str());
+    push_request(L, req);
+    lua_call(L, 2, 1);
+  });
+}
+
+Result<std::vector<rag::Document>> grammar_documents(Vm& vm) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, "translate.grammar");
+  const Vm::Call budget(vm);
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    std::string msg = std::string("grammar (scripts/translate/grammar.lua): ") +
+                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  lua_getfield(L, -1, "documents");
+  if (lua_pcall(L, 0, 1, 0) != LUA_OK || !lua_istable(L, -1)) {
+    std::string msg = std::string("grammar.documents(): ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "no list");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  std::vector<rag::Document> docs;
+  const lua_Integer n = luaL_len(L, -1);
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, -1, i);
+    lua_getfield(L, -1, "command");
+    lua_getfield(L, -2, "text");
+    if (lua_isstring(L, -2) && lua_isstring(L, -1)) docs.push_back({lua_tostring(L, -2), lua_tostring(L, -1)});
+    lua_pop(L, 3);
+  }
+  lua_settop(L, top);
+  return docs;
+}
+
+Result<GraphDialogue> GraphDialogue::open(Vm& vm, const GraphRequest& req) {
+  int ref = LUA_NOREF;
+  auto made = protected_call(vm, [&](lua_State* L) {
+    push_graph_module(L);
+    lua_getfield(L, -1, "dialogue");
+    push_request(L, req);
+    lua_call(L, 1, 1);
+    lua_pushvalue(L, -1);
+    ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    lua_newtable(L);  // a well-shaped result for protected_call
+  });
+  if (!made.is_ok()) return made.status();
+  return GraphDialogue(vm, ref);
+}
+
+GraphDialogue::~GraphDialogue() {
+  if (ref_ >= 0) luaL_unref(vm_->state(), LUA_REGISTRYINDEX, ref_);
+}
+
+Result<translate::Translation> GraphDialogue::say(const std::string& text) {
+  return protected_call(*vm_, [&](lua_State* L) {
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref_);
+    lua_getfield(L, -1, "say");
+    lua_insert(L, -2);
+    lua_pushstring(L, text.c_str());
+    lua_call(L, 2, 1);
+  });
+}
+}  // namespace squawk::script
