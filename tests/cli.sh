@@ -59,5 +59,22 @@ c=$("$sq" run "$d/random.lua" --seed 12)
 if [ -n "$a" ] && [ "$a" = "$b" ] && [ "$a" != "$c" ]; then echo "ok   seeded random"; pass=$((pass + 1));
 else echo "FAIL seeded random: '$a' / '$b' / '$c'"; fails=$((fails + 1)); fi
 
+# Ctrl-C during training: checkpoint saved, exit 130, --resume gives the
+# parameters of an uninterrupted run.
+sig=$(mktemp -d)
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/a" --episodes 40000 --eval-every 0 --eval-episodes 20 >"$sig/a.log" 2>&1 &
+tpid=$!
+sleep 2
+kill -INT "$tpid"
+wait "$tpid"
+trc=$?
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/a" --episodes 40000 --eval-every 0 --eval-episodes 20 --resume >/dev/null 2>&1
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/b" --episodes 40000 --eval-every 0 --eval-episodes 20 >/dev/null 2>&1
+if [ "$trc" -eq 130 ] && grep -q "interrupted:" "$sig/a.log" &&
+   cmp -s <(tail -n +3 "$sig/a/policy.ckpt") <(tail -n +3 "$sig/b/policy.ckpt"); then
+  echo "ok   train SIGINT + resume"; pass=$((pass + 1))
+else echo "FAIL train SIGINT + resume: rc=$trc, $(cat "$sig/a.log")"; fails=$((fails + 1)); fi
+rm -rf "$sig"
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
