@@ -46,6 +46,7 @@ expect "demo"            0 "translator HDG KL001" -- "$sq" demo --record "$tmp/e
 expect "demo summary"    0 "waypoint reached +yes" -- "$sq" demo --quiet
 expect "demo gpt2"       0 "advisories the translator could not turn into a command: 0" -- "$sq" demo --policy gpt2 --quiet
 expect "demo bad policy" 2 "expected mlp or gpt2" -- "$sq" demo --policy nope
+expect "gpt2 bench help"  0 "squawk gpt2 bench" -- "$sq" gpt2 bench --help
 expect "render"          0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --out "$tmp/r.svg"
 grep -q "<circle" "$tmp/r.svg" && grep -q "<circle" "$tmp/ep.svg" && { echo "ok   svg has circles"; pass=$((pass + 1)); } || { echo "FAIL svg"; fails=$((fails + 1)); }
 printf 'episodes,eval_success_rate,eval_mean_reward\n1000,0.5,-1\n2000,0.8,-0.5\n' > "$tmp/log.csv"
