@@ -57,7 +57,7 @@ void set_number(lua_State* L, const char* key, double v) {
 }
 
 int l_new(lua_State* L) {
-  const std::string path = arg_string(L, 1, "scenario");
+  const std::string path = readable(L, arg_string(L, 1, "scenario"), "scenario");
   const std::string which = opt_string(L, 2, "settings", "eval");
   if (which != "train" && which != "eval")
     throw ArgError("squawk.env.new: settings '" + which + "': expected \"train\" or \"eval\"");
@@ -152,23 +152,28 @@ int l_mvp_action(lua_State* L) {
   return 1;
 }
 
+constexpr long long kMaxEpisodes = 1'000'000;  // per evaluate call
+constexpr long long kEpisodeCost = 10'000;     // [instructions] charged per episode
+
 int l_evaluate(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
-  const std::string path = field_string(L, 1, "scenario", "");
+  const std::string path = readable(L, field_string(L, 1, "scenario", ""), "scenario");
   if (path.empty()) throw ArgError("squawk.env.evaluate: field 'scenario' (a scenario file) is required");
   const std::string kind = field_string(L, 1, "policy", "mlp");
   Scenario sc = load_or_throw(L, path);
-  const auto episodes = static_cast<long long>(field_number(L, 1, "episodes", static_cast<double>(sc.eval_episodes)));
-  const auto seed = static_cast<uint64_t>(field_number(L, 1, "seed", static_cast<double>(sc.eval_seed)));
+  const long long episodes = field_count(L, 1, "episodes", sc.eval_episodes, 1, kMaxEpisodes);
+  const auto seed = static_cast<uint64_t>(
+      field_count(L, 1, "seed", static_cast<long long>(sc.eval_seed), 0, 9007199254740992LL));
+  charge(L, episodes * kEpisodeCost);
   auto envs = env::VecEnv::make(sc.eval_env, 32);
   check_status(envs.status());
   PolicyOptions opts;
   opts.seed = seed;
-  opts.checkpoint = field_string(L, 1, "checkpoint", "");
-  opts.gpt2.model = field_string(L, 1, "model", "");
+  opts.checkpoint = readable(L, field_string(L, 1, "checkpoint", ""), "checkpoint");
+  opts.gpt2.model = readable(L, field_string(L, 1, "model", ""), "model");
   opts.gpt2_fresh = !opts.gpt2.model.empty();
   if (!opts.gpt2_fresh) opts.gpt2.model = "tiny";
-  opts.gpt2.prompt = field_string(L, 1, "prompt", "");
+  opts.gpt2.prompt = readable(L, field_string(L, 1, "prompt", ""), "prompt");
   VmOptions vo = Vm::of(L).options();
   vo.out_dir.clear();
   auto made = make_policy(kind, sc, *envs, opts, vo);
@@ -208,7 +213,7 @@ void bind_env(lua_State* L) {
                                      {"state", guarded<l_state>},
                                      {"mvp_action", guarded<l_mvp_action>},
                                      {nullptr, nullptr}};
-  define_class<EnvBox>(L, kEnvMt, methods);
+  define_class(L, kEnvMt, methods);
   push_squawk_subtable(L, "env");
   lua_pushcfunction(L, guarded<l_new>);
   lua_setfield(L, -2, "new");

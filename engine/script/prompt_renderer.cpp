@@ -4,6 +4,7 @@
 
 #include "core/files.h"
 #include "script/lua_util.h"
+#include "script/vm.h"
 
 namespace squawk::script {
 
@@ -15,6 +16,7 @@ Result<std::shared_ptr<PromptRenderer>> PromptRenderer::load(const std::string& 
   lua_State* L = r->vm_->state();
   const int base = lua_gettop(L);
   lua_pushcfunction(L, traceback_handler);
+  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK || lua_pcall(L, 0, 1, base + 1) != LUA_OK) {
     std::string msg = lua_tostring(L, -1);
     lua_settop(L, base);
@@ -73,6 +75,7 @@ Result<std::string> PromptRenderer::render(const env::Observation& obs) {
   lua_pushcfunction(L, traceback_handler);
   lua_rawgeti(L, LUA_REGISTRYINDEX, render_ref_);
   push_observation(L, obs);
+  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (lua_pcall(L, 1, 1, base + 1) != LUA_OK) {
     std::string msg = lua_tostring(L, -1);
     lua_settop(L, base);
