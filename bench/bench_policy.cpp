@@ -2,13 +2,15 @@
 // the time of one fine-tuning update, for the tiny offline model and for a
 // GPT-2 small folder. Prints figures only; asserts nothing.
 //
-// usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M]
+// usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M] [--threads N]
 //   --write-small DIR  writes a GPT-2 small folder with random weights in the
 //                      Hugging Face format (config.json, model.safetensors,
 //                      vocab.json, merges.txt: the gpt2 checkpoint writer, and
 //                      the tiny policy's prompt-trained BPE vocabulary, since
 //                      no real GPT-2 vocabulary is reachable offline) and exits
 //   --small DIR        also measures the policy on that folder (k = 1)
+//   --threads N        matrix-product threads (default 1; the other core may
+//                      be busy, so compare 1 and 2 from the same machine state)
 // Observations come from the training episodes of scenarios/horizontal_cr.lua.
 #include <chrono>
 #include <cstdio>
@@ -20,6 +22,7 @@
 #include "core/paths.h"
 #include "env/vec_env.h"
 #include "gpt2/checkpoint.h"
+#include "nn/gemm.h"
 #include "rl/vpg.h"
 #include "script/scenario.h"
 
@@ -105,7 +108,7 @@ int write_small(const std::string& dir, const script::Scenario& sc) {
 
 int main(int argc, char** argv) {
   std::string small, write;
-  int batch = 32, update_episodes = 8;
+  int batch = 32, update_episodes = 8, threads = 1;
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
     if (std::strcmp(argv[i], "--small") == 0 && more) {
@@ -116,8 +119,12 @@ int main(int argc, char** argv) {
       batch = std::atoi(argv[++i]);
     } else if (std::strcmp(argv[i], "--update-episodes") == 0 && more) {
       update_episodes = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--threads") == 0 && more) {
+      threads = std::atoi(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M]\n");
+      std::fprintf(stderr,
+                   "usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M] "
+                   "[--threads N]\n");
       return 2;
     }
   }
@@ -127,6 +134,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (!write.empty()) return write_small(write, *sc);
+  if (threads < 1) {
+    std::fprintf(stderr, "bench_policy: --threads must be >= 1\n");
+    return 2;
+  }
+  nn::set_num_threads(threads);
+  std::printf("%d matrix-product thread%s\n", threads, threads == 1 ? "" : "s");
   if (int rc = measure("tiny", *sc, batch, update_episodes); rc != 0) return rc;
   return small.empty() ? 0 : measure(small, *sc, batch, update_episodes);
 }

@@ -43,6 +43,7 @@ expect "demo"            0 "translator HDG KL001" -- "$sq" demo --record "$tmp/e
 expect "demo summary"    0 "waypoint reached +yes" -- "$sq" demo --quiet
 expect "demo gpt2"       0 "advisories the translator could not turn into a command: 0" -- "$sq" demo --policy gpt2 --quiet
 expect "demo bad policy" 2 "expected mlp or gpt2" -- "$sq" demo --policy nope
+expect "gpt2 bench help"  0 "squawk gpt2 bench" -- "$sq" gpt2 bench --help
 expect "render"          0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --out "$tmp/r.svg"
 grep -q "<circle" "$tmp/r.svg" && grep -q "<circle" "$tmp/ep.svg" && { echo "ok   svg has circles"; pass=$((pass + 1)); } || { echo "FAIL svg"; fails=$((fails + 1)); }
 printf 'episodes,eval_success_rate,eval_mean_reward\n1000,0.5,-1\n2000,0.8,-0.5\n' > "$tmp/log.csv"
@@ -87,6 +88,23 @@ b=$("$sq" run "$d/random.lua" --seed 11)
 c=$("$sq" run "$d/random.lua" --seed 12)
 if [ -n "$a" ] && [ "$a" = "$b" ] && [ "$a" != "$c" ]; then echo "ok   seeded random"; pass=$((pass + 1));
 else echo "FAIL seeded random: '$a' / '$b' / '$c'"; fails=$((fails + 1)); fi
+
+# Ctrl-C during training: checkpoint saved, exit 130, --resume gives the
+# parameters of an uninterrupted run.
+sig=$(mktemp -d)
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/a" --episodes 40000 --eval-every 0 --eval-episodes 20 >"$sig/a.log" 2>&1 &
+tpid=$!
+sleep 2
+kill -INT "$tpid"
+wait "$tpid"
+trc=$?
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/a" --episodes 40000 --eval-every 0 --eval-episodes 20 --resume >/dev/null 2>&1
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/b" --episodes 40000 --eval-every 0 --eval-episodes 20 >/dev/null 2>&1
+if [ "$trc" -eq 130 ] && grep -q "interrupted:" "$sig/a.log" &&
+   cmp -s <(tail -n +3 "$sig/a/policy.ckpt") <(tail -n +3 "$sig/b/policy.ckpt"); then
+  echo "ok   train SIGINT + resume"; pass=$((pass + 1))
+else echo "FAIL train SIGINT + resume: rc=$trc, $(cat "$sig/a.log")"; fails=$((fails + 1)); fi
+rm -rf "$sig"
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -195,6 +195,13 @@ int init(const Args& a) {
 }  // namespace
 
 int cmd_gpt2(const ArgV& argv) {
+  // `squawk gpt2 ACTION --help`: the subcommand's help, like `squawk gpt2 --help`.
+  for (const std::string& x : argv)
+    if (x == "--help" || x == "-h") {
+      for (const Subcommand& s : subcommands())
+        if (std::string(s.name) == "gpt2") std::fputs(s.help, stdout);
+      return kExitOk;
+    }
   auto a = Args::parse(argv, {{"--max-tokens", "--top-k", "--seed", "--seq", "--batch", "--threads",
                                "--seconds", "--merges", "--layers", "--heads", "--width", "--context",
                                "--vocab"},

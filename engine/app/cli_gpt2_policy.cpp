@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gpt2_policy_factory.h"
+#include "app/interrupt.h"
+#include "app/progress_bar.h"
 #include "app/rl_eval.h"
 #include "app/vm_options.h"
 #include "core/files.h"
@@ -135,6 +137,9 @@ int cmd_train_gpt2(const ArgV& argv) {
     trainer.adam().m() = resume.adam_m;
     trainer.adam().v() = resume.adam_v;
     trainer.adam().set_t(resume.adam_t);
+    if (Status st = trainer.restore_value(resume.value_params, resume.value_m, resume.value_v, resume.value_t);
+        !st.is_ok())
+      return failure(st.with_context(ckpt_path));
   }
   if (resuming && files::exists(log_path)) {
     if (Status st = trim_log(log_path, meta.progress.episodes); !st.is_ok()) return failure(st);
@@ -157,9 +162,28 @@ int cmd_train_gpt2(const ArgV& argv) {
   long long interval = 0;
   long long next_eval = cfg.eval_every > 0 ? (meta.progress.episodes / cfg.eval_every + 1) * cfg.eval_every
                                            : cfg.episodes;
+  // The bar counts episodes as they finish inside an update (a GPT-2 small
+  // update takes minutes); its ETA covers the rest of this run.
+  ProgressBar bar("train gpt2", cfg.episodes, !quiet);
+  InterruptGuard interrupt;
+  auto note = [&](const char* f, auto... a) {
+    char line[256];
+    std::snprintf(line, sizeof line, f, a...);
+    if (!quiet) bar.note(line);
+  };
   while (meta.progress.episodes < cfg.episodes) {
     const auto u0 = std::chrono::steady_clock::now();
-    const rl::UpdateStats st = trainer.update();
+    const rl::UpdateStats st = trainer.update([&](long long done) {
+      bar.update(meta.progress.episodes + done, "(update " + std::to_string(trainer.updates() + 1) + ")");
+      return !InterruptGuard::requested();
+    });
+    if (st.interrupted) {
+      bar.finish();
+      std::printf("interrupted: %s holds the policy after %lld episodes (%lld updates); "
+                  "--resume continues from there exactly\n",
+                  ckpt_path.c_str(), meta.progress.episodes, meta.progress.updates);
+      return kExitInterrupted;
+    }
     const double update_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - u0).count();
     if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
     if (Status rs = sc->reward_error(); !rs.is_ok()) return failure(rs);
@@ -169,10 +193,9 @@ int cmd_train_gpt2(const ArgV& argv) {
     ret_sum += st.mean_return;
     succ_sum += st.success_rate;
     ++interval;
-    if (!quiet)
-      std::printf("update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, %.2f s\n",
-                  meta.progress.updates, meta.progress.episodes, st.samples, st.mean_return,
-                  100.0 * st.success_rate, st.entropy, update_s);
+    note("update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, %.2f s\n",
+         meta.progress.updates, meta.progress.episodes, st.samples, st.mean_return, 100.0 * st.success_rate,
+         static_cast<double>(st.entropy), update_s);
     if (meta.progress.episodes >= next_eval || meta.progress.episodes >= cfg.episodes) {
       next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
       auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, sc->eval_seed, false});
@@ -185,18 +208,24 @@ int cmd_train_gpt2(const ArgV& argv) {
       log << row << std::flush;
       ret_sum = succ_sum = 0.0;
       interval = 0;
-      if (!quiet)
-        std::printf("%lld episodes: eval success %.1f %%, mean reward %.3f (%lld episodes)\n",
-                    meta.progress.episodes, 100.0 * ev->success_rate, ev->mean_reward, ev->episodes);
+      note("%lld episodes: eval success %.1f %%, mean reward %.3f (%lld episodes), most frequent action %.1f %%\n",
+           meta.progress.episodes, 100.0 * ev->success_rate, ev->mean_reward, ev->episodes,
+           100.0 * ev->most_frequent_share());
     }
     meta.params.assign(policy.params().begin(), policy.params().end());
     meta.has_adam = true;
     meta.adam_t = trainer.adam().t();
     meta.adam_m = trainer.adam().m();
     meta.adam_v = trainer.adam().v();
+    if (nn::Adam* va = trainer.value_adam()) {
+      meta.value_params = trainer.value_params();
+      meta.value_m = va->m();
+      meta.value_v = va->v();
+      meta.value_t = va->t();
+    }
     if (Status s = rl::save_prompt_checkpoint(ckpt_path, meta); !s.is_ok()) return failure(s);
-    std::fflush(stdout);
   }
+  bar.finish();
   if (!quiet)
     std::printf("done: %lld episodes in %.0f s; checkpoint %s, log %s\n", meta.progress.episodes,
                 meta.progress.wall_s, ckpt_path.c_str(), log_path.c_str());

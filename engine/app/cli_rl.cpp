@@ -9,6 +9,7 @@
 
 #include "app/cli.h"
 #include "app/gpt2_policy_factory.h"
+#include "app/interrupt.h"
 #include "app/progress_bar.h"
 #include "app/rl_eval.h"
 #include "app/subcommands.h"
@@ -142,18 +143,9 @@ int cmd_train(const ArgV& argv) {
     trainer.adam().m() = resume.adam_m;
     trainer.adam().v() = resume.adam_v;
     trainer.adam().set_t(resume.adam_t);
-    nn::Adam* va = trainer.value_adam();
-    if (va && resume.value_params.size() == trainer.value_params().size()) {
-      trainer.value_params() = resume.value_params;
-      va->m() = resume.value_m;
-      va->v() = resume.value_v;
-      va->set_t(resume.value_t);
-    } else if (va || !resume.value_params.empty()) {
-      return failure(Status::invalid("checkpoint " + ckpt_path + " holds " +
-                                     std::to_string(resume.value_params.size()) +
-                                     " value-baseline parameters, the scenario's learner has " +
-                                     std::to_string(trainer.value_params().size())));
-    }
+    if (Status st = trainer.restore_value(resume.value_params, resume.value_m, resume.value_v, resume.value_t);
+        !st.is_ok())
+      return failure(st.with_context(ckpt_path));
   }
 
   const bool append = resuming && files::exists(log_path);
@@ -176,7 +168,17 @@ int cmd_train(const ArgV& argv) {
   double best_success = -1.0;
   long long next_eval = cfg.eval_every > 0 ? (progress.episodes / cfg.eval_every + 1) * cfg.eval_every
                                            : cfg.episodes;
+  InterruptGuard interrupt;
   while (progress.episodes < cfg.episodes) {
+    if (InterruptGuard::requested()) {
+      bar.finish();
+      if (Status s = rl::save_checkpoint(ckpt_path, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
+        return failure(s);
+      std::printf("interrupted: %s holds the policy after %lld episodes (%lld updates); "
+                  "--resume continues from there exactly\n",
+                  ckpt_path.c_str(), progress.episodes, progress.updates);
+      return kExitInterrupted;
+    }
     const rl::UpdateStats st = trainer.update();
     progress.episodes += st.episodes;
     progress.updates = trainer.updates();

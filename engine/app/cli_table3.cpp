@@ -49,7 +49,8 @@ std::string top_action(const rl::EvalResult& r) {
   for (size_t k = 1; k < r.action_counts.size(); ++k)
     if (r.action_counts[k] > r.action_counts[best]) best = k;
   char buf[48];
-  std::snprintf(buf, sizeof buf, "%+g (%.1f %%)", rl::kActionBins[best], 100.0 * r.most_frequent_share());
+  std::snprintf(buf, sizeof buf, rl::kActionBins[best] == 0.0 ? "%g (%.1f %%)" : "%+g (%.1f %%)",
+                rl::kActionBins[best], 100.0 * r.most_frequent_share());
   return buf;
 }
 

@@ -75,7 +75,9 @@ const std::vector<Subcommand>& subcommands() {
        "  train-bpe   learn N byte-level BPE merges (default 256) on the text files\n"
        "              and write vocab.json + merges.txt to OUT_DIR\n"
        "  init        write a random GPT-2 folder (GPT-2's initialisation; default the\n"
-       "              tiny shape) over the vocabulary of --vocab DIR or the bytes\n",
+       "              tiny shape) over the vocabulary of --vocab DIR or the bytes;\n"
+       "              GPT-2 small's shape: --layers 12 --heads 12 --width 768\n"
+       "              --context 1024\n",
        cmd_gpt2},
       {"render", "render EPISODE.jsonl|SCENARIO.lua|SCENARIO.scn   draw an episode or traffic as SVG",
        "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"
@@ -276,37 +278,54 @@ const std::vector<Subcommand>& subcommands() {
        "                  --blocks K (trainable last blocks; default 2 for tiny, 1 for\n"
        "                  a folder), --head action|lm, --prompt FILE (default\n"
        "                  prompts/observation.lua), --episodes-per-update M; the\n"
-       "                  checkpoint is written after every update\n",
+       "                  checkpoint is written after every update\n"
+       "Ctrl-C stops at the next update boundary (GPT-2: abandons the update in\n"
+       "progress), leaves DIR/checkpoint.ckpt at the last finished update and exits\n"
+       "with status 130; --resume then continues exactly. A second Ctrl-C ends the\n"
+       "process at once.\n",
        cmd_train},
       {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
-       "usage: squawk eval SCENARIO.lua [--policy random|zero|mvp|mlp] [--checkpoint FILE]\n"
-       "                   [--episodes N] [--seed N] [--greedy] [--json] [--record FILE.jsonl]\n\n"
+       "usage: squawk eval SCENARIO.lua [--policy random|zero|constant:V|mvp|mlp|gpt2]\n"
+       "                   [--checkpoint FILE] [--episodes N] [--seed N] [--greedy] [--json]\n"
+       "                   [--record FILE.jsonl] [--show-prompt N]\n\n"
        "Runs the scenario's evaluation episodes (default 1000, numbered from the\n"
        "seed) with one policy and prints Table 3's columns: success rate, mean\n"
-       "episode reward and its standard deviation.\n\n"
-       "  --policy random  an untrained MLP, initialised from the seed\n"
-       "  --policy zero    never turn\n"
-       "  --policy mvp     BlueSky's MVP resolution steering the ownship (a classical\n"
-       "                   reference, heading only)\n"
-       "  --policy mlp     a trained MLP: --checkpoint FILE, by default the checkpoint\n"
-       "                   shipped in models/\n"
-       "  --policy gpt2    the GPT-2 prompt policy: --checkpoint FILE (default the\n"
-       "                   fine-tuned tiny policy in models/), or --model tiny|DIR\n"
-       "                   for an untrained head; --prompt FILE, --head action|lm\n"
-       "  --greedy         take the most likely action instead of sampling\n"
-       "  --json           print {success_rate, mean_reward, std_reward, episodes}\n"
-       "  --record FILE    write every episode as JSON lines (squawk render reads it)\n",
+       "episode reward and its standard deviation, then the action histogram (the\n"
+       "five actions; continuous actions binned to the nearest) and the share of\n"
+       "the most frequent action. The header names the rules and what success\n"
+       "means under them, the prompt file of a GPT-2 policy, and warns when the\n"
+       "policy was trained on other rules or another number of intruders.\n\n"
+       "  --policy random      an untrained MLP, initialised from the seed\n"
+       "  --policy zero        never turn\n"
+       "  --policy constant:V  always action V (in [-1, 1], units of the heading step)\n"
+       "  --policy mvp         BlueSky's MVP resolution steering the ownship (a\n"
+       "                       classical reference, heading only)\n"
+       "  --policy mlp         a trained MLP: --checkpoint FILE, by default the\n"
+       "                       checkpoint shipped in models/\n"
+       "  --policy gpt2        the GPT-2 prompt policy: --checkpoint FILE (default the\n"
+       "                       fine-tuned tiny policy in models/), or --model tiny|DIR\n"
+       "                       for an untrained head; --prompt FILE, --head action|lm\n"
+       "  --greedy             take the most likely action instead of sampling\n"
+       "  --json               print {success_rate, mean_reward, std_reward, episodes,\n"
+       "                       reached_rate, decisions, actions, most_frequent_share}\n"
+       "  --record FILE        write every episode as JSON lines (squawk render reads it)\n"
+       "  --show-prompt N      gpt2: print the prompts of the first N decisions and\n"
+       "                       the action taken\n",
        cmd_eval},
       {"table3", "table3 SCENARIO.lua   the paper's Table 3: untrained/trained MLP and GPT-2",
        "usage: squawk table3 SCENARIO.lua [--episodes N] [--seed N] [--mlp-checkpoint FILE]\n"
-       "                     [--gpt2-checkpoint FILE] [--model tiny|DIR] [--csv FILE]\n\n"
+       "                     [--gpt2-checkpoint FILE] [--model tiny|DIR] [--csv FILE] [--json]\n\n"
        "Evaluates the four agents of the paper's Table 3 on the same evaluation\n"
        "episodes (default 1000) with one fixed seed (default the scenario's eval\n"
        "seed): an untrained MLP (initialised from the seed), an untrained GPT-2\n"
        "policy (the fine-tuned one's base model with a fresh action head, or\n"
        "--model), the trained MLP and the fine-tuned GPT-2 (checkpoints shipped in\n"
-       "models/ unless given). Prints a markdown table, then CSV (or writes the CSV\n"
-       "to --csv FILE).\n",
+       "models/ unless given); then the baselines that show what a row is worth:\n"
+       "always -0.5, always +0.5, never turning and BlueSky's MVP. Each agent runs\n"
+       "with sampled actions (the table's columns) and greedy actions (the last\n"
+       "column: its most frequent greedy action and that action's share). Prints a\n"
+       "markdown table, then CSV (or writes the CSV to --csv FILE); --json prints\n"
+       "every row with both action histograms instead.\n",
        cmd_table3},
   };
   return table;

@@ -3,21 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/cpa.h"
+
 namespace squawk::env {
 
 Cpa closest_approach(Vec2 p, Vec2 w, double radius) {
+  const cpa::Horizontal h = cpa::horizontal(p.x, p.y, w.x, w.y, radius);
   Cpa c;
-  const double w2 = std::max(w.x * w.x + w.y * w.y, 1e-6);
-  const double vrel = std::sqrt(w2);
-  const double d2 = p.x * p.x + p.y * p.y;
-  c.tcpa = -(p.x * w.x + p.y * w.y) / w2;
-  const double dcpa2 = std::fabs(d2 - c.tcpa * c.tcpa * w2);
-  c.dcpa = std::sqrt(dcpa2);
-  const double r2 = radius * radius;
-  if (dcpa2 < r2) {
-    const double dt = std::sqrt(std::max(0.0, r2 - dcpa2)) / vrel;
-    c.t_in = c.tcpa - dt;
-    c.t_out = c.tcpa + dt;
+  c.tcpa = h.tcpa;
+  c.dcpa = std::sqrt(h.dcpa2);
+  if (h.enters) {
+    c.t_in = h.t_in;
+    c.t_out = h.t_out;
   }
   return c;
 }

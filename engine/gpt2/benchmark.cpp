@@ -17,16 +17,26 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Best time of `fn` over at least two runs and min_seconds.
-template <class F>
-double best_time(double min_seconds, F&& fn) {
+// Best time of `fn` over at least two runs and min_seconds; on_best() runs
+// right after each run that is the best so far (to read figures of that run).
+template <class F, class G>
+double best_time(double min_seconds, F&& fn, G&& on_best) {
   double best = 1e300, start = now();
   for (int i = 0; i < 2 || now() - start < min_seconds; ++i) {
     const double t0 = now();
     fn();
-    best = std::min(best, now() - t0);
+    const double t = now() - t0;
+    if (t < best) {
+      best = t;
+      on_best();
+    }
   }
   return best;
+}
+
+template <class F>
+double best_time(double min_seconds, F&& fn) {
+  return best_time(min_seconds, fn, [] {});
 }
 
 double sgemm_peak(double min_seconds) {
@@ -73,15 +83,17 @@ Result<BenchReport> run_benchmark(const BenchOptions& opt) {
       std::vector<float> hidden, logits;
       const PrefixCache empty;
       Status st;
-      nn::reset_gemm_stats();
-      int reps = 0;
-      const double fwd = best_time(opt.min_seconds, [&] {
-        st = model.forward_last(empty, seqs, hidden);
-        if (st.is_ok()) st = model.lm_logits(hidden, logits);
-        ++reps;
-      });
+      // gflops and matmul_gflops both come from the best repetition.
+      nn::GemmStats gs;
+      const double fwd = best_time(
+          opt.min_seconds,
+          [&] {
+            nn::reset_gemm_stats();
+            st = model.forward_last(empty, seqs, hidden);
+            if (st.is_ok()) st = model.lm_logits(hidden, logits);
+          },
+          [&] { gs = nn::gemm_stats(); });
       SQUAWK_RETURN_IF_ERROR(st);
-      const nn::GemmStats gs = nn::gemm_stats();
       BenchRun r;
       r.threads = th;
       r.B = B;

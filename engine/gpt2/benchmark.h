@@ -31,7 +31,7 @@ struct BenchRun {
   double tokens_per_s = 0.0;
   double gflops = 0.0;            // counted FLOPs / forward time
   double fraction_of_peak = 0.0;  // gflops / sgemm peak at these threads
-  double matmul_gflops = 0.0;     // inside gemm calls only
+  double matmul_gflops = 0.0;     // inside gemm calls only, same (best) repetition as gflops
   double matmul_fraction = 0.0;
   double train_s_per_prompt = 0.0;  // forward_train + backward, per sequence [s]
 };

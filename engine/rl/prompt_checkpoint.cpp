@@ -24,11 +24,17 @@ Status save_prompt_checkpoint(const std::string& path, const PromptCheckpoint& c
                       {"prompt", c.prompt},
                       {"num_params", c.params.size()},
                       {"has_adam", c.has_adam},
-                      {"adam_t", c.adam_t}};
+                      {"adam_t", c.adam_t},
+                      {"num_value_params", c.value_params.size()},
+                      {"value_adam_t", c.value_t}};
+  const size_t nv = c.value_params.size();
+  if (c.value_m.size() != nv || c.value_v.size() != nv)
+    return Status::internal("checkpoint " + path + ": value-baseline Adam state size differs");
   put_progress(h, c.progress);
   const std::vector<float> none;
   return write_checkpoint_file(path, kMagic, h,
-                               {&c.params, c.has_adam ? &c.adam_m : &none, c.has_adam ? &c.adam_v : &none});
+                               {&c.params, c.has_adam ? &c.adam_m : &none, c.has_adam ? &c.adam_v : &none,
+                                &c.value_params, &c.value_m, &c.value_v});
 }
 
 Result<PromptCheckpoint> load_prompt_checkpoint(const std::string& path) {
@@ -50,15 +56,22 @@ Result<PromptCheckpoint> load_prompt_checkpoint(const std::string& path) {
     c.params.resize(h.at("num_params").get<size_t>());
     c.has_adam = h.at("has_adam").get<bool>();
     c.adam_t = h.value("adam_t", 0LL);
+    c.value_params.resize(h.value("num_value_params", size_t{0}));
+    c.value_t = h.value("value_adam_t", 0LL);
     c.progress = get_progress(h);
   } catch (const std::exception& e) {
     return Status::corruption("checkpoint " + path + ": bad JSON header: " + e.what());
   }
   const size_t n = c.params.size();
   if (c.has_adam) c.adam_m.resize(n), c.adam_v.resize(n);
+  const size_t nv = c.value_params.size();
+  c.value_m.resize(nv);
+  c.value_v.resize(nv);
   SQUAWK_RETURN_IF_ERROR(f.read_arrays(
-      path, std::to_string(n) + " parameters" + (c.has_adam ? " + Adam m, v" : ""),
-      {&c.params, &c.adam_m, &c.adam_v}));
+      path,
+      std::to_string(n) + " parameters" + (c.has_adam ? " + Adam m, v" : "") + " + " + std::to_string(nv) +
+          " value-baseline parameters, Adam m, v",
+      {&c.params, &c.adam_m, &c.adam_v, &c.value_params, &c.value_m, &c.value_v}));
   return c;
 }
 

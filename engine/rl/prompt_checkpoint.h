@@ -38,6 +38,10 @@ struct PromptCheckpoint {
   bool has_adam = false;
   long long adam_t = 0;
   std::vector<float> adam_m, adam_v;
+  // Value baseline of the improved estimator (empty when none), so that
+  // --resume continues exactly.
+  std::vector<float> value_params, value_m, value_v;
+  long long value_t = 0;
   TrainProgress progress;
 };
 

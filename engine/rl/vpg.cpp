@@ -51,6 +51,20 @@ Trainer::Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, l
                                            nn::AdamConfig{.lr = static_cast<float>(cfg_.lr)});
 }
 
+Status Trainer::restore_value(const std::vector<float>& params, const std::vector<float>& m,
+                              const std::vector<float>& v, long long t) {
+  if (params.size() != value_params_.size() || m.size() != params.size() || v.size() != params.size())
+    return Status::invalid("checkpoint holds " + std::to_string(params.size()) +
+                           " value-baseline parameters, the scenario's learner has " +
+                           std::to_string(value_params_.size()));
+  if (!value_adam_) return Status::ok();
+  value_params_ = params;
+  value_adam_->m() = m;
+  value_adam_->v() = v;
+  value_adam_->set_t(t);
+  return Status::ok();
+}
+
 double Trainer::coefficients(std::vector<float>& coef) {
   const size_t n = batch_samples_.size();
   coef.assign(n, 0.0f);
@@ -100,7 +114,7 @@ double Trainer::coefficients(std::vector<float>& coef) {
   return value_loss;
 }
 
-UpdateStats Trainer::update() {
+UpdateStats Trainer::update(const UpdateProgress& progress) {
   const int obs = envs_.obs_size();
   const auto m = static_cast<uint64_t>(cfg_.episodes_per_update);
   Rng rng(env::episode_seed(cfg_.seed ^ kTrainPolicySalt, static_cast<uint64_t>(updates_)));
@@ -140,6 +154,11 @@ UpdateStats Trainer::update() {
       batch_lengths_.push_back(static_cast<int>(slot_samples_[s].size()));
       slot_obs_[s].clear();
       slot_samples_[s].clear();
+    }
+    if (progress && !progress(static_cast<long long>(envs_.completed().size()))) {
+      UpdateStats stopped;
+      stopped.interrupted = true;
+      return stopped;
     }
   }
 

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,19 +59,29 @@ struct UpdateStats {
   double entropy = 0.0;      // [-] mean policy entropy over the samples
   double grad_norm = 0.0;    // [-] before clipping
   double value_loss = 0.0;   // [-] value MLP mean squared error (improved, before fitting)
+  bool interrupted = false;  // the progress callback stopped the batch: no step was taken
 };
+
+// Called during an update's collection with the episodes finished so far in
+// its batch; returning false abandons the batch (no step, updates() unchanged,
+// so the next update() redoes the same batch exactly).
+using UpdateProgress = std::function<bool(long long done_in_batch)>;
 
 class Trainer {
  public:
   // `update_index` is the number of updates already taken (resume).
   Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, long long update_index);
-  UpdateStats update();
+  UpdateStats update(const UpdateProgress& progress = {});
   nn::Adam& adam() { return adam_; }
   long long updates() const { return updates_; }
   // The value baseline's parameters and optimiser, for checkpoints (empty /
   // null without a value baseline).
   std::vector<float>& value_params() { return value_params_; }
   nn::Adam* value_adam() { return value_adam_.get(); }
+  // Restores the value baseline and its Adam state from a checkpoint (resume);
+  // error unless the checkpoint holds exactly this learner's baseline size.
+  Status restore_value(const std::vector<float>& params, const std::vector<float>& m,
+                       const std::vector<float>& v, long long t);
 
  private:
   struct Sample {

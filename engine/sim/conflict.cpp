@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/cpa.h"
 #include "core/units.h"
 #include "sim/byte_image.h"
 
@@ -102,12 +103,10 @@ void ConflictDetector::detect(const Traffic& t, const CdSettings& s) {
     for (int j = i + 1; j < n; ++j) {
       if (!flag[j]) continue;
       const Rel g = relative(lat_i, lon_i, chl_i, shl_i, u_i, v_i, lat[j], lon[j], chl[j], shl[j], ue[j], vn[j]);
-      const double dx = g.dx, dy = g.dy, dv2 = g.dv2, dist2 = g.dist2;
-      const double tcpa = -(g.du * dx + g.dv * dy) / dv2;
-      const double dcpa2 = std::fabs(dist2 - tcpa * tcpa * dv2);
-      if (!(dcpa2 < r2)) continue;
-      const double dtin = std::sqrt(std::max(0.0, r2 - dcpa2)) / std::sqrt(dv2);
-      const double tin_hor = tcpa - dtin, tout_hor = tcpa + dtin;
+      const double dx = g.dx, dy = g.dy, dist2 = g.dist2;
+      const cpa::Horizontal c = cpa::horizontal(dx, dy, g.du, g.dv, r);
+      if (!c.enters) continue;
+      const double tcpa = c.tcpa, dcpa2 = c.dcpa2, tin_hor = c.t_in, tout_hor = c.t_out;
       const double dalt = alt_i - alt[j];
       const double dvs = vs_i - vs[j];
       double tin_ver, tout_ver;

@@ -64,6 +64,14 @@ TEST_CASE("pre-tokenisation follows GPT-2's pattern") {
   CHECK(pieces("").empty());
 }
 
+TEST_CASE("letters added in Unicode 15.0 and 15.1 are letters: \\p{L} then 's, as GPT-2's encoder splits") {
+  // U+11F04 KAWI LETTER A (15.0), U+2EBF0 and U+2EE5D (CJK Extension I, 15.1).
+  CHECK(pieces("\xf0\x91\xbc\x84's") == V{"\xf0\x91\xbc\x84", "'s"});
+  CHECK(pieces("\xf0\xae\xaf\xb0\xf0\xae\xb9\x9d's") == V{"\xf0\xae\xaf\xb0\xf0\xae\xb9\x9d", "'s"});
+  // Still unassigned in 15.1 (U+2EE5E): "other", so the apostrophe joins it.
+  CHECK(pieces("\xf0\xae\xb9\x9e's") == V{"\xf0\xae\xb9\x9e'", "s"});
+}
+
 TEST_CASE("merges apply lowest rank first, all occurrences, left to right") {
   // "b c" outranks "a b": abc -> a + bc.
   Tokenizer t = hand_made("#version: 0.2\nb c\na b\n");

@@ -229,6 +229,10 @@ TEST_CASE("gpt2 policy checkpoints round-trip and reject damaged files") {
   c.adam_t = 3;
   c.adam_m.assign(c.params.size(), 0.5f);
   c.adam_v.assign(c.params.size(), 0.25f);
+  c.value_params = {1.0f, -2.0f, 3.0f};
+  c.value_m = {0.1f, 0.2f, 0.3f};
+  c.value_v = {0.4f, 0.5f, 0.6f};
+  c.value_t = 5;
   c.progress.episodes = 96;
   c.progress.updates = 3;
   const std::string path = "/tmp/squawk_test_policy.ckpt";
@@ -237,6 +241,11 @@ TEST_CASE("gpt2 policy checkpoints round-trip and reject damaged files") {
   REQUIRE(back.is_ok());
   CHECK(back->params == c.params);
   CHECK(back->adam_v == c.adam_v);
+  // The value baseline travels with it, so --resume continues exactly.
+  CHECK(back->value_params == c.value_params);
+  CHECK(back->value_m == c.value_m);
+  CHECK(back->value_v == c.value_v);
+  CHECK(back->value_t == 5);
   CHECK(back->progress.episodes == 96);
   CHECK(back->spec.trainable_blocks == 1);
   CHECK(back->vocab_json == c.vocab_json);

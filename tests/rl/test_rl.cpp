@@ -12,6 +12,7 @@
 #include "nn/categorical.h"
 #include "nn/gaussian.h"
 #include "nn/mlp.h"
+#include "rl/baseline_policies.h"
 #include "rl/checkpoint.h"
 #include "rl/evaluator.h"
 #include "rl/mlp_policy.h"
@@ -184,6 +185,30 @@ TEST_CASE("training is reproducible and a resumed run continues exactly") {
   const auto half = train(0, 2, {}, nullptr, &mid);
   CHECK(half != straight);
   CHECK(train(2, 2, half, &mid, nullptr) == straight);
+}
+
+TEST_CASE("the action histogram counts every decision in the nearest of the five bins") {
+  CHECK(rl::action_bin(-1.0) == 0);
+  CHECK(rl::action_bin(-0.3) == 1);
+  CHECK(rl::action_bin(0.1) == 2);
+  CHECK(rl::action_bin(0.5) == 3);
+  CHECK(rl::action_bin(7.0) == 4);
+  env::HorizontalCrConfig ec;
+  auto v = env::VecEnv::make(ec, 8);
+  REQUIRE(v);
+  rl::ConstantPolicy left(v->obs_size(), -0.5f);
+  auto r = rl::evaluate(left, *v, {40, 1, false});
+  REQUIRE(r);
+  CHECK(r->decisions() > 0);
+  CHECK(r->action_counts[1] == r->decisions());
+  CHECK(r->most_frequent_share() == 1.0);
+  CHECK(r->decisions() == std::llround(r->mean_decisions * 40));
+  Rng init(2);
+  auto p = rl::MlpPolicy::make({}, init);
+  REQUIRE(p);
+  auto m = rl::evaluate(**p, *v, {40, 1, false});
+  REQUIRE(m);
+  CHECK(m->most_frequent_share() < 1.0);  // an untrained MLP samples several actions
 }
 
 TEST_CASE("evaluation is deterministic for a seed and rejects a mismatched policy") {
