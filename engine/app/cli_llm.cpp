@@ -10,6 +10,17 @@ namespace squawk::app {
 
 namespace {
 
+// Writes a server's text to stdout whole (NUL bytes included) with control
+// bytes other than newline and tab shown as \xNN, so a reply cannot drive the
+// terminal with escape codes.
+void print_reply_text(std::string_view s) {
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) std::printf("\\x%02x", u);
+    else std::fputc(c, stdout);
+  }
+}
+
 // The configuration from the environment, overridden by the flags.
 Result<llm::LlmConfig> config_from(const Args& args) {
   llm::LlmConfig c;
@@ -24,7 +35,12 @@ Result<llm::LlmConfig> config_from(const Args& args) {
   SQUAWK_ASSIGN_OR_RETURN(c.temperature, args.get_double("--temperature", c.temperature));
   SQUAWK_ASSIGN_OR_RETURN(c.seed, args.get_int("--seed", c.seed));
   SQUAWK_ASSIGN_OR_RETURN(long long ctx, args.get_int("--context", c.context_size));
+  if (ctx < 1 || ctx > 2147483647)
+    return Status::invalid("--context " + std::to_string(ctx) + ": expected 1 to 2147483647 tokens");
   c.context_size = static_cast<int>(ctx);
+  SQUAWK_ASSIGN_OR_RETURN(long long mb, args.get_int("--max-reply-mb", c.max_reply_bytes >> 20));
+  if (mb < 1 || mb > (1 << 20)) return Status::invalid("--max-reply-mb " + std::to_string(mb) + ": expected 1 to 1048576");
+  c.max_reply_bytes = static_cast<size_t>(mb) << 20;
   SQUAWK_ASSIGN_OR_RETURN(c.timeout_s, args.get_double("--timeout", c.timeout_s));
   if (c.url.empty()) return Status::invalid("no LLM server: pass --llm-url URL or set SQUAWK_LLM_URL");
   return c;
@@ -35,7 +51,7 @@ Result<llm::LlmConfig> config_from(const Args& args) {
 int cmd_llm(const ArgV& argv) {
   Args::Spec spec;
   spec.value_flags = {"--llm-url", "--llm-model", "--llm-api", "--system", "--temperature",
-                      "--seed",    "--context",   "--timeout"};
+                      "--seed",    "--context",   "--timeout",   "--max-reply-mb"};
   spec.bool_flags = {"--stream"};
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("llm", args.status().message());
@@ -60,7 +76,7 @@ int cmd_llm(const ArgV& argv) {
   llm::TokenSink sink;
   if (args->has("--stream")) {
     sink = [](std::string_view piece) {
-      std::fwrite(piece.data(), 1, piece.size(), stdout);
+      print_reply_text(piece);
       std::fflush(stdout);
     };
   }
@@ -69,7 +85,7 @@ int cmd_llm(const ArgV& argv) {
     if (sink) std::printf("\n");
     return failure(reply.status());
   }
-  if (!sink) std::printf("%s", reply->content.c_str());
+  if (!sink) print_reply_text(reply->content);
   std::printf("\n");
   std::fprintf(stderr, "[%s: %ld prompt + %ld reply tokens, %d attempt(s), %s]\n",
                (*client)->config().describe().c_str(), reply->prompt_tokens, reply->completion_tokens,

@@ -1,14 +1,16 @@
 #include "app/vm_options.h"
 
 #include <cstdlib>
+#include <filesystem>
 
 #include "core/files.h"
 #include "core/paths.h"
+#include "core/text.h"
 
 namespace squawk::app {
 
 Args::Spec with_vm_flags(Args::Spec spec) {
-  for (const char* f : {"--seed", "--out", "--max-instructions", "--navdata"})
+  for (const char* f : {"--seed", "--out", "--max-instructions", "--navdata", "--allow-read"})
     spec.value_flags.emplace_back(f);
   spec.bool_flags.emplace_back("--unsafe");
   return spec;
@@ -22,11 +24,21 @@ Result<script::VmOptions> vm_options(const Args& args) {
   o.seed = static_cast<uint64_t>(*seed);
   auto maxi = args.get_int("--max-instructions", o.max_instructions);
   if (!maxi) return maxi.status();
+  if (*maxi < 0)
+    return Status::invalid("flag --max-instructions expects a count >= 0 (0 = no limit), got " +
+                           std::to_string(*maxi));
   o.max_instructions = *maxi;
   o.unsafe = args.has("--unsafe");
   if (auto out = args.get("--out")) {
     SQUAWK_RETURN_IF_ERROR(files::make_dirs(*out));
     o.out_dir = paths::absolute(*out);
+  }
+  if (auto dirs = args.get("--allow-read")) {
+    for (const auto& d : text::split(*dirs, ':')) {
+      if (d.empty()) continue;
+      if (!std::filesystem::is_directory(d)) return Status::not_found("--allow-read " + d + ": no such folder");
+      o.read_dirs.push_back(paths::absolute(d));
+    }
   }
   if (auto nav = args.get("--navdata")) {
     o.navdata_dir = *nav;
@@ -34,6 +46,14 @@ Result<script::VmOptions> vm_options(const Args& args) {
     o.navdata_dir = env;
   }
   return o;
+}
+
+Result<std::string> named_scenario(const Args& args, script::VmOptions& o) {
+  if (args.positional().empty() || args.positional()[0].empty()) return std::string();
+  const std::string path = paths::absolute(args.positional()[0]);
+  if (!files::exists(path)) return Status::not_found("no scenario file '" + args.positional()[0] + "'");
+  o.read_dirs.push_back(std::filesystem::path(path).parent_path().string());
+  return path;
 }
 
 }  // namespace squawk::app

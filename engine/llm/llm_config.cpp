@@ -1,5 +1,6 @@
 #include "llm/llm_config.h"
 
+#include <cstdio>
 #include <cstdlib>
 
 #include "core/text.h"
@@ -7,6 +8,9 @@
 namespace squawk::llm {
 
 namespace {
+
+constexpr double kMinTimeout = 0.001;  // [s] curl counts whole milliseconds; 0 means none
+constexpr double kMaxTimeout = 86400;  // [s]
 
 std::string env(const char* name) {
   const char* v = std::getenv(name);
@@ -44,8 +48,15 @@ Status LlmConfig::validate() const {
                            ": no model given (set SQUAWK_LLM_MODEL, --llm-model or model=)");
   if (context_size <= 0 || max_tokens <= 0)
     return Status::invalid(describe() + ": context size and max tokens must be positive");
-  if (timeout_s <= 0 || connect_timeout_s <= 0)
-    return Status::invalid(describe() + ": timeouts must be positive seconds");
+  for (const double t : {timeout_s, connect_timeout_s}) {
+    if (!(t >= kMinTimeout && t <= kMaxTimeout)) {
+      char shown[32];
+      std::snprintf(shown, sizeof shown, "%g", t);
+      return Status::invalid(describe() + ": timeout " + shown + " s is not within [0.001, 86400] seconds");
+    }
+  }
+  if (max_reply_bytes == 0 || max_line_bytes == 0)
+    return Status::invalid(describe() + ": reply size caps must be positive");
   if (retry.max_attempts < 1) return Status::invalid(describe() + ": retries must be at least 1 attempt");
   return Status::ok();
 }

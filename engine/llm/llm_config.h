@@ -30,13 +30,16 @@ struct LlmConfig {
   int max_tokens = 512;        // [tokens] reply cap
   double connect_timeout_s = 5.0;  // [s]
   double timeout_s = 120.0;        // [s] whole request
+  size_t max_reply_bytes = 16u << 20;  // [bytes] a whole (non-streamed) reply body
+  size_t max_line_bytes = 1u << 20;    // [bytes] one line of a streamed reply
   RetryPolicy retry;
   std::string api_key;  // sent as a Bearer token when not empty
 
   // "ollama server http://host:11434 (model qwen2.5:7b)": the prefix of
   // every error message of a client.
   std::string describe() const;
-  // Checks url (http:// or https://), model (not empty) and the numbers.
+  // Checks url (http:// or https://), model (not empty) and the numbers
+  // (timeouts positive and finite, caps positive).
   Status validate() const;
 };
 

@@ -7,28 +7,27 @@ namespace squawk::llm {
 
 namespace {
 
-// Folds one reply object (whole reply or one stream line) into `reply`.
-// Returns true when the object says done.
-Result<bool> absorb(const LlmConfig& config, const nlohmann::json& j, ChatReply& reply,
-                    const TokenSink& on_token) {
+// Folds one reply object `j` (a whole reply or one stream line, parsed from
+// `text`) into `reply`. Returns true when the object says done.
+Result<bool> absorb(const LlmConfig& config, std::string_view text, const nlohmann::json& j,
+                    ChatReply& reply, const TokenSink& on_token) {
   if (!j.is_object())
     return Status::corruption(config.describe() + ": reply is not a JSON object");
   if (j.contains("error"))
-    return Status::unavailable(config.describe() + ": server error: " + server_error_text(j.dump()));
-  if (j.contains("message") && j["message"].is_object()) {
-    const auto& m = j["message"];
-    if (m.contains("content") && m["content"].is_string()) {
-      const auto piece = m["content"].get<std::string>();
-      reply.content += piece;
-      if (on_token && !piece.empty()) on_token(piece);
-    }
+    return Status::unavailable(config.describe() + ": server error: " +
+                               server_error_text(std::string(text)));
+  const auto m = j.find("message");
+  if (m != j.end() && m->is_object()) {
+    SQUAWK_ASSIGN_OR_RETURN(const auto piece, string_field(config, *m, "content", ""));
+    reply.content += piece;
+    if (on_token && !piece.empty()) on_token(piece);
   }
-  if (j.contains("model") && j["model"].is_string()) reply.model = j["model"].get<std::string>();
-  const bool done = j.value("done", false);
+  SQUAWK_ASSIGN_OR_RETURN(reply.model, string_field(config, j, "model", reply.model));
+  SQUAWK_ASSIGN_OR_RETURN(const bool done, bool_field(config, j, "done"));
   if (done) {
-    reply.finish_reason = j.value("done_reason", std::string("stop"));
-    reply.prompt_tokens = j.value("prompt_eval_count", 0L);
-    reply.completion_tokens = j.value("eval_count", 0L);
+    SQUAWK_ASSIGN_OR_RETURN(reply.finish_reason, string_field(config, j, "done_reason", "stop"));
+    SQUAWK_ASSIGN_OR_RETURN(reply.prompt_tokens, count_field(config, j, "prompt_eval_count"));
+    SQUAWK_ASSIGN_OR_RETURN(reply.completion_tokens, count_field(config, j, "eval_count"));
   }
   return done;
 }
@@ -61,7 +60,7 @@ Result<ChatReply> OllamaClient::chat(const ChatRequest& request, const TokenSink
     on_line = [&](std::string_view line) -> Status {
       if (line.empty()) return Status::ok();
       SQUAWK_ASSIGN_OR_RETURN(auto j, parse_reply_json(config_, line));
-      SQUAWK_ASSIGN_OR_RETURN(bool d, absorb(config_, j, reply, on_token));
+      SQUAWK_ASSIGN_OR_RETURN(bool d, absorb(config_, line, j, reply, on_token));
       done = done || d;
       return Status::ok();
     };
@@ -70,7 +69,7 @@ Result<ChatReply> OllamaClient::chat(const ChatRequest& request, const TokenSink
   reply.attempts = ex.attempts;
   if (!stream) {
     SQUAWK_ASSIGN_OR_RETURN(auto j, parse_reply_json(config_, ex.body));
-    SQUAWK_ASSIGN_OR_RETURN(done, absorb(config_, j, reply, on_token));
+    SQUAWK_ASSIGN_OR_RETURN(done, absorb(config_, ex.body, j, reply, on_token));
     if (!j.contains("message"))
       return Status::corruption(config_.describe() + ": reply has no `message`");
   }

@@ -10,14 +10,20 @@ namespace squawk::llm {
 
 namespace {
 
-Status error_object(const LlmConfig& config, const nlohmann::json& j) {
-  return Status::unavailable(config.describe() + ": server error: " + server_error_text(j.dump()));
+// `text` is the reply (or event) the error object came in.
+Status error_object(const LlmConfig& config, std::string_view text) {
+  return Status::unavailable(config.describe() + ": server error: " + server_error_text(std::string(text)));
 }
 
-void read_usage(const nlohmann::json& j, ChatReply& reply) {
-  if (!j.contains("usage") || !j["usage"].is_object()) return;
-  reply.prompt_tokens = j["usage"].value("prompt_tokens", 0L);
-  reply.completion_tokens = j["usage"].value("completion_tokens", 0L);
+// Reads model, usage and finish_reason of a reply or stream chunk `j` (an object).
+Status read_meta(const LlmConfig& config, const nlohmann::json& j, ChatReply& reply) {
+  SQUAWK_ASSIGN_OR_RETURN(reply.model, string_field(config, j, "model", reply.model));
+  const auto usage = j.find("usage");
+  if (usage != j.end() && usage->is_object()) {
+    SQUAWK_ASSIGN_OR_RETURN(reply.prompt_tokens, count_field(config, *usage, "prompt_tokens"));
+    SQUAWK_ASSIGN_OR_RETURN(reply.completion_tokens, count_field(config, *usage, "completion_tokens"));
+  }
+  return Status::ok();
 }
 
 }  // namespace
@@ -59,21 +65,22 @@ Result<ChatReply> OpenAiClient::chat(const ChatRequest& request, const TokenSink
       }
       SQUAWK_ASSIGN_OR_RETURN(auto j, parse_reply_json(config_, value));
       if (field == "error" || error_event || (j.is_object() && j.contains("error")))
-        return error_object(config_, j);
+        return error_object(config_, value);
       if (!j.is_object()) return Status::corruption(config_.describe() + ": event is not an object");
-      if (j.contains("model") && j["model"].is_string()) reply.model = j["model"].get<std::string>();
-      read_usage(j, reply);
-      if (!j.contains("choices") || !j["choices"].is_array() || j["choices"].empty())
+      SQUAWK_RETURN_IF_ERROR(read_meta(config_, j, reply));
+      const auto choices = j.find("choices");
+      if (choices == j.end() || !choices->is_array() || choices->empty())
         return Status::ok();  // e.g. a final usage-only chunk
-      const auto& c = j["choices"][0];
-      if (c.contains("delta") && c["delta"].is_object() && c["delta"].contains("content") &&
-          c["delta"]["content"].is_string()) {
-        const auto piece = c["delta"]["content"].get<std::string>();
+      const auto& c = (*choices)[0];
+      if (!c.is_object()) return Status::corruption(config_.describe() + ": choices[0] is not an object");
+      const auto delta = c.find("delta");
+      if (delta != c.end() && delta->is_object()) {
+        SQUAWK_ASSIGN_OR_RETURN(const auto piece, string_field(config_, *delta, "content", ""));
         reply.content += piece;
         if (!piece.empty()) on_token(piece);
       }
-      if (c.contains("finish_reason") && c["finish_reason"].is_string())
-        reply.finish_reason = c["finish_reason"].get<std::string>();
+      SQUAWK_ASSIGN_OR_RETURN(reply.finish_reason,
+                              string_field(config_, c, "finish_reason", reply.finish_reason));
       return Status::ok();
     };
   }
@@ -86,18 +93,16 @@ Result<ChatReply> OpenAiClient::chat(const ChatRequest& request, const TokenSink
     return reply;
   }
   SQUAWK_ASSIGN_OR_RETURN(auto j, parse_reply_json(config_, ex.body));
-  if (j.is_object() && j.contains("error")) return error_object(config_, j);
+  if (j.is_object() && j.contains("error")) return error_object(config_, ex.body);
   if (!j.is_object() || !j.contains("choices") || !j["choices"].is_array() || j["choices"].empty())
     return Status::corruption(config_.describe() + ": reply has no `choices`");
   const auto& c = j["choices"][0];
-  if (!c.contains("message") || !c["message"].is_object())
+  const auto message = c.is_object() ? c.find("message") : c.end();
+  if (!c.is_object() || message == c.end() || !message->is_object())
     return Status::corruption(config_.describe() + ": choices[0] has no `message`");
-  const auto& content = c["message"]["content"];
-  if (content.is_string()) reply.content = content.get<std::string>();
-  if (c.contains("finish_reason") && c["finish_reason"].is_string())
-    reply.finish_reason = c["finish_reason"].get<std::string>();
-  if (j.contains("model") && j["model"].is_string()) reply.model = j["model"].get<std::string>();
-  read_usage(j, reply);
+  SQUAWK_ASSIGN_OR_RETURN(reply.content, string_field(config_, *message, "content", ""));
+  SQUAWK_ASSIGN_OR_RETURN(reply.finish_reason, string_field(config_, c, "finish_reason", ""));
+  SQUAWK_RETURN_IF_ERROR(read_meta(config_, j, reply));
   return reply;
 }
 
@@ -120,9 +125,13 @@ Result<Embeddings> OpenAiClient::embed(const std::vector<std::string>& texts) {
                                                  "data[" + std::to_string(idx) + "].embedding"));
     by_index[idx] = std::move(v);
   }
-  if (by_index.size() != texts.size() || (!by_index.empty() && by_index.rbegin()->first != texts.size() - 1))
+  if (by_index.size() != texts.size())
     return Status::corruption(config_.describe() + ": asked for " + std::to_string(texts.size()) +
-                              " embeddings, got " + std::to_string(by_index.size()));
+                              " embeddings, got " + std::to_string(by_index.size()) + " distinct indices");
+  if (!by_index.empty() && by_index.rbegin()->first != texts.size() - 1)
+    return Status::corruption(config_.describe() + ": embedding indices run to " +
+                              std::to_string(by_index.rbegin()->first) + ", expected 0 to " +
+                              std::to_string(texts.size() - 1));
   Embeddings out;
   for (auto& [i, v] : by_index) out.push_back(std::move(v));
   return out;

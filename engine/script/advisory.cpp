@@ -1,6 +1,7 @@
 #include "script/advisory.h"
 
 #include "script/lua_util.h"
+#include "script/vm.h"
 
 namespace squawk::script {
 
@@ -48,6 +49,7 @@ Result<std::string> AdvisoryPhraser::phrase(const Advisory& a) {
   }
   std::string out;
   Status st;
+  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
     st = Status::invalid(std::string("advise(): ") + lua_tostring(L, -1));
   } else if (lua_type(L, -1) != LUA_TSTRING || lua_rawlen(L, -1) == 0) {

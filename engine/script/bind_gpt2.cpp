@@ -67,7 +67,8 @@ int bounded_field(lua_State* L, int idx, const char* key, int fallback, int lo) 
 }
 
 int l_load(lua_State* L) {
-  const std::string dir = arg_string(L, 1, "dir");
+  std::string dir = arg_string(L, 1, "dir");
+  if (dir != "tiny") dir = readable(L, dir, "model folder");
   const long long seed = opt_integer(L, 2, "seed", 0);
   if (seed < 0) throw ArgError("seed: expected an integer >= 0");
   auto b = gpt2::load_bundle(dir, static_cast<uint64_t>(seed));
@@ -160,7 +161,7 @@ void bind_gpt2(lua_State* L) {
                               {"decode", guarded<l_decode>},   {"generate", guarded<l_generate>},
                               {"logits", guarded<l_logits>},   {"hidden", guarded<l_hidden>},
                               {nullptr, nullptr}};
-  define_class<gpt2::Bundle>(L, kModelMt, methods);
+  define_class(L, kModelMt, methods);
   push_squawk_subtable(L, "gpt2");
   lua_pushcfunction(L, guarded<l_load>);
   lua_setfield(L, -2, "load");

@@ -85,7 +85,10 @@ nlohmann::json to_json(lua_State* L, int idx, int depth) {
 llm::LlmConfig config_from_table(lua_State* L, int idx) {
   llm::LlmConfig c;
   if (auto env = llm::config_from_env(); env.is_ok()) c = *env;
+  const std::string env_url = c.url;
   c.url = field_string(L, idx, "url", c.url);
+  // The key from the environment goes only to the server the environment names.
+  if (c.url != env_url) c.api_key.clear();
   c.model = field_string(L, idx, "model", c.model);
   lua_getfield(L, idx, "api");
   const bool api_given = !lua_isnil(L, -1);
@@ -98,12 +101,17 @@ llm::LlmConfig config_from_table(lua_State* L, int idx) {
     c.api = llm::infer_api(c.url);
   }
   c.temperature = field_number(L, idx, "temperature", c.temperature);
-  c.seed = static_cast<long long>(field_number(L, idx, "seed", static_cast<double>(c.seed)));
-  c.context_size = static_cast<int>(field_number(L, idx, "context", c.context_size));
-  c.max_tokens = static_cast<int>(field_number(L, idx, "max_tokens", c.max_tokens));
+  constexpr long long kIntMax = 2147483647;
+  c.seed = field_count(L, idx, "seed", c.seed, 0, 9007199254740992LL);
+  c.context_size = static_cast<int>(field_count(L, idx, "context", c.context_size, 1, kIntMax));
+  c.max_tokens = static_cast<int>(field_count(L, idx, "max_tokens", c.max_tokens, 1, kIntMax));
   c.timeout_s = field_number(L, idx, "timeout", c.timeout_s);
   c.connect_timeout_s = field_number(L, idx, "connect_timeout", c.connect_timeout_s);
-  c.retry.max_attempts = static_cast<int>(field_number(L, idx, "retries", c.retry.max_attempts));
+  c.retry.max_attempts = static_cast<int>(field_count(L, idx, "retries", c.retry.max_attempts, 1, 100));
+  c.max_reply_bytes = static_cast<size_t>(
+      field_count(L, idx, "max_reply_bytes", static_cast<long long>(c.max_reply_bytes), 1, 1LL << 40));
+  c.max_line_bytes = static_cast<size_t>(
+      field_count(L, idx, "max_line_bytes", static_cast<long long>(c.max_line_bytes), 1, 1LL << 40));
   c.retry.initial_backoff_s = field_number(L, idx, "backoff", c.retry.initial_backoff_s);
   return c;
 }
@@ -151,6 +159,7 @@ std::vector<llm::Message> read_messages(lua_State* L, int idx) {
 
 int l_chat(lua_State* L) {
   auto* box = arg_object<ClientBox>(L, 1, kClientMt);
+  const Pin pin(L, 1);  // on_token runs Lua code
   llm::ChatRequest req;
   req.messages = read_messages(L, 2);
   const bool has_opts = lua_istable(L, 3);
@@ -269,7 +278,7 @@ void bind_llm(lua_State* L) {
                               {"embed", guarded<l_embed>},
                               {"describe", guarded<l_describe>},
                               {nullptr, nullptr}};
-  define_class<ClientBox>(L, kClientMt, methods);
+  define_class(L, kClientMt, methods);
   push_squawk_subtable(L, "llm");
   lua_pushcfunction(L, guarded<l_client>);
   lua_setfield(L, -2, "client");

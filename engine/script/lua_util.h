@@ -69,41 +69,103 @@ void push_array(lua_State* L, const std::vector<double>& v);
 double field_number(lua_State* L, int idx, const char* key, double fallback);
 std::string field_string(lua_State* L, int idx, const char* key, const std::string& fallback);
 bool field_boolean(lua_State* L, int idx, const char* key, bool fallback);
+// Field `key` as a number within [lo, hi] (NaN and values outside are
+// ArgErrors naming the field and the range), or `fallback` when nil.
+double field_in(lua_State* L, int idx, const char* key, double fallback, double lo, double hi);
+// Field `key` as a whole number within [lo, hi] (NaN, fractions and values
+// outside are ArgErrors naming the field and the range), or `fallback`.
+long long field_count(lua_State* L, int idx, const char* key, long long fallback, long long lo,
+                      long long hi);
+// Argument `idx` likewise (`fallback` when none or nil).
+long long opt_count(lua_State* L, int idx, const char* name, long long fallback, long long lo,
+                    long long hi);
 
-// Full userdata holding a T, with metatable `mt` (created by define_class).
+// Objects: a full userdata holds an ObjectBox<T> (a header, then the T) and
+// has the metatable `mt` created by define_class. Safety contract:
+// - the metatable is locked (__metatable), so scripts cannot reach __gc or
+//   swap metatables;
+// - every access checks the metatable and the header's type tag, so a method
+//   or finalizer given another object's userdata is a clean error;
+// - the finalizer destroys the T once and marks the box dead; a method on a
+//   dead (finalized, then resurrected) object is a clean error;
+// - a method that calls back into Lua holds a Pin on its object, and a
+//   finalizer run meanwhile only marks it dead: the T dies with the last Pin.
+struct ObjectHeader {
+  const void* tag;                  // the class's metatable (lua_topointer)
+  void (*destroy)(ObjectHeader*);   // runs ~T
+  int pins = 0;                     // Pins held by running methods
+  bool alive = true;
+};
+
+template <class T>
+struct ObjectBox {
+  ObjectHeader header;
+  T value;
+  template <class... A>
+  explicit ObjectBox(const void* tag, A&&... a)
+      : header{tag, &destroy_box}, value(std::forward<A>(a)...) {}
+  static void destroy_box(ObjectHeader* h) { reinterpret_cast<ObjectBox*>(h)->~ObjectBox(); }
+};
+
+// The type tag of class `mt` (its metatable's address).
+const void* class_tag(lua_State* L, const char* mt);
+// The header of the object of class `mt` at `idx`, or nullptr when the value
+// is not one (dead objects included: check ->alive).
+ObjectHeader* test_header(lua_State* L, int idx, const char* mt);
+// The live object's header, or ArgError naming the argument and the class.
+ObjectHeader* arg_header(lua_State* L, int idx, const char* name, const char* mt);
+
 template <class T, class... A>
 T* new_object(lua_State* L, const char* mt, A&&... a) {
-  void* p = lua_newuserdatauv(L, sizeof(T), 0);
-  T* t = new (p) T(std::forward<A>(a)...);
+  const void* tag = class_tag(L, mt);
+  void* p = lua_newuserdatauv(L, sizeof(ObjectBox<T>), 0);
+  auto* box = new (p) ObjectBox<T>(tag, std::forward<A>(a)...);
   luaL_setmetatable(L, mt);
-  return t;
+  return &box->value;
 }
 
 template <class T>
-T* arg_object(lua_State* L, int idx, const char* mt) {
-  void* p = luaL_testudata(L, idx, mt);
-  if (!p) throw ArgError(type_error(L, idx, "self", mt));
-  return static_cast<T*>(p);
+T* arg_object(lua_State* L, int idx, const char* mt, const char* name = "self") {
+  return &reinterpret_cast<ObjectBox<T>*>(arg_header(L, idx, name, mt))->value;
 }
 
+// The live object of class `mt` at `idx`, or nullptr when the value is not
+// one; ArgError when it is one that was finalized.
 template <class T>
-int destroy_object(lua_State* L) {
-  if (void* p = lua_touserdata(L, 1)) static_cast<T*>(p)->~T();
-  return 0;
+T* test_object(lua_State* L, int idx, const char* mt, const char* name) {
+  ObjectHeader* h = test_header(L, idx, mt);
+  if (!h) return nullptr;
+  return arg_object<T>(L, idx, mt, name);
 }
 
-// Creates metatable `mt` with the given methods (also as __index) and a __gc
-// that runs ~T. `methods` ends with {nullptr, nullptr}.
-template <class T>
-void define_class(lua_State* L, const char* mt, const luaL_Reg* methods) {
-  luaL_newmetatable(L, mt);
-  lua_newtable(L);
-  luaL_setfuncs(L, methods, 0);
-  lua_setfield(L, -2, "__index");
-  lua_pushcfunction(L, destroy_object<T>);
-  lua_setfield(L, -2, "__gc");
-  lua_pop(L, 1);
-}
+// Keeps the object at `idx` (a live object of any class) from being destroyed
+// while a method runs Lua code; see ObjectHeader.
+class Pin {
+ public:
+  Pin(lua_State* L, int idx);
+  ~Pin();
+  Pin(const Pin&) = delete;
+  Pin& operator=(const Pin&) = delete;
+
+ private:
+  ObjectHeader* header_;
+};
+
+// __gc of every class: upvalue 1 is the metatable name.
+int finalize_object(lua_State* L);
+
+// Creates metatable `mt` with the given methods (also as __index), a locked
+// __metatable and the checked finalizer. `methods` ends with {nullptr, nullptr}.
+void define_class(lua_State* L, const char* mt, const luaL_Reg* methods);
+
+// Returns `path` when the sandbox lets scripts read it (Vm::may_read) or it
+// does not exist (the loader then reports it missing), else ArgError naming
+// `what`, the path and --allow-read.
+std::string readable(lua_State* L, const std::string& path, const char* what);
+
+// Charges `instructions` of work done in C to the running VM's budget
+// (Vm::charge); ArgError when the budget is spent.
+void charge(lua_State* L, long long instructions);
 
 // Gets (creating if needed) the table squawk.<name> and leaves it on the stack.
 void push_squawk_subtable(lua_State* L, const char* name);

@@ -4,8 +4,10 @@
 #include <string>
 
 #include "core/files.h"
+#include "core/paths.h"
 #include "core/units.h"
 #include "script/lua_util.h"
+#include "script/vm.h"
 
 namespace squawk::script {
 
@@ -152,6 +154,8 @@ void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   t.seed = static_cast<uint64_t>(field_number(L, idx, "seed", static_cast<double>(t.seed)));
 }
 
+constexpr int kMaxScenarioNesting = 8;
+
 // Wraps the Lua function at idx as a reward; errors go to *status.
 std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, std::shared_ptr<Vm> vm,
                                                          std::shared_ptr<Status> status) {
@@ -178,6 +182,7 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
     lua_pushboolean(S, f.reached);
     lua_setfield(S, -2, "reached");
     double r = 0.0;
+    const Vm::Call budget(Vm::of(S));  // a fresh instruction budget
     if (lua_pcall(S, 1, 1, handler) != LUA_OK) {
       if (status->is_ok()) status->operator=(Status::invalid(std::string("reward function: ") + lua_tostring(S, -1)));
     } else if (lua_type(S, -1) != LUA_TNUMBER) {
@@ -245,9 +250,21 @@ void read_scenario(lua_State* L, int top, Scenario& s) {
 
 Result<Scenario> load_scenario(const std::string& path, const VmOptions& options) {
   if (!files::exists(path)) return Status::not_found("no scenario file '" + path + "'");
+  // A scenario file may itself load scenarios (squawk.env.new), each in a new
+  // Vm on this thread's C stack: the nesting is capped.
+  static thread_local int depth = 0;
+  if (depth >= kMaxScenarioNesting)
+    return Status::invalid("scenario " + path + ": more than " + std::to_string(kMaxScenarioNesting) +
+                           " scenario files loading each other (does it load itself?)");
+  ++depth;
+  struct Leave {
+    ~Leave() { --depth; }
+  } leave;
   Scenario s;
   s.path = path;
-  s.vm = std::make_shared<Vm>(options);
+  VmOptions own = options;  // the scenario may read files beside it
+  own.read_dirs.push_back(paths::dirname(path));
+  s.vm = std::make_shared<Vm>(std::move(own));
   lua_State* L = s.vm->state();
   const int base = lua_gettop(L);
   lua_pushcfunction(L, traceback_handler);
@@ -256,6 +273,7 @@ Result<Scenario> load_scenario(const std::string& path, const VmOptions& options
     lua_settop(L, base);
     return Status::invalid(msg);
   }
+  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (lua_pcall(L, 0, 1, base + 1) != LUA_OK) {
     std::string msg = lua_tostring(L, -1);
     lua_settop(L, base);

@@ -1,6 +1,7 @@
 #include "script/vm.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
@@ -56,28 +57,66 @@ int text_only_load(lua_State* L) {
   return lua_gettop(L);
 }
 
-// io.open(path, mode) allowing writes only inside the VM's output folder.
+// Raises the sandbox's error unless `path` may be opened with `mode`.
+void check_file_access(lua_State* L, const char* path, const char* mode) {
+  const Vm& vm = Vm::of(L);
+  if (std::strpbrk(mode, "wa+") != nullptr) {
+    const std::string& out = vm.options().out_dir;
+    if (out.empty())
+      luaL_error(L,
+                 "writing '%s' is not allowed: the sandbox writes only inside the output "
+                 "folder given with --out DIR (or run with --unsafe)",
+                 path);
+    if (!paths::is_within(path, out))
+      luaL_error(L, "writing '%s' is not allowed: it is outside the output folder '%s'", path,
+                 out.c_str());
+  } else if (!vm.may_read(path)) {
+    luaL_error(L,
+               "reading '%s' is not allowed: the sandbox reads only the script's folder, squawk's "
+               "scripts/prompts/scenarios/models and folders named with --allow-read DIR (or run "
+               "with --unsafe)",
+               path);
+  }
+}
+
+// io.open(path, mode) through check_file_access; upvalue 1 is the original.
 int checked_open(lua_State* L) {
   const char* path = luaL_checkstring(L, 1);
   const char* mode = luaL_optstring(L, 2, "r");
-  const bool writes = std::strpbrk(mode, "wa+") != nullptr;
-  if (writes) {
-    const Vm& vm = Vm::of(L);
-    const std::string& out = vm.options().out_dir;
-    if (out.empty())
-      return luaL_error(L,
-                        "writing '%s' is not allowed: the sandbox writes only inside the output "
-                        "folder given with --out DIR (or run with --unsafe)",
-                        path);
-    if (!paths::is_within(path, out))
-      return luaL_error(L, "writing '%s' is not allowed: it is outside the output folder '%s'", path,
-                        out.c_str());
-  }
+  check_file_access(L, path, mode);
+  lua_settop(L, 2);
+  const int base = lua_gettop(L);
   lua_pushvalue(L, lua_upvalueindex(1));
   lua_pushvalue(L, 1);
   lua_pushstring(L, mode);
   lua_call(L, 2, LUA_MULTRET);
-  return lua_gettop(L) - 2;
+  return lua_gettop(L) - base;
+}
+
+// io.lines(path, ...) and io.input(path): reads of a named file are checked;
+// upvalue 1 is the original.
+int checked_read(lua_State* L) {
+  if (lua_type(L, 1) == LUA_TSTRING) check_file_access(L, lua_tostring(L, 1), "r");
+  const int n = lua_gettop(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, n, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+// os.getenv(name): only the names in kEnvAllowList; others are nil.
+int checked_getenv(lua_State* L) {
+  const char* name = luaL_checkstring(L, 1);
+  for (const char* allowed : kEnvAllowList) {
+    if (std::strcmp(name, allowed) == 0) {
+      const char* v = std::getenv(name);
+      if (v) lua_pushstring(L, v);
+      else lua_pushnil(L);
+      return 1;
+    }
+  }
+  lua_pushnil(L);
+  return 1;
 }
 
 // package.searchers entry: Lua files under the allowed folders only.
@@ -116,27 +155,94 @@ int lua_file_searcher(lua_State* L) {
 
 }  // namespace
 
+namespace {
+
+std::string limit_message(long long limit) {
+  return "stopped: the script ran " + std::to_string(limit) +
+         " Lua instructions, the limit for one call (runaway loop?); raise it with "
+         "--max-instructions N, or 0 for no limit";
+}
+
+}  // namespace
+
 void count_hook(lua_State* L, lua_Debug* ar) {
   Vm& vm = Vm::of(L);
+  if (lua_gethookcount(L) == 1 && !vm.stopped_) {  // a thread left failing by an earlier call
+    lua_sethook(L, count_hook, LUA_MASKCOUNT, kHookEvery);
+    return;
+  }
   vm.instructions_ += kHookEvery;
   const long long limit = vm.options_.max_instructions;
-  if (limit > 0 && vm.instructions_ >= limit) {
+  if (limit > 0 && (vm.stopped_ || vm.instructions_ >= limit)) {
+    vm.stopped_ = true;
     lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);  // keep failing if a pcall catches it
+    lua_sethook(vm.L_, count_hook, LUA_MASKCOUNT, 1);  // and in the main thread
     lua_getinfo(L, "Sl", ar);
-    luaL_error(L,
-               "%s:%d: stopped: the script ran %I Lua instructions, the limit (runaway loop?); "
-               "raise it with --max-instructions N, or 0 for no limit",
-               ar->short_src, ar->currentline, static_cast<lua_Integer>(limit));
+    luaL_error(L, "%s:%d: %s", ar->short_src, ar->currentline, limit_message(limit).c_str());
   }
 }
 
+// coroutine.create / coroutine.wrap: charge kHookEvery, then the original
+// (upvalue 1); the new thread inherits the count hook.
+int counted_coroutine(lua_State* L) {
+  Vm& vm = Vm::of(L);
+  if (const Status st = vm.charge(kHookEvery); !st.is_ok()) return luaL_error(L, "%s", st.message().c_str());
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+Status Vm::charge(long long instructions) {
+  const long long limit = options_.max_instructions;
+  if (limit <= 0) return Status::ok();
+  instructions_ += instructions;
+  if (stopped_ || instructions_ >= limit) {
+    stopped_ = true;
+    lua_sethook(L_, count_hook, LUA_MASKCOUNT, 1);
+    return Status::error(Code::kInvalidArgument, limit_message(limit));
+  }
+  return Status::ok();
+}
+
+Vm::Call::Call(Vm& vm) : vm_(vm) {
+  if (vm_.call_depth_++ == 0) {
+    vm_.instructions_ = 0;
+    vm_.stopped_ = false;
+    if (vm_.options_.max_instructions > 0)
+      lua_sethook(vm_.L_, count_hook, LUA_MASKCOUNT, kHookEvery);
+  }
+}
+
+Vm::Call::~Call() { --vm_.call_depth_; }
+
 Vm& Vm::of(lua_State* L) { return **static_cast<Vm**>(lua_getextraspace(L)); }
 
+bool Vm::may_read(const std::string& path) const {
+  if (options_.unsafe) return true;
+  for (const auto& dir : readable_)
+    if (paths::is_within(path, dir)) return true;
+  return false;
+}
+
 Vm::Vm(VmOptions options) : options_(std::move(options)), rng_(options_.seed) {
+  for (const char* rel : {"scripts", "prompts", "scenarios", "models"})
+    readable_.push_back(paths::resource(rel));
+  for (const auto* list : {&options_.require_dirs, &options_.read_dirs})
+    readable_.insert(readable_.end(), list->begin(), list->end());
+  for (const auto* dir : {&options_.out_dir, &options_.navdata_dir})
+    if (!dir->empty()) readable_.push_back(*dir);
   L_ = luaL_newstate();
   *static_cast<Vm**>(lua_getextraspace(L_)) = this;
   open_sandbox();
   bind_all(L_);
+  lua_getglobal(L_, "coroutine");
+  for (const char* fn : {"create", "wrap"}) {
+    lua_getfield(L_, -1, fn);
+    lua_pushcclosure(L_, counted_coroutine, 1);
+    lua_setfield(L_, -2, fn);
+  }
+  lua_pop(L_, 1);
   if (options_.max_instructions > 0) lua_sethook(L_, count_hook, LUA_MASKCOUNT, kHookEvery);
 }
 
@@ -171,6 +277,8 @@ void Vm::open_sandbox() {
     lua_getfield(L, g, "os");
     for (const char* fn : {"execute", "exit", "remove", "rename", "tmpname", "setlocale"})
       set_forbidden(L, -1, "os", fn);
+    lua_pushcfunction(L, checked_getenv);
+    lua_setfield(L, -2, "getenv");
     lua_pop(L, 1);
 
     lua_getfield(L, g, "io");
@@ -178,6 +286,11 @@ void Vm::open_sandbox() {
     lua_getfield(L, -1, "open");
     lua_pushcclosure(L, checked_open, 1);
     lua_setfield(L, -2, "open");
+    for (const char* fn : {"lines", "input"}) {
+      lua_getfield(L, -1, fn);
+      lua_pushcclosure(L, checked_read, 1);
+      lua_setfield(L, -2, fn);
+    }
     lua_pop(L, 1);
 
     lua_getfield(L, g, "package");
@@ -217,6 +330,7 @@ void Vm::open_sandbox() {
 }
 
 Status Vm::call_protected(int nargs) {
+  const Call call(*this);
   lua_State* L = L_;
   const int base = lua_gettop(L) - nargs;
   lua_pushcfunction(L, traceback_handler);
@@ -247,6 +361,7 @@ Status Vm::load_table(const std::string& path, const std::string& key) {
   }
   lua_pushcfunction(L, traceback_handler);
   lua_insert(L, -2);
+  const Call call(*this);
   const int rc = lua_pcall(L, 0, 1, -2);
   if (rc != LUA_OK) {
     std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
@@ -275,6 +390,7 @@ Status Vm::run_file(const std::string& path, const std::vector<std::string>& arg
   lua_pushstring(L, paths::dirname(path).c_str());
   lua_seti(L, -2, 1);
   lua_pop(L, 1);
+  readable_.push_back(paths::dirname(path));
 
   lua_createtable(L, static_cast<int>(args.size()), 1);
   lua_pushstring(L, path.c_str());

@@ -3,11 +3,18 @@
 // Sandbox (unless options.unsafe): base functions without dofile/loadfile,
 // `load` restricted to text chunks, string, table, math, utf8, a safe print;
 // `require` finds Lua files only under the shipped scripts/ folder, the running
-// script's folder and options.require_dirs; io.open may write only inside
-// options.out_dir; os.execute, io.popen, package.loadlib and C modules raise an
-// error that says how to allow them (--unsafe).
+// script's folder and options.require_dirs; io.open/io.lines/io.input read only
+// inside readable folders (may_read) and write only inside options.out_dir;
+// os.getenv sees only kEnvAllowList; os.execute, io.popen, package.loadlib and
+// C modules raise an error that says how to allow them (--unsafe).
 // math.random/randomseed draw from the engine Rng seeded with options.seed.
-// An instruction-count hook stops a script after options.max_instructions.
+// Budget: options.max_instructions per call, counted across all coroutines
+// (each coroutine is charged kHookEvery at creation, so short-lived ones are
+// counted too), and C functions that do long work (simulation steps, episodes)
+// charge their work through Vm::charge. A call is one entry from C++ into the
+// VM (run_file, a reward function, a prompt renderer): Vm::Call resets the
+// count at the outermost entry. Once the budget is spent every thread of the
+// VM fails at its next instruction until the call ends.
 // Errors come back as Status with "file:line: message" and a traceback.
 //
 // Only files in engine/script/ include lua.h; other code sees lua_State as an
@@ -27,12 +34,17 @@ struct lua_Debug;
 
 namespace squawk::script {
 
+// The environment variables a sandboxed os.getenv may see (no secrets).
+inline constexpr const char* kEnvAllowList[] = {"SQUAWK_HOME", "SQUAWK_NAVDATA", "SQUAWK_LLM_URL",
+                                                "SQUAWK_LLM_MODEL", "SQUAWK_LLM_API"};
+
 struct VmOptions {
   uint64_t seed = 0;
   bool unsafe = false;
   std::string out_dir;  // the only folder files may be written to; "" = none
-  long long max_instructions = 500'000'000;  // 0 = no limit
+  long long max_instructions = 500'000'000;  // per call; 0 = no limit, < 0 refused
   std::vector<std::string> require_dirs;       // extra folders for `require`
+  std::vector<std::string> read_dirs;          // extra folders scripts may read (--allow-read)
   std::string navdata_dir;                     // BlueSky navdata, "" = none
 };
 
@@ -66,6 +78,28 @@ class Vm {
   // The Vm that owns `L` (stored in the state's extra space).
   static Vm& of(lua_State* L);
 
+  // True when the sandbox lets scripts read `path`: it lies inside the
+  // folder of a script this Vm ran, the home's scripts/ prompts/ scenarios/
+  // models/, options.require_dirs, read_dirs, out_dir or navdata_dir (after
+  // resolving links). Always true with options.unsafe.
+  bool may_read(const std::string& path) const;
+
+  // Charges `instructions` of work done in C to the current call's budget;
+  // an error naming the limit when it is spent (the caller raises it).
+  Status charge(long long instructions);
+
+  // One entry from C++ into the VM: the outermost one starts a fresh budget.
+  class Call {
+   public:
+    explicit Call(Vm& vm);
+    ~Call();
+    Call(const Call&) = delete;
+    Call& operator=(const Call&) = delete;
+
+   private:
+    Vm& vm_;
+  };
+
  private:
   void open_sandbox();
   Status call_protected(int nargs);  // calls the function on top of the stack
@@ -73,9 +107,13 @@ class Vm {
   VmOptions options_;
   Rng rng_;
   CheckCounts checks_;
-  long long instructions_ = 0;
+  long long instructions_ = 0;  // spent in the current call
+  int call_depth_ = 0;
+  std::vector<std::string> readable_;  // folders for may_read
+  bool stopped_ = false;  // the budget of the current call is spent
   lua_State* L_ = nullptr;
   friend void count_hook(lua_State* L, ::lua_Debug* ar);
+  friend int counted_coroutine(lua_State* L);
 };
 
 }  // namespace squawk::script

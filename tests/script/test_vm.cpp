@@ -58,7 +58,12 @@ TEST_CASE("writes only inside the output folder") {
   script::Vm closed({});
   st = closed.run_string("io.open('" + inside + "', 'a')", "t");
   CHECK(st.message().find("--out DIR") != std::string::npos);
-  CHECK(closed.run_string("local f = assert(io.open('" + inside + "', 'r')); f:close()", "t").is_ok());
+  st = closed.run_string("local f = assert(io.open('" + inside + "', 'r')); f:close()", "t");
+  CHECK(st.message().find("--allow-read DIR") != std::string::npos);  // reads are sandboxed too
+  script::VmOptions ro;
+  ro.read_dirs = {d.string()};
+  script::Vm reader(ro);
+  CHECK(reader.run_string("local f = assert(io.open('" + inside + "', 'r')); f:close()", "t").is_ok());
 }
 
 TEST_CASE("require finds modules next to the script; errors carry file:line") {
