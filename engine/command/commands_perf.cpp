@@ -111,7 +111,7 @@ void add_perf_commands(std::vector<CommandDecl>& out) {
                  "LEGACY). Without arguments shows the model in use.",
                  {"PERF OPENAP", "PERF OPENAP /usr/lib/python3/dist-packages/openap/data", "PERF CLASS"}, perf,
                  {}});
-  out.push_back({"WIND", {}, "latlon,float/alt/txt,...", "WIND lat,lon,[alt],dir,spd,[alt,dir,spd,...]",
+  out.push_back({"WIND", {}, "latlon,[float/alt/txt],...", "WIND lat,lon,[alt],dir,spd,[alt,dir,spd,...]",
                  "Adds a wind definition at a position: a direction (where it blows from, deg) and speed (kt) "
                  "for all altitudes, or altitude/direction/speed triples for a profile. Several positions are "
                  "blended by inverse squared distance. WIND lat,lon,DEL clears the wind.",

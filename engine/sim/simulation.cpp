@@ -223,6 +223,12 @@ Status Simulation::set_area(double lat0, double lon0, double lat1, double lon1, 
 
 void Simulation::area_off() { area_.active = false; }
 
+void Simulation::select_speed(int i, double casmach) {
+  if (traf_.sel_spd[i] == casmach) return;
+  traf_.sel_spd[i] = casmach;
+  traf_.tgt_tas_alt[i] = std::nan("");
+}
+
 void Simulation::update_perf() {
   Traffic& t = traf_;
   for (int i = 0; i < t.n(); ++i) {
@@ -276,8 +282,16 @@ void Simulation::start_leg(int i, bool passing) {
     turn();
     t.oldturnspd[i] = t.turnspd[i];
     t.turnspd[i] = kNoTurnSpd;
+    // Speed constraints are "from" speeds: the one of the waypoint passed
+    // holds on the new leg.
+    t.leg_spd[i] = t.next_spd[i];
+    t.next_spd[i] = wp.has_spd() ? wp.spd : -999.0;
+    if (t.vnav_spd[i] && t.leg_spd[i] >= 0.0) select_speed(i, t.leg_spd[i]);
   } else {
     t.turnspd[i] = t.tas[i];
+    double spd = wp.has_spd() ? wp.spd : -999.0;
+    if (is_mach(spd)) spd = mach_to_cas(spd, wp.has_alt() ? wp.alt : t.alt[i]);
+    t.next_spd[i] = spd;
   }
   t.nextaltco[i] = at.toalt == at.toalt ? at.toalt : -999.0;
   compute_vnav(i, toalt, at.xtoalt);
@@ -344,10 +358,6 @@ void Simulation::update_autopilot() {
     geo::QdrDist qd = geo::qdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
     t.dist2wp[i] = units::nm_to_m(qd.dist_nm);
     if (waypoint_reached(t.dist2wp[i], qd.qdr_deg, t.curlegdir[i], t.trk[i], t.gs[i], t.turndist[i])) {
-      if (t.vnav[i] && wp->has_spd()) {
-        t.sel_spd[i] = wp->spd;
-        t.tgt_tas_alt[i] = std::nan("");
-      }
       if (!r.advance()) {
         t.lnav[i] = t.vnav[i] = 0;
         continue;
@@ -358,14 +368,25 @@ void Simulation::update_autopilot() {
       start_leg(i, true);
     }
     t.sel_hdg[i] = qd.qdr_deg;
+    // VNAV speed: reach the active waypoint's constraint there (start when
+    // the distance to it is what the speed change takes at axmax), else
+    // hold the leg's constraint.
+    if (t.vnav_spd[i] && t.vnav[i]) {
+      bool use_next = false;
+      if (t.next_spd[i] > -990.0) {
+        const double v1 = casormach_to_tas(t.next_spd[i], t.alt[i]), v0 = t.tas[i];
+        use_next = t.dist2wp[i] < 0.5 * std::fabs(v1 * v1 - v0 * v0) / std::max(0.001, t.perf[i].axmax);
+      }
+      if (use_next) select_speed(i, t.next_spd[i]);
+      else if (t.leg_spd[i] >= 0.0) select_speed(i, t.leg_spd[i]);
+    }
     // Turning onto the new leg after a switch, VNAV speed mode selects the
     // stored turn speed (BlueSky keeps it as the selected speed afterwards).
     if (t.oldturnspd[i] > 0.0) {
       if (std::fabs(geo::wrap180(t.trk[i] - qd.qdr_deg)) < kOnLegDeg) {
         t.oldturnspd[i] = kPassedTurnSpd;
       } else if (t.vnav_spd[i] && t.vnav[i]) {
-        t.sel_spd[i] = t.oldturnspd[i];
-        t.tgt_tas_alt[i] = std::nan("");
+        select_speed(i, t.oldturnspd[i]);
       }
     }
     if (t.vnav[i]) {
@@ -916,7 +937,7 @@ std::string Simulation::snapshot() const {
                         &t.gseast, &t.vs, &t.sel_hdg, &t.sel_alt, &t.sel_spd, &t.sel_vs, &t.bank, &t.cr_trk,
                         &t.cr_tas, &t.cr_vs, &t.cr_alt, &t.ax, &t.wp_lat, &t.wp_lon, &t.dist2wp,
                         &t.nextaltco, &t.dist2vs, &t.wp_vs, &t.vnav_vs, &t.turndist, &t.curlegdir, &t.turnspd,
-                        &t.oldturnspd})
+                        &t.oldturnspd, &t.leg_spd, &t.next_spd})
     put_vec(out, *v);
   put_vec(out, t.lnav), put_vec(out, t.vnav), put_vec(out, t.cr_active), put_vec(out, t.vnav_spd);
   put_vec(out, t.in_area);

@@ -249,6 +249,8 @@ class Simulation {
   // xtoalt [m] beyond the active waypoint.
   void compute_vnav(int i, double toalt, double xtoalt);
   void update_autopilot();
+  // Sets the selected speed of aircraft i (invalidating its target cache).
+  void select_speed(int i, double casmach);
   void update_asas();
   void update_kinematics();
   // cas and mach from tas at the atmosphere `a` of the aircraft's altitude.

@@ -71,6 +71,8 @@ struct Traffic {
   std::vector<double> oldturnspd;    // turn speed of the waypoint just passed (< 0: none); VNAV
                                      // selects it as CAS while turning onto the new leg
   std::vector<uint8_t> vnav_spd;     // VNAV speed mode (on with VNAV ON, off with SPD)
+  std::vector<double> leg_spd;       // speed constraint of the leg flown (CAS/Mach; < 0: none)
+  std::vector<double> next_spd;      // speed constraint at the active waypoint (< 0: none)
   std::vector<uint8_t> in_area;      // inside the deletion area at its last check
 
   // Conflict resolution output (mvp.h), followed while cr_active is set

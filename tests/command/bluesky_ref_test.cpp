@@ -65,6 +65,7 @@ TEST_CASE("BlueSky reference: single-behaviour scenarios with OpenAP within 100 
       REQUIRE(command::run_scenario(e.path().string(), opts, stack).is_ok());
       const sim::Traffic& tr = stack.sim().traffic();
       const Limits lim = limits_at(t);
+      CHECK(tr.n() == static_cast<int>(st["aircraft"].size()));  // same aircraft alive (AREA, DEL)
       for (const auto& a : st["aircraft"]) {
         const std::string id = a["id"].get<std::string>();
         CAPTURE(e.path().filename().string());
