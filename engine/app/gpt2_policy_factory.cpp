@@ -76,7 +76,7 @@ Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::Ho
   meta.model_seed = opts.model_seed;
   meta.spec = opts.spec;
   meta.spec.obs_size = env::observation_size(env.num_intruders);
-  meta.prompt = prompt;
+  meta.prompt = paths::portable(prompt);  // the checkpoint follows the home it is used in
   const bool tiny = opts.model == "tiny";
   if (meta.spec.trainable_blocks < 0) meta.spec.trainable_blocks = tiny ? kTinyTrainableBlocks : 1;
   gpt2::Tokenizer tok = gpt2::Tokenizer::bytes_only();
@@ -113,9 +113,10 @@ Result<Gpt2Policy> gpt2_policy_from_checkpoint(const rl::PromptCheckpoint& ckpt,
   meta.params.clear();
   meta.adam_m.clear();
   meta.adam_v.clear();
-  if (!prompt.empty()) meta.prompt = prompt;
-  if (meta.prompt.empty() || !files::exists(meta.prompt)) meta.prompt = prompt_path("");
-  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<script::PromptRenderer> r, script::PromptRenderer::load(meta.prompt, vm));
+  if (!prompt.empty()) meta.prompt = paths::portable(prompt);
+  if (meta.prompt.empty() || !files::exists(paths::resolve(meta.prompt))) meta.prompt = paths::portable(prompt_path(""));
+  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<script::PromptRenderer> r,
+                          script::PromptRenderer::load(paths::resolve(meta.prompt), vm));
   SQUAWK_ASSIGN_OR_RETURN(gpt2::Tokenizer tok, gpt2::Tokenizer::from_hf(meta.vocab_json, meta.merges_txt));
   SQUAWK_ASSIGN_OR_RETURN(Gpt2Policy g, assemble(std::move(meta), std::move(tok), r));
   std::span<float> tail = g.policy->params();

@@ -54,6 +54,16 @@ out=$("$sq" scn $d/dump_fail.scn --dump-json 2>/dev/null); err=$("$sq" scn $d/du
 if grep -q '"simt"' <<<"$out" && ! grep -q KL9 <<<"$out" && grep -q "ALT KL9 FL100: argument 1: no aircraft 'KL9'" <<<"$err"; then
   echo "ok   10 dump-json errors on stderr"; pass=$((pass + 1))
 else echo "FAIL 10 dump-json errors on stderr: out=$out err=$err"; fails=$((fails + 1)); fi
+# 17: an install layout (bin/ + share/squawk/) and a moved binary use their own home.
+tmp=$(mktemp -d)
+mkdir -p "$tmp/inst/bin" "$tmp/inst/share/squawk" "$tmp/copy"
+cp "$sq" "$tmp/inst/bin/squawk"
+cp -r scripts prompts scenarios models "$tmp/inst/share/squawk/"
+cp "$d/home.lua" "$tmp/inst/share/squawk/scripts/home_check.lua"
+expect "17 install layout"   0 "home=$tmp/inst/share/squawk" -- "$tmp/inst/bin/squawk" run "$tmp/inst/share/squawk/scripts/home_check.lua"
+cp "$sq" "$tmp/copy/squawk"
+expect "17 SQUAWK_HOME"      0 "^ok$" -- env SQUAWK_HOME="$tmp/inst/share/squawk" "$tmp/copy/squawk" run "$tmp/inst/share/squawk/scripts/home_check.lua"
+rm -rf "$tmp"
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
