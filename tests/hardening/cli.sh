@@ -38,6 +38,9 @@ expect "6 run_for 1e12"      1 "sim_step.lua:4: stopped: the script ran" -- "$sq
 expect "6 run_until 1e12"    1 "sim_step.lua:4: stopped: the script ran" -- "$sq" run $d/sim_step.lua run_until 1e12 "${lim[@]}"
 expect "6 evaluate 1e12"     1 "field 'episodes': expected a whole number in \[1, 1000000\]" -- "$sq" run $d/evaluate.lua 1e12
 expect "18 evaluate nan"     1 "field 'episodes': .* got NaN" -- "$sq" run $d/evaluate.lua 0/0
+expect "6 --max-seconds"      1 "spin.lua:2: stopped: the call ran longer than 1.0+ s of wall-clock time" -- "$sq" run $d/spin.lua --max-seconds 1 --max-instructions 0
+expect "6 pattern in C"      124 "ran 2 s past --max-seconds 1 inside one C function" -- "$sq" run $d/pattern.lua --max-seconds 1
+expect "6 --max-seconds -1"  2 "--max-seconds expects seconds >= 0" -- "$sq" run $d/spin.lua --max-seconds -1
 expect "7 per call"          0 "^steps 3000$" -- "$sq" run $d/reward_per_call.lua $d/reward_scenario.lua "${lim[@]}"
 expect "7 refuse -1"         2 "--max-instructions expects a count >= 0" -- "$sq" run $d/coroutines.lua --max-instructions -1
 expect "4 env.new self"      1 "more than 8 scenario files loading each other" -- "$sq" run $d/nested_env.lua
