@@ -15,12 +15,14 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 #include "core/geo.h"
 #include "core/rng.h"
 #include "core/units.h"
 #include "sim/conflict.h"
+#include "sim/openap_data.h"
 #include "sim/simulation.h"
 
 using namespace squawk;
@@ -58,8 +60,10 @@ Rate measure(F&& f, double budget) {
 
 // n aircraft in a 3 x 3 deg box, flight levels 100-300 every 1000 ft, 20 %
 // climbing or descending.
-Simulation make_sim(int n, uint64_t seed) {
+// Performance model: `openap` (null: the class model).
+Simulation make_sim(int n, uint64_t seed, std::shared_ptr<const OpenapData> openap = nullptr) {
   Simulation sim(seed);
+  sim.set_openap(std::move(openap));
   Rng rng(seed);
   for (int i = 0; i < n; ++i) {
     const double alt = units::fl_to_m(100.0 + 10.0 * static_cast<double>(rng.uniform_int(0, 20)));
@@ -120,11 +124,31 @@ int main(int argc, char** argv) {
     }
   }
 
+  // The same traffic with OpenAP performance (SQUAWK_OPENAP) beside the class model.
+  if (const auto oap = default_openap()) {
+    std::printf("\nperformance model (CD every 1 s): class vs OpenAP (%s)\n", oap->dir().c_str());
+    std::printf("%8s  %-10s %14s %16s %9s\n", "aircraft", "model", "steps/s", "aircraft-steps/s", "ratio");
+    for (int n : {100, 1000, 5000}) {
+      double base = 0.0;
+      for (const bool use : {false, true}) {
+        Simulation sim = make_sim(n, 42, use ? oap : nullptr);
+        sim.set_cd(true);
+        const Rate r = measure([&] { sim.step(); }, budget);
+        if (!use) base = r.per_cpu_s;
+        std::printf("%8d  %-10s %14.1f %16.3e %9.2f\n", n, use ? "OpenAP" : "class", r.per_cpu_s, r.per_cpu_s * n,
+                    base / r.per_cpu_s);
+      }
+    }
+  } else {
+    std::printf("\n(set SQUAWK_OPENAP=DIR to time the OpenAP performance model beside the class model)\n");
+  }
+
   // The RL environment's shape: BlueSky-Gym's scene (ownship at altitude 0,
   // five CRECONFS intruders, ground cap, dt 5 s, CD off), a new HDG every
   // 10 steps as the env's actions.
   {
     Simulation sim(7);
+    sim.set_openap(nullptr);  // the env shape uses the class model with the ground cap
     (void)sim.set_dt(5.0);
     PerformanceOptions po;
     po.ground_cap = true;

@@ -1,7 +1,8 @@
 -- Observation prompt for the GPT-2 deconfliction policy (paper §III.C.3).
 --
 -- The engine calls render(obs) once per decision. `obs` holds the eight named
--- fields of the HorizontalCR observation, each an array of numbers:
+-- fields of the HorizontalCR observation, each an array of numbers (the same
+-- table squawk.env's env:observation() returns):
 --   obs.intruder_distance    [5]  distance to each intruder / 150 km
 --   obs.cos_difference_pos   [5]  cos of (heading - bearing to intruder)
 --   obs.sin_difference_pos   [5]  sin of the same angle
@@ -11,8 +12,9 @@
 --   obs.cos_drift            [1]  cos of (heading - bearing to waypoint)
 --   obs.sin_drift            [1]  sin of the same angle
 -- It returns the prompt text. The text up to the first observation value is
--- identical for every decision: `prefix` below must be exactly that part, so
--- the policy computes it once and reuses it (GPT-2 KV cache).
+-- identical for every decision: `prefix` (M.intro followed by the first
+-- line's label, built below from the one copy of each) is exactly that part,
+-- so the policy computes it once and reuses it (GPT-2 KV cache).
 --
 -- Edit freely: number_format and separator change how numbers read; the
 -- lines are the paper's. No recompilation is needed.
@@ -22,9 +24,9 @@ local M = {}
 M.number_format = "%.2f"  -- string.format pattern for every value
 M.separator = ", "        -- between the values of one field
 
-M.prefix = "You are a decision support system that aids in avoiding collisions between the "
+M.intro = "You are a decision support system that aids in avoiding collisions between the "
   .. "ownship and intruders as the ownship navigates to reach a waypoint. Here is the "
-  .. "observation from the environment:\n1. The intruder distances are ["
+  .. "observation from the environment:\n"
 
 local lines = {
   { "intruder_distance", "1. The intruder distances are [" },
@@ -36,6 +38,8 @@ local lines = {
   { "cos_drift", "7. The cosines of the drift angles are [" },
   { "sin_drift", "8. The sines of the drift angles are [" },
 }
+
+M.prefix = M.intro .. lines[1][2]
 
 M.instruction = "Using the above information, please provide a decision on whether to turn left "
   .. "or right or remain unchanged to avoid a collision with the intruder aircraft.\n"
@@ -58,8 +62,8 @@ function M.render(obs)
   for i, line in ipairs(lines) do
     local field = obs[line[1]]
     if field == nil then error("observation has no field '" .. line[1] .. "'", 2) end
-    local head = (i == 1) and M.prefix or line[2]
-    parts[#parts + 1] = head .. values(field) .. "].\n"
+    local head = (i == 1) and M.intro or ""
+    parts[#parts + 1] = head .. line[2] .. values(field) .. "].\n"
   end
   parts[#parts + 1] = M.instruction
   return table.concat(parts)

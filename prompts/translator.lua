@@ -67,6 +67,12 @@ M.feedback = "\n\nYour previous answer was: ${previous}\n"
 M.state = "Aircraft in the simulation:\n${state}\n\n"
 
 -- The question put to the user when the verifier says NO.
+-- Appended to the parameter and single prompts: the offline grammar's own
+-- reading of the request, as context (it may be wrong or a question).
+M.grammar = "\n\nAn offline grammar read this request as: ${reading}\n"
+  .. "When the server constrains your reply to JSON, put each command as {\"name\", \"args\"} in "
+  .. "\"commands\" and leave \"ask\" empty, or ask a question in \"ask\".\n"
+
 M.ask = "I need more information to issue ${cmd} (usage: ${usage}). "
   .. "Which values should I use?"
 

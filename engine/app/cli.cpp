@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "core/text.h"
+#include "sim/openap_data.h"
 
 namespace squawk::app {
 
@@ -148,6 +149,21 @@ int run_cli(int argc, char** argv) {
     return kExitUsage;
   }
   std::vector<std::string> rest(args.begin() + 1, args.end());
+  // --openap DIR, accepted by every subcommand: OpenAP performance data for
+  // every simulation of this run (as SQUAWK_OPENAP=DIR).
+  for (size_t k = 0; k < rest.size(); ++k) {
+    if (rest[k] != "--openap") continue;
+    if (k + 1 >= rest.size()) {
+      std::fprintf(stderr, "squawk %s: --openap expects the OpenAP data folder\n", s->name);
+      return kExitUsage;
+    }
+    if (Status st = sim::set_default_openap(rest[k + 1]); !st.is_ok()) {
+      std::fprintf(stderr, "squawk %s: --openap: %s\n", s->name, st.message().c_str());
+      return kExitUsage;
+    }
+    rest.erase(rest.begin() + static_cast<long>(k), rest.begin() + static_cast<long>(k) + 2);
+    break;
+  }
   if (!rest.empty() && (rest[0] == "--help" || rest[0] == "-h")) {
     std::fputs(s->help, stdout);
     return kExitOk;

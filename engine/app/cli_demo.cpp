@@ -18,7 +18,8 @@
 #include <sstream>
 
 #include "app/cli.h"
-#include "app/gpt2_policy_factory.h"
+#include "app/rl_eval.h"
+#include "app/team_loop.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
 #include "command/stack.h"
@@ -29,19 +30,17 @@
 #include "core/units.h"
 #include "env/horizontal_cr.h"
 #include "env/recorder.h"
-#include "rl/checkpoint.h"
-#include "rl/prompt_checkpoint.h"
 #include "script/advisory.h"
+#include "script/policy_factory.h"
 #include "script/scenario.h"
-#include "translate/offline_translator.h"
-#include "translate/stack_world.h"
+#include "script/translate_graph.h"
 #include "viz/scene.h"
 
 namespace squawk::app {
 
 namespace {
 
-constexpr const char* kOwn = "KL001";
+constexpr const char* kOwn = kTeamOwnship;
 
 class Demo : public env::EpisodeObserver {
  public:
@@ -105,26 +104,11 @@ class Demo : public env::EpisodeObserver {
     f.t = stack_.sim().simt();
     for (int i = 0; i < t.n(); ++i) {
       const size_t k = static_cast<size_t>(i);
-      f.aircraft.push_back({t.id[k], t.lat[k], t.lon[k], t.hdg[k]});
+      f.aircraft.push_back({t.id[k], t.lat[k], t.lon[k], t.hdg[k], {}, false});
     }
     f.note = note_;
     note_.clear();
     scene.frames.push_back(std::move(f));
-  }
-
-  // The most urgent conflict of the ownship, for the advisory's traffic info.
-  std::optional<script::Advisory::Traffic> traffic() const {
-    const auto& t = stack_.sim().traffic();
-    const int own = stack_.sim().index_of(kOwn);
-    const sim::ConflictPair* best = nullptr;
-    for (const auto& c : stack_.sim().conflicts())
-      if (c.own == own && (!best || c.tlos < best->tlos)) best = &c;
-    if (!best) return std::nullopt;
-    const double rel = geo::wrap360(best->qdr - t.hdg[static_cast<size_t>(own)]);
-    int clock = static_cast<int>(std::lround(rel / 30.0)) % 12;
-    if (clock == 0) clock = 12;
-    return script::Advisory::Traffic{t.id[static_cast<size_t>(best->intruder)], clock,
-                                     best->dist / units::kNm};
   }
 
   command::Stack& stack_;
@@ -169,67 +153,33 @@ int cmd_demo(const ArgV& argv) {
   const auto& cfg = e.config();
 
   // The agent: the shipped trained MLP, or the fine-tuned GPT-2 prompt policy.
-  std::unique_ptr<rl::Policy> policy;
-  const char* hint =
-      "the demo needs a trained policy (train one with `squawk train scenarios/horizontal_cr.lua "
-      "--policy mlp|gpt2 --out DIR`, then pass --checkpoint DIR/policy.ckpt)";
-  if (policy_kind == "mlp") {
-    auto ckpt = rl::load_checkpoint(args->get_or("--checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt")));
-    if (!ckpt) return failure(ckpt.status().with_context(hint));
-    auto p = rl::policy_from_checkpoint(*ckpt);
-    if (!p) return failure(p.status());
-    policy = std::move(*p);
-  } else {
-    auto ckpt = rl::load_prompt_checkpoint(args->get_or("--checkpoint", paths::resource(kShippedGpt2Checkpoint)));
-    if (!ckpt) return failure(ckpt.status().with_context(hint));
-    auto g = gpt2_policy_from_checkpoint(*ckpt, "", *vmo);
-    if (!g) return failure(g.status());
-    policy = std::move(g->policy);
-  }
+  auto agent = load_team_policy(policy_kind, *sc, args->get_or("--checkpoint", ""), *vmo);
+  if (!agent) return failure(agent.status());
+  if (std::string w = trained_elsewhere(*agent, *sc, *vmo); !w.empty())
+    std::fprintf(stderr, "squawk demo: warning: %s\n", w.c_str());
+  std::unique_ptr<rl::Policy> policy = std::move(agent->policy);
   auto phraser = script::AdvisoryPhraser::load(args->get_or("--advisory", paths::resource("prompts/advisory.lua")), *vmo);
   if (!phraser) return failure(phraser.status());
 
   // The first episode of the seed's sequence in which the agent has to act.
   Rng rng(vmo->seed);
-  env::EpisodeSetup setup;
-  bool agent_needed = false;
-  for (int tries = 0; tries < 1000 && !agent_needed; ++tries) {
-    setup = e.draw_setup(rng);
-    auto r = e.reset_to(setup);
-    if (!r) return failure(r.status());
-    agent_needed = *r;
-  }
-  if (!agent_needed) return failure(Status::internal("no episode in 1000 needed the agent"));
+  auto setup = first_agent_episode(e, rng);
+  if (!setup) return failure(setup.status());
 
   // The simulator: same time step, BlueSky's ground-phase speed cap, CD on.
   command::Stack stack(vmo->seed);
-  if (cfg.limits.speed_cap > 0) {
-    sim::PerformanceOptions perf;
-    perf.ground_cap = true;
-    perf.ground_vmax = cfg.limits.speed_cap;
-    perf.ground_axmax = cfg.limits.accel;
-    if (Status st = stack.sim().set_performance_options(perf); !st.is_ok()) return failure(st);
-  }
+  if (Status st = apply_env_limits(stack, cfg); !st.is_ok()) return failure(st);
   std::ostringstream recording;
   env::JsonlRecorder recorder(recording);
   Demo demo(stack, quiet, args->has("--record") ? &recorder : nullptr);
   if (!quiet)
-    std::printf("squawk demo: %s agent on %s (paper rules, look-ahead %.0f s), seed %llu\n",
-                policy_kind.c_str(), sc->path.c_str(), cfg.lookahead,
+    std::printf("squawk demo: %s agent on %s (%s), seed %llu\n", policy_kind.c_str(), sc->path.c_str(),
+                cfg.rules == env::Rules::kGym
+                    ? "gym rules: the agent decides at every step"
+                    : fmt("paper rules, look-ahead %.0f s", cfg.lookahead).c_str(),
                 static_cast<unsigned long long>(vmo->seed));
-  bool ok = demo.exec("sim", fmt("DT %g", cfg.dt)).is_ok() &&
-            demo.exec("sim", fmt("ZONER %g", cfg.zone_radius / units::kNm)).is_ok() &&
-            demo.exec("sim", fmt("DTLOOK %g", cfg.lookahead)).is_ok() &&
-            demo.exec("sim", "ASAS ON").is_ok() &&
-            demo.exec("sim", std::string("CRE ") + kOwn + " A320 " +
-                                 fmt("%.8f %.8f 0 0 %.6f", cfg.start_lat, cfg.start_lon,
-                                     units::ms_to_kt(cfg.own_speed))).is_ok();
-  for (size_t i = 0; ok && i < setup.intruders.size(); ++i) {
-    const auto& in = setup.intruders[i];
-    ok = demo.exec("sim", "CRE " + std::to_string(i) + " A320 " +
-                              fmt("%.8f %.8f %.4f", in.lat, in.lon, geo::wrap360(in.hdg)) +
-                              fmt(" 0 %.6f", units::ms_to_kt(in.tas))).is_ok();
-  }
+  bool ok = true;
+  for (const auto& line : team_setup_commands(cfg, *setup)) ok = ok && demo.exec("sim", line).is_ok();
   if (!ok) return failure(Status::internal("the simulator refused the scenario set-up"));
   demo.scene.title = "squawk demo, seed " + std::to_string(vmo->seed);
   demo.scene.wpt_lat = e.waypoint_lat();
@@ -242,36 +192,29 @@ int cmd_demo(const ArgV& argv) {
   demo.on_reset(e);
   e.set_observer(&demo);
 
-  translate::StackWorld world(stack);
-  std::vector<float> obs(static_cast<size_t>(e.observation_size()));
+  script::Vm translator_vm(*vmo);  // runs the translation graph (scripts/translate/graph.lua)
   int decisions = 0, untranslated = 0;
   while (!e.done() && !demo.failed_) {
-    e.observe_flat(obs);
-    rl::ActionSample a;
-    const int slot = 0;
-    policy->act(obs, 1, {&slot, 1}, rng, /*greedy=*/true, {&a, 1});
     const double hdg_now = e.fleet().hdg(0);
-    int target = static_cast<int>(std::lround(geo::wrap360(hdg_now + a.value * cfg.heading_per_action)));
-    if (target <= 0) target += 360;
-    script::Advisory adv{kOwn, a.value, target, hdg_now,
-                         a.value > 0 ? "right" : (a.value < 0 ? "left" : "none"), demo.traffic()};
+    const script::Advisory adv = agent_advisory(*policy, e, stack.sim(), rng);
     auto english = phraser->phrase(adv);
     if (!english) return failure(english.status());
     ++decisions;
-    demo.log("agent", fmt("action %+.2f: heading %03.0f -> %03.0f", a.value, hdg_now, target));
+    demo.log("agent", fmt("action %+.2f: heading %03.0f -> %03.0f", adv.action, hdg_now, adv.heading));
     demo.log("advisory", "\"" + *english + "\"");
     demo.note_ = *english;
-    const translate::Translation tr = translate::translate_offline(*english, &world);
-    if (tr.asked()) {
+    auto translated = script::run_translation_graph(translator_vm, *english, {"offline", "", &stack});
+    if (!translated) return failure(translated.status());
+    const translate::Translation& tr = *translated;
+    if (!tr.issued()) {
       ++untranslated;
-      demo.log("translator", "asked: " + tr.ask + " (no command; heading kept)");
+      demo.log("translator", tr.text() + " (no command; heading kept)");
     } else {
       demo.log("translator", tr.text());
       for (const auto& cmd : tr.commands)
         if (!demo.exec("sim", cmd).is_ok()) ++untranslated;
     }
-    const double hdg_sel = stack.sim().traffic().sel_hdg[static_cast<size_t>(stack.sim().index_of(kOwn))];
-    e.step(geo::wrap180(hdg_sel - hdg_now) / cfg.heading_per_action);
+    e.step(env_action(e, stack.sim()));
   }
   if (demo.failed_) return failure(Status::internal("the simulator failed during the episode"));
 
@@ -290,8 +233,9 @@ int cmd_demo(const ArgV& argv) {
   std::printf("  losses of separation      %zu\n", demo.los_.size());
   std::printf("  extra track length        %.1f km (flown %.1f km, direct %.1f km)\n",
               (demo.flown_m_ - direct) / 1000, demo.flown_m_ / 1000, direct / 1000);
-  std::printf("  waypoint reached          %s after %.0f s of flight; episode %s\n", st.reached ? "yes" : "no",
-              stack.sim().simt(), st.success ? "successful" : "failed");
+  std::printf("  waypoint reached          %s after %.0f s of flight; episode %s (%s)\n",
+              st.reached ? "yes" : "no", stack.sim().simt(), st.success ? "successful" : "failed",
+              success_definition(*sc).c_str());
   std::printf("  environment vs simulator  %.3f m largest position difference\n", demo.worst_m_);
   std::printf("  wall time                 %.2f s\n", wall);
 

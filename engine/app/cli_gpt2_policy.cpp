@@ -190,41 +190,26 @@ int cmd_train_gpt2(const ArgV& argv) {
   return kExitOk;
 }
 
-int cmd_eval_gpt2(const ArgV& argv) {
-  auto args = Args::parse(argv, with_policy_flags({"--checkpoint", "--episodes", "--envs", "--record"},
-                                                  {"--json", "--greedy"}));
-  if (!args) return usage_error("eval", args.status().message());
-  auto popts = gpt2_options(*args);
-  if (!popts) return usage_error("eval", popts.status().message());
-  if (args->has("--checkpoint") && args->has("--model"))
-    return usage_error("eval", "--checkpoint and --model exclude each other (a checkpoint names its model)");
-  auto sc = scenario_of(*args);
-  if (!sc) return failure(sc.status());
-  auto req = eval_request(*args, *sc);
-  if (!req) return usage_error("eval", req.status().message());
-  auto vo = vm_options(*args);
-  if (!vo) return usage_error("eval", vo.status().message());
-  vo->out_dir.clear();
+Result<Gpt2PolicyOptions> gpt2_options(const Args& args) {
+  Gpt2PolicyOptions o;
+  o.model = args.get_or("--model", "tiny");
+  o.prompt = args.get_or("--prompt", "");
+  o.spec.head = args.get_or("--head", "action");
+  SQUAWK_ASSIGN_OR_RETURN(long long seed, args.get_int("--model-seed", 0));
+  SQUAWK_ASSIGN_OR_RETURN(long long blocks, args.get_int("--blocks", -1));
+  SQUAWK_ASSIGN_OR_RETURN(long long chunk, args.get_int("--chunk", o.spec.chunk_rows));
+  o.model_seed = static_cast<uint64_t>(seed);
+  o.spec.trainable_blocks = static_cast<int>(blocks);
+  o.spec.chunk_rows = static_cast<int>(chunk);
+  return o;
+}
 
-  Result<Gpt2Policy> g = Status::internal("unset");
-  std::string source;
-  if (args->has("--model")) {
-    g = make_gpt2_policy(*popts, sc->train_env, *vo);
-    source = *args->get("--model") + ", untrained head";
-  } else {
-    const std::string path = args->get_or("--checkpoint", paths::resource(kShippedGpt2Checkpoint));
-    auto c = rl::load_prompt_checkpoint(path);
-    if (!c) return failure(c.status());
-    g = gpt2_policy_from_checkpoint(*c, popts->prompt, *vo);
-    source = path;
+bool wants_gpt2(const ArgV& argv) {
+  for (size_t i = 0; i < argv.size(); ++i) {
+    if (argv[i] == "--policy=gpt2") return true;
+    if (argv[i] == "--policy" && i + 1 < argv.size() && argv[i + 1] == "gpt2") return true;
   }
-  if (!g) return failure(g.status());
-  rl::PromptPolicy& policy = *g->policy;
-  if (args->has("--chunk")) policy.set_chunk_rows(popts->spec.chunk_rows);
-  auto envs = env::VecEnv::make(sc->eval_env, req->envs);
-  if (!envs) return failure(envs.status());
-  return run_eval(policy, *envs, *sc, *req,
-                  "gpt2 (" + source + "; " + g->meta.source + ", head " + g->meta.spec.head + ")");
+  return false;
 }
 
 }  // namespace squawk::app

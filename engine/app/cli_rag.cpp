@@ -10,18 +10,25 @@
 #include "rag/corpus.h"
 #include "rag/notes.h"
 #include "rag/recall.h"
+#include "script/translate_graph.h"
 
 namespace squawk::app {
 
 namespace {
 
+// The registry documentation with the grammar's words (the documents the
+// translation graph retrieves from), plus a notes file when given.
 Result<rag::Bm25Index> build_index(const Args& args) {
-  std::vector<rag::Document> notes;
+  std::vector<rag::Document> extra;
   if (!args.has("--no-notes")) {
-    const std::string path = args.get_or("--notes", paths::resource(rag::kDefaultNotes));
-    SQUAWK_ASSIGN_OR_RETURN(notes, rag::read_notes(path));
+    script::Vm vm{script::VmOptions{}};
+    SQUAWK_ASSIGN_OR_RETURN(extra, script::grammar_documents(vm));
   }
-  return rag::Bm25Index(rag::command_documents(command::Registry::instance(), notes));
+  if (auto path = args.get("--notes")) {
+    SQUAWK_ASSIGN_OR_RETURN(auto notes, rag::read_notes(*path));
+    extra.insert(extra.end(), notes.begin(), notes.end());
+  }
+  return rag::Bm25Index(rag::command_documents(command::Registry::instance(), extra));
 }
 
 }  // namespace

@@ -1,6 +1,4 @@
 // squawk train / squawk eval: the conflict-resolution learner and evaluator.
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +9,7 @@
 
 #include "app/cli.h"
 #include "app/gpt2_policy_factory.h"
+#include "app/progress_bar.h"
 #include "app/rl_eval.h"
 #include "app/subcommands.h"
 #include "app/train_log.h"
@@ -32,51 +31,6 @@ namespace {
 // Evaluations during training use the episodes of eval seed + this offset, so
 // the best-checkpoint choice never sees the episodes of `squawk eval`'s default seed.
 constexpr uint64_t kValidationSeedOffset = 1000003;
-
-// The checkpoint `squawk eval --policy mlp` uses when none is given.
-constexpr const char* kShippedCheckpoint = "models/horizontal_cr_mlp.ckpt";
-
-std::string fmt_duration(double s) {
-  char buf[32];
-  const long t = std::lround(std::max(0.0, s));
-  std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
-  return buf;
-}
-
-// A one-line progress bar with ETA on stderr, redrawn at most 5 times a second.
-class ProgressBar {
- public:
-  ProgressBar(std::string label, long long total, bool enabled)
-      : label_(std::move(label)), total_(total), enabled_(enabled && isatty(STDERR_FILENO)) {}
-  void update(long long done, const std::string& extra = "") {
-    if (!enabled_) return;
-    const double el = elapsed();
-    if (done < total_ && el - last_ < 0.2) return;
-    last_ = el;
-    const double frac = total_ > 0 ? static_cast<double>(done) / static_cast<double>(total_) : 1.0;
-    const int width = 30, fill = static_cast<int>(frac * width);
-    std::string bar(static_cast<size_t>(fill), '#');
-    bar.append(static_cast<size_t>(width - fill), '.');
-    const double eta = frac > 0 ? el * (1.0 - frac) / frac : 0.0;
-    std::fprintf(stderr, "\r%s [%s] %5.1f%% %lld/%lld  %s elapsed, ETA %s %s", label_.c_str(),
-                 bar.c_str(), 100.0 * frac, done, total_, fmt_duration(el).c_str(),
-                 fmt_duration(eta).c_str(), extra.c_str());
-    std::fflush(stderr);
-  }
-  void finish() {
-    if (enabled_) std::fprintf(stderr, "\n");
-  }
-  double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-  }
-
- private:
-  std::string label_;
-  long long total_;
-  bool enabled_;
-  double last_ = -1.0;
-  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
-};
 
 Result<script::Scenario> scenario_from(const Args& args, const char* sub) {
   if (args.positional().size() != 1)
@@ -262,9 +216,12 @@ int cmd_train(const ArgV& argv) {
       if (Status s = rl::save_checkpoint(best_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
         return failure(s);
     }
-    if (!quiet && !isatty(STDERR_FILENO))
-      std::printf("%lld episodes, %.0f s: eval success %.1f %%, mean reward %.3f\n", progress.episodes,
-                  progress.wall_s, 100.0 * ev->success_rate, ev->mean_reward);
+    if (!quiet) {
+      char line[160];
+      std::snprintf(line, sizeof line, "%lld episodes, %.0f s: eval success %.1f %%, mean reward %.3f\n",
+                    progress.episodes, progress.wall_s, 100.0 * ev->success_rate, ev->mean_reward);
+      bar.note(line);
+    }
   }
   bar.finish();
   // The policy alone (no optimiser state): what `squawk eval --checkpoint` needs.
@@ -276,108 +233,6 @@ int cmd_train(const ArgV& argv) {
                 fmt_duration(progress.wall_s).c_str(), ckpt_path.c_str(), policy_path.c_str(),
                 log_path.c_str());
   return kExitOk;
-}
-
-Result<EvalRequest> eval_request(const Args& args, const script::Scenario& sc) {
-  EvalRequest r;
-  auto episodes = args.get_int("--episodes", sc.eval_episodes);
-  auto seed = args.get_int("--seed", static_cast<long long>(sc.eval_seed));
-  auto envs_n = args.get_int("--envs", r.envs);
-  for (const Status& st : {episodes.status(), seed.status(), envs_n.status()})
-    if (!st.is_ok()) return st;
-  if (*episodes < 1 || *envs_n < 1) return Status::invalid("--episodes and --envs must be >= 1");
-  r.episodes = *episodes;
-  r.seed = *seed;
-  r.envs = static_cast<int>(*envs_n);
-  r.greedy = args.has("--greedy");
-  r.json = args.has("--json");
-  r.record = args.get_or("--record", "");
-  return r;
-}
-
-int run_eval(rl::Policy& policy, env::VecEnv& envs, const script::Scenario& sc, const EvalRequest& req,
-             const std::string& label) {
-  if (Status st = rl::check_obs_size(policy, envs.obs_size()); !st.is_ok()) return failure(st);
-  std::ofstream rec_file;
-  std::unique_ptr<env::JsonlRecorder> recorder;
-  if (!req.record.empty()) {
-    rec_file.open(req.record, std::ios::trunc);
-    if (!rec_file) return failure(Status::io_error("cannot write " + req.record));
-    recorder = std::make_unique<env::JsonlRecorder>(rec_file);
-    for (int s = 0; s < envs.size(); ++s) envs.env(s).set_observer(recorder.get());
-  }
-  ProgressBar bar("eval", req.episodes, !req.json);
-  auto res = rl::evaluate(policy, envs, {req.episodes, static_cast<uint64_t>(req.seed), req.greedy},
-                          [&](long long done, long long) { bar.update(done); });
-  bar.finish();
-  if (!res) return failure(res.status());
-  if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
-  if (Status rs = sc.reward_error(); !rs.is_ok()) return failure(rs);
-  if (req.json) {
-    nlohmann::json j = {{"success_rate", res->success_rate},
-                        {"mean_reward", res->mean_reward},
-                        {"std_reward", res->std_reward},
-                        {"episodes", res->episodes}};
-    std::printf("%s\n", j.dump().c_str());
-    return kExitOk;
-  }
-  const double decisions = res->mean_decisions * static_cast<double>(res->episodes);
-  std::printf("scenario  %s (%s rules)\n", sc.path.c_str(),
-              sc.eval_env.rules == env::Rules::kGym ? "gym" : "paper");
-  std::printf("policy    %s\n", label.c_str());
-  std::printf("episodes  %lld, seed %lld, %s actions\n", res->episodes, req.seed,
-              req.greedy ? "greedy" : "sampled");
-  std::printf("\n  %-10s %-22s %-20s\n", "success", "mean episode reward", "std of episode reward");
-  std::printf("  %6.1f %%   %-22.3f %-20.3f\n\n", 100.0 * res->success_rate, res->mean_reward, res->std_reward);
-  std::printf("waypoint reached %.1f %%, %.1f agent decisions and %.1f env steps per episode, %.2f s, "
-              "%.0f decisions/s\n",
-              100.0 * res->reached_rate, res->mean_decisions, res->mean_steps, res->wall_s,
-              res->wall_s > 0 ? decisions / res->wall_s : 0.0);
-  return kExitOk;
-}
-
-int cmd_eval(const ArgV& argv) {
-  if (wants_gpt2(argv)) return cmd_eval_gpt2(argv);
-  Args::Spec spec = with_vm_flags({{"--policy", "--checkpoint", "--episodes", "--envs", "--record"},
-                                   {"--json", "--greedy"}});
-  auto args = Args::parse(argv, spec);
-  if (!args) return usage_error("eval", args.status().message());
-  const std::string kind = args->get_or("--policy", "mlp");
-  if (kind != "random" && kind != "zero" && kind != "mvp" && kind != "mlp")
-    return usage_error("eval", "--policy '" + kind + "': expected random, zero, mvp, mlp or gpt2");
-  if (args->has("--checkpoint") && kind != "mlp")
-    return usage_error("eval", "--checkpoint goes with --policy mlp");
-  if (args->positional().size() != 1)
-    return usage_error("eval", "expected exactly one SCENARIO.lua");
-  auto sc = scenario_from(*args, "eval");
-  if (!sc) return failure(sc.status());
-  auto req = eval_request(*args, *sc);
-  if (!req) return usage_error("eval", req.status().message());
-
-  auto envs = env::VecEnv::make(sc->eval_env, req->envs);
-  if (!envs) return failure(envs.status());
-  std::unique_ptr<rl::Policy> policy;
-  std::string label = kind;
-  if (kind == "zero") {
-    policy = std::make_unique<rl::ZeroPolicy>(envs->obs_size());
-  } else if (kind == "mvp") {
-    policy = std::make_unique<rl::MvpPolicy>(*envs);
-  } else if (kind == "random") {
-    Rng init(static_cast<uint64_t>(req->seed));
-    auto p = rl::MlpPolicy::make(sc->policy, init);
-    if (!p) return failure(p.status());
-    policy = std::move(*p);
-    label += " (untrained, initialised from the seed)";
-  } else {
-    const std::string path = args->get_or("--checkpoint", paths::resource(kShippedCheckpoint));
-    auto c = rl::load_checkpoint(path);
-    if (!c) return failure(c.status());
-    auto p = rl::policy_from_checkpoint(*c);
-    if (!p) return failure(p.status());
-    policy = std::move(*p);
-    label += " (" + path + ")";
-  }
-  return run_eval(*policy, *envs, *sc, *req, label);
 }
 
 }  // namespace squawk::app

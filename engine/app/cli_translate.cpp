@@ -1,4 +1,6 @@
-// squawk translate / squawk eval-translate.
+// squawk translate / squawk eval-translate: both run the Lua translation
+// graph (scripts/translate/graph.lua) through script::run_translation_graph,
+// in every mode; there is no other translator.
 #include <cstdio>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -7,46 +9,69 @@
 #include "app/subcommands.h"
 #include "app/vm_options.h"
 #include "command/stack.h"
-#include "core/files.h"
 #include "script/translate_graph.h"
 #include "translate/corpus.h"
-#include "translate/offline_translator.h"
 #include "translate/stack_world.h"
 
 namespace squawk::app {
 
 namespace {
 
-// Prints one JSON line per case: {"id","output"} | {"id","ask"} | {"id","error"}.
-void print_jsonl(const std::vector<translate::CorpusCase>& cases) {
+Result<std::string> mode_of(const Args& args) {
+  std::string mode = args.get_or("--mode", "offline");
+  if (mode != "offline" && mode != "single" && mode != "multi")
+    return Status::invalid("--mode must be offline, single or multi, not '" + mode + "'");
+  return mode;
+}
+
+nlohmann::json result_json(const translate::Translation& tr) {
+  nlohmann::json j;
+  if (tr.asked())
+    j["ask"] = tr.ask;
+  else if (!tr.error.empty())
+    j["error"] = tr.error;
+  else
+    j["output"] = tr.text();
+  return j;
+}
+
+// One JSON line per case: {"id","output"} | {"id","ask"} | {"id","error"}.
+// A graph that fails to run (not a case it cannot translate) stops it.
+Status print_jsonl(script::Vm& vm, const std::vector<translate::CorpusCase>& cases, const std::string& mode) {
   for (const auto& c : cases) {
-    nlohmann::json j;
+    auto tr = script::run_translation_graph(vm, c.utterance, {mode, c.setup, nullptr});
+    if (!tr) return tr.status().with_context(c.id);
+    nlohmann::json j = result_json(*tr);
     j["id"] = c.id;
-    auto tr = translate::translate_case_offline(c);
-    if (!tr.is_ok())
-      j["error"] = tr.status().message();
-    else if (tr->asked())
-      j["ask"] = tr->ask;
-    else
-      j["output"] = tr->text();
     std::printf("%s\n", j.dump().c_str());
   }
+  return Status::ok();
 }
 
 }  // namespace
 
 int cmd_translate(const ArgV& argv) {
-  auto args = Args::parse(argv, {{"--scenario", "--setup", "--tsv"}, {"--jsonl"}});
+  auto args = Args::parse(argv, with_vm_flags({{"--scenario", "--setup", "--tsv", "--mode"}, {"--jsonl"}}));
   if (!args) return usage_error("translate", args.status().message());
+  auto mode = mode_of(*args);
+  if (!mode) return usage_error("translate", mode.status().message());
+  auto opts = vm_options(*args);
+  if (!opts) return usage_error("translate", opts.status().message());
+  script::Vm vm(*opts);
   if (auto tsv = args->get("--tsv")) {
     if (!args->positional().empty()) return usage_error("translate", "give either TEXT or --tsv CORPUS.tsv");
     auto cases = translate::read_corpus(*tsv);
     if (!cases) return failure(cases.status());
-    print_jsonl(*cases);
+    if (Status st = print_jsonl(vm, *cases, *mode); !st.is_ok()) return failure(st);
     return kExitOk;
   }
   if (args->positional().size() != 1) return usage_error("translate", "expected one quoted TEXT");
   command::Stack stack;
+  if (!opts->navdata_dir.empty()) {
+    auto db = command::NavDb::load_cached(opts->navdata_dir);
+    if (!db) return failure(db.status());
+    stack.set_navdb(*db);
+  }
   if (auto scn = args->get("--scenario")) {
     Status st = stack.load_scenario(*scn);
     if (!st.is_ok()) return failure(st);
@@ -56,28 +81,18 @@ int cmd_translate(const ArgV& argv) {
     Status st = translate::setup_stack(stack, *setup);
     if (!st.is_ok()) return failure(st);
   }
-  translate::StackWorld world(stack);
-  auto tr = translate::translate_offline(args->positional()[0], &world);
+  auto tr = script::run_translation_graph(vm, args->positional()[0], {*mode, "", &stack});
+  if (!tr) return failure(tr.status());
   if (args->has("--jsonl")) {
-    nlohmann::json j;
-    if (tr.asked())
-      j["ask"] = tr.ask;
-    else
-      j["output"] = tr.text();
-    std::printf("%s\n", j.dump().c_str());
+    std::printf("%s\n", result_json(*tr).dump().c_str());
   } else {
-    std::printf("%s\n", tr.text().c_str());
+    std::printf("%s\n", tr->text().c_str());
   }
-  // With traffic given, the commands must run, in order, on a scratch copy of
-  // it (a later command may need an earlier one: ADDWPT before DIRECT).
-  const bool have_traffic = args->has("--scenario") || args->has("--setup");
-  command::Stack scratch = stack;
-  for (const auto& cmd : have_traffic ? tr.commands : std::vector<std::string>{}) {
-    Status st = scratch.exec(cmd).status();
-    if (!st.is_ok()) {
-      std::fprintf(stderr, "squawk translate: produced command does not validate: %s\n", st.message().c_str());
-      return kExitFail;
-    }
+  // The graph validated the commands on a scratch copy of the traffic; an
+  // error means nothing valid came out.
+  if (!tr->error.empty()) {
+    std::fprintf(stderr, "squawk translate: no valid command: %s\n", tr->error.c_str());
+    return kExitFail;
   }
   return kExitOk;
 }
@@ -86,48 +101,47 @@ int cmd_eval_translate(const ArgV& argv) {
   auto args = Args::parse(argv, with_vm_flags({{"--mode"}, {"--failures", "--json"}}));
   if (!args) return usage_error("eval-translate", args.status().message());
   if (args->positional().size() != 1) return usage_error("eval-translate", "expected one CORPUS.tsv");
-  const std::string mode = args->get_or("--mode", "offline");
-  if (mode != "offline" && mode != "single" && mode != "multi")
-    return usage_error("eval-translate", "--mode must be offline, single or multi, not '" + mode + "'");
+  auto mode = mode_of(*args);
+  if (!mode) return usage_error("eval-translate", mode.status().message());
   const std::string path = args->positional()[0];
   auto cases = translate::read_corpus(path);
   if (!cases) return failure(cases.status());
-
-  translate::EvalReport report;
-  if (mode == "offline") {
-    report = translate::evaluate(*cases, translate::translate_case_offline);
-  } else {
+  if (*mode != "offline") {
     const char* url = std::getenv("SQUAWK_LLM_URL");
-    if (!url || !*url) return failure(Status::unavailable("mode " + mode + " needs an LLM server: set SQUAWK_LLM_URL"));
-    auto opts = vm_options(*args);
-    if (!opts) return usage_error("eval-translate", opts.status().message());
-    script::Vm vm(*opts);
-    Status load_error;
-    report = translate::evaluate(*cases, [&](const translate::CorpusCase& c) -> Result<translate::Translation> {
-      auto tr = script::run_translation_graph(vm, c.utterance, mode, c.setup);
-      if (!tr.is_ok() && tr.status().code() == Code::kNotFound) load_error = tr.status();
-      return tr;
-    });
-    if (!load_error.is_ok()) return failure(load_error);
+    if (!url || !*url) return failure(Status::unavailable("mode " + *mode + " needs an LLM server: set SQUAWK_LLM_URL"));
   }
+  auto opts = vm_options(*args);
+  if (!opts) return usage_error("eval-translate", opts.status().message());
+  script::Vm vm(*opts);
+  Status load_error;
+  translate::EvalReport report = translate::evaluate(*cases, [&](const translate::CorpusCase& c) {
+    auto tr = script::run_translation_graph(vm, c.utterance, {*mode, c.setup, nullptr});
+    if (!tr.is_ok() && load_error.is_ok()) load_error = tr.status().with_context(c.id);
+    return tr;
+  });
+  if (!load_error.is_ok()) return failure(load_error);
   if (args->has("--json")) {
     nlohmann::json j;
     j["corpus"] = path;
-    j["mode"] = mode;
+    j["mode"] = *mode;
     j["cases"] = report.cases;
     j["correct"] = report.correct;
+    j["right"] = report.correct;
+    j["asked"] = report.asked;
+    j["wrong"] = report.wrong;
     j["accuracy"] = report.accuracy();
     for (const auto& c : report.categories)
-      j["categories"].push_back({{"category", c.category}, {"cases", c.cases}, {"correct", c.correct}});
+      j["categories"].push_back({{"category", c.category}, {"cases", c.cases}, {"correct", c.correct},
+                                 {"right", c.correct}, {"asked", c.asked}, {"wrong", c.wrong}});
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    std::printf("%s", translate::format_report(report, path + " (mode " + mode + ")").c_str());
+    std::printf("%s", translate::format_report(report, path + " (mode " + *mode + ")").c_str());
   }
   if (args->has("--failures"))
     for (const auto& o : report.outcomes)
       if (!o.correct)
-        std::printf("%s [%s]\n  expected: %s\n  got:      %s%s\n", o.id.c_str(), o.category.c_str(), o.expected.c_str(),
-                    o.asked ? "ASK " : "", o.produced.c_str());
+        std::printf("%s [%s] %s\n  expected: %s\n  got:      %s%s\n", o.id.c_str(), o.category.c_str(),
+                    o.asked ? "asked" : "WRONG", o.expected.c_str(), o.asked ? "ASK " : "", o.produced.c_str());
   return kExitOk;
 }
 

@@ -7,6 +7,7 @@
 #include "app/cli.h"
 #include "env/vec_env.h"
 #include "rl/policy.h"
+#include "script/policy_factory.h"
 #include "script/scenario.h"
 
 namespace squawk::app {
@@ -18,16 +19,32 @@ struct EvalRequest {
   bool greedy = false;         // the mode instead of a sample
   bool json = false;           // one JSON object instead of the table
   std::string record;          // JSON-lines recording of every episode, "" = none
+  long long show_prompt = 0;   // [-] gpt2: print the prompts of the first N decisions
 };
 
 // --episodes and --seed (defaults: the scenario's evaluation settings),
-// --envs (64), --greedy, --json, --record. Errors name the flag.
+// --envs (64), --greedy, --json, --record, --show-prompt. Errors name the flag.
 Result<EvalRequest> eval_request(const Args& args, const script::Scenario& sc);
 
-// Runs the scenario's evaluation episodes with `policy` on `envs` and prints
-// success rate, mean episode reward and its standard deviation (or JSON with
-// success_rate, mean_reward, std_reward, episodes). `label` names the policy.
-int run_eval(rl::Policy& policy, env::VecEnv& envs, const script::Scenario& sc,
-             const EvalRequest& req, const std::string& label);
+// script::PolicyOptions from --checkpoint, --seed and the GPT-2 policy flags
+// (--model builds a fresh head on that base instead of a checkpoint).
+Result<script::PolicyOptions> policy_options(const Args& args, long long seed);
+
+// Empty when `made` was trained on `sc`'s rules and observation size (or its
+// training scenario is unknown); otherwise a warning naming both rule sets.
+std::string trained_elsewhere(const script::MadePolicy& made, const script::Scenario& sc,
+                              const script::VmOptions& vm);
+
+// One line on what success means under the scenario's rules, as the rule
+// set's source defines it.
+std::string success_definition(const script::Scenario& sc);
+
+// Runs the scenario's evaluation episodes with `made.policy` on `envs` and
+// prints success rate, mean episode reward and its standard deviation, the
+// action histogram and the prompt file (or JSON with success_rate,
+// mean_reward, std_reward, episodes, reached_rate, decisions, actions,
+// most_frequent_share).
+int run_eval(script::MadePolicy& made, env::VecEnv& envs, const script::Scenario& sc, const EvalRequest& req,
+             const script::VmOptions& vm);
 
 }  // namespace squawk::app

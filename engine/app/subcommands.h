@@ -20,6 +20,7 @@ int cmd_render(const ArgV& args);  // cli_viz.cpp
 int cmd_plot(const ArgV& args);    // cli_viz.cpp
 int cmd_rag(const ArgV& args);     // cli_rag.cpp
 int cmd_repl(const ArgV& args);    // cli_repl.cpp
+int cmd_serve(const ArgV& args);   // cli_serve.cpp
 int cmd_llm(const ArgV& args);     // cli_llm.cpp
 int cmd_scn(const ArgV& args);       // cli_sim.cpp
 int cmd_commands(const ArgV& args);  // cli_sim.cpp

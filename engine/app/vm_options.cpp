@@ -53,4 +53,12 @@ Result<script::VmOptions> vm_options(const Args& args) {
   return o;
 }
 
+Result<std::string> named_scenario(const Args& args, script::VmOptions& o) {
+  if (args.positional().empty() || args.positional()[0].empty()) return std::string();
+  const std::string path = paths::absolute(args.positional()[0]);
+  if (!files::exists(path)) return Status::not_found("no scenario file '" + args.positional()[0] + "'");
+  o.read_dirs.push_back(std::filesystem::path(path).parent_path().string());
+  return path;
+}
+
 }  // namespace squawk::app

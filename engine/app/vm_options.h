@@ -12,5 +12,9 @@ namespace squawk::app {
 Args::Spec with_vm_flags(Args::Spec spec);
 // VmOptions from the parsed flags (navdata also from $SQUAWK_NAVDATA).
 Result<script::VmOptions> vm_options(const Args& args);
+// The optional SCENARIO positional of repl/serve: its absolute path ("" when
+// none or an empty one was given), kNotFound when the file is absent. The file's folder
+// becomes readable in `o` (the user named it, so its siblings may be IC'd).
+Result<std::string> named_scenario(const Args& args, script::VmOptions& o);
 
 }  // namespace squawk::app

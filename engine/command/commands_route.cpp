@@ -21,9 +21,16 @@ Status position_error(const Call& c, const std::string& token) {
 }
 
 Result<std::string> addwpt(Call& c) {
+  // FLYBY / FLYOVER (FLYTURN: fly-by, squawk has no turn-speed legs) switch
+  // the mode of the waypoints added next, as in BlueSky, even where a fix of
+  // that name exists.
+  if (c[1].text == "FLYBY" || c[1].text == "FLYOVER" || c[1].text == "FLYTURN") {
+    const sim::Traffic& t = c.stack.sim().traffic();
+    SQUAWK_RETURN_IF_ERROR(c.stack.sim().set_flyover_mode(t.id[c.acid(0)], c[1].text == "FLYOVER"));
+    return std::string();
+  }
   if (c[1].type == ArgType::kTxt) {
-    static const char* kModes[] = {"FLYBY", "FLYOVER", "FLYTURN", "TAKEOFF", "TURNRAD", "TURNSPD", "TURNBANK",
-                                   "TURNHDG", "TURNHDGR"};
+    static const char* kModes[] = {"TAKEOFF", "TURNRAD", "TURNSPD", "TURNBANK", "TURNHDG", "TURNHDGR"};
     for (const char* m : kModes)
       if (c[1].text == m)
         return Status::unsupported("ADDWPT mode " + c[1].text + " is not supported by squawk");
@@ -237,9 +244,10 @@ void add_route_commands(std::vector<CommandDecl>& out) {
                  "ADDWPT acid,wpname/lat,lon,[alt,spd,afterwp,beforewp]",
                  "Adds a waypoint (a lat/lon pair, fix, navaid, airport or DEFWPT name) to an aircraft's route, "
                  "with optional altitude and speed constraints, at the end (before the destination) or after / "
-                 "before a named route waypoint. The first waypoint of an empty route becomes active and "
-                 "switches LNAV on.",
-                 {"ADDWPT KL204 SPY FL250", "KL204 ADDWPT 52.1 4.3,,280", "ADDWPT KL204 PAM ,, , SPY"}, addwpt, {}});
+                 "before a named route waypoint. Adding switches LNAV on (flying to the active waypoint). "
+                 "ADDWPT acid FLYOVER / FLYBY sets whether the waypoints added next are flown over or cut "
+                 "(fly-by, the default).",
+                 {"ADDWPT KL204 SPY FL250", "ADDWPT KL204 FLYOVER", "KL204 ADDWPT 52.1 4.3,,280", "ADDWPT KL204 PAM ,, , SPY"}, addwpt, {}});
   out.push_back({"AFTER", {}, "acid,wpinroute,word,word,[alt,spd]", "AFTER acid,wpname,ADDWPT,newwp,[alt,spd]",
                  "Inserts a new waypoint into the route right after an existing one, with optional constraints.",
                  {"KL204 AFTER SPL ADDWPT SSB FL100"}, after, {}});

@@ -80,17 +80,21 @@ Result<std::string> mcre(Call& c) {
 
 Result<std::string> del(Call& c) {
   std::set<std::string> ids;
+  bool wind = false;
   for (size_t k = 0; k < c.args.size(); ++k) {
     const ArgValue& a = c[k];
     if (!a.present) continue;
     if (a.type == ArgType::kAcid) {
       for (int i : a.acids) ids.insert(c.stack.sim().traffic().id[i]);
-    } else if (a.text != "WIND") {
+    } else if (a.text == "WIND") {
+      wind = true;
+    } else {
       return Status::not_found("argument " + std::to_string(k + 1) + ": no aircraft " + text::quoted(a.text) +
                                " (squawk has no areas or shapes to delete)");
     }
   }
   for (const auto& id : ids) SQUAWK_RETURN_IF_ERROR(c.stack.sim().remove(id));
+  if (wind) c.stack.sim().clear_wind();
   return std::string();
 }
 
@@ -223,8 +227,7 @@ void add_traffic_commands(std::vector<CommandDecl>& out) {
                  "given, and dest sets a destination. Draws come from the seeded engine RNG.",
                  {"MCRE 10", "MCRE 5 A320 FL300 * EHAM"}, mcre, {}});
   out.push_back({"DEL", {"DELETE"}, "acid/txt,...", "DEL acid,[acid...]",
-                 "Deletes aircraft (or all aircraft with *). DEL WIND is accepted and does nothing: squawk has "
-                 "no wind field.",
+                 "Deletes aircraft (or all aircraft with *). DEL WIND clears the wind field.",
                  {"DEL KL204", "DEL *"}, del, {}, true});
   out.push_back({"MOVE", {}, "acid,latlon,[alt,hdg,spd,vspd]", "MOVE acid,lat,lon,[alt,hdg,spd,vspd]",
                  "Puts an aircraft at a new position at once; optional altitude, heading, speed and vertical "

@@ -118,6 +118,12 @@ bool is_hdg_number(std::string_view token) {
 Result<double> parse_hdg(std::string_view token) {
   std::string u = text::upper(text::trim(token));
   if (!is_hdg_number(u)) return bad("heading", token, "degrees (090, 236.9T, M270)");
+  // BlueSky drops leading zeros before reading the number, so "0." (and
+  // "00.") become "." and are refused; squawk refuses them too.
+  std::string z = u;
+  while (z.size() > 1 && z[0] == '0') z.erase(0, 1);
+  if (z == "." || z == ".T" || z == ".M")
+    return bad("heading", token, "degrees; BlueSky reads `0.` as `.` after dropping leading zeros (write 0)");
   if (u.front() == 'T' || u.front() == 'M') u.erase(0, 1);
   else if (u.back() == 'T' || u.back() == 'M') u.pop_back();
   const double v = *text::to_double(u);

@@ -45,6 +45,8 @@ class NavDb {
   const NavPoint* waypoint(std::string_view id, double ref_lat, double ref_lon) const;
 
   size_t airport_count() const { return airports_.size(); }
+  const std::vector<NavPoint>& airports() const { return airports_; }
+  const std::vector<NavPoint>& waypoints() const { return waypoints_; }
   size_t waypoint_count() const { return waypoints_.size(); }
 
  private:

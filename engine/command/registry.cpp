@@ -15,6 +15,7 @@ Registry::Registry() {
   add_route_commands(commands_);
   add_sim_commands(commands_);
   add_asas_commands(commands_);
+  add_perf_commands(commands_);
   for (auto& d : commands_) {
     auto sig = parse_signature(d.args);
     if (!sig) {

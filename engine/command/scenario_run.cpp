@@ -15,6 +15,7 @@ constexpr int kSlice = 100;  // steps between wall-clock checks
 Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRunOptions& opts, Stack& stack) {
   const auto t0 = std::chrono::steady_clock::now();
   stack = Stack(opts.seed);
+  if (opts.openap) stack.sim().set_openap(*opts.openap);
   stack.set_navdb(opts.navdb);
   stack.set_base_dir(paths::dirname(path));
   SQUAWK_RETURN_IF_ERROR(stack.load_scenario(path));

@@ -9,6 +9,7 @@
 #include "command/navdb.h"
 #include "command/stack.h"
 #include "core/status.h"
+#include "sim/openap_data.h"
 
 namespace squawk::command {
 
@@ -18,6 +19,9 @@ struct ScenarioRunOptions {
   double max_wall_s = 600.0;    // [s] wall-clock cap on the whole run (0 = none)
   std::shared_ptr<const NavDb> navdb;  // may be null
   uint64_t seed = 0;
+  // Performance data: unset, the process default (SQUAWK_OPENAP / --openap);
+  // set, that data (null: squawk's class model).
+  std::optional<std::shared_ptr<const sim::OpenapData>> openap;
 };
 
 struct ScenarioRunResult {

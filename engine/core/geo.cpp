@@ -29,6 +29,34 @@ QdrDist kwikqdrdist(double lata, double lona, double latb, double lonb) {
   return {qdr, dist};
 }
 
+namespace {
+// WGS-84 local earth radius [m] (BlueSky's rwgs84).
+double rwgs84(double sinlat, double coslat) {
+  constexpr double a = 6378137.0, b = 6356752.314245;  // [m] WGS-84 semi-axes
+  const double a2 = a * a, b2 = b * b, s2 = sinlat * sinlat, c2 = coslat * coslat;
+  return std::sqrt((a2 * a2 * c2 + b2 * b2 * s2) / (a2 * c2 + b2 * s2));
+}
+}  // namespace
+
+QdrDist qdrdist(double lata, double lona, double latb, double lonb) {
+  constexpr double a = 6378137.0;
+  const double la = lata * kDeg, lb = latb * kDeg, dlon = (lonb - lona) * kDeg;
+  const double sa = std::sin(la), ca = std::cos(la), sb = std::sin(lb), cb = std::cos(lb);
+  double r;
+  if (la * lb >= 0.0) {
+    const double m = 0.5 * (la + lb);
+    r = rwgs84(std::sin(m), std::cos(m));
+  } else {
+    r = 0.5 * (std::fabs(la) * (rwgs84(sa, ca) + a) + std::fabs(lb) * (rwgs84(sb, cb) + a)) /
+        (std::fabs(la) + std::fabs(lb));
+  }
+  const double s1 = std::sin(0.5 * (lb - la)), s2 = std::sin(0.5 * dlon);
+  const double root = s1 * s1 + ca * cb * s2 * s2;
+  const double d = 2.0 * r * std::atan2(std::sqrt(root), std::sqrt(1.0 - root));
+  const double qdr = std::atan2(std::sin(dlon) * cb, sb * ca - sa * cb * std::cos(dlon)) / kDeg;
+  return {pymod(qdr, 360.0), d / kNm};
+}
+
 double kwikdist_nm(double lata, double lona, double latb, double lonb) {
   return kwikqdrdist(lata, lona, latb, lonb).dist_nm;
 }

@@ -23,6 +23,11 @@ struct LatLon {
 QdrDist kwikqdrdist(double lata, double lona, double latb, double lonb);
 double kwikdist_nm(double lata, double lona, double latb, double lonb);
 LatLon kwikpos(double lat, double lon, double qdr_deg, double dist_nm);
+// BlueSky's qdrdist: bearing on the sphere and haversine distance with the
+// WGS-84 local radius at the mean latitude (same hemisphere) or a
+// latitude-weighted radius (crossing the equator). What BlueSky's autopilot
+// (LNAV) uses for the active waypoint.
+QdrDist qdrdist(double lata, double lona, double latb, double lonb);
 
 // Great-circle destination from (lat, lon) along bearing for dist_m metres.
 LatLon gc_destination(double lat, double lon, double bearing_deg, double dist_m);

@@ -4,27 +4,12 @@
 #include <cmath>
 #include <map>
 
+#include "rag/edit_distance.h"
 #include "rag/tokenize.h"
 
 namespace squawk::rag {
 
 namespace {
-
-// Optimal string alignment distance: insertions, deletions, substitutions and
-// swaps of neighbours each cost 1.
-size_t osa_distance(const std::string& a, const std::string& b) {
-  std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
-  for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-  for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-  for (size_t i = 1; i <= a.size(); ++i)
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-    }
-  return d[a.size()][b.size()];
-}
 
 }  // namespace
 
@@ -48,7 +33,7 @@ std::string Bm25Index::nearest_term(const std::string& word) const {
   std::string best;
   for (const auto& [term, posting] : postings_) {
     if (term.size() + 1 < word.size() || term.size() > word.size() + 1) continue;
-    if (osa_distance(word, term) == 1 && (best.empty() || term < best)) best = term;
+    if (edit_distance(word, term) == 1 && (best.empty() || term < best)) best = term;
   }
   return best;
 }

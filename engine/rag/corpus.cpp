@@ -38,6 +38,10 @@ std::string command_word(const std::string& command) {
 
 Result<std::vector<CorpusCase>> read_corpus(const std::string& path) {
   SQUAWK_ASSIGN_OR_RETURN(std::string data, files::read(path));
+  return parse_corpus(data, path);
+}
+
+Result<std::vector<CorpusCase>> parse_corpus(const std::string& data, const std::string& path) {
   std::vector<CorpusCase> cases;
   const auto lines = text::split(data, '\n');
   for (size_t i = 0; i < lines.size(); ++i) {

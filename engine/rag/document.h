@@ -2,7 +2,7 @@
 //
 // The registry documents (one per TrafScript command) hold the name, aliases,
 // usage, help paragraph and examples, so BM25 can match a request's words to
-// the command's description; extra documents (phraseology notes, user docs)
+// the command's description; extra documents (the grammar's words, user notes)
 // name the command they point to and add text of their own.
 #pragma once
 

@@ -1,10 +1,19 @@
 #include "rl/baseline_policies.h"
 
+#include <cstdio>
+
 namespace squawk::rl {
 
-void ZeroPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> /*slots*/,
-                     Rng& /*rng*/, bool /*greedy*/, std::span<ActionSample> out) {
-  for (int r = 0; r < n; ++r) out[static_cast<size_t>(r)] = {-1, 0.0f};
+std::string ConstantPolicy::name() const {
+  if (value_ == 0.0f) return "zero";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "constant:%g", static_cast<double>(value_));
+  return buf;
+}
+
+void ConstantPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> /*slots*/,
+                         Rng& /*rng*/, bool /*greedy*/, std::span<ActionSample> out) {
+  for (int r = 0; r < n; ++r) out[static_cast<size_t>(r)] = {-1, value_};
 }
 
 void MvpPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> slots,

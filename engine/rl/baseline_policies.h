@@ -1,5 +1,6 @@
 // Reference policies with no parameters.
-//   ZeroPolicy: never turns (action 0).
+//   ConstantPolicy: plays one action value whatever the state (0 = never
+//     turn); the baselines that reveal a policy which learned one constant turn.
 //   MvpPolicy:  BlueSky's MVP resolution steering the ownship
 //     (HorizontalCrEnv::mvp_action, a continuous action in [-1, 1]); it reads
 //     the true state of the VecEnv slot of each row, not the observation.
@@ -10,16 +11,18 @@
 
 namespace squawk::rl {
 
-class ZeroPolicy : public Policy {
+class ConstantPolicy : public Policy {
  public:
-  explicit ZeroPolicy(int obs_size) : obs_size_(obs_size) {}
-  std::string name() const override { return "zero"; }
+  // value: [-] in units of the heading step.
+  ConstantPolicy(int obs_size, float value) : obs_size_(obs_size), value_(value) {}
+  std::string name() const override;
   int obs_size() const override { return obs_size_; }
   void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
            std::span<ActionSample> out) override;
 
  private:
   int obs_size_;
+  float value_;
 };
 
 class MvpPolicy : public Policy {

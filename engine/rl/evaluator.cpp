@@ -7,6 +7,28 @@
 
 namespace squawk::rl {
 
+int action_bin(double value) {
+  int best = 0;
+  for (int k = 1; k < static_cast<int>(kActionBins.size()); ++k)
+    if (std::abs(value - kActionBins[static_cast<size_t>(k)]) <
+        std::abs(value - kActionBins[static_cast<size_t>(best)]))
+      best = k;
+  return best;
+}
+
+long long EvalResult::decisions() const {
+  long long n = 0;
+  for (long long c : action_counts) n += c;
+  return n;
+}
+
+double EvalResult::most_frequent_share() const {
+  const long long n = decisions();
+  if (n == 0) return 0.0;
+  return static_cast<double>(*std::max_element(action_counts.begin(), action_counts.end())) /
+         static_cast<double>(n);
+}
+
 Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions& opts,
                             const std::function<void(long long, long long)>& progress) {
   if (opts.episodes < 1)
@@ -22,6 +44,7 @@ Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions
   std::vector<ActionSample> acts;
   std::vector<double> actions, rewards;
   std::vector<uint8_t> dones;
+  EvalResult res;
   while (!envs.finished()) {
     const auto n = envs.waiting().size();
     acts.resize(n);
@@ -29,13 +52,15 @@ Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions
     rewards.resize(n);
     dones.resize(n);
     policy.act(envs.observations(), static_cast<int>(n), envs.waiting(), rng, opts.greedy, acts);
-    for (size_t r = 0; r < n; ++r) actions[r] = acts[r].value;
+    for (size_t r = 0; r < n; ++r) {
+      actions[r] = acts[r].value;
+      ++res.action_counts[static_cast<size_t>(action_bin(acts[r].value))];
+    }
     envs.step(actions, rewards, dones);
     if (progress) progress(static_cast<long long>(envs.completed().size()), opts.episodes);
   }
   std::vector<env::EpisodeStats> eps = envs.completed();
   std::sort(eps.begin(), eps.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
-  EvalResult res;
   res.episodes = static_cast<long long>(eps.size());
   double sum = 0.0;
   for (const auto& e : eps) {

@@ -4,11 +4,16 @@
 // success_rate: fraction of episodes whose EpisodeStats::success is set.
 // mean_reward / std_reward: mean and population standard deviation (ddof 0)
 // of the episode returns (EpisodeStats::total_reward).
+// action_counts: how many decisions took each of kActionBins, every action
+// value binned to the nearest bin (a continuous MVP action lands in one of the
+// five classes); most_frequent_share() is the largest count over the total,
+// the figure that shows a policy playing one action whatever the state.
 // Policy samples come from Rng(seed ^ kEvalPolicySalt), so one seed fixes the
 // whole evaluation on one build.
 #pragma once
 
 #include <cstdint>
+#include <array>
 #include <functional>
 
 #include "env/vec_env.h"
@@ -17,6 +22,11 @@
 namespace squawk::rl {
 
 inline constexpr uint64_t kEvalPolicySalt = 0xE7A1D5EEDull;
+// [-] the paper's five actions, in units of the heading step.
+inline constexpr std::array<double, 5> kActionBins = {-1.0, -0.5, 0.0, 0.5, 1.0};
+
+// Index into kActionBins of the bin nearest to `value` (ties go to the lower bin).
+int action_bin(double value);
 
 struct EvalOptions {
   long long episodes = 1000;  // [-]
@@ -34,6 +44,10 @@ struct EvalResult {
   double reached_rate = 0.0;    // [-] 0..1
   long long env_steps = 0;      // [-]
   double wall_s = 0.0;          // [s]
+  std::array<long long, kActionBins.size()> action_counts{};  // [-] decisions per bin
+
+  long long decisions() const;
+  double most_frequent_share() const;  // [-] 0..1, 0 without decisions
 };
 
 // progress(done, total) is called after every batched step when given.

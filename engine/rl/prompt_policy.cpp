@@ -104,9 +104,13 @@ Status PromptPolicy::ensure_cache() {
   return Status::ok();
 }
 
-Result<std::vector<int>> PromptPolicy::suffix_tokens(std::span<const float> row) const {
+Result<std::string> PromptPolicy::prompt(std::span<const float> row) const {
   SQUAWK_ASSIGN_OR_RETURN(env::Observation o, env::unflatten(row));
-  SQUAWK_ASSIGN_OR_RETURN(std::string text, render_(o));
+  return render_(o);
+}
+
+Result<std::vector<int>> PromptPolicy::suffix_tokens(std::span<const float> row) const {
+  SQUAWK_ASSIGN_OR_RETURN(std::string text, prompt(row));
   if (text.compare(0, prefix_.size(), prefix_) != 0)
     return Status::invalid("gpt2 policy: the rendered prompt does not start with the prefix");
   SQUAWK_ASSIGN_OR_RETURN(std::vector<int> ids, tokenizer_.encode(std::string_view(text).substr(prefix_.size())));

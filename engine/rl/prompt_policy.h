@@ -83,6 +83,8 @@ class PromptPolicy : public Policy {
 
   // Action logits [n, K] for obs [n, obs_size] (inference path, prefix cache).
   Status logits(std::span<const float> obs, int n, std::vector<float>& out);
+  // The whole prompt text for one flat row (what the model reads).
+  Result<std::string> prompt(std::span<const float> row) const;
   // Token ids of the part of the prompt after the prefix, for one flat row.
   Result<std::vector<int>> suffix_tokens(std::span<const float> row) const;
 

@@ -3,14 +3,20 @@
 //   local env = squawk.env.new("scenarios/horizontal_cr.lua" [, "train"|"eval"])
 //   env:reset(seed) -> needs_decision      (episode drawn from Rng(seed))
 //   env:step(action) -> reward, done       (action in [-1, 1], units of 45 deg)
-//   env:observation() -> {intruder_distance = {..}, ..., sin_drift = x}
+//   env:observation() -> {intruder_distance = {..}, ..., sin_drift = {x}}
+//                                          (every field an array: the shape
+//                                           prompts/observation.lua renders)
 //   env:flat() -> {28 numbers}             (the MLP's input order)
 //   env:stats() -> {total_reward, decisions, steps, intrusions, reached, truncated, success}
 //   env:state() -> {t, own = {lat, lon, hdg, tas}, intruders = {{..}, ..}, waypoint = {lat, lon}}
 //   env:mvp_action() -> number
-//   squawk.env.evaluate{scenario = path, policy = "zero"|"mvp"|"random"|"mlp",
-//                       checkpoint = file, episodes = n, seed = s, greedy = bool}
-//     -> {success_rate, mean_reward, std_reward, episodes}
+//   squawk.env.evaluate{scenario = path, policy = "zero"|"constant:V"|"mvp"|"random"|"mlp"|"gpt2",
+//                       checkpoint = file, model = "tiny"|dir (gpt2, fresh head), prompt = file,
+//                       episodes = n, seed = s, greedy = bool}
+//     -> {success_rate, mean_reward, std_reward, episodes, reached_rate,
+//         actions = {["-1"] = n, ["-0.5"] = n, ["0"] = n, ["0.5"] = n, ["1"] = n},
+//         most_frequent_share}   (policies built by script/policy_factory.h)
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,11 +24,11 @@
 #include "core/paths.h"
 #include "env/horizontal_cr.h"
 #include "env/vec_env.h"
-#include "rl/baseline_policies.h"
-#include "rl/checkpoint.h"
 #include "rl/evaluator.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
+#include "script/policy_factory.h"
+#include "script/prompt_renderer.h"
 #include "script/scenario.h"
 #include "script/vm.h"
 
@@ -85,20 +91,7 @@ int l_step(lua_State* L) {
 
 int l_observation(lua_State* L) {
   const env::Observation& o = self(L).observation();
-  lua_createtable(L, 0, 8);
-  push_array(L, o.intruder_distance);
-  lua_setfield(L, -2, "intruder_distance");
-  push_array(L, o.cos_difference_pos);
-  lua_setfield(L, -2, "cos_difference_pos");
-  push_array(L, o.sin_difference_pos);
-  lua_setfield(L, -2, "sin_difference_pos");
-  push_array(L, o.x_difference_speed);
-  lua_setfield(L, -2, "x_difference_speed");
-  push_array(L, o.y_difference_speed);
-  lua_setfield(L, -2, "y_difference_speed");
-  set_number(L, "waypoint_distance", o.waypoint_distance);
-  set_number(L, "cos_drift", o.cos_drift);
-  set_number(L, "sin_drift", o.sin_drift);
+  push_observation(L, o);
   return 1;
 }
 
@@ -174,30 +167,33 @@ int l_evaluate(lua_State* L) {
   charge(L, episodes * kEpisodeCost);
   auto envs = env::VecEnv::make(sc.eval_env, 32);
   check_status(envs.status());
-  std::unique_ptr<rl::Policy> policy;
-  if (kind == "zero") {
-    policy = std::make_unique<rl::ZeroPolicy>(envs->obs_size());
-  } else if (kind == "mvp") {
-    policy = std::make_unique<rl::MvpPolicy>(*envs);
-  } else if (kind == "random") {
-    Rng init(seed);
-    auto p = rl::MlpPolicy::make(sc.policy, init);
-    check_status(p.status());
-    policy = std::move(*p);
-  } else if (kind == "mlp") {
-    auto c = rl::load_checkpoint(readable(
-        L, field_string(L, 1, "checkpoint", paths::resource("models/horizontal_cr_mlp.ckpt")), "checkpoint"));
-    check_status(c.status());
-    auto p = rl::policy_from_checkpoint(*c);
-    check_status(p.status());
-    policy = std::move(*p);
-  } else {
-    throw ArgError("squawk.env.evaluate: policy '" + kind + "': expected zero, mvp, random or mlp");
-  }
+  PolicyOptions opts;
+  opts.seed = seed;
+  opts.checkpoint = readable(L, field_string(L, 1, "checkpoint", ""), "checkpoint");
+  opts.gpt2.model = readable(L, field_string(L, 1, "model", ""), "model");
+  opts.gpt2_fresh = !opts.gpt2.model.empty();
+  if (!opts.gpt2_fresh) opts.gpt2.model = "tiny";
+  opts.gpt2.prompt = readable(L, field_string(L, 1, "prompt", ""), "prompt");
+  VmOptions vo = Vm::of(L).options();
+  vo.out_dir.clear();
+  auto made = make_policy(kind, sc, *envs, opts, vo);
+  if (!made) throw ArgError("squawk.env.evaluate: " + made.status().message());
+  rl::Policy* policy = made->policy.get();
   auto res = rl::evaluate(*policy, *envs, {episodes, seed, field_boolean(L, 1, "greedy", false)});
   check_status(res.status());
+  check_status(policy->error());
   check_status(sc.reward_error());
-  lua_createtable(L, 0, 4);
+  lua_createtable(L, 0, 7);
+  set_number(L, "most_frequent_share", res->most_frequent_share());
+  set_number(L, "reached_rate", res->reached_rate);
+  lua_createtable(L, 0, static_cast<int>(rl::kActionBins.size()));
+  for (size_t k = 0; k < rl::kActionBins.size(); ++k) {
+    char key[16];
+    std::snprintf(key, sizeof key, "%g", rl::kActionBins[k]);
+    lua_pushinteger(L, res->action_counts[k]);
+    lua_setfield(L, -2, key);
+  }
+  lua_setfield(L, -2, "actions");
   set_number(L, "success_rate", res->success_rate);
   set_number(L, "mean_reward", res->mean_reward);
   set_number(L, "std_reward", res->std_reward);

@@ -1,9 +1,10 @@
 // squawk.rag: BM25 retrieval over the command documentation.
 //
-//   squawk.rag.index([{notes = path | false, docs = {{command=, text=}, ...}}])
-//       An index of one document per registry command, with the retrieval
-//       notes (default scripts/translate/phraseology.txt; false for none) and
-//       `docs` appended to the commands they name.
+//   squawk.rag.index([{notes = path, docs = {{command=, text=}, ...}}])
+//       An index of one document per registry command, with the notes file
+//       (NAME: text lines; none by default) and `docs` appended to the
+//       commands they name. The translation graph passes the grammar's words
+//       (require("translate.grammar").documents()).
 //   index:search(query, [k = 5]) -> {{command=, score=, text=}, ...} best first
 //   index:size()                  -> number of documents
 #include "command/registry.h"
@@ -40,12 +41,11 @@ std::vector<rag::Document> read_docs(lua_State* L, int opts) {
 int l_index(lua_State* L) {
   const bool has_opts = lua_istable(L, 1);
   std::vector<rag::Document> extra;
-  std::string notes_path = paths::resource(rag::kDefaultNotes);
+  std::string notes_path;
   if (has_opts) {
     lua_getfield(L, 1, "notes");
-    if (lua_type(L, -1) == LUA_TBOOLEAN && !lua_toboolean(L, -1)) notes_path.clear();
+    if (lua_type(L, -1) == LUA_TSTRING) notes_path = lua_tostring(L, -1);
     lua_pop(L, 1);
-    if (!notes_path.empty()) notes_path = field_string(L, 1, "notes", notes_path);
   }
   if (!notes_path.empty()) {
     auto notes = rag::read_notes(notes_path);

@@ -5,17 +5,26 @@
 //       places are errors). Scenario files load relative to the script folder.
 //   sim:exec(line)       -> ok, message   (TrafScript; `;` separates commands)
 //   sim:check(line)      -> ok, message   (parse-only validation, nothing runs)
-//   sim:load(file)       -> ok, message   (IC: reset, then the .scn file)
+//   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
+//                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
 //   sim:run_until(t) / sim:run_for(s)     [s]
 //   sim:time() -> s;  sim:dt() -> s;  sim:count() -> number of aircraft
 //   sim:aircraft()       -> { {id=, type=, lat=, lon=, alt_ft=, hdg_deg=, trk_deg=,
-//                              tas_kt=, cas_kt=, gs_kt=, vs_fpm=, lnav=, vnav=}, ... }
+//                              tas_kt=, cas_kt=, gs_kt=, vs_fpm=, lnav=, vnav=,
+//                              sel_hdg_deg=, sel_alt_ft=, sel_vs_fpm= (0: default),
+//                              sel_cas_kt= or sel_mach=, resolving= (MVP active),
+//                              route = { {name=, lat=, lon=, alt_ft=?, spd=?}, ... },
+//                              active_wpt= (name or nil), orig=?, dest=?}, ... }
 //   sim:get(acid)        -> one such table, or nil
 //   sim:conflicts()      -> { {own=, intruder=, tcpa=, tlos= [s], dcpa_nm=, dist_nm=}, ... }
 //   sim:los()            -> { {own=, intruder=, dist_nm=, dalt_ft=}, ... }
 //   sim:totals()         -> {conflicts=, los=}  (pairs entered since reset)
 //   sim:output()         -> { line, ... }     (ECHO / queued failures since last call)
+//   sim:tally()          -> {executed=, skipped=, failed=, first_failures={...},
+//                            failed_by_reason={[reason]=n}}  (scenario commands since IC)
+//   sim:run_state()      -> "hold" | "op" | "ff", ff_end [s] or nil
+//   sim:dtmult()         -> the DTMULT real-time multiplier
 //   sim:copy()           -> an independent copy
 //   sim:snapshot()       -> string            (the full state as bytes)
 //   squawk.sim.commands() -> { {name=, aliases={...}, args=, usage=, help=}, ... }
@@ -23,10 +32,12 @@
 #include <cmath>
 #include <string>
 
+#include "command/conformance.h"
 #include "command/registry.h"
 #include "command/stack.h"
 #include "core/paths.h"
 #include "core/units.h"
+#include "sim/atmosphere.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
@@ -81,6 +92,29 @@ void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
   lua_setfield(L, -2, "lnav");
   lua_pushboolean(L, t.vnav[i]);
   lua_setfield(L, -2, "vnav");
+  set_num(L, "sel_hdg_deg", t.sel_hdg[i]);
+  set_num(L, "sel_alt_ft", units::m_to_ft(t.sel_alt[i]));
+  set_num(L, "sel_vs_fpm", units::ms_to_fpm(t.sel_vs[i]));
+  if (sim::is_mach(t.sel_spd[i])) set_num(L, "sel_mach", t.sel_spd[i]);
+  else set_num(L, "sel_cas_kt", units::ms_to_kt(t.sel_spd[i]));
+  lua_pushboolean(L, t.cr_active[i]);
+  lua_setfield(L, -2, "resolving");
+  const sim::Route& r = t.route[i];
+  lua_createtable(L, r.size(), 0);
+  for (int k = 0; k < r.size(); ++k) {
+    const sim::Waypoint& w = r.waypoints()[k];
+    lua_createtable(L, 0, 5);
+    set_str(L, "name", w.name);
+    set_num(L, "lat", w.lat);
+    set_num(L, "lon", w.lon);
+    if (w.has_alt()) set_num(L, "alt_ft", units::m_to_ft(w.alt));
+    if (w.has_spd()) set_num(L, "spd", sim::is_mach(w.spd) ? w.spd : units::ms_to_kt(w.spd));
+    lua_seti(L, -2, k + 1);
+  }
+  lua_setfield(L, -2, "route");
+  if (const sim::Waypoint* w = r.active_waypoint()) set_str(L, "active_wpt", w->name);
+  if (!r.orig().empty()) set_str(L, "orig", r.orig());
+  if (!r.dest().empty()) set_str(L, "dest", r.dest());
 }
 
 constexpr long long kMaxSteps = 1'000'000'000;  // per step call
@@ -134,9 +168,12 @@ int l_check(lua_State* L) {
   return push_outcome(L, st.is_ok() ? Result<std::string>(std::string()) : Result<std::string>(st));
 }
 
+// The scenario's own folder becomes the base for the PCALLs inside it.
 int l_load(lua_State* L) {
   command::Stack* s = self(L);
-  const Status st = s->load_scenario(arg_string(L, 2, "file"));
+  const std::string file = arg_string(L, 2, "file");
+  if (auto found = s->find_scenario(file); found.is_ok()) s->set_base_dir(paths::dirname(*found));
+  const Status st = s->load_scenario(file);
   return push_outcome(L, st.is_ok() ? Result<std::string>(std::string()) : Result<std::string>(st));
 }
 
@@ -252,6 +289,43 @@ int l_output(lua_State* L) {
   return 1;
 }
 
+int l_tally(lua_State* L) {
+  const command::Tally& t = self(L)->tally();
+  lua_createtable(L, 0, 5);
+  lua_pushinteger(L, t.executed);
+  lua_setfield(L, -2, "executed");
+  lua_pushinteger(L, command::total_count(t.skipped));
+  lua_setfield(L, -2, "skipped");
+  lua_pushinteger(L, command::total_count(t.failed));
+  lua_setfield(L, -2, "failed");
+  lua_createtable(L, static_cast<int>(t.first_failures.size()), 0);
+  for (size_t k = 0; k < t.first_failures.size(); ++k) {
+    lua_pushlstring(L, t.first_failures[k].data(), t.first_failures[k].size());
+    lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  lua_setfield(L, -2, "first_failures");
+  lua_createtable(L, 0, static_cast<int>(t.failed.size()));
+  for (const auto& [reason, n] : t.failed) {
+    lua_pushinteger(L, n);
+    lua_setfield(L, -2, reason.c_str());
+  }
+  lua_setfield(L, -2, "failed_by_reason");
+  return 1;
+}
+
+int l_run_state(lua_State* L) {
+  const sim::Simulation& s = self(L)->sim();
+  lua_pushstring(L, s.fast() ? "ff" : s.run_state() == sim::RunState::kOp ? "op" : "hold");
+  if (s.ff_end()) lua_pushnumber(L, *s.ff_end());
+  else lua_pushnil(L);
+  return 2;
+}
+
+int l_dtmult(lua_State* L) {
+  lua_pushnumber(L, self(L)->dtmult());
+  return 1;
+}
+
 int l_copy(lua_State* L) {
   const command::Stack& s = *self(L);
   new_object<command::Stack>(L, kSimMt, s);
@@ -297,6 +371,8 @@ void bind_sim(lua_State* L) {
       {"get", guarded<l_get>},           {"conflicts", guarded<l_conflicts>},
       {"los", guarded<l_los>},           {"totals", guarded<l_totals>},
       {"output", guarded<l_output>},     {"copy", guarded<l_copy>},
+      {"tally", guarded<l_tally>},       {"run_state", guarded<l_run_state>},
+      {"dtmult", guarded<l_dtmult>},
       {"snapshot", guarded<l_snapshot>}, {nullptr, nullptr},
   };
   define_class(L, kSimMt, methods);

@@ -1,14 +1,23 @@
-// squawk.translate: the offline translator and the corpus scorer.
+// squawk.translate: the translation graph, the extractors the Lua grammar
+// reads, and the corpus scorer.
 //
-//   squawk.translate.offline(text, [sim | world]) -> {commands = {"CMD", ...}, ask = nil}
-//                                                  | {commands = {}, ask = "question"}
-//       The optional second argument gives the current traffic for relative
-//       instructions and callsign matching: a squawk.sim object (its aircraft
-//       and DEFWPT waypoints are read, nothing is run), or a plain table:
-//         {aircraft = {{id=, type=, lat=, lon=, hdg_deg=, alt_ft=, cas_kt=,
-//                       mach=, route = {"WPT", ...}}, ...},
-//          waypoints = {"NAME", ...}}
-//       Missing fields read as 0 / empty.
+//   squawk.translate.run(text, opts) -> graph.translate(text, opts) of
+//       scripts/translate/graph.lua (the one translation path)
+//   squawk.translate.utterance(text, [world]) -> u   the C++ extractors:
+//       u:tokens()  {{kind = "word"|"number"|"punct"|"quoted", text, raw, num,
+//                    number_word, keyword, filler, alpha}, ...} (spelling fixed)
+//       u:refs()    {{kind = "aircraft"|"type"|"waypoint", name, b, e, exists, spoken,
+//                    heard = {id, airline, digits} when matched inexactly}, ...}
+//       u:quantities(b, e)  {{kind, value, b, e, fl, by, to, turn, number = {...}}, ...}
+//                   in tokens [b, e) not yet used (kinds: plain alt speed mach
+//                   heading vs lat lon time dist percent mult angle)
+//       u:mark_used(b, e), u:used(i), u:number(b, e) (re-read a sub-range)
+//       Token ranges are 1-based, [b, e). `world` gives the traffic for
+//       callsign matching: {aircraft = {{id=, type=, lat=, lon=, hdg_deg=,
+//       alt_ft=, cas_kt=, mach=, route = {"WPT", ...}}, ...},
+//       waypoints = {"NAME", ...}}; missing fields read as 0 / empty.
+//   squawk.translate.best_match(spoken, names) -> index, score | nothing
+//   squawk.translate.json_decode(text) -> value (objects/arrays as tables, null as nil)
 //   squawk.translate.score(produced, asked, expected) -> boolean
 //       The corpus scoring rules (shared/corpora/README.md): `produced` is
 //       "CMD ; CMD", `asked` true when the translator asked instead.
@@ -18,10 +27,18 @@
 #include "script/lua_util.h"
 #include "script/vm.h"
 #include "script/translate_graph.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
 #include "translate/corpus.h"
-#include "translate/offline_translator.h"
+#include "translate/fuzzy.h"
+#include "translate/lexer.h"
+#include "translate/number_words.h"
+#include "translate/quantities.h"
+#include "translate/references.h"
+#include "translate/vocabulary.h"
 #include "translate/scorer.h"
-#include "translate/stack_world.h"
 
 namespace squawk::script {
 
@@ -78,38 +95,6 @@ translate::StaticWorld read_world(lua_State* L, int idx) {
   return w;
 }
 
-void push_translation(lua_State* L, const translate::Translation& tr) {
-  lua_createtable(L, 0, 2);
-  lua_createtable(L, static_cast<int>(tr.commands.size()), 0);
-  for (size_t i = 0; i < tr.commands.size(); ++i) {
-    lua_pushstring(L, tr.commands[i].c_str());
-    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
-  lua_setfield(L, -2, "commands");
-  if (tr.asked()) {
-    lua_pushstring(L, tr.ask.c_str());
-    lua_setfield(L, -2, "ask");
-  }
-}
-
-int l_offline(lua_State* L) {
-  const std::string text = arg_string(L, 1, "text");
-  translate::Translation tr;
-  if (lua_isnoneornil(L, 2)) {
-    tr = translate::translate_offline(text, nullptr);
-  } else if (const auto* sim = test_object<command::Stack>(L, 2, kSimMt, "world")) {
-    translate::StackWorld w(*sim);
-    tr = translate::translate_offline(text, &w);
-  } else if (lua_istable(L, 2)) {
-    translate::StaticWorld w = read_world(L, 2);
-    tr = translate::translate_offline(text, &w);
-  } else {
-    throw ArgError(type_error(L, 2, "world", "nil, a squawk.sim object or a world table"));
-  }
-  push_translation(L, tr);
-  return 1;
-}
-
 int l_score(lua_State* L) {
   const std::string produced = arg_string(L, 1, "produced");
   const bool asked = lua_toboolean(L, 2) != 0;
@@ -137,71 +122,291 @@ int l_corpus(lua_State* L) {
   return 1;
 }
 
-// Calls graph.translate(text, {mode=, setup=}) with the module table on the
-// stack top; leaves the result on the stack.
-int l_call_graph(lua_State* L) {
-  // args: module table, text, mode, setup
-  lua_getfield(L, 1, "translate");
-  if (!lua_isfunction(L, -1)) throw ArgError("module translate.graph has no function translate(text, opts)");
+// ---- squawk.translate.utterance: the C++ extractors the Lua grammar reads ----
+
+constexpr const char* kUtteranceMt = "squawk.translate.Utterance";
+
+// Tokens (spelling fixed), the references found in them, and the mask of
+// tokens already consumed (by references and by the grammar).
+struct Utterance {
+  std::vector<translate::Token> tokens;
+  std::vector<bool> used;
+  std::vector<translate::Reference> refs;
+};
+
+const char* tok_kind(translate::TokKind k) {
+  switch (k) {
+    case translate::TokKind::kWord: return "word";
+    case translate::TokKind::kNumber: return "number";
+    case translate::TokKind::kPunct: return "punct";
+    case translate::TokKind::kQuoted: return "quoted";
+  }
+  return "word";
+}
+
+const char* q_kind(translate::QKind k) {
+  static const char* const names[] = {"plain", "alt", "speed", "mach", "heading", "vs", "lat",
+                                      "lon", "time", "dist", "percent", "mult", "angle"};
+  return names[static_cast<int>(k)];
+}
+
+void set_bool(lua_State* L, const char* k, bool v) {
+  lua_pushboolean(L, v);
+  lua_setfield(L, -2, k);
+}
+void set_int(lua_State* L, const char* k, lua_Integer v) {
+  lua_pushinteger(L, v);
+  lua_setfield(L, -2, k);
+}
+void set_num(lua_State* L, const char* k, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, k);
+}
+void set_str(lua_State* L, const char* k, const std::string& v) {
+  lua_pushlstring(L, v.data(), v.size());
+  lua_setfield(L, -2, k);
+}
+
+// Token indices go to Lua 1-based; ranges are [b, e) with e one past the end.
+void push_number(lua_State* L, const translate::SpokenNumber& n, size_t offset) {
+  lua_createtable(L, 0, 10);
+  set_num(L, "value", n.value);
+  set_str(L, "digits", n.digits);
+  set_int(L, "b", static_cast<lua_Integer>(n.begin + offset + 1));
+  set_int(L, "e", static_cast<lua_Integer>(n.end + offset + 1));
+  set_bool(L, "typed", n.typed);
+  set_bool(L, "thousand", n.has_thousand);
+  set_bool(L, "hundred", n.has_hundred);
+  set_bool(L, "decimal", n.has_decimal);
+  set_int(L, "groups", n.groups);
+  set_bool(L, "lead_digit", n.leading_digit_word);
+}
+
+int l_utterance(lua_State* L) {
+  const std::string text = arg_string(L, 1, "text");
+  lua_settop(L, 2);
+  auto* u = new_object<Utterance>(L, kUtteranceMt);
+  u->tokens = translate::lex(text);
+  for (auto& t : u->tokens)
+    if (t.kind == translate::TokKind::kWord) t.text = translate::spell_fix(t.text);
+  translate::fold_digit_homophones(u->tokens);
+  u->used.assign(u->tokens.size(), false);
+  if (lua_isnoneornil(L, 2)) {
+    u->refs = translate::find_references(u->tokens, nullptr, u->used);
+  } else if (lua_istable(L, 2)) {
+    translate::StaticWorld w = read_world(L, 2);
+    u->refs = translate::find_references(u->tokens, &w, u->used);
+  } else {
+    throw ArgError(type_error(L, 2, "world", "nil or a world table"));
+  }
+  return 1;
+}
+
+int l_u_tokens(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  lua_createtable(L, static_cast<int>(u->tokens.size()), 0);
+  for (size_t i = 0; i < u->tokens.size(); ++i) {
+    const auto& t = u->tokens[i];
+    lua_createtable(L, 0, 8);
+    lua_pushstring(L, tok_kind(t.kind));
+    lua_setfield(L, -2, "kind");
+    set_str(L, "text", t.text);
+    set_str(L, "raw", t.raw);
+    set_num(L, "num", t.num);
+    set_bool(L, "number_word", translate::is_number_word(t));
+    if (t.kind == translate::TokKind::kWord) {
+      set_bool(L, "keyword", translate::is_keyword(t.text));
+      set_bool(L, "filler", translate::is_filler(t.text));
+      set_bool(L, "alpha", translate::is_alpha(t.text));
+    }
+    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  return 1;
+}
+
+int l_u_refs(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  lua_createtable(L, static_cast<int>(u->refs.size()), 0);
+  for (size_t i = 0; i < u->refs.size(); ++i) {
+    const auto& r = u->refs[i];
+    lua_createtable(L, 0, 6);
+    lua_pushstring(L, r.kind == translate::RefKind::kAircraft ? "aircraft"
+                      : r.kind == translate::RefKind::kType   ? "type"
+                                                              : "waypoint");
+    lua_setfield(L, -2, "kind");
+    set_str(L, "name", r.name);
+    set_int(L, "b", static_cast<lua_Integer>(r.begin + 1));
+    set_int(L, "e", static_cast<lua_Integer>(r.end + 1));
+    set_bool(L, "exists", r.exists);
+    set_bool(L, "spoken", r.spoken);
+    if (!r.heard.id.empty()) {
+      lua_createtable(L, 0, 3);
+      set_str(L, "id", r.heard.id);
+      set_num(L, "airline", r.heard.airline);
+      set_num(L, "digits", r.heard.digits);
+      lua_setfield(L, -2, "heard");
+    }
+    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  return 1;
+}
+
+// Clamps a Lua [b, e) range to 0-based token indices.
+std::pair<size_t, size_t> range_arg(lua_State* L, const Utterance& u) {
+  const long long n = static_cast<long long>(u.tokens.size());
+  long long b = arg_integer(L, 2, "b") - 1, e = arg_integer(L, 3, "e") - 1;
+  b = std::clamp(b, 0LL, n);
+  e = std::clamp(e, b, n);
+  return {static_cast<size_t>(b), static_cast<size_t>(e)};
+}
+
+int l_u_quantities(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  auto [b, e] = range_arg(L, *u);
+  auto qs = translate::extract_quantities(u->tokens, b, e, u->used);
+  lua_createtable(L, static_cast<int>(qs.size()), 0);
+  for (size_t i = 0; i < qs.size(); ++i) {
+    const auto& q = qs[i];
+    lua_createtable(L, 0, 9);
+    lua_pushstring(L, q_kind(q.kind));
+    lua_setfield(L, -2, "kind");
+    set_num(L, "value", q.value);
+    set_int(L, "b", static_cast<lua_Integer>(q.begin + 1));
+    set_int(L, "e", static_cast<lua_Integer>(q.end + 1));
+    set_bool(L, "fl", q.flight_level);
+    set_bool(L, "by", q.by);
+    set_bool(L, "to", q.to);
+    set_int(L, "turn", q.turn);
+    push_number(L, q.number, 0);
+    lua_setfield(L, -2, "number");
+    lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  return 1;
+}
+
+int l_u_mark_used(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  auto [b, e] = range_arg(L, *u);
+  for (size_t i = b; i < e; ++i) u->used[i] = true;
+  return 0;
+}
+
+int l_u_used(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  const long long i = arg_integer(L, 2, "i") - 1;
+  lua_pushboolean(L, i >= 0 && i < static_cast<long long>(u->used.size()) && u->used[static_cast<size_t>(i)]);
+  return 1;
+}
+
+// u:number(b, e) -> the number read from tokens [b, e) alone when it spans
+// all of them, else nil (re-reading part of a misheard number).
+int l_u_number(lua_State* L) {
+  auto* u = arg_object<Utterance>(L, 1, kUtteranceMt);
+  auto [b, e] = range_arg(L, *u);
+  std::vector<translate::Token> part(u->tokens.begin() + static_cast<long>(b), u->tokens.begin() + static_cast<long>(e));
+  auto n = translate::read_number(part, 0);
+  if (!n || n->end != part.size() || part.empty()) {
+    lua_pushnil(L);
+    return 1;
+  }
+  push_number(L, *n, b);
+  return 1;
+}
+
+// Pushes a JSON value as Lua (objects and arrays as tables, null as nil).
+void push_json(lua_State* L, const nlohmann::json& j, int depth) {
+  if (depth > 64) throw ArgError("json_decode: nested deeper than 64 levels");
+  luaL_checkstack(L, 4, "json_decode");
+  if (j.is_object()) {
+    lua_createtable(L, 0, static_cast<int>(j.size()));
+    for (const auto& [k, v] : j.items()) {
+      push_json(L, v, depth + 1);
+      lua_setfield(L, -2, k.c_str());
+    }
+  } else if (j.is_array()) {
+    lua_createtable(L, static_cast<int>(j.size()), 0);
+    lua_Integer i = 0;
+    for (const auto& v : j) {
+      push_json(L, v, depth + 1);
+      lua_seti(L, -2, ++i);
+    }
+  } else if (j.is_string()) {
+    const auto& str = j.get_ref<const std::string&>();
+    lua_pushlstring(L, str.data(), str.size());
+  } else if (j.is_boolean()) {
+    lua_pushboolean(L, j.get<bool>());
+  } else if (j.is_number_integer()) {
+    lua_pushinteger(L, j.get<lua_Integer>());
+  } else if (j.is_number()) {
+    lua_pushnumber(L, j.get<double>());
+  } else {
+    lua_pushnil(L);
+  }
+}
+
+// squawk.translate.json_decode(text) -> value; raises on text that is not JSON.
+int l_json_decode(lua_State* L) {
+  const auto j = nlohmann::json::parse(arg_string(L, 1, "text"), nullptr, false);
+  if (j.is_discarded()) throw ArgError("json_decode: the text is not valid JSON");
+  push_json(L, j, 0);
+  return 1;
+}
+
+// squawk.translate.best_match(spoken, {names}) -> index (1-based), score | nil
+int l_best_match(lua_State* L) {
+  const std::string spoken = arg_string(L, 1, "spoken");
+  auto names = string_list(L, 2, "names");
+  auto m = translate::best_match(spoken, names);
+  if (!m) return 0;
+  lua_pushinteger(L, static_cast<lua_Integer>(m->index + 1));
+  lua_pushnumber(L, m->score);
+  return 2;
+}
+
+// Leaves the translate.graph module on the stack (loaded once per state
+// through the sandbox's require); raises the loading error.
+void push_graph_module(lua_State* L) {
+  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
+  if (!lua_isnil(L, -1)) return;
+  lua_pop(L, 1);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, kTranslationGraphModule);
+  lua_call(L, 1, 1);
+  lua_pushvalue(L, -1);
+  lua_setfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
+}
+
+int l_run(lua_State* L) {
+  lua_settop(L, 2);
+  push_graph_module(L);
+  lua_getfield(L, -1, "translate");
+  lua_pushvalue(L, 1);
   lua_pushvalue(L, 2);
-  lua_createtable(L, 0, 2);
-  lua_pushvalue(L, 3);
-  lua_setfield(L, -2, "mode");
-  lua_pushvalue(L, 4);
-  lua_setfield(L, -2, "setup");
   lua_call(L, 2, 1);
   return 1;
 }
 
-}  // namespace
-
-void bind_translate(lua_State* L) {
-  push_squawk_subtable(L, "translate");
-  const luaL_Reg fns[] = {{"offline", guarded<l_offline>},
-                          {"score", guarded<l_score>},
-                          {"corpus", guarded<l_corpus>},
-                          {nullptr, nullptr}};
-  luaL_setfuncs(L, fns, 0);
-  lua_pop(L, 1);
+// Pushes the opts table of a GraphRequest (the sim as a copy).
+void push_request(lua_State* L, const GraphRequest& req) {
+  lua_createtable(L, 0, 3);
+  set_str(L, "mode", req.mode);
+  set_str(L, "setup", req.setup);
+  if (req.sim) {
+    new_object<command::Stack>(L, kSimMt, *req.sim);
+    lua_setfield(L, -2, "sim");
+  }
 }
 
-Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const std::string& mode,
-                                                     const std::string& setup) {
-  lua_State* L = vm.state();
-  const int top = lua_gettop(L);
-  // Load the module once per Vm through the sandbox's require.
-  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
-  if (lua_isnil(L, -1)) {
-    lua_pop(L, 1);
-    lua_getglobal(L, "require");
-    lua_pushstring(L, kTranslationGraphModule);
-    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-      std::string msg = std::string("cannot load the translation graph (scripts/translate/graph.lua): ") +
-                        (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
-      lua_settop(L, top);
-      return Status::not_found(msg);
-    }
-    lua_pushvalue(L, -1);
-    lua_setfield(L, LUA_REGISTRYINDEX, "squawk.translate.graph");
-  }
-  lua_pushcfunction(L, guarded<l_call_graph>);
-  lua_insert(L, -2);
-  lua_pushstring(L, text.c_str());
-  lua_pushstring(L, mode.c_str());
-  lua_pushstring(L, setup.c_str());
-  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
-  if (lua_pcall(L, 4, 1, 0) != LUA_OK) {
-    std::string msg = std::string("translation graph: ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
-    lua_settop(L, top);
-    return Status::internal(msg);
-  }
-  translate::Translation tr;
-  if (!lua_istable(L, -1)) {
-    lua_settop(L, top);
+// Reads the graph's result table at the stack top.
+Result<translate::Translation> read_result(lua_State* L) {
+  if (!lua_istable(L, -1))
     return Status::invalid("translation graph: translate() must return {commands = {...}} or {ask = \"...\"}");
-  }
+  translate::Translation tr;
   lua_getfield(L, -1, "ask");
   if (lua_type(L, -1) == LUA_TSTRING) tr.ask = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  lua_getfield(L, -1, "error");
+  if (lua_type(L, -1) == LUA_TSTRING) tr.error = lua_tostring(L, -1);
   lua_pop(L, 1);
   lua_getfield(L, -1, "commands");
   if (lua_istable(L, -1)) {
@@ -212,8 +417,128 @@ Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& 
       lua_pop(L, 1);
     }
   }
+  lua_pop(L, 1);
+  if (!tr.error.empty()) tr.commands.clear();  // a rejected candidate is never issued
+  return tr;
+}
+
+// Runs fn(L) (which leaves one value) under pcall; the error becomes a Status.
+template <class F>
+Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  struct Ctx { F* fn; } ctx{&fn};
+  lua_pushcfunction(L, [](lua_State* S) -> int {
+    auto* c = static_cast<Ctx*>(lua_touserdata(S, 1));
+    lua_settop(S, 0);
+    (*c->fn)(S);
+    return 1;
+  });
+  lua_pushlightuserdata(L, &ctx);
+  const Vm::Call budget(vm);  // a fresh instruction budget
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    std::string msg = std::string("translation graph (scripts/translate/graph.lua): ") +
+                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  auto tr = read_result(L);
   lua_settop(L, top);
   return tr;
+}
+
+}  // namespace
+
+void bind_translate(lua_State* L) {
+  push_squawk_subtable(L, "translate");
+  const luaL_Reg fns[] = {{"run", guarded<l_run>},
+                          {"score", guarded<l_score>},
+                          {"corpus", guarded<l_corpus>},
+                          {"utterance", guarded<l_utterance>},
+                          {"best_match", guarded<l_best_match>},
+                          {"json_decode", guarded<l_json_decode>},
+                          {nullptr, nullptr}};
+  luaL_setfuncs(L, fns, 0);
+  lua_pop(L, 1);
+  const luaL_Reg methods[] = {{"tokens", guarded<l_u_tokens>},
+                              {"refs", guarded<l_u_refs>},
+                              {"quantities", guarded<l_u_quantities>},
+                              {"mark_used", guarded<l_u_mark_used>},
+                              {"used", guarded<l_u_used>},
+                              {"number", guarded<l_u_number>},
+                              {nullptr, nullptr}};
+  define_class(L, kUtteranceMt, methods);
+}
+
+
+Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req) {
+  return protected_call(vm, [&](lua_State* L) {
+    push_graph_module(L);
+    lua_getfield(L, -1, "translate");
+    lua_pushstring(L, text.c_str());
+    push_request(L, req);
+    lua_call(L, 2, 1);
+  });
+}
+
+Result<std::vector<rag::Document>> grammar_documents(Vm& vm) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, "translate.grammar");
+  const Vm::Call budget(vm);
+  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+    std::string msg = std::string("grammar (scripts/translate/grammar.lua): ") +
+                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  lua_getfield(L, -1, "documents");
+  if (lua_pcall(L, 0, 1, 0) != LUA_OK || !lua_istable(L, -1)) {
+    std::string msg = std::string("grammar.documents(): ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "no list");
+    lua_settop(L, top);
+    return Status::internal(msg);
+  }
+  std::vector<rag::Document> docs;
+  const lua_Integer n = luaL_len(L, -1);
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, -1, i);
+    lua_getfield(L, -1, "command");
+    lua_getfield(L, -2, "text");
+    if (lua_isstring(L, -2) && lua_isstring(L, -1)) docs.push_back({lua_tostring(L, -2), lua_tostring(L, -1)});
+    lua_pop(L, 3);
+  }
+  lua_settop(L, top);
+  return docs;
+}
+
+Result<GraphDialogue> GraphDialogue::open(Vm& vm, const GraphRequest& req) {
+  int ref = LUA_NOREF;
+  auto made = protected_call(vm, [&](lua_State* L) {
+    push_graph_module(L);
+    lua_getfield(L, -1, "dialogue");
+    push_request(L, req);
+    lua_call(L, 1, 1);
+    lua_pushvalue(L, -1);
+    ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    lua_newtable(L);  // a well-shaped result for protected_call
+  });
+  if (!made.is_ok()) return made.status();
+  return GraphDialogue(vm, ref);
+}
+
+GraphDialogue::~GraphDialogue() {
+  if (ref_ >= 0) luaL_unref(vm_->state(), LUA_REGISTRYINDEX, ref_);
+}
+
+Result<translate::Translation> GraphDialogue::say(const std::string& text) {
+  return protected_call(*vm_, [&](lua_State* L) {
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref_);
+    lua_getfield(L, -1, "say");
+    lua_insert(L, -2);
+    lua_pushstring(L, text.c_str());
+    lua_call(L, 2, 1);
+  });
 }
 
 }  // namespace squawk::script

@@ -45,15 +45,7 @@ Result<std::shared_ptr<PromptRenderer>> PromptRenderer::load(const std::string& 
   return r;
 }
 
-PromptRenderer::~PromptRenderer() {
-  if (vm_ && render_ref_ >= 0) luaL_unref(vm_->state(), LUA_REGISTRYINDEX, render_ref_);
-}
-
-Result<std::string> PromptRenderer::render(const env::Observation& obs) {
-  lua_State* L = vm_->state();
-  const int base = lua_gettop(L);
-  lua_pushcfunction(L, traceback_handler);
-  lua_rawgeti(L, LUA_REGISTRYINDEX, render_ref_);
+void push_observation(lua_State* L, const env::Observation& obs) {
   lua_createtable(L, 0, 8);
   push_array(L, obs.intruder_distance);
   lua_setfield(L, -2, "intruder_distance");
@@ -71,6 +63,18 @@ Result<std::string> PromptRenderer::render(const env::Observation& obs) {
   lua_setfield(L, -2, "cos_drift");
   push_array(L, {obs.sin_drift});
   lua_setfield(L, -2, "sin_drift");
+}
+
+PromptRenderer::~PromptRenderer() {
+  if (vm_ && render_ref_ >= 0) luaL_unref(vm_->state(), LUA_REGISTRYINDEX, render_ref_);
+}
+
+Result<std::string> PromptRenderer::render(const env::Observation& obs) {
+  lua_State* L = vm_->state();
+  const int base = lua_gettop(L);
+  lua_pushcfunction(L, traceback_handler);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, render_ref_);
+  push_observation(L, obs);
   const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (lua_pcall(L, 1, 1, base + 1) != LUA_OK) {
     std::string msg = lua_tostring(L, -1);

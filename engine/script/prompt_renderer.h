@@ -17,7 +17,14 @@
 #include "env/observation.h"
 #include "script/vm.h"
 
+struct lua_State;
+
 namespace squawk::script {
+
+// Pushes the observation as the table render() receives (and env:observation()
+// returns): the eight named fields of env/observation.h, each an array of
+// numbers (the single values as one-element arrays). One shape for both.
+void push_observation(lua_State* L, const env::Observation& obs);
 
 class PromptRenderer {
  public:

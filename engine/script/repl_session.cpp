@@ -32,7 +32,8 @@ Status pcall(lua_State* L, int nargs, int nresults) {
 
 }  // namespace
 
-Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const std::string& mode) {
+Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const std::string& mode,
+                                      double clock) {
   lua_State* L = vm.state();
   const int top = lua_gettop(L);
   lua_getglobal(L, "require");
@@ -50,6 +51,10 @@ Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const
   }
   lua_pushinteger(L, static_cast<lua_Integer>(vm.options().seed));
   lua_setfield(L, -2, "seed");
+  if (clock > 0) {
+    lua_pushnumber(L, clock);
+    lua_setfield(L, -2, "clock");
+  }
   Status st = pcall(L, 1, 1);
   if (!st.is_ok()) {
     lua_settop(L, top);
@@ -60,19 +65,20 @@ Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const
   return ReplSession(vm);
 }
 
-Status ReplSession::call(const char* method, const std::string* arg, int nresults) {
+Status ReplSession::call(const char* method, int nargs, int nresults) {
   lua_State* L = vm_->state();
   lua_getfield(L, LUA_REGISTRYINDEX, kSessionKey);
   lua_getfield(L, -1, method);
-  lua_insert(L, -2);  // method, session
-  if (arg) lua_pushlstring(L, arg->data(), arg->size());
-  return pcall(L, arg ? 2 : 1, nresults);
+  lua_insert(L, -2);                  // method, session
+  lua_rotate(L, -2 - nargs, 2);       // method, session, args...
+  return pcall(L, nargs + 1, nresults);
 }
 
 Result<ReplReply> ReplSession::handle(const std::string& line) {
   lua_State* L = vm_->state();
   const int top = lua_gettop(L);
-  SQUAWK_RETURN_IF_ERROR(call("handle", &line, 2));
+  lua_pushlstring(L, line.data(), line.size());
+  SQUAWK_RETURN_IF_ERROR(call("handle", 1, 2));
   ReplReply r;
   size_t n = 0;
   const char* s = lua_tolstring(L, -2, &n);
@@ -82,13 +88,45 @@ Result<ReplReply> ReplSession::handle(const std::string& line) {
   return r;
 }
 
-Result<std::string> ReplSession::banner() {
+Result<std::string> ReplSession::text_of(const char* method) {
   lua_State* L = vm_->state();
   const int top = lua_gettop(L);
-  SQUAWK_RETURN_IF_ERROR(call("banner", nullptr, 1));
+  SQUAWK_RETURN_IF_ERROR(call(method, 0, 1));
   std::string text = lua_tostring(L, -1) ? lua_tostring(L, -1) : "";
   lua_settop(L, top);
   return text;
+}
+
+Result<std::string> ReplSession::banner() { return text_of("banner"); }
+
+Result<std::string> ReplSession::opening() { return text_of("opening"); }
+
+Result<std::string> ReplSession::tick(double wall_s) {
+  lua_State* L = vm_->state();
+  const int top = lua_gettop(L);
+  lua_pushnumber(L, wall_s);
+  SQUAWK_RETURN_IF_ERROR(call("tick", 1, 1));
+  std::string text = lua_tostring(L, -1) ? lua_tostring(L, -1) : "";
+  lua_settop(L, top);
+  return text;
+}
+
+Result<std::vector<std::string>> ReplSession::complete(const std::string& prefix) {
+  lua_State* L = vm_->state();
+  const int top = lua_gettop(L);
+  lua_pushlstring(L, prefix.data(), prefix.size());
+  SQUAWK_RETURN_IF_ERROR(call("complete", 1, 1));
+  std::vector<std::string> words;
+  if (lua_istable(L, -1)) {
+    const lua_Integer n = luaL_len(L, -1);
+    for (lua_Integer k = 1; k <= n; ++k) {
+      lua_geti(L, -1, k);
+      if (const char* w = lua_tostring(L, -1)) words.emplace_back(w);
+      lua_pop(L, 1);
+    }
+  }
+  lua_settop(L, top);
+  return words;
 }
 
 }  // namespace squawk::script

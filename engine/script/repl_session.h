@@ -2,13 +2,17 @@
 // module `translate.repl`), driven line by line from C++.
 //
 // Contract: open() creates the module's session in `vm` with the scenario
-// (empty: none) and translation mode (empty: the graph's default); handle()
-// passes one input line and returns the text to print and whether the user
-// asked to quit. Lua errors come back as Status with the traceback; the
-// session stays usable after an error in one line.
+// (empty: none), translation mode (empty: the graph's default) and running
+// clock (multiplier of real time; 0: stopped); handle() passes one input line
+// and returns the text to print and whether the user asked to quit; tick()
+// advances the running clock by `wall_s` seconds of real time and returns
+// what happened ("" when nothing); complete() lists the completions of a
+// word. Lua errors come back as Status with the traceback; the session
+// stays usable after an error in one line.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/status.h"
 #include "script/vm.h"
@@ -22,14 +26,21 @@ struct ReplReply {
 
 class ReplSession {
  public:
-  static Result<ReplSession> open(Vm& vm, const std::string& scenario, const std::string& mode);
+  static Result<ReplSession> open(Vm& vm, const std::string& scenario, const std::string& mode,
+                                  double clock = 0.0);
   Result<ReplReply> handle(const std::string& line);
   Result<std::string> banner();
+  Result<std::string> opening();  // what loading the scenario did
+  Result<std::string> tick(double wall_s);
+  Result<std::vector<std::string>> complete(const std::string& prefix);
 
  private:
   explicit ReplSession(Vm& vm) : vm_(&vm) {}
-  // Calls session:<method>(arg) with results left on the Lua stack.
-  Status call(const char* method, const std::string* arg, int nresults);
+  // Calls session:<method>(args...) with results left on the Lua stack; the
+  // pushers push the arguments.
+  Status call(const char* method, int nargs, int nresults);
+  // session:<method>() -> string.
+  Result<std::string> text_of(const char* method);
   Vm* vm_;
 };
 

@@ -1,27 +1,60 @@
 // Calling the Lua translation graph (scripts/translate/graph.lua, the
-// `translate.graph` module) from C++: what `squawk eval-translate --mode
-// single|multi` uses. The graph is the LLM-backed translator; the offline
-// grammar is one of its nodes.
+// `translate.graph` module) from C++: the one path every C++ entry point
+// (squawk translate, eval-translate, demo) takes, so an edit to the graph,
+// its nodes or the grammar files reaches them all.
 //
-// Contract of the module: it returns a table with a function
-//   translate(text, {mode = "single" | "multi", setup = "CMD ; CMD"})
-//     -> {commands = {"CMD", ...}} or {ask = "question"}
+// Contract of the module (see graph.lua):
+//   translate(text, {mode =, sim =, setup =}) -> {commands = {...}} | {ask = "..."}, .error
+//   dialogue({mode =, sim =}) -> d;  d:say(text) -> the same shape
 // run_translation_graph() loads the module into `vm` (once per Vm) and calls
-// it; a Lua error, a missing module or a result of another shape comes back
-// as a Status naming the case's problem.
+// it; a Lua error (including one raised while loading graph.lua), a missing
+// module or a result of another shape comes back as a Status naming the
+// problem. `sim`, when given, is copied into the VM; the graph never changes
+// it (candidates run on scratch copies), so the caller's Stack is untouched.
 #pragma once
 
 #include <string>
 
+#include "command/stack.h"
 #include "core/status.h"
+#include "rag/document.h"
 #include "script/vm.h"
-#include "translate/offline_translator.h"
+#include "translate/translation.h"
 
 namespace squawk::script {
 
 inline constexpr const char* kTranslationGraphModule = "translate.graph";
 
-Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const std::string& mode,
-                                                     const std::string& setup);
+struct GraphRequest {
+  std::string mode = "offline";          // offline | single | multi
+  std::string setup;                      // TrafScript run on a new sim when `sim` is null
+  const command::Stack* sim = nullptr;    // the traffic to translate against (copied)
+};
+
+Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req);
+
+// The grammar's retrieval documents (translate.grammar.documents()): the
+// words of its rules and `words` lines, per registry command.
+Result<std::vector<rag::Document>> grammar_documents(Vm& vm);
+
+// A conversation through graph.dialogue(): a question keeps its partial
+// command and the next say() may answer it; "cancel" drops it. The Vm must
+// outlive the dialogue.
+class GraphDialogue {
+ public:
+  // Fails (a Status) when the graph cannot be loaded.
+  static Result<GraphDialogue> open(Vm& vm, const GraphRequest& req);
+  GraphDialogue(GraphDialogue&& o) noexcept : vm_(o.vm_), ref_(o.ref_) { o.ref_ = -1; }
+  GraphDialogue(const GraphDialogue&) = delete;
+  GraphDialogue& operator=(const GraphDialogue&) = delete;
+  GraphDialogue& operator=(GraphDialogue&&) = delete;
+  ~GraphDialogue();
+  Result<translate::Translation> say(const std::string& text);
+
+ private:
+  GraphDialogue(Vm& vm, int ref) : vm_(&vm), ref_(ref) {}
+  Vm* vm_;
+  int ref_;  // registry reference of the Lua dialogue object
+};
 
 }  // namespace squawk::script

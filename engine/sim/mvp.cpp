@@ -65,12 +65,14 @@ Dv mvp_pair(const Traffic& t, const ConflictPair& c, double rpz_m, double hpz_m,
   return dv;
 }
 
-// [vmin, vmax] CAS limits of aircraft i as TAS [m/s] at its altitude, with
-// the ground cap when it applies.
-std::pair<double, double> tas_limits(const Traffic& t, int i, const PerformanceOptions& po) {
+// Limits [m/s] of the resolution ground speed of aircraft i: the [vmin, vmax]
+// CAS envelope numbers taken as they are (BlueSky's MVP caps the ground
+// speed with them), with the ground cap when it applies. The performance
+// limits then apply to the resulting TAS target as to any other.
+std::pair<double, double> gs_limits(const Traffic& t, int i, const PerformanceOptions& po) {
   double vmax = t.perf[i].vmax;
   if (po.ground_cap && t.alt[i] <= po.ground_alt) vmax = std::min(vmax, po.ground_vmax);
-  return {cas_to_tas(t.perf[i].vmin, t.alt[i]), cas_to_tas(vmax, t.alt[i])};
+  return {t.perf[i].vmin, vmax};
 }
 }  // namespace
 
@@ -96,9 +98,9 @@ void MvpResolver::resolve(Traffic& t, const ConflictDetector& cd, const CdSettin
       const double ve = t.gseast[i] + dve_[i], vn = t.gsnorth[i] + dvn_[i];
       double trk = std::atan2(ve, vn) / kDeg;
       if (trk < 0.0) trk += 360.0;
-      const auto [vmin, vmax] = tas_limits(t, i, po);
+      const auto [vmin, vmax] = gs_limits(t, i, po);
       t.cr_trk[i] = trk;
-      t.cr_tas[i] = std::clamp(std::hypot(ve, vn), vmin, vmax);
+      t.cr_tas[i] = std::min(std::max(std::hypot(ve, vn), vmin), vmax);
       const double vs = std::clamp(t.vs[i] + dvz_[i], t.perf[i].vsmin, t.perf[i].vsmax);
       t.cr_vs[i] = vs;
       t.cr_alt[i] = crs.vertical ? t.alt[i] + vs * tsol_[i] : t.sel_alt[i];

@@ -34,6 +34,7 @@ struct PerfLimits {
   double vsmax;  // [m/s]
   double hmax;   // [m] ceiling
   double axmax;  // [m/s^2] airborne longitudinal acceleration limit
+  double mmo = 1e9;  // [-] maximum Mach (OpenAP; none in the class table)
 };
 
 struct PerformanceOptions {

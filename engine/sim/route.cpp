@@ -1,5 +1,6 @@
 #include "sim/route.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/geo.h"
@@ -18,8 +19,9 @@ std::string wp_error(const Waypoint& wp, const char* what) {
 Status not_in_route(std::string_view name) {
   return Status::not_found(std::string("waypoint ").append(text::quoted(name)).append(" is not in the route"));
 }
-Waypoint normalized(Waypoint wp) {
+Waypoint normalized(Waypoint wp, bool flyover_mode) {
   wp.name = text::upper(text::trim(wp.name));
+  wp.flyover = wp.flyover || flyover_mode;
   return wp;
 }
 }  // namespace
@@ -46,9 +48,9 @@ Status Route::validate(const Waypoint& wp) const {
 Status Route::add(Waypoint wp) {
   SQUAWK_RETURN_IF_ERROR(validate(wp));
   const int at = dest_.empty() ? size() : size() - 1;
-  wps_.insert(wps_.begin() + at, normalized(std::move(wp)));
+  wps_.insert(wps_.begin() + at, normalized(std::move(wp), flyover_mode_));
   if (active_ < 0) active_ = at;
-  else if (active_ >= at) ++active_;
+  else if (active_ > at) ++active_;
   return Status::ok();
 }
 
@@ -58,7 +60,7 @@ Status Route::insert_after(std::string_view ref, Waypoint wp) {
   if (k < 0) return not_in_route(ref);
   if (!dest_.empty() && k == size() - 1)
     return Status::invalid(std::string("waypoint ").append(text::quoted(ref)).append(" is the destination; nothing can follow it"));
-  wps_.insert(wps_.begin() + k + 1, normalized(std::move(wp)));
+  wps_.insert(wps_.begin() + k + 1, normalized(std::move(wp), flyover_mode_));
   if (active_ > k) ++active_;
   return Status::ok();
 }
@@ -67,7 +69,7 @@ Status Route::insert_before(std::string_view ref, Waypoint wp) {
   SQUAWK_RETURN_IF_ERROR(validate(wp));
   const int k = find(ref);
   if (k < 0) return not_in_route(ref);
-  wps_.insert(wps_.begin() + k, normalized(std::move(wp)));
+  wps_.insert(wps_.begin() + k, normalized(std::move(wp), flyover_mode_));
   if (active_ >= k) ++active_;
   return Status::ok();
 }
@@ -84,6 +86,7 @@ Status Route::remove(std::string_view name) {
 
 void Route::clear() {
   wps_.clear();
+  flyover_mode_ = false;
   active_ = -1;
   dest_.clear();
   orig_name_.clear();
@@ -99,7 +102,7 @@ Status Route::direct_to(std::string_view name) {
 
 Status Route::set_dest(Waypoint dest) {
   SQUAWK_RETURN_IF_ERROR(validate(dest));
-  Waypoint wp = normalized(std::move(dest));
+  Waypoint wp = normalized(std::move(dest), flyover_mode_);
   if (!dest_.empty()) {
     wps_.back() = wp;
   } else {
@@ -116,6 +119,16 @@ Status Route::set_orig(Waypoint orig) {
   orig_lat_ = orig.lat;
   orig_lon_ = orig.lon;
   return Status::ok();
+}
+
+Route::AltTarget Route::alt_target(int k) const {
+  double x = 0.0;
+  for (int j = k; j >= 0 && j < size(); ++j) {
+    if (wps_[j].has_alt()) return {wps_[j].alt, x};
+    if (j + 1 < size())
+      x += units::nm_to_m(geo::qdrdist(wps_[j].lat, wps_[j].lon, wps_[j + 1].lat, wps_[j + 1].lon).dist_nm);
+  }
+  return {kNoConstraint, 0.0};
 }
 
 bool Route::advance() {
@@ -140,18 +153,24 @@ void Route::serialize(std::string& out) const {
     put<uint8_t>(out, w.flyover ? 1 : 0);
   }
   put<int64_t>(out, active_);
+  put<uint8_t>(out, flyover_mode_ ? 1 : 0);
   bytes::put_str(out, dest_);
   bytes::put_str(out, orig_name_);
   put(out, orig_lat_);
   put(out, orig_lon_);
 }
 
-bool waypoint_reached(double dist, double qdr, double next_qdr, double trk, double tas, double bank) {
-  const double turn_radius = tas * tas / (units::kG0 * std::tan(bank));
-  const double dpsi = std::fabs(geo::wrap180(next_qdr - qdr)) * units::kDeg;
-  const double turn_dist = std::fabs(turn_radius * std::tan(0.5 * dpsi));
-  const bool away = std::fabs(geo::wrap180(trk - qdr)) > 90.0;
-  return dist < turn_dist || (away && dist < 1.02 * turn_radius);
+bool waypoint_reached(double dist, double qdr, double curlegdir, double trk, double gs, double turndist) {
+  const bool close = dist / std::max(1e-4, std::fabs(gs)) < 4.0;  // [s] within 4 s of flight
+  const bool too_close_to_turn = close && std::fabs(geo::wrap180(trk - qdr)) > 90.0;
+  const bool passed = std::fabs(geo::wrap180(qdr - curlegdir)) > 90.0;
+  return too_close_to_turn || passed || dist < turndist;
+}
+
+double turn_distance(double tas, double bank, double qdr, double next_qdr, bool flyby) {
+  if (!flyby) return 0.0;
+  const double r = tas * tas / (units::kG0 * std::tan(bank));
+  return std::fabs(r * std::tan(0.5 * std::fabs(geo::wrap180(qdr - next_qdr)) * units::kDeg));
 }
 
 }  // namespace squawk::sim

@@ -11,11 +11,14 @@
 // - Every mutator validates first; on error the route is unchanged and the
 //   message names the waypoint and what was expected.
 //
-// LNAV passage rule (BlueSky's ActiveWaypoint.reached): with turn radius
-// R = tas^2 / (g0 tan(bank)) and course change dpsi at the waypoint (0 for a
-// fly-over or the last waypoint), the aircraft switches to the next waypoint
-// when dist < R tan(|dpsi|/2), or when the waypoint is behind it
-// (|trk - qdr| > 90 deg) and dist < 1.02 R.
+// LNAV passage rule (BlueSky's ActiveWaypoint.reached and calcturn): when a
+// waypoint becomes active, the turn distance is fixed from the TAS then,
+// R = tas^2 / (g0 tan(bank)) and the course change dpsi at the waypoint:
+// R tan(|dpsi|/2) for a fly-by, 0 for a fly-over or the last waypoint, and
+// the leg direction curlegdir is the bearing to it then. The aircraft
+// switches to the next waypoint when dist < turn distance, or when the
+// bearing to the waypoint is more than 90 deg off curlegdir (passed), or
+// when it is within 4 s of flight and more than 90 deg off the track.
 #pragma once
 
 #include <limits>
@@ -52,7 +55,8 @@ class Route {
   int find(std::string_view name) const;
 
   // Appends `wp` (before the destination, if any). Becomes active when the
-  // route had no active waypoint. Errors: empty name, non-finite or
+  // route had no active waypoint, or when the destination was active (the
+  // active index stays where the new waypoint lands, as in BlueSky). Errors: empty name, non-finite or
   // out-of-range lat/lon, negative altitude or speed constraint.
   Status add(Waypoint wp);
   // Inserts after / before the waypoint named `ref`. Errors: as add(), and
@@ -76,6 +80,19 @@ class Route {
   double orig_lat() const { return orig_lat_; }  // [deg]
   double orig_lon() const { return orig_lon_; }  // [deg]
 
+  // BlueSky's flight-plan altitude target of waypoint k: the first waypoint
+  // at or after k with an altitude constraint (toalt [m], NaN when none) and
+  // the route distance xtoalt [m] from waypoint k to it (WGS-84 legs).
+  struct AltTarget {
+    double toalt;
+    double xtoalt;
+  };
+  AltTarget alt_target(int k) const;
+
+  // ADDWPT acid FLYOVER / FLYBY: the mode of waypoints added from now on.
+  void set_flyover_mode(bool on) { flyover_mode_ = on; }
+  bool flyover_mode() const { return flyover_mode_; }
+
   // Moves to the next waypoint; returns false (active() becomes -1) when the
   // active waypoint was the last one.
   bool advance();
@@ -87,16 +104,19 @@ class Route {
   Status validate(const Waypoint& wp) const;
   std::vector<Waypoint> wps_;
   int active_ = -1;
+  bool flyover_mode_ = false;
   std::string dest_;
   std::string orig_name_;
   double orig_lat_ = 0.0;  // [deg]
   double orig_lon_ = 0.0;  // [deg]
 };
 
-// The LNAV passage test described at the top of this file.
-// dist [m] and qdr [deg] from aircraft to the active waypoint; next_qdr [deg]
-// the course of the following leg (equal to qdr when there is none or the
-// waypoint is a fly-over); trk [deg]; tas [m/s]; bank [rad].
-bool waypoint_reached(double dist, double qdr, double next_qdr, double trk, double tas, double bank);
+// The LNAV passage test described at the top of this file. dist [m] and qdr
+// [deg] from aircraft to the active waypoint; curlegdir [deg]; trk [deg];
+// gs [m/s]; turndist [m].
+bool waypoint_reached(double dist, double qdr, double curlegdir, double trk, double gs, double turndist);
+// Turn distance [m] at a waypoint: tas [m/s], bank [rad], qdr [deg] to it,
+// next_qdr [deg] of the following leg, flyby false for a fly-over.
+double turn_distance(double tas, double bank, double qdr, double next_qdr, bool flyby);
 
 }  // namespace squawk::sim

@@ -18,6 +18,21 @@ namespace {
 constexpr double kMinAlt = -300.0;    // [m] lowest accepted altitude
 constexpr double kMaxAlt = 30000.0;   // [m] highest accepted altitude
 constexpr double kTasEps = 1e-6;      // [m/s] floor of TAS in the turn rate
+constexpr double kPerfDt = 1.0;       // [s] BlueSky's performance_dt
+constexpr double kWindMinAlt = 50.0 * units::kFt;  // [m] wind acts above this altitude
+constexpr double kOnLegDeg = 2.0;        // [deg] track within this of the leg: on the leg
+constexpr double kNoTurnSpd = -990.0;    // turn speed after a waypoint switch (none)
+constexpr double kPassedTurnSpd = -998.0;  // turn speed once on the new leg (used up)
+
+// Heading that flies track trk_deg at TAS tas in wind w (BlueSky's APorASAS).
+double wind_heading(double trk_deg, double tas, const WindNE& w) {
+  const double vw = std::hypot(w.north, w.east);
+  const double drift = trk_deg * kDeg - std::atan2(w.east, w.north);
+  const double steer = std::asin(std::clamp(vw * std::sin(drift) / std::max(0.001, tas), -1.0, 1.0));
+  return geo::wrap360(trk_deg + steer / kDeg);
+}
+constexpr double kMinSelVs = 0.1;     // [m/s] a selected V/S at or below this means the default
+constexpr double kVsAccel = 300.0 * units::kFpm;  // [m/s^2] V/S ramp, and the band within which it snaps
 
 std::string num(double v) { return text::fmt_double(v, 6); }
 
@@ -73,7 +88,7 @@ Status check_finite(std::string_view who, const char* what, double v) {
 
 constexpr double kMinDt = 0.001;  // [s] smallest time step: finer ones never finish a run
 
-Simulation::Simulation(uint64_t seed) : rng_(seed) {}
+Simulation::Simulation(uint64_t seed) : openap_(default_openap()), rng_(seed) {}
 
 // --- Clock and run state ----------------------------------------------------
 
@@ -139,7 +154,11 @@ Status Simulation::run_until(double t_end) {
   return Status::ok();
 }
 
-void Simulation::reset(uint64_t seed) { *this = Simulation(seed); }
+void Simulation::reset(uint64_t seed) {
+  auto data = openap_;  // the performance model survives RESET, as in BlueSky
+  *this = Simulation(seed);
+  openap_ = std::move(data);
+}
 
 void Simulation::delete_all() {
   traf_.clear();
@@ -150,6 +169,11 @@ void Simulation::delete_all() {
 // --- Step ---------------------------------------------------------------------
 
 void Simulation::step() {
+  if (openap_ && simt() + 1e-9 >= next_perf_t_) {
+    update_perf();
+    next_perf_t_ += kPerfDt;
+    if (next_perf_t_ <= simt()) next_perf_t_ = simt() + kPerfDt;
+  }
   if (traf_.n() > 0) {
     update_autopilot();
     if (cds_.enabled && simt() + 1e-9 >= next_asas_t_) {
@@ -158,6 +182,11 @@ void Simulation::step() {
       if (next_asas_t_ <= simt()) next_asas_t_ = simt() + cds_.asas_dt;
     }
     update_kinematics();
+  }
+  if (simt() + 1e-9 >= next_area_t_) {
+    if (area_.active) update_area();
+    next_area_t_ += kPerfDt;
+    if (next_area_t_ <= simt()) next_area_t_ = simt() + kPerfDt;
   }
   ++ticks_;
   ++ticks_since_base_;
@@ -168,30 +197,153 @@ void Simulation::update_asas() {
   if (crs_.enabled) cr_.resolve(traf_, cd_, cds_, crs_, perf_opts_);
 }
 
-// LNAV: fly to the active waypoint, switch at passage (route.h). VNAV, for
-// the altitude constraint of the active waypoint (BlueSky's ToC/ToD idea):
-// climb at once at the default V/S; descend from the top of descent, where
-// the 3000 ft per 10 NM path (vs = steepness * gs) meets the constraint at
-// the waypoint. Passing a waypoint with a speed constraint selects it.
+void Simulation::update_area() {
+  Traffic& t = traf_;
+  for (int i = t.n() - 1; i >= 0; --i) {
+    const bool in = t.lat[i] >= area_.lat0 && t.lat[i] <= area_.lat1 && t.lon[i] >= area_.lon0 &&
+                    t.lon[i] <= area_.lon1 && t.alt[i] >= area_.bottom && t.alt[i] <= area_.top;
+    const bool was = t.in_area[i] != 0;
+    t.in_area[i] = in;
+    if (was && !in) {
+      cr_.on_erase(t.uid[i]);
+      cd_.on_erase(i);
+      t.erase(i);
+    }
+  }
+}
+
+Status Simulation::set_area(double lat0, double lon0, double lat1, double lon1, double top, double bottom) {
+  SQUAWK_RETURN_IF_ERROR(check_latlon("AREA", lat0, lon0));
+  SQUAWK_RETURN_IF_ERROR(check_latlon("AREA", lat1, lon1));
+  if (!(top >= bottom) || std::isnan(top) || std::isnan(bottom))
+    return bad("AREA", "top " + num(top) + " m must not be below bottom " + num(bottom) + " m");
+  area_ = Area{true, std::min(lat0, lat1), std::max(lat0, lat1), std::min(lon0, lon1), std::max(lon0, lon1), top, bottom};
+  return Status::ok();
+}
+
+void Simulation::area_off() { area_.active = false; }
+
+void Simulation::update_perf() {
+  Traffic& t = traf_;
+  for (int i = 0; i < t.n(); ++i) {
+    if (!t.oap[i]) continue;
+    const double vmin = t.perf[i].vmin, vmax = t.perf[i].vmax;
+    openap_update(*t.oap[i], t.tas[i], t.vs[i], t.alt[i], t.phase[i], t.perf[i]);
+    if (t.perf[i].vmin != vmin || t.perf[i].vmax != vmax) t.tgt_tas_alt[i] = std::nan("");
+  }
+}
+
+void Simulation::init_perf(int i) {
+  Traffic& t = traf_;
+  t.perf_class[i] = perf_class_of(t.type[i]);
+  t.phase[i] = FlightPhase::kNA;
+  if (openap_) {
+    const OpenapType* o = openap_->find(t.type[i]);
+    t.oap[i] = o;
+    t.perf[i] = PerfLimits{o->vminer, o->vmaxer, -o->vsmax, o->vsmax, o->hmax, o->axmax0, o->mmo};
+  } else {
+    t.oap[i] = nullptr;
+    t.perf[i] = perf_limits(t.perf_class[i]);
+  }
+  t.tgt_tas_alt[i] = std::nan("");
+}
+
+void Simulation::set_openap(std::shared_ptr<const OpenapData> data) {
+  openap_ = std::move(data);
+  next_perf_t_ = simt();
+  for (int i = 0; i < traf_.n(); ++i) init_perf(i);
+}
+
+void Simulation::start_leg(int i, bool passing) {
+  Traffic& t = traf_;
+  const Route& r = t.route[i];
+  const int a = r.active();
+  if (a < 0) return;
+  const Waypoint& wp = r.waypoints()[a];
+  const geo::QdrDist qd = geo::qdrdist(t.lat[i], t.lon[i], wp.lat, wp.lon);
+  t.wp_lat[i] = wp.lat;
+  t.wp_lon[i] = wp.lon;
+  t.curlegdir[i] = qd.qdr_deg;
+  double next_qdr = qd.qdr_deg;
+  if (a + 1 < r.size()) {
+    const Waypoint& nx = r.waypoints()[a + 1];
+    next_qdr = geo::qdrdist(wp.lat, wp.lon, nx.lat, nx.lon).qdr_deg;
+  }
+  const Route::AltTarget at = r.alt_target(a);
+  const double toalt = at.toalt >= 0.0 ? at.toalt : -999.0;  // NaN (none) and negative: no constraint
+  auto turn = [&] { t.turndist[i] = turn_distance(t.tas[i], t.bank[i], qd.qdr_deg, next_qdr, !wp.flyover); };
+  if (passing) {
+    turn();
+    t.oldturnspd[i] = t.turnspd[i];
+    t.turnspd[i] = kNoTurnSpd;
+  } else {
+    t.turnspd[i] = t.tas[i];
+  }
+  t.nextaltco[i] = at.toalt == at.toalt ? at.toalt : -999.0;
+  compute_vnav(i, toalt, at.xtoalt);
+  if (!passing) turn();
+}
+
+// BlueSky's ComputeVNAV (facts in simulation.h): descend from the top of
+// descent on the 3000 ft / 10 NM path (now, over the rest of the leg, when
+// already past it), climb at once at max(steepness * gs, what reaches the
+// constraint in time).
+void Simulation::compute_vnav(int i, double toalt, double xtoalt) {
+  Traffic& t = traf_;
+  if (toalt < 0.0 || !t.vnav[i]) {
+    t.dist2vs[i] = -999999.0;
+    return;
+  }
+  double d2wp = t.dist2wp[i];
+  if (d2wp != d2wp) d2wp = units::nm_to_m(geo::qdrdist(t.lat[i], t.lon[i], t.wp_lat[i], t.wp_lon[i]).dist_nm);
+  const double gs = std::max(0.01, t.gs[i]);
+  if (t.alt[i] > toalt + 2.0 * units::kFt) {
+    if (t.vs[i] > 0.0001) t.vnav_vs[i] = 0.0, t.sel_alt[i] = t.alt[i];
+    t.nextaltco[i] = toalt;
+    d2wp = units::nm_to_m(geo::kwikdist_nm(t.lat[i], t.lon[i], t.wp_lat[i], t.wp_lon[i]));
+    t.dist2wp[i] = d2wp;
+    const double descdist = (t.alt[i] - toalt) / kVnavSteepness;
+    t.dist2vs[i] = descdist - xtoalt;
+    if (d2wp - 1.02 * t.turndist[i] < t.dist2vs[i]) {
+      t.wp_vs[i] = (t.alt[i] - toalt) / std::max(0.01, d2wp / gs);
+    } else if (xtoalt < descdist) {
+      t.wp_vs[i] = -kVnavSteepness * (t.gs[i] + (t.gs[i] < 0.2 * t.tas[i] ? t.tas[i] : 0.0));
+    } else {
+      t.wp_vs[i] = 0.0;
+    }
+  } else if (t.alt[i] < toalt - 9.9 * units::kFt) {
+    if (t.vs[i] < -0.0001) t.vnav_vs[i] = 0.0, t.sel_alt[i] = t.alt[i];
+    t.nextaltco[i] = toalt;
+    t.dist2vs[i] = 99999.0;
+    const double t2go = std::max(0.1, d2wp + xtoalt) / gs;
+    t.wp_vs[i] = std::max(kVnavSteepness * t.gs[i], (toalt - t.alt[i]) / t2go);
+  } else {
+    t.dist2vs[i] = -999.0;
+  }
+}
+
+// LNAV: fly to the active waypoint (WGS-84 bearing), switch at passage
+// (route.h). VNAV: between waypoints, fly wp_vs to the next altitude
+// constraint once past the top of descent (or at once when climbing).
+// Passing a waypoint with a speed constraint selects it.
 void Simulation::update_autopilot() {
   Traffic& t = traf_;
   const int n = t.n();
   for (int i = 0; i < n; ++i) {
-    if (!t.lnav[i]) continue;
+    t.vnav_vs_on[i] = 0;
+    if (!t.lnav[i]) {
+      if (t.dist2wp[i] == -999.0) t.dist2wp[i] = std::nan("");
+      continue;
+    }
     Route& r = t.route[i];
     const Waypoint* wp = r.active_waypoint();
     if (!wp) {
       t.lnav[i] = t.vnav[i] = 0;
       continue;
     }
-    geo::QdrDist qd = geo::kwikqdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
-    const int a = r.active();
-    double next_qdr = qd.qdr_deg;
-    if (!wp->flyover && a + 1 < r.size()) {
-      const Waypoint& nx = r.waypoints()[a + 1];
-      next_qdr = geo::kwikqdrdist(wp->lat, wp->lon, nx.lat, nx.lon).qdr_deg;
-    }
-    if (waypoint_reached(units::nm_to_m(qd.dist_nm), qd.qdr_deg, next_qdr, t.trk[i], t.tas[i], t.bank[i])) {
+    geo::QdrDist qd = geo::qdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
+    t.dist2wp[i] = units::nm_to_m(qd.dist_nm);
+    if (waypoint_reached(t.dist2wp[i], qd.qdr_deg, t.curlegdir[i], t.trk[i], t.gs[i], t.turndist[i])) {
       if (t.vnav[i] && wp->has_spd()) {
         t.sel_spd[i] = wp->spd;
         t.tgt_tas_alt[i] = std::nan("");
@@ -201,16 +353,27 @@ void Simulation::update_autopilot() {
         continue;
       }
       wp = r.active_waypoint();
-      qd = geo::kwikqdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
+      qd = geo::qdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
+      t.dist2wp[i] = units::nm_to_m(qd.dist_nm);
+      start_leg(i, true);
     }
     t.sel_hdg[i] = qd.qdr_deg;
-    if (t.vnav[i] && wp->has_alt() && wp->alt != t.sel_alt[i]) {
-      if (wp->alt > t.alt[i]) {  // climb as soon as possible
-        t.sel_alt[i] = wp->alt;
-        t.sel_vs[i] = kDefaultVs;
-      } else if (units::nm_to_m(qd.dist_nm) <= (t.alt[i] - wp->alt) / kVnavSteepness) {  // top of descent
-        t.sel_alt[i] = wp->alt;
-        t.sel_vs[i] = kVnavSteepness * t.gs[i];
+    // Turning onto the new leg after a switch, VNAV speed mode selects the
+    // stored turn speed (BlueSky keeps it as the selected speed afterwards).
+    if (t.oldturnspd[i] > 0.0) {
+      if (std::fabs(geo::wrap180(t.trk[i] - qd.qdr_deg)) < kOnLegDeg) {
+        t.oldturnspd[i] = kPassedTurnSpd;
+      } else if (t.vnav_spd[i] && t.vnav[i]) {
+        t.sel_spd[i] = t.oldturnspd[i];
+        t.tgt_tas_alt[i] = std::nan("");
+      }
+    }
+    if (t.vnav[i]) {
+      const double co = t.nextaltco[i];
+      if (co >= -0.1 && ((t.alt[i] > co && t.dist2wp[i] < t.dist2vs[i] + t.turndist[i]) || t.alt[i] < co)) {
+        t.vnav_vs_on[i] = 1;
+        t.vnav_vs[i] = t.wp_vs[i];
+        t.sel_alt[i] = co;
       }
     }
   }
@@ -222,7 +385,7 @@ void Simulation::refresh_speed_outputs(int i, const Atmos& a) {
 }
 
 // Selected speed -> TAS target, limited to [vmin, vmax] CAS (ground cap
-// included), at the aircraft's current altitude.
+// included), at the aircraft's current altitude (class model).
 void Simulation::retarget(int i, const Atmos& a) {
   Traffic& t = traf_;
   double vmax = t.perf[i].vmax;
@@ -254,55 +417,98 @@ void Simulation::update_kinematics() {
   const double dt = dt_;
   for (int i = 0; i < n; ++i) {
     const bool cr = t.cr_active[i] != 0;
-    const bool ground = perf_opts_.ground_cap && t.alt[i] <= perf_opts_.ground_alt;
-    const double axmax = ground ? perf_opts_.ground_axmax : t.perf[i].axmax;
-
-    // Targets (APorASAS + limits)
-    if (!(t.tgt_tas_alt[i] == t.alt[i])) retarget(i, isa(t.alt[i]));
-    const double tas_t = cr ? t.cr_tas[i] : t.tgt_tas[i];
-    const double hdg_t = cr ? t.cr_trk[i] : t.sel_hdg[i];
     const bool cr_vert = cr && crs_.vertical;
-    const double alt_t = std::min(cr_vert ? t.cr_alt[i] : t.sel_alt[i], t.perf[i].hmax);
+    const PerfLimits& lim = t.perf[i];
+    const OpenapType* oap = t.oap[i];
+
+    // Targets (APorASAS), then the performance limits.
+    const double alt_t = std::min(cr_vert ? t.cr_alt[i] : t.sel_alt[i], lim.hmax);
+    double vs_t = cr_vert                ? std::fabs(t.cr_vs[i])
+                  : t.vnav_vs_on[i]      ? std::fabs(t.vnav_vs[i])
+                  : t.sel_vs[i] > kMinSelVs ? t.sel_vs[i]
+                                         : kDefaultVs;
+    const bool windy = wind_.dim() > 0;
+    const WindNE w = windy ? wind_.at(t.lat[i], t.lon[i], t.alt[i]) : WindNE{};
+    double cr_tas = cr ? t.cr_tas[i] : 0.0;
+    if (cr && windy) {
+      const double c = t.cr_trk[i] * kDeg;
+      cr_tas = std::hypot(cr_tas * std::cos(c) - w.north, cr_tas * std::sin(c) - w.east);
+    }
+    double tas_t, axmax;
+    if (oap) {
+      if (cr) {
+        tas_t = openap_limit_tas(lim, cr_tas, alt_t);
+      } else {
+        // Cached while altitude, target altitude, selected speed and envelope stay.
+        if (!(t.tgt_tas_alt[i] == t.alt[i] && t.tgt_tas_sel[i] == alt_t)) {
+          t.tgt_tas[i] = openap_limit_tas(lim, casormach_to_tas(t.sel_spd[i], t.alt[i]), alt_t);
+          t.tgt_tas_alt[i] = t.alt[i];
+          t.tgt_tas_sel[i] = alt_t;
+        }
+        tas_t = t.tgt_tas[i];
+      }
+      vs_t = openap_limit_vs(*oap, lim, t.phase[i], vs_t, t.ax[i], t.tas[i]);
+      axmax = lim.axmax;
+    } else {
+      const bool ground = perf_opts_.ground_cap && t.alt[i] <= perf_opts_.ground_alt;
+      axmax = ground ? perf_opts_.ground_axmax : lim.axmax;
+      if (!(t.tgt_tas_alt[i] == t.alt[i])) retarget(i, isa(t.alt[i]));
+      tas_t = cr ? cr_tas : t.tgt_tas[i];
+      vs_t = std::min(vs_t, alt_t > t.alt[i] ? lim.vsmax : -lim.vsmin);
+    }
 
     // Airspeed: +-axmax, snapping to the target within one step.
     const double old_tas = t.tas[i], old_alt = t.alt[i];
     const double dspd = tas_t - t.tas[i];
-    if (dspd != 0.0) {
-      const double lim = axmax * dt;
-      t.tas[i] = std::fabs(dspd) <= lim ? tas_t : t.tas[i] + std::copysign(lim, dspd);
+    if (std::fabs(dspd) > axmax * dt) {
+      t.ax[i] = std::copysign(axmax, dspd);
+      t.tas[i] += t.ax[i] * dt;
+    } else {
+      t.ax[i] = 0.0;
+      t.tas[i] = tas_t;
     }
 
     // Heading: turn rate g0 tan(bank) / TAS, snapping within one step.
+    double hdg_t = cr ? t.cr_trk[i] : t.sel_hdg[i];
+    if (windy) hdg_t = wind_heading(hdg_t, t.tas[i], w);
     if (t.hdg[i] != hdg_t) {
       const double rate = std::tan(t.bank[i]) * units::kG0 / std::max(t.tas[i], kTasEps) / kDeg;  // [deg/s]
       const double dh = geo::wrap180(hdg_t - t.hdg[i]);
-      const double lim = rate * dt;
-      t.hdg[i] = std::fabs(dh) <= lim ? hdg_t : geo::wrap360(t.hdg[i] + std::copysign(lim, dh));
+      const double lim_h = rate * dt;
+      t.hdg[i] = std::fabs(dh) <= lim_h ? hdg_t : geo::wrap360(t.hdg[i] + std::copysign(lim_h, dh));
       set_heading_cache(i);
     }
 
-    // Vertical: BlueSky's altitude-select logic.
+    // Vertical: altitude select with a time-based capture band, V/S ramp.
     const double dalt = alt_t - t.alt[i];
     if (dalt != 0.0 || t.vs[i] != 0.0) {
-      double vs_mag = cr_vert ? std::fabs(t.cr_vs[i]) : (t.sel_vs[i] > 0.0 ? t.sel_vs[i] : kDefaultVs);
-      vs_mag = std::min(vs_mag, dalt > 0.0 ? t.perf[i].vsmax : -t.perf[i].vsmin);
-      const bool sel = std::fabs(dalt) > std::max(10.0 * units::kFt, std::fabs(2.0 * dt * t.vs[i]));
-      t.vs[i] = sel ? std::copysign(vs_mag, dalt) : 0.0;
-      t.alt[i] = sel ? t.alt[i] + t.vs[i] * dt : alt_t;
+      const bool sel = std::fabs(dalt) > 1.05 * std::max(std::fabs(dt * vs_t), std::fabs(dt * t.vs[i]));
+      const double target_vs = sel ? std::copysign(vs_t, dalt) : 0.0;
+      const double dvs = target_vs - t.vs[i];
+      t.vs[i] = std::fabs(dvs) > kVsAccel ? t.vs[i] + std::copysign(kVsAccel, dvs) * dt : target_vs;
+      t.alt[i] = sel ? std::nearbyint((t.alt[i] + t.vs[i] * dt) * 1e6) / 1e6 : alt_t;
     }
     if (t.alt[i] != old_alt) {
       const Atmos a = isa(t.alt[i]);
-      retarget(i, a);
+      if (!oap) retarget(i, a);
       refresh_speed_outputs(i, a);
     } else if (t.tas[i] != old_tas) {
       refresh_speed_outputs(i, isa(t.alt[i]));
     }
 
-    // Ground speed (no wind) and flat-earth position update.
-    t.gs[i] = t.tas[i];
-    t.trk[i] = t.hdg[i];
+    // Ground speed (wind above 50 ft) and flat-earth position update.
     t.gsnorth[i] = t.tas[i] * t.cos_hdg[i];
     t.gseast[i] = t.tas[i] * t.sin_hdg[i];
+    if (windy && t.alt[i] > kWindMinAlt) {
+      const WindNE wn = wind_.at(t.lat[i], t.lon[i], t.alt[i]);
+      t.gsnorth[i] += wn.north;
+      t.gseast[i] += wn.east;
+      t.gs[i] = std::hypot(t.gsnorth[i], t.gseast[i]);
+      t.trk[i] = geo::wrap360(std::atan2(t.gseast[i], t.gsnorth[i]) / kDeg);
+    } else {
+      t.gs[i] = t.tas[i];
+      t.trk[i] = t.hdg[i];
+    }
     t.lat[i] += dt * t.gsnorth[i] / kREarth / kDeg;
     t.coslat[i] = std::cos(t.lat[i] * kDeg);
     double lon = t.lon[i] + dt * t.gseast[i] / t.coslat[i] / kREarth / kDeg;
@@ -346,12 +552,18 @@ int Simulation::add_aircraft(std::string_view acid, std::string_view actype, dou
   t.tas[i] = t.gs[i] = tas;
   t.sel_alt[i] = alt_m;
   t.sel_spd[i] = sel_spd;
-  t.perf_class[i] = perf_class_of(type);
-  t.perf[i] = perf_limits(t.perf_class[i]);
+  init_perf(i);
   t.coslat[i] = std::cos(lat * kDeg);
   set_heading_cache(i);
   t.gsnorth[i] = tas * t.cos_hdg[i];
   t.gseast[i] = tas * t.sin_hdg[i];
+  if (wind_.dim() > 0 && alt_m > kWindMinAlt) {  // the autopilot holds the track it starts on
+    const WindNE w = wind_.at(lat, lon, alt_m);
+    t.gsnorth[i] += w.north;
+    t.gseast[i] += w.east;
+    t.gs[i] = std::hypot(t.gsnorth[i], t.gseast[i]);
+    t.trk[i] = t.sel_hdg[i] = geo::wrap360(std::atan2(t.gseast[i], t.gsnorth[i]) / kDeg);
+  }
   refresh_speed_outputs(i, isa(alt_m));
   return i;
 }
@@ -457,7 +669,14 @@ Status Simulation::move(std::string_view acid, double lat, double lon, std::opti
 Status Simulation::set_heading(std::string_view acid, double hdg_deg) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "heading", hdg_deg));
-  traf_.sel_hdg[i] = geo::wrap360(hdg_deg);
+  const Traffic& t = traf_;
+  double trk = hdg_deg;
+  if (wind_.dim() > 0 && t.alt[i] > kWindMinAlt) {
+    const WindNE w = wind_.at(t.lat[i], t.lon[i], t.alt[i]);
+    const double h = hdg_deg * kDeg;
+    trk = std::atan2(t.tas[i] * std::sin(h) + w.east, t.tas[i] * std::cos(h) + w.north) / kDeg;
+  }
+  traf_.sel_hdg[i] = geo::wrap360(trk);
   traf_.lnav[i] = traf_.vnav[i] = 0;
   return Status::ok();
 }
@@ -484,6 +703,7 @@ Status Simulation::set_speed(std::string_view acid, double casmach) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   SQUAWK_RETURN_IF_ERROR(check_speed(traf_.id[i], casmach));
   traf_.sel_spd[i] = casmach;
+  traf_.vnav_spd[i] = 0;
   traf_.tgt_tas_alt[i] = std::nan("");
   return Status::ok();
 }
@@ -500,6 +720,10 @@ Status Simulation::set_lnav(std::string_view acid, bool on) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   if (on && traf_.route[i].active() < 0)
     return bad(traf_.id[i], "LNAV needs a route with a waypoint to fly to (add one with ADDWPT)");
+  if (on && !traf_.lnav[i]) {
+    traf_.lnav[i] = 1;
+    start_leg(i, false);
+  }
   traf_.lnav[i] = on;
   if (!on) traf_.vnav[i] = 0;
   return Status::ok();
@@ -510,32 +734,50 @@ Status Simulation::set_vnav(std::string_view acid, bool on) {
   if (on && traf_.route[i].active() < 0)
     return bad(traf_.id[i], "VNAV needs a route with a waypoint to fly to (add one with ADDWPT)");
   traf_.vnav[i] = on;
-  if (on) traf_.lnav[i] = 1;
+  traf_.vnav_spd[i] = on;
+  if (on) {
+    traf_.lnav[i] = 1;
+    const Route& r = traf_.route[i];
+    const Route::AltTarget at = r.alt_target(r.active());
+    compute_vnav(i, at.toalt >= 0.0 ? at.toalt : -999.0, at.xtoalt);
+    traf_.nextaltco[i] = at.toalt == at.toalt ? at.toalt : -999.0;
+  }
   return Status::ok();
 }
 
 // --- Routes -------------------------------------------------------------------
 
+// Runs a route mutation; LNAV and VNAV go off when no active waypoint is
+// left. With `direct` (waypoints added, as BlueSky's ADDWPT ends with a
+// DIRECT to the active waypoint) LNAV goes on and the leg is restarted.
 template <class Op>
-Status Simulation::route_op(std::string_view acid, Op&& op) {
+Status Simulation::route_op(std::string_view acid, Op&& op, bool direct) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   Route& r = traf_.route[i];
-  const bool had_active = r.active() >= 0;
   const Status st = op(r);
   if (!st.is_ok()) return st.with_context(traf_.id[i]);
-  if (!had_active && r.active() >= 0) traf_.lnav[i] = 1;
-  if (r.active() < 0) traf_.lnav[i] = traf_.vnav[i] = 0;
+  if (r.active() < 0) {
+    traf_.lnav[i] = traf_.vnav[i] = 0;
+  } else if (direct) {
+    traf_.lnav[i] = 1;
+    start_leg(i, false);
+  }
   return Status::ok();
 }
 
 Status Simulation::add_waypoint(std::string_view acid, Waypoint wp) {
-  return route_op(acid, [&](Route& r) { return r.add(std::move(wp)); });
+  return route_op(acid, [&](Route& r) { return r.add(std::move(wp)); }, true);
 }
 Status Simulation::add_waypoint_after(std::string_view acid, std::string_view ref, Waypoint wp) {
-  return route_op(acid, [&](Route& r) { return r.insert_after(ref, std::move(wp)); });
+  return route_op(acid, [&](Route& r) { return r.insert_after(ref, std::move(wp)); }, true);
 }
 Status Simulation::add_waypoint_before(std::string_view acid, std::string_view ref, Waypoint wp) {
-  return route_op(acid, [&](Route& r) { return r.insert_before(ref, std::move(wp)); });
+  return route_op(acid, [&](Route& r) { return r.insert_before(ref, std::move(wp)); }, true);
+}
+Status Simulation::set_flyover_mode(std::string_view acid, bool flyover) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  traf_.route[i].set_flyover_mode(flyover);
+  return Status::ok();
 }
 Status Simulation::delete_waypoint(std::string_view acid, std::string_view name) {
   return route_op(acid, [&](Route& r) { return r.remove(name); });
@@ -547,12 +789,21 @@ Status Simulation::delete_route(std::string_view acid) {
   });
 }
 Status Simulation::direct_to(std::string_view acid, std::string_view name) {
-  SQUAWK_RETURN_IF_ERROR(route_op(acid, [&](Route& r) { return r.direct_to(name); }));
-  traf_.lnav[traf_.index_of(acid)] = 1;
-  return Status::ok();
+  return route_op(acid, [&](Route& r) { return r.direct_to(name); }, true);
 }
+// BlueSky's DEST: the destination carries a 0 ft altitude constraint unless
+// one is given; as the only waypoint it switches LNAV and VNAV on, so the
+// aircraft descends to it on the VNAV path.
 Status Simulation::set_dest(std::string_view acid, Waypoint dest) {
-  return route_op(acid, [&](Route& r) { return r.set_dest(std::move(dest)); });
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  if (!dest.has_alt()) dest.alt = 0.0;
+  const bool only = traf_.route[i].empty();
+  SQUAWK_RETURN_IF_ERROR(route_op(acid, [&](Route& r) { return r.set_dest(std::move(dest)); }, true));
+  if (only) {
+    traf_.vnav[i] = 1;
+    start_leg(i, false);
+  }
+  return Status::ok();
 }
 Status Simulation::set_orig(std::string_view acid, Waypoint orig) {
   return route_op(acid, [&](Route& r) { return r.set_orig(std::move(orig)); });
@@ -638,6 +889,11 @@ std::string Simulation::snapshot() const {
   put<uint8_t>(out, perf_opts_.ground_cap), put(out, perf_opts_.ground_alt);
   put(out, perf_opts_.ground_vmax), put(out, perf_opts_.ground_axmax);
   put(out, next_uid_);
+  put(out, next_perf_t_);
+  put(out, next_area_t_);
+  put<uint8_t>(out, area_.active);
+  for (double v : {area_.lat0, area_.lat1, area_.lon0, area_.lon1, area_.top, area_.bottom}) put(out, v);
+  bytes::put_str(out, openap_ ? openap_->dir() : std::string());
   Rng probe = rng_;  // the RNG state, observed through its next draws
   for (int k = 0; k < 4; ++k) put(out, probe.next_u64());
   put(out, probe.normal());
@@ -651,15 +907,22 @@ std::string Simulation::snapshot() const {
     put<int32_t>(out, static_cast<int32_t>(t.perf_class[i]));
     const PerfLimits& p = t.perf[i];
     put(out, p.vmin), put(out, p.vmax), put(out, p.vsmin), put(out, p.vsmax), put(out, p.hmax), put(out, p.axmax);
+    put(out, p.mmo);
+    bytes::put_str(out, t.oap[i] ? t.oap[i]->name : std::string());
+    put<uint8_t>(out, static_cast<uint8_t>(t.phase[i]));
   }
   put_vec(out, t.uid);
   for (const auto* v : {&t.lat, &t.lon, &t.alt, &t.hdg, &t.trk, &t.tas, &t.cas, &t.gs, &t.mach, &t.gsnorth,
                         &t.gseast, &t.vs, &t.sel_hdg, &t.sel_alt, &t.sel_spd, &t.sel_vs, &t.bank, &t.cr_trk,
-                        &t.cr_tas, &t.cr_vs, &t.cr_alt})
+                        &t.cr_tas, &t.cr_vs, &t.cr_alt, &t.ax, &t.wp_lat, &t.wp_lon, &t.dist2wp,
+                        &t.nextaltco, &t.dist2vs, &t.wp_vs, &t.vnav_vs, &t.turndist, &t.curlegdir, &t.turnspd,
+                        &t.oldturnspd})
     put_vec(out, *v);
-  put_vec(out, t.lnav), put_vec(out, t.vnav), put_vec(out, t.cr_active);
+  put_vec(out, t.lnav), put_vec(out, t.vnav), put_vec(out, t.cr_active), put_vec(out, t.vnav_spd);
+  put_vec(out, t.in_area);
   cd_.serialize(out);
   cr_.serialize(out);
+  wind_.serialize(out);
   return out;
 }
 

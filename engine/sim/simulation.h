@@ -5,13 +5,23 @@
 // - Clock: an integer tick count and a step dt (default 0.05 s, BlueSky's
 //   simdt). simt() = t_base + ticks_since_base * dt, so time never drifts;
 //   set_dt() rebases t_base at the current time.
-// - step() advances one dt in BlueSky's order: autopilot (LNAV/VNAV),
+// - step() advances one dt in BlueSky's order: OpenAP performance update
+//   (every 1 s of sim time, openap_perf.h), autopilot (LNAV/VNAV),
 //   conflict detection and MVP (every asas_dt of sim time, when enabled),
-//   choice of autopilot or resolution targets, performance limits, airspeed
-//   (+-axmax, snapping to the target), heading (turn rate g0 tan(bank)/TAS
-//   with the new TAS, snapping to the target), vertical speed, then the
-//   flat-earth position update with R = 6 371 000 m (facts §1.8).
-//   No wind: gs = tas and trk = hdg.
+//   choice of autopilot or resolution targets, performance limits (OpenAP:
+//   at the selected altitude), airspeed (+-axmax, snapping to the target),
+//   heading (turn rate g0 tan(bank)/TAS with the new TAS, snapping to the
+//   target), vertical speed (altitude select with a time-based capture band
+//   of 1.05 dt max(|vs target|, |vs|), V/S ramped at 300 ft/min per s), then
+//   the flat-earth position update with R = 6 371 000 m (facts §1.8).
+//   Wind (wind.h): above 50 ft the ground velocity is TAS along the heading
+//   plus the wind; the autopilot's selected heading is a track, flown with
+//   the wind-correction angle asin(Vw sin(trk - wind dir) / TAS), and a
+//   resolution ground speed becomes the TAS that gives it. No wind: gs = tas
+//   and trk = hdg.
+// - Performance model: the class table of performance.h, or OpenAP per type
+//   when OpenAP data is set (set_openap; by default the data named by
+//   SQUAWK_OPENAP, see openap_data.h).
 //   No heap allocation happens in step() once buffers have grown.
 // - Every operation that can fail validates all its arguments first and
 //   leaves the simulation unchanged on error; the message starts with the
@@ -25,6 +35,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,9 +45,11 @@
 #include "sim/atmosphere.h"
 #include "sim/conflict.h"
 #include "sim/mvp.h"
+#include "sim/openap_data.h"
 #include "sim/performance.h"
 #include "sim/route.h"
 #include "sim/traffic.h"
+#include "sim/wind.h"
 
 namespace squawk::sim {
 
@@ -120,6 +133,7 @@ class Simulation {
 
   // --- Autopilot ------------------------------------------------------------
   // HDG: selected heading [deg], any finite value, wrapped; switches LNAV off.
+  // With wind (above 50 ft) the track that heading gives now is selected.
   Status set_heading(std::string_view acid, double hdg_deg);
   // ALT: selected altitude [m] in [-300, 30000], optional |vs| [m/s] > 0;
   // switches VNAV off.
@@ -145,6 +159,8 @@ class Simulation {
   Status add_waypoint_after(std::string_view acid, std::string_view ref, Waypoint wp);
   Status add_waypoint_before(std::string_view acid, std::string_view ref, Waypoint wp);
   Status delete_waypoint(std::string_view acid, std::string_view name);
+  // ADDWPT acid FLYOVER / FLYBY: mode of the waypoints added from now on.
+  Status set_flyover_mode(std::string_view acid, bool flyover);
   // DELRTE: empties the route and switches LNAV and VNAV off.
   Status delete_route(std::string_view acid);
   // DIRECT: makes `name` active and switches LNAV on.
@@ -174,9 +190,34 @@ class Simulation {
   const std::vector<LosPair>& los() const { return cd_.los(); }
 
   // --- Performance ----------------------------------------------------------
+  // OpenAP data for every aircraft (existing ones are re-initialised);
+  // null selects the class model.
+  void set_openap(std::shared_ptr<const OpenapData> data);
+  const std::shared_ptr<const OpenapData>& openap() const { return openap_; }
   const PerformanceOptions& performance_options() const { return perf_opts_; }
   // Error when a value is not finite or not positive.
   Status set_performance_options(const PerformanceOptions& opts);
+
+  // --- Deletion area (BlueSky AREA) ---------------------------------------------
+  // A box [lat0, lat1] x [lon0, lon1] (corners in any order) between bottom
+  // and top [m]. Every 1 s of sim time (after the step), aircraft that were
+  // inside at the previous check and are outside now are deleted; aircraft
+  // never inside stay. Errors: non-finite or out-of-range corners, top <
+  // bottom.
+  Status set_area(double lat0, double lon0, double lat1, double lon1, double top = 1e9, double bottom = -1e9);
+  void area_off();
+  bool area_active() const { return area_.active; }
+
+  // --- Wind -----------------------------------------------------------------
+  const WindField& wind() const { return wind_; }
+  // BlueSky WIND lat,lon,dir,spd (every altitude) or WIND lat,lon,alt,dir,spd,...
+  Status add_wind_uniform(double lat, double lon, double dir_deg, double spd) {
+    return wind_.add_uniform(lat, lon, dir_deg, spd);
+  }
+  Status add_wind_profile(double lat, double lon, const std::vector<WindSample>& samples) {
+    return wind_.add_profile(lat, lon, samples);
+  }
+  void clear_wind() { wind_.clear(); }
 
   // --- Access ---------------------------------------------------------------
   const Traffic& traffic() const { return traf_; }
@@ -196,7 +237,17 @@ class Simulation {
   // Runs a route mutation of aircraft `acid` and updates LNAV/VNAV: on when
   // the route gains its first active waypoint, off when none is left.
   template <class Op>
-  Status route_op(std::string_view acid, Op&& op);
+  Status route_op(std::string_view acid, Op&& op, bool direct = false);
+  void init_perf(int i);
+  void update_perf();
+  // A waypoint became active (BlueSky's direct / waypoint switch): leg
+  // direction, turn distance, next altitude constraint and the VNAV plan.
+  // `passing`: the turn distance is computed before the VNAV plan (switch)
+  // rather than after it (DIRECT, ADDWPT, VNAV ON), as in BlueSky.
+  void start_leg(int i, bool passing);
+  // BlueSky's ComputeVNAV: dist2vs and wp_vs for the constraint toalt [m]
+  // xtoalt [m] beyond the active waypoint.
+  void compute_vnav(int i, double toalt, double xtoalt);
   void update_autopilot();
   void update_asas();
   void update_kinematics();
@@ -211,6 +262,14 @@ class Simulation {
   CdSettings cds_;
   CrSettings crs_;
   PerformanceOptions perf_opts_;
+  std::shared_ptr<const OpenapData> openap_;
+  WindField wind_;
+  struct Area {
+    bool active = false;
+    double lat0 = 0, lat1 = 0, lon0 = 0, lon1 = 0, top = 1e9, bottom = -1e9;  // [deg], [m]
+  } area_;
+  double next_area_t_ = 0.0;  // [s] sim time of the next area check
+  void update_area();
   Rng rng_;
   uint64_t next_uid_ = 1;
 
@@ -219,6 +278,7 @@ class Simulation {
   int64_t ticks_since_base_ = 0;  // steps since the last dt change
   int64_t ticks_ = 0;             // steps since reset
   double next_asas_t_ = 0.0;      // [s] sim time of the next detection
+  double next_perf_t_ = 0.0;      // [s] sim time of the next performance update
   RunState run_state_ = RunState::kHold;
   bool ff_ = false;
   std::optional<double> ff_end_;  // [s]

@@ -18,6 +18,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "sim/openap_perf.h"
 #include "sim/performance.h"
 #include "sim/route.h"
 
@@ -50,7 +51,27 @@ struct Traffic {
 
   // Performance
   std::vector<PerfClass> perf_class;
-  std::vector<PerfLimits> perf;      // per-aircraft copy of the class limits
+  std::vector<PerfLimits> perf;      // limits in force (class table, or OpenAP updated at 1 Hz)
+  std::vector<const OpenapType*> oap;  // OpenAP data of the type; null: class model (performance.h)
+  std::vector<FlightPhase> phase;    // OpenAP flight phase (kNA under the class model)
+  std::vector<double> ax;            // [m/s^2] longitudinal acceleration of the last step
+
+  // VNAV (BlueSky's active-waypoint data, set when a waypoint becomes active)
+  std::vector<double> wp_lat, wp_lon;  // [deg] last active waypoint (0, 0 before any, as in BlueSky)
+  std::vector<double> dist2wp;       // [m] distance to it at the last step: -999 before the first
+                                     // step, NaN when not kept (no LNAV; computed on demand)
+  std::vector<double> nextaltco;     // [m] next altitude constraint (< -0.1: none)
+  std::vector<double> dist2vs;       // [m] distance to the active waypoint where climb/descent starts
+  std::vector<double> wp_vs;         // [m/s] signed V/S planned for this leg
+  std::vector<double> vnav_vs;       // [m/s] V/S last used by VNAV
+  std::vector<double> turndist;      // [m] fly-by turn anticipation distance at the active waypoint
+  std::vector<double> curlegdir;     // [deg] bearing to the active waypoint when it became active
+  std::vector<double> turnspd;       // BlueSky's stored turn speed: the TAS [m/s] at the last DIRECT
+                                     // (ADDWPT, DEST, LNAV ON), < 0 after a waypoint switch
+  std::vector<double> oldturnspd;    // turn speed of the waypoint just passed (< 0: none); VNAV
+                                     // selects it as CAS while turning onto the new leg
+  std::vector<uint8_t> vnav_spd;     // VNAV speed mode (on with VNAV ON, off with SPD)
+  std::vector<uint8_t> in_area;      // inside the deletion area at its last check
 
   // Conflict resolution output (mvp.h), followed while cr_active is set
   std::vector<uint8_t> cr_active;    // 0/1
@@ -63,6 +84,8 @@ struct Traffic {
   std::vector<double> sin_hdg, cos_hdg;  // [-] of hdg
   std::vector<double> tgt_tas;       // [m/s] TAS meant by sel_spd at tgt_tas_alt
   std::vector<double> tgt_tas_alt;   // [m] altitude at which tgt_tas was computed (NaN: stale)
+  std::vector<double> tgt_tas_sel;   // [m] OpenAP: target altitude at which the limits were applied
+  std::vector<uint8_t> vnav_vs_on;   // VNAV flies vnav_vs to nextaltco this step (set by the autopilot)
 
   std::unordered_map<std::string, int> index;  // id -> index
 

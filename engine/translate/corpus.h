@@ -1,11 +1,16 @@
 // Translation corpora (shared/corpora/*.tsv) and their evaluation.
 //
-// Contract: read_corpus() reads the TSV format `id setup utterance expected
-// category` (a header line first); a row with fewer than 5 fields is an
-// error naming the file and line. evaluate() runs a translator on every case
-// and scores it with score_case(); the report keeps per-case outcomes and
-// per-category counts in first-seen order. format_report() prints a table in
-// the style of the paper's Table 2 (category, cases, correct, accuracy).
+// Contract: the cases are read by the one corpus reader, rag/corpus.h
+// (rag::read_corpus / parse_corpus, errors naming file and line). evaluate() runs a translator on every case
+// and scores it with score_case() into one of three outcomes:
+//   right  the expected commands (or a question where ASK was expected);
+//   asked  no command issued (a question, or nothing valid) where commands
+//          were expected: safe, but not done;
+//   wrong  a command issued that is not the expected one, or a command where
+//          a question was expected: a wrong clearance.
+// The report keeps per-case outcomes and per-category counts in first-seen
+// order. format_report() prints a table in the style of the paper's Table 2
+// (category, cases, right, asked, wrong, accuracy).
 #pragma once
 
 #include <functional>
@@ -13,35 +18,37 @@
 #include <vector>
 
 #include "core/status.h"
-#include "translate/offline_translator.h"
+#include "rag/corpus.h"
+#include "translate/translation.h"
 
 namespace squawk::translate {
 
-struct CorpusCase {
-  std::string id, setup, utterance, expected, category;
-};
-
-Result<std::vector<CorpusCase>> read_corpus(const std::string& path);
-// Parses TSV text; `name` is used in error messages.
-Result<std::vector<CorpusCase>> parse_corpus(const std::string& tsv, const std::string& name);
+using rag::CorpusCase;
+using rag::parse_corpus;
+using rag::read_corpus;
 
 struct CaseOutcome {
   std::string id, category, produced, expected;
-  bool asked = false;
-  bool correct = false;
+  bool asked = false;    // no command was issued
+  bool correct = false;  // right
+  bool wrong() const { return !correct && !asked; }
 };
 
 struct CategoryScore {
   std::string category;
   int cases = 0;
-  int correct = 0;
+  int correct = 0;  // right
+  int asked = 0;
+  int wrong = 0;
 };
 
 struct EvalReport {
   std::vector<CaseOutcome> outcomes;
   std::vector<CategoryScore> categories;
   int cases = 0;
-  int correct = 0;
+  int correct = 0;  // right
+  int asked = 0;
+  int wrong = 0;
   double accuracy() const { return cases ? static_cast<double>(correct) / cases : 0.0; }
 };
 
@@ -50,8 +57,6 @@ struct EvalReport {
 using CaseTranslator = std::function<Result<Translation>(const CorpusCase&)>;
 
 EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& translate);
-// The offline translator on a fresh simulation after the case's setup.
-Result<Translation> translate_case_offline(const CorpusCase& c);
 std::string format_report(const EvalReport& r, const std::string& title);
 
 }  // namespace squawk::translate

@@ -1,5 +1,7 @@
 #include "translate/fuzzy.h"
 
+#include "rag/edit_distance.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -29,25 +31,11 @@ bool vowel(char c) { return c == 'a' || c == 'e' || c == 'i' || c == 'o' || c ==
 
 }  // namespace
 
-size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
-    }
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
-
 double plain_similarity(std::string_view a, std::string_view b) {
   std::string x = letters_digits(a), y = letters_digits(b);
   size_t n = std::max(x.size(), y.size());
   if (n == 0) return 1.0;
-  return 1.0 - static_cast<double>(edit_distance(x, y)) / static_cast<double>(n);
+  return 1.0 - static_cast<double>(rag::edit_distance(x, y)) / static_cast<double>(n);
 }
 
 std::string sound_key(std::string_view s) {

@@ -13,8 +13,8 @@
 
 namespace squawk::translate {
 
-size_t edit_distance(std::string_view a, std::string_view b);
-// 1 - distance / longer length, on lower-cased letters and digits only.
+// 1 - edit distance (rag/edit_distance.h) / longer length, on lower-cased
+// letters and digits only.
 double plain_similarity(std::string_view a, std::string_view b);
 std::string sound_key(std::string_view s);
 double similarity(std::string_view a, std::string_view b);

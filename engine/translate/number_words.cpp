@@ -47,6 +47,26 @@ std::string fraction_digits(const std::vector<Token>& t, size_t& i) {
 
 }  // namespace
 
+void fold_digit_homophones(std::vector<Token>& t) {
+  struct Homophone {
+    const char* heard;
+    const char* digit;
+  };
+  static const std::array<Homophone, 9> kHeard = {{{"to", "two"}, {"too", "two"}, {"on", "one"}, {"won", "one"},
+                                                   {"once", "one"}, {"ones", "one"}, {"for", "four"},
+                                                   {"ate", "eight"}, {"fine", "five"}}};
+  auto digit = [&](size_t i) { return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0; };
+  for (size_t i = 1; i < t.size(); ++i) {
+    if (t[i].kind != TokKind::kWord || !digit(i - 1)) continue;
+    for (const auto& h : kHeard) {
+      if (t[i].text != h.heard) continue;
+      // between two digits; "fine" also closing a run of two ("three three fine")
+      const bool closes = t[i].text == "fine" && i >= 2 && digit(i - 2) && !digit(i + 1);
+      if (digit(i + 1) || closes) t[i].text = h.digit;
+    }
+  }
+}
+
 int digit_word(const std::string& w) {
   static const std::array<const char*, 10> kDigits = {"zero", "one", "two",   "three", "four",
                                                       "five", "six", "seven", "eight", "nine"};

@@ -35,6 +35,12 @@ struct SpokenNumber {
   bool leading_digit_word = false;  // first group is a single digit word
 };
 
+// Speech recognition writes digits as words that sound alike: between two
+// digit words, "to"/"too" is two, "on"/"won"/"once"/"ones" one, "for" four,
+// "ate" eight, "fine" five ("two on zero" = 210); "fine" also after two digits
+// ("three three fine" = 335). Rewrites those tokens' text in place.
+void fold_digit_homophones(std::vector<Token>& toks);
+
 // Value 0-9 of a digit word ("niner" = 9, "fife" = 5), or -1.
 int digit_word(const std::string& w);
 // True when the token can start or continue a spoken number.

@@ -27,8 +27,26 @@ int hemisphere(const std::vector<Token>& t, size_t i, bool& lat) {
   return 0;
 }
 
-void set_position(Quantity& q, bool lat, int sign) {
+// Typed degrees and minutes (and seconds) run together, as on charts:
+// "5230N" = 52 deg 30 min, "00445E" = 4 deg 45 min, "523015N". Read when
+// the digits have that exact length and the plain reading is out of range
+// or starts with a zero; else the value as read.
+double chart_degrees(const Token& tok, bool lat, double value) {
+  const std::string& d = tok.raw;
+  const size_t deg = lat ? 2 : 3;
+  if (tok.kind != TokKind::kNumber || (d.size() != deg + 2 && d.size() != deg + 4)) return value;
+  for (char c : d)
+    if (c < '0' || c > '9') return value;
+  if (std::fabs(value) <= (lat ? 90.0 : 180.0) && d[0] != '0') return value;
+  const int mins = std::stoi(d.substr(deg, 2));
+  const int secs = d.size() > deg + 2 ? std::stoi(d.substr(deg + 2, 2)) : 0;
+  if (mins >= 60 || secs >= 60) return value;
+  return std::stoi(d.substr(0, deg)) + mins / 60.0 + secs / 3600.0;
+}
+
+void set_position(Quantity& q, bool lat, int sign, const std::vector<Token>& t) {
   q.kind = lat ? QKind::kLat : QKind::kLon;
+  if (q.number.typed && q.number.begin < t.size()) q.value = chart_degrees(t[q.number.begin], lat, q.value);
   q.value = sign * std::fabs(q.value);
 }
 
@@ -112,7 +130,7 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       q.kind = QKind::kLon;
     } else if (p > floor && t[i].kind == TokKind::kNumber && t[i].glued && hemisphere(t, p - 1, lat) != 0 &&
                t[p - 1].text.size() == 1) {
-      set_position(q, lat, hemisphere(t, p - 1, lat));
+      set_position(q, lat, hemisphere(t, p - 1, lat), t);
       --p;
     }
     if (q.kind == QKind::kPlain || q.kind == QKind::kAlt || q.kind == QKind::kMach) {
@@ -152,7 +170,7 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
         int h = hemisphere(t, j, lat);
         if (h != 0) {
           q = dms;
-          set_position(q, lat, h);
+          set_position(q, lat, h, t);
           ++j;
         } else if (word_at(t, j, {"left", "right"})) {
           q.kind = QKind::kAngle;
@@ -166,12 +184,16 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
           q.kind = QKind::kAngle;
         }
       } else if (hemisphere(t, j, lat) != 0) {
-        set_position(q, lat, hemisphere(t, j, lat));
+        set_position(q, lat, hemisphere(t, j, lat), t);
         ++j;
       } else if (word_at(t, j, {"nm", "miles", "mile", "nautical"})) {
         q.kind = QKind::kDist;
         ++j;
         if (word_at(t, j, {"mile", "miles"})) ++j;
+      } else if (word_at(t, j, {"km", "kilometres", "kilometers", "kilometre", "kilometer"})) {
+        q.kind = QKind::kDist;
+        q.value /= 1.852;  // [NM]
+        ++j;
       } else if (word_at(t, j, {"seconds", "second", "s", "sec", "secs"})) {
         q.kind = QKind::kTime;
         ++j;

@@ -92,7 +92,9 @@ std::pair<std::string, std::string> split_id(const std::string& id) {
 struct CallsignMatch {
   std::string id;
   double score = -1.0;
-  size_t groups = 0;  // suffix groups used
+  size_t groups = 0;     // suffix groups used
+  double airline = 0.0;  // similarity of the airline part
+  double digits = 0.0;   // similarity of the digits and letters
 };
 
 // Matches a spoken airline (ICAO prefix if known, else the spoken words) and
@@ -120,7 +122,7 @@ CallsignMatch match_world(const std::string& icao, const std::string& words, con
     }
     // Nothing said for the airline: the digits alone decide.
     double score = icao.empty() && words.empty() ? digits : 0.4 * airline + 0.6 * digits;
-    if (score > best.score) best = {a.id, score, groups};
+    if (score > best.score) best = {a.id, score, groups, airline, digits};
   }
   return best;
 }
@@ -159,9 +161,11 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       if (text::iequals(a.id, s)) return &a;
     return nullptr;
   };
+  Heard heard;  // how the callsign being added was heard, when matched inexactly
   auto add = [&](RefKind kind, std::string name, size_t b, size_t e, bool exists, bool spoken) {
     mark(used, b, e);
-    refs.push_back({kind, std::move(name), b, e, exists, spoken});
+    refs.push_back({kind, std::move(name), b, e, exists, spoken, heard});
+    heard = Heard{};
   };
 
   // Typed aircraft ids and aircraft types.
@@ -208,6 +212,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     if (fleet.empty()) return false;
     CallsignMatch m = match_world(icao, spoken, suf, fleet);
     if ((m.score < 0.45 && fleet.size() != 1) || m.groups == 0) return false;
+    heard = {id, m.airline, m.digits};
     id = m.id;
     end = suf.ends[m.groups - 1];
     return true;

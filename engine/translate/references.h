@@ -27,6 +27,14 @@ namespace squawk::translate {
 
 enum class RefKind { kAircraft, kType, kWaypoint };
 
+// A spoken callsign matched to an existing aircraft it does not spell
+// exactly: what was heard and how well its parts matched (0-1).
+struct Heard {
+  std::string id;        // the callsign as heard ("DLH123"); empty when matched exactly
+  double airline = 0.0;  // similarity of the airline (telephony or prefix)
+  double digits = 0.0;   // similarity of the digits and letters
+};
+
 struct Reference {
   RefKind kind = RefKind::kAircraft;
   std::string name;     // id, ICAO type or waypoint name
@@ -34,6 +42,7 @@ struct Reference {
   size_t end = 0;       // one past the last token
   bool exists = false;  // aircraft or waypoint known to the world
   bool spoken = false;  // aircraft named by telephony, not typed
+  Heard heard;          // set when a spoken callsign was matched inexactly
 };
 
 std::vector<Reference> find_references(const std::vector<Token>& toks, const WorldView* world,

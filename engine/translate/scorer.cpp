@@ -1,5 +1,7 @@
 #include "translate/scorer.h"
 
+#include "command/registry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -105,16 +107,10 @@ std::vector<std::string> split_commands(std::string_view list) {
   return out;
 }
 
+// Aliases folded by the command registry (CREATE -> CRE, ASAS -> CDMETHOD).
 std::string canonical_command(std::string_view name) {
-  std::string u = text::upper(name);
-  if (u == "CREATE") return "CRE";
-  if (u == "HEADING" || u == "TURN") return "HDG";
-  if (u == "SPEED") return "SPD";
-  if (u == "DCT" || u == "DIRECTTO" || u == "DIRTO") return "DIRECT";
-  if (u == "PAUSE") return "HOLD";
-  if (u == "CDMETHOD") return "ASAS";
-  if (u == "DELETE") return "DEL";
-  return u;
+  if (const auto* d = command::Registry::instance().find(name)) return d->name;
+  return text::upper(name);
 }
 
 bool same_command(std::string_view produced, std::string_view expected) {

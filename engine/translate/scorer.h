@@ -3,9 +3,9 @@
 //
 // Contract: a produced command list is correct when it equals the expected
 // list, or one of its ` || ` alternatives, command by command in order after
-// normalisation: command aliases folded (CREATE->CRE, HEADING/TURN->HDG,
-// SPEED->SPD, DCT/DIRECTTO/DIRTO->DIRECT, PAUSE->HOLD, CDMETHOD->ASAS,
-// DELETE->DEL); names case-insensitive; altitudes in feet within 50 ft
+// normalisation: command aliases folded to the command registry's names
+// (CREATE->CRE, HEADING/TURN->HDG, SPEED->SPD, DCT->DIRECT, PAUSE->HOLD,
+// ASAS->CDMETHOD, DELETE->DEL, ...); names case-insensitive; altitudes in feet within 50 ft
 // (FL300 = 30000); speeds in knots within 0.5 kt or Mach within 0.0005
 // (M0.78 = .78); latitude/longitude within 1e-3 deg; headings modulo 360
 // within 0.5 deg; other numbers equal numerically; ATALT/ATSPD compare their

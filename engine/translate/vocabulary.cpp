@@ -1,5 +1,7 @@
 #include "translate/vocabulary.h"
 
+#include "rag/edit_distance.h"
+
 #include <algorithm>
 #include <string_view>
 #include <unordered_set>
@@ -39,23 +41,6 @@ const std::unordered_set<std::string>& keyword_set() {
   return kSet;
 }
 
-// Optimal string alignment distance (adjacent swaps count once). Both words
-// are at most kMaxLen letters (callers check).
-constexpr size_t kMaxLen = 24;
-size_t osa_distance(std::string_view a, std::string_view b) {
-  size_t d[kMaxLen + 1][kMaxLen + 1];
-  const size_t n = a.size(), m = b.size();
-  for (size_t i = 0; i <= n; ++i) d[i][0] = i;
-  for (size_t j = 0; j <= m; ++j) d[0][j] = j;
-  for (size_t i = 1; i <= n; ++i)
-    for (size_t j = 1; j <= m; ++j) {
-      size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-    }
-  return d[n][m];
-}
-
 // Words a typo is corrected to: instruction verbs, nouns and units whose
 // misspelling would otherwise lose the instruction. Short everyday words
 // ("load", "trail", "rate") are left out: speech recognition produces real
@@ -88,7 +73,6 @@ std::string spell_fix(const std::string& w) {
       "should", "could", "their", "there", "these", "those", "about", "after", "again", "both", "each",
       "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs", "show", "send", "sent", "held", "lead"};
   if (w.size() <= 3 || is_keyword(w) || w.size() > 20 || kCommon.count(w)) return w;
-  static_assert(20 <= kMaxLen);
   for (char c : w)
     if (c < 'a' || c > 'z') return w;
   const size_t limit = w.size() >= 7 ? 2 : 1;
@@ -97,7 +81,7 @@ std::string spell_fix(const std::string& w) {
   bool tie = false;
   for (const auto& k : fix_targets()) {
     if (k[0] != w[0] || k.size() + limit < w.size() || w.size() + limit < k.size()) continue;
-    size_t d = osa_distance(w, k);
+    size_t d = rag::edit_distance(w, k);
     if (d < best_d) {
       best_d = d;
       best = k;

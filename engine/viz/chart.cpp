@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/text.h"
+#include "viz/layout.h"
 
 namespace squawk::viz {
 
@@ -26,6 +27,23 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
   return ticks;
 }
 
+Axis axis(double lo, double hi, double pad, int target) {
+  if (!(hi > lo)) {
+    lo -= 0.5;
+    hi += 0.5;
+  }
+  const double margin = pad * (hi - lo);
+  lo -= margin;
+  hi += margin;
+  const auto t = nice_ticks(lo, hi, target);
+  const double step = t.size() > 1 ? t[1] - t[0] : hi - lo;
+  Axis a;
+  a.lo = std::floor(lo / step + 1e-9) * step;
+  a.hi = std::ceil(hi / step - 1e-9) * step;
+  for (double v = a.lo; v <= a.hi + 1e-9 * step; v += step) a.ticks.push_back(std::fabs(v) < 1e-12 * step ? 0.0 : v);
+  return a;
+}
+
 void draw_panel(Svg& svg, const Panel& panel, double x0, double y0, double w, double h) {
   const double left = x0 + 62, right = x0 + w - 34, top = y0 + 30, bottom = y0 + h - 46;
   double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
@@ -38,12 +56,17 @@ void draw_panel(Svg& svg, const Panel& panel, double x0, double y0, double w, do
       yhi = std::max(yhi, s.y[i]);
     }
   if (!std::isfinite(xlo)) xlo = 0, xhi = 1, ylo = 0, yhi = 1;
-  if (panel.fixed_y) ylo = panel.ymin, yhi = panel.ymax;
-  const auto xt = nice_ticks(xlo, xhi, 5), yt = nice_ticks(ylo, yhi, 5);
-  xlo = std::min(xlo, xt.front());
-  xhi = std::max(xhi, xt.back());
-  ylo = std::min(ylo, yt.front());
-  yhi = std::max(yhi, yt.back());
+  if (xlo > 0) xlo = 0;  // x counts from 0 (episodes trained)
+  if (!(xhi > xlo)) xhi = xlo + 1;
+  // x ends 2 % past the last point, ticks inside; y ends on labelled ticks.
+  const Axis ax{xlo, xhi + 0.02 * (xhi - xlo), nice_ticks(xlo, xhi + 0.02 * (xhi - xlo), 5)};
+  const Axis ay = panel.fixed_y ? Axis{panel.ymin - 0.04 * (panel.ymax - panel.ymin),
+                                       panel.ymax + 0.04 * (panel.ymax - panel.ymin),
+                                       nice_ticks(panel.ymin, panel.ymax, 5)}
+                                : axis(ylo, yhi, 0.04, 5);
+  xlo = ax.lo, xhi = ax.hi, ylo = ay.lo, yhi = ay.hi;
+  const auto& xt = ax.ticks;
+  const auto& yt = ay.ticks;
   auto px = [&](double x) { return left + (x - xlo) / (xhi - xlo) * (right - left); };
   auto py = [&](double y) { return bottom - (y - ylo) / (yhi - ylo) * (bottom - top); };
 
@@ -61,6 +84,9 @@ void draw_panel(Svg& svg, const Panel& panel, double x0, double y0, double w, do
   svg.text({x0 + 16, (top + bottom) / 2}, panel.ylabel, 12, "middle", "black", -90);
 
   double ly = bottom - 10 - 16.0 * static_cast<double>(panel.series.size() - 1);  // legend, bottom right
+  double legend_w = 0;
+  for (const auto& s : panel.series) legend_w = std::max(legend_w, text_width(s.label, 11));
+  const double lx = right - 10 - legend_w - 25;
   for (const auto& s : panel.series) {
     std::vector<Point> pts;
     for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
@@ -68,8 +94,8 @@ void draw_panel(Svg& svg, const Panel& panel, double x0, double y0, double w, do
     svg.polyline(pts, s.colour, 2);
     if (pts.size() == 1) svg.circle(pts[0], 3, s.colour, s.colour);
     if (!s.label.empty()) {
-      svg.line({right - 140, ly - 4}, {right - 120, ly - 4}, s.colour, 2);
-      svg.text({right - 115, ly}, s.label, 11);
+      svg.line({lx, ly - 4}, {lx + 20, ly - 4}, s.colour, 2);
+      svg.text({lx + 25, ly}, s.label, 11);
       ly += 16;
     }
   }

@@ -8,7 +8,8 @@
 -- A run stops after ctx.max_steps visits (an error in the trace, never a hang).
 --
 -- Graphs (modes), after paper §III.B and Table 2:
---   offline: retrieve -> offline -> validate -> execute -> done
+--   offline: offline (the grammar, translate/grammar.lua) -> validate -> execute
+--            -> done; no retrieval
 --   single:  retrieve -> single (one LLM call) -> validate -> execute -> done;
 --            a rejected command goes back to `single` with the simulator's
 --            error, up to ctx.max_retries times
@@ -36,12 +37,22 @@
 --     opts.k        documents retrieved (default 5)
 --     opts.max_retries  feedback rounds (default 3)
 --     opts.on_token streaming callback passed to the LLM
+--     opts.confirmed {[callsign] = true}: inexactly heard callsigns the
+--                   speaker confirmed (the dialogue sets it after "yes")
+--   A question about an inexactly heard callsign carries result.confirm =
+--   {id =, heard =}.
 --   dialogue(opts) -> d   a conversation: d:say(text) -> result as translate()
---       returns it. A result that asks keeps its partial command in d.pending
---       and the next say() may answer it; say("cancel") drops it. opts as
---       translate(); every front end (REPL, serve, scripts) talks through this.
+--       returns it. A result that asks keeps its partial request in d.pending
+--       ({question =, request =}) and the next say() answers it: a line with
+--       no instruction word of its own (or one that does not translate alone)
+--       is joined to the pending request ("KL204 descend" -> "to what
+--       altitude?" -> "flight level 100" -> ALT KL204 FL100; result.answered
+--       holds the question answered); say("cancel") drops it (result.cancelled).
+--       opts as translate(); every front end (REPL, serve, C++ through
+--       script::GraphDialogue, scripts) talks through this.
 --   new_graph(start), modes[name](opts) -> graph, format_trace(trace), nodes
 local nodes = require("translate.nodes")
+local grammar = require("translate.grammar")
 
 local M = {}
 M.nodes = nodes
@@ -105,8 +116,7 @@ end
 M.modes = {}
 
 function M.modes.offline()
-  local g = M.new_graph("retrieve"):node("retrieve", nodes.retrieve):edge("retrieve", "offline")
-  return common_tail(g, "done")
+  return common_tail(M.new_graph("offline"), "done")
 end
 
 function M.modes.single()
@@ -133,6 +143,7 @@ function M.modes.multi(opts)
     :edge("verify", "no", "ask")
     :edge("verify", "llm_failed", "offline")
     :edge("fill", "ok", "validate")
+    :edge("fill", "ask", "done")
     :edge("fill", "llm_failed", "offline")
   return common_tail(g, "fill")
 end
@@ -148,7 +159,7 @@ end
 
 local cached_index
 local function default_index()
-  cached_index = cached_index or squawk.rag.index()
+  cached_index = cached_index or squawk.rag.index({ docs = grammar.documents() })
   return cached_index
 end
 
@@ -182,13 +193,14 @@ function M.translate(text, opts)
   local ctx = {
     llm = llm,
     sim = sim,
-    index = opts.index or default_index(),
+    index = opts.index or (mode ~= "offline" and default_index() or nil),
     prompts = opts.prompts or default_prompts(),
     k = opts.k or 5,
     max_retries = opts.max_retries or 3,
     max_steps = opts.max_steps or 40,
     on_token = opts.on_token,
     waypoints = waypoints,
+    confirmed = opts.confirmed,
   }
   local state = { request = text, trace = {}, retries = 0, mode = mode }
   nodes.say(state, "start", string.format("mode %s, %s", mode, llm and llm:describe() or "no LLM")
@@ -197,7 +209,7 @@ function M.translate(text, opts)
   M.modes[mode](opts):run(state, ctx)
   local result = { trace = state.trace, mode = mode, error = state.error }
   if state.ask then
-    result.ask = state.ask
+    result.ask, result.confirm = state.ask, state.confirm
   else
     result.commands = state.commands or {}
   end
@@ -211,13 +223,38 @@ function M.dialogue(opts)
   return setmetatable({ opts = opts or {}, pending = nil }, Dialogue)
 end
 
+local CANCEL = { cancel = true, ["never mind"] = true, nevermind = true, ["forget it"] = true, abort = true }
+
+-- The answer to a pending question joins the request it answers ("KL204
+-- descend" + "flight level 100"); a line with an instruction word of its own
+-- that translates by itself is a new request and drops the question.
 function Dialogue:say(text)
-  if self.pending and text:lower():match("^%s*cancel%s*$") then
+  local pending = self.pending
+  local key = text:lower():gsub("[%p%s]+", " "):gsub("^ ", ""):gsub(" $", "")
+  if CANCEL[key] then
     self.pending = nil
-    return { commands = {}, cancelled = true, trace = {}, mode = self.opts.mode }
+    return { commands = {}, cancelled = pending ~= nil, trace = {}, mode = self.opts.mode or "offline",
+             said = pending and ("dropped: " .. pending.request) or "nothing to cancel" }
   end
-  local r = M.translate(text, self.opts)
-  self.pending = r.ask and { question = r.ask, request = text } or nil
+  if pending and pending.confirm and grammar.lexicon_says(text, "yes") then
+    local opts = setmetatable({ confirmed = { [pending.confirm.id] = true } }, { __index = self.opts })
+    local r = M.translate(pending.request, opts)
+    r.answered = pending.question
+    self.pending = r.ask and { question = r.ask, request = pending.request, confirm = r.confirm } or nil
+    return r
+  end
+  local r, request = nil, text
+  local own = not pending or grammar.has_instruction(text)
+  if own then r = M.translate(text, self.opts) end
+  if pending and (not r or r.ask or r.error) then
+    local joined = pending.request .. " " .. text
+    local j = M.translate(joined, self.opts)
+    if not r or (j.commands and not j.error) then
+      r, request = j, joined
+      r.answered = pending.question
+    end
+  end
+  self.pending = r.ask and { question = r.ask, request = request, confirm = r.confirm } or nil
   return r
 end
 

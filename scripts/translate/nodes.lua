@@ -6,6 +6,9 @@
 -- ("llm" or "offline"), and at the end commands or ask, and error. `ctx`
 -- holds the collaborators: llm (or nil), sim (never changed), index, prompts,
 -- k, max_retries. Every node records what it did with say().
+local grammar = require("translate.grammar")
+local schema = require("translate.schema")
+
 local M = {}
 
 function M.say(state, node, text)
@@ -99,9 +102,10 @@ local function command_context(state, ctx)
   return usage_of(state.cmd)
 end
 
--- Asks the LLM; returns the reply, or nil after recording the failure.
-local function ask_llm(state, ctx, node, prompt)
-  local reply, info = ctx.llm:chat(prompt, { on_token = ctx.on_token })
+-- Asks the LLM (with a registry JSON schema when `shape` is given); returns
+-- the reply, or nil after recording the failure.
+local function ask_llm(state, ctx, node, prompt, shape)
+  local reply, info = ctx.llm:chat(prompt, { on_token = ctx.on_token, schema = shape })
   if not reply then
     M.say(state, node, "LLM failed, falling back to the offline translator: " .. tostring(info))
     return nil
@@ -115,8 +119,18 @@ local function with_feedback(prompt, state, ctx)
   return prompt .. M.render(ctx.prompts.feedback, state.feedback)
 end
 
--- Reads a candidate line (or a question) out of an LLM reply.
+-- Reads a candidate line (or a question) out of an LLM reply: the schema's
+-- JSON shape, else \boxed{...} or the first line.
 local function take_candidate(state, reply)
+  local json_line, json_ask = schema.read(reply)
+  if json_ask then
+    state.ask = json_ask
+    return "ask"
+  end
+  if json_line then
+    state.candidate, state.source = json_line, "llm"
+    return "ok"
+  end
   local line = M.boxed(reply) or trim(reply:match("[^\n]+") or "")
   if line:upper():sub(1, 3) == "ASK" then
     local q = trim(line:sub(4))
@@ -171,11 +185,22 @@ function M.ask(state, ctx)
   return "done"
 end
 
+-- What the offline grammar makes of the request, offered to the LLM nodes.
+local function grammar_reading(state, ctx)
+  if not state.reading then
+    local world = M.world(ctx.sim, ctx.waypoints)
+    local tr = grammar.translate(state.request, world)
+    state.reading = tr.ask and ("a question: " .. tr.ask) or table.concat(tr.commands, " ; ")
+  end
+  return M.render(ctx.prompts.grammar or "", { reading = state.reading })
+end
+
 function M.fill(state, ctx)
   local prompt = M.render(ctx.prompts.state, { state = M.state_lines(ctx.sim) })
     .. M.render(ctx.prompts.parameters,
       { cmd = state.cmd, context = command_context(state, ctx), request = state.request })
-  local reply = ask_llm(state, ctx, "fill", with_feedback(prompt, state, ctx))
+    .. grammar_reading(state, ctx)
+  local reply = ask_llm(state, ctx, "fill", with_feedback(prompt, state, ctx), schema.for_commands({ state.cmd }))
   if not reply then return "llm_failed" end
   local label = take_candidate(state, reply)
   M.say(state, "fill", label == "ask" and ("asks: " .. state.ask) or ("candidate: " .. state.candidate))
@@ -185,7 +210,8 @@ end
 function M.single(state, ctx)
   local prompt = M.render(ctx.prompts.single,
     { content = content(state), state = M.state_lines(ctx.sim), request = state.request })
-  local reply = ask_llm(state, ctx, "single", with_feedback(prompt, state, ctx))
+    .. grammar_reading(state, ctx)
+  local reply = ask_llm(state, ctx, "single", with_feedback(prompt, state, ctx), schema.for_commands())
   if not reply then return "llm_failed" end
   local label = take_candidate(state, reply)
   M.say(state, "single", label == "ask" and ("asks: " .. state.ask) or ("candidate: " .. state.candidate))
@@ -202,30 +228,25 @@ function M.defined_waypoints(line)
   return names
 end
 
--- The route waypoint names of an aircraft, read from LISTRTE on a copy.
-local function route_of(sim, id)
-  local ok, text = sim:copy():exec("LISTRTE " .. id)
-  local names = {}
-  if not ok then return names end
-  for line in text:gmatch("[^\n]+") do
-    local name = line:match("^[%*%s]%s*(%S+)%s+%-?%d+%.%d+%s+%-?%d+%.%d+")
-    if name then names[#names + 1] = name end
-  end
-  return names
-end
-
--- What the offline translator may know of the simulation.
+-- What the offline grammar may know of the simulation: the aircraft (route
+-- as waypoint names, mach when the selected speed is a Mach number) and
+-- the user waypoints.
 function M.world(sim, waypoints)
   local aircraft = sim:aircraft()
-  for _, a in ipairs(aircraft) do a.route = route_of(sim, a.id) end
+  for _, a in ipairs(aircraft) do
+    local names = {}
+    for _, w in ipairs(a.route or {}) do names[#names + 1] = w.name end
+    a.route, a.mach = names, a.sel_mach
+  end
   return { aircraft = aircraft, waypoints = waypoints or {} }
 end
 
 function M.offline(state, ctx)
   local world = M.world(ctx.sim, ctx.waypoints)
-  local tr = squawk.translate.offline(state.request, world)
+  world.confirmed = ctx.confirmed
+  local tr = grammar.translate(state.request, world)
   if tr.ask then
-    state.ask = tr.ask
+    state.ask, state.confirm = tr.ask, tr.confirm
     M.say(state, "offline", "asks: " .. tr.ask)
     return "ask"
   end
@@ -249,36 +270,35 @@ local function rejected(state, ctx, node, msg)
   return "fail"
 end
 
--- The registry's own parser, command by command, on a scratch copy where the
--- earlier commands of the line have run (so "CRE X ... ; HDG X 90" checks).
+-- The registry's own parser and then the command itself, command by command,
+-- on one scratch copy where the earlier commands of the line have run (so
+-- "CRE X ... ; HDG X 90" checks); the real sim is untouched. The outputs
+-- wait in state.outputs for the execute node.
 function M.validate(state, ctx)
   local cmds = M.split_commands(state.candidate or "")
   if #cmds == 0 then return rejected(state, ctx, "validate", "no command was produced") end
   local scratch = ctx.sim:copy()
+  local outputs = {}
   for _, c in ipairs(cmds) do
     if not canonical_name(c:match("^(%S+)")) and not canonical_name(c:match("^%S+%s+(%S+)")) then
       return rejected(state, ctx, "validate", string.format("'%s': unknown command", c))
     end
     local ok, msg = scratch:check(c)
     if not ok then return rejected(state, ctx, "validate", msg) end
-    scratch:exec(c)
+    ok, msg = scratch:exec(c)
+    if not ok then return rejected(state, ctx, "validate", msg) end
+    if msg and msg ~= "" then outputs[#outputs + 1] = msg end
   end
-  M.say(state, "validate", "parses: " .. table.concat(cmds, " ; "))
+  state.outputs = outputs
+  M.say(state, "validate", "parses and runs: " .. table.concat(cmds, " ; "))
   return "ok"
 end
 
--- Runs the whole line on a fresh scratch copy; the real sim is untouched.
-function M.execute(state, ctx)
-  local cmds = M.split_commands(state.candidate)
-  local scratch = ctx.sim:copy()
-  local outputs = {}
-  for _, c in ipairs(cmds) do
-    local ok, msg = scratch:exec(c)
-    if not ok then return rejected(state, ctx, "execute", msg) end
-    if msg and msg ~= "" then outputs[#outputs + 1] = msg end
-  end
-  state.commands = cmds
+-- Accepts the line validate ran on its scratch copy.
+function M.execute(state)
+  state.commands = M.split_commands(state.candidate)
   state.error = nil
+  local outputs = state.outputs or {}
   M.say(state, "execute", "ran on a scratch copy: ok" .. (#outputs > 0 and ("; " .. table.concat(outputs, " / ")) or ""))
   return "ok"
 end

@@ -122,10 +122,10 @@ TEST_CASE("ATALT / ATSPD / ATDIST fire once when the threshold is crossed") {
   REQUIRE(s.exec("KL204 ATALT 20500 ECHO passing 20500"));
   REQUIRE(s.exec("KL204 ATDIST 52.0 4.2 5 ECHO within 5"));
   CHECK(s.conditions().size() == 2);
-  // Climb at 2000 fpm: 500 ft take 15 s.
-  REQUIRE(s.run_until(14.0));
+  // Climb at 2000 fpm after the 300 ft/min/s ramp (5.7 s, 80 ft): 500 ft take 18.3 s.
+  REQUIRE(s.run_until(17.8));
   CHECK(s.take_output().empty());
-  REQUIRE(s.run_until(16.5));
+  REQUIRE(s.run_until(18.8));
   CHECK(s.take_output() == std::vector<std::string>{"passing 20500"});
   CHECK(s.conditions().size() == 1);
   // 0.2 deg of longitude at 52N is 7.39 NM; at ~300 kt TAS it takes ~29 s to close 2.4 NM.

@@ -1,44 +1,44 @@
-// libFuzzer target: the offline translator and the scorer on arbitrary bytes.
-// Invariants: no crash, no sanitizer report, and every answer is either a
-// question or a non-empty list of non-empty commands.
+// libFuzzer target: the translation graph (offline mode: the Lua grammar
+// over the C++ extractors) and the scorer on arbitrary bytes.
+// Invariants: no crash, no sanitizer report, the graph never fails, and
+// every answer is exactly one of a question, an error, or a non-empty list
+// of non-empty commands.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
-#include "core/units.h"
-#include "translate/offline_translator.h"
+#include "command/stack.h"
+#include "script/translate_graph.h"
 #include "translate/scorer.h"
+#include "translate/stack_world.h"
 
 using namespace squawk;
-using namespace squawk::translate;
 
 namespace {
 
-const StaticWorld& world() {
-  static const StaticWorld w = [] {
-    StaticWorld s;
-    for (const char* id : {"KLM123", "DAL1153", "AC01"}) {
-      AircraftView a;
-      a.id = id;
-      a.type = "B738";
-      a.lat_deg = 52.0;
-      a.lon_deg = 4.0;
-      a.hdg_deg = 90.0;
-      a.alt_m = units::ft_to_m(25000.0);
-      a.cas_ms = units::kt_to_ms(280.0);
-      a.route = {"ALPHA", "GAYEL"};
-      s.add_aircraft(a);
-    }
-    s.add_waypoint("ALPHA");
-    s.add_waypoint("GAYEL");
-    return s;
-  }();
-  return w;
+script::Vm& vm() {
+  static script::Vm v{script::VmOptions{}};
+  return v;
 }
 
-void check(const Translation& t) {
-  if (t.asked() == !t.commands.empty()) std::abort();
+const command::Stack& traffic() {
+  static const command::Stack s = [] {
+    command::Stack st;
+    if (!translate::setup_stack(st, "CRE KLM123 B738 52 4 90 FL250 280 ; CRE DAL1153 B738 52 5 90 FL250 280 ; "
+                                    "CRE AC01 B738 52 6 90 FL250 280 ; DEFWPT ALPHA 52.5 4.5 ; ADDWPT AC01 ALPHA")
+             .is_ok())
+      std::abort();
+    return st;
+  }();
+  return s;
+}
+
+void check(const Result<translate::Translation>& r) {
+  if (!r.is_ok()) std::abort();
+  const auto& t = *r;
+  const int outcomes = (t.asked() ? 1 : 0) + (!t.error.empty() ? 1 : 0) + (t.issued() ? 1 : 0);
+  if (outcomes != 1) std::abort();
   for (const auto& c : t.commands)
     if (c.empty()) std::abort();
 }
@@ -47,11 +47,11 @@ void check(const Translation& t) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  Translation bare = translate_offline(text, nullptr);
+  auto bare = script::run_translation_graph(vm(), text, {"offline", "", nullptr});
   check(bare);
-  Translation seen = translate_offline(text, &world());
+  auto seen = script::run_translation_graph(vm(), text, {"offline", "", &traffic()});
   check(seen);
-  (void)score_case(seen.text(), seen.asked(), text);
-  (void)score_case(text, false, bare.text());
+  (void)translate::score_case(seen->text(), seen->asked(), text);
+  (void)translate::score_case(text, false, bare->text());
   return 0;
 }

@@ -58,6 +58,27 @@ TEST_CASE("repl from a pipe: create in English, turn, run, heading changed") {
   CHECK(out.find("squawk>") == std::string::npos);      // no prompt on a pipe
 }
 
+TEST_CASE("repl from a pipe: FF moves the clock, conflicts are shown, a scenario's failures are counted") {
+  if (!squawk::testing::binary_built()) {
+    MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");
+    return;
+  }
+  const std::string out = run_repl(std::string("--mode offline ") + SQUAWK_TEST_DATA + "/../lua/repl_failures.scn",
+                                   "fast forward 5 minutes\n"
+                                   ":state\n"
+                                   "!HOLD\n");
+  INFO(out);
+  CHECK(out.find("scenario commands so far: 3 executed, 0 skipped, 2 failed") != std::string::npos);
+  CHECK(out.find("DEST BAW1 EHAM: argument 2") != std::string::npos);
+  CHECK(out.find("> FF 300") != std::string::npos);
+  CHECK(out.find("fast-forwarded 300 s: t = 0.0 s -> 300.0 s") != std::string::npos);
+  CHECK(out.find("conflict BAW1 & DLH2: loss of separation in") != std::string::npos);
+  CHECK(out.find("half a minute in") != std::string::npos);
+  CHECK(out.find("1 scenario command failed") != std::string::npos);
+  CHECK(out.find("t = 300.0 s, 2 aircraft") != std::string::npos);
+  CHECK(out.find("clock stopped (HOLD") != std::string::npos);
+}
+
 TEST_CASE("repl with an Ollama server: the multi-agent graph, and :trace") {
   if (!squawk::testing::binary_built()) {
     MESSAGE("skipped: " << SQUAWK_BINARY << " is not built");

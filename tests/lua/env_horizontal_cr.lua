@@ -5,7 +5,10 @@ local ask = env:reset(11)
 local o = env:observation()
 check_eq(#o.intruder_distance, 5)
 check_eq(#env:flat(), 28)
-check_near(o.cos_drift * o.cos_drift + o.sin_drift * o.sin_drift, 1, 1e-9)
+-- One shape: every field an array, the single values as one-element arrays.
+check_eq(#o.cos_drift, 1)
+check_eq(#o.waypoint_distance, 1)
+check_near(o.cos_drift[1] * o.cos_drift[1] + o.sin_drift[1] * o.sin_drift[1], 1, 1e-9)
 local total, steps = 0, 0
 while ask do
   local r, done = env:step(0.5)
@@ -26,5 +29,14 @@ local b = squawk.env.evaluate{ scenario = "scenarios/horizontal_cr.lua", policy 
 check_eq(a.episodes, 50)
 check_eq(a.mean_reward, b.mean_reward)
 check(a.success_rate < 0.2, "never turning collides")
+check(a.actions["0"] > 0 and a.actions["0.5"] == 0, "never turning plays 0 only")
+check_eq(a.most_frequent_share, 1)
+-- make_policy from Lua: a constant turn, and the GPT-2 prompt policy.
+local c = squawk.env.evaluate{ scenario = "scenarios/horizontal_cr.lua", policy = "constant:-0.5", episodes = 20, seed = 1 }
+check(c.actions["-0.5"] > 0 and c.actions["0"] == 0, "constant:-0.5 plays -0.5 only")
+local g = squawk.env.evaluate{ scenario = "scenarios/horizontal_cr.lua", policy = "gpt2", episodes = 4, seed = 1 }
+check_eq(g.episodes, 4)
+local bad_ok, bad = pcall(squawk.env.evaluate, { scenario = "scenarios/horizontal_cr.lua", policy = "constant:3" })
+check(not bad_ok and tostring(bad):find("%[%-1, 1%]"), tostring(bad))
 local ok, err = pcall(squawk.env.new, "no/such.lua")
 check(not ok and tostring(err):find("no scenario file"), tostring(err))

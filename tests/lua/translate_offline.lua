@@ -1,31 +1,44 @@
--- squawk.translate: the offline grammar, its world views and the corpus scorer.
+-- squawk.translate: the one path (run), the C++ extractors the grammar reads
+-- (utterance) and the corpus scorer.
 local tr = squawk.translate
 
--- No world: absolute instructions translate, relative ones ask.
-local r = tr.offline("KLM one two three, climb flight level three five zero")
-check_eq(r.commands[1], "ALT KLM123 FL350")
-check_eq(r.ask, nil)
-r = tr.offline("turn AC01 left 20 degrees")
-check_eq(#r.commands, 0)
-check(r.ask ~= nil, "a relative turn without a world asks")
-
--- A squawk.sim object as the world: current heading and spoken callsigns.
+-- run() is the graph: commands validated on a scratch copy, the sim only read.
 local sim = squawk.sim.new()
 check(sim:exec("CRE DAL1153 B738 40 -74 90 5000 250"))
-r = tr.offline("Delta eleven fifty three turn left twenty degrees", sim)
+local r = tr.run("Delta eleven fifty three turn left twenty degrees", { sim = sim, mode = "offline" })
 check_eq(r.commands[1], "HDG DAL1153 70")
+check_eq(r.mode, "offline")
 check_eq(sim:aircraft()[1].hdg_deg, 90, "the sim is only read")
+r = tr.run("turn AC01 left 20 degrees", { mode = "offline" })
+check(r.ask ~= nil and r.commands == nil, "a relative turn without traffic asks")
 
--- A plain table as the world.
-r = tr.offline("Slow AC01 down by 20 knots", { aircraft = { { id = "AC01", cas_kt = 280, hdg_deg = 90 } } })
-check_eq(r.commands[1], "SPD AC01 260")
-check(not pcall(tr.offline, "climb", { aircraft = { { type = "A320" } } }), "an aircraft without id is an error")
-check(not pcall(tr.offline, "climb", 42), "a number is no world")
-
--- Several instructions, in order; a question when a value is missing.
-r = tr.offline("Pause the simulation and delete AC02")
-check_eq(table.concat(r.commands, " ; "), "HOLD ; DEL AC02")
-check(tr.offline("Change the speed").ask ~= nil)
+-- The extractors: tokens, names and typed quantities, ranges 1-based [b, e).
+local u = tr.utterance("KLM123 climb flight level three five zero, then 250 kts")
+local toks = u:tokens()
+check_eq(toks[1].raw, "KLM123")
+check_eq(toks[2].text, "climb")
+check_eq(toks[5].number_word, true)
+local refs = u:refs()
+check_eq(refs[1].kind, "aircraft")
+check_eq(refs[1].name, "KLM123")
+check_eq(refs[1].b, 1)
+check_eq(refs[1].e, 2)
+local qs = u:quantities(1, #toks + 1)
+check_eq(qs[1].kind, "alt")
+check_eq(qs[1].value, 35000)
+check_eq(qs[1].fl, true)
+check_eq(qs[2].kind, "speed")
+check_eq(qs[2].value, 250)
+u:mark_used(qs[1].b, qs[1].e)
+check_eq(u:used(qs[1].b), true)
+check_eq(#u:quantities(1, #toks + 1), 1, "used tokens are skipped")
+check_eq(u:number(5, 8).value, 350)
+check_eq(u:number(4, 8), nil, "a range that is not one number")
+check(not pcall(tr.utterance, "climb", { aircraft = { { type = "A320" } } }), "an aircraft without id is an error")
+check(not pcall(tr.utterance, "climb", 42), "a number is no world")
+local idx, score = tr.best_match("gale", { "ABC", "GAYEL" })
+check_eq(idx, 2)
+check(score > 0.5)
 
 -- The scorer follows the corpus rules.
 check(tr.score("ALT KL1 30000", false, "ALT KL1 FL300"))

@@ -1,7 +1,7 @@
 -- squawk.rag and the non-network parts of squawk.llm / squawk.load_config.
 
 -- Retrieval over the registry documentation, with and without notes.
-local idx = squawk.rag.index()
+local idx = squawk.rag.index({ docs = require("translate.grammar").documents() })
 check(idx:size() > 20, "one document per command")
 local hits = idx:search("climb and maintain flight level 300", 3)
 check_eq(hits[1].command, "ALT")
@@ -9,7 +9,7 @@ check(hits[1].score > 0 and hits[1].text:find("ALT", 1, true) ~= nil)
 check_eq(idx:search("tunr left heding 270", 1)[1].command, "HDG", "typing slips still retrieve")
 check_eq(#idx:search("", 5), 0)
 
-local plain = squawk.rag.index({ notes = false, docs = { { command = "HDG", text = "qqzzyx vectoring" } } })
+local plain = squawk.rag.index({ docs = { { command = "HDG", text = "qqzzyx vectoring" } } })
 check_eq(plain:search("qqzzyx", 1)[1].command, "HDG", "extra docs attach to their command")
 check(not pcall(squawk.rag.index, { notes = "/nonexistent/notes.txt" }), "a missing notes file is an error")
 check(not pcall(idx.search, idx, "x", 0), "k must be positive")

@@ -112,14 +112,18 @@ TEST_CASE("scenario errors name the culprit") {
   CHECK(script::load_scenario("/nonexistent/x.lua", {}).status().code() == Code::kNotFound);
 }
 
-TEST_CASE("squawk eval --json prints the four keys; bad usage exits 2") {
+TEST_CASE("squawk eval --json prints Table 3's columns and the action histogram; bad usage exits 2") {
   const std::string bin = SQUAWK_BINARY;
   const std::string scen = repo("scenarios/horizontal_cr.lua");
   const std::string out = run(bin + " eval " + scen + " --policy zero --episodes 40 --seed 3 --json 2>&1");
   auto j = nlohmann::json::parse(out, nullptr, false);
   REQUIRE_MESSAGE(!j.is_discarded(), out);
-  CHECK(j.size() == 4);
   CHECK(j.at("episodes") == 40);
+  // Never turning: every decision in the 0 bin.
+  CHECK(j.at("decisions").get<long long>() > 0);
+  CHECK(j.at("actions").at("0") == j.at("decisions"));
+  CHECK(j.at("actions").at("0.5") == 0);
+  CHECK(j.at("most_frequent_share").get<double>() == 1.0);
   CHECK(j.at("success_rate").get<double>() >= 0.0);
   CHECK(j.at("success_rate").get<double>() <= 1.0);
   CHECK(j.contains("mean_reward"));

@@ -44,24 +44,26 @@ TEST_CASE("LNAV flies a 3-waypoint route and switches at each waypoint") {
   double alt_at_two = -1;
   while (sim.simt() < 3000.0 && t.lnav[0]) {
     const int before = t.route[0].active();
+    const double turndist = t.turndist[0];
     sim.step();
     for (int k = 0; k < 3; ++k) min_dist[k] = std::min(min_dist[k], dist_m(t, 0, wps[k]));
     const int now = t.route[0].active();
     if (now != before) {
       switch_dist.push_back(dist_m(t, 0, wps[before]));
-      switch_radius.push_back(t.tas[0] * t.tas[0] / (units::kG0 * std::tan(25.0 * units::kDeg)));
+      switch_radius.push_back(turndist);
       if (before == 1) alt_at_two = t.alt[0];
       CHECK((now == before + 1 || now == -1));
     }
   }
   REQUIRE(switch_dist.size() == 3);
-  // 90 deg course changes at ONE and TWO: turn anticipation R tan(45 deg) = R,
-  // with R from the TAS at that moment (TAS grows with the VNAV climb).
-  CHECK(switch_dist[0] == doctest::Approx(switch_radius[0]).epsilon(0.01));
-  CHECK(switch_dist[1] == doctest::Approx(switch_radius[1]).epsilon(0.01));
-  // Corners are cut by R (sqrt 2 - 1) at most; the last waypoint is flown over.
-  CHECK(min_dist[0] < radius * (std::sqrt(2.0) - 1.0) + 200.0);
-  CHECK(min_dist[1] < radius * (std::sqrt(2.0) - 1.0) + 200.0);
+  // About 90 deg course changes at ONE and TWO: the switch happens at the turn
+  // distance fixed when the waypoint became active (R tan(dpsi/2), R from the
+  // TAS then), within one step of flight.
+  CHECK(switch_dist[0] == doctest::Approx(switch_radius[0]).epsilon(0.003));
+  CHECK(switch_dist[1] == doctest::Approx(switch_radius[1]).epsilon(0.003));
+  CHECK(switch_radius[0] == doctest::Approx(radius).epsilon(0.02));
+  // The corner is cut; the last waypoint is flown over.
+  CHECK(min_dist[0] < radius);
   CHECK(min_dist[2] < 100.0);
   CHECK(switch_dist[2] < 1.02 * radius);
   CHECK(t.lnav[0] == 0);
@@ -107,7 +109,9 @@ TEST_CASE("route edits, DIRECT, DEST and ORIG") {
   std::vector<std::string> names;
   for (const Waypoint& w : r.waypoints()) names.push_back(w.name);
   CHECK(names == std::vector<std::string>{"A", "B", "SPY", "EHAM"});
-  CHECK(r.active() == 3);  // still flying to EHAM, which moved to the end
+  // BlueSky: a waypoint appended while the destination is active lands at the
+  // active index, so SPY became active and stays so as A and B go before it.
+  CHECK(r.active() == 2);
   REQUIRE(sim.direct_to("KL1", "b").is_ok());
   CHECK(r.active() == 1);
   REQUIRE(sim.delete_waypoint("KL1", "A").is_ok());
@@ -139,11 +143,17 @@ TEST_CASE("route edits, DIRECT, DEST and ORIG") {
 TEST_CASE("waypoint_reached: turn anticipation and passing") {
   const double bank = 25.0 * units::kDeg, tas = 150.0;
   const double r = tas * tas / (units::kG0 * std::tan(bank));
-  // 90 deg turn at the waypoint: switch inside R tan 45 = R.
-  CHECK(waypoint_reached(0.99 * r, 0.0, 90.0, 0.0, tas, bank));
-  CHECK(!waypoint_reached(1.01 * r, 0.0, 90.0, 0.0, tas, bank));
-  // Straight on (or fly-over): only once it is behind and close.
-  CHECK(!waypoint_reached(10.0, 0.0, 0.0, 0.0, tas, bank));
-  CHECK(waypoint_reached(10.0, 180.0, 180.0, 0.0, tas, bank));
-  CHECK(!waypoint_reached(2.0 * r, 180.0, 180.0, 0.0, tas, bank));
+  // 90 deg turn at a fly-by waypoint: switch inside R tan 45 = R; fly-over: 0.
+  const double td = turn_distance(tas, bank, 0.0, 90.0, true);
+  CHECK(td == doctest::Approx(r));
+  CHECK(turn_distance(tas, bank, 0.0, 90.0, false) == 0.0);
+  CHECK(waypoint_reached(0.99 * r, 0.0, 0.0, 0.0, tas, td));
+  CHECK(!waypoint_reached(1.01 * r, 0.0, 0.0, 0.0, tas, td));
+  // Straight on: only once passed (bearing > 90 deg off the leg direction)...
+  CHECK(!waypoint_reached(10.0, 0.0, 0.0, 0.0, tas, 0.0));
+  CHECK(waypoint_reached(10.0, 180.0, 0.0, 0.0, tas, 0.0));
+  CHECK(waypoint_reached(2.0 * r, 180.0, 0.0, 0.0, tas, 0.0));
+  // ...or within 4 s of flight and behind the track.
+  CHECK(waypoint_reached(3.9 * tas, 100.0, 100.0, 0.0, tas, 0.0));
+  CHECK(!waypoint_reached(4.1 * tas, 100.0, 100.0, 0.0, tas, 0.0));
 }

@@ -152,3 +152,18 @@ TEST_CASE("quantities: latitude and longitude forms") {
   CHECK(q[1].kind == QKind::kLon);
   CHECK(q[1].value == doctest::Approx(4.763333).epsilon(1e-5));
 }
+
+TEST_CASE("digit homophones between digits are digits") {
+  auto read = [](const char* s) {
+    auto t = lex(s);
+    fold_digit_homophones(t);
+    std::string words;
+    for (const auto& tok : t) words += (words.empty() ? "" : " ") + tok.text;
+    return words;
+  };
+  CHECK(read("maintain two on zero knots") == "maintain two one zero knots");
+  CHECK(read("speed two to zero") == "speed two two zero");
+  CHECK(read("heading three three fine") == "heading three three five");
+  CHECK(read("climb to two five zero") == "climb to two five zero");  // "to" before digits stays
+  CHECK(read("two five zero for now") == "two five zero for now");    // "for" after digits stays
+}

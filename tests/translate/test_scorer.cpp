@@ -12,7 +12,7 @@ TEST_CASE("aliases fold and names ignore case") {
   CHECK(canonical_command("create") == "CRE");
   CHECK(canonical_command("dct") == "DIRECT");
   CHECK(canonical_command("pause") == "HOLD");
-  CHECK(canonical_command("cdmethod") == "ASAS");
+  CHECK(canonical_command("asas") == "CDMETHOD");  // the registry's canonical name
   CHECK(same_command("heading klm123 90", "HDG KLM123 090"));
   CHECK_FALSE(same_command("HDG KLM123 90", "HDG KLM124 90"));
 }
@@ -55,26 +55,46 @@ TEST_CASE("lists, alternatives and ASK") {
   CHECK(split_commands(" A ; ; B ") == std::vector<std::string>{"A", "B"});
 }
 
-TEST_CASE("corpus reading and per-category evaluation") {
+TEST_CASE("corpus reading and right / asked / wrong per category") {
   const std::string tsv =
       "id\tsetup\tutterance\texpected\tcategory\n"
-      "a1\tCRE AC01 A320 52 4 90 FL250 280\tClimb AC01 by 2000 feet\tALT AC01 27000\trelative\n"
+      "a1\t\tClimb AC01 by 2000 feet\tALT AC01 27000\trelative\n"
       "a2\t\tChange the speed\tASK\task\n"
-      "a3\t\tPause the simulation\tOP\tsim\n";
+      "a3\t\tPause the simulation\tHOLD\tsim\n"
+      "a4\t\tDelete AC01\tDEL AC01\tdelete\n"
+      "a5\t\tClimb\tASK\task\n";
   auto cases = parse_corpus(tsv, "mem");
   REQUIRE(cases.is_ok());
-  REQUIRE(cases->size() == 3);
-  auto r = evaluate(*cases, translate_case_offline);
-  CHECK(r.cases == 3);
+  REQUIRE(cases->size() == 5);
+  // A stand-in translator: right, asked (a question where a command was
+  // expected), wrong (another command), a question where ASK was expected,
+  // and a command where a question was expected (wrong).
+  auto fake = [](const CorpusCase& c) -> squawk::Result<Translation> {
+    Translation t;
+    if (c.id == "a1") t.commands = {"ALT AC01 27000"};
+    if (c.id == "a2") t.ask = "Which aircraft?";
+    if (c.id == "a3") t.ask = "Pause what?";
+    if (c.id == "a4") t.error = "rejected";
+    if (c.id == "a5") t.commands = {"ALT AC01 FL100"};
+    return t;
+  };
+  auto r = evaluate(*cases, fake);
+  CHECK(r.cases == 5);
   CHECK(r.correct == 2);
-  REQUIRE(r.categories.size() == 3);
-  CHECK(r.categories[2].category == "sim");
-  CHECK(r.categories[2].correct == 0);
-  CHECK(format_report(r, "t").find("overall") != std::string::npos);
-  auto bad = parse_corpus("h\nonly\ttwo\n", "mem");
+  CHECK(r.asked == 2);
+  CHECK(r.wrong == 1);
+  REQUIRE(r.categories.size() == 4);
+  CHECK(r.categories[1].category == "ask");
+  CHECK(r.categories[1].correct == 1);
+  CHECK(r.categories[1].wrong == 1);
+  CHECK(r.categories[2].asked == 1);
+  CHECK(format_report(r, "t").find("wrong") != std::string::npos);
+  auto bad = parse_corpus("id\tsetup\tutterance\texpected\tcategory\nonly\ttwo\n", "mem");
   CHECK_FALSE(bad.is_ok());
   CHECK(bad.status().message().find("mem:2") != std::string::npos);
-  auto err = evaluate({{"b1", "CRE", "Delete it", "DEL X", "delete"}}, translate_case_offline);
+  auto err = evaluate({{"b1", "CRE", "Delete it", "DEL X", "delete"}},
+                      [](const CorpusCase&) -> squawk::Result<Translation> { return squawk::Status::invalid("setup failed"); });
   CHECK(err.correct == 0);
+  CHECK(err.asked == 1);
   CHECK(err.outcomes[0].produced.rfind("error:", 0) == 0);
 }

@@ -1,6 +1,8 @@
 // Data tables, spelling fixes and fuzzy matching.
 #include <doctest/doctest.h>
 
+#include "rag/edit_distance.h"
+
 #include "translate/fuzzy.h"
 #include "translate/tables.h"
 #include "translate/vocabulary.h"
@@ -43,7 +45,8 @@ TEST_CASE("spelling fixes reach instruction words only") {
 
 TEST_CASE("fuzzy similarity favours how names sound") {
   CHECK(similarity("KLM", "klm") == 1.0);
-  CHECK(edit_distance("kitten", "sitting") == 3);
+  CHECK(squawk::rag::edit_distance("kitten", "sitting") == 3);
+  CHECK(squawk::rag::edit_distance("tunr", "turn") == 1);  // a swap costs one
   CHECK(similarity("gale", "GAYEL") > similarity("gale", "FINKI"));
   CHECK(similarity("tiger", "TYGGR") > 0.5);
   auto m = best_match("tonci", {"GAYEL", "TONCE", "WAVEY"});

@@ -3,9 +3,12 @@
 #include <cmath>
 #include <string>
 
+#include "core/text.h"
 #include "viz/chart.h"
 #include "viz/csv.h"
+#include "viz/layout.h"
 #include "viz/scene.h"
+#include "viz/traffic_scene.h"
 
 using namespace squawk;
 
@@ -64,8 +67,14 @@ TEST_CASE("recorded episodes are read per episode and rendered") {
 
   const std::string svg = viz::render_scene(*first);
   CHECK(svg.rfind("<?xml", 0) == 0);
-  // One separation circle per intruder plus two waypoint circles.
-  CHECK(count(svg, "<circle") == 4);
+  // One separation circle per intruder, two waypoint circles, two closest-approach dots.
+  CHECK(count(svg, "<circle") == 6);
+  // Intruder 0 came within 0.7 NM of the ownship at t = 50 s, and it says so.
+  CHECK(svg.find(">closest 0.7 NM</text>") != std::string::npos);
+  CHECK(svg.find(">to 0, t = 50 s</text>") != std::string::npos);
+  // Caption on two lines, parts separated so that SVG cannot run them together.
+  CHECK(svg.find(">episode 0 (paper rules)</text>") != std::string::npos);
+  CHECK(svg.find(">t = 50 s \u00b7 frame 1/1 \u00b7 circles: 5 NM separation</text>") != std::string::npos);
   // Intruder 0 is 0.6 NM from the ownship in the last frame: its circle is red.
   CHECK(count(svg, "stroke=\"#dc143c\"") >= 1);
   CHECK(svg.find(">N</text>") != std::string::npos);
@@ -83,10 +92,103 @@ TEST_CASE("recording errors name the line") {
   CHECK(e.status().message().find("expected a recorder event") != std::string::npos);
 }
 
+TEST_CASE("axes: padded, ending on labelled ticks; x from 0") {
+  const viz::Axis a = viz::axis(-1.27, 0.04, 0.04, 5);
+  CHECK(a.lo < -1.27);
+  CHECK(a.hi > 0.04);
+  CHECK(a.ticks.front() == doctest::Approx(a.lo));
+  CHECK(a.ticks.back() == doctest::Approx(a.hi));  // the top tick exists, so it is labelled
+  viz::Panel p{"reward", "episodes", "reward", {}, false, 0, 0};
+  p.series.push_back({"run", {5000, 100000, 200000}, {-1.27, -0.1, 0.04}, "#1f77b4"});
+  const std::string svg = viz::panels_svg({p});
+  CHECK(svg.find(">0</text>") != std::string::npos);         // x starts at 0
+  CHECK(svg.find(">" + text::fmt_double(a.hi, 3) + "</text>") != std::string::npos);
+}
+
 TEST_CASE("panels draw every series") {
   viz::Panel p{"Average success rate", "episodes", "success", {}, true, 0, 1};
   p.series.push_back({"mlp", {0, 1000, 2000}, {0.6, 0.8, 0.95}, "#1f77b4"});
   const std::string svg = viz::panels_svg({p, p});
   CHECK(count(svg, "<polyline") == 2);
   CHECK(count(svg, "Average success rate") == 2);
+}
+
+TEST_CASE("frames outside the episode are errors that give the range") {
+  auto sc = viz::parse_episode_jsonl(kRecording);
+  REQUIRE(sc.is_ok());
+  CHECK(viz::check_frame(*sc, -1).is_ok());
+  CHECK(viz::check_frame(*sc, 0).is_ok());
+  CHECK(viz::check_frame(*sc, 1).is_ok());
+  for (long long bad : {2LL, 999LL, -3LL}) {
+    const Status st = viz::check_frame(*sc, bad);
+    REQUIRE(!st.is_ok());
+    CHECK(st.message().find("numbered 0 to 1") != std::string::npos);
+  }
+}
+
+TEST_CASE("texts fit the picture: shrunk, then cut") {
+  std::string s = "short";
+  CHECK(viz::fit_text(s, 200, 12, 7) == 12);
+  CHECK(s == "short");
+  s = std::string(60, 'x');  // 60 * 0.62 * 12 = 446 px at 12 px
+  const double f = viz::fit_text(s, 300, 12, 7);
+  CHECK(f < 12);
+  CHECK(f >= 7);
+  CHECK(viz::text_width(s, f) <= 300);
+  s = std::string(200, 'x');
+  CHECK(viz::fit_text(s, 300, 12, 7) == 7);
+  CHECK(s.size() < 200);
+  CHECK(s.substr(s.size() - 3) == "...");
+  CHECK(viz::text_width(s, 7) <= 300);
+
+  // A 400 px picture with a long title: every caption text fits the width.
+  auto sc = viz::parse_episode_jsonl(kRecording);
+  REQUIRE(sc.is_ok());
+  sc->title = "a very long title that would run past the right edge of a small picture, episode 0";
+  const std::string svg = viz::render_scene(*sc, {400, -1});
+  CHECK(svg.find("...</text>") != std::string::npos);
+}
+
+TEST_CASE("labels avoid obstacles and each other") {
+  viz::LabelLayout layout({0, 0, 400, 400});
+  layout.block({195, 195, 205, 205});  // a symbol at the anchor
+  layout.block({210, 180, 300, 220});  // something to the right
+  const auto a = layout.place({200, 200}, 40, 12, 8);
+  REQUIRE(a);
+  const viz::Box ba{a->x, a->y, a->x + 40, a->y + 12};
+  CHECK(!ba.overlaps({195, 195, 205, 205}));
+  CHECK(!ba.overlaps({210, 180, 300, 220}));
+  const auto b = layout.place({200, 200}, 40, 12, 8);
+  REQUIRE(b);
+  CHECK(!viz::Box{b->x, b->y, b->x + 40, b->y + 12}.overlaps(ba));
+  // Boxed in on every side: an optional label is left out, a required one placed.
+  viz::LabelLayout full({0, 0, 100, 100});
+  full.block({0, 0, 100, 100});
+  CHECK(!full.place({50, 50}, 10, 10, 5, false));
+  CHECK(full.place({50, 50}, 10, 10, 5, true));
+}
+
+TEST_CASE("a scenario's traffic as a scene: samples, labels, conflicts") {
+  command::Stack stack;
+  REQUIRE(stack.exec("CRE BAW1 B744 52 4 90 FL300 280").is_ok());
+  REQUIRE(stack.exec("CRE DLH2 A320 52 4.8 270 FL300 280").is_ok());
+  REQUIRE(stack.exec("ASAS ON").is_ok());
+  auto sc = viz::traffic_scene(stack, 60, 4);
+  REQUIRE(sc.is_ok());
+  CHECK(!sc->ownship);
+  CHECK(!sc->waypoint);
+  REQUIRE(sc->frames.size() == 4);
+  CHECK(sc->frames[0].t == 0);
+  CHECK(sc->frames[3].t == doctest::Approx(60));
+  CHECK(stack.sim().simt() == doctest::Approx(60));
+  const auto& last = sc->frames[3].aircraft;
+  REQUIRE(last.size() == 2);
+  CHECK(last[0].info == "FL300 280 kt");
+  CHECK(last[0].alert);  // head-on, the detector sees the conflict
+  CHECK(!sc->frames[0].aircraft[0].alert);  // no detection has run at t = 0
+  const std::string svg = viz::render_scene(*sc);
+  CHECK(svg.find(">BAW1</text>") != std::string::npos);
+  CHECK(svg.find(">FL300 280 kt</text>") != std::string::npos);
+  CHECK(count(svg, "stroke=\"#dc143c\"") == 2);  // both protected zones red
+  CHECK(!viz::traffic_scene(stack, 30).is_ok());  // before now
 }

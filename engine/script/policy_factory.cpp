@@ -1,14 +1,18 @@
-#include "app/gpt2_policy_factory.h"
+#include "script/policy_factory.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "core/files.h"
 #include "core/paths.h"
 #include "env/vec_env.h"
 #include "gpt2/checkpoint.h"
+#include "rl/baseline_policies.h"
+#include "rl/checkpoint.h"
+#include "rl/mlp_policy.h"
 #include "script/prompt_renderer.h"
 
-namespace squawk::app {
+namespace squawk::script {
 
 namespace {
 
@@ -16,12 +20,12 @@ std::string prompt_path(const std::string& prompt) {
   return prompt.empty() ? paths::resource(kDefaultPromptFile) : prompt;
 }
 
-rl::PromptRenderFn render_fn(std::shared_ptr<script::PromptRenderer> r) {
+rl::PromptRenderFn render_fn(std::shared_ptr<PromptRenderer> r) {
   return [r](const env::Observation& o) { return r->render(o); };
 }
 
 // Prompts for the first kTinyVocabEpisodes episodes of `env` under the zero action.
-Result<std::string> vocabulary_text(script::PromptRenderer& r, const env::HorizontalCrConfig& env) {
+Result<std::string> vocabulary_text(PromptRenderer& r, const env::HorizontalCrConfig& env) {
   SQUAWK_ASSIGN_OR_RETURN(env::VecEnv envs, env::VecEnv::make(env, 16));
   envs.start(0, 0, kTinyVocabEpisodes);
   std::string text;
@@ -53,7 +57,7 @@ Result<gpt2::Model> base_model(const std::string& source, uint64_t seed, const g
 }
 
 Result<Gpt2Policy> assemble(rl::PromptCheckpoint meta, gpt2::Tokenizer tok,
-                            std::shared_ptr<script::PromptRenderer> r) {
+                            std::shared_ptr<PromptRenderer> r) {
   SQUAWK_ASSIGN_OR_RETURN(gpt2::Config cfg, gpt2::parse_hf_config(meta.config_json));
   const auto extras = meta.spec.head == "action"
                           ? rl::PromptPolicy::head_extras(cfg.n_embd, static_cast<int>(meta.spec.action_values.size()))
@@ -68,9 +72,9 @@ Result<Gpt2Policy> assemble(rl::PromptCheckpoint meta, gpt2::Tokenizer tok,
 }  // namespace
 
 Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::HorizontalCrConfig& env,
-                                    const script::VmOptions& vm) {
+                                    const VmOptions& vm) {
   const std::string prompt = prompt_path(opts.prompt);
-  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<script::PromptRenderer> r, script::PromptRenderer::load(prompt, vm));
+  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<PromptRenderer> r, PromptRenderer::load(prompt, vm));
   rl::PromptCheckpoint meta;
   meta.source = opts.model;
   meta.model_seed = opts.model_seed;
@@ -108,15 +112,14 @@ Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::Ho
 }
 
 Result<Gpt2Policy> gpt2_policy_from_checkpoint(const rl::PromptCheckpoint& ckpt, const std::string& prompt,
-                                               const script::VmOptions& vm) {
+                                               const VmOptions& vm) {
   rl::PromptCheckpoint meta = ckpt;
   meta.params.clear();
   meta.adam_m.clear();
   meta.adam_v.clear();
   if (!prompt.empty()) meta.prompt = paths::portable(prompt);
   if (meta.prompt.empty() || !files::exists(paths::resolve(meta.prompt))) meta.prompt = paths::portable(prompt_path(""));
-  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<script::PromptRenderer> r,
-                          script::PromptRenderer::load(paths::resolve(meta.prompt), vm));
+  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<PromptRenderer> r, PromptRenderer::load(paths::resolve(meta.prompt), vm));
   SQUAWK_ASSIGN_OR_RETURN(gpt2::Tokenizer tok, gpt2::Tokenizer::from_hf(meta.vocab_json, meta.merges_txt));
   SQUAWK_ASSIGN_OR_RETURN(Gpt2Policy g, assemble(std::move(meta), std::move(tok), r));
   std::span<float> tail = g.policy->params();
@@ -128,26 +131,55 @@ Result<Gpt2Policy> gpt2_policy_from_checkpoint(const rl::PromptCheckpoint& ckpt,
   return g;
 }
 
-Result<Gpt2PolicyOptions> gpt2_options(const Args& args) {
-  Gpt2PolicyOptions o;
-  o.model = args.get_or("--model", "tiny");
-  o.prompt = args.get_or("--prompt", "");
-  o.spec.head = args.get_or("--head", "action");
-  SQUAWK_ASSIGN_OR_RETURN(long long seed, args.get_int("--model-seed", 0));
-  SQUAWK_ASSIGN_OR_RETURN(long long blocks, args.get_int("--blocks", -1));
-  SQUAWK_ASSIGN_OR_RETURN(long long chunk, args.get_int("--chunk", o.spec.chunk_rows));
-  o.model_seed = static_cast<uint64_t>(seed);
-  o.spec.trainable_blocks = static_cast<int>(blocks);
-  o.spec.chunk_rows = static_cast<int>(chunk);
-  return o;
-}
-
-bool wants_gpt2(const ArgV& argv) {
-  for (size_t i = 0; i < argv.size(); ++i) {
-    if (argv[i] == "--policy=gpt2") return true;
-    if (argv[i] == "--policy" && i + 1 < argv.size() && argv[i + 1] == "gpt2") return true;
+Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, const env::VecEnv& envs,
+                               const PolicyOptions& o, const VmOptions& vm) {
+  MadePolicy m;
+  m.label = kind;
+  if (kind == "zero") {
+    m.policy = std::make_unique<rl::ConstantPolicy>(envs.obs_size(), 0.0f);
+    m.label = "zero (never turn)";
+  } else if (kind.rfind("constant:", 0) == 0) {
+    const std::string v = kind.substr(9);
+    char* end = nullptr;
+    const double value = std::strtod(v.c_str(), &end);
+    if (v.empty() || end != v.c_str() + v.size() || !(value >= -1.0 && value <= 1.0))
+      return Status::invalid("policy '" + kind + "': expected constant:V with V a number in [-1, 1]");
+    m.policy = std::make_unique<rl::ConstantPolicy>(envs.obs_size(), static_cast<float>(value));
+    m.label = "constant " + v + " (always the same action)";
+  } else if (kind == "mvp") {
+    m.policy = std::make_unique<rl::MvpPolicy>(envs);
+    m.label = "mvp (BlueSky's MVP steering the ownship)";
+  } else if (kind == "random") {
+    Rng init(o.seed);
+    SQUAWK_ASSIGN_OR_RETURN(std::unique_ptr<rl::MlpPolicy> p, rl::MlpPolicy::make(sc.policy, init));
+    m.policy = std::move(p);
+    m.label = "random (untrained MLP, initialised from seed " + std::to_string(o.seed) + ")";
+  } else if (kind == "mlp") {
+    const std::string path = o.checkpoint.empty() ? paths::resource(kShippedMlpCheckpoint) : o.checkpoint;
+    SQUAWK_ASSIGN_OR_RETURN(rl::Checkpoint c, rl::load_checkpoint(path));
+    SQUAWK_ASSIGN_OR_RETURN(std::unique_ptr<rl::MlpPolicy> p, rl::policy_from_checkpoint(c));
+    m.policy = std::move(p);
+    m.label = "mlp (" + path + ")";
+    m.trained_on = c.progress.scenario;
+  } else if (kind == "gpt2") {
+    Gpt2Policy g;
+    if (o.gpt2_fresh) {
+      SQUAWK_ASSIGN_OR_RETURN(g, make_gpt2_policy(o.gpt2, sc.train_env, vm));
+      m.label = "gpt2 (" + o.gpt2.model + ", untrained head";
+    } else {
+      const std::string path = o.checkpoint.empty() ? paths::resource(kShippedGpt2Checkpoint) : o.checkpoint;
+      SQUAWK_ASSIGN_OR_RETURN(rl::PromptCheckpoint c, rl::load_prompt_checkpoint(path));
+      SQUAWK_ASSIGN_OR_RETURN(g, gpt2_policy_from_checkpoint(c, o.gpt2.prompt, vm));
+      m.label = "gpt2 (" + path + "; " + g.meta.source;
+      m.trained_on = c.progress.scenario;
+    }
+    m.label += ", head " + g.meta.spec.head + ")";
+    m.prompt = g.meta.prompt;
+    m.policy = std::move(g.policy);
+  } else {
+    return Status::invalid("policy '" + kind + "': expected random, zero, constant:V, mvp, mlp or gpt2");
   }
-  return false;
+  return m;
 }
 
-}  // namespace squawk::app
+}  // namespace squawk::script

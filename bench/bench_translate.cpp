@@ -1,0 +1,97 @@
+// Offline translation latency: each utterance of the corpora (the shared dev
+// and vice corpora when ../shared is present, else a built-in set) through
+// the whole translation graph (scripts/translate/graph.lua in offline mode:
+// the Lua grammar over the C++ extractors, validation and execution on a
+// scratch copy), against the traffic of its case's setup. Prints p50, p99
+// and the worst per-utterance time, as wall time and as this thread's CPU
+// time (the figure that holds on a shared, loaded machine: preemption is
+// not counted). Asserts nothing.
+//   bench_translate [CORPUS.tsv ...] [--reps N]
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "command/stack.h"
+#include "core/files.h"
+#include "script/translate_graph.h"
+#include "translate/corpus.h"
+#include "translate/stack_world.h"
+
+using namespace squawk;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double thread_cpu_ms() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
+}
+
+double quantile(const std::vector<double>& v, double q) {
+  return v.empty() ? 0.0 : v[std::min(v.size() - 1, static_cast<size_t>(q * v.size()))];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> paths;
+  int reps = 5;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--reps" && i + 1 < argc) reps = std::max(1, std::atoi(argv[++i]));
+    else paths.push_back(a);
+  }
+  if (paths.empty())
+    for (const char* name : {"nl2trafscript_dev.tsv", "vice_trafscript.tsv"}) {
+      const std::string p = std::string("../shared/corpora/") + name;
+      if (files::exists(p)) paths.push_back(p);
+    }
+  std::vector<translate::CorpusCase> cases;
+  for (const auto& p : paths) {
+    auto c = translate::read_corpus(p);
+    if (!c) {
+      std::fprintf(stderr, "bench_translate: %s\n", c.status().message().c_str());
+      return 1;
+    }
+    cases.insert(cases.end(), c->begin(), c->end());
+  }
+  if (cases.empty()) {
+    const char* setup = "CRE KL204 A320 52 4 90 FL250 280 ; CRE BAW123 A320 51.5 0 270 FL300 300";
+    for (const char* u : {"KL204 climb flight level three five zero", "speedbird one two three turn left heading 270",
+                          "KL204 reduce speed to two one zero knots", "fast forward 2 minutes",
+                          "Create AC01, an A320 at 52N 4E heading 90 at FL250 and 280 knots",
+                          "turn BAW123 left 20 degrees", "KL204 descend", "pause the simulation"})
+      cases.push_back({"b", setup, u, "", "bench"});
+  }
+  script::Vm vm{script::VmOptions{}};
+  std::vector<double> ms, cpu;
+  int failures = 0;
+  for (const auto& c : cases) {
+    command::Stack stack;
+    if (!translate::setup_stack(stack, c.setup).is_ok()) continue;
+    (void)script::run_translation_graph(vm, c.utterance, {"offline", "", &stack});  // warm
+    for (int r = 0; r < reps; ++r) {
+      const auto t0 = Clock::now();
+      const double c0 = thread_cpu_ms();
+      auto tr = script::run_translation_graph(vm, c.utterance, {"offline", "", &stack});
+      cpu.push_back(thread_cpu_ms() - c0);
+      ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+      failures += !tr.is_ok();
+    }
+  }
+  std::sort(ms.begin(), ms.end());
+  std::sort(cpu.begin(), cpu.end());
+  std::printf("offline translation graph: %zu utterances x %d reps (%s), graph errors %d\n", ms.size() / reps, reps,
+              paths.empty() ? "built-in set" : "corpora", failures);
+  std::printf("  wall per utterance  p50 %.3f ms   p99 %.3f ms   max %.3f ms\n", quantile(ms, 0.5),
+              quantile(ms, 0.99), ms.empty() ? 0.0 : ms.back());
+  std::printf("  CPU  per utterance  p50 %.3f ms   p99 %.3f ms   max %.3f ms\n", quantile(cpu, 0.5),
+              quantile(cpu, 0.99), cpu.empty() ? 0.0 : cpu.back());
+  return 0;
+}

@@ -1,0 +1,210 @@
+#include "script/serve_session.h"
+
+#include <lua.hpp>
+
+#include "script/lua_util.h"
+
+namespace squawk::script {
+
+namespace {
+
+constexpr const char* kSessionKey = "squawk.serve.session";  // registry slot
+constexpr const char* kModule = "translate.session";
+constexpr const char* kSimMetatable = "squawk.sim.Sim";  // bind_sim.cpp's class
+
+// lua_pcall with a traceback; on error the message is popped and returned.
+Status pcall(lua_State* L, int nargs, int nresults) {
+  const int fn = lua_gettop(L) - nargs;
+  lua_pushcfunction(L, traceback_handler);
+  lua_insert(L, fn);
+  const int rc = lua_pcall(L, nargs, nresults, fn);
+  lua_remove(L, fn);
+  if (rc == LUA_OK) return Status::ok();
+  std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
+  lua_pop(L, 1);
+  return Status::invalid(msg);
+}
+
+std::string string_field(lua_State* L, int idx, const char* key) {
+  lua_getfield(L, idx, key);
+  size_t n = 0;
+  const char* s = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &n) : nullptr;
+  std::string out = s ? std::string(s, n) : std::string();
+  lua_pop(L, 1);
+  return out;
+}
+
+bool bool_field(lua_State* L, int idx, const char* key) {
+  lua_getfield(L, idx, key);
+  const bool b = lua_toboolean(L, -1) != 0;
+  lua_pop(L, 1);
+  return b;
+}
+
+// The events array at `idx` (absent: none).
+std::vector<SessionEvent> events_at(lua_State* L, int idx) {
+  std::vector<SessionEvent> out;
+  if (!lua_istable(L, idx)) return out;
+  const lua_Integer n = luaL_len(L, idx);
+  for (lua_Integer k = 1; k <= n; ++k) {
+    lua_geti(L, idx, k);
+    const int e = lua_gettop(L);
+    if (lua_istable(L, e)) {
+      lua_getfield(L, e, "t");
+      const double t = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+      out.push_back({t, string_field(L, e, "kind"), string_field(L, e, "text")});
+    }
+    lua_pop(L, 1);
+  }
+  return out;
+}
+
+// graph.format_trace(trace) for the trace table at `idx` ("" when absent).
+Result<std::string> format_trace(lua_State* L, int idx) {
+  if (!lua_istable(L, idx)) return std::string();
+  lua_getglobal(L, "require");
+  lua_pushstring(L, "translate.graph");
+  SQUAWK_RETURN_IF_ERROR(pcall(L, 1, 1));
+  lua_getfield(L, -1, "format_trace");
+  lua_remove(L, -2);
+  lua_pushvalue(L, idx);
+  SQUAWK_RETURN_IF_ERROR(pcall(L, 1, 1));
+  std::string out = lua_tostring(L, -1) ? lua_tostring(L, -1) : "";
+  lua_pop(L, 1);
+  return out;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<ServeSession>> ServeSession::open(Vm& vm, const std::string& scenario,
+                                                         const std::string& mode) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  lua_getglobal(L, "require");
+  lua_pushstring(L, kModule);
+  Status st = pcall(L, 1, 1);
+  if (st.is_ok()) {
+    lua_getfield(L, -1, "new");
+    lua_createtable(L, 0, 3);
+    if (!scenario.empty()) {
+      lua_pushstring(L, scenario.c_str());
+      lua_setfield(L, -2, "scenario");
+    }
+    if (!mode.empty()) {
+      lua_pushstring(L, mode.c_str());
+      lua_setfield(L, -2, "mode");
+    }
+    lua_pushinteger(L, static_cast<lua_Integer>(vm.options().seed));
+    lua_setfield(L, -2, "seed");
+    st = pcall(L, 1, 1);
+  }
+  if (!st.is_ok()) {
+    lua_settop(L, top);
+    return st;
+  }
+  lua_getfield(L, -1, "sim");
+  ObjectHeader* h = test_header(L, -1, kSimMetatable);
+  command::Stack* stack = h && h->alive ? &reinterpret_cast<ObjectBox<command::Stack>*>(h)->value : nullptr;
+  lua_pop(L, 1);
+  if (!stack) {
+    lua_settop(L, top);
+    return Status::internal(std::string(kModule) + ": session.sim is not a squawk.sim");
+  }
+  lua_setfield(L, LUA_REGISTRYINDEX, kSessionKey);
+  lua_settop(L, top);
+  return std::unique_ptr<ServeSession>(new ServeSession(vm, stack));
+}
+
+ServeSession::~ServeSession() {
+  lua_State* L = vm_->state();
+  lua_pushnil(L);
+  lua_setfield(L, LUA_REGISTRYINDEX, kSessionKey);
+}
+
+Result<CommandReply> ServeSession::command(const std::string& text) {
+  lua_State* L = vm_->state();
+  const int top = lua_gettop(L);
+  lua_getfield(L, LUA_REGISTRYINDEX, kSessionKey);
+  lua_getfield(L, -1, "command");
+  lua_insert(L, -2);  // method, session
+  lua_pushlstring(L, text.data(), text.size());
+  Status st = pcall(L, 2, 1);
+  if (st.is_ok() && !lua_istable(L, -1)) st = Status::internal(std::string(kModule) + ": command() returned no table");
+  if (!st.is_ok()) {
+    lua_settop(L, top);
+    return st;
+  }
+  const int r = lua_gettop(L);
+  CommandReply out;
+  out.text = string_field(L, r, "text");
+  out.ask = string_field(L, r, "ask");
+  out.cancelled = bool_field(L, r, "cancelled");
+  const std::string error = string_field(L, r, "error");
+  lua_getfield(L, r, "commands");
+  if (lua_istable(L, -1)) {
+    const lua_Integer n = luaL_len(L, -1);
+    for (lua_Integer k = 1; k <= n; ++k) {
+      lua_geti(L, -1, k);
+      if (const char* s = lua_tostring(L, -1)) out.commands.emplace_back(s);
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+  // One result per command run; the first failure stops the rest.
+  out.ok = out.ask.empty() && error.empty();
+  lua_getfield(L, r, "results");
+  if (lua_istable(L, -1)) {
+    const int res = lua_gettop(L);
+    const lua_Integer n = luaL_len(L, res);
+    for (lua_Integer k = 1; k <= n; ++k) {
+      lua_geti(L, res, k);
+      const bool ok = bool_field(L, -1, "ok");
+      const std::string msg = string_field(L, -1, "message");
+      lua_pop(L, 1);
+      if (!ok) {
+        out.ok = false;
+        out.message = msg;
+        break;
+      }
+      if (!msg.empty()) out.message += (out.message.empty() ? "" : "\n") + msg;
+    }
+  }
+  lua_pop(L, 1);
+  if (!error.empty()) out.message = "could not translate: " + error;
+  if (out.cancelled) out.message = "question dropped";
+  if (out.ok && out.commands.empty() && !out.cancelled) {
+    out.ok = false;
+    out.message = "nothing to run";
+  }
+  const std::string clock = string_field(L, r, "clock");
+  if (!clock.empty()) out.message += (out.message.empty() ? "" : "\n") + clock;
+  lua_getfield(L, r, "events");
+  out.events = events_at(L, lua_gettop(L));
+  lua_pop(L, 1);
+  lua_getfield(L, r, "trace");
+  auto trace = format_trace(L, lua_gettop(L));
+  lua_settop(L, top);
+  if (!trace) return trace.status();
+  out.trace = *trace;
+  return out;
+}
+
+Result<std::vector<SessionEvent>> ServeSession::tick(double wall_s) {
+  lua_State* L = vm_->state();
+  const int top = lua_gettop(L);
+  lua_getfield(L, LUA_REGISTRYINDEX, kSessionKey);
+  lua_getfield(L, -1, "tick");
+  lua_insert(L, -2);
+  lua_pushnumber(L, wall_s);
+  Status st = pcall(L, 2, 1);
+  if (!st.is_ok()) {
+    lua_settop(L, top);
+    return st;
+  }
+  auto events = events_at(L, lua_gettop(L));
+  lua_settop(L, top);
+  return events;
+}
+
+}  // namespace squawk::script

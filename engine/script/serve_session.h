@@ -1,0 +1,63 @@
+// ServeSession: the controller's session (scripts/translate/session.lua,
+// module `translate.session`, the one behind `squawk repl`) driven from C++
+// for `squawk serve`.
+//
+// Contract: open() creates the module's session in `vm` with the scenario
+// (empty: none) and translation mode (empty: the graph's default). stack() is
+// the simulation the session's translator and commands act on; it lives as
+// long as the session (the Lua value is kept in the registry) and is used
+// only on the thread that owns `vm`. command() passes one line (English or
+// "!TrafScript") and returns what happened; tick() advances the clock as the
+// run state asks (session:tick); both report what happened meanwhile as
+// events. A Lua error comes back as a Status with its traceback and the
+// session stays usable.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "command/stack.h"
+#include "core/status.h"
+#include "script/vm.h"
+
+namespace squawk::script {
+
+// Something that happened while time moved: kind "conflict", "conflict_end",
+// "los", "los_end", "echo" or "failure" (session.lua documents them).
+struct SessionEvent {
+  double t = 0;  // [s] sim time
+  std::string kind;
+  std::string text;
+};
+
+struct CommandReply {
+  std::string text;                   // what was typed
+  std::vector<std::string> commands;  // TrafScript lines run (or that would have run)
+  bool ok = false;                    // every command ran
+  std::string message;                // output, or the first error
+  std::string ask;                    // the translator's question; nothing ran
+  bool cancelled = false;             // a pending question was dropped
+  std::string trace;                  // the translation graph's path, one node a line
+  std::vector<SessionEvent> events;   // what happened while the command ran (FF)
+};
+
+class ServeSession {
+ public:
+  static Result<std::unique_ptr<ServeSession>> open(Vm& vm, const std::string& scenario, const std::string& mode);
+  ~ServeSession();
+  ServeSession(const ServeSession&) = delete;
+  ServeSession& operator=(const ServeSession&) = delete;
+
+  command::Stack& stack() { return *stack_; }
+  Result<CommandReply> command(const std::string& text);
+  // session:tick(wall_s): OP advances wall_s x DTMULT, FF to its end, HOLD not at all [s].
+  Result<std::vector<SessionEvent>> tick(double wall_s);
+
+ private:
+  ServeSession(Vm& vm, command::Stack* stack) : vm_(&vm), stack_(stack) {}
+  Vm* vm_;
+  command::Stack* stack_;
+};
+
+}  // namespace squawk::script

@@ -1,0 +1,37 @@
+// JSON views of a live simulation for the radar scope and its HTTP API.
+//
+// state_json(stack) is the body of GET /api/state (and of each push-stream
+// event), aviation units at this edge:
+//   simt [s], running (bool), fast (bool), dtmult [-],
+//   asas {on, reso, rpz_nm, hpz_ft, dtlook_s},
+//   aircraft [{id, type, lat, lon [deg], alt_ft, hdg_deg, trk_deg, cas_kt,
+//              tas_kt, gs_kt, vs_fpm, sel_hdg_deg, sel_alt_ft, sel_cas_kt
+//              (null when a Mach is selected: sel_mach), lnav, vnav,
+//              resolving (bool: following a resolution), active_wpt (name or
+//              null), route [{name, lat, lon, alt_ft|null}]}],
+//   conflicts [{ids [a, b], tcpa_s, dcpa_nm, tlos_s, dist_nm,
+//               cpa [[lat, lon], [lat, lon]]}]  each pair once (a < b), cpa
+//               = where each aircraft will be at the closest approach if both
+//               keep their present ground velocity (from the present state),
+//   los [{ids [a, b], dist_nm, dalt_ft}]  each pair once.
+// navdata_json(db, box) lists the airports and waypoints inside the box, at
+// most `limit` of them: {airports: [[id, lat, lon]], fixes: [[id, lat, lon]],
+// truncated}.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "command/navdb.h"
+#include "command/stack.h"
+
+namespace squawk::serve {
+
+nlohmann::json state_json(const command::Stack& stack);
+
+struct GeoBox {
+  double lat0 = -90, lat1 = 90;    // [deg] south, north
+  double lon0 = -180, lon1 = 180;  // [deg] west, east
+};
+nlohmann::json navdata_json(const command::NavDb* db, const GeoBox& box, size_t limit);
+
+}  // namespace squawk::serve

@@ -1,0 +1,429 @@
+-- The offline grammar: controller and experimenter English -> TrafScript,
+-- with no language model. The `offline` node of the translation graph.
+--
+-- Data: translate/lexicon.lua (words) and translate/rules.lua (which words
+-- ask for which registry command), checked against the command registry
+-- when they load; translate/handlers.lua fills each command's arguments.
+-- The C++ extractors (squawk.translate.utterance) lex, read numbers and
+-- quantities with units, latitude/longitude forms, callsigns, types and
+-- waypoint names.
+--
+-- API:
+--   translate(text, world) -> {commands = {"CMD", ...}} | {commands = {}, ask = "question"}
+--     world: {aircraft = {{id=, type=, lat=, lon=, hdg_deg=, alt_ft=, cas_kt=,
+--             mach=, route = {...}}, ...}, waypoints = {"NAME", ...}} or nil.
+--     world.confirmed: {[id] = true} for callsigns the speaker confirmed.
+--     Never fails: a request it cannot fill completely becomes a question
+--     naming what is missing; a question about an inexactly heard callsign
+--     carries confirm = {id =, heard =}.
+--   rule(spec), intent(name)(spec)   add a rule / an intent at run time,
+--     checked like the file's (an error names the caller's file:line).
+--     New rules go before the file's rules, so they win.
+--   handler(name, fn)  a new handler fn(g, s, spec) (see translate/handlers.lua)
+--   check_command(name, args, level)  the registry check used for both.
+--   has_instruction(text) -> true when a word of text starts an instruction.
+--   documents() -> {{command =, text =}, ...}  retrieval documents: the
+--     words of the rules, per registry command (squawk.rag.index docs)
+local lexicon = require("translate.lexicon")
+
+local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
+
+-- ---- the registry check ----
+
+local registry
+local function registry_args()
+  if registry then return registry end
+  registry = {}
+  for _, c in ipairs(squawk.sim.commands()) do
+    local names = {}
+    local rest = c.usage:match("^%S+%s*(.*)$") or ""
+    for w in rest:gmatch("[%w_]+") do names[w] = true end
+    registry[c.name:upper()] = names
+    for _, a in ipairs(c.aliases or {}) do registry[a:upper()] = names end
+  end
+  return registry
+end
+
+-- Errors at `level` (the caller's file:line) unless `name` is a registry
+-- command (or alias) whose usage names every one of `args`.
+function M.check_command(name, args, level)
+  local reg = registry_args()
+  local names = reg[tostring(name):upper()]
+  if not names then error(string.format("grammar: unknown command '%s'", tostring(name)), level + 1) end
+  for _, a in ipairs(args or {}) do
+    if not names[a] then
+      error(string.format("grammar: command %s has no argument '%s'", name, tostring(a)), level + 1)
+    end
+  end
+end
+
+local handlers  -- translate.handlers, loaded after M is complete
+
+local G = {}
+G.__index = G
+
+local function add_intent(name, spec, level)
+  if handlers and not G[spec.handler] then
+    error("grammar: intent '" .. name .. "' has no handler '" .. tostring(spec.handler) .. "'", level + 1)
+  end
+  local cmds = spec.cmds or { spec.cmd }
+  if #cmds == 0 then error("grammar: intent '" .. name .. "' names no command", level + 1) end
+  for _, c in ipairs(cmds) do M.check_command(c, spec.cmds and {} or spec.args, level + 1) end
+  for _, c in ipairs(spec.also or {}) do M.check_command(c, {}, level + 1) end
+  if spec.cmds then
+    for _, a in ipairs(spec.args or {}) do
+      M.check_command(cmds[1], { a }, level + 1)
+    end
+  end
+  spec.name = name
+  M.intents[name] = spec
+end
+
+-- Word lists: "a b @list *" -> set
+local set_cache = {}
+local function word_set(words, level)
+  if type(words) == "table" then return words end
+  local s = set_cache[words]
+  if s then return s end
+  s = {}
+  for w in words:gmatch("%S+") do
+    if w:sub(1, 1) == "@" then
+      local list = lexicon[w:sub(2)]
+      if type(list) ~= "table" then error("grammar: no word list lexicon." .. w:sub(2), level + 1) end
+      for k, v in pairs(list) do s[type(k) == "number" and v or k] = true end
+    else
+      s[w] = true
+    end
+  end
+  set_cache[words] = s
+  return s
+end
+M.word_set = word_set
+
+local function compile_rule(spec, level)
+  local words, target = spec[1], spec[2]
+  if type(words) ~= "string" then error("grammar: a rule starts with its words", level + 1) end
+  if target ~= false and not M.intents[target] then
+    error(string.format("grammar: rule for '%s' names unknown intent '%s'", words, tostring(target)), level + 1)
+  end
+  local r = { words = word_set(words, level + 1), any = words == "*", intent = target, when = spec.when }
+  r.next = spec.next and word_set(spec.next, level + 1)
+  for _, k in ipairs({ "near", "not_near", "prev", "not_prev" }) do
+    if spec[k] then r[k] = { spec[k][1], word_set(spec[k][2], level + 1) } end
+  end
+  return r
+end
+
+local loading = true
+function M.rule(spec)
+  local r = compile_rule(spec, 2)
+  if loading then
+    M.rules[#M.rules + 1] = r
+  else
+    table.insert(M.rules, 1, r)
+  end
+end
+
+function M.intent(name)
+  return function(spec) add_intent(name, spec, 2) end
+end
+
+-- words(cmd)(text): more words people use for a registry command.
+function M.add_words(cmd)
+  return function(text)
+    M.check_command(cmd, {}, 2)
+    M.words[#M.words + 1] = { command = cmd:upper(), text = text }
+  end
+end
+
+require("translate.rules")(M.intent, M.rule, M.add_words)
+loading = false
+
+-- handler(name, fn): a new handler method fn(g, s, spec) for intents to name.
+function M.handler(name, fn) G[name] = fn end
+
+-- ---- the state of one translation ----
+
+function G:word(i, words)
+  local t = self.t[i]
+  return t ~= nil and t.kind == "word" and word_set(words, 2)[t.text] == true
+end
+
+function G:word_in(b, e, words)
+  local s = word_set(words, 2)
+  for i = b, math.min(e, #self.t + 1) - 1 do
+    local t = self.t[i]
+    if t.kind == "word" and s[t.text] then return true end
+  end
+  return false
+end
+
+-- The first position in [b, e) holding one of `words`, or e.
+function G:find_word(b, e, words)
+  local s = word_set(words, 2)
+  for i = b, math.min(e, #self.t + 1) - 1 do
+    local t = self.t[i]
+    if t.kind == "word" and s[t.text] then return i end
+  end
+  return e
+end
+
+function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self.t + 1, i + 1 + span), words) end
+function G:preceded_by(i, span, words) return self:word_in(math.max(1, i - span), i, words) end
+function G:number_at(i) local t = self.t[i] return t ~= nil and not self.u:used(i) and t.number_word end
+
+function G:refs_in(b, e, kind)
+  local out = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == kind and r.b >= b and r.b < e then out[#out + 1] = r end
+  end
+  return out
+end
+function G:has_ref(b, e, kind) return #self:refs_in(b, math.min(e, #self.t + 1), kind) > 0 end
+
+function G:type_or_aircraft_word(b, e)
+  e = math.min(e, #self.t + 1)
+  return self:has_ref(b, e, "type") or self:word_in(b, e, "@aircraft_nouns")
+end
+
+-- "turn on/off ..." / "switch on ...": a switch, not a turn.
+function G:switch_follows(i)
+  local stop = i + 1
+  while stop <= #self.t and stop < i + 5 and not self.t[stop].number_word and not self:word(stop, "left right heading") do
+    stop = stop + 1
+  end
+  return self:word_in(i + 1, stop, "on off")
+end
+
+function G:state(id)
+  local lid = id:lower()
+  for _, a in ipairs(self.fleet) do
+    if a.id:lower() == lid then return a end
+  end
+  return nil
+end
+
+function G:quantities(b, e) return self.u:quantities(b, e) end
+
+function G:need(question)
+  if not self.ask then self.ask = question end
+end
+
+function G:emit(line) self.out[#self.out + 1] = line end
+
+-- The intent the word at i starts, or nil.
+function G:intent_at(i)
+  local t = self.t[i]
+  if not t or t.kind ~= "word" or self.u:used(i) then return nil end
+  for _, r in ipairs(M.rules) do
+    if (r.any or r.words[t.text])
+        and (not r.next or self:word(i + 1, r.next))
+        and (not r.near or self:followed_by(i, r.near[1], r.near[2]))
+        and (not r.not_near or not self:followed_by(i, r.not_near[1], r.not_near[2]))
+        and (not r.prev or self:preceded_by(i, r.prev[1], r.prev[2]))
+        and (not r.not_prev or not self:preceded_by(i, r.not_prev[1], r.not_prev[2]))
+        and (not r.when or r.when(self, i)) then
+      return r.intent or nil
+    end
+  end
+  return nil
+end
+
+handlers = require("translate.handlers")
+for name, fn in pairs(handlers.methods) do G[name] = fn end
+for name, spec in pairs(M.intents) do
+  if not G[spec.handler] then error("grammar: intent '" .. name .. "' has no handler '" .. tostring(spec.handler) .. "'") end
+end
+
+-- ---- conditions: "When AC01 reaches FL200, ..." ----
+function G:condition()
+  local i = 1
+  while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
+  if not self:word(i, "@condition") then return nil, 1 end
+  local comma = i + 1
+  while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
+  if comma > #self.t then return nil, 1 end
+  local ids = self:refs_in(i, comma, "aircraft")
+  if #ids == 0 then return nil, 1 end
+  self.subject = ids[1].name
+  local f = handlers.format
+  for _, q in ipairs(self:quantities(i, comma)) do
+    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), comma + 1 end
+    if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), comma + 1 end
+    if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), comma + 1 end
+    if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), comma + 1 end
+  end
+  self.ask = "At what altitude or speed should " .. self.subject .. " act?"
+  return nil, comma + 1
+end
+
+-- ---- segments: one instruction each ----
+local function same_family(a, b)
+  local ia, ib = M.intents[a], M.intents[b]
+  return a == b or (ia and ib and ia.family ~= nil and ia.family == ib.family)
+end
+
+function G:segments(b, e)
+  local trig = {}
+  for i = b, e - 1 do
+    local intent = self:intent_at(i)
+    if intent then trig[#trig + 1] = { intent = intent, pos = i } end
+  end
+  local segs = {}
+  if #trig == 0 then return { { intent = "infer", b = b, trig = b, e = e } } end
+  for k, tr in ipairs(trig) do
+    local last = segs[#segs]
+    local this = M.intents[tr.intent]
+    local thn = self:word_in(k == 1 and b or trig[k - 1].pos, tr.pos, "@then_words")
+    local merged = false
+    if last and not thn then
+      local li = M.intents[last.intent] or {}
+      if (li.absorbs and this.value) or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
+        merged = true
+      elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
+        merged = true  -- "make a new ...": one request
+      else
+        local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
+          and #self:quantities(last.trig, tr.pos) == 0
+        if (last.intent == tr.intent or alt_pair) and not this.single then
+          if tr.intent == "alt" then last.intent = "alt" end
+          merged = true
+        end
+      end
+    end
+    if not merged then
+      if last then last.e = tr.pos end
+      segs[#segs + 1] = { intent = tr.intent, b = last and tr.pos or b, trig = tr.pos, e = e, ["then"] = thn }
+    end
+  end
+  return segs
+end
+
+function G:parse(b, e)
+  local segs = self:segments(b, e)
+  local prev_out = #self.out
+  self:orphan_heading(segs[1])
+  for k, s in ipairs(segs) do
+    if self.ask then break end
+    local skip = false
+    -- "descend and maintain four th- correction descend and maintain three
+    -- thousand": the corrected instruction replaces the one before it.
+    if k > 1 and self:word_in(segs[k - 1].trig, s.trig, "@correction") and same_family(segs[k - 1].intent, s.intent) then
+      for c = #self.out, prev_out + 1, -1 do self.out[c] = nil end
+    end
+    prev_out = #self.out
+    -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
+    -- handled instruction names what to show, not a new instruction.
+    if k > 1 and #self.out > 0 and self:word(s.trig, "@shown") and #self:quantities(s.b, s.e) == 0 then skip = true end
+    if not skip then
+      local before = self.last_cond
+      self.last_cond = nil
+      local n_before = #self.out
+      local at = self:at_altitude(s)
+      local spec = M.intents[s.intent]
+      self[spec and spec.handler or "infer"](self, s, spec)
+      if not self.ask and #self.out > n_before then self:leftovers(s) end
+      if at then
+        for c = n_before + 1, #self.out do self.out[c] = at .. " " .. self.out[c] end
+      end
+      -- A value instruction said without its value next to other, complete
+      -- instructions is left out; it becomes the question only when nothing
+      -- else was understood.
+      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
+        self.pending = self.pending or self.ask
+        self.ask = nil
+      elseif s["then"] and before and #self.out == n_before + 1
+          and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
+        self.out[#self.out] = before .. " " .. self.out[#self.out]
+      end
+    end
+  end
+end
+
+-- True when the text holds a word that starts an instruction of its own
+-- (the dialogue tells an answer to its question from a new request by it).
+function M.has_instruction(text)
+  local u = squawk.translate.utterance(text)
+  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = { aircraft = {}, waypoints = {} },
+    fleet = {}, out = {} }, G)
+  for i = 1, #g.t do
+    if g:intent_at(i) then return true end
+  end
+  return false
+end
+
+-- Retrieval documents from the grammar: for each registry command, the
+-- words whose rules lead to it and its `words` lines ({command =, text =}
+-- for squawk.rag.index).
+function M.documents()
+  local words, order, extra = {}, {}, {}
+  for _, w in ipairs(M.words) do
+    if not extra[w.command] then
+      extra[w.command] = w.text
+      if not words[w.command] then words[w.command], order[#order + 1] = {}, w.command end
+    end
+  end
+  for _, r in ipairs(M.rules) do
+    local spec = r.intent and M.intents[r.intent]
+    if spec and not r.any then
+      for _, cmd in ipairs(spec.cmds or { spec.cmd }) do
+        if not words[cmd] then words[cmd], order[#order + 1] = {}, cmd end
+        for w in pairs(r.words) do
+          local phrase = w
+          if r.next then
+            local nexts = {}
+            for n in pairs(r.next) do nexts[#nexts + 1] = w .. " " .. n end
+            table.sort(nexts)
+            phrase = table.concat(nexts, ", ")
+          end
+          words[cmd][phrase] = true
+        end
+      end
+    end
+  end
+  local docs = {}
+  for _, cmd in ipairs(order) do
+    local list = {}
+    for w in pairs(words[cmd]) do list[#list + 1] = w end
+    table.sort(list)
+    local text = "Words people use for " .. cmd .. ": " .. table.concat(list, ", ")
+    if extra[cmd] then text = text .. ". " .. extra[cmd] end
+    docs[#docs + 1] = { command = cmd, text = text }
+  end
+  return docs
+end
+
+-- True when every word of text is in lexicon[list] ("yes", "affirm").
+function M.lexicon_says(text, list)
+  local set, any = word_set("@" .. list, 1), false
+  for w in text:lower():gmatch("[%a']+") do
+    if not set[w] then return false end
+    any = true
+  end
+  return any
+end
+
+local UNDERSTOOD = "I did not understand that. Which command, aircraft and value do you mean?"
+M.not_understood = UNDERSTOOD
+
+function M.translate(text, world)
+  world = world or {}
+  world.aircraft = world.aircraft or {}
+  world.waypoints = world.waypoints or {}
+  local u = squawk.translate.utterance(text, world)
+  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {} }, G)
+  local cond, rest = g:condition()
+  if not g.ask then
+    g:parse(rest, #g.t + 1)
+    if cond and not g.ask then
+      if #g.out == 0 then g.ask = "What should happen when the condition is met?" end
+      for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
+    end
+  end
+  if not g.ask and #g.out == 0 then g.ask = g.pending end
+  if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm } end
+  if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
+  return { commands = g.out }
+end
+
+return M

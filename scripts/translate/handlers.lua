@@ -1,0 +1,228 @@
+-- The handlers of the offline grammar (translate/grammar.lua): one per
+-- intent of translate/rules.lua, each filling its command's arguments from
+-- the quantities and names of its stretch of the utterance.
+--
+-- A handler is method(g, s, spec): g the grammar state (tokens g.t, names
+-- g.refs, traffic g.fleet, output g.out), s the segment {intent, b, trig, e}
+-- ([b, e) token range, trig the instruction word). It appends TrafScript
+-- lines with g:emit() or names what is missing with g:need(question); it
+-- never guesses a value that was neither said nor read from the traffic.
+local L = require("translate.lexicon")
+
+local H = { methods = {} }
+local m = H.methods
+
+-- ---- formatting: values as TrafScript text ----
+local f = {}
+H.format = f
+function f.num(v)
+  local s = string.format("%.6f", v):gsub("0+$", ""):gsub("%.$", "")
+  return s == "-0" and "0" or s
+end
+function f.int(v) return string.format("%d", math.floor(v + 0.5)) end
+function f.alt(ft, fl)
+  if fl and ft % 100 == 0 then return "FL" .. f.int(ft / 100) end
+  return f.int(ft)
+end
+function f.mach(v)
+  local s = string.format("%.3f", v):gsub("0+$", ""):gsub("%.$", "")
+  return "M" .. (s:sub(1, 1) == "0" and s or "0" .. s)
+end
+local function wrap(h)
+  local r = math.fmod(h, 360)
+  if r <= 0 then r = r + 360 end
+  return r
+end
+
+local BASE = { north = true, east = true, south = true, west = true }
+local function compass(a, b)
+  local x, y = L.compass[a], L.compass[b or ""]
+  if not x then return nil end
+  if not BASE[a] then return x end  -- "southwest"
+  if y and not BASE[b] then y = nil end
+  if not y then return x == 0 and 360 or x end
+  if x == 0 and y == 270 then return 315 end
+  if x == 0 then return y / 2 end
+  if x == 180 then return (x + y) / 2 end
+  return nil
+end
+
+-- ---- values ----
+
+-- A value said digit by digit that lost digits beyond repair: one digit, or
+-- two ending in zero ("one zero knots": 100 or 210?). Two others ("two
+-- five") lost their final zero and read times ten; "zero nine" is 090.
+function H.cut_off(n)
+  if n.hundred or n.thousand or n.decimal then return false end
+  local d = n.digits
+  return #d == 1 or (#d == 2 and d:sub(1, 1) ~= "0" and d:sub(2, 2) == "0")
+end
+function m:values_after_trigger(s)
+  local n = 0
+  for _, q in ipairs(self:quantities(s.b, s.e)) do if q.b >= s.trig then n = n + 1 end end
+  return n
+end
+
+-- +1 for up/more words, -1 for down/less words, 0 when none.
+function m:direction(s)
+  for i = s.b, s.e - 1 do
+    if self:word(i, "@up") then return 1 end
+    if self:word(i, "@down") then return -1 end
+  end
+  return 0
+end
+
+-- 1 on, 0 off, -1 not said.
+function m:on_off(s)
+  local b = (s.b > 1 and self:word(s.b - 1, "off on")) and s.b - 1 or s.b
+  if self:word_in(b, s.e, "@off") or self:word_in(s.b, s.e, "@off_after") then return 0 end
+  if self:word_in(b, s.e, "@on") then return 1 end
+  return -1
+end
+
+-- Aircraft a segment talks about: those after its trigger, else before it,
+-- else the utterance's subject, else one named later, else the only aircraft.
+function m:acids(s)
+  local ids, seen = {}, {}
+  local any_known = false
+  for _, r in ipairs(self.refs) do if r.kind == "aircraft" and r.exists then any_known = true end end
+  local function take(b, e)
+    for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
+      if (r.exists or not any_known) and not seen[r.name] then
+        seen[r.name] = true
+        ids[#ids + 1] = r.name
+      end
+    end
+  end
+  take(s.trig, s.e)
+  if #ids == 0 then take(s.b, s.trig) end
+  self:confirm_callsigns(s)
+  if #ids == 0 and self.subject then ids[1] = self.subject end
+  if #ids == 0 then
+    for _, r in ipairs(self.refs) do
+      if r.kind == "aircraft" and r.b >= s.e then ids[1] = r.name break end
+    end
+  end
+  if #ids == 0 and #self.fleet == 1 then ids[1] = self.fleet[1].id end
+  if #ids > 0 then self.subject = ids[1] end
+  return ids
+end
+
+-- A spoken callsign matched to an aircraft whose airline or digits differ
+-- from what was heard is asked about, unless the speaker confirmed it.
+function m:confirm_callsigns(s)
+  local c = L.callsign_confirm
+  for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+    local h = r.heard
+    if h and not (self.world.confirmed or {})[r.name] and (h.airline < c.airline or h.digits < c.digits) then
+      self.confirm = self.confirm or { id = r.name, heard = h.id }
+      self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
+    end
+  end
+end
+
+function m:acid(s, what)
+  local ids = self:acids(s)
+  if #ids == 0 then
+    self:need("Which aircraft should " .. what .. "? Please give its callsign.")
+    return nil
+  end
+  return ids[1]
+end
+
+-- A value that grew out of range from a stutter or a misheard word ("one
+-- four fourteen thousand"): re-read from a shorter run of its words, longest
+-- first, preferring multiples of `step`. nil when none fits [lo, hi].
+function m:repaired(q, value, lo, hi, step)
+  if value >= lo and value <= hi then return value end
+  local n = q.number
+  if n.typed then return nil end
+  for _, round_only in ipairs({ true, false }) do
+    for len = n.e - n.b - 1, 1, -1 do
+      for b = n.b, n.e - len do
+        local r = self.u:number(b, b + len)
+        if r and r.thousand == n.thousand and r.value >= lo and r.value <= hi
+            and (not round_only or r.value % step == 0) then
+          return r.value
+        end
+      end
+    end
+  end
+  return nil
+end
+
+-- Which candidate counts: after "correction" the first one after it; when
+-- the instruction word is repeated, the last; else the first.
+function m:pick(c, s, repeated)
+  if #c == 0 then return nil end
+  local corr
+  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
+  if corr then
+    for _, q in ipairs(c) do if q.b > corr then return q end end
+    return c[#c]
+  end
+  local reps = 0
+  for i = s.b, s.e - 1 do if self:word(i, repeated) then reps = reps + 1 end end
+  return reps >= 2 and c[#c] or c[1]
+end
+
+-- "at four thousand reduce speed to 210": "ATALT id alt" or nil.
+function m:at_altitude(s)
+  if s.intent ~= "spd" and s.intent ~= "hdg" then return nil end
+  local a = self:find_word(s.b, s.trig, "at")
+  if a >= s.trig then return nil end
+  local qs = self:quantities(a + 1, s.trig)
+  local q = qs[1]
+  if not q or q.b ~= a + 1 or q.e ~= s.trig then return nil end
+  if q.kind ~= "alt" and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then return nil end
+  local ids = self:acids(s)
+  if #ids == 0 then return nil end
+  return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
+end
+
+-- "AC02: heading 180, FL200, 250 kts": values with units of another kind
+-- after a value instruction are instructions too.
+function m:leftovers(s)
+  if s.intent ~= "hdg" and s.intent ~= "alt" and s.intent ~= "spd" then return end
+  local ids = self:acids(s)
+  if #ids ~= 1 then return end
+  local alt_done, spd_done = s.intent == "alt", s.intent == "spd"
+  for _, q in ipairs(self:quantities(s.b, s.e)) do
+    if q.b > s.trig then
+      if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
+        self:emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl))
+        alt_done = true
+      elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
+        self:emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        spd_done = true
+      end
+    end
+  end
+end
+
+-- Three digits said one by one before the first instruction word, after a
+-- recognised callsign: a heading whose "fly heading" was lost.
+function m:orphan_heading(s)
+  if s.trig == s.b or s.intent == "hdg" or s.intent == "infer" then return end
+  for _, q in ipairs(self:quantities(s.b, s.trig)) do
+    local n = q.number
+    if q.kind == "plain" and not n.typed and n.groups == 3 and n.lead_digit and q.value <= 360 and not n.hundred
+        and not (q.b > 1 and self:word(q.b - 1, "at")) then
+      local call
+      for _, r in ipairs(self.refs) do if r.kind == "aircraft" and r.e <= q.b then call = r end end
+      local prev = self.t[q.b - 1]
+      if call and q.b > call.e and prev.kind == "word" and not prev.number_word then
+        local ids = self:acids(s)
+        if #ids ~= 1 then return end
+        self:emit("HDG " .. ids[1] .. " " .. f.num(wrap(q.value)))
+        self.u:mark_used(q.b, q.e)
+        return
+      end
+    end
+  end
+end
+
+require("translate.handlers_values")(H, f, wrap, compass)
+require("translate.handlers_other")(H, f, compass)
+
+return H

@@ -1,0 +1,414 @@
+-- Handlers of the traffic, route and simulation-control instructions (CRE,
+-- MOVE, DEL, DIRECT, ADDWPT, DEFWPT, DELWPT, DEST/ORIG, LNAV/VNAV, POS,
+-- LISTRTE, BANK, FF, DT, DTMULT, SEED, IC, ECHO, ASAS, RESO, ZONER/ZONEDH,
+-- DTLOOK, NOISE); see translate/handlers.lua for the handler contract.
+local L = require("translate.lexicon")
+
+return function(H, f, compass)
+  local m = H.methods
+
+  -- A latitude/longitude pair in qs: marked ones, else two bare numbers in a
+  -- row after the instruction word ("at 0 0", "position 51.9, 4.4").
+  local function position(qs, trig)
+    local lat, lon
+    for _, q in ipairs(qs) do
+      if q.kind == "lat" and not lat then lat = q.value end
+      if q.kind == "lon" and not lon then lon = q.value end
+    end
+    if lat and lon then return lat, lon end
+    for k = 1, #qs - 1 do
+      local a, b = qs[k], qs[k + 1]
+      if a.b >= trig and a.kind == "plain" and b.kind == "plain" and b.b - a.e <= 1
+          and math.abs(a.value) <= 90 and math.abs(b.value) <= 180 then
+        return a.value, b.value
+      end
+    end
+    return lat, lon
+  end
+
+  function m:create(s)
+    -- several aircraft in one request: each new id followed closely by a type starts one
+    local starts = {}
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if not r.exists and (#self:refs_in(r.e, math.min(s.e, r.e + 4), "type") > 0 or #starts == 0) then
+        starts[#starts + 1] = r.b
+      end
+    end
+    if #starts <= 1 then return self:create_one(s, s.b) end
+    for k, st in ipairs(starts) do
+      local b = k == 1 and s.b or st
+      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e }, st)
+    end
+  end
+
+  function m:create_one(s, id_from)
+    local id
+    for _, r in ipairs(self:refs_in(id_from, s.e, "aircraft")) do
+      if not r.exists then id = r.name break end
+    end
+    if not id then
+      local k = self:find_word(s.b, s.e, "@id_words")
+      if k + 1 < s.e and self.t[k + 1].kind == "word" then id = self.t[k + 1].raw end
+    end
+    local types = self:refs_in(s.b, s.e, "type")
+    local actype = types[1] and types[1].name
+    local model
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if r.exists and self:word_in(s.b, s.e, "same") then model = self:state(r.name) end
+    end
+    if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
+    local qs = self:quantities(s.b, s.e)
+    local lat, lon = position(qs, s.trig)
+    local hdg, alt, fl, spd, mach
+    for _, q in ipairs(qs) do
+      if q.kind == "heading" and not hdg then hdg = q.value end
+      if q.kind == "alt" and not alt then alt, fl = q.value, q.fl end
+      if q.kind == "speed" and not spd and not mach then spd = q.value end
+      if q.kind == "mach" and not spd and not mach then mach = q.value end
+    end
+    -- values said after their noun with no unit: "hdg 180, alt 10000, spd 250"
+    for _, q in ipairs(qs) do
+      if q.kind == "plain" and q.b > 1 then
+        local w = self.t[q.b - 1]
+        if w.kind == "word" then
+          if not alt and (w.text == "alt" or w.text == "altitude") then alt = q.value end
+          if not spd and not mach and (w.text == "spd" or w.text == "speed") then spd = q.value end
+          if not hdg and (w.text == "hdg" or w.text == "heading") then hdg = q.value end
+        end
+      end
+    end
+    if not hdg then
+      local h = self:find_word(s.b, s.e, "heading hdg")
+      if h + 1 < s.e and compass(self.t[h + 1].text) then
+        hdg = compass(self.t[h + 1].text, h + 2 < s.e and self.t[h + 2].text or "")
+      end
+    end
+    if model and self:word_in(s.b, s.e, "altitude") and not alt then alt, fl = model.alt_ft, true end
+    if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
+      if (model.mach or 0) > 0 then mach = model.mach else spd = model.cas_kt end
+    end
+    local missing = {}
+    if not id then missing[#missing + 1] = "callsign" end
+    if not actype then missing[#missing + 1] = "aircraft type" end
+    if not lat or not lon then missing[#missing + 1] = "position" end
+    if #missing > 0 then
+      return self:need("To create the aircraft I need its " .. table.concat(missing, ", ") .. ". What should they be?")
+    end
+    -- a value said but not read would be left as 0: ask instead
+    if (spd or mach or alt) and not hdg then
+      return self:need("What heading should " .. id .. " have?")
+    end
+    if (spd or mach) and not alt then return self:need("What altitude should " .. id .. " have?") end
+    local cmd = "CRE " .. id .. " " .. actype .. " " .. f.num(lat) .. " " .. f.num(lon)
+    if hdg or alt or spd or mach then cmd = cmd .. " " .. f.num(hdg or 0) end
+    if alt or spd or mach then cmd = cmd .. " " .. f.alt(alt, fl) end
+    if spd then cmd = cmd .. " " .. f.int(spd) end
+    if mach then cmd = cmd .. " " .. f.mach(mach) end
+    self:emit(cmd)
+    self.subject = id
+  end
+
+  function m:move(s)
+    local id = self:acid(s, "move")
+    if not id then return end
+    local qs = self:quantities(s.b, s.e)
+    local lat, lon = position(qs, s.trig)
+    if not lat or not lon then return self:need("Where should " .. id .. " go? Please give a latitude and longitude.") end
+    local opt = {}
+    for _, q in ipairs(qs) do
+      if q.kind == "alt" and not opt[1] then opt[1] = f.alt(q.value, q.fl) end
+      if q.kind == "heading" and not opt[2] then opt[2] = f.num(q.value) end
+      if q.kind == "speed" and not opt[3] then opt[3] = f.int(q.value) end
+      if q.kind == "mach" and not opt[3] then opt[3] = f.mach(q.value) end
+      if q.kind == "vs" and not opt[4] then opt[4] = f.int(q.value) end
+    end
+    local last = 0
+    for k = 1, 4 do if opt[k] then last = k end end
+    local cmd = "MOVE " .. id .. " " .. f.num(lat) .. " " .. f.num(lon)
+    local now = self:state(id)
+    for k = 1, last do
+      if opt[k] then
+        cmd = cmd .. " " .. opt[k]
+      else
+        -- a gap before a later value: keep the current state there
+        if not now then return self:need("Which altitude, heading and speed should " .. id .. " have?") end
+        local cur = { now.alt_ft or 0, now.hdg_deg or 0, now.cas_kt or 0, 0 }
+        cmd = cmd .. " " .. f.int(cur[k])
+      end
+    end
+    self:emit(cmd)
+  end
+
+  function m:remove(s)
+    -- "delete waypoint X of AC1" removes a waypoint, never the aircraft
+    if self:word_in(s.b, s.e, "@waypoint_nouns") or self:word_in(s.b, s.e, "@route_nouns") then
+      return self:delete_waypoint(s)
+    end
+    local ids = {}
+    if self:word_in(s.b, s.e, "@all") then
+      for _, a in ipairs(self.fleet) do ids[#ids + 1] = a.id end
+      if #ids == 0 then return self:need("There are no aircraft. Which aircraft should I delete?") end
+    else
+      ids = self:acids(s)
+    end
+    if #ids == 0 then return self:need("Which aircraft should I delete? Please give its callsign.") end
+    for _, id in ipairs(ids) do self:emit("DEL " .. id) end
+  end
+
+  -- A waypoint named in [b, e): a known name, an upper-case name, or a
+  -- spoken name matched against the world's waypoints and the route.
+  function m:waypoint(b, e, id)
+    local w = self:refs_in(b, e, "waypoint")
+    if #w > 0 then return w[1].name end
+    local names, seen = {}, {}
+    for _, n in ipairs(self.world.waypoints) do names[#names + 1], seen[n] = n, true end
+    local a = self:state(id)
+    for _, r in ipairs(a and a.route or {}) do
+      if not seen[r] then names[#names + 1], seen[r] = r, true end
+    end
+    if #names == 0 then return nil end
+    local best, best_score
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t = self.t[i]
+      if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
+          and (not t.keyword or t.text == "direct") and not t.filler then
+        local cand = t.text
+        for k = 0, 1 do
+          local idx, score = squawk.translate.best_match(cand, names)
+          if idx and (not best or score > best_score) then best, best_score = names[idx], score end
+          local nx = self.t[i + k + 1]
+          if i + k + 1 >= e or nx.kind ~= "word" then break end
+          cand = cand .. nx.text
+        end
+      end
+    end
+    if best and best_score >= 0.5 then return best end
+    return nil
+  end
+
+  -- A name said after "direct (to)" that matches nothing known: the word as
+  -- spoken, or letters spelled with the phonetic alphabet. Only when there
+  -- is nothing to match against.
+  function m:spoken_name(b, e)
+    if #self.world.waypoints > 0 then return nil end
+    for _, a in ipairs(self.fleet) do if a.route and #a.route > 0 then return nil end end
+    local i = b
+    while i < e and (self:word(i, "@before_name") or self.u:used(i)) do i = i + 1 end
+    local letters = ""
+    local k = i
+    while k < e and self.t[k].kind == "word" and L.phonetic[self.t[k].text] do
+      letters = letters .. L.phonetic[self.t[k].text]
+      k = k + 1
+    end
+    if #letters >= 2 then return letters end
+    local t = self.t[i]
+    if i < e and t.kind == "word" and t.alpha and #t.text >= 3 and not t.keyword and not t.number_word then
+      return t.text:upper()
+    end
+    return nil
+  end
+
+  function m:direct(s)
+    local id = self:acid(s, "fly direct")
+    if not id then return end
+    local a = self:state(id)
+    local wp = self:waypoint(s.trig, s.e, id)
+    if not wp and a and a.route and #a.route == 1 then wp = a.route[1] end
+    wp = wp or self:spoken_name(s.trig + 1, s.e)
+    if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
+    -- DIRECT needs the waypoint in the route: a known aircraft whose route lacks it gets it added first
+    if a then
+      local in_route = false
+      for _, r in ipairs(a.route or {}) do if r:lower() == wp:lower() then in_route = true end end
+      if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end
+    end
+    self:emit("DIRECT " .. id .. " " .. wp)
+    -- a level said in the same breath without its verb ("direct LIVVN ... six thousand")
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.b > s.trig and q.kind == "alt" and q.number.thousand then
+        local ft = self:repaired(q, q.value, 0, 60000, 100)
+        if ft then return self:emit("ALT " .. id .. " " .. f.alt(ft, false)) end
+      end
+    end
+  end
+
+  function m:add_waypoint(s)
+    local id = self:acid(s, "get the waypoint")
+    if not id then return end
+    local qs = self:quantities(s.b, s.e)
+    local lat, lon = position(qs, s.trig)
+    local where
+    if lat and lon then
+      where = f.num(lat) .. " " .. f.num(lon)
+    else
+      where = self:waypoint(s.trig, s.e, id)
+      if not where and self:word_in(s.trig, s.e, "it") then where = self.last_waypoint end
+      if not where then
+        return self:need("Where should the waypoint for " .. id .. " be? Please give a name or a latitude and longitude.")
+      end
+    end
+    local cmd = "ADDWPT " .. id .. " " .. where
+    local alt, spd
+    for _, q in ipairs(qs) do
+      if q.kind == "alt" and not alt then alt = f.alt(q.value, q.fl) end
+      if q.kind == "speed" and not spd then spd = f.int(q.value) end
+      if q.kind == "mach" and not spd then spd = f.mach(q.value) end
+    end
+    if alt or spd then cmd = cmd .. " " .. (alt or "") end
+    if spd then cmd = cmd .. " " .. spd end
+    self:emit(cmd)
+  end
+
+  function m:define_waypoint(s)
+    local name
+    local w = self:refs_in(s.b, s.e, "waypoint")
+    if #w > 0 then name = w[1].name end
+    if not name then
+      local a = self:refs_in(s.b, s.e, "aircraft")  -- "EXIT1" reads like an id
+      if #a > 0 and not a[1].exists then name = a[1].name:upper() end
+    end
+    if not name then
+      local k = self:find_word(s.b, s.e, "@named")
+      if k + 1 < s.e and self.t[k + 1].kind == "word" then name = self.t[k + 1].raw:upper() end
+    end
+    local lat, lon = position(self:quantities(s.b, s.e), s.trig)
+    if not name then return self:need("What should the waypoint be called, and where is it?") end
+    if not lat or not lon then return self:need("Where is waypoint " .. name .. "? Please give a latitude and longitude.") end
+    self:emit("DEFWPT " .. name .. " " .. f.num(lat) .. " " .. f.num(lon))
+    self.last_waypoint = name
+  end
+
+  function m:delete_waypoint(s)
+    local id = self:acid(s, "lose the waypoint")
+    if not id then return end
+    local wp = self:waypoint(s.trig, s.e, id)
+    if not wp then return self:need("Which waypoint should I remove from the route of " .. id .. "?") end
+    self:emit("DELWPT " .. id .. " " .. wp)
+  end
+
+  local function dest_orig(self, s, cmd, what)
+    local id = self:acid(s, "get it")
+    if not id then return end
+    local w = self:refs_in(s.b, s.e, "waypoint")
+    local lat, lon = position(self:quantities(s.b, s.e), s.trig)
+    if #w > 0 then
+      self:emit(cmd .. " " .. id .. " " .. w[#w].name)
+    elseif lat and lon then
+      self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
+    else
+      self:need("Which airport should be the " .. what .. " of " .. id .. "? Please give its ICAO code.")
+    end
+  end
+  function m:dest(s) dest_orig(self, s, "DEST", "destination") end
+  function m:orig(s) dest_orig(self, s, "ORIG", "origin") end
+
+  local function on_off(self, s)
+    local on = self:on_off(s)
+    if on < 0 then on = self.last_on or 1 end
+    self.last_on = on
+    return on == 1 and "ON" or "OFF"
+  end
+  local function nav(self, s, cmd)
+    local id = self:acid(s, "switch " .. cmd)
+    if id then self:emit(cmd .. " " .. id .. " " .. on_off(self, s)) end
+  end
+  function m:lnav(s) nav(self, s, "LNAV") end
+  function m:vnav(s) nav(self, s, "VNAV") end
+  function m:switch(s, spec) self:emit(spec.cmd .. " " .. on_off(self, s)) end
+
+  function m:one_acid(s, cmd, what)
+    local id = self:acid(s, what)
+    if id then self:emit(cmd .. " " .. id) end
+  end
+  function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
+  function m:pos(s) self:one_acid(s, "POS", "be shown") end
+
+  function m:bank(s)
+    local id = self:acid(s, "get a bank limit")
+    if not id then return end
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "angle" or q.kind == "plain" then return self:emit("BANK " .. id .. " " .. f.num(q.value)) end
+    end
+    self:need("What bank angle limit, in degrees, should " .. id .. " have?")
+  end
+
+  function m:bare(_, spec) self:emit(spec.cmd) end
+
+  -- first quantity of one of `kinds` in the segment, or nil
+  local function first(self, s, kinds)
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if kinds[q.kind] then return q end
+    end
+    return nil
+  end
+
+  function m:fast_forward(s)
+    local q = first(self, s, { time = true, mult = true })
+    if not q then return self:emit("FF") end
+    if q.kind == "time" then
+      -- "2 min 30 s": times in a row add up
+      local total, last = 0, nil
+      for _, t in ipairs(self:quantities(q.b, s.e)) do
+        if t.kind ~= "time" or (last and t.b - last.e > 1) then break end
+        total, last = total + t.value, t
+      end
+      return self:emit("FF " .. f.num(total))
+    end
+    self:emit("DTMULT " .. f.num(q.value))  -- "speed the sim up 10 times"
+  end
+  function m:time_step(s)
+    local q = first(self, s, { time = true, plain = true })
+    if q then return self:emit("DT " .. f.num(q.value)) end
+    self:need("What time step, in seconds, should the simulation use?")
+  end
+  function m:time_mult(s)
+    local q = first(self, s, { mult = true, plain = true })
+    if q then return self:emit("DTMULT " .. f.num(q.value)) end
+    for i = s.b, s.e - 1 do
+      local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
+      if v then return self:emit("DTMULT " .. f.num(v)) end
+    end
+    self:need("How many times real time should the simulation run?")
+  end
+  function m:seed(s)
+    local q = first(self, s, { plain = true })
+    if q then return self:emit("SEED " .. f.int(q.value)) end
+    self:need("Which random seed should I set?")
+  end
+  function m:scenario(s)
+    for i = s.b, s.e - 1 do
+      local t = self.t[i]
+      if t.kind == "word" and t.raw:lower():find(".scn", 1, true) then return self:emit("IC " .. t.raw) end
+    end
+    self:need("Which scenario file should I load?")
+  end
+  function m:echo(s)
+    for i = s.b, s.e - 1 do
+      if self.t[i].kind == "quoted" then return self:emit("ECHO " .. self.t[i].raw) end
+    end
+    self:need("What text should I print?")
+  end
+  function m:resolution(s)
+    local b = s.b > 1 and s.b - 1 or s.b
+    if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
+    if self:on_off(s) == 0 then return self:emit("RESO OFF") end
+    self:need("Which conflict resolution method should I use (for example MVP), or should it be off?")
+  end
+  function m:zone(s)
+    local vertical = self:word_in(s.b, s.e, "@vertical")
+    local before = #self.out
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
+      if q.kind == "alt" or (q.kind == "plain" and vertical) then self:emit("ZONEDH " .. f.num(q.value)) end
+    end
+    if #self.out == before then
+      self:need(vertical and "What half-height, in feet, should the protected zone have?"
+        or "What radius, in nautical miles, should the protected zone have?")
+    end
+  end
+  function m:look_ahead(s)
+    local q = first(self, s, { time = true, plain = true })
+    if q then return self:emit("DTLOOK " .. f.num(q.value)) end
+    self:need("How far ahead, in seconds, should conflict detection look?")
+  end
+end

@@ -1,0 +1,308 @@
+-- Handlers of the value instructions (ALT, SPD, HDG, VS, and "maintain" and
+-- bare values that pick one of them); see translate/handlers.lua for the
+-- handler contract. Relative values read the aircraft's current state from
+-- the traffic; without it they ask.
+return function(H, f, wrap, compass)
+  local m = H.methods
+
+  function m:infer(s)
+    local qs = self:quantities(s.b, s.e)
+    for _, q in ipairs(qs) do
+      if q.kind == "alt" or (q.kind == "plain" and q.number.thousand) then return self:altitude(s) end
+      if q.kind == "speed" or q.kind == "mach" then return self:speed(s) end
+      if q.kind == "heading" then return self:heading(s) end
+      if q.kind == "vs" then return self:vspeed(s) end
+      if q.kind == "lat" then
+        -- a position with no verb: never a MOVE unless move/reposition/place was said
+        return self:need("What should happen at that position: a waypoint, direct to it, or moving the aircraft there?")
+      end
+      if q.kind == "mult" then return self:time_mult(s) end
+    end
+    for _, q in ipairs(qs) do
+      local n = q.number
+      if q.kind == "plain" and not n.typed and n.groups == 3 and n.lead_digit and q.value <= 360 and not n.hundred
+          and not n.decimal then
+        return self:heading(s)
+      end
+    end
+    if #self:acids(s) > 0 and #qs == 0 and #self:refs_in(s.b, s.e, "aircraft") == 1 and s.e - s.b == 1 then
+      return self:one_acid(s, "POS", "be shown")
+    end
+    self:need(require("translate.grammar").not_understood)
+  end
+
+  function m:maintain(s)
+    local qs = self:quantities(s.b, s.e)
+    for _, q in ipairs(qs) do
+      if q.b >= s.trig then
+        if q.kind == "speed" or q.kind == "mach" then return self:speed(s) end
+        if q.kind == "alt" then return self:altitude(s) end
+      end
+    end
+    for _, q in ipairs(qs) do
+      if q.b >= s.trig then
+        if q.kind == "heading" then return self:heading(s) end
+        if q.kind == "plain" then
+          -- "maintain two five zero" is a speed; "maintain four thousand" an altitude.
+          if q.value >= 100 and q.value <= 400 and not q.number.thousand and not q.number.hundred then
+            return self:speed(s)
+          end
+          return self:altitude(s)
+        end
+      end
+    end
+    if self:word_in(s.trig, s.e, "heading") then return self:heading(s) end
+    -- "maintain present altitude": the current level, read from the traffic
+    self:altitude(s)
+  end
+
+  function m:altitude(s)
+    local ids = self:acids(s)
+    if #ids == 0 then return self:need("Which aircraft should change altitude? Please give its callsign.") end
+    local qs = self:quantities(s.b, s.e)
+    local rate
+    local with_unit, plain = {}, {}
+    for _, q in ipairs(qs) do
+      if q.kind == "vs" and not rate then rate = q end
+      if q.kind == "alt" then with_unit[#with_unit + 1] = q end
+      if q.kind == "plain" and q.b >= s.trig then plain[#plain + 1] = q end
+    end
+    -- "rate fifteen hundred": a plain number after "rate" is the vertical speed
+    local rate_word = self:find_word(s.b, s.e, "rate")
+    for _, list in ipairs({ plain, with_unit }) do
+      if not rate and rate_word < s.e then
+        for k, q in ipairs(list) do
+          if q.b > rate_word and not q.fl then
+            rate = table.remove(list, k)
+            break
+          end
+        end
+      end
+    end
+    local target = self:pick(#with_unit > 0 and with_unit or plain, s, "maintain")
+    local now = self:state(ids[1])
+    local dir = self:direction(s)
+    local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"
+    if self:word_in(s.b, s.e, "double") and now then
+      for _, id in ipairs(ids) do self:emit("ALT " .. id .. " " .. f.int((now.alt_ft or 0) * 2)) end
+      return
+    end
+    if not target and rate then return self:vspeed(s) end
+    -- "maintain present altitude": the current level, read from the traffic
+    if not target and now and self:word_in(s.b, s.e, "present current")
+        and not self:word_in(s.b, s.e + 1, "heading hdg speed") then
+      return self:emit("ALT " .. ids[1] .. " " .. f.int(now.alt_ft or 0))
+    end
+    if not target then return self:need("What altitude should " .. ids[1] .. " " .. verb .. " to?") end
+    local q = target
+    local ft, fl = q.value, q.fl
+    if q.kind == "plain" and not q.number.typed and not q.number.thousand then
+      local d = q.number.digits  -- a stutter: "one four fourteen" -> 14 (thousand)
+      if #d >= 4 and #d % 2 == 0 and d:sub(1, #d // 2) == d:sub(#d // 2 + 1) then ft = tonumber(d:sub(1, #d // 2)) end
+    end
+    if q.kind == "plain" then
+      if ft < 100 and not q.number.typed then
+        ft = ft * 1000  -- "maintain niner (thousand)"
+      elseif ft >= 100 and ft < 1000 and not q.number.hundred then
+        ft, fl = ft * 100, true  -- "climb three five zero": a flight level
+      end
+    end
+    if fl and ft > 60000 then
+      return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
+    end
+    if not fl then
+      local r = self:repaired(q, ft, 0, 60000, 100)
+      if not r then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(ft) .. " ft.") end
+      if r < 100 and not q.number.typed then r = r * 1000 end
+      ft = r
+    end
+    -- Relative: "by 2000 ft", "1000 ft from its present altitude", "1000 feet below AC01".
+    local others = self:refs_in(s.b, s.e, "aircraft")
+    local below, above = self:word_in(s.b, s.e, "@below"), self:word_in(s.b, s.e, "@above")
+    if (below or above) and #others >= 2 then
+      local ref = self:state(others[#others].name)
+      if not ref then return self:need("What is the altitude of " .. others[#others].name .. "?") end
+      return self:emit("ALT " .. ids[1] .. " " .. f.int((ref.alt_ft or 0) + (above and ft or -ft)))
+    end
+    local relative = q.by or self:word_in(s.b, s.e, "@relative")
+    if not relative and now and not q.to and not fl and dir ~= 0 then
+      local cur = now.alt_ft or 0
+      if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then
+        relative = true
+      end
+    end
+    -- "descend 3000 ft" right after the verb, from higher up: to or by? Both read as descents.
+    if not relative and now and not q.to and not fl and dir ~= 0 and q.kind == "alt" and q.b == s.trig + 1
+        and self:word(q.e - 1, "@feet") then
+      local cur = now.alt_ft or 0
+      local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
+      local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)
+      if by_fits and to_fits then
+        return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
+      end
+    end
+    for _, id in ipairs(ids) do
+      local alt, target_ft
+      if relative then
+        local a = self:state(id)
+        if not a then return self:need("What is the current altitude of " .. id .. "?") end
+        if dir == 0 then return self:need("Should " .. id .. " climb or descend by " .. f.int(ft) .. " ft?") end
+        target_ft = (a.alt_ft or 0) + (dir < 0 and -ft or ft)
+        alt = f.int(target_ft)
+      else
+        target_ft, alt = ft, f.alt(ft, fl)
+      end
+      -- a climb to a lower level, or a descent to a higher one, contradicts the verb
+      local a = self:state(id)
+      if a and dir ~= 0 and self:word_in(s.b, s.e, "climb climbing descend descending descent") then
+        local cur = a.alt_ft or 0
+        if (dir > 0 and target_ft < cur - 1000) or (dir < 0 and target_ft > cur + 1000) then
+          return self:need(string.format("%s is at %s ft: %s to %s? Please confirm the altitude.", id, f.int(cur),
+            verb, alt))
+        end
+      end
+      if target_ft < 0 then return self:need("Which altitude for " .. id .. "? " .. alt .. " ft is below the ground.") end
+      local cmd = "ALT " .. id .. " " .. alt
+      if rate then cmd = cmd .. " " .. f.int(rate.value) end
+      self:emit(cmd)
+      self.last_cond = "ATALT " .. id .. " " .. alt
+    end
+  end
+
+  function m:speed(s)
+    local ids = self:acids(s)
+    if #ids == 0 then return self:need("Which aircraft should change speed? Please give its callsign.") end
+    local with_unit, plain = {}, {}
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "speed" or q.kind == "mach" or q.kind == "percent" then with_unit[#with_unit + 1] = q end
+      if q.kind == "plain" and (q.b >= s.trig or q.number.typed) then plain[#plain + 1] = q end
+    end
+    local q = self:pick(#with_unit > 0 and with_unit or plain, s, "speed")
+    -- "Match AC02's speed to AC01" / "the same speed as AC01"
+    local refs = self:refs_in(s.b, s.e, "aircraft")
+    if not q and #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
+      local src = self:state(refs[#refs].name)
+      if not src then return self:need("What is the speed of " .. refs[#refs].name .. "?") end
+      return self:emit("SPD " .. refs[1].name .. " " .. ((src.mach or 0) > 0 and f.mach(src.mach) or f.int(src.cas_kt or 0)))
+    end
+    if not q then return self:need("What speed should " .. ids[1] .. " fly? Please give knots or a Mach number.") end
+    local dir = self:direction(s)
+    for _, id in ipairs(ids) do
+      local spd
+      if q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1) then
+        spd = f.mach(q.value)
+      elseif q.kind == "percent" or q.by or (self:word_in(s.b, s.e, "by") and q.value < 100)
+          or (q.kind == "speed" and q.value < 40 and dir ~= 0 and not q.to) then  -- "10 knots faster"
+        local a = self:state(id)
+        if not a or (a.cas_kt or 0) <= 0 then return self:need("What is the current speed of " .. id .. "?") end
+        if dir == 0 then return self:need("Should " .. id .. " fly faster or slower?") end
+        local delta = q.kind == "percent" and a.cas_kt * q.value / 100 or q.value
+        spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
+      else
+        local kt = q.value
+        -- assigned speeds are said as three digits: see H.cut_off
+        if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) then
+          return self:need("What speed should " .. id .. " fly? I heard " .. q.number.digits .. ".")
+        end
+        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 then kt = kt * 10 end  -- "speed one ninety"
+        local r = self:repaired(q, kt, 40, 700, 10)
+        if not r then return self:need("What speed should " .. id .. " fly? I heard " .. f.int(kt) .. ".") end
+        -- assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error
+        if not q.number.typed and r % 5 ~= 0 then r = math.floor(r / 10) * 10 end
+        spd = f.int(r)
+      end
+      self:emit("SPD " .. id .. " " .. spd)
+      self.last_cond = "ATSPD " .. id .. " " .. spd
+    end
+  end
+
+  function m:heading(s)
+    local ids = self:acids(s)
+    if #ids == 0 then return self:need("Which aircraft should turn? Please give its callsign.") end
+    local abs_c, rel_c = {}, {}
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "heading" or (q.kind == "plain" and q.b > s.trig and not q.number.thousand) then
+        abs_c[#abs_c + 1] = q
+      elseif q.kind == "angle" then
+        rel_c[#rel_c + 1] = q
+      end
+      if q.kind == "alt" or q.kind == "speed" then break end
+    end
+    local abs, rel = self:pick(abs_c, s, "heading"), self:pick(rel_c, s, "heading")
+    local correction = self:word_in(s.b, s.e, "@correction")
+    local turn = 0
+    if self:word_in(s.b, s.e, "@left") then turn = -1 end
+    if self:word_in(s.b, s.e, "@right") and self:find_word(s.b, s.e, "@right") < self:find_word(s.b, s.e, "@left") then
+      turn = 1
+    end
+    local named
+    for i = s.b, s.e - 1 do
+      if named then break end
+      -- a compass word of a callsign ("Southwest 963") or a place ("northeast of") is no heading
+      if self.t[i].kind == "word" and compass(self.t[i].text) and not self.u:used(i) and not self:word(i + 1, "of") then
+        named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "")
+      end
+    end
+    local id = ids[1]
+    local now = self:state(id)
+    local refs = self:refs_in(s.b, s.e, "aircraft")
+    local hdg
+    if abs and (abs.kind == "heading" or not (rel and rel.b < abs.b and not correction)) then
+      hdg = abs.value
+      local n = abs.number
+      -- headings are said as three digits; two ("two five") lost their final zero, unless
+      -- they end in zero themselves ("three zero": 030 or 300?) or one was said
+      if not n.typed and n.lead_digit and H.cut_off(n) then
+        return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
+      end
+      if not n.typed and n.lead_digit and n.groups == 2 and hdg < 40 then hdg = hdg * 10 end
+      if hdg > 360 then
+        local r = self:repaired(abs, hdg, 0, 360, 5)
+        if not r then return self:need("What heading should " .. id .. " fly? I heard " .. f.int(hdg) .. ".") end
+        hdg = r
+      end
+    elseif rel and rel.turn == 0 and turn == 0 then
+      if not (rel.to or self:word_in(s.b, s.e, "heading")) then
+        return self:need(string.format("Should %s turn left or right by %s degrees, or fly heading %s?", id,
+          f.num(rel.value), f.num(rel.value)))
+      end
+      hdg = rel.value  -- "to one hundred and twenty degrees"
+    elseif rel then
+      if not now then return self:need("What is the current heading of " .. id .. "?") end
+      local dir = rel.turn ~= 0 and rel.turn or turn
+      if dir == 0 then return self:need("Should " .. id .. " turn left or right?") end
+      hdg = now.hdg_deg + dir * rel.value
+    elseif named then
+      hdg = named
+    elseif self:word_in(s.b, s.e, "@turn_around") then
+      if not now then return self:need("What is the current heading of " .. id .. "?") end
+      hdg = now.hdg_deg + 180
+    elseif self:word_in(math.max(1, s.trig - 2), s.e, "@present") and now then
+      hdg = now.hdg_deg
+    elseif #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
+      local src = self:state(refs[#refs].name)
+      if not src then return self:need("What is the heading of " .. refs[#refs].name .. "?") end
+      id, hdg, ids = refs[1].name, src.hdg_deg, { refs[1].name }
+    else
+      return self:need("What heading should " .. id .. " fly?")
+    end
+    local h = f.num(wrap(math.floor(hdg * 1000 + 0.5) / 1000))
+    for _, a in ipairs(ids) do self:emit("HDG " .. a .. " " .. h) end
+  end
+
+  function m:vspeed(s)
+    local id = self:acid(s, "change its vertical speed")
+    if not id then return end
+    local v
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "vs" or (q.kind == "plain" and q.b > s.trig) or (q.kind == "alt" and not q.fl and q.b > s.trig) then
+        v = q
+        break
+      end
+    end
+    if not v then return self:need("What vertical speed should " .. id .. " fly, in feet per minute?") end
+    local fpm = v.value
+    if fpm > 0 and self:direction(s) < 0 then fpm = -fpm end
+    self:emit("VS " .. id .. " " .. f.int(fpm))
+  end
+end

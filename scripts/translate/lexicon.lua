@@ -1,0 +1,72 @@
+-- The words of the offline grammar, as data: each entry is a list of
+-- lower-case words (the lexer lower-cases and fixes spelling first). The
+-- rules (translate/rules.lua) and the grammar's handlers
+-- (translate/handlers.lua) name these lists instead of spelling words out,
+-- so a new word for an existing idea is one edit here.
+--
+-- Numbers, units, callsigns, telephony designators, aircraft types and
+-- latitude/longitude forms are read by the C++ extractors
+-- (squawk.translate.utterance); this file holds the words that decide what
+-- an instruction means.
+return {
+  -- words that open a condition: "when AC01 reaches FL200, ..."
+  condition = { "when", "once", "after" },
+  -- before an instruction word: the instruction is only announced, not given
+  not_a_clearance = { "expect" },
+  -- words after which a clause is a new instruction
+  then_words = { "then" },
+  correction = { "correction", "disregard" },
+  -- the simulation itself, not an aircraft
+  sim = { "simulation", "sim", "simulator", "time" },
+  aircraft_nouns = { "aircraft", "plane", "airplane", "flight" },
+  waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
+  route_nouns = { "route", "plan" },
+  articles_new = { "a", "an", "new", "second", "another" },
+  all = { "all", "both", "every", "everything" },
+  -- direction of a change: +1 words and -1 words
+  up = { "climb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
+  down = { "descend", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
+           "descending", "decelerate", "minus" },
+  below = { "below", "under" },
+  above = { "above", "over" },
+  relative = { "present", "current", "by" },
+  present = { "present", "current", "continue" },
+  same_as = { "match", "same", "as" },
+  -- switches
+  off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },
+  off_after = { "anymore", "longer" },
+  on = { "on", "enable", "activate", "show", "start", "use" },
+  -- turns and compass points
+  left = { "left" },
+  right = { "right" },
+  compass = { north = 0, east = 90, south = 180, west = 270,
+              northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
+  -- how many times real time, said in words
+  multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
+  -- a spoken callsign matched to an aircraft it does not spell exactly is
+  -- confirmed by a question unless the airline and the digits both match
+  -- at least this well (similarity 0-1)
+  callsign_confirm = { airline = 0.5, digits = 0.6 },
+  -- answers that confirm a question ("did you mean BAW123?")
+  yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
+  turn_around = { "around", "opposite", "reverse" },
+  -- names said before a value they introduce
+  named = { "named", "called" },
+  id_words = { "named", "called", "callsign", "id" },
+  -- words skipped before a spoken waypoint name
+  before_name = { "to", "the", "ah", "uh", "direct", "via", "now", "point" },
+  -- the phonetic alphabet (spelled waypoint names)
+  phonetic = {
+    alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",
+    hotel = "H", india = "I", juliet = "J", juliett = "J", kilo = "K", lima = "L", mike = "M",
+    november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
+    uniform = "U", victor = "V", whiskey = "W", xray = "X", yankee = "Y", zulu = "Z",
+  },
+  -- resolution methods said in words
+  mvp = { "mvp", "voltage", "potential" },
+  -- units that make an altitude a level in feet
+  feet = { "ft", "feet", "foot" },
+  vertical = { "vertical", "height", "zonedh" },
+  -- bare nouns naming what to show, after a handled instruction
+  shown = { "altitude", "speed", "heading", "airspeed" },
+}

@@ -1,0 +1,218 @@
+-- The rules of the offline grammar: which words ask for which registry
+-- command. Loaded by translate/grammar.lua, which checks every line against
+-- the command registry (squawk.sim.commands()): an intent naming an unknown
+-- command or argument is a load error naming this file and line.
+--
+-- intent NAME { cmd = "CMD" | cmds = {...}, args = {registry argument names},
+--               also = {commands it may add}, handler = "fn in translate/handlers.lua", flags... }
+--   flags: value (an instruction carrying one value: ALT, SPD, HDG, VS),
+--          absorbs (takes the value words after it: "create ... heading 090
+--          at FL200"), single (never merges with a neighbour of its kind)
+--
+-- rule { "word word ...", INTENT | false, conditions... }  (first match wins,
+-- in file order; false: the word starts no instruction here)
+--   Words: space separated; "@name" stands for the list lexicon.name; "*"
+--   matches any word. Conditions on the token at i:
+--     next = "w ..."          the next word is one of these
+--     near = {n, "w ..."}     one of these within the n words after
+--     not_near = {n, "w ..."}
+--     prev = {n, "w ..."}     one of these within the n words before
+--     not_prev = {n, "w ..."}
+--     when = function(g, i)   any other test (g: the grammar state)
+--
+-- words "CMD" "text"   more words people use for a registry command, for
+-- the retrieval documents of the LLM modes (checked against the registry).
+return function(intent, rule, words)
+  intent "alt" { cmd = "ALT", args = { "acid", "alt", "vspd" }, handler = "altitude", value = true, family = "alt" }
+  intent "maintain" { cmds = { "ALT", "SPD", "HDG" }, handler = "maintain", value = true, family = "alt" }
+  intent "spd" { cmd = "SPD", args = { "acid", "spd" }, handler = "speed", value = true }
+  intent "hdg" { cmd = "HDG", args = { "acid", "hdg" }, handler = "heading", value = true }
+  intent "vs" { cmd = "VS", args = { "acid", "vspd" }, handler = "vspeed", value = true }
+  intent "create" { cmd = "CRE", args = { "acid", "type", "lat", "lon", "hdg", "alt", "spd" }, handler = "create",
+                    absorbs = true, single = true }
+  intent "delete" { cmd = "DEL", args = { "acid" }, handler = "remove", single = true }
+  intent "addwpt" { cmd = "ADDWPT", args = { "acid", "wpname", "lat", "lon", "alt", "spd" }, handler = "add_waypoint",
+                    absorbs = true }
+  intent "defwpt" { cmd = "DEFWPT", args = { "name", "lat", "lon" }, handler = "define_waypoint", absorbs = true }
+  intent "delwpt" { cmd = "DELWPT", args = { "acid", "wpname" }, handler = "delete_waypoint" }
+  intent "direct" { cmd = "DIRECT", also = { "ADDWPT", "ALT" }, args = { "acid", "wpname" }, handler = "direct" }
+  intent "dest" { cmd = "DEST", args = { "acid", "airport" }, handler = "dest" }
+  intent "orig" { cmd = "ORIG", args = { "acid", "airport" }, handler = "orig" }
+  intent "lnav" { cmd = "LNAV", args = { "acid", "ON", "OFF" }, handler = "lnav" }
+  intent "vnav" { cmd = "VNAV", args = { "acid", "ON", "OFF" }, handler = "vnav" }
+  intent "listrte" { cmd = "LISTRTE", args = { "acid" }, handler = "listrte" }
+  intent "pos" { cmd = "POS", args = { "acid" }, handler = "pos" }
+  intent "move" { cmd = "MOVE", args = { "acid", "lat", "lon", "alt", "hdg", "spd", "vspd" }, handler = "move",
+                  absorbs = true }
+  intent "bank" { cmd = "BANK", args = { "acid", "bankangle" }, handler = "bank" }
+  intent "hold" { cmd = "HOLD", handler = "bare" }
+  intent "op" { cmd = "OP", handler = "bare" }
+  intent "reset" { cmd = "RESET", handler = "bare" }
+  intent "ff" { cmd = "FF", also = { "DTMULT" }, args = { "seconds" }, handler = "fast_forward" }
+  intent "dt" { cmd = "DT", args = { "dt" }, handler = "time_step" }
+  intent "dtmult" { cmd = "DTMULT", args = { "multiplier" }, handler = "time_mult" }
+  intent "seed" { cmd = "SEED", args = { "value" }, handler = "seed" }
+  intent "ic" { cmd = "IC", args = { "filename" }, handler = "scenario" }
+  intent "echo" { cmd = "ECHO", args = { "text" }, handler = "echo" }
+  intent "asas" { cmd = "ASAS", args = { "ON", "OFF" }, handler = "switch" }
+  intent "reso" { cmd = "RESO", args = { "MVP", "OFF" }, handler = "resolution" }
+  intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
+  intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
+  intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
+
+  -- an instruction announced with "expect" is no clearance
+  rule { "*", false, prev = { 2, "@not_a_clearance" } }
+
+  -- altitude
+  rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
+  rule { "climb climbing descend descending altitude alt cruise altitudes", "alt" }
+  rule { "drop", "alt", not_near = { 2, "speed" } }
+  rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  rule { "expedite", "alt", near = { 1, "climb descent descend" } }
+  rule { "descent climbs", false, prev = { 2, "expedite rate" } }
+  rule { "descent climbs", "alt" }
+  rule { "level", "alt", next = "off" }
+  rule { "lower raise", "spd", near = { 4, "speed" } }
+  rule { "lower raise", "alt" }
+  rule { "maintain maintained", "maintain" }
+
+  -- speed, and the simulation's speed
+  rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
+  rule { "speed", "dtmult", prev = { 1, "x times" } }
+  rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
+  rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
+  rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
+  rule { "speed spd airspeed", false, prev = { 2, "half double" } }
+  rule { "speed spd airspeed", "spd" }
+  rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
+  rule { "faster slower", false, prev = { 2, "times x" } }
+  rule { "slow slower faster accelerate decelerate", "spd" }
+  rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
+
+  -- heading
+  rule { "heading hdg headings", "hdg" }
+  rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
+  rule { "turn", "hdg" }
+  rule { "left right", "hdg", when = function(g, i)
+    return g:number_at(i + 1) and not g:word(i + 2, "degrees degree") and not g:preceded_by(i, 2, "turn heading")
+  end }
+  rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
+  rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
+  rule { "due", "hdg", next = "@compass" }
+  rule { "around", false, prev = { 3, "turn" } }
+
+  -- vertical speed and bank
+  rule { "vs sink expedite", "vs" }
+  rule { "vertical", "vs", next = "speed rate" }
+  rule { "rate", "vs", not_prev = { 1, "vertical" } }
+  rule { "bank", "bank" }
+
+  -- waypoints, creation and deletion
+  rule { "define defwpt", "defwpt" }
+  rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
+  rule { "create spawn generate creat", "create" }
+  rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
+  rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
+  rule { "add append insert give", "addwpt", near = { 8, "@route_nouns" },
+         when = function(g, i) return g:has_ref(i + 1, i + 3, "waypoint") end }
+  rule { "add append insert give", "addwpt", next = "it", near = { 6, "@route_nouns" } }
+  rule { "via", "addwpt", prev = { 3, "route" } }
+  rule { "add put make need want", "create", near = { 3, "@articles_new" },
+         when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
+  rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
+  rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
+         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+  rule { "delete del remove rid", "delete" }
+  rule { "take", "delete", near = { 5, "out" } }
+
+  -- route
+  rule { "proceed", false, near = { 3, "heading" } }
+  rule { "direct directly dct proceed direct-to", "direct" }
+  rule { "cleared", "direct", when = function(g) return #g.world.waypoints > 0 end }
+  rule { "destination", "dest" }
+  rule { "fly", "dest", next = "to" }
+  rule { "origin departed", "orig" }
+  rule { "lnav", "lnav" }
+  rule { "lateral", "lnav", next = "navigation" }
+  rule { "vnav", "vnav" }
+  rule { "vertical", "vnav", next = "profile navigation" }
+  rule { "route waypoints", "listrte", prev = { 3, "show list display what print" } }
+  rule { "listrte", "listrte" }
+
+  -- information and repositioning
+  rule { "where", "pos", next = "is are 's" }
+  rule { "details status info information", "pos" }
+  rule { "move reposition teleport shift place relocate", "move" }
+  rule { "put", "move", near = { 3, "back" } }
+
+  -- simulation control
+  rule { "pause hold freeze", "hold" }
+  rule { "stop", "hold", near = { 3, "@sim" } }
+  rule { "restart", "reset", near = { 3, "@sim" } }
+  rule { "what how", "pos", near = { 4, "altitude speed heading position level" } }
+  rule { "unpause", "op" }
+  rule { "resume", "lnav", near = { 3, "navigation nav route" } }
+  rule { "own", "lnav", next = "navigation" }
+  rule { "run", "dtmult", near = { 4, "times x" } }
+  rule { "start", "op", near = { 3, "@sim" } }
+  rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
+         not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
+  rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x" } }
+  rule { "continue resume", "op", when = function(g, i)
+    return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
+  end }
+  rule { "real", false, prev = { 1, "than" } }
+  rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }
+  rule { "real", "op", next = "time" }
+  rule { "fast", "ff", next = "forward" }
+  rule { "ff fastforward", "ff" }
+  rule { "skip", "ff", next = "ahead forward" }
+  rule { "timestep dt", "dt" }
+  rule { "time", "dt", next = "step" }
+  rule { "reset", "reset" }
+  rule { "start", "reset", next = "over" }
+  rule { "clear", "reset", near = { 3, "@sim" } }
+  rule { "seed", "seed" }
+  rule { "scenario load open ic", "ic" }
+  rule { "print", "echo" }
+  rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
+
+  -- conflict detection and resolution
+  rule { "detection asas cdmethod cd", "asas" }
+  rule { "resolution resolve reso", "reso" }
+  rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
+         not_near = { 4, "minimum nm nautical miles radius ft feet" } }
+  rule { "protected pz separation zoner zonedh radius", "zone" }
+  rule { "half", "zone", next = "height" }
+  rule { "look", "dtlook", next = "ahead" }
+  rule { "lookahead dtlook", "dtlook" }
+  rule { "turbulence noise", "noise" }
+
+  -- The words people use for each command, beyond the rule words above:
+  -- retrieval documents for the LLM modes (grammar.documents()).
+  words "CRE" "add, create, spawn, insert or put a new aircraft or flight of a type (Boeing, Airbus) at a position with heading, altitude and speed"
+  words "ALT" "climb, descend, climb and maintain, descend and maintain, cruise at, level off at, flight level FL, feet ft, altitude, higher, lower, raise, put at a level"
+  words "HDG" "turn left, turn right, fly heading, point, steer, vector, head north south east west, due, course, degrees, direction"
+  words "SPD" "speed, knots kts, Mach, slow down, speed up, reduce, increase, accelerate, decelerate, airspeed of an aircraft"
+  words "VS" "vertical speed, vertical rate, rate of climb or descent, feet per minute, fpm, ft/min"
+  words "DEL" "delete, remove, take out, get rid of an aircraft from the simulation"
+  words "MOVE" "teleport, move, place, reposition, relocate an aircraft to a new position, altitude, heading and speed"
+  words "POS" "show, details, status, information, where is, report position, altitude and speed of an aircraft"
+  words "FF" "fast forward, fast-time, speed up or accelerate the simulation, skip ahead in time"
+  words "HOLD" "pause, freeze, stop or halt the simulation"
+  words "OP" "resume, continue, unpause, start or run the simulation"
+  words "DT" "simulation time step, timestep, update interval in seconds"
+  words "DTMULT" "simulation speed factor, run the sim slower or faster than real time, half speed, double speed"
+  words "DEST" "destination, fly to, bound for, land at an airport"
+  words "ORIG" "origin, departure airport, coming from"
+  words "ADDWPT" "add or insert a waypoint, fix or point to the route or flight plan of an aircraft, crossed at an altitude and speed"
+  words "DELWPT" "delete or remove a waypoint from the route or flight plan"
+  words "DEFWPT" "define, create or name a custom waypoint or fix at a position"
+  words "LISTRTE" "list or show the route, flight plan or waypoints of an aircraft"
+  words "DIRECT" "direct to, proceed direct, fly straight to, cleared direct a waypoint"
+  words "ATALT" "when or once an aircraft reaches, passes or gets to an altitude or flight level, then do a command"
+  words "ATSPD" "when or once an aircraft reaches, slows to or accelerates to a speed, then do a command"
+  words "ATDIST" "when or once an aircraft is within a distance in nautical miles of a point, then do a command"
+  words "ECHO" "print, show or display a message or text"
+end

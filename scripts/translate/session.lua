@@ -1,0 +1,374 @@
+-- A controller's session: one simulation, English or TrafScript in, what
+-- happened out, with a clock. `squawk repl` formats it as text
+-- (translate.repl); `squawk serve` calls the same methods and sends the
+-- tables as JSON. Nothing here prints.
+--
+--   session.new{scenario = path|nil, mode = "offline"|"single"|"multi"|nil,
+--               seed = n, clock = multiplier|nil}  -> s
+--       Loads the scenario (raises when the file does not load) and runs its
+--       t = 0 commands; s.load_report says what they did (see report below).
+--       clock: start the running clock at that multiple of real time.
+--   s:command(text) -> reply
+--       text: English (translated through graph.dialogue, then run) or
+--       "!CMD" (TrafScript run as typed). reply = {
+--         text = the input, kind = "english" | "trafscript",
+--         commands = { "HDG KL204 180", ... }   the TrafScript that ran
+--         results = { {cmd =, ok =, message =}, ... }  one per command run;
+--                   the first failure stops the rest
+--         ask = question (the translator needs more; the next command()
+--               may answer it, "cancel" drops it), cancelled = true,
+--         error = why nothing ran (translation failed, or a runtime error
+--                 in a graph node; the session and simulation go on),
+--         clock = a sentence when the command changed the run state
+--                 (HOLD, OP, FF, DTMULT),
+--         events = { event, ... } what happened while time moved (FF),
+--         touched = { id, ... } aircraft named or created by the commands,
+--         deleted = { id, ... } }
+--   s:tick(wall_s) -> { event, ... }
+--       The running clock: advances by wall_s x multiplier when running (OP),
+--       to the FF end time at once in fast-time, not at all in HOLD; wall_s
+--       counts up to kMaxTickWall.
+--   s:run(seconds) -> { event, ... }      advance now, whatever the clock
+--   s:set_clock(multiplier|nil) -> sentence   nil: stop (HOLD)
+--   s:state() -> { simt =, clock = {state = "hold"|"op"|"ff", multiplier =,
+--                  ff_end =?}, aircraft = { sim:aircraft() entries, each
+--                  with conflict = {ids in conflict} }, conflicts = {
+--                  {id1 =, id2 =, tcpa_s =, tlos_s =, dcpa_nm =, dist_nm =} },
+--                  los = { {id1 =, id2 =, dist_nm =, dalt_ft =} } }
+--   s:complete(prefix) -> sorted words: callsigns, TrafScript command names
+--       and aliases (also as !NAME), and the REPL's :commands
+--   event = { t = s, kind = "conflict" | "conflict_end" | "los" | "los_end"
+--             | "echo" | "failure", text = sentence, id1 =?, id2 =? }
+--   report (load_report, and failure summaries) = { executed =, skipped =,
+--             failed =, first = {first failure messages}, reasons = {
+--             {reason =, count =}, ... } }
+local graph = require("translate.graph")
+local nodes = require("translate.nodes")
+
+local M = {}
+local Session = {}
+Session.__index = Session
+
+M.kFirstShown = 3     -- failures quoted in a summary
+M.kChunk = 1.0        -- [s] sim time between conflict checks while advancing
+M.kOpenFfRate = 60.0  -- FF without an end time: sim seconds per wall second
+M.kMaxTickWall = 5.0  -- [s] most wall time one tick accounts for (a stopped
+                      -- terminal must not make the simulation jump hours)
+
+local function pair_key(a, b)
+  if a > b then a, b = b, a end
+  return a .. " & " .. b, a, b
+end
+
+function M.new(opts)
+  opts = opts or {}
+  local self = setmetatable({ sim = squawk.sim.new({ seed = opts.seed or 0 }), mode = opts.mode }, Session)
+  self.dialogue = graph.dialogue({ sim = self.sim, mode = self.mode })
+  self.conflicts, self.los = {}, {}
+  if opts.scenario and opts.scenario ~= "" then
+    local ok, msg = self.sim:load(opts.scenario)
+    if not ok then error("session: scenario '" .. opts.scenario .. "' did not load: " .. msg, 0) end
+    -- The load reports its failures in load_report, the rest as events.
+    self.load_events = {}
+    for _, e in ipairs(self:run(0)) do
+      if e.kind ~= "failure" then self.load_events[#self.load_events + 1] = e end
+    end
+    self.load_report = M.report(self.sim:tally(), { executed = 0, skipped = 0, failed = 0, failed_by_reason = {} })
+  end
+  if opts.clock then self:set_clock(opts.clock) end
+  return self
+end
+
+-- What the queued commands did between two sim:tally() readings.
+function M.report(now, before)
+  local r = {
+    executed = now.executed - before.executed,
+    skipped = now.skipped - before.skipped,
+    failed = now.failed - before.failed,
+    first = {},
+    reasons = {},
+  }
+  for i = before.failed + 1, math.min(now.failed, #now.first_failures) do
+    if #r.first < M.kFirstShown then r.first[#r.first + 1] = now.first_failures[i] end
+  end
+  for reason, n in pairs(now.failed_by_reason) do
+    local d = n - (before.failed_by_reason[reason] or 0)
+    if d > 0 then r.reasons[#r.reasons + 1] = { reason = reason, count = d } end
+  end
+  table.sort(r.reasons, function(a, b)
+    if a.count ~= b.count then return a.count > b.count end
+    return a.reason < b.reason
+  end)
+  return r
+end
+
+-- Diffs the pairs of `list` ({own =, intruder =, ...}) against the known set
+-- `known` (key -> true); appends an event when one starts (start(c, key)
+-- gives its text) or ends; returns the new set.
+local function diff(known, list, t, events, kind, start, ended)
+  local now = {}
+  for _, c in ipairs(list) do
+    local key, a, b = pair_key(c.own, c.intruder)
+    if not now[key] then
+      now[key] = true
+      if not known[key] then
+        events[#events + 1] = { t = t, kind = kind, id1 = a, id2 = b, text = start(c, key) }
+      end
+    end
+  end
+  for key in pairs(known) do
+    if not now[key] then
+      local a, b = key:match("^(.-) & (.*)$")
+      events[#events + 1] = { t = t, kind = kind .. "_end", id1 = a, id2 = b, text = string.format(ended, key) }
+    end
+  end
+  return now
+end
+
+-- Compares the detector's conflicts and losses of separation with the known ones.
+function Session:diff_pairs(events)
+  local t = self.sim:time()
+  self.conflicts = diff(self.conflicts, self.sim:conflicts(), t, events, "conflict", function(c, key)
+    return string.format("conflict %s: loss of separation in %.0f s, closest %.2f NM in %.0f s", key, c.tlos,
+      c.dcpa_nm, c.tcpa)
+  end, "conflict %s ended")
+  self.los = diff(self.los, self.sim:los(), t, events, "los", function(l, key)
+    return string.format("LOSS OF SEPARATION %s: %.2f NM, %.0f ft apart", key, l.dist_nm, math.abs(l.dalt_ft))
+  end, "separation regained %s")
+end
+
+-- Moves ECHO output into events and queued-command failures into `failures`.
+function Session:collect_output(events, failures)
+  for _, line in ipairs(self.sim:output()) do
+    if line:match("^t=[%d%.]+ s: ") then
+      failures[#failures + 1] = line
+    else
+      events[#events + 1] = { t = self.sim:time(), kind = "echo", text = line }
+    end
+  end
+end
+
+-- Advances `seconds` of sim time in chunks, reporting what happened; the
+-- failures of queued commands come last, as one summary event.
+function Session:advance(seconds, events)
+  local tally, failures = self.sim:tally(), {}
+  local t_end = self.sim:time() + seconds
+  repeat
+    local left = t_end - self.sim:time()
+    -- At least one step per chunk: with DT above 2 * kChunk a chunk shorter
+    -- than a step would never move the clock.
+    self.sim:run_for(math.max(0, math.min(math.max(M.kChunk, self.sim:dt()), left)))
+    self:collect_output(events, failures)
+    self:diff_pairs(events)
+  until t_end - self.sim:time() < 0.5 * self.sim:dt()
+  if #failures > 0 then
+    local r = M.report(self.sim:tally(), tally)
+    r.failed = #failures
+    r.first = { table.unpack(failures, 1, math.min(#failures, M.kFirstShown)) }
+    local text = string.format("%d scenario command%s failed", r.failed, r.failed == 1 and "" or "s")
+    events[#events + 1] = { t = self.sim:time(), kind = "failure", text = text, report = r }
+  end
+  return events
+end
+
+function Session:run(seconds)
+  return self:advance(seconds, {})
+end
+
+-- Fast-time with an end: run to it now, then the clock goes on as before FF.
+function Session:finish_fast_forward(events, resume)
+  local state, ff_end = self.sim:run_state()
+  if state ~= "ff" or not ff_end then return nil end
+  local t0 = self.sim:time()
+  self:advance(math.max(0, ff_end - t0), events)
+  self.sim:exec("HOLD")
+  if resume == "op" then self.sim:exec("OP") end
+  return string.format("fast-forwarded %.0f s: t = %.1f s -> %.1f s", self.sim:time() - t0, t0, self.sim:time())
+end
+
+function Session:clock_text()
+  local state, ff_end = self.sim:run_state()
+  if state == "hold" then
+    return string.format("clock stopped (HOLD; OP runs it at %g x real time): time moves with :run and FF",
+      self.sim:dtmult())
+  end
+  if state == "ff" then
+    return ff_end and string.format("fast-time until t = %.0f s", ff_end)
+      or string.format("fast-time until HOLD (%g x real time)", M.kOpenFfRate)
+  end
+  return string.format("clock running at %g x real time", self.sim:dtmult())
+end
+
+function Session:set_clock(multiplier)
+  if multiplier == nil then
+    self.sim:exec("HOLD")
+  else
+    local ok, msg = self.sim:exec("DTMULT " .. multiplier)
+    if not ok then return msg end
+    self.sim:exec("OP")
+  end
+  return self:clock_text()
+end
+
+function Session:tick(wall_s)
+  wall_s = math.min(wall_s, M.kMaxTickWall)
+  local events = {}
+  local state, ff_end = self.sim:run_state()
+  if state == "op" then
+    self:advance(wall_s * self.sim:dtmult(), events)
+  elseif state == "ff" and ff_end then
+    self:finish_fast_forward(events, "op")
+  elseif state == "ff" then
+    self:advance(wall_s * M.kOpenFfRate, events)
+  end
+  return events
+end
+
+-- Whether a TrafScript line sets the run state (OP, HOLD, FF, DTMULT or an alias).
+local clock_commands = { OP = true, HOLD = true, FF = true, DTMULT = true }
+local function clock_command(line)
+  local first = line:match("^%s*([%w_]+)")
+  return first ~= nil and clock_commands[nodes.canonical_name(first) or ""] == true
+end
+
+local function words_upper(line)
+  local w = {}
+  for word in line:gmatch("[^%s,;]+") do w[#w + 1] = word:upper() end
+  return w
+end
+
+function Session:run_commands(cmds, reply)
+  local before = {}
+  for _, a in ipairs(self.sim:aircraft()) do before[a.id] = true end
+  local touched = {}
+  local state_before = self.sim:run_state()
+  local clock_changed = false
+  for _, c in ipairs(cmds) do
+    local ok, msg = self.sim:exec(c)
+    reply.results[#reply.results + 1] = { cmd = c, ok = ok, message = msg or "" }
+    if not ok then break end
+    clock_changed = clock_changed or clock_command(c)
+    for _, w in ipairs(words_upper(c)) do
+      if self.sim:get(w) then touched[w] = true end
+    end
+  end
+  -- Commands due now (IC, a scenario's first lines) run before anything is shown.
+  self:advance(0, reply.events)
+  local state = self.sim:run_state()
+  if state == "ff" then
+    local _, ff_end = self.sim:run_state()
+    if ff_end then
+      reply.clock = self:finish_fast_forward(reply.events, state_before == "op" and "op" or "hold")
+    else
+      reply.clock = self:clock_text()
+    end
+  elseif clock_changed or state ~= state_before then
+    reply.clock = self:clock_text()
+  end
+  for _, a in ipairs(self.sim:aircraft()) do
+    if touched[a.id] or not before[a.id] then reply.touched[#reply.touched + 1] = a.id end
+    before[a.id] = nil
+  end
+  for id in pairs(before) do reply.deleted[#reply.deleted + 1] = id end
+  table.sort(reply.deleted)
+end
+
+function Session:command(text)
+  text = text:gsub("^%s+", ""):gsub("%s+$", "")
+  local reply = { text = text, commands = {}, results = {}, events = {}, touched = {}, deleted = {} }
+  if text:sub(1, 1) == "!" then
+    reply.kind = "trafscript"
+    if text:sub(2):match("^%s*$") then
+      reply.error = "nothing to run: type TrafScript after !, e.g. !HDG KL204 270"
+      return reply
+    end
+    reply.commands = { text:sub(2) }
+    self:run_commands(reply.commands, reply)
+    return reply
+  end
+  reply.kind = "english"
+  if text == "" then return reply end
+  local ok, r = pcall(self.dialogue.say, self.dialogue, text)
+  if not ok then
+    self.dialogue.pending = nil
+    reply.error = "the translator failed: " .. tostring(r) .. " (nothing ran; the simulation is unchanged)"
+    return reply
+  end
+  self.last = r
+  reply.trace = r.trace
+  if r.ask then
+    reply.ask = r.ask
+    return reply
+  end
+  if r.cancelled then
+    reply.cancelled = true
+    return reply
+  end
+  if r.error then
+    reply.error = r.error
+    return reply
+  end
+  reply.commands = r.commands
+  self:run_commands(r.commands, reply)
+  return reply
+end
+
+function Session:state()
+  local st = { simt = self.sim:time(), aircraft = self.sim:aircraft(), conflicts = {}, los = {} }
+  local state, ff_end = self.sim:run_state()
+  st.clock = { state = state, multiplier = self.sim:dtmult(), ff_end = ff_end }
+  local with, seen = {}, {}
+  for _, c in ipairs(self.sim:conflicts()) do
+    local key, a, b = pair_key(c.own, c.intruder)
+    if not seen[key] then
+      seen[key] = true
+      st.conflicts[#st.conflicts + 1] = { id1 = a, id2 = b, tcpa_s = c.tcpa, tlos_s = c.tlos,
+        dcpa_nm = c.dcpa_nm, dist_nm = c.dist_nm }
+      with[a] = with[a] or {}
+      with[b] = with[b] or {}
+      table.insert(with[a], b)
+      table.insert(with[b], a)
+    end
+  end
+  table.sort(st.conflicts, function(x, y) return x.tlos_s < y.tlos_s end)
+  seen = {}
+  for _, l in ipairs(self.sim:los()) do
+    local key, a, b = pair_key(l.own, l.intruder)
+    if not seen[key] then
+      seen[key] = true
+      st.los[#st.los + 1] = { id1 = a, id2 = b, dist_nm = l.dist_nm, dalt_ft = l.dalt_ft }
+    end
+  end
+  for _, a in ipairs(st.aircraft) do a.conflict = with[a.id] or {} end
+  return st
+end
+
+M.meta_commands = { ":help", ":state", ":run", ":clock", ":trace", ":mode", ":quit" }
+
+function Session:complete(prefix)
+  local bang = prefix:sub(1, 1) == "!"
+  local p = (bang and prefix:sub(2) or prefix):upper()
+  local seen, out = {}, {}
+  local function add(word, shown)
+    if word:upper():sub(1, #p) == p and not seen[shown] then
+      seen[shown] = true
+      out[#out + 1] = shown
+    end
+  end
+  if prefix:sub(1, 1) == ":" then
+    for _, m in ipairs(M.meta_commands) do
+      if m:sub(1, #prefix) == prefix then out[#out + 1] = m end
+    end
+    return out
+  end
+  for _, a in ipairs(self.sim:aircraft()) do add(a.id, (bang and "!" or "") .. a.id) end
+  for _, c in ipairs(squawk.sim.commands()) do
+    add(c.name, (bang and "!" or "") .. c.name)
+    for _, alias in ipairs(c.aliases) do add(alias, (bang and "!" or "") .. alias) end
+  end
+  table.sort(out)
+  return out
+end
+
+M.Session = Session
+return M

@@ -1,0 +1,108 @@
+// PERF, WIND, AREA, ADDWPT FLYOVER/FLYBY and BlueSky's `0.` heading rule.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "command/stack.h"
+#include "core/files.h"
+#include "core/geo.h"
+#include "core/units.h"
+
+using namespace squawk;
+using namespace squawk::command;
+
+namespace {
+const std::string kOpenap = std::string(SQUAWK_SOURCE_DIR) + "/../shared/openap/data";
+}
+
+TEST_CASE("WIND: a 40 kt west wind drifts a northbound aircraft east; the autopilot holds its track") {
+  Stack s(1);
+  REQUIRE(s.exec("WIND 52 4 270 40"));
+  REQUIRE(s.exec("CRE KL1 A320 52 4 0 FL200 250"));
+  const sim::Traffic& t = s.sim().traffic();
+  // Heading 0 plus the wind gives the track it keeps: east of north.
+  CHECK(t.trk[0] > 5.0);
+  CHECK(t.hdg[0] == 0.0);
+  REQUIRE(s.run_until(600.0));
+  const double east_m = units::nm_to_m(geo::kwikqdrdist(52.0, 4.0, 52.0, t.lon[0]).dist_nm);
+  CHECK(east_m == doctest::Approx(600.0 * units::kt_to_ms(40)).epsilon(0.02));
+  CHECK(t.gs[0] > t.tas[0]);
+  // GETWIND reports it; DEL WIND clears it.
+  CHECK(s.exec("GETWIND 52 4 FL200").value() == "WIND AT 52, 4: 270/40");
+  REQUIRE(s.exec("DEL WIND"));
+  CHECK(s.sim().wind().dim() == 0);
+  // A bad definition changes nothing.
+  const std::string before = s.snapshot();
+  CHECK(!s.exec("WIND 52 4 270 -5"));
+  CHECK(!s.exec("WIND 52 4 FL100 270 20 FL50"));
+  CHECK(s.snapshot() == before);
+}
+
+TEST_CASE("AREA deletes aircraft that leave the box, not those never inside") {
+  Stack s(1);
+  REQUIRE(s.exec("AREA 51.9 3.9 52.1 4.2"));
+  REQUIRE(s.exec("CRE IN1 A320 52 4 270 FL100 250"));
+  REQUIRE(s.exec("CRE OUT1 A320 53 4 270 FL100 250"));
+  REQUIRE(s.run_until(30.0));
+  CHECK(s.sim().n() == 2);
+  REQUIRE(s.run_until(120.0));  // IN1 crosses 3.9 E after about 55 s
+  CHECK(s.sim().index_of("IN1") < 0);
+  CHECK(s.sim().index_of("OUT1") >= 0);
+  REQUIRE(s.exec("AREA OFF"));
+  CHECK(!s.sim().area_active());
+  CHECK(!s.exec("AREA SECTOR1"));  // named shapes are not supported
+}
+
+TEST_CASE("ADDWPT FLYOVER / FLYBY switch the mode of the waypoints added next") {
+  Stack s(1);
+  REQUIRE(s.exec("CRE KL1 A320 52 4 0 FL200 250"));
+  REQUIRE(s.exec("ADDWPT KL1 52.2 4.0"));
+  REQUIRE(s.exec("ADDWPT KL1 FLYOVER"));
+  REQUIRE(s.exec("ADDWPT KL1 52.3 4.3"));
+  REQUIRE(s.exec("ADDWPT KL1 FLYBY"));
+  REQUIRE(s.exec("ADDWPT KL1 52.4 4.0"));
+  const auto& w = s.sim().traffic().route[0].waypoints();
+  REQUIRE(w.size() == 3);
+  CHECK(!w[0].flyover);
+  CHECK(w[1].flyover);
+  CHECK(!w[2].flyover);
+}
+
+TEST_CASE("`0.` is refused as a heading, as BlueSky does; 0 and 0.5 are not") {
+  Stack s(1);
+  CHECK(!s.exec("CRE KL1 B744 0. 0. 0. FL200 400"));
+  CHECK(s.sim().n() == 0);
+  CHECK(s.exec("CRE KL1 B744 0. 0. 0 FL200 400"));
+  CHECK(s.exec("CRE KL2 B744 0. 0. 0.5 FL200 400"));
+  CHECK(!s.exec("KL1 HDG 00."));
+}
+
+TEST_CASE("PERF switches the performance model of every aircraft") {
+  Stack s(1);
+  REQUIRE(s.exec("CRE KL1 A320 52 4 0 FL200 250"));
+  REQUIRE(s.exec("PERF CLASS"));
+  CHECK(s.sim().traffic().oap[0] == nullptr);
+  CHECK(!s.exec("PERF OPENAP /nonexistent/openap"));
+  CHECK(!s.exec("PERF BADA"));
+  if (!files::exists(kOpenap)) {
+    MESSAGE("OpenAP part skipped: " << kOpenap << " is absent");
+    return;
+  }
+  REQUIRE(s.exec("PERF OPENAP " + kOpenap));
+  const sim::Traffic& t = s.sim().traffic();
+  REQUIRE(t.oap[0] != nullptr);
+  CHECK(t.oap[0]->name == "A320");
+  // OpenAP A320: vmax 163 m/s CAS (de_v_cas_const max), MMO 0.8, ceiling 11 060 m.
+  CHECK(t.perf[0].vmax == doctest::Approx(163.0));
+  CHECK(t.perf[0].mmo == doctest::Approx(0.8));
+  CHECK(t.perf[0].hmax == doctest::Approx(11060.0));
+  // Unknown types fly as B744.
+  REQUIRE(s.exec("CRE KL2 ZZZZ 52 4 0 FL200 250"));
+  CHECK(t.oap[1]->name == "B744");
+  // A speed above the envelope is held at vmax; the climb to FL400 stops at the ceiling.
+  REQUIRE(s.exec("KL1 SPD 400"));
+  REQUIRE(s.exec("KL1 ALT FL400"));
+  REQUIRE(s.run_until(900.0));
+  CHECK(t.alt[0] == doctest::Approx(11060.0));
+  CHECK(t.mach[0] <= 0.8 + 1e-9);
+}

@@ -1,0 +1,145 @@
+-- The offline grammar (translate/grammar.lua): utterance -> TrafScript or a
+-- question, with and without a world (the traffic it translates against).
+local grammar = require("translate.grammar")
+
+local function plane(id, hdg, alt_ft, kt, route)
+  return { id = id, type = "A320", lat = 52, lon = 4, hdg_deg = hdg, alt_ft = alt_ft, cas_kt = kt, route = route or {} }
+end
+local function text(r) return r.ask and ("ASK " .. r.ask) or table.concat(r.commands, " ; ") end
+local function tr(s, world) return text(grammar.translate(s, world)) end
+local function asks(s, world) return grammar.translate(s, world).ask ~= nil end
+-- the world of a TrafScript setup, as the graph's offline node builds it
+local nodes = require("translate.nodes")
+local function world_of(setup)
+  local sim = squawk.sim.new()
+  for _, line in ipairs(nodes.split_commands(setup)) do check(sim:exec(line)) end
+  return nodes.world(sim, nodes.defined_waypoints(setup))
+end
+do -- altitudes: flight levels, feet, thousands, 30k, metres
+  check_eq(tr("KLM123 climb flight level three five zero"), "ALT KLM123 FL350")
+  check_eq(tr("Delta three six two, descend and maintain four thousand"), "ALT DAL362 4000")
+  check_eq(tr("American four seven, climb and maintain one one thousand"), "ALT AAL47 11000")
+  check_eq(tr("Descend AC02 to 15k ft"), "ALT AC02 15000")
+  check_eq(tr("clim AC04 to FL 290"), "ALT AC04 FL290")
+  check_eq(tr("I'd like aircraft TEST2 to cruise at 41,000 ft"), "ALT TEST2 41000")
+  check_eq(tr("Bring AC03 up to thirty-seven thousand feet"), "ALT AC03 37000")
+  check_eq(tr("Climb AC01 to 28000 ft at 1500 fpm"), "ALT AC01 28000 1500")
+  check_eq(tr("change AC02 vertical speed to -1000 fpm"), "VS AC02 -1000")
+  check_eq(tr("Make AC01 descend at 1500 feet per minute"), "VS AC01 -1500")
+end
+
+do -- speeds: knots and Mach in every common form
+  check_eq(tr("KLM one two three, reduce speed to two two zero knots"), "SPD KLM123 220")
+  check_eq(tr("Have AC01 fly at M.78"), "SPD AC01 M0.78")
+  check_eq(tr("Speedbird seven, reduce speed to mach point seven eight"), "SPD BAW7 M0.78")
+  check_eq(tr("Set AC04's speed to 0.79 Mach"), "SPD AC04 M0.79")
+  check_eq(tr("slow AC03 to 180 kts"), "SPD AC03 180")
+end
+
+do -- headings: absolute, compass words, ATC digits
+  check_eq(tr("Shamrock four five kilo, turn left heading three one zero"), "HDG EIN45K 310")
+  check_eq(tr("Point AC01 due south"), "HDG AC01 180")
+  check_eq(tr("Make AC03 fly north-east"), "HDG AC03 45")
+  check_eq(tr("Set the heading of aircraft TEST3 to one hundred and twenty degrees"), "HDG TEST3 120")
+end
+
+do -- relative instructions use the current state
+  local w = { aircraft = { plane("AC01", 90, 25000, 280), plane("AC02", 20, 26000, 290) } }
+  check_eq(tr("turn AC01 left 20 degrees", w), "HDG AC01 70")
+  check_eq(tr("Turn AC02 left by 40 degrees", w), "HDG AC02 340")
+  check_eq(tr("Turn AC01 30 degrees to the right", w), "HDG AC01 120")
+  check_eq(tr("Climb AC01 by 2000 feet", w), "ALT AC01 27000")
+  check_eq(tr("Slow AC01 down by 20 knots", w), "SPD AC01 260")
+  check_eq(tr("Increase the speed of AC01 by 10%", w), "SPD AC01 308")
+  check_eq(tr("Turn AC01 around", w), "HDG AC01 270")
+  check_eq(tr("Give AC02 the same heading as AC01", w), "HDG AC02 90")
+  -- without a world there is no current heading to turn from
+  check(asks("turn AC01 left 20 degrees"))
+end
+
+do -- positions: lat/lon in written forms, types, creation
+  check_eq(tr("Create AC01, an A320 at 52N 4E heading 90 at FL250 and 280 knots"), "CRE AC01 A320 52 4 90 FL250 280")
+  check_eq(tr("Add a Boeing 737-800 named KL1 at 52 deg 18 min N, 4 deg 45 min E heading 90 at 30k ft, 250 kt"), "CRE KL1 B738 52.3 4.75 90 30000 250")
+  check_eq(tr("Move AC01 to N52.3 E4.76"), "MOVE AC01 52.3 4.76")
+  check_eq(tr("Define waypoint EXIT1 at 53.2 north 2.1 east"), "DEFWPT EXIT1 53.2 2.1")
+  check_eq(tr("add a 747-400 with id CX520 at 0 0, heading 0, FL200, 400 knots"), "CRE CX520 B744 0 0 0 FL200 400")
+end
+
+do -- telephony callsigns become ICAO callsigns
+  check_eq(tr("speedbird 123 turn right heading 090"), "HDG BAW123 90")
+  check_eq(tr("Lufthansa four alpha bravo, fly heading zero niner zero"), "HDG DLH4AB 90")
+  check_eq(tr("Easy four fife bravo, descend flight level two zero zero"), "ALT EZY45B FL200")
+end
+
+do -- several instructions in one utterance keep their order
+  check_eq(tr("Speedbird one two three, turn left heading two four zero, descend altitude eight thousand feet, " .. "reduce speed two one zero knots"), "HDG BAW123 240 ; ALT BAW123 8000 ; SPD BAW123 210")
+  check_eq(tr("Turn on conflict detection and use MVP for resolution"), "ASAS ON ; RESO MVP")
+  check_eq(tr("Reset, then set seed 99 and a time step of 0.05 seconds"), "RESET ; SEED 99 ; DT 0.05")
+  check_eq(tr("Set AC01 and AC02 to FL300"), "ALT AC01 FL300 ; ALT AC02 FL300")
+  check_eq(tr("AC02: heading 180, FL200, 250 kts"), "HDG AC02 180 ; ALT AC02 FL200 ; SPD AC02 250")
+  check_eq(tr("When AC01 reaches FL200, set its speed to 280 knots"), "ATALT AC01 FL200 SPD AC01 280")
+  check_eq(tr("Delta 30, descend and maintain 4000, then reduce speed to 210"), "ALT DAL30 4000 ; ATALT DAL30 4000 SPD DAL30 210")
+end
+
+do -- experimenter requests
+  check_eq(tr("Can you speed this simulation up?"), "FF")
+  check_eq(tr("Fast-forward 10 minutes"), "FF 600")
+  check_eq(tr("Pause the simulation"), "HOLD")
+  check_eq(tr("Slow the sim down to half speed"), "DTMULT 0.5")
+  check_eq(tr("Load the scenario super16.scn and then set the random seed to 7"), "IC super16.scn ; SEED 7")
+  check_eq(tr("Print \"phase 2\" to the console"), "ECHO phase 2")
+  check_eq(tr("run at double speed"), "DTMULT 2")
+  check_eq(tr("speed the simulation up 10 times"), "DTMULT 10")
+  check_eq(tr("turn off CD"), "ASAS OFF")
+  check_eq(tr("What is the altitude of KLM123?"), "POS KLM123")
+  local w = { aircraft = { plane("AC01", 90, 25000, 280), plane("AC02", 20, 26000, 290) } }
+  check_eq(tr("Delete all aircraft", w), "DEL AC01 ; DEL AC02")
+end
+
+do -- a missing callsign or value is asked for, never guessed
+  check(asks("KLM one two three, climb"))
+  check(asks("Change the speed"))
+  check(asks("Speedbird one two three, turn left"))
+  check(asks("Create a new aircraft called TST01"))
+  check(asks("Set the simulation time step"))
+  check(asks("Add a waypoint for AC01"))
+  local two = { aircraft = { plane("AC01", 90, 25000, 280), plane("AC02", 20, 26000, 290) } }
+  check(asks("Turn the aircraft to heading 270", two))
+  local one = { aircraft = { plane("TEST9", 90, 25000, 280) } }
+  check_eq(tr("Turn the aircraft to heading 270", one), "HDG TEST9 270")
+  local t = grammar.translate("Set the altitude of AC01")
+  check_eq(#t.commands, 0)
+  check(t.ask:find("AC01", 1, true) ~= nil, "the question names the aircraft")
+end
+
+do -- spoken callsigns are matched to the aircraft that exist
+  local w = world_of("CRE DAL1153 B738 40 -74 360 5000 250 ; CRE AVA847 A320 40.5 -74 90 11000 250")
+  check_eq(tr("12,153, climbing, maintain one two twelve thousand.", w), "ALT DAL1153 12000")
+  check_eq(tr("Abiont eight forty seven descend and maintain four thousand", w), "ALT AVA847 4000")
+  check_eq(tr("Delta eleven fifty three turn right heading zero one zero", w), "HDG DAL1153 10")
+end
+
+do -- waypoints are matched by sound
+  local w = world_of("CRE ACA326 B738 40 -74 360 12000 250 ; DEFWPT GAYEL 40.5 -73.5 ; ADDWPT ACA326 GAYEL")
+  check_eq(tr("Air Canada three twenty six cleared direct Gale", w), "DIRECT ACA326 GAYEL")
+  check_eq(tr("Air Canada three twenty six proceed direct", w), "DIRECT ACA326 GAYEL")
+end
+
+do -- bad input never crashes and gets a question
+  for _, s in ipairs({ "", " .. ", ";;;", "\"", "\xC2\xB0\xC2\xB0", "FL", "M.", "N", "one hundred thousand thousand",
+                        "direct direct direct", "12,", "AC01'", "-", "\xff\xfe" }) do
+    local t = grammar.translate(s)
+    check((t.ask ~= nil) ~= (#t.commands > 0), "a question or commands for " .. s)
+  end
+end
+
+do -- navigation and simulation phrases: own navigation, direct to a new fix, run for a time
+  local w = { aircraft = { plane("KLM123", 90, 25000, 280, { "SPY" }) }, waypoints = { "SUGOL", "SPY" } }
+  check_eq(tr("KLM123 resume own navigation", w), "LNAV KLM123 ON")
+  -- DIRECT needs the fix in the route: one the route lacks is added first.
+  check_eq(tr("KLM123 fly direct SUGOL", w), "ADDWPT KLM123 SUGOL ; DIRECT KLM123 SUGOL")
+  check_eq(tr("KLM123 proceed direct SPY", w), "DIRECT KLM123 SPY")
+  check_eq(tr("Run the simulation for ten minutes"), "FF 600")
+  check_eq(tr("Run the sim"), "OP")
+  check_eq(tr("Run the simulation at 5x real time"), "DTMULT 5")
+end

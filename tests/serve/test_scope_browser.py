@@ -1,0 +1,101 @@
+"""The radar scope in a real browser: headless Chromium loads the page served
+by `squawk serve`, sees the aircraft in the traffic list, types an English
+command into the command line and sees the heading change (list and API).
+
+usage: test_scope_browser.py SQUAWK_BINARY [--screenshot FILE.png] [--scenario FILE]
+Exit 77 (skipped) only when no Chromium is installed.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+import urllib.request
+
+sys.path.insert(0, os.path.dirname(__file__))
+from cdp import Browser, find_chromium  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def start_server(squawk, scenario, extra=()):
+    proc = subprocess.Popen([squawk, "serve", scenario, "--port", "0", *extra],
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    line = proc.stdout.readline()
+    if "http://" not in line:
+        proc.kill()
+        raise AssertionError(f"squawk serve did not start: {line!r} {proc.stdout.read()}")
+    return proc, line.split("http://", 1)[1].split("/", 1)[0]
+
+
+def get_state(addr):
+    with urllib.request.urlopen(f"http://{addr}/api/state", timeout=5) as r:
+        return json.load(r)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("squawk")
+    ap.add_argument("--scenario", default=os.path.join(HERE, "..", "data", "serve", "crossing.scn"))
+    ap.add_argument("--screenshot")
+    ap.add_argument("--settle", type=float, default=0.0, help="seconds to let the scene run before the screenshot")
+    ap.add_argument("--serve-args", default="--speed 10")
+    args = ap.parse_args()
+    chromium = find_chromium()
+    if not chromium:
+        print("SKIP: no chromium on PATH (tools/setup installs Debian's chromium)")
+        return 77
+
+    server, addr = start_server(args.squawk, args.scenario, args.serve_args.split())
+    browser = Browser(chromium)
+    try:
+        browser.open(f"http://{addr}/")
+        rows = browser.wait_for("[...document.querySelectorAll('#traffic tbody tr')].map(r => r.dataset.id)",
+                                what="aircraft rows in the traffic list")
+        assert {"KL204", "AF123"} <= set(rows), rows
+        print(f"ok   traffic list shows {rows}")
+        hdg_cell = "document.querySelector('#traffic tr[data-id=\"KL204\"] td.hdg').textContent"
+        before = int(browser.eval(hdg_cell))
+        assert 80 <= before <= 100, before
+        browser.wait_for("document.querySelector('#link').classList.contains('live')", what="the push stream")
+        print(f"ok   push stream live; KL204 heading {before:03d}")
+
+        browser.eval("document.getElementById('cmd').focus()")
+        browser.type_text("KL204 turn left heading 270")
+        browser.press_enter()
+        said = browser.wait_for("document.getElementById('reply-commands').textContent.includes('HDG') && "
+                                "document.getElementById('reply-commands').textContent", what="the TrafScript shown")
+        assert said == "HDG KL204 270", said
+        assert browser.eval("document.getElementById('reply-typed').textContent") == "KL204 turn left heading 270"
+        assert browser.eval("document.getElementById('reply-result').className") == "ok"
+        print(f"ok   typed English became {said!r}")
+
+        sel = browser.wait_for(f"document.querySelector('#traffic tr[data-id=\"KL204\"] td.sel-hdg').textContent === '270'",
+                               what="selected heading 270 in the list")
+        api = next(a for a in get_state(addr)["aircraft"] if a["id"] == "KL204")
+        assert abs(api["sel_hdg_deg"] - 270) < 1e-6, api
+        # The aircraft turns left through north (x10 real time: about 6 s of wall clock).
+        browser.wait_for(f"Math.abs(Number({hdg_cell}) - 270) <= 2", timeout=40, what="KL204 flying heading 270")
+        api = next(a for a in get_state(addr)["aircraft"] if a["id"] == "KL204")
+        assert abs(api["hdg_deg"] - 270) <= 2, api
+        print(f"ok   KL204 heading {before:03d} -> {api['hdg_deg']:.0f} in the list and in GET /api/state")
+
+        browser.eval("document.querySelector('#traffic tr[data-id=\"BAW31\"]').click()")
+        browser.wait_for("document.querySelector('#traffic tr.selected')?.dataset.id === 'BAW31'", what="row selection")
+        print("ok   clicking a row selects the aircraft")
+        if args.screenshot:
+            time.sleep(args.settle)
+            browser.screenshot(args.screenshot)
+            print(f"screenshot {args.screenshot}")
+    finally:
+        browser.close()
+        server.terminate()
+        rc = server.wait(timeout=10)
+    assert rc == 0, f"squawk serve exited {rc} on SIGTERM"
+    print("ok   squawk serve stops cleanly on SIGTERM")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

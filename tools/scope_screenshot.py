@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""A screenshot of the radar scope: starts `squawk serve`, lets the traffic
+fly, selects an aircraft, and captures the page in headless Chromium.
+
+usage: tools/scope_screenshot.py SQUAWK OUT.png [--scenario FILE] [--serve-args "..."]
+       [--settle SECONDS] [--select ACID] [--pz] [--command TEXT]
+The README's docs/scope.png comes from:
+  tools/scope_screenshot.py build/squawk docs/scope.png --scenario scenarios/scope_demo.scn \
+      --serve-args "--speed 10 --navdata ../shared/bluesky/navdata" --settle 9 --select KLM1234 \
+      --command "BAW8CK turn right heading 060"
+"""
+import argparse
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "serve"))
+from cdp import Browser, find_chromium  # noqa: E402
+from test_scope_browser import start_server  # noqa: E402
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("squawk")
+    ap.add_argument("out")
+    ap.add_argument("--scenario", default="scenarios/scope_demo.scn")
+    ap.add_argument("--serve-args", default="--speed 10")
+    ap.add_argument("--settle", type=float, default=8.0)
+    ap.add_argument("--select")
+    ap.add_argument("--pz", action="store_true")
+    ap.add_argument("--command")
+    args = ap.parse_args()
+    chromium = find_chromium()
+    if not chromium:
+        sys.exit("no chromium on PATH (apt install chromium)")
+    server, addr = start_server(args.squawk, args.scenario, args.serve_args.split())
+    browser = Browser(chromium)
+    try:
+        browser.open(f"http://{addr}/")
+        browser.wait_for("document.querySelectorAll('#traffic tbody tr').length > 0", what="traffic")
+        if args.command:
+            browser.eval("document.getElementById('cmd').focus()")
+            browser.type_text(args.command)
+            browser.press_enter()
+        time.sleep(args.settle)
+        if args.select:
+            browser.eval(f"document.querySelector('#traffic tr[data-id=\"{args.select}\"]').click()")
+        if args.pz:
+            browser.eval("document.getElementById('toggle-pz').click()")
+        time.sleep(0.5)
+        browser.screenshot(args.out)
+        print(f"wrote {args.out}")
+    finally:
+        browser.close()
+        server.terminate()
+        server.wait(timeout=10)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,151 @@
+// The scope's panels: the push stream of state, the clock and its controls,
+// the traffic list, the command line, the AI teammate's advisories and the
+// log. Everything goes through the HTTP API documented in README.md.
+"use strict";
+
+(() => {
+  const $ = (id) => document.getElementById(id);
+  let state = null;
+
+  async function post(path, body) {
+    const r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
+    return r.json();
+  }
+  const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" })[c]);
+  const hms = (t) => [t / 3600, (t % 3600) / 60, t % 60].map((v) => String(Math.floor(v)).padStart(2, "0")).join(":");
+  const fl = (ft) => String(Math.round(ft / 100)).padStart(3, "0");
+  const h3 = (d) => String(Math.round(d) % 360 || 360).padStart(3, "0");
+
+  // --- Push stream (server-sent events) ------------------------------------
+  function connect() {
+    const es = new EventSource("/api/stream");
+    es.onopen = () => $("link").classList.add("live");
+    es.onmessage = (e) => render(JSON.parse(e.data));
+    es.onerror = () => $("link").classList.remove("live");  // EventSource reconnects by itself
+  }
+
+  function render(s) {
+    state = s;
+    Scope.update(s);
+    $("simt").textContent = hms(s.simt);
+    $("runstate").textContent = s.fast ? "FAST-FORWARD" : s.running ? `RUN x${s.dtmult}` : "HOLD";
+    $("asas").textContent = s.asas.on ? `ASAS ON ${s.asas.rpz_nm} NM / ${s.asas.dtlook_s} s${s.asas.reso ? " MVP" : ""}` : "ASAS OFF";
+    if (document.activeElement !== $("speed")) $("speed").value = String(s.dtmult);
+    renderTraffic(s);
+    renderConflicts(s);
+    renderAdvisories(s);
+    renderLog(s);
+  }
+
+  function renderTraffic(s) {
+    const conf = new Set();
+    for (const c of s.conflicts) c.ids.forEach((id) => conf.add(id));
+    for (const c of s.los) c.ids.forEach((id) => conf.add(id));
+    const rows = s.aircraft.map((a) => {
+      const trend = a.vs_fpm > 100 ? "↑" : a.vs_fpm < -100 ? "↓" : "";
+      const spd = a.sel_cas_kt != null ? Math.round(a.sel_cas_kt) : `M${a.sel_mach.toFixed(2)}`;
+      const cls = [a.id === Scope.selected ? "selected" : "", conf.has(a.id) ? "conflict" : ""].join(" ");
+      return `<tr data-id="${esc(a.id)}" class="${cls}"><td>${esc(a.id)}</td><td class="type">${esc(a.type)}</td>` +
+        `<td class="fl">${fl(a.alt_ft)}${trend}</td><td class="sel">${fl(a.sel_alt_ft)}</td>` +
+        `<td class="hdg">${h3(a.hdg_deg)}</td><td class="sel sel-hdg">${a.lnav ? "LNAV" : h3(a.sel_hdg_deg)}</td>` +
+        `<td class="cas">${Math.round(a.cas_kt)}</td><td class="sel">${spd}</td><td class="gs">${Math.round(a.gs_kt)}</td>` +
+        `<td class="wpt">${esc(a.active_wpt || "")}</td></tr>`;
+    });
+    $("traffic").tBodies[0].innerHTML = rows.join("");
+  }
+
+  function renderConflicts(s) {
+    const items = s.conflicts.map((c) =>
+      `<li>${esc(c.ids.join(" – "))}: CPA ${c.dcpa_nm.toFixed(1)} NM in ${Math.round(c.tcpa_s)} s` +
+      (c.tlos_s != null ? `, LoS ${c.tlos_s > 0 ? "in " + Math.round(c.tlos_s) + " s" : "now"}` : "") + `</li>`);
+    for (const l of s.los) items.push(`<li>${esc(l.ids.join(" – "))}: LOSS OF SEPARATION ${l.dist_nm.toFixed(1)} NM</li>`);
+    $("conflicts").innerHTML = items.length ? items.join("") : `<li class="none">none</li>`;
+  }
+
+  let advKey = "";
+  function renderAdvisories(s) {
+    $("advisory-pane").style.display = s.teammate ? "" : "none";
+    $("auto").checked = s.auto;
+    const key = JSON.stringify(s.advisories);
+    if (key === advKey) return;  // keep the buttons stable between pushes
+    advKey = key;
+    const items = s.advisories.slice().reverse().map((a) => {
+      const decided = a.status === "pending"
+        ? `<button class="accept" data-id="${a.id}" data-decision="accept">ACCEPT</button> ` +
+          `<button class="reject" data-id="${a.id}" data-decision="reject">REJECT</button>`
+        : `${esc(a.status)}${a.decided_by ? " by " + esc(a.decided_by) : ""}${a.outcome ? ": " + esc(a.outcome) : ""}`;
+      return `<li class="${esc(a.status)}"><div class="meta">#${a.id} at ${hms(a.simt)}</div>` +
+        `<div class="text">${esc(a.text)}</div><div class="meta">${decided}</div></li>`;
+    });
+    $("advisories").innerHTML = items.length ? items.join("") : `<li class="none">no advisories</li>`;
+  }
+
+  let logSeq = 0;
+  function renderLog(s) {
+    const last = s.log.length ? s.log[s.log.length - 1].seq : 0;
+    if (last === logSeq) return;
+    logSeq = last;
+    $("log").innerHTML = s.log.slice().reverse().map((e) =>
+      `<li><span class="who who-${esc(e.who)}">${hms(e.simt)} ${esc(e.who)}</span> ${esc(e.text)}</li>`).join("");
+  }
+
+  // --- Command line ----------------------------------------------------------
+  async function send(text) {
+    $("reply").classList.remove("empty");
+    $("reply-typed").textContent = text;
+    $("reply-commands").textContent = "…";
+    $("reply-result").textContent = "";
+    let r;
+    try {
+      r = await post("/api/command", { text });
+    } catch (e) {
+      r = { ok: false, message: String(e), commands: [] };
+    }
+    $("reply-commands").textContent = (r.commands || []).join(" ; ") || "—";
+    const res = $("reply-result");
+    if (r.ask) { res.className = "ask"; res.textContent = "? " + r.ask; }
+    else { res.className = r.ok ? "ok" : "err"; res.textContent = r.ok ? (r.message || "ok") : r.message; }
+    $("reply-trace").textContent = r.trace || "(TrafScript as typed: no translation)";
+    return r;
+  }
+
+  $("cmdline").addEventListener("submit", (e) => {
+    e.preventDefault();
+    const text = $("cmd").value.trim();
+    if (!text) return;
+    $("cmd").value = "";
+    send(text);
+  });
+
+  // --- Controls ---------------------------------------------------------------
+  document.querySelectorAll("[data-cmd]").forEach((b) => b.addEventListener("click", () => send(b.dataset.cmd)));
+  $("speed").addEventListener("change", () => send(`!DTMULT ${$("speed").value}`));
+  $("fit").addEventListener("click", () => Scope.fit());
+  const toggles = { "toggle-pz": "pz", "toggle-fixes": "fixes" };
+  for (const [id, opt] of Object.entries(toggles))
+    $(id).addEventListener("click", () => { const on = $(id).classList.toggle("on"); Scope.toggle(opt, on); });
+  const vectors = [0, 1, 2, 5];
+  $("toggle-vectors").addEventListener("click", () => {
+    const b = $("toggle-vectors"), i = (vectors.indexOf(Number(b.dataset.min || 1)) + 1) % vectors.length;
+    b.dataset.min = vectors[i]; b.textContent = `VEC ${vectors[i]}`; b.classList.toggle("on", vectors[i] > 0);
+    Scope.toggle("vectorMin", vectors[i]);
+  });
+  $("traffic").addEventListener("click", (e) => {
+    const tr = e.target.closest("tr[data-id]");
+    if (!tr) return;
+    const id = Scope.selected === tr.dataset.id ? null : tr.dataset.id;
+    Scope.select(id);
+    if (state) renderTraffic(state);
+  });
+  Scope.onSelect = () => { if (state) renderTraffic(state); };
+  $("advisories").addEventListener("click", async (e) => {
+    const b = e.target.closest("button[data-decision]");
+    if (!b) return;
+    b.disabled = true;
+    const r = await post("/api/advisory", { id: Number(b.dataset.id), decision: b.dataset.decision });
+    if (!r.ok) alert(r.message);
+  });
+  $("auto").addEventListener("change", () => post("/api/auto", { on: $("auto").checked }));
+
+  connect();
+})();
