@@ -43,6 +43,7 @@ expect "6 pattern in C"      124 "ran 2 s past --max-seconds 1 inside one C func
 expect "6 --max-seconds -1"  2 "--max-seconds expects seconds >= 0" -- "$sq" run $d/spin.lua --max-seconds -1
 expect "7 per call"          0 "^steps 3000$" -- "$sq" run $d/reward_per_call.lua $d/reward_scenario.lua "${lim[@]}"
 expect "7 refuse -1"         2 "--max-instructions expects a count >= 0" -- "$sq" run $d/coroutines.lua --max-instructions -1
+expect "18 scenario NaN"      0 "field 'intruders': expected a whole number .* got NaN" -- "$sq" run $d/load_scenario.lua $d/bad_numbers_scenario.lua
 expect "4 env.new self"      1 "more than 8 scenario files loading each other" -- "$sq" run $d/nested_env.lua
 expect "4 IC self"           1 "more than 16 nested IC/PCALLs" -- "$sq" scn $d/ic_self.scn
 expect "5 read refused"       1 "reading '/etc/passwd' is not allowed" -- "$sq" run $d/read_file.lua /etc/passwd
