@@ -81,6 +81,23 @@ rows=$(cut -d, -f1 "$tmp/run/log.csv" | tail -n +2 | tr '\n' ' ')
 if [ "$rows" = "64 128 " ]; then echo "ok   16 resume after a failed save"; pass=$((pass + 1));
 else echo "FAIL 16 resume after a failed save: episodes column '$rows'"; fails=$((fails + 1)); fi
 rm -rf "$tmp"
+# 13: every reply malformed: the translation graph falls back to the offline
+# grammar, so single-agent mode scores what offline mode scores.
+if command -v python3 >/dev/null; then
+  tmp=$(mktemp -d)
+  head -4 tests/data/translate_heldout.tsv > "$tmp/c.tsv"
+  python3 $d/bad_llm_server.py > "$tmp/port" &
+  spid=$!
+  for _ in 1 2 3 4 5 6 7 8 9 10; do [ -s "$tmp/port" ] && break; sleep 0.3; done
+  off=$("$sq" eval-translate "$tmp/c.tsv" --mode offline 2>&1 | grep overall)
+  single=$(SQUAWK_LLM_URL=http://127.0.0.1:$(cat "$tmp/port") SQUAWK_LLM_MODEL=m timeout 60 "$sq" eval-translate "$tmp/c.tsv" --mode single 2>&1 | grep overall)
+  kill "$spid" 2>/dev/null
+  if [ -n "$off" ] && [ "$off" = "$single" ]; then echo "ok   13 graph falls back from malformed replies"; pass=$((pass + 1));
+  else echo "FAIL 13 graph fallback: offline '$off' single '$single'"; fails=$((fails + 1)); fi
+  rm -rf "$tmp"
+else
+  echo "skip 13 graph fallback: no python3"
+fi
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
