@@ -1,7 +1,7 @@
 // squawk against trajectories recorded from the real BlueSky (OpenAP
 // performance) for the single-behaviour scenarios in tests/data/bluesky.
 // Each <name>.bluesky.json was made by
-//   BSREF_PREFIX=... /usr/bin/python3 ../shared/bluesky_ref/run_bluesky.py \
+//   BSREF_PREFIX=... /usr/bin/python3 ../shared/bluesky_ref/run_bluesky.py
 //       --scn tests/data/bluesky/<name>.scn --times 60 300 900 -o tests/data/bluesky/<name>.bluesky.json
 // (BlueSky 22fdf9e, OpenAP d9eb824; see tests/data/bluesky/README.md).
 // Needs OpenAP's data folder at ../shared/openap/data; skips without it.
