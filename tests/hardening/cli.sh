@@ -91,6 +91,7 @@ if command -v python3 >/dev/null; then
   for _ in 1 2 3 4 5 6 7 8 9 10; do [ -s "$tmp/port" ] && break; sleep 0.3; done
   off=$("$sq" eval-translate "$tmp/c.tsv" --mode offline 2>&1 | grep overall)
   single=$(SQUAWK_LLM_URL=http://127.0.0.1:$(cat "$tmp/port") SQUAWK_LLM_MODEL=m timeout 60 "$sq" eval-translate "$tmp/c.tsv" --mode single 2>&1 | grep overall)
+  expect "1 __gc in on_token"  0 "after: false .*finalized" -- "$sq" run $d/gc_in_on_token.lua "http://127.0.0.1:$(cat "$tmp/port")" --unsafe
   kill "$spid" 2>/dev/null
   if [ -n "$off" ] && [ "$off" = "$single" ]; then echo "ok   13 graph falls back from malformed replies"; pass=$((pass + 1));
   else echo "FAIL 13 graph fallback: offline '$off' single '$single'"; fails=$((fails + 1)); fi
