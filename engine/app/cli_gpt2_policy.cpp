@@ -13,6 +13,7 @@
 #include "app/interrupt.h"
 #include "app/progress_bar.h"
 #include "app/rl_eval.h"
+#include "app/train_log.h"
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/paths.h"
@@ -44,20 +45,6 @@ Result<script::Scenario> scenario_of(const Args& args) {
   SQUAWK_ASSIGN_OR_RETURN(script::VmOptions vo, vm_options(args));
   vo.out_dir.clear();
   return script::load_scenario(args.positional()[0], vo);
-}
-
-// Keeps the header and the rows of at most `episodes` episodes (a resumed run
-// redoes whatever came after its checkpoint).
-Status trim_log(const std::string& path, long long episodes) {
-  SQUAWK_ASSIGN_OR_RETURN(std::string text, files::read(path));
-  std::istringstream in(text);
-  std::string line, out;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (header || std::strtoll(line.c_str(), nullptr, 10) <= episodes) out += line + "\n";
-    header = false;
-  }
-  return files::write_atomic(path, out);
 }
 
 }  // namespace

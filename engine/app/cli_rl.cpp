@@ -13,6 +13,7 @@
 #include "app/progress_bar.h"
 #include "app/rl_eval.h"
 #include "app/subcommands.h"
+#include "app/train_log.h"
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/paths.h"
@@ -149,6 +150,9 @@ int cmd_train(const ArgV& argv) {
   }
 
   const bool append = resuming && files::exists(log_path);
+  if (append) {
+    if (Status st = trim_log(log_path, progress.episodes); !st.is_ok()) return failure(st);
+  }
   std::ofstream log(log_path, append ? std::ios::app : std::ios::trunc);
   if (!log) return failure(Status::io_error("cannot write " + log_path));
   if (!append)

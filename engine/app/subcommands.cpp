@@ -26,16 +26,23 @@ const std::vector<Subcommand>& subcommands() {
        cmd_demo},
       {"run", "run FILE.lua [ARGS...]   run a Lua script (the script sees ARGS as `arg`)",
        "usage: squawk run FILE.lua [ARGS...] [--seed N] [--unsafe] [--out DIR]\n"
-       "                 [--max-instructions N] [--navdata DIR]\n\n"
+       "                 [--max-instructions N] [--max-seconds S] [--allow-read DIR[:DIR]]\n"
+       "                 [--navdata DIR]\n\n"
        "Runs a Lua script in squawk's sandbox. The script sees its arguments in the\n"
        "global table `arg` (arg[0] is the script path) and the engine as `squawk`.\n"
        "Flags squawk knows are taken wherever they stand; everything else goes to\n"
        "the script, and `--` passes the rest to the script untouched.\n\n"
        "  --seed N               seed of the engine RNG (math.random too); default 0\n"
-       "  --unsafe               lift the sandbox: os, io, package.loadlib, C modules\n"
+       "  --unsafe               lift the sandbox: os, io, package.loadlib, C modules,\n"
+       "                         reads anywhere, the whole environment\n"
        "  --out DIR              the one folder the script may write files into\n"
-       "  --max-instructions N   stop a script after N Lua VM instructions\n"
+       "  --allow-read DIR[:DIR] folders the script may read besides its own folder and\n"
+       "                         squawk's scripts/ prompts/ scenarios/ models/\n"
+       "  --max-instructions N   stop a call into the script after N Lua VM instructions,\n"
+       "                         simulation steps and episodes counted too\n"
        "                         (default 500000000; 0 = no limit)\n"
+       "  --max-seconds S        stop a call after S seconds of wall clock (default 0 =\n"
+       "                         no limit; stuck in one C function 2 s more: exit 124)\n"
        "  --navdata DIR          BlueSky navdata folder (airports.dat, fix.dat, nav.dat)\n",
        cmd_run},
       {"test", "test [DIR|FILE...]       run Lua regression scripts (default tests/lua/)",

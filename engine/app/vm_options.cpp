@@ -10,7 +10,7 @@
 namespace squawk::app {
 
 Args::Spec with_vm_flags(Args::Spec spec) {
-  for (const char* f : {"--seed", "--out", "--max-instructions", "--navdata", "--allow-read"})
+  for (const char* f : {"--seed", "--out", "--max-instructions", "--max-seconds", "--navdata", "--allow-read"})
     spec.value_flags.emplace_back(f);
   spec.bool_flags.emplace_back("--unsafe");
   return spec;
@@ -28,6 +28,11 @@ Result<script::VmOptions> vm_options(const Args& args) {
     return Status::invalid("flag --max-instructions expects a count >= 0 (0 = no limit), got " +
                            std::to_string(*maxi));
   o.max_instructions = *maxi;
+  auto maxs = args.get_double("--max-seconds", 0.0);
+  if (!maxs) return maxs.status();
+  if (!(*maxs >= 0) || *maxs > 1e9)
+    return Status::invalid("flag --max-seconds expects seconds >= 0 (0 = no limit)");
+  o.max_seconds = *maxs;
   o.unsafe = args.has("--unsafe");
   if (auto out = args.get("--out")) {
     SQUAWK_RETURN_IF_ERROR(files::make_dirs(*out));

@@ -7,16 +7,47 @@ namespace fs = std::filesystem;
 
 namespace squawk::paths {
 
-std::string home() {
-  if (const char* h = std::getenv("SQUAWK_HOME"); h && *h) return h;
-#ifdef SQUAWK_SOURCE_DIR
+namespace {
+
+constexpr const char kHomeTag[] = "@home/";
+
+bool is_home(const fs::path& dir) {
   std::error_code ec;
-  if (fs::exists(fs::path(SQUAWK_SOURCE_DIR) / "scripts", ec)) return SQUAWK_SOURCE_DIR;
-#endif
-  return ".";
+  return fs::is_directory(dir / "scripts", ec) && fs::is_directory(dir / "prompts", ec);
+}
+
+// The home found from the executable's location (or the current folder).
+std::string find_home() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path dir = exe.parent_path();
+    for (const fs::path& cand : {dir.parent_path(), dir.parent_path() / "share" / "squawk", dir})
+      if (is_home(cand)) return cand.lexically_normal().string();
+  }
+  return ".";  // the current folder, when it is a home, else nothing found
+}
+
+}  // namespace
+
+std::string home() {
+  if (const char* env = std::getenv("SQUAWK_HOME"); env && *env) return env;
+  static const std::string found = find_home();
+  return found;
 }
 
 std::string resource(const std::string& rel) { return home() + "/" + rel; }
+
+std::string portable(const std::string& p) {
+  if (p.empty() || !is_within(p, home())) return p;
+  const fs::path rel = fs::path(absolute(p)).lexically_relative(absolute(home()));
+  return kHomeTag + rel.string();
+}
+
+std::string resolve(const std::string& stored) {
+  if (stored.rfind(kHomeTag, 0) != 0) return stored;
+  return resource(stored.substr(sizeof kHomeTag - 1));
+}
 
 std::string absolute(const std::string& p) {
   std::error_code ec;

@@ -196,7 +196,8 @@ ObjectHeader* arg_header(lua_State* L, int idx, const char* name, const char* mt
   ObjectHeader* h = test_header(L, idx, mt);
   if (!h) throw ArgError(type_error(L, idx, name, mt));
   if (!h->alive)
-    throw ArgError(type_error(L, idx, name, mt) + " that is alive (this one was already finalized)");
+    throw ArgError(type_error(L, idx, name, (std::string("a live ") + mt).c_str()) +
+                   " already finalized (its __gc ran)");
   return h;
 }
 

@@ -20,18 +20,6 @@ std::string prompt_path(const std::string& prompt) {
   return prompt.empty() ? paths::resource(kDefaultPromptFile) : prompt;
 }
 
-// The template a checkpoint names, as a file here: the shipped template is
-// recorded by its repository path (kDefaultPromptFile) and found wherever
-// the repository lives, also when an older checkpoint recorded it absolute.
-std::string recorded_prompt(const std::string& recorded) {
-  const std::string tail = std::string("/") + kDefaultPromptFile;
-  const bool shipped = recorded.empty() || recorded == kDefaultPromptFile ||
-                       (recorded.size() > tail.size() &&
-                        recorded.compare(recorded.size() - tail.size(), tail.size(), tail) == 0);
-  if (shipped || !files::exists(recorded)) return paths::resource(kDefaultPromptFile);
-  return recorded;
-}
-
 rl::PromptRenderFn render_fn(std::shared_ptr<PromptRenderer> r) {
   return [r](const env::Observation& o) { return r->render(o); };
 }
@@ -92,7 +80,7 @@ Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::Ho
   meta.model_seed = opts.model_seed;
   meta.spec = opts.spec;
   meta.spec.obs_size = env::observation_size(env.num_intruders);
-  meta.prompt = opts.prompt.empty() ? kDefaultPromptFile : opts.prompt;
+  meta.prompt = paths::portable(prompt);  // the checkpoint follows the home it is used in
   const bool tiny = opts.model == "tiny";
   if (meta.spec.trainable_blocks < 0) meta.spec.trainable_blocks = tiny ? kTinyTrainableBlocks : 1;
   gpt2::Tokenizer tok = gpt2::Tokenizer::bytes_only();
@@ -129,8 +117,9 @@ Result<Gpt2Policy> gpt2_policy_from_checkpoint(const rl::PromptCheckpoint& ckpt,
   meta.params.clear();
   meta.adam_m.clear();
   meta.adam_v.clear();
-  meta.prompt = prompt.empty() ? recorded_prompt(meta.prompt) : prompt;
-  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<PromptRenderer> r, PromptRenderer::load(meta.prompt, vm));
+  if (!prompt.empty()) meta.prompt = paths::portable(prompt);
+  if (meta.prompt.empty() || !files::exists(paths::resolve(meta.prompt))) meta.prompt = paths::portable(prompt_path(""));
+  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<PromptRenderer> r, PromptRenderer::load(paths::resolve(meta.prompt), vm));
   SQUAWK_ASSIGN_OR_RETURN(gpt2::Tokenizer tok, gpt2::Tokenizer::from_hf(meta.vocab_json, meta.merges_txt));
   SQUAWK_ASSIGN_OR_RETURN(Gpt2Policy g, assemble(std::move(meta), std::move(tok), r));
   std::span<float> tail = g.policy->params();

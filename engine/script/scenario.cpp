@@ -74,11 +74,10 @@ env::IntRange int_range(lua_State* L, int idx, const char* key, env::IntRange fa
   return {static_cast<int>(v[0]), static_cast<int>(v[1])};
 }
 
+constexpr long long kMaxCount = 1LL << 53;  // episodes and seeds: whole numbers a double holds exactly
+
 int int_field(lua_State* L, int idx, const char* key, int fallback) {
-  const double v = field_number(L, idx, key, fallback);
-  if (v != static_cast<int>(v))
-    throw ArgError(std::string("scenario field '") + key + "': expected an integer");
-  return static_cast<int>(v);
+  return static_cast<int>(field_count(L, idx, key, fallback, -2147483647, 2147483647));
 }
 
 const std::set<std::string> kEnvKeys = {
@@ -140,7 +139,7 @@ void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
              {"estimator", "episodes", "episodes_per_update", "num_envs", "lr", "lr_final", "gamma",
               "entropy_coef", "grad_clip", "eval_every", "eval_episodes", "seed"});
   t.estimator = field_string(L, idx, "estimator", t.estimator);
-  t.episodes = static_cast<long long>(field_number(L, idx, "episodes", static_cast<double>(t.episodes)));
+  t.episodes = field_count(L, idx, "episodes", t.episodes, 0, kMaxCount);
   t.episodes_per_update = int_field(L, idx, "episodes_per_update", t.episodes_per_update);
   t.num_envs = int_field(L, idx, "num_envs", t.num_envs);
   t.lr = field_number(L, idx, "lr", t.lr);
@@ -148,10 +147,9 @@ void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   t.gamma = field_number(L, idx, "gamma", t.gamma);
   t.entropy_coef = field_number(L, idx, "entropy_coef", t.entropy_coef);
   t.grad_clip = field_number(L, idx, "grad_clip", t.grad_clip);
-  t.eval_every = static_cast<long long>(field_number(L, idx, "eval_every", static_cast<double>(t.eval_every)));
-  t.eval_episodes =
-      static_cast<long long>(field_number(L, idx, "eval_episodes", static_cast<double>(t.eval_episodes)));
-  t.seed = static_cast<uint64_t>(field_number(L, idx, "seed", static_cast<double>(t.seed)));
+  t.eval_every = field_count(L, idx, "eval_every", t.eval_every, 0, kMaxCount);
+  t.eval_episodes = field_count(L, idx, "eval_episodes", t.eval_episodes, 0, kMaxCount);
+  t.seed = static_cast<uint64_t>(field_count(L, idx, "seed", static_cast<long long>(t.seed), 0, kMaxCount));
 }
 
 constexpr int kMaxScenarioNesting = 8;
@@ -240,8 +238,8 @@ void read_scenario(lua_State* L, int top, Scenario& s) {
     keys.insert({"episodes", "seed"});
     check_keys(L, -1, "eval", keys);
     read_env(L, -1, s.eval_env);
-    s.eval_episodes = static_cast<long long>(field_number(L, -1, "episodes", 1000));
-    s.eval_seed = static_cast<uint64_t>(field_number(L, -1, "seed", 0));
+    s.eval_episodes = field_count(L, -1, "episodes", 1000, 0, kMaxCount);
+    s.eval_seed = static_cast<uint64_t>(field_count(L, -1, "seed", 0, 0, kMaxCount));
     lua_pop(L, 1);
   }
 }

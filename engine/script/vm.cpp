@@ -8,6 +8,7 @@
 #include "core/paths.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
+#include "script/watchdog.h"
 
 namespace squawk::script {
 
@@ -167,9 +168,16 @@ std::string limit_message(long long limit) {
 
 void count_hook(lua_State* L, lua_Debug* ar) {
   Vm& vm = Vm::of(L);
-  if (lua_gethookcount(L) == 1 && !vm.stopped_) {  // a thread left failing by an earlier call
+  if (lua_gethookcount(L) == 1 && !vm.stopped_ && !(vm.watchdog_ && vm.watchdog_->expired())) {  // a thread left failing by an earlier call
     lua_sethook(L, count_hook, LUA_MASKCOUNT, kHookEvery);
     return;
+  }
+  if (vm.watchdog_ && vm.watchdog_->expired()) {
+    lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);  // keep failing if a pcall catches it
+    lua_getinfo(L, "Sl", ar);
+    luaL_error(L, "%s:%d: stopped: the call ran longer than %f s of wall-clock time; raise it with "
+               "--max-seconds S, or 0 for no limit", ar->short_src, ar->currentline,
+               vm.options_.max_seconds);
   }
   vm.instructions_ += kHookEvery;
   const long long limit = vm.options_.max_instructions;
@@ -194,6 +202,9 @@ int counted_coroutine(lua_State* L) {
 }
 
 Status Vm::charge(long long instructions) {
+  if (watchdog_ && watchdog_->expired())
+    return Status::timeout("stopped: the call ran longer than " + std::to_string(options_.max_seconds) +
+                           " s of wall-clock time; raise it with --max-seconds S, or 0 for no limit");
   const long long limit = options_.max_instructions;
   if (limit <= 0) return Status::ok();
   instructions_ += instructions;
@@ -209,12 +220,23 @@ Vm::Call::Call(Vm& vm) : vm_(vm) {
   if (vm_.call_depth_++ == 0) {
     vm_.instructions_ = 0;
     vm_.stopped_ = false;
-    if (vm_.options_.max_instructions > 0)
+    const double s = vm_.options_.max_seconds;
+    if (s > 0) {
+      char msg[200];
+      std::snprintf(msg, sizeof msg,
+                    "squawk: a script call ran 2 s past --max-seconds %g inside one C function "
+                    "(a costly string pattern?); exiting",
+                    s);
+      vm_.watchdog_ = std::make_unique<Watchdog>(s, 2.0, msg);
+    }
+    if (vm_.options_.max_instructions > 0 || s > 0)
       lua_sethook(vm_.L_, count_hook, LUA_MASKCOUNT, kHookEvery);
   }
 }
 
-Vm::Call::~Call() { --vm_.call_depth_; }
+Vm::Call::~Call() {
+  if (--vm_.call_depth_ == 0) vm_.watchdog_.reset();
+}
 
 Vm& Vm::of(lua_State* L) { return **static_cast<Vm**>(lua_getextraspace(L)); }
 

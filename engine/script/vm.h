@@ -13,7 +13,9 @@
 // counted too), and C functions that do long work (simulation steps, episodes)
 // charge their work through Vm::charge. A call is one entry from C++ into the
 // VM (run_file, a reward function, a prompt renderer): Vm::Call resets the
-// count at the outermost entry. Once the budget is spent every thread of the
+// count at the outermost entry. options.max_seconds bounds a call's wall
+// clock the same way (Watchdog); a call stuck that long inside one C function
+// (a pathological string pattern) ends the process with exit code 124. Once the budget is spent every thread of the
 // VM fails at its next instruction until the call ends.
 // Errors come back as Status with "file:line: message" and a traceback.
 //
@@ -34,6 +36,8 @@ struct lua_Debug;
 
 namespace squawk::script {
 
+class Watchdog;
+
 // The environment variables a sandboxed os.getenv may see (no secrets).
 inline constexpr const char* kEnvAllowList[] = {"SQUAWK_HOME", "SQUAWK_NAVDATA", "SQUAWK_LLM_URL",
                                                 "SQUAWK_LLM_MODEL", "SQUAWK_LLM_API"};
@@ -43,6 +47,7 @@ struct VmOptions {
   bool unsafe = false;
   std::string out_dir;  // the only folder files may be written to; "" = none
   long long max_instructions = 500'000'000;  // per call; 0 = no limit, < 0 refused
+  double max_seconds = 0;                      // [s] wall clock per call; 0 = no limit
   std::vector<std::string> require_dirs;       // extra folders for `require`
   std::vector<std::string> read_dirs;          // extra folders scripts may read (--allow-read)
   std::string navdata_dir;                     // BlueSky navdata, "" = none
@@ -109,6 +114,7 @@ class Vm {
   CheckCounts checks_;
   long long instructions_ = 0;  // spent in the current call
   int call_depth_ = 0;
+  std::unique_ptr<Watchdog> watchdog_;  // the current call's, when max_seconds > 0
   std::vector<std::string> readable_;  // folders for may_read
   bool stopped_ = false;  // the budget of the current call is spent
   lua_State* L_ = nullptr;

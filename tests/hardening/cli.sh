@@ -38,8 +38,12 @@ expect "6 run_for 1e12"      1 "sim_step.lua:4: stopped: the script ran" -- "$sq
 expect "6 run_until 1e12"    1 "sim_step.lua:4: stopped: the script ran" -- "$sq" run $d/sim_step.lua run_until 1e12 "${lim[@]}"
 expect "6 evaluate 1e12"     1 "field 'episodes': expected a whole number in \[1, 1000000\]" -- "$sq" run $d/evaluate.lua 1e12
 expect "18 evaluate nan"     1 "field 'episodes': .* got NaN" -- "$sq" run $d/evaluate.lua 0/0
+expect "6 --max-seconds"      1 "spin.lua:2: stopped: the call ran longer than 1.0+ s of wall-clock time" -- "$sq" run $d/spin.lua --max-seconds 1 --max-instructions 0
+expect "6 pattern in C"      124 "ran 2 s past --max-seconds 1 inside one C function" -- "$sq" run $d/pattern.lua --max-seconds 1
+expect "6 --max-seconds -1"  2 "--max-seconds expects seconds >= 0" -- "$sq" run $d/spin.lua --max-seconds -1
 expect "7 per call"          0 "^steps 3000$" -- "$sq" run $d/reward_per_call.lua $d/reward_scenario.lua "${lim[@]}"
 expect "7 refuse -1"         2 "--max-instructions expects a count >= 0" -- "$sq" run $d/coroutines.lua --max-instructions -1
+expect "18 scenario NaN"      0 "field 'intruders': expected a whole number .* got NaN" -- "$sq" run $d/load_scenario.lua $d/bad_numbers_scenario.lua
 expect "4 env.new self"      1 "more than 8 scenario files loading each other" -- "$sq" run $d/nested_env.lua
 expect "4 IC self"           1 "more than 16 nested IC/PCALLs" -- "$sq" scn $d/ic_self.scn
 expect "5 read refused"       1 "reading '/etc/passwd' is not allowed" -- "$sq" run $d/read_file.lua /etc/passwd
@@ -54,6 +58,47 @@ out=$("$sq" scn $d/dump_fail.scn --dump-json 2>/dev/null); err=$("$sq" scn $d/du
 if grep -q '"simt"' <<<"$out" && ! grep -q KL9 <<<"$out" && grep -q "ALT KL9 FL100: argument 1: no aircraft 'KL9'" <<<"$err"; then
   echo "ok   10 dump-json errors on stderr"; pass=$((pass + 1))
 else echo "FAIL 10 dump-json errors on stderr: out=$out err=$err"; fails=$((fails + 1)); fi
+# 17: an install layout (bin/ + share/squawk/) and a moved binary use their own home.
+tmp=$(mktemp -d)
+mkdir -p "$tmp/inst/bin" "$tmp/inst/share/squawk" "$tmp/copy"
+cp "$sq" "$tmp/inst/bin/squawk"
+cp -r scripts prompts scenarios models "$tmp/inst/share/squawk/"
+cp "$d/home.lua" "$tmp/inst/share/squawk/scripts/home_check.lua"
+expect "17 install layout"   0 "home=$tmp/inst/share/squawk" -- "$tmp/inst/bin/squawk" run "$tmp/inst/share/squawk/scripts/home_check.lua"
+cp "$sq" "$tmp/copy/squawk"
+expect "17 SQUAWK_HOME"      0 "^ok$" -- env SQUAWK_HOME="$tmp/inst/share/squawk" "$tmp/copy/squawk" run "$tmp/inst/share/squawk/scripts/home_check.lua"
+rm -rf "$tmp"
+# 16: a checkpoint that failed to save (full disk) after its log row was
+# written: --resume drops the row instead of repeating it.
+tmp=$(mktemp -d)
+tr=(train scenarios/horizontal_cr.lua --eval-every 64 --eval-episodes 8 --out "$tmp/run" --quiet)
+"$sq" "${tr[@]}" --episodes 64 >/dev/null 2>&1
+cp "$tmp/run/checkpoint.ckpt" "$tmp/ckpt_64"
+"$sq" "${tr[@]}" --episodes 128 --resume >/dev/null 2>&1
+cp "$tmp/ckpt_64" "$tmp/run/checkpoint.ckpt"  # the save at 128 episodes "failed"
+"$sq" "${tr[@]}" --episodes 128 --resume >/dev/null 2>&1
+rows=$(cut -d, -f1 "$tmp/run/log.csv" | tail -n +2 | tr '\n' ' ')
+if [ "$rows" = "64 128 " ]; then echo "ok   16 resume after a failed save"; pass=$((pass + 1));
+else echo "FAIL 16 resume after a failed save: episodes column '$rows'"; fails=$((fails + 1)); fi
+rm -rf "$tmp"
+# 13: every reply malformed: the translation graph falls back to the offline
+# grammar, so single-agent mode scores what offline mode scores.
+if command -v python3 >/dev/null; then
+  tmp=$(mktemp -d)
+  head -4 tests/data/translate_heldout.tsv > "$tmp/c.tsv"
+  python3 $d/bad_llm_server.py > "$tmp/port" &
+  spid=$!
+  for _ in 1 2 3 4 5 6 7 8 9 10; do [ -s "$tmp/port" ] && break; sleep 0.3; done
+  off=$("$sq" eval-translate "$tmp/c.tsv" --mode offline 2>&1 | grep overall)
+  single=$(SQUAWK_LLM_URL=http://127.0.0.1:$(cat "$tmp/port") SQUAWK_LLM_MODEL=m timeout 60 "$sq" eval-translate "$tmp/c.tsv" --mode single 2>&1 | grep overall)
+  expect "1 __gc in on_token"  0 "after: false .*finalized" -- "$sq" run $d/gc_in_on_token.lua "http://127.0.0.1:$(cat "$tmp/port")" --unsafe
+  kill "$spid" 2>/dev/null
+  if [ -n "$off" ] && [ "$off" = "$single" ]; then echo "ok   13 graph falls back from malformed replies"; pass=$((pass + 1));
+  else echo "FAIL 13 graph fallback: offline '$off' single '$single'"; fails=$((fails + 1)); fi
+  rm -rf "$tmp"
+else
+  echo "skip 13 graph fallback: no python3"
+fi
 
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]

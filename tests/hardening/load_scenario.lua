@@ -1,0 +1,2 @@
+local ok, err = pcall(squawk.env.new, arg[1])
+print(ok, err)
