@@ -10,6 +10,17 @@ namespace squawk::app {
 
 namespace {
 
+// Writes a server's text to stdout whole (NUL bytes included) with control
+// bytes other than newline and tab shown as \xNN, so a reply cannot drive the
+// terminal with escape codes.
+void print_reply_text(std::string_view s) {
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) std::printf("\\x%02x", u);
+    else std::fputc(c, stdout);
+  }
+}
+
 // The configuration from the environment, overridden by the flags.
 Result<llm::LlmConfig> config_from(const Args& args) {
   llm::LlmConfig c;
@@ -65,7 +76,7 @@ int cmd_llm(const ArgV& argv) {
   llm::TokenSink sink;
   if (args->has("--stream")) {
     sink = [](std::string_view piece) {
-      std::fwrite(piece.data(), 1, piece.size(), stdout);
+      print_reply_text(piece);
       std::fflush(stdout);
     };
   }
@@ -74,7 +85,7 @@ int cmd_llm(const ArgV& argv) {
     if (sink) std::printf("\n");
     return failure(reply.status());
   }
-  if (!sink) std::printf("%s", reply->content.c_str());
+  if (!sink) print_reply_text(reply->content);
   std::printf("\n");
   std::fprintf(stderr, "[%s: %ld prompt + %ld reply tokens, %d attempt(s), %s]\n",
                (*client)->config().describe().c_str(), reply->prompt_tokens, reply->completion_tokens,

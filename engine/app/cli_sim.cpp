@@ -54,7 +54,11 @@ int run_one(const std::string& file, const Args& args, const command::ScenarioRu
   command::Stack stack;
   auto r = command::run_scenario(file, opts, stack);
   if (!r) return failure(r.status());
-  if (args.has("--dump-json")) {
+  if (args.has("--dump-json")) {  // stdout holds only the JSON: failures go to stderr
+    for (const auto& line : r->tally.first_failures) std::fprintf(stderr, "%s\n", line.c_str());
+    const long failed = command::total_count(r->tally.failed);
+    if (failed > static_cast<long>(r->tally.first_failures.size()))
+      std::fprintf(stderr, "(%ld failures in all)\n", failed);
     std::printf("%s\n", final_state_json(stack).c_str());
     return r->tally.failed.empty() ? kExitOk : kExitFail;
   }
@@ -73,7 +77,7 @@ int run_one(const std::string& file, const Args& args, const command::ScenarioRu
 
 int cmd_scn(const ArgV& argv) {
   Args::Spec spec;
-  spec.value_flags = {"--until", "--navdata", "--seed", "--max-time"};
+  spec.value_flags = {"--until", "--navdata", "--seed", "--max-time", "--max-wall"};
   spec.bool_flags = {"--dump-json", "--conformance"};
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("scn", args.status().message());
@@ -87,6 +91,9 @@ int cmd_scn(const ArgV& argv) {
   auto max_time = args->get_double("--max-time", opts.max_time);
   if (!max_time || *max_time <= 0) return usage_error("scn", "--max-time expects seconds > 0");
   opts.max_time = *max_time;
+  auto max_wall = args->get_double("--max-wall", opts.max_wall_s);
+  if (!max_wall || !(*max_wall >= 0)) return usage_error("scn", "--max-wall expects seconds >= 0 (0 = no limit)");
+  opts.max_wall_s = *max_wall;
   auto seed = args->get_int("--seed", 0);
   if (!seed || *seed < 0) return usage_error("scn", "--seed expects an integer >= 0");
   opts.seed = static_cast<uint64_t>(*seed);

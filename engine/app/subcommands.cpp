@@ -190,6 +190,7 @@ const std::vector<Subcommand>& subcommands() {
        cmd_llm},
       {"scn", "scn FILE.scn               run a BlueSky scenario headless and summarise it",
        "usage: squawk scn FILE.scn [--until SECONDS] [--navdata DIR] [--dump-json] [--seed N]\n"
+       "                           [--max-wall SECONDS]\n"
        "       squawk scn DIR --conformance [--max-time SECONDS] [--navdata DIR]\n\n"
        "Loads a BlueSky scenario file and runs it without display until every timed\n"
        "command has run (at most --max-time, default 3600 s of sim time) or until\n"
@@ -202,7 +203,9 @@ const std::vector<Subcommand>& subcommands() {
        "                  $SQUAWK_NAVDATA. Without it, named places are errors.\n"
        "  --dump-json     print only the final state as JSON: simt and per aircraft\n"
        "                  id, type, lat, lon, alt_ft, hdg_deg, tas_kt, cas_kt, gs_kt,\n"
-       "                  vs_fpm\n"
+       "                  vs_fpm (failed commands go to stderr)\n"
+       "  --max-wall S    stop with an error after S seconds of wall-clock time\n"
+       "                  (default 600; 0 = no limit)\n"
        "  --conformance   run every file under DIR and print Markdown tables of the\n"
        "                  totals, skipped commands and failure reasons\n",
        cmd_scn},

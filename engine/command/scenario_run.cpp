@@ -4,8 +4,13 @@
 #include <chrono>
 
 #include "core/paths.h"
+#include "core/text.h"
 
 namespace squawk::command {
+
+namespace {
+constexpr int kSlice = 100;  // steps between wall-clock checks
+}  // namespace
 
 Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRunOptions& opts, Stack& stack) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -13,14 +18,27 @@ Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRu
   stack.set_navdb(opts.navdb);
   stack.set_base_dir(paths::dirname(path));
   SQUAWK_RETURN_IF_ERROR(stack.load_scenario(path));
+  // Runs to `target` in slices of kSlice steps, checking the wall clock.
+  auto run_to = [&](double target) -> Status {
+    while (true) {
+      const double before = stack.sim().simt();
+      SQUAWK_RETURN_IF_ERROR(stack.run_until(std::min(target, before + kSlice * stack.sim().dt())));
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (opts.max_wall_s > 0 && wall > opts.max_wall_s)
+        return Status::timeout(path + ": stopped at t = " + text::fmt_double(stack.sim().simt(), 2) +
+                               " s after " + text::fmt_double(opts.max_wall_s, 1) +
+                               " s of wall-clock time (--max-wall)");
+      if (stack.sim().simt() == before) return Status::ok();  // target reached
+    }
+  };
   if (opts.until) {
-    SQUAWK_RETURN_IF_ERROR(stack.run_until(*opts.until));
+    SQUAWK_RETURN_IF_ERROR(run_to(*opts.until));
   } else {
     // Until every queued command has run (PCALL and SCHEDULE may queue more)
     // or max_time; each round advances at least one step.
     while (stack.queued() > 0 && stack.sim().simt() < opts.max_time) {
       const double target = std::min(*stack.last_queued_time(), opts.max_time);
-      SQUAWK_RETURN_IF_ERROR(stack.run_until(std::max(target, stack.sim().simt() + stack.sim().dt())));
+      SQUAWK_RETURN_IF_ERROR(run_to(std::max(target, stack.sim().simt() + stack.sim().dt())));
     }
   }
   ScenarioRunResult r;

@@ -18,7 +18,9 @@ namespace squawk::command {
 
 namespace {
 
-constexpr int kMaxIncludeDepth = 16;
+constexpr int kMaxIncludeDepth = 16;      // nested IC / PCALL files
+constexpr long kMaxPerInstant = 100'000;  // queued commands run at one sim time
+constexpr size_t kMaxQueued = 1'000'000;  // commands waiting in the queue
 
 // A failure's grouping key: the message with quoted values and a leading
 // aircraft id ("KL1: ...", as the simulation words it) blanked, so failures
@@ -195,11 +197,29 @@ void Stack::process_due() {
   std::vector<std::string> fired;
   fired.swap(fired_);
   for (const auto& cmd : fired) run_queued(cmd);
+  long ran = 0;
   while (!queue_.empty() && queue_.begin()->first.first <= sim_.simt()) {
+    if (++ran > kMaxPerInstant) {  // a SCHEDULE / PCALL loop at this instant
+      size_t dropped = 0;
+      while (!queue_.empty() && queue_.begin()->first.first <= sim_.simt()) {
+        queue_.erase(queue_.begin());
+        ++dropped;
+      }
+      record_failure("more than " + std::to_string(kMaxPerInstant) + " queued commands at one time (" +
+                     std::to_string(dropped) + " dropped; a SCHEDULE or PCALL loop?)");
+      return;
+    }
     std::string line = std::move(queue_.begin()->second);
     queue_.erase(queue_.begin());
     run_queued(line);
   }
+}
+
+void Stack::record_failure(const std::string& what) {
+  if (++tally_.failed[what.substr(0, what.find(" ("))] > 10) return;  // counted, not repeated
+  std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + what;
+  if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
+  output_.push_back(std::move(msg));
 }
 
 void Stack::test_conditions() {
@@ -250,7 +270,14 @@ Status Stack::run_until(double t_end) {
   return Status::ok();
 }
 
-void Stack::schedule(double t, std::string line) { queue_.emplace(std::make_pair(t, next_seq_++), std::move(line)); }
+void Stack::schedule(double t, std::string line) {
+  if (queue_.size() >= kMaxQueued) {
+    record_failure("the command queue is full (" + std::to_string(kMaxQueued) + " commands; a self-scheduling loop?): " +
+                   text::quoted(line) + " dropped");
+    return;
+  }
+  queue_.emplace(std::make_pair(t, next_seq_++), std::move(line));
+}
 
 std::optional<double> Stack::last_queued_time() const {
   if (queue_.empty()) return std::nullopt;

@@ -95,7 +95,9 @@ class Stack {
   // PCALL: merges a scenario file. Times are relative to now unless
   // `relative` is false; %0, %1, ... are replaced by `args`.
   Status merge_scenario(const std::string& path, const std::vector<std::string>& args, bool relative);
-  // Queues a command line to run when simt >= t [s].
+  // Queues a command line to run when simt >= t [s]. A full queue (10^6
+  // commands) drops it and records a failure. At most 10^5 queued commands
+  // run at one sim time; the rest due then are dropped with a failure.
   void schedule(double t, std::string line);
 
   // Runs (queued commands, steps, conditions) up to t_end [s]; see above.
@@ -161,6 +163,9 @@ class Stack {
   uint64_t seed_ = 0;
   double dtmult_ = 1.0;
   bool noise_ = false;
+  // Counts and logs a failure that belongs to no single command.
+  void record_failure(const std::string& what);
+
   std::function<bool(const std::string&)> read_filter_;
   int include_depth_ = 0;  // PCALL nesting guard (not state: always 0 between calls)
 

@@ -13,6 +13,9 @@
 namespace squawk::files {
 
 Result<std::string> read(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    return Status::io_error("cannot read '" + path + "': not a regular file (a folder or device)");
   std::ifstream in(path, std::ios::binary);
   if (!in) return Status::io_error("cannot open '" + path + "': " + std::strerror(errno));
   std::ostringstream ss;

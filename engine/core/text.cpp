@@ -107,7 +107,18 @@ std::string fmt_double(double v, int max_decimals) {
 std::string quoted(std::string_view s) {
   std::string r;
   r.reserve(s.size() + 2);
-  r.append(1, '\'').append(s).append(1, '\'');
+  r.push_back('\'');
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) {  // control bytes (NUL, ESC, ...) would cut or garble a message
+      static const char kHex[] = "0123456789abcdef";
+      r.append("\\x").push_back(kHex[u >> 4]);
+      r.push_back(kHex[u & 15]);
+    } else {
+      r.push_back(c);
+    }
+  }
+  r.push_back('\'');
   return r;
 }
 

@@ -23,7 +23,7 @@ std::optional<double> to_double(std::string_view s);
 std::optional<long long> to_int(std::string_view s);
 // Shortest decimal text that reads back to the same double ("%.17g" trimmed).
 std::string fmt_double(double v, int max_decimals = 6);
-// Quotes a string for messages: 'FL9X'.
+// Quotes a string for messages: 'FL9X'; control bytes appear as \xNN.
 std::string quoted(std::string_view s);
 
 }  // namespace squawk::text

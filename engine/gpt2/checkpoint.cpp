@@ -1,6 +1,7 @@
 #include "gpt2/checkpoint.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <regex>
 
@@ -123,6 +124,9 @@ Status load_weights(const SafetensorsFile& file, Model& model) {
       return Status::corruption("checkpoint: tensor " + text::quoted(t.name) + " has shape " +
                                 shape_str(t.shape) + ", expected " + shape_str(spec.shape));
     SQUAWK_RETURN_IF_ERROR(file.read_f32(t, model.tensor(spec.name)));
+    for (const float v : model.tensor(spec.name))
+      if (!std::isfinite(v))
+        return Status::corruption("checkpoint: tensor " + text::quoted(t.name) + " holds NaN or infinite weights");
   }
   if (lm_head) {
     std::vector<float> head(lm_head->numel());
@@ -139,8 +143,15 @@ Result<Model> load_model(const std::string& dir, const std::vector<TensorSpec>& 
   SQUAWK_ASSIGN_OR_RETURN(std::string cfg_text, files::read(dir + "/config.json"));
   auto cfg = parse_hf_config(cfg_text);
   if (!cfg) return cfg.status().with_context(dir);
-  SQUAWK_ASSIGN_OR_RETURN(Model model, Model::create(*cfg, extras));
   SQUAWK_ASSIGN_OR_RETURN(SafetensorsFile file, SafetensorsFile::open(dir + "/model.safetensors"));
+  // The weights must fit in the file (at 2 bytes each at least) before the
+  // model is allocated: a config that does not match its file fails here.
+  const long long params = cfg->num_params();
+  if (static_cast<unsigned long long>(params) > file.data_bytes() / 2)
+    return Status::corruption(dir + ": config.json describes " + std::to_string(params) +
+                              " parameters but model.safetensors holds " + std::to_string(file.data_bytes()) +
+                              " bytes of data (at least " + std::to_string(2 * params) + " needed)");
+  SQUAWK_ASSIGN_OR_RETURN(Model model, Model::create(*cfg, extras));
   Status st = load_weights(file, model);
   if (!st.is_ok()) return st.with_context(dir + "/model.safetensors");
   return model;

@@ -1,5 +1,6 @@
 #include "gpt2/safetensors.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include <nlohmann/json.hpp>
@@ -106,6 +107,16 @@ Result<SafetensorsFile> SafetensorsFile::parse(std::string bytes) {
     t.end = static_cast<size_t>(e);
     f.tensors_.push_back(std::move(t));
   }
+  // No two tensors may share bytes (empty tensors take none).
+  std::vector<const SafeTensor*> by_start;
+  for (const SafeTensor& t : f.tensors_)
+    if (t.end > t.begin) by_start.push_back(&t);
+  std::sort(by_start.begin(), by_start.end(),
+            [](const SafeTensor* a, const SafeTensor* b) { return a->begin < b->begin; });
+  for (size_t i = 1; i < by_start.size(); ++i)
+    if (by_start[i]->begin < by_start[i - 1]->end)
+      return bad("tensors " + text::quoted(by_start[i - 1]->name) + " and " + text::quoted(by_start[i]->name) +
+                 " overlap: data_offsets must not share bytes");
   f.bytes_ = std::move(bytes);
   return f;
 }

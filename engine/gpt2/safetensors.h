@@ -35,13 +35,16 @@ class SafetensorsFile {
   // Parses a whole file held in memory. Errors (kCorruption) say which field
   // of which tensor is wrong and what was expected: short file, header length
   // beyond the file or the limit, invalid JSON, missing or ill-typed fields,
-  // unknown dtype, byte ranges outside the data or not matching the shape.
+  // unknown dtype, byte ranges outside the data, not matching the shape or
+  // overlapping another tensor's.
   static Result<SafetensorsFile> parse(std::string bytes);
   static Result<SafetensorsFile> open(const std::string& path);
 
   const std::vector<SafeTensor>& tensors() const { return tensors_; }
   const SafeTensor* find(const std::string& name) const;
   const std::map<std::string, std::string>& metadata() const { return metadata_; }
+  // [bytes] of the data buffer (the file after its header).
+  size_t data_bytes() const { return bytes_.size() - data_start_; }
   // Converts a tensor to float32; out must hold exactly numel() floats.
   Status read_f32(const SafeTensor& t, std::span<float> out) const;
 

@@ -125,9 +125,13 @@ Result<Embeddings> OpenAiClient::embed(const std::vector<std::string>& texts) {
                                                  "data[" + std::to_string(idx) + "].embedding"));
     by_index[idx] = std::move(v);
   }
-  if (by_index.size() != texts.size() || (!by_index.empty() && by_index.rbegin()->first != texts.size() - 1))
+  if (by_index.size() != texts.size())
     return Status::corruption(config_.describe() + ": asked for " + std::to_string(texts.size()) +
-                              " embeddings, got " + std::to_string(by_index.size()));
+                              " embeddings, got " + std::to_string(by_index.size()) + " distinct indices");
+  if (!by_index.empty() && by_index.rbegin()->first != texts.size() - 1)
+    return Status::corruption(config_.describe() + ": embedding indices run to " +
+                              std::to_string(by_index.rbegin()->first) + ", expected 0 to " +
+                              std::to_string(texts.size() - 1));
   Embeddings out;
   for (auto& [i, v] : by_index) out.push_back(std::move(v));
   return out;

@@ -56,12 +56,12 @@ translate::StaticWorld read_world(lua_State* L, int idx) {
       a.id = field_string(L, -1, "id", "");
       if (a.id.empty()) throw ArgError("world.aircraft[" + std::to_string(i) + "]: needs an id");
       a.type = field_string(L, -1, "type", "");
-      a.lat_deg = field_number(L, -1, "lat", 0.0);
-      a.lon_deg = field_number(L, -1, "lon", 0.0);
-      a.hdg_deg = field_number(L, -1, "hdg_deg", 0.0);
-      a.alt_m = units::ft_to_m(field_number(L, -1, "alt_ft", 0.0));
-      a.cas_ms = units::kt_to_ms(field_number(L, -1, "cas_kt", 0.0));
-      a.mach = field_number(L, -1, "mach", 0.0);
+      a.lat_deg = field_in(L, -1, "lat", 0.0, -90, 90);
+      a.lon_deg = field_in(L, -1, "lon", 0.0, -180, 180);
+      a.hdg_deg = field_in(L, -1, "hdg_deg", 0.0, -360, 360);
+      a.alt_m = units::ft_to_m(field_in(L, -1, "alt_ft", 0.0, -2000, 100000));
+      a.cas_ms = units::kt_to_ms(field_in(L, -1, "cas_kt", 0.0, 0, 2000));
+      a.mach = field_in(L, -1, "mach", 0.0, 0, 10);
       lua_getfield(L, -1, "route");
       a.route = string_list(L, lua_gettop(L), "route");
       lua_pop(L, 1);

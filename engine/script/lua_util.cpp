@@ -1,6 +1,7 @@
 #include "script/lua_util.h"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "core/text.h"
@@ -8,10 +9,72 @@
 
 namespace squawk::script {
 
+namespace {
+
+// The key under which table `t` holds the value at the stack top, or "".
+std::string key_of(lua_State* L, int t) {
+  t = lua_absindex(L, t);
+  const int fn = lua_gettop(L);
+  lua_pushnil(L);
+  while (lua_next(L, t)) {
+    if (lua_rawequal(L, -1, fn) && lua_type(L, -2) == LUA_TSTRING) {
+      std::string k = lua_tostring(L, -2);
+      lua_pop(L, 2);
+      return k;
+    }
+    lua_pop(L, 1);
+  }
+  return "";
+}
+
+// The name of the running C function as scripts know it: squawk.sim.new, or
+// Class:method for methods; "?" when it is neither.
+std::string running_function(lua_State* L) {
+  lua_Debug ar;
+  if (!lua_getstack(L, 0, &ar) || !lua_getinfo(L, "f", &ar)) return "?";
+  const int fn = lua_gettop(L);
+  std::string found;
+  lua_getglobal(L, "squawk");
+  if (lua_istable(L, -1)) {
+    lua_pushnil(L);
+    while (found.empty() && lua_next(L, -2)) {
+      if (lua_istable(L, -1) && lua_type(L, -2) == LUA_TSTRING) {
+        lua_pushvalue(L, fn);
+        const std::string k = key_of(L, -2);
+        lua_pop(L, 1);
+        if (!k.empty()) found = std::string("squawk.") + lua_tostring(L, -2) + "." + k;
+      }
+      lua_pop(L, 1);
+    }
+    if (!found.empty()) lua_pop(L, 1);  // the key lua_next left
+  }
+  lua_pop(L, 1);
+  lua_pushnil(L);  // methods: the __index tables of the squawk.* metatables
+  while (found.empty() && lua_next(L, LUA_REGISTRYINDEX)) {  // key, metatable
+    if (lua_type(L, -2) == LUA_TSTRING && std::strncmp(lua_tostring(L, -2), "squawk.", 7) == 0 &&
+        lua_istable(L, -1)) {
+      if (lua_getfield(L, -1, "__index") == LUA_TTABLE) {  // key, metatable, methods
+        lua_pushvalue(L, fn);
+        const std::string k = key_of(L, -2);
+        lua_pop(L, 1);
+        if (!k.empty()) found = std::string(lua_tostring(L, -3)) + ":" + k;
+      }
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  if (!found.empty()) lua_pop(L, 1);
+  lua_settop(L, fn - 1);
+  return found.empty() ? "?" : found;
+}
+
+}  // namespace
+
 std::string type_error(lua_State* L, int idx, const char* name, const char* expected) {
   lua_Debug ar;
-  std::string fn = "?";
+  std::string fn;
   if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "n", &ar) && ar.name) fn = ar.name;
+  if (fn.empty() || fn == "?") fn = running_function(L);
   return "bad argument #" + std::to_string(idx) + " '" + name + "' to '" + fn + "': expected " +
          expected + ", got " + luaL_typename(L, idx);
 }
@@ -168,14 +231,29 @@ void define_class(lua_State* L, const char* mt, const luaL_Reg* methods) {
 
 namespace {
 
+// A number as messages show it: 1e+308, NaN, 2.5.
+std::string shown(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return std::isnan(v) ? "NaN" : buf;
+}
+
 long long checked_count(double v, const std::string& what, long long lo, long long hi) {
   if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)) || v != std::floor(v))
     throw ArgError(what + ": expected a whole number in [" + std::to_string(lo) + ", " +
-                   std::to_string(hi) + "], got " + (std::isnan(v) ? std::string("NaN") : text::fmt_double(v)));
+                   std::to_string(hi) + "], got " + shown(v));
   return static_cast<long long>(v);
 }
 
 }  // namespace
+
+double field_in(lua_State* L, int idx, const char* key, double fallback, double lo, double hi) {
+  const double v = field_number(L, idx, key, fallback);
+  if (!(v >= lo && v <= hi))
+    throw ArgError(std::string("field '") + key + "': expected a number in [" + text::fmt_double(lo) + ", " +
+                   text::fmt_double(hi) + "], got " + shown(v));
+  return v;
+}
 
 long long field_count(lua_State* L, int idx, const char* key, long long fallback, long long lo,
                       long long hi) {

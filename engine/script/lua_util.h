@@ -69,6 +69,9 @@ void push_array(lua_State* L, const std::vector<double>& v);
 double field_number(lua_State* L, int idx, const char* key, double fallback);
 std::string field_string(lua_State* L, int idx, const char* key, const std::string& fallback);
 bool field_boolean(lua_State* L, int idx, const char* key, bool fallback);
+// Field `key` as a number within [lo, hi] (NaN and values outside are
+// ArgErrors naming the field and the range), or `fallback` when nil.
+double field_in(lua_State* L, int idx, const char* key, double fallback, double lo, double hi);
 // Field `key` as a whole number within [lo, hi] (NaN, fractions and values
 // outside are ArgErrors naming the field and the range), or `fallback`.
 long long field_count(lua_State* L, int idx, const char* key, long long fallback, long long lo,

@@ -71,13 +71,15 @@ Status check_finite(std::string_view who, const char* what, double v) {
 }
 }  // namespace
 
+constexpr double kMinDt = 0.001;  // [s] smallest time step: finer ones never finish a run
+
 Simulation::Simulation(uint64_t seed) : rng_(seed) {}
 
 // --- Clock and run state ----------------------------------------------------
 
 Status Simulation::set_dt(double dt) {
-  if (!std::isfinite(dt) || dt <= 0.0 || dt > 60.0)
-    return bad("DT", "time step " + num(dt) + " s is not in (0, 60] s");
+  if (!std::isfinite(dt) || dt < kMinDt || dt > 60.0)
+    return bad("DT", "time step " + num(dt) + " s is not in [0.001, 60] s");
   t_base_ = simt();
   ticks_since_base_ = 0;
   dt_ = dt;

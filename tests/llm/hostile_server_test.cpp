@@ -8,6 +8,7 @@
 #include "llm/client.h"
 #include "llm/llm_config.h"
 #include "loopback_server.h"
+#include "run_binary.h"
 
 using squawk::Code;
 using squawk::llm::Api;
@@ -168,4 +169,32 @@ TEST_CASE("timeouts must be positive, finite and at least a millisecond (point 1
   c.timeout_s = 1.0;
   c.connect_timeout_s = std::nan("");
   CHECK_FALSE(c.validate().is_ok());
+}
+
+TEST_CASE("llm chat prints the whole reply and no terminal escapes (point 18)") {
+  if (!squawk::testing::binary_built()) return;
+  const std::string content = std::string("A\0B\x1b[2JC\n", 8);
+  for (const bool stream : {false, true}) {
+    LoopbackServer server([&](const HttpRequestSeen&, int) {
+      nlohmann::json j = {{"message", {{"content", content}}}, {"done", true}};
+      return body(200, j.dump() + "\n", stream);
+    });
+    const auto r = squawk::testing::run_squawk(
+        "llm chat hi --llm-url " + server.url() + " --llm-model m" + (stream ? " --stream" : ""), "");
+    CAPTURE(r.out);
+    CHECK(r.rc == 0);
+    CHECK(r.out.find("A\\x00B\\x1b[2JC") != std::string::npos);
+    CHECK(r.out.find('\x1b') == std::string::npos);
+  }
+}
+
+TEST_CASE("an embedding reply with the right count but wrong indices says so (point 18)") {
+  LoopbackServer server([](const HttpRequestSeen&, int) {
+    return Reply::json(200, R"({"data":[{"index":5,"embedding":[1,2]}]})");
+  });
+  auto client = squawk::llm::make_client(config(server.url(), Api::kOpenAI));
+  REQUIRE(client.is_ok());
+  auto e = (*client)->embed({"a"});
+  REQUIRE_FALSE(e.is_ok());
+  CHECK(e.status().message().find("embedding indices run to 5, expected 0 to 0") != std::string::npos);
 }

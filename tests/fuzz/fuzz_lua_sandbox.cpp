@@ -1,0 +1,80 @@
+// libFuzzer target: generated Lua scripts in the sandboxed VM with the squawk
+// API. Each input byte pair picks a statement from a list of userdata-abusing,
+// budget-testing and sandbox-probing templates (with a small number from the
+// second byte); input starting with '#' runs the rest as raw Lua instead.
+// Invariants: no crash, no sanitizer report, no hang (a small instruction
+// budget per call); errors are Status values.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "script/vm.h"
+
+using namespace squawk;
+
+namespace {
+
+const char* const kStatements[] = {
+    "local s = squawk.sim.new{} ; X[#X + 1] = s",
+    "X[#X + 1] = squawk.sim.new{seed = %d}",
+    "X[#X] = nil",
+    "X = {}",
+    "collectgarbage()",
+    "collectgarbage('step', %d)",
+    "local o = X[#X] if o then o:exec('CRE KL%d B738 52 4 90 FL200 250') end",
+    "local o = X[#X] if o then o:step(%d) end",
+    "local o = X[#X] if o then o:run_for(%d) end",
+    "local o = X[#X] if o then o:exec('SCHEDULE 00:00:0%d ECHO x') end",
+    "local o = X[#X] if o then o:exec('DT 0.0%d') end",
+    "local o = X[#X] if o then X[#X + 1] = o:copy() end",
+    "local o = X[#X] if o then o:aircraft() o:conflicts() o:snapshot() o:output() end",
+    "local o = X[#X] if o then squawk.translate.offline('KL%d climb FL300', o) end",
+    "setmetatable({ x = X[#X] }, { __gc = function(t) R = t.x end })",
+    "if R then R:exec('CRE KL1 B738 52 4 90 FL200 250') end",
+    "if R then R:count() end",
+    "local m = getmetatable(X[#X] or 0) if type(m) == 'table' and m.__gc then m.__gc(X[1]) end",
+    "local o = X[#X] if o then o.exec(X[1], 'ECHO x') end",
+    "local o = X[#X] if o then o.count({}) end",
+    "local c = coroutine.wrap(function() for i = 1, %d * 100 do end coroutine.yield() end) c()",
+    "for i = 1, %d do coroutine.resume(coroutine.create(function() end)) end",
+    "while true do end",
+    "string.rep('x', %d * 1000)",
+    "io.open('/etc/passwd')",
+    "io.lines('/proc/self/environ')",
+    "os.getenv('SQUAWK_LLM_API_KEY')",
+    "io.open('x%d.txt', 'w')",
+    "squawk.llm.client{ url = 'http://127.0.0.1:1', model = 'm', timeout = %d / 0 }",
+    "squawk.env.evaluate{ scenario = 'scenarios/horizontal_cr.lua', episodes = %d / 0 }",
+    "squawk.translate.offline('climb FL%d')",
+    "local t = {} for i = 1, %d do t[i] = {} end",
+    "error('boom %d')",
+    "X[#X + 1] = squawk.rag.index and squawk.rag.index{} or nil",
+};
+constexpr size_t kCount = sizeof(kStatements) / sizeof(kStatements[0]);
+
+std::string generate(const uint8_t* data, size_t size) {
+  std::string code = "X = {}\n";
+  for (size_t i = 0; i + 1 < size; i += 2) {
+    std::string st = kStatements[data[i] % kCount];
+    const auto at = st.find("%d");
+    if (at != std::string::npos) st.replace(at, 2, std::to_string(data[i + 1] % 64));
+    code += "pcall(function() " + st + " end)\n";
+  }
+  return code;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  script::VmOptions o;
+  o.max_instructions = 200'000;
+  const bool raw = size > 0 && data[0] == '#';
+  const std::string code =
+      raw ? std::string(reinterpret_cast<const char*>(data + 1), size - 1) : generate(data, size);
+  {
+    script::Vm vm(o);
+    (void)vm.run_string(code, "fuzz");
+    (void)vm.run_string("collectgarbage() if R then pcall(R.count, R) end", "after");
+  }
+  return 0;
+}
