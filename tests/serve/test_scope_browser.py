@@ -75,11 +75,14 @@ def main():
                                what="selected heading 270 in the list")
         api = next(a for a in get_state(addr)["aircraft"] if a["id"] == "KL204")
         assert abs(api["sel_hdg_deg"] - 270) < 1e-6, api
-        # The aircraft turns left through north (x10 real time: about 6 s of wall clock).
-        browser.wait_for(f"Math.abs(Number({hdg_cell}) - 270) <= 2", timeout=40, what="KL204 flying heading 270")
-        api = next(a for a in get_state(addr)["aircraft"] if a["id"] == "KL204")
-        assert abs(api["hdg_deg"] - 270) <= 2, api
-        print(f"ok   KL204 heading {before:03d} -> {api['hdg_deg']:.0f} in the list and in GET /api/state")
+        # The aircraft turns left through north (x10 real time: about 6 s of
+        # wall clock) and settles on 270, in the list and in the API.
+        browser.wait_for(f"{hdg_cell} === '270'", timeout=40, what="KL204 flying heading 270 in the list")
+        end = time.time() + 10
+        while abs(next(a for a in get_state(addr)["aircraft"] if a["id"] == "KL204")["hdg_deg"] - 270) > 0.5:
+            assert time.time() < end, "GET /api/state: KL204 not on heading 270"
+            time.sleep(0.1)
+        print(f"ok   KL204 heading {before:03d} -> 270 in the list and in GET /api/state")
 
         browser.eval("document.querySelector('#traffic tr[data-id=\"BAW31\"]').click()")
         browser.wait_for("document.querySelector('#traffic tr.selected')?.dataset.id === 'BAW31'", what="row selection")
