@@ -19,7 +19,12 @@ function f.num(v)
   local s = string.format("%.6f", v):gsub("0+$", ""):gsub("%.$", "")
   return s == "-0" and "0" or s
 end
-function f.int(v) return string.format("%d", math.floor(v + 0.5)) end
+-- Whole numbers as heard, also beyond the integer range (asked about, never wrapped).
+function f.int(v)
+  if v ~= v then return "?" end
+  if math.abs(v) >= 2 ^ 53 then return string.format("%.0f", v) end
+  return string.format("%d", math.floor(v + 0.5))
+end
 function f.alt(ft, fl)
   if fl and ft % 100 == 0 then return "FL" .. f.int(ft / 100) end
   return f.int(ft)
