@@ -271,8 +271,12 @@ Result<Scenario> load_scenario(const std::string& path, const VmOptions& options
     lua_settop(L, base);
     return Status::invalid(msg);
   }
-  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
-  if (lua_pcall(L, 0, 1, base + 1) != LUA_OK) {
+  int rc = LUA_OK;
+  {
+    const Vm::Call budget(*s.vm);  // a fresh instruction budget, ended before s.vm may go
+    rc = lua_pcall(L, 0, 1, base + 1);
+  }
+  if (rc != LUA_OK) {
     std::string msg = lua_tostring(L, -1);
     lua_settop(L, base);
     return Status::invalid(msg);

@@ -123,9 +123,10 @@ int checked_getenv(lua_State* L) {
 // package.searchers entry: Lua files under the allowed folders only.
 int lua_file_searcher(lua_State* L) {
   const char* name = luaL_checkstring(L, 1);
-  std::string rel = name;
-  for (auto& c : rel)
-    if (c == '.') c = '/';
+  char rel[512];  // a C array: no C++ object may live across luaL_error's longjmp
+  std::snprintf(rel, sizeof rel, "%s", name);
+  for (char* c = rel; *c; ++c)
+    if (*c == '.') *c = '/';
   lua_getfield(L, LUA_REGISTRYINDEX, "squawk.require_dirs");
   const int dirs = lua_gettop(L);
   const lua_Integer n = luaL_len(L, dirs);
@@ -135,7 +136,7 @@ int lua_file_searcher(lua_State* L) {
     lua_geti(L, dirs, i);
     const char* dir = lua_tostring(L, -1);
     for (const char* pattern : {"%s/%s.lua", "%s/%s/init.lua"}) {
-      lua_pushfstring(L, pattern, dir, rel.c_str());
+      lua_pushfstring(L, pattern, dir, rel);
       const char* file = lua_tostring(L, -1);
       if (FILE* f = std::fopen(file, "r")) {
         std::fclose(f);
@@ -150,7 +151,7 @@ int lua_file_searcher(lua_State* L) {
     lua_pop(L, 1);
   }
   lua_pushfstring(L, "no file '%s.lua' in the allowed folders (scripts/, the script's folder)",
-                  rel.c_str());
+                  rel);
   return 1;
 }
 
@@ -186,7 +187,9 @@ void count_hook(lua_State* L, lua_Debug* ar) {
     lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);  // keep failing if a pcall catches it
     lua_sethook(vm.L_, count_hook, LUA_MASKCOUNT, 1);  // and in the main thread
     lua_getinfo(L, "Sl", ar);
-    luaL_error(L, "%s:%d: %s", ar->short_src, ar->currentline, limit_message(limit).c_str());
+    char msg[256];  // no C++ object may live across luaL_error's longjmp
+    std::snprintf(msg, sizeof msg, "%s", limit_message(limit).c_str());
+    luaL_error(L, "%s:%d: %s", ar->short_src, ar->currentline, msg);
   }
 }
 
@@ -194,7 +197,10 @@ void count_hook(lua_State* L, lua_Debug* ar) {
 // (upvalue 1); the new thread inherits the count hook.
 int counted_coroutine(lua_State* L) {
   Vm& vm = Vm::of(L);
-  if (const Status st = vm.charge(kHookEvery); !st.is_ok()) return luaL_error(L, "%s", st.message().c_str());
+  char msg[256] = "";  // no C++ object may live across luaL_error's longjmp
+  if (const Status st = vm.charge(kHookEvery); !st.is_ok())
+    std::snprintf(msg, sizeof msg, "%s", st.message().c_str());
+  if (msg[0]) return luaL_error(L, "%s", msg);
   lua_pushvalue(L, lua_upvalueindex(1));
   lua_insert(L, 1);
   lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
