@@ -92,14 +92,14 @@ else echo "FAIL seeded random: '$a' / '$b' / '$c'"; fails=$((fails + 1)); fi
 # Ctrl-C during training: checkpoint saved, exit 130, --resume gives the
 # parameters of an uninterrupted run.
 sig=$(mktemp -d)
-"$sq" train scenarios/horizontal_cr.lua --out "$sig/a" --episodes 40000 --eval-every 0 --eval-episodes 20 >"$sig/a.log" 2>&1 &
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/a" --episodes 4000 --eval-every 500 --eval-episodes 20 >"$sig/a.log" 2>&1 &
 tpid=$!
-sleep 2
+for _ in $(seq 600); do [ -f "$sig/a/checkpoint.ckpt" ] && break; sleep 0.1; done  # after the first evaluation
 kill -INT "$tpid"
 wait "$tpid"
 trc=$?
-"$sq" train scenarios/horizontal_cr.lua --out "$sig/a" --episodes 40000 --eval-every 0 --eval-episodes 20 --resume >/dev/null 2>&1
-"$sq" train scenarios/horizontal_cr.lua --out "$sig/b" --episodes 40000 --eval-every 0 --eval-episodes 20 >/dev/null 2>&1
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/a" --episodes 4000 --eval-every 500 --eval-episodes 20 --resume >/dev/null 2>&1
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/b" --episodes 4000 --eval-every 500 --eval-episodes 20 >/dev/null 2>&1
 if [ "$trc" -eq 130 ] && grep -q "interrupted:" "$sig/a.log" &&
    cmp -s <(tail -n +3 "$sig/a/policy.ckpt") <(tail -n +3 "$sig/b/policy.ckpt"); then
   echo "ok   train SIGINT + resume"; pass=$((pass + 1))
