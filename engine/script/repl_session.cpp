@@ -9,38 +9,17 @@ namespace {
 constexpr const char* kSessionKey = "squawk.repl.session";  // registry slot
 constexpr const char* kModule = "translate.repl";
 
-int traceback(lua_State* L) {
-  const char* msg = lua_tostring(L, 1);
-  luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
-  return 1;
-}
-
-// pcall of the function below `nargs` arguments, with a traceback; on error
-// the stack is back to `base` and the message is returned.
-Status pcall(lua_State* L, int nargs, int nresults) {
-  const int fn = lua_gettop(L) - nargs;
-  lua_pushcfunction(L, traceback);
-  lua_insert(L, fn);
-  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
-  const int rc = lua_pcall(L, nargs, nresults, fn);
-  lua_remove(L, fn);
-  if (rc == LUA_OK) return Status::ok();
-  std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
-  lua_pop(L, 1);
-  return Status::invalid(msg);
-}
-
 }  // namespace
 
-Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const std::string& mode,
-                                      double clock) {
+Status push_new_session(Vm& vm, const char* module, const std::string& scenario, const std::string& mode,
+                        double clock) {
   lua_State* L = vm.state();
   const int top = lua_gettop(L);
   lua_getglobal(L, "require");
-  lua_pushstring(L, kModule);
-  SQUAWK_RETURN_IF_ERROR(pcall(L, 1, 1));
+  lua_pushstring(L, module);
+  SQUAWK_RETURN_IF_ERROR(vm.pcall(1, 1));
   lua_getfield(L, -1, "new");
-  lua_createtable(L, 0, 2);
+  lua_createtable(L, 0, 4);
   if (!scenario.empty()) {
     lua_pushstring(L, scenario.c_str());
     lua_setfield(L, -2, "scenario");
@@ -55,11 +34,20 @@ Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const
     lua_pushnumber(L, clock);
     lua_setfield(L, -2, "clock");
   }
-  Status st = pcall(L, 1, 1);
+  Status st = vm.pcall(1, 1);
   if (!st.is_ok()) {
     lua_settop(L, top);
     return st;
   }
+  lua_remove(L, -2);  // the module
+  return Status::ok();
+}
+
+Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const std::string& mode,
+                                      double clock) {
+  lua_State* L = vm.state();
+  const int top = lua_gettop(L);
+  SQUAWK_RETURN_IF_ERROR(push_new_session(vm, kModule, scenario, mode, clock));
   lua_setfield(L, LUA_REGISTRYINDEX, kSessionKey);
   lua_settop(L, top);
   return ReplSession(vm);
@@ -71,7 +59,7 @@ Status ReplSession::call(const char* method, int nargs, int nresults) {
   lua_getfield(L, -1, method);
   lua_insert(L, -2);                  // method, session
   lua_rotate(L, -2 - nargs, 2);       // method, session, args...
-  return pcall(L, nargs + 1, nresults);
+  return vm_->pcall(nargs + 1, nresults);
 }
 
 Result<ReplReply> ReplSession::handle(const std::string& line) {

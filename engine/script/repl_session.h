@@ -24,6 +24,12 @@ struct ReplReply {
   bool quit = false;
 };
 
+// Pushes `module`.new{scenario, mode, seed = vm's seed, clock} (fields left
+// out when empty / 0): the session object of translate.repl or
+// translate.session. On error the stack is as it was.
+Status push_new_session(Vm& vm, const char* module, const std::string& scenario, const std::string& mode,
+                        double clock = 0.0);
+
 class ReplSession {
  public:
   static Result<ReplSession> open(Vm& vm, const std::string& scenario, const std::string& mode,

@@ -3,6 +3,7 @@
 #include <lua.hpp>
 
 #include "script/lua_util.h"
+#include "script/repl_session.h"
 
 namespace squawk::script {
 
@@ -11,19 +12,6 @@ namespace {
 constexpr const char* kSessionKey = "squawk.serve.session";  // registry slot
 constexpr const char* kModule = "translate.session";
 constexpr const char* kSimMetatable = "squawk.sim.Sim";  // bind_sim.cpp's class
-
-// lua_pcall with a traceback; on error the message is popped and returned.
-Status pcall(lua_State* L, int nargs, int nresults) {
-  const int fn = lua_gettop(L) - nargs;
-  lua_pushcfunction(L, traceback_handler);
-  lua_insert(L, fn);
-  const int rc = lua_pcall(L, nargs, nresults, fn);
-  lua_remove(L, fn);
-  if (rc == LUA_OK) return Status::ok();
-  std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
-  lua_pop(L, 1);
-  return Status::invalid(msg);
-}
 
 std::string string_field(lua_State* L, int idx, const char* key) {
   lua_getfield(L, idx, key);
@@ -65,11 +53,11 @@ Result<std::string> format_trace(lua_State* L, int idx) {
   if (!lua_istable(L, idx)) return std::string();
   lua_getglobal(L, "require");
   lua_pushstring(L, "translate.graph");
-  SQUAWK_RETURN_IF_ERROR(pcall(L, 1, 1));
+  SQUAWK_RETURN_IF_ERROR(Vm::of(L).pcall(1, 1));
   lua_getfield(L, -1, "format_trace");
   lua_remove(L, -2);
   lua_pushvalue(L, idx);
-  SQUAWK_RETURN_IF_ERROR(pcall(L, 1, 1));
+  SQUAWK_RETURN_IF_ERROR(Vm::of(L).pcall(1, 1));
   std::string out = lua_tostring(L, -1) ? lua_tostring(L, -1) : "";
   lua_pop(L, 1);
   return out;
@@ -81,28 +69,7 @@ Result<std::unique_ptr<ServeSession>> ServeSession::open(Vm& vm, const std::stri
                                                          const std::string& mode) {
   lua_State* L = vm.state();
   const int top = lua_gettop(L);
-  lua_getglobal(L, "require");
-  lua_pushstring(L, kModule);
-  Status st = pcall(L, 1, 1);
-  if (st.is_ok()) {
-    lua_getfield(L, -1, "new");
-    lua_createtable(L, 0, 3);
-    if (!scenario.empty()) {
-      lua_pushstring(L, scenario.c_str());
-      lua_setfield(L, -2, "scenario");
-    }
-    if (!mode.empty()) {
-      lua_pushstring(L, mode.c_str());
-      lua_setfield(L, -2, "mode");
-    }
-    lua_pushinteger(L, static_cast<lua_Integer>(vm.options().seed));
-    lua_setfield(L, -2, "seed");
-    st = pcall(L, 1, 1);
-  }
-  if (!st.is_ok()) {
-    lua_settop(L, top);
-    return st;
-  }
+  SQUAWK_RETURN_IF_ERROR(push_new_session(vm, kModule, scenario, mode));
   lua_getfield(L, -1, "sim");
   ObjectHeader* h = test_header(L, -1, kSimMetatable);
   command::Stack* stack = h && h->alive ? &reinterpret_cast<ObjectBox<command::Stack>*>(h)->value : nullptr;
@@ -129,7 +96,7 @@ Result<CommandReply> ServeSession::command(const std::string& text) {
   lua_getfield(L, -1, "command");
   lua_insert(L, -2);  // method, session
   lua_pushlstring(L, text.data(), text.size());
-  Status st = pcall(L, 2, 1);
+  Status st = Vm::of(L).pcall(2, 1);
   if (st.is_ok() && !lua_istable(L, -1)) st = Status::internal(std::string(kModule) + ": command() returned no table");
   if (!st.is_ok()) {
     lua_settop(L, top);
@@ -197,7 +164,7 @@ Result<std::vector<SessionEvent>> ServeSession::tick(double wall_s) {
   lua_getfield(L, -1, "tick");
   lua_insert(L, -2);
   lua_pushnumber(L, wall_s);
-  Status st = pcall(L, 2, 1);
+  Status st = Vm::of(L).pcall(2, 1);
   if (!st.is_ok()) {
     lua_settop(L, top);
     return st;

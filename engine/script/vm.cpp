@@ -357,13 +357,13 @@ void Vm::open_sandbox() {
   lua_setfield(L, LUA_REGISTRYINDEX, "squawk.require_dirs");
 }
 
-Status Vm::call_protected(int nargs) {
+Status Vm::pcall(int nargs, int nresults) {
   const Call call(*this);
   lua_State* L = L_;
   const int base = lua_gettop(L) - nargs;
   lua_pushcfunction(L, traceback_handler);
   lua_insert(L, base);
-  const int rc = lua_pcall(L, nargs, 0, base);
+  const int rc = lua_pcall(L, nargs, nresults, base);
   lua_remove(L, base);
   if (rc == LUA_OK) return Status::ok();
   std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
@@ -377,7 +377,7 @@ Status Vm::run_string(const std::string& code, const std::string& chunkname) {
     lua_pop(L_, 1);
     return Status::invalid(msg);
   }
-  return call_protected(0);
+  return pcall(0, 0);
 }
 
 Status Vm::load_table(const std::string& path, const std::string& key) {
@@ -435,7 +435,7 @@ Status Vm::run_file(const std::string& path, const std::vector<std::string>& arg
     return Status::invalid(msg);
   }
   for (const auto& a : args) lua_pushstring(L, a.c_str());  // also as `...`
-  return call_protected(static_cast<int>(args.size()));
+  return pcall(static_cast<int>(args.size()), 0);
 }
 
 }  // namespace squawk::script

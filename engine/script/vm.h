@@ -68,6 +68,11 @@ class Vm {
 
   // Runs a Lua file; `args` become the global `arg` (arg[0] = path).
   Status run_file(const std::string& path, const std::vector<std::string>& args = {});
+  // Calls the function below the top `nargs` values with a traceback handler
+  // and a fresh instruction budget (Call); `nresults` results stay on the
+  // stack. On error the function and arguments are gone and the message,
+  // with its traceback, comes back as kInvalidArgument.
+  Status pcall(int nargs, int nresults);
   // Runs Lua source text under `chunkname` (shown in error messages).
   Status run_string(const std::string& code, const std::string& chunkname);
   // Runs a Lua file that returns a table (a prompt, template or config file)
@@ -107,7 +112,6 @@ class Vm {
 
  private:
   void open_sandbox();
-  Status call_protected(int nargs);  // calls the function on top of the stack
 
   VmOptions options_;
   Rng rng_;
