@@ -292,7 +292,14 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     }
     while (i < t.size() && t[i].kind == TokKind::kPunct && t[i].text == ",") ++i;
     Suffix suf = read_suffix(t, i, used, names);
-    if (!suf.groups.empty()) {
+    // Digits followed by a unit are a quantity ("fast forward 2 minutes"), not a callsign.
+    auto unit_after = [&](size_t e) {
+      static const char* kUnits[] = {"s", "sec", "secs", "second", "seconds", "min", "mins", "minute", "minutes",
+                                     "h", "hour", "hours", "x", "times", "percent", "%"};
+      return e < t.size() && is_word(t[e]) &&
+             std::any_of(std::begin(kUnits), std::end(kUnits), [&](const char* u) { return t[e].text == u; });
+    };
+    if (!suf.groups.empty() && !unit_after(suf.ends.back())) {
       CallsignMatch m = match_world("", words, suf, fleet, names);
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
       double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;

@@ -198,3 +198,12 @@ do
   check_eq(t.failed, 0)
   check_eq(#t.first_failures, 0)
 end
+
+-- "fast forward 2 minutes" with traffic whose callsign ends in 2: a time, not DLH2.
+do
+  local r = repl.new({ mode = "offline" })
+  r:handle("!CRE DLH2 A320 52 4.8 270 FL300 280")
+  local text = r:handle("fast forward 2 minutes")
+  check(find(text, "> FF 120"), text)
+  check(find(text, "fast-forwarded 120 s"), text)
+end
