@@ -381,6 +381,7 @@ void Stack::reset() {
   user_wpts_.clear();
   dtmult_ = 1.0;
   noise_ = false;
+  trails_ = Trails();
 }
 
 void Stack::set_seed(uint64_t seed) {
@@ -437,6 +438,13 @@ std::string Stack::snapshot() const {
   b::put<uint64_t>(out, seed_);
   b::put<double>(out, dtmult_);
   b::put<uint8_t>(out, noise_ ? 1 : 0);
+  b::put<uint8_t>(out, trails_.on ? 1 : 0);
+  b::put<double>(out, trails_.dt);
+  b::put<int64_t>(out, static_cast<int64_t>(trails_.colour.size()));
+  for (const auto& [acid, colour] : trails_.colour) {
+    b::put_str(out, acid);
+    b::put_str(out, colour);
+  }
   b::put_str(out, base_dir_);
   return out;
 }
