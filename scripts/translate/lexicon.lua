@@ -103,6 +103,8 @@ return {
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
   },
+  -- the colours TRAIL acid accepts
+  trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- units that make an altitude a level in feet

@@ -59,6 +59,7 @@ return function(intent, rule, words)
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
+  intent "trail" { cmd = "TRAIL", args = { "acid", "ON", "OFF" }, handler = "trail" }
 
   -- an instruction announced with "expect" is no clearance
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
@@ -189,6 +190,9 @@ return function(intent, rule, words)
   rule { "lookahead dtlook", "dtlook" }
   rule { "turbulence noise", "noise" }
 
+  -- the radar display
+  rule { "trail trails", "trail" }
+
   -- The words people use for each command, beyond the rule words above:
   -- retrieval documents for the LLM modes (grammar.documents()).
   words "CRE" "add, create, spawn, insert or put a new aircraft or flight of a type (Boeing, Airbus) at a position with heading, altitude and speed"
@@ -214,5 +218,6 @@ return function(intent, rule, words)
   words "ATALT" "when or once an aircraft reaches, passes or gets to an altitude or flight level, then do a command"
   words "ATSPD" "when or once an aircraft reaches, slows to or accelerates to a speed, then do a command"
   words "ATDIST" "when or once an aircraft is within a distance in nautical miles of a point, then do a command"
+  words "TRAIL" "show, hide, enable or disable aircraft trails, the history or track of where aircraft have been on the radar; trail colour blue, red or yellow"
   words "ECHO" "print, show or display a message or text"
 end

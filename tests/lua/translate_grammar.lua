@@ -125,6 +125,16 @@ do -- waypoints are matched by sound
   check_eq(tr("Air Canada three twenty six proceed direct", w), "DIRECT ACA326 GAYEL")
 end
 
+do -- the display's trails: on/off with the point interval, a colour per aircraft
+  local w = { aircraft = { plane("KLM123", 90, 25000, 280) } }
+  check_eq(tr("Show aircraft trails"), "TRAIL ON")
+  check_eq(tr("Hide the trails"), "TRAIL OFF")
+  check_eq(tr("turn on trails every 5 seconds"), "TRAIL ON 5")
+  check_eq(tr("Go back to real time and turn the trails off"), "OP ; TRAIL OFF")
+  check_eq(tr("show the trail of KLM123 in red", w), "TRAIL KLM123 RED")
+  check(asks("make the trail yellow"), "a colour needs an aircraft")
+end
+
 do -- bad input never crashes and gets a question
   for _, s in ipairs({ "", " .. ", ";;;", "\"", "\xC2\xB0\xC2\xB0", "FL", "M.", "N", "one hundred thousand thousand",
                         "direct direct direct", "12,", "AC01'", "-", "\xff\xfe" }) do
