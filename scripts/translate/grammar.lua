@@ -301,7 +301,7 @@ function G:segments(b, e)
         merged = true  -- "make a new ...": one request
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
-          and #self:quantities(last.trig, tr.pos) == 0
+          and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
         if (last.intent == tr.intent or alt_pair) and not this.single then
           if tr.intent == "alt" then last.intent = "alt" end
           merged = true

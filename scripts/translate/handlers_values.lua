@@ -44,7 +44,9 @@ return function(H, f, wrap, compass)
         if q.kind == "heading" then return self:heading(s) end
         if q.kind == "plain" then
           -- "maintain two five zero" is a speed; "maintain four thousand" an altitude.
-          if q.value >= 100 and q.value <= 400 and not q.number.thousand and not q.number.hundred then
+          -- so is a value with knots said further on ("maintain two one, uh, knots")
+          if (q.value >= 100 and q.value <= 400 or self:followed_by(q.e - 1, 2, "@speed_units"))
+              and not q.number.thousand and not q.number.hundred then
             return self:speed(s)
           end
           return self:altitude(s)
@@ -127,7 +129,8 @@ return function(H, f, wrap, compass)
       if not ref then return self:need("What is the altitude of " .. others[#others].name .. "?") end
       return self:emit("ALT " .. ids[1] .. " " .. f.int((ref.alt_ft or 0) + (above and ft or -ft)))
     end
-    local relative = q.by or self:word_in(s.b, s.e, "@relative")
+    -- ("by" before the instruction belongs to something else: "time by departure, climb ...")
+    local relative = q.by or self:word_in(s.trig, s.e, "@relative")
     if not relative and now and not q.to and not fl and dir ~= 0 then
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then
@@ -256,7 +259,10 @@ return function(H, f, wrap, compass)
       local n = abs.number
       -- headings are said as three digits; two ("two five") lost their final zero, unless
       -- they end in zero themselves ("three zero": 030 or 300?) or one was said
-      if not n.typed and n.lead_digit and H.cut_off(n) then
+      -- "heading to niner zero": two digits after "to" are a heading only with "to" as "two"
+      if not n.typed and n.groups == 2 and #n.digits == 2 and self:word(abs.b - 1, "@two_heard") then
+        hdg = 200 + hdg
+      elseif not n.typed and n.lead_digit and H.cut_off(n) then
         return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
       end
       if not n.typed and n.lead_digit and n.groups == 2 and hdg < 40 then hdg = hdg * 10 end

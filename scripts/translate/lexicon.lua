@@ -103,6 +103,10 @@ return {
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
   },
+  -- words speech recognition writes for a spoken "two" before digits
+  two_heard = { "to", "too" },
+  -- speed units that may stand apart from their number ("two one zero, knots")
+  speed_units = { "knots", "knot", "kts", "kt" },
   -- the colours TRAIL acid accepts
   trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words
