@@ -25,10 +25,15 @@ struct Suffix {
 
 bool is_word(const Token& t) { return t.kind == TokKind::kWord; }
 
-Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used, const Tables& names) {
+// Reads the digits and letters of a callsign from token j on. `restart`: the
+// first word of the airline just said; said again, it starts the callsign over
+// ("Delta sixty, Delta six forty six") and ends this one.
+Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used, const Tables& names,
+                   const std::string& restart = "") {
   Suffix s;
   while (j < t.size() && !used[j] && s.groups.size() < 8) {
     const Token& k = t[j];
+    if (!restart.empty() && is_word(k) && k.text == restart) break;
     if (k.kind == TokKind::kNumber) {
       if (k.spelled || k.num < 0 || k.num >= 1e6 || k.num != static_cast<long long>(k.num)) break;
       s.groups.push_back(k.raw.find(',') == std::string::npos ? k.raw : std::to_string(static_cast<long long>(k.num)));
@@ -239,7 +244,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       if (!ok) continue;
       auto icao = names.airline_by_telephony(phrase);
       if (!icao) continue;
-      Suffix suf = read_suffix(t, i + len, used, names);
+      Suffix suf = read_suffix(t, i + len, used, names, t[i].text);
       if (suf.groups.empty() || names.phonetic_letter(t[i + len].text) != 0) break;
       std::string id = *icao + text::upper(suf.joined(suf.groups.size()));
       size_t end = suf.ends.back();

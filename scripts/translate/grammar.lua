@@ -430,6 +430,7 @@ function M.translate(text, world)
   local u = squawk.translate.utterance(text, world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {} }, G)
+  g:settle_callsigns()
   local cond, rest = g:condition()
   if not g.ask then
     g:parse(rest, #g.t + 1)

@@ -93,7 +93,7 @@ function m:acids(s)
   for _, r in ipairs(self.refs) do if r.kind == "aircraft" and r.exists then any_known = true end end
   local function take(b, e)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
-      if (r.exists or not any_known) and not seen[r.name] then
+      if (r.exists or not any_known) and not seen[r.name] and not r.false_start then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -113,13 +113,77 @@ function m:acids(s)
   return ids
 end
 
+-- Airline letters and flight digits of a callsign ("BAW96CA" -> "BAW", "96").
+local function airline_digits(id) return (id or ""):match("^(%a*)(%d*)") end
+
+-- The first position at or after i that is not a filler, a comma or (with
+-- corrections) a correction word.
+function m:skip_fillers(i, corrections)
+  while self.t[i] and (self.t[i].kind == "punct" or self.t[i].filler
+      or (corrections and self:word(i, "@correction"))) do
+    i = i + 1
+  end
+  return i
+end
+
+-- Callsigns the speaker restarted or corrected, settled once per request:
+--  * "Brickyard eleven correction fourteen eleven": digits after a correction
+--    replace the callsign's digits (the airline kept) when that names an
+--    aircraft exactly;
+--  * "Delta sixty, Delta six forty six" / "Lufthansa thirty one correction
+--    Lufthansa forty one thirty": a callsign said again straight after
+--    itself was a false start (r.false_start); the later one counts.
+function m:settle_callsigns()
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.heard then
+      local k = self:skip_fillers(r.e, false)
+      if self:word(k, "@correction") then
+        local q = self:quantities(self:skip_fillers(k, true), #self.t + 1)[1]
+        local airline = (r.heard.id or ""):match("^%a+")
+        if q and q.b == self:skip_fillers(k, true) and q.kind == "plain" and airline then
+          local id = airline .. q.number.digits
+          if self:state(id) then
+            r.name, r.heard, r.e = self:state(id).id, nil, q.e
+            self:mark_used(q.b, q.e)
+          end
+        end
+      end
+    end
+  end
+  -- (only an inexactly heard one: "AC01, AC02 climb" names two aircraft)
+  for k, r in ipairs(self.refs) do
+    local nxt = self.refs[k + 1]
+    if r.kind == "aircraft" and r.heard and nxt and nxt.kind == "aircraft" and self:skip_fillers(r.e, true) == nxt.b
+        and (self:word_in(r.e, nxt.b, "@correction") or airline_digits(r.heard.id) == airline_digits(nxt.name)) then
+      r.false_start = true
+    end
+  end
+end
+
+-- True when the heard callsign's airline and digits are those of exactly one
+-- aircraft, which is `name` (only letters after the digits were missed:
+-- "speedbird nine six" for BAW96CA).
+function m:airline_and_digits_match(heard, name)
+  local a, d = airline_digits(heard)
+  if a == "" or d == "" then return false end
+  local n = 0
+  for _, ac in ipairs(self.fleet) do
+    local a2, d2 = airline_digits(ac.id)
+    if a2 == a and d2 == d then n = n + 1 end
+  end
+  local a3, d3 = airline_digits(name)
+  return n == 1 and a3 == a and d3 == d
+end
+
 -- A spoken callsign matched to an aircraft whose airline or digits differ
 -- from what was heard is asked about, unless the speaker confirmed it.
 function m:confirm_callsigns(s)
   local c = L.callsign_confirm
   for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
     local h = r.heard
-    if h and not (self.world.confirmed or {})[r.name] and (h.airline < c.airline or h.digits < c.digits) then
+    if h and not r.false_start and not (self.world.confirmed or {})[r.name]
+        and not self:airline_and_digits_match(h.id, r.name)
+        and (h.airline < c.airline or h.digits < c.digits) then
       self.confirm = self.confirm or { id = r.name, heard = h.id }
       self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
     end
