@@ -295,6 +295,15 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       words += t[i].text;
       ++i;
     }
+    // Letters of the phonetic alphabet between the airline and the digits are
+    // part of the garbled airline ("Land Juliett six ninety three").
+    size_t letters_end = i;
+    while (letters_end < t.size() && letters_end - words_begin < 4 && is_word(t[letters_end]) && !used[letters_end] &&
+           names.phonetic_letter(t[letters_end].text) != 0)
+      ++letters_end;
+    if (letters_end > i && i > words_begin && read_suffix(t, i, used, names).groups.empty()) {
+      for (; i < letters_end; ++i) words += t[i].text;
+    }
     while (i < t.size() && t[i].kind == TokKind::kPunct && t[i].text == ",") ++i;
     Suffix suf = read_suffix(t, i, used, names);
     // Digits followed by a unit are a quantity ("fast forward 2 minutes"), not a callsign.

@@ -246,6 +246,7 @@ function m:at_altitude(s)
   if q.kind ~= "alt" and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then return nil end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
+  self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end
 
