@@ -220,6 +220,23 @@ function m:repaired(q, value, lo, hi, step)
   return nil
 end
 
+-- A spoken altitude that is not whole hundreds of feet ("two thousand seven
+-- hundred ten"), re-read from the longest, leftmost run of its words that is
+-- (2700; "one three" = 13 thousand, as "maintain niner"); nil when none is.
+function m:whole_hundreds(q)
+  local n = q.number
+  for len = n.e - n.b - 1, 1, -1 do
+    for b = n.b, n.e - len do
+      local r = self.u:number(b, b + len)
+      if r and r.thousand == n.thousand and r.value > 0 then
+        local ft = r.value < 100 and r.value * 1000 or r.value
+        if ft % 100 == 0 and ft <= 60000 then return ft end
+      end
+    end
+  end
+  return nil
+end
+
 -- Which candidate counts: after "correction" the first one after it; when
 -- the instruction word is repeated, the last; else the first.
 function m:pick(c, s, repeated)

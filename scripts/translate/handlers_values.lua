@@ -120,6 +120,12 @@ return function(H, f, wrap, compass)
       if not r then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(ft) .. " ft.") end
       if r < 100 and not q.number.typed then r = r * 1000 end
       ft = r
+      -- cleared altitudes are whole hundreds of feet: a spoken 2710 has a
+      -- misheard word; the longest run of its words that is one counts
+      if not q.number.typed and ft % 100 ~= 0 then
+        ft = self:whole_hundreds(q)
+        if not ft then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(r) .. " ft.") end
+      end
     end
     -- Relative: "by 2000 ft", "1000 ft from its present altitude", "1000 feet below AC01".
     local others = self:refs_in(s.b, s.e, "aircraft")
