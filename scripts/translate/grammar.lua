@@ -316,8 +316,30 @@ function G:segments(b, e)
   return segs
 end
 
+-- "turn EZY45 to 010 and AFR1234 to 200": an aircraft named after a value
+-- instruction's value, with a value of its own after it, gets the same
+-- instruction with that value (a segment of its own).
+function G:split_ellipsis(segs)
+  local out = {}
+  for _, s in ipairs(segs) do
+    local cur, e = s, s.e
+    out[#out + 1] = cur
+    local qs = (M.intents[s.intent] or {}).value and self:quantities(s.trig, e) or {}
+    if #qs >= 2 then
+      for _, r in ipairs(self:refs_in(qs[1].e, e, "aircraft")) do
+        if qs[#qs].b >= r.e then
+          cur.e = r.b
+          cur = { intent = s.intent, b = r.b, trig = r.b, e = e }
+          out[#out + 1] = cur
+        end
+      end
+    end
+  end
+  return out
+end
+
 function G:parse(b, e)
-  local segs = self:segments(b, e)
+  local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
   self:orphan_heading(segs[1])
   for k, s in ipairs(segs) do
