@@ -49,6 +49,13 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       break;
     }
     if (is_number_word(k)) {
+      // "eight in eighty two" is how speech recognition writes "eighteen eighty two".
+      const int d = digit_word(k.text);
+      if (d >= 3 && j + 2 < t.size() && is_word(t[j + 1]) && t[j + 1].text == "in" && is_number_word(t[j + 2])) {
+        s.groups.push_back("1" + std::to_string(d));
+        s.ends.push_back(j += 2);
+        continue;
+      }
       // One spoken group: a digit, a teen, or a tens word with its unit digit.
       size_t e = j + 1;
       if (j + 1 < t.size() && digit_word(t[j + 1].text) > 0 && digit_word(k.text) < 0 && k.text.ends_with("ty")) e = j + 2;

@@ -54,6 +54,11 @@ end
 
 -- ---- values ----
 
+-- "zero niner zero": three spoken digits, the first a zero, up to 360.
+function H.zero_led_heading(q)
+  local n = q.number
+  return not n.typed and n.groups == 3 and #n.digits == 3 and n.digits:sub(1, 1) == "0" and q.value <= 360
+end
 -- A value said digit by digit that lost digits beyond repair: one digit, or
 -- two ending in zero ("one zero knots": 100 or 210?). Two others ("two
 -- five") lost their final zero and read times ten; "zero nine" is 090.
@@ -273,7 +278,7 @@ function m:leftovers(s)
   if s.intent ~= "hdg" and s.intent ~= "alt" and s.intent ~= "spd" then return end
   local ids = self:acids(s)
   if #ids ~= 1 then return end
-  local alt_done, spd_done = s.intent == "alt", s.intent == "spd"
+  local alt_done, spd_done, hdg_done = s.intent == "alt", s.intent == "spd", false
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     if q.b > s.trig then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
@@ -282,6 +287,10 @@ function m:leftovers(s)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
         self:emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
         spd_done = true
+      elseif s.intent ~= "hdg" and not hdg_done and q.kind == "plain" and H.zero_led_heading(q) then
+        -- three spoken digits led by zero are a heading: no level or speed is said so
+        self:emit("HDG " .. ids[1] .. " " .. f.num(q.value))
+        hdg_done = true
       end
     end
   end
