@@ -56,6 +56,15 @@ void fold_digit_homophones(std::vector<Token>& t) {
                                                    {"once", "one"}, {"ones", "one"}, {"for", "four"},
                                                    {"ate", "eight"}, {"fine", "five"}}};
   auto digit = [&](size_t i) { return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0; };
+  for (size_t i = 1; i + 1 < t.size();) {
+    const std::string& r = t[i].raw;
+    const bool noise = t[i].kind == TokKind::kWord && r.size() == 1 && r[0] >= 'b' && r[0] <= 'z' && r != "i";
+    if (noise && digit(i - 1) && digit(i + 1)) {
+      t.erase(t.begin() + static_cast<long>(i));
+    } else {
+      ++i;
+    }
+  }
   for (size_t i = 1; i < t.size(); ++i) {
     if (t[i].kind != TokKind::kWord || !digit(i - 1)) continue;
     for (const auto& h : kHeard) {

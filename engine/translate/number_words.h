@@ -38,7 +38,9 @@ struct SpokenNumber {
 // Speech recognition writes digits as words that sound alike: between two
 // digit words, "to"/"too" is two, "on"/"won"/"once"/"ones" one, "for" four,
 // "ate" eight, "fine" five ("two on zero" = 210); "fine" also after two digits
-// ("three three fine" = 335). Rewrites those tokens' text in place.
+// ("three three fine" = 335). Rewrites those tokens' text in place. A lone
+// lower-case letter between two digit words ("three f four zero", "six d
+// four") is noise and is removed.
 void fold_digit_homophones(std::vector<Token>& toks);
 
 // Value 0-9 of a digit word ("niner" = 9, "fife" = 5), or -1.
