@@ -44,8 +44,10 @@ return function(H, f, wrap, compass)
         if q.kind == "heading" then return self:heading(s) end
         if q.kind == "plain" then
           -- "maintain two five zero" is a speed; "maintain four thousand" an altitude.
-          -- so is a value with knots said further on ("maintain two one, uh, knots")
-          if (q.value >= 100 and q.value <= 400 or self:followed_by(q.e - 1, 2, "@speed_units"))
+          -- so is a value with knots one word further on ("maintain two one, uh, turn knots")
+          local k = self:skip_fillers(q.e)
+          if (q.value >= 100 and q.value <= 400 or self:word(k, "@speed_units")
+                or self:word(self:skip_fillers(k + 1), "@speed_units"))
               and not q.number.thousand and not q.number.hundred then
             return self:speed(s)
           end

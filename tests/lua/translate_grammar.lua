@@ -125,6 +125,47 @@ do -- waypoints are matched by sound
   check_eq(tr("Air Canada three twenty six proceed direct", w), "DIRECT ACA326 GAYEL")
 end
 
+do -- callsigns restarted, corrected or heard without their letters
+  local w = world_of("CRE DAL646 B738 40 -74 360 5000 250 ; CRE RPA1411 E170 40.5 -74 90 5000 250 ; "
+    .. "CRE DLH4130 A320 41 -74 90 5000 250 ; CRE BAW96CA A320 41 -73 90 5000 250 ; CRE DAL84 A320 41 -72 0 9000 250")
+  check_eq(tr("Delta Sixty Delta Six Forty Six maintain three thousand", w), "ALT DAL646 3000")
+  check_eq(tr("Brickyard Eleven correction fourteen eleven descend maintain three thousand", w), "ALT RPA1411 3000")
+  check_eq(tr("lufthansa thirty one correction lufthansa forty one thirty turn left heading two seven zero", w),
+    "HDG DLH4130 270")
+  check_eq(tr("speedbird nine six right heading zero nine zero", w), "HDG BAW96CA 90")
+  -- the digits differ: still a question, and a list of aircraft is no restart
+  check(asks("Delta Ninety Four maintain two one zero knots", w), "DAL94 is not DAL84")
+  check_eq(tr("DAL646 and DAL84 climb to FL300", w), "ALT DAL646 FL300 ; ALT DAL84 FL300")
+  check_eq(tr("Brickyard eight in eighty two descend and maintain five thousand",
+    world_of("CRE RPA1882 E170 40 -74 0 9000 250")), "ALT RPA1882 5000")
+end
+
+do -- values as speech recognition writes them
+  local w = world_of("CRE SWA5578 B738 40 -74 360 5000 250 ; CRE TAP9148 A320 41 -74 90 9000 250")
+  check_eq(tr("Southwest fifty five seventy eight turn left heading three f four zero", w), "HDG SWA5578 340")
+  check_eq(tr("Southwest fifty five seventy eight maintain one nine-year zero knots", w), "SPD SWA5578 190")
+  check_eq(tr("Southwest fifty five seventy eight reduce speed to two once", w), "SPD SWA5578 210")
+  check_eq(tr("Portugal 91-48 heavy at 5000 reduce speed to 21-0", w), "ATALT TAP9148 5000 SPD TAP9148 210")
+  check_eq(tr("Southwest fifty five seventy eight fly heading to niner zero", w), "HDG SWA5578 290")
+  check_eq(tr("Southwest fifty five seventy eight maintain two one, uh, turn knots", w), "SPD SWA5578 210")
+  check_eq(tr("Southwest fifty five seventy eight descend to disregard maintain one eighty knots", w), "SPD SWA5578 180")
+  check_eq(tr("Southwest fifty five seventy eight descend and maintain two thousand seven hundred ten", w),
+    "ALT SWA5578 2700")
+  check_eq(tr("Southwest fifty five seventy eight climb and maintain one three thousand, zero niner zero", w),
+    "ALT SWA5578 13000 ; HDG SWA5578 90")
+  check_eq(tr("Land Juliett fifty five seventy eight rioted in two seven zero",
+    world_of("CRE SWA5578 B738 40 -74 360 5000 250")), "HDG SWA5578 270")
+  check_eq(tr("Boeing 787-9"):find("DTMULT") , nil)
+end
+
+do -- one instruction for two aircraft, each with its own value; 'by' before the verb is not relative
+  local w = world_of("CRE EZY45 A320 51 2 45 FL280 290 ; CRE AFR1234 A321 49 2 180 FL350 300")
+  check_eq(tr("turn EZY45 to 010 and AFR1234 to 200", w), "HDG EZY45 10 ; HDG AFR1234 200")
+  check_eq(tr("EZY45 and AFR1234 climb to FL360", w), "ALT EZY45 FL360 ; ALT AFR1234 FL360")
+  check_eq(tr("EZY45 time by departure descend one two thousand", w), "ALT EZY45 12000")
+  check_eq(tr("EZY45 climb by 2000 feet", w), "ALT EZY45 30000")
+end
+
 do -- the display's trails: on/off with the point interval, a colour per aircraft
   local w = { aircraft = { plane("KLM123", 90, 25000, 280) } }
   check_eq(tr("Show aircraft trails"), "TRAIL ON")
