@@ -118,8 +118,9 @@ function m:acids(s)
   return ids
 end
 
--- Airline letters and flight digits of a callsign ("BAW96CA" -> "BAW", "96").
-local function airline_digits(id) return (id or ""):match("^(%a*)(%d*)") end
+-- Airline letters, flight digits and trailing letters of a callsign
+-- ("BAW96CA" -> "BAW", "96", "CA").
+local function airline_digits(id) return (id or ""):match("^(%a*)(%d*)(.*)$") end
 
 -- The first position at or after i that is not a filler, a comma or (with
 -- corrections) a correction word.
@@ -166,11 +167,11 @@ function m:settle_callsigns()
 end
 
 -- True when the heard callsign's airline and digits are those of exactly one
--- aircraft, which is `name` (only letters after the digits were missed:
--- "speedbird nine six" for BAW96CA).
+-- aircraft, which is `name`, and at most its last letters went unheard
+-- ("speedbird nine six" for BAW96CA; "two alpha charlie" is not DLH2AB).
 function m:airline_and_digits_match(heard, name)
   local a, d = airline_digits(heard)
-  if a == "" or d == "" then return false end
+  if a == "" or d == "" or self:letters_conflict(heard, name) then return false end
   local n = 0
   for _, ac in ipairs(self.fleet) do
     local a2, d2 = airline_digits(ac.id)
@@ -178,6 +179,14 @@ function m:airline_and_digits_match(heard, name)
   end
   local a3, d3 = airline_digits(name)
   return n == 1 and a3 == a and d3 == d
+end
+
+-- True when letters heard after the digits do not start the aircraft's
+-- ("two alpha charlie" for DLH2AB; "charlie" alone for N978CN fits).
+function m:letters_conflict(heard, name)
+  local _, _, rest = airline_digits(heard)
+  local _, _, rest2 = airline_digits(name)
+  return rest2:sub(1, #rest) ~= rest
 end
 
 -- A spoken callsign matched to an aircraft whose airline or digits differ
@@ -188,7 +197,7 @@ function m:confirm_callsigns(s)
     local h = r.heard
     if h and not r.false_start and not (self.world.confirmed or {})[r.name]
         and not self:airline_and_digits_match(h.id, r.name)
-        and (h.airline < c.airline or h.digits < c.digits) then
+        and (h.airline < c.airline or h.digits < c.digits or self:letters_conflict(h.id, r.name)) then
       self.confirm = self.confirm or { id = r.name, heard = h.id }
       self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
     end

@@ -135,6 +135,7 @@ do -- callsigns restarted, corrected or heard without their letters
   check_eq(tr("speedbird nine six right heading zero nine zero", w), "HDG BAW96CA 90")
   -- the digits differ: still a question, and a list of aircraft is no restart
   check(asks("Delta Ninety Four maintain two one zero knots", w), "DAL94 is not DAL84")
+  check(asks("speedbird nine six charlie bravo right heading zero nine zero", w), "BAW96CB is not BAW96CA")
   check_eq(tr("DAL646 and DAL84 climb to FL300", w), "ALT DAL646 FL300 ; ALT DAL84 FL300")
   check_eq(tr("Brickyard eight in eighty two descend and maintain five thousand",
     world_of("CRE RPA1882 E170 40 -74 0 9000 250")), "ALT RPA1882 5000")
