@@ -56,6 +56,11 @@ return function(H, f, wrap, compass)
       end
     end
     if self:word_in(s.trig, s.e, "heading") then return self:heading(s) end
+    -- "maintain present speed": the speed instruction that follows says it
+    if #qs == 0 and self:word(s.e, "speed spd airspeed") then
+      self:acids(s)  -- the aircraft it names is the speed instruction's subject
+      return
+    end
     -- "maintain present altitude": the current level, read from the traffic
     self:altitude(s)
   end
@@ -199,6 +204,11 @@ return function(H, f, wrap, compass)
       local src = self:state(refs[#refs].name)
       if not src then return self:need("What is the speed of " .. refs[#refs].name .. "?") end
       return self:emit("SPD " .. refs[1].name .. " " .. ((src.mach or 0) > 0 and f.mach(src.mach) or f.int(src.cas_kt or 0)))
+    end
+    -- "maintain present speed": the current speed, read from the traffic
+    local now = self:state(ids[1])
+    if not q and now and self:word_in(math.max(1, s.trig - 2), s.trig, "@present") then
+      return self:emit("SPD " .. ids[1] .. " " .. ((now.mach or 0) > 0 and f.mach(now.mach) or f.int(now.cas_kt or 0)))
     end
     if not q then return self:need("What speed should " .. ids[1] .. " fly? Please give knots or a Mach number.") end
     local dir = self:direction(s)

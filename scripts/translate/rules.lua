@@ -96,7 +96,7 @@ return function(intent, rule, words)
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn", "hdg" }
   rule { "left right", "hdg", when = function(g, i)
-    return g:number_at(i + 1) and not g:word(i + 2, "degrees degree") and not g:preceded_by(i, 2, "turn heading")
+    return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
   rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
@@ -147,7 +147,8 @@ return function(intent, rule, words)
   rule { "move reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
 
-  -- simulation control
+  -- simulation control ("hold present heading" is an instruction to keep a value)
+  rule { "hold", "maintain", near = { 2, "heading hdg altitude level speed present current" } }
   rule { "pause hold freeze", "hold" }
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }

@@ -165,6 +165,11 @@ do -- one instruction for two aircraft, each with its own value; 'by' before the
   check_eq(tr("EZY45 and AFR1234 climb to FL360", w), "ALT EZY45 FL360 ; ALT AFR1234 FL360")
   check_eq(tr("EZY45 time by departure descend one two thousand", w), "ALT EZY45 12000")
   check_eq(tr("EZY45 climb by 2000 feet", w), "ALT EZY45 30000")
+  -- keeping a value: "hold" with a value noun is no pause of the simulation
+  check_eq(tr("EZY45, hold present heading", w), "HDG EZY45 45")
+  check_eq(tr("EZY45 maintain present speed", w), "SPD EZY45 290")
+  check_eq(tr("hold the simulation", w), "HOLD")
+  check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15")
 end
 
 do -- the display's trails: on/off with the point interval, a colour per aircraft
