@@ -220,10 +220,14 @@ function m:repaired(q, value, lo, hi, step)
   if value >= lo and value <= hi then return value end
   local n = q.number
   if n.typed then return nil end
+  -- a run may not start inside a compound ("seventy six thousand" is not six thousand)
+  local function splits(b)
+    return b > n.b and self:word(b - 1, "@tens") and self.t[b].number_word and not self:word(b, "@tens")
+  end
   for _, round_only in ipairs({ true, false }) do
     for len = n.e - n.b - 1, 1, -1 do
       for b = n.b, n.e - len do
-        local r = self.u:number(b, b + len)
+        local r = not splits(b) and self.u:number(b, b + len)
         if r and r.thousand == n.thousand and r.value >= lo and r.value <= hi
             and (not round_only or r.value % step == 0) then
           return r.value

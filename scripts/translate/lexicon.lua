@@ -103,6 +103,8 @@ return {
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
   },
+  -- tens words, which join the unit digit after them into one number
+  tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits
   two_heard = { "to", "too" },
   -- speed units that may stand apart from their number ("two one zero, knots")
