@@ -52,9 +52,9 @@ void fold_digit_homophones(std::vector<Token>& t) {
     const char* heard;
     const char* digit;
   };
-  static const std::array<Homophone, 9> kHeard = {{{"to", "two"}, {"too", "two"}, {"on", "one"}, {"won", "one"},
-                                                   {"once", "one"}, {"ones", "one"}, {"for", "four"},
-                                                   {"ate", "eight"}, {"fine", "five"}}};
+  static const std::array<Homophone, 10> kHeard = {{{"to", "two"}, {"too", "two"}, {"on", "one"}, {"won", "one"},
+                                                    {"once", "one"}, {"ones", "one"}, {"for", "four"},
+                                                    {"ate", "eight"}, {"a", "eight"}, {"fine", "five"}}};
   auto digit = [&](size_t i) { return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0; };
   for (size_t i = 1; i + 1 < t.size();) {
     const std::string& r = t[i].raw;
@@ -74,7 +74,8 @@ void fold_digit_homophones(std::vector<Token>& t) {
       // and the one-words and "ate" closing the utterance ("speed two once")
       const bool last = i + 1 == t.size() || t[i + 1].kind == TokKind::kPunct;
       const bool closes = (t[i].text == "fine" && i >= 2 && digit(i - 2) && !digit(i + 1)) ||
-                          (last && t[i].text != "to" && t[i].text != "too" && t[i].text != "for" && t[i].text != "on");
+                          (last && (t[i].text == "won" || t[i].text == "once" || t[i].text == "ones" ||
+                                    t[i].text == "ate" || t[i].text == "fine"));
       if (digit(i + 1) || closes) t[i].text = h.digit;
     }
   }

@@ -157,6 +157,7 @@ do -- values as speech recognition writes them
   check_eq(tr("Land Juliett fifty five seventy eight rioted in two seven zero",
     world_of("CRE SWA5578 B738 40 -74 360 5000 250")), "HDG SWA5578 270")
   check_eq(tr("Boeing 787-9"):find("DTMULT"), nil)
+  check_eq(tr("Southwest fifty five seventy eight mark point six seven", w), "SPD SWA5578 M0.67")
   -- a stutter is repaired, a compound number is not cut ("seventy six thousand" is no 6000)
   check_eq(tr("Southwest fifty five seventy eight climb and maintain one four fourteen thousand", w), "ALT SWA5578 14000")
   check(asks("Southwest fifty five seventy eight climb and maintain seventy six thousand", w), "76000 ft is asked")

@@ -167,6 +167,7 @@ TEST_CASE("digit homophones between digits are digits") {
   CHECK(read("climb to two five zero") == "climb to two five zero");  // "to" before digits stays
   CHECK(read("two five zero for now") == "two five zero for now");    // "for" after digits stays
   CHECK(read("reduce speed to two once") == "reduce speed to two one");
+  CHECK(read("Frontier one A four") == "frontier one eight four");
   CHECK(read("two once more") == "two once more");                    // only at the end
   CHECK(read("speed two zero to") == "speed two zero to");            // "to" never closes
   // noise between spoken digits: a lone lower-case letter, a hyphen-glued word
