@@ -41,6 +41,15 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       continue;
     }
     if (!is_word(k)) break;
+    // One unknown word of four letters or more between spoken digits is
+    // recognition noise ("JetBlue eight tier thirteen").
+    if (!s.groups.empty() && k.text.size() >= 4 && !is_number_word(k) && j + 1 < t.size() &&
+        is_word(t[j + 1]) && is_number_word(t[j + 1]) && j > 0 && is_number_word(t[j - 1]) &&
+        !names.vocabulary().is_keyword(k.text) && !names.vocabulary().is_filler(k.text) &&
+        names.phonetic_letter(k.text) == 0 && !names.airline_by_telephony(k.text)) {
+      ++j;
+      continue;
+    }
     if (k.text == "hundred" || k.text == "thousand") {
       if (!s.groups.empty()) {
         s.groups.pop_back();

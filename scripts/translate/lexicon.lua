@@ -106,7 +106,7 @@ return {
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits
-  two_heard = { "to", "too" },
+  two_heard = { "to", "too", "t" },
   -- speed units that may stand apart from their number ("two one zero, knots")
   speed_units = { "knots", "knot", "kts", "kt" },
   -- the colours TRAIL acid accepts

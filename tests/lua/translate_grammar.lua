@@ -137,6 +137,8 @@ do -- callsigns restarted, corrected or heard without their letters
   check(asks("Delta Ninety Four maintain two one zero knots", w), "DAL94 is not DAL84")
   check(asks("speedbird nine six charlie bravo right heading zero nine zero", w), "BAW96CB is not BAW96CA")
   check_eq(tr("DAL646 and DAL84 climb to FL300", w), "ALT DAL646 FL300 ; ALT DAL84 FL300")
+  check_eq(tr("JetBlue eight tier thirteen speed two zero zero", world_of("CRE JBU813 A320 40 -74 0 9000 250")),
+    "SPD JBU813 200")
   check_eq(tr("Brickyard eight in eighty two descend and maintain five thousand",
     world_of("CRE RPA1882 E170 40 -74 0 9000 250")), "ALT RPA1882 5000")
 end
@@ -148,6 +150,7 @@ do -- values as speech recognition writes them
   check_eq(tr("Southwest fifty five seventy eight reduce speed to two once", w), "SPD SWA5578 210")
   check_eq(tr("Portugal 91-48 heavy at 5000 reduce speed to 21-0", w), "ATALT TAP9148 5000 SPD TAP9148 210")
   check_eq(tr("Southwest fifty five seventy eight fly heading to niner zero", w), "HDG SWA5578 290")
+  check_eq(tr("Southwest fifty five seventy eight fly heading T seven zero", w), "HDG SWA5578 270")
   check_eq(tr("Southwest fifty five seventy eight maintain two one, uh, turn knots", w), "SPD SWA5578 210")
   check_eq(tr("Southwest fifty five seventy eight descend to disregard maintain one eighty knots", w), "SPD SWA5578 180")
   check_eq(tr("Southwest fifty five seventy eight descend and maintain two thousand seven hundred ten", w),
