@@ -52,4 +52,4 @@ end
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
-floors("../shared/corpora/vice_trafscript.tsv", 0.90, 0.025)
+floors("../shared/corpora/vice_trafscript.tsv", 0.91, 0.025)
