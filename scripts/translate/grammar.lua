@@ -353,7 +353,10 @@ function G:parse(b, e)
     prev_out = #self.out
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.
-    if k > 1 and #self.out > 0 and self:word(s.trig, "@shown") and #self:quantities(s.b, s.e) == 0 then skip = true end
+    if k > 1 and #self.out > 0 and self.out[#self.out]:match("^POS ") and self:word(s.trig, "@shown")
+        and #self:quantities(s.b, s.e) == 0 then
+      skip = true
+    end
     if not skip then
       local before = self.last_cond
       self.last_cond = nil

@@ -147,8 +147,11 @@ return function(intent, rule, words)
   rule { "move reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
 
-  -- simulation control ("hold present heading" is an instruction to keep a value)
-  rule { "hold", "maintain", near = { 2, "heading hdg altitude level speed present current" } }
+  -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
+  -- (a holding pattern) is no pause of the simulation
+  rule { "hold", "maintain", near = { 2, "heading hdg altitude level speed" } }
+  rule { "hold", "hold", near = { 3, "@sim" } }
+  rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "pause hold freeze", "hold" }
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }

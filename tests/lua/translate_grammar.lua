@@ -176,6 +176,9 @@ do -- one instruction for two aircraft, each with its own value; 'by' before the
   check_eq(tr("EZY45, hold present heading", w), "HDG EZY45 45")
   check_eq(tr("EZY45 maintain present speed", w), "SPD EZY45 290")
   check_eq(tr("hold the simulation", w), "HOLD")
+  check(asks("EZY45 hold", w), "a holding pattern is not a pause of the simulation")
+  check(asks("EZY45 hold at present position", w), "nor a kept altitude")
+  check_eq(tr("hold the sim and EZY45 maintain present heading", w), "HOLD ; HDG EZY45 45")
   check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15")
 end
 
