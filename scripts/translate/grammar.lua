@@ -309,8 +309,16 @@ function G:segments(b, e)
       end
     end
     if not merged then
-      if last then last.e = tr.pos end
-      segs[#segs + 1] = { intent = tr.intent, b = last and tr.pos or b, trig = tr.pos, e = e, ["then"] = thn }
+      -- an aircraft named just before the instruction word is its subject, not
+      -- the previous instruction's ("EZY45 turn left 300 and AFR1234 descend")
+      local start = tr.pos
+      if last then
+        for _, r in ipairs(self:refs_in(last.trig + 1, tr.pos, "aircraft")) do
+          if self:skip_fillers(r.e) == tr.pos then start = r.b end
+        end
+        last.e = start
+      end
+      segs[#segs + 1] = { intent = tr.intent, b = last and start or b, trig = tr.pos, e = e, ["then"] = thn }
     end
   end
   return segs

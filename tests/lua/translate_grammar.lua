@@ -179,6 +179,9 @@ do -- one instruction for two aircraft, each with its own value; 'by' before the
   check(asks("EZY45 hold", w), "a holding pattern is not a pause of the simulation")
   check(asks("EZY45 hold at present position", w), "nor a kept altitude")
   check_eq(tr("hold the sim and EZY45 maintain present heading", w), "HOLD ; HDG EZY45 45")
+  -- an aircraft named just before an instruction word is that instruction's
+  check_eq(tr("EZY45 turn left heading 300 and AFR1234 descend FL200", w), "HDG EZY45 300 ; ALT AFR1234 FL200")
+  check_eq(tr("pause the simulation and EZY45 turn left heading 300", w), "HOLD ; HDG EZY45 300")
   check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15")
 end
 
