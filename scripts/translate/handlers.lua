@@ -91,7 +91,8 @@ function m:on_off(s)
 end
 
 -- Aircraft a segment talks about: those after its trigger, else before it,
--- else the utterance's subject, else one named later, else the only aircraft.
+-- else the utterance's subject (all the aircraft named together for the
+-- instruction before), else one named later, else the only aircraft.
 function m:acids(s)
   local ids, seen = {}, {}
   local any_known = false
@@ -107,14 +108,18 @@ function m:acids(s)
   take(s.trig, s.e)
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
-  if #ids == 0 and self.subject then ids[1] = self.subject end
+  if #ids == 0 and self.subject then
+    -- the aircraft named for the instruction before ("EZY45 and AFR1234 maintain present heading")
+    local all = self.subjects and self.subjects[1] == self.subject and self.subjects or { self.subject }
+    for k, id in ipairs(all) do ids[k] = id end
+  end
   if #ids == 0 then
     for _, r in ipairs(self.refs) do
       if r.kind == "aircraft" and r.b >= s.e then ids[1] = r.name break end
     end
   end
   if #ids == 0 and #self.fleet == 1 then ids[1] = self.fleet[1].id end
-  if #ids > 0 then self.subject = ids[1] end
+  if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
 end
 

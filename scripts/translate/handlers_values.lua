@@ -271,7 +271,7 @@ return function(H, f, wrap, compass)
     local id = ids[1]
     local now = self:state(id)
     local refs = self:refs_in(s.b, s.e, "aircraft")
-    local hdg
+    local hdg, offset  -- offset: degrees from each aircraft's present heading
     if abs and (abs.kind == "heading" or not (rel and rel.b < abs.b and not correction)) then
       hdg = abs.value
       local n = abs.number
@@ -299,14 +299,14 @@ return function(H, f, wrap, compass)
       if not now then return self:need("What is the current heading of " .. id .. "?") end
       local dir = rel.turn ~= 0 and rel.turn or turn
       if dir == 0 then return self:need("Should " .. id .. " turn left or right?") end
-      hdg = now.hdg_deg + dir * rel.value
+      offset = dir * rel.value
     elseif named then
       hdg = named
     elseif self:word_in(s.b, s.e, "@turn_around") then
       if not now then return self:need("What is the current heading of " .. id .. "?") end
-      hdg = now.hdg_deg + 180
+      offset = 180
     elseif self:word_in(math.max(1, s.trig - 2), s.e, "@present") and now then
-      hdg = now.hdg_deg
+      offset = 0
     elseif #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
       local src = self:state(refs[#refs].name)
       if not src then return self:need("What is the heading of " .. refs[#refs].name .. "?") end
@@ -314,8 +314,13 @@ return function(H, f, wrap, compass)
     else
       return self:need("What heading should " .. id .. " fly?")
     end
-    local h = f.num(wrap(math.floor(hdg * 1000 + 0.5) / 1000))
-    for _, a in ipairs(ids) do self:emit("HDG " .. a .. " " .. h) end
+    -- a change from the present heading is each aircraft's own
+    for _, a in ipairs(ids) do
+      local from = offset and self:state(a)
+      if offset and not from then return self:need("What is the current heading of " .. a .. "?") end
+      local h = from and from.hdg_deg + offset or hdg
+      self:emit("HDG " .. a .. " " .. f.num(wrap(math.floor(h * 1000 + 0.5) / 1000)))
+    end
   end
 
   function m:vspeed(s)

@@ -182,6 +182,10 @@ do -- one instruction for two aircraft, each with its own value; 'by' before the
   -- an aircraft named just before an instruction word is that instruction's
   check_eq(tr("EZY45 turn left heading 300 and AFR1234 descend FL200", w), "HDG EZY45 300 ; ALT AFR1234 FL200")
   check_eq(tr("pause the simulation and EZY45 turn left heading 300", w), "HOLD ; HDG EZY45 300")
+  -- a change from the present heading is each aircraft's own; the aircraft named together stay together
+  check_eq(tr("EZY45 and AFR1234 turn left 20 degrees", w), "HDG EZY45 25 ; HDG AFR1234 160")
+  check_eq(tr("EZY45 and AFR1234 maintain present heading", w), "HDG EZY45 45 ; HDG AFR1234 180")
+  check_eq(tr("EZY45 and AFR1234 turn around", w), "HDG EZY45 225 ; HDG AFR1234 360")
   check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15")
 end
 
