@@ -205,10 +205,14 @@ return function(H, f, wrap, compass)
       if not src then return self:need("What is the speed of " .. refs[#refs].name .. "?") end
       return self:emit("SPD " .. refs[1].name .. " " .. ((src.mach or 0) > 0 and f.mach(src.mach) or f.int(src.cas_kt or 0)))
     end
-    -- "maintain present speed": the current speed, read from the traffic
-    local now = self:state(ids[1])
-    if not q and now and self:word_in(math.max(1, s.trig - 2), s.trig, "@present") then
-      return self:emit("SPD " .. ids[1] .. " " .. ((now.mach or 0) > 0 and f.mach(now.mach) or f.int(now.cas_kt or 0)))
+    -- "maintain present speed": each aircraft's current speed, read from the traffic
+    if not q and self:word_in(math.max(1, s.trig - 2), s.trig, "@present") then
+      for _, id in ipairs(ids) do
+        local now = self:state(id)
+        if not now then return self:need("What is the current speed of " .. id .. "?") end
+        self:emit("SPD " .. id .. " " .. ((now.mach or 0) > 0 and f.mach(now.mach) or f.int(now.cas_kt or 0)))
+      end
+      return
     end
     if not q then return self:need("What speed should " .. ids[1] .. " fly? Please give knots or a Mach number.") end
     local dir = self:direction(s)

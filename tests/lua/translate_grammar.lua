@@ -186,6 +186,7 @@ do -- one instruction for two aircraft, each with its own value; 'by' before the
   check_eq(tr("EZY45 and AFR1234 turn left 20 degrees", w), "HDG EZY45 25 ; HDG AFR1234 160")
   check_eq(tr("EZY45 and AFR1234 maintain present heading", w), "HDG EZY45 45 ; HDG AFR1234 180")
   check_eq(tr("EZY45 and AFR1234 turn around", w), "HDG EZY45 225 ; HDG AFR1234 360")
+  check_eq(tr("EZY45 and AFR1234 maintain present speed", w), "SPD EZY45 290 ; SPD AFR1234 300")
   check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15")
 end
 
