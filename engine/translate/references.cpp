@@ -35,6 +35,15 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
     const Token& k = t[j];
     if (!restart.empty() && is_word(k) && k.text == restart) break;
     if (k.kind == TokKind::kNumber) {
+      // A typed flight number with its letters, lexed as digits and a glued
+      // word ("Ryanair 8UK"); a glued unit ("250kt", "30k") is not one.
+      if (s.groups.empty() && k.spelled && k.raw.find('.') == std::string::npos && j + 1 < t.size() &&
+          t[j + 1].glued && is_word(t[j + 1]) && t[j + 1].raw.size() <= 2 &&
+          !names.vocabulary().is_keyword(t[j + 1].text)) {
+        s.groups.push_back(k.raw + text::upper(t[j + 1].raw));
+        s.ends.push_back(j += 2);
+        break;
+      }
       if (k.spelled || k.num < 0 || k.num >= 1e6 || k.num != static_cast<long long>(k.num)) break;
       s.groups.push_back(k.raw.find(',') == std::string::npos ? k.raw : std::to_string(static_cast<long long>(k.num)));
       s.ends.push_back(++j);

@@ -36,6 +36,13 @@ do -- speeds: knots and Mach in every common form
   check_eq(tr("slow AC03 to 180 kts"), "SPD AC03 180")
 end
 
+do -- a typed flight number with letters after the airline name; glued units stay units
+  check_eq(tr("Ryanair 8UK, fly heading 210, speed 230"), "HDG RYR8UK 210 ; SPD RYR8UK 230")
+  check_eq(tr("speedbird 22mx climb FL300"), "ALT BAW22MX FL300")
+  check_eq(tr("KLM1023 speed 250kt"), "SPD KLM1023 250")
+  check_eq(tr("KLM1023 climb 30k"), "ALT KLM1023 30000")
+end
+
 do -- headings: absolute, compass words, ATC digits
   check_eq(tr("Shamrock four five kilo, turn left heading three one zero"), "HDG EIN45K 310")
   check_eq(tr("Point AC01 due south"), "HDG AC01 180")
