@@ -12,10 +12,12 @@ namespace {
 
 using nlohmann::json;
 
+// Messages may quote request bytes (path, Host, query) that are not UTF-8:
+// those bytes are written as U+FFFD instead of failing the reply.
 void send_json(httplib::Response& res, int status, const json& body) {
   res.status = status;
   res.set_header("Cache-Control", "no-store");
-  res.set_content(body.dump(), "application/json");
+  res.set_content(body.dump(-1, ' ', false, json::error_handler_t::replace), "application/json");
 }
 
 void fail(httplib::Response& res, int status, const std::string& message) {

@@ -233,7 +233,8 @@ void LiveSim::publish() {
   s["advisories"] = std::move(adv);
   s["auto"] = auto_;
   s["teammate"] = teammate_ != nullptr;
-  auto text = std::make_shared<const std::string>(s.dump());
+  // Log lines may quote scenario bytes that are not UTF-8 (written as U+FFFD).
+  auto text = std::make_shared<const std::string>(s.dump(-1, ' ', false, json::error_handler_t::replace));
   {
     std::lock_guard lock(mu_);
     state_ = std::move(text);

@@ -124,6 +124,22 @@ def test_plain(squawk):
         s_.close()
         check(b" 403 " in head, f"a request for another host name is refused: {head!r}")
 
+        # Request bytes that are not UTF-8, quoted in the error message, must
+        # not kill the server (they are written as U+FFFD).
+        for raw, want in [(b"GET /api/%FF HTTP/1.1\r\nHost: 127.0.0.1\r\n", b" 404 "),
+                          (b"GET /api/navdata?south=%FF HTTP/1.1\r\nHost: 127.0.0.1\r\n", b" 400 "),
+                          (b"GET /api/state HTTP/1.1\r\nHost: \xff\xfe\r\n", b" 403 ")]:
+            s_ = socket.create_connection(tuple(addr.rsplit(":", 1)), timeout=5)
+            s_.sendall(raw + b"Connection: close\r\n\r\n")
+            reply = b""
+            while chunk := s_.recv(4096):  # Connection: close -> read to the end
+                reply += chunk
+            s_.close()
+            status = reply.split(b"\r\n", 1)[0]
+            check(want in status and b"\xef\xbf\xbd" in reply,
+                  f"non-UTF-8 request {raw[:30]!r} -> {status!r}, culprit as U+FFFD")
+        check(state(addr)["simt"] > 0, "the server still answers after non-UTF-8 requests")
+
         import subprocess
         p = subprocess.run([squawk, "serve", "--port", addr.rsplit(":", 1)[1]], capture_output=True, text=True,
                            timeout=30)
