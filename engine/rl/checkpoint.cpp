@@ -43,11 +43,11 @@ Result<Checkpoint> load_checkpoint(const std::string& path) {
     c.spec.head = h.at("head").get<std::string>();
     c.spec.action_values = h.at("action_values").get<std::vector<double>>();
     c.spec.init_log_std = h.value("init_log_std", -0.5);
-    c.params.resize(h.at("num_params").get<size_t>());
+    c.params.resize(f.length("num_params", CheckpointFile::kRequired));
     c.has_adam = h.at("has_adam").get<bool>();
     c.adam_t = h.value("adam_t", 0LL);
     c.progress = get_progress(h);
-    c.value_params.resize(h.value("num_value_params", size_t{0}));
+    c.value_params.resize(f.length("num_value_params", 0));
     c.value_t = h.value("value_adam_t", 0LL);
   } catch (const std::exception& e) {
     return Status::corruption("checkpoint " + path + ": bad JSON header: " + e.what());

@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cstring>
+#include <stdexcept>
 
 #include "core/files.h"
 
@@ -35,6 +36,15 @@ Result<CheckpointFile> read_checkpoint_file(const std::string& path, std::string
     return Status::corruption("checkpoint " + path + ": the header line is not a JSON object");
   f.tensors = nl2 + 1;
   return f;
+}
+
+size_t CheckpointFile::length(const char* key, size_t absent) const {
+  const size_t n = header.contains(key) || absent == kRequired ? header.at(key).get<size_t>() : absent;
+  const size_t floats = (data.size() - tensors) / sizeof(float);
+  if (n > floats)
+    throw std::runtime_error(std::string(key) + " = " + std::to_string(n) + " but the file holds " +
+                             std::to_string(floats) + " floats");
+  return n;
 }
 
 Status CheckpointFile::read_arrays(const std::string& path, const std::string& what,

@@ -6,6 +6,7 @@
 // Writers go through files::write_atomic (temp file + rename).
 #pragma once
 
+#include <cstdint>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -27,6 +28,13 @@ struct CheckpointFile {
   nlohmann::json header;
   std::string data;      // the whole file
   size_t tensors = 0;    // offset of the first array in data
+
+  static constexpr size_t kRequired = SIZE_MAX;
+  // header[key] (or `absent` when missing, unless kRequired) as an array length, checked
+  // against the tensor section: a header cannot make a reader allocate more
+  // floats than the file holds. Throws std::runtime_error naming the key
+  // otherwise (the loaders' header parsing turns it into a corruption error).
+  size_t length(const char* key, size_t absent) const;
 
   // Fills `arrays` (each already sized) from the tensor section; error, naming
   // `path` and `what` the sizes mean, unless the section has exactly that many bytes.

@@ -53,10 +53,10 @@ Result<PromptCheckpoint> load_prompt_checkpoint(const std::string& path) {
     c.vocab_json = h.at("vocab").get<std::string>();
     c.merges_txt = h.at("merges").get<std::string>();
     c.prompt = h.value("prompt", "");
-    c.params.resize(h.at("num_params").get<size_t>());
+    c.params.resize(f.length("num_params", CheckpointFile::kRequired));
     c.has_adam = h.at("has_adam").get<bool>();
     c.adam_t = h.value("adam_t", 0LL);
-    c.value_params.resize(h.value("num_value_params", size_t{0}));
+    c.value_params.resize(f.length("num_value_params", 0));
     c.value_t = h.value("value_adam_t", 0LL);
     c.progress = get_progress(h);
   } catch (const std::exception& e) {

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/files.h"
 #include "env/vec_env.h"
 #include "nn/categorical.h"
@@ -137,6 +139,20 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   auto cut = rl::load_checkpoint(path);
   REQUIRE_FALSE(cut);
   CHECK(cut.status().message().find("expected") != std::string::npos);
+  // A header claiming more parameters than the file holds is refused before
+  // anything is allocated (10^12 floats would be 4 TB).
+  const size_t nl2 = data->find('\n', data->find('\n') + 1);
+  nlohmann::json h = nlohmann::json::parse(data->substr(data->find('\n') + 1, nl2 - data->find('\n') - 1));
+  for (const char* key : {"num_params", "num_value_params"}) {
+    nlohmann::json big = h;
+    big[key] = 1000000000000ULL;
+    REQUIRE(files::write_atomic(path, data->substr(0, data->find('\n') + 1) + big.dump() + data->substr(nl2)).is_ok());
+    auto huge = rl::load_checkpoint(path);
+    REQUIRE_FALSE(huge);
+    CHECK_MESSAGE(huge.status().message().find(std::string(key) + " = 1000000000000 but the file holds") !=
+                      std::string::npos,
+                  huge.status().message());
+  }
   REQUIRE(files::write_atomic(path, "not a checkpoint").is_ok());
   CHECK(rl::load_checkpoint(path).status().message().find("first line") != std::string::npos);
   std::remove(path.c_str());
