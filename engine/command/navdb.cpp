@@ -84,16 +84,20 @@ NavDb::NavDb(std::vector<NavPoint> airports, std::vector<NavPoint> waypoints)
 }
 
 Result<std::shared_ptr<const NavDb>> NavDb::load(const std::string& dir) {
-  std::vector<NavPoint> airports, waypoints;
-  const std::string apt_path = dir + "/airports.dat";
-  SQUAWK_ASSIGN_OR_RETURN(std::string apt, files::read(apt_path));
-  SQUAWK_RETURN_IF_ERROR(parse_airports(apt, apt_path, airports));
+  SQUAWK_ASSIGN_OR_RETURN(std::string apt, files::read(dir + "/airports.dat"));
   SQUAWK_ASSIGN_OR_RETURN(std::string nav, files::read(dir + "/nav.dat"));
-  parse_navaids(nav, waypoints);
   SQUAWK_ASSIGN_OR_RETURN(std::string fix, files::read(dir + "/fix.dat"));
-  parse_fixes(fix, waypoints);
+  return parse(apt, nav, fix, dir);
+}
+
+Result<std::shared_ptr<const NavDb>> NavDb::parse(std::string_view airports_dat, std::string_view nav_dat,
+                                                  std::string_view fix_dat, const std::string& where) {
+  std::vector<NavPoint> airports, waypoints;
+  SQUAWK_RETURN_IF_ERROR(parse_airports(airports_dat, where + "/airports.dat", airports));
+  parse_navaids(nav_dat, waypoints);
+  parse_fixes(fix_dat, waypoints);
   if (airports.empty() && waypoints.empty())
-    return Status::corruption("navdata folder '" + dir + "' holds no airports, navaids or fixes");
+    return Status::corruption("navdata folder '" + where + "' holds no airports, navaids or fixes");
   return std::shared_ptr<const NavDb>(std::make_shared<NavDb>(std::move(airports), std::move(waypoints)));
 }
 

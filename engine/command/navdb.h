@@ -34,6 +34,10 @@ class NavDb {
  public:
   // Reads the three files from `dir`. Errors name the file and line.
   static Result<std::shared_ptr<const NavDb>> load(const std::string& dir);
+  // The three files' contents; `where` names them in errors (load passes the
+  // folder). Any bytes give a database or an error, never a crash.
+  static Result<std::shared_ptr<const NavDb>> parse(std::string_view airports_dat, std::string_view nav_dat,
+                                                    std::string_view fix_dat, const std::string& where);
   // As load(), but each folder is read once per process (thread-safe); later
   // calls share the same database.
   static Result<std::shared_ptr<const NavDb>> load_cached(const std::string& dir);
