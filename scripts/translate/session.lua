@@ -54,6 +54,8 @@ M.kChunk = 1.0        -- [s] sim time between conflict checks while advancing
 M.kOpenFfRate = 60.0  -- FF without an end time: sim seconds per wall second
 M.kMaxTickWall = 5.0  -- [s] most wall time one tick accounts for (a stopped
                       -- terminal must not make the simulation jump hours)
+M.kMaxFfCpu = 0.5     -- [s] processor time one call spends on an FF with an end;
+                      -- the rest of a long FF runs on the following ticks (HOLD stops it)
 
 local function pair_key(a, b)
   if a > b then a, b = b, a end
@@ -150,7 +152,8 @@ end
 
 -- Advances `seconds` of sim time in chunks, reporting what happened; the
 -- failures of queued commands come last, as one summary event.
-function Session:advance(seconds, events)
+-- Runs `seconds` of sim time, or until os.clock() passes `deadline` (optional).
+function Session:advance(seconds, events, deadline)
   local tally, failures = self.sim:tally(), {}
   local t_end = self.sim:time() + seconds
   repeat
@@ -160,7 +163,7 @@ function Session:advance(seconds, events)
     self.sim:run_for(math.max(0, math.min(math.max(M.kChunk, self.sim:dt()), left)))
     self:collect_output(events, failures)
     self:diff_pairs(events)
-  until t_end - self.sim:time() < 0.5 * self.sim:dt()
+  until t_end - self.sim:time() < 0.5 * self.sim:dt() or (deadline and os.clock() > deadline)
   if #failures > 0 then
     local r = M.report(self.sim:tally(), tally)
     r.failed = #failures
@@ -176,13 +179,22 @@ function Session:run(seconds)
 end
 
 -- Fast-time with an end: run to it now, then the clock goes on as before FF.
+-- At most kMaxFfCpu of processor time per call: a longer FF stays in
+-- fast-time and goes on at the next call (the session's tick), so one
+-- "FF 1e9" cannot hold the simulation's thread for days.
 function Session:finish_fast_forward(events, resume)
   local state, ff_end = self.sim:run_state()
   if state ~= "ff" or not ff_end then return nil end
+  self.ff_resume = resume or self.ff_resume or "op"
   local t0 = self.sim:time()
-  self:advance(math.max(0, ff_end - t0), events)
+  self:advance(math.max(0, ff_end - t0), events, os.clock() + M.kMaxFfCpu)
+  if ff_end - self.sim:time() >= 0.5 * self.sim:dt() then
+    return string.format("fast-forwarding: t = %.1f s -> %.1f s of %.1f s (goes on while the session runs; HOLD stops it)",
+      t0, self.sim:time(), ff_end)
+  end
   self.sim:exec("HOLD")
-  if resume == "op" then self.sim:exec("OP") end
+  if self.ff_resume == "op" then self.sim:exec("OP") end
+  self.ff_resume = nil
   return string.format("fast-forwarded %.0f s: t = %.1f s -> %.1f s", self.sim:time() - t0, t0, self.sim:time())
 end
 
@@ -217,7 +229,7 @@ function Session:tick(wall_s)
   if state == "op" then
     self:advance(wall_s * self.sim:dtmult(), events)
   elseif state == "ff" and ff_end then
-    self:finish_fast_forward(events, "op")
+    self:finish_fast_forward(events)
   elseif state == "ff" then
     self:advance(wall_s * M.kOpenFfRate, events)
   end

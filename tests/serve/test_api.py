@@ -100,6 +100,17 @@ def test_plain(squawk):
         time.sleep(1.0)
         t2 = state(addr)["simt"]
         check(t2 >= t1 + 119.9, f"FF 120 ran two minutes at once ({t1} -> {t2})")
+        # FF 10^9 s must not hold the simulation's thread: it runs in slices,
+        # the server keeps answering, and HOLD stops it where it is.
+        r = command(addr, "!FF 1e9")
+        check(r["ok"] and "fast-forwarding" in r["message"] and "HOLD stops it" in r["message"],
+              f"FF 1e9 runs in slices: {r['message']!r}")
+        time.sleep(0.5)
+        check(state(addr)["simt"] > t2 + 120, "the long FF goes on between requests")
+        check(command(addr, "!HOLD")["ok"], "HOLD during a long FF")
+        t2 = state(addr)["simt"]
+        time.sleep(0.6)
+        check(state(addr)["simt"] == t2 and not state(addr)["running"], f"HOLD ended the long FF at t={t2}")
         command(addr, "!OP")
         command(addr, "!DTMULT 4")
         t3 = state(addr)["simt"]
