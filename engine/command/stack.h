@@ -158,6 +158,9 @@ class Stack {
   // and *skipped is set.
   Result<std::string> run_command(std::string_view text, bool from_queue, bool* skipped);
   void run_queued(const std::string& line);
+  // The scenario file `path` resolves to and its entries, checked against the
+  // nesting cap and the read filter.
+  Result<std::pair<std::string, ScnFile>> read_included(const std::string& path) const;
   // Queues a parsed file's entries (with %n replaced); those already due run
   // at once, in file order, before anything else queued (as BlueSky merges).
   void merge_entries(const std::string& file, ScnFile scn, const std::vector<std::string>& args,

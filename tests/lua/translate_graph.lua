@@ -125,6 +125,6 @@ do
   r = graph.translate("load scenario nothere.scn", { sim = sim, llm = llm, mode = "single", max_retries = 1 })
   check_eq(llm.n, 2, "the LLM was given one retry with the refusal")
   check_eq(r.commands and r.commands[1], "IC nothere.scn")
-  r = graph.translate("KL204 direct SUGOL", { sim = sim, mode = "offline" })
+  r = graph.translate("KL204 direct QQXQQ", { sim = sim, mode = "offline" })
   check(r.error ~= nil, "an unknown fix does not parse: no translation")
 end
