@@ -38,17 +38,17 @@ Result<Checkpoint> load_checkpoint(const std::string& path) {
   Checkpoint c;
   try {
     const auto& h = f.header;
-    c.spec.obs_size = h.at("obs_size").get<int>();
-    c.spec.hidden = h.at("hidden").get<std::vector<int>>();
+    c.spec.obs_size = whole<int>(h, "obs_size");
+    c.spec.hidden = wholes<int>(h, "hidden");
     c.spec.head = h.at("head").get<std::string>();
     c.spec.action_values = h.at("action_values").get<std::vector<double>>();
     c.spec.init_log_std = h.value("init_log_std", -0.5);
     c.params.resize(f.length("num_params", CheckpointFile::kRequired));
     c.has_adam = h.at("has_adam").get<bool>();
-    c.adam_t = h.value("adam_t", 0LL);
+    c.adam_t = whole<long long>(h, "adam_t", 0LL);
     c.progress = get_progress(h);
     c.value_params.resize(f.length("num_value_params", 0));
-    c.value_t = h.value("value_adam_t", 0LL);
+    c.value_t = whole<long long>(h, "value_adam_t", 0LL);
   } catch (const std::exception& e) {
     return Status::corruption("checkpoint " + path + ": bad JSON header: " + e.what());
   }

@@ -39,7 +39,8 @@ Result<CheckpointFile> read_checkpoint_file(const std::string& path, std::string
 }
 
 size_t CheckpointFile::length(const char* key, size_t absent) const {
-  const size_t n = header.contains(key) || absent == kRequired ? header.at(key).get<size_t>() : absent;
+  if (!header.contains(key) && absent != kRequired) return absent;
+  const size_t n = whole<size_t>(header, key);
   const size_t floats = (data.size() - tensors) / sizeof(float);
   if (n > floats)
     throw std::runtime_error(std::string(key) + " = " + std::to_string(n) + " but the file holds " +
@@ -75,9 +76,9 @@ void put_progress(nlohmann::json& h, const TrainProgress& p) {
 
 TrainProgress get_progress(const nlohmann::json& h) {
   TrainProgress p;
-  p.episodes = h.value("episodes", 0LL);
-  p.updates = h.value("updates", 0LL);
-  p.seed = h.value("seed", 0ULL);
+  p.episodes = whole<long long>(h, "episodes", 0LL);
+  p.updates = whole<long long>(h, "updates", 0LL);
+  p.seed = whole<unsigned long long>(h, "seed", 0ULL);
   p.estimator = h.value("estimator", "");
   p.scenario = h.value("scenario", "");
   p.wall_s = h.value("wall_s", 0.0);

@@ -8,8 +8,12 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -41,6 +45,30 @@ struct CheckpointFile {
   Status read_arrays(const std::string& path, const std::string& what,
                      std::initializer_list<std::vector<float>*> arrays) const;
 };
+
+// header[key] as a whole number of type T (`absent` when missing, if given).
+// Throws std::runtime_error naming the key when it is not a whole number in
+// T's range: a float such as 1e300 must never reach an integer conversion.
+template <class T>
+T whole(const nlohmann::json& h, const char* key, std::optional<T> absent = std::nullopt) {
+  if (absent && !h.contains(key)) return *absent;
+  const nlohmann::json& v = h.at(key);
+  if (v.is_number_unsigned() && std::in_range<T>(v.get<uint64_t>())) return static_cast<T>(v.get<uint64_t>());
+  if (v.is_number_integer() && !v.is_number_unsigned() && std::in_range<T>(v.get<int64_t>()))
+    return static_cast<T>(v.get<int64_t>());
+  throw std::runtime_error(std::string(key) + " = " + v.dump() + ": expected a whole number in [" +
+                           std::to_string(std::numeric_limits<T>::min()) + ", " +
+                           std::to_string(std::numeric_limits<T>::max()) + "]");
+}
+// header[key] as an array of whole numbers of type T (same checks).
+template <class T>
+std::vector<T> wholes(const nlohmann::json& h, const char* key) {
+  const nlohmann::json& v = h.at(key);
+  if (!v.is_array()) throw std::runtime_error(std::string(key) + ": expected an array of whole numbers");
+  std::vector<T> out;
+  for (const auto& e : v) out.push_back(whole<T>(nlohmann::json{{key, e}}, key));
+  return out;
+}
 
 // Reads `path`, checks the magic line and parses the header line.
 Result<CheckpointFile> read_checkpoint_file(const std::string& path, std::string_view magic);

@@ -43,21 +43,21 @@ Result<PromptCheckpoint> load_prompt_checkpoint(const std::string& path) {
   try {
     const auto& h = f.header;
     c.source = h.at("source").get<std::string>();
-    c.model_seed = h.at("model_seed").get<uint64_t>();
+    c.model_seed = whole<uint64_t>(h, "model_seed");
     c.config_json = h.at("config").get<std::string>();
     c.spec.head = h.at("head").get<std::string>();
     c.spec.action_values = h.at("action_values").get<std::vector<double>>();
     c.spec.lm_texts = h.at("lm_texts").get<std::vector<std::string>>();
-    c.spec.trainable_blocks = h.at("trainable_blocks").get<int>();
-    c.spec.obs_size = h.at("obs_size").get<int>();
+    c.spec.trainable_blocks = whole<int>(h, "trainable_blocks");
+    c.spec.obs_size = whole<int>(h, "obs_size");
     c.vocab_json = h.at("vocab").get<std::string>();
     c.merges_txt = h.at("merges").get<std::string>();
     c.prompt = h.value("prompt", "");
     c.params.resize(f.length("num_params", CheckpointFile::kRequired));
     c.has_adam = h.at("has_adam").get<bool>();
-    c.adam_t = h.value("adam_t", 0LL);
+    c.adam_t = whole<long long>(h, "adam_t", 0LL);
     c.value_params.resize(f.length("num_value_params", 0));
-    c.value_t = h.value("value_adam_t", 0LL);
+    c.value_t = whole<long long>(h, "value_adam_t", 0LL);
     c.progress = get_progress(h);
   } catch (const std::exception& e) {
     return Status::corruption("checkpoint " + path + ": bad JSON header: " + e.what());

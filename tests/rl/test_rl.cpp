@@ -153,6 +153,17 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
                       std::string::npos,
                   huge.status().message());
   }
+  // Integers given as floats beyond any integer type are refused by name
+  // (converting 1e300 to int is undefined behaviour).
+  for (const char* key : {"obs_size", "num_params", "adam_t", "episodes"}) {
+    nlohmann::json bad = h;
+    bad[key] = 1e300;
+    REQUIRE(files::write_atomic(path, data->substr(0, data->find('\n') + 1) + bad.dump() + data->substr(nl2)).is_ok());
+    auto r = rl::load_checkpoint(path);
+    REQUIRE_FALSE(r);
+    CHECK_MESSAGE(r.status().message().find(std::string(key) + " = 1e+300: expected a whole number") != std::string::npos,
+                  r.status().message());
+  }
   REQUIRE(files::write_atomic(path, "not a checkpoint").is_ok());
   CHECK(rl::load_checkpoint(path).status().message().find("first line") != std::string::npos);
   std::remove(path.c_str());
