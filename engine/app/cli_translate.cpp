@@ -43,7 +43,8 @@ Status print_jsonl(script::Vm& vm, const std::vector<translate::CorpusCase>& cas
     if (!tr) return tr.status().with_context(c.id);
     nlohmann::json j = result_json(*tr);
     j["id"] = c.id;
-    std::printf("%s\n", j.dump().c_str());
+    // Corpus ids and text may hold bytes that are not UTF-8: written as U+FFFD.
+    std::printf("%s\n", j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   }
   return Status::ok();
 }
@@ -84,7 +85,7 @@ int cmd_translate(const ArgV& argv) {
   auto tr = script::run_translation_graph(vm, args->positional()[0], {*mode, "", &stack});
   if (!tr) return failure(tr.status());
   if (args->has("--jsonl")) {
-    std::printf("%s\n", result_json(*tr).dump().c_str());
+    std::printf("%s\n", result_json(*tr).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   } else {
     std::printf("%s\n", tr->text().c_str());
   }

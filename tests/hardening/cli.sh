@@ -101,5 +101,12 @@ else
   echo "skip 13 graph fallback: no python3"
 fi
 
+# JSON lines quote corpus ids and text; bytes that are not UTF-8 become U+FFFD
+# (nlohmann's dump threw: "internal error", exit 1).
+tsv=$(mktemp)
+printf 'id\tsetup\tutterance\texpected\tcategory\nx\3771\t\tKL204 \377 climb\tALT KL204 FL300\tx\n' >"$tsv"
+expect "sib jsonl non-UTF-8" 0 $'"id":"x\xef\xbf\xbd1"' -- "$sq" translate --tsv "$tsv" --jsonl
+rm -f "$tsv"
+
 echo "$pass passed, $fails failed"
 [ "$fails" -eq 0 ]
