@@ -70,7 +70,7 @@ int cmd_train(const ArgV& argv) {
   Args::Spec spec = with_vm_flags({{"--policy", "--episodes", "--estimator", "--envs", "--eval-every",
                                     "--eval-episodes", "--lr", "--lr-final", "--episodes-per-update",
                                     "--gamma", "--lambda", "--entropy", "--entropy-final", "--epochs",
-                                    "--clip", "--value-iters"},
+                                    "--clip", "--value-iters", "--validation-seed"},
                                    {"--resume", "--quiet"}});
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("train", args.status().message());
@@ -97,9 +97,12 @@ int cmd_train(const ArgV& argv) {
   auto epochs = args->get_int("--epochs", cfg.epochs);
   auto clip = args->get_double("--clip", cfg.clip);
   auto value_iters = args->get_int("--value-iters", cfg.value_iters);
+  auto validation_seed =
+      args->get_int("--validation-seed", static_cast<long long>(sc->eval_seed + kValidationSeedOffset));
   for (const Status& st : {episodes.status(), envs_n.status(), eval_every.status(), eval_eps.status(),
                            lr.status(), seed.status(), per_update.status(), gamma.status(), lambda.status(),
-                           entropy.status(), epochs.status(), clip.status(), value_iters.status()})
+                           entropy.status(), epochs.status(), clip.status(), value_iters.status(),
+                           validation_seed.status()})
     if (!st.is_ok()) return usage_error("train", st.message());
   if (args->has("--lr-final")) {
     auto lr_final = args->get_double("--lr-final", cfg.lr_final);
@@ -230,7 +233,7 @@ int cmd_train(const ArgV& argv) {
     bar.update(progress.episodes, extra);
     if (progress.episodes < next_eval && progress.episodes < cfg.episodes) continue;
     next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
-    auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, sc->eval_seed + kValidationSeedOffset, false});
+    auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, static_cast<uint64_t>(*validation_seed), false});
     if (!ev) return failure(ev.status());
     const double k = static_cast<double>(interval_updates);
     char row[256];
