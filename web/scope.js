@@ -16,8 +16,9 @@ const Scope = (() => {
   const opts = { pz: false, fixes: true, vectorMin: 1 };
   let state = null;
   let selected = null;
-  const trails = new Map();   // id -> [[lat, lon], ...] one point per TRAIL_DT of sim time
-  const TRAIL_DT = 4, TRAIL_LEN = 24;
+  const trails = new Map();   // id -> [[lat, lon], ...] one point per state.trail.dt_s of sim time
+  const TRAIL_LEN = 24;
+  const trailColors = { BLUE: "#5a8cff", RED: "#ff4d4d", YELLOW: "#ffe14d" };  // TRAIL acid colour
   let nav = { airports: [], fixes: [] }, navKey = "", navPending = false;
   let onSelect = () => {};
   let dirty = true;
@@ -186,14 +187,15 @@ const Scope = (() => {
     const [x, y] = px(a.lat, a.lon);
     const color = status ? colors.conf : a.id === selected ? colors.sel : colors.ac;
     ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = 1.5;
-    // History trail, oldest faintest.
-    const tr = trails.get(a.id) || [];
+    // History trail (TRAIL ON), oldest faintest, in the colour TRAIL acid set.
+    const tr = state.trail.on ? trails.get(a.id) || [] : [];
+    ctx.fillStyle = trailColors[state.trail.colour[a.id]] || color;
     tr.forEach(([lat, lon], i) => {
       const [tx, ty] = px(lat, lon);
       ctx.globalAlpha = 0.15 + 0.6 * (i / tr.length);
       ctx.fillRect(tx - 1.5, ty - 1.5, 3, 3);
     });
-    ctx.globalAlpha = 1;
+    ctx.globalAlpha = 1; ctx.fillStyle = color;
     // Speed vector: where the aircraft will be in vectorMin minutes on its track.
     const d = a.gs_kt * opts.vectorMin / 60 * view.ppnm, t = a.trk_deg * Math.PI / 180;
     ctx.beginPath(); ctx.moveTo(x, y); ctx.lineTo(x + d * Math.sin(t), y - d * Math.cos(t)); ctx.stroke();
@@ -239,7 +241,7 @@ const Scope = (() => {
     state = s;
     for (const a of s.aircraft) {
       const tr = trails.get(a.id) || [];
-      if (!tr.lastT || s.simt - tr.lastT >= TRAIL_DT || s.simt < tr.lastT) {
+      if (!tr.lastT || s.simt - tr.lastT >= s.trail.dt_s || s.simt < tr.lastT) {
         tr.push([a.lat, a.lon]); tr.lastT = s.simt;
         if (tr.length > TRAIL_LEN) tr.shift();
         trails.set(a.id, tr);

@@ -77,7 +77,7 @@ int run_one(const std::string& file, const Args& args, const command::ScenarioRu
 
 int cmd_scn(const ArgV& argv) {
   Args::Spec spec;
-  spec.value_flags = {"--until", "--navdata", "--seed", "--max-time", "--max-wall"};
+  spec.value_flags = {"--until", "--navdata", "--seed", "--max-time", "--max-sim-time"};
   spec.bool_flags = {"--dump-json", "--conformance"};
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("scn", args.status().message());
@@ -88,11 +88,11 @@ int cmd_scn(const ArgV& argv) {
     if (!u || *u < 0) return usage_error("scn", "--until expects seconds >= 0");
     opts.until = *u;
   }
-  auto max_time = args->get_double("--max-time", opts.max_time);
-  if (!max_time || *max_time <= 0) return usage_error("scn", "--max-time expects seconds > 0");
-  opts.max_time = *max_time;
-  auto max_wall = args->get_double("--max-wall", opts.max_wall_s);
-  if (!max_wall || !(*max_wall >= 0)) return usage_error("scn", "--max-wall expects seconds >= 0 (0 = no limit)");
+  auto max_sim = args->get_double("--max-sim-time", opts.max_sim_time);
+  if (!max_sim || !(*max_sim > 0)) return usage_error("scn", "--max-sim-time expects seconds > 0");
+  opts.max_sim_time = *max_sim;
+  auto max_wall = args->get_double("--max-time", opts.max_wall_s);
+  if (!max_wall || !(*max_wall >= 0)) return usage_error("scn", "--max-time expects seconds >= 0 (0 = no limit)");
   opts.max_wall_s = *max_wall;
   auto seed = args->get_int("--seed", 0);
   if (!seed || *seed < 0) return usage_error("scn", "--seed expects an integer >= 0");

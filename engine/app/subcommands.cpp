@@ -200,10 +200,10 @@ const std::vector<Subcommand>& subcommands() {
        cmd_llm},
       {"scn", "scn FILE.scn               run a BlueSky scenario headless and summarise it",
        "usage: squawk scn FILE.scn [--until SECONDS] [--navdata DIR] [--dump-json] [--seed N]\n"
-       "                           [--max-wall SECONDS]\n"
-       "       squawk scn DIR --conformance [--max-time SECONDS] [--navdata DIR]\n\n"
+       "                           [--max-time SECONDS] [--max-sim-time SECONDS]\n"
+       "       squawk scn DIR --conformance [--max-sim-time SECONDS] [--navdata DIR]\n\n"
        "Loads a BlueSky scenario file and runs it without display until every timed\n"
-       "command has run (at most --max-time, default 3600 s of sim time) or until\n"
+       "command has run (at most --max-sim-time, default 3600 s of sim time) or until\n"
        "--until. Prints ECHO output and failures as they happen, then a summary:\n"
        "commands executed, commands skipped because squawk lacks them (display and\n"
        "plugin commands such as PAN, ZOOM, SWRAD), failures grouped by reason,\n"
@@ -214,8 +214,10 @@ const std::vector<Subcommand>& subcommands() {
        "  --dump-json     print only the final state as JSON: simt and per aircraft\n"
        "                  id, type, lat, lon, alt_ft, hdg_deg, tas_kt, cas_kt, gs_kt,\n"
        "                  vs_fpm (failed commands go to stderr)\n"
-       "  --max-wall S    stop with an error after S seconds of wall-clock time\n"
+       "  --max-time S    stop with an error after S seconds of wall-clock time\n"
        "                  (default 600; 0 = no limit)\n"
+       "  --max-sim-time S  without --until, stop at S seconds of sim time even if\n"
+       "                  commands are still queued (default 3600)\n"
        "  --conformance   run every file under DIR and print Markdown tables of the\n"
        "                  totals, skipped commands and failure reasons\n",
        cmd_scn},

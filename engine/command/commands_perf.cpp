@@ -1,4 +1,4 @@
-// Performance model, wind and deletion-area commands: PERF, WIND, GETWIND, AREA.
+// Performance model and wind commands: PERF, WIND, GETWIND.
 #include <cmath>
 
 #include "command/handler_util.h"
@@ -83,25 +83,6 @@ Result<std::string> getwind(Call& c) {
          std::to_string(std::lround(units::ms_to_kt(spd)));
 }
 
-// AREA lat,lon,lat,lon,[top,bottom] | AREA OFF
-Result<std::string> area(Call& c) {
-  sim::Simulation& s = c.stack.sim();
-  if (!c.has(0)) return std::string("AREA ") + (s.area_active() ? "ON" : "OFF");
-  if (c[0].type == ArgType::kTxt) {
-    if (c[0].text.rfind("OF", 0) == 0) {
-      s.area_off();
-      return std::string();
-    }
-    return Status::unsupported("argument 1: " + text::quoted(c[0].text) +
-                               ": squawk has no named shapes; give a box lat,lon,lat,lon or OFF");
-  }
-  for (size_t k = 1; k < 4; ++k)
-    if (!c.has(k)) return Status::invalid("argument " + std::to_string(k + 1) + ": a box needs lat,lon,lat,lon");
-  SQUAWK_RETURN_IF_ERROR(s.set_area(c[0].num, c[1].num, c[2].num, c[3].num, c.has(4) ? c[4].num : 1e9,
-                                    c.has(5) ? c[5].num : -1e9));
-  return std::string();
-}
-
 }  // namespace
 
 void add_perf_commands(std::vector<CommandDecl>& out) {
@@ -119,11 +100,6 @@ void add_perf_commands(std::vector<CommandDecl>& out) {
   out.push_back({"GETWIND", {}, "latlon,[alt]", "GETWIND lat,lon,[alt]",
                  "Shows the wind at a position (and altitude) as direction/speed in kt.", {"GETWIND 52 4 FL200"},
                  getwind, {}});
-  out.push_back({"AREA", {}, "[float/txt,float,float,float,alt,alt]", "AREA lat,lon,lat,lon,[top,bottom] or AREA OFF",
-                 "Sets a deletion area, a lat/lon box with optional top and bottom altitudes: aircraft that "
-                 "leave it are deleted (checked every second; aircraft that were never inside stay). AREA OFF "
-                 "ends it. Named shapes are not supported.",
-                 {"AREA 51.5 3.5 53 6", "AREA 51.5 3.5 53 6 FL300 0", "AREA OFF"}, area, {}});
 }
 
 }  // namespace squawk::command

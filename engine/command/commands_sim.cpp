@@ -1,5 +1,5 @@
 // Simulation control and scripting commands: OP, HOLD, FF, DT, DTMULT, RESET,
-// IC, PCALL, SEED, ECHO, HELP, SCHEDULE, DELAY, NOISE.
+// IC, PCALL, SEED, ECHO, HELP, SCHEDULE, DELAY, NOISE, TRAIL.
 #include "command/handler_util.h"
 #include "command/line.h"
 #include "core/text.h"
@@ -105,6 +105,28 @@ Result<std::string> noise(Call& c) {
   return c[0].on ? std::string("NOISE ON recorded; squawk models no turbulence or ADS-B noise") : std::string();
 }
 
+// TRAIL ON/OFF [dt] or TRAIL acid BLUE/RED/YELLOW; bare TRAIL shows the setting.
+Result<std::string> trail(Call& c) {
+  Trails& t = c.stack.trails();
+  if (!c.has(0)) return std::string("TRAIL ") + on_off(t.on) + ", a point every " + text::fmt_double(t.dt, 4) + " s";
+  if (c[0].type == ArgType::kOnOff) {
+    if (c.has(1) && c[1].type != ArgType::kFloat)
+      return Status::invalid("argument 2: TRAIL ON/OFF takes the time between trail points in seconds, got " +
+                             text::quoted(c[1].text));
+    if (c.has(1) && !(c[1].num > 0.0)) return Status::invalid("argument 2: the trail time step must be > 0 s");
+    t.on = c[0].on;
+    if (c.has(1)) t.dt = c[1].num;
+    return std::string();
+  }
+  const std::string colour = c.has(1) ? c[1].text : std::string();
+  if (colour != "BLUE" && colour != "RED" && colour != "YELLOW")
+    return Status::invalid("argument 2: the trail colour of an aircraft is BLUE, RED or YELLOW, got " +
+                           (colour.empty() ? std::string("nothing") : text::quoted(colour)));
+  const sim::Traffic& traffic = c.stack.sim().traffic();
+  for (int i : c[0].acids) t.colour[traffic.id[static_cast<size_t>(i)]] = colour;
+  return std::string();
+}
+
 }  // namespace
 
 void add_sim_commands(std::vector<CommandDecl>& out) {
@@ -155,6 +177,11 @@ void add_sim_commands(std::vector<CommandDecl>& out) {
                  "Records the turbulence and ADS-B noise switch; squawk models neither, so ON says so and has "
                  "no effect on the dynamics.",
                  {"NOISE OFF"}, noise, {}});
+  out.push_back({"TRAIL", {"TRAILS"}, "[acid/onoff],[float/txt]", "TRAIL ON/OFF,[dt] or TRAIL acid,colour",
+                 "Switches the radar display's aircraft trails on or off, optionally with the time between "
+                 "trail points in seconds (default 10), or sets one aircraft's trail colour (BLUE, RED or "
+                 "YELLOW). A display setting: it does not change the traffic.",
+                 {"TRAIL ON", "TRAIL ON 5", "TRAIL KL204 RED"}, trail, {}});
 }
 
 }  // namespace squawk::command

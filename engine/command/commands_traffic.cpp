@@ -79,7 +79,7 @@ Result<std::string> mcre(Call& c) {
 }
 
 Result<std::string> del(Call& c) {
-  std::set<std::string> ids;
+  std::set<std::string> ids, shapes;
   bool wind = false;
   for (size_t k = 0; k < c.args.size(); ++k) {
     const ArgValue& a = c[k];
@@ -88,12 +88,15 @@ Result<std::string> del(Call& c) {
       for (int i : a.acids) ids.insert(c.stack.sim().traffic().id[i]);
     } else if (a.text == "WIND") {
       wind = true;
+    } else if (c.stack.sim().shapes().find(a.text)) {
+      shapes.insert(a.text);
     } else {
-      return Status::not_found("argument " + std::to_string(k + 1) + ": no aircraft " + text::quoted(a.text) +
-                               " (squawk has no areas or shapes to delete)");
+      return Status::not_found("argument " + std::to_string(k + 1) + ": no aircraft or shape " +
+                               text::quoted(a.text));
     }
   }
   for (const auto& id : ids) SQUAWK_RETURN_IF_ERROR(c.stack.sim().remove(id));
+  for (const auto& name : shapes) c.stack.sim().delete_shape(name);
   if (wind) c.stack.sim().clear_wind();
   return std::string();
 }

@@ -48,7 +48,7 @@ ConformanceReport run_conformance(const std::string& dir, const ScenarioRunOptio
       continue;
     }
     ++rep.loaded;
-    if (stack.queued() == 0 || r->end_time + 0.5 * stack.sim().dt() >= opts.max_time) ++rep.fully_run;
+    if (stack.queued() == 0 || r->end_time + 0.5 * stack.sim().dt() >= opts.max_sim_time) ++rep.fully_run;
     rep.executed += r->tally.executed;
     for (const auto& [k, v] : r->tally.skipped) rep.skipped[k] += v;
     for (const auto& [k, v] : r->tally.failed) rep.failed[k] += v;

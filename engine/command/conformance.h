@@ -14,7 +14,7 @@ namespace squawk::command {
 struct ConformanceReport {
   int files = 0;
   int loaded = 0;         // files found and read
-  int fully_run = 0;      // ran until every queued command ran, or to max_time
+  int fully_run = 0;      // ran until every queued command ran, or to max_sim_time
   long executed = 0;      // commands that succeeded
   std::map<std::string, long> skipped;  // by command name
   std::map<std::string, long> failed;   // by reason (values blanked)

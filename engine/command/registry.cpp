@@ -16,6 +16,7 @@ Registry::Registry() {
   add_sim_commands(commands_);
   add_asas_commands(commands_);
   add_perf_commands(commands_);
+  add_shape_commands(commands_);
   for (auto& d : commands_) {
     auto sig = parse_signature(d.args);
     if (!sig) {

@@ -76,5 +76,6 @@ void add_route_commands(std::vector<CommandDecl>& out);
 void add_sim_commands(std::vector<CommandDecl>& out);
 void add_asas_commands(std::vector<CommandDecl>& out);
 void add_perf_commands(std::vector<CommandDecl>& out);
+void add_shape_commands(std::vector<CommandDecl>& out);
 
 }  // namespace squawk::command

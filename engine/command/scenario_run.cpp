@@ -28,7 +28,7 @@ Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRu
       if (opts.max_wall_s > 0 && wall > opts.max_wall_s)
         return Status::timeout(path + ": stopped at t = " + text::fmt_double(stack.sim().simt(), 2) +
                                " s after " + text::fmt_double(opts.max_wall_s, 1) +
-                               " s of wall-clock time (--max-wall)");
+                               " s of wall-clock time (--max-time)");
       if (stack.sim().simt() == before) return Status::ok();  // target reached
     }
   };
@@ -36,9 +36,9 @@ Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRu
     SQUAWK_RETURN_IF_ERROR(run_to(*opts.until));
   } else {
     // Until every queued command has run (PCALL and SCHEDULE may queue more)
-    // or max_time; each round advances at least one step.
-    while (stack.queued() > 0 && stack.sim().simt() < opts.max_time) {
-      const double target = std::min(*stack.last_queued_time(), opts.max_time);
+    // or max_sim_time; each round advances at least one step.
+    while (stack.queued() > 0 && stack.sim().simt() < opts.max_sim_time) {
+      const double target = std::min(*stack.last_queued_time(), opts.max_sim_time);
       SQUAWK_RETURN_IF_ERROR(run_to(std::max(target, stack.sim().simt() + stack.sim().dt())));
     }
   }

@@ -15,8 +15,8 @@ namespace squawk::command {
 
 struct ScenarioRunOptions {
   std::optional<double> until;  // [s] stop time; default: the last queued command time
-  double max_time = 3600.0;     // [s] cap on the default stop time
-  double max_wall_s = 600.0;    // [s] wall-clock cap on the whole run (0 = none)
+  double max_sim_time = 3600.0;  // [s] sim-time cap on the default stop time (--max-sim-time)
+  double max_wall_s = 600.0;     // [s] wall-clock cap on the whole run, 0 = none (--max-time)
   std::shared_ptr<const NavDb> navdb;  // may be null
   uint64_t seed = 0;
   // Performance data: unset, the process default (SQUAWK_OPENAP / --openap);
@@ -34,7 +34,7 @@ struct ScenarioRunResult {
 };
 
 // Loads `path` (IC) and runs it to `until`, or until every queued command has
-// run (following PCALL/SCHEDULE additions) or max_time is reached. `stack` receives
+// run (following PCALL/SCHEDULE additions) or max_sim_time is reached. `stack` receives
 // the final state. Error: the file cannot be found or read, or the run took
 // longer than max_wall_s of wall-clock time (kTimeout, naming the sim time).
 Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRunOptions& opts, Stack& stack);

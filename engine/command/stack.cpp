@@ -322,7 +322,7 @@ Result<std::string> Stack::find_scenario(const std::string& name) const {
                            " and its parent folders)");
 }
 
-Status Stack::merge_scenario(const std::string& path, const std::vector<std::string>& args, bool relative) {
+Result<std::pair<std::string, ScnFile>> Stack::read_included(const std::string& path) const {
   if (include_depth_ >= kMaxIncludeDepth)
     return Status::invalid("scenario " + text::quoted(path) + ": more than " +
                            std::to_string(kMaxIncludeDepth) + " nested IC/PCALLs");
@@ -330,7 +330,12 @@ Status Stack::merge_scenario(const std::string& path, const std::vector<std::str
   if (read_filter_ && !read_filter_(file))
     return Status::invalid("scenario " + text::quoted(file) + ": reading it is not allowed here (sandbox)");
   SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
-  merge_entries(file, std::move(scn), args, relative);
+  return std::make_pair(std::move(file), std::move(scn));
+}
+
+Status Stack::merge_scenario(const std::string& path, const std::vector<std::string>& args, bool relative) {
+  SQUAWK_ASSIGN_OR_RETURN(auto read, read_included(path));
+  merge_entries(read.first, std::move(read.second), args, relative);
   return Status::ok();
 }
 
@@ -360,15 +365,9 @@ void Stack::merge_entries(const std::string& file, ScnFile scn, const std::vecto
 }
 
 Status Stack::load_scenario(const std::string& path) {
-  if (include_depth_ >= kMaxIncludeDepth)
-    return Status::invalid("scenario " + text::quoted(path) + ": more than " +
-                           std::to_string(kMaxIncludeDepth) + " nested IC/PCALLs");
-  SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
-  if (read_filter_ && !read_filter_(file))
-    return Status::invalid("scenario " + text::quoted(file) + ": reading it is not allowed here (sandbox)");
-  SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
+  SQUAWK_ASSIGN_OR_RETURN(auto read, read_included(path));
   reset();
-  merge_entries(file, std::move(scn), {}, false);
+  merge_entries(read.first, std::move(read.second), {}, false);
   return Status::ok();
 }
 
@@ -381,6 +380,7 @@ void Stack::reset() {
   user_wpts_.clear();
   dtmult_ = 1.0;
   noise_ = false;
+  trails_ = Trails();
 }
 
 void Stack::set_seed(uint64_t seed) {
@@ -437,6 +437,13 @@ std::string Stack::snapshot() const {
   b::put<uint64_t>(out, seed_);
   b::put<double>(out, dtmult_);
   b::put<uint8_t>(out, noise_ ? 1 : 0);
+  b::put<uint8_t>(out, trails_.on ? 1 : 0);
+  b::put<double>(out, trails_.dt);
+  b::put<int64_t>(out, static_cast<int64_t>(trails_.colour.size()));
+  for (const auto& [acid, colour] : trails_.colour) {
+    b::put_str(out, acid);
+    b::put_str(out, colour);
+  }
   b::put_str(out, base_dir_);
   return out;
 }

@@ -7,7 +7,7 @@
 //  - conditional commands (ATALT / ATSPD / ATDIST);
 //  - user waypoints (DEFWPT);
 //  - the seed RESET uses, and switches squawk records without modelling
-//    (DTMULT, NOISE).
+//    (DTMULT, NOISE), and the display's trail settings (TRAIL).
 // Counters (tally) and collected output are bookkeeping, not state.
 //
 // Line rules (BlueSky, facts §2.1): `;` splits commands; names are
@@ -52,6 +52,14 @@ struct Tally {
   std::map<std::string, long> failed;     // failures by command and reason (values blanked)
   std::vector<std::string> first_failures;  // the first kMaxKept failure messages, with time
   static constexpr size_t kMaxKept = 50;
+};
+
+// TRAIL (BlueSky traffic/trails.py): trails on/off, the time between trail
+// points, and colours chosen per aircraft (by callsign; BLUE, RED or YELLOW).
+struct Trails {
+  bool on = false;
+  double dt = 10.0;  // [s]
+  std::map<std::string, std::string> colour;
 };
 
 struct Condition {
@@ -135,6 +143,10 @@ class Stack {
   void set_dtmult(double m) { dtmult_ = m; }
   bool noise() const { return noise_; }
   void set_noise(bool on) { noise_ = on; }
+  // TRAIL: the radar display's aircraft trails (state only; squawk's
+  // dynamics do not read it).
+  const Trails& trails() const { return trails_; }
+  Trails& trails() { return trails_; }
   // Resolves a scenario file name: absolute as given; relative in base_dir,
   // then in each parent folder of base_dir; the .scn suffix is added and
   // matched in any case. Error names the file and where it looked.
@@ -146,6 +158,9 @@ class Stack {
   // and *skipped is set.
   Result<std::string> run_command(std::string_view text, bool from_queue, bool* skipped);
   void run_queued(const std::string& line);
+  // The scenario file `path` resolves to and its entries, checked against the
+  // nesting cap and the read filter.
+  Result<std::pair<std::string, ScnFile>> read_included(const std::string& path) const;
   // Queues a parsed file's entries (with %n replaced); those already due run
   // at once, in file order, before anything else queued (as BlueSky merges).
   void merge_entries(const std::string& file, ScnFile scn, const std::vector<std::string>& args,
@@ -163,6 +178,7 @@ class Stack {
   uint64_t seed_ = 0;
   double dtmult_ = 1.0;
   bool noise_ = false;
+  Trails trails_;
   // Counts and logs a failure that belongs to no single command.
   void record_failure(const std::string& what);
 

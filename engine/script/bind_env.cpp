@@ -51,11 +51,6 @@ Scenario load_or_throw(lua_State* L, const std::string& path) {
   return std::move(*sc);
 }
 
-void set_number(lua_State* L, const char* key, double v) {
-  lua_pushnumber(L, v);
-  lua_setfield(L, -2, key);
-}
-
 int l_new(lua_State* L) {
   const std::string path = readable(L, arg_string(L, 1, "scenario"), "scenario");
   const std::string which = opt_string(L, 2, "settings", "eval");

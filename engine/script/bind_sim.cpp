@@ -65,38 +65,28 @@ int push_outcome(lua_State* L, const Result<std::string>& r) {
   return 2;
 }
 
-void set_num(lua_State* L, const char* k, double v) {
-  lua_pushnumber(L, v);
-  lua_setfield(L, -2, k);
-}
-
-void set_str(lua_State* L, const char* k, const std::string& v) {
-  lua_pushlstring(L, v.data(), v.size());
-  lua_setfield(L, -2, k);
-}
-
 void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
   lua_createtable(L, 0, 13);
-  set_str(L, "id", t.id[i]);
-  set_str(L, "type", t.type[i]);
-  set_num(L, "lat", t.lat[i]);
-  set_num(L, "lon", t.lon[i]);
-  set_num(L, "alt_ft", units::m_to_ft(t.alt[i]));
-  set_num(L, "hdg_deg", t.hdg[i]);
-  set_num(L, "trk_deg", t.trk[i]);
-  set_num(L, "tas_kt", units::ms_to_kt(t.tas[i]));
-  set_num(L, "cas_kt", units::ms_to_kt(t.cas[i]));
-  set_num(L, "gs_kt", units::ms_to_kt(t.gs[i]));
-  set_num(L, "vs_fpm", units::ms_to_fpm(t.vs[i]));
+  set_string(L, "id", t.id[i]);
+  set_string(L, "type", t.type[i]);
+  set_number(L, "lat", t.lat[i]);
+  set_number(L, "lon", t.lon[i]);
+  set_number(L, "alt_ft", units::m_to_ft(t.alt[i]));
+  set_number(L, "hdg_deg", t.hdg[i]);
+  set_number(L, "trk_deg", t.trk[i]);
+  set_number(L, "tas_kt", units::ms_to_kt(t.tas[i]));
+  set_number(L, "cas_kt", units::ms_to_kt(t.cas[i]));
+  set_number(L, "gs_kt", units::ms_to_kt(t.gs[i]));
+  set_number(L, "vs_fpm", units::ms_to_fpm(t.vs[i]));
   lua_pushboolean(L, t.lnav[i]);
   lua_setfield(L, -2, "lnav");
   lua_pushboolean(L, t.vnav[i]);
   lua_setfield(L, -2, "vnav");
-  set_num(L, "sel_hdg_deg", t.sel_hdg[i]);
-  set_num(L, "sel_alt_ft", units::m_to_ft(t.sel_alt[i]));
-  set_num(L, "sel_vs_fpm", units::ms_to_fpm(t.sel_vs[i]));
-  if (sim::is_mach(t.sel_spd[i])) set_num(L, "sel_mach", t.sel_spd[i]);
-  else set_num(L, "sel_cas_kt", units::ms_to_kt(t.sel_spd[i]));
+  set_number(L, "sel_hdg_deg", t.sel_hdg[i]);
+  set_number(L, "sel_alt_ft", units::m_to_ft(t.sel_alt[i]));
+  set_number(L, "sel_vs_fpm", units::ms_to_fpm(t.sel_vs[i]));
+  if (sim::is_mach(t.sel_spd[i])) set_number(L, "sel_mach", t.sel_spd[i]);
+  else set_number(L, "sel_cas_kt", units::ms_to_kt(t.sel_spd[i]));
   lua_pushboolean(L, t.cr_active[i]);
   lua_setfield(L, -2, "resolving");
   const sim::Route& r = t.route[i];
@@ -104,17 +94,17 @@ void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
   for (int k = 0; k < r.size(); ++k) {
     const sim::Waypoint& w = r.waypoints()[k];
     lua_createtable(L, 0, 5);
-    set_str(L, "name", w.name);
-    set_num(L, "lat", w.lat);
-    set_num(L, "lon", w.lon);
-    if (w.has_alt()) set_num(L, "alt_ft", units::m_to_ft(w.alt));
-    if (w.has_spd()) set_num(L, "spd", sim::is_mach(w.spd) ? w.spd : units::ms_to_kt(w.spd));
+    set_string(L, "name", w.name);
+    set_number(L, "lat", w.lat);
+    set_number(L, "lon", w.lon);
+    if (w.has_alt()) set_number(L, "alt_ft", units::m_to_ft(w.alt));
+    if (w.has_spd()) set_number(L, "spd", sim::is_mach(w.spd) ? w.spd : units::ms_to_kt(w.spd));
     lua_seti(L, -2, k + 1);
   }
   lua_setfield(L, -2, "route");
-  if (const sim::Waypoint* w = r.active_waypoint()) set_str(L, "active_wpt", w->name);
-  if (!r.orig().empty()) set_str(L, "orig", r.orig());
-  if (!r.dest().empty()) set_str(L, "dest", r.dest());
+  if (const sim::Waypoint* w = r.active_waypoint()) set_string(L, "active_wpt", w->name);
+  if (!r.orig().empty()) set_string(L, "orig", r.orig());
+  if (!r.dest().empty()) set_string(L, "dest", r.dest());
 }
 
 constexpr long long kMaxSteps = 1'000'000'000;  // per step call
@@ -243,12 +233,12 @@ int l_conflicts(lua_State* L) {
   lua_createtable(L, static_cast<int>(c.size()), 0);
   for (size_t k = 0; k < c.size(); ++k) {
     lua_createtable(L, 0, 6);
-    set_str(L, "own", s.traffic().id[c[k].own]);
-    set_str(L, "intruder", s.traffic().id[c[k].intruder]);
-    set_num(L, "tcpa", c[k].tcpa);
-    set_num(L, "tlos", c[k].tlos);
-    set_num(L, "dcpa_nm", units::m_to_nm(c[k].dcpa));
-    set_num(L, "dist_nm", units::m_to_nm(c[k].dist));
+    set_string(L, "own", s.traffic().id[c[k].own]);
+    set_string(L, "intruder", s.traffic().id[c[k].intruder]);
+    set_number(L, "tcpa", c[k].tcpa);
+    set_number(L, "tlos", c[k].tlos);
+    set_number(L, "dcpa_nm", units::m_to_nm(c[k].dcpa));
+    set_number(L, "dist_nm", units::m_to_nm(c[k].dist));
     lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
   }
   return 1;
@@ -260,10 +250,10 @@ int l_los(lua_State* L) {
   lua_createtable(L, static_cast<int>(c.size()), 0);
   for (size_t k = 0; k < c.size(); ++k) {
     lua_createtable(L, 0, 4);
-    set_str(L, "own", s.traffic().id[c[k].own]);
-    set_str(L, "intruder", s.traffic().id[c[k].intruder]);
-    set_num(L, "dist_nm", units::m_to_nm(c[k].dist));
-    set_num(L, "dalt_ft", units::m_to_ft(c[k].dalt));
+    set_string(L, "own", s.traffic().id[c[k].own]);
+    set_string(L, "intruder", s.traffic().id[c[k].intruder]);
+    set_number(L, "dist_nm", units::m_to_nm(c[k].dist));
+    set_number(L, "dalt_ft", units::m_to_ft(c[k].dalt));
     lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
   }
   return 1;
@@ -344,10 +334,10 @@ int l_commands(lua_State* L) {
   for (size_t k = 0; k < cmds.size(); ++k) {
     const auto& d = cmds[k];
     lua_createtable(L, 0, 5);
-    set_str(L, "name", d.name);
-    set_str(L, "args", d.args);
-    set_str(L, "usage", d.usage);
-    set_str(L, "help", d.help);
+    set_string(L, "name", d.name);
+    set_string(L, "args", d.args);
+    set_string(L, "usage", d.usage);
+    set_string(L, "help", d.help);
     lua_createtable(L, static_cast<int>(d.aliases.size()), 0);
     for (size_t a = 0; a < d.aliases.size(); ++a) {
       lua_pushstring(L, d.aliases[a].c_str());

@@ -227,36 +227,19 @@ const char* q_kind(translate::QKind k) {
   return names[static_cast<int>(k)];
 }
 
-void set_bool(lua_State* L, const char* k, bool v) {
-  lua_pushboolean(L, v);
-  lua_setfield(L, -2, k);
-}
-void set_int(lua_State* L, const char* k, lua_Integer v) {
-  lua_pushinteger(L, v);
-  lua_setfield(L, -2, k);
-}
-void set_num(lua_State* L, const char* k, double v) {
-  lua_pushnumber(L, v);
-  lua_setfield(L, -2, k);
-}
-void set_str(lua_State* L, const char* k, const std::string& v) {
-  lua_pushlstring(L, v.data(), v.size());
-  lua_setfield(L, -2, k);
-}
-
 // Token indices go to Lua 1-based; ranges are [b, e) with e one past the end.
 void push_number(lua_State* L, const translate::SpokenNumber& n, size_t offset) {
   lua_createtable(L, 0, 10);
-  set_num(L, "value", n.value);
-  set_str(L, "digits", n.digits);
-  set_int(L, "b", static_cast<lua_Integer>(n.begin + offset + 1));
-  set_int(L, "e", static_cast<lua_Integer>(n.end + offset + 1));
-  set_bool(L, "typed", n.typed);
-  set_bool(L, "thousand", n.has_thousand);
-  set_bool(L, "hundred", n.has_hundred);
-  set_bool(L, "decimal", n.has_decimal);
-  set_int(L, "groups", n.groups);
-  set_bool(L, "lead_digit", n.leading_digit_word);
+  set_number(L, "value", n.value);
+  set_string(L, "digits", n.digits);
+  set_integer(L, "b", static_cast<lua_Integer>(n.begin + offset + 1));
+  set_integer(L, "e", static_cast<lua_Integer>(n.end + offset + 1));
+  set_boolean(L, "typed", n.typed);
+  set_boolean(L, "thousand", n.has_thousand);
+  set_boolean(L, "hundred", n.has_hundred);
+  set_boolean(L, "decimal", n.has_decimal);
+  set_integer(L, "groups", n.groups);
+  set_boolean(L, "lead_digit", n.leading_digit_word);
 }
 
 int l_utterance(lua_State* L) {
@@ -292,14 +275,14 @@ int l_u_tokens(lua_State* L) {
     lua_createtable(L, 0, 8);
     lua_pushstring(L, tok_kind(t.kind));
     lua_setfield(L, -2, "kind");
-    set_str(L, "text", t.text);
-    set_str(L, "raw", t.raw);
-    set_num(L, "num", t.num);
-    set_bool(L, "number_word", translate::is_number_word(t));
+    set_string(L, "text", t.text);
+    set_string(L, "raw", t.raw);
+    set_number(L, "num", t.num);
+    set_boolean(L, "number_word", translate::is_number_word(t));
     if (t.kind == translate::TokKind::kWord) {
-      set_bool(L, "keyword", u->keyword[i]);
-      set_bool(L, "filler", u->filler[i]);
-      set_bool(L, "alpha", translate::is_alpha(t.text));
+      set_boolean(L, "keyword", u->keyword[i]);
+      set_boolean(L, "filler", u->filler[i]);
+      set_boolean(L, "alpha", translate::is_alpha(t.text));
     }
     lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
   }
@@ -316,16 +299,16 @@ int l_u_refs(lua_State* L) {
                       : r.kind == translate::RefKind::kType   ? "type"
                                                               : "waypoint");
     lua_setfield(L, -2, "kind");
-    set_str(L, "name", r.name);
-    set_int(L, "b", static_cast<lua_Integer>(r.begin + 1));
-    set_int(L, "e", static_cast<lua_Integer>(r.end + 1));
-    set_bool(L, "exists", r.exists);
-    set_bool(L, "spoken", r.spoken);
+    set_string(L, "name", r.name);
+    set_integer(L, "b", static_cast<lua_Integer>(r.begin + 1));
+    set_integer(L, "e", static_cast<lua_Integer>(r.end + 1));
+    set_boolean(L, "exists", r.exists);
+    set_boolean(L, "spoken", r.spoken);
     if (!r.heard.id.empty()) {
       lua_createtable(L, 0, 3);
-      set_str(L, "id", r.heard.id);
-      set_num(L, "airline", r.heard.airline);
-      set_num(L, "digits", r.heard.digits);
+      set_string(L, "id", r.heard.id);
+      set_number(L, "airline", r.heard.airline);
+      set_number(L, "digits", r.heard.digits);
       lua_setfield(L, -2, "heard");
     }
     lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
@@ -352,13 +335,13 @@ int l_u_quantities(lua_State* L) {
     lua_createtable(L, 0, 9);
     lua_pushstring(L, q_kind(q.kind));
     lua_setfield(L, -2, "kind");
-    set_num(L, "value", q.value);
-    set_int(L, "b", static_cast<lua_Integer>(q.begin + 1));
-    set_int(L, "e", static_cast<lua_Integer>(q.end + 1));
-    set_bool(L, "fl", q.flight_level);
-    set_bool(L, "by", q.by);
-    set_bool(L, "to", q.to);
-    set_int(L, "turn", q.turn);
+    set_number(L, "value", q.value);
+    set_integer(L, "b", static_cast<lua_Integer>(q.begin + 1));
+    set_integer(L, "e", static_cast<lua_Integer>(q.end + 1));
+    set_boolean(L, "fl", q.flight_level);
+    set_boolean(L, "by", q.by);
+    set_boolean(L, "to", q.to);
+    set_integer(L, "turn", q.turn);
     push_number(L, q.number, 0);
     lua_setfield(L, -2, "number");
     lua_seti(L, -2, static_cast<lua_Integer>(i + 1));

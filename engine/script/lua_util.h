@@ -62,6 +62,12 @@ std::string arg_string(lua_State* L, int idx, const char* name);
 std::string opt_string(lua_State* L, int idx, const char* name, const std::string& fallback);
 bool opt_boolean(lua_State* L, int idx, bool fallback);
 
+// Set field `key` of the table on top of the stack.
+void set_number(lua_State* L, const char* key, double v);
+void set_integer(lua_State* L, const char* key, lua_Integer v);
+void set_string(lua_State* L, const char* key, const std::string& v);
+void set_boolean(lua_State* L, const char* key, bool v);
+
 // Pushes a Lua array (1-based) of the numbers in v.
 void push_array(lua_State* L, const std::vector<double>& v);
 

@@ -90,6 +90,8 @@ json state_json(const command::Stack& stack) {
                 {"rpz_nm", units::m_to_nm(cd.rpz)},
                 {"hpz_ft", units::m_to_ft(cd.hpz)},
                 {"dtlook_s", cd.dtlook}}}};
+  const command::Trails& trails = stack.trails();
+  out["trail"] = {{"on", trails.on}, {"dt_s", trails.dt}, {"colour", trails.colour}};
   json aircraft = json::array();
   for (int i = 0; i < t.n(); ++i) aircraft.push_back(aircraft_json(t, static_cast<size_t>(i)));
   out["aircraft"] = std::move(aircraft);

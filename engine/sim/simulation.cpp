@@ -184,7 +184,7 @@ void Simulation::step() {
     update_kinematics();
   }
   if (simt() + 1e-9 >= next_area_t_) {
-    if (area_.active) update_area();
+    if (area_active_) update_area();
     next_area_t_ += kPerfDt;
     if (next_area_t_ <= simt()) next_area_t_ = simt() + kPerfDt;
   }
@@ -199,9 +199,9 @@ void Simulation::update_asas() {
 
 void Simulation::update_area() {
   Traffic& t = traf_;
+  const Shape* area = shapes_.find(area_name_);
   for (int i = t.n() - 1; i >= 0; --i) {
-    const bool in = t.lat[i] >= area_.lat0 && t.lat[i] <= area_.lat1 && t.lon[i] >= area_.lon0 &&
-                    t.lon[i] <= area_.lon1 && t.alt[i] >= area_.bottom && t.alt[i] <= area_.top;
+    const bool in = area != nullptr && area->contains(t.lat[i], t.lon[i], t.alt[i]);
     const bool was = t.in_area[i] != 0;
     t.in_area[i] = in;
     if (was && !in) {
@@ -212,16 +212,17 @@ void Simulation::update_area() {
   }
 }
 
-Status Simulation::set_area(double lat0, double lon0, double lat1, double lon1, double top, double bottom) {
-  SQUAWK_RETURN_IF_ERROR(check_latlon("AREA", lat0, lon0));
-  SQUAWK_RETURN_IF_ERROR(check_latlon("AREA", lat1, lon1));
-  if (!(top >= bottom) || std::isnan(top) || std::isnan(bottom))
-    return bad("AREA", "top " + num(top) + " m must not be below bottom " + num(bottom) + " m");
-  area_ = Area{true, std::min(lat0, lat1), std::max(lat0, lat1), std::min(lon0, lon1), std::max(lon0, lon1), top, bottom};
+Status Simulation::set_area(const std::string& name) {
+  if (!shapes_.find(name)) return bad("AREA", "no shape " + text::quoted(name) + " (define it with BOX, CIRCLE or POLY)");
+  area_name_ = name;
+  area_active_ = true;
   return Status::ok();
 }
 
-void Simulation::area_off() { area_.active = false; }
+Status Simulation::set_area(double lat0, double lon0, double lat1, double lon1, double top, double bottom) {
+  SQUAWK_RETURN_IF_ERROR(shapes_.define("DELAREA", Shape{Shape::Kind::kBox, {lat0, lon0, lat1, lon1}, top, bottom}));
+  return set_area("DELAREA");
+}
 
 void Simulation::select_speed(int i, double casmach) {
   if (traf_.sel_spd[i] == casmach) return;
@@ -912,8 +913,9 @@ std::string Simulation::snapshot() const {
   put(out, next_uid_);
   put(out, next_perf_t_);
   put(out, next_area_t_);
-  put<uint8_t>(out, area_.active);
-  for (double v : {area_.lat0, area_.lat1, area_.lon0, area_.lon1, area_.top, area_.bottom}) put(out, v);
+  put<uint8_t>(out, area_active_);
+  bytes::put_str(out, area_name_);
+  shapes_.put(out);
   bytes::put_str(out, openap_ ? openap_->dir() : std::string());
   Rng probe = rng_;  // the RNG state, observed through its next draws
   for (int k = 0; k < 4; ++k) put(out, probe.next_u64());

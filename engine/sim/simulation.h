@@ -48,6 +48,7 @@
 #include "sim/openap_data.h"
 #include "sim/performance.h"
 #include "sim/route.h"
+#include "sim/shapes.h"
 #include "sim/traffic.h"
 #include "sim/wind.h"
 
@@ -198,15 +199,22 @@ class Simulation {
   // Error when a value is not finite or not positive.
   Status set_performance_options(const PerformanceOptions& opts);
 
-  // --- Deletion area (BlueSky AREA) ---------------------------------------------
-  // A box [lat0, lat1] x [lon0, lon1] (corners in any order) between bottom
-  // and top [m]. Every 1 s of sim time (after the step), aircraft that were
-  // inside at the previous check and are outside now are deleted; aircraft
-  // never inside stay. Errors: non-finite or out-of-range corners, top <
-  // bottom.
+  // --- Named shapes and the deletion area (BlueSky BOX/CIRCLE/POLY, AREA) ----
+  const ShapeSet& shapes() const { return shapes_; }
+  Status define_shape(const std::string& name, Shape shape) { return shapes_.define(name, std::move(shape)); }
+  // False when there is no such shape. Deleting the deletion area's shape
+  // leaves AREA on with nothing inside (BlueSky then deletes every aircraft
+  // that was inside at the last check).
+  bool delete_shape(const std::string& name) { return shapes_.remove(name); }
+  // AREA: every 1 s of sim time (after the step), aircraft that were inside
+  // the named shape at the previous check and are outside now are deleted;
+  // aircraft never inside stay. set_area(box) defines the shape DELAREA, as
+  // BlueSky does. Errors: no shape `name`; a bad box (see ShapeSet::define).
+  Status set_area(const std::string& name);
   Status set_area(double lat0, double lon0, double lat1, double lon1, double top = 1e9, double bottom = -1e9);
-  void area_off();
-  bool area_active() const { return area_.active; }
+  void area_off() { area_active_ = false; }
+  bool area_active() const { return area_active_; }
+  const std::string& area_name() const { return area_name_; }
 
   // --- Wind -----------------------------------------------------------------
   const WindField& wind() const { return wind_; }
@@ -266,10 +274,9 @@ class Simulation {
   PerformanceOptions perf_opts_;
   std::shared_ptr<const OpenapData> openap_;
   WindField wind_;
-  struct Area {
-    bool active = false;
-    double lat0 = 0, lat1 = 0, lon0 = 0, lon1 = 0, top = 1e9, bottom = -1e9;  // [deg], [m]
-  } area_;
+  ShapeSet shapes_;
+  bool area_active_ = false;
+  std::string area_name_;  // the deletion area's shape
   double next_area_t_ = 0.0;  // [s] sim time of the next area check
   void update_area();
   Rng rng_;

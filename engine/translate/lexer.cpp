@@ -185,6 +185,21 @@ void lex_core(std::string_view c, std::vector<Token>& out) {
       return;
     }
   }
+  // Digit groups joined by hyphens, four digits at most and the first group
+  // of one or two, are one number as speech recognition writes it ("21-0" =
+  // two one zero, "91-48"); others are names (737-800, 787-9).
+  if (c.find('-') != std::string_view::npos && c.front() != '-' && c.find('-') <= 2) {
+    std::string digits;
+    bool all_digits = true;
+    for (auto& p : text::split(c, '-')) {
+      all_digits = all_digits && !p.empty() && all_of(p, is_digit);
+      digits += p;
+    }
+    if (all_digits && digits.size() <= 4) {
+      out.push_back(number(text::to_double(digits).value_or(0.0), digits, false));
+      return;
+    }
+  }
   // Hyphenated words split unless the token carries digits (737-800).
   if (c.find('-') != std::string_view::npos && !has_digit(c)) {
     for (auto& p : text::split(c, '-'))

@@ -52,16 +52,30 @@ void fold_digit_homophones(std::vector<Token>& t) {
     const char* heard;
     const char* digit;
   };
-  static const std::array<Homophone, 9> kHeard = {{{"to", "two"}, {"too", "two"}, {"on", "one"}, {"won", "one"},
-                                                   {"once", "one"}, {"ones", "one"}, {"for", "four"},
-                                                   {"ate", "eight"}, {"fine", "five"}}};
+  static const std::array<Homophone, 10> kHeard = {{{"to", "two"}, {"too", "two"}, {"on", "one"}, {"won", "one"},
+                                                    {"once", "one"}, {"ones", "one"}, {"for", "four"},
+                                                    {"ate", "eight"}, {"a", "eight"}, {"fine", "five"}}};
   auto digit = [&](size_t i) { return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0; };
+  for (size_t i = 1; i + 1 < t.size();) {
+    const std::string& r = t[i].raw;
+    const bool letter = r.size() == 1 && r[0] >= 'b' && r[0] <= 'z' && r != "i";
+    const bool noise = t[i].kind == TokKind::kWord && digit_word(t[i].text) < 0 && (letter || t[i].glued);
+    if (noise && digit(i - 1) && digit(i + 1)) {
+      t.erase(t.begin() + static_cast<long>(i));
+    } else {
+      ++i;
+    }
+  }
   for (size_t i = 1; i < t.size(); ++i) {
     if (t[i].kind != TokKind::kWord || !digit(i - 1)) continue;
     for (const auto& h : kHeard) {
       if (t[i].text != h.heard) continue;
-      // between two digits; "fine" also closing a run of two ("three three fine")
-      const bool closes = t[i].text == "fine" && i >= 2 && digit(i - 2) && !digit(i + 1);
+      // between two digits; "fine" also closing a run of two ("three three fine"),
+      // and the one-words and "ate" closing the utterance ("speed two once")
+      const bool last = i + 1 == t.size() || t[i + 1].kind == TokKind::kPunct;
+      const bool closes = (t[i].text == "fine" && i >= 2 && digit(i - 2) && !digit(i + 1)) ||
+                          (last && (t[i].text == "won" || t[i].text == "once" || t[i].text == "ones" ||
+                                    t[i].text == "ate" || t[i].text == "fine"));
       if (digit(i + 1) || closes) t[i].text = h.digit;
     }
   }

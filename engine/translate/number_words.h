@@ -37,8 +37,12 @@ struct SpokenNumber {
 
 // Speech recognition writes digits as words that sound alike: between two
 // digit words, "to"/"too" is two, "on"/"won"/"once"/"ones" one, "for" four,
-// "ate" eight, "fine" five ("two on zero" = 210); "fine" also after two digits
-// ("three three fine" = 335). Rewrites those tokens' text in place.
+// "ate"/"a" eight, "fine" five ("two on zero" = 210, "one a four" = 184); "fine" also after two digits
+// ("three three fine" = 335); "won"/"once"/"ones"/"ate"/"fine" also after a
+// digit at the end ("speed two once" = 21). Rewrites those tokens' text in
+// place. A lone lower-case letter, or a word hyphen-glued to a digit word,
+// between two digit words ("three f four zero", "one nine-year zero") is
+// noise and is removed.
 void fold_digit_homophones(std::vector<Token>& toks);
 
 // Value 0-9 of a digit word ("niner" = 9, "fife" = 5), or -1.

@@ -118,7 +118,7 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       if (q.value < 1000.0) q.value *= 100.0;
       --p;
       if (prev({"flight"})) --p;
-    } else if (prev({"mach", "m"})) {
+    } else if (prev({"mach", "m"}) || (prev({"mark"}) && n->has_decimal && n->value < 1.0)) {  // "mark point seven" = Mach
       q.kind = QKind::kMach;
       if (q.value >= 1.0 && !n->has_decimal) q.value /= 100.0;
       --p;

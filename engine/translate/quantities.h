@@ -5,7 +5,8 @@
 // false and returns each number it finds with a kind:
 //   altitude ("FL250", "flight level two four zero", "30k", "41,000 ft",
 //   "8000 m", "four thousand"), speed in knots or Mach ("250 kt", "M.78",
-//   "mach point seven eight", "0.79 Mach"), heading ("heading 090"),
+//   "mach point seven eight", "0.79 Mach", "mark point seven eight" as speech
+//   recognition writes Mach), heading ("heading 090"),
 //   vertical speed ("1500 fpm", "feet per minute"), latitude/longitude
 //   ("52 N", "52.3N", "N52.3", "51 degrees 30 minutes north", "N52°18.6'",
 //   chart form "5230N 00445E" (degrees and minutes run together),

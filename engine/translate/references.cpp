@@ -25,17 +25,40 @@ struct Suffix {
 
 bool is_word(const Token& t) { return t.kind == TokKind::kWord; }
 
-Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used, const Tables& names) {
+// Reads the digits and letters of a callsign from token j on. `restart`: the
+// first word of the airline just said; said again, it starts the callsign over
+// ("Delta sixty, Delta six forty six") and ends this one.
+Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used, const Tables& names,
+                   const std::string& restart = "") {
   Suffix s;
   while (j < t.size() && !used[j] && s.groups.size() < 8) {
     const Token& k = t[j];
+    if (!restart.empty() && is_word(k) && k.text == restart) break;
     if (k.kind == TokKind::kNumber) {
+      // A typed flight number with its letters, lexed as digits and a glued
+      // word ("Ryanair 8UK"); a glued unit ("250kt", "30k") is not one.
+      if (s.groups.empty() && k.spelled && k.raw.find('.') == std::string::npos && j + 1 < t.size() &&
+          t[j + 1].glued && is_word(t[j + 1]) && t[j + 1].raw.size() <= 2 &&
+          !names.vocabulary().is_keyword(t[j + 1].text)) {
+        s.groups.push_back(k.raw + text::upper(t[j + 1].raw));
+        s.ends.push_back(j += 2);
+        break;
+      }
       if (k.spelled || k.num < 0 || k.num >= 1e6 || k.num != static_cast<long long>(k.num)) break;
       s.groups.push_back(k.raw.find(',') == std::string::npos ? k.raw : std::to_string(static_cast<long long>(k.num)));
       s.ends.push_back(++j);
       continue;
     }
     if (!is_word(k)) break;
+    // One unknown word of four letters or more between spoken digits is
+    // recognition noise ("JetBlue eight tier thirteen").
+    if (!s.groups.empty() && k.text.size() >= 4 && !is_number_word(k) && j + 1 < t.size() &&
+        is_word(t[j + 1]) && is_number_word(t[j + 1]) && j > 0 && is_number_word(t[j - 1]) &&
+        !names.vocabulary().is_keyword(k.text) && !names.vocabulary().is_filler(k.text) &&
+        names.phonetic_letter(k.text) == 0 && !names.airline_by_telephony(k.text)) {
+      ++j;
+      continue;
+    }
     if (k.text == "hundred" || k.text == "thousand") {
       if (!s.groups.empty()) {
         s.groups.pop_back();
@@ -44,6 +67,13 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       break;
     }
     if (is_number_word(k)) {
+      // "eight in eighty two" is how speech recognition writes "eighteen eighty two".
+      const int d = digit_word(k.text);
+      if (d >= 3 && j + 2 < t.size() && is_word(t[j + 1]) && t[j + 1].text == "in" && is_number_word(t[j + 2])) {
+        s.groups.push_back("1" + std::to_string(d));
+        s.ends.push_back(j += 2);
+        continue;
+      }
       // One spoken group: a digit, a teen, or a tens word with its unit digit.
       size_t e = j + 1;
       if (j + 1 < t.size() && digit_word(t[j + 1].text) > 0 && digit_word(k.text) < 0 && k.text.ends_with("ty")) e = j + 2;
@@ -239,7 +269,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       if (!ok) continue;
       auto icao = names.airline_by_telephony(phrase);
       if (!icao) continue;
-      Suffix suf = read_suffix(t, i + len, used, names);
+      Suffix suf = read_suffix(t, i + len, used, names, t[i].text);
       if (suf.groups.empty() || names.phonetic_letter(t[i + len].text) != 0) break;
       std::string id = *icao + text::upper(suf.joined(suf.groups.size()));
       size_t end = suf.ends.back();
@@ -289,6 +319,15 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       keyword = keyword || names.vocabulary().is_keyword(t[i].text);
       words += t[i].text;
       ++i;
+    }
+    // Letters of the phonetic alphabet between the airline and the digits are
+    // part of the garbled airline ("Land Juliett six ninety three").
+    size_t letters_end = i;
+    while (letters_end < t.size() && letters_end - words_begin < 4 && is_word(t[letters_end]) && !used[letters_end] &&
+           names.phonetic_letter(t[letters_end].text) != 0)
+      ++letters_end;
+    if (letters_end > i && i > words_begin && read_suffix(t, i, used, names).groups.empty()) {
+      for (; i < letters_end; ++i) words += t[i].text;
     }
     while (i < t.size() && t[i].kind == TokKind::kPunct && t[i].text == ",") ++i;
     Suffix suf = read_suffix(t, i, used, names);

@@ -301,7 +301,7 @@ function G:segments(b, e)
         merged = true  -- "make a new ...": one request
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
-          and #self:quantities(last.trig, tr.pos) == 0
+          and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
         if (last.intent == tr.intent or alt_pair) and not this.single then
           if tr.intent == "alt" then last.intent = "alt" end
           merged = true
@@ -309,15 +309,45 @@ function G:segments(b, e)
       end
     end
     if not merged then
-      if last then last.e = tr.pos end
-      segs[#segs + 1] = { intent = tr.intent, b = last and tr.pos or b, trig = tr.pos, e = e, ["then"] = thn }
+      -- an aircraft named just before the instruction word is its subject, not
+      -- the previous instruction's ("EZY45 turn left 300 and AFR1234 descend")
+      local start = tr.pos
+      if last then
+        for _, r in ipairs(self:refs_in(last.trig + 1, tr.pos, "aircraft")) do
+          if self:skip_fillers(r.e) == tr.pos then start = r.b end
+        end
+        last.e = start
+      end
+      segs[#segs + 1] = { intent = tr.intent, b = last and start or b, trig = tr.pos, e = e, ["then"] = thn }
     end
   end
   return segs
 end
 
+-- "turn EZY45 to 010 and AFR1234 to 200": an aircraft named after a value
+-- instruction's value, with a value of its own after it, gets the same
+-- instruction with that value (a segment of its own).
+function G:split_ellipsis(segs)
+  local out = {}
+  for _, s in ipairs(segs) do
+    local cur, e = s, s.e
+    out[#out + 1] = cur
+    local qs = (M.intents[s.intent] or {}).value and self:quantities(s.trig, e) or {}
+    if #qs >= 2 then
+      for _, r in ipairs(self:refs_in(qs[1].e, e, "aircraft")) do
+        if qs[#qs].b >= r.e then
+          cur.e = r.b
+          cur = { intent = s.intent, b = r.b, trig = r.b, e = e }
+          out[#out + 1] = cur
+        end
+      end
+    end
+  end
+  return out
+end
+
 function G:parse(b, e)
-  local segs = self:segments(b, e)
+  local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
   self:orphan_heading(segs[1])
   for k, s in ipairs(segs) do
@@ -331,7 +361,10 @@ function G:parse(b, e)
     prev_out = #self.out
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.
-    if k > 1 and #self.out > 0 and self:word(s.trig, "@shown") and #self:quantities(s.b, s.e) == 0 then skip = true end
+    if k > 1 and #self.out > 0 and self.out[#self.out]:match("^POS ") and self:word(s.trig, "@shown")
+        and #self:quantities(s.b, s.e) == 0 then
+      skip = true
+    end
     if not skip then
       local before = self.last_cond
       self.last_cond = nil
@@ -430,6 +463,7 @@ function M.translate(text, world)
   local u = squawk.translate.utterance(text, world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {} }, G)
+  g:settle_callsigns()
   local cond, rest = g:condition()
   if not g.ask then
     g:parse(rest, #g.t + 1)

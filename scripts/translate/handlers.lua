@@ -54,6 +54,11 @@ end
 
 -- ---- values ----
 
+-- "zero niner zero": three spoken digits, the first a zero, up to 360.
+function H.zero_led_heading(q)
+  local n = q.number
+  return not n.typed and n.groups == 3 and #n.digits == 3 and n.digits:sub(1, 1) == "0" and q.value <= 360
+end
 -- A value said digit by digit that lost digits beyond repair: one digit, or
 -- two ending in zero ("one zero knots": 100 or 210?). Two others ("two
 -- five") lost their final zero and read times ten; "zero nine" is 090.
@@ -86,14 +91,15 @@ function m:on_off(s)
 end
 
 -- Aircraft a segment talks about: those after its trigger, else before it,
--- else the utterance's subject, else one named later, else the only aircraft.
+-- else the utterance's subject (all the aircraft named together for the
+-- instruction before), else one named later, else the only aircraft.
 function m:acids(s)
   local ids, seen = {}, {}
   local any_known = false
   for _, r in ipairs(self.refs) do if r.kind == "aircraft" and r.exists then any_known = true end end
   local function take(b, e)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
-      if (r.exists or not any_known) and not seen[r.name] then
+      if (r.exists or not any_known) and not seen[r.name] and not r.false_start then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -102,15 +108,90 @@ function m:acids(s)
   take(s.trig, s.e)
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
-  if #ids == 0 and self.subject then ids[1] = self.subject end
+  if #ids == 0 and self.subject then
+    -- the aircraft named for the instruction before ("EZY45 and AFR1234 maintain present heading")
+    local all = self.subjects and self.subjects[1] == self.subject and self.subjects or { self.subject }
+    for k, id in ipairs(all) do ids[k] = id end
+  end
   if #ids == 0 then
     for _, r in ipairs(self.refs) do
       if r.kind == "aircraft" and r.b >= s.e then ids[1] = r.name break end
     end
   end
   if #ids == 0 and #self.fleet == 1 then ids[1] = self.fleet[1].id end
-  if #ids > 0 then self.subject = ids[1] end
+  if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
+end
+
+-- Airline letters, flight digits and trailing letters of a callsign
+-- ("BAW96CA" -> "BAW", "96", "CA").
+local function airline_digits(id) return (id or ""):match("^(%a*)(%d*)(.*)$") end
+
+-- The first position at or after i that is not a filler, a comma or (with
+-- corrections) a correction word.
+function m:skip_fillers(i, corrections)
+  while self.t[i] and (self.t[i].kind == "punct" or self.t[i].filler
+      or (corrections and self:word(i, "@correction"))) do
+    i = i + 1
+  end
+  return i
+end
+
+-- Callsigns the speaker restarted or corrected, settled once per request:
+--  * "Brickyard eleven correction fourteen eleven": digits after a correction
+--    replace the callsign's digits (the airline kept) when that names an
+--    aircraft exactly;
+--  * "Delta sixty, Delta six forty six" / "Lufthansa thirty one correction
+--    Lufthansa forty one thirty": a callsign said again straight after
+--    itself was a false start (r.false_start); the later one counts.
+function m:settle_callsigns()
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.heard then
+      local k = self:skip_fillers(r.e, false)
+      if self:word(k, "@correction") then
+        local q = self:quantities(self:skip_fillers(k, true), #self.t + 1)[1]
+        local airline = (r.heard.id or ""):match("^%a+")
+        if q and q.b == self:skip_fillers(k, true) and q.kind == "plain" and airline then
+          local id = airline .. q.number.digits
+          if self:state(id) then
+            r.name, r.heard, r.e = self:state(id).id, nil, q.e
+            self:mark_used(q.b, q.e)
+          end
+        end
+      end
+    end
+  end
+  -- (only an inexactly heard one: "AC01, AC02 climb" names two aircraft)
+  for k, r in ipairs(self.refs) do
+    local nxt = self.refs[k + 1]
+    if r.kind == "aircraft" and r.heard and nxt and nxt.kind == "aircraft" and self:skip_fillers(r.e, true) == nxt.b
+        and (self:word_in(r.e, nxt.b, "@correction") or airline_digits(r.heard.id) == airline_digits(nxt.name)) then
+      r.false_start = true
+    end
+  end
+end
+
+-- True when the heard callsign's airline and digits are those of exactly one
+-- aircraft, which is `name`, and at most its last letters went unheard
+-- ("speedbird nine six" for BAW96CA; "two alpha charlie" is not DLH2AB).
+function m:airline_and_digits_match(heard, name)
+  local a, d = airline_digits(heard)
+  if a == "" or d == "" or self:letters_conflict(heard, name) then return false end
+  local n = 0
+  for _, ac in ipairs(self.fleet) do
+    local a2, d2 = airline_digits(ac.id)
+    if a2 == a and d2 == d then n = n + 1 end
+  end
+  local a3, d3 = airline_digits(name)
+  return n == 1 and a3 == a and d3 == d
+end
+
+-- True when letters heard after the digits do not start the aircraft's
+-- ("two alpha charlie" for DLH2AB; "charlie" alone for N978CN fits).
+function m:letters_conflict(heard, name)
+  local _, _, rest = airline_digits(heard)
+  local _, _, rest2 = airline_digits(name)
+  return rest2:sub(1, #rest) ~= rest
 end
 
 -- A spoken callsign matched to an aircraft whose airline or digits differ
@@ -119,7 +200,9 @@ function m:confirm_callsigns(s)
   local c = L.callsign_confirm
   for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
     local h = r.heard
-    if h and not (self.world.confirmed or {})[r.name] and (h.airline < c.airline or h.digits < c.digits) then
+    if h and not r.false_start and not (self.world.confirmed or {})[r.name]
+        and not self:airline_and_digits_match(h.id, r.name)
+        and (h.airline < c.airline or h.digits < c.digits or self:letters_conflict(h.id, r.name)) then
       self.confirm = self.confirm or { id = r.name, heard = h.id }
       self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
     end
@@ -142,14 +225,35 @@ function m:repaired(q, value, lo, hi, step)
   if value >= lo and value <= hi then return value end
   local n = q.number
   if n.typed then return nil end
+  -- a run may not start inside a compound ("seventy six thousand" is not six thousand)
+  local function splits(b)
+    return b > n.b and self:word(b - 1, "@tens") and self.t[b].number_word and not self:word(b, "@tens")
+  end
   for _, round_only in ipairs({ true, false }) do
     for len = n.e - n.b - 1, 1, -1 do
       for b = n.b, n.e - len do
-        local r = self.u:number(b, b + len)
+        local r = not splits(b) and self.u:number(b, b + len)
         if r and r.thousand == n.thousand and r.value >= lo and r.value <= hi
             and (not round_only or r.value % step == 0) then
           return r.value
         end
+      end
+    end
+  end
+  return nil
+end
+
+-- A spoken altitude that is not whole hundreds of feet ("two thousand seven
+-- hundred ten"), re-read from the longest, leftmost run of its words that is
+-- (2700; "one three" = 13 thousand, as "maintain niner"); nil when none is.
+function m:whole_hundreds(q)
+  local n = q.number
+  for len = n.e - n.b - 1, 1, -1 do
+    for b = n.b, n.e - len do
+      local r = self.u:number(b, b + len)
+      if r and r.thousand == n.thousand and r.value > 0 then
+        local ft = r.value < 100 and r.value * 1000 or r.value
+        if ft % 100 == 0 and ft <= 60000 then return ft end
       end
     end
   end
@@ -182,6 +286,7 @@ function m:at_altitude(s)
   if q.kind ~= "alt" and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then return nil end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
+  self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end
 
@@ -191,7 +296,7 @@ function m:leftovers(s)
   if s.intent ~= "hdg" and s.intent ~= "alt" and s.intent ~= "spd" then return end
   local ids = self:acids(s)
   if #ids ~= 1 then return end
-  local alt_done, spd_done = s.intent == "alt", s.intent == "spd"
+  local alt_done, spd_done, hdg_done = s.intent == "alt", s.intent == "spd", false
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     if q.b > s.trig then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
@@ -200,6 +305,10 @@ function m:leftovers(s)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
         self:emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
         spd_done = true
+      elseif s.intent ~= "hdg" and not hdg_done and q.kind == "plain" and H.zero_led_heading(q) then
+        -- three spoken digits led by zero are a heading: no level or speed is said so
+        self:emit("HDG " .. ids[1] .. " " .. f.num(q.value))
+        hdg_done = true
       end
     end
   end

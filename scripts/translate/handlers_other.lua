@@ -1,7 +1,7 @@
 -- Handlers of the traffic, route and simulation-control instructions (CRE,
 -- MOVE, DEL, DIRECT, ADDWPT, DEFWPT, DELWPT, DEST/ORIG, LNAV/VNAV, POS,
 -- LISTRTE, BANK, FF, DT, DTMULT, SEED, IC, ECHO, ASAS, RESO, ZONER/ZONEDH,
--- DTLOOK, NOISE); see translate/handlers.lua for the handler contract.
+-- DTLOOK, NOISE, TRAIL); see translate/handlers.lua for the handler contract.
 local L = require("translate.lexicon")
 
 return function(H, f, compass)
@@ -405,6 +405,19 @@ return function(H, f, compass)
       self:need(vertical and "What half-height, in feet, should the protected zone have?"
         or "What radius, in nautical miles, should the protected zone have?")
     end
+  end
+  -- TRAIL acid colour ("show KL204's trail in red"), else TRAIL ON/OFF with
+  -- the time between trail points when one is said ("trails every 5 s")
+  function m:trail(s)
+    local at = self:find_word(s.b, s.e, "@trail_colours")
+    if at < s.e then
+      local id = self:acid(s, "get a trail colour")
+      if id then self:emit("TRAIL " .. id .. " " .. self.t[at].text:upper()) end
+      return
+    end
+    local q = first(self, s, { time = true })
+    local switch = on_off(self, s)
+    self:emit("TRAIL " .. switch .. ((q and switch == "ON") and (" " .. f.num(q.value)) or ""))
   end
   function m:look_ahead(s)
     local q = first(self, s, { time = true, plain = true })

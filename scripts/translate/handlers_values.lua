@@ -44,7 +44,11 @@ return function(H, f, wrap, compass)
         if q.kind == "heading" then return self:heading(s) end
         if q.kind == "plain" then
           -- "maintain two five zero" is a speed; "maintain four thousand" an altitude.
-          if q.value >= 100 and q.value <= 400 and not q.number.thousand and not q.number.hundred then
+          -- so is a value with knots one word further on ("maintain two one, uh, turn knots")
+          local k = self:skip_fillers(q.e)
+          if (q.value >= 100 and q.value <= 400 or self:word(k, "@speed_units")
+                or self:word(self:skip_fillers(k + 1), "@speed_units"))
+              and not q.number.thousand and not q.number.hundred then
             return self:speed(s)
           end
           return self:altitude(s)
@@ -52,6 +56,11 @@ return function(H, f, wrap, compass)
       end
     end
     if self:word_in(s.trig, s.e, "heading") then return self:heading(s) end
+    -- "maintain present speed": the speed instruction that follows says it
+    if #qs == 0 and self:word(s.e, "speed spd airspeed") then
+      self:acids(s)  -- the aircraft it names is the speed instruction's subject
+      return
+    end
     -- "maintain present altitude": the current level, read from the traffic
     self:altitude(s)
   end
@@ -118,6 +127,12 @@ return function(H, f, wrap, compass)
       if not r then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(ft) .. " ft.") end
       if r < 100 and not q.number.typed then r = r * 1000 end
       ft = r
+      -- cleared altitudes are whole hundreds of feet: a spoken 2710 has a
+      -- misheard word; the longest run of its words that is one counts
+      if not q.number.typed and ft % 100 ~= 0 then
+        ft = self:whole_hundreds(q)
+        if not ft then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(r) .. " ft.") end
+      end
     end
     -- Relative: "by 2000 ft", "1000 ft from its present altitude", "1000 feet below AC01".
     local others = self:refs_in(s.b, s.e, "aircraft")
@@ -127,7 +142,8 @@ return function(H, f, wrap, compass)
       if not ref then return self:need("What is the altitude of " .. others[#others].name .. "?") end
       return self:emit("ALT " .. ids[1] .. " " .. f.int((ref.alt_ft or 0) + (above and ft or -ft)))
     end
-    local relative = q.by or self:word_in(s.b, s.e, "@relative")
+    -- ("by" before the instruction belongs to something else: "time by departure, climb ...")
+    local relative = q.by or self:word_in(s.trig, s.e, "@relative")
     if not relative and now and not q.to and not fl and dir ~= 0 then
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then
@@ -188,6 +204,15 @@ return function(H, f, wrap, compass)
       local src = self:state(refs[#refs].name)
       if not src then return self:need("What is the speed of " .. refs[#refs].name .. "?") end
       return self:emit("SPD " .. refs[1].name .. " " .. ((src.mach or 0) > 0 and f.mach(src.mach) or f.int(src.cas_kt or 0)))
+    end
+    -- "maintain present speed": each aircraft's current speed, read from the traffic
+    if not q and self:word_in(math.max(1, s.trig - 2), s.trig, "@present") then
+      for _, id in ipairs(ids) do
+        local now = self:state(id)
+        if not now then return self:need("What is the current speed of " .. id .. "?") end
+        self:emit("SPD " .. id .. " " .. ((now.mach or 0) > 0 and f.mach(now.mach) or f.int(now.cas_kt or 0)))
+      end
+      return
     end
     if not q then return self:need("What speed should " .. ids[1] .. " fly? Please give knots or a Mach number.") end
     local dir = self:direction(s)
@@ -250,13 +275,16 @@ return function(H, f, wrap, compass)
     local id = ids[1]
     local now = self:state(id)
     local refs = self:refs_in(s.b, s.e, "aircraft")
-    local hdg
+    local hdg, offset  -- offset: degrees from each aircraft's present heading
     if abs and (abs.kind == "heading" or not (rel and rel.b < abs.b and not correction)) then
       hdg = abs.value
       local n = abs.number
       -- headings are said as three digits; two ("two five") lost their final zero, unless
       -- they end in zero themselves ("three zero": 030 or 300?) or one was said
-      if not n.typed and n.lead_digit and H.cut_off(n) then
+      -- "heading to niner zero": two digits after "to" are a heading only with "to" as "two"
+      if not n.typed and n.groups == 2 and #n.digits == 2 and self:word(abs.b - 1, "@two_heard") then
+        hdg = 200 + hdg
+      elseif not n.typed and n.lead_digit and H.cut_off(n) then
         return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
       end
       if not n.typed and n.lead_digit and n.groups == 2 and hdg < 40 then hdg = hdg * 10 end
@@ -275,14 +303,14 @@ return function(H, f, wrap, compass)
       if not now then return self:need("What is the current heading of " .. id .. "?") end
       local dir = rel.turn ~= 0 and rel.turn or turn
       if dir == 0 then return self:need("Should " .. id .. " turn left or right?") end
-      hdg = now.hdg_deg + dir * rel.value
+      offset = dir * rel.value
     elseif named then
       hdg = named
     elseif self:word_in(s.b, s.e, "@turn_around") then
       if not now then return self:need("What is the current heading of " .. id .. "?") end
-      hdg = now.hdg_deg + 180
+      offset = 180
     elseif self:word_in(math.max(1, s.trig - 2), s.e, "@present") and now then
-      hdg = now.hdg_deg
+      offset = 0
     elseif #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
       local src = self:state(refs[#refs].name)
       if not src then return self:need("What is the heading of " .. refs[#refs].name .. "?") end
@@ -290,8 +318,13 @@ return function(H, f, wrap, compass)
     else
       return self:need("What heading should " .. id .. " fly?")
     end
-    local h = f.num(wrap(math.floor(hdg * 1000 + 0.5) / 1000))
-    for _, a in ipairs(ids) do self:emit("HDG " .. a .. " " .. h) end
+    -- a change from the present heading is each aircraft's own
+    for _, a in ipairs(ids) do
+      local from = offset and self:state(a)
+      if offset and not from then return self:need("What is the current heading of " .. a .. "?") end
+      local h = from and from.hdg_deg + offset or hdg
+      self:emit("HDG " .. a .. " " .. f.num(wrap(math.floor(h * 1000 + 0.5) / 1000)))
+    end
   end
 
   function m:vspeed(s)

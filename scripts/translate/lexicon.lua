@@ -103,6 +103,14 @@ return {
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
   },
+  -- tens words, which join the unit digit after them into one number
+  tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
+  -- words speech recognition writes for a spoken "two" before digits
+  two_heard = { "to", "too", "t" },
+  -- speed units that may stand apart from their number ("two one zero, knots")
+  speed_units = { "knots", "knot", "kts", "kt" },
+  -- the colours TRAIL acid accepts
+  trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- units that make an altitude a level in feet

@@ -274,6 +274,11 @@ end
 -- on one scratch copy where the earlier commands of the line have run (so
 -- "CRE X ... ; HDG X 90" checks); the real sim is untouched. The outputs
 -- wait in state.outputs for the execute node.
+-- A command that parses but that the simulator refuses when it runs (IC of a
+-- scenario file that is not there, CRE of a callsign in use) says what the
+-- speaker asked for: it is the translation, and the refusal is its result
+-- where it runs (the REPL shows "error: ..."). Only an LLM with retries left
+-- is sent back to try again.
 function M.validate(state, ctx)
   local cmds = M.split_commands(state.candidate or "")
   if #cmds == 0 then return rejected(state, ctx, "validate", "no command was produced") end
@@ -286,7 +291,10 @@ function M.validate(state, ctx)
     local ok, msg = scratch:check(c)
     if not ok then return rejected(state, ctx, "validate", msg) end
     ok, msg = scratch:exec(c)
-    if not ok then return rejected(state, ctx, "validate", msg) end
+    if not ok and state.source == "llm" and state.retries < ctx.max_retries then
+      return rejected(state, ctx, "validate", msg)
+    end
+    if not ok then msg = "the simulator will refuse it: " .. msg end
     if msg and msg ~= "" then outputs[#outputs + 1] = msg end
   end
   state.outputs = outputs

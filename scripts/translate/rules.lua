@@ -59,6 +59,7 @@ return function(intent, rule, words)
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
+  intent "trail" { cmd = "TRAIL", args = { "acid", "ON", "OFF" }, handler = "trail" }
 
   -- an instruction announced with "expect" is no clearance
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
@@ -95,7 +96,7 @@ return function(intent, rule, words)
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn", "hdg" }
   rule { "left right", "hdg", when = function(g, i)
-    return g:number_at(i + 1) and not g:word(i + 2, "degrees degree") and not g:preceded_by(i, 2, "turn heading")
+    return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
   rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
@@ -146,7 +147,11 @@ return function(intent, rule, words)
   rule { "move reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
 
-  -- simulation control
+  -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
+  -- (a holding pattern) is no pause of the simulation
+  rule { "hold", "maintain", near = { 2, "heading hdg altitude level speed" } }
+  rule { "hold", "hold", near = { 3, "@sim" } }
+  rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "pause hold freeze", "hold" }
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
@@ -189,6 +194,9 @@ return function(intent, rule, words)
   rule { "lookahead dtlook", "dtlook" }
   rule { "turbulence noise", "noise" }
 
+  -- the radar display
+  rule { "trail trails", "trail" }
+
   -- The words people use for each command, beyond the rule words above:
   -- retrieval documents for the LLM modes (grammar.documents()).
   words "CRE" "add, create, spawn, insert or put a new aircraft or flight of a type (Boeing, Airbus) at a position with heading, altitude and speed"
@@ -214,5 +222,6 @@ return function(intent, rule, words)
   words "ATALT" "when or once an aircraft reaches, passes or gets to an altitude or flight level, then do a command"
   words "ATSPD" "when or once an aircraft reaches, slows to or accelerates to a speed, then do a command"
   words "ATDIST" "when or once an aircraft is within a distance in nautical miles of a point, then do a command"
+  words "TRAIL" "show, hide, enable or disable aircraft trails, the history or track of where aircraft have been on the radar; trail colour blue, red or yellow"
   words "ECHO" "print, show or display a message or text"
 end

@@ -25,9 +25,9 @@ TEST_CASE("conformance: BlueSky's scenario files run with zero crashes") {
   ScenarioRunOptions opts;
   opts.navdb = *db;
   const char* full = std::getenv("SQUAWK_CONFORMANCE_FULL");
-  opts.max_time = full && *full == '1' ? 3600.0 : 30.0;
+  opts.max_sim_time = full && *full == '1' ? 3600.0 : 30.0;
   const ConformanceReport rep = run_conformance((root / "scenario").string(), opts);
-  MESSAGE("max_time " << opts.max_time << " s\n" << conformance_markdown(rep));
+  MESSAGE("max_sim_time " << opts.max_sim_time << " s\n" << conformance_markdown(rep));
   CHECK(rep.files == 325);
   CHECK(rep.loaded == rep.files);
   CHECK(rep.fully_run == rep.files);

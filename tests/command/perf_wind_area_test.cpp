@@ -50,7 +50,48 @@ TEST_CASE("AREA deletes aircraft that leave the box, not those never inside") {
   CHECK(s.sim().index_of("OUT1") >= 0);
   REQUIRE(s.exec("AREA OFF"));
   CHECK(!s.sim().area_active());
-  CHECK(!s.exec("AREA SECTOR1"));  // named shapes are not supported
+  CHECK(!s.exec("AREA SECTOR1"));  // no such shape
+}
+
+TEST_CASE("AREA with named shapes: a circle, then a polygon between altitudes; DEL removes a shape") {
+  Stack s(1);
+  REQUIRE(s.exec("CIRCLE CTR 52.0 4.2 12"));
+  REQUIRE(s.exec("POLYALT UPPER FL250 FL100 52.5 3 53.5 3 53.5 6 52.5 6"));
+  REQUIRE(s.exec("AREA CTR"));
+  CHECK(s.sim().area_name() == "CTR");
+  REQUIRE(s.exec("CRE C1 A320 52.0 4.2 90 FL100 250"));   // leaves the 12 NM circle after ~2 min
+  REQUIRE(s.exec("CRE P1 A320 53.0 4.5 0 FL200 250"));
+  REQUIRE(s.run_until(60.0));
+  CHECK(s.sim().index_of("C1") >= 0);
+  REQUIRE(s.run_until(240.0));
+  CHECK(s.sim().index_of("C1") < 0);
+  CHECK(s.sim().index_of("P1") >= 0);  // never inside the circle
+  REQUIRE(s.exec("AREA UPPER"));
+  REQUIRE(s.run_until(250.0));
+  REQUIRE(s.exec("P1 ALT FL300"));  // climbs out through the polygon's top
+  REQUIRE(s.run_until(600.0));
+  CHECK(s.sim().index_of("P1") < 0);
+  REQUIRE(s.exec("DEL CTR"));
+  CHECK(s.sim().shapes().find("CTR") == nullptr);
+  auto bad = s.exec("DEL CTR");
+  REQUIRE(!bad);
+  CHECK(bad.status().message().find("no aircraft or shape 'CTR'") != std::string::npos);
+}
+
+TEST_CASE("shape commands that fail leave the simulation byte-identical and name the problem") {
+  Stack s(1);
+  REQUIRE(s.exec("BOX B 51 3 53 5"));
+  const std::string before = s.sim().snapshot();
+  for (const char* line : {"POLY P 52 4 53 4", "CIRCLE C 52 4 -3", "BOX B2 95 3 53 5", "AREA NOPE",
+                           "POLYALT Q FL300 FL100 52 4"}) {
+    auto r = s.exec(line);
+    CHECK_MESSAGE(!r, line);
+    CHECK_MESSAGE(s.sim().snapshot() == before, line);
+  }
+  CHECK(s.exec("CIRCLE C 52 4 -3").status().message().find("radius -3 NM must be > 0") != std::string::npos);
+  CHECK(s.exec("POLY P 52 4 53 4").status().message().find("at least 3 lat,lon points") != std::string::npos);
+  REQUIRE(s.exec("BOX B 51 3 53 5 FL100 FL300"));  // top below bottom: swapped, as BlueSky does
+  CHECK(s.sim().shapes().find("B")->top > s.sim().shapes().find("B")->bottom);
 }
 
 TEST_CASE("ADDWPT FLYOVER / FLYBY switch the mode of the waypoints added next") {

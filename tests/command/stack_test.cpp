@@ -202,6 +202,27 @@ TEST_CASE("IC and PCALL: relative times, %n arguments, CR line ends, unknown com
   CHECK(error_of(s, "IC nowhere").find("no scenario file 'nowhere'") != std::string::npos);
 }
 
+TEST_CASE("TRAIL: on/off with the point interval, a colour per aircraft; part of the state; RESET clears it") {
+  Stack s = with_kl204();
+  CHECK(s.exec("TRAIL").value() == "TRAIL OFF, a point every 10 s");
+  std::string before = s.snapshot();
+  REQUIRE(s.exec("TRAIL ON 5"));
+  CHECK(s.snapshot() != before);
+  CHECK(s.trails().on);
+  CHECK(s.trails().dt == doctest::Approx(5.0));
+  REQUIRE(s.exec("TRAILS KL204 RED"));
+  CHECK(s.trails().colour.at("KL204") == "RED");
+  CHECK(error_of(s, "TRAIL KL204 GREEN").find("BLUE, RED or YELLOW, got 'GREEN'") != std::string::npos);
+  CHECK(error_of(s, "TRAIL ON fast").find("seconds, got 'FAST'") != std::string::npos);
+  CHECK(error_of(s, "TRAIL ON 0").find("must be > 0 s") != std::string::npos);
+  CHECK(error_of(s, "TRAIL KL999 RED").find("no aircraft 'KL999'") != std::string::npos);
+  REQUIRE(s.exec("TRAIL OFF"));
+  CHECK(s.exec("TRAIL").value() == "TRAIL OFF, a point every 5 s");
+  s.reset();
+  CHECK(s.trails().colour.empty());
+  CHECK(s.trails().dt == doctest::Approx(10.0));
+}
+
 TEST_CASE("RESET, SEED and MCRE are reproducible") {
   Stack a(0), b(0);
   REQUIRE(a.exec("SEED 42; MCRE 5"));

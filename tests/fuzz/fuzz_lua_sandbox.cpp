@@ -1,7 +1,10 @@
 // libFuzzer target: generated Lua scripts in the sandboxed VM with the squawk
 // API. Each input byte pair picks a statement from a list of userdata-abusing,
 // budget-testing and sandbox-probing templates (with a small number from the
-// second byte); input starting with '#' runs the rest as raw Lua instead.
+// second byte); a first byte of 252-255 picks from the rare list instead
+// (statements whose first use per VM loads Lua modules, ~7 ms in Release,
+// which would otherwise dominate every input); input starting with '#' runs
+// the rest as raw Lua instead.
 // Invariants: no crash, no sanitizer report, no hang (a small instruction
 // budget per call); errors are Status values.
 #include <cstddef>
@@ -28,7 +31,6 @@ const char* const kStatements[] = {
     "local o = X[#X] if o then o:exec('DT 0.0%d') end",
     "local o = X[#X] if o then X[#X + 1] = o:copy() end",
     "local o = X[#X] if o then o:aircraft() o:conflicts() o:snapshot() o:output() end",
-    "local o = X[#X] if o then squawk.translate.run('KL%d climb FL300', { sim = o, mode = 'offline' }) end",
     "setmetatable({ x = X[#X] }, { __gc = function(t) R = t.x end })",
     "if R then R:exec('CRE KL1 B738 52 4 90 FL200 250') end",
     "if R then R:count() end",
@@ -45,19 +47,28 @@ const char* const kStatements[] = {
     "io.open('x%d.txt', 'w')",
     "squawk.llm.client{ url = 'http://127.0.0.1:1', model = 'm', timeout = %d / 0 }",
     "squawk.env.evaluate{ scenario = 'scenarios/horizontal_cr.lua', episodes = %d / 0 }",
-    "squawk.translate.run('climb FL%d', { mode = 'offline' })",
     "local t = {} for i = 1, %d do t[i] = {} end",
     "error('boom %d')",
-    "X[#X + 1] = squawk.rag.index and squawk.rag.index{} or nil",
+    "local o = X[#X] if o then o:search('climb %d', 3) end",
 };
 constexpr size_t kCount = sizeof(kStatements) / sizeof(kStatements[0]);
+
+const char* const kRare[] = {
+    "local o = X[#X] if o then squawk.translate.run('KL%d climb FL300', { sim = o, mode = 'offline' }) end",
+    "squawk.translate.run('climb FL%d', { mode = 'offline' })",
+    "RI = RI or squawk.rag.index{} X[#X + 1] = RI",  // one index per input: building it is ~1 ms
+};
+constexpr size_t kRareCount = sizeof(kRare) / sizeof(kRare[0]);
+constexpr uint8_t kRareFrom = 252;
 
 std::string generate(const uint8_t* data, size_t size) {
   std::string code = "X = {}\n";
   for (size_t i = 0; i + 1 < size; i += 2) {
-    std::string st = kStatements[data[i] % kCount];
+    const bool rare = data[i] >= kRareFrom;
+    std::string st = rare ? kRare[data[i + 1] % kRareCount] : kStatements[data[i] % kCount];
     const auto at = st.find("%d");
-    if (at != std::string::npos) st.replace(at, 2, std::to_string(data[i + 1] % 64));
+    const int n = rare ? data[i + 1] / kRareCount % 64 : data[i + 1] % 64;
+    if (at != std::string::npos) st.replace(at, 2, std::to_string(n));
     code += "pcall(function() " + st + " end)\n";
   }
   return code;

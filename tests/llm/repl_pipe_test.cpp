@@ -69,7 +69,7 @@ TEST_CASE("repl from a pipe: FF moves the clock, conflicts are shown, a scenario
                                    "!HOLD\n");
   INFO(out);
   CHECK(out.find("scenario commands so far: 3 executed, 0 skipped, 2 failed") != std::string::npos);
-  CHECK(out.find("DEST BAW1 EHAM: argument 2") != std::string::npos);
+  CHECK(out.find("DEST BAW1 QQXA: argument 2") != std::string::npos);
   CHECK(out.find("> FF 300") != std::string::npos);
   CHECK(out.find("fast-forwarded 300 s: t = 0.0 s -> 300.0 s") != std::string::npos);
   CHECK(out.find("conflict BAW1 & DLH2: loss of separation in") != std::string::npos);

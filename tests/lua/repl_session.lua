@@ -114,7 +114,7 @@ do
   local text = r:handle(":run 45")
   check(find(text, "half a minute in"), text)
   check(find(text, "1 scenario command failed"), text)
-  check(find(text, "ORIG DLH2 EGLL"), text)
+  check(find(text, "ORIG DLH2 QQXC"), text)
   local ev = kinds(r.session:run(1))
   check_eq(ev.failure, nil)
 end

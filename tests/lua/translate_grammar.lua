@@ -36,6 +36,13 @@ do -- speeds: knots and Mach in every common form
   check_eq(tr("slow AC03 to 180 kts"), "SPD AC03 180")
 end
 
+do -- a typed flight number with letters after the airline name; glued units stay units
+  check_eq(tr("Ryanair 8UK, fly heading 210, speed 230"), "HDG RYR8UK 210 ; SPD RYR8UK 230")
+  check_eq(tr("speedbird 22mx climb FL300"), "ALT BAW22MX FL300")
+  check_eq(tr("KLM1023 speed 250kt"), "SPD KLM1023 250")
+  check_eq(tr("KLM1023 climb 30k"), "ALT KLM1023 30000")
+end
+
 do -- headings: absolute, compass words, ATC digits
   check_eq(tr("Shamrock four five kilo, turn left heading three one zero"), "HDG EIN45K 310")
   check_eq(tr("Point AC01 due south"), "HDG AC01 180")
@@ -123,6 +130,81 @@ do -- waypoints are matched by sound
   local w = world_of("CRE ACA326 B738 40 -74 360 12000 250 ; DEFWPT GAYEL 40.5 -73.5 ; ADDWPT ACA326 GAYEL")
   check_eq(tr("Air Canada three twenty six cleared direct Gale", w), "DIRECT ACA326 GAYEL")
   check_eq(tr("Air Canada three twenty six proceed direct", w), "DIRECT ACA326 GAYEL")
+end
+
+do -- callsigns restarted, corrected or heard without their letters
+  local w = world_of("CRE DAL646 B738 40 -74 360 5000 250 ; CRE RPA1411 E170 40.5 -74 90 5000 250 ; "
+    .. "CRE DLH4130 A320 41 -74 90 5000 250 ; CRE BAW96CA A320 41 -73 90 5000 250 ; CRE DAL84 A320 41 -72 0 9000 250")
+  check_eq(tr("Delta Sixty Delta Six Forty Six maintain three thousand", w), "ALT DAL646 3000")
+  check_eq(tr("Brickyard Eleven correction fourteen eleven descend maintain three thousand", w), "ALT RPA1411 3000")
+  check_eq(tr("lufthansa thirty one correction lufthansa forty one thirty turn left heading two seven zero", w),
+    "HDG DLH4130 270")
+  check_eq(tr("speedbird nine six right heading zero nine zero", w), "HDG BAW96CA 90")
+  -- the digits differ: still a question, and a list of aircraft is no restart
+  check(asks("Delta Ninety Four maintain two one zero knots", w), "DAL94 is not DAL84")
+  check(asks("speedbird nine six charlie bravo right heading zero nine zero", w), "BAW96CB is not BAW96CA")
+  check_eq(tr("DAL646 and DAL84 climb to FL300", w), "ALT DAL646 FL300 ; ALT DAL84 FL300")
+  check_eq(tr("JetBlue eight tier thirteen speed two zero zero", world_of("CRE JBU813 A320 40 -74 0 9000 250")),
+    "SPD JBU813 200")
+  check_eq(tr("Brickyard eight in eighty two descend and maintain five thousand",
+    world_of("CRE RPA1882 E170 40 -74 0 9000 250")), "ALT RPA1882 5000")
+end
+
+do -- values as speech recognition writes them
+  local w = world_of("CRE SWA5578 B738 40 -74 360 5000 250 ; CRE TAP9148 A320 41 -74 90 9000 250")
+  check_eq(tr("Southwest fifty five seventy eight turn left heading three f four zero", w), "HDG SWA5578 340")
+  check_eq(tr("Southwest fifty five seventy eight maintain one nine-year zero knots", w), "SPD SWA5578 190")
+  check_eq(tr("Southwest fifty five seventy eight reduce speed to two once", w), "SPD SWA5578 210")
+  check_eq(tr("Portugal 91-48 heavy at 5000 reduce speed to 21-0", w), "ATALT TAP9148 5000 SPD TAP9148 210")
+  check_eq(tr("Southwest fifty five seventy eight fly heading to niner zero", w), "HDG SWA5578 290")
+  check_eq(tr("Southwest fifty five seventy eight fly heading T seven zero", w), "HDG SWA5578 270")
+  check_eq(tr("Southwest fifty five seventy eight maintain two one, uh, turn knots", w), "SPD SWA5578 210")
+  check_eq(tr("Southwest fifty five seventy eight descend to disregard maintain one eighty knots", w), "SPD SWA5578 180")
+  check_eq(tr("Southwest fifty five seventy eight descend and maintain two thousand seven hundred ten", w),
+    "ALT SWA5578 2700")
+  check_eq(tr("Southwest fifty five seventy eight climb and maintain one three thousand, zero niner zero", w),
+    "ALT SWA5578 13000 ; HDG SWA5578 90")
+  check_eq(tr("Land Juliett fifty five seventy eight rioted in two seven zero",
+    world_of("CRE SWA5578 B738 40 -74 360 5000 250")), "HDG SWA5578 270")
+  check_eq(tr("Boeing 787-9"):find("DTMULT"), nil)
+  check_eq(tr("Southwest fifty five seventy eight mark point six seven", w), "SPD SWA5578 M0.67")
+  -- a stutter is repaired, a compound number is not cut ("seventy six thousand" is no 6000)
+  check_eq(tr("Southwest fifty five seventy eight climb and maintain one four fourteen thousand", w), "ALT SWA5578 14000")
+  check(asks("Southwest fifty five seventy eight climb and maintain seventy six thousand", w), "76000 ft is asked")
+end
+
+do -- one instruction for two aircraft, each with its own value; 'by' before the verb is not relative
+  local w = world_of("CRE EZY45 A320 51 2 45 FL280 290 ; CRE AFR1234 A321 49 2 180 FL350 300")
+  check_eq(tr("turn EZY45 to 010 and AFR1234 to 200", w), "HDG EZY45 10 ; HDG AFR1234 200")
+  check_eq(tr("EZY45 and AFR1234 climb to FL360", w), "ALT EZY45 FL360 ; ALT AFR1234 FL360")
+  check_eq(tr("EZY45 time by departure descend one two thousand", w), "ALT EZY45 12000")
+  check_eq(tr("EZY45 climb by 2000 feet", w), "ALT EZY45 30000")
+  -- keeping a value: "hold" with a value noun is no pause of the simulation
+  check_eq(tr("EZY45, hold present heading", w), "HDG EZY45 45")
+  check_eq(tr("EZY45 maintain present speed", w), "SPD EZY45 290")
+  check_eq(tr("hold the simulation", w), "HOLD")
+  check(asks("EZY45 hold", w), "a holding pattern is not a pause of the simulation")
+  check(asks("EZY45 hold at present position", w), "nor a kept altitude")
+  check_eq(tr("hold the sim and EZY45 maintain present heading", w), "HOLD ; HDG EZY45 45")
+  -- an aircraft named just before an instruction word is that instruction's
+  check_eq(tr("EZY45 turn left heading 300 and AFR1234 descend FL200", w), "HDG EZY45 300 ; ALT AFR1234 FL200")
+  check_eq(tr("pause the simulation and EZY45 turn left heading 300", w), "HOLD ; HDG EZY45 300")
+  -- a change from the present heading is each aircraft's own; the aircraft named together stay together
+  check_eq(tr("EZY45 and AFR1234 turn left 20 degrees", w), "HDG EZY45 25 ; HDG AFR1234 160")
+  check_eq(tr("EZY45 and AFR1234 maintain present heading", w), "HDG EZY45 45 ; HDG AFR1234 180")
+  check_eq(tr("EZY45 and AFR1234 turn around", w), "HDG EZY45 225 ; HDG AFR1234 360")
+  check_eq(tr("EZY45 and AFR1234 maintain present speed", w), "SPD EZY45 290 ; SPD AFR1234 300")
+  check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15")
+end
+
+do -- the display's trails: on/off with the point interval, a colour per aircraft
+  local w = { aircraft = { plane("KLM123", 90, 25000, 280) } }
+  check_eq(tr("Show aircraft trails"), "TRAIL ON")
+  check_eq(tr("Hide the trails"), "TRAIL OFF")
+  check_eq(tr("turn on trails every 5 seconds"), "TRAIL ON 5")
+  check_eq(tr("Go back to real time and turn the trails off"), "OP ; TRAIL OFF")
+  check_eq(tr("show the trail of KLM123 in red", w), "TRAIL KLM123 RED")
+  check(asks("make the trail yellow"), "a colour needs an aircraft")
 end
 
 do -- bad input never crashes and gets a question

@@ -110,3 +110,21 @@ do
   check_eq(r.commands and r.commands[1], "SPD KL204 250")
   check_eq(path(r.trace), "start retrieve select select fill fill validate execute")
 end
+
+-- A command that parses but that the simulator refuses when it runs is the
+-- translation, not a question: "load scenario nothere.scn" is IC nothere.scn,
+-- and the missing file is what running it reports. A command that does not
+-- parse is still no translation (an LLM with retries left is sent back).
+do
+  local r = graph.translate("load scenario nothere.scn", { sim = sim, mode = "offline" })
+  check_eq(r.commands and r.commands[1], "IC nothere.scn")
+  check_eq(r.error, nil)
+  check(graph.format_trace(r.trace):find("the simulator will refuse it: IC nothere.scn: no scenario file", 1, true)
+    ~= nil, "the trace names the refusal")
+  local llm = fake_llm({ "\\boxed{IC nothere.scn}", "\\boxed{IC nothere.scn}" })
+  r = graph.translate("load scenario nothere.scn", { sim = sim, llm = llm, mode = "single", max_retries = 1 })
+  check_eq(llm.n, 2, "the LLM was given one retry with the refusal")
+  check_eq(r.commands and r.commands[1], "IC nothere.scn")
+  r = graph.translate("KL204 direct QQXQQ", { sim = sim, mode = "offline" })
+  check(r.error ~= nil, "an unknown fix does not parse: no translation")
+end

@@ -35,6 +35,9 @@ TEST_CASE("state_json: aircraft with selected values and route; each conflict on
   CHECK(af["sel_cas_kt"].get<double>() == doctest::Approx(280.0).epsilon(1e-6));
   CHECK(af["route"].empty());
   CHECK(af["active_wpt"].is_null());
+  CHECK(j["trail"] == json({{"on", false}, {"dt_s", 10.0}, {"colour", json::object()}}));
+  REQUIRE(s.exec("TRAIL ON 4; TRAIL KL204 YELLOW").is_ok());
+  CHECK(serve::state_json(s)["trail"] == json({{"on", true}, {"dt_s", 4.0}, {"colour", {{"KL204", "YELLOW"}}}}));
 
   // The detector reports the pair in both orders; the view once, a < b.
   REQUIRE(s.sim().conflicts().size() == 2);

@@ -166,4 +166,26 @@ TEST_CASE("digit homophones between digits are digits") {
   CHECK(read("heading three three fine") == "heading three three five");
   CHECK(read("climb to two five zero") == "climb to two five zero");  // "to" before digits stays
   CHECK(read("two five zero for now") == "two five zero for now");    // "for" after digits stays
+  CHECK(read("reduce speed to two once") == "reduce speed to two one");
+  CHECK(read("Frontier one A four") == "frontier one eight four");
+  CHECK(read("two once more") == "two once more");                    // only at the end
+  CHECK(read("speed two zero to") == "speed two zero to");            // "to" never closes
+  // noise between spoken digits: a lone lower-case letter, a hyphen-glued word
+  CHECK(read("heading three f four zero") == "heading three four zero");
+  CHECK(read("one nine-year zero knots") == "one nine zero knots");
+  CHECK(read("six D four") == "six d four");                          // a written capital stays (a callsign letter)
+  CHECK(read("runway two a") == "runway two a");                       // not between digits
+}
+
+TEST_CASE("hyphen-joined digit groups are one number; aircraft models stay names") {
+  auto t = lex("speed 21-0 for 91-48");
+  REQUIRE(t.size() == 4);
+  CHECK(t[1].kind == TokKind::kNumber);
+  CHECK(t[1].num == 210);
+  CHECK(t[3].num == 9148);
+  for (const char* model : {"787-9", "737-800", "1-2-3-4-5"}) {
+    auto m = lex(model);
+    REQUIRE(m.size() == 1);
+    CHECK_MESSAGE(m[0].kind == TokKind::kWord, model);
+  }
 }
