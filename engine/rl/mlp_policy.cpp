@@ -68,6 +68,26 @@ void MlpPolicy::act(std::span<const float> obs, int n, std::span<const int> /*sl
   }
 }
 
+void MlpPolicy::log_probs(std::span<const float> obs, int n, std::span<const ActionSample> actions,
+                          std::span<float> out) {
+  forward(obs, n, out_);
+  const auto k = static_cast<size_t>(mlp_.out_dim());
+  if (gaussian()) {
+    const float log_std = params_.back();
+    for (int r = 0; r < n; ++r) {
+      const auto i = static_cast<size_t>(r);
+      out[i] = nn::gaussian_log_prob(actions[i].value, out_[i], log_std);
+    }
+    return;
+  }
+  logp_.resize(k);
+  for (int r = 0; r < n; ++r) {
+    const auto i = static_cast<size_t>(r);
+    nn::log_softmax(std::span<const float>(out_).subspan(i * k, k), logp_);
+    out[i] = logp_[static_cast<size_t>(actions[i].index)];
+  }
+}
+
 float MlpPolicy::accumulate_gradient(std::span<const float> obs, int n,
                                      std::span<const ActionSample> actions,
                                      std::span<const float> coef, float ent_coef) {

@@ -44,6 +44,9 @@ class MlpPolicy : public Policy {
   std::span<float> grads() override { return grads_; }
   float accumulate_gradient(std::span<const float> obs, int n, std::span<const ActionSample> actions,
                             std::span<const float> coef, float ent_coef) override;
+  bool has_log_probs() const override { return true; }
+  void log_probs(std::span<const float> obs, int n, std::span<const ActionSample> actions,
+                 std::span<float> out) override;
 
   const MlpPolicySpec& spec() const { return spec_; }
   bool gaussian() const { return spec_.head == "gaussian"; }

@@ -50,6 +50,11 @@ class Policy {
                                     std::span<const float> /*coef*/, float /*ent_coef*/) {
     return 0.0f;
   }
+  // Policies that can score given actions (the clipped-ratio learner needs
+  // it) return true and fill out[r] = log pi(actions[r] | obs row r).
+  virtual bool has_log_probs() const { return false; }
+  virtual void log_probs(std::span<const float> /*obs*/, int /*n*/,
+                         std::span<const ActionSample> /*actions*/, std::span<float> /*out*/) {}
 };
 
 // Ok when `policy` reads observations of `obs_size` values, else an error

@@ -10,19 +10,30 @@ constexpr uint64_t kTrainPolicySalt = 0x7EA1ull;
 }
 
 Status TrainConfig::validate() const {
-  if (estimator != "vpg" && estimator != "improved")
-    return Status::invalid("train estimator '" + estimator + "': expected \"vpg\" or \"improved\"");
+  if (estimator != "vpg" && estimator != "improved" && estimator != "ppo")
+    return Status::invalid("train estimator '" + estimator + "': expected \"vpg\", \"improved\" or \"ppo\"");
   if (episodes < 1) return Status::invalid("train episodes must be at least 1");
   if (episodes_per_update < 1) return Status::invalid("train episodes_per_update must be at least 1");
   if (num_envs < 1) return Status::invalid("train num_envs must be at least 1");
   if (!(lr > 0.0) || !(lr_final > 0.0)) return Status::invalid("train lr and lr_final must be positive");
   if (!(gamma > 0.0 && gamma <= 1.0)) return Status::invalid("train gamma must lie in (0, 1]");
-  if (entropy_coef < 0.0) return Status::invalid("train entropy_coef must be >= 0");
+  if (entropy_coef < 0.0 || entropy_final.value_or(0.0) < 0.0)
+    return Status::invalid("train entropy_coef and entropy_final must be >= 0");
+  if (!(lambda >= 0.0 && lambda <= 1.0)) return Status::invalid("train lambda must lie in [0, 1]");
+  if (epochs < 1 || epochs > 100) return Status::invalid("train epochs must lie in 1..100");
+  if (!(clip > 0.0 && clip < 1.0)) return Status::invalid("train clip must lie in (0, 1)");
   for (int h : value_hidden)
     if (h < 1 || h > 4096) return Status::invalid("train value_hidden widths must lie in 1..4096");
   if (value_iters < 0) return Status::invalid("train value_iters must be >= 0");
   if (eval_every < 0 || eval_episodes < 1)
     return Status::invalid("train eval_every must be >= 0 and eval_episodes >= 1");
+  return Status::ok();
+}
+
+Status check_learner(const Policy& policy, const TrainConfig& config) {
+  if (config.estimator == "ppo" && !policy.has_log_probs())
+    return Status::invalid("train estimator 'ppo' needs a policy that scores its actions; " +
+                           policy.name() + " does not (use \"improved\")");
   return Status::ok();
 }
 
@@ -36,7 +47,7 @@ Trainer::Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, l
       updates_(update_index),
       slot_obs_(static_cast<size_t>(envs.size())),
       slot_samples_(static_cast<size_t>(envs.size())) {
-  if (cfg_.estimator != "improved" || cfg_.value_hidden.empty()) return;
+  if (cfg_.estimator == "vpg" || cfg_.value_hidden.empty()) return;
   std::vector<int> sizes = {envs.obs_size()};
   sizes.insert(sizes.end(), cfg_.value_hidden.begin(), cfg_.value_hidden.end());
   sizes.push_back(1);
@@ -89,10 +100,8 @@ double Trainer::coefficients(std::vector<float>& coef) {
     std::vector<float> v(n);
     nn::MlpCache cache;
     value_->forward(value_params_, batch_obs_.data(), static_cast<int>(n), v.data(), &cache);
-    for (size_t i = 0; i < n; ++i) {
-      adv[i] = g[i] - v[i];
-      value_loss += adv[i] * adv[i] * inv_n;
-    }
+    for (size_t i = 0; i < n; ++i) value_loss += (g[i] - v[i]) * (g[i] - v[i]) * inv_n;
+    adv = advantages(v, g);
     std::vector<float> dv(n);
     for (int it = 0; it < cfg_.value_iters; ++it) {
       if (it > 0) value_->forward(value_params_, batch_obs_.data(), static_cast<int>(n), v.data(), &cache);
@@ -112,6 +121,49 @@ double Trainer::coefficients(std::vector<float>& coef) {
   const double sd = std::sqrt(var);
   for (size_t i = 0; i < n; ++i) coef[i] = static_cast<float>((adv[i] - mean) / (sd + 1e-8) * inv_n);
   return value_loss;
+}
+
+std::vector<double> Trainer::advantages(const std::vector<float>& v, const std::vector<float>& g) const {
+  std::vector<double> adv(g.size());
+  if (cfg_.lambda >= 1.0) {
+    for (size_t i = 0; i < g.size(); ++i) adv[i] = g[i] - v[i];
+    return adv;
+  }
+  size_t start = 0;
+  for (int len : batch_lengths_) {
+    double acc = 0.0, next_v = 0.0;
+    for (size_t t = start + static_cast<size_t>(len); t-- > start;) {
+      const double delta = batch_samples_[t].reward + cfg_.gamma * next_v - v[t];
+      acc = delta + cfg_.gamma * cfg_.lambda * acc;
+      adv[t] = acc;
+      next_v = v[t];
+    }
+    start += static_cast<size_t>(len);
+  }
+  return adv;
+}
+
+void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, float ent,
+                            UpdateStats& st) {
+  const int n = static_cast<int>(acts.size());
+  std::vector<float> old_logp(acts.size()), logp(acts.size()), c(acts.size());
+  policy_.log_probs(batch_obs_, n, acts, old_logp);
+  for (int e = 0; e < cfg_.epochs; ++e) {
+    if (e > 0) policy_.log_probs(batch_obs_, n, acts, logp);
+    for (size_t i = 0; i < acts.size(); ++i) {
+      // d/dtheta of min(rho A, clip(rho) A) is rho A dlog pi where the
+      // unclipped term is the smaller one, 0 where the clip is active.
+      const double rho = e == 0 ? 1.0 : std::exp(static_cast<double>(logp[i]) - old_logp[i]);
+      const bool clipped = (coef[i] > 0.0f && rho > 1.0 + cfg_.clip) || (coef[i] < 0.0f && rho < 1.0 - cfg_.clip);
+      c[i] = clipped ? 0.0f : static_cast<float>(rho * coef[i]);
+    }
+    std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
+    const float h = policy_.accumulate_gradient(batch_obs_, n, acts, c, ent);
+    const double norm = adam_.step();
+    if (e > 0) continue;
+    st.entropy = h;
+    st.grad_norm = norm;
+  }
 }
 
 UpdateStats Trainer::update(const UpdateProgress& progress) {
@@ -181,10 +233,15 @@ UpdateStats Trainer::update(const UpdateProgress& progress) {
   st.value_loss = coefficients(coef);
   std::vector<ActionSample> batch_acts(batch_samples_.size());
   for (size_t i = 0; i < batch_samples_.size(); ++i) batch_acts[i] = batch_samples_[i].action;
-  const float ent = cfg_.estimator == "improved" ? static_cast<float>(cfg_.entropy_coef / st.samples) : 0.0f;
   const double total = std::max(1.0, static_cast<double>(cfg_.episodes) / static_cast<double>(m));
   const double frac = std::min(1.0, static_cast<double>(updates_ - 1) / total);
+  const double c_h = cfg_.entropy_coef + (cfg_.entropy_final.value_or(cfg_.entropy_coef) - cfg_.entropy_coef) * frac;
+  const float ent = cfg_.estimator == "vpg" ? 0.0f : static_cast<float>(c_h / st.samples);
   adam_.config().lr = static_cast<float>(cfg_.lr + (cfg_.lr_final - cfg_.lr) * frac);
+  if (cfg_.estimator == "ppo") {
+    clipped_steps(coef, batch_acts, ent, st);
+    return st;
+  }
   std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
   st.entropy = policy_.accumulate_gradient(batch_obs_, st.samples, batch_acts, coef, ent);
   st.grad_norm = adam_.step();

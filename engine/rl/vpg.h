@@ -11,7 +11,15 @@
 //     value_hidden is empty), A_t = (G_t - b_t) normalised to zero mean and
 //     unit deviation over the batch, c_H = entropy_coef. The value MLP is
 //     fitted to G by value_iters Adam steps on the mean squared error after
-//     each policy step.
+//     each policy step. With a value MLP and lambda < 1, A_t is GAE(lambda):
+//     sum_{k>=0} (gamma lambda)^k delta_{t+k}, delta_t = r_t + gamma V(s_{t+1})
+//     - V(s_t), V = 0 after an episode's last step (lambda = 1 gives G_t - V(s_t)).
+//   "ppo":      the improved advantages, then `epochs` Adam steps on the
+//     clipped-ratio surrogate  L = -(1/N) sum_t min(rho_t A_t, clip(rho_t,
+//     1 - clip, 1 + clip) A_t) - c_H (1/N) sum_t H,  rho_t = pi(a_t|s_t) /
+//     pi_old(a_t|s_t), pi_old the sampling policy (needs Policy::log_probs).
+// The entropy coefficient falls linearly from entropy_coef to entropy_final
+// over the run's updates, like the step size.
 // Episodes that end without any agent step contribute no sample. The Adam
 // step size falls linearly from lr to lr_final over the run's updates.
 // Policy samples of update u come from Rng(episode_seed(seed ^ salt, u)), and
@@ -22,6 +30,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,14 +42,18 @@
 namespace squawk::rl {
 
 struct TrainConfig {
-  std::string estimator = "improved";  // "vpg" | "improved"
+  std::string estimator = "improved";  // "vpg" | "improved" | "ppo"
   long long episodes = 20000;          // [-] total training episodes
   int episodes_per_update = 32;        // [-] M
   int num_envs = 32;                   // [-] VecEnv slots
   double lr = 1e-3;                    // [-] Adam step size at the start ...
   double lr_final = 1e-3;              // [-] ... decayed linearly to this at `episodes`
   double gamma = 0.99;                 // [-] improved: discount of the reward-to-go
-  double entropy_coef = 0.01;          // [-] improved: entropy bonus c_H
+  double entropy_coef = 0.01;          // [-] improved/ppo: entropy bonus c_H at the start ...
+  std::optional<double> entropy_final; // [-] ... decayed linearly to this at `episodes` (none: constant)
+  double lambda = 1.0;                 // [-] improved/ppo: GAE lambda (1 = reward-to-go - V)
+  int epochs = 4;                      // [-] ppo: Adam steps per batch
+  double clip = 0.2;                   // [-] ppo: ratio clip
   double grad_clip = 1.0;              // [-] global gradient-norm clip (0 = none)
   std::vector<int> value_hidden = {64, 64};  // [-] improved: value MLP widths ({} = mean baseline)
   int value_iters = 5;                 // [-] improved: value-fit steps per update
@@ -50,6 +63,10 @@ struct TrainConfig {
 
   Status validate() const;
 };
+
+// Ok unless `config` asks for a learner `policy` cannot drive (ppo needs
+// Policy::log_probs).
+Status check_learner(const Policy& policy, const TrainConfig& config);
 
 struct UpdateStats {
   long long episodes = 0;    // [-] episodes in the batch
@@ -90,6 +107,14 @@ class Trainer {
   };
   // Fills coef (one per batch sample) for the estimator; returns the value loss.
   double coefficients(std::vector<float>& coef);
+  // Advantages A_t (before normalisation) from the value MLP's v = V(s_t) and
+  // the reward-to-go g.
+  std::vector<double> advantages(const std::vector<float>& v, const std::vector<float>& g) const;
+  // ppo: `epochs` clipped-ratio steps from the normalised advantages in coef
+  // (each times 1/N).
+  // Sets st.entropy and st.grad_norm from the first step.
+  void clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, float ent,
+                     UpdateStats& st);
 
   Policy& policy_;
   env::VecEnv& envs_;

@@ -1,5 +1,6 @@
 #include "script/scenario.h"
 
+#include <cmath>
 #include <set>
 #include <string>
 
@@ -137,7 +138,8 @@ void read_policy(lua_State* L, int idx, rl::MlpPolicySpec& p) {
 void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   check_keys(L, idx, "train",
              {"estimator", "episodes", "episodes_per_update", "num_envs", "lr", "lr_final", "gamma",
-              "entropy_coef", "grad_clip", "eval_every", "eval_episodes", "seed"});
+              "entropy_coef", "entropy_final", "lambda", "epochs", "clip", "grad_clip", "eval_every",
+              "eval_episodes", "seed"});
   t.estimator = field_string(L, idx, "estimator", t.estimator);
   t.episodes = field_count(L, idx, "episodes", t.episodes, 0, kMaxCount);
   t.episodes_per_update = int_field(L, idx, "episodes_per_update", t.episodes_per_update);
@@ -146,6 +148,10 @@ void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   t.lr_final = field_number(L, idx, "lr_final", t.lr);
   t.gamma = field_number(L, idx, "gamma", t.gamma);
   t.entropy_coef = field_number(L, idx, "entropy_coef", t.entropy_coef);
+  if (const double ef = field_number(L, idx, "entropy_final", std::nan("")); !std::isnan(ef)) t.entropy_final = ef;
+  t.lambda = field_number(L, idx, "lambda", t.lambda);
+  t.epochs = int_field(L, idx, "epochs", t.epochs);
+  t.clip = field_number(L, idx, "clip", t.clip);
   t.grad_clip = field_number(L, idx, "grad_clip", t.grad_clip);
   t.eval_every = field_count(L, idx, "eval_every", t.eval_every, 0, kMaxCount);
   t.eval_episodes = field_count(L, idx, "eval_episodes", t.eval_episodes, 0, kMaxCount);

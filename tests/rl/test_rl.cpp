@@ -214,6 +214,89 @@ TEST_CASE("training is reproducible and a resumed run continues exactly") {
   CHECK(train(2, 2, half, &mid, nullptr) == straight);
 }
 
+namespace {
+
+// Policy parameters after `updates` updates of a fresh paper-sized MLP under tc.
+std::vector<float> trained_params(const rl::TrainConfig& tc, int updates) {
+  env::HorizontalCrConfig ec;
+  Rng init(0);
+  auto p = rl::MlpPolicy::make({}, init);
+  REQUIRE(p);
+  auto v = env::VecEnv::make(ec, tc.num_envs);
+  REQUIRE(v);
+  rl::Trainer tr(**p, *v, tc, 0);
+  for (int i = 0; i < updates; ++i) CHECK(tr.update().samples > 0);
+  return std::vector<float>((*p)->params().begin(), (*p)->params().end());
+}
+
+}  // namespace
+
+TEST_CASE("MLP log_probs are the log-softmax of the logits at the given actions") {
+  Rng init(4);
+  auto p = rl::MlpPolicy::make({}, init);
+  REQUIRE(p);
+  std::vector<float> obs(3 * 28);
+  for (size_t i = 0; i < obs.size(); ++i) obs[i] = static_cast<float>(std::sin(0.37 * static_cast<double>(i)));
+  std::vector<float> logits;
+  (*p)->forward(obs, 3, logits);
+  for (int a = 0; a < 5; ++a) {
+    std::vector<rl::ActionSample> acts(3, rl::ActionSample{a, 0.0f});
+    std::vector<float> lp(3);
+    (*p)->log_probs(obs, 3, acts, lp);
+    for (size_t r = 0; r < 3; ++r) {
+      std::vector<float> ref(5);
+      nn::log_softmax(std::span<const float>(logits).subspan(r * 5, 5), ref);
+      CHECK(lp[r] == doctest::Approx(ref[static_cast<size_t>(a)]).epsilon(1e-6));
+    }
+  }
+}
+
+TEST_CASE("the clipped-ratio learner, GAE(lambda) and the entropy schedule") {
+  rl::TrainConfig tc;
+  tc.episodes_per_update = 8;
+  tc.num_envs = 4;
+  tc.seed = 5;
+  const auto improved = trained_params(tc, 2);
+  SUBCASE("ppo with one epoch is the improved estimator's step (ratio 1, nothing clipped)") {
+    rl::TrainConfig c = tc;
+    c.estimator = "ppo";
+    c.epochs = 1;
+    CHECK(trained_params(c, 2) == improved);
+    c.epochs = 4;
+    const auto four = trained_params(c, 2);
+    CHECK(four != improved);
+    CHECK(trained_params(c, 2) == four);
+  }
+  SUBCASE("lambda 1 is reward-to-go minus V; lambda < 1 changes the advantages") {
+    rl::TrainConfig c = tc;
+    c.lambda = 0.9;
+    CHECK(trained_params(c, 2) != improved);
+  }
+  SUBCASE("an entropy schedule to the same value changes nothing; to another value it does") {
+    rl::TrainConfig c = tc;
+    c.entropy_final = c.entropy_coef;
+    CHECK(trained_params(c, 2) == improved);
+    c.entropy_final = 0.5;
+    CHECK(trained_params(c, 2) != improved);
+  }
+  SUBCASE("ppo needs a policy that scores its actions, and sane settings") {
+    rl::TrainConfig c = tc;
+    c.estimator = "ppo";
+    rl::ConstantPolicy fixed(28, 0.5f);
+    const Status st = rl::check_learner(fixed, c);
+    CHECK_FALSE(st.is_ok());
+    CHECK(st.message().find("ppo") != std::string::npos);
+    c.clip = 0.0;
+    CHECK_FALSE(c.validate().is_ok());
+    c.clip = 0.2;
+    c.lambda = 1.5;
+    CHECK_FALSE(c.validate().is_ok());
+    c.lambda = 0.95;
+    c.entropy_final = -0.1;
+    CHECK_FALSE(c.validate().is_ok());
+  }
+}
+
 TEST_CASE("the action histogram counts every decision in the nearest of the five bins") {
   CHECK(rl::action_bin(-1.0) == 0);
   CHECK(rl::action_bin(-0.3) == 1);
