@@ -192,14 +192,30 @@ Result<ArgValue> parse_position(ArgReader& r, const ParseContext& ctx, GeoPoint 
     SQUAWK_ASSIGN_OR_RETURN(v.pos.lon, parse_lon(lon_tok));
     return v;  // text stays empty: an unnamed point
   }
-  std::string name = token;
-  if (const auto slash = token.find("/RW"); slash != std::string::npos) name = token.substr(0, slash);
+  // A runway: "EHAM/RW18L", "EHGG/RWY27", or the airport and "RW.." as two tokens.
+  std::string name = token, rwy;
+  if (const auto slash = token.find("/RW"); slash != std::string::npos) {
+    name = token.substr(0, slash);
+    rwy = token.substr(slash + 3);
+  }
   if (ctx.navdb) {
     if (const NavPoint* apt = ctx.navdb->airport(name)) {
-      // "EHAM RW18L": the runway as a second token; runways resolve to the airport.
-      if (name == token && text::starts_with_ci(r.rest(), "RW")) r.next();
-      v.pos = {apt->lat, apt->lon};
+      if (rwy.empty() && text::starts_with_ci(r.rest(), "RW")) {
+        ArgReader trial = r;
+        const std::string second = text::upper(trial.next());
+        rwy = second.substr(2);
+        r = trial;
+      }
+      if (rwy.empty() && name != token)
+        return Status::invalid("runway " + text::quoted(token) + " has no runway number after RW");
       v.text = name;
+      v.pos = {apt->lat, apt->lon};
+      if (!rwy.empty()) {
+        SQUAWK_ASSIGN_OR_RETURN(const Threshold thr, ctx.navdb->runway(name, rwy));
+        v.text = name + "/RW" + rwy;
+        v.pos = {thr.lat, thr.lon};
+        v.ref_hdg = thr.bearing_deg;
+      }
       return v;
     }
   }
@@ -241,6 +257,14 @@ Result<std::vector<ArgValue>> parse_args(const Signature& sig, std::string_view 
       if (!r.at_end()) r.next();
       out.push_back(ArgValue{});
       continue;
+    }
+    if (p.optional && p.alternatives.front() == ArgType::kHdg) {
+      ArgReader peek = r;
+      if (peek.next() == "*") {  // "CRE KL1 B738 EHAM RW06 * 0 0": heading omitted
+        r = peek;
+        out.push_back(ArgValue{});
+        continue;
+      }
     }
     Status first_error;
     bool matched = false;

@@ -11,16 +11,20 @@
 //   onoff      on/off switch (formats.h)       alt     altitude [m]
 //   spd        CAS [m/s] or Mach (formats.h)   vspd    vertical speed [m/s]
 //   hdg        heading [deg]; a name (airport, waypoint, aircraft) gives the
-//              bearing to it from the last aircraft parsed on the line
+//              bearing to it from the last aircraft parsed on the line. An
+//              optional heading may be `*`: omitted (CRE then takes a runway's
+//              heading; BlueSky itself refuses `*` there)
 //   time       [s]
 //   latlon     a position: lat lon (two tokens), an aircraft, an airport,
-//              a runway (APT/RW18L or APT RW18L: the airport's point), a user
+//              a runway threshold (APT/RW18L, APT/RWY18L or APT RW18L; its
+//              bearing becomes the value's ref_hdg, as BlueSky's ref.hdg), a user
 //              waypoint (DEFWPT), a fix or navaid (nearest the reference)
 //   wpt        like latlon, and keeps the name (empty for lat/lon pairs)
 //   wpinroute  a waypoint name in the route of the last acid parsed, or `*`
 // Parsing only reads the context; it never changes the simulation.
 #pragma once
 
+#include <limits>
 #include <map>
 #include <string>
 #include <string_view>
@@ -68,6 +72,7 @@ struct ArgValue {
   Speed spd;                 // spd
   bool on = false;           // onoff
   GeoPoint pos;              // latlon, wpt
+  double ref_hdg = std::numeric_limits<double>::quiet_NaN();  // latlon of a runway: its bearing [deg]
   std::vector<int> acids;    // acid: traffic indices (one, or all for `*`)
 };
 

@@ -14,8 +14,10 @@ namespace squawk::command {
 
 namespace {
 
+// CRE: an omitted heading is the runway's when the position is a runway
+// threshold, else 0 (BlueSky's ref.hdg).
 Result<std::string> cre(Call& c) {
-  const double hdg = c.has(3) ? c[3].num : 0.0;
+  const double hdg = c.has(3) ? c[3].num : std::isnan(c[2].ref_hdg) ? 0.0 : c[2].ref_hdg;
   const double alt = c.has(4) ? c[4].num : 0.0;
   const double spd = c.has(5) ? c[5].spd.value : 0.0;
   SQUAWK_RETURN_IF_ERROR(c.stack.sim().create(c[0].text, c[1].text, c[2].pos.lat, c[2].pos.lon, hdg, alt, spd));

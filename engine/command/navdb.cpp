@@ -77,8 +77,9 @@ void parse_fixes(std::string_view data, std::vector<NavPoint>& out) {
 
 }  // namespace
 
-NavDb::NavDb(std::vector<NavPoint> airports, std::vector<NavPoint> waypoints)
-    : airports_(std::move(airports)), waypoints_(std::move(waypoints)) {
+NavDb::NavDb(std::vector<NavPoint> airports, std::vector<NavPoint> waypoints,
+             std::shared_ptr<const RunwayDb> runways)
+    : airports_(std::move(airports)), waypoints_(std::move(waypoints)), runways_(std::move(runways)) {
   for (size_t i = 0; i < airports_.size(); ++i) airport_index_.emplace(airports_[i].id, i);
   for (size_t i = 0; i < waypoints_.size(); ++i) waypoint_index_.emplace(waypoints_[i].id, i);
 }
@@ -87,7 +88,25 @@ Result<std::shared_ptr<const NavDb>> NavDb::load(const std::string& dir) {
   SQUAWK_ASSIGN_OR_RETURN(std::string apt, files::read(dir + "/airports.dat"));
   SQUAWK_ASSIGN_OR_RETURN(std::string nav, files::read(dir + "/nav.dat"));
   SQUAWK_ASSIGN_OR_RETURN(std::string fix, files::read(dir + "/fix.dat"));
-  return parse(apt, nav, fix, dir);
+  SQUAWK_ASSIGN_OR_RETURN(auto db, parse(apt, nav, fix, dir));
+  std::const_pointer_cast<NavDb>(db)->dir_ = dir;
+  return db;
+}
+
+Result<Threshold> NavDb::runway(std::string_view airport, std::string_view runway) const {
+  std::call_once(runways_once_, [this] {
+    if (runways_) return;
+    if (dir_.empty()) {
+      runways_status_ = Status::not_found("no runway data: this navigation database was not read from a folder");
+      return;
+    }
+    auto db = RunwayDb::load(dir_);
+    if (db) runways_ = *db;
+    else runways_status_ = db.status();
+  });
+  if (!runways_)
+    return runways_status_.with_context("runway " + text::quoted(std::string(airport) + "/RW" + std::string(runway)));
+  return runways_->find(airport, runway);
 }
 
 Result<std::shared_ptr<const NavDb>> NavDb::parse(std::string_view airports_dat, std::string_view nav_dat,

@@ -8,17 +8,19 @@
 //   fix.dat       X-Plane 600 fixes: "lat lon id"
 // Names are upper case. Several navaids/fixes may share a name: lookups take
 // the one nearest a reference position (flat-earth distance), as BlueSky does.
-// Runways ("EHAM/RW18L") are not in these files; position lookups resolve
-// them to the airport's reference point (see resolve in stack.h).
+// Runway thresholds ("EHAM/RW18L") come from apt.dat or apt.zip in the same
+// folder (runways.h), read on first use.
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
+#include "command/runways.h"
 #include "core/status.h"
 
 namespace squawk::command {
@@ -42,11 +44,17 @@ class NavDb {
   // calls share the same database.
   static Result<std::shared_ptr<const NavDb>> load_cached(const std::string& dir);
   // Builds a database from lists (tests, or callers with their own data).
-  NavDb(std::vector<NavPoint> airports, std::vector<NavPoint> waypoints);
+  NavDb(std::vector<NavPoint> airports, std::vector<NavPoint> waypoints,
+        std::shared_ptr<const RunwayDb> runways = nullptr);
 
   const NavPoint* airport(std::string_view id) const;
   // The waypoint (fix or navaid) named `id` nearest (ref_lat, ref_lon) [deg].
   const NavPoint* waypoint(std::string_view id, double ref_lat, double ref_lon) const;
+
+  // The threshold of `runway` ("18L", "Y06") at `airport`. A database from
+  // load() reads its folder's runway file on the first call (thread-safe);
+  // errors name the missing file, airport or runway.
+  Result<Threshold> runway(std::string_view airport, std::string_view runway) const;
 
   size_t airport_count() const { return airports_.size(); }
   const std::vector<NavPoint>& airports() const { return airports_; }
@@ -58,6 +66,10 @@ class NavDb {
   std::vector<NavPoint> waypoints_;
   std::unordered_map<std::string, size_t> airport_index_;
   std::unordered_multimap<std::string, size_t> waypoint_index_;
+  std::string dir_;  // load()'s folder: where runway data are read from
+  mutable std::once_flag runways_once_;
+  mutable std::shared_ptr<const RunwayDb> runways_;
+  mutable Status runways_status_;
 };
 
 }  // namespace squawk::command
