@@ -29,16 +29,22 @@ struct TrainProgress {
   double wall_s = 0.0;     // [s] training wall time so far
 };
 
-struct Checkpoint {
-  MlpPolicySpec spec;
+// The learner's state every checkpoint kind carries, so that --resume
+// continues exactly: parameters, Adam moments (when has_adam), the value
+// baseline of the improved estimator with its Adam state (empty when none),
+// and the training counters.
+struct TrainState {
   std::vector<float> params;
   bool has_adam = false;
   long long adam_t = 0;
   std::vector<float> adam_m, adam_v;
-  // Value baseline of the improved estimator (empty when none).
   std::vector<float> value_params, value_m, value_v;
   long long value_t = 0;
   TrainProgress progress;
+};
+
+struct Checkpoint : TrainState {
+  MlpPolicySpec spec;
 };
 
 Status save_checkpoint(const std::string& path, const Checkpoint& ckpt);

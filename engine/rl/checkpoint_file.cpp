@@ -65,24 +65,56 @@ Status CheckpointFile::read_arrays(const std::string& path, const std::string& w
   return Status::ok();
 }
 
-void put_progress(nlohmann::json& h, const TrainProgress& p) {
+Status write_train_checkpoint(const std::string& path, std::string_view magic, nlohmann::json h,
+                              const TrainState& s) {
+  const size_t n = s.params.size(), nv = s.value_params.size();
+  if (s.has_adam && (s.adam_m.size() != n || s.adam_v.size() != n))
+    return Status::internal("checkpoint " + path + ": Adam state size differs from the parameters");
+  if (s.value_m.size() != nv || s.value_v.size() != nv)
+    return Status::internal("checkpoint " + path + ": value-baseline Adam state size differs");
+  h["num_params"] = n;
+  h["has_adam"] = s.has_adam;
+  h["adam_t"] = s.adam_t;
+  h["num_value_params"] = nv;
+  h["value_adam_t"] = s.value_t;
+  const TrainProgress& p = s.progress;
   h["episodes"] = p.episodes;
   h["updates"] = p.updates;
   h["seed"] = p.seed;
   h["estimator"] = p.estimator;
   h["scenario"] = p.scenario;
   h["wall_s"] = p.wall_s;
+  const std::vector<float> none;
+  return write_checkpoint_file(path, magic, h,
+                               {&s.params, s.has_adam ? &s.adam_m : &none, s.has_adam ? &s.adam_v : &none,
+                                &s.value_params, &s.value_m, &s.value_v});
 }
 
-TrainProgress get_progress(const nlohmann::json& h) {
-  TrainProgress p;
+void read_train_header(const CheckpointFile& f, TrainState& s) {
+  const nlohmann::json& h = f.header;
+  s.params.resize(f.length("num_params", CheckpointFile::kRequired));
+  s.has_adam = h.at("has_adam").get<bool>();
+  s.adam_t = whole<long long>(h, "adam_t", 0LL);
+  s.value_params.resize(f.length("num_value_params", 0));
+  s.value_t = whole<long long>(h, "value_adam_t", 0LL);
+  TrainProgress& p = s.progress;
   p.episodes = whole<long long>(h, "episodes", 0LL);
   p.updates = whole<long long>(h, "updates", 0LL);
   p.seed = whole<unsigned long long>(h, "seed", 0ULL);
   p.estimator = h.value("estimator", "");
   p.scenario = h.value("scenario", "");
   p.wall_s = h.value("wall_s", 0.0);
-  return p;
+}
+
+Status read_train_arrays(const CheckpointFile& f, const std::string& path, TrainState& s) {
+  const size_t n = s.params.size(), nv = s.value_params.size();
+  if (s.has_adam) s.adam_m.resize(n), s.adam_v.resize(n);
+  s.value_m.resize(nv);
+  s.value_v.resize(nv);
+  return f.read_arrays(path,
+                       std::to_string(n) + " parameters" + (s.has_adam ? " + Adam m, v" : "") + " + " +
+                           std::to_string(nv) + " value-baseline parameters, Adam m, v",
+                       {&s.params, &s.adam_m, &s.adam_v, &s.value_params, &s.value_m, &s.value_v});
 }
 
 }  // namespace squawk::rl

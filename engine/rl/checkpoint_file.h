@@ -73,8 +73,16 @@ std::vector<T> wholes(const nlohmann::json& h, const char* key) {
 // Reads `path`, checks the magic line and parses the header line.
 Result<CheckpointFile> read_checkpoint_file(const std::string& path, std::string_view magic);
 
-// The training counters every checkpoint kind carries in its header.
-void put_progress(nlohmann::json& header, const TrainProgress& p);
-TrainProgress get_progress(const nlohmann::json& header);
+// A checkpoint of any kind: the kind's header fields in `header`, plus the
+// TrainState's counters and lengths, then its arrays (params, Adam m, v, value
+// params, value m, v; the Adam arrays empty without has_adam), atomically.
+// Error: the Adam or value-baseline arrays do not match their parameters.
+Status write_train_checkpoint(const std::string& path, std::string_view magic, nlohmann::json header,
+                              const TrainState& s);
+// The TrainState's counters from `f`'s header, its arrays sized (throws
+// std::runtime_error naming the key, as CheckpointFile::length and whole do).
+void read_train_header(const CheckpointFile& f, TrainState& s);
+// Then its arrays; error, naming `path`, unless the file holds exactly them.
+Status read_train_arrays(const CheckpointFile& f, const std::string& path, TrainState& s);
 
 }  // namespace squawk::rl

@@ -27,22 +27,13 @@
 
 namespace squawk::rl {
 
-struct PromptCheckpoint {
+struct PromptCheckpoint : TrainState {
   std::string source;       // "tiny" | Hugging Face folder
   uint64_t model_seed = 0;  // tiny: init_random seed of the base model
   std::string config_json;  // HF config.json text of the base model
   PromptPolicySpec spec;
   std::string vocab_json, merges_txt;  // the tokenizer
   std::string prompt;       // template file the policy was trained with
-  std::vector<float> params;
-  bool has_adam = false;
-  long long adam_t = 0;
-  std::vector<float> adam_m, adam_v;
-  // Value baseline of the improved estimator (empty when none), so that
-  // --resume continues exactly.
-  std::vector<float> value_params, value_m, value_v;
-  long long value_t = 0;
-  TrainProgress progress;
 };
 
 Status save_prompt_checkpoint(const std::string& path, const PromptCheckpoint& ckpt);
