@@ -11,6 +11,7 @@
 
 #include "app/gpt2_policy_factory.h"
 #include "app/interrupt.h"
+#include "app/learner_flags.h"
 #include "app/progress_bar.h"
 #include "app/rl_eval.h"
 #include "app/train_log.h"
@@ -50,9 +51,7 @@ Result<script::Scenario> scenario_of(const Args& args) {
 }  // namespace
 
 int cmd_train_gpt2(const ArgV& argv) {
-  auto args = Args::parse(argv, with_policy_flags({"--episodes", "--estimator", "--envs", "--episodes-per-update",
-                                                   "--eval-every", "--eval-episodes", "--lr"},
-                                                  {"--resume", "--quiet"}));
+  auto args = Args::parse(argv, with_policy_flags(learner_flags(), {"--resume", "--quiet"}));
   if (!args) return usage_error("train", args.status().message());
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");
   auto popts = gpt2_options(*args);
@@ -61,25 +60,8 @@ int cmd_train_gpt2(const ArgV& argv) {
   if (!sc) return failure(sc.status());
   rl::TrainConfig cfg = sc->train;
   const double lr_default = popts->model == "tiny" ? cfg.lr : kFolderLr;
-  auto episodes = args->get_int("--episodes", 20000);
-  auto envs_n = args->get_int("--envs", cfg.num_envs);
-  auto per_update = args->get_int("--episodes-per-update", cfg.episodes_per_update);
-  auto eval_every = args->get_int("--eval-every", cfg.eval_every);
-  auto eval_eps = args->get_int("--eval-episodes", cfg.eval_episodes);
-  auto lr = args->get_double("--lr", lr_default);
-  auto seed = args->get_int("--seed", static_cast<long long>(cfg.seed));
-  for (const Status& st : {episodes.status(), envs_n.status(), per_update.status(), eval_every.status(),
-                           eval_eps.status(), lr.status(), seed.status()})
-    if (!st.is_ok()) return usage_error("train", st.message());
-  cfg.episodes = *episodes;
-  cfg.num_envs = static_cast<int>(*envs_n);
-  cfg.episodes_per_update = static_cast<int>(*per_update);
-  cfg.eval_every = *eval_every;
-  cfg.eval_episodes = *eval_eps;
-  cfg.lr = *lr;
-  cfg.seed = static_cast<uint64_t>(*seed);
-  cfg.estimator = args->get_or("--estimator", cfg.estimator);
-  if (Status st = cfg.validate(); !st.is_ok()) return usage_error("train", st.message());
+  if (Status st = apply_learner_flags(*args, 20000, lr_default, cfg); !st.is_ok())
+    return usage_error("train", st.message());
   auto vo = vm_options(*args);
   if (!vo) return usage_error("train", vo.status().message());
   vo->out_dir.clear();
@@ -115,6 +97,7 @@ int cmd_train_gpt2(const ArgV& argv) {
   meta.progress.scenario = sc->path;
   if (Status st = rl::check_obs_size(policy, env::observation_size(sc->train_env.num_intruders)); !st.is_ok())
     return failure(st);
+  if (Status st = rl::check_learner(policy, cfg); !st.is_ok()) return usage_error("train", st.message());
   auto train_envs = env::VecEnv::make(sc->train_env, cfg.num_envs);
   auto eval_envs = env::VecEnv::make(sc->eval_env, cfg.num_envs);
   if (!train_envs) return failure(train_envs.status());

@@ -10,6 +10,7 @@
 #include "app/cli.h"
 #include "app/gpt2_policy_factory.h"
 #include "app/interrupt.h"
+#include "app/learner_flags.h"
 #include "app/progress_bar.h"
 #include "app/rl_eval.h"
 #include "app/subcommands.h"
@@ -67,11 +68,9 @@ rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainP
 
 int cmd_train(const ArgV& argv) {
   if (wants_gpt2(argv)) return cmd_train_gpt2(argv);
-  Args::Spec spec = with_vm_flags({{"--policy", "--episodes", "--estimator", "--envs", "--eval-every",
-                                    "--eval-episodes", "--lr", "--lr-final", "--episodes-per-update",
-                                    "--gamma", "--lambda", "--entropy", "--entropy-final", "--epochs",
-                                    "--clip", "--value-iters", "--validation-seed"},
-                                   {"--resume", "--quiet"}});
+  std::vector<std::string> values = learner_flags();
+  values.insert(values.end(), {"--policy", "--validation-seed"});
+  Args::Spec spec = with_vm_flags({values, {"--resume", "--quiet"}});
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("train", args.status().message());
   if (args->get_or("--policy", "mlp") != "mlp")
@@ -84,53 +83,11 @@ int cmd_train(const ArgV& argv) {
     return failure(sc.status());
   }
   rl::TrainConfig cfg = sc->train;
-  auto episodes = args->get_int("--episodes", cfg.episodes);
-  auto envs_n = args->get_int("--envs", cfg.num_envs);
-  auto eval_every = args->get_int("--eval-every", cfg.eval_every);
-  auto eval_eps = args->get_int("--eval-episodes", cfg.eval_episodes);
-  auto lr = args->get_double("--lr", cfg.lr);
-  auto seed = args->get_int("--seed", static_cast<long long>(cfg.seed));
-  auto per_update = args->get_int("--episodes-per-update", cfg.episodes_per_update);
-  auto gamma = args->get_double("--gamma", cfg.gamma);
-  auto lambda = args->get_double("--lambda", cfg.lambda);
-  auto entropy = args->get_double("--entropy", cfg.entropy_coef);
-  auto epochs = args->get_int("--epochs", cfg.epochs);
-  auto clip = args->get_double("--clip", cfg.clip);
-  auto value_iters = args->get_int("--value-iters", cfg.value_iters);
+  if (Status st = apply_learner_flags(*args, cfg.episodes, cfg.lr, cfg); !st.is_ok())
+    return usage_error("train", st.message());
   auto validation_seed =
       args->get_int("--validation-seed", static_cast<long long>(sc->eval_seed + kValidationSeedOffset));
-  for (const Status& st : {episodes.status(), envs_n.status(), eval_every.status(), eval_eps.status(),
-                           lr.status(), seed.status(), per_update.status(), gamma.status(), lambda.status(),
-                           entropy.status(), epochs.status(), clip.status(), value_iters.status(),
-                           validation_seed.status()})
-    if (!st.is_ok()) return usage_error("train", st.message());
-  if (args->has("--lr-final")) {
-    auto lr_final = args->get_double("--lr-final", cfg.lr_final);
-    if (!lr_final) return usage_error("train", lr_final.status().message());
-    cfg.lr_final = *lr_final;
-  } else if (args->has("--lr")) {
-    cfg.lr_final = cfg.lr_final / cfg.lr * *lr;
-  }
-  if (args->has("--entropy-final")) {
-    auto entropy_final = args->get_double("--entropy-final", cfg.entropy_coef);
-    if (!entropy_final) return usage_error("train", entropy_final.status().message());
-    cfg.entropy_final = *entropy_final;
-  }
-  cfg.episodes_per_update = static_cast<int>(*per_update);
-  cfg.gamma = *gamma;
-  cfg.lambda = *lambda;
-  cfg.entropy_coef = *entropy;
-  cfg.epochs = static_cast<int>(*epochs);
-  cfg.clip = *clip;
-  cfg.value_iters = static_cast<int>(*value_iters);
-  cfg.episodes = *episodes;
-  cfg.num_envs = static_cast<int>(*envs_n);
-  cfg.eval_every = *eval_every;
-  cfg.eval_episodes = *eval_eps;
-  cfg.lr = *lr;
-  cfg.seed = static_cast<uint64_t>(*seed);
-  cfg.estimator = args->get_or("--estimator", cfg.estimator);
-  if (Status st = cfg.validate(); !st.is_ok()) return usage_error("train", st.message());
+  if (!validation_seed) return usage_error("train", validation_seed.status().message());
 
   const std::string out = *args->get("--out");
   if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);

@@ -1,0 +1,57 @@
+#include "app/learner_flags.h"
+
+namespace squawk::app {
+
+const std::vector<std::string>& learner_flags() {
+  static const std::vector<std::string> flags = {
+      "--episodes", "--estimator", "--envs",    "--eval-every", "--eval-episodes", "--lr",
+      "--lr-final", "--episodes-per-update",    "--gamma",      "--lambda",        "--entropy",
+      "--entropy-final", "--epochs", "--clip",  "--value-iters"};
+  return flags;
+}
+
+Status apply_learner_flags(const Args& args, long long episodes_default, double lr_default, rl::TrainConfig& cfg) {
+  auto episodes = args.get_int("--episodes", episodes_default);
+  auto envs_n = args.get_int("--envs", cfg.num_envs);
+  auto eval_every = args.get_int("--eval-every", cfg.eval_every);
+  auto eval_eps = args.get_int("--eval-episodes", cfg.eval_episodes);
+  auto lr = args.get_double("--lr", lr_default);
+  auto lr_final = args.get_double("--lr-final", cfg.lr_final);
+  auto seed = args.get_int("--seed", static_cast<long long>(cfg.seed));
+  auto per_update = args.get_int("--episodes-per-update", cfg.episodes_per_update);
+  auto gamma = args.get_double("--gamma", cfg.gamma);
+  auto lambda = args.get_double("--lambda", cfg.lambda);
+  auto entropy = args.get_double("--entropy", cfg.entropy_coef);
+  auto entropy_final = args.get_double("--entropy-final", 0.0);
+  auto epochs = args.get_int("--epochs", cfg.epochs);
+  auto clip = args.get_double("--clip", cfg.clip);
+  auto value_iters = args.get_int("--value-iters", cfg.value_iters);
+  for (const Status& st : {episodes.status(), envs_n.status(), eval_every.status(), eval_eps.status(), lr.status(),
+                           lr_final.status(), seed.status(), per_update.status(), gamma.status(), lambda.status(),
+                           entropy.status(), entropy_final.status(), epochs.status(), clip.status(),
+                           value_iters.status()})
+    SQUAWK_RETURN_IF_ERROR(st);
+  if (args.has("--lr-final")) {
+    cfg.lr_final = *lr_final;
+  } else if (*lr != cfg.lr && cfg.lr > 0.0) {
+    cfg.lr_final = cfg.lr_final / cfg.lr * *lr;
+  }
+  if (args.has("--entropy-final")) cfg.entropy_final = *entropy_final;  // else the scenario's (none: constant)
+  cfg.episodes = *episodes;
+  cfg.num_envs = static_cast<int>(*envs_n);
+  cfg.eval_every = *eval_every;
+  cfg.eval_episodes = *eval_eps;
+  cfg.lr = *lr;
+  cfg.seed = static_cast<uint64_t>(*seed);
+  cfg.episodes_per_update = static_cast<int>(*per_update);
+  cfg.gamma = *gamma;
+  cfg.lambda = *lambda;
+  cfg.entropy_coef = *entropy;
+  cfg.epochs = static_cast<int>(*epochs);
+  cfg.clip = *clip;
+  cfg.value_iters = static_cast<int>(*value_iters);
+  cfg.estimator = args.get_or("--estimator", cfg.estimator);
+  return cfg.validate();
+}
+
+}  // namespace squawk::app

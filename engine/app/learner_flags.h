@@ -1,0 +1,28 @@
+// The learner flags `squawk train` shares between the MLP and the GPT-2
+// learners. Each overrides one field of the scenario's train table
+// (rl::TrainConfig); see `squawk help train`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/cli.h"
+#include "core/status.h"
+#include "rl/vpg.h"
+
+namespace squawk::app {
+
+// --episodes --estimator --envs --eval-every --eval-episodes --lr --lr-final
+// --episodes-per-update --gamma --lambda --entropy --entropy-final --epochs
+// --clip --value-iters (--seed, which apply_learner_flags also reads, comes
+// with the VM flags, vm_options.h)
+const std::vector<std::string>& learner_flags();
+
+// Applies the learner flags in `args` to `cfg` and validates it. Absent flags
+// keep the scenario's values, except --episodes (`episodes_default`) and --lr
+// (`lr_default`). Without --lr-final, a step size other than the scenario's
+// scales lr_final by the same factor, so the schedule keeps its shape.
+// Error: a flag's value does not parse, or the result is out of range.
+Status apply_learner_flags(const Args& args, long long episodes_default, double lr_default, rl::TrainConfig& cfg);
+
+}  // namespace squawk::app
