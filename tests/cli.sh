@@ -47,7 +47,6 @@ expect "gpt2 bench help"  0 "squawk gpt2 bench" -- "$sq" gpt2 bench --help
 # Both learners take the same learner flags, checked the same way.
 expect "train gpt2 gamma"   2 "train gamma must lie in" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --out "$(mktemp -d)" --gamma 2
 expect "train mlp gamma"    2 "train gamma must lie in" -- "$sq" train scenarios/horizontal_cr.lua --out "$(mktemp -d)" --gamma 2
-expect "train gpt2 ppo"     2 "estimator 'ppo' needs a policy that scores its actions" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --out "$(mktemp -d)" --estimator ppo --episodes 8
 expect "render"          0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --out "$tmp/r.svg"
 grep -q "<circle" "$tmp/r.svg" && grep -q "<circle" "$tmp/ep.svg" && { echo "ok   svg has circles"; pass=$((pass + 1)); } || { echo "FAIL svg"; fails=$((fails + 1)); }
 printf 'episodes,eval_success_rate,eval_mean_reward\n1000,0.5,-1\n2000,0.8,-0.5\n' > "$tmp/log.csv"

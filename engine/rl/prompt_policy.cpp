@@ -202,6 +202,22 @@ Status PromptPolicy::logits(std::span<const float> obs, int n, std::vector<float
   return Status::ok();
 }
 
+void PromptPolicy::log_probs(std::span<const float> obs, int n, std::span<const ActionSample> actions,
+                             std::span<float> out) {
+  const auto K = spec_.action_values.size();
+  std::vector<float> z;
+  if (Status st = logits(obs, n, z); !st.is_ok()) {
+    if (error_.is_ok()) error_ = st;
+    std::fill(out.begin(), out.begin() + n, 0.0f);
+    return;
+  }
+  std::vector<float> logp(K);
+  for (int r = 0; r < n; ++r) {
+    nn::log_softmax(std::span<const float>(z).subspan(static_cast<size_t>(r) * K, K), logp);
+    out[static_cast<size_t>(r)] = logp[static_cast<size_t>(actions[static_cast<size_t>(r)].index)];
+  }
+}
+
 void PromptPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, Rng& rng,
                        bool greedy, std::span<ActionSample> out) {
   const auto K = spec_.action_values.size();

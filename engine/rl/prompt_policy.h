@@ -80,6 +80,11 @@ class PromptPolicy : public Policy {
   std::span<float> grads() override { return model_.grads(); }
   float accumulate_gradient(std::span<const float> obs, int n, std::span<const ActionSample> actions,
                             std::span<const float> coef, float ent_coef) override;
+  // log pi(actions[r] | row r) from logits(); the clipped-ratio learner's
+  // scores. A failed forward keeps its error in error() and gives 0.
+  bool has_log_probs() const override { return true; }
+  void log_probs(std::span<const float> obs, int n, std::span<const ActionSample> actions,
+                 std::span<float> out) override;
 
   // Action logits [n, K] for obs [n, obs_size] (inference path, prefix cache).
   Status logits(std::span<const float> obs, int n, std::vector<float>& out);

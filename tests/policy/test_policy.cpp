@@ -18,6 +18,8 @@
 #include "nn/categorical.h"
 #include "rl/prompt_checkpoint.h"
 #include "rl/prompt_policy.h"
+#include "rl/vpg.h"
+#include "env/vec_env.h"
 #include "script/prompt_renderer.h"
 
 using namespace squawk;
@@ -172,6 +174,50 @@ TEST_CASE("batched decisions equal one-at-a-time decisions") {
     for (float v : batched) spread.push_back(v - batched[0]);
     CHECK(std::abs(spread[1]) + std::abs(spread[6]) > 1e-4);  // rows and actions differ
   }
+}
+
+TEST_CASE("log_probs are the log-softmax of the logits at the given actions (both heads)") {
+  for (const char* head : {"action", "lm"}) {
+    CAPTURE(head);
+    auto p = tiny_policy(head, 1);
+    REQUIRE(p->has_log_probs());
+    const std::vector<float> obs = flat_rows(3);
+    std::vector<float> z;
+    REQUIRE(p->logits(obs, 3, z).is_ok());
+    const std::vector<rl::ActionSample> acts = {{4, 1.0f}, {0, -1.0f}, {2, 0.0f}};
+    std::vector<float> lp(3);
+    p->log_probs(obs, 3, acts, lp);
+    REQUIRE(p->error().is_ok());
+    for (size_t r = 0; r < 3; ++r) {
+      std::vector<float> ref(5);
+      nn::log_softmax(std::span<const float>(z).subspan(r * 5, 5), ref);
+      CHECK(lp[r] == doctest::Approx(ref[static_cast<size_t>(acts[r].index)]).epsilon(1e-6));
+    }
+  }
+}
+
+TEST_CASE("the clipped-ratio learner trains the prompt policy: one epoch is the improved step") {
+  auto run = [](const std::string& estimator, int epochs) {
+    auto p = tiny_policy("action", 1);
+    rl::TrainConfig tc;
+    tc.estimator = estimator;
+    tc.epochs = epochs;
+    tc.episodes_per_update = 2;
+    tc.num_envs = 2;
+    tc.seed = 3;
+    REQUIRE(rl::check_learner(*p, tc).is_ok());
+    auto v = env::VecEnv::make(env::HorizontalCrConfig{}, tc.num_envs);
+    REQUIRE(v);
+    rl::Trainer tr(*p, *v, tc, 0);
+    CHECK(tr.update().samples > 0);
+    REQUIRE(p->error().is_ok());
+    return std::vector<float>(p->params().begin(), p->params().end());
+  };
+  const auto improved = run("improved", 1);
+  CHECK(run("ppo", 1) == improved);
+  const auto three = run("ppo", 3);
+  CHECK(three != improved);
+  CHECK(run("ppo", 3) == three);
 }
 
 TEST_CASE("policy-loss gradient matches finite differences (both heads, tail of 2 blocks)") {
