@@ -146,7 +146,13 @@ Result<ExchangeResult> post_json(HttpTransport& transport, const LlmConfig& conf
                                  const LineHandler& on_line) {
   HttpRequest req;
   req.url = config.url + path;
-  req.body = body.dump();
+  try {
+    req.body = body.dump();
+  } catch (const nlohmann::json::type_error& e) {  // 316: a string in the request is not UTF-8
+    std::string what = e.what();
+    if (const auto at = what.find("] "); at != std::string::npos) what.erase(0, at + 2);
+    return Status::invalid(config.describe() + ": the request text is not valid UTF-8 (" + what + ")");
+  }
   req.headers = {"Content-Type: application/json", "Accept: application/json, text/event-stream"};
   if (!config.api_key.empty()) req.headers.push_back("Authorization: Bearer " + config.api_key);
   req.connect_timeout_s = config.connect_timeout_s;

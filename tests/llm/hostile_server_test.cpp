@@ -198,3 +198,26 @@ TEST_CASE("an embedding reply with the right count but wrong indices says so (po
   REQUIRE_FALSE(e.is_ok());
   CHECK(e.status().message().find("embedding indices run to 5, expected 0 to 0") != std::string::npos);
 }
+
+TEST_CASE("request text that is not UTF-8 is refused before anything is sent") {
+  int requests = 0;
+  LoopbackServer server([&](const HttpRequestSeen&, int) {
+    ++requests;
+    return Reply::json(200, "{}");
+  });
+  for (const Api api : {Api::kOllama, Api::kOpenAI}) {
+    auto client = squawk::llm::make_client(config(server.url(), api));
+    REQUIRE(client.is_ok());
+    ChatRequest r;
+    r.messages = {{"user", "KL204 climb \xff"}};
+    auto reply = (*client)->chat(r);
+    REQUIRE_FALSE(reply.is_ok());
+    CHECK(reply.status().code() == Code::kInvalidArgument);
+    CHECK(reply.status().message().find("not valid UTF-8 (invalid UTF-8 byte at index 12: 0xFF)") !=
+          std::string::npos);
+    auto e = (*client)->embed({"x\xc3"});
+    REQUIRE_FALSE(e.is_ok());
+    CHECK(e.status().message().find("not valid UTF-8") != std::string::npos);
+  }
+  CHECK(requests == 0);
+}
