@@ -1,6 +1,9 @@
 #include "command/runways.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
 #include <vector>
 
 #include "core/files.h"
@@ -42,16 +45,26 @@ class RunwayDb::Reader {
     return Status::corruption(where_ + ":" + std::to_string(lineno_) + ": " + what);
   }
 
+  // The row code: the first field (a world apt.dat has millions of rows; only
+  // four codes are split into fields).
+  static std::string_view row_code(std::string_view raw) {
+    size_t i = 0;
+    while (i < raw.size() && std::isspace(static_cast<unsigned char>(raw[i]))) ++i;
+    size_t j = i;
+    while (j < raw.size() && !std::isspace(static_cast<unsigned char>(raw[j]))) ++j;
+    return raw.substr(i, j - i);
+  }
+
   Status line(std::string_view raw) {
     ++lineno_;
+    const std::string_view code = row_code(raw);
+    if (code != "1" && code != "16" && code != "17" && code != "100") return Status::ok();
     const auto f = text::split_ws(raw);
-    if (f.empty()) return Status::ok();
     if (f[0] == "1" || f[0] == "16" || f[0] == "17") {
       if (f.size() < 5) return error("airport header needs an ICAO code in field 5");
       current_ = &db_.airports_[text::upper(f[4])];
       return Status::ok();
     }
-    if (f[0] != "100") return Status::ok();
     if (f.size() < 21) return error("runway row has " + std::to_string(f.size()) + " fields, expected at least 21");
     if (!current_) return error("runway row before any airport header");
     const auto surface = text::to_int(f[2]);
@@ -86,30 +99,42 @@ class RunwayDb::Reader {
   std::unordered_map<std::string, Threshold>* current_ = nullptr;
 };
 
-Result<std::shared_ptr<const RunwayDb>> RunwayDb::parse(std::string_view apt_dat, const std::string& where) {
+Result<std::shared_ptr<const RunwayDb>> RunwayDb::read(const std::string& where,
+                                                       const std::function<Status(const Sink&)>& source) {
   auto db = std::make_shared<RunwayDb>();
   db->where_ = where;
   Reader r(*db, where);
-  SQUAWK_RETURN_IF_ERROR(r.feed(apt_dat));
+  SQUAWK_RETURN_IF_ERROR(source([&](std::string_view chunk) { return r.feed(chunk); }));
   SQUAWK_RETURN_IF_ERROR(r.finish());
   return std::shared_ptr<const RunwayDb>(std::move(db));
 }
 
+Result<std::shared_ptr<const RunwayDb>> RunwayDb::parse(std::string_view apt_dat, const std::string& where) {
+  return read(where, [&](const Sink& sink) { return sink(apt_dat); });
+}
+
 Result<std::shared_ptr<const RunwayDb>> RunwayDb::load(const std::string& dir) {
-  if (files::exists(dir + "/apt.dat")) {
-    SQUAWK_ASSIGN_OR_RETURN(std::string text, files::read(dir + "/apt.dat"));
-    return parse(text, dir + "/apt.dat");
+  if (const std::string path = dir + "/apt.dat"; files::exists(path)) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return Status::io_error(path + ": not a regular file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Status::io_error(path + ": cannot open");
+    // Streamed: X-Plane's world file is hundreds of MB.
+    return read(path, [&](const Sink& sink) {
+      std::vector<char> buf(1 << 20);
+      while (in) {
+        in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
+        if (in.gcount() > 0) SQUAWK_RETURN_IF_ERROR(sink(std::string_view(buf.data(), static_cast<size_t>(in.gcount()))));
+      }
+      return in.bad() ? Status::io_error(path + ": read error") : Status::ok();
+    });
   }
   const std::string zip_path = dir + "/apt.zip";
   if (!files::exists(zip_path))
-    return Status::not_found("navdata folder '" + dir + "' has no apt.dat or apt.zip (runway thresholds; BlueSky ships them as resources/navdata/apt.zip)");
+    return Status::not_found("navdata folder '" + dir +
+                             "' has no apt.dat or apt.zip (runway thresholds; BlueSky ships them as resources/navdata/apt.zip)");
   SQUAWK_ASSIGN_OR_RETURN(std::string archive, files::read(zip_path));
-  auto db = std::make_shared<RunwayDb>();
-  db->where_ = zip_path + ":apt.dat";
-  Reader r(*db, db->where_);
-  SQUAWK_RETURN_IF_ERROR(zip::read_member(archive, "apt.dat", zip_path, [&](std::string_view c) { return r.feed(c); }));
-  SQUAWK_RETURN_IF_ERROR(r.finish());
-  return std::shared_ptr<const RunwayDb>(std::move(db));
+  return read(zip_path + ":apt.dat", [&](const Sink& sink) { return zip::read_member(archive, "apt.dat", zip_path, sink); });
 }
 
 Result<Threshold> RunwayDb::find(std::string_view airport, std::string_view runway) const {

@@ -13,6 +13,7 @@
 // 0-360). Every other row is ignored. Errors name the file and line.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -45,6 +46,10 @@ class RunwayDb {
 
  private:
   class Reader;
+  using Sink = std::function<Status(std::string_view chunk)>;
+  // A database from the text `source` hands to its sink in chunks.
+  static Result<std::shared_ptr<const RunwayDb>> read(const std::string& where,
+                                                      const std::function<Status(const Sink&)>& source);
   std::string where_;
   std::unordered_map<std::string, std::unordered_map<std::string, Threshold>> airports_;
 };
