@@ -88,9 +88,9 @@ Result<std::shared_ptr<const NavDb>> NavDb::load(const std::string& dir) {
   SQUAWK_ASSIGN_OR_RETURN(std::string apt, files::read(dir + "/airports.dat"));
   SQUAWK_ASSIGN_OR_RETURN(std::string nav, files::read(dir + "/nav.dat"));
   SQUAWK_ASSIGN_OR_RETURN(std::string fix, files::read(dir + "/fix.dat"));
-  SQUAWK_ASSIGN_OR_RETURN(auto db, parse(apt, nav, fix, dir));
-  std::const_pointer_cast<NavDb>(db)->dir_ = dir;
-  return db;
+  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<NavDb> db, build(apt, nav, fix, dir));
+  db->dir_ = dir;
+  return std::shared_ptr<const NavDb>(std::move(db));
 }
 
 Result<Threshold> NavDb::runway(std::string_view airport, std::string_view runway) const {
@@ -111,13 +111,19 @@ Result<Threshold> NavDb::runway(std::string_view airport, std::string_view runwa
 
 Result<std::shared_ptr<const NavDb>> NavDb::parse(std::string_view airports_dat, std::string_view nav_dat,
                                                   std::string_view fix_dat, const std::string& where) {
+  SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<NavDb> db, build(airports_dat, nav_dat, fix_dat, where));
+  return std::shared_ptr<const NavDb>(std::move(db));
+}
+
+Result<std::shared_ptr<NavDb>> NavDb::build(std::string_view airports_dat, std::string_view nav_dat,
+                                            std::string_view fix_dat, const std::string& where) {
   std::vector<NavPoint> airports, waypoints;
   SQUAWK_RETURN_IF_ERROR(parse_airports(airports_dat, where + "/airports.dat", airports));
   parse_navaids(nav_dat, waypoints);
   parse_fixes(fix_dat, waypoints);
   if (airports.empty() && waypoints.empty())
     return Status::corruption("navdata folder '" + where + "' holds no airports, navaids or fixes");
-  return std::shared_ptr<const NavDb>(std::make_shared<NavDb>(std::move(airports), std::move(waypoints)));
+  return std::make_shared<NavDb>(std::move(airports), std::move(waypoints));
 }
 
 Result<std::shared_ptr<const NavDb>> NavDb::load_cached(const std::string& dir) {

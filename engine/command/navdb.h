@@ -62,6 +62,9 @@ class NavDb {
   size_t waypoint_count() const { return waypoints_.size(); }
 
  private:
+  static Result<std::shared_ptr<NavDb>> build(std::string_view airports_dat, std::string_view nav_dat,
+                                              std::string_view fix_dat, const std::string& where);
+
   std::vector<NavPoint> airports_;
   std::vector<NavPoint> waypoints_;
   std::unordered_map<std::string, size_t> airport_index_;
