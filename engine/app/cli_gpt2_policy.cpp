@@ -103,13 +103,8 @@ int cmd_train_gpt2(const ArgV& argv) {
   if (!train_envs) return failure(train_envs.status());
   if (!eval_envs) return failure(eval_envs.status());
   rl::Trainer trainer(policy, *train_envs, cfg, meta.progress.updates);
-  if (resuming && resume.has_adam) {
-    trainer.adam().m() = resume.adam_m;
-    trainer.adam().v() = resume.adam_v;
-    trainer.adam().set_t(resume.adam_t);
-    if (Status st = trainer.restore_value(resume.value_params, resume.value_m, resume.value_v, resume.value_t);
-        !st.is_ok())
-      return failure(st.with_context(ckpt_path));
+  if (resuming) {
+    if (Status st = trainer.restore(resume); !st.is_ok()) return failure(st.with_context(ckpt_path));
   }
   if (resuming && files::exists(log_path)) {
     if (Status st = trim_log(log_path, meta.progress.episodes); !st.is_ok()) return failure(st);

@@ -129,13 +129,8 @@ int cmd_train(const ArgV& argv) {
   if (!eval_envs) return failure(eval_envs.status());
   const long long m = cfg.episodes_per_update;
   rl::Trainer trainer(*policy, *train_envs, cfg, progress.episodes / m);
-  if (resuming && resume.has_adam) {
-    trainer.adam().m() = resume.adam_m;
-    trainer.adam().v() = resume.adam_v;
-    trainer.adam().set_t(resume.adam_t);
-    if (Status st = trainer.restore_value(resume.value_params, resume.value_m, resume.value_v, resume.value_t);
-        !st.is_ok())
-      return failure(st.with_context(ckpt_path));
+  if (resuming) {
+    if (Status st = trainer.restore(resume); !st.is_ok()) return failure(st.with_context(ckpt_path));
   }
 
   const bool append = resuming && files::exists(log_path);

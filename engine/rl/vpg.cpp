@@ -62,17 +62,24 @@ Trainer::Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, l
                                            nn::AdamConfig{.lr = static_cast<float>(cfg_.lr)});
 }
 
-Status Trainer::restore_value(const std::vector<float>& params, const std::vector<float>& m,
-                              const std::vector<float>& v, long long t) {
-  if (params.size() != value_params_.size() || m.size() != params.size() || v.size() != params.size())
-    return Status::invalid("checkpoint holds " + std::to_string(params.size()) +
+Status Trainer::restore(const TrainState& s) {
+  if (!s.has_adam) return Status::ok();
+  if (s.adam_m.size() != adam_.m().size() || s.adam_v.size() != adam_.v().size())
+    return Status::invalid("checkpoint holds Adam moments for " + std::to_string(s.adam_m.size()) +
+                           " parameters, the policy has " + std::to_string(adam_.m().size()));
+  const size_t nv = s.value_params.size();
+  if (nv != value_params_.size() || s.value_m.size() != nv || s.value_v.size() != nv)
+    return Status::invalid("checkpoint holds " + std::to_string(nv) +
                            " value-baseline parameters, the scenario's learner has " +
                            std::to_string(value_params_.size()));
+  adam_.m() = s.adam_m;
+  adam_.v() = s.adam_v;
+  adam_.set_t(s.adam_t);
   if (!value_adam_) return Status::ok();
-  value_params_ = params;
-  value_adam_->m() = m;
-  value_adam_->v() = v;
-  value_adam_->set_t(t);
+  value_params_ = s.value_params;
+  value_adam_->m() = s.value_m;
+  value_adam_->v() = s.value_v;
+  value_adam_->set_t(s.value_t);
   return Status::ok();
 }
 

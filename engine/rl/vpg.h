@@ -37,6 +37,7 @@
 #include "env/vec_env.h"
 #include "nn/adam.h"
 #include "nn/mlp.h"
+#include "rl/checkpoint.h"
 #include "rl/policy.h"
 
 namespace squawk::rl {
@@ -95,10 +96,10 @@ class Trainer {
   // null without a value baseline).
   std::vector<float>& value_params() { return value_params_; }
   nn::Adam* value_adam() { return value_adam_.get(); }
-  // Restores the value baseline and its Adam state from a checkpoint (resume);
-  // error unless the checkpoint holds exactly this learner's baseline size.
-  Status restore_value(const std::vector<float>& params, const std::vector<float>& m,
-                       const std::vector<float>& v, long long t);
+  // Continues from a checkpoint's learner state (resume): when it holds Adam
+  // moments, those, the Adam step and the value baseline with its Adam state.
+  // Error unless the sizes are exactly this learner's.
+  Status restore(const TrainState& s);
 
  private:
   struct Sample {
