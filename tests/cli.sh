@@ -5,23 +5,7 @@
 set -u
 sq=${1:?usage: tests/cli.sh SQUAWK_BINARY}
 d=tests/data/cli
-fails=0
-pass=0
-expect() {  # expect NAME WANT_RC PATTERN -- CMD...
-  local name=$1 want=$2 pattern=$3
-  shift 4
-  local out rc
-  out=$("$@" 2>&1)
-  rc=$?
-  if [ "$rc" -ne "$want" ] || ! grep -qE -- "$pattern" <<<"$out"; then
-    echo "FAIL $name: rc=$rc (want $want), output:"
-    sed 's/^/    /' <<<"$out" | head -20
-    fails=$((fails + 1))
-  else
-    echo "ok   $name"
-    pass=$((pass + 1))
-  fi
-}
+source "$(dirname "$0")/expect.sh"
 
 expect "help"            0 "subcommands:" -- "$sq" --help
 expect "version"         0 "^squawk [0-9]+\.[0-9]+\.[0-9]+" -- "$sq" --version
@@ -109,5 +93,4 @@ if [ "$trc" -eq 130 ] && grep -q "interrupted:" "$sig/a.log" &&
 else echo "FAIL train SIGINT + resume: rc=$trc, $(cat "$sig/a.log")"; fails=$((fails + 1)); fi
 rm -rf "$sig"
 
-echo "$pass passed, $fails failed"
-[ "$fails" -eq 0 ]
+finish

@@ -5,23 +5,7 @@
 set -u
 sq=${1:?usage: tests/hardening/cli.sh SQUAWK_BINARY}
 d=tests/hardening
-fails=0
-pass=0
-expect() {  # expect NAME WANT_RC PATTERN -- CMD...
-  local name=$1 want=$2 pattern=$3
-  shift 4
-  local out rc
-  out=$(timeout 60 "$@" 2>&1 </dev/null)
-  rc=$?
-  if [ "$rc" -ne "$want" ] || ! grep -qE -- "$pattern" <<<"$out"; then
-    echo "FAIL $name: rc=$rc (want $want), output:"
-    sed 's/^/    /' <<<"$out" | head -20
-    fails=$((fails + 1))
-  else
-    echo "ok   $name"
-    pass=$((pass + 1))
-  fi
-}
+source "$(dirname "$0")/../expect.sh"
 llm=(--llm-url http://127.0.0.1:1 --llm-model m)
 
 expect "11 timeout 1e-9"     2 "timeout 1e-09 s is not within" -- "$sq" llm chat hi "${llm[@]}" --timeout 1e-9
@@ -108,5 +92,4 @@ printf 'id\tsetup\tutterance\texpected\tcategory\nx\3771\t\tKL204 \377 climb\tAL
 expect "sib jsonl non-UTF-8" 0 $'"id":"x\xef\xbf\xbd1"' -- "$sq" translate --tsv "$tsv" --jsonl
 rm -f "$tsv"
 
-echo "$pass passed, $fails failed"
-[ "$fails" -eq 0 ]
+finish
