@@ -51,7 +51,7 @@ Result<script::Scenario> scenario_of(const Args& args) {
 }  // namespace
 
 int cmd_train_gpt2(const ArgV& argv) {
-  auto args = Args::parse(argv, with_policy_flags(learner_flags(), {"--resume", "--quiet"}));
+  auto args = Args::parse(argv, with_policy_flags(learner_flags(), {"--resume", "--quiet", "--train-embeddings"}));
   if (!args) return usage_error("train", args.status().message());
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");
   auto popts = gpt2_options(*args);
@@ -116,9 +116,10 @@ int cmd_train_gpt2(const ArgV& argv) {
 
   const bool quiet = args->has("--quiet");
   if (!quiet)
-    std::printf("training gpt2 (%s, %d trainable blocks, head %s, %zu trainable parameters) on %s: "
+    std::printf("training gpt2 (%s, %d trainable blocks%s, head %s, %zu trainable parameters) on %s: "
                 "%lld episodes, estimator %s, lr %g, seed %llu%s\n",
-                meta.source.c_str(), meta.spec.trainable_blocks, meta.spec.head.c_str(), policy.params().size(),
+                meta.source.c_str(), meta.spec.trainable_blocks, meta.spec.train_embeddings ? " and the embeddings" : "",
+                meta.spec.head.c_str(), policy.params().size(),
                 sc->path.c_str(), cfg.episodes, cfg.estimator.c_str(), cfg.lr,
                 static_cast<unsigned long long>(cfg.seed), resuming ? " (resumed)" : "");
   const auto t0 = std::chrono::steady_clock::now();
@@ -208,6 +209,7 @@ Result<Gpt2PolicyOptions> gpt2_options(const Args& args) {
   o.model_seed = static_cast<uint64_t>(seed);
   o.spec.trainable_blocks = static_cast<int>(blocks);
   o.spec.chunk_rows = static_cast<int>(chunk);
+  o.spec.train_embeddings = args.has("--train-embeddings");
   return o;
 }
 

@@ -103,6 +103,7 @@ int cmd_table3(const ArgV& argv) {
       {"Always -0.5 (slightly left)", "constant:-0.5", &mlp},
       {"Always +0.5 (slightly right)", "constant:0.5", &mlp},
       {"Never turning", "zero", &mlp},
+      {"Rule: +0.5 when on track, else hold", "turn-hold:0.5", &mlp},
       {"MVP (BlueSky resolution)", "mvp", &mlp}};
   std::vector<Row> rows;
   for (const auto& [name, kind, opts] : agents) {

@@ -298,7 +298,8 @@ const std::vector<Subcommand>& subcommands() {
        "                  exactly as if it had not stopped\n"
        "  --policy gpt2   fine-tune the GPT-2 prompt policy instead: --model tiny|DIR,\n"
        "                  --blocks K (trainable last blocks; default 2 for tiny, 1 for\n"
-       "                  a folder), --head action|lm, --prompt FILE (default\n"
+       "                  a folder), --train-embeddings (wte and wpe too; needs every\n"
+       "                  block), --head action|lm, --prompt FILE (default\n"
        "                  prompts/observation.lua), --episodes-per-update M; the\n"
        "                  checkpoint is written after every update\n"
        "Ctrl-C stops at the next update boundary (GPT-2: abandons the update in\n"
@@ -307,7 +308,7 @@ const std::vector<Subcommand>& subcommands() {
        "process at once.\n",
        cmd_train},
       {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
-       "usage: squawk eval SCENARIO.lua [--policy random|zero|constant:V|mvp|mlp|gpt2]\n"
+       "usage: squawk eval SCENARIO.lua [--policy random|zero|constant:V|turn-hold:V|mvp|mlp|gpt2]\n"
        "                   [--checkpoint FILE] [--episodes N] [--seed N] [--greedy] [--json]\n"
        "                   [--record FILE.jsonl] [--show-prompt N]\n\n"
        "Runs the scenario's evaluation episodes (default 1000, numbered from the\n"
@@ -320,6 +321,8 @@ const std::vector<Subcommand>& subcommands() {
        "  --policy random      an untrained MLP, initialised from the seed\n"
        "  --policy zero        never turn\n"
        "  --policy constant:V  always action V (in [-1, 1], units of the heading step)\n"
+       "  --policy turn-hold:V a rule: action V while flying at the waypoint (drift\n"
+       "                       under 2.5 deg), else 0 (hold the heading)\n"
        "  --policy mvp         BlueSky's MVP resolution steering the ownship (a\n"
        "                       classical reference, heading only)\n"
        "  --policy mlp         a trained MLP: --checkpoint FILE, by default the\n"

@@ -216,6 +216,7 @@ Status Model::extend(PrefixCache& cache, std::span<const int> tokens,
   std::vector<float> x(static_cast<size_t>(T) * C);
   embed(batch, P, x.data());
   Acts a;
+  cache.tokens.insert(cache.tokens.end(), tokens.begin(), tokens.end());
   for (int l = 0; l < L; ++l) {
     cache.resid[l].insert(cache.resid[l].end(), x.begin(), x.end());
     block_forward(l, x.data(), T, attn, a, false);
@@ -344,12 +345,15 @@ Status Model::head_logits_backward(std::span<const float> dlogits, std::span<con
   return Status::ok();
 }
 
-Status Model::set_trainable_blocks(int k) {
+Status Model::set_trainable_blocks(int k, bool embeddings) {
   const int L = config().n_layer;
   if (k < 0 || k > L)
     return Status::invalid("gpt2: trainable blocks " + str(k) + " outside 0.." + str(L));
+  if (embeddings && k != L)
+    return Status::invalid("gpt2: training wte and wpe needs all " + str(L) + " blocks trainable, not " + str(k));
   trainable_ = k;
-  const size_t start = k > 0 ? layout_.block_start(L - k) : layout_.ln_f();
+  embeddings_ = embeddings;
+  const size_t start = embeddings ? layout_.wte() : k > 0 ? layout_.block_start(L - k) : layout_.ln_f();
   grads_.assign(params_.size() - start, 0.0f);
   tail_acts_.clear();
   train_batch_ = {};
@@ -391,7 +395,14 @@ Status Model::forward_train(const PrefixCache& cache, const std::vector<std::vec
   const int inline_rows = s < L ? P : 0;
   std::vector<float> xr;
   xr.reserve(static_cast<size_t>(inline_rows + BT) * C);
-  if (inline_rows > 0) xr.assign(cache.resid[s].begin(), cache.resid[s].end());
+  if (embeddings_ && P > 0) {
+    if (cache.tokens.size() != static_cast<size_t>(P))
+      return Status::invalid("gpt2: the prefix cache holds no tokens to re-embed; build it with extend()");
+    xr.resize(static_cast<size_t>(P) * C);
+    embed({1, P, cache.tokens, {}}, 0, xr.data());
+  } else if (inline_rows > 0) {
+    xr.assign(cache.resid[s].begin(), cache.resid[s].end());
+  }
   xr.insert(xr.end(), x.begin(), x.end());
   const AttnArgs tail = {{batch.B, batch.T, C, c.n_head, P, true},
                          std::vector<const float*>(L, nullptr),
@@ -409,6 +420,7 @@ Status Model::forward_train(const PrefixCache& cache, const std::vector<std::vec
                         lnf + C, batch.B, C, c.ln_eps);
   train_batch_ = std::move(batch);
   train_prefix_ = inline_rows;
+  train_prefix_tokens_ = embeddings_ ? cache.tokens : std::vector<int>{};
   return Status::ok();
 }
 
@@ -436,6 +448,25 @@ Status Model::backward(std::span<const float> dhidden) {
                          std::vector<const float*>(L, nullptr),
                          std::vector<const float*>(L, nullptr)};
   for (int l = L - 1; l >= s; --l) block_backward(l, tail_acts_[l - s], dx.data(), R, tail);
+  if (embeddings_) {
+    // x[row] = wte[token] + wpe[position]: prefix rows sit at positions 0..P-1,
+    // row (b, t) at P + t.
+    float* gwte = grads_.data() + layout_.wte();
+    float* gwpe = grads_.data() + layout_.wpe();
+    auto scatter = [&](int row, int token, int pos) {
+      const float* d = dx.data() + static_cast<size_t>(row) * C;
+      float* te = gwte + static_cast<size_t>(token) * C;
+      float* pe = gwpe + static_cast<size_t>(pos) * C;
+      for (int i = 0; i < C; ++i) {
+        te[i] += d[i];
+        pe[i] += d[i];
+      }
+    };
+    for (int p = 0; p < P; ++p) scatter(p, train_prefix_tokens_[static_cast<size_t>(p)], p);
+    for (int b = 0; b < B; ++b)
+      for (int t = 0; t < T; ++t)
+        scatter(P + b * T + t, train_batch_.tokens[static_cast<size_t>(b) * T + t], P + t);
+  }
   return Status::ok();
 }
 

@@ -45,6 +45,7 @@ namespace squawk::gpt2 {
 struct PrefixCache {
   int len = 0;  // P
   std::vector<std::vector<float>> k, v, resid;
+  std::vector<int> tokens;  // [P] the prefix's token ids
 };
 
 class Model {
@@ -88,11 +89,14 @@ class Model {
 
   // ---- fine-tuning -----------------------------------------------------
   // Makes the last k blocks (0..L), ln_f and the extras trainable and
-  // allocates their gradients (zeroed).
-  Status set_trainable_blocks(int k);
+  // allocates their gradients (zeroed). embeddings = true also trains wte and
+  // wpe and needs k = L: then every parameter trains.
+  Status set_trainable_blocks(int k, bool embeddings = false);
   int trainable_blocks() const { return trainable_; }
+  bool trains_embeddings() const { return embeddings_; }
   // The trainable parameters: one contiguous span at the end of params()
-  // (blocks L-k..L-1, ln_f, extras), and their gradients, same length.
+  // (wte and wpe when trained, blocks L-k..L-1, ln_f, extras), and their
+  // gradients, same length.
   std::span<float> trainable_params();
   std::span<float> grads() { return grads_; }
   // Gradient of a trainable tensor; empty when the name is not trainable.
@@ -101,8 +105,9 @@ class Model {
 
   // Like forward_last, storing the activations of the trainable blocks. The
   // prefix part of those blocks is recomputed from the cache's input of the
-  // first trainable block, so gradients through the prefix keys and values
-  // are exact and the cache's frozen part stays valid across updates.
+  // first trainable block (from the cache's tokens when the embeddings
+  // train), so gradients through the prefix keys and values are exact and the
+  // cache's frozen part stays valid across updates.
   Status forward_train(const PrefixCache& cache, const std::vector<std::vector<int>>& seqs,
                        std::vector<float>& hidden);
   // Accumulates into grads() the gradient of a loss whose derivative with
@@ -131,11 +136,13 @@ class Model {
   ParamLayout layout_;
   std::vector<float> params_;
   int trainable_ = 0;
+  bool embeddings_ = false;
   std::vector<float> grads_;
   // State of the last forward_train.
   std::vector<Acts> tail_acts_;
   Batch train_batch_;
   int train_prefix_ = 0;
+  std::vector<int> train_prefix_tokens_;  // [P] when the embeddings train
   std::vector<float> lnf_in_, lnf_mean_, lnf_rstd_;
 };
 

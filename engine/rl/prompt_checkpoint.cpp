@@ -17,6 +17,7 @@ Status save_prompt_checkpoint(const std::string& path, const PromptCheckpoint& c
                                  {"action_values", c.spec.action_values},
                                  {"lm_texts", c.spec.lm_texts},
                                  {"trainable_blocks", c.spec.trainable_blocks},
+                                 {"train_embeddings", c.spec.train_embeddings},
                                  {"obs_size", c.spec.obs_size},
                                  {"vocab", c.vocab_json},
                                  {"merges", c.merges_txt},
@@ -36,6 +37,7 @@ Result<PromptCheckpoint> load_prompt_checkpoint(const std::string& path) {
     c.spec.action_values = h.at("action_values").get<std::vector<double>>();
     c.spec.lm_texts = h.at("lm_texts").get<std::vector<std::string>>();
     c.spec.trainable_blocks = whole<int>(h, "trainable_blocks");
+    c.spec.train_embeddings = h.value("train_embeddings", false);
     c.spec.obs_size = whole<int>(h, "obs_size");
     c.vocab_json = h.at("vocab").get<std::string>();
     c.merges_txt = h.at("merges").get<std::string>();

@@ -29,6 +29,10 @@ Status PromptPolicySpec::validate(int n_layer) const {
   if (trainable_blocks < 0 || trainable_blocks > n_layer)
     return Status::invalid("gpt2 trainable blocks " + std::to_string(trainable_blocks) +
                            ": expected 0.." + std::to_string(n_layer));
+  if (train_embeddings && (trainable_blocks != n_layer || head != "action"))
+    return Status::invalid("gpt2 policy: training the embeddings needs all " + std::to_string(n_layer) +
+                           " blocks trainable (got " + std::to_string(trainable_blocks) +
+                           ") and the \"action\" head (got \"" + head + "\"); the \"lm\" head reads the tied wte");
   if (chunk_rows < 1) return Status::invalid("gpt2 policy chunk_rows must be >= 1");
   if (obs_size < 8 || (obs_size - 3) % 5 != 0)
     return Status::invalid("gpt2 policy obs_size " + std::to_string(obs_size) + ": expected 3 + 5 n");
@@ -64,7 +68,7 @@ Result<std::unique_ptr<PromptPolicy>> PromptPolicy::make(gpt2::Model model, gpt2
                              std::string(kHeadWeight) + " [" + std::to_string(C) + ", " +
                              std::to_string(K) + "] and " + kHeadBias);
   }
-  SQUAWK_RETURN_IF_ERROR(model.set_trainable_blocks(spec.trainable_blocks));
+  SQUAWK_RETURN_IF_ERROR(model.set_trainable_blocks(spec.trainable_blocks, spec.train_embeddings));
   std::unique_ptr<PromptPolicy> p(
       new PromptPolicy(std::move(model), std::move(tokenizer), std::move(render), spec));
   SQUAWK_ASSIGN_OR_RETURN(p->prefix_tokens_, p->tokenizer_.encode(prefix));

@@ -21,7 +21,8 @@
 //             logit (hidden . wte[id]) over the tokens of lm_texts[k]; one
 //             forward for all K actions. No extra tensors.
 // Training: the last `trainable_blocks` blocks, ln_f and the head are the
-// trainable parameters (Model::trainable_params(), one contiguous span), so
+// trainable parameters, with train_embeddings also wte and wpe (then every
+// parameter; Model::trainable_params(), one contiguous span), so
 // params()/grads() feed nn::Adam and rl::Trainer directly. After an optimiser
 // step the trainable blocks' cached prefix keys/values are stale: every
 // accumulate_gradient() marks the cache stale and the next act() rebuilds it
@@ -51,6 +52,7 @@ struct PromptPolicySpec {
   std::vector<double> action_values = {-1, -0.5, 0, 0.5, 1};  // [-] K classes
   std::vector<std::string> lm_texts = {"-1", "-0.5", "0", "0.5", "1"};  // "lm": one per action
   int trainable_blocks = 1;     // [-] k last blocks trained (the paper: 1)
+  bool train_embeddings = false;  // wte and wpe train too (needs every block, head "action")
   int chunk_rows = 32;          // [-] rows per batched forward
   int obs_size = 28;            // [-] flat observation size, 3 + 5 intruders
 

@@ -138,14 +138,21 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
   if (kind == "zero") {
     m.policy = std::make_unique<rl::ConstantPolicy>(envs.obs_size(), 0.0f);
     m.label = "zero (never turn)";
-  } else if (kind.rfind("constant:", 0) == 0) {
-    const std::string v = kind.substr(9);
+  } else if (kind.rfind("constant:", 0) == 0 || kind.rfind("turn-hold:", 0) == 0) {
+    const bool constant = kind[0] == 'c';
+    const std::string v = kind.substr(kind.find(':') + 1);
     char* end = nullptr;
     const double value = std::strtod(v.c_str(), &end);
     if (v.empty() || end != v.c_str() + v.size() || !(value >= -1.0 && value <= 1.0))
-      return Status::invalid("policy '" + kind + "': expected constant:V with V a number in [-1, 1]");
-    m.policy = std::make_unique<rl::ConstantPolicy>(envs.obs_size(), static_cast<float>(value));
-    m.label = "constant " + v + " (always the same action)";
+      return Status::invalid("policy '" + kind + "': expected " + kind.substr(0, kind.find(':')) +
+                             ":V with V a number in [-1, 1]");
+    if (constant) {
+      m.policy = std::make_unique<rl::ConstantPolicy>(envs.obs_size(), static_cast<float>(value));
+      m.label = "constant " + v + " (always the same action)";
+    } else {
+      m.policy = std::make_unique<rl::TurnHoldPolicy>(envs.obs_size(), static_cast<float>(value));
+      m.label = "turn-hold " + v + " (turn " + v + " when flying at the waypoint, else hold the heading)";
+    }
   } else if (kind == "mvp") {
     m.policy = std::make_unique<rl::MvpPolicy>(envs);
     m.label = "mvp (BlueSky's MVP steering the ownship)";
@@ -177,7 +184,7 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
     m.prompt = g.meta.prompt;
     m.policy = std::move(g.policy);
   } else {
-    return Status::invalid("policy '" + kind + "': expected random, zero, constant:V, mvp, mlp or gpt2");
+    return Status::invalid("policy '" + kind + "': expected random, zero, constant:V, turn-hold:V, mvp, mlp or gpt2");
   }
   return m;
 }

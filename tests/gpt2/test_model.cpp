@@ -163,11 +163,12 @@ TEST_CASE("bad inputs to the model are errors") {
   CHECK_FALSE(model.forward_last(other, {{1}}, h).is_ok());
 }
 
-TEST_CASE("tail backward matches finite differences for every trainable tensor") {
+// Checks every trainable tensor of a model with the last k blocks (and the
+// embeddings when `embeddings`) trainable against central differences.
+static void check_tail_gradients(int k, bool embeddings) {
   const std::vector<TensorSpec> extras = {{"head.weight", {32, 3}, 0, 0}};
   Model model = random_model(kSmall, 5, extras);
-  const int k = 2;
-  REQUIRE(model.set_trainable_blocks(k).is_ok());
+  REQUIRE(model.set_trainable_blocks(k, embeddings).is_ok());
   const std::vector<int> prefix = {4, 8, 15, 16, 23};
   const std::vector<std::vector<int>> seqs = {{42, 1, 2}, {7}, {9, 9, 30, 31}};
   PrefixCache cache;
@@ -212,8 +213,13 @@ TEST_CASE("tail backward matches finite differences for every trainable tensor")
     if (t.offset < start) continue;
     ++tensors;
     Rng pick(t.offset);
-    for (int s = 0; s < 4; ++s) {
-      const size_t i = t.offset + static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1));
+    // Embedding rows that the prompt reads: its tokens, and positions 0..P+T-1.
+    const std::vector<int> rows = t.name == "wte.weight"   ? std::vector<int>{4, 23, 42, 7, 31, 9}
+                                  : t.name == "wpe.weight" ? std::vector<int>{0, 4, 5, 6, 8, 2}
+                                                           : std::vector<int>{};
+    for (int s = 0; s < (rows.empty() ? 4 : 6); ++s) {
+      const size_t i = t.offset + (rows.empty() ? static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1))
+                                                : static_cast<size_t>(rows[s]) * C + static_cast<size_t>(pick.uniform_int(0, C - 1)));
       float& p = model.params()[i];
       const float saved = p, eps = 1e-2f;
       p = saved + eps;
@@ -228,14 +234,22 @@ TEST_CASE("tail backward matches finite differences for every trainable tensor")
       ++checked;
     }
   }
-  CHECK(tensors == k * 12 + 2 + 1);
+  CHECK(tensors == k * 12 + 2 + 1 + (embeddings ? 2 : 0));
   MESSAGE(checked << " finite-difference checks over " << tensors << " trainable tensors");
 
-  SUBCASE("training forward equals the inference forward") {
-    std::vector<float> a, b;
-    REQUIRE(model.forward_train(cache, seqs, a).is_ok());
-    REQUIRE(model.forward_last(cache, seqs, b).is_ok());
-    CHECK(max_abs_diff(a, b) < 1e-5f);
+  // The training forward equals the inference forward.
+  std::vector<float> a, b;
+  REQUIRE(model.forward_train(cache, seqs, a).is_ok());
+  REQUIRE(model.forward_last(cache, seqs, b).is_ok());
+  CHECK(max_abs_diff(a, b) < 1e-5f);
+}
+
+TEST_CASE("tail backward matches finite differences for every trainable tensor") {
+  SUBCASE("last 2 of 3 blocks") { check_tail_gradients(2, false); }
+  SUBCASE("every block and the embeddings") { check_tail_gradients(3, true); }
+  SUBCASE("the embeddings need every block") {
+    Model model = random_model(kSmall, 5);
+    CHECK(model.set_trainable_blocks(2, true).message().find("needs all 3 blocks") != std::string::npos);
   }
 }
 

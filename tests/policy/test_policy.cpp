@@ -67,7 +67,8 @@ Result<std::string> short_render(const env::Observation& o) {
   return s + "\nact:";
 }
 
-std::unique_ptr<rl::PromptPolicy> tiny_policy(const std::string& head, int blocks, uint64_t seed = 7) {
+std::unique_ptr<rl::PromptPolicy> tiny_policy(const std::string& head, int blocks, uint64_t seed = 7,
+                                              bool embeddings = false) {
   gpt2::Config cfg = gpt2::Config::tiny();
   auto extras = head == "action" ? rl::PromptPolicy::head_extras(cfg.n_embd, 5) : std::vector<gpt2::TensorSpec>{};
   auto m = gpt2::Model::create(cfg, extras);
@@ -77,6 +78,7 @@ std::unique_ptr<rl::PromptPolicy> tiny_policy(const std::string& head, int block
   rl::PromptPolicySpec spec;
   spec.head = head;
   spec.trainable_blocks = blocks;
+  spec.train_embeddings = embeddings;
   auto p = rl::PromptPolicy::make(std::move(*m), gpt2::Tokenizer::bytes_only(), kPrefix, short_render, spec);
   REQUIRE(p.is_ok());
   Rng head_rng(seed + 1);
@@ -220,10 +222,11 @@ TEST_CASE("the clipped-ratio learner trains the prompt policy: one epoch is the 
   CHECK(run("ppo", 3) == three);
 }
 
-TEST_CASE("policy-loss gradient matches finite differences (both heads, tail of 2 blocks)") {
-  for (const char* head : {"action", "lm"}) {
+TEST_CASE("policy-loss gradient matches finite differences (both heads, tail of 2 blocks, embeddings)") {
+  for (const char* head : {"action", "lm", "action+embeddings"}) {
     CAPTURE(head);
-    auto p = tiny_policy(head, 2);
+    const bool emb = std::string(head) == "action+embeddings";
+    auto p = tiny_policy(emb ? "action" : head, 2, 7, emb);
     const int n = 3;
     const std::vector<float> obs = flat_rows(n);
     const std::vector<int> a = {0, 3, 4};
@@ -239,7 +242,19 @@ TEST_CASE("policy-loss gradient matches finite differences (both heads, tail of 
     // Indices spread over the tail: first block's weights, the last block, ln_f, the head.
     const size_t sz = theta.size();
     int checked = 0, large = 0;
-    for (size_t i : {size_t{5}, sz / 7, sz / 3, sz / 2 + 11, sz - 400, sz - 130, sz - 70, sz - 3}) {
+    std::vector<size_t> at = {size_t{5}, sz / 7, sz / 3, sz / 2 + 11, sz - 400, sz - 130, sz - 70, sz - 3};
+    if (emb) {
+      // wte rows of the digits the prompts contain, wpe rows of the suffix.
+      const auto& cfg = p->model().config();
+      const auto C = static_cast<size_t>(cfg.n_embd);
+      auto ids = p->tokenizer().encode("0.5");
+      REQUIRE(ids.is_ok());
+      const size_t wpe = static_cast<size_t>(cfg.vocab_size) * C;
+      at = {static_cast<size_t>((*ids)[0]) * C + 3, static_cast<size_t>((*ids)[1]) * C + 17,
+            static_cast<size_t>((*ids)[2]) * C + 40, wpe + p->prefix_tokens().size() * C + 1,
+            wpe + (p->prefix_tokens().size() + 6) * C + 9, wpe + 2 * C + 5, sz - 130, sz - 3};
+    }
+    for (size_t i : at) {
       const float keep = theta[i];
       const float eps = 1e-2f;
       theta[i] = keep + eps;
@@ -268,6 +283,7 @@ TEST_CASE("gpt2 policy checkpoints round-trip and reject damaged files") {
   c.model_seed = 7;
   c.config_json = "{}";
   c.spec = p->spec();
+  c.spec.train_embeddings = true;
   c.vocab_json = p->tokenizer().vocab_json();
   c.merges_txt = p->tokenizer().merges_txt();
   c.params.assign(p->params().begin(), p->params().end());
@@ -294,6 +310,7 @@ TEST_CASE("gpt2 policy checkpoints round-trip and reject damaged files") {
   CHECK(back->value_t == 5);
   CHECK(back->progress.episodes == 96);
   CHECK(back->spec.trainable_blocks == 1);
+  CHECK(back->spec.train_embeddings);
   CHECK(back->vocab_json == c.vocab_json);
   auto data = files::read(path);
   REQUIRE(data.is_ok());

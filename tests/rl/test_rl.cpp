@@ -321,6 +321,32 @@ TEST_CASE("the action histogram counts every decision in the nearest of the five
   CHECK(m->most_frequent_share() < 1.0);  // an untrained MLP samples several actions
 }
 
+TEST_CASE("the turn-hold rule turns only while flying at the waypoint") {
+  rl::TurnHoldPolicy rule(28, 0.5f);
+  CHECK(rule.name() == "turn-hold:0.5");
+  std::vector<float> obs(2 * 28, 0.0f);
+  obs[5] = 1.0f;             // row 0: cos_drift = 1, on track
+  obs[28 + 5] = 0.99f;       // row 1: about 8 deg off track
+  std::vector<rl::ActionSample> out(2);
+  Rng rng(1);
+  rule.act(obs, 2, std::vector<int>{0, 1}, rng, false, out);
+  CHECK(out[0].value == 0.5f);
+  CHECK(out[1].value == 0.0f);
+  // In the paper setup it turns once per conflict and then holds: far more
+  // holds than turns, and it still clears most conflicts.
+  env::HorizontalCrConfig ec;
+  ec.tlos = {300, 1000};
+  ec.lookahead = 600;
+  auto v = env::VecEnv::make(ec, 8);
+  REQUIRE(v);
+  auto r = rl::evaluate(rule, *v, {100, 2024, false});
+  REQUIRE(r);
+  CHECK(r->action_counts[3] > 0);
+  CHECK(r->action_counts[2] > 3 * r->action_counts[3]);
+  CHECK(r->action_counts[0] + r->action_counts[1] + r->action_counts[4] == 0);
+  CHECK(r->success_rate > 0.85);
+}
+
 TEST_CASE("evaluation is deterministic for a seed and rejects a mismatched policy") {
   env::HorizontalCrConfig ec;
   ec.tlos = {300, 1000};
