@@ -31,6 +31,15 @@ expect "gpt2 bench help"  0 "squawk gpt2 bench" -- "$sq" gpt2 bench --help
 # Both learners take the same learner flags, checked the same way.
 expect "train gpt2 gamma"   2 "train gamma must lie in" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --out "$(mktemp -d)" --gamma 2
 expect "train mlp gamma"    2 "train gamma must lie in" -- "$sq" train scenarios/horizontal_cr.lua --out "$(mktemp -d)" --gamma 2
+# Self-supervised pretraining writes a model folder that the policy fine-tunes
+# with the embeddings trainable; the held-out loss falls within a few steps.
+pt="$tmp/pretrained"
+expect "gpt2 pretrain"   0 "wrote $pt" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --episodes 8 --steps 6 --log-every 3 --holdout 16
+awk -F, 'NR == 2 { a = $5 } NR == 3 { b = $5 } END { exit !(NR == 3 && b < a) }' "$pt/pretrain.csv" && { echo "ok   pretrain held-out loss falls"; pass=$((pass + 1)); } || { echo "FAIL pretrain loss"; fails=$((fails + 1)); }
+expect "pretrain bad steps" 2 "--steps expects a positive integer" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --steps 0
+expect "train pretrained" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --lr 1e-3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/run"
+expect "eval pretrained" 0 "most frequent" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/run/checkpoint.ckpt" --episodes 2
+expect "embeddings need every block" 1 "needs all 2 blocks trainable" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --train-embeddings --blocks 1 --episodes 8 --out "$pt/bad"
 expect "render"          0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --out "$tmp/r.svg"
 grep -q "<circle" "$tmp/r.svg" && grep -q "<circle" "$tmp/ep.svg" && { echo "ok   svg has circles"; pass=$((pass + 1)); } || { echo "FAIL svg"; fails=$((fails + 1)); }
 printf 'episodes,eval_success_rate,eval_mean_reward\n1000,0.5,-1\n2000,0.8,-0.5\n' > "$tmp/log.csv"

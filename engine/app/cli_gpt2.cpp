@@ -1,10 +1,12 @@
-// squawk gpt2 info | generate | logits | bench | train-bpe | init.
+// squawk gpt2 info | generate | logits | bench | train-bpe | init (pretrain:
+// cli_gpt2_pretrain.cpp).
 #include <algorithm>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli.h"
+#include "app/gpt2_policy_factory.h"
 #include "app/subcommands.h"
 #include "core/files.h"
 #include "core/rng.h"
@@ -202,12 +204,13 @@ int cmd_gpt2(const ArgV& argv) {
         if (std::string(s.name) == "gpt2") std::fputs(s.help, stdout);
       return kExitOk;
     }
+  if (!argv.empty() && argv[0] == "pretrain") return cmd_gpt2_pretrain(ArgV(argv.begin() + 1, argv.end()));
   auto a = Args::parse(argv, {{"--max-tokens", "--top-k", "--seed", "--seq", "--batch", "--threads",
                                "--seconds", "--merges", "--layers", "--heads", "--width", "--context",
                                "--vocab"},
                               {"--json", "--tiny"}});
   if (!a) return usage_error("gpt2", a.status().message());
-  if (a->positional().empty()) return usage_error("gpt2", "missing action (info, generate, logits, bench, train-bpe, init)");
+  if (a->positional().empty()) return usage_error("gpt2", "missing action (info, generate, logits, bench, train-bpe, init, pretrain)");
   const std::string& what = a->positional()[0];
   if (what == "info") return info(*a);
   if (what == "generate") return generate(*a);

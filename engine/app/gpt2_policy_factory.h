@@ -29,5 +29,7 @@ Result<Gpt2PolicyOptions> gpt2_options(const Args& args);
 // True when argv selects --policy gpt2 (the hook of cmd_train).
 bool wants_gpt2(const ArgV& argv);
 int cmd_train_gpt2(const ArgV& argv);
+// squawk gpt2 pretrain SCENARIO.lua OUT_DIR (argv after "pretrain").
+int cmd_gpt2_pretrain(const ArgV& argv);
 
 }  // namespace squawk::app

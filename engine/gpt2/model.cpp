@@ -448,26 +448,83 @@ Status Model::backward(std::span<const float> dhidden) {
                          std::vector<const float*>(L, nullptr),
                          std::vector<const float*>(L, nullptr)};
   for (int l = L - 1; l >= s; --l) block_backward(l, tail_acts_[l - s], dx.data(), R, tail);
-  if (embeddings_) {
-    // x[row] = wte[token] + wpe[position]: prefix rows sit at positions 0..P-1,
-    // row (b, t) at P + t.
-    float* gwte = grads_.data() + layout_.wte();
-    float* gwpe = grads_.data() + layout_.wpe();
-    auto scatter = [&](int row, int token, int pos) {
-      const float* d = dx.data() + static_cast<size_t>(row) * C;
-      float* te = gwte + static_cast<size_t>(token) * C;
-      float* pe = gwpe + static_cast<size_t>(pos) * C;
-      for (int i = 0; i < C; ++i) {
-        te[i] += d[i];
-        pe[i] += d[i];
-      }
-    };
-    for (int p = 0; p < P; ++p) scatter(p, train_prefix_tokens_[static_cast<size_t>(p)], p);
-    for (int b = 0; b < B; ++b)
-      for (int t = 0; t < T; ++t)
-        scatter(P + b * T + t, train_batch_.tokens[static_cast<size_t>(b) * T + t], P + t);
-  }
+  if (embeddings_) embed_backward(train_batch_, train_prefix_tokens_, dx.data());
   return Status::ok();
+}
+
+void Model::embed_backward(const Batch& batch, std::span<const int> prefix, const float* dx) {
+  const int C = config().n_embd, P = static_cast<int>(prefix.size());
+  float* gwte = grads_.data() + layout_.wte();
+  float* gwpe = grads_.data() + layout_.wpe();
+  auto scatter = [&](int row, int token, int pos) {
+    const float* d = dx + static_cast<size_t>(row) * C;
+    float* te = gwte + static_cast<size_t>(token) * C;
+    float* pe = gwpe + static_cast<size_t>(pos) * C;
+    for (int i = 0; i < C; ++i) {
+      te[i] += d[i];
+      pe[i] += d[i];
+    }
+  };
+  for (int p = 0; p < P; ++p) scatter(p, prefix[static_cast<size_t>(p)], p);
+  for (int b = 0; b < batch.B; ++b)
+    for (int t = 0; t < batch.T; ++t)
+      scatter(P + b * batch.T + t, batch.tokens[static_cast<size_t>(b) * batch.T + t], P + t);
+}
+
+Result<double> Model::lm_loss_backward(const std::vector<std::vector<int>>& seqs, int from) {
+  const Config& c = config();
+  const int C = c.n_embd, L = c.n_layer, V = c.vocab_size;
+  if (!embeddings_ || trainable_ != L)
+    return Status::invalid("gpt2: language-model training needs every block and the embeddings trainable");
+  SQUAWK_ASSIGN_OR_RETURN(Batch batch, make_batch(0, seqs));
+  const int B = batch.B, T = batch.T, R = B * T;
+  // Rows whose next token is predicted, and that token.
+  std::vector<int> rows, targets;
+  for (int b = 0; b < B; ++b)
+    for (int t = std::max(from, 0); t + 1 <= batch.last[static_cast<size_t>(b)]; ++t) {
+      rows.push_back(b * T + t);
+      targets.push_back(batch.tokens[static_cast<size_t>(b) * T + t + 1]);
+    }
+  if (rows.empty()) return Status::invalid("gpt2: no token to predict after position " + str(from));
+  // Forward: blocks, ln_f, the tied LM head.
+  std::vector<float> x(static_cast<size_t>(R) * C);
+  embed(batch, 0, x.data());
+  const AttnArgs attn = {{B, T, C, c.n_head, 0, true}, std::vector<const float*>(L, nullptr),
+                         std::vector<const float*>(L, nullptr)};
+  std::vector<Acts> acts(L);
+  for (int l = 0; l < L; ++l) block_forward(l, x.data(), R, attn, acts[l], true);
+  const float* lnf = params_.data() + layout_.ln_f();
+  std::vector<float> hidden(x.size()), mean(R), rstd(R);
+  nn::layernorm_forward(hidden.data(), mean.data(), rstd.data(), x.data(), lnf, lnf + C, R, C, c.ln_eps);
+  const int N = static_cast<int>(rows.size());
+  std::vector<float> h(static_cast<size_t>(N) * C), logits(static_cast<size_t>(N) * V);
+  for (int i = 0; i < N; ++i)
+    std::copy_n(hidden.data() + static_cast<size_t>(rows[i]) * C, C, h.data() + static_cast<size_t>(i) * C);
+  nn::gemm(false, true, N, V, C, 1.0f, h.data(), C, params_.data() + layout_.wte(), C, 0.0f, logits.data(), V);
+  // Loss and dlogits = (softmax - onehot) / N.
+  double loss = 0.0;
+  for (int i = 0; i < N; ++i) {
+    float* z = logits.data() + static_cast<size_t>(i) * V;
+    const float m = *std::max_element(z, z + V);
+    double sum = 0.0;
+    for (int v = 0; v < V; ++v) sum += std::exp(static_cast<double>(z[v] - m));
+    loss += std::log(sum) - static_cast<double>(z[targets[i]] - m);
+    for (int v = 0; v < V; ++v) z[v] = static_cast<float>(std::exp(static_cast<double>(z[v] - m)) / sum / N);
+    z[targets[i]] -= 1.0f / static_cast<float>(N);
+  }
+  // Backward: the head (dh and the tied wte), ln_f, the blocks, the embeddings.
+  float* gwte = grads_.data() + layout_.wte();
+  nn::gemm(true, false, V, C, N, 1.0f, logits.data(), V, h.data(), C, 1.0f, gwte, C);
+  std::vector<float> dh(static_cast<size_t>(N) * C), dhidden(x.size(), 0.0f), dx(x.size(), 0.0f);
+  nn::gemm(false, false, N, C, V, 1.0f, logits.data(), V, params_.data() + layout_.wte(), C, 0.0f, dh.data(), C);
+  for (int i = 0; i < N; ++i)
+    std::copy_n(dh.data() + static_cast<size_t>(i) * C, C, dhidden.data() + static_cast<size_t>(rows[i]) * C);
+  float* glnf = grads_.data() + layout_.ln_f();
+  nn::layernorm_backward(dx.data(), glnf, glnf + C, dhidden.data(), x.data(), lnf, mean.data(),
+                         rstd.data(), R, C);
+  for (int l = L - 1; l >= 0; --l) block_backward(l, acts[l], dx.data(), R, attn);
+  embed_backward(batch, {}, dx.data());
+  return loss / N;
 }
 
 }  // namespace squawk::gpt2

@@ -114,6 +114,15 @@ class Model {
   // respect to the last forward_train's hidden output is dhidden [B, C].
   Status backward(std::span<const float> dhidden);
 
+  // ---- language-model training (every block and the embeddings) ------
+  // Next-token cross-entropy of B sequences from position 0 (no cache), the
+  // LM head tied to wte: the mean over every predicted token t+1, t in
+  // from..len-2 of each sequence, of -log softmax(hidden[t] @ wte^T)[seq[t+1]]
+  // [nats]. Accumulates its gradient into grads(); needs
+  // set_trainable_blocks(L, true). Errors as forward_last, or no token to
+  // predict.
+  Result<double> lm_loss_backward(const std::vector<std::vector<int>>& seqs, int from);
+
  private:
   // Activations of one block over R rows (kept per trainable block).
   struct Acts {
@@ -132,6 +141,9 @@ class Model {
                      bool store) const;
   void block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& attn);
   void gather_last(const Batch& batch, int row0, const float* x, float* out) const;
+  // grads of wte and wpe += dx [P + B T, C], the gradient of the block-0 input
+  // rows: prefix token p at position p, then row (b, t) at position P + t.
+  void embed_backward(const Batch& batch, std::span<const int> prefix, const float* dx);
 
   ParamLayout layout_;
   std::vector<float> params_;

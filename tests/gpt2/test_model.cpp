@@ -253,6 +253,63 @@ TEST_CASE("tail backward matches finite differences for every trainable tensor")
   }
 }
 
+TEST_CASE("next-token loss: gradient matches finite differences, and it equals the logits' cross-entropy") {
+  Model model = random_model(kSmall, 8);
+  const std::vector<std::vector<int>> seqs = {{3, 9, 27, 20, 1, 5}, {60, 2, 2}, {7, 7, 7, 7}};
+  CHECK(model.lm_loss_backward(seqs, 0).status().message().find("embeddings trainable") != std::string::npos);
+  REQUIRE(model.set_trainable_blocks(kSmall.n_layer, true).is_ok());
+  CHECK_FALSE(model.lm_loss_backward(seqs, 6).is_ok());  // nothing after position 6
+  const int from = 1;
+  // The loss from logits_all: -log softmax over the tied head, predicted tokens only.
+  auto reference = [&]() {
+    double sum = 0.0;
+    int n = 0;
+    for (const auto& s : seqs) {
+      std::vector<float> z;
+      REQUIRE(model.logits_all(s, z).is_ok());
+      const int V = kSmall.vocab_size;
+      for (size_t t = from; t + 1 < s.size(); ++t) {
+        const float* row = z.data() + t * V;
+        double m = row[0], e = 0.0;
+        for (int v = 0; v < V; ++v) m = std::max(m, static_cast<double>(row[v]));
+        for (int v = 0; v < V; ++v) e += std::exp(row[v] - m);
+        sum += std::log(e) + m - row[s[t + 1]];
+        ++n;
+      }
+    }
+    return sum / n;
+  };
+  model.zero_grads();
+  auto loss = model.lm_loss_backward(seqs, from);
+  REQUIRE(loss.is_ok());
+  CHECK(*loss == doctest::Approx(reference()).epsilon(1e-5));
+  const std::vector<float> analytic(model.grads().begin(), model.grads().end());
+  const int C = kSmall.n_embd;
+  int checked = 0;
+  for (const TensorSpec& t : model.layout().tensors()) {
+    Rng pick(t.offset + 1);
+    for (int s = 0; s < 3; ++s) {
+      const size_t r = t.name == "wte.weight"   ? static_cast<size_t>(std::vector<int>{9, 2, 7}[s])
+                       : t.name == "wpe.weight" ? static_cast<size_t>(s + 1)
+                                                : 0;
+      const size_t i = t.offset + (t.name.rfind("w", 0) == 0 ? r * C + static_cast<size_t>(pick.uniform_int(0, C - 1))
+                                                             : static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1)));
+      float& p = model.params()[i];
+      const float saved = p, eps = 1e-2f;
+      p = saved + eps;
+      const double lp = reference();
+      p = saved - eps;
+      const double lm = reference();
+      p = saved;
+      const double fd = (lp - lm) / (2.0 * eps);
+      INFO(t.name << "[" << (i - t.offset) << "]: analytic " << analytic[i] << ", finite difference " << fd);
+      CHECK(std::fabs(analytic[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
+      ++checked;
+    }
+  }
+  CHECK(checked == 3 * static_cast<int>(model.layout().tensors().size()));
+}
+
 TEST_CASE("Adam on the trainable tail and a head fits a small target") {
   const int C = kSmall.n_embd, A = 2;
   const std::vector<TensorSpec> extras = {{"head.weight", {C, A}, 0, 0}};

@@ -1,0 +1,167 @@
+// squawk gpt2 pretrain SCENARIO.lua OUT_DIR: self-supervised pretraining of the
+// tiny GPT-2 on the observation prompts it will read as a policy, the offline
+// stand-in for GPT-2's own pretraining (no GPT-2 weights are reachable).
+//
+// Data: the prompts the template renders for --episodes training episodes of
+// the scenario under uniformly random actions (so turned, off-track states
+// appear), tokenised by the tiny policy's own BPE; the last --holdout prompts
+// are held out. Objective: next-token cross-entropy over every token after the
+// static prefix (gpt2::Model::lm_loss_backward), Adam on every parameter, no
+// action labels and no reward. Output: a Hugging Face folder (config.json,
+// model.safetensors, vocab.json, merges.txt) that `squawk train --policy gpt2
+// --model OUT_DIR` fine-tunes, and OUT_DIR/pretrain.csv with the losses.
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#include "app/cli.h"
+#include "app/gpt2_policy_factory.h"
+#include "app/vm_options.h"
+#include "core/files.h"
+#include "core/rng.h"
+#include "env/vec_env.h"
+#include "gpt2/checkpoint.h"
+#include "nn/adam.h"
+#include "script/scenario.h"
+
+namespace squawk::app {
+
+namespace {
+
+// Token ids (prefix included) of every prompt the policy reads while `envs`
+// run `episodes` episodes from `seed` under uniformly random actions.
+Result<std::vector<std::vector<int>>> prompt_corpus(rl::PromptPolicy& policy, env::VecEnv& envs,
+                                                    long long episodes, uint64_t seed) {
+  static const double kActions[] = {-1.0, -0.5, 0.0, 0.5, 1.0};
+  std::vector<std::vector<int>> out;
+  Rng rng(seed ^ 0x9E7Bull);
+  envs.start(seed, 0, static_cast<uint64_t>(episodes));
+  std::vector<double> actions, rewards;
+  std::vector<uint8_t> dones;
+  const auto d = static_cast<size_t>(envs.obs_size());
+  while (!envs.finished()) {
+    const size_t n = envs.waiting().size();
+    for (size_t i = 0; i < n; ++i) {
+      SQUAWK_ASSIGN_OR_RETURN(std::vector<int> ids, policy.suffix_tokens(envs.observations().subspan(i * d, d)));
+      std::vector<int> seq = policy.prefix_tokens();
+      seq.insert(seq.end(), ids.begin(), ids.end());
+      out.push_back(std::move(seq));
+    }
+    actions.resize(n);
+    rewards.assign(n, 0.0);
+    dones.assign(n, 0);
+    for (double& a : actions) a = kActions[rng.uniform_int(0, 4)];
+    envs.step(actions, rewards, dones);
+  }
+  return out;
+}
+
+}  // namespace
+
+int cmd_gpt2_pretrain(const ArgV& argv) {
+  auto args = Args::parse(argv, with_vm_flags({{"--prompt", "--episodes", "--steps", "--batch", "--lr", "--seed",
+                                                "--model-seed", "--holdout", "--log-every"},
+                                               {"--quiet"}}));
+  if (!args) return usage_error("gpt2", args.status().message());
+  if (args->positional().size() != 2) return usage_error("gpt2", "pretrain expects SCENARIO.lua OUT_DIR");
+  const std::pair<const char*, long long> defaults[] = {{"--episodes", 600}, {"--steps", 3000}, {"--batch", 16},
+                                                        {"--seed", 1},       {"--model-seed", 0}, {"--holdout", 256},
+                                                        {"--log-every", 100}};
+  std::vector<long long> v;
+  for (const auto& [flag, def] : defaults) {
+    auto x = args->get_int(flag, def);
+    if (!x || *x < (std::string(flag) == "--model-seed" ? 0 : 1))
+      return usage_error("gpt2", std::string(flag) + " expects a positive integer");
+    v.push_back(*x);
+  }
+  const long long episodes = v[0], steps = v[1], batch = v[2], holdout = v[5], log_every = v[6];
+  const auto seed = static_cast<uint64_t>(v[3]);
+  auto lr = args->get_double("--lr", 1e-3);
+  if (!lr || !(*lr > 0.0 && *lr < 1.0)) return usage_error("gpt2", "--lr expects a number in (0, 1)");
+  auto vo = vm_options(*args);
+  if (!vo) return usage_error("gpt2", vo.status().message());
+  vo->out_dir.clear();
+  auto sc = script::load_scenario(args->positional()[0], *vo);
+  if (!sc) return failure(sc.status());
+  const std::string out = args->positional()[1];
+  const bool quiet = args->has("--quiet");
+
+  script::Gpt2PolicyOptions po;
+  po.model_seed = static_cast<uint64_t>(v[4]);
+  po.prompt = args->get_or("--prompt", "");
+  po.spec.trainable_blocks = gpt2::Config::tiny().n_layer;
+  po.spec.train_embeddings = true;
+  auto g = script::make_gpt2_policy(po, sc->train_env, *vo);
+  if (!g) return failure(g.status());
+  rl::PromptPolicy& policy = *g->policy;
+  gpt2::Model& model = policy.model();
+  auto envs = env::VecEnv::make(sc->train_env, 16);
+  if (!envs) return failure(envs.status());
+  auto corpus = prompt_corpus(policy, *envs, episodes, seed);
+  if (!corpus) return failure(corpus.status());
+  if (corpus->size() <= static_cast<size_t>(holdout))
+    return usage_error("gpt2", std::to_string(corpus->size()) + " prompts from " + std::to_string(episodes) +
+                                   " episodes leave none to train on after --holdout " + std::to_string(holdout));
+  const size_t n_train = corpus->size() - static_cast<size_t>(holdout);
+  const int from = static_cast<int>(policy.prefix_tokens().size()) - 1;
+  if (!quiet)
+    std::printf("pretraining the tiny gpt2 (%lld parameters) on %zu prompts (%zu held out) from %lld episodes; "
+                "%lld steps of %lld prompts, lr %g\n",
+                model.config().num_params(), n_train, static_cast<size_t>(holdout), episodes, steps, batch, *lr);
+
+  if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
+  std::ofstream log(out + "/pretrain.csv");
+  if (!log) return failure(Status::io_error("cannot write " + out + "/pretrain.csv"));
+  log << "step,prompts,wall_s,train_loss,holdout_loss\n";
+  nn::Adam adam(model.trainable_params(), model.grads(), {.lr = static_cast<float>(*lr), .grad_clip = 1.0f});
+  // Mean next-token loss over the held-out prompts, in batches; no update.
+  auto holdout_loss = [&]() -> Result<double> {
+    double sum = 0.0;
+    int parts = 0;
+    for (size_t i = n_train; i < corpus->size(); i += static_cast<size_t>(batch), ++parts) {
+      const size_t end = std::min(corpus->size(), i + static_cast<size_t>(batch));
+      SQUAWK_ASSIGN_OR_RETURN(double l, model.lm_loss_backward({corpus->begin() + static_cast<long>(i),
+                                                                corpus->begin() + static_cast<long>(end)},
+                                                               from));
+      sum += l;
+    }
+    model.zero_grads();
+    return sum / parts;
+  };
+  Rng pick(seed);
+  const auto t0 = std::chrono::steady_clock::now();
+  double run = 0.0;
+  for (long long step = 1; step <= steps; ++step) {
+    std::vector<std::vector<int>> part;
+    for (long long b = 0; b < batch; ++b)
+      part.push_back((*corpus)[static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(n_train) - 1))]);
+    model.zero_grads();
+    auto l = model.lm_loss_backward(part, from);
+    if (!l) return failure(l.status());
+    adam.step();
+    run += *l;
+    if (step % log_every == 0 || step == steps) {
+      auto h = holdout_loss();
+      if (!h) return failure(h.status());
+      const long long k = step % log_every == 0 ? log_every : step % log_every;
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      char row[160];
+      std::snprintf(row, sizeof row, "%lld,%lld,%.1f,%.4f,%.4f\n", step, step * batch, wall, run / k, *h);
+      log << row << std::flush;
+      if (!quiet)
+        std::printf("step %lld: train loss %.4f, held-out loss %.4f nats per token, %.0f s\n", step, run / k, *h,
+                    wall);
+      run = 0.0;
+    }
+  }
+  Status st = gpt2::save_model(out, model);
+  if (st.is_ok()) st = policy.tokenizer().save(out);
+  if (!st.is_ok()) return failure(st);
+  if (!quiet)
+    std::printf("wrote %s (config.json, model.safetensors, vocab.json, merges.txt, pretrain.csv); fine-tune it with\n"
+                "  squawk train %s --policy gpt2 --model %s --train-embeddings --blocks %d --lr 1e-3 --out DIR\n",
+                out.c_str(), args->positional()[0].c_str(), out.c_str(), model.config().n_layer);
+  return kExitOk;
+}
+
+}  // namespace squawk::app
