@@ -10,6 +10,7 @@
 // action labels and no reward. Output: a Hugging Face folder (config.json,
 // model.safetensors, vocab.json, merges.txt) that `squawk train --policy gpt2
 // --model OUT_DIR` fine-tunes, and OUT_DIR/pretrain.csv with the losses.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -154,7 +155,11 @@ int cmd_gpt2_pretrain(const ArgV& argv) {
       run = 0.0;
     }
   }
-  Status st = gpt2::save_model(out, model);
+  // A plain GPT-2 folder: the policy's action head (untouched here) stays out.
+  auto plain = gpt2::Model::create(model.config());
+  if (!plain) return failure(plain.status());
+  std::copy_n(model.params().begin(), plain->params().size(), plain->params().begin());
+  Status st = gpt2::save_model(out, *plain);
   if (st.is_ok()) st = policy.tokenizer().save(out);
   if (!st.is_ok()) return failure(st);
   if (!quiet)

@@ -64,7 +64,9 @@ const std::vector<Subcommand>& subcommands() {
        "                         [--seconds S]\n"
        "       squawk gpt2 train-bpe OUT_DIR FILE... [--merges N]\n"
        "       squawk gpt2 init OUT_DIR [--vocab DIR] [--layers N] [--heads N] [--width N]\n"
-       "                        [--context N] [--seed N]\n\n"
+       "                        [--context N] [--seed N]\n"
+       "       squawk gpt2 pretrain SCENARIO.lua OUT_DIR [--prompt FILE] [--episodes N]\n"
+       "                        [--steps N] [--batch B] [--lr X] [--seed N] [--holdout N]\n\n"
        "DIR is a Hugging Face GPT-2 folder (config.json, model.safetensors in F32,\n"
        "F16 or BF16, vocab.json + merges.txt) or the word `tiny`: a random 2-layer,\n"
        "64-wide model over the byte-level vocabulary, seeded by --seed (default 0).\n\n"
@@ -84,7 +86,14 @@ const std::vector<Subcommand>& subcommands() {
        "  init        write a random GPT-2 folder (GPT-2's initialisation; default the\n"
        "              tiny shape) over the vocabulary of --vocab DIR or the bytes;\n"
        "              GPT-2 small's shape: --layers 12 --heads 12 --width 768\n"
-       "              --context 1024\n",
+       "              --context 1024\n"
+       "  pretrain    next-token pretraining of the tiny policy model on the\n"
+       "              prompts the template renders for N training episodes under\n"
+       "              random actions (default 600; the last --holdout 256 prompts\n"
+       "              held out), --steps 3000 Adam steps of --batch 16 prompts at\n"
+       "              --lr 1e-3, no action labels; writes a GPT-2 folder (with the\n"
+       "              policy's BPE) and OUT_DIR/pretrain.csv; fine-tune it with\n"
+       "              squawk train --policy gpt2 --model OUT_DIR --train-embeddings\n",
        cmd_gpt2},
       {"render", "render EPISODE.jsonl|SCENARIO.lua|SCENARIO.scn   draw an episode or traffic as SVG",
        "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"

@@ -49,7 +49,7 @@ Result<std::string> vocabulary_text(PromptRenderer& r, const env::HorizontalCrCo
 
 Result<gpt2::Model> base_model(const std::string& source, uint64_t seed, const gpt2::Config& tiny_cfg,
                                const std::vector<gpt2::TensorSpec>& extras) {
-  if (source != "tiny") return gpt2::load_model(source, extras);
+  if (source != "tiny") return gpt2::load_model(paths::resolve(source), extras);
   SQUAWK_ASSIGN_OR_RETURN(gpt2::Model m, gpt2::Model::create(tiny_cfg, extras));
   Rng rng(seed);
   m.init_random(rng);
@@ -76,12 +76,14 @@ Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::Ho
   const std::string prompt = prompt_path(opts.prompt);
   SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<PromptRenderer> r, PromptRenderer::load(prompt, vm));
   rl::PromptCheckpoint meta;
-  meta.source = opts.model;
+  const bool tiny = opts.model == "tiny";
+  // A folder is stored as @home/REL or absolute, so the checkpoint loads from any folder.
+  const std::string dir = tiny ? "" : paths::resolve(opts.model);
+  meta.source = tiny ? opts.model : paths::portable(paths::absolute(dir));
   meta.model_seed = opts.model_seed;
   meta.spec = opts.spec;
   meta.spec.obs_size = env::observation_size(env.num_intruders);
   meta.prompt = paths::portable(prompt);  // the checkpoint follows the home it is used in
-  const bool tiny = opts.model == "tiny";
   if (meta.spec.trainable_blocks < 0) meta.spec.trainable_blocks = tiny ? kTinyTrainableBlocks : 1;
   gpt2::Tokenizer tok = gpt2::Tokenizer::bytes_only();
   gpt2::Config cfg = gpt2::Config::tiny();
@@ -91,12 +93,12 @@ Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::Ho
     cfg.vocab_size = tok.vocab_size();
     cfg.n_ctx = kTinyContext;
   } else {
-    if (!files::exists(opts.model + "/config.json"))
+    if (!files::exists(dir + "/config.json"))
       return Status::not_found("--model " + opts.model + ": no config.json (expected \"tiny\" or a Hugging Face GPT-2 folder)");
-    SQUAWK_ASSIGN_OR_RETURN(std::string cj, files::read(opts.model + "/config.json"));
+    SQUAWK_ASSIGN_OR_RETURN(std::string cj, files::read(dir + "/config.json"));
     SQUAWK_ASSIGN_OR_RETURN(cfg, gpt2::parse_hf_config(cj));
-    if (files::exists(opts.model + "/vocab.json")) {
-      SQUAWK_ASSIGN_OR_RETURN(tok, gpt2::Tokenizer::load(opts.model));
+    if (files::exists(dir + "/vocab.json")) {
+      SQUAWK_ASSIGN_OR_RETURN(tok, gpt2::Tokenizer::load(dir));
     } else if (cfg.vocab_size != 257) {
       return Status::not_found("--model " + opts.model + ": no vocab.json/merges.txt for its " +
                                std::to_string(cfg.vocab_size) + "-token vocabulary");
