@@ -1,10 +1,10 @@
 // Reference policies with no parameters.
 //   ConstantPolicy: plays one action value whatever the state (0 = never
 //     turn); the baselines that reveal a policy which learned one constant turn.
-//   TurnHoldPolicy: a two-line rule: turn by one action value while the
-//     ownship flies at its waypoint (|drift| < 2.5 deg, read from cos_drift in
-//     the flat observation), otherwise hold the heading (0). The rule-based
-//     baseline of "turn off the conflict once, then wait it out".
+//     With When::on_track, the turn-hold rule: the value while the ownship
+//     flies at its waypoint (|drift| < 2.5 deg, read from cos_drift in the flat
+//     observation), otherwise hold the heading (0); the rule-based baseline of
+//     "turn off the conflict once, then wait it out".
 //   MvpPolicy:  BlueSky's MVP resolution steering the ownship
 //     (HorizontalCrEnv::mvp_action, a continuous action in [-1, 1]); it reads
 //     the true state of the VecEnv slot of each row, not the observation.
@@ -17,8 +17,10 @@ namespace squawk::rl {
 
 class ConstantPolicy : public Policy {
  public:
-  // value: [-] in units of the heading step.
-  ConstantPolicy(int obs_size, float value) : obs_size_(obs_size), value_(value) {}
+  enum class When { always, on_track };
+  // value: [-] in units of the heading step; obs_size = 3 + 5 n.
+  ConstantPolicy(int obs_size, float value, When when = When::always)
+      : obs_size_(obs_size), value_(value), when_(when) {}
   std::string name() const override;
   int obs_size() const override { return obs_size_; }
   void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
@@ -27,20 +29,7 @@ class ConstantPolicy : public Policy {
  private:
   int obs_size_;
   float value_;
-};
-
-class TurnHoldPolicy : public Policy {
- public:
-  // value: [-] the turn, in units of the heading step; obs_size = 3 + 5 n.
-  TurnHoldPolicy(int obs_size, float value) : obs_size_(obs_size), value_(value) {}
-  std::string name() const override;
-  int obs_size() const override { return obs_size_; }
-  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
-           std::span<ActionSample> out) override;
-
- private:
-  int obs_size_;
-  float value_;
+  When when_;
 };
 
 class MvpPolicy : public Policy {

@@ -148,13 +148,11 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
     if (v.empty() || end != v.c_str() + v.size() || !(value >= -1.0 && value <= 1.0))
       return Status::invalid("policy '" + kind + "': expected " + kind.substr(0, kind.find(':')) +
                              ":V with V a number in [-1, 1]");
-    if (constant) {
-      m.policy = std::make_unique<rl::ConstantPolicy>(envs.obs_size(), static_cast<float>(value));
-      m.label = "constant " + v + " (always the same action)";
-    } else {
-      m.policy = std::make_unique<rl::TurnHoldPolicy>(envs.obs_size(), static_cast<float>(value));
-      m.label = "turn-hold " + v + " (turn " + v + " when flying at the waypoint, else hold the heading)";
-    }
+    using When = rl::ConstantPolicy::When;
+    m.policy = std::make_unique<rl::ConstantPolicy>(envs.obs_size(), static_cast<float>(value),
+                                                    constant ? When::always : When::on_track);
+    m.label = constant ? "constant " + v + " (always the same action)"
+                       : "turn-hold " + v + " (turn " + v + " when flying at the waypoint, else hold the heading)";
   } else if (kind == "mvp") {
     m.policy = std::make_unique<rl::MvpPolicy>(envs);
     m.label = "mvp (BlueSky's MVP steering the ownship)";

@@ -322,7 +322,7 @@ TEST_CASE("the action histogram counts every decision in the nearest of the five
 }
 
 TEST_CASE("the turn-hold rule turns only while flying at the waypoint") {
-  rl::TurnHoldPolicy rule(28, 0.5f);
+  rl::ConstantPolicy rule(28, 0.5f, rl::ConstantPolicy::When::on_track);
   CHECK(rule.name() == "turn-hold:0.5");
   std::vector<float> obs(2 * 28, 0.0f);
   obs[5] = 1.0f;             // row 0: cos_drift = 1, on track
