@@ -21,7 +21,7 @@
 
 local M = {}
 
-M.number_format = "%.2f"  -- string.format pattern for every value
+M.number_format = "%+.2f" -- string.format pattern for every value (a sign on every value: fixed width)
 M.separator = ", "        -- between the values of one field
 
 M.intro = "You are a decision support system that aids in avoiding collisions between the "

@@ -36,6 +36,10 @@ local c = squawk.env.evaluate{ scenario = "scenarios/horizontal_cr.lua", policy 
 check(c.actions["-0.5"] > 0 and c.actions["0"] == 0, "constant:-0.5 plays -0.5 only")
 local g = squawk.env.evaluate{ scenario = "scenarios/horizontal_cr.lua", policy = "gpt2", episodes = 4, seed = 1 }
 check_eq(g.episodes, 4)
+-- The shipped fine-tuned GPT-2 decides by the state: no single greedy action dominates.
+local gg = squawk.env.evaluate{ scenario = "scenarios/horizontal_cr.lua", policy = "gpt2", episodes = 20, seed = 3, greedy = true }
+check(gg.most_frequent_share < 0.8, "shipped gpt2 greedy share " .. gg.most_frequent_share)
+check(gg.actions["0"] > 0 and gg.actions["0.5"] > 0 and gg.actions["-0.5"] > 0, "turns both ways and holds")
 local bad_ok, bad = pcall(squawk.env.evaluate, { scenario = "scenarios/horizontal_cr.lua", policy = "constant:3" })
 check(not bad_ok and tostring(bad):find("%[%-1, 1%]"), tostring(bad))
 local ok, err = pcall(squawk.env.new, "no/such.lua")

@@ -113,13 +113,13 @@ TEST_CASE("prompts/observation.lua renders the paper's template") {
   CHECK(text->rfind("You are a decision support system that aids in avoiding collisions between the ownship "
                     "and intruders as the ownship navigates to reach a waypoint.",
                     0) == 0);
-  const char* lines[] = {"1. The intruder distances are [0.11, 0.16, 0.21, 0.26, 0.31].",
+  const char* lines[] = {"1. The intruder distances are [+0.11, +0.16, +0.21, +0.26, +0.31].",
                          "2. The cosines of the bearing angle differences are [",
                          "3. The sines of the bearing angle differences are [",
-                         "4. The differences in the x-component of the speed are [-0.30, -0.20, -0.10, 0.00, 0.10].",
+                         "4. The differences in the x-component of the speed are [-0.30, -0.20, -0.10, +0.00, +0.10].",
                          "5. The differences in the y-component of the speed are [",
-                         "6. The distances to each waypoint are [0.70].",
-                         "7. The cosines of the drift angles are [0.98].",
+                         "6. The distances to each waypoint are [+0.70].",
+                         "7. The cosines of the drift angles are [+0.98].",
                          "8. The sines of the drift angles are [0.00].",
                          "Using the above information, please provide a decision on whether to turn left or right "
                          "or remain unchanged to avoid a collision with the intruder aircraft.",
