@@ -12,12 +12,14 @@
 --   obs.cos_drift            [1]  cos of (heading - bearing to waypoint)
 --   obs.sin_drift            [1]  sin of the same angle
 -- It returns the prompt text. The text up to the first observation value is
--- identical for every decision: `prefix` (M.intro followed by the first
--- line's label, built below from the one copy of each) is exactly that part,
+-- identical for every decision: `prefix` (M.intro, M.instruction and the
+-- first line's label, built below from the one copy of each) is exactly that part,
 -- so the policy computes it once and reuses it (GPT-2 KV cache).
 --
 -- Edit freely: number_format and separator change how numbers read; the
--- lines are the paper's. No recompilation is needed.
+-- lines and the request are the paper's, the request before the observation
+-- (the paper puts it after; README, "GPT-2 policy", says what the order
+-- changed). No recompilation is needed.
 
 local M = {}
 
@@ -25,8 +27,15 @@ M.number_format = "%+.2f" -- string.format pattern for every value (a sign on ev
 M.separator = ", "        -- between the values of one field
 
 M.intro = "You are a decision support system that aids in avoiding collisions between the "
-  .. "ownship and intruders as the ownship navigates to reach a waypoint. Here is the "
-  .. "observation from the environment:\n"
+  .. "ownship and intruders as the ownship navigates to reach a waypoint.\n"
+
+-- The paper's request, placed before the observation so that the observation
+-- ends the prompt (the policy reads the last position's hidden state).
+M.instruction = "Please provide a decision on whether to turn left or right or remain unchanged "
+  .. "to avoid a collision with the intruder aircraft.\n"
+  .. "The decision should be one of the following: [-1 for left, -0.5 for slightly left, "
+  .. "0 for unchanged, 0.5 for slightly right, 1 for right].\n"
+  .. "Only provide the decision as output. Here is the observation from the environment:\n"
 
 local lines = {
   { "intruder_distance", "1. The intruder distances are [" },
@@ -39,13 +48,7 @@ local lines = {
   { "sin_drift", "8. The sines of the drift angles are [" },
 }
 
-M.prefix = M.intro .. lines[1][2]
-
-M.instruction = "Using the above information, please provide a decision on whether to turn left "
-  .. "or right or remain unchanged to avoid a collision with the intruder aircraft.\n"
-  .. "The decision should be one of the following: [-1 for left, -0.5 for slightly left, "
-  .. "0 for unchanged, 0.5 for slightly right, 1 for right].\n"
-  .. "Only provide the decision as output.\n"
+M.prefix = M.intro .. M.instruction .. lines[1][2]
 
 local function values(list)
   local out = {}
@@ -62,10 +65,9 @@ function M.render(obs)
   for i, line in ipairs(lines) do
     local field = obs[line[1]]
     if field == nil then error("observation has no field '" .. line[1] .. "'", 2) end
-    local head = (i == 1) and M.intro or ""
+    local head = (i == 1) and (M.intro .. M.instruction) or ""
     parts[#parts + 1] = head .. line[2] .. values(field) .. "].\n"
   end
-  parts[#parts + 1] = M.instruction
   return table.concat(parts)
 end
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -113,25 +114,27 @@ TEST_CASE("prompts/observation.lua renders the paper's template") {
   CHECK(text->rfind("You are a decision support system that aids in avoiding collisions between the ownship "
                     "and intruders as the ownship navigates to reach a waypoint.",
                     0) == 0);
-  const char* lines[] = {"1. The intruder distances are [+0.11, +0.16, +0.21, +0.26, +0.31].",
+  // The paper's request first, then the observation, which ends the prompt.
+  const char* lines[] = {"Please provide a decision on whether to turn left or right or remain unchanged to avoid "
+                         "a collision with the intruder aircraft.",
+                         "The decision should be one of the following: [-1 for left, -0.5 for slightly left, 0 for "
+                         "unchanged, 0.5 for slightly right, 1 for right].",
+                         "Only provide the decision as output. Here is the observation from the environment:",
+                         "1. The intruder distances are [+0.11, +0.16, +0.21, +0.26, +0.31].",
                          "2. The cosines of the bearing angle differences are [",
                          "3. The sines of the bearing angle differences are [",
                          "4. The differences in the x-component of the speed are [-0.30, -0.20, -0.10, +0.00, +0.10].",
                          "5. The differences in the y-component of the speed are [",
                          "6. The distances to each waypoint are [+0.70].",
                          "7. The cosines of the drift angles are [+0.98].",
-                         "8. The sines of the drift angles are [0.00].",
-                         "Using the above information, please provide a decision on whether to turn left or right "
-                         "or remain unchanged to avoid a collision with the intruder aircraft.",
-                         "The decision should be one of the following: [-1 for left, -0.5 for slightly left, 0 for "
-                         "unchanged, 0.5 for slightly right, 1 for right].",
-                         "Only provide the decision as output."};
+                         "8. The sines of the drift angles are [0.00].\n"};
   size_t at = 0;
   for (const char* line : lines) {
     const size_t pos = text->find(line, at);
     CHECK_MESSAGE(pos != std::string::npos, line);
     if (pos != std::string::npos) at = pos;
   }
+  CHECK(text->size() == at + std::string_view(lines[std::size(lines) - 1]).size());
   auto bad = script::PromptRenderer::load(kRoot + "/prompts/no_such_template.lua", {});
   CHECK_FALSE(bad.is_ok());
 }
