@@ -164,7 +164,8 @@ int cmd_gpt2_pretrain(const ArgV& argv) {
   if (!st.is_ok()) return failure(st);
   if (!quiet)
     std::printf("wrote %s (config.json, model.safetensors, vocab.json, merges.txt, pretrain.csv); fine-tune it with\n"
-                "  squawk train %s --policy gpt2 --model %s --train-embeddings --blocks %d --lr 1e-3 --out DIR\n",
+                "  squawk train %s --policy gpt2 --model %s --train-embeddings --blocks %d --lr 1e-4 \\\n"
+                "      --entropy 0.05 --entropy-final 0.002 --episodes-per-update 32 --envs 32 --episodes 32768 --out DIR\n",
                 out.c_str(), args->positional()[0].c_str(), out.c_str(), model.config().n_layer);
   return kExitOk;
 }
