@@ -6,7 +6,7 @@ const std::vector<std::string>& learner_flags() {
   static const std::vector<std::string> flags = {
       "--episodes", "--estimator", "--envs",    "--eval-every", "--eval-episodes", "--lr",
       "--lr-final", "--episodes-per-update",    "--gamma",      "--lambda",        "--entropy",
-      "--entropy-final", "--epochs", "--clip",  "--value-iters"};
+      "--entropy-final", "--epochs", "--clip",  "--value-iters",   "--branch-fraction"};
   return flags;
 }
 
@@ -26,10 +26,11 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
   auto epochs = args.get_int("--epochs", cfg.epochs);
   auto clip = args.get_double("--clip", cfg.clip);
   auto value_iters = args.get_int("--value-iters", cfg.value_iters);
+  auto branch = args.get_double("--branch-fraction", cfg.branch_fraction);
   for (const Status& st : {episodes.status(), envs_n.status(), eval_every.status(), eval_eps.status(), lr.status(),
                            lr_final.status(), seed.status(), per_update.status(), gamma.status(), lambda.status(),
                            entropy.status(), entropy_final.status(), epochs.status(), clip.status(),
-                           value_iters.status()})
+                           value_iters.status(), branch.status()})
     SQUAWK_RETURN_IF_ERROR(st);
   if (args.has("--lr-final")) {
     cfg.lr_final = *lr_final;
@@ -50,6 +51,7 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
   cfg.epochs = static_cast<int>(*epochs);
   cfg.clip = *clip;
   cfg.value_iters = static_cast<int>(*value_iters);
+  cfg.branch_fraction = *branch;
   cfg.estimator = args.get_or("--estimator", cfg.estimator);
   return cfg.validate();
 }

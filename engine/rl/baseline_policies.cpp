@@ -1,6 +1,7 @@
 #include "rl/baseline_policies.h"
 
 #include <cstdio>
+#include <limits>
 
 namespace squawk::rl {
 
@@ -30,6 +31,38 @@ void MvpPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> 
   for (int r = 0; r < n; ++r) {
     const auto i = static_cast<size_t>(r);
     out[i] = {-1, static_cast<float>(envs_.env(slots[i]).mvp_action())};
+  }
+}
+
+namespace {
+// Base rule b of a lookahead branch: actions[b], or MVP for b = actions.size().
+double base_action(const env::HorizontalCrEnv& e, const std::vector<double>& actions, size_t b) {
+  return b < actions.size() ? actions[b] : e.mvp_action();
+}
+
+double branch_score(env::HorizontalCrEnv e, double first, const std::vector<double>& actions, size_t b) {
+  e.step(first);
+  while (!e.done()) e.step(base_action(e, actions, b));
+  const env::EpisodeStats& s = e.stats();
+  return (s.success ? 0.0 : -1e6) + s.total_reward - s.intrusions;
+}
+}  // namespace
+
+void LookaheadPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> slots,
+                          Rng& /*rng*/, bool /*greedy*/, std::span<ActionSample> out) {
+  for (int r = 0; r < n; ++r) {
+    const env::HorizontalCrEnv& e = envs_.env(slots[static_cast<size_t>(r)]);
+    double best = -std::numeric_limits<double>::infinity();
+    size_t pick = 0;
+    for (size_t a = 0; a < actions_.size(); ++a)
+      for (size_t b = 0; b <= actions_.size(); ++b) {
+        const double v = branch_score(e, actions_[a], actions_, b);
+        if (v > best) {
+          best = v;
+          pick = a;
+        }
+      }
+    out[static_cast<size_t>(r)] = {static_cast<int>(pick), static_cast<float>(actions_[pick])};
   }
 }
 

@@ -8,7 +8,19 @@
 //   MvpPolicy:  BlueSky's MVP resolution steering the ownship
 //     (HorizontalCrEnv::mvp_action, a continuous action in [-1, 1]); it reads
 //     the true state of the VecEnv slot of each row, not the observation.
+//   LookaheadPolicy: a planner over the simulator, the reference for what a
+//     policy of this state can reach. At each decision it copies the slot's
+//     environment and, for every action a of `actions` and every base rule b
+//     (each constant action of `actions`, and MVP), plays a and then b at
+//     every later decision to the episode's end; it takes the a of the best
+//     branch, scored by success first, then the episode's reward minus its
+//     intrusion count. Deterministic; it reads the true state and the future
+//     (the intruders fly straight), so it is no learnable policy of the
+//     observation: an upper reference, not a baseline to beat.
+//     Cost: K (K + 1) rollouts to the episode's end per decision.
 #pragma once
+
+#include <vector>
 
 #include "env/vec_env.h"
 #include "rl/policy.h"
@@ -42,6 +54,21 @@ class MvpPolicy : public Policy {
 
  private:
   const env::VecEnv& envs_;
+};
+
+class LookaheadPolicy : public Policy {
+ public:
+  // actions: [-] the discrete action values, units of the heading step.
+  LookaheadPolicy(const env::VecEnv& envs, std::vector<double> actions)
+      : envs_(envs), actions_(std::move(actions)) {}
+  std::string name() const override { return "lookahead"; }
+  int obs_size() const override { return envs_.obs_size(); }
+  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+           std::span<ActionSample> out) override;
+
+ private:
+  const env::VecEnv& envs_;
+  std::vector<double> actions_;
 };
 
 }  // namespace squawk::rl

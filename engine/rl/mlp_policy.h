@@ -45,6 +45,9 @@ class MlpPolicy : public Policy {
   float accumulate_gradient(std::span<const float> obs, int n, std::span<const ActionSample> actions,
                             std::span<const float> coef, float ent_coef) override;
   bool has_log_probs() const override { return true; }
+  std::span<const double> action_values() const override {
+    return gaussian() ? std::span<const double>() : std::span<const double>(spec_.action_values);
+  }
   void log_probs(std::span<const float> obs, int n, std::span<const ActionSample> actions,
                  std::span<float> out) override;
 

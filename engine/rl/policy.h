@@ -53,6 +53,9 @@ class Policy {
   // Policies that can score given actions (the clipped-ratio learner needs
   // it) return true and fill out[r] = log pi(actions[r] | obs row r).
   virtual bool has_log_probs() const { return false; }
+  // A discrete head's action value per class index (what act() puts in
+  // ActionSample::value); empty for continuous heads.
+  virtual std::span<const double> action_values() const { return {}; }
   virtual void log_probs(std::span<const float> /*obs*/, int /*n*/,
                          std::span<const ActionSample> /*actions*/, std::span<float> /*out*/) {}
 };

@@ -85,6 +85,7 @@ class PromptPolicy : public Policy {
   // log pi(actions[r] | row r) from logits(); the clipped-ratio learner's
   // scores. A failed forward keeps its error in error() and gives 0.
   bool has_log_probs() const override { return true; }
+  std::span<const double> action_values() const override { return spec_.action_values; }
   void log_probs(std::span<const float> obs, int n, std::span<const ActionSample> actions,
                  std::span<float> out) override;
 

@@ -3,15 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rl/branch_returns.h"
+
 namespace squawk::rl {
 
 namespace {
 constexpr uint64_t kTrainPolicySalt = 0x7EA1ull;
+constexpr uint64_t kBranchSalt = 0xB4A7C4ull;
 }
 
 Status TrainConfig::validate() const {
-  if (estimator != "vpg" && estimator != "improved" && estimator != "ppo")
-    return Status::invalid("train estimator '" + estimator + "': expected \"vpg\", \"improved\" or \"ppo\"");
+  if (estimator != "vpg" && estimator != "improved" && estimator != "ppo" && estimator != "vine")
+    return Status::invalid("train estimator '" + estimator +
+                           "': expected \"vpg\", \"improved\", \"ppo\" or \"vine\"");
   if (episodes < 1) return Status::invalid("train episodes must be at least 1");
   if (episodes_per_update < 1) return Status::invalid("train episodes_per_update must be at least 1");
   if (num_envs < 1) return Status::invalid("train num_envs must be at least 1");
@@ -22,6 +26,8 @@ Status TrainConfig::validate() const {
   if (!(lambda >= 0.0 && lambda <= 1.0)) return Status::invalid("train lambda must lie in [0, 1]");
   if (epochs < 1 || epochs > 100) return Status::invalid("train epochs must lie in 1..100");
   if (!(clip > 0.0 && clip < 1.0)) return Status::invalid("train clip must lie in (0, 1)");
+  if (!(branch_fraction > 0.0 && branch_fraction <= 1.0))
+    return Status::invalid("train branch_fraction must lie in (0, 1]");
   for (int h : value_hidden)
     if (h < 1 || h > 4096) return Status::invalid("train value_hidden widths must lie in 1..4096");
   if (value_iters < 0) return Status::invalid("train value_iters must be >= 0");
@@ -31,9 +37,14 @@ Status TrainConfig::validate() const {
 }
 
 Status check_learner(const Policy& policy, const TrainConfig& config) {
-  if (config.estimator == "ppo" && !policy.has_log_probs())
-    return Status::invalid("train estimator 'ppo' needs a policy that scores its actions; " +
-                           policy.name() + " does not (use \"improved\")");
+  const bool scores = config.estimator == "ppo" || config.estimator == "vine";
+  if (scores && !policy.has_log_probs())
+    return Status::invalid("train estimator '" + config.estimator +
+                           "' needs a policy that scores its actions; " + policy.name() +
+                           " does not (use \"improved\")");
+  if (config.estimator == "vine" && policy.action_values().empty())
+    return Status::invalid("train estimator 'vine' needs a discrete action head; " + policy.name() +
+                           " has a continuous one (use \"improved\" or \"ppo\")");
   return Status::ok();
 }
 
@@ -173,6 +184,46 @@ void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<Ac
   }
 }
 
+void Trainer::vine_steps(double c_h, UpdateStats& st) {
+  if (branch_states_.empty()) return;
+  const std::span<const double> values = policy_.action_values();
+  const size_t k = values.size(), s = branch_states_.size(), n = s * k;
+  auto q = branch_returns(policy_, branch_states_, values, cfg_.gamma);
+  if (!q) return;
+  const auto obs = static_cast<size_t>(envs_.obs_size());
+  std::vector<float> rows(n * obs);
+  std::vector<ActionSample> acts(n);
+  for (size_t i = 0; i < s; ++i)
+    for (size_t j = 0; j < k; ++j) {
+      branch_states_[i].observe_flat(std::span<float>(rows).subspan((i * k + j) * obs, obs));
+      acts[i * k + j] = {static_cast<int>(j), static_cast<float>(values[j])};
+    }
+  std::vector<float> logp(n), coef(n);
+  std::vector<double> adv(n);
+  double sd = 0.0;
+  for (int e = 0; e < cfg_.epochs; ++e) {
+    policy_.log_probs(rows, static_cast<int>(n), acts, logp);
+    for (size_t i = 0; i < s; ++i) {
+      double base = 0.0;
+      for (size_t j = 0; j < k; ++j) base += std::exp(static_cast<double>(logp[i * k + j])) * (*q)[i * k + j];
+      for (size_t j = 0; j < k; ++j) adv[i * k + j] = (*q)[i * k + j] - base;
+    }
+    if (e == 0) {
+      for (double a : adv) sd += a * a / static_cast<double>(n);
+      sd = std::sqrt(sd) + 1e-8;
+    }
+    for (size_t i = 0; i < n; ++i)
+      coef[i] = static_cast<float>(std::exp(static_cast<double>(logp[i])) * adv[i] / sd / static_cast<double>(s));
+    std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
+    const float h = policy_.accumulate_gradient(rows, static_cast<int>(n), acts, coef,
+                                                static_cast<float>(c_h / static_cast<double>(n)));
+    const double norm = adam_.step();
+    if (e > 0) continue;
+    st.entropy = h;
+    st.grad_norm = norm;
+  }
+}
+
 UpdateStats Trainer::update(const UpdateProgress& progress) {
   const int obs = envs_.obs_size();
   const auto m = static_cast<uint64_t>(cfg_.episodes_per_update);
@@ -183,6 +234,9 @@ UpdateStats Trainer::update(const UpdateProgress& progress) {
   for (auto& v : slot_obs_) v.clear();
   for (auto& v : slot_samples_) v.clear();
   envs_.completed().clear();
+  branch_states_.clear();
+  const bool vine = cfg_.estimator == "vine";
+  Rng branch_rng(env::episode_seed(cfg_.seed ^ kBranchSalt, static_cast<uint64_t>(updates_)));
   envs_.start(cfg_.seed, static_cast<uint64_t>(updates_) * m, m);
 
   std::vector<ActionSample> acts;
@@ -203,6 +257,8 @@ UpdateStats Trainer::update(const UpdateProgress& progress) {
       so.insert(so.end(), o.begin() + static_cast<long>(r * static_cast<size_t>(obs)),
                 o.begin() + static_cast<long>((r + 1) * static_cast<size_t>(obs)));
     }
+    for (size_t r = 0; vine && r < n; ++r)
+      if (branch_rng.uniform() < cfg_.branch_fraction) branch_states_.push_back(envs_.env(slots[r]));
     envs_.step(actions, rewards, dones);
     for (size_t r = 0; r < n; ++r) {
       const auto s = static_cast<size_t>(slots[r]);
@@ -236,15 +292,19 @@ UpdateStats Trainer::update(const UpdateProgress& progress) {
   ++updates_;
   if (st.samples == 0) return st;
 
+  const double total = std::max(1.0, static_cast<double>(cfg_.episodes) / static_cast<double>(m));
+  const double frac = std::min(1.0, static_cast<double>(updates_ - 1) / total);
+  const double c_h = cfg_.entropy_coef + (cfg_.entropy_final.value_or(cfg_.entropy_coef) - cfg_.entropy_coef) * frac;
+  adam_.config().lr = static_cast<float>(cfg_.lr + (cfg_.lr_final - cfg_.lr) * frac);
+  if (vine) {
+    vine_steps(c_h, st);
+    return st;
+  }
   std::vector<float> coef;
   st.value_loss = coefficients(coef);
   std::vector<ActionSample> batch_acts(batch_samples_.size());
   for (size_t i = 0; i < batch_samples_.size(); ++i) batch_acts[i] = batch_samples_[i].action;
-  const double total = std::max(1.0, static_cast<double>(cfg_.episodes) / static_cast<double>(m));
-  const double frac = std::min(1.0, static_cast<double>(updates_ - 1) / total);
-  const double c_h = cfg_.entropy_coef + (cfg_.entropy_final.value_or(cfg_.entropy_coef) - cfg_.entropy_coef) * frac;
   const float ent = cfg_.estimator == "vpg" ? 0.0f : static_cast<float>(c_h / st.samples);
-  adam_.config().lr = static_cast<float>(cfg_.lr + (cfg_.lr_final - cfg_.lr) * frac);
   if (cfg_.estimator == "ppo") {
     clipped_steps(coef, batch_acts, ent, st);
     return st;

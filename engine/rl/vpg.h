@@ -18,6 +18,14 @@
 //     clipped-ratio surrogate  L = -(1/N) sum_t min(rho_t A_t, clip(rho_t,
 //     1 - clip, 1 + clip) A_t) - c_H (1/N) sum_t H,  rho_t = pi(a_t|s_t) /
 //     pi_old(a_t|s_t), pi_old the sampling policy (needs Policy::log_probs).
+//   "vine":     at a random share `branch_fraction` of the batch's agent steps,
+//     Q(s, a) for every action a by branch_returns (branch_returns.h: a, then
+//     the greedy policy, deterministic), A(s, a) = Q(s, a) - sum_a pi(a|s) Q(s, a),
+//     then `epochs` Adam steps on the all-action surrogate
+//       L = -(1/S) sum_s sum_a pi(a|s) A(s, a) / sd(A) - c_H (1/S) sum_s H(pi(.|s))
+//     over the S branched states, pi recomputed at every epoch (A fixed;
+//     sd over the batch's S K advantages). The sampled trajectories only pick
+//     the states; every action of a state is credited with its own outcome.
 // The entropy coefficient falls linearly from entropy_coef to entropy_final
 // over the run's updates, like the step size.
 // Episodes that end without any agent step contribute no sample. The Adam
@@ -43,7 +51,7 @@
 namespace squawk::rl {
 
 struct TrainConfig {
-  std::string estimator = "improved";  // "vpg" | "improved" | "ppo"
+  std::string estimator = "improved";  // "vpg" | "improved" | "ppo" | "vine"
   long long episodes = 20000;          // [-] total training episodes
   int episodes_per_update = 32;        // [-] M
   int num_envs = 32;                   // [-] VecEnv slots
@@ -53,7 +61,8 @@ struct TrainConfig {
   double entropy_coef = 0.01;          // [-] improved/ppo: entropy bonus c_H at the start ...
   std::optional<double> entropy_final; // [-] ... decayed linearly to this at `episodes` (none: constant)
   double lambda = 1.0;                 // [-] improved/ppo: GAE lambda (1 = reward-to-go - V)
-  int epochs = 4;                      // [-] ppo: Adam steps per batch
+  int epochs = 4;                      // [-] ppo, vine: Adam steps per batch
+  double branch_fraction = 0.25;       // [-] vine: share of agent steps branched, (0, 1]
   double clip = 0.2;                   // [-] ppo: ratio clip
   double grad_clip = 1.0;              // [-] global gradient-norm clip (0 = none)
   std::vector<int> value_hidden = {64, 64};  // [-] improved: value MLP widths ({} = mean baseline)
@@ -65,8 +74,8 @@ struct TrainConfig {
   Status validate() const;
 };
 
-// Ok unless `config` asks for a learner `policy` cannot drive (ppo needs
-// Policy::log_probs).
+// Ok unless `config` asks for a learner `policy` cannot drive (ppo and vine
+// need Policy::log_probs, vine a discrete head).
 Status check_learner(const Policy& policy, const TrainConfig& config);
 
 struct UpdateStats {
@@ -116,6 +125,9 @@ class Trainer {
   // Sets st.entropy and st.grad_norm from the first step.
   void clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, float ent,
                      UpdateStats& st);
+  // vine: the all-action steps on the branched states; sets st.entropy and
+  // st.grad_norm from the first step. A policy error leaves the policy as is.
+  void vine_steps(double c_h, UpdateStats& st);
 
   Policy& policy_;
   env::VecEnv& envs_;
@@ -133,6 +145,7 @@ class Trainer {
   std::vector<float> batch_obs_;
   std::vector<Sample> batch_samples_;
   std::vector<int> batch_lengths_;
+  std::vector<env::HorizontalCrEnv> branch_states_;  // vine: snapshots before agent steps
 };
 
 }  // namespace squawk::rl

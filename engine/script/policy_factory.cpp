@@ -156,6 +156,12 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
   } else if (kind == "mvp") {
     m.policy = std::make_unique<rl::MvpPolicy>(envs);
     m.label = "mvp (BlueSky's MVP steering the ownship)";
+  } else if (kind == "lookahead") {
+    if (envs.env(0).config().rules != env::Rules::kPaper)
+      return Status::invalid("policy 'lookahead' plans under the paper rules only (its rollouts run to "
+                             "the episode's end; the gym rules' 300-step episodes make that too slow)");
+    m.policy = std::make_unique<rl::LookaheadPolicy>(envs, sc.policy.action_values);
+    m.label = "lookahead (planner over the simulator: reads the true state and the future)";
   } else if (kind == "random") {
     Rng init(o.seed);
     SQUAWK_ASSIGN_OR_RETURN(std::unique_ptr<rl::MlpPolicy> p, rl::MlpPolicy::make(sc.policy, init));
@@ -184,7 +190,7 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
     m.prompt = g.meta.prompt;
     m.policy = std::move(g.policy);
   } else {
-    return Status::invalid("policy '" + kind + "': expected random, zero, constant:V, turn-hold:V, mvp, mlp or gpt2");
+    return Status::invalid("policy '" + kind + "': expected random, zero, constant:V, turn-hold:V, mvp, lookahead, mlp or gpt2");
   }
   return m;
 }

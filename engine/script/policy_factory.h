@@ -5,7 +5,8 @@
 // (never turn), "constant:V" (always action V, units of the heading step,
 // V in [-1, 1]), "turn-hold:V" (action V while flying at the waypoint, else
 // 0: the rule baseline), "mvp" (BlueSky's MVP steering the ownship, reads the
-// VecEnv's state), "mlp" (a trained MLP checkpoint, the shipped one by
+// VecEnv's state), "lookahead" (the planner over the simulator, an upper
+// reference that reads the true state and the future), "mlp" (a trained MLP checkpoint, the shipped one by
 // default), "gpt2" (the GPT-2 prompt policy: a checkpoint, the shipped
 // fine-tuned tiny one by default, or with gpt2.model set a base model with a
 // fresh head).

@@ -139,7 +139,7 @@ void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   check_keys(L, idx, "train",
              {"estimator", "episodes", "episodes_per_update", "num_envs", "lr", "lr_final", "gamma",
               "entropy_coef", "entropy_final", "lambda", "epochs", "clip", "grad_clip", "eval_every",
-              "eval_episodes", "seed"});
+              "eval_episodes", "seed", "branch_fraction"});
   t.estimator = field_string(L, idx, "estimator", t.estimator);
   t.episodes = field_count(L, idx, "episodes", t.episodes, 0, kMaxCount);
   t.episodes_per_update = int_field(L, idx, "episodes_per_update", t.episodes_per_update);
@@ -152,6 +152,7 @@ void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   t.lambda = field_number(L, idx, "lambda", t.lambda);
   t.epochs = int_field(L, idx, "epochs", t.epochs);
   t.clip = field_number(L, idx, "clip", t.clip);
+  t.branch_fraction = field_number(L, idx, "branch_fraction", t.branch_fraction);
   t.grad_clip = field_number(L, idx, "grad_clip", t.grad_clip);
   t.eval_every = field_count(L, idx, "eval_every", t.eval_every, 0, kMaxCount);
   t.eval_episodes = field_count(L, idx, "eval_episodes", t.eval_episodes, 0, kMaxCount);

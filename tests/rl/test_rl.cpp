@@ -279,6 +279,24 @@ TEST_CASE("the clipped-ratio learner, GAE(lambda) and the entropy schedule") {
     c.entropy_final = 0.5;
     CHECK(trained_params(c, 2) != improved);
   }
+  SUBCASE("vine: deterministic, its own step, and only for scoring discrete policies") {
+    rl::TrainConfig c = tc;
+    c.estimator = "vine";
+    c.branch_fraction = 0.5;
+    const auto vine = trained_params(c, 2);
+    CHECK(vine != improved);
+    CHECK(trained_params(c, 2) == vine);
+    rl::ConstantPolicy fixed(28, 0.5f);
+    CHECK(rl::check_learner(fixed, c).message().find("vine") != std::string::npos);
+    rl::MlpPolicySpec gauss;
+    gauss.head = "gaussian";
+    Rng init(1);
+    auto g = rl::MlpPolicy::make(gauss, init);
+    REQUIRE(g);
+    CHECK(rl::check_learner(**g, c).message().find("discrete") != std::string::npos);
+    c.branch_fraction = 0.0;
+    CHECK_FALSE(c.validate().is_ok());
+  }
   SUBCASE("ppo needs a policy that scores its actions, and sane settings") {
     rl::TrainConfig c = tc;
     c.estimator = "ppo";
