@@ -40,6 +40,7 @@ expect "pretrain bad steps" 2 "--steps expects a positive integer" -- "$sq" gpt2
 expect "train pretrained" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --lr 1e-3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/run"
 expect "eval lookahead"  0 "success" -- "$sq" eval scenarios/horizontal_cr.lua --policy lookahead --episodes 20
 expect "lookahead gym"   2 "plans under the paper rules only" -- "$sq" eval scenarios/horizontal_cr_gym.lua --policy lookahead --episodes 2
+expect "rollout no head" 2 "zero has no discrete action head" -- "$sq" eval scenarios/horizontal_cr.lua --policy rollout:zero --episodes 2
 expect "vine gaussian"   2 "needs a discrete action head" -- "$sq" train scenarios/horizontal_cr_gym.lua --policy mlp --estimator vine --episodes 8 --out "$tmp/vine"
 expect "eval pretrained" 0 "most frequent" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/run/checkpoint.ckpt" --episodes 2
 expect "embeddings need every block" 1 "needs all 2 blocks trainable" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --train-embeddings --blocks 1 --episodes 8 --out "$pt/bad"

@@ -105,7 +105,8 @@ int cmd_table3(const ArgV& argv) {
       {"Never turning", "zero", &mlp},
       {"Rule: +0.5 when on track, else hold", "turn-hold:0.5", &mlp},
       {"MVP (BlueSky resolution)", "mvp", &mlp},
-      {"Lookahead planner (reads the simulator)", "lookahead", &mlp}};
+      {"Lookahead planner (reads the simulator)", "lookahead", &mlp},
+      {"Trained NN + one rollout step (reads the simulator)", "rollout:mlp", &mlp}};
   std::vector<Row> rows;
   for (const auto& [name, kind, opts] : agents) {
     auto made = script::make_policy(kind, *sc, *envs, *opts, *vo);

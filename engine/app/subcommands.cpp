@@ -323,7 +323,7 @@ const std::vector<Subcommand>& subcommands() {
        "process at once.\n",
        cmd_train},
       {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
-       "usage: squawk eval SCENARIO.lua [--policy random|zero|constant:V|turn-hold:V|mvp|lookahead|mlp|gpt2]\n"
+       "usage: squawk eval SCENARIO.lua [--policy random|zero|constant:V|turn-hold:V|mvp|lookahead|rollout:P|mlp|gpt2]\n"
        "                   [--checkpoint FILE] [--episodes N] [--seed N] [--greedy] [--json]\n"
        "                   [--record FILE.jsonl] [--show-prompt N]\n\n"
        "Runs the scenario's evaluation episodes (default 1000, numbered from the\n"
@@ -344,6 +344,10 @@ const std::vector<Subcommand>& subcommands() {
        "                       action followed by each constant action or MVP to the\n"
        "                       episode's end and keeps the best (reads the true state\n"
        "                       and the future: an upper reference, not a learnable policy)\n"
+       "  --policy rollout:P   one step of policy improvement over the policy P (mlp,\n"
+       "                       gpt2 or random, with its --checkpoint): each decision\n"
+       "                       tries every action followed by P's greedy actions to the\n"
+       "                       episode's end and keeps the best (reads the simulator too)\n"
        "  --policy mlp         a trained MLP: --checkpoint FILE, by default the\n"
        "                       checkpoint shipped in models/\n"
        "  --policy gpt2        the GPT-2 prompt policy: --checkpoint FILE (default the\n"
@@ -367,7 +371,8 @@ const std::vector<Subcommand>& subcommands() {
        "models/ unless given); then the baselines that show what a row is worth:\n"
        "always -0.5, always +0.5, never turning, the turn-hold rule, BlueSky's MVP\n"
        "and the lookahead planner (an upper reference: it reads the simulator and\n"
-       "the future, see eval --help). Each agent runs\n"
+       "the future, see eval --help) and one rollout step over the trained MLP\n"
+       "(rollout:mlp, likewise). Each agent runs\n"
        "with sampled actions (the table's columns) and greedy actions (the last\n"
        "column: its most frequent greedy action and that action's share). Prints a\n"
        "markdown table, then CSV (or writes the CSV to --csv FILE); --json prints\n"

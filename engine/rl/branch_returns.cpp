@@ -40,4 +40,21 @@ Result<std::vector<double>> branch_returns(Policy& policy, std::span<const env::
   return q;
 }
 
+void RolloutPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> slots, Rng& /*rng*/,
+                        bool /*greedy*/, std::span<ActionSample> out) {
+  std::vector<env::HorizontalCrEnv> snaps;
+  snaps.reserve(static_cast<size_t>(n));
+  for (int r = 0; r < n; ++r) snaps.push_back(envs_.env(slots[static_cast<size_t>(r)]));
+  const std::span<const double> values = base_->action_values();
+  auto q = branch_returns(*base_, snaps, values, 1.0);
+  if (!q && error_.is_ok()) error_ = q.status();
+  const size_t k = values.size();
+  for (size_t r = 0; r < static_cast<size_t>(n); ++r) {
+    size_t best = 0;
+    for (size_t j = 1; q && j < k; ++j)
+      if ((*q)[r * k + j] > (*q)[r * k + best]) best = j;
+    out[r] = {static_cast<int>(best), static_cast<float>(values[best])};
+  }
+}
+
 }  // namespace squawk::rl

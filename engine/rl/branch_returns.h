@@ -10,11 +10,22 @@
 // value of a_j followed by the current greedy policy (a "vine" estimate).
 // Shapes: snapshots [n], action_values [K], result [n, K] row-major.
 // Cost: n K continuations, each batched with all others at every decision.
+//
+// RolloutPolicy: one step of policy improvement over a discrete `base` policy
+// (Bertsekas' rollout algorithm): at each decision, Q of every action of the
+// base by branch_returns with gamma = 1 (the episode's return from here, the
+// quantity evaluation reports), and the best action; ties go to the lowest
+// class. It reads the true state of the VecEnv slot of each row and the
+// future, like LookaheadPolicy (baseline_policies.h): a reference for what
+// the base policy's own continuations allow, not a policy of the observation.
 #pragma once
 
+#include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "env/vec_env.h"
 #include "core/status.h"
 #include "env/horizontal_cr.h"
 #include "rl/policy.h"
@@ -23,5 +34,21 @@ namespace squawk::rl {
 
 Result<std::vector<double>> branch_returns(Policy& policy, std::span<const env::HorizontalCrEnv> snapshots,
                                            std::span<const double> action_values, double gamma);
+
+class RolloutPolicy : public Policy {
+ public:
+  // `base` must have a discrete head (non-empty action_values()).
+  RolloutPolicy(const env::VecEnv& envs, std::unique_ptr<Policy> base) : envs_(envs), base_(std::move(base)) {}
+  std::string name() const override { return "rollout:" + base_->name(); }
+  int obs_size() const override { return base_->obs_size(); }
+  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+           std::span<ActionSample> out) override;
+  Status error() const override { return error_.is_ok() ? base_->error() : error_; }
+
+ private:
+  const env::VecEnv& envs_;
+  std::unique_ptr<Policy> base_;
+  Status error_;
+};
 
 }  // namespace squawk::rl

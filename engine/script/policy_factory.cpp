@@ -8,6 +8,7 @@
 #include "env/vec_env.h"
 #include "gpt2/checkpoint.h"
 #include "rl/baseline_policies.h"
+#include "rl/branch_returns.h"
 #include "rl/checkpoint.h"
 #include "rl/mlp_policy.h"
 #include "script/prompt_renderer.h"
@@ -162,6 +163,20 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
                              "the episode's end; the gym rules' 300-step episodes make that too slow)");
     m.policy = std::make_unique<rl::LookaheadPolicy>(envs, sc.policy.action_values);
     m.label = "lookahead (planner over the simulator: reads the true state and the future)";
+  } else if (kind.rfind("rollout:", 0) == 0) {
+    const std::string base = kind.substr(8);
+    if (base.rfind("rollout:", 0) == 0 || base == "lookahead")
+      return Status::invalid("policy '" + kind + "': the base of rollout: must be a learned policy (mlp, gpt2, random)");
+    if (envs.env(0).config().rules != env::Rules::kPaper)
+      return Status::invalid("policy '" + kind + "' plans under the paper rules only (its rollouts run to "
+                             "the episode's end; the gym rules' 300-step episodes make that too slow)");
+    SQUAWK_ASSIGN_OR_RETURN(MadePolicy b, make_policy(base, sc, envs, o, vm));
+    if (b.policy->action_values().empty())
+      return Status::invalid("policy '" + kind + "': " + base + " has no discrete action head to improve on");
+    m.label = "rollout:" + b.label + " (one step of policy improvement: reads the true state and the future)";
+    m.trained_on = b.trained_on;
+    m.prompt = b.prompt;
+    m.policy = std::make_unique<rl::RolloutPolicy>(envs, std::move(b.policy));
   } else if (kind == "random") {
     Rng init(o.seed);
     SQUAWK_ASSIGN_OR_RETURN(std::unique_ptr<rl::MlpPolicy> p, rl::MlpPolicy::make(sc.policy, init));
@@ -190,7 +205,7 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
     m.prompt = g.meta.prompt;
     m.policy = std::move(g.policy);
   } else {
-    return Status::invalid("policy '" + kind + "': expected random, zero, constant:V, turn-hold:V, mvp, lookahead, mlp or gpt2");
+    return Status::invalid("policy '" + kind + "': expected random, zero, constant:V, turn-hold:V, mvp, lookahead, rollout:P, mlp or gpt2");
   }
   return m;
 }

@@ -6,7 +6,9 @@
 // V in [-1, 1]), "turn-hold:V" (action V while flying at the waypoint, else
 // 0: the rule baseline), "mvp" (BlueSky's MVP steering the ownship, reads the
 // VecEnv's state), "lookahead" (the planner over the simulator, an upper
-// reference that reads the true state and the future), "mlp" (a trained MLP checkpoint, the shipped one by
+// reference that reads the true state and the future), "rollout:P" (one step
+// of policy improvement over the discrete policy P, e.g. rollout:mlp; reads
+// the simulator too), "mlp" (a trained MLP checkpoint, the shipped one by
 // default), "gpt2" (the GPT-2 prompt policy: a checkpoint, the shipped
 // fine-tuned tiny one by default, or with gpt2.model set a base model with a
 // fresh head).

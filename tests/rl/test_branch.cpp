@@ -8,6 +8,7 @@
 #include "rl/baseline_policies.h"
 #include "rl/branch_returns.h"
 #include "rl/evaluator.h"
+#include "rl/mlp_policy.h"
 
 using namespace squawk;
 
@@ -75,4 +76,26 @@ TEST_CASE("the lookahead planner resolves what the rules and MVP do not") {
   auto again = rl::evaluate(planner, *v, {200, 2024, false});
   REQUIRE(again);
   CHECK(again->mean_reward == p->mean_reward);  // deterministic
+}
+
+TEST_CASE("one rollout step improves a policy, using its own continuations") {
+  auto v = env::VecEnv::make(eval_config(), 8);
+  REQUIRE(v);
+  Rng init(2024);
+  auto base = rl::MlpPolicy::make({}, init);
+  REQUIRE(base);
+  Rng init2(2024);
+  auto same = rl::MlpPolicy::make({}, init2);
+  REQUIRE(same);
+  rl::RolloutPolicy improved(*v, std::move(*same));
+  CHECK(improved.name() == "rollout:mlp");
+  auto b = rl::evaluate(**base, *v, {200, 2024, true});
+  auto r = rl::evaluate(improved, *v, {200, 2024, false});
+  REQUIRE(b);
+  REQUIRE(r);
+  CHECK(improved.error().is_ok());
+  MESSAGE("greedy untrained MLP " << b->success_rate << " / " << b->mean_reward << ", one rollout step "
+                                  << r->success_rate << " / " << r->mean_reward);
+  CHECK(r->success_rate > b->success_rate + 0.05);
+  CHECK(r->mean_reward > b->mean_reward + 1.0);
 }
