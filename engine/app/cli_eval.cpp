@@ -151,6 +151,8 @@ int run_eval(script::MadePolicy& made, env::VecEnv& envs, const script::Scenario
                         {"std_reward", res->std_reward},
                         {"episodes", res->episodes},
                         {"reached_rate", res->reached_rate},
+                        {"separation_median_nm", res->separation_median / 1852.0},
+                        {"separation_p5_nm", res->separation_p5 / 1852.0},
                         {"decisions", res->decisions()},
                         {"actions", hist},
                         {"most_frequent_share", res->most_frequent_share()},
@@ -178,6 +180,8 @@ int run_eval(script::MadePolicy& made, env::VecEnv& envs, const script::Scenario
               "%.0f decisions/s\n",
               100.0 * res->reached_rate, res->mean_decisions, res->mean_steps, res->wall_s,
               res->wall_s > 0 ? decisions / res->wall_s : 0.0);
+  std::printf("closest separation per episode (start and step ends): median %.2f NM, 5th percentile %.2f NM\n",
+              res->separation_median / 1852.0, res->separation_p5 / 1852.0);
   return kExitOk;
 }
 

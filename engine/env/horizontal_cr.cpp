@@ -134,6 +134,7 @@ bool HorizontalCrEnv::start(const EpisodeSetup& setup, uint64_t episode_index) {
   stats_ = EpisodeStats{};
   stats_.index = episode_index;
   compute_observation();
+  stats_.min_separation = dist_.empty() ? 0.0 : *std::min_element(dist_.begin(), dist_.end());
   if (observer_) observer_->on_reset(*this);
   if (config_.rules == Rules::kGym) return true;
   run_automatic();
@@ -221,6 +222,7 @@ void HorizontalCrEnv::advance(double hdg_cmd) {
   ++stats_.steps;
   stats_.sim_time = sim_time_;
   compute_observation();
+  for (double d : dist_) stats_.min_separation = std::min(stats_.min_separation, d);
   if (config_.rules == Rules::kPaper && !config_.substep_intrusions && intruders_in_zone() > 0)
     ++stats_.intrusions;
 }

@@ -126,6 +126,7 @@ struct EpisodeStats {
   bool truncated = false;   // stopped by max_steps
   bool success = false;     // see the rule sets above
   double sim_time = 0;      // [s]
+  double min_separation = 0;  // [m] closest ownship-intruder distance at the start and every step end
 };
 
 // Per env step, for recorders: who steered, with what, and the outcome.

@@ -41,6 +41,7 @@ double base_action(const env::HorizontalCrEnv& e, const std::vector<double>& act
 }
 
 double branch_score(env::HorizontalCrEnv e, double first, const std::vector<double>& actions, size_t b) {
+  e.set_observer(nullptr);  // a branch is no episode a recorder should see
   e.step(first);
   while (!e.done()) e.step(base_action(e, actions, b));
   const env::EpisodeStats& s = e.stats();

@@ -12,6 +12,7 @@ Result<std::vector<double>> branch_returns(Policy& policy, std::span<const env::
   for (const env::HorizontalCrEnv& s : snapshots)
     for (size_t j = 0; j < k; ++j) {
       branches.push_back(s);
+      branches.back().set_observer(nullptr);  // a branch is no episode a recorder should see
       q[branches.size() - 1] = branches.back().step(action_values[j]);
     }
   const int obs = branches.empty() ? 0 : branches[0].observation_size();

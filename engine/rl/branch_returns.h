@@ -9,6 +9,8 @@
 // environment is deterministic, so Q[i, j] has no sampling noise: it is the
 // value of a_j followed by the current greedy policy (a "vine" estimate).
 // Shapes: snapshots [n], action_values [K], result [n, K] row-major.
+// The branches run without the snapshots' observers (recorders see only the
+// episodes really flown).
 // Cost: n K continuations, each batched with all others at every decision.
 //
 // RolloutPolicy: one step of policy improvement over a discrete `base` policy

@@ -79,6 +79,13 @@ Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions
   res.reached_rate /= n;
   res.mean_decisions /= n;
   res.mean_steps /= n;
+  std::vector<double> sep;
+  for (const auto& e : eps) sep.push_back(e.min_separation);
+  std::sort(sep.begin(), sep.end());
+  if (!sep.empty()) {
+    res.separation_median = sep[sep.size() / 2];
+    res.separation_p5 = sep[sep.size() / 20];
+  }
   res.env_steps = envs.env_steps() - steps0;
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   envs.completed().clear();

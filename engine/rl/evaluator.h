@@ -42,6 +42,10 @@ struct EvalResult {
   double mean_decisions = 0.0;  // [-] agent steps per episode
   double mean_steps = 0.0;      // [-] env steps per episode
   double reached_rate = 0.0;    // [-] 0..1
+  // Per-episode closest separation (EpisodeStats::min_separation) over the
+  // episodes: median and 5th percentile (nearest rank) [m].
+  double separation_median = 0.0;
+  double separation_p5 = 0.0;
   long long env_steps = 0;      // [-]
   double wall_s = 0.0;          // [s]
   std::array<long long, kActionBins.size()> action_counts{};  // [-] decisions per bin

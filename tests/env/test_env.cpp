@@ -220,3 +220,19 @@ TEST_CASE("bad configuration and setups give errors that name the field") {
   CHECK(r.status().message().find("expected 5") != std::string::npos);
   CHECK_FALSE(VecEnv::make({}, 0));
 }
+
+TEST_CASE("an episode's closest separation is the smallest intruder distance the ownship saw") {
+  HorizontalCrConfig c;
+  c.rules = Rules::kGym;  // every step is the agent's, so each observation is seen here
+  auto e = HorizontalCrEnv::make(c);
+  REQUIRE(e);
+  Rng rng(episode_seed(4, 0));
+  REQUIRE(e->reset(rng));
+  double seen = 1e300;
+  for (int t = 0; t < 40 && !e->done(); ++t) {
+    for (double d : e->observation().intruder_distance) seen = std::min(seen, d * c.dist_scale);
+    CHECK(e->stats().min_separation == doctest::Approx(seen).epsilon(1e-12));
+    e->step(t % 3 == 0 ? 0.5 : 0.0);
+  }
+  CHECK(seen < 1e300);
+}

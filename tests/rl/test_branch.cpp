@@ -99,3 +99,33 @@ TEST_CASE("one rollout step improves a policy, using its own continuations") {
   CHECK(r->success_rate > b->success_rate + 0.05);
   CHECK(r->mean_reward > b->mean_reward + 1.0);
 }
+
+namespace {
+// Counts what a recorder would write.
+struct CountingObserver : env::EpisodeObserver {
+  int resets = 0, steps = 0, ends = 0;
+  void on_reset(const env::HorizontalCrEnv&) override { ++resets; }
+  void on_step(const env::HorizontalCrEnv&, const env::StepInfo&) override { ++steps; }
+  void on_end(const env::HorizontalCrEnv&, const env::EpisodeStats&) override { ++ends; }
+};
+}  // namespace
+
+TEST_CASE("planning branches are invisible to an episode's observer") {
+  auto v = env::VecEnv::make(eval_config(), 4);
+  REQUIRE(v);
+  CountingObserver seen;
+  for (int s = 0; s < v->size(); ++s) v->env(s).set_observer(&seen);
+  rl::LookaheadPolicy planner(*v, {-1, -0.5, 0, 0.5, 1});
+  Rng init(3);
+  auto base = rl::MlpPolicy::make({}, init);
+  REQUIRE(base);
+  rl::RolloutPolicy rollout(*v, std::move(*base));
+  for (rl::Policy* p : {static_cast<rl::Policy*>(&planner), static_cast<rl::Policy*>(&rollout)}) {
+    seen = {};
+    auto r = rl::evaluate(*p, *v, {20, 2024, false});
+    REQUIRE(r);
+    CHECK(seen.resets == 20);
+    CHECK(seen.ends == 20);
+    CHECK(seen.steps == static_cast<int>(r->env_steps));  // one per step really flown
+  }
+}
