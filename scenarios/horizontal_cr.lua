@@ -42,8 +42,8 @@ return {
   },
 
   -- Eq. 1-4 weights. Replace the table by function(f) ... end to define another
-  -- reward; f has step, intrusions, cpa_ratio, drift_deg, heading_change_deg,
-  -- waypoint_distance_m and reached.
+  -- reward; f has step, intrusions, substep_intrusions, cpa_ratio, drift_deg,
+  -- heading_change_deg, waypoint_distance_m and reached.
   reward = {
     w_i = 0.4,               -- Eq. 2: weight of |CPA / min dist| during an intrusion
     clear_bonus = 0.02,      -- Eq. 2: reward of a step without intrusion
@@ -53,6 +53,7 @@ return {
     w_h = -0.01,             -- Eq. 4: heading-change weight
     exp_rate = 0.8,          -- Eq. 3-4: exponent factor
     delta_norm_deg = 45,     -- Eq. 3-4: normaliser of delta [deg]
+    intrusion_at = "step_end", -- Eq. 2 "intrusion detected": at the step end, or "substep": at any 5 s sub-step
   },
 
   -- The paper's network: linear layers with ReLU, categorical over the 5 actions

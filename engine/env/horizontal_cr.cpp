@@ -181,12 +181,13 @@ StepFacts HorizontalCrEnv::step_facts(double hdg_before) const {
   StepFacts f;
   f.step = stats_.steps;
   f.intrusions = intruders_in_zone();
-  if (f.intrusions > 0) {
-    double best = 1e300;
+  f.substep_intrusions = substep_intrusions_;
+  if (f.intrusions > 0 || f.substep_intrusions > 0) {
+    double best = config_.zone_radius;
     const Vec2 vo{fleet_.gs_east(0), fleet_.gs_north(0)};
     for (int i = 0; i < config_.num_intruders; ++i) {
       const auto k = static_cast<size_t>(i);
-      if (dist_[k] >= config_.zone_radius) continue;
+      if (f.intrusions > 0 && dist_[k] >= config_.zone_radius) continue;
       const Vec2 w{fleet_.gs_east(i + 1) - vo.x, fleet_.gs_north(i + 1) - vo.y};
       best = std::min(best, closest_approach(rel_[k], w, config_.zone_radius).dcpa);
     }
@@ -205,6 +206,7 @@ void HorizontalCrEnv::advance(double hdg_cmd) {
   const double r2 = config_.zone_radius * config_.zone_radius;
   const double dlat_zone = config_.zone_radius / (kREarth * kDeg);  // [deg]
   const Fleet& f = fleet_;
+  substep_intrusions_ = 0;
   for (int s = 0; s < config_.substeps; ++s) {
     fleet_.step(config_.dt, config_.limits);
     sim_time_ += config_.dt;
@@ -215,6 +217,7 @@ void HorizontalCrEnv::advance(double hdg_cmd) {
       const Vec2 p = kwik_relative(lat0, lon0, c0, s0, f.lat(j), f.lon(j), f.cos_lat(j), f.sin_lat(j));
       if (p.x * p.x + p.y * p.y < r2) {
         ++stats_.intrusions;
+        ++substep_intrusions_;
         break;
       }
     }

@@ -204,7 +204,7 @@ class HorizontalCrEnv {
   Fleet fleet_;
   double wpt_lat_ = 0.0, wpt_lon_ = 0.0;  // [deg]
   double sim_time_ = 0.0;                  // [s]
-  int substep_intrusions_ = 0;             // sub-steps with an intrusion in the last step
+  int substep_intrusions_ = 0;             // sub-steps with an intrusion in the last env step
   bool done_ = true;
   EpisodeStats stats_;
   Observation obs_;

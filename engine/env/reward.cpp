@@ -14,7 +14,8 @@ double gym_reward(const RewardWeights& w, const StepFacts& f) {
 }
 
 double paper_reward(const RewardWeights& w, const StepFacts& f) {
-  if (f.intrusions > 0) return -1.0 + w.w_i * std::fabs(f.cpa_ratio);
+  if (f.intrusions > 0 || (w.intrusion_at_substeps && f.substep_intrusions > 0))
+    return -1.0 + w.w_i * std::fabs(f.cpa_ratio);
   const double drift = std::fabs(f.drift);
   const double r_drift = drift <= w.drift_limit
                              ? w.w_d * (std::exp(w.exp_rate * drift / w.delta_norm) - 1.0)

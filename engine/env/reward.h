@@ -15,11 +15,14 @@
 // Decisions squawk makes where the paper is silent (kept consistent with the
 // environment, horizontal_cr.h):
 //   "intrusion detected" = some intruder closer than the protected-zone radius
-//     (5 NM, horizontal) at the end of the step;
+//     (5 NM, horizontal) at the end of the step; with intrusion_at_substeps,
+//     also at any 5 s sub-step of the step (the intrusion success counts);
 //   CPA = the predicted distance at closest approach [m] between the ownship
 //     (current velocity) and the intruding intruder; with several intruders
-//     inside the zone, the smallest such CPA; "min dist" = the zone radius,
-//     so cpa_ratio = CPA / radius lies in [0, 1);
+//     inside the zone, the smallest such CPA (a sub-step intrusion with none
+//     inside at the step end: the smallest over all intruders, at most the
+//     radius); "min dist" = the zone radius, so cpa_ratio = CPA / radius lies
+//     in [0, 1];
 //   drift = ownship heading - bearing to the waypoint, in (-180, 180] deg;
 //   dhdg = signed heading change over the step (heading after - before).
 #pragma once
@@ -40,12 +43,14 @@ struct RewardWeights {
   double drift_beyond = -0.5;    // [-] ... the drift term is this constant
   double exp_rate = 0.8;         // [-] Eq. 3-4 exponent factor
   double delta_norm = 45.0;      // [deg] Eq. 3-4 normaliser of delta
+  bool intrusion_at_substeps = false;  // Eq. 2 detection: step end only (false) or any sub-step too
 };
 
 // What a reward function sees after one env step.
 struct StepFacts {
   int step = 0;                      // [-] env steps taken in the episode (1 after the first)
   int intrusions = 0;                // [-] intruders inside the zone at the step end
+  int substep_intrusions = 0;        // [-] sub-steps of this step with an intruder inside (paper rules)
   double cpa_ratio = 0.0;            // [-] smallest CPA / zone radius over those; 0 when none
   double drift = 0.0;                // [deg] heading - bearing to waypoint, (-180, 180]
   double heading_change = 0.0;       // [deg] signed, over the step

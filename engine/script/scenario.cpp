@@ -111,7 +111,7 @@ void read_env(lua_State* L, int idx, env::HorizontalCrConfig& c) {
 void read_weights(lua_State* L, int idx, env::RewardWeights& w) {
   check_keys(L, idx, "reward",
              {"reach", "drift_per_rad", "intrusion", "w_i", "w_d", "w_h", "clear_bonus",
-              "drift_limit_deg", "drift_beyond", "exp_rate", "delta_norm_deg"});
+              "drift_limit_deg", "drift_beyond", "exp_rate", "delta_norm_deg", "intrusion_at"});
   w.reach = field_number(L, idx, "reach", w.reach);
   w.drift_per_rad = field_number(L, idx, "drift_per_rad", w.drift_per_rad);
   w.intrusion = field_number(L, idx, "intrusion", w.intrusion);
@@ -123,6 +123,10 @@ void read_weights(lua_State* L, int idx, env::RewardWeights& w) {
   w.drift_beyond = field_number(L, idx, "drift_beyond", w.drift_beyond);
   w.exp_rate = field_number(L, idx, "exp_rate", w.exp_rate);
   w.delta_norm = field_number(L, idx, "delta_norm_deg", w.delta_norm);
+  const std::string at = field_string(L, idx, "intrusion_at", "step_end");
+  if (at != "step_end" && at != "substep")
+    throw ArgError("scenario field 'reward.intrusion_at' is '" + at + "': expected \"step_end\" or \"substep\"");
+  w.intrusion_at_substeps = at == "substep";
 }
 
 void read_policy(lua_State* L, int idx, rl::MlpPolicySpec& p) {
@@ -171,11 +175,13 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
     lua_pushcfunction(S, traceback_handler);
     const int handler = lua_gettop(S);
     lua_rawgeti(S, LUA_REGISTRYINDEX, ref);
-    lua_createtable(S, 0, 7);
+    lua_createtable(S, 0, 8);
     lua_pushinteger(S, f.step);
     lua_setfield(S, -2, "step");
     lua_pushinteger(S, f.intrusions);
     lua_setfield(S, -2, "intrusions");
+    lua_pushinteger(S, f.substep_intrusions);
+    lua_setfield(S, -2, "substep_intrusions");
     lua_pushnumber(S, f.cpa_ratio);
     lua_setfield(S, -2, "cpa_ratio");
     lua_pushnumber(S, f.drift);
@@ -267,8 +273,9 @@ Result<Scenario> load_scenario(const std::string& path, const VmOptions& options
   } leave;
   Scenario s;
   s.path = path;
-  VmOptions own = options;  // the scenario may read files beside it
+  VmOptions own = options;  // the scenario may read and require files beside it
   own.read_dirs.push_back(paths::dirname(path));
+  own.require_dirs.push_back(paths::dirname(path));
   s.vm = std::make_shared<Vm>(std::move(own));
   lua_State* L = s.vm->state();
   const int base = lua_gettop(L);

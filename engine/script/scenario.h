@@ -13,9 +13,12 @@
 //               lookahead_s, mvp_margin }
 //   eval    = same keys as env (overrides for evaluation) plus episodes, seed
 //   reward  = { reach, drift_per_rad, intrusion, w_i, w_d, w_h, clear_bonus,
-//               drift_limit_deg, drift_beyond, exp_rate, delta_norm_deg }
-//             or function(f) -> number, f = { step, intrusions, cpa_ratio,
-//               drift_deg, heading_change_deg, waypoint_distance_m, reached }
+//               drift_limit_deg, drift_beyond, exp_rate, delta_norm_deg,
+//               intrusion_at = "step_end"|"substep" }
+//             or function(f) -> number, f = { step, intrusions,
+//               substep_intrusions, cpa_ratio, drift_deg, heading_change_deg,
+//               waypoint_distance_m, reached }
+//   A scenario may require("name") a scenario beside it and change it.
 //   policy  = { hidden = {..}, head = "categorical"|"gaussian", actions = {..},
 //               init_log_std }
 //   train   = { estimator, episodes, episodes_per_update, num_envs, lr, lr_final, gamma,

@@ -29,6 +29,42 @@ TEST_CASE("paper reward follows Eq. 1-4 with the paper's weights") {
   f.intrusions = 2;  // intrusion: drift and heading terms vanish
   f.cpa_ratio = 0.5;
   CHECK(paper_reward(w, f) == doctest::Approx(-1.0 + 0.4 * 0.5));
+  f.intrusions = 0;  // inside only between step ends: seen with intrusion_at_substeps alone
+  f.substep_intrusions = 3;
+  CHECK(paper_reward(w, f) == doctest::Approx(0.02 - 0.5 + -0.01 * (std::exp(0.4) - 1.0)));
+  w.intrusion_at_substeps = true;
+  CHECK(paper_reward(w, f) == doctest::Approx(-1.0 + 0.4 * 0.5));
+}
+
+TEST_CASE("step facts count the sub-steps with an intruder inside the zone") {
+  HorizontalCrConfig c;  // paper rules
+  c.tlos = {300, 1000};
+  c.lookahead = 600;
+  auto e = HorizontalCrEnv::make(c);
+  REQUIRE(e);
+  struct Facts : EpisodeObserver {
+    int substeps = 0, at_ends = 0, between_only = 0;
+    void on_reset(const HorizontalCrEnv&) override {}
+    void on_step(const HorizontalCrEnv&, const StepInfo& i) override {
+      substeps += i.facts.substep_intrusions;
+      at_ends += i.facts.intrusions > 0;
+      between_only += i.facts.intrusions == 0 && i.facts.substep_intrusions > 0;
+      CHECK(i.facts.substep_intrusions <= 10);
+      if (i.facts.substep_intrusions > 0) CHECK(i.facts.cpa_ratio <= 1.0);
+    }
+    void on_end(const HorizontalCrEnv&, const EpisodeStats&) override {}
+  } seen;
+  e->set_observer(&seen);
+  int total = 0;
+  for (uint64_t k = 0; k < 200; ++k) {  // never turning: most episodes intrude
+    Rng rng(episode_seed(8, k));
+    bool decide = e->reset(rng, k);
+    while (decide && !e->done()) e->step(0.0);
+    total += e->stats().intrusions;
+  }
+  CHECK(seen.substeps == total);  // success's count, step by step
+  CHECK(seen.at_ends > 0);
+  CHECK(seen.between_only > 0);   // what the step-end reading misses
 }
 
 TEST_CASE("gym reward: reach, drift in radians, one penalty per intruder") {

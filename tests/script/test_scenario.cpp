@@ -59,6 +59,14 @@ TEST_CASE("the shipped paper scenario sets the paper's training and evaluation s
   CHECK(g->train_env.rules == env::Rules::kGym);
   CHECK(g->policy.head == "gaussian");
   CHECK(g->train_env.limits.speed_cap == 89);
+  CHECK_FALSE(s->train_env.weights.intrusion_at_substeps);
+  // The training variant requires the paper scenario beside it and changes one key.
+  auto v = script::load_scenario(repo("scenarios/horizontal_cr_substep.lua"), {});
+  REQUIRE_MESSAGE(v, v.status().message());
+  CHECK(v->train_env.weights.intrusion_at_substeps);
+  CHECK(v->eval_env.weights.intrusion_at_substeps);
+  CHECK(v->train_env.tlos.lo == 120);
+  CHECK(v->eval_env.lookahead == 600);
 }
 
 TEST_CASE("a Lua reward function replaces the built-in reward") {
@@ -104,6 +112,9 @@ TEST_CASE("scenario errors name the culprit") {
   auto rules = script::load_scenario(write_temp("squawk_test_rules.lua", "return { rules = 'atc' }"), {});
   REQUIRE_FALSE(rules);
   CHECK(rules.status().message().find("'rules'") != std::string::npos);
+  auto at = script::load_scenario(write_temp("squawk_test_at.lua", "return { reward = { intrusion_at = 'always' } }"), {});
+  REQUIRE_FALSE(at);
+  CHECK(at.status().message().find("'reward.intrusion_at' is 'always'") != std::string::npos);
   auto notable = script::load_scenario(write_temp("squawk_test_num.lua", "return 42"), {});
   REQUIRE_FALSE(notable);
   CHECK(notable.status().message().find("expected a table") != std::string::npos);
