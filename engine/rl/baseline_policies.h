@@ -22,8 +22,8 @@
 
 #include <vector>
 
-#include "env/vec_env.h"
 #include "rl/policy.h"
+#include "rl/state_policy.h"
 
 namespace squawk::rl {
 
@@ -44,30 +44,24 @@ class ConstantPolicy : public Policy {
   When when_;
 };
 
-class MvpPolicy : public Policy {
+class MvpPolicy : public StatePolicy {
  public:
-  explicit MvpPolicy(const env::VecEnv& envs) : envs_(envs) {}
+  using StatePolicy::StatePolicy;
   std::string name() const override { return "mvp"; }
-  int obs_size() const override { return envs_.obs_size(); }
   void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
            std::span<ActionSample> out) override;
-
- private:
-  const env::VecEnv& envs_;
 };
 
-class LookaheadPolicy : public Policy {
+class LookaheadPolicy : public StatePolicy {
  public:
   // actions: [-] the discrete action values, units of the heading step.
   LookaheadPolicy(const env::VecEnv& envs, std::vector<double> actions)
-      : envs_(envs), actions_(std::move(actions)) {}
+      : StatePolicy(envs), actions_(std::move(actions)) {}
   std::string name() const override { return "lookahead"; }
-  int obs_size() const override { return envs_.obs_size(); }
   void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
            std::span<ActionSample> out) override;
 
  private:
-  const env::VecEnv& envs_;
   std::vector<double> actions_;
 };
 

@@ -27,28 +27,29 @@
 #include <string>
 #include <vector>
 
-#include "env/vec_env.h"
 #include "core/status.h"
 #include "env/horizontal_cr.h"
 #include "rl/policy.h"
+#include "rl/state_policy.h"
 
 namespace squawk::rl {
 
 Result<std::vector<double>> branch_returns(Policy& policy, std::span<const env::HorizontalCrEnv> snapshots,
                                            std::span<const double> action_values, double gamma);
 
-class RolloutPolicy : public Policy {
+class RolloutPolicy : public StatePolicy {
  public:
   // `base` must have a discrete head (non-empty action_values()).
-  RolloutPolicy(const env::VecEnv& envs, std::unique_ptr<Policy> base) : envs_(envs), base_(std::move(base)) {}
+  RolloutPolicy(const env::VecEnv& envs, std::unique_ptr<Policy> base)
+      : StatePolicy(envs), base_(std::move(base)) {}
   std::string name() const override { return "rollout:" + base_->name(); }
+  // The base's size, so check_obs_size() refuses a base built for other rows.
   int obs_size() const override { return base_->obs_size(); }
   void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
            std::span<ActionSample> out) override;
   Status error() const override { return error_.is_ok() ? base_->error() : error_; }
 
  private:
-  const env::VecEnv& envs_;
   std::unique_ptr<Policy> base_;
   Status error_;
 };

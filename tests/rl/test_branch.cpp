@@ -129,3 +129,19 @@ TEST_CASE("planning branches are invisible to an episode's observer") {
     CHECK(seen.steps == static_cast<int>(r->env_steps));  // one per step really flown
   }
 }
+
+TEST_CASE("a rollout step reports its base's observation size, so a mismatched base is refused") {
+  env::HorizontalCrConfig three = eval_config();
+  three.num_intruders = 3;  // rows of 3 + 5 * 3 = 18 values
+  auto v = env::VecEnv::make(three, 2);
+  REQUIRE(v);
+  Rng init(1);
+  auto base = rl::MlpPolicy::make({}, init);  // reads 28 values
+  REQUIRE(base);
+  rl::RolloutPolicy improved(*v, std::move(*base));
+  CHECK(improved.obs_size() == 28);
+  CHECK_FALSE(rl::check_obs_size(improved, v->obs_size()).is_ok());
+  CHECK_FALSE(rl::evaluate(improved, *v, {2, 1, false}));
+  rl::LookaheadPolicy planner(*v, {-1, -0.5, 0, 0.5, 1});
+  CHECK(planner.obs_size() == 18);
+}
