@@ -42,6 +42,15 @@ expect "eval lookahead"  0 "success" -- "$sq" eval scenarios/horizontal_cr.lua -
 expect "lookahead gym"   2 "plans under the paper rules only" -- "$sq" eval scenarios/horizontal_cr_gym.lua --policy lookahead --episodes 2
 expect "rollout no head" 2 "zero has no discrete action head" -- "$sq" eval scenarios/horizontal_cr.lua --policy rollout:zero --episodes 2
 expect "vine gaussian"   2 "needs a discrete action head" -- "$sq" train scenarios/horizontal_cr_gym.lua --policy mlp --estimator vine --episodes 8 --out "$tmp/vine"
+# --mirror: both learners; the checkpoint remembers it, eval names it, a
+# resume that disagrees and a scenario whose ownship slows are refused.
+mir="$tmp/mirror"
+expect "train mlp mirror"  0 "done: 64 episodes" -- "$sq" train scenarios/horizontal_cr.lua --mirror --episodes 64 --eval-every 64 --eval-episodes 4 --out "$mir/mlp"
+expect "eval mirror"       0 "mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy mlp --checkpoint "$mir/mlp/policy.ckpt" --episodes 2
+expect "resume mirror"     1 "with mirror symmetry, but this run asks for none" -- "$sq" train scenarios/horizontal_cr.lua --episodes 128 --eval-every 64 --eval-episodes 4 --out "$mir/mlp" --resume
+expect "mirror gym"        2 "--mirror: mirror symmetry needs a constant ownship speed, but speed_cap 89" -- "$sq" train scenarios/horizontal_cr_gym.lua --mirror --episodes 8 --out "$mir/gym"
+expect "train gpt2 mirror" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --mirror --train-embeddings --blocks 2 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$mir/gpt2"
+expect "eval gpt2 mirror"  0 "head action, mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$mir/gpt2/checkpoint.ckpt" --episodes 2
 expect "eval pretrained" 0 "most frequent" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/run/checkpoint.ckpt" --episodes 2
 expect "embeddings need every block" 1 "needs all 2 blocks trainable" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --train-embeddings --blocks 1 --episodes 8 --out "$pt/bad"
 expect "render"          0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --out "$tmp/r.svg"

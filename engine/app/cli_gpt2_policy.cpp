@@ -51,13 +51,15 @@ Result<script::Scenario> scenario_of(const Args& args) {
 }  // namespace
 
 int cmd_train_gpt2(const ArgV& argv) {
-  auto args = Args::parse(argv, with_policy_flags(learner_flags(), {"--resume", "--quiet", "--train-embeddings"}));
+  auto args = Args::parse(argv, with_policy_flags(learner_flags(), {"--resume", "--quiet", "--train-embeddings", "--mirror"}));
   if (!args) return usage_error("train", args.status().message());
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");
   auto popts = gpt2_options(*args);
   if (!popts) return usage_error("train", popts.status().message());
   auto sc = scenario_of(*args);
   if (!sc) return failure(sc.status());
+  if (Status st = apply_mirror_flag(*args, sc->train_env, popts->spec.mirror); !st.is_ok())
+    return usage_error("train", "--mirror: " + st.message());
   rl::TrainConfig cfg = sc->train;
   const double lr_default = popts->model == "tiny" ? cfg.lr : kFolderLr;
   if (Status st = apply_learner_flags(*args, 20000, lr_default, cfg); !st.is_ok())
@@ -80,6 +82,8 @@ int cmd_train_gpt2(const ArgV& argv) {
     if (c->progress.seed != cfg.seed)
       return failure(Status::invalid("checkpoint " + ckpt_path + " was trained with seed " +
                                      std::to_string(c->progress.seed) + ", not " + std::to_string(cfg.seed)));
+    if (Status st = check_resume_mirror(ckpt_path, c->spec.mirror, popts->spec.mirror); !st.is_ok())
+      return failure(st);
     auto p = gpt2_policy_from_checkpoint(*c, popts->prompt, *vo);
     if (!p) return failure(p.status());
     g = std::move(*p);

@@ -70,7 +70,7 @@ int cmd_train(const ArgV& argv) {
   if (wants_gpt2(argv)) return cmd_train_gpt2(argv);
   std::vector<std::string> values = learner_flags();
   values.insert(values.end(), {"--policy", "--validation-seed"});
-  Args::Spec spec = with_vm_flags({values, {"--resume", "--quiet"}});
+  Args::Spec spec = with_vm_flags({values, {"--resume", "--quiet", "--mirror"}});
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("train", args.status().message());
   if (args->get_or("--policy", "mlp") != "mlp")
@@ -85,6 +85,8 @@ int cmd_train(const ArgV& argv) {
   rl::TrainConfig cfg = sc->train;
   if (Status st = apply_learner_flags(*args, cfg.episodes, cfg.lr, cfg); !st.is_ok())
     return usage_error("train", st.message());
+  if (Status st = apply_mirror_flag(*args, sc->train_env, sc->policy.mirror); !st.is_ok())
+    return usage_error("train", "--mirror: " + st.message());
   auto validation_seed =
       args->get_int("--validation-seed", static_cast<long long>(sc->eval_seed + kValidationSeedOffset));
   if (!validation_seed) return usage_error("train", validation_seed.status().message());
@@ -102,6 +104,8 @@ int cmd_train(const ArgV& argv) {
   if (resuming) {
     auto c = rl::load_checkpoint(ckpt_path);
     if (!c) return failure(c.status());
+    if (Status st = check_resume_mirror(ckpt_path, c->spec.mirror, sc->policy.mirror); !st.is_ok())
+      return failure(st);
     auto p = rl::policy_from_checkpoint(*c);
     if (!p) return failure(p.status());
     policy = std::move(*p);

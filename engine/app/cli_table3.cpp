@@ -57,7 +57,7 @@ std::string top_action(const rl::EvalResult& r) {
 }  // namespace
 
 int cmd_table3(const ArgV& argv) {
-  std::vector<std::string> values = {"--mlp-checkpoint", "--gpt2-checkpoint", "--episodes", "--envs", "--csv"};
+  std::vector<std::string> values = {"--mlp-checkpoint", "--mlp-mirror-checkpoint", "--gpt2-checkpoint", "--episodes", "--envs", "--csv"};
   values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
   auto args = Args::parse(argv, with_vm_flags({values, {"--json"}}));
   if (!args) return usage_error("table3", args.status().message());
@@ -81,6 +81,8 @@ int cmd_table3(const ArgV& argv) {
   script::PolicyOptions mlp;
   mlp.checkpoint = args->get_or("--mlp-checkpoint", "");
   mlp.seed = static_cast<uint64_t>(*seed);
+  script::PolicyOptions mirrored = mlp;
+  mirrored.checkpoint = args->get_or("--mlp-mirror-checkpoint", paths::resource(script::kShippedMlpMirrorCheckpoint));
   script::PolicyOptions tuned;
   tuned.checkpoint = args->get_or("--gpt2-checkpoint", paths::resource(kShippedGpt2Checkpoint));
   tuned.gpt2 = *popts;
@@ -99,6 +101,7 @@ int cmd_table3(const ArgV& argv) {
       {"Untrained Neural Network", "random", &mlp},
       {"Untrained GPT-2 LLM", "gpt2", &untrained},
       {"RL Trained Neural Network", "mlp", &mlp},
+      {"RL Trained NN, mirror-symmetric (beyond the paper)", "mlp", &mirrored},
       {"RL Fine-Tuned GPT-2 LLM", "gpt2", &tuned},
       {"Always -0.5 (slightly left)", "constant:-0.5", &mlp},
       {"Always +0.5 (slightly right)", "constant:0.5", &mlp},

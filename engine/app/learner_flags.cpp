@@ -56,4 +56,18 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
   return cfg.validate();
 }
 
+Status apply_mirror_flag(const Args& args, const env::HorizontalCrConfig& env, env::ObservationMirror& mirror) {
+  if (!args.has("--mirror")) return Status::ok();
+  SQUAWK_ASSIGN_OR_RETURN(mirror, env::observation_mirror(env));
+  return Status::ok();
+}
+
+Status check_resume_mirror(const std::string& ckpt_path, const env::ObservationMirror& checkpoint,
+                           const env::ObservationMirror& wanted) {
+  if (checkpoint.empty() == wanted.empty()) return Status::ok();
+  return Status::invalid("checkpoint " + ckpt_path + " holds a policy " +
+                         (checkpoint.empty() ? "without" : "with") + " mirror symmetry, but this run asks for " +
+                         (wanted.empty() ? "none (no --mirror, no policy.mirror)" : "it (--mirror or policy.mirror)"));
+}
+
 }  // namespace squawk::app

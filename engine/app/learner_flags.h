@@ -8,6 +8,7 @@
 
 #include "app/cli.h"
 #include "core/status.h"
+#include "env/horizontal_cr.h"
 #include "rl/vpg.h"
 
 namespace squawk::app {
@@ -24,5 +25,15 @@ const std::vector<std::string>& learner_flags();
 // scales lr_final by the same factor, so the schedule keeps its shape.
 // Error: a flag's value does not parse, or the result is out of range.
 Status apply_learner_flags(const Args& args, long long episodes_default, double lr_default, rl::TrainConfig& cfg);
+
+// --mirror (a switch): a mirror-symmetric policy (rl/mirror.h). Sets `mirror`
+// to env's observation mirror when the flag is given; keeps it otherwise.
+// Error: env has no exact mirror (env::observation_mirror).
+Status apply_mirror_flag(const Args& args, const env::HorizontalCrConfig& env, env::ObservationMirror& mirror);
+
+// Error unless a resumed checkpoint's policy is mirror-symmetric exactly when
+// the run asks for it (scenario key or --mirror).
+Status check_resume_mirror(const std::string& ckpt_path, const env::ObservationMirror& checkpoint,
+                           const env::ObservationMirror& wanted);
 
 }  // namespace squawk::app

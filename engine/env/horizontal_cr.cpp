@@ -78,6 +78,15 @@ HorizontalCrEnv::HorizontalCrEnv(HorizontalCrConfig config) : config_(std::move(
   dist_.assign(n, 0.0);
 }
 
+Result<ObservationMirror> observation_mirror(const HorizontalCrConfig& c) {
+  const double cap = c.limits.speed_cap;
+  if (cap > 0.0 && cap < c.own_speed)
+    return Status::invalid("mirror symmetry needs a constant ownship speed, but speed_cap " +
+                           std::to_string(cap) + " m/s slows own_speed " + std::to_string(c.own_speed) +
+                           " m/s (use speed_cap = 0 or >= own_speed)");
+  return env::observation_mirror(c.num_intruders, c.own_speed / c.speed_scale);
+}
+
 EpisodeSetup::Intruder creconfs(const HorizontalCrConfig& c, double dpsi, double cpa_nm,
                                 double tlos) {
   const double gs = c.own_speed, trk_o = 0.0;

@@ -110,6 +110,11 @@ struct EpisodeSetup {
   double waypoint_lon = 0.0;  // [deg]
 };
 
+// The observation mirror (observation.h) of `config`'s environment; an error
+// when the ownship's ground speed is not constant (a speed_cap below
+// own_speed slows it in the first steps), where no fixed map is exact.
+Result<ObservationMirror> observation_mirror(const HorizontalCrConfig& config);
+
 // BlueSky's CRECONFS against the ownship at the configured start (heading 0,
 // own_speed): an intruder at the same speed whose track differs by dpsi [deg],
 // that passes at cpa_nm [NM] and enters the zone after tlos [s].

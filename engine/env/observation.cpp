@@ -52,6 +52,29 @@ Result<Observation> unflatten(std::span<const float> flat) {
   return o;
 }
 
+ObservationMirror observation_mirror(int num_intruders, double own_speed_ratio) {
+  Observation scale, offset;
+  for (auto* o : {&scale, &offset}) {
+    for (auto* v : {&o->intruder_distance, &o->cos_difference_pos, &o->sin_difference_pos,
+                    &o->x_difference_speed, &o->y_difference_speed})
+      v->assign(static_cast<size_t>(num_intruders), 0.0);
+    o->waypoint_distance = o->cos_drift = o->sin_drift = 0.0;
+  }
+  for (int i = 0; i < num_intruders; ++i) {
+    const auto k = static_cast<size_t>(i);
+    scale.intruder_distance[k] = scale.cos_difference_pos[k] = scale.x_difference_speed[k] = 1.0;
+    scale.sin_difference_pos[k] = scale.y_difference_speed[k] = -1.0;
+    offset.y_difference_speed[k] = 2.0 * own_speed_ratio;
+  }
+  scale.waypoint_distance = scale.cos_drift = 1.0;
+  scale.sin_drift = -1.0;
+  const auto size = static_cast<size_t>(observation_size(num_intruders));
+  ObservationMirror m{std::vector<float>(size), std::vector<float>(size)};
+  flatten(scale, m.scale);
+  flatten(offset, m.offset);
+  return m;
+}
+
 const std::vector<std::string>& observation_field_names() {
   static const std::vector<std::string> names = {
       "intruder_distance",  "cos_difference_pos", "sin_difference_pos", "x_difference_speed",

@@ -43,6 +43,22 @@ constexpr int observation_size(int num_intruders) { return 3 + 5 * num_intruders
 void flatten(const Observation& o, std::span<float> out);
 // Rebuilds the structured form from a flat one; the size must be 3 + 5n.
 Result<Observation> unflatten(std::span<const float> flat);
+
+// The mirror image of an encounter: every position reflected in the plane of
+// the ownship's meridian, so each heading and bearing h becomes -h (the
+// waypoint lies due north, on that plane). In the observation this negates
+// sin_difference_pos and sin_drift and maps
+//   y_difference_speed = (gs_own - sin(dh) gs_i) / v_s  ->  2 gs_own / v_s - y_difference_speed
+// (dh changes sign); the other fields are unchanged. As an affine map on the
+// flat form, m = scale * o + offset (both observation_size(n) long, scale
+// +-1), its own inverse. Exact while the ownship's ground speed is gs_own.
+struct ObservationMirror {
+  std::vector<float> scale, offset;
+  bool empty() const { return scale.empty(); }
+};
+// own_speed_ratio = gs_own / v_s, the ownship's ground speed over the
+// observation's speed normaliser.
+ObservationMirror observation_mirror(int num_intruders, double own_speed_ratio);
 // The eight field names in the paper's prompt order (§III.C.3).
 const std::vector<std::string>& observation_field_names();
 

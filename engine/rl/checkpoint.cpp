@@ -11,13 +11,13 @@ constexpr const char* kMagic = "squawk-checkpoint 1";
 }  // namespace
 
 Status save_checkpoint(const std::string& path, const Checkpoint& c) {
-  return write_train_checkpoint(path, kMagic,
-                                {{"obs_size", c.spec.obs_size},
-                                 {"hidden", c.spec.hidden},
-                                 {"head", c.spec.head},
-                                 {"action_values", c.spec.action_values},
-                                 {"init_log_std", c.spec.init_log_std}},
-                                c);
+  nlohmann::json spec = {{"obs_size", c.spec.obs_size},
+                         {"hidden", c.spec.hidden},
+                         {"head", c.spec.head},
+                         {"action_values", c.spec.action_values},
+                         {"init_log_std", c.spec.init_log_std}};
+  write_mirror(spec, c.spec.mirror);
+  return write_train_checkpoint(path, kMagic, spec, c);
 }
 
 Result<Checkpoint> load_checkpoint(const std::string& path) {
@@ -30,6 +30,7 @@ Result<Checkpoint> load_checkpoint(const std::string& path) {
     c.spec.head = h.at("head").get<std::string>();
     c.spec.action_values = h.at("action_values").get<std::vector<double>>();
     c.spec.init_log_std = h.value("init_log_std", -0.5);
+    c.spec.mirror = read_mirror(h);
     read_train_header(f, c);
   } catch (const std::exception& e) {
     return Status::corruption("checkpoint " + path + ": bad JSON header: " + e.what());

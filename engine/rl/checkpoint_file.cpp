@@ -22,6 +22,26 @@ Status write_checkpoint_file(const std::string& path, std::string_view magic,
   return files::write_atomic(path, out);
 }
 
+void write_mirror(nlohmann::json& header, const env::ObservationMirror& m) {
+  if (m.empty()) return;
+  header["mirror_scale"] = m.scale;
+  header["mirror_offset"] = m.offset;
+}
+
+env::ObservationMirror read_mirror(const nlohmann::json& h) {
+  env::ObservationMirror m;
+  if (!h.contains("mirror_scale") && !h.contains("mirror_offset")) return m;
+  for (auto [key, out] : {std::pair{"mirror_scale", &m.scale}, {"mirror_offset", &m.offset}}) {
+    const nlohmann::json& v = h.at(key);
+    if (!v.is_array()) throw std::runtime_error(std::string(key) + ": expected an array of numbers");
+    for (const auto& e : v) {
+      if (!e.is_number()) throw std::runtime_error(std::string(key) + ": " + e.dump() + " is not a number");
+      out->push_back(e.get<float>());
+    }
+  }
+  return m;
+}
+
 Result<CheckpointFile> read_checkpoint_file(const std::string& path, std::string_view magic) {
   CheckpointFile f;
   SQUAWK_ASSIGN_OR_RETURN(f.data, files::read(path));

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/status.h"
+#include "env/observation.h"
 #include "rl/checkpoint.h"
 
 namespace squawk::rl {
@@ -69,6 +70,13 @@ std::vector<T> wholes(const nlohmann::json& h, const char* key) {
   for (const auto& e : v) out.push_back(whole<T>(nlohmann::json{{key, e}}, key));
   return out;
 }
+
+// A policy spec's mirror map (env/observation.h) as the header keys
+// "mirror_scale" and "mirror_offset", both absent when the map is empty.
+// read_mirror throws std::runtime_error naming the key on a malformed entry;
+// the spec's validate() checks sizes and values.
+void write_mirror(nlohmann::json& header, const env::ObservationMirror& m);
+env::ObservationMirror read_mirror(const nlohmann::json& header);
 
 // Reads `path`, checks the magic line and parses the header line.
 Result<CheckpointFile> read_checkpoint_file(const std::string& path, std::string_view magic);

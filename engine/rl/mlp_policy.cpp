@@ -5,6 +5,7 @@
 
 #include "nn/categorical.h"
 #include "nn/gaussian.h"
+#include "rl/mirror.h"
 
 namespace squawk::rl {
 
@@ -19,9 +20,11 @@ Status MlpPolicySpec::validate() const {
     for (double v : action_values)
       if (!(v >= -1.0 && v <= 1.0))
         return Status::invalid("action value " + std::to_string(v) + " lies outside [-1, 1]");
-    return Status::ok();
+    return mirror.empty() ? Status::ok() : validate_mirror(mirror, obs_size, action_values);
   }
-  if (head == "gaussian") return Status::ok();
+  if (head == "gaussian")
+    return mirror.empty() ? Status::ok()
+                          : Status::invalid("policy mirror needs the categorical head, not the gaussian one");
   return Status::invalid("policy head '" + head + "': expected \"categorical\" or \"gaussian\"");
 }
 
@@ -44,8 +47,16 @@ MlpPolicy::MlpPolicy(MlpPolicySpec spec, nn::Mlp mlp) : spec_(std::move(spec)), 
 }
 
 void MlpPolicy::forward(std::span<const float> obs, int n, std::vector<float>& out) {
-  out.resize(static_cast<size_t>(n) * static_cast<size_t>(mlp_.out_dim()));
-  mlp_.forward(params_, obs.data(), n, out.data(), &cache_);
+  const int k = mlp_.out_dim();
+  out.resize(static_cast<size_t>(n) * static_cast<size_t>(k));
+  if (spec_.mirror.empty()) {
+    mlp_.forward(params_, obs.data(), n, out.data(), &cache_);
+    return;
+  }
+  mirror_rows(spec_.mirror, obs, n, rows_);
+  raw_.resize(2 * out.size());
+  mlp_.forward(params_, rows_.data(), 2 * n, raw_.data(), &cache_);
+  mirror_combine(raw_, n, k, out);
 }
 
 void MlpPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, Rng& rng,
@@ -118,8 +129,13 @@ float MlpPolicy::accumulate_gradient(std::span<const float> obs, int n,
                            -ent_coef, dz);
     }
   }
-  mlp_.backward(params_, cache_, dout_.data(),
-                std::span<float>(grads_).first(mlp_.num_params()));
+  const float* dnet = dout_.data();
+  if (!spec_.mirror.empty()) {
+    draw_.resize(2 * dout_.size());
+    mirror_spread(dout_, n, static_cast<int>(k), draw_);
+    dnet = draw_.data();
+  }
+  mlp_.backward(params_, cache_, dnet, std::span<float>(grads_).first(mlp_.num_params()));
   return n > 0 ? static_cast<float>(entropy / n) : 0.0f;
 }
 

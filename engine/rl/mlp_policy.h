@@ -6,6 +6,9 @@
 //     12,581 parameters, the paper's "~12,000".
 //   head "gaussian": one output = the mean, plus one free parameter log sigma
 //     (state-independent), for the gym rules' continuous action.
+//   mirror (categorical only, beyond the paper): when set, the logits are
+//     made mirror-symmetric (rl/mirror.h) from the same network, run on each
+//     observation and its mirror image.
 // Parameter buffer: the Mlp's parameters (nn/mlp.h layout), then log sigma
 // for the Gaussian head.
 #pragma once
@@ -15,6 +18,7 @@
 #include <vector>
 
 #include "core/status.h"
+#include "env/observation.h"
 #include "nn/mlp.h"
 #include "rl/policy.h"
 
@@ -26,6 +30,7 @@ struct MlpPolicySpec {
   std::string head = "categorical";                       // "categorical" | "gaussian"
   std::vector<double> action_values = {-1, -0.5, 0, 0.5, 1};  // categorical classes
   double init_log_std = -0.5;                             // gaussian: initial log sigma
+  env::ObservationMirror mirror{};                        // empty = none
 
   Status validate() const;
 };
@@ -64,6 +69,7 @@ class MlpPolicy : public Policy {
   std::vector<float> params_, grads_;
   nn::MlpCache cache_;
   std::vector<float> out_, dout_, logp_;
+  std::vector<float> rows_, raw_, draw_;  // mirror: [2n, D], [2n, K], [2n, K]
 };
 
 }  // namespace squawk::rl

@@ -9,20 +9,20 @@ constexpr const char* kMagic = "squawk-gpt2-policy 1";
 }  // namespace
 
 Status save_prompt_checkpoint(const std::string& path, const PromptCheckpoint& c) {
-  return write_train_checkpoint(path, kMagic,
-                                {{"source", c.source},
-                                 {"model_seed", c.model_seed},
-                                 {"config", c.config_json},
-                                 {"head", c.spec.head},
-                                 {"action_values", c.spec.action_values},
-                                 {"lm_texts", c.spec.lm_texts},
-                                 {"trainable_blocks", c.spec.trainable_blocks},
-                                 {"train_embeddings", c.spec.train_embeddings},
-                                 {"obs_size", c.spec.obs_size},
-                                 {"vocab", c.vocab_json},
-                                 {"merges", c.merges_txt},
-                                 {"prompt", c.prompt}},
-                                c);
+  nlohmann::json header = {{"source", c.source},
+                           {"model_seed", c.model_seed},
+                           {"config", c.config_json},
+                           {"head", c.spec.head},
+                           {"action_values", c.spec.action_values},
+                           {"lm_texts", c.spec.lm_texts},
+                           {"trainable_blocks", c.spec.trainable_blocks},
+                           {"train_embeddings", c.spec.train_embeddings},
+                           {"obs_size", c.spec.obs_size},
+                           {"vocab", c.vocab_json},
+                           {"merges", c.merges_txt},
+                           {"prompt", c.prompt}};
+  write_mirror(header, c.spec.mirror);
+  return write_train_checkpoint(path, kMagic, header, c);
 }
 
 Result<PromptCheckpoint> load_prompt_checkpoint(const std::string& path) {
@@ -39,6 +39,7 @@ Result<PromptCheckpoint> load_prompt_checkpoint(const std::string& path) {
     c.spec.trainable_blocks = whole<int>(h, "trainable_blocks");
     c.spec.train_embeddings = h.value("train_embeddings", false);
     c.spec.obs_size = whole<int>(h, "obs_size");
+    c.spec.mirror = read_mirror(h);
     c.vocab_json = h.at("vocab").get<std::string>();
     c.merges_txt = h.at("merges").get<std::string>();
     c.prompt = h.value("prompt", "");

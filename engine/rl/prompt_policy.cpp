@@ -7,6 +7,7 @@
 
 #include "nn/categorical.h"
 #include "nn/linear.h"
+#include "rl/mirror.h"
 
 namespace squawk::rl {
 
@@ -36,7 +37,7 @@ Status PromptPolicySpec::validate(int n_layer) const {
   if (chunk_rows < 1) return Status::invalid("gpt2 policy chunk_rows must be >= 1");
   if (obs_size < 8 || (obs_size - 3) % 5 != 0)
     return Status::invalid("gpt2 policy obs_size " + std::to_string(obs_size) + ": expected 3 + 5 n");
-  return Status::ok();
+  return mirror.empty() ? Status::ok() : validate_mirror(mirror, obs_size, action_values);
 }
 
 std::vector<gpt2::TensorSpec> PromptPolicy::head_extras(int C, int K) {
@@ -132,12 +133,33 @@ Status PromptPolicy::tokenize_rows(std::span<const float> obs, int n,
   if (obs.size() < static_cast<size_t>(n) * d)
     return Status::invalid("gpt2 policy: " + std::to_string(obs.size()) + " observation values for " +
                            std::to_string(n) + " rows of " + std::to_string(obs_size_));
+  std::vector<float> rows;
+  if (!spec_.mirror.empty()) {
+    mirror_rows(spec_.mirror, obs, n, rows);
+    obs = rows;
+    n *= 2;
+  }
   seqs.resize(static_cast<size_t>(n));
   for (int r = 0; r < n; ++r) {
     SQUAWK_ASSIGN_OR_RETURN(seqs[static_cast<size_t>(r)],
                             suffix_tokens(obs.subspan(static_cast<size_t>(r) * d, d)));
   }
   return Status::ok();
+}
+
+std::vector<std::vector<int>> PromptPolicy::chunk(const std::vector<std::vector<int>>& seqs, int n, int r0,
+                                                  int rows) const {
+  std::vector<std::vector<int>> part(seqs.begin() + r0, seqs.begin() + r0 + rows);
+  if (!spec_.mirror.empty()) part.insert(part.end(), seqs.begin() + n + r0, seqs.begin() + n + r0 + rows);
+  return part;
+}
+
+void PromptPolicy::combine(std::vector<float>& raw, int rows) const {
+  if (spec_.mirror.empty()) return;
+  const int K = static_cast<int>(spec_.action_values.size());
+  std::vector<float> z(static_cast<size_t>(rows) * static_cast<size_t>(K));
+  mirror_combine(raw, rows, K, z);
+  raw = std::move(z);
 }
 
 Status PromptPolicy::head_forward(std::span<const float> hidden, int rows, std::vector<float>& logits) {
@@ -198,9 +220,10 @@ Status PromptPolicy::logits(std::span<const float> obs, int n, std::vector<float
   std::vector<float> hidden, chunk_logits;
   for (int r0 = 0; r0 < n; r0 += spec_.chunk_rows) {
     const int rows = std::min(spec_.chunk_rows, n - r0);
-    const std::vector<std::vector<int>> part(seqs.begin() + r0, seqs.begin() + r0 + rows);
+    const std::vector<std::vector<int>> part = chunk(seqs, n, r0, rows);
     SQUAWK_RETURN_IF_ERROR(model_.forward_last(cache_, part, hidden));
-    SQUAWK_RETURN_IF_ERROR(head_forward(hidden, rows, chunk_logits));
+    SQUAWK_RETURN_IF_ERROR(head_forward(hidden, static_cast<int>(part.size()), chunk_logits));
+    combine(chunk_logits, rows);
     std::copy(chunk_logits.begin(), chunk_logits.end(), out.begin() + static_cast<long>(r0) * K);
   }
   return Status::ok();
@@ -250,10 +273,12 @@ float PromptPolicy::accumulate_gradient(std::span<const float> obs, int n,
   std::vector<float> hidden, z, dz, dhidden, logp(K);
   for (int r0 = 0; st.is_ok() && r0 < n; r0 += spec_.chunk_rows) {
     const int rows = std::min(spec_.chunk_rows, n - r0);
-    const std::vector<std::vector<int>> part(seqs.begin() + r0, seqs.begin() + r0 + rows);
+    const std::vector<std::vector<int>> part = chunk(seqs, n, r0, rows);
+    const int net_rows = static_cast<int>(part.size());
     st = model_.forward_train(cache_, part, hidden);
-    if (st.is_ok()) st = head_forward(hidden, rows, z);
+    if (st.is_ok()) st = head_forward(hidden, net_rows, z);
     if (!st.is_ok()) break;
+    combine(z, rows);
     // dz = dL/dlogits with L = -(coef log pi + ent_coef H).
     dz.assign(z.size(), 0.0f);
     for (int r = 0; r < rows; ++r) {
@@ -263,7 +288,12 @@ float PromptPolicy::accumulate_gradient(std::span<const float> obs, int n,
       entropy += nn::categorical_entropy(logp);
       nn::categorical_grad(logp, actions[i].index, -coef[i], -ent_coef, std::span<float>(dz).subspan(off, K));
     }
-    st = head_backward(hidden, dz, rows, dhidden);
+    if (!spec_.mirror.empty()) {
+      std::vector<float> dz2(2 * dz.size());
+      mirror_spread(dz, rows, static_cast<int>(K), dz2);
+      dz = std::move(dz2);
+    }
+    st = head_backward(hidden, dz, net_rows, dhidden);
     if (st.is_ok()) st = model_.backward(dhidden);
   }
   cache_valid_ = false;

@@ -55,6 +55,9 @@ struct PromptPolicySpec {
   bool train_embeddings = false;  // wte and wpe train too (needs every block, head "action")
   int chunk_rows = 32;          // [-] rows per batched forward
   int obs_size = 28;            // [-] flat observation size, 3 + 5 intruders
+  // When set, the logits are made mirror-symmetric (rl/mirror.h): each
+  // observation's prompt and its mirror image's prompt go through the model.
+  env::ObservationMirror mirror{};
 
   Status validate(int n_layer) const;
 };
@@ -109,7 +112,13 @@ class PromptPolicy : public Policy {
   PromptPolicy(gpt2::Model model, gpt2::Tokenizer tokenizer, PromptRenderFn render,
                PromptPolicySpec spec);
   Status ensure_cache();
+  // seqs [n] (with a mirror: [2n], the images' prompts after the n rows).
   Status tokenize_rows(std::span<const float> obs, int n, std::vector<std::vector<int>>& seqs) const;
+  // The sequences of rows [r0, r0 + rows) of n: those rows, then (with a
+  // mirror) their images'.
+  std::vector<std::vector<int>> chunk(const std::vector<std::vector<int>>& seqs, int n, int r0, int rows) const;
+  // logits [rows, K] from the head's raw output of chunk()'s sequences.
+  void combine(std::vector<float>& raw, int rows) const;
   // logits [rows, K] from hidden [rows, C].
   Status head_forward(std::span<const float> hidden, int rows, std::vector<float>& logits);
   // dhidden [rows, C] from dlogits [rows, K]; accumulates the head's gradients.

@@ -187,7 +187,7 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
     SQUAWK_ASSIGN_OR_RETURN(rl::Checkpoint c, rl::load_checkpoint(path));
     SQUAWK_ASSIGN_OR_RETURN(std::unique_ptr<rl::MlpPolicy> p, rl::policy_from_checkpoint(c));
     m.policy = std::move(p);
-    m.label = "mlp (" + path + ")";
+    m.label = "mlp (" + path + (c.spec.mirror.empty() ? ")" : ", mirror-symmetric)");
     m.trained_on = c.progress.scenario;
   } else if (kind == "gpt2") {
     Gpt2Policy g;
@@ -201,7 +201,7 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
       m.label = "gpt2 (" + path + "; " + g.meta.source;
       m.trained_on = c.progress.scenario;
     }
-    m.label += ", head " + g.meta.spec.head + ")";
+    m.label += ", head " + g.meta.spec.head + (g.meta.spec.mirror.empty() ? ")" : ", mirror-symmetric)");
     m.prompt = g.meta.prompt;
     m.policy = std::move(g.policy);
   } else {

@@ -48,6 +48,8 @@ inline constexpr int kTinyVocabEpisodes = 48;
 inline constexpr int kTinyTrainableBlocks = 2;
 // The shipped checkpoints (resource paths, core/paths.h).
 inline constexpr const char* kShippedMlpCheckpoint = "models/horizontal_cr_mlp.ckpt";
+// The same network made mirror-symmetric (rl/mirror.h), trained with --mirror.
+inline constexpr const char* kShippedMlpMirrorCheckpoint = "models/horizontal_cr_mlp_mirror.ckpt";
 inline constexpr const char* kShippedGpt2Checkpoint = "models/horizontal_cr_gpt2_tiny.ckpt";
 inline constexpr const char* kDefaultPromptFile = "prompts/observation.lua";
 

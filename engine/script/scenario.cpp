@@ -129,14 +129,26 @@ void read_weights(lua_State* L, int idx, env::RewardWeights& w) {
   w.intrusion_at_substeps = at == "substep";
 }
 
-void read_policy(lua_State* L, int idx, rl::MlpPolicySpec& p) {
-  check_keys(L, idx, "policy", {"hidden", "head", "actions", "init_log_std"});
+// `env` supplies the mirror map when the table asks for mirror = true.
+void read_policy(lua_State* L, int idx, const env::HorizontalCrConfig& env, rl::MlpPolicySpec& p) {
+  check_keys(L, idx, "policy", {"hidden", "head", "actions", "init_log_std", "mirror"});
   std::vector<double> hidden_default(p.hidden.begin(), p.hidden.end());
   p.hidden.clear();
   for (double h : number_list(L, idx, "hidden", hidden_default)) p.hidden.push_back(static_cast<int>(h));
   p.head = field_string(L, idx, "head", p.head);
   p.action_values = number_list(L, idx, "actions", p.action_values);
   p.init_log_std = field_number(L, idx, "init_log_std", p.init_log_std);
+  lua_getfield(L, idx, "mirror");
+  const int type = lua_type(L, -1);
+  const bool mirror = type == LUA_TBOOLEAN && lua_toboolean(L, -1) != 0;
+  lua_pop(L, 1);
+  if (type != LUA_TNIL && type != LUA_TBOOLEAN)
+    throw ArgError(std::string("scenario field 'policy.mirror' is a ") + lua_typename(L, type) +
+                   ": expected true or false");
+  if (!mirror) return;
+  Result<env::ObservationMirror> m = env::observation_mirror(env);
+  if (!m) throw ArgError("scenario field 'policy.mirror': " + m.status().message());
+  p.mirror = std::move(*m);
 }
 
 void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
@@ -238,7 +250,7 @@ void read_scenario(lua_State* L, int top, Scenario& s) {
   }
   lua_pop(L, 1);
   if (push_table_field(L, top, "policy")) {
-    read_policy(L, -1, s.policy);
+    read_policy(L, -1, c, s.policy);
     lua_pop(L, 1);
   }
   if (push_table_field(L, top, "train")) {

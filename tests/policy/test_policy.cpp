@@ -17,6 +17,7 @@
 #include "env/observation.h"
 #include "gpt2/model.h"
 #include "nn/categorical.h"
+#include "rl/mirror.h"
 #include "rl/prompt_checkpoint.h"
 #include "rl/prompt_policy.h"
 #include "rl/vpg.h"
@@ -69,7 +70,7 @@ Result<std::string> short_render(const env::Observation& o) {
 }
 
 std::unique_ptr<rl::PromptPolicy> tiny_policy(const std::string& head, int blocks, uint64_t seed = 7,
-                                              bool embeddings = false) {
+                                              bool embeddings = false, bool mirror = false) {
   gpt2::Config cfg = gpt2::Config::tiny();
   auto extras = head == "action" ? rl::PromptPolicy::head_extras(cfg.n_embd, 5) : std::vector<gpt2::TensorSpec>{};
   auto m = gpt2::Model::create(cfg, extras);
@@ -80,6 +81,7 @@ std::unique_ptr<rl::PromptPolicy> tiny_policy(const std::string& head, int block
   spec.head = head;
   spec.trainable_blocks = blocks;
   spec.train_embeddings = embeddings;
+  if (mirror) spec.mirror = env::observation_mirror(5, 1.0);
   auto p = rl::PromptPolicy::make(std::move(*m), gpt2::Tokenizer::bytes_only(), kPrefix, short_render, spec);
   REQUIRE(p.is_ok());
   Rng head_rng(seed + 1);
@@ -226,10 +228,10 @@ TEST_CASE("the clipped-ratio learner trains the prompt policy: one epoch is the 
 }
 
 TEST_CASE("policy-loss gradient matches finite differences (both heads, tail of 2 blocks, embeddings)") {
-  for (const char* head : {"action", "lm", "action+embeddings"}) {
+  for (const char* head : {"action", "lm", "action+embeddings", "lm+mirror"}) {
     CAPTURE(head);
-    const bool emb = std::string(head) == "action+embeddings";
-    auto p = tiny_policy(emb ? "action" : head, 2, 7, emb);
+    const bool emb = std::string(head) == "action+embeddings", mirror = std::string(head) == "lm+mirror";
+    auto p = tiny_policy(emb ? "action" : mirror ? "lm" : head, 2, 7, emb, mirror);
     const int n = 3;
     const std::vector<float> obs = flat_rows(n);
     const std::vector<int> a = {0, 3, 4};
@@ -279,6 +281,32 @@ TEST_CASE("policy-loss gradient matches finite differences (both heads, tail of 
   }
 }
 
+TEST_CASE("a mirror-symmetric prompt policy reads the mirror image's prompt and turns the mirror way") {
+  const int n = 3;
+  const std::vector<float> rows = flat_rows(n);
+  std::vector<float> both;
+  rl::mirror_rows(env::observation_mirror(5, 1.0), rows, n, both);
+  const std::vector<float> images(both.begin() + n * 28, both.end());
+  for (const char* head : {"action", "lm"})
+    for (bool mirror : {true, false}) {
+      CAPTURE(head);
+      CAPTURE(mirror);
+      auto p = tiny_policy(head, 2, 7, false, mirror);
+      std::vector<float> z, zm;
+      REQUIRE(p->logits(rows, n, z).is_ok());
+      REQUIRE(p->logits(images, n, zm).is_ok());
+      double worst = 0.0;
+      for (int r = 0; r < n; ++r)
+        for (int a = 0; a < 5; ++a)
+          worst = std::max(worst, static_cast<double>(std::fabs(z[static_cast<size_t>(r * 5 + a)] -
+                                                                zm[static_cast<size_t>(r * 5 + 4 - a)])));
+      if (mirror)
+        CHECK(worst < 1e-4);
+      else
+        CHECK(worst > 1e-3);
+    }
+}
+
 TEST_CASE("gpt2 policy checkpoints round-trip and reject damaged files") {
   auto p = tiny_policy("action", 1);
   rl::PromptCheckpoint c;
@@ -287,6 +315,7 @@ TEST_CASE("gpt2 policy checkpoints round-trip and reject damaged files") {
   c.config_json = "{}";
   c.spec = p->spec();
   c.spec.train_embeddings = true;
+  c.spec.mirror = env::observation_mirror(5, 1.0);
   c.vocab_json = p->tokenizer().vocab_json();
   c.merges_txt = p->tokenizer().merges_txt();
   c.params.assign(p->params().begin(), p->params().end());
@@ -314,6 +343,7 @@ TEST_CASE("gpt2 policy checkpoints round-trip and reject damaged files") {
   CHECK(back->progress.episodes == 96);
   CHECK(back->spec.trainable_blocks == 1);
   CHECK(back->spec.train_embeddings);
+  CHECK(back->spec.mirror.offset == c.spec.mirror.offset);
   CHECK(back->vocab_json == c.vocab_json);
   auto data = files::read(path);
   REQUIRE(data.is_ok());

@@ -54,6 +54,12 @@ TEST_CASE("the shipped paper scenario sets the paper's training and evaluation s
   CHECK(s->train_env.zone_radius == doctest::Approx(9260));
   CHECK(s->policy.action_values == std::vector<double>{-1, -0.5, 0, 0.5, 1});
   CHECK(s->eval_episodes == 1000);
+  CHECK(s->policy.mirror.empty());
+  auto m = script::load_scenario(
+      write_temp("squawk_test_mirror.lua", "return { env = { speed_cap_ms = 0 }, policy = { mirror = true } }"), {});
+  REQUIRE_MESSAGE(m, m.status().message());
+  REQUIRE(m->policy.mirror.offset.size() == 28);
+  CHECK(m->policy.mirror.offset[24] == 2.0f);  // y_difference_speed[1]: 2 x 150 m/s / 150 m/s
   auto g = script::load_scenario(repo("scenarios/horizontal_cr_gym.lua"), {});
   REQUIRE_MESSAGE(g, g.status().message());
   CHECK(g->train_env.rules == env::Rules::kGym);
@@ -115,6 +121,14 @@ TEST_CASE("scenario errors name the culprit") {
   auto at = script::load_scenario(write_temp("squawk_test_at.lua", "return { reward = { intrusion_at = 'always' } }"), {});
   REQUIRE_FALSE(at);
   CHECK(at.status().message().find("'reward.intrusion_at' is 'always'") != std::string::npos);
+  auto mirror_type = script::load_scenario(write_temp("squawk_test_mt.lua", "return { policy = { mirror = 'yes' } }"), {});
+  REQUIRE_FALSE(mirror_type);
+  CHECK(mirror_type.status().message().find("'policy.mirror' is a string: expected true or false") != std::string::npos);
+  // The default fleet limits cap the ownship at 89 m/s: its speed changes, so no exact mirror.
+  auto mirror_cap = script::load_scenario(write_temp("squawk_test_mc.lua", "return { policy = { mirror = true } }"), {});
+  REQUIRE_FALSE(mirror_cap);
+  CHECK(mirror_cap.status().message().find("policy.mirror") != std::string::npos);
+  CHECK(mirror_cap.status().message().find("speed_cap 89") != std::string::npos);
   auto notable = script::load_scenario(write_temp("squawk_test_num.lua", "return 42"), {});
   REQUIRE_FALSE(notable);
   CHECK(notable.status().message().find("expected a table") != std::string::npos);
