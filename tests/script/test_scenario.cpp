@@ -109,31 +109,27 @@ TEST_CASE("a Lua reward function replaces the built-in reward") {
 }
 
 TEST_CASE("scenario errors name the culprit") {
-  auto typo = script::load_scenario(write_temp("squawk_test_typo.lua", "return { env = { tlos = {1, 2} } }"), {});
-  REQUIRE_FALSE(typo);
-  CHECK(typo.status().message().find("unknown key 'tlos'") != std::string::npos);
-  auto range = script::load_scenario(write_temp("squawk_test_range.lua", "return { env = { tlos_s = {900, 100} } }"), {});
-  REQUIRE_FALSE(range);
-  CHECK(range.status().message().find("tlos") != std::string::npos);
-  auto rules = script::load_scenario(write_temp("squawk_test_rules.lua", "return { rules = 'atc' }"), {});
-  REQUIRE_FALSE(rules);
-  CHECK(rules.status().message().find("'rules'") != std::string::npos);
-  auto at = script::load_scenario(write_temp("squawk_test_at.lua", "return { reward = { intrusion_at = 'always' } }"), {});
-  REQUIRE_FALSE(at);
-  CHECK(at.status().message().find("'reward.intrusion_at' is 'always'") != std::string::npos);
-  auto mirror_type = script::load_scenario(write_temp("squawk_test_mt.lua", "return { policy = { mirror = 'yes' } }"), {});
-  REQUIRE_FALSE(mirror_type);
-  CHECK(mirror_type.status().message().find("'policy.mirror' is a string: expected true or false") != std::string::npos);
-  // The default fleet limits cap the ownship at 89 m/s: its speed changes, so no exact mirror.
-  auto mirror_cap = script::load_scenario(write_temp("squawk_test_mc.lua", "return { policy = { mirror = true } }"), {});
-  REQUIRE_FALSE(mirror_cap);
-  CHECK(mirror_cap.status().message().find("policy.mirror") != std::string::npos);
-  CHECK(mirror_cap.status().message().find("speed_cap 89") != std::string::npos);
-  auto notable = script::load_scenario(write_temp("squawk_test_num.lua", "return 42"), {});
-  REQUIRE_FALSE(notable);
-  CHECK(notable.status().message().find("expected a table") != std::string::npos);
-  auto syntax = script::load_scenario(write_temp("squawk_test_syntax.lua", "return {"), {});
-  CHECK_FALSE(syntax);
+  struct Case {
+    const char* lua;
+    std::vector<const char*> says;
+  };
+  const Case cases[] = {
+      {"return { env = { tlos = {1, 2} } }", {"unknown key 'tlos'"}},
+      {"return { env = { tlos_s = {900, 100} } }", {"tlos"}},
+      {"return { rules = 'atc' }", {"'rules'"}},
+      {"return { reward = { intrusion_at = 'always' } }", {"'reward.intrusion_at' is 'always'"}},
+      {"return { policy = { mirror = 'yes' } }", {"'policy.mirror' is a string: expected true or false"}},
+      // The default fleet limits cap the ownship at 89 m/s: its speed changes, so no exact mirror.
+      {"return { policy = { mirror = true } }", {"policy.mirror", "speed_cap 89"}},
+      {"return 42", {"expected a table"}},
+      {"return {", {"squawk_test_error.lua:1"}},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.lua);
+    auto s = script::load_scenario(write_temp("squawk_test_error.lua", c.lua), {});
+    REQUIRE_FALSE(s);
+    for (const char* text : c.says) CHECK(s.status().message().find(text) != std::string::npos);
+  }
   CHECK(script::load_scenario("/nonexistent/x.lua", {}).status().code() == Code::kNotFound);
 }
 
