@@ -1,7 +1,9 @@
 #include "rl/checkpoint_file.h"
 
 #include <bit>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "core/files.h"
@@ -35,8 +37,9 @@ env::ObservationMirror read_mirror(const nlohmann::json& h) {
     const nlohmann::json& v = h.at(key);
     if (!v.is_array()) throw std::runtime_error(std::string(key) + ": expected an array of numbers");
     for (const auto& e : v) {
-      if (!e.is_number()) throw std::runtime_error(std::string(key) + ": " + e.dump() + " is not a number");
-      out->push_back(e.get<float>());
+      if (!e.is_number() || !(std::fabs(e.get<double>()) <= std::numeric_limits<float>::max()))
+        throw std::runtime_error(std::string(key) + ": " + e.dump() + " is not a float32 number");
+      out->push_back(static_cast<float>(e.get<double>()));
     }
   }
   return m;
