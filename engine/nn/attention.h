@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 
 namespace squawk::nn {
 
@@ -40,7 +41,24 @@ void attention_backward(float* dqkv, const float* dout, const float* att, const 
                         const float* k_ext, const float* v_ext, int ext_stride,
                         const AttentionShape& s);
 
-// Plain-loop references of the two functions above, for tests.
+// The same attention for a subset of the queries: rows[q] (q < Q) names a row
+// of a sequence block of qkv (never an inline prefix row); out [Q,C] gets its
+// output, att (optional) [Q,NH,P+T] its probabilities over the P prefix keys
+// then the sequence's own keys (zero past the query's position). Keys and
+// values of every row are read; GPT-2's last block needs only each sequence's
+// last query, so this is its forward when nothing else reads the other rows.
+size_t attention_rows_probs_size(const AttentionShape& s, int Q);
+void attention_forward_rows(float* out, float* att, const float* qkv, const float* k_ext,
+                            const float* v_ext, int ext_stride, const AttentionShape& s,
+                            std::span<const int> rows);
+// Accumulates dqkv [R,3C] from dout [Q,C] (the gradient of the rows' outputs)
+// and attention_forward_rows' att: the query rows' q, and the keys and values
+// they read (an inline prefix's included, an external prefix's not).
+void attention_backward_rows(float* dqkv, const float* dout, const float* att, const float* qkv,
+                             const float* k_ext, const float* v_ext, int ext_stride,
+                             const AttentionShape& s, std::span<const int> rows);
+
+// Plain-loop references of the full-query functions above, for tests.
 void attention_forward_ref(float* out, float* att, const float* qkv, const float* k_ext,
                            const float* v_ext, int ext_stride, const AttentionShape& s);
 void attention_backward_ref(float* dqkv, const float* dout, const float* att, const float* qkv,

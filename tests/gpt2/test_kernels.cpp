@@ -83,6 +83,37 @@ TEST_CASE("attention kernel equals the plain-loop reference, with and without a 
   }
 }
 
+TEST_CASE("attention over a subset of the queries equals those rows of the full attention") {
+  for (int mode = 0; mode < 3; ++mode) {
+    nn::AttentionShape s;
+    s.B = 3, s.T = 5, s.C = 16, s.NH = 4;
+    s.P = mode == 0 ? 0 : 4;
+    s.inline_prefix = mode == 2;
+    const int R = s.rows(), C = s.C, base = s.inline_prefix ? s.P : 0;
+    // The last row of sequence 0, a middle row of sequence 1, the first of sequence 2.
+    const std::vector<int> rows = {base + 4, base + 5 + 2, base + 10};
+    const int Q = static_cast<int>(rows.size());
+    auto qkv = randn(static_cast<size_t>(R) * 3 * C, 40 + mode);
+    auto kext = randn(static_cast<size_t>(s.P) * C, 50), vext = randn(static_cast<size_t>(s.P) * C, 51);
+    std::vector<float> full(static_cast<size_t>(R) * C), att(nn::attention_probs_size(s));
+    nn::attention_forward_ref(full.data(), att.data(), qkv.data(), kext.data(), vext.data(), C, s);
+    std::vector<float> part(static_cast<size_t>(Q) * C), patt(nn::attention_rows_probs_size(s, Q));
+    nn::attention_forward_rows(part.data(), patt.data(), qkv.data(), kext.data(), vext.data(), C, s, rows);
+    std::vector<float> want;
+    for (int r : rows) want.insert(want.end(), full.begin() + r * C, full.begin() + (r + 1) * C);
+    CHECK(max_diff(part, want) < 1e-5f);
+    // Backward: the full backward with a gradient on the chosen rows only.
+    auto dpart = randn(part.size(), 60 + mode);
+    std::vector<float> dfull(full.size(), 0.0f);
+    for (int q = 0; q < Q; ++q)
+      std::copy(dpart.begin() + q * C, dpart.begin() + (q + 1) * C, dfull.begin() + rows[q] * C);
+    std::vector<float> d1(qkv.size(), 0.0f), d2 = d1;
+    nn::attention_backward_ref(d1.data(), dfull.data(), att.data(), qkv.data(), kext.data(), vext.data(), C, s);
+    nn::attention_backward_rows(d2.data(), dpart.data(), patt.data(), qkv.data(), kext.data(), vext.data(), C, s, rows);
+    CHECK(max_diff(d1, d2) < 1e-5f);
+  }
+}
+
 TEST_CASE("layernorm and gelu backward match finite differences") {
   const int N = 3, C = 7;
   auto x = randn(N * C, 40), w = randn(C, 41), b = randn(C, 42), dy = randn(N * C, 43);
