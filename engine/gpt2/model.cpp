@@ -100,65 +100,88 @@ void Model::embed(const Batch& batch, int pos0, float* x) const {
     }
 }
 
-void Model::block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a,
-                          bool store) const {
+void Model::block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a, bool store,
+                          std::span<const int> rows) const {
   const Config& c = config();
-  const int C = c.n_embd;
-  const size_t RC = static_cast<size_t>(R) * C;
+  const int C = c.n_embd, Q = rows.empty() ? R : static_cast<int>(rows.size());
+  const size_t RC = static_cast<size_t>(R) * C, QC = static_cast<size_t>(Q) * C;
   const float* p = params_.data() + layout_.block_start(l);
   const BlockOffsets& o = layout_.block();
   a.ln1.resize(RC);
   a.qkv.resize(3 * RC);
-  a.atty.resize(RC);
-  a.ln2.resize(RC);
-  a.fch.resize(4 * RC);
-  a.fch_gelu.resize(4 * RC);
+  a.atty.resize(QC);
+  a.ln2.resize(QC);
+  a.fch.resize(4 * QC);
+  a.fch_gelu.resize(4 * QC);
   if (store) {
     a.x_in.assign(x, x + RC);
     a.ln1_mean.resize(R);
     a.ln1_rstd.resize(R);
-    a.ln2_mean.resize(R);
-    a.ln2_rstd.resize(R);
-    a.att.resize(nn::attention_probs_size(attn.shape));
+    a.ln2_mean.resize(Q);
+    a.ln2_rstd.resize(Q);
+    a.att.resize(rows.empty() ? nn::attention_probs_size(attn.shape)
+                              : nn::attention_rows_probs_size(attn.shape, Q));
   }
-  std::vector<float> proj(RC);
+  std::vector<float> proj(QC);
   nn::layernorm_forward(a.ln1.data(), store ? a.ln1_mean.data() : nullptr,
                         store ? a.ln1_rstd.data() : nullptr, x, p + o.ln1_w, p + o.ln1_b, R, C,
                         c.ln_eps);
   nn::linear_forward(a.qkv.data(), a.ln1.data(), p + o.attn_w, p + o.attn_b, R, C, 3 * C);
-  nn::attention_forward(a.atty.data(), store ? a.att.data() : nullptr, a.qkv.data(),
-                        attn.k_ext[l], attn.v_ext[l], C, attn.shape);
-  nn::linear_forward(proj.data(), a.atty.data(), p + o.proj_w, p + o.proj_b, R, C, C);
-  for (size_t i = 0; i < RC; ++i) x[i] += proj[i];
-  if (store) a.x_mid.assign(x, x + RC);
+  float* att = store ? a.att.data() : nullptr;
+  if (rows.empty()) {
+    nn::attention_forward(a.atty.data(), att, a.qkv.data(), attn.k_ext[l], attn.v_ext[l], C,
+                          attn.shape);
+  } else {
+    nn::attention_forward_rows(a.atty.data(), att, a.qkv.data(), attn.k_ext[l], attn.v_ext[l], C,
+                               attn.shape, rows);
+    // Rows increase, so row q's source rows[q] >= q is not yet overwritten.
+    for (int q = 0; q < Q; ++q)
+      std::copy(x + static_cast<size_t>(rows[q]) * C, x + static_cast<size_t>(rows[q] + 1) * C,
+                x + static_cast<size_t>(q) * C);
+  }
+  nn::linear_forward(proj.data(), a.atty.data(), p + o.proj_w, p + o.proj_b, Q, C, C);
+  for (size_t i = 0; i < QC; ++i) x[i] += proj[i];
+  if (store) a.x_mid.assign(x, x + QC);
   nn::layernorm_forward(a.ln2.data(), store ? a.ln2_mean.data() : nullptr,
-                        store ? a.ln2_rstd.data() : nullptr, x, p + o.ln2_w, p + o.ln2_b, R, C,
+                        store ? a.ln2_rstd.data() : nullptr, x, p + o.ln2_w, p + o.ln2_b, Q, C,
                         c.ln_eps);
-  nn::linear_forward(a.fch.data(), a.ln2.data(), p + o.fc_w, p + o.fc_b, R, C, 4 * C);
-  nn::gelu_forward(a.fch_gelu.data(), a.fch.data(), 4 * RC);
-  nn::linear_forward(proj.data(), a.fch_gelu.data(), p + o.fcproj_w, p + o.fcproj_b, R, 4 * C, C);
-  for (size_t i = 0; i < RC; ++i) x[i] += proj[i];
+  nn::linear_forward(a.fch.data(), a.ln2.data(), p + o.fc_w, p + o.fc_b, Q, C, 4 * C);
+  nn::gelu_forward(a.fch_gelu.data(), a.fch.data(), 4 * QC);
+  nn::linear_forward(proj.data(), a.fch_gelu.data(), p + o.fcproj_w, p + o.fcproj_b, Q, 4 * C, C);
+  for (size_t i = 0; i < QC; ++i) x[i] += proj[i];
 }
 
-void Model::block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& attn) {
-  const int C = config().n_embd;
-  const size_t RC = static_cast<size_t>(R) * C;
+void Model::block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& attn,
+                           std::span<const int> rows) {
+  const int C = config().n_embd, Q = rows.empty() ? R : static_cast<int>(rows.size());
+  const size_t RC = static_cast<size_t>(R) * C, QC = static_cast<size_t>(Q) * C;
   const float* p = params_.data() + layout_.block_start(l);
   float* g = grads_.data() + (layout_.block_start(l) - (params_.size() - grads_.size()));
   const BlockOffsets& o = layout_.block();
-  std::vector<float> dfch_gelu(4 * RC, 0.0f), dfch(4 * RC, 0.0f), dln(RC, 0.0f);
+  std::vector<float> dfch_gelu(4 * QC, 0.0f), dfch(4 * QC, 0.0f), dln(RC, 0.0f);
   nn::linear_backward(dfch_gelu.data(), g + o.fcproj_w, g + o.fcproj_b, dx, a.fch_gelu.data(),
-                      p + o.fcproj_w, R, 4 * C, C);
-  nn::gelu_backward(dfch.data(), a.fch.data(), dfch_gelu.data(), 4 * RC);
-  nn::linear_backward(dln.data(), g + o.fc_w, g + o.fc_b, dfch.data(), a.ln2.data(), p + o.fc_w, R,
+                      p + o.fcproj_w, Q, 4 * C, C);
+  nn::gelu_backward(dfch.data(), a.fch.data(), dfch_gelu.data(), 4 * QC);
+  nn::linear_backward(dln.data(), g + o.fc_w, g + o.fc_b, dfch.data(), a.ln2.data(), p + o.fc_w, Q,
                       C, 4 * C);
   nn::layernorm_backward(dx, g + o.ln2_w, g + o.ln2_b, dln.data(), a.x_mid.data(), p + o.ln2_w,
-                         a.ln2_mean.data(), a.ln2_rstd.data(), R, C);
-  std::vector<float> datty(RC, 0.0f), dqkv(3 * RC, 0.0f);
-  nn::linear_backward(datty.data(), g + o.proj_w, g + o.proj_b, dx, a.atty.data(), p + o.proj_w, R,
+                         a.ln2_mean.data(), a.ln2_rstd.data(), Q, C);
+  std::vector<float> datty(QC, 0.0f), dqkv(3 * RC, 0.0f);
+  nn::linear_backward(datty.data(), g + o.proj_w, g + o.proj_b, dx, a.atty.data(), p + o.proj_w, Q,
                       C, C);
-  nn::attention_backward(dqkv.data(), datty.data(), a.att.data(), a.qkv.data(), attn.k_ext[l],
-                         attn.v_ext[l], C, attn.shape);
+  if (rows.empty()) {
+    nn::attention_backward(dqkv.data(), datty.data(), a.att.data(), a.qkv.data(), attn.k_ext[l],
+                           attn.v_ext[l], C, attn.shape);
+  } else {
+    nn::attention_backward_rows(dqkv.data(), datty.data(), a.att.data(), a.qkv.data(),
+                                attn.k_ext[l], attn.v_ext[l], C, attn.shape, rows);
+    // The residual carries the query rows' gradient back to their input rows.
+    const std::vector<float> dres(dx, dx + QC);
+    std::fill(dx, dx + RC, 0.0f);
+    for (int q = 0; q < Q; ++q)
+      std::copy(dres.begin() + static_cast<long>(q) * C, dres.begin() + static_cast<long>(q + 1) * C,
+                dx + static_cast<size_t>(rows[q]) * C);
+  }
   std::fill(dln.begin(), dln.end(), 0.0f);
   nn::linear_backward(dln.data(), g + o.attn_w, g + o.attn_b, dqkv.data(), a.ln1.data(),
                       p + o.attn_w, R, C, 3 * C);
@@ -166,12 +189,10 @@ void Model::block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& att
                          a.ln1_mean.data(), a.ln1_rstd.data(), R, C);
 }
 
-void Model::gather_last(const Batch& batch, int row0, const float* x, float* out) const {
-  const int C = config().n_embd;
-  for (int b = 0; b < batch.B; ++b) {
-    const float* src = x + (static_cast<size_t>(row0) + static_cast<size_t>(b) * batch.T + batch.last[b]) * C;
-    std::copy(src, src + C, out + static_cast<size_t>(b) * C);
-  }
+std::vector<int> Model::last_rows(const Batch& batch, int row0) {
+  std::vector<int> rows(static_cast<size_t>(batch.B));
+  for (int b = 0; b < batch.B; ++b) rows[static_cast<size_t>(b)] = row0 + b * batch.T + batch.last[static_cast<size_t>(b)];
+  return rows;
 }
 
 namespace {
@@ -251,12 +272,12 @@ Status Model::forward_last(const PrefixCache& cache, const std::vector<std::vect
   std::vector<float> x(static_cast<size_t>(R) * C);
   embed(batch, P, x.data());
   Acts a;
-  for (int l = 0; l < c.n_layer; ++l) block_forward(l, x.data(), R, attn, a, false);
-  std::vector<float> last(static_cast<size_t>(batch.B) * C);
-  gather_last(batch, 0, x.data(), last.data());
+  const std::vector<int> last = last_rows(batch, 0);
+  for (int l = 0; l < c.n_layer; ++l)
+    block_forward(l, x.data(), R, attn, a, false, l == c.n_layer - 1 ? last : std::vector<int>{});
   const float* lnf = params_.data() + layout_.ln_f();
-  hidden.resize(last.size());
-  nn::layernorm_forward(hidden.data(), nullptr, nullptr, last.data(), lnf, lnf + C, batch.B, C,
+  hidden.resize(static_cast<size_t>(batch.B) * C);
+  nn::layernorm_forward(hidden.data(), nullptr, nullptr, x.data(), lnf, lnf + C, batch.B, C,
                         c.ln_eps);
   return Status::ok();
 }
@@ -390,7 +411,10 @@ Status Model::forward_train(const PrefixCache& cache, const std::vector<std::vec
   std::vector<float> x(static_cast<size_t>(BT) * C);
   embed(batch, P, x.data());
   Acts a;
-  for (int l = 0; l < s; ++l) block_forward(l, x.data(), BT, frozen, a, false);
+  // The last block computes only each sequence's last row (the rows leading
+  // x, or xr, afterwards): nothing reads the others.
+  auto rows_at = [&](int l, int row0) { return l == L - 1 ? last_rows(batch, row0) : std::vector<int>{}; };
+  for (int l = 0; l < s; ++l) block_forward(l, x.data(), BT, frozen, a, false, rows_at(l, 0));
   // Trainable blocks: the prefix rows lead, recomputed from the cached input of block s.
   const int inline_rows = s < L ? P : 0;
   std::vector<float> xr;
@@ -409,9 +433,10 @@ Status Model::forward_train(const PrefixCache& cache, const std::vector<std::vec
                          std::vector<const float*>(L, nullptr)};
   tail_acts_.resize(trainable_);
   for (int l = s; l < L; ++l)
-    block_forward(l, xr.data(), inline_rows + BT, tail, tail_acts_[l - s], true);
-  lnf_in_.resize(static_cast<size_t>(batch.B) * C);
-  gather_last(batch, inline_rows, xr.data(), lnf_in_.data());
+    block_forward(l, xr.data(), inline_rows + BT, tail, tail_acts_[l - s], true,
+                  rows_at(l, inline_rows));
+  const float* out = s < L ? xr.data() : x.data();
+  lnf_in_.assign(out, out + static_cast<size_t>(batch.B) * C);
   lnf_mean_.resize(batch.B);
   lnf_rstd_.resize(batch.B);
   const float* lnf = params_.data() + layout_.ln_f();
@@ -439,15 +464,15 @@ Status Model::backward(std::span<const float> dhidden) {
                          lnf_mean_.data(), lnf_rstd_.data(), B, C);
   if (s == L) return Status::ok();
   const int P = train_prefix_, T = train_batch_.T, R = P + B * T;
+  // The last block's output rows are the sequences' last rows (forward_train).
   std::vector<float> dx(static_cast<size_t>(R) * C, 0.0f);
-  for (int b = 0; b < B; ++b) {
-    float* dst = dx.data() + (static_cast<size_t>(P) + static_cast<size_t>(b) * T + train_batch_.last[b]) * C;
-    std::copy(dlast.data() + static_cast<size_t>(b) * C, dlast.data() + static_cast<size_t>(b + 1) * C, dst);
-  }
+  std::copy(dlast.begin(), dlast.end(), dx.begin());
   const AttnArgs tail = {{B, T, C, c.n_head, P, true},
                          std::vector<const float*>(L, nullptr),
                          std::vector<const float*>(L, nullptr)};
-  for (int l = L - 1; l >= s; --l) block_backward(l, tail_acts_[l - s], dx.data(), R, tail);
+  const std::vector<int> last = last_rows(train_batch_, P);
+  for (int l = L - 1; l >= s; --l)
+    block_backward(l, tail_acts_[l - s], dx.data(), R, tail, l == L - 1 ? last : std::vector<int>{});
   if (embeddings_) embed_backward(train_batch_, train_prefix_tokens_, dx.data());
   return Status::ok();
 }

@@ -137,10 +137,18 @@ class Model {
   struct AttnArgs;
   Result<Batch> make_batch(int prefix_len, const std::vector<std::vector<int>>& seqs) const;
   void embed(const Batch& batch, int pos0, float* x) const;
-  void block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a,
-                     bool store) const;
-  void block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& attn);
-  void gather_last(const Batch& batch, int row0, const float* x, float* out) const;
+  // One block over R rows of x [R,C] (in place). With rows (strictly
+  // increasing, not inline-prefix rows), only those queries are computed past
+  // the keys and values: the block's output for rows[q] is written to row q.
+  void block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a, bool store,
+                     std::span<const int> rows = {}) const;
+  // Backward of block_forward with store: dx holds the gradient of its output
+  // (the first rows.size() rows when rows are given) and becomes that of its
+  // input [R,C].
+  void block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& attn,
+                      std::span<const int> rows = {});
+  // Row of each sequence's last token in a block layout starting at row0.
+  static std::vector<int> last_rows(const Batch& batch, int row0);
   // grads of wte and wpe += dx [P + B T, C], the gradient of the block-0 input
   // rows: prefix token p at position p, then row (b, t) at position P + t.
   void embed_backward(const Batch& batch, std::span<const int> prefix, const float* dx);

@@ -245,6 +245,7 @@ static void check_tail_gradients(int k, bool embeddings) {
 }
 
 TEST_CASE("tail backward matches finite differences for every trainable tensor") {
+  SUBCASE("no block: ln_f and the head") { check_tail_gradients(0, false); }
   SUBCASE("last 2 of 3 blocks") { check_tail_gradients(2, false); }
   SUBCASE("every block and the embeddings") { check_tail_gradients(3, true); }
   SUBCASE("the embeddings need every block") {
