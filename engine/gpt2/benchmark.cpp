@@ -48,9 +48,12 @@ double sgemm_peak(double min_seconds) {
   return 2.0 * n * n * static_cast<double>(n) / t * 1e-9;
 }
 
+// The count of benchmark.h.
 double forward_flops(const Config& c, int B, int T) {
   const double C = c.n_embd, L = c.n_layer;
-  return 24.0 * L * B * T * C * C + 2.0 * L * B * C * T * (T + 1.0) + 2.0 * B * C * c.vocab_size;
+  const double full = 24.0 * T * C * C + 2.0 * C * T * (T + 1.0);
+  const double last = 6.0 * T * C * C + 18.0 * C * C + 4.0 * C * T;
+  return B * ((L - 1.0) * full + last + 2.0 * C * c.vocab_size);
 }
 
 }  // namespace

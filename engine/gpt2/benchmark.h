@@ -1,11 +1,14 @@
 // Throughput of the GPT-2 forward pass and of the tail backward, against the
 // machine's own sgemm peak (shared by `squawk gpt2 bench` and bench/bench_gpt2).
 //
-// FLOPs counted per forward of B sequences of T tokens, GPT-2 shapes (C, L, V):
-// matrix products 24 L B T C^2, causal attention 2 L B C T (T + 1) (the
-// scores and the weighted sum over the keys each position sees), and the LM
-// head at the last position 2 B C V. The sgemm peak is the best rate of a
-// 2048^3 product through nn::gemm at the same thread count.
+// FLOPs counted per forward of B sequences of T tokens to the last position's
+// logits (Model::forward_last, then the LM head), GPT-2 shapes (C, L, V): in
+// each of the first L - 1 blocks matrix products 24 B T C^2 and causal
+// attention 2 B C T (T + 1) (the scores and the weighted sum over the keys each
+// position sees); in the last block, which only the last position leaves, the
+// q/k/v product 6 B T C^2, the other products 18 B C^2 and attention 4 B C T;
+// the LM head 2 B C V. The sgemm peak is the best rate of a 2048^3 product
+// through nn::gemm at the same thread count.
 #pragma once
 
 #include <string>
