@@ -163,6 +163,17 @@ const Group& group_of(const std::vector<Group>& gs, int r, const AttentionShape&
   return gs[static_cast<size_t>(lead + (r - lead * s.P) / s.T)];
 }
 
+// Calls fn(q, r, g, nown, h) for query q (row r = rows[q] of group g, which
+// sees nown of its own keys) and every head h.
+template <class F>
+void each_query_head(std::span<const int> rows, const std::vector<Group>& gs,
+                     const AttentionShape& s, F&& fn) {
+  for (size_t q = 0; q < rows.size(); ++q) {
+    const Group& g = group_of(gs, rows[q], s);
+    for (int h = 0; h < s.NH; ++h) fn(q, rows[q], g, rows[q] - g.q0 + 1, h);
+  }
+}
+
 using Vec = Eigen::Matrix<float, Eigen::Dynamic, 1>;
 using ConstRowVec = Eigen::Map<const Eigen::Matrix<float, 1, Eigen::Dynamic>>;
 using MutRowVec = Eigen::Map<Eigen::Matrix<float, 1, Eigen::Dynamic>>;
@@ -178,38 +189,34 @@ void attention_forward_rows(float* out, float* att, const float* qkv, const floa
                             std::span<const int> rows) {
   const int C = s.C, C3 = 3 * C, hs = C / s.NH, width = s.P + s.T;
   const float scale = 1.0f / std::sqrt(static_cast<float>(hs));
-  const std::vector<Group> gs = groups(qkv, k_ext, v_ext, ext_stride, s);
   Vec w;
-  for (size_t q = 0; q < rows.size(); ++q) {
-    const int r = rows[q];
-    const Group& v = group_of(gs, r, s);
-    const int nown = r - v.q0 + 1, nk = v.nc + nown;
-    for (int h = 0; h < s.NH; ++h) {
-      ConstRowVec qv(qkv + static_cast<long>(r) * C3 + h * hs, hs);
-      const float* own = qkv + static_cast<long>(v.q0) * C3 + h * hs;
-      ConstMap Ks(own + C, nown, hs, Eigen::OuterStride<>(C3));
-      ConstMap Vs(own + 2 * C, nown, hs, Eigen::OuterStride<>(C3));
-      w.resize(nk);
-      if (v.nc > 0) {
-        ConstMap Kc(v.ctx_k + h * hs, v.nc, hs, Eigen::OuterStride<>(v.ctx_stride));
-        w.head(v.nc).noalias() = scale * (Kc * qv.transpose());
-      }
-      w.tail(nown).noalias() = scale * (Ks * qv.transpose());
-      w = (w.array() - w.maxCoeff()).exp();
-      w /= w.sum();
-      MutRowVec o(out + q * C + h * hs, hs);
-      o.noalias() = w.tail(nown).transpose() * Vs;
-      if (v.nc > 0) {
-        ConstMap Vc(v.ctx_v + h * hs, v.nc, hs, Eigen::OuterStride<>(v.ctx_stride));
-        o.noalias() += w.head(v.nc).transpose() * Vc;
-      }
-      if (att) {
-        float* a = att + (q * s.NH + h) * static_cast<size_t>(width);
-        std::copy(w.data(), w.data() + nk, a);
-        std::fill(a + nk, a + width, 0.0f);
-      }
+  auto one = [&](size_t q, int r, const Group& v, int nown, int h) {
+    const int nk = v.nc + nown;
+    ConstRowVec qv(qkv + static_cast<long>(r) * C3 + h * hs, hs);
+    const float* own = qkv + static_cast<long>(v.q0) * C3 + h * hs;
+    ConstMap Ks(own + C, nown, hs, Eigen::OuterStride<>(C3));
+    ConstMap Vs(own + 2 * C, nown, hs, Eigen::OuterStride<>(C3));
+    w.resize(nk);
+    if (v.nc > 0) {
+      ConstMap Kc(v.ctx_k + h * hs, v.nc, hs, Eigen::OuterStride<>(v.ctx_stride));
+      w.head(v.nc).noalias() = scale * (Kc * qv.transpose());
     }
-  }
+    w.tail(nown).noalias() = scale * (Ks * qv.transpose());
+    w = (w.array() - w.maxCoeff()).exp();
+    w /= w.sum();
+    MutRowVec o(out + q * C + h * hs, hs);
+    o.noalias() = w.tail(nown).transpose() * Vs;
+    if (v.nc > 0) {
+      ConstMap Vc(v.ctx_v + h * hs, v.nc, hs, Eigen::OuterStride<>(v.ctx_stride));
+      o.noalias() += w.head(v.nc).transpose() * Vc;
+    }
+    if (att) {
+      float* a = att + (q * s.NH + h) * static_cast<size_t>(width);
+      std::copy(w.data(), w.data() + nk, a);
+      std::fill(a + nk, a + width, 0.0f);
+    }
+  };
+  each_query_head(rows, groups(qkv, k_ext, v_ext, ext_stride, s), s, one);
 }
 
 void attention_backward_rows(float* dqkv, const float* dout, const float* att, const float* qkv,
@@ -217,45 +224,41 @@ void attention_backward_rows(float* dqkv, const float* dout, const float* att, c
                              const AttentionShape& s, std::span<const int> rows) {
   const int C = s.C, C3 = 3 * C, hs = C / s.NH, width = s.P + s.T;
   const float scale = 1.0f / std::sqrt(static_cast<float>(hs));
-  const std::vector<Group> gs = groups(qkv, k_ext, v_ext, ext_stride, s);
   Vec dA, dS;
-  for (size_t q = 0; q < rows.size(); ++q) {
-    const int r = rows[q];
-    const Group& v = group_of(gs, r, s);
-    const int nown = r - v.q0 + 1, nk = v.nc + nown;
-    for (int h = 0; h < s.NH; ++h) {
-      ConstRowVec qv(qkv + static_cast<long>(r) * C3 + h * hs, hs);
-      ConstRowVec dO(dout + q * C + h * hs, hs);
-      Eigen::Map<const Vec> A(att + (q * s.NH + h) * static_cast<size_t>(width), nk);
-      const long own = static_cast<long>(v.q0) * C3 + h * hs;
-      ConstMap Ks(qkv + own + C, nown, hs, Eigen::OuterStride<>(C3));
-      ConstMap Vs(qkv + own + 2 * C, nown, hs, Eigen::OuterStride<>(C3));
-      MutMap dKs(dqkv + own + C, nown, hs, Eigen::OuterStride<>(C3));
-      MutMap dVs(dqkv + own + 2 * C, nown, hs, Eigen::OuterStride<>(C3));
-      MutRowVec dq(dqkv + static_cast<long>(r) * C3 + h * hs, hs);
-      dA.resize(nk);
-      dA.tail(nown).noalias() = Vs * dO.transpose();
-      if (v.nc > 0) {
-        ConstMap Vc(v.ctx_v + h * hs, v.nc, hs, Eigen::OuterStride<>(v.ctx_stride));
-        dA.head(v.nc).noalias() = Vc * dO.transpose();
-      }
-      // Softmax backward, then the 1/sqrt(hs) scale.
-      dS = scale * (A.array() * (dA.array() - A.dot(dA))).matrix();
-      dVs.noalias() += A.tail(nown) * dO;
-      dKs.noalias() += dS.tail(nown) * qv;
-      dq.noalias() += dS.tail(nown).transpose() * Ks;
-      if (v.nc > 0) {
-        ConstMap Kc(v.ctx_k + h * hs, v.nc, hs, Eigen::OuterStride<>(v.ctx_stride));
-        dq.noalias() += dS.head(v.nc).transpose() * Kc;
-        if (v.ctx_is_inline) {
-          MutMap dKc(dqkv + C + h * hs, v.nc, hs, Eigen::OuterStride<>(C3));
-          MutMap dVc(dqkv + 2 * C + h * hs, v.nc, hs, Eigen::OuterStride<>(C3));
-          dKc.noalias() += dS.head(v.nc) * qv;
-          dVc.noalias() += A.head(v.nc) * dO;
-        }
+  auto one = [&](size_t q, int r, const Group& v, int nown, int h) {
+    const int nk = v.nc + nown;
+    ConstRowVec qv(qkv + static_cast<long>(r) * C3 + h * hs, hs);
+    ConstRowVec dO(dout + q * C + h * hs, hs);
+    Eigen::Map<const Vec> A(att + (q * s.NH + h) * static_cast<size_t>(width), nk);
+    const long own = static_cast<long>(v.q0) * C3 + h * hs;
+    ConstMap Ks(qkv + own + C, nown, hs, Eigen::OuterStride<>(C3));
+    ConstMap Vs(qkv + own + 2 * C, nown, hs, Eigen::OuterStride<>(C3));
+    MutMap dKs(dqkv + own + C, nown, hs, Eigen::OuterStride<>(C3));
+    MutMap dVs(dqkv + own + 2 * C, nown, hs, Eigen::OuterStride<>(C3));
+    MutRowVec dq(dqkv + static_cast<long>(r) * C3 + h * hs, hs);
+    dA.resize(nk);
+    dA.tail(nown).noalias() = Vs * dO.transpose();
+    if (v.nc > 0) {
+      ConstMap Vc(v.ctx_v + h * hs, v.nc, hs, Eigen::OuterStride<>(v.ctx_stride));
+      dA.head(v.nc).noalias() = Vc * dO.transpose();
+    }
+    // Softmax backward, then the 1/sqrt(hs) scale.
+    dS = scale * (A.array() * (dA.array() - A.dot(dA))).matrix();
+    dVs.noalias() += A.tail(nown) * dO;
+    dKs.noalias() += dS.tail(nown) * qv;
+    dq.noalias() += dS.tail(nown).transpose() * Ks;
+    if (v.nc > 0) {
+      ConstMap Kc(v.ctx_k + h * hs, v.nc, hs, Eigen::OuterStride<>(v.ctx_stride));
+      dq.noalias() += dS.head(v.nc).transpose() * Kc;
+      if (v.ctx_is_inline) {
+        MutMap dKc(dqkv + C + h * hs, v.nc, hs, Eigen::OuterStride<>(C3));
+        MutMap dVc(dqkv + 2 * C + h * hs, v.nc, hs, Eigen::OuterStride<>(C3));
+        dKc.noalias() += dS.head(v.nc) * qv;
+        dVc.noalias() += A.head(v.nc) * dO;
       }
     }
-  }
+  };
+  each_query_head(rows, groups(qkv, k_ext, v_ext, ext_stride, s), s, one);
 }
 
 void attention_forward_ref(float* out, float* att, const float* qkv, const float* k_ext,

@@ -29,6 +29,16 @@ float max_diff(const std::vector<float>& a, const std::vector<float>& b) {
   return m;
 }
 
+// 3 sequences of 5 rows, 4 heads; mode 0 without a prefix, 1 with a cached
+// prefix of 4 rows, 2 with that prefix inline.
+nn::AttentionShape shape_of_mode(int mode) {
+  nn::AttentionShape s;
+  s.B = 3, s.T = 5, s.C = 16, s.NH = 4;
+  s.P = mode == 0 ? 0 : 4;
+  s.inline_prefix = mode == 2;
+  return s;
+}
+
 }  // namespace
 
 TEST_CASE("gemm equals the plain-loop reference for every transpose") {
@@ -46,10 +56,7 @@ TEST_CASE("gemm equals the plain-loop reference for every transpose") {
 
 TEST_CASE("attention kernel equals the plain-loop reference, with and without a prefix") {
   for (int mode = 0; mode < 3; ++mode) {
-    nn::AttentionShape s;
-    s.B = 3, s.T = 5, s.C = 16, s.NH = 4;
-    s.P = mode == 0 ? 0 : 4;
-    s.inline_prefix = mode == 2;
+    const nn::AttentionShape s = shape_of_mode(mode);
     const int R = s.rows(), C = s.C;
     auto qkv = randn(static_cast<size_t>(R) * 3 * C, 10 + mode);
     auto kext = randn(static_cast<size_t>(s.P) * C, 20), vext = randn(static_cast<size_t>(s.P) * C, 21);
@@ -85,10 +92,7 @@ TEST_CASE("attention kernel equals the plain-loop reference, with and without a 
 
 TEST_CASE("attention over a subset of the queries equals those rows of the full attention") {
   for (int mode = 0; mode < 3; ++mode) {
-    nn::AttentionShape s;
-    s.B = 3, s.T = 5, s.C = 16, s.NH = 4;
-    s.P = mode == 0 ? 0 : 4;
-    s.inline_prefix = mode == 2;
+    const nn::AttentionShape s = shape_of_mode(mode);
     const int R = s.rows(), C = s.C, base = s.inline_prefix ? s.P : 0;
     // The last row of sequence 0, a middle row of sequence 1, the first of sequence 2.
     const std::vector<int> rows = {base + 4, base + 5 + 2, base + 10};
