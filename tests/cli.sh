@@ -51,6 +51,15 @@ expect "resume mirror"     1 "with mirror symmetry, but this run asks for none" 
 expect "mirror gym"        2 "--mirror: mirror symmetry needs a constant ownship speed, but speed_cap 89" -- "$sq" train scenarios/horizontal_cr_gym.lua --mirror --episodes 8 --out "$mir/gym"
 expect "train gpt2 mirror" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --mirror --train-embeddings --blocks 2 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$mir/gpt2"
 expect "eval gpt2 mirror"  0 "head action, mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$mir/gpt2/checkpoint.ckpt" --episodes 2
+# --init: a new run starts from a checkpoint's policy (a step of 1e-12 leaves
+# its evaluation unchanged), counts from zero and may add the mirror.
+expect "train gpt2 init" 0 "\\(from $pt/run/checkpoint.ckpt\\)" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --init "$pt/run/checkpoint.ckpt" --lr 1e-12 --seed 3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/init"
+before=$("$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/run/checkpoint.ckpt" --episodes 4 | grep -A1 "mean episode reward")
+after=$("$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/init/checkpoint.ckpt" --episodes 4 | grep -A1 "mean episode reward")
+[ -n "$before" ] && [ "$before" = "$after" ] && awk -F, 'NR == 2 { exit $1 != 8 }' "$pt/init/log.csv" && { echo "ok   init carries the policy, counts from zero"; pass=$((pass + 1)); } || { echo "FAIL init: '$before' vs '$after'"; fails=$((fails + 1)); }
+expect "train gpt2 init mirror" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --init "$pt/run/checkpoint.ckpt" --mirror --seed 3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$mir/init"
+expect "eval gpt2 init mirror" 0 "head action, mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$mir/init/checkpoint.ckpt" --episodes 2
+expect "init missing" 1 "no/such.ckpt" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --init no/such.ckpt --episodes 8 --out "$pt/bad_init"
 expect "eval pretrained" 0 "most frequent" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/run/checkpoint.ckpt" --episodes 2
 expect "embeddings need every block" 1 "needs all 2 blocks trainable" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --train-embeddings --blocks 1 --episodes 8 --out "$pt/bad"
 expect "render"          0 "wrote" -- "$sq" render "$tmp/ep.jsonl" --out "$tmp/r.svg"

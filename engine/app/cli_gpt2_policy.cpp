@@ -33,6 +33,12 @@ constexpr const char* kLogHeader =
 // Adam step size on a Hugging Face folder unless --lr says otherwise.
 constexpr double kFolderLr = 1e-5;
 
+// The learner's flags and --init CKPT (GPT-2 runs only).
+std::vector<std::string> with_init(std::vector<std::string> values) {
+  values.push_back("--init");
+  return values;
+}
+
 Args::Spec with_policy_flags(std::vector<std::string> values, std::vector<std::string> bools) {
   values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
   values.push_back("--policy");
@@ -51,7 +57,7 @@ Result<script::Scenario> scenario_of(const Args& args) {
 }  // namespace
 
 int cmd_train_gpt2(const ArgV& argv) {
-  auto args = Args::parse(argv, with_policy_flags(learner_flags(), {"--resume", "--quiet", "--train-embeddings", "--mirror"}));
+  auto args = Args::parse(argv, with_policy_flags(with_init(learner_flags()), {"--resume", "--quiet", "--train-embeddings", "--mirror"}));
   if (!args) return usage_error("train", args.status().message());
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");
   auto popts = gpt2_options(*args);
@@ -76,14 +82,23 @@ int cmd_train_gpt2(const ArgV& argv) {
   Gpt2Policy g;
   rl::PromptCheckpoint resume;
   const bool resuming = args->has("--resume") && files::exists(ckpt_path);
-  if (resuming) {
-    auto c = rl::load_prompt_checkpoint(ckpt_path);
+  const std::string init_path = resuming ? "" : args->get_or("--init", "");
+  if (resuming || !init_path.empty()) {
+    auto c = rl::load_prompt_checkpoint(resuming ? ckpt_path : init_path);
     if (!c) return failure(c.status());
-    if (c->progress.seed != cfg.seed)
-      return failure(Status::invalid("checkpoint " + ckpt_path + " was trained with seed " +
-                                     std::to_string(c->progress.seed) + ", not " + std::to_string(cfg.seed)));
-    if (Status st = check_resume_mirror(ckpt_path, c->spec.mirror, popts->spec.mirror); !st.is_ok())
-      return failure(st);
+    if (resuming) {
+      if (c->progress.seed != cfg.seed)
+        return failure(Status::invalid("checkpoint " + ckpt_path + " was trained with seed " +
+                                       std::to_string(c->progress.seed) + ", not " + std::to_string(cfg.seed)));
+      if (Status st = check_resume_mirror(ckpt_path, c->spec.mirror, popts->spec.mirror); !st.is_ok())
+        return failure(st);
+    } else {
+      // --init: the learned state (parameters, Adam moments, value baseline)
+      // carries over; the counters, and so the schedules, start at zero.
+      if (!popts->spec.mirror.empty()) c->spec.mirror = popts->spec.mirror;
+      c->progress = rl::TrainProgress{};
+      c->progress.seed = cfg.seed;
+    }
     auto p = gpt2_policy_from_checkpoint(*c, popts->prompt, *vo);
     if (!p) return failure(p.status());
     g = std::move(*p);
@@ -96,7 +111,8 @@ int cmd_train_gpt2(const ArgV& argv) {
   }
   rl::PromptPolicy& policy = *g.policy;
   rl::PromptCheckpoint& meta = g.meta;
-  if (resuming) meta.progress = resume.progress;
+  const bool restoring = resuming || !init_path.empty();
+  if (restoring) meta.progress = resume.progress;
   meta.progress.estimator = cfg.estimator;
   meta.progress.scenario = sc->path;
   if (Status st = rl::check_obs_size(policy, env::observation_size(sc->train_env.num_intruders)); !st.is_ok())
@@ -107,8 +123,9 @@ int cmd_train_gpt2(const ArgV& argv) {
   if (!train_envs) return failure(train_envs.status());
   if (!eval_envs) return failure(eval_envs.status());
   rl::Trainer trainer(policy, *train_envs, cfg, meta.progress.updates);
-  if (resuming) {
-    if (Status st = trainer.restore(resume); !st.is_ok()) return failure(st.with_context(ckpt_path));
+  if (restoring) {
+    if (Status st = trainer.restore(resume); !st.is_ok())
+      return failure(st.with_context(resuming ? ckpt_path : init_path));
   }
   if (resuming && files::exists(log_path)) {
     if (Status st = trim_log(log_path, meta.progress.episodes); !st.is_ok()) return failure(st);
@@ -125,7 +142,8 @@ int cmd_train_gpt2(const ArgV& argv) {
                 meta.source.c_str(), meta.spec.trainable_blocks, meta.spec.train_embeddings ? " and the embeddings" : "",
                 meta.spec.head.c_str(), policy.params().size(),
                 sc->path.c_str(), cfg.episodes, cfg.estimator.c_str(), cfg.lr,
-                static_cast<unsigned long long>(cfg.seed), resuming ? " (resumed)" : "");
+                static_cast<unsigned long long>(cfg.seed),
+                resuming ? " (resumed)" : init_path.empty() ? "" : (" (from " + init_path + ")").c_str());
   const auto t0 = std::chrono::steady_clock::now();
   const double wall0 = meta.progress.wall_s;
   double ret_sum = 0.0, succ_sum = 0.0;
