@@ -38,6 +38,8 @@ expect "gpt2 pretrain"   0 "wrote $pt" -- "$sq" gpt2 pretrain scenarios/horizont
 awk -F, 'NR == 2 { a = $5 } NR == 3 { b = $5 } END { exit !(NR == 3 && b < a) }' "$pt/pretrain.csv" && { echo "ok   pretrain held-out loss falls"; pass=$((pass + 1)); } || { echo "FAIL pretrain loss"; fails=$((fails + 1)); }
 expect "pretrain bad steps" 2 "--steps expects a positive integer" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --steps 0
 expect "train pretrained" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --lr 1e-3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/run"
+expect "train gpt2 stop-at" 0 "16 episodes, stopping at 8" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --episodes 16 --stop-at 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/stop"
+awk -F, 'END { exit $1 != 8 }' "$pt/stop/log.csv" && { echo "ok   gpt2 stop-at ends at 8"; pass=$((pass + 1)); } || { echo "FAIL gpt2 stop-at: log ends at $(tail -1 "$pt/stop/log.csv")"; fails=$((fails + 1)); }
 expect "eval lookahead"  0 "success" -- "$sq" eval scenarios/horizontal_cr.lua --policy lookahead --episodes 20
 expect "lookahead gym"   2 "plans under the paper rules only" -- "$sq" eval scenarios/horizontal_cr_gym.lua --policy lookahead --episodes 2
 expect "rollout no head" 2 "zero has no discrete action head" -- "$sq" eval scenarios/horizontal_cr.lua --policy rollout:zero --episodes 2
@@ -122,6 +124,17 @@ if [ "$trc" -eq 130 ] && grep -q "interrupted:" "$sig/a.log" &&
    cmp -s <(tail -n +3 "$sig/a/policy.ckpt") <(tail -n +3 "$sig/b/policy.ckpt"); then
   echo "ok   train SIGINT + resume"; pass=$((pass + 1))
 else echo "FAIL train SIGINT + resume: rc=$trc, $(cat "$sig/a.log")"; fails=$((fails + 1)); fi
+# --stop-at ends a run early (at the end of the update that reaches it: 32 x 64)
+# on the same schedules: resumed, it matches the
+# uninterrupted run too.
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/s" --episodes 4000 --eval-every 500 --eval-episodes 20 --stop-at 2000 >"$sig/s.log" 2>&1
+src=$?
+"$sq" train scenarios/horizontal_cr.lua --out "$sig/s" --episodes 4000 --eval-every 500 --eval-episodes 20 --resume >/dev/null 2>&1
+if [ "$src" -eq 0 ] && grep -q "4000 episodes, stopping at 2000" "$sig/s.log" && grep -q "^done: 2048 episodes" "$sig/s.log" &&
+   cmp -s <(tail -n +3 "$sig/s/policy.ckpt") <(tail -n +3 "$sig/b/policy.ckpt"); then
+  echo "ok   train --stop-at + resume"; pass=$((pass + 1))
+else echo "FAIL train --stop-at + resume: rc=$src, $(cat "$sig/s.log")"; fails=$((fails + 1)); fi
+expect "stop-at range" 2 "train --stop-at 9: expected 1..8 \\(--episodes\\)" -- "$sq" train scenarios/horizontal_cr.lua --out "$sig/r" --episodes 8 --stop-at 9
 rm -rf "$sig"
 
 finish

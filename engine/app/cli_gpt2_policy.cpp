@@ -138,10 +138,10 @@ int cmd_train_gpt2(const ArgV& argv) {
   const bool quiet = args->has("--quiet");
   if (!quiet)
     std::printf("training gpt2 (%s, %d trainable blocks%s, head %s, %zu trainable parameters) on %s: "
-                "%lld episodes, estimator %s, lr %g, seed %llu%s\n",
+                "%s, estimator %s, lr %g, seed %llu%s\n",
                 meta.source.c_str(), meta.spec.trainable_blocks, meta.spec.train_embeddings ? " and the embeddings" : "",
                 meta.spec.head.c_str(), policy.params().size(),
-                sc->path.c_str(), cfg.episodes, cfg.estimator.c_str(), cfg.lr,
+                sc->path.c_str(), episodes_text(cfg).c_str(), cfg.estimator.c_str(), cfg.lr,
                 static_cast<unsigned long long>(cfg.seed),
                 resuming ? " (resumed)" : init_path.empty() ? "" : (" (from " + init_path + ")").c_str());
   const auto t0 = std::chrono::steady_clock::now();
@@ -152,14 +152,14 @@ int cmd_train_gpt2(const ArgV& argv) {
                                            : cfg.episodes;
   // The bar counts episodes as they finish inside an update (a GPT-2 small
   // update takes minutes); its ETA covers the rest of this run.
-  ProgressBar bar("train gpt2", cfg.episodes, !quiet);
+  ProgressBar bar("train gpt2", cfg.end_episodes(), !quiet);
   InterruptGuard interrupt;
   auto note = [&](const char* f, auto... a) {
     char line[256];
     std::snprintf(line, sizeof line, f, a...);
     if (!quiet) bar.note(line);
   };
-  while (meta.progress.episodes < cfg.episodes) {
+  while (meta.progress.episodes < cfg.end_episodes()) {
     const auto u0 = std::chrono::steady_clock::now();
     const rl::UpdateStats st = trainer.update([&](long long done) {
       bar.update(meta.progress.episodes + done, "(update " + std::to_string(trainer.updates() + 1) + ")");
@@ -184,7 +184,7 @@ int cmd_train_gpt2(const ArgV& argv) {
     note("update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, %.2f s\n",
          meta.progress.updates, meta.progress.episodes, st.samples, st.mean_return, 100.0 * st.success_rate,
          static_cast<double>(st.entropy), update_s);
-    if (meta.progress.episodes >= next_eval || meta.progress.episodes >= cfg.episodes) {
+    if (meta.progress.episodes >= next_eval || meta.progress.episodes >= cfg.end_episodes()) {
       next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
       auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, sc->eval_seed, false});
       if (!ev) return failure(ev.status());

@@ -148,12 +148,12 @@ int cmd_train(const ArgV& argv) {
            "eval_success_rate,eval_mean_reward,eval_std_reward\n";
   const bool quiet = args->has("--quiet");
   if (!quiet)
-    std::printf("training %s on %s (%s rules): %lld episodes, estimator %s, %zu parameters, seed %llu%s\n",
+    std::printf("training %s on %s (%s rules): %s, estimator %s, %zu parameters, seed %llu%s\n",
                 policy->name().c_str(), sc->path.c_str(),
-                sc->train_env.rules == env::Rules::kGym ? "gym" : "paper", cfg.episodes,
+                sc->train_env.rules == env::Rules::kGym ? "gym" : "paper", episodes_text(cfg).c_str(),
                 cfg.estimator.c_str(), policy->params().size(),
                 static_cast<unsigned long long>(cfg.seed), resuming ? " (resumed)" : "");
-  ProgressBar bar("train", cfg.episodes, !quiet);
+  ProgressBar bar("train", cfg.end_episodes(), !quiet);
   const double wall0 = progress.wall_s;
   double ret_sum = 0.0, succ_sum = 0.0, ent = 0.0, gnorm = 0.0;
   long long interval_updates = 0;
@@ -161,7 +161,7 @@ int cmd_train(const ArgV& argv) {
   long long next_eval = cfg.eval_every > 0 ? (progress.episodes / cfg.eval_every + 1) * cfg.eval_every
                                            : cfg.episodes;
   InterruptGuard interrupt;
-  while (progress.episodes < cfg.episodes) {
+  while (progress.episodes < cfg.end_episodes()) {
     if (InterruptGuard::requested()) {
       bar.finish();
       if (Status s = rl::save_checkpoint(ckpt_path, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
@@ -187,7 +187,7 @@ int cmd_train(const ArgV& argv) {
     char extra[96];
     std::snprintf(extra, sizeof extra, "return %.3f", st.mean_return);
     bar.update(progress.episodes, extra);
-    if (progress.episodes < next_eval && progress.episodes < cfg.episodes) continue;
+    if (progress.episodes < next_eval && progress.episodes < cfg.end_episodes()) continue;
     next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
     auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, static_cast<uint64_t>(*validation_seed), false});
     if (!ev) return failure(ev.status());

@@ -6,7 +6,7 @@ const std::vector<std::string>& learner_flags() {
   static const std::vector<std::string> flags = {
       "--episodes", "--estimator", "--envs",    "--eval-every", "--eval-episodes", "--lr",
       "--lr-final", "--episodes-per-update",    "--gamma",      "--lambda",        "--entropy",
-      "--entropy-final", "--epochs", "--clip",  "--value-iters",   "--branch-fraction"};
+      "--entropy-final", "--epochs", "--clip",  "--value-iters",   "--branch-fraction", "--stop-at"};
   return flags;
 }
 
@@ -27,10 +27,11 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
   auto clip = args.get_double("--clip", cfg.clip);
   auto value_iters = args.get_int("--value-iters", cfg.value_iters);
   auto branch = args.get_double("--branch-fraction", cfg.branch_fraction);
+  auto stop_at = args.get_int("--stop-at", 0);
   for (const Status& st : {episodes.status(), envs_n.status(), eval_every.status(), eval_eps.status(), lr.status(),
                            lr_final.status(), seed.status(), per_update.status(), gamma.status(), lambda.status(),
                            entropy.status(), entropy_final.status(), epochs.status(), clip.status(),
-                           value_iters.status(), branch.status()})
+                           value_iters.status(), branch.status(), stop_at.status()})
     SQUAWK_RETURN_IF_ERROR(st);
   if (args.has("--lr-final")) {
     cfg.lr_final = *lr_final;
@@ -39,6 +40,7 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
   }
   if (args.has("--entropy-final")) cfg.entropy_final = *entropy_final;  // else the scenario's (none: constant)
   cfg.episodes = *episodes;
+  cfg.stop_at = *stop_at;
   cfg.num_envs = static_cast<int>(*envs_n);
   cfg.eval_every = *eval_every;
   cfg.eval_episodes = *eval_eps;
@@ -53,7 +55,14 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
   cfg.value_iters = static_cast<int>(*value_iters);
   cfg.branch_fraction = *branch;
   cfg.estimator = args.get_or("--estimator", cfg.estimator);
+  if (args.has("--stop-at") && *stop_at < 1) return Status::invalid("--stop-at expects a positive integer");
   return cfg.validate();
+}
+
+std::string episodes_text(const rl::TrainConfig& cfg) {
+  std::string s = std::to_string(cfg.episodes) + " episodes";
+  if (cfg.stop_at > 0) s += ", stopping at " + std::to_string(cfg.stop_at);
+  return s;
 }
 
 Status apply_mirror_flag(const Args& args, const env::HorizontalCrConfig& env, env::ObservationMirror& mirror) {

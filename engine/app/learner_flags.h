@@ -15,7 +15,7 @@ namespace squawk::app {
 
 // --episodes --estimator --envs --eval-every --eval-episodes --lr --lr-final
 // --episodes-per-update --gamma --lambda --entropy --entropy-final --epochs
-// --clip --value-iters (--seed, which apply_learner_flags also reads, comes
+// --clip --value-iters --branch-fraction --stop-at (--seed, which apply_learner_flags also reads, comes
 // with the VM flags, vm_options.h)
 const std::vector<std::string>& learner_flags();
 
@@ -25,6 +25,9 @@ const std::vector<std::string>& learner_flags();
 // scales lr_final by the same factor, so the schedule keeps its shape.
 // Error: a flag's value does not parse, or the result is out of range.
 Status apply_learner_flags(const Args& args, long long episodes_default, double lr_default, rl::TrainConfig& cfg);
+
+// "N episodes" for a run's header line, with ", stopping at S" under --stop-at.
+std::string episodes_text(const rl::TrainConfig& cfg);
 
 // --mirror (a switch): a mirror-symmetric policy (rl/mirror.h). Sets `mirror`
 // to env's observation mirror when the flag is given; keeps it otherwise.

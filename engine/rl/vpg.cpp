@@ -17,6 +17,9 @@ Status TrainConfig::validate() const {
     return Status::invalid("train estimator '" + estimator +
                            "': expected \"vpg\", \"improved\", \"ppo\" or \"vine\"");
   if (episodes < 1) return Status::invalid("train episodes must be at least 1");
+  if (stop_at < 0 || stop_at > episodes)
+    return Status::invalid("train --stop-at " + std::to_string(stop_at) + ": expected 1.." + std::to_string(episodes) +
+                           " (--episodes)");
   if (episodes_per_update < 1) return Status::invalid("train episodes_per_update must be at least 1");
   if (num_envs < 1) return Status::invalid("train num_envs must be at least 1");
   if (!(lr > 0.0) || !(lr_final > 0.0)) return Status::invalid("train lr and lr_final must be positive");

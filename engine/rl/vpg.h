@@ -52,7 +52,8 @@ namespace squawk::rl {
 
 struct TrainConfig {
   std::string estimator = "improved";  // "vpg" | "improved" | "ppo" | "vine"
-  long long episodes = 20000;          // [-] total training episodes
+  long long episodes = 20000;          // [-] total training episodes (the schedules span them)
+  long long stop_at = 0;               // [-] the run ends after this many (0: at `episodes`)
   int episodes_per_update = 32;        // [-] M
   int num_envs = 32;                   // [-] VecEnv slots
   double lr = 1e-3;                    // [-] Adam step size at the start ...
@@ -70,6 +71,9 @@ struct TrainConfig {
   long long eval_every = 2000;         // [-] episodes between evaluations (0 = none)
   long long eval_episodes = 200;       // [-] episodes per evaluation
   uint64_t seed = 0;
+
+  // Where this run ends: stop_at, or episodes when stop_at is 0.
+  long long end_episodes() const { return stop_at > 0 ? stop_at : episodes; }
 
   Status validate() const;
 };
