@@ -53,6 +53,8 @@ expect "resume mirror"     1 "with mirror symmetry, but this run asks for none" 
 expect "mirror gym"        2 "--mirror: mirror symmetry needs a constant ownship speed, but speed_cap 89" -- "$sq" train scenarios/horizontal_cr_gym.lua --mirror --episodes 8 --out "$mir/gym"
 expect "train gpt2 mirror" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --mirror --train-embeddings --blocks 2 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$mir/gpt2"
 expect "eval gpt2 mirror"  0 "head action, mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$mir/gpt2/checkpoint.ckpt" --episodes 2
+expect "table3 gpt2 mirror" 0 "^RL Fine-Tuned GPT-2, mirror-symmetric \\(beyond the paper\\),[01]\\." -- "$sq" table3 scenarios/horizontal_cr.lua --episodes 2
+expect "table3 mirror ckpt" 1 "mirror-symmetric \\(beyond the paper\\): cannot open 'no/such.ckpt'" -- "$sq" table3 scenarios/horizontal_cr.lua --episodes 2 --gpt2-mirror-checkpoint no/such.ckpt
 # --init: a new run starts from a checkpoint's policy (a step of 1e-12 leaves
 # its evaluation unchanged), counts from zero and may add the mirror.
 expect "train gpt2 init" 0 "\\(from $pt/run/checkpoint.ckpt\\)" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --init "$pt/run/checkpoint.ckpt" --lr 1e-12 --seed 3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/init"

@@ -57,7 +57,7 @@ std::string top_action(const rl::EvalResult& r) {
 }  // namespace
 
 int cmd_table3(const ArgV& argv) {
-  std::vector<std::string> values = {"--mlp-checkpoint", "--mlp-mirror-checkpoint", "--gpt2-checkpoint", "--episodes", "--envs", "--csv"};
+  std::vector<std::string> values = {"--mlp-checkpoint", "--mlp-mirror-checkpoint", "--gpt2-checkpoint", "--gpt2-mirror-checkpoint", "--episodes", "--envs", "--csv"};
   values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
   auto args = Args::parse(argv, with_vm_flags({values, {"--json"}}));
   if (!args) return usage_error("table3", args.status().message());
@@ -86,6 +86,8 @@ int cmd_table3(const ArgV& argv) {
   script::PolicyOptions tuned;
   tuned.checkpoint = args->get_or("--gpt2-checkpoint", paths::resource(kShippedGpt2Checkpoint));
   tuned.gpt2 = *popts;
+  script::PolicyOptions tuned_mirror = tuned;
+  tuned_mirror.checkpoint = args->get_or("--gpt2-mirror-checkpoint", paths::resource(script::kShippedGpt2MirrorCheckpoint));
   // The untrained GPT-2 is the fine-tuned one's base with a fresh head unless --model names another.
   script::PolicyOptions untrained = tuned;
   untrained.gpt2_fresh = true;
@@ -103,6 +105,7 @@ int cmd_table3(const ArgV& argv) {
       {"RL Trained Neural Network", "mlp", &mlp},
       {"RL Trained NN, mirror-symmetric (beyond the paper)", "mlp", &mirrored},
       {"RL Fine-Tuned GPT-2 LLM", "gpt2", &tuned},
+      {"RL Fine-Tuned GPT-2, mirror-symmetric (beyond the paper)", "gpt2", &tuned_mirror},
       {"Always -0.5 (slightly left)", "constant:-0.5", &mlp},
       {"Always +0.5 (slightly right)", "constant:0.5", &mlp},
       {"Never turning", "zero", &mlp},

@@ -51,6 +51,8 @@ inline constexpr const char* kShippedMlpCheckpoint = "models/horizontal_cr_mlp.c
 // The same network made mirror-symmetric (rl/mirror.h), trained with --mirror.
 inline constexpr const char* kShippedMlpMirrorCheckpoint = "models/horizontal_cr_mlp_mirror.ckpt";
 inline constexpr const char* kShippedGpt2Checkpoint = "models/horizontal_cr_gpt2_tiny.ckpt";
+// The GPT-2 policy made mirror-symmetric, fine-tuned with --mirror from the same pretrained model.
+inline constexpr const char* kShippedGpt2MirrorCheckpoint = "models/horizontal_cr_gpt2_tiny_mirror.ckpt";
 inline constexpr const char* kDefaultPromptFile = "prompts/observation.lua";
 
 struct Gpt2PolicyOptions {

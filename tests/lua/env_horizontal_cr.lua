@@ -40,6 +40,11 @@ check_eq(g.episodes, 4)
 local gg = squawk.env.evaluate{ scenario = "scenarios/horizontal_cr.lua", policy = "gpt2", episodes = 20, seed = 3, greedy = true }
 check(gg.most_frequent_share < 0.8, "shipped gpt2 greedy share " .. gg.most_frequent_share)
 check(gg.actions["0"] > 0 and gg.actions["0.5"] > 0 and gg.actions["-0.5"] > 0, "turns both ways and holds")
+-- So does the mirror-symmetric one (table3's row beyond the paper).
+local gm = squawk.env.evaluate{ scenario = "scenarios/horizontal_cr.lua", policy = "gpt2", greedy = true,
+  checkpoint = "models/horizontal_cr_gpt2_tiny_mirror.ckpt", episodes = 20, seed = 3 }
+check(gm.most_frequent_share < 0.8, "shipped mirror gpt2 greedy share " .. gm.most_frequent_share)
+check(gm.actions["0"] > 0 and gm.actions["0.5"] > 0 and gm.actions["-0.5"] > 0, "mirror gpt2 turns both ways and holds")
 local bad_ok, bad = pcall(squawk.env.evaluate, { scenario = "scenarios/horizontal_cr.lua", policy = "constant:3" })
 check(not bad_ok and tostring(bad):find("%[%-1, 1%]"), tostring(bad))
 local ok, err = pcall(squawk.env.new, "no/such.lua")
