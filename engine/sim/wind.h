@@ -19,8 +19,11 @@
 #include <vector>
 
 #include "core/status.h"
+#include "core/units.h"
 
 namespace squawk::sim {
+
+constexpr double kWindMinAlt = 50.0 * units::kFt;  // [m] wind acts above this altitude
 
 struct WindSample {
   double alt;      // [m]
