@@ -51,6 +51,13 @@ Status check_positive(std::string_view who, const char* what, double v) {
   return Status::ok();
 }
 
+// Sets field to v when v is a positive number; leaves it unchanged otherwise.
+Status assign_positive(std::string_view who, const char* what, double v, double& field) {
+  SQUAWK_RETURN_IF_ERROR(check_positive(who, what, v));
+  field = v;
+  return Status::ok();
+}
+
 // Speeds may be 0 (a parked or holding aircraft, as BlueSky allows), not negative.
 Status check_speed(std::string_view who, double v) {
   if (!std::isfinite(v) || v < 0.0) {
@@ -441,24 +448,13 @@ void Simulation::set_cd(bool on) {
   }
 }
 
-Status Simulation::set_rpz(double rpz_m) {
-  SQUAWK_RETURN_IF_ERROR(check_positive("ZONER", "radius [m]", rpz_m));
-  cds_.rpz = rpz_m;
-  return Status::ok();
-}
-Status Simulation::set_hpz(double hpz_m) {
-  SQUAWK_RETURN_IF_ERROR(check_positive("ZONEDH", "half height [m]", hpz_m));
-  cds_.hpz = hpz_m;
-  return Status::ok();
-}
+Status Simulation::set_rpz(double rpz_m) { return assign_positive("ZONER", "radius [m]", rpz_m, cds_.rpz); }
+Status Simulation::set_hpz(double hpz_m) { return assign_positive("ZONEDH", "half height [m]", hpz_m, cds_.hpz); }
 Status Simulation::set_dtlook(double dtlook_s) {
-  SQUAWK_RETURN_IF_ERROR(check_positive("DTLOOK", "look-ahead time [s]", dtlook_s));
-  cds_.dtlook = dtlook_s;
-  return Status::ok();
+  return assign_positive("DTLOOK", "look-ahead time [s]", dtlook_s, cds_.dtlook);
 }
 Status Simulation::set_asas_dt(double asas_dt_s) {
-  SQUAWK_RETURN_IF_ERROR(check_positive("ASAS", "update interval [s]", asas_dt_s));
-  cds_.asas_dt = asas_dt_s;
+  SQUAWK_RETURN_IF_ERROR(assign_positive("ASAS", "update interval [s]", asas_dt_s, cds_.asas_dt));
   next_asas_t_ = simt();
   return Status::ok();
 }
