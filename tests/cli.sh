@@ -37,6 +37,11 @@ pt="$tmp/pretrained"
 expect "gpt2 pretrain"   0 "wrote $pt" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --episodes 8 --steps 6 --log-every 3 --holdout 16
 awk -F, 'NR == 2 { a = $5 } NR == 3 { b = $5 } END { exit !(NR == 3 && b < a) }' "$pt/pretrain.csv" && { echo "ok   pretrain held-out loss falls"; pass=$((pass + 1)); } || { echo "FAIL pretrain loss"; fails=$((fails + 1)); }
 expect "pretrain bad steps" 2 "--steps expects a positive integer" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --steps 0
+# Imitation (a labelled experiment): the pretrained model clones the shipped mirror MLP; eval reads the result
+expect "gpt2 imitate"    0 "epoch 2: held-out agreement" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua "$pt/imitate.ckpt" --model "$pt" --mirror --train-embeddings --blocks 2 --episodes 4 --epochs 2 --batch 8 --holdout 2 --envs 4
+expect "eval imitation"  0 "mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/imitate.ckpt" --episodes 2
+expect "imitate bad teacher" 1 "nope.ckpt" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua "$pt/x.ckpt" --model "$pt" --teacher "$tmp/nope.ckpt"
+expect "imitate no out"  2 "imitate expects SCENARIO.lua OUT.ckpt" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua
 expect "train pretrained" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --lr 1e-3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/run"
 expect "train gpt2 stop-at" 0 "16 episodes, stopping at 8" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --episodes 16 --stop-at 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/stop"
 awk -F, 'END { exit $1 != 8 }' "$pt/stop/log.csv" && { echo "ok   gpt2 stop-at ends at 8"; pass=$((pass + 1)); } || { echo "FAIL gpt2 stop-at: log ends at $(tail -1 "$pt/stop/log.csv")"; fails=$((fails + 1)); }

@@ -1,5 +1,5 @@
 // squawk gpt2 info | generate | logits | bench | train-bpe | init (pretrain:
-// cli_gpt2_pretrain.cpp).
+// cli_gpt2_pretrain.cpp; imitate: cli_gpt2_imitate.cpp).
 #include <algorithm>
 #include <cstdio>
 
@@ -205,12 +205,13 @@ int cmd_gpt2(const ArgV& argv) {
       return kExitOk;
     }
   if (!argv.empty() && argv[0] == "pretrain") return cmd_gpt2_pretrain(ArgV(argv.begin() + 1, argv.end()));
+  if (!argv.empty() && argv[0] == "imitate") return cmd_gpt2_imitate(ArgV(argv.begin() + 1, argv.end()));
   auto a = Args::parse(argv, {{"--max-tokens", "--top-k", "--seed", "--seq", "--batch", "--threads",
                                "--seconds", "--merges", "--layers", "--heads", "--width", "--context",
                                "--vocab"},
                               {"--json", "--tiny"}});
   if (!a) return usage_error("gpt2", a.status().message());
-  if (a->positional().empty()) return usage_error("gpt2", "missing action (info, generate, logits, bench, train-bpe, init, pretrain)");
+  if (a->positional().empty()) return usage_error("gpt2", "missing action (info, generate, logits, bench, train-bpe, init, pretrain, imitate)");
   const std::string& what = a->positional()[0];
   if (what == "info") return info(*a);
   if (what == "generate") return generate(*a);

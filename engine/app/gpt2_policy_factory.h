@@ -31,5 +31,7 @@ bool wants_gpt2(const ArgV& argv);
 int cmd_train_gpt2(const ArgV& argv);
 // squawk gpt2 pretrain SCENARIO.lua OUT_DIR (argv after "pretrain").
 int cmd_gpt2_pretrain(const ArgV& argv);
+// squawk gpt2 imitate SCENARIO.lua OUT.ckpt (argv after "imitate"; cli_gpt2_imitate.cpp).
+int cmd_gpt2_imitate(const ArgV& argv);
 
 }  // namespace squawk::app

@@ -66,7 +66,10 @@ const std::vector<Subcommand>& subcommands() {
        "       squawk gpt2 init OUT_DIR [--vocab DIR] [--layers N] [--heads N] [--width N]\n"
        "                        [--context N] [--seed N]\n"
        "       squawk gpt2 pretrain SCENARIO.lua OUT_DIR [--prompt FILE] [--episodes N]\n"
-       "                        [--steps N] [--batch B] [--lr X] [--seed N] [--holdout N]\n\n"
+       "                        [--steps N] [--batch B] [--lr X] [--seed N] [--holdout N]\n"
+       "       squawk gpt2 imitate SCENARIO.lua OUT.ckpt [--teacher MLP.ckpt] [--model DIR]\n"
+       "                        [--mirror] [--train-embeddings] [--blocks K] [--episodes N]\n"
+       "                        [--rounds N] [--epochs N] [--batch B] [--lr X] [--seed N]\n\n"
        "DIR is a Hugging Face GPT-2 folder (config.json, model.safetensors in F32,\n"
        "F16 or BF16, vocab.json + merges.txt) or the word `tiny`: a random 2-layer,\n"
        "64-wide model over the byte-level vocabulary, seeded by --seed (default 0).\n\n"
@@ -93,7 +96,17 @@ const std::vector<Subcommand>& subcommands() {
        "              held out), --steps 3000 Adam steps of --batch 16 prompts at\n"
        "              --lr 1e-3, no action labels; writes a GPT-2 folder (with the\n"
        "              policy's BPE) and OUT_DIR/pretrain.csv; fine-tune it with\n"
-       "              squawk train --policy gpt2 --model OUT_DIR --train-embeddings\n",
+       "              squawk train --policy gpt2 --model OUT_DIR --train-embeddings\n"
+       "  imitate     a labelled experiment, not RL fine-tuning: behaviour cloning\n"
+       "              of a trained MLP (--teacher, default the mirror-symmetric one\n"
+       "              in models/) by the GPT-2 prompt policy of --model (fresh head).\n"
+       "              Round 1 flies the MLP over --episodes training episodes (default\n"
+       "              2000); each further round (--rounds, default 1) flies the\n"
+       "              policy (DAgger). Every decision is labelled with the MLP's\n"
+       "              greedy action; after each round --epochs passes (default 8) of\n"
+       "              cross-entropy in batches of --batch (64), Adam at --lr (3e-4).\n"
+       "              Prints the agreement on --holdout 200 held-out MLP episodes\n"
+       "              after each epoch and writes OUT.ckpt (squawk eval reads it)\n",
        cmd_gpt2},
       {"render", "render EPISODE.jsonl|SCENARIO.lua|SCENARIO.scn   draw an episode or traffic as SVG",
        "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"

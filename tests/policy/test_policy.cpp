@@ -1,5 +1,5 @@
 // GPT-2 prompt policy: template rendering, prefix cache, batching, gradients,
-// checkpoints, and `squawk train --policy gpt2 --resume` after a kill.
+// imitation, checkpoints, and `squawk train --policy gpt2 --resume` after a kill.
 #include <doctest/doctest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -20,6 +20,7 @@
 #include "rl/mirror.h"
 #include "rl/prompt_checkpoint.h"
 #include "rl/prompt_policy.h"
+#include "rl/imitation.h"
 #include "rl/vpg.h"
 #include "env/vec_env.h"
 #include "script/prompt_renderer.h"
@@ -298,6 +299,59 @@ TEST_CASE("a mirror-symmetric prompt policy reads the mirror image's prompt and 
         worst = std::max(worst, std::fabs(static_cast<double>(z[i]) - z[n * 5 + i - i % 5 + 4 - i % 5]));
       CHECK((mirror ? worst < 1e-4 : worst > 1e-3));
     }
+}
+
+namespace {
+// A teacher with the paper's five classes that always holds its heading (class 2).
+class HoldTeacher : public rl::Policy {
+ public:
+  explicit HoldTeacher(bool discrete) : values_(discrete ? std::vector<double>{-1, -0.5, 0, 0.5, 1} : std::vector<double>{}) {}
+  std::string name() const override { return "hold"; }
+  int obs_size() const override { return 28; }
+  void act(std::span<const float>, int n, std::span<const int>, Rng&, bool, std::span<rl::ActionSample> out) override {
+    for (int r = 0; r < n; ++r) out[static_cast<size_t>(r)] = {values_.empty() ? -1 : 2, 0.0f};
+  }
+  std::span<const double> action_values() const override { return values_; }
+
+ private:
+  std::vector<double> values_;
+};
+
+int greedy_holds(rl::PromptPolicy& p, const std::vector<float>& rows, int n) {
+  std::vector<rl::ActionSample> a(static_cast<size_t>(n));
+  const std::vector<int> slots(static_cast<size_t>(n), 0);
+  Rng rng(1);
+  p.act(rows, n, slots, rng, true, a);
+  return static_cast<int>(std::count_if(a.begin(), a.end(), [](const rl::ActionSample& s) { return s.index == 2; }));
+}
+}  // namespace
+
+TEST_CASE("imitation clones the teacher's greedy class into the prompt policy, round after round") {
+  auto student = tiny_policy("action", 2);
+  const int n = 16;
+  const std::vector<float> rows = flat_rows(n);
+  REQUIRE(greedy_holds(*student, rows, n) < n);  // not already the teacher
+  HoldTeacher teacher(true);
+  auto envs = env::VecEnv::make(env::HorizontalCrConfig{}, 2);
+  REQUIRE(envs);
+  rl::ImitationConfig c{.episodes = 2, .rounds = 2, .epochs = 3, .batch = 8, .lr = 3e-3f, .holdout = 1};
+  std::vector<rl::ImitationEpoch> seen;
+  REQUIRE(rl::imitate(*student, teacher, *envs, c, [&](const rl::ImitationEpoch& e) {
+            seen.push_back(e);
+            return Status::ok();
+          }).is_ok());
+  REQUIRE(seen.size() == 6);
+  CHECK(seen.front().teacher_flew);
+  CHECK_FALSE(seen.back().teacher_flew);
+  CHECK(seen.back().decisions > seen.front().decisions);
+  CHECK(seen.back().agreement == 1.0);
+  CHECK(greedy_holds(*student, rows, n) == n);
+
+  HoldTeacher continuous(false);
+  Status st = rl::imitate(*student, continuous, *envs, c, [](const rl::ImitationEpoch&) { return Status::ok(); });
+  CHECK(st.message().find("no discrete classes") != std::string::npos);
+  st = rl::imitate(*student, teacher, *envs, c, [](const rl::ImitationEpoch&) { return Status::io_error("disk full"); });
+  CHECK(st.message() == "disk full");
 }
 
 TEST_CASE("gpt2 policy checkpoints round-trip and reject damaged files") {

@@ -1,0 +1,123 @@
+#include "rl/imitation.h"
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+#include "nn/adam.h"
+
+namespace squawk::rl {
+
+namespace {
+
+struct Labelled {
+  std::vector<float> obs;  // [N, obs_size]
+  std::vector<int> label;  // [N]
+};
+
+// Flies `count` episodes from `first` of `seed` with `pilot` (greedy or
+// sampled), appending every decision with the teacher's greedy class; returns
+// the flights' success rate.
+Result<double> fly(env::VecEnv& envs, Policy& pilot, bool greedy, Policy& teacher, uint64_t seed, uint64_t first,
+                   uint64_t count, Rng& rng, Labelled& out) {
+  envs.start(seed, first, count);
+  envs.completed().clear();
+  std::vector<ActionSample> taught, flown;
+  std::vector<double> actions, rewards;
+  std::vector<uint8_t> dones;
+  while (!envs.finished()) {
+    const int n = static_cast<int>(envs.waiting().size());
+    const std::span<const float> obs = envs.observations();
+    taught.assign(static_cast<size_t>(n), {});
+    teacher.act(obs, n, envs.waiting(), rng, true, taught);
+    if (&pilot == &teacher) {
+      flown = taught;
+    } else {
+      flown.assign(static_cast<size_t>(n), {});
+      pilot.act(obs, n, envs.waiting(), rng, greedy, flown);
+    }
+    SQUAWK_RETURN_IF_ERROR(teacher.error());
+    SQUAWK_RETURN_IF_ERROR(pilot.error());
+    out.obs.insert(out.obs.end(), obs.begin(), obs.end());
+    actions.resize(static_cast<size_t>(n));
+    for (int r = 0; r < n; ++r) {
+      out.label.push_back(taught[static_cast<size_t>(r)].index);
+      actions[static_cast<size_t>(r)] = flown[static_cast<size_t>(r)].value;
+    }
+    rewards.assign(static_cast<size_t>(n), 0.0);
+    dones.assign(static_cast<size_t>(n), 0);
+    envs.step(actions, rewards, dones);
+  }
+  const auto& done = envs.completed();
+  const auto ok = std::count_if(done.begin(), done.end(), [](const env::EpisodeStats& e) { return e.success; });
+  return done.empty() ? 0.0 : static_cast<double>(ok) / static_cast<double>(done.size());
+}
+
+Status check_pair(Policy& student, Policy& teacher) {
+  if (!student.trainable()) return Status::invalid("imitation: the student " + student.name() + " is not trainable");
+  const auto s = student.action_values(), t = teacher.action_values();
+  if (t.empty())
+    return Status::invalid("imitation: the teacher " + teacher.name() +
+                           " has no discrete classes (expected a categorical head, e.g. an MLP checkpoint)");
+  if (!std::equal(s.begin(), s.end(), t.begin(), t.end()))
+    return Status::invalid("imitation: the teacher " + teacher.name() + " and the student " + student.name() +
+                           " have different action classes");
+  return check_obs_size(student, teacher.obs_size());
+}
+
+}  // namespace
+
+Status imitate(Policy& student, Policy& teacher, env::VecEnv& envs, const ImitationConfig& c,
+               const std::function<Status(const ImitationEpoch&)>& on_epoch) {
+  SQUAWK_RETURN_IF_ERROR(check_pair(student, teacher));
+  if (c.episodes < 1 || c.rounds < 1 || c.epochs < 1 || c.batch < 1 || c.holdout < 1 || !(c.lr > 0.0f))
+    return Status::invalid("imitation: episodes, rounds, epochs, batch and holdout must be >= 1 and lr > 0");
+  if (c.holdout_seed == c.seed) return Status::invalid("imitation: the held-out seed must differ from the training seed");
+  const auto d = static_cast<size_t>(teacher.obs_size());
+  Rng rng(c.seed);
+  Labelled held, data;
+  SQUAWK_RETURN_IF_ERROR(
+      fly(envs, teacher, true, teacher, c.holdout_seed, 0, static_cast<uint64_t>(c.holdout), rng, held).status());
+  const int n_held = static_cast<int>(held.label.size());
+  nn::Adam adam(student.params(), student.grads(), {.lr = c.lr, .grad_clip = c.grad_clip});
+  std::vector<float> batch_obs(static_cast<size_t>(c.batch) * d), coef(static_cast<size_t>(c.batch),
+                                                                       1.0f / static_cast<float>(c.batch));
+  std::vector<ActionSample> batch_act(static_cast<size_t>(c.batch)), held_act(static_cast<size_t>(n_held));
+  const std::vector<int> no_slots(static_cast<size_t>(std::max(n_held, c.batch)), 0);
+  for (int round = 0; round < c.rounds; ++round) {
+    const bool teacher_flies = round == 0;
+    SQUAWK_ASSIGN_OR_RETURN(double success,
+                            fly(envs, teacher_flies ? teacher : student, false, teacher, c.seed,
+                                static_cast<uint64_t>(round) * static_cast<uint64_t>(c.episodes),
+                                static_cast<uint64_t>(c.episodes), rng, data));
+    const int n = static_cast<int>(data.label.size());
+    std::vector<int> order(static_cast<size_t>(n));
+    for (int epoch = 0; epoch < c.epochs; ++epoch) {
+      std::iota(order.begin(), order.end(), 0);
+      for (int i = n - 1; i > 0; --i) std::swap(order[static_cast<size_t>(i)], order[static_cast<size_t>(rng.uniform_int(0, i))]);
+      for (int b0 = 0; b0 + c.batch <= n; b0 += c.batch) {
+        for (int r = 0; r < c.batch; ++r) {
+          const auto row = static_cast<size_t>(order[static_cast<size_t>(b0 + r)]);
+          std::copy_n(data.obs.begin() + static_cast<long>(row * d), d, batch_obs.begin() + static_cast<long>(r * d));
+          ActionSample& a = batch_act[static_cast<size_t>(r)];
+          a.index = data.label[row];
+          a.value = static_cast<float>(student.action_values()[static_cast<size_t>(a.index)]);
+        }
+        std::fill(student.grads().begin(), student.grads().end(), 0.0f);
+        student.accumulate_gradient(batch_obs, c.batch, batch_act, coef, 0.0f);
+        adam.step();
+        SQUAWK_RETURN_IF_ERROR(student.error());
+      }
+      student.act(held.obs, n_held, std::span<const int>(no_slots).first(static_cast<size_t>(n_held)), rng, true,
+                  held_act);
+      SQUAWK_RETURN_IF_ERROR(student.error());
+      int agree = 0;
+      for (int r = 0; r < n_held; ++r) agree += held_act[static_cast<size_t>(r)].index == held.label[static_cast<size_t>(r)];
+      SQUAWK_RETURN_IF_ERROR(on_epoch({round, epoch, teacher_flies, success, n,
+                                       n_held > 0 ? static_cast<double>(agree) / n_held : 0.0}));
+    }
+  }
+  return Status::ok();
+}
+
+}  // namespace squawk::rl
