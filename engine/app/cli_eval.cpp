@@ -195,18 +195,16 @@ int cmd_eval(const ArgV& argv) {
   const std::string kind = args->get_or("--policy", "mlp");
   if (args->has("--checkpoint") && kind != "mlp" && kind != "gpt2")
     return usage_error("eval", "--checkpoint goes with --policy mlp or gpt2");
-  auto vo = vm_options(*args);
-  if (!vo) return usage_error("eval", vo.status().message());
-  vo->out_dir.clear();
-  auto sc = script::load_scenario(args->positional()[0], *vo);
-  if (!sc) return failure(sc.status());
-  auto req = eval_request(*args, *sc);
+  script::VmOptions vo;
+  script::Scenario sc;
+  if (int rc = load_episode_scenario(*args, "eval", vo, sc); rc != kExitOk) return rc;
+  auto req = eval_request(*args, sc);
   if (!req) return usage_error("eval", req.status().message());
   auto opts = policy_options(*args, req->seed);
   if (!opts) return usage_error("eval", opts.status().message());
-  auto envs = env::VecEnv::make(sc->eval_env, req->envs);
+  auto envs = env::VecEnv::make(sc.eval_env, req->envs);
   if (!envs) return failure(envs.status());
-  auto made = script::make_policy(kind, *sc, *envs, *opts, *vo);
+  auto made = script::make_policy(kind, sc, *envs, *opts, vo);
   if (!made) {
     if (made.status().code() == Code::kInvalidArgument && made.status().message().rfind("policy '", 0) == 0)
       return usage_error("eval", "--" + made.status().message());
@@ -214,7 +212,7 @@ int cmd_eval(const ArgV& argv) {
   }
   if (auto* pp = dynamic_cast<rl::PromptPolicy*>(made->policy.get()); pp && args->has("--chunk"))
     pp->set_chunk_rows(opts->gpt2.spec.chunk_rows);
-  return run_eval(*made, *envs, *sc, *req, *vo);
+  return run_eval(*made, *envs, sc, *req, vo);
 }
 
 }  // namespace squawk::app

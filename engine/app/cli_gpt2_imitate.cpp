@@ -45,33 +45,31 @@ int cmd_gpt2_imitate(const ArgV& argv) {
   cfg.lr = static_cast<float>(*lr);
   auto popts = gpt2_options(*args);
   if (!popts) return usage_error("gpt2", popts.status().message());
-  auto vo = vm_options(*args);
-  if (!vo) return usage_error("gpt2", vo.status().message());
-  vo->out_dir.clear();
-  auto sc = script::load_scenario(args->positional()[0], *vo);
-  if (!sc) return failure(sc.status());
-  if (Status st = apply_mirror_flag(*args, sc->train_env, popts->spec.mirror); !st.is_ok())
+  script::VmOptions vo;
+  script::Scenario sc;
+  if (int rc = load_episode_scenario(*args, "gpt2", vo, sc); rc != kExitOk) return rc;
+  if (Status st = apply_mirror_flag(*args, sc.train_env, popts->spec.mirror); !st.is_ok())
     return usage_error("gpt2", "--mirror: " + st.message());
-  auto envs = env::VecEnv::make(sc->train_env, static_cast<int>(v[6]));
+  auto envs = env::VecEnv::make(sc.train_env, static_cast<int>(v[6]));
   if (!envs) return failure(envs.status());
   script::PolicyOptions to;
   to.checkpoint = args->get_or("--teacher", script::kShippedMlpMirrorCheckpoint);
-  auto teacher = script::make_policy("mlp", *sc, *envs, to, *vo);
+  auto teacher = script::make_policy("mlp", sc, *envs, to, vo);
   if (!teacher) return failure(teacher.status());
-  auto g = make_gpt2_policy(*popts, sc->train_env, *vo);
+  auto g = make_gpt2_policy(*popts, sc.train_env, vo);
   if (!g) return failure(g.status());
   rl::PromptPolicy& student = *g->policy;
   rl::PromptCheckpoint& meta = g->meta;
   meta.progress.seed = cfg.seed;
   meta.progress.estimator = "imitation";
-  meta.progress.scenario = sc->path;
+  meta.progress.scenario = sc.path;
   const std::string out = args->positional()[1];
   const bool quiet = args->has("--quiet");
   if (!quiet)
     std::printf("imitation (a labelled experiment, not RL fine-tuning): gpt2 (%s, %zu trainable parameters%s) "
                 "clones %s on %s; %d round(s) of %lld episodes, %d epochs of batches of %d, lr %g, seed %llu\n",
                 meta.source.c_str(), student.params().size(), meta.spec.mirror.empty() ? "" : ", mirror-symmetric",
-                teacher->label.c_str(), sc->path.c_str(), cfg.rounds, cfg.episodes, cfg.epochs, cfg.batch,
+                teacher->label.c_str(), sc.path.c_str(), cfg.rounds, cfg.episodes, cfg.epochs, cfg.batch,
                 static_cast<double>(cfg.lr), static_cast<unsigned long long>(cfg.seed));
   Status st = rl::imitate(student, *teacher->policy, *envs, cfg, [&](const rl::ImitationEpoch& e) -> Status {
     if (!quiet)

@@ -79,11 +79,9 @@ int cmd_gpt2_pretrain(const ArgV& argv) {
   const auto seed = static_cast<uint64_t>(v[3]);
   auto lr = args->get_double("--lr", 1e-3);
   if (!lr || !(*lr > 0.0 && *lr < 1.0)) return usage_error("gpt2", "--lr expects a number in (0, 1)");
-  auto vo = vm_options(*args);
-  if (!vo) return usage_error("gpt2", vo.status().message());
-  vo->out_dir.clear();
-  auto sc = script::load_scenario(args->positional()[0], *vo);
-  if (!sc) return failure(sc.status());
+  script::VmOptions vo;
+  script::Scenario sc;
+  if (int rc = load_episode_scenario(*args, "gpt2", vo, sc); rc != kExitOk) return rc;
   const std::string out = args->positional()[1];
   const bool quiet = args->has("--quiet");
 
@@ -92,11 +90,11 @@ int cmd_gpt2_pretrain(const ArgV& argv) {
   po.prompt = args->get_or("--prompt", "");
   po.spec.trainable_blocks = gpt2::Config::tiny().n_layer;
   po.spec.train_embeddings = true;
-  auto g = script::make_gpt2_policy(po, sc->train_env, *vo);
+  auto g = script::make_gpt2_policy(po, sc.train_env, vo);
   if (!g) return failure(g.status());
   rl::PromptPolicy& policy = *g->policy;
   gpt2::Model& model = policy.model();
-  auto envs = env::VecEnv::make(sc->train_env, 16);
+  auto envs = env::VecEnv::make(sc.train_env, 16);
   if (!envs) return failure(envs.status());
   auto corpus = prompt_corpus(policy, *envs, episodes, seed);
   if (!corpus) return failure(corpus.status());

@@ -64,18 +64,16 @@ int cmd_table3(const ArgV& argv) {
   if (args->positional().size() != 1) return usage_error("table3", "expected exactly one SCENARIO.lua");
   auto popts = gpt2_options(*args);
   if (!popts) return usage_error("table3", popts.status().message());
-  auto vo = vm_options(*args);
-  if (!vo) return usage_error("table3", vo.status().message());
-  vo->out_dir.clear();
-  auto sc = script::load_scenario(args->positional()[0], *vo);
-  if (!sc) return failure(sc.status());
+  script::VmOptions vo;
+  script::Scenario sc;
+  if (int rc = load_episode_scenario(*args, "table3", vo, sc); rc != kExitOk) return rc;
   auto episodes = args->get_int("--episodes", 1000);
-  auto seed = args->get_int("--seed", static_cast<long long>(sc->eval_seed));
+  auto seed = args->get_int("--seed", static_cast<long long>(sc.eval_seed));
   auto envs_n = args->get_int("--envs", 64);
   for (const Status& st : {episodes.status(), seed.status(), envs_n.status()})
     if (!st.is_ok()) return usage_error("table3", st.message());
   if (*episodes < 1 || *envs_n < 1) return usage_error("table3", "--episodes and --envs must be >= 1");
-  auto envs = env::VecEnv::make(sc->eval_env, static_cast<int>(*envs_n));
+  auto envs = env::VecEnv::make(sc.eval_env, static_cast<int>(*envs_n));
   if (!envs) return failure(envs.status());
 
   script::PolicyOptions mlp;
@@ -115,11 +113,11 @@ int cmd_table3(const ArgV& argv) {
       {"Trained NN + one rollout step (reads the simulator)", "rollout:mlp", &mlp}};
   std::vector<Row> rows;
   for (const auto& [name, kind, opts] : agents) {
-    auto made = script::make_policy(kind, *sc, *envs, *opts, *vo);
+    auto made = script::make_policy(kind, sc, *envs, *opts, vo);
     if (!made) return failure(made.status().with_context(name));
     rl::Policy& policy = *made->policy;
     if (Status st = rl::check_obs_size(policy, envs->obs_size()); !st.is_ok()) return failure(st.with_context(name));
-    if (std::string w = trained_elsewhere(*made, *sc, *vo); !w.empty())
+    if (std::string w = trained_elsewhere(*made, sc, vo); !w.empty())
       std::fprintf(stderr, "table3: warning: %s: %s\n", name.c_str(), w.c_str());
     Row row{name, kind, {}, {}};
     for (bool greedy : {false, true}) {
@@ -137,10 +135,10 @@ int cmd_table3(const ArgV& argv) {
     }
     rows.push_back(row);
   }
-  if (Status rs = sc->reward_error(); !rs.is_ok()) return failure(rs);
+  if (Status rs = sc.reward_error(); !rs.is_ok()) return failure(rs);
 
   if (args->has("--json")) {
-    nlohmann::json out = {{"scenario", sc->path}, {"episodes", *episodes}, {"seed", *seed}, {"rows", nlohmann::json::array()}};
+    nlohmann::json out = {{"scenario", sc.path}, {"episodes", *episodes}, {"seed", *seed}, {"rows", nlohmann::json::array()}};
     for (const Row& r : rows)
       out["rows"].push_back({{"agent", r.agent},
                              {"policy", r.kind},
@@ -156,7 +154,7 @@ int cmd_table3(const ArgV& argv) {
   } else {
     std::printf("Table 3 on %s: %lld evaluation episodes, seed %lld, sampled actions; last column: the "
                 "most frequent greedy action and its share of the greedy decisions\n\n",
-                sc->path.c_str(), *episodes, *seed);
+                sc.path.c_str(), *episodes, *seed);
     std::printf("| Agent | Success Rate | Average Reward | Standard Deviation | Top greedy action |\n"
                 "|---|---|---|---|---|\n");
     for (const Row& r : rows)

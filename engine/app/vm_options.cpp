@@ -61,4 +61,16 @@ Result<std::string> named_scenario(const Args& args, script::VmOptions& o) {
   return path;
 }
 
+int load_episode_scenario(const Args& args, const std::string& subcommand, script::VmOptions& vm,
+                          script::Scenario& sc) {
+  auto vo = vm_options(args);
+  if (!vo) return usage_error(subcommand, vo.status().message());
+  vm = std::move(*vo);
+  vm.out_dir.clear();
+  auto loaded = script::load_scenario(args.positional()[0], vm);
+  if (!loaded) return failure(loaded.status());
+  sc = std::move(*loaded);
+  return kExitOk;
+}
+
 }  // namespace squawk::app

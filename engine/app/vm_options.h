@@ -2,6 +2,7 @@
 #pragma once
 
 #include "app/cli.h"
+#include "script/scenario.h"
 #include "script/vm.h"
 
 namespace squawk::app {
@@ -16,5 +17,11 @@ Result<script::VmOptions> vm_options(const Args& args);
 // none or an empty one was given), kNotFound when the file is absent. The file's folder
 // becomes readable in `o` (the user named it, so its siblings may be IC'd).
 Result<std::string> named_scenario(const Args& args, script::VmOptions& o);
+// The scenario file positional()[0] of a subcommand that runs episodes: `vm`
+// from the flags with no writable folder (loading a scenario writes nothing),
+// then the strict loader into `sc`. Returns 0, or the exit code after printing
+// the error: usage (2) for bad flags, failure (1) for the file.
+int load_episode_scenario(const Args& args, const std::string& subcommand, script::VmOptions& vm,
+                          script::Scenario& sc);
 
 }  // namespace squawk::app
