@@ -6,7 +6,8 @@ const std::vector<std::string>& learner_flags() {
   static const std::vector<std::string> flags = {
       "--episodes", "--estimator", "--envs",    "--eval-every", "--eval-episodes", "--lr",
       "--lr-final", "--episodes-per-update",    "--gamma",      "--lambda",        "--entropy",
-      "--entropy-final", "--epochs", "--clip",  "--value-iters",   "--branch-fraction", "--stop-at"};
+      "--entropy-final", "--epochs", "--minibatches", "--clip", "--value-iters", "--branch-fraction",
+      "--stop-at"};
   return flags;
 }
 
@@ -24,14 +25,15 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
   auto entropy = args.get_double("--entropy", cfg.entropy_coef);
   auto entropy_final = args.get_double("--entropy-final", 0.0);
   auto epochs = args.get_int("--epochs", cfg.epochs);
+  auto minibatches = args.get_int("--minibatches", cfg.minibatches);
   auto clip = args.get_double("--clip", cfg.clip);
   auto value_iters = args.get_int("--value-iters", cfg.value_iters);
   auto branch = args.get_double("--branch-fraction", cfg.branch_fraction);
   auto stop_at = args.get_int("--stop-at", 0);
   for (const Status& st : {episodes.status(), envs_n.status(), eval_every.status(), eval_eps.status(), lr.status(),
                            lr_final.status(), seed.status(), per_update.status(), gamma.status(), lambda.status(),
-                           entropy.status(), entropy_final.status(), epochs.status(), clip.status(),
-                           value_iters.status(), branch.status(), stop_at.status()})
+                           entropy.status(), entropy_final.status(), epochs.status(), minibatches.status(),
+                           clip.status(), value_iters.status(), branch.status(), stop_at.status()})
     SQUAWK_RETURN_IF_ERROR(st);
   if (args.has("--lr-final")) {
     cfg.lr_final = *lr_final;
@@ -51,6 +53,7 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
   cfg.lambda = *lambda;
   cfg.entropy_coef = *entropy;
   cfg.epochs = static_cast<int>(*epochs);
+  cfg.minibatches = static_cast<int>(*minibatches);
   cfg.clip = *clip;
   cfg.value_iters = static_cast<int>(*value_iters);
   cfg.branch_fraction = *branch;

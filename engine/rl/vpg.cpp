@@ -10,6 +10,7 @@ namespace squawk::rl {
 namespace {
 constexpr uint64_t kTrainPolicySalt = 0x7EA1ull;
 constexpr uint64_t kBranchSalt = 0xB4A7C4ull;
+constexpr uint64_t kMinibatchSalt = 0x3B47C8ull;
 }
 
 Status TrainConfig::validate() const {
@@ -28,6 +29,7 @@ Status TrainConfig::validate() const {
     return Status::invalid("train entropy_coef and entropy_final must be >= 0");
   if (!(lambda >= 0.0 && lambda <= 1.0)) return Status::invalid("train lambda must lie in [0, 1]");
   if (epochs < 1 || epochs > 100) return Status::invalid("train epochs must lie in 1..100");
+  if (minibatches < 1 || minibatches > 1024) return Status::invalid("train minibatches must lie in 1..1024");
   if (!(clip > 0.0 && clip < 1.0)) return Status::invalid("train clip must lie in (0, 1)");
   if (!(branch_fraction > 0.0 && branch_fraction <= 1.0))
     return Status::invalid("train branch_fraction must lie in (0, 1]");
@@ -164,26 +166,51 @@ std::vector<double> Trainer::advantages(const std::vector<float>& v, const std::
   return adv;
 }
 
-void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, float ent,
+void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, double c_h,
                             UpdateStats& st) {
-  const int n = static_cast<int>(acts.size());
-  std::vector<float> old_logp(acts.size()), logp(acts.size()), c(acts.size());
-  policy_.log_probs(batch_obs_, n, acts, old_logp);
+  const size_t n = acts.size(), obs = static_cast<size_t>(envs_.obs_size());
+  const size_t parts = std::min(n, static_cast<size_t>(cfg_.minibatches));
+  std::vector<float> old_logp(n);
+  policy_.log_probs(batch_obs_, static_cast<int>(n), acts, old_logp);
+  std::vector<size_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[i] = i;
+  Rng shuffle(env::episode_seed(cfg_.seed ^ kMinibatchSalt, static_cast<uint64_t>(updates_)));
+  std::vector<float> rows, logp, c;
+  std::vector<ActionSample> part_acts;
   for (int e = 0; e < cfg_.epochs; ++e) {
-    if (e > 0) policy_.log_probs(batch_obs_, n, acts, logp);
-    for (size_t i = 0; i < acts.size(); ++i) {
-      // d/dtheta of min(rho A, clip(rho) A) is rho A dlog pi where the
-      // unclipped term is the smaller one, 0 where the clip is active.
-      const double rho = e == 0 ? 1.0 : std::exp(static_cast<double>(logp[i]) - old_logp[i]);
-      const bool clipped = (coef[i] > 0.0f && rho > 1.0 + cfg_.clip) || (coef[i] < 0.0f && rho < 1.0 - cfg_.clip);
-      c[i] = clipped ? 0.0f : static_cast<float>(rho * coef[i]);
+    if (parts > 1)
+      for (size_t i = n; i-- > 1;)
+        std::swap(order[i], order[static_cast<size_t>(shuffle.uniform_int(0, static_cast<int64_t>(i)))]);
+    for (size_t b = 0; b < parts; ++b) {
+      const size_t lo = b * n / parts, m = (b + 1) * n / parts - lo;
+      part_acts.resize(m);
+      rows.resize(m * obs);
+      for (size_t j = 0; j < m; ++j) {
+        part_acts[j] = acts[order[lo + j]];
+        std::copy_n(batch_obs_.begin() + static_cast<long>(order[lo + j] * obs), obs,
+                    rows.begin() + static_cast<long>(j * obs));
+      }
+      const bool first = e == 0 && b == 0;  // the sampling policy itself: rho = 1
+      logp.resize(m);
+      if (!first) policy_.log_probs(rows, static_cast<int>(m), part_acts, logp);
+      c.resize(m);
+      const double scale = static_cast<double>(n) / static_cast<double>(m);  // coef holds 1/N; L_B wants 1/|B|
+      for (size_t j = 0; j < m; ++j) {
+        const size_t i = order[lo + j];
+        // d/dtheta of min(rho A, clip(rho) A) is rho A dlog pi where the
+        // unclipped term is the smaller one, 0 where the clip is active.
+        const double rho = first ? 1.0 : std::exp(static_cast<double>(logp[j]) - old_logp[i]);
+        const bool clipped = (coef[i] > 0.0f && rho > 1.0 + cfg_.clip) || (coef[i] < 0.0f && rho < 1.0 - cfg_.clip);
+        c[j] = clipped ? 0.0f : static_cast<float>(rho * coef[i] * scale);
+      }
+      std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
+      const float h = policy_.accumulate_gradient(rows, static_cast<int>(m), part_acts, c,
+                                                  static_cast<float>(c_h / static_cast<double>(m)));
+      const double norm = adam_.step();
+      if (e > 0) continue;
+      st.entropy += h * static_cast<double>(m) / static_cast<double>(n);
+      if (b == 0) st.grad_norm = norm;
     }
-    std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
-    const float h = policy_.accumulate_gradient(batch_obs_, n, acts, c, ent);
-    const double norm = adam_.step();
-    if (e > 0) continue;
-    st.entropy = h;
-    st.grad_norm = norm;
   }
 }
 
@@ -307,11 +334,11 @@ UpdateStats Trainer::update(const UpdateProgress& progress) {
   st.value_loss = coefficients(coef);
   std::vector<ActionSample> batch_acts(batch_samples_.size());
   for (size_t i = 0; i < batch_samples_.size(); ++i) batch_acts[i] = batch_samples_[i].action;
-  const float ent = cfg_.estimator == "vpg" ? 0.0f : static_cast<float>(c_h / st.samples);
   if (cfg_.estimator == "ppo") {
-    clipped_steps(coef, batch_acts, ent, st);
+    clipped_steps(coef, batch_acts, c_h, st);
     return st;
   }
+  const float ent = cfg_.estimator == "vpg" ? 0.0f : static_cast<float>(c_h / st.samples);
   std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
   st.entropy = policy_.accumulate_gradient(batch_obs_, st.samples, batch_acts, coef, ent);
   st.grad_norm = adam_.step();

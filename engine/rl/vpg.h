@@ -14,10 +14,14 @@
 //     each policy step. With a value MLP and lambda < 1, A_t is GAE(lambda):
 //     sum_{k>=0} (gamma lambda)^k delta_{t+k}, delta_t = r_t + gamma V(s_{t+1})
 //     - V(s_t), V = 0 after an episode's last step (lambda = 1 gives G_t - V(s_t)).
-//   "ppo":      the improved advantages, then `epochs` Adam steps on the
-//     clipped-ratio surrogate  L = -(1/N) sum_t min(rho_t A_t, clip(rho_t,
-//     1 - clip, 1 + clip) A_t) - c_H (1/N) sum_t H,  rho_t = pi(a_t|s_t) /
-//     pi_old(a_t|s_t), pi_old the sampling policy (needs Policy::log_probs).
+//   "ppo":      the improved advantages, then `epochs` passes over the batch,
+//     each split into `minibatches` parts B (a fresh shuffle of the N samples
+//     per pass when there are several; in order when there is one), with one
+//     Adam step per part on the clipped-ratio surrogate
+//       L_B = -(1/|B|) sum_{t in B} min(rho_t A_t, clip(rho_t, 1 - clip,
+//             1 + clip) A_t) - c_H (1/|B|) sum_{t in B} H,
+//     rho_t = pi(a_t|s_t) / pi_old(a_t|s_t), pi_old the sampling policy
+//     (needs Policy::log_probs): epochs x minibatches steps per batch.
 //   "vine":     at a random share `branch_fraction` of the batch's agent steps,
 //     Q(s, a) for every action a by branch_returns (branch_returns.h: a, then
 //     the greedy policy, deterministic), A(s, a) = Q(s, a) - sum_a pi(a|s) Q(s, a),
@@ -62,7 +66,8 @@ struct TrainConfig {
   double entropy_coef = 0.01;          // [-] improved/ppo: entropy bonus c_H at the start ...
   std::optional<double> entropy_final; // [-] ... decayed linearly to this at `episodes` (none: constant)
   double lambda = 1.0;                 // [-] improved/ppo: GAE lambda (1 = reward-to-go - V)
-  int epochs = 4;                      // [-] ppo, vine: Adam steps per batch
+  int epochs = 4;                      // [-] ppo: passes over the batch; vine: Adam steps per batch
+  int minibatches = 1;                 // [-] ppo: Adam steps per pass (parts of the shuffled batch)
   double branch_fraction = 0.25;       // [-] vine: share of agent steps branched, (0, 1]
   double clip = 0.2;                   // [-] ppo: ratio clip
   double grad_clip = 1.0;              // [-] global gradient-norm clip (0 = none)
@@ -124,10 +129,11 @@ class Trainer {
   // Advantages A_t (before normalisation) from the value MLP's v = V(s_t) and
   // the reward-to-go g.
   std::vector<double> advantages(const std::vector<float>& v, const std::vector<float>& g) const;
-  // ppo: `epochs` clipped-ratio steps from the normalised advantages in coef
-  // (each times 1/N).
-  // Sets st.entropy and st.grad_norm from the first step.
-  void clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, float ent,
+  // ppo: `epochs` x `minibatches` clipped-ratio steps from the normalised
+  // advantages in coef (each times 1/N) with entropy bonus c_h. Sets
+  // st.entropy from the first pass (sample-weighted) and st.grad_norm from
+  // the first step.
+  void clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, double c_h,
                      UpdateStats& st);
   // vine: the all-action steps on the branched states; sets st.entropy and
   // st.grad_norm from the first step. A policy error leaves the policy as is.

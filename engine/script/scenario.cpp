@@ -154,7 +154,7 @@ void read_policy(lua_State* L, int idx, const env::HorizontalCrConfig& env, rl::
 void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   check_keys(L, idx, "train",
              {"estimator", "episodes", "episodes_per_update", "num_envs", "lr", "lr_final", "gamma",
-              "entropy_coef", "entropy_final", "lambda", "epochs", "clip", "grad_clip", "eval_every",
+              "entropy_coef", "entropy_final", "lambda", "epochs", "minibatches", "clip", "grad_clip", "eval_every",
               "eval_episodes", "seed", "branch_fraction"});
   t.estimator = field_string(L, idx, "estimator", t.estimator);
   t.episodes = field_count(L, idx, "episodes", t.episodes, 0, kMaxCount);
@@ -167,6 +167,7 @@ void read_train(lua_State* L, int idx, rl::TrainConfig& t) {
   if (const double ef = field_number(L, idx, "entropy_final", std::nan("")); !std::isnan(ef)) t.entropy_final = ef;
   t.lambda = field_number(L, idx, "lambda", t.lambda);
   t.epochs = int_field(L, idx, "epochs", t.epochs);
+  t.minibatches = int_field(L, idx, "minibatches", t.minibatches);
   t.clip = field_number(L, idx, "clip", t.clip);
   t.branch_fraction = field_number(L, idx, "branch_fraction", t.branch_fraction);
   t.grad_clip = field_number(L, idx, "grad_clip", t.grad_clip);

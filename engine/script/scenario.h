@@ -22,7 +22,8 @@
 //   policy  = { hidden = {..}, head = "categorical"|"gaussian", actions = {..},
 //               init_log_std }
 //   train   = { estimator, episodes, episodes_per_update, num_envs, lr, lr_final, gamma,
-//               entropy_coef, grad_clip, eval_every, eval_episodes, seed }
+//               entropy_coef, entropy_final, lambda, epochs, minibatches, clip,
+//               grad_clip, branch_fraction, eval_every, eval_episodes, seed }
 // A Lua reward function that raises an error makes that step's reward 0 and
 // records the first error in reward_error(); callers check it.
 #pragma once

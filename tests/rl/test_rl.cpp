@@ -267,6 +267,33 @@ TEST_CASE("the clipped-ratio learner, GAE(lambda) and the entropy schedule") {
     CHECK(four != improved);
     CHECK(trained_params(c, 2) == four);
   }
+  SUBCASE("ppo minibatches: epochs x parts Adam steps per batch, never more parts than samples") {
+    rl::TrainConfig c = tc;
+    c.estimator = "ppo";
+    c.epochs = 2;
+    const auto whole = trained_params(c, 2);
+    c.minibatches = 3;
+    const auto parts = trained_params(c, 2);
+    CHECK(parts != whole);
+    CHECK(trained_params(c, 2) == parts);  // the shuffle is the run's, not the clock's
+    env::HorizontalCrConfig ec;
+    Rng init(0);
+    auto p = rl::MlpPolicy::make({}, init);
+    REQUIRE(p);
+    auto v = env::VecEnv::make(ec, c.num_envs);
+    REQUIRE(v);
+    c.minibatches = 100000;
+    CHECK_FALSE(c.validate().is_ok());
+    c.minibatches = 1024;
+    rl::Trainer tr(**p, *v, c, 0);
+    const rl::UpdateStats st = tr.update();
+    REQUIRE(st.samples > 0);
+    REQUIRE(st.samples < 1024);
+    CHECK(tr.adam().t() == 2LL * st.samples);  // one sample per part
+    CHECK(st.entropy > 0.0);
+    c.minibatches = 0;
+    CHECK(c.validate().message().find("minibatches") != std::string::npos);
+  }
   SUBCASE("lambda 1 is reward-to-go minus V; lambda < 1 changes the advantages") {
     rl::TrainConfig c = tc;
     c.lambda = 0.9;

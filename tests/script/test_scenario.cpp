@@ -75,6 +75,22 @@ TEST_CASE("the shipped paper scenario sets the paper's training and evaluation s
   CHECK(v->eval_env.lookahead == 600);
 }
 
+TEST_CASE("the train table sets the learner, minibatches included") {
+  auto s = script::load_scenario(
+      write_temp("squawk_test_train.lua",
+                 "return { train = { estimator = 'ppo', epochs = 3, minibatches = 4, clip = 0.1 } }"),
+      {});
+  REQUIRE(s);
+  CHECK(s->train.estimator == "ppo");
+  CHECK(s->train.epochs == 3);
+  CHECK(s->train.minibatches == 4);
+  CHECK(s->train.clip == 0.1);
+  auto bad = script::load_scenario(
+      write_temp("squawk_test_train.lua", "return { train = { minibatches = 0 } }"), {});
+  REQUIRE_FALSE(bad);
+  CHECK(bad.status().message().find("minibatches") != std::string::npos);
+}
+
 TEST_CASE("a Lua reward function replaces the built-in reward") {
   const std::string path = write_temp("squawk_test_reward.lua",
                                       "return { rules = 'paper', env = { lookahead_s = 600 },\n"
