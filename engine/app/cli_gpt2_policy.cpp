@@ -45,15 +45,6 @@ Args::Spec with_policy_flags(std::vector<std::string> values, std::vector<std::s
   return with_vm_flags({std::move(values), std::move(bools)});
 }
 
-Result<script::Scenario> scenario_of(const Args& args) {
-  if (args.positional().size() != 1)
-    return Status::invalid("expected exactly one SCENARIO.lua, got " + std::to_string(args.positional().size()) +
-                           " positional arguments");
-  SQUAWK_ASSIGN_OR_RETURN(script::VmOptions vo, vm_options(args));
-  vo.out_dir.clear();
-  return script::load_scenario(args.positional()[0], vo);
-}
-
 }  // namespace
 
 int cmd_train_gpt2(const ArgV& argv) {
@@ -62,17 +53,16 @@ int cmd_train_gpt2(const ArgV& argv) {
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");
   auto popts = gpt2_options(*args);
   if (!popts) return usage_error("train", popts.status().message());
-  auto sc = scenario_of(*args);
-  if (!sc) return failure(sc.status());
-  if (Status st = apply_mirror_flag(*args, sc->train_env, popts->spec.mirror); !st.is_ok())
+  if (args->positional().size() != 1) return usage_error("train", "expected exactly one SCENARIO.lua");
+  script::VmOptions vo;
+  script::Scenario sc;
+  if (int rc = load_episode_scenario(*args, "train", vo, sc); rc != kExitOk) return rc;
+  if (Status st = apply_mirror_flag(*args, sc.train_env, popts->spec.mirror); !st.is_ok())
     return usage_error("train", "--mirror: " + st.message());
-  rl::TrainConfig cfg = sc->train;
+  rl::TrainConfig cfg = sc.train;
   const double lr_default = popts->model == "tiny" ? cfg.lr : kFolderLr;
   if (Status st = apply_learner_flags(*args, 20000, lr_default, cfg); !st.is_ok())
     return usage_error("train", st.message());
-  auto vo = vm_options(*args);
-  if (!vo) return usage_error("train", vo.status().message());
-  vo->out_dir.clear();
 
   const std::string out = *args->get("--out");
   if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
@@ -99,12 +89,12 @@ int cmd_train_gpt2(const ArgV& argv) {
       c->progress = rl::TrainProgress{};
       c->progress.seed = cfg.seed;
     }
-    auto p = gpt2_policy_from_checkpoint(*c, popts->prompt, *vo);
+    auto p = gpt2_policy_from_checkpoint(*c, popts->prompt, vo);
     if (!p) return failure(p.status());
     g = std::move(*p);
     resume = std::move(*c);
   } else {
-    auto p = make_gpt2_policy(*popts, sc->train_env, *vo);
+    auto p = make_gpt2_policy(*popts, sc.train_env, vo);
     if (!p) return failure(p.status());
     g = std::move(*p);
     g.meta.progress.seed = cfg.seed;
@@ -114,12 +104,12 @@ int cmd_train_gpt2(const ArgV& argv) {
   const bool restoring = resuming || !init_path.empty();
   if (restoring) meta.progress = resume.progress;
   meta.progress.estimator = cfg.estimator;
-  meta.progress.scenario = sc->path;
-  if (Status st = rl::check_obs_size(policy, env::observation_size(sc->train_env.num_intruders)); !st.is_ok())
+  meta.progress.scenario = sc.path;
+  if (Status st = rl::check_obs_size(policy, env::observation_size(sc.train_env.num_intruders)); !st.is_ok())
     return failure(st);
   if (Status st = rl::check_learner(policy, cfg); !st.is_ok()) return usage_error("train", st.message());
-  auto train_envs = env::VecEnv::make(sc->train_env, cfg.num_envs);
-  auto eval_envs = env::VecEnv::make(sc->eval_env, cfg.num_envs);
+  auto train_envs = env::VecEnv::make(sc.train_env, cfg.num_envs);
+  auto eval_envs = env::VecEnv::make(sc.eval_env, cfg.num_envs);
   if (!train_envs) return failure(train_envs.status());
   if (!eval_envs) return failure(eval_envs.status());
   rl::Trainer trainer(policy, *train_envs, cfg, meta.progress.updates);
@@ -141,7 +131,7 @@ int cmd_train_gpt2(const ArgV& argv) {
                 "%s, estimator %s, lr %g, seed %llu%s\n",
                 meta.source.c_str(), meta.spec.trainable_blocks, meta.spec.train_embeddings ? " and the embeddings" : "",
                 meta.spec.head.c_str(), policy.params().size(),
-                sc->path.c_str(), episodes_text(cfg).c_str(), cfg.estimator.c_str(), cfg.lr,
+                sc.path.c_str(), episodes_text(cfg).c_str(), cfg.estimator.c_str(), cfg.lr,
                 static_cast<unsigned long long>(cfg.seed),
                 resuming ? " (resumed)" : init_path.empty() ? "" : (" (from " + init_path + ")").c_str());
   const auto t0 = std::chrono::steady_clock::now();
@@ -174,7 +164,7 @@ int cmd_train_gpt2(const ArgV& argv) {
     }
     const double update_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - u0).count();
     if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
-    if (Status rs = sc->reward_error(); !rs.is_ok()) return failure(rs);
+    if (Status rs = sc.reward_error(); !rs.is_ok()) return failure(rs);
     meta.progress.episodes += st.episodes;
     meta.progress.updates = trainer.updates();
     meta.progress.wall_s = wall0 + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -186,7 +176,7 @@ int cmd_train_gpt2(const ArgV& argv) {
          static_cast<double>(st.entropy), update_s);
     if (meta.progress.episodes >= next_eval || meta.progress.episodes >= cfg.end_episodes()) {
       next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
-      auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, sc->eval_seed, false});
+      auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, sc.eval_seed, false});
       if (!ev) return failure(ev.status());
       const double k = static_cast<double>(interval);
       char row[256];

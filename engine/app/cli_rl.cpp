@@ -34,16 +34,6 @@ namespace {
 // the best-checkpoint choice never sees the episodes of `squawk eval`'s default seed.
 constexpr uint64_t kValidationSeedOffset = 1000003;
 
-Result<script::Scenario> scenario_from(const Args& args, const char* sub) {
-  if (args.positional().size() != 1)
-    return Status::invalid(std::string("expected exactly one SCENARIO.lua, got ") +
-                           std::to_string(args.positional().size()) + " positional arguments");
-  SQUAWK_ASSIGN_OR_RETURN(script::VmOptions vo, vm_options(args));
-  vo.out_dir.clear();
-  (void)sub;
-  return script::load_scenario(args.positional()[0], vo);
-}
-
 rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainProgress& progress) {
   rl::Checkpoint c;
   c.spec = p.spec();
@@ -76,19 +66,17 @@ int cmd_train(const ArgV& argv) {
   if (args->get_or("--policy", "mlp") != "mlp")
     return usage_error("train", "--policy: only 'mlp' trains here, got '" + args->get_or("--policy", "") + "'");
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");
-  auto sc = scenario_from(*args, "train");
-  if (!sc) {
-    if (sc.status().code() == Code::kInvalidArgument && args->positional().size() != 1)
-      return usage_error("train", sc.status().message());
-    return failure(sc.status());
-  }
-  rl::TrainConfig cfg = sc->train;
+  if (args->positional().size() != 1) return usage_error("train", "expected exactly one SCENARIO.lua");
+  script::VmOptions vo;
+  script::Scenario sc;
+  if (int rc = load_episode_scenario(*args, "train", vo, sc); rc != kExitOk) return rc;
+  rl::TrainConfig cfg = sc.train;
   if (Status st = apply_learner_flags(*args, cfg.episodes, cfg.lr, cfg); !st.is_ok())
     return usage_error("train", st.message());
-  if (Status st = apply_mirror_flag(*args, sc->train_env, sc->policy.mirror); !st.is_ok())
+  if (Status st = apply_mirror_flag(*args, sc.train_env, sc.policy.mirror); !st.is_ok())
     return usage_error("train", "--mirror: " + st.message());
   auto validation_seed =
-      args->get_int("--validation-seed", static_cast<long long>(sc->eval_seed + kValidationSeedOffset));
+      args->get_int("--validation-seed", static_cast<long long>(sc.eval_seed + kValidationSeedOffset));
   if (!validation_seed) return usage_error("train", validation_seed.status().message());
 
   const std::string out = *args->get("--out");
@@ -104,7 +92,7 @@ int cmd_train(const ArgV& argv) {
   if (resuming) {
     auto c = rl::load_checkpoint(ckpt_path);
     if (!c) return failure(c.status());
-    if (Status st = check_resume_mirror(ckpt_path, c->spec.mirror, sc->policy.mirror); !st.is_ok())
+    if (Status st = check_resume_mirror(ckpt_path, c->spec.mirror, sc.policy.mirror); !st.is_ok())
       return failure(st);
     auto p = rl::policy_from_checkpoint(*c);
     if (!p) return failure(p.status());
@@ -116,19 +104,19 @@ int cmd_train(const ArgV& argv) {
                                      std::to_string(progress.seed) + ", not " + std::to_string(cfg.seed)));
   } else {
     Rng init(cfg.seed);
-    auto p = rl::MlpPolicy::make(sc->policy, init);
+    auto p = rl::MlpPolicy::make(sc.policy, init);
     if (!p) return failure(p.status());
     policy = std::move(*p);
     progress.seed = cfg.seed;
   }
   progress.estimator = cfg.estimator;
-  progress.scenario = sc->path;
+  progress.scenario = sc.path;
   if (Status st = rl::check_learner(*policy, cfg); !st.is_ok()) return usage_error("train", st.message());
-  if (Status st = rl::check_obs_size(*policy, env::observation_size(sc->train_env.num_intruders)); !st.is_ok())
+  if (Status st = rl::check_obs_size(*policy, env::observation_size(sc.train_env.num_intruders)); !st.is_ok())
     return failure(st);
 
-  auto train_envs = env::VecEnv::make(sc->train_env, cfg.num_envs);
-  auto eval_envs = env::VecEnv::make(sc->eval_env, cfg.num_envs);
+  auto train_envs = env::VecEnv::make(sc.train_env, cfg.num_envs);
+  auto eval_envs = env::VecEnv::make(sc.eval_env, cfg.num_envs);
   if (!train_envs) return failure(train_envs.status());
   if (!eval_envs) return failure(eval_envs.status());
   const long long m = cfg.episodes_per_update;
@@ -149,8 +137,8 @@ int cmd_train(const ArgV& argv) {
   const bool quiet = args->has("--quiet");
   if (!quiet)
     std::printf("training %s on %s (%s rules): %s, estimator %s, %zu parameters, seed %llu%s\n",
-                policy->name().c_str(), sc->path.c_str(),
-                sc->train_env.rules == env::Rules::kGym ? "gym" : "paper", episodes_text(cfg).c_str(),
+                policy->name().c_str(), sc.path.c_str(),
+                sc.train_env.rules == env::Rules::kGym ? "gym" : "paper", episodes_text(cfg).c_str(),
                 cfg.estimator.c_str(), policy->params().size(),
                 static_cast<unsigned long long>(cfg.seed), resuming ? " (resumed)" : "");
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
@@ -180,7 +168,7 @@ int cmd_train(const ArgV& argv) {
     ent = st.entropy;
     gnorm = st.grad_norm;
     ++interval_updates;
-    if (Status rs = sc->reward_error(); !rs.is_ok()) {
+    if (Status rs = sc.reward_error(); !rs.is_ok()) {
       bar.finish();
       return failure(rs);
     }
