@@ -216,8 +216,14 @@ TEST_CASE("training is reproducible and a resumed run continues exactly") {
 
 namespace {
 
-// Policy parameters after `updates` updates of a fresh paper-sized MLP under tc.
-std::vector<float> trained_params(const rl::TrainConfig& tc, int updates) {
+struct Trained {
+  std::vector<float> params;  // the policy's parameters after training
+  long long adam_steps = 0;   // [-] policy Adam steps taken
+  int samples = 0;            // [-] agent steps in the batches
+};
+
+// `updates` updates of a fresh paper-sized MLP under tc.
+Trained train_fresh(const rl::TrainConfig& tc, int updates) {
   env::HorizontalCrConfig ec;
   Rng init(0);
   auto p = rl::MlpPolicy::make({}, init);
@@ -225,9 +231,19 @@ std::vector<float> trained_params(const rl::TrainConfig& tc, int updates) {
   auto v = env::VecEnv::make(ec, tc.num_envs);
   REQUIRE(v);
   rl::Trainer tr(**p, *v, tc, 0);
-  for (int i = 0; i < updates; ++i) CHECK(tr.update().samples > 0);
-  return std::vector<float>((*p)->params().begin(), (*p)->params().end());
+  Trained t;
+  for (int i = 0; i < updates; ++i) {
+    const rl::UpdateStats st = tr.update();
+    CHECK(st.samples > 0);
+    CHECK(st.entropy > 0.0);
+    t.samples += st.samples;
+  }
+  t.params.assign((*p)->params().begin(), (*p)->params().end());
+  t.adam_steps = tr.adam().t();
+  return t;
 }
+
+std::vector<float> trained_params(const rl::TrainConfig& tc, int updates) { return train_fresh(tc, updates).params; }
 
 }  // namespace
 
@@ -276,21 +292,13 @@ TEST_CASE("the clipped-ratio learner, GAE(lambda) and the entropy schedule") {
     const auto parts = trained_params(c, 2);
     CHECK(parts != whole);
     CHECK(trained_params(c, 2) == parts);  // the shuffle is the run's, not the clock's
-    env::HorizontalCrConfig ec;
-    Rng init(0);
-    auto p = rl::MlpPolicy::make({}, init);
-    REQUIRE(p);
-    auto v = env::VecEnv::make(ec, c.num_envs);
-    REQUIRE(v);
+    CHECK(train_fresh(c, 2).adam_steps == 2 * 2 * 3);
+    c.minibatches = 1024;
+    const Trained one = train_fresh(c, 1);
+    REQUIRE(one.samples < 1024);
+    CHECK(one.adam_steps == 2LL * one.samples);  // one sample per part
     c.minibatches = 100000;
     CHECK_FALSE(c.validate().is_ok());
-    c.minibatches = 1024;
-    rl::Trainer tr(**p, *v, c, 0);
-    const rl::UpdateStats st = tr.update();
-    REQUIRE(st.samples > 0);
-    REQUIRE(st.samples < 1024);
-    CHECK(tr.adam().t() == 2LL * st.samples);  // one sample per part
-    CHECK(st.entropy > 0.0);
     c.minibatches = 0;
     CHECK(c.validate().message().find("minibatches") != std::string::npos);
   }
