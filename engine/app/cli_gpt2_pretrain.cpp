@@ -6,8 +6,11 @@
 // the scenario under uniformly random actions (so turned, off-track states
 // appear), tokenised by the tiny policy's own BPE; the last --holdout prompts
 // are held out. Objective: next-token cross-entropy over every token after the
-// static prefix (gpt2::Model::lm_loss_backward), Adam on every parameter, no
-// action labels and no reward. Output: a Hugging Face folder (config.json,
+// static prefix (gpt2::Model::lm_loss_backward), plus, with --readout W > 0, W
+// times the read-out loss (gpt2/readout.h: a linear probe recovers the
+// observation each prompt renders from its last token's hidden state). Adam on
+// every parameter (the probe: its own Adam), no action labels and no reward.
+// Output: a Hugging Face folder (config.json,
 // model.safetensors, vocab.json, merges.txt) that `squawk train --policy gpt2
 // --model OUT_DIR` fine-tunes, and OUT_DIR/pretrain.csv with the losses.
 #include <algorithm>
@@ -22,6 +25,7 @@
 #include "core/rng.h"
 #include "env/vec_env.h"
 #include "gpt2/checkpoint.h"
+#include "gpt2/readout.h"
 #include "nn/adam.h"
 #include "script/scenario.h"
 
@@ -29,12 +33,17 @@ namespace squawk::app {
 
 namespace {
 
-// Token ids (prefix included) of every prompt the policy reads while `envs`
-// run `episodes` episodes from `seed` under uniformly random actions.
-Result<std::vector<std::vector<int>>> prompt_corpus(rl::PromptPolicy& policy, env::VecEnv& envs,
-                                                    long long episodes, uint64_t seed) {
+// Every prompt the policy reads while `envs` run `episodes` episodes from
+// `seed` under uniformly random actions: its token ids (prefix included) and
+// the observation it renders (obs [N, obs_size]).
+struct Corpus {
+  std::vector<std::vector<int>> seqs;
+  std::vector<float> obs;
+};
+
+Result<Corpus> prompt_corpus(rl::PromptPolicy& policy, env::VecEnv& envs, long long episodes, uint64_t seed) {
   static const double kActions[] = {-1.0, -0.5, 0.0, 0.5, 1.0};
-  std::vector<std::vector<int>> out;
+  Corpus out;
   Rng rng(seed ^ 0x9E7Bull);
   envs.start(seed, 0, static_cast<uint64_t>(episodes));
   std::vector<double> actions, rewards;
@@ -43,10 +52,12 @@ Result<std::vector<std::vector<int>>> prompt_corpus(rl::PromptPolicy& policy, en
   while (!envs.finished()) {
     const size_t n = envs.waiting().size();
     for (size_t i = 0; i < n; ++i) {
-      SQUAWK_ASSIGN_OR_RETURN(std::vector<int> ids, policy.suffix_tokens(envs.observations().subspan(i * d, d)));
+      const auto row = envs.observations().subspan(i * d, d);
+      SQUAWK_ASSIGN_OR_RETURN(std::vector<int> ids, policy.suffix_tokens(row));
       std::vector<int> seq = policy.prefix_tokens();
       seq.insert(seq.end(), ids.begin(), ids.end());
-      out.push_back(std::move(seq));
+      out.seqs.push_back(std::move(seq));
+      out.obs.insert(out.obs.end(), row.begin(), row.end());
     }
     actions.resize(n);
     rewards.assign(n, 0.0);
@@ -57,11 +68,29 @@ Result<std::vector<std::vector<int>>> prompt_corpus(rl::PromptPolicy& policy, en
   return out;
 }
 
+// Mean over the d columns of obs [N, d] of each column's variance over rows
+// from..N-1: the read-out error of a constant answer, the mean.
+double mean_variance(const std::vector<float>& obs, size_t from, int d) {
+  const auto D = static_cast<size_t>(d);
+  const size_t n = obs.size() / D - from;
+  double total = 0.0;
+  for (size_t c = 0; c < D; ++c) {
+    double s = 0.0, s2 = 0.0;
+    for (size_t r = from; r < from + n; ++r) {
+      const double x = obs[r * D + c];
+      s += x;
+      s2 += x * x;
+    }
+    total += s2 / static_cast<double>(n) - (s / static_cast<double>(n)) * (s / static_cast<double>(n));
+  }
+  return total / static_cast<double>(D);
+}
+
 }  // namespace
 
 int cmd_gpt2_pretrain(const ArgV& argv) {
   auto args = Args::parse(argv, with_vm_flags({{"--prompt", "--episodes", "--steps", "--batch", "--lr", "--seed",
-                                                "--model-seed", "--holdout", "--log-every"},
+                                                "--model-seed", "--holdout", "--log-every", "--readout"},
                                                {"--quiet"}}));
   if (!args) return usage_error("gpt2", args.status().message());
   if (args->positional().size() != 2) return usage_error("gpt2", "pretrain expects SCENARIO.lua OUT_DIR");
@@ -79,6 +108,10 @@ int cmd_gpt2_pretrain(const ArgV& argv) {
   const auto seed = static_cast<uint64_t>(v[3]);
   auto lr = args->get_double("--lr", 1e-3);
   if (!lr || !(*lr > 0.0 && *lr < 1.0)) return usage_error("gpt2", "--lr expects a number in (0, 1)");
+  auto readout = args->get_double("--readout", 0.0);
+  if (!readout || !(*readout >= 0.0 && *readout <= 1000.0))
+    return usage_error("gpt2", "--readout expects a weight in [0, 1000]");
+  const double readout_weight = *readout;
   script::VmOptions vo;
   script::Scenario sc;
   if (int rc = load_episode_scenario(*args, "gpt2", vo, sc); rc != kExitOk) return rc;
@@ -98,59 +131,109 @@ int cmd_gpt2_pretrain(const ArgV& argv) {
   if (!envs) return failure(envs.status());
   auto corpus = prompt_corpus(policy, *envs, episodes, seed);
   if (!corpus) return failure(corpus.status());
-  if (corpus->size() <= static_cast<size_t>(holdout))
-    return usage_error("gpt2", std::to_string(corpus->size()) + " prompts from " + std::to_string(episodes) +
+  const size_t n_all = corpus->seqs.size();
+  if (n_all <= static_cast<size_t>(holdout))
+    return usage_error("gpt2", std::to_string(n_all) + " prompts from " + std::to_string(episodes) +
                                    " episodes leave none to train on after --holdout " + std::to_string(holdout));
-  const size_t n_train = corpus->size() - static_cast<size_t>(holdout);
-  const int from = static_cast<int>(policy.prefix_tokens().size()) - 1;
-  if (!quiet)
+  const size_t n_train = n_all - static_cast<size_t>(holdout);
+  const size_t P = policy.prefix_tokens().size();
+  const int from = static_cast<int>(P) - 1;
+  if (!quiet) {
     std::printf("pretraining the tiny gpt2 (%lld parameters) on %zu prompts (%zu held out) from %lld episodes; "
                 "%lld steps of %lld prompts, lr %g\n",
                 model.config().num_params(), n_train, static_cast<size_t>(holdout), episodes, steps, batch, *lr);
+    if (readout_weight > 0.0)
+      std::printf("read-out weight %g; a probe that always answered the held-out mean would score mse %.5f\n",
+                  readout_weight, mean_variance(corpus->obs, n_train, envs->obs_size()));
+  }
 
   if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
   std::ofstream log(out + "/pretrain.csv");
   if (!log) return failure(Status::io_error("cannot write " + out + "/pretrain.csv"));
-  log << "step,prompts,wall_s,train_loss,holdout_loss\n";
+  log << "step,prompts,wall_s,train_loss,holdout_loss" << (readout_weight > 0.0 ? ",train_readout,holdout_readout" : "")
+      << "\n";
   nn::Adam adam(model.trainable_params(), model.grads(), {.lr = static_cast<float>(*lr), .grad_clip = 1.0f});
-  // Mean next-token loss over the held-out prompts, in batches; no update.
-  auto holdout_loss = [&]() -> Result<double> {
-    double sum = 0.0;
-    int parts = 0;
-    for (size_t i = n_train; i < corpus->size(); i += static_cast<size_t>(batch), ++parts) {
-      const size_t end = std::min(corpus->size(), i + static_cast<size_t>(batch));
-      SQUAWK_ASSIGN_OR_RETURN(double l, model.lm_loss_backward({corpus->begin() + static_cast<long>(i),
-                                                                corpus->begin() + static_cast<long>(end)},
-                                                               from));
-      sum += l;
+  // The read-out probe (only with --readout): its own Adam and draws.
+  Rng probe_rng(seed ^ 0x5EAD07ull);
+  gpt2::Readout probe = gpt2::Readout::make(model.config().n_embd, envs->obs_size(), probe_rng);
+  nn::Adam probe_adam(probe.params, probe.grads, {.lr = static_cast<float>(*lr), .grad_clip = 1.0f});
+  gpt2::PrefixCache cache;
+  // Next-token and read-out losses of the prompts `idx`; with `train` their
+  // gradients accumulate (the read-out's times its weight), else the model's
+  // are cleared after. The read-out is 0 without --readout.
+  auto losses = [&](const std::vector<size_t>& idx, bool train) -> Result<std::pair<double, double>> {
+    std::vector<std::vector<int>> seqs, rests;
+    std::vector<float> targets;
+    const size_t d = static_cast<size_t>(probe.D);
+    for (size_t i : idx) {
+      seqs.push_back(corpus->seqs[i]);
+      rests.emplace_back(corpus->seqs[i].begin() + static_cast<long>(P), corpus->seqs[i].end());
+      targets.insert(targets.end(), corpus->obs.begin() + static_cast<long>(i * d),
+                     corpus->obs.begin() + static_cast<long>((i + 1) * d));
     }
-    model.zero_grads();
-    return sum / parts;
+    SQUAWK_ASSIGN_OR_RETURN(double lm, model.lm_loss_backward(seqs, from));
+    double ro = 0.0;
+    if (readout_weight > 0.0) {
+      if (train) {
+        SQUAWK_ASSIGN_OR_RETURN(ro, gpt2::readout_loss_backward(model, cache, rests, targets, probe,
+                                                                static_cast<float>(readout_weight)));
+      } else {
+        SQUAWK_ASSIGN_OR_RETURN(ro, gpt2::readout_loss(model, cache, rests, targets, probe));
+      }
+    }
+    if (!train) model.zero_grads();
+    return std::make_pair(lm, ro);
   };
+  // Mean losses over the held-out prompts, in batches; no update.
+  auto holdout_losses = [&]() -> Result<std::pair<double, double>> {
+    cache = {};
+    SQUAWK_RETURN_IF_ERROR(model.extend(cache, policy.prefix_tokens()));
+    std::pair<double, double> sum{0.0, 0.0};
+    int parts = 0;
+    for (size_t i = n_train; i < n_all; i += static_cast<size_t>(batch), ++parts) {
+      std::vector<size_t> idx;
+      for (size_t j = i; j < std::min(n_all, i + static_cast<size_t>(batch)); ++j) idx.push_back(j);
+      SQUAWK_ASSIGN_OR_RETURN(auto l, losses(idx, false));
+      sum.first += l.first;
+      sum.second += l.second;
+    }
+    return std::make_pair(sum.first / parts, sum.second / parts);
+  };
+  if (Status st = model.extend(cache, policy.prefix_tokens()); !st.is_ok()) return failure(st);
   Rng pick(seed);
   const auto t0 = std::chrono::steady_clock::now();
-  double run = 0.0;
+  double run = 0.0, run_ro = 0.0;
   for (long long step = 1; step <= steps; ++step) {
-    std::vector<std::vector<int>> part;
+    std::vector<size_t> idx;
     for (long long b = 0; b < batch; ++b)
-      part.push_back((*corpus)[static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(n_train) - 1))]);
+      idx.push_back(static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(n_train) - 1)));
     model.zero_grads();
-    auto l = model.lm_loss_backward(part, from);
+    std::fill(probe.grads.begin(), probe.grads.end(), 0.0f);
+    auto l = losses(idx, true);
     if (!l) return failure(l.status());
     adam.step();
-    run += *l;
+    if (readout_weight > 0.0) probe_adam.step();
+    run += l->first;
+    run_ro += l->second;
     if (step % log_every == 0 || step == steps) {
-      auto h = holdout_loss();
+      auto h = holdout_losses();
       if (!h) return failure(h.status());
-      const long long k = step % log_every == 0 ? log_every : step % log_every;
+      const double k = static_cast<double>(step % log_every == 0 ? log_every : step % log_every);
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      char row[160];
-      std::snprintf(row, sizeof row, "%lld,%lld,%.1f,%.4f,%.4f\n", step, step * batch, wall, run / k, *h);
-      log << row << std::flush;
-      if (!quiet)
-        std::printf("step %lld: train loss %.4f, held-out loss %.4f nats per token, %.0f s\n", step, run / k, *h,
-                    wall);
-      run = 0.0;
+      char row[200];
+      std::snprintf(row, sizeof row, "%lld,%lld,%.1f,%.4f,%.4f", step, step * batch, wall, run / k, h->first);
+      log << row;
+      if (readout_weight > 0.0) {
+        std::snprintf(row, sizeof row, ",%.6f,%.6f", run_ro / k, h->second);
+        log << row;
+      }
+      log << "\n" << std::flush;
+      if (!quiet) {
+        std::printf("step %lld: train loss %.4f, held-out loss %.4f nats per token", step, run / k, h->first);
+        if (readout_weight > 0.0) std::printf("; read-out mse %.5f, held-out %.5f", run_ro / k, h->second);
+        std::printf(", %.0f s\n", wall);
+      }
+      run = run_ro = 0.0;
     }
   }
   // A plain GPT-2 folder: the policy's action head (untouched here) stays out.

@@ -1,5 +1,6 @@
 // GPT-2 model: forward against an independent numpy implementation, KV cache
-// against the full forward, tail backward against finite differences.
+// against the full forward, tail backward and the read-out loss against finite
+// differences.
 #include <doctest/doctest.h>
 
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include "core/rng.h"
 #include "gpt2/checkpoint.h"
 #include "gpt2/model.h"
+#include "gpt2/readout.h"
 #include "nn/adam.h"
 
 using namespace squawk;
@@ -353,4 +355,80 @@ TEST_CASE("Adam on the trainable tail and a head fits a small target") {
   Model fresh = random_model(kSmall, 21, extras);
   const size_t tail = model.params().size() - model.grads().size();
   CHECK(std::equal(fresh.params().begin(), fresh.params().begin() + static_cast<long>(tail), model.params().begin()));
+}
+
+TEST_CASE("read-out loss: gradients of model and probe match finite differences, weight scales the model's") {
+  Model model = random_model(kSmall, 13);
+  REQUIRE(model.set_trainable_blocks(kSmall.n_layer, true).is_ok());
+  PrefixCache cache;
+  REQUIRE(model.extend(cache, std::vector<int>{5, 6, 7}).is_ok());
+  const std::vector<std::vector<int>> seqs = {{11, 12}, {13}, {14, 15, 16}};
+  const int D = 4;
+  Rng rng(3);
+  std::vector<float> targets(seqs.size() * D);
+  for (float& t : targets) t = static_cast<float>(rng.normal());
+  Readout probe = Readout::make(kSmall.n_embd, D, rng);
+  const float weight = 0.5f;
+  model.zero_grads();
+  auto loss = readout_loss_backward(model, cache, seqs, targets, probe, weight);
+  REQUIRE(loss.is_ok());
+  // The inference forward gives the same loss, and the loss is the mean square by hand.
+  auto same = readout_loss(model, cache, seqs, targets, probe);
+  REQUIRE(same.is_ok());
+  CHECK(*same == doctest::Approx(*loss).epsilon(1e-5));
+  std::vector<float> hidden;
+  REQUIRE(model.forward_last(cache, seqs, hidden).is_ok());
+  double by_hand = 0.0;
+  const int C = kSmall.n_embd;
+  for (size_t b = 0; b < seqs.size(); ++b)
+    for (int d = 0; d < D; ++d) {
+      double y = probe.params[static_cast<size_t>(C) * D + d];
+      for (int c = 0; c < C; ++c) y += static_cast<double>(hidden[b * C + c]) * probe.params[c * D + d];
+      by_hand += (y - targets[b * D + d]) * (y - targets[b * D + d]);
+    }
+  CHECK(*loss == doctest::Approx(by_hand / (seqs.size() * D)).epsilon(1e-5));
+
+  const std::vector<float> model_grad(model.grads().begin(), model.grads().end());
+  const std::vector<float> probe_grad = probe.grads;
+  // The inference loss with the prefix cache rebuilt for the current parameters.
+  auto fresh_loss = [&]() {
+    PrefixCache c;
+    REQUIRE(model.extend(c, cache.tokens).is_ok());
+    return *readout_loss(model, c, seqs, targets, probe);
+  };
+  auto central = [&](float& p) {
+    const float saved = p, eps = 1e-2f;
+    p = saved + eps;
+    const double lp = fresh_loss();
+    p = saved - eps;
+    const double lm = fresh_loss();
+    p = saved;
+    return (lp - lm) / (2.0 * eps);
+  };
+  int checked = 0;
+  for (const TensorSpec& t : model.layout().tensors()) {
+    if (t.name == "wte.weight" || t.name == "wpe.weight") continue;  // Model::backward's own test covers them
+    Rng pick(t.offset + 7);
+    for (int s = 0; s < 2; ++s) {
+      const auto i = t.offset + static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1));
+      const double fd = weight * central(model.params()[i]);
+      INFO(t.name << "[" << (i - t.offset) << "]: analytic " << model_grad[i] << ", finite difference " << fd);
+      CHECK(std::fabs(model_grad[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
+      ++checked;
+    }
+  }
+  for (size_t i : {size_t{0}, size_t{37}, static_cast<size_t>(C) * D + 2}) {
+    const double fd = central(probe.params[i]);
+    INFO("probe[" << i << "]: analytic " << probe_grad[i] << ", finite difference " << fd);
+    CHECK(std::fabs(probe_grad[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
+    ++checked;
+  }
+  CHECK(checked == 2 * (static_cast<int>(model.layout().tensors().size()) - 2) + 3);
+
+  // Shapes that do not fit are errors that say what was expected.
+  auto short_targets = readout_loss(model, cache, seqs, std::vector<float>(5), probe);
+  CHECK(short_targets.status().message() == "read-out targets hold 5 values; 3 sequences of 4 expected");
+  Readout narrow = Readout::make(16, D, rng);
+  CHECK(readout_loss_backward(model, cache, seqs, targets, narrow, 1.0f).status().message().find(
+            "the model is 32 channels wide") != std::string::npos);
 }
