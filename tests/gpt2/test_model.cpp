@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,17 @@ float max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
 }
 
 const Config kSmall{3, 4, 32, 48, 61, 1e-5f};
+
+// (loss(p + eps) - loss(p - eps)) / (2 eps) with eps = 1e-2; p is restored.
+double central_difference(float& p, const std::function<double()>& loss) {
+  const float saved = p, eps = 1e-2f;
+  p = saved + eps;
+  const double lp = loss();
+  p = saved - eps;
+  const double lm = loss();
+  p = saved;
+  return (lp - lm) / (2.0 * eps);
+}
 
 }  // namespace
 
@@ -222,14 +234,7 @@ static void check_tail_gradients(int k, bool embeddings) {
     for (int s = 0; s < (rows.empty() ? 4 : 6); ++s) {
       const size_t i = t.offset + (rows.empty() ? static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1))
                                                 : static_cast<size_t>(rows[s]) * C + static_cast<size_t>(pick.uniform_int(0, C - 1)));
-      float& p = model.params()[i];
-      const float saved = p, eps = 1e-2f;
-      p = saved + eps;
-      const double lp = loss_and_dhidden(nullptr);
-      p = saved - eps;
-      const double lm = loss_and_dhidden(nullptr);
-      p = saved;
-      const double fd = (lp - lm) / (2.0 * eps);
+      const double fd = central_difference(model.params()[i], [&] { return loss_and_dhidden(nullptr); });
       const double an = analytic[i - start];
       INFO(t.name << "[" << (i - t.offset) << "]: analytic " << an << ", finite difference " << fd);
       CHECK(std::fabs(an - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
@@ -297,14 +302,7 @@ TEST_CASE("next-token loss: gradient matches finite differences, and it equals t
                                                 : 0;
       const size_t i = t.offset + (t.name.rfind("w", 0) == 0 ? r * C + static_cast<size_t>(pick.uniform_int(0, C - 1))
                                                              : static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1)));
-      float& p = model.params()[i];
-      const float saved = p, eps = 1e-2f;
-      p = saved + eps;
-      const double lp = reference();
-      p = saved - eps;
-      const double lm = reference();
-      p = saved;
-      const double fd = (lp - lm) / (2.0 * eps);
+      const double fd = central_difference(model.params()[i], reference);
       INFO(t.name << "[" << (i - t.offset) << "]: analytic " << analytic[i] << ", finite difference " << fd);
       CHECK(std::fabs(analytic[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
       ++checked;
@@ -396,29 +394,20 @@ TEST_CASE("read-out loss: gradients of model and probe match finite differences,
     REQUIRE(model.extend(c, cache.tokens).is_ok());
     return *readout_loss(model, c, seqs, targets, probe);
   };
-  auto central = [&](float& p) {
-    const float saved = p, eps = 1e-2f;
-    p = saved + eps;
-    const double lp = fresh_loss();
-    p = saved - eps;
-    const double lm = fresh_loss();
-    p = saved;
-    return (lp - lm) / (2.0 * eps);
-  };
   int checked = 0;
   for (const TensorSpec& t : model.layout().tensors()) {
     if (t.name == "wte.weight" || t.name == "wpe.weight") continue;  // Model::backward's own test covers them
     Rng pick(t.offset + 7);
     for (int s = 0; s < 2; ++s) {
       const auto i = t.offset + static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1));
-      const double fd = weight * central(model.params()[i]);
+      const double fd = weight * central_difference(model.params()[i], fresh_loss);
       INFO(t.name << "[" << (i - t.offset) << "]: analytic " << model_grad[i] << ", finite difference " << fd);
       CHECK(std::fabs(model_grad[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
       ++checked;
     }
   }
   for (size_t i : {size_t{0}, size_t{37}, static_cast<size_t>(C) * D + 2}) {
-    const double fd = central(probe.params[i]);
+    const double fd = central_difference(probe.params[i], fresh_loss);
     INFO("probe[" << i << "]: analytic " << probe_grad[i] << ", finite difference " << fd);
     CHECK(std::fabs(probe_grad[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
     ++checked;
