@@ -38,7 +38,7 @@ expect "gpt2 pretrain"   0 "wrote $pt" -- "$sq" gpt2 pretrain scenarios/horizont
 awk -F, 'NR == 2 { a = $5 } NR == 3 { b = $5 } END { exit !(NR == 3 && b < a) }' "$pt/pretrain.csv" && { echo "ok   pretrain held-out loss falls"; pass=$((pass + 1)); } || { echo "FAIL pretrain loss"; fails=$((fails + 1)); }
 expect "pretrain bad steps" 2 "--steps expects a positive integer" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --steps 0
 # With --readout a linear probe also reads the observation from the last token: two more columns, and its held-out error falls
-expect "pretrain readout" 0 "read-out mse" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$tmp/pt_ro" --episodes 8 --steps 30 --log-every 15 --holdout 16 --readout 1
+expect "pretrain readout" 0 "read-out mse" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$tmp/pt_ro" --episodes 8 --steps 12 --log-every 6 --batch 8 --holdout 16 --readout 1
 awk -F, 'NR == 1 { h = $7 } NR == 2 { a = $7 } NR == 3 { b = $7 } END { exit !(NR == 3 && h == "holdout_readout" && b < a) }' "$tmp/pt_ro/pretrain.csv" && { echo "ok   pretrain read-out error falls"; pass=$((pass + 1)); } || { echo "FAIL pretrain read-out"; fails=$((fails + 1)); }
 expect "pretrain bad readout" 2 "--readout expects a weight in \[0, 1000\]" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --readout -1
 # Imitation (a labelled experiment): the pretrained model clones the shipped mirror MLP; eval reads the result
