@@ -1,6 +1,10 @@
 // GPT-2 prompt policy speed: decisions per second at B = 1 and batched, and
 // the time of one fine-tuning update, for the tiny offline model and for a
-// GPT-2 small folder. Prints figures only; asserts nothing.
+// GPT-2 small folder; then one update of the mirror-symmetric recipe (README:
+// the shipped pretrained folder, --mirror --train-embeddings --blocks 2, PPO 4
+// epochs, 32 episodes on 32 envs) with glibc's default heap and again after
+// heap::keep_freed_memory(), same seeds, in one process (the default first:
+// the heap setting cannot be undone). Prints figures only; asserts nothing.
 //
 // usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M] [--threads N]
 //   --write-small DIR  writes a GPT-2 small folder with random weights in the
@@ -19,7 +23,9 @@
 #include <string>
 
 #include "app/gpt2_policy_factory.h"
+#include "core/heap.h"
 #include "core/paths.h"
+#include "env/horizontal_cr.h"
 #include "env/vec_env.h"
 #include "gpt2/checkpoint.h"
 #include "nn/gemm.h"
@@ -84,6 +90,45 @@ int measure(const std::string& model, const script::Scenario& sc, int batch, int
   return p.error().is_ok() ? 0 : 1;
 }
 
+// Seconds of one update of the mirror-symmetric recipe from the shipped
+// pretrained folder; `params` receives the parameters after it.
+Result<double> mirror_recipe_update(const script::Scenario& sc, std::vector<float>& params) {
+  app::Gpt2PolicyOptions o;
+  o.model = paths::resource("models/horizontal_cr_gpt2_tiny_pretrained");
+  o.spec.trainable_blocks = 2;
+  o.spec.train_embeddings = true;
+  SQUAWK_ASSIGN_OR_RETURN(o.spec.mirror, env::observation_mirror(sc.train_env));
+  SQUAWK_ASSIGN_OR_RETURN(app::Gpt2Policy g, app::make_gpt2_policy(o, sc.train_env, {}));
+  rl::TrainConfig cfg = sc.train;
+  cfg.estimator = "ppo";
+  cfg.epochs = 4;
+  cfg.episodes_per_update = 32;
+  cfg.num_envs = 32;
+  auto envs = env::VecEnv::make(sc.train_env, cfg.num_envs);
+  rl::Trainer trainer(*g.policy, *envs, cfg, 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  trainer.update();
+  const double s = seconds_since(t0);
+  SQUAWK_RETURN_IF_ERROR(g.policy->error());
+  params.assign(g.policy->params().begin(), g.policy->params().end());
+  return s;
+}
+
+int measure_heap(const script::Scenario& sc) {
+  std::vector<float> before, after;
+  auto t_default = mirror_recipe_update(sc, before);
+  heap::keep_freed_memory();
+  auto t_kept = t_default.is_ok() ? mirror_recipe_update(sc, after) : t_default;
+  if (!t_kept) {
+    std::fprintf(stderr, "bench_policy: %s\n", t_kept.status().message().c_str());
+    return 1;
+  }
+  std::printf("mirror recipe update (32 episodes, PPO 4 epochs, every parameter trains): glibc default heap "
+              "%.2f s, freed memory kept %.2f s (%.2fx); parameters after it %s\n",
+              *t_default, *t_kept, *t_default / *t_kept, before == after ? "bit-identical" : "DIFFER");
+  return before == after ? 0 : 1;
+}
+
 int write_small(const std::string& dir, const script::Scenario& sc) {
   app::Gpt2PolicyOptions o;
   auto tiny = app::make_gpt2_policy(o, sc.train_env, {});
@@ -140,6 +185,7 @@ int main(int argc, char** argv) {
   }
   nn::set_num_threads(threads);
   std::printf("%d matrix-product thread%s\n", threads, threads == 1 ? "" : "s");
+  if (int rc = measure_heap(*sc); rc != 0) return rc;
   if (int rc = measure("tiny", *sc, batch, update_episodes); rc != 0) return rc;
   return small.empty() ? 0 : measure(small, *sc, batch, update_episodes);
 }
