@@ -175,7 +175,11 @@ TEST_CASE("mirror-symmetric MLP policy gradient matches finite differences") {
     theta[i] = keep;
     const double fd = (up - down) / (2.0 * eps);
     CAPTURE(i);
-    CHECK(g[i] == doctest::Approx(fd).epsilon(0.02).scale(1e-4));
+    // The float32 loss carries ~1e-7 of rounding, so a central difference over
+    // 2e-2 has up to ~4e-5 of noise (seen at a near-zero component, 2.7e-5
+    // against 3.4e-5, on AMD EPYC family 26): the absolute floor 0.02 * 2e-3
+    // covers it, and components above 1e-3 are held to 2-4 %.
+    CHECK(g[i] == doctest::Approx(fd).epsilon(0.02).scale(2e-3));
     large += std::fabs(fd) > 1e-3;
   }
   CHECK(large >= 4);
