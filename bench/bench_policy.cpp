@@ -1,10 +1,11 @@
-// GPT-2 prompt policy speed: decisions per second at B = 1 and batched, and
-// the time of one fine-tuning update, for the tiny offline model and for a
-// GPT-2 small folder; then one update of the mirror-symmetric recipe (README:
-// the shipped pretrained folder, --mirror --train-embeddings --blocks 2, PPO 4
-// epochs, 32 episodes on 32 envs) with glibc's default heap and again after
-// heap::keep_freed_memory(), same seeds, in one process (the default first:
-// the heap setting cannot be undone). Prints figures only; asserts nothing.
+// GPT-2 prompt policy speed. First one update of the mirror-symmetric recipe
+// (README: the shipped pretrained folder, --mirror --train-embeddings
+// --blocks 2, PPO 4 epochs, 32 episodes on 32 envs) with glibc's default heap
+// and again after heap::keep_freed_memory(), same seeds, in one process (the
+// default first: the heap setting cannot be undone); then, with the heap kept
+// as `squawk` keeps it, decisions per second at B = 1 and batched and the time
+// of one fine-tuning update, for the tiny offline model and for a GPT-2 small
+// folder. Prints figures only; asserts nothing.
 //
 // usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M] [--threads N]
 //   --write-small DIR  writes a GPT-2 small folder with random weights in the
