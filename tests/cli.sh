@@ -49,6 +49,16 @@ expect "imitate no out"  2 "imitate expects SCENARIO.lua OUT.ckpt" -- "$sq" gpt2
 expect "train pretrained" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --lr 1e-3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/run"
 expect "train gpt2 stop-at" 0 "16 episodes, stopping at 8" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --episodes 16 --stop-at 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/stop"
 awk -F, 'END { exit $1 != 8 }' "$pt/stop/log.csv" && { echo "ok   gpt2 stop-at ends at 8"; pass=$((pass + 1)); } || { echo "FAIL gpt2 stop-at: log ends at $(tail -1 "$pt/stop/log.csv")"; fails=$((fails + 1)); }
+# Training evaluates on the validation episodes (eval seed 2024 + 1000003), never
+# on those `squawk eval` reads: the default run's log equals one with that seed
+# named, but for the wall time, and not one on the evaluation seed.
+expect "train gpt2 validation seed" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --lr 1e-3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --validation-seed 1002027 --out "$pt/val"
+expect "train gpt2 on eval seed" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --lr 1e-3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --validation-seed 2024 --out "$pt/evalseed"
+no_wall() { cut -d, -f1,2,4- "$1"; }
+[ "$(no_wall "$pt/run/log.csv")" = "$(no_wall "$pt/val/log.csv")" ] && [ "$(no_wall "$pt/run/log.csv")" != "$(no_wall "$pt/evalseed/log.csv")" ] \
+  && { echo "ok   gpt2 training evaluates on the validation seed"; pass=$((pass + 1)); } \
+  || { echo "FAIL gpt2 training evaluation seed: $(tail -1 "$pt/run/log.csv") / $(tail -1 "$pt/val/log.csv") / $(tail -1 "$pt/evalseed/log.csv")"; fails=$((fails + 1)); }
+expect "bad validation seed" 2 "--validation-seed: expected a seed >= 0, got -1" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --validation-seed -1 --out "$pt/badval"
 expect "eval lookahead"  0 "success" -- "$sq" eval scenarios/horizontal_cr.lua --policy lookahead --episodes 20
 expect "lookahead gym"   2 "plans under the paper rules only" -- "$sq" eval scenarios/horizontal_cr_gym.lua --policy lookahead --episodes 2
 expect "rollout no head" 2 "zero has no discrete action head" -- "$sq" eval scenarios/horizontal_cr.lua --policy rollout:zero --episodes 2

@@ -63,6 +63,8 @@ int cmd_train_gpt2(const ArgV& argv) {
   const double lr_default = popts->model == "tiny" ? cfg.lr : kFolderLr;
   if (Status st = apply_learner_flags(*args, 20000, lr_default, cfg); !st.is_ok())
     return usage_error("train", st.message());
+  auto validation = validation_seed(*args, sc.eval_seed);
+  if (!validation) return usage_error("train", validation.status().message());
 
   const std::string out = *args->get("--out");
   if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
@@ -176,7 +178,7 @@ int cmd_train_gpt2(const ArgV& argv) {
          static_cast<double>(st.entropy), update_s);
     if (meta.progress.episodes >= next_eval || meta.progress.episodes >= cfg.end_episodes()) {
       next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
-      auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, sc.eval_seed, false});
+      auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, *validation, false});
       if (!ev) return failure(ev.status());
       const double k = static_cast<double>(interval);
       char row[256];

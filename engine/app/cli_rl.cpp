@@ -30,10 +30,6 @@ namespace squawk::app {
 
 namespace {
 
-// Evaluations during training use the episodes of eval seed + this offset, so
-// the best-checkpoint choice never sees the episodes of `squawk eval`'s default seed.
-constexpr uint64_t kValidationSeedOffset = 1000003;
-
 rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainProgress& progress) {
   rl::Checkpoint c;
   c.spec = p.spec();
@@ -59,7 +55,7 @@ rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainP
 int cmd_train(const ArgV& argv) {
   if (wants_gpt2(argv)) return cmd_train_gpt2(argv);
   std::vector<std::string> values = learner_flags();
-  values.insert(values.end(), {"--policy", "--validation-seed"});
+  values.push_back("--policy");
   Args::Spec spec = with_vm_flags({values, {"--resume", "--quiet", "--mirror"}});
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("train", args.status().message());
@@ -75,9 +71,8 @@ int cmd_train(const ArgV& argv) {
     return usage_error("train", st.message());
   if (Status st = apply_mirror_flag(*args, sc.train_env, sc.policy.mirror); !st.is_ok())
     return usage_error("train", "--mirror: " + st.message());
-  auto validation_seed =
-      args->get_int("--validation-seed", static_cast<long long>(sc.eval_seed + kValidationSeedOffset));
-  if (!validation_seed) return usage_error("train", validation_seed.status().message());
+  auto validation = validation_seed(*args, sc.eval_seed);
+  if (!validation) return usage_error("train", validation.status().message());
 
   const std::string out = *args->get("--out");
   if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
@@ -177,7 +172,7 @@ int cmd_train(const ArgV& argv) {
     bar.update(progress.episodes, extra);
     if (progress.episodes < next_eval && progress.episodes < cfg.end_episodes()) continue;
     next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
-    auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, static_cast<uint64_t>(*validation_seed), false});
+    auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, *validation, false});
     if (!ev) return failure(ev.status());
     const double k = static_cast<double>(interval_updates);
     char row[256];

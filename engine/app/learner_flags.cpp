@@ -7,8 +7,16 @@ const std::vector<std::string>& learner_flags() {
       "--episodes", "--estimator", "--envs",    "--eval-every", "--eval-episodes", "--lr",
       "--lr-final", "--episodes-per-update",    "--gamma",      "--lambda",        "--entropy",
       "--entropy-final", "--epochs", "--minibatches", "--clip", "--value-iters", "--branch-fraction",
-      "--stop-at"};
+      "--stop-at", "--validation-seed"};
   return flags;
+}
+
+Result<uint64_t> validation_seed(const Args& args, uint64_t eval_seed) {
+  constexpr uint64_t kOffset = 1000003;
+  auto seed = args.get_int("--validation-seed", static_cast<long long>(eval_seed + kOffset));
+  if (!seed) return seed.status();
+  if (*seed < 0) return Status::invalid("--validation-seed: expected a seed >= 0, got " + std::to_string(*seed));
+  return static_cast<uint64_t>(*seed);
 }
 
 Status apply_learner_flags(const Args& args, long long episodes_default, double lr_default, rl::TrainConfig& cfg) {

@@ -15,7 +15,7 @@ namespace squawk::app {
 
 // --episodes --estimator --envs --eval-every --eval-episodes --lr --lr-final
 // --episodes-per-update --gamma --lambda --entropy --entropy-final --epochs
-// --clip --value-iters --branch-fraction --stop-at (--seed, which apply_learner_flags also reads, comes
+// --clip --value-iters --branch-fraction --stop-at --validation-seed (--seed, which apply_learner_flags also reads, comes
 // with the VM flags, vm_options.h)
 const std::vector<std::string>& learner_flags();
 
@@ -25,6 +25,12 @@ const std::vector<std::string>& learner_flags();
 // scales lr_final by the same factor, so the schedule keeps its shape.
 // Error: a flag's value does not parse, or the result is out of range.
 Status apply_learner_flags(const Args& args, long long episodes_default, double lr_default, rl::TrainConfig& cfg);
+
+// The seed of the episodes a run evaluates on while it trains: --validation-seed,
+// by default the scenario's `eval_seed` + 1000003, so that neither the log nor a
+// best-checkpoint choice ever sees the episodes `squawk eval` reads by default.
+// Error: the flag's value does not parse or is negative.
+Result<uint64_t> validation_seed(const Args& args, uint64_t eval_seed);
 
 // "N episodes" for a run's header line, with ", stopping at S" under --stop-at.
 std::string episodes_text(const rl::TrainConfig& cfg);
