@@ -145,6 +145,13 @@ if [ "$trc" -eq 130 ] && grep -q "interrupted:" "$sig/a.log" &&
    cmp -s <(tail -n +3 "$sig/a/policy.ckpt") <(tail -n +3 "$sig/b/policy.ckpt"); then
   echo "ok   train SIGINT + resume"; pass=$((pass + 1))
 else echo "FAIL train SIGINT + resume: rc=$trc, $(cat "$sig/a.log")"; fails=$((fails + 1)); fi
+# The resumed log has the uninterrupted run's rows, none twice (wall time aside).
+if cmp -s <(cut -d, -f1,2,4- "$sig/a/log.csv") <(cut -d, -f1,2,4- "$sig/b/log.csv") &&
+   [ "$(wc -l < "$sig/b/log.csv")" -eq 9 ]; then
+  echo "ok   resumed log"; pass=$((pass + 1))
+else echo "FAIL resumed log: $(cat "$sig/a/log.csv")"; fails=$((fails + 1)); fi
+expect "resume other seed" 1 "checkpoint .*/b/checkpoint.ckpt was trained with seed [0-9]+, not 9" -- \
+  "$sq" train scenarios/horizontal_cr.lua --out "$sig/b" --episodes 4000 --seed 9 --resume
 # --stop-at ends a run early (at the end of the update that reaches it: 32 x 64)
 # on the same schedules: resumed, it matches the
 # uninterrupted run too.

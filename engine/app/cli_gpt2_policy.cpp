@@ -4,8 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +14,6 @@
 #include "app/rl_eval.h"
 #include "app/train_log.h"
 #include "app/vm_options.h"
-#include "core/files.h"
 #include "core/paths.h"
 #include "env/vec_env.h"
 #include "rl/evaluator.h"
@@ -27,9 +24,6 @@ namespace squawk::app {
 
 namespace {
 
-constexpr const char* kLogHeader =
-    "episodes,updates,wall_s,train_mean_return,train_success_rate,entropy,grad_norm,"
-    "eval_success_rate,eval_mean_reward,eval_std_reward\n";
 // Adam step size on a Hugging Face folder unless --lr says otherwise.
 constexpr double kFolderLr = 1e-5;
 
@@ -66,23 +60,19 @@ int cmd_train_gpt2(const ArgV& argv) {
   auto validation = validation_seed(*args, sc.eval_seed);
   if (!validation) return usage_error("train", validation.status().message());
 
-  const std::string out = *args->get("--out");
-  if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
-  const std::string ckpt_path = out + "/checkpoint.ckpt";
-  const std::string log_path = out + "/log.csv";
+  auto run = open_run_folder(*args->get("--out"), args->has("--resume"));
+  if (!run) return failure(run.status());
 
   Gpt2Policy g;
   rl::PromptCheckpoint resume;
-  const bool resuming = args->has("--resume") && files::exists(ckpt_path);
+  const bool resuming = run->resuming;
   const std::string init_path = resuming ? "" : args->get_or("--init", "");
   if (resuming || !init_path.empty()) {
-    auto c = rl::load_prompt_checkpoint(resuming ? ckpt_path : init_path);
+    auto c = rl::load_prompt_checkpoint(resuming ? run->checkpoint : init_path);
     if (!c) return failure(c.status());
     if (resuming) {
-      if (c->progress.seed != cfg.seed)
-        return failure(Status::invalid("checkpoint " + ckpt_path + " was trained with seed " +
-                                       std::to_string(c->progress.seed) + ", not " + std::to_string(cfg.seed)));
-      if (Status st = check_resume_mirror(ckpt_path, c->spec.mirror, popts->spec.mirror); !st.is_ok())
+      if (Status st = check_resume_seed(*run, c->progress.seed, cfg.seed); !st.is_ok()) return failure(st);
+      if (Status st = check_resume_mirror(run->checkpoint, c->spec.mirror, popts->spec.mirror); !st.is_ok())
         return failure(st);
     } else {
       // --init: the learned state (parameters, Adam moments, value baseline)
@@ -117,15 +107,10 @@ int cmd_train_gpt2(const ArgV& argv) {
   rl::Trainer trainer(policy, *train_envs, cfg, meta.progress.updates);
   if (restoring) {
     if (Status st = trainer.restore(resume); !st.is_ok())
-      return failure(st.with_context(resuming ? ckpt_path : init_path));
+      return failure(st.with_context(resuming ? run->checkpoint : init_path));
   }
-  if (resuming && files::exists(log_path)) {
-    if (Status st = trim_log(log_path, meta.progress.episodes); !st.is_ok()) return failure(st);
-  } else if (Status st = files::write_atomic(log_path, kLogHeader); !st.is_ok()) {
-    return failure(st);
-  }
-  std::ofstream log(log_path, std::ios::app);
-  if (!log) return failure(Status::io_error("cannot write " + log_path));
+  auto log = TrainLog::open(*run, meta.progress.episodes);
+  if (!log) return failure(log.status());
 
   const bool quiet = args->has("--quiet");
   if (!quiet)
@@ -138,8 +123,6 @@ int cmd_train_gpt2(const ArgV& argv) {
                 resuming ? " (resumed)" : init_path.empty() ? "" : (" (from " + init_path + ")").c_str());
   const auto t0 = std::chrono::steady_clock::now();
   const double wall0 = meta.progress.wall_s;
-  double ret_sum = 0.0, succ_sum = 0.0;
-  long long interval = 0;
   long long next_eval = cfg.eval_every > 0 ? (meta.progress.episodes / cfg.eval_every + 1) * cfg.eval_every
                                            : cfg.episodes;
   // The bar counts episodes as they finish inside an update (a GPT-2 small
@@ -159,9 +142,7 @@ int cmd_train_gpt2(const ArgV& argv) {
     });
     if (st.interrupted) {
       bar.finish();
-      std::printf("interrupted: %s holds the policy after %lld episodes (%lld updates); "
-                  "--resume continues from there exactly\n",
-                  ckpt_path.c_str(), meta.progress.episodes, meta.progress.updates);
+      print_interrupted(*run, meta.progress);
       return kExitInterrupted;
     }
     const double update_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - u0).count();
@@ -170,9 +151,7 @@ int cmd_train_gpt2(const ArgV& argv) {
     meta.progress.episodes += st.episodes;
     meta.progress.updates = trainer.updates();
     meta.progress.wall_s = wall0 + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    ret_sum += st.mean_return;
-    succ_sum += st.success_rate;
-    ++interval;
+    log->add(meta.progress, st);
     note("update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, %.2f s\n",
          meta.progress.updates, meta.progress.episodes, st.samples, st.mean_return, 100.0 * st.success_rate,
          static_cast<double>(st.entropy), update_s);
@@ -180,35 +159,18 @@ int cmd_train_gpt2(const ArgV& argv) {
       next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
       auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, *validation, false});
       if (!ev) return failure(ev.status());
-      const double k = static_cast<double>(interval);
-      char row[256];
-      std::snprintf(row, sizeof row, "%lld,%lld,%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", meta.progress.episodes,
-                    meta.progress.updates, meta.progress.wall_s, ret_sum / k, succ_sum / k, st.entropy,
-                    st.grad_norm, ev->success_rate, ev->mean_reward, ev->std_reward);
-      log << row << std::flush;
-      ret_sum = succ_sum = 0.0;
-      interval = 0;
+      if (Status s = log->row(meta.progress, *ev); !s.is_ok()) return failure(s);
       note("%lld episodes: eval success %.1f %%, mean reward %.3f (%lld episodes), most frequent action %.1f %%\n",
            meta.progress.episodes, 100.0 * ev->success_rate, ev->mean_reward, ev->episodes,
            100.0 * ev->most_frequent_share());
     }
-    meta.params.assign(policy.params().begin(), policy.params().end());
-    meta.has_adam = true;
-    meta.adam_t = trainer.adam().t();
-    meta.adam_m = trainer.adam().m();
-    meta.adam_v = trainer.adam().v();
-    if (nn::Adam* va = trainer.value_adam()) {
-      meta.value_params = trainer.value_params();
-      meta.value_m = va->m();
-      meta.value_v = va->v();
-      meta.value_t = va->t();
-    }
-    if (Status s = rl::save_prompt_checkpoint(ckpt_path, meta); !s.is_ok()) return failure(s);
+    trainer.save(meta);
+    if (Status s = rl::save_prompt_checkpoint(run->checkpoint, meta); !s.is_ok()) return failure(s);
   }
   bar.finish();
   if (!quiet)
     std::printf("done: %lld episodes in %.0f s; checkpoint %s, log %s\n", meta.progress.episodes,
-                meta.progress.wall_s, ckpt_path.c_str(), log_path.c_str());
+                meta.progress.wall_s, run->checkpoint.c_str(), run->log.c_str());
   return kExitOk;
 }
 

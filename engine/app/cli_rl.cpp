@@ -2,7 +2,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -16,7 +15,6 @@
 #include "app/subcommands.h"
 #include "app/train_log.h"
 #include "app/vm_options.h"
-#include "core/files.h"
 #include "core/paths.h"
 #include "env/recorder.h"
 #include "env/vec_env.h"
@@ -30,21 +28,14 @@ namespace squawk::app {
 
 namespace {
 
+// The policy, and with a trainer the learner's state (what --resume needs).
 rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainProgress& progress) {
   rl::Checkpoint c;
   c.spec = p.spec();
-  c.params.assign(p.params().begin(), p.params().end());
   if (tr) {
-    c.has_adam = true;
-    c.adam_t = tr->adam().t();
-    c.adam_m = tr->adam().m();
-    c.adam_v = tr->adam().v();
-    if (nn::Adam* va = tr->value_adam()) {
-      c.value_params = tr->value_params();
-      c.value_m = va->m();
-      c.value_v = va->v();
-      c.value_t = va->t();
-    }
+    tr->save(c);
+  } else {
+    c.params.assign(p.params().begin(), p.params().end());
   }
   c.progress = progress;
   return c;
@@ -75,28 +66,24 @@ int cmd_train(const ArgV& argv) {
   if (!validation) return usage_error("train", validation.status().message());
 
   const std::string out = *args->get("--out");
-  if (Status st = files::make_dirs(out); !st.is_ok()) return failure(st);
-  const std::string ckpt_path = out + "/checkpoint.ckpt";
-  const std::string log_path = out + "/log.csv";
+  auto run = open_run_folder(out, args->has("--resume"));
+  if (!run) return failure(run.status());
   const std::string best_path = out + "/best.ckpt";
 
   std::unique_ptr<rl::MlpPolicy> policy;
   rl::TrainProgress progress;
   rl::Checkpoint resume;
-  const bool resuming = args->has("--resume") && files::exists(ckpt_path);
-  if (resuming) {
-    auto c = rl::load_checkpoint(ckpt_path);
+  if (run->resuming) {
+    auto c = rl::load_checkpoint(run->checkpoint);
     if (!c) return failure(c.status());
-    if (Status st = check_resume_mirror(ckpt_path, c->spec.mirror, sc.policy.mirror); !st.is_ok())
+    if (Status st = check_resume_seed(*run, c->progress.seed, cfg.seed); !st.is_ok()) return failure(st);
+    if (Status st = check_resume_mirror(run->checkpoint, c->spec.mirror, sc.policy.mirror); !st.is_ok())
       return failure(st);
     auto p = rl::policy_from_checkpoint(*c);
     if (!p) return failure(p.status());
     policy = std::move(*p);
     progress = c->progress;
     resume = std::move(*c);
-    if (progress.seed != cfg.seed)
-      return failure(Status::invalid("checkpoint " + ckpt_path + " was trained with seed " +
-                                     std::to_string(progress.seed) + ", not " + std::to_string(cfg.seed)));
   } else {
     Rng init(cfg.seed);
     auto p = rl::MlpPolicy::make(sc.policy, init);
@@ -116,30 +103,20 @@ int cmd_train(const ArgV& argv) {
   if (!eval_envs) return failure(eval_envs.status());
   const long long m = cfg.episodes_per_update;
   rl::Trainer trainer(*policy, *train_envs, cfg, progress.episodes / m);
-  if (resuming) {
-    if (Status st = trainer.restore(resume); !st.is_ok()) return failure(st.with_context(ckpt_path));
+  if (run->resuming) {
+    if (Status st = trainer.restore(resume); !st.is_ok()) return failure(st.with_context(run->checkpoint));
   }
-
-  const bool append = resuming && files::exists(log_path);
-  if (append) {
-    if (Status st = trim_log(log_path, progress.episodes); !st.is_ok()) return failure(st);
-  }
-  std::ofstream log(log_path, append ? std::ios::app : std::ios::trunc);
-  if (!log) return failure(Status::io_error("cannot write " + log_path));
-  if (!append)
-    log << "episodes,updates,wall_s,train_mean_return,train_success_rate,entropy,grad_norm,"
-           "eval_success_rate,eval_mean_reward,eval_std_reward\n";
+  auto log = TrainLog::open(*run, progress.episodes);
+  if (!log) return failure(log.status());
   const bool quiet = args->has("--quiet");
   if (!quiet)
     std::printf("training %s on %s (%s rules): %s, estimator %s, %zu parameters, seed %llu%s\n",
                 policy->name().c_str(), sc.path.c_str(),
                 sc.train_env.rules == env::Rules::kGym ? "gym" : "paper", episodes_text(cfg).c_str(),
                 cfg.estimator.c_str(), policy->params().size(),
-                static_cast<unsigned long long>(cfg.seed), resuming ? " (resumed)" : "");
+                static_cast<unsigned long long>(cfg.seed), run->resuming ? " (resumed)" : "");
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
   const double wall0 = progress.wall_s;
-  double ret_sum = 0.0, succ_sum = 0.0, ent = 0.0, gnorm = 0.0;
-  long long interval_updates = 0;
   double best_success = -1.0;
   long long next_eval = cfg.eval_every > 0 ? (progress.episodes / cfg.eval_every + 1) * cfg.eval_every
                                            : cfg.episodes;
@@ -147,22 +124,16 @@ int cmd_train(const ArgV& argv) {
   while (progress.episodes < cfg.end_episodes()) {
     if (InterruptGuard::requested()) {
       bar.finish();
-      if (Status s = rl::save_checkpoint(ckpt_path, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
+      if (Status s = rl::save_checkpoint(run->checkpoint, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
         return failure(s);
-      std::printf("interrupted: %s holds the policy after %lld episodes (%lld updates); "
-                  "--resume continues from there exactly\n",
-                  ckpt_path.c_str(), progress.episodes, progress.updates);
+      print_interrupted(*run, progress);
       return kExitInterrupted;
     }
     const rl::UpdateStats st = trainer.update();
     progress.episodes += st.episodes;
     progress.updates = trainer.updates();
     progress.wall_s = wall0 + bar.elapsed();
-    ret_sum += st.mean_return;
-    succ_sum += st.success_rate;
-    ent = st.entropy;
-    gnorm = st.grad_norm;
-    ++interval_updates;
+    log->add(progress, st);
     if (Status rs = sc.reward_error(); !rs.is_ok()) {
       bar.finish();
       return failure(rs);
@@ -174,15 +145,8 @@ int cmd_train(const ArgV& argv) {
     next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
     auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, *validation, false});
     if (!ev) return failure(ev.status());
-    const double k = static_cast<double>(interval_updates);
-    char row[256];
-    std::snprintf(row, sizeof row, "%lld,%lld,%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n",
-                  progress.episodes, progress.updates, progress.wall_s, ret_sum / k, succ_sum / k, ent,
-                  gnorm, ev->success_rate, ev->mean_reward, ev->std_reward);
-    log << row << std::flush;
-    ret_sum = succ_sum = 0.0;
-    interval_updates = 0;
-    if (Status s = rl::save_checkpoint(ckpt_path, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
+    if (Status s = log->row(progress, *ev); !s.is_ok()) return failure(s);
+    if (Status s = rl::save_checkpoint(run->checkpoint, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
       return failure(s);
     if (ev->success_rate > best_success) {
       best_success = ev->success_rate;
@@ -203,8 +167,8 @@ int cmd_train(const ArgV& argv) {
     return failure(s);
   if (!quiet)
     std::printf("done: %lld episodes in %s; checkpoint %s, policy %s, log %s\n", progress.episodes,
-                fmt_duration(progress.wall_s).c_str(), ckpt_path.c_str(), policy_path.c_str(),
-                log_path.c_str());
+                fmt_duration(progress.wall_s).c_str(), run->checkpoint.c_str(), policy_path.c_str(),
+                run->log.c_str());
   return kExitOk;
 }
 

@@ -5,7 +5,9 @@
 //   line 1: "squawk-checkpoint 1"
 //   line 2: a JSON object: policy spec (obs_size, hidden, head, action_values),
 //           num_params, has_adam, adam_t, and the training progress
-//           (episodes, updates, seed, estimator, scenario, wall_s)
+//           (episodes, updates, seed, estimator, scenario, wall_s, and the
+//           open log interval's interval_return, interval_success,
+//           interval_updates)
 //   then raw little-endian float32: params[num_params], and when has_adam
 //   Adam's m[num_params] and v[num_params]; then, when num_value_params > 0,
 //   the learner's value baseline: params, Adam m, Adam v (num_value_params each).
@@ -24,9 +26,15 @@ struct TrainProgress {
   long long episodes = 0;  // [-] training episodes finished
   long long updates = 0;   // [-] optimiser steps taken
   unsigned long long seed = 0;
-  std::string estimator;   // "vpg" | "improved"
+  std::string estimator;   // "vpg" | "improved" | "ppo" | "vine"
   std::string scenario;    // the scenario file trained on
   double wall_s = 0.0;     // [s] training wall time so far
+  // The open log.csv interval, whose row averages the training columns over
+  // its updates, so that a resumed run writes the row an uninterrupted one
+  // would: sums of the updates' mean returns and success rates, and their count.
+  double interval_return = 0.0;
+  double interval_success = 0.0;
+  long long interval_updates = 0;
 };
 
 // The learner's state every checkpoint kind carries, so that --resume

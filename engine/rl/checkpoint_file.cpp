@@ -107,6 +107,9 @@ Status write_train_checkpoint(const std::string& path, std::string_view magic, n
   h["estimator"] = p.estimator;
   h["scenario"] = p.scenario;
   h["wall_s"] = p.wall_s;
+  h["interval_return"] = p.interval_return;
+  h["interval_success"] = p.interval_success;
+  h["interval_updates"] = p.interval_updates;
   const std::vector<float> none;
   return write_checkpoint_file(path, magic, h,
                                {&s.params, s.has_adam ? &s.adam_m : &none, s.has_adam ? &s.adam_v : &none,
@@ -127,6 +130,9 @@ void read_train_header(const CheckpointFile& f, TrainState& s) {
   p.estimator = h.value("estimator", "");
   p.scenario = h.value("scenario", "");
   p.wall_s = h.value("wall_s", 0.0);
+  p.interval_return = h.value("interval_return", 0.0);
+  p.interval_success = h.value("interval_success", 0.0);
+  p.interval_updates = whole<long long>(h, "interval_updates", 0LL);
 }
 
 Status read_train_arrays(const CheckpointFile& f, const std::string& path, TrainState& s) {

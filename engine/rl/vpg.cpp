@@ -99,6 +99,19 @@ Status Trainer::restore(const TrainState& s) {
   return Status::ok();
 }
 
+void Trainer::save(TrainState& s) {
+  const std::span<float> p = policy_.params();
+  s.params.assign(p.begin(), p.end());
+  s.has_adam = true;
+  s.adam_t = adam_.t();
+  s.adam_m = adam_.m();
+  s.adam_v = adam_.v();
+  s.value_params = value_params_;
+  s.value_m = value_adam_ ? value_adam_->m() : std::vector<float>{};
+  s.value_v = value_adam_ ? value_adam_->v() : std::vector<float>{};
+  s.value_t = value_adam_ ? value_adam_->t() : 0;
+}
+
 double Trainer::coefficients(std::vector<float>& coef) {
   const size_t n = batch_samples_.size();
   coef.assign(n, 0.0f);

@@ -118,6 +118,9 @@ class Trainer {
   // moments, those, the Adam step and the value baseline with its Adam state.
   // Error unless the sizes are exactly this learner's.
   Status restore(const TrainState& s);
+  // restore's inverse: the policy's parameters, Adam moments and step, and
+  // the value baseline with its Adam state into `s` (s.progress untouched).
+  void save(TrainState& s);
 
  private:
   struct Sample {

@@ -114,6 +114,9 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   c.adam_m.assign(c.params.size(), 0.5f);
   c.adam_v.assign(c.params.size(), 0.25f);
   c.progress.episodes = 1234;
+  c.progress.interval_return = -0.1 / 3.0;  // not exact in decimal: the JSON must round-trip it
+  c.progress.interval_success = 2.5;
+  c.progress.interval_updates = 3;
   c.value_params.assign(10, 0.125f);
   c.value_m.assign(10, 1.0f);
   c.value_v.assign(10, 2.0f);
@@ -126,6 +129,9 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   CHECK(back->adam_v == c.adam_v);
   CHECK(back->adam_t == 7);
   CHECK(back->progress.episodes == 1234);
+  CHECK(back->progress.interval_return == c.progress.interval_return);
+  CHECK(back->progress.interval_success == 2.5);
+  CHECK(back->progress.interval_updates == 3);
   CHECK(back->value_params == c.value_params);
   CHECK(back->value_v == c.value_v);
   CHECK(back->value_t == 3);
