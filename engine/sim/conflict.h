@@ -46,6 +46,7 @@ struct CdSettings {
   double dtlook = 300.0;            // [s] look-ahead time
   double asas_dt = 1.0;             // [s] interval between detections
   int64_t max_pairs = 100000;       // unique conflict (and LoS) pairs stored per detection
+  bool all_pairs = false;           // detect with the all-pairs reference (tests, bench_sim)
 };
 
 struct ConflictPair {
