@@ -255,23 +255,29 @@ bool ConflictDetector::build_grid(const Traffic& t, const CdSettings& s) {
   return true;
 }
 
+template <bool kEdge>
 void ConflictDetector::scan(const Traffic& t, const CdSettings& s, int p, int q0, int q1) {
   if (q1 <= q0) return;
   const double r2 = s.rpz * s.rpz, h = s.hpz;
-  const double lat_p = s_lat_[p], lon_p = s_lon_[p], chl_p = s_chl_[p], shl_p = s_shl_[p];
-  const double u_p = s_ue_[p], v_p = s_vn_[p], alt_p = s_alt_[p], vs_p = s_vs_[p];
-  uint8_t* flag = flag_.data();
-  for (int q = q0; q < q1; ++q) {
-    const Rel g = relative(lat_p, lon_p, chl_p, shl_p, u_p, v_p, s_lat_[q], s_lon_[q], s_chl_[q], s_shl_[q],
-                           s_ue_[q], s_vn_[q]);
-    const bool edge = std::fabs(s_lon_[q] - lon_p) == 180.0;  // pass1 asymmetric: test_pair decides
-    flag[q - q0] = static_cast<uint8_t>(pass1(g, r2, h, alt_p, s_alt_[q], vs_p, s_vs_[q]) | edge);
+  // Local pointers: the byte stores to `flag` may alias anything, so members
+  // read through `this` would be reloaded every iteration (no vectorising).
+  const double *lat = s_lat_.data(), *lon = s_lon_.data(), *chl = s_chl_.data(), *shl = s_shl_.data();
+  const double *ue = s_ue_.data(), *vn = s_vn_.data(), *alt = s_alt_.data(), *vs = s_vs_.data();
+  const double lat_p = lat[p], lon_p = lon[p], chl_p = chl[p], shl_p = shl[p];
+  const double u_p = ue[p], v_p = vn[p], alt_p = alt[p], vs_p = vs[p];
+  uint8_t* flag = flag_.data() + q0;
+  const int len = q1 - q0;
+  lat += q0, lon += q0, chl += q0, shl += q0, ue += q0, vn += q0, alt += q0, vs += q0;
+  for (int k = 0; k < len; ++k) {
+    const Rel g = relative(lat_p, lon_p, chl_p, shl_p, u_p, v_p, lat[k], lon[k], chl[k], shl[k], ue[k], vn[k]);
+    const bool edge = kEdge && std::fabs(lon[k] - lon_p) == 180.0;  // pass1 asymmetric: test_pair decides
+    flag[k] = static_cast<uint8_t>(pass1(g, r2, h, alt_p, alt[k], vs_p, vs[k]) | edge);
   }
-  examined_ += q1 - q0;
+  examined_ += len;
   const int i = order_[p];
-  for (int q = q0; q < q1; ++q) {
-    if (!flag[q - q0]) continue;
-    const int j = order_[q];
+  for (int k = 0; k < len; ++k) {
+    if (!flag[k]) continue;
+    const int j = order_[q0 + k];
     test_pair(t, s, std::min(i, j), std::max(i, j));
   }
 }
@@ -289,30 +295,34 @@ void ConflictDetector::detect(const Traffic& t, const CdSettings& s) {
     for (int k = 0; k < m; ++k) {
       const int end_k = start(b, k + 1);
       for (int p = start(b, k); p < end_k; ++p) {
-        // Same band: the rest of this cell and the whole next cell of the
-        // ring (each neighbouring cell pair once, from its western cell).
-        scan(t, s, p, p + 1, end_k);
-        if (m >= 3) {
+        if (m == 1) {
+          // One cell (near a pole, or a reach of the globe's size): the rest
+          // of the band, where longitudes 180 deg apart can be within reach.
+          scan<true>(t, s, p, p + 1, end_k);
+        } else {
+          // The rest of this cell and the whole next cell of the ring (each
+          // neighbouring cell pair once, from its western cell).
+          scan<false>(t, s, p, p + 1, end_k);
           const int k1 = (k + 1) % m;
-          scan(t, s, p, start(b, k1), start(b, k1 + 1));
+          scan<false>(t, s, p, start(b, k1), start(b, k1 + 1));
         }
         if (b + 1 == nb) continue;
         // Next band: the cells within one cell of this aircraft's longitude.
         const int m1 = band_cells_[b + 1];
         if (m1 == 1) {
-          scan(t, s, p, start(b + 1, 0), start(b + 1, 1));
+          scan<true>(t, s, p, start(b + 1, 0), start(b + 1, 1));
           continue;
         }
         const int kk = std::min(m1 - 1, static_cast<int>((s_lon_[p] + 180.0) * (m1 / 360.0)));
         const int lo = kk - 1, hi = kk + 1;
         if (lo < 0) {
-          scan(t, s, p, start(b + 1, 0), start(b + 1, hi + 1));
-          scan(t, s, p, start(b + 1, m1 - 1), start(b + 1, m1));
+          scan<false>(t, s, p, start(b + 1, 0), start(b + 1, hi + 1));
+          scan<false>(t, s, p, start(b + 1, m1 - 1), start(b + 1, m1));
         } else if (hi >= m1) {
-          scan(t, s, p, start(b + 1, lo), start(b + 1, m1));
-          scan(t, s, p, start(b + 1, 0), start(b + 1, 1));
+          scan<false>(t, s, p, start(b + 1, lo), start(b + 1, m1));
+          scan<false>(t, s, p, start(b + 1, 0), start(b + 1, 1));
         } else {
-          scan(t, s, p, start(b + 1, lo), start(b + 1, hi + 1));
+          scan<false>(t, s, p, start(b + 1, lo), start(b + 1, hi + 1));
         }
       }
     }

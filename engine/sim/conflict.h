@@ -110,6 +110,9 @@ class ConflictDetector {
   void finish();
   // Pass 1 of aircraft at sorted position p against sorted positions
   // [q0, q1), then test_pair() on the survivors (the grid's inner loop).
+  // kEdge: also pass pairs exactly 180 deg of longitude apart to test_pair
+  // (needed in one-cell bands only: elsewhere such pairs are beyond reach).
+  template <bool kEdge>
   void scan(const Traffic& t, const CdSettings& s, int p, int q0, int q1);
   // Builds the grid; false when the traffic is outside its domain (a
   // position outside [-90, 90] x [-180, 180] or not finite, a speed not
