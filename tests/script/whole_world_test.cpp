@@ -45,9 +45,9 @@ TEST_CASE("whole_world.lua: seeded flights between airports that a stack loads a
   }
   const std::string dir = (fs::temp_directory_path() / ("squawk_ww_" + std::to_string(::getpid()))).string();
   REQUIRE(files::make_dirs(dir).is_ok());
-  const std::string a = generate(nav.string(), dir, "a.scn", 300, 1800, 3);
-  CHECK(generate(nav.string(), dir, "b.scn", 300, 1800, 3) == a);  // same seed, same file
-  CHECK(generate(nav.string(), dir, "c.scn", 300, 1800, 4) != a);
+  const std::string a = generate(nav.string(), dir, "a.scn", 300, 900, 3);
+  CHECK(generate(nav.string(), dir, "b.scn", 300, 900, 3) == a);  // same seed, same file
+  CHECK(generate(nav.string(), dir, "c.scn", 300, 900, 4) != a);
 
   // Every CRE at t = 0 cruises at a level of the semicircular rule (odd
   // hundreds of feet eastbound, even westbound); later ones are departures.
@@ -87,7 +87,7 @@ TEST_CASE("whole_world.lua: seeded flights between airports that a stack loads a
   command::Stack st(0);
   st.set_base_dir(dir);
   REQUIRE(st.load_scenario(dir + "/a.scn").is_ok());
-  REQUIRE(st.run_until(1800.0).is_ok());
+  REQUIRE(st.run_until(900.0).is_ok());
   CHECK(st.tally().failed.empty());
   CHECK(st.sim().n() == airborne + departures - deletions);
   CHECK(st.sim().cd_settings().enabled);
