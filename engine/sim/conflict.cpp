@@ -336,6 +336,7 @@ void ConflictDetector::clear(bool reset_totals) {
   std::fill(inconf_.begin(), inconf_.end(), 0);
   prev_conf_.clear();
   prev_los_.clear();
+  truncated_ = false;
   if (reset_totals) total_conf_ = total_los_ = 0;
 }
 
