@@ -8,22 +8,40 @@
 // so other processes on a shared machine do not deflate them; the wall-clock
 // share (cpu / wall) of each row is printed alongside.
 //
-// Usage: bench_sim [CPU seconds per row, default 1.0]
+// Whole-world traffic first (scenarios/whole_world.lua on BlueSky's
+// airports.dat from $SQUAWK_NAVDATA or ../shared/bluesky/navdata; uniform over
+// the sphere without it): simulated seconds per CPU second (x real time) at
+// 3 750 and 25 000 aircraft with the grid detector and the all-pairs
+// reference, detection cost, heap bytes per aircraft, the growth exponent of
+// the cost of a simulated second with N, and two simulations side by side on
+// two threads.
+//
+// Usage: bench_sim [CPU seconds per row, default 1.0] [--world-only]
+#include <malloc.h>
 #include <time.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string>
+#include <thread>
+#include <vector>
 
+#include "command/stack.h"
+#include "core/files.h"
 #include "core/geo.h"
+#include "core/paths.h"
 #include "core/rng.h"
 #include "core/units.h"
 #include "sim/conflict.h"
 #include "sim/openap_data.h"
 #include "sim/simulation.h"
+#include "script/vm.h"
 
 using namespace squawk;
 using namespace squawk::sim;
@@ -100,10 +118,164 @@ int reference_cd(const Traffic& t, const CdSettings& s) {
     }
   return nconf;
 }
+// Heap bytes in use (glibc), for bytes per aircraft.
+double heap_bytes() {
+  const struct mallinfo2 m = mallinfo2();
+  return static_cast<double>(m.uordblks + m.hblkhd);
+}
+
+std::string navdata_dir() {
+  if (const char* e = std::getenv("SQUAWK_NAVDATA"); e && *e) return e;
+  const std::string shared = paths::home() + "/../shared/bluesky/navdata";
+  return files::exists(shared + "/airports.dat") ? shared : "";
+}
+
+// A stack holding n whole-world flights (all airborne, no later commands),
+// detection every 1 s with 5 NM / 1000 ft / 300 s, class performance model.
+// With navdata: scenarios/whole_world.lua (seed 1) written to `tmp` and
+// loaded; without: uniform over the sphere.
+std::unique_ptr<command::Stack> world(int n, const std::string& nav, const std::string& tmp) {
+  auto st = std::make_unique<command::Stack>(1);
+  sim::Simulation& sim = st->sim();
+  sim.set_openap(nullptr);
+  if (!nav.empty()) {
+    script::VmOptions vo;
+    vo.seed = 1;
+    vo.out_dir = tmp;
+    vo.navdata_dir = nav;
+    script::Vm vm(vo);
+    const std::string name = "world_" + std::to_string(n) + ".scn";
+    const Status gen = vm.run_file(paths::resource("scenarios/whole_world.lua"), {std::to_string(n), "0", name, "quiet"});
+    if (!gen.is_ok()) {
+      std::fprintf(stderr, "bench_sim: %s\n", gen.message().c_str());
+      std::exit(1);
+    }
+    st->set_base_dir(tmp);
+    const Status load = st->load_scenario(tmp + "/" + name);
+    const Status run = load.is_ok() ? st->run_until(0.0) : load;
+    if (!run.is_ok()) {
+      std::fprintf(stderr, "bench_sim: %s\n", run.message().c_str());
+      std::exit(1);
+    }
+  } else {
+    Rng rng(1);
+    for (int i = 0; i < n; ++i)
+      (void)sim.create("W" + std::to_string(i), "A320", std::asin(rng.uniform(-1.0, 1.0)) / units::kDeg,
+                       rng.uniform(-180.0, 180.0), rng.uniform(0.0, 360.0),
+                       units::fl_to_m(300.0 + 10.0 * static_cast<double>(rng.uniform_int(0, 9))), 230.0);
+  }
+  sim.set_cd(true);
+  (void)sim.set_asas_dt(1.0);
+  return st;
+}
+
+// Simulated seconds per CPU second: whole simulated seconds (20 steps, one
+// detection each) until `budget` CPU seconds have passed.
+Rate real_time(sim::Simulation& sim, double budget) {
+  const int steps = static_cast<int>(std::lround(1.0 / sim.dt()));
+  const auto w0 = Clock::now();
+  const double c0 = thread_cpu_s();
+  double cpu = 0.0;
+  int secs = 0;
+  do {
+    for (int k = 0; k < steps; ++k) sim.step();
+    ++secs;
+    cpu = thread_cpu_s() - c0;
+  } while (cpu < budget);
+  return {secs / cpu, cpu / wall_since(w0)};
+}
+
+// Least-squares slope of log y against log x.
+double slope(const std::vector<double>& x, const std::vector<double>& y) {
+  double mx = 0, my = 0;
+  for (size_t k = 0; k < x.size(); ++k) mx += std::log(x[k]), my += std::log(y[k]);
+  mx /= static_cast<double>(x.size()), my /= static_cast<double>(x.size());
+  double sxy = 0, sxx = 0;
+  for (size_t k = 0; k < x.size(); ++k) {
+    const double dx = std::log(x[k]) - mx;
+    sxy += dx * (std::log(y[k]) - my), sxx += dx * dx;
+  }
+  return sxy / sxx;
+}
+
+void world_section(double budget) {
+  const std::string nav = navdata_dir();
+  const std::string tmp = "/tmp/squawk_bench_sim_" + std::to_string(::getpid());
+  (void)files::make_dirs(tmp);
+  std::printf("whole-world traffic (%s), dt 0.05 s, CD every 1 s, 5 NM / 1000 ft, 300 s look-ahead, 1 thread\n",
+              nav.empty() ? "uniform over the sphere: set SQUAWK_NAVDATA for scenarios/whole_world.lua"
+                          : ("scenarios/whole_world.lua seed 1, " + nav).c_str());
+  std::printf("%8s  %-10s %12s %14s %9s %16s %11s %11s %9s\n", "aircraft", "detection", "x real time",
+              "ms/detection", "CD share", "pairs examined", "conf pairs", "bytes/ac", "cpu/wall");
+  std::vector<double> ns, grid_cost, ap_ns, ap_cost;
+  double rt_grid_3750 = 0.0;
+  for (const int n : {1000, 2000, 3750, 8000, 16000, 25000}) {
+    const double h0 = heap_bytes();
+    auto st = world(n, nav, tmp);
+    st->sim().step();  // the first detection sizes the detector's buffers
+    const double bytes = (heap_bytes() - h0) / n;
+    const sim::Simulation& start = st->sim();
+    // Both detectors on the same state: the same pairs, then their cost.
+    sim::ConflictDetector grid, all;
+    grid.detect(start.traffic(), start.cd_settings());
+    all.detect_all_pairs(start.traffic(), start.cd_settings());
+    bool same = grid.pairs().size() == all.pairs().size() && grid.los().size() == all.los().size();
+    for (size_t k = 0; same && k < grid.pairs().size(); ++k) {
+      const sim::ConflictPair &p = grid.pairs()[k], &q = all.pairs()[k];
+      same = p.own == q.own && p.intruder == q.intruder && p.tcpa == q.tcpa && p.dcpa == q.dcpa && p.tlos == q.tlos;
+    }
+    if (!same) {
+      std::fprintf(stderr, "bench_sim: grid and all-pairs detection differ at %d aircraft\n", n);
+      std::exit(1);
+    }
+    const bool shown = n == 3750 || n == 25000;
+    for (const bool ap : {false, true}) {
+      if (ap && n > 8000 && n != 25000) continue;  // the reference is O(N^2): its fit stops at 8000
+      sim::ConflictDetector& cd = ap ? all : grid;
+      const Rate det = measure([&] { ap ? cd.detect_all_pairs(start.traffic(), start.cd_settings())
+                                        : cd.detect(start.traffic(), start.cd_settings()); },
+                               std::min(budget, 0.3));
+      sim::Simulation sim = start;  // each method runs from the same state
+      sim.set_cd_all_pairs(ap);
+      const Rate rt = real_time(sim, budget);
+      (ap ? ap_ns : ns).push_back(n);
+      (ap ? ap_cost : grid_cost).push_back(1.0 / rt.per_cpu_s);
+      if (!ap && n == 3750) rt_grid_3750 = rt.per_cpu_s;
+      if (shown)
+        std::printf("%8d  %-10s %12.1f %14.3f %8.1f%% %16lld %11zu %11.0f %9.2f\n", n, ap ? "all pairs" : "grid",
+                    rt.per_cpu_s, 1e3 / det.per_cpu_s, 100.0 * rt.per_cpu_s / det.per_cpu_s,
+                    static_cast<long long>(cd.examined()), cd.pairs().size() / 2, bytes, rt.cpu_share);
+    }
+  }
+  if (ap_ns.back() == 25000) ap_ns.pop_back(), ap_cost.pop_back();
+  std::printf("growth of the CPU time of a simulated second with N: grid N^%.2f (N = 1000..25000), "
+              "all pairs N^%.2f (N = 1000..8000)\n", slope(ns, grid_cost), slope(ap_ns, ap_cost));
+
+  // Two independent simulations of 3750 aircraft, one per thread.
+  {
+    auto a = world(3750, nav, tmp), b = world(3750, nav, tmp);
+    Rate ra{}, rb{};
+    const auto w0 = Clock::now();
+    std::thread ta([&] { ra = real_time(a->sim(), budget); });
+    std::thread tb([&] { rb = real_time(b->sim(), budget); });
+    ta.join();
+    tb.join();
+    const double wall = wall_since(w0);
+    std::printf("2 threads, one simulation of 3750 aircraft each: %.1f and %.1f x real time per CPU second "
+                "(1 thread: %.1f), cpu/wall %.2f and %.2f, %.1f s wall\n",
+                ra.per_cpu_s, rb.per_cpu_s, rt_grid_3750, ra.cpu_share, rb.cpu_share, wall);
+  }
+  std::error_code ec;
+  std::filesystem::remove_all(tmp, ec);
+  std::printf("\n");
+}
 }  // namespace
 
 int main(int argc, char** argv) {
   const double budget = argc > 1 ? std::atof(argv[1]) : 1.0;
+  const bool world_only = argc > 2 && std::string(argv[2]) == "--world-only";
+  world_section(budget);
+  if (world_only) return 0;
   std::printf("squawk sim benchmark, 1 thread, dt 0.05 s, %.1f s per row\n\n", budget);
   std::printf("%8s  %-22s %14s %16s %10s %9s\n", "aircraft", "conflict detection", "steps/s", "aircraft-steps/s",
               "conf pairs", "cpu/wall");

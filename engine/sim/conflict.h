@@ -12,9 +12,23 @@
 // reported in both orders, as BlueSky's confpairs are. rpz, hpz and dtlook
 // are global (BlueSky's per-aircraft ZONER/ZONEDH values are not modelled).
 //
-// Cost: O(n^2) per detect() with no trig per pair (cos of the mean latitude
-// comes from per-aircraft half-angle sines/cosines) and no allocation once
-// the output buffers have grown.
+// Candidate pairs (detect()): a latitude-band x longitude-cell grid whose
+// cells are at least the look-ahead reach R + 2 max|gs| dtlook wide in the
+// detector's own flat-earth metric (bands touching a pole are one cell;
+// longitude cells form a ring across the antimeridian), so every pair that
+// can be in conflict or LoS shares a cell or neighbouring cells; see
+// docs/whole_sky.md for the argument. Each candidate is then tested exactly as
+// detect_all_pairs() tests it (lower index as ownship, same operations), so
+// both produce bit-identical pairs, LoS, flags and counts. Cost: O(n + the
+// pairs within reach) per detect() for traffic spread over the globe; O(n^2)
+// in the worst case (all aircraft within one reach). No trig per pair (cos of
+// the mean latitude comes from per-aircraft half-angle sines/cosines) and no
+// allocation once the buffers have grown.
+//
+// Memory: O(n) scratch plus the pairs found, capped: at most
+// CdSettings::max_pairs unique conflict pairs and as many LoS pairs are
+// stored per detection; beyond that detection goes on without storing and
+// truncated() is set (which pairs are kept is then unspecified).
 #pragma once
 
 #include <cstdint>
@@ -31,6 +45,8 @@ struct CdSettings {
   double hpz = 1000.0 * 0.3048;     // [m] protected-zone half height (1000 ft)
   double dtlook = 300.0;            // [s] look-ahead time
   double asas_dt = 1.0;             // [s] interval between detections
+  int64_t max_pairs = 100000;       // unique conflict (and LoS) pairs stored per detection
+  bool all_pairs = false;           // detect with the all-pairs reference (tests, bench_sim)
 };
 
 struct ConflictPair {
@@ -57,6 +73,9 @@ class ConflictDetector {
   // BlueSky's confpairs) and updates
   // the per-aircraft inconf flags and the cumulative counts.
   void detect(const Traffic& traf, const CdSettings& s);
+  // The all-pairs reference: the same results by comparing every pair
+  // (tests and bench_sim).
+  void detect_all_pairs(const Traffic& traf, const CdSettings& s);
   // Forgets current pairs (CD switched off or traffic reset); cumulative
   // counts are kept unless `reset_totals`.
   void clear(bool reset_totals);
@@ -75,10 +94,31 @@ class ConflictDetector {
   // the last reset (a pair counts again after it has left and re-entered).
   int64_t total_conflicts() const { return total_conf_; }
   int64_t total_los() const { return total_los_; }
+  // The last detection hit CdSettings::max_pairs and stored only part of
+  // the pairs it found.
+  bool truncated() const { return truncated_; }
+  // Pairs the last detection examined (n(n-1)/2 for all pairs; the grid's
+  // candidates otherwise).
+  int64_t examined() const { return examined_; }
 
   void serialize(std::string& out) const;
 
  private:
+  void begin(const Traffic& t, const CdSettings& s);
+  // Full state-based test of the pair (a < b, a as ownship); records it.
+  void test_pair(const Traffic& t, const CdSettings& s, int a, int b);
+  void finish();
+  // Pass 1 of aircraft at sorted position p against sorted positions
+  // [q0, q1), then test_pair() on the survivors (the grid's inner loop).
+  // kEdge: also pass pairs exactly 180 deg of longitude apart to test_pair
+  // (needed in one-cell bands only: elsewhere such pairs are beyond reach).
+  template <bool kEdge>
+  void scan(const Traffic& t, const CdSettings& s, int p, int q0, int q1);
+  // Builds the grid; false when the traffic is outside its domain (a
+  // position outside [-90, 90] x [-180, 180] or not finite, a speed not
+  // finite), where detect() falls back to all pairs.
+  bool build_grid(const Traffic& t, const CdSettings& s);
+
   std::vector<ConflictPair> pairs_;
   std::vector<LosPair> los_;
   std::vector<uint8_t> inconf_;
@@ -87,8 +127,16 @@ class ConflictDetector {
   // Per-aircraft scratch: half-latitude cos/sin, candidate flags.
   std::vector<double> chl_, shl_;
   std::vector<uint8_t> flag_;
+  // Grid: per band its first cell and cell count; per cell its first sorted
+  // position (cells band-major, one past the end last); aircraft in cell
+  // order (ascending index within a cell) with their data gathered.
+  std::vector<int> band_cell0_, band_cells_, cell_start_, cell_of_, order_;
+  std::vector<double> s_lat_, s_lon_, s_chl_, s_shl_, s_ue_, s_vn_, s_alt_, s_vs_;
+  double band_deg_ = 180.0;  // [deg] band height
   int64_t total_conf_ = 0;
   int64_t total_los_ = 0;
+  int64_t stored_conf_ = 0, stored_los_ = 0, examined_ = 0;
+  bool truncated_ = false;
 };
 
 }  // namespace squawk::sim

@@ -88,7 +88,8 @@ void Simulation::step() {
 }
 
 void Simulation::update_asas() {
-  cd_.detect(traf_, cds_);
+  if (cds_.all_pairs) cd_.detect_all_pairs(traf_, cds_);
+  else cd_.detect(traf_, cds_);
   if (crs_.enabled) cr_.resolve(traf_, cd_, cds_, crs_, perf_opts_);
 }
 

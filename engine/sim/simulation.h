@@ -178,6 +178,8 @@ class Simulation {
   Status set_hpz(double hpz_m);        // > 0
   Status set_dtlook(double dtlook_s);  // > 0
   Status set_asas_dt(double asas_dt_s);  // > 0
+  // Detection by the all-pairs reference instead of the grid (same results).
+  void set_cd_all_pairs(bool on) { cds_.all_pairs = on; }
   // RESO MVP|OFF. On also switches detection on (resolution needs it).
   void set_reso(bool on);
   Status set_resofach(double f);  // >= 1
