@@ -12,7 +12,8 @@
 //   sim:time() -> s;  sim:dt() -> s;  sim:count() -> number of aircraft
 //   sim:aircraft()       -> { {id=, type=, lat=, lon=, alt_ft=, hdg_deg=, trk_deg=,
 //                              tas_kt=, cas_kt=, gs_kt=, vs_fpm=, lnav=, vnav=,
-//                              sel_hdg_deg=, sel_alt_ft=, sel_vs_fpm= (0: default),
+//                              sel_hdg_deg=, sel_turn= ("LEFT"/"RIGHT" while a commanded
+//                              turn direction holds, else nil), sel_alt_ft=, sel_vs_fpm= (0: default),
 //                              sel_cas_kt= or sel_mach=, resolving= (MVP active),
 //                              route = { {name=, lat=, lon=, alt_ft=?, spd=?}, ... },
 //                              active_wpt= (name or nil), orig=?, dest=?}, ... }
@@ -83,6 +84,7 @@ void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
   lua_pushboolean(L, t.vnav[i]);
   lua_setfield(L, -2, "vnav");
   set_number(L, "sel_hdg_deg", t.sel_hdg[i]);
+  if (t.sel_turn[i] != 0) set_string(L, "sel_turn", t.sel_turn[i] < 0 ? "LEFT" : "RIGHT");
   set_number(L, "sel_alt_ft", units::m_to_ft(t.sel_alt[i]));
   set_number(L, "sel_vs_fpm", units::ms_to_fpm(t.sel_vs[i]));
   if (sim::is_mach(t.sel_spd[i])) set_number(L, "sel_mach", t.sel_spd[i]);

@@ -318,13 +318,25 @@ return function(H, f, wrap, compass)
     else
       return self:need("What heading should " .. id .. " fly?")
     end
-    -- a change from the present heading is each aircraft's own
+    -- the way to turn, when it was said: HDG's LEFT/RIGHT (a squawk extension)
+    local way = (rel and rel.turn ~= 0 and rel.turn) or turn
+    local suffix = way < 0 and " LEFT" or way > 0 and " RIGHT" or ""
+    -- a change from the present heading is each aircraft's own, in whole degrees
+    local lines = {}
     for _, a in ipairs(ids) do
       local from = offset and self:state(a)
       if offset and not from then return self:need("What is the current heading of " .. a .. "?") end
-      local h = from and from.hdg_deg + offset or hdg
-      self:emit("HDG " .. a .. " " .. f.num(wrap(math.floor(h * 1000 + 0.5) / 1000)))
+      local h = from and math.floor(from.hdg_deg + offset + 0.5) or hdg
+      lines[#lines + 1] = "HDG " .. a .. " " .. (from and f.int(wrap(h)) or f.num(wrap(h))) .. suffix
     end
+    -- a relative turn of more than half a circle is confirmed before it runs
+    if offset and math.abs(offset) > 180 then
+      self.confirm = self.confirm or { commands = lines }
+      return self:need(string.format("Turn %s %s by %s degrees, the long way round, to %s? (yes or no)",
+        table.concat(ids, ", "), way < 0 and "left" or "right", f.num(math.abs(offset)),
+        lines[1]:match("^HDG %S+ (%S+)")))
+    end
+    for _, line in ipairs(lines) do self:emit(line) end
   end
 
   function m:vspeed(s)

@@ -90,6 +90,8 @@ return {
   callsign_confirm = { airline = 0.5, digits = 0.6 },
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
+  -- answers that decline a yes/no question ("delete 5 aircraft?")
+  no = { "no", "negative", "nope", "don't", "dont", "stop" },
   turn_around = { "around", "opposite", "reverse" },
   -- names said before a value they introduce
   named = { "named", "called" },

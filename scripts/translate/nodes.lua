@@ -250,9 +250,54 @@ function M.offline(state, ctx)
     M.say(state, "offline", "asks: " .. tr.ask)
     return "ask"
   end
+  state.note = tr.note
+  if tr.note then M.say(state, "offline", "not simulated: " .. tr.note) end
+  if tr.note and #tr.commands == 0 then
+    state.commands = {}
+    return "note"
+  end
   state.candidate, state.source = table.concat(tr.commands, " ; "), "offline"
   M.say(state, "offline", "candidate: " .. (state.candidate ~= "" and state.candidate or "(nothing)"))
   return "ok"
+end
+
+-- A request that is already TrafScript ("FF 60", "HOLD", "hdg kl204 270";
+-- several joined by ';'): every part names a registry command (first word,
+-- or second after a callsign) and the registry's parser accepts it on a
+-- scratch copy. It runs as typed; anything else is English.
+-- Words of English glue that no TrafScript argument is (a command with a
+-- free-text argument would take "open the scenario demo.scn" as typed).
+local GLUE = { the = true, a = true, an = true, to = true, of = true, from = true, ["and"] = true, ["then"] = true,
+  ["for"] = true, with = true, by = true, into = true, please = true, file = true, scenario = true,
+  aircraft = true, plane = true, flight = true, this = true, that = true, all = true, now = true }
+
+function M.typed(state, ctx)
+  local cmds = M.split_commands(state.request)
+  if #cmds == 0 then return "english" end
+  local scratch = ctx.sim:copy()
+  for k, c in ipairs(cmds) do
+    -- a question, or a thousands separator ("alt KL204 12,000"), is English
+    if c:find("[?!]") or c:find("%d,%d%d%d") then return "english" end
+    local first, second, rest = c:match("^([%w_]+)[%s,]*([%w_]*)(.*)$")
+    if not first then return "english" end
+    if not canonical_name(first) then
+      -- "KL204 HDG 045": BlueSky's callsign-first form, run command first
+      if not canonical_name(second) or not scratch:get(first) then return "english" end
+      c = second .. " " .. first .. rest
+      cmds[k] = c
+    end
+    for w in c:gmatch("[^%s,]+") do
+      if GLUE[w:lower()] then return "english" end
+    end
+    if not scratch:check(c) then return "english" end
+    -- a heading beyond 360 is wrapped by TrafScript but asked about in English
+    local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
+    if h and h > 360 then return "english" end
+    scratch:exec(c)
+  end
+  state.candidate, state.source = table.concat(cmds, " ; "), "typed"
+  M.say(state, "typed", "TrafScript typed in English mode: runs as that command: " .. state.candidate)
+  return "trafscript"
 end
 
 -- A rejected candidate: back to the producing LLM node with the error while

@@ -50,7 +50,7 @@ local function fmt_aircraft(a)
   if a.lnav and a.active_wpt then
     s = s .. " -> " .. a.active_wpt
   elseif a.sel_hdg_deg and math.abs((a.sel_hdg_deg - a.hdg_deg + 180) % 360 - 180) > 0.5 then
-    s = s .. string.format(" -> %.0f", a.sel_hdg_deg)
+    s = s .. string.format(" -> %.0f", a.sel_hdg_deg) .. (a.sel_turn and (" " .. a.sel_turn) or "")
   end
   s = s .. string.format("  alt %6.0f ft", a.alt_ft)
   if a.sel_alt_ft and math.abs(a.sel_alt_ft - a.alt_ft) > 10 then

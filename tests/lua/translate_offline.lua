@@ -6,7 +6,7 @@ local tr = squawk.translate
 local sim = squawk.sim.new()
 check(sim:exec("CRE DAL1153 B738 40 -74 90 5000 250"))
 local r = tr.run("Delta eleven fifty three turn left twenty degrees", { sim = sim, mode = "offline" })
-check_eq(r.commands[1], "HDG DAL1153 70")
+check_eq(r.commands[1], "HDG DAL1153 70 LEFT")
 check_eq(r.mode, "offline")
 check_eq(sim:aircraft()[1].hdg_deg, 90, "the sim is only read")
 r = tr.run("turn AC01 left 20 degrees", { mode = "offline" })
