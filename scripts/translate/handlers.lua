@@ -105,7 +105,23 @@ function m:acids(s)
       end
     end
   end
-  take(s.trig, s.e)
+  -- a callsign after the instruction's value with a value of its own is
+  -- not the subject ("turn right heading 160 DLH4AX 2"); one after a comma,
+  -- or ending the request, is the addressee ("heading two seven zero, Air
+  -- France one two three four", "hdg 120 for test01")
+  local upto = s.e
+  local qs = self:quantities(s.trig, s.e)
+  for k, q in ipairs(qs) do
+    if q.b > s.trig then
+      local comma = false
+      for i = q.e, s.e - 1 do
+        if self.t[i].kind == "punct" then comma = true end
+      end
+      if not comma and qs[k + 1] then upto = q.e end
+      break
+    end
+  end
+  take(s.trig, upto)
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
   if #ids == 0 and self.subject then
@@ -262,17 +278,22 @@ end
 
 -- Which candidate counts: after "correction" the first one after it; when
 -- the instruction word is repeated, the last; else the first.
+-- The value picked is taken (G:take): the leftover check knows it was read.
 function m:pick(c, s, repeated)
   if #c == 0 then return nil end
   local corr
   for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
   if corr then
-    for _, q in ipairs(c) do if q.b > corr then return q end end
-    return c[#c]
+    for _, q in ipairs(c) do if q.b > corr then return self:take(q) end end
+    return self:take(c[#c])
   end
   local reps = 0
   for i = s.b, s.e - 1 do if self:word(i, repeated) then reps = reps + 1 end end
-  return reps >= 2 and c[#c] or c[1]
+  if reps >= 2 then
+    for k = 1, #c - 1 do self:take(c[k]) end  -- "maintain 5000 ... maintain 6000": the last one counts
+    return self:take(c[#c])
+  end
+  return self:take(c[1])
 end
 
 -- "at four thousand reduce speed to 210": "ATALT id alt" or nil.
@@ -301,14 +322,14 @@ function m:leftovers(s)
     if q.b > s.trig then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
         self:emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl))
-        alt_done = true
+        alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
         self:emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
-        spd_done = true
+        spd_done = self:take(q)
       elseif s.intent ~= "hdg" and not hdg_done and q.kind == "plain" and H.zero_led_heading(q) then
         -- three spoken digits led by zero are a heading: no level or speed is said so
         self:emit("HDG " .. ids[1] .. " " .. f.num(q.value))
-        hdg_done = true
+        hdg_done = self:take(q)
       end
     end
   end

@@ -227,7 +227,10 @@ return function(H, f, compass)
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.b > s.trig and q.kind == "alt" and q.number.thousand then
         local ft = self:repaired(q, q.value, 0, 60000, 100)
-        if ft then return self:emit("ALT " .. id .. " " .. f.alt(ft, false)) end
+        if ft then
+          self:take(q)
+          return self:emit("ALT " .. id .. " " .. f.alt(ft, false))
+        end
       end
     end
   end

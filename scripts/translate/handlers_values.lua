@@ -72,7 +72,7 @@ return function(H, f, wrap, compass)
     local rate
     local with_unit, plain = {}, {}
     for _, q in ipairs(qs) do
-      if q.kind == "vs" and not rate then rate = q end
+      if q.kind == "vs" and not rate then rate = self:take(q) end
       if q.kind == "alt" then with_unit[#with_unit + 1] = q end
       if q.kind == "plain" and q.b >= s.trig then plain[#plain + 1] = q end
     end
@@ -82,7 +82,7 @@ return function(H, f, wrap, compass)
       if not rate and rate_word < s.e then
         for k, q in ipairs(list) do
           if q.b > rate_word and not q.fl then
-            rate = table.remove(list, k)
+            rate = self:take(table.remove(list, k))
             break
           end
         end
@@ -350,6 +350,7 @@ return function(H, f, wrap, compass)
       end
     end
     if not v then return self:need("What vertical speed should " .. id .. " fly, in feet per minute?") end
+    self:take(v)
     local fpm = v.value
     if fpm > 0 and self:direction(s) < 0 then fpm = -fpm end
     self:emit("VS " .. id .. " " .. f.int(fpm))

@@ -90,6 +90,28 @@ return {
   callsign_confirm = { airline = 0.5, digits = 0.6 },
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
+  -- what squawk does not simulate: a phrase starts at one of `words` (with
+  -- one of `near` within 4 words after it, when given) and runs to the end
+  -- of its clause; it is named in the reply, never translated
+  not_simulated = {
+    { what = "transponder codes", words = "squawk squawking",
+      near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
+    { what = "transponder codes", words = "transponder ident" },
+    { what = "radio frequencies", words = "contact monitor frequency freq" },
+    { what = "approach clearances", words = "ils rnav rnp localizer localiser glideslope glidepath vor",
+      near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
+    { what = "approach clearances", words = "cleared clear",
+      near = { "approach", "land", "landing", "takeoff", "take-off", "ils", "visual", "option" } },
+    { what = "approach clearances", words = "intercept established join",
+      near = { "localizer", "localiser", "glideslope", "ils", "final" } },
+    { what = "altimeter settings", words = "altimeter qnh qfe" },
+    { what = "holding patterns", words = "holding" },
+    { what = "holding patterns", words = "hold",
+      near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" } },
+    { what = "holding patterns", words = "enter", near = { "hold", "holding" } },
+    -- "KL204, hold": said to an aircraft, no pause of the simulation
+    { what = "holding patterns", words = "hold", after_callsign = true },
+  },
   -- answers that decline a yes/no question ("delete 5 aircraft?")
   no = { "no", "negative", "nope", "don't", "dont", "stop" },
   turn_around = { "around", "opposite", "reverse" },

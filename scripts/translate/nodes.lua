@@ -8,6 +8,7 @@
 -- k, max_retries. Every node records what it did with say().
 local grammar = require("translate.grammar")
 local schema = require("translate.schema")
+local lexicon = require("translate.lexicon")
 
 local M = {}
 
@@ -271,6 +272,15 @@ local GLUE = { the = true, a = true, an = true, to = true, of = true, from = tru
   ["for"] = true, with = true, by = true, into = true, please = true, file = true, scenario = true,
   aircraft = true, plane = true, flight = true, this = true, that = true, all = true, now = true }
 
+local keywords
+local function keyword_set()
+  if not keywords then
+    keywords = {}
+    for _, w in ipairs(lexicon.keywords) do keywords[w] = true end
+  end
+  return keywords
+end
+
 function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
@@ -286,14 +296,25 @@ function M.typed(state, ctx)
       c = second .. " " .. first .. rest
       cmds[k] = c
     end
+    -- an argument that is an English word of the grammar ("turn KL204 north": heading 360, not the
+    -- bearing to a waypoint NORTH) makes the line English
+    local name = canonical_name(c:match("^([%w_]+)"))
+    local n = 0
     for w in c:gmatch("[^%s,]+") do
-      if GLUE[w:lower()] then return "english" end
+      n = n + 1
+      local lw = w:lower()
+      local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
+      if GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw])) then
+        return "english"
+      end
     end
     if not scratch:check(c) then return "english" end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
     if h and h > 360 then return "english" end
-    scratch:exec(c)
+    -- and it runs: "turn KL204 north" parses (a name is a bearing) but names nothing
+    if not scratch:exec(c) then return "english" end
+    cmds[k] = name .. c:match("^[%w_]+(.*)$")  -- shown with its registry name: "delete KL204" -> "DEL KL204"
   end
   state.candidate, state.source = table.concat(cmds, " ; "), "typed"
   M.say(state, "typed", "TrafScript typed in English mode: runs as that command: " .. state.candidate)

@@ -151,7 +151,8 @@ function Repl:format_reply(r)
   if r.error and r.kind == "trafscript" then return "  " .. r.error end
   if r.error then return "  could not translate: " .. r.error .. "\n  (:trace shows how it went)" end
   local out = {}
-  if r.kind == "english" then out[1] = "> " .. table.concat(r.commands, " ; ") end
+  if r.kind == "english" and #r.commands > 0 then out[1] = "> " .. table.concat(r.commands, " ; ") end
+  if r.note then out[#out + 1] = "  " .. r.note end
   for _, res in ipairs(r.results) do
     if not res.ok then
       out[#out + 1] = "  error: " .. res.message

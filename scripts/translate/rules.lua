@@ -156,6 +156,8 @@ return function(intent, rule, words)
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how", "pos", near = { 4, "altitude speed heading position level" } }
+  -- "say altitude", "report your heading": a question about the aircraft's state
+  rule { "say report", "pos", near = { 2, "altitude speed heading position level airspeed mach" } }
   rule { "unpause", "op" }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", next = "navigation" }

@@ -183,8 +183,21 @@ do -- one instruction for two aircraft, each with its own value; 'by' before the
   check_eq(tr("EZY45, hold present heading", w), "HDG EZY45 45")
   check_eq(tr("EZY45 maintain present speed", w), "SPD EZY45 290")
   check_eq(tr("hold the simulation", w), "HOLD")
-  check(asks("EZY45 hold", w), "a holding pattern is not a pause of the simulation")
-  check(asks("EZY45 hold at present position", w), "nor a kept altitude")
+  -- a holding pattern is neither a pause of the simulation nor a kept altitude: squawk says it does not simulate it
+  local function not_simulated(s, what)
+    local r = grammar.translate(s, w)
+    check(#r.commands == 0 and r.note ~= nil and r.note:find(what, 1, true) ~= nil, s .. " -> " .. tostring(r.note))
+  end
+  not_simulated("EZY45 hold", "holding patterns")
+  not_simulated("EZY45 hold at present position", "holding patterns")
+  not_simulated("EZY45 hold over SQK01 as published", "holding patterns ('hold over SQK01 as published')")
+  not_simulated("EZY45 cleared ILS approach runway 27", "approach clearances")
+  not_simulated("EZY45 squawk 7700", "transponder codes ('squawk 7700')")
+  not_simulated("EZY45 contact Amsterdam approach 121.2", "radio frequencies")
+  -- in a mixed request the rest is translated and the note comes with it
+  local mixed = grammar.translate("EZY45 contact approach 119.7 and descend FL100", w)
+  check_eq(text(mixed), "ALT EZY45 FL100")
+  check(mixed.note ~= nil and mixed.note:find("radio frequencies", 1, true) ~= nil, "the frequency is named")
   check_eq(tr("hold the sim and EZY45 maintain present heading", w), "HOLD ; HDG EZY45 45")
   -- an aircraft named just before an instruction word is that instruction's
   check_eq(tr("EZY45 turn left heading 300 and AFR1234 descend FL200", w), "HDG EZY45 300 LEFT ; ALT AFR1234 FL200")
