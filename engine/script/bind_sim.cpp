@@ -5,6 +5,8 @@
 //       places are errors). Scenario files load relative to the script folder.
 //   sim:exec(line)       -> ok, message   (TrafScript; `;` separates commands)
 //   sim:check(line)      -> ok, message   (parse-only validation, nothing runs)
+//   sim:airports_named(name) -> { "EHAM", ... }  airports of the navdata whose name is
+//                           `name` or starts with its words ({} without navdata)
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
 //                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
@@ -152,6 +154,19 @@ int l_new(lua_State* L) {
 int l_exec(lua_State* L) {
   command::Stack* s = self(L);
   return push_outcome(L, s->exec(arg_string(L, 2, "line")));
+}
+
+int l_airports_named(lua_State* L) {
+  command::Stack* s = self(L);
+  const std::string name = arg_string(L, 2, "name");
+  lua_newtable(L);
+  if (!s->navdb()) return 1;
+  int k = 0;
+  for (const command::NavPoint* a : s->navdb()->airports_named(name)) {
+    lua_pushstring(L, a->id.c_str());
+    lua_rawseti(L, -2, ++k);
+  }
+  return 1;
 }
 
 int l_check(lua_State* L) {
@@ -356,6 +371,7 @@ int l_commands(lua_State* L) {
 void bind_sim(lua_State* L) {
   static const luaL_Reg methods[] = {
       {"exec", guarded<l_exec>},         {"check", guarded<l_check>},
+      {"airports_named", guarded<l_airports_named>},
       {"load", guarded<l_load>},         {"step", guarded<l_step>},
       {"run_until", guarded<l_run_until>}, {"run_for", guarded<l_run_for>},
       {"time", guarded<l_time>},         {"dt", guarded<l_dt>},

@@ -231,7 +231,12 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     if (fleet.empty()) return false;
     CallsignMatch m = match_world(icao, spoken, suf, fleet, names);
     if ((m.score < 0.45 && fleet.size() != 1) || m.groups == 0) return false;
-    heard = {id, m.airline, m.digits};
+    // heard as far as the match read it and the spelled letters after it: digit
+    // groups after the match belong to the instruction ("... nine three four two, ten")
+    const std::string said_prefix = id.substr(0, id.size() - suf.joined(suf.groups.size()).size());
+    size_t said = m.groups;
+    while (said < suf.groups.size() && !std::isdigit(static_cast<unsigned char>(suf.groups[said][0]))) ++said;
+    heard = {said_prefix + text::upper(suf.joined(said)), m.airline, m.digits};
     id = m.id;
     end = suf.ends[m.groups - 1];
     return true;

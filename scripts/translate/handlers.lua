@@ -135,8 +135,37 @@ function m:acids(s)
     end
   end
   if #ids == 0 and #self.fleet == 1 then ids[1] = self.fleet[1].id end
+  for k, id in ipairs(ids) do
+    local q, meant = self:unknown_callsign(id)
+    if q then self:need(q) end
+    if meant then ids[k] = meant end
+  end
+  if #ids == 0 then self:airline_only(s) end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
+end
+
+-- An airline said with no flight number ("KLM, climb ..."): the question
+-- names its aircraft when more than one fits.
+local AIRLINES
+function m:airline_only(s)
+  if not AIRLINES then
+    AIRLINES = {}
+    for _, a in ipairs(require("translate.names").airlines) do AIRLINES[a[1]] = a[2] end
+  end
+  for i = s.b, s.e - 1 do
+    local t = self.t[i]
+    local icao = t.kind == "word" and (AIRLINES[t.text] or (t.raw:match("^%u%u%u$") and t.raw))
+    if icao then
+      local fits = {}
+      for _, a in ipairs(self.fleet) do
+        if a.id:upper():sub(1, #icao) == icao and a.id:sub(#icao + 1, #icao + 1):match("%d") then fits[#fits + 1] = a.id end
+      end
+      if #fits > 1 then
+        return self:need(string.format("Which %s: %s?", t.raw, table.concat(fits, " or ")))
+      end
+    end
+  end
 end
 
 -- Airline letters, flight digits and trailing letters of a callsign
@@ -218,11 +247,61 @@ function m:confirm_callsigns(s)
     local h = r.heard
     if h and not r.false_start and not (self.world.confirmed or {})[r.name]
         and not self:airline_and_digits_match(h.id, r.name)
-        and (h.airline < c.airline or h.digits < c.digits or self:letters_conflict(h.id, r.name)) then
+        and ((c.strict and #self.fleet > 1) or h.airline < c.airline or h.digits < c.digits
+          or self:letters_conflict(h.id, r.name)) then
       self.confirm = self.confirm or { id = r.name, heard = h.id }
       self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
     end
   end
+end
+
+-- Aircraft whose callsign is one slip from `heard`: the same airline and
+-- digits transposed, one character missing, extra or different.
+function m:near_callsigns(heard)
+  local function slips(a, b)
+    if a == b then return 0 end
+    if #a == #b then
+      local diff = {}
+      for i = 1, #a do if a:sub(i, i) ~= b:sub(i, i) then diff[#diff + 1] = i end end
+      if #diff == 1 then return 1 end
+      if #diff == 2 and diff[2] == diff[1] + 1 and a:sub(diff[1], diff[1]) == b:sub(diff[2], diff[2])
+          and a:sub(diff[2], diff[2]) == b:sub(diff[1], diff[1]) then
+        return 1
+      end
+      return 2
+    end
+    if math.abs(#a - #b) ~= 1 then return 2 end
+    local long, short = a, b
+    if #b > #a then long, short = b, a end
+    for i = 1, #long do
+      if long:sub(1, i - 1) .. long:sub(i + 1) == short then return 1 end
+    end
+    return 2
+  end
+  local out = {}
+  local ha, hr = heard:upper():match("^(%a*)(.*)$")
+  for _, a in ipairs(self.fleet) do
+    local aa, ar = a.id:upper():match("^(%a*)(.*)$")
+    if (aa == ha and slips(ar, hr) == 1) or (ar == hr and slips(aa, ha) == 1) then out[#out + 1] = a.id end
+  end
+  return out
+end
+
+-- A typed or spoken callsign of no aircraft, when aircraft are flying: a
+-- question naming the ones it may have meant, else nil (and the aircraft
+-- meant, once the speaker confirmed it).
+function m:unknown_callsign(id)
+  if #self.fleet == 0 or self:state(id) then return nil end
+  local near = self:near_callsigns(id)
+  if #near == 1 and (self.world.confirmed or {})[near[1]] then return nil, near[1] end
+  if #near == 1 then
+    self.confirm = self.confirm or { id = near[1], heard = id }
+    return string.format("Did you mean %s? There is no %s.", near[1], id)
+  end
+  if #near > 1 then
+    return string.format("Did you mean %s? There is no %s.", table.concat(near, " or "), id)
+  end
+  return string.format("There is no aircraft %s. Which aircraft do you mean?", id)
 end
 
 function m:acid(s, what)

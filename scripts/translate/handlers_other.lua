@@ -166,8 +166,7 @@ return function(H, f, compass)
     for _, r in ipairs(a and a.route or {}) do
       if not seen[r] then names[#names + 1], seen[r] = r, true end
     end
-    if #names == 0 then return nil end
-    local best, best_score
+    local best, best_score, best_word
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
@@ -175,14 +174,48 @@ return function(H, f, compass)
         local cand = t.text
         for k = 0, 1 do
           local idx, score = squawk.translate.best_match(cand, names)
-          if idx and (not best or score > best_score) then best, best_score = names[idx], score end
+          if idx and (not best or score > best_score) then best, best_score, best_word = names[idx], score, cand end
           local nx = self.t[i + k + 1]
           if i + k + 1 >= e or nx.kind ~= "word" then break end
           cand = cand .. nx.text
         end
       end
     end
+    if best and best_score >= L.waypoint_confirm then return best end
+    local airport = self:airport_by_name(b, e)
+    if airport then return airport end
+    -- a name that sounds like a known one is confirmed, never substituted,
+    -- unless it is the only name it could be
+    if best and best_score >= 0.5 and #names > 1 and not (self.world.confirmed or {})[best] then
+      self.confirm = self.confirm or { id = best, heard = best_word }
+      self:need(string.format("Did you mean %s? I heard '%s'.", best, best_word))
+    end
     if best and best_score >= 0.5 then return best end
+    return nil
+  end
+
+  -- An airport said by its name ("direct to Schiphol" -> EHAM): one or two
+  -- words in [b, e) that name exactly one airport of the navdata.
+  function m:airport_by_name(b, e)
+    local named = self.world.airports_named
+    if not named then return nil end
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t = self.t[i]
+      if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
+          and not t.number_word and not L.phonetic[t.text] then
+        local nx = self.t[i + 1]
+        local phrases = { t.text }
+        if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, t.text .. " " .. nx.text) end
+        for _, phrase in ipairs(phrases) do
+          local ids = named(phrase)
+          if #ids == 1 then return ids[1] end
+          if #ids > 1 and #ids <= 4 then
+            self:need(string.format("Which airport is '%s': %s?", phrase, table.concat(ids, " or ")))
+            return ids[1]
+          end
+        end
+      end
+    end
     return nil
   end
 

@@ -230,8 +230,8 @@ function M.defined_waypoints(line)
 end
 
 -- What the offline grammar may know of the simulation: the aircraft (route
--- as waypoint names, mach when the selected speed is a Mach number) and
--- the user waypoints.
+-- as waypoint names, mach when the selected speed is a Mach number), the
+-- user waypoints, and the navdata's airports by name.
 function M.world(sim, waypoints)
   local aircraft = sim:aircraft()
   for _, a in ipairs(aircraft) do
@@ -239,7 +239,8 @@ function M.world(sim, waypoints)
     for _, w in ipairs(a.route or {}) do names[#names + 1] = w.name end
     a.route, a.mach = names, a.sel_mach
   end
-  return { aircraft = aircraft, waypoints = waypoints or {} }
+  return { aircraft = aircraft, waypoints = waypoints or {},
+           airports_named = function(name) return sim:airports_named(name) end }
 end
 
 function M.offline(state, ctx)

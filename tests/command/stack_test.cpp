@@ -363,3 +363,23 @@ TEST_CASE("navdata: airports, fixes and navaids resolve where BlueSky accepts th
   CHECK_FALSE(s.exec("ADDWPT KL204 NOSUCHFIX"));
 }
 
+
+TEST_CASE("navdata: airports by name, whole or with a generic word, never a prefix of another name") {
+  auto db = NavDb::parse("# code,name,lat,lon,class\n"
+                         "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
+                         "EGLL, Heathrow Airport, 51.477, -0.461, Large, 12799, UK,83\n"
+                         "CYSY, Sachs Harbour, 71.99, -125.24, Small, , CA,\n",
+                         "", "", "test");
+  REQUIRE(db.is_ok());
+  auto ids = [&](const char* name) {
+    std::vector<std::string> out;
+    for (const NavPoint* a : (*db)->airports_named(name)) out.push_back(a->id);
+    return out;
+  };
+  CHECK(ids("schiphol") == std::vector<std::string>{"EHAM"});
+  CHECK(ids("Heathrow") == std::vector<std::string>{"EGLL"});
+  CHECK(ids("heathrow airport") == std::vector<std::string>{"EGLL"});
+  CHECK(ids("sachs").empty());
+  CHECK(ids("sachs harbour") == std::vector<std::string>{"CYSY"});
+  CHECK(ids("").empty());
+}

@@ -78,3 +78,30 @@ check_eq(r.error, nil)
 r = tr("KLM1234 contact approach 119.7 and descend FL100")
 check_eq(said(r), "ALT KLM1234 FL100")
 check(r.note:find("radio frequencies", 1, true) ~= nil, tostring(r.note))
+
+-- 3. callsigns exact or asked: a transposed or shortened typed callsign names the candidates
+r = tr("KLM1243 climb flight level 300")
+check_eq(r.ask, "Did you mean KLM1234? There is no KLM1243.")
+check_eq(r.confirm and r.confirm.id, "KLM1234")
+r = tr("KLM7 climb FL300")
+check_eq(r.ask, "Did you mean KLM77? There is no KLM7.")
+check_eq(tr("KLM climb FL300").ask, "Which KLM: KLM1234 or KLM77?")
+d = dialogue()
+d:say("KLM1243 climb flight level 300")
+check_eq(said(d:say("yes")), "ALT KLM1234 FL300")
+-- a spoken callsign whose digits differ from the only fitting aircraft asks while others fly
+r = tr("KLM one two four three climb flight level 300")
+check(r.ask ~= nil and r.ask:find("KLM1234", 1, true) ~= nil, said(r))
+-- fixes: a name that only sounds like one of several known names is confirmed, never substituted
+local wsim = sim:copy()
+check(wsim:exec("DEFWPT SQK01 52.3 4.3"))
+check(wsim:exec("DEFWPT SPIKE 52.5 4.5"))
+r = graph.translate("KLM1234 direct to sparky", { sim = wsim, mode = "offline", waypoints = { "SQK01", "SPIKE" } })
+check_eq(r.ask, "Did you mean SPIKE? I heard 'sparky'.")
+-- an airport said by its name is the navdata's airport (when navdata is loaded)
+if #sim:airports_named("schiphol") == 1 then
+  check_eq(said(graph.translate("KLM1234 direct to Schiphol", { sim = wsim, mode = "offline",
+    waypoints = { "SQK01", "SPIKE" } })), "ADDWPT KLM1234 EHAM ; DIRECT KLM1234 EHAM")
+else
+  print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
+end
