@@ -59,6 +59,13 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       ++j;
       continue;
     }
+    // "twenty-three oh seven": "oh" between spoken digits is a zero
+    if ((k.text == "oh" || k.text == "o") && !s.groups.empty() && j + 1 < t.size() && is_word(t[j + 1]) &&
+        digit_word(t[j + 1].text) >= 0) {
+      s.groups.emplace_back("0");
+      s.ends.push_back(++j);
+      continue;
+    }
     if (k.text == "hundred" || k.text == "thousand") {
       if (!s.groups.empty()) {
         s.groups.pop_back();

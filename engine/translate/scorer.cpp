@@ -128,9 +128,19 @@ std::string canonical_command(std::string_view name) {
   return text::upper(name);
 }
 
+namespace {
+// BlueSky's callsign-first form ("KL204 SPD 250") as command-first ("SPD KL204 250").
+void command_first(std::vector<std::string>& v) {
+  if (v.size() >= 2 && !command::Registry::instance().find(v[0]) && command::Registry::instance().find(v[1]))
+    std::swap(v[0], v[1]);
+}
+}  // namespace
+
 bool same_command(std::string_view produced, std::string_view expected) {
   auto p = tokens(produced), e = tokens(expected);
   if (p.empty() || e.empty()) return p.empty() && e.empty();
+  command_first(p);
+  command_first(e);
   std::string cmd = canonical_command(p[0]);
   if (cmd != canonical_command(e[0])) return false;
   if (cmd == "ECHO") {

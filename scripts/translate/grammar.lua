@@ -295,7 +295,10 @@ function G:segments(b, e)
   for k, tr in ipairs(trig) do
     local last = segs[#segs]
     local this = M.intents[tr.intent]
-    local thn = self:word_in(k == 1 and b or trig[k - 1].pos, tr.pos, "@then_words")
+    -- "descend 4000 then reduce 210": the second waits for the first ("then");
+    -- "..., then ..." after a comma is the next instruction in a list ("list")
+    local thn_at = self:find_word(k == 1 and b or trig[k - 1].pos, tr.pos, "@then_words")
+    local thn = thn_at < tr.pos and ((self.t[thn_at - 1] or {}).kind == "punct" and "list" or "then") or false
     local merged = false
     if last and not thn then
       local li = M.intents[last.intent] or {}
@@ -320,6 +323,9 @@ function G:segments(b, e)
         for _, r in ipairs(self:refs_in(last.trig + 1, tr.pos, "aircraft")) do
           if self:skip_fillers(r.e) == tr.pos then start = r.b end
         end
+        -- "..., when passing flight level 130 reduce speed": the condition belongs to what follows it
+        local cond = self:find_word(last.trig + 1, start, "@level_condition")
+        if cond < start then start = cond end
         last.e = start
       end
       segs[#segs + 1] = { intent = tr.intent, b = last and start or b, trig = tr.pos, e = e, ["then"] = thn }
@@ -395,7 +401,7 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif s["then"] and before and #self.out == n_before + 1
+      elseif s["then"] == "then" and before and #self.out == n_before + 1
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       end
@@ -582,7 +588,7 @@ function G:not_simulated()
   while i <= #self.t do
     local t = self.t[i]
     local class
-    if t.kind == "word" and not self.u:used(i) then
+    if t.kind == "word" and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
             and (not c.after_callsign or self:callsign_before(i)) then

@@ -375,14 +375,16 @@ function m:pick(c, s, repeated)
   return self:take(c[1])
 end
 
--- "at four thousand reduce speed to 210": "ATALT id alt" or nil.
+-- "at four thousand reduce speed to 210", "(when) passing flight level 130
+-- reduce speed 250", "leaving FL340 maintain Mach .82": "ATALT id alt" or nil.
 function m:at_altitude(s)
-  if s.intent ~= "spd" and s.intent ~= "hdg" then return nil end
-  local a = self:find_word(s.b, s.trig, "at")
+  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" then return nil end
+  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through")
   if a >= s.trig then return nil end
+  if (s.intent == "maintain" or s.intent == "alt") and not self:word(a, "passing leaving reaching") then return nil end
   local qs = self:quantities(a + 1, s.trig)
   local q = qs[1]
-  if not q or q.b ~= a + 1 or q.e ~= s.trig then return nil end
+  if not q or q.b ~= a + 1 or self:skip_fillers(q.e) ~= s.trig then return nil end
   if q.kind ~= "alt" and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then return nil end
   local ids = self:acids(s)
   if #ids == 0 then return nil end

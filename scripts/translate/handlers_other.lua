@@ -166,6 +166,17 @@ return function(H, f, compass)
     for _, r in ipairs(a and a.route or {}) do
       if not seen[r] then names[#names + 1], seen[r] = r, true end
     end
+    -- a navaid said by its name, which its ident abbreviates ("Biggin" -> BIG, "Detling" -> DET)
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t = self.t[i]
+      if not self.u:used(i) and t.kind == "word" and t.alpha and not t.keyword and #t.text >= 4 then
+        local fits = {}
+        for _, n in ipairs(names) do
+          if #n >= 3 and #n < #t.text and n:match("^%a+$") and t.text:sub(1, #n) == n:lower() then fits[#fits + 1] = n end
+        end
+        if #fits == 1 then return fits[1] end
+      end
+    end
     local best, best_score, best_word
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]

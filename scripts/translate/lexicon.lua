@@ -52,6 +52,9 @@ return {
   },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
+  -- words before a level that make the next instruction wait for it
+  -- ("when passing flight level 130 reduce speed 250": ATALT)
+  level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
   -- words after which a clause is a new instruction

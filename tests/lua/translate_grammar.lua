@@ -85,7 +85,9 @@ do -- several instructions in one utterance keep their order
   check_eq(tr("Set AC01 and AC02 to FL300"), "ALT AC01 FL300 ; ALT AC02 FL300")
   check_eq(tr("AC02: heading 180, FL200, 250 kts"), "HDG AC02 180 ; ALT AC02 FL200 ; SPD AC02 250")
   check_eq(tr("When AC01 reaches FL200, set its speed to 280 knots"), "ATALT AC01 FL200 SPD AC01 280")
-  check_eq(tr("Delta 30, descend and maintain 4000, then reduce speed to 210"), "ALT DAL30 4000 ; ATALT DAL30 4000 SPD DAL30 210")
+  -- "then" waits for the instruction before it; ", then" after a comma lists the next one
+  check_eq(tr("Delta 30, descend and maintain 4000 then reduce speed to 210"), "ALT DAL30 4000 ; ATALT DAL30 4000 SPD DAL30 210")
+  check_eq(tr("Delta 30, descend and maintain 4000, then reduce speed to 210"), "ALT DAL30 4000 ; SPD DAL30 210")
 end
 
 do -- experimenter requests

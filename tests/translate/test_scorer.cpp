@@ -49,6 +49,12 @@ TEST_CASE("HDG turn direction: L and R fold to LEFT and RIGHT; an expected line 
   CHECK_FALSE(same_command("HDG KL1 310 RIGHT", "HDG KL1 300"));
 }
 
+TEST_CASE("BlueSky's callsign-first form equals the command-first one, nested too") {
+  CHECK(same_command("KL1 SPD 250", "SPD KL1 250"));
+  CHECK(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 250"));
+  CHECK_FALSE(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 260"));
+}
+
 TEST_CASE("conditionals compare the condition and the nested command") {
   CHECK(same_command("ATALT AC01 20000 SPD AC01 280", "ATALT AC01 FL200 SPD AC01 280"));
   CHECK_FALSE(same_command("ATALT AC01 20000 SPD AC01 290", "ATALT AC01 FL200 SPD AC01 280"));
