@@ -11,7 +11,7 @@
 namespace squawk::translate {
 namespace {
 
-enum class Arg { kWord, kNum, kAlt, kSpd, kHdg, kTurn, kLat, kLon, kRest };
+enum class Arg { kWord, kNum, kMagnitude, kAlt, kSpd, kHdg, kTurn, kLat, kLon, kRest };
 
 std::vector<std::string> tokens(std::string_view cmd) {
   std::string c(cmd);
@@ -80,6 +80,10 @@ bool same_arg(const std::string& a, const std::string& b, Arg kind) {
     }
     case Arg::kTurn:
       return turn_word(a) == turn_word(b);
+    case Arg::kMagnitude: {
+      auto u = text::to_double(a), v = text::to_double(b);
+      return u && v && std::fabs(std::fabs(*u) - std::fabs(*v)) <= 1e-9 * std::max(1.0, std::fabs(*v));
+    }
     case Arg::kLat:
     case Arg::kLon:
       return num_eq(a, b, 1e-3) || text::iequals(a, b);
@@ -99,7 +103,7 @@ std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string
   using A = Arg;
   if (cmd == "CRE") return {A::kWord, A::kWord, A::kLat, A::kLon, A::kHdg, A::kAlt, A::kSpd};
   if (cmd == "MOVE") return {A::kWord, A::kLat, A::kLon, A::kAlt, A::kHdg, A::kSpd, A::kNum};
-  if (cmd == "ALT") return {A::kWord, A::kAlt, A::kNum};
+  if (cmd == "ALT") return {A::kWord, A::kAlt, A::kMagnitude};  // ALT reads |vspd|
   if (cmd == "SPD") return {A::kWord, A::kSpd};
   if (cmd == "HDG") return {A::kWord, A::kHdg, A::kTurn};
   if (cmd == "DEFWPT") return {A::kWord, A::kLat, A::kLon, A::kWord};

@@ -193,6 +193,15 @@ function G:type_or_aircraft_word(b, e)
   return self:has_ref(b, e, "type") or self:word_in(b, e, "@aircraft_nouns")
 end
 
+-- True when the word at i is the request's only word but for fillers and punctuation.
+function G:alone(i)
+  for k = 1, #self.t do
+    local t = self.t[k]
+    if k ~= i and t.kind ~= "punct" and not t.filler then return false end
+  end
+  return true
+end
+
 -- "turn on/off ..." / "switch on ...": a switch, not a turn.
 function G:switch_follows(i)
   local stop = i + 1

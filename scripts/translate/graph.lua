@@ -283,7 +283,8 @@ end
 -- that translates by itself is a new request and drops the question.
 function Dialogue:say(text)
   local r = self:answer(text)
-  -- a line of commands that needs a yes first waits for it
+  -- a line of commands that needs a yes first waits for it (translate() itself
+  -- gives the commands: the question belongs to the conversation)
   if r.commands and #r.commands > 0 and not r.confirmed then
     local q = M.confirmation(r.commands, self.opts.sim or squawk.sim.new())
     if q then

@@ -257,6 +257,15 @@ return function(H, f, wrap, compass)
       end
       if q.kind == "alt" or q.kind == "speed" then break end
     end
+    -- "turn right 20", "left 90": a typed number of one or two digits after a turn
+    -- direction, with no "heading", is the degrees of the turn (headings have three)
+    if #rel_c == 0 and #abs_c == 1 and abs_c[1].kind == "plain" and abs_c[1].number.typed
+        and #abs_c[1].number.digits <= 2 and not self:word_in(s.b, s.e, "heading hdg")
+        and self:word_in(s.b, abs_c[1].b, "@left @right") then
+      rel_c[1] = { kind = "angle", value = abs_c[1].value, b = abs_c[1].b, e = abs_c[1].e, turn = 0,
+                   number = abs_c[1].number }
+      abs_c = {}
+    end
     local abs, rel = self:pick(abs_c, s, "heading"), self:pick(rel_c, s, "heading")
     local correction = self:word_in(s.b, s.e, "@correction")
     local turn = 0

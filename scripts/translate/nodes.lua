@@ -305,7 +305,7 @@ function M.typed(state, ctx)
       n = n + 1
       local lw = w:lower()
       local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
-      if GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw])) then
+      if name ~= "ECHO" and (GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
         return "english"
       end
     end

@@ -150,6 +150,8 @@ return function(intent, rule, words)
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
   -- (a holding pattern) is no pause of the simulation
   rule { "hold", "maintain", near = { 2, "heading hdg altitude level speed" } }
+  -- "hold, move EZY45 ...": a first word on its own before a comma pauses the simulation
+  rule { "hold pause", "hold", when = function(g, i) return i == 1 and g.t[2] ~= nil and g.t[2].kind == "punct" end }
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "pause hold freeze", "hold" }
@@ -158,7 +160,9 @@ return function(intent, rule, words)
   rule { "what how", "pos", near = { 4, "altitude speed heading position level" } }
   -- "say altitude", "report your heading": a question about the aircraft's state
   rule { "say report", "pos", near = { 2, "altitude speed heading position level airspeed mach" } }
-  rule { "unpause", "op" }
+  rule { "unpause op", "op" }
+  -- "go", "resume (please)": the whole request starts the clock
+  rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", next = "navigation" }
   rule { "run", "dtmult", near = { 4, "times x" } }

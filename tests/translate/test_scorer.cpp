@@ -49,6 +49,11 @@ TEST_CASE("HDG turn direction: L and R fold to LEFT and RIGHT; an expected line 
   CHECK_FALSE(same_command("HDG KL1 310 RIGHT", "HDG KL1 300"));
 }
 
+TEST_CASE("ALT's vertical speed is a magnitude: its sign does not count") {
+  CHECK(same_command("ALT KL1 FL100 2000", "ALT KL1 FL100 -2000"));
+  CHECK_FALSE(same_command("ALT KL1 FL100 1500", "ALT KL1 FL100 -2000"));
+}
+
 TEST_CASE("BlueSky's callsign-first form equals the command-first one, nested too") {
   CHECK(same_command("KL1 SPD 250", "SPD KL1 250"));
   CHECK(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 250"));
