@@ -31,6 +31,9 @@
 //   sim:copy()           -> an independent copy
 //   sim:snapshot()       -> string            (the full state as bytes)
 //   squawk.sim.commands() -> { {name=, aliases={...}, args=, usage=, help=}, ... }
+//   squawk.sim.types() -> { {designator=, title= (OpenAP's name, "Boeing 777-300ER"; nil
+//       for synonyms and the class model), model = "openap"|"class", class=}, ... }: the
+//       OpenAP data of $SQUAWK_OPENAP / --openap, then the class model's named designators
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -41,6 +44,8 @@
 #include "core/paths.h"
 #include "core/units.h"
 #include "sim/atmosphere.h"
+#include "sim/openap_data.h"
+#include "sim/performance.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
@@ -345,6 +350,24 @@ int l_snapshot(lua_State* L) {
   return 1;
 }
 
+// squawk.sim.types(): the types the performance models know.
+int l_types(lua_State* L) {
+  lua_newtable(L);
+  int k = 0;
+  auto push = [&](std::string_view designator, const std::string& title, const char* model, const char* cls) {
+    lua_createtable(L, 0, 4);
+    set_string(L, "designator", std::string(designator));
+    if (!title.empty()) set_string(L, "title", title);
+    set_string(L, "model", model);
+    set_string(L, "class", cls);
+    lua_rawseti(L, -2, ++k);
+  };
+  if (const auto oap = sim::default_openap())
+    for (const auto& [designator, title] : oap->titles()) push(designator, title, "openap", "jet");
+  for (const auto& [designator, cls] : sim::class_model_types()) push(designator, "", "class", sim::perf_class_name(cls));
+  return 1;
+}
+
 int l_commands(lua_State* L) {
   const auto& cmds = command::Registry::instance().commands();
   lua_createtable(L, static_cast<int>(cmds.size()), 0);
@@ -389,6 +412,8 @@ void bind_sim(lua_State* L) {
   lua_setfield(L, -2, "new");
   lua_pushcfunction(L, guarded<l_commands>);
   lua_setfield(L, -2, "commands");
+  lua_pushcfunction(L, guarded<l_types>);
+  lua_setfield(L, -2, "types");
   lua_pop(L, 1);
 }
 

@@ -2,7 +2,8 @@
 -- with no language model. The `offline` node of the translation graph.
 --
 -- Data: translate/lexicon.lua (words), translate/names.lua (airline
--- telephony, aircraft types) and translate/rules.lua (which words
+-- telephony, type designators), translate/types.lua (type names from the
+-- performance models' data) and translate/rules.lua (which words
 -- ask for which registry command), checked against the command registry
 -- when they load; translate/handlers.lua fills each command's arguments.
 -- The C++ extractors (squawk.translate.utterance) lex, read numbers and
@@ -31,7 +32,10 @@
 --     words of the rules, per registry command (squawk.rag.index docs)
 local lexicon = require("translate.lexicon")
 -- the airlines, types and phonetic alphabet, handed to the C++ matchers once
-local NAMES = squawk.translate.tables(require("translate.names"), lexicon)
+local names = require("translate.names")
+local TYPES = require("translate.types").build(names.designators)
+local NAMES = squawk.translate.tables({ airlines = names.airlines, types = TYPES.types,
+  designators = TYPES.designators }, lexicon)
 
 local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
 
@@ -645,7 +649,7 @@ function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
-  local u = squawk.translate.utterance(text, world, NAMES)
+  local u = squawk.translate.utterance(require("translate.types").join(text, TYPES.phrases), world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {} }, G)
   g:settle_callsigns()
