@@ -197,6 +197,20 @@ function G:type_or_aircraft_word(b, e)
   return self:has_ref(b, e, "type") or self:word_in(b, e, "@aircraft_nouns")
 end
 
+-- True when an aircraft type, or a callsign no aircraft has, is named within
+-- the three tokens after i (punctuation and fillers not counted).
+function G:new_aircraft_follows(i)
+  local k, seen = i + 1, 0
+  while self.t[k] and seen < 3 do
+    if self.t[k].kind ~= "punct" and not self.t[k].filler then seen = seen + 1 end
+    for _, r in ipairs(self.refs) do
+      if r.b == k and (r.kind == "type" or (r.kind == "aircraft" and not r.exists)) then return true end
+    end
+    k = k + 1
+  end
+  return false
+end
+
 -- True when the word at i is the request's only word but for fillers and punctuation.
 function G:alone(i)
   for k = 1, #self.t do

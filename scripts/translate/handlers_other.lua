@@ -87,10 +87,42 @@ return function(H, f, compass)
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
       if (model.mach or 0) > 0 then mach = model.mach else spd = model.cas_kt end
     end
+    -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol")
+    local named_at
+    if not lat or not lon then
+      for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do named_at = named_at or r.name end
+      named_at = named_at or self:airport_by_name(s.trig + 1, s.e)
+    end
+    -- values left unread: one after the level with no speed said is the speed (CRE's
+    -- order: heading, altitude, speed: "fl300 290"); others are asked about
+    local read = { lat, lon, hdg, alt, spd, mach }
+    local left = {}
+    local from = s.e  -- values before the callsign or type count aircraft ("create two aircraft: ...")
+    for _, r in ipairs(self.refs) do
+      if (r.kind == "aircraft" or r.kind == "type") and r.b >= s.b and r.b < from then from = r.b end
+    end
+    for _, q in ipairs(qs) do
+      if q.b < from then goto continue end
+      local seen = false
+      for _, v in ipairs(read) do if v and math.abs(v - q.value) < 1e-9 then seen = true end end
+      if not seen and (q.kind == "plain" or q.kind == "dist") then left[#left + 1] = q end
+      ::continue::
+    end
+    if #left == 1 and left[1].kind == "plain" and alt and not spd and not mach and left[1].value >= 40
+        and left[1].value <= 700 then
+      spd = left[1].value
+      left = {}
+    end
+    if #left > 0 and id and actype then
+      local words = {}
+      for k = left[1].b, left[1].e - 1 do words[#words + 1] = self.t[k].raw end
+      return self:need(string.format("To create %s I did not place '%s'. What does it give: a position, heading, "
+        .. "altitude or speed?", id, table.concat(words, " ")))
+    end
     local missing = {}
     if not id then missing[#missing + 1] = "callsign" end
     if not actype then missing[#missing + 1] = "aircraft type" end
-    if not lat or not lon then missing[#missing + 1] = "position" end
+    if (not lat or not lon) and not named_at then missing[#missing + 1] = "position" end
     if #missing > 0 then
       return self:need("To create the aircraft I need its " .. table.concat(missing, ", ") .. ". What should they be?")
     end
@@ -99,7 +131,7 @@ return function(H, f, compass)
       return self:need("What heading should " .. id .. " have?")
     end
     if (spd or mach) and not alt then return self:need("What altitude should " .. id .. " have?") end
-    local cmd = "CRE " .. id .. " " .. actype .. " " .. f.num(lat) .. " " .. f.num(lon)
+    local cmd = "CRE " .. id .. " " .. actype .. " " .. (named_at or (f.num(lat) .. " " .. f.num(lon)))
     if hdg or alt or spd or mach then cmd = cmd .. " " .. f.num(hdg or 0) end
     if alt or spd or mach then cmd = cmd .. " " .. f.alt(alt, fl) end
     if spd then cmd = cmd .. " " .. f.int(spd) end

@@ -121,6 +121,8 @@ return function(intent, rule, words)
   rule { "via", "addwpt", prev = { 3, "route" } }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
+  -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
+  rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }

@@ -104,7 +104,11 @@ function M.build(designators)
         for _, a in ipairs(alts) do
           a = a:gsub("^%s+", ""):gsub("%s+$", "")
           for _, s in ipairs(spellings(a)) do add(rows, seen, maker, s, d) end
-          if a:find(" ") then phrases[#phrases + 1] = { a:lower(), d } end
+          if a:find(" ") then
+            phrases[#phrases + 1] = { a:lower(), d }
+            -- the family said as its designator ("B737 MAX 8")
+            if maker == "boeing" then phrases[#phrases + 1] = { "b" .. a:lower(), d } end
+          end
           local fam = a:lower():match("^(a?%d%d%d)[%-%s]")
           if fam then families[#families + 1] = { maker, fam, d } end
         end
@@ -113,7 +117,10 @@ function M.build(designators)
     for _, n in ipairs(pattern_names(d)) do
       for _, sp in ipairs(spellings(n[2])) do add(rows, seen, n[1], sp, d) end
       -- several words, or digits joined by a hyphen the lexer splits ("dash 8-400")
-      if n[2]:find(" ") then phrases[#phrases + 1] = { n[2], d } end
+      if n[2]:find(" ") then
+        phrases[#phrases + 1] = { n[2], d }
+        if n[1] == "boeing" then phrases[#phrases + 1] = { "b" .. n[2], d } end
+      end
       if n[2]:find("^%d+%-%d") then phrases[#phrases + 1] = { n[1] .. " " .. n[2], d } end
       local fam = n[2]:match("^(a?%d%d%d)%-")
       if fam then families[#families + 1] = { n[1], fam, d } end
