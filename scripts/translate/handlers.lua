@@ -382,6 +382,8 @@ function m:at_altitude(s)
   local a = self:find_word(s.b, s.trig, "at passing leaving reaching through")
   if a >= s.trig then return nil end
   if (s.intent == "maintain" or s.intent == "alt") and not self:word(a, "passing leaving reaching") then return nil end
+  -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" a condition
+  if s.intent == "alt" and not self:word_in(math.max(s.b, a - 2), a, "@condition") then return nil end
   local qs = self:quantities(a + 1, s.trig)
   local q = qs[1]
   if not q or q.b ~= a + 1 or self:skip_fillers(q.e) ~= s.trig then return nil end

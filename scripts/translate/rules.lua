@@ -160,6 +160,9 @@ return function(intent, rule, words)
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how", "pos", near = { 4, "altitude speed heading position level" } }
+  -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
+  rule { "able", "pos", prev = { 2, "you" } }
+  rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "say altitude", "report your heading": a question about the aircraft's state
   rule { "say report", "pos", near = { 2, "altitude speed heading position level airspeed mach" } }
   rule { "unpause op", "op" }
