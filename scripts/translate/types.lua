@@ -140,10 +140,14 @@ end
 
 -- The request with each name of several words as its designator ("a 737 MAX 8" -> "a B38M").
 function M.join(text, phrases)
+  local lower = text:lower()
   for _, p in ipairs(phrases) do
-    local pat = p[1]:gsub("%p", "%%%0"):gsub("%a", function(ch) return "[" .. ch:lower() .. ch:upper() .. "]" end)
-      :gsub(" ", "[%%s%%-]+")
-    text = text:gsub("%f[%w]" .. pat .. "%f[%W]", p[2])
+    if lower:find(p[1]:match("^%S+"), 1, true) then  -- its first word is there: worth a pattern match
+      p.pattern = p.pattern or ("%f[%w]" .. p[1]:gsub("%p", "%%%0")
+        :gsub("%a", function(ch) return "[" .. ch:lower() .. ch:upper() .. "]" end)
+        :gsub(" ", "[%%s%%-]+") .. "%f[%W]")
+      text = text:gsub(p.pattern, p[2])
+    end
   end
   return text
 end
