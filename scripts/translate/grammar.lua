@@ -607,8 +607,8 @@ end
 
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
--- reply naming them, or nil. A phrase runs from its word to the end of its
--- clause: punctuation, "and"/"then", or the next instruction word.
+-- reply naming them, or nil. A phrase runs from its word to the next
+-- instruction word, "and"/"then", or punctuation other than a comma.
 function G:not_simulated()
   local found, seen = {}, {}
   local i = 1
@@ -628,7 +628,10 @@ function G:not_simulated()
       local e = i + 1
       while e <= #self.t do
         local x = self.t[e]
-        if x.kind == "punct" or (x.kind == "word" and (x.text == "and" or x.text == "then")) then break end
+        -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
+        if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
+          break
+        end
         if self:intent_at(e) and not self:word(e, "approach cleared hold holding contact") then break end
         e = e + 1
       end
@@ -668,7 +671,8 @@ function M.translate(text, world)
     qcache = {}, taken = {} }, G)
   g:settle_callsigns()
   local note = g:not_simulated()
-  if note and not g:any_instruction() then return { commands = {}, note = note } end
+  -- only what is not simulated was said: no instruction word and no value left
+  if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()
   if not g.ask then
     g:parse(rest, #g.t + 1)

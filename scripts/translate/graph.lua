@@ -188,8 +188,44 @@ local function default_prompts()
   return cached_prompts
 end
 
+-- "seed 7, mcre 20, ff 10 min": a list whose every comma-separated clause
+-- opens with a registry command word (name or alias; a leading "then"/"and"
+-- skipped) -> the clauses, else nil.
+local LINKS = { ["then"] = true, ["and"] = true }
+function M.command_clauses(text)
+  local parts = {}
+  for part in (text .. ","):gmatch("([^,;]*)[,;]") do
+    part = part:gsub("^%s+", ""):gsub("%s+$", "")
+    local first, rest = part:match("^(%S+)%s*(.*)$")
+    while first and LINKS[first:lower()] do first, rest = rest:match("^(%S+)%s*(.*)$") end
+    if not first or not nodes.canonical_name(first:gsub("[%p]+$", "")) then return nil end
+    parts[#parts + 1] = first .. (rest ~= "" and (" " .. rest) or "")
+  end
+  return #parts >= 2 and parts or nil
+end
+
 function M.translate(text, opts)
   opts = opts or {}
+  -- a list of command clauses: each translated on the state the ones before it leave
+  local parts = not opts.in_list and M.command_clauses(text)
+  if parts then
+    local sim = opts.sim or squawk.sim.new()
+    local scratch = sim:copy()
+    local all, trace = {}, {}
+    for _, part in ipairs(parts) do
+      local r = M.translate(part, setmetatable({ sim = scratch, in_list = true }, { __index = opts }))
+      for _, t in ipairs(r.trace or {}) do trace[#trace + 1] = { node = t.node, said = "[" .. part .. "] " .. t.said } end
+      if r.ask or r.error then
+        r.trace = trace
+        return r
+      end
+      for _, c in ipairs(r.commands) do
+        all[#all + 1] = c
+        scratch:exec(c)
+      end
+    end
+    return { commands = all, trace = trace, mode = opts.mode or "offline" }
+  end
   local llm = opts.llm
   if llm == nil and opts.mode ~= "offline" then llm = default_llm() end
   local mode = opts.mode or (llm and "multi" or "offline")

@@ -397,21 +397,31 @@ end
 -- "AC02: heading 180, FL200, 250 kts": values with units of another kind
 -- after a value instruction are instructions too.
 function m:leftovers(s)
-  if s.intent ~= "hdg" and s.intent ~= "alt" and s.intent ~= "spd" then return end
+  if s.intent ~= "hdg" and s.intent ~= "alt" and s.intent ~= "spd" and s.intent ~= "infer" and s.intent ~= "maintain" then
+    return
+  end
   local ids = self:acids(s)
   if #ids ~= 1 then return end
-  local alt_done, spd_done, hdg_done = s.intent == "alt", s.intent == "spd", false
+  local out = table.concat(self.out, " ; ")
+  local alt_done = s.intent == "alt" or out:find("ALT " .. ids[1], 1, true) ~= nil
+  local spd_done = s.intent == "spd" or out:find("SPD " .. ids[1], 1, true) ~= nil
+  local hdg_done = false
   for _, q in ipairs(self:quantities(s.b, s.e)) do
-    if q.b > s.trig then
+    -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300")
+    local unit = (q.kind == "alt" and q.fl) or q.kind == "speed" or q.kind == "mach"
+    -- in spoken order: one said before the instruction word goes before its command
+    local emit = q.b < s.trig and function(line) table.insert(self.out, #self.out, line) end
+      or function(line) self:emit(line) end
+    if not self.taken[q.b] and (q.b > s.trig or (unit and s.trig > s.b)) then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
-        self:emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl))
+        emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl))
         alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
-        self:emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
         spd_done = self:take(q)
       elseif s.intent ~= "hdg" and not hdg_done and q.kind == "plain" and H.zero_led_heading(q) then
         -- three spoken digits led by zero are a heading: no level or speed is said so
-        self:emit("HDG " .. ids[1] .. " " .. f.num(q.value))
+        emit("HDG " .. ids[1] .. " " .. f.num(q.value))
         hdg_done = self:take(q)
       end
     end

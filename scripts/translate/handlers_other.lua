@@ -108,6 +108,11 @@ return function(H, f, compass)
       if not seen and (q.kind == "plain" or q.kind == "dist") then left[#left + 1] = q end
       ::continue::
     end
+    -- CRE's order for values said bare: heading, altitude, speed ("52.15 4.25 45 fl310 290")
+    if #left >= 1 and left[1].kind == "plain" and not hdg and alt and left[1].value >= 0 and left[1].value <= 360
+        and (#left == 2 or spd or mach) then
+      hdg = table.remove(left, 1).value
+    end
     if #left == 1 and left[1].kind == "plain" and alt and not spd and not mach and left[1].value >= 40
         and left[1].value <= 700 then
       spd = left[1].value
@@ -145,7 +150,20 @@ return function(H, f, compass)
     if not id then return end
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig)
-    if not lat or not lon then return self:need("Where should " .. id .. " go? Please give a latitude and longitude.") end
+    local named_at
+    if not lat or not lon then
+      for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do named_at = named_at or r.name end
+      named_at = named_at or self:airport_by_name(s.trig + 1, s.e)
+    end
+    if (not lat or not lon) and not named_at then
+      return self:need("Where should " .. id .. " go? Please give a latitude and longitude.")
+    end
+    for _, q in ipairs(qs) do
+      if named_at and q.kind == "dist" then  -- "twenty miles north of Schiphol": an offset squawk does not place
+        return self:need(string.format("Where exactly should %s go? I cannot place '%s' from %s: please give a "
+          .. "latitude and longitude.", id, f.num(q.value) .. " NM", named_at))
+      end
+    end
     local opt = {}
     for _, q in ipairs(qs) do
       if q.kind == "alt" and not opt[1] then opt[1] = f.alt(q.value, q.fl) end
@@ -156,7 +174,7 @@ return function(H, f, compass)
     end
     local last = 0
     for k = 1, 4 do if opt[k] then last = k end end
-    local cmd = "MOVE " .. id .. " " .. f.num(lat) .. " " .. f.num(lon)
+    local cmd = "MOVE " .. id .. " " .. (named_at or (f.num(lat) .. " " .. f.num(lon)))
     local now = self:state(id)
     for k = 1, last do
       if opt[k] then
@@ -370,7 +388,10 @@ return function(H, f, compass)
     if not id then return end
     local w = self:refs_in(s.b, s.e, "waypoint")
     local lat, lon = position(self:quantities(s.b, s.e), s.trig)
-    if #w > 0 then
+    local airport = #w == 0 and self:airport_by_name(s.b, s.e)
+    if airport then
+      self:emit(cmd .. " " .. id .. " " .. airport)
+    elseif #w > 0 then
       self:emit(cmd .. " " .. id .. " " .. w[#w].name)
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))

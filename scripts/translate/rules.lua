@@ -145,6 +145,7 @@ return function(intent, rule, words)
 
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
+  rule { "where's", "pos" }
   rule { "details status info information", "pos" }
   rule { "move reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
