@@ -105,3 +105,7 @@ if #sim:airports_named("schiphol") == 1 then
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
+
+-- units people type: km/h is a speed in knots, metres an altitude in feet
+check_eq(said(tr("KLM1234 speed 500 km/h")), "SPD KLM1234 270")
+check_eq(said(tr("KLM1234 reduce speed to 400 kph")), "SPD KLM1234 216")
