@@ -421,7 +421,12 @@ return function(H, f, compass)
     if id then self:emit(cmd .. " " .. id) end
   end
   function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
-  function m:pos(s) self:one_acid(s, "POS", "be shown") end
+  -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
+  function m:pos(s)
+    local places = self:refs_in(s.b, s.e, "waypoint")
+    if #self:refs_in(s.b, s.e, "aircraft") == 0 and #places > 0 then return self:emit("POS " .. places[1].name) end
+    self:one_acid(s, "POS", "be shown")
+  end
 
   function m:bank(s)
     local id = self:acid(s, "get a bank limit")

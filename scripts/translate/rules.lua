@@ -126,7 +126,7 @@ return function(intent, rule, words)
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
-  rule { "delete del remove rid", "delete" }
+  rule { "delete del remove rid kill", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
@@ -140,13 +140,13 @@ return function(intent, rule, words)
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints", "listrte", prev = { 3, "show list display what print" } }
+  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print" } }
   rule { "listrte", "listrte" }
 
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
-  rule { "details status info information", "pos" }
+  rule { "details status info information state", "pos" }
   rule { "move reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
 
@@ -183,7 +183,7 @@ return function(intent, rule, words)
   rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
-  rule { "ff fastforward", "ff" }
+  rule { "ff fastforward fwd", "ff" }
   rule { "skip", "ff", next = "ahead forward" }
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
