@@ -632,7 +632,9 @@ function G:not_simulated()
         if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
           break
         end
-        if self:intent_at(e) and not self:word(e, "approach cleared hold holding contact") then break end
+        if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact") then
+          break
+        end
         e = e + 1
       end
       local words = {}
@@ -640,7 +642,7 @@ function G:not_simulated()
       self:mark_used(i, e)
       if not seen[class.what] then
         seen[class.what] = true
-        found[#found + 1] = string.format("%s ('%s')", class.what, table.concat(words, " "))
+        found[#found + 1] = string.format("%s ('%s')", class.what, (table.concat(words, " "):gsub(" ([,.;:])", "%1")))
       end
       i = e
     else

@@ -113,6 +113,10 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- traffic information ("traffic 2 o'clock, 5 miles, eastbound, altitude indicates 3500") runs to the
+    -- end of the request: the words in it describe the other aircraft, they instruct nobody
+    { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
+      to_end = true },
     { what = "holding patterns", words = "holding" },
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" } },

@@ -109,3 +109,8 @@ end
 -- units people type: km/h is a speed in knots, metres an altitude in feet
 check_eq(said(tr("KLM1234 speed 500 km/h")), "SPD KLM1234 270")
 check_eq(said(tr("KLM1234 reduce speed to 400 kph")), "SPD KLM1234 216")
+
+-- traffic information describes another aircraft: named, never an instruction
+r = tr("KLM1234, turn right heading 023, traffic 2 o'clock, 36 miles")
+check_eq(said(r), "HDG KLM1234 23 RIGHT")
+check(r.note ~= nil and r.note:find("traffic information ('traffic 2 o'clock, 36 miles')", 1, true) ~= nil, tostring(r.note))
