@@ -126,10 +126,19 @@ Result<std::string> pos(Call& c) {
   return c[0].text + " at " + text::fmt_double(c[0].pos.lat, 6) + " " + text::fmt_double(c[0].pos.lon, 6);
 }
 
+// HDG acid,hdg,[LEFT/RIGHT]: the direction (L and R accepted) is a squawk
+// extension; without it the aircraft turns the short way, as in BlueSky.
 Result<std::string> hdg(Call& c) {
   const double h = c[1].num;
-  SQUAWK_RETURN_IF_ERROR(for_each_acid(c, 0, [h](sim::Simulation& s, const std::string& id) {
-    return s.set_heading(id, h);
+  int turn = 0;
+  if (c.has(2)) {
+    const std::string& d = c[2].text;
+    if (d == "LEFT" || d == "L") turn = -1;
+    else if (d == "RIGHT" || d == "R") turn = 1;
+    else return Status::invalid("argument 3: turn direction " + text::quoted(d) + " is not LEFT, RIGHT, L or R");
+  }
+  SQUAWK_RETURN_IF_ERROR(for_each_acid(c, 0, [h, turn](sim::Simulation& s, const std::string& id) {
+    return s.set_heading(id, h, turn);
   }));
   return std::string();
 }
@@ -242,10 +251,12 @@ void add_traffic_commands(std::vector<CommandDecl>& out) {
                  "Shows an aircraft's state (position, altitude, speeds, selections, LNAV/VNAV, active "
                  "waypoint), or where a named airport, waypoint or navaid is. A bare callsign means POS.",
                  {"POS KL204", "KL204", "POS EHAM"}, pos, {}, true});
-  out.push_back({"HDG", {"HEADING", "TURN"}, "acid,hdg", "HDG acid,hdg",
+  out.push_back({"HDG", {"HEADING", "TURN"}, "acid,hdg,[txt]", "HDG acid,hdg,[LEFT/RIGHT]",
                  "Selects a heading in degrees; the aircraft turns the short way at its bank angle. Switches "
-                 "LNAV off. A name instead of a number means the bearing to that airport, waypoint or aircraft.",
-                 {"HDG KL204 270", "KL204 HDG 045"}, hdg, {}, true});
+                 "LNAV off. A name instead of a number means the bearing to that airport, waypoint or aircraft. "
+                 "LEFT or RIGHT (L, R) is a squawk extension, not BlueSky: the aircraft turns that way even "
+                 "when the other way is shorter, until it has the heading.",
+                 {"HDG KL204 270", "KL204 HDG 045", "HDG KL204 300 RIGHT"}, hdg, {}, true});
   out.push_back({"ALT", {}, "acid,alt,[vspd]", "ALT acid,alt,[vspd]",
                  "Selects an altitude in feet or as a flight level; the aircraft climbs or descends to it, at "
                  "vspd feet per minute when given. Switches VNAV off.",

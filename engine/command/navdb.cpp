@@ -1,5 +1,7 @@
 #include "command/navdb.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -30,7 +32,8 @@ std::vector<std::string_view> lines_of(std::string_view data) {
 
 bool valid_latlon(double lat, double lon) { return std::fabs(lat) <= 90.0 && std::fabs(lon) <= 180.0; }
 
-Status parse_airports(std::string_view data, const std::string& path, std::vector<NavPoint>& out) {
+Status parse_airports(std::string_view data, const std::string& path, std::vector<NavPoint>& out,
+                      std::vector<std::string>& names) {
   size_t lineno = 0;
   for (auto raw : lines_of(data)) {
     ++lineno;
@@ -45,6 +48,7 @@ Status parse_airports(std::string_view data, const std::string& path, std::vecto
       return Status::corruption(path + ":" + std::to_string(lineno) +
                                 ": expected 'code, name, lat, lon, ...' with lat/lon in degrees");
     out.push_back({id, "APT", *lat, *lon});
+    names.push_back(text::upper(text::trim(f[1])));
   }
   return Status::ok();
 }
@@ -118,12 +122,15 @@ Result<std::shared_ptr<const NavDb>> NavDb::parse(std::string_view airports_dat,
 Result<std::shared_ptr<NavDb>> NavDb::build(std::string_view airports_dat, std::string_view nav_dat,
                                             std::string_view fix_dat, const std::string& where) {
   std::vector<NavPoint> airports, waypoints;
-  SQUAWK_RETURN_IF_ERROR(parse_airports(airports_dat, where + "/airports.dat", airports));
+  std::vector<std::string> names;
+  SQUAWK_RETURN_IF_ERROR(parse_airports(airports_dat, where + "/airports.dat", airports, names));
   parse_navaids(nav_dat, waypoints);
   parse_fixes(fix_dat, waypoints);
   if (airports.empty() && waypoints.empty())
     return Status::corruption("navdata folder '" + where + "' holds no airports, navaids or fixes");
-  return std::make_shared<NavDb>(std::move(airports), std::move(waypoints));
+  auto db = std::make_shared<NavDb>(std::move(airports), std::move(waypoints));
+  db->airport_names_ = std::move(names);
+  return db;
 }
 
 Result<std::shared_ptr<const NavDb>> NavDb::load_cached(const std::string& dir) {
@@ -134,6 +141,42 @@ Result<std::shared_ptr<const NavDb>> NavDb::load_cached(const std::string& dir) 
   SQUAWK_ASSIGN_OR_RETURN(auto db, load(dir));
   cache.emplace(dir, db);
   return db;
+}
+
+namespace {
+// Upper-case words of a name, punctuation dropped, joined by single spaces.
+std::string name_key(std::string_view name) {
+  std::string out;
+  bool gap = false;
+  for (char c : name) {
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      if (gap && !out.empty()) out.push_back(' ');
+      out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+      gap = false;
+    } else {
+      gap = true;
+    }
+  }
+  return out;
+}
+}  // namespace
+
+std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const {
+  std::vector<const NavPoint*> out;
+  const std::string key = name_key(name);
+  if (key.empty()) return out;
+  // words a name may carry after the part people say ("Schiphol Airport")
+  static const char* kGeneric[] = {"AIRPORT", "INTERNATIONAL", "INTL", "AIRFIELD", "AERODROME", "AIRBASE", "AIR BASE"};
+  for (size_t i = 0; i < airport_names_.size() && i < airports_.size(); ++i) {
+    const std::string n = name_key(airport_names_[i]);
+    bool fits = n == key;
+    if (!fits && n.size() > key.size() + 1 && n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ') {
+      const std::string rest = n.substr(key.size() + 1);
+      fits = std::any_of(std::begin(kGeneric), std::end(kGeneric), [&](const char* g) { return rest == g; });
+    }
+    if (fits) out.push_back(&airports_[i]);
+  }
+  return out;
 }
 
 const NavPoint* NavDb::airport(std::string_view id) const {

@@ -48,6 +48,9 @@ class NavDb {
         std::shared_ptr<const RunwayDb> runways = nullptr);
 
   const NavPoint* airport(std::string_view id) const;
+  // Airports whose name is `name`, or `name` and a generic word ("Airport",
+  // "International"), case and punctuation ignored ("schiphol" -> EHAM).
+  std::vector<const NavPoint*> airports_named(std::string_view name) const;
   // The waypoint (fix or navaid) named `id` nearest (ref_lat, ref_lon) [deg].
   const NavPoint* waypoint(std::string_view id, double ref_lat, double ref_lon) const;
 
@@ -66,6 +69,7 @@ class NavDb {
                                               std::string_view fix_dat, const std::string& where);
 
   std::vector<NavPoint> airports_;
+  std::vector<std::string> airport_names_;  // airports.dat names, upper case, by airports_ index (may be empty)
   std::vector<NavPoint> waypoints_;
   std::unordered_map<std::string, size_t> airport_index_;
   std::unordered_multimap<std::string, size_t> waypoint_index_;

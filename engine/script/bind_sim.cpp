@@ -5,6 +5,8 @@
 //       places are errors). Scenario files load relative to the script folder.
 //   sim:exec(line)       -> ok, message   (TrafScript; `;` separates commands)
 //   sim:check(line)      -> ok, message   (parse-only validation, nothing runs)
+//   sim:airports_named(name) -> { "EHAM", ... }  airports of the navdata whose name is
+//                           `name` or starts with its words ({} without navdata)
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
 //                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
@@ -12,7 +14,8 @@
 //   sim:time() -> s;  sim:dt() -> s;  sim:count() -> number of aircraft
 //   sim:aircraft()       -> { {id=, type=, lat=, lon=, alt_ft=, hdg_deg=, trk_deg=,
 //                              tas_kt=, cas_kt=, gs_kt=, vs_fpm=, lnav=, vnav=,
-//                              sel_hdg_deg=, sel_alt_ft=, sel_vs_fpm= (0: default),
+//                              sel_hdg_deg=, sel_turn= ("LEFT"/"RIGHT" while a commanded
+//                              turn direction holds, else nil), sel_alt_ft=, sel_vs_fpm= (0: default),
 //                              sel_cas_kt= or sel_mach=, resolving= (MVP active),
 //                              route = { {name=, lat=, lon=, alt_ft=?, spd=?}, ... },
 //                              active_wpt= (name or nil), orig=?, dest=?}, ... }
@@ -28,6 +31,9 @@
 //   sim:copy()           -> an independent copy
 //   sim:snapshot()       -> string            (the full state as bytes)
 //   squawk.sim.commands() -> { {name=, aliases={...}, args=, usage=, help=}, ... }
+//   squawk.sim.types() -> { {designator=, title= (OpenAP's name, "Boeing 777-300ER"; nil
+//       for synonyms and the class model), model = "openap"|"class", class=}, ... }: the
+//       OpenAP data of $SQUAWK_OPENAP / --openap, then the class model's named designators
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -38,6 +44,8 @@
 #include "core/paths.h"
 #include "core/units.h"
 #include "sim/atmosphere.h"
+#include "sim/openap_data.h"
+#include "sim/performance.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
@@ -83,6 +91,7 @@ void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
   lua_pushboolean(L, t.vnav[i]);
   lua_setfield(L, -2, "vnav");
   set_number(L, "sel_hdg_deg", t.sel_hdg[i]);
+  if (t.sel_turn[i] != 0) set_string(L, "sel_turn", t.sel_turn[i] < 0 ? "LEFT" : "RIGHT");
   set_number(L, "sel_alt_ft", units::m_to_ft(t.sel_alt[i]));
   set_number(L, "sel_vs_fpm", units::ms_to_fpm(t.sel_vs[i]));
   if (sim::is_mach(t.sel_spd[i])) set_number(L, "sel_mach", t.sel_spd[i]);
@@ -150,6 +159,19 @@ int l_new(lua_State* L) {
 int l_exec(lua_State* L) {
   command::Stack* s = self(L);
   return push_outcome(L, s->exec(arg_string(L, 2, "line")));
+}
+
+int l_airports_named(lua_State* L) {
+  command::Stack* s = self(L);
+  const std::string name = arg_string(L, 2, "name");
+  lua_newtable(L);
+  if (!s->navdb()) return 1;
+  int k = 0;
+  for (const command::NavPoint* a : s->navdb()->airports_named(name)) {
+    lua_pushstring(L, a->id.c_str());
+    lua_rawseti(L, -2, ++k);
+  }
+  return 1;
 }
 
 int l_check(lua_State* L) {
@@ -328,6 +350,24 @@ int l_snapshot(lua_State* L) {
   return 1;
 }
 
+// squawk.sim.types(): the types the performance models know.
+int l_types(lua_State* L) {
+  lua_newtable(L);
+  int k = 0;
+  auto push = [&](std::string_view designator, const std::string& title, const char* model, const char* cls) {
+    lua_createtable(L, 0, 4);
+    set_string(L, "designator", std::string(designator));
+    if (!title.empty()) set_string(L, "title", title);
+    set_string(L, "model", model);
+    set_string(L, "class", cls);
+    lua_rawseti(L, -2, ++k);
+  };
+  if (const auto oap = sim::default_openap())
+    for (const auto& [designator, title] : oap->titles()) push(designator, title, "openap", "jet");
+  for (const auto& [designator, cls] : sim::class_model_types()) push(designator, "", "class", sim::perf_class_name(cls));
+  return 1;
+}
+
 int l_commands(lua_State* L) {
   const auto& cmds = command::Registry::instance().commands();
   lua_createtable(L, static_cast<int>(cmds.size()), 0);
@@ -354,6 +394,7 @@ int l_commands(lua_State* L) {
 void bind_sim(lua_State* L) {
   static const luaL_Reg methods[] = {
       {"exec", guarded<l_exec>},         {"check", guarded<l_check>},
+      {"airports_named", guarded<l_airports_named>},
       {"load", guarded<l_load>},         {"step", guarded<l_step>},
       {"run_until", guarded<l_run_until>}, {"run_for", guarded<l_run_for>},
       {"time", guarded<l_time>},         {"dt", guarded<l_dt>},
@@ -371,6 +412,8 @@ void bind_sim(lua_State* L) {
   lua_setfield(L, -2, "new");
   lua_pushcfunction(L, guarded<l_commands>);
   lua_setfield(L, -2, "commands");
+  lua_pushcfunction(L, guarded<l_types>);
+  lua_setfield(L, -2, "types");
   lua_pop(L, 1);
 }
 

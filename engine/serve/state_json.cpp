@@ -31,6 +31,7 @@ json aircraft_json(const sim::Traffic& t, size_t i) {
             {"gs_kt", units::ms_to_kt(t.gs[i])},
             {"vs_fpm", units::ms_to_fpm(t.vs[i])},
             {"sel_hdg_deg", t.sel_hdg[i]},
+            {"sel_turn", t.sel_turn[i] < 0 ? json("LEFT") : t.sel_turn[i] > 0 ? json("RIGHT") : json(nullptr)},
             {"sel_alt_ft", units::m_to_ft(t.sel_alt[i])},
             {"lnav", t.lnav[i] != 0},
             {"vnav", t.vnav[i] != 0},

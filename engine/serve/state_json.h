@@ -5,7 +5,9 @@
 //   simt [s], running (bool), fast (bool), dtmult [-],
 //   asas {on, reso, rpz_nm, hpz_ft, dtlook_s},
 //   aircraft [{id, type, lat, lon [deg], alt_ft, hdg_deg, trk_deg, cas_kt,
-//              tas_kt, gs_kt, vs_fpm, sel_hdg_deg, sel_alt_ft, sel_cas_kt
+//              tas_kt, gs_kt, vs_fpm, sel_hdg_deg, sel_turn ("LEFT" or
+//              "RIGHT" while a commanded turn direction holds, else null),
+//              sel_alt_ft, sel_cas_kt
 //              (null when a Mach is selected: sel_mach), lnav, vnav,
 //              resolving (bool: following a resolution), active_wpt (name or
 //              null), route [{name, lat, lon, alt_ft|null}]}],

@@ -158,6 +158,7 @@ class Loader {
 
     OpenapType t;
     t.name = text::upper(acname);
+    if (acname == mdl && ac.count("aircraft")) t.title = std::string(text::trim(ac.at("aircraft")));
     t.vminto = var("to_v_lof")->min;
     t.vminic = var("ic_va_avg")->min;
     t.vmaxic = var("ic_va_avg")->max;
@@ -280,6 +281,12 @@ Status set_default_openap(const std::string& dir) {
   g_loaded = true;
   g_default = std::move(data);
   return Status::ok();
+}
+
+std::vector<std::pair<std::string, std::string>> OpenapData::titles() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [key, t] : types_) out.emplace_back(key, t.title);
+  return out;
 }
 
 }  // namespace squawk::sim

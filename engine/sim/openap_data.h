@@ -35,6 +35,8 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 #include <string_view>
 
 #include "core/status.h"
@@ -43,6 +45,7 @@ namespace squawk::sim {
 
 struct OpenapType {
   std::string name;  // upper-case type the data came from (after synonyms)
+  std::string title; // the aircraft as the data names it ("Boeing 777-300ER"); empty for a synonym
   // Speed envelope, CAS [m/s]
   double vminto = 0, vminic = 0, vmaxic = 0, vminer = 0, vmaxer = 0, vminap = 0, vmaxap = 0;
   double mmo = 0;      // [-]
@@ -70,6 +73,8 @@ class OpenapData {
   bool has(std::string_view actype) const;
   const std::string& dir() const { return dir_; }
   int size() const { return static_cast<int>(types_.size()); }
+  // Every type the data knows, upper case, sorted, with its title (empty for a synonym).
+  std::vector<std::pair<std::string, std::string>> titles() const;
 
  private:
   std::string dir_;

@@ -38,6 +38,14 @@ bool listed(const std::string_view (&list)[N], std::string_view t) {
 }
 }  // namespace
 
+std::vector<std::pair<std::string_view, PerfClass>> class_model_types() {
+  std::vector<std::pair<std::string_view, PerfClass>> out;
+  for (auto t : kTurboprops) out.emplace_back(t, PerfClass::kTurboprop);
+  for (auto t : kPistons) out.emplace_back(t, PerfClass::kPiston);
+  for (auto t : kHelicopters) out.emplace_back(t, PerfClass::kHelicopter);
+  return out;
+}
+
 PerfClass perf_class_of(std::string_view actype) {
   const std::string t = text::upper(text::trim(actype));
   if (listed(kTurboprops, t)) return PerfClass::kTurboprop;

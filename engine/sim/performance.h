@@ -22,6 +22,8 @@
 #pragma once
 
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace squawk::sim {
 
@@ -46,6 +48,9 @@ struct PerformanceOptions {
 
 // Class of an ICAO type designator (case-insensitive); unknown types are jets.
 PerfClass perf_class_of(std::string_view actype);
+// The designators the class model lists by name (turboprops, pistons,
+// helicopters; any other type is a jet), with their class.
+std::vector<std::pair<std::string_view, PerfClass>> class_model_types();
 const char* perf_class_name(PerfClass c);
 // The fixed limits of a class (table above).
 const PerfLimits& perf_limits(PerfClass c);

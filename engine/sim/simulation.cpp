@@ -253,6 +253,7 @@ void Simulation::update_autopilot() {
       start_leg(i, true);
     }
     t.sel_hdg[i] = qd.qdr_deg;
+    t.sel_turn[i] = 0;
     // VNAV speed: reach the active waypoint's constraint there (start when
     // the distance to it is what the speed change takes at axmax), else
     // hold the leg's constraint.
@@ -379,10 +380,18 @@ void Simulation::update_kinematics() {
     if (windy) hdg_t = wind_heading(hdg_t, t.tas[i], w);
     if (t.hdg[i] != hdg_t) {
       const double rate = std::tan(t.bank[i]) * units::kG0 / std::max(t.tas[i], kTasEps) / kDeg;  // [deg/s]
-      const double dh = geo::wrap180(hdg_t - t.hdg[i]);
+      double dh = geo::wrap180(hdg_t - t.hdg[i]);
+      // a commanded direction (HDG ... LEFT/RIGHT) goes the long way round when it must
+      const int turn = cr ? 0 : t.sel_turn[i];
+      if (turn > 0 && dh < 0.0) dh += 360.0;
+      if (turn < 0 && dh > 0.0) dh -= 360.0;
       const double lim_h = rate * dt;
-      t.hdg[i] = std::fabs(dh) <= lim_h ? hdg_t : geo::wrap360(t.hdg[i] + std::copysign(lim_h, dh));
+      const bool captured = std::fabs(dh) <= lim_h;
+      t.hdg[i] = captured ? hdg_t : geo::wrap360(t.hdg[i] + std::copysign(lim_h, dh));
+      if (captured) t.sel_turn[i] = 0;
       set_heading_cache(i);
+    } else if (t.sel_turn[i] != 0) {
+      t.sel_turn[i] = 0;
     }
 
     // Vertical: altitude select with a time-based capture band, V/S ramp.
@@ -471,7 +480,7 @@ std::string Simulation::snapshot() const {
                         &t.oldturnspd, &t.leg_spd, &t.next_spd})
     put_vec(out, *v);
   put_vec(out, t.lnav), put_vec(out, t.vnav), put_vec(out, t.cr_active), put_vec(out, t.vnav_spd);
-  put_vec(out, t.in_area);
+  put_vec(out, t.in_area), put_vec(out, t.sel_turn);
   cd_.serialize(out);
   cr_.serialize(out);
   wind_.serialize(out);

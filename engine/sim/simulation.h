@@ -135,7 +135,10 @@ class Simulation {
   // --- Autopilot ------------------------------------------------------------
   // HDG: selected heading [deg], any finite value, wrapped; switches LNAV off.
   // With wind (above 50 ft) the track that heading gives now is selected.
-  Status set_heading(std::string_view acid, double hdg_deg);
+  // turn: -1 left, +1 right (a squawk extension: the aircraft turns that way
+  // even when the other way is shorter, until the heading is captured),
+  // 0 the short way (BlueSky's HDG).
+  Status set_heading(std::string_view acid, double hdg_deg, int turn = 0);
   // ALT: selected altitude [m] in [-300, 30000], optional |vs| [m/s] > 0;
   // switches VNAV off.
   Status set_altitude(std::string_view acid, double alt_m, std::optional<double> vs = std::nullopt);

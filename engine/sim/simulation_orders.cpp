@@ -274,6 +274,7 @@ Status Simulation::move(std::string_view acid, double lat, double lon, std::opti
   if (alt_m) t.alt[i] = t.sel_alt[i] = *alt_m;
   if (hdg_deg) {
     t.hdg[i] = t.trk[i] = t.sel_hdg[i] = geo::wrap360(*hdg_deg);
+    t.sel_turn[i] = 0;
     set_heading_cache(i);
   }
   if (casmach) {
@@ -293,7 +294,7 @@ Status Simulation::move(std::string_view acid, double lat, double lon, std::opti
 
 // --- Autopilot ----------------------------------------------------------------
 
-Status Simulation::set_heading(std::string_view acid, double hdg_deg) {
+Status Simulation::set_heading(std::string_view acid, double hdg_deg, int turn) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "heading", hdg_deg));
   const Traffic& t = traf_;
@@ -304,6 +305,7 @@ Status Simulation::set_heading(std::string_view acid, double hdg_deg) {
     trk = std::atan2(t.tas[i] * std::sin(h) + w.east, t.tas[i] * std::cos(h) + w.north) / kDeg;
   }
   traf_.sel_hdg[i] = geo::wrap360(trk);
+  traf_.sel_turn[i] = static_cast<int8_t>(turn > 0 ? 1 : turn < 0 ? -1 : 0);
   traf_.lnav[i] = traf_.vnav[i] = 0;
   return Status::ok();
 }

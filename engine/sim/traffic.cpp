@@ -15,7 +15,7 @@ void for_each_column(Traffic& t, F&& f) {
   f(t.id), f(t.type), f(t.uid);
   f(t.lat), f(t.lon), f(t.alt), f(t.hdg), f(t.trk), f(t.tas), f(t.cas), f(t.gs), f(t.mach);
   f(t.gsnorth), f(t.gseast), f(t.vs), f(t.coslat);
-  f(t.sel_hdg), f(t.sel_alt), f(t.sel_spd), f(t.sel_vs), f(t.bank), f(t.lnav), f(t.vnav), f(t.route);
+  f(t.sel_hdg), f(t.sel_turn), f(t.sel_alt), f(t.sel_spd), f(t.sel_vs), f(t.bank), f(t.lnav), f(t.vnav), f(t.route);
   f(t.perf_class), f(t.perf), f(t.oap), f(t.phase), f(t.ax);
   f(t.wp_lat), f(t.wp_lon), f(t.dist2wp), f(t.nextaltco), f(t.dist2vs), f(t.wp_vs), f(t.vnav_vs), f(t.turndist), f(t.curlegdir);
   f(t.turnspd), f(t.oldturnspd), f(t.vnav_spd), f(t.in_area), f(t.leg_spd), f(t.next_spd);

@@ -42,6 +42,8 @@ struct Traffic {
 
   // Autopilot selections (what the pilot flies when no resolution is active)
   std::vector<double> sel_hdg;       // [deg] selected heading/track
+  std::vector<int8_t> sel_turn;      // [-] commanded turn direction to sel_hdg: -1 left, +1 right,
+                                     // 0 the short way; back to 0 once the heading is captured
   std::vector<double> sel_alt;       // [m] selected altitude
   std::vector<double> sel_spd;       // CAS [m/s] or Mach (is_mach), the selected speed
   std::vector<double> sel_vs;        // [m/s] selected |vertical speed|; 0 = class default

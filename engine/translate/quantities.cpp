@@ -190,6 +190,12 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
         q.kind = QKind::kDist;
         ++j;
         if (word_at(t, j, {"mile", "miles"})) ++j;
+      } else if (word_at(t, j, {"kph", "kmh"}) ||
+                 (word_at(t, j, {"km", "kilometres", "kilometers", "kilometre", "kilometer"}) &&
+                  word_at(t, j + 1, {"per"}) && word_at(t, j + 2, {"h", "hour"}))) {
+        q.kind = QKind::kSpeed;
+        q.value /= 1.852;  // km/h -> [kt] (the lexer reads "km/h" as "km per h")
+        j += word_at(t, j, {"kph", "kmh"}) ? 1 : 3;
       } else if (word_at(t, j, {"km", "kilometres", "kilometers", "kilometre", "kilometer"})) {
         q.kind = QKind::kDist;
         q.value /= 1.852;  // [NM]

@@ -59,6 +59,13 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       ++j;
       continue;
     }
+    // "twenty-three oh seven": "oh" between spoken digits is a zero
+    if ((k.text == "oh" || k.text == "o") && !s.groups.empty() && j + 1 < t.size() && is_word(t[j + 1]) &&
+        digit_word(t[j + 1].text) >= 0) {
+      s.groups.emplace_back("0");
+      s.ends.push_back(++j);
+      continue;
+    }
     if (k.text == "hundred" || k.text == "thousand") {
       if (!s.groups.empty()) {
         s.groups.pop_back();
@@ -231,7 +238,12 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     if (fleet.empty()) return false;
     CallsignMatch m = match_world(icao, spoken, suf, fleet, names);
     if ((m.score < 0.45 && fleet.size() != 1) || m.groups == 0) return false;
-    heard = {id, m.airline, m.digits};
+    // heard as far as the match read it and the spelled letters after it: digit
+    // groups after the match belong to the instruction ("... nine three four two, ten")
+    const std::string said_prefix = id.substr(0, id.size() - suf.joined(suf.groups.size()).size());
+    size_t said = m.groups;
+    while (said < suf.groups.size() && !std::isdigit(static_cast<unsigned char>(suf.groups[said][0]))) ++said;
+    heard = {said_prefix + text::upper(suf.joined(said)), m.airline, m.digits};
     id = m.id;
     end = suf.ends[m.groups - 1];
     return true;

@@ -11,7 +11,7 @@
 namespace squawk::translate {
 namespace {
 
-enum class Arg { kWord, kNum, kAlt, kSpd, kHdg, kLat, kLon, kRest };
+enum class Arg { kWord, kNum, kMagnitude, kAlt, kSpd, kHdg, kTurn, kLat, kLon, kRest };
 
 std::vector<std::string> tokens(std::string_view cmd) {
   std::string c(cmd);
@@ -44,6 +44,19 @@ std::optional<std::pair<double, bool>> speed(const std::string& s) {
   return std::make_pair(*v, false);
 }
 
+// HDG's turn direction (a squawk extension) with its shorthands folded: L -> LEFT, R -> RIGHT.
+std::string turn_word(const std::string& s) {
+  const std::string u = text::upper(s);
+  if (u == "L") return "LEFT";
+  if (u == "R") return "RIGHT";
+  return u;
+}
+
+bool is_turn_word(const std::string& s) {
+  const std::string u = turn_word(s);
+  return u == "LEFT" || u == "RIGHT";
+}
+
 bool same_arg(const std::string& a, const std::string& b, Arg kind) {
   auto num_eq = [](const std::string& x, const std::string& y, double tol) {
     auto u = text::to_double(x), v = text::to_double(y);
@@ -65,6 +78,12 @@ bool same_arg(const std::string& a, const std::string& b, Arg kind) {
       double d = std::fmod(std::fabs(*u - *v), 360.0);
       return std::min(d, 360.0 - d) <= 0.5;
     }
+    case Arg::kTurn:
+      return turn_word(a) == turn_word(b);
+    case Arg::kMagnitude: {
+      auto u = text::to_double(a), v = text::to_double(b);
+      return u && v && std::fabs(std::fabs(*u) - std::fabs(*v)) <= 1e-9 * std::max(1.0, std::fabs(*v));
+    }
     case Arg::kLat:
     case Arg::kLon:
       return num_eq(a, b, 1e-3) || text::iequals(a, b);
@@ -84,9 +103,9 @@ std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string
   using A = Arg;
   if (cmd == "CRE") return {A::kWord, A::kWord, A::kLat, A::kLon, A::kHdg, A::kAlt, A::kSpd};
   if (cmd == "MOVE") return {A::kWord, A::kLat, A::kLon, A::kAlt, A::kHdg, A::kSpd, A::kNum};
-  if (cmd == "ALT") return {A::kWord, A::kAlt, A::kNum};
+  if (cmd == "ALT") return {A::kWord, A::kAlt, A::kMagnitude};  // ALT reads |vspd|
   if (cmd == "SPD") return {A::kWord, A::kSpd};
-  if (cmd == "HDG") return {A::kWord, A::kHdg};
+  if (cmd == "HDG") return {A::kWord, A::kHdg, A::kTurn};
   if (cmd == "DEFWPT") return {A::kWord, A::kLat, A::kLon, A::kWord};
   if (cmd == "ADDWPT" || cmd == "DEST" || cmd == "ORIG") {
     if (args.size() >= 3 && text::to_double(args[1]) && text::to_double(args[2]))
@@ -113,9 +132,19 @@ std::string canonical_command(std::string_view name) {
   return text::upper(name);
 }
 
+namespace {
+// BlueSky's callsign-first form ("KL204 SPD 250") as command-first ("SPD KL204 250").
+void command_first(std::vector<std::string>& v) {
+  if (v.size() >= 2 && !command::Registry::instance().find(v[0]) && command::Registry::instance().find(v[1]))
+    std::swap(v[0], v[1]);
+}
+}  // namespace
+
 bool same_command(std::string_view produced, std::string_view expected) {
   auto p = tokens(produced), e = tokens(expected);
   if (p.empty() || e.empty()) return p.empty() && e.empty();
+  command_first(p);
+  command_first(e);
   std::string cmd = canonical_command(p[0]);
   if (cmd != canonical_command(e[0])) return false;
   if (cmd == "ECHO") {
@@ -131,6 +160,9 @@ bool same_command(std::string_view produced, std::string_view expected) {
     return same_command(text::join(std::vector<std::string>(p.begin() + 3, p.end()), " "),
                         text::join(std::vector<std::string>(e.begin() + 3, e.end()), " "));
   }
+  // A turn direction produced where the expected HDG states none: the
+  // expected line predates the extension and names the same heading.
+  if (cmd == "HDG" && p.size() == 4 && e.size() == 3 && is_turn_word(p[3])) p.pop_back();
   if (p.size() != e.size()) return false;
   std::vector<std::string> args(e.begin() + 1, e.end());
   auto kinds = arg_kinds(cmd, args);

@@ -2,7 +2,8 @@
 -- with no language model. The `offline` node of the translation graph.
 --
 -- Data: translate/lexicon.lua (words), translate/names.lua (airline
--- telephony, aircraft types) and translate/rules.lua (which words
+-- telephony, type designators), translate/types.lua (type names from the
+-- performance models' data) and translate/rules.lua (which words
 -- ask for which registry command), checked against the command registry
 -- when they load; translate/handlers.lua fills each command's arguments.
 -- The C++ extractors (squawk.translate.utterance) lex, read numbers and
@@ -10,7 +11,11 @@
 -- waypoint names.
 --
 -- API:
---   translate(text, world) -> {commands = {"CMD", ...}} | {commands = {}, ask = "question"}
+--   translate(text, world) -> {commands = {"CMD", ...}, note =?} | {commands = {}, ask = "question"}
+--     note: a sentence naming what the request asked that squawk does not
+--     simulate (holding patterns, approach clearances, transponder codes,
+--     radio frequencies; lexicon.not_simulated); those words are not
+--     translated, the rest is (commands may then be empty)
 --     world: {aircraft = {{id=, type=, lat=, lon=, hdg_deg=, alt_ft=, cas_kt=,
 --             mach=, route = {...}}, ...}, waypoints = {"NAME", ...}} or nil.
 --     world.confirmed: {[id] = true} for callsigns the speaker confirmed.
@@ -27,7 +32,10 @@
 --     words of the rules, per registry command (squawk.rag.index docs)
 local lexicon = require("translate.lexicon")
 -- the airlines, types and phonetic alphabet, handed to the C++ matchers once
-local NAMES = squawk.translate.tables(require("translate.names"), lexicon)
+local names = require("translate.names")
+local TYPES = require("translate.types").build(names.designators)
+local NAMES = squawk.translate.tables({ airlines = names.airlines, types = TYPES.types,
+  designators = TYPES.designators }, lexicon)
 
 local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
 
@@ -189,6 +197,29 @@ function G:type_or_aircraft_word(b, e)
   return self:has_ref(b, e, "type") or self:word_in(b, e, "@aircraft_nouns")
 end
 
+-- True when an aircraft type, or a callsign no aircraft has, is named within
+-- the three tokens after i (punctuation and fillers not counted).
+function G:new_aircraft_follows(i)
+  local k, seen = i + 1, 0
+  while self.t[k] and seen < 3 do
+    if self.t[k].kind ~= "punct" and not self.t[k].filler then seen = seen + 1 end
+    for _, r in ipairs(self.refs) do
+      if r.b == k and (r.kind == "type" or (r.kind == "aircraft" and not r.exists)) then return true end
+    end
+    k = k + 1
+  end
+  return false
+end
+
+-- True when the word at i is the request's only word but for fillers and punctuation.
+function G:alone(i)
+  for k = 1, #self.t do
+    local t = self.t[k]
+    if k ~= i and t.kind ~= "punct" and not t.filler then return false end
+  end
+  return true
+end
+
 -- "turn on/off ..." / "switch on ...": a switch, not a turn.
 function G:switch_follows(i)
   local stop = i + 1
@@ -291,7 +322,10 @@ function G:segments(b, e)
   for k, tr in ipairs(trig) do
     local last = segs[#segs]
     local this = M.intents[tr.intent]
-    local thn = self:word_in(k == 1 and b or trig[k - 1].pos, tr.pos, "@then_words")
+    -- "descend 4000 then reduce 210": the second waits for the first ("then");
+    -- "..., then ..." after a comma is the next instruction in a list ("list")
+    local thn_at = self:find_word(k == 1 and b or trig[k - 1].pos, tr.pos, "@then_words")
+    local thn = thn_at < tr.pos and ((self.t[thn_at - 1] or {}).kind == "punct" and "list" or "then") or false
     local merged = false
     if last and not thn then
       local li = M.intents[last.intent] or {}
@@ -316,6 +350,9 @@ function G:segments(b, e)
         for _, r in ipairs(self:refs_in(last.trig + 1, tr.pos, "aircraft")) do
           if self:skip_fillers(r.e) == tr.pos then start = r.b end
         end
+        -- "..., when passing flight level 130 reduce speed": the condition belongs to what follows it
+        local cond = self:find_word(last.trig + 1, start, "@level_condition")
+        if cond < start then start = cond end
         last.e = start
       end
       segs[#segs + 1] = { intent = tr.intent, b = last and start or b, trig = tr.pos, e = e, ["then"] = thn }
@@ -335,7 +372,13 @@ function G:split_ellipsis(segs)
     local qs = (M.intents[s.intent] or {}).value and self:quantities(s.trig, e) or {}
     if #qs >= 2 then
       for _, r in ipairs(self:refs_in(qs[1].e, e, "aircraft")) do
-        if qs[#qs].b >= r.e then
+        -- only across "and" or a comma: "heading 160 DLH4AX 2" is no second instruction
+        local joined = false
+        for k = qs[1].e, r.b - 1 do
+          local t = self.t[k]
+          if (t.kind == "punct" and t.text == ",") or self:word(k, "and") then joined = true end
+        end
+        if qs[#qs].b >= r.e and joined then
           cur.e = r.b
           cur = { intent = s.intent, b = r.b, trig = r.b, e = e }
           out[#out + 1] = cur
@@ -372,7 +415,10 @@ function G:parse(b, e)
       local at = self:at_altitude(s)
       local spec = M.intents[s.intent]
       self[spec and spec.handler or "infer"](self, s, spec)
-      if not self.ask and #self.out > n_before then self:leftovers(s) end
+      if not self.ask and #self.out > n_before then
+        self:leftovers(s)
+        self:unexplained(s, n_before)
+      end
       if at then
         for c = n_before + 1, #self.out do self.out[c] = at .. " " .. self.out[c] end
       end
@@ -382,10 +428,91 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif s["then"] and before and #self.out == n_before + 1
+      elseif s["then"] == "then" and before and #self.out == n_before + 1
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       end
+    end
+  end
+end
+
+-- ---- every value accounted for ----
+
+-- The numbers a TrafScript line carries, with the readings a spoken value
+-- may have had (FL350 is 35000 ft and 350; M.78 is 0.78).
+local function line_numbers(line)
+  local nums = {}
+  for w in line:gmatch("[^%s,]+") do
+    local u = w:upper()
+    local v = tonumber(w) or (u:match("^FL%d+$") and tonumber(u:sub(3)) * 100)
+        or (u:match("^M%.?%d") and tonumber((u:sub(2):gsub("^%.", "0."))))
+    if v then nums[#nums + 1] = v end
+    if u:match("^FL%d+$") then nums[#nums + 1] = tonumber(u:sub(3)) end
+  end
+  return nums
+end
+
+-- True when quantity q's value is one a command carries, as said or as
+-- the grammar reads a spoken value: x100 (a level "three five zero"), x1000
+-- ("maintain niner"), x10 ("speed two five"), 200 + ("to niner zero"),
+-- headings modulo 360.
+local function value_carried(q, nums)
+  local v = q.value
+  for _, n in ipairs(nums) do
+    for _, c in ipairs({ v, v * 100, v * 1000, v * 10, v + 200 }) do
+      if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
+    end
+    if q.kind ~= "alt" and v >= 0 and v <= 360 and math.abs((v - n + 180) % 360 - 180) <= 0.5 then return true end
+  end
+  return false
+end
+
+-- Kinds of quantity a handler reads by itself (times, factors, distances,
+-- positions, changes): present whenever the segment gave a command.
+local SELF_READ = { time = true, mult = true, dist = true, percent = true, angle = true, lat = true, lon = true,
+  vs = true }
+
+-- After a segment's commands: a spoken value in it that no command
+-- carries (an instruction dropped, or a fragment such as "DLH4AX 2") is a
+-- leftover; the first one becomes the question once the request is read
+-- (nothing runs until it is understood).
+-- Checked: the value instructions, whose handlers say which value they
+-- read (G:take); the others read every value of their stretch.
+local CHECKED = { alt = true, spd = true, hdg = true, maintain = true, direct = true, vs = true, infer = true }
+
+function G:take(q)
+  if q then self.taken[q.b] = true end
+  return q
+end
+
+-- A value with a unit of its own (a level, feet, knots, Mach, "heading N")
+-- is an instruction wherever it stands; a bare number counts only after
+-- the instruction word (one before it is most often a misheard callsign).
+local function own_unit(q)
+  return q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading"
+end
+
+function G:unexplained(s, n_before)
+  if self.leftover or not CHECKED[s.intent] then return end
+  local nums = {}
+  for c = n_before + 1, #self.out do
+    for _, n in ipairs(line_numbers(self.out[c])) do nums[#nums + 1] = n end
+  end
+  local corrected = 0
+  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corrected = i end end
+  local relative = self:word_in(s.b, s.e, "@relative @same_as @below @above")
+  for _, q in ipairs(self:quantities(s.b, s.e)) do
+    if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
+        and q.b > corrected and ((q.b > s.trig and s.intent ~= "infer") or own_unit(q))
+        and not value_carried(q, nums) then
+      local b = q.b
+      for _, r in ipairs(self.refs) do
+        if r.kind == "aircraft" and r.e <= q.b and self:skip_fillers(r.e) == q.b then b = r.b end
+      end
+      local words = {}
+      for k = b, q.e - 1 do words[#words + 1] = self.t[k].raw end
+      self.leftover = table.concat(words, " ")
+      return
     end
   end
 end
@@ -453,6 +580,87 @@ function M.lexicon_says(text, list)
   return any
 end
 
+-- ---- what squawk does not simulate ----
+
+-- True when one of `near` (words; "#number" any number, "#waypoint" a
+-- waypoint name) is within 4 tokens after i.
+function G:near_any(i, near)
+  for k = i + 1, math.min(#self.t, i + 4) do
+    local t = self.t[k]
+    for _, w in ipairs(near) do
+      if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
+          or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0) or (t.kind == "word" and t.text == w) then
+        return true
+      end
+    end
+  end
+  return false
+end
+
+-- True when an aircraft is named just before token i (fillers and commas between).
+function G:callsign_before(i)
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.e <= i and self:skip_fillers(r.e) == i then return true end
+  end
+  return false
+end
+
+-- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
+-- rest of the request is read as if they were not there) and returns the
+-- reply naming them, or nil. A phrase runs from its word to the next
+-- instruction word, "and"/"then", or punctuation other than a comma.
+function G:not_simulated()
+  local found, seen = {}, {}
+  local i = 1
+  while i <= #self.t do
+    local t = self.t[i]
+    local class
+    if t.kind == "word" and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0) then
+      for _, c in ipairs(lexicon.not_simulated) do
+        if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
+            and (not c.after_callsign or self:callsign_before(i)) then
+          class = c
+          break
+        end
+      end
+    end
+    if class then
+      local e = i + 1
+      while e <= #self.t do
+        local x = self.t[e]
+        -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
+        if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
+          break
+        end
+        if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact") then
+          break
+        end
+        e = e + 1
+      end
+      local words = {}
+      for k = i, e - 1 do words[#words + 1] = self.t[k].raw end
+      self:mark_used(i, e)
+      if not seen[class.what] then
+        seen[class.what] = true
+        found[#found + 1] = string.format("%s ('%s')", class.what, (table.concat(words, " "):gsub(" ([,.;:])", "%1")))
+      end
+      i = e
+    else
+      i = i + 1
+    end
+  end
+  if #found == 0 then return nil end
+  return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
+end
+
+-- True when some unused word of the request still starts an instruction.
+function G:any_instruction()
+  for i = 1, #self.t do
+    if self:intent_at(i) then return true end
+  end
+  return false
+end
+
 local UNDERSTOOD = "I did not understand that. Which command, aircraft and value do you mean?"
 M.not_understood = UNDERSTOOD
 
@@ -460,10 +668,13 @@ function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
-  local u = squawk.translate.utterance(text, world, NAMES)
+  local u = squawk.translate.utterance(require("translate.types").join(text, TYPES.phrases), world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
-    qcache = {} }, G)
+    qcache = {}, taken = {} }, G)
   g:settle_callsigns()
+  local note = g:not_simulated()
+  -- only what is not simulated was said: no instruction word and no value left
+  if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()
   if not g.ask then
     g:parse(rest, #g.t + 1)
@@ -473,9 +684,13 @@ function M.translate(text, world)
     end
   end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
+  if not g.ask and g.leftover then
+    g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
+  end
   if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm } end
+  if #g.out == 0 and note then return { commands = {}, note = note } end
   if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
-  return { commands = g.out }
+  return { commands = g.out, note = note }
 end
 
 return M

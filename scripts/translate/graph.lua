@@ -7,9 +7,15 @@
 -- request leaves a readable account of its path (format_trace prints it).
 -- A run stops after ctx.max_steps visits (an error in the trace, never a hang).
 --
--- Graphs (modes), after paper §III.B and Table 2:
+-- Graphs (modes), after paper §III.B and Table 2; each starts at `typed`: a
+-- request that is already TrafScript ("FF 60", "HOLD", "HDG KL204 270", any
+-- case) goes straight to validate, and the trace says so (result.typed):
 --   offline: offline (the grammar, translate/grammar.lua) -> validate -> execute
---            -> done; no retrieval
+--            -> done; no retrieval. A request naming only what squawk does
+--            not simulate (a holding pattern, an approach clearance, a
+--            transponder code, a frequency) ends with no command and
+--            result.note saying so; in a mixed request the note comes with
+--            the commands of the rest
 --   single:  retrieve -> single (one LLM call) -> validate -> execute -> done;
 --            a rejected command goes back to `single` with the simulator's
 --            error, up to ctx.max_retries times
@@ -48,6 +54,13 @@
 --       is joined to the pending request ("KL204 descend" -> "to what
 --       altitude?" -> "flight level 100" -> ALT KL204 FL100; result.answered
 --       holds the question answered); say("cancel") drops it (result.cancelled).
+--       Commands that need a yes first (confirmation(): several aircraft
+--       deleted, RESET, IC, conflict detection/resolution off; a relative
+--       turn of more than 180 degrees) come back as a yes/no question with
+--       result.confirm = {commands =}; the next say() runs them on "yes"
+--       (result.confirmed), drops them on "no" (result.cancelled) and on
+--       anything else drops them and reads that line as a new request
+--       (result.dropped names the request dropped).
 --       opts as translate(); every front end (REPL, serve, C++ through
 --       script::GraphDialogue, scripts) talks through this.
 --   new_graph(start), modes[name](opts) -> graph, format_trace(trace), nodes
@@ -96,8 +109,13 @@ function Graph:run(state, ctx)
   return state
 end
 
-local function common_tail(g, retry_node)
-  return g:node("validate", nodes.validate)
+-- Every mode starts at `typed` (TrafScript passes through as typed); English
+-- goes on to the mode's own first node.
+local function common_tail(g, retry_node, english)
+  return g:node("typed", nodes.typed)
+    :edge("typed", "trafscript", "validate")
+    :edge("typed", "english", english)
+    :node("validate", nodes.validate)
     :node("execute", nodes.execute)
     :node("offline", nodes.offline)
     :node("ask", nodes.ask)
@@ -110,28 +128,29 @@ local function common_tail(g, retry_node)
     :edge("execute", "fail", "done")
     :edge("offline", "ok", "validate")
     :edge("offline", "ask", "done")
+    :edge("offline", "note", "done")
     :edge("ask", "done")
 end
 
 M.modes = {}
 
 function M.modes.offline()
-  return common_tail(M.new_graph("offline"), "done")
+  return common_tail(M.new_graph("typed"), "done", "offline")
 end
 
 function M.modes.single()
-  local g = M.new_graph("retrieve")
+  local g = M.new_graph("typed")
     :node("retrieve", nodes.retrieve)
     :node("single", nodes.single)
     :edge("retrieve", "single")
     :edge("single", "ok", "validate")
     :edge("single", "ask", "done")
     :edge("single", "llm_failed", "offline")
-  return common_tail(g, "single")
+  return common_tail(g, "single", "retrieve")
 end
 
 function M.modes.multi(opts)
-  local g = M.new_graph("retrieve")
+  local g = M.new_graph("typed")
     :node("retrieve", nodes.retrieve)
     :node("select", nodes.select)
     :node("verify", nodes.verify)
@@ -145,7 +164,7 @@ function M.modes.multi(opts)
     :edge("fill", "ok", "validate")
     :edge("fill", "ask", "done")
     :edge("fill", "llm_failed", "offline")
-  return common_tail(g, "fill")
+  return common_tail(g, "fill", "retrieve")
 end
 
 local cached_llm, llm_checked = nil, false
@@ -169,8 +188,44 @@ local function default_prompts()
   return cached_prompts
 end
 
+-- "seed 7, mcre 20, ff 10 min": a list whose every comma-separated clause
+-- opens with a registry command word (name or alias; a leading "then"/"and"
+-- skipped) -> the clauses, else nil.
+local LINKS = { ["then"] = true, ["and"] = true }
+function M.command_clauses(text)
+  local parts = {}
+  for part in (text .. ","):gmatch("([^,;]*)[,;]") do
+    part = part:gsub("^%s+", ""):gsub("%s+$", "")
+    local first, rest = part:match("^(%S+)%s*(.*)$")
+    while first and LINKS[first:lower()] do first, rest = rest:match("^(%S+)%s*(.*)$") end
+    if not first or not nodes.canonical_name(first:gsub("[%p]+$", "")) then return nil end
+    parts[#parts + 1] = first .. (rest ~= "" and (" " .. rest) or "")
+  end
+  return #parts >= 2 and parts or nil
+end
+
 function M.translate(text, opts)
   opts = opts or {}
+  -- a list of command clauses: each translated on the state the ones before it leave
+  local parts = not opts.in_list and M.command_clauses(text)
+  if parts then
+    local sim = opts.sim or squawk.sim.new()
+    local scratch = sim:copy()
+    local all, trace = {}, {}
+    for _, part in ipairs(parts) do
+      local r = M.translate(part, setmetatable({ sim = scratch, in_list = true }, { __index = opts }))
+      for _, t in ipairs(r.trace or {}) do trace[#trace + 1] = { node = t.node, said = "[" .. part .. "] " .. t.said } end
+      if r.ask or r.error then
+        r.trace = trace
+        return r
+      end
+      for _, c in ipairs(r.commands) do
+        all[#all + 1] = c
+        scratch:exec(c)
+      end
+    end
+    return { commands = all, trace = trace, mode = opts.mode or "offline" }
+  end
   local llm = opts.llm
   if llm == nil and opts.mode ~= "offline" then llm = default_llm() end
   local mode = opts.mode or (llm and "multi" or "offline")
@@ -207,7 +262,8 @@ function M.translate(text, opts)
     .. (requested ~= mode and (" (" .. requested .. " needs an LLM: set SQUAWK_LLM_URL)") or ""))
   for _, note in ipairs(setup_notes) do nodes.say(state, "setup", note) end
   M.modes[mode](opts):run(state, ctx)
-  local result = { trace = state.trace, mode = mode, error = state.error }
+  local result = { trace = state.trace, mode = mode, error = state.error, note = state.note,
+                   typed = state.source == "typed" or nil }
   if state.ask then
     result.ask, result.confirm = state.ask, state.confirm
   else
@@ -225,16 +281,82 @@ end
 
 local CANCEL = { cancel = true, ["never mind"] = true, nevermind = true, ["forget it"] = true, abort = true }
 
+-- The question a line of commands needs before it runs, or nil: deleting
+-- several aircraft, RESET, IC (a new scenario replaces the traffic), and
+-- conflict detection or resolution off for every aircraft.
+function M.confirmation(cmds, sim)
+  local deleted = {}
+  for _, c in ipairs(cmds) do
+    local words = {}
+    for w in c:gmatch("[^%s,]+") do words[#words + 1] = w end
+    local name = nodes.canonical_name(words[1]) or ""
+    if name == "RESET" then return "Reset the simulation? Every aircraft and queued command goes. (yes or no)" end
+    if name == "IC" then
+      return string.format("Load scenario %s? It replaces the present traffic. (yes or no)", words[2] or "")
+    end
+    if (name == "RESO" or name == "CDMETHOD") and words[2] and words[2]:upper() == "OFF" then
+      return "Switch conflict " .. (name == "RESO" and "resolution" or "detection")
+        .. " off for every aircraft? (yes or no)"
+    end
+    if name == "DEL" then
+      for k = 2, #words do
+        if words[k] == "*" then
+          for _, a in ipairs(sim:aircraft()) do deleted[#deleted + 1] = a.id end
+        elseif words[k]:upper() ~= "WIND" then
+          deleted[#deleted + 1] = words[k]:upper()
+        end
+      end
+    end
+  end
+  if #deleted >= 2 then
+    return string.format("Delete %d aircraft (%s)? (yes or no)", #deleted, table.concat(deleted, ", "))
+  end
+  return nil
+end
+
 -- The answer to a pending question joins the request it answers ("KL204
 -- descend" + "flight level 100"); a line with an instruction word of its own
 -- that translates by itself is a new request and drops the question.
 function Dialogue:say(text)
+  local r = self:answer(text)
+  -- a line of commands that needs a yes first waits for it (translate() itself
+  -- gives the commands: the question belongs to the conversation)
+  if r.commands and #r.commands > 0 and not r.confirmed then
+    local q = M.confirmation(r.commands, self.opts.sim or squawk.sim.new())
+    if q then
+      nodes.say(r, "confirm", "asks first: " .. q)
+      r.ask, r.confirm, r.commands = q, { commands = r.commands }, nil
+      self.pending = { question = q, request = text, confirm = r.confirm }
+    end
+  end
+  return r
+end
+
+function Dialogue:answer(text)
   local pending = self.pending
   local key = text:lower():gsub("[%p%s]+", " "):gsub("^ ", ""):gsub(" $", "")
   if CANCEL[key] then
     self.pending = nil
     return { commands = {}, cancelled = pending ~= nil, trace = {}, mode = self.opts.mode or "offline",
              said = pending and ("dropped: " .. pending.request) or "nothing to cancel" }
+  end
+  -- a yes/no question about commands already worked out: yes runs them,
+  -- anything else drops them (a new request is then read as such)
+  if pending and pending.confirm and pending.confirm.commands then
+    self.pending = nil
+    local trace = {}
+    if grammar.lexicon_says(text, "yes") then
+      nodes.say({ trace = trace }, "confirm", "confirmed: " .. table.concat(pending.confirm.commands, " ; "))
+      return { commands = pending.confirm.commands, confirmed = true, answered = pending.question, trace = trace,
+               mode = self.opts.mode or "offline" }
+    end
+    if grammar.lexicon_says(text, "no") then
+      return { commands = {}, cancelled = true, trace = trace, mode = self.opts.mode or "offline",
+               said = "dropped: " .. pending.request }
+    end
+    local r = self:answer(text)
+    r.dropped = pending.request
+    return r
   end
   if pending and pending.confirm and grammar.lexicon_says(text, "yes") then
     local opts = setmetatable({ confirmed = { [pending.confirm.id] = true } }, { __index = self.opts })

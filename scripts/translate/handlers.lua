@@ -105,7 +105,23 @@ function m:acids(s)
       end
     end
   end
-  take(s.trig, s.e)
+  -- a callsign after the instruction's value with a value of its own is
+  -- not the subject ("turn right heading 160 DLH4AX 2"); one after a comma,
+  -- or ending the request, is the addressee ("heading two seven zero, Air
+  -- France one two three four", "hdg 120 for test01")
+  local upto = s.e
+  local qs = self:quantities(s.trig, s.e)
+  for k, q in ipairs(qs) do
+    if q.b > s.trig then
+      local comma = false
+      for i = q.e, s.e - 1 do
+        if self.t[i].kind == "punct" then comma = true end
+      end
+      if not comma and qs[k + 1] then upto = q.e end
+      break
+    end
+  end
+  take(s.trig, upto)
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
   if #ids == 0 and self.subject then
@@ -119,8 +135,37 @@ function m:acids(s)
     end
   end
   if #ids == 0 and #self.fleet == 1 then ids[1] = self.fleet[1].id end
+  for k, id in ipairs(ids) do
+    local q, meant = self:unknown_callsign(id)
+    if q then self:need(q) end
+    if meant then ids[k] = meant end
+  end
+  if #ids == 0 then self:airline_only(s) end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
+end
+
+-- An airline said with no flight number ("KLM, climb ..."): the question
+-- names its aircraft when more than one fits.
+local AIRLINES
+function m:airline_only(s)
+  if not AIRLINES then
+    AIRLINES = {}
+    for _, a in ipairs(require("translate.names").airlines) do AIRLINES[a[1]] = a[2] end
+  end
+  for i = s.b, s.e - 1 do
+    local t = self.t[i]
+    local icao = t.kind == "word" and (AIRLINES[t.text] or (t.raw:match("^%u%u%u$") and t.raw))
+    if icao then
+      local fits = {}
+      for _, a in ipairs(self.fleet) do
+        if a.id:upper():sub(1, #icao) == icao and a.id:sub(#icao + 1, #icao + 1):match("%d") then fits[#fits + 1] = a.id end
+      end
+      if #fits > 1 then
+        return self:need(string.format("Which %s: %s?", t.raw, table.concat(fits, " or ")))
+      end
+    end
+  end
 end
 
 -- Airline letters, flight digits and trailing letters of a callsign
@@ -202,11 +247,61 @@ function m:confirm_callsigns(s)
     local h = r.heard
     if h and not r.false_start and not (self.world.confirmed or {})[r.name]
         and not self:airline_and_digits_match(h.id, r.name)
-        and (h.airline < c.airline or h.digits < c.digits or self:letters_conflict(h.id, r.name)) then
+        and ((c.strict and #self.fleet > 1) or h.airline < c.airline or h.digits < c.digits
+          or self:letters_conflict(h.id, r.name)) then
       self.confirm = self.confirm or { id = r.name, heard = h.id }
       self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))
     end
   end
+end
+
+-- Aircraft whose callsign is one slip from `heard`: the same airline and
+-- digits transposed, one character missing, extra or different.
+function m:near_callsigns(heard)
+  local function slips(a, b)
+    if a == b then return 0 end
+    if #a == #b then
+      local diff = {}
+      for i = 1, #a do if a:sub(i, i) ~= b:sub(i, i) then diff[#diff + 1] = i end end
+      if #diff == 1 then return 1 end
+      if #diff == 2 and diff[2] == diff[1] + 1 and a:sub(diff[1], diff[1]) == b:sub(diff[2], diff[2])
+          and a:sub(diff[2], diff[2]) == b:sub(diff[1], diff[1]) then
+        return 1
+      end
+      return 2
+    end
+    if math.abs(#a - #b) ~= 1 then return 2 end
+    local long, short = a, b
+    if #b > #a then long, short = b, a end
+    for i = 1, #long do
+      if long:sub(1, i - 1) .. long:sub(i + 1) == short then return 1 end
+    end
+    return 2
+  end
+  local out = {}
+  local ha, hr = heard:upper():match("^(%a*)(.*)$")
+  for _, a in ipairs(self.fleet) do
+    local aa, ar = a.id:upper():match("^(%a*)(.*)$")
+    if (aa == ha and slips(ar, hr) == 1) or (ar == hr and slips(aa, ha) == 1) then out[#out + 1] = a.id end
+  end
+  return out
+end
+
+-- A typed or spoken callsign of no aircraft, when aircraft are flying: a
+-- question naming the ones it may have meant, else nil (and the aircraft
+-- meant, once the speaker confirmed it).
+function m:unknown_callsign(id)
+  if #self.fleet == 0 or self:state(id) then return nil end
+  local near = self:near_callsigns(id)
+  if #near == 1 and (self.world.confirmed or {})[near[1]] then return nil, near[1] end
+  if #near == 1 then
+    self.confirm = self.confirm or { id = near[1], heard = id }
+    return string.format("Did you mean %s? There is no %s.", near[1], id)
+  end
+  if #near > 1 then
+    return string.format("Did you mean %s? There is no %s.", table.concat(near, " or "), id)
+  end
+  return string.format("There is no aircraft %s. Which aircraft do you mean?", id)
 end
 
 function m:acid(s, what)
@@ -262,27 +357,36 @@ end
 
 -- Which candidate counts: after "correction" the first one after it; when
 -- the instruction word is repeated, the last; else the first.
+-- The value picked is taken (G:take): the leftover check knows it was read.
 function m:pick(c, s, repeated)
   if #c == 0 then return nil end
   local corr
   for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
   if corr then
-    for _, q in ipairs(c) do if q.b > corr then return q end end
-    return c[#c]
+    for _, q in ipairs(c) do if q.b > corr then return self:take(q) end end
+    return self:take(c[#c])
   end
   local reps = 0
   for i = s.b, s.e - 1 do if self:word(i, repeated) then reps = reps + 1 end end
-  return reps >= 2 and c[#c] or c[1]
+  if reps >= 2 then
+    for k = 1, #c - 1 do self:take(c[k]) end  -- "maintain 5000 ... maintain 6000": the last one counts
+    return self:take(c[#c])
+  end
+  return self:take(c[1])
 end
 
--- "at four thousand reduce speed to 210": "ATALT id alt" or nil.
+-- "at four thousand reduce speed to 210", "(when) passing flight level 130
+-- reduce speed 250", "leaving FL340 maintain Mach .82": "ATALT id alt" or nil.
 function m:at_altitude(s)
-  if s.intent ~= "spd" and s.intent ~= "hdg" then return nil end
-  local a = self:find_word(s.b, s.trig, "at")
+  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" then return nil end
+  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through")
   if a >= s.trig then return nil end
+  if (s.intent == "maintain" or s.intent == "alt") and not self:word(a, "passing leaving reaching") then return nil end
+  -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" a condition
+  if s.intent == "alt" and not self:word_in(math.max(s.b, a - 2), a, "@condition") then return nil end
   local qs = self:quantities(a + 1, s.trig)
   local q = qs[1]
-  if not q or q.b ~= a + 1 or q.e ~= s.trig then return nil end
+  if not q or q.b ~= a + 1 or self:skip_fillers(q.e) ~= s.trig then return nil end
   if q.kind ~= "alt" and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then return nil end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
@@ -293,22 +397,32 @@ end
 -- "AC02: heading 180, FL200, 250 kts": values with units of another kind
 -- after a value instruction are instructions too.
 function m:leftovers(s)
-  if s.intent ~= "hdg" and s.intent ~= "alt" and s.intent ~= "spd" then return end
+  if s.intent ~= "hdg" and s.intent ~= "alt" and s.intent ~= "spd" and s.intent ~= "infer" and s.intent ~= "maintain" then
+    return
+  end
   local ids = self:acids(s)
   if #ids ~= 1 then return end
-  local alt_done, spd_done, hdg_done = s.intent == "alt", s.intent == "spd", false
+  local out = table.concat(self.out, " ; ")
+  local alt_done = s.intent == "alt" or out:find("ALT " .. ids[1], 1, true) ~= nil
+  local spd_done = s.intent == "spd" or out:find("SPD " .. ids[1], 1, true) ~= nil
+  local hdg_done = false
   for _, q in ipairs(self:quantities(s.b, s.e)) do
-    if q.b > s.trig then
+    -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300")
+    local unit = (q.kind == "alt" and q.fl) or q.kind == "speed" or q.kind == "mach"
+    -- in spoken order: one said before the instruction word goes before its command
+    local emit = q.b < s.trig and function(line) table.insert(self.out, #self.out, line) end
+      or function(line) self:emit(line) end
+    if not self.taken[q.b] and (q.b > s.trig or (unit and s.trig > s.b)) then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
-        self:emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl))
-        alt_done = true
+        emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl))
+        alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
-        self:emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
-        spd_done = true
+        emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        spd_done = self:take(q)
       elseif s.intent ~= "hdg" and not hdg_done and q.kind == "plain" and H.zero_led_heading(q) then
         -- three spoken digits led by zero are a heading: no level or speed is said so
-        self:emit("HDG " .. ids[1] .. " " .. f.num(q.value))
-        hdg_done = true
+        emit("HDG " .. ids[1] .. " " .. f.num(q.value))
+        hdg_done = self:take(q)
       end
     end
   end

@@ -87,10 +87,47 @@ return function(H, f, compass)
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
       if (model.mach or 0) > 0 then mach = model.mach else spd = model.cas_kt end
     end
+    -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol")
+    local named_at
+    if not lat or not lon then
+      for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do named_at = named_at or r.name end
+      named_at = named_at or self:airport_by_name(s.trig + 1, s.e)
+    end
+    -- values left unread: one after the level with no speed said is the speed (CRE's
+    -- order: heading, altitude, speed: "fl300 290"); others are asked about
+    local read = { lat, lon, hdg, alt, spd, mach }
+    local left = {}
+    local from = s.e  -- values before the callsign or type count aircraft ("create two aircraft: ...")
+    for _, r in ipairs(self.refs) do
+      if (r.kind == "aircraft" or r.kind == "type") and r.b >= s.b and r.b < from then from = r.b end
+    end
+    for _, q in ipairs(qs) do
+      if q.b < from then goto continue end
+      local seen = false
+      for _, v in ipairs(read) do if v and math.abs(v - q.value) < 1e-9 then seen = true end end
+      if not seen and (q.kind == "plain" or q.kind == "dist") then left[#left + 1] = q end
+      ::continue::
+    end
+    -- CRE's order for values said bare: heading, altitude, speed ("52.15 4.25 45 fl310 290")
+    if #left >= 1 and left[1].kind == "plain" and not hdg and alt and left[1].value >= 0 and left[1].value <= 360
+        and (#left == 2 or spd or mach) then
+      hdg = table.remove(left, 1).value
+    end
+    if #left == 1 and left[1].kind == "plain" and alt and not spd and not mach and left[1].value >= 40
+        and left[1].value <= 700 then
+      spd = left[1].value
+      left = {}
+    end
+    if #left > 0 and id and actype then
+      local words = {}
+      for k = left[1].b, left[1].e - 1 do words[#words + 1] = self.t[k].raw end
+      return self:need(string.format("To create %s I did not place '%s'. What does it give: a position, heading, "
+        .. "altitude or speed?", id, table.concat(words, " ")))
+    end
     local missing = {}
     if not id then missing[#missing + 1] = "callsign" end
     if not actype then missing[#missing + 1] = "aircraft type" end
-    if not lat or not lon then missing[#missing + 1] = "position" end
+    if (not lat or not lon) and not named_at then missing[#missing + 1] = "position" end
     if #missing > 0 then
       return self:need("To create the aircraft I need its " .. table.concat(missing, ", ") .. ". What should they be?")
     end
@@ -99,7 +136,7 @@ return function(H, f, compass)
       return self:need("What heading should " .. id .. " have?")
     end
     if (spd or mach) and not alt then return self:need("What altitude should " .. id .. " have?") end
-    local cmd = "CRE " .. id .. " " .. actype .. " " .. f.num(lat) .. " " .. f.num(lon)
+    local cmd = "CRE " .. id .. " " .. actype .. " " .. (named_at or (f.num(lat) .. " " .. f.num(lon)))
     if hdg or alt or spd or mach then cmd = cmd .. " " .. f.num(hdg or 0) end
     if alt or spd or mach then cmd = cmd .. " " .. f.alt(alt, fl) end
     if spd then cmd = cmd .. " " .. f.int(spd) end
@@ -113,7 +150,20 @@ return function(H, f, compass)
     if not id then return end
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig)
-    if not lat or not lon then return self:need("Where should " .. id .. " go? Please give a latitude and longitude.") end
+    local named_at
+    if not lat or not lon then
+      for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do named_at = named_at or r.name end
+      named_at = named_at or self:airport_by_name(s.trig + 1, s.e)
+    end
+    if (not lat or not lon) and not named_at then
+      return self:need("Where should " .. id .. " go? Please give a latitude and longitude.")
+    end
+    for _, q in ipairs(qs) do
+      if named_at and q.kind == "dist" then  -- "twenty miles north of Schiphol": an offset squawk does not place
+        return self:need(string.format("Where exactly should %s go? I cannot place '%s' from %s: please give a "
+          .. "latitude and longitude.", id, f.num(q.value) .. " NM", named_at))
+      end
+    end
     local opt = {}
     for _, q in ipairs(qs) do
       if q.kind == "alt" and not opt[1] then opt[1] = f.alt(q.value, q.fl) end
@@ -124,7 +174,7 @@ return function(H, f, compass)
     end
     local last = 0
     for k = 1, 4 do if opt[k] then last = k end end
-    local cmd = "MOVE " .. id .. " " .. f.num(lat) .. " " .. f.num(lon)
+    local cmd = "MOVE " .. id .. " " .. (named_at or (f.num(lat) .. " " .. f.num(lon)))
     local now = self:state(id)
     for k = 1, last do
       if opt[k] then
@@ -166,8 +216,18 @@ return function(H, f, compass)
     for _, r in ipairs(a and a.route or {}) do
       if not seen[r] then names[#names + 1], seen[r] = r, true end
     end
-    if #names == 0 then return nil end
-    local best, best_score
+    -- a navaid said by its name, which its ident abbreviates ("Biggin" -> BIG, "Detling" -> DET)
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t = self.t[i]
+      if not self.u:used(i) and t.kind == "word" and t.alpha and not t.keyword and #t.text >= 4 then
+        local fits = {}
+        for _, n in ipairs(names) do
+          if #n >= 3 and #n < #t.text and n:match("^%a+$") and t.text:sub(1, #n) == n:lower() then fits[#fits + 1] = n end
+        end
+        if #fits == 1 then return fits[1] end
+      end
+    end
+    local best, best_score, best_word
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
@@ -175,14 +235,48 @@ return function(H, f, compass)
         local cand = t.text
         for k = 0, 1 do
           local idx, score = squawk.translate.best_match(cand, names)
-          if idx and (not best or score > best_score) then best, best_score = names[idx], score end
+          if idx and (not best or score > best_score) then best, best_score, best_word = names[idx], score, cand end
           local nx = self.t[i + k + 1]
           if i + k + 1 >= e or nx.kind ~= "word" then break end
           cand = cand .. nx.text
         end
       end
     end
+    if best and best_score >= L.waypoint_confirm then return best end
+    local airport = self:airport_by_name(b, e)
+    if airport then return airport end
+    -- a name that sounds like a known one is confirmed, never substituted,
+    -- unless it is the only name it could be
+    if best and best_score >= 0.5 and #names > 1 and not (self.world.confirmed or {})[best] then
+      self.confirm = self.confirm or { id = best, heard = best_word }
+      self:need(string.format("Did you mean %s? I heard '%s'.", best, best_word))
+    end
     if best and best_score >= 0.5 then return best end
+    return nil
+  end
+
+  -- An airport said by its name ("direct to Schiphol" -> EHAM): one or two
+  -- words in [b, e) that name exactly one airport of the navdata.
+  function m:airport_by_name(b, e)
+    local named = self.world.airports_named
+    if not named then return nil end
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t = self.t[i]
+      if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
+          and not t.number_word and not L.phonetic[t.text] then
+        local nx = self.t[i + 1]
+        local phrases = { t.text }
+        if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, t.text .. " " .. nx.text) end
+        for _, phrase in ipairs(phrases) do
+          local ids = named(phrase)
+          if #ids == 1 then return ids[1] end
+          if #ids > 1 and #ids <= 4 then
+            self:need(string.format("Which airport is '%s': %s?", phrase, table.concat(ids, " or ")))
+            return ids[1]
+          end
+        end
+      end
+    end
     return nil
   end
 
@@ -227,7 +321,10 @@ return function(H, f, compass)
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.b > s.trig and q.kind == "alt" and q.number.thousand then
         local ft = self:repaired(q, q.value, 0, 60000, 100)
-        if ft then return self:emit("ALT " .. id .. " " .. f.alt(ft, false)) end
+        if ft then
+          self:take(q)
+          return self:emit("ALT " .. id .. " " .. f.alt(ft, false))
+        end
       end
     end
   end
@@ -291,7 +388,10 @@ return function(H, f, compass)
     if not id then return end
     local w = self:refs_in(s.b, s.e, "waypoint")
     local lat, lon = position(self:quantities(s.b, s.e), s.trig)
-    if #w > 0 then
+    local airport = #w == 0 and self:airport_by_name(s.b, s.e)
+    if airport then
+      self:emit(cmd .. " " .. id .. " " .. airport)
+    elseif #w > 0 then
       self:emit(cmd .. " " .. id .. " " .. w[#w].name)
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
@@ -321,7 +421,12 @@ return function(H, f, compass)
     if id then self:emit(cmd .. " " .. id) end
   end
   function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
-  function m:pos(s) self:one_acid(s, "POS", "be shown") end
+  -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
+  function m:pos(s)
+    local places = self:refs_in(s.b, s.e, "waypoint")
+    if #self:refs_in(s.b, s.e, "aircraft") == 0 and #places > 0 then return self:emit("POS " .. places[1].name) end
+    self:one_acid(s, "POS", "be shown")
+  end
 
   function m:bank(s)
     local id = self:acid(s, "get a bank limit")

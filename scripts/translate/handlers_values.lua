@@ -72,7 +72,7 @@ return function(H, f, wrap, compass)
     local rate
     local with_unit, plain = {}, {}
     for _, q in ipairs(qs) do
-      if q.kind == "vs" and not rate then rate = q end
+      if q.kind == "vs" and not rate then rate = self:take(q) end
       if q.kind == "alt" then with_unit[#with_unit + 1] = q end
       if q.kind == "plain" and q.b >= s.trig then plain[#plain + 1] = q end
     end
@@ -82,7 +82,7 @@ return function(H, f, wrap, compass)
       if not rate and rate_word < s.e then
         for k, q in ipairs(list) do
           if q.b > rate_word and not q.fl then
-            rate = table.remove(list, k)
+            rate = self:take(table.remove(list, k))
             break
           end
         end
@@ -257,6 +257,15 @@ return function(H, f, wrap, compass)
       end
       if q.kind == "alt" or q.kind == "speed" then break end
     end
+    -- "turn right 20", "left 90": a typed number of one or two digits after a turn
+    -- direction, with no "heading", is the degrees of the turn (headings have three)
+    if #rel_c == 0 and #abs_c == 1 and abs_c[1].kind == "plain" and abs_c[1].number.typed
+        and #abs_c[1].number.digits <= 2 and not self:word_in(s.b, s.e, "heading hdg")
+        and self:word_in(s.b, abs_c[1].b, "@left @right") then
+      rel_c[1] = { kind = "angle", value = abs_c[1].value, b = abs_c[1].b, e = abs_c[1].e, turn = 0,
+                   number = abs_c[1].number }
+      abs_c = {}
+    end
     local abs, rel = self:pick(abs_c, s, "heading"), self:pick(rel_c, s, "heading")
     local correction = self:word_in(s.b, s.e, "@correction")
     local turn = 0
@@ -318,13 +327,25 @@ return function(H, f, wrap, compass)
     else
       return self:need("What heading should " .. id .. " fly?")
     end
-    -- a change from the present heading is each aircraft's own
+    -- the way to turn, when it was said: HDG's LEFT/RIGHT (a squawk extension)
+    local way = (rel and rel.turn ~= 0 and rel.turn) or turn
+    local suffix = way < 0 and " LEFT" or way > 0 and " RIGHT" or ""
+    -- a change from the present heading is each aircraft's own, in whole degrees
+    local lines = {}
     for _, a in ipairs(ids) do
       local from = offset and self:state(a)
       if offset and not from then return self:need("What is the current heading of " .. a .. "?") end
-      local h = from and from.hdg_deg + offset or hdg
-      self:emit("HDG " .. a .. " " .. f.num(wrap(math.floor(h * 1000 + 0.5) / 1000)))
+      local h = from and math.floor(from.hdg_deg + offset + 0.5) or hdg
+      lines[#lines + 1] = "HDG " .. a .. " " .. (from and f.int(wrap(h)) or f.num(wrap(h))) .. suffix
     end
+    -- a relative turn of more than half a circle is confirmed before it runs
+    if offset and math.abs(offset) > 180 then
+      self.confirm = self.confirm or { commands = lines }
+      return self:need(string.format("Turn %s %s by %s degrees, the long way round, to %s? (yes or no)",
+        table.concat(ids, ", "), way < 0 and "left" or "right", f.num(math.abs(offset)),
+        lines[1]:match("^HDG %S+ (%S+)")))
+    end
+    for _, line in ipairs(lines) do self:emit(line) end
   end
 
   function m:vspeed(s)
@@ -338,6 +359,7 @@ return function(H, f, wrap, compass)
       end
     end
     if not v then return self:need("What vertical speed should " .. id .. " fly, in feet per minute?") end
+    self:take(v)
     local fpm = v.value
     if fpm > 0 and self:direction(s) < 0 then fpm = -fpm end
     self:emit("VS " .. id .. " " .. f.int(fpm))

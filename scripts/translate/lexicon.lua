@@ -52,6 +52,9 @@ return {
   },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
+  -- words before a level that make the next instruction wait for it
+  -- ("when passing flight level 130 reduce speed 250": ATALT)
+  level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
   -- words after which a clause is a new instruction
@@ -85,11 +88,44 @@ return {
   -- how many times real time, said in words
   multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
   -- a spoken callsign matched to an aircraft it does not spell exactly is
-  -- confirmed by a question unless the airline and the digits both match
-  -- at least this well (similarity 0-1)
-  callsign_confirm = { airline = 0.5, digits = 0.6 },
+  -- confirmed by a question; strict: whenever more than one aircraft flies
+  -- (any airline or digit that differs asks); else (one aircraft, nothing to
+  -- confuse it with) unless the airline and the digits both match at least
+  -- this well (similarity 0-1)
+  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true },
+  -- a spoken waypoint name matched to a known one at least this well (0-1)
+  -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
+  waypoint_confirm = 0.8,
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
+  -- what squawk does not simulate: a phrase starts at one of `words` (with
+  -- one of `near` within 4 words after it, when given) and runs to the end
+  -- of its clause; it is named in the reply, never translated
+  not_simulated = {
+    { what = "transponder codes", words = "squawk squawking",
+      near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
+    { what = "transponder codes", words = "transponder ident" },
+    { what = "radio frequencies", words = "contact monitor frequency freq" },
+    { what = "approach clearances", words = "ils rnav rnp localizer localiser glideslope glidepath vor",
+      near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
+    { what = "approach clearances", words = "cleared clear",
+      near = { "approach", "land", "landing", "takeoff", "take-off", "ils", "visual", "option" } },
+    { what = "approach clearances", words = "intercept established join",
+      near = { "localizer", "localiser", "glideslope", "ils", "final" } },
+    { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- traffic information ("traffic 2 o'clock, 5 miles, eastbound, altitude indicates 3500") runs to the
+    -- end of the request: the words in it describe the other aircraft, they instruct nobody
+    { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
+      to_end = true },
+    { what = "holding patterns", words = "holding" },
+    { what = "holding patterns", words = "hold",
+      near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" } },
+    { what = "holding patterns", words = "enter", near = { "hold", "holding" } },
+    -- "KL204, hold": said to an aircraft, no pause of the simulation
+    { what = "holding patterns", words = "hold", after_callsign = true },
+  },
+  -- answers that decline a yes/no question ("delete 5 aircraft?")
+  no = { "no", "negative", "nope", "don't", "dont", "stop" },
   turn_around = { "around", "opposite", "reverse" },
   -- names said before a value they introduce
   named = { "named", "called" },

@@ -8,6 +8,7 @@
 -- k, max_retries. Every node records what it did with say().
 local grammar = require("translate.grammar")
 local schema = require("translate.schema")
+local lexicon = require("translate.lexicon")
 
 local M = {}
 
@@ -229,8 +230,8 @@ function M.defined_waypoints(line)
 end
 
 -- What the offline grammar may know of the simulation: the aircraft (route
--- as waypoint names, mach when the selected speed is a Mach number) and
--- the user waypoints.
+-- as waypoint names, mach when the selected speed is a Mach number), the
+-- user waypoints, and the navdata's airports by name.
 function M.world(sim, waypoints)
   local aircraft = sim:aircraft()
   for _, a in ipairs(aircraft) do
@@ -238,7 +239,8 @@ function M.world(sim, waypoints)
     for _, w in ipairs(a.route or {}) do names[#names + 1] = w.name end
     a.route, a.mach = names, a.sel_mach
   end
-  return { aircraft = aircraft, waypoints = waypoints or {} }
+  return { aircraft = aircraft, waypoints = waypoints or {},
+           airports_named = function(name) return sim:airports_named(name) end }
 end
 
 function M.offline(state, ctx)
@@ -250,9 +252,74 @@ function M.offline(state, ctx)
     M.say(state, "offline", "asks: " .. tr.ask)
     return "ask"
   end
+  state.note = tr.note
+  if tr.note then M.say(state, "offline", "not simulated: " .. tr.note) end
+  if tr.note and #tr.commands == 0 then
+    state.commands = {}
+    return "note"
+  end
   state.candidate, state.source = table.concat(tr.commands, " ; "), "offline"
   M.say(state, "offline", "candidate: " .. (state.candidate ~= "" and state.candidate or "(nothing)"))
   return "ok"
+end
+
+-- A request that is already TrafScript ("FF 60", "HOLD", "hdg kl204 270";
+-- several joined by ';'): every part names a registry command (first word,
+-- or second after a callsign) and the registry's parser accepts it on a
+-- scratch copy. It runs as typed; anything else is English.
+-- Words of English glue that no TrafScript argument is (a command with a
+-- free-text argument would take "open the scenario demo.scn" as typed).
+local GLUE = { the = true, a = true, an = true, to = true, of = true, from = true, ["and"] = true, ["then"] = true,
+  ["for"] = true, with = true, by = true, into = true, please = true, file = true, scenario = true,
+  aircraft = true, plane = true, flight = true, this = true, that = true, all = true, now = true }
+
+local keywords
+local function keyword_set()
+  if not keywords then
+    keywords = {}
+    for _, w in ipairs(lexicon.keywords) do keywords[w] = true end
+  end
+  return keywords
+end
+
+function M.typed(state, ctx)
+  local cmds = M.split_commands(state.request)
+  if #cmds == 0 then return "english" end
+  local scratch = ctx.sim:copy()
+  for k, c in ipairs(cmds) do
+    -- a question, or a thousands separator ("alt KL204 12,000"), is English
+    if c:find("[?!]") or c:find("%d,%d%d%d") then return "english" end
+    local first, second, rest = c:match("^([%w_]+)[%s,]*([%w_]*)(.*)$")
+    if not first then return "english" end
+    if not canonical_name(first) then
+      -- "KL204 HDG 045": BlueSky's callsign-first form, run command first
+      if not canonical_name(second) or not scratch:get(first) then return "english" end
+      c = second .. " " .. first .. rest
+      cmds[k] = c
+    end
+    -- an argument that is an English word of the grammar ("turn KL204 north": heading 360, not the
+    -- bearing to a waypoint NORTH) makes the line English
+    local name = canonical_name(c:match("^([%w_]+)"))
+    local n = 0
+    for w in c:gmatch("[^%s,]+") do
+      n = n + 1
+      local lw = w:lower()
+      local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
+      if name ~= "ECHO" and (GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
+        return "english"
+      end
+    end
+    if not scratch:check(c) then return "english" end
+    -- a heading beyond 360 is wrapped by TrafScript but asked about in English
+    local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
+    if h and h > 360 then return "english" end
+    -- and it runs: "turn KL204 north" parses (a name is a bearing) but names nothing
+    if not scratch:exec(c) then return "english" end
+    cmds[k] = name .. c:match("^[%w_]+(.*)$")  -- shown with its registry name: "delete KL204" -> "DEL KL204"
+  end
+  state.candidate, state.source = table.concat(cmds, " ; "), "typed"
+  M.say(state, "typed", "TrafScript typed in English mode: runs as that command: " .. state.candidate)
+  return "trafscript"
 end
 
 -- A rejected candidate: back to the producing LLM node with the error while

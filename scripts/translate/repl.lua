@@ -50,7 +50,7 @@ local function fmt_aircraft(a)
   if a.lnav and a.active_wpt then
     s = s .. " -> " .. a.active_wpt
   elseif a.sel_hdg_deg and math.abs((a.sel_hdg_deg - a.hdg_deg + 180) % 360 - 180) > 0.5 then
-    s = s .. string.format(" -> %.0f", a.sel_hdg_deg)
+    s = s .. string.format(" -> %.0f", a.sel_hdg_deg) .. (a.sel_turn and (" " .. a.sel_turn) or "")
   end
   s = s .. string.format("  alt %6.0f ft", a.alt_ft)
   if a.sel_alt_ft and math.abs(a.sel_alt_ft - a.alt_ft) > 10 then
@@ -151,7 +151,8 @@ function Repl:format_reply(r)
   if r.error and r.kind == "trafscript" then return "  " .. r.error end
   if r.error then return "  could not translate: " .. r.error .. "\n  (:trace shows how it went)" end
   local out = {}
-  if r.kind == "english" then out[1] = "> " .. table.concat(r.commands, " ; ") end
+  if r.kind == "english" and #r.commands > 0 then out[1] = "> " .. table.concat(r.commands, " ; ") end
+  if r.note then out[#out + 1] = "  " .. r.note end
   for _, res in ipairs(r.results) do
     if not res.ok then
       out[#out + 1] = "  error: " .. res.message

@@ -121,10 +121,12 @@ return function(intent, rule, words)
   rule { "via", "addwpt", prev = { 3, "route" } }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
+  -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
+  rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
-  rule { "delete del remove rid", "delete" }
+  rule { "delete del remove rid kill", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
@@ -138,25 +140,35 @@ return function(intent, rule, words)
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints", "listrte", prev = { 3, "show list display what print" } }
+  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print" } }
   rule { "listrte", "listrte" }
 
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
-  rule { "details status info information", "pos" }
+  rule { "where's", "pos" }
+  rule { "details status info information state", "pos" }
   rule { "move reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
   -- (a holding pattern) is no pause of the simulation
   rule { "hold", "maintain", near = { 2, "heading hdg altitude level speed" } }
+  -- "hold, move EZY45 ...": a first word on its own before a comma pauses the simulation
+  rule { "hold pause", "hold", when = function(g, i) return i == 1 and g.t[2] ~= nil and g.t[2].kind == "punct" end }
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "pause hold freeze", "hold" }
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how", "pos", near = { 4, "altitude speed heading position level" } }
-  rule { "unpause", "op" }
+  -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
+  rule { "able", "pos", prev = { 2, "you" } }
+  rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
+  -- "say altitude", "report your heading": a question about the aircraft's state
+  rule { "say report", "pos", near = { 2, "altitude speed heading position level airspeed mach" } }
+  rule { "unpause op", "op" }
+  -- "go", "resume (please)": the whole request starts the clock
+  rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", next = "navigation" }
   rule { "run", "dtmult", near = { 4, "times x" } }
@@ -171,7 +183,7 @@ return function(intent, rule, words)
   rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
-  rule { "ff fastforward", "ff" }
+  rule { "ff fastforward fwd", "ff" }
   rule { "skip", "ff", next = "ahead forward" }
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }

@@ -19,6 +19,9 @@
 --               may answer it, "cancel" drops it), cancelled = true,
 --         error = why nothing ran (translation failed, or a runtime error
 --                 in a graph node; the session and simulation go on),
+--         note = what the request asked that squawk does not simulate
+--                (a holding pattern, an approach clearance, a transponder
+--                code, a frequency); the rest of the request ran,
 --         clock = a sentence when the command changed the run state
 --                 (HOLD, OP, FF, DTMULT),
 --         events = { event, ... } what happened while time moved (FF),
@@ -307,7 +310,7 @@ function Session:command(text)
     return reply
   end
   self.last = r
-  reply.trace = r.trace
+  reply.trace, reply.note = r.trace, r.note
   if r.ask then
     reply.ask = r.ask
     return reply

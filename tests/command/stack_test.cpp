@@ -69,7 +69,8 @@ TEST_CASE("errors name the argument and the expected form; state unchanged") {
   CHECK(error_of(s, "KL999 ALT FL100").find("no aircraft 'KL999'") != std::string::npos);
   CHECK(error_of(s, "FROB 1 2").find("unknown command or aircraft 'FROB'") != std::string::npos);
   CHECK(error_of(s, "ALT KL204").find("missing argument 2 (altitude)") != std::string::npos);
-  CHECK(error_of(s, "HDG KL204 90 12").find("takes 2 arguments, but 3 were given") != std::string::npos);
+  CHECK(error_of(s, "VS KL204 900 12").find("takes 2 arguments, but 3 were given") != std::string::npos);
+  CHECK(error_of(s, "HDG KL204 90 LEFT 12").find("takes 3 arguments, but 4 were given") != std::string::npos);
   CHECK(error_of(s, "CRE KL204 B744 52 4 0 FL100 250").find("KL204") != std::string::npos);
   CHECK(error_of(s, "CRE X1 B744 EHAM").find("no navdata loaded") != std::string::npos);
   CHECK(error_of(s, "LNAV KL204 ON").find("KL204") != std::string::npos);
@@ -99,6 +100,70 @@ TEST_CASE("HDG turns at the bank-angle rate; run_until reaches the target") {
   CHECK(t.hdg[0] == doctest::Approx(90 + 5 * rate).epsilon(0.02));
   REQUIRE(s.run_until(200.0));
   CHECK(t.hdg[0] == doctest::Approx(180));
+}
+
+// Headings seen at each step of dt, until t_end [s].
+std::vector<double> headings_until(Stack& s, double t_end) {
+  std::vector<double> seen;
+  while (s.sim().simt() < t_end - 1e-9) {
+    REQUIRE(s.run_until(s.sim().simt() + s.sim().dt()));
+    seen.push_back(s.sim().traffic().hdg[0]);
+  }
+  return seen;
+}
+
+bool passes_near(const std::vector<double>& seen, double hdg) {
+  for (double h : seen)
+    if (std::fabs(geo::wrap180(h - hdg)) < 5.0) return true;
+  return false;
+}
+
+TEST_CASE("HDG ... RIGHT / LEFT turn the commanded way, the long way round when it must") {
+  Stack s(1);
+  REQUIRE(s.exec("CRE BAW8CK A320 52.0 4.0 025 FL200 250"));
+  REQUIRE(s.exec("HDG BAW8CK 300 RIGHT"));
+  CHECK(s.sim().traffic().sel_turn[0] == 1);
+  auto seen = headings_until(s, 400.0);
+  // 025 -> 300 to the right passes 090 and 180 (the short way, left, passes neither)
+  CHECK(passes_near(seen, 90.0));
+  CHECK(passes_near(seen, 180.0));
+  CHECK(s.sim().traffic().hdg[0] == doctest::Approx(300));
+  CHECK(s.sim().traffic().sel_turn[0] == 0);  // captured: the direction is spent
+
+  REQUIRE(s.exec("HDG BAW8CK 020 L"));
+  CHECK(s.sim().traffic().sel_turn[0] == -1);
+  seen = headings_until(s, 800.0);
+  // 300 -> 020 to the left goes via 200 (the short way, right, passes 340)
+  CHECK(passes_near(seen, 200.0));
+  CHECK_FALSE(passes_near(seen, 340.0));
+  CHECK(s.sim().traffic().hdg[0] == doctest::Approx(20));
+
+  // without a direction, BlueSky's meaning: the short way
+  REQUIRE(s.exec("HDG BAW8CK 300"));
+  CHECK(s.sim().traffic().sel_turn[0] == 0);
+  seen = headings_until(s, 1000.0);
+  CHECK_FALSE(passes_near(seen, 180.0));
+  CHECK(s.sim().traffic().hdg[0] == doctest::Approx(300));
+
+  const std::string msg = error_of(s, "HDG BAW8CK 100 UP");
+  CHECK(msg.find("'UP'") != std::string::npos);
+  CHECK(msg.find("LEFT, RIGHT") != std::string::npos);
+}
+
+TEST_CASE("a .scn file can command a turn direction") {
+  const fs::path d = temp_dir("squawk_command_turn_scn");
+  REQUIRE(files::write_atomic((d / "turn.scn").string(),
+                              "00:00:00.00>CRE KL204 B744 52 4 025 FL200 250\n"
+                              "00:00:01.00>KL204 HDG 300 RIGHT\n"));
+  Stack s(3);
+  s.set_base_dir(d.string());
+  REQUIRE(s.exec("IC turn.scn"));
+  REQUIRE(s.run_until(1.0));
+  CHECK(s.tally().failed.empty());
+  CHECK(s.sim().traffic().sel_turn[0] == 1);
+  const auto seen = headings_until(s, 400.0);
+  CHECK(passes_near(seen, 180.0));
+  CHECK(s.sim().traffic().hdg[0] == doctest::Approx(300));
 }
 
 TEST_CASE("SCHEDULE, DELAY and ECHO run at their times") {
@@ -298,3 +363,23 @@ TEST_CASE("navdata: airports, fixes and navaids resolve where BlueSky accepts th
   CHECK_FALSE(s.exec("ADDWPT KL204 NOSUCHFIX"));
 }
 
+
+TEST_CASE("navdata: airports by name, whole or with a generic word, never a prefix of another name") {
+  auto db = NavDb::parse("# code,name,lat,lon,class\n"
+                         "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
+                         "EGLL, Heathrow Airport, 51.477, -0.461, Large, 12799, UK,83\n"
+                         "CYSY, Sachs Harbour, 71.99, -125.24, Small, , CA,\n",
+                         "", "", "test");
+  REQUIRE(db.is_ok());
+  auto ids = [&](const char* name) {
+    std::vector<std::string> out;
+    for (const NavPoint* a : (*db)->airports_named(name)) out.push_back(a->id);
+    return out;
+  };
+  CHECK(ids("schiphol") == std::vector<std::string>{"EHAM"});
+  CHECK(ids("Heathrow") == std::vector<std::string>{"EGLL"});
+  CHECK(ids("heathrow airport") == std::vector<std::string>{"EGLL"});
+  CHECK(ids("sachs").empty());
+  CHECK(ids("sachs harbour") == std::vector<std::string>{"CYSY"});
+  CHECK(ids("").empty());
+}

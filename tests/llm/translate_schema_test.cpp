@@ -90,6 +90,6 @@ TEST_CASE("multi mode (OpenAI): the filler's schema holds the selected command o
   REQUIRE(fill.contains("response_format"));
   const json& schema = fill["response_format"]["json_schema"]["schema"];
   CHECK(schema["properties"]["commands"]["items"]["anyOf"].size() == 1);
-  CHECK(command_choice(schema, "HDG")["properties"]["args"]["maxItems"] == 2);
+  CHECK(command_choice(schema, "HDG")["properties"]["args"]["maxItems"] == 3);  // acid, hdg, [LEFT/RIGHT]
   CHECK_FALSE(json::parse(reqs[0].body).contains("response_format"));  // the selector answers in words
 }

@@ -49,6 +49,10 @@ local function floors(path, min_right, max_wrong)
   check(wrong <= max_wrong, string.format("%s: wrong %.3f above %.3f", path, wrong, max_wrong))
 end
 
+-- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
+-- kept here after their first-sight figures were recorded, fixed by class.
+floors("tests/data/translate_round1.tsv", 0.95, 0.015)
+floors("tests/data/translate_round2.tsv", 0.66, 0.12)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)

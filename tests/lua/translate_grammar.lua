@@ -44,7 +44,7 @@ do -- a typed flight number with letters after the airline name; glued units sta
 end
 
 do -- headings: absolute, compass words, ATC digits
-  check_eq(tr("Shamrock four five kilo, turn left heading three one zero"), "HDG EIN45K 310")
+  check_eq(tr("Shamrock four five kilo, turn left heading three one zero"), "HDG EIN45K 310 LEFT")
   check_eq(tr("Point AC01 due south"), "HDG AC01 180")
   check_eq(tr("Make AC03 fly north-east"), "HDG AC03 45")
   check_eq(tr("Set the heading of aircraft TEST3 to one hundred and twenty degrees"), "HDG TEST3 120")
@@ -52,9 +52,9 @@ end
 
 do -- relative instructions use the current state
   local w = { aircraft = { plane("AC01", 90, 25000, 280), plane("AC02", 20, 26000, 290) } }
-  check_eq(tr("turn AC01 left 20 degrees", w), "HDG AC01 70")
-  check_eq(tr("Turn AC02 left by 40 degrees", w), "HDG AC02 340")
-  check_eq(tr("Turn AC01 30 degrees to the right", w), "HDG AC01 120")
+  check_eq(tr("turn AC01 left 20 degrees", w), "HDG AC01 70 LEFT")
+  check_eq(tr("Turn AC02 left by 40 degrees", w), "HDG AC02 340 LEFT")
+  check_eq(tr("Turn AC01 30 degrees to the right", w), "HDG AC01 120 RIGHT")
   check_eq(tr("Climb AC01 by 2000 feet", w), "ALT AC01 27000")
   check_eq(tr("Slow AC01 down by 20 knots", w), "SPD AC01 260")
   check_eq(tr("Increase the speed of AC01 by 10%", w), "SPD AC01 308")
@@ -73,19 +73,21 @@ do -- positions: lat/lon in written forms, types, creation
 end
 
 do -- telephony callsigns become ICAO callsigns
-  check_eq(tr("speedbird 123 turn right heading 090"), "HDG BAW123 90")
+  check_eq(tr("speedbird 123 turn right heading 090"), "HDG BAW123 90 RIGHT")
   check_eq(tr("Lufthansa four alpha bravo, fly heading zero niner zero"), "HDG DLH4AB 90")
   check_eq(tr("Easy four fife bravo, descend flight level two zero zero"), "ALT EZY45B FL200")
 end
 
 do -- several instructions in one utterance keep their order
-  check_eq(tr("Speedbird one two three, turn left heading two four zero, descend altitude eight thousand feet, " .. "reduce speed two one zero knots"), "HDG BAW123 240 ; ALT BAW123 8000 ; SPD BAW123 210")
+  check_eq(tr("Speedbird one two three, turn left heading two four zero, descend altitude eight thousand feet, " .. "reduce speed two one zero knots"), "HDG BAW123 240 LEFT ; ALT BAW123 8000 ; SPD BAW123 210")
   check_eq(tr("Turn on conflict detection and use MVP for resolution"), "ASAS ON ; RESO MVP")
   check_eq(tr("Reset, then set seed 99 and a time step of 0.05 seconds"), "RESET ; SEED 99 ; DT 0.05")
   check_eq(tr("Set AC01 and AC02 to FL300"), "ALT AC01 FL300 ; ALT AC02 FL300")
   check_eq(tr("AC02: heading 180, FL200, 250 kts"), "HDG AC02 180 ; ALT AC02 FL200 ; SPD AC02 250")
   check_eq(tr("When AC01 reaches FL200, set its speed to 280 knots"), "ATALT AC01 FL200 SPD AC01 280")
-  check_eq(tr("Delta 30, descend and maintain 4000, then reduce speed to 210"), "ALT DAL30 4000 ; ATALT DAL30 4000 SPD DAL30 210")
+  -- "then" waits for the instruction before it; ", then" after a comma lists the next one
+  check_eq(tr("Delta 30, descend and maintain 4000 then reduce speed to 210"), "ALT DAL30 4000 ; ATALT DAL30 4000 SPD DAL30 210")
+  check_eq(tr("Delta 30, descend and maintain 4000, then reduce speed to 210"), "ALT DAL30 4000 ; SPD DAL30 210")
 end
 
 do -- experimenter requests
@@ -123,7 +125,7 @@ do -- spoken callsigns are matched to the aircraft that exist
   local w = world_of("CRE DAL1153 B738 40 -74 360 5000 250 ; CRE AVA847 A320 40.5 -74 90 11000 250")
   check_eq(tr("12,153, climbing, maintain one two twelve thousand.", w), "ALT DAL1153 12000")
   check_eq(tr("Abiont eight forty seven descend and maintain four thousand", w), "ALT AVA847 4000")
-  check_eq(tr("Delta eleven fifty three turn right heading zero one zero", w), "HDG DAL1153 10")
+  check_eq(tr("Delta eleven fifty three turn right heading zero one zero", w), "HDG DAL1153 10 RIGHT")
 end
 
 do -- waypoints are matched by sound
@@ -138,8 +140,8 @@ do -- callsigns restarted, corrected or heard without their letters
   check_eq(tr("Delta Sixty Delta Six Forty Six maintain three thousand", w), "ALT DAL646 3000")
   check_eq(tr("Brickyard Eleven correction fourteen eleven descend maintain three thousand", w), "ALT RPA1411 3000")
   check_eq(tr("lufthansa thirty one correction lufthansa forty one thirty turn left heading two seven zero", w),
-    "HDG DLH4130 270")
-  check_eq(tr("speedbird nine six right heading zero nine zero", w), "HDG BAW96CA 90")
+    "HDG DLH4130 270 LEFT")
+  check_eq(tr("speedbird nine six right heading zero nine zero", w), "HDG BAW96CA 90 RIGHT")
   -- the digits differ: still a question, and a list of aircraft is no restart
   check(asks("Delta Ninety Four maintain two one zero knots", w), "DAL94 is not DAL84")
   check(asks("speedbird nine six charlie bravo right heading zero nine zero", w), "BAW96CB is not BAW96CA")
@@ -152,7 +154,7 @@ end
 
 do -- values as speech recognition writes them
   local w = world_of("CRE SWA5578 B738 40 -74 360 5000 250 ; CRE TAP9148 A320 41 -74 90 9000 250")
-  check_eq(tr("Southwest fifty five seventy eight turn left heading three f four zero", w), "HDG SWA5578 340")
+  check_eq(tr("Southwest fifty five seventy eight turn left heading three f four zero", w), "HDG SWA5578 340 LEFT")
   check_eq(tr("Southwest fifty five seventy eight maintain one nine-year zero knots", w), "SPD SWA5578 190")
   check_eq(tr("Southwest fifty five seventy eight reduce speed to two once", w), "SPD SWA5578 210")
   check_eq(tr("Portugal 91-48 heavy at 5000 reduce speed to 21-0", w), "ATALT TAP9148 5000 SPD TAP9148 210")
@@ -183,18 +185,31 @@ do -- one instruction for two aircraft, each with its own value; 'by' before the
   check_eq(tr("EZY45, hold present heading", w), "HDG EZY45 45")
   check_eq(tr("EZY45 maintain present speed", w), "SPD EZY45 290")
   check_eq(tr("hold the simulation", w), "HOLD")
-  check(asks("EZY45 hold", w), "a holding pattern is not a pause of the simulation")
-  check(asks("EZY45 hold at present position", w), "nor a kept altitude")
+  -- a holding pattern is neither a pause of the simulation nor a kept altitude: squawk says it does not simulate it
+  local function not_simulated(s, what)
+    local r = grammar.translate(s, w)
+    check(#r.commands == 0 and r.note ~= nil and r.note:find(what, 1, true) ~= nil, s .. " -> " .. tostring(r.note))
+  end
+  not_simulated("EZY45 hold", "holding patterns")
+  not_simulated("EZY45 hold at present position", "holding patterns")
+  not_simulated("EZY45 hold over SQK01 as published", "holding patterns ('hold over SQK01 as published')")
+  not_simulated("EZY45 cleared ILS approach runway 27", "approach clearances")
+  not_simulated("EZY45 squawk 7700", "transponder codes ('squawk 7700')")
+  not_simulated("EZY45 contact Amsterdam approach 121.2", "radio frequencies")
+  -- in a mixed request the rest is translated and the note comes with it
+  local mixed = grammar.translate("EZY45 contact approach 119.7 and descend FL100", w)
+  check_eq(text(mixed), "ALT EZY45 FL100")
+  check(mixed.note ~= nil and mixed.note:find("radio frequencies", 1, true) ~= nil, "the frequency is named")
   check_eq(tr("hold the sim and EZY45 maintain present heading", w), "HOLD ; HDG EZY45 45")
   -- an aircraft named just before an instruction word is that instruction's
-  check_eq(tr("EZY45 turn left heading 300 and AFR1234 descend FL200", w), "HDG EZY45 300 ; ALT AFR1234 FL200")
-  check_eq(tr("pause the simulation and EZY45 turn left heading 300", w), "HOLD ; HDG EZY45 300")
+  check_eq(tr("EZY45 turn left heading 300 and AFR1234 descend FL200", w), "HDG EZY45 300 LEFT ; ALT AFR1234 FL200")
+  check_eq(tr("pause the simulation and EZY45 turn left heading 300", w), "HOLD ; HDG EZY45 300 LEFT")
   -- a change from the present heading is each aircraft's own; the aircraft named together stay together
-  check_eq(tr("EZY45 and AFR1234 turn left 20 degrees", w), "HDG EZY45 25 ; HDG AFR1234 160")
+  check_eq(tr("EZY45 and AFR1234 turn left 20 degrees", w), "HDG EZY45 25 LEFT ; HDG AFR1234 160 LEFT")
   check_eq(tr("EZY45 and AFR1234 maintain present heading", w), "HDG EZY45 45 ; HDG AFR1234 180")
   check_eq(tr("EZY45 and AFR1234 turn around", w), "HDG EZY45 225 ; HDG AFR1234 360")
   check_eq(tr("EZY45 and AFR1234 maintain present speed", w), "SPD EZY45 290 ; SPD AFR1234 300")
-  check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15")
+  check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15 LEFT")
 end
 
 do -- the display's trails: on/off with the point interval, a colour per aircraft

@@ -80,7 +80,7 @@ end
 do
   local llm = fake_llm({ false })
   local r = graph.translate("turn KL204 left heading 180", { sim = sim, llm = llm, mode = "multi" })
-  check_eq(r.commands and r.commands[1], "HDG KL204 180")
+  check_eq(r.commands and r.commands[1], "HDG KL204 180 LEFT")
   check(path(r.trace):find("select offline validate execute", 1, true) ~= nil, path(r.trace))
   check(graph.format_trace(r.trace):find("HTTP 500: boom", 1, true) ~= nil)
 end

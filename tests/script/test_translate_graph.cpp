@@ -16,7 +16,7 @@ TEST_CASE("run_translation_graph: commands against a Stack's traffic, which stay
   auto tr = script::run_translation_graph(vm, "KL204 turn left 20 degrees", {"offline", "", &stack});
   REQUIRE_MESSAGE(tr.is_ok(), tr.status().message());
   CHECK(tr->issued());
-  CHECK(tr->text() == "HDG KL204 70");
+  CHECK(tr->text() == "HDG KL204 70 LEFT");
   CHECK(stack.snapshot() == before);
   auto setup = script::run_translation_graph(vm, "KL204 descend", {"offline", "CRE KL204 A320 52 4 90 FL250 280"});
   REQUIRE(setup.is_ok());

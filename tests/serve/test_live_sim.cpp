@@ -86,9 +86,10 @@ TEST_CASE("LiveSim: requests run on the owner thread; the state is published aft
 
   r = live.call([](serve::LiveSim& l) { return l.command("KL204 turn left heading 270", "controller"); }, timeout);
   REQUIRE(r.is_ok());
-  CHECK((*r)["commands"] == json::array({"HDG KL204 270"}));
+  CHECK((*r)["commands"] == json::array({"HDG KL204 270 LEFT"}));
   st = json::parse(*live.state().second);
   CHECK(st["aircraft"][0]["sel_hdg_deg"].get<double>() == doctest::Approx(270.0));
+  CHECK(st["aircraft"][0]["sel_turn"] == "LEFT");  // the commanded way, until the heading is captured
 
   // A failing command reports the culprit and changes nothing.
   r = live.call([](serve::LiveSim& l) { return l.command("!ALT KL204 FL9X", "controller"); }, timeout);

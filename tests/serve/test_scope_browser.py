@@ -66,7 +66,7 @@ def main():
         browser.press_enter()
         said = browser.wait_for("document.getElementById('reply-commands').textContent.includes('HDG') && "
                                 "document.getElementById('reply-commands').textContent", what="the TrafScript shown")
-        assert said == "HDG KL204 270", said
+        assert said == "HDG KL204 270 LEFT", said  # the turn direction said is kept (HDG ... LEFT)
         assert browser.eval("document.getElementById('reply-typed').textContent") == "KL204 turn left heading 270"
         assert browser.eval("document.getElementById('reply-result').className") == "ok"
         print(f"ok   typed English became {said!r}")

@@ -40,6 +40,26 @@ TEST_CASE("headings modulo 360, positions within 1e-3 degree") {
   CHECK(same_command("CRE A B738 52 4 90 FL250 280", "CRE A B738 52.0 4.0 090 25000 280"));
 }
 
+TEST_CASE("HDG turn direction: L and R fold to LEFT and RIGHT; an expected line without one accepts any") {
+  CHECK(same_command("HDG KL1 300 RIGHT", "HDG KL1 300 R"));
+  CHECK(same_command("HDG KL1 20 l", "HDG KL1 020 LEFT"));
+  CHECK_FALSE(same_command("HDG KL1 300 LEFT", "HDG KL1 300 RIGHT"));
+  CHECK_FALSE(same_command("HDG KL1 300", "HDG KL1 300 RIGHT"));
+  CHECK(same_command("HDG KL1 300 RIGHT", "HDG KL1 300"));
+  CHECK_FALSE(same_command("HDG KL1 310 RIGHT", "HDG KL1 300"));
+}
+
+TEST_CASE("ALT's vertical speed is a magnitude: its sign does not count") {
+  CHECK(same_command("ALT KL1 FL100 2000", "ALT KL1 FL100 -2000"));
+  CHECK_FALSE(same_command("ALT KL1 FL100 1500", "ALT KL1 FL100 -2000"));
+}
+
+TEST_CASE("BlueSky's callsign-first form equals the command-first one, nested too") {
+  CHECK(same_command("KL1 SPD 250", "SPD KL1 250"));
+  CHECK(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 250"));
+  CHECK_FALSE(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 260"));
+}
+
 TEST_CASE("conditionals compare the condition and the nested command") {
   CHECK(same_command("ATALT AC01 20000 SPD AC01 280", "ATALT AC01 FL200 SPD AC01 280"));
   CHECK_FALSE(same_command("ATALT AC01 20000 SPD AC01 290", "ATALT AC01 FL200 SPD AC01 280"));

@@ -1,0 +1,155 @@
+-- Aircraft type names, generated from what squawk's performance models know
+-- (squawk.sim.types(): OpenAP's types with their titles, "Boeing 777-300ER",
+-- when OpenAP data is given; the class model's named designators) and the
+-- designators of translate/names.lua, by rules, never row by row:
+--   * a title "Maker Model" gives maker + model, the model with its spaces
+--     joined or hyphenated ("737 MAX 8" -> "737max8", "737-max-8"), each
+--     alternative of "777-200/200ER", Boeing's short MAX names ("737-8"),
+--     Airbus models without their letter ("321neo") and "neo" apart;
+--   * a designator gives the name its pattern spells: B7FV -> 7F7-V00
+--     (B738 -> 737-800), A3FV -> A3F0-V00 (A332 -> A330-200), ATFV -> ATR F2-V00
+--     (AT76 -> ATR 72-600), DH8x -> Dash 8-x00 and Q x00, CRJn -> CRJ n00,
+--     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn, E75L/E75S -> E175;
+--   * a family ("737", "a330") is its base designator when one exists (B737,
+--     A320), else its first variant.
+-- M.build(designators) -> {types = {{maker, model, icao}, ...}, phrases = {{words, designator}, ...},
+--   designators = every designator known (the models' and the given ones), sorted}
+--   phrases: names of several words ("737 max 8", "dash 8-400") and their
+--   designator, which M.join(text, phrases) writes in their place (the
+--   matcher reads one token).
+local M = {}
+
+local function add(rows, seen, maker, model, icao)
+  model = model:lower()
+  local key = maker .. "|" .. model
+  if model == "" or seen[key] then return end
+  seen[key] = true
+  rows[#rows + 1] = { maker, model, icao }
+end
+
+-- Spellings of one model as written in a title ("737 MAX 8", "A321neo").
+local function spellings(model)
+  local m = model:lower():gsub("%s*%(.-%)", ""):gsub("^%s+", ""):gsub("%s+$", "")
+  local out = { m }
+  if m:find(" ") then
+    out[#out + 1] = (m:gsub(" ", ""))
+    out[#out + 1] = (m:gsub(" ", "-"))
+  end
+  local fam, max = m:match("^(%d%d%d) max (%d+)$")
+  if fam then out[#out + 1] = fam .. "-" .. max; out[#out + 1] = "max" .. max end
+  local base, neo = m:match("^(a%d%d%d)(neo)$")
+  if base then out[#out + 1] = base:sub(2) .. neo; out[#out + 1] = base .. " neo" end
+  return out
+end
+
+-- Names a designator's pattern spells: {{maker, model}, ...}.
+local function pattern_names(d)
+  local out = {}
+  local f, v = d:match("^B7(%d)(%d)$")
+  if f then out[#out + 1] = { "boeing", "7" .. f .. "7-" .. v .. "00" } end
+  f, v = d:match("^A3(%d)(%d)$")
+  if f and tonumber(f) >= 3 then out[#out + 1] = { "airbus", "a3" .. f .. "0-" .. v .. "00" } end
+  if f and tonumber(f) < 3 then out[#out + 1] = { "airbus", d:lower() } end
+  f, v = d:match("^AT(%d)(%d)$")
+  if f then
+    out[#out + 1] = { "atr", f .. "2-" .. v .. "00" }
+    out[#out + 1] = { "atr", f .. "2" }
+  end
+  local x = d:match("^DH8(%a)$")
+  if x then
+    local n = ("ABCD"):find(x, 1, true)
+    out[#out + 1] = { "dash", "8-" .. n .. "00" }
+    out[#out + 1] = { "bombardier", "q" .. n .. "00" }
+    if x == "D" then out[#out + 1] = { "dash", "8" } end  -- the family's name is its latest variant
+  end
+  v = d:match("^B78(%w)$")
+  if v then out[#out + 1] = { "boeing", "787-" .. (v == "X" and "10" or v) } end
+  v = d:match("^B3(%w)M$")
+  if v then out[#out + 1] = { "boeing", "737 max " .. (v == "X" and "10" or v) } end
+  v = d:match("^A(%d)(%d)N$")
+  if v then out[#out + 1] = { "airbus", "a3" .. d:sub(2, 3) .. "neo" } end
+  if d == "B77W" then out[#out + 1] = { "boeing", "777-300er" } end
+  if d == "B77L" then out[#out + 1] = { "boeing", "777-200lr" } end
+  if d == "A35K" then out[#out + 1] = { "airbus", "a350-1000" } end
+  local c = d:match("^CRJ(%d)$")
+  if c then out[#out + 1] = { "bombardier", "crj" .. c .. "00" } end
+  c = d:match("^C(%d%d%d)$")
+  if c then out[#out + 1] = { "cessna", c } end
+  c = d:match("^E(1%d%d)$")
+  if c then out[#out + 1] = { "embraer", "e" .. c }; out[#out + 1] = { "embraer", c } end
+  if d == "E75L" or d == "E75S" then out[#out + 1] = { "embraer", "e175" }; out[#out + 1] = { "embraer", "175" } end
+  return out
+end
+
+function M.build(designators)
+  local rows, seen, phrases, known = {}, {}, {}, {}
+  local list = {}
+  for _, t in ipairs(squawk.sim.types()) do list[#list + 1] = t end
+  for _, d in ipairs(designators or {}) do list[#list + 1] = { designator = d } end
+  local families = {}
+  for _, t in ipairs(list) do
+    local d = t.designator:upper()
+    known[d] = true
+    if t.title then
+      local title = t.title:gsub("%s*%(.-%)", "")
+      local maker, model = title:match("^(%S+)%s+(.+)$")
+      if maker then
+        maker = maker:lower()
+        local first = model:match("^[^/]+")
+        local alts = { first }
+        for alt in model:gmatch("/%s*([^/]+)") do
+          -- "777-200/200ER": the alternative keeps the family
+          alts[#alts + 1] = alt:match("^%a") and alt or ((first:match("^(.-%-)") or "") .. alt)
+        end
+        for _, a in ipairs(alts) do
+          a = a:gsub("^%s+", ""):gsub("%s+$", "")
+          for _, s in ipairs(spellings(a)) do add(rows, seen, maker, s, d) end
+          if a:find(" ") then
+            phrases[#phrases + 1] = { a:lower(), d }
+            -- the family said as its designator ("B737 MAX 8")
+            if maker == "boeing" then phrases[#phrases + 1] = { "b" .. a:lower(), d } end
+          end
+          local fam = a:lower():match("^(a?%d%d%d)[%-%s]")
+          if fam then families[#families + 1] = { maker, fam, d } end
+        end
+      end
+    end
+    for _, n in ipairs(pattern_names(d)) do
+      for _, sp in ipairs(spellings(n[2])) do add(rows, seen, n[1], sp, d) end
+      -- several words, or digits joined by a hyphen the lexer splits ("dash 8-400")
+      if n[2]:find(" ") then
+        phrases[#phrases + 1] = { n[2], d }
+        if n[1] == "boeing" then phrases[#phrases + 1] = { "b" .. n[2], d } end
+      end
+      if n[2]:find("^%d+%-%d") then phrases[#phrases + 1] = { n[1] .. " " .. n[2], d } end
+      local fam = n[2]:match("^(a?%d%d%d)%-")
+      if fam then families[#families + 1] = { n[1], fam, d } end
+    end
+  end
+  -- families: the base designator when it exists ("737" -> B737), else the first variant
+  table.sort(families, function(a, b) return a[3] < b[3] end)
+  for _, fam in ipairs(families) do
+    local base = (fam[1] == "boeing" and "B" or "") .. fam[2]:upper()
+    add(rows, seen, fam[1], fam[2], known[base] and base or fam[3])
+  end
+  local all = {}
+  for d in pairs(known) do all[#all + 1] = d end
+  table.sort(all)
+  return { types = rows, phrases = phrases, designators = all }
+end
+
+-- The request with each name of several words as its designator ("a 737 MAX 8" -> "a B38M").
+function M.join(text, phrases)
+  local lower = text:lower()
+  for _, p in ipairs(phrases) do
+    if lower:find(p[1]:match("^%S+"), 1, true) then  -- its first word is there: worth a pattern match
+      p.pattern = p.pattern or ("%f[%w]" .. p[1]:gsub("%p", "%%%0")
+        :gsub("%a", function(ch) return "[" .. ch:lower() .. ch:upper() .. "]" end)
+        :gsub(" ", "[%%s%%-]+") .. "%f[%W]")
+      text = text:gsub(p.pattern, p[2])
+    end
+  end
+  return text
+end
+
+return M

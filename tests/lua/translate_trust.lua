@@ -1,0 +1,116 @@
+-- English a controller can trust (docs/translator_trust.md): every value
+-- accounted for, turns the way they were said, TrafScript passed through,
+-- destructive requests confirmed, what squawk does not simulate named, and
+-- inexact callsigns asked about.
+local graph = require("translate.graph")
+
+local sim = squawk.sim.new()
+for _, line in ipairs({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" }) do
+  check(sim:exec(line))
+end
+local function tr(text) return graph.translate(text, { sim = sim, mode = "offline" }) end
+local function said(r)
+  return r.ask and ("ASK " .. r.ask) or table.concat(r.commands or {}, " ; ")
+end
+
+-- 1. every value accounted for: a fragment left over is asked about, by name, and nothing runs
+local r = tr("KLM1234 turn right heading 160 DLH4AX 2")
+check_eq(said(r), "ASK I have HDG KLM1234 160 RIGHT. What does 'DLH4AX 2' mean?")
+check_eq(r.commands, nil)
+-- an instruction dropped is asked about too (a level said after a speed with no verb of its own)
+r = tr("KLM1234 reduce speed 250 knots 12 thousand")
+check(r.ask ~= nil and r.ask:find("'12 thousand'", 1, true) ~= nil, said(r))
+-- "and" with a callsign and a value of its own is a second instruction of the same kind
+check_eq(said(tr("turn KLM1234 to 010 and DLH4AX to 200")), "HDG KLM1234 10 ; HDG DLH4AX 200")
+-- several instructions, none dropped
+check_eq(said(tr("KLM1234 climb FL300 and reduce speed 250 knots")), "ALT KLM1234 FL300 ; SPD KLM1234 250")
+
+-- 2. turns the way they were said; relative turns in whole degrees; past 180 degrees asks yes/no
+check_eq(said(tr("BAW8CK turn right heading 300")), "HDG BAW8CK 300 RIGHT")
+check_eq(said(tr("BAW8CK turn left heading 020")), "HDG BAW8CK 20 LEFT")
+check_eq(said(tr("BAW8CK fly heading 300")), "HDG BAW8CK 300")
+check_eq(said(tr("KLM1234 turn left ten degrees")), "HDG KLM1234 290 LEFT")
+r = tr("KLM1234 turn left 200 degrees")
+check(r.ask ~= nil and r.ask:find("left by 200 degrees", 1, true) ~= nil, said(r))
+check_eq(r.confirm and r.confirm.commands[1], "HDG KLM1234 100 LEFT")
+
+-- 4. TrafScript typed in English mode runs as typed, and the trace says so
+for _, typed in ipairs({ "FF 60", "HOLD", "op", "HDG KLM1234 270", "hdg klm1234 270 right", "KLM1234 ALT FL100" }) do
+  r = tr(typed)
+  check(r.typed == true, typed .. " passes through")
+  check(r.trace[2] and r.trace[2].node == "typed", typed .. ": the trace names the typed node")
+end
+check_eq(said(tr("KLM1234 ALT FL100")), "ALT KLM1234 FL100")
+check_eq(said(tr("FF 60")), "FF 60")
+-- English that happens to start with a command word stays English
+check(not tr("turn KLM1234 north").typed, "a compass word is English")
+check(not tr("delete the aircraft").typed, "glue words are English")
+
+-- 5. destructive and global requests wait for a yes
+local function dialogue() return graph.dialogue({ sim = sim, mode = "offline" }) end
+local d = dialogue()
+r = d:say("delete all aircraft")
+check(r.ask ~= nil and r.ask:find("Delete 4 aircraft", 1, true) ~= nil, said(r))
+check_eq(r.commands, nil)
+r = d:say("yes")
+check_eq(said(r), "DEL BAW8CK ; DEL KLM1234 ; DEL DLH4AX ; DEL KLM77")
+check(r.confirmed == true, "the yes is recorded")
+d = dialogue()
+check(d:say("reset the simulation").ask ~= nil, "RESET asks")
+r = d:say("no")
+check(r.cancelled == true and #r.commands == 0, "no drops it")
+d = dialogue()
+check(d:say("RESO OFF").ask ~= nil, "resolution off for everyone asks, typed or said")
+r = d:say("KLM1234 climb FL300")
+check_eq(said(r), "ALT KLM1234 FL300")
+check(r.dropped ~= nil, "another request drops the question and is read as itself")
+d = dialogue()
+check_eq(said(d:say("delete KLM77")), "DEL KLM77")
+d = dialogue()
+check(d:say("KLM1234 turn left 200 degrees").ask ~= nil, "the long turn asks")
+check_eq(said(d:say("affirm")), "HDG KLM1234 100 LEFT")
+
+-- 6. what squawk does not simulate is named, the rest runs
+r = tr("KLM1234 squawk 7700")
+check(#r.commands == 0 and r.note:find("transponder codes", 1, true) ~= nil, tostring(r.note))
+check_eq(r.error, nil)
+r = tr("KLM1234 contact approach 119.7 and descend FL100")
+check_eq(said(r), "ALT KLM1234 FL100")
+check(r.note:find("radio frequencies", 1, true) ~= nil, tostring(r.note))
+
+-- 3. callsigns exact or asked: a transposed or shortened typed callsign names the candidates
+r = tr("KLM1243 climb flight level 300")
+check_eq(r.ask, "Did you mean KLM1234? There is no KLM1243.")
+check_eq(r.confirm and r.confirm.id, "KLM1234")
+r = tr("KLM7 climb FL300")
+check_eq(r.ask, "Did you mean KLM77? There is no KLM7.")
+check_eq(tr("KLM climb FL300").ask, "Which KLM: KLM1234 or KLM77?")
+d = dialogue()
+d:say("KLM1243 climb flight level 300")
+check_eq(said(d:say("yes")), "ALT KLM1234 FL300")
+-- a spoken callsign whose digits differ from the only fitting aircraft asks while others fly
+r = tr("KLM one two four three climb flight level 300")
+check(r.ask ~= nil and r.ask:find("KLM1234", 1, true) ~= nil, said(r))
+-- fixes: a name that only sounds like one of several known names is confirmed, never substituted
+local wsim = sim:copy()
+check(wsim:exec("DEFWPT SQK01 52.3 4.3"))
+check(wsim:exec("DEFWPT SPIKE 52.5 4.5"))
+r = graph.translate("KLM1234 direct to sparky", { sim = wsim, mode = "offline", waypoints = { "SQK01", "SPIKE" } })
+check_eq(r.ask, "Did you mean SPIKE? I heard 'sparky'.")
+-- an airport said by its name is the navdata's airport (when navdata is loaded)
+if #sim:airports_named("schiphol") == 1 then
+  check_eq(said(graph.translate("KLM1234 direct to Schiphol", { sim = wsim, mode = "offline",
+    waypoints = { "SQK01", "SPIKE" } })), "ADDWPT KLM1234 EHAM ; DIRECT KLM1234 EHAM")
+else
+  print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
+end
+
+-- units people type: km/h is a speed in knots, metres an altitude in feet
+check_eq(said(tr("KLM1234 speed 500 km/h")), "SPD KLM1234 270")
+check_eq(said(tr("KLM1234 reduce speed to 400 kph")), "SPD KLM1234 216")
+
+-- traffic information describes another aircraft: named, never an instruction
+r = tr("KLM1234, turn right heading 023, traffic 2 o'clock, 36 miles")
+check_eq(said(r), "HDG KLM1234 23 RIGHT")
+check(r.note ~= nil and r.note:find("traffic information ('traffic 2 o'clock, 36 miles')", 1, true) ~= nil, tostring(r.note))
