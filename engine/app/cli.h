@@ -41,6 +41,8 @@ class Args {
   // Integer / real value of a flag; an unparsable value is a usage error.
   Result<long long> get_int(const std::string& flag, long long fallback) const;
   Result<double> get_double(const std::string& flag, double fallback) const;
+  // Every flag given, name -> value ("1" for a switch).
+  const std::map<std::string, std::string>& flags() const { return values_; }
 
  private:
   std::vector<std::string> positional_;
