@@ -194,4 +194,21 @@ expect "render --force" 0 "wrote" -- "$sq" render docs/demo_episode.jsonl --out 
 expect "plot into a folder" 2 "is a folder; expected a file name" -- "$sq" plot "$ow/m" --out "$ow/m"
 rm -rf "$ow"
 
+# Errors name the place and the fix: a .scn typo fails at file:line with the
+# closest command; display-only BlueSky commands stay a listed skip; a Lua
+# conflict-resolution scenario or a folder given where a .scn belongs says so.
+sc=$(mktemp -d)
+printf '# a typo\n00:00:00.00>CRE KL204 B744 52 4 90 FL200 250\n00:00:00.00>PAN 52 4\n00:00:05.00>ATL KL204 FL300\n' > "$sc/typo.scn"
+expect "scn typo" 1 "typo.scn:4: t=5 s: ATL KL204 FL300: unknown command or aircraft 'ATL' - did you mean ALT\\?" -- "$sq" scn "$sc/typo.scn"
+expect "scn display skip" 1 "^ +1  PAN$" -- "$sq" scn "$sc/typo.scn"
+printf '00:00:00.00>CRE KL204 B744 52 4 90 FL200 250\n00:00:10.00>KL204 ALT FL9X\n' > "$sc/late.scn"
+expect "scn runtime failure line" 1 "late.scn:2: t=10 s: KL204 ALT FL9X: " -- "$sq" scn "$sc/late.scn"
+expect "scn lua scenario" 2 "horizontal_cr.lua is a Lua conflict-resolution scenario: .squawk train., .squawk eval. and .squawk table3. take it" -- "$sq" scn scenarios/horizontal_cr.lua
+expect "repl lua scenario" 1 "horizontal_cr.lua is a Lua conflict-resolution scenario" -- "$sq" repl scenarios/horizontal_cr.lua
+expect "scn folder" 2 "docs is a folder; expected one FILE.scn \(.squawk scn docs --conformance. runs every .scn under it\)" -- "$sq" scn docs
+cp scenarios/demo_conflict.scn "$sc/"
+printf 'not a scenario\n' > "$sc/README.md"
+expect "conformance reads .scn only" 0 "^\| 1 \| 1 \| 1 \|" -- "$sq" scn "$sc" --conformance
+rm -rf "$sc"
+
 finish
