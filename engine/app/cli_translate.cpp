@@ -86,11 +86,11 @@ int cmd_translate(const ArgV& argv) {
   if (!tr) return failure(tr.status());
   if (args->has("--jsonl")) {
     std::printf("%s\n", result_json(*tr).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
-  } else {
+  } else if (tr->error.empty()) {
     std::printf("%s\n", tr->text().c_str());
   }
   // The graph validated the commands on a scratch copy of the traffic; an
-  // error means nothing valid came out.
+  // error means nothing valid came out (said once, on stderr).
   if (!tr->error.empty()) {
     std::fprintf(stderr, "squawk translate: no valid command: %s\n", tr->error.c_str());
     return kExitFail;
