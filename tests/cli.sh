@@ -211,4 +211,27 @@ printf 'not a scenario\n' > "$sc/README.md"
 expect "conformance reads .scn only" 0 "^\| 1 \| 1 \| 1 \|" -- "$sq" scn "$sc" --conformance
 rm -rf "$sc"
 
+# `help CMD` documents every flag the parser of CMD accepts (the parser lists
+# them when it meets an unknown one), and every flag on its usage lines parses;
+# `--help` names all eight gpt2 actions and says train is not MLP-only.
+parsed() { "$sq" "$@" --zz-unknown 2>&1 | grep -o "known: [^(]*" | head -1 | sed 's/known: //' | tr ' ' '\n' | grep -- '^--' | sort -u; }
+documented() { "$sq" help "$1" | grep -oE -- '--[a-z][a-z0-9-]*' | sort -u; }
+usage_flags() { "$sq" help "$1" | sed '/^$/q' | grep -oE -- '--[a-z][a-z0-9-]*' | sort -u; }
+help_check() {  # HELPNAME PARSER-ARGV...; the union of the given parsers against one help text
+  local name=$1; shift
+  local p="" undocumented unparsed
+  while [ $# -gt 0 ]; do p+=$(parsed $1 | tr '\n' ' ')" "; shift; done
+  p=$(tr ' ' '\n' <<<"$p" | grep -- '^--' | sort -u)
+  undocumented=$(comm -23 <(echo "$p") <(documented "$name") | tr '\n' ' ')
+  unparsed=$(comm -13 <(echo "$p") <(usage_flags "$name") | tr '\n' ' ')
+  if [ -n "$p" ] && [ -z "${undocumented// }" ] && [ -z "${unparsed// }" ]; then echo "ok   help $name matches the parser"; pass=$((pass + 1))
+  else echo "FAIL help $name: parsed but not in help: [$undocumented]; in usage but not parsed: [$unparsed]"; fails=$((fails + 1)); fi
+}
+for c in demo test render plot repl serve scn commands translate eval-translate eval table3 llm rag; do help_check $c $c; done
+help_check train train "train --policy gpt2"
+help_check gpt2 "gpt2 info" "gpt2 pretrain" "gpt2 imitate"
+expect "help lists gpt2 actions" 0 "gpt2 info\|generate\|logits\|bench\|init\|train-bpe\|pretrain\|imitate" -- "$sq" --help
+expect "help train both learners" 0 "train a conflict-resolution policy \(MLP, or --policy gpt2\)" -- "$sq" --help
+expect "help train files" 0 "the MLP learner also writes best.ckpt" -- "$sq" help train
+
 finish

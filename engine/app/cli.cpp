@@ -42,7 +42,14 @@ Result<Args> Args::parse(const std::vector<std::string>& argv, const Spec& spec)
         a.values_[name] = "1";
         continue;
       }
-      if (!spec.pass_unknown) return Status::invalid("unknown flag " + text::quoted(name));
+      if (!spec.pass_unknown) {
+        std::vector<std::string> known = spec.value_flags;
+        known.insert(known.end(), spec.bool_flags.begin(), spec.bool_flags.end());
+        std::sort(known.begin(), known.end());
+        known.erase(std::unique(known.begin(), known.end()), known.end());
+        return Status::invalid("unknown flag " + text::quoted(name) + "; known: " +
+                               (known.empty() ? std::string("none") : text::join(known, " ")));
+      }
     }
     a.positional_.push_back(t);
   }
