@@ -199,17 +199,29 @@ rm -rf "$ow"
 # conflict-resolution scenario or a folder given where a .scn belongs says so.
 sc=$(mktemp -d)
 printf '# a typo\n00:00:00.00>CRE KL204 B744 52 4 90 FL200 250\n00:00:00.00>PAN 52 4\n00:00:05.00>ATL KL204 FL300\n' > "$sc/typo.scn"
-expect "scn typo" 1 "typo.scn:4: t=5 s: ATL KL204 FL300: unknown command or aircraft 'ATL' - did you mean ALT\\?" -- "$sq" scn "$sc/typo.scn"
+expect "scn typo" 1 "t=5 s: .*typo.scn:4: ATL KL204 FL300: unknown command or aircraft 'ATL' - did you mean ALT\\?" -- "$sq" scn "$sc/typo.scn"
 expect "scn display skip" 1 "^ +1  PAN$" -- "$sq" scn "$sc/typo.scn"
 printf '00:00:00.00>CRE KL204 B744 52 4 90 FL200 250\n00:00:10.00>KL204 ALT FL9X\n' > "$sc/late.scn"
-expect "scn runtime failure line" 1 "late.scn:2: t=10 s: KL204 ALT FL9X: " -- "$sq" scn "$sc/late.scn"
+expect "scn runtime failure line" 1 "t=10 s: .*late.scn:2: KL204 ALT FL9X: " -- "$sq" scn "$sc/late.scn"
 expect "scn lua scenario" 2 "horizontal_cr.lua is a Lua conflict-resolution scenario: .squawk train., .squawk eval. and .squawk table3. take it" -- "$sq" scn scenarios/horizontal_cr.lua
 expect "repl lua scenario" 1 "horizontal_cr.lua is a Lua conflict-resolution scenario" -- "$sq" repl scenarios/horizontal_cr.lua
 expect "scn folder" 2 "docs is a folder; expected one FILE.scn \(.squawk scn docs --conformance. runs every .scn under it\)" -- "$sq" scn docs
-cp scenarios/demo_conflict.scn "$sc/"
+cp scenarios/demo_conflict.scn "$sc/"  # beside typo.scn and late.scn: three .scn files
 printf 'not a scenario\n' > "$sc/README.md"
-expect "conformance reads .scn only" 0 "^\| 1 \| 1 \| 1 \|" -- "$sq" scn "$sc" --conformance
+expect "conformance reads .scn only" 0 "^\| 3 \| 3 \| 3 \|" -- "$sq" scn "$sc" --conformance
 rm -rf "$sc"
+
+# LLM configuration errors name the variable and what is wrong; single and
+# multi modes refuse without a server in translate as in eval-translate.
+nollm=(env -u SQUAWK_LLM_URL -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API "$sq")
+expect "translate multi no server" 1 "--mode multi needs an LLM server: set SQUAWK_LLM_URL" -- "${nollm[@]}" translate "KL204 climb FL300" --mode multi
+expect "eval-translate single no server" 1 "--mode single needs an LLM server: set SQUAWK_LLM_URL" -- "${nollm[@]}" eval-translate tests/data/translate_heldout.tsv --mode single
+expect "llm no model" 2 "LLM at http://127.0.0.1:9: no model named: set SQUAWK_LLM_MODEL" -- env -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API SQUAWK_LLM_URL=http://127.0.0.1:9 "$sq" llm chat hi
+expect "translate no model" 1 "SQUAWK_LLM_\\*: LLM at http://127.0.0.1:9: no model named" -- env -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API SQUAWK_LLM_URL=http://127.0.0.1:9 "$sq" translate "KL204 climb FL300" --mode single
+expect "llm no server" 2 "no LLM server named: set SQUAWK_LLM_URL" -- "${nollm[@]}" llm chat hi
+expect "llm unreachable" 1 "Couldn't connect to server" -- env -u SQUAWK_LLM_API SQUAWK_LLM_URL=http://127.0.0.1:9 SQUAWK_LLM_MODEL=m "$sq" llm chat hi --timeout 5
+once=$("$sq" translate "KLM one two three, climb flight level three five zero" 2>/dev/null)
+[ -z "$once" ] && { echo "ok   a translation failure is said once (stderr)"; pass=$((pass + 1)); } || { echo "FAIL translate failure on stdout too: $once"; fails=$((fails + 1)); }
 
 # `help CMD` documents every flag the parser of CMD accepts (the parser lists
 # them when it meets an unknown one), and every flag on its usage lines parses;

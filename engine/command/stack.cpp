@@ -187,8 +187,8 @@ void Stack::run_queued(const Queued& q) {
     auto r = run_command(cmd, true, &skipped);
     if (!r) {
       ++tally_.failed[reason_key(text::trim(cmd), r.status().message(), sim_.traffic())];
-      std::string msg = (q.where.empty() ? "" : q.where + ": ") + "t=" + text::fmt_double(sim_.simt(), 2) +
-                        " s: " + r.status().message();
+      std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + (q.where.empty() ? "" : q.where + ": ") +
+                        r.status().message();
       if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
       output_.push_back(std::move(msg));
       continue;
@@ -223,7 +223,7 @@ void Stack::process_due() {
 
 void Stack::record_failure(const std::string& what) {
   if (++tally_.failed[what.substr(0, what.find(" ("))] > 10) return;  // counted, not repeated
-  std::string msg = (where_.empty() ? "" : where_ + ": ") + "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + what;
+  std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + (where_.empty() ? "" : where_ + ": ") + what;
   if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
   output_.push_back(std::move(msg));
 }

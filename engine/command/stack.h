@@ -76,7 +76,7 @@ struct Condition {
 // A command line waiting in the queue, with the scenario line it came from.
 struct Queued {
   std::string line;
-  std::string where;  // "file:line" ("" for a typed command); failures are reported there
+  std::string where;  // "file:line" ("" for a typed command); a failure reads "t=T s: file:line: message"
 };
 
 class Stack {
