@@ -120,6 +120,12 @@ expect "one path: tsv"       1 "one path check" -- "${h[@]}" translate --tsv tes
 expect "one path: demo"      1 "one path check" -- "${h[@]}" demo --quiet
 expect "one path: run"       1 "one path check" -- "${h[@]}" run "$home/run.lua"
 expect "one path: repl"      1 "one path check" -- "${h[@]}" repl
+# The REPL still starts without its translator: one line says why, ! TrafScript runs.
+broken=$(printf '!CRE KL1 A320 52 4 90 FL200 250\n!KL1 ALT FL300\nKL1 climb FL310\n' | "${h[@]}" repl scenarios/demo_conflict.scn 2>&1)
+grep -q "the translator did not load (.*graph.lua:1: one path check); only !TrafScript works" <<<"$broken" &&
+  grep -q "ok: KL1 ALT FL300" <<<"$broken" && grep -q "English needs the translator" <<<"$broken" &&
+  [ "$(grep -c "stack traceback" <<<"$broken")" -eq 0 ] && { echo "ok   repl without its translator"; pass=$((pass + 1)); } ||
+  { echo "FAIL repl without its translator: $broken"; fails=$((fails + 1)); }
 rm -rf "$home"
 expect "translate"       0 "^ALT KL204 FL300$" -- "$sq" translate "KL204 climb FL300" --setup "CRE KL204 A320 52 4 90 FL250 280"
 expect "translate asks"  0 "What altitude should KL204" -- "$sq" translate "KL204 descend" --setup "CRE KL204 A320 52 4 90 FL250 280"
