@@ -19,6 +19,10 @@ expect "args"            0 "^2	a	b$" -- "$sq" run "$d/args.lua" a b
 expect "sandbox"         1 "os.execute is not allowed in the sandbox; run squawk with --unsafe" -- "$sq" run "$d/execute.lua"
 expect "unsafe"          0 "^executed$" -- "$sq" run "$d/execute.lua" --unsafe
 expect "module line"     1 "mod.lua:7: value too large: 6" -- "$sq" run "$d/module/main.lua"
+# Lua errors: `file:line: message` everywhere; the traceback only with --verbose.
+[ "$("$sq" run "$d/module/main.lua" 2>&1 | wc -l)" -eq 1 ] && { echo "ok   no traceback by default"; pass=$((pass + 1)); } || { echo "FAIL traceback shown without --verbose"; fails=$((fails + 1)); }
+expect "--verbose traceback" 1 "in function 'mod.run'" -- "$sq" run --verbose "$d/module/main.lua"
+expect "eval lua error"  1 "^squawk: .*module/mod.lua:7: value too large: 6$" -- "$sq" eval "$d/module/main.lua" --policy zero
 expect "runaway"         1 "stopped: the script ran .* Lua instructions" -- "$sq" run "$d/runaway.lua"
 expect "test totals"     1 "^1 passed, 1 failed$" -- "$sq" test "$d/pass_fail"
 expect "test location"   1 "fail.lua:1: check failed: got 4, want 5 \(arithmetic\)" -- "$sq" test "$d/pass_fail"

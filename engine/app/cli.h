@@ -57,6 +57,13 @@ struct Subcommand {
 };
 const std::vector<Subcommand>& subcommands();
 
+// --verbose, accepted by every subcommand (run_cli removes it): Lua errors
+// keep their traceback. Without it an error shows as `file:line: message`.
+void set_verbose(bool on);
+// `message` as the user sees it: without the Lua traceback ("\nstack
+// traceback:" and after) unless --verbose was given.
+std::string shown_error(const std::string& message);
+
 // Prints "squawk NAME: message" plus a hint to stderr and returns kExitUsage.
 int usage_error(const std::string& subcommand, const std::string& message);
 // Prints "squawk: message" to stderr and returns kExitFail.

@@ -65,7 +65,7 @@ class WallClock {
 bool reply_to(script::ReplSession& session, const std::string& line, int& status) {
   auto reply = session.handle(line);
   if (!reply) {
-    std::fprintf(stderr, "%s\n", reply.status().message().c_str());
+    std::fprintf(stderr, "%s\n", shown_error(reply.status().message()).c_str());
     status = kExitFail;
     return true;
   }
@@ -76,7 +76,7 @@ bool reply_to(script::ReplSession& session, const std::string& line, int& status
 
 void print_tick(script::ReplSession& session, double wall_s) {
   auto text = session.tick(wall_s);
-  if (!text) std::fprintf(stderr, "%s\n", text.status().message().c_str());
+  if (!text) std::fprintf(stderr, "%s\n", shown_error(text.status().message()).c_str());
   else if (!text->empty()) std::printf("%s\n", text->c_str());
 }
 
@@ -168,15 +168,12 @@ int run_terminal(script::ReplSession& session) {
   return term.status;
 }
 
-// The first line of a Lua error (file:line: message), without the traceback.
-std::string first_line(const std::string& message) { return message.substr(0, message.find('\n')); }
-
 // The session when the REPL's Lua (the translation graph, its grammar) does
 // not load: the scenario on a bare command stack, `!CMD` run as typed, English
 // refused with the reason. Exit 1 at the end: the session was degraded.
 int run_trafscript_only(const std::string& scenario, const script::VmOptions& o, const Status& why) {
   std::fprintf(stderr, "squawk repl: the translator did not load (%s); only !TrafScript works in this session\n",
-               first_line(why.message()).c_str());
+               shown_error(why.message()).c_str());
   command::Stack stack(o.seed);
   if (!o.navdata_dir.empty()) {
     auto db = command::NavDb::load_cached(o.navdata_dir);

@@ -88,6 +88,7 @@ int cmd_translate(const ArgV& argv) {
     stack.set_navdb(*db);
   }
   if (auto scn = args->get("--scenario")) {
+    if (Status st = check_scn_file(*scn, false); !st.is_ok()) return usage_error("translate", "--scenario: " + st.message());
     Status st = stack.load_scenario(*scn);
     if (!st.is_ok()) return failure(st);
     stack.process_due();
