@@ -64,6 +64,8 @@ no_wall() { cut -d, -f1,2,4- "$1"; }
   || { echo "FAIL gpt2 training evaluation seed: $(tail -1 "$pt/run/log.csv") / $(tail -1 "$pt/val/log.csv") / $(tail -1 "$pt/evalseed/log.csv")"; fails=$((fails + 1)); }
 expect "bad validation seed" 2 "--validation-seed: expected a seed >= 0, got -1" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --validation-seed -1 --out "$pt/badval"
 expect "eval lookahead"  0 "success" -- "$sq" eval scenarios/horizontal_cr.lua --policy lookahead --episodes 20
+out=$("$sq" eval scenarios/horizontal_cr_gym.lua --policy mlp --episodes 2 2>&1)
+[ "$(grep -c "was trained on" <<<"$out")" -eq 1 ] && { echo "ok   eval warning said once"; pass=$((pass + 1)); } || { echo "FAIL eval warning count: $out"; fails=$((fails + 1)); }
 expect "lookahead gym"   2 "plans under the paper rules only" -- "$sq" eval scenarios/horizontal_cr_gym.lua --policy lookahead --episodes 2
 expect "rollout no head" 2 "zero has no discrete action head" -- "$sq" eval scenarios/horizontal_cr.lua --policy rollout:zero --episodes 2
 expect "vine gaussian"   2 "needs a discrete action head" -- "$sq" train scenarios/horizontal_cr_gym.lua --policy mlp --estimator vine --episodes 8 --out "$tmp/vine"
