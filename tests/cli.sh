@@ -193,6 +193,12 @@ expect "resume and force" 2 "--resume and --force contradict" -- "$sq" train --o
 expect "resume from run.json" 0 "^done: 256 episodes" -- "$sq" train --out "$ow/m" --resume
 "$sq" train scenarios/horizontal_cr.lua --out "$ow/full" --episodes 256 --eval-every 128 --eval-episodes 4 --quiet
 cmp -s <(tail -n +3 "$ow/m/policy.ckpt") <(tail -n +3 "$ow/full/policy.ckpt") && { echo "ok   bare --resume = the uninterrupted run"; pass=$((pass + 1)); } || { echo "FAIL bare --resume differs"; fails=$((fails + 1)); }
+# --override: a recipe's next stage continues the checkpoint with new flags.
+"$sq" train scenarios/horizontal_cr.lua --out "$ow/v" --episodes 256 --eval-every 128 --eval-episodes 4 --stop-at 128 --quiet
+expect "resume --override" 0 "^done: 256 episodes" -- "$sq" train scenarios/horizontal_cr.lua --out "$ow/v" --episodes 256 --eval-every 128 --eval-episodes 4 --lr 1e-4 --resume --override
+grep -q '"--lr": "1e-4"' "$ow/v/run.json" && ! cmp -s <(tail -n +3 "$ow/v/policy.ckpt") <(tail -n +3 "$ow/full/policy.ckpt") &&
+  { echo "ok   --override trains on with the new flags, run.json records them"; pass=$((pass + 1)); } || { echo "FAIL --override: $(cat "$ow/v/run.json")"; fails=$((fails + 1)); }
+expect "override needs resume" 2 "--override goes with --resume" -- "$sq" train scenarios/horizontal_cr.lua --out "$ow/o" --override
 expect "train --force" 0 "^done: 64 episodes" -- "$sq" train scenarios/horizontal_cr.lua --out "$ow/m" --episodes 64 --eval-every 64 --eval-episodes 4 --force
 [ "$(wc -l < "$ow/m/log.csv")" -eq 2 ] && grep -q '"--episodes": "64"' "$ow/m/run.json" && { echo "ok   --force starts over"; pass=$((pass + 1)); } || { echo "FAIL --force"; fails=$((fails + 1)); }
 # render, plot and table3 --csv replace their own output, nothing else.

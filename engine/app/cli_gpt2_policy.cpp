@@ -32,7 +32,7 @@ constexpr double kFolderLr = 1e-5;
 Args::Spec train_flags(bool gpt2) {
   std::vector<std::string> values = learner_flags();
   values.push_back("--policy");
-  std::vector<std::string> bools = {"--resume", "--force", "--quiet", "--mirror"};
+  std::vector<std::string> bools = {"--resume", "--override", "--force", "--quiet", "--mirror"};
   if (gpt2) {
     values.push_back("--init");
     values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());

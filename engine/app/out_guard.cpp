@@ -24,7 +24,7 @@ constexpr size_t kRunMarkers = 4;
 // Flags that choose where a run writes, how it talks or how far this session
 // goes, not what the run computes: they may differ between a run and its --resume.
 bool shapes_run(const std::string& flag) {
-  static const std::vector<std::string> free = {"--out",       "--resume",     "--force",
+  static const std::vector<std::string> free = {"--out",       "--resume",     "--force",     "--override",
                                                 "--quiet",     "--stop-at",    "--max-seconds",
                                                 "--max-instructions", "--allow-read", "--navdata",
                                                 "--unsafe"};
@@ -55,6 +55,8 @@ Result<ArgV> resolve_train_argv(const ArgV& argv, const Args::Spec& spec) {
   const std::string dir = *args->get("--out");
   const bool resume = args->has("--resume"), force = args->has("--force");
   if (resume && force) return Status::invalid("--resume and --force contradict each other: choose one");
+  if (args->has("--override") && !resume)
+    return Status::invalid("--override goes with --resume (it replaces the flags of a run that continues)");
   std::vector<std::string> found;
   for (size_t k = 0; k < kRunMarkers; ++k)
     if (files::exists(dir + "/" + kRunFiles[k])) found.emplace_back(kRunFiles[k]);
@@ -71,6 +73,7 @@ Result<ArgV> resolve_train_argv(const ArgV& argv, const Args::Spec& spec) {
     return Status::invalid("--out " + dir + " already holds a run (" + text::join(found, ", ") +
                            "): --resume continues it, --force deletes it and starts over, or choose another --out");
   const std::string record_path = dir + "/run.json";
+  if (args->has("--override")) return argv;  // the flags given now replace run.json (open_run_folder)
   if (!files::exists(record_path)) {
     std::fprintf(stderr, "squawk train: note: %s has no run.json (a run from an older squawk): the flags given now "
                  "set the rest of the run\n", dir.c_str());
@@ -88,7 +91,8 @@ Result<ArgV> resolve_train_argv(const ArgV& argv, const Args::Spec& spec) {
     recorded[name] = value.get<std::string>();
   }
   const std::string hint = "; --resume continues the run with the settings in " + record_path +
-                           " (drop the flag, or train into another --out)";
+                           " (drop the flag; or add --override to continue the checkpoint with the flags given now, "
+                           "a recipe's next stage; or train into another --out)";
   if (args->positional().size() > 1) return argv;  // the learner reports it
   if (args->positional().size() == 1 && canonical(args->positional()[0]) != canonical(scenario))
     return Status::invalid("--resume: scenario " + args->positional()[0] + " is not the run's " + scenario + hint);

@@ -21,7 +21,9 @@ namespace squawk::app {
 // - --resume with DIR/run.json: ARGV becomes the scenario and flags the run
 //   started with plus the flags that do not shape a run (--quiet, --stop-at,
 //   the VM's limits and paths) given now. Error naming the flag when one given
-//   now contradicts the record or shapes the run but was not given at its start.
+//   now contradicts the record or shapes the run but was not given at its start;
+// - --resume --override: ARGV unchanged (the flags given now replace the
+//   record: a recipe's next stage); --override without --resume is an error.
 // The error message is what the user sees after "squawk train: ".
 Result<ArgV> resolve_train_argv(const ArgV& argv, const Args::Spec& spec);
 

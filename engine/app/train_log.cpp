@@ -35,7 +35,7 @@ Result<RunFolder> open_run_folder(const std::string& dir, const Args& args) {
   SQUAWK_RETURN_IF_ERROR(files::make_dirs(dir));
   RunFolder run{dir + "/checkpoint.ckpt", dir + "/log.csv", false};
   run.resuming = args.has("--resume") && files::exists(run.checkpoint);
-  if (!run.resuming) SQUAWK_RETURN_IF_ERROR(record_run(dir, args));
+  if (!run.resuming || args.has("--override")) SQUAWK_RETURN_IF_ERROR(record_run(dir, args));
   return run;
 }
 

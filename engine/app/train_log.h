@@ -23,7 +23,8 @@ struct RunFolder {
 };
 
 // Creates DIR when missing. A run that starts now (no --resume, or nothing
-// to resume) records its settings in DIR/run.json (out_guard.h); `args` are
+// to resume), or one resumed with --override, records its settings in
+// DIR/run.json (out_guard.h); `args` are
 // the learner's parsed flags, already passed through resolve_train_argv.
 Result<RunFolder> open_run_folder(const std::string& dir, const Args& args);
 
