@@ -126,6 +126,9 @@ expect "one path: tsv"       1 "one path check" -- "${h[@]}" translate --tsv tes
 expect "one path: demo"      1 "one path check" -- "${h[@]}" demo --quiet
 expect "one path: run"       1 "one path check" -- "${h[@]}" run "$home/run.lua"
 expect "one path: repl"      1 "one path check" -- "${h[@]}" repl
+nav=$(printf '!CRE KL1 A320 52 4 90 FL200 250\n' | "$sq" repl scenarios/demo_conflict.scn --navdata /nonexistent 2>&1)
+grep -q "cannot open '/nonexistent/airports.dat'.*only !TrafScript works" <<<"$nav" && grep -q "ok: CRE KL1" <<<"$nav" &&
+  { echo "ok   repl without navdata"; pass=$((pass + 1)); } || { echo "FAIL repl without navdata: $nav"; fails=$((fails + 1)); }
 # The REPL still starts without its translator: one line says why, ! TrafScript runs.
 broken=$(printf '!CRE KL1 A320 52 4 90 FL200 250\n!KL1 ALT FL300\nKL1 climb FL310\n' | "${h[@]}" repl scenarios/demo_conflict.scn 2>&1)
 grep -q "the translator did not load (.*graph.lua:1: one path check); only !TrafScript works" <<<"$broken" &&
