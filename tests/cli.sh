@@ -40,6 +40,7 @@ expect "train mlp gamma"    2 "train gamma must lie in" -- "$sq" train scenarios
 pt="$tmp/pretrained"
 expect "gpt2 pretrain"   0 "wrote $pt" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --episodes 8 --steps 6 --log-every 3 --holdout 16
 awk -F, 'NR == 2 { a = $5 } NR == 3 { b = $5 } END { exit !(NR == 3 && b < a) }' "$pt/pretrain.csv" && { echo "ok   pretrain held-out loss falls"; pass=$((pass + 1)); } || { echo "FAIL pretrain loss"; fails=$((fails + 1)); }
+expect "pretrain refuses a model" 2 "pretrain: $pt already holds model.safetensors, pretrain.csv: --force replaces it" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --episodes 8 --steps 6
 expect "pretrain bad steps" 2 "--steps expects a positive integer" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --steps 0
 # With --readout a linear probe also reads the observation from the last token: two more columns, and its held-out error falls
 expect "pretrain readout" 0 "read-out mse" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$tmp/pt_ro" --episodes 8 --steps 12 --log-every 6 --batch 8 --holdout 16 --readout 1
@@ -47,6 +48,7 @@ awk -F, 'NR == 1 { h = $7 } NR == 2 { a = $7 } NR == 3 { b = $7 } END { exit !(N
 expect "pretrain bad readout" 2 "--readout expects a weight in \[0, 1000\]" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --readout -1
 # Imitation (a labelled experiment): the pretrained model clones the shipped mirror MLP; eval reads the result
 expect "gpt2 imitate"    0 "epoch 2: held-out agreement" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua "$pt/imitate.ckpt" --model "$pt" --mirror --train-embeddings --blocks 2 --episodes 4 --epochs 2 --batch 8 --holdout 2 --envs 4
+expect "imitate refuses a checkpoint" 2 "imitate: $pt/imitate.ckpt exists: --force replaces it" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua "$pt/imitate.ckpt" --model "$pt"
 expect "eval imitation"  0 "mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/imitate.ckpt" --episodes 2
 expect "imitate bad teacher" 1 "nope.ckpt" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua "$pt/x.ckpt" --model "$pt" --teacher "$tmp/nope.ckpt"
 expect "imitate no out"  2 "imitate expects SCENARIO.lua OUT.ckpt" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua

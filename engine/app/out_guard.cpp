@@ -131,4 +131,14 @@ Status check_overwrite(const std::string& path, const std::string& own_prefix, b
   return Status::invalid(path + " exists and is not a file this command wrote; --force replaces it");
 }
 
+Status check_absent(const std::string& target, const std::vector<std::string>& names, bool force) {
+  if (force) return Status::ok();
+  std::vector<std::string> found;
+  for (const auto& f : names)
+    if (files::exists(f)) found.push_back(fs::path(f).filename().string());
+  if (found.empty()) return Status::ok();
+  const std::string what = names.size() == 1 && names[0] == target ? " exists" : " already holds " + text::join(found, ", ");
+  return Status::invalid(target + what + ": --force replaces it, or choose another name");
+}
+
 }  // namespace squawk::app

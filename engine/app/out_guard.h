@@ -37,4 +37,9 @@ Status record_run(const std::string& dir, const Args& args);
 // Error otherwise, naming the file and --force; and when `path` is a folder.
 Status check_overwrite(const std::string& path, const std::string& own_prefix, bool force);
 
+// A command that writes `target` (a file, or a folder whose `files` it
+// writes) may when none of them exists or --force was given. Error naming
+// `target`, the files found and --force otherwise.
+Status check_absent(const std::string& target, const std::vector<std::string>& files, bool force);
+
 }  // namespace squawk::app
