@@ -19,6 +19,10 @@ expect "args"            0 "^2	a	b$" -- "$sq" run "$d/args.lua" a b
 expect "sandbox"         1 "os.execute is not allowed in the sandbox; run squawk with --unsafe" -- "$sq" run "$d/execute.lua"
 expect "unsafe"          0 "^executed$" -- "$sq" run "$d/execute.lua" --unsafe
 expect "module line"     1 "mod.lua:7: value too large: 6" -- "$sq" run "$d/module/main.lua"
+# Lua errors: `file:line: message` everywhere; the traceback only with --verbose.
+[ "$("$sq" run "$d/module/main.lua" 2>&1 | wc -l)" -eq 1 ] && { echo "ok   no traceback by default"; pass=$((pass + 1)); } || { echo "FAIL traceback shown without --verbose"; fails=$((fails + 1)); }
+expect "--verbose traceback" 1 "in function 'mod.run'" -- "$sq" run --verbose "$d/module/main.lua"
+expect "eval lua error"  1 "^squawk: .*module/mod.lua:7: value too large: 6$" -- "$sq" eval "$d/module/main.lua" --policy zero
 expect "runaway"         1 "stopped: the script ran .* Lua instructions" -- "$sq" run "$d/runaway.lua"
 expect "test totals"     1 "^1 passed, 1 failed$" -- "$sq" test "$d/pass_fail"
 expect "test location"   1 "fail.lua:1: check failed: got 4, want 5 \(arithmetic\)" -- "$sq" test "$d/pass_fail"
@@ -36,6 +40,7 @@ expect "train mlp gamma"    2 "train gamma must lie in" -- "$sq" train scenarios
 pt="$tmp/pretrained"
 expect "gpt2 pretrain"   0 "wrote $pt" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --episodes 8 --steps 6 --log-every 3 --holdout 16
 awk -F, 'NR == 2 { a = $5 } NR == 3 { b = $5 } END { exit !(NR == 3 && b < a) }' "$pt/pretrain.csv" && { echo "ok   pretrain held-out loss falls"; pass=$((pass + 1)); } || { echo "FAIL pretrain loss"; fails=$((fails + 1)); }
+expect "pretrain refuses a model" 2 "pretrain: $pt already holds model.safetensors, pretrain.csv: --force replaces it" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --episodes 8 --steps 6
 expect "pretrain bad steps" 2 "--steps expects a positive integer" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --steps 0
 # With --readout a linear probe also reads the observation from the last token: two more columns, and its held-out error falls
 expect "pretrain readout" 0 "read-out mse" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$tmp/pt_ro" --episodes 8 --steps 12 --log-every 6 --batch 8 --holdout 16 --readout 1
@@ -43,6 +48,7 @@ awk -F, 'NR == 1 { h = $7 } NR == 2 { a = $7 } NR == 3 { b = $7 } END { exit !(N
 expect "pretrain bad readout" 2 "--readout expects a weight in \[0, 1000\]" -- "$sq" gpt2 pretrain scenarios/horizontal_cr.lua "$pt" --readout -1
 # Imitation (a labelled experiment): the pretrained model clones the shipped mirror MLP; eval reads the result
 expect "gpt2 imitate"    0 "epoch 2: held-out agreement" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua "$pt/imitate.ckpt" --model "$pt" --mirror --train-embeddings --blocks 2 --episodes 4 --epochs 2 --batch 8 --holdout 2 --envs 4
+expect "imitate refuses a checkpoint" 2 "imitate: $pt/imitate.ckpt exists: --force replaces it" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua "$pt/imitate.ckpt" --model "$pt"
 expect "eval imitation"  0 "mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$pt/imitate.ckpt" --episodes 2
 expect "imitate bad teacher" 1 "nope.ckpt" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua "$pt/x.ckpt" --model "$pt" --teacher "$tmp/nope.ckpt"
 expect "imitate no out"  2 "imitate expects SCENARIO.lua OUT.ckpt" -- "$sq" gpt2 imitate scenarios/horizontal_cr.lua
@@ -60,6 +66,8 @@ no_wall() { cut -d, -f1,2,4- "$1"; }
   || { echo "FAIL gpt2 training evaluation seed: $(tail -1 "$pt/run/log.csv") / $(tail -1 "$pt/val/log.csv") / $(tail -1 "$pt/evalseed/log.csv")"; fails=$((fails + 1)); }
 expect "bad validation seed" 2 "--validation-seed: expected a seed >= 0, got -1" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --validation-seed -1 --out "$pt/badval"
 expect "eval lookahead"  0 "success" -- "$sq" eval scenarios/horizontal_cr.lua --policy lookahead --episodes 20
+out=$("$sq" eval scenarios/horizontal_cr_gym.lua --policy mlp --episodes 2 2>&1)
+[ "$(grep -c "was trained on" <<<"$out")" -eq 1 ] && { echo "ok   eval warning said once"; pass=$((pass + 1)); } || { echo "FAIL eval warning count: $out"; fails=$((fails + 1)); }
 expect "lookahead gym"   2 "plans under the paper rules only" -- "$sq" eval scenarios/horizontal_cr_gym.lua --policy lookahead --episodes 2
 expect "rollout no head" 2 "zero has no discrete action head" -- "$sq" eval scenarios/horizontal_cr.lua --policy rollout:zero --episodes 2
 expect "vine gaussian"   2 "needs a discrete action head" -- "$sq" train scenarios/horizontal_cr_gym.lua --policy mlp --estimator vine --episodes 8 --out "$tmp/vine"
@@ -68,7 +76,7 @@ expect "vine gaussian"   2 "needs a discrete action head" -- "$sq" train scenari
 mir="$tmp/mirror"
 expect "train mlp mirror"  0 "done: 64 episodes" -- "$sq" train scenarios/horizontal_cr.lua --mirror --episodes 64 --eval-every 64 --eval-episodes 4 --out "$mir/mlp"
 expect "eval mirror"       0 "mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy mlp --checkpoint "$mir/mlp/policy.ckpt" --episodes 2
-expect "resume mirror"     1 "with mirror symmetry, but this run asks for none" -- "$sq" train scenarios/horizontal_cr.lua --episodes 128 --eval-every 64 --eval-episodes 4 --out "$mir/mlp" --resume
+expect "resume contradicts" 2 "--resume: --episodes 128 contradicts the run's --episodes 64; .*run.json" -- "$sq" train scenarios/horizontal_cr.lua --episodes 128 --eval-every 64 --eval-episodes 4 --out "$mir/mlp" --resume
 expect "mirror gym"        2 "--mirror: mirror symmetry needs a constant ownship speed, but speed_cap 89" -- "$sq" train scenarios/horizontal_cr_gym.lua --mirror --episodes 8 --out "$mir/gym"
 expect "train gpt2 mirror" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --mirror --train-embeddings --blocks 2 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$mir/gpt2"
 expect "eval gpt2 mirror"  0 "head action, mirror-symmetric" -- "$sq" eval scenarios/horizontal_cr.lua --policy gpt2 --checkpoint "$mir/gpt2/checkpoint.ckpt" --episodes 2
@@ -120,6 +128,15 @@ expect "one path: tsv"       1 "one path check" -- "${h[@]}" translate --tsv tes
 expect "one path: demo"      1 "one path check" -- "${h[@]}" demo --quiet
 expect "one path: run"       1 "one path check" -- "${h[@]}" run "$home/run.lua"
 expect "one path: repl"      1 "one path check" -- "${h[@]}" repl
+nav=$(printf '!CRE KL1 A320 52 4 90 FL200 250\n' | "$sq" repl scenarios/demo_conflict.scn --navdata /nonexistent 2>&1)
+grep -q "cannot open '/nonexistent/airports.dat'.*only !TrafScript works" <<<"$nav" && grep -q "ok: CRE KL1" <<<"$nav" &&
+  { echo "ok   repl without navdata"; pass=$((pass + 1)); } || { echo "FAIL repl without navdata: $nav"; fails=$((fails + 1)); }
+# The REPL still starts without its translator: one line says why, ! TrafScript runs.
+broken=$(printf '!CRE KL1 A320 52 4 90 FL200 250\n!KL1 ALT FL300\nKL1 climb FL310\n' | "${h[@]}" repl scenarios/demo_conflict.scn 2>&1)
+grep -q "the translator did not load (.*graph.lua:1: one path check); only !TrafScript works" <<<"$broken" &&
+  grep -q "ok: KL1 ALT FL300" <<<"$broken" && grep -q "English needs the translator" <<<"$broken" &&
+  [ "$(grep -c "stack traceback" <<<"$broken")" -eq 0 ] && { echo "ok   repl without its translator"; pass=$((pass + 1)); } ||
+  { echo "FAIL repl without its translator: $broken"; fails=$((fails + 1)); }
 rm -rf "$home"
 expect "translate"       0 "^ALT KL204 FL300$" -- "$sq" translate "KL204 climb FL300" --setup "CRE KL204 A320 52 4 90 FL250 280"
 expect "translate asks"  0 "What altitude should KL204" -- "$sq" translate "KL204 descend" --setup "CRE KL204 A320 52 4 90 FL250 280"
@@ -150,7 +167,7 @@ if cmp -s <(cut -d, -f1,2,4- "$sig/a/log.csv") <(cut -d, -f1,2,4- "$sig/b/log.cs
    [ "$(wc -l < "$sig/b/log.csv")" -eq 9 ]; then
   echo "ok   resumed log"; pass=$((pass + 1))
 else echo "FAIL resumed log: $(cat "$sig/a/log.csv")"; fails=$((fails + 1)); fi
-expect "resume other seed" 1 "checkpoint .*/b/checkpoint.ckpt was trained with seed [0-9]+, not 9" -- \
+expect "resume other seed" 2 "--resume: --seed 9 was not given when the run started" -- \
   "$sq" train scenarios/horizontal_cr.lua --out "$sig/b" --episodes 4000 --seed 9 --resume
 # --stop-at ends a run early (at the end of the update that reaches it: 32 x 64)
 # on the same schedules: resumed, it matches the
@@ -164,5 +181,92 @@ if [ "$src" -eq 0 ] && grep -q "4000 episodes, stopping at 2000" "$sig/s.log" &&
 else echo "FAIL train --stop-at + resume: rc=$src, $(cat "$sig/s.log")"; fails=$((fails + 1)); fi
 expect "stop-at range" 2 "train --stop-at 9: expected 1..8 \\(--episodes\\)" -- "$sq" train scenarios/horizontal_cr.lua --out "$sig/r" --episodes 8 --stop-at 9
 rm -rf "$sig"
+
+# Nothing is overwritten by accident: a folder that holds a run is refused
+# unless --resume or --force; --resume takes the run's settings from DIR/run.json
+# (no scenario, no flags needed) and refuses a flag that contradicts them.
+ow=$(mktemp -d)
+"$sq" train scenarios/horizontal_cr.lua --out "$ow/m" --episodes 256 --eval-every 128 --eval-episodes 4 --stop-at 128 --quiet
+rows=$(wc -l < "$ow/m/log.csv")
+expect "train refuses a run folder" 2 "--out $ow/m already holds a run \(checkpoint.ckpt, log.csv, best.ckpt, policy.ckpt\): --resume continues it, --force" -- \
+  "$sq" train scenarios/horizontal_cr.lua --out "$ow/m" --episodes 64
+[ "$(wc -l < "$ow/m/log.csv")" -eq "$rows" ] && { echo "ok   refused run keeps its log"; pass=$((pass + 1)); } || { echo "FAIL refused run changed its log"; fails=$((fails + 1)); }
+expect "gpt2 refuses a run folder" 2 "already holds a run" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --out "$ow/m" --episodes 8
+expect "resume contradicting lr" 2 "--resume: --lr 0.1 was not given when the run started" -- "$sq" train --out "$ow/m" --resume --lr 0.1
+expect "resume other scenario" 2 "--resume: scenario scenarios/horizontal_cr_gym.lua is not the run's" -- "$sq" train scenarios/horizontal_cr_gym.lua --out "$ow/m" --resume
+expect "resume and force" 2 "--resume and --force contradict" -- "$sq" train --out "$ow/m" --resume --force
+expect "resume from run.json" 0 "^done: 256 episodes" -- "$sq" train --out "$ow/m" --resume
+"$sq" train scenarios/horizontal_cr.lua --out "$ow/full" --episodes 256 --eval-every 128 --eval-episodes 4 --quiet
+cmp -s <(tail -n +3 "$ow/m/policy.ckpt") <(tail -n +3 "$ow/full/policy.ckpt") && { echo "ok   bare --resume = the uninterrupted run"; pass=$((pass + 1)); } || { echo "FAIL bare --resume differs"; fails=$((fails + 1)); }
+# --override: a recipe's next stage continues the checkpoint with new flags.
+"$sq" train scenarios/horizontal_cr.lua --out "$ow/v" --episodes 256 --eval-every 128 --eval-episodes 4 --stop-at 128 --quiet
+expect "resume --override" 0 "^done: 256 episodes" -- "$sq" train scenarios/horizontal_cr.lua --out "$ow/v" --episodes 256 --eval-every 128 --eval-episodes 4 --lr 1e-4 --resume --override
+grep -q '"--lr": "1e-4"' "$ow/v/run.json" && ! cmp -s <(tail -n +3 "$ow/v/policy.ckpt") <(tail -n +3 "$ow/full/policy.ckpt") &&
+  { echo "ok   --override trains on with the new flags, run.json records them"; pass=$((pass + 1)); } || { echo "FAIL --override: $(cat "$ow/v/run.json")"; fails=$((fails + 1)); }
+expect "override needs resume" 2 "--override goes with --resume" -- "$sq" train scenarios/horizontal_cr.lua --out "$ow/o" --override
+expect "train --force" 0 "^done: 64 episodes" -- "$sq" train scenarios/horizontal_cr.lua --out "$ow/m" --episodes 64 --eval-every 64 --eval-episodes 4 --force
+[ "$(wc -l < "$ow/m/log.csv")" -eq 2 ] && grep -q '"--episodes": "64"' "$ow/m/run.json" && { echo "ok   --force starts over"; pass=$((pass + 1)); } || { echo "FAIL --force"; fails=$((fails + 1)); }
+# render, plot and table3 --csv replace their own output, nothing else.
+expect "render refuses a log" 2 "$ow/m/log.csv exists and is not a file this command wrote; --force replaces it" -- "$sq" render docs/demo_episode.jsonl --out "$ow/m/log.csv"
+expect "plot refuses a log"   2 "log.csv exists and is not a file this command wrote" -- "$sq" plot "$ow/m" --out "$ow/m/log.csv"
+expect "table3 refuses a log" 2 "--csv: .*log.csv exists and is not a file this command wrote" -- "$sq" table3 scenarios/horizontal_cr.lua --csv "$ow/m/log.csv"
+expect "render twice"   0 "wrote" -- "$sq" render docs/demo_episode.jsonl --out "$ow/e.svg"
+expect "render again"   0 "wrote" -- "$sq" render docs/demo_episode.jsonl --out "$ow/e.svg"
+printf 'notes\n' > "$ow/notes.svg"
+expect "render --force" 0 "wrote" -- "$sq" render docs/demo_episode.jsonl --out "$ow/notes.svg" --force
+expect "plot into a folder" 2 "is a folder; expected a file name" -- "$sq" plot "$ow/m" --out "$ow/m"
+rm -rf "$ow"
+
+# Errors name the place and the fix: a .scn typo fails at file:line with the
+# closest command; display-only BlueSky commands stay a listed skip; a Lua
+# conflict-resolution scenario or a folder given where a .scn belongs says so.
+sc=$(mktemp -d)
+printf '# a typo\n00:00:00.00>CRE KL204 B744 52 4 90 FL200 250\n00:00:00.00>PAN 52 4\n00:00:05.00>ATL KL204 FL300\n' > "$sc/typo.scn"
+expect "scn typo" 1 "t=5 s: .*typo.scn:4: ATL KL204 FL300: unknown command or aircraft 'ATL' - did you mean ALT\\?" -- "$sq" scn "$sc/typo.scn"
+expect "scn display skip" 1 "^ +1  PAN$" -- "$sq" scn "$sc/typo.scn"
+printf '00:00:00.00>CRE KL204 B744 52 4 90 FL200 250\n00:00:10.00>KL204 ALT FL9X\n' > "$sc/late.scn"
+expect "scn runtime failure line" 1 "t=10 s: .*late.scn:2: KL204 ALT FL9X: " -- "$sq" scn "$sc/late.scn"
+expect "scn lua scenario" 2 "horizontal_cr.lua is a Lua conflict-resolution scenario: .squawk train., .squawk eval. and .squawk table3. take it" -- "$sq" scn scenarios/horizontal_cr.lua
+expect "repl lua scenario" 1 "horizontal_cr.lua is a Lua conflict-resolution scenario" -- "$sq" repl scenarios/horizontal_cr.lua
+expect "scn folder" 2 "docs is a folder; expected one FILE.scn \(.squawk scn docs --conformance. runs every .scn under it\)" -- "$sq" scn docs
+cp scenarios/demo_conflict.scn "$sc/"  # beside typo.scn and late.scn: three .scn files
+printf 'not a scenario\n' > "$sc/README.md"
+expect "conformance reads .scn only" 0 "^\| 3 \| 3 \| 3 \|" -- "$sq" scn "$sc" --conformance
+rm -rf "$sc"
+
+# LLM configuration errors name the variable and what is wrong; single and
+# multi modes refuse without a server in translate as in eval-translate.
+nollm=(env -u SQUAWK_LLM_URL -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API "$sq")
+expect "translate multi no server" 1 "--mode multi needs an LLM server: set SQUAWK_LLM_URL" -- "${nollm[@]}" translate "KL204 climb FL300" --mode multi
+expect "eval-translate single no server" 1 "--mode single needs an LLM server: set SQUAWK_LLM_URL" -- "${nollm[@]}" eval-translate tests/data/translate_heldout.tsv --mode single
+expect "llm no model" 2 "LLM at http://127.0.0.1:9: no model named: set SQUAWK_LLM_MODEL" -- env -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API SQUAWK_LLM_URL=http://127.0.0.1:9 "$sq" llm chat hi
+expect "translate no model" 1 "SQUAWK_LLM_\\*: LLM at http://127.0.0.1:9: no model named" -- env -u SQUAWK_LLM_MODEL -u SQUAWK_LLM_API SQUAWK_LLM_URL=http://127.0.0.1:9 "$sq" translate "KL204 climb FL300" --mode single
+expect "llm no server" 2 "no LLM server named: set SQUAWK_LLM_URL" -- "${nollm[@]}" llm chat hi
+expect "llm unreachable" 1 "Couldn't connect to server" -- env -u SQUAWK_LLM_API SQUAWK_LLM_URL=http://127.0.0.1:9 SQUAWK_LLM_MODEL=m "$sq" llm chat hi --timeout 5
+once=$("$sq" translate "KLM one two three, climb flight level three five zero" 2>/dev/null)
+[ -z "$once" ] && { echo "ok   a translation failure is said once (stderr)"; pass=$((pass + 1)); } || { echo "FAIL translate failure on stdout too: $once"; fails=$((fails + 1)); }
+
+# `help CMD` documents every flag the parser of CMD accepts (the parser lists
+# them when it meets an unknown one), and every flag on its usage lines parses;
+# `--help` names all eight gpt2 actions and says train is not MLP-only.
+parsed() { "$sq" "$@" --zz-unknown 2>&1 | grep -o "known: [^(]*" | head -1 | sed 's/known: //' | tr ' ' '\n' | grep -- '^--' | sort -u; }
+documented() { "$sq" help "$1" | grep -oE -- '--[a-z][a-z0-9-]*' | sort -u; }
+usage_flags() { "$sq" help "$1" | sed '/^$/q' | grep -oE -- '--[a-z][a-z0-9-]*' | sort -u; }
+help_check() {  # HELPNAME PARSER-ARGV...; the union of the given parsers against one help text
+  local name=$1; shift
+  local p="" undocumented unparsed
+  while [ $# -gt 0 ]; do p+=$(parsed $1 | tr '\n' ' ')" "; shift; done
+  p=$(tr ' ' '\n' <<<"$p" | grep -- '^--' | sort -u)
+  undocumented=$(comm -23 <(echo "$p") <(documented "$name") | tr '\n' ' ')
+  unparsed=$(comm -13 <(echo "$p") <(usage_flags "$name") | tr '\n' ' ')
+  if [ -n "$p" ] && [ -z "${undocumented// }" ] && [ -z "${unparsed// }" ]; then echo "ok   help $name matches the parser"; pass=$((pass + 1))
+  else echo "FAIL help $name: parsed but not in help: [$undocumented]; in usage but not parsed: [$unparsed]"; fails=$((fails + 1)); fi
+}
+for c in demo test render plot repl serve scn commands translate eval-translate eval table3 llm rag; do help_check $c $c; done
+help_check train train "train --policy gpt2"
+help_check gpt2 "gpt2 info" "gpt2 pretrain" "gpt2 imitate"
+expect "help lists gpt2 actions" 0 "gpt2 info\|generate\|logits\|bench\|init\|train-bpe\|pretrain\|imitate" -- "$sq" --help
+expect "help train both learners" 0 "train a conflict-resolution policy \(MLP, or --policy gpt2\)" -- "$sq" --help
+expect "help train files" 0 "the MLP learner also writes best.ckpt" -- "$sq" help train
 
 finish

@@ -42,7 +42,14 @@ Result<Args> Args::parse(const std::vector<std::string>& argv, const Spec& spec)
         a.values_[name] = "1";
         continue;
       }
-      if (!spec.pass_unknown) return Status::invalid("unknown flag " + text::quoted(name));
+      if (!spec.pass_unknown) {
+        std::vector<std::string> known = spec.value_flags;
+        known.insert(known.end(), spec.bool_flags.begin(), spec.bool_flags.end());
+        std::sort(known.begin(), known.end());
+        known.erase(std::unique(known.begin(), known.end()), known.end());
+        return Status::invalid("unknown flag " + text::quoted(name) + "; known: " +
+                               (known.empty() ? std::string("none") : text::join(known, " ")));
+      }
     }
     a.positional_.push_back(t);
   }
@@ -77,13 +84,24 @@ Result<double> Args::get_double(const std::string& flag, double fallback) const 
 }
 
 int usage_error(const std::string& subcommand, const std::string& message) {
-  std::fprintf(stderr, "squawk %s: %s\n(see `squawk help %s`)\n", subcommand.c_str(), message.c_str(),
+  std::fprintf(stderr, "squawk %s: %s\n(see `squawk help %s`)\n", subcommand.c_str(), shown_error(message).c_str(),
                subcommand.c_str());
   return kExitUsage;
 }
 
+namespace {
+bool g_verbose = false;
+}  // namespace
+
+void set_verbose(bool on) { g_verbose = on; }
+
+std::string shown_error(const std::string& message) {
+  if (g_verbose) return message;
+  return message.substr(0, message.find("\nstack traceback:"));
+}
+
 int failure(const Status& st) {
-  std::fprintf(stderr, "squawk: %s\n", st.message().c_str());
+  std::fprintf(stderr, "squawk: %s\n", shown_error(st.message()).c_str());
   return kExitFail;
 }
 
@@ -96,7 +114,8 @@ void print_main_help() {
       "subcommands:\n",
       SQUAWK_VERSION);
   for (const auto& s : subcommands()) std::printf("  %s\n", s.synopsis);
-  std::printf("\n`squawk help SUBCOMMAND` explains one subcommand.\n");
+  std::printf("\n`squawk help SUBCOMMAND` explains one subcommand. Every subcommand also takes --openap DIR\n"
+              "(OpenAP performance data) and --verbose (Lua errors with their traceback).\n");
 }
 
 const Subcommand* find_subcommand(const std::string& name) {
@@ -163,6 +182,15 @@ int run_cli(int argc, char** argv) {
     }
     rest.erase(rest.begin() + static_cast<long>(k), rest.begin() + static_cast<long>(k) + 2);
     break;
+  }
+  // --verbose, accepted by every subcommand: Lua errors with their traceback.
+  // Not after `--`, nor after `run`'s script name (the script's own arguments).
+  auto stop = std::find(rest.begin(), rest.end(), "--");
+  if (std::string(s->name) == "run")
+    stop = std::find_if(rest.begin(), stop, [](const std::string& a) { return a.rfind("--", 0) != 0; });
+  if (auto v = std::find(rest.begin(), stop, "--verbose"); v != stop) {
+    set_verbose(true);
+    rest.erase(v);
   }
   if (!rest.empty() && (rest[0] == "--help" || rest[0] == "-h")) {
     std::fputs(s->help, stdout);

@@ -41,6 +41,8 @@ class Args {
   // Integer / real value of a flag; an unparsable value is a usage error.
   Result<long long> get_int(const std::string& flag, long long fallback) const;
   Result<double> get_double(const std::string& flag, double fallback) const;
+  // Every flag given, name -> value ("1" for a switch).
+  const std::map<std::string, std::string>& flags() const { return values_; }
 
  private:
   std::vector<std::string> positional_;
@@ -54,6 +56,13 @@ struct Subcommand {
   int (*run)(const std::vector<std::string>& args);
 };
 const std::vector<Subcommand>& subcommands();
+
+// --verbose, accepted by every subcommand (run_cli removes it): Lua errors
+// keep their traceback. Without it an error shows as `file:line: message`.
+void set_verbose(bool on);
+// `message` as the user sees it: without the Lua traceback ("\nstack
+// traceback:" and after) unless --verbose was given.
+std::string shown_error(const std::string& message);
 
 // Prints "squawk NAME: message" plus a hint to stderr and returns kExitUsage.
 int usage_error(const std::string& subcommand, const std::string& message);

@@ -116,6 +116,7 @@ int run_eval(script::MadePolicy& made, env::VecEnv& envs, const script::Scenario
   rl::Policy& base = *made.policy;
   if (Status st = rl::check_obs_size(base, envs.obs_size()); !st.is_ok()) return failure(st);
   const std::string elsewhere = trained_elsewhere(made, sc, vm);
+  // Said once, on stderr, before the episodes run (and in --json's "warning").
   if (!elsewhere.empty()) std::fprintf(stderr, "squawk eval: warning: %s\n", elsewhere.c_str());
   std::unique_ptr<PromptShower> shower;
   if (req.show_prompt > 0) {
@@ -167,7 +168,6 @@ int run_eval(script::MadePolicy& made, env::VecEnv& envs, const script::Scenario
               success_definition(sc).c_str());
   std::printf("policy    %s\n", made.label.c_str());
   if (!made.prompt.empty()) std::printf("prompt    %s\n", made.prompt.c_str());
-  if (!elsewhere.empty()) std::printf("warning   %s\n", elsewhere.c_str());
   std::printf("episodes  %lld, seed %lld, %s actions\n", res->episodes, req.seed,
               req.greedy ? "greedy" : "sampled");
   std::printf("\n  %-10s %-22s %-20s\n", "success", "mean episode reward", "std of episode reward");

@@ -8,6 +8,7 @@
 #include "app/cli.h"
 #include "app/gpt2_policy_factory.h"
 #include "app/learner_flags.h"
+#include "app/out_guard.h"
 #include "app/vm_options.h"
 #include "rl/imitation.h"
 #include "rl/prompt_checkpoint.h"
@@ -19,9 +20,11 @@ int cmd_gpt2_imitate(const ArgV& argv) {
   std::vector<std::string> values = {"--teacher", "--episodes", "--rounds", "--epochs", "--batch",
                                      "--lr",      "--seed",     "--holdout", "--envs"};
   values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
-  auto args = Args::parse(argv, with_vm_flags({values, {"--mirror", "--train-embeddings", "--quiet"}}));
+  auto args = Args::parse(argv, with_vm_flags({values, {"--mirror", "--train-embeddings", "--quiet", "--force"}}));
   if (!args) return usage_error("gpt2", args.status().message());
   if (args->positional().size() != 2) return usage_error("gpt2", "imitate expects SCENARIO.lua OUT.ckpt");
+  if (Status st = check_absent(args->positional()[1], {args->positional()[1]}, args->has("--force")); !st.is_ok())
+    return usage_error("gpt2", "imitate: " + st.message());
   rl::ImitationConfig cfg;
   const std::pair<const char*, long long> defaults[] = {{"--episodes", cfg.episodes}, {"--rounds", cfg.rounds},
                                                         {"--epochs", cfg.epochs},     {"--batch", cfg.batch},

@@ -27,22 +27,22 @@ namespace {
 // Adam step size on a Hugging Face folder unless --lr says otherwise.
 constexpr double kFolderLr = 1e-5;
 
-// The learner's flags and --init CKPT (GPT-2 runs only).
-std::vector<std::string> with_init(std::vector<std::string> values) {
-  values.push_back("--init");
-  return values;
-}
+}  // namespace
 
-Args::Spec with_policy_flags(std::vector<std::string> values, std::vector<std::string> bools) {
-  values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
+Args::Spec train_flags(bool gpt2) {
+  std::vector<std::string> values = learner_flags();
   values.push_back("--policy");
+  std::vector<std::string> bools = {"--resume", "--override", "--force", "--quiet", "--mirror"};
+  if (gpt2) {
+    values.push_back("--init");
+    values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
+    bools.push_back("--train-embeddings");
+  }
   return with_vm_flags({std::move(values), std::move(bools)});
 }
 
-}  // namespace
-
 int cmd_train_gpt2(const ArgV& argv) {
-  auto args = Args::parse(argv, with_policy_flags(with_init(learner_flags()), {"--resume", "--quiet", "--train-embeddings", "--mirror"}));
+  auto args = Args::parse(argv, train_flags(true));
   if (!args) return usage_error("train", args.status().message());
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");
   auto popts = gpt2_options(*args);
@@ -60,7 +60,7 @@ int cmd_train_gpt2(const ArgV& argv) {
   auto validation = validation_seed(*args, sc.eval_seed);
   if (!validation) return usage_error("train", validation.status().message());
 
-  auto run = open_run_folder(*args->get("--out"), args->has("--resume"));
+  auto run = open_run_folder(*args->get("--out"), *args);
   if (!run) return failure(run.status());
 
   Gpt2Policy g;
@@ -169,8 +169,8 @@ int cmd_train_gpt2(const ArgV& argv) {
   }
   bar.finish();
   if (!quiet)
-    std::printf("done: %lld episodes in %.0f s; checkpoint %s, log %s\n", meta.progress.episodes,
-                meta.progress.wall_s, run->checkpoint.c_str(), run->log.c_str());
+    std::printf("done: %lld episodes in %s; checkpoint %s, log %s\n", meta.progress.episodes,
+                fmt_duration(meta.progress.wall_s).c_str(), run->checkpoint.c_str(), run->log.c_str());
   return kExitOk;
 }
 

@@ -20,6 +20,7 @@
 
 #include "app/cli.h"
 #include "app/gpt2_policy_factory.h"
+#include "app/out_guard.h"
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/rng.h"
@@ -91,7 +92,7 @@ double mean_variance(const std::vector<float>& obs, size_t from, int d) {
 int cmd_gpt2_pretrain(const ArgV& argv) {
   auto args = Args::parse(argv, with_vm_flags({{"--prompt", "--episodes", "--steps", "--batch", "--lr", "--seed",
                                                 "--model-seed", "--holdout", "--log-every", "--readout"},
-                                               {"--quiet"}}));
+                                               {"--quiet", "--force"}}));
   if (!args) return usage_error("gpt2", args.status().message());
   if (args->positional().size() != 2) return usage_error("gpt2", "pretrain expects SCENARIO.lua OUT_DIR");
   const std::pair<const char*, long long> defaults[] = {{"--episodes", 600}, {"--steps", 3000}, {"--batch", 16},
@@ -117,6 +118,9 @@ int cmd_gpt2_pretrain(const ArgV& argv) {
   if (int rc = load_episode_scenario(*args, "gpt2", vo, sc); rc != kExitOk) return rc;
   const std::string out = args->positional()[1];
   const bool quiet = args->has("--quiet");
+  if (Status st = check_absent(out, {out + "/model.safetensors", out + "/pretrain.csv"}, args->has("--force"));
+      !st.is_ok())
+    return usage_error("gpt2", "pretrain: " + st.message());
 
   script::Gpt2PolicyOptions po;
   po.model_seed = static_cast<uint64_t>(v[4]);

@@ -23,8 +23,7 @@ void print_reply_text(std::string_view s) {
 
 // The configuration from the environment, overridden by the flags.
 Result<llm::LlmConfig> config_from(const Args& args) {
-  llm::LlmConfig c;
-  if (auto env = llm::config_from_env(); env.is_ok()) c = *env;
+  SQUAWK_ASSIGN_OR_RETURN(llm::LlmConfig c, llm::env_fields());
   c.url = args.get_or("--llm-url", c.url);
   c.model = args.get_or("--llm-model", c.model);
   if (auto api = args.get("--llm-api")) {
@@ -42,7 +41,8 @@ Result<llm::LlmConfig> config_from(const Args& args) {
   if (mb < 1 || mb > (1 << 20)) return Status::invalid("--max-reply-mb " + std::to_string(mb) + ": expected 1 to 1048576");
   c.max_reply_bytes = static_cast<size_t>(mb) << 20;
   SQUAWK_ASSIGN_OR_RETURN(c.timeout_s, args.get_double("--timeout", c.timeout_s));
-  if (c.url.empty()) return Status::invalid("no LLM server: pass --llm-url URL or set SQUAWK_LLM_URL");
+  if (c.url.empty()) return Status::invalid("no LLM server named: set SQUAWK_LLM_URL or pass --llm-url URL");
+  SQUAWK_RETURN_IF_ERROR(c.validate());
   return c;
 }
 

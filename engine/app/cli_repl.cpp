@@ -26,8 +26,12 @@
 #include "app/cli.h"
 #include "app/subcommands.h"
 #include "app/vm_options.h"
+#include "command/conformance.h"
+#include "command/navdb.h"
+#include "command/stack.h"
 #include "core/files.h"
 #include "core/paths.h"
+#include "core/text.h"
 #include "llm/llm_config.h"
 #include "script/repl_session.h"
 
@@ -61,7 +65,7 @@ class WallClock {
 bool reply_to(script::ReplSession& session, const std::string& line, int& status) {
   auto reply = session.handle(line);
   if (!reply) {
-    std::fprintf(stderr, "%s\n", reply.status().message().c_str());
+    std::fprintf(stderr, "%s\n", shown_error(reply.status().message()).c_str());
     status = kExitFail;
     return true;
   }
@@ -72,7 +76,7 @@ bool reply_to(script::ReplSession& session, const std::string& line, int& status
 
 void print_tick(script::ReplSession& session, double wall_s) {
   auto text = session.tick(wall_s);
-  if (!text) std::fprintf(stderr, "%s\n", text.status().message().c_str());
+  if (!text) std::fprintf(stderr, "%s\n", shown_error(text.status().message()).c_str());
   else if (!text->empty()) std::printf("%s\n", text->c_str());
 }
 
@@ -164,6 +168,43 @@ int run_terminal(script::ReplSession& session) {
   return term.status;
 }
 
+// The session when the REPL's Lua (the translation graph, its grammar) does
+// not load: the scenario on a bare command stack, `!CMD` run as typed, English
+// refused with the reason. Exit 1 at the end: the session was degraded.
+int run_trafscript_only(const std::string& scenario, const script::VmOptions& o, const Status& why) {
+  std::fprintf(stderr, "squawk repl: the translator did not load (%s); only !TrafScript works in this session\n",
+               shown_error(why.message()).c_str());
+  command::Stack stack(o.seed);
+  if (!o.navdata_dir.empty()) {  // navdata that does not load: named places fail, each saying so
+    if (auto db = command::NavDb::load_cached(o.navdata_dir); db) stack.set_navdb(*db);
+  }
+  if (!scenario.empty()) {
+    if (Status st = stack.load_scenario(scenario); !st.is_ok()) return failure(st);
+    stack.process_due();
+    for (const auto& line : stack.take_output()) std::printf("  %s\n", line.c_str());
+    const command::Tally& t = stack.tally();
+    std::printf("  scenario commands so far: %ld executed, %ld skipped, %ld failed\n", t.executed,
+                command::total_count(t.skipped), command::total_count(t.failed));
+  }
+  const bool tty = ::isatty(STDIN_FILENO) != 0;
+  std::string line;
+  while ((tty ? std::printf("%s", kPrompt) : 0, std::fflush(stdout), std::getline(std::cin, line))) {
+    const std::string typed(text::trim(line));
+    if (typed.empty()) continue;
+    if (typed == "quit" || typed == "exit" || typed == ":q") break;
+    if (typed[0] != '!') {
+      std::fprintf(stderr, "English needs the translator, which did not load; type !CMD for TrafScript\n");
+      continue;
+    }
+    auto r = stack.exec(typed.substr(1));
+    if (!r) std::fprintf(stderr, "%s\n", r.status().message().c_str());
+    else std::printf("  ok: %s%s%s\n", std::string(text::trim(typed.substr(1))).c_str(), r->empty() ? "" : "\n  ",
+                     r->c_str());
+    std::fflush(stdout);
+  }
+  return kExitFail;
+}
+
 int run_pipe(script::ReplSession& session) {
   WallClock clock;
   clock.lap();
@@ -203,7 +244,7 @@ int cmd_repl(const ArgV& argv) {
   const std::string& scenario = *named;
   script::Vm vm(*opts);
   auto session = script::ReplSession::open(vm, scenario, args->get_or("--mode", ""), *clock);
-  if (!session) return failure(session.status());
+  if (!session) return run_trafscript_only(scenario, *opts, session.status());
 
   const bool tty = ::isatty(STDIN_FILENO) != 0;
   if (tty)

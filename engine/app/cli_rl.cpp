@@ -10,6 +10,7 @@
 #include "app/gpt2_policy_factory.h"
 #include "app/interrupt.h"
 #include "app/learner_flags.h"
+#include "app/out_guard.h"
 #include "app/progress_bar.h"
 #include "app/rl_eval.h"
 #include "app/subcommands.h"
@@ -43,12 +44,11 @@ rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainP
 
 }  // namespace
 
-int cmd_train(const ArgV& argv) {
-  if (wants_gpt2(argv)) return cmd_train_gpt2(argv);
-  std::vector<std::string> values = learner_flags();
-  values.push_back("--policy");
-  Args::Spec spec = with_vm_flags({values, {"--resume", "--quiet", "--mirror"}});
-  auto args = Args::parse(argv, spec);
+int cmd_train(const ArgV& given) {
+  auto argv = resolve_train_argv(given, train_flags(true));
+  if (!argv) return usage_error("train", argv.status().message());
+  if (wants_gpt2(*argv)) return cmd_train_gpt2(*argv);
+  auto args = Args::parse(*argv, train_flags(false));
   if (!args) return usage_error("train", args.status().message());
   if (args->get_or("--policy", "mlp") != "mlp")
     return usage_error("train", "--policy: only 'mlp' trains here, got '" + args->get_or("--policy", "") + "'");
@@ -66,7 +66,7 @@ int cmd_train(const ArgV& argv) {
   if (!validation) return usage_error("train", validation.status().message());
 
   const std::string out = *args->get("--out");
-  auto run = open_run_folder(out, args->has("--resume"));
+  auto run = open_run_folder(out, *args);
   if (!run) return failure(run.status());
   const std::string best_path = out + "/best.ckpt";
 
@@ -166,9 +166,9 @@ int cmd_train(const ArgV& argv) {
   if (Status s = rl::save_checkpoint(policy_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
     return failure(s);
   if (!quiet)
-    std::printf("done: %lld episodes in %s; checkpoint %s, policy %s, log %s\n", progress.episodes,
-                fmt_duration(progress.wall_s).c_str(), run->checkpoint.c_str(), policy_path.c_str(),
-                run->log.c_str());
+    std::printf("done: %lld episodes in %s; checkpoint %s, best %s, policy %s, log %s\n", progress.episodes,
+                fmt_duration(progress.wall_s).c_str(), run->checkpoint.c_str(), best_path.c_str(),
+                policy_path.c_str(), run->log.c_str());
   return kExitOk;
 }
 

@@ -26,7 +26,7 @@ int cmd_run(const ArgV& argv) {
   script::Vm vm(*opts);
   Status st = vm.run_file(file, script_args);
   if (!st.is_ok()) {
-    std::fprintf(stderr, "%s\n", st.message().c_str());
+    std::fprintf(stderr, "%s\n", shown_error(st.message()).c_str());
     return kExitFail;
   }
   return vm.checks().failed > 0 ? kExitFail : kExitOk;
@@ -63,7 +63,7 @@ int cmd_test(const ArgV& argv) {
     Status st = vm.run_file(path);
     const auto& c = vm.checks();
     const bool ok = st.is_ok() && c.failed == 0;
-    if (!st.is_ok()) std::printf("%s\n", st.message().c_str());
+    if (!st.is_ok()) std::printf("%s\n", shown_error(st.message()).c_str());
     std::printf("%s %s (%ld checks passed, %ld failed)\n", ok ? "ok  " : "FAIL", path.c_str(),
                 c.passed, c.failed);
     std::fflush(stdout);

@@ -7,6 +7,7 @@
 
 #include "app/cli.h"
 #include "app/subcommands.h"
+#include "app/vm_options.h"
 #include "command/registry.h"
 #include "command/conformance.h"
 #include "command/scenario_run.h"
@@ -66,7 +67,7 @@ int run_one(const std::string& file, const Args& args, const command::ScenarioRu
   std::printf("scenario %s: ran to t = %.2f s in %.2f s wall\n", file.c_str(), r->end_time, r->wall_s);
   std::printf("commands: %ld executed, %ld skipped, %ld failed\n", r->tally.executed, command::total_count(r->tally.skipped),
               command::total_count(r->tally.failed));
-  print_counts("skipped (not squawk commands), by name", r->tally.skipped);
+  print_counts("skipped (BlueSky display and plugin commands squawk does not implement), by name", r->tally.skipped);
   print_counts("failed, by reason", r->tally.failed);
   std::printf("aircraft: %d; conflicts: %lld; losses of separation: %lld\n", r->aircraft,
               static_cast<long long>(r->conflicts), static_cast<long long>(r->los));
@@ -105,10 +106,11 @@ int cmd_scn(const ArgV& argv) {
     const auto rep = command::run_conformance(target, opts, [](const std::string& line) {
       std::fprintf(stderr, "%s\n", line.c_str());
     });
-    if (rep.files == 0) return failure(Status::not_found("no files under " + text::quoted(target)));
+    if (rep.files == 0) return failure(Status::not_found("no .scn files under " + text::quoted(target)));
     std::fputs(command::conformance_markdown(rep).c_str(), stdout);
     return rep.loaded == rep.files ? kExitOk : kExitFail;
   }
+  if (Status st = check_scn_file(target, true); !st.is_ok()) return usage_error("scn", st.message());
   return run_one(target, *args, opts);
 }
 

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gpt2_policy_factory.h"
+#include "app/out_guard.h"
 #include "app/progress_bar.h"
 #include "app/rl_eval.h"
 #include "app/vm_options.h"
@@ -26,6 +27,9 @@
 namespace squawk::app {
 
 namespace {
+
+// The first line of the --csv file (which table3 may replace without --force).
+constexpr const char* kCsvHeader = "agent,success_rate,mean_reward,std_reward,episodes,seed,most_frequent_greedy_share\n";
 
 struct Row {
   std::string agent;
@@ -59,8 +63,12 @@ std::string top_action(const rl::EvalResult& r) {
 int cmd_table3(const ArgV& argv) {
   std::vector<std::string> values = {"--mlp-checkpoint", "--mlp-mirror-checkpoint", "--gpt2-checkpoint", "--gpt2-mirror-checkpoint", "--episodes", "--envs", "--csv"};
   values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
-  auto args = Args::parse(argv, with_vm_flags({values, {"--json"}}));
+  auto args = Args::parse(argv, with_vm_flags({values, {"--json", "--force"}}));
   if (!args) return usage_error("table3", args.status().message());
+  if (auto path = args->get("--csv")) {
+    if (Status st = check_overwrite(*path, kCsvHeader, args->has("--force")); !st.is_ok())
+      return usage_error("table3", "--csv: " + st.message());
+  }
   if (args->positional().size() != 1) return usage_error("table3", "expected exactly one SCENARIO.lua");
   auto popts = gpt2_options(*args);
   if (!popts) return usage_error("table3", popts.status().message());
@@ -161,7 +169,7 @@ int cmd_table3(const ArgV& argv) {
       std::printf("| %s | %.1f%% | %.3f | %.3f | %s |\n", r.agent.c_str(), 100.0 * r.sampled.success_rate,
                   r.sampled.mean_reward, r.sampled.std_reward, top_action(r.greedy).c_str());
   }
-  std::string csv = "agent,success_rate,mean_reward,std_reward,episodes,seed,most_frequent_greedy_share\n";
+  std::string csv = kCsvHeader;
   for (const Row& r : rows) {
     char line[256];
     std::snprintf(line, sizeof line, "%s,%.4f,%.4f,%.4f,%lld,%lld,%.4f\n", r.agent.c_str(), r.sampled.success_rate,

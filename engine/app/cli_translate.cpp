@@ -9,6 +9,7 @@
 #include "app/subcommands.h"
 #include "app/vm_options.h"
 #include "command/stack.h"
+#include "llm/llm_config.h"
 #include "script/translate_graph.h"
 #include "translate/corpus.h"
 #include "translate/stack_world.h"
@@ -22,6 +23,18 @@ Result<std::string> mode_of(const Args& args) {
   if (mode != "offline" && mode != "single" && mode != "multi")
     return Status::invalid("--mode must be offline, single or multi, not '" + mode + "'");
   return mode;
+}
+
+// single and multi need an LLM server: refused up front (never a silent
+// offline translation) when SQUAWK_LLM_URL is not set or the configuration
+// does not validate (no SQUAWK_LLM_MODEL, a bad URL).
+Status check_llm_for(const std::string& mode) {
+  if (mode == "offline") return Status::ok();
+  const char* url = std::getenv("SQUAWK_LLM_URL");
+  if (url && *url) return llm::config_from_env().status();
+  return Status::unavailable("--mode " + mode + " needs an LLM server: set SQUAWK_LLM_URL (http://host:11434 for "
+                             "Ollama, a URL ending in /v1 for an OpenAI-compatible server) and SQUAWK_LLM_MODEL, "
+                             "or use --mode offline");
 }
 
 nlohmann::json result_json(const translate::Translation& tr) {
@@ -56,6 +69,7 @@ int cmd_translate(const ArgV& argv) {
   if (!args) return usage_error("translate", args.status().message());
   auto mode = mode_of(*args);
   if (!mode) return usage_error("translate", mode.status().message());
+  if (Status st = check_llm_for(*mode); !st.is_ok()) return failure(st);
   auto opts = vm_options(*args);
   if (!opts) return usage_error("translate", opts.status().message());
   script::Vm vm(*opts);
@@ -74,6 +88,7 @@ int cmd_translate(const ArgV& argv) {
     stack.set_navdb(*db);
   }
   if (auto scn = args->get("--scenario")) {
+    if (Status st = check_scn_file(*scn, false); !st.is_ok()) return usage_error("translate", "--scenario: " + st.message());
     Status st = stack.load_scenario(*scn);
     if (!st.is_ok()) return failure(st);
     stack.process_due();
@@ -86,11 +101,11 @@ int cmd_translate(const ArgV& argv) {
   if (!tr) return failure(tr.status());
   if (args->has("--jsonl")) {
     std::printf("%s\n", result_json(*tr).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
-  } else {
+  } else if (tr->error.empty()) {
     std::printf("%s\n", tr->text().c_str());
   }
   // The graph validated the commands on a scratch copy of the traffic; an
-  // error means nothing valid came out.
+  // error means nothing valid came out (said once, on stderr).
   if (!tr->error.empty()) {
     std::fprintf(stderr, "squawk translate: no valid command: %s\n", tr->error.c_str());
     return kExitFail;
@@ -107,10 +122,7 @@ int cmd_eval_translate(const ArgV& argv) {
   const std::string path = args->positional()[0];
   auto cases = translate::read_corpus(path);
   if (!cases) return failure(cases.status());
-  if (*mode != "offline") {
-    const char* url = std::getenv("SQUAWK_LLM_URL");
-    if (!url || !*url) return failure(Status::unavailable("mode " + *mode + " needs an LLM server: set SQUAWK_LLM_URL"));
-  }
+  if (Status st = check_llm_for(*mode); !st.is_ok()) return failure(st);
   auto opts = vm_options(*args);
   if (!opts) return usage_error("eval-translate", opts.status().message());
   script::Vm vm(*opts);

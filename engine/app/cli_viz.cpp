@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/cli.h"
+#include "app/out_guard.h"
 #include "app/subcommands.h"
 #include "command/conformance.h"
 #include "command/stack.h"
@@ -27,11 +28,16 @@ namespace squawk::app {
 
 namespace {
 
-int write_output(const std::string& out, const std::string& svg) {
+// What every SVG squawk draws begins with (viz/svg.cpp): such a file may be
+// replaced without --force.
+constexpr const char* kSvgPrefix = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg ";
+
+int write_output(const std::string& subcommand, const std::string& out, const std::string& svg, bool force) {
   if (out == "-") {
     std::fputs(svg.c_str(), stdout);
     return kExitOk;
   }
+  if (Status st = check_overwrite(out, kSvgPrefix, force); !st.is_ok()) return usage_error(subcommand, st.message());
   Status st = files::write_atomic(out, svg);
   if (!st.is_ok()) return failure(st);
   std::printf("wrote %s\n", out.c_str());
@@ -83,7 +89,7 @@ Result<viz::Scene> scn_scene(const std::string& path, double at, const script::V
 }
 
 int cmd_render(const ArgV& argv) {
-  auto args = Args::parse(argv, {{"--out", "--frame", "--size", "--episode", "--seed", "--at", "--navdata"}, {}});
+  auto args = Args::parse(argv, {{"--out", "--frame", "--size", "--episode", "--seed", "--at", "--navdata"}, {"--force"}});
   if (!args) return usage_error("render", args.status().message());
   if (args->positional().size() != 1)
     return usage_error("render", "expected one EPISODE.jsonl, SCENARIO.lua or SCENARIO.scn");
@@ -123,11 +129,11 @@ int cmd_render(const ArgV& argv) {
   if (!scene) return failure(scene.status().with_context(in));
   if (Status st = viz::check_frame(*scene, *frame); !st.is_ok()) return usage_error("render", "--frame: " + st.message());
   const std::string out = args->get_or("--out", fs::path(in).replace_extension(".svg").string());
-  return write_output(out, viz::render_scene(*scene, {*size, static_cast<int>(*frame)}));
+  return write_output("render", out, viz::render_scene(*scene, {*size, static_cast<int>(*frame)}), args->has("--force"));
 }
 
 int cmd_plot(const ArgV& argv) {
-  auto args = Args::parse(argv, {{"--out"}, {}});
+  auto args = Args::parse(argv, {{"--out"}, {"--force"}});
   if (!args) return usage_error("plot", args.status().message());
   if (args->positional().empty()) return usage_error("plot", "expected RUN_DIR or FILE.csv, one or more");
   // Every CSV of every RUN_DIR, then the files named, each drawn as one line.
@@ -181,7 +187,7 @@ int cmd_plot(const ArgV& argv) {
       "--out", !one ? std::string("curves.svg")
                : fs::is_directory(target, ec) ? (fs::path(target) / "curves.svg").string()
                                               : fs::path(target).replace_extension(".svg").string());
-  return write_output(out, viz::panels_svg({success, reward}));
+  return write_output("plot", out, viz::panels_svg({success, reward}), args->has("--force"));
 }
 
 }  // namespace squawk::app

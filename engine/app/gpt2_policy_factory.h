@@ -28,6 +28,9 @@ Result<Gpt2PolicyOptions> gpt2_options(const Args& args);
 
 // True when argv selects --policy gpt2 (the hook of cmd_train).
 bool wants_gpt2(const ArgV& argv);
+// The flags of `squawk train`: the MLP learner's, and with `gpt2` the GPT-2
+// learner's too (--init, --train-embeddings and the policy flags).
+Args::Spec train_flags(bool gpt2);
 int cmd_train_gpt2(const ArgV& argv);
 // squawk gpt2 pretrain SCENARIO.lua OUT_DIR (argv after "pretrain").
 int cmd_gpt2_pretrain(const ArgV& argv);

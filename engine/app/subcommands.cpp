@@ -2,6 +2,18 @@
 #include "app/cli.h"
 #include "app/subcommands.h"
 
+// The flags every script-running subcommand takes (app/vm_options.h), and the
+// GPT-2 policy flags of eval, table3 and gpt2 imitate: appended to their help.
+#define SQUAWK_VM_FLAGS_HELP                                                              \
+  "\nScript flags: --seed N (the engine RNG), --max-instructions N and --max-seconds S\n" \
+  "(Lua caps), --navdata DIR (BlueSky navdata), --allow-read DIR[:DIR...] (more folders\n" \
+  "scripts may read), --out DIR (the folder scripts may write), --unsafe (no sandbox);\n" \
+  "docs/sandbox.md has the details.\n"
+#define SQUAWK_GPT2_FLAGS_HELP                                                            \
+  "\nGPT-2 policy flags: --model tiny|DIR, --model-seed N (tiny's random init), --prompt\n" \
+  "FILE, --head action|lm, --blocks K (trainable last blocks), --chunk N (rows per\n"   \
+  "forward chunk).\n"
+
 namespace squawk::app {
 
 const std::vector<Subcommand>& subcommands() {
@@ -22,7 +34,8 @@ const std::vector<Subcommand>& subcommands() {
        "  --seed N        the episode: the first of seed N's sequence that needs the agent\n"
        "  --record FILE   write the episode as JSON lines (for `squawk render`)\n"
        "  --svg FILE      draw the episode (Fig. 2 style)\n"
-       "Exit 1 when an advisory could not be translated or executed.\n",
+       "Exit 1 when an advisory could not be translated or executed.\n"
+       SQUAWK_VM_FLAGS_HELP,
        cmd_demo},
       {"run", "run FILE.lua [ARGS...]   run a Lua script (the script sees ARGS as `arg`)",
        "usage: squawk run FILE.lua [ARGS...] [--seed N] [--unsafe] [--out DIR]\n"
@@ -54,9 +67,10 @@ const std::vector<Subcommand>& subcommands() {
        "  check_near(got, want, tol, [msg])  passes when |got - want| <= tol\n"
        "A failed check prints file:line and the values; the script goes on. A script\n"
        "passes when it ends without error and with no failed check. The last line\n"
-       "is `N passed, N failed`; the exit code is 1 when any script failed.\n",
+       "is `N passed, N failed`; the exit code is 1 when any script failed.\n"
+       SQUAWK_VM_FLAGS_HELP,
        cmd_test},
-      {"gpt2", "gpt2 info|generate|logits|bench DIR|tiny   the GPT-2 model on the CPU",
+      {"gpt2", "gpt2 info|generate|logits|bench|init|train-bpe|pretrain|imitate   the GPT-2 engine on the CPU",
        "usage: squawk gpt2 info DIR\n"
        "       squawk gpt2 generate DIR \"PROMPT\" [--max-tokens N] [--top-k K] [--seed N]\n"
        "       squawk gpt2 logits DIR \"TEXT\" [--json]\n"
@@ -67,10 +81,12 @@ const std::vector<Subcommand>& subcommands() {
        "                        [--context N] [--seed N]\n"
        "       squawk gpt2 pretrain SCENARIO.lua OUT_DIR [--prompt FILE] [--episodes N]\n"
        "                        [--steps N] [--batch B] [--lr X] [--seed N] [--holdout N]\n"
-       "                        [--readout W]\n"
+       "                        [--readout W] [--log-every N] [--quiet] [--force]\n"
        "       squawk gpt2 imitate SCENARIO.lua OUT.ckpt [--teacher MLP.ckpt] [--model DIR]\n"
        "                        [--mirror] [--train-embeddings] [--blocks K] [--episodes N]\n"
-       "                        [--rounds N] [--epochs N] [--batch B] [--lr X] [--seed N]\n\n"
+       "                        [--rounds N] [--epochs N] [--batch B] [--lr X] [--seed N]\n"
+       "                        [--envs N] [--quiet] [--force]\n"
+       "pretrain and imitate refuse an OUT that already holds a model unless --force.\n\n"
        "DIR is a Hugging Face GPT-2 folder (config.json, model.safetensors in F32,\n"
        "F16 or BF16, vocab.json + merges.txt) or the word `tiny`: a random 2-layer,\n"
        "64-wide model over the byte-level vocabulary, seeded by --seed (default 0).\n\n"
@@ -111,13 +127,15 @@ const std::vector<Subcommand>& subcommands() {
        "              greedy action; after each round --epochs passes (default 8) of\n"
        "              cross-entropy in batches of --batch (64), Adam at --lr (3e-4).\n"
        "              Prints the agreement on --holdout 200 held-out MLP episodes\n"
-       "              after each epoch and writes OUT.ckpt (squawk eval reads it)\n",
+       "              after each epoch and writes OUT.ckpt (squawk eval reads it)\n"
+       SQUAWK_GPT2_FLAGS_HELP SQUAWK_VM_FLAGS_HELP,
        cmd_gpt2},
       {"render", "render EPISODE.jsonl|SCENARIO.lua|SCENARIO.scn   draw an episode or traffic as SVG",
        "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"
        "                     [--out FILE.svg|-]\n"
        "       squawk render SCENARIO.lua [--seed N] [--size PX] [--out FILE.svg|-]\n"
-       "       squawk render SCENARIO.scn [--at T] [--navdata DIR] [--size PX] [--out FILE.svg|-]\n\n"
+       "       squawk render SCENARIO.scn [--at T] [--navdata DIR] [--size PX] [--out FILE.svg|-]\n"
+       "An existing --out file that is not an SVG squawk drew is refused unless --force.\n\n"
        "Draws a recorded episode top-down, north up (the paper's Fig. 2): the\n"
        "ownship's and intruders' tracks, each intruder's separation circle (red\n"
        "while the ownship is inside), the waypoint with its capture circle, the\n"
@@ -138,7 +156,8 @@ const std::vector<Subcommand>& subcommands() {
        "For a PNG: rsvg-convert -o out.png out.svg (Debian package librsvg2-bin).\n",
        cmd_render},
       {"plot", "plot RUN_DIR|FILE.csv...   draw training curves as SVG (Fig. 3 style)",
-       "usage: squawk plot RUN_DIR|FILE.csv... [--out FILE.svg|-]\n\n"
+       "usage: squawk plot RUN_DIR|FILE.csv... [--out FILE.svg|-] [--force]\n\n"
+       "An existing --out file that is not an SVG squawk drew is refused unless --force.\n"
        "Reads the CSV logs training runs write (columns episodes and\n"
        "eval_success_rate / eval_mean_reward, or success_rate / mean_reward)\n"
        "and draws success rate and mean reward against episodes trained (from 0),\n"
@@ -186,7 +205,8 @@ const std::vector<Subcommand>& subcommands() {
        "The LLM comes from --llm-url/--llm-model/--llm-api or SQUAWK_LLM_URL,\n"
        "SQUAWK_LLM_MODEL, SQUAWK_LLM_API; with none (or when the server fails) the\n"
        "offline grammar translates. The default mode is multi with an LLM, else\n"
-       "offline.\n",
+       "offline.\n"
+       SQUAWK_VM_FLAGS_HELP,
        cmd_repl},
       {"serve", "serve [SCENARIO.scn]       the radar scope in a browser, simulation running live",
        "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--speed X] [--paused]\n"
@@ -209,7 +229,8 @@ const std::vector<Subcommand>& subcommands() {
        "                switch this on and off)\n\n"
        "HTTP API (JSON): GET /api/state, GET /api/stream (server-sent events, 10 Hz),\n"
        "POST /api/command {\"text\": ...}, POST /api/advisory {\"id\", \"decision\"},\n"
-       "POST /api/auto {\"on\"}, GET /api/navdata?south=&north=&west=&east=.\n",
+       "POST /api/auto {\"on\"}, GET /api/navdata?south=&north=&west=&east=.\n"
+       SQUAWK_VM_FLAGS_HELP,
        cmd_serve},
       {"llm", "llm chat TEXT | llm embed TEXT   ask the configured LLM server directly",
        "usage: squawk llm chat TEXT... [--stream] [--system TEXT] [--llm-url URL]\n"
@@ -272,7 +293,8 @@ const std::vector<Subcommand>& subcommands() {
        "  --tsv CORPUS     run each case of a corpus (id setup utterance expected\n"
        "                   category) on a fresh simulation after its setup and print\n"
        "                   one JSON line per case: {\"id\", \"output\"} or {\"id\", \"ask\"};\n"
-       "                   named places read navdata from --navdata or SQUAWK_NAVDATA\n",
+       "                   named places read navdata from --navdata or SQUAWK_NAVDATA\n"
+       SQUAWK_VM_FLAGS_HELP,
        cmd_translate},
       {"eval-translate", "eval-translate CORPUS.tsv [--mode M]  translation right/asked/wrong per category",
        "usage: squawk eval-translate CORPUS.tsv [--mode offline|single|multi] [--no-verify] [--failures] [--json]\n\n"
@@ -288,27 +310,37 @@ const std::vector<Subcommand>& subcommands() {
        "                   SQUAWK_LLM_URL (an LLM server)\n"
        "  --no-verify      multi mode without the verifier node (paper Table 2)\n"
        "  --failures       list the cases it got wrong or asked, with what it produced\n"
-       "  --json           print the figures as JSON\n",
+       "  --json           print the figures as JSON\n"
+       SQUAWK_VM_FLAGS_HELP,
        cmd_eval_translate},
-      {"train", "train SCENARIO.lua --out DIR   train the conflict-resolution MLP policy",
-       "usage: squawk train SCENARIO.lua --out DIR [--policy mlp] [--episodes N] [--seed N]\n"
+      {"train", "train SCENARIO.lua --out DIR   train a conflict-resolution policy (MLP, or --policy gpt2)",
+       "usage: squawk train SCENARIO.lua --out DIR [--policy mlp|gpt2] [--episodes N] [--seed N]\n"
        "                    [--estimator vpg|improved|ppo|vine] [--lr X] [--lr-final X] [--envs N]\n"
        "                    [--episodes-per-update M] [--gamma X] [--lambda X] [--entropy X]\n"
        "                    [--entropy-final X] [--epochs N] [--minibatches K] [--clip X]\n"
        "                    [--value-iters N] [--branch-fraction X] [--mirror] [--stop-at N]\n"
        "                    [--eval-every N] [--eval-episodes N] [--validation-seed N]\n"
-       "                    [--resume] [--quiet]\n\n"
-       "Trains the MLP policy of a conflict-resolution scenario (scenarios/*.lua) by\n"
+       "                    [--resume [--override] | --force] [--quiet] [--max-instructions N]\n"
+       "                    [--max-seconds S] [--navdata DIR] [--allow-read DIRS] [--unsafe]\n"
+       "       squawk train --out DIR --resume\n"
+       "       squawk train SCENARIO.lua --out DIR --policy gpt2 [--model tiny|DIR]\n"
+       "                    [--model-seed N] [--prompt FILE] [--head action|lm] [--blocks K]\n"
+       "                    [--chunk N] [--train-embeddings] [--init CKPT] [learner flags]\n\n"
+       "Trains the policy of a conflict-resolution scenario (scenarios/*.lua) by\n"
        "policy gradient with Adam, on the scenario's training settings, evaluating\n"
        "it on the scenario's evaluation settings every --eval-every episodes. The\n"
-       "scenario's train table gives the defaults; flags override them. Writes into\n"
-       "DIR a checkpoint (checkpoint.ckpt, replaced atomically after each\n"
-       "evaluation), log.csv (one row per evaluation interval), best.ckpt (the\n"
-       "policy with the best evaluation success so far) and, at the end,\n"
-       "policy.ckpt (the final policy alone). Evaluations during training use the\n"
+       "scenario's train table gives the defaults; flags override them. Both\n"
+       "learners write into DIR run.json (the scenario and flags the run started\n"
+       "with), checkpoint.ckpt (the learner's state: MLP after each evaluation,\n"
+       "GPT-2 after each update; replaced atomically) and log.csv (one row per\n"
+       "evaluation interval); the MLP learner also writes best.ckpt (the policy\n"
+       "with the best evaluation success so far) and, at the end, policy.ckpt (the\n"
+       "final policy alone). A DIR that already holds a run is refused unless\n"
+       "--resume or --force is given. Evaluations during training use the\n"
        "episodes of --validation-seed (default: the scenario's eval seed + 1000003),\n"
        "never those `squawk eval` uses by default; choose one apart from every seed\n"
-       "you report. A progress bar with ETA goes to the terminal.\n\n"
+       "you report. A progress bar with ETA goes to the terminal; the last line\n"
+       "reads `done: N episodes in H:MM:SS; ...`.\n\n"
        "  --estimator E   vpg: the paper's Eq. 5 (log-prob times the step reward);\n"
        "                  improved: reward-to-go, learned value baseline,\n"
        "                  normalised advantages and an entropy bonus;\n"
@@ -338,9 +370,15 @@ const std::vector<Subcommand>& subcommands() {
        "                  schedules still span --episodes, so a later --resume goes\n"
        "                  on as if it had not stopped (for a recipe that changes\n"
        "                  flags at episode N)\n"
-       "  --resume        continue from DIR/checkpoint.ckpt (same seed and --episodes,\n"
-       "                  which the step-size schedule spans): the run goes on\n"
-       "                  exactly as if it had not stopped\n"
+       "  --resume        continue from DIR/checkpoint.ckpt with the scenario and\n"
+       "                  every flag in DIR/run.json (SCENARIO.lua may be left out):\n"
+       "                  the run goes on exactly as if it had not stopped. A flag\n"
+       "                  that contradicts run.json is refused by name; --stop-at,\n"
+       "                  --quiet and the VM limits may change\n"
+       "  --override      with --resume: continue the checkpoint with the flags given\n"
+       "                  now in place of run.json's (a recipe's next stage, e.g. a\n"
+       "                  new step size after --stop-at); run.json records them\n"
+       "  --force         delete the run DIR holds and start a new one\n"
        "  --policy gpt2   fine-tune the GPT-2 prompt policy instead: --model tiny|DIR,\n"
        "                  --blocks K (trainable last blocks; default 2 for tiny, 1 for\n"
        "                  a folder), --train-embeddings (wte and wpe too; needs every\n"
@@ -360,7 +398,8 @@ const std::vector<Subcommand>& subcommands() {
       {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
        "usage: squawk eval SCENARIO.lua [--policy random|zero|constant:V|turn-hold:V|mvp|lookahead|rollout:P|mlp|gpt2]\n"
        "                   [--checkpoint FILE] [--episodes N] [--seed N] [--greedy] [--json]\n"
-       "                   [--record FILE.jsonl] [--show-prompt N]\n\n"
+       "                   [--record FILE.jsonl] [--show-prompt N] [--envs N]\n"
+       "--envs N: environments stepped together.\n\n"
        "Runs the scenario's evaluation episodes (default 1000, numbered from the\n"
        "seed) with one policy and prints Table 3's columns: success rate, mean\n"
        "episode reward and its standard deviation, then the action histogram (the\n"
@@ -396,13 +435,16 @@ const std::vector<Subcommand>& subcommands() {
        "                       separation_median_nm, separation_p5_nm}\n"
        "  --record FILE        write every episode as JSON lines (squawk render reads it)\n"
        "  --show-prompt N      gpt2: print the prompts of the first N decisions and\n"
-       "                       the action taken\n",
+       "                       the action taken\n"
+       SQUAWK_GPT2_FLAGS_HELP SQUAWK_VM_FLAGS_HELP,
        cmd_eval},
       {"table3", "table3 SCENARIO.lua   the paper's Table 3: untrained/trained MLP and GPT-2",
        "usage: squawk table3 SCENARIO.lua [--episodes N] [--seed N] [--mlp-checkpoint FILE]\n"
        "                     [--mlp-mirror-checkpoint FILE] [--gpt2-checkpoint FILE]\n"
        "                     [--gpt2-mirror-checkpoint FILE] [--model tiny|DIR]\n"
-       "                     [--csv FILE] [--json]\n\n"
+       "                     [--csv FILE [--force]] [--json] [--envs N]\n"
+       "An existing --csv file that table3 did not write is refused unless --force;\n"
+       "--envs N: environments stepped together.\n\n"
        "Evaluates the four agents of the paper's Table 3 on the same evaluation\n"
        "episodes (default 1000) with one fixed seed (default the scenario's eval\n"
        "seed): an untrained MLP (initialised from the seed), an untrained GPT-2\n"
@@ -418,7 +460,8 @@ const std::vector<Subcommand>& subcommands() {
        "with sampled actions (the table's columns) and greedy actions (the last\n"
        "column: its most frequent greedy action and that action's share). Prints a\n"
        "markdown table, then CSV (or writes the CSV to --csv FILE); --json prints\n"
-       "every row with both action histograms instead.\n",
+       "every row with both action histograms instead.\n"
+       SQUAWK_GPT2_FLAGS_HELP SQUAWK_VM_FLAGS_HELP,
        cmd_table3},
   };
   return table;

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "app/out_guard.h"
 #include "core/files.h"
 
 namespace squawk::app {
@@ -30,10 +31,11 @@ Status trim(const std::string& path, long long episodes) {
 
 }  // namespace
 
-Result<RunFolder> open_run_folder(const std::string& dir, bool resume) {
+Result<RunFolder> open_run_folder(const std::string& dir, const Args& args) {
   SQUAWK_RETURN_IF_ERROR(files::make_dirs(dir));
   RunFolder run{dir + "/checkpoint.ckpt", dir + "/log.csv", false};
-  run.resuming = resume && files::exists(run.checkpoint);
+  run.resuming = args.has("--resume") && files::exists(run.checkpoint);
+  if (!run.resuming || args.has("--override")) SQUAWK_RETURN_IF_ERROR(record_run(dir, args));
   return run;
 }
 

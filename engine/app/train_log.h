@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "app/cli.h"
 #include "core/status.h"
 #include "rl/checkpoint.h"
 #include "rl/evaluator.h"
@@ -21,8 +22,11 @@ struct RunFolder {
   bool resuming = false;   // --resume was given and the checkpoint exists
 };
 
-// Creates DIR when missing.
-Result<RunFolder> open_run_folder(const std::string& dir, bool resume);
+// Creates DIR when missing. A run that starts now (no --resume, or nothing
+// to resume), or one resumed with --override, records its settings in
+// DIR/run.json (out_guard.h); `args` are
+// the learner's parsed flags, already passed through resolve_train_argv.
+Result<RunFolder> open_run_folder(const std::string& dir, const Args& args);
 
 // A resumed run continues its own seed's random streams: error naming the
 // checkpoint when it was trained with another seed.

@@ -53,10 +53,24 @@ Result<script::VmOptions> vm_options(const Args& args) {
   return o;
 }
 
+Status check_scn_file(const std::string& path, bool scn) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    return Status::invalid(path + " is a folder; expected one FILE.scn" +
+                           (scn ? " (`squawk scn " + path + " --conformance` runs every .scn under it)" : ""));
+  if (text::lower(fs::path(path).extension().string()) == ".lua")
+    return Status::invalid(path + " is a Lua conflict-resolution scenario: `squawk train`, `squawk eval` and "
+                           "`squawk table3` take it; this command runs BlueSky .scn files (e.g. "
+                           "scenarios/demo_conflict.scn)");
+  if (!fs::exists(path, ec)) return Status::not_found("no scenario file '" + path + "'");
+  return Status::ok();
+}
+
 Result<std::string> named_scenario(const Args& args, script::VmOptions& o) {
   if (args.positional().empty() || args.positional()[0].empty()) return std::string();
+  SQUAWK_RETURN_IF_ERROR(check_scn_file(args.positional()[0], false));
   const std::string path = paths::absolute(args.positional()[0]);
-  if (!files::exists(path)) return Status::not_found("no scenario file '" + args.positional()[0] + "'");
   o.read_dirs.push_back(std::filesystem::path(path).parent_path().string());
   return path;
 }

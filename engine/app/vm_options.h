@@ -17,6 +17,11 @@ Result<script::VmOptions> vm_options(const Args& args);
 // none or an empty one was given), kNotFound when the file is absent. The file's folder
 // becomes readable in `o` (the user named it, so its siblings may be IC'd).
 Result<std::string> named_scenario(const Args& args, script::VmOptions& o);
+// Error unless `path` names a BlueSky scenario file (what scn, repl and serve
+// load): for a folder it says so (and, with `scn`, that --conformance runs
+// every .scn under one); for a .lua file, that it is a conflict-resolution
+// scenario and that train, eval and table3 take it.
+Status check_scn_file(const std::string& path, bool scn);
 // The scenario file positional()[0] of a subcommand that runs episodes: `vm`
 // from the flags with no writable folder (loading a scenario writes nothing),
 // then the strict loader into `sc`. Returns 0, or the exit code after printing

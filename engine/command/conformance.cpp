@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/text.h"
+
 namespace fs = std::filesystem;
 
 namespace squawk::command {
@@ -37,7 +39,7 @@ ConformanceReport run_conformance(const std::string& dir, const ScenarioRunOptio
   std::vector<std::string> paths;
   std::error_code ec;
   for (const auto& e : fs::recursive_directory_iterator(dir, ec))
-    if (e.is_regular_file()) paths.push_back(e.path().string());
+    if (e.is_regular_file() && text::lower(e.path().extension().string()) == ".scn") paths.push_back(e.path().string());
   std::sort(paths.begin(), paths.end());
   rep.files = static_cast<int>(paths.size());
   for (const auto& p : paths) {

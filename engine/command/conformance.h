@@ -23,7 +23,7 @@ struct ConformanceReport {
   double wall_s = 0.0;    // [s] total wall-clock time
 };
 
-// Runs every regular file under `dir` (sorted paths). `progress`, when set,
+// Runs every .scn file (any case) under `dir` (sorted paths). `progress`, when set,
 // receives one line per file.
 ConformanceReport run_conformance(const std::string& dir, const ScenarioRunOptions& opts,
                                   const std::function<void(const std::string&)>& progress = {});

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/edit_distance.h"
 #include "core/text.h"
 
 namespace squawk::command {
@@ -42,6 +43,22 @@ const Registry& Registry::instance() {
 const CommandDecl* Registry::find(std::string_view name) const {
   auto it = index_.find(text::upper(name));
   return it == index_.end() ? nullptr : &commands_[it->second];
+}
+
+std::string Registry::closest(std::string_view name) const {
+  const std::string want = text::upper(name);
+  const size_t limit = want.size() >= 5 ? 2 : 1;
+  const CommandDecl* best = nullptr;
+  size_t best_d = limit + 1;
+  for (const auto& d : commands_) {
+    size_t dist = text::edit_distance(want, d.name);
+    for (const auto& a : d.aliases) dist = std::min(dist, text::edit_distance(want, a));
+    if (dist < best_d) {
+      best_d = dist;
+      best = &d;
+    }
+  }
+  return best ? best->name : "";
 }
 
 std::string Registry::to_json() const {

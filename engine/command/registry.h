@@ -57,6 +57,9 @@ class Registry {
   const std::vector<CommandDecl>& commands() const { return commands_; }
   // Finds a command by name or alias (case-insensitive); null when unknown.
   const CommandDecl* find(std::string_view name) const;
+  // The command name or alias closest to an unknown `name` (case-insensitive
+  // edit distance at most 1, or 2 for names of 5+ letters); "" when none is.
+  std::string closest(std::string_view name) const;
 
   // JSON array of {name, aliases, args, usage, help, examples}.
   std::string to_json() const;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "command/bluesky_only.h"
 #include "command/line.h"
 #include "command/registry.h"
 #include "command/scn.h"
@@ -129,13 +130,14 @@ Result<std::string> Stack::run_command(std::string_view text, bool from_queue, b
   const std::string typed(text::trim(text));
   Resolved rc = resolve(typed, sim_.traffic());
   if (!rc.decl) {
-    if (from_queue) {
+    if (from_queue && bluesky_only(rc.name)) {
       ++tally_.skipped[rc.name];
       *skipped = true;
       return std::string();
     }
+    const std::string near = Registry::instance().closest(rc.name);
     return Status::not_found(typed + ": unknown command or aircraft " + text::quoted(rc.name) +
-                             " (`HELP` lists the commands)");
+                             (near.empty() ? "" : " - did you mean " + near + "?") + " (`HELP` lists the commands)");
   }
   if (rc.acid_unknown)
     return Status::not_found(typed + ": no aircraft " + text::quoted(rc.name) + usage_suffix(*rc.decl));
@@ -177,13 +179,16 @@ Status Stack::check(std::string_view line) const {
   return Status::ok();
 }
 
-void Stack::run_queued(const std::string& line) {
-  for (const auto& cmd : split_commands(line)) {
+void Stack::run_queued(const Queued& q) {
+  const std::string outer = where_;  // a PCALL runs queued lines inside another
+  where_ = q.where;
+  for (const auto& cmd : split_commands(q.line)) {
     bool skipped = false;
     auto r = run_command(cmd, true, &skipped);
     if (!r) {
       ++tally_.failed[reason_key(text::trim(cmd), r.status().message(), sim_.traffic())];
-      std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + r.status().message();
+      std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + (q.where.empty() ? "" : q.where + ": ") +
+                        r.status().message();
       if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
       output_.push_back(std::move(msg));
       continue;
@@ -191,12 +196,13 @@ void Stack::run_queued(const std::string& line) {
     if (!skipped) ++tally_.executed;
     if (!r->empty()) output_.push_back(*r);
   }
+  where_ = outer;
 }
 
 void Stack::process_due() {
-  std::vector<std::string> fired;
+  std::vector<Queued> fired;
   fired.swap(fired_);
-  for (const auto& cmd : fired) run_queued(cmd);
+  for (const auto& q : fired) run_queued(q);
   long ran = 0;
   while (!queue_.empty() && queue_.begin()->first.first <= sim_.simt()) {
     if (++ran > kMaxPerInstant) {  // a SCHEDULE / PCALL loop at this instant
@@ -209,15 +215,15 @@ void Stack::process_due() {
                      std::to_string(dropped) + " dropped; a SCHEDULE or PCALL loop?)");
       return;
     }
-    std::string line = std::move(queue_.begin()->second);
+    Queued q = std::move(queue_.begin()->second);
     queue_.erase(queue_.begin());
-    run_queued(line);
+    run_queued(q);
   }
 }
 
 void Stack::record_failure(const std::string& what) {
   if (++tally_.failed[what.substr(0, what.find(" ("))] > 10) return;  // counted, not repeated
-  std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + what;
+  std::string msg = "t=" + text::fmt_double(sim_.simt(), 2) + " s: " + (where_.empty() ? "" : where_ + ": ") + what;
   if (tally_.first_failures.size() < Tally::kMaxKept) tally_.first_failures.push_back(msg);
   output_.push_back(std::move(msg));
 }
@@ -240,7 +246,7 @@ void Stack::test_conditions() {
     }
     const double diff = c.target - actual;
     if (diff * c.last_diff <= 0.0) {
-      fired_.push_back(c.command);
+      fired_.push_back({c.command, c.where});
       continue;
     }
     c.last_diff = diff;
@@ -276,7 +282,7 @@ void Stack::schedule(double t, std::string line) {
                    text::quoted(line) + " dropped");
     return;
   }
-  queue_.emplace(std::make_pair(t, next_seq_++), std::move(line));
+  queue_.emplace(std::make_pair(t, next_seq_++), Queued{std::move(line), where_});
 }
 
 std::optional<double> Stack::last_queued_time() const {
@@ -342,7 +348,8 @@ Status Stack::merge_scenario(const std::string& path, const std::vector<std::str
 void Stack::merge_entries(const std::string& file, ScnFile scn, const std::vector<std::string>& args,
                           bool relative) {
   const double offset = relative ? sim_.simt() : 0.0;
-  std::vector<std::string> now;  // due already: run at once, in file order (BlueSky's merge)
+  const std::string outer = where_;  // a PCALL's own line, restored after its entries are queued
+  std::vector<Queued> now;  // due already: run at once, in file order (BlueSky's merge)
   for (auto& e : scn.entries) {
     std::string line = std::move(e.command);
     for (size_t k = 0; k < args.size(); ++k) {
@@ -350,9 +357,15 @@ void Stack::merge_entries(const std::string& file, ScnFile scn, const std::vecto
       for (size_t pos = line.find(key); pos != std::string::npos; pos = line.find(key, pos + args[k].size()))
         line.replace(pos, key.size(), args[k]);
     }
-    if (e.time + offset <= sim_.simt()) now.push_back(std::move(line));
-    else schedule(e.time + offset, std::move(line));
+    const std::string at = file + ":" + std::to_string(e.line);
+    if (e.time + offset <= sim_.simt()) {
+      now.push_back({std::move(line), at});
+    } else {
+      where_ = at;
+      schedule(e.time + offset, std::move(line));
+    }
   }
+  where_ = outer;
   for (const auto& bad : scn.rejected) {
     ++tally_.failed["(scenario file): unreadable timestamp, line skipped"];
     std::string msg = file + ":" + std::to_string(bad.line) + ": unreadable timestamp, line skipped";
@@ -360,8 +373,9 @@ void Stack::merge_entries(const std::string& file, ScnFile scn, const std::vecto
     output_.push_back(std::move(msg));
   }
   ++include_depth_;
-  for (const auto& line : now) run_queued(line);
+  for (const auto& q : now) run_queued(q);
   --include_depth_;
+  where_ = outer;
 }
 
 Status Stack::load_scenario(const std::string& path) {
@@ -410,10 +424,11 @@ std::string Stack::snapshot() const {
   namespace b = sim::bytes;
   std::string out = sim_.snapshot();
   b::put<int64_t>(out, static_cast<int64_t>(queue_.size()));
-  for (const auto& [key, line] : queue_) {
+  for (const auto& [key, q] : queue_) {
     b::put<double>(out, key.first);
     b::put<uint64_t>(out, key.second);
-    b::put_str(out, line);
+    b::put_str(out, q.line);
+    b::put_str(out, q.where);
   }
   b::put<uint64_t>(out, next_seq_);
   b::put<int64_t>(out, static_cast<int64_t>(conditions_.size()));
@@ -425,9 +440,13 @@ std::string Stack::snapshot() const {
     b::put<double>(out, c.pos.lat);
     b::put<double>(out, c.pos.lon);
     b::put_str(out, c.command);
+    b::put_str(out, c.where);
   }
   b::put<int64_t>(out, static_cast<int64_t>(fired_.size()));
-  for (const auto& f : fired_) b::put_str(out, f);
+  for (const auto& f : fired_) {
+    b::put_str(out, f.line);
+    b::put_str(out, f.where);
+  }
   b::put<int64_t>(out, static_cast<int64_t>(user_wpts_.size()));
   for (const auto& [name, p] : user_wpts_) {
     b::put_str(out, name);

@@ -70,6 +70,13 @@ struct Condition {
   double last_diff = 0.0;  // target - actual at the previous test
   GeoPoint pos;            // kDist: the reference position
   std::string command;     // run when target - actual changes sign
+  std::string where;       // "file:line" of the scenario line that set it ("" when typed)
+};
+
+// A command line waiting in the queue, with the scenario line it came from.
+struct Queued {
+  std::string line;
+  std::string where;  // "file:line" ("" for a typed command); a failure reads "t=T s: file:line: message"
 };
 
 class Stack {
@@ -103,9 +110,10 @@ class Stack {
   // PCALL: merges a scenario file. Times are relative to now unless
   // `relative` is false; %0, %1, ... are replaced by `args`.
   Status merge_scenario(const std::string& path, const std::vector<std::string>& args, bool relative);
-  // Queues a command line to run when simt >= t [s]. A full queue (10^6
-  // commands) drops it and records a failure. At most 10^5 queued commands
-  // run at one sim time; the rest due then are dropped with a failure.
+  // Queues a command line to run when simt >= t [s], reported (on failure) at
+  // the scenario line running now (SCHEDULE, DELAY from a file) or at none. A
+  // full queue (10^6 commands) drops it and records a failure. At most 10^5
+  // queued commands run at one sim time; the rest due then are dropped with a failure.
   void schedule(double t, std::string line);
 
   // Runs (queued commands, steps, conditions) up to t_end [s]; see above.
@@ -132,7 +140,10 @@ class Stack {
 
   // --- For handlers (commands_*.cpp) ----------------------------------------
   ParseContext parse_context() const;
-  void add_condition(Condition c) { conditions_.push_back(std::move(c)); }
+  void add_condition(Condition c) {
+    c.where = where_;
+    conditions_.push_back(std::move(c));
+  }
   Status define_waypoint(const std::string& name, GeoPoint pos);
   Status delete_user_waypoint(const std::string& name);
   // RESET: simulation, queue, conditions, user waypoints (seed kept).
@@ -154,10 +165,12 @@ class Stack {
 
  private:
   // Runs one command (no `;`). from_queue: it came from a scenario/schedule,
-  // so unknown command names are skipped (BlueSky forwards them to its GUI)
-  // and *skipped is set.
+  // so BlueSky commands squawk does not implement (command/bluesky_only.h:
+  // display, GUI, plugins) are skipped and *skipped is set; any other unknown
+  // name is an error that names the closest registry command.
   Result<std::string> run_command(std::string_view text, bool from_queue, bool* skipped);
-  void run_queued(const std::string& line);
+  // Runs a queued line; failures are counted and reported at q.where.
+  void run_queued(const Queued& q);
   // The scenario file `path` resolves to and its entries, checked against the
   // nesting cap and the read filter.
   Result<std::pair<std::string, ScnFile>> read_included(const std::string& path) const;
@@ -170,10 +183,11 @@ class Stack {
   sim::Simulation sim_;
   std::shared_ptr<const NavDb> navdb_;
   std::string base_dir_ = ".";
-  std::map<std::pair<double, uint64_t>, std::string> queue_;  // (time [s], arrival) -> line
+  std::map<std::pair<double, uint64_t>, Queued> queue_;  // (time [s], arrival) -> line
   uint64_t next_seq_ = 0;
   std::vector<Condition> conditions_;
-  std::vector<std::string> fired_;  // condition commands due at the next step
+  std::vector<Queued> fired_;  // condition commands due at the next step
+  std::string where_;          // "file:line" of the queued line running now ("" when none)
   std::map<std::string, GeoPoint> user_wpts_;
   uint64_t seed_ = 0;
   double dtmult_ = 1.0;

@@ -45,7 +45,7 @@ Status LlmConfig::validate() const {
                            " is not an http:// or https:// address (e.g. http://127.0.0.1:11434)");
   if (model.empty())
     return Status::invalid("LLM at " + url +
-                           ": no model given (set SQUAWK_LLM_MODEL, --llm-model or model=)");
+                           ": no model named: set SQUAWK_LLM_MODEL (or --llm-model, or model= in Lua) to a model the server has");
   if (context_size <= 0 || max_tokens <= 0)
     return Status::invalid(describe() + ": context size and max tokens must be positive");
   for (const double t : {timeout_s, connect_timeout_s}) {
@@ -61,18 +61,25 @@ Status LlmConfig::validate() const {
   return Status::ok();
 }
 
-Result<LlmConfig> config_from_env() {
+Result<LlmConfig> env_fields() {
   LlmConfig c;
   c.url = env("SQUAWK_LLM_URL");
-  if (c.url.empty()) return Status::not_found("no LLM configured (SQUAWK_LLM_URL is not set)");
   c.model = env("SQUAWK_LLM_MODEL");
   c.api_key = env("SQUAWK_LLM_API_KEY");
   const std::string api = env("SQUAWK_LLM_API");
   if (api.empty()) {
     c.api = infer_api(c.url);
   } else {
-    SQUAWK_ASSIGN_OR_RETURN(c.api, parse_api(api));
+    auto parsed = parse_api(api);
+    if (!parsed) return parsed.status().with_context("SQUAWK_LLM_API");
+    c.api = *parsed;
   }
+  return c;
+}
+
+Result<LlmConfig> config_from_env() {
+  SQUAWK_ASSIGN_OR_RETURN(LlmConfig c, env_fields());
+  if (c.url.empty()) return Status::not_found("no LLM configured (SQUAWK_LLM_URL is not set)");
   SQUAWK_RETURN_IF_ERROR(c.validate().with_context("SQUAWK_LLM_*"));
   return c;
 }

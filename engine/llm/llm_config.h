@@ -44,7 +44,11 @@ struct LlmConfig {
 };
 
 // The configuration from the environment; kNotFound when SQUAWK_LLM_URL is
-// unset or empty (no LLM configured), kInvalidArgument when it is malformed.
+// unset or empty (no LLM configured), kInvalidArgument when it is malformed
+// (the message names the variable: SQUAWK_LLM_MODEL unset, a bad URL or API).
 Result<LlmConfig> config_from_env();
+// What the environment says, not yet validated (flags may complete it before
+// LlmConfig::validate); error only for an unknown SQUAWK_LLM_API.
+Result<LlmConfig> env_fields();
 
 }  // namespace squawk::llm

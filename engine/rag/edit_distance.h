@@ -1,17 +1,10 @@
-// The one edit distance of squawk (retrieval's typo folding, the grammar's
-// spelling fixer, callsign and fix matching).
-//
-// Contract: optimal string alignment distance, byte-wise and case-sensitive:
-// an insertion, a deletion, a substitution or a swap of two neighbouring
-// characters each cost 1 ("tunr" -> "turn" is 1). Pure; O(|a|·|b|) time,
-// O(|b|) memory.
+// Retrieval's name for the one edit distance of squawk (core/edit_distance.h).
 #pragma once
 
-#include <cstddef>
-#include <string_view>
+#include "core/edit_distance.h"
 
 namespace squawk::rag {
 
-size_t edit_distance(std::string_view a, std::string_view b);
+using text::edit_distance;
 
 }  // namespace squawk::rag

@@ -42,7 +42,7 @@ Limits limits_at(double t) { return t <= 300.0 ? Limits{100.0, 50.0, 2.0} : Limi
 
 }  // namespace
 
-TEST_CASE("BlueSky reference: single-behaviour scenarios with OpenAP within 100 m / 50 ft / 2 kt") {
+TEST_CASE("BlueSky reference: single-behaviour scenarios with OpenAP within 100 m / 50 ft / 2 kt" * doctest::test_suite("shared")) {
   if (!files::exists(kOpenap)) {
     MESSAGE("skipped: " << kOpenap << " is absent (OpenAP data is not part of squawk)");
     return;

@@ -182,7 +182,7 @@ TEST_CASE("runways: an unknown runway, a grass runway or missing data is refused
   REQUIRE(p.exec("CRE KL1 A320 EHEH 90 FL100 250"));  // the airport alone still resolves
 }
 
-TEST_CASE("runways: CRE at runways flies as in the real BlueSky (OpenAP)") {
+TEST_CASE("runways: CRE at runways flies as in the real BlueSky (OpenAP)" * doctest::test_suite("shared")) {
   const std::string openap = std::string(SQUAWK_SOURCE_DIR) + "/../shared/openap/data";
   if (!files::exists(openap)) {
     MESSAGE("skipped: " << openap << " is absent (OpenAP data is not part of squawk)");

@@ -39,7 +39,7 @@ TEST_CASE("scn: line endings, comments, continuation, timestamps, stable sort") 
   CHECK(f.rejected[0].line == 8);
 }
 
-TEST_CASE("scn: all BlueSky scenario files parse like BlueSky's readscn") {
+TEST_CASE("scn: all BlueSky scenario files parse like BlueSky's readscn" * doctest::test_suite("shared")) {
   const fs::path dir = fs::path(SQUAWK_SHARED_DIR) / "bluesky" / "scenario";
   if (!fs::is_directory(dir)) {
     MESSAGE("skipped: " << dir.string() << " not found (BlueSky data is optional)");

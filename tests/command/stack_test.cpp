@@ -325,7 +325,7 @@ TEST_CASE("copies are independent (the translator validates on a scratch copy)")
   CHECK(s.sim().n() == 1);
 }
 
-TEST_CASE("navdata: airports, fixes and navaids resolve where BlueSky accepts them") {
+TEST_CASE("navdata: airports, fixes and navaids resolve where BlueSky accepts them" * doctest::test_suite("shared")) {
   const fs::path dir = fs::path(SQUAWK_SHARED_DIR) / "bluesky" / "navdata";
   if (!fs::is_directory(dir)) {
     MESSAGE("skipped: " << dir.string() << " not found (BlueSky navdata is optional)");

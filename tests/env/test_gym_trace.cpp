@@ -68,7 +68,7 @@ EpisodeSetup setup_from(const Trace& t) {
 
 }  // namespace
 
-TEST_CASE("creconfs and the waypoint reproduce the trace's initial state from integer draws") {
+TEST_CASE("creconfs and the waypoint reproduce the trace's initial state from integer draws" * doctest::test_suite("shared")) {
   Trace t;
   if (!load_trace(t)) {
     MESSAGE("skipped: ../shared/facts/bsgym_trace_seed42.csv is absent");
@@ -111,7 +111,7 @@ TEST_CASE("creconfs and the waypoint reproduce the trace's initial state from in
   CHECK(found);
 }
 
-TEST_CASE("gym rules with the 89 m/s ground cap follow the real BlueSky-Gym trace") {
+TEST_CASE("gym rules with the 89 m/s ground cap follow the real BlueSky-Gym trace" * doctest::test_suite("shared")) {
   Trace t;
   if (!load_trace(t)) {
     MESSAGE("skipped: ../shared/facts/bsgym_trace_seed42.csv is absent");
@@ -149,7 +149,7 @@ TEST_CASE("gym rules with the 89 m/s ground cap follow the real BlueSky-Gym trac
   CHECK(env->stats().total_reward == doctest::Approx(-60.78).epsilon(1e-3));
 }
 
-TEST_CASE("without the ground cap the ownship keeps 150 m/s and leaves the trace") {
+TEST_CASE("without the ground cap the ownship keeps 150 m/s and leaves the trace" * doctest::test_suite("shared")) {
   Trace t;
   if (!load_trace(t)) {
     MESSAGE("skipped: ../shared/facts/bsgym_trace_seed42.csv is absent");

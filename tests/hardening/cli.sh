@@ -56,12 +56,12 @@ rm -rf "$tmp"
 # 16: a checkpoint that failed to save (full disk) after its log row was
 # written: --resume drops the row instead of repeating it.
 tmp=$(mktemp -d)
-tr=(train scenarios/horizontal_cr.lua --eval-every 64 --eval-episodes 8 --out "$tmp/run" --quiet)
-"$sq" "${tr[@]}" --episodes 64 >/dev/null 2>&1
+tr=(train scenarios/horizontal_cr.lua --eval-every 64 --eval-episodes 8 --episodes 128 --out "$tmp/run" --quiet)
+"$sq" "${tr[@]}" --stop-at 64 >/dev/null 2>&1
 cp "$tmp/run/checkpoint.ckpt" "$tmp/ckpt_64"
-"$sq" "${tr[@]}" --episodes 128 --resume >/dev/null 2>&1
+"$sq" "${tr[@]}" --resume >/dev/null 2>&1
 cp "$tmp/ckpt_64" "$tmp/run/checkpoint.ckpt"  # the save at 128 episodes "failed"
-"$sq" "${tr[@]}" --episodes 128 --resume >/dev/null 2>&1
+"$sq" "${tr[@]}" --resume >/dev/null 2>&1
 rows=$(cut -d, -f1 "$tmp/run/log.csv" | tail -n +2 | tr '\n' ' ')
 if [ "$rows" = "64 128 " ]; then echo "ok   16 resume after a failed save"; pass=$((pass + 1));
 else echo "FAIL 16 resume after a failed save: episodes column '$rows'"; fails=$((fails + 1)); fi

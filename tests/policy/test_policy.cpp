@@ -439,7 +439,8 @@ TEST_CASE("squawk train --policy gpt2 --resume continues after a kill") {
   CHECK(at_kill < 400);
   CHECK(killed->progress.updates == at_kill / 4);
   const long long target = at_kill + 8;
-  REQUIRE(std::system((base + " --resume --episodes " + std::to_string(target) + " > /dev/null 2>&1").c_str()) == 0);
+  // --resume takes the run's flags (run.json); --stop-at ends it 8 episodes on.
+  REQUIRE(std::system((base + " --episodes 400 --resume --stop-at " + std::to_string(target) + " > /dev/null 2>&1").c_str()) == 0);
   auto done = rl::load_prompt_checkpoint(ckpt);
   REQUIRE(done.is_ok());
   CHECK(done->progress.episodes == target);

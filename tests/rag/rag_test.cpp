@@ -136,7 +136,7 @@ TEST_CASE("recall counts hits, ASK and unknown commands apart") {
   CHECK(r.misses[0].rfind("3:", 0) == 0);
 }
 
-TEST_CASE("Recall@5 on the development corpus, registry documentation alone") {
+TEST_CASE("Recall@5 on the development corpus, registry documentation alone" * doctest::test_suite("shared")) {
   const std::string path = std::string(SQUAWK_SHARED_DIR) + "/corpora/nl2trafscript_dev.tsv";
   if (!squawk::files::exists(path)) {
     MESSAGE("skipped: " << path << " is absent");

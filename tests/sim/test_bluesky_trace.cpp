@@ -40,7 +40,7 @@ std::vector<Row> read_trace(const std::string& path) {
 }
 }  // namespace
 
-TEST_CASE("replay of a recorded BlueSky-Gym episode matches BlueSky's trajectories") {
+TEST_CASE("replay of a recorded BlueSky-Gym episode matches BlueSky's trajectories" * doctest::test_suite("shared")) {
   const std::string path = std::string(SQUAWK_SHARED_DIR) + "/facts/bsgym_trace_seed42.csv";
   if (!std::filesystem::exists(path)) {
     MESSAGE("skipped: " << path << " not found (needs the shared facts folder)");

@@ -1,9 +1,9 @@
-#include "rag/edit_distance.h"
+#include "core/edit_distance.h"
 
 #include <algorithm>
 #include <vector>
 
-namespace squawk::rag {
+namespace squawk::text {
 
 size_t edit_distance(std::string_view a, std::string_view b) {
   // Three rows: two back (for swaps), one back, current.
@@ -22,4 +22,4 @@ size_t edit_distance(std::string_view a, std::string_view b) {
   return back1[b.size()];
 }
 
-}  // namespace squawk::rag
+}  // namespace squawk::text
