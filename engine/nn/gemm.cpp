@@ -304,12 +304,26 @@ const char* bf16_library() {
                         : dnnl_has_bf16_units() ? "AVX512-BF16"
                                                 : "no bf16 instructions";
     return "oneDNN " + std::to_string(v->major) + "." + std::to_string(v->minor) + "." +
-           std::to_string(v->patch) + " (" + units + ")";
+           std::to_string(v->patch) + " on " + units;
   }();
   return name.c_str();
 #else
   return "none (bf16 emulated in fp32)";
 #endif
+}
+
+std::string use_precision(std::optional<Precision> requested) {
+  const Precision p = requested.value_or(fastest_precision());
+  if (p == Precision::kBf16 && !bf16_native()) {
+    set_gemm_precision(Precision::kFp32);
+    return std::string("precision: fp32; bf16 was asked for, but this CPU or build has no native bf16 "
+                       "products (bf16 library: ") + bf16_library() + ")";
+  }
+  set_gemm_precision(p);
+  std::string line = std::string("precision: ") + precision_name(p);
+  if (p == Precision::kBf16) line += std::string(" products with fp32 accumulation, ") + bf16_library();
+  line += requested ? " (--precision)" : " (the fastest here; --precision bf16|fp32 chooses)";
+  return line;
 }
 
 void gemm_ref(bool trans_a, bool trans_b, int m, int n, int k, float alpha, const float* a, int lda,

@@ -18,6 +18,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/status.h"
@@ -67,8 +69,12 @@ void set_gemm_precision(Precision p);
 bool bf16_native();
 // The fastest precision here: bf16 when bf16_native(), else fp32.
 Precision fastest_precision();
-// "oneDNN 2.6.3 (avx512_core_bf16)" or similar, or "none (fp32 emulation)".
+// "oneDNN 2.6.3 on AVX512-BF16" or similar, or "none (bf16 emulated in fp32)".
 const char* bf16_library();
+// Sets the process precision from a request (--precision; absent: the
+// fastest here) and returns the one line to print at start. bf16 requested
+// where it is not native runs fp32, and the line says why.
+std::string use_precision(std::optional<Precision> requested);
 
 // Plain-loop references of gemm() and gemm_bf16() for tests (double accumulation).
 void gemm_ref(bool trans_a, bool trans_b, int m, int n, int k, float alpha, const float* a, int lda,
