@@ -39,7 +39,8 @@ int info(const Args& a) {
                 l->tokenizer->num_merges(), l->tokenizer->eot() ? ", <|endoftext|>" : "");
   else
     std::printf("tokenizer   none\n");
-  std::printf("gemm        %s\n", nn::gemm_backend());
+  std::printf("gemm        %s\nbf16 gemm   %s\nprecision   %s\n", nn::gemm_backend(), nn::bf16_library(),
+              nn::precision_name(nn::gemm_precision()));
   return kExitOk;
 }
 
