@@ -5,15 +5,20 @@
 // default first: the heap setting cannot be undone); then, with the heap kept
 // as `squawk` keeps it, decisions per second at B = 1 and batched and the time
 // of one fine-tuning update, for the tiny offline model and for a GPT-2 small
-// folder. Prints figures only; asserts nothing.
+// folder, the latter with fp32 products and again with bf16 products (same
+// seeds, one process), with the projection of the paper's run (20 000
+// episodes) at each. Prints figures only; asserts nothing.
 //
-// usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M] [--threads N]
+// usage: bench_policy [--write-small DIR] [--small DIR] [--small-only] [--batch N] [--update-episodes M]
+//                     [--threads N]
 //   --write-small DIR  writes a GPT-2 small folder with random weights in the
 //                      Hugging Face format (config.json, model.safetensors,
 //                      vocab.json, merges.txt: the gpt2 checkpoint writer, and
 //                      the tiny policy's prompt-trained BPE vocabulary, since
 //                      no real GPT-2 vocabulary is reachable offline) and exits
-//   --small DIR        also measures the policy on that folder (k = 1)
+//   --small DIR        also measures the policy on that folder (k = 1), at fp32
+//                      then at bf16 products
+//   --small-only       skips the heap and tiny-model measurements
 //   --threads N        matrix-product threads (default 1; the other core may
 //                      be busy, so compare 1 and 2 from the same machine state)
 // Observations come from the training episodes of scenarios/horizontal_cr.lua.
@@ -48,7 +53,13 @@ std::vector<float> observations(const env::HorizontalCrConfig& cfg, int n) {
   return {envs->observations().begin(), envs->observations().end()};
 }
 
-int measure(const std::string& model, const script::Scenario& sc, int batch, int update_episodes) {
+// The paper's fine-tuning run [episodes].
+constexpr double kPaperEpisodes = 20000;
+
+// Decisions per second and one update of update_episodes episodes; the
+// update's seconds per episode go to *s_per_episode when given.
+int measure(const std::string& model, const script::Scenario& sc, int batch, int update_episodes,
+            double* s_per_episode = nullptr) {
   app::Gpt2PolicyOptions o;
   o.model = model;
   auto g = app::make_gpt2_policy(o, sc.train_env, {});
@@ -87,6 +98,7 @@ int measure(const std::string& model, const script::Scenario& sc, int batch, int
   std::printf("  update of %d episodes (%d decisions, rollout + forward/backward + Adam): %.2f s, %.1f ms per "
               "decision\n",
               update_episodes, st.samples, s, st.samples > 0 ? 1e3 * s / st.samples : 0.0);
+  if (s_per_episode) *s_per_episode = s / update_episodes;
   if (!p.error().is_ok()) std::fprintf(stderr, "bench_policy: %s\n", p.error().message().c_str());
   return p.error().is_ok() ? 0 : 1;
 }
@@ -155,6 +167,7 @@ int write_small(const std::string& dir, const script::Scenario& sc) {
 int main(int argc, char** argv) {
   std::string small, write;
   int batch = 32, update_episodes = 8, threads = 1;
+  bool small_only = false;
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
     if (std::strcmp(argv[i], "--small") == 0 && more) {
@@ -167,10 +180,12 @@ int main(int argc, char** argv) {
       update_episodes = std::atoi(argv[++i]);
     } else if (std::strcmp(argv[i], "--threads") == 0 && more) {
       threads = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--small-only") == 0) {
+      small_only = true;
     } else {
       std::fprintf(stderr,
-                   "usage: bench_policy [--write-small DIR] [--small DIR] [--batch N] [--update-episodes M] "
-                   "[--threads N]\n");
+                   "usage: bench_policy [--write-small DIR] [--small DIR] [--small-only] [--batch N] "
+                   "[--update-episodes M] [--threads N]\n");
       return 2;
     }
   }
@@ -186,7 +201,25 @@ int main(int argc, char** argv) {
   }
   nn::set_num_threads(threads);
   std::printf("%d matrix-product thread%s\n", threads, threads == 1 ? "" : "s");
-  if (int rc = measure_heap(*sc); rc != 0) return rc;
-  if (int rc = measure("tiny", *sc, batch, update_episodes); rc != 0) return rc;
-  return small.empty() ? 0 : measure(small, *sc, batch, update_episodes);
+  if (small_only && small.empty()) {
+    std::fprintf(stderr, "bench_policy: --small-only needs --small DIR\n");
+    return 2;
+  }
+  if (!small_only) {
+    if (int rc = measure_heap(*sc); rc != 0) return rc;
+    if (int rc = measure("tiny", *sc, batch, update_episodes); rc != 0) return rc;
+  }
+  if (small.empty()) return 0;
+  // The same seeds at each precision: the update's episodes start alike.
+  double s_fp32 = 0.0, s_bf16 = 0.0;
+  for (nn::Precision p : {nn::Precision::kFp32, nn::Precision::kBf16}) {
+    nn::set_gemm_precision(p);
+    std::printf("%s products%s\n", nn::precision_name(p),
+                p == nn::Precision::kBf16 ? (std::string(", ") + nn::bf16_library()).c_str() : "");
+    if (int rc = measure(small, *sc, batch, update_episodes, p == nn::Precision::kBf16 ? &s_bf16 : &s_fp32); rc != 0)
+      return rc;
+  }
+  std::printf("paper run (%.0f episodes, %s): fp32 %.1f h, bf16 %.1f h (%.2fx faster)\n", kPaperEpisodes, small.c_str(),
+              s_fp32 * kPaperEpisodes / 3600, s_bf16 * kPaperEpisodes / 3600, s_fp32 / s_bf16);
+  return 0;
 }

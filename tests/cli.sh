@@ -32,6 +32,12 @@ expect "demo summary"    0 "waypoint reached +yes" -- "$sq" demo --quiet
 expect "demo gpt2"       0 "advisories the translator could not turn into a command: 0" -- "$sq" demo --policy gpt2 --quiet
 expect "demo bad policy" 2 "expected mlp or gpt2" -- "$sq" demo --policy nope
 expect "gpt2 bench help"  0 "squawk gpt2 bench" -- "$sq" gpt2 bench --help
+# --precision: the default is printed at start; bf16 where it is not native
+# (ONEDNN_MAX_CPU_ISA hides the bf16 instructions from oneDNN) runs fp32 with a notice.
+expect "gpt2 precision default" 0 "^precision: (bf16 products with fp32 accumulation, .*|fp32) \(the fastest here" -- "$sq" gpt2 logits tiny "hi"
+expect "gpt2 precision fp32" 0 "^precision: fp32 \(--precision\)" -- "$sq" gpt2 logits tiny "hi" --precision fp32
+expect "gpt2 no native bf16" 0 "^precision: fp32; bf16 was asked for, but this CPU or build has no native bf16" -- env ONEDNN_MAX_CPU_ISA=AVX512_CORE "$sq" gpt2 logits tiny "hi" --precision bf16
+expect "gpt2 bad precision" 2 "--precision: precision 'fp16' is neither bf16 nor fp32" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --out "$(mktemp -d)" --precision fp16
 # Both learners take the same learner flags, checked the same way.
 expect "train gpt2 gamma"   2 "train gamma must lie in" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --out "$(mktemp -d)" --gamma 2
 expect "train mlp gamma"    2 "train gamma must lie in" -- "$sq" train scenarios/horizontal_cr.lua --out "$(mktemp -d)" --gamma 2

@@ -39,7 +39,8 @@ int info(const Args& a) {
                 l->tokenizer->num_merges(), l->tokenizer->eot() ? ", <|endoftext|>" : "");
   else
     std::printf("tokenizer   none\n");
-  std::printf("gemm        %s\n", nn::gemm_backend());
+  std::printf("gemm        %s\nbf16 gemm   %s\nprecision   %s\n", nn::gemm_backend(), nn::bf16_library(),
+              nn::precision_name(nn::gemm_precision()));
   return kExitOk;
 }
 
@@ -130,6 +131,11 @@ int bench(const Args& a) {
     if (!t) return usage_error("gpt2", t.status().message());
     opt.threads = *t;
   }
+  if (auto v = a.get("--precision")) {  // default: both, interleaved
+    auto p = nn::parse_precision(*v);
+    if (!p) return usage_error("gpt2", "--precision: " + p.status().message());
+    opt.precisions = {*p};
+  }
   auto secs = a.get_double("--seconds", opt.min_seconds);
   if (!secs) return usage_error("gpt2", secs.status().message());
   opt.min_seconds = *secs;
@@ -208,11 +214,13 @@ int cmd_gpt2(const ArgV& argv) {
   if (!argv.empty() && argv[0] == "imitate") return cmd_gpt2_imitate(ArgV(argv.begin() + 1, argv.end()));
   auto a = Args::parse(argv, {{"--max-tokens", "--top-k", "--seed", "--seq", "--batch", "--threads",
                                "--seconds", "--merges", "--layers", "--heads", "--width", "--context",
-                               "--vocab"},
+                               "--vocab", "--precision"},
                               {"--json", "--tiny"}});
   if (!a) return usage_error("gpt2", a.status().message());
   if (a->positional().empty()) return usage_error("gpt2", "missing action (info, generate, logits, bench, train-bpe, init, pretrain, imitate)");
   const std::string& what = a->positional()[0];
+  if (what == "info" || what == "generate" || what == "logits")
+    if (Status st = apply_precision_flag(*a); !st.is_ok()) return usage_error("gpt2", st.message());
   if (what == "info") return info(*a);
   if (what == "generate") return generate(*a);
   if (what == "logits") return logits(*a);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,7 @@
 #include "app/vm_options.h"
 #include "core/paths.h"
 #include "env/vec_env.h"
+#include "nn/gemm.h"
 #include "rl/evaluator.h"
 #include "rl/vpg.h"
 #include "script/scenario.h"
@@ -174,7 +176,19 @@ int cmd_train_gpt2(const ArgV& argv) {
   return kExitOk;
 }
 
+Status apply_precision_flag(const Args& args) {
+  std::optional<nn::Precision> want;
+  if (auto v = args.get("--precision")) {
+    auto p = nn::parse_precision(*v);
+    if (!p) return Status::invalid("--precision: " + p.status().message());
+    want = *p;
+  }
+  std::fprintf(stderr, "%s\n", nn::use_precision(want).c_str());
+  return Status::ok();
+}
+
 Result<Gpt2PolicyOptions> gpt2_options(const Args& args) {
+  SQUAWK_RETURN_IF_ERROR(apply_precision_flag(args));
   Gpt2PolicyOptions o;
   o.model = args.get_or("--model", "tiny");
   o.prompt = args.get_or("--prompt", "");

@@ -91,10 +91,11 @@ double mean_variance(const std::vector<float>& obs, size_t from, int d) {
 
 int cmd_gpt2_pretrain(const ArgV& argv) {
   auto args = Args::parse(argv, with_vm_flags({{"--prompt", "--episodes", "--steps", "--batch", "--lr", "--seed",
-                                                "--model-seed", "--holdout", "--log-every", "--readout"},
+                                                "--model-seed", "--holdout", "--log-every", "--readout", "--precision"},
                                                {"--quiet", "--force"}}));
   if (!args) return usage_error("gpt2", args.status().message());
   if (args->positional().size() != 2) return usage_error("gpt2", "pretrain expects SCENARIO.lua OUT_DIR");
+  if (Status st = apply_precision_flag(*args); !st.is_ok()) return usage_error("gpt2", st.message());
   const std::pair<const char*, long long> defaults[] = {{"--episodes", 600}, {"--steps", 3000}, {"--batch", 16},
                                                         {"--seed", 1},       {"--model-seed", 0}, {"--holdout", 256},
                                                         {"--log-every", 100}};

@@ -33,10 +33,12 @@ Result<Model> Model::create(const Config& cfg, const std::vector<TensorSpec>& ex
 std::span<float> Model::tensor(const std::string& name) {
   const TensorSpec* t = layout_.find(name);
   if (!t) return {};
+  frozen16_stale_ = true;
   return std::span<float>(params_).subspan(t->offset, t->size);
 }
 
 void Model::init_random(Rng& rng, float std) {
+  frozen16_stale_ = true;
   const float proj_std = std / std::sqrt(2.0f * static_cast<float>(config().n_layer));
   const size_t extras = layout_.extras_start();
   for (const TensorSpec& t : layout_.tensors()) {
@@ -100,12 +102,27 @@ void Model::embed(const Batch& batch, int pos0, float* x) const {
     }
 }
 
-void Model::block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a, bool store,
-                          std::span<const int> rows) const {
+nn::Precision Model::prepare_precision() const {
+  const nn::Precision prec = nn::gemm_precision();
+  if (prec != nn::Precision::kBf16) return prec;
+  const size_t from = frozen16_stale_ || params16_.size() != params_.size() ? 0 : params_.size() - grads_.size();
+  params16_.resize(params_.size());
+  nn::to_bf16(params_.data() + from, params_.size() - from, params16_.data() + from);
+  frozen16_stale_ = false;
+  return prec;
+}
+
+const nn::bf16* Model::w16(nn::Precision prec, size_t offset) const {
+  return prec == nn::Precision::kBf16 ? params16_.data() + offset : nullptr;
+}
+
+void Model::block_forward(nn::Precision prec, int l, float* x, int R, const AttnArgs& attn, Acts& a,
+                          bool store, std::span<const int> rows) const {
   const Config& c = config();
   const int C = c.n_embd, Q = rows.empty() ? R : static_cast<int>(rows.size());
   const size_t RC = static_cast<size_t>(R) * C, QC = static_cast<size_t>(Q) * C;
-  const float* p = params_.data() + layout_.block_start(l);
+  const size_t base = layout_.block_start(l);
+  const float* p = params_.data() + base;
   const BlockOffsets& o = layout_.block();
   a.ln1.resize(RC);
   a.qkv.resize(3 * RC);
@@ -126,7 +143,8 @@ void Model::block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a,
   nn::layernorm_forward(a.ln1.data(), store ? a.ln1_mean.data() : nullptr,
                         store ? a.ln1_rstd.data() : nullptr, x, p + o.ln1_w, p + o.ln1_b, R, C,
                         c.ln_eps);
-  nn::linear_forward(a.qkv.data(), a.ln1.data(), p + o.attn_w, p + o.attn_b, R, C, 3 * C);
+  nn::linear_forward(prec, a.qkv.data(), a.ln1.data(), p + o.attn_w, w16(prec, base + o.attn_w),
+                     p + o.attn_b, R, C, 3 * C);
   float* att = store ? a.att.data() : nullptr;
   if (rows.empty()) {
     nn::attention_forward(a.atty.data(), att, a.qkv.data(), attn.k_ext[l], attn.v_ext[l], C,
@@ -139,36 +157,40 @@ void Model::block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a,
       std::copy(x + static_cast<size_t>(rows[q]) * C, x + static_cast<size_t>(rows[q] + 1) * C,
                 x + static_cast<size_t>(q) * C);
   }
-  nn::linear_forward(proj.data(), a.atty.data(), p + o.proj_w, p + o.proj_b, Q, C, C);
+  nn::linear_forward(prec, proj.data(), a.atty.data(), p + o.proj_w, w16(prec, base + o.proj_w),
+                     p + o.proj_b, Q, C, C);
   for (size_t i = 0; i < QC; ++i) x[i] += proj[i];
   if (store) a.x_mid.assign(x, x + QC);
   nn::layernorm_forward(a.ln2.data(), store ? a.ln2_mean.data() : nullptr,
                         store ? a.ln2_rstd.data() : nullptr, x, p + o.ln2_w, p + o.ln2_b, Q, C,
                         c.ln_eps);
-  nn::linear_forward(a.fch.data(), a.ln2.data(), p + o.fc_w, p + o.fc_b, Q, C, 4 * C);
+  nn::linear_forward(prec, a.fch.data(), a.ln2.data(), p + o.fc_w, w16(prec, base + o.fc_w),
+                     p + o.fc_b, Q, C, 4 * C);
   nn::gelu_forward(a.fch_gelu.data(), a.fch.data(), 4 * QC);
-  nn::linear_forward(proj.data(), a.fch_gelu.data(), p + o.fcproj_w, p + o.fcproj_b, Q, 4 * C, C);
+  nn::linear_forward(prec, proj.data(), a.fch_gelu.data(), p + o.fcproj_w,
+                     w16(prec, base + o.fcproj_w), p + o.fcproj_b, Q, 4 * C, C);
   for (size_t i = 0; i < QC; ++i) x[i] += proj[i];
 }
 
-void Model::block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& attn,
-                           std::span<const int> rows) {
+void Model::block_backward(nn::Precision prec, int l, Acts& a, float* dx, int R,
+                           const AttnArgs& attn, std::span<const int> rows) {
   const int C = config().n_embd, Q = rows.empty() ? R : static_cast<int>(rows.size());
   const size_t RC = static_cast<size_t>(R) * C, QC = static_cast<size_t>(Q) * C;
-  const float* p = params_.data() + layout_.block_start(l);
-  float* g = grads_.data() + (layout_.block_start(l) - (params_.size() - grads_.size()));
+  const size_t base = layout_.block_start(l);
+  const float* p = params_.data() + base;
+  float* g = grads_.data() + (base - (params_.size() - grads_.size()));
   const BlockOffsets& o = layout_.block();
   std::vector<float> dfch_gelu(4 * QC, 0.0f), dfch(4 * QC, 0.0f), dln(RC, 0.0f);
-  nn::linear_backward(dfch_gelu.data(), g + o.fcproj_w, g + o.fcproj_b, dx, a.fch_gelu.data(),
-                      p + o.fcproj_w, Q, 4 * C, C);
+  nn::linear_backward(prec, dfch_gelu.data(), g + o.fcproj_w, g + o.fcproj_b, dx, a.fch_gelu.data(),
+                      p + o.fcproj_w, w16(prec, base + o.fcproj_w), Q, 4 * C, C);
   nn::gelu_backward(dfch.data(), a.fch.data(), dfch_gelu.data(), 4 * QC);
-  nn::linear_backward(dln.data(), g + o.fc_w, g + o.fc_b, dfch.data(), a.ln2.data(), p + o.fc_w, Q,
-                      C, 4 * C);
+  nn::linear_backward(prec, dln.data(), g + o.fc_w, g + o.fc_b, dfch.data(), a.ln2.data(),
+                      p + o.fc_w, w16(prec, base + o.fc_w), Q, C, 4 * C);
   nn::layernorm_backward(dx, g + o.ln2_w, g + o.ln2_b, dln.data(), a.x_mid.data(), p + o.ln2_w,
                          a.ln2_mean.data(), a.ln2_rstd.data(), Q, C);
   std::vector<float> datty(QC, 0.0f), dqkv(3 * RC, 0.0f);
-  nn::linear_backward(datty.data(), g + o.proj_w, g + o.proj_b, dx, a.atty.data(), p + o.proj_w, Q,
-                      C, C);
+  nn::linear_backward(prec, datty.data(), g + o.proj_w, g + o.proj_b, dx, a.atty.data(),
+                      p + o.proj_w, w16(prec, base + o.proj_w), Q, C, C);
   if (rows.empty()) {
     nn::attention_backward(dqkv.data(), datty.data(), a.att.data(), a.qkv.data(), attn.k_ext[l],
                            attn.v_ext[l], C, attn.shape);
@@ -183,8 +205,8 @@ void Model::block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& att
                 dx + static_cast<size_t>(rows[q]) * C);
   }
   std::fill(dln.begin(), dln.end(), 0.0f);
-  nn::linear_backward(dln.data(), g + o.attn_w, g + o.attn_b, dqkv.data(), a.ln1.data(),
-                      p + o.attn_w, R, C, 3 * C);
+  nn::linear_backward(prec, dln.data(), g + o.attn_w, g + o.attn_b, dqkv.data(), a.ln1.data(),
+                      p + o.attn_w, w16(prec, base + o.attn_w), R, C, 3 * C);
   nn::layernorm_backward(dx, g + o.ln1_w, g + o.ln1_b, dln.data(), a.x_in.data(), p + o.ln1_w,
                          a.ln1_mean.data(), a.ln1_rstd.data(), R, C);
 }
@@ -238,9 +260,10 @@ Status Model::extend(PrefixCache& cache, std::span<const int> tokens,
   embed(batch, P, x.data());
   Acts a;
   cache.tokens.insert(cache.tokens.end(), tokens.begin(), tokens.end());
+  const nn::Precision prec = prepare_precision();
   for (int l = 0; l < L; ++l) {
     cache.resid[l].insert(cache.resid[l].end(), x.begin(), x.end());
-    block_forward(l, x.data(), T, attn, a, false);
+    block_forward(prec, l, x.data(), T, attn, a, false);
     for (int t = 0; t < T; ++t) {
       const float* row = a.qkv.data() + static_cast<size_t>(t) * 3 * C;
       cache.k[l].insert(cache.k[l].end(), row + C, row + 2 * C);
@@ -273,8 +296,9 @@ Status Model::forward_last(const PrefixCache& cache, const std::vector<std::vect
   embed(batch, P, x.data());
   Acts a;
   const std::vector<int> last = last_rows(batch, 0);
+  const nn::Precision prec = prepare_precision();
   for (int l = 0; l < c.n_layer; ++l)
-    block_forward(l, x.data(), R, attn, a, false, l == c.n_layer - 1 ? last : std::vector<int>{});
+    block_forward(prec, l, x.data(), R, attn, a, false, l == c.n_layer - 1 ? last : std::vector<int>{});
   const float* lnf = params_.data() + layout_.ln_f();
   hidden.resize(static_cast<size_t>(batch.B) * C);
   nn::layernorm_forward(hidden.data(), nullptr, nullptr, x.data(), lnf, lnf + C, batch.B, C,
@@ -292,12 +316,13 @@ Status Model::logits_all(std::span<const int> tokens, std::vector<float>& logits
   std::vector<float> x(static_cast<size_t>(T) * C), out(x.size());
   embed(batch, 0, x.data());
   Acts a;
-  for (int l = 0; l < c.n_layer; ++l) block_forward(l, x.data(), T, attn, a, false);
+  const nn::Precision prec = prepare_precision();
+  for (int l = 0; l < c.n_layer; ++l) block_forward(prec, l, x.data(), T, attn, a, false);
   const float* lnf = params_.data() + layout_.ln_f();
   nn::layernorm_forward(out.data(), nullptr, nullptr, x.data(), lnf, lnf + C, T, C, c.ln_eps);
   logits.resize(static_cast<size_t>(T) * c.vocab_size);
-  nn::gemm(false, true, T, c.vocab_size, C, 1.0f, out.data(), C, params_.data() + layout_.wte(), C,
-           0.0f, logits.data(), c.vocab_size);
+  nn::gemm(prec, false, true, T, c.vocab_size, C, 1.0f, out.data(), C, params_.data() + layout_.wte(),
+           C, 0.0f, logits.data(), c.vocab_size, w16(prec, layout_.wte()));
   return Status::ok();
 }
 
@@ -320,8 +345,9 @@ Status Model::lm_logits(std::span<const float> hidden, std::vector<float>& out) 
                            " floats, not a multiple of C = " + str(C));
   const int B = static_cast<int>(hidden.size() / C);
   out.resize(static_cast<size_t>(B) * V);
-  nn::gemm(false, true, B, V, C, 1.0f, hidden.data(), C, params_.data() + layout_.wte(), C, 0.0f,
-           out.data(), V);
+  const nn::Precision prec = prepare_precision();
+  nn::gemm(prec, false, true, B, V, C, 1.0f, hidden.data(), C, params_.data() + layout_.wte(), C, 0.0f,
+           out.data(), V, w16(prec, layout_.wte()));
   return Status::ok();
 }
 
@@ -374,6 +400,7 @@ Status Model::set_trainable_blocks(int k, bool embeddings) {
     return Status::invalid("gpt2: training wte and wpe needs all " + str(L) + " blocks trainable, not " + str(k));
   trainable_ = k;
   embeddings_ = embeddings;
+  frozen16_stale_ = true;
   const size_t start = embeddings ? layout_.wte() : k > 0 ? layout_.block_start(L - k) : layout_.ln_f();
   grads_.assign(params_.size() - start, 0.0f);
   tail_acts_.clear();
@@ -382,6 +409,7 @@ Status Model::set_trainable_blocks(int k, bool embeddings) {
 }
 
 std::span<float> Model::trainable_params() {
+  frozen16_stale_ = true;
   return std::span<float>(params_).subspan(params_.size() - grads_.size());
 }
 
@@ -414,7 +442,8 @@ Status Model::forward_train(const PrefixCache& cache, const std::vector<std::vec
   // The last block computes only each sequence's last row (the rows leading
   // x, or xr, afterwards): nothing reads the others.
   auto rows_at = [&](int l, int row0) { return l == L - 1 ? last_rows(batch, row0) : std::vector<int>{}; };
-  for (int l = 0; l < s; ++l) block_forward(l, x.data(), BT, frozen, a, false, rows_at(l, 0));
+  const nn::Precision prec = prepare_precision();
+  for (int l = 0; l < s; ++l) block_forward(prec, l, x.data(), BT, frozen, a, false, rows_at(l, 0));
   // Trainable blocks: the prefix rows lead, recomputed from the cached input of block s.
   const int inline_rows = s < L ? P : 0;
   std::vector<float> xr;
@@ -433,7 +462,7 @@ Status Model::forward_train(const PrefixCache& cache, const std::vector<std::vec
                          std::vector<const float*>(L, nullptr)};
   tail_acts_.resize(trainable_);
   for (int l = s; l < L; ++l)
-    block_forward(l, xr.data(), inline_rows + BT, tail, tail_acts_[l - s], true,
+    block_forward(prec, l, xr.data(), inline_rows + BT, tail, tail_acts_[l - s], true,
                   rows_at(l, inline_rows));
   const float* out = s < L ? xr.data() : x.data();
   lnf_in_.assign(out, out + static_cast<size_t>(batch.B) * C);
@@ -445,6 +474,7 @@ Status Model::forward_train(const PrefixCache& cache, const std::vector<std::vec
                         lnf + C, batch.B, C, c.ln_eps);
   train_batch_ = std::move(batch);
   train_prefix_ = inline_rows;
+  train_prec_ = prec;
   train_prefix_tokens_ = embeddings_ ? cache.tokens : std::vector<int>{};
   return Status::ok();
 }
@@ -472,7 +502,8 @@ Status Model::backward(std::span<const float> dhidden) {
                          std::vector<const float*>(L, nullptr)};
   const std::vector<int> last = last_rows(train_batch_, P);
   for (int l = L - 1; l >= s; --l)
-    block_backward(l, tail_acts_[l - s], dx.data(), R, tail, l == L - 1 ? last : std::vector<int>{});
+    block_backward(train_prec_, l, tail_acts_[l - s], dx.data(), R, tail,
+                   l == L - 1 ? last : std::vector<int>{});
   if (embeddings_) embed_backward(train_batch_, train_prefix_tokens_, dx.data());
   return Status::ok();
 }
@@ -517,7 +548,8 @@ Result<double> Model::lm_loss_backward(const std::vector<std::vector<int>>& seqs
   const AttnArgs attn = {{B, T, C, c.n_head, 0, true}, std::vector<const float*>(L, nullptr),
                          std::vector<const float*>(L, nullptr)};
   std::vector<Acts> acts(L);
-  for (int l = 0; l < L; ++l) block_forward(l, x.data(), R, attn, acts[l], true);
+  const nn::Precision prec = prepare_precision();
+  for (int l = 0; l < L; ++l) block_forward(prec, l, x.data(), R, attn, acts[l], true);
   const float* lnf = params_.data() + layout_.ln_f();
   std::vector<float> hidden(x.size()), mean(R), rstd(R);
   nn::layernorm_forward(hidden.data(), mean.data(), rstd.data(), x.data(), lnf, lnf + C, R, C, c.ln_eps);
@@ -525,7 +557,8 @@ Result<double> Model::lm_loss_backward(const std::vector<std::vector<int>>& seqs
   std::vector<float> h(static_cast<size_t>(N) * C), logits(static_cast<size_t>(N) * V);
   for (int i = 0; i < N; ++i)
     std::copy_n(hidden.data() + static_cast<size_t>(rows[i]) * C, C, h.data() + static_cast<size_t>(i) * C);
-  nn::gemm(false, true, N, V, C, 1.0f, h.data(), C, params_.data() + layout_.wte(), C, 0.0f, logits.data(), V);
+  nn::gemm(prec, false, true, N, V, C, 1.0f, h.data(), C, params_.data() + layout_.wte(), C, 0.0f,
+           logits.data(), V, w16(prec, layout_.wte()));
   // Loss and dlogits = (softmax - onehot) / N.
   double loss = 0.0;
   for (int i = 0; i < N; ++i) {
@@ -539,15 +572,16 @@ Result<double> Model::lm_loss_backward(const std::vector<std::vector<int>>& seqs
   }
   // Backward: the head (dh and the tied wte), ln_f, the blocks, the embeddings.
   float* gwte = grads_.data() + layout_.wte();
-  nn::gemm(true, false, V, C, N, 1.0f, logits.data(), V, h.data(), C, 1.0f, gwte, C);
+  nn::gemm(prec, true, false, V, C, N, 1.0f, logits.data(), V, h.data(), C, 1.0f, gwte, C);
   std::vector<float> dh(static_cast<size_t>(N) * C), dhidden(x.size(), 0.0f), dx(x.size(), 0.0f);
-  nn::gemm(false, false, N, C, V, 1.0f, logits.data(), V, params_.data() + layout_.wte(), C, 0.0f, dh.data(), C);
+  nn::gemm(prec, false, false, N, C, V, 1.0f, logits.data(), V, params_.data() + layout_.wte(), C, 0.0f,
+           dh.data(), C, w16(prec, layout_.wte()));
   for (int i = 0; i < N; ++i)
     std::copy_n(dh.data() + static_cast<size_t>(i) * C, C, dhidden.data() + static_cast<size_t>(rows[i]) * C);
   float* glnf = grads_.data() + layout_.ln_f();
   nn::layernorm_backward(dx.data(), glnf, glnf + C, dhidden.data(), x.data(), lnf, mean.data(),
                          rstd.data(), R, C);
-  for (int l = L - 1; l >= 0; --l) block_backward(l, acts[l], dx.data(), R, attn);
+  for (int l = L - 1; l >= 0; --l) block_backward(prec, l, acts[l], dx.data(), R, attn);
   embed_backward(batch, {}, dx.data());
   return loss / N;
 }

@@ -25,6 +25,18 @@
 //   save_model(out_dir, *m);  // the head travels as extra tensors
 // The cache stays valid for forward_train across steps; rebuild it before using
 // forward_last with updated weights.
+//
+// Precision: every forward reads nn::gemm_precision(). In bf16 the matrix
+// products (the linear layers, the LM head and their backward) take bf16
+// operands with fp32 accumulation, against a bf16 rounding of the fp32
+// parameters that the model keeps: the trainable range is rounded again at
+// each forward (an optimiser writes it through trainable_params()), the rest
+// when a mutable accessor (params(), tensor(), trainable_params()) or
+// init_random / set_trainable_blocks was called since the last forward.
+// Writing frozen parameters through a span taken before a forward and written
+// after it is not seen. LayerNorm, softmax, attention, GELU, the residual
+// stream, gradients and the parameters themselves stay fp32. A model is not
+// safe to run from two threads at once in bf16 (the rounding is shared).
 #pragma once
 
 #include <span>
@@ -35,6 +47,7 @@
 #include "core/status.h"
 #include "gpt2/config.h"
 #include "gpt2/params.h"
+#include "nn/gemm.h"
 
 namespace squawk::gpt2 {
 
@@ -55,7 +68,10 @@ class Model {
 
   const Config& config() const { return layout_.config(); }
   const ParamLayout& layout() const { return layout_; }
-  std::span<float> params() { return params_; }
+  std::span<float> params() {
+    frozen16_stale_ = true;
+    return params_;
+  }
   std::span<const float> params() const { return params_; }
   // The named tensor's floats; empty when there is no such tensor.
   std::span<float> tensor(const std::string& name);
@@ -140,13 +156,17 @@ class Model {
   // One block over R rows of x [R,C] (in place). With rows (strictly
   // increasing, not inline-prefix rows), only those queries are computed past
   // the keys and values: the block's output for rows[q] is written to row q.
-  void block_forward(int l, float* x, int R, const AttnArgs& attn, Acts& a, bool store,
-                     std::span<const int> rows = {}) const;
+  void block_forward(nn::Precision prec, int l, float* x, int R, const AttnArgs& attn, Acts& a,
+                     bool store, std::span<const int> rows = {}) const;
   // Backward of block_forward with store: dx holds the gradient of its output
   // (the first rows.size() rows when rows are given) and becomes that of its
   // input [R,C].
-  void block_backward(int l, Acts& a, float* dx, int R, const AttnArgs& attn,
+  void block_backward(nn::Precision prec, int l, Acts& a, float* dx, int R, const AttnArgs& attn,
                       std::span<const int> rows = {});
+  // nn::gemm_precision(), after bringing params16_ up to date when it is bf16.
+  nn::Precision prepare_precision() const;
+  // The bf16 rounding of the parameter at `offset` in bf16, null in fp32.
+  const nn::bf16* w16(nn::Precision prec, size_t offset) const;
   // Row of each sequence's last token in a block layout starting at row0.
   static std::vector<int> last_rows(const Batch& batch, int row0);
   // grads of wte and wpe += dx [P + B T, C], the gradient of the block-0 input
@@ -164,6 +184,11 @@ class Model {
   int train_prefix_ = 0;
   std::vector<int> train_prefix_tokens_;  // [P] when the embeddings train
   std::vector<float> lnf_in_, lnf_mean_, lnf_rstd_;
+  nn::Precision train_prec_ = nn::Precision::kFp32;  // of the last forward_train
+  // bf16 rounding of params_ (bf16 forwards only) and whether its frozen
+  // range may be out of date (see the contract at the top).
+  mutable std::vector<nn::bf16> params16_;
+  mutable bool frozen16_stale_ = true;
 };
 
 }  // namespace squawk::gpt2

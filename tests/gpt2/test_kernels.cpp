@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/rng.h"
@@ -52,6 +54,79 @@ TEST_CASE("gemm equals the plain-loop reference for every transpose") {
       nn::gemm_ref(ta, tb, m, n, k, 0.7f, a.data(), lda, b.data(), ldb, 0.3f, c2.data(), n);
       CHECK(max_diff(c1, c2) < 1e-4f);
     }
+}
+
+TEST_CASE("bf16 rounding is to nearest, ties to even, and the vector path equals the scalar one") {
+  CHECK(nn::to_bf16(1.0f) == 0x3f80);
+  CHECK(nn::from_bf16(0x3f80) == 1.0f);
+  // 1 + 2^-8 lies halfway between 1 and 1 + 2^-7: even (1) wins; 1 + 3*2^-8 rounds up to 1 + 2^-6.
+  CHECK(nn::from_bf16(nn::to_bf16(1.0f + 0x1p-8f)) == 1.0f);
+  CHECK(nn::from_bf16(nn::to_bf16(1.0f + 3 * 0x1p-8f)) == 1.0f + 0x1p-6f);
+  CHECK(nn::from_bf16(nn::to_bf16(1.0f + 0x1p-8f + 0x1p-20f)) == 1.0f + 0x1p-7f);
+  CHECK(std::isnan(nn::from_bf16(nn::to_bf16(std::nanf("")))));
+  CHECK(std::isinf(nn::from_bf16(nn::to_bf16(3.4e38f))));  // rounds past the largest bf16
+  auto x = randn(53, 4);
+  x[5] = std::nanf("");
+  x[17] = -INFINITY;
+  std::vector<nn::bf16> v(x.size());
+  nn::to_bf16(x.data(), x.size(), v.data());
+  for (size_t i = 0; i < x.size(); ++i) {
+    INFO("element " << i << " = " << x[i]);
+    if (std::isnan(x[i])) CHECK(std::isnan(nn::from_bf16(v[i])));
+    else CHECK(v[i] == nn::to_bf16(x[i]));
+  }
+}
+
+TEST_CASE("bf16 gemm equals the plain-loop reference on the rounded operands for every transpose") {
+  INFO("bf16 library: " << std::string(nn::bf16_library()));
+  const int m = 37, n = 29, k = 53;
+  for (int ta = 0; ta < 2; ++ta)
+    for (int tb = 0; tb < 2; ++tb)
+      for (const auto& [alpha, beta] : {std::pair{1.0f, 0.0f}, std::pair{0.7f, 0.3f}, std::pair{1.0f, 1.0f}}) {
+        INFO("ta " << ta << " tb " << tb << " alpha " << alpha << " beta " << beta);
+        auto a = randn(static_cast<size_t>(m) * k, 1), b = randn(static_cast<size_t>(k) * n, 2);
+        std::vector<nn::bf16> a16(a.size()), b16(b.size());
+        nn::to_bf16(a.data(), a.size(), a16.data());
+        nn::to_bf16(b.data(), b.size(), b16.data());
+        auto c1 = randn(static_cast<size_t>(m) * n, 3), c2 = c1, c3 = c1, c4 = c1, c5 = c1;
+        const int lda = ta ? m : k, ldb = tb ? k : n;
+        nn::gemm_bf16(ta, tb, m, n, k, alpha, a16.data(), lda, b16.data(), ldb, beta, c1.data(), n);
+        nn::gemm_bf16_ref(ta, tb, m, n, k, alpha, a16.data(), lda, b16.data(), ldb, beta, c2.data(), n);
+        CHECK(max_diff(c1, c2) < 1e-4f);
+        // The fp32-operand entry point rounds A and B (or takes B pre-rounded) the same way.
+        nn::gemm(nn::Precision::kBf16, ta, tb, m, n, k, alpha, a.data(), lda, b.data(), ldb, beta, c3.data(), n);
+        nn::gemm(nn::Precision::kBf16, ta, tb, m, n, k, alpha, a.data(), lda, b.data(), ldb, beta, c4.data(), n,
+                 b16.data());
+        CHECK(max_diff(c3, c2) < 1e-4f);
+        CHECK(max_diff(c4, c2) < 1e-4f);
+        // And it is not the fp32 product: bf16 rounding shows (|error| ~ 2^-9 sqrt(k)).
+        nn::gemm_ref(ta, tb, m, n, k, alpha, a.data(), lda, b.data(), ldb, beta, c5.data(), n);
+        CHECK(max_diff(c3, c5) > 1e-3f);
+        CHECK(max_diff(c3, c5) < 0.1f);
+      }
+}
+
+TEST_CASE("bf16 gemm with leading dimensions wider than the matrices") {
+  const int m = 5, n = 7, k = 9, lda = 12, ldb = 10, ldc = 11;
+  auto a = randn(static_cast<size_t>(m) * lda, 5), b = randn(static_cast<size_t>(k) * ldb, 6);
+  std::vector<nn::bf16> a16(a.size()), b16(b.size());
+  nn::to_bf16(a.data(), a.size(), a16.data());
+  nn::to_bf16(b.data(), b.size(), b16.data());
+  auto c1 = randn(static_cast<size_t>(m) * ldc, 7), c2 = c1;
+  nn::gemm_bf16(false, false, m, n, k, 1.0f, a16.data(), lda, b16.data(), ldb, 1.0f, c1.data(), ldc);
+  nn::gemm_bf16_ref(false, false, m, n, k, 1.0f, a16.data(), lda, b16.data(), ldb, 1.0f, c2.data(), ldc);
+  CHECK(max_diff(c1, c2) < 1e-4f);  // includes the columns past n, which both leave alone
+}
+
+TEST_CASE("precision names parse, and the fastest precision is bf16 exactly where it is native") {
+  CHECK(*nn::parse_precision("bf16") == nn::Precision::kBf16);
+  CHECK(*nn::parse_precision("fp32") == nn::Precision::kFp32);
+  auto bad = nn::parse_precision("fp16");
+  REQUIRE_FALSE(bad.is_ok());
+  CHECK(bad.status().message().find("'fp16' is neither bf16 nor fp32") != std::string::npos);
+  CHECK(std::string(nn::precision_name(nn::fastest_precision())) == (nn::bf16_native() ? "bf16" : "fp32"));
+  MESSAGE("bf16 library: " << std::string(nn::bf16_library()) << "; fastest precision: "
+                           << std::string(nn::precision_name(nn::fastest_precision())));
 }
 
 TEST_CASE("attention kernel equals the plain-loop reference, with and without a prefix") {

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "gpt2/model.h"
 #include "gpt2/readout.h"
 #include "nn/adam.h"
+#include "nn/gemm.h"
 
 using namespace squawk;
 using namespace squawk::gpt2;
@@ -69,6 +71,22 @@ float max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
 
 const Config kSmall{3, 4, 32, 48, 61, 1e-5f};
 
+// Runs the GPT-2 engine's products at p until the end of the scope.
+class PrecisionScope {
+ public:
+  explicit PrecisionScope(nn::Precision p) { nn::set_gemm_precision(p); }
+  ~PrecisionScope() { nn::set_gemm_precision(nn::Precision::kFp32); }
+  PrecisionScope(const PrecisionScope&) = delete;
+  PrecisionScope& operator=(const PrecisionScope&) = delete;
+};
+
+// Largest |x| of a vector, the scale errors are read against.
+float max_abs(const std::vector<float>& v) {
+  float m = 0.0f;
+  for (float x : v) m = std::max(m, std::fabs(x));
+  return m;
+}
+
 // (loss(p + eps) - loss(p - eps)) / (2 eps) with eps = 1e-2; p is restored.
 double central_difference(float& p, const std::function<double()>& loss) {
   const float saved = p, eps = 1e-2f;
@@ -103,11 +121,21 @@ TEST_CASE("forward logits equal the independent numpy GPT-2") {
     for (const auto& v : row) want.push_back(v.get<float>());
   auto loaded = load_model(dir);
   REQUIRE(loaded.is_ok());
-  std::vector<float> got;
+  std::vector<float> got, got16;
   REQUIRE(loaded->logits_all(tokens, got).is_ok());
   const float diff = max_abs_diff(got, want);
-  MESSAGE("max |squawk - numpy| over " << got.size() << " logits: " << diff);
+  MESSAGE("max |squawk - numpy| over " << got.size() << " logits (max |logit| " << max_abs(want) << "): fp32 " << diff);
   CHECK(diff < 1e-4f);
+  {
+    const PrecisionScope bf16(nn::Precision::kBf16);
+    REQUIRE(loaded->logits_all(tokens, got16).is_ok());
+  }
+  const float diff16 = max_abs_diff(got16, want);
+  MESSAGE("bf16 products: " << diff16);
+  // This model's weights (std 0.2, LayerNorm gains around 1) make logits and
+  // attention far hotter than GPT-2's; bf16's 8-bit mantissa then costs ~1 %.
+  CHECK(diff16 < 2e-2f * max_abs(want));
+  CHECK(diff16 > 1e-4f);  // the bf16 path ran
   std::filesystem::remove_all(dir);
 }
 
@@ -178,8 +206,10 @@ TEST_CASE("bad inputs to the model are errors") {
 }
 
 // Checks every trainable tensor of a model with the last k blocks (and the
-// embeddings when `embeddings`) trainable against central differences.
-static void check_tail_gradients(int k, bool embeddings) {
+// embeddings when `embeddings`) trainable: the gradient from products at
+// `prec` against fp32 central differences, |analytic - fd| <= atol + rtol |fd|.
+static void check_tail_gradients(int k, bool embeddings, nn::Precision prec = nn::Precision::kFp32,
+                                 double atol = 2e-3, double rtol = 2e-2) {
   const std::vector<TensorSpec> extras = {{"head.weight", {32, 3}, 0, 0}};
   Model model = random_model(kSmall, 5, extras);
   REQUIRE(model.set_trainable_blocks(k, embeddings).is_ok());
@@ -217,9 +247,13 @@ static void check_tail_gradients(int k, bool embeddings) {
   };
   model.zero_grads();
   std::vector<float> dh;
-  loss_and_dhidden(&dh);
-  REQUIRE(model.backward(dh).is_ok());
+  {
+    const PrecisionScope scope(prec);
+    loss_and_dhidden(&dh);
+    REQUIRE(model.backward(dh).is_ok());
+  }
   std::vector<float> analytic(model.grads().begin(), model.grads().end());
+  double worst = 0.0;
 
   const size_t start = model.params().size() - model.grads().size();
   int checked = 0, tensors = 0;
@@ -237,12 +271,14 @@ static void check_tail_gradients(int k, bool embeddings) {
       const double fd = central_difference(model.params()[i], [&] { return loss_and_dhidden(nullptr); });
       const double an = analytic[i - start];
       INFO(t.name << "[" << (i - t.offset) << "]: analytic " << an << ", finite difference " << fd);
-      CHECK(std::fabs(an - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
+      CHECK(std::fabs(an - fd) <= atol + rtol * std::fabs(fd));
+      worst = std::max(worst, std::fabs(an - fd) / (atol + rtol * std::fabs(fd)));
       ++checked;
     }
   }
   CHECK(tensors == k * 12 + 2 + 1 + (embeddings ? 2 : 0));
-  MESSAGE(checked << " finite-difference checks over " << tensors << " trainable tensors");
+  MESSAGE(checked << " finite-difference checks over " << tensors << " trainable tensors, "
+                  << std::string(nn::precision_name(prec)) << " products; worst error " << worst << " of the tolerance");
 
   // The training forward equals the inference forward.
   std::vector<float> a, b;
@@ -255,13 +291,21 @@ TEST_CASE("tail backward matches finite differences for every trainable tensor")
   SUBCASE("no block: ln_f and the head") { check_tail_gradients(0, false); }
   SUBCASE("last 2 of 3 blocks") { check_tail_gradients(2, false); }
   SUBCASE("every block and the embeddings") { check_tail_gradients(3, true); }
+  // bf16 products, fp32 finite differences: tolerances stated in docs/gpt2_bf16.md.
+  SUBCASE("bf16: last 2 of 3 blocks") { check_tail_gradients(2, false, nn::Precision::kBf16, 2e-2, 5e-2); }
+  SUBCASE("bf16: every block and the embeddings") {
+    check_tail_gradients(3, true, nn::Precision::kBf16, 2e-2, 5e-2);
+  }
   SUBCASE("the embeddings need every block") {
     Model model = random_model(kSmall, 5);
     CHECK(model.set_trainable_blocks(2, true).message().find("needs all 3 blocks") != std::string::npos);
   }
 }
 
-TEST_CASE("next-token loss: gradient matches finite differences, and it equals the logits' cross-entropy") {
+// The next-token loss from products at `prec`: equal to the cross-entropy of
+// logits_all at the same precision (relative loss_eps), its gradient against
+// fp32 central differences within atol + rtol |fd|.
+static void check_lm_loss(nn::Precision prec, double loss_eps, double atol, double rtol) {
   Model model = random_model(kSmall, 8);
   const std::vector<std::vector<int>> seqs = {{3, 9, 27, 20, 1, 5}, {60, 2, 2}, {7, 7, 7, 7}};
   CHECK(model.lm_loss_backward(seqs, 0).status().message().find("embeddings trainable") != std::string::npos);
@@ -288,9 +332,12 @@ TEST_CASE("next-token loss: gradient matches finite differences, and it equals t
     return sum / n;
   };
   model.zero_grads();
-  auto loss = model.lm_loss_backward(seqs, from);
-  REQUIRE(loss.is_ok());
-  CHECK(*loss == doctest::Approx(reference()).epsilon(1e-5));
+  {
+    const PrecisionScope scope(prec);
+    auto loss = model.lm_loss_backward(seqs, from);
+    REQUIRE(loss.is_ok());
+    CHECK(*loss == doctest::Approx(reference()).epsilon(loss_eps));
+  }
   const std::vector<float> analytic(model.grads().begin(), model.grads().end());
   const int C = kSmall.n_embd;
   int checked = 0;
@@ -304,11 +351,78 @@ TEST_CASE("next-token loss: gradient matches finite differences, and it equals t
                                                              : static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1)));
       const double fd = central_difference(model.params()[i], reference);
       INFO(t.name << "[" << (i - t.offset) << "]: analytic " << analytic[i] << ", finite difference " << fd);
-      CHECK(std::fabs(analytic[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
+      CHECK(std::fabs(analytic[i] - fd) <= atol + rtol * std::fabs(fd));
       ++checked;
     }
   }
   CHECK(checked == 3 * static_cast<int>(model.layout().tensors().size()));
+}
+
+TEST_CASE("next-token loss: gradient matches finite differences, and it equals the logits' cross-entropy") {
+  SUBCASE("fp32") { check_lm_loss(nn::Precision::kFp32, 1e-5, 2e-3, 2e-2); }
+  SUBCASE("bf16 products") { check_lm_loss(nn::Precision::kBf16, 1e-3, 2e-2, 5e-2); }
+}
+
+TEST_CASE("bf16: KV-cached decode, token by token, equals the bf16 full forward and is near fp32") {
+  Model model = random_model(kSmall, 11);
+  const std::vector<int> seq = {5, 9, 2, 44, 60, 1, 7, 10, 11, 12};
+  std::vector<float> full16, full32, h;
+  REQUIRE(model.forward_last({}, {seq}, full32).is_ok());
+  const PrecisionScope bf16(nn::Precision::kBf16);
+  REQUIRE(model.forward_last({}, {seq}, full16).is_ok());
+  PrefixCache inc;
+  for (int t : seq) REQUIRE(model.extend(inc, std::vector<int>{t}, &h).is_ok());
+  const float d_cache = max_abs_diff(h, full16), d_fp32 = max_abs_diff(full16, full32);
+  MESSAGE("bf16 decode vs bf16 full forward " << d_cache << ", bf16 vs fp32 " << d_fp32 << " (max |hidden| "
+                                              << max_abs(full32) << ")");
+  CHECK(d_cache < 1e-2f);
+  CHECK(d_fp32 < 5e-2f);
+  CHECK(d_fp32 > 1e-5f);  // the bf16 path ran
+}
+
+TEST_CASE("bf16: the model rounds again weights written through its accessors or by an optimiser") {
+  Model model = random_model(kSmall, 12);
+  REQUIRE(model.set_trainable_blocks(1).is_ok());
+  const std::span<float> trainable = model.trainable_params();  // held, as Adam holds it
+  const std::vector<std::vector<int>> seqs = {{5, 9, 2, 44}, {60, 1}};
+  const PrecisionScope bf16(nn::Precision::kBf16);
+  // The bf16 forward of a fresh copy of the model's current parameters.
+  auto fresh = [&] {
+    Model copy = random_model(kSmall, 12);
+    std::copy(model.params().begin(), model.params().end(), copy.params().begin());
+    std::vector<float> h;
+    REQUIRE(copy.forward_last({}, seqs, h).is_ok());
+    return h;
+  };
+  std::vector<float> h0, h1, h2;
+  REQUIRE(model.forward_last({}, seqs, h0).is_ok());
+  for (float& w : model.tensor("h.0.attn.c_attn.weight")) w *= 1.5f;  // frozen block 0
+  REQUIRE(model.forward_last({}, seqs, h1).is_ok());
+  CHECK(max_abs_diff(h1, h0) > 1e-3f);
+  CHECK(max_abs_diff(h1, fresh()) == 0.0f);
+  for (float& w : trainable) w *= 0.5f;  // an optimiser step through the held span
+  REQUIRE(model.forward_last({}, seqs, h2).is_ok());
+  CHECK(max_abs_diff(h2, h1) > 1e-3f);
+  CHECK(max_abs_diff(h2, fresh()) == 0.0f);
+}
+
+TEST_CASE("GPT-2 small with GPT-2's random initialisation: bf16 logits within 2e-2 of fp32") {
+  auto m = Model::create(Config::gpt2_small());
+  REQUIRE(m.is_ok());
+  Rng rng(124);
+  m->init_random(rng);
+  const std::vector<int> tokens = {464, 3290, 318, 257, 1332, 286, 262, 6459, 50256, 0, 17, 9999};
+  std::vector<float> z32, z16;
+  REQUIRE(m->logits_all(tokens, z32).is_ok());
+  {
+    const PrecisionScope bf16(nn::Precision::kBf16);
+    REQUIRE(m->logits_all(tokens, z16).is_ok());
+  }
+  const float diff = max_abs_diff(z16, z32);
+  MESSAGE("GPT-2 small, " << tokens.size() << " tokens x " << Config::gpt2_small().vocab_size
+                          << " logits: max |bf16 - fp32| " << diff << ", max |logit| " << max_abs(z32));
+  CHECK(diff < 2e-2f);
+  CHECK(diff > 1e-5f);  // the bf16 path ran
 }
 
 TEST_CASE("Adam on the trainable tail and a head fits a small target") {
