@@ -2,6 +2,15 @@
 // dependencies). Positions are projected flat around the view centre:
 // x = (lon - lon0) * 60 cos(lat0) NM, y = (lat - lat0) * 60 NM, then scaled
 // by the zoom (pixels per NM). Drag pans, the wheel zooms about the cursor.
+//
+// Labels never overprint: each frame the symbols (aircraft, CPA crosses,
+// route waypoints) are laid down first, then the data blocks, the conflict
+// labels and the route labels are placed one after another, each at the
+// first position around its anchor that overlaps no symbol and no label
+// placed before it, with a leader line back to the anchor. A data block that
+// was dragged keeps its offset from its aircraft. The placement of the last
+// frame is the label model: Scope.labels() [{kind, key, text, x, y, w, h}]
+// and Scope.symbols() [{kind, key, x, y, w, h}] in canvas pixels.
 "use strict";
 
 const Scope = (() => {
@@ -9,8 +18,8 @@ const Scope = (() => {
   const ctx = canvas.getContext("2d");
   const colors = {
     bg: "#050908", grid: "#15302a", gridText: "#3f6b5c", ac: "#7cf0b0", sel: "#5ad8ff",
-    conf: "#ff4d4d", warn: "#ffb347", route: "#5ad8ff", fix: "#2f4c42", apt: "#7d9c90",
-    text: "#b9d8cb", pz: "#2f6f58", fixText: "#3d5f53",
+    conf: "#ff4d4d", warn: "#ffb347", later: "#e0d36a", route: "#5ad8ff", fix: "#2f4c42", apt: "#7d9c90",
+    text: "#b9d8cb", pz: "#2f6f58", fixText: "#3d5f53", leader: "#4f7a6a",
   };
   const view = { lat0: 52, lon0: 4, ppnm: 8, fitted: false };
   const opts = { pz: false, fixes: true, vectorMin: 1 };
@@ -22,6 +31,8 @@ const Scope = (() => {
   let nav = { airports: [], fixes: [] }, navKey = "", navPending = false;
   let onSelect = () => {};
   let dirty = true;
+  const offsets = new Map();  // id -> [dx, dy] [px] a dragged data block's top-left from its aircraft
+  let labels = [], symbols = [];
 
   const nm = (lat, lon) => [(lon - view.lon0) * 60 * Math.cos(view.lat0 * Math.PI / 180), (lat - view.lat0) * 60];
   function px(lat, lon) {
@@ -131,40 +142,138 @@ const Scope = (() => {
     return m;
   }
 
-  function drawRoute(a) {
-    if (!a.route || a.route.length === 0) return;
-    let k = a.route.findIndex((w) => w.name === a.active_wpt);
-    if (k < 0) return;
-    ctx.strokeStyle = colors.route; ctx.fillStyle = colors.route; ctx.lineWidth = 1; ctx.setLineDash([6, 4]);
-    ctx.beginPath(); ctx.moveTo(...px(a.lat, a.lon));
-    for (let i = k; i < a.route.length; i++) ctx.lineTo(...px(a.route[i].lat, a.route[i].lon));
-    ctx.stroke(); ctx.setLineDash([]);
-    ctx.font = "11px monospace";
-    for (let i = k; i < a.route.length; i++) {
-      const w = a.route[i], [x, y] = px(w.lat, w.lon);
-      ctx.strokeRect(x - 3, y - 3, 6, 6);
-      ctx.fillText(w.name + (w.alt_ft != null ? ` ${fl(w.alt_ft)}` : ""), x + 6, y - 6);
+  const fl = (ft) => String(Math.round(ft / 100)).padStart(3, "0");
+  const mmss = (s) => `${Math.floor(s / 60)}:${String(Math.floor(s % 60)).padStart(2, "0")}`;
+
+  // --- Label placement ------------------------------------------------------
+  const PAD = 2;  // [px] free margin kept around every label
+  const hits = (a, b) => a.x < b.x + b.w + PAD && b.x < a.x + a.w + PAD && a.y < b.y + b.h + PAD && b.y < a.y + a.h + PAD;
+  function overlapArea(a, b) {
+    const w = Math.min(a.x + a.w, b.x + b.w) - Math.max(a.x, b.x) + PAD, h = Math.min(a.y + a.h, b.y + b.h) - Math.max(a.y, b.y) + PAD;
+    return w > 0 && h > 0 ? w * h : 0;
+  }
+  // Directions tried around an anchor, preferred first (up-right as blocks usually sit).
+  const DIRS = [[1, -1], [1, 1], [-1, -1], [-1, 1], [1, 0], [-1, 0], [0, -1], [0, 1]];
+  const RINGS = [14, 26, 42, 62, 88, 120, 160];  // [px] distances from the anchor
+  // The top-left of a w x h box at the first free candidate around (ax, ay);
+  // when the rings are full, the free spot of a 10 px grid over the canvas
+  // nearest the anchor (a longer leader line); when none is free, the ring
+  // candidate with the least overlap (off-canvas counts as overlap).
+  function place(ax, ay, w, h, taken) {
+    let best = null, bestScore = Infinity;
+    const score = (box, limit) => {
+      let sc = box.x < 0 || box.y < 0 || box.x + box.w > canvas.width || box.y + box.h > canvas.height ? box.w * box.h : 0;
+      for (const t of taken) { if (sc >= limit) break; sc += overlapArea(box, t); }
+      return sc;
+    };
+    for (const r of RINGS) for (const [ux, uy] of DIRS) {
+      const d = ux && uy ? r * 0.75 : r;
+      const x = ux > 0 ? ax + d : ux < 0 ? ax - d - w : ax - w / 2;
+      const y = uy > 0 ? ay + d * 0.6 : uy < 0 ? ay - d * 0.6 - h : ay - h / 2;
+      const box = { x, y, w, h }, sc = score(box, bestScore);
+      if (sc === 0) return box;
+      if (sc < bestScore) { best = box; bestScore = sc; }
+    }
+    const grid = [];
+    for (let x = 0; x + w <= canvas.width; x += 10) for (let y = 0; y + h <= canvas.height; y += 10)
+      grid.push([Math.hypot(x + w / 2 - ax, y + h / 2 - ay), x, y]);
+    grid.sort((p, q) => p[0] - q[0]);
+    for (const [, x, y] of grid) { const box = { x, y, w, h }; if (score(box, 1) === 0) return box; }
+    return best;
+  }
+
+  // The point of `box` nearest (x, y): where a leader line ends.
+  const nearest = (box, x, y) => [Math.max(box.x, Math.min(x, box.x + box.w)), Math.max(box.y, Math.min(y, box.y + box.h))];
+
+  const LINE_H = 13;  // [px] text line height in labels
+  function textBox(lines, fonts) {
+    let w = 0;
+    lines.forEach((t, i) => { ctx.font = fonts[i] || fonts[0]; w = Math.max(w, ctx.measureText(t).width); });
+    return [Math.ceil(w) + 6, lines.length * LINE_H + 4];
+  }
+
+  // Lays out every symbol and label of the frame (no drawing).
+  function layout(status) {
+    symbols = []; labels = [];
+    const sel = state.aircraft.find((a) => a.id === selected);
+    for (const a of state.aircraft) {
+      const [x, y] = px(a.lat, a.lon);
+      symbols.push({ kind: "aircraft", key: a.id, x: x - 6, y: y - 6, w: 12, h: 12, cx: x, cy: y });
+    }
+    for (const c of state.conflicts) c.cpa.forEach(([lat, lon], i) => {
+      const [x, y] = px(lat, lon);
+      symbols.push({ kind: "cpa", key: `${c.ids.join("-")}:${i}`, x: x - 5, y: y - 5, w: 10, h: 10, cx: x, cy: y });
+    });
+    const route = sel ? routeAhead(sel) : [];
+    for (const w of route) {
+      const [x, y] = px(w.lat, w.lon);
+      symbols.push({ kind: "waypoint", key: w.name, x: x - 4, y: y - 4, w: 8, h: 8, cx: x, cy: y });
+    }
+    const taken = symbols.slice();
+    const add = (l) => { labels.push(l); taken.push(l); };
+    // Data blocks: the selected aircraft and those in conflict first.
+    const order = state.aircraft.slice().sort((p, q) =>
+      (q.id === selected) - (p.id === selected) || (status.has(q.id) ? 1 : 0) - (status.has(p.id) ? 1 : 0));
+    for (const a of order) {
+      const [x, y] = px(a.lat, a.lon);
+      const text = blockLines(a), [w, h] = textBox(text, ["bold 12px monospace", "12px monospace"]);
+      const off = offsets.get(a.id);
+      const box = off ? { x: x + off[0], y: y + off[1], w, h } : place(x, y, w, h, taken);
+      add({ kind: "block", key: a.id, text, ...box, ax: x, ay: y });
+    }
+    for (const c of state.conflicts) {
+      const [xa, ya] = px(...c.cpa[0]), [xb, yb] = px(...c.cpa[1]);
+      const text = [conflictText(c)], [w, h] = textBox(text, ["bold 11px monospace"]);
+      add({ kind: "conflict", key: c.ids.join("-"), text, ...place((xa + xb) / 2, (ya + yb) / 2, w, h, taken),
+            ax: (xa + xb) / 2, ay: (ya + yb) / 2, color: urgency(c) });
+    }
+    for (const wp of route) {
+      const [x, y] = px(wp.lat, wp.lon);
+      const text = [wp.name + (wp.alt_ft != null ? ` ${fl(wp.alt_ft)}` : "")], [w, h] = textBox(text, ["11px monospace"]);
+      add({ kind: "route", key: wp.name, text, ...place(x, y, w, h, taken), ax: x, ay: y });
     }
   }
 
-  // Text on a dark box so that it stays legible over the map.
-  function label(text, x, y) {
-    const w = ctx.measureText(text).width;
-    const fill = ctx.fillStyle;
-    ctx.fillStyle = "rgba(5, 9, 8, 0.75)";
-    ctx.fillRect(x - 2, y - 11, w + 4, 14);
-    ctx.fillStyle = fill;
-    ctx.fillText(text, x, y);
+  function blockLines(a) {
+    const trend = a.vs_fpm > 100 ? "↑" : a.vs_fpm < -100 ? "↓" : " ";
+    const selfl = Math.abs(a.sel_alt_ft - a.alt_ft) > 50 ? fl(a.sel_alt_ft) : "";
+    return [a.id, `${fl(a.alt_ft)}${trend}${selfl}`, `${Math.round(a.gs_kt)} ${a.type}`];
   }
 
-  const fl = (ft) => String(Math.round(ft / 100)).padStart(3, "0");
+  // "KLM1234–DLH4AX LoS 1:23 CPA 0.4 NM 2:10": the pair first, so that each countdown names whom it is for.
+  function conflictText(c) {
+    const tlos = c.tlos_s == null ? "" : c.tlos_s > 0 ? ` LoS ${mmss(c.tlos_s)}` : " LoS NOW";
+    return `${c.ids[0]}–${c.ids[1]}${tlos} CPA ${c.dcpa_nm.toFixed(1)} NM ${mmss(c.tcpa_s)}`;
+  }
+
+  // The colour of a conflict by time to loss of separation: 60 s or less, 120 s or less, beyond.
+  function urgency(c) {
+    const t = c.tlos_s != null ? c.tlos_s : c.tcpa_s;
+    return t <= 60 ? colors.conf : t <= 120 ? colors.warn : colors.later;
+  }
+
+  function routeAhead(a) {
+    if (!a.route || a.route.length === 0) return [];
+    const k = a.route.findIndex((w) => w.name === a.active_wpt);
+    return k < 0 ? [] : a.route.slice(k);
+  }
+
+  // --- Drawing ----------------------------------------------------------------
+  function drawRoute(a) {
+    const route = routeAhead(a);
+    if (route.length === 0) return;
+    ctx.strokeStyle = colors.route; ctx.lineWidth = 1; ctx.setLineDash([6, 4]);
+    ctx.beginPath(); ctx.moveTo(...px(a.lat, a.lon));
+    for (const w of route) ctx.lineTo(...px(w.lat, w.lon));
+    ctx.stroke(); ctx.setLineDash([]);
+    for (const w of route) { const [x, y] = px(w.lat, w.lon); ctx.strokeRect(x - 3, y - 3, 6, 6); }
+  }
 
   function drawConflicts() {
-    ctx.font = "11px monospace";
     for (const c of state.conflicts) {
       const A = state.aircraft.find((a) => a.id === c.ids[0]), B = state.aircraft.find((a) => a.id === c.ids[1]);
       if (!A || !B) continue;
-      ctx.strokeStyle = colors.conf; ctx.fillStyle = colors.conf; ctx.lineWidth = 1;
+      ctx.strokeStyle = colors.conf; ctx.lineWidth = 1;
       // Each aircraft's path to its closest point of approach, and the CPA points.
       [A, B].forEach((a, i) => {
         const [x0, y0] = px(a.lat, a.lon), [x1, y1] = px(c.cpa[i][0], c.cpa[i][1]);
@@ -175,13 +284,8 @@ const Scope = (() => {
       });
       const [xa, ya] = px(c.cpa[0][0], c.cpa[0][1]), [xb, yb] = px(c.cpa[1][0], c.cpa[1][1]);
       ctx.beginPath(); ctx.moveTo(xa, ya); ctx.lineTo(xb, yb); ctx.stroke();
-      const tlos = c.tlos_s == null ? "" : c.tlos_s > 0 ? `LoS in ${mmss(c.tlos_s)}` : "LoS";
-      ctx.font = "bold 11px monospace";
-      label(`${tlos}  CPA ${c.dcpa_nm.toFixed(1)} NM in ${mmss(c.tcpa_s)}`, (xa + xb) / 2 + 8, (ya + yb) / 2 + 16);
     }
   }
-
-  const mmss = (s) => `${Math.floor(s / 60)}:${String(Math.floor(s % 60)).padStart(2, "0")}`;
 
   function drawAircraft(a, status) {
     const [x, y] = px(a.lat, a.lon);
@@ -208,17 +312,20 @@ const Scope = (() => {
     // Symbol: a square, filled when in loss of separation.
     if (status === "los") ctx.fillRect(x - 5, y - 5, 10, 10); else ctx.strokeRect(x - 4.5, y - 4.5, 9, 9);
     if (a.id === selected) { ctx.beginPath(); ctx.arc(x, y, 10, 0, 2 * Math.PI); ctx.stroke(); }
-    // Data block with leader line: callsign / FL trend selected FL / GS type.
-    const bx = x + 22, by = y - 30;
-    ctx.lineWidth = 1;
-    ctx.beginPath(); ctx.moveTo(x + 6, y - 6); ctx.lineTo(bx - 2, by + 10); ctx.stroke();
-    const trend = a.vs_fpm > 100 ? "↑" : a.vs_fpm < -100 ? "↓" : " ";
-    const selfl = Math.abs(a.sel_alt_ft - a.alt_ft) > 50 ? fl(a.sel_alt_ft) : "";
-    ctx.font = "bold 12px monospace";
-    label(a.id, bx, by);
-    ctx.font = "12px monospace";
-    label(`${fl(a.alt_ft)}${trend}${selfl}`, bx, by + 13);
-    label(`${Math.round(a.gs_kt)} ${a.type}`, bx, by + 26);
+  }
+
+  // A placed label: dark box, text lines, and a leader line from its anchor when it sits away from it.
+  function drawLabel(l, color, fonts) {
+    const [ex, ey] = nearest(l, l.ax, l.ay);
+    if (Math.hypot(ex - l.ax, ey - l.ay) > 7) {
+      ctx.strokeStyle = colors.leader; ctx.lineWidth = 1;
+      const d = Math.hypot(ex - l.ax, ey - l.ay), sx = l.ax + (ex - l.ax) * 6 / d, sy = l.ay + (ey - l.ay) * 6 / d;
+      ctx.beginPath(); ctx.moveTo(sx, sy); ctx.lineTo(ex, ey); ctx.stroke();
+    }
+    ctx.fillStyle = "rgba(5, 9, 8, 0.8)";
+    ctx.fillRect(l.x, l.y, l.w, l.h);
+    ctx.fillStyle = color;
+    l.text.forEach((t, i) => { ctx.font = fonts[i] || fonts[0]; ctx.fillText(t, l.x + 3, l.y + 2 + (i + 1) * LINE_H - 3); });
   }
 
   function draw() {
@@ -227,10 +334,21 @@ const Scope = (() => {
     drawNav();
     if (state) {
       const status = inConflict();
+      layout(status);
       const sel = state.aircraft.find((a) => a.id === selected);
       if (sel) drawRoute(sel);
       drawConflicts();
       for (const a of state.aircraft) drawAircraft(a, status.get(a.id));
+      for (const l of labels) {
+        if (l.kind === "block") {
+          const st = status.get(l.key);
+          drawLabel(l, st ? colors.conf : l.key === selected ? colors.sel : colors.ac, ["bold 12px monospace", "12px monospace"]);
+        } else if (l.kind === "conflict") {
+          drawLabel(l, l.color, ["bold 11px monospace"]);
+        } else {
+          drawLabel(l, colors.route, ["11px monospace"]);
+        }
+      }
     }
     drawScale();
     document.getElementById("view-info").textContent =
@@ -247,7 +365,7 @@ const Scope = (() => {
         trails.set(a.id, tr);
       }
     }
-    for (const id of [...trails.keys()]) if (!s.aircraft.some((a) => a.id === id)) trails.delete(id);
+    for (const id of [...trails.keys()]) if (!s.aircraft.some((a) => a.id === id)) { trails.delete(id); offsets.delete(id); }
     if (!view.fitted) fit();
     dirty = true;
   }
@@ -257,13 +375,17 @@ const Scope = (() => {
     requestAnimationFrame(frame);
   }
 
-  // Pan, zoom, click to select.
+  // Pan, zoom, click to select, drag a data block.
   let drag = null;
-  canvas.addEventListener("mousedown", (e) => { drag = { x: e.offsetX, y: e.offsetY, moved: false }; });
+  const blockAt = (x, y) => labels.find((l) => l.kind === "block" && x >= l.x && x <= l.x + l.w && y >= l.y && y <= l.y + l.h);
+  canvas.addEventListener("mousedown", (e) => {
+    const b = blockAt(e.offsetX, e.offsetY);
+    drag = { x: e.offsetX, y: e.offsetY, moved: false, block: b ? b.key : null, dx: b ? b.x - e.offsetX : 0, dy: b ? b.y - e.offsetY : 0 };
+  });
   window.addEventListener("mouseup", (e) => {
     if (drag && !drag.moved && state && e.target === canvas) {
-      let best = null, bestD = 15;
-      for (const a of state.aircraft) {
+      let best = drag.block, bestD = 15;
+      if (!best) for (const a of state.aircraft) {
         const [x, y] = px(a.lat, a.lon), d = Math.hypot(x - e.offsetX, y - e.offsetY);
         if (d < bestD) { best = a.id; bestD = d; }
       }
@@ -276,6 +398,15 @@ const Scope = (() => {
     const dx = e.offsetX - drag.x, dy = e.offsetY - drag.y;
     if (Math.abs(dx) + Math.abs(dy) > 2) drag.moved = true;
     if (!drag.moved) return;
+    if (drag.block) {
+      const a = state && state.aircraft.find((p) => p.id === drag.block);
+      if (a) {
+        const [x, y] = px(a.lat, a.lon);
+        offsets.set(a.id, [e.offsetX + drag.dx - x, e.offsetY + drag.dy - y]);
+      }
+      dirty = true;
+      return;
+    }
     const [lat, lon] = unpx(canvas.width / 2 - dx, canvas.height / 2 - dy);
     view.lat0 = lat; view.lon0 = lon; drag.x = e.offsetX; drag.y = e.offsetY; dirty = true;
   });
@@ -290,8 +421,13 @@ const Scope = (() => {
 
   function select(id) { selected = id; dirty = true; }
   function toggle(name, value) { opts[name] = value; dirty = true; }
+  const copy = (list) => list.map((l) => ({ ...l }));
 
   resize();
   requestAnimationFrame(frame);
-  return { update, select, fit, toggle, set onSelect(f) { onSelect = f; }, get selected() { return selected; } };
+  return {
+    update, select, fit, toggle, px,
+    labels: () => copy(labels), symbols: () => copy(symbols), offset: (id) => offsets.get(id) || null,
+    set onSelect(f) { onSelect = f; }, get selected() { return selected; },
+  };
 })();

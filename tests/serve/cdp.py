@@ -107,6 +107,23 @@ class Browser:
             self.send("Input.dispatchKeyEvent", {"type": kind, "key": "Enter", "code": "Enter",
                                                  "windowsVirtualKeyCode": 13, "text": "\r" if kind == "keyDown" else ""})
 
+    def mouse(self, kind, x, y, button="left", modifiers=0):
+        """One mouse event at page pixel (x, y): kind mousePressed, mouseMoved or mouseReleased."""
+        self.send("Input.dispatchMouseEvent", {"type": kind, "x": x, "y": y, "button": button,
+                                               "buttons": 0 if kind == "mouseReleased" else 1,
+                                               "clickCount": 1, "modifiers": modifiers})
+
+    def drag(self, x0, y0, x1, y1, steps=5, button="left", modifiers=0):
+        """Presses at (x0, y0), moves to (x1, y1) in `steps` moves and releases."""
+        self.mouse("mousePressed", x0, y0, button, modifiers)
+        for i in range(1, steps + 1):
+            self.mouse("mouseMoved", x0 + (x1 - x0) * i / steps, y0 + (y1 - y0) * i / steps, button, modifiers)
+        self.mouse("mouseReleased", x1, y1, button, modifiers)
+
+    def click(self, x, y, modifiers=0):
+        self.mouse("mousePressed", x, y, modifiers=modifiers)
+        self.mouse("mouseReleased", x, y, modifiers=modifiers)
+
     def screenshot(self, path):
         import base64
         data = self.send("Page.captureScreenshot", {"format": "png"})["data"]

@@ -1,6 +1,9 @@
 """The radar scope in a real browser: headless Chromium loads the page served
 by `squawk serve`, sees the aircraft in the traffic list, types an English
-command into the command line and sees the heading change (list and API).
+command into the command line and sees the heading change (list and API);
+in a dense converging scene no two labels of the page's label model
+intersect and none lies on a symbol, and a dragged data block keeps its
+offset.
 
 usage: test_scope_browser.py SQUAWK_BINARY [--screenshot FILE.png] [--scenario FILE]
 Exit 77 (skipped) only when no Chromium is installed.
@@ -32,6 +35,55 @@ def start_server(squawk, scenario, extra=()):
 def get_state(addr):
     with urllib.request.urlopen(f"http://{addr}/api/state", timeout=5) as r:
         return json.load(r)
+
+
+def intersect(a, b):
+    return a["x"] < b["x"] + b["w"] and b["x"] < a["x"] + a["w"] and a["y"] < b["y"] + b["h"] and b["y"] < a["y"] + a["h"]
+
+
+def overprints(labels, symbols):
+    """Every pair (label, label) or (label, symbol) of the label model that intersects."""
+    bad = []
+    for i, a in enumerate(labels):
+        bad += [(a["key"], b["key"]) for b in labels[i + 1:] if intersect(a, b)]
+        bad += [(a["key"], "symbol " + s["key"]) for s in symbols if intersect(a, s)]
+    return bad
+
+
+def check_labels(browser, squawk):
+    """A dense converging scene: labels never overprint; conflict labels name their pair; drag keeps an offset."""
+    scn = os.path.join(HERE, "converging.scn")
+    server, addr = start_server(squawk, scn, ["--speed", "10"])
+    try:
+        browser.open(f"http://{addr}/")
+        browser.wait_for("Scope.labels().filter(l => l.kind === 'conflict').length >= 6", what="six conflict labels")
+        for _ in range(5):  # several frames of a moving scene
+            labels, symbols = browser.eval("[Scope.labels(), Scope.symbols()]")
+            bad = overprints(labels, symbols)
+            assert not bad, f"overprinted labels: {bad}"
+            time.sleep(0.2)
+        blocks = [l for l in labels if l["kind"] == "block"]
+        conflicts = [l for l in labels if l["kind"] == "conflict"]
+        assert len(blocks) == 12, [l["key"] for l in blocks]
+        for c in conflicts:
+            a, b = c["key"].split("-")
+            assert c["text"][0].startswith(f"{a}–{b} "), c["text"]
+        print(f"ok   {len(blocks)} data blocks, {len(conflicts)} conflict labels (each naming its pair), "
+              f"{len(symbols)} symbols: no overlap in 5 frames")
+        r = browser.eval("(() => { const c = document.getElementById('scope').getBoundingClientRect(); "
+                         "const b = Scope.labels().find(l => l.key === 'KLM88A'); "
+                         "return [c.left + b.x + b.w / 2, c.top + b.y + b.h / 2, b.x - b.ax, b.y - b.ay]; })()")
+        x, y, dx0, dy0 = r
+        browser.drag(x, y, x + 60, y + 45)
+        off = browser.wait_for("Scope.offset('KLM88A')", what="a dragged offset")
+        assert abs(off[0] - (dx0 + 60)) < 2 and abs(off[1] - (dy0 + 45)) < 2, (off, dx0, dy0)
+        time.sleep(0.5)  # the aircraft moves on; the block keeps its offset from it
+        b = browser.eval("Scope.labels().find(l => l.key === 'KLM88A')")
+        assert abs(b["x"] - b["ax"] - off[0]) < 0.01 and abs(b["y"] - b["ay"] - off[1]) < 0.01, (b, off)
+        print(f"ok   dragged KLM88A's data block keeps its offset ({off[0]:.0f}, {off[1]:.0f}) px")
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
 
 
 def main():
@@ -91,6 +143,7 @@ def main():
             time.sleep(args.settle)
             browser.screenshot(args.screenshot)
             print(f"screenshot {args.screenshot}")
+        check_labels(browser, args.squawk)
     finally:
         browser.close()
         server.terminate()
