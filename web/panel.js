@@ -14,6 +14,7 @@
   const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" })[c]);
   const hms = (t) => [t / 3600, (t % 3600) / 60, t % 60].map((v) => String(Math.floor(v)).padStart(2, "0")).join(":");
   const fl = (ft) => String(Math.round(ft / 100)).padStart(3, "0");
+  const mmss = (t) => `${Math.floor(t / 60)}:${String(Math.floor(t % 60)).padStart(2, "0")}`;
   const h3 = (d) => String(Math.round(d) % 360 || 360).padStart(3, "0");
 
   // --- Push stream (server-sent events) ------------------------------------
@@ -54,12 +55,23 @@
     $("traffic").tBodies[0].innerHTML = rows.join("");
   }
 
+  // Standing alerts: losses of separation first, then the conflicts by time
+  // to loss of separation; class urgent (LoS in 60 s or less), soon (120 s),
+  // later (beyond).
   function renderConflicts(s) {
-    const items = s.conflicts.map((c) =>
-      `<li>${esc(c.ids.join(" – "))}: CPA ${c.dcpa_nm.toFixed(1)} NM in ${Math.round(c.tcpa_s)} s` +
-      (c.tlos_s != null ? `, LoS ${c.tlos_s > 0 ? "in " + Math.round(c.tlos_s) + " s" : "now"}` : "") + `</li>`);
-    for (const l of s.los) items.push(`<li>${esc(l.ids.join(" – "))}: LOSS OF SEPARATION ${l.dist_nm.toFixed(1)} NM</li>`);
+    const items = s.los.map((l) =>
+      `<li class="los" data-ids="${esc(l.ids.join(" "))}"><b>${esc(l.ids.join(" – "))}</b> LOSS OF SEPARATION ` +
+      `${l.dist_nm.toFixed(1)} NM ${Math.round(Math.abs(l.dalt_ft))} ft</li>`);
+    const when = (c) => c.tlos_s != null ? c.tlos_s : c.tcpa_s;
+    for (const c of s.conflicts.slice().sort((p, q) => when(p) - when(q))) {
+      if (s.los.some((l) => l.ids.join() === c.ids.join())) continue;
+      const t = when(c);
+      const cls = t <= 60 ? "urgent" : t <= 120 ? "soon" : "later";
+      items.push(`<li class="${cls}" data-ids="${esc(c.ids.join(" "))}"><b>${esc(c.ids.join(" – "))}</b> ` +
+        `LoS ${t > 0 ? "in " + mmss(t) : "now"}  CPA ${c.dcpa_nm.toFixed(1)} NM in ${mmss(c.tcpa_s)}</li>`);
+    }
     $("conflicts").innerHTML = items.length ? items.join("") : `<li class="none">none</li>`;
+    $("conflict-count").textContent = items.length ? String(items.length) : "";
   }
 
   let advKey = "";

@@ -7,6 +7,7 @@
 
 #include "core/units.h"
 #include "sim/atmosphere.h"
+#include "sim/conflict.h"
 
 namespace squawk::serve {
 
@@ -96,8 +97,15 @@ json state_json(const command::Stack& stack) {
   for (int i = 0; i < t.n(); ++i) aircraft.push_back(aircraft_json(t, static_cast<size_t>(i)));
   out["aircraft"] = std::move(aircraft);
 
+  // With the clock held the pairs are detected afresh on the present state:
+  // the simulator's detector runs only as time moves, so at t = 0 of a paused
+  // start, or after a command given in HOLD, its pairs are missing or stale.
+  sim::ConflictDetector fresh;
+  const bool held = s.run_state() == sim::RunState::kHold && !s.fast();
+  if (held && cd.enabled) fresh.detect(t, cd);
+  const sim::ConflictDetector& det = held && cd.enabled ? fresh : s.cd();
   json conflicts = json::array();
-  for (const auto& c : s.conflicts()) {
+  for (const auto& c : det.pairs()) {
     const auto [a, b] = ordered(t, c.own, c.intruder);
     if (static_cast<size_t>(c.own) != a) continue;  // each pair is reported in both orders
     conflicts.push_back({{"ids", {t.id[a], t.id[b]}},
@@ -109,7 +117,7 @@ json state_json(const command::Stack& stack) {
   }
   out["conflicts"] = std::move(conflicts);
   json los = json::array();
-  for (const auto& l : s.los()) {
+  for (const auto& l : det.los()) {
     const auto [a, b] = ordered(t, l.own, l.intruder);
     if (static_cast<size_t>(l.own) != a) continue;
     los.push_back({{"ids", {t.id[a], t.id[b]}}, {"dist_nm", units::m_to_nm(l.dist)}, {"dalt_ft", units::m_to_ft(l.dalt)}});

@@ -14,6 +14,9 @@
 //               = where each aircraft will be at the closest approach if both
 //               keep their present ground velocity (from the present state),
 //   los [{ids [a, b], dist_nm, dalt_ft}]  each pair once.
+// Conflicts and losses of separation are the simulator's last detection
+// while the clock runs, and detected on the present state while it is held
+// (so a paused start shows the predicted conflicts at t = 0).
 // navdata_json(db, box) lists the airports and waypoints inside the box, at
 // most `limit` of them: {airports: [[id, lat, lon]], fixes: [[id, lat, lon]],
 // truncated}.

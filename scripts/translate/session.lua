@@ -37,7 +37,7 @@
 --                  los = { {id1 =, id2 =, dist_nm =, dalt_ft =} } }
 --   s:complete(prefix) -> sorted words: callsigns, TrafScript command names
 --       and aliases (also as !NAME), and the REPL's :commands
---   event = { t = s, kind = "conflict" | "conflict_end" | "los" | "los_end"
+--   event = { t = s, kind = "conflict" | "conflict_reminder" | "conflict_end" | "los" | "los_end"
 --             | "echo" | "failure", text = sentence, id1 =?, id2 =? }
 --   report (load_report, and failure summaries) = { executed =, skipped =,
 --             failed =, first = {first failure messages}, reasons = {
@@ -54,6 +54,7 @@ M.kChunk = 1.0        -- [s] sim time between conflict checks while advancing
 M.kOpenFfRate = 60.0  -- FF without an end time: sim seconds per wall second
 M.kMaxTickWall = 5.0  -- [s] most wall time one tick accounts for (a stopped
                       -- terminal must not make the simulation jump hours)
+M.kReminders = { 120, 60 }  -- [s] tLOS at which a standing conflict is announced again (descending)
 M.kMaxFfCpu = 0.5     -- [s] processor time one call spends on an FF with an end;
                       -- the rest of a long FF runs on the following ticks (HOLD stops it)
 
@@ -127,13 +128,39 @@ local function diff(known, list, t, events, kind, start, ended)
   return now
 end
 
--- Compares the detector's conflicts and losses of separation with the known ones.
+-- The smallest of kReminders at or above tlos [s], or nil.
+local function reminder_level(tlos)
+  local level
+  for _, th in ipairs(M.kReminders) do
+    if tlos > 0 and tlos <= th then level = th end
+  end
+  return level
+end
+
+-- Compares the detector's conflicts and losses of separation with the known
+-- ones; a known conflict whose tLOS falls to a kReminders mark is announced
+-- again (kind "conflict_reminder"), once per mark.
 function Session:diff_pairs(events)
   local t = self.sim:time()
-  self.conflicts = diff(self.conflicts, self.sim:conflicts(), t, events, "conflict", function(c, key)
+  local known = self.conflicts
+  local text = function(c, key)
     return string.format("conflict %s: loss of separation in %.0f s, closest %.2f NM in %.0f s", key, c.tlos,
       c.dcpa_nm, c.tcpa)
-  end, "conflict %s ended")
+  end
+  self.conflicts = diff(known, self.sim:conflicts(), t, events, "conflict", text, "conflict %s ended")
+  local reminded, before = {}, self.reminded or {}
+  for _, c in ipairs(self.sim:conflicts()) do
+    local key, a, b = pair_key(c.own, c.intruder)
+    if reminded[key] == nil then
+      local level, prev = reminder_level(c.tlos), before[key]
+      if known[key] and level and (not prev or level < prev) then
+        events[#events + 1] = { t = t, kind = "conflict_reminder", id1 = a, id2 = b, text = "still " .. text(c, key) }
+        prev = level
+      end
+      reminded[key] = known[key] and (prev or false) or (level or false)
+    end
+  end
+  self.reminded = reminded
   self.los = diff(self.los, self.sim:los(), t, events, "los", function(l, key)
     return string.format("LOSS OF SEPARATION %s: %.2f NM, %.0f ft apart", key, l.dist_nm, math.abs(l.dalt_ft))
   end, "separation regained %s")

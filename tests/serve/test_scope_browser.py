@@ -1,7 +1,9 @@
 """The radar scope in a real browser: headless Chromium loads the page served
 by `squawk serve`, sees the aircraft in the traffic list, types an English
 command into the command line and sees the heading change (list and API);
-in a dense converging scene no two labels of the page's label model
+in a dense converging scene started paused the predicted conflicts are
+listed at t = 0 by time to loss of separation and coloured by urgency, and
+once it runs no two labels of the page's label model
 intersect and none lies on a symbol, and a dragged data block keeps its
 offset.
 
@@ -37,6 +39,13 @@ def get_state(addr):
         return json.load(r)
 
 
+def post(addr, path, body):
+    req = urllib.request.Request(f"http://{addr}{path}", data=json.dumps(body).encode(),
+                                 headers={"Content-Type": "application/json"})
+    with urllib.request.urlopen(req, timeout=30) as r:
+        return json.load(r)
+
+
 def intersect(a, b):
     return a["x"] < b["x"] + b["w"] and b["x"] < a["x"] + a["w"] and a["y"] < b["y"] + b["h"] and b["y"] < a["y"] + a["h"]
 
@@ -53,9 +62,30 @@ def overprints(labels, symbols):
 def check_labels(browser, squawk):
     """A dense converging scene: labels never overprint; conflict labels name their pair; drag keeps an offset."""
     scn = os.path.join(HERE, "converging.scn")
-    server, addr = start_server(squawk, scn, ["--speed", "10"])
+    server, addr = start_server(squawk, scn, ["--speed", "10", "--paused"])
     try:
         browser.open(f"http://{addr}/")
+        # Alerts at t = 0 with the clock held: the predicted conflicts, sorted
+        # by time to loss of separation, each coloured by urgency.
+        rows = browser.wait_for("[...document.querySelectorAll('#conflicts li[data-ids]')]"
+                                ".map(li => [li.dataset.ids, li.className, li.textContent])", what="conflict alerts at t = 0")
+        state = get_state(addr)
+        assert state["simt"] == 0 and not state["running"], state["simt"]
+        assert len(rows) == len(state["conflicts"]) >= 10, (len(rows), len(state["conflicts"]))
+        los = [" ".join(l["ids"]) for l in state["los"]]
+        assert los == ["KLM88A KLM88B"], los  # in trail 2 NM apart: a loss of separation from the start
+        assert [ids for ids, cls, _ in rows[:len(los)]] == los and rows[0][1] == "los", rows[0]
+        rows = rows[len(los):]
+        tlos = {" ".join(c["ids"]): c["tlos_s"] for c in state["conflicts"]}
+        shown = [tlos[ids] for ids, _, _ in rows]
+        assert shown == sorted(shown), shown
+        for ids, cls, text in rows:
+            t = tlos[ids]
+            assert cls == ("urgent" if t <= 60 else "soon" if t <= 120 else "later"), (ids, t, cls)
+            assert text.startswith(ids.replace(" ", " – ")), text
+        print(f"ok   t = 0, clock held: {len(rows)} predicted conflicts listed, sorted by tLOS "
+              f"({shown[0]:.0f} s .. {shown[-1]:.0f} s), coloured by urgency")
+        post(addr, "/api/command", {"text": "!OP"})
         browser.wait_for("Scope.labels().filter(l => l.kind === 'conflict').length >= 6", what="six conflict labels")
         for _ in range(5):  # several frames of a moving scene
             labels, symbols = browser.eval("[Scope.labels(), Scope.symbols()]")
