@@ -6,6 +6,8 @@
 (() => {
   const $ = (id) => document.getElementById(id);
   let state = null;
+  // This page's dialogue with the translator: a question asked here is answered only from here.
+  const client = (crypto.randomUUID ? crypto.randomUUID() : String(Math.random()).slice(2)).slice(0, 36);
 
   async function post(path, body) {
     const r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
@@ -33,6 +35,7 @@
     $("asas").textContent = s.asas.on ? `ASAS ON ${s.asas.rpz_nm} NM / ${s.asas.dtlook_s} s${s.asas.reso ? " MVP" : ""}` : "ASAS OFF";
     if (document.activeElement !== $("speed")) $("speed").value = String(s.dtmult);
     renderTraffic(s);
+    renderSelected(s);
     renderConflicts(s);
     renderAdvisories(s);
     renderLog(s);
@@ -53,6 +56,23 @@
         `<td class="wpt">${esc(a.active_wpt || "")}</td></tr>`;
     });
     $("traffic").tBodies[0].innerHTML = rows.join("");
+  }
+
+  // The selected aircraft's data and route.
+  function renderSelected(s) {
+    const a = s.aircraft.find((p) => p.id === Scope.selected);
+    $("selected-pane").style.display = a ? "" : "none";
+    if (!a) return;
+    const trend = a.vs_fpm > 100 ? "climbing" : a.vs_fpm < -100 ? "descending" : "level";
+    const spd = a.sel_cas_kt != null ? `${Math.round(a.sel_cas_kt)} kt` : `M${a.sel_mach.toFixed(2)}`;
+    const k = a.route.findIndex((w) => w.name === a.active_wpt);
+    const route = a.route.map((w, i) => `<span class="${i === k ? "active" : i < k ? "passed" : ""}">${esc(w.name)}` +
+      `${w.alt_ft != null ? " " + fl(w.alt_ft) : ""}</span>`).join(" ");
+    $("selected-data").innerHTML =
+      `<div><b>${esc(a.id)}</b> ${esc(a.type)}  ${a.lat.toFixed(3)}° ${a.lon.toFixed(3)}°</div>` +
+      `<div>FL ${fl(a.alt_ft)} ${trend} ${Math.round(a.vs_fpm)} fpm → FL ${fl(a.sel_alt_ft)}</div>` +
+      `<div>HDG ${h3(a.hdg_deg)} → ${a.lnav ? "LNAV" : h3(a.sel_hdg_deg)}  CAS ${Math.round(a.cas_kt)} → ${spd}  GS ${Math.round(a.gs_kt)}</div>` +
+      `<div>route ${route || "none"}${a.route.length ? (a.lnav ? " (LNAV on)" : " (LNAV off)") : ""}</div>`;
   }
 
   // Standing alerts: losses of separation first, then the conflicts by time
@@ -108,12 +128,15 @@
     $("reply-commands").textContent = "…";
     $("reply-result").textContent = "";
     let r;
+    const body = { text, client };
+    if (Scope.selected && !text.startsWith("!")) body.selected = Scope.selected;
     try {
-      r = await post("/api/command", { text });
+      r = await post("/api/command", body);
     } catch (e) {
       r = { ok: false, message: String(e), commands: [] };
     }
     $("reply-commands").textContent = (r.commands || []).join(" ; ") || "—";
+    $("reply-typed").textContent = r.addressed ? `${text}  (to ${r.addressed}, selected)` : text;
     const res = $("reply-result");
     if (r.ask) { res.className = "ask"; res.textContent = "? " + r.ask; }
     else { res.className = r.ok ? "ok" : "err"; res.textContent = r.ok ? (r.message || "ok") : r.message; }
@@ -142,14 +165,48 @@
     b.dataset.min = vectors[i]; b.textContent = `VEC ${vectors[i]}`; b.classList.toggle("on", vectors[i] > 0);
     Scope.toggle("vectorMin", vectors[i]);
   });
+  // Selecting an aircraft (scope or list) puts its callsign at the head of
+  // the command line, replacing a callsign already there.
+  function selected(id) {
+    Scope.select(id);
+    if (id) {
+      const cmd = $("cmd"), words = cmd.value.trimStart().split(/\s+/);
+      const known = state && state.aircraft.some((a) => a.id === (words[0] || "").toUpperCase());
+      cmd.value = `${id} ${known ? words.slice(1).join(" ") : cmd.value.trim()}`.trimEnd() + " ";
+    }
+    if (state) { renderTraffic(state); renderSelected(state); }
+    focusCmd();
+  }
   $("traffic").addEventListener("click", (e) => {
     const tr = e.target.closest("tr[data-id]");
-    if (!tr) return;
-    const id = Scope.selected === tr.dataset.id ? null : tr.dataset.id;
-    Scope.select(id);
-    if (state) renderTraffic(state);
+    if (tr) selected(Scope.selected === tr.dataset.id ? null : tr.dataset.id);
   });
-  Scope.onSelect = () => { if (state) renderTraffic(state); };
+  $("conflicts").addEventListener("click", (e) => {
+    const li = e.target.closest("li[data-ids]");
+    if (li) selected(li.dataset.ids.split(" ")[0]);
+  });
+  Scope.onSelect = selected;
+
+  // Keyboard focus lives in the command line: after a click anywhere but a
+  // form control, and when a key is typed elsewhere. Escape clears the line,
+  // then the range/bearing line and the selection.
+  function focusCmd() {
+    const cmd = $("cmd");
+    if (document.activeElement !== cmd) { cmd.focus(); cmd.setSelectionRange(cmd.value.length, cmd.value.length); }
+  }
+  document.addEventListener("mouseup", (e) => {
+    if (!e.target.closest("input, select, textarea, summary, #reply, #log")) setTimeout(focusCmd, 0);
+  });
+  document.addEventListener("keydown", (e) => {
+    const t = document.activeElement;
+    if (e.key === "Escape") {
+      if ($("cmd").value) $("cmd").value = "";
+      else { Scope.clearRbl(); selected(null); }
+      focusCmd();
+      return;
+    }
+    if (t !== $("cmd") && !(t && t.matches("input, select, textarea")) && e.key.length === 1 && !e.ctrlKey && !e.metaKey) focusCmd();
+  });
   $("advisories").addEventListener("click", async (e) => {
     const b = e.target.closest("button[data-decision]");
     if (!b) return;
@@ -160,4 +217,5 @@
   $("auto").addEventListener("change", () => post("/api/auto", { on: $("auto").checked }));
 
   connect();
+  focusCmd();
 })();

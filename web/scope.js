@@ -33,6 +33,7 @@ const Scope = (() => {
   let dirty = true;
   const offsets = new Map();  // id -> [dx, dy] [px] a dragged data block's top-left from its aircraft
   let labels = [], symbols = [];
+  let rbl = null;  // range/bearing line: {from: [lat, lon], to: [lat, lon]} (right- or Shift-drag)
 
   const nm = (lat, lon) => [(lon - view.lon0) * 60 * Math.cos(view.lat0 * Math.PI / 180), (lat - view.lat0) * 60];
   function px(lat, lon) {
@@ -258,6 +259,27 @@ const Scope = (() => {
     return k < 0 ? [] : a.route.slice(k);
   }
 
+  // Bearing [deg true] and distance [NM] from a to b ([lat, lon]), great circle.
+  function rangeBearing(a, b) {
+    const r = Math.PI / 180, [p1, l1] = [a[0] * r, a[1] * r], [p2, l2] = [b[0] * r, b[1] * r];
+    const y = Math.sin(l2 - l1) * Math.cos(p2), x = Math.cos(p1) * Math.sin(p2) - Math.sin(p1) * Math.cos(p2) * Math.cos(l2 - l1);
+    const h = Math.sin((p2 - p1) / 2) ** 2 + Math.cos(p1) * Math.cos(p2) * Math.sin((l2 - l1) / 2) ** 2;
+    return { brg: (Math.atan2(y, x) / r + 360) % 360, nm: 2 * Math.asin(Math.sqrt(h)) * 6371000 / 1852 };
+  }
+
+  function drawRbl() {
+    if (!rbl) return;
+    const [x0, y0] = px(...rbl.from), [x1, y1] = px(...rbl.to), { brg, nm: d } = rangeBearing(rbl.from, rbl.to);
+    ctx.strokeStyle = colors.warn; ctx.fillStyle = colors.warn; ctx.lineWidth = 1.5;
+    ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); ctx.stroke();
+    ctx.beginPath(); ctx.arc(x0, y0, 3, 0, 2 * Math.PI); ctx.fill();
+    ctx.font = "bold 12px monospace";
+    const text = `${String(Math.round(brg) % 360 || 360).padStart(3, "0")}° ${d.toFixed(1)} NM`;
+    const w = ctx.measureText(text).width + 6;
+    ctx.fillStyle = "rgba(5, 9, 8, 0.85)"; ctx.fillRect(x1 + 8, y1 - 8, w, 16);
+    ctx.fillStyle = colors.warn; ctx.fillText(text, x1 + 11, y1 + 4);
+  }
+
   // --- Drawing ----------------------------------------------------------------
   function drawRoute(a) {
     const route = routeAhead(a);
@@ -350,6 +372,7 @@ const Scope = (() => {
         }
       }
     }
+    drawRbl();
     drawScale();
     document.getElementById("view-info").textContent =
       `${view.lat0.toFixed(3)}° ${view.lon0.toFixed(3)}°  ${(canvas.width / view.ppnm).toFixed(0)} NM across`;
@@ -375,14 +398,26 @@ const Scope = (() => {
     requestAnimationFrame(frame);
   }
 
-  // Pan, zoom, click to select, drag a data block.
+  // Pan (drag), zoom (wheel), select (click), move a data block (drag it),
+  // range and bearing (right- or Shift-drag; Escape clears it).
   let drag = null;
   const blockAt = (x, y) => labels.find((l) => l.kind === "block" && x >= l.x && x <= l.x + l.w && y >= l.y && y <= l.y + l.h);
+  canvas.addEventListener("contextmenu", (e) => e.preventDefault());
   canvas.addEventListener("mousedown", (e) => {
+    if (e.button === 2 || e.shiftKey) {
+      const p = unpx(e.offsetX, e.offsetY);
+      rbl = { from: p, to: p }; drag = { rbl: true, moved: false, x: e.offsetX, y: e.offsetY }; dirty = true;
+      return;
+    }
     const b = blockAt(e.offsetX, e.offsetY);
     drag = { x: e.offsetX, y: e.offsetY, moved: false, block: b ? b.key : null, dx: b ? b.x - e.offsetX : 0, dy: b ? b.y - e.offsetY : 0 };
   });
   window.addEventListener("mouseup", (e) => {
+    if (drag && drag.rbl) {
+      if (!drag.moved) rbl = null;
+      drag = null; dirty = true;
+      return;
+    }
     if (drag && !drag.moved && state && e.target === canvas) {
       let best = drag.block, bestD = 15;
       if (!best) for (const a of state.aircraft) {
@@ -398,6 +433,7 @@ const Scope = (() => {
     const dx = e.offsetX - drag.x, dy = e.offsetY - drag.y;
     if (Math.abs(dx) + Math.abs(dy) > 2) drag.moved = true;
     if (!drag.moved) return;
+    if (drag.rbl) { rbl.to = unpx(e.offsetX, e.offsetY); dirty = true; return; }
     if (drag.block) {
       const a = state && state.aircraft.find((p) => p.id === drag.block);
       if (a) {
@@ -420,13 +456,15 @@ const Scope = (() => {
   window.addEventListener("resize", resize);
 
   function select(id) { selected = id; dirty = true; }
+  function clearRbl() { rbl = null; dirty = true; }
   function toggle(name, value) { opts[name] = value; dirty = true; }
   const copy = (list) => list.map((l) => ({ ...l }));
 
   resize();
   requestAnimationFrame(frame);
   return {
-    update, select, fit, toggle, px,
+    update, select, fit, toggle, px, clearRbl,
+    rbl: () => rbl && { ...rbl, ...rangeBearing(rbl.from, rbl.to) },
     labels: () => copy(labels), symbols: () => copy(symbols), offset: (id) => offsets.get(id) || null,
     set onSelect(f) { onSelect = f; }, get selected() { return selected; },
   };

@@ -160,7 +160,15 @@ void HttpServer::routes() {
     if (text.size() > options_.max_text)
       return fail(res, 413, "text of " + std::to_string(text.size()) + " characters: at most " +
                                 std::to_string(options_.max_text));
-    auto r = live_.call([text](LiveSim& l) { return l.command(text, "controller"); }, command_timeout);
+    script::CommandOptions opts;
+    for (auto [name, field] : {std::pair{"client", &opts.client}, std::pair{"selected", &opts.selected}}) {
+      if (!body->contains(name)) continue;
+      const json& v = (*body)[name];
+      if (!v.is_string() || v.get<std::string>().size() > 64)
+        return fail(res, 400, std::string("body: \"") + name + "\" must be a string of at most 64 characters");
+      *field = v.get<std::string>();
+    }
+    auto r = live_.call([text, opts](LiveSim& l) { return l.command(text, "controller", opts); }, command_timeout);
     if (!r) return fail(res, http_status(r.status()), r.status().message());
     send_json(res, 200, *r);
   });

@@ -6,7 +6,9 @@
 //   GET  /api/state      the state (state_json.h, plus log and advisories)
 //   GET  /api/stream     server-sent events: one `data: <state>` per publish
 //   GET  /api/navdata?south=&north=&west=&east=   airports and fixes in a box
-//   POST /api/command    {"text": "English or !TrafScript"} -> command reply
+//   POST /api/command    {"text": "English or !TrafScript", "client"?: page id, "selected"?: callsign}
+//                        -> command reply (each client has its own dialogue;
+//                        a line naming no aircraft may go to "selected")
 //   POST /api/advisory   {"id": n, "decision": "accept"|"reject"}
 //   POST /api/auto       {"on": true|false}  execute advisories automatically
 // Bound to loopback, only requests whose Host is 127.0.0.1, localhost or [::1]

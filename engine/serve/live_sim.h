@@ -80,8 +80,10 @@ class LiveSim {
 
   // --- Owner thread only (inside a Request) --------------------------------
   command::Stack& stack() { return session_.stack(); }
-  // An English or "!TrafScript" line from `who`: {text, commands, ok, message, ask?, trace}.
-  nlohmann::json command(const std::string& text, const std::string& who);
+  // An English or "!TrafScript" line from `who` (the log's name) through
+  // the dialogue of opts.client: {text, commands, ok, message, ask?,
+  // addressed?, trace}.
+  nlohmann::json command(const std::string& text, const std::string& who, const script::CommandOptions& opts = {});
   // The controller's decision on advisory `id`: {ok, message, ...command reply}.
   nlohmann::json decide(int id, bool accept, const std::string& who);
   void set_auto(bool on);

@@ -8,9 +8,15 @@
 --       Loads the scenario (raises when the file does not load) and runs its
 --       t = 0 commands; s.load_report says what they did (see report below).
 --       clock: start the running clock at that multiple of real time.
---   s:command(text) -> reply
+--   s:command(text, opts) -> reply
 --       text: English (translated through graph.dialogue, then run) or
---       "!CMD" (TrafScript run as typed). reply = {
+--       "!CMD" (TrafScript run as typed). opts (optional) = {
+--         client = key: whose dialogue (a question raised for one client is
+--                  answered only by that client's next line; nil: the
+--                  session's own, s.dialogue),
+--         selected = callsign: a line that names no aircraft and does not
+--                  translate by itself (a question or an error) is
+--                  translated again as "CALLSIGN line" }. reply = {
 --         text = the input, kind = "english" | "trafscript",
 --         commands = { "HDG KL204 180", ... }   the TrafScript that ran
 --         results = { {cmd =, ok =, message =}, ... }  one per command run;
@@ -23,7 +29,8 @@
 --                 (HOLD, OP, FF, DTMULT),
 --         events = { event, ... } what happened while time moved (FF),
 --         touched = { id, ... } aircraft named or created by the commands,
---         deleted = { id, ... } }
+--         deleted = { id, ... },
+--         addressed = callsign when opts.selected was put in front }
 --   s:tick(wall_s) -> { event, ... }
 --       The running clock: advances by wall_s x multiplier when running (OP),
 --       to the FF end time at once in fast-time, not at all in HOLD; wall_s
@@ -67,6 +74,7 @@ function M.new(opts)
   opts = opts or {}
   local self = setmetatable({ sim = squawk.sim.new({ seed = opts.seed or 0 }), mode = opts.mode }, Session)
   self.dialogue = graph.dialogue({ sim = self.sim, mode = self.mode })
+  self.dialogues = {}  -- client key -> dialogue (opts.client of command())
   self.conflicts, self.los = {}, {}
   if opts.scenario and opts.scenario ~= "" then
     local ok, msg = self.sim:load(opts.scenario)
@@ -312,7 +320,26 @@ function Session:run_commands(cmds, reply)
   table.sort(reply.deleted)
 end
 
-function Session:command(text)
+-- The dialogue of `client` (nil: the session's own), made on first use.
+function Session:dialogue_for(client)
+  if client == nil or client == "" then return self.dialogue end
+  local d = self.dialogues[client]
+  if not d then
+    d = graph.dialogue({ sim = self.sim, mode = self.mode })
+    self.dialogues[client] = d
+  end
+  return d
+end
+
+-- Whether a word of `text` is the callsign of an aircraft in the simulation.
+function Session:names_aircraft(text)
+  for _, w in ipairs(words_upper(text)) do
+    if self.sim:get(w) then return true end
+  end
+  return false
+end
+
+function Session:command(text, opts)
   text = text:gsub("^%s+", ""):gsub("%s+$", "")
   local reply = { text = text, commands = {}, results = {}, events = {}, touched = {}, deleted = {} }
   if text:sub(1, 1) == "!" then
@@ -327,9 +354,22 @@ function Session:command(text)
   end
   reply.kind = "english"
   if text == "" then return reply end
-  local ok, r = pcall(self.dialogue.say, self.dialogue, text)
+  local d = self:dialogue_for(opts and opts.client)
+  local pending = d.pending
+  local ok, r = pcall(d.say, d, text)
+  local sel = opts and opts.selected
+  if ok and (r.ask or r.error) and not pending and sel and self.sim:get(sel) and not self:names_aircraft(text) then
+    local asked = d.pending
+    d.pending = nil
+    local ok2, r2 = pcall(d.say, d, sel .. " " .. text)
+    if ok2 and not r2.error then
+      r, reply.addressed = r2, sel
+    else
+      d.pending = asked
+    end
+  end
   if not ok then
-    self.dialogue.pending = nil
+    d.pending = nil
     reply.error = "the translator failed: " .. tostring(r) .. " (nothing ran; the simulation is unchanged)"
     return reply
   end

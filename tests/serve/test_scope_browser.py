@@ -12,6 +12,7 @@ Exit 77 (skipped) only when no Chromium is installed.
 """
 import argparse
 import json
+import math
 import os
 import subprocess
 import sys
@@ -116,6 +117,65 @@ def check_labels(browser, squawk):
         server.wait(timeout=10)
 
 
+def canvas_point(browser, lat, lon):
+    """Page pixel of (lat, lon) on the scope."""
+    return browser.eval(f"(() => {{ const c = document.getElementById('scope').getBoundingClientRect(); "
+                        f"const [x, y] = Scope.px({lat}, {lon}); return [c.left + x, c.top + y]; }})()")
+
+
+def great_circle(a, b):
+    """(bearing [deg], distance [NM]) from a to b, (lat, lon) in degrees."""
+    p1, l1, p2, l2 = map(math.radians, (*a, *b))
+    brg = math.degrees(math.atan2(math.sin(l2 - l1) * math.cos(p2),
+                                  math.cos(p1) * math.sin(p2) - math.sin(p1) * math.cos(p2) * math.cos(l2 - l1)))
+    h = math.sin((p2 - p1) / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin((l2 - l1) / 2) ** 2
+    return brg % 360, 2 * math.asin(math.sqrt(h)) * 6371000 / 1852
+
+
+def check_workflow(browser, squawk, scenario):
+    """Click an aircraft: selected, callsign in the command line, focus kept there; a line without a
+    callsign goes to it; its data are shown; right-drag measures range and bearing."""
+    server, addr = start_server(squawk, scenario, ["--paused"])
+    try:
+        browser.open(f"http://{addr}/")
+        browser.wait_for("document.querySelectorAll('#traffic tbody tr').length === 3", what="three aircraft")
+        ac = {a["id"]: a for a in get_state(addr)["aircraft"]}
+        x, y = canvas_point(browser, ac["KL204"]["lat"], ac["KL204"]["lon"])
+        browser.click(x, y)
+        browser.wait_for("Scope.selected === 'KL204'", what="KL204 selected by a click on its symbol")
+        assert browser.eval("document.getElementById('cmd').value") == "KL204 "
+        browser.wait_for("document.activeElement.id === 'cmd'", what="focus in the command line")
+        shown = browser.wait_for("document.getElementById('selected-pane').style.display !== 'none' && "
+                                 "document.getElementById('selected-data').textContent", what="the selected aircraft's data")
+        assert "KL204" in shown and "B744" in shown and "FL 200" in shown, shown
+        print(f"ok   a click on KL204 selects it, puts 'KL204 ' in the command line (focused) and shows {shown[:40]!r}...")
+        browser.type_text("turn right heading 120")
+        browser.press_enter()
+        said = browser.wait_for("document.getElementById('reply-commands').textContent.includes('HDG') && "
+                                "document.getElementById('reply-commands').textContent", what="HDG KL204 120")
+        assert said == "HDG KL204 120", said
+        browser.type_text("climb to flight level 250")
+        browser.press_enter()
+        said = browser.wait_for("document.getElementById('reply-commands').textContent.includes('ALT') && "
+                                "document.getElementById('reply-commands').textContent", what="ALT KL204 FL250")
+        assert said == "ALT KL204 FL250", said
+        typed = browser.eval("document.getElementById('reply-typed').textContent")
+        assert "(to KL204, selected)" in typed, typed
+        print(f"ok   a line without a callsign goes to the selected aircraft: {said!r}, shown as {typed!r}")
+        a, b = ac["KL204"], ac["BAW31"]
+        (x0, y0), (x1, y1) = canvas_point(browser, a["lat"], a["lon"]), canvas_point(browser, b["lat"], b["lon"])
+        browser.drag(x0, y0, x1, y1, button="right")
+        r = browser.wait_for("Scope.rbl()", what="a range/bearing line")
+        brg, nm = great_circle((a["lat"], a["lon"]), (b["lat"], b["lon"]))
+        assert abs(r["nm"] - nm) < 0.02 * nm + 0.2 and abs((r["brg"] - brg + 180) % 360 - 180) < 1.5, (r, brg, nm)
+        browser.wait_for("document.activeElement.id === 'cmd'", timeout=2, what="focus back in the command line")
+        print(f"ok   right-drag KL204 -> BAW31: {r['brg']:03.0f}° {r['nm']:.1f} NM (expected {brg:03.0f}° {nm:.1f} NM); "
+              "focus stays in the command line")
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("squawk")
@@ -174,6 +234,7 @@ def main():
             browser.screenshot(args.screenshot)
             print(f"screenshot {args.screenshot}")
         check_labels(browser, args.squawk)
+        check_workflow(browser, args.squawk, args.scenario)
     finally:
         browser.close()
         server.terminate()
