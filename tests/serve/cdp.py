@@ -72,6 +72,7 @@ class Browser:
                 return reply.get("result", {})
 
     def open(self, url):
+        """Opens `url` in a new page, which later calls drive; returns its session (see use)."""
         target = self.send("Target.createTarget", {"url": "about:blank"}, session=False)["targetId"]
         self.session = self.send("Target.attachToTarget", {"targetId": target, "flatten": True},
                                  session=False)["sessionId"]
@@ -79,6 +80,12 @@ class Browser:
                   {"width": self.width, "height": self.height, "deviceScaleFactor": 1, "mobile": False})
         self.send("Page.enable")
         self.send("Page.navigate", {"url": url})
+        return self.session
+
+    def use(self, session):
+        """Drives the page of `session` (from open) from now on."""
+        self.session = session
+        self.send("Page.bringToFront")
 
     def eval(self, expression):
         r = self.send("Runtime.evaluate", {"expression": expression, "returnByValue": True, "awaitPromise": True})

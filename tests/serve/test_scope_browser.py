@@ -5,7 +5,9 @@ in a dense converging scene started paused the predicted conflicts are
 listed at t = 0 by time to loss of separation and coloured by urgency, and
 once it runs no two labels of the page's label model
 intersect and none lies on a symbol, and a dragged data block keeps its
-offset.
+offset; a click on an aircraft selects it, fills the command line and a
+line without a callsign goes to it, right-drag measures range and bearing;
+two pages at once keep their own dialogues.
 
 usage: test_scope_browser.py SQUAWK_BINARY [--screenshot FILE.png] [--scenario FILE]
 Exit 77 (skipped) only when no Chromium is installed.
@@ -176,6 +178,46 @@ def check_workflow(browser, squawk, scenario):
         server.wait(timeout=10)
 
 
+def say(browser, text, what):
+    """Types `text` + Enter into the page's command line; waits for the reply; returns (result class, text)."""
+    browser.eval("document.getElementById('reply-result').textContent = ''; document.getElementById('cmd').value = ''")
+    browser.eval("document.getElementById('cmd').focus()")
+    browser.type_text(text)
+    browser.press_enter()
+    browser.wait_for("document.getElementById('reply-result').textContent", what=what)
+    return browser.eval("[document.getElementById('reply-result').className, "
+                        "document.getElementById('reply-result').textContent, "
+                        "document.getElementById('reply-commands').textContent]")
+
+
+def check_two_clients(browser, squawk, scenario):
+    """Two pages at once: a question raised on one is answered only by that page's next line."""
+    server, addr = start_server(squawk, scenario, ["--paused"])
+    try:
+        pages = [browser.open(f"http://{addr}/"), browser.open(f"http://{addr}/")]
+        for p in pages:
+            browser.use(p)
+            browser.wait_for("document.querySelectorAll('#traffic tbody tr').length === 3", what="three aircraft")
+        browser.use(pages[0])
+        cls, text, _ = say(browser, "KL204 descend", "page 1's question")
+        assert cls == "ask" and "KL204" in text, (cls, text)
+        browser.use(pages[1])
+        cls, text, cmds = say(browser, "flight level 100", "page 2's reply")
+        assert cls != "ok" and "KL204" not in text and "ALT" not in cmds, (cls, text, cmds)
+        sel = next(a for a in get_state(addr)["aircraft"] if a["id"] == "KL204")["sel_alt_ft"]
+        assert abs(sel - 20000) < 1, sel
+        browser.use(pages[0])
+        cls, text, cmds = say(browser, "flight level 100", "page 1's answer")
+        assert cls == "ok" and cmds == "ALT KL204 FL100", (cls, text, cmds)
+        sel = next(a for a in get_state(addr)["aircraft"] if a["id"] == "KL204")["sel_alt_ft"]
+        assert abs(sel - 10000) < 1, sel
+        print("ok   two pages: page 1 asks about 'KL204 descend', page 2's 'flight level 100' is not its answer, "
+              "page 1's is: ALT KL204 FL100")
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("squawk")
@@ -235,6 +277,7 @@ def main():
             print(f"screenshot {args.screenshot}")
         check_labels(browser, args.squawk)
         check_workflow(browser, args.squawk, args.scenario)
+        check_two_clients(browser, args.squawk, args.scenario)
     finally:
         browser.close()
         server.terminate()
