@@ -156,7 +156,7 @@
   document.querySelectorAll("[data-cmd]").forEach((b) => b.addEventListener("click", () => send(b.dataset.cmd)));
   $("speed").addEventListener("change", () => send(`!DTMULT ${$("speed").value}`));
   $("fit").addEventListener("click", () => Scope.fit());
-  const toggles = { "toggle-pz": "pz", "toggle-fixes": "fixes" };
+  const toggles = { "toggle-pz": "pz", "toggle-fixes": "fixes", "toggle-geo": "geo" };
   for (const [id, opt] of Object.entries(toggles))
     $(id).addEventListener("click", () => { const on = $(id).classList.toggle("on"); Scope.toggle(opt, on); });
   const vectors = [0, 1, 2, 5];
@@ -207,6 +207,19 @@
     }
     if (t !== $("cmd") && !(t && t.matches("input, select, textarea")) && e.key.length === 1 && !e.ctrlKey && !e.metaKey) focusCmd();
   });
+  // The legend: open until closed; the choice is remembered (?legend=0|1 overrides).
+  function showLegend(on) {
+    $("legend").classList.toggle("hidden", !on);
+    $("toggle-legend").classList.toggle("on", on);
+    Scope.toggle("legend", on);  // labels keep clear of it
+    try { localStorage.setItem("squawk.legend", on ? "1" : "0"); } catch (e) { /* private mode */ }
+  }
+  const legendParam = new URLSearchParams(location.search).get("legend");
+  let legendStored = null;
+  try { legendStored = localStorage.getItem("squawk.legend"); } catch (e) { /* private mode */ }
+  showLegend((legendParam ?? legendStored ?? "1") !== "0");
+  $("legend-close").addEventListener("click", () => showLegend(false));
+  $("toggle-legend").addEventListener("click", () => showLegend($("legend").classList.contains("hidden")));
   $("advisories").addEventListener("click", async (e) => {
     const b = e.target.closest("button[data-decision]");
     if (!b) return;

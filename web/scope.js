@@ -19,16 +19,18 @@ const Scope = (() => {
   const colors = {
     bg: "#050908", grid: "#15302a", gridText: "#3f6b5c", ac: "#7cf0b0", sel: "#5ad8ff",
     conf: "#ff4d4d", warn: "#ffb347", later: "#e0d36a", route: "#5ad8ff", fix: "#2f4c42", apt: "#7d9c90",
-    text: "#b9d8cb", pz: "#2f6f58", fixText: "#3d5f53", leader: "#4f7a6a",
+    text: "#b9d8cb", pz: "#2f6f58", fixText: "#4d7567", leader: "#4f7a6a", navaid: "#6f8fb0",
+    coast: "#2f5d7a", fir: "#6a4f86", firText: "#8a70a8", rbl: "#ffb347",
   };
   const view = { lat0: 52, lon0: 4, ppnm: 8, fitted: false };
-  const opts = { pz: false, fixes: true, vectorMin: 1 };
+  const opts = { pz: false, fixes: true, geo: true, vectorMin: 1 };
   let state = null;
   let selected = null;
   const trails = new Map();   // id -> [[lat, lon], ...] one point per state.trail.dt_s of sim time
   const TRAIL_LEN = 24;
   const trailColors = { BLUE: "#5a8cff", RED: "#ff4d4d", YELLOW: "#ffe14d" };  // TRAIL acid colour
-  let nav = { airports: [], fixes: [] }, navKey = "", navPending = false;
+  let nav = { airports: [], navaids: [], fixes: [] }, navKey = "", navPending = false;
+  let geo = { coast: [], fir: [] }, geoKey = "", geoPending = false;
   let onSelect = () => {};
   let dirty = true;
   const offsets = new Map();  // id -> [dx, dy] [px] a dragged data block's top-left from its aircraft
@@ -104,36 +106,86 @@ const Scope = (() => {
     ctx.fillText("N", nx - 4, ny + 14);
   }
 
-  function drawNav() {
-    if (!opts.fixes || view.ppnm < 1.5) return;
-    ctx.font = "10px monospace"; ctx.lineWidth = 1;
-    for (const [id, lat, lon] of nav.fixes) {
-      const [x, y] = px(lat, lon);
-      if (x < -10 || y < -10 || x > canvas.width + 10 || y > canvas.height + 10) continue;
-      ctx.strokeStyle = colors.fix;
-      ctx.beginPath(); ctx.moveTo(x, y - 3); ctx.lineTo(x - 2.6, y + 1.8); ctx.lineTo(x + 2.6, y + 1.8); ctx.closePath(); ctx.stroke();
-      if (view.ppnm > 14) { ctx.fillStyle = colors.fixText; ctx.fillText(id, x + 4, y + 3); }
+  // What the zoom shows of the navdata: airports from 0.4 px/NM (about
+  // 2500 NM across a 1000 px scope), navaids from 1.5, fixes from 12; their
+  // names where a free place is found around them. A navaid listed several
+  // times at one place (VOR, DME and NDB of one station) is drawn once.
+  const navKinds = () => opts.fixes ? ["airports", "navaids", "fixes"].filter((k, i) => view.ppnm >= [0.4, 1.5, 12][i]) : [];
+  const onCanvas = (x, y) => x > -10 && y > -10 && x < canvas.width + 10 && y < canvas.height + 10;
+
+  function navPoints() {
+    const out = [], kinds = navKinds();
+    const seen = new Map();  // id -> [x, y] drawn
+    for (const k of kinds) for (const [id, lat, lon, type] of nav[k] || []) {
+      const [x, y] = px(lat, lon), prev = seen.get(id);
+      if (!onCanvas(x, y) || (prev && Math.hypot(prev[0] - x, prev[1] - y) < 4)) continue;
+      seen.set(id, [x, y]);
+      out.push({ kind: k, id, type, x, y });
     }
-    for (const [id, lat, lon] of nav.airports) {
-      const [x, y] = px(lat, lon);
-      if (x < -10 || y < -10 || x > canvas.width + 10 || y > canvas.height + 10) continue;
-      ctx.strokeStyle = colors.apt; ctx.fillStyle = colors.apt;
-      ctx.beginPath(); ctx.arc(x, y, 5, 0, 2 * Math.PI); ctx.stroke();
-      ctx.beginPath(); ctx.moveTo(x - 7, y); ctx.lineTo(x + 7, y); ctx.stroke();
-      ctx.fillText(id, x + 7, y - 5);
+    return out;
+  }
+
+  function drawNav(points) {
+    ctx.lineWidth = 1;
+    for (const p of points) {
+      const { x, y } = p;
+      if (p.kind === "fixes") {
+        ctx.strokeStyle = colors.fix;
+        ctx.beginPath(); ctx.moveTo(x, y - 3); ctx.lineTo(x - 2.6, y + 1.8); ctx.lineTo(x + 2.6, y + 1.8); ctx.closePath(); ctx.stroke();
+      } else if (p.kind === "navaids") {
+        ctx.strokeStyle = colors.navaid;
+        ctx.beginPath();
+        for (let i = 0; i <= 6; i++) ctx[i ? "lineTo" : "moveTo"](x + 4 * Math.cos(i * Math.PI / 3), y + 4 * Math.sin(i * Math.PI / 3));
+        ctx.stroke();
+        if (p.type === "NDB" || p.type === "DME" || p.type === "TACAN") ctx.strokeRect(x - 1, y - 1, 2, 2);
+      } else {
+        ctx.strokeStyle = colors.apt;
+        ctx.beginPath(); ctx.arc(x, y, 5, 0, 2 * Math.PI); ctx.stroke();
+        ctx.beginPath(); ctx.moveTo(x - 7, y); ctx.lineTo(x + 7, y); ctx.stroke();
+      }
     }
   }
 
-  // Fetches the navdata of the visible box when the view moved enough.
+  // Coastlines and FIR borders (navdata's coastlines.dat and fir/*.txt).
+  function drawGeo() {
+    if (!opts.geo) return;
+    ctx.lineWidth = 1; ctx.strokeStyle = colors.coast;
+    for (const line of geo.coast) {
+      ctx.beginPath();
+      for (let i = 0; i < line.length; i += 2) ctx[i ? "lineTo" : "moveTo"](...px(line[i], line[i + 1]));
+      ctx.stroke();
+    }
+    ctx.strokeStyle = colors.fir; ctx.setLineDash([8, 4, 2, 4]);
+    for (const f of geo.fir) {
+      ctx.beginPath();
+      for (let i = 0; i < f.pts.length; i += 2) ctx[i ? "lineTo" : "moveTo"](...px(f.pts[i], f.pts[i + 1]));
+      ctx.stroke();
+    }
+    ctx.setLineDash([]);
+  }
+
+  // Fetches the navdata and the geography of the visible box when the view moved enough.
   function refreshNav() {
-    if (!opts.fixes || view.ppnm < 1.5 || navPending) return;
     const [s, w] = unpx(0, canvas.height), [n, e] = unpx(canvas.width, 0);
-    const key = [s, n, w, e].map((v) => v.toFixed(1)).join(",");
-    if (key === navKey) return;
-    navPending = true;
-    fetch(`/api/navdata?south=${s}&north=${n}&west=${w}&east=${e}`).then((r) => r.json()).then((j) => {
-      nav = j; navKey = key; dirty = true;
-    }).catch(() => {}).finally(() => { navPending = false; });
+    const box = `south=${s}&north=${n}&west=${w}&east=${e}`;
+    const kinds = navKinds(), key = [s, n, w, e].map((v) => v.toFixed(2)).join(",") + kinds.join();
+    if (key !== navKey && !navPending) {
+      if (kinds.length === 0) { nav = { airports: [], navaids: [], fixes: [] }; navKey = key; dirty = true; }
+      else {
+        navPending = true;
+        fetch(`/api/navdata?${box}&kinds=${kinds.join(",")}`).then((r) => r.json()).then((j) => {
+          nav = j; navKey = key; dirty = true;
+        }).catch(() => {}).finally(() => { navPending = false; });
+      }
+    }
+    const step = 1.5 / (view.ppnm * 60);  // [deg] 1.5 px
+    const gkey = [s, n, w, e].map((v) => v.toFixed(2)).join(",") + step.toPrecision(2);
+    if (opts.geo && gkey !== geoKey && !geoPending) {
+      geoPending = true;
+      fetch(`/api/geo?${box}&step=${step}`).then((r) => r.json()).then((j) => {
+        geo = j; geoKey = gkey; dirty = true;
+      }).catch(() => {}).finally(() => { geoPending = false; });
+    }
   }
 
   function inConflict() {
@@ -160,7 +212,7 @@ const Scope = (() => {
   // when the rings are full, the free spot of a 10 px grid over the canvas
   // nearest the anchor (a longer leader line); when none is free, the ring
   // candidate with the least overlap (off-canvas counts as overlap).
-  function place(ax, ay, w, h, taken) {
+  function place(ax, ay, w, h, taken, strict = false) {
     let best = null, bestScore = Infinity;
     const score = (box, limit) => {
       let sc = box.x < 0 || box.y < 0 || box.x + box.w > canvas.width || box.y + box.h > canvas.height ? box.w * box.h : 0;
@@ -175,6 +227,7 @@ const Scope = (() => {
       if (sc === 0) return box;
       if (sc < bestScore) { best = box; bestScore = sc; }
     }
+    if (strict) return null;
     const grid = [];
     for (let x = 0; x + w <= canvas.width; x += 10) for (let y = 0; y + h <= canvas.height; y += 10)
       grid.push([Math.hypot(x + w / 2 - ax, y + h / 2 - ay), x, y]);
@@ -193,8 +246,9 @@ const Scope = (() => {
     return [Math.ceil(w) + 6, lines.length * LINE_H + 4];
   }
 
-  // Lays out every symbol and label of the frame (no drawing).
-  function layout(status) {
+  // Lays out every symbol and label of the frame (no drawing); the names of
+  // navdata points come last and only where a ring place is free.
+  function layout(status, navPts) {
     symbols = []; labels = [];
     const sel = state.aircraft.find((a) => a.id === selected);
     for (const a of state.aircraft) {
@@ -210,7 +264,11 @@ const Scope = (() => {
       const [x, y] = px(w.lat, w.lon);
       symbols.push({ kind: "waypoint", key: w.name, x: x - 4, y: y - 4, w: 8, h: 8, cx: x, cy: y });
     }
+    // Labels also keep clear of the legend when it is open.
+    const legend = document.getElementById("legend"), cr = canvas.getBoundingClientRect();
+    const lr = legend && !legend.classList.contains("hidden") ? legend.getBoundingClientRect() : null;
     const taken = symbols.slice();
+    if (lr && lr.width) taken.push({ kind: "legend", x: lr.left - cr.left, y: lr.top - cr.top, w: lr.width, h: lr.height });
     const add = (l) => { labels.push(l); taken.push(l); };
     // Data blocks: the selected aircraft and those in conflict first.
     const order = state.aircraft.slice().sort((p, q) =>
@@ -232,6 +290,13 @@ const Scope = (() => {
       const [x, y] = px(wp.lat, wp.lon);
       const text = [wp.name + (wp.alt_ft != null ? ` ${fl(wp.alt_ft)}` : "")], [w, h] = textBox(text, ["11px monospace"]);
       add({ kind: "route", key: wp.name, text, ...place(x, y, w, h, taken), ax: x, ay: y });
+    }
+    const named = { airports: 0.4, navaids: 3, fixes: 25 };  // [px/NM] zoom from which names show
+    for (const p of navPts) {
+      if (view.ppnm < named[p.kind]) continue;
+      const text = [p.id], [w, h] = textBox(text, ["10px monospace"]);
+      const box = place(p.x, p.y, w, h, taken, true);
+      if (box) add({ kind: "nav", key: `${p.kind}:${p.id}`, text, ...box, ax: p.x, ay: p.y, color: colors[{ airports: "apt", navaids: "navaid", fixes: "fixText" }[p.kind]] });
     }
   }
 
@@ -337,15 +402,15 @@ const Scope = (() => {
   }
 
   // A placed label: dark box, text lines, and a leader line from its anchor when it sits away from it.
-  function drawLabel(l, color, fonts) {
+  // Plain labels (navdata names) have neither box nor leader line.
+  function drawLabel(l, color, fonts, plain = false) {
     const [ex, ey] = nearest(l, l.ax, l.ay);
-    if (Math.hypot(ex - l.ax, ey - l.ay) > 7) {
+    if (!plain && Math.hypot(ex - l.ax, ey - l.ay) > 7) {
       ctx.strokeStyle = colors.leader; ctx.lineWidth = 1;
       const d = Math.hypot(ex - l.ax, ey - l.ay), sx = l.ax + (ex - l.ax) * 6 / d, sy = l.ay + (ey - l.ay) * 6 / d;
       ctx.beginPath(); ctx.moveTo(sx, sy); ctx.lineTo(ex, ey); ctx.stroke();
     }
-    ctx.fillStyle = "rgba(5, 9, 8, 0.8)";
-    ctx.fillRect(l.x, l.y, l.w, l.h);
+    if (!plain) { ctx.fillStyle = "rgba(5, 9, 8, 0.8)"; ctx.fillRect(l.x, l.y, l.w, l.h); }
     ctx.fillStyle = color;
     l.text.forEach((t, i) => { ctx.font = fonts[i] || fonts[0]; ctx.fillText(t, l.x + 3, l.y + 2 + (i + 1) * LINE_H - 3); });
   }
@@ -353,10 +418,12 @@ const Scope = (() => {
   function draw() {
     ctx.fillStyle = colors.bg; ctx.fillRect(0, 0, canvas.width, canvas.height);
     drawGrid();
-    drawNav();
+    drawGeo();
+    const navPts = navPoints();
+    drawNav(navPts);
     if (state) {
       const status = inConflict();
-      layout(status);
+      layout(status, navPts);
       const sel = state.aircraft.find((a) => a.id === selected);
       if (sel) drawRoute(sel);
       drawConflicts();
@@ -367,6 +434,8 @@ const Scope = (() => {
           drawLabel(l, st ? colors.conf : l.key === selected ? colors.sel : colors.ac, ["bold 12px monospace", "12px monospace"]);
         } else if (l.kind === "conflict") {
           drawLabel(l, l.color, ["bold 11px monospace"]);
+        } else if (l.kind === "nav") {
+          drawLabel(l, l.color, ["10px monospace"], true);
         } else {
           drawLabel(l, colors.route, ["11px monospace"]);
         }
@@ -465,7 +534,9 @@ const Scope = (() => {
   return {
     update, select, fit, toggle, px, clearRbl,
     rbl: () => rbl && { ...rbl, ...rangeBearing(rbl.from, rbl.to) },
-    labels: () => copy(labels), symbols: () => copy(symbols), offset: (id) => offsets.get(id) || null,
+    labels: () => copy(labels), geo: () => ({ coast: geo.coast.length, fir: geo.fir.map((f) => f.name) }),
+    nav: () => ({ kinds: navKinds(), airports: nav.airports.length, navaids: nav.navaids.length, fixes: nav.fixes.length }),
+    zoom: (ppnm) => { view.ppnm = ppnm; dirty = true; }, symbols: () => copy(symbols), offset: (id) => offsets.get(id) || null,
     set onSelect(f) { onSelect = f; }, get selected() { return selected; },
   };
 })();

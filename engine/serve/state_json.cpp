@@ -126,23 +126,28 @@ json state_json(const command::Stack& stack) {
   return out;
 }
 
-json navdata_json(const command::NavDb* db, const GeoBox& box, size_t limit) {
-  json out = {{"airports", json::array()}, {"fixes", json::array()}, {"truncated", false}};
+json navdata_json(const command::NavDb* db, const GeoBox& box, size_t limit, NavKinds kinds) {
+  json out = {{"airports", json::array()}, {"navaids", json::array()}, {"fixes", json::array()}, {"truncated", false}};
   if (!db) return out;
   size_t n = 0;
-  auto add = [&](const std::vector<command::NavPoint>& pts, json& list) {
+  // Appends the points of `pts` in the box whose type `want` accepts.
+  auto add = [&](const std::vector<command::NavPoint>& pts, json& list, auto want, bool with_type) {
     for (const auto& p : pts) {
-      if (p.lat < box.lat0 || p.lat > box.lat1 || p.lon < box.lon0 || p.lon > box.lon1) continue;
+      if (!want(p) || p.lat < box.lat0 || p.lat > box.lat1 || p.lon < box.lon0 || p.lon > box.lon1) continue;
       if (n == limit) {
         out["truncated"] = true;
         return;
       }
-      list.push_back({p.id, p.lat, p.lon});
+      list.push_back(with_type ? json::array({p.id, p.lat, p.lon, p.type}) : json::array({p.id, p.lat, p.lon}));
       ++n;
     }
   };
-  add(db->airports(), out["airports"]);
-  add(db->waypoints(), out["fixes"]);
+  const auto any = [](const command::NavPoint&) { return true; };
+  const auto fix = [](const command::NavPoint& p) { return p.type == "FIX"; };
+  const auto navaid = [](const command::NavPoint& p) { return p.type != "FIX"; };
+  if (kinds.airports) add(db->airports(), out["airports"], any, false);
+  if (kinds.navaids) add(db->waypoints(), out["navaids"], navaid, true);
+  if (kinds.fixes) add(db->waypoints(), out["fixes"], fix, false);
   return out;
 }
 

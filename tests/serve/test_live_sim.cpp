@@ -61,12 +61,16 @@ TEST_CASE("navdata_json: points inside the box, at most `limit`") {
                     {{"SPY", "VOR", 52.54, 4.85}, {"ARTIP", "FIX", 52.51, 5.57}, {"LAM", "VOR", 51.65, 0.15}});
   const json all = serve::navdata_json(&db, {50, 54, 3, 6}, 100);
   CHECK(all["airports"] == json::array({json::array({"EHAM", 52.3, 4.76})}));
-  CHECK(all["fixes"].size() == 2);
+  CHECK(all["navaids"] == json::array({json::array({"SPY", 52.54, 4.85, "VOR"})}));
+  CHECK(all["fixes"] == json::array({json::array({"ARTIP", 52.51, 5.57})}));
   CHECK(all["truncated"] == false);
   const json two = serve::navdata_json(&db, {50, 54, 3, 6}, 2);
-  CHECK(two["airports"].size() + two["fixes"].size() == 2);
+  CHECK(two["airports"].size() + two["navaids"].size() + two["fixes"].size() == 2);
   CHECK(two["truncated"] == true);
   CHECK(serve::navdata_json(nullptr, {}, 10)["fixes"].empty());
+  const json apts = serve::navdata_json(&db, {50, 54, 3, 6}, 100, {true, false, false});
+  CHECK(apts["airports"].size() == 1);
+  CHECK((apts["navaids"].empty() && apts["fixes"].empty()));
 }
 
 TEST_CASE("LiveSim: requests run on the owner thread; the state is published after each") {

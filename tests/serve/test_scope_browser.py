@@ -218,6 +218,46 @@ def check_two_clients(browser, squawk, scenario):
         server.wait(timeout=10)
 
 
+NAVDATA = os.path.join(HERE, "..", "..", "..", "shared", "bluesky", "navdata")
+
+
+def check_geography(browser, squawk):
+    """With navdata: coastlines and FIR borders drawn, navdata by zoom, a legend that closes and reopens."""
+    if not os.path.exists(os.path.join(NAVDATA, "coastlines.dat")):
+        print(f"skip geography: {NAVDATA} absent")
+        return
+    scn = os.path.join(HERE, "..", "..", "scenarios", "scope_demo.scn")
+    server, addr = start_server(squawk, scn, ["--paused", "--navdata", NAVDATA])
+    try:
+        browser.open(f"http://{addr}/")
+        geo = browser.wait_for("Scope.geo().coast > 0 && Scope.geo()", what="coastlines")
+        assert "EHAA" in geo["fir"], geo["fir"]
+        nav = browser.wait_for("Scope.nav().navaids > 0 && Scope.nav()", what="navaids at the fitted zoom")
+        assert nav["kinds"] == ["airports", "navaids"] and nav["airports"] > 0, nav
+        labels, symbols = browser.eval("[Scope.labels(), Scope.symbols()]")
+        names = [l for l in labels if l["kind"] == "nav"]
+        assert names and not overprints(labels, symbols), overprints(labels, symbols)
+        print(f"ok   navdata: {geo['coast']} coastlines, FIR {', '.join(geo['fir'])}; {nav['airports']} airports, "
+              f"{nav['navaids']} navaids; {len(names)} names placed without overlap")
+        browser.eval("Scope.zoom(0.5)")
+        nav = browser.wait_for("Scope.nav().navaids === 0 && Scope.nav().airports > 0 && Scope.nav()", what="airports only")
+        assert nav["kinds"] == ["airports"], nav
+        browser.eval("Scope.zoom(20)")
+        nav = browser.wait_for("Scope.nav().fixes > 0 && Scope.nav()", what="fixes zoomed in")
+        print(f"ok   by zoom: 0.5 px/NM airports only; 20 px/NM {nav['fixes']} fixes too")
+        assert browser.eval("!document.getElementById('legend').classList.contains('hidden')")
+        rows = browser.eval("document.querySelectorAll('#legend dd').length")
+        assert rows >= 15, rows
+        browser.eval("document.getElementById('legend-close').click()")
+        assert browser.eval("document.getElementById('legend').classList.contains('hidden')")
+        browser.eval("document.getElementById('toggle-legend').click()")
+        assert browser.eval("!document.getElementById('legend').classList.contains('hidden')")
+        print(f"ok   legend of {rows} entries open, closed with ×, reopened with LEGEND")
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("squawk")
@@ -278,6 +318,7 @@ def main():
         check_labels(browser, args.squawk)
         check_workflow(browser, args.squawk, args.scenario)
         check_two_clients(browser, args.squawk, args.scenario)
+        check_geography(browser, args.squawk)
     finally:
         browser.close()
         server.terminate()
