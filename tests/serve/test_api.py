@@ -6,6 +6,7 @@ advisories with accept / reject and automatic execution.
 usage: test_api.py SQUAWK_BINARY
 """
 import json
+import re
 import os
 import socket
 import sys
@@ -183,6 +184,11 @@ def test_teammate(squawk):
         pending = [a for a in adv if a["status"] == "pending"]
         check(len(pending) == 1 and pending[0]["text"].startswith("KL001, "), f"an advisory for KL001: {pending}")
         command(addr, "!HOLD")  # decide at leisure
+        fleet = state(addr)["aircraft"]
+        check(all(re.fullmatch(r"[A-Z]{2,3}[0-9][0-9A-Z]{1,3}", a["id"]) for a in fleet) and len({a["type"] for a in fleet}) > 2
+              and all(abs(a["alt_ft"] - 24000) < 50 for a in fleet),
+              "the teammate's traffic has airline callsigns, several types, FL240: "
+              + ", ".join(f"{a['id']} {a['type']} {a['alt_ft']:.0f} ft" for a in fleet))
         a = next(a for a in state(addr)["advisories"] if a["status"] == "pending")
         code, r = request(addr, "/api/advisory", {"id": a["id"], "decision": "reject"})
         check(code == 200 and r["status"] == "rejected", f"reject -> {r}")
@@ -227,6 +233,17 @@ def test_teammate(squawk):
             auto = [x for x in state(addr)["advisories"] if x["decided_by"] == "auto"]
             time.sleep(0.05)
         check(bool(auto) and auto[0]["status"] == "accepted", f"automatic mode executes advisories: {auto[:1]}")
+        s = state(addr)
+        texts = [x["text"] for x in s["advisories"]]
+        advice = [re.sub(r", \d+ miles", "", t) for t in texts]  # the distance changes as time goes by
+        check(all(p != q for p, q in zip(advice, advice[1:])), f"no advisory offered twice in a row unchanged: {texts}")
+        miles = [int(m) for m in re.findall(r"o'clock, (\d+) miles", " ".join(texts))]
+        check(all(m <= 15 for m in miles), f"traffic information within 15 miles: {miles}")
+        who = {e["who"] for e in s["log"]}
+        check({"controller", "auto", "teammate"} <= who and
+              any(e["text"].startswith("accepted advisory") for e in s["log"]) and
+              any(e["text"] == "automatic execution of advisories on" for e in s["log"]),
+              f"accept, reject and automatic mode stay in the log: {sorted(who)}")
     finally:
         server.terminate()
         check(server.wait(timeout=10) == 0, "squawk serve --agent exits 0 on SIGTERM")
