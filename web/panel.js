@@ -156,7 +156,7 @@
   document.querySelectorAll("[data-cmd]").forEach((b) => b.addEventListener("click", () => send(b.dataset.cmd)));
   $("speed").addEventListener("change", () => send(`!DTMULT ${$("speed").value}`));
   $("fit").addEventListener("click", () => Scope.fit());
-  const toggles = { "toggle-pz": "pz", "toggle-fixes": "fixes", "toggle-geo": "geo" };
+  const toggles = { "toggle-pz": "pz", "toggle-fixes": "fixes", "toggle-geo": "geo", "toggle-trails": "trails" };
   for (const [id, opt] of Object.entries(toggles))
     $(id).addEventListener("click", () => { const on = $(id).classList.toggle("on"); Scope.toggle(opt, on); });
   const vectors = [0, 1, 2, 5];
@@ -207,7 +207,8 @@
     }
     if (t !== $("cmd") && !(t && t.matches("input, select, textarea")) && e.key.length === 1 && !e.ctrlKey && !e.metaKey) focusCmd();
   });
-  // The legend: open until closed; the choice is remembered (?legend=0|1 overrides).
+  // The legend: open until closed (at first closed below 1280 px, where it
+  // would hide much of the scope); the choice is remembered (?legend=0|1 overrides).
   function showLegend(on) {
     $("legend").classList.toggle("hidden", !on);
     $("toggle-legend").classList.toggle("on", on);
@@ -217,7 +218,7 @@
   const legendParam = new URLSearchParams(location.search).get("legend");
   let legendStored = null;
   try { legendStored = localStorage.getItem("squawk.legend"); } catch (e) { /* private mode */ }
-  showLegend((legendParam ?? legendStored ?? "1") !== "0");
+  showLegend((legendParam ?? legendStored ?? (window.innerWidth < 1280 ? "0" : "1")) !== "0");
   $("legend-close").addEventListener("click", () => showLegend(false));
   $("toggle-legend").addEventListener("click", () => showLegend($("legend").classList.contains("hidden")));
   $("advisories").addEventListener("click", async (e) => {
@@ -229,6 +230,12 @@
   });
   $("auto").addEventListener("change", () => post("/api/auto", { on: $("auto").checked }));
 
-  connect();
+  // ?capture=1: one state from GET /api/state and no push stream, so that a
+  // headless browser's --screenshot finds the page idle and returns.
+  if (new URLSearchParams(location.search).get("capture") === "1") {
+    fetch("/api/state").then((r) => r.json()).then((s) => { render(s); document.body.dataset.captured = "1"; });
+  } else {
+    connect();
+  }
   focusCmd();
 })();

@@ -23,7 +23,7 @@ const Scope = (() => {
     coast: "#2f5d7a", fir: "#6a4f86", firText: "#8a70a8", rbl: "#ffb347",
   };
   const view = { lat0: 52, lon0: 4, ppnm: 8, fitted: false };
-  const opts = { pz: false, fixes: true, geo: true, vectorMin: 1 };
+  const opts = { pz: false, fixes: true, geo: true, trails: true, vectorMin: 1 };
   let state = null;
   let selected = null;
   const trails = new Map();   // id -> [[lat, lon], ...] one point per state.trail.dt_s of sim time
@@ -40,19 +40,27 @@ const Scope = (() => {
   const nm = (lat, lon) => [(lon - view.lon0) * 60 * Math.cos(view.lat0 * Math.PI / 180), (lat - view.lat0) * 60];
   function px(lat, lon) {
     const [x, y] = nm(lat, lon);
-    return [canvas.width / 2 + x * view.ppnm, canvas.height / 2 - y * view.ppnm];
+    return [W / 2 + x * view.ppnm, H / 2 - y * view.ppnm];
   }
   function unpx(x, y) {
-    const xn = (x - canvas.width / 2) / view.ppnm, yn = -(y - canvas.height / 2) / view.ppnm;
+    const xn = (x - W / 2) / view.ppnm, yn = -(y - H / 2) / view.ppnm;
     return [view.lat0 + yn / 60, view.lon0 + xn / (60 * Math.cos(view.lat0 * Math.PI / 180))];
   }
 
+  // The canvas is drawn in logical pixels: CSS pixels / K, K = 1 up to a
+  // 2400 px wide scope and more beyond (4K: symbols and text grow with the
+  // screen), times the device pixel ratio for sharp lines.
+  let W = 200, H = 200, K = 1;
   function resize() {
-    const r = canvas.getBoundingClientRect();
-    canvas.width = Math.max(200, Math.round(r.width));
-    canvas.height = Math.max(200, Math.round(r.height));
+    const r = canvas.getBoundingClientRect(), dpr = window.devicePixelRatio || 1;
+    K = r.width >= 2400 ? Math.min(2, r.width / 1600) : 1;
+    canvas.width = Math.max(200, Math.round(r.width * dpr));
+    canvas.height = Math.max(200, Math.round(r.height * dpr));
+    W = canvas.width / (dpr * K); H = canvas.height / (dpr * K);
+    ctx.setTransform(dpr * K, 0, 0, dpr * K, 0, 0);
     dirty = true;
   }
+  const mx = (e) => e.offsetX / K, my = (e) => e.offsetY / K;
 
   function fit() {
     if (!state || state.aircraft.length === 0) return;
@@ -62,7 +70,7 @@ const Scope = (() => {
     }
     view.lat0 = (s + n) / 2; view.lon0 = (w + e) / 2;
     const [wx, hy] = [(e - w) * 60 * Math.cos(view.lat0 * Math.PI / 180), (n - s) * 60];
-    const span = Math.max(wx / canvas.width, hy / canvas.height, 30 / Math.min(canvas.width, canvas.height));
+    const span = Math.max(wx / W, hy / H, 30 / Math.min(W, H));
     view.ppnm = 1 / (span * 1.5);
     view.fitted = true;
     dirty = true;
@@ -76,32 +84,32 @@ const Scope = (() => {
   }
 
   function drawGrid() {
-    const [latS, lonW] = unpx(0, canvas.height), [latN, lonE] = unpx(canvas.width, 0);
+    const [latS, lonW] = unpx(0, H), [latN, lonE] = unpx(W, 0);
     const step = niceStep((latN - latS) / 8);
     ctx.strokeStyle = colors.grid; ctx.fillStyle = colors.gridText; ctx.lineWidth = 1;
     ctx.font = "11px monospace";
     const dec = step >= 1 ? 0 : step >= 0.1 ? 1 : 2;
     for (let lat = Math.ceil(latS / step) * step; lat <= latN; lat += step) {
       const [, y] = px(lat, view.lon0);
-      ctx.beginPath(); ctx.moveTo(0, y); ctx.lineTo(canvas.width, y); ctx.stroke();
+      ctx.beginPath(); ctx.moveTo(0, y); ctx.lineTo(W, y); ctx.stroke();
       ctx.fillText(`${Math.abs(lat).toFixed(dec)}°${lat >= 0 ? "N" : "S"}`, 4, y - 3);
     }
     for (let lon = Math.ceil(lonW / step) * step; lon <= lonE; lon += step) {
       const [x] = px(view.lat0, lon);
-      ctx.beginPath(); ctx.moveTo(x, 0); ctx.lineTo(x, canvas.height); ctx.stroke();
-      ctx.fillText(`${Math.abs(lon).toFixed(dec)}°${lon >= 0 ? "E" : "W"}`, x + 3, canvas.height - 6);
+      ctx.beginPath(); ctx.moveTo(x, 0); ctx.lineTo(x, H); ctx.stroke();
+      ctx.fillText(`${Math.abs(lon).toFixed(dec)}°${lon >= 0 ? "E" : "W"}`, x + 3, H - 6);
     }
   }
 
   function drawScale() {
     const nmLen = niceStep(120 / view.ppnm), len = nmLen * view.ppnm;
-    const x = 16, y = canvas.height - 28;
+    const x = 16, y = H - 28;
     ctx.strokeStyle = colors.text; ctx.fillStyle = colors.text; ctx.lineWidth = 2;
     ctx.beginPath(); ctx.moveTo(x, y - 5); ctx.lineTo(x, y); ctx.lineTo(x + len, y); ctx.lineTo(x + len, y - 5); ctx.stroke();
     ctx.font = "12px monospace";
     ctx.fillText(`${nmLen} NM`, x + len / 2 - 16, y - 8);
     // North arrow, top right.
-    const nx = canvas.width - 24, ny = 50;
+    const nx = W - 24, ny = 50;
     ctx.beginPath(); ctx.moveTo(nx, ny - 18); ctx.lineTo(nx - 6, ny); ctx.lineTo(nx + 6, ny); ctx.closePath(); ctx.fill();
     ctx.fillText("N", nx - 4, ny + 14);
   }
@@ -111,7 +119,7 @@ const Scope = (() => {
   // names where a free place is found around them. A navaid listed several
   // times at one place (VOR, DME and NDB of one station) is drawn once.
   const navKinds = () => opts.fixes ? ["airports", "navaids", "fixes"].filter((k, i) => view.ppnm >= [0.4, 1.5, 12][i]) : [];
-  const onCanvas = (x, y) => x > -10 && y > -10 && x < canvas.width + 10 && y < canvas.height + 10;
+  const onCanvas = (x, y) => x > -10 && y > -10 && x < W + 10 && y < H + 10;
 
   function navPoints() {
     const out = [], kinds = navKinds();
@@ -166,7 +174,7 @@ const Scope = (() => {
 
   // Fetches the navdata and the geography of the visible box when the view moved enough.
   function refreshNav() {
-    const [s, w] = unpx(0, canvas.height), [n, e] = unpx(canvas.width, 0);
+    const [s, w] = unpx(0, H), [n, e] = unpx(W, 0);
     const box = `south=${s}&north=${n}&west=${w}&east=${e}`;
     const kinds = navKinds(), key = [s, n, w, e].map((v) => v.toFixed(2)).join(",") + kinds.join();
     if (key !== navKey && !navPending) {
@@ -215,7 +223,7 @@ const Scope = (() => {
   function place(ax, ay, w, h, taken, strict = false) {
     let best = null, bestScore = Infinity;
     const score = (box, limit) => {
-      let sc = box.x < 0 || box.y < 0 || box.x + box.w > canvas.width || box.y + box.h > canvas.height ? box.w * box.h : 0;
+      let sc = box.x < 0 || box.y < 0 || box.x + box.w > W || box.y + box.h > H ? box.w * box.h : 0;
       for (const t of taken) { if (sc >= limit) break; sc += overlapArea(box, t); }
       return sc;
     };
@@ -229,7 +237,7 @@ const Scope = (() => {
     }
     if (strict) return null;
     const grid = [];
-    for (let x = 0; x + w <= canvas.width; x += 10) for (let y = 0; y + h <= canvas.height; y += 10)
+    for (let x = 0; x + w <= W; x += 10) for (let y = 0; y + h <= H; y += 10)
       grid.push([Math.hypot(x + w / 2 - ax, y + h / 2 - ay), x, y]);
     grid.sort((p, q) => p[0] - q[0]);
     for (const [, x, y] of grid) { const box = { x, y, w, h }; if (score(box, 1) === 0) return box; }
@@ -264,11 +272,12 @@ const Scope = (() => {
       const [x, y] = px(w.lat, w.lon);
       symbols.push({ kind: "waypoint", key: w.name, x: x - 4, y: y - 4, w: 8, h: 8, cx: x, cy: y });
     }
-    // Labels also keep clear of the legend when it is open.
-    const legend = document.getElementById("legend"), cr = canvas.getBoundingClientRect();
-    const lr = legend && !legend.classList.contains("hidden") ? legend.getBoundingClientRect() : null;
-    const taken = symbols.slice();
-    if (lr && lr.width) taken.push({ kind: "legend", x: lr.left - cr.left, y: lr.top - cr.top, w: lr.width, h: lr.height });
+    // Labels also keep clear of the tool bar and of the legend when it is open.
+    const cr = canvas.getBoundingClientRect(), taken = symbols.slice();
+    for (const id of ["scope-tools", "legend"]) {
+      const el = document.getElementById(id), r = el && !el.classList.contains("hidden") ? el.getBoundingClientRect() : null;
+      if (r && r.width) taken.push({ kind: id, x: (r.left - cr.left) / K, y: (r.top - cr.top) / K, w: r.width / K, h: r.height / K });
+    }
     const add = (l) => { labels.push(l); taken.push(l); };
     // Data blocks: the selected aircraft and those in conflict first.
     const order = state.aircraft.slice().sort((p, q) =>
@@ -378,8 +387,8 @@ const Scope = (() => {
     const [x, y] = px(a.lat, a.lon);
     const color = status ? colors.conf : a.id === selected ? colors.sel : colors.ac;
     ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = 1.5;
-    // History trail (TRAIL ON), oldest faintest, in the colour TRAIL acid set.
-    const tr = state.trail.on ? trails.get(a.id) || [] : [];
+    // History trail (the TRAIL button; on by default), oldest faintest, in the colour TRAIL acid set.
+    const tr = opts.trails ? trails.get(a.id) || [] : [];
     ctx.fillStyle = trailColors[state.trail.colour[a.id]] || color;
     tr.forEach(([lat, lon], i) => {
       const [tx, ty] = px(lat, lon);
@@ -416,7 +425,7 @@ const Scope = (() => {
   }
 
   function draw() {
-    ctx.fillStyle = colors.bg; ctx.fillRect(0, 0, canvas.width, canvas.height);
+    ctx.fillStyle = colors.bg; ctx.fillRect(0, 0, W, H);
     drawGrid();
     drawGeo();
     const navPts = navPoints();
@@ -444,7 +453,7 @@ const Scope = (() => {
     drawRbl();
     drawScale();
     document.getElementById("view-info").textContent =
-      `${view.lat0.toFixed(3)}° ${view.lon0.toFixed(3)}°  ${(canvas.width / view.ppnm).toFixed(0)} NM across`;
+      `${view.lat0.toFixed(3)}° ${view.lon0.toFixed(3)}°  ${(W / view.ppnm).toFixed(0)} NM across`;
   }
 
   function update(s) {
@@ -474,12 +483,12 @@ const Scope = (() => {
   canvas.addEventListener("contextmenu", (e) => e.preventDefault());
   canvas.addEventListener("mousedown", (e) => {
     if (e.button === 2 || e.shiftKey) {
-      const p = unpx(e.offsetX, e.offsetY);
-      rbl = { from: p, to: p }; drag = { rbl: true, moved: false, x: e.offsetX, y: e.offsetY }; dirty = true;
+      const p = unpx(mx(e), my(e));
+      rbl = { from: p, to: p }; drag = { rbl: true, moved: false, x: mx(e), y: my(e) }; dirty = true;
       return;
     }
-    const b = blockAt(e.offsetX, e.offsetY);
-    drag = { x: e.offsetX, y: e.offsetY, moved: false, block: b ? b.key : null, dx: b ? b.x - e.offsetX : 0, dy: b ? b.y - e.offsetY : 0 };
+    const b = blockAt(mx(e), my(e));
+    drag = { x: mx(e), y: my(e), moved: false, block: b ? b.key : null, dx: b ? b.x - mx(e) : 0, dy: b ? b.y - my(e) : 0 };
   });
   window.addEventListener("mouseup", (e) => {
     if (drag && drag.rbl) {
@@ -490,7 +499,7 @@ const Scope = (() => {
     if (drag && !drag.moved && state && e.target === canvas) {
       let best = drag.block, bestD = 15;
       if (!best) for (const a of state.aircraft) {
-        const [x, y] = px(a.lat, a.lon), d = Math.hypot(x - e.offsetX, y - e.offsetY);
+        const [x, y] = px(a.lat, a.lon), d = Math.hypot(x - mx(e), y - my(e));
         if (d < bestD) { best = a.id; bestD = d; }
       }
       select(best); onSelect(best);
@@ -499,27 +508,27 @@ const Scope = (() => {
   });
   canvas.addEventListener("mousemove", (e) => {
     if (!drag) return;
-    const dx = e.offsetX - drag.x, dy = e.offsetY - drag.y;
+    const dx = mx(e) - drag.x, dy = my(e) - drag.y;
     if (Math.abs(dx) + Math.abs(dy) > 2) drag.moved = true;
     if (!drag.moved) return;
-    if (drag.rbl) { rbl.to = unpx(e.offsetX, e.offsetY); dirty = true; return; }
+    if (drag.rbl) { rbl.to = unpx(mx(e), my(e)); dirty = true; return; }
     if (drag.block) {
       const a = state && state.aircraft.find((p) => p.id === drag.block);
       if (a) {
         const [x, y] = px(a.lat, a.lon);
-        offsets.set(a.id, [e.offsetX + drag.dx - x, e.offsetY + drag.dy - y]);
+        offsets.set(a.id, [mx(e) + drag.dx - x, my(e) + drag.dy - y]);
       }
       dirty = true;
       return;
     }
-    const [lat, lon] = unpx(canvas.width / 2 - dx, canvas.height / 2 - dy);
-    view.lat0 = lat; view.lon0 = lon; drag.x = e.offsetX; drag.y = e.offsetY; dirty = true;
+    const [lat, lon] = unpx(W / 2 - dx, H / 2 - dy);
+    view.lat0 = lat; view.lon0 = lon; drag.x = mx(e); drag.y = my(e); dirty = true;
   });
   canvas.addEventListener("wheel", (e) => {
     e.preventDefault();
-    const [lat, lon] = unpx(e.offsetX, e.offsetY);
+    const [lat, lon] = unpx(mx(e), my(e));
     view.ppnm = Math.min(400, Math.max(0.05, view.ppnm * (e.deltaY < 0 ? 1.2 : 1 / 1.2)));
-    const [lat2, lon2] = unpx(e.offsetX, e.offsetY);
+    const [lat2, lon2] = unpx(mx(e), my(e));
     view.lat0 += lat - lat2; view.lon0 += lon - lon2; dirty = true;
   }, { passive: false });
   window.addEventListener("resize", resize);
@@ -532,7 +541,7 @@ const Scope = (() => {
   resize();
   requestAnimationFrame(frame);
   return {
-    update, select, fit, toggle, px, clearRbl,
+    update, select, fit, toggle, px, clearRbl, get scale() { return K; },
     rbl: () => rbl && { ...rbl, ...rangeBearing(rbl.from, rbl.to) },
     labels: () => copy(labels), geo: () => ({ coast: geo.coast.length, fir: geo.fir.map((f) => f.name) }),
     nav: () => ({ kinds: navKinds(), airports: nav.airports.length, navaids: nav.navaids.length, fixes: nav.fixes.length }),

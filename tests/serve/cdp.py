@@ -87,6 +87,12 @@ class Browser:
         self.session = session
         self.send("Page.bringToFront")
 
+    def resize(self, width, height):
+        """Sets the page's viewport to width x height CSS pixels."""
+        self.width, self.height = width, height
+        self.send("Emulation.setDeviceMetricsOverride",
+                  {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
+
     def eval(self, expression):
         r = self.send("Runtime.evaluate", {"expression": expression, "returnByValue": True, "awaitPromise": True})
         if "exceptionDetails" in r:

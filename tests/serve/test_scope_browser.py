@@ -15,9 +15,11 @@ Exit 77 (skipped) only when no Chromium is installed.
 import argparse
 import json
 import math
+import shutil
 import os
 import subprocess
 import sys
+import tempfile
 import time
 import urllib.request
 
@@ -28,7 +30,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def start_server(squawk, scenario, extra=()):
-    proc = subprocess.Popen([squawk, "serve", scenario, "--port", "0", *extra],
+    proc = subprocess.Popen([squawk, "serve", *([scenario] if scenario else []), "--port", "0", *extra],
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     line = proc.stdout.readline()
     if "http://" not in line:
@@ -105,9 +107,9 @@ def check_labels(browser, squawk):
               f"{len(symbols)} symbols: no overlap in 5 frames")
         r = browser.eval("(() => { const c = document.getElementById('scope').getBoundingClientRect(); "
                          "const b = Scope.labels().find(l => l.key === 'KLM88A'); "
-                         "return [c.left + b.x + b.w / 2, c.top + b.y + b.h / 2, b.x - b.ax, b.y - b.ay]; })()")
+                         "const k = Scope.scale; return [c.left + (b.x + b.w / 2) * k, c.top + (b.y + b.h / 2) * k, b.x - b.ax, b.y - b.ay]; })()")
         x, y, dx0, dy0 = r
-        browser.drag(x, y, x + 60, y + 45)
+        browser.drag(x, y, x + 60, y + 45)  # at 1600 px the scale is 1: page px = canvas px
         off = browser.wait_for("Scope.offset('KLM88A')", what="a dragged offset")
         assert abs(off[0] - (dx0 + 60)) < 2 and abs(off[1] - (dy0 + 45)) < 2, (off, dx0, dy0)
         time.sleep(0.5)  # the aircraft moves on; the block keeps its offset from it
@@ -122,7 +124,7 @@ def check_labels(browser, squawk):
 def canvas_point(browser, lat, lon):
     """Page pixel of (lat, lon) on the scope."""
     return browser.eval(f"(() => {{ const c = document.getElementById('scope').getBoundingClientRect(); "
-                        f"const [x, y] = Scope.px({lat}, {lon}); return [c.left + x, c.top + y]; }})()")
+                        f"const [x, y] = Scope.px({lat}, {lon}); return [c.left + x * Scope.scale, c.top + y * Scope.scale]; }})()")
 
 
 def great_circle(a, b):
@@ -258,6 +260,51 @@ def check_geography(browser, squawk):
         server.wait(timeout=10)
 
 
+def check_layout_and_capture(browser, squawk, chromium, scenario):
+    """1024 px to 4K and 420 px keep scope, clock and panels apart; trails on by default; ?capture=1
+    lets a plain `chromium --headless --screenshot` (with --virtual-time-budget) return."""
+    server, addr = start_server(squawk, scenario, ["--speed", "10"])
+    try:
+        browser.open(f"http://{addr}/")
+        browser.wait_for("document.querySelectorAll('#traffic tbody tr').length === 3", what="three aircraft")
+        boxes = """(() => { const r = (e) => { const b = e.getBoundingClientRect(); return {x: b.left, y: b.top, w: b.width, h: b.height}; };
+            return {canvas: r(document.getElementById('scope')), side: r(document.getElementById('side')),
+                    simt: r(document.getElementById('simt')), cmd: r(document.getElementById('cmd')),
+                    buttons: [...document.querySelectorAll('#clock button, #clock select, #scope-tools button')].map(r)}; })()"""
+        for w, h in ((1024, 700), (3840, 2160), (420, 800)):
+            browser.resize(w, h)
+            time.sleep(0.3)
+            b = browser.eval(boxes)
+            assert b["canvas"]["w"] >= min(380, w - 40) and b["canvas"]["h"] >= 300, (w, b["canvas"])
+            assert all(not intersect(b["simt"], x) for x in b["buttons"]), (w, "a button over the clock")
+            assert b["cmd"]["w"] >= 200 and b["side"]["w"] >= min(360, w - 40), (w, b["cmd"], b["side"])
+            if w >= 1024:
+                assert not intersect(b["canvas"], b["side"]), (w, "scope and side panel overlap")
+            print(f"ok   {w}x{h}: scope {b['canvas']['w']:.0f}x{b['canvas']['h']:.0f}, side panel "
+                  f"{b['side']['w']:.0f} px wide, clock clear of the buttons")
+        browser.resize(1600, 900)
+        trail = browser.wait_for("document.getElementById('toggle-trails').classList.contains('on')", what="TRAIL on")
+        assert trail
+        print("ok   trails on by default (TRAIL button lit)")
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
+    server, addr = start_server(squawk, scenario, ["--speed", "10"])
+    out = os.path.join(tempfile.mkdtemp(prefix="squawk-capture-"), "scope.png")
+    try:
+        t0 = time.time()
+        r = subprocess.run([chromium, "--headless", "--no-sandbox", "--disable-gpu", "--window-size=1600,900",
+                            "--virtual-time-budget=3000", f"--screenshot={out}", f"http://{addr}/?capture=1"],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=90)
+        size = os.path.getsize(out) if os.path.exists(out) else 0
+        assert r.returncode == 0 and size > 20000, (r.returncode, size)
+        print(f"ok   chromium --headless --screenshot of ?capture=1 returned in {time.time() - t0:.1f} s ({size} bytes)")
+    finally:
+        shutil.rmtree(os.path.dirname(out), ignore_errors=True)
+        server.terminate()
+        server.wait(timeout=10)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("squawk")
@@ -319,6 +366,7 @@ def main():
         check_workflow(browser, args.squawk, args.scenario)
         check_two_clients(browser, args.squawk, args.scenario)
         check_geography(browser, args.squawk)
+        check_layout_and_capture(browser, args.squawk, chromium, args.scenario)
     finally:
         browser.close()
         server.terminate()
