@@ -149,8 +149,10 @@ Result<CommandReply> ServeSession::command(const std::string& text, const Comman
   }
   lua_pop(L, 1);
   if (!error.empty()) out.message = "could not translate: " + error;
-  if (out.cancelled) out.message = "question dropped";
-  if (out.ok && out.commands.empty() && !out.cancelled) {
+  // "cancel": what was dropped, or that nothing was pending.
+  const std::string cancel_note = string_field(L, r, "cancel_note");
+  if (!cancel_note.empty()) out.message = cancel_note;
+  if (out.ok && out.commands.empty() && cancel_note.empty()) {
     out.ok = false;
     out.message = "nothing to run";
   }

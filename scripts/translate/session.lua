@@ -22,7 +22,10 @@
 --         results = { {cmd =, ok =, message =}, ... }  one per command run;
 --                   the first failure stops the rest
 --         ask = question (the translator needs more; the next command()
---               may answer it, "cancel" drops it), cancelled = true,
+--               may answer it, "cancel" drops it),
+--         cancelled = true (a question was dropped) | false (a cancel with
+--               nothing pending), cancel_note = what was dropped, or
+--               "nothing to cancel",
 --         error = why nothing ran (translation failed, or a runtime error
 --                 in a graph node; the session and simulation go on),
 --         clock = a sentence when the command changed the run state
@@ -379,8 +382,8 @@ function Session:command(text, opts)
     reply.ask = r.ask
     return reply
   end
-  if r.cancelled then
-    reply.cancelled = true
+  if r.cancelled ~= nil then
+    reply.cancelled, reply.cancel_note = r.cancelled, r.said
     return reply
   end
   if r.error then
