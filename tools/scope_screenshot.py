@@ -35,7 +35,13 @@ def main():
     ap.add_argument("--size", default="1600x900", help="window WIDTHxHEIGHT in CSS pixels")
     ap.add_argument("--query", default="", help="page query, e.g. legend=0")
     ap.add_argument("--hold", action="store_true")
-    args = ap.parse_args()
+    # "--serve-args --paused" would read as two options: the value always goes with the flag.
+    argv = sys.argv[1:]
+    for i, a in enumerate(argv[:-1]):
+        if a == "--serve-args":
+            argv[i:i + 2] = [f"--serve-args={argv[i + 1]}"]
+            break
+    args = ap.parse_args(argv)
     width, height = (int(v) for v in args.size.lower().split("x"))
     chromium = find_chromium()
     if not chromium:

@@ -33,7 +33,11 @@
     $("simt").textContent = hms(s.simt);
     $("runstate").textContent = s.fast ? "FAST-FORWARD" : s.running ? `RUN x${s.dtmult}` : "HOLD";
     $("asas").textContent = s.asas.on ? `ASAS ON ${s.asas.rpz_nm} NM / ${s.asas.dtlook_s} s${s.asas.reso ? " MVP" : ""}` : "ASAS OFF";
-    if (document.activeElement !== $("speed")) $("speed").value = String(s.dtmult);
+    if (document.activeElement !== $("speed")) {
+      const v = String(s.dtmult);
+      if (![...$("speed").options].some((o) => o.value === v)) $("speed").add(new Option(`x${v}`, v));
+      $("speed").value = v;
+    }
     renderTraffic(s);
     renderSelected(s);
     renderConflicts(s);
@@ -63,15 +67,17 @@
     const a = s.aircraft.find((p) => p.id === Scope.selected);
     $("selected-pane").style.display = a ? "" : "none";
     if (!a) return;
-    const trend = a.vs_fpm > 100 ? "climbing" : a.vs_fpm < -100 ? "descending" : "level";
-    const spd = a.sel_cas_kt != null ? `${Math.round(a.sel_cas_kt)} kt` : `M${a.sel_mach.toFixed(2)}`;
+    const trend = a.vs_fpm > 100 ? ` climbing ${Math.round(a.vs_fpm)} fpm` : a.vs_fpm < -100 ? ` descending ${Math.round(-a.vs_fpm)} fpm` : " level";
+    const to = (now, sel, text) => (Math.abs(now - sel) > 1 ? ` → ${text}` : "");
+    const spd = a.sel_cas_kt != null ? to(a.cas_kt, a.sel_cas_kt, `${Math.round(a.sel_cas_kt)} kt`) : ` → M${a.sel_mach.toFixed(2)}`;
+    const hdg = a.lnav ? " → LNAV" : Math.abs(((a.sel_hdg_deg - a.hdg_deg + 540) % 360) - 180) > 1 ? ` → ${h3(a.sel_hdg_deg)}` : "";
     const k = a.route.findIndex((w) => w.name === a.active_wpt);
     const route = a.route.map((w, i) => `<span class="${i === k ? "active" : i < k ? "passed" : ""}">${esc(w.name)}` +
       `${w.alt_ft != null ? " " + fl(w.alt_ft) : ""}</span>`).join(" ");
     $("selected-data").innerHTML =
       `<div><b>${esc(a.id)}</b> ${esc(a.type)}  ${a.lat.toFixed(3)}° ${a.lon.toFixed(3)}°</div>` +
-      `<div>FL ${fl(a.alt_ft)} ${trend} ${Math.round(a.vs_fpm)} fpm → FL ${fl(a.sel_alt_ft)}</div>` +
-      `<div>HDG ${h3(a.hdg_deg)} → ${a.lnav ? "LNAV" : h3(a.sel_hdg_deg)}  CAS ${Math.round(a.cas_kt)} → ${spd}  GS ${Math.round(a.gs_kt)}</div>` +
+      `<div>FL ${fl(a.alt_ft)}${trend}${to(a.alt_ft, a.sel_alt_ft, "FL " + fl(a.sel_alt_ft))}</div>` +
+      `<div>HDG ${h3(a.hdg_deg)}${hdg}  CAS ${Math.round(a.cas_kt)} kt${spd}  GS ${Math.round(a.gs_kt)} kt</div>` +
       `<div>route ${route || "none"}${a.route.length ? (a.lnav ? " (LNAV on)" : " (LNAV off)") : ""}</div>`;
   }
 
@@ -88,7 +94,7 @@
       const t = when(c);
       const cls = t <= 60 ? "urgent" : t <= 120 ? "soon" : "later";
       items.push(`<li class="${cls}" data-ids="${esc(c.ids.join(" "))}"><b>${esc(c.ids.join(" – "))}</b> ` +
-        `LoS ${t > 0 ? "in " + mmss(t) : "now"}  CPA ${c.dcpa_nm.toFixed(1)} NM in ${mmss(c.tcpa_s)}</li>`);
+        `LoS ${t > 0 ? "in " + mmss(t) : "now"}  CPA ${c.dcpa_nm.toFixed(1)} NM ${c.tcpa_s > 0 ? "in " + mmss(c.tcpa_s) : "passed"}</li>`);
     }
     $("conflicts").innerHTML = items.length ? items.join("") : `<li class="none">none</li>`;
     $("conflict-count").textContent = items.length ? String(items.length) : "";

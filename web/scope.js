@@ -62,16 +62,21 @@ const Scope = (() => {
   }
   const mx = (e) => e.offsetX / K, my = (e) => e.offsetY / K;
 
+  // Fits the traffic into the part of the canvas left of the legend (when open).
   function fit() {
     if (!state || state.aircraft.length === 0) return;
     let s = 90, n = -90, w = 180, e = -180;
     for (const a of state.aircraft) {
       s = Math.min(s, a.lat); n = Math.max(n, a.lat); w = Math.min(w, a.lon); e = Math.max(e, a.lon);
     }
-    view.lat0 = (s + n) / 2; view.lon0 = (w + e) / 2;
-    const [wx, hy] = [(e - w) * 60 * Math.cos(view.lat0 * Math.PI / 180), (n - s) * 60];
-    const span = Math.max(wx / W, hy / H, 30 / Math.min(W, H));
+    const legend = document.getElementById("legend");
+    const lw = legend && !legend.classList.contains("hidden") ? (legend.getBoundingClientRect().width + 20) / K : 0;
+    const free = Math.max(W / 2, W - lw), cos = Math.cos((s + n) / 2 * Math.PI / 180);
+    const [wx, hy] = [(e - w) * 60 * cos, (n - s) * 60];
+    const span = Math.max(wx / free, hy / H, 30 / Math.min(free, H));
     view.ppnm = 1 / (span * 1.5);
+    view.lat0 = (s + n) / 2;
+    view.lon0 = (w + e) / 2 + (W - free) / 2 / view.ppnm / (60 * cos);  // the box's centre at x = free / 2
     view.fitted = true;
     dirty = true;
   }
@@ -318,7 +323,7 @@ const Scope = (() => {
   // "KLM1234–DLH4AX LoS 1:23 CPA 0.4 NM 2:10": the pair first, so that each countdown names whom it is for.
   function conflictText(c) {
     const tlos = c.tlos_s == null ? "" : c.tlos_s > 0 ? ` LoS ${mmss(c.tlos_s)}` : " LoS NOW";
-    return `${c.ids[0]}–${c.ids[1]}${tlos} CPA ${c.dcpa_nm.toFixed(1)} NM ${mmss(c.tcpa_s)}`;
+    return `${c.ids[0]}–${c.ids[1]}${tlos} CPA ${c.dcpa_nm.toFixed(1)} NM ${c.tcpa_s > 0 ? mmss(c.tcpa_s) : "passed"}`;
   }
 
   // The colour of a conflict by time to loss of separation: 60 s or less, 120 s or less, beyond.
@@ -415,9 +420,12 @@ const Scope = (() => {
   function drawLabel(l, color, fonts, plain = false) {
     const [ex, ey] = nearest(l, l.ax, l.ay);
     if (!plain && Math.hypot(ex - l.ax, ey - l.ay) > 7) {
-      ctx.strokeStyle = colors.leader; ctx.lineWidth = 1;
+      // Conflict labels lead in their urgency colour, so the eye finds their CPA pair.
+      ctx.strokeStyle = l.kind === "conflict" ? color : colors.leader; ctx.lineWidth = 1;
+      ctx.globalAlpha = l.kind === "conflict" ? 0.7 : 1;
       const d = Math.hypot(ex - l.ax, ey - l.ay), sx = l.ax + (ex - l.ax) * 6 / d, sy = l.ay + (ey - l.ay) * 6 / d;
       ctx.beginPath(); ctx.moveTo(sx, sy); ctx.lineTo(ex, ey); ctx.stroke();
+      ctx.globalAlpha = 1;
     }
     if (!plain) { ctx.fillStyle = "rgba(5, 9, 8, 0.8)"; ctx.fillRect(l.x, l.y, l.w, l.h); }
     ctx.fillStyle = color;
