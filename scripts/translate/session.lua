@@ -64,6 +64,7 @@ M.kChunk = 1.0        -- [s] sim time between conflict checks while advancing
 M.kOpenFfRate = 60.0  -- FF without an end time: sim seconds per wall second
 M.kMaxTickWall = 5.0  -- [s] most wall time one tick accounts for (a stopped
                       -- terminal must not make the simulation jump hours)
+M.kMaxDialogues = 64  -- client dialogues kept (command() opts.client)
 M.kReminders = { 120, 60 }  -- [s] tLOS at which a standing conflict is announced again (descending)
 M.kMaxFfCpu = 0.5     -- [s] processor time one call spends on an FF with an end;
                       -- the rest of a long FF runs on the following ticks (HOLD stops it)
@@ -323,14 +324,27 @@ function Session:run_commands(cmds, reply)
   table.sort(reply.deleted)
 end
 
--- The dialogue of `client` (nil: the session's own), made on first use.
+-- The dialogue of `client` (nil: the session's own), made on first use; of
+-- more than kMaxDialogues clients the one unheard from longest is forgotten
+-- (a page reloaded many times must not grow the session without end).
 function Session:dialogue_for(client)
   if client == nil or client == "" then return self.dialogue end
+  self.heard = (self.heard or 0) + 1
   local d = self.dialogues[client]
   if not d then
     d = graph.dialogue({ sim = self.sim, mode = self.mode })
     self.dialogues[client] = d
+    self.ndialogues = (self.ndialogues or 0) + 1
+    if self.ndialogues > M.kMaxDialogues then
+      local oldest, when = nil, math.huge
+      for key, other in pairs(self.dialogues) do
+        if other ~= d and other.heard < when then oldest, when = key, other.heard end
+      end
+      self.dialogues[oldest] = nil
+      self.ndialogues = self.ndialogues - 1
+    end
   end
+  d.heard = self.heard
   return d
 end
 

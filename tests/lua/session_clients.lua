@@ -34,3 +34,20 @@ do
   check_eq(r.commands[1], "HOLD")
   check_eq(r.addressed, nil)
 end
+
+-- At most kMaxDialogues client dialogues: the one unheard from longest goes.
+do
+  local s = session.new({ mode = "offline" })
+  s:command("!CRE KL204 A320 52 4 90 FL250 280")
+  s:command("!CRE AF123 A320 52 5 270 FL240 280")
+  check(s:command("KL204 descend", { client = "first" }).ask ~= nil, "first asks")
+  for i = 1, session.kMaxDialogues do
+    s:command("AF123 climb", { client = "c" .. i })
+    if i == 1 then s:command("cancel", { client = "c1" }) end  -- c1 heard from after "first"
+  end
+  local n = 0
+  for _ in pairs(s.dialogues) do n = n + 1 end
+  check_eq(n, session.kMaxDialogues)
+  check(s.dialogues.first == nil, "the quietest client's dialogue was forgotten")
+  check(s.dialogues["c" .. session.kMaxDialogues] ~= nil and s.dialogues.c1 ~= nil, "the newer ones are kept")
+end

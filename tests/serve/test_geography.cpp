@@ -54,3 +54,29 @@ TEST_CASE("Geography: in_box keeps the lines meeting the box, thinned to the ste
   for (const auto& c : coarse["coast"]) pts += c.size() / 2;
   CHECK(pts <= 50000);
 }
+
+TEST_CASE("Geography: odd lines are skipped, never out of range") {
+  uint64_t x = 88172645463325252ull;  // xorshift: the same text every run
+  auto next = [&] { return x ^= x << 13, x ^= x >> 7, x ^= x << 17; };
+  std::string coast, fir;
+  for (int i = 0; i < 3000; ++i) {
+    // Coastline lines with out-of-range, malformed or fine numbers.
+    coast += "MDX"[next() % 3];
+    coast += " " + std::to_string(static_cast<int>(next() % 400) - 200) + "." + std::to_string(next() % 100);
+    coast += (next() % 7 == 0 ? " x" : " ") + std::to_string(static_cast<int>(next() % 500) - 250) + "\r\n";
+    // FIR lines: a good one with a character sometimes changed, or raw bytes.
+    std::string line = "N050.46.00.000 E006.05.00.000";
+    if (next() % 3 == 0) line[next() % line.size()] = static_cast<char>(next() & 0xff);
+    fir += line + "\n";
+  }
+  size_t kept = 0;
+  for (const auto& l : serve::Geography::parse_coastlines(coast)) {
+    REQUIRE(l.pts.size() >= 4);
+    for (size_t i = 0; i < l.pts.size(); i += 2) REQUIRE((std::fabs(l.pts[i]) <= 90 && std::fabs(l.pts[i + 1]) <= 180));
+    kept += l.pts.size() / 2;
+  }
+  CHECK(kept > 100);
+  const auto f = serve::Geography::parse_fir(fir, "X");
+  for (size_t i = 0; i < f.pts.size(); i += 2) REQUIRE((std::fabs(f.pts[i]) <= 90 && std::fabs(f.pts[i + 1]) <= 180));
+  CHECK(f.pts.size() >= 2);
+}
