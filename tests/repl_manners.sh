@@ -2,7 +2,8 @@
 # `squawk repl` from a pipe, as a person types: quit, exit and help without a
 # colon; "cancel" says what it dropped or that nothing was pending; ":mode
 # single" refuses when no LLM server is configured; a standing conflict is
-# announced again at tLOS 120 s and 60 s.
+# announced again at tLOS 120 s and 60 s, and at t = 0 with the clock held
+# the predicted conflicts are announced and listed.
 # usage: tests/repl_manners.sh path/to/squawk   (run from the repo root)
 set -u
 sq=${1:?usage: tests/repl_manners.sh SQUAWK_BINARY}
@@ -33,5 +34,9 @@ out=$(run '!CRE BAW1 B744 52 3.2 90 FL300 280\n!CRE DLH2 A320 52 4.8 270 FL300 2
 has "a conflict is announced when it starts" "$out" "] conflict BAW1 & DLH2: loss of separation in"
 has "reminder at tLOS 120 s" "$out" "still conflict BAW1 & DLH2: loss of separation in 120 s"
 has "reminder at tLOS 60 s" "$out" "still conflict BAW1 & DLH2: loss of separation in 60 s"
+
+out=$(printf ':state\n' | env -u SQUAWK_LLM_URL timeout 60 "$sq" repl scenarios/scope_demo.scn --mode offline 2>&1)
+has "t = 0, clock held: the predicted conflict is announced" "$out" "[t=     0 s] conflict DLH4AX & KLM1234: loss of separation in 200 s"
+has "t = 0, clock held: :state lists it" "$out" "conflicts: 1"
 
 [ "$fails" -eq 0 ] && echo "all passed" || { echo "$fails failed"; exit 1; }

@@ -140,6 +140,16 @@ local function diff(known, list, t, events, kind, start, ended)
   return now
 end
 
+-- The detector's conflicts and losses of separation. At t = 0 the detector
+-- has not run yet (it runs as the clock steps), so they are read from a copy
+-- of the simulation stepped once: a paused start shows what is predicted.
+function Session:detected()
+  if self.sim:time() > 0 then return self.sim:conflicts(), self.sim:los() end
+  local probe = self.sim:copy()
+  probe:step()
+  return probe:conflicts(), probe:los()
+end
+
 -- The smallest of kReminders at or above tlos [s], or nil.
 local function reminder_level(tlos)
   local level
@@ -159,9 +169,10 @@ function Session:diff_pairs(events)
     return string.format("conflict %s: loss of separation in %.0f s, closest %.2f NM in %.0f s", key, c.tlos,
       c.dcpa_nm, c.tcpa)
   end
-  self.conflicts = diff(known, self.sim:conflicts(), t, events, "conflict", text, "conflict %s ended")
+  local conflicts, los = self:detected()
+  self.conflicts = diff(known, conflicts, t, events, "conflict", text, "conflict %s ended")
   local reminded, before = {}, self.reminded or {}
-  for _, c in ipairs(self.sim:conflicts()) do
+  for _, c in ipairs(conflicts) do
     local key, a, b = pair_key(c.own, c.intruder)
     if reminded[key] == nil then
       local level, prev = reminder_level(c.tlos), before[key]
@@ -173,7 +184,7 @@ function Session:diff_pairs(events)
     end
   end
   self.reminded = reminded
-  self.los = diff(self.los, self.sim:los(), t, events, "los", function(l, key)
+  self.los = diff(self.los, los, t, events, "los", function(l, key)
     return string.format("LOSS OF SEPARATION %s: %.2f NM, %.0f ft apart", key, l.dist_nm, math.abs(l.dalt_ft))
   end, "separation regained %s")
 end
@@ -414,7 +425,8 @@ function Session:state()
   local state, ff_end = self.sim:run_state()
   st.clock = { state = state, multiplier = self.sim:dtmult(), ff_end = ff_end }
   local with, seen = {}, {}
-  for _, c in ipairs(self.sim:conflicts()) do
+  local conflicts, los = self:detected()
+  for _, c in ipairs(conflicts) do
     local key, a, b = pair_key(c.own, c.intruder)
     if not seen[key] then
       seen[key] = true
@@ -428,7 +440,7 @@ function Session:state()
   end
   table.sort(st.conflicts, function(x, y) return x.tlos_s < y.tlos_s end)
   seen = {}
-  for _, l in ipairs(self.sim:los()) do
+  for _, l in ipairs(los) do
     local key, a, b = pair_key(l.own, l.intruder)
     if not seen[key] then
       seen[key] = true

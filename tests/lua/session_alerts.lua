@@ -13,9 +13,9 @@ do
   local r = repl.new({ mode = "offline" })
   r:handle("!CRE BAW1 B744 52 3.2 90 FL300 280")
   r:handle("!CRE DLH2 A320 52 4.8 270 FL300 280")
-  r:handle("!ASAS ON")
-  local text = r:handle(":run 250")
+  local text = r:handle("!ASAS ON")  -- predicted at once (t = 0, clock held): LoS in 2xx s
   check(text:match("%] conflict BAW1 & DLH2: loss of separation in 2%d%d s") ~= nil, text)
+  text = r:handle(":run 250")
   check(text:match("still conflict BAW1 & DLH2: loss of separation in 1[012]%d s") ~= nil, text)
   check(text:match("still conflict BAW1 & DLH2: loss of separation in [56]%d s") ~= nil, text)
   check_eq(count(text, "still conflict"), 2)
