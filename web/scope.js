@@ -1,7 +1,11 @@
 // The radar scope: a north-up canvas of the live state (plain JavaScript, no
 // dependencies). Positions are projected flat around the view centre:
 // x = (lon - lon0) * 60 cos(lat0) NM, y = (lat - lat0) * 60 NM, then scaled
-// by the zoom (pixels per NM). Drag pans, the wheel zooms about the cursor.
+// by the zoom (pixels per NM). Drag pans, the wheel zooms about the cursor,
+// a click selects, right- or Shift-drag measures range and bearing. Behind
+// the traffic: the grid, and with navdata coastlines, FIR borders, airports,
+// navaids and fixes by zoom (GET /api/geo, /api/navdata). The legend is in
+// index.html; docs/scope_guide.md explains every symbol.
 //
 // Labels never overprint: each frame the symbols (aircraft, CPA crosses,
 // route waypoints) are laid down first, then the data blocks, the conflict
@@ -20,7 +24,7 @@ const Scope = (() => {
     bg: "#050908", grid: "#15302a", gridText: "#3f6b5c", ac: "#7cf0b0", sel: "#5ad8ff",
     conf: "#ff4d4d", warn: "#ffb347", later: "#e0d36a", route: "#5ad8ff", fix: "#2f4c42", apt: "#7d9c90",
     text: "#b9d8cb", pz: "#2f6f58", fixText: "#4d7567", leader: "#4f7a6a", navaid: "#6f8fb0",
-    coast: "#2f5d7a", fir: "#6a4f86", firText: "#8a70a8", rbl: "#ffb347",
+    coast: "#2f5d7a", fir: "#6a4f86", rbl: "#ffb347",
   };
   const view = { lat0: 52, lon0: 4, ppnm: 8, fitted: false };
   const opts = { pz: false, fixes: true, geo: true, trails: true, vectorMin: 1 };
@@ -349,14 +353,14 @@ const Scope = (() => {
   function drawRbl() {
     if (!rbl) return;
     const [x0, y0] = px(...rbl.from), [x1, y1] = px(...rbl.to), { brg, nm: d } = rangeBearing(rbl.from, rbl.to);
-    ctx.strokeStyle = colors.warn; ctx.fillStyle = colors.warn; ctx.lineWidth = 1.5;
+    ctx.strokeStyle = colors.rbl; ctx.fillStyle = colors.rbl; ctx.lineWidth = 1.5;
     ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); ctx.stroke();
     ctx.beginPath(); ctx.arc(x0, y0, 3, 0, 2 * Math.PI); ctx.fill();
     ctx.font = "bold 12px monospace";
     const text = `${String(Math.round(brg) % 360 || 360).padStart(3, "0")}° ${d.toFixed(1)} NM`;
     const w = ctx.measureText(text).width + 6;
     ctx.fillStyle = "rgba(5, 9, 8, 0.85)"; ctx.fillRect(x1 + 8, y1 - 8, w, 16);
-    ctx.fillStyle = colors.warn; ctx.fillText(text, x1 + 11, y1 + 4);
+    ctx.fillStyle = colors.rbl; ctx.fillText(text, x1 + 11, y1 + 4);
   }
 
   // --- Drawing ----------------------------------------------------------------
