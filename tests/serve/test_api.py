@@ -129,6 +129,18 @@ def test_plain(squawk):
         check(code == 413, f"5000-character command refused (HTTP {code})")
         code, r = request(addr, "/api/advisory", {"id": 1, "decision": "accept"})
         check(code == 409 and "no advisory" in r["message"], f"unknown advisory (HTTP {code})")
+        code, r = request(addr, "/api/command", {"text": "KL204 climb", "client": 5})
+        check(code == 400 and '"client"' in r["message"], f"a client that is not a string is refused (HTTP {code})")
+        code, r = request(addr, "/api/command", {"text": "KL204 climb", "selected": "x" * 65})
+        check(code == 400 and '"selected"' in r["message"], f"a 65-character selection is refused (HTTP {code})")
+        with urllib.request.urlopen(f"http://{addr}/api/geo?south=50&north=55&west=0&east=8&step=0.01", timeout=5) as g:
+            geo = json.load(g)
+        check(geo == {"coast": [], "fir": [], "truncated": False}, f"no navdata: GET /api/geo is empty: {geo}")
+        try:
+            urllib.request.urlopen(f"http://{addr}/api/geo?step=abc", timeout=5)
+            check(False, "GET /api/geo?step=abc refused")
+        except urllib.error.HTTPError as e:
+            check(e.code == 400, f"GET /api/geo?step=abc refused (HTTP {e.code})")
 
         s_ = socket.create_connection(tuple(addr.rsplit(":", 1)), timeout=5)
         s_.sendall(b"GET /api/state HTTP/1.1\r\nHost: evil.example:80\r\nConnection: close\r\n\r\n")
