@@ -288,9 +288,10 @@ const Scope = (() => {
       if (r && r.width) taken.push({ kind: id, x: (r.left - cr.left) / K, y: (r.top - cr.top) / K, w: r.width / K, h: r.height / K });
     }
     const add = (l) => { labels.push(l); taken.push(l); };
-    // Data blocks: the selected aircraft and those in conflict first.
-    const order = state.aircraft.slice().sort((p, q) =>
-      (q.id === selected) - (p.id === selected) || (status.has(q.id) ? 1 : 0) - (status.has(p.id) ? 1 : 0));
+    // Data blocks: dragged ones first (they stay where they were put), then
+    // the selected aircraft, those in conflict, the rest.
+    const rank = (a) => (offsets.has(a.id) ? 4 : 0) + (a.id === selected ? 2 : 0) + (status.has(a.id) ? 1 : 0);
+    const order = state.aircraft.slice().sort((p, q) => rank(q) - rank(p));
     for (const a of order) {
       const [x, y] = px(a.lat, a.lon);
       const text = blockLines(a), [w, h] = textBox(text, ["bold 12px monospace", "12px monospace"]);

@@ -115,7 +115,10 @@ def check_labels(browser, squawk):
         time.sleep(0.5)  # the aircraft moves on; the block keeps its offset from it
         b = browser.eval("Scope.labels().find(l => l.key === 'KLM88A')")
         assert abs(b["x"] - b["ax"] - off[0]) < 0.01 and abs(b["y"] - b["ay"] - off[1]) < 0.01, (b, off)
-        print(f"ok   dragged KLM88A's data block keeps its offset ({off[0]:.0f}, {off[1]:.0f}) px")
+        labels = browser.eval("Scope.labels()")
+        others = [l["key"] for l in labels if l["key"] != "KLM88A" and intersect(l, b)]
+        assert not others, f"labels over the dragged block: {others}"
+        print(f"ok   dragged KLM88A's data block keeps its offset ({off[0]:.0f}, {off[1]:.0f}) px; no label over it")
     finally:
         server.terminate()
         server.wait(timeout=10)
