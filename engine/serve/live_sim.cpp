@@ -143,7 +143,16 @@ void LiveSim::log_events(const std::vector<script::SessionEvent>& events) {
 
 void LiveSim::log(const std::string& who, const std::string& text) {
   log_.push_back({{"seq", ++log_seq_}, {"simt", stack().sim().simt()}, {"who", who}, {"text", text}});
-  while (log_.size() > options_.log_shown) log_.pop_front();
+  // Decisions stay longest: the oldest entry of the simulation, autopilot or
+  // scenario goes first, the controller's, teammate's and auto's only when
+  // nothing else is left.
+  while (log_.size() > options_.log_shown) {
+    auto it = std::find_if(log_.begin(), log_.end(), [](const json& e) {
+      const std::string& w = e["who"].get_ref<const std::string&>();
+      return w == "sim" || w == "autopilot" || w == "scenario";
+    });
+    log_.erase(it == log_.end() ? log_.begin() : it);
+  }
 }
 
 json LiveSim::command(const std::string& text, const std::string& who, const script::CommandOptions& opts) {

@@ -13,7 +13,9 @@
 // decisions, "teammate" for advisories, "auto" for advisories executed in the
 // automatic mode, "scenario" for scenario output (ECHO, failed queued lines),
 // "autopilot" for the teammate's own steering, "sim" for conflicts and losses
-// of separation as they start and end.
+// of separation as they start and end. Of more than log_shown entries the
+// oldest "sim", "autopilot" or "scenario" one is dropped first, so that the
+// decisions (controller, teammate, auto) stay in view longest.
 #pragma once
 
 #include <chrono>

@@ -109,3 +109,27 @@ TEST_CASE("LiveSim: requests run on the owner thread; the state is published aft
   auto late = live.call([](serve::LiveSim&) { return json(); }, timeout);
   CHECK(late.status().code() == Code::kUnavailable);
 }
+
+TEST_CASE("LiveSim: of a full log the simulation's entries go first, the decisions stay") {
+  script::Vm vm({});
+  auto session = script::ServeSession::open(vm, "", "offline");
+  REQUIRE(session.is_ok());
+  serve::LiveOptions lo;
+  lo.log_shown = 5;
+  serve::LiveSim live(**session, lo);
+  live.start();
+  auto r = live.call(
+      [](serve::LiveSim& l) {
+        l.log("controller", "accepted advisory 1");
+        l.log("auto", "automatic execution of advisories on");
+        for (int i = 0; i < 10; ++i) l.log("sim", "conflict " + std::to_string(i));
+        return json{{"ok", true}};
+      },
+      std::chrono::seconds(30));
+  REQUIRE(r.is_ok());
+  const json log = json::parse(*live.state().second)["log"];
+  REQUIRE(log.size() == 5);
+  CHECK(log[0]["text"] == "accepted advisory 1");
+  CHECK(log[1]["who"] == "auto");
+  CHECK(log[4]["text"] == "conflict 9");
+}
