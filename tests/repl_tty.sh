@@ -55,7 +55,7 @@ wait_for "head-on pair" "ok: ASAS ON"
 keys ':clock 100' Enter
 wait_for "clock started" "clock running at 100 x real time"
 keys 'BAW1 tur'
-wait_for "conflict reported while typing" "conflict BAW1 & DLH2: loss of separation in"
+wait_for "the running clock reports the conflict again (tLOS 60 s)" "still conflict BAW1 & DLH2: loss of separation in"
 wait_for "typed text kept below it" 'squawk> BAW1 tur$'
 keys C-u ':state' Enter
 wait_for "running clock moved time" "t = [1-9][0-9]*\.[0-9] s, 3 aircraft"

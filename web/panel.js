@@ -6,6 +6,8 @@
 (() => {
   const $ = (id) => document.getElementById(id);
   let state = null;
+  // This page's dialogue with the translator: a question asked here is answered only from here.
+  const client = (crypto.randomUUID ? crypto.randomUUID() : String(Math.random()).slice(2)).slice(0, 36);
 
   async function post(path, body) {
     const r = await fetch(path, { method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(body) });
@@ -14,6 +16,7 @@
   const esc = (s) => String(s).replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" })[c]);
   const hms = (t) => [t / 3600, (t % 3600) / 60, t % 60].map((v) => String(Math.floor(v)).padStart(2, "0")).join(":");
   const fl = (ft) => String(Math.round(ft / 100)).padStart(3, "0");
+  const mmss = (t) => `${Math.floor(t / 60)}:${String(Math.floor(t % 60)).padStart(2, "0")}`;
   const h3 = (d) => String(Math.round(d) % 360 || 360).padStart(3, "0");
 
   // --- Push stream (server-sent events) ------------------------------------
@@ -30,8 +33,13 @@
     $("simt").textContent = hms(s.simt);
     $("runstate").textContent = s.fast ? "FAST-FORWARD" : s.running ? `RUN x${s.dtmult}` : "HOLD";
     $("asas").textContent = s.asas.on ? `ASAS ON ${s.asas.rpz_nm} NM / ${s.asas.dtlook_s} s${s.asas.reso ? " MVP" : ""}` : "ASAS OFF";
-    if (document.activeElement !== $("speed")) $("speed").value = String(s.dtmult);
+    if (document.activeElement !== $("speed")) {
+      const v = String(s.dtmult);
+      if (![...$("speed").options].some((o) => o.value === v)) $("speed").add(new Option(`x${v}`, v));
+      $("speed").value = v;
+    }
     renderTraffic(s);
+    renderSelected(s);
     renderConflicts(s);
     renderAdvisories(s);
     renderLog(s);
@@ -54,12 +62,42 @@
     $("traffic").tBodies[0].innerHTML = rows.join("");
   }
 
+  // The selected aircraft's data and route.
+  function renderSelected(s) {
+    const a = s.aircraft.find((p) => p.id === Scope.selected);
+    $("selected-pane").style.display = a ? "" : "none";
+    if (!a) return;
+    const trend = a.vs_fpm > 100 ? ` climbing ${Math.round(a.vs_fpm)} fpm` : a.vs_fpm < -100 ? ` descending ${Math.round(-a.vs_fpm)} fpm` : " level";
+    const to = (now, sel, text) => (Math.abs(now - sel) > 1 ? ` → ${text}` : "");
+    const spd = a.sel_cas_kt != null ? to(a.cas_kt, a.sel_cas_kt, `${Math.round(a.sel_cas_kt)} kt`) : ` → M${a.sel_mach.toFixed(2)}`;
+    const hdg = a.lnav ? " → LNAV" : Math.abs(((a.sel_hdg_deg - a.hdg_deg + 540) % 360) - 180) > 1 ? ` → ${h3(a.sel_hdg_deg)}` : "";
+    const k = a.route.findIndex((w) => w.name === a.active_wpt);
+    const route = a.route.map((w, i) => `<span class="${i === k ? "active" : i < k ? "passed" : ""}">${esc(w.name)}` +
+      `${w.alt_ft != null ? " " + fl(w.alt_ft) : ""}</span>`).join(" ");
+    $("selected-data").innerHTML =
+      `<div><b>${esc(a.id)}</b> ${esc(a.type)}  ${a.lat.toFixed(3)}° ${a.lon.toFixed(3)}°</div>` +
+      `<div>FL ${fl(a.alt_ft)}${trend}${to(a.alt_ft, a.sel_alt_ft, "FL " + fl(a.sel_alt_ft))}</div>` +
+      `<div>HDG ${h3(a.hdg_deg)}${hdg}  CAS ${Math.round(a.cas_kt)} kt${spd}  GS ${Math.round(a.gs_kt)} kt</div>` +
+      `<div>route ${route || "none"}${a.route.length ? (a.lnav ? " (LNAV on)" : " (LNAV off)") : ""}</div>`;
+  }
+
+  // Standing alerts: losses of separation first, then the conflicts by time
+  // to loss of separation; class urgent (LoS in 60 s or less), soon (120 s),
+  // later (beyond).
   function renderConflicts(s) {
-    const items = s.conflicts.map((c) =>
-      `<li>${esc(c.ids.join(" – "))}: CPA ${c.dcpa_nm.toFixed(1)} NM in ${Math.round(c.tcpa_s)} s` +
-      (c.tlos_s != null ? `, LoS ${c.tlos_s > 0 ? "in " + Math.round(c.tlos_s) + " s" : "now"}` : "") + `</li>`);
-    for (const l of s.los) items.push(`<li>${esc(l.ids.join(" – "))}: LOSS OF SEPARATION ${l.dist_nm.toFixed(1)} NM</li>`);
+    const items = s.los.map((l) =>
+      `<li class="los" data-ids="${esc(l.ids.join(" "))}"><b>${esc(l.ids.join(" – "))}</b> LOSS OF SEPARATION ` +
+      `${l.dist_nm.toFixed(1)} NM ${Math.round(Math.abs(l.dalt_ft))} ft</li>`);
+    const when = (c) => c.tlos_s != null ? c.tlos_s : c.tcpa_s;
+    for (const c of s.conflicts.slice().sort((p, q) => when(p) - when(q))) {
+      if (s.los.some((l) => l.ids.join() === c.ids.join())) continue;
+      const t = when(c);
+      const cls = t <= 60 ? "urgent" : t <= 120 ? "soon" : "later";
+      items.push(`<li class="${cls}" data-ids="${esc(c.ids.join(" "))}"><b>${esc(c.ids.join(" – "))}</b> ` +
+        `LoS ${t > 0 ? "in " + mmss(t) : "now"}  CPA ${c.dcpa_nm.toFixed(1)} NM ${c.tcpa_s > 0 ? "in " + mmss(c.tcpa_s) : "passed"}</li>`);
+    }
     $("conflicts").innerHTML = items.length ? items.join("") : `<li class="none">none</li>`;
+    $("conflict-count").textContent = items.length ? String(items.length) : "";
   }
 
   let advKey = "";
@@ -96,12 +134,15 @@
     $("reply-commands").textContent = "…";
     $("reply-result").textContent = "";
     let r;
+    const body = { text, client };
+    if (Scope.selected && !text.startsWith("!")) body.selected = Scope.selected;
     try {
-      r = await post("/api/command", { text });
+      r = await post("/api/command", body);
     } catch (e) {
       r = { ok: false, message: String(e), commands: [] };
     }
     $("reply-commands").textContent = (r.commands || []).join(" ; ") || "—";
+    $("reply-typed").textContent = r.addressed ? `${text}  (to ${r.addressed}, selected)` : text;
     const res = $("reply-result");
     if (r.ask) { res.className = "ask"; res.textContent = "? " + r.ask; }
     else { res.className = r.ok ? "ok" : "err"; res.textContent = r.ok ? (r.message || "ok") : r.message; }
@@ -121,7 +162,7 @@
   document.querySelectorAll("[data-cmd]").forEach((b) => b.addEventListener("click", () => send(b.dataset.cmd)));
   $("speed").addEventListener("change", () => send(`!DTMULT ${$("speed").value}`));
   $("fit").addEventListener("click", () => Scope.fit());
-  const toggles = { "toggle-pz": "pz", "toggle-fixes": "fixes" };
+  const toggles = { "toggle-pz": "pz", "toggle-fixes": "fixes", "toggle-geo": "geo", "toggle-trails": "trails" };
   for (const [id, opt] of Object.entries(toggles))
     $(id).addEventListener("click", () => { const on = $(id).classList.toggle("on"); Scope.toggle(opt, on); });
   const vectors = [0, 1, 2, 5];
@@ -130,14 +171,62 @@
     b.dataset.min = vectors[i]; b.textContent = `VEC ${vectors[i]}`; b.classList.toggle("on", vectors[i] > 0);
     Scope.toggle("vectorMin", vectors[i]);
   });
+  // Selecting an aircraft (scope or list) puts its callsign at the head of
+  // the command line, replacing a callsign already there.
+  function selected(id) {
+    Scope.select(id);
+    if (id) {
+      const cmd = $("cmd"), words = cmd.value.trimStart().split(/\s+/);
+      const known = state && state.aircraft.some((a) => a.id === (words[0] || "").toUpperCase());
+      cmd.value = `${id} ${known ? words.slice(1).join(" ") : cmd.value.trim()}`.trimEnd() + " ";
+    }
+    if (state) { renderTraffic(state); renderSelected(state); }
+    focusCmd();
+  }
   $("traffic").addEventListener("click", (e) => {
     const tr = e.target.closest("tr[data-id]");
-    if (!tr) return;
-    const id = Scope.selected === tr.dataset.id ? null : tr.dataset.id;
-    Scope.select(id);
-    if (state) renderTraffic(state);
+    if (tr) selected(Scope.selected === tr.dataset.id ? null : tr.dataset.id);
   });
-  Scope.onSelect = () => { if (state) renderTraffic(state); };
+  $("conflicts").addEventListener("click", (e) => {
+    const li = e.target.closest("li[data-ids]");
+    if (li) selected(li.dataset.ids.split(" ")[0]);
+  });
+  Scope.onSelect = selected;
+
+  // Keyboard focus lives in the command line: after a click anywhere but a
+  // form control, and when a key is typed elsewhere. Escape clears the line,
+  // then the range/bearing line and the selection.
+  function focusCmd() {
+    const cmd = $("cmd");
+    if (document.activeElement !== cmd) { cmd.focus(); cmd.setSelectionRange(cmd.value.length, cmd.value.length); }
+  }
+  document.addEventListener("mouseup", (e) => {
+    if (!e.target.closest("input, select, textarea, summary, #reply, #log")) setTimeout(focusCmd, 0);
+  });
+  document.addEventListener("keydown", (e) => {
+    const t = document.activeElement;
+    if (e.key === "Escape") {
+      if ($("cmd").value) $("cmd").value = "";
+      else { Scope.clearRbl(); selected(null); }
+      focusCmd();
+      return;
+    }
+    if (t !== $("cmd") && !(t && t.matches("input, select, textarea")) && e.key.length === 1 && !e.ctrlKey && !e.metaKey) focusCmd();
+  });
+  // The legend: open until closed (at first closed below 1280 px, where it
+  // would hide much of the scope); the choice is remembered (?legend=0|1 overrides).
+  function showLegend(on) {
+    $("legend").classList.toggle("hidden", !on);
+    $("toggle-legend").classList.toggle("on", on);
+    Scope.toggle("legend", on);  // labels keep clear of it
+    try { localStorage.setItem("squawk.legend", on ? "1" : "0"); } catch (e) { /* private mode */ }
+  }
+  const legendParam = new URLSearchParams(location.search).get("legend");
+  let legendStored = null;
+  try { legendStored = localStorage.getItem("squawk.legend"); } catch (e) { /* private mode */ }
+  showLegend((legendParam ?? legendStored ?? (window.innerWidth < 1280 ? "0" : "1")) !== "0");
+  $("legend-close").addEventListener("click", () => showLegend(false));
+  $("toggle-legend").addEventListener("click", () => showLegend($("legend").classList.contains("hidden")));
   $("advisories").addEventListener("click", async (e) => {
     const b = e.target.closest("button[data-decision]");
     if (!b) return;
@@ -147,5 +236,12 @@
   });
   $("auto").addEventListener("change", () => post("/api/auto", { on: $("auto").checked }));
 
-  connect();
+  // ?capture=1: one state from GET /api/state and no push stream, so that a
+  // headless browser's --screenshot finds the page idle and returns.
+  if (new URLSearchParams(location.search).get("capture") === "1") {
+    fetch("/api/state").then((r) => r.json()).then((s) => { render(s); document.body.dataset.captured = "1"; });
+  } else {
+    connect();
+  }
+  focusCmd();
 })();

@@ -78,7 +78,14 @@ int cmd_serve(const ArgV& argv) {
   serve::LiveOptions lo;
   lo.auto_advisories = args->has("--auto");
   serve::LiveSim live(**session, lo, teammate.get());
-  serve::HttpServer server(live, stack.navdb(), so);
+  // Coastlines and FIR borders come from the navdata folder, when one is given.
+  serve::Geography geo;
+  if (!vmo->navdata_dir.empty()) {
+    auto g = serve::Geography::load(vmo->navdata_dir);
+    if (!g) return failure(g.status());
+    geo = std::move(*g);
+  }
+  serve::HttpServer server(live, stack.navdb(), so, &geo);
   auto bound = server.bind();
   if (!bound) return failure(bound.status());
 

@@ -15,10 +15,20 @@
 //    commands queued at their times (logged as autopilot).
 // The environment applies each heading from the start of its step, so a late
 // decision leaves it slightly ahead of the simulator; it is the agent's view.
+//
+// What the controller sees is made believable without changing the
+// episode: the intruders "0".."n-1" fly as airline callsigns and types
+// (kIntruders) and every aircraft at FL kLevel with the CAS that gives the
+// environment's true airspeed there, so the tracks are the environment's.
+// An advisory is offered only when it differs from the last one offered
+// (turn, heading or traffic named); the same advice stays pending instead of
+// expiring and coming back. Traffic information names the most urgent
+// conflict within kTrafficInfoNm, or none.
 #pragma once
 
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "app/team_loop.h"
 #include "env/horizontal_cr.h"
@@ -57,6 +67,19 @@ class ScopeTeammate : public serve::Teammate, private env::EpisodeObserver {
   Output* out_ = nullptr;            // during tick(): where notes go
   bool decided_ = false;             // an advisory for the environment's present step was given
   bool ended_ = false;               // the end of the episode was reported
+  std::string offered_;              // turn, heading and traffic of the last advisory offered
 };
+
+inline constexpr double kLevel = 240;           // [FL] of every aircraft of the episode
+inline constexpr double kTrafficInfoNm = 15.0;  // [NM] farthest traffic named in an advisory
+// The intruders' callsigns and types, in the order of the environment's intruders (cycled).
+inline constexpr std::pair<const char*, const char*> kIntruders[] = {
+    {"DLH4AX", "A320"}, {"BAW8CK", "A319"}, {"EZY67K", "A320"}, {"AFR1122", "A321"}, {"RYR55T", "B738"},
+    {"SAS902", "A20N"}, {"TRA5521", "B738"}, {"EWG7KL", "A319"}, {"AUA321", "A320"}, {"IBE3154", "A321"}};
+// Rewrites a team_setup_commands() CRE line "CRE id type lat lon hdg alt tas_kt"
+// (altitude 0, so CAS = TAS) for the scope: intruder `index` (-1: the
+// ownship, which keeps its callsign) becomes kIntruders' callsign and type,
+// at FL kLevel with the CAS of the same TAS. Other lines come back as given.
+std::string believable_cre(const std::string& line, int index);
 
 }  // namespace squawk::app

@@ -220,6 +220,8 @@ const std::vector<Subcommand>& subcommands() {
        "  --port N      listen port (0: any free port; the URL is printed)\n"
        "  --host ADDR   listen address; default 127.0.0.1 (this machine only)\n"
        "  --paused      start in HOLD\n"
+       "  --navdata DIR BlueSky navdata: airports, navaids and fixes by zoom, and\n"
+       "                coastlines and FIR borders (coastlines.dat, fir/*.txt)\n"
        "  --web DIR     serve the page from DIR instead of the shipped web/\n"
        "  --agent       the AI teammate: the demo's episode of --seed (KL001 and its\n"
        "                intruders) with the deconfliction agent, whose advisories\n"
@@ -229,7 +231,10 @@ const std::vector<Subcommand>& subcommands() {
        "                switch this on and off)\n\n"
        "HTTP API (JSON): GET /api/state, GET /api/stream (server-sent events, 10 Hz),\n"
        "POST /api/command {\"text\": ...}, POST /api/advisory {\"id\", \"decision\"},\n"
-       "POST /api/auto {\"on\"}, GET /api/navdata?south=&north=&west=&east=.\n"
+       "POST /api/auto {\"on\"}, GET /api/navdata?south=&north=&west=&east=,\n"
+       "GET /api/geo?south=&north=&west=&east=&step=. The page at /?capture=1 draws one\n"
+       "state without the push stream (for headless screenshots). docs/scope_guide.md\n"
+       "explains the scope.\n"
        SQUAWK_VM_FLAGS_HELP,
        cmd_serve},
       {"llm", "llm chat TEXT | llm embed TEXT   ask the configured LLM server directly",

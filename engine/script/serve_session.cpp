@@ -89,14 +89,23 @@ ServeSession::~ServeSession() {
   lua_setfield(L, LUA_REGISTRYINDEX, kSessionKey);
 }
 
-Result<CommandReply> ServeSession::command(const std::string& text) {
+Result<CommandReply> ServeSession::command(const std::string& text, const CommandOptions& opts) {
   lua_State* L = vm_->state();
   const int top = lua_gettop(L);
   lua_getfield(L, LUA_REGISTRYINDEX, kSessionKey);
   lua_getfield(L, -1, "command");
   lua_insert(L, -2);  // method, session
   lua_pushlstring(L, text.data(), text.size());
-  Status st = Vm::of(L).pcall(2, 1);
+  lua_createtable(L, 0, 2);
+  if (!opts.client.empty()) {
+    lua_pushlstring(L, opts.client.data(), opts.client.size());
+    lua_setfield(L, -2, "client");
+  }
+  if (!opts.selected.empty()) {
+    lua_pushlstring(L, opts.selected.data(), opts.selected.size());
+    lua_setfield(L, -2, "selected");
+  }
+  Status st = Vm::of(L).pcall(3, 1);
   if (st.is_ok() && !lua_istable(L, -1)) st = Status::internal(std::string(kModule) + ": command() returned no table");
   if (!st.is_ok()) {
     lua_settop(L, top);
@@ -107,6 +116,7 @@ Result<CommandReply> ServeSession::command(const std::string& text) {
   out.text = string_field(L, r, "text");
   out.ask = string_field(L, r, "ask");
   out.cancelled = bool_field(L, r, "cancelled");
+  out.addressed = string_field(L, r, "addressed");
   const std::string error = string_field(L, r, "error");
   lua_getfield(L, r, "commands");
   if (lua_istable(L, -1)) {
@@ -139,8 +149,10 @@ Result<CommandReply> ServeSession::command(const std::string& text) {
   }
   lua_pop(L, 1);
   if (!error.empty()) out.message = "could not translate: " + error;
-  if (out.cancelled) out.message = "question dropped";
-  if (out.ok && out.commands.empty() && !out.cancelled) {
+  // "cancel": what was dropped, or that nothing was pending.
+  const std::string cancel_note = string_field(L, r, "cancel_note");
+  if (!cancel_note.empty()) out.message = cancel_note;
+  if (out.ok && out.commands.empty() && cancel_note.empty()) {
     out.ok = false;
     out.message = "nothing to run";
   }

@@ -7,7 +7,7 @@
 // the simulation the session's translator and commands act on; it lives as
 // long as the session (the Lua value is kept in the registry) and is used
 // only on the thread that owns `vm`. command() passes one line (English or
-// "!TrafScript") and returns what happened; tick() advances the clock as the
+// "!TrafScript") from one client and returns what happened; tick() advances the clock as the
 // run state asks (session:tick); both report what happened meanwhile as
 // events. A Lua error comes back as a Status with its traceback and the
 // session stays usable.
@@ -40,6 +40,13 @@ struct CommandReply {
   bool cancelled = false;             // a pending question was dropped
   std::string trace;                  // the translation graph's path, one node a line
   std::vector<SessionEvent> events;   // what happened while the command ran (FF)
+  std::string addressed;              // the selected callsign put in front of the line, or ""
+};
+
+// Who says a line (session.lua's command() opts).
+struct CommandOptions {
+  std::string client;    // whose dialogue: a question raised for one client is answered only by its next line
+  std::string selected;  // callsign a line naming no aircraft is for when it does not translate by itself
 };
 
 class ServeSession {
@@ -50,7 +57,7 @@ class ServeSession {
   ServeSession& operator=(const ServeSession&) = delete;
 
   command::Stack& stack() { return *stack_; }
-  Result<CommandReply> command(const std::string& text);
+  Result<CommandReply> command(const std::string& text, const CommandOptions& opts = {});
   // session:tick(wall_s): OP advances wall_s x DTMULT, FF to its end, HOLD not at all [s].
   Result<std::vector<SessionEvent>> tick(double wall_s);
 

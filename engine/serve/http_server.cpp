@@ -2,6 +2,7 @@
 
 #include <httplib.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "serve/state_json.h"
@@ -55,8 +56,8 @@ Result<double> number_param(const httplib::Request& req, const char* name, doubl
 
 }  // namespace
 
-HttpServer::HttpServer(LiveSim& live, const command::NavDb* navdb, ServerOptions options)
-    : live_(live), navdb_(navdb), options_(std::move(options)), server_(std::make_unique<httplib::Server>()) {
+HttpServer::HttpServer(LiveSim& live, const command::NavDb* navdb, ServerOptions options, const Geography* geo)
+    : live_(live), navdb_(navdb), options_(std::move(options)), geo_(geo), server_(std::make_unique<httplib::Server>()) {
   const int threads = options_.threads;
   server_->new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
   // SO_REUSEADDR only: the library's default adds SO_REUSEPORT, which would
@@ -140,15 +141,37 @@ void HttpServer::routes() {
         [this](bool) { streams_.fetch_sub(1); });
   });
 
-  s.Get("/api/navdata", [this](const httplib::Request& req, httplib::Response& res) {
+  // The box of a request's south/north/west/east parameters (absent: the world).
+  const auto box_of = [](const httplib::Request& req) -> Result<GeoBox> {
     GeoBox box;
     for (auto [name, field] : {std::pair{"south", &box.lat0}, std::pair{"north", &box.lat1},
                                std::pair{"west", &box.lon0}, std::pair{"east", &box.lon1}}) {
       auto v = number_param(req, name, *field);
-      if (!v) return fail(res, 400, v.status().message());
+      if (!v) return v.status();
       *field = *v;
     }
-    send_json(res, 200, navdata_json(navdb_, box, 4000));
+    return box;
+  };
+
+  s.Get("/api/navdata", [this, box_of](const httplib::Request& req, httplib::Response& res) {
+    auto box = box_of(req);
+    if (!box) return fail(res, 400, box.status().message());
+    NavKinds kinds;
+    if (req.has_param("kinds")) {
+      const std::string k = "," + req.get_param_value("kinds") + ",";
+      kinds = {k.find(",airports,") != std::string::npos, k.find(",navaids,") != std::string::npos,
+               k.find(",fixes,") != std::string::npos};
+    }
+    send_json(res, 200, navdata_json(navdb_, *box, 4000, kinds));
+  });
+
+  s.Get("/api/geo", [this, box_of](const httplib::Request& req, httplib::Response& res) {
+    auto box = box_of(req);
+    if (!box) return fail(res, 400, box.status().message());
+    auto step = number_param(req, "step", 0.01);
+    if (!step) return fail(res, 400, step.status().message());
+    if (!geo_) return send_json(res, 200, {{"coast", json::array()}, {"fir", json::array()}, {"truncated", false}});
+    send_json(res, 200, geo_->in_box(*box, std::max(0.0, *step)));
   });
 
   s.Post("/api/command", [this, command_timeout](const httplib::Request& req, httplib::Response& res) {
@@ -160,7 +183,15 @@ void HttpServer::routes() {
     if (text.size() > options_.max_text)
       return fail(res, 413, "text of " + std::to_string(text.size()) + " characters: at most " +
                                 std::to_string(options_.max_text));
-    auto r = live_.call([text](LiveSim& l) { return l.command(text, "controller"); }, command_timeout);
+    script::CommandOptions opts;
+    for (auto [name, field] : {std::pair{"client", &opts.client}, std::pair{"selected", &opts.selected}}) {
+      if (!body->contains(name)) continue;
+      const json& v = (*body)[name];
+      if (!v.is_string() || v.get<std::string>().size() > 64)
+        return fail(res, 400, std::string("body: \"") + name + "\" must be a string of at most 64 characters");
+      *field = v.get<std::string>();
+    }
+    auto r = live_.call([text, opts](LiveSim& l) { return l.command(text, "controller", opts); }, command_timeout);
     if (!r) return fail(res, http_status(r.status()), r.status().message());
     send_json(res, 200, *r);
   });

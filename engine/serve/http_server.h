@@ -5,8 +5,13 @@
 //
 //   GET  /api/state      the state (state_json.h, plus log and advisories)
 //   GET  /api/stream     server-sent events: one `data: <state>` per publish
-//   GET  /api/navdata?south=&north=&west=&east=   airports and fixes in a box
-//   POST /api/command    {"text": "English or !TrafScript"} -> command reply
+//   GET  /api/navdata?south=&north=&west=&east=[&kinds=airports,navaids,fixes]
+//                        airports, navaids and fixes in a box (state_json.h)
+//   GET  /api/geo?south=&north=&west=&east=&step=   coastlines and FIR borders
+//                        in a box, points `step` degrees apart (geography.h)
+//   POST /api/command    {"text": "English or !TrafScript", "client"?: page id, "selected"?: callsign}
+//                        -> command reply (each client has its own dialogue;
+//                        a line naming no aircraft may go to "selected")
 //   POST /api/advisory   {"id": n, "decision": "accept"|"reject"}
 //   POST /api/auto       {"on": true|false}  execute advisories automatically
 // Bound to loopback, only requests whose Host is 127.0.0.1, localhost or [::1]
@@ -22,6 +27,7 @@
 
 #include "command/navdb.h"
 #include "core/status.h"
+#include "serve/geography.h"
 #include "serve/live_sim.h"
 
 namespace httplib {
@@ -43,7 +49,8 @@ struct ServerOptions {
 
 class HttpServer {
  public:
-  HttpServer(LiveSim& live, const command::NavDb* navdb, ServerOptions options);
+  // `geo` (may be null: no coastlines or borders) outlives the server.
+  HttpServer(LiveSim& live, const command::NavDb* navdb, ServerOptions options, const Geography* geo = nullptr);
   ~HttpServer();
   HttpServer(const HttpServer&) = delete;
   HttpServer& operator=(const HttpServer&) = delete;
@@ -59,6 +66,7 @@ class HttpServer {
   LiveSim& live_;
   const command::NavDb* navdb_;
   ServerOptions options_;
+  const Geography* geo_;
   std::unique_ptr<httplib::Server> server_;
   std::atomic<int> streams_{0};
 };

@@ -15,6 +15,7 @@ json reply_json(const script::CommandReply& r) {
   json j = {{"text", r.text}, {"commands", r.commands}, {"ok", r.ok}, {"message", r.message}, {"trace", r.trace}};
   if (!r.ask.empty()) j["ask"] = r.ask;
   if (r.cancelled) j["cancelled"] = true;
+  if (!r.addressed.empty()) j["addressed"] = r.addressed;
   return j;
 }
 
@@ -142,16 +143,25 @@ void LiveSim::log_events(const std::vector<script::SessionEvent>& events) {
 
 void LiveSim::log(const std::string& who, const std::string& text) {
   log_.push_back({{"seq", ++log_seq_}, {"simt", stack().sim().simt()}, {"who", who}, {"text", text}});
-  while (log_.size() > options_.log_shown) log_.pop_front();
+  // Decisions stay longest: the oldest entry of the simulation, autopilot or
+  // scenario goes first, the controller's, teammate's and auto's only when
+  // nothing else is left.
+  while (log_.size() > options_.log_shown) {
+    auto it = std::find_if(log_.begin(), log_.end(), [](const json& e) {
+      const std::string& w = e["who"].get_ref<const std::string&>();
+      return w == "sim" || w == "autopilot" || w == "scenario";
+    });
+    log_.erase(it == log_.end() ? log_.begin() : it);
+  }
 }
 
-json LiveSim::command(const std::string& text, const std::string& who) {
-  auto r = session_.command(text);
+json LiveSim::command(const std::string& text, const std::string& who, const script::CommandOptions& opts) {
+  auto r = session_.command(text, opts);
   if (!r) {
     log(who, text + "  -> error: " + r.status().message());
     return {{"text", text}, {"ok", false}, {"message", r.status().message()}, {"commands", json::array()}};
   }
-  std::string entry = r->text;
+  std::string entry = r->addressed.empty() ? r->text : "(" + r->addressed + ") " + r->text;
   if (!r->commands.empty() && r->text != "!" + r->commands.front()) entry += "  -> " + join(r->commands, " ; ");
   if (!r->ask.empty())
     entry += "  ? " + r->ask;
@@ -190,10 +200,11 @@ void LiveSim::advise(const std::string& english) {
 
 void LiveSim::execute(Advisory& a, const std::string& who) {
   a.decided_by = who;
-  json r = command(a.text, who);
+  const script::CommandOptions advisory{"advisories", ""};  // a dialogue of their own
+  json r = command(a.text, who, advisory);
   a.status = "accepted";
   if (r.contains("ask")) {
-    command("cancel", who);  // the advisory's question must not capture the controller's next line
+    command("cancel", who, advisory);  // a later advisory must not be read as the answer
     a.outcome = "not executed: the translator asked \"" + r["ask"].get<std::string>() + "\"";
   } else {
     a.outcome = (r["ok"].get<bool>() ? "" : "failed: ") +

@@ -13,7 +13,9 @@
 // decisions, "teammate" for advisories, "auto" for advisories executed in the
 // automatic mode, "scenario" for scenario output (ECHO, failed queued lines),
 // "autopilot" for the teammate's own steering, "sim" for conflicts and losses
-// of separation as they start and end.
+// of separation as they start and end. Of more than log_shown entries the
+// oldest "sim", "autopilot" or "scenario" one is dropped first, so that the
+// decisions (controller, teammate, auto) stay in view longest.
 #pragma once
 
 #include <chrono>
@@ -80,8 +82,10 @@ class LiveSim {
 
   // --- Owner thread only (inside a Request) --------------------------------
   command::Stack& stack() { return session_.stack(); }
-  // An English or "!TrafScript" line from `who`: {text, commands, ok, message, ask?, trace}.
-  nlohmann::json command(const std::string& text, const std::string& who);
+  // An English or "!TrafScript" line from `who` (the log's name) through
+  // the dialogue of opts.client: {text, commands, ok, message, ask?,
+  // addressed?, trace}.
+  nlohmann::json command(const std::string& text, const std::string& who, const script::CommandOptions& opts = {});
   // The controller's decision on advisory `id`: {ok, message, ...command reply}.
   nlohmann::json decide(int id, bool accept, const std::string& who);
   void set_auto(bool on);

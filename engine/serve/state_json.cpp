@@ -7,6 +7,7 @@
 
 #include "core/units.h"
 #include "sim/atmosphere.h"
+#include "sim/conflict.h"
 
 namespace squawk::serve {
 
@@ -97,8 +98,15 @@ json state_json(const command::Stack& stack) {
   for (int i = 0; i < t.n(); ++i) aircraft.push_back(aircraft_json(t, static_cast<size_t>(i)));
   out["aircraft"] = std::move(aircraft);
 
+  // With the clock held the pairs are detected afresh on the present state:
+  // the simulator's detector runs only as time moves, so at t = 0 of a paused
+  // start, or after a command given in HOLD, its pairs are missing or stale.
+  sim::ConflictDetector fresh;
+  const bool held = s.run_state() == sim::RunState::kHold && !s.fast();
+  if (held && cd.enabled) fresh.detect(t, cd);
+  const sim::ConflictDetector& det = held && cd.enabled ? fresh : s.cd();
   json conflicts = json::array();
-  for (const auto& c : s.conflicts()) {
+  for (const auto& c : det.pairs()) {
     const auto [a, b] = ordered(t, c.own, c.intruder);
     if (static_cast<size_t>(c.own) != a) continue;  // each pair is reported in both orders
     conflicts.push_back({{"ids", {t.id[a], t.id[b]}},
@@ -110,7 +118,7 @@ json state_json(const command::Stack& stack) {
   }
   out["conflicts"] = std::move(conflicts);
   json los = json::array();
-  for (const auto& l : s.los()) {
+  for (const auto& l : det.los()) {
     const auto [a, b] = ordered(t, l.own, l.intruder);
     if (static_cast<size_t>(l.own) != a) continue;
     los.push_back({{"ids", {t.id[a], t.id[b]}}, {"dist_nm", units::m_to_nm(l.dist)}, {"dalt_ft", units::m_to_ft(l.dalt)}});
@@ -119,23 +127,28 @@ json state_json(const command::Stack& stack) {
   return out;
 }
 
-json navdata_json(const command::NavDb* db, const GeoBox& box, size_t limit) {
-  json out = {{"airports", json::array()}, {"fixes", json::array()}, {"truncated", false}};
+json navdata_json(const command::NavDb* db, const GeoBox& box, size_t limit, NavKinds kinds) {
+  json out = {{"airports", json::array()}, {"navaids", json::array()}, {"fixes", json::array()}, {"truncated", false}};
   if (!db) return out;
   size_t n = 0;
-  auto add = [&](const std::vector<command::NavPoint>& pts, json& list) {
+  // Appends the points of `pts` in the box whose type `want` accepts.
+  auto add = [&](const std::vector<command::NavPoint>& pts, json& list, auto want, bool with_type) {
     for (const auto& p : pts) {
-      if (p.lat < box.lat0 || p.lat > box.lat1 || p.lon < box.lon0 || p.lon > box.lon1) continue;
+      if (!want(p) || p.lat < box.lat0 || p.lat > box.lat1 || p.lon < box.lon0 || p.lon > box.lon1) continue;
       if (n == limit) {
         out["truncated"] = true;
         return;
       }
-      list.push_back({p.id, p.lat, p.lon});
+      list.push_back(with_type ? json::array({p.id, p.lat, p.lon, p.type}) : json::array({p.id, p.lat, p.lon}));
       ++n;
     }
   };
-  add(db->airports(), out["airports"]);
-  add(db->waypoints(), out["fixes"]);
+  const auto any = [](const command::NavPoint&) { return true; };
+  const auto fix = [](const command::NavPoint& p) { return p.type == "FIX"; };
+  const auto navaid = [](const command::NavPoint& p) { return p.type != "FIX"; };
+  if (kinds.airports) add(db->airports(), out["airports"], any, false);
+  if (kinds.navaids) add(db->waypoints(), out["navaids"], navaid, true);
+  if (kinds.fixes) add(db->waypoints(), out["fixes"], fix, false);
   return out;
 }
 

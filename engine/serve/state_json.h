@@ -16,9 +16,13 @@
 //               = where each aircraft will be at the closest approach if both
 //               keep their present ground velocity (from the present state),
 //   los [{ids [a, b], dist_nm, dalt_ft}]  each pair once.
-// navdata_json(db, box) lists the airports and waypoints inside the box, at
-// most `limit` of them: {airports: [[id, lat, lon]], fixes: [[id, lat, lon]],
-// truncated}.
+// Conflicts and losses of separation are the simulator's last detection
+// while the clock runs, and detected on the present state while it is held
+// (so a paused start shows the predicted conflicts at t = 0).
+// navdata_json(db, box, limit, kinds) lists the airports, navaids (VOR,
+// NDB, DME, TACAN) and fixes inside the box that `kinds` asks for, at most
+// `limit` of them (in that order): {airports: [[id, lat, lon]], navaids:
+// [[id, lat, lon, type]], fixes: [[id, lat, lon]], truncated}.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -34,6 +38,9 @@ struct GeoBox {
   double lat0 = -90, lat1 = 90;    // [deg] south, north
   double lon0 = -180, lon1 = 180;  // [deg] west, east
 };
-nlohmann::json navdata_json(const command::NavDb* db, const GeoBox& box, size_t limit);
+struct NavKinds {
+  bool airports = true, navaids = true, fixes = true;
+};
+nlohmann::json navdata_json(const command::NavDb* db, const GeoBox& box, size_t limit, NavKinds kinds = {});
 
 }  // namespace squawk::serve

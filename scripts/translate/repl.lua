@@ -31,7 +31,8 @@ local HELP = [[
   :trace            the translation graph's path for the last request
   :mode M           translation mode: offline, single or multi
   :help             this text
-  :quit             leave (end of input does too)
+  :quit             leave (end of input does too); quit, exit and help work
+                    without the colon
   A question back (?) is answered by the next line; "cancel" drops it.
   Tab completes callsigns and commands; Ctrl-C clears the line.]]
 
@@ -147,7 +148,8 @@ end
 -- The reply of one command as lines.
 function Repl:format_reply(r)
   if r.ask then return "? " .. r.ask .. "   (answer, or say cancel)" end
-  if r.cancelled then return "  cancelled" end
+  if r.cancelled then return "  cancelled (" .. (r.cancel_note or "dropped the question") .. ")" end
+  if r.cancelled == false then return "  nothing to cancel: no question was pending" end
   if r.error and r.kind == "trafscript" then return "  " .. r.error end
   if r.error then return "  could not translate: " .. r.error .. "\n  (:trace shows how it went)" end
   local out = {}
@@ -200,6 +202,13 @@ function Repl:meta(cmd, arg)
   end
   if cmd == "mode" then
     if not graph.modes[arg] then return "  :mode expects offline, single or multi" end
+    if arg ~= "offline" then
+      local llm, why = squawk.llm.from_env()
+      if not llm then
+        return "  :mode " .. arg .. " needs an LLM server: " .. tostring(why)
+          .. "; set SQUAWK_LLM_URL or start the repl with --llm-url. The mode stays " .. (s.mode or "offline") .. "."
+      end
+    end
     s.mode = arg
     s.dialogue.opts.mode = arg
     return "  mode " .. arg
@@ -210,6 +219,9 @@ end
 function Repl:handle(line)
   line = line:gsub("^%s+", ""):gsub("%s+$", "")
   if line == "" then return "", false end
+  local word = line:lower()
+  if word == "quit" or word == "exit" then return "", true end
+  if word == "help" then return HELP, false end
   if line:sub(1, 1) == ":" then
     local cmd, arg = line:match("^:(%S+)%s*(.*)$")
     if cmd == "quit" or cmd == "q" or cmd == "exit" then return "", true end

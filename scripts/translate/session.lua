@@ -8,15 +8,24 @@
 --       Loads the scenario (raises when the file does not load) and runs its
 --       t = 0 commands; s.load_report says what they did (see report below).
 --       clock: start the running clock at that multiple of real time.
---   s:command(text) -> reply
+--   s:command(text, opts) -> reply
 --       text: English (translated through graph.dialogue, then run) or
---       "!CMD" (TrafScript run as typed). reply = {
+--       "!CMD" (TrafScript run as typed). opts (optional) = {
+--         client = key: whose dialogue (a question raised for one client is
+--                  answered only by that client's next line; nil: the
+--                  session's own, s.dialogue),
+--         selected = callsign: a line that names no aircraft and does not
+--                  translate by itself (a question or an error) is
+--                  translated again as "CALLSIGN line" }. reply = {
 --         text = the input, kind = "english" | "trafscript",
 --         commands = { "HDG KL204 180", ... }   the TrafScript that ran
 --         results = { {cmd =, ok =, message =}, ... }  one per command run;
 --                   the first failure stops the rest
 --         ask = question (the translator needs more; the next command()
---               may answer it, "cancel" drops it), cancelled = true,
+--               may answer it, "cancel" drops it),
+--         cancelled = true (a question was dropped) | false (a cancel with
+--               nothing pending), cancel_note = what was dropped, or
+--               "nothing to cancel",
 --         error = why nothing ran (translation failed, or a runtime error
 --                 in a graph node; the session and simulation go on),
 --         note = what the request asked that squawk does not simulate
@@ -26,7 +35,8 @@
 --                 (HOLD, OP, FF, DTMULT),
 --         events = { event, ... } what happened while time moved (FF),
 --         touched = { id, ... } aircraft named or created by the commands,
---         deleted = { id, ... } }
+--         deleted = { id, ... },
+--         addressed = callsign when opts.selected was put in front }
 --   s:tick(wall_s) -> { event, ... }
 --       The running clock: advances by wall_s x multiplier when running (OP),
 --       to the FF end time at once in fast-time, not at all in HOLD; wall_s
@@ -40,7 +50,7 @@
 --                  los = { {id1 =, id2 =, dist_nm =, dalt_ft =} } }
 --   s:complete(prefix) -> sorted words: callsigns, TrafScript command names
 --       and aliases (also as !NAME), and the REPL's :commands
---   event = { t = s, kind = "conflict" | "conflict_end" | "los" | "los_end"
+--   event = { t = s, kind = "conflict" | "conflict_reminder" | "conflict_end" | "los" | "los_end"
 --             | "echo" | "failure", text = sentence, id1 =?, id2 =? }
 --   report (load_report, and failure summaries) = { executed =, skipped =,
 --             failed =, first = {first failure messages}, reasons = {
@@ -57,6 +67,8 @@ M.kChunk = 1.0        -- [s] sim time between conflict checks while advancing
 M.kOpenFfRate = 60.0  -- FF without an end time: sim seconds per wall second
 M.kMaxTickWall = 5.0  -- [s] most wall time one tick accounts for (a stopped
                       -- terminal must not make the simulation jump hours)
+M.kMaxDialogues = 64  -- client dialogues kept (command() opts.client)
+M.kReminders = { 120, 60 }  -- [s] tLOS at which a standing conflict is announced again (descending)
 M.kMaxFfCpu = 0.5     -- [s] processor time one call spends on an FF with an end;
                       -- the rest of a long FF runs on the following ticks (HOLD stops it)
 
@@ -69,6 +81,7 @@ function M.new(opts)
   opts = opts or {}
   local self = setmetatable({ sim = squawk.sim.new({ seed = opts.seed or 0 }), mode = opts.mode }, Session)
   self.dialogue = graph.dialogue({ sim = self.sim, mode = self.mode })
+  self.dialogues = {}  -- client key -> dialogue (opts.client of command())
   self.conflicts, self.los = {}, {}
   if opts.scenario and opts.scenario ~= "" then
     local ok, msg = self.sim:load(opts.scenario)
@@ -130,14 +143,51 @@ local function diff(known, list, t, events, kind, start, ended)
   return now
 end
 
--- Compares the detector's conflicts and losses of separation with the known ones.
+-- The detector's conflicts and losses of separation. At t = 0 the detector
+-- has not run yet (it runs as the clock steps), so they are read from a copy
+-- of the simulation stepped once: a paused start shows what is predicted.
+function Session:detected()
+  if self.sim:time() > 0 then return self.sim:conflicts(), self.sim:los() end
+  local probe = self.sim:copy()
+  probe:step()
+  return probe:conflicts(), probe:los()
+end
+
+-- The smallest of kReminders at or above tlos [s], or nil.
+local function reminder_level(tlos)
+  local level
+  for _, th in ipairs(M.kReminders) do
+    if tlos > 0 and tlos <= th then level = th end
+  end
+  return level
+end
+
+-- Compares the detector's conflicts and losses of separation with the known
+-- ones; a known conflict whose tLOS falls to a kReminders mark is announced
+-- again (kind "conflict_reminder"), once per mark.
 function Session:diff_pairs(events)
   local t = self.sim:time()
-  self.conflicts = diff(self.conflicts, self.sim:conflicts(), t, events, "conflict", function(c, key)
+  local known = self.conflicts
+  local text = function(c, key)
     return string.format("conflict %s: loss of separation in %.0f s, closest %.2f NM in %.0f s", key, c.tlos,
       c.dcpa_nm, c.tcpa)
-  end, "conflict %s ended")
-  self.los = diff(self.los, self.sim:los(), t, events, "los", function(l, key)
+  end
+  local conflicts, los = self:detected()
+  self.conflicts = diff(known, conflicts, t, events, "conflict", text, "conflict %s ended")
+  local reminded, before = {}, self.reminded or {}
+  for _, c in ipairs(conflicts) do
+    local key, a, b = pair_key(c.own, c.intruder)
+    if reminded[key] == nil then
+      local level, prev = reminder_level(c.tlos), before[key]
+      if known[key] and level and (not prev or level < prev) then
+        events[#events + 1] = { t = t, kind = "conflict_reminder", id1 = a, id2 = b, text = "still " .. text(c, key) }
+        prev = level
+      end
+      reminded[key] = known[key] and (prev or false) or (level or false)
+    end
+  end
+  self.reminded = reminded
+  self.los = diff(self.los, los, t, events, "los", function(l, key)
     return string.format("LOSS OF SEPARATION %s: %.2f NM, %.0f ft apart", key, l.dist_nm, math.abs(l.dalt_ft))
   end, "separation regained %s")
 end
@@ -288,7 +338,39 @@ function Session:run_commands(cmds, reply)
   table.sort(reply.deleted)
 end
 
-function Session:command(text)
+-- The dialogue of `client` (nil: the session's own), made on first use; of
+-- more than kMaxDialogues clients the one unheard from longest is forgotten
+-- (a page reloaded many times must not grow the session without end).
+function Session:dialogue_for(client)
+  if client == nil or client == "" then return self.dialogue end
+  self.heard = (self.heard or 0) + 1
+  local d = self.dialogues[client]
+  if not d then
+    d = graph.dialogue({ sim = self.sim, mode = self.mode })
+    self.dialogues[client] = d
+    self.ndialogues = (self.ndialogues or 0) + 1
+    if self.ndialogues > M.kMaxDialogues then
+      local oldest, when = nil, math.huge
+      for key, other in pairs(self.dialogues) do
+        if other ~= d and other.heard < when then oldest, when = key, other.heard end
+      end
+      self.dialogues[oldest] = nil
+      self.ndialogues = self.ndialogues - 1
+    end
+  end
+  d.heard = self.heard
+  return d
+end
+
+-- Whether a word of `text` is the callsign of an aircraft in the simulation.
+function Session:names_aircraft(text)
+  for _, w in ipairs(words_upper(text)) do
+    if self.sim:get(w) then return true end
+  end
+  return false
+end
+
+function Session:command(text, opts)
   text = text:gsub("^%s+", ""):gsub("%s+$", "")
   local reply = { text = text, commands = {}, results = {}, events = {}, touched = {}, deleted = {} }
   if text:sub(1, 1) == "!" then
@@ -303,9 +385,22 @@ function Session:command(text)
   end
   reply.kind = "english"
   if text == "" then return reply end
-  local ok, r = pcall(self.dialogue.say, self.dialogue, text)
+  local d = self:dialogue_for(opts and opts.client)
+  local pending = d.pending
+  local ok, r = pcall(d.say, d, text)
+  local sel = opts and opts.selected
+  if ok and (r.ask or r.error) and not pending and sel and self.sim:get(sel) and not self:names_aircraft(text) then
+    local asked = d.pending
+    d.pending = nil
+    local ok2, r2 = pcall(d.say, d, sel .. " " .. text)
+    if ok2 and not r2.error then
+      r, reply.addressed = r2, sel
+    else
+      d.pending = asked
+    end
+  end
   if not ok then
-    self.dialogue.pending = nil
+    d.pending = nil
     reply.error = "the translator failed: " .. tostring(r) .. " (nothing ran; the simulation is unchanged)"
     return reply
   end
@@ -315,8 +410,8 @@ function Session:command(text)
     reply.ask = r.ask
     return reply
   end
-  if r.cancelled then
-    reply.cancelled = true
+  if r.cancelled ~= nil then
+    reply.cancelled, reply.cancel_note = r.cancelled, r.said
     return reply
   end
   if r.error then
@@ -333,7 +428,8 @@ function Session:state()
   local state, ff_end = self.sim:run_state()
   st.clock = { state = state, multiplier = self.sim:dtmult(), ff_end = ff_end }
   local with, seen = {}, {}
-  for _, c in ipairs(self.sim:conflicts()) do
+  local conflicts, los = self:detected()
+  for _, c in ipairs(conflicts) do
     local key, a, b = pair_key(c.own, c.intruder)
     if not seen[key] then
       seen[key] = true
@@ -347,7 +443,7 @@ function Session:state()
   end
   table.sort(st.conflicts, function(x, y) return x.tlos_s < y.tlos_s end)
   seen = {}
-  for _, l in ipairs(self.sim:los()) do
+  for _, l in ipairs(los) do
     local key, a, b = pair_key(l.own, l.intruder)
     if not seen[key] then
       seen[key] = true

@@ -64,8 +64,9 @@ do
   r:handle("!CRE DLH2 A320 52 4.8 270 FL300 280")
   local text = r:handle("!ASAS ON")
   check(find(text, "ok: ASAS ON"), text)
-  text = r:handle(":run 30")
+  -- Predicted at once, at t = 0 with the clock held.
   check(find(text, "conflict BAW1 & DLH2: loss of separation in"), text)
+  text = r:handle(":run 30")
   check(find(text, "tLOS"), text)
   check(text:match("BAW1 & DLH2%s+%d+ s%s+%d+ s%s+0%.%d%d NM") ~= nil, text)
   check(find(text, "CONFLICT DLH2"), text)

@@ -72,6 +72,7 @@ class Browser:
                 return reply.get("result", {})
 
     def open(self, url):
+        """Opens `url` in a new page, which later calls drive; returns its session (see use)."""
         target = self.send("Target.createTarget", {"url": "about:blank"}, session=False)["targetId"]
         self.session = self.send("Target.attachToTarget", {"targetId": target, "flatten": True},
                                  session=False)["sessionId"]
@@ -79,6 +80,18 @@ class Browser:
                   {"width": self.width, "height": self.height, "deviceScaleFactor": 1, "mobile": False})
         self.send("Page.enable")
         self.send("Page.navigate", {"url": url})
+        return self.session
+
+    def use(self, session):
+        """Drives the page of `session` (from open) from now on."""
+        self.session = session
+        self.send("Page.bringToFront")
+
+    def resize(self, width, height):
+        """Sets the page's viewport to width x height CSS pixels."""
+        self.width, self.height = width, height
+        self.send("Emulation.setDeviceMetricsOverride",
+                  {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
 
     def eval(self, expression):
         r = self.send("Runtime.evaluate", {"expression": expression, "returnByValue": True, "awaitPromise": True})
@@ -106,6 +119,23 @@ class Browser:
         for kind in ("keyDown", "keyUp"):
             self.send("Input.dispatchKeyEvent", {"type": kind, "key": "Enter", "code": "Enter",
                                                  "windowsVirtualKeyCode": 13, "text": "\r" if kind == "keyDown" else ""})
+
+    def mouse(self, kind, x, y, button="left", modifiers=0):
+        """One mouse event at page pixel (x, y): kind mousePressed, mouseMoved or mouseReleased."""
+        self.send("Input.dispatchMouseEvent", {"type": kind, "x": x, "y": y, "button": button,
+                                               "buttons": 0 if kind == "mouseReleased" else 1,
+                                               "clickCount": 1, "modifiers": modifiers})
+
+    def drag(self, x0, y0, x1, y1, steps=5, button="left", modifiers=0):
+        """Presses at (x0, y0), moves to (x1, y1) in `steps` moves and releases."""
+        self.mouse("mousePressed", x0, y0, button, modifiers)
+        for i in range(1, steps + 1):
+            self.mouse("mouseMoved", x0 + (x1 - x0) * i / steps, y0 + (y1 - y0) * i / steps, button, modifiers)
+        self.mouse("mouseReleased", x1, y1, button, modifiers)
+
+    def click(self, x, y, modifiers=0):
+        self.mouse("mousePressed", x, y, modifiers=modifiers)
+        self.mouse("mouseReleased", x, y, modifiers=modifiers)
 
     def screenshot(self, path):
         import base64

@@ -6,6 +6,7 @@ advisories with accept / reject and automatic execution.
 usage: test_api.py SQUAWK_BINARY
 """
 import json
+import re
 import os
 import socket
 import sys
@@ -128,6 +129,18 @@ def test_plain(squawk):
         check(code == 413, f"5000-character command refused (HTTP {code})")
         code, r = request(addr, "/api/advisory", {"id": 1, "decision": "accept"})
         check(code == 409 and "no advisory" in r["message"], f"unknown advisory (HTTP {code})")
+        code, r = request(addr, "/api/command", {"text": "KL204 climb", "client": 5})
+        check(code == 400 and '"client"' in r["message"], f"a client that is not a string is refused (HTTP {code})")
+        code, r = request(addr, "/api/command", {"text": "KL204 climb", "selected": "x" * 65})
+        check(code == 400 and '"selected"' in r["message"], f"a 65-character selection is refused (HTTP {code})")
+        with urllib.request.urlopen(f"http://{addr}/api/geo?south=50&north=55&west=0&east=8&step=0.01", timeout=5) as g:
+            geo = json.load(g)
+        check(geo == {"coast": [], "fir": [], "truncated": False}, f"no navdata: GET /api/geo is empty: {geo}")
+        try:
+            urllib.request.urlopen(f"http://{addr}/api/geo?step=abc", timeout=5)
+            check(False, "GET /api/geo?step=abc refused")
+        except urllib.error.HTTPError as e:
+            check(e.code == 400, f"GET /api/geo?step=abc refused (HTTP {e.code})")
 
         s_ = socket.create_connection(tuple(addr.rsplit(":", 1)), timeout=5)
         s_.sendall(b"GET /api/state HTTP/1.1\r\nHost: evil.example:80\r\nConnection: close\r\n\r\n")
@@ -183,6 +196,11 @@ def test_teammate(squawk):
         pending = [a for a in adv if a["status"] == "pending"]
         check(len(pending) == 1 and pending[0]["text"].startswith("KL001, "), f"an advisory for KL001: {pending}")
         command(addr, "!HOLD")  # decide at leisure
+        fleet = state(addr)["aircraft"]
+        check(all(re.fullmatch(r"[A-Z]{2,3}[0-9][0-9A-Z]{1,3}", a["id"]) for a in fleet) and len({a["type"] for a in fleet}) > 2
+              and all(abs(a["alt_ft"] - 24000) < 50 for a in fleet),
+              "the teammate's traffic has airline callsigns, several types, FL240: "
+              + ", ".join(f"{a['id']} {a['type']} {a['alt_ft']:.0f} ft" for a in fleet))
         a = next(a for a in state(addr)["advisories"] if a["status"] == "pending")
         code, r = request(addr, "/api/advisory", {"id": a["id"], "decision": "reject"})
         check(code == 200 and r["status"] == "rejected", f"reject -> {r}")
@@ -227,6 +245,17 @@ def test_teammate(squawk):
             auto = [x for x in state(addr)["advisories"] if x["decided_by"] == "auto"]
             time.sleep(0.05)
         check(bool(auto) and auto[0]["status"] == "accepted", f"automatic mode executes advisories: {auto[:1]}")
+        s = state(addr)
+        texts = [x["text"] for x in s["advisories"]]
+        advice = [re.sub(r", \d+ miles", "", t) for t in texts]  # the distance changes as time goes by
+        check(all(p != q for p, q in zip(advice, advice[1:])), f"no advisory offered twice in a row unchanged: {texts}")
+        miles = [int(m) for m in re.findall(r"o'clock, (\d+) miles", " ".join(texts))]
+        check(all(m <= 15 for m in miles), f"traffic information within 15 miles: {miles}")
+        who = {e["who"] for e in s["log"]}
+        check({"controller", "auto", "teammate"} <= who and
+              any(e["text"].startswith("accepted advisory") for e in s["log"]) and
+              any(e["text"] == "automatic execution of advisories on" for e in s["log"]),
+              f"accept, reject and automatic mode stay in the log: {sorted(who)}")
     finally:
         server.terminate()
         check(server.wait(timeout=10) == 0, "squawk serve --agent exits 0 on SIGTERM")

@@ -61,12 +61,16 @@ TEST_CASE("navdata_json: points inside the box, at most `limit`") {
                     {{"SPY", "VOR", 52.54, 4.85}, {"ARTIP", "FIX", 52.51, 5.57}, {"LAM", "VOR", 51.65, 0.15}});
   const json all = serve::navdata_json(&db, {50, 54, 3, 6}, 100);
   CHECK(all["airports"] == json::array({json::array({"EHAM", 52.3, 4.76})}));
-  CHECK(all["fixes"].size() == 2);
+  CHECK(all["navaids"] == json::array({json::array({"SPY", 52.54, 4.85, "VOR"})}));
+  CHECK(all["fixes"] == json::array({json::array({"ARTIP", 52.51, 5.57})}));
   CHECK(all["truncated"] == false);
   const json two = serve::navdata_json(&db, {50, 54, 3, 6}, 2);
-  CHECK(two["airports"].size() + two["fixes"].size() == 2);
+  CHECK(two["airports"].size() + two["navaids"].size() + two["fixes"].size() == 2);
   CHECK(two["truncated"] == true);
   CHECK(serve::navdata_json(nullptr, {}, 10)["fixes"].empty());
+  const json apts = serve::navdata_json(&db, {50, 54, 3, 6}, 100, {true, false, false});
+  CHECK(apts["airports"].size() == 1);
+  CHECK((apts["navaids"].empty() && apts["fixes"].empty()));
 }
 
 TEST_CASE("LiveSim: requests run on the owner thread; the state is published after each") {
@@ -105,4 +109,28 @@ TEST_CASE("LiveSim: requests run on the owner thread; the state is published aft
   live.stop();
   auto late = live.call([](serve::LiveSim&) { return json(); }, timeout);
   CHECK(late.status().code() == Code::kUnavailable);
+}
+
+TEST_CASE("LiveSim: of a full log the simulation's entries go first, the decisions stay") {
+  script::Vm vm({});
+  auto session = script::ServeSession::open(vm, "", "offline");
+  REQUIRE(session.is_ok());
+  serve::LiveOptions lo;
+  lo.log_shown = 5;
+  serve::LiveSim live(**session, lo);
+  live.start();
+  auto r = live.call(
+      [](serve::LiveSim& l) {
+        l.log("controller", "accepted advisory 1");
+        l.log("auto", "automatic execution of advisories on");
+        for (int i = 0; i < 10; ++i) l.log("sim", "conflict " + std::to_string(i));
+        return json{{"ok", true}};
+      },
+      std::chrono::seconds(30));
+  REQUIRE(r.is_ok());
+  const json log = json::parse(*live.state().second)["log"];
+  REQUIRE(log.size() == 5);
+  CHECK(log[0]["text"] == "accepted advisory 1");
+  CHECK(log[1]["who"] == "auto");
+  CHECK(log[4]["text"] == "conflict 9");
 }
