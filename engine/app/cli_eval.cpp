@@ -75,7 +75,8 @@ Result<EvalRequest> eval_request(const Args& args, const script::Scenario& sc) {
 
 Result<script::PolicyOptions> policy_options(const Args& args, long long seed) {
   script::PolicyOptions o;
-  SQUAWK_ASSIGN_OR_RETURN(o.gpt2, gpt2_options(args));
+  // the precision line only where GPT-2 runs
+  SQUAWK_ASSIGN_OR_RETURN(o.gpt2, gpt2_options(args, args.get_or("--policy", "") == "gpt2"));
   o.checkpoint = args.get_or("--checkpoint", "");
   o.seed = static_cast<uint64_t>(seed);
   o.gpt2_fresh = args.has("--model");

@@ -176,19 +176,20 @@ int cmd_train_gpt2(const ArgV& argv) {
   return kExitOk;
 }
 
-Status apply_precision_flag(const Args& args) {
+Status apply_precision_flag(const Args& args, bool announce) {
   std::optional<nn::Precision> want;
   if (auto v = args.get("--precision")) {
     auto p = nn::parse_precision(*v);
     if (!p) return Status::invalid("--precision: " + p.status().message());
     want = *p;
   }
-  std::fprintf(stderr, "%s\n", nn::use_precision(want).c_str());
+  const std::string line = nn::use_precision(want);
+  if (announce) std::fprintf(stderr, "%s\n", line.c_str());
   return Status::ok();
 }
 
-Result<Gpt2PolicyOptions> gpt2_options(const Args& args) {
-  SQUAWK_RETURN_IF_ERROR(apply_precision_flag(args));
+Result<Gpt2PolicyOptions> gpt2_options(const Args& args, bool announce) {
+  SQUAWK_RETURN_IF_ERROR(apply_precision_flag(args, announce));
   Gpt2PolicyOptions o;
   o.model = args.get_or("--model", "tiny");
   o.prompt = args.get_or("--prompt", "");

@@ -24,11 +24,11 @@ using script::make_gpt2_policy;
 inline const std::vector<std::string> kGpt2PolicyFlags = {"--model", "--model-seed", "--prompt", "--head",
                                                           "--blocks", "--chunk", "--precision"};
 // Gpt2PolicyOptions from --model --model-seed --prompt --head --blocks --chunk;
-// applies --precision (apply_precision_flag).
-Result<Gpt2PolicyOptions> gpt2_options(const Args& args);
+// applies --precision (apply_precision_flag; `announce` as there).
+Result<Gpt2PolicyOptions> gpt2_options(const Args& args, bool announce = true);
 // Sets the GPT-2 products' precision from --precision bf16|fp32 (absent: the
-// fastest here) and prints the one line saying which to stderr.
-Status apply_precision_flag(const Args& args);
+// fastest here) and, when `announce`, prints the one line saying which to stderr.
+Status apply_precision_flag(const Args& args, bool announce = true);
 
 // True when argv selects --policy gpt2 (the hook of cmd_train).
 bool wants_gpt2(const ArgV& argv);

@@ -27,6 +27,20 @@ void push_request(lua_State* L, const GraphRequest& req) {
   }
 }
 
+// Appends the strings of the list t[key] (t at the stack top) to out.
+void read_lines(lua_State* L, const char* key, std::vector<std::string>& out) {
+  lua_getfield(L, -1, key);
+  if (lua_istable(L, -1)) {
+    const lua_Integer n = luaL_len(L, -1);
+    for (lua_Integer i = 1; i <= n; ++i) {
+      lua_geti(L, -1, i);
+      if (lua_isstring(L, -1)) out.emplace_back(lua_tostring(L, -1));
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+}
+
 // Reads the graph's result table at the stack top.
 Result<translate::Translation> read_result(lua_State* L) {
   if (!lua_istable(L, -1))
@@ -38,15 +52,9 @@ Result<translate::Translation> read_result(lua_State* L) {
   lua_getfield(L, -1, "error");
   if (lua_type(L, -1) == LUA_TSTRING) tr.error = lua_tostring(L, -1);
   lua_pop(L, 1);
-  lua_getfield(L, -1, "commands");
-  if (lua_istable(L, -1)) {
-    const lua_Integer n = luaL_len(L, -1);
-    for (lua_Integer i = 1; i <= n; ++i) {
-      lua_geti(L, -1, i);
-      if (lua_isstring(L, -1)) tr.commands.emplace_back(lua_tostring(L, -1));
-      lua_pop(L, 1);
-    }
-  }
+  read_lines(L, "commands", tr.commands);
+  lua_getfield(L, -1, "confirm");
+  if (lua_istable(L, -1)) read_lines(L, "commands", tr.on_yes);
   lua_pop(L, 1);
   if (!tr.error.empty()) tr.commands.clear();  // a rejected candidate is never issued
   return tr;

@@ -13,7 +13,14 @@ EvalReport evaluate(const std::vector<CorpusCase>& cases, const CaseTranslator& 
   for (const auto& c : cases) {
     CaseOutcome o{c.id, c.category, "", c.expected, false, false};
     auto tr = translate(c);
-    if (tr.is_ok()) {
+    if (tr.is_ok() && !tr->on_yes.empty()) {
+      // A yes/no question before destructive commands is right when the
+      // request called for a question or when the yes runs exactly the
+      // expected commands; proposing other commands counts as wrong.
+      const std::string on_yes = text::join(tr->on_yes, " ; ");
+      o.produced = tr->ask + " [yes runs: " + on_yes + "]";
+      o.correct = score_case("", true, c.expected) || score_case(on_yes, false, c.expected);
+    } else if (tr.is_ok()) {
       o.asked = !tr->issued();
       o.produced = tr->text();
       o.correct = score_case(tr->issued() ? o.produced : "", o.asked, c.expected);

@@ -2,8 +2,10 @@
 //
 // Contract: exactly one of three outcomes: `commands` (TrafScript lines in
 // execution order, several for several instructions), `ask` (a question
-// back naming what is missing; no command), or `error` (the translator
-// produced nothing it could validate; no command is issued).
+// back naming what is missing, or a yes/no question before destructive or
+// global commands, which then stand in `on_yes`; no command is issued), or
+// `error` (the translator produced nothing it could validate; no command is
+// issued).
 #pragma once
 
 #include <string>
@@ -14,6 +16,7 @@ namespace squawk::translate {
 struct Translation {
   std::vector<std::string> commands;  // TrafScript lines, in execution order
   std::string ask;                    // a question back; empty when commands were produced
+  std::vector<std::string> on_yes;    // with a yes/no `ask`: the commands a yes runs
   std::string error;                  // why no valid command came out; empty otherwise
   bool asked() const { return !ask.empty(); }
   bool issued() const { return ask.empty() && error.empty() && !commands.empty(); }

@@ -46,7 +46,10 @@
 --     opts.confirmed {[callsign] = true}: inexactly heard callsigns the
 --                   speaker confirmed (the dialogue sets it after "yes")
 --   A question about an inexactly heard callsign carries result.confirm =
---   {id =, heard =}.
+--   {id =, heard =}. Commands that need a yes first (confirmation(): several
+--   aircraft deleted, RESET, IC, conflict detection/resolution off; a
+--   relative turn of more than 180 degrees) come back as a yes/no question
+--   with result.confirm = {commands =} and no result.commands.
 --   dialogue(opts) -> d   a conversation: d:say(text) -> result as translate()
 --       returns it. A result that asks keeps its partial request in d.pending
 --       ({question =, request =}) and the next say() answers it: a line with
@@ -54,10 +57,8 @@
 --       is joined to the pending request ("KL204 descend" -> "to what
 --       altitude?" -> "flight level 100" -> ALT KL204 FL100; result.answered
 --       holds the question answered); say("cancel") drops it (result.cancelled).
---       Commands that need a yes first (confirmation(): several aircraft
---       deleted, RESET, IC, conflict detection/resolution off; a relative
---       turn of more than 180 degrees) come back as a yes/no question with
---       result.confirm = {commands =}; the next say() runs them on "yes"
+--       After a question with result.confirm.commands the next say() runs
+--       them on "yes"
 --       (result.confirmed), drops them on "no" (result.cancelled) and on
 --       anything else drops them and reads that line as a new request
 --       (result.dropped names the request dropped).
@@ -267,7 +268,16 @@ function M.translate(text, opts)
   if state.ask then
     result.ask, result.confirm = state.ask, state.confirm
   else
-    result.commands = state.commands or {}
+    -- destructive or global commands wait for a yes: the question carries
+    -- the commands that the yes runs (Dialogue:answer)
+    local commands = state.commands or {}
+    local q = M.confirmation(commands, sim)
+    if q then
+      nodes.say(state, "confirm", "asks first: " .. q)
+      result.ask, result.confirm = q, { commands = commands }
+    else
+      result.commands = commands
+    end
   end
   return result
 end
@@ -318,21 +328,6 @@ end
 -- descend" + "flight level 100"); a line with an instruction word of its own
 -- that translates by itself is a new request and drops the question.
 function Dialogue:say(text)
-  local r = self:answer(text)
-  -- a line of commands that needs a yes first waits for it (translate() itself
-  -- gives the commands: the question belongs to the conversation)
-  if r.commands and #r.commands > 0 and not r.confirmed then
-    local q = M.confirmation(r.commands, self.opts.sim or squawk.sim.new())
-    if q then
-      nodes.say(r, "confirm", "asks first: " .. q)
-      r.ask, r.confirm, r.commands = q, { commands = r.commands }, nil
-      self.pending = { question = q, request = text, confirm = r.confirm }
-    end
-  end
-  return r
-end
-
-function Dialogue:answer(text)
   local pending = self.pending
   local key = text:lower():gsub("[%p%s]+", " "):gsub("^ ", ""):gsub(" $", "")
   if CANCEL[key] then
@@ -354,7 +349,7 @@ function Dialogue:answer(text)
       return { commands = {}, cancelled = true, trace = trace, mode = self.opts.mode or "offline",
                said = "dropped: " .. pending.request }
     end
-    local r = self:answer(text)
+    local r = self:say(text)
     r.dropped = pending.request
     return r
   end

@@ -28,7 +28,7 @@ do
   check_eq(b.commands[1], "ALT AF123 FL300")
   -- A line without a callsign goes to the selected aircraft.
   local r = s:command("turn left heading 200", { client = "a", selected = "BAW31" })
-  check_eq(r.commands[1], "HDG BAW31 200")
+  check_eq(r.commands[1], "HDG BAW31 200 LEFT")
   check_eq(r.addressed, "BAW31")
   r = s:command("pause the simulation", { client = "a", selected = "BAW31" })
   check_eq(r.commands[1], "HOLD")

@@ -23,8 +23,19 @@ local function score(path)
       { mode = "offline", sim = sim_for(c.setup), waypoints = nodes.defined_waypoints(c.setup) })
     local issued = r.commands ~= nil and not r.error and #r.commands > 0
     local produced = issued and table.concat(r.commands, " ; ") or ""
+    local on_yes = r.confirm and r.confirm.commands
     n = n + 1
-    if squawk.translate.score(produced, not issued, c.expected) then
+    if on_yes then
+      -- a yes/no question before destructive commands, scored as eval-translate
+      -- does (engine/translate/corpus.cpp): right when a question or exactly
+      -- those commands were expected, else wrong
+      if squawk.translate.score("", true, c.expected)
+          or squawk.translate.score(table.concat(on_yes, " ; "), false, c.expected) then
+        right = right + 1
+      else
+        wrong = wrong + 1
+      end
+    elseif squawk.translate.score(produced, not issued, c.expected) then
       right = right + 1
     elseif issued then
       wrong = wrong + 1
@@ -37,7 +48,9 @@ local function floors(path, min_right, max_wrong)
   local ok, right, wrong, n = pcall(score, path)
   if not ok then
     local msg = tostring(right)
-    if msg:find("cannot open", 1, true) or msg:find("not allowed", 1, true) then
+    -- only the shared corpora may be absent; the repository's own must be read
+    local shared = path:find("^%.%./shared/") ~= nil
+    if shared and (msg:find("cannot open", 1, true) or msg:find("not allowed", 1, true)) then
       print("skipped: " .. path .. " is absent or not readable (the shared corpora live beside the "
         .. "repository; ctest allows reading ../shared)")
       return
@@ -52,7 +65,9 @@ end
 -- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
 -- kept here after their first-sight figures were recorded, fixed by class.
 floors("tests/data/translate_round1.tsv", 0.95, 0.015)
-floors("tests/data/translate_round2.tsv", 0.66, 0.12)
+floors("tests/data/translate_round2.tsv", 0.70, 0.085)
+floors("tests/data/translate_round3.tsv", 0.82, 0.04)
+floors("tests/data/translate_round4.tsv", 0.66, 0.08)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)

@@ -112,19 +112,22 @@ do
 end
 
 -- A command that parses but that the simulator refuses when it runs is the
--- translation, not a question: "load scenario nothere.scn" is IC nothere.scn,
--- and the missing file is what running it reports. A command that does not
--- parse is still no translation (an LLM with retries left is sent back).
+-- translation, not a question: "load scenario nothere.scn" is IC nothere.scn
+-- (which, replacing the traffic, waits for a yes), and the missing file is what
+-- running it reports. A command that does not parse is still no translation (an
+-- LLM with retries left is sent back).
 do
+  local function on_yes(r) return r.confirm and r.confirm.commands and r.confirm.commands[1] end
   local r = graph.translate("load scenario nothere.scn", { sim = sim, mode = "offline" })
-  check_eq(r.commands and r.commands[1], "IC nothere.scn")
+  check_eq(on_yes(r), "IC nothere.scn")
+  check(r.ask and r.ask:find("yes or no", 1, true) ~= nil, "IC asks first")
   check_eq(r.error, nil)
   check(graph.format_trace(r.trace):find("the simulator will refuse it: IC nothere.scn: no scenario file", 1, true)
     ~= nil, "the trace names the refusal")
   local llm = fake_llm({ "\\boxed{IC nothere.scn}", "\\boxed{IC nothere.scn}" })
   r = graph.translate("load scenario nothere.scn", { sim = sim, llm = llm, mode = "single", max_retries = 1 })
   check_eq(llm.n, 2, "the LLM was given one retry with the refusal")
-  check_eq(r.commands and r.commands[1], "IC nothere.scn")
+  check_eq(on_yes(r), "IC nothere.scn")
   r = graph.translate("KL204 direct QQXQQ", { sim = sim, mode = "offline" })
   check(r.error ~= nil, "an unknown fix does not parse: no translation")
 end

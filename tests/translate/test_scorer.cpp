@@ -118,3 +118,19 @@ TEST_CASE("corpus reading and right / asked / wrong per category") {
   CHECK(err.asked == 1);
   CHECK(err.outcomes[0].produced.rfind("error:", 0) == 0);
 }
+
+TEST_CASE("a yes/no question before destructive commands: right when a question or those commands were expected") {
+  const std::vector<CorpusCase> cases = {{"c1", "", "delete everything", "ASK", "ask"},
+                                         {"c2", "", "delete both", "DEL A ; DEL B", "delete"},
+                                         {"c3", "", "delete the Lufthansas", "DEL A ; DEL C", "delete"}};
+  auto r = evaluate(cases, [](const CorpusCase&) -> squawk::Result<Translation> {
+    Translation t;
+    t.ask = "Delete 2 aircraft (A, B)? (yes or no)";
+    t.on_yes = {"DEL A", "DEL B"};
+    return t;
+  });
+  CHECK(r.correct == 2);
+  CHECK(r.asked == 0);
+  CHECK(r.wrong == 1);  // the question proposes other aircraft than the request named
+  CHECK(r.outcomes[2].produced.find("[yes runs: DEL A ; DEL B]") != std::string::npos);
+}
