@@ -322,13 +322,21 @@ Result<std::string> Stack::find_scenario(const std::string& name) const {
                            " and its parent folders)");
 }
 
+Status Stack::check_read(const std::string& path, std::string_view what) const {
+  return rules_ ? rules_->check_read(path, what) : Status::ok();
+}
+
+Status Stack::check_read_folder(const std::string& dir, std::string_view what) const {
+  return rules_ ? rules_->check_read_folder(dir, what) : Status::ok();
+}
+
 Result<std::pair<std::string, ScnFile>> Stack::read_included(const std::string& path) const {
   if (include_depth_ >= kMaxIncludeDepth)
     return Status::invalid("scenario " + text::quoted(path) + ": more than " +
                            std::to_string(kMaxIncludeDepth) + " nested IC/PCALLs");
+  if (!path.empty() && path.front() == '/') SQUAWK_RETURN_IF_ERROR(check_read(path, "scenario"));
   SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
-  if (read_filter_ && !read_filter_(file))
-    return Status::invalid("scenario " + text::quoted(file) + ": reading it is not allowed here (sandbox)");
+  SQUAWK_RETURN_IF_ERROR(check_read(file, "scenario"));
   SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
   return std::make_pair(std::move(file), std::move(scn));
 }

@@ -68,7 +68,7 @@ int bounded_field(lua_State* L, int idx, const char* key, int fallback, int lo) 
 
 int l_load(lua_State* L) {
   std::string dir = arg_string(L, 1, "dir");
-  if (dir != "tiny") dir = readable(L, dir, "model folder");
+  if (dir != "tiny") dir = readable_folder(L, dir, "model folder");
   const long long seed = opt_integer(L, 2, "seed", 0);
   if (seed < 0) throw ArgError("seed: expected an integer >= 0");
   auto b = gpt2::load_bundle(dir, static_cast<uint64_t>(seed));

@@ -254,6 +254,7 @@ int l_describe(lua_State* L) {
 int l_load_config(lua_State* L) {
   std::string path = arg_string(L, 1, "path");
   if (!path.empty() && path.front() != '/') path = paths::resource(path);
+  readable(L, path, "squawk.load_config");
   auto data = files::read(path);
   check_status(data.status());
   if (luaL_loadbufferx(L, data->data(), data->size(), ("@" + path).c_str(), "t") != LUA_OK)

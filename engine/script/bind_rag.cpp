@@ -48,7 +48,7 @@ int l_index(lua_State* L) {
     lua_pop(L, 1);
   }
   if (!notes_path.empty()) {
-    auto notes = rag::read_notes(notes_path);
+    auto notes = rag::read_notes(readable(L, notes_path, "squawk.rag.index{notes}"));
     check_status(notes.status());
     extra = std::move(notes).value();
   }

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 
 #include "core/text.h"
 #include "script/vm.h"
@@ -293,13 +292,13 @@ long long opt_count(lua_State* L, int idx, const char* name, long long fallback,
 }
 
 std::string readable(lua_State* L, const std::string& path, const char* what) {
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec) && !Vm::of(L).may_read(path))  // else the loader says "not found"
-    throw ArgError(std::string(what) + " '" + path +
-                   "': reading it is not allowed: the sandbox reads only the script's folder, squawk's "
-                   "scripts/prompts/scenarios/models and folders named with --allow-read DIR (or run "
-                   "with --unsafe)");
+  if (!path.empty()) check_status(Vm::of(L).rules().check_read(path, what));
   return path;
+}
+
+std::string readable_folder(lua_State* L, const std::string& dir, const char* what) {
+  if (!dir.empty()) check_status(Vm::of(L).rules().check_read_folder(dir, what));
+  return dir;
 }
 
 void charge(lua_State* L, long long instructions) { check_status(Vm::of(L).charge(instructions)); }

@@ -164,10 +164,13 @@ int finalize_object(lua_State* L);
 // __metatable and the checked finalizer. `methods` ends with {nullptr, nullptr}.
 void define_class(lua_State* L, const char* mt, const luaL_Reg* methods);
 
-// Returns `path` when the sandbox lets scripts read it (Vm::may_read) or it
-// does not exist (the loader then reports it missing), else ArgError naming
+// Returns `path` when the sandbox's read check lets scripts read it
+// (Vm::rules, paths::PathRules::check_read) or it is "", else ArgError naming
 // `what`, the path and --allow-read.
 std::string readable(lua_State* L, const std::string& path, const char* what);
+// As readable(), for a folder whose files a loader reads: the symbolic links
+// inside it are checked too (paths::PathRules::check_read_folder).
+std::string readable_folder(lua_State* L, const std::string& dir, const char* what);
 
 // Charges `instructions` of work done in C to the running VM's budget
 // (Vm::charge); ArgError when the budget is spent.

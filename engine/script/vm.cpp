@@ -60,24 +60,14 @@ int text_only_load(lua_State* L) {
 
 // Raises the sandbox's error unless `path` may be opened with `mode`.
 void check_file_access(lua_State* L, const char* path, const char* mode) {
-  const Vm& vm = Vm::of(L);
-  if (std::strpbrk(mode, "wa+") != nullptr) {
-    const std::string& out = vm.options().out_dir;
-    if (out.empty())
-      luaL_error(L,
-                 "writing '%s' is not allowed: the sandbox writes only inside the output "
-                 "folder given with --out DIR (or run with --unsafe)",
-                 path);
-    if (!paths::is_within(path, out))
-      luaL_error(L, "writing '%s' is not allowed: it is outside the output folder '%s'", path,
-                 out.c_str());
-  } else if (!vm.may_read(path)) {
-    luaL_error(L,
-               "reading '%s' is not allowed: the sandbox reads only the script's folder, squawk's "
-               "scripts/prompts/scenarios/models and folders named with --allow-read DIR (or run "
-               "with --unsafe)",
-               path);
+  char msg[1024] = "";  // no C++ object may live across luaL_error's longjmp
+  {
+    const paths::PathRules& rules = Vm::of(L).rules();
+    const Status st = std::strpbrk(mode, "wa+") != nullptr ? rules.check_write(path, "io.open")
+                                                           : rules.check_read(path, "io.open");
+    if (!st.is_ok()) std::snprintf(msg, sizeof msg, "%s", st.message().c_str());
   }
+  if (msg[0]) luaL_error(L, "%s", msg);
 }
 
 // io.open(path, mode) through check_file_access; upvalue 1 is the original.
@@ -140,6 +130,12 @@ int lua_file_searcher(lua_State* L) {
       const char* file = lua_tostring(L, -1);
       if (FILE* f = std::fopen(file, "r")) {
         std::fclose(f);
+        char refused[1024] = "";  // no C++ object may live across luaL_error's longjmp
+        {
+          const Status st = Vm::of(L).rules().check_read(file, "require");
+          if (!st.is_ok()) std::snprintf(refused, sizeof refused, "%s", st.message().c_str());
+        }
+        if (refused[0]) return luaL_error(L, "module '%s': %s", name, refused);
         if (luaL_loadfilex(L, file, "t") != LUA_OK)
           return luaL_error(L, "error loading module '%s' from '%s':\n\t%s", name, file,
                             lua_tostring(L, -1));
@@ -246,20 +242,13 @@ Vm::Call::~Call() {
 
 Vm& Vm::of(lua_State* L) { return **static_cast<Vm**>(lua_getextraspace(L)); }
 
-bool Vm::may_read(const std::string& path) const {
-  if (options_.unsafe) return true;
-  for (const auto& dir : readable_)
-    if (paths::is_within(path, dir)) return true;
-  return false;
-}
-
 Vm::Vm(VmOptions options) : options_(std::move(options)), rng_(options_.seed) {
-  for (const char* rel : {"scripts", "prompts", "scenarios", "models"})
-    readable_.push_back(paths::resource(rel));
+  if (options_.unsafe) rules_ = paths::PathRules::unrestricted();
+  for (const char* rel : {"scripts", "prompts", "scenarios", "models"}) rules_.allow_read(paths::resource(rel));
   for (const auto* list : {&options_.require_dirs, &options_.read_dirs})
-    readable_.insert(readable_.end(), list->begin(), list->end());
-  for (const auto* dir : {&options_.out_dir, &options_.navdata_dir})
-    if (!dir->empty()) readable_.push_back(*dir);
+    for (const auto& dir : *list) rules_.allow_read(dir);
+  for (const auto* dir : {&options_.out_dir, &options_.navdata_dir}) rules_.allow_read(*dir);
+  rules_.allow_write(options_.out_dir);
   L_ = luaL_newstate();
   *static_cast<Vm**>(lua_getextraspace(L_)) = this;
   open_sandbox();
@@ -418,7 +407,7 @@ Status Vm::run_file(const std::string& path, const std::vector<std::string>& arg
   lua_pushstring(L, paths::dirname(path).c_str());
   lua_seti(L, -2, 1);
   lua_pop(L, 1);
-  readable_.push_back(paths::dirname(path));
+  rules_.allow_read(paths::dirname(path));
 
   lua_createtable(L, static_cast<int>(args.size()), 1);
   lua_pushstring(L, path.c_str());

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "core/path_rules.h"
 #include "core/rng.h"
 #include "core/status.h"
 
@@ -88,11 +89,12 @@ class Vm {
   // The Vm that owns `L` (stored in the state's extra space).
   static Vm& of(lua_State* L);
 
-  // True when the sandbox lets scripts read `path`: it lies inside the
-  // folder of a script this Vm ran, the home's scripts/ prompts/ scenarios/
-  // models/, options.require_dirs, read_dirs, out_dir or navdata_dir (after
-  // resolving links). Always true with options.unsafe.
-  bool may_read(const std::string& path) const;
+  // The sandbox's path rules (paths::PathRules): reads inside the folder of
+  // a script this Vm ran, the home's scripts/ prompts/ scenarios/ models/,
+  // options.require_dirs, read_dirs, out_dir and navdata_dir; writes inside
+  // out_dir. Everything with options.unsafe.
+  const paths::PathRules& rules() const { return rules_; }
+  bool may_read(const std::string& path) const { return rules_.check_read(path, "file").is_ok(); }
 
   // Charges `instructions` of work done in C to the current call's budget;
   // an error naming the limit when it is spent (the caller raises it).
@@ -119,7 +121,7 @@ class Vm {
   long long instructions_ = 0;  // spent in the current call
   int call_depth_ = 0;
   std::unique_ptr<Watchdog> watchdog_;  // the current call's, when max_seconds > 0
-  std::vector<std::string> readable_;  // folders for may_read
+  paths::PathRules rules_;
   bool stopped_ = false;  // the budget of the current call is spent
   lua_State* L_ = nullptr;
   friend void count_hook(lua_State* L, ::lua_Debug* ar);

@@ -30,7 +30,7 @@ expect "7 refuse -1"         2 "--max-instructions expects a count >= 0" -- "$sq
 expect "18 scenario NaN"      0 "field 'intruders': expected a whole number .* got NaN" -- "$sq" run $d/load_scenario.lua $d/bad_numbers_scenario.lua
 expect "4 env.new self"      1 "more than 8 scenario files loading each other" -- "$sq" run $d/nested_env.lua
 expect "4 IC self"           1 "more than 16 nested IC/PCALLs" -- "$sq" scn $d/ic_self.scn
-expect "5 read refused"       1 "reading '/etc/passwd' is not allowed" -- "$sq" run $d/read_file.lua /etc/passwd
+expect "5 read refused"       1 "'/etc/passwd': reading it is not allowed" -- "$sq" run $d/read_file.lua /etc/passwd
 expect "5 --allow-read"      0 "^root:" -- "$sq" run $d/read_file.lua /etc/passwd --allow-read /etc
 expect "5 key hidden"        0 "^key=nil$" -- env SQUAWK_LLM_API_KEY=sekrit "$sq" run $d/read_file.lua /etc/passwd --allow-read /etc
 expect "5 --unsafe"          0 "^key=sekrit$" -- env SQUAWK_LLM_API_KEY=sekrit "$sq" run $d/read_file.lua /etc/passwd --unsafe
