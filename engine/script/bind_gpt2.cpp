@@ -45,9 +45,9 @@ void push_floats(lua_State* L, const float* v, size_t n) {
 std::vector<int> read_ints(lua_State* L, int idx, const char* name) {
   if (!lua_istable(L, idx)) throw ArgError(type_error(L, idx, name, "table of integers"));
   std::vector<int> out;
-  const lua_Integer n = luaL_len(L, idx);
+  const lua_Integer n = length(L, idx);
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, idx, i);
+    get_index(L, idx, i);
     int isnum = 0;
     const lua_Integer v = lua_tointegerx(L, -1, &isnum);
     lua_pop(L, 1);
@@ -137,9 +137,9 @@ int l_hidden(lua_State* L) {
   const auto* b = arg_object<gpt2::Bundle>(L, 1, kModelMt);
   if (!lua_istable(L, 2)) throw ArgError(type_error(L, 2, "seqs", "table of token-id tables"));
   std::vector<std::vector<int>> seqs;
-  const lua_Integer n = luaL_len(L, 2);
+  const lua_Integer n = length(L, 2);
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, 2, i);
+    get_index(L, 2, i);
     seqs.push_back(read_ints(L, lua_gettop(L), "seqs[i]"));
     lua_pop(L, 1);
   }

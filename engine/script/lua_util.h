@@ -52,7 +52,41 @@ std::string type_error(lua_State* L, int idx, const char* name, const char* expe
 
 // Message handler for lua_pcall: the error message plus a traceback (a
 // non-string error object is described by its __tostring or its type).
+// Never raises: a __tostring that raises or returns a non-string is ignored.
 int traceback_handler(lua_State* L);
+// Message handler for lua_pcall: any error object becomes a string message,
+// as traceback_handler, without the traceback.
+int message_handler(lua_State* L);
+// The error object at `idx` (left by a pcall with either handler above, or
+// with none) as text: never null, whatever its type.
+std::string error_text(lua_State* L, int idx);
+
+// Protected reads of script values. Each runs the Lua operation inside
+// lua_pcall with message_handler, so a metamethod (__index, __len,
+// __tostring) that raises an error object of any type becomes an ArgError
+// (a C++ exception: the callers' destructors run) instead of a longjmp across
+// C++ frames or a panic outside any pcall. A table without a metatable is
+// read directly. Same stack effect and result as the call they replace.
+int get_field(lua_State* L, int idx, const char* key);  // lua_getfield
+int get_index(lua_State* L, int idx, lua_Integer i);   // lua_geti
+lua_Integer length(lua_State* L, int idx);              // luaL_len
+// luaL_tolstring: pushes the value's text and returns it.
+const char* to_text(lua_State* L, int idx, size_t* len);
+
+// Runs fn() outside any binding (C++ code reading a script's table); an
+// exception (the ArgError of a protected read) becomes an error Status
+// prefixed with `context`, and the stack is put back to its height at entry.
+template <class F>
+Status catch_arg_errors(lua_State* L, const std::string& context, F&& fn) {
+  const int top = lua_gettop(L);
+  try {
+    fn();
+    return Status::ok();
+  } catch (const std::exception& e) {
+    lua_settop(L, top);
+    return Status::invalid(context + e.what());
+  }
+}
 
 double arg_number(lua_State* L, int idx, const char* name);
 double opt_number(lua_State* L, int idx, const char* name, double fallback);
