@@ -26,8 +26,8 @@ const std::vector<Subcommand>& subcommands() {
        cmd_demo},
       {"run", "run FILE.lua [ARGS...]   run a Lua script (the script sees ARGS as `arg`)",
        "usage: squawk run FILE.lua [ARGS...] [--seed N] [--unsafe] [--out DIR]\n"
-       "                 [--max-instructions N] [--max-seconds S] [--allow-read DIR[:DIR]]\n"
-       "                 [--navdata DIR]\n\n"
+       "                 [--max-instructions N] [--max-seconds S] [--max-memory MB]\n"
+       "                 [--allow-read DIR[:DIR]] [--navdata DIR]\n\n"
        "Runs a Lua script in squawk's sandbox. The script sees its arguments in the\n"
        "global table `arg` (arg[0] is the script path) and the engine as `squawk`.\n"
        "Flags squawk knows are taken wherever they stand; everything else goes to\n"
@@ -43,6 +43,8 @@ const std::vector<Subcommand>& subcommands() {
        "                         (default 500000000; 0 = no limit)\n"
        "  --max-seconds S        stop a call after S seconds of wall clock (default 0 =\n"
        "                         no limit; stuck in one C function 2 s more: exit 124)\n"
+       "  --max-memory MB        cap each Lua VM's heap at MB MiB (default 1024; 0 = no\n"
+       "                         limit)\n"
        "  --navdata DIR          BlueSky navdata folder (airports.dat, fix.dat, nav.dat)\n",
        cmd_run},
       {"test", "test [DIR|FILE...]       run Lua regression scripts (default tests/lua/)",

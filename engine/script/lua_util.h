@@ -17,6 +17,7 @@
 #include <lua.hpp>
 
 #include "core/status.h"
+#include "script/vm.h"
 
 namespace squawk::script {
 
@@ -32,12 +33,18 @@ inline void check_status(const Status& st) {
 template <int (*Body)(lua_State*)>
 int guarded(lua_State* L) {
   char msg[2048];
+  Vm& vm = Vm::of(L);
   {
+    vm.enter_binding();
     try {
-      return Body(L);
+      const int n = Body(L);
+      if (vm.leave_binding()) return n;
+      std::strncpy(msg, vm.memory_message().c_str(), sizeof msg - 1);
     } catch (const std::exception& e) {
+      vm.leave_binding();
       std::strncpy(msg, e.what(), sizeof msg - 1);
     } catch (...) {
+      vm.leave_binding();
       std::strncpy(msg, "unknown C++ exception", sizeof msg - 1);
     }
   }
