@@ -209,6 +209,7 @@ void Stack::process_due() {
                      std::to_string(dropped) + " dropped; a SCHEDULE or PCALL loop?)");
       return;
     }
+    if (ran % 64 == 0 && past_deadline()) return;
     std::string line = std::move(queue_.begin()->second);
     queue_.erase(queue_.begin());
     run_queued(line);
@@ -259,6 +260,8 @@ Status Stack::run_until(double t_end) {
   if (!std::isfinite(t_end)) return Status::invalid("run until: time must be finite");
   while (true) {
     process_due();
+    if (past_deadline())
+      return Status::timeout("the wall-clock deadline passed at t = " + text::fmt_double(sim_.simt(), 2) + " s");
     if (sim_.simt() + 0.5 * sim_.dt() > t_end) break;
     const double before = sim_.simt();
     sim_.step();

@@ -27,6 +27,7 @@
 // translator validates commands on a scratch copy.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -115,8 +116,11 @@ class Stack {
   void schedule(double t, std::string line);
 
   // Runs (queued commands, steps, conditions) up to t_end [s]; see above.
-  // Queued commands that fail are counted and logged, not returned.
+  // Queued commands that fail are counted and logged, not returned. With a
+  // deadline set, the clock is read every 64 queued commands and every step:
+  // past it, run_until returns kTimeout and the rest stay queued.
   Status run_until(double t_end);
+  void set_deadline(std::optional<std::chrono::steady_clock::time_point> d) { deadline_ = d; }
   // One step: due commands, Simulation::step, conditions.
   void step();
   // Runs the commands due at the current time without stepping.
@@ -189,6 +193,8 @@ class Stack {
   void record_failure(const std::string& what);
 
   const paths::PathRules* rules_ = nullptr;
+  std::optional<std::chrono::steady_clock::time_point> deadline_;
+  bool past_deadline() const { return deadline_ && std::chrono::steady_clock::now() > *deadline_; }
   int include_depth_ = 0;  // PCALL nesting guard (not state: always 0 between calls)
 
   Tally tally_;

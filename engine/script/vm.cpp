@@ -180,6 +180,23 @@ int guarded_setmetatable(lua_State* L) {
   return 1;
 }
 
+// string.find/match/gmatch/gsub; upvalue 1 is the original. Charges
+// (#s + 1) * (#pattern + 1) / 16 instructions first: a scan costs about
+// #pattern steps per subject byte, 16 of them per VM instruction. Backtracking
+// beyond that is bounded by --max-seconds (Watchdog).
+int charged_pattern(lua_State* L) {
+  const auto cost = static_cast<long long>((lua_rawlen(L, 1) + 1) * (lua_rawlen(L, 2) + 1) / 16);
+  char msg[256] = "";  // no C++ object may live across luaL_error's longjmp
+  if (const Status st = Vm::of(L).charge(cost); !st.is_ok())
+    std::snprintf(msg, sizeof msg, "%s", st.message().c_str());
+  if (msg[0]) return luaL_error(L, "%s", msg);
+  const int n = lua_gettop(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, n, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
 // os.getenv(name): only the names in kEnvAllowList; others are nil.
 int checked_getenv(lua_State* L) {
   const char* name = luaL_checkstring(L, 1);
@@ -422,6 +439,14 @@ void Vm::open_sandbox() {
     lua_getfield(L, g, "load");
     lua_pushcclosure(L, text_only_load, 1);
     lua_setfield(L, g, "load");
+
+    lua_getfield(L, g, "string");
+    for (const char* fn : {"find", "match", "gmatch", "gsub"}) {
+      lua_getfield(L, -1, fn);
+      lua_pushcclosure(L, charged_pattern, 1);
+      lua_setfield(L, -2, fn);
+    }
+    lua_pop(L, 1);
 
     lua_getfield(L, g, "os");
     for (const char* fn : {"execute", "exit", "remove", "rename", "tmpname", "setlocale"})
