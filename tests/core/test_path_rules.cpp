@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "core/files.h"
 #include "core/path_rules.h"
 
 using namespace squawk;
@@ -51,5 +52,40 @@ TEST_CASE("real_path follows every link, dangling ones included, and applies .. 
   CHECK(!root.check_read("/proc/self/root/etc/hostname", "f").is_ok());
   CHECK(!root.check_read("/dev/stdin", "f").is_ok());
   CHECK(paths::PathRules::unrestricted().check_read("/proc/self/environ", "f").is_ok());
+  fs::remove_all(t);
+}
+
+TEST_CASE("AtomicWriter: temp file beside the target, links followed, special files in place, errors kept") {
+  const fs::path t = fs::temp_directory_path() / ("squawk_atomic_" + std::to_string(::getpid()));
+  fs::remove_all(t);
+  fs::create_directories(t / "real");
+  const std::string target = (t / "real" / "f.txt").string();
+  REQUIRE(files::write_atomic(target, "old"));
+  // An uncommitted writer leaves the previous file and no temporary file.
+  {
+    auto w = files::AtomicWriter::open(target);
+    REQUIRE(w);
+    (*w)->out() << "half";
+  }
+  CHECK(*files::read(target) == "old");
+  CHECK(std::distance(fs::directory_iterator(t / "real"), fs::directory_iterator()) == 1);
+  // Through a link: the target is replaced, the link stays a link.
+  fs::create_symlink(target, t / "link");
+  REQUIRE(files::write_atomic((t / "link").string(), "new"));
+  CHECK(fs::is_symlink(t / "link"));
+  CHECK(*files::read(target) == "new");
+  // A dangling link creates its target.
+  fs::create_symlink(t / "real" / "later.txt", t / "dangling");
+  REQUIRE(files::write_atomic((t / "dangling").string(), "x"));
+  CHECK(fs::is_symlink(t / "dangling"));
+  CHECK(*files::read((t / "real" / "later.txt").string()) == "x");
+  // A folder is refused; a character device is written in place.
+  CHECK(files::write_atomic((t / "real").string(), "x").message().find("a folder") != std::string::npos);
+  CHECK(files::write_atomic("/dev/null", "x").is_ok());
+  if (fs::exists("/dev/full")) {
+    const Status full = files::write_atomic("/dev/full", std::string(1 << 16, 'x'));
+    CHECK(full.message().find("No space left") != std::string::npos);
+    CHECK(fs::is_character_file("/dev/full"));
+  }
   fs::remove_all(t);
 }

@@ -30,6 +30,11 @@ expect "52 --max-memory -1"  2 "--max-memory expects MiB" -- "$sq" run $d/memory
 expect "52 __gc loop"        1 "gc_loop.lua:6: stopped: the script ran 2000000 Lua instructions" -- "$sq" run $d/gc_loop.lua collect --max-instructions 2000000
 expect "52 __gc at exit"     0 "^script done$" -- "$sq" run $d/gc_loop.lua --max-instructions 2000000
 expect "52 __gc at exit, wall" 0 "^script done$" -- "$sq" run $d/gc_loop.lua --max-instructions 0 --max-seconds 1
+expect "52 record /dev/full" 1 "cannot write '/dev/full': No space left on device" -- "$sq" eval scenarios/horizontal_cr.lua --episodes 2 --record /dev/full
+fifo=$(mktemp -u); mkfifo "$fifo"; (cat "$fifo" >"$fifo.out" &)
+expect "52 record FIFO"      0 "success" -- "$sq" eval scenarios/horizontal_cr.lua --episodes 2 --record "$fifo"
+if [ -p "$fifo" ]; then echo "ok   52 FIFO stays a FIFO"; pass=$((pass + 1)); else echo "FAIL 52 FIFO was replaced"; fails=$((fails + 1)); fi
+rm -f "$fifo" "$fifo.out"
 expect "7 per call"          0 "^steps 3000$" -- "$sq" run $d/reward_per_call.lua $d/reward_scenario.lua "${lim[@]}"
 expect "7 refuse -1"         2 "--max-instructions expects a count >= 0" -- "$sq" run $d/coroutines.lua --max-instructions -1
 expect "18 scenario NaN"      0 "field 'intruders': expected a whole number .* got NaN" -- "$sq" run $d/load_scenario.lua $d/bad_numbers_scenario.lua
