@@ -191,7 +191,8 @@ const std::vector<Subcommand>& subcommands() {
        "offline.\n",
        cmd_repl},
       {"serve", "serve [SCENARIO.scn]       the radar scope in a browser, simulation running live",
-       "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--speed X] [--paused]\n"
+       "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--allow-host NAME[,NAME]]\n"
+       "                    [--speed X] [--paused]\n"
        "                    [--mode offline|single|multi] [--seed N] [--navdata DIR] [--web DIR]\n"
        "                    [--agent [--policy mlp|gpt2] [--checkpoint FILE] [--auto]]\n\n"
        "Serves a radar scope at http://127.0.0.1:8080/ while the simulation runs live\n"
@@ -201,6 +202,9 @@ const std::vector<Subcommand>& subcommands() {
        "translation graph) or !TrafScript. Several browsers may watch at once.\n\n"
        "  --port N      listen port (0: any free port; the URL is printed)\n"
        "  --host ADDR   listen address; default 127.0.0.1 (this machine only)\n"
+       "  --allow-host NAME[,NAME]  Host names answered besides 127.0.0.1, localhost\n"
+       "                and [::1], whatever ADDR is (the name or address others use\n"
+       "                to reach this machine); other Hosts get 403 (DNS rebinding)\n"
        "  --paused      start in HOLD\n"
        "  --web DIR     serve the page from DIR instead of the shipped web/\n"
        "  --agent       the AI teammate: the demo's episode of --seed (KL001 and its\n"
