@@ -126,12 +126,13 @@ int run_eval(script::MadePolicy& made, env::VecEnv& envs, const script::Scenario
     shower = std::make_unique<PromptShower>(*pp, req.show_prompt);
   }
   rl::Policy& policy = shower ? static_cast<rl::Policy&>(*shower) : base;
-  std::ofstream rec_file;
+  std::unique_ptr<files::AtomicWriter> rec_file;  // committed once the episodes ran
   std::unique_ptr<env::JsonlRecorder> recorder;
   if (!req.record.empty()) {
-    rec_file.open(req.record, std::ios::trunc);
-    if (!rec_file) return failure(Status::io_error("cannot write " + req.record));
-    recorder = std::make_unique<env::JsonlRecorder>(rec_file);
+    auto opened = files::AtomicWriter::open(req.record);
+    if (!opened) return failure(opened.status());
+    rec_file = std::move(*opened);
+    recorder = std::make_unique<env::JsonlRecorder>(rec_file->out());
     for (int s = 0; s < envs.size(); ++s) envs.env(s).set_observer(recorder.get());
   }
   ProgressBar bar("eval", req.episodes, !req.json && req.show_prompt == 0);
@@ -141,6 +142,11 @@ int run_eval(script::MadePolicy& made, env::VecEnv& envs, const script::Scenario
   if (!res) return failure(res.status());
   if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
   if (Status rs = sc.reward_error(); !rs.is_ok()) return failure(rs);
+  if (rec_file) {
+    for (int s = 0; s < envs.size(); ++s) envs.env(s).set_observer(nullptr);
+    recorder.reset();
+    if (Status ws = rec_file->commit(); !ws.is_ok()) return failure(ws);
+  }
   nlohmann::json hist = nlohmann::json::object();
   for (size_t k = 0; k < rl::kActionBins.size(); ++k) {
     char key[16];

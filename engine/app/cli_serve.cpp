@@ -17,6 +17,7 @@
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/paths.h"
+#include "core/text.h"
 #include "script/serve_session.h"
 #include "serve/http_server.h"
 #include "serve/live_sim.h"
@@ -29,7 +30,7 @@ extern "C" void on_stop_signal(int) { g_stop = 1; }
 }  // namespace
 
 int cmd_serve(const ArgV& argv) {
-  Args::Spec spec = with_vm_flags({{"--port", "--host", "--mode", "--speed", "--web", "--policy", "--checkpoint"},
+  Args::Spec spec = with_vm_flags({{"--port", "--host", "--allow-host", "--mode", "--speed", "--web", "--policy", "--checkpoint"},
                                       {"--paused", "--auto", "--agent"}});
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("serve", args.status().message());
@@ -40,6 +41,9 @@ int cmd_serve(const ArgV& argv) {
 
   serve::ServerOptions so;
   so.host = args->get_or("--host", "127.0.0.1");
+  if (auto names = args->get("--allow-host"))
+    for (const auto& n : text::split(*names, ','))
+      if (!n.empty()) so.allowed_hosts.push_back(n);
   const std::string port = args->get_or("--port", "8080");
   char* end = nullptr;
   const long p = std::strtol(port.c_str(), &end, 10);

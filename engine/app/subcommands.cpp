@@ -39,8 +39,8 @@ const std::vector<Subcommand>& subcommands() {
        cmd_demo},
       {"run", "run FILE.lua [ARGS...]   run a Lua script (the script sees ARGS as `arg`)",
        "usage: squawk run FILE.lua [ARGS...] [--seed N] [--unsafe] [--out DIR]\n"
-       "                 [--max-instructions N] [--max-seconds S] [--allow-read DIR[:DIR]]\n"
-       "                 [--navdata DIR]\n\n"
+       "                 [--max-instructions N] [--max-seconds S] [--max-memory MB]\n"
+       "                 [--allow-read DIR[:DIR]] [--navdata DIR]\n\n"
        "Runs a Lua script in squawk's sandbox. The script sees its arguments in the\n"
        "global table `arg` (arg[0] is the script path) and the engine as `squawk`.\n"
        "Flags squawk knows are taken wherever they stand; everything else goes to\n"
@@ -56,6 +56,8 @@ const std::vector<Subcommand>& subcommands() {
        "                         (default 500000000; 0 = no limit)\n"
        "  --max-seconds S        stop a call after S seconds of wall clock (default 0 =\n"
        "                         no limit; stuck in one C function 2 s more: exit 124)\n"
+       "  --max-memory MB        cap each Lua VM's heap at MB MiB (default 1024; 0 = no\n"
+       "                         limit)\n"
        "  --navdata DIR          BlueSky navdata folder (airports.dat, fix.dat, nav.dat)\n",
        cmd_run},
       {"test", "test [DIR|FILE...]       run Lua regression scripts (default tests/lua/)",
@@ -212,7 +214,8 @@ const std::vector<Subcommand>& subcommands() {
        SQUAWK_VM_FLAGS_HELP,
        cmd_repl},
       {"serve", "serve [SCENARIO.scn]       the radar scope in a browser, simulation running live",
-       "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--speed X] [--paused]\n"
+       "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--allow-host NAME[,NAME]]\n"
+       "                    [--speed X] [--paused]\n"
        "                    [--mode offline|single|multi] [--seed N] [--navdata DIR] [--web DIR]\n"
        "                    [--agent [--policy mlp|gpt2] [--checkpoint FILE] [--auto]]\n\n"
        "Serves a radar scope at http://127.0.0.1:8080/ while the simulation runs live\n"
@@ -222,6 +225,9 @@ const std::vector<Subcommand>& subcommands() {
        "translation graph) or !TrafScript. Several browsers may watch at once.\n\n"
        "  --port N      listen port (0: any free port; the URL is printed)\n"
        "  --host ADDR   listen address; default 127.0.0.1 (this machine only)\n"
+       "  --allow-host NAME[,NAME]  Host names answered besides 127.0.0.1, localhost\n"
+       "                and [::1], whatever ADDR is (the name or address others use\n"
+       "                to reach this machine); other Hosts get 403 (DNS rebinding)\n"
        "  --paused      start in HOLD\n"
        "  --navdata DIR BlueSky navdata: airports, navaids and fixes by zoom, and\n"
        "                coastlines and FIR borders (coastlines.dat, fir/*.txt)\n"

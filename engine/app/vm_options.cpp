@@ -10,7 +10,8 @@
 namespace squawk::app {
 
 Args::Spec with_vm_flags(Args::Spec spec) {
-  for (const char* f : {"--seed", "--out", "--max-instructions", "--max-seconds", "--navdata", "--allow-read"})
+  for (const char* f : {"--seed", "--out", "--max-instructions", "--max-seconds", "--max-memory", "--navdata",
+                        "--allow-read"})
     spec.value_flags.emplace_back(f);
   spec.bool_flags.emplace_back("--unsafe");
   return spec;
@@ -33,6 +34,11 @@ Result<script::VmOptions> vm_options(const Args& args) {
   if (!(*maxs >= 0) || *maxs > 1e9)
     return Status::invalid("flag --max-seconds expects seconds >= 0 (0 = no limit)");
   o.max_seconds = *maxs;
+  auto maxm = args.get_int("--max-memory", o.max_memory >> 20);
+  if (!maxm) return maxm.status();
+  if (*maxm < 0 || *maxm > (1LL << 30))
+    return Status::invalid("flag --max-memory expects MiB in [0, 2^30] (0 = no limit), got " + std::to_string(*maxm));
+  o.max_memory = *maxm << 20;
   o.unsafe = args.has("--unsafe");
   if (auto out = args.get("--out")) {
     SQUAWK_RETURN_IF_ERROR(files::make_dirs(*out));

@@ -7,8 +7,8 @@
 
 namespace squawk::app {
 
-// Adds --seed --unsafe --out --max-instructions --max-seconds --navdata
-// --allow-read to `spec`.
+// Adds --seed --unsafe --out --max-instructions --max-seconds --max-memory
+// --navdata --allow-read to `spec`. --max-memory MB caps each VM's Lua heap.
 // --allow-read DIR[:DIR...] names folders scripts may read besides their own.
 Args::Spec with_vm_flags(Args::Spec spec);
 // VmOptions from the parsed flags (navdata also from $SQUAWK_NAVDATA).

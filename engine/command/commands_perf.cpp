@@ -22,7 +22,9 @@ Result<std::string> perf(Call& c) {
   if (v == "OPENAP") {
     std::shared_ptr<const sim::OpenapData> data;
     if (c.has(1)) {
-      SQUAWK_ASSIGN_OR_RETURN(data, sim::OpenapData::load(std::string(text::trim(c[1].text))));
+      const std::string dir(text::trim(c[1].text));
+      SQUAWK_RETURN_IF_ERROR(c.stack.check_read_folder(dir, "argument 2: OpenAP folder"));
+      SQUAWK_ASSIGN_OR_RETURN(data, sim::OpenapData::load(dir));
     } else {
       data = s.openap() ? s.openap() : sim::default_openap();
       if (!data)

@@ -215,6 +215,7 @@ void Stack::process_due() {
                      std::to_string(dropped) + " dropped; a SCHEDULE or PCALL loop?)");
       return;
     }
+    if (ran % 64 == 0 && past_deadline()) return;
     Queued q = std::move(queue_.begin()->second);
     queue_.erase(queue_.begin());
     run_queued(q);
@@ -265,6 +266,8 @@ Status Stack::run_until(double t_end) {
   if (!std::isfinite(t_end)) return Status::invalid("run until: time must be finite");
   while (true) {
     process_due();
+    if (past_deadline())
+      return Status::timeout("the wall-clock deadline passed at t = " + text::fmt_double(sim_.simt(), 2) + " s");
     if (sim_.simt() + 0.5 * sim_.dt() > t_end) break;
     const double before = sim_.simt();
     sim_.step();
@@ -328,13 +331,21 @@ Result<std::string> Stack::find_scenario(const std::string& name) const {
                            " and its parent folders)");
 }
 
+Status Stack::check_read(const std::string& path, std::string_view what) const {
+  return rules_ ? rules_->check_read(path, what) : Status::ok();
+}
+
+Status Stack::check_read_folder(const std::string& dir, std::string_view what) const {
+  return rules_ ? rules_->check_read_folder(dir, what) : Status::ok();
+}
+
 Result<std::pair<std::string, ScnFile>> Stack::read_included(const std::string& path) const {
   if (include_depth_ >= kMaxIncludeDepth)
     return Status::invalid("scenario " + text::quoted(path) + ": more than " +
                            std::to_string(kMaxIncludeDepth) + " nested IC/PCALLs");
+  if (!path.empty() && path.front() == '/') SQUAWK_RETURN_IF_ERROR(check_read(path, "scenario"));
   SQUAWK_ASSIGN_OR_RETURN(std::string file, find_scenario(path));
-  if (read_filter_ && !read_filter_(file))
-    return Status::invalid("scenario " + text::quoted(file) + ": reading it is not allowed here (sandbox)");
+  SQUAWK_RETURN_IF_ERROR(check_read(file, "scenario"));
   SQUAWK_ASSIGN_OR_RETURN(ScnFile scn, read_scn(file));
   return std::make_pair(std::move(file), std::move(scn));
 }

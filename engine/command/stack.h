@@ -27,6 +27,7 @@
 // translator validates commands on a scratch copy.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -40,6 +41,7 @@
 #include "command/args.h"
 #include "command/navdb.h"
 #include "command/scn.h"
+#include "core/path_rules.h"
 #include "core/status.h"
 #include "sim/simulation.h"
 
@@ -92,9 +94,14 @@ class Stack {
   // find_scenario).
   void set_base_dir(std::string dir) { base_dir_ = std::move(dir); }
   const std::string& base_dir() const { return base_dir_; }
-  // IC / PCALL open only files this predicate accepts (a sandbox's read
-  // rule); none set: every file.
-  void set_read_filter(std::function<bool(const std::string& path)> f) { read_filter_ = std::move(f); }
+  // IC / PCALL files and PERF OPENAP folders are read only when `rules`
+  // allows it (a sandbox's read check; `rules` must outlive the stack);
+  // nullptr (the default): every file.
+  void set_path_rules(const paths::PathRules* rules) { rules_ = rules; }
+  // The read check of set_path_rules for a file, and for a folder whose
+  // files a loader reads (paths::PathRules::check_read_folder).
+  Status check_read(const std::string& path, std::string_view what) const;
+  Status check_read_folder(const std::string& dir, std::string_view what) const;
 
   // Runs a line now (one or more `;` commands, as typed by a user). Stops at
   // the first failing command (earlier ones keep their effect) and returns its
@@ -117,8 +124,11 @@ class Stack {
   void schedule(double t, std::string line);
 
   // Runs (queued commands, steps, conditions) up to t_end [s]; see above.
-  // Queued commands that fail are counted and logged, not returned.
+  // Queued commands that fail are counted and logged, not returned. With a
+  // deadline set, the clock is read every 64 queued commands and every step:
+  // past it, run_until returns kTimeout and the rest stay queued.
   Status run_until(double t_end);
+  void set_deadline(std::optional<std::chrono::steady_clock::time_point> d) { deadline_ = d; }
   // One step: due commands, Simulation::step, conditions.
   void step();
   // Runs the commands due at the current time without stepping.
@@ -196,7 +206,9 @@ class Stack {
   // Counts and logs a failure that belongs to no single command.
   void record_failure(const std::string& what);
 
-  std::function<bool(const std::string&)> read_filter_;
+  const paths::PathRules* rules_ = nullptr;
+  std::optional<std::chrono::steady_clock::time_point> deadline_;
+  bool past_deadline() const { return deadline_ && std::chrono::steady_clock::now() > *deadline_; }
   int include_depth_ = 0;  // PCALL nesting guard (not state: always 0 between calls)
 
   Tally tally_;

@@ -39,7 +39,9 @@ double Rng::uniform() { return static_cast<double>(next_u64() >> 11) * 0x1.0p-53
 
 int64_t Rng::uniform_int(int64_t lo, int64_t hi) {
   if (hi <= lo) return lo;
-  const uint64_t range = static_cast<uint64_t>(hi - lo) + 1;
+  // Unsigned arithmetic throughout: hi - lo overflows int64 for wide ranges
+  // (math.random(math.mininteger, math.maxinteger)); conversions are modular.
+  const uint64_t range = static_cast<uint64_t>(hi) - static_cast<uint64_t>(lo) + 1;
   if (range == 0) return static_cast<int64_t>(next_u64());  // full 64-bit range
   // Lemire's nearly-divisionless method.
   u128 m = static_cast<u128>(next_u64()) * range;
@@ -51,7 +53,7 @@ int64_t Rng::uniform_int(int64_t lo, int64_t hi) {
       l = static_cast<uint64_t>(m);
     }
   }
-  return lo + static_cast<int64_t>(m >> 64);
+  return static_cast<int64_t>(static_cast<uint64_t>(lo) + static_cast<uint64_t>(m >> 64));
 }
 
 double Rng::normal() {

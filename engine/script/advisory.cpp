@@ -14,9 +14,12 @@ Result<AdvisoryPhraser> AdvisoryPhraser::load(const std::string& path, const VmO
   p.vm_ = std::make_shared<Vm>(options);
   SQUAWK_RETURN_IF_ERROR(p.vm_->load_table(path, kModuleKey));
   lua_State* L = p.vm_->state();
-  lua_getfield(L, LUA_REGISTRYINDEX, kModuleKey);
-  const bool ok = lua_getfield(L, -1, "advise") == LUA_TFUNCTION;
-  lua_pop(L, 2);
+  bool ok = false;
+  SQUAWK_RETURN_IF_ERROR(catch_arg_errors(L, path + ": ", [&] {
+    lua_getfield(L, LUA_REGISTRYINDEX, kModuleKey);
+    ok = get_field(L, -1, "advise") == LUA_TFUNCTION;
+    lua_pop(L, 2);
+  }));
   if (!ok) return Status::invalid(path + ": the returned table has no function advise(d)");
   return p;
 }
@@ -24,8 +27,13 @@ Result<AdvisoryPhraser> AdvisoryPhraser::load(const std::string& path, const VmO
 Result<std::string> AdvisoryPhraser::phrase(const Advisory& a) {
   lua_State* L = vm_->state();
   const int top = lua_gettop(L);
-  lua_getfield(L, LUA_REGISTRYINDEX, kModuleKey);
-  lua_getfield(L, -1, "advise");
+  lua_pushcfunction(L, message_handler);
+  const int handler = lua_gettop(L);
+  SQUAWK_RETURN_IF_ERROR(catch_arg_errors(L, "advise(): ", [&] {
+    lua_getfield(L, LUA_REGISTRYINDEX, kModuleKey);
+    get_field(L, -1, "advise");
+    lua_remove(L, -2);
+  }));
   lua_createtable(L, 0, 7);
   lua_pushstring(L, a.callsign.c_str());
   lua_setfield(L, -2, "callsign");
@@ -50,8 +58,8 @@ Result<std::string> AdvisoryPhraser::phrase(const Advisory& a) {
   std::string out;
   Status st;
   const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
-  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-    st = Status::invalid(std::string("advise(): ") + lua_tostring(L, -1));
+  if (lua_pcall(L, 1, 1, handler) != LUA_OK) {
+    st = Status::invalid("advise(): " + error_text(L, -1));
   } else if (lua_type(L, -1) != LUA_TSTRING || lua_rawlen(L, -1) == 0) {
     st = Status::invalid(std::string("advise() must return a non-empty string, got ") +
                          luaL_typename(L, -1));

@@ -32,7 +32,7 @@ std::string show(lua_State* L, int idx) {
     return r;
   }
   size_t n = 0;
-  const char* s = luaL_tolstring(L, idx, &n);
+  const char* s = to_text(L, idx, &n);
   std::string r(s, n);
   lua_pop(L, 1);
   return r;

@@ -165,10 +165,11 @@ int l_evaluate(lua_State* L) {
   PolicyOptions opts;
   opts.seed = seed;
   opts.checkpoint = readable(L, field_string(L, 1, "checkpoint", ""), "checkpoint");
-  opts.gpt2.model = readable(L, field_string(L, 1, "model", ""), "model");
+  opts.gpt2.model = readable_folder(L, field_string(L, 1, "model", ""), "model");
   opts.gpt2_fresh = !opts.gpt2.model.empty();
   if (!opts.gpt2_fresh) opts.gpt2.model = "tiny";
   opts.gpt2.prompt = readable(L, field_string(L, 1, "prompt", ""), "prompt");
+  opts.reads = &Vm::of(L).rules();
   VmOptions vo = Vm::of(L).options();
   vo.out_dir.clear();
   auto made = make_policy(kind, sc, *envs, opts, vo);

@@ -9,6 +9,8 @@
 //   model:logits(text)           -> {logit, ...} at the last position; index id + 1
 //   model:hidden({{id, ...}, ...}) -> {{h, ...}, ...} final hidden state (after
 //       ln_f) of the last token of each sequence, C numbers each
+#include <algorithm>
+
 #include "gpt2/bundle.h"
 #include "gpt2/generate.h"
 #include "script/bindings.h"
@@ -45,9 +47,9 @@ void push_floats(lua_State* L, const float* v, size_t n) {
 std::vector<int> read_ints(lua_State* L, int idx, const char* name) {
   if (!lua_istable(L, idx)) throw ArgError(type_error(L, idx, name, "table of integers"));
   std::vector<int> out;
-  const lua_Integer n = luaL_len(L, idx);
+  const lua_Integer n = length(L, idx);
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, idx, i);
+    get_index(L, idx, i);
     int isnum = 0;
     const lua_Integer v = lua_tointegerx(L, -1, &isnum);
     lua_pop(L, 1);
@@ -66,9 +68,16 @@ int bounded_field(lua_State* L, int idx, const char* key, int fallback, int lo) 
   return static_cast<int>(v);
 }
 
+// Charges a forward pass over `tokens` tokens: 2 flops per parameter per
+// token, 1000 flops per Lua instruction's worth of budget.
+void charge_tokens(lua_State* L, const gpt2::Bundle& b, long long tokens) {
+  const long long per_token = std::max(1LL, b.model.config().num_params() / 500);
+  charge(L, tokens > (1LL << 62) / per_token ? (1LL << 62) : tokens * per_token);
+}
+
 int l_load(lua_State* L) {
   std::string dir = arg_string(L, 1, "dir");
-  if (dir != "tiny") dir = readable(L, dir, "model folder");
+  if (dir != "tiny") dir = readable_folder(L, dir, "model folder");
   const long long seed = opt_integer(L, 2, "seed", 0);
   if (seed < 0) throw ArgError("seed: expected an integer >= 0");
   auto b = gpt2::load_bundle(dir, static_cast<uint64_t>(seed));
@@ -116,6 +125,7 @@ int l_generate(lua_State* L) {
     opt.top_k = bounded_field(L, 3, "top_k", opt.top_k, 1);
     opt.seed = static_cast<uint64_t>(bounded_field(L, 3, "seed", 0, 0));
   }
+  charge_tokens(L, *b, static_cast<long long>(prompt.size()) + opt.max_tokens);  // bytes bound tokens
   auto out = gpt2::generate(b->model, tokenizer(*b), prompt, opt);
   check_status(out.status());
   lua_pushlstring(L, out->data(), out->size());
@@ -126,6 +136,7 @@ int l_logits(lua_State* L) {
   const auto* b = arg_object<gpt2::Bundle>(L, 1, kModelMt);
   auto ids = tokenizer(*b).encode(arg_string(L, 2, "text"));
   check_status(ids.status());
+  charge_tokens(L, *b, static_cast<long long>(ids->size()));
   std::vector<float> hidden, out;
   check_status(b->model.forward_last({}, {*ids}, hidden));
   check_status(b->model.lm_logits(hidden, out));
@@ -137,12 +148,15 @@ int l_hidden(lua_State* L) {
   const auto* b = arg_object<gpt2::Bundle>(L, 1, kModelMt);
   if (!lua_istable(L, 2)) throw ArgError(type_error(L, 2, "seqs", "table of token-id tables"));
   std::vector<std::vector<int>> seqs;
-  const lua_Integer n = luaL_len(L, 2);
+  const lua_Integer n = length(L, 2);
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, 2, i);
+    get_index(L, 2, i);
     seqs.push_back(read_ints(L, lua_gettop(L), "seqs[i]"));
     lua_pop(L, 1);
   }
+  long long tokens = 0;
+  for (const auto& q : seqs) tokens += static_cast<long long>(q.size());
+  charge_tokens(L, *b, tokens);
   std::vector<float> hidden;
   check_status(b->model.forward_last({}, seqs, hidden));
   const size_t C = static_cast<size_t>(b->model.config().n_embd);

@@ -63,7 +63,7 @@ nlohmann::json to_json(lua_State* L, int idx, int depth) {
       if (n > 0 && static_cast<size_t>(n) == keys) {
         nlohmann::json arr = nlohmann::json::array();
         for (lua_Integer i = 1; i <= n; ++i) {
-          lua_geti(L, idx, i);
+          get_index(L, idx, i);
           arr.push_back(to_json(L, -1, depth + 1));
           lua_pop(L, 1);
         }
@@ -90,7 +90,7 @@ llm::LlmConfig config_from_table(lua_State* L, int idx) {
   // The key from the environment goes only to the server the environment names.
   if (c.url != env_url) c.api_key.clear();
   c.model = field_string(L, idx, "model", c.model);
-  lua_getfield(L, idx, "api");
+  get_field(L, idx, "api");
   const bool api_given = !lua_isnil(L, -1);
   lua_pop(L, 1);
   if (api_given) {
@@ -147,9 +147,9 @@ std::vector<llm::Message> read_messages(lua_State* L, int idx) {
     return msgs;
   }
   if (lua_type(L, idx) != LUA_TTABLE) throw ArgError(type_error(L, idx, "messages", "string or table of {role=, content=}"));
-  const lua_Integer n = luaL_len(L, idx);
+  const lua_Integer n = length(L, idx);
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, idx, i);
+    get_index(L, idx, i);
     if (!lua_istable(L, -1)) throw ArgError("messages[" + std::to_string(i) + "]: expected {role=, content=}");
     msgs.push_back({field_string(L, -1, "role", "user"), field_string(L, -1, "content", "")});
     lua_pop(L, 1);
@@ -168,7 +168,7 @@ int l_chat(lua_State* L) {
     const std::string system = field_string(L, 3, "system", "");
     if (!system.empty()) req.messages.insert(req.messages.begin(), {"system", system});
     req.grammar = field_string(L, 3, "grammar", "");
-    lua_getfield(L, 3, "schema");
+    get_field(L, 3, "schema");
     if (lua_type(L, -1) == LUA_TSTRING) {
       req.json_schema = nlohmann::json::parse(lua_tostring(L, -1), nullptr, false);
       if (req.json_schema.is_discarded()) throw ArgError("schema: the string is not valid JSON");
@@ -176,7 +176,7 @@ int l_chat(lua_State* L) {
       req.json_schema = to_json(L, -1, 0);
     }
     lua_pop(L, 1);
-    lua_getfield(L, 3, "on_token");
+    get_field(L, 3, "on_token");
     if (lua_isfunction(L, -1)) token_fn = lua_gettop(L);
     else lua_pop(L, 1);
   }
@@ -219,9 +219,9 @@ int l_embed(lua_State* L) {
   auto* box = arg_object<ClientBox>(L, 1, kClientMt);
   luaL_checktype(L, 2, LUA_TTABLE);
   std::vector<std::string> texts;
-  const lua_Integer n = luaL_len(L, 2);
+  const lua_Integer n = length(L, 2);
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, 2, i);
+    get_index(L, 2, i);
     if (lua_type(L, -1) != LUA_TSTRING) throw ArgError("embed: texts[" + std::to_string(i) + "] is not a string");
     texts.emplace_back(lua_tostring(L, -1));
     lua_pop(L, 1);
@@ -254,6 +254,7 @@ int l_describe(lua_State* L) {
 int l_load_config(lua_State* L) {
   std::string path = arg_string(L, 1, "path");
   if (!path.empty() && path.front() != '/') path = paths::resource(path);
+  readable(L, path, "squawk.load_config");
   auto data = files::read(path);
   check_status(data.status());
   if (luaL_loadbufferx(L, data->data(), data->size(), ("@" + path).c_str(), "t") != LUA_OK)
@@ -265,7 +266,7 @@ int l_load_config(lua_State* L) {
     lua_setfield(L, -2, lib);
   }
   if (!lua_setupvalue(L, -2, 1)) lua_pop(L, 1);
-  if (lua_pcall(L, 0, 1, 0) != LUA_OK) throw ArgError(lua_tostring(L, -1));
+  if (lua_pcall(L, 0, 1, 0) != LUA_OK) throw ArgError(path + ": " + error_text(L, -1));
   if (!lua_istable(L, -1))
     throw ArgError(path + ": the file must return a table, it returned a " + luaL_typename(L, -1));
   return 1;

@@ -22,11 +22,11 @@ constexpr const char* kIndexMt = "squawk.rag.Index";
 
 std::vector<rag::Document> read_docs(lua_State* L, int opts) {
   std::vector<rag::Document> docs;
-  lua_getfield(L, opts, "docs");
+  get_field(L, opts, "docs");
   if (lua_istable(L, -1)) {
-    const lua_Integer n = luaL_len(L, -1);
+    const lua_Integer n = length(L, -1);
     for (lua_Integer i = 1; i <= n; ++i) {
-      lua_geti(L, -1, i);
+      get_index(L, -1, i);
       if (!lua_istable(L, -1)) throw ArgError("docs[" + std::to_string(i) + "]: expected {command=, text=}");
       docs.push_back({field_string(L, -1, "command", ""), field_string(L, -1, "text", "")});
       lua_pop(L, 1);
@@ -43,12 +43,12 @@ int l_index(lua_State* L) {
   std::vector<rag::Document> extra;
   std::string notes_path;
   if (has_opts) {
-    lua_getfield(L, 1, "notes");
+    get_field(L, 1, "notes");
     if (lua_type(L, -1) == LUA_TSTRING) notes_path = lua_tostring(L, -1);
     lua_pop(L, 1);
   }
   if (!notes_path.empty()) {
-    auto notes = rag::read_notes(notes_path);
+    auto notes = rag::read_notes(readable(L, notes_path, "squawk.rag.index{notes}"));
     check_status(notes.status());
     extra = std::move(notes).value();
   }

@@ -143,6 +143,7 @@ int l_new(lua_State* L) {
   if (opts) nav = field_string(L, 1, "navdata", nav);
   std::shared_ptr<const command::NavDb> db;
   if (!nav.empty()) {
+    check_status(Vm::of(L).rules().check_read_folder(nav, "squawk.sim.new{navdata}"));
     auto loaded = command::NavDb::load_cached(nav);
     check_status(loaded.status());
     db = *loaded;
@@ -151,8 +152,7 @@ int l_new(lua_State* L) {
   command::Stack* s = new_object<command::Stack>(L, kSimMt, static_cast<uint64_t>(seed));
   s->set_navdb(std::move(db));
   s->set_base_dir(dir);
-  const Vm* vm = &Vm::of(L);  // outlives the sim (its userdata dies with the state)
-  s->set_read_filter([vm](const std::string& p) { return vm->may_read(p); });
+  s->set_path_rules(&Vm::of(L).rules());  // the Vm outlives the sim (its userdata dies with the state)
   return 1;
 }
 

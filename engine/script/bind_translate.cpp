@@ -57,9 +57,9 @@ std::vector<std::string> string_list(lua_State* L, int idx, const char* what) {
   std::vector<std::string> out;
   if (lua_isnil(L, idx)) return out;
   if (!lua_istable(L, idx)) throw ArgError(std::string(what) + ": expected a list of strings");
-  const lua_Integer n = luaL_len(L, idx);
+  const lua_Integer n = length(L, idx);
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, idx, i);
+    get_index(L, idx, i);
     if (!lua_isstring(L, -1)) throw ArgError(std::string(what) + "[" + std::to_string(i) + "]: expected a string");
     out.emplace_back(lua_tostring(L, -1));
     lua_pop(L, 1);
@@ -69,11 +69,11 @@ std::vector<std::string> string_list(lua_State* L, int idx, const char* what) {
 
 translate::StaticWorld read_world(lua_State* L, int idx) {
   translate::StaticWorld w;
-  lua_getfield(L, idx, "aircraft");
+  get_field(L, idx, "aircraft");
   if (lua_istable(L, -1)) {
-    const lua_Integer n = luaL_len(L, -1);
+    const lua_Integer n = length(L, -1);
     for (lua_Integer i = 1; i <= n; ++i) {
-      lua_geti(L, -1, i);
+      get_index(L, -1, i);
       if (!lua_istable(L, -1)) throw ArgError("world.aircraft[" + std::to_string(i) + "]: expected a table");
       translate::AircraftView a;
       a.id = field_string(L, -1, "id", "");
@@ -85,7 +85,7 @@ translate::StaticWorld read_world(lua_State* L, int idx) {
       a.alt_m = units::ft_to_m(field_in(L, -1, "alt_ft", 0.0, -2000, 100000));
       a.cas_ms = units::kt_to_ms(field_in(L, -1, "cas_kt", 0.0, 0, 2000));
       a.mach = field_in(L, -1, "mach", 0.0, 0, 10);
-      lua_getfield(L, -1, "route");
+      get_field(L, -1, "route");
       a.route = string_list(L, lua_gettop(L), "route");
       lua_pop(L, 1);
       w.add_aircraft(std::move(a));
@@ -95,7 +95,7 @@ translate::StaticWorld read_world(lua_State* L, int idx) {
     throw ArgError("world.aircraft: expected a list of aircraft tables");
   }
   lua_pop(L, 1);
-  lua_getfield(L, idx, "waypoints");
+  get_field(L, idx, "waypoints");
   for (auto& name : string_list(L, lua_gettop(L), "world.waypoints")) w.add_waypoint(std::move(name));
   lua_pop(L, 1);
   return w;
@@ -135,7 +135,7 @@ constexpr const char* kTablesMt = "squawk.translate.Tables";
 
 // The string at t[i] of the table at idx, or an ArgError naming where.
 std::string string_at(lua_State* L, int idx, lua_Integer i, const std::string& where) {
-  lua_geti(L, idx, i);
+  get_index(L, idx, i);
   if (!lua_isstring(L, -1)) throw ArgError(where + "[" + std::to_string(i) + "]: expected a string");
   std::string v = lua_tostring(L, -1);
   lua_pop(L, 1);
@@ -144,10 +144,10 @@ std::string string_at(lua_State* L, int idx, lua_Integer i, const std::string& w
 
 // A list of strings at field `key` of the table at idx (nested: "a.b").
 std::vector<std::string> field_list(lua_State* L, int idx, const char* key, const char* sub = nullptr) {
-  lua_getfield(L, idx, key);
+  get_field(L, idx, key);
   if (sub) {
     if (!lua_istable(L, -1)) throw ArgError(std::string("lexicon.") + key + ": expected a table");
-    lua_getfield(L, -1, sub);
+    get_field(L, -1, sub);
     lua_remove(L, -2);
   }
   auto out = string_list(L, lua_gettop(L), (std::string("lexicon.") + key + (sub ? std::string(".") + sub : "")).c_str());
@@ -164,30 +164,30 @@ int l_tables(lua_State* L) {
   std::vector<translate::TypeName> types;
   std::vector<std::string> designators;
   std::vector<std::pair<std::string, char>> phonetic;
-  lua_getfield(L, 1, "airlines");
-  for (lua_Integer i = 1; lua_istable(L, -1) && i <= luaL_len(L, -1); ++i) {
-    lua_geti(L, -1, i);
+  get_field(L, 1, "airlines");
+  for (lua_Integer i = 1; lua_istable(L, -1) && i <= length(L, -1); ++i) {
+    get_index(L, -1, i);
     const int row = lua_gettop(L);
     const std::string where = "names.airlines[" + std::to_string(i) + "]";
     airlines.push_back({string_at(L, row, 1, where), string_at(L, row, 2, where)});
     lua_pop(L, 1);
   }
   lua_pop(L, 1);
-  lua_getfield(L, 1, "types");
-  for (lua_Integer i = 1; lua_istable(L, -1) && i <= luaL_len(L, -1); ++i) {
-    lua_geti(L, -1, i);
+  get_field(L, 1, "types");
+  for (lua_Integer i = 1; lua_istable(L, -1) && i <= length(L, -1); ++i) {
+    get_index(L, -1, i);
     const int row = lua_gettop(L);
     const std::string where = "names.types[" + std::to_string(i) + "]";
     types.push_back({string_at(L, row, 1, where), string_at(L, row, 2, where), string_at(L, row, 3, where)});
     lua_pop(L, 1);
   }
   lua_pop(L, 1);
-  lua_getfield(L, 1, "designators");
+  get_field(L, 1, "designators");
   designators = string_list(L, lua_gettop(L), "names.designators");
   lua_pop(L, 1);
   translate::Vocabulary vocabulary(field_list(L, 2, "keywords"), field_list(L, 2, "fillers"),
                                   field_list(L, 2, "spelling", "targets"), field_list(L, 2, "spelling", "common"));
-  lua_getfield(L, 2, "phonetic");
+  get_field(L, 2, "phonetic");
   if (!lua_istable(L, -1)) throw ArgError("lexicon.phonetic: expected a table {word = \"A\", ...}");
   const int ph = lua_gettop(L);
   lua_pushnil(L);
@@ -431,7 +431,7 @@ int l_best_match(lua_State* L) {
 int l_run(lua_State* L) {
   lua_settop(L, 2);
   push_graph_module(L);
-  lua_getfield(L, -1, "translate");
+  get_field(L, -1, "translate");
   lua_pushvalue(L, 1);
   lua_pushvalue(L, 2);
   lua_call(L, 2, 1);

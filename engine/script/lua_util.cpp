@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 
 #include "core/text.h"
 #include "script/vm.h"
@@ -79,14 +78,106 @@ std::string type_error(lua_State* L, int idx, const char* name, const char* expe
          expected + ", got " + luaL_typename(L, idx);
 }
 
-int traceback_handler(lua_State* L) {
-  const char* msg = lua_tostring(L, 1);
-  if (!msg) {
-    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
-    msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+namespace {
+
+// The text of the error object at index 1 (pushed), never raising.
+const char* push_error_text(lua_State* L) {
+  if (const char* msg = lua_tostring(L, 1)) return msg;
+  if (luaL_getmetafield(L, 1, "__tostring") != LUA_TNIL) {  // raw read: no __index involved
+    lua_pushvalue(L, 1);
+    if (lua_pcall(L, 1, 1, 0) == LUA_OK && lua_type(L, -1) == LUA_TSTRING) return lua_tostring(L, -1);
+    lua_pop(L, 1);
   }
-  luaL_traceback(L, L, msg, 1);
+  return lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+}
+
+int getfield_op(lua_State* L) {  // (t, k) -> t[k]
+  lua_gettable(L, 1);
   return 1;
+}
+
+int len_op(lua_State* L) {  // (v) -> #v as an integer
+  lua_pushinteger(L, luaL_len(L, 1));
+  return 1;
+}
+
+int tolstring_op(lua_State* L) {  // (v) -> tostring(v)
+  luaL_tolstring(L, 1, nullptr);
+  return 1;
+}
+
+// True when the value at idx is a table without a metatable: reads of it
+// run no metamethod.
+bool plain_table(lua_State* L, int idx) {
+  if (lua_type(L, idx) != LUA_TTABLE) return false;
+  if (!lua_getmetatable(L, idx)) return true;
+  lua_pop(L, 1);
+  return false;
+}
+
+// Calls `op` on the value at idx (and `key` when given, pushed by the caller
+// as the value on top) under lua_pcall + message_handler; leaves one result.
+void protected_op(lua_State* L, lua_CFunction op, int idx, bool with_key, const std::string& what) {
+  idx = lua_absindex(L, idx);
+  const int key = with_key ? lua_gettop(L) : 0;
+  lua_pushcfunction(L, message_handler);
+  const int handler = lua_gettop(L);
+  lua_pushcfunction(L, op);
+  lua_pushvalue(L, idx);
+  if (with_key) lua_pushvalue(L, key);
+  if (lua_pcall(L, with_key ? 2 : 1, 1, handler) != LUA_OK) {
+    std::string msg = error_text(L, -1);
+    lua_settop(L, with_key ? key - 1 : handler - 1);
+    throw ArgError(what + ": " + msg);
+  }
+  lua_remove(L, handler);
+  if (with_key) lua_remove(L, key);
+}
+
+}  // namespace
+
+int traceback_handler(lua_State* L) {
+  luaL_traceback(L, L, push_error_text(L), 1);
+  return 1;
+}
+
+int message_handler(lua_State* L) {
+  push_error_text(L);
+  return 1;
+}
+
+std::string error_text(lua_State* L, int idx) {
+  if (const char* s = lua_tostring(L, idx)) return s;
+  return std::string("(error object is a ") + luaL_typename(L, idx) + " value)";
+}
+
+int get_field(lua_State* L, int idx, const char* key) {
+  if (plain_table(L, idx)) return lua_getfield(L, idx, key);
+  idx = lua_absindex(L, idx);
+  lua_pushstring(L, key);
+  protected_op(L, getfield_op, idx, true, std::string("reading field '") + key + "'");
+  return lua_type(L, -1);
+}
+
+int get_index(lua_State* L, int idx, lua_Integer i) {
+  if (plain_table(L, idx)) return lua_geti(L, idx, i);
+  idx = lua_absindex(L, idx);
+  lua_pushinteger(L, i);
+  protected_op(L, getfield_op, idx, true, "reading entry " + std::to_string(i));
+  return lua_type(L, -1);
+}
+
+lua_Integer length(lua_State* L, int idx) {
+  if (plain_table(L, idx)) return static_cast<lua_Integer>(lua_rawlen(L, idx));
+  protected_op(L, len_op, idx, false, "reading the length");
+  const lua_Integer n = lua_tointeger(L, -1);
+  lua_pop(L, 1);
+  return n;
+}
+
+const char* to_text(lua_State* L, int idx, size_t* len) {
+  protected_op(L, tolstring_op, idx, false, "converting to text");
+  return lua_tolstring(L, -1, len);
 }
 
 double arg_number(lua_State* L, int idx, const char* name) {
@@ -157,7 +248,7 @@ void push_array(lua_State* L, const std::vector<double>& v) {
 
 double field_number(lua_State* L, int idx, const char* key, double fallback) {
   idx = lua_absindex(L, idx);
-  lua_getfield(L, idx, key);
+  get_field(L, idx, key);
   double v = fallback;
   if (!lua_isnil(L, -1)) {
     int ok = 0;
@@ -174,7 +265,7 @@ double field_number(lua_State* L, int idx, const char* key, double fallback) {
 
 std::string field_string(lua_State* L, int idx, const char* key, const std::string& fallback) {
   idx = lua_absindex(L, idx);
-  lua_getfield(L, idx, key);
+  get_field(L, idx, key);
   std::string v = fallback;
   if (!lua_isnil(L, -1)) {
     if (lua_type(L, -1) != LUA_TSTRING && lua_type(L, -1) != LUA_TNUMBER) {
@@ -192,7 +283,7 @@ std::string field_string(lua_State* L, int idx, const char* key, const std::stri
 
 bool field_boolean(lua_State* L, int idx, const char* key, bool fallback) {
   idx = lua_absindex(L, idx);
-  lua_getfield(L, idx, key);
+  get_field(L, idx, key);
   bool v = lua_isnil(L, -1) ? fallback : lua_toboolean(L, -1) != 0;
   lua_pop(L, 1);
   return v;
@@ -279,7 +370,7 @@ double field_in(lua_State* L, int idx, const char* key, double fallback, double 
 long long field_count(lua_State* L, int idx, const char* key, long long fallback, long long lo,
                       long long hi) {
   idx = lua_absindex(L, idx);
-  lua_getfield(L, idx, key);
+  get_field(L, idx, key);
   const bool absent = lua_isnil(L, -1);
   lua_pop(L, 1);
   if (absent) return fallback;
@@ -293,13 +384,13 @@ long long opt_count(lua_State* L, int idx, const char* name, long long fallback,
 }
 
 std::string readable(lua_State* L, const std::string& path, const char* what) {
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec) && !Vm::of(L).may_read(path))  // else the loader says "not found"
-    throw ArgError(std::string(what) + " '" + path +
-                   "': reading it is not allowed: the sandbox reads only the script's folder, squawk's "
-                   "scripts/prompts/scenarios/models and folders named with --allow-read DIR (or run "
-                   "with --unsafe)");
+  if (!path.empty()) check_status(Vm::of(L).rules().check_read(path, what));
   return path;
+}
+
+std::string readable_folder(lua_State* L, const std::string& dir, const char* what) {
+  if (!dir.empty()) check_status(Vm::of(L).rules().check_read_folder(dir, what));
+  return dir;
 }
 
 void charge(lua_State* L, long long instructions) { check_status(Vm::of(L).charge(instructions)); }

@@ -17,6 +17,7 @@
 #include <lua.hpp>
 
 #include "core/status.h"
+#include "script/vm.h"
 
 namespace squawk::script {
 
@@ -32,12 +33,18 @@ inline void check_status(const Status& st) {
 template <int (*Body)(lua_State*)>
 int guarded(lua_State* L) {
   char msg[2048];
+  Vm& vm = Vm::of(L);
   {
+    vm.enter_binding();
     try {
-      return Body(L);
+      const int n = Body(L);
+      if (vm.leave_binding()) return n;
+      std::strncpy(msg, vm.memory_message().c_str(), sizeof msg - 1);
     } catch (const std::exception& e) {
+      vm.leave_binding();
       std::strncpy(msg, e.what(), sizeof msg - 1);
     } catch (...) {
+      vm.leave_binding();
       std::strncpy(msg, "unknown C++ exception", sizeof msg - 1);
     }
   }
@@ -52,7 +59,41 @@ std::string type_error(lua_State* L, int idx, const char* name, const char* expe
 
 // Message handler for lua_pcall: the error message plus a traceback (a
 // non-string error object is described by its __tostring or its type).
+// Never raises: a __tostring that raises or returns a non-string is ignored.
 int traceback_handler(lua_State* L);
+// Message handler for lua_pcall: any error object becomes a string message,
+// as traceback_handler, without the traceback.
+int message_handler(lua_State* L);
+// The error object at `idx` (left by a pcall with either handler above, or
+// with none) as text: never null, whatever its type.
+std::string error_text(lua_State* L, int idx);
+
+// Protected reads of script values. Each runs the Lua operation inside
+// lua_pcall with message_handler, so a metamethod (__index, __len,
+// __tostring) that raises an error object of any type becomes an ArgError
+// (a C++ exception: the callers' destructors run) instead of a longjmp across
+// C++ frames or a panic outside any pcall. A table without a metatable is
+// read directly. Same stack effect and result as the call they replace.
+int get_field(lua_State* L, int idx, const char* key);  // lua_getfield
+int get_index(lua_State* L, int idx, lua_Integer i);   // lua_geti
+lua_Integer length(lua_State* L, int idx);              // luaL_len
+// luaL_tolstring: pushes the value's text and returns it.
+const char* to_text(lua_State* L, int idx, size_t* len);
+
+// Runs fn() outside any binding (C++ code reading a script's table); an
+// exception (the ArgError of a protected read) becomes an error Status
+// prefixed with `context`, and the stack is put back to its height at entry.
+template <class F>
+Status catch_arg_errors(lua_State* L, const std::string& context, F&& fn) {
+  const int top = lua_gettop(L);
+  try {
+    fn();
+    return Status::ok();
+  } catch (const std::exception& e) {
+    lua_settop(L, top);
+    return Status::invalid(context + e.what());
+  }
+}
 
 double arg_number(lua_State* L, int idx, const char* name);
 double opt_number(lua_State* L, int idx, const char* name, double fallback);
@@ -164,10 +205,13 @@ int finalize_object(lua_State* L);
 // __metatable and the checked finalizer. `methods` ends with {nullptr, nullptr}.
 void define_class(lua_State* L, const char* mt, const luaL_Reg* methods);
 
-// Returns `path` when the sandbox lets scripts read it (Vm::may_read) or it
-// does not exist (the loader then reports it missing), else ArgError naming
+// Returns `path` when the sandbox's read check lets scripts read it
+// (Vm::rules, paths::PathRules::check_read) or it is "", else ArgError naming
 // `what`, the path and --allow-read.
 std::string readable(lua_State* L, const std::string& path, const char* what);
+// As readable(), for a folder whose files a loader reads: the symbolic links
+// inside it are checked too (paths::PathRules::check_read_folder).
+std::string readable_folder(lua_State* L, const std::string& dir, const char* what);
 
 // Charges `instructions` of work done in C to the running VM's budget
 // (Vm::charge); ArgError when the budget is spent.

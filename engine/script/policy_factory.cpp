@@ -115,13 +115,18 @@ Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::Ho
 }
 
 Result<Gpt2Policy> gpt2_policy_from_checkpoint(const rl::PromptCheckpoint& ckpt, const std::string& prompt,
-                                               const VmOptions& vm) {
+                                               const VmOptions& vm, const paths::PathRules* reads) {
   rl::PromptCheckpoint meta = ckpt;
   meta.params.clear();
   meta.adam_m.clear();
   meta.adam_v.clear();
   if (!prompt.empty()) meta.prompt = paths::portable(prompt);
   if (meta.prompt.empty() || !files::exists(paths::resolve(meta.prompt))) meta.prompt = paths::portable(prompt_path(""));
+  if (reads) {
+    SQUAWK_RETURN_IF_ERROR(reads->check_read(paths::resolve(meta.prompt), "the checkpoint's prompt file"));
+    if (meta.source != "tiny")
+      SQUAWK_RETURN_IF_ERROR(reads->check_read_folder(paths::resolve(meta.source), "the checkpoint's model folder"));
+  }
   SQUAWK_ASSIGN_OR_RETURN(std::shared_ptr<PromptRenderer> r, PromptRenderer::load(paths::resolve(meta.prompt), vm));
   SQUAWK_ASSIGN_OR_RETURN(gpt2::Tokenizer tok, gpt2::Tokenizer::from_hf(meta.vocab_json, meta.merges_txt));
   SQUAWK_ASSIGN_OR_RETURN(Gpt2Policy g, assemble(std::move(meta), std::move(tok), r));
@@ -197,7 +202,7 @@ Result<MadePolicy> make_policy(const std::string& kind, const Scenario& sc, cons
     } else {
       const std::string path = o.checkpoint.empty() ? paths::resource(kShippedGpt2Checkpoint) : o.checkpoint;
       SQUAWK_ASSIGN_OR_RETURN(rl::PromptCheckpoint c, rl::load_prompt_checkpoint(path));
-      SQUAWK_ASSIGN_OR_RETURN(g, gpt2_policy_from_checkpoint(c, o.gpt2.prompt, vm));
+      SQUAWK_ASSIGN_OR_RETURN(g, gpt2_policy_from_checkpoint(c, o.gpt2.prompt, vm, o.reads));
       m.label = "gpt2 (" + path + "; " + g.meta.source;
       m.trained_on = c.progress.scenario;
     }

@@ -73,14 +73,19 @@ Result<Gpt2Policy> make_gpt2_policy(const Gpt2PolicyOptions& opts, const env::Ho
                                     const VmOptions& vm);
 // The checkpoint's policy: base rebuilt from its source, tail copied in.
 // `prompt` overrides the template recorded in the checkpoint when not empty.
+// With `reads`, the files the checkpoint names (its prompt template, its
+// model folder) must pass that read check (a sandboxed caller's rules).
 Result<Gpt2Policy> gpt2_policy_from_checkpoint(const rl::PromptCheckpoint& ckpt, const std::string& prompt,
-                                               const VmOptions& vm);
+                                               const VmOptions& vm, const paths::PathRules* reads = nullptr);
 
 struct PolicyOptions {
   std::string checkpoint;      // mlp, gpt2: "" = the shipped one
   uint64_t seed = 0;           // random: initialisation seed
   bool gpt2_fresh = false;     // gpt2: build gpt2.model with a fresh head instead of a checkpoint
   Gpt2PolicyOptions gpt2;      // gpt2: model (with gpt2_fresh), prompt, spec
+  // Sandboxed callers: the read check for files named inside checkpoints
+  // (nullptr: the caller trusts them, as the CLI does with its own flags).
+  const paths::PathRules* reads = nullptr;
 };
 
 struct MadePolicy {

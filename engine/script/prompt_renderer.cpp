@@ -18,7 +18,7 @@ Result<std::shared_ptr<PromptRenderer>> PromptRenderer::load(const std::string& 
   lua_pushcfunction(L, traceback_handler);
   const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK || lua_pcall(L, 0, 1, base + 1) != LUA_OK) {
-    std::string msg = lua_tostring(L, -1);
+    std::string msg = error_text(L, -1);
     lua_settop(L, base);
     return Status::invalid("prompt template " + path + ": " + msg);
   }
@@ -28,17 +28,21 @@ Result<std::shared_ptr<PromptRenderer>> PromptRenderer::load(const std::string& 
     return Status::invalid("prompt template " + path + " returned " + t +
                            ", expected a table with `prefix` and `render`");
   }
-  lua_getfield(L, -1, "prefix");
-  if (!lua_isstring(L, -1)) {
+  std::string problem;
+  SQUAWK_RETURN_IF_ERROR(catch_arg_errors(L, "prompt template " + path + ": ", [&] {
+    get_field(L, -1, "prefix");
+    if (!lua_isstring(L, -1)) {
+      problem = "field `prefix` must be a string";
+      return;
+    }
+    r->prefix_ = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    get_field(L, -1, "render");
+    if (!lua_isfunction(L, -1)) problem = "field `render` must be a function";
+  }));
+  if (!problem.empty()) {
     lua_settop(L, base);
-    return Status::invalid("prompt template " + path + ": field `prefix` must be a string");
-  }
-  r->prefix_ = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  lua_getfield(L, -1, "render");
-  if (!lua_isfunction(L, -1)) {
-    lua_settop(L, base);
-    return Status::invalid("prompt template " + path + ": field `render` must be a function");
+    return Status::invalid("prompt template " + path + ": " + problem);
   }
   r->render_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   lua_settop(L, base);
@@ -77,7 +81,7 @@ Result<std::string> PromptRenderer::render(const env::Observation& obs) {
   push_observation(L, obs);
   const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
   if (lua_pcall(L, 1, 1, base + 1) != LUA_OK) {
-    std::string msg = lua_tostring(L, -1);
+    std::string msg = error_text(L, -1);
     lua_settop(L, base);
     return Status::invalid("prompt template " + path_ + ": render failed: " + msg);
   }

@@ -34,7 +34,7 @@ void check_keys(lua_State* L, int idx, const char* table, const std::set<std::st
 // Pushes field `key` of the table at idx when it is a table; false (nothing
 // pushed) when nil; ArgError otherwise.
 bool push_table_field(lua_State* L, int idx, const char* key) {
-  lua_getfield(L, idx, key);
+  get_field(L, idx, key);
   if (lua_isnil(L, -1)) {
     lua_pop(L, 1);
     return false;
@@ -51,9 +51,9 @@ std::vector<double> number_list(lua_State* L, int idx, const char* key, std::vec
   idx = lua_absindex(L, idx);
   if (!push_table_field(L, idx, key)) return fallback;
   std::vector<double> out;
-  const lua_Integer n = luaL_len(L, -1);
+  const lua_Integer n = length(L, -1);
   for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, -1, i);
+    get_index(L, -1, i);
     int ok = 0;
     const double v = lua_tonumberx(L, -1, &ok);
     lua_pop(L, 1);
@@ -138,7 +138,7 @@ void read_policy(lua_State* L, int idx, const env::HorizontalCrConfig& env, rl::
   p.head = field_string(L, idx, "head", p.head);
   p.action_values = number_list(L, idx, "actions", p.action_values);
   p.init_log_std = field_number(L, idx, "init_log_std", p.init_log_std);
-  lua_getfield(L, idx, "mirror");
+  get_field(L, idx, "mirror");
   const int type = lua_type(L, -1);
   const bool mirror = type == LUA_TBOOLEAN && lua_toboolean(L, -1) != 0;
   lua_pop(L, 1);
@@ -208,7 +208,7 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
     double r = 0.0;
     const Vm::Call budget(Vm::of(S));  // a fresh instruction budget
     if (lua_pcall(S, 1, 1, handler) != LUA_OK) {
-      if (status->is_ok()) status->operator=(Status::invalid(std::string("reward function: ") + lua_tostring(S, -1)));
+      if (status->is_ok()) status->operator=(Status::invalid("reward function: " + error_text(S, -1)));
     } else if (lua_type(S, -1) != LUA_TNUMBER) {
       if (status->is_ok())
         *status = Status::invalid(std::string("reward function returned ") + luaL_typename(S, -1) +
@@ -238,7 +238,7 @@ void read_scenario(lua_State* L, int top, Scenario& s) {
     read_env(L, -1, c);
     lua_pop(L, 1);
   }
-  lua_getfield(L, top, "reward");
+  get_field(L, top, "reward");
   if (lua_isfunction(L, -1)) {
     s.reward_status = std::make_shared<Status>();
     c.reward_fn = lua_reward(L, -1, s.vm, s.reward_status);

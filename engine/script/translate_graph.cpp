@@ -27,13 +27,14 @@ void push_request(lua_State* L, const GraphRequest& req) {
   }
 }
 
-// Appends the strings of the list t[key] (t at the stack top) to out.
+// Appends the strings of the list t[key] (t at the stack top) to out; reads
+// through the protected accessors (lua_util.h), so call it under catch_arg_errors.
 void read_lines(lua_State* L, const char* key, std::vector<std::string>& out) {
-  lua_getfield(L, -1, key);
+  get_field(L, -1, key);
   if (lua_istable(L, -1)) {
-    const lua_Integer n = luaL_len(L, -1);
+    const lua_Integer n = length(L, -1);
     for (lua_Integer i = 1; i <= n; ++i) {
-      lua_geti(L, -1, i);
+      get_index(L, -1, i);
       if (lua_isstring(L, -1)) out.emplace_back(lua_tostring(L, -1));
       lua_pop(L, 1);
     }
@@ -46,16 +47,18 @@ Result<translate::Translation> read_result(lua_State* L) {
   if (!lua_istable(L, -1))
     return Status::invalid("translation graph: translate() must return {commands = {...}} or {ask = \"...\"}");
   translate::Translation tr;
-  lua_getfield(L, -1, "ask");
-  if (lua_type(L, -1) == LUA_TSTRING) tr.ask = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  lua_getfield(L, -1, "error");
-  if (lua_type(L, -1) == LUA_TSTRING) tr.error = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  read_lines(L, "commands", tr.commands);
-  lua_getfield(L, -1, "confirm");
-  if (lua_istable(L, -1)) read_lines(L, "commands", tr.on_yes);
-  lua_pop(L, 1);
+  SQUAWK_RETURN_IF_ERROR(catch_arg_errors(L, "translation graph's result: ", [&] {
+    get_field(L, -1, "ask");
+    if (lua_type(L, -1) == LUA_TSTRING) tr.ask = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    get_field(L, -1, "error");
+    if (lua_type(L, -1) == LUA_TSTRING) tr.error = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    read_lines(L, "commands", tr.commands);
+    get_field(L, -1, "confirm");
+    if (lua_istable(L, -1)) read_lines(L, "commands", tr.on_yes);
+    lua_pop(L, 1);
+  }));
   if (!tr.error.empty()) tr.commands.clear();  // a rejected candidate is never issued
   return tr;
 }
@@ -75,8 +78,7 @@ Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
   lua_pushlightuserdata(L, &ctx);
   const Vm::Call budget(vm);  // a fresh instruction budget
   if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-    std::string msg = std::string("translation graph (scripts/translate/graph.lua): ") +
-                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
+    std::string msg = "translation graph (scripts/translate/graph.lua): " + error_text(L, -1);
     lua_settop(L, top);
     return Status::internal(msg);
   }
@@ -117,27 +119,26 @@ Result<std::vector<rag::Document>> grammar_documents(Vm& vm) {
   lua_pushstring(L, "translate.grammar");
   const Vm::Call budget(vm);
   if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-    std::string msg = std::string("grammar (scripts/translate/grammar.lua): ") +
-                      (lua_isstring(L, -1) ? lua_tostring(L, -1) : "?");
-    lua_settop(L, top);
-    return Status::internal(msg);
-  }
-  lua_getfield(L, -1, "documents");
-  if (lua_pcall(L, 0, 1, 0) != LUA_OK || !lua_istable(L, -1)) {
-    std::string msg = std::string("grammar.documents(): ") + (lua_isstring(L, -1) ? lua_tostring(L, -1) : "no list");
+    std::string msg = "grammar (scripts/translate/grammar.lua): " + error_text(L, -1);
     lua_settop(L, top);
     return Status::internal(msg);
   }
   std::vector<rag::Document> docs;
-  const lua_Integer n = luaL_len(L, -1);
-  for (lua_Integer i = 1; i <= n; ++i) {
-    lua_geti(L, -1, i);
-    lua_getfield(L, -1, "command");
-    lua_getfield(L, -2, "text");
-    if (lua_isstring(L, -2) && lua_isstring(L, -1)) docs.push_back({lua_tostring(L, -2), lua_tostring(L, -1)});
-    lua_pop(L, 3);
-  }
+  const Status read = catch_arg_errors(L, "grammar.documents(): ", [&] {
+    get_field(L, -1, "documents");
+    if (lua_pcall(L, 0, 1, 0) != LUA_OK) throw ArgError(error_text(L, -1));
+    if (!lua_istable(L, -1)) throw ArgError("expected a list of {command=, text=}");
+    const lua_Integer n = length(L, -1);
+    for (lua_Integer i = 1; i <= n; ++i) {
+      get_index(L, -1, i);
+      get_field(L, -1, "command");
+      get_field(L, -2, "text");
+      if (lua_isstring(L, -2) && lua_isstring(L, -1)) docs.push_back({lua_tostring(L, -2), lua_tostring(L, -1)});
+      lua_pop(L, 3);
+    }
+  });
   lua_settop(L, top);
+  if (!read.is_ok()) return Status::internal(read.message());
   return docs;
 }
 

@@ -60,24 +60,14 @@ int text_only_load(lua_State* L) {
 
 // Raises the sandbox's error unless `path` may be opened with `mode`.
 void check_file_access(lua_State* L, const char* path, const char* mode) {
-  const Vm& vm = Vm::of(L);
-  if (std::strpbrk(mode, "wa+") != nullptr) {
-    const std::string& out = vm.options().out_dir;
-    if (out.empty())
-      luaL_error(L,
-                 "writing '%s' is not allowed: the sandbox writes only inside the output "
-                 "folder given with --out DIR (or run with --unsafe)",
-                 path);
-    if (!paths::is_within(path, out))
-      luaL_error(L, "writing '%s' is not allowed: it is outside the output folder '%s'", path,
-                 out.c_str());
-  } else if (!vm.may_read(path)) {
-    luaL_error(L,
-               "reading '%s' is not allowed: the sandbox reads only the script's folder, squawk's "
-               "scripts/prompts/scenarios/models and folders named with --allow-read DIR (or run "
-               "with --unsafe)",
-               path);
+  char msg[1024] = "";  // no C++ object may live across luaL_error's longjmp
+  {
+    const paths::PathRules& rules = Vm::of(L).rules();
+    const Status st = std::strpbrk(mode, "wa+") != nullptr ? rules.check_write(path, "io.open")
+                                                           : rules.check_read(path, "io.open");
+    if (!st.is_ok()) std::snprintf(msg, sizeof msg, "%s", st.message().c_str());
   }
+  if (msg[0]) luaL_error(L, "%s", msg);
 }
 
 // io.open(path, mode) through check_file_access; upvalue 1 is the original.
@@ -98,6 +88,108 @@ int checked_open(lua_State* L) {
 // upvalue 1 is the original.
 int checked_read(lua_State* L) {
   if (lua_type(L, 1) == LUA_TSTRING) check_file_access(L, lua_tostring(L, 1), "r");
+  const int n = lua_gettop(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, n, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+// __gc of a script table, installed by guarded_setmetatable; upvalue 1 is the
+// script's finalizer. Lua runs finalizers with hooks off, so the finalizer
+// runs in a fresh coroutine, which inherits the count hook: a loop in it is
+// charged to the budget and stopped. Its errors end it (as Lua ignores a
+// finalizer's errors).
+int gc_trampoline(lua_State* L) {
+  lua_State* T = lua_newthread(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_pushvalue(L, 1);
+  lua_xmove(L, T, 2);
+  int nres = 0;
+  lua_resume(T, L, 1, &nres);
+  return 0;
+}
+
+// setmetatable(t, mt); upvalue 1 is the original. When mt holds __gc, t gets
+// a copy of mt whose __gc is gc_trampoline around mt's finalizer and whose
+// __metatable is mt (getmetatable(t) still returns mt). The copies are kept
+// in the registry's weak set squawk.gc_shadows so t's metatable may be set again.
+int guarded_setmetatable(lua_State* L) {
+  lua_settop(L, 2);
+  bool has_gc = false;
+  if (lua_type(L, 2) == LUA_TTABLE) {
+    lua_pushliteral(L, "__gc");
+    has_gc = lua_rawget(L, 2) != LUA_TNIL;
+    lua_pop(L, 1);
+  }
+  lua_getfield(L, LUA_REGISTRYINDEX, "squawk.gc_shadows");
+  const int shadows = lua_gettop(L);
+  bool shadowed = false;  // t's current metatable is one of our copies
+  if (lua_type(L, 1) == LUA_TTABLE && lua_getmetatable(L, 1)) {
+    shadowed = lua_rawget(L, shadows) != LUA_TNIL;
+    lua_pop(L, 1);
+  }
+  if (!has_gc && !shadowed) {
+    lua_settop(L, 2);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, 2, 1);
+    return 1;
+  }
+  luaL_checktype(L, 1, LUA_TTABLE);
+  if (!has_gc) {  // replacing one of our copies: the original's checks, then set
+    luaL_argexpected(L, lua_isnoneornil(L, 2) || lua_istable(L, 2), 2, "nil or table");
+    lua_settop(L, 2);
+    lua_setmetatable(L, 1);
+    return 1;
+  }
+  lua_newtable(L);  // the copy
+  const int copy = lua_gettop(L);
+  lua_pushnil(L);
+  while (lua_next(L, 2)) {
+    lua_pushvalue(L, -2);
+    lua_insert(L, -2);
+    lua_rawset(L, copy);
+  }
+  lua_pushliteral(L, "__gc");
+  lua_pushliteral(L, "__gc");
+  if (lua_rawget(L, 2) == LUA_TFUNCTION) {
+    lua_pushcclosure(L, gc_trampoline, 1);
+  } else {
+    lua_pop(L, 1);
+    lua_pushboolean(L, 0);  // not a function: Lua would call nothing either
+  }
+  lua_rawset(L, copy);
+  lua_pushliteral(L, "__metatable");
+  if (lua_rawget(L, copy) == LUA_TNIL) {
+    lua_pop(L, 1);
+    lua_pushliteral(L, "__metatable");
+    lua_pushvalue(L, 2);
+    lua_rawset(L, copy);
+  } else {
+    lua_pop(L, 1);
+  }
+  if (!shadowed && luaL_getmetafield(L, 1, "__metatable") != LUA_TNIL)
+    return luaL_error(L, "cannot change a protected metatable");
+  lua_pushvalue(L, copy);
+  lua_pushboolean(L, 1);
+  lua_rawset(L, shadows);
+  lua_pushvalue(L, copy);
+  lua_setmetatable(L, 1);
+  lua_settop(L, 1);
+  return 1;
+}
+
+// string.find/match/gmatch/gsub; upvalue 1 is the original. Charges
+// (#s + 1) * (#pattern + 1) / 16 instructions first: a scan costs about
+// #pattern steps per subject byte, 16 of them per VM instruction. Backtracking
+// beyond that is bounded by --max-seconds (Watchdog).
+int charged_pattern(lua_State* L) {
+  const auto cost = static_cast<long long>((lua_rawlen(L, 1) + 1) * (lua_rawlen(L, 2) + 1) / 16);
+  char msg[256] = "";  // no C++ object may live across luaL_error's longjmp
+  if (const Status st = Vm::of(L).charge(cost); !st.is_ok())
+    std::snprintf(msg, sizeof msg, "%s", st.message().c_str());
+  if (msg[0]) return luaL_error(L, "%s", msg);
   const int n = lua_gettop(L);
   lua_pushvalue(L, lua_upvalueindex(1));
   lua_insert(L, 1);
@@ -140,6 +232,12 @@ int lua_file_searcher(lua_State* L) {
       const char* file = lua_tostring(L, -1);
       if (FILE* f = std::fopen(file, "r")) {
         std::fclose(f);
+        char refused[1024] = "";  // no C++ object may live across luaL_error's longjmp
+        {
+          const Status st = Vm::of(L).rules().check_read(file, "require");
+          if (!st.is_ok()) std::snprintf(refused, sizeof refused, "%s", st.message().c_str());
+        }
+        if (refused[0]) return luaL_error(L, "module '%s': %s", name, refused);
         if (luaL_loadfilex(L, file, "t") != LUA_OK)
           return luaL_error(L, "error loading module '%s' from '%s':\n\t%s", name, file,
                             lua_tostring(L, -1));
@@ -156,6 +254,37 @@ int lua_file_searcher(lua_State* L) {
 }
 
 }  // namespace
+
+void* vm_alloc(void* ud, void* ptr, size_t osize, size_t nsize) {
+  Vm& vm = *static_cast<Vm*>(ud);
+  const size_t old = ptr ? osize : 0;  // without ptr, osize names the object's type
+  if (nsize == 0) {
+    std::free(ptr);
+    vm.heap_ -= old;
+    return nullptr;
+  }
+  const long long limit = vm.options_.max_memory;
+  if (limit > 0 && nsize > old) {
+    const auto cap = static_cast<size_t>(limit + (vm.in_binding_ > 0 ? Vm::kBindingSlack : 0));
+    if (vm.heap_ - old + nsize > cap) {
+      vm.memory_refused_ = true;
+      return nullptr;
+    }
+  }
+  void* p = std::realloc(ptr, nsize);
+  if (p) vm.heap_ = vm.heap_ - old + nsize;
+  return p;
+}
+
+std::string Vm::memory_message() const {
+  return "stopped: the script's Lua memory reached " + std::to_string(options_.max_memory >> 20) +
+         " MiB, the limit per VM; raise it with --max-memory MB, or 0 for no limit";
+}
+
+bool Vm::leave_binding() {
+  --in_binding_;
+  return options_.max_memory <= 0 || heap_ <= static_cast<size_t>(options_.max_memory);
+}
 
 namespace {
 
@@ -222,7 +351,7 @@ Status Vm::charge(long long instructions) {
   return Status::ok();
 }
 
-Vm::Call::Call(Vm& vm) : vm_(vm) {
+Vm::Call::Call(Vm& vm) : vm_(vm), in_binding_(vm.in_binding_) {
   if (vm_.call_depth_++ == 0) {
     vm_.instructions_ = 0;
     vm_.stopped_ = false;
@@ -241,26 +370,21 @@ Vm::Call::Call(Vm& vm) : vm_(vm) {
 }
 
 Vm::Call::~Call() {
+  vm_.in_binding_ = in_binding_;
   if (--vm_.call_depth_ == 0) vm_.watchdog_.reset();
 }
 
 Vm& Vm::of(lua_State* L) { return **static_cast<Vm**>(lua_getextraspace(L)); }
 
-bool Vm::may_read(const std::string& path) const {
-  if (options_.unsafe) return true;
-  for (const auto& dir : readable_)
-    if (paths::is_within(path, dir)) return true;
-  return false;
-}
-
 Vm::Vm(VmOptions options) : options_(std::move(options)), rng_(options_.seed) {
-  for (const char* rel : {"scripts", "prompts", "scenarios", "models"})
-    readable_.push_back(paths::resource(rel));
+  if (options_.unsafe) rules_ = paths::PathRules::unrestricted();
+  for (const char* rel : {"scripts", "prompts", "scenarios", "models"}) rules_.allow_read(paths::resource(rel));
   for (const auto* list : {&options_.require_dirs, &options_.read_dirs})
-    readable_.insert(readable_.end(), list->begin(), list->end());
-  for (const auto* dir : {&options_.out_dir, &options_.navdata_dir})
-    if (!dir->empty()) readable_.push_back(*dir);
-  L_ = luaL_newstate();
+    for (const auto& dir : *list) rules_.allow_read(dir);
+  for (const auto* dir : {&options_.out_dir, &options_.navdata_dir}) rules_.allow_read(*dir);
+  rules_.allow_write(options_.out_dir);
+  L_ = lua_newstate(vm_alloc, this);
+  if (!L_) throw std::bad_alloc();
   *static_cast<Vm**>(lua_getextraspace(L_)) = this;
   open_sandbox();
   bind_all(L_);
@@ -275,7 +399,12 @@ Vm::Vm(VmOptions options) : options_(std::move(options)), rng_(options_.seed) {
 }
 
 Vm::~Vm() {
-  if (L_) lua_close(L_);
+  if (!L_) return;
+  {
+    // The finalizers lua_close runs are bounded like a call (see the contract).
+    const Call last(*this);
+    lua_close(L_);
+  }
 }
 
 void Vm::open_sandbox() {
@@ -296,11 +425,28 @@ void Vm::open_sandbox() {
     const int g = lua_gettop(L);
     lua_pushcfunction(L, safe_print);
     lua_setfield(L, g, "print");
+    lua_newtable(L);  // squawk.gc_shadows: weak keys
+    lua_newtable(L);
+    lua_pushliteral(L, "k");
+    lua_setfield(L, -2, "__mode");
+    lua_setmetatable(L, -2);
+    lua_setfield(L, LUA_REGISTRYINDEX, "squawk.gc_shadows");
+    lua_getfield(L, g, "setmetatable");
+    lua_pushcclosure(L, guarded_setmetatable, 1);
+    lua_setfield(L, g, "setmetatable");
     set_forbidden(L, g, "_G", "dofile");
     set_forbidden(L, g, "_G", "loadfile");
     lua_getfield(L, g, "load");
     lua_pushcclosure(L, text_only_load, 1);
     lua_setfield(L, g, "load");
+
+    lua_getfield(L, g, "string");
+    for (const char* fn : {"find", "match", "gmatch", "gsub"}) {
+      lua_getfield(L, -1, fn);
+      lua_pushcclosure(L, charged_pattern, 1);
+      lua_setfield(L, -2, fn);
+    }
+    lua_pop(L, 1);
 
     lua_getfield(L, g, "os");
     for (const char* fn : {"execute", "exit", "remove", "rename", "tmpname", "setlocale"})
@@ -366,7 +512,7 @@ Status Vm::pcall(int nargs, int nresults) {
   const int rc = lua_pcall(L, nargs, nresults, base);
   lua_remove(L, base);
   if (rc == LUA_OK) return Status::ok();
-  std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error without message)";
+  std::string msg = rc == LUA_ERRMEM && memory_refused_ ? memory_message() : error_text(L, -1);
   lua_pop(L, 1);
   return Status::error(Code::kInvalidArgument, msg);
 }
@@ -418,7 +564,7 @@ Status Vm::run_file(const std::string& path, const std::vector<std::string>& arg
   lua_pushstring(L, paths::dirname(path).c_str());
   lua_seti(L, -2, 1);
   lua_pop(L, 1);
-  readable_.push_back(paths::dirname(path));
+  rules_.allow_read(paths::dirname(path));
 
   lua_createtable(L, static_cast<int>(args.size()), 1);
   lua_pushstring(L, path.c_str());

@@ -17,6 +17,13 @@
 // clock the same way (Watchdog); a call stuck that long inside one C function
 // (a pathological string pattern) ends the process with exit code 124. Once the budget is spent every thread of the
 // VM fails at its next instruction until the call ends.
+// Memory: options.max_memory caps the VM's Lua heap (lua_setallocf); an
+// allocation past it fails as Lua's "not enough memory", reported as the
+// limit. A binding's C++ body may go kBindingSlack past it (so its own pushes
+// never longjmp across C++ frames), then raises the limit's error on return.
+// Finalizers (__gc) of script tables run in a fresh coroutine, where the
+// count hook works (Lua turns hooks off in finalizers): they are charged to
+// the budget like any code, and ~Vm runs the last ones under a fresh budget.
 // Errors come back as Status with "file:line: message" and a traceback.
 //
 // Only files in engine/script/ include lua.h; other code sees lua_State as an
@@ -28,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "core/path_rules.h"
 #include "core/rng.h"
 #include "core/status.h"
 
@@ -48,6 +56,7 @@ struct VmOptions {
   std::string out_dir;  // the only folder files may be written to; "" = none
   long long max_instructions = 500'000'000;  // per call; 0 = no limit, < 0 refused
   double max_seconds = 0;                      // [s] wall clock per call; 0 = no limit
+  long long max_memory = 1024LL << 20;         // [bytes] Lua heap of the VM; 0 = no limit
   std::vector<std::string> require_dirs;       // extra folders for `require`
   std::vector<std::string> read_dirs;          // extra folders scripts may read (--allow-read)
   std::string navdata_dir;                     // BlueSky navdata, "" = none
@@ -88,11 +97,20 @@ class Vm {
   // The Vm that owns `L` (stored in the state's extra space).
   static Vm& of(lua_State* L);
 
-  // True when the sandbox lets scripts read `path`: it lies inside the
-  // folder of a script this Vm ran, the home's scripts/ prompts/ scenarios/
-  // models/, options.require_dirs, read_dirs, out_dir or navdata_dir (after
-  // resolving links). Always true with options.unsafe.
-  bool may_read(const std::string& path) const;
+  // The sandbox's path rules (paths::PathRules): reads inside the folder of
+  // a script this Vm ran, the home's scripts/ prompts/ scenarios/ models/,
+  // options.require_dirs, read_dirs, out_dir and navdata_dir; writes inside
+  // out_dir. Everything with options.unsafe.
+  const paths::PathRules& rules() const { return rules_; }
+  bool may_read(const std::string& path) const { return rules_.check_read(path, "file").is_ok(); }
+
+  // The message of the memory limit (options.max_memory).
+  std::string memory_message() const;
+  // Called by every binding around its C++ body (guarded<>): while one runs,
+  // allocations may go kBindingSlack past the memory limit. leave_binding
+  // returns false when the heap is past the limit.
+  void enter_binding() { ++in_binding_; }
+  bool leave_binding();
 
   // Charges `instructions` of work done in C to the current call's budget;
   // an error naming the limit when it is spent (the caller raises it).
@@ -108,7 +126,10 @@ class Vm {
 
    private:
     Vm& vm_;
+    int in_binding_;  // restored at the end: a binding left by a longjmp
   };
+
+  static constexpr long long kBindingSlack = 64LL << 20;  // [bytes]
 
  private:
   void open_sandbox();
@@ -119,8 +140,12 @@ class Vm {
   long long instructions_ = 0;  // spent in the current call
   int call_depth_ = 0;
   std::unique_ptr<Watchdog> watchdog_;  // the current call's, when max_seconds > 0
-  std::vector<std::string> readable_;  // folders for may_read
+  paths::PathRules rules_;
   bool stopped_ = false;  // the budget of the current call is spent
+  size_t heap_ = 0;       // [bytes] Lua heap in use
+  int in_binding_ = 0;    // binding bodies running
+  bool memory_refused_ = false;  // an allocation failed at the limit
+  friend void* vm_alloc(void* ud, void* ptr, size_t osize, size_t nsize);
   lua_State* L_ = nullptr;
   friend void count_hook(lua_State* L, ::lua_Debug* ar);
   friend int counted_coroutine(lua_State* L);

@@ -3,8 +3,11 @@
 #include <httplib.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <limits>
 
+#include "core/text.h"
 #include "serve/state_json.h"
 
 namespace squawk::serve {
@@ -99,18 +102,21 @@ void HttpServer::routes() {
   httplib::Server& s = *server_;
   const auto command_timeout = std::chrono::seconds(options_.command_timeout_s);
 
-  // Bound to loopback, the server answers only requests addressed to a
-  // loopback name, so a web page whose domain re-resolves to 127.0.0.1 (DNS
-  // rebinding) cannot read the state or send commands.
-  if (options_.host == "127.0.0.1" || options_.host == "localhost" || options_.host == "::1") {
-    s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response& res) {
-      std::string host = req.get_header_value("Host");
-      host = host.substr(0, host.rfind(':') == std::string::npos || host.back() == ']' ? host.size() : host.rfind(':'));
-      if (host == "127.0.0.1" || host == "localhost" || host == "[::1]") return httplib::Server::HandlerResponse::Unhandled;
-      fail(res, 403, "Host '" + req.get_header_value("Host") + "': this server answers 127.0.0.1 and localhost only");
-      return httplib::Server::HandlerResponse::Handled;
-    });
-  }
+  // The server answers only requests addressed to a loopback name or an
+  // allowed one, whatever it listens on, so a web page whose domain
+  // re-resolves to this machine (DNS rebinding) cannot read the state or
+  // send commands.
+  s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    std::string host = req.get_header_value("Host");
+    host = host.substr(0, host.rfind(':') == std::string::npos || host.back() == ']' ? host.size() : host.rfind(':'));
+    for (char& c : host) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (host == "127.0.0.1" || host == "localhost" || host == "[::1]") return httplib::Server::HandlerResponse::Unhandled;
+    for (const auto& name : options_.allowed_hosts)
+      if (text::iequals(host, name)) return httplib::Server::HandlerResponse::Unhandled;
+    fail(res, 403, "Host '" + req.get_header_value("Host") +
+                       "': this server answers 127.0.0.1, localhost and names given with --allow-host only");
+    return httplib::Server::HandlerResponse::Handled;
+  });
 
   s.Get("/api/state", [this](const httplib::Request&, httplib::Response& res) {
     res.set_header("Cache-Control", "no-store");
@@ -203,7 +209,11 @@ void HttpServer::routes() {
     if (!b.contains("id") || !b["id"].is_number_integer() || !b.contains("decision") || !b["decision"].is_string() ||
         (b["decision"] != "accept" && b["decision"] != "reject"))
       return fail(res, 400, "body: expected {\"id\": N, \"decision\": \"accept\" or \"reject\"}");
-    const int id = b["id"].get<int>();
+    const int64_t id64 = b["id"].get<int64_t>();
+    if (id64 < 0 || id64 > std::numeric_limits<int>::max())
+      return fail(res, 400, "body: \"id\" " + b["id"].dump() + " is not an advisory id (0.." +
+                                std::to_string(std::numeric_limits<int>::max()) + ")");
+    const int id = static_cast<int>(id64);
     const bool accept = b["decision"] == "accept";
     auto r = live_.call([id, accept](LiveSim& l) { return l.decide(id, accept, "controller"); },
                         std::chrono::seconds(options_.command_timeout_s));

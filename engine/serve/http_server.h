@@ -14,8 +14,9 @@
 //                        a line naming no aircraft may go to "selected")
 //   POST /api/advisory   {"id": n, "decision": "accept"|"reject"}
 //   POST /api/auto       {"on": true|false}  execute advisories automatically
-// Bound to loopback, only requests whose Host is 127.0.0.1, localhost or [::1]
-// are answered (403 otherwise: DNS rebinding). POST bodies must be application/json (a page from another origin cannot
+// Whatever address it listens on, only requests whose Host is 127.0.0.1,
+// localhost, [::1] or a name in allowed_hosts are answered (403 otherwise:
+// DNS rebinding). POST bodies must be application/json (a page from another origin cannot
 // send those without a preflight, which is never granted) and at most
 // max_body bytes; command text at most max_text characters. Replies are JSON
 // with "ok"; failures carry "message" and a 4xx/5xx status.
@@ -24,6 +25,7 @@
 #include <atomic>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "command/navdb.h"
 #include "core/status.h"
@@ -38,6 +40,7 @@ namespace squawk::serve {
 
 struct ServerOptions {
   std::string host = "127.0.0.1";  // listen address (all interfaces only when asked)
+  std::vector<std::string> allowed_hosts;  // Host names answered besides the loopback ones
   int port = 8080;                 // 0: any free port
   std::string web_dir;             // static files of the page
   size_t max_body = 16 * 1024;     // [bytes] request body limit

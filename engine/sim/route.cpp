@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/geo.h"
 #include "core/text.h"
@@ -19,6 +20,7 @@ std::string wp_error(const Waypoint& wp, const char* what) {
 Status not_in_route(std::string_view name) {
   return Status::not_found(std::string("waypoint ").append(text::quoted(name)).append(" is not in the route"));
 }
+constexpr double kUnknownLeg = std::numeric_limits<double>::quiet_NaN();
 Waypoint normalized(Waypoint wp, bool flyover_mode) {
   wp.name = text::upper(text::trim(wp.name));
   wp.flyover = wp.flyover || flyover_mode;
@@ -26,7 +28,27 @@ Waypoint normalized(Waypoint wp, bool flyover_mode) {
 }
 }  // namespace
 
+void Route::count(const Waypoint& wp, int delta) {
+  if ((names_[wp.name] += delta) == 0) names_.erase(wp.name);
+  if (wp.has_alt()) n_alt_ += delta;
+}
+
+void Route::place(int at, Waypoint wp) {
+  count(wp, 1);
+  wps_.insert(wps_.begin() + at, std::move(wp));
+  leg_.insert(leg_.begin() + at, kUnknownLeg);
+  if (at > 0) leg_[at - 1] = kUnknownLeg;
+}
+
+void Route::drop(int k) {
+  count(wps_[k], -1);
+  wps_.erase(wps_.begin() + k);
+  leg_.erase(leg_.begin() + k);
+  if (k > 0) leg_[k - 1] = kUnknownLeg;
+}
+
 int Route::find(std::string_view name) const {
+  if (!names_.contains(text::upper(text::trim(name)))) return -1;
   for (size_t k = 0; k < wps_.size(); ++k)
     if (text::iequals(wps_[k].name, name)) return static_cast<int>(k);
   return -1;
@@ -48,7 +70,7 @@ Status Route::validate(const Waypoint& wp) const {
 Status Route::add(Waypoint wp) {
   SQUAWK_RETURN_IF_ERROR(validate(wp));
   const int at = dest_.empty() ? size() : size() - 1;
-  wps_.insert(wps_.begin() + at, normalized(std::move(wp), flyover_mode_));
+  place(at, normalized(std::move(wp), flyover_mode_));
   if (active_ < 0) active_ = at;
   else if (active_ > at) ++active_;
   return Status::ok();
@@ -60,7 +82,7 @@ Status Route::insert_after(std::string_view ref, Waypoint wp) {
   if (k < 0) return not_in_route(ref);
   if (!dest_.empty() && k == size() - 1)
     return Status::invalid(std::string("waypoint ").append(text::quoted(ref)).append(" is the destination; nothing can follow it"));
-  wps_.insert(wps_.begin() + k + 1, normalized(std::move(wp), flyover_mode_));
+  place(k + 1, normalized(std::move(wp), flyover_mode_));
   if (active_ > k) ++active_;
   return Status::ok();
 }
@@ -69,7 +91,7 @@ Status Route::insert_before(std::string_view ref, Waypoint wp) {
   SQUAWK_RETURN_IF_ERROR(validate(wp));
   const int k = find(ref);
   if (k < 0) return not_in_route(ref);
-  wps_.insert(wps_.begin() + k, normalized(std::move(wp), flyover_mode_));
+  place(k, normalized(std::move(wp), flyover_mode_));
   if (active_ >= k) ++active_;
   return Status::ok();
 }
@@ -78,7 +100,7 @@ Status Route::remove(std::string_view name) {
   const int k = find(name);
   if (k < 0) return not_in_route(name);
   if (!dest_.empty() && k == size() - 1) dest_.clear();
-  wps_.erase(wps_.begin() + k);
+  drop(k);
   if (active_ > k) --active_;
   if (active_ >= size()) active_ = -1;
   return Status::ok();
@@ -86,6 +108,9 @@ Status Route::remove(std::string_view name) {
 
 void Route::clear() {
   wps_.clear();
+  names_.clear();
+  n_alt_ = 0;
+  leg_.clear();
   flyover_mode_ = false;
   active_ = -1;
   dest_.clear();
@@ -104,9 +129,10 @@ Status Route::set_dest(Waypoint dest) {
   SQUAWK_RETURN_IF_ERROR(validate(dest));
   Waypoint wp = normalized(std::move(dest), flyover_mode_);
   if (!dest_.empty()) {
-    wps_.back() = wp;
+    drop(size() - 1);
+    place(size(), wp);
   } else {
-    wps_.push_back(wp);
+    place(size(), wp);
     if (active_ < 0) active_ = size() - 1;
   }
   dest_ = wp.name;
@@ -122,11 +148,15 @@ Status Route::set_orig(Waypoint orig) {
 }
 
 Route::AltTarget Route::alt_target(int k) const {
+  if (n_alt_ == 0) return {kNoConstraint, 0.0};
   double x = 0.0;
   for (int j = k; j >= 0 && j < size(); ++j) {
     if (wps_[j].has_alt()) return {wps_[j].alt, x};
-    if (j + 1 < size())
-      x += units::nm_to_m(geo::qdrdist(wps_[j].lat, wps_[j].lon, wps_[j + 1].lat, wps_[j + 1].lon).dist_nm);
+    if (j + 1 < size()) {
+      if (std::isnan(leg_[j]))
+        leg_[j] = units::nm_to_m(geo::qdrdist(wps_[j].lat, wps_[j].lon, wps_[j + 1].lat, wps_[j + 1].lon).dist_nm);
+      x += leg_[j];
+    }
   }
   return {kNoConstraint, 0.0};
 }

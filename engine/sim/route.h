@@ -24,6 +24,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "core/status.h"
@@ -102,7 +103,17 @@ class Route {
 
  private:
   Status validate(const Waypoint& wp) const;
+  // Every change of wps_ goes through these: they keep the indexes below.
+  void place(int at, Waypoint wp);
+  void drop(int k);
+  void count(const Waypoint& wp, int delta);
   std::vector<Waypoint> wps_;
+  // Indexes that keep ADDWPT bursts linear: waypoints per (upper-case) name,
+  // waypoints with an altitude constraint, and leg k -> k+1 lengths [m]
+  // (NaN until alt_target needs one; same size as wps_).
+  std::unordered_map<std::string, int> names_;
+  int n_alt_ = 0;
+  mutable std::vector<double> leg_;
   int active_ = -1;
   bool flyover_mode_ = false;
   std::string dest_;

@@ -20,9 +20,12 @@ Status check_point(double lat, double lon) {
     return Status::invalid("WIND: position must be a latitude in [-90, 90] and a longitude in [-180, 180]");
   return Status::ok();
 }
+// The strongest jet streams measured blow at about 250 kt.
+constexpr double kMaxWindKt = 400.0;
 Status check_sample(double dir, double spd) {
-  if (!std::isfinite(dir) || !std::isfinite(spd) || spd < 0.0)
-    return Status::invalid("WIND: expected a direction [deg] and a speed >= 0 [kt]");
+  if (!std::isfinite(dir) || !std::isfinite(spd) || spd < 0.0 || spd > units::kt_to_ms(kMaxWindKt))
+    return Status::invalid("WIND: expected a direction [deg] and a speed in [0, 400] kt, got " +
+                           std::to_string(units::ms_to_kt(spd)) + " kt");
   return Status::ok();
 }
 // North/east components of a wind from dir_deg at spd.

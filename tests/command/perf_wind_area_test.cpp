@@ -147,3 +147,33 @@ TEST_CASE("PERF switches the performance model of every aircraft") {
   CHECK(t.alt[0] == doctest::Approx(11060.0));
   CHECK(t.mach[0] <= 0.8 + 1e-9);
 }
+
+TEST_CASE("WIND refuses speeds physics does not give (issue 52); GETWIND stays in range") {
+  Stack s(0);
+  for (const char* bad : {"WIND 52 4 270 1e20", "WIND 52 4 270 401", "WIND 52 4 270 -1", "WIND 52 4 FL100 270 1e20",
+                          "WIND 52 4 270 inf"}) {
+    CAPTURE(bad);
+    CHECK(!s.exec(bad).is_ok());
+  }
+  REQUIRE(s.exec("WIND 52 4 FL100 270 400 FL300 90 10"));
+  for (const std::string alt : {"0", "FL450", "FL1000", "-2000", "100000"}) {
+    CAPTURE(alt);
+    auto r = s.exec("GETWIND 52 4 " + alt);
+    REQUIRE(r);
+    CHECK(r->find("WIND AT 52, 4: ") == 0);
+  }
+}
+
+TEST_CASE("a deadline stops a burst of queued commands inside one instant (--max-time)") {
+  Stack s(0);
+  REQUIRE(s.exec("CRE KL1 B738 52 4 90 FL200 250"));
+  for (int k = 0; k < 1000; ++k) s.schedule(0.0, "ECHO " + std::to_string(k));
+  s.set_deadline(std::chrono::steady_clock::now() - std::chrono::seconds(1));
+  const Status st = s.run_until(10.0);
+  CHECK(st.code() == Code::kTimeout);
+  CHECK(s.queued() > 900);  // stopped within the burst, the rest still queued
+  CHECK(s.sim().simt() == 0.0);
+  s.set_deadline(std::nullopt);
+  CHECK(s.run_until(1.0).is_ok());
+  CHECK(s.queued() == 0);
+}

@@ -25,12 +25,22 @@ expect "18 evaluate nan"     1 "field 'episodes': .* got NaN" -- "$sq" run $d/ev
 expect "6 --max-seconds"      1 "spin.lua:2: stopped: the call ran longer than 1.0+ s of wall-clock time" -- "$sq" run $d/spin.lua --max-seconds 1 --max-instructions 0
 expect "6 pattern in C"      124 "ran 2 s past --max-seconds 1 inside one C function" -- "$sq" run $d/pattern.lua --max-seconds 1
 expect "6 --max-seconds -1"  2 "--max-seconds expects seconds >= 0" -- "$sq" run $d/spin.lua --max-seconds -1
+expect "52 --max-memory"     1 "Lua memory reached 64 MiB, the limit per VM" -- "$sq" run $d/memory.lua --max-memory 64
+expect "52 --max-memory -1"  2 "--max-memory expects MiB" -- "$sq" run $d/memory.lua --max-memory -1
+expect "52 __gc loop"        1 "gc_loop.lua:6: stopped: the script ran 2000000 Lua instructions" -- "$sq" run $d/gc_loop.lua collect --max-instructions 2000000
+expect "52 __gc at exit"     0 "^script done$" -- "$sq" run $d/gc_loop.lua --max-instructions 2000000
+expect "52 __gc at exit, wall" 0 "^script done$" -- "$sq" run $d/gc_loop.lua --max-instructions 0 --max-seconds 1
+expect "52 record /dev/full" 1 "cannot write '/dev/full': No space left on device" -- "$sq" eval scenarios/horizontal_cr.lua --episodes 2 --record /dev/full
+fifo=$(mktemp -u); mkfifo "$fifo"; (cat "$fifo" >"$fifo.out" &)
+expect "52 record FIFO"      0 "success" -- "$sq" eval scenarios/horizontal_cr.lua --episodes 2 --record "$fifo"
+if [ -p "$fifo" ]; then echo "ok   52 FIFO stays a FIFO"; pass=$((pass + 1)); else echo "FAIL 52 FIFO was replaced"; fails=$((fails + 1)); fi
+rm -f "$fifo" "$fifo.out"
 expect "7 per call"          0 "^steps 3000$" -- "$sq" run $d/reward_per_call.lua $d/reward_scenario.lua "${lim[@]}"
 expect "7 refuse -1"         2 "--max-instructions expects a count >= 0" -- "$sq" run $d/coroutines.lua --max-instructions -1
 expect "18 scenario NaN"      0 "field 'intruders': expected a whole number .* got NaN" -- "$sq" run $d/load_scenario.lua $d/bad_numbers_scenario.lua
 expect "4 env.new self"      1 "more than 8 scenario files loading each other" -- "$sq" run $d/nested_env.lua
 expect "4 IC self"           1 "more than 16 nested IC/PCALLs" -- "$sq" scn $d/ic_self.scn
-expect "5 read refused"       1 "reading '/etc/passwd' is not allowed" -- "$sq" run $d/read_file.lua /etc/passwd
+expect "5 read refused"       1 "'/etc/passwd': reading it is not allowed" -- "$sq" run $d/read_file.lua /etc/passwd
 expect "5 --allow-read"      0 "^root:" -- "$sq" run $d/read_file.lua /etc/passwd --allow-read /etc
 expect "5 key hidden"        0 "^key=nil$" -- env SQUAWK_LLM_API_KEY=sekrit "$sq" run $d/read_file.lua /etc/passwd --allow-read /etc
 expect "5 --unsafe"          0 "^key=sekrit$" -- env SQUAWK_LLM_API_KEY=sekrit "$sq" run $d/read_file.lua /etc/passwd --unsafe

@@ -47,5 +47,5 @@ check(gm.most_frequent_share < 0.8, "shipped mirror gpt2 greedy share " .. gm.mo
 check(gm.actions["0"] > 0 and gm.actions["0.5"] > 0 and gm.actions["-0.5"] > 0, "mirror gpt2 turns both ways and holds")
 local bad_ok, bad = pcall(squawk.env.evaluate, { scenario = "scenarios/horizontal_cr.lua", policy = "constant:3" })
 check(not bad_ok and tostring(bad):find("%[%-1, 1%]"), tostring(bad))
-local ok, err = pcall(squawk.env.new, "no/such.lua")
+local ok, err = pcall(squawk.env.new, "scenarios/no/such.lua")
 check(not ok and tostring(err):find("no scenario file"), tostring(err))

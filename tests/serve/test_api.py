@@ -273,9 +273,43 @@ def test_usage(squawk):
         check(p.returncode == rc and text in p.stderr, f"serve {' '.join(args)} -> exit {p.returncode}, {p.stderr.strip()!r}")
 
 
+def raw_status(port, host_header, body=None):
+    s_ = socket.create_connection(("127.0.0.1", port), timeout=5)
+    if body is None:
+        req = b"GET /api/state HTTP/1.1\r\nHost: " + host_header + b"\r\nConnection: close\r\n\r\n"
+    else:
+        req = (b"POST /api/advisory HTTP/1.1\r\nHost: " + host_header + b"\r\nContent-Type: application/json\r\n"
+               b"Content-Length: " + str(len(body)).encode() + b"\r\nConnection: close\r\n\r\n" + body)
+    s_.sendall(req)
+    head = s_.recv(4096).split(b"\r\n", 1)[0]
+    s_.close()
+    return head
+
+
+def test_host_any_address(squawk):
+    """Issue 52: the Host check holds whatever --host is (0.0.0.0 included);
+    --allow-host adds names; advisory ids outside int range are refused."""
+    server, addr = start_server(squawk, CROSSING, ["--host", "0.0.0.0", "--allow-host", "squawk.lan,10.0.0.7"])
+    try:
+        port = int(addr.rsplit(":", 1)[1])
+        for host, want in [(b"evil.example", b" 403 "), (b"evil.example:%d" % port, b" 403 "),
+                           (b"127.0.0.1:%d" % port, b" 200 "), (b"localhost", b" 200 "),
+                           (b"Squawk.LAN:%d" % port, b" 200 "), (b"10.0.0.7", b" 200 "), (b"10.0.0.8", b" 403 ")]:
+            head = raw_status(port, host)
+            check(want in head, f"--host 0.0.0.0, Host {host!r}: {head!r}")
+        for bad in [b'{"id": 4294967297, "decision": "accept"}', b'{"id": -1, "decision": "accept"}',
+                    b'{"id": 18446744073709551615, "decision": "accept"}']:
+            head = raw_status(port, b"127.0.0.1", bad)
+            check(b" 400 " in head, f"advisory {bad!r} refused: {head!r}")
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
+
+
 def main():
     squawk = sys.argv[1]
     test_usage(squawk)
+    test_host_any_address(squawk)
     test_plain(squawk)
     test_teammate(squawk)
     print(f"{failures} failed")
