@@ -5,14 +5,14 @@
 // The flags every script-running subcommand takes (app/vm_options.h), and the
 // GPT-2 policy flags of eval, table3 and gpt2 imitate: appended to their help.
 #define SQUAWK_VM_FLAGS_HELP                                                              \
-  "\nScript flags: --seed N (the engine RNG), --max-instructions N and --max-seconds S\n" \
-  "(Lua caps), --navdata DIR (BlueSky navdata), --allow-read DIR[:DIR...] (more folders\n" \
-  "scripts may read), --out DIR (the folder scripts may write), --unsafe (no sandbox);\n" \
-  "docs/sandbox.md has the details.\n"
+  "\nScript flags: --seed N (the engine RNG), --max-instructions N, --max-seconds S and\n" \
+  "--max-memory MB (Lua caps; memory default 1024, 0 = none), --navdata DIR (BlueSky\n"   \
+  "navdata), --allow-read DIR[:DIR...] (more folders scripts may read), --out DIR (the\n"   \
+  "folder scripts may write), --unsafe (no sandbox); docs/sandbox.md has the details.\n"
 #define SQUAWK_GPT2_FLAGS_HELP                                                            \
   "\nGPT-2 policy flags: --model tiny|DIR, --model-seed N (tiny's random init), --prompt\n" \
   "FILE, --head action|lm, --blocks K (trainable last blocks), --chunk N (rows per\n"   \
-  "forward chunk).\n"
+  "forward chunk), --precision bf16|fp32 (GPT-2's matrix products).\n"
 
 namespace squawk::app {
 
@@ -335,7 +335,8 @@ const std::vector<Subcommand>& subcommands() {
        "                    [--value-iters N] [--branch-fraction X] [--mirror] [--stop-at N]\n"
        "                    [--eval-every N] [--eval-episodes N] [--validation-seed N]\n"
        "                    [--resume [--override] | --force] [--quiet] [--max-instructions N]\n"
-       "                    [--max-seconds S] [--navdata DIR] [--allow-read DIRS] [--unsafe]\n"
+       "                    [--max-seconds S] [--max-memory MB] [--navdata DIR] [--allow-read DIRS]\n"
+       "                    [--unsafe]\n"
        "       squawk train --out DIR --resume\n"
        "       squawk train SCENARIO.lua --out DIR --policy gpt2 [--model tiny|DIR]\n"
        "                    [--model-seed N] [--prompt FILE] [--head action|lm] [--blocks K]\n"

@@ -160,7 +160,7 @@ def check_workflow(browser, squawk, scenario):
         browser.press_enter()
         said = browser.wait_for("document.getElementById('reply-commands').textContent.includes('HDG') && "
                                 "document.getElementById('reply-commands').textContent", what="HDG KL204 120")
-        assert said == "HDG KL204 120", said
+        assert said == "HDG KL204 120 RIGHT", said
         browser.type_text("climb to flight level 250")
         browser.press_enter()
         said = browser.wait_for("document.getElementById('reply-commands').textContent.includes('ALT') && "
