@@ -44,7 +44,13 @@ local function score(path)
   return right / n, wrong / n, n
 end
 
-local function floors(path, min_right, max_wrong)
+-- needs_nav: the corpus names real fixes and airports, so its figures hold
+-- only with BlueSky's navdata (it is skipped, saying so, without it).
+local function floors(path, min_right, max_wrong, needs_nav)
+  if needs_nav and not has_nav then
+    print("skipped: " .. path .. " names real fixes and airports: its floors need BlueSky's navdata at " .. NAV)
+    return
+  end
   local ok, right, wrong, n = pcall(score, path)
   if not ok then
     local msg = tostring(right)
@@ -64,10 +70,10 @@ end
 
 -- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
 -- kept here after their first-sight figures were recorded, fixed by class.
-floors("tests/data/translate_round1.tsv", 0.95, 0.015)
-floors("tests/data/translate_round2.tsv", 0.70, 0.085)
-floors("tests/data/translate_round3.tsv", 0.82, 0.04)
-floors("tests/data/translate_round4.tsv", 0.66, 0.08)
+floors("tests/data/translate_round1.tsv", 0.95, 0.015, true)
+floors("tests/data/translate_round2.tsv", 0.70, 0.085, true)
+floors("tests/data/translate_round3.tsv", 0.82, 0.04, true)
+floors("tests/data/translate_round4.tsv", 0.66, 0.08, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
