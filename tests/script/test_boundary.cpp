@@ -1,6 +1,6 @@
-// Issue 52 point 2: no Lua value reaches C++ unprotected. Tables whose
-// __index raises, error objects of every type, integer extremes: each comes
-// back as a clean error message (no panic, no abort, no NULL string).
+// No Lua value reaches C++ unprotected: tables whose __index raises, error
+// objects of every type and integer extremes each come back as a clean error
+// message (no panic, no abort, no NULL string).
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -10,17 +10,14 @@
 #include "script/prompt_renderer.h"
 #include "script/scenario.h"
 #include "script/vm.h"
+#include "scratch_dir.h"
 
 using namespace squawk;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch() {
-  fs::path d = fs::temp_directory_path() / "squawk-test-boundary";
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch() { return test::scratch_dir("boundary"); }
 
 std::string write(const std::string& name, const std::string& text) {
   const fs::path p = scratch() / name;

@@ -8,16 +8,13 @@
 
 #include "core/rng.h"
 #include "script/vm.h"
+#include "scratch_dir.h"
 
 using namespace squawk;
 namespace fs = std::filesystem;
 
 namespace {
-fs::path scratch() {
-  fs::path d = fs::temp_directory_path() / "squawk-test-vm";
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch() { return test::scratch_dir("vm"); }
 void write(const fs::path& p, const std::string& s) { std::ofstream(p) << s; }
 }  // namespace
 
