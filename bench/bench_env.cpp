@@ -3,7 +3,7 @@
 // same-run reference: a plain re-statement of the same BlueSky update that
 // recomputes every cos/sin/atan2 the way the Python code does, and the real
 // BlueSky-Gym's measured 119-132 env steps/s on this machine
-// (facts/bluesky_gym_measured.md). One env step = 10 x 5 s sub-steps.
+// (docs/bluesky_facts.md §6). One env step = 10 x 5 s sub-steps.
 // Prints figures only; no timing is asserted anywhere.
 #include <chrono>
 #include <cmath>

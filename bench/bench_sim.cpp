@@ -337,7 +337,7 @@ int main(int argc, char** argv) {
         budget);
     std::printf("\nenv shape (6 aircraft, dt 5 s, CD off, HDG every 10 steps): %.3e steps/s = %.3f us/step (cpu/wall %.2f)\n",
                 r.per_cpu_s, 1e6 / r.per_cpu_s, r.cpu_share);
-    std::printf("  (BlueSky measured ~800 us per sim step for this env: facts/bluesky_gym_measured.md)\n");
+    std::printf("  (BlueSky measured ~800 us per sim step for this env: docs/bluesky_facts.md §6)\n");
   }
 
   // Same-run reference: one detection at 1000 aircraft, SoA loop vs per-pair trig path.

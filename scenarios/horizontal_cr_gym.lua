@@ -1,4 +1,4 @@
--- BlueSky-Gym HorizontalCREnv-v0 as it is (facts/bluesky.md §1): the agent
+-- BlueSky-Gym HorizontalCREnv-v0 as it is (docs/bluesky_facts.md §1): the agent
 -- turns the ownship by a continuous action in [-1, 1] x 45 deg at every
 -- 10 x 5 s step; reward = +1 on reaching the waypoint - 0.1 |drift| [rad]
 -- - 1 per intruder inside 5 NM at the step end; 300-step cap.

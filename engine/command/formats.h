@@ -2,7 +2,7 @@
 //
 // Each parser takes one token and returns the value or an error whose message
 // quotes the token and names the expected form. Accepted forms follow
-// BlueSky's bluesky/tools/misc.py and tools/position.py (facts/bluesky.md §2.2):
+// BlueSky's bluesky/tools/misc.py and tools/position.py (docs/bluesky_facts.md §2.2):
 //   altitude   FL300 / fl300 (FL + integer, at least 4 characters) or feet  -> [m]
 //   speed      knots CAS (250) or Mach: M.78, M0.78, M78, .78, 0.78          -> Speed
 //   vspeed     feet per minute                                             -> [m/s]

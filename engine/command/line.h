@@ -1,7 +1,7 @@
 // BlueSky's TrafScript line rules: splitting a line into commands and a
 // command into argument tokens.
 //
-// Rules (facts/bluesky.md §2.1):
+// Rules (docs/bluesky_facts.md §2.1):
 //  - `;` separates commands on one line (split_commands).
 //  - A token runs to the first whitespace or comma; a token that starts with
 //    ' or " runs to the closing quote (the quotes are dropped).

@@ -1,5 +1,5 @@
 // Reader of BlueSky scenario files (.scn), following stack/simstack.py readscn
-// (facts/bluesky.md §4.1):
+// (docs/bluesky_facts.md §4.1):
 //  - lines end in LF, CRLF or CR; each line is trimmed;
 //  - lines shorter than 10 characters or starting with '#' are skipped;
 //  - a line ending in '\' continues on the next kept line (joined by a space);

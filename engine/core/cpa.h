@@ -1,5 +1,5 @@
 // The horizontal closest-approach kernel of BlueSky's state-based conflict
-// detection (traffic/asas/statebased.py; facts/bluesky.md §3.2 steps 4-7),
+// detection (traffic/asas/statebased.py; docs/bluesky_facts.md §3.2),
 // the one copy sim/conflict (all pairs) and env/cpa (the ownship's pairs) use.
 //
 // Inputs in a local east-north plane: (dx, dy) = intruder position relative

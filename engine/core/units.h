@@ -1,5 +1,5 @@
 // Aviation units <-> SI. SI inside the engine; these convert at the edges.
-// Constants follow BlueSky's tools/aero.py (facts/bluesky.md §5).
+// Constants follow BlueSky's tools/aero.py (docs/bluesky_facts.md §5).
 #pragma once
 
 namespace squawk::units {

@@ -1,7 +1,7 @@
 // Closest point of approach and MVP resolution for one ownship/intruder pair,
 // in a local east-north plane, as BlueSky's state-based detection
 // (traffic/asas/statebased.py) and MVP (traffic/asas/mvp.py) compute them
-// (facts/bluesky.md §3.2-3.3). The closest approach is core/cpa.h's kernel,
+// (docs/bluesky_facts.md §3.2-3.3). The closest approach is core/cpa.h's kernel,
 // the one sim/conflict uses too.
 //
 // Inputs: p = intruder position relative to the ownship [m] (east, north);

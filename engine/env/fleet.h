@@ -1,6 +1,6 @@
 // Fleet: the few aircraft of one conflict-resolution episode, moved with
 // BlueSky's own update equations (bluesky/traffic/traffic.py update_airspeed,
-// update_groundspeed, update_pos; facts/bluesky.md §1.8), with no wind, no
+// update_groundspeed, update_pos; docs/bluesky_facts.md §1.8), with no wind, no
 // autopilot beyond "fly this heading at this speed", at a fixed time step.
 //
 // Per step of dt seconds, for each aircraft, in BlueSky's order:
@@ -12,7 +12,7 @@
 //      cos(lat_new) / R), R = 6371000 m.
 // The speed target is min(sel_tas, speed_cap) when speed_cap > 0: BlueSky's
 // OpenAP model puts aircraft at 0 m in its ground phase, whose A320 limit is
-// 89 m/s (facts/bluesky_gym_measured.md).
+// 89 m/s (docs/bluesky_facts.md §6).
 // This is a lean twin of the general simulator for the environment's hot path:
 // cos/sin of heading and latitude are carried along and rotated by the step's
 // latitude change instead of being recomputed (error ~1e-16 per step).

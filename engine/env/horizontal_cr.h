@@ -1,7 +1,7 @@
 // HorizontalCrEnv: the horizontal conflict-resolution environment of
 // BlueSky-Gym (HorizontalCREnv-v0) on squawk's kinematics, with two rule sets.
 //
-// Common to both (facts/bluesky.md §1.3-1.5):
+// Common to both (docs/bluesky_facts.md §1.3-1.5):
 //   ownship created at (start_lat, start_lon), heading 0, own_speed [m/s];
 //   each intruder by BlueSky's CRECONFS geometry relative to the ownship with
 //   integer draws dpsi [deg], cpa [NM], tlos [s] (bounds inclusive), same

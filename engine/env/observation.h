@@ -1,5 +1,5 @@
 // The 28-value observation of BlueSky-Gym's HorizontalCREnv-v0
-// (facts/bluesky.md §1.4), shared by both rule sets.
+// (docs/bluesky_facts.md §1.4), shared by both rule sets.
 //
 // Structured form: the eight named fields, each per intruder i (or one value
 // for the waypoint). Distances are scaled by 150 km and speeds by 150 m/s:

@@ -1,6 +1,6 @@
 // Per-step rewards of the horizontal conflict-resolution environment.
 //
-// gym rules: BlueSky-Gym HorizontalCREnv-v0 (facts/bluesky.md §1.6), once per
+// gym rules: BlueSky-Gym HorizontalCREnv-v0 (docs/bluesky_facts.md §1.6), once per
 //   env step:  reach (+1 the step the waypoint is reached)
 //            + drift_per_rad * |drift| [rad]
 //            + intrusion * (number of intruders inside the protected zone).

@@ -16,7 +16,7 @@
 // puts an aircraft at or below 75 ft in phase GD, where vmax becomes the type's
 // initial-climb speed (89 m/s for the A320) and axmax 2 m/s^2. BlueSky-Gym
 // creates its aircraft at altitude 0, so they slow from 150 to 89 m/s
-// (facts/bluesky_gym_measured.md). With `ground_cap` on, the same rule applies
+// (docs/bluesky_facts.md §6). With `ground_cap` on, the same rule applies
 // here to every class: alt <= ground_alt -> vmax = ground_vmax, axmax =
 // ground_axmax.
 #pragma once

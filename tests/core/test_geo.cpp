@@ -1,4 +1,4 @@
-// geo.h against BlueSky's formulas (facts/bluesky.md §1.4, §5). Reference
+// geo.h against BlueSky's formulas (docs/bluesky_facts.md §1.4, §5). Reference
 // values were computed with numpy from the formulas in _geo.py and the gym's
 // get_point_at_distance; the BlueSky-Gym trace gives one real waypoint.
 #include <doctest/doctest.h>
