@@ -10,7 +10,7 @@
 //    (DTMULT, NOISE), and the display's trail settings (TRAIL).
 // Counters (tally) and collected output are bookkeeping, not state.
 //
-// Line rules (BlueSky, facts §2.1): `;` splits commands; names are
+// Line rules (BlueSky, docs/bluesky_facts.md §2.1): `;` splits commands; names are
 // case-insensitive; an aircraft id may come before the command
 // ("KL204 ALT FL100"); a bare aircraft id means POS.
 //

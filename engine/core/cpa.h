@@ -1,6 +1,10 @@
-// The horizontal closest-approach kernel of BlueSky's state-based conflict
-// detection (traffic/asas/statebased.py; docs/bluesky_facts.md §3.2),
-// the one copy sim/conflict (all pairs) and env/cpa (the ownship's pairs) use.
+// The pair kernels of BlueSky's state-based conflict detection and MVP
+// resolution, the one copy that sim/ (every pair), env/ (the ownship's pairs)
+// and serve/ (the scope's CPA marks) use:
+//   horizontal()     closest approach and zone entry/exit
+//                    (traffic/asas/statebased.py; docs/bluesky_facts.md §3.2);
+//   mvp_horizontal() MVP's horizontal velocity change
+//                    (traffic/asas/mvp.py MVP(); docs/bluesky_facts.md §3.3).
 //
 // Inputs in a local east-north plane: (dx, dy) = intruder position relative
 // to the ownship [m], (du, dv) = intruder velocity minus ownship velocity
@@ -34,6 +38,40 @@ inline Horizontal horizontal(double dx, double dy, double du, double dv, double 
     h.t_out = h.tcpa + dt;
   }
   return h;
+}
+
+struct Push {
+  double e = 0.0;  // [m/s] east
+  double n = 0.0;  // [m/s] north
+};
+
+// BlueSky's dv_mvp for one pair, which the ownship subtracts from its ground
+// velocity: the intruder's displacement at CPA, (dx, dy) + (du, dv)·tcpa,
+// pushed out to `rpz` over |tcpa| (floored at 1 ms, so a CPA now gives a
+// large but finite push), with the erratum correction when the pair is
+// outside the zone and the 10 m head-on guard (which turns the displacement
+// perpendicular to the line of sight; the intrusion depth is taken before it,
+// as mvp.py does). dist = |(dx, dy)| [m] as the caller measured it (> 0);
+// tcpa [s]; rpz = zone radius times the resolution margin [m].
+inline Push mvp_horizontal(double dx, double dy, double dist, double du, double dv, double tcpa,
+                           double rpz) {
+  const double atcpa = std::max(std::fabs(tcpa), 1e-3);
+  double ce = dx + du * tcpa, cn = dy + dv * tcpa;
+  double dabs = std::hypot(ce, cn);
+  const double intrusion = rpz - dabs;
+  if (dabs <= 10.0) {
+    dabs = 10.0;
+    ce = dy / dist * 10.0;
+    cn = -dx / dist * 10.0;
+  }
+  double k;
+  if (rpz < dist && dabs < dist) {
+    const double erratum = std::cos(std::asin(rpz / dist) - std::asin(dabs / dist));
+    k = (rpz / erratum - dabs) / (atcpa * dabs);
+  } else {
+    k = intrusion / (atcpa * dabs);
+  }
+  return {k * ce, k * cn};
 }
 
 }  // namespace squawk::cpa

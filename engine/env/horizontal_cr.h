@@ -51,7 +51,7 @@
 
 #include "core/rng.h"
 #include "core/status.h"
-#include "env/cpa.h"
+#include "env/pair_geometry.h"
 #include "env/fleet.h"
 #include "env/observation.h"
 #include "env/reward.h"

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <utility>
 
+#include "core/cpa.h"
 #include "core/units.h"
 #include "sim/atmosphere.h"
 #include "sim/conflict.h"
@@ -14,8 +14,6 @@ namespace squawk::serve {
 namespace {
 
 using nlohmann::json;
-
-constexpr double kEarthRadius = 6371000.0;  // [m] geo.h's flat-earth radius
 
 json nan_to_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
@@ -57,15 +55,16 @@ json aircraft_json(const sim::Traffic& t, size_t i) {
 // present ground velocity, from the present state (flat earth around the
 // pair's mean latitude); the detector's tcpa may be up to asas_dt older.
 json cpa_points(const sim::Traffic& t, size_t a, size_t b) {
-  constexpr double kDeg = std::numbers::pi / 180.0;
+  using units::kDeg, units::kREarth;
   const double coslat = std::cos(0.5 * (t.lat[a] + t.lat[b]) * kDeg);
-  const double px = (t.lon[b] - t.lon[a]) * kDeg * kEarthRadius * coslat, py = (t.lat[b] - t.lat[a]) * kDeg * kEarthRadius;
-  const double vx = t.gseast[b] - t.gseast[a], vy = t.gsnorth[b] - t.gsnorth[a];
-  const double v2 = vx * vx + vy * vy;
-  const double tc = v2 > 1e-9 ? std::max(0.0, -(px * vx + py * vy) / v2) : 0.0;  // [s]
+  const cpa::Horizontal h = cpa::horizontal((t.lon[b] - t.lon[a]) * kDeg * kREarth * coslat,
+                                            (t.lat[b] - t.lat[a]) * kDeg * kREarth,
+                                            t.gseast[b] - t.gseast[a], t.gsnorth[b] - t.gsnorth[a], 0.0);
+  // A pair with (almost) no relative velocity is at its closest now.
+  const double tc = h.dv2 > 1e-6 ? std::max(0.0, h.tcpa) : 0.0;  // [s]
   auto at = [&](size_t i) {
-    return json::array({t.lat[i] + t.gsnorth[i] * tc / kEarthRadius / kDeg,
-                        t.lon[i] + t.gseast[i] * tc / (kEarthRadius * coslat) / kDeg});
+    return json::array({t.lat[i] + t.gsnorth[i] * tc / kREarth / kDeg,
+                        t.lon[i] + t.gseast[i] * tc / (kREarth * coslat) / kDeg});
   };
   return json::array({at(a), at(b)});
 }

@@ -103,7 +103,7 @@ void ConflictDetector::test_pair(const Traffic& t, const CdSettings& s, int i, i
   const double dalt = t.alt[i] - t.alt[j];
   const double dvs = t.vs[i] - t.vs[j];
   double tin_ver, tout_ver;
-  if (dvs == 0.0) {  // IEEE limits of the crossing times (facts §3.2 step 8)
+  if (dvs == 0.0) {  // IEEE limits of the crossing times (docs/bluesky_facts.md §3.2: both level)
     const bool inside = std::fabs(dalt) < h;
     tin_ver = inside ? -kInf : kInf;
     tout_ver = inside ? kInf : -kInf;

@@ -1,4 +1,4 @@
-// State-based conflict detection (BlueSky asas/statebased.py; facts §3.2).
+// State-based conflict detection (BlueSky asas/statebased.py; docs/bluesky_facts.md §3.2).
 //
 // For every ordered pair (i ownship, j intruder), with kwikqdrdist positions
 // (R = 6 371 000 m), ground velocities (gseast, gsnorth) and relative

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/cpa.h"
 #include "core/geo.h"
 #include "core/units.h"
 #include "sim/atmosphere.h"
@@ -24,7 +25,7 @@ struct Dv {
   double e, n, z;  // [m/s]
 };
 
-// Facts §3.3 MVP() for one conflict pair (own i, intruder j).
+// BlueSky's MVP() (docs/bluesky_facts.md §3.3) for one conflict pair (own i, intruder j).
 Dv mvp_pair(const Traffic& t, const ConflictPair& c, double rpz_m, double hpz_m, double dtlook) {
   const int i = c.own, j = c.intruder;
   const double qdr = c.qdr * kDeg;
@@ -32,27 +33,8 @@ Dv mvp_pair(const Traffic& t, const ConflictPair& c, double rpz_m, double hpz_m,
   const double drel_z = t.alt[j] - t.alt[i];
   const double vrel_e = t.gseast[j] - t.gseast[i], vrel_n = t.gsnorth[j] - t.gsnorth[i];
   const double vrel_z = t.vs[j] - t.vs[i];
-  // |tcpa| floored at 1 ms so an exact CPA-now gives a large but finite push.
-  const double atcpa = std::max(std::fabs(c.tcpa), 1e-3);
-  double dcpa_e = drel_e + vrel_e * c.tcpa, dcpa_n = drel_n + vrel_n * c.tcpa;
-  double dabs_h = std::hypot(dcpa_e, dcpa_n);
-  const double i_h = rpz_m - dabs_h;
-  if (dabs_h <= 10.0) {  // head-on guard: push sideways, perpendicular to drel
-    dabs_h = 10.0;
-    dcpa_e = drel_n / c.dist * 10.0;
-    dcpa_n = -drel_e / c.dist * 10.0;
-  }
-  Dv dv{};
-  if (rpz_m < c.dist && dabs_h < c.dist) {
-    const double erratum = std::cos(std::asin(rpz_m / c.dist) - std::asin(dabs_h / c.dist));
-    const double k = (rpz_m / erratum - dabs_h) / (atcpa * dabs_h);
-    dv.e = k * dcpa_e;
-    dv.n = k * dcpa_n;
-  } else {
-    const double k = i_h / (atcpa * dabs_h);
-    dv.e = k * dcpa_e;
-    dv.n = k * dcpa_n;
-  }
+  const cpa::Push h = cpa::mvp_horizontal(drel_e, drel_n, c.dist, vrel_e, vrel_n, c.tcpa, rpz_m);
+  Dv dv{h.e, h.n, 0.0};
   const bool moving_v = std::fabs(vrel_z) > 0.0;
   double i_v = moving_v ? hpz_m : hpz_m - std::fabs(drel_z);
   double tsol_v = moving_v ? std::fabs(drel_z / vrel_z) : c.tlos;
@@ -117,7 +99,7 @@ void MvpResolver::resolve(Traffic& t, const ConflictDetector& cd, const CdSettin
   }
 }
 
-// PASTCPA (facts §3.3, "Which values the aircraft follows").
+// PASTCPA (docs/bluesky_facts.md §3.3, "Which values the aircraft follows").
 void MvpResolver::resume(Traffic& t, const CdSettings& cds, const CrSettings& crs) {
   const int n = t.n();
   keep_.assign(n, -1);

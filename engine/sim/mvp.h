@@ -1,5 +1,5 @@
 // Modified Voltage Potential conflict resolution with PASTCPA resume
-// (BlueSky asas/mvp.py and asas/pastcpa.py; facts §3.3).
+// (BlueSky asas/mvp.py and asas/pastcpa.py; docs/bluesky_facts.md §3.3).
 //
 // Mode: BlueSky's default MVP switches, horizontal resolution with heading and
 // speed together. For each conflict pair (i, j) the displacement at CPA is
@@ -7,7 +7,7 @@
 // zone, the 10 m head-on guard) and both aircraft take their share:
 // dv_i -= dv_mvp summed over i's conflicts. The new ground velocity gives
 // cr_trk and cr_tas (clipped to the aircraft's [vmin, vmax] as TAS at its
-// altitude). The vertical component (facts §3.3 step 6, halved) gives cr_vs
+// altitude). The vertical component (docs/bluesky_facts.md §3.3, halved) gives cr_vs
 // (clipped to [vsmin, vsmax]); it is flown only when `vertical` is set
 // (BlueSky's RMETHV, off by default), with cr_alt = alt + cr_vs * max tcpa
 // (a simplification of BlueSky's level-off rule). Otherwise the vertical

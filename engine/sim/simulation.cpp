@@ -183,7 +183,7 @@ void Simulation::start_leg(int i, bool passing) {
   if (!passing) turn();
 }
 
-// BlueSky's ComputeVNAV (facts in simulation.h): descend from the top of
+// BlueSky's ComputeVNAV (simulation.h): descend from the top of
 // descent on the 3000 ft / 10 NM path (now, over the rest of the leg, when
 // already past it), climb at once at max(steepness * gs, what reaches the
 // constraint in time).

@@ -13,7 +13,7 @@
 //   heading (turn rate g0 tan(bank)/TAS with the new TAS, snapping to the
 //   target), vertical speed (altitude select with a time-based capture band
 //   of 1.05 dt max(|vs target|, |vs|), V/S ramped at 300 ft/min per s), then
-//   the flat-earth position update with R = 6 371 000 m (facts §1.8).
+//   the flat-earth position update with R = 6 371 000 m (docs/bluesky_facts.md §1.8).
 //   Wind (wind.h): above 50 ft the ground velocity is TAS along the heading
 //   plus the wind; the autopilot's selected heading is a track, flown with
 //   the wind-correction angle asin(Vw sin(trk - wind dir) / TAS), and a

@@ -1,4 +1,4 @@
-// Argument formats against BlueSky's tools/misc.py conversions (facts §2.2).
+// Argument formats against BlueSky's tools/misc.py conversions (docs/bluesky_facts.md §2.2).
 #include <doctest/doctest.h>
 
 #include "command/formats.h"

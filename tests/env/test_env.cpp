@@ -8,7 +8,7 @@
 
 #include "core/geo.h"
 #include "core/units.h"
-#include "env/cpa.h"
+#include "env/pair_geometry.h"
 #include "env/horizontal_cr.h"
 #include "env/observation.h"
 #include "env/reward.h"

@@ -1,4 +1,4 @@
-// Replays BlueSky-Gym's recorded episode (facts/bsgym_trace_seed42.csv: real
+// Replays BlueSky-Gym's recorded episode (../shared/facts/bsgym_trace_seed42.csv: real
 // BlueSky, random policy, seed 42) through the simulator: same initial
 // states, same HDG commands, 10 steps of dt 5 s per env step, ground cap on.
 // Every aircraft's position, heading and ground speed must follow BlueSky's.

@@ -25,7 +25,7 @@ struct RefConf {
 };
 
 // BlueSky statebased.py for one ordered pair, written from the formulas
-// (facts §3.2) with the trig kwikqdrdist and per-pair scalars: a different
+// (docs/bluesky_facts.md §3.2) with the trig kwikqdrdist and per-pair scalars: a different
 // code path from the detector's SoA loop.
 RefConf ref_pair(const Traffic& t, int i, int j, const CdSettings& s) {
   const geo::QdrDist qd = geo::kwikqdrdist(t.lat[i], t.lon[i], t.lat[j], t.lon[j]);

@@ -62,7 +62,7 @@ TEST_CASE("MVP moves two head-on aircraft apart and they resume after CPA") {
   CHECK(sim.cd().total_los() == 0);
 }
 
-TEST_CASE("MVP: resolution velocity of one pair follows the facts §3.3 formula") {
+TEST_CASE("MVP: resolution velocity of one pair follows the docs/bluesky_facts.md §3.3 formula") {
   Simulation sim = head_on(true);
   REQUIRE(sim.move("B", 52.05, 4.0 + 40.0 / 60.0 / std::cos(52.0 * units::kDeg)).is_ok());
   sim.step();  // detection + resolution at t = 0 on the initial state

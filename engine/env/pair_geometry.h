@@ -1,8 +1,7 @@
-// Closest point of approach and MVP resolution for one ownship/intruder pair,
-// in a local east-north plane, as BlueSky's state-based detection
-// (traffic/asas/statebased.py) and MVP (traffic/asas/mvp.py) compute them
-// (docs/bluesky_facts.md §3.2-3.3). The closest approach is core/cpa.h's kernel,
-// the one sim/conflict uses too.
+// One ownship/intruder pair in the ownship's local east-north plane: its
+// closest approach with BlueSky's conflict test, and MVP's velocity change
+// for the ownship (docs/bluesky_facts.md §3.2-3.3), both computed by the
+// pair kernels of core/cpa.h that sim/ uses too.
 //
 // Inputs: p = intruder position relative to the ownship [m] (east, north);
 //         w = intruder velocity minus ownship velocity [m/s] (east, north).
