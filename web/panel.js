@@ -45,11 +45,21 @@
     renderLog(s);
   }
 
+  // The traffic list: every aircraft up to MAX_ROWS; beyond that the
+  // selected one, those in conflict, then the others in the order of the
+  // state, MAX_ROWS in all, and a last row saying how many are not listed.
+  const MAX_ROWS = 200;
   function renderTraffic(s) {
     const conf = new Set();
     for (const c of s.conflicts) c.ids.forEach((id) => conf.add(id));
     for (const c of s.los) c.ids.forEach((id) => conf.add(id));
-    const rows = s.aircraft.map((a) => {
+    let list = s.aircraft;
+    if (list.length > MAX_ROWS) {
+      const rank = (a) => (a.id === Scope.selected ? 2 : 0) + (conf.has(a.id) ? 1 : 0);
+      list = list.filter((a) => rank(a) > 0).sort((p, q) => rank(q) - rank(p))
+        .concat(list.filter((a) => rank(a) === 0)).slice(0, MAX_ROWS);
+    }
+    const rows = list.map((a) => {
       const trend = a.vs_fpm > 100 ? "↑" : a.vs_fpm < -100 ? "↓" : "";
       const spd = a.sel_cas_kt != null ? Math.round(a.sel_cas_kt) : `M${a.sel_mach.toFixed(2)}`;
       const cls = [a.id === Scope.selected ? "selected" : "", conf.has(a.id) ? "conflict" : ""].join(" ");
@@ -59,6 +69,8 @@
         `<td class="cas">${Math.round(a.cas_kt)}</td><td class="sel">${spd}</td><td class="gs">${Math.round(a.gs_kt)}</td>` +
         `<td class="wpt">${esc(a.active_wpt || "")}</td></tr>`;
     });
+    if (list.length < s.aircraft.length)
+      rows.push(`<tr class="more"><td colspan="10">and ${s.aircraft.length - list.length} more (select one on the scope)</td></tr>`);
     $("traffic").tBodies[0].innerHTML = rows.join("");
   }
 
@@ -88,9 +100,9 @@
     const items = s.los.map((l) =>
       `<li class="los" data-ids="${esc(l.ids.join(" "))}"><b>${esc(l.ids.join(" – "))}</b> LOSS OF SEPARATION ` +
       `${l.dist_nm.toFixed(1)} NM ${Math.round(Math.abs(l.dalt_ft))} ft</li>`);
-    const when = (c) => c.tlos_s != null ? c.tlos_s : c.tcpa_s;
+    const when = (c) => c.tlos_s != null ? c.tlos_s : c.tcpa_s, lost = new Set(s.los.map((l) => l.ids.join()));
     for (const c of s.conflicts.slice().sort((p, q) => when(p) - when(q))) {
-      if (s.los.some((l) => l.ids.join() === c.ids.join())) continue;
+      if (lost.has(c.ids.join())) continue;
       const t = when(c);
       const cls = t <= 60 ? "urgent" : t <= 120 ? "soon" : "later";
       items.push(`<li class="${cls}" data-ids="${esc(c.ids.join(" "))}"><b>${esc(c.ids.join(" – "))}</b> ` +

@@ -225,18 +225,51 @@ const Scope = (() => {
   // Directions tried around an anchor, preferred first (up-right as blocks usually sit).
   const DIRS = [[1, -1], [1, 1], [-1, -1], [-1, 1], [1, 0], [-1, 0], [0, -1], [0, 1]];
   const RINGS = [14, 26, 42, 62, 88, 120, 160];  // [px] distances from the anchor
+  // The boxes laid down so far (symbols, labels, the tool bar), bucketed by
+  // a CELL px grid so that a candidate box is compared only with its neighbours.
+  const CELL = 64;
+  class Taken {
+    constructor() { this.cells = new Map(); this.stamp = 0; }
+    keys(b, f) {
+      const x0 = Math.floor((b.x - PAD) / CELL), x1 = Math.floor((b.x + b.w + PAD) / CELL);
+      const y0 = Math.floor((b.y - PAD) / CELL), y1 = Math.floor((b.y + b.h + PAD) / CELL);
+      for (let cx = x0; cx <= x1; cx++) for (let cy = y0; cy <= y1; cy++) f(cx * 65536 + cy);
+    }
+    add(b) {
+      const e = { b, seen: 0 };
+      this.keys(b, (k) => { const c = this.cells.get(k); if (c) c.push(e); else this.cells.set(k, [e]); });
+    }
+    // Overlap area of `box` with the boxes laid down, counted up to `limit`.
+    overlap(box, limit) {
+      const stamp = ++this.stamp;
+      let sc = 0;
+      this.keys(box, (k) => {
+        const c = this.cells.get(k);
+        if (!c || sc >= limit) return;
+        for (const e of c) {
+          if (e.seen === stamp) continue;
+          e.seen = stamp;
+          sc += overlapArea(box, e.b);
+          if (sc >= limit) return;
+        }
+      });
+      return sc;
+    }
+  }
+
   // The top-left of a w x h box at the first free candidate around (ax, ay);
   // when the rings are full, the free spot of a 10 px grid over the canvas
   // nearest the anchor (a longer leader line); when none is free, the ring
   // candidate with the least overlap (off-canvas counts as overlap).
+  // strict: a free ring candidate or null (in dense traffic only the three
+  // inner rings: a label stays next to its aircraft or is left out).
   function place(ax, ay, w, h, taken, strict = false) {
-    let best = null, bestScore = Infinity;
+    let best = null, bestScore = strict ? 1e-9 : Infinity;  // strict: any overlap rules a candidate out
     const score = (box, limit) => {
-      let sc = box.x < 0 || box.y < 0 || box.x + box.w > W || box.y + box.h > H ? box.w * box.h : 0;
-      for (const t of taken) { if (sc >= limit) break; sc += overlapArea(box, t); }
-      return sc;
+      const sc = box.x < 0 || box.y < 0 || box.x + box.w > W || box.y + box.h > H ? box.w * box.h : 0;
+      return sc >= limit ? sc : sc + taken.overlap(box, limit - sc);
     };
-    for (const r of RINGS) for (const [ux, uy] of DIRS) {
+    for (const r of strict && dense ? RINGS.slice(0, 3) : RINGS) for (const [ux, uy] of DIRS) {
       const d = ux && uy ? r * 0.75 : r;
       const x = ux > 0 ? ax + d : ux < 0 ? ax - d - w : ax - w / 2;
       const y = uy > 0 ? ay + d * 0.6 : uy < 0 ? ay - d * 0.6 - h : ay - h / 2;
@@ -263,18 +296,42 @@ const Scope = (() => {
     return [Math.ceil(w) + 6, lines.length * LINE_H + 4];
   }
 
+  // Zoomed out over dense traffic the scope thins its labels: while more
+  // aircraft and conflicts (CPA midpoints) are on the canvas than
+  // labelBudget() (one per 8000 px², at least 24), data blocks and conflict labels are placed only where a ring
+  // place next to their anchor is free, at most labelBudget() of them
+  // (dragged and selected blocks always); the symbols go small
+  // (DENSE_SIZE px) and trails are not drawn. Aircraft off the canvas get
+  // no symbol and no data block (unless dragged or selected), conflicts
+  // whose CPA midpoint is off the canvas no label.
+  const labelBudget = () => Math.max(24, Math.floor(W * H / 8000));
+  const DENSE_SIZE = 5, TILE = 100, TRIES = 3;
+  let dense = false;
+
   // Lays out every symbol and label of the frame (no drawing); the names of
   // navdata points come last and only where a ring place is free.
   function layout(status, navPts) {
     symbols = []; labels = [];
     const sel = state.aircraft.find((a) => a.id === selected);
+    const shown = [];  // [aircraft, x, y]: on the canvas, dragged or selected
     for (const a of state.aircraft) {
       const [x, y] = px(a.lat, a.lon);
-      symbols.push({ kind: "aircraft", key: a.id, x: x - 6, y: y - 6, w: 12, h: 12, cx: x, cy: y });
+      if (onCanvas(x, y) || offsets.has(a.id) || a.id === selected) shown.push([a, x, y]);
     }
+    // Conflicts whose CPA midpoint is on the canvas: [conflict, x, y].
+    const conflicts = [];
+    for (const c of state.conflicts) {
+      const [xa, ya] = px(...c.cpa[0]), [xb, yb] = px(...c.cpa[1]);
+      if (onCanvas((xa + xb) / 2, (ya + yb) / 2)) conflicts.push([c, (xa + xb) / 2, (ya + yb) / 2]);
+    }
+    const budget = labelBudget(), crowded = shown.length + conflicts.length > budget;
+    dense = crowded;
+    const half = crowded ? DENSE_SIZE / 2 + 1 : 6;
+    for (const [a, x, y] of shown)
+      symbols.push({ kind: "aircraft", key: a.id, x: x - half, y: y - half, w: 2 * half, h: 2 * half, cx: x, cy: y });
     for (const c of state.conflicts) c.cpa.forEach(([lat, lon], i) => {
       const [x, y] = px(lat, lon);
-      symbols.push({ kind: "cpa", key: `${c.ids.join("-")}:${i}`, x: x - 5, y: y - 5, w: 10, h: 10, cx: x, cy: y });
+      if (onCanvas(x, y)) symbols.push({ kind: "cpa", key: `${c.ids.join("-")}:${i}`, x: x - 5, y: y - 5, w: 10, h: 10, cx: x, cy: y });
     });
     const route = sel ? routeAhead(sel) : [];
     for (const w of route) {
@@ -282,28 +339,46 @@ const Scope = (() => {
       symbols.push({ kind: "waypoint", key: w.name, x: x - 4, y: y - 4, w: 8, h: 8, cx: x, cy: y });
     }
     // Labels also keep clear of the tool bar and of the legend when it is open.
-    const cr = canvas.getBoundingClientRect(), taken = symbols.slice();
+    const cr = canvas.getBoundingClientRect(), taken = new Taken();
+    for (const b of symbols) taken.add(b);
     for (const id of ["scope-tools", "legend"]) {
       const el = document.getElementById(id), r = el && !el.classList.contains("hidden") ? el.getBoundingClientRect() : null;
-      if (r && r.width) taken.push({ kind: id, x: (r.left - cr.left) / K, y: (r.top - cr.top) / K, w: r.width / K, h: r.height / K });
+      if (r && r.width) taken.add({ kind: id, x: (r.left - cr.left) / K, y: (r.top - cr.top) / K, w: r.width / K, h: r.height / K });
     }
-    const add = (l) => { labels.push(l); taken.push(l); };
+    const add = (l) => { labels.push(l); taken.add(l); };
+    let left = budget;  // labels still allowed when crowded
     // Data blocks: dragged ones first (they stay where they were put), then
-    // the selected aircraft, those in conflict, the rest.
+    // the selected aircraft, those in conflict, the rest. Crowded, the
+    // others are tried TILE px tile by tile, at most TRIES per tile, so that
+    // the labels spread over the canvas and the work stays bounded.
     const rank = (a) => (offsets.has(a.id) ? 4 : 0) + (a.id === selected ? 2 : 0) + (status.has(a.id) ? 1 : 0);
-    const order = state.aircraft.slice().sort((p, q) => rank(q) - rank(p));
-    for (const a of order) {
-      const [x, y] = px(a.lat, a.lon);
-      const text = blockLines(a), [w, h] = textBox(text, ["bold 12px monospace", "12px monospace"]);
-      const off = offsets.get(a.id);
-      const box = off ? { x: x + off[0], y: y + off[1], w, h } : place(x, y, w, h, taken);
-      add({ kind: "block", key: a.id, text, ...box, ax: x, ay: y });
+    let order = shown.slice().sort((p, q) => rank(q[0]) - rank(p[0]));
+    if (crowded) {
+      const tiles = new Map(), must = [];
+      for (const e of order) {
+        if (offsets.has(e[0].id) || e[0].id === selected) { must.push(e); continue; }
+        const k = Math.floor(e[1] / TILE) * 4096 + Math.floor(e[2] / TILE), t = tiles.get(k);
+        if (!t) tiles.set(k, [e]); else if (t.length < TRIES) t.push(e);
+      }
+      order = must.concat(...tiles.values());
     }
-    for (const c of state.conflicts) {
-      const [xa, ya] = px(...c.cpa[0]), [xb, yb] = px(...c.cpa[1]);
+    for (const [a, x, y] of order) {
+      const off = offsets.get(a.id), must = off || a.id === selected;
+      if (crowded && !must && left <= 0) break;
+      const text = blockLines(a), [w, h] = textBox(text, ["bold 12px monospace", "12px monospace"]);
+      const box = off ? { x: x + off[0], y: y + off[1], w, h } : place(x, y, w, h, taken, crowded && !must);
+      if (!box) continue;
+      add({ kind: "block", key: a.id, text, ...box, ax: x, ay: y });
+      if (!must) left--;
+    }
+    let tries = budget;  // conflict labels tried when crowded
+    for (const [c, ax, ay] of conflicts) {
+      if (crowded && (left <= 0 || tries-- <= 0)) break;
       const text = [conflictText(c)], [w, h] = textBox(text, ["bold 11px monospace"]);
-      add({ kind: "conflict", key: c.ids.join("-"), text, ...place((xa + xb) / 2, (ya + yb) / 2, w, h, taken),
-            ax: (xa + xb) / 2, ay: (ya + yb) / 2, color: urgency(c) });
+      const box = place(ax, ay, w, h, taken, crowded);
+      if (!box) continue;
+      add({ kind: "conflict", key: c.ids.join("-"), text, ...box, ax, ay, color: urgency(c) });
+      left--;
     }
     for (const wp of route) {
       const [x, y] = px(wp.lat, wp.lon);
@@ -375,30 +450,32 @@ const Scope = (() => {
     for (const w of route) { const [x, y] = px(w.lat, w.lon); ctx.strokeRect(x - 3, y - 3, 6, 6); }
   }
 
+  // Each pair's paths to their closest points of approach (dotted), the CPA
+  // crosses and the line between them: one dotted and one solid path for all.
   function drawConflicts() {
+    const byId = new Map(state.aircraft.map((a) => [a.id, a])), dotted = new Path2D(), solid = new Path2D();
     for (const c of state.conflicts) {
-      const A = state.aircraft.find((a) => a.id === c.ids[0]), B = state.aircraft.find((a) => a.id === c.ids[1]);
+      const A = byId.get(c.ids[0]), B = byId.get(c.ids[1]);
       if (!A || !B) continue;
-      ctx.strokeStyle = colors.conf; ctx.lineWidth = 1;
-      // Each aircraft's path to its closest point of approach, and the CPA points.
       [A, B].forEach((a, i) => {
         const [x0, y0] = px(a.lat, a.lon), [x1, y1] = px(c.cpa[i][0], c.cpa[i][1]);
-        ctx.setLineDash([2, 3]);
-        ctx.beginPath(); ctx.moveTo(x0, y0); ctx.lineTo(x1, y1); ctx.stroke();
-        ctx.setLineDash([]);
-        ctx.beginPath(); ctx.moveTo(x1 - 4, y1 - 4); ctx.lineTo(x1 + 4, y1 + 4); ctx.moveTo(x1 - 4, y1 + 4); ctx.lineTo(x1 + 4, y1 - 4); ctx.stroke();
+        dotted.moveTo(x0, y0); dotted.lineTo(x1, y1);
+        solid.moveTo(x1 - 4, y1 - 4); solid.lineTo(x1 + 4, y1 + 4); solid.moveTo(x1 - 4, y1 + 4); solid.lineTo(x1 + 4, y1 - 4);
       });
       const [xa, ya] = px(c.cpa[0][0], c.cpa[0][1]), [xb, yb] = px(c.cpa[1][0], c.cpa[1][1]);
-      ctx.beginPath(); ctx.moveTo(xa, ya); ctx.lineTo(xb, yb); ctx.stroke();
+      solid.moveTo(xa, ya); solid.lineTo(xb, yb);
     }
+    ctx.strokeStyle = colors.conf; ctx.lineWidth = 1;
+    ctx.setLineDash([2, 3]); ctx.stroke(dotted);
+    ctx.setLineDash([]); ctx.stroke(solid);
   }
 
-  function drawAircraft(a, status) {
+  function drawAircraft(a, status, withTrail = opts.trails) {
     const [x, y] = px(a.lat, a.lon);
     const color = status ? colors.conf : a.id === selected ? colors.sel : colors.ac;
     ctx.strokeStyle = color; ctx.fillStyle = color; ctx.lineWidth = 1.5;
     // History trail (the TRAIL button; on by default), oldest faintest, in the colour TRAIL acid set.
-    const tr = opts.trails ? trails.get(a.id) || [] : [];
+    const tr = withTrail ? trails.get(a.id) || [] : [];
     ctx.fillStyle = trailColors[state.trail.colour[a.id]] || color;
     tr.forEach(([lat, lon], i) => {
       const [tx, ty] = px(lat, lon);
@@ -418,6 +495,28 @@ const Scope = (() => {
     // Symbol: a square, filled when in loss of separation.
     if (status === "los") ctx.fillRect(x - 5, y - 5, 10, 10); else ctx.strokeRect(x - 4.5, y - 4.5, 9, 9);
     if (a.id === selected) { ctx.beginPath(); ctx.arc(x, y, 10, 0, 2 * Math.PI); ctx.stroke(); }
+  }
+
+  // Dense traffic: every aircraft on the canvas a small square with its
+  // speed vector, one path per colour (those in conflict or loss of
+  // separation red, the latter filled), no trails; the selected one as usual.
+  function drawDense(status) {
+    const h = DENSE_SIZE / 2, paths = { ac: new Path2D(), conf: new Path2D(), los: new Path2D() };
+    for (const a of state.aircraft) {
+      if (a.id === selected) continue;
+      const [x, y] = px(a.lat, a.lon);
+      if (!onCanvas(x, y)) continue;
+      const st = status.get(a.id), p = paths[st || "ac"];
+      const d = a.gs_kt * opts.vectorMin / 60 * view.ppnm, t = a.trk_deg * Math.PI / 180;
+      p.rect(x - h, y - h, DENSE_SIZE, DENSE_SIZE);
+      if (d > h) { p.moveTo(x, y); p.lineTo(x + d * Math.sin(t), y - d * Math.cos(t)); }
+    }
+    ctx.lineWidth = 1;
+    ctx.strokeStyle = colors.ac; ctx.stroke(paths.ac);
+    ctx.strokeStyle = colors.conf; ctx.stroke(paths.conf); ctx.stroke(paths.los);
+    ctx.fillStyle = colors.conf; ctx.fill(paths.los);
+    const sel = state.aircraft.find((a) => a.id === selected);
+    if (sel) drawAircraft(sel, status.get(sel.id), false);
   }
 
   // A placed label: dark box, text lines, and a leader line from its anchor when it sits away from it.
@@ -449,7 +548,8 @@ const Scope = (() => {
       const sel = state.aircraft.find((a) => a.id === selected);
       if (sel) drawRoute(sel);
       drawConflicts();
-      for (const a of state.aircraft) drawAircraft(a, status.get(a.id));
+      if (dense) drawDense(status);
+      else for (const a of state.aircraft) drawAircraft(a, status.get(a.id));
       for (const l of labels) {
         if (l.kind === "block") {
           const st = status.get(l.key);
@@ -479,13 +579,21 @@ const Scope = (() => {
         trails.set(a.id, tr);
       }
     }
-    for (const id of [...trails.keys()]) if (!s.aircraft.some((a) => a.id === id)) { trails.delete(id); offsets.delete(id); }
+    const alive = new Set(s.aircraft.map((a) => a.id));
+    for (const id of [...trails.keys()]) if (!alive.has(id)) { trails.delete(id); offsets.delete(id); }
     if (!view.fitted) fit();
     dirty = true;
   }
 
+  let frameMs = 0;  // [ms] the last draw (layout included)
   function frame() {
-    if (dirty) { dirty = false; draw(); refreshNav(); }
+    if (dirty) {
+      dirty = false;
+      const t0 = performance.now();
+      draw();
+      frameMs = performance.now() - t0;
+      refreshNav();
+    }
     requestAnimationFrame(frame);
   }
 
@@ -559,6 +667,9 @@ const Scope = (() => {
     labels: () => copy(labels), geo: () => ({ coast: geo.coast.length, fir: geo.fir.map((f) => f.name) }),
     nav: () => ({ kinds: navKinds(), airports: nav.airports.length, navaids: nav.navaids.length, fixes: nav.fixes.length }),
     zoom: (ppnm) => { view.ppnm = ppnm; dirty = true; }, symbols: () => copy(symbols), offset: (id) => offsets.get(id) || null,
+    center: (lat, lon) => { view.lat0 = lat; view.lon0 = lon; dirty = true; },
+    // The label budget, whether the last frame thinned labels, its draw time [ms].
+    density: () => ({ budget: labelBudget(), dense, frameMs }),
     set onSelect(f) { onSelect = f; }, get selected() { return selected; },
   };
 })();

@@ -13,7 +13,9 @@ using units::kREarth;
 
 namespace {
 // Python's floor-mod for the longitude wrap ((x + 180) % 360 - 180).
+// (fmod(a, m) is a itself when |a| < m: the common case skips the call.)
 double pymod(double a, double m) {
+  if (std::fabs(a) < m) return a < 0 ? a + m : a;
   double r = std::fmod(a, m);
   return (r < 0) ? r + m : r;
 }
@@ -38,10 +40,19 @@ double rwgs84(double sinlat, double coslat) {
 }
 }  // namespace
 
+LatTrig lat_trig(double lat_deg) {
+  const double r = lat_deg * kDeg;
+  return {r, std::sin(r), std::cos(r)};
+}
+
 QdrDist qdrdist(double lata, double lona, double latb, double lonb) {
+  return qdrdist(lat_trig(lata), lona, lat_trig(latb), lonb);
+}
+
+QdrDist qdrdist(const LatTrig& pa, double lona, const LatTrig& pb, double lonb) {
   constexpr double a = 6378137.0;
-  const double la = lata * kDeg, lb = latb * kDeg, dlon = (lonb - lona) * kDeg;
-  const double sa = std::sin(la), ca = std::cos(la), sb = std::sin(lb), cb = std::cos(lb);
+  const double la = pa.rad, lb = pb.rad, dlon = (lonb - lona) * kDeg;
+  const double sa = pa.sin, ca = pa.cos, sb = pb.sin, cb = pb.cos;
   double r;
   if (la * lb >= 0.0) {
     const double m = 0.5 * (la + lb);
@@ -95,7 +106,7 @@ double gc_bearing_deg(double lata, double lona, double latb, double lonb) {
 }
 
 double wrap360(double deg) {
-  double r = std::fmod(deg, 360.0);
+  double r = std::fabs(deg) < 360.0 ? deg : std::fmod(deg, 360.0);  // the same value, without the call
   if (r < 0) r += 360.0;
   if (r >= 360.0) r -= 360.0;  // fmod of -tiny + 360 rounds to 360
   return r;

@@ -28,6 +28,16 @@ LatLon kwikpos(double lat, double lon, double qdr_deg, double dist_nm);
 // latitude-weighted radius (crossing the equator). What BlueSky's autopilot
 // (LNAV) uses for the active waypoint.
 QdrDist qdrdist(double lata, double lona, double latb, double lonb);
+// A latitude with its sine and cosine, for callers that keep them: qdrdist
+// on LatTrig{lat * kDeg, sin, cos} of both points equals qdrdist on the
+// latitudes bit for bit.
+struct LatTrig {
+  double rad = 0.0;  // [rad] latitude
+  double sin = 0.0;  // [-] sin(rad)
+  double cos = 1.0;  // [-] cos(rad)
+};
+LatTrig lat_trig(double lat_deg);
+QdrDist qdrdist(const LatTrig& a, double lona, const LatTrig& b, double lonb);
 
 // Great-circle destination from (lat, lon) along bearing for dist_m metres.
 LatLon gc_destination(double lat, double lon, double bearing_deg, double dist_m);

@@ -221,6 +221,12 @@ void Simulation::compute_vnav(int i, double toalt, double xtoalt) {
   }
 }
 
+const geo::LatTrig& Simulation::wp_trig(int i, double lat_deg) {
+  geo::LatTrig& c = traf_.wp_trig[i];
+  if (c.rad != lat_deg * kDeg) c = geo::lat_trig(lat_deg);
+  return c;
+}
+
 // LNAV: fly to the active waypoint (WGS-84 bearing), switch at passage
 // (route.h). VNAV: between waypoints, fly wp_vs to the next altitude
 // constraint once past the top of descent (or at once when climbing).
@@ -240,7 +246,8 @@ void Simulation::update_autopilot() {
       t.lnav[i] = t.vnav[i] = 0;
       continue;
     }
-    geo::QdrDist qd = geo::qdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
+    const geo::LatTrig here{t.lat[i] * kDeg, t.sinlat[i], t.coslat[i]};
+    geo::QdrDist qd = geo::qdrdist(here, t.lon[i], wp_trig(i, wp->lat), wp->lon);
     t.dist2wp[i] = units::nm_to_m(qd.dist_nm);
     if (waypoint_reached(t.dist2wp[i], qd.qdr_deg, t.curlegdir[i], t.trk[i], t.gs[i], t.turndist[i])) {
       if (!r.advance()) {
@@ -248,7 +255,7 @@ void Simulation::update_autopilot() {
         continue;
       }
       wp = r.active_waypoint();
-      qd = geo::qdrdist(t.lat[i], t.lon[i], wp->lat, wp->lon);
+      qd = geo::qdrdist(here, t.lon[i], wp_trig(i, wp->lat), wp->lon);
       t.dist2wp[i] = units::nm_to_m(qd.dist_nm);
       start_leg(i, true);
     }
@@ -310,6 +317,12 @@ void Simulation::retarget(int i, const Atmos& a) {
   }
   t.tgt_tas[i] = cas_to_tas(std::clamp(cas, t.perf[i].vmin, vmax), a);
   t.tgt_tas_alt[i] = t.alt[i];
+}
+
+void Simulation::set_lat_cache(int i) {
+  const double r = traf_.lat[i] * kDeg;
+  traf_.coslat[i] = std::cos(r);
+  traf_.sinlat[i] = std::sin(r);
 }
 
 void Simulation::set_heading_cache(int i) {
@@ -379,7 +392,7 @@ void Simulation::update_kinematics() {
     double hdg_t = cr ? t.cr_trk[i] : t.sel_hdg[i];
     if (windy) hdg_t = wind_heading(hdg_t, t.tas[i], w);
     if (t.hdg[i] != hdg_t) {
-      const double rate = std::tan(t.bank[i]) * units::kG0 / std::max(t.tas[i], kTasEps) / kDeg;  // [deg/s]
+      const double rate = t.tan_bank[i] * units::kG0 / std::max(t.tas[i], kTasEps) / kDeg;  // [deg/s]
       double dh = geo::wrap180(hdg_t - t.hdg[i]);
       // a commanded direction (HDG ... LEFT/RIGHT) goes the long way round when it must
       const int turn = cr ? 0 : t.sel_turn[i];
@@ -425,7 +438,7 @@ void Simulation::update_kinematics() {
       t.trk[i] = t.hdg[i];
     }
     t.lat[i] += dt * t.gsnorth[i] / kREarth / kDeg;
-    t.coslat[i] = std::cos(t.lat[i] * kDeg);
+    set_lat_cache(i);
     double lon = t.lon[i] + dt * t.gseast[i] / t.coslat[i] / kREarth / kDeg;
     if (lon >= 180.0) lon -= 360.0;
     else if (lon < -180.0) lon += 360.0;

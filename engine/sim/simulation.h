@@ -270,6 +270,11 @@ class Simulation {
   void refresh_speed_outputs(int i, const Atmos& a);
   void retarget(int i, const Atmos& a);
   void set_heading_cache(int i);
+  // Sets coslat and sinlat of aircraft i from its latitude.
+  void set_lat_cache(int i);
+  // Latitude trigonometry of lat_deg (aircraft i's active waypoint), from
+  // Traffic::wp_trig while the latitude is the one it was computed for.
+  const geo::LatTrig& wp_trig(int i, double lat_deg);
 
   Traffic traf_;
   ConflictDetector cd_;

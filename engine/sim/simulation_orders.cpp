@@ -180,7 +180,7 @@ int Simulation::add_aircraft(std::string_view acid, std::string_view actype, dou
   t.sel_alt[i] = alt_m;
   t.sel_spd[i] = sel_spd;
   init_perf(i);
-  t.coslat[i] = std::cos(lat * kDeg);
+  set_lat_cache(i);
   set_heading_cache(i);
   t.gsnorth[i] = tas * t.cos_hdg[i];
   t.gseast[i] = tas * t.sin_hdg[i];
@@ -270,7 +270,7 @@ Status Simulation::move(std::string_view acid, double lat, double lon, std::opti
   Traffic& t = traf_;
   t.lat[i] = lat;
   t.lon[i] = lon;
-  t.coslat[i] = std::cos(lat * kDeg);
+  set_lat_cache(i);
   if (alt_m) t.alt[i] = t.sel_alt[i] = *alt_m;
   if (hdg_deg) {
     t.hdg[i] = t.trk[i] = t.sel_hdg[i] = geo::wrap360(*hdg_deg);
@@ -342,6 +342,7 @@ Status Simulation::set_bank(std::string_view acid, double bank_deg) {
   if (!std::isfinite(bank_deg) || bank_deg <= 0.0 || bank_deg >= 90.0)
     return bad(traf_.id[i], "bank angle " + num(bank_deg) + " deg is not in (0, 90) deg");
   traf_.bank[i] = bank_deg * kDeg;
+  traf_.tan_bank[i] = std::tan(traf_.bank[i]);
   return Status::ok();
 }
 

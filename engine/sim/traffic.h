@@ -18,6 +18,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/geo.h"
 #include "sim/openap_perf.h"
 #include "sim/performance.h"
 #include "sim/route.h"
@@ -39,6 +40,7 @@ struct Traffic {
   std::vector<double> gsnorth, gseast;  // [m/s]
   std::vector<double> vs;            // [m/s] current vertical speed
   std::vector<double> coslat;        // [-] cos(lat), kept current
+  std::vector<double> sinlat;        // [-] sin(lat), kept current with coslat
 
   // Autopilot selections (what the pilot flies when no resolution is active)
   std::vector<double> sel_hdg;       // [deg] selected heading/track
@@ -48,6 +50,7 @@ struct Traffic {
   std::vector<double> sel_spd;       // CAS [m/s] or Mach (is_mach), the selected speed
   std::vector<double> sel_vs;        // [m/s] selected |vertical speed|; 0 = class default
   std::vector<double> bank;          // [rad] bank angle used for turns (default 25 deg)
+  std::vector<double> tan_bank;      // [-] tan(bank), set with bank
   std::vector<uint8_t> lnav, vnav;   // 0/1 switches
   std::vector<Route> route;
 
@@ -86,6 +89,7 @@ struct Traffic {
 
   // Caches kept by Simulation::step (derived state, not observable):
   std::vector<double> sin_hdg, cos_hdg;  // [-] of hdg
+  std::vector<geo::LatTrig> wp_trig;   // latitude trigonometry of the autopilot's last waypoint (keyed by .rad)
   std::vector<double> tgt_tas;       // [m/s] TAS meant by sel_spd at tgt_tas_alt
   std::vector<double> tgt_tas_alt;   // [m] altitude at which tgt_tas was computed (NaN: stale)
   std::vector<double> tgt_tas_sel;   // [m] OpenAP: target altitude at which the limits were applied

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <initializer_list>
 
 #include "core/geo.h"
 #include "core/units.h"
@@ -73,4 +74,26 @@ TEST_CASE("unit conversions use BlueSky's constants") {
   // Turn rate at 89 m/s with 25 deg bank (bluesky_gym_measured.md: 2.944 deg/s).
   const double rate = units::rad_to_deg(units::kG0 * std::tan(units::deg_to_rad(25)) / 89.0);
   CHECK(rate == doctest::Approx(2.944).epsilon(1e-3));
+}
+
+TEST_CASE("qdrdist on cached latitude trigonometry equals qdrdist on the latitudes bit for bit") {
+  // Same hemisphere, across the equator, at the poles, across the antimeridian.
+  const double pts[][4] = {{52.3, 4.8, 40.6, -73.8}, {-33.9, 151.2, 51.5, -0.5}, {89.9, 10.0, -89.9, -170.0},
+                           {0.0, 179.9, 0.0, -179.9}, {-12.0, -45.0, -12.0, -45.0}, {35.5, 139.8, 1.4, 103.9}};
+  for (const auto& p : pts) {
+    const geo::QdrDist a = geo::qdrdist(p[0], p[1], p[2], p[3]);
+    const geo::QdrDist b = geo::qdrdist(geo::lat_trig(p[0]), p[1], geo::lat_trig(p[2]), p[3]);
+    CHECK(a.qdr_deg == b.qdr_deg);
+    CHECK(a.dist_nm == b.dist_nm);
+  }
+}
+
+TEST_CASE("wrap360 and wrap180 of angles within one turn skip fmod and give its values") {
+  for (const double d : {-359.999, -180.0, -1e-300, -0.0, 0.0, 1e-300, 90.0, 180.0, 359.999999999999, 719.5, -725.0}) {
+    double r = std::fmod(d, 360.0);
+    if (r < 0) r += 360.0;
+    if (r >= 360.0) r -= 360.0;
+    CHECK(geo::wrap360(d) == r);
+    CHECK(geo::wrap180(d) == (r > 180.0 ? r - 360.0 : r));
+  }
 }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/geo.h"
 #include "core/rng.h"
 #include "core/units.h"
 #include "sim/simulation.h"
@@ -189,4 +190,27 @@ TEST_CASE("property: a failed operation leaves the state byte for byte unchanged
     CHECK_MESSAGE(!st.message().empty(), "op " << which);
     REQUIRE_MESSAGE(sim.snapshot() == before, "op " << which << " changed the state: " << st.message());
   }
+}
+
+TEST_CASE("the autopilot's distance to the waypoint is BlueSky's qdrdist of the current position, after MOVE too") {
+  // The autopilot reads the latitude's sine and cosine kept by the step and
+  // by MOVE; a stale cache would move dist2wp off the direct formula.
+  Simulation sim(3);
+  REQUIRE(sim.create("A", "A320", 51.0, 2.0, 45.0, 9000.0, 130.0).is_ok());
+  Waypoint w;
+  w.name = "FAR";
+  w.lat = 60.0;
+  w.lon = 25.0;
+  REQUIRE(sim.add_waypoint("A", w).is_ok());
+  const Traffic& t = sim.traffic();
+  const auto direct = [&] { return units::nm_to_m(geo::qdrdist(t.lat[0], t.lon[0], w.lat, w.lon).dist_nm); };
+  for (int k = 0; k < 3; ++k) {
+    const double before = direct();
+    sim.step();  // the autopilot runs on the position before this step's move
+    CHECK(t.dist2wp[0] == before);
+  }
+  REQUIRE(sim.move("A", -20.0, 100.0).is_ok());
+  const double moved = direct();
+  sim.step();
+  CHECK(t.dist2wp[0] == moved);
 }
