@@ -98,7 +98,9 @@ const Scope = (() => {
     ctx.strokeStyle = colors.grid; ctx.fillStyle = colors.gridText; ctx.lineWidth = 1;
     ctx.font = "11px monospace";
     const dec = step >= 1 ? 0 : step >= 0.1 ? 1 : 2;
-    for (let lat = Math.ceil(latS / step) * step; lat <= latN; lat += step) {
+    // Parallels exist only within ±90°; meridians repeat past ±180° and are
+    // labelled with their longitude in [-180°, 180°).
+    for (let lat = Math.ceil(Math.max(latS, -90) / step) * step; lat <= Math.min(latN, 90); lat += step) {
       const [, y] = px(lat, view.lon0);
       ctx.beginPath(); ctx.moveTo(0, y); ctx.lineTo(W, y); ctx.stroke();
       ctx.fillText(`${Math.abs(lat).toFixed(dec)}°${lat >= 0 ? "N" : "S"}`, 4, y - 3);
@@ -106,7 +108,8 @@ const Scope = (() => {
     for (let lon = Math.ceil(lonW / step) * step; lon <= lonE; lon += step) {
       const [x] = px(view.lat0, lon);
       ctx.beginPath(); ctx.moveTo(x, 0); ctx.lineTo(x, H); ctx.stroke();
-      ctx.fillText(`${Math.abs(lon).toFixed(dec)}°${lon >= 0 ? "E" : "W"}`, x + 3, H - 6);
+      const l = ((lon + 180) % 360 + 360) % 360 - 180;
+      ctx.fillText(`${Math.abs(l).toFixed(dec)}°${l >= 0 ? "E" : "W"}`, x + 3, H - 6);
     }
   }
 
