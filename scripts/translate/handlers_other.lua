@@ -454,7 +454,15 @@ return function(H, f, compass)
       -- "2 min 30 s": times in a row add up
       local total, last = 0, nil
       for _, t in ipairs(self:quantities(q.b, s.e)) do
-        if t.kind ~= "time" or (last and t.b - last.e > 1) then break end
+        if last and t.b - last.e > 1 then break end
+        if t.kind == "plain" and last and t.value > 0 and t.value < 60 then
+          -- "one minute thirty", "an hour fifteen": the next smaller unit, its word left out
+          if self:word(last.e - 1, "minute minutes min mins") then total = total + t.value end
+          if self:word(last.e - 1, "hour hours") then total = total + 60 * t.value end
+          self:take(t)
+          break
+        end
+        if t.kind ~= "time" then break end
         total, last = total + t.value, t
       end
       return self:emit("FF " .. f.num(total))

@@ -50,6 +50,10 @@ return {
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
         "show", "send", "sent", "held", "lead", },
   },
+  -- typed shorthand: a prefix written before its value, glued or apart
+  -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
+  shorthand = { s = "speed", h = "heading", l = "left", r = "right", rod = "rate of descent",
+                roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
   -- words before a level that make the next instruction wait for it
@@ -117,6 +121,13 @@ return {
     -- end of the request: the words in it describe the other aircraft, they instruct nobody
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
       to_end = true },
+    -- "report passing FL100", "report established": a report the pilot makes, no instruction
+    { what = "position reports", words = "report reporting",
+      near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
+               "vacating", "when", "at" } },
+    -- "make a left three sixty", "orbit right": squawk flies no orbits
+    { what = "orbits", words = "orbit orbits" },
+    { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" } },
     { what = "holding patterns", words = "holding" },
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" } },
@@ -135,7 +146,7 @@ return {
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
     alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",
-    hotel = "H", india = "I", juliet = "J", juliett = "J", kilo = "K", lima = "L", mike = "M",
+    hotel = "H", india = "I", juliet = "J", juliett = "J", juliette = "J", kilo = "K", lima = "L", mike = "M",
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
   },

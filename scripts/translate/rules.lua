@@ -116,7 +116,7 @@ return function(intent, rule, words)
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
   rule { "add append insert give", "addwpt", near = { 8, "@route_nouns" },
-         when = function(g, i) return g:has_ref(i + 1, i + 3, "waypoint") end }
+         when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 6, "@route_nouns" } }
   rule { "via", "addwpt", prev = { 3, "route" } }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },

@@ -26,6 +26,16 @@ check_eq(said(tr("turn KLM1234 to 010 and DLH4AX to 200")), "HDG KLM1234 10 ; HD
 -- several instructions, none dropped
 check_eq(said(tr("KLM1234 climb FL300 and reduce speed 250 knots")), "ALT KLM1234 FL300 ; SPD KLM1234 250")
 
+-- typed shorthand: a letter-prefixed value is an instruction wherever it stands in the line,
+-- each value used once; a leftover token with a digit in it is asked about by name
+check_eq(said(tr("klm77 fl120 s230")), "ALT KLM77 FL120 ; SPD KLM77 230")
+check_eq(said(tr("dlh4ax h 150 fl250")), "HDG DLH4AX 150 ; ALT DLH4AX FL250")
+check_eq(said(tr("klm1234 r 010")), "HDG KLM1234 10 RIGHT")
+check_eq(said(tr("baw8ck l320 s240")), "HDG BAW8CK 320 LEFT ; SPD BAW8CK 240")
+check_eq(said(tr("klm77 fl110 rod 1200")), "ALT KLM77 FL110 ; VS KLM77 -1200")
+check_eq(said(tr("dlh4ax roc 800")), "VS DLH4AX 800")
+check_eq(said(tr("klm77 fl120 q9")), "ASK I have ALT KLM77 FL120. What does 'q9' mean?")
+
 -- 2. turns the way they were said; relative turns in whole degrees; past 180 degrees asks yes/no
 check_eq(said(tr("BAW8CK turn right heading 300")), "HDG BAW8CK 300 RIGHT")
 check_eq(said(tr("BAW8CK turn left heading 020")), "HDG BAW8CK 20 LEFT")
@@ -105,6 +115,39 @@ if #sim:airports_named("schiphol") == 1 then
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
+
+-- spoken telephony split by speech recognition matches when every character does; a
+-- partial flight number asks while other aircraft fly
+local csim = squawk.sim.new()
+for _, line in ipairs({ "CRE BAW456 A320 51.5 0.2 090 FL150 250", "CRE RYR7TK B738 51.7 0.4 270 FL190 270",
+    "CRE EZY33 A319 51.2 0.1 180 FL110 240" }) do
+  check(csim:exec(line))
+end
+local function ctr(text) return said(graph.translate(text, { sim = csim, mode = "offline" })) end
+check_eq(ctr("speed bird four five six turn left heading one two zero"), "HDG BAW456 120 LEFT")
+check_eq(ctr("ryan air seven tango kilo climb flight level two one zero"), "ALT RYR7TK FL210")
+check_eq(ctr("easy jet three three reduce speed two two zero"), "SPD EZY33 220")
+check_eq(ctr("speed bird four five turn left heading one two zero"), "ASK Did you mean BAW456? I heard BAW45.")
+check_eq(ctr("ryan air seven tango climb flight level two one zero"), "ASK Did you mean RYR7TK? I heard RYR7T.")
+
+-- values as people write and say them: space-grouped thousands, rates in feet a minute and
+-- metres per second (negative when said so), minutes and seconds, "flightlevel", a route
+-- point's level kept as ADDWPT's altitude
+check_eq(said(tr("KLM77 descend to 9 000 feet")), "ALT KLM77 9000")
+check_eq(said(tr("KLM1234 vertical speed minus 5 metres per second")), "VS KLM1234 -984")
+check_eq(said(tr("BAW8CK climb at 2500 feet a minute")), "VS BAW8CK 2500")
+check_eq(said(tr("fast forward two minutes fifteen")), "FF 135")
+check_eq(said(tr("DLH4AX descend flightlevel two eight zero")), "ALT DLH4AX FL280")
+check_eq(said(tr("KLM77 add waypoint 52.3 4.6 to the route at flight level 90")), "ADDWPT KLM77 52.3 4.6 FL90")
+
+-- a report the pilot makes and an orbit are named as not simulated; a correction with nothing
+-- after it asks
+r = tr("KLM77 report reaching flight level 120")
+check(#r.commands == 0 and r.note ~= nil and r.note:find("position reports", 1, true) ~= nil, said(r))
+r = tr("BAW8CK make a right 360")
+check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
+r = tr("DLH4AX descend flight level two six zero, correction")
+check(r.ask ~= nil and r.ask:find("correction", 1, true) ~= nil, said(r))
 
 -- units people type: km/h is a speed in knots, metres an altitude in feet
 check_eq(said(tr("KLM1234 speed 500 km/h")), "SPD KLM1234 270")
