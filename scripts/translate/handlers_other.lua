@@ -334,23 +334,31 @@ return function(H, f, compass)
     if not id then return end
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig)
+    -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
+    local at = self:find_word(s.trig, s.e, "after before")
+    local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
     local where
     if lat and lon then
       where = f.num(lat) .. " " .. f.num(lon)
     else
-      where = self:waypoint(s.trig, s.e, id)
+      where = self:waypoint(s.trig, next_to and at or s.e, id)
       if not where and self:word_in(s.trig, s.e, "it") then where = self.last_waypoint end
       if not where then
         return self:need("Where should the waypoint for " .. id .. " be? Please give a name or a latitude and longitude.")
       end
     end
-    local cmd = "ADDWPT " .. id .. " " .. where
     local alt, spd
     for _, q in ipairs(qs) do
       if q.kind == "alt" and not alt then alt = f.alt(q.value, q.fl) end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
       if q.kind == "mach" and not spd then spd = f.mach(q.value) end
     end
+    if next_to then
+      local after = self:word(at, "after")
+      return self:emit("ADDWPT " .. id .. " " .. where .. "," .. (alt or "") .. "," .. (spd or "") .. ","
+        .. (after and next_to.name or "," .. next_to.name))
+    end
+    local cmd = "ADDWPT " .. id .. " " .. where
     if alt or spd then cmd = cmd .. " " .. (alt or "") end
     if spd then cmd = cmd .. " " .. spd end
     self:emit(cmd)

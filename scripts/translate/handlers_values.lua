@@ -119,6 +119,10 @@ return function(H, f, wrap, compass)
     if fl and q.number.value >= 1000 then  -- "flight level 9000": levels have three digits
       return self:need("Which flight level for " .. ids[1] .. "? I heard flight level " .. f.int(q.number.value) .. ".")
     end
+    -- flight levels start above the transition altitude: a spoken "flight level two zero" lost a digit
+    if fl and ft < 3000 and not q.number.typed then
+      return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
+    end
     if fl and ft > 60000 then
       return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
     end

@@ -80,6 +80,7 @@ return function(intent, rule, words)
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
   rule { "speed", "dtmult", prev = { 1, "x times" } }
+  rule { "speed spd airspeed", "dtmult", near = { 3, "@sim" }, when = function(g, i) return g:followed_by(i, 4, "times x") end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
@@ -118,6 +119,9 @@ return function(intent, rule, words)
   rule { "add append insert give", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 6, "@route_nouns" } }
+  -- "add the point EXIT2": a point that is a known waypoint
+  rule { "add append insert", "addwpt", near = { 3, "point" },
+         when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
   rule { "via", "addwpt", prev = { 3, "route" } }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }

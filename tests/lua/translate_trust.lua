@@ -140,6 +140,21 @@ check_eq(said(tr("fast forward two minutes fifteen")), "FF 135")
 check_eq(said(tr("DLH4AX descend flightlevel two eight zero")), "ALT DLH4AX FL280")
 check_eq(said(tr("KLM77 add waypoint 52.3 4.6 to the route at flight level 90")), "ADDWPT KLM77 52.3 4.6 FL90")
 
+-- a route point said with its level or its place in the route keeps them as ADDWPT's arguments;
+-- "then direct" after a value instruction is the next instruction, not held behind it
+local rsim = sim:copy()
+check(rsim:exec("DEFWPT RIVER 52.3 4.3"))
+check(rsim:exec("DEFWPT HILLS 52.6 4.6"))
+check(rsim:exec("ADDWPT KLM77 HILLS"))
+local function rtr(text) return said(graph.translate(text, { sim = rsim, mode = "offline", waypoints = { "RIVER", "HILLS" } })) end
+check_eq(rtr("KLM77 please add the point RIVER at flight level 140"), "ADDWPT KLM77 RIVER FL140")
+check_eq(rtr("add RIVER to the route of KLM77 after HILLS"), "ADDWPT KLM77 RIVER,,,HILLS")
+check_eq(rtr("KLM77 descend flight level 100 and then direct HILLS"), "ALT KLM77 FL100 ; DIRECT KLM77 HILLS")
+-- a spoken flight level below any transition altitude lost a digit: asked
+r = tr("DLH4AX descend flight level one five")
+check(r.ask ~= nil and r.ask:find("FL15", 1, true) ~= nil, said(r))
+check_eq(said(tr("run the simulation speed at three times")), "DTMULT 3")
+
 -- a report the pilot makes and an orbit are named as not simulated; a correction with nothing
 -- after it asks
 r = tr("KLM77 report reaching flight level 120")
