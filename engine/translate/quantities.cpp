@@ -162,7 +162,7 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       } else if (word_at(t, j, {"kt", "kts", "knots", "knot", "kias", "kn", "kts."})) {
         q.kind = QKind::kSpeed;
         ++j;
-      } else if (word_at(t, j, {"mach"})) {
+      } else if (word_at(t, j, {"mach"}) && q.kind != QKind::kAlt) {  // ("FL320 M.78": two values)
         q.kind = QKind::kMach;
         ++j;
       } else if (word_at(t, j, {"degrees", "degree", "deg", "\xC2\xB0"})) {

@@ -161,7 +161,9 @@ function M.handler(name, fn) G[name] = fn end
 --    that is a prefix and digits, or a prefix before a token starting with a
 --    digit, not after a number: "33.95 S 151.18 E" is a hemisphere;
 --    "dlh4ax" and "fl240" are left alone);
---  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray";
+--  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", and
+--    speech recognition's "nine her" -> "niner", and a degree sign ending
+--    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
 --  * thousands grouped with a space: "18 000 feet" -> "18000 feet" (a
 --    group of three digits that is "000" or is followed by feet).
 local function written_forms(text)
@@ -178,6 +180,8 @@ local function written_forms(text)
   end)
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
+  text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
+  text = text:gsub("(%d)\xC2\xB0(%s)", "%1 degrees%2"):gsub("(%d)\xC2\xB0$", "%1 degrees")
   return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
     if b == "000" or text:sub(at):match("^%s*[Ff][Ee]?[Ee]?[Tt]%f[%A]") or text:sub(at):match("^%s*[Ff][Oo][Oo][Tt]") then
       return a .. b

@@ -358,6 +358,23 @@ function m:whole_hundreds(q)
   return nil
 end
 
+-- The candidates of a value instruction: `cands` (those with a unit, else
+-- the plain ones), unless a correction is followed by a value of either
+-- kind ("flight level two four zero correction two six zero"): then the
+-- values after the last correction word.
+function m:corrected(cands, with_unit, plain, s)
+  local corr
+  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
+  if not corr then return cands end
+  local later = {}
+  for _, list in ipairs({ with_unit, plain }) do
+    for _, q in ipairs(list) do if q.b > corr then later[#later + 1] = q end end
+  end
+  if #later == 0 then return cands end
+  table.sort(later, function(a, b) return a.b < b.b end)
+  return later
+end
+
 -- Which candidate counts: after "correction" the first one after it; when
 -- the instruction word is repeated, the last; else the first.
 -- The value picked is taken (G:take): the leftover check knows it was read.

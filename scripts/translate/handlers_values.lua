@@ -17,6 +17,7 @@ return function(H, f, wrap, compass)
         return self:need("What should happen at that position: a waypoint, direct to it, or moving the aircraft there?")
       end
       if q.kind == "mult" then return self:time_mult(s) end
+      if q.kind == "angle" and q.turn ~= 0 then return self:heading(s) end  -- "15 deg left", "20 right"
     end
     for _, q in ipairs(qs) do
       local n = q.number
@@ -88,7 +89,7 @@ return function(H, f, wrap, compass)
         end
       end
     end
-    local target = self:pick(#with_unit > 0 and with_unit or plain, s, "maintain")
+    local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local now = self:state(ids[1])
     local dir = self:direction(s)
     local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"
@@ -201,7 +202,7 @@ return function(H, f, wrap, compass)
       if q.kind == "speed" or q.kind == "mach" or q.kind == "percent" then with_unit[#with_unit + 1] = q end
       if q.kind == "plain" and (q.b >= s.trig or q.number.typed) then plain[#plain + 1] = q end
     end
-    local q = self:pick(#with_unit > 0 and with_unit or plain, s, "speed")
+    local q = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "speed")
     -- "Match AC02's speed to AC01" / "the same speed as AC01"
     local refs = self:refs_in(s.b, s.e, "aircraft")
     if not q and #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
@@ -259,7 +260,7 @@ return function(H, f, wrap, compass)
       elseif q.kind == "angle" then
         rel_c[#rel_c + 1] = q
       end
-      if q.kind == "alt" or q.kind == "speed" then break end
+      if q.b > s.trig and (q.kind == "alt" or q.kind == "speed") then break end
     end
     -- "turn right 20", "left 90": a typed number of one or two digits after a turn
     -- direction, with no "heading", is the degrees of the turn (headings have three)

@@ -52,8 +52,8 @@ return {
   },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
-  shorthand = { s = "speed", h = "heading", l = "left", r = "right", rod = "rate of descent",
-                roc = "rate of climb" },
+  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right",
+                rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
   -- words before a level that make the next instruction wait for it

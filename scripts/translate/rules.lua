@@ -80,7 +80,9 @@ return function(intent, rule, words)
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
   rule { "speed", "dtmult", prev = { 1, "x times" } }
-  rule { "speed spd airspeed", "dtmult", near = { 3, "@sim" }, when = function(g, i) return g:followed_by(i, 4, "times x") end }
+  rule { "speed spd airspeed", "dtmult", when = function(g, i)
+    return g:followed_by(i, 4, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
@@ -135,7 +137,7 @@ return function(intent, rule, words)
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
-  rule { "direct directly dct proceed direct-to", "direct" }
+  rule { "direct directly dct dir proceed direct-to", "direct" }
   rule { "cleared", "direct", when = function(g) return #g.world.waypoints > 0 end }
   rule { "destination", "dest" }
   rule { "fly", "dest", next = "to" }
@@ -145,13 +147,13 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical", "vnav", next = "profile navigation" }
   rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print" } }
-  rule { "listrte", "listrte" }
+  rule { "listrte rte", "listrte" }
 
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
-  rule { "details status info information state", "pos" }
-  rule { "move reposition teleport shift place relocate", "move" }
+  rule { "details status info information state pos", "pos" }
+  rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"

@@ -35,6 +35,18 @@ check_eq(said(tr("baw8ck l320 s240")), "HDG BAW8CK 320 LEFT ; SPD BAW8CK 240")
 check_eq(said(tr("klm77 fl110 rod 1200")), "ALT KLM77 FL110 ; VS KLM77 -1200")
 check_eq(said(tr("dlh4ax roc 800")), "VS DLH4AX 800")
 check_eq(said(tr("klm77 fl120 q9")), "ASK I have ALT KLM77 FL120. What does 'q9' mean?")
+check_eq(said(tr("klm1234 fl280 h320")), "ALT KLM1234 FL280 ; HDG KLM1234 320")
+check_eq(said(tr("dlh4ax fl310 m.80")), "ALT DLH4AX FL310 ; SPD DLH4AX M0.8")
+check_eq(said(tr("klm77 lt 15 deg")), "HDG KLM77 165 LEFT")
+check_eq(said(tr("dlh4ax rt 40\u{B0}")), "HDG DLH4AX 130 RIGHT")
+check_eq(said(tr("KLM1234 25 degrees left")), "HDG KLM1234 275 LEFT")
+check_eq(said(tr("klm77 rte?")), "LISTRTE KLM77")
+check_eq(said(tr("klm77 pos?")), "POS KLM77")
+-- a correction followed by its new value: the value after it counts, however it is said
+check_eq(said(tr("KLM77 descend flight level one three zero correction one one zero")), "ALT KLM77 FL110")
+check_eq(said(tr("BAW8CK speed two two zero knots correction two four zero")), "SPD BAW8CK 240")
+check_eq(said(tr("KLM77 turn left heading one nine her five")), "HDG KLM77 195 LEFT")
+check_eq(said(tr("make the simulation speed four times")), "DTMULT 4")
 
 -- 2. turns the way they were said; relative turns in whole degrees; past 180 degrees asks yes/no
 check_eq(said(tr("BAW8CK turn right heading 300")), "HDG BAW8CK 300 RIGHT")
@@ -150,6 +162,7 @@ local function rtr(text) return said(graph.translate(text, { sim = rsim, mode = 
 check_eq(rtr("KLM77 please add the point RIVER at flight level 140"), "ADDWPT KLM77 RIVER FL140")
 check_eq(rtr("add RIVER to the route of KLM77 after HILLS"), "ADDWPT KLM77 RIVER,,,HILLS")
 check_eq(rtr("KLM77 descend flight level 100 and then direct HILLS"), "ALT KLM77 FL100 ; DIRECT KLM77 HILLS")
+check_eq(rtr("klm77 dir HILLS"), "DIRECT KLM77 HILLS")
 -- a spoken flight level below any transition altitude lost a digit: asked
 r = tr("DLH4AX descend flight level one five")
 check(r.ask ~= nil and r.ask:find("FL15", 1, true) ~= nil, said(r))
