@@ -136,7 +136,7 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
     if (q.kind == QKind::kPlain || q.kind == QKind::kAlt || q.kind == QKind::kMach) {
       if (word_at(t, j, {"ft", "feet", "foot"})) {
         ++j;
-        if (word_at(t, j, {"per", "a"}) && word_at(t, j + 1, {"minute", "min", "mn"})) {  // "feet a minute"
+        if (word_at(t, j, {"per", "a", "for"}) && word_at(t, j + 1, {"minute", "min", "mn"})) {  // "feet a minute"
           q.kind = QKind::kVs;
           j += 2;
         } else if (q.kind != QKind::kAlt) {

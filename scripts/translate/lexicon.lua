@@ -77,8 +77,9 @@ return {
            "descending", "decelerate", "minus" },
   below = { "below", "under" },
   above = { "above", "over" },
-  relative = { "present", "current", "by" },
-  present = { "present", "current", "continue" },
+  relative = { "present", "current", "actual", "by" },
+  -- ("actual": the false friend of the present one, in several languages)
+  present = { "present", "current", "actual", "continue" },
   same_as = { "match", "same", "as" },
   -- switches
   off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },

@@ -107,6 +107,7 @@ return function(intent, rule, words)
   rule { "around", false, prev = { 3, "turn" } }
 
   -- vertical speed and bank
+  rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
   rule { "vertical", "vs", next = "speed rate" }
   rule { "rate", "vs", not_prev = { 1, "vertical" } }

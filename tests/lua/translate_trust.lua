@@ -47,6 +47,12 @@ check_eq(said(tr("KLM77 descend flight level one three zero correction one one z
 check_eq(said(tr("BAW8CK speed two two zero knots correction two four zero")), "SPD BAW8CK 240")
 check_eq(said(tr("KLM77 turn left heading one nine her five")), "HDG KLM77 195 LEFT")
 check_eq(said(tr("make the simulation speed four times")), "DTMULT 4")
+-- false friends and prepositions of other languages: "actual" is the present value, "sink to a
+-- level" a descent, "feet for minute" a rate; a large step in feet is the cleared altitude
+check_eq(said(tr("KLM1234 keep the actual heading")), "HDG KLM1234 300")
+check_eq(said(tr("KLM77 sink to flight level 90")), "ALT KLM77 FL90")
+check_eq(said(tr("DLH4AX descend 12000 feet")), "ALT DLH4AX 12000")
+check_eq(said(tr("BAW8CK descend flight level 150 with 1800 feet for minute")), "ALT BAW8CK FL150 1800")
 
 -- 2. turns the way they were said; relative turns in whole degrees; past 180 degrees asks yes/no
 check_eq(said(tr("BAW8CK turn right heading 300")), "HDG BAW8CK 300 RIGHT")
