@@ -538,9 +538,14 @@ function G:unexplained(s, n_before)
   local corrected = 0
   for i = s.b, s.e - 1 do if self:word(i, "@correction") then corrected = i end end
   local relative = self:word_in(s.b, s.e, "@relative @same_as @below @above")
+  -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7")
+  local opened = s.intent ~= "infer" and s.trig or nil
+  for _, q in ipairs(self:quantities(s.b, s.e)) do
+    if not opened and own_unit(q) then opened = q.b end
+  end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
-        and q.b > corrected and ((q.b > s.trig and s.intent ~= "infer") or own_unit(q))
+        and q.b > corrected and ((opened and q.b > opened) or own_unit(q))
         and not value_carried(q, nums) then
       local b = q.b
       for _, r in ipairs(self.refs) do

@@ -107,7 +107,7 @@ return {
   -- one of `near` within 4 words after it, when given) and runs to the end
   -- of its clause; it is named in the reply, never translated
   not_simulated = {
-    { what = "transponder codes", words = "squawk squawking",
+    { what = "transponder codes", words = "squawk squawking sq",
       near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
     { what = "transponder codes", words = "transponder ident" },
     { what = "radio frequencies", words = "contact monitor frequency freq" },
