@@ -569,8 +569,9 @@ function G:dangling_correction()
   end
 end
 
--- A name that reads like a callsign no aircraft has and that no command
--- carries ("ezy45 fl150 x7") is a leftover, asked about by name.
+-- A name that reads like a callsign no aircraft has, or an aircraft that
+-- no command carries ("ezy45 fl150 x7", "pause, then tell me where BAW123
+-- is"), is a leftover, asked about by name.
 function G:unknown_names()
   if #self.fleet == 0 then return end
   local out = table.concat(self.out, " "):upper()
@@ -580,8 +581,11 @@ function G:unknown_names()
     end
     return false
   end
+  -- an aircraft named as a reference for another's value ("the same heading as AC02") or as the
+  -- reason for an instruction ("to avoid a conflict between AC01 and AC02") is explained
+  local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and not r.exists and not r.false_start
+    if r.kind == "aircraft" and (not r.exists or not compared) and not r.false_start
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
       local words = {}
       for k = r.b, r.e - 1 do words[#words + 1] = self.t[k].raw end

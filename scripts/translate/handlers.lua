@@ -99,7 +99,9 @@ function m:acids(s)
   for _, r in ipairs(self.refs) do if r.kind == "aircraft" and r.exists then any_known = true end end
   local function take(b, e)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
-      if (r.exists or not any_known) and not seen[r.name] and not r.false_start then
+      -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
+      if (r.exists or not any_known) and not seen[r.name] and not r.false_start
+          and not self:preceded_by(r.b, 3, "@aircraft_context") then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end

@@ -75,6 +75,9 @@ return {
   up = { "climb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
   down = { "descend", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
            "descending", "decelerate", "minus" },
+  -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
+  aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
+                       "than", "traffic" },
   below = { "below", "under" },
   above = { "above", "over" },
   relative = { "present", "current", "actual", "by" },
