@@ -569,6 +569,23 @@ function G:dangling_correction()
   end
 end
 
+-- A time said that no command carries ("in 5 minutes, delete TEST03": a
+-- delay squawk's grammar does not give) is a leftover, asked about by name.
+function G:untimed()
+  local nums = {}
+  for _, line in ipairs(self.out) do
+    for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
+  end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if q.kind == "time" and not self.taken[q.b] and not value_carried(q, nums) then
+      local words = {}
+      for k = q.b, q.e - 1 do words[#words + 1] = self.t[k].raw end
+      self.leftover = table.concat(words, " ")
+      return
+    end
+  end
+end
+
 -- A name that reads like a callsign no aircraft has, or an aircraft that
 -- no command carries ("ezy45 fl150 x7", "pause, then tell me where BAW123
 -- is"), is a leftover, asked about by name.
@@ -767,6 +784,7 @@ function M.translate(text, world)
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end
+  if not g.ask and not g.leftover then g:untimed() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end

@@ -457,7 +457,17 @@ return function(H, f, compass)
 
   function m:fast_forward(s)
     local q = first(self, s, { time = true, mult = true })
-    if not q then return self:emit("FF") end
+    if not q then
+      -- "fast forward" alone runs fast-time until stopped; more words ("a bit", "an hour and
+      -- a half") said a duration that was not understood
+      for i = s.trig + 1, s.e - 1 do
+        local t = self.t[i]
+        if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things") then
+          return self:need("For how long should the simulation fast-forward? Please give a time.")
+        end
+      end
+      return self:emit("FF")
+    end
     if q.kind == "time" then
       -- "2 min 30 s": times in a row add up
       local total, last = 0, nil
@@ -471,7 +481,7 @@ return function(H, f, compass)
           break
         end
         if t.kind ~= "time" then break end
-        total, last = total + t.value, t
+        total, last = total + t.value, self:take(t)
       end
       return self:emit("FF " .. f.num(total))
     end

@@ -179,6 +179,7 @@ return function(intent, rule, words)
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", next = "navigation" }
   rule { "run", "dtmult", near = { 4, "times x" } }
+  rule { "dtmult", "dtmult" }
   rule { "start", "op", near = { 3, "@sim" } }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }

@@ -39,6 +39,11 @@ check_eq(said(tr("klm77 fl120 6")), "ASK I have ALT KLM77 FL120. What does '6' m
 -- an aircraft named that no command carries: the request was not all understood
 check_eq(said(tr("freeze the simulation and then tell me where KLM77 is")), "ASK I have HOLD. What does 'KLM77' mean?")
 check_eq(said(tr("KLM1234 climb FL320 to avoid a conflict with KLM77")), "ALT KLM1234 FL320")
+-- a duration said but not understood asks; a time no command carries is a leftover
+check_eq(said(tr("please fast forward the sim")), "FF")
+check_eq(said(tr("fast forward a little while")), "ASK For how long should the simulation fast-forward? Please give a time.")
+check_eq(said(tr("after 10 minutes remove KLM77")), "ASK I have DEL KLM77. What does '10 minutes' mean?")
+check_eq(said(tr("dtmult 6 and show trails")), "DTMULT 6 ; TRAIL ON")
 r = tr("klm77 fl120 sq 1234")
 check(said(r) == "ALT KLM77 FL120" and r.note:find("transponder codes", 1, true) ~= nil, said(r))
 check_eq(said(tr("klm1234 fl280 h320")), "ALT KLM1234 FL280 ; HDG KLM1234 320")
