@@ -451,6 +451,7 @@ function G:parse(b, e)
       local n_before = #self.out
       local at = self:at_altitude(s)
       local spec = M.intents[s.intent]
+      self:at_waypoint(s, spec)
       self[spec and spec.handler or "infer"](self, s, spec)
       if not self.ask and #self.out > n_before then
         self:leftovers(s)
@@ -469,6 +470,20 @@ function G:parse(b, e)
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       end
+    end
+  end
+end
+
+-- "cross ARTIP at 220 knots", "at TP2 be at FL200": a value instruction
+-- tied to a waypoint is a constraint the grammar does not translate (an
+-- AT condition); asked, never issued at once.
+function G:at_waypoint(s, spec)
+  if not (spec and spec.value) and s.intent ~= "infer" then return end
+  for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+    if self:word(r.b - 1, "at cross crossing over abeam overhead") then
+      return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
+        .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
+        r.name, r.name))
     end
   end
 end

@@ -55,13 +55,13 @@ end
 -- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
 -- kept here after their first-sight figures were recorded, fixed by class.
 floors("tests/data/translate_round1.tsv", 0.95, 0.015, true)
-floors("tests/data/translate_round2.tsv", 0.72, 0.06, true)
+floors("tests/data/translate_round2.tsv", 0.72, 0.05, true)
 floors("tests/data/translate_round3.tsv", 0.89, 0.01, true)
 floors("tests/data/translate_round4.tsv", 0.92, 0.005, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
-floors("../shared/corpora/vice_trafscript.tsv", 0.90, 0.015)
+floors("../shared/corpora/vice_trafscript.tsv", 0.90, 0.012)
 
 -- squawk.translate.evaluate is eval-translate's scorer: a translator that always asks is right
 -- exactly on the rows that expect a question, never wrong; one that issues a command where a

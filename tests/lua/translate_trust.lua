@@ -180,6 +180,9 @@ check_eq(rtr("KLM77 please add the point RIVER at flight level 140"), "ADDWPT KL
 check_eq(rtr("add RIVER to the route of KLM77 after HILLS"), "ADDWPT KLM77 RIVER,,,HILLS")
 check_eq(rtr("KLM77 descend flight level 100 and then direct HILLS"), "ALT KLM77 FL100 ; DIRECT KLM77 HILLS")
 check_eq(rtr("klm77 dir HILLS"), "DIRECT KLM77 HILLS")
+-- a level or speed tied to a waypoint is asked, never issued at once
+r = graph.translate("KLM77 be at flight level 110 over RIVER", { sim = rsim, mode = "offline", waypoints = { "RIVER", "HILLS" } })
+check(r.ask ~= nil and r.ask:find("happen at RIVER", 1, true) ~= nil, said(r))
 -- a spoken flight level below any transition altitude lost a digit: asked
 r = tr("DLH4AX descend flight level one five")
 check(r.ask ~= nil and r.ask:find("FL15", 1, true) ~= nil, said(r))
