@@ -584,15 +584,23 @@ function G:dangling_correction()
   end
 end
 
--- A time said that no command carries ("in 5 minutes, delete TEST03": a
--- delay squawk's grammar does not give) is a leftover, asked about by name.
-function G:untimed()
+-- A time, position, level or speed said that no command carries ("in 5
+-- minutes, delete TEST03": a delay the grammar does not give; "define A1 at
+-- 52.0 4.0 and A2 at 52.0 5.0": a second waypoint not made) is a leftover,
+-- asked about by name. (Values said relative to something, or before a
+-- correction, are the instructions' to explain.)
+local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true }
+function G:uncarried()
+  if self:word_in(1, #self.t + 1, "@relative @same_as @below @above") then return end
   local nums = {}
   for _, line in ipairs(self.out) do
     for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
   end
+  local corrected = 0
+  for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
-    if q.kind == "time" and not self.taken[q.b] and not value_carried(q, nums) then
+    -- (a plain number with a decimal point is a coordinate; other plain ones are often recognition noise)
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b] and not q.by and q.b > corrected and not value_carried(q, nums) then
       local words = {}
       for k = q.b, q.e - 1 do words[#words + 1] = self.t[k].raw end
       self.leftover = table.concat(words, " ")
@@ -799,7 +807,7 @@ function M.translate(text, world)
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end
-  if not g.ask and not g.leftover then g:untimed() end
+  if not g.ask and not g.leftover then g:uncarried() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end
