@@ -174,8 +174,9 @@ local function written_forms(text)
   end)
   text = text:gsub("()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
     local w = sh[pre:lower()]
+    if not w then return nil end
     local before = text:sub(1, at - 1):match("(%S+)%s*$")
-    if not w or (before and before:match("^[%d%.,%-]+$")) then return nil end
+    if before and before:match("^[%d%.,%-]+$") then return nil end
     return w .. space .. digit
   end)
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
