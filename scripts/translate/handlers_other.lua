@@ -104,7 +104,10 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.b < from then goto continue end
       local seen = false
-      for _, v in ipairs(read) do if v and math.abs(v - q.value) < 1e-9 then seen = true end end
+      for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
+        local v = read[k]
+        if v and math.abs(v - q.value) < 1e-9 then seen = true end
+      end
       if not seen and (q.kind == "plain" or q.kind == "dist") then left[#left + 1] = q end
       ::continue::
     end

@@ -182,6 +182,8 @@ check_eq(rtr("KLM77 please add the point RIVER at flight level 140"), "ADDWPT KL
 check_eq(rtr("add RIVER to the route of KLM77 after HILLS"), "ADDWPT KLM77 RIVER,,,HILLS")
 check_eq(rtr("KLM77 descend flight level 100 and then direct HILLS"), "ALT KLM77 FL100 ; DIRECT KLM77 HILLS")
 check_eq(rtr("klm77 dir HILLS"), "DIRECT KLM77 HILLS")
+-- a creation at a named place reads every labelled value
+check_eq(rtr("create KLM88 A320 over RIVER heading 090 FL 150 speed 260"), "CRE KLM88 A320 RIVER 90 FL150 260")
 -- a level or speed tied to a waypoint is asked, never issued at once
 r = graph.translate("KLM77 be at flight level 110 over RIVER", { sim = rsim, mode = "offline", waypoints = { "RIVER", "HILLS" } })
 check(r.ask ~= nil and r.ask:find("happen at RIVER", 1, true) ~= nil, said(r))
