@@ -526,6 +526,7 @@ return function(H, f, compass)
     local b = s.b > 1 and s.b - 1 or s.b
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
+    if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
     self:need("Which conflict resolution method should I use (for example MVP), or should it be off?")
   end
   function m:zone(s)

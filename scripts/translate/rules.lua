@@ -79,6 +79,7 @@ return function(intent, rule, words)
 
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
+  rule { "speed", "dtmult", near = { 3, "factor" } }  -- "speed-up factor 2"
   rule { "speed", "dtmult", prev = { 1, "x times" } }
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
     return g:followed_by(i, 4, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
@@ -89,6 +90,7 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", false, prev = { 2, "half double" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow slower faster accelerate decelerate", "spd" }
@@ -119,7 +121,7 @@ return function(intent, rule, words)
   rule { "create spawn generate creat", "create" }
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
-  rule { "add append insert give", "addwpt", near = { 8, "@route_nouns" },
+  rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 6, "@route_nouns" } }
   -- "add the point EXIT2": a point that is a known waypoint
@@ -172,8 +174,9 @@ return function(intent, rule, words)
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "say altitude", "report your heading": a question about the aircraft's state
-  rule { "say report", "pos", near = { 2, "altitude speed heading position level airspeed mach" } }
+  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "unpause op", "op" }
+  rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
@@ -193,6 +196,7 @@ return function(intent, rule, words)
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
   rule { "skip", "ff", next = "ahead forward" }
+  rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   rule { "reset", "reset" }

@@ -60,6 +60,13 @@ check_eq(said(tr("KLM77 descend flight level one three zero correction one one z
 check_eq(said(tr("BAW8CK speed two two zero knots correction two four zero")), "SPD BAW8CK 240")
 check_eq(said(tr("KLM77 turn left heading one nine her five")), "HDG KLM77 195 LEFT")
 check_eq(said(tr("make the simulation speed four times")), "DTMULT 4")
+-- sim control said in other words; RESO's one method is what "on" means
+check_eq(said(tr("please skip two hours forward")), "FF 7200")
+check_eq(said(tr("advance the sim fast for 2 minutes")), "FF 120")
+check_eq(said(tr("go on with the sim please")), "OP")
+check_eq(said(tr("set the time speed factor to 5")), "DTMULT 5")
+check_eq(said(tr("switch resolution on")), "RESO MVP")
+check_eq(said(tr("KLM77 report me your altitude")), "POS KLM77")
 -- false friends and prepositions of other languages: "actual" is the present value, "sink to a
 -- level" a descent, "feet for minute" a rate; a large step in feet is the cleared altitude
 check_eq(said(tr("KLM1234 keep the actual heading")), "HDG KLM1234 300")
@@ -180,6 +187,7 @@ check(rsim:exec("ADDWPT KLM77 HILLS"))
 local function rtr(text) return said(graph.translate(text, { sim = rsim, mode = "offline", waypoints = { "RIVER", "HILLS" } })) end
 check_eq(rtr("KLM77 please add the point RIVER at flight level 140"), "ADDWPT KLM77 RIVER FL140")
 check_eq(rtr("add RIVER to the route of KLM77 after HILLS"), "ADDWPT KLM77 RIVER,,,HILLS")
+check_eq(rtr("KLM77 put RIVER in the flight plan before HILLS"), "ADDWPT KLM77 RIVER,,,,HILLS")
 check_eq(rtr("KLM77 descend flight level 100 and then direct HILLS"), "ALT KLM77 FL100 ; DIRECT KLM77 HILLS")
 check_eq(rtr("klm77 dir HILLS"), "DIRECT KLM77 HILLS")
 -- a creation at a named place reads every labelled value
