@@ -117,6 +117,8 @@ return function(intent, rule, words)
 
   -- waypoints, creation and deletion
   rule { "define defwpt", "defwpt" }
+  rule { "addwpt", "addwpt" }
+  rule { "delwpt", "delwpt" }
   rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create spawn generate creat", "create" }
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
@@ -142,9 +144,9 @@ return function(intent, rule, words)
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dir proceed direct-to", "direct" }
   rule { "cleared", "direct", when = function(g) return #g.world.waypoints > 0 end }
-  rule { "destination", "dest" }
+  rule { "destination dest", "dest" }
   rule { "fly", "dest", next = "to" }
-  rule { "origin departed", "orig" }
+  rule { "origin departed orig", "orig" }
   rule { "lnav", "lnav" }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
@@ -155,6 +157,8 @@ return function(intent, rule, words)
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
+  -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
+  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "aircraft") end }
   rule { "details status info information state pos", "pos" }
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }

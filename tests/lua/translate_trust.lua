@@ -37,7 +37,9 @@ check_eq(said(tr("dlh4ax roc 800")), "VS DLH4AX 800")
 check_eq(said(tr("klm77 fl120 q9")), "ASK I have ALT KLM77 FL120. What does 'q9' mean?")
 check_eq(said(tr("klm77 fl120 6")), "ASK I have ALT KLM77 FL120. What does '6' mean?")
 -- an aircraft named that no command carries: the request was not all understood
-check_eq(said(tr("freeze the simulation and then tell me where KLM77 is")), "ASK I have HOLD. What does 'KLM77' mean?")
+check_eq(said(tr("freeze the simulation, KLM77 looks fine")), "ASK I have HOLD. What does 'KLM77' mean?")
+check_eq(said(tr("freeze the simulation and then tell me where KLM77 is")), "HOLD ; POS KLM77")
+check_eq(said(tr("where's DLH4AX?")), "POS DLH4AX")
 check_eq(said(tr("KLM1234 climb FL320 to avoid a conflict with KLM77")), "ALT KLM1234 FL320")
 -- a duration said but not understood asks; a time no command carries is a leftover
 check_eq(said(tr("please fast forward the sim")), "FF")
