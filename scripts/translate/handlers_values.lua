@@ -235,11 +235,16 @@ return function(H, f, wrap, compass)
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
       else
         local kt = q.value
-        -- assigned speeds are said as three digits: see H.cut_off
-        if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) then
+        -- an aircraft flying slower than 200 kt (a light aircraft) is given two-digit speeds
+        -- ("niner zero knots"); others' assigned speeds are said as three digits: see H.cut_off
+        local a = self:state(id)
+        local slow = a and (a.cas_kt or 0) > 0 and a.cas_kt < 200 and kt >= 40 and kt < 100
+        if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) and not slow then
           return self:need("What speed should " .. id .. " fly? I heard " .. q.number.digits .. ".")
         end
-        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 then kt = kt * 10 end  -- "speed one ninety"
+        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 and not slow then
+          kt = kt * 10  -- "speed one ninety"
+        end
         local r = self:repaired(q, kt, 40, 700, 10)
         if not r then return self:need("What speed should " .. id .. " fly? I heard " .. f.int(kt) .. ".") end
         -- assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error

@@ -129,6 +129,8 @@ return {
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
                "vacating", "when", "at" } },
+    -- "expedite through FL170": a rate while crossing a level, which squawk does not model
+    { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits
     { what = "orbits", words = "orbit orbits" },
     { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" } },

@@ -216,7 +216,7 @@ return function(intent, rule, words)
   rule { "resolution resolve reso", "reso" }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
-  rule { "protected pz separation zoner zonedh radius", "zone" }
+  rule { "protected pz separation zone zoner zonedh radius", "zone" }
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }

@@ -68,6 +68,9 @@ check_eq(said(tr("advance the sim fast for 2 minutes")), "FF 120")
 check_eq(said(tr("go on with the sim please")), "OP")
 check_eq(said(tr("set the time speed factor to 5")), "DTMULT 5")
 check_eq(said(tr("switch resolution on")), "RESO MVP")
+check_eq(said(tr("zone 4nm")), "ZONER 4")
+r = tr("KLM1234 climb FL300, expedite through FL270")
+check(said(r) == "ALT KLM1234 FL300" and r.note:find("expedite", 1, true) ~= nil, said(r))
 check_eq(said(tr("KLM77 report me your altitude")), "POS KLM77")
 -- false friends and prepositions of other languages: "actual" is the present value, "sink to a
 -- level" a descent, "feet for minute" a rate; a large step in feet is the cleared altitude
@@ -160,7 +163,7 @@ end
 -- partial flight number asks while other aircraft fly
 local csim = squawk.sim.new()
 for _, line in ipairs({ "CRE BAW456 A320 51.5 0.2 090 FL150 250", "CRE RYR7TK B738 51.7 0.4 270 FL190 270",
-    "CRE EZY33 A319 51.2 0.1 180 FL110 240" }) do
+    "CRE EZY33 A319 51.2 0.1 180 FL110 240", "CRE N77AB C172 51.3 0.5 000 3000 100" }) do
   check(csim:exec(line))
 end
 local function ctr(text) return said(graph.translate(text, { sim = csim, mode = "offline" })) end
@@ -169,6 +172,9 @@ check_eq(ctr("ryan air seven tango kilo climb flight level two one zero"), "ALT 
 check_eq(ctr("easy jet three three reduce speed two two zero"), "SPD EZY33 220")
 check_eq(ctr("speed bird four five turn left heading one two zero"), "ASK Did you mean BAW456? I heard BAW45.")
 check_eq(ctr("ryan air seven tango climb flight level two one zero"), "ASK Did you mean RYR7TK? I heard RYR7T.")
+-- two spoken digits are a light aircraft's speed, an airliner's cut off
+check_eq(ctr("november seven seven alpha bravo reduce speed eight zero knots"), "SPD N77AB 80")
+check(ctr("speed bird four five six reduce speed eight zero knots"):find("^ASK What speed") ~= nil, "cut off")
 
 -- values as people write and say them: space-grouped thousands, rates in feet a minute and
 -- metres per second (negative when said so), minutes and seconds, "flightlevel", a route
