@@ -202,6 +202,13 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       add(RefKind::kAircraft, a->id, i, i + 1, true, false);
       continue;
     }
+    // a typed callsign split after its airline ("ezy 451"): only an aircraft's exact id
+    if (i + 1 < t.size() && t[i + 1].kind == TokKind::kNumber && !used[i + 1] && raw.size() == 3 && is_alpha(raw)) {
+      if (const AircraftView* a = world_id(raw + t[i + 1].raw)) {
+        add(RefKind::kAircraft, a->id, i, i + 2, true, false);
+        continue;
+      }
+    }
     // a waypoint named like a letter of the phonetic alphabet, said after digits or
     // letters, spells a callsign ("november one two three alpha bravo")
     const bool spelling = names.phonetic_letter(t[i].text) != 0 && i > 0 &&

@@ -57,6 +57,9 @@ check_eq(said(tr("dlh4ax rt 40\u{B0}")), "HDG DLH4AX 130 RIGHT")
 check_eq(said(tr("KLM1234 25 degrees left")), "HDG KLM1234 275 LEFT")
 check_eq(said(tr("klm77 rte?")), "LISTRTE KLM77")
 check_eq(said(tr("klm77 pos?")), "POS KLM77")
+-- a typed callsign split after its airline is that aircraft only when the joined id is exact
+check(said(tr("klm 1243 fl310")):find("^ASK") ~= nil, said(tr("klm 1243 fl310")))
+check_eq(said(tr("klm 1234 fl310")), "ALT KLM1234 FL310")
 -- a correction followed by its new value: the value after it counts, however it is said
 check_eq(said(tr("KLM77 descend flight level one three zero correction one one zero")), "ALT KLM77 FL110")
 check_eq(said(tr("BAW8CK speed two two zero knots correction two four zero")), "SPD BAW8CK 240")
