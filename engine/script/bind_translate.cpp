@@ -27,6 +27,11 @@
 //       The corpus scoring rules (shared/corpora/README.md): `produced` is
 //       "CMD ; CMD", `asked` true when the translator asked instead.
 //   squawk.translate.corpus(path) -> {{id=, setup=, utterance=, expected=, category=}, ...}
+//   squawk.translate.evaluate(path, translator) -> {cases=, right=, asked=, wrong=}
+//       eval-translate's scoring (translate::evaluate, engine/translate/corpus.h):
+//       translator(case) is called with each case table as corpus() gives it
+//       and returns a graph result ({commands}, {ask}, .confirm, .error); an
+//       error raised by it stops the evaluation, naming the case.
 #include "core/units.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
@@ -101,6 +106,17 @@ translate::StaticWorld read_world(lua_State* L, int idx) {
   return w;
 }
 
+void push_case(lua_State* L, const translate::CorpusCase& c) {
+  lua_createtable(L, 0, 5);
+  const std::pair<const char*, const std::string*> fields[] = {
+      {"id", &c.id}, {"setup", &c.setup}, {"utterance", &c.utterance}, {"expected", &c.expected},
+      {"category", &c.category}};
+  for (const auto& [k, v] : fields) {
+    lua_pushstring(L, v->c_str());
+    lua_setfield(L, -2, k);
+  }
+}
+
 int l_score(lua_State* L) {
   const std::string produced = arg_string(L, 1, "produced");
   const bool asked = lua_toboolean(L, 2) != 0;
@@ -114,16 +130,39 @@ int l_corpus(lua_State* L) {
   check_status(cases.status());
   lua_createtable(L, static_cast<int>(cases->size()), 0);
   for (size_t i = 0; i < cases->size(); ++i) {
-    const auto& c = (*cases)[i];
-    lua_createtable(L, 0, 5);
-    const std::pair<const char*, const std::string*> fields[] = {
-        {"id", &c.id}, {"setup", &c.setup}, {"utterance", &c.utterance}, {"expected", &c.expected},
-        {"category", &c.category}};
-    for (const auto& [k, v] : fields) {
-      lua_pushstring(L, v->c_str());
-      lua_setfield(L, -2, k);
-    }
+    push_case(L, (*cases)[i]);
     lua_seti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  return 1;
+}
+
+int l_evaluate(lua_State* L) {
+  auto cases = translate::read_corpus(readable(L, arg_string(L, 1, "path"), "corpus"));
+  check_status(cases.status());
+  if (!lua_isfunction(L, 2)) throw ArgError("translator: expected a function(case) -> graph result");
+  std::string failure;
+  const translate::EvalReport report = translate::evaluate(*cases, [&](const translate::CorpusCase& c) {
+    Result<translate::Translation> tr = Status::internal("not run: an earlier case failed");
+    if (!failure.empty()) return tr;
+    const int top = lua_gettop(L);
+    lua_pushvalue(L, 2);
+    push_case(L, c);
+    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+      failure = c.id + ": " + error_text(L, -1);
+    } else {
+      tr = read_graph_result(L);
+      if (!tr.is_ok()) failure = c.id + ": " + tr.status().message();
+    }
+    lua_settop(L, top);
+    return tr;
+  });
+  if (!failure.empty()) throw ArgError("evaluate: " + failure);
+  lua_createtable(L, 0, 4);
+  const std::pair<const char*, int> counts[] = {
+      {"cases", report.cases}, {"right", report.correct}, {"asked", report.asked}, {"wrong", report.wrong}};
+  for (const auto& [k, v] : counts) {
+    lua_pushinteger(L, v);
+    lua_setfield(L, -2, k);
   }
   return 1;
 }
@@ -445,6 +484,7 @@ void bind_translate(lua_State* L) {
   const luaL_Reg fns[] = {{"run", guarded<l_run>},
                           {"score", guarded<l_score>},
                           {"corpus", guarded<l_corpus>},
+                          {"evaluate", guarded<l_evaluate>},
                           {"utterance", guarded<l_utterance>},
                           {"best_match", guarded<l_best_match>},
                           {"json_decode", guarded<l_json_decode>},

@@ -42,8 +42,9 @@ void read_lines(lua_State* L, const char* key, std::vector<std::string>& out) {
   lua_pop(L, 1);
 }
 
-// Reads the graph's result table at the stack top.
-Result<translate::Translation> read_result(lua_State* L) {
+}  // namespace
+
+Result<translate::Translation> read_graph_result(lua_State* L) {
   if (!lua_istable(L, -1))
     return Status::invalid("translation graph: translate() must return {commands = {...}} or {ask = \"...\"}");
   translate::Translation tr;
@@ -62,6 +63,8 @@ Result<translate::Translation> read_result(lua_State* L) {
   if (!tr.error.empty()) tr.commands.clear();  // a rejected candidate is never issued
   return tr;
 }
+
+namespace {
 
 // Runs fn(L) (which leaves one value) under pcall; the error becomes a Status.
 template <class F>
@@ -82,7 +85,7 @@ Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
     lua_settop(L, top);
     return Status::internal(msg);
   }
-  auto tr = read_result(L);
+  auto tr = read_graph_result(L);
   lua_settop(L, top);
   return tr;
 }

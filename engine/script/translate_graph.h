@@ -34,6 +34,10 @@ struct GraphRequest {
 
 Result<translate::Translation> run_translation_graph(Vm& vm, const std::string& text, const GraphRequest& req);
 
+// Reads a graph result table (translate()'s shape) at the stack top, leaving
+// it there; a result of another shape comes back as a Status.
+Result<translate::Translation> read_graph_result(lua_State* L);
+
 // Pushes the translate.graph module (loaded once per Lua state through the
 // sandbox's require); raises the Lua error of a module that fails to load.
 void push_graph_module(lua_State* L);

@@ -136,7 +136,7 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
     if (q.kind == QKind::kPlain || q.kind == QKind::kAlt || q.kind == QKind::kMach) {
       if (word_at(t, j, {"ft", "feet", "foot"})) {
         ++j;
-        if (word_at(t, j, {"per"}) && word_at(t, j + 1, {"minute", "min", "mn"})) {
+        if (word_at(t, j, {"per", "a", "for"}) && word_at(t, j + 1, {"minute", "min", "mn"})) {  // "feet a minute"
           q.kind = QKind::kVs;
           j += 2;
         } else if (q.kind != QKind::kAlt) {
@@ -150,6 +150,11 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
         q.value *= 1000.0;
         ++j;
         if (word_at(t, j, {"ft", "feet"})) ++j;
+      } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) && word_at(t, j + 1, {"per", "a"}) &&
+                 word_at(t, j + 2, {"s", "second", "sec"}) && q.kind == QKind::kPlain) {
+        q.kind = QKind::kVs;  // "10 metres per second", "m/s" -> [ft/min], whole
+        q.value = std::round(q.value / 0.3048 * 60.0);
+        j += 3;
       } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) && q.kind == QKind::kPlain) {
         q.kind = QKind::kAlt;
         q.value = std::round(q.value / 0.3048 / 100.0) * 100.0;
@@ -157,7 +162,7 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       } else if (word_at(t, j, {"kt", "kts", "knots", "knot", "kias", "kn", "kts."})) {
         q.kind = QKind::kSpeed;
         ++j;
-      } else if (word_at(t, j, {"mach"})) {
+      } else if (word_at(t, j, {"mach"}) && q.kind != QKind::kAlt) {  // ("FL320 M.78": two values)
         q.kind = QKind::kMach;
         ++j;
       } else if (word_at(t, j, {"degrees", "degree", "deg", "\xC2\xB0"})) {

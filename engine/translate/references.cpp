@@ -202,7 +202,19 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       add(RefKind::kAircraft, a->id, i, i + 1, true, false);
       continue;
     }
-    if (in_list(wpts, raw)) {
+    // a typed callsign split after its airline ("ezy 451"): only an aircraft's exact id
+    if (i + 1 < t.size() && t[i + 1].kind == TokKind::kNumber && !used[i + 1] && raw.size() == 3 && is_alpha(raw)) {
+      if (const AircraftView* a = world_id(raw + t[i + 1].raw)) {
+        add(RefKind::kAircraft, a->id, i, i + 2, true, false);
+        continue;
+      }
+    }
+    // a waypoint named like a letter of the phonetic alphabet, said after digits or
+    // letters, spells a callsign ("november one two three alpha bravo")
+    const bool spelling = names.phonetic_letter(t[i].text) != 0 && i > 0 &&
+                          (t[i - 1].kind == TokKind::kNumber || is_number_word(t[i - 1]) ||
+                           names.phonetic_letter(t[i - 1].text) != 0);
+    if (in_list(wpts, raw) && !spelling) {
       add(RefKind::kWaypoint, text::upper(raw), i, i + 1, true, false);
       continue;
     }
@@ -271,15 +283,18 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       }
     }
     for (size_t len = std::min(names.max_telephony_words(), t.size() - i); len >= 1; --len) {
-      std::string phrase;
+      std::string phrase, joined;
       bool ok = true;
       for (size_t k = i; k < i + len; ++k) {
         ok = ok && !used[k] && is_word(t[k]);
         if (k > i) phrase += ' ';
         phrase += t[k].text;
+        joined += t[k].text;
       }
       if (!ok) continue;
+      // a designator split by speech recognition ("speed bird", "ryan air") is that designator
       auto icao = names.airline_by_telephony(phrase);
+      if (!icao && len > 1) icao = names.airline_by_telephony(joined);
       if (!icao) continue;
       Suffix suf = read_suffix(t, i + len, used, names, t[i].text);
       if (suf.groups.empty() || names.phonetic_letter(t[i + len].text) != 0) break;
@@ -354,7 +369,19 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       CallsignMatch m = match_world("", words, suf, fleet, names);
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
       double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;
-      if (m.score >= need && m.groups > 0) add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
+      if (m.score >= need && m.groups > 0) {
+        // With several aircraft flying it was heard inexactly unless every digit and letter
+        // said is the aircraft's and either the words are its airline's or no other aircraft
+        // has that number (speech recognition garbles airline names far more than digits);
+        // with one aircraft there is nothing to confuse it with.
+        const std::string said = text::upper(suf.joined(m.groups));
+        const bool number_unique = std::count_if(fleet.begin(), fleet.end(), [&](const AircraftView& a) {
+                                     return text::iequals(split_id(a.id).second, said);
+                                   }) == 1;
+        if (fleet.size() > 1 && (said != text::upper(split_id(m.id).second) || (m.airline < 1.0 && !number_unique)))
+          heard = {text::upper(words) + said, m.airline, m.digits};
+        add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
+      }
     }
   }
   // Waypoint and airport names: upper-case words that are nothing else.

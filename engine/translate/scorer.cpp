@@ -13,10 +13,20 @@ namespace {
 
 enum class Arg { kWord, kNum, kMagnitude, kAlt, kSpd, kHdg, kTurn, kLat, kLon, kRest };
 
+// Words and comma-separated arguments; an argument left out between commas
+// ("ADDWPT KL204 SPY,,,AFTERWP") keeps its place as an empty one. A comma
+// at either end of a word only separates ("ALT KL204, FL100"), and trailing
+// empty arguments are dropped.
 std::vector<std::string> tokens(std::string_view cmd) {
-  std::string c(cmd);
-  std::replace(c.begin(), c.end(), ',', ' ');
-  return text::split_ws(c);
+  std::vector<std::string> out;
+  for (const auto& w : text::split_ws(cmd)) {
+    if (w.find_first_not_of(',') == std::string::npos) continue;  // a lone comma separates
+    auto parts = text::split(w, ',');
+    const size_t b = w.front() == ',' ? 1 : 0, e = parts.size() - (w.size() > 1 && w.back() == ',' ? 1 : 0);
+    for (size_t i = b; i < e; ++i) out.push_back(std::move(parts[i]));
+  }
+  while (!out.empty() && out.back().empty()) out.pop_back();
+  return out;
 }
 
 std::optional<double> alt_ft(const std::string& s) {
@@ -62,6 +72,7 @@ bool same_arg(const std::string& a, const std::string& b, Arg kind) {
     auto u = text::to_double(x), v = text::to_double(y);
     return u && v && std::fabs(*u - *v) <= tol;
   };
+  if (a.empty() || b.empty()) return a.empty() && b.empty();
   switch (kind) {
     case Arg::kAlt: {
       auto u = alt_ft(a), v = alt_ft(b);
@@ -101,7 +112,11 @@ bool same_arg(const std::string& a, const std::string& b, Arg kind) {
 // Argument kinds after the command name; the last kind repeats.
 std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string>& args) {
   using A = Arg;
-  if (cmd == "CRE") return {A::kWord, A::kWord, A::kLat, A::kLon, A::kHdg, A::kAlt, A::kSpd};
+  if (cmd == "CRE") {
+    if (args.size() >= 3 && !text::to_double(args[2]))  // at a named place: CRE acid type WPT hdg alt spd
+      return {A::kWord, A::kWord, A::kWord, A::kHdg, A::kAlt, A::kSpd};
+    return {A::kWord, A::kWord, A::kLat, A::kLon, A::kHdg, A::kAlt, A::kSpd};
+  }
   if (cmd == "MOVE") return {A::kWord, A::kLat, A::kLon, A::kAlt, A::kHdg, A::kSpd, A::kNum};
   if (cmd == "ALT") return {A::kWord, A::kAlt, A::kMagnitude};  // ALT reads |vspd|
   if (cmd == "SPD") return {A::kWord, A::kSpd};

@@ -153,6 +153,44 @@ loading = false
 -- handler(name, fn): a new handler method fn(g, s, spec) for intents to name.
 function M.handler(name, fn) G[name] = fn end
 
+-- ---- written forms ----
+
+-- Rewrites written forms the extractors read as other words:
+--  * lexicon.shorthand prefixes before a value: "ryr81jc fl240 s270" ->
+--    "ryr81jc fl240 speed 270", "l 330" -> "left 330" (only a whole token
+--    that is a prefix and digits, or a prefix before a token starting with a
+--    digit, not after a number: "33.95 S 151.18 E" is a hemisphere;
+--    "dlh4ax" and "fl240" are left alone);
+--  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", and
+--    speech recognition's "nine her" -> "niner", and a degree sign ending
+--    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
+--  * thousands grouped with a space: "18 000 feet" -> "18000 feet" (a
+--    group of three digits that is "000" or is followed by feet).
+local function written_forms(text)
+  local sh = lexicon.shorthand
+  text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
+    local w = sh[pre:lower()]
+    return w and (w .. " " .. digits) or nil
+  end)
+  text = text:gsub("()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
+    local w = sh[pre:lower()]
+    if not w then return nil end
+    local before = text:sub(1, at - 1):match("(%S+)%s*$")
+    if before and before:match("^[%d%.,%-]+$") then return nil end
+    return w .. space .. digit
+  end)
+  text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
+  text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
+  text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
+  text = text:gsub("(%d)\xC2\xB0(%s)", "%1 degrees%2"):gsub("(%d)\xC2\xB0$", "%1 degrees")
+  return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
+    if b == "000" or text:sub(at):match("^%s*[Ff][Ee]?[Ee]?[Tt]%f[%A]") or text:sub(at):match("^%s*[Ff][Oo][Oo][Tt]") then
+      return a .. b
+    end
+    return nil
+  end))
+end
+
 -- ---- the state of one translation ----
 
 function G:word(i, words)
@@ -414,6 +452,7 @@ function G:parse(b, e)
       local n_before = #self.out
       local at = self:at_altitude(s)
       local spec = M.intents[s.intent]
+      self:at_waypoint(s, spec)
       self[spec and spec.handler or "infer"](self, s, spec)
       if not self.ask and #self.out > n_before then
         self:leftovers(s)
@@ -428,10 +467,24 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif s["then"] == "then" and before and #self.out == n_before + 1
+      elseif s["then"] == "then" and before and #self.out == n_before + 1 and spec and spec.value
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       end
+    end
+  end
+end
+
+-- "cross ARTIP at 220 knots", "at TP2 be at FL200": a value instruction
+-- tied to a waypoint is a constraint the grammar does not translate (an
+-- AT condition); asked, never issued at once.
+function G:at_waypoint(s, spec)
+  if not (spec and spec.value) and s.intent ~= "infer" then return end
+  for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+    if self:word(r.b - 1, "at cross crossing over abeam overhead") then
+      return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
+        .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
+        r.name, r.name))
     end
   end
 end
@@ -501,9 +554,14 @@ function G:unexplained(s, n_before)
   local corrected = 0
   for i = s.b, s.e - 1 do if self:word(i, "@correction") then corrected = i end end
   local relative = self:word_in(s.b, s.e, "@relative @same_as @below @above")
+  -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7")
+  local opened = s.intent ~= "infer" and s.trig or nil
+  for _, q in ipairs(self:quantities(s.b, s.e)) do
+    if not opened and own_unit(q) then opened = q.b end
+  end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
-        and q.b > corrected and ((q.b > s.trig and s.intent ~= "infer") or own_unit(q))
+        and q.b > corrected and ((opened and q.b > opened) or own_unit(q))
         and not value_carried(q, nums) then
       local b = q.b
       for _, r in ipairs(self.refs) do
@@ -517,10 +575,71 @@ function G:unexplained(s, n_before)
   end
 end
 
+-- "descend flight level one two zero, uh, correction": a correction with
+-- nothing after it says the request is wrong without saying how; asked.
+function G:dangling_correction()
+  local last = #self.t
+  while last > 0 and (self.t[last].kind == "punct" or self.t[last].filler) do last = last - 1 end
+  if last > 0 and self:word(last, "@correction") then
+    self:need("You said 'correction' with nothing after it. What is the corrected instruction?")
+  end
+end
+
+-- A time, position, level or speed said that no command carries ("in 5
+-- minutes, delete TEST03": a delay the grammar does not give; "define A1 at
+-- 52.0 4.0 and A2 at 52.0 5.0": a second waypoint not made) is a leftover,
+-- asked about by name. (Values said relative to something, or before a
+-- correction, are the instructions' to explain.)
+local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true }
+function G:uncarried()
+  if self:word_in(1, #self.t + 1, "@relative @same_as @below @above") then return end
+  local nums = {}
+  for _, line in ipairs(self.out) do
+    for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
+  end
+  local corrected = 0
+  for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    -- (a plain number with a decimal point is a coordinate; other plain ones are often recognition noise)
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b] and not q.by and q.b > corrected and not value_carried(q, nums) then
+      local words = {}
+      for k = q.b, q.e - 1 do words[#words + 1] = self.t[k].raw end
+      self.leftover = table.concat(words, " ")
+      return
+    end
+  end
+end
+
+-- A name that reads like a callsign no aircraft has, or an aircraft that
+-- no command carries ("ezy45 fl150 x7", "pause, then tell me where BAW123
+-- is"), is a leftover, asked about by name.
+function G:unknown_names()
+  if #self.fleet == 0 then return end
+  local out = table.concat(self.out, " "):upper()
+  local function meant(r)  -- a slip the speaker confirmed ("KLM1243" -> yes, KLM1234)
+    for _, id in ipairs(self:near_callsigns(r.name)) do
+      if (self.world.confirmed or {})[id] then return true end
+    end
+    return false
+  end
+  -- an aircraft named as a reference for another's value ("the same heading as AC02") or as the
+  -- reason for an instruction ("to avoid a conflict between AC01 and AC02") is explained
+  local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and (not r.exists or not compared) and not r.false_start
+        and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
+      local words = {}
+      for k = r.b, r.e - 1 do words[#words + 1] = self.t[k].raw end
+      self.leftover = table.concat(words, " ")
+      return
+    end
+  end
+end
+
 -- True when the text holds a word that starts an instruction of its own
 -- (the dialogue tells an answer to its question from a new request by it).
 function M.has_instruction(text)
-  local u = squawk.translate.utterance(text, nil, NAMES)
+  local u = squawk.translate.utterance(written_forms(text), nil, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = { aircraft = {}, waypoints = {} },
     fleet = {}, out = {}, qcache = {} }, G)
   for i = 1, #g.t do
@@ -582,14 +701,15 @@ end
 
 -- ---- what squawk does not simulate ----
 
--- True when one of `near` (words; "#number" any number, "#waypoint" a
--- waypoint name) is within 4 tokens after i.
+-- True when one of `near` (words or typed numbers as written; "#number"
+-- any number, "#waypoint" a waypoint name) is within 4 tokens after i.
 function G:near_any(i, near)
   for k = i + 1, math.min(#self.t, i + 4) do
     local t = self.t[k]
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
-          or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0) or (t.kind == "word" and t.text == w) then
+          or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0)
+          or ((t.kind == "word" or t.kind == "number") and t.text == w) then
         return true
       end
     end
@@ -632,7 +752,8 @@ function G:not_simulated()
         if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
           break
         end
-        if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact") then
+        -- (a turn direction goes on: "make a left three sixty" is one orbit)
+        if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right") then
           break
         end
         e = e + 1
@@ -668,7 +789,8 @@ function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
-  local u = squawk.translate.utterance(require("translate.types").join(text, TYPES.phrases), world, NAMES)
+  local u = squawk.translate.utterance(require("translate.types").join(written_forms(text), TYPES.phrases),
+    world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {} }, G)
   g:settle_callsigns()
@@ -684,6 +806,9 @@ function M.translate(text, world)
     end
   end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
+  if not g.ask then g:dangling_correction() end
+  if not g.ask and not g.leftover then g:unknown_names() end
+  if not g.ask and not g.leftover then g:uncarried() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end

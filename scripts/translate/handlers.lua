@@ -99,7 +99,9 @@ function m:acids(s)
   for _, r in ipairs(self.refs) do if r.kind == "aircraft" and r.exists then any_known = true end end
   local function take(b, e)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
-      if (r.exists or not any_known) and not seen[r.name] and not r.false_start then
+      -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
+      if (r.exists or not any_known) and not seen[r.name] and not r.false_start
+          and not self:preceded_by(r.b, 3, "@aircraft_context") then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -217,11 +219,14 @@ function m:settle_callsigns()
 end
 
 -- True when the heard callsign's airline and digits are those of exactly one
--- aircraft, which is `name`, and at most its last letters went unheard
--- ("speedbird nine six" for BAW96CA; "two alpha charlie" is not DLH2AB).
+-- aircraft, which is `name`, and every letter after them was heard too
+-- ("speedbird nine six" is not BAW96CA, "two alpha charlie" not DLH2AB);
+-- with one aircraft flying (nothing to confuse it with) its last letters
+-- may have gone unheard.
 function m:airline_and_digits_match(heard, name)
-  local a, d = airline_digits(heard)
+  local a, d, rest = airline_digits(heard)
   if a == "" or d == "" or self:letters_conflict(heard, name) then return false end
+  if #self.fleet > 1 and rest ~= select(3, airline_digits(name)) then return false end
   local n = 0
   for _, ac in ipairs(self.fleet) do
     local a2, d2 = airline_digits(ac.id)
@@ -355,6 +360,23 @@ function m:whole_hundreds(q)
   return nil
 end
 
+-- The candidates of a value instruction: `cands` (those with a unit, else
+-- the plain ones), unless a correction is followed by a value of either
+-- kind ("flight level two four zero correction two six zero"): then the
+-- values after the last correction word.
+function m:corrected(cands, with_unit, plain, s)
+  local corr
+  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
+  if not corr then return cands end
+  local later = {}
+  for _, list in ipairs({ with_unit, plain }) do
+    for _, q in ipairs(list) do if q.b > corr then later[#later + 1] = q end end
+  end
+  if #later == 0 then return cands end
+  table.sort(later, function(a, b) return a.b < b.b end)
+  return later
+end
+
 -- Which candidate counts: after "correction" the first one after it; when
 -- the instruction word is repeated, the last; else the first.
 -- The value picked is taken (G:take): the leftover check knows it was read.
@@ -394,18 +416,18 @@ function m:at_altitude(s)
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end
 
--- "AC02: heading 180, FL200, 250 kts": values with units of another kind
--- after a value instruction are instructions too.
+-- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with
+-- units of another kind around a value instruction or a direct-to are
+-- instructions too.
+local CARRIES_OTHERS = { hdg = true, alt = true, spd = true, infer = true, maintain = true, vs = true, direct = true }
 function m:leftovers(s)
-  if s.intent ~= "hdg" and s.intent ~= "alt" and s.intent ~= "spd" and s.intent ~= "infer" and s.intent ~= "maintain" then
-    return
-  end
+  if not CARRIES_OTHERS[s.intent] then return end
   local ids = self:acids(s)
   if #ids ~= 1 then return end
   local out = table.concat(self.out, " ; ")
-  local alt_done = s.intent == "alt" or out:find("ALT " .. ids[1], 1, true) ~= nil
+  local alt_done = s.intent == "alt" or out:find("ALT " .. ids[1] .. " ", 1, true) ~= nil
   local spd_done = s.intent == "spd" or out:find("SPD " .. ids[1], 1, true) ~= nil
-  local hdg_done = false
+  local hdg_done = s.intent == "direct"  -- a direct-to is its lateral instruction
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300")
     local unit = (q.kind == "alt" and q.fl) or q.kind == "speed" or q.kind == "mach"

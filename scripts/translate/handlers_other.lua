@@ -104,7 +104,10 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.b < from then goto continue end
       local seen = false
-      for _, v in ipairs(read) do if v and math.abs(v - q.value) < 1e-9 then seen = true end end
+      for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
+        local v = read[k]
+        if v and math.abs(v - q.value) < 1e-9 then seen = true end
+      end
       if not seen and (q.kind == "plain" or q.kind == "dist") then left[#left + 1] = q end
       ::continue::
     end
@@ -334,23 +337,31 @@ return function(H, f, compass)
     if not id then return end
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig)
+    -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
+    local at = self:find_word(s.trig, s.e, "after before")
+    local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
     local where
     if lat and lon then
       where = f.num(lat) .. " " .. f.num(lon)
     else
-      where = self:waypoint(s.trig, s.e, id)
+      where = self:waypoint(s.trig, next_to and at or s.e, id)
       if not where and self:word_in(s.trig, s.e, "it") then where = self.last_waypoint end
       if not where then
         return self:need("Where should the waypoint for " .. id .. " be? Please give a name or a latitude and longitude.")
       end
     end
-    local cmd = "ADDWPT " .. id .. " " .. where
     local alt, spd
     for _, q in ipairs(qs) do
       if q.kind == "alt" and not alt then alt = f.alt(q.value, q.fl) end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
       if q.kind == "mach" and not spd then spd = f.mach(q.value) end
     end
+    if next_to then
+      local after = self:word(at, "after")
+      return self:emit("ADDWPT " .. id .. " " .. where .. "," .. (alt or "") .. "," .. (spd or "") .. ","
+        .. (after and next_to.name or "," .. next_to.name))
+    end
+    local cmd = "ADDWPT " .. id .. " " .. where
     if alt or spd then cmd = cmd .. " " .. (alt or "") end
     if spd then cmd = cmd .. " " .. spd end
     self:emit(cmd)
@@ -449,13 +460,31 @@ return function(H, f, compass)
 
   function m:fast_forward(s)
     local q = first(self, s, { time = true, mult = true })
-    if not q then return self:emit("FF") end
+    if not q then
+      -- "fast forward" alone runs fast-time until stopped; more words ("a bit", "an hour and
+      -- a half") said a duration that was not understood
+      for i = s.trig + 1, s.e - 1 do
+        local t = self.t[i]
+        if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things") then
+          return self:need("For how long should the simulation fast-forward? Please give a time.")
+        end
+      end
+      return self:emit("FF")
+    end
     if q.kind == "time" then
       -- "2 min 30 s": times in a row add up
       local total, last = 0, nil
       for _, t in ipairs(self:quantities(q.b, s.e)) do
-        if t.kind ~= "time" or (last and t.b - last.e > 1) then break end
-        total, last = total + t.value, t
+        if last and t.b - last.e > 1 then break end
+        if t.kind == "plain" and last and t.value > 0 and t.value < 60 then
+          -- "one minute thirty", "an hour fifteen": the next smaller unit, its word left out
+          if self:word(last.e - 1, "minute minutes min mins") then total = total + t.value end
+          if self:word(last.e - 1, "hour hours") then total = total + 60 * t.value end
+          self:take(t)
+          break
+        end
+        if t.kind ~= "time" then break end
+        total, last = total + t.value, self:take(t)
       end
       return self:emit("FF " .. f.num(total))
     end
@@ -497,6 +526,7 @@ return function(H, f, compass)
     local b = s.b > 1 and s.b - 1 or s.b
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
+    if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
     self:need("Which conflict resolution method should I use (for example MVP), or should it be off?")
   end
   function m:zone(s)

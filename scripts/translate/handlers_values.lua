@@ -17,6 +17,7 @@ return function(H, f, wrap, compass)
         return self:need("What should happen at that position: a waypoint, direct to it, or moving the aircraft there?")
       end
       if q.kind == "mult" then return self:time_mult(s) end
+      if q.kind == "angle" and q.turn ~= 0 then return self:heading(s) end  -- "15 deg left", "20 right"
     end
     for _, q in ipairs(qs) do
       local n = q.number
@@ -88,7 +89,7 @@ return function(H, f, wrap, compass)
         end
       end
     end
-    local target = self:pick(#with_unit > 0 and with_unit or plain, s, "maintain")
+    local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local now = self:state(ids[1])
     local dir = self:direction(s)
     local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"
@@ -118,6 +119,10 @@ return function(H, f, wrap, compass)
     end
     if fl and q.number.value >= 1000 then  -- "flight level 9000": levels have three digits
       return self:need("Which flight level for " .. ids[1] .. "? I heard flight level " .. f.int(q.number.value) .. ".")
+    end
+    -- flight levels start above the transition altitude: a spoken "flight level two zero" lost a digit
+    if fl and ft < 3000 and not q.number.typed then
+      return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
     end
     if fl and ft > 60000 then
       return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
@@ -157,7 +162,8 @@ return function(H, f, wrap, compass)
       local cur = now.alt_ft or 0
       local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
       local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)
-      if by_fits and to_fits then
+      -- (a change of 4000 ft or more is a cleared altitude: nobody clears a 4000 ft step by its size)
+      if by_fits and to_fits and ft < 4000 then
         return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
       end
     end
@@ -197,7 +203,7 @@ return function(H, f, wrap, compass)
       if q.kind == "speed" or q.kind == "mach" or q.kind == "percent" then with_unit[#with_unit + 1] = q end
       if q.kind == "plain" and (q.b >= s.trig or q.number.typed) then plain[#plain + 1] = q end
     end
-    local q = self:pick(#with_unit > 0 and with_unit or plain, s, "speed")
+    local q = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "speed")
     -- "Match AC02's speed to AC01" / "the same speed as AC01"
     local refs = self:refs_in(s.b, s.e, "aircraft")
     if not q and #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
@@ -229,11 +235,16 @@ return function(H, f, wrap, compass)
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
       else
         local kt = q.value
-        -- assigned speeds are said as three digits: see H.cut_off
-        if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) then
+        -- an aircraft flying slower than 200 kt (a light aircraft) is given two-digit speeds
+        -- ("niner zero knots"); others' assigned speeds are said as three digits: see H.cut_off
+        local a = self:state(id)
+        local slow = a and (a.cas_kt or 0) > 0 and a.cas_kt < 200 and kt >= 40 and kt < 100
+        if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) and not slow then
           return self:need("What speed should " .. id .. " fly? I heard " .. q.number.digits .. ".")
         end
-        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 then kt = kt * 10 end  -- "speed one ninety"
+        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 and not slow then
+          kt = kt * 10  -- "speed one ninety"
+        end
         local r = self:repaired(q, kt, 40, 700, 10)
         if not r then return self:need("What speed should " .. id .. " fly? I heard " .. f.int(kt) .. ".") end
         -- assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error
@@ -255,7 +266,7 @@ return function(H, f, wrap, compass)
       elseif q.kind == "angle" then
         rel_c[#rel_c + 1] = q
       end
-      if q.kind == "alt" or q.kind == "speed" then break end
+      if q.b > s.trig and (q.kind == "alt" or q.kind == "speed") then break end
     end
     -- "turn right 20", "left 90": a typed number of one or two digits after a turn
     -- direction, with no "heading", is the degrees of the turn (headings have three)

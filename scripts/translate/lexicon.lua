@@ -50,6 +50,10 @@ return {
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
         "show", "send", "sent", "held", "lead", },
   },
+  -- typed shorthand: a prefix written before its value, glued or apart
+  -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
+  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right",
+                rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
   -- words before a level that make the next instruction wait for it
@@ -71,10 +75,14 @@ return {
   up = { "climb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
   down = { "descend", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
            "descending", "decelerate", "minus" },
+  -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
+  aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
+                       "than", "traffic" },
   below = { "below", "under" },
   above = { "above", "over" },
-  relative = { "present", "current", "by" },
-  present = { "present", "current", "continue" },
+  relative = { "present", "current", "actual", "by" },
+  -- ("actual": the false friend of the present one, in several languages)
+  present = { "present", "current", "actual", "continue" },
   same_as = { "match", "same", "as" },
   -- switches
   off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },
@@ -102,7 +110,7 @@ return {
   -- one of `near` within 4 words after it, when given) and runs to the end
   -- of its clause; it is named in the reply, never translated
   not_simulated = {
-    { what = "transponder codes", words = "squawk squawking",
+    { what = "transponder codes", words = "squawk squawking sq",
       near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
     { what = "transponder codes", words = "transponder ident" },
     { what = "radio frequencies", words = "contact monitor frequency freq" },
@@ -117,6 +125,15 @@ return {
     -- end of the request: the words in it describe the other aircraft, they instruct nobody
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
       to_end = true },
+    -- "report passing FL100", "report established": a report the pilot makes, no instruction
+    { what = "position reports", words = "report reporting",
+      near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
+               "vacating", "when", "at" } },
+    -- "expedite through FL170": a rate while crossing a level, which squawk does not model
+    { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
+    -- "make a left three sixty", "orbit right": squawk flies no orbits
+    { what = "orbits", words = "orbit orbits" },
+    { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" } },
     { what = "holding patterns", words = "holding" },
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" } },
@@ -135,7 +152,7 @@ return {
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
     alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",
-    hotel = "H", india = "I", juliet = "J", juliett = "J", kilo = "K", lima = "L", mike = "M",
+    hotel = "H", india = "I", juliet = "J", juliett = "J", juliette = "J", kilo = "K", lima = "L", mike = "M",
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
   },

@@ -79,13 +79,18 @@ return function(intent, rule, words)
 
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
+  rule { "speed", "dtmult", near = { 3, "factor" } }  -- "speed-up factor 2"
   rule { "speed", "dtmult", prev = { 1, "x times" } }
+  rule { "speed spd airspeed", "dtmult", when = function(g, i)
+    return g:followed_by(i, 4, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
   rule { "speed spd airspeed", false, prev = { 2, "half double" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow slower faster accelerate decelerate", "spd" }
@@ -104,6 +109,7 @@ return function(intent, rule, words)
   rule { "around", false, prev = { 3, "turn" } }
 
   -- vertical speed and bank
+  rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
   rule { "vertical", "vs", next = "speed rate" }
   rule { "rate", "vs", not_prev = { 1, "vertical" } }
@@ -111,13 +117,18 @@ return function(intent, rule, words)
 
   -- waypoints, creation and deletion
   rule { "define defwpt", "defwpt" }
+  rule { "addwpt", "addwpt" }
+  rule { "delwpt", "delwpt" }
   rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create spawn generate creat", "create" }
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
-  rule { "add append insert give", "addwpt", near = { 8, "@route_nouns" },
-         when = function(g, i) return g:has_ref(i + 1, i + 3, "waypoint") end }
+  rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
+         when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 6, "@route_nouns" } }
+  -- "add the point EXIT2": a point that is a known waypoint
+  rule { "add append insert", "addwpt", near = { 3, "point" },
+         when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
   rule { "via", "addwpt", prev = { 3, "route" } }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
@@ -131,23 +142,25 @@ return function(intent, rule, words)
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
-  rule { "direct directly dct proceed direct-to", "direct" }
+  rule { "direct directly dct dir proceed direct-to", "direct" }
   rule { "cleared", "direct", when = function(g) return #g.world.waypoints > 0 end }
-  rule { "destination", "dest" }
+  rule { "destination dest", "dest" }
   rule { "fly", "dest", next = "to" }
-  rule { "origin departed", "orig" }
+  rule { "origin departed orig", "orig" }
   rule { "lnav", "lnav" }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
   rule { "vertical", "vnav", next = "profile navigation" }
   rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print" } }
-  rule { "listrte", "listrte" }
+  rule { "listrte rte", "listrte" }
 
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
-  rule { "details status info information state", "pos" }
-  rule { "move reposition teleport shift place relocate", "move" }
+  -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
+  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "aircraft") end }
+  rule { "details status info information state pos", "pos" }
+  rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
@@ -165,13 +178,15 @@ return function(intent, rule, words)
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "say altitude", "report your heading": a question about the aircraft's state
-  rule { "say report", "pos", near = { 2, "altitude speed heading position level airspeed mach" } }
+  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "unpause op", "op" }
+  rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", next = "navigation" }
   rule { "run", "dtmult", near = { 4, "times x" } }
+  rule { "dtmult", "dtmult" }
   rule { "start", "op", near = { 3, "@sim" } }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
@@ -185,6 +200,7 @@ return function(intent, rule, words)
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
   rule { "skip", "ff", next = "ahead forward" }
+  rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   rule { "reset", "reset" }
@@ -200,7 +216,7 @@ return function(intent, rule, words)
   rule { "resolution resolve reso", "reso" }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
-  rule { "protected pz separation zoner zonedh radius", "zone" }
+  rule { "protected pz separation zone zoner zonedh radius", "zone" }
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }

@@ -123,7 +123,8 @@ end
 
 do -- spoken callsigns are matched to the aircraft that exist
   local w = world_of("CRE DAL1153 B738 40 -74 360 5000 250 ; CRE AVA847 A320 40.5 -74 90 11000 250")
-  check_eq(tr("12,153, climbing, maintain one two twelve thousand.", w), "ALT DAL1153 12000")
+  -- digits heard that are not the aircraft's ask while another aircraft flies
+  check_eq(tr("12,153, climbing, maintain one two twelve thousand.", w), "ASK Did you mean DAL1153? I heard 12153.")
   check_eq(tr("Abiont eight forty seven descend and maintain four thousand", w), "ALT AVA847 4000")
   check_eq(tr("Delta eleven fifty three turn right heading zero one zero", w), "HDG DAL1153 10 RIGHT")
 end
@@ -141,7 +142,9 @@ do -- callsigns restarted, corrected or heard without their letters
   check_eq(tr("Brickyard Eleven correction fourteen eleven descend maintain three thousand", w), "ALT RPA1411 3000")
   check_eq(tr("lufthansa thirty one correction lufthansa forty one thirty turn left heading two seven zero", w),
     "HDG DLH4130 270 LEFT")
-  check_eq(tr("speedbird nine six right heading zero nine zero", w), "HDG BAW96CA 90 RIGHT")
+  -- letters left unheard while other aircraft fly: asked, never taken
+  check_eq(tr("speedbird nine six right heading zero nine zero", w), "ASK Did you mean BAW96CA? I heard BAW96.")
+  check_eq(tr("speedbird nine six charlie alpha right heading zero nine zero", w), "HDG BAW96CA 90 RIGHT")
   -- the digits differ: still a question, and a list of aircraft is no restart
   check(asks("Delta Ninety Four maintain two one zero knots", w), "DAL94 is not DAL84")
   check(asks("speedbird nine six charlie bravo right heading zero nine zero", w), "BAW96CB is not BAW96CA")

@@ -26,6 +26,62 @@ check_eq(said(tr("turn KLM1234 to 010 and DLH4AX to 200")), "HDG KLM1234 10 ; HD
 -- several instructions, none dropped
 check_eq(said(tr("KLM1234 climb FL300 and reduce speed 250 knots")), "ALT KLM1234 FL300 ; SPD KLM1234 250")
 
+-- typed shorthand: a letter-prefixed value is an instruction wherever it stands in the line,
+-- each value used once; a leftover token with a digit in it is asked about by name
+check_eq(said(tr("klm77 fl120 s230")), "ALT KLM77 FL120 ; SPD KLM77 230")
+check_eq(said(tr("dlh4ax h 150 fl250")), "HDG DLH4AX 150 ; ALT DLH4AX FL250")
+check_eq(said(tr("klm1234 r 010")), "HDG KLM1234 10 RIGHT")
+check_eq(said(tr("baw8ck l320 s240")), "HDG BAW8CK 320 LEFT ; SPD BAW8CK 240")
+check_eq(said(tr("klm77 fl110 rod 1200")), "ALT KLM77 FL110 ; VS KLM77 -1200")
+check_eq(said(tr("dlh4ax roc 800")), "VS DLH4AX 800")
+check_eq(said(tr("klm77 fl120 q9")), "ASK I have ALT KLM77 FL120. What does 'q9' mean?")
+check_eq(said(tr("klm77 fl120 6")), "ASK I have ALT KLM77 FL120. What does '6' mean?")
+-- an aircraft named that no command carries: the request was not all understood
+check_eq(said(tr("freeze the simulation, KLM77 looks fine")), "ASK I have HOLD. What does 'KLM77' mean?")
+check_eq(said(tr("freeze the simulation and then tell me where KLM77 is")), "HOLD ; POS KLM77")
+check_eq(said(tr("where's DLH4AX?")), "POS DLH4AX")
+check_eq(said(tr("KLM1234 climb FL320 to avoid a conflict with KLM77")), "ALT KLM1234 FL320")
+-- a duration said but not understood asks; a time no command carries is a leftover
+check_eq(said(tr("please fast forward the sim")), "FF")
+check_eq(said(tr("fast forward a little while")), "ASK For how long should the simulation fast-forward? Please give a time.")
+check_eq(said(tr("after 10 minutes remove KLM77")), "ASK I have DEL KLM77. What does '10 minutes' mean?")
+check_eq(said(tr("dtmult 6 and show trails")), "DTMULT 6 ; TRAIL ON")
+-- a second thing said in one breath and not made is asked about, never dropped
+check_eq(said(tr("define waypoint P1 at 51.0 3.0 and P2 at 51.5 3.5")), "ASK I have DEFWPT P1 51 3. What does 'P2' mean?")
+r = tr("klm77 fl120 sq 1234")
+check(said(r) == "ALT KLM77 FL120" and r.note:find("transponder codes", 1, true) ~= nil, said(r))
+check_eq(said(tr("klm1234 fl280 h320")), "ALT KLM1234 FL280 ; HDG KLM1234 320")
+check_eq(said(tr("dlh4ax fl310 m.80")), "ALT DLH4AX FL310 ; SPD DLH4AX M0.8")
+check_eq(said(tr("klm77 lt 15 deg")), "HDG KLM77 165 LEFT")
+check_eq(said(tr("dlh4ax rt 40\u{B0}")), "HDG DLH4AX 130 RIGHT")
+check_eq(said(tr("KLM1234 25 degrees left")), "HDG KLM1234 275 LEFT")
+check_eq(said(tr("klm77 rte?")), "LISTRTE KLM77")
+check_eq(said(tr("klm77 pos?")), "POS KLM77")
+-- a typed callsign split after its airline is that aircraft only when the joined id is exact
+check(said(tr("klm 1243 fl310")):find("^ASK") ~= nil, said(tr("klm 1243 fl310")))
+check_eq(said(tr("klm 1234 fl310")), "ALT KLM1234 FL310")
+-- a correction followed by its new value: the value after it counts, however it is said
+check_eq(said(tr("KLM77 descend flight level one three zero correction one one zero")), "ALT KLM77 FL110")
+check_eq(said(tr("BAW8CK speed two two zero knots correction two four zero")), "SPD BAW8CK 240")
+check_eq(said(tr("KLM77 turn left heading one nine her five")), "HDG KLM77 195 LEFT")
+check_eq(said(tr("make the simulation speed four times")), "DTMULT 4")
+-- sim control said in other words; RESO's one method is what "on" means
+check_eq(said(tr("please skip two hours forward")), "FF 7200")
+check_eq(said(tr("advance the sim fast for 2 minutes")), "FF 120")
+check_eq(said(tr("go on with the sim please")), "OP")
+check_eq(said(tr("set the time speed factor to 5")), "DTMULT 5")
+check_eq(said(tr("switch resolution on")), "RESO MVP")
+check_eq(said(tr("zone 4nm")), "ZONER 4")
+r = tr("KLM1234 climb FL300, expedite through FL270")
+check(said(r) == "ALT KLM1234 FL300" and r.note:find("expedite", 1, true) ~= nil, said(r))
+check_eq(said(tr("KLM77 report me your altitude")), "POS KLM77")
+-- false friends and prepositions of other languages: "actual" is the present value, "sink to a
+-- level" a descent, "feet for minute" a rate; a large step in feet is the cleared altitude
+check_eq(said(tr("KLM1234 keep the actual heading")), "HDG KLM1234 300")
+check_eq(said(tr("KLM77 sink to flight level 90")), "ALT KLM77 FL90")
+check_eq(said(tr("DLH4AX descend 12000 feet")), "ALT DLH4AX 12000")
+check_eq(said(tr("BAW8CK descend flight level 150 with 1800 feet for minute")), "ALT BAW8CK FL150 1800")
+
 -- 2. turns the way they were said; relative turns in whole degrees; past 180 degrees asks yes/no
 check_eq(said(tr("BAW8CK turn right heading 300")), "HDG BAW8CK 300 RIGHT")
 check_eq(said(tr("BAW8CK turn left heading 020")), "HDG BAW8CK 20 LEFT")
@@ -105,6 +161,64 @@ if #sim:airports_named("schiphol") == 1 then
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
+
+-- spoken telephony split by speech recognition matches when every character does; a
+-- partial flight number asks while other aircraft fly
+local csim = squawk.sim.new()
+for _, line in ipairs({ "CRE BAW456 A320 51.5 0.2 090 FL150 250", "CRE RYR7TK B738 51.7 0.4 270 FL190 270",
+    "CRE EZY33 A319 51.2 0.1 180 FL110 240", "CRE N77AB C172 51.3 0.5 000 3000 100" }) do
+  check(csim:exec(line))
+end
+local function ctr(text) return said(graph.translate(text, { sim = csim, mode = "offline" })) end
+check_eq(ctr("speed bird four five six turn left heading one two zero"), "HDG BAW456 120 LEFT")
+check_eq(ctr("ryan air seven tango kilo climb flight level two one zero"), "ALT RYR7TK FL210")
+check_eq(ctr("easy jet three three reduce speed two two zero"), "SPD EZY33 220")
+check_eq(ctr("speed bird four five turn left heading one two zero"), "ASK Did you mean BAW456? I heard BAW45.")
+check_eq(ctr("ryan air seven tango climb flight level two one zero"), "ASK Did you mean RYR7TK? I heard RYR7T.")
+-- two spoken digits are a light aircraft's speed, an airliner's cut off
+check_eq(ctr("november seven seven alpha bravo reduce speed eight zero knots"), "SPD N77AB 80")
+check(ctr("speed bird four five six reduce speed eight zero knots"):find("^ASK What speed") ~= nil, "cut off")
+
+-- values as people write and say them: space-grouped thousands, rates in feet a minute and
+-- metres per second (negative when said so), minutes and seconds, "flightlevel", a route
+-- point's level kept as ADDWPT's altitude
+check_eq(said(tr("KLM77 descend to 9 000 feet")), "ALT KLM77 9000")
+check_eq(said(tr("KLM1234 vertical speed minus 5 metres per second")), "VS KLM1234 -984")
+check_eq(said(tr("BAW8CK climb at 2500 feet a minute")), "VS BAW8CK 2500")
+check_eq(said(tr("fast forward two minutes fifteen")), "FF 135")
+check_eq(said(tr("DLH4AX descend flightlevel two eight zero")), "ALT DLH4AX FL280")
+check_eq(said(tr("KLM77 add waypoint 52.3 4.6 to the route at flight level 90")), "ADDWPT KLM77 52.3 4.6 FL90")
+
+-- a route point said with its level or its place in the route keeps them as ADDWPT's arguments;
+-- "then direct" after a value instruction is the next instruction, not held behind it
+local rsim = sim:copy()
+check(rsim:exec("DEFWPT RIVER 52.3 4.3"))
+check(rsim:exec("DEFWPT HILLS 52.6 4.6"))
+check(rsim:exec("ADDWPT KLM77 HILLS"))
+local function rtr(text) return said(graph.translate(text, { sim = rsim, mode = "offline", waypoints = { "RIVER", "HILLS" } })) end
+check_eq(rtr("KLM77 please add the point RIVER at flight level 140"), "ADDWPT KLM77 RIVER FL140")
+check_eq(rtr("add RIVER to the route of KLM77 after HILLS"), "ADDWPT KLM77 RIVER,,,HILLS")
+check_eq(rtr("KLM77 put RIVER in the flight plan before HILLS"), "ADDWPT KLM77 RIVER,,,,HILLS")
+check_eq(rtr("KLM77 descend flight level 100 and then direct HILLS"), "ALT KLM77 FL100 ; DIRECT KLM77 HILLS")
+check_eq(rtr("klm77 dir HILLS"), "DIRECT KLM77 HILLS")
+-- a creation at a named place reads every labelled value
+check_eq(rtr("create KLM88 A320 over RIVER heading 090 FL 150 speed 260"), "CRE KLM88 A320 RIVER 90 FL150 260")
+-- a level or speed tied to a waypoint is asked, never issued at once
+r = graph.translate("KLM77 be at flight level 110 over RIVER", { sim = rsim, mode = "offline", waypoints = { "RIVER", "HILLS" } })
+check(r.ask ~= nil and r.ask:find("happen at RIVER", 1, true) ~= nil, said(r))
+-- a spoken flight level below any transition altitude lost a digit: asked
+r = tr("DLH4AX descend flight level one five")
+check(r.ask ~= nil and r.ask:find("FL15", 1, true) ~= nil, said(r))
+check_eq(said(tr("run the simulation speed at three times")), "DTMULT 3")
+
+-- a report the pilot makes and an orbit are named as not simulated; a correction with nothing
+-- after it asks
+r = tr("KLM77 report reaching flight level 120")
+check(#r.commands == 0 and r.note ~= nil and r.note:find("position reports", 1, true) ~= nil, said(r))
+r = tr("BAW8CK make a right 360")
+check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
+r = tr("DLH4AX descend flight level two six zero, correction")
+check(r.ask ~= nil and r.ask:find("correction", 1, true) ~= nil, said(r))
 
 -- units people type: km/h is a speed in knots, metres an altitude in feet
 check_eq(said(tr("KLM1234 speed 500 km/h")), "SPD KLM1234 270")

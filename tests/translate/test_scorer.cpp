@@ -66,6 +66,20 @@ TEST_CASE("conditionals compare the condition and the nested command") {
   CHECK(same_command("ECHO hello World", "ECHO Hello world"));
 }
 
+TEST_CASE("arguments left out between commas keep their places; a comma at a word's end only separates") {
+  CHECK(same_command("ADDWPT KL1 SPY,,,ARTIP", "ADDWPT KL1 SPY,,,ARTIP"));
+  CHECK_FALSE(same_command("ADDWPT KL1 SPY,,,ARTIP", "ADDWPT KL1 SPY,,,,ARTIP"));  // after, not before
+  CHECK_FALSE(same_command("ADDWPT KL1 SPY ARTIP", "ADDWPT KL1 SPY,,,ARTIP"));
+  CHECK_FALSE(same_command("ADDWPT KL1 52.1 4.3,,280", "ADDWPT KL1 52.1 4.3,280"));  // a speed, not an altitude
+  CHECK(same_command("ALT KL1, FL100", "ALT KL1 FL100"));
+  CHECK(same_command("ALT KL1 FL100,", "ALT KL1 FL100"));
+}
+
+TEST_CASE("CRE at a named place compares heading, altitude and speed as such") {
+  CHECK(same_command("CRE KL1 A320 SPY 270 FL90 240", "CRE KL1 A320 SPY 270 FL090 240"));
+  CHECK_FALSE(same_command("CRE KL1 A320 SPY 270 FL90 240", "CRE KL1 A320 SPY 270 FL100 240"));
+}
+
 TEST_CASE("lists, alternatives and ASK") {
   CHECK(score_case("DEL AC02 ; DEL AC01", false, "DEL AC01 ; DEL AC02 || DEL AC02 ; DEL AC01"));
   CHECK_FALSE(score_case("DEL AC01", false, "DEL AC01 ; DEL AC02"));
