@@ -378,7 +378,7 @@ Vm& Vm::of(lua_State* L) { return **static_cast<Vm**>(lua_getextraspace(L)); }
 
 Vm::Vm(VmOptions options) : options_(std::move(options)), rng_(options_.seed) {
   if (options_.unsafe) rules_ = paths::PathRules::unrestricted();
-  for (const char* rel : {"scripts", "prompts", "scenarios", "models"}) rules_.allow_read(paths::resource(rel));
+  for (const char* rel : {"scripts", "prompts", "scenarios", "envs", "models"}) rules_.allow_read(paths::resource(rel));
   for (const auto* list : {&options_.require_dirs, &options_.read_dirs})
     for (const auto& dir : *list) rules_.allow_read(dir);
   for (const auto* dir : {&options_.out_dir, &options_.navdata_dir}) rules_.allow_read(*dir);

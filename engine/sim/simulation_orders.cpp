@@ -328,6 +328,16 @@ Status Simulation::set_vs(std::string_view acid, double vs) {
   return Status::ok();
 }
 
+Status Simulation::select_vertical(std::string_view acid, double alt_m, double vs) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "selected altitude", alt_m));
+  SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "vertical speed", vs));
+  traf_.sel_alt[i] = alt_m;
+  traf_.sel_vs[i] = std::fabs(vs);
+  traf_.vnav[i] = 0;
+  return Status::ok();
+}
+
 Status Simulation::set_speed(std::string_view acid, double casmach) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   SQUAWK_RETURN_IF_ERROR(check_speed(traf_.id[i], casmach));
