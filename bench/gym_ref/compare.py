@@ -1,0 +1,240 @@
+#!/usr/bin/python3
+"""Step-by-step agreement of squawk's Lua environments with BlueSky-Gym's own
+environment code running on the real BlueSky.
+
+    /usr/bin/python3 bench/gym_ref/compare.py [--env descent] [--episodes 30] [--seed 0]
+        [--gym-src DIR] [--squawk build/squawk] [--json-out FILE]
+
+BlueSky-Gym side: the environment's Python file (bluesky_gym/envs/<env>.py)
+from --gym-src ($BSGYM_SRC: a bluesky-gym checkout or bare git dir), run on
+the BlueSky tree that ../shared/bluesky_ref/setup.sh made ($BSREF_PREFIX,
+default ~/.cache/squawk-bsref) with BlueSky's default settings. Where the
+`gymnasium` package is missing a minimal stand-in for gymnasium.Env and
+gymnasium.spaces.Box/Dict is used (the env only declares spaces with them),
+and pygame (rendering only) is stubbed. Episodes draw their start from numpy's
+global generator seeded with --seed; actions come from a separate generator:
+episode k uses a random policy U(-1, 1) when k % 3 == 0, the action 0 when
+k % 3 == 1 and -1 when k % 3 == 2 (the crash branch).
+
+squawk side: the recorded starts and actions are replayed through the Lua
+environment (bench/gym_ref/replay.lua) with the same OpenAP data
+($BSREF_PREFIX/openap/openap/data). Observations are compared component by
+component after gymnasium's flattening (keys sorted), with rewards and
+termination, and the maximum differences printed (also in physical units).
+
+Exit status: 0 when every difference is within the tolerances below, 1 when
+one is not, 77 (skip) when the reference is absent. Not run by CI.
+"""
+import argparse
+import importlib.util
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+import types
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+PREFIX = Path(os.environ.get('BSREF_PREFIX', Path(os.environ.get('XDG_CACHE_HOME', Path.home() / '.cache')) / 'squawk-bsref'))
+SKIP = 77
+
+# Per environment: the Python source, its class, the Lua file, the flattened
+# observation's components with the scale back to physical units, and the
+# tolerances (in observation units) the agreement is held to.
+ENVS = {
+    'descent': dict(
+        gym_file='bluesky_gym/envs/descent_env.py', cls='DescentEnv', lua='envs/descent.lua',
+        components=[('altitude', 3000, 'm'), ('runway_distance', 200, 'km'),
+                    ('target_altitude', 3000, 'm'), ('vz', 5, 'm/s')],
+        tolerance=dict(obs=[1e-9, 1e-9, 0.0, 1e-9], reward=1e-9),
+    ),
+}
+
+
+def skip(msg):
+    print(f'compare.py: skipped: {msg}')
+    sys.exit(SKIP)
+
+
+def gym_source(src: str, rel: str) -> tuple[str, str]:
+    """The text of `rel` in a checkout or bare git dir, and the commit (or '?')."""
+    p = Path(src)
+    if (p / rel).is_file():
+        return (p / rel).read_text(), '?'
+    try:
+        text = subprocess.run(['git', '--git-dir', str(p), 'show', f'HEAD:{rel}'], check=True,
+                              capture_output=True, text=True).stdout
+        commit = subprocess.run(['git', '--git-dir', str(p), 'rev-parse', 'HEAD'], check=True,
+                                capture_output=True, text=True).stdout.strip()
+        return text, commit
+    except (subprocess.CalledProcessError, FileNotFoundError):
+        skip(f'no {rel} in {src} (a bluesky-gym checkout or git dir)')
+
+
+def install_stand_ins():
+    try:
+        import gymnasium  # noqa: F401
+    except ImportError:
+        gym = types.ModuleType('gymnasium')
+        spaces = types.ModuleType('gymnasium.spaces')
+
+        class Box:
+            def __init__(self, low, high, shape=None, dtype=None):
+                self.low, self.high, self.shape, self.dtype = low, high, shape, dtype
+
+        class Dict:
+            def __init__(self, d):
+                self.spaces = dict(sorted(d.items()))  # gymnasium sorts a plain dict's keys
+
+        class Env:
+            def reset(self, seed=None, options=None):
+                return None
+
+        spaces.Box, spaces.Dict = Box, Dict
+        gym.Env, gym.spaces = Env, spaces
+        sys.modules['gymnasium'], sys.modules['gymnasium.spaces'] = gym, spaces
+    if 'pygame' not in sys.modules:
+        try:
+            import pygame  # noqa: F401
+        except ImportError:
+            sys.modules['pygame'] = types.ModuleType('pygame')
+
+
+def run_reference(spec, source, episodes, seed):
+    """Episodes of BlueSky-Gym's env: per episode the start, actions, flat
+    observations (reset's first), rewards and termination flags."""
+    import numpy as np
+    sys.path[:0] = [str(PREFIX / 'bluesky'), str(PREFIX / 'openap')]
+    install_stand_ins()
+    import bluesky as bs
+    bs.init(mode='sim', detached=True, workdir=str(PREFIX / 'workdir'))
+    with tempfile.TemporaryDirectory() as tmp:
+        f = Path(tmp) / Path(spec['gym_file']).name
+        f.write_text(source)
+        mod_spec = importlib.util.spec_from_file_location('bsgym_env', f)
+        mod = importlib.util.module_from_spec(mod_spec)
+        mod_spec.loader.exec_module(mod)
+    env = getattr(mod, spec['cls'])()
+    keys = [c[0] for c in spec['components']]
+    flat = lambda o: [float(np.asarray(o[k]).reshape(-1)[0]) for k in keys]
+    np.random.seed(seed)
+    act_rng = np.random.RandomState(seed + 1)
+    out = []
+    for k in range(episodes):
+        obs, _ = env.reset()
+        ep = dict(start=dict(alt_init=float(bs.traf.alt[0]), target_alt=float(env.target_alt)),
+                  obs=[flat(obs)], rewards=[], terminated=[], actions=[])
+        for _ in range(300):  # the registration's max_episode_steps
+            a = act_rng.uniform(-1, 1) if k % 3 == 0 else (0.0 if k % 3 == 1 else -1.0)
+            t0 = time.perf_counter()
+            obs, r, term, trunc, _ = env.step(np.array([a]))
+            ep['step_s'] = ep.get('step_s', 0.0) + time.perf_counter() - t0
+            ep['actions'].append(float(a))
+            ep['obs'].append(flat(obs))
+            ep['rewards'].append(float(r))
+            ep['terminated'].append(bool(term))
+            if term:
+                break
+        out.append(ep)
+    return out
+
+
+def run_squawk(spec, ref, squawk):
+    with tempfile.TemporaryDirectory() as tmp:
+        trace = Path(tmp) / 'trace.txt'
+        with open(trace, 'w') as f:
+            for k, ep in enumerate(ref):
+                f.write(f'episode {k} ' + ' '.join(f'{a}={v!r}' for a, v in ep['start'].items()) + '\n')
+                for a in ep['actions']:
+                    f.write(f'action {a!r}\n')
+        cmd = [squawk, 'run', str(ROOT / 'bench/gym_ref/replay.lua'), str(ROOT / spec['lua']), str(trace),
+               '--allow-read', tmp, '--openap', str(PREFIX / 'openap/openap/data')]
+        res = subprocess.run(cmd, capture_output=True, text=True)
+    if res.returncode != 0:
+        sys.exit(f'compare.py: {" ".join(cmd)} failed:\n{res.stderr}')
+    got = {}
+    for line in res.stdout.splitlines():
+        if not line.startswith('obs '):
+            continue
+        head, tail = line.split(' | ')
+        parts = head.split()
+        k, step = int(parts[1]), int(parts[2])
+        t = tail.split()
+        got[(k, step)] = ([float(v) for v in parts[3:]], float(t[1]), t[3] == 'true')
+    return got
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--env', default='descent', choices=sorted(ENVS))
+    ap.add_argument('--episodes', type=int, default=30)
+    ap.add_argument('--seed', type=int, default=0)
+    ap.add_argument('--gym-src', default=os.environ.get('BSGYM_SRC', str(ROOT.parent / 'shared' / 'bluesky-gym')))
+    ap.add_argument('--squawk', default=os.environ.get('SQUAWK', str(ROOT / 'build' / 'squawk')))
+    ap.add_argument('--reference', type=Path,
+                    help='reuse the BlueSky-Gym episodes in this JSON file when it exists, else record them there')
+    ap.add_argument('--json-out', type=Path)
+    a = ap.parse_args()
+    spec = ENVS[a.env]
+    if not (a.reference and a.reference.exists()) and not (PREFIX / 'bluesky' / 'bluesky' / '__init__.py').exists():
+        skip(f'no BlueSky tree at {PREFIX} (run ../shared/bluesky_ref/setup.sh)')
+    if a.reference and a.reference.exists():
+        saved = json.loads(a.reference.read_text())
+        ref, commit = saved['episodes'], saved['commit']
+    else:
+        source, commit = gym_source(a.gym_src, spec['gym_file'])
+        ref = run_reference(spec, source, a.episodes, a.seed)
+        if a.reference:
+            a.reference.write_text(json.dumps(dict(env=a.env, seed=a.seed, commit=commit, episodes=ref)))
+    if not Path(a.squawk).exists():
+        skip(f'no squawk binary at {a.squawk}')
+    got = run_squawk(spec, ref, a.squawk)
+
+    names = [c[0] for c in spec['components']]
+    worst = {n: (0.0, None) for n in names}
+    worst_r, length_mismatch, term_mismatch, steps = (0.0, None), [], [], 0
+    for k, ep in enumerate(ref):
+        n_ref = len(ep['rewards'])
+        n_got = max(s for (kk, s) in got if kk == k)
+        if n_got != n_ref:
+            length_mismatch.append((k, n_ref, n_got))
+        for s in range(min(n_ref, n_got) + 1):
+            obs, r, term = got[(k, s)]
+            for i, n in enumerate(names):
+                d = abs(obs[i] - ep['obs'][s][i])
+                if d > worst[n][0]:
+                    worst[n] = (d, (k, s))
+            if s == 0:
+                continue
+            steps += 1
+            d = abs(r - ep['rewards'][s - 1])
+            if d > worst_r[0]:
+                worst_r = (d, (k, s))
+            if term != ep['terminated'][s - 1]:
+                term_mismatch.append((k, s))
+    tol = spec['tolerance']
+    ok = not length_mismatch and not term_mismatch and worst_r[0] <= tol['reward']
+    print(f'{spec["cls"]} ({spec["gym_file"]} @ {commit[:7]}) vs {spec["lua"]}: {len(ref)} episodes, '
+          f'{steps} steps, seed {a.seed}')
+    print('| quantity | max abs difference | in units | at (episode, step) | tolerance |')
+    print('|---|---|---|---|---|')
+    for (n, scale, unit), t in zip(spec['components'], tol['obs']):
+        d, where = worst[n]
+        ok = ok and d <= t
+        print(f'| {n} | {d:.3g} | {d * scale:.3g} {unit} | {where} | {t:g} |')
+    print(f'| reward | {worst_r[0]:.3g} | | {worst_r[1]} | {tol["reward"]:g} |')
+    print(f'episode lengths differing: {length_mismatch or "none"}; termination differing: {term_mismatch or "none"}')
+    lengths = [len(ep['rewards']) for ep in ref]
+    print(f'reference episode lengths: min {min(lengths)}, max {max(lengths)}; BlueSky-Gym '
+          f'{sum(lengths) / sum(ep["step_s"] for ep in ref):.1f} env steps/s (step() only, this run)')
+    if a.json_out:
+        a.json_out.write_text(json.dumps(dict(reference=ref, worst={n: worst[n] for n in names},
+                                              reward=worst_r), indent=1))
+    print('within tolerance' if ok else 'OUTSIDE TOLERANCE')
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == '__main__':
+    main()
