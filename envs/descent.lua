@@ -62,32 +62,47 @@ function Descent:info()
   return {total_reward = self.total_reward, final_altitude = self.final_altitude}
 end
 
--- seed: the episode's draws (math.random is the engine's seeded generator).
--- options.alt_init / options.target_alt [m] replace the draws (to replay a
--- recorded BlueSky-Gym episode).
-function Descent:reset(seed, options)
+-- numpy's np.random.randint(lo, hi): a whole number in [lo, hi). The
+-- episode's draws come from the engine's generator seeded at reset, or, to
+-- replay a recorded BlueSky-Gym episode, from options.draws in order.
+function Descent:randint(lo, hi)
+  if self.draws then
+    self.ndraws = self.ndraws + 1
+    return assert(self.draws[self.ndraws], "options.draws ran out")
+  end
+  return math.random(lo, hi - 1)
+end
+
+-- The sim (kept across episodes, as BlueSky-Gym keeps BlueSky's) and the
+-- ownship of a new episode (L161-173).
+function Descent:start(seed, options)
   if not self.sim then
     self.sim = squawk.sim.new{}
     assert(self.sim:exec("DT " .. SIM_DT))
   end
-  -- BlueSky-Gym never clears traffic at reset; it deletes the aircraft when
-  -- an episode terminates (L200-203). Clearing here also covers an episode
-  -- cut by the 300-step limit, which the descent never reaches (it passes
-  -- the runway within about 45 steps).
+  -- BlueSky-Gym's descent never clears traffic at reset; it deletes the
+  -- aircraft when an episode terminates (L200-203). Clearing here also
+  -- covers an episode cut by the 300-step limit, which the descent never
+  -- reaches (it passes the runway within about 45 steps).
   self.sim:delete_all()
   math.randomseed(seed)
-  options = options or {}
+  self.draws, self.ndraws = options and options.draws, 0
   self.total_reward, self.final_altitude = 0, 0
-  local alt_init = options.alt_init or math.random(ALT_MIN, ALT_MAX - 1)
-  self.target_alt = options.target_alt or alt_init + math.random(-TARGET_ALT_DIF, TARGET_ALT_DIF - 1)
+  local alt_init = self:randint(ALT_MIN, ALT_MAX)
+  self.target_alt = alt_init + self:randint(-TARGET_ALT_DIF, TARGET_ALT_DIF)
   -- traf.cre defaults: 52 N 4 E, heading 0 (L172; facts/bluesky.md 1.3); VNAV off (L173).
   self.sim:create{id = ACID, type = "A320", lat = RWY_LAT, lon = RWY_LON, hdg_deg = 0,
                   alt_m = alt_init, spd = AC_SPD}
+end
+
+function Descent:reset(seed, options)
+  self:start(seed, options)
   return self:observe(), self:info()
 end
 
--- L127-143: shaping while airborne before the runway, then one final term.
-function Descent:reward()
+-- L127-143: shaping while airborne before the runway, then one final term
+-- (the altitude terms; an environment built on this one adds its own).
+function Descent:altitude_reward()
   local r, done
   if self.runway_distance > 0 and self.altitude > 0 then
     r, done = math.abs(self.target_alt - self.altitude) * ALT_DIF_REWARD_SCALE, false
@@ -98,6 +113,11 @@ function Descent:reward()
     r, done = self.altitude * RWY_ALT_DIF_REWARD_SCALE, true
     self.final_altitude = self.altitude
   end
+  return r, done
+end
+
+function Descent:reward()
+  local r, done = self:altitude_reward()
   self.total_reward = self.total_reward + r
   return r, done
 end

@@ -3,9 +3,11 @@
 //
 //   squawk.gym.load(path) -> env    the table the file returns (readable paths
 //                                    only), used as env:reset(seed [, options]),
-//                                    env:step({a1, ...}); no TimeLimit is added
+//                                    env:step({a1, ...}); no TimeLimit is added.
+//                                    The file's folder joins the require path.
 #include <string>
 
+#include "core/paths.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
 
@@ -15,6 +17,7 @@ namespace {
 
 int l_load(lua_State* L) {
   const std::string path = readable(L, arg_string(L, 1, "path"), "environment");
+  Vm::of(L).add_script_folder(paths::dirname(path));  // the file may require its neighbours
   lua_settop(L, 0);
   lua_pushcfunction(L, traceback_handler);
   if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK) throw ArgError(error_text(L, -1));

@@ -31,6 +31,8 @@
 //   Kernels for environments (SI units, no TrafScript text; envs/*.lua):
 //   sim:create{id=, type=, lat=, lon=, hdg_deg= 0, alt_m= 0, spd=}  (BlueSky's
 //                           traf.cre: spd is CAS [m/s], or Mach when < 2)
+//   sim:creconfs{id=, type=, target=, dpsi_deg=, dcpa_m=, tlosh_s=, dh_m=?, tlosv_s=?, spd=?}
+//                           (BlueSky's traf.creconfs: an intruder in conflict with target)
 //   sim:select_vertical(acid, alt_m, vs_ms)   (the autopilot's selected altitude and
 //                           vertical speed, as BlueSky-Gym writes traf.selalt/selvs)
 //   sim:values(acid)     -> lat, lon, alt_m, hdg_deg, tas_ms, gs_ms, vs_ms, cas_ms
@@ -44,6 +46,7 @@
 //       OpenAP data of $SQUAWK_OPENAP / --openap, then the class model's named designators
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "command/conformance.h"
@@ -360,6 +363,24 @@ int l_create(lua_State* L) {
   return 0;
 }
 
+std::optional<double> opt_field(lua_State* L, int idx, const char* key) {
+  const double v = field_number(L, idx, key, NAN);
+  return std::isnan(v) ? std::nullopt : std::optional<double>(v);
+}
+
+int l_creconfs(lua_State* L) {
+  command::Stack* s = self(L);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  const double dpsi = field_number(L, 2, "dpsi_deg", NAN), dcpa = field_number(L, 2, "dcpa_m", NAN),
+               tlosh = field_number(L, 2, "tlosh_s", NAN);
+  if (std::isnan(dpsi) || std::isnan(dcpa) || std::isnan(tlosh))
+    throw ArgError("sim:creconfs: fields dpsi_deg, dcpa_m and tlosh_s are required");
+  check_status(s->sim().creconfs(field_string(L, 2, "id", ""), field_string(L, 2, "type", ""),
+                                 field_string(L, 2, "target", ""), dpsi, dcpa, tlosh, opt_field(L, 2, "dh_m"),
+                                 opt_field(L, 2, "tlosv_s"), opt_field(L, 2, "spd")));
+  return 0;
+}
+
 int l_select_vertical(lua_State* L) {
   command::Stack* s = self(L);
   check_status(s->sim().select_vertical(arg_string(L, 2, "acid"), arg_number(L, 3, "alt_m"),
@@ -451,6 +472,7 @@ void bind_sim(lua_State* L) {
       {"dtmult", guarded<l_dtmult>},
       {"create", guarded<l_create>},     {"select_vertical", guarded<l_select_vertical>},
       {"values", guarded<l_values>},     {"delete_all", guarded<l_delete_all>},
+      {"creconfs", guarded<l_creconfs>},
       {"snapshot", guarded<l_snapshot>}, {nullptr, nullptr},
   };
   define_class(L, kSimMt, methods);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "core/paths.h"
 #include "script/lua_util.h"
 
 namespace squawk::script {
@@ -46,6 +47,7 @@ LuaEnv::~LuaEnv() = default;
 
 Result<std::unique_ptr<LuaEnv>> LuaEnv::load(const std::string& path, const VmOptions& options) {
   std::unique_ptr<LuaEnv> env(new LuaEnv(path, std::make_unique<Vm>(options)));
+  env->vm_->add_script_folder(paths::dirname(path));  // the file may require its neighbours
   SQUAWK_RETURN_IF_ERROR(env->vm_->load_table(path, kEnvKey));
   SQUAWK_RETURN_IF_ERROR(env->read_spec());
   return env;

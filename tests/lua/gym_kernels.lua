@@ -48,6 +48,13 @@ check_near(vs2, 5, 1e-9, "climbs at |vs|")
 check(alt2 > 3000 + 100, "climbed")
 ok, err = pcall(s.values, s, "NOPE")
 check(not ok and err:find("no aircraft 'NOPE'"), err)
+s:creconfs{id = "I1", type = "A320", target = "KL001", dpsi_deg = 90, dcpa_m = 0, tlosh_s = 300, dh_m = 500}
+local ila, ilo, ialt = s:values("I1")
+check_near(ialt, alt2 + 500, 1e-9, "creconfs: the intruder at the target's altitude + dH")
+local _, dist_nm = geo.kwikqdrdist(la, lo, ila, ilo)
+check(dist_nm > 5, "creconfs: outside the zone 300 s before the loss of separation")
+ok, err = pcall(s.creconfs, s, {id = "I2", type = "A320", target = "KL001"})
+check(not ok and err:find("dpsi_deg, dcpa_m and tlosh_s are required"), err)
 s:delete_all()
 check_eq(s:count(), 0)
 

@@ -22,11 +22,13 @@ namespace {
 
 std::string repo(const char* rel) { return std::string(SQUAWK_TEST_DATA) + "/../../" + rel; }
 
-std::unique_ptr<script::LuaEnv> descent() {
-  auto e = script::LuaEnv::load(repo("envs/descent.lua"), {});
+std::unique_ptr<script::LuaEnv> load(const char* rel) {
+  auto e = script::LuaEnv::load(repo(rel), {});
   REQUIRE_MESSAGE(e.is_ok(), e.status().message());
   return std::move(*e);
 }
+
+std::unique_ptr<script::LuaEnv> descent() { return load("envs/descent.lua"); }
 
 struct Episode {
   std::vector<std::vector<double>> obs;  // reset's, then one per step
@@ -184,4 +186,45 @@ TEST_CASE("the driver adds the TimeLimit and checks what the file returns") {
   auto n = script::LuaEnv::load(write("no_action.lua", no_action).string(), {});
   REQUIRE_FALSE(n.is_ok());
   CHECK(n.status().message().find("field 'action' must be {low = {..}, high = {..}}") != std::string::npos);
+}
+
+TEST_CASE("VerticalCREnv-v0: DescentEnv plus five intruders in conflict, -50 per intrusion") {
+  auto e = load("envs/vertical_cr.lua");
+  const auto& s = e->spec();
+  CHECK(s.id == "VerticalCREnv-v0");
+  CHECK(s.observation_size == 39);
+  REQUIRE(s.observation.size() == 11);
+  CHECK(s.observation[1].name == "altitude_difference");
+  CHECK(s.observation[10].name == "z_difference_speed");
+  CHECK(s.action_low == std::vector<double>{-1});  // DescentEnv's action, inherited
+  CHECK(s.max_episode_steps == 300);
+  Rng rng(3);
+  int intrusions = 0;
+  for (uint64_t seed = 0; seed < 6; ++seed) {
+    const Episode ep = run(*e, seed, NAN, rng);
+    REQUIRE(ep.obs[0].size() == 39);
+    for (int i = 0; i < 5; ++i) {
+      const double dist_km = ep.obs[0][11 + i] * 200;  // intruder_distance
+      CHECK(dist_km > 9.26);   // outside 5 NM: each intruder is 100-900 s from its loss of separation
+      CHECK(dist_km < 400);
+      CHECK(std::hypot(ep.obs[0][6 + i], ep.obs[0][17 + i]) == doctest::Approx(1.0));  // cos^2 + sin^2
+    }
+    CHECK(ep.terminated);
+    const double target = ep.obs[0][22] * 3000 + 1500;
+    for (size_t k = 0; k + 1 < ep.rewards.size(); ++k) {
+      const double alt = ep.obs[k + 1][0] * 3000 + 1500;
+      const double intrusion = ep.rewards[k] + std::fabs(target - alt) / 600;
+      const double n = -intrusion / 50;  // whole intruders inside the zone
+      CHECK(n == doctest::Approx(std::round(n)).epsilon(1e-9));
+      CHECK(n >= -1e-9);
+      CHECK(n <= 5 + 1e-9);
+      intrusions += static_cast<int>(std::lround(n));
+    }
+  }
+  CHECK(intrusions > 0);  // the conflicts are real: random flying meets some
+  auto f = load("envs/vertical_cr.lua");
+  Rng ra(2), rb(2);
+  const Episode x = run(*e, 21, NAN, ra), y = run(*f, 21, NAN, rb);
+  CHECK(x.obs == y.obs);
+  CHECK(x.rewards == y.rewards);
 }
