@@ -16,7 +16,8 @@ global generator seeded with --seed; actions come from a separate generator:
 episode k uses a random policy U(-1, 1) when k % 3 == 0, the action 0 when
 k % 3 == 1 and -1 when k % 3 == 2 (the crash branch).
 
-squawk side: the recorded starts and actions are replayed through the Lua
+squawk side: the recorded draws (every np.random.randint of a reset, in
+order) and actions are replayed through the Lua
 environment (bench/gym_ref/replay.lua) with the same OpenAP data
 ($BSREF_PREFIX/openap/openap/data). Observations are compared component by
 component after gymnasium's flattening (keys sorted), with rewards and
@@ -46,9 +47,19 @@ SKIP = 77
 ENVS = {
     'descent': dict(
         gym_file='bluesky_gym/envs/descent_env.py', cls='DescentEnv', lua='envs/descent.lua',
-        components=[('altitude', 3000, 'm'), ('runway_distance', 200, 'km'),
-                    ('target_altitude', 3000, 'm'), ('vz', 5, 'm/s')],
-        tolerance=dict(obs=[1e-9, 1e-9, 0.0, 1e-9], reward=1e-9),
+        fields=[('altitude', 1, 3000, 'm'), ('runway_distance', 1, 200, 'km'),
+                ('target_altitude', 1, 3000, 'm'), ('vz', 1, 5, 'm/s')],
+        tolerance=dict(obs=1e-9, reward=1e-9),
+    ),
+    'vertical_cr': dict(
+        gym_file='bluesky_gym/envs/vertical_cr_env.py', cls='VerticalCREnv', lua='envs/vertical_cr.lua',
+        fields=[('altitude', 1, 3000, 'm'), ('altitude_difference', 5, 3000, 'm'),
+                ('cos_difference_pos', 5, 1, ''), ('intruder_distance', 5, 200, 'km'),
+                ('runway_distance', 1, 200, 'km'), ('sin_difference_pos', 5, 1, ''),
+                ('target_altitude', 1, 3000, 'm'), ('vz', 1, 5, 'm/s'),
+                ('x_difference_speed', 5, 150, 'm/s'), ('y_difference_speed', 5, 150, 'm/s'),
+                ('z_difference_speed', 5, 1, 'm/s')],
+        tolerance=dict(obs=1e-9, reward=1e-9),
     ),
 }
 
@@ -102,12 +113,28 @@ def install_stand_ins():
             sys.modules['pygame'] = types.ModuleType('pygame')
 
 
-def run_reference(spec, source, episodes, seed):
+def install_gym_common(gym_src):
+    """bluesky_gym.envs.common.functions from the same source (the envs import
+    it; the package's own __init__ would import gymnasium's registry)."""
+    rel = 'bluesky_gym/envs/common/functions.py'
+    text, _ = gym_source(gym_src, rel)
+    for name in ('bluesky_gym', 'bluesky_gym.envs', 'bluesky_gym.envs.common'):
+        pkg = types.ModuleType(name)
+        pkg.__path__ = []
+        sys.modules.setdefault(name, pkg)
+    mod = types.ModuleType('bluesky_gym.envs.common.functions')
+    exec(compile(text, rel, 'exec'), mod.__dict__)
+    sys.modules[mod.__name__] = mod
+    sys.modules['bluesky_gym.envs.common'].functions = mod
+
+
+def run_reference(spec, source, episodes, seed, gym_src):
     """Episodes of BlueSky-Gym's env: per episode the start, actions, flat
     observations (reset's first), rewards and termination flags."""
     import numpy as np
     sys.path[:0] = [str(PREFIX / 'bluesky'), str(PREFIX / 'openap')]
     install_stand_ins()
+    install_gym_common(gym_src)
     import bluesky as bs
     bs.init(mode='sim', detached=True, workdir=str(PREFIX / 'workdir'))
     with tempfile.TemporaryDirectory() as tmp:
@@ -117,15 +144,18 @@ def run_reference(spec, source, episodes, seed):
         mod = importlib.util.module_from_spec(mod_spec)
         mod_spec.loader.exec_module(mod)
     env = getattr(mod, spec['cls'])()
-    keys = [c[0] for c in spec['components']]
-    flat = lambda o: [float(np.asarray(o[k]).reshape(-1)[0]) for k in keys]
+    keys = [f[0] for f in spec['fields']]
+    flat = lambda o: [float(v) for k in keys for v in np.asarray(o[k], dtype=float).reshape(-1)]
+    # every np.random.randint the environment makes, in order: the episode's draws
+    randint, draws = np.random.randint, []
+    np.random.randint = lambda *a, **kw: draws.append(int(randint(*a, **kw))) or draws[-1]
     np.random.seed(seed)
     act_rng = np.random.RandomState(seed + 1)
     out = []
     for k in range(episodes):
+        draws.clear()
         obs, _ = env.reset()
-        ep = dict(start=dict(alt_init=float(bs.traf.alt[0]), target_alt=float(env.target_alt)),
-                  obs=[flat(obs)], rewards=[], terminated=[], actions=[])
+        ep = dict(draws=list(draws), obs=[flat(obs)], rewards=[], terminated=[], actions=[])
         for _ in range(300):  # the registration's max_episode_steps
             a = act_rng.uniform(-1, 1) if k % 3 == 0 else (0.0 if k % 3 == 1 else -1.0)
             t0 = time.perf_counter()
@@ -146,7 +176,7 @@ def run_squawk(spec, ref, squawk):
         trace = Path(tmp) / 'trace.txt'
         with open(trace, 'w') as f:
             for k, ep in enumerate(ref):
-                f.write(f'episode {k} ' + ' '.join(f'{a}={v!r}' for a, v in ep['start'].items()) + '\n')
+                f.write(f'episode {k} draws=' + ','.join(str(v) for v in ep['draws']) + '\n')
                 for a in ep['actions']:
                     f.write(f'action {a!r}\n')
         cmd = [squawk, 'run', str(ROOT / 'bench/gym_ref/replay.lua'), str(ROOT / spec['lua']), str(trace),
@@ -185,15 +215,16 @@ def main():
         ref, commit = saved['episodes'], saved['commit']
     else:
         source, commit = gym_source(a.gym_src, spec['gym_file'])
-        ref = run_reference(spec, source, a.episodes, a.seed)
+        ref = run_reference(spec, source, a.episodes, a.seed, a.gym_src)
         if a.reference:
             a.reference.write_text(json.dumps(dict(env=a.env, seed=a.seed, commit=commit, episodes=ref)))
     if not Path(a.squawk).exists():
         skip(f'no squawk binary at {a.squawk}')
     got = run_squawk(spec, ref, a.squawk)
 
-    names = [c[0] for c in spec['components']]
-    worst = {n: (0.0, None) for n in names}
+    # component index -> field
+    owner = [f for f in spec['fields'] for _ in range(f[1])]
+    worst = {f[0]: (0.0, None) for f in spec['fields']}
     worst_r, length_mismatch, term_mismatch, steps = (0.0, None), [], [], 0
     for k, ep in enumerate(ref):
         n_ref = len(ep['rewards'])
@@ -202,10 +233,10 @@ def main():
             length_mismatch.append((k, n_ref, n_got))
         for s in range(min(n_ref, n_got) + 1):
             obs, r, term = got[(k, s)]
-            for i, n in enumerate(names):
+            for i, f in enumerate(owner):
                 d = abs(obs[i] - ep['obs'][s][i])
-                if d > worst[n][0]:
-                    worst[n] = (d, (k, s))
+                if d > worst[f[0]][0]:
+                    worst[f[0]] = (d, (k, s))
             if s == 0:
                 continue
             steps += 1
@@ -220,18 +251,17 @@ def main():
           f'{steps} steps, seed {a.seed}')
     print('| quantity | max abs difference | in units | at (episode, step) | tolerance |')
     print('|---|---|---|---|---|')
-    for (n, scale, unit), t in zip(spec['components'], tol['obs']):
+    for n, _, scale, unit in spec['fields']:
         d, where = worst[n]
-        ok = ok and d <= t
-        print(f'| {n} | {d:.3g} | {d * scale:.3g} {unit} | {where} | {t:g} |')
+        ok = ok and d <= tol['obs']
+        print(f'| {n} | {d:.3g} | {d * scale:.3g} {unit} | {where} | {tol["obs"]:g} |')
     print(f'| reward | {worst_r[0]:.3g} | | {worst_r[1]} | {tol["reward"]:g} |')
     print(f'episode lengths differing: {length_mismatch or "none"}; termination differing: {term_mismatch or "none"}')
     lengths = [len(ep['rewards']) for ep in ref]
     print(f'reference episode lengths: min {min(lengths)}, max {max(lengths)}; BlueSky-Gym '
           f'{sum(lengths) / sum(ep["step_s"] for ep in ref):.1f} env steps/s (step() only, this run)')
     if a.json_out:
-        a.json_out.write_text(json.dumps(dict(reference=ref, worst={n: worst[n] for n in names},
-                                              reward=worst_r), indent=1))
+        a.json_out.write_text(json.dumps(dict(reference=ref, worst=worst, reward=worst_r), indent=1))
     print('within tolerance' if ok else 'OUTSIDE TOLERANCE')
     sys.exit(0 if ok else 1)
 

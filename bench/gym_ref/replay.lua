@@ -3,8 +3,9 @@
 --
 --   squawk run bench/gym_ref/replay.lua ENV.lua TRACE.txt --allow-read DIR_OF_TRACE
 --
--- TRACE.txt: per episode a line `episode K key=value ...` (the values become
--- reset's options, e.g. alt_init=3012 target_alt=2700), then one line
+-- TRACE.txt: per episode a line `episode K key=value ...` (reset's options:
+-- a number, or numbers separated by commas as an array, e.g.
+-- draws=3012,-312), then one line
 -- `action a1 [a2 ...]` per step. Output, one line per observation:
 --   obs K STEP o1 ... on | reward R terminated T
 -- (STEP 0 is the observation reset returns, with reward 0).
@@ -25,7 +26,15 @@ for line in io.lines(trace_path) do
   if head == "episode" then
     local opts = {}
     local id, kv = rest:match("^(%S+)%s*(.*)$")
-    for key, v in kv:gmatch("(%w[%w_]*)=(%S+)") do opts[key] = tonumber(v) end
+    for key, v in kv:gmatch("(%w[%w_]*)=(%S+)") do
+      if v:find(",") then
+        local list = {}
+        for x in v:gmatch("[^,]+") do list[#list + 1] = tonumber(x) end
+        opts[key] = list
+      else
+        opts[key] = tonumber(v)
+      end
+    end
     k, step = tonumber(id), 0
     emit(k, 0, (env:reset(k, opts)), 0, false)
   elseif head == "action" then
