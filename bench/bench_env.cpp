@@ -7,8 +7,9 @@
 // Beside it, environments written in Lua over the same kernels
 // (script/lua_env.h): BlueSky-Gym's DescentEnv-v0 (envs/descent.lua; one env
 // step = 30 x 1 s simulator steps of one aircraft through the full
-// Simulation, OpenAP when SQUAWK_OPENAP names its data) and BlueSky-Gym's
-// measured DescentEnv figure (docs/gym_envs.md, bench/gym_ref/compare.py).
+// Simulation, OpenAP when SQUAWK_OPENAP names its data) and VerticalCREnv-v0
+// (envs/vertical_cr.lua, six aircraft), each against BlueSky-Gym's measured
+// figure (docs/gym_envs.md, bench/gym_ref/compare.py).
 // Prints figures only; no timing is asserted anywhere.
 #include <chrono>
 #include <cmath>
@@ -33,6 +34,7 @@ constexpr double kBlueSkyGymZero = 132.2;    // env steps/s, measured (zero acti
 // env steps/s of BlueSky-Gym's DescentEnv-v0 on the real BlueSky (bench/gym_ref/compare.py, step() only),
 // measured at load average 16 on the 2-core machine; HorizontalCREnv's figures above were taken idle.
 constexpr double kBlueSkyGymDescent = 5.9;
+constexpr double kBlueSkyGymVerticalCr = 13.4;  // VerticalCREnv-v0, the same way, load average 17-20
 
 struct Run {
   long long steps = 0;
@@ -163,7 +165,7 @@ Run reference_gym(double seconds, uint64_t seed) {
 
 void print(const char* name, const Run& r, double reference) {
   const double sps = static_cast<double>(r.steps) / r.seconds;
-  std::printf("  %-50s %12.0f env steps/s  %8.0f episodes/s  %8.0fx BlueSky-Gym\n", name, sps,
+  std::printf("  %-56s %12.0f env steps/s  %8.0f episodes/s  %8.0fx BlueSky-Gym\n", name, sps,
               static_cast<double>(r.episodes) / r.seconds, sps / reference);
 }
 
@@ -189,11 +191,13 @@ int main(int argc, char** argv) {
   print("random actions, 1 thread", drive(env::Rules::kPaper, true, seconds, 1), kBlueSkyGymRandom);
   print("zero action, 1 thread", drive(env::Rules::kPaper, false, seconds, 1), kBlueSkyGymZero);
   print("random actions, 2 threads (1 env each)", two_threads(env::Rules::kPaper, seconds), kBlueSkyGymRandom);
-  std::printf("Lua environments (one env step = 30 x 1 s simulator steps, 1 aircraft; OpenAP: %s):\n",
+  std::printf("Lua environments (one env step = 30 x 1 s simulator steps; OpenAP: %s):\n",
               std::getenv("SQUAWK_OPENAP") ? "on" : "off, class model");
   print("DescentEnv-v0 (envs/descent.lua), random, 1 thread", drive_lua("envs/descent.lua", true, seconds, 1),
         kBlueSkyGymDescent);
   print("DescentEnv-v0 (envs/descent.lua), zero, 1 thread", drive_lua("envs/descent.lua", false, seconds, 1),
         kBlueSkyGymDescent);
+  print("VerticalCREnv-v0 (envs/vertical_cr.lua), random, 1 thread",
+        drive_lua("envs/vertical_cr.lua", true, seconds, 1), kBlueSkyGymVerticalCr);
   return 0;
 }
