@@ -48,13 +48,15 @@ Result<EnvPolicy> parse_policy(const std::string& p, const script::LuaEnvSpec& s
         return Status::invalid("--policy " + p + ": '" + part + "' is not a number");
       pol.constant.push_back(v);
     }
-    if (static_cast<int>(pol.constant.size()) == 1 && n > 1) pol.constant.assign(static_cast<size_t>(n), pol.constant[0]);
+    if (static_cast<int>(pol.constant.size()) == 1 && n > 1)
+      pol.constant.assign(static_cast<size_t>(n), pol.constant[0]);
     if (static_cast<int>(pol.constant.size()) != n)
-      return Status::invalid("--policy " + p + ": the action space has " + std::to_string(n) + " numbers");
+      return Status::invalid("--policy " + p + ": the action space has " + std::to_string(n) +
+                             " numbers");
     for (int k = 0; k < n; ++k)
       if (pol.constant[k] < spec.action_low[k] || pol.constant[k] > spec.action_high[k])
-        return Status::invalid("--policy " + p + ": action " + std::to_string(k + 1) + " is outside [" +
-                               text::fmt_double(spec.action_low[k]) + ", " +
+        return Status::invalid("--policy " + p + ": action " + std::to_string(k + 1) +
+                               " is outside [" + text::fmt_double(spec.action_low[k]) + ", " +
                                text::fmt_double(spec.action_high[k]) + "]");
     return pol;
   }
@@ -64,7 +66,8 @@ Result<EnvPolicy> parse_policy(const std::string& p, const script::LuaEnvSpec& s
 int env_run(const ArgV& argv) {
   auto args = Args::parse(argv, with_vm_flags({{"--policy", "--episodes"}, {"--json"}}));
   if (!args) return usage_error("env", args.status().message());
-  if (args->positional().size() != 2) return usage_error("env", "usage: squawk env run ENV.lua [flags]");
+  if (args->positional().size() != 2)
+    return usage_error("env", "usage: squawk env run ENV.lua [flags]");
   const std::string file = args->positional()[1];
   if (!files::exists(file)) return failure(Status::not_found("no environment file '" + file + "'"));
   auto opts = vm_options(*args);
@@ -92,7 +95,8 @@ int env_run(const ArgV& argv) {
     double total = 0;
     while (true) {
       for (size_t a = 0; a < action.size(); ++a)
-        action[a] = policy->random ? rng.uniform(spec.action_low[a], spec.action_high[a]) : policy->constant[a];
+        action[a] = policy->random ? rng.uniform(spec.action_low[a], spec.action_high[a])
+                                   : policy->constant[a];
       auto r = e.step(action);
       if (!r) return failure(Status::invalid(shown_error(r.status().message())));
       total += r->reward;
@@ -107,23 +111,25 @@ int env_run(const ArgV& argv) {
     sum += total;
     sum2 += total * total;
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double n = static_cast<double>(*episodes);
   const double mean = sum / n;
   const double sd = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
   if (args->has("--json")) {
     std::printf(
-        "{\"env\": \"%s\", \"policy\": \"%s\", \"episodes\": %lld, \"seed\": %llu, \"mean_reward\": %.17g, "
+        "{\"env\": \"%s\", \"policy\": \"%s\", \"episodes\": %lld, \"seed\": %llu, "
+        "\"mean_reward\": %.17g, "
         "\"std_reward\": %.17g, \"mean_length\": %.17g, \"terminated\": %lld, \"truncated\": %lld, "
         "\"steps_per_s\": %.6g}\n",
-        spec.id.c_str(), policy_name.c_str(), *episodes, static_cast<unsigned long long>(seed), mean, sd,
-        len_sum / n, terminated, truncated, static_cast<double>(steps) / seconds);
+        spec.id.c_str(), policy_name.c_str(), *episodes, static_cast<unsigned long long>(seed),
+        mean, sd, len_sum / n, terminated, truncated, static_cast<double>(steps) / seconds);
     return kExitOk;
   }
-  std::printf("%s (%s): observation %d numbers, action %d in [%s, %s], at most %d steps\n", spec.id.c_str(),
-              file.c_str(), spec.observation_size, spec.action_size(),
-              text::fmt_double(spec.action_low[0]).c_str(), text::fmt_double(spec.action_high[0]).c_str(),
-              spec.max_episode_steps);
+  std::printf("%s (%s): observation %d numbers, action %d in [%s, %s], at most %d steps\n",
+              spec.id.c_str(), file.c_str(), spec.observation_size, spec.action_size(),
+              text::fmt_double(spec.action_low[0]).c_str(),
+              text::fmt_double(spec.action_high[0]).c_str(), spec.max_episode_steps);
   std::printf("policy %s, %lld episodes from seed %llu\n", policy_name.c_str(), *episodes,
               static_cast<unsigned long long>(seed));
   std::printf("  mean reward     %.4f (std %.4f)\n", mean, sd);

@@ -7,8 +7,8 @@
 //   squawk.geo.kwikpos(lat, lon, qdr_deg, dist_nm) -> lat, lon
 //   squawk.geo.destination(lat, lon, bearing_deg, dist_m) -> lat, lon  (great circle, R 6371 km)
 //   squawk.geo.wrap180(deg) -> (-180, 180];  wrap360(deg) -> [0, 360)
-//   squawk.geo.gym_wrap180(deg) -> BlueSky-Gym's one-shot wrap (a > 180: a - 360; a < -180: a + 360)
-//   squawk.geo.cpa(dx, dy, du, dv, r) -> tcpa_s, dcpa_m, t_in_s, t_out_s
+//   squawk.geo.gym_wrap180(deg) -> BlueSky-Gym's one-shot wrap (a > 180: a - 360; a < -180: a +
+//   360) squawk.geo.cpa(dx, dy, du, dv, r) -> tcpa_s, dcpa_m, t_in_s, t_out_s
 //       relative position (dx east, dy north) [m] and velocity [m/s] of the
 //       intruder, protected radius r [m]; t_in/t_out are nil when the tracks
 //       do not meet inside r (core/cpa.h, BlueSky's state-based detection)
@@ -97,7 +97,8 @@ int l_inside(lua_State* L) {
   poly.coords.reserve(static_cast<size_t>(n));
   for (lua_Integer k = 1; k <= n; ++k) {
     get_index(L, 3, k);
-    if (!lua_isnumber(L, -1)) throw ArgError("squawk.geo.inside: polygon[" + std::to_string(k) + "] is not a number");
+    if (!lua_isnumber(L, -1))
+      throw ArgError("squawk.geo.inside: polygon[" + std::to_string(k) + "] is not a number");
     poly.coords.push_back(lua_tonumber(L, -1));
     lua_pop(L, 1);
   }
@@ -108,16 +109,12 @@ int l_inside(lua_State* L) {
 }  // namespace
 
 void bind_geo(lua_State* L) {
-  static const luaL_Reg fns[] = {{"kwikqdrdist", guarded<l_kwikqdrdist>},
-                                 {"kwikdist", guarded<l_kwikdist>},
-                                 {"kwikpos", guarded<l_kwikpos>},
-                                 {"destination", guarded<l_destination>},
-                                 {"wrap180", guarded<l_wrap180>},
-                                 {"wrap360", guarded<l_wrap360>},
-                                 {"gym_wrap180", guarded<l_gym_wrap180>},
-                                 {"cpa", guarded<l_cpa>},
-                                 {"inside", guarded<l_inside>},
-                                 {nullptr, nullptr}};
+  static const luaL_Reg fns[] = {
+      {"kwikqdrdist", guarded<l_kwikqdrdist>}, {"kwikdist", guarded<l_kwikdist>},
+      {"kwikpos", guarded<l_kwikpos>},         {"destination", guarded<l_destination>},
+      {"wrap180", guarded<l_wrap180>},         {"wrap360", guarded<l_wrap360>},
+      {"gym_wrap180", guarded<l_gym_wrap180>}, {"cpa", guarded<l_cpa>},
+      {"inside", guarded<l_inside>},           {nullptr, nullptr}};
   push_squawk_subtable(L, "geo");
   luaL_setfuncs(L, fns, 0);
   lua_pop(L, 1);

@@ -23,18 +23,22 @@ std::string num(double v) {
 }
 
 // Pushes the file's table.
-void push_env(lua_State* L) { lua_getfield(L, LUA_REGISTRYINDEX, kEnvKey); }
+void push_env(lua_State* L) {
+  lua_getfield(L, LUA_REGISTRYINDEX, kEnvKey);
+}
 
 // An array of numbers at `idx` (protected reads; ArgError naming `what`).
 std::vector<double> number_array(lua_State* L, int idx, const std::string& what) {
-  if (!lua_istable(L, idx)) throw ArgError(what + ": expected an array of numbers, got " + luaL_typename(L, idx));
+  if (!lua_istable(L, idx))
+    throw ArgError(what + ": expected an array of numbers, got " + luaL_typename(L, idx));
   const lua_Integer n = length(L, idx);
   std::vector<double> v;
   v.reserve(static_cast<size_t>(n));
   for (lua_Integer k = 1; k <= n; ++k) {
     get_index(L, idx, k);
     if (!lua_isnumber(L, -1))
-      throw ArgError(what + "[" + std::to_string(k) + "]: expected a number, got " + luaL_typename(L, -1));
+      throw ArgError(what + "[" + std::to_string(k) + "]: expected a number, got " +
+                     luaL_typename(L, -1));
     v.push_back(lua_tonumber(L, -1));
     lua_pop(L, 1);
   }
@@ -63,7 +67,8 @@ Status LuaEnv::read_spec() {
     if (s.id.empty()) throw ArgError("field 'id' (the environment's name, a string) is required");
     s.source = field_string(L, e, "source", "");
     get_field(L, e, "observation");
-    if (!lua_istable(L, -1)) throw ArgError("field 'observation' must be an array of {name =, size =}");
+    if (!lua_istable(L, -1))
+      throw ArgError("field 'observation' must be an array of {name =, size =}");
     const lua_Integer nf = length(L, -1);
     for (lua_Integer k = 1; k <= nf; ++k) {
       get_index(L, -1, k);
@@ -92,13 +97,17 @@ Status LuaEnv::read_spec() {
     for (size_t k = 0; k < s.action_low.size(); ++k)
       if (!(s.action_low[k] <= s.action_high[k]) || !std::isfinite(s.action_low[k]) ||
           !std::isfinite(s.action_high[k]))
-        throw ArgError("action bounds " + std::to_string(k + 1) + ": expected finite low <= high, got " +
-                       num(s.action_low[k]) + ", " + num(s.action_high[k]));
-    s.max_episode_steps = static_cast<int>(field_count(L, e, "max_episode_steps", 0, 1, 1'000'000'000));
-    if (s.max_episode_steps == 0) throw ArgError("field 'max_episode_steps' (a whole number >= 1) is required");
+        throw ArgError("action bounds " + std::to_string(k + 1) +
+                       ": expected finite low <= high, got " + num(s.action_low[k]) + ", " +
+                       num(s.action_high[k]));
+    s.max_episode_steps =
+        static_cast<int>(field_count(L, e, "max_episode_steps", 0, 1, 1'000'000'000));
+    if (s.max_episode_steps == 0)
+      throw ArgError("field 'max_episode_steps' (a whole number >= 1) is required");
     for (const auto& [fn, key] : {std::pair{"reset", kResetKey}, std::pair{"step", kStepKey}}) {
       get_field(L, e, fn);
-      if (!lua_isfunction(L, -1)) throw ArgError(std::string("field '") + fn + "' must be a function");
+      if (!lua_isfunction(L, -1))
+        throw ArgError(std::string("field '") + fn + "' must be a function");
       lua_setfield(L, LUA_REGISTRYINDEX, key);
     }
   });
@@ -113,10 +122,12 @@ Status LuaEnv::read_observation(int idx, const char* fn) {
   lua_State* L = vm_->state();
   return catch_arg_errors(L, path_ + ": " + fn + ": ", [&] {
     if (!lua_istable(L, idx))
-      throw ArgError(std::string("the observation: expected an array of numbers, got ") + luaL_typename(L, idx));
+      throw ArgError(std::string("the observation: expected an array of numbers, got ") +
+                     luaL_typename(L, idx));
     const lua_Integer n = length(L, idx);
     if (n != spec_.observation_size)
-      throw ArgError("the observation has " + std::to_string(n) + " numbers; the declared observation has " +
+      throw ArgError("the observation has " + std::to_string(n) +
+                     " numbers; the declared observation has " +
                      std::to_string(spec_.observation_size));
     for (lua_Integer k = 1; k <= n; ++k) {
       get_index(L, idx, k);
@@ -148,8 +159,8 @@ Status LuaEnv::reset(uint64_t seed) {
 Result<LuaStep> LuaEnv::step(std::span<const double> action) {
   if (!started_) return Status::invalid(path_ + ": step before a successful reset");
   if (static_cast<int>(action.size()) != spec_.action_size())
-    return Status::invalid(path_ + ": step: action has " + std::to_string(action.size()) + " numbers, expected " +
-                           std::to_string(spec_.action_size()));
+    return Status::invalid(path_ + ": step: action has " + std::to_string(action.size()) +
+                           " numbers, expected " + std::to_string(spec_.action_size()));
   lua_State* L = vm_->state();
   const int top = lua_gettop(L);
   lua_getfield(L, LUA_REGISTRYINDEX, kStepKey);
@@ -168,8 +179,9 @@ Result<LuaStep> LuaEnv::step(std::span<const double> action) {
                            (lua_isnumber(L, top + 2) ? num(lua_tonumber(L, top + 2))
                                                      : std::string(luaL_typename(L, top + 2))));
     else if (!lua_isboolean(L, top + 3) || !lua_isboolean(L, top + 4))
-      st = Status::invalid(path_ + ": step: terminated and truncated (3rd and 4th results) must be booleans, got " +
-                           luaL_typename(L, top + 3) + " and " + luaL_typename(L, top + 4));
+      st = Status::invalid(
+          path_ + ": step: terminated and truncated (3rd and 4th results) must be booleans, got " +
+          luaL_typename(L, top + 3) + " and " + luaL_typename(L, top + 4));
     else {
       r.reward = lua_tonumber(L, top + 2);
       r.terminated = lua_toboolean(L, top + 3) != 0;

@@ -36,7 +36,7 @@ struct LuaEnvSpec {
   std::string id;
   std::string source;
   std::vector<Field> observation;
-  int observation_size = 0;            // sum of the fields' sizes
+  int observation_size = 0;                     // sum of the fields' sizes
   std::vector<double> action_low, action_high;  // the Box, action_size each
   int max_episode_steps = 0;
   int action_size() const { return static_cast<int>(action_low.size()); }

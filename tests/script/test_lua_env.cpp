@@ -12,15 +12,17 @@
 #include <vector>
 
 #include "core/rng.h"
-#include "script/lua_env.h"
 #include "scratch_dir.h"
+#include "script/lua_env.h"
 
 using namespace squawk;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string repo(const char* rel) { return std::string(SQUAWK_TEST_DATA) + "/../../" + rel; }
+std::string repo(const char* rel) {
+  return std::string(SQUAWK_TEST_DATA) + "/../../" + rel;
+}
 
 std::unique_ptr<script::LuaEnv> load(const char* rel) {
   auto e = script::LuaEnv::load(repo(rel), {});
@@ -28,7 +30,9 @@ std::unique_ptr<script::LuaEnv> load(const char* rel) {
   return std::move(*e);
 }
 
-std::unique_ptr<script::LuaEnv> descent() { return load("envs/descent.lua"); }
+std::unique_ptr<script::LuaEnv> descent() {
+  return load("envs/descent.lua");
+}
 
 struct Episode {
   std::vector<std::vector<double>> obs;  // reset's, then one per step
@@ -77,7 +81,7 @@ TEST_CASE("DescentEnv-v0 declares BlueSky-Gym's spaces and episode limit") {
   CHECK(s.id == "DescentEnv-v0");
   CHECK(s.observation_size == 4);
   REQUIRE(s.observation.size() == 4);
-  CHECK(s.observation[0].name == "altitude");   // gymnasium's sorted Dict keys
+  CHECK(s.observation[0].name == "altitude");  // gymnasium's sorted Dict keys
   CHECK(s.observation[1].name == "runway_distance");
   CHECK(s.observation[2].name == "target_altitude");
   CHECK(s.observation[3].name == "vz");
@@ -133,7 +137,7 @@ TEST_CASE("DescentEnv-v0 full descent crashes with -100; full climb passes the r
   CHECK(down.terminated);
   CHECK(down.rewards.back() == -100.0);
   CHECK(down.obs.back()[0] * 3000 + 1500 <= 0.0);
-  CHECK(down.rewards.size() <= 13);  // at most 4000 m at 12.5 m/s, 30 s per step
+  CHECK(down.rewards.size() <= 13);                // at most 4000 m at 12.5 m/s, 30 s per step
   CHECK(down.obs[2][3] == doctest::Approx(-2.5));  // -12.5 m/s once the ramp is done
   const Episode up = run(*e, 3, 1.0, rng);
   CHECK(up.terminated);
@@ -178,14 +182,15 @@ TEST_CASE("the driver adds the TimeLimit and checks what the file returns") {
   REQUIRE((*w)->reset(0).is_ok());
   auto r = (*w)->step(std::vector<double>{1});
   REQUIRE_FALSE(r.is_ok());
-  CHECK(r.status().message().find("the observation has 1 numbers; the declared observation has 2") !=
-        std::string::npos);
+  CHECK(r.status().message().find(
+            "the observation has 1 numbers; the declared observation has 2") != std::string::npos);
 
   std::string no_action = kCounter;
   no_action.replace(no_action.find("action = {low = {-1}, high = {1}},"), 35, "");
   auto n = script::LuaEnv::load(write("no_action.lua", no_action).string(), {});
   REQUIRE_FALSE(n.is_ok());
-  CHECK(n.status().message().find("field 'action' must be {low = {..}, high = {..}}") != std::string::npos);
+  CHECK(n.status().message().find("field 'action' must be {low = {..}, high = {..}}") !=
+        std::string::npos);
 }
 
 TEST_CASE("VerticalCREnv-v0: DescentEnv plus five intruders in conflict, -50 per intrusion") {
@@ -205,9 +210,11 @@ TEST_CASE("VerticalCREnv-v0: DescentEnv plus five intruders in conflict, -50 per
     REQUIRE(ep.obs[0].size() == 39);
     for (int i = 0; i < 5; ++i) {
       const double dist_km = ep.obs[0][11 + i] * 200;  // intruder_distance
-      CHECK(dist_km > 9.26);   // outside 5 NM: each intruder is 100-900 s from its loss of separation
+      CHECK(dist_km >
+            9.26);  // outside 5 NM: each intruder is 100-900 s from its loss of separation
       CHECK(dist_km < 400);
-      CHECK(std::hypot(ep.obs[0][6 + i], ep.obs[0][17 + i]) == doctest::Approx(1.0));  // cos^2 + sin^2
+      CHECK(std::hypot(ep.obs[0][6 + i], ep.obs[0][17 + i]) ==
+            doctest::Approx(1.0));  // cos^2 + sin^2
     }
     CHECK(ep.terminated);
     const double target = ep.obs[0][22] * 3000 + 1500;
