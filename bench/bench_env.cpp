@@ -4,6 +4,12 @@
 // recomputes every cos/sin/atan2 the way the Python code does, and the real
 // BlueSky-Gym's measured 119-132 env steps/s on this machine
 // (docs/bluesky_facts.md §6). One env step = 10 x 5 s sub-steps.
+// Beside it, environments written in Lua over the same kernels
+// (script/lua_env.h): BlueSky-Gym's DescentEnv-v0 (envs/descent.lua; one env
+// step = 30 x 1 s simulator steps of one aircraft through the full
+// Simulation, OpenAP when SQUAWK_OPENAP names its data) and VerticalCREnv-v0
+// (envs/vertical_cr.lua, six aircraft), each against BlueSky-Gym's measured
+// figure (docs/gym_envs.md, bench/gym_ref/compare.py).
 // Prints figures only; no timing is asserted anywhere.
 #include <chrono>
 #include <cmath>
@@ -14,7 +20,9 @@
 #include "core/geo.h"
 #include "core/rng.h"
 #include "core/units.h"
+#include "core/paths.h"
 #include "env/horizontal_cr.h"
+#include "script/lua_env.h"
 
 using namespace squawk;
 using Clock = std::chrono::steady_clock;
@@ -23,6 +31,10 @@ namespace {
 
 constexpr double kBlueSkyGymRandom = 119.3;  // env steps/s, measured (random actions)
 constexpr double kBlueSkyGymZero = 132.2;    // env steps/s, measured (zero action)
+// env steps/s of BlueSky-Gym's DescentEnv-v0 on the real BlueSky (bench/gym_ref/compare.py, step() only),
+// measured at load average 16 on the 2-core machine; HorizontalCREnv's figures above were taken idle.
+constexpr double kBlueSkyGymDescent = 5.9;
+constexpr double kBlueSkyGymVerticalCr = 13.4;  // VerticalCREnv-v0, the same way, load average 17-20
 
 struct Run {
   long long steps = 0;
@@ -56,6 +68,33 @@ Run drive(env::Rules rules, bool random_actions, double seconds, uint64_t seed) 
       ask = !e->done();
     }
     r.steps += e->stats().steps;
+    ++r.episodes;
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (r.seconds >= seconds) return r;
+  }
+}
+
+// Steps a Lua environment with uniform random (or zero) actions for `seconds`.
+Run drive_lua(const std::string& file, bool random_actions, double seconds, uint64_t seed) {
+  auto e = script::LuaEnv::load(paths::resource(file), {});
+  Run r;
+  if (!e) {
+    std::fprintf(stderr, "bench_env: %s\n", e.status().message().c_str());
+    return r;
+  }
+  Rng rng(seed);
+  std::vector<double> action((*e)->spec().action_size());
+  const auto t0 = Clock::now();
+  for (uint64_t k = 0;; ++k) {
+    if (!(*e)->reset(seed + k).is_ok()) return r;
+    while (true) {
+      for (double& a : action) a = random_actions ? rng.uniform(-1.0, 1.0) : 0.0;
+      auto s = (*e)->step(action);
+      if (!s) return r;
+      r.checksum += s->reward;
+      if (s->terminated || s->truncated) break;
+    }
+    r.steps += (*e)->steps();
     ++r.episodes;
     r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     if (r.seconds >= seconds) return r;
@@ -126,7 +165,7 @@ Run reference_gym(double seconds, uint64_t seed) {
 
 void print(const char* name, const Run& r, double reference) {
   const double sps = static_cast<double>(r.steps) / r.seconds;
-  std::printf("  %-44s %12.0f env steps/s  %8.0f episodes/s  %8.0fx BlueSky-Gym\n", name, sps,
+  std::printf("  %-56s %12.0f env steps/s  %8.0f episodes/s  %8.0fx BlueSky-Gym\n", name, sps,
               static_cast<double>(r.episodes) / r.seconds, sps / reference);
 }
 
@@ -152,5 +191,13 @@ int main(int argc, char** argv) {
   print("random actions, 1 thread", drive(env::Rules::kPaper, true, seconds, 1), kBlueSkyGymRandom);
   print("zero action, 1 thread", drive(env::Rules::kPaper, false, seconds, 1), kBlueSkyGymZero);
   print("random actions, 2 threads (1 env each)", two_threads(env::Rules::kPaper, seconds), kBlueSkyGymRandom);
+  std::printf("Lua environments (one env step = 30 x 1 s simulator steps; OpenAP: %s):\n",
+              std::getenv("SQUAWK_OPENAP") ? "on" : "off, class model");
+  print("DescentEnv-v0 (envs/descent.lua), random, 1 thread", drive_lua("envs/descent.lua", true, seconds, 1),
+        kBlueSkyGymDescent);
+  print("DescentEnv-v0 (envs/descent.lua), zero, 1 thread", drive_lua("envs/descent.lua", false, seconds, 1),
+        kBlueSkyGymDescent);
+  print("VerticalCREnv-v0 (envs/vertical_cr.lua), random, 1 thread",
+        drive_lua("envs/vertical_cr.lua", true, seconds, 1), kBlueSkyGymVerticalCr);
   return 0;
 }

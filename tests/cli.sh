@@ -26,6 +26,12 @@ expect "eval lua error"  1 "^squawk: .*module/mod.lua:7: value too large: 6$" --
 expect "runaway"         1 "stopped: the script ran .* Lua instructions" -- "$sq" run "$d/runaway.lua"
 expect "test totals"     1 "^1 passed, 1 failed$" -- "$sq" test "$d/pass_fail"
 expect "test location"   1 "fail.lua:1: check failed: got 4, want 5 \(arithmetic\)" -- "$sq" test "$d/pass_fail"
+# Environments written in Lua (envs/): episodes from the command line.
+expect "env run random"  0 "terminated +5 of 5; truncated 0" -- "$sq" env run envs/descent.lua --policy random --episodes 5
+expect "env run crash"   0 "mean length +[0-9]\.[0-9]+ steps" -- "$sq" env run envs/descent.lua --policy constant:-1 --episodes 3
+expect "env run json"    0 '"env": "DescentEnv-v0", "policy": "zero", "episodes": 2' -- "$sq" env run envs/descent.lua --policy zero --episodes 2 --json
+expect "env bad policy"  2 "constant:2: action 1 is outside \[-1, 1\]" -- "$sq" env run envs/descent.lua --policy constant:2
+expect "env no file"     1 "no environment file 'envs/nope.lua'" -- "$sq" env run envs/nope.lua
 tmp=$(mktemp -d)
 expect "demo"            0 "translator HDG KL001" -- "$sq" demo --record "$tmp/ep.jsonl" --svg "$tmp/ep.svg"
 expect "demo summary"    0 "waypoint reached +yes" -- "$sq" demo --quiet

@@ -260,6 +260,26 @@ const std::vector<Subcommand>& subcommands() {
        "URL Ollama's native API. Temperature, seed and context size are sent with\n"
        "every request; transport failures and 5xx replies are retried with backoff.\n",
        cmd_llm},
+      {"env", "env run ENV.lua --policy P  episodes of an environment written in Lua (envs/)",
+       "usage: squawk env run ENV.lua [--policy random|zero|constant:V[,V...]] [--episodes N]\n"
+       "                              [--seed S] [--json]\n\n"
+       "Runs episodes of a Gymnasium-shaped environment written as one Lua file\n"
+       "(envs/descent.lua and envs/vertical_cr.lua: BlueSky-Gym's DescentEnv-v0\n"
+       "and VerticalCREnv-v0; the contract is in docs/gym_envs.md) and prints the\n"
+       "mean episode reward and its standard deviation, the mean episode length,\n"
+       "how many episodes terminated or were truncated at the file's\n"
+       "max_episode_steps, and env steps/s. Episode k resets with seed S + k\n"
+       "(default S = 0), so a run is reproduced exactly.\n\n"
+       "  --policy random       each action uniform in the declared Box (default)\n"
+       "  --policy zero         always 0\n"
+       "  --policy constant:V   always V (one number for every component, or one per component)\n"
+       "  --episodes N          default 10\n"
+       "  --json                one JSON object: env, policy, episodes, seed, mean_reward,\n"
+       "                        std_reward, mean_length, terminated, truncated, steps_per_s\n"
+       "With BlueSky's OpenAP data (--openap DIR or SQUAWK_OPENAP) the aircraft fly\n"
+       "OpenAP's limits, as in BlueSky-Gym; without it squawk's class model.\n"
+       SQUAWK_VM_FLAGS_HELP,
+       cmd_env},
       {"scn", "scn FILE.scn               run a BlueSky scenario headless and summarise it",
        "usage: squawk scn FILE.scn [--until SECONDS] [--navdata DIR] [--dump-json] [--seed N]\n"
        "                           [--max-time SECONDS] [--max-sim-time SECONDS]\n"

@@ -24,6 +24,7 @@ int cmd_serve(const ArgV& args);   // cli_serve.cpp
 int cmd_llm(const ArgV& args);     // cli_llm.cpp
 int cmd_scn(const ArgV& args);       // cli_sim.cpp
 int cmd_commands(const ArgV& args);  // cli_sim.cpp
+int cmd_env(const ArgV& args);       // cli_env.cpp
 int cmd_translate(const ArgV& args);       // cli_translate.cpp
 int cmd_eval_translate(const ArgV& args);  // cli_translate.cpp
 

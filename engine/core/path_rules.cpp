@@ -112,7 +112,7 @@ Status PathRules::check_read(const std::string& path, std::string_view what) con
   for (const auto& dir : read_)
     if (within(*r, dir)) return Status::ok();
   return Status::invalid(head + (*r != path ? "it leads to '" + *r + "'; " : std::string()) +
-                         "the sandbox reads only the script's folder, squawk's scripts/prompts/scenarios/models, "
+                         "the sandbox reads only the script's folder, squawk's scripts/prompts/scenarios/envs/models, "
                          "--out, --navdata and folders named with --allow-read DIR (or run with --unsafe)");
 }
 

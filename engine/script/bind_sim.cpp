@@ -28,6 +28,16 @@
 //                            failed_by_reason={[reason]=n}}  (scenario commands since IC)
 //   sim:run_state()      -> "hold" | "op" | "ff", ff_end [s] or nil
 //   sim:dtmult()         -> the DTMULT real-time multiplier
+//   Kernels for environments (SI units, no TrafScript text; envs/*.lua):
+//   sim:create{id=, type=, lat=, lon=, hdg_deg= 0, alt_m= 0, spd=}  (BlueSky's
+//                           traf.cre: spd is CAS [m/s], or Mach when < 2)
+//   sim:creconfs{id=, type=, target=, dpsi_deg=, dcpa_m=, tlosh_s=, dh_m=?, tlosv_s=?, spd=?}
+//                           (BlueSky's traf.creconfs: an intruder in conflict with target)
+//   sim:select_vertical(acid, alt_m, vs_ms)   (the autopilot's selected altitude and
+//                           vertical speed, as BlueSky-Gym writes traf.selalt/selvs)
+//   sim:values(acid)     -> lat, lon, alt_m, hdg_deg, tas_ms, gs_ms, vs_ms, cas_ms
+//                           (several results, no table; errors on an unknown acid)
+//   sim:delete_all()                       (every aircraft goes; clock and settings stay)
 //   sim:copy()           -> an independent copy
 //   sim:snapshot()       -> string            (the full state as bytes)
 //   squawk.sim.commands() -> { {name=, aliases={...}, args=, usage=, help=}, ... }
@@ -36,6 +46,7 @@
 //       OpenAP data of $SQUAWK_OPENAP / --openap, then the class model's named designators
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "command/conformance.h"
@@ -338,6 +349,61 @@ int l_dtmult(lua_State* L) {
   return 1;
 }
 
+int l_create(lua_State* L) {
+  command::Stack* s = self(L);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  const std::string id = field_string(L, 2, "id", "");
+  const std::string type = field_string(L, 2, "type", "");
+  const double lat = field_number(L, 2, "lat", NAN), lon = field_number(L, 2, "lon", NAN);
+  const double spd = field_number(L, 2, "spd", NAN);
+  if (std::isnan(lat) || std::isnan(lon) || std::isnan(spd))
+    throw ArgError("sim:create: fields lat, lon [deg] and spd (CAS m/s or Mach) are required");
+  check_status(s->sim().create(id, type, lat, lon, field_number(L, 2, "hdg_deg", 0.0),
+                               field_number(L, 2, "alt_m", 0.0), spd));
+  return 0;
+}
+
+std::optional<double> opt_field(lua_State* L, int idx, const char* key) {
+  const double v = field_number(L, idx, key, NAN);
+  return std::isnan(v) ? std::nullopt : std::optional<double>(v);
+}
+
+int l_creconfs(lua_State* L) {
+  command::Stack* s = self(L);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  const double dpsi = field_number(L, 2, "dpsi_deg", NAN), dcpa = field_number(L, 2, "dcpa_m", NAN),
+               tlosh = field_number(L, 2, "tlosh_s", NAN);
+  if (std::isnan(dpsi) || std::isnan(dcpa) || std::isnan(tlosh))
+    throw ArgError("sim:creconfs: fields dpsi_deg, dcpa_m and tlosh_s are required");
+  check_status(s->sim().creconfs(field_string(L, 2, "id", ""), field_string(L, 2, "type", ""),
+                                 field_string(L, 2, "target", ""), dpsi, dcpa, tlosh, opt_field(L, 2, "dh_m"),
+                                 opt_field(L, 2, "tlosv_s"), opt_field(L, 2, "spd")));
+  return 0;
+}
+
+int l_select_vertical(lua_State* L) {
+  command::Stack* s = self(L);
+  check_status(s->sim().select_vertical(arg_string(L, 2, "acid"), arg_number(L, 3, "alt_m"),
+                                        arg_number(L, 4, "vs_ms")));
+  return 0;
+}
+
+int l_values(lua_State* L) {
+  const sim::Simulation& s = self(L)->sim();
+  const std::string acid = arg_string(L, 2, "acid");
+  const int i = s.index_of(acid);
+  if (i < 0) throw ArgError("sim:values: no aircraft '" + acid + "'");
+  const sim::Traffic& t = s.traffic();
+  for (double v : {t.lat[i], t.lon[i], t.alt[i], t.hdg[i], t.tas[i], t.gs[i], t.vs[i], t.cas[i]})
+    lua_pushnumber(L, v);
+  return 8;
+}
+
+int l_delete_all(lua_State* L) {
+  self(L)->sim().delete_all();
+  return 0;
+}
+
 int l_copy(lua_State* L) {
   const command::Stack& s = *self(L);
   new_object<command::Stack>(L, kSimMt, s);
@@ -404,6 +470,9 @@ void bind_sim(lua_State* L) {
       {"output", guarded<l_output>},     {"copy", guarded<l_copy>},
       {"tally", guarded<l_tally>},       {"run_state", guarded<l_run_state>},
       {"dtmult", guarded<l_dtmult>},
+      {"create", guarded<l_create>},     {"select_vertical", guarded<l_select_vertical>},
+      {"values", guarded<l_values>},     {"delete_all", guarded<l_delete_all>},
+      {"creconfs", guarded<l_creconfs>},
       {"snapshot", guarded<l_snapshot>}, {nullptr, nullptr},
   };
   define_class(L, kSimMt, methods);

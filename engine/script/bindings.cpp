@@ -10,6 +10,8 @@ void bind_all(lua_State* L) {
   bind_rag(L);
   bind_translate(L);
   bind_sim(L);
+  bind_geo(L);
+  bind_gym(L);
 }
 
 }  // namespace squawk::script

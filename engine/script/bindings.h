@@ -12,6 +12,8 @@ void bind_llm(lua_State* L);   // squawk.llm (LLM clients), squawk.load_config
 void bind_rag(lua_State* L);   // squawk.rag (BM25 over the command docs)
 void bind_translate(lua_State* L);  // squawk.translate (offline translator, corpus scorer)
 void bind_sim(lua_State* L);   // squawk.sim (simulation driven by TrafScript)
+void bind_gym(lua_State* L);   // squawk.gym (environments written in Lua: load)
+void bind_geo(lua_State* L);   // squawk.geo (geometry kernels: kwik*, CPA, polygons)
 
 // Registers every area's bindings (called once per Vm).
 void bind_all(lua_State* L);

@@ -378,7 +378,7 @@ Vm& Vm::of(lua_State* L) { return **static_cast<Vm**>(lua_getextraspace(L)); }
 
 Vm::Vm(VmOptions options) : options_(std::move(options)), rng_(options_.seed) {
   if (options_.unsafe) rules_ = paths::PathRules::unrestricted();
-  for (const char* rel : {"scripts", "prompts", "scenarios", "models"}) rules_.allow_read(paths::resource(rel));
+  for (const char* rel : {"scripts", "prompts", "scenarios", "envs", "models"}) rules_.allow_read(paths::resource(rel));
   for (const auto* list : {&options_.require_dirs, &options_.read_dirs})
     for (const auto& dir : *list) rules_.allow_read(dir);
   for (const auto* dir : {&options_.out_dir, &options_.navdata_dir}) rules_.allow_read(*dir);
@@ -552,19 +552,23 @@ Status Vm::load_table(const std::string& path, const std::string& key) {
   return Status::ok();
 }
 
-Status Vm::run_file(const std::string& path, const std::vector<std::string>& args) {
+void Vm::add_script_folder(const std::string& dir) {
   lua_State* L = L_;
-  // The script's folder joins the require path (first, so local modules win).
   lua_getfield(L, LUA_REGISTRYINDEX, "squawk.require_dirs");
   const lua_Integer n = luaL_len(L, -1);
   for (lua_Integer i = n; i >= 1; --i) {
     lua_geti(L, -1, i);
     lua_seti(L, -2, i + 1);
   }
-  lua_pushstring(L, paths::dirname(path).c_str());
+  lua_pushstring(L, dir.c_str());
   lua_seti(L, -2, 1);
   lua_pop(L, 1);
-  rules_.allow_read(paths::dirname(path));
+  rules_.allow_read(dir);
+}
+
+Status Vm::run_file(const std::string& path, const std::vector<std::string>& args) {
+  lua_State* L = L_;
+  add_script_folder(paths::dirname(path));
 
   lua_createtable(L, static_cast<int>(args.size()), 1);
   lua_pushstring(L, path.c_str());

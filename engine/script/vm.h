@@ -82,6 +82,9 @@ class Vm {
   // stack. On error the function and arguments are gone and the message,
   // with its traceback, comes back as kInvalidArgument.
   Status pcall(int nargs, int nresults);
+  // `dir` joins the front of the require path (local modules win) and the
+  // readable folders: what running a script in it does (run_file, LuaEnv).
+  void add_script_folder(const std::string& dir);
   // Runs Lua source text under `chunkname` (shown in error messages).
   Status run_string(const std::string& code, const std::string& chunkname);
   // Runs a Lua file that returns a table (a prompt, template or config file)

@@ -28,6 +28,27 @@ Atmos isa(double alt_m) {
   return {rho * kRGas * t, rho, t};
 }
 
+Atmos isa_layered(double alt_m) {
+  constexpr double kG0 = 9.80665;  // [m/s^2]
+  constexpr double h0[] = {0.0, 11000., 20000., 32000., 47000., 51000., 71000., 86852.};           // [m]
+  constexpr double p0[] = {101325., 22631.7009099, 5474.71768857, 867.974468302, 110.898214043,
+                           66.939, 3.9564};                                                            // [Pa]
+  constexpr double t0[] = {288.15, 216.65, 216.65, 228.65, 270.65, 270.65, 214.65};                 // [K]
+  constexpr double lapse[] = {-0.0065, 0, 0.001, 0.0028, 0, -0.0028, -0.002};                        // [K/m]
+  const double h = std::max(0.0, std::min(alt_m, h0[7]));
+  int i = 0;
+  while (h > h0[i + 1] && i < 6) ++i;
+  double t, p;
+  if (lapse[i] == 0) {
+    t = t0[i];
+    p = p0[i] * std::exp(-kG0 / (kRGas * t) * (h - h0[i]));
+  } else {
+    t = t0[i] + lapse[i] * (h - h0[i]);
+    p = p0[i] * std::pow(t / t0[i], -kG0 / (lapse[i] * kRGas));
+  }
+  return {p, p / (kRGas * t), t};
+}
+
 double speed_of_sound(double alt_m) { return std::sqrt(kGamma * kRGas * isa_temperature(alt_m)); }
 double speed_of_sound(const Atmos& a) { return std::sqrt(kGamma * kRGas * a.temp); }
 

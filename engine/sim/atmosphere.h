@@ -27,6 +27,12 @@ struct Atmos {
 };
 
 Atmos isa(double alt_m);
+// BlueSky's scalar atmos() (tools/aero.py): the layered ISA table to 86 852 m,
+// altitude clipped to [0, 86 852] m, pressure from each layer's exact
+// exponent. isa() above is BlueSky's vectorised vatmos, whose troposphere
+// density exponent is rounded; the two differ by about 1e-5 relative. BlueSky
+// uses this one where it converts a single speed (creconfs' tas2cas).
+Atmos isa_layered(double alt_m);
 double isa_temperature(double alt_m);   // [K]
 double isa_pressure(double alt_m);      // [Pa]
 double isa_density(double alt_m);       // [kg/m^3]

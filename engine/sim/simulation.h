@@ -145,6 +145,12 @@ class Simulation {
   // VS: selected vertical speed magnitude [m/s] (sign ignored; the aircraft
   // climbs or descends toward its selected altitude); switches VNAV off.
   Status set_vs(std::string_view acid, double vs);
+  // The autopilot's selected altitude and vertical speed written as
+  // BlueSky-Gym's environments write bs.traf.selalt / selvs (no ALT command):
+  // any finite altitude [m] (a target above the performance ceiling is
+  // bounded by it, as every selected altitude is), vs [m/s] whose magnitude
+  // is flown (<= 0.1 m/s: the default, as BlueSky); VNAV off.
+  Status select_vertical(std::string_view acid, double alt_m, double vs);
   // SPD: selected CAS [m/s] or Mach, >= 0. With VNAV on, passing a waypoint
   // with a speed constraint replaces it.
   Status set_speed(std::string_view acid, double casmach);

@@ -242,7 +242,10 @@ Status Simulation::creconfs(std::string_view acid, std::string_view actype, std:
   const geo::LatLon pos = geo::kwikpos(t.lat[o], t.lon[o], brn, units::m_to_nm(dist));
   SQUAWK_RETURN_IF_ERROR(check_latlon(id, pos.lat_deg, pos.lon_deg));
   const double hdg = std::atan2(gse, gsn) / kDeg;
-  const int i = add_aircraft(id, actype, pos.lat_deg, pos.lon_deg, hdg, alt, gs, tas_to_cas(gs, alt));
+  // BlueSky converts the ground speed to CAS with its scalar atmosphere and
+  // creates the aircraft at that CAS, whose TAS comes from the vectorised one.
+  const double cas = tas_to_cas(gs, isa_layered(alt));
+  const int i = add_aircraft(id, actype, pos.lat_deg, pos.lon_deg, hdg, alt, cas_to_tas(cas, alt), cas);
   traf_.sel_alt[i] = alt_o;
   traf_.sel_vs[i] = std::fabs(vs);
   traf_.vs[i] = vs;
@@ -323,6 +326,16 @@ Status Simulation::set_altitude(std::string_view acid, double alt_m, std::option
 Status Simulation::set_vs(std::string_view acid, double vs) {
   SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
   SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "vertical speed", vs));
+  traf_.sel_vs[i] = std::fabs(vs);
+  traf_.vnav[i] = 0;
+  return Status::ok();
+}
+
+Status Simulation::select_vertical(std::string_view acid, double alt_m, double vs) {
+  SQUAWK_ASSIGN_OR_RETURN(const int i, lookup(acid));
+  SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "selected altitude", alt_m));
+  SQUAWK_RETURN_IF_ERROR(check_finite(traf_.id[i], "vertical speed", vs));
+  traf_.sel_alt[i] = alt_m;
   traf_.sel_vs[i] = std::fabs(vs);
   traf_.vnav[i] = 0;
   return Status::ok();

@@ -1,0 +1,123 @@
+// squawk.geo: the geometry kernels environments call per step (BlueSky's
+// flat-earth formulas, great circles, the CPA kernel, polygon tests).
+// Angles in degrees, distances as each name says.
+//
+//   squawk.geo.kwikqdrdist(lat1, lon1, lat2, lon2) -> qdr_deg, dist_nm
+//   squawk.geo.kwikdist(lat1, lon1, lat2, lon2)    -> dist_nm
+//   squawk.geo.kwikpos(lat, lon, qdr_deg, dist_nm) -> lat, lon
+//   squawk.geo.destination(lat, lon, bearing_deg, dist_m) -> lat, lon  (great circle, R 6371 km)
+//   squawk.geo.wrap180(deg) -> (-180, 180];  wrap360(deg) -> [0, 360)
+//   squawk.geo.gym_wrap180(deg) -> BlueSky-Gym's one-shot wrap (a > 180: a - 360; a < -180: a +
+//   360) squawk.geo.cpa(dx, dy, du, dv, r) -> tcpa_s, dcpa_m, t_in_s, t_out_s
+//       relative position (dx east, dy north) [m] and velocity [m/s] of the
+//       intruder, protected radius r [m]; t_in/t_out are nil when the tracks
+//       do not meet inside r (core/cpa.h, BlueSky's state-based detection)
+//   squawk.geo.inside(lat, lon, {lat1, lon1, lat2, lon2, ...}) -> boolean
+//       the point inside the polygon (even-odd rule, BlueSky's POLY test)
+#include <cmath>
+#include <vector>
+
+#include "core/cpa.h"
+#include "core/geo.h"
+#include "script/bindings.h"
+#include "script/lua_util.h"
+#include "sim/shapes.h"
+
+namespace squawk::script {
+
+namespace {
+
+int l_kwikqdrdist(lua_State* L) {
+  const auto r = geo::kwikqdrdist(arg_number(L, 1, "lat1"), arg_number(L, 2, "lon1"),
+                                  arg_number(L, 3, "lat2"), arg_number(L, 4, "lon2"));
+  lua_pushnumber(L, r.qdr_deg);
+  lua_pushnumber(L, r.dist_nm);
+  return 2;
+}
+
+int l_kwikdist(lua_State* L) {
+  lua_pushnumber(L, geo::kwikdist_nm(arg_number(L, 1, "lat1"), arg_number(L, 2, "lon1"),
+                                     arg_number(L, 3, "lat2"), arg_number(L, 4, "lon2")));
+  return 1;
+}
+
+int l_kwikpos(lua_State* L) {
+  const auto p = geo::kwikpos(arg_number(L, 1, "lat"), arg_number(L, 2, "lon"),
+                              arg_number(L, 3, "qdr_deg"), arg_number(L, 4, "dist_nm"));
+  lua_pushnumber(L, p.lat_deg);
+  lua_pushnumber(L, p.lon_deg);
+  return 2;
+}
+
+int l_destination(lua_State* L) {
+  const auto p = geo::gc_destination(arg_number(L, 1, "lat"), arg_number(L, 2, "lon"),
+                                     arg_number(L, 3, "bearing_deg"), arg_number(L, 4, "dist_m"));
+  lua_pushnumber(L, p.lat_deg);
+  lua_pushnumber(L, p.lon_deg);
+  return 2;
+}
+
+int l_wrap180(lua_State* L) {
+  lua_pushnumber(L, geo::wrap180(arg_number(L, 1, "deg")));
+  return 1;
+}
+
+int l_wrap360(lua_State* L) {
+  lua_pushnumber(L, geo::wrap360(arg_number(L, 1, "deg")));
+  return 1;
+}
+
+int l_gym_wrap180(lua_State* L) {
+  lua_pushnumber(L, geo::gym_wrap180(arg_number(L, 1, "deg")));
+  return 1;
+}
+
+int l_cpa(lua_State* L) {
+  const double r = arg_number(L, 5, "r");
+  if (!(r > 0)) throw ArgError("squawk.geo.cpa: radius r must be > 0 m");
+  const cpa::Horizontal h = cpa::horizontal(arg_number(L, 1, "dx"), arg_number(L, 2, "dy"),
+                                            arg_number(L, 3, "du"), arg_number(L, 4, "dv"), r);
+  lua_pushnumber(L, h.tcpa);
+  lua_pushnumber(L, std::sqrt(h.dcpa2));
+  if (!h.enters) return 2;
+  lua_pushnumber(L, h.t_in);
+  lua_pushnumber(L, h.t_out);
+  return 4;
+}
+
+int l_inside(lua_State* L) {
+  const double lat = arg_number(L, 1, "lat"), lon = arg_number(L, 2, "lon");
+  luaL_checktype(L, 3, LUA_TTABLE);
+  const lua_Integer n = length(L, 3);
+  if (n < 6 || n % 2 != 0)
+    throw ArgError("squawk.geo.inside: polygon needs lat, lon pairs of at least 3 points, got " +
+                   std::to_string(n) + " numbers");
+  sim::Shape poly;
+  poly.kind = sim::Shape::Kind::kPoly;
+  poly.coords.reserve(static_cast<size_t>(n));
+  for (lua_Integer k = 1; k <= n; ++k) {
+    get_index(L, 3, k);
+    if (!lua_isnumber(L, -1))
+      throw ArgError("squawk.geo.inside: polygon[" + std::to_string(k) + "] is not a number");
+    poly.coords.push_back(lua_tonumber(L, -1));
+    lua_pop(L, 1);
+  }
+  lua_pushboolean(L, poly.contains(lat, lon, 0.0));
+  return 1;
+}
+
+}  // namespace
+
+void bind_geo(lua_State* L) {
+  static const luaL_Reg fns[] = {
+      {"kwikqdrdist", guarded<l_kwikqdrdist>}, {"kwikdist", guarded<l_kwikdist>},
+      {"kwikpos", guarded<l_kwikpos>},         {"destination", guarded<l_destination>},
+      {"wrap180", guarded<l_wrap180>},         {"wrap360", guarded<l_wrap360>},
+      {"gym_wrap180", guarded<l_gym_wrap180>}, {"cpa", guarded<l_cpa>},
+      {"inside", guarded<l_inside>},           {nullptr, nullptr}};
+  push_squawk_subtable(L, "geo");
+  luaL_setfuncs(L, fns, 0);
+  lua_pop(L, 1);
+}
+
+}  // namespace squawk::script

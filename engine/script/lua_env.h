@@ -1,0 +1,84 @@
+// LuaEnv: a Gymnasium-shaped environment written as one Lua file (envs/*.lua)
+// over the engine's C++ kernels (squawk.sim, squawk.geo), driven from C++.
+//
+// The file returns a table E (the contract, docs/gym_envs.md):
+//   E.id                 string, e.g. "DescentEnv-v0"
+//   E.source             string (optional): the definition it follows
+//   E.observation        array of {name = "altitude", size = 1}: the flat
+//                        observation's slices, in order
+//   E.action             {low = {..}, high = {..}}: a Box of #low numbers
+//   E.max_episode_steps  whole number >= 1 (gymnasium's TimeLimit)
+//   E:reset(seed, options) -> obs [, info]
+//   E:step(action)         -> obs, reward, terminated, truncated [, info]
+// obs is an array of observation_size finite numbers; action an array of
+// action_size numbers. The driver adds the TimeLimit: truncated once
+// max_episode_steps steps ran without termination. Every call into the file
+// runs under the Vm's budget (a fresh one per call); Lua errors and contract
+// violations come back as Status naming the file, the function and the value.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/status.h"
+#include "script/vm.h"
+
+namespace squawk::script {
+
+struct LuaEnvSpec {
+  struct Field {
+    std::string name;
+    int size = 0;
+  };
+  std::string id;
+  std::string source;
+  std::vector<Field> observation;
+  int observation_size = 0;                     // sum of the fields' sizes
+  std::vector<double> action_low, action_high;  // the Box, action_size each
+  int max_episode_steps = 0;
+  int action_size() const { return static_cast<int>(action_low.size()); }
+};
+
+struct LuaStep {
+  double reward = 0.0;
+  bool terminated = false;
+  bool truncated = false;  // the file's own, or the driver's TimeLimit
+};
+
+class LuaEnv {
+ public:
+  // Loads `path` in a fresh Vm with `options`; errors name the file and the
+  // declaration that is missing or malformed.
+  static Result<std::unique_ptr<LuaEnv>> load(const std::string& path, const VmOptions& options);
+  ~LuaEnv();
+  LuaEnv(const LuaEnv&) = delete;
+  LuaEnv& operator=(const LuaEnv&) = delete;
+
+  const LuaEnvSpec& spec() const { return spec_; }
+  const std::string& path() const { return path_; }
+  // E:reset(seed); the observation is then observation().
+  Status reset(uint64_t seed);
+  // E:step(action); error when action has not action_size numbers.
+  Result<LuaStep> step(std::span<const double> action);
+  const std::vector<double>& observation() const { return obs_; }
+  int steps() const { return steps_; }  // steps since the last reset
+  Vm& vm() { return *vm_; }
+
+ private:
+  LuaEnv(std::string path, std::unique_ptr<Vm> vm) : path_(std::move(path)), vm_(std::move(vm)) {}
+  Status read_spec();
+  // Reads the observation array at stack index `idx` into obs_.
+  Status read_observation(int idx, const char* fn);
+
+  std::string path_;
+  std::unique_ptr<Vm> vm_;
+  LuaEnvSpec spec_;
+  std::vector<double> obs_;
+  int steps_ = 0;
+  bool started_ = false;  // reset has succeeded at least once
+};
+
+}  // namespace squawk::script
