@@ -350,6 +350,7 @@ void Simulation::update_kinematics() {
   Traffic& t = traf_;
   const int n = t.n();
   const double dt = dt_;
+  const bool windy = wind_.dim() > 0;
   for (int i = 0; i < n; ++i) {
     const bool cr = t.cr_active[i] != 0;
     const bool cr_vert = cr && crs_.vertical;
@@ -362,7 +363,6 @@ void Simulation::update_kinematics() {
                   : t.vnav_vs_on[i]      ? std::fabs(t.vnav_vs[i])
                   : t.sel_vs[i] > kMinSelVs ? t.sel_vs[i]
                                          : kDefaultVs;
-    const bool windy = wind_.dim() > 0;
     const WindNE w = windy ? wind_.at(t.lat[i], t.lon[i], t.alt[i]) : WindNE{};
     double cr_tas = cr ? t.cr_tas[i] : 0.0;
     if (cr && windy) {
@@ -437,7 +437,6 @@ void Simulation::update_kinematics() {
     } else if (t.tas[i] != old_tas) {
       refresh_speed_outputs(i, isa(t.alt[i]));
     }
-
   }
 
   // Heading trigonometry of every aircraft, vectorised (vmath.h).
@@ -446,7 +445,6 @@ void Simulation::update_kinematics() {
 
   // Ground speed (wind above 50 ft) and flat-earth position update: latitude,
   // its trigonometry (vectorised), then longitude.
-  const bool windy = wind_.dim() > 0;
   for (int i = 0; i < n; ++i) {
     t.gsnorth[i] = t.tas[i] * t.cos_hdg[i];
     t.gseast[i] = t.tas[i] * t.sin_hdg[i];
