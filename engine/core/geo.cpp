@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/units.h"
+#include "core/vmath.h"
 
 namespace squawk::geo {
 
@@ -66,6 +67,49 @@ QdrDist qdrdist(const LatTrig& pa, double lona, const LatTrig& pb, double lonb) 
   const double d = 2.0 * r * std::atan2(std::sqrt(root), std::sqrt(1.0 - root));
   const double qdr = std::atan2(std::sin(dlon) * cb, sb * ca - sa * cb * std::cos(dlon)) / kDeg;
   return {pymod(qdr, 360.0), d / kNm};
+}
+
+void qdrdist_n(const QdrDistArrays& p, int n) {
+  constexpr double a = 6378137.0;
+  constexpr int kBlock = 64;  // elements per pass through the scratch arrays below
+  double m[kBlock], h1[kBlock], dl[kBlock], h2[kBlock];
+  double sm[kBlock], cm[kBlock], s1[kBlock], s2[kBlock], sdl[kBlock], cdl[kBlock];
+  double y1[kBlock], x1[kBlock], y2[kBlock], x2[kBlock], r[kBlock];
+  for (int o = 0; o < n; o += kBlock) {
+    const int b = std::min(kBlock, n - o);
+    const double *la = p.la + o, *lb = p.lb + o, *sa = p.sa + o, *ca = p.ca + o, *sb = p.sb + o, *cb = p.cb + o;
+    for (int k = 0; k < b; ++k) {
+      m[k] = 0.5 * (la[k] + lb[k]);
+      h1[k] = 0.5 * (lb[k] - la[k]);
+      dl[k] = (p.lonb[o + k] - p.lona[o + k]) * kDeg;
+      h2[k] = 0.5 * dl[k];
+    }
+    vmath::sin(m, 1.0, sm, b);
+    vmath::cos(m, 1.0, cm, b);
+    vmath::sin(h1, 1.0, s1, b);
+    vmath::sin(h2, 1.0, s2, b);
+    vmath::sin(dl, 1.0, sdl, b);
+    vmath::cos(dl, 1.0, cdl, b);
+    for (int k = 0; k < b; ++k) {
+      if (la[k] * lb[k] >= 0.0) {
+        r[k] = rwgs84(sm[k], cm[k]);
+      } else {
+        r[k] = 0.5 * (std::fabs(la[k]) * (rwgs84(sa[k], ca[k]) + a) + std::fabs(lb[k]) * (rwgs84(sb[k], cb[k]) + a)) /
+               (std::fabs(la[k]) + std::fabs(lb[k]));
+      }
+      const double root = s1[k] * s1[k] + ca[k] * cb[k] * s2[k] * s2[k];
+      y1[k] = std::sqrt(root);
+      x1[k] = std::sqrt(1.0 - root);
+      y2[k] = sdl[k] * cb[k];
+      x2[k] = sb[k] * ca[k] - sa[k] * cb[k] * cdl[k];
+    }
+    vmath::atan2(y1, x1, y1, b);
+    vmath::atan2(y2, x2, y2, b);
+    for (int k = 0; k < b; ++k) {
+      p.dist_nm[o + k] = 2.0 * r[k] * y1[k] / kNm;
+      p.qdr_deg[o + k] = pymod(y2[k] / kDeg, 360.0);
+    }
+  }
 }
 
 double kwikdist_nm(double lata, double lona, double latb, double lonb) {

@@ -38,6 +38,17 @@ struct LatTrig {
 };
 LatTrig lat_trig(double lat_deg);
 QdrDist qdrdist(const LatTrig& a, double lona, const LatTrig& b, double lonb);
+// qdrdist of n pairs of points a[k], b[k] given as arrays: latitudes la, lb
+// [rad] with their sines sa, sb and cosines ca, cb, longitudes lona, lonb
+// [deg]; writes qdr_deg[k] and dist_nm[k]. Its sin, cos and atan2 go through
+// vmath (libmvec in AVX2 builds: within a few ulp of qdrdist, not
+// bit-identical; std:: elsewhere: equal to qdrdist bit for bit).
+struct QdrDistArrays {
+  const double *la, *sa, *ca, *lona;
+  const double *lb, *sb, *cb, *lonb;
+  double *qdr_deg, *dist_nm;
+};
+void qdrdist_n(const QdrDistArrays& p, int n);
 
 // Great-circle destination from (lat, lon) along bearing for dist_m metres.
 LatLon gc_destination(double lat, double lon, double bearing_deg, double dist_m);

@@ -8,6 +8,7 @@
 #include "core/geo.h"
 #include "core/text.h"
 #include "core/units.h"
+#include "core/vmath.h"
 #include "sim/atmosphere.h"
 #include "sim/byte_image.h"
 
@@ -234,6 +235,20 @@ const geo::LatTrig& Simulation::wp_trig(int i, double lat_deg) {
 void Simulation::update_autopilot() {
   Traffic& t = traf_;
   const int n = t.n();
+  // qdrdist to the active waypoint for every aircraft at once (vectorised
+  // trigonometry, geo::qdrdist_n); aircraft without one get their own position.
+  ApScratch& s = ap_;
+  for (auto* v : {&s.la, &s.lb, &s.sb, &s.cb, &s.lonb, &s.qdr_deg, &s.dist_nm}) v->resize(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    s.la[i] = t.lat[i] * kDeg;
+    const Waypoint* wp = t.lnav[i] ? t.route[i].active_waypoint() : nullptr;
+    const geo::LatTrig b = wp ? wp_trig(i, wp->lat) : geo::LatTrig{s.la[i], t.sinlat[i], t.coslat[i]};
+    s.lb[i] = b.rad, s.sb[i] = b.sin, s.cb[i] = b.cos;
+    s.lonb[i] = wp ? wp->lon : t.lon[i];
+  }
+  geo::qdrdist_n({s.la.data(), t.sinlat.data(), t.coslat.data(), t.lon.data(), s.lb.data(), s.sb.data(), s.cb.data(),
+                  s.lonb.data(), s.qdr_deg.data(), s.dist_nm.data()},
+                 n);
   for (int i = 0; i < n; ++i) {
     t.vnav_vs_on[i] = 0;
     if (!t.lnav[i]) {
@@ -246,8 +261,7 @@ void Simulation::update_autopilot() {
       t.lnav[i] = t.vnav[i] = 0;
       continue;
     }
-    const geo::LatTrig here{t.lat[i] * kDeg, t.sinlat[i], t.coslat[i]};
-    geo::QdrDist qd = geo::qdrdist(here, t.lon[i], wp_trig(i, wp->lat), wp->lon);
+    geo::QdrDist qd{s.qdr_deg[i], s.dist_nm[i]};
     t.dist2wp[i] = units::nm_to_m(qd.dist_nm);
     if (waypoint_reached(t.dist2wp[i], qd.qdr_deg, t.curlegdir[i], t.trk[i], t.gs[i], t.turndist[i])) {
       if (!r.advance()) {
@@ -255,6 +269,7 @@ void Simulation::update_autopilot() {
         continue;
       }
       wp = r.active_waypoint();
+      const geo::LatTrig here{s.la[i], t.sinlat[i], t.coslat[i]};
       qd = geo::qdrdist(here, t.lon[i], wp_trig(i, wp->lat), wp->lon);
       t.dist2wp[i] = units::nm_to_m(qd.dist_nm);
       start_leg(i, true);
@@ -335,6 +350,7 @@ void Simulation::update_kinematics() {
   Traffic& t = traf_;
   const int n = t.n();
   const double dt = dt_;
+  const bool windy = wind_.dim() > 0;
   for (int i = 0; i < n; ++i) {
     const bool cr = t.cr_active[i] != 0;
     const bool cr_vert = cr && crs_.vertical;
@@ -347,7 +363,6 @@ void Simulation::update_kinematics() {
                   : t.vnav_vs_on[i]      ? std::fabs(t.vnav_vs[i])
                   : t.sel_vs[i] > kMinSelVs ? t.sel_vs[i]
                                          : kDefaultVs;
-    const bool windy = wind_.dim() > 0;
     const WindNE w = windy ? wind_.at(t.lat[i], t.lon[i], t.alt[i]) : WindNE{};
     double cr_tas = cr ? t.cr_tas[i] : 0.0;
     if (cr && windy) {
@@ -402,7 +417,6 @@ void Simulation::update_kinematics() {
       const bool captured = std::fabs(dh) <= lim_h;
       t.hdg[i] = captured ? hdg_t : geo::wrap360(t.hdg[i] + std::copysign(lim_h, dh));
       if (captured) t.sel_turn[i] = 0;
-      set_heading_cache(i);
     } else if (t.sel_turn[i] != 0) {
       t.sel_turn[i] = 0;
     }
@@ -423,8 +437,15 @@ void Simulation::update_kinematics() {
     } else if (t.tas[i] != old_tas) {
       refresh_speed_outputs(i, isa(t.alt[i]));
     }
+  }
 
-    // Ground speed (wind above 50 ft) and flat-earth position update.
+  // Heading trigonometry of every aircraft, vectorised (vmath.h).
+  vmath::sin(t.hdg.data(), kDeg, t.sin_hdg.data(), n);
+  vmath::cos(t.hdg.data(), kDeg, t.cos_hdg.data(), n);
+
+  // Ground speed (wind above 50 ft) and flat-earth position update: latitude,
+  // its trigonometry (vectorised), then longitude.
+  for (int i = 0; i < n; ++i) {
     t.gsnorth[i] = t.tas[i] * t.cos_hdg[i];
     t.gseast[i] = t.tas[i] * t.sin_hdg[i];
     if (windy && t.alt[i] > kWindMinAlt) {
@@ -438,7 +459,10 @@ void Simulation::update_kinematics() {
       t.trk[i] = t.hdg[i];
     }
     t.lat[i] += dt * t.gsnorth[i] / kREarth / kDeg;
-    set_lat_cache(i);
+  }
+  vmath::sin(t.lat.data(), kDeg, t.sinlat.data(), n);
+  vmath::cos(t.lat.data(), kDeg, t.coslat.data(), n);
+  for (int i = 0; i < n; ++i) {
     double lon = t.lon[i] + dt * t.gseast[i] / t.coslat[i] / kREarth / kDeg;
     if (lon >= 180.0) lon -= 360.0;
     else if (lon < -180.0) lon += 360.0;

@@ -282,6 +282,13 @@ class Simulation {
   // Traffic::wp_trig while the latitude is the one it was computed for.
   const geo::LatTrig& wp_trig(int i, double lat_deg);
 
+  // Per-step scratch of update_autopilot (one entry per aircraft, not state):
+  // the active waypoint's latitude [rad], its sine and cosine, its longitude
+  // [deg], and qdrdist from the aircraft to it; la: the aircraft's latitude [rad].
+  struct ApScratch {
+    std::vector<double> la, lb, sb, cb, lonb, qdr_deg, dist_nm;
+  } ap_;
+
   Traffic traf_;
   ConflictDetector cd_;
   MvpResolver cr_;

@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <vector>
 
 #include "core/geo.h"
 #include "core/units.h"
+#include "core/vmath.h"
 
 using namespace squawk;
 
@@ -96,4 +98,64 @@ TEST_CASE("wrap360 and wrap180 of angles within one turn skip fmod and give its 
     CHECK(geo::wrap360(d) == r);
     CHECK(geo::wrap180(d) == (r > 180.0 ? r - 360.0 : r));
   }
+}
+
+TEST_CASE("vmath sin, cos and atan2 are within 4 ulp of libm and independent of position in the array") {
+  // 203 arguments (50 groups of four and a tail of 3), over several turns and both signs.
+  std::vector<double> x(203), y(203), s(203), c(203), a(203);
+  for (size_t k = 0; k < x.size(); ++k) {
+    x[k] = -20.0 + 0.1973 * static_cast<double>(k);
+    y[k] = 3.0 * std::sin(0.37 * static_cast<double>(k)) + (k % 7 == 0 ? 0.0 : 1e-3);
+  }
+  vmath::sin(x.data(), 1.0, s.data(), 203);
+  vmath::cos(x.data(), 1.0, c.data(), 203);
+  vmath::atan2(y.data(), x.data(), a.data(), 203);
+  auto ulps = [](double got, double want) {
+    return std::fabs(got - want) / (std::nextafter(std::fabs(want), INFINITY) - std::fabs(want));
+  };
+  for (size_t k = 0; k < x.size(); ++k) {
+    CHECK(ulps(s[k], std::sin(x[k])) <= 4.0);
+    CHECK(ulps(c[k], std::cos(x[k])) <= 4.0);
+    CHECK(ulps(a[k], std::atan2(y[k], x[k])) <= 4.0);
+  }
+  // The tail element alone, and at a group's start, gives the same bits.
+  double one = 0.0;
+  vmath::sin(&x[202], 1.0, &one, 1);
+  CHECK(one == s[202]);
+  vmath::sin(&x[200], 1.0, &one, 1);
+  CHECK(one == s[200]);
+  // scale multiplies before the function: sin(deg * kDeg).
+  const double deg = 33.3;
+  vmath::sin(&deg, units::kDeg, &one, 1);
+  CHECK(ulps(one, std::sin(deg * units::kDeg)) <= 4.0);
+  if (!vmath::uses_libmvec()) CHECK(s[17] == std::sin(x[17]));
+}
+
+TEST_CASE("qdrdist_n equals qdrdist within libmvec's error, bit for bit without it") {
+  // 150 pairs (two blocks of 64 and a tail): same hemisphere, across the equator and the antimeridian, near the poles.
+  const int n = 150;
+  std::vector<double> la(n), sa(n), ca(n), lona(n), lb(n), sb(n), cb(n), lonb(n), qdr(n), dist(n);
+  for (int k = 0; k < n; ++k) {
+    const double lat_a = 89.9 * std::sin(1.3 * k), lat_b = 89.9 * std::cos(0.7 * k + 0.2);
+    lona[k] = 179.9 * std::sin(2.1 * k + 0.5);
+    lonb[k] = k % 5 == 0 ? lona[k] + 0.01 : 179.9 * std::cos(1.7 * k);
+    const geo::LatTrig ta = geo::lat_trig(lat_a), tb = geo::lat_trig(lat_b);
+    la[k] = ta.rad, sa[k] = ta.sin, ca[k] = ta.cos, lb[k] = tb.rad, sb[k] = tb.sin, cb[k] = tb.cos;
+  }
+  geo::qdrdist_n({la.data(), sa.data(), ca.data(), lona.data(), lb.data(), sb.data(), cb.data(), lonb.data(),
+                  qdr.data(), dist.data()},
+                 n);
+  int crossing = 0;
+  for (int k = 0; k < n; ++k) {
+    const geo::QdrDist r = geo::qdrdist({la[k], sa[k], ca[k]}, lona[k], {lb[k], sb[k], cb[k]}, lonb[k]);
+    crossing += la[k] * lb[k] < 0.0;
+    if (vmath::uses_libmvec()) {
+      CHECK(std::fabs(geo::wrap180(qdr[k] - r.qdr_deg)) < 1e-11);
+      CHECK(std::fabs(dist[k] - r.dist_nm) <= 1e-13 * r.dist_nm);
+    } else {
+      CHECK(qdr[k] == r.qdr_deg);
+      CHECK(dist[k] == r.dist_nm);
+    }
+  }
+  CHECK(crossing > 20);
 }
