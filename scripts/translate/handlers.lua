@@ -101,7 +101,7 @@ function m:acids(s)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
-          and not self:preceded_by(r.b, 3, "@aircraft_context") then
+          and not self:preceded_by(r.b, 3, "@aircraft_context") and not self:in_reason(r.b) then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end

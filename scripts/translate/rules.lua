@@ -59,6 +59,9 @@ return function(intent, rule, words)
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
+  intent "area" { cmd = "AREA", args = { "shapename", "ON", "OFF" }, handler = "area" }
+  intent "circle" { cmd = "CIRCLE", args = { "name", "radius" }, handler = "circle" }
+  intent "box" { cmd = "BOX", args = { "name" }, handler = "box" }
   intent "trail" { cmd = "TRAIL", args = { "acid", "ON", "OFF" }, handler = "trail" }
 
   -- an instruction announced with "expect" is no clearance
@@ -66,7 +69,9 @@ return function(intent, rule, words)
 
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
-  rule { "climb climbing descend descending altitude alt cruise altitudes", "alt" }
+  -- "desc rate 1500": the verb gives the sign of a vertical speed
+  rule { "climb descend desc clb", false, next = "rate" }
+  rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
@@ -90,6 +95,7 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", false, prev = { 2, "half double" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
   rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
   rule { "faster slower", false, prev = { 2, "times x" } }
@@ -116,11 +122,13 @@ return function(intent, rule, words)
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
+  rule { "define make put", false, near = { 2, "box circle" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
   rule { "addwpt", "addwpt" }
   rule { "delwpt", "delwpt" }
   rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
-  rule { "create spawn generate creat", "create" }
+  rule { "create spawn generate creat cre", "create" }
+  rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
@@ -143,6 +151,7 @@ return function(intent, rule, words)
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dir proceed direct-to", "direct" }
+  rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   rule { "cleared", "direct", when = function(g) return #g.world.waypoints > 0 end }
   rule { "destination dest", "dest" }
   rule { "fly", "dest", next = "to" }
@@ -151,7 +160,9 @@ return function(intent, rule, words)
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print" } }
+  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see" } }
+  -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
+  rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "listrte rte", "listrte" }
 
   -- information and repositioning
@@ -160,6 +171,7 @@ return function(intent, rule, words)
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "aircraft") end }
   rule { "details status info information state pos", "pos" }
+  rule { "position", "pos", prev = { 4, "show display see" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" } }
 
@@ -171,6 +183,8 @@ return function(intent, rule, words)
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "pause hold freeze", "hold" }
+  -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
+  rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how", "pos", near = { 4, "altitude speed heading position level" } }
@@ -185,9 +199,14 @@ return function(intent, rule, words)
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", next = "navigation" }
+  rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "dtmult", near = { 4, "times x" } }
   rule { "dtmult", "dtmult" }
   rule { "start", "op", near = { 3, "@sim" } }
+  rule { "run", false, when = function(g, i)  -- "run in fast time": the fast time is the instruction
+    local k = g:find_word(i + 1, i + 4, "fast")
+    return k < i + 4 and g:word(k + 1, "time")
+  end }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x" } }
@@ -203,6 +222,8 @@ return function(intent, rule, words)
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
+  -- "reset the protected zone to 5 nm": a setting set again, not the simulation
+  rule { "reset", false, near = { 3, "protected pz zone zoner separation radius" } }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -216,11 +237,17 @@ return function(intent, rule, words)
   rule { "resolution resolve reso", "reso" }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
+  rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected pz separation zone zoner zonedh radius", "zone" }
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }
   rule { "turbulence noise", "noise" }
+
+  -- shapes and the deletion area ("in the area" alone names no area)
+  rule { "area", "area", prev = { 2, "deletion delete experiment" } }
+  rule { "circle", "circle", near = { 3, "@named" } }
+  rule { "box", "box", near = { 3, "@named" } }
 
   -- the radar display
   rule { "trail trails", "trail" }

@@ -243,3 +243,41 @@ do -- navigation and simulation phrases: own navigation, direct to a new fix, ru
   check_eq(tr("Run the sim"), "OP")
   check_eq(tr("Run the simulation at 5x real time"), "DTMULT 5")
 end
+
+do -- polite sentences and hurried shorthand (round 5 and 6 classes)
+  local w = { aircraft = { plane("KLM123", 90, 25000, 280), plane("AFR55", 180, 30000, 300) } }
+  -- "and then" lists the next instruction; a bare "then" after a level still waits for it
+  check_eq(tr("AFR55, reduce to 250 knots please, and then turn left heading 120", w),
+    "SPD AFR55 250 ; HDG AFR55 120 LEFT")
+  check_eq(tr("AFR55 descend FL200 then speed 260", w), "ALT AFR55 FL200 ; ATALT AFR55 FL200 SPD AFR55 260")
+  -- a reason names other aircraft as context: they are given nothing
+  check_eq(tr("Descend AFR55 to FL240 so that it passes under KLM123", w), "ALT AFR55 FL240")
+  check_eq(tr("Slow KLM123 to 240 knots because AFR55 is right behind it", w), "SPD KLM123 240")
+  -- typed "desc"/"clb": the verb, and the sign of a rate
+  check_eq(tr("afr55 desc 9000 hdg 200", w), "ALT AFR55 9000 ; HDG AFR55 200")
+  check_eq(tr("klm123 desc rate 1800", w), "VS KLM123 -1800")
+  check_eq(tr("klm123 clb rate 1200", w), "VS KLM123 1200")
+  -- creating a callsign that already flies would replace it: asked
+  check(asks("create an A320 called AFR55 at 51.5 N 2.5 E heading 090 FL120 250 knots", w), "existing callsign")
+  -- a setting reset is that setting; "until I say stop" ends a run, it pauses nothing
+  check_eq(tr("please reset the protected zone radius to 4 nm"), "ZONER 4")
+  check_eq(tr("Could you run in fast time until I say stop?"), "FF")
+  check_eq(tr("fast forward a quarter of an hour"), "FF 900")
+  check_eq(tr("skip ahead half an hour please"), "FF 1800")
+  check_eq(tr("now let it run again"), "OP")
+  -- info and routes in few words
+  check_eq(tr("afr55 route pls", w), "LISTRTE AFR55")
+  check_eq(tr("Can I see the route of KLM123?", w), "LISTRTE KLM123")
+  check_eq(tr("show me the position of AFR55 please", w), "POS AFR55")
+  check_eq(tr("send AFR55 straight to SPY", { aircraft = w.aircraft, waypoints = { "SPY" } }), "ADDWPT AFR55 SPY ; DIRECT AFR55 SPY")
+  check_eq(tr("cre dal9 b738 41.2 -73.5 hdg 090 fl80 230"), "CRE DAL9 B738 41.2 -73.5 90 FL80 230")
+  -- shapes and the deletion area; several waypoints defined in one sentence
+  check_eq(tr("please turn the deletion area off"), "AREA OFF")
+  check_eq(tr("Set the deletion area to 50 N 2 E to 52 N 6 E"), "AREA 50 2 52 6")
+  check_eq(tr("make a circle named APP around 51.5, 3.2 with a radius of 15 nm"), "CIRCLE APP 51.5 3.2 15")
+  check_eq(tr("define a box called EAST from 51 N 4 E to 53 N 7 E between FL 50 and FL 250"),
+    "BOX EAST 51 4 53 7 FL250 FL50")
+  check_eq(tr("put a circle called OUT around 52 north 4 east with a 30 mile radius and make it the deletion area"),
+    "CIRCLE OUT 52 4 30 ; AREA OUT")
+  check_eq(tr("Define waypoints P1 at 51.2, 3.4 and P2 at 51.6, 3.9"), "DEFWPT P1 51.2 3.4 ; DEFWPT P2 51.6 3.9")
+end
