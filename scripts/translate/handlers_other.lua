@@ -557,6 +557,9 @@ return function(H, f, compass)
   function m:pos(s)
     local places = self:refs_in(s.b, s.e, "waypoint")
     if #self:refs_in(s.b, s.e, "aircraft") == 0 and #places > 0 then return self:emit("POS " .. places[1].name) end
+    -- an airport by its name ("where is Schiphol?")
+    local airport = #self:refs_in(s.b, s.e, "aircraft") == 0 and self:airport_by_name(s.trig + 1, s.e)
+    if airport then return self:emit("POS " .. airport) end
     self:one_acid(s, "POS", "be shown")
   end
 
@@ -626,6 +629,15 @@ return function(H, f, compass)
   function m:time_mult(s)
     local q = first(self, s, { mult = true, plain = true })
     if q then return self:emit("DTMULT " .. f.num(q.value)) end
+    -- "sim speed x2": the factor glued to its x
+    for i = s.b, s.e - 1 do
+      local x = self.t[i].kind == "word" and tonumber(self.t[i].text:match("^x(%d+%.?%d*)$") or "")
+      if x then
+        self:mark_used(i, i + 1)
+        return self:emit("DTMULT " .. f.num(x))
+      end
+    end
+    if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end

@@ -72,6 +72,7 @@ return function(intent, rule, words)
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
+  rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
@@ -84,8 +85,12 @@ return function(intent, rule, words)
 
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
-  rule { "speed", "dtmult", near = { 3, "factor" } }  -- "speed-up factor 2"
-  rule { "speed", "dtmult", prev = { 1, "x times" } }
+  rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
+  rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
+  rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"
+    local nx = g.t[i + 1]
+    return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
+  end }
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
     return g:followed_by(i, 4, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
@@ -95,6 +100,8 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", false, prev = { 2, "half double" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  rule { "fast faster", "dtmult", prev = { 2, "twice thrice times x" } }  -- "run twice as fast"
+  rule { "multiplier", "dtmult" }
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
   rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
@@ -118,17 +125,28 @@ return function(intent, rule, words)
   rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
   rule { "vertical", "vs", next = "speed rate" }
+  rule { "rate", "dtmult", prev = { 2, "@sim" } }  -- "the simulation rate"
   rule { "rate", "vs", not_prev = { 1, "vertical" } }
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
   rule { "define make put", false, near = { 2, "box circle" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
+  -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
+  rule { "add", "defwpt", near = { 2, "@waypoint_nouns" }, when = function(g, i)
+    if not g:followed_by(i, 4, "@named") then return false end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.exists then return false end
+    end
+    return true
+  end }
   rule { "addwpt", "addwpt" }
   rule { "delwpt", "delwpt" }
   rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
+  rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
   rule { "create spawn generate creat cre", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
+  rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
@@ -145,7 +163,7 @@ return function(intent, rule, words)
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
-  rule { "delete del remove rid kill", "delete" }
+  rule { "delete del remove rid kill rmv", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
@@ -159,6 +177,7 @@ return function(intent, rule, words)
   rule { "lnav", "lnav" }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
+  rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
   rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see" } }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
@@ -169,11 +188,12 @@ return function(intent, rule, words)
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
-  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "aircraft") end }
+  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
+  rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
   rule { "details status info information state pos", "pos" }
-  rule { "position", "pos", prev = { 4, "show display see" } }  -- "show me BAW87L's position"
+  rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
-  rule { "put", "move", near = { 3, "back" } }
+  rule { "put", "move", near = { 3, "back" }, not_near = { 4, "lnav vnav navigation" } }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
   -- (a holding pattern) is no pause of the simulation
@@ -187,7 +207,8 @@ return function(intent, rule, words)
   rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
-  rule { "what how", "pos", near = { 4, "altitude speed heading position level" } }
+  rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
+  rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
@@ -198,7 +219,7 @@ return function(intent, rule, words)
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
-  rule { "own", "lnav", next = "navigation" }
+  rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "dtmult", near = { 4, "times x" } }
   rule { "dtmult", "dtmult" }

@@ -280,4 +280,26 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("put a circle called OUT around 52 north 4 east with a 30 mile radius and make it the deletion area"),
     "CIRCLE OUT 52 4 30 ; AREA OUT")
   check_eq(tr("Define waypoints P1 at 51.2, 3.4 and P2 at 51.6, 3.9"), "DEFWPT P1 51.2 3.4 ; DEFWPT P2 51.6 3.9")
+  check_eq(tr("could you define a new waypoint named MID at 51.7 north 3.3 east"), "DEFWPT MID 51.7 3.3")
+  check_eq(tr("add a fix called EDGE at 50.5 N, 2.5 E"), "DEFWPT EDGE 50.5 2.5")
+  -- the simulation's rate in words
+  check_eq(tr("make the sim rate 6 times please"), "DTMULT 6")
+  check_eq(tr("run the sim at four times normal speed"), "DTMULT 4")
+  check_eq(tr("let the simulation go three times as fast"), "DTMULT 3")
+  check_eq(tr("put the speed multiplier to 5"), "DTMULT 5")
+  check_eq(tr("simulation speed x4"), "DTMULT 4")
+  check_eq(tr("back to normal speed for the simulation"), "DTMULT 1")
+  -- information requests said as wishes
+  check_eq(tr("I want to look at AFR55's position", w), "POS AFR55")
+  check_eq(tr("tell me KLM123's present altitude please", w), "POS KLM123")
+  check_eq(tr("where's the Airbus, AFR55?", w), "POS AFR55")
+  check_eq(tr("please show me where SPY is", { aircraft = w.aircraft, waypoints = { "SPY" } }), "POS SPY")
+  -- own navigation, vertical navigation, deletions in few words
+  check_eq(tr("let AFR55 resume its own route navigation", w), "LNAV AFR55 ON")
+  check_eq(tr("put KLM123 back on lnav", w), "LNAV KLM123 ON")
+  check_eq(tr("AFR55 should follow its route vertically as well", w), "VNAV AFR55 ON")
+  check_eq(tr("afr55 leaving my sector, drop it", w), "DEL AFR55")
+  check_eq(tr("afr55 drop it to FL150", w), "ALT AFR55 FL150")
+  check_eq(tr("rmv klm123", w), "DEL KLM123")
+  check_eq(tr("delete AFR55, I will re-create it later", w), "DEL AFR55")
 end
