@@ -456,6 +456,25 @@ return function(H, f, compass)
     self.last_shape = name
   end
 
+  -- "MCRE n [type [alt]]": random traffic; a type is given only when it is a known one
+  -- (a plural like "A320s" the lexer took for a callsign is asked about)
+  function m:random_traffic(s)
+    local n, alt
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "plain" and not n and q.value >= 1 and q.value <= 500 and q.value % 1 == 0 then n = self:take(q) end
+      if q.kind == "alt" and not alt then alt = self:take(q) end
+    end
+    if not n then return self:need("How many random aircraft should I create?") end
+    local types = self:refs_in(s.b, s.e, "type")
+    if #self:refs_in(s.b, s.e, "aircraft") > 0 then
+      return self:need("Which aircraft type should the random aircraft be? Please give its ICAO designator.")
+    end
+    local cmd = "MCRE " .. f.int(n.value)
+    if #types > 0 or alt then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
+    if alt then cmd = cmd .. " " .. f.alt(alt.value, alt.fl) end
+    self:emit(cmd)
+  end
+
   -- "AREA OFF", "AREA lat lon lat lon", "AREA shape" (one just defined: "make it the deletion area")
   function m:area(s)
     if self:on_off(s) == 0 then return self:emit("AREA OFF") end

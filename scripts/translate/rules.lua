@@ -59,6 +59,7 @@ return function(intent, rule, words)
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
+  intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic" }
   intent "area" { cmd = "AREA", args = { "shapename", "ON", "OFF" }, handler = "area" }
   intent "circle" { cmd = "CIRCLE", args = { "name", "radius" }, handler = "circle" }
   intent "box" { cmd = "BOX", args = { "name" }, handler = "box" }
@@ -144,6 +145,12 @@ return function(intent, rule, words)
   rule { "delwpt", "delwpt" }
   rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
+  -- "create ten random aircraft", "five random A320s at FL300": random traffic
+  rule { "create spawn generate add", "mcre", near = { 3, "random" } }
+  rule { "random", "mcre", when = function(g, i)
+    local t = g.t[i - 1]
+    return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
+  end }
   rule { "create spawn generate creat cre", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
@@ -221,6 +228,7 @@ return function(intent, rule, words)
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "run", "op", next = "again" }  -- "let it run again"
+  rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   rule { "run", "dtmult", near = { 4, "times x" } }
   rule { "dtmult", "dtmult" }
   rule { "start", "op", near = { 3, "@sim" } }

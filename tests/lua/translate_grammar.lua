@@ -302,4 +302,10 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("afr55 drop it to FL150", w), "ALT AFR55 FL150")
   check_eq(tr("rmv klm123", w), "DEL KLM123")
   check_eq(tr("delete AFR55, I will re-create it later", w), "DEL AFR55")
+  -- random traffic; a plural type read as a callsign is asked about
+  check_eq(tr("please generate 12 random aircraft"), "MCRE 12")
+  check_eq(tr("add four random E190 at FL150 please"), "MCRE 4 E190 FL150")
+  check_eq(tr("seed 3, then spawn 8 random aircraft"), "SEED 3 ; MCRE 8")
+  check(asks("create six random B738s"), "a plural type")
+  check_eq(tr("run ahead 90 seconds"), "FF 90")
 end
