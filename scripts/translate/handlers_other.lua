@@ -240,7 +240,7 @@ return function(H, f, compass)
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
-          and (not t.keyword or t.text == "direct") and not t.filler then
+          and (not t.keyword or t.text == "direct") and not t.filler and not L.pronouns[t.text] then
         local cand = t.text
         for k = 0, 1 do
           local idx, score = squawk.translate.best_match(cand, names)
@@ -360,8 +360,10 @@ return function(H, f, compass)
     if lat and lon then
       where = f.num(lat) .. " " .. f.num(lon)
     else
-      where = self:waypoint(s.trig, next_to and at or s.e, id)
-      if not where and self:word_in(s.trig, s.e, "it") then where = self.last_waypoint end
+      -- "define WP9 at ... and add it to X's route": "it" is the waypoint just defined
+      local named = self:refs_in(s.trig, next_to and at or s.e, "waypoint")[1]
+      local it = self.last_waypoint and self:word_in(s.trig, next_to and at or s.e, "it")
+      where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, next_to and at or s.e, id)
       if not where then
         return self:need("Where should the waypoint for " .. id .. " be? Please give a name or a latitude and longitude.")
       end

@@ -155,6 +155,8 @@ return {
   id_words = { "named", "called", "callsign", "id" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
+  -- pronouns: never read as a name ("add it to the route" is no waypoint "IT")
+  pronouns = { it = true, its = true, him = true, her = true, them = true, they = true },
   -- words skipped before a spoken waypoint name
   before_name = { "to", "the", "ah", "uh", "direct", "via", "now", "point" },
   -- the phonetic alphabet (spelled waypoint names)

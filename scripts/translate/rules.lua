@@ -158,7 +158,7 @@ return function(intent, rule, words)
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
-  rule { "add append insert give", "addwpt", next = "it", near = { 6, "@route_nouns" } }
+  rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }

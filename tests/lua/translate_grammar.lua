@@ -308,4 +308,11 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("seed 3, then spawn 8 random aircraft"), "SEED 3 ; MCRE 8")
   check(asks("create six random B738s"), "a plural type")
   check_eq(tr("run ahead 90 seconds"), "FF 90")
+  -- "it" after a definition is the waypoint just defined, and is never matched to a name
+  local ww = { aircraft = w.aircraft, waypoints = { "EXIT1", "SPY" } }
+  check_eq(tr("define a waypoint Q1 at 51.1, 3.1 and add it to AFR55's route", ww), "DEFWPT Q1 51.1 3.1 ; ADDWPT AFR55 Q1")
+  check_eq(tr("define Q2 at 51.3 N 3.6 E, then add it at the end of the route of KLM123 after SPY", ww),
+    "DEFWPT Q2 51.3 3.6 ; ADDWPT KLM123 Q2,,,SPY")
+  local r = grammar.translate("add it to AFR55's route", ww)
+  check(r.ask ~= nil and not r.ask:find("EXIT1", 1, true), tostring(r.ask))
 end
