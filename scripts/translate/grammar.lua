@@ -661,6 +661,7 @@ function G:unknown_names()
   local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and (not r.exists or not (compared or self:in_reason(r.b))) and not r.false_start
+        and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
       local words = {}
       for k = r.b, r.e - 1 do words[#words + 1] = self.t[k].raw end

@@ -655,6 +655,8 @@ return function(H, f, compass)
       local x = self.t[i].kind == "word" and tonumber(self.t[i].text:match("^x(%d+%.?%d*)$") or "")
       if x then
         self:mark_used(i, i + 1)
+        self.explained = self.explained or {}
+        self.explained[i] = true  -- a token that reads like a callsign, explained as the factor
         return self:emit("DTMULT " .. f.num(x))
       end
     end

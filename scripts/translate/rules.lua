@@ -163,6 +163,10 @@ return function(intent, rule, words)
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
   rule { "via", "addwpt", prev = { 3, "route" } }
+  -- "add INTOP after AMDIL": a known waypoint put next to another
+  rule { "add append insert", "addwpt", when = function(g, i)
+    return g:has_ref(i + 1, i + 2, "waypoint") and g:word(i + 2, "after before")
+  end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
@@ -186,7 +190,7 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see" } }
+  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look" } }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "listrte rte", "listrte" }

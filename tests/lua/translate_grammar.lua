@@ -288,6 +288,7 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("let the simulation go three times as fast"), "DTMULT 3")
   check_eq(tr("put the speed multiplier to 5"), "DTMULT 5")
   check_eq(tr("simulation speed x4"), "DTMULT 4")
+  check_eq(tr("sim speed x3", w), "DTMULT 3")  -- with traffic, "x3" is no unknown callsign
   check_eq(tr("back to normal speed for the simulation"), "DTMULT 1")
   -- information requests said as wishes
   check_eq(tr("I want to look at AFR55's position", w), "POS AFR55")
@@ -313,6 +314,8 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("define a waypoint Q1 at 51.1, 3.1 and add it to AFR55's route", ww), "DEFWPT Q1 51.1 3.1 ; ADDWPT AFR55 Q1")
   check_eq(tr("define Q2 at 51.3 N 3.6 E, then add it at the end of the route of KLM123 after SPY", ww),
     "DEFWPT Q2 51.3 3.6 ; ADDWPT KLM123 Q2,,,SPY")
+  check_eq(tr("klm123 add EXIT1 before SPY", ww), "ADDWPT KLM123 EXIT1,,,,SPY")
+  check_eq(tr("hold the sim, then let me look at the route of AFR55", ww), "HOLD ; LISTRTE AFR55")
   local r = grammar.translate("add it to AFR55's route", ww)
   check(r.ask ~= nil and not r.ask:find("EXIT1", 1, true), tostring(r.ask))
 end
