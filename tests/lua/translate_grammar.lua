@@ -315,6 +315,13 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("define Q2 at 51.3 N 3.6 E, then add it at the end of the route of KLM123 after SPY", ww),
     "DEFWPT Q2 51.3 3.6 ; ADDWPT KLM123 Q2,,,SPY")
   check_eq(tr("klm123 add EXIT1 before SPY", ww), "ADDWPT KLM123 EXIT1,,,,SPY")
+  -- a level condition said with "it passes / reaches / leaves"
+  check_eq(tr("please descend AFR55 to FL150 and once it reaches FL250 slow it to 260 knots", w),
+    "ALT AFR55 FL150 ; ATALT AFR55 FL250 SPD AFR55 260")
+  -- with no instruction word before it, the level said first must not wait for the condition: asked
+  check(asks("please take AFR55 down to FL150 and once it reaches FL250 slow it to 260 knots", w), "no ATALT prefix")
+  check_eq(tr("AFR55 descend FL100, when it leaves FL200 turn right heading 220", w),
+    "ALT AFR55 FL100 ; ATALT AFR55 FL200 HDG AFR55 220 RIGHT")
   check_eq(tr("hold the sim, then let me look at the route of AFR55", ww), "HOLD ; LISTRTE AFR55")
   local r = grammar.translate("add it to AFR55's route", ww)
   check(r.ask ~= nil and not r.ask:find("EXIT1", 1, true), tostring(r.ask))
