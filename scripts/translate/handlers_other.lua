@@ -576,7 +576,14 @@ return function(H, f, compass)
   function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
   -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
   function m:pos(s)
-    local places = self:refs_in(s.b, s.e, "waypoint")
+    -- a navaid's kind said beside its name ("the Pampus VOR, PAM") is no place of its own
+    local places, kind_said = {}, false
+    for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+      if self:word(r.b, "@navaid_kinds") then kind_said = true else places[#places + 1] = r end
+    end
+    if kind_said and #places == 0 and #self:refs_in(s.b, s.e, "aircraft") == 0 then
+      return self:need("Which navaid do you mean? Please give its identifier.")
+    end
     if #self:refs_in(s.b, s.e, "aircraft") == 0 and #places > 0 then return self:emit("POS " .. places[1].name) end
     -- an airport by its name ("where is Schiphol?")
     local airport = #self:refs_in(s.b, s.e, "aircraft") == 0 and self:airport_by_name(s.trig + 1, s.e)

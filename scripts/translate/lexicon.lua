@@ -155,6 +155,8 @@ return {
   id_words = { "named", "called", "callsign", "id" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
+  -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
+  navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
   -- pronouns: never read as a name ("add it to the route" is no waypoint "IT")
   pronouns = { it = true, its = true, him = true, her = true, them = true, they = true },
   -- words skipped before a spoken waypoint name

@@ -295,6 +295,10 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("tell me KLM123's present altitude please", w), "POS KLM123")
   check_eq(tr("where's the Airbus, AFR55?", w), "POS AFR55")
   check_eq(tr("please show me where SPY is", { aircraft = w.aircraft, waypoints = { "SPY" } }), "POS SPY")
+  -- a navaid's kind is no place of its own (navdata holds a fix named VOR)
+  local wv = { aircraft = w.aircraft, waypoints = { "VOR", "PAM" } }
+  check_eq(tr("show me where the Pampus VOR, PAM, is", wv), "POS PAM")
+  check(asks("where is the Spijkerboor VOR?", wv), "a navaid by a name squawk cannot place asks")
   -- own navigation, vertical navigation, deletions in few words
   check_eq(tr("let AFR55 resume its own route navigation", w), "LNAV AFR55 ON")
   check_eq(tr("put KLM123 back on lnav", w), "LNAV KLM123 ON")
