@@ -218,6 +218,17 @@ function G:find_word(b, e, words)
 end
 
 function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self.t + 1, i + 1 + span), words) end
+-- True when position i lies in a reason given for an instruction, which runs
+-- from "because", "since" or "so that/it/they" to the end of the sentence
+-- ("climb KLM602 FL220 so that it clears BAW451": BAW451 is not instructed).
+function G:in_reason(i)
+  for k = i - 1, 1, -1 do
+    local t = self.t[k]
+    if t.kind == "punct" and t.text ~= "," then return false end
+    if self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then return true end
+  end
+  return false
+end
 function G:preceded_by(i, span, words) return self:word_in(math.max(1, i - span), i, words) end
 function G:number_at(i) local t = self.t[i] return t ~= nil and not self.u:used(i) and t.number_word end
 
@@ -254,6 +265,27 @@ function G:alone(i)
   for k = 1, #self.t do
     local t = self.t[k]
     if k ~= i and t.kind ~= "punct" and not t.filler then return false end
+  end
+  return true
+end
+
+-- True when every token but the one at i is punctuation, a filler or part of
+-- a callsign, and a callsign is there ("baw836 route?").
+function G:alone_with_aircraft(i)
+  local named = false
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" then named = true end
+  end
+  if not named then return false end
+  for k = 1, #self.t do
+    local t = self.t[k]
+    if k ~= i and t.kind ~= "punct" and not t.filler then
+      local inside = false
+      for _, r in ipairs(self.refs) do
+        if r.kind == "aircraft" and k >= r.b and k < r.e then inside = true end
+      end
+      if not inside then return false end
+    end
   end
   return true
 end
@@ -361,9 +393,11 @@ function G:segments(b, e)
     local last = segs[#segs]
     local this = M.intents[tr.intent]
     -- "descend 4000 then reduce 210": the second waits for the first ("then");
-    -- "..., then ..." after a comma is the next instruction in a list ("list")
+    -- "..., then ..." after a comma, and "... and then ...", are the next instruction in a list ("list")
     local thn_at = self:find_word(k == 1 and b or trig[k - 1].pos, tr.pos, "@then_words")
-    local thn = thn_at < tr.pos and ((self.t[thn_at - 1] or {}).kind == "punct" and "list" or "then") or false
+    local before_then = self.t[thn_at - 1] or {}
+    local listed = before_then.kind == "punct" or self:word(thn_at - 1, "and")
+    local thn = thn_at < tr.pos and (listed and "list" or "then") or false
     local merged = false
     if last and not thn then
       local li = M.intents[last.intent] or {}
@@ -626,7 +660,8 @@ function G:unknown_names()
   -- reason for an instruction ("to avoid a conflict between AC01 and AC02") is explained
   local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and (not r.exists or not compared) and not r.false_start
+    if r.kind == "aircraft" and (not r.exists or not (compared or self:in_reason(r.b))) and not r.false_start
+        and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
       local words = {}
       for k = r.b, r.e - 1 do words[#words + 1] = self.t[k].raw end

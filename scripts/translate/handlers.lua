@@ -101,7 +101,7 @@ function m:acids(s)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
-          and not self:preceded_by(r.b, 3, "@aircraft_context") then
+          and not self:preceded_by(r.b, 3, "@aircraft_context") and not self:in_reason(r.b) then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -401,8 +401,10 @@ end
 -- reduce speed 250", "leaving FL340 maintain Mach .82": "ATALT id alt" or nil.
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" then return nil end
-  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through")
+  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through passes leaves reaches")
   if a >= s.trig then return nil end
+  -- a value said before the condition is another instruction's, which must not wait for it
+  if #self:quantities(s.b, a) > 0 then return nil end
   if (s.intent == "maintain" or s.intent == "alt") and not self:word(a, "passing leaving reaching") then return nil end
   -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" a condition
   if s.intent == "alt" and not self:word_in(math.max(s.b, a - 2), a, "@condition") then return nil end

@@ -134,11 +134,17 @@ return function(H, f, compass)
     if #missing > 0 then
       return self:need("To create the aircraft I need its " .. table.concat(missing, ", ") .. ". What should they be?")
     end
+    -- a callsign already flying: CRE would replace that aircraft, so ask
+    if self:state(id) then
+      return self:need(string.format("%s already exists. Should I move it, or create a new aircraft under "
+        .. "another callsign?", id:upper()))
+    end
     -- a value said but not read would be left as 0: ask instead
     if (spd or mach or alt) and not hdg then
       return self:need("What heading should " .. id .. " have?")
     end
     if (spd or mach) and not alt then return self:need("What altitude should " .. id .. " have?") end
+    id = id:upper()
     local cmd = "CRE " .. id .. " " .. actype .. " " .. (named_at or (f.num(lat) .. " " .. f.num(lon)))
     if hdg or alt or spd or mach then cmd = cmd .. " " .. f.num(hdg or 0) end
     if alt or spd or mach then cmd = cmd .. " " .. f.alt(alt, fl) end
@@ -234,7 +240,7 @@ return function(H, f, compass)
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
-          and (not t.keyword or t.text == "direct") and not t.filler then
+          and (not t.keyword or t.text == "direct") and not t.filler and not L.pronouns[t.text] then
         local cand = t.text
         for k = 0, 1 do
           local idx, score = squawk.translate.best_match(cand, names)
@@ -260,13 +266,23 @@ return function(H, f, compass)
 
   -- An airport said by its name ("direct to Schiphol" -> EHAM): one or two
   -- words in [b, e) that name exactly one airport of the navdata.
+  -- A word said after a place preposition ("at Barajas") is tried before
+  -- any other ("a new Iberia aircraft": an airline, though an airport bears its name).
   function m:airport_by_name(b, e)
     local named = self.world.airports_named
     if not named then return nil end
+    for _, placed in ipairs({ true, false }) do
+      local id = self:airport_named_in(b, e, named, placed)
+      if id then return id end
+    end
+    return nil
+  end
+
+  function m:airport_named_in(b, e, named, placed)
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
-          and not t.number_word and not L.phonetic[t.text] then
+          and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words")) then
         local nx = self.t[i + 1]
         local phrases = { t.text }
         if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, t.text .. " " .. nx.text) end
@@ -344,8 +360,10 @@ return function(H, f, compass)
     if lat and lon then
       where = f.num(lat) .. " " .. f.num(lon)
     else
-      where = self:waypoint(s.trig, next_to and at or s.e, id)
-      if not where and self:word_in(s.trig, s.e, "it") then where = self.last_waypoint end
+      -- "define WP9 at ... and add it to X's route": "it" is the waypoint just defined
+      local named = self:refs_in(s.trig, next_to and at or s.e, "waypoint")[1]
+      local it = self.last_waypoint and self:word_in(s.trig, next_to and at or s.e, "it")
+      where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, next_to and at or s.e, id)
       if not where then
         return self:need("Where should the waypoint for " .. id .. " be? Please give a name or a latitude and longitude.")
       end
@@ -367,7 +385,131 @@ return function(H, f, compass)
     self:emit(cmd)
   end
 
+  -- The name given to a new waypoint or shape in tokens [b, e): a name that is
+  -- no flying aircraft ("EXIT1" reads like an id), else the word after
+  -- "named"/"called"; nil when none.
+  local function new_name(self, b, e)
+    local w = self:refs_in(b, e, "waypoint")
+    if #w > 0 then return w[1].name end
+    local a = self:refs_in(b, e, "aircraft")
+    if #a > 0 and not a[1].exists then return a[1].name:upper() end
+    local k = self:find_word(b, e, "@named")
+    if k + 1 < e and self.t[k + 1].kind == "word" then return self.t[k + 1].raw:upper() end
+    return nil
+  end
+
+  -- Corner or centre points in order: latitude and longitude pairs ("52.5 north 5.0 east", "51.5, 3.5").
+  local function points(self, b, e)
+    local out, lat = {}, nil
+    local qs = self:quantities(b, e)
+    local k = 1
+    while k <= #qs do
+      local q, nx = qs[k], qs[k + 1]
+      if q.kind == "lat" then
+        lat = q.value
+      elseif q.kind == "lon" and lat then
+        out[#out + 1] = { lat, q.value }
+        lat = nil
+      elseif q.kind == "plain" and nx and nx.kind == "plain" and nx.b - q.e <= 1 and math.abs(q.value) <= 90
+          and math.abs(nx.value) <= 180 then
+        out[#out + 1] = { q.value, nx.value, last = nx }
+        k = k + 1
+      end
+      k = k + 1
+    end
+    return out
+  end
+
+  -- "CIRCLE name lat lon radius": "a circle named CTR around 52.3, 4.76 with a 20 nautical mile radius"
+  function m:circle(s)
+    local name = new_name(self, s.b, s.e)
+    local p = points(self, s.b, s.e)[1]
+    local radius
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "dist" or (q.kind == "plain" and p and q.b > (p.last and p.last.e or q.b) ) then radius = radius or q.value end
+    end
+    if not name or not p or not radius then
+      return self:need("To define the circle I need its name, centre (latitude and longitude) and radius in nautical miles.")
+    end
+    self:emit(string.format("CIRCLE %s %s %s %s", name, f.num(p[1]), f.num(p[2]), f.num(radius)))
+    self.last_shape = name
+  end
+
+  -- "BOX name lat lon lat lon [top bottom]": two corners, and the levels between which it lies
+  function m:box(s)
+    local name = new_name(self, s.b, s.e)
+    local p = points(self, s.b, s.e)
+    if not name or #p ~= 2 then
+      return self:need("To define the box I need its name and two corners (latitude and longitude each).")
+    end
+    local cmd = string.format("BOX %s %s %s %s %s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2]))
+    local levels = {}
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "alt" then levels[#levels + 1] = q end
+    end
+    if #levels == 2 then
+      local hi, lo = levels[1], levels[2]
+      if lo.value > hi.value then hi, lo = lo, hi end
+      cmd = cmd .. " " .. f.alt(hi.value, hi.fl) .. " " .. f.alt(lo.value, lo.fl)
+    elseif #levels > 0 then
+      return self:need("Between which two levels should box " .. name .. " lie?")
+    end
+    self:emit(cmd)
+    self.last_shape = name
+  end
+
+  -- "MCRE n [type [alt]]": random traffic; a type is given only when it is a known one
+  -- (a plural like "A320s" the lexer took for a callsign is asked about)
+  function m:random_traffic(s)
+    local n, alt
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "plain" and not n and q.value >= 1 and q.value <= 500 and q.value % 1 == 0 then n = self:take(q) end
+      if q.kind == "alt" and not alt then alt = self:take(q) end
+    end
+    if not n then return self:need("How many random aircraft should I create?") end
+    local types = self:refs_in(s.b, s.e, "type")
+    if #self:refs_in(s.b, s.e, "aircraft") > 0 then
+      return self:need("Which aircraft type should the random aircraft be? Please give its ICAO designator.")
+    end
+    local cmd = "MCRE " .. f.int(n.value)
+    if #types > 0 or alt then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
+    if alt then cmd = cmd .. " " .. f.alt(alt.value, alt.fl) end
+    self:emit(cmd)
+  end
+
+  -- "AREA OFF", "AREA lat lon lat lon", "AREA shape" (one just defined: "make it the deletion area")
+  function m:area(s)
+    if self:on_off(s) == 0 then return self:emit("AREA OFF") end
+    local p = points(self, s.b, s.e)
+    if #p == 2 then
+      return self:emit(string.format("AREA %s %s %s %s", f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2])))
+    end
+    if #p == 0 and self.last_shape then return self:emit("AREA " .. self.last_shape) end
+    self:need("Which shape, or which two corners (latitude and longitude each), should the deletion area be?")
+  end
+
   function m:define_waypoint(s)
+    -- "define A1 at 52.1, 4.1 and A2 at 52.2, 4.4": one waypoint per name, each with the point after it
+    local names = {}
+    for _, r in ipairs(self.refs) do
+      if r.b >= s.b and r.b < s.e and (r.kind == "waypoint" or (r.kind == "aircraft" and not r.exists)) then
+        names[#names + 1] = r
+      end
+    end
+    if #names > 1 then
+      for k, r in ipairs(names) do
+        local p = points(self, r.e, names[k + 1] and names[k + 1].b or s.e)
+        if #p ~= 1 then
+          return self:need("Where is waypoint " .. r.name:upper() .. "? Please give a latitude and longitude.")
+        end
+      end
+      for k, r in ipairs(names) do
+        local p = points(self, r.e, names[k + 1] and names[k + 1].b or s.e)[1]
+        self:emit("DEFWPT " .. r.name:upper() .. " " .. f.num(p[1]) .. " " .. f.num(p[2]))
+        self.last_waypoint = r.name:upper()
+      end
+      return
+    end
     local name
     local w = self:refs_in(s.b, s.e, "waypoint")
     if #w > 0 then name = w[1].name end
@@ -434,8 +576,18 @@ return function(H, f, compass)
   function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
   -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
   function m:pos(s)
-    local places = self:refs_in(s.b, s.e, "waypoint")
+    -- a navaid's kind said beside its name ("the Pampus VOR, PAM") is no place of its own
+    local places, kind_said = {}, false
+    for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+      if self:word(r.b, "@navaid_kinds") then kind_said = true else places[#places + 1] = r end
+    end
+    if kind_said and #places == 0 and #self:refs_in(s.b, s.e, "aircraft") == 0 then
+      return self:need("Which navaid do you mean? Please give its identifier.")
+    end
     if #self:refs_in(s.b, s.e, "aircraft") == 0 and #places > 0 then return self:emit("POS " .. places[1].name) end
+    -- an airport by its name ("where is Schiphol?")
+    local airport = #self:refs_in(s.b, s.e, "aircraft") == 0 and self:airport_by_name(s.trig + 1, s.e)
+    if airport then return self:emit("POS " .. airport) end
     self:one_acid(s, "POS", "be shown")
   end
 
@@ -461,9 +613,16 @@ return function(H, f, compass)
   function m:fast_forward(s)
     local q = first(self, s, { time = true, mult = true })
     if not q then
-      -- "fast forward" alone runs fast-time until stopped; more words ("a bit", "an hour and
-      -- a half") said a duration that was not understood
-      for i = s.trig + 1, s.e - 1 do
+      -- "half an hour", "a quarter of an hour": a fraction of a unit said in words
+      local frac = self:find_word(s.trig + 1, s.e, "@fractions")
+      local unit = frac < s.e and self:find_word(frac + 1, math.min(s.e, frac + 4), "hour minute") or s.e
+      if unit < s.e then
+        local seconds = L.fractions[self.t[frac].text] * (self:word(unit, "hour") and 3600 or 60)
+        return self:emit("FF " .. f.num(seconds))
+      end
+      -- "fast forward" alone runs fast-time until stopped ("until I say stop" says so); more
+      -- words ("a bit", "an hour and a half") said a duration that was not understood
+      for i = s.trig + 1, self:find_word(s.trig + 1, s.e, "until") - 1 do
         local t = self.t[i]
         if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things") then
           return self:need("For how long should the simulation fast-forward? Please give a time.")
@@ -498,6 +657,17 @@ return function(H, f, compass)
   function m:time_mult(s)
     local q = first(self, s, { mult = true, plain = true })
     if q then return self:emit("DTMULT " .. f.num(q.value)) end
+    -- "sim speed x2": the factor glued to its x
+    for i = s.b, s.e - 1 do
+      local x = self.t[i].kind == "word" and tonumber(self.t[i].text:match("^x(%d+%.?%d*)$") or "")
+      if x then
+        self:mark_used(i, i + 1)
+        self.explained = self.explained or {}
+        self.explained[i] = true  -- a token that reads like a callsign, explained as the factor
+        return self:emit("DTMULT " .. f.num(x))
+      end
+    end
+    if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end

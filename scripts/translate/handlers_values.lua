@@ -139,10 +139,11 @@ return function(H, f, wrap, compass)
         if not ft then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(r) .. " ft.") end
       end
     end
-    -- Relative: "by 2000 ft", "1000 ft from its present altitude", "1000 feet below AC01".
+    -- Relative: "by 2000 ft", "1000 ft from its present altitude", "1000 feet below AC01"
+    -- (a flight level is a level, and an aircraft in a reason no reference: "FL240 so it passes under AC01").
     local others = self:refs_in(s.b, s.e, "aircraft")
     local below, above = self:word_in(s.b, s.e, "@below"), self:word_in(s.b, s.e, "@above")
-    if (below or above) and #others >= 2 then
+    if (below or above) and #others >= 2 and not fl and not self:in_reason(others[#others].b) then
       local ref = self:state(others[#others].name)
       if not ref then return self:need("What is the altitude of " .. others[#others].name .. "?") end
       return self:emit("ALT " .. ids[1] .. " " .. f.int((ref.alt_ft or 0) + (above and ft or -ft)))

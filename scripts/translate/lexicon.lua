@@ -29,7 +29,7 @@ return {
       "plan", "departed", "shift", "activate", "deactivate", "unpause", "start", "over", "real", "time", "half",
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
-      "visual", "runway", "cross", "altimeter", "maintained", },
+      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },
@@ -48,7 +48,7 @@ return {
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
-        "show", "send", "sent", "held", "lead", },
+        "show", "send", "sent", "held", "lead", "deletion", "circle", },
   },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
@@ -72,12 +72,16 @@ return {
   articles_new = { "a", "an", "new", "second", "another" },
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
-  up = { "climb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
-  down = { "descend", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
+  up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
+  down = { "descend", "desc", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
            "descending", "decelerate", "minus" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
                        "than", "traffic" },
+  -- words that open the reason given for an instruction (to the end of its
+  -- sentence): aircraft named in it are context, never instructed
+  reason = { "because", "since", "cause" },
+  reason_after_so = { "that", "it", "they", "it's", "its" },
   below = { "below", "under" },
   above = { "above", "over" },
   relative = { "present", "current", "actual", "by" },
@@ -93,6 +97,8 @@ return {
   right = { "right" },
   compass = { north = 0, east = 90, south = 180, west = 270,
               northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
+  -- fractions of an hour or a minute said in words ("half an hour", "a quarter of an hour")
+  fractions = { half = 0.5, quarter = 0.25 },
   -- how many times real time, said in words
   multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
   -- a spoken callsign matched to an aircraft it does not spell exactly is
@@ -147,6 +153,12 @@ return {
   -- names said before a value they introduce
   named = { "named", "called" },
   id_words = { "named", "called", "callsign", "id" },
+  -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
+  place_words = { "at", "over", "above", "near", "from", "overhead" },
+  -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
+  navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
+  -- pronouns: never read as a name ("add it to the route" is no waypoint "IT")
+  pronouns = { it = true, its = true, him = true, her = true, them = true, they = true },
   -- words skipped before a spoken waypoint name
   before_name = { "to", "the", "ah", "uh", "direct", "via", "now", "point" },
   -- the phonetic alphabet (spelled waypoint names)

@@ -59,6 +59,10 @@ return function(intent, rule, words)
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
+  intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic" }
+  intent "area" { cmd = "AREA", args = { "shapename", "ON", "OFF" }, handler = "area" }
+  intent "circle" { cmd = "CIRCLE", args = { "name", "radius" }, handler = "circle" }
+  intent "box" { cmd = "BOX", args = { "name" }, handler = "box" }
   intent "trail" { cmd = "TRAIL", args = { "acid", "ON", "OFF" }, handler = "trail" }
 
   -- an instruction announced with "expect" is no clearance
@@ -66,7 +70,10 @@ return function(intent, rule, words)
 
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
-  rule { "climb climbing descend descending altitude alt cruise altitudes", "alt" }
+  -- "desc rate 1500": the verb gives the sign of a vertical speed
+  rule { "climb descend desc clb", false, next = "rate" }
+  rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
+  rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
@@ -79,8 +86,12 @@ return function(intent, rule, words)
 
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
-  rule { "speed", "dtmult", near = { 3, "factor" } }  -- "speed-up factor 2"
-  rule { "speed", "dtmult", prev = { 1, "x times" } }
+  rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
+  rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
+  rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"
+    local nx = g.t[i + 1]
+    return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
+  end }
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
     return g:followed_by(i, 4, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
@@ -90,6 +101,9 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", false, prev = { 2, "half double" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  rule { "fast faster", "dtmult", prev = { 2, "twice thrice times x" } }  -- "run twice as fast"
+  rule { "multiplier", "dtmult" }
+  rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
   rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
   rule { "faster slower", false, prev = { 2, "times x" } }
@@ -112,24 +126,47 @@ return function(intent, rule, words)
   rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
   rule { "vertical", "vs", next = "speed rate" }
+  rule { "rate", "dtmult", prev = { 2, "@sim" } }  -- "the simulation rate"
   rule { "rate", "vs", not_prev = { 1, "vertical" } }
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
+  rule { "define make put", false, near = { 2, "box circle" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
+  -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
+  rule { "add", "defwpt", near = { 2, "@waypoint_nouns" }, when = function(g, i)
+    if not g:followed_by(i, 4, "@named") then return false end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.exists then return false end
+    end
+    return true
+  end }
   rule { "addwpt", "addwpt" }
   rule { "delwpt", "delwpt" }
   rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
-  rule { "create spawn generate creat", "create" }
+  rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
+  -- "create ten random aircraft", "five random A320s at FL300": random traffic
+  rule { "create spawn generate add", "mcre", near = { 3, "random" } }
+  rule { "random", "mcre", when = function(g, i)
+    local t = g.t[i - 1]
+    return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
+  end }
+  rule { "create spawn generate creat cre", "create" }
+  rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
+  rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
-  rule { "add append insert give", "addwpt", next = "it", near = { 6, "@route_nouns" } }
+  rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
   rule { "via", "addwpt", prev = { 3, "route" } }
+  -- "add INTOP after AMDIL": a known waypoint put next to another
+  rule { "add append insert", "addwpt", when = function(g, i)
+    return g:has_ref(i + 1, i + 2, "waypoint") and g:word(i + 2, "after before")
+  end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
@@ -137,12 +174,13 @@ return function(intent, rule, words)
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
-  rule { "delete del remove rid kill", "delete" }
+  rule { "delete del remove rid kill rmv", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dir proceed direct-to", "direct" }
+  rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   rule { "cleared", "direct", when = function(g) return #g.world.waypoints > 0 end }
   rule { "destination dest", "dest" }
   rule { "fly", "dest", next = "to" }
@@ -150,18 +188,23 @@ return function(intent, rule, words)
   rule { "lnav", "lnav" }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
+  rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print" } }
+  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look" } }
+  -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
+  rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "listrte rte", "listrte" }
 
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
-  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "aircraft") end }
+  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
+  rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
   rule { "details status info information state pos", "pos" }
+  rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
-  rule { "put", "move", near = { 3, "back" } }
+  rule { "put", "move", near = { 3, "back" }, not_near = { 4, "lnav vnav navigation" } }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
   -- (a holding pattern) is no pause of the simulation
@@ -171,9 +214,12 @@ return function(intent, rule, words)
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "pause hold freeze", "hold" }
+  -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
+  rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
-  rule { "what how", "pos", near = { 4, "altitude speed heading position level" } }
+  rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
+  rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
@@ -184,10 +230,16 @@ return function(intent, rule, words)
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
-  rule { "own", "lnav", next = "navigation" }
+  rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
+  rule { "run", "op", next = "again" }  -- "let it run again"
+  rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   rule { "run", "dtmult", near = { 4, "times x" } }
   rule { "dtmult", "dtmult" }
   rule { "start", "op", near = { 3, "@sim" } }
+  rule { "run", false, when = function(g, i)  -- "run in fast time": the fast time is the instruction
+    local k = g:find_word(i + 1, i + 4, "fast")
+    return k < i + 4 and g:word(k + 1, "time")
+  end }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x" } }
@@ -203,6 +255,8 @@ return function(intent, rule, words)
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
+  -- "reset the protected zone to 5 nm": a setting set again, not the simulation
+  rule { "reset", false, near = { 3, "protected pz zone zoner separation radius" } }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -216,11 +270,17 @@ return function(intent, rule, words)
   rule { "resolution resolve reso", "reso" }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
+  rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected pz separation zone zoner zonedh radius", "zone" }
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }
   rule { "turbulence noise", "noise" }
+
+  -- shapes and the deletion area ("in the area" alone names no area)
+  rule { "area", "area", prev = { 2, "deletion delete experiment" } }
+  rule { "circle", "circle", near = { 3, "@named" } }
+  rule { "box", "box", near = { 3, "@named" } }
 
   -- the radar display
   rule { "trail trails", "trail" }

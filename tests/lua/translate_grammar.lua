@@ -243,3 +243,90 @@ do -- navigation and simulation phrases: own navigation, direct to a new fix, ru
   check_eq(tr("Run the sim"), "OP")
   check_eq(tr("Run the simulation at 5x real time"), "DTMULT 5")
 end
+
+do -- polite sentences and hurried shorthand (round 5 and 6 classes)
+  local w = { aircraft = { plane("KLM123", 90, 25000, 280), plane("AFR55", 180, 30000, 300) } }
+  -- "and then" lists the next instruction; a bare "then" after a level still waits for it
+  check_eq(tr("AFR55, reduce to 250 knots please, and then turn left heading 120", w),
+    "SPD AFR55 250 ; HDG AFR55 120 LEFT")
+  check_eq(tr("AFR55 descend FL200 then speed 260", w), "ALT AFR55 FL200 ; ATALT AFR55 FL200 SPD AFR55 260")
+  -- a reason names other aircraft as context: they are given nothing
+  check_eq(tr("Descend AFR55 to FL240 so that it passes under KLM123", w), "ALT AFR55 FL240")
+  check_eq(tr("Slow KLM123 to 240 knots because AFR55 is right behind it", w), "SPD KLM123 240")
+  -- typed "desc"/"clb": the verb, and the sign of a rate
+  check_eq(tr("afr55 desc 9000 hdg 200", w), "ALT AFR55 9000 ; HDG AFR55 200")
+  check_eq(tr("klm123 desc rate 1800", w), "VS KLM123 -1800")
+  check_eq(tr("klm123 clb rate 1200", w), "VS KLM123 1200")
+  -- creating a callsign that already flies would replace it: asked
+  check(asks("create an A320 called AFR55 at 51.5 N 2.5 E heading 090 FL120 250 knots", w), "existing callsign")
+  -- a setting reset is that setting; "until I say stop" ends a run, it pauses nothing
+  check_eq(tr("please reset the protected zone radius to 4 nm"), "ZONER 4")
+  check_eq(tr("Could you run in fast time until I say stop?"), "FF")
+  check_eq(tr("fast forward a quarter of an hour"), "FF 900")
+  check_eq(tr("skip ahead half an hour please"), "FF 1800")
+  check_eq(tr("now let it run again"), "OP")
+  -- info and routes in few words
+  check_eq(tr("afr55 route pls", w), "LISTRTE AFR55")
+  check_eq(tr("Can I see the route of KLM123?", w), "LISTRTE KLM123")
+  check_eq(tr("show me the position of AFR55 please", w), "POS AFR55")
+  check_eq(tr("send AFR55 straight to SPY", { aircraft = w.aircraft, waypoints = { "SPY" } }), "ADDWPT AFR55 SPY ; DIRECT AFR55 SPY")
+  check_eq(tr("cre dal9 b738 41.2 -73.5 hdg 090 fl80 230"), "CRE DAL9 B738 41.2 -73.5 90 FL80 230")
+  -- shapes and the deletion area; several waypoints defined in one sentence
+  check_eq(tr("please turn the deletion area off"), "AREA OFF")
+  check_eq(tr("Set the deletion area to 50 N 2 E to 52 N 6 E"), "AREA 50 2 52 6")
+  check_eq(tr("make a circle named APP around 51.5, 3.2 with a radius of 15 nm"), "CIRCLE APP 51.5 3.2 15")
+  check_eq(tr("define a box called EAST from 51 N 4 E to 53 N 7 E between FL 50 and FL 250"),
+    "BOX EAST 51 4 53 7 FL250 FL50")
+  check_eq(tr("put a circle called OUT around 52 north 4 east with a 30 mile radius and make it the deletion area"),
+    "CIRCLE OUT 52 4 30 ; AREA OUT")
+  check_eq(tr("Define waypoints P1 at 51.2, 3.4 and P2 at 51.6, 3.9"), "DEFWPT P1 51.2 3.4 ; DEFWPT P2 51.6 3.9")
+  check_eq(tr("could you define a new waypoint named MID at 51.7 north 3.3 east"), "DEFWPT MID 51.7 3.3")
+  check_eq(tr("add a fix called EDGE at 50.5 N, 2.5 E"), "DEFWPT EDGE 50.5 2.5")
+  -- the simulation's rate in words
+  check_eq(tr("make the sim rate 6 times please"), "DTMULT 6")
+  check_eq(tr("run the sim at four times normal speed"), "DTMULT 4")
+  check_eq(tr("let the simulation go three times as fast"), "DTMULT 3")
+  check_eq(tr("put the speed multiplier to 5"), "DTMULT 5")
+  check_eq(tr("simulation speed x4"), "DTMULT 4")
+  check_eq(tr("sim speed x3", w), "DTMULT 3")  -- with traffic, "x3" is no unknown callsign
+  check_eq(tr("back to normal speed for the simulation"), "DTMULT 1")
+  -- information requests said as wishes
+  check_eq(tr("I want to look at AFR55's position", w), "POS AFR55")
+  check_eq(tr("tell me KLM123's present altitude please", w), "POS KLM123")
+  check_eq(tr("where's the Airbus, AFR55?", w), "POS AFR55")
+  check_eq(tr("please show me where SPY is", { aircraft = w.aircraft, waypoints = { "SPY" } }), "POS SPY")
+  -- a navaid's kind is no place of its own (navdata holds a fix named VOR)
+  local wv = { aircraft = w.aircraft, waypoints = { "VOR", "PAM" } }
+  check_eq(tr("show me where the Pampus VOR, PAM, is", wv), "POS PAM")
+  check(asks("where is the Spijkerboor VOR?", wv), "a navaid by a name squawk cannot place asks")
+  -- own navigation, vertical navigation, deletions in few words
+  check_eq(tr("let AFR55 resume its own route navigation", w), "LNAV AFR55 ON")
+  check_eq(tr("put KLM123 back on lnav", w), "LNAV KLM123 ON")
+  check_eq(tr("AFR55 should follow its route vertically as well", w), "VNAV AFR55 ON")
+  check_eq(tr("afr55 leaving my sector, drop it", w), "DEL AFR55")
+  check_eq(tr("afr55 drop it to FL150", w), "ALT AFR55 FL150")
+  check_eq(tr("rmv klm123", w), "DEL KLM123")
+  check_eq(tr("delete AFR55, I will re-create it later", w), "DEL AFR55")
+  -- random traffic; a plural type read as a callsign is asked about
+  check_eq(tr("please generate 12 random aircraft"), "MCRE 12")
+  check_eq(tr("add four random E190 at FL150 please"), "MCRE 4 E190 FL150")
+  check_eq(tr("seed 3, then spawn 8 random aircraft"), "SEED 3 ; MCRE 8")
+  check(asks("create six random B738s"), "a plural type")
+  check_eq(tr("run ahead 90 seconds"), "FF 90")
+  -- "it" after a definition is the waypoint just defined, and is never matched to a name
+  local ww = { aircraft = w.aircraft, waypoints = { "EXIT1", "SPY" } }
+  check_eq(tr("define a waypoint Q1 at 51.1, 3.1 and add it to AFR55's route", ww), "DEFWPT Q1 51.1 3.1 ; ADDWPT AFR55 Q1")
+  check_eq(tr("define Q2 at 51.3 N 3.6 E, then add it at the end of the route of KLM123 after SPY", ww),
+    "DEFWPT Q2 51.3 3.6 ; ADDWPT KLM123 Q2,,,SPY")
+  check_eq(tr("klm123 add EXIT1 before SPY", ww), "ADDWPT KLM123 EXIT1,,,,SPY")
+  -- a level condition said with "it passes / reaches / leaves"
+  check_eq(tr("please descend AFR55 to FL150 and once it reaches FL250 slow it to 260 knots", w),
+    "ALT AFR55 FL150 ; ATALT AFR55 FL250 SPD AFR55 260")
+  -- with no instruction word before it, the level said first must not wait for the condition: asked
+  check(asks("please take AFR55 down to FL150 and once it reaches FL250 slow it to 260 knots", w), "no ATALT prefix")
+  check_eq(tr("AFR55 descend FL100, when it leaves FL200 turn right heading 220", w),
+    "ALT AFR55 FL100 ; ATALT AFR55 FL200 HDG AFR55 220 RIGHT")
+  check_eq(tr("hold the sim, then let me look at the route of AFR55", ww), "HOLD ; LISTRTE AFR55")
+  local r = grammar.translate("add it to AFR55's route", ww)
+  check(r.ask ~= nil and not r.ask:find("EXIT1", 1, true), tostring(r.ask))
+end

@@ -46,8 +46,9 @@ check_eq(said(tr("please fast forward the sim")), "FF")
 check_eq(said(tr("fast forward a little while")), "ASK For how long should the simulation fast-forward? Please give a time.")
 check_eq(said(tr("after 10 minutes remove KLM77")), "ASK I have DEL KLM77. What does '10 minutes' mean?")
 check_eq(said(tr("dtmult 6 and show trails")), "DTMULT 6 ; TRAIL ON")
--- a second thing said in one breath and not made is asked about, never dropped
-check_eq(said(tr("define waypoint P1 at 51.0 3.0 and P2 at 51.5 3.5")), "ASK I have DEFWPT P1 51 3. What does 'P2' mean?")
+-- a second thing said in one breath is made too, or asked about, never dropped
+check_eq(said(tr("define waypoint P1 at 51.0 3.0 and P2 at 51.5 3.5")), "DEFWPT P1 51 3 ; DEFWPT P2 51.5 3.5")
+check_eq(said(tr("define waypoint P1 at 51.0 3.0 and P2")), "ASK Where is waypoint P2? Please give a latitude and longitude.")
 r = tr("klm77 fl120 sq 1234")
 check(said(r) == "ALT KLM77 FL120" and r.note:find("transponder codes", 1, true) ~= nil, said(r))
 check_eq(said(tr("klm1234 fl280 h320")), "ALT KLM1234 FL280 ; HDG KLM1234 320")
