@@ -10,7 +10,7 @@
 // episodes) at each. Prints figures only; asserts nothing.
 //
 // usage: bench_policy [--write-small DIR] [--small DIR] [--small-only] [--batch N] [--update-episodes M]
-//                     [--threads N]
+//                     [--threads N] [--precision fp32|bf16]
 //   --write-small DIR  writes a GPT-2 small folder with random weights in the
 //                      Hugging Face format (config.json, model.safetensors,
 //                      vocab.json, merges.txt: the gpt2 checkpoint writer, and
@@ -19,6 +19,8 @@
 //   --small DIR        also measures the policy on that folder (k = 1), at fp32
 //                      then at bf16 products
 //   --small-only       skips the heap and tiny-model measurements
+//   --precision P      measures the GPT-2 small folder at that precision only
+//                      (for profiling one; the projection then names one)
 //   --threads N        matrix-product threads (default 1; the other core may
 //                      be busy, so compare 1 and 2 from the same machine state)
 // Observations come from the training episodes of scenarios/horizontal_cr.lua.
@@ -26,7 +28,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <string>
+#include <vector>
 
 #include "app/gpt2_policy_factory.h"
 #include "core/heap.h"
@@ -46,6 +50,14 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// CPU time of this process [s], every thread: on a machine shared with other
+// jobs it counts the work done, where wall time counts the waits too.
+double cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
 // Observations of the first decisions of a few training episodes [n, obs].
 std::vector<float> observations(const env::HorizontalCrConfig& cfg, int n) {
   auto envs = env::VecEnv::make(cfg, n);
@@ -56,10 +68,15 @@ std::vector<float> observations(const env::HorizontalCrConfig& cfg, int n) {
 // The paper's fine-tuning run [episodes].
 constexpr double kPaperEpisodes = 20000;
 
+// Seconds of one update per episode, wall and CPU.
+struct PerEpisode {
+  double wall = 0.0, cpu = 0.0;
+};
+
 // Decisions per second and one update of update_episodes episodes; the
-// update's seconds per episode go to *s_per_episode when given.
+// update's seconds per episode go to *per_episode when given.
 int measure(const std::string& model, const script::Scenario& sc, int batch, int update_episodes,
-            double* s_per_episode = nullptr) {
+            PerEpisode* per_episode = nullptr) {
   app::Gpt2PolicyOptions o;
   o.model = model;
   auto g = app::make_gpt2_policy(o, sc.train_env, {});
@@ -93,12 +110,13 @@ int measure(const std::string& model, const script::Scenario& sc, int batch, int
   auto envs = env::VecEnv::make(sc.train_env, cfg.num_envs);
   rl::Trainer trainer(p, *envs, cfg, 0);
   const auto t0 = std::chrono::steady_clock::now();
+  const double c0 = cpu_seconds();
   const rl::UpdateStats st = trainer.update();
-  const double s = seconds_since(t0);
-  std::printf("  update of %d episodes (%d decisions, rollout + forward/backward + Adam): %.2f s, %.1f ms per "
-              "decision\n",
-              update_episodes, st.samples, s, st.samples > 0 ? 1e3 * s / st.samples : 0.0);
-  if (s_per_episode) *s_per_episode = s / update_episodes;
+  const double s = seconds_since(t0), cpu = cpu_seconds() - c0;
+  std::printf("  update of %d episodes (%d decisions, rollout + forward/backward + Adam): %.2f s (CPU %.2f s), "
+              "%.1f ms per decision\n",
+              update_episodes, st.samples, s, cpu, st.samples > 0 ? 1e3 * s / st.samples : 0.0);
+  if (per_episode) *per_episode = {s / update_episodes, cpu / update_episodes};
   if (!p.error().is_ok()) std::fprintf(stderr, "bench_policy: %s\n", p.error().message().c_str());
   return p.error().is_ok() ? 0 : 1;
 }
@@ -168,6 +186,7 @@ int main(int argc, char** argv) {
   std::string small, write;
   int batch = 32, update_episodes = 8, threads = 1;
   bool small_only = false;
+  std::vector<nn::Precision> precisions = {nn::Precision::kFp32, nn::Precision::kBf16};
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
     if (std::strcmp(argv[i], "--small") == 0 && more) {
@@ -180,12 +199,19 @@ int main(int argc, char** argv) {
       update_episodes = std::atoi(argv[++i]);
     } else if (std::strcmp(argv[i], "--threads") == 0 && more) {
       threads = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--precision") == 0 && more) {
+      auto p = nn::parse_precision(argv[++i]);
+      if (!p) {
+        std::fprintf(stderr, "bench_policy: --precision: %s\n", p.status().message().c_str());
+        return 2;
+      }
+      precisions = {*p};
     } else if (std::strcmp(argv[i], "--small-only") == 0) {
       small_only = true;
     } else {
       std::fprintf(stderr,
                    "usage: bench_policy [--write-small DIR] [--small DIR] [--small-only] [--batch N] "
-                   "[--update-episodes M] [--threads N]\n");
+                   "[--update-episodes M] [--threads N] [--precision fp32|bf16]\n");
       return 2;
     }
   }
@@ -205,21 +231,33 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "bench_policy: --small-only needs --small DIR\n");
     return 2;
   }
+  // Freed memory stays in the heap from here on, as in `squawk` (measure_heap
+  // sets it after its default-heap run).
+  if (small_only) heap::keep_freed_memory();
   if (!small_only) {
     if (int rc = measure_heap(*sc); rc != 0) return rc;
     if (int rc = measure("tiny", *sc, batch, update_episodes); rc != 0) return rc;
   }
   if (small.empty()) return 0;
   // The same seeds at each precision: the update's episodes start alike.
-  double s_fp32 = 0.0, s_bf16 = 0.0;
-  for (nn::Precision p : {nn::Precision::kFp32, nn::Precision::kBf16}) {
+  PerEpisode s_fp32, s_bf16;
+  for (nn::Precision p : precisions) {
     nn::set_gemm_precision(p);
     std::printf("%s products%s\n", nn::precision_name(p),
                 p == nn::Precision::kBf16 ? (std::string(", ") + nn::bf16_library()).c_str() : "");
     if (int rc = measure(small, *sc, batch, update_episodes, p == nn::Precision::kBf16 ? &s_bf16 : &s_fp32); rc != 0)
       return rc;
   }
-  std::printf("paper run (%.0f episodes, %s): fp32 %.1f h, bf16 %.1f h (%.2fx faster)\n", kPaperEpisodes, small.c_str(),
-              s_fp32 * kPaperEpisodes / 3600, s_bf16 * kPaperEpisodes / 3600, s_fp32 / s_bf16);
+  const double h = kPaperEpisodes / 3600;
+  if (precisions.size() == 1) {
+    const PerEpisode& one = precisions[0] == nn::Precision::kBf16 ? s_bf16 : s_fp32;
+    std::printf("paper run (%.0f episodes, %s): %s %.1f h (CPU %.1f h)\n", kPaperEpisodes, small.c_str(),
+                nn::precision_name(precisions[0]), one.wall * h, one.cpu * h);
+    return 0;
+  }
+  std::printf("paper run (%.0f episodes, %s): fp32 %.1f h, bf16 %.1f h (%.2fx faster); CPU time fp32 %.1f h, "
+              "bf16 %.1f h (%.2fx)\n",
+              kPaperEpisodes, small.c_str(), s_fp32.wall * h, s_bf16.wall * h, s_fp32.wall / s_bf16.wall,
+              s_fp32.cpu * h, s_bf16.cpu * h, s_fp32.cpu / s_bf16.cpu);
   return 0;
 }

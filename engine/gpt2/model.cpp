@@ -33,7 +33,7 @@ Result<Model> Model::create(const Config& cfg, const std::vector<TensorSpec>& ex
 std::span<float> Model::tensor(const std::string& name) {
   const TensorSpec* t = layout_.find(name);
   if (!t) return {};
-  frozen16_stale_ = true;
+  if (t->offset < params_.size() - grads_.size()) frozen16_stale_ = true;
   return std::span<float>(params_).subspan(t->offset, t->size);
 }
 
@@ -409,7 +409,6 @@ Status Model::set_trainable_blocks(int k, bool embeddings) {
 }
 
 std::span<float> Model::trainable_params() {
-  frozen16_stale_ = true;
   return std::span<float>(params_).subspan(params_.size() - grads_.size());
 }
 

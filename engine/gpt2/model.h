@@ -31,8 +31,9 @@
 // operands with fp32 accumulation, against a bf16 rounding of the fp32
 // parameters that the model keeps: the trainable range is rounded again at
 // each forward (an optimiser writes it through trainable_params()), the rest
-// when a mutable accessor (params(), tensor(), trainable_params()) or
-// init_random / set_trainable_blocks was called since the last forward.
+// when params(), tensor() of a frozen tensor, init_random or
+// set_trainable_blocks was called since the last forward (so reading a
+// trainable tensor through tensor() at every step costs no rounding).
 // Writing frozen parameters through a span taken before a forward and written
 // after it is not seen. LayerNorm, softmax, attention, GELU, the residual
 // stream, gradients and the parameters themselves stay fp32. A model is not

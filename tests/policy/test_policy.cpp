@@ -17,6 +17,7 @@
 #include "env/observation.h"
 #include "gpt2/model.h"
 #include "nn/categorical.h"
+#include "nn/gemm.h"
 #include "rl/mirror.h"
 #include "rl/prompt_checkpoint.h"
 #include "rl/prompt_policy.h"
@@ -226,6 +227,46 @@ TEST_CASE("the clipped-ratio learner trains the prompt policy: one epoch is the 
   const auto three = run("ppo", 3);
   CHECK(three != improved);
   CHECK(run("ppo", 3) == three);
+}
+
+TEST_CASE("three updates of the tiny prompt policy with bf16 products stay near fp32's") {
+  // The same seeds at each precision; returns the parameters before and after.
+  auto run = [](nn::Precision prec) {
+    nn::set_gemm_precision(prec);
+    auto p = tiny_policy("action", 2, 7, true);
+    const std::vector<float> before(p->params().begin(), p->params().end());
+    rl::TrainConfig tc;
+    tc.estimator = "ppo";
+    tc.epochs = 2;
+    tc.episodes_per_update = 2;
+    tc.num_envs = 2;
+    tc.seed = 3;
+    auto v = env::VecEnv::make(env::HorizontalCrConfig{}, tc.num_envs);
+    REQUIRE(v);
+    rl::Trainer tr(*p, *v, tc, 0);
+    for (int u = 0; u < 3; ++u) CHECK(tr.update().samples > 0);
+    nn::set_gemm_precision(nn::Precision::kFp32);
+    REQUIRE(p->error().is_ok());
+    return std::pair{before, std::vector<float>(p->params().begin(), p->params().end())};
+  };
+  const auto [p0, p32] = run(nn::Precision::kFp32);
+  const auto [p0b, p16] = run(nn::Precision::kBf16);
+  REQUIRE(p0 == p0b);
+  // The bf16 run's step against fp32's: |p16 - p32| / |p32 - p0| and the cosine of the two steps.
+  double diff = 0.0, step = 0.0, step16 = 0.0, dot = 0.0;
+  for (size_t i = 0; i < p0.size(); ++i) {
+    const double a = p32[i] - p0[i], b = p16[i] - p0[i];
+    diff += (b - a) * (b - a);
+    step += a * a;
+    step16 += b * b;
+    dot += a * b;
+  }
+  const double rel = std::sqrt(diff / step), cosine = dot / std::sqrt(step * step16);
+  MESSAGE("3 updates, " << p0.size() << " parameters: |bf16 - fp32| / |fp32 step| = " << rel
+                        << ", cosine of the steps " << cosine);
+  CHECK(rel > 1e-6);  // the bf16 products ran
+  CHECK(rel < 0.1);
+  CHECK(cosine > 0.99);
 }
 
 TEST_CASE("policy-loss gradient matches finite differences (both heads, tail of 2 blocks, embeddings)") {
