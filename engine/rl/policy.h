@@ -31,8 +31,10 @@ class Policy {
   virtual int obs_size() const = 0;
 
   // Fills out[0..n) for obs [n, obs_size]. greedy: the distribution's mode
-  // instead of a sample.
-  virtual void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng,
+  // instead of a sample. rngs: the rows' random streams, one per row (size n:
+  // row r draws from rngs[r] only, so a row's sample does not depend on the
+  // other rows) or one the rows draw from in turn (size 1); see row_rng().
+  virtual void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs,
                    bool greedy, std::span<ActionSample> out) = 0;
 
   // A policy whose decisions can fail (a Lua prompt template) keeps the first
@@ -59,6 +61,9 @@ class Policy {
   virtual void log_probs(std::span<const float> /*obs*/, int /*n*/,
                          std::span<const ActionSample> /*actions*/, std::span<float> /*out*/) {}
 };
+
+// The stream row r draws from under act()'s `rngs` contract.
+inline Rng& row_rng(std::span<Rng> rngs, int r) { return rngs.size() == 1 ? rngs[0] : rngs[static_cast<size_t>(r)]; }
 
 // Ok when `policy` reads observations of `obs_size` values, else an error
 // naming both sizes.
