@@ -107,10 +107,6 @@ void broadcast(std::span<std::byte> x, int root) {
     check(MPI_Bcast(x.data(), static_cast<int>(x.size()), MPI_BYTE, root, MPI_COMM_WORLD), "MPI_Bcast");
 }
 
-void barrier() {
-  if (my_size > 1) check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
-}
-
 #else  // a job of one
 
 void init(int*, char***) {
@@ -133,7 +129,6 @@ std::string describe() { return "none (built without MPI)"; }
 void sum(std::span<double>) {}
 void sum(std::span<float>) {}
 void broadcast(std::span<std::byte>, int) {}
-void barrier() {}
 
 #endif
 

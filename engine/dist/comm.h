@@ -49,7 +49,6 @@ void sum(std::span<float> x);
 bool any(bool flag);
 // Copies root's bytes into every rank's `x` (same length everywhere).
 void broadcast(std::span<std::byte> x, int root);
-void barrier();
 
 // This rank's contiguous part [first, first + count) of `total` items:
 // first = rank * total / size, so the parts cover 0..total-1 in rank order.
