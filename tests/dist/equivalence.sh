@@ -3,7 +3,8 @@
 # batch trained on 1 process and on 2 MPI ranks give the same parameters
 # within float round-off and the same training and validation figures, for
 # the MLP (improved, ppo with shuffled minibatches, vine) and the tiny GPT-2;
-# `squawk eval` gives the same figures on 1 and 2 ranks.
+# a 2-rank job repeats bit for bit, one process gives the same bits with 3 or
+# 8 slots; `squawk eval` gives the same figures on 1 and 2 ranks.
 # usage: tests/dist/equivalence.sh SQUAWK (from the source root)
 # Exit 77 (skipped) when mpirun is absent or squawk was built without MPI.
 set -u
@@ -57,6 +58,15 @@ same mlp_ppo "${mlp[@]}" --estimator ppo --epochs 2 --minibatches 3
 same mlp_vine "${mlp[@]}" --estimator vine --epochs 2
 same gpt2_tiny scenarios/horizontal_cr.lua --policy gpt2 --precision fp32 --episodes 4 --episodes-per-update 2 \
   --envs 2 --eval-every 4 --eval-episodes 2
+
+# A job repeats bit for bit at a fixed rank count; one process gives the same
+# bits whatever its number of slots (per-episode streams, batch in episode order).
+"${mpi[@]}" "$sq" train "${mlp[@]}" --estimator ppo --epochs 2 --minibatches 3 --quiet --out "$tmp/again.2" >/dev/null 2>&1
+d=$(python3 "$here/compare_checkpoints.py" "$tmp/mlp_ppo.2/checkpoint.ckpt" "$tmp/again.2/checkpoint.ckpt")
+case $d in bit-identical*) ok "2 ranks twice: $d" ;; *) bad "2 ranks twice: $d" ;; esac
+"$sq" train "${mlp[@]}" --estimator ppo --epochs 2 --minibatches 3 --envs 3 --quiet --out "$tmp/envs3" >/dev/null 2>&1
+d=$(python3 "$here/compare_checkpoints.py" "$tmp/mlp_ppo.1/checkpoint.ckpt" "$tmp/envs3/checkpoint.ckpt")
+case $d in bit-identical*) ok "1 process, --envs 8 and 3: $d" ;; *) bad "--envs 8 and 3: $d" ;; esac
 
 # eval: the same JSON figures, wall time aside.
 ev=(eval scenarios/horizontal_cr.lua --checkpoint "$tmp/mlp_improved.1/policy.ckpt" --episodes 40 --envs 8 --json)
