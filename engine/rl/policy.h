@@ -46,7 +46,9 @@ class Policy {
   virtual std::span<float> grads() { return {}; }
   // Adds to grads() the gradient of
   //   L = -sum_r coef[r] log pi(a_r | s_r) - ent_coef sum_r H(pi(. | s_r))
-  // over the n rows, and returns the mean entropy of those rows.
+  // over the n rows, and returns the mean entropy of those rows (0 when n = 0:
+  // a rank of a data-parallel job with no samples still calls it before the
+  // optimiser step, so a policy that caches results of its parameters drops them).
   virtual float accumulate_gradient(std::span<const float> /*obs*/, int /*n*/,
                                     std::span<const ActionSample> /*actions*/,
                                     std::span<const float> /*coef*/, float /*ent_coef*/) {

@@ -241,9 +241,9 @@ void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<Ac
         c[j] = clipped ? 0.0f : static_cast<float>(rho * coef[i] * scale);
       }
       std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
-      const float h = k == 0 ? 0.0f
-                             : policy_.accumulate_gradient(rows, static_cast<int>(k), part_acts, c,
-                                                           static_cast<float>(c_h / static_cast<double>(m)));
+      // Called with no rows too: a policy with caches learns its parameters are about to change.
+      const float h = policy_.accumulate_gradient(rows, static_cast<int>(k), part_acts, c,
+                                                  static_cast<float>(c_h / static_cast<double>(m)));
       const double norm = step_all();
       if (e > 0) continue;
       st.entropy += total(h * static_cast<double>(k)) / static_cast<double>(n);
@@ -285,9 +285,7 @@ void Trainer::vine_steps(double c_h, UpdateStats& st) {
     for (size_t i = 0; i < n; ++i)
       coef[i] = static_cast<float>(std::exp(static_cast<double>(logp[i])) * adv[i] / sd / states);
     std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
-    const float h = n == 0 ? 0.0f
-                           : policy_.accumulate_gradient(rows, static_cast<int>(n), acts, coef,
-                                                         static_cast<float>(c_h / all));
+    const float h = policy_.accumulate_gradient(rows, static_cast<int>(n), acts, coef, static_cast<float>(c_h / all));
     const double norm = step_all();
     if (e > 0) continue;
     st.entropy = total(h * static_cast<double>(n)) / all;
@@ -407,8 +405,7 @@ UpdateStats Trainer::update(const UpdateProgress& progress) {
   }
   const float ent = cfg_.estimator == "vpg" ? 0.0f : static_cast<float>(c_h / static_cast<double>(samples_));
   std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
-  const float h = local == 0 ? 0.0f
-                             : policy_.accumulate_gradient(batch_obs_, static_cast<int>(local), batch_acts, coef, ent);
+  const float h = policy_.accumulate_gradient(batch_obs_, static_cast<int>(local), batch_acts, coef, ent);
   st.entropy = total(h * static_cast<double>(local)) / static_cast<double>(samples_);
   st.grad_norm = step_all();
   return st;

@@ -59,6 +59,18 @@ same mlp_vine "${mlp[@]}" --estimator vine --epochs 2
 same gpt2_tiny scenarios/horizontal_cr.lua --policy gpt2 --precision fp32 --episodes 4 --episodes-per-update 2 \
   --envs 2 --eval-every 4 --eval-episodes 2
 
+# 3 ranks, 2 episodes per update: rank 0 plays none and must still follow
+# every step (the GPT-2 policy drops its prefix cache when its parameters change).
+g3=(train scenarios/horizontal_cr.lua --policy gpt2 --precision fp32 --episodes 6 --episodes-per-update 2 --envs 2
+    --eval-every 6 --eval-episodes 2 --estimator ppo --epochs 2 --minibatches 2 --quiet)
+"$sq" "${g3[@]}" --out "$tmp/g3.1" >/dev/null 2>&1
+mpirun --oversubscribe --allow-run-as-root -np 3 -x OPENBLAS_NUM_THREADS -x OMP_NUM_THREADS "$sq" "${g3[@]}" --out "$tmp/g3.3" >/dev/null 2>&1
+if d=$(python3 "$here/compare_checkpoints.py" "$tmp/g3.1/checkpoint.ckpt" "$tmp/g3.3/checkpoint.ckpt"); then
+  ok "gpt2_tiny ppo, 3 ranks, one with no episodes: $d"
+else
+  bad "gpt2_tiny ppo on 3 ranks: $d"
+fi
+
 # A job repeats bit for bit at a fixed rank count; one process gives the same
 # bits whatever its number of slots (per-episode streams, batch in episode order).
 "${mpi[@]}" "$sq" train "${mlp[@]}" --estimator ppo --epochs 2 --minibatches 3 --quiet --out "$tmp/again.2" >/dev/null 2>&1
