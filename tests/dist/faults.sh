@@ -25,6 +25,12 @@ run=(train scenarios/horizontal_cr.lua --episodes 10000000 --episodes-per-update
 episodes() { sed -n 2p "$1" | grep -o '"episodes":[0-9]*' | cut -d: -f2; }
 # Waits up to $2 s for file $1 to exist.
 wait_for() { for _ in $(seq $(($2 * 10))); do [ -e "$1" ] && return 0; sleep 0.1; done; return 1; }
+# Waits up to 60 s for the run's checkpoint to hold more than $1 episodes
+# (the run is then past its set-up, in its training loop).
+wait_past() {
+  for _ in $(seq 600); do [ "$(episodes "$tmp/run/checkpoint.ckpt")" -gt "$1" ] 2>/dev/null && return 0; sleep 0.1; done
+  return 1
+}
 
 # 1. SIGKILL of rank 1.
 "${mpi[@]}" "$sq" "${run[@]}" >"$tmp/kill.out" 2>&1 &
@@ -49,7 +55,7 @@ before=$(episodes "$tmp/run/checkpoint.ckpt")
 # 2. --resume on 1 process, interrupted by Ctrl-C.
 "$sq" "${run[@]}" --resume >"$tmp/one.out" 2>&1 &
 one=$!
-sleep 2
+wait_past "$before"
 kill -INT "$one"
 wait "$one"; rc=$?
 mid=$(episodes "$tmp/run/checkpoint.ckpt")
@@ -62,7 +68,7 @@ fi
 # 3. --resume on 2 ranks, Ctrl-C on mpirun.
 "${mpi[@]}" "$sq" "${run[@]}" --resume >"$tmp/two.out" 2>&1 &
 two=$!
-sleep 3
+wait_past "$mid"
 kill -INT "$two"
 wait "$two"; rc=$?
 after=$(episodes "$tmp/run/checkpoint.ckpt")
