@@ -3,9 +3,9 @@
 // learners and the evaluator need. No other file includes mpi.h.
 //
 // Built with MPI (CMake option SQUAWK_MPI, on when MPI is found), a process
-// started by a launcher joins its job; any other process, and every process
-// of a build without MPI, is a job of one (rank 0, size 1) whose collectives
-// are identities.
+// started by a launcher joins its job; any other process is a job of one
+// (rank 0, size 1) whose collectives are identities, as is every process of a
+// build without MPI (which init() refuses to start as one of several).
 //
 // Contracts:
 // - Every rank calls the same collectives in the same order with the same
@@ -26,9 +26,9 @@ namespace squawk::dist {
 
 // Joins the job when a launcher started this process (its environment gives
 // the job's size: OMPI_COMM_WORLD_SIZE from mpirun, PMI_SIZE, or
-// SLURM_STEP_NUM_TASKS from srun);
-// call once, first thing. A build without MPI started as one of several
-// processes exits with status 2 and a message (each would run the whole job).
+// SLURM_STEP_NUM_TASKS from srun); call once, first thing. A build without
+// MPI started as one of several processes exits with status 2 and a message
+// (each would run the whole job).
 void init(int* argc, char*** argv);
 // Leaves the job; after it no collective may be called. No-op for a job of one.
 void finalize();
