@@ -92,13 +92,13 @@ int measure(const std::string& model, const script::Scenario& sc, int batch, int
               p.params().size(), p.spec().trainable_blocks, p.prefix_tokens().size(), len ? len->size() : 0);
   Rng rng(1);
   std::vector<rl::ActionSample> out(static_cast<size_t>(n));
-  p.act(obs, 1, {}, rng, false, out);  // builds the prefix cache
+  p.act(obs, 1, {}, {&rng, 1}, false, out);  // builds the prefix cache
   for (int b : {1, n}) {
     p.set_chunk_rows(b);
     const int reps = b == 1 ? std::min(n, 8) : 1;
     const auto t0 = std::chrono::steady_clock::now();
     for (int r = 0; r < reps; ++r)
-      p.act(std::span<const float>(obs).subspan(static_cast<size_t>(r * b * p.obs_size())), b, {}, rng, false, out);
+      p.act(std::span<const float>(obs).subspan(static_cast<size_t>(r * b * p.obs_size())), b, {}, {&rng, 1}, false, out);
     const double s = seconds_since(t0);
     std::printf("  B = %-3d  %8.1f ms per decision  %8.1f decisions/s\n", b, 1e3 * s / (reps * b), reps * b / s);
   }

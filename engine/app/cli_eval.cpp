@@ -14,6 +14,7 @@
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/paths.h"
+#include "dist/comm.h"
 #include "env/observation.h"
 #include "env/recorder.h"
 #include "rl/evaluator.h"
@@ -33,9 +34,9 @@ class PromptShower : public rl::Policy {
   std::string name() const override { return inner_.name(); }
   int obs_size() const override { return inner_.obs_size(); }
   Status error() const override { return inner_.error(); }
-  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+  void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs, bool greedy,
            std::span<rl::ActionSample> out) override {
-    inner_.act(obs, n, slots, rng, greedy, out);
+    inner_.act(obs, n, slots, rngs, greedy, out);
     const auto d = static_cast<size_t>(obs_size());
     for (int r = 0; r < n && left_ > 0; ++r, --left_) {
       auto text = inner_.prompt(obs.subspan(static_cast<size_t>(r) * d, d));
@@ -69,6 +70,8 @@ Result<EvalRequest> eval_request(const Args& args, const script::Scenario& sc) {
   r.greedy = args.has("--greedy");
   r.json = args.has("--json");
   r.record = args.get_or("--record", "");
+  if (!r.record.empty() && dist::size() > 1)
+    return Status::invalid("--record: one process writes the recording; run it without mpirun");
   r.show_prompt = *show;
   return r;
 }

@@ -16,6 +16,7 @@
 #include "app/train_log.h"
 #include "app/vm_options.h"
 #include "core/paths.h"
+#include "dist/comm.h"
 #include "env/vec_env.h"
 #include "nn/gemm.h"
 #include "rl/evaluator.h"
@@ -117,12 +118,13 @@ int cmd_train_gpt2(const ArgV& argv) {
   const bool quiet = args->has("--quiet");
   if (!quiet)
     std::printf("training gpt2 (%s, %d trainable blocks%s, head %s, %zu trainable parameters) on %s: "
-                "%s, estimator %s, lr %g, seed %llu%s\n",
+                "%s, estimator %s, lr %g, seed %llu%s%s\n",
                 meta.source.c_str(), meta.spec.trainable_blocks, meta.spec.train_embeddings ? " and the embeddings" : "",
                 meta.spec.head.c_str(), policy.params().size(),
                 sc.path.c_str(), episodes_text(cfg).c_str(), cfg.estimator.c_str(), cfg.lr,
                 static_cast<unsigned long long>(cfg.seed),
-                resuming ? " (resumed)" : init_path.empty() ? "" : (" (from " + init_path + ")").c_str());
+                resuming ? " (resumed)" : init_path.empty() ? "" : (" (from " + init_path + ")").c_str(),
+                ranks_text().c_str());
   const auto t0 = std::chrono::steady_clock::now();
   const double wall0 = meta.progress.wall_s;
   long long next_eval = cfg.eval_every > 0 ? (meta.progress.episodes / cfg.eval_every + 1) * cfg.eval_every
@@ -167,7 +169,8 @@ int cmd_train_gpt2(const ArgV& argv) {
            100.0 * ev->most_frequent_share());
     }
     trainer.save(meta);
-    if (Status s = rl::save_prompt_checkpoint(run->checkpoint, meta); !s.is_ok()) return failure(s);
+    if (dist::rank() == 0)  // rank 0 alone writes; the other ranks hold the same state
+      if (Status s = rl::save_prompt_checkpoint(run->checkpoint, meta); !s.is_ok()) return failure(s);
   }
   bar.finish();
   if (!quiet)
@@ -184,7 +187,7 @@ Status apply_precision_flag(const Args& args, bool announce) {
     want = *p;
   }
   const std::string line = nn::use_precision(want);
-  if (announce) std::fprintf(stderr, "%s\n", line.c_str());
+  if (announce && dist::rank() == 0) std::fprintf(stderr, "%s\n", line.c_str());
   return Status::ok();
 }
 

@@ -17,6 +17,7 @@
 #include "app/train_log.h"
 #include "app/vm_options.h"
 #include "core/paths.h"
+#include "dist/comm.h"
 #include "env/recorder.h"
 #include "env/vec_env.h"
 #include "rl/baseline_policies.h"
@@ -40,6 +41,11 @@ rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainP
   }
   c.progress = progress;
   return c;
+}
+
+// Rank 0 alone writes checkpoints (dist/comm.h); the other ranks hold the same state.
+Status save_on_rank0(const std::string& path, const rl::Checkpoint& c) {
+  return dist::rank() == 0 ? rl::save_checkpoint(path, c) : Status::ok();
 }
 
 }  // namespace
@@ -110,11 +116,12 @@ int cmd_train(const ArgV& given) {
   if (!log) return failure(log.status());
   const bool quiet = args->has("--quiet");
   if (!quiet)
-    std::printf("training %s on %s (%s rules): %s, estimator %s, %zu parameters, seed %llu%s\n",
+    std::printf("training %s on %s (%s rules): %s, estimator %s, %zu parameters, seed %llu%s%s\n",
                 policy->name().c_str(), sc.path.c_str(),
                 sc.train_env.rules == env::Rules::kGym ? "gym" : "paper", episodes_text(cfg).c_str(),
                 cfg.estimator.c_str(), policy->params().size(),
-                static_cast<unsigned long long>(cfg.seed), run->resuming ? " (resumed)" : "");
+                static_cast<unsigned long long>(cfg.seed), run->resuming ? " (resumed)" : "",
+                ranks_text().c_str());
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
   const double wall0 = progress.wall_s;
   double best_success = -1.0;
@@ -122,14 +129,14 @@ int cmd_train(const ArgV& given) {
                                            : cfg.episodes;
   InterruptGuard interrupt;
   while (progress.episodes < cfg.end_episodes()) {
-    if (InterruptGuard::requested()) {
+    const rl::UpdateStats st = trainer.update([](long long) { return !InterruptGuard::requested(); });
+    if (st.interrupted) {
       bar.finish();
-      if (Status s = rl::save_checkpoint(run->checkpoint, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
+      if (Status s = save_on_rank0(run->checkpoint, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
         return failure(s);
       print_interrupted(*run, progress);
       return kExitInterrupted;
     }
-    const rl::UpdateStats st = trainer.update();
     progress.episodes += st.episodes;
     progress.updates = trainer.updates();
     progress.wall_s = wall0 + bar.elapsed();
@@ -146,11 +153,11 @@ int cmd_train(const ArgV& given) {
     auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, *validation, false});
     if (!ev) return failure(ev.status());
     if (Status s = log->row(progress, *ev); !s.is_ok()) return failure(s);
-    if (Status s = rl::save_checkpoint(run->checkpoint, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
+    if (Status s = save_on_rank0(run->checkpoint, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
       return failure(s);
     if (ev->success_rate > best_success) {
       best_success = ev->success_rate;
-      if (Status s = rl::save_checkpoint(best_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
+      if (Status s = save_on_rank0(best_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
         return failure(s);
     }
     if (!quiet) {
@@ -163,7 +170,7 @@ int cmd_train(const ArgV& given) {
   bar.finish();
   // The policy alone (no optimiser state): what `squawk eval --checkpoint` needs.
   const std::string policy_path = out + "/policy.ckpt";
-  if (Status s = rl::save_checkpoint(policy_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
+  if (Status s = save_on_rank0(policy_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
     return failure(s);
   if (!quiet)
     std::printf("done: %lld episodes in %s; checkpoint %s, best %s, policy %s, log %s\n", progress.episodes,

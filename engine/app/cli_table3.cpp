@@ -18,6 +18,7 @@
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/paths.h"
+#include "dist/comm.h"
 #include "env/vec_env.h"
 #include "rl/evaluator.h"
 #include "rl/prompt_checkpoint.h"
@@ -178,7 +179,8 @@ int cmd_table3(const ArgV& argv) {
     csv += line;
   }
   if (auto path = args->get("--csv")) {
-    if (Status st = files::write_atomic(*path, csv); !st.is_ok()) return failure(st);
+    if (dist::rank() == 0)  // rank 0 alone writes (dist/comm.h); every rank holds the same rows
+      if (Status st = files::write_atomic(*path, csv); !st.is_ok()) return failure(st);
   } else if (!args->has("--json")) {
     std::printf("\n%s", csv.c_str());
   }

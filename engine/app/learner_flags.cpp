@@ -1,5 +1,7 @@
 #include "app/learner_flags.h"
 
+#include "dist/comm.h"
+
 namespace squawk::app {
 
 const std::vector<std::string>& learner_flags() {
@@ -74,6 +76,11 @@ std::string episodes_text(const rl::TrainConfig& cfg) {
   std::string s = std::to_string(cfg.episodes) + " episodes";
   if (cfg.stop_at > 0) s += ", stopping at " + std::to_string(cfg.stop_at);
   return s;
+}
+
+std::string ranks_text() {
+  if (dist::size() == 1) return "";
+  return ", data-parallel on " + std::to_string(dist::size()) + " ranks (" + dist::describe() + ")";
 }
 
 Status apply_mirror_flag(const Args& args, const env::HorizontalCrConfig& env, env::ObservationMirror& mirror) {

@@ -35,6 +35,10 @@ Result<uint64_t> validation_seed(const Args& args, uint64_t eval_seed);
 // "N episodes" for a run's header line, with ", stopping at S" under --stop-at.
 std::string episodes_text(const rl::TrainConfig& cfg);
 
+// ", data-parallel on N ranks (LIBRARY)" in a job of several ranks
+// (dist/comm.h), "" for one process: for a run's header line.
+std::string ranks_text();
+
 // --mirror (a switch): a mirror-symmetric policy (rl/mirror.h). Sets `mirror`
 // to env's observation mirror when the flag is given; keeps it otherwise.
 // Error: env has no exact mirror (env::observation_mirror).

@@ -88,7 +88,7 @@ script::Advisory agent_advisory(rl::Policy& policy, const env::HorizontalCrEnv& 
   e.observe_flat(obs);
   rl::ActionSample a;
   const int slot = 0;
-  policy.act(obs, 1, {&slot, 1}, rng, /*greedy=*/true, {&a, 1});
+  policy.act(obs, 1, {&slot, 1}, {&rng, 1}, /*greedy=*/true, {&a, 1});
   const double hdg_now = e.fleet().hdg(0);
   int target = static_cast<int>(std::lround(geo::wrap360(hdg_now + a.value * e.config().heading_per_action)));
   if (target <= 0) target += 360;

@@ -6,6 +6,7 @@
 
 #include "app/out_guard.h"
 #include "core/files.h"
+#include "dist/comm.h"
 
 namespace squawk::app {
 
@@ -32,10 +33,18 @@ Status trim(const std::string& path, long long episodes) {
 }  // namespace
 
 Result<RunFolder> open_run_folder(const std::string& dir, const Args& args) {
-  SQUAWK_RETURN_IF_ERROR(files::make_dirs(dir));
   RunFolder run{dir + "/checkpoint.ckpt", dir + "/log.csv", false};
   run.resuming = args.has("--resume") && files::exists(run.checkpoint);
-  if (!run.resuming || args.has("--override")) SQUAWK_RETURN_IF_ERROR(record_run(dir, args));
+  if (dist::rank() == 0) {
+    SQUAWK_RETURN_IF_ERROR(files::make_dirs(dir));
+    if (!run.resuming || args.has("--override")) SQUAWK_RETURN_IF_ERROR(record_run(dir, args));
+  }
+  std::byte resuming{static_cast<unsigned char>(run.resuming)};
+  dist::broadcast({&resuming, 1}, 0);
+  if (static_cast<bool>(resuming) && !run.resuming)
+    return Status::not_found("rank " + std::to_string(dist::rank()) + " cannot see " + run.checkpoint +
+                             ", which rank 0 resumes from: the run folder must be on a file system every rank shares");
+  run.resuming = static_cast<bool>(resuming);
   return run;
 }
 
@@ -52,6 +61,7 @@ void print_interrupted(const RunFolder& run, const rl::TrainProgress& p) {
 }
 
 Result<TrainLog> TrainLog::open(const RunFolder& run, long long episodes) {
+  if (dist::rank() > 0) return TrainLog{};
   if (run.resuming && files::exists(run.log)) {
     SQUAWK_RETURN_IF_ERROR(trim(run.log, episodes));
   } else {
@@ -78,9 +88,10 @@ Status TrainLog::row(rl::TrainProgress& p, const rl::EvalResult& ev) {
   std::snprintf(row, sizeof row, "%lld,%lld,%.2f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f\n", p.episodes, p.updates,
                 p.wall_s, p.interval_return / k, p.interval_success / k, entropy_, grad_norm_, ev.success_rate,
                 ev.mean_reward, ev.std_reward);
-  out_ << row << std::flush;
   p.interval_return = p.interval_success = 0.0;
   p.interval_updates = 0;
+  if (path_.empty()) return Status::ok();  // not rank 0
+  out_ << row << std::flush;
   if (!out_) return Status::io_error("cannot write " + path_);
   return Status::ok();
 }

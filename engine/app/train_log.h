@@ -26,6 +26,10 @@ struct RunFolder {
 // to resume), or one resumed with --override, records its settings in
 // DIR/run.json (out_guard.h); `args` are
 // the learner's parsed flags, already passed through resolve_train_argv.
+// In a data-parallel job (dist/comm.h) rank 0 alone creates and records the
+// folder and every rank gets rank 0's answer; error on a rank that cannot
+// see the checkpoint rank 0 resumes from (DIR must be on a file system that
+// every rank shares).
 Result<RunFolder> open_run_folder(const std::string& dir, const Args& args);
 
 // A resumed run continues its own seed's random streams: error naming the
@@ -35,7 +39,8 @@ Status check_resume_seed(const RunFolder& run, uint64_t trained, uint64_t reques
 // Prints where an interrupted run stands and how to continue it.
 void print_interrupted(const RunFolder& run, const rl::TrainProgress& p);
 
-// log.csv: each row the means over the interval's updates of the training
+// log.csv (written by rank 0 alone in a data-parallel job; the other ranks'
+// logs keep the interval sums only): each row the means over the interval's updates of the training
 // return and success (kept in TrainProgress's interval sums, so they survive
 // --resume), the last update's entropy and gradient norm, and the validation
 // result.

@@ -13,7 +13,7 @@ std::string ConstantPolicy::name() const {
   return buf;
 }
 
-void ConstantPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, Rng& /*rng*/,
+void ConstantPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, std::span<Rng> /*rngs*/,
                          bool /*greedy*/, std::span<ActionSample> out) {
   // Flat layout (env/observation.h): cos_difference_pos[k] then cos_drift.
   const auto d = static_cast<size_t>(obs_size_);
@@ -27,7 +27,7 @@ void ConstantPolicy::act(std::span<const float> obs, int n, std::span<const int>
 }
 
 void MvpPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> slots,
-                    Rng& /*rng*/, bool /*greedy*/, std::span<ActionSample> out) {
+                    std::span<Rng> /*rngs*/, bool /*greedy*/, std::span<ActionSample> out) {
   for (int r = 0; r < n; ++r) {
     const auto i = static_cast<size_t>(r);
     out[i] = {-1, static_cast<float>(envs_.env(slots[i]).mvp_action())};
@@ -50,7 +50,7 @@ double branch_score(env::HorizontalCrEnv e, double first, const std::vector<doub
 }  // namespace
 
 void LookaheadPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> slots,
-                          Rng& /*rng*/, bool /*greedy*/, std::span<ActionSample> out) {
+                          std::span<Rng> /*rngs*/, bool /*greedy*/, std::span<ActionSample> out) {
   for (int r = 0; r < n; ++r) {
     const env::HorizontalCrEnv& e = envs_.env(slots[static_cast<size_t>(r)]);
     double best = -std::numeric_limits<double>::infinity();

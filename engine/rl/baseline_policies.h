@@ -35,7 +35,7 @@ class ConstantPolicy : public Policy {
       : obs_size_(obs_size), value_(value), when_(when) {}
   std::string name() const override;
   int obs_size() const override { return obs_size_; }
-  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+  void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs, bool greedy,
            std::span<ActionSample> out) override;
 
  private:
@@ -48,7 +48,7 @@ class MvpPolicy : public StatePolicy {
  public:
   using StatePolicy::StatePolicy;
   std::string name() const override { return "mvp"; }
-  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+  void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs, bool greedy,
            std::span<ActionSample> out) override;
 };
 
@@ -58,7 +58,7 @@ class LookaheadPolicy : public StatePolicy {
   LookaheadPolicy(const env::VecEnv& envs, std::vector<double> actions)
       : StatePolicy(envs), actions_(std::move(actions)) {}
   std::string name() const override { return "lookahead"; }
-  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+  void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs, bool greedy,
            std::span<ActionSample> out) override;
 
  private:

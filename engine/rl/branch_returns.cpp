@@ -30,7 +30,7 @@ Result<std::vector<double>> branch_returns(Policy& policy, std::span<const env::
       branches[static_cast<size_t>(live[r])].observe_flat(
           std::span<float>(rows).subspan(r * static_cast<size_t>(obs), static_cast<size_t>(obs)));
     acts.resize(live.size());
-    policy.act(rows, static_cast<int>(live.size()), live, unused, true, acts);
+    policy.act(rows, static_cast<int>(live.size()), live, {&unused, 1}, true, acts);
     SQUAWK_RETURN_IF_ERROR(policy.error());
     for (size_t r = 0; r < live.size(); ++r) {
       const auto b = static_cast<size_t>(live[r]);
@@ -41,7 +41,7 @@ Result<std::vector<double>> branch_returns(Policy& policy, std::span<const env::
   return q;
 }
 
-void RolloutPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> slots, Rng& /*rng*/,
+void RolloutPolicy::act(std::span<const float> /*obs*/, int n, std::span<const int> slots, std::span<Rng> /*rngs*/,
                         bool /*greedy*/, std::span<ActionSample> out) {
   std::vector<env::HorizontalCrEnv> snaps;
   snaps.reserve(static_cast<size_t>(n));

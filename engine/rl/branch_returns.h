@@ -45,7 +45,7 @@ class RolloutPolicy : public StatePolicy {
   std::string name() const override { return "rollout:" + base_->name(); }
   // The base's size, so check_obs_size() refuses a base built for other rows.
   int obs_size() const override { return base_->obs_size(); }
-  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+  void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs, bool greedy,
            std::span<ActionSample> out) override;
   Status error() const override { return error_.is_ok() ? base_->error() : error_; }
 

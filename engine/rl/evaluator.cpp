@@ -5,6 +5,9 @@
 #include <cmath>
 #include <vector>
 
+#include "dist/comm.h"
+#include "rl/episode_streams.h"
+
 namespace squawk::rl {
 
 int action_bin(double value) {
@@ -29,6 +32,44 @@ double EvalResult::most_frequent_share() const {
          static_cast<double>(n);
 }
 
+namespace {
+
+// Every rank's episodes (the fields the figures read) in episode order, and
+// the action counts summed over the ranks. Each episode's values come from
+// the one rank that played it, the others add zeros: the sums are exact.
+std::vector<env::EpisodeStats> gather(const std::vector<env::EpisodeStats>& mine, long long episodes,
+                                      std::array<long long, kActionBins.size()>& counts) {
+  constexpr size_t kFields = 6;
+  const auto n = static_cast<size_t>(episodes);
+  std::vector<double> table(n * kFields + counts.size(), 0.0);
+  for (const env::EpisodeStats& e : mine) {
+    double* row = &table[static_cast<size_t>(e.index) * kFields];
+    row[0] = e.success;
+    row[1] = e.reached;
+    row[2] = e.decisions;
+    row[3] = e.steps;
+    row[4] = e.total_reward;
+    row[5] = e.min_separation;
+  }
+  for (size_t k = 0; k < counts.size(); ++k) table[n * kFields + k] = static_cast<double>(counts[k]);
+  dist::sum(table);
+  std::vector<env::EpisodeStats> all(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double* row = &table[i * kFields];
+    all[i].index = i;
+    all[i].success = row[0] != 0.0;
+    all[i].reached = row[1] != 0.0;
+    all[i].decisions = static_cast<int>(row[2]);
+    all[i].steps = static_cast<int>(row[3]);
+    all[i].total_reward = row[4];
+    all[i].min_separation = row[5];
+  }
+  for (size_t k = 0; k < counts.size(); ++k) counts[k] = static_cast<long long>(table[n * kFields + k]);
+  return all;
+}
+
+}  // namespace
+
 Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions& opts,
                             const std::function<void(long long, long long)>& progress) {
   if (opts.episodes < 1)
@@ -38,9 +79,10 @@ Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions
                            " observation values, the environment gives " + std::to_string(envs.obs_size()));
   const auto t0 = std::chrono::steady_clock::now();
   const long long steps0 = envs.env_steps();
-  Rng rng(opts.seed ^ kEvalPolicySalt);
+  EpisodeStreams streams(opts.seed ^ kEvalPolicySalt);
+  const dist::Share part = dist::share(static_cast<uint64_t>(opts.episodes));
   envs.completed().clear();
-  envs.start(opts.seed, 0, static_cast<uint64_t>(opts.episodes));
+  envs.start(opts.seed, part.first, part.count);
   std::vector<ActionSample> acts;
   std::vector<double> actions, rewards;
   std::vector<uint8_t> dones;
@@ -51,16 +93,17 @@ Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions
     actions.resize(n);
     rewards.resize(n);
     dones.resize(n);
-    policy.act(envs.observations(), static_cast<int>(n), envs.waiting(), rng, opts.greedy, acts);
+    policy.act(envs.observations(), static_cast<int>(n), envs.waiting(), streams.rows(envs), opts.greedy, acts);
+    streams.keep(envs);
     for (size_t r = 0; r < n; ++r) {
       actions[r] = acts[r].value;
       ++res.action_counts[static_cast<size_t>(action_bin(acts[r].value))];
     }
     envs.step(actions, rewards, dones);
-    if (progress) progress(static_cast<long long>(envs.completed().size()), opts.episodes);
+    if (progress)
+      progress(std::min(opts.episodes, static_cast<long long>(envs.completed().size()) * dist::size()), opts.episodes);
   }
-  std::vector<env::EpisodeStats> eps = envs.completed();
-  std::sort(eps.begin(), eps.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  std::vector<env::EpisodeStats> eps = gather(envs.completed(), opts.episodes, res.action_counts);
   res.episodes = static_cast<long long>(eps.size());
   double sum = 0.0;
   for (const auto& e : eps) {
@@ -86,7 +129,9 @@ Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions
     res.separation_median = sep[sep.size() / 2];
     res.separation_p5 = sep[sep.size() / 20];
   }
-  res.env_steps = envs.env_steps() - steps0;
+  double steps = static_cast<double>(envs.env_steps() - steps0);
+  dist::sum(std::span<double>(&steps, 1));
+  res.env_steps = static_cast<long long>(steps);
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   envs.completed().clear();
   return res;

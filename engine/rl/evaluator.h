@@ -8,8 +8,12 @@
 // value binned to the nearest bin (a continuous MVP action lands in one of the
 // five classes); most_frequent_share() is the largest count over the total,
 // the figure that shows a policy playing one action whatever the state.
-// Policy samples come from Rng(seed ^ kEvalPolicySalt), so one seed fixes the
-// whole evaluation on one build.
+// Episode k's policy samples come from Rng(episode_seed(seed ^
+// kEvalPolicySalt, k)) (episode_streams.h), so one seed fixes the whole
+// evaluation on one build, whatever the number of slots.
+// In a data-parallel job (dist/comm.h) each rank plays its share of the
+// episodes (dist::share) and every rank returns the figures of all of them,
+// the same as one process gives.
 #pragma once
 
 #include <cstdint>
@@ -54,7 +58,8 @@ struct EvalResult {
   double most_frequent_share() const;  // [-] 0..1, 0 without decisions
 };
 
-// progress(done, total) is called after every batched step when given.
+// progress(done, total) is called after every batched step when given (in a
+// job of several ranks, done is this rank's count times the number of ranks).
 Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions& opts,
                             const std::function<void(long long, long long)>& progress = {});
 

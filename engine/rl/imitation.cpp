@@ -29,12 +29,12 @@ Result<double> fly(env::VecEnv& envs, Policy& pilot, bool greedy, Policy& teache
     const int n = static_cast<int>(envs.waiting().size());
     const std::span<const float> obs = envs.observations();
     taught.assign(static_cast<size_t>(n), {});
-    teacher.act(obs, n, envs.waiting(), rng, true, taught);
+    teacher.act(obs, n, envs.waiting(), {&rng, 1}, true, taught);
     if (&pilot == &teacher) {
       flown = taught;
     } else {
       flown.assign(static_cast<size_t>(n), {});
-      pilot.act(obs, n, envs.waiting(), rng, greedy, flown);
+      pilot.act(obs, n, envs.waiting(), {&rng, 1}, greedy, flown);
     }
     SQUAWK_RETURN_IF_ERROR(teacher.error());
     SQUAWK_RETURN_IF_ERROR(pilot.error());
@@ -108,7 +108,7 @@ Status imitate(Policy& student, Policy& teacher, env::VecEnv& envs, const Imitat
         adam.step();
         SQUAWK_RETURN_IF_ERROR(student.error());
       }
-      student.act(held.obs, n_held, std::span<const int>(no_slots).first(static_cast<size_t>(n_held)), rng, true,
+      student.act(held.obs, n_held, std::span<const int>(no_slots).first(static_cast<size_t>(n_held)), {&rng, 1}, true,
                   held_act);
       SQUAWK_RETURN_IF_ERROR(student.error());
       int agree = 0;

@@ -59,7 +59,7 @@ void MlpPolicy::forward(std::span<const float> obs, int n, std::vector<float>& o
   mirror_combine(raw_, n, k, out);
 }
 
-void MlpPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, Rng& rng,
+void MlpPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, std::span<Rng> rngs,
                     bool greedy, std::span<ActionSample> out) {
   forward(obs, n, out_);
   const auto k = static_cast<size_t>(mlp_.out_dim());
@@ -67,14 +67,14 @@ void MlpPolicy::act(std::span<const float> obs, int n, std::span<const int> /*sl
     const float log_std = params_.back();
     for (int r = 0; r < n; ++r) {
       const float mu = out_[static_cast<size_t>(r)];
-      out[static_cast<size_t>(r)] = {-1, greedy ? mu : nn::gaussian_sample(mu, log_std, rng)};
+      out[static_cast<size_t>(r)] = {-1, greedy ? mu : nn::gaussian_sample(mu, log_std, row_rng(rngs, r))};
     }
     return;
   }
   logp_.resize(k);
   for (int r = 0; r < n; ++r) {
     nn::log_softmax(std::span<const float>(out_).subspan(static_cast<size_t>(r) * k, k), logp_);
-    const int a = greedy ? nn::categorical_argmax(logp_) : nn::categorical_sample(logp_, rng);
+    const int a = greedy ? nn::categorical_argmax(logp_) : nn::categorical_sample(logp_, row_rng(rngs, r));
     out[static_cast<size_t>(r)] = {a, static_cast<float>(spec_.action_values[static_cast<size_t>(a)])};
   }
 }

@@ -42,7 +42,7 @@ class MlpPolicy : public Policy {
 
   std::string name() const override { return "mlp"; }
   int obs_size() const override { return spec_.obs_size; }
-  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+  void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs, bool greedy,
            std::span<ActionSample> out) override;
   bool trainable() const override { return true; }
   std::span<float> params() override { return params_; }

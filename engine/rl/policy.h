@@ -31,8 +31,10 @@ class Policy {
   virtual int obs_size() const = 0;
 
   // Fills out[0..n) for obs [n, obs_size]. greedy: the distribution's mode
-  // instead of a sample.
-  virtual void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng,
+  // instead of a sample. rngs: the rows' random streams, one per row (size n:
+  // row r draws from rngs[r] only, so a row's sample does not depend on the
+  // other rows) or one the rows draw from in turn (size 1); see row_rng().
+  virtual void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs,
                    bool greedy, std::span<ActionSample> out) = 0;
 
   // A policy whose decisions can fail (a Lua prompt template) keeps the first
@@ -44,7 +46,9 @@ class Policy {
   virtual std::span<float> grads() { return {}; }
   // Adds to grads() the gradient of
   //   L = -sum_r coef[r] log pi(a_r | s_r) - ent_coef sum_r H(pi(. | s_r))
-  // over the n rows, and returns the mean entropy of those rows.
+  // over the n rows, and returns the mean entropy of those rows (0 when n = 0:
+  // a rank of a data-parallel job with no samples still calls it before the
+  // optimiser step, so a policy that caches results of its parameters drops them).
   virtual float accumulate_gradient(std::span<const float> /*obs*/, int /*n*/,
                                     std::span<const ActionSample> /*actions*/,
                                     std::span<const float> /*coef*/, float /*ent_coef*/) {
@@ -59,6 +63,9 @@ class Policy {
   virtual void log_probs(std::span<const float> /*obs*/, int /*n*/,
                          std::span<const ActionSample> /*actions*/, std::span<float> /*out*/) {}
 };
+
+// The stream row r draws from under act()'s `rngs` contract.
+inline Rng& row_rng(std::span<Rng> rngs, int r) { return rngs.size() == 1 ? rngs[0] : rngs[static_cast<size_t>(r)]; }
 
 // Ok when `policy` reads observations of `obs_size` values, else an error
 // naming both sizes.

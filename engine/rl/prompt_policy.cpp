@@ -245,7 +245,7 @@ void PromptPolicy::log_probs(std::span<const float> obs, int n, std::span<const 
   }
 }
 
-void PromptPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, Rng& rng,
+void PromptPolicy::act(std::span<const float> obs, int n, std::span<const int> /*slots*/, std::span<Rng> rngs,
                        bool greedy, std::span<ActionSample> out) {
   const auto K = spec_.action_values.size();
   std::vector<float> z;
@@ -257,7 +257,7 @@ void PromptPolicy::act(std::span<const float> obs, int n, std::span<const int> /
   std::vector<float> logp(K);
   for (int r = 0; r < n; ++r) {
     nn::log_softmax(std::span<const float>(z).subspan(static_cast<size_t>(r) * K, K), logp);
-    const int a = greedy ? nn::categorical_argmax(logp) : nn::categorical_sample(logp, rng);
+    const int a = greedy ? nn::categorical_argmax(logp) : nn::categorical_sample(logp, row_rng(rngs, r));
     out[static_cast<size_t>(r)] = {a, static_cast<float>(spec_.action_values[static_cast<size_t>(a)])};
   }
 }

@@ -78,7 +78,7 @@ class PromptPolicy : public Policy {
 
   std::string name() const override { return "gpt2"; }
   int obs_size() const override { return obs_size_; }
-  void act(std::span<const float> obs, int n, std::span<const int> slots, Rng& rng, bool greedy,
+  void act(std::span<const float> obs, int n, std::span<const int> slots, std::span<Rng> rngs, bool greedy,
            std::span<ActionSample> out) override;
   bool trainable() const override { return true; }
   std::span<float> params() override { return model_.trainable_params(); }

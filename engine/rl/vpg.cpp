@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dist/comm.h"
 #include "rl/branch_returns.h"
+#include "rl/episode_streams.h"
 
 namespace squawk::rl {
 
@@ -11,6 +13,12 @@ namespace {
 constexpr uint64_t kTrainPolicySalt = 0x7EA1ull;
 constexpr uint64_t kBranchSalt = 0xB4A7C4ull;
 constexpr uint64_t kMinibatchSalt = 0x3B47C8ull;
+
+// x summed over the ranks.
+double total(double x) {
+  dist::sum(std::span<double>(&x, 1));
+  return x;
+}
 }
 
 Status TrainConfig::validate() const {
@@ -61,8 +69,8 @@ Trainer::Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, l
             nn::AdamConfig{.lr = static_cast<float>(config.lr),
                            .grad_clip = static_cast<float>(config.grad_clip)}),
       updates_(update_index),
-      slot_obs_(static_cast<size_t>(envs.size())),
-      slot_samples_(static_cast<size_t>(envs.size())) {
+      slot_episode_(static_cast<size_t>(envs.size())),
+      slot_index_(static_cast<size_t>(envs.size()), 0) {
   if (cfg_.estimator == "vpg" || cfg_.value_hidden.empty()) return;
   std::vector<int> sizes = {envs.obs_size()};
   sizes.insert(sizes.end(), cfg_.value_hidden.begin(), cfg_.value_hidden.end());
@@ -112,10 +120,16 @@ void Trainer::save(TrainState& s) {
   s.value_t = value_adam_ ? value_adam_->t() : 0;
 }
 
+double Trainer::step_all() {
+  dist::sum(policy_.grads());
+  return adam_.step();
+}
+
 double Trainer::coefficients(std::vector<float>& coef) {
   const size_t n = batch_samples_.size();
+  const int rows = static_cast<int>(n);
   coef.assign(n, 0.0f);
-  const double inv_n = 1.0 / static_cast<double>(n);
+  const double inv_n = 1.0 / static_cast<double>(samples_);
   if (cfg_.estimator == "vpg") {
     for (size_t i = 0; i < n; ++i) coef[i] = static_cast<float>(batch_samples_[i].reward * inv_n);
     return 0.0;
@@ -135,26 +149,30 @@ double Trainer::coefficients(std::vector<float>& coef) {
   if (value_) {
     std::vector<float> v(n);
     nn::MlpCache cache;
-    value_->forward(value_params_, batch_obs_.data(), static_cast<int>(n), v.data(), &cache);
+    if (rows > 0) value_->forward(value_params_, batch_obs_.data(), rows, v.data(), &cache);
     for (size_t i = 0; i < n; ++i) value_loss += (g[i] - v[i]) * (g[i] - v[i]) * inv_n;
+    value_loss = total(value_loss);
     adv = advantages(v, g);
     std::vector<float> dv(n);
     for (int it = 0; it < cfg_.value_iters; ++it) {
-      if (it > 0) value_->forward(value_params_, batch_obs_.data(), static_cast<int>(n), v.data(), &cache);
+      if (it > 0 && rows > 0) value_->forward(value_params_, batch_obs_.data(), rows, v.data(), &cache);
       for (size_t i = 0; i < n; ++i) dv[i] = static_cast<float>(2.0 * (v[i] - g[i]) * inv_n);
       std::fill(value_grads_.begin(), value_grads_.end(), 0.0f);
-      value_->backward(value_params_, cache, dv.data(), value_grads_);
+      if (rows > 0) value_->backward(value_params_, cache, dv.data(), value_grads_);
+      dist::sum(value_grads_);
       value_adam_->step();
     }
   } else {
-    double mean_g = 0.0;
-    for (float x : g) mean_g += x * inv_n;
+    double sum_g = 0.0;
+    for (float x : g) sum_g += x;
+    const double mean_g = total(sum_g) * inv_n;
     for (size_t i = 0; i < n; ++i) adv[i] = g[i] - mean_g;
   }
-  double mean = 0.0, var = 0.0;
-  for (double a : adv) mean += a * inv_n;
-  for (double a : adv) var += (a - mean) * (a - mean) * inv_n;
-  const double sd = std::sqrt(var);
+  double sum = 0.0, sq = 0.0;
+  for (double a : adv) sum += a;
+  const double mean = total(sum) * inv_n;
+  for (double a : adv) sq += (a - mean) * (a - mean);
+  const double sd = std::sqrt(total(sq) * inv_n);
   for (size_t i = 0; i < n; ++i) coef[i] = static_cast<float>((adv[i] - mean) / (sd + 1e-8) * inv_n);
   return value_loss;
 }
@@ -181,35 +199,41 @@ std::vector<double> Trainer::advantages(const std::vector<float>& v, const std::
 
 void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, double c_h,
                             UpdateStats& st) {
-  const size_t n = acts.size(), obs = static_cast<size_t>(envs_.obs_size());
+  const size_t local = acts.size(), obs = static_cast<size_t>(envs_.obs_size());
+  const auto n = static_cast<size_t>(samples_), offset = static_cast<size_t>(offset_);
   const size_t parts = std::min(n, static_cast<size_t>(cfg_.minibatches));
-  std::vector<float> old_logp(n);
-  policy_.log_probs(batch_obs_, static_cast<int>(n), acts, old_logp);
+  std::vector<float> old_logp(local);
+  if (local > 0) policy_.log_probs(batch_obs_, static_cast<int>(local), acts, old_logp);
+  // The whole batch's sample order; this rank holds samples [offset, offset + local).
   std::vector<size_t> order(n);
   for (size_t i = 0; i < n; ++i) order[i] = i;
   Rng shuffle(env::episode_seed(cfg_.seed ^ kMinibatchSalt, static_cast<uint64_t>(updates_)));
   std::vector<float> rows, logp, c;
   std::vector<ActionSample> part_acts;
+  std::vector<size_t> mine;  // local indices of this rank's samples in the part
   for (int e = 0; e < cfg_.epochs; ++e) {
     if (parts > 1)
       for (size_t i = n; i-- > 1;)
         std::swap(order[i], order[static_cast<size_t>(shuffle.uniform_int(0, static_cast<int64_t>(i)))]);
     for (size_t b = 0; b < parts; ++b) {
       const size_t lo = b * n / parts, m = (b + 1) * n / parts - lo;
-      part_acts.resize(m);
-      rows.resize(m * obs);
-      for (size_t j = 0; j < m; ++j) {
-        part_acts[j] = acts[order[lo + j]];
-        std::copy_n(batch_obs_.begin() + static_cast<long>(order[lo + j] * obs), obs,
-                    rows.begin() + static_cast<long>(j * obs));
+      mine.clear();
+      for (size_t j = lo; j < lo + m; ++j)
+        if (order[j] >= offset && order[j] < offset + local) mine.push_back(order[j] - offset);
+      const size_t k = mine.size();
+      part_acts.resize(k);
+      rows.resize(k * obs);
+      for (size_t j = 0; j < k; ++j) {
+        part_acts[j] = acts[mine[j]];
+        std::copy_n(batch_obs_.begin() + static_cast<long>(mine[j] * obs), obs, rows.begin() + static_cast<long>(j * obs));
       }
       const bool first = e == 0 && b == 0;  // the sampling policy itself: rho = 1
-      logp.resize(m);
-      if (!first) policy_.log_probs(rows, static_cast<int>(m), part_acts, logp);
-      c.resize(m);
+      logp.resize(k);
+      if (!first && k > 0) policy_.log_probs(rows, static_cast<int>(k), part_acts, logp);
+      c.resize(k);
       const double scale = static_cast<double>(n) / static_cast<double>(m);  // coef holds 1/N; L_B wants 1/|B|
-      for (size_t j = 0; j < m; ++j) {
-        const size_t i = order[lo + j];
+      for (size_t j = 0; j < k; ++j) {
+        const size_t i = mine[j];
         // d/dtheta of min(rho A, clip(rho) A) is rho A dlog pi where the
         // unclipped term is the smaller one, 0 where the clip is active.
         const double rho = first ? 1.0 : std::exp(static_cast<double>(logp[j]) - old_logp[i]);
@@ -217,22 +241,25 @@ void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<Ac
         c[j] = clipped ? 0.0f : static_cast<float>(rho * coef[i] * scale);
       }
       std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
-      const float h = policy_.accumulate_gradient(rows, static_cast<int>(m), part_acts, c,
+      // Called with no rows too: a policy with caches learns its parameters are about to change.
+      const float h = policy_.accumulate_gradient(rows, static_cast<int>(k), part_acts, c,
                                                   static_cast<float>(c_h / static_cast<double>(m)));
-      const double norm = adam_.step();
+      const double norm = step_all();
       if (e > 0) continue;
-      st.entropy += h * static_cast<double>(m) / static_cast<double>(n);
+      st.entropy += total(h * static_cast<double>(k)) / static_cast<double>(n);
       if (b == 0) st.grad_norm = norm;
     }
   }
 }
 
 void Trainer::vine_steps(double c_h, UpdateStats& st) {
-  if (branch_states_.empty()) return;
   const std::span<const double> values = policy_.action_values();
   const size_t k = values.size(), s = branch_states_.size(), n = s * k;
-  auto q = branch_returns(policy_, branch_states_, values, cfg_.gamma);
-  if (!q) return;
+  const double states = total(static_cast<double>(s)), all = states * static_cast<double>(k);
+  if (states == 0.0) return;
+  Result<std::vector<double>> q = std::vector<double>{};
+  if (s > 0) q = branch_returns(policy_, branch_states_, values, cfg_.gamma);
+  if (dist::any(!q)) return;
   const auto obs = static_cast<size_t>(envs_.obs_size());
   std::vector<float> rows(n * obs);
   std::vector<ActionSample> acts(n);
@@ -245,43 +272,38 @@ void Trainer::vine_steps(double c_h, UpdateStats& st) {
   std::vector<double> adv(n);
   double sd = 0.0;
   for (int e = 0; e < cfg_.epochs; ++e) {
-    policy_.log_probs(rows, static_cast<int>(n), acts, logp);
+    if (n > 0) policy_.log_probs(rows, static_cast<int>(n), acts, logp);
     for (size_t i = 0; i < s; ++i) {
       double base = 0.0;
       for (size_t j = 0; j < k; ++j) base += std::exp(static_cast<double>(logp[i * k + j])) * (*q)[i * k + j];
       for (size_t j = 0; j < k; ++j) adv[i * k + j] = (*q)[i * k + j] - base;
     }
     if (e == 0) {
-      for (double a : adv) sd += a * a / static_cast<double>(n);
-      sd = std::sqrt(sd) + 1e-8;
+      for (double a : adv) sd += a * a;
+      sd = std::sqrt(total(sd) / all) + 1e-8;
     }
     for (size_t i = 0; i < n; ++i)
-      coef[i] = static_cast<float>(std::exp(static_cast<double>(logp[i])) * adv[i] / sd / static_cast<double>(s));
+      coef[i] = static_cast<float>(std::exp(static_cast<double>(logp[i])) * adv[i] / sd / states);
     std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
-    const float h = policy_.accumulate_gradient(rows, static_cast<int>(n), acts, coef,
-                                                static_cast<float>(c_h / static_cast<double>(n)));
-    const double norm = adam_.step();
+    const float h = policy_.accumulate_gradient(rows, static_cast<int>(n), acts, coef, static_cast<float>(c_h / all));
+    const double norm = step_all();
     if (e > 0) continue;
-    st.entropy = h;
+    st.entropy = total(h * static_cast<double>(n)) / all;
     st.grad_norm = norm;
   }
 }
 
-UpdateStats Trainer::update(const UpdateProgress& progress) {
-  const int obs = envs_.obs_size();
+bool Trainer::collect(const UpdateProgress& progress) {
+  const auto obs = static_cast<size_t>(envs_.obs_size());
   const auto m = static_cast<uint64_t>(cfg_.episodes_per_update);
-  Rng rng(env::episode_seed(cfg_.seed ^ kTrainPolicySalt, static_cast<uint64_t>(updates_)));
-  batch_obs_.clear();
-  batch_samples_.clear();
-  batch_lengths_.clear();
-  for (auto& v : slot_obs_) v.clear();
-  for (auto& v : slot_samples_) v.clear();
-  envs_.completed().clear();
-  branch_states_.clear();
+  const dist::Share part = dist::share(m);
+  first_ = static_cast<uint64_t>(updates_) * m + part.first;
+  episodes_.assign(part.count, Episode{});
+  for (Episode& e : slot_episode_) e = Episode{};
+  EpisodeStreams policy_streams(cfg_.seed ^ kTrainPolicySalt), branch_streams(cfg_.seed ^ kBranchSalt);
   const bool vine = cfg_.estimator == "vine";
-  Rng branch_rng(env::episode_seed(cfg_.seed ^ kBranchSalt, static_cast<uint64_t>(updates_)));
-  envs_.start(cfg_.seed, static_cast<uint64_t>(updates_) * m, m);
-
+  envs_.completed().clear();
+  envs_.start(cfg_.seed, first_, part.count);
   std::vector<ActionSample> acts;
   std::vector<double> actions, rewards;
   std::vector<uint8_t> dones;
@@ -293,68 +315,99 @@ UpdateStats Trainer::update(const UpdateProgress& progress) {
     rewards.resize(n);
     dones.resize(n);
     const std::span<const float> o = envs_.observations();
-    policy_.act(o, static_cast<int>(n), slots, rng, false, acts);
+    policy_.act(o, static_cast<int>(n), slots, policy_streams.rows(envs_), false, acts);
+    policy_streams.keep(envs_);
+    const std::span<Rng> branch_rngs = vine ? branch_streams.rows(envs_) : std::span<Rng>();
     for (size_t r = 0; r < n; ++r) {
+      const auto s = static_cast<size_t>(slots[r]);
       actions[r] = acts[r].value;
-      auto& so = slot_obs_[static_cast<size_t>(slots[r])];
-      so.insert(so.end(), o.begin() + static_cast<long>(r * static_cast<size_t>(obs)),
-                o.begin() + static_cast<long>((r + 1) * static_cast<size_t>(obs)));
+      slot_index_[s] = envs_.env(slots[r]).stats().index;
+      auto& so = slot_episode_[s].obs;
+      so.insert(so.end(), o.begin() + static_cast<long>(r * obs), o.begin() + static_cast<long>((r + 1) * obs));
+      if (vine && branch_rngs[r].uniform() < cfg_.branch_fraction) slot_episode_[s].branches.push_back(envs_.env(slots[r]));
     }
-    for (size_t r = 0; vine && r < n; ++r)
-      if (branch_rng.uniform() < cfg_.branch_fraction) branch_states_.push_back(envs_.env(slots[r]));
+    if (vine) branch_streams.keep(envs_);
     envs_.step(actions, rewards, dones);
     for (size_t r = 0; r < n; ++r) {
       const auto s = static_cast<size_t>(slots[r]);
-      slot_samples_[s].push_back({acts[r], static_cast<float>(rewards[r])});
+      slot_episode_[s].samples.push_back({acts[r], static_cast<float>(rewards[r])});
       if (!dones[r]) continue;
-      batch_obs_.insert(batch_obs_.end(), slot_obs_[s].begin(), slot_obs_[s].end());
-      batch_samples_.insert(batch_samples_.end(), slot_samples_[s].begin(), slot_samples_[s].end());
-      batch_lengths_.push_back(static_cast<int>(slot_samples_[s].size()));
-      slot_obs_[s].clear();
-      slot_samples_[s].clear();
+      episodes_[slot_index_[s] - first_] = std::move(slot_episode_[s]);
+      slot_episode_[s] = Episode{};
     }
-    if (progress && !progress(static_cast<long long>(envs_.completed().size()))) {
-      UpdateStats stopped;
-      stopped.interrupted = true;
-      return stopped;
-    }
+    const auto done = static_cast<long long>(envs_.completed().size()) * dist::size();
+    if (progress && !progress(std::min(done, static_cast<long long>(m)))) return false;
   }
+  return true;
+}
 
+UpdateStats Trainer::update(const UpdateProgress& progress) {
+  const bool played = collect(progress);
+  batch_obs_.clear();
+  batch_samples_.clear();
+  batch_lengths_.clear();
+  branch_states_.clear();
+  for (Episode& e : episodes_) {
+    batch_obs_.insert(batch_obs_.end(), e.obs.begin(), e.obs.end());
+    batch_samples_.insert(batch_samples_.end(), e.samples.begin(), e.samples.end());
+    if (!e.samples.empty()) batch_lengths_.push_back(static_cast<int>(e.samples.size()));
+    for (auto& b : e.branches) branch_states_.push_back(std::move(b));
+  }
+  // One sum over the ranks: [stopped, episodes, return, success, samples per rank...].
+  const auto ranks = static_cast<size_t>(dist::size());
+  std::vector<double> sums(4 + ranks, 0.0);
+  sums[0] = played ? 0.0 : 1.0;
+  sums[1] = static_cast<double>(envs_.completed().size());
+  for (const auto& e : envs_.completed()) {
+    sums[2] += e.total_reward;
+    sums[3] += e.success;
+  }
+  sums[4 + static_cast<size_t>(dist::rank())] = static_cast<double>(batch_samples_.size());
+  dist::sum(sums);
+  if (sums[0] > 0.0) {
+    UpdateStats stopped;
+    stopped.interrupted = true;
+    return stopped;
+  }
   UpdateStats st;
-  const auto& eps = envs_.completed();
-  st.episodes = static_cast<long long>(eps.size());
-  for (const auto& e : eps) {
-    st.mean_return += e.total_reward;
-    st.success_rate += e.success;
-  }
+  st.episodes = static_cast<long long>(sums[1]);
   if (st.episodes > 0) {
-    st.mean_return /= static_cast<double>(st.episodes);
-    st.success_rate /= static_cast<double>(st.episodes);
+    st.mean_return = sums[2] / sums[1];
+    st.success_rate = sums[3] / sums[1];
   }
-  st.samples = static_cast<int>(batch_samples_.size());
+  samples_ = 0;
+  offset_ = 0;
+  for (size_t r = 0; r < ranks; ++r) {
+    if (r == static_cast<size_t>(dist::rank())) offset_ = samples_;
+    samples_ += static_cast<long long>(sums[4 + r]);
+  }
+  st.samples = static_cast<int>(samples_);
   ++updates_;
   if (st.samples == 0) return st;
 
-  const double total = std::max(1.0, static_cast<double>(cfg_.episodes) / static_cast<double>(m));
-  const double frac = std::min(1.0, static_cast<double>(updates_ - 1) / total);
+  const auto m = static_cast<double>(cfg_.episodes_per_update);
+  const double span = std::max(1.0, static_cast<double>(cfg_.episodes) / m);
+  const double frac = std::min(1.0, static_cast<double>(updates_ - 1) / span);
   const double c_h = cfg_.entropy_coef + (cfg_.entropy_final.value_or(cfg_.entropy_coef) - cfg_.entropy_coef) * frac;
   adam_.config().lr = static_cast<float>(cfg_.lr + (cfg_.lr_final - cfg_.lr) * frac);
-  if (vine) {
+  if (cfg_.estimator == "vine") {
     vine_steps(c_h, st);
     return st;
   }
   std::vector<float> coef;
   st.value_loss = coefficients(coef);
-  std::vector<ActionSample> batch_acts(batch_samples_.size());
-  for (size_t i = 0; i < batch_samples_.size(); ++i) batch_acts[i] = batch_samples_[i].action;
+  const size_t local = batch_samples_.size();
+  std::vector<ActionSample> batch_acts(local);
+  for (size_t i = 0; i < local; ++i) batch_acts[i] = batch_samples_[i].action;
   if (cfg_.estimator == "ppo") {
     clipped_steps(coef, batch_acts, c_h, st);
     return st;
   }
-  const float ent = cfg_.estimator == "vpg" ? 0.0f : static_cast<float>(c_h / st.samples);
+  const float ent = cfg_.estimator == "vpg" ? 0.0f : static_cast<float>(c_h / static_cast<double>(samples_));
   std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
-  st.entropy = policy_.accumulate_gradient(batch_obs_, st.samples, batch_acts, coef, ent);
-  st.grad_norm = adam_.step();
+  const float h = policy_.accumulate_gradient(batch_obs_, static_cast<int>(local), batch_acts, coef, ent);
+  st.entropy = total(h * static_cast<double>(local)) / static_cast<double>(samples_);
+  st.grad_norm = step_all();
   return st;
 }
 

@@ -34,9 +34,19 @@
 // over the run's updates, like the step size.
 // Episodes that end without any agent step contribute no sample. The Adam
 // step size falls linearly from lr to lr_final over the run's updates.
-// Policy samples of update u come from Rng(episode_seed(seed ^ salt, u)), and
-// the batch of update u is episodes [u M, (u+1) M) of the seed, so a run
-// resumed from a checkpoint continues exactly as an uninterrupted one.
+// The batch of update u is episodes [u M, (u+1) M) of the seed, ordered by
+// episode number; episode k's policy samples (and vine's branch draws) come
+// from its own stream Rng(episode_seed(seed ^ salt, k)) (episode_streams.h),
+// ppo's shuffle of update u from Rng(episode_seed(seed ^ salt, u)). So a run
+// resumed from a checkpoint continues exactly as an uninterrupted one, and
+// the batch does not depend on num_envs.
+// Data-parallel (dist/comm.h): each rank plays its share dist::share(M) of
+// the batch's episodes; every sum over the batch (the gradients, the value
+// baseline's gradients, the advantages' mean and variance, the mean return,
+// entropy, sample counts) runs over all ranks' samples, N is the whole
+// batch's, ppo's minibatches are drawn from the whole batch's sample order,
+// and every rank takes the same Adam step. Every rank must start from the
+// same parameters and learner state; they then stay identical.
 #pragma once
 
 #include <cstdint>
@@ -99,8 +109,10 @@ struct UpdateStats {
 };
 
 // Called during an update's collection with the episodes finished so far in
-// its batch; returning false abandons the batch (no step, updates() unchanged,
-// so the next update() redoes the same batch exactly).
+// its batch (in a job of several ranks: this rank's count times the number of
+// ranks, at most M); returning false abandons the batch (no step, updates()
+// unchanged, so the next update() redoes the same batch exactly). In a job of
+// several ranks, one rank's false abandons the batch on every rank.
 using UpdateProgress = std::function<bool(long long done_in_batch)>;
 
 class Trainer {
@@ -127,6 +139,16 @@ class Trainer {
     ActionSample action;
     float reward = 0.0f;
   };
+  // One episode of this rank's share: its agent steps in order.
+  struct Episode {
+    std::vector<float> obs;  // [T, obs]
+    std::vector<Sample> samples;
+    std::vector<env::HorizontalCrEnv> branches;  // vine: snapshots before branched agent steps
+  };
+  // Plays this rank's share of the batch into episodes_; false when `progress` stopped it.
+  bool collect(const UpdateProgress& progress);
+  // Sums the policy gradients over the ranks and takes the Adam step; returns the norm.
+  double step_all();
   // Fills coef (one per batch sample) for the estimator; returns the value loss.
   double coefficients(std::vector<float>& coef);
   // Advantages A_t (before normalisation) from the value MLP's v = V(s_t) and
@@ -151,14 +173,20 @@ class Trainer {
   std::unique_ptr<nn::Mlp> value_;
   std::vector<float> value_params_, value_grads_;
   std::unique_ptr<nn::Adam> value_adam_;
-  // Per slot: the running episode's observations [T, obs] and samples.
-  std::vector<std::vector<float>> slot_obs_;
-  std::vector<std::vector<Sample>> slot_samples_;
-  // The batch: finished episodes, concatenated.
+  // Per slot: the running episode and its number.
+  std::vector<Episode> slot_episode_;
+  std::vector<uint64_t> slot_index_;
+  // This rank's share of the batch: episode first_ + i in episodes_[i].
+  uint64_t first_ = 0;
+  std::vector<Episode> episodes_;
+  // The share's finished episodes, concatenated in episode order.
   std::vector<float> batch_obs_;
   std::vector<Sample> batch_samples_;
   std::vector<int> batch_lengths_;
-  std::vector<env::HorizontalCrEnv> branch_states_;  // vine: snapshots before agent steps
+  std::vector<env::HorizontalCrEnv> branch_states_;  // vine
+  // The whole batch (all ranks): its sample count N, and the index of this
+  // rank's first sample in the batch's sample order.
+  long long samples_ = 0, offset_ = 0;
 };
 
 }  // namespace squawk::rl

@@ -349,7 +349,7 @@ class HoldTeacher : public rl::Policy {
   explicit HoldTeacher(bool discrete) : values_(discrete ? std::vector<double>{-1, -0.5, 0, 0.5, 1} : std::vector<double>{}) {}
   std::string name() const override { return "hold"; }
   int obs_size() const override { return 28; }
-  void act(std::span<const float>, int n, std::span<const int>, Rng&, bool, std::span<rl::ActionSample> out) override {
+  void act(std::span<const float>, int n, std::span<const int>, std::span<Rng>, bool, std::span<rl::ActionSample> out) override {
     for (int r = 0; r < n; ++r) out[static_cast<size_t>(r)] = {values_.empty() ? -1 : 2, 0.0f};
   }
   std::span<const double> action_values() const override { return values_; }
@@ -362,7 +362,7 @@ int greedy_holds(rl::PromptPolicy& p, const std::vector<float>& rows, int n) {
   std::vector<rl::ActionSample> a(static_cast<size_t>(n));
   const std::vector<int> slots(static_cast<size_t>(n), 0);
   Rng rng(1);
-  p.act(rows, n, slots, rng, true, a);
+  p.act(rows, n, slots, {&rng, 1}, true, a);
   return static_cast<int>(std::count_if(a.begin(), a.end(), [](const rl::ActionSample& s) { return s.index == 2; }));
 }
 }  // namespace

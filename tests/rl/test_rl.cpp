@@ -388,7 +388,7 @@ TEST_CASE("the turn-hold rule turns only while flying at the waypoint") {
   obs[28 + 5] = 0.99f;       // row 1: about 8 deg off track
   std::vector<rl::ActionSample> out(2);
   Rng rng(1);
-  rule.act(obs, 2, std::vector<int>{0, 1}, rng, false, out);
+  rule.act(obs, 2, std::vector<int>{0, 1}, {&rng, 1}, false, out);
   CHECK(out[0].value == 0.5f);
   CHECK(out[1].value == 0.0f);
   // In the paper setup it turns once per conflict and then holds: far more
