@@ -137,8 +137,8 @@ void run_charged(lua_State* L, command::Stack& s, double t_end) {
 int l_new(lua_State* L) {
   const bool opts = lua_istable(L, 1);
   if (!opts && !lua_isnoneornil(L, 1)) throw ArgError(type_error(L, 1, "options", "table or nil"));
-  const long long seed = opts ? static_cast<long long>(field_number(L, 1, "seed", 0)) : 0;
-  if (seed < 0) throw ArgError("seed must be >= 0");
+  // Whole numbers a double holds exactly (NaN and fractions refused).
+  const long long seed = opts ? field_count(L, 1, "seed", 0, 0, 1LL << 53) : 0;
   std::string nav = Vm::of(L).options().navdata_dir;
   if (opts) nav = field_string(L, 1, "navdata", nav);
   std::shared_ptr<const command::NavDb> db;
