@@ -63,6 +63,15 @@ expect "17 install layout"   0 "home=$tmp/inst/share/squawk" -- "$tmp/inst/bin/s
 cp "$sq" "$tmp/copy/squawk"
 expect "17 SQUAWK_HOME"      0 "^ok$" -- env SQUAWK_HOME="$tmp/inst/share/squawk" "$tmp/copy/squawk" run "$tmp/inst/share/squawk/scripts/home_check.lua"
 rm -rf "$tmp"
+# 52 point 2: the REPL's session module (a home's scripts/translate/repl.lua)
+# raising when C++ reads it: clean messages, the REPL goes on, no panic.
+tmp=$(mktemp -d)
+cp -r scripts "$tmp/"
+cp "$d/hostile_repl_module.lua" "$tmp/scripts/translate/repl.lua"
+expect "52 repl module raises" 1 "the translator did not load \(translate.repl.new: reading field 'new': \(error object is a table value\)\)" -- env SQUAWK_HOME="$tmp" "$sq" repl
+cp "$d/hostile_repl_session.lua" "$tmp/scripts/translate/repl.lua"
+expect "52 repl session raises" 1 "session:handle: reading field 'handle': \(error object is a table value\)" -- env SQUAWK_HOME="$tmp" bash -c 'echo "KL1 climb FL300" | "$0" repl' "$sq"
+rm -rf "$tmp"
 # 16: a checkpoint that failed to save (full disk) after its log row was
 # written: --resume drops the row instead of repeating it.
 tmp=$(mktemp -d)
