@@ -45,11 +45,24 @@ local H = {
   function(k) return setmetatable({}, {__len = function() return math.maxinteger end}) end,
 }
 local function V(h, k) return H[h % #H + 1](k) end
+-- squawk.rag.index reads `notes` and `docs`, then indexes the whole command
+-- registry (no boundary code; it took a third of the run): through this
+-- proxy `docs` gets one more entry, not a table, so the call fails after
+-- every read of t.
+local function no_build(t)
+  return setmetatable({}, {__index = function(_, k)
+    local v = t[k]
+    if k ~= 'docs' or (v ~= nil and type(v) ~= 'table') then return v end
+    local n = v and #v or 0
+    return setmetatable({}, {__len = function() return n + 1 end,
+                             __index = function(_, i) if i <= n then return v[i] end return 0 end})
+  end})
+end
 local sim, sim_used = squawk.sim.new{}, false
 local entries = {
   function(t, u) return squawk.sim.new(t) end,
   function(t, u) return squawk.env.evaluate(t) end,
-  function(t, u) return squawk.rag.index(t) end,
+  function(t, u) return squawk.rag.index(no_build(t)) end,
   function(t, u) return squawk.llm.client(t) end,
   function(t, u) return squawk.translate.tables(t, u) end,
   function(t, u) return squawk.translate.utterance('KL1 climb FL300', t, u) end,
