@@ -341,7 +341,7 @@ const std::vector<Subcommand>& subcommands() {
        "                    [--eval-every N] [--eval-episodes N] [--validation-seed N]\n"
        "                    [--resume [--override] | --force] [--quiet] [--max-instructions N]\n"
        "                    [--max-seconds S] [--max-memory MB] [--navdata DIR] [--allow-read DIRS]\n"
-       "                    [--unsafe]\n"
+       "                    [--max-conflict-pairs N] [--unsafe]\n"
        "       squawk train --out DIR --resume\n"
        "       squawk train SCENARIO.lua --out DIR --policy gpt2 [--model tiny|DIR]\n"
        "                    [--model-seed N] [--prompt FILE] [--head action|lm] [--blocks K]\n"
