@@ -108,7 +108,8 @@
       items.push(`<li class="${cls}" data-ids="${esc(c.ids.join(" "))}"><b>${esc(c.ids.join(" – "))}</b> ` +
         `LoS ${t > 0 ? "in " + mmss(t) : "now"}  CPA ${c.dcpa_nm.toFixed(1)} NM ${c.tcpa_s > 0 ? "in " + mmss(c.tcpa_s) : "passed"}</li>`);
     }
-    $("conflicts").innerHTML = items.length ? items.join("") : `<li class="none">none</li>`;
+    const cap = s.conflict_cap ? `<li class="cap">${esc(s.conflict_cap)}</li>` : "";
+    $("conflicts").innerHTML = cap + (items.length ? items.join("") : `<li class="none">none</li>`);
     $("conflict-count").textContent = items.length ? String(items.length) : "";
   }
 

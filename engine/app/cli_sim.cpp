@@ -60,6 +60,7 @@ int run_one(const std::string& file, const Args& args, const command::ScenarioRu
     const long failed = command::total_count(r->tally.failed);
     if (failed > static_cast<long>(r->tally.first_failures.size()))
       std::fprintf(stderr, "(%ld failures in all)\n", failed);
+    if (!r->cap_notice.empty()) std::fprintf(stderr, "note: %s\n", r->cap_notice.c_str());
     std::printf("%s\n", final_state_json(stack).c_str());
     return r->tally.failed.empty() ? kExitOk : kExitFail;
   }
@@ -71,6 +72,7 @@ int run_one(const std::string& file, const Args& args, const command::ScenarioRu
   print_counts("failed, by reason", r->tally.failed);
   std::printf("aircraft: %d; conflicts: %lld; losses of separation: %lld\n", r->aircraft,
               static_cast<long long>(r->conflicts), static_cast<long long>(r->los));
+  if (!r->cap_notice.empty()) std::printf("note: %s\n", r->cap_notice.c_str());
   return r->tally.failed.empty() ? kExitOk : kExitFail;
 }
 
@@ -78,7 +80,7 @@ int run_one(const std::string& file, const Args& args, const command::ScenarioRu
 
 int cmd_scn(const ArgV& argv) {
   Args::Spec spec;
-  spec.value_flags = {"--until", "--navdata", "--seed", "--max-time", "--max-sim-time"};
+  spec.value_flags = {"--until", "--navdata", "--seed", "--max-time", "--max-sim-time", "--max-conflict-pairs"};
   spec.bool_flags = {"--dump-json", "--conformance"};
   auto args = Args::parse(argv, spec);
   if (!args) return usage_error("scn", args.status().message());
@@ -98,6 +100,9 @@ int cmd_scn(const ArgV& argv) {
   auto seed = args->get_int("--seed", 0);
   if (!seed || *seed < 0) return usage_error("scn", "--seed expects an integer >= 0");
   opts.seed = static_cast<uint64_t>(*seed);
+  auto cap = args->get_int("--max-conflict-pairs", opts.max_conflict_pairs);
+  if (!cap || *cap < 1) return usage_error("scn", "--max-conflict-pairs expects a count >= 1");
+  opts.max_conflict_pairs = *cap;
   auto db = navdb_from(*args);
   if (!db) return failure(db.status());
   opts.navdb = *db;

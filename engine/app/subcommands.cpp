@@ -6,9 +6,11 @@
 // GPT-2 policy flags of eval, table3 and gpt2 imitate: appended to their help.
 #define SQUAWK_VM_FLAGS_HELP                                                              \
   "\nScript flags: --seed N (the engine RNG), --max-instructions N, --max-seconds S and\n" \
-  "--max-memory MB (Lua caps; memory default 1024, 0 = none), --navdata DIR (BlueSky\n"   \
-  "navdata), --allow-read DIR[:DIR...] (more folders scripts may read), --out DIR (the\n"   \
-  "folder scripts may write), --unsafe (no sandbox); docs/sandbox.md has the details.\n"
+  "--max-memory MB (Lua caps; memory default 1024, 0 = none), --max-conflict-pairs N\n" \
+  "(conflict pairs a simulation stores per detection, default 100000; repl and serve\n"  \
+  "say when it is hit), --navdata DIR (BlueSky navdata), --allow-read DIR[:DIR...]\n"  \
+  "(more folders scripts may read), --out DIR (the folder scripts may write), --unsafe\n" \
+  "(no sandbox); docs/sandbox.md has the details.\n"
 #define SQUAWK_GPT2_FLAGS_HELP                                                            \
   "\nGPT-2 policy flags: --model tiny|DIR, --model-seed N (tiny's random init), --prompt\n" \
   "FILE, --head action|lm, --blocks K (trainable last blocks), --chunk N (rows per\n"   \
@@ -283,6 +285,7 @@ const std::vector<Subcommand>& subcommands() {
       {"scn", "scn FILE.scn               run a BlueSky scenario headless and summarise it",
        "usage: squawk scn FILE.scn [--until SECONDS] [--navdata DIR] [--dump-json] [--seed N]\n"
        "                           [--max-time SECONDS] [--max-sim-time SECONDS]\n"
+       "                           [--max-conflict-pairs N]\n"
        "       squawk scn DIR --conformance [--max-sim-time SECONDS] [--navdata DIR]\n\n"
        "Loads a BlueSky scenario file and runs it without display until every timed\n"
        "command has run (at most --max-sim-time, default 3600 s of sim time) or until\n"
@@ -300,6 +303,8 @@ const std::vector<Subcommand>& subcommands() {
        "                  (default 600; 0 = no limit)\n"
        "  --max-sim-time S  without --until, stop at S seconds of sim time even if\n"
        "                  commands are still queued (default 3600)\n"
+       "  --max-conflict-pairs N  conflict (and LoS) pairs stored per detection\n"
+       "                  (default 100000); when detections hit it the summary says so\n"
        "  --conformance   run every file under DIR and print Markdown tables of the\n"
        "                  totals, skipped commands and failure reasons\n",
        cmd_scn},
@@ -356,7 +361,7 @@ const std::vector<Subcommand>& subcommands() {
        "                    [--eval-every N] [--eval-episodes N] [--validation-seed N]\n"
        "                    [--resume [--override] | --force] [--quiet] [--max-instructions N]\n"
        "                    [--max-seconds S] [--max-memory MB] [--navdata DIR] [--allow-read DIRS]\n"
-       "                    [--unsafe]\n"
+       "                    [--max-conflict-pairs N] [--unsafe]\n"
        "       squawk train --out DIR --resume\n"
        "       squawk train SCENARIO.lua --out DIR --policy gpt2 [--model tiny|DIR]\n"
        "                    [--model-seed N] [--prompt FILE] [--head action|lm] [--blocks K]\n"

@@ -10,8 +10,8 @@
 namespace squawk::app {
 
 Args::Spec with_vm_flags(Args::Spec spec) {
-  for (const char* f : {"--seed", "--out", "--max-instructions", "--max-seconds", "--max-memory", "--navdata",
-                        "--allow-read"})
+  for (const char* f : {"--seed", "--out", "--max-instructions", "--max-seconds", "--max-memory",
+                        "--max-conflict-pairs", "--navdata", "--allow-read"})
     spec.value_flags.emplace_back(f);
   spec.bool_flags.emplace_back("--unsafe");
   return spec;
@@ -39,6 +39,11 @@ Result<script::VmOptions> vm_options(const Args& args) {
   if (*maxm < 0 || *maxm > (1LL << 30))
     return Status::invalid("flag --max-memory expects MiB in [0, 2^30] (0 = no limit), got " + std::to_string(*maxm));
   o.max_memory = *maxm << 20;
+  auto cap = args.get_int("--max-conflict-pairs", o.max_conflict_pairs);
+  if (!cap) return cap.status();
+  if (*cap < 1)
+    return Status::invalid("flag --max-conflict-pairs expects a count >= 1, got " + std::to_string(*cap));
+  o.max_conflict_pairs = *cap;
   o.unsafe = args.has("--unsafe");
   if (auto out = args.get("--out")) {
     SQUAWK_RETURN_IF_ERROR(files::make_dirs(*out));

@@ -16,6 +16,7 @@ Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRu
   const auto t0 = std::chrono::steady_clock::now();
   stack = Stack(opts.seed);
   if (opts.openap) stack.sim().set_openap(*opts.openap);
+  SQUAWK_RETURN_IF_ERROR(stack.sim().set_cd_max_pairs(opts.max_conflict_pairs));
   stack.set_navdb(opts.navdb);
   stack.set_base_dir(paths::dirname(path));
   if (opts.max_wall_s > 0)
@@ -52,6 +53,7 @@ Result<ScenarioRunResult> run_scenario(const std::string& path, const ScenarioRu
   r.aircraft = stack.sim().n();
   r.conflicts = stack.sim().cd().total_conflicts();
   r.los = stack.sim().cd().total_los();
+  r.cap_notice = sim::cap_notice(stack.sim().cd(), stack.sim().cd_settings().max_pairs);
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

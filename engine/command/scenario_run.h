@@ -19,6 +19,7 @@ struct ScenarioRunOptions {
   double max_wall_s = 600.0;     // [s] wall-clock cap on the whole run, 0 = none (--max-time)
   std::shared_ptr<const NavDb> navdb;  // may be null
   uint64_t seed = 0;
+  int64_t max_conflict_pairs = sim::CdSettings{}.max_pairs;  // pairs stored per detection (--max-conflict-pairs)
   // Performance data: unset, the process default (SQUAWK_OPENAP / --openap);
   // set, that data (null: squawk's class model).
   std::optional<std::shared_ptr<const sim::OpenapData>> openap;
@@ -30,6 +31,7 @@ struct ScenarioRunResult {
   int aircraft = 0;       // aircraft at the end
   int64_t conflicts = 0;  // conflict pairs entered (when detection was on)
   int64_t los = 0;        // losses of separation entered
+  std::string cap_notice;  // sim::cap_notice: "" unless detections hit max_conflict_pairs
   double wall_s = 0.0;    // [s] wall-clock time of the run
 };
 

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <deque>
 #include <filesystem>
 
@@ -144,6 +145,45 @@ Status PathRules::check_write(const std::string& path, std::string_view what) co
     return Status::invalid(head + (*r != path ? "it leads to '" + *r + "', " : std::string()) +
                            "outside the output folder '" + write_given_ + "'");
   return Status::ok();
+}
+
+namespace {
+
+// The path descriptor `fd` was opened as ("" when it has none: a deleted
+// file, a pipe or socket, no /proc).
+std::string fd_path(int fd) {
+  char link[64], target[4096];
+  std::snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
+  const ssize_t n = ::readlink(link, target, sizeof target - 1);
+  if (n <= 0) return "";
+  target[n] = '\0';
+  const std::string out(target, static_cast<size_t>(n));
+  if (out[0] != '/' || out.ends_with(" (deleted)")) return "";
+  return out;
+}
+
+}  // namespace
+
+Status PathRules::check_read_fd(int fd, const std::string& shown, std::string_view what) const {
+  if (all_) return Status::ok();
+  const std::string real = fd_path(fd);
+  if (real.empty())
+    return Status::invalid(std::string(what) + " '" + shown + "': reading it is not allowed: the file opened has no path");
+  const Status st = check_read(real, what);
+  if (st.is_ok()) return st;
+  return Status::invalid(std::string(what) + " '" + shown + "': reading it is not allowed: the file opened is '" + real +
+                         "' (a link changed after the check)");
+}
+
+Status PathRules::check_write_fd(int fd, const std::string& shown, std::string_view what) const {
+  if (all_) return Status::ok();
+  const std::string real = fd_path(fd);
+  if (real.empty())
+    return Status::invalid(std::string(what) + " '" + shown + "': writing it is not allowed: the file opened has no path");
+  const Status st = check_write(real, what);
+  if (st.is_ok()) return st;
+  return Status::invalid(std::string(what) + " '" + shown + "': writing it is not allowed: the file opened is '" + real +
+                         "' (a link changed after the check)");
 }
 
 }  // namespace squawk::paths

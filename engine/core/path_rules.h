@@ -47,6 +47,13 @@ class PathRules {
   // Ok when `path` may be created or written; else an error naming `what`,
   // the path and the output folder (--out DIR).
   Status check_write(const std::string& path, std::string_view what) const;
+  // The read / write check on the file open descriptor `fd` refers to (the
+  // path the kernel resolved when it was opened, read from /proc/self/fd):
+  // run after opening a checked path, it refuses a file reached through a
+  // link swapped in between the check by name and the open. `shown` is the
+  // name in the error; a deleted file and an fd without a path are refused.
+  Status check_read_fd(int fd, const std::string& shown, std::string_view what) const;
+  Status check_write_fd(int fd, const std::string& shown, std::string_view what) const;
 
   bool unrestricted_all() const { return all_; }
   // The readable folders, resolved.

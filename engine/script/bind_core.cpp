@@ -58,7 +58,7 @@ int l_check(lua_State* L) {
 }
 
 int l_check_eq(lua_State* L) {
-  const bool ok = lua_compare(L, 1, 2, LUA_OPEQ) != 0;
+  const bool ok = equal(L, 1, 2);
   report(L, ok, "got " + show(L, 1) + ", want " + show(L, 2), 3);
   lua_pushboolean(L, ok);
   return 1;

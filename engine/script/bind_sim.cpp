@@ -22,7 +22,8 @@
 //   sim:get(acid)        -> one such table, or nil
 //   sim:conflicts()      -> { {own=, intruder=, tcpa=, tlos= [s], dcpa_nm=, dist_nm=}, ... }
 //   sim:los()            -> { {own=, intruder=, dist_nm=, dalt_ft=}, ... }
-//   sim:totals()         -> {conflicts=, los=}  (pairs entered since reset)
+//   sim:totals()         -> {conflicts=, los=, capped=}  (pairs entered since reset;
+//                           capped: sim::cap_notice when detections hit the cap)
 //   sim:output()         -> { line, ... }     (ECHO / queued failures since last call)
 //   sim:tally()          -> {executed=, skipped=, failed=, first_failures={...},
 //                            failed_by_reason={[reason]=n}}  (scenario commands since IC)
@@ -148,8 +149,8 @@ void run_charged(lua_State* L, command::Stack& s, double t_end) {
 int l_new(lua_State* L) {
   const bool opts = lua_istable(L, 1);
   if (!opts && !lua_isnoneornil(L, 1)) throw ArgError(type_error(L, 1, "options", "table or nil"));
-  const long long seed = opts ? static_cast<long long>(field_number(L, 1, "seed", 0)) : 0;
-  if (seed < 0) throw ArgError("seed must be >= 0");
+  // Whole numbers a double holds exactly (NaN and fractions refused).
+  const long long seed = opts ? field_count(L, 1, "seed", 0, 0, 1LL << 53) : 0;
   std::string nav = Vm::of(L).options().navdata_dir;
   if (opts) nav = field_string(L, 1, "navdata", nav);
   std::shared_ptr<const command::NavDb> db;
@@ -164,6 +165,7 @@ int l_new(lua_State* L) {
   s->set_navdb(std::move(db));
   s->set_base_dir(dir);
   s->set_path_rules(&Vm::of(L).rules());  // the Vm outlives the sim (its userdata dies with the state)
+  check_status(s->sim().set_cd_max_pairs(Vm::of(L).options().max_conflict_pairs));
   return 1;
 }
 
@@ -294,11 +296,13 @@ int l_los(lua_State* L) {
 
 int l_totals(lua_State* L) {
   const sim::Simulation& s = self(L)->sim();
-  lua_createtable(L, 0, 2);
+  lua_createtable(L, 0, 3);
   lua_pushinteger(L, s.cd().total_conflicts());
   lua_setfield(L, -2, "conflicts");
   lua_pushinteger(L, s.cd().total_los());
   lua_setfield(L, -2, "los");
+  const std::string capped = sim::cap_notice(s.cd(), s.cd_settings().max_pairs);
+  if (!capped.empty()) set_string(L, "capped", capped);
   return 1;
 }
 

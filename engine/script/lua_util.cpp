@@ -101,6 +101,11 @@ int len_op(lua_State* L) {  // (v) -> #v as an integer
   return 1;
 }
 
+int eq_op(lua_State* L) {  // (a, b) -> a == b
+  lua_pushboolean(L, lua_compare(L, 1, 2, LUA_OPEQ));
+  return 1;
+}
+
 int tolstring_op(lua_State* L) {  // (v) -> tostring(v)
   luaL_tolstring(L, 1, nullptr);
   return 1;
@@ -173,6 +178,17 @@ lua_Integer length(lua_State* L, int idx) {
   const lua_Integer n = lua_tointeger(L, -1);
   lua_pop(L, 1);
   return n;
+}
+
+bool equal(lua_State* L, int a, int b) {
+  if (lua_isnone(L, a) || lua_isnone(L, b)) return false;  // as lua_compare
+  if (lua_rawequal(L, a, b)) return true;                   // Lua runs no __eq then either
+  a = lua_absindex(L, a);
+  lua_pushvalue(L, b);
+  protected_op(L, eq_op, a, true, "comparing with ==");
+  const bool eq = lua_toboolean(L, -1) != 0;
+  lua_pop(L, 1);
+  return eq;
 }
 
 const char* to_text(lua_State* L, int idx, size_t* len) {

@@ -77,6 +77,7 @@ std::string error_text(lua_State* L, int idx);
 int get_field(lua_State* L, int idx, const char* key);  // lua_getfield
 int get_index(lua_State* L, int idx, lua_Integer i);   // lua_geti
 lua_Integer length(lua_State* L, int idx);              // luaL_len
+bool equal(lua_State* L, int a, int b);                 // lua_compare(.., LUA_OPEQ): runs __eq
 // luaL_tolstring: pushes the value's text and returns it.
 const char* to_text(lua_State* L, int idx, size_t* len);
 

@@ -2,6 +2,8 @@
 
 #include <lua.hpp>
 
+#include "script/lua_util.h"
+
 namespace squawk::script {
 
 namespace {
@@ -18,7 +20,12 @@ Status push_new_session(Vm& vm, const char* module, const std::string& scenario,
   lua_getglobal(L, "require");
   lua_pushstring(L, module);
   SQUAWK_RETURN_IF_ERROR(vm.pcall(1, 1));
-  lua_getfield(L, -1, "new");
+  // The module's fields are read like any script table's (protected).
+  if (Status st = catch_arg_errors(L, std::string(module) + ".new: ", [&] { get_field(L, -1, "new"); });
+      !st.is_ok()) {
+    lua_settop(L, top);
+    return st;
+  }
   lua_createtable(L, 0, 4);
   if (!scenario.empty()) {
     lua_pushstring(L, scenario.c_str());
@@ -55,8 +62,14 @@ Result<ReplSession> ReplSession::open(Vm& vm, const std::string& scenario, const
 
 Status ReplSession::call(const char* method, int nargs, int nresults) {
   lua_State* L = vm_->state();
+  const int base = lua_gettop(L) - nargs;
   lua_getfield(L, LUA_REGISTRYINDEX, kSessionKey);
-  lua_getfield(L, -1, method);
+  const Status found = catch_arg_errors(L, std::string(kModule) + " session:" + method + ": ",
+                                        [&] { get_field(L, -1, method); });
+  if (!found.is_ok()) {
+    lua_settop(L, base);
+    return found;
+  }
   lua_insert(L, -2);                  // method, session
   lua_rotate(L, -2 - nargs, 2);       // method, session, args...
   return vm_->pcall(nargs + 1, nresults);
@@ -105,15 +118,17 @@ Result<std::vector<std::string>> ReplSession::complete(const std::string& prefix
   lua_pushlstring(L, prefix.data(), prefix.size());
   SQUAWK_RETURN_IF_ERROR(call("complete", 1, 1));
   std::vector<std::string> words;
-  if (lua_istable(L, -1)) {
-    const lua_Integer n = luaL_len(L, -1);
+  const Status read = catch_arg_errors(L, std::string(kModule) + " session:complete(): ", [&] {
+    if (!lua_istable(L, -1)) return;
+    const lua_Integer n = length(L, -1);
     for (lua_Integer k = 1; k <= n; ++k) {
-      lua_geti(L, -1, k);
+      get_index(L, -1, k);
       if (const char* w = lua_tostring(L, -1)) words.emplace_back(w);
       lua_pop(L, 1);
     }
-  }
+  });
   lua_settop(L, top);
+  if (!read.is_ok()) return read;
   return words;
 }
 

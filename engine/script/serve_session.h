@@ -63,6 +63,9 @@ class ServeSession {
 
  private:
   ServeSession(Vm& vm, command::Stack* stack) : vm_(&vm), stack_(stack) {}
+  // Pushes session.<method> and the session (protected read); on error the
+  // stack is as it was.
+  Status push_method(const char* method);
   Vm* vm_;
   command::Stack* stack_;
 };

@@ -70,7 +70,31 @@ void check_file_access(lua_State* L, const char* path, const char* mode) {
   if (msg[0]) luaL_error(L, "%s", msg);
 }
 
-// io.open(path, mode) through check_file_access; upvalue 1 is the original.
+// The check again on what was opened: each file handle among the values
+// from `first` to the top must be the file the check allowed (a link swapped
+// between the check by name and the open leads elsewhere); such a handle is
+// closed and the sandbox's error raised.
+void check_opened(lua_State* L, int first, const char* path, bool write) {
+  char msg[1024] = "";  // no C++ object may live across luaL_error's longjmp
+  for (int i = first; i <= lua_gettop(L); ++i) {
+    auto* stream = static_cast<luaL_Stream*>(luaL_testudata(L, i, LUA_FILEHANDLE));
+    if (!stream || !stream->closef || !stream->f) continue;
+    {
+      const paths::PathRules& rules = Vm::of(L).rules();
+      const int fd = fileno(stream->f);
+      const Status st = write ? rules.check_write_fd(fd, path, "io.open") : rules.check_read_fd(fd, path, "io.open");
+      if (!st.is_ok()) std::snprintf(msg, sizeof msg, "%s", st.message().c_str());
+    }
+    if (msg[0]) {
+      std::fclose(stream->f);
+      stream->closef = nullptr;  // the io library's mark of a closed handle
+      luaL_error(L, "%s", msg);
+    }
+  }
+}
+
+// io.open(path, mode) through check_file_access, then check_opened;
+// upvalue 1 is the original.
 int checked_open(lua_State* L) {
   const char* path = luaL_checkstring(L, 1);
   const char* mode = luaL_optstring(L, 2, "r");
@@ -81,18 +105,21 @@ int checked_open(lua_State* L) {
   lua_pushvalue(L, 1);
   lua_pushstring(L, mode);
   lua_call(L, 2, LUA_MULTRET);
+  check_opened(L, base + 1, path, std::strpbrk(mode, "wa+") != nullptr);
   return lua_gettop(L) - base;
 }
 
-// io.lines(path, ...) and io.input(path): reads of a named file are checked;
-// upvalue 1 is the original.
+// io.lines(path, ...) and io.input(path): reads of a named file are checked
+// (before and after opening); upvalue 1 is the original.
 int checked_read(lua_State* L) {
-  if (lua_type(L, 1) == LUA_TSTRING) check_file_access(L, lua_tostring(L, 1), "r");
+  const char* path = lua_type(L, 1) == LUA_TSTRING ? lua_tostring(L, 1) : nullptr;
+  if (path) check_file_access(L, path, "r");
   const int n = lua_gettop(L);
   lua_pushvalue(L, lua_upvalueindex(1));
-  lua_insert(L, 1);
+  for (int i = 1; i <= n; ++i) lua_pushvalue(L, i);
   lua_call(L, n, LUA_MULTRET);
-  return lua_gettop(L);
+  if (path) check_opened(L, n + 1, path, false);
+  return lua_gettop(L) - n;
 }
 
 // __gc of a script table, installed by guarded_setmetatable; upvalue 1 is the
@@ -212,6 +239,48 @@ int checked_getenv(lua_State* L) {
   return 1;
 }
 
+// lua_load's reader over an open file; a first line starting with '#' is
+// skipped (as luaL_loadfilex does).
+struct FileReader {
+  FILE* f;
+  bool first = true;
+  char buf[4096] = {};
+};
+
+const char* read_file_chunk(lua_State*, void* data, size_t* size) {
+  auto* r = static_cast<FileReader*>(data);
+  if (r->first) {
+    r->first = false;
+    const int c = std::getc(r->f);
+    if (c == '#') {
+      int d = 0;
+      while ((d = std::getc(r->f)) != EOF && d != '\n') {
+      }
+      r->buf[0] = '\n';  // keeps the line numbers
+      *size = 1;
+      return r->buf;
+    }
+    if (c != EOF) std::ungetc(c, r->f);
+  }
+  *size = std::fread(r->buf, 1, sizeof r->buf, r->f);
+  return *size > 0 ? r->buf : nullptr;
+}
+
+// Loads the open file `f` as a text chunk named "@path"; lua_load's status,
+// with the function or the message pushed.
+int load_open_file(lua_State* L, FILE* f, const char* path) {
+  FileReader reader{f};
+  lua_pushfstring(L, "@%s", path);
+  const int rc = lua_load(L, read_file_chunk, &reader, lua_tostring(L, -1), "t");
+  lua_remove(L, -2);
+  if (rc == LUA_OK && std::ferror(f)) {
+    lua_pop(L, 1);
+    lua_pushfstring(L, "cannot read %s", path);
+    return LUA_ERRFILE;
+  }
+  return rc;
+}
+
 // package.searchers entry: Lua files under the allowed folders only.
 int lua_file_searcher(lua_State* L) {
   const char* name = luaL_checkstring(L, 1);
@@ -231,14 +300,22 @@ int lua_file_searcher(lua_State* L) {
       lua_pushfstring(L, pattern, dir, rel);
       const char* file = lua_tostring(L, -1);
       if (FILE* f = std::fopen(file, "r")) {
-        std::fclose(f);
+        // Checked by name, then as opened, and loaded from this open file:
+        // a link swapped in between cannot lead out.
         char refused[1024] = "";  // no C++ object may live across luaL_error's longjmp
         {
-          const Status st = Vm::of(L).rules().check_read(file, "require");
+          const paths::PathRules& rules = Vm::of(L).rules();
+          Status st = rules.check_read(file, "require");
+          if (st.is_ok()) st = rules.check_read_fd(fileno(f), file, "require");
           if (!st.is_ok()) std::snprintf(refused, sizeof refused, "%s", st.message().c_str());
         }
-        if (refused[0]) return luaL_error(L, "module '%s': %s", name, refused);
-        if (luaL_loadfilex(L, file, "t") != LUA_OK)
+        if (refused[0]) {
+          std::fclose(f);
+          return luaL_error(L, "module '%s': %s", name, refused);
+        }
+        const int rc = load_open_file(L, f, file);
+        std::fclose(f);
+        if (rc != LUA_OK)
           return luaL_error(L, "error loading module '%s' from '%s':\n\t%s", name, file,
                             lua_tostring(L, -1));
         lua_pushvalue(L, -2);  // file name as second loader argument

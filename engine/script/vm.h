@@ -60,6 +60,7 @@ struct VmOptions {
   std::vector<std::string> require_dirs;       // extra folders for `require`
   std::vector<std::string> read_dirs;          // extra folders scripts may read (--allow-read)
   std::string navdata_dir;                     // BlueSky navdata, "" = none
+  long long max_conflict_pairs = 100'000;      // sim::CdSettings::max_pairs of every squawk.sim.new
 };
 
 // Counters of the assertion API (check, check_eq, check_near).

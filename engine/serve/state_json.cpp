@@ -122,6 +122,9 @@ json state_json(const command::Stack& stack) {
     if (static_cast<size_t>(l.own) != a) continue;
     los.push_back({{"ids", {t.id[a], t.id[b]}}, {"dist_nm", units::m_to_nm(l.dist)}, {"dalt_ft", units::m_to_ft(l.dalt)}});
   }
+  std::string capped = sim::cap_notice(s.cd(), cd.max_pairs);
+  if (capped.empty() && held && cd.enabled) capped = sim::cap_notice(fresh, cd.max_pairs);
+  out["conflict_cap"] = capped;
   out["los"] = std::move(los);
   return out;
 }

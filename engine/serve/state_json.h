@@ -15,7 +15,9 @@
 //               cpa [[lat, lon], [lat, lon]]}]  each pair once (a < b), cpa
 //               = where each aircraft will be at the closest approach if both
 //               keep their present ground velocity (from the present state),
-//   los [{ids [a, b], dist_nm, dalt_ft}]  each pair once.
+//   los [{ids [a, b], dist_nm, dalt_ft}]  each pair once,
+//   conflict_cap  sim::cap_notice ("" unless detections hit the pair cap,
+//               --max-conflict-pairs: then the lists above are incomplete).
 // Conflicts and losses of separation are the simulator's last detection
 // while the clock runs, and detected on the present state while it is held
 // (so a paused start shows the predicted conflicts at t = 0).

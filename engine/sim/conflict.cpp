@@ -154,6 +154,7 @@ void ConflictDetector::finish() {
   std::sort(cur_los_.begin(), cur_los_.end());
   total_conf_ += count_new(cur_conf_, prev_conf_);
   total_los_ += count_new(cur_los_, prev_los_);
+  if (truncated_) ++truncated_detections_;
   prev_conf_.swap(cur_conf_);
   prev_los_.swap(cur_los_);
 }
@@ -337,7 +338,7 @@ void ConflictDetector::clear(bool reset_totals) {
   prev_conf_.clear();
   prev_los_.clear();
   truncated_ = false;
-  if (reset_totals) total_conf_ = total_los_ = 0;
+  if (reset_totals) total_conf_ = total_los_ = truncated_detections_ = 0;
 }
 
 void ConflictDetector::on_erase(int i) {
@@ -384,6 +385,14 @@ void ConflictDetector::serialize(std::string& out) const {
   for (const auto& p : prev_los_) put(out, p.first), put(out, p.second);
   put(out, total_conf_);
   put(out, total_los_);
+}
+
+std::string cap_notice(const ConflictDetector& cd, int64_t max_pairs) {
+  const int64_t n = cd.truncated_detections();
+  if (n == 0) return "";
+  return "conflict detection hit its cap of " + std::to_string(max_pairs) + " stored pairs in " + std::to_string(n) +
+         (n == 1 ? " detection" : " detections") +
+         ": conflicts beyond it were not listed (--max-conflict-pairs N raises the cap)";
 }
 
 }  // namespace squawk::sim

@@ -28,10 +28,12 @@
 // Memory: O(n) scratch plus the pairs found, capped: at most
 // CdSettings::max_pairs unique conflict pairs and as many LoS pairs are
 // stored per detection; beyond that detection goes on without storing and
-// truncated() is set (which pairs are kept is then unspecified).
+// truncated() is set (which pairs are kept is then unspecified);
+// cap_notice() is the text that tells a user so.
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -97,6 +99,8 @@ class ConflictDetector {
   // The last detection hit CdSettings::max_pairs and stored only part of
   // the pairs it found.
   bool truncated() const { return truncated_; }
+  // Detections that hit the cap since the last reset of the totals.
+  int64_t truncated_detections() const { return truncated_detections_; }
   // Pairs the last detection examined (n(n-1)/2 for all pairs; the grid's
   // candidates otherwise).
   int64_t examined() const { return examined_; }
@@ -137,6 +141,12 @@ class ConflictDetector {
   int64_t total_los_ = 0;
   int64_t stored_conf_ = 0, stored_los_ = 0, examined_ = 0;
   bool truncated_ = false;
+  int64_t truncated_detections_ = 0;
 };
+
+// What a user is told when detections hit the cap: "" when none did since
+// the last reset; else how many did, the cap `max_pairs` and the flag that
+// raises it (--max-conflict-pairs).
+std::string cap_notice(const ConflictDetector& cd, int64_t max_pairs);
 
 }  // namespace squawk::sim

@@ -187,6 +187,8 @@ class Simulation {
   Status set_hpz(double hpz_m);        // > 0
   Status set_dtlook(double dtlook_s);  // > 0
   Status set_asas_dt(double asas_dt_s);  // > 0
+  // Conflict (and LoS) pairs stored per detection (CdSettings::max_pairs), >= 1.
+  Status set_cd_max_pairs(int64_t n);
   // Detection by the all-pairs reference instead of the grid (same results).
   void set_cd_all_pairs(bool on) { cds_.all_pairs = on; }
   // RESO MVP|OFF. On also switches detection on (resolution needs it).

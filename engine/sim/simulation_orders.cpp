@@ -123,8 +123,10 @@ Status Simulation::run_until(double t_end) {
 
 void Simulation::reset(uint64_t seed) {
   auto data = openap_;  // the performance model survives RESET, as in BlueSky
+  const int64_t max_pairs = cds_.max_pairs;  // a command-line setting, as the model
   *this = Simulation(seed);
   openap_ = std::move(data);
+  cds_.max_pairs = max_pairs;
 }
 
 void Simulation::delete_all() {
@@ -472,6 +474,12 @@ Status Simulation::set_dtlook(double dtlook_s) {
 Status Simulation::set_asas_dt(double asas_dt_s) {
   SQUAWK_RETURN_IF_ERROR(assign_positive("ASAS", "update interval [s]", asas_dt_s, cds_.asas_dt));
   next_asas_t_ = simt();
+  return Status::ok();
+}
+
+Status Simulation::set_cd_max_pairs(int64_t n) {
+  if (n < 1) return Status::invalid("conflict pair cap " + std::to_string(n) + ": expected a count >= 1");
+  cds_.max_pairs = n;
   return Status::ok();
 }
 

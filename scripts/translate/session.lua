@@ -190,6 +190,10 @@ function Session:diff_pairs(events)
   self.los = diff(self.los, los, t, events, "los", function(l, key)
     return string.format("LOSS OF SEPARATION %s: %.2f NM, %.0f ft apart", key, l.dist_nm, math.abs(l.dalt_ft))
   end, "separation regained %s")
+  -- Detections that hit the pair cap: said once (again after a RESET).
+  local capped = self.sim:totals().capped
+  if capped and not self.cap_noted then events[#events + 1] = { t = t, kind = "conflict_cap", text = capped } end
+  self.cap_noted = capped ~= nil
 end
 
 -- Moves ECHO output into events and queued-command failures into `failures`.

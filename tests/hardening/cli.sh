@@ -63,6 +63,31 @@ expect "17 install layout"   0 "home=$tmp/inst/share/squawk" -- "$tmp/inst/bin/s
 cp "$sq" "$tmp/copy/squawk"
 expect "17 SQUAWK_HOME"      0 "^ok$" -- env SQUAWK_HOME="$tmp/inst/share/squawk" "$tmp/copy/squawk" run "$tmp/inst/share/squawk/scripts/home_check.lua"
 rm -rf "$tmp"
+# 52 point 2: the REPL's session module (a home's scripts/translate/repl.lua)
+# raising when C++ reads it: clean messages, the REPL goes on, no panic.
+tmp=$(mktemp -d)
+cp -r scripts "$tmp/"
+cp "$d/hostile_repl_module.lua" "$tmp/scripts/translate/repl.lua"
+expect "52 repl module raises" 1 "the translator did not load \(translate.repl.new: reading field 'new': \(error object is a table value\)\)" -- env SQUAWK_HOME="$tmp" "$sq" repl
+cp "$d/hostile_repl_session.lua" "$tmp/scripts/translate/repl.lua"
+expect "52 repl session raises" 1 "session:handle: reading field 'handle': \(error object is a table value\)" -- env SQUAWK_HOME="$tmp" bash -c 'echo "KL1 climb FL300" | "$0" repl' "$sq"
+rm -rf "$tmp"
+# 52 point 3: conflict bookkeeping at its cap says so (scn summary, REPL
+# events), naming the cap and the flag; under the cap nothing is said.
+capnote="conflict detection hit its cap of 5 stored pairs in [0-9]+ detections?: conflicts beyond it were not listed \(--max-conflict-pairs N raises the cap\)"
+expect "52 cap, scn"         0 "^note: $capnote" -- "$sq" scn tests/serve/converging.scn --until 5 --max-conflict-pairs 5
+out=$("$sq" scn tests/serve/converging.scn --until 5 2>&1)
+if grep -q "conflicts: 19;" <<<"$out" && ! grep -q "cap of" <<<"$out"; then echo "ok   52 no cap, no note"; pass=$((pass + 1));
+else echo "FAIL 52 no cap, no note: $out"; fails=$((fails + 1)); fi
+expect "52 cap, repl"        0 "\[t= +[0-9]+ s\] $capnote" -- bash -c 'echo ":run 5" | "$0" repl tests/serve/converging.scn --max-conflict-pairs 5' "$sq"
+expect "52 cap flag refused" 2 "--max-conflict-pairs expects a count >= 1" -- "$sq" scn tests/serve/converging.scn --max-conflict-pairs 0
+# The default cap (100 000 pairs): 450 aircraft within a mile of each other
+# make 101 025 pairs.
+scn=$(mktemp --suffix .scn)
+awk 'BEGIN { print "00:00:00.00>ASAS ON"; for (i = 1; i <= 450; i++)
+  printf "00:00:00.00>CRE X%d B738 %.4f %.4f %d FL200 250\n", i, 52 + (i % 30) * 0.0005, 4 + int(i / 30) * 0.0008, i % 360 }' >"$scn"
+expect "52 default cap"      0 "^note: conflict detection hit its cap of 100000 stored pairs" -- "$sq" scn "$scn" --until 2
+rm -f "$scn"
 # 16: a checkpoint that failed to save (full disk) after its log row was
 # written: --resume drops the row instead of repeating it.
 tmp=$(mktemp -d)

@@ -5,10 +5,14 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "script/advisory.h"
 #include "script/prompt_renderer.h"
+#include "script/repl_session.h"
 #include "script/scenario.h"
+#include "script/serve_session.h"
 #include "script/vm.h"
 #include "scratch_dir.h"
 
@@ -41,6 +45,17 @@ script::Advisory advisory() {
   a.callsign = "KL1";
   a.turn = "left";
   return a;
+}
+
+// Makes `module` resolve to tests/hardening/<file> in `vm` (package.preload
+// is searched before the shipped scripts/).
+void preload(script::Vm& vm, const std::string& module, const std::string& file) {
+  std::ifstream in(std::string(SQUAWK_SOURCE_DIR) + "/tests/hardening/" + file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(!text.empty());
+  const Status st =
+      vm.run_string("package.preload['" + module + "'] = function(...)\n" + text + "\nend", "preload");
+  REQUIRE_MESSAGE(st.is_ok(), st.message());
 }
 
 }  // namespace
@@ -102,6 +117,10 @@ TEST_CASE("option tables whose __index or __len raise reach the bindings as Lua 
     local bad = setmetatable({}, {__tostring = function() error({}) end})
     local ok = pcall(check_eq, bad, 1)
     assert(not ok)
+    -- check_eq's == runs __eq under a protected call.
+    local mt = {__eq = function() error({}) end}
+    local ok2, e2 = pcall(check_eq, setmetatable({}, mt), setmetatable({}, mt))
+    assert(not ok2 and type(e2) == "string" and e2:find("comparing with ==", 1, true), tostring(e2))
   )";
   const Status st = vm.run_string(code, "raising.lua");
   CHECK_MESSAGE(st.is_ok(), st.message());
@@ -122,4 +141,47 @@ TEST_CASE("math.random over the whole integer range stays in range (no overflow)
     assert(math.random(math.mininteger, math.mininteger) == math.mininteger)
   )", "random.lua");
   CHECK_MESSAGE(st.is_ok(), st.message());
+}
+
+TEST_CASE("the REPL and serve sessions read the session module's tables under protected calls") {
+  script::Vm repl_vm({});
+  preload(repl_vm, "translate.repl", "hostile_repl_module.lua");
+  auto bad_module = script::ReplSession::open(repl_vm, "", "");
+  REQUIRE(!bad_module.is_ok());
+  CHECK(bad_module.status().message() ==
+        "translate.repl.new: reading field 'new': (error object is a table value)");
+
+  script::Vm vm({});
+  preload(vm, "translate.repl", "hostile_repl_session.lua");
+  auto repl = script::ReplSession::open(vm, "", "");
+  REQUIRE_MESSAGE(repl.is_ok(), repl.status().message());
+  CHECK(*repl->opening() == "hostile session");
+  for (const char* method : {"handle", "tick", "complete", "banner"}) {
+    CAPTURE(method);
+    const Status st = std::string(method) == "handle"   ? repl->handle("hi").status()
+                      : std::string(method) == "tick"   ? repl->tick(1.0).status()
+                      : std::string(method) == "banner" ? repl->banner().status()
+                                                        : repl->complete("K").status();
+    CHECK(st.message() == std::string("translate.repl session:") + method + ": reading field '" + method +
+                              "': (error object is a table value)");
+  }
+
+  script::Vm serve_vm({});
+  preload(serve_vm, "translate.session", "hostile_serve_session.lua");
+  auto serve = script::ServeSession::open(serve_vm, "", "");
+  REQUIRE_MESSAGE(serve.is_ok(), serve.status().message());
+  auto fine = (*serve)->command("fine", {});
+  REQUIRE_MESSAGE(fine.is_ok(), fine.status().message());
+  CHECK(fine->ok);
+  for (const char* text : {"reply", "commands", "results", "events"}) {
+    CAPTURE(text);
+    auto r = (*serve)->command(text, {});
+    REQUIRE(!r.is_ok());
+    CHECK(r.status().message().rfind("translate.session command()'s reply: ", 0) == 0);
+    CHECK(r.status().message().find("(error object is a") != std::string::npos);
+  }
+  auto events = (*serve)->tick(1.0);
+  REQUIRE(!events.is_ok());
+  CHECK(events.status().message() == "translate.session tick()'s events: reading the length: 42");
+  CHECK((*serve)->command("fine", {}).is_ok());  // the session stays usable
 }

@@ -2,9 +2,13 @@
 // engine-seeded math.random, the assertion API.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "core/rng.h"
 #include "script/vm.h"
@@ -123,4 +127,54 @@ TEST_CASE("assertion API counts and reports") {
   Status st = vm.run_string("check_near('x', 1, 1)", "t");
   CHECK(!st.is_ok());
   CHECK(st.message().find("expected number") != std::string::npos);
+}
+
+TEST_CASE("a link swapped in between the check and the open never leads out (io.open, io.lines, require)") {
+  // inside/data.lua flips, by atomic renames from another thread, between a
+  // file inside and a link to outside/secret.lua. Each open is checked by
+  // name and again on the descriptor opened, and `require` loads from that
+  // descriptor: no read may ever see the secret, whichever way the race goes.
+  const fs::path root = scratch() / "swap";
+  fs::remove_all(root);
+  fs::create_directories(root / "inside");
+  fs::create_directories(root / "outside");
+  write(root / "outside" / "secret.lua", "return 'secret'\n");
+  const std::string data = (root / "inside" / "data.lua").string();
+  const std::string plain_tmp = (root / "inside" / "plain.tmp").string();
+  const std::string link_tmp = (root / "inside" / "link.tmp").string();
+  const std::string secret = (root / "outside" / "secret.lua").string();
+  write(data, "return 'inside'\n");
+  std::atomic<bool> stop{false};
+  std::thread swapper([&] {
+    while (!stop.load()) {
+      if (::symlink(secret.c_str(), link_tmp.c_str()) == 0) std::rename(link_tmp.c_str(), data.c_str());
+      write(plain_tmp, "return 'inside'\n");
+      std::rename(plain_tmp.c_str(), data.c_str());
+    }
+  });
+  script::VmOptions o;
+  o.read_dirs = {(root / "inside").string()};
+  o.require_dirs = {(root / "inside").string()};
+  script::Vm vm(o);
+  const Status st = vm.run_string("local P = [[" + data + "]]\n" + R"(
+    local leaked, read, refused = 0, 0, 0
+    local function seen(text)
+      if text:find("secret", 1, true) then leaked = leaked + 1 else read = read + 1 end
+    end
+    for _ = 1, 3000 do
+      local ok, f = pcall(io.open, P)
+      if ok and f then seen(f:read("a")) f:close() elseif not ok then refused = refused + 1 end
+      local ok2, it = pcall(io.lines, P, "a")
+      if ok2 then seen(it() or "") else refused = refused + 1 end
+      package.loaded.data = nil
+      local ok3, v = pcall(require, "data")
+      if ok3 then seen(v) else refused = refused + 1 end
+    end
+    assert(leaked == 0, leaked .. " reads of the file outside")
+    assert(read > 0 and refused > 0, "the swap never happened: " .. read .. " reads, " .. refused .. " refusals")
+  )",
+                                  "swap.lua");
+  stop = true;
+  swapper.join();
+  CHECK_MESSAGE(st.is_ok(), st.message());
 }

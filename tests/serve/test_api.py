@@ -306,10 +306,37 @@ def test_host_any_address(squawk):
         server.wait(timeout=10)
 
 
+def test_conflict_cap(squawk):
+    """Issue 52: conflict detection at its pair cap says so in the state (the
+    scope lists it above the conflicts), naming the cap and the flag; the
+    event log says it too once time runs."""
+    converging = os.path.join(HERE, "converging.scn")
+    server, addr = start_server(squawk, converging, ["--paused", "--max-conflict-pairs", "5"])
+    try:
+        s = state(addr)
+        check(len(s["conflicts"]) == 5 and "cap of 5 stored pairs" in s["conflict_cap"]
+              and "--max-conflict-pairs" in s["conflict_cap"], f"capped state: {s['conflict_cap']!r}")
+        command(addr, "!OP")
+        time.sleep(2.5)
+        log = [e["text"] for e in state(addr)["log"]]
+        check(any("cap of 5 stored pairs" in t for t in log), f"capped, the log says so: {log[-3:]}")
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
+    server, addr = start_server(squawk, converging, ["--paused"])
+    try:
+        s = state(addr)
+        check(len(s["conflicts"]) == 19 and s["conflict_cap"] == "", f"under the cap: {s['conflict_cap']!r}")
+    finally:
+        server.terminate()
+        server.wait(timeout=10)
+
+
 def main():
     squawk = sys.argv[1]
     test_usage(squawk)
     test_host_any_address(squawk)
+    test_conflict_cap(squawk)
     test_plain(squawk)
     test_teammate(squawk)
     print(f"{failures} failed")
