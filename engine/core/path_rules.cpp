@@ -162,28 +162,29 @@ std::string fd_path(int fd) {
   return out;
 }
 
+
+// check_read_fd / check_write_fd: `check` (check_read or check_write) applied
+// to the path the kernel resolved for the open descriptor; `verb` names it.
+Status check_opened(const PathRules& rules, Status (PathRules::*check)(const std::string&, std::string_view) const,
+                    std::string_view verb, int fd, const std::string& shown, std::string_view what) {
+  const std::string real = fd_path(fd);
+  const std::string head = std::string(what) + " '" + shown + "': " + std::string(verb) + " it is not allowed: ";
+  if (real.empty()) return Status::invalid(head + "the file opened has no path");
+  const Status st = (rules.*check)(real, what);
+  if (st.is_ok()) return st;
+  return Status::invalid(head + "the file opened is '" + real + "' (a link changed after the check)");
+}
+
 }  // namespace
 
 Status PathRules::check_read_fd(int fd, const std::string& shown, std::string_view what) const {
   if (all_) return Status::ok();
-  const std::string real = fd_path(fd);
-  if (real.empty())
-    return Status::invalid(std::string(what) + " '" + shown + "': reading it is not allowed: the file opened has no path");
-  const Status st = check_read(real, what);
-  if (st.is_ok()) return st;
-  return Status::invalid(std::string(what) + " '" + shown + "': reading it is not allowed: the file opened is '" + real +
-                         "' (a link changed after the check)");
+  return check_opened(*this, &PathRules::check_read, "reading", fd, shown, what);
 }
 
 Status PathRules::check_write_fd(int fd, const std::string& shown, std::string_view what) const {
   if (all_) return Status::ok();
-  const std::string real = fd_path(fd);
-  if (real.empty())
-    return Status::invalid(std::string(what) + " '" + shown + "': writing it is not allowed: the file opened has no path");
-  const Status st = check_write(real, what);
-  if (st.is_ok()) return st;
-  return Status::invalid(std::string(what) + " '" + shown + "': writing it is not allowed: the file opened is '" + real +
-                         "' (a link changed after the check)");
+  return check_opened(*this, &PathRules::check_write, "writing", fd, shown, what);
 }
 
 }  // namespace squawk::paths
