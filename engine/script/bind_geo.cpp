@@ -27,48 +27,49 @@ namespace squawk::script {
 
 namespace {
 
-int l_kwikqdrdist(lua_State* L) {
-  const auto r = geo::kwikqdrdist(arg_number(L, 1, "lat1"), arg_number(L, 2, "lon1"),
-                                  arg_number(L, 3, "lat2"), arg_number(L, 4, "lon2"));
-  lua_pushnumber(L, r.qdr_deg);
-  lua_pushnumber(L, r.dist_nm);
+// Pushes a pair of results (qdr and distance, or latitude and longitude).
+int push_two(lua_State* L, double a, double b) {
+  lua_pushnumber(L, a);
+  lua_pushnumber(L, b);
   return 2;
 }
 
+// Four numeric arguments, named for the messages of a wrong call.
+struct Four {
+  double a, b, c, d;
+};
+Four four(lua_State* L, const char* n1, const char* n2, const char* n3, const char* n4) {
+  return {arg_number(L, 1, n1), arg_number(L, 2, n2), arg_number(L, 3, n3), arg_number(L, 4, n4)};
+}
+
+int l_kwikqdrdist(lua_State* L) {
+  const Four x = four(L, "lat1", "lon1", "lat2", "lon2");
+  const auto r = geo::kwikqdrdist(x.a, x.b, x.c, x.d);
+  return push_two(L, r.qdr_deg, r.dist_nm);
+}
+
 int l_kwikdist(lua_State* L) {
-  lua_pushnumber(L, geo::kwikdist_nm(arg_number(L, 1, "lat1"), arg_number(L, 2, "lon1"),
-                                     arg_number(L, 3, "lat2"), arg_number(L, 4, "lon2")));
+  const Four x = four(L, "lat1", "lon1", "lat2", "lon2");
+  lua_pushnumber(L, geo::kwikdist_nm(x.a, x.b, x.c, x.d));
   return 1;
 }
 
 int l_kwikpos(lua_State* L) {
-  const auto p = geo::kwikpos(arg_number(L, 1, "lat"), arg_number(L, 2, "lon"),
-                              arg_number(L, 3, "qdr_deg"), arg_number(L, 4, "dist_nm"));
-  lua_pushnumber(L, p.lat_deg);
-  lua_pushnumber(L, p.lon_deg);
-  return 2;
+  const Four x = four(L, "lat", "lon", "qdr_deg", "dist_nm");
+  const auto p = geo::kwikpos(x.a, x.b, x.c, x.d);
+  return push_two(L, p.lat_deg, p.lon_deg);
 }
 
 int l_destination(lua_State* L) {
-  const auto p = geo::gc_destination(arg_number(L, 1, "lat"), arg_number(L, 2, "lon"),
-                                     arg_number(L, 3, "bearing_deg"), arg_number(L, 4, "dist_m"));
-  lua_pushnumber(L, p.lat_deg);
-  lua_pushnumber(L, p.lon_deg);
-  return 2;
+  const Four x = four(L, "lat", "lon", "bearing_deg", "dist_m");
+  const auto p = geo::gc_destination(x.a, x.b, x.c, x.d);
+  return push_two(L, p.lat_deg, p.lon_deg);
 }
 
-int l_wrap180(lua_State* L) {
-  lua_pushnumber(L, geo::wrap180(arg_number(L, 1, "deg")));
-  return 1;
-}
-
-int l_wrap360(lua_State* L) {
-  lua_pushnumber(L, geo::wrap360(arg_number(L, 1, "deg")));
-  return 1;
-}
-
-int l_gym_wrap180(lua_State* L) {
-  lua_pushnumber(L, geo::gym_wrap180(arg_number(L, 1, "deg")));
+// wrap180, wrap360, gym_wrap180: one angle [deg] in, one out.
+template <double (*wrap)(double)>
+int l_wrap(lua_State* L) {
+  lua_pushnumber(L, wrap(arg_number(L, 1, "deg")));
   return 1;
 }
 
@@ -112,8 +113,8 @@ void bind_geo(lua_State* L) {
   static const luaL_Reg fns[] = {
       {"kwikqdrdist", guarded<l_kwikqdrdist>}, {"kwikdist", guarded<l_kwikdist>},
       {"kwikpos", guarded<l_kwikpos>},         {"destination", guarded<l_destination>},
-      {"wrap180", guarded<l_wrap180>},         {"wrap360", guarded<l_wrap360>},
-      {"gym_wrap180", guarded<l_gym_wrap180>}, {"cpa", guarded<l_cpa>},
+      {"wrap180", guarded<l_wrap<geo::wrap180>>}, {"wrap360", guarded<l_wrap<geo::wrap360>>},
+      {"gym_wrap180", guarded<l_wrap<geo::gym_wrap180>>}, {"cpa", guarded<l_cpa>},
       {"inside", guarded<l_inside>},           {nullptr, nullptr}};
   push_squawk_subtable(L, "geo");
   luaL_setfuncs(L, fns, 0);

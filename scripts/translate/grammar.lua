@@ -193,6 +193,13 @@ end
 
 -- ---- the state of one translation ----
 
+-- The tokens b .. e-1 as they were typed, joined by spaces (for questions that quote them).
+function G:raw(b, e)
+  local words = {}
+  for k = b, e - 1 do words[#words + 1] = self.t[k].raw end
+  return table.concat(words, " ")
+end
+
 function G:word(i, words)
   local t = self.t[i]
   return t ~= nil and t.kind == "word" and word_set(words, 2)[t.text] == true
@@ -601,9 +608,7 @@ function G:unexplained(s, n_before)
       for _, r in ipairs(self.refs) do
         if r.kind == "aircraft" and r.e <= q.b and self:skip_fillers(r.e) == q.b then b = r.b end
       end
-      local words = {}
-      for k = b, q.e - 1 do words[#words + 1] = self.t[k].raw end
-      self.leftover = table.concat(words, " ")
+      self.leftover = self:raw(b, q.e)
       return
     end
   end
@@ -636,9 +641,7 @@ function G:uncarried()
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; other plain ones are often recognition noise)
     if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b] and not q.by and q.b > corrected and not value_carried(q, nums) then
-      local words = {}
-      for k = q.b, q.e - 1 do words[#words + 1] = self.t[k].raw end
-      self.leftover = table.concat(words, " ")
+      self.leftover = self:raw(q.b, q.e)
       return
     end
   end
@@ -663,9 +666,7 @@ function G:unknown_names()
     if r.kind == "aircraft" and (not r.exists or not (compared or self:in_reason(r.b))) and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
-      local words = {}
-      for k = r.b, r.e - 1 do words[#words + 1] = self.t[k].raw end
-      self.leftover = table.concat(words, " ")
+      self.leftover = self:raw(r.b, r.e)
       return
     end
   end
@@ -793,12 +794,11 @@ function G:not_simulated()
         end
         e = e + 1
       end
-      local words = {}
-      for k = i, e - 1 do words[#words + 1] = self.t[k].raw end
+      local said = self:raw(i, e)
       self:mark_used(i, e)
       if not seen[class.what] then
         seen[class.what] = true
-        found[#found + 1] = string.format("%s ('%s')", class.what, (table.concat(words, " "):gsub(" ([,.;:])", "%1")))
+        found[#found + 1] = string.format("%s ('%s')", class.what, (said:gsub(" ([,.;:])", "%1")))
       end
       i = e
     else

@@ -122,10 +122,8 @@ return function(H, f, compass)
       left = {}
     end
     if #left > 0 and id and actype then
-      local words = {}
-      for k = left[1].b, left[1].e - 1 do words[#words + 1] = self.t[k].raw end
       return self:need(string.format("To create %s I did not place '%s'. What does it give: a position, heading, "
-        .. "altitude or speed?", id, table.concat(words, " ")))
+        .. "altitude or speed?", id, self:raw(left[1].b, left[1].e)))
     end
     local missing = {}
     if not id then missing[#missing + 1] = "callsign" end

@@ -112,17 +112,21 @@ TEST_CASE("delete keeps arrays dense and in order") {
 }
 
 namespace {
+Waypoint waypoint(const char* name, double lat, double lon) {
+  Waypoint w;
+  w.name = name;
+  w.lat = lat;  // [deg]
+  w.lon = lon;  // [deg]
+  return w;
+}
+
 Simulation busy_sim() {
   Simulation sim(7);
   sim.set_reso(true);
   REQUIRE(sim.create("A", "A320", 52.0, 4.0, 90.0, 3000.0, 150.0).is_ok());
   REQUIRE(sim.create("B", "A320", 52.0, 4.4, 270.0, 3000.0, 150.0).is_ok());
   REQUIRE(sim.create("C", "AT72", 52.2, 4.2, 180.0, 2000.0, 110.0).is_ok());
-  Waypoint w;
-  w.name = "WP";
-  w.lat = 52.5;
-  w.lon = 4.5;
-  REQUIRE(sim.add_waypoint("C", w).is_ok());
+  REQUIRE(sim.add_waypoint("C", waypoint("WP", 52.5, 4.5)).is_ok());
   REQUIRE(sim.set_altitude("A", 4000.0, 5.0).is_ok());
   REQUIRE(sim.run_for(30.0).is_ok());
   return sim;
@@ -199,10 +203,7 @@ TEST_CASE("the autopilot's distance to the waypoint is BlueSky's qdrdist of the 
   // is within a few ulp of it: 1e-6 m.
   Simulation sim(3);
   REQUIRE(sim.create("A", "A320", 51.0, 2.0, 45.0, 9000.0, 130.0).is_ok());
-  Waypoint w;
-  w.name = "FAR";
-  w.lat = 60.0;
-  w.lon = 25.0;
+  const Waypoint w = waypoint("FAR", 60.0, 25.0);
   REQUIRE(sim.add_waypoint("A", w).is_ok());
   const Traffic& t = sim.traffic();
   const auto direct = [&] { return units::nm_to_m(geo::qdrdist(t.lat[0], t.lon[0], w.lat, w.lon).dist_nm); };
