@@ -111,13 +111,7 @@ function E:generate_obstacles()
   for i = 1, NUM_OBSTACLES do
     self.polygons[i], self.radius[i] = self:generate_polygon(clat[i], clon[i])
   end
-end
-
-function E:inside_any(lat, lon)
-  for i = 1, NUM_OBSTACLES do
-    if geo.inside(lat, lon, self.polygons[i]) then return true end
-  end
-  return false
+  self.areas = geo.polygons(self.polygons)   -- tested after every simulator step
 end
 
 -- L193-218: a waypoint 100-169 km away outside every area (at most 1000 tries).
@@ -125,7 +119,7 @@ function E:generate_waypoint()
   for _ = 1, 1001 do
     local dis_km = self.draws:randint(WAYPOINT_DISTANCE_MIN, WAYPOINT_DISTANCE_MAX)
     local lat, lon = geo.destination(LAT0, LON0, self.draws:randint(0, 360), dis_km * 1000)
-    if not self:inside_any(lat, lon) then
+    if self.areas:count_inside(lat, lon) == 0 then
       self.wpt_lat, self.wpt_lon = lat, lon
       return
     end
@@ -191,14 +185,12 @@ function E:reward()
   self.drift_sum, self.drift_n = self.drift_sum + drift, self.drift_n + 1
   r = r + drift * DRIFT_PENALTY
   local lat, lon = self.sim:values(ACID)
-  local intrusion = 0                                   -- summed apart, as L295-297 do
-  for i = 1, NUM_OBSTACLES do
-    if geo.inside(lat, lon, self.polygons[i]) then
-      intrusion, done = intrusion + RESTRICTED_AREA_INTRUSION_PENALTY, true
-      self.crashed = 1
-    end
+  local inside = self.areas:count_inside(lat, lon)
+  if inside > 0 then
+    done, self.crashed = true, 1
+    r = r + inside * RESTRICTED_AREA_INTRUSION_PENALTY  -- the intrusion terms summed apart, as L295-297 do
   end
-  return r + intrusion, done
+  return r, done
 end
 
 function E:step(action)

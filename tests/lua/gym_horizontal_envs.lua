@@ -4,6 +4,23 @@
 -- would draw) whose rewards and ends are known in advance.
 local geo = squawk.geo
 
+-- squawk.geo.polygons: a set of polygons read once, counted per point
+local square = {0, 0, 0, 1, 1, 1, 1, 0}
+local set = geo.polygons({square, {0.5, 0.5, 0.5, 2, 2, 2, 2, 0.5}, {5, 5, 5, 6, 6, 5}})
+check_eq(set:count_inside(0.25, 0.25), 1)
+check_eq(set:count_inside(0.75, 0.75), 2, "inside the two overlapping squares")
+check_eq(set:count_inside(5.2, 5.2), 1, "inside the triangle")
+check_eq(set:count_inside(3, 3), 0)
+check_eq(geo.polygons({}):count_inside(0, 0), 0, "an empty set contains nothing")
+local ok, err = pcall(geo.polygons, {square, {0, 0, 1}})
+check(not ok and err:find("polygon 2 needs lat, lon pairs of at least 3 points, got 3 numbers"), err)
+ok, err = pcall(geo.polygons, {square, {0, 0, 1, "x", 2, 2}})
+check(not ok and err:find("polygon 2%[4%] is not a number"), err)
+ok, err = pcall(geo.polygons, {7})
+check(not ok and err:find("polygon 1 is not a table"), err)
+ok, err = pcall(set.count_inside, {}, 0, 0)
+check(not ok, "count_inside on something that is not a polygon set is an error")
+
 -- PlanWaypoint: waypoint 1 under the aircraft, 2 at 3 km east, 3-5 at 74 km.
 local pw = squawk.gym.load(squawk.home .. "/envs/plan_waypoint.lua")
 check_eq(pw.id, "PlanWaypointEnv-v0"); check_eq(pw.max_episode_steps, 300)
