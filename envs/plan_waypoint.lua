@@ -53,7 +53,7 @@ function E:generate_waypoints()
   for i = 1, NUM_WAYPOINTS do
     local dis_km = self.draws:randint(WAYPOINT_DISTANCE_MIN, WAYPOINT_DISTANCE_MAX)
     local hdg = self.draws:randint(0, 359)
-    self.wpt_lat[i], self.wpt_lon[i] = geo.destination(lat, lon, hdg, dis_km * 1000)
+    self.wpt_lat[i], self.wpt_lon[i] = geo.destination(lat, lon, hdg, dis_km * 1000)  -- F24-42
     self.wpt_reach[i] = 0
   end
 end

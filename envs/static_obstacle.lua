@@ -22,6 +22,7 @@
 
 local geo = squawk.geo
 local Draws = require("gym_draws")
+local F = require("gym_functions")
 
 local DISTANCE_MARGIN = 5                     -- [km] L10
 local REACH_REWARD = 1                        -- L12
@@ -59,42 +60,21 @@ local E = {
   max_episode_steps = 100,                   -- __init__.py register("StaticObstacleEnv-v0", ..., max_episode_steps=100)
 }
 
--- F44-59: a point on the circle of radius r [NM], x north, y east.
-function E:point_on_circle(r)
-  local alpha = 2 * math.pi * self.draws:uniform()
-  return {r * math.cos(alpha), r * math.sin(alpha)}
-end
-
--- F61-75: by angle atan2(y, x), ascending.
-local function sort_by_angle(p)
-  table.sort(p, function(a, b) return math.atan(a[2], a[1]) < math.atan(b[2], b[1]) end)
-end
-
--- F77-96: the shoelace area [NM^2].
-local function polygon_area(p)
-  local area, n = 0.0, #p
-  for i = 1, n do
-    local q = p[i % n + 1]
-    area = area + (p[i][1] * q[2] - p[i][2] * q[1])
-  end
-  return math.abs(area) / 2.0
-end
-
 -- L151-164: an area [NM^2] in [100, 999] gives the circle's radius R [NM];
--- points on it are added until the polygon covers 50 NM^2; F98-114 turns
--- them into lat, lon around the centre. Returns {lat1, lon1, lat2, ...} and R.
+-- points on it are added until the polygon covers 50 NM^2, then turned into
+-- lat, lon around the centre. Returns {lat1, lon1, lat2, ...} and R.
 function E:generate_polygon(clat, clon)
   local r = math.sqrt(self.draws:randint(AREA_MIN * 2, AREA_MAX) / math.pi)
-  local p = {self:point_on_circle(r), self:point_on_circle(r), self:point_on_circle(r)}
-  sort_by_angle(p)
-  while polygon_area(p) < AREA_MIN do
-    p[#p + 1] = self:point_on_circle(r)
-    sort_by_angle(p)
+  local p = {}
+  for i = 1, 3 do p[i] = F.random_point_on_circle(r, self.draws) end
+  F.sort_points_clockwise(p)
+  while F.polygon_area(p) < AREA_MIN do
+    p[#p + 1] = F.random_point_on_circle(r, self.draws)
+    F.sort_points_clockwise(p)
   end
   local coords = {}
   for _, q in ipairs(p) do
-    coords[#coords + 1] = clat + q[1] / 60
-    coords[#coords + 1] = clon + q[2] / (60 * math.cos(math.rad(clat)))
+    coords[#coords + 1], coords[#coords + 2] = F.nm_to_latlong(clat, clon, q)
   end
   return coords, r
 end

@@ -89,6 +89,19 @@ ENVS.update({
 })
 
 
+def plan_waypoint_unaimed(obs):
+    """The cos/sin components (0-9) of PlanWaypoint's unreached waypoints
+    that sit on the aircraft (drawn 0 km away; less than 1 mm off): their
+    bearing is the direction of a rounding error, and the aircraft's position
+    after an episode carried over agrees only to ~1e-15 deg."""
+    dist, reached = obs[10:15], obs[15:20]
+    return [i for w in range(5) if dist[w] * 75 < 1e-6 and not reached[w] for i in (w, 5 + w)]
+
+
+ENVS['plan_waypoint'].update(unaimed=plan_waypoint_unaimed,
+                             unaimed_note='cos/sin of a waypoint drawn 0 km away, on the aircraft')
+
+
 def skip(msg):
     print(f'compare.py: skipped: {msg}')
     sys.exit(SKIP)
@@ -259,7 +272,7 @@ def main():
     # component index -> field
     owner = [f for f in spec['fields'] for _ in range(f[1])]
     worst = {f[0]: (0.0, None) for f in spec['fields']}
-    worst_r, length_mismatch, term_mismatch, steps = (0.0, None), [], [], 0
+    worst_r, length_mismatch, term_mismatch, steps, skipped = (0.0, None), [], [], 0, 0
     for k, ep in enumerate(ref):
         n_ref = len(ep['rewards'])
         n_got = max(s for (kk, s) in got if kk == k)
@@ -267,7 +280,11 @@ def main():
             length_mismatch.append((k, n_ref, n_got))
         for s in range(min(n_ref, n_got) + 1):
             obs, r, term = got[(k, s)]
+            unaimed = spec.get('unaimed', lambda o: [])(ep['obs'][s])
+            skipped += len(unaimed)
             for i, f in enumerate(owner):
+                if i in unaimed:
+                    continue
                 d = abs(obs[i] - ep['obs'][s][i])
                 if d > worst[f[0]][0]:
                     worst[f[0]] = (d, (k, s))
@@ -291,6 +308,8 @@ def main():
         print(f'| {n} | {d:.3g} | {d * scale:.3g} {unit} | {where} | {tol["obs"]:g} |')
     print(f'| reward | {worst_r[0]:.3g} | | {worst_r[1]} | {tol["reward"]:g} |')
     print(f'episode lengths differing: {length_mismatch or "none"}; termination differing: {term_mismatch or "none"}')
+    if skipped:
+        print(f'not compared: {skipped} components without a defined direction ({spec["unaimed_note"]})')
     lengths = [len(ep['rewards']) for ep in ref]
     print(f'reference episode lengths: min {min(lengths)}, max {max(lengths)}; BlueSky-Gym '
           f'{sum(lengths) / sum(ep["step_s"] for ep in ref):.1f} env steps/s (step() only, this run)')
