@@ -96,7 +96,7 @@ end
 
 -- L193-218: a waypoint 100-169 km away outside every area (at most 1000 tries).
 function E:generate_waypoint()
-  for _ = 1, 1001 do
+  for _ = 1, 1000 do
     local dis_km = self.draws:randint(WAYPOINT_DISTANCE_MIN, WAYPOINT_DISTANCE_MAX)
     local lat, lon = geo.destination(LAT0, LON0, self.draws:randint(0, 360), dis_km * 1000)
     if self.areas:count_inside(lat, lon) == 0 then
