@@ -8,8 +8,10 @@
 // (script/lua_env.h): BlueSky-Gym's DescentEnv-v0 (envs/descent.lua; one env
 // step = 30 x 1 s simulator steps of one aircraft through the full
 // Simulation, OpenAP when SQUAWK_OPENAP names its data) and VerticalCREnv-v0
-// (envs/vertical_cr.lua, six aircraft), each against BlueSky-Gym's measured
-// figure (docs/gym_envs.md, bench/gym_ref/compare.py).
+// (envs/vertical_cr.lua, six aircraft), PlanWaypointEnv-v0 (envs/plan_waypoint.lua)
+// and StaticObstacleEnv-v0 (envs/static_obstacle.lua, ten polygons tested
+// after every simulator step), each against BlueSky-Gym's measured figure
+// (docs/gym_envs.md, bench/gym_ref/compare.py).
 // Prints figures only; no timing is asserted anywhere.
 #include <chrono>
 #include <cmath>
@@ -35,6 +37,10 @@ constexpr double kBlueSkyGymZero = 132.2;    // env steps/s, measured (zero acti
 // measured at load average 16 on the 2-core machine; HorizontalCREnv's figures above were taken idle.
 constexpr double kBlueSkyGymDescent = 5.9;
 constexpr double kBlueSkyGymVerticalCr = 13.4;  // VerticalCREnv-v0, the same way, load average 17-20
+// PlanWaypointEnv-v0 and StaticObstacleEnv-v0 (one env step = 10 x 1 s simulator steps), the same way,
+// 30 episodes each, load average 7-20 (docs/gym_envs.md).
+constexpr double kBlueSkyGymPlanWaypoint = 32.4;
+constexpr double kBlueSkyGymStaticObstacle = 27.0;
 
 struct Run {
   long long steps = 0;
@@ -199,5 +205,10 @@ int main(int argc, char** argv) {
         kBlueSkyGymDescent);
   print("VerticalCREnv-v0 (envs/vertical_cr.lua), random, 1 thread",
         drive_lua("envs/vertical_cr.lua", true, seconds, 1), kBlueSkyGymVerticalCr);
+  std::printf("Lua environments, horizontal (one env step = 10 x 1 s simulator steps):\n");
+  print("PlanWaypointEnv-v0 (envs/plan_waypoint.lua), random, 1 thread",
+        drive_lua("envs/plan_waypoint.lua", true, seconds, 1), kBlueSkyGymPlanWaypoint);
+  print("StaticObstacleEnv-v0 (envs/static_obstacle.lua), random, 1 thread",
+        drive_lua("envs/static_obstacle.lua", true, seconds, 1), kBlueSkyGymStaticObstacle);
   return 0;
 }

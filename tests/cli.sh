@@ -32,6 +32,8 @@ expect "env run crash"   0 "mean length +[0-9]\.[0-9]+ steps" -- "$sq" env run e
 expect "env run json"    0 '"env": "DescentEnv-v0", "policy": "zero", "episodes": 2' -- "$sq" env run envs/descent.lua --policy zero --episodes 2 --json
 expect "env bad policy"  2 "constant:2: action 1 is outside \[-1, 1\]" -- "$sq" env run envs/descent.lua --policy constant:2
 expect "env no file"     1 "no environment file 'envs/nope.lua'" -- "$sq" env run envs/nope.lua
+expect "env plan waypoint" 0 "observation 20 numbers, action 1 in \[-1, 1\], at most 300 steps" -- "$sq" env run envs/plan_waypoint.lua --policy random --episodes 2
+expect "env static obstacle" 0 "observation 43 numbers, action 2 in \[-1, 1\], at most 100 steps" -- "$sq" env run envs/static_obstacle.lua --policy random --episodes 5
 tmp=$(mktemp -d)
 expect "demo"            0 "translator HDG KL001" -- "$sq" demo --record "$tmp/ep.jsonl" --svg "$tmp/ep.svg"
 expect "demo summary"    0 "waypoint reached +yes" -- "$sq" demo --quiet

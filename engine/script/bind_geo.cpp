@@ -14,6 +14,9 @@
 //       do not meet inside r (core/cpa.h, BlueSky's state-based detection)
 //   squawk.geo.inside(lat, lon, {lat1, lon1, lat2, lon2, ...}) -> boolean
 //       the point inside the polygon (even-odd rule, BlueSky's POLY test)
+//   squawk.geo.polygons({{lat1, lon1, ...}, ...}) -> a polygon set, read once
+//       set:count_inside(lat, lon) -> how many of its polygons contain the
+//       point (the same test; for environments that test fixed areas every step)
 #include <cmath>
 #include <vector>
 
@@ -86,24 +89,54 @@ int l_cpa(lua_State* L) {
   return 4;
 }
 
-int l_inside(lua_State* L) {
-  const double lat = arg_number(L, 1, "lat"), lon = arg_number(L, 2, "lon");
-  luaL_checktype(L, 3, LUA_TTABLE);
-  const lua_Integer n = length(L, 3);
+// The polygon {lat1, lon1, lat2, lon2, ...} at `idx`; `what` names it in errors.
+sim::Shape read_polygon(lua_State* L, int idx, const std::string& what) {
+  if (lua_type(L, idx) != LUA_TTABLE) throw ArgError(what + " is not a table of lat, lon numbers");
+  const lua_Integer n = length(L, idx);
   if (n < 6 || n % 2 != 0)
-    throw ArgError("squawk.geo.inside: polygon needs lat, lon pairs of at least 3 points, got " +
-                   std::to_string(n) + " numbers");
+    throw ArgError(what + " needs lat, lon pairs of at least 3 points, got " + std::to_string(n) + " numbers");
   sim::Shape poly;
   poly.kind = sim::Shape::Kind::kPoly;
   poly.coords.reserve(static_cast<size_t>(n));
   for (lua_Integer k = 1; k <= n; ++k) {
-    get_index(L, 3, k);
-    if (!lua_isnumber(L, -1))
-      throw ArgError("squawk.geo.inside: polygon[" + std::to_string(k) + "] is not a number");
+    get_index(L, idx, k);
+    if (!lua_isnumber(L, -1)) throw ArgError(what + "[" + std::to_string(k) + "] is not a number");
     poly.coords.push_back(lua_tonumber(L, -1));
     lua_pop(L, 1);
   }
-  lua_pushboolean(L, poly.contains(lat, lon, 0.0));
+  return poly;
+}
+
+int l_inside(lua_State* L) {
+  const double lat = arg_number(L, 1, "lat"), lon = arg_number(L, 2, "lon");
+  luaL_checktype(L, 3, LUA_TTABLE);
+  lua_pushboolean(L, read_polygon(L, 3, "squawk.geo.inside: polygon").contains(lat, lon, 0.0));
+  return 1;
+}
+
+constexpr const char* kPolygonsMt = "squawk.geo.Polygons";
+using Polygons = std::vector<sim::Shape>;
+
+int l_polygons(lua_State* L) {
+  luaL_checktype(L, 1, LUA_TTABLE);
+  const lua_Integer n = length(L, 1);
+  Polygons set;
+  set.reserve(static_cast<size_t>(n));
+  for (lua_Integer k = 1; k <= n; ++k) {
+    get_index(L, 1, k);
+    set.push_back(read_polygon(L, lua_gettop(L), "squawk.geo.polygons: polygon " + std::to_string(k)));
+    lua_pop(L, 1);
+  }
+  new_object<Polygons>(L, kPolygonsMt, std::move(set));
+  return 1;
+}
+
+int l_count_inside(lua_State* L) {
+  const Polygons& set = *arg_object<Polygons>(L, 1, kPolygonsMt);
+  const double lat = arg_number(L, 2, "lat"), lon = arg_number(L, 3, "lon");
+  lua_Integer count = 0;
+  for (const sim::Shape& p : set) count += p.contains(lat, lon, 0.0) ? 1 : 0;
+  lua_pushinteger(L, count);
   return 1;
 }
 
@@ -115,7 +148,10 @@ void bind_geo(lua_State* L) {
       {"kwikpos", guarded<l_kwikpos>},         {"destination", guarded<l_destination>},
       {"wrap180", guarded<l_wrap<geo::wrap180>>}, {"wrap360", guarded<l_wrap<geo::wrap360>>},
       {"gym_wrap180", guarded<l_wrap<geo::gym_wrap180>>}, {"cpa", guarded<l_cpa>},
-      {"inside", guarded<l_inside>},           {nullptr, nullptr}};
+      {"inside", guarded<l_inside>},           {"polygons", guarded<l_polygons>},
+      {nullptr, nullptr}};
+  static const luaL_Reg polygon_methods[] = {{"count_inside", guarded<l_count_inside>}, {nullptr, nullptr}};
+  define_class(L, kPolygonsMt, polygon_methods);
   push_squawk_subtable(L, "geo");
   luaL_setfuncs(L, fns, 0);
   lua_pop(L, 1);
