@@ -8,7 +8,8 @@
 // (script/lua_env.h): BlueSky-Gym's DescentEnv-v0 (envs/descent.lua; one env
 // step = 30 x 1 s simulator steps of one aircraft through the full
 // Simulation, OpenAP when SQUAWK_OPENAP names its data) and VerticalCREnv-v0
-// (envs/vertical_cr.lua, six aircraft), each against BlueSky-Gym's measured
+// (envs/vertical_cr.lua, six aircraft), SectorCREnv-v0 (envs/sector_cr.lua)
+// and MergeEnv-v0 (envs/merge.lua), each against BlueSky-Gym's measured
 // figure (docs/gym_envs.md, bench/gym_ref/compare.py).
 // Prints figures only; no timing is asserted anywhere.
 #include <chrono>
@@ -35,6 +36,10 @@ constexpr double kBlueSkyGymZero = 132.2;    // env steps/s, measured (zero acti
 // measured at load average 16 on the 2-core machine; HorizontalCREnv's figures above were taken idle.
 constexpr double kBlueSkyGymDescent = 5.9;
 constexpr double kBlueSkyGymVerticalCr = 13.4;  // VerticalCREnv-v0, the same way, load average 17-20
+// SectorCREnv-v0 and MergeEnv-v0 on the real BlueSky, measured the same way (compare.py, random/zero/-1
+// episodes together, step() only), load average 14 on the 2-core machine.
+constexpr double kBlueSkyGymSectorCr = 34.0;
+constexpr double kBlueSkyGymMerge = 21.4;
 
 struct Run {
   long long steps = 0;
@@ -177,6 +182,18 @@ Run two_threads(env::Rules rules, double seconds) {
   return {a.steps + b.steps, a.episodes + b.episodes, std::max(a.seconds, b.seconds), a.checksum + b.checksum};
 }
 
+// The traffic environments with heading and speed actions (envs/sector_cr.lua:
+// 5 x 1 s simulator steps of 5-20 aircraft per env step; envs/merge.lua:
+// 10 x 5 s of 20 aircraft on routes).
+void traffic_rows(double seconds) {
+  std::printf("Lua traffic environments (sector: 5 x 1 s simulator steps of 5-20 aircraft per env step; "
+              "merge: 10 x 5 s of 20):\n");
+  print("SectorCREnv-v0 (envs/sector_cr.lua), random, 1 thread", drive_lua("envs/sector_cr.lua", true, seconds, 1),
+        kBlueSkyGymSectorCr);
+  print("MergeEnv-v0 (envs/merge.lua), random, 1 thread", drive_lua("envs/merge.lua", true, seconds, 1),
+        kBlueSkyGymMerge);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -199,5 +216,6 @@ int main(int argc, char** argv) {
         kBlueSkyGymDescent);
   print("VerticalCREnv-v0 (envs/vertical_cr.lua), random, 1 thread",
         drive_lua("envs/vertical_cr.lua", true, seconds, 1), kBlueSkyGymVerticalCr);
+  traffic_rows(seconds);
   return 0;
 }
