@@ -140,6 +140,11 @@ function S:generate_waypoints()
   end
 end
 
+-- The name of aircraft k (1-based): the agent, then "1", "2", ... (L210, L216).
+function S:acid(k)
+  return k == 1 and ACTOR or tostring(k - 1)
+end
+
 -- L189-216: starts uniform in the bounding box, kept when inside the sector;
 -- each aircraft heads for its own waypoint. Aircraft 0 is the agent.
 function S:generate_ac()
@@ -155,9 +160,10 @@ function S:generate_ac()
     local lat, lon = nm_to_latlon(x, y)
     if geo.inside(lat, lon, self.poly) then starts[#starts + 1] = {lat, lon} end
   end
-  self.ids = {}
+  self.acids, self.ids = {}, {}
   for k, s in ipairs(starts) do
-    local id = k == 1 and ACTOR or tostring(k - 1)
+    local id = self:acid(k)
+    self.acids[k] = id
     if k > 1 then self.ids[#self.ids + 1] = id end
     local wlat, wlon = nm_to_latlon(self.wpts[k][1], self.wpts[k][2])
     self.sim:create{id = id, type = "A320", lat = s[1], lon = s[2], hdg_deg = get_hdg(s[1], s[2], wlat, wlon),
@@ -182,29 +188,36 @@ function S:reset(seed, options)
   return self:observe(), self:info()
 end
 
--- L236-312.
-function S:observe()
-  local lat, lon, _, hdg, tas = self.sim:values(ACTOR)
-  local wlat, wlon = nm_to_latlon(self.wpts[1][1], self.wpts[1][2])
-  self.drift = C.drift(hdg, lat, lon, wlat, wlon)
+-- L236-312: the observation of aircraft `own` flying to waypoint `wpt`
+-- ({x, y} NM) among the aircraft named in `others`, and its drift [deg].
+function S:observe_aircraft(own, wpt, others)
+  local lat, lon, _, hdg, tas = self.sim:values(own)
+  local wlat, wlon = nm_to_latlon(wpt[1], wpt[2])
+  local drift = C.drift(hdg, lat, lon, wlat, wlon)
   local ox, oy = latlon_to_nm(lat, lon)
   ox, oy = ox * NM2KM * 1000, oy * NM2KM * 1000
   local rel = {}
-  for i, id in ipairs(self.ids) do
+  for i, id in ipairs(others) do
     local ilat, ilon, _, ihdg, itas = self.sim:values(id)
     local x, y = latlon_to_nm(ilat, ilon)
     x, y = x * NM2KM * 1000, y * NM2KM * 1000
     rel[i] = {x - ox, y - oy, ihdg, itas, euclid(ox, oy, x, y)}
   end
   local t = C.nearest({hdg, tas}, rel, NUM_AC_STATE)
-  local d = math.rad(self.drift)
+  local d = math.rad(drift)
   return C.flat{
     (tas - 150) / 6, math.cos(d), t.cos,
     C.map(t.dist, function(v) return (v - 50000.) / 15000. end),
     math.sin(d), t.sin,
     C.map(t.vx, function(v) return v / 32 end), C.map(t.vy, function(v) return v / 66 end),
     C.map(t.x, function(v) return v / 13000 end), C.map(t.y, function(v) return v / 13000 end),
-  }
+  }, drift
+end
+
+function S:observe()
+  local obs
+  obs, self.drift = self:observe_aircraft(ACTOR, self.wpts[1], self.ids)
+  return obs
 end
 
 function S:info()
