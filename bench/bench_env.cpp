@@ -18,12 +18,15 @@
 #include <thread>
 #include <vector>
 
+#include <lua.hpp>
+
 #include "core/geo.h"
 #include "core/rng.h"
 #include "core/units.h"
 #include "core/paths.h"
 #include "env/horizontal_cr.h"
 #include "script/lua_env.h"
+#include "script/vm.h"
 
 using namespace squawk;
 using Clock = std::chrono::steady_clock;
@@ -182,6 +185,48 @@ Run two_threads(env::Rules rules, double seconds) {
   return {a.steps + b.steps, a.episodes + b.episodes, std::max(a.seconds, b.seconds), a.checksum + b.checksum};
 }
 
+// The multi-agent sector (envs/sector_multi.lua, PettingZoo's parallel shape,
+// which the single-agent LuaEnv refuses) with `agents` agents, each given a
+// uniform random action every step, episodes until `seconds` of wall time.
+// One env step moves every agent 5 s.
+Run drive_multi(int agents, double seconds) {
+  script::VmOptions o;
+  o.max_instructions = 0;  // one call runs the whole loop
+  script::Vm vm(o);
+  const std::string path = paths::resource("envs/sector_multi.lua");
+  vm.add_script_folder(paths::dirname(path));
+  char code[1024];
+  std::snprintf(code, sizeof code, R"(
+    local env = squawk.gym.load([[%s]])
+    local t0, steps, episodes, k = os.clock(), 0, 0, 0
+    while os.clock() - t0 < %g do
+      env:reset(k, {num_agents = %d})
+      while #env.agents > 0 do
+        local actions = {}
+        for _, a in ipairs(env.agents) do actions[a] = {2 * math.random() - 1, 2 * math.random() - 1} end
+        env:step(actions)
+        steps = steps + 1
+      end
+      episodes, k = episodes + 1, k + 1
+    end
+    BENCH_STEPS, BENCH_EPISODES = steps, episodes)",
+                path.c_str(), seconds, agents);
+  Run r;
+  const auto t0 = Clock::now();
+  if (const Status st = vm.run_string(code, "bench_env multi"); !st.is_ok()) {
+    std::fprintf(stderr, "bench_env: %s\n", st.message().c_str());
+    return r;
+  }
+  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  lua_State* L = vm.state();
+  lua_getglobal(L, "BENCH_STEPS");
+  r.steps = lua_tointeger(L, -1);
+  lua_getglobal(L, "BENCH_EPISODES");
+  r.episodes = lua_tointeger(L, -1);
+  lua_pop(L, 2);
+  return r;
+}
+
 // The traffic environments with heading and speed actions (envs/sector_cr.lua:
 // 5 x 1 s simulator steps of 5-20 aircraft per env step; envs/merge.lua:
 // 10 x 5 s of 20 aircraft on routes).
@@ -192,6 +237,10 @@ void traffic_rows(double seconds) {
         kBlueSkyGymSectorCr);
   print("MergeEnv-v0 (envs/merge.lua), random, 1 thread", drive_lua("envs/merge.lua", true, seconds, 1),
         kBlueSkyGymMerge);
+  const Run multi = drive_multi(10, seconds);
+  std::printf("  %-56s %12.0f env steps/s  %8.0f episodes/s  (no BlueSky-Gym counterpart)\n",
+              "SectorMultiCR (envs/sector_multi.lua), 10 agents, random", multi.steps / multi.seconds,
+              multi.episodes / multi.seconds);
 }
 
 }  // namespace
