@@ -236,8 +236,11 @@ def run_squawk(spec, ref, squawk):
         res = subprocess.run(cmd, capture_output=True, text=True)
     if res.returncode != 0:
         sys.exit(f'compare.py: {" ".join(cmd)} failed:\n{res.stderr}')
-    got = {}
+    got, timing = {}, None
     for line in res.stdout.splitlines():
+        if line.startswith('time '):  # CPU seconds in the Lua env's step(), and the steps
+            t = line.split()
+            timing = (float(t[1]), int(t[3]))
         if not line.startswith('obs '):
             continue
         head, tail = line.split(' | ')
@@ -245,7 +248,7 @@ def run_squawk(spec, ref, squawk):
         k, step = int(parts[1]), int(parts[2])
         t = tail.split()
         got[(k, step)] = ([float(v) for v in parts[3:]], float(t[1]), t[3] == 'true', t[5] == 'true')
-    return got
+    return got, timing
 
 
 def main():
@@ -262,7 +265,8 @@ def main():
     spec = ENVS[a.env]
     if not (a.reference and a.reference.exists()) and not (PREFIX / 'bluesky' / 'bluesky' / '__init__.py').exists():
         skip(f'no BlueSky tree at {PREFIX} (run ../shared/bluesky_ref/setup.sh)')
-    if a.reference and a.reference.exists():
+    reused = bool(a.reference and a.reference.exists())
+    if reused:
         saved = json.loads(a.reference.read_text())
         ref, commit = saved['episodes'], saved['commit']
     else:
@@ -272,7 +276,7 @@ def main():
             a.reference.write_text(json.dumps(dict(env=a.env, seed=a.seed, commit=commit, episodes=ref)))
     if not Path(a.squawk).exists():
         skip(f'no squawk binary at {a.squawk}')
-    got = run_squawk(spec, ref, a.squawk)
+    got, timing = run_squawk(spec, ref, a.squawk)
 
     # component index -> field
     owner = [f for f in spec['fields'] for _ in range(f[1])]
@@ -311,7 +315,11 @@ def main():
     print(f'episode lengths differing: {length_mismatch or "none"}; termination or truncation differing: {term_mismatch or "none"}')
     lengths = [len(ep['rewards']) for ep in ref]
     print(f'reference episode lengths: min {min(lengths)}, max {max(lengths)}; BlueSky-Gym '
-          f'{sum(lengths) / sum(ep["step_s"] for ep in ref):.1f} env steps/s (step() only, this run)')
+          f'{sum(lengths) / sum(ep["step_s"] for ep in ref):.1f} env steps/s (step() only, '
+          f'{"the recorded run" if reused else "this run"})')
+    if timing:
+        print(f'squawk {spec["lua"]} on the same episodes: {timing[1] / timing[0]:.0f} env steps/s '
+              f'(step() only, CPU time)')
     if a.json_out:
         a.json_out.write_text(json.dumps(dict(reference=ref, worst=worst, reward=worst_r), indent=1))
     print('within tolerance' if ok else 'OUTSIDE TOLERANCE')
