@@ -13,6 +13,7 @@
 -- or after 50 steps. Units: degrees, metres, m/s, NM as named.
 
 local C = require("traffic_cr")
+local Draws = require("gym_draws")
 local geo = squawk.geo
 
 local DISTANCE_MARGIN = 10                           -- L12: "km", compared with NM (L260-264)
@@ -32,15 +33,9 @@ local NUM_AC_STATE = 5                               -- L37
 local RWY_LAT, RWY_LON = 52.36239301495972, 4.713195734579777  -- [deg] L40-41
 local ACID = "KL001"
 
--- fn:24-42: the point d km from (lat, lon) on the initial bearing, on a sphere of 6371 km.
-local function point_at_distance(lat1, lon1, d, bearing)
-  local R = 6371
-  lat1, lon1 = math.rad(lat1), math.rad(lon1)
-  local a = math.rad(bearing)
-  local lat2 = math.asin(math.sin(lat1) * math.cos(d / R) + math.cos(lat1) * math.sin(d / R) * math.cos(a))
-  local lon2 = lon1 + math.atan(math.sin(a) * math.sin(d / R) * math.cos(lat1),
-                                math.cos(d / R) - math.sin(lat1) * math.sin(lat2))
-  return math.deg(lat2), math.deg(lon2)
+-- fn:24-42 get_point_at_distance (km, a 6371 km sphere) is squawk.geo.destination (m).
+local function point_at_distance(lat, lon, d_km, bearing)
+  return geo.destination(lat, lon, bearing, d_km * 1000)
 end
 
 local FIX_LAT, FIX_LON = point_at_distance(RWY_LAT, RWY_LON, 200, 0)  -- L43-45: 200 "NM", in km
@@ -70,8 +65,8 @@ local M = {
 -- One aircraft at distance [km] and bearing [deg] from the fix, heading
 -- bearing - 180 (L114-118, L149-153; traf.cre keeps the heading unwrapped).
 function M:spawn(id, dmin, dmax)
-  local bearing = C.uniform(self, -D_HEADING, D_HEADING)
-  local distance = C.uniform(self, dmin, dmax)
+  local bearing = C.uniform(self.draws, -D_HEADING, D_HEADING)
+  local distance = C.uniform(self.draws, dmin, dmax)
   local lat, lon = point_at_distance(FIX_LAT, FIX_LON, distance, bearing)
   self.sim:create{id = id, type = "A320", lat = lat, lon = lon, hdg_deg = bearing - 180, alt_m = AC_ALT,
                   spd = AC_SPD}
@@ -83,7 +78,7 @@ function M:reset(seed, options)
     assert(self.sim:exec("DT 5"))
   end
   self.sim:delete_all()
-  C.start_draws(self, seed, options)
+  self.draws = Draws.new(seed, options and options.draws)
   self.wpt_reach, self.faf_reached = 0, 0
   self.total_reward, self.total_intrusions = 0, 0
   self:spawn(ACID, SPAWN_DISTANCE_MIN, SPAWN_DISTANCE_MAX)

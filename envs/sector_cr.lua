@@ -13,6 +13,8 @@
 -- Units: NM in the sector's flat frame (x north, y east), metres, m/s.
 
 local C = require("traffic_cr")
+local Draws = require("gym_draws")
+local F = require("gym_functions")
 local geo = squawk.geo
 
 local AC_DENSITY_MU, AC_DENSITY_SIGMA = 0.005, 0.001  -- [AC/NM^2] L11-12 ("normal" mode, L97-99)
@@ -53,7 +55,7 @@ local COS_CENTER = math.cos(math.rad(CENTER_LAT))
 
 -- fn:98-114 and fn:116-132: the sector's flat frame [NM] <-> lat/lon [deg].
 local function nm_to_latlon(x, y)
-  return CENTER_LAT + x / 60, CENTER_LON + y / (60 * COS_CENTER)
+  return F.nm_to_latlong(CENTER_LAT, CENTER_LON, {x, y})
 end
 local function latlon_to_nm(lat, lon)
   return (lat - CENTER_LAT) * 60, (lon - CENTER_LON) * 60 * COS_CENTER
@@ -68,39 +70,18 @@ local function get_hdg(lat1, lon1, lat2, lon2)
   return math.fmod(math.deg(math.atan(x, y)) + 360, 360)
 end
 
--- fn:77-96: shoelace area [NM^2].
-local function polygon_area(p)
-  local a = 0.0
-  for i = 1, #p do
-    local q = p[i % #p + 1]
-    a = a + (p[i][1] * q[2] - p[i][2] * q[1])
-  end
-  return math.abs(a) / 2.0
-end
-
--- fn:61-75: by angle atan2(y, x), ascending.
-local function sort_by_angle(p)
-  table.sort(p, function(a, b) return math.atan(a[2], a[1]) < math.atan(b[2], b[1]) end)
-end
-
--- fn:44-59: a point on the circle of radius r at angle 2 pi U(0, 1).
-function S:point_on_circle(r)
-  local alpha = 2 * math.pi * C.uniform(self, 0., 1.)
-  return {r * math.cos(alpha), r * math.sin(alpha)}
-end
-
 -- L140-159: three points on the circle of area 3750 NM^2, more until the
 -- polygon they span has 2400 NM^2; the area "airspace" in lat/lon.
 function S:generate_polygon()
   local r = math.sqrt(POLY_AREA_MAX / math.pi)
   local p = {}
-  for k = 1, 3 do p[k] = self:point_on_circle(r) end
-  sort_by_angle(p)
-  local area = polygon_area(p)
+  for k = 1, 3 do p[k] = F.random_point_on_circle(r, self.draws) end
+  F.sort_points_clockwise(p)
+  local area = F.polygon_area(p)
   while area < POLY_AREA_MIN do
-    p[#p + 1] = self:point_on_circle(r)
-    sort_by_angle(p)
-    area = polygon_area(p)
+    p[#p + 1] = F.random_point_on_circle(r, self.draws)
+    F.sort_points_clockwise(p)
+    area = F.polygon_area(p)
   end
   self.poly_area, self.poly_points, self.poly = area, p, {}
   for _, q in ipairs(p) do
@@ -125,7 +106,7 @@ function S:generate_waypoints()
     perim = perim + len
   end
   local d = {}
-  for k = 1, self.num_ac do d[k] = C.uniform(self, 0, perim) end
+  for k = 1, self.num_ac do d[k] = C.uniform(self.draws, 0, perim) end
   table.sort(d)
   self.wpts = {}
   local current, e = 0, 1
@@ -155,8 +136,8 @@ function S:generate_ac()
   end
   local starts = {}
   while #starts < self.num_ac do
-    local x = C.uniform(self, min_x, max_x)
-    local y = C.uniform(self, min_y, max_y)
+    local x = C.uniform(self.draws, min_x, max_x)
+    local y = C.uniform(self.draws, min_y, max_y)
     local lat, lon = nm_to_latlon(x, y)
     if geo.inside(lat, lon, self.poly) then starts[#starts + 1] = {lat, lon} end
   end
@@ -177,11 +158,11 @@ function S:reset(seed, options)
     assert(self.sim:exec("DT 1"))
   end
   self.sim:delete_all()
-  C.start_draws(self, seed, options)
+  self.draws = Draws.new(seed, options and options.draws)
   self.total_reward, self.total_intrusions = 0, 0
   self:generate_polygon()
   -- L97-99: int(max(ceil(density * area), NUM_AC_STATE + 1))
-  local density = C.normal(self, AC_DENSITY_MU, AC_DENSITY_SIGMA)
+  local density = C.normal(self.draws, AC_DENSITY_MU, AC_DENSITY_SIGMA)
   self.num_ac = math.floor(math.max(math.ceil(density * self.poly_area), NUM_AC_STATE + 1))
   self:generate_waypoints()
   self:generate_ac()

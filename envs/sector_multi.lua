@@ -24,6 +24,7 @@
 
 local S = require("sector_cr")
 local C = require("traffic_cr")
+local Draws = require("gym_draws")
 local geo = squawk.geo
 
 local ACTION_FREQUENCY = 5                 -- 1 s steps, as SectorCREnv (sector_cr_env.py:31)
@@ -73,7 +74,7 @@ function M:reset(seed, options)
     assert(options.resolution == nil, "options.resolution: \"MVP\" or nil")
     assert(self.sim:exec("RESO OFF; CDMETHOD OFF"))
   end
-  C.start_draws(self, seed, options)
+  self.draws = Draws.new(seed, options and options.draws)
   self:generate_polygon()
   self.num_ac = n
   self:generate_waypoints()

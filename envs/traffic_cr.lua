@@ -11,29 +11,17 @@ local M = {}
 
 local MPS2KT = 1.94384  -- sector_cr_env.py:25, merge_env.py:32 (BlueSky's own is 1/0.514444)
 
--- The episode's random numbers. Each environment draws from the engine's
--- generator seeded at reset; to replay a recorded BlueSky-Gym episode,
--- options.draws lists every value the reference drew, in order, and is
--- consumed instead. Call M.start_draws(self, seed, options) in reset.
-function M.start_draws(env, seed, options)
-  math.randomseed(seed)
-  env.draws, env.ndraws = options and options.draws, 0
+-- numpy's np.random.uniform(lo, hi) / Python's random.uniform(lo, hi), lo +
+-- (hi - lo) u, and np.random.normal(mu, sigma) (Box-Muller), from a
+-- gym_draws object: the engine's seeded generator, or the values a recorded
+-- BlueSky-Gym episode drew (options.draws), in order.
+function M.uniform(draws, lo, hi)
+  return draws:replayed() or lo + (hi - lo) * math.random()
 end
 
-local function recorded(env)
-  env.ndraws = env.ndraws + 1
-  return assert(env.draws[env.ndraws], "options.draws ran out")
-end
-
--- numpy's np.random.uniform(lo, hi) / Python's random.uniform(lo, hi): lo + (hi - lo) u.
-function M.uniform(env, lo, hi)
-  if env.draws then return recorded(env) end
-  return lo + (hi - lo) * math.random()
-end
-
--- np.random.normal(mu, sigma) (Box-Muller on the engine's generator).
-function M.normal(env, mu, sigma)
-  if env.draws then return recorded(env) end
+function M.normal(draws, mu, sigma)
+  local v = draws:replayed()
+  if v then return v end
   local u1, u2 = 1 - math.random(), math.random()
   return mu + sigma * math.sqrt(-2 * math.log(u1)) * math.cos(2 * math.pi * u2)
 end
