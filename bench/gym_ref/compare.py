@@ -76,8 +76,8 @@ ENVS.update({
         fields=[('airspeed', 1, 6, 'm/s'), ('cos(drift)', 1, 1, ''), ('cos(track)', 4, 1, ''),
                 ('distances', 4, 15000, 'm'), ('sin(drift)', 1, 1, ''), ('sin(track)', 4, 1, ''),
                 ('vx_r', 4, 32, 'm/s'), ('vy_r', 4, 66, 'm/s'), ('x_r', 4, 13000, 'm'), ('y_r', 4, 13000, 'm')],
-        draws=[('numpy.random', 'uniform'), ('numpy.random', 'normal')],
-        action_size=2, max_steps=200,
+        draws=('uniform', 'normal'),
+        action_size=2, max_episode_steps=200,
         tolerance=dict(obs=1e-9, reward=1e-9),
     ),
     'merge': dict(
@@ -86,8 +86,8 @@ ENVS.update({
                 ('distances', 5, 250, 'NM'), ('faf_reached', 1, 1, ''), ('sin(drift)', 1, 1, ''),
                 ('sin(track)', 5, 1, ''), ('vx_r', 5, 150, 'm/s'), ('vy_r', 5, 150, 'm/s'),
                 ('waypoint_dist', 1, 250, 'NM'), ('x_r', 5, 1e6, 'm'), ('y_r', 5, 1e6, 'm')],
-        draws=[('random', 'uniform')],
-        action_size=2, max_steps=50,
+        draws=(), python_draws=('uniform',),
+        action_size=2, max_episode_steps=50,
         # BlueSky's compiled kwikdist_matrix takes equal-length vectors: given the
         # ownship's scalar position (merge_env.py:194) it returns one distance and
         # reset fails; the env runs on BlueSky's default Python geo functions.
@@ -183,11 +183,13 @@ def run_reference(spec, source, episodes, seed, gym_src):
     env = getattr(mod, spec['cls'])()
     keys = [f[0] for f in spec['fields']]
     flat = lambda o: [float(v) for k in keys for v in np.asarray(o[k], dtype=float).reshape(-1)]
-    # every random number reset draws (spec 'draws': module and function,
-    # default numpy's randint), in order: the episode's draws
+    # every random number reset draws, in order: the episode's draws (spec
+    # 'draws': np.random functions, default randint; 'python_draws': functions
+    # of Python's random)
     draws, recording = [], [False]
-    for modname, fname in spec.get('draws', [('numpy.random', 'randint')]):
-        module = importlib.import_module(modname)
+    sources = [(np.random, f) for f in spec.get('draws', ('randint',))] + \
+        [(random, f) for f in spec.get('python_draws', ())]
+    for module, fname in sources:
 
         def recorder(*a, _f=getattr(module, fname), **kw):
             v = _f(*a, **kw)
@@ -198,7 +200,7 @@ def run_reference(spec, source, episodes, seed, gym_src):
     np.random.seed(seed)
     random.seed(seed)
     act_rng = np.random.RandomState(seed + 1)
-    n_act, max_steps = spec.get('action_size', 1), spec.get('max_steps', 300)
+    n_act, max_steps = spec.get('action_size', 1), spec.get('max_episode_steps', 300)
     out = []
     for k in range(episodes):
         draws.clear()
