@@ -228,10 +228,10 @@ Run drive_multi(int agents, double seconds) {
 }
 
 // The traffic environments with heading and speed actions (envs/sector_cr.lua:
-// 5 x 1 s simulator steps of 5-20 aircraft per env step; envs/merge.lua:
+// 5 x 1 s simulator steps of 5-26 aircraft per env step; envs/merge.lua:
 // 10 x 5 s of 20 aircraft on routes).
 void traffic_rows(double seconds) {
-  std::printf("Lua traffic environments (sector: 5 x 1 s simulator steps of 5-20 aircraft per env step; "
+  std::printf("Lua traffic environments (sector: 5 x 1 s simulator steps of 5-26 aircraft per env step; "
               "merge: 10 x 5 s of 20):\n");
   print("SectorCREnv-v0 (envs/sector_cr.lua), random, 1 thread", drive_lua("envs/sector_cr.lua", true, seconds, 1),
         kBlueSkyGymSectorCr);
