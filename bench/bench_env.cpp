@@ -8,9 +8,10 @@
 // (script/lua_env.h): BlueSky-Gym's DescentEnv-v0 (envs/descent.lua; one env
 // step = 30 x 1 s simulator steps of one aircraft through the full
 // Simulation, OpenAP when SQUAWK_OPENAP names its data) and VerticalCREnv-v0
-// (envs/vertical_cr.lua, six aircraft), PlanWaypointEnv-v0 (envs/plan_waypoint.lua)
-// and StaticObstacleEnv-v0 (envs/static_obstacle.lua, ten polygons tested
-// after every simulator step), each against BlueSky-Gym's measured figure
+// (envs/vertical_cr.lua, six aircraft), PlanWaypointEnv-v0 (envs/plan_waypoint.lua),
+// StaticObstacleEnv-v0 (envs/static_obstacle.lua, ten polygons tested after
+// every simulator step), SectorCREnv-v0 (envs/sector_cr.lua) and MergeEnv-v0
+// (envs/merge.lua), each against BlueSky-Gym's measured figure
 // (docs/gym_envs.md, bench/gym_ref/compare.py).
 // Prints figures only; no timing is asserted anywhere.
 #include <chrono>
@@ -19,12 +20,15 @@
 #include <thread>
 #include <vector>
 
+#include <lua.hpp>
+
 #include "core/geo.h"
 #include "core/rng.h"
 #include "core/units.h"
 #include "core/paths.h"
 #include "env/horizontal_cr.h"
 #include "script/lua_env.h"
+#include "script/vm.h"
 
 using namespace squawk;
 using Clock = std::chrono::steady_clock;
@@ -41,6 +45,10 @@ constexpr double kBlueSkyGymVerticalCr = 13.4;  // VerticalCREnv-v0, the same wa
 // 30 episodes each, load average 7-20 (docs/gym_envs.md).
 constexpr double kBlueSkyGymPlanWaypoint = 32.4;
 constexpr double kBlueSkyGymStaticObstacle = 27.0;
+// SectorCREnv-v0 and MergeEnv-v0 on the real BlueSky, measured the same way (compare.py, random/zero/-1
+// episodes together, step() only), load average 14 on the 2-core machine.
+constexpr double kBlueSkyGymSectorCr = 34.0;
+constexpr double kBlueSkyGymMerge = 21.4;
 
 struct Run {
   long long steps = 0;
@@ -183,6 +191,64 @@ Run two_threads(env::Rules rules, double seconds) {
   return {a.steps + b.steps, a.episodes + b.episodes, std::max(a.seconds, b.seconds), a.checksum + b.checksum};
 }
 
+// The multi-agent sector (envs/sector_multi.lua, PettingZoo's parallel shape,
+// which the single-agent LuaEnv refuses) with `agents` agents, each given a
+// uniform random action every step, episodes until `seconds` of wall time.
+// One env step moves every agent 5 s.
+Run drive_multi(int agents, double seconds) {
+  script::VmOptions o;
+  o.max_instructions = 0;  // one call runs the whole loop
+  script::Vm vm(o);
+  const std::string path = paths::resource("envs/sector_multi.lua");
+  vm.add_script_folder(paths::dirname(path));
+  char code[1024];
+  std::snprintf(code, sizeof code, R"(
+    local env = squawk.gym.load([[%s]])
+    local t0, steps, episodes, k = os.clock(), 0, 0, 0
+    while os.clock() - t0 < %g do
+      env:reset(k, {num_agents = %d})
+      while #env.agents > 0 do
+        local actions = {}
+        for _, a in ipairs(env.agents) do actions[a] = {2 * math.random() - 1, 2 * math.random() - 1} end
+        env:step(actions)
+        steps = steps + 1
+      end
+      episodes, k = episodes + 1, k + 1
+    end
+    BENCH_STEPS, BENCH_EPISODES = steps, episodes)",
+                path.c_str(), seconds, agents);
+  Run r;
+  const auto t0 = Clock::now();
+  if (const Status st = vm.run_string(code, "bench_env multi"); !st.is_ok()) {
+    std::fprintf(stderr, "bench_env: %s\n", st.message().c_str());
+    return r;
+  }
+  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  lua_State* L = vm.state();
+  lua_getglobal(L, "BENCH_STEPS");
+  r.steps = lua_tointeger(L, -1);
+  lua_getglobal(L, "BENCH_EPISODES");
+  r.episodes = lua_tointeger(L, -1);
+  lua_pop(L, 2);
+  return r;
+}
+
+// The traffic environments with heading and speed actions (envs/sector_cr.lua:
+// 5 x 1 s simulator steps of 5-26 aircraft per env step; envs/merge.lua:
+// 10 x 5 s of 20 aircraft on routes).
+void traffic_rows(double seconds) {
+  std::printf("Lua traffic environments (sector: 5 x 1 s simulator steps of 5-26 aircraft per env step; "
+              "merge: 10 x 5 s of 20):\n");
+  print("SectorCREnv-v0 (envs/sector_cr.lua), random, 1 thread", drive_lua("envs/sector_cr.lua", true, seconds, 1),
+        kBlueSkyGymSectorCr);
+  print("MergeEnv-v0 (envs/merge.lua), random, 1 thread", drive_lua("envs/merge.lua", true, seconds, 1),
+        kBlueSkyGymMerge);
+  const Run multi = drive_multi(10, seconds);
+  std::printf("  %-56s %12.0f env steps/s  %8.0f episodes/s  (no BlueSky-Gym counterpart)\n",
+              "SectorMultiCR (envs/sector_multi.lua), 10 agents, random", multi.steps / multi.seconds,
+              multi.episodes / multi.seconds);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -210,5 +276,6 @@ int main(int argc, char** argv) {
         drive_lua("envs/plan_waypoint.lua", true, seconds, 1), kBlueSkyGymPlanWaypoint);
   print("StaticObstacleEnv-v0 (envs/static_obstacle.lua), random, 1 thread",
         drive_lua("envs/static_obstacle.lua", true, seconds, 1), kBlueSkyGymStaticObstacle);
+  traffic_rows(seconds);
   return 0;
 }

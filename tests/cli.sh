@@ -31,6 +31,9 @@ expect "env run random"  0 "terminated +5 of 5; truncated 0" -- "$sq" env run en
 expect "env run crash"   0 "mean length +[0-9]\.[0-9]+ steps" -- "$sq" env run envs/descent.lua --policy constant:-1 --episodes 3
 expect "env run json"    0 '"env": "DescentEnv-v0", "policy": "zero", "episodes": 2' -- "$sq" env run envs/descent.lua --policy zero --episodes 2 --json
 expect "env bad policy"  2 "constant:2: action 1 is outside \[-1, 1\]" -- "$sq" env run envs/descent.lua --policy constant:2
+expect "env run sector"  0 "terminated +0 of 3; truncated 3" -- "$sq" env run envs/sector_cr.lua --policy zero --episodes 3
+expect "env run merge"   0 '"env": "MergeEnv-v0", "policy": "random", "episodes": 2' -- "$sq" env run envs/merge.lua --episodes 2 --json
+expect "env multi"       1 "field 'parallel' = true: a multi-agent environment" -- "$sq" env run envs/sector_multi.lua
 expect "env no file"     1 "no environment file 'envs/nope.lua'" -- "$sq" env run envs/nope.lua
 expect "env plan waypoint" 0 "observation 20 numbers, action 1 in \[-1, 1\], at most 300 steps" -- "$sq" env run envs/plan_waypoint.lua --policy random --episodes 2
 expect "env static obstacle" 0 "observation 43 numbers, action 2 in \[-1, 1\], at most 100 steps" -- "$sq" env run envs/static_obstacle.lua --policy random --episodes 5

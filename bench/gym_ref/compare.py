@@ -12,19 +12,19 @@ default ~/.cache/squawk-bsref) with BlueSky's default settings. Where the
 `gymnasium` package is missing a minimal stand-in for gymnasium.Env and
 gymnasium.spaces.Box/Dict is used (the env only declares spaces with them),
 and pygame (rendering only) is stubbed. Episodes draw their start from numpy's
-global generator seeded with --seed; actions come from a separate generator:
-episode k uses a random policy U(-1, 1) (each component) when k % 3 == 0,
-the action 0 when k % 3 == 1 and -1 when k % 3 == 2 (the crash branch).
-Episodes run to termination or the registration's max_episode_steps (or
---steps, a quick check).
+global generator (and Python's `random`) seeded with --seed; actions come from
+a separate generator: episode k uses a random policy U(-1, 1) per component
+when k % 3 == 0, the action 0 when k % 3 == 1 and -1 when k % 3 == 2 (the
+descent's crash branch; full left turn and slowing down in the sector and
+the merge). An episode ends at termination, truncation or the registration's
+max_episode_steps (or --steps, a quick check).
 
-squawk side: the recorded draws (every np.random.randint of a reset, and
-every np.random.uniform where the environment draws polygons with it, in
-order) and actions are replayed through the Lua
+squawk side: the recorded draws (every random number a reset draws, in
+order: np.random.randint, or np.random.uniform/normal, or random.uniform) and actions are replayed through the Lua
 environment (bench/gym_ref/replay.lua) with the same OpenAP data
 ($BSREF_PREFIX/openap/openap/data). Observations are compared component by
-component after gymnasium's flattening (keys sorted), with rewards and
-termination, and the maximum differences printed (also in physical units).
+component after gymnasium's flattening (keys sorted), with rewards,
+termination and truncation, and the maximum differences printed (also in physical units).
 
 Exit status: 0 when every difference is within the tolerances below, 1 when
 one is not, 77 (skip) when the reference is absent (ctest's gym_ref_* tests
@@ -34,6 +34,7 @@ import argparse
 import importlib.util
 import json
 import os
+import random
 import subprocess
 import sys
 import tempfile
@@ -100,6 +101,35 @@ def plan_waypoint_unaimed(obs):
 
 ENVS['plan_waypoint'].update(unaimed=plan_waypoint_unaimed,
                              unaimed_note='cos/sin of a waypoint drawn 0 km away, on the aircraft')
+
+# SectorCREnv-v0 and MergeEnv-v0: two actions (heading, speed), draws from
+# numpy's uniform/normal (sector) and Python's random.uniform (merge), and
+# episodes that can also end by truncation (the sector's agent leaving it).
+ENVS.update({
+    'sector_cr': dict(
+        gym_file='bluesky_gym/envs/sector_cr_env.py', cls='SectorCREnv', lua='envs/sector_cr.lua',
+        fields=[('airspeed', 1, 6, 'm/s'), ('cos(drift)', 1, 1, ''), ('cos(track)', 4, 1, ''),
+                ('distances', 4, 15000, 'm'), ('sin(drift)', 1, 1, ''), ('sin(track)', 4, 1, ''),
+                ('vx_r', 4, 32, 'm/s'), ('vy_r', 4, 66, 'm/s'), ('x_r', 4, 13000, 'm'), ('y_r', 4, 13000, 'm')],
+        draws=('uniform', 'normal'),
+        action_size=2, max_episode_steps=200,
+        tolerance=dict(obs=1e-9, reward=1e-9),
+    ),
+    'merge': dict(
+        gym_file='bluesky_gym/envs/merge_env.py', cls='MergeEnv', lua='envs/merge.lua',
+        fields=[('airspeed', 1, 1, 'm/s'), ('cos(drift)', 1, 1, ''), ('cos(track)', 5, 1, ''),
+                ('distances', 5, 250, 'NM'), ('faf_reached', 1, 1, ''), ('sin(drift)', 1, 1, ''),
+                ('sin(track)', 5, 1, ''), ('vx_r', 5, 150, 'm/s'), ('vy_r', 5, 150, 'm/s'),
+                ('waypoint_dist', 1, 250, 'NM'), ('x_r', 5, 1e6, 'm'), ('y_r', 5, 1e6, 'm')],
+        draws=(), python_draws=('uniform',),
+        action_size=2, max_episode_steps=50,
+        # BlueSky's compiled kwikdist_matrix takes equal-length vectors: given the
+        # ownship's scalar position (merge_env.py:194) it returns one distance and
+        # reset fails; the env runs on BlueSky's default Python geo functions.
+        python_geo=True,
+        tolerance=dict(obs=1e-9, reward=1e-9),
+    ),
+})
 
 
 def skip(msg):
@@ -175,6 +205,10 @@ def run_reference(spec, source, episodes, seed, gym_src, steps=None):
     install_gym_common(gym_src)
     import bluesky as bs
     bs.init(mode='sim', detached=True, workdir=str(PREFIX / 'workdir'))
+    if spec.get('python_geo'):  # BlueSky's default (settings prefer_compiled = False)
+        from bluesky.tools.geo import _geo
+        for name in ('kwikdist', 'kwikdist_matrix', 'kwikqdrdist', 'kwikqdrdist_matrix'):
+            setattr(bs.tools.geo, name, getattr(_geo, name))
     with tempfile.TemporaryDirectory() as tmp:
         f = Path(tmp) / Path(spec['gym_file']).name
         f.write_text(source)
@@ -184,26 +218,35 @@ def run_reference(spec, source, episodes, seed, gym_src, steps=None):
     env = getattr(mod, spec['cls'])()
     keys = [f[0] for f in spec['fields']]
     flat = lambda o: [float(v) for k in keys for v in np.asarray(o[k], dtype=float).reshape(-1)]
-    # every np.random draw the environment makes (randint, and uniform where
-    # spec['draws'] says), in order: the episode's draws
-    draws = []
-    for name in spec.get('draws', ('randint',)):
-        def recorder(*a, _f=getattr(np.random, name), **kw):
+    # every random number reset draws, in order: the episode's draws (spec
+    # 'draws': np.random functions, default randint; 'python_draws': functions
+    # of Python's random)
+    draws, recording = [], [False]
+    sources = [(np.random, f) for f in spec.get('draws', ('randint',))] + \
+        [(random, f) for f in spec.get('python_draws', ())]
+    for module, fname in sources:
+
+        def recorder(*a, _f=getattr(module, fname), **kw):
             v = _f(*a, **kw)
-            draws.append(int(v) if isinstance(v, (int, np.integer)) else float(v))
-            return draws[-1]
-        setattr(np.random, name, recorder)
+            if recording[0]:
+                draws.append(v.item() if hasattr(v, 'item') else v)
+            return v
+        setattr(module, fname, recorder)
     np.random.seed(seed)
+    random.seed(seed)
     act_rng = np.random.RandomState(seed + 1)
-    size = spec.get('action_size', 1)
+    n_act = spec.get('action_size', 1)
+    # the registration's max_episode_steps, or fewer (--steps)
+    max_steps = min(steps or 10**9, spec.get('max_episode_steps', 300))
     out = []
     for k in range(episodes):
         draws.clear()
+        recording[0] = True
         obs, _ = env.reset()
-        ep = dict(draws=list(draws), obs=[flat(obs)], rewards=[], terminated=[], actions=[])
-        # the registration's max_episode_steps, or fewer (--steps)
-        for _ in range(min(steps or 10**9, spec.get('max_episode_steps', 300))):
-            a = act_rng.uniform(-1, 1, size) if k % 3 == 0 else np.full(size, 0.0 if k % 3 == 1 else -1.0)
+        recording[0] = False
+        ep = dict(draws=list(draws), obs=[flat(obs)], rewards=[], terminated=[], truncated=[], actions=[])
+        for _ in range(max_steps):
+            a = act_rng.uniform(-1, 1, size=n_act) if k % 3 == 0 else np.full(n_act, 0.0 if k % 3 == 1 else -1.0)
             t0 = time.perf_counter()
             obs, r, term, trunc, _ = env.step(a)
             ep['step_s'] = ep.get('step_s', 0.0) + time.perf_counter() - t0
@@ -211,7 +254,8 @@ def run_reference(spec, source, episodes, seed, gym_src, steps=None):
             ep['obs'].append(flat(obs))
             ep['rewards'].append(float(r))
             ep['terminated'].append(bool(term))
-            if term:
+            ep['truncated'].append(bool(trunc))
+            if term or trunc:
                 break
         out.append(ep)
     return out
@@ -224,22 +268,26 @@ def run_squawk(spec, ref, squawk):
             for k, ep in enumerate(ref):
                 f.write(f'episode {k} draws=' + ','.join(repr(v) for v in ep['draws']) + '\n')
                 for a in ep['actions']:
+                    a = a if isinstance(a, list) else [a]  # a --reference file from before 2-D actions
                     f.write('action ' + ' '.join(repr(v) for v in a) + '\n')
         cmd = [squawk, 'run', str(ROOT / 'bench/gym_ref/replay.lua'), str(ROOT / spec['lua']), str(trace),
                '--allow-read', tmp, '--openap', str(PREFIX / 'openap/openap/data')]
         res = subprocess.run(cmd, capture_output=True, text=True)
     if res.returncode != 0:
         sys.exit(f'compare.py: {" ".join(cmd)} failed:\n{res.stderr}')
-    got = {}
+    got, timing = {}, None
     for line in res.stdout.splitlines():
+        if line.startswith('time '):  # CPU seconds in the Lua env's step(), and the steps
+            t = line.split()
+            timing = (float(t[1]), int(t[3]))
         if not line.startswith('obs '):
             continue
         head, tail = line.split(' | ')
         parts = head.split()
         k, step = int(parts[1]), int(parts[2])
         t = tail.split()
-        got[(k, step)] = ([float(v) for v in parts[3:]], float(t[1]), t[3] == 'true')
-    return got
+        got[(k, step)] = ([float(v) for v in parts[3:]], float(t[1]), t[3] == 'true', t[5] == 'true')
+    return got, timing
 
 
 def main():
@@ -257,7 +305,8 @@ def main():
     spec = ENVS[a.env]
     if not (a.reference and a.reference.exists()) and not (PREFIX / 'bluesky' / 'bluesky' / '__init__.py').exists():
         skip(f'no BlueSky tree at {PREFIX} (run ../shared/bluesky_ref/setup.sh)')
-    if a.reference and a.reference.exists():
+    reused = bool(a.reference and a.reference.exists())
+    if reused:
         saved = json.loads(a.reference.read_text())
         ref, commit = saved['episodes'], saved['commit']
     else:
@@ -267,7 +316,7 @@ def main():
             a.reference.write_text(json.dumps(dict(env=a.env, seed=a.seed, commit=commit, episodes=ref)))
     if not Path(a.squawk).exists():
         skip(f'no squawk binary at {a.squawk}')
-    got = run_squawk(spec, ref, a.squawk)
+    got, timing = run_squawk(spec, ref, a.squawk)
 
     # component index -> field
     owner = [f for f in spec['fields'] for _ in range(f[1])]
@@ -279,7 +328,7 @@ def main():
         if n_got != n_ref:
             length_mismatch.append((k, n_ref, n_got))
         for s in range(min(n_ref, n_got) + 1):
-            obs, r, term = got[(k, s)]
+            obs, r, term, trunc = got[(k, s)]
             unaimed = spec.get('unaimed', lambda o: [])(ep['obs'][s])
             skipped += len(unaimed)
             for i, f in enumerate(owner):
@@ -294,7 +343,7 @@ def main():
             d = abs(r - ep['rewards'][s - 1])
             if d > worst_r[0]:
                 worst_r = (d, (k, s))
-            if term != ep['terminated'][s - 1]:
+            if term != ep['terminated'][s - 1] or trunc != ep.get('truncated', [False] * s)[s - 1]:
                 term_mismatch.append((k, s))
     tol = spec['tolerance']
     ok = not length_mismatch and not term_mismatch and worst_r[0] <= tol['reward']
@@ -307,12 +356,16 @@ def main():
         ok = ok and d <= tol['obs']
         print(f'| {n} | {d:.3g} | {d * scale:.3g} {unit} | {where} | {tol["obs"]:g} |')
     print(f'| reward | {worst_r[0]:.3g} | | {worst_r[1]} | {tol["reward"]:g} |')
-    print(f'episode lengths differing: {length_mismatch or "none"}; termination differing: {term_mismatch or "none"}')
+    print(f'episode lengths differing: {length_mismatch or "none"}; termination or truncation differing: {term_mismatch or "none"}')
     if skipped:
         print(f'not compared: {skipped} components without a defined direction ({spec["unaimed_note"]})')
     lengths = [len(ep['rewards']) for ep in ref]
     print(f'reference episode lengths: min {min(lengths)}, max {max(lengths)}; BlueSky-Gym '
-          f'{sum(lengths) / sum(ep["step_s"] for ep in ref):.1f} env steps/s (step() only, this run)')
+          f'{sum(lengths) / sum(ep["step_s"] for ep in ref):.1f} env steps/s (step() only, '
+          f'{"the recorded run" if reused else "this run"})')
+    if timing:
+        print(f'squawk {spec["lua"]} on the same episodes: {timing[1] / timing[0]:.0f} env steps/s '
+              f'(step() only, CPU time)')
     if a.json_out:
         a.json_out.write_text(json.dumps(dict(reference=ref, worst=worst, reward=worst_r), indent=1))
     print('within tolerance' if ok else 'OUTSIDE TOLERANCE')

@@ -66,6 +66,9 @@ Status LuaEnv::read_spec() {
     s.id = field_string(L, e, "id", "");
     if (s.id.empty()) throw ArgError("field 'id' (the environment's name, a string) is required");
     s.source = field_string(L, e, "source", "");
+    if (field_boolean(L, e, "parallel", false))
+      throw ArgError("field 'parallel' = true: a multi-agent environment (PettingZoo's parallel API, tables "
+                     "keyed by agent); this driver steps single-agent files (docs/gym_envs.md)");
     get_field(L, e, "observation");
     if (!lua_istable(L, -1))
       throw ArgError("field 'observation' must be an array of {name =, size =}");

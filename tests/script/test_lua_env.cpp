@@ -193,6 +193,13 @@ TEST_CASE("the driver adds the TimeLimit and checks what the file returns") {
         std::string::npos);
 }
 
+TEST_CASE("a multi-agent file is refused by the single-agent driver, by name") {
+  auto e = script::LuaEnv::load(repo("envs/sector_multi.lua"), {});
+  REQUIRE_FALSE(e.is_ok());
+  CHECK(e.status().message().find("sector_multi.lua: field 'parallel' = true: a multi-agent environment") !=
+        std::string::npos);
+}
+
 TEST_CASE("VerticalCREnv-v0: DescentEnv plus five intruders in conflict, -50 per intrusion") {
   auto e = load("envs/vertical_cr.lua");
   const auto& s = e->spec();
