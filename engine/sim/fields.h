@@ -69,6 +69,7 @@ inline constexpr Field<A> kAircraft[] = {
     {"tas_kt", "kt", [](const A& r) -> Value { return units::ms_to_kt(r.t.tas[r.i]); }},
     {"cas_kt", "kt", [](const A& r) -> Value { return units::ms_to_kt(r.t.cas[r.i]); }},
     {"gs_kt", "kt", [](const A& r) -> Value { return units::ms_to_kt(r.t.gs[r.i]); }},
+    {"mach", "", [](const A& r) -> Value { return r.t.mach[r.i]; }},
     {"vs_fpm", "fpm", [](const A& r) -> Value { return units::ms_to_fpm(r.t.vs[r.i]); }},
     {"lnav", "", [](const A& r) -> Value { return r.t.lnav[r.i] != 0; }},
     {"vnav", "", [](const A& r) -> Value { return r.t.vnav[r.i] != 0; }},
