@@ -51,8 +51,8 @@
   const MAX_ROWS = 200;
   function renderTraffic(s) {
     const conf = new Set();
-    for (const c of s.conflicts) c.ids.forEach((id) => conf.add(id));
-    for (const c of s.los) c.ids.forEach((id) => conf.add(id));
+    for (const c of s.conflicts) [c.own, c.intruder].forEach((id) => conf.add(id));
+    for (const c of s.los) [c.own, c.intruder].forEach((id) => conf.add(id));
     let list = s.aircraft;
     if (list.length > MAX_ROWS) {
       const rank = (a) => (a.id === Scope.selected ? 2 : 0) + (conf.has(a.id) ? 1 : 0);
@@ -98,14 +98,14 @@
   // later (beyond).
   function renderConflicts(s) {
     const items = s.los.map((l) =>
-      `<li class="los" data-ids="${esc(l.ids.join(" "))}"><b>${esc(l.ids.join(" – "))}</b> LOSS OF SEPARATION ` +
+      `<li class="los" data-ids="${esc(l.own + " " + l.intruder)}"><b>${esc(l.own + " – " + l.intruder)}</b> LOSS OF SEPARATION ` +
       `${l.dist_nm.toFixed(1)} NM ${Math.round(Math.abs(l.dalt_ft))} ft</li>`);
-    const when = (c) => c.tlos_s != null ? c.tlos_s : c.tcpa_s, lost = new Set(s.los.map((l) => l.ids.join()));
+    const when = (c) => c.tlos_s != null ? c.tlos_s : c.tcpa_s, lost = new Set(s.los.map((l) => l.own + "," + l.intruder));
     for (const c of s.conflicts.slice().sort((p, q) => when(p) - when(q))) {
-      if (lost.has(c.ids.join())) continue;
+      if (lost.has(c.own + "," + c.intruder)) continue;
       const t = when(c);
       const cls = t <= 60 ? "urgent" : t <= 120 ? "soon" : "later";
-      items.push(`<li class="${cls}" data-ids="${esc(c.ids.join(" "))}"><b>${esc(c.ids.join(" – "))}</b> ` +
+      items.push(`<li class="${cls}" data-ids="${esc(c.own + " " + c.intruder)}"><b>${esc(c.own + " – " + c.intruder)}</b> ` +
         `LoS ${t > 0 ? "in " + mmss(t) : "now"}  CPA ${c.dcpa_nm.toFixed(1)} NM ${c.tcpa_s > 0 ? "in " + mmss(c.tcpa_s) : "passed"}</li>`);
     }
     const cap = s.conflict_cap ? `<li class="cap">${esc(s.conflict_cap)}</li>` : "";

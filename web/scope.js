@@ -210,8 +210,8 @@ const Scope = (() => {
 
   function inConflict() {
     const m = new Map();
-    for (const c of state.conflicts) for (const id of c.ids) m.set(id, "conf");
-    for (const l of state.los) for (const id of l.ids) m.set(id, "los");
+    for (const c of state.conflicts) for (const id of [c.own, c.intruder]) m.set(id, "conf");
+    for (const l of state.los) for (const id of [l.own, l.intruder]) m.set(id, "los");
     return m;
   }
 
@@ -334,7 +334,7 @@ const Scope = (() => {
       symbols.push({ kind: "aircraft", key: a.id, x: x - half, y: y - half, w: 2 * half, h: 2 * half, cx: x, cy: y });
     for (const c of state.conflicts) c.cpa.forEach(([lat, lon], i) => {
       const [x, y] = px(lat, lon);
-      if (onCanvas(x, y)) symbols.push({ kind: "cpa", key: `${c.ids.join("-")}:${i}`, x: x - 5, y: y - 5, w: 10, h: 10, cx: x, cy: y });
+      if (onCanvas(x, y)) symbols.push({ kind: "cpa", key: `${c.own}-${c.intruder}:${i}`, x: x - 5, y: y - 5, w: 10, h: 10, cx: x, cy: y });
     });
     const route = sel ? routeAhead(sel) : [];
     for (const w of route) {
@@ -380,7 +380,7 @@ const Scope = (() => {
       const text = [conflictText(c)], [w, h] = textBox(text, ["bold 11px monospace"]);
       const box = place(ax, ay, w, h, taken, crowded);
       if (!box) continue;
-      add({ kind: "conflict", key: c.ids.join("-"), text, ...box, ax, ay, color: urgency(c) });
+      add({ kind: "conflict", key: `${c.own}-${c.intruder}`, text, ...box, ax, ay, color: urgency(c) });
       left--;
     }
     for (const wp of route) {
@@ -406,7 +406,7 @@ const Scope = (() => {
   // "KLM1234–DLH4AX LoS 1:23 CPA 0.4 NM 2:10": the pair first, so that each countdown names whom it is for.
   function conflictText(c) {
     const tlos = c.tlos_s == null ? "" : c.tlos_s > 0 ? ` LoS ${mmss(c.tlos_s)}` : " LoS NOW";
-    return `${c.ids[0]}–${c.ids[1]}${tlos} CPA ${c.dcpa_nm.toFixed(1)} NM ${c.tcpa_s > 0 ? mmss(c.tcpa_s) : "passed"}`;
+    return `${c.own}–${c.intruder}${tlos} CPA ${c.dcpa_nm.toFixed(1)} NM ${c.tcpa_s > 0 ? mmss(c.tcpa_s) : "passed"}`;
   }
 
   // The colour of a conflict by time to loss of separation: 60 s or less, 120 s or less, beyond.
@@ -458,7 +458,7 @@ const Scope = (() => {
   function drawConflicts() {
     const byId = new Map(state.aircraft.map((a) => [a.id, a])), dotted = new Path2D(), solid = new Path2D();
     for (const c of state.conflicts) {
-      const A = byId.get(c.ids[0]), B = byId.get(c.ids[1]);
+      const A = byId.get(c.own), B = byId.get(c.intruder);
       if (!A || !B) continue;
       [A, B].forEach((a, i) => {
         const [x0, y0] = px(a.lat, a.lon), [x1, y1] = px(c.cpa[i][0], c.cpa[i][1]);

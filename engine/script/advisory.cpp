@@ -27,8 +27,6 @@ Result<AdvisoryPhraser> AdvisoryPhraser::load(const std::string& path, const VmO
 Result<std::string> AdvisoryPhraser::phrase(const Advisory& a) {
   lua_State* L = vm_->state();
   const int top = lua_gettop(L);
-  lua_pushcfunction(L, message_handler);
-  const int handler = lua_gettop(L);
   SQUAWK_RETURN_IF_ERROR(catch_arg_errors(L, "advise(): ", [&] {
     lua_getfield(L, LUA_REGISTRYINDEX, kModuleKey);
     get_field(L, -1, "advise");
@@ -56,10 +54,9 @@ Result<std::string> AdvisoryPhraser::phrase(const Advisory& a) {
     lua_setfield(L, -2, "traffic");
   }
   std::string out;
-  Status st;
-  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
-  if (lua_pcall(L, 1, 1, handler) != LUA_OK) {
-    st = Status::invalid("advise(): " + error_text(L, -1));
+  Status st = vm_->pcall(1, 1);
+  if (!st.is_ok()) {
+    st = Status::invalid("advise(): " + st.message());
   } else if (lua_type(L, -1) != LUA_TSTRING || lua_rawlen(L, -1) == 0) {
     st = Status::invalid(std::string("advise() must return a non-empty string, got ") +
                          luaL_typename(L, -1));

@@ -12,16 +12,13 @@
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
 //   sim:run_until(t) / sim:run_for(s)     [s]
 //   sim:time() -> s;  sim:dt() -> s;  sim:count() -> number of aircraft
-//   sim:aircraft()       -> { {id=, type=, lat=, lon=, alt_ft=, hdg_deg=, trk_deg=,
-//                              tas_kt=, cas_kt=, gs_kt=, vs_fpm=, lnav=, vnav=,
-//                              sel_hdg_deg=, sel_turn= ("LEFT"/"RIGHT" while a commanded
-//                              turn direction holds, else nil), sel_alt_ft=, sel_vs_fpm= (0: default),
-//                              sel_cas_kt= or sel_mach=, resolving= (MVP active),
-//                              route = { {name=, lat=, lon=, alt_ft=?, spd=?}, ... },
-//                              active_wpt= (name or nil), orig=?, dest=?}, ... }
+//   sim:aircraft()       -> { aircraft, ... }: each a table of sim/fields.h's
+//                           kAircraft (id, type, lat, lon, alt_ft, ..., route = {
+//                           kWaypoint tables }, ...); fields that do not apply are nil
 //   sim:get(acid)        -> one such table, or nil
-//   sim:conflicts()      -> { {own=, intruder=, tcpa=, tlos= [s], dcpa_nm=, dist_nm=}, ... }
-//   sim:los()            -> { {own=, intruder=, dist_nm=, dalt_ft=}, ... }
+//   sim:conflicts()      -> { kConflict tables {own=, intruder=, tcpa_s=, tlos_s=, dcpa_nm=,
+//                           dist_nm=}, ... }  (each pair in both orders)
+//   sim:los()            -> { kLos tables {own=, intruder=, dist_nm=, dalt_ft=}, ... }
 //   sim:totals()         -> {conflicts=, los=, capped=}  (pairs entered since reset;
 //                           capped: sim::cap_notice when detections hit the cap)
 //   sim:output()         -> { line, ... }     (ECHO / queued failures since last call)
@@ -49,18 +46,19 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "command/conformance.h"
 #include "command/registry.h"
 #include "command/stack.h"
 #include "core/paths.h"
-#include "core/units.h"
-#include "sim/atmosphere.h"
-#include "sim/openap_data.h"
-#include "sim/performance.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
+#include "sim/atmosphere.h"
+#include "sim/fields.h"
+#include "sim/openap_data.h"
+#include "sim/performance.h"
 
 namespace squawk::script {
 
@@ -85,47 +83,33 @@ int push_outcome(lua_State* L, const Result<std::string>& r) {
   return 2;
 }
 
-void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
-  lua_createtable(L, 0, 13);
-  set_string(L, "id", t.id[i]);
-  set_string(L, "type", t.type[i]);
-  set_number(L, "lat", t.lat[i]);
-  set_number(L, "lon", t.lon[i]);
-  set_number(L, "alt_ft", units::m_to_ft(t.alt[i]));
-  set_number(L, "hdg_deg", t.hdg[i]);
-  set_number(L, "trk_deg", t.trk[i]);
-  set_number(L, "tas_kt", units::ms_to_kt(t.tas[i]));
-  set_number(L, "cas_kt", units::ms_to_kt(t.cas[i]));
-  set_number(L, "gs_kt", units::ms_to_kt(t.gs[i]));
-  set_number(L, "vs_fpm", units::ms_to_fpm(t.vs[i]));
-  lua_pushboolean(L, t.lnav[i]);
-  lua_setfield(L, -2, "lnav");
-  lua_pushboolean(L, t.vnav[i]);
-  lua_setfield(L, -2, "vnav");
-  set_number(L, "sel_hdg_deg", t.sel_hdg[i]);
-  if (t.sel_turn[i] != 0) set_string(L, "sel_turn", t.sel_turn[i] < 0 ? "LEFT" : "RIGHT");
-  set_number(L, "sel_alt_ft", units::m_to_ft(t.sel_alt[i]));
-  set_number(L, "sel_vs_fpm", units::ms_to_fpm(t.sel_vs[i]));
-  if (sim::is_mach(t.sel_spd[i])) set_number(L, "sel_mach", t.sel_spd[i]);
-  else set_number(L, "sel_cas_kt", units::ms_to_kt(t.sel_spd[i]));
-  lua_pushboolean(L, t.cr_active[i]);
-  lua_setfield(L, -2, "resolving");
-  const sim::Route& r = t.route[i];
-  lua_createtable(L, r.size(), 0);
-  for (int k = 0; k < r.size(); ++k) {
-    const sim::Waypoint& w = r.waypoints()[k];
-    lua_createtable(L, 0, 5);
-    set_string(L, "name", w.name);
-    set_number(L, "lat", w.lat);
-    set_number(L, "lon", w.lon);
-    if (w.has_alt()) set_number(L, "alt_ft", units::m_to_ft(w.alt));
-    if (w.has_spd()) set_number(L, "spd", sim::is_mach(w.spd) ? w.spd : units::ms_to_kt(w.spd));
-    lua_seti(L, -2, k + 1);
+// A table of `list`'s fields of `row` (sim/fields.h); absent ones stay nil.
+template <class Row, size_t N>
+void push_fields(lua_State* L, const sim::fields::Field<Row> (&list)[N], const Row& row) {
+  lua_createtable(L, 0, static_cast<int>(N));
+  for (const auto& f : list) {
+    const sim::fields::Value v = f.get(row);
+    if (std::holds_alternative<sim::fields::Absent>(v)) continue;
+    if (const double* x = std::get_if<double>(&v)) {
+      lua_pushnumber(L, *x);
+    } else if (const bool* b = std::get_if<bool>(&v)) {
+      lua_pushboolean(L, *b);
+    } else if (const auto* s = std::get_if<std::string_view>(&v)) {
+      lua_pushlstring(L, s->data(), s->size());
+    } else {
+      const auto& wps = std::get<const sim::Route*>(v)->waypoints();
+      lua_createtable(L, static_cast<int>(wps.size()), 0);
+      for (size_t k = 0; k < wps.size(); ++k) {
+        push_fields(L, sim::fields::kWaypoint, wps[k]);
+        lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
+      }
+    }
+    lua_setfield(L, -2, f.name);
   }
-  lua_setfield(L, -2, "route");
-  if (const sim::Waypoint* w = r.active_waypoint()) set_string(L, "active_wpt", w->name);
-  if (!r.orig().empty()) set_string(L, "orig", r.orig());
-  if (!r.dest().empty()) set_string(L, "dest", r.dest());
+}
+
+void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {
+  push_fields(L, sim::fields::kAircraft, sim::fields::AircraftRow{t, i});
 }
 
 constexpr long long kMaxSteps = 1'000'000'000;  // per step call
@@ -262,36 +246,26 @@ int l_get(lua_State* L) {
   return 1;
 }
 
-int l_conflicts(lua_State* L) {
-  const sim::Simulation& s = self(L)->sim();
-  const auto& c = s.conflicts();
-  lua_createtable(L, static_cast<int>(c.size()), 0);
-  for (size_t k = 0; k < c.size(); ++k) {
-    lua_createtable(L, 0, 6);
-    set_string(L, "own", s.traffic().id[c[k].own]);
-    set_string(L, "intruder", s.traffic().id[c[k].intruder]);
-    set_number(L, "tcpa", c[k].tcpa);
-    set_number(L, "tlos", c[k].tlos);
-    set_number(L, "dcpa_nm", units::m_to_nm(c[k].dcpa));
-    set_number(L, "dist_nm", units::m_to_nm(c[k].dist));
+// Each of the detector's pairs in `list` as a table of `fields`.
+template <class Pair, class Row, size_t N>
+int push_pairs(lua_State* L, const sim::Traffic& t, const std::vector<Pair>& list,
+               const sim::fields::Field<Row> (&fields)[N]) {
+  lua_createtable(L, static_cast<int>(list.size()), 0);
+  for (size_t k = 0; k < list.size(); ++k) {
+    push_fields(L, fields, Row{t, list[k]});
     lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
   }
   return 1;
 }
 
+int l_conflicts(lua_State* L) {
+  const sim::Simulation& s = self(L)->sim();
+  return push_pairs(L, s.traffic(), s.conflicts(), sim::fields::kConflict);
+}
+
 int l_los(lua_State* L) {
   const sim::Simulation& s = self(L)->sim();
-  const auto& c = s.los();
-  lua_createtable(L, static_cast<int>(c.size()), 0);
-  for (size_t k = 0; k < c.size(); ++k) {
-    lua_createtable(L, 0, 4);
-    set_string(L, "own", s.traffic().id[c[k].own]);
-    set_string(L, "intruder", s.traffic().id[c[k].intruder]);
-    set_number(L, "dist_nm", units::m_to_nm(c[k].dist));
-    set_number(L, "dalt_ft", units::m_to_ft(c[k].dalt));
-    lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
-  }
-  return 1;
+  return push_pairs(L, s.traffic(), s.los(), sim::fields::kLos);
 }
 
 int l_totals(lua_State* L) {

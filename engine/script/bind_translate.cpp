@@ -18,9 +18,9 @@
 //                   heading vs lat lon time dist percent mult angle)
 //       u:mark_used(b, e), u:used(i), u:number(b, e) (re-read a sub-range)
 //       Token ranges are 1-based, [b, e). `world` gives the traffic for
-//       callsign matching: {aircraft = {{id=, type=, lat=, lon=, hdg_deg=,
-//       alt_ft=, cas_kt=, mach=, route = {"WPT", ...}}, ...},
-//       waypoints = {"NAME", ...}}; missing fields read as 0 / empty.
+//       callsign matching: {aircraft = {{id=, route = {"WPT", ...}, and
+//       sim:aircraft()'s other fields (lat, lon, hdg_deg, alt_ft, cas_kt,
+//       sel_mach checked to be numbers in range)}, ...}, waypoints = {"NAME", ...}}.
 //   squawk.translate.best_match(spoken, names) -> index, score | nothing
 //   squawk.translate.json_decode(text) -> value (objects/arrays as tables, null as nil)
 //   squawk.translate.score(produced, asked, expected) -> boolean
@@ -32,7 +32,6 @@
 //       translator(case) is called with each case table as corpus() gives it
 //       and returns a graph result ({commands}, {ask}, .confirm, .error); an
 //       error raised by it stops the evaluation, naming the case.
-#include "core/units.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
@@ -83,13 +82,13 @@ translate::StaticWorld read_world(lua_State* L, int idx) {
       translate::AircraftView a;
       a.id = field_string(L, -1, "id", "");
       if (a.id.empty()) throw ArgError("world.aircraft[" + std::to_string(i) + "]: needs an id");
-      a.type = field_string(L, -1, "type", "");
-      a.lat_deg = field_in(L, -1, "lat", 0.0, -90, 90);
-      a.lon_deg = field_in(L, -1, "lon", 0.0, -180, 180);
-      a.hdg_deg = field_in(L, -1, "hdg_deg", 0.0, -360, 360);
-      a.alt_m = units::ft_to_m(field_in(L, -1, "alt_ft", 0.0, -2000, 100000));
-      a.cas_ms = units::kt_to_ms(field_in(L, -1, "cas_kt", 0.0, 0, 2000));
-      a.mach = field_in(L, -1, "mach", 0.0, 0, 10);
+      // The traffic fields the grammar reads (sim/fields.h's names, units) are numbers in range.
+      static constexpr struct {
+        const char* name;
+        double lo, hi;
+      } kChecked[] = {{"lat", -90, 90},          {"lon", -180, 180},  {"hdg_deg", -360, 360},
+                      {"alt_ft", -2000, 100000}, {"cas_kt", 0, 2000}, {"sel_mach", 0, 10}};
+      for (const auto& c : kChecked) field_in(L, -1, c.name, 0.0, c.lo, c.hi);
       get_field(L, -1, "route");
       a.route = string_list(L, lua_gettop(L), "route");
       lua_pop(L, 1);

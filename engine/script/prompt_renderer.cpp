@@ -15,12 +15,14 @@ Result<std::shared_ptr<PromptRenderer>> PromptRenderer::load(const std::string& 
   std::shared_ptr<PromptRenderer> r(new PromptRenderer(path, std::make_unique<Vm>(options)));
   lua_State* L = r->vm_->state();
   const int base = lua_gettop(L);
-  lua_pushcfunction(L, traceback_handler);
-  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
-  if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK || lua_pcall(L, 0, 1, base + 1) != LUA_OK) {
+  if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK) {
     std::string msg = error_text(L, -1);
     lua_settop(L, base);
     return Status::invalid("prompt template " + path + ": " + msg);
+  }
+  if (Status st = r->vm_->pcall(0, 1); !st.is_ok()) {
+    lua_settop(L, base);
+    return Status::invalid("prompt template " + path + ": " + st.message());
   }
   if (!lua_istable(L, -1)) {
     std::string t = luaL_typename(L, -1);
@@ -76,14 +78,11 @@ PromptRenderer::~PromptRenderer() {
 Result<std::string> PromptRenderer::render(const env::Observation& obs) {
   lua_State* L = vm_->state();
   const int base = lua_gettop(L);
-  lua_pushcfunction(L, traceback_handler);
   lua_rawgeti(L, LUA_REGISTRYINDEX, render_ref_);
   push_observation(L, obs);
-  const Vm::Call budget(Vm::of(L));  // a fresh instruction budget
-  if (lua_pcall(L, 1, 1, base + 1) != LUA_OK) {
-    std::string msg = error_text(L, -1);
+  if (Status st = vm_->pcall(1, 1); !st.is_ok()) {
     lua_settop(L, base);
-    return Status::invalid("prompt template " + path_ + ": render failed: " + msg);
+    return Status::invalid("prompt template " + path_ + ": render failed: " + st.message());
   }
   if (!lua_isstring(L, -1)) {
     std::string t = luaL_typename(L, -1);

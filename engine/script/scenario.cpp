@@ -185,8 +185,7 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
   const int ref = luaL_ref(L, LUA_REGISTRYINDEX);
   return [vm, status, ref](const env::StepFacts& f) -> double {
     lua_State* S = vm->state();
-    lua_pushcfunction(S, traceback_handler);
-    const int handler = lua_gettop(S);
+    const int top = lua_gettop(S);
     lua_rawgeti(S, LUA_REGISTRYINDEX, ref);
     lua_createtable(S, 0, 8);
     lua_pushinteger(S, f.step);
@@ -206,9 +205,8 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
     lua_pushboolean(S, f.reached);
     lua_setfield(S, -2, "reached");
     double r = 0.0;
-    const Vm::Call budget(Vm::of(S));  // a fresh instruction budget
-    if (lua_pcall(S, 1, 1, handler) != LUA_OK) {
-      if (status->is_ok()) status->operator=(Status::invalid("reward function: " + error_text(S, -1)));
+    if (Status st = vm->pcall(1, 1); !st.is_ok()) {
+      if (status->is_ok()) *status = Status::invalid("reward function: " + st.message());
     } else if (lua_type(S, -1) != LUA_TNUMBER) {
       if (status->is_ok())
         *status = Status::invalid(std::string("reward function returned ") + luaL_typename(S, -1) +
@@ -216,7 +214,7 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
     } else {
       r = lua_tonumber(S, -1);
     }
-    lua_settop(S, handler - 1);
+    lua_settop(S, top);
     return r;
   };
 }
@@ -292,21 +290,14 @@ Result<Scenario> load_scenario(const std::string& path, const VmOptions& options
   s.vm = std::make_shared<Vm>(std::move(own));
   lua_State* L = s.vm->state();
   const int base = lua_gettop(L);
-  lua_pushcfunction(L, traceback_handler);
   if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK) {
     std::string msg = lua_tostring(L, -1);
     lua_settop(L, base);
     return Status::invalid(msg);
   }
-  int rc = LUA_OK;
-  {
-    const Vm::Call budget(*s.vm);  // a fresh instruction budget, ended before s.vm may go
-    rc = lua_pcall(L, 0, 1, base + 1);
-  }
-  if (rc != LUA_OK) {
-    std::string msg = lua_tostring(L, -1);
+  if (Status st = s.vm->pcall(0, 1); !st.is_ok()) {
     lua_settop(L, base);
-    return Status::invalid(msg);
+    return Status::invalid(st.message());
   }
   if (!lua_istable(L, -1)) {
     std::string t = luaL_typename(L, -1);

@@ -79,11 +79,9 @@ Result<translate::Translation> protected_call(Vm& vm, F&& fn) {
     return 1;
   });
   lua_pushlightuserdata(L, &ctx);
-  const Vm::Call budget(vm);  // a fresh instruction budget
-  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-    std::string msg = "translation graph (scripts/translate/graph.lua): " + error_text(L, -1);
+  if (Status st = vm.pcall(1, 1); !st.is_ok()) {
     lua_settop(L, top);
-    return Status::internal(msg);
+    return Status::internal("translation graph (scripts/translate/graph.lua): " + st.message());
   }
   auto tr = read_graph_result(L);
   lua_settop(L, top);
@@ -120,26 +118,28 @@ Result<std::vector<rag::Document>> grammar_documents(Vm& vm) {
   const int top = lua_gettop(L);
   lua_getglobal(L, "require");
   lua_pushstring(L, "translate.grammar");
-  const Vm::Call budget(vm);
-  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-    std::string msg = "grammar (scripts/translate/grammar.lua): " + error_text(L, -1);
+  if (Status st = vm.pcall(1, 1); !st.is_ok()) {
     lua_settop(L, top);
-    return Status::internal(msg);
+    return Status::internal("grammar (scripts/translate/grammar.lua): " + st.message());
   }
   std::vector<rag::Document> docs;
-  const Status read = catch_arg_errors(L, "grammar.documents(): ", [&] {
-    get_field(L, -1, "documents");
-    if (lua_pcall(L, 0, 1, 0) != LUA_OK) throw ArgError(error_text(L, -1));
-    if (!lua_istable(L, -1)) throw ArgError("expected a list of {command=, text=}");
-    const lua_Integer n = length(L, -1);
-    for (lua_Integer i = 1; i <= n; ++i) {
-      get_index(L, -1, i);
-      get_field(L, -1, "command");
-      get_field(L, -2, "text");
-      if (lua_isstring(L, -2) && lua_isstring(L, -1)) docs.push_back({lua_tostring(L, -2), lua_tostring(L, -1)});
-      lua_pop(L, 3);
-    }
-  });
+  Status read = catch_arg_errors(L, "grammar.documents: ", [&] { get_field(L, -1, "documents"); });
+  if (read.is_ok())
+    if (Status st = vm.pcall(0, 1); !st.is_ok())
+      read = Status::invalid("grammar.documents(): " + st.message());
+  if (read.is_ok())
+    read = catch_arg_errors(L, "grammar.documents(): ", [&] {
+      if (!lua_istable(L, -1)) throw ArgError("expected a list of {command=, text=}");
+      const lua_Integer n = length(L, -1);
+      for (lua_Integer i = 1; i <= n; ++i) {
+        get_index(L, -1, i);
+        get_field(L, -1, "command");
+        get_field(L, -2, "text");
+        if (lua_isstring(L, -2) && lua_isstring(L, -1))
+          docs.push_back({lua_tostring(L, -2), lua_tostring(L, -1)});
+        lua_pop(L, 3);
+      }
+    });
   lua_settop(L, top);
   if (!read.is_ok()) return Status::internal(read.message());
   return docs;

@@ -156,10 +156,18 @@ void LiveSim::log(const std::string& who, const std::string& text) {
 }
 
 json LiveSim::command(const std::string& text, const std::string& who, const script::CommandOptions& opts) {
+  return reply_json(run_command(text, who, opts));
+}
+
+script::CommandReply LiveSim::run_command(const std::string& text, const std::string& who,
+                                          const script::CommandOptions& opts) {
   auto r = session_.command(text, opts);
   if (!r) {
     log(who, text + "  -> error: " + r.status().message());
-    return {{"text", text}, {"ok", false}, {"message", r.status().message()}, {"commands", json::array()}};
+    script::CommandReply failed;
+    failed.text = text;
+    failed.message = r.status().message();
+    return failed;
   }
   std::string entry = r->addressed.empty() ? r->text : "(" + r->addressed + ") " + r->text;
   if (!r->commands.empty() && r->text != "!" + r->commands.front()) entry += "  -> " + join(r->commands, " ; ");
@@ -171,7 +179,7 @@ json LiveSim::command(const std::string& text, const std::string& who, const scr
     entry += "  -> " + r->message;
   log(who, entry);
   log_events(r->events);
-  return reply_json(*r);
+  return std::move(*r);
 }
 
 void LiveSim::tick_teammate() {
@@ -201,15 +209,14 @@ void LiveSim::advise(const std::string& english) {
 void LiveSim::execute(Advisory& a, const std::string& who) {
   a.decided_by = who;
   const script::CommandOptions advisory{"advisories", ""};  // a dialogue of their own
-  json r = command(a.text, who, advisory);
+  const script::CommandReply r = run_command(a.text, who, advisory);
   a.status = "accepted";
-  if (r.contains("ask")) {
-    command("cancel", who, advisory);  // a later advisory must not be read as the answer
-    a.outcome = "not executed: the translator asked \"" + r["ask"].get<std::string>() + "\"";
+  if (!r.ask.empty()) {
+    run_command("cancel", who, advisory);  // a later advisory must not be read as the answer
+    a.outcome = "not executed: the translator asked \"" + r.ask + "\"";
   } else {
-    a.outcome = (r["ok"].get<bool>() ? "" : "failed: ") +
-                join(r["commands"].get<std::vector<std::string>>(), " ; ") +
-                (r["ok"].get<bool>() ? "" : " (" + r["message"].get<std::string>() + ")");
+    a.outcome =
+        (r.ok ? "" : "failed: ") + join(r.commands, " ; ") + (r.ok ? "" : " (" + r.message + ")");
   }
 }
 

@@ -106,6 +106,10 @@ class LiveSim {
   };
 
   void run();
+  // command() without the JSON: a session error comes back as a reply with
+  // ok = false and the error as its message.
+  script::CommandReply run_command(const std::string& text, const std::string& who,
+                                   const script::CommandOptions& opts);
   void advance(double wall_s);
   void log_events(const std::vector<script::SessionEvent>& events);
   void tick_teammate();

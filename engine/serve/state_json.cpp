@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <variant>
 
 #include "core/cpa.h"
 #include "core/units.h"
 #include "sim/atmosphere.h"
 #include "sim/conflict.h"
+#include "sim/fields.h"
 
 namespace squawk::serve {
 
@@ -15,40 +17,25 @@ namespace {
 
 using nlohmann::json;
 
-json nan_to_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-json aircraft_json(const sim::Traffic& t, size_t i) {
-  json a = {{"id", t.id[i]},
-            {"type", t.type[i]},
-            {"lat", t.lat[i]},
-            {"lon", t.lon[i]},
-            {"alt_ft", units::m_to_ft(t.alt[i])},
-            {"hdg_deg", t.hdg[i]},
-            {"trk_deg", t.trk[i]},
-            {"cas_kt", units::ms_to_kt(t.cas[i])},
-            {"tas_kt", units::ms_to_kt(t.tas[i])},
-            {"gs_kt", units::ms_to_kt(t.gs[i])},
-            {"vs_fpm", units::ms_to_fpm(t.vs[i])},
-            {"sel_hdg_deg", t.sel_hdg[i]},
-            {"sel_turn", t.sel_turn[i] < 0 ? json("LEFT") : t.sel_turn[i] > 0 ? json("RIGHT") : json(nullptr)},
-            {"sel_alt_ft", units::m_to_ft(t.sel_alt[i])},
-            {"lnav", t.lnav[i] != 0},
-            {"vnav", t.vnav[i] != 0},
-            {"resolving", t.cr_active[i] != 0}};
-  if (sim::is_mach(t.sel_spd[i])) {
-    a["sel_cas_kt"] = nullptr;
-    a["sel_mach"] = t.sel_spd[i];
-  } else {
-    a["sel_cas_kt"] = units::ms_to_kt(t.sel_spd[i]);
+// An object of `list`'s fields of `row` (sim/fields.h); absent ones are null.
+template <class Row, size_t N>
+json fields_json(const sim::fields::Field<Row> (&list)[N], const Row& row) {
+  json out = json::object();
+  for (const auto& f : list) {
+    const sim::fields::Value v = f.get(row);
+    json& j = out[f.name];
+    if (const double* x = std::get_if<double>(&v)) {
+      j = *x;
+    } else if (const bool* b = std::get_if<bool>(&v)) {
+      j = *b;
+    } else if (const auto* s = std::get_if<std::string_view>(&v)) {
+      j = std::string(*s);
+    } else if (const auto* r = std::get_if<const sim::Route*>(&v)) {
+      j = json::array();
+      for (const auto& w : (*r)->waypoints()) j.push_back(fields_json(sim::fields::kWaypoint, w));
+    }
   }
-  const sim::Route& r = t.route[i];
-  json route = json::array();
-  for (const auto& w : r.waypoints())
-    route.push_back({{"name", w.name}, {"lat", w.lat}, {"lon", w.lon},
-                     {"alt_ft", w.has_alt() ? json(units::m_to_ft(w.alt)) : json(nullptr)}});
-  a["route"] = std::move(route);
-  a["active_wpt"] = r.active_waypoint() ? json(r.active_waypoint()->name) : json(nullptr);
-  return a;
+  return out;
 }
 
 // Where aircraft a and b are at their closest approach if both keep their
@@ -69,10 +56,9 @@ json cpa_points(const sim::Traffic& t, size_t a, size_t b) {
   return json::array({at(a), at(b)});
 }
 
-// The pair's ids in order (a < b) and its indices in that order.
-std::pair<size_t, size_t> ordered(const sim::Traffic& t, int own, int intruder) {
-  const auto a = static_cast<size_t>(own), b = static_cast<size_t>(intruder);
-  return t.id[a] < t.id[b] ? std::pair{a, b} : std::pair{b, a};
+// Whether (own, intruder) is the order a pair is reported in: own's id first.
+bool first_of_pair(const sim::Traffic& t, int own, int intruder) {
+  return t.id[static_cast<size_t>(own)] < t.id[static_cast<size_t>(intruder)];
 }
 
 }  // namespace
@@ -94,7 +80,8 @@ json state_json(const command::Stack& stack) {
   const command::Trails& trails = stack.trails();
   out["trail"] = {{"on", trails.on}, {"dt_s", trails.dt}, {"colour", trails.colour}};
   json aircraft = json::array();
-  for (int i = 0; i < t.n(); ++i) aircraft.push_back(aircraft_json(t, static_cast<size_t>(i)));
+  for (int i = 0; i < t.n(); ++i)
+    aircraft.push_back(fields_json(sim::fields::kAircraft, sim::fields::AircraftRow{t, i}));
   out["aircraft"] = std::move(aircraft);
 
   // With the clock held the pairs are detected afresh on the present state:
@@ -106,22 +93,16 @@ json state_json(const command::Stack& stack) {
   const sim::ConflictDetector& det = held && cd.enabled ? fresh : s.cd();
   json conflicts = json::array();
   for (const auto& c : det.pairs()) {
-    const auto [a, b] = ordered(t, c.own, c.intruder);
-    if (static_cast<size_t>(c.own) != a) continue;  // each pair is reported in both orders
-    conflicts.push_back({{"ids", {t.id[a], t.id[b]}},
-                         {"tcpa_s", c.tcpa},
-                         {"dcpa_nm", units::m_to_nm(c.dcpa)},
-                         {"tlos_s", nan_to_null(c.tlos)},
-                         {"dist_nm", units::m_to_nm(c.dist)},
-                         {"cpa", cpa_points(t, a, b)}});
+    if (!first_of_pair(t, c.own, c.intruder)) continue;  // each pair is reported in both orders
+    json j = fields_json(sim::fields::kConflict, sim::fields::ConflictRow{t, c});
+    j["cpa"] = cpa_points(t, static_cast<size_t>(c.own), static_cast<size_t>(c.intruder));
+    conflicts.push_back(std::move(j));
   }
   out["conflicts"] = std::move(conflicts);
   json los = json::array();
-  for (const auto& l : det.los()) {
-    const auto [a, b] = ordered(t, l.own, l.intruder);
-    if (static_cast<size_t>(l.own) != a) continue;
-    los.push_back({{"ids", {t.id[a], t.id[b]}}, {"dist_nm", units::m_to_nm(l.dist)}, {"dalt_ft", units::m_to_ft(l.dalt)}});
-  }
+  for (const auto& l : det.los())
+    if (first_of_pair(t, l.own, l.intruder))
+      los.push_back(fields_json(sim::fields::kLos, sim::fields::LosRow{t, l}));
   std::string capped = sim::cap_notice(s.cd(), cd.max_pairs);
   if (capped.empty() && held && cd.enabled) capped = sim::cap_notice(fresh, cd.max_pairs);
   out["conflict_cap"] = capped;

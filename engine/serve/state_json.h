@@ -4,18 +4,15 @@
 // event), aviation units at this edge:
 //   simt [s], running (bool), fast (bool), dtmult [-],
 //   asas {on, reso, rpz_nm, hpz_ft, dtlook_s},
-//   aircraft [{id, type, lat, lon [deg], alt_ft, hdg_deg, trk_deg, cas_kt,
-//              tas_kt, gs_kt, vs_fpm, sel_hdg_deg, sel_turn ("LEFT" or
-//              "RIGHT" while a commanded turn direction holds, else null),
-//              sel_alt_ft, sel_cas_kt
-//              (null when a Mach is selected: sel_mach), lnav, vnav,
-//              resolving (bool: following a resolution), active_wpt (name or
-//              null), route [{name, lat, lon, alt_ft|null}]}],
-//   conflicts [{ids [a, b], tcpa_s, dcpa_nm, tlos_s, dist_nm,
-//               cpa [[lat, lon], [lat, lon]]}]  each pair once (a < b), cpa
-//               = where each aircraft will be at the closest approach if both
-//               keep their present ground velocity (from the present state),
-//   los [{ids [a, b], dist_nm, dalt_ft}]  each pair once,
+//   aircraft [sim/fields.h's kAircraft: {id, type, lat, lon [deg], alt_ft,
+//              hdg_deg, ..., route [kWaypoint {name, lat, lon, alt_ft, ...}], ...}]
+//              (a field that does not apply is null),
+//   conflicts [kConflict {own, intruder, tcpa_s, tlos_s, dcpa_nm, dist_nm}
+//              + cpa [[lat, lon], [lat, lon]]]  each pair once (own's id
+//              before the intruder's), cpa = where each aircraft will be at
+//              the closest approach if both keep their present ground
+//              velocity (from the present state),
+//   los [kLos {own, intruder, dist_nm, dalt_ft}]  each pair once,
 //   conflict_cap  sim::cap_notice ("" unless detections hit the pair cap,
 //               --max-conflict-pairs: then the lists above are incomplete).
 // Conflicts and losses of separation are the simulator's last detection

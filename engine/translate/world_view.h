@@ -10,18 +10,13 @@
 #include <string>
 #include <vector>
 
-
 namespace squawk::translate {
 
+// What the C++ extractors read of an aircraft: callsign matching and the
+// route's waypoint names. The grammar (Lua) reads the rest of the traffic
+// from the same tables, named and in units as sim/fields.h's kAircraft.
 struct AircraftView {
-  std::string id;              // callsign as created (case kept)
-  std::string type;            // ICAO type designator
-  double lat_deg = 0.0;        // [deg] north positive
-  double lon_deg = 0.0;        // [deg] east positive
-  double hdg_deg = 0.0;        // [deg] true heading
-  double alt_m = 0.0;          // [m]
-  double cas_ms = 0.0;         // [m/s] calibrated airspeed; 0 when the speed is a Mach number
-  double mach = 0.0;           // [-] Mach number when the speed was given as Mach, else 0
+  std::string id;                  // callsign as created (case kept)
   std::vector<std::string> route;  // waypoint names in route order
 };
 

@@ -17,7 +17,8 @@
 --     radio frequencies; lexicon.not_simulated); those words are not
 --     translated, the rest is (commands may then be empty)
 --     world: {aircraft = {{id=, type=, lat=, lon=, hdg_deg=, alt_ft=, cas_kt=,
---             mach=, route = {...}}, ...}, waypoints = {"NAME", ...}} or nil.
+--             sel_mach=, route = {"WPT", ...}}, ...} (sim:aircraft()'s names and units),
+--             waypoints = {"NAME", ...}} or nil.
 --     world.confirmed: {[id] = true} for callsigns the speaker confirmed.
 --     Never fails: a request it cannot fill completely becomes a question
 --     naming what is missing; a question about an inexactly heard callsign

@@ -85,7 +85,7 @@ return function(H, f, compass)
     end
     if model and self:word_in(s.b, s.e, "altitude") and not alt then alt, fl = model.alt_ft, true end
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
-      if (model.mach or 0) > 0 then mach = model.mach else spd = model.cas_kt end
+      if model.sel_mach then mach = model.sel_mach else spd = model.cas_kt end
     end
     -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol")
     local named_at

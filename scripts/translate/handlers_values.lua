@@ -210,14 +210,14 @@ return function(H, f, wrap, compass)
     if not q and #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
       local src = self:state(refs[#refs].name)
       if not src then return self:need("What is the speed of " .. refs[#refs].name .. "?") end
-      return self:emit("SPD " .. refs[1].name .. " " .. ((src.mach or 0) > 0 and f.mach(src.mach) or f.int(src.cas_kt or 0)))
+      return self:emit("SPD " .. refs[1].name .. " " .. (src.sel_mach and f.mach(src.sel_mach) or f.int(src.cas_kt or 0)))
     end
     -- "maintain present speed": each aircraft's current speed, read from the traffic
     if not q and self:word_in(math.max(1, s.trig - 2), s.trig, "@present") then
       for _, id in ipairs(ids) do
         local now = self:state(id)
         if not now then return self:need("What is the current speed of " .. id .. "?") end
-        self:emit("SPD " .. id .. " " .. ((now.mach or 0) > 0 and f.mach(now.mach) or f.int(now.cas_kt or 0)))
+        self:emit("SPD " .. id .. " " .. (now.sel_mach and f.mach(now.sel_mach) or f.int(now.cas_kt or 0)))
       end
       return
     end

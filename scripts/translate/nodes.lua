@@ -229,15 +229,15 @@ function M.defined_waypoints(line)
   return names
 end
 
--- What the offline grammar may know of the simulation: the aircraft (route
--- as waypoint names, mach when the selected speed is a Mach number), the
--- user waypoints, and the navdata's airports by name.
+-- What the offline grammar may know of the simulation: the aircraft
+-- (sim:aircraft() tables, the route as waypoint names), the user waypoints,
+-- and the navdata's airports by name.
 function M.world(sim, waypoints)
   local aircraft = sim:aircraft()
   for _, a in ipairs(aircraft) do
     local names = {}
     for _, w in ipairs(a.route or {}) do names[#names + 1] = w.name end
-    a.route, a.mach = names, a.sel_mach
+    a.route = names
   end
   return { aircraft = aircraft, waypoints = waypoints or {},
            airports_named = function(name) return sim:airports_named(name) end }

@@ -113,11 +113,11 @@ function Repl:state_text()
       "tLOS", "tCPA", "dCPA", "now")
     for _, c in ipairs(st.conflicts) do
       lines[#lines + 1] = string.format("               %-17s %6.0f s %6.0f s %6.2f NM %6.2f NM",
-        c.id1 .. " & " .. c.id2, c.tlos_s, c.tcpa_s, c.dcpa_nm, c.dist_nm)
+        c.own .. " & " .. c.intruder, c.tlos_s or 0 / 0, c.tcpa_s, c.dcpa_nm, c.dist_nm)
     end
   end
   for _, l in ipairs(st.los) do
-    lines[#lines + 1] = string.format("  LOSS OF SEPARATION %s & %s: %.2f NM, %.0f ft", l.id1, l.id2, l.dist_nm,
+    lines[#lines + 1] = string.format("  LOSS OF SEPARATION %s & %s: %.2f NM, %.0f ft", l.own, l.intruder, l.dist_nm,
       math.abs(l.dalt_ft))
   end
   return table.concat(lines, "\n")

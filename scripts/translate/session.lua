@@ -45,13 +45,15 @@
 --   s:set_clock(multiplier|nil) -> sentence   nil: stop (HOLD)
 --   s:state() -> { simt =, clock = {state = "hold"|"op"|"ff", multiplier =,
 --                  ff_end =?}, aircraft = { sim:aircraft() entries, each
---                  with conflict = {ids in conflict} }, conflicts = {
---                  {id1 =, id2 =, tcpa_s =, tlos_s =, dcpa_nm =, dist_nm =} },
---                  los = { {id1 =, id2 =, dist_nm =, dalt_ft =} } }
+--                  with conflict = {ids in conflict} }, conflicts = { sim:conflicts()
+--                  entries {own =, intruder =, tcpa_s =, tlos_s =, dcpa_nm =, dist_nm =},
+--                  each pair once (own < intruder), soonest tlos_s first },
+--                  los = { sim:los() entries {own =, intruder =, dist_nm =, dalt_ft =},
+--                  each pair once } }
 --   s:complete(prefix) -> sorted words: callsigns, TrafScript command names
 --       and aliases (also as !NAME), and the REPL's :commands
 --   event = { t = s, kind = "conflict" | "conflict_reminder" | "conflict_end" | "los" | "los_end"
---             | "echo" | "failure", text = sentence, id1 =?, id2 =? }
+--             | "echo" | "failure", text = sentence, own =?, intruder =? }
 --   report (load_report, and failure summaries) = { executed =, skipped =,
 --             failed =, first = {first failure messages}, reasons = {
 --             {reason =, count =}, ... } }
@@ -130,14 +132,14 @@ local function diff(known, list, t, events, kind, start, ended)
     if not now[key] then
       now[key] = true
       if not known[key] then
-        events[#events + 1] = { t = t, kind = kind, id1 = a, id2 = b, text = start(c, key) }
+        events[#events + 1] = { t = t, kind = kind, own = a, intruder = b, text = start(c, key) }
       end
     end
   end
   for key in pairs(known) do
     if not now[key] then
       local a, b = key:match("^(.-) & (.*)$")
-      events[#events + 1] = { t = t, kind = kind .. "_end", id1 = a, id2 = b, text = string.format(ended, key) }
+      events[#events + 1] = { t = t, kind = kind .. "_end", own = a, intruder = b, text = string.format(ended, key) }
     end
   end
   return now
@@ -169,8 +171,8 @@ function Session:diff_pairs(events)
   local t = self.sim:time()
   local known = self.conflicts
   local text = function(c, key)
-    return string.format("conflict %s: loss of separation in %.0f s, closest %.2f NM in %.0f s", key, c.tlos,
-      c.dcpa_nm, c.tcpa)
+    return string.format("conflict %s: loss of separation in %.0f s, closest %.2f NM in %.0f s", key, c.tlos_s or 0 / 0,
+      c.dcpa_nm, c.tcpa_s)
   end
   local conflicts, los = self:detected()
   self.conflicts = diff(known, conflicts, t, events, "conflict", text, "conflict %s ended")
@@ -178,9 +180,9 @@ function Session:diff_pairs(events)
   for _, c in ipairs(conflicts) do
     local key, a, b = pair_key(c.own, c.intruder)
     if reminded[key] == nil then
-      local level, prev = reminder_level(c.tlos), before[key]
+      local level, prev = reminder_level(c.tlos_s or math.huge), before[key]
       if known[key] and level and (not prev or level < prev) then
-        events[#events + 1] = { t = t, kind = "conflict_reminder", id1 = a, id2 = b, text = "still " .. text(c, key) }
+        events[#events + 1] = { t = t, kind = "conflict_reminder", own = a, intruder = b, text = "still " .. text(c, key) }
         prev = level
       end
       reminded[key] = known[key] and (prev or false) or (level or false)
@@ -431,28 +433,20 @@ function Session:state()
   local st = { simt = self.sim:time(), aircraft = self.sim:aircraft(), conflicts = {}, los = {} }
   local state, ff_end = self.sim:run_state()
   st.clock = { state = state, multiplier = self.sim:dtmult(), ff_end = ff_end }
-  local with, seen = {}, {}
+  local with = {}
   local conflicts, los = self:detected()
   for _, c in ipairs(conflicts) do
-    local key, a, b = pair_key(c.own, c.intruder)
-    if not seen[key] then
-      seen[key] = true
-      st.conflicts[#st.conflicts + 1] = { id1 = a, id2 = b, tcpa_s = c.tcpa, tlos_s = c.tlos,
-        dcpa_nm = c.dcpa_nm, dist_nm = c.dist_nm }
-      with[a] = with[a] or {}
-      with[b] = with[b] or {}
-      table.insert(with[a], b)
-      table.insert(with[b], a)
+    if c.own < c.intruder then
+      st.conflicts[#st.conflicts + 1] = c
+      with[c.own] = with[c.own] or {}
+      with[c.intruder] = with[c.intruder] or {}
+      table.insert(with[c.own], c.intruder)
+      table.insert(with[c.intruder], c.own)
     end
   end
-  table.sort(st.conflicts, function(x, y) return x.tlos_s < y.tlos_s end)
-  seen = {}
+  table.sort(st.conflicts, function(x, y) return (x.tlos_s or math.huge) < (y.tlos_s or math.huge) end)
   for _, l in ipairs(los) do
-    local key, a, b = pair_key(l.own, l.intruder)
-    if not seen[key] then
-      seen[key] = true
-      st.los[#st.los + 1] = { id1 = a, id2 = b, dist_nm = l.dist_nm, dalt_ft = l.dalt_ft }
-    end
+    if l.own < l.intruder then st.los[#st.los + 1] = l end
   end
   for _, a in ipairs(st.aircraft) do a.conflict = with[a.id] or {} end
   return st

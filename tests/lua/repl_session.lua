@@ -73,8 +73,8 @@ do
   local st = r.session:state()
   check_eq(#st.conflicts, 1)
   local c = st.conflicts[1]
-  check_eq(c.id1, "BAW1")
-  check_eq(c.id2, "DLH2")
+  check_eq(c.own, "BAW1")
+  check_eq(c.intruder, "DLH2")
   check(c.tlos_s > 0 and c.tcpa_s > c.tlos_s and c.dcpa_nm < 0.1, "tlos/tcpa/dcpa")
   text = r:handle(":run 200")
   check(find(text, "LOSS OF SEPARATION BAW1 & DLH2"), text)

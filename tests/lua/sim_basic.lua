@@ -40,7 +40,7 @@ check(sim:exec("ASAS ON; CRECONFS INT1 A320 KL204 90 0 120"))
 sim:run_for(2)
 local c = sim:conflicts()
 check_eq(#c, 2)
-check_near(c[1].tlos, 118, 3)
+check_near(c[1].tlos_s, 118, 3)
 check(c[1].dcpa_nm < 0.05)
 
 -- Copies are independent.

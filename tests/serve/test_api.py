@@ -77,7 +77,7 @@ def test_plain(squawk):
         time.sleep(1.5)
         check(state(addr)["simt"] >= 1.0, "the clock runs in real time from the start")
         c = state(addr)["conflicts"]
-        check(len(c) == 1 and c[0]["ids"] == ["AF123", "KL204"] and c[0]["tlos_s"] > 0 and c[0]["dcpa_nm"] < 0.5
+        check(len(c) == 1 and [c[0]["own"], c[0]["intruder"]] == ["AF123", "KL204"] and c[0]["tlos_s"] > 0 and c[0]["dcpa_nm"] < 0.5
               and len(c[0]["cpa"]) == 2, f"one conflict AF123-KL204 with tlos, dcpa, cpa: {c}")
 
         r = command(addr, "KL204 climb to flight level 300")

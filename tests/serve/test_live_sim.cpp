@@ -11,7 +11,9 @@
 using namespace squawk;
 using nlohmann::json;
 
-TEST_CASE("state_json: aircraft with selected values and route; each conflict once, ids in order, CPA points") {
+TEST_CASE(
+    "state_json: aircraft with selected values and route; each conflict once, own before intruder, "
+    "CPA points") {
   command::Stack s;
   for (const char* line : {"ASAS ON", "CRE KL204 B744 52 4 90 FL200 280", "CRE AF123 A320 52 4.6 270 FL200 280",
                            "DEFWPT EXIT1 52.0 5.0", "KL204 ADDWPT EXIT1 FL240", 
@@ -43,7 +45,7 @@ TEST_CASE("state_json: aircraft with selected values and route; each conflict on
   REQUIRE(s.sim().conflicts().size() == 2);
   REQUIRE(j["conflicts"].size() == 1);
   const json& c = j["conflicts"][0];
-  CHECK(c["ids"] == json::array({"AF123", "KL204"}));
+  CHECK((c["own"] == "AF123" && c["intruder"] == "KL204"));
   CHECK(c["tcpa_s"].get<double>() > 0);
   CHECK(c["tlos_s"].get<double>() < c["tcpa_s"].get<double>());
   // The CPA points lie about dcpa apart (flat earth, 1 deg lat = 60 NM; the

@@ -80,11 +80,11 @@ def check_labels(browser, squawk):
         state = get_state(addr)
         assert state["simt"] == 0 and not state["running"], state["simt"]
         assert len(rows) == len(state["conflicts"]) >= 10, (len(rows), len(state["conflicts"]))
-        los = [" ".join(l["ids"]) for l in state["los"]]
+        los = [l["own"] + " " + l["intruder"] for l in state["los"]]
         assert los == ["KLM88A KLM88B"], los  # in trail 2 NM apart: a loss of separation from the start
         assert [ids for ids, cls, _ in rows[:len(los)]] == los and rows[0][1] == "los", rows[0]
         rows = rows[len(los):]
-        tlos = {" ".join(c["ids"]): c["tlos_s"] for c in state["conflicts"]}
+        tlos = {c["own"] + " " + c["intruder"]: c["tlos_s"] for c in state["conflicts"]}
         shown = [tlos[ids] for ids, _, _ in rows]
         assert shown == sorted(shown), shown
         for ids, cls, text in rows:

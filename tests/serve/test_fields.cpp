@@ -1,0 +1,175 @@
+// The field lists of sim/fields.h are what Lua and serve's JSON show: every
+// declared field, and nothing else, with the same value in both.
+#include <doctest/doctest.h>
+
+#include <lua.hpp>
+#include <set>
+#include <string>
+
+#include "script/lua_util.h"
+#include "script/vm.h"
+#include "serve/state_json.h"
+#include "sim/fields.h"
+
+using namespace squawk;
+using nlohmann::json;
+
+namespace {
+
+// The keys of the Lua table at the top of the stack.
+std::set<std::string> lua_keys(lua_State* L) {
+  std::set<std::string> keys;
+  lua_pushnil(L);
+  while (lua_next(L, -2)) {
+    lua_pop(L, 1);
+    keys.insert(lua_tostring(L, -1));
+  }
+  return keys;
+}
+
+// The Lua table at the top of the stack and the JSON object `j` both hold
+// exactly `list`'s fields (a JSON null where Lua has nil), with equal values.
+template <class Row, size_t N>
+void check_same(lua_State* L, const json& j, const sim::fields::Field<Row> (&list)[N],
+                const std::string& what) {
+  REQUIRE(lua_istable(L, -1));
+  REQUIRE(j.is_object());
+  std::set<std::string> declared, present;
+  for (const auto& f : list) {
+    declared.insert(f.name);
+    CAPTURE(what);
+    const std::string field = f.name;
+    CAPTURE(field);
+    REQUIRE(j.contains(f.name));  // every declared field is in the JSON
+    const json& v = j[f.name];
+    lua_getfield(L, -1, f.name);
+    if (v.is_null()) {
+      CHECK(lua_isnil(L, -1));
+    } else {
+      present.insert(f.name);
+      if (v.is_number()) {
+        REQUIRE(lua_type(L, -1) == LUA_TNUMBER);
+        CHECK(lua_tonumber(L, -1) == v.get<double>());
+      } else if (v.is_boolean()) {
+        REQUIRE(lua_isboolean(L, -1));
+        CHECK((lua_toboolean(L, -1) != 0) == v.get<bool>());
+      } else if (v.is_string()) {
+        REQUIRE(lua_type(L, -1) == LUA_TSTRING);
+        CHECK(std::string(lua_tostring(L, -1)) == v.get<std::string>());
+      } else {
+        REQUIRE(v.is_array());  // a route: waypoints of kWaypoint
+        REQUIRE(lua_rawlen(L, -1) == v.size());
+        for (size_t k = 0; k < v.size(); ++k) {
+          lua_rawgeti(L, -1, static_cast<lua_Integer>(k + 1));
+          check_same(L, v[k], sim::fields::kWaypoint, what + "." + f.name);
+          lua_pop(L, 1);
+        }
+      }
+    }
+    lua_pop(L, 1);
+  }
+  CHECK(lua_keys(L) == present);  // ... and nothing undeclared in Lua
+  for (const auto& [key, value] : j.items())
+    CHECK_MESSAGE(declared.count(key), what << ": undeclared " << key);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "every field of sim/fields.h's lists is in Lua's tables and serve's JSON, with the same "
+    "value") {
+  script::Vm vm(script::VmOptions{});
+  lua_State* L = vm.state();
+  // Two aircraft in conflict, one on a route with a CAS and a Mach constraint,
+  // the other at a selected Mach; a third in a commanded turn.
+  REQUIRE(vm.run_string(R"(
+    S = squawk.sim.new{}
+    for line in ([[ASAS ON
+CRE KL204 B744 52 4 90 FL200 280
+CRE AF123 A320 52 4.6 270 FL200 0.78
+DEFWPT EXIT1 52.0 5.0
+DEFWPT EXIT2 52.0 6.0
+KL204 ADDWPT EXIT1 FL240 250
+KL204 ADDWPT EXIT2 FL300 0.8
+CRE BAW1 A320 50 0 0 FL100 250
+HDG BAW1 200 LEFT]]):gmatch("[^\n]+") do
+      local ok, msg = S:exec(line)
+      assert(ok, line .. ": " .. tostring(msg))
+    end
+    S:run_for(20)
+    assert(S:exec("OP"))  -- the JSON then shows the detector's pairs, as Lua does (held: detected afresh)
+    AIRCRAFT, CONFLICTS, LOS = S:aircraft(), S:conflicts(), S:los())",
+                        "fields")
+              .is_ok());
+  lua_getglobal(L, "S");
+  script::ObjectHeader* h = script::test_header(L, -1, "squawk.sim.Sim");
+  REQUIRE(h);
+  const command::Stack& stack = reinterpret_cast<script::ObjectBox<command::Stack>*>(h)->value;
+  lua_pop(L, 1);
+  const json j = serve::state_json(stack);
+
+  REQUIRE(j["aircraft"].size() == 3);
+  lua_getglobal(L, "AIRCRAFT");
+  REQUIRE(lua_rawlen(L, -1) == 3);
+  for (size_t i = 0; i < 3; ++i) {
+    lua_rawgeti(L, -1, static_cast<lua_Integer>(i + 1));
+    check_same(L, j["aircraft"][i], sim::fields::kAircraft,
+               "aircraft " + j["aircraft"][i]["id"].get<std::string>());
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  // Both kinds of selected speed and a route with both kinds of constraint were shown.
+  CHECK(j["aircraft"][0]["sel_cas_kt"].is_number());
+  CHECK(j["aircraft"][1]["sel_mach"].get<double>() == doctest::Approx(0.78));
+  CHECK(j["aircraft"][0]["route"][0]["cas_kt"].get<double>() == doctest::Approx(250.0));
+  CHECK(j["aircraft"][0]["route"][1]["mach"].get<double>() == doctest::Approx(0.8));
+  CHECK(j["aircraft"][2]["sel_turn"] == "LEFT");
+  CHECK(j["aircraft"][0]["sel_turn"].is_null());
+
+  // Conflicts: Lua has both orders, the JSON each pair once (own's id first) plus the CPA points.
+  REQUIRE(j["conflicts"].size() == 1);
+  json c = j["conflicts"][0];
+  CHECK(c["cpa"].size() == 2);
+  c.erase("cpa");
+  lua_getglobal(L, "CONFLICTS");
+  REQUIRE(lua_rawlen(L, -1) == 2);
+  bool seen = false;
+  for (lua_Integer k = 1; k <= 2; ++k) {
+    lua_rawgeti(L, -1, k);
+    lua_getfield(L, -1, "own");
+    const bool first = std::string(lua_tostring(L, -1)) == c["own"].get<std::string>();
+    lua_pop(L, 1);
+    if (first) {
+      check_same(L, c, sim::fields::kConflict, "conflict");
+      seen = true;
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  CHECK(seen);
+}
+
+TEST_CASE("a loss of separation has the kLos fields in Lua and in JSON") {
+  script::Vm vm(script::VmOptions{});
+  lua_State* L = vm.state();
+  REQUIRE(vm.run_string(R"(
+    S = squawk.sim.new{}
+    assert(S:exec("ASAS ON; CRE KL1 A320 52 4 90 FL200 250; CRE KL2 A320 52 4.02 270 FL201 250"))
+    S:run_for(2)
+    assert(S:exec("OP"))
+    LOS = S:los())",
+                        "los")
+              .is_ok());
+  lua_getglobal(L, "S");
+  const command::Stack& stack = reinterpret_cast<script::ObjectBox<command::Stack>*>(
+                                    script::test_header(L, -1, "squawk.sim.Sim"))
+                                    ->value;
+  lua_pop(L, 1);
+  const json j = serve::state_json(stack);
+  REQUIRE(j["los"].size() == 1);
+  lua_getglobal(L, "LOS");
+  REQUIRE(lua_rawlen(L, -1) == 2);
+  lua_rawgeti(L, -1, 1);  // KL1 first: the JSON's order
+  check_same(L, j["los"][0], sim::fields::kLos, "los");
+  lua_pop(L, 2);
+}
