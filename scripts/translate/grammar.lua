@@ -672,6 +672,28 @@ function G:unknown_names()
   end
 end
 
+-- A waypoint, fix or airport named that no command carries ("klm12 dc sugol
+-- fl230": an instruction not read; "route EZY45 via TEST1 to EHAM": a
+-- destination dropped) is a leftover, asked about by name. Abbreviations
+-- that are no names (lexicon.not_names: "VFR", "RPZ"), names inside a reply
+-- about what squawk does not simulate or a reason, and names passed over by
+-- a direct-to ("skip TP1 and go direct TP2") are explained.
+function G:uncarried_names()
+  local out = " " .. table.concat(self.out, " "):upper():gsub("[,;]", " ") .. " "
+  local direct = out:find(" DIRECT ", 1, true) ~= nil
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b] and not self:in_reason(r.b)
+        and not (direct and self:preceded_by(r.b, 3, "@passed_over")) then
+      local name = r.name:upper()
+      -- (an airport said by its three-letter code is carried by its ICAO name: SFO -> KSFO)
+      if not out:find("[%s]%w?" .. name:gsub("%p", "%%%0") .. "[%s]") then
+        self.leftover = self:raw(r.b, r.e)
+        return
+      end
+    end
+  end
+end
+
 -- True when the text holds a word that starts an instruction of its own
 -- (the dialogue tells an answer to its question from a new request by it).
 function M.has_instruction(text)
@@ -796,6 +818,7 @@ function G:not_simulated()
       end
       local said = self:raw(i, e)
       self:mark_used(i, e)
+      for k = i, e - 1 do self.noted[k] = true end
       if not seen[class.what] then
         seen[class.what] = true
         found[#found + 1] = string.format("%s ('%s')", class.what, (said:gsub(" ([,.;:])", "%1")))
@@ -827,7 +850,7 @@ function M.translate(text, world)
   local u = squawk.translate.utterance(require("translate.types").join(written_forms(text), TYPES.phrases),
     world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
-    qcache = {}, taken = {} }, G)
+    qcache = {}, taken = {}, noted = {} }, G)
   g:settle_callsigns()
   local note = g:not_simulated()
   -- only what is not simulated was said: no instruction word and no value left
@@ -844,6 +867,7 @@ function M.translate(text, world)
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:uncarried() end
+  if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end

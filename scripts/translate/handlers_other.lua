@@ -352,16 +352,18 @@ return function(H, f, compass)
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig)
     -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
-    local at = self:find_word(s.trig, s.e, "after before")
+    -- (also before the verb: "after REMBI add the waypoint ESAMA")
+    local at = self:find_word(s.b, s.e, "after before")
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
+    local name_e = (next_to and at > s.trig) and at or s.e
     local where
     if lat and lon then
       where = f.num(lat) .. " " .. f.num(lon)
     else
       -- "define WP9 at ... and add it to X's route": "it" is the waypoint just defined
-      local named = self:refs_in(s.trig, next_to and at or s.e, "waypoint")[1]
-      local it = self.last_waypoint and self:word_in(s.trig, next_to and at or s.e, "it")
-      where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, next_to and at or s.e, id)
+      local named = self:refs_in(s.trig, name_e, "waypoint")[1]
+      local it = self.last_waypoint and self:word_in(s.trig, name_e, "it")
+      where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, name_e, id)
       if not where then
         return self:need("Where should the waypoint for " .. id .. " be? Please give a name or a latitude and longitude.")
       end

@@ -81,7 +81,12 @@ return {
   -- words that open the reason given for an instruction (to the end of its
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause" },
-  reason_after_so = { "that", "it", "they", "it's", "its" },
+  reason_after_so = { "that", "it", "they", "it's", "its", "we" },
+  -- abbreviations written in capitals that name no place
+  not_names = { "vfr", "ifr", "rpz", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
+      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz" },
+  -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
+  passed_over = { "skip", "skipping", "bypass", "bypassing", "not", "instead" },
   below = { "below", "under" },
   above = { "above", "over" },
   relative = { "present", "current", "actual", "by" },

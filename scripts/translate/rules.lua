@@ -171,9 +171,11 @@ return function(intent, rule, words)
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
   rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
-  rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
+  -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
+  local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
+  rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
-         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
   rule { "delete del remove rid kill rmv", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 

@@ -330,3 +330,12 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   local r = grammar.translate("add it to AFR55's route", ww)
   check(r.ask ~= nil and not r.ask:find("EXIT1", 1, true), tostring(r.ask))
 end
+
+do -- a place named that no command carries is asked about by name; one a direct-to passes, or an abbreviation, is not
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "LAMSO", "SUGOL" }) }, waypoints = { "LAMSO", "SUGOL" } }
+  check_eq(tr("klm12 dc sugol fl230", w), "ASK I have ALT KLM12 FL230. What does 'sugol' mean?")
+  check_eq(tr("route KLM12 via LAMSO to EHAM", w), "ASK I have ADDWPT KLM12 LAMSO. What does 'EHAM' mean?")
+  check_eq(tr("KLM12 skip LAMSO, route direct SUGOL", w), "DIRECT KLM12 SUGOL")
+  check_eq(tr("KLM12 turn left heading 360, maintain VFR", w), "HDG KLM12 360 LEFT")
+  check_eq(tr("KLM12 after LAMSO add the waypoint SUGOL", w), "ADDWPT KLM12 SUGOL,,,LAMSO")
+end
