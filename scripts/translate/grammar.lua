@@ -491,7 +491,7 @@ function G:parse(b, e)
       local before = self.last_cond
       self.last_cond = nil
       local n_before = #self.out
-      local at = self:at_altitude(s)
+      local at = self:at_altitude(s) or self:at_distance(s)
       local spec = M.intents[s.intent]
       self:at_waypoint(s, spec)
       self[spec and spec.handler or "infer"](self, s, spec)

@@ -418,6 +418,30 @@ function m:at_altitude(s)
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end
 
+-- "when fifteen miles from TARTN descend FL80", "within 10 NM of CGT", "alt
+-- 8000 at 30nm from cyyz": "ATDIST id NAME dist" [NM] or nil. A distance
+-- said after a place ("10 miles past X") is no such condition: its place
+-- stays uncarried and is asked about.
+function m:at_distance(s)
+  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" and s.intent ~= "vs" then
+    return nil
+  end
+  for _, q in ipairs(self:quantities(s.b, s.e)) do
+    if q.kind == "dist" and not self.taken[q.b] then
+      local k = self:skip_fillers(q.e)
+      if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
+      local r = self:word(k, "from of to before") and self:refs_in(self:skip_fillers(k + 1), self:skip_fillers(k + 1) + 1, "waypoint")[1]
+      if r then
+        local ids = self:acids(s)
+        if #ids ~= 1 then return nil end
+        self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
+        return "ATDIST " .. ids[1] .. " " .. r.name .. " " .. f.num(q.value)
+      end
+    end
+  end
+  return nil
+end
+
 -- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.

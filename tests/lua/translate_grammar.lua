@@ -339,3 +339,12 @@ do -- a place named that no command carries is asked about by name; one a direct
   check_eq(tr("KLM12 turn left heading 360, maintain VFR", w), "HDG KLM12 360 LEFT")
   check_eq(tr("KLM12 after LAMSO add the waypoint SUGOL", w), "ADDWPT KLM12 SUGOL,,,LAMSO")
 end
+
+do -- a distance from a place before an instruction is its condition (ATDIST, NM); one past a place is asked
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "LAMSO", "SUGOL" }) }, waypoints = { "LAMSO", "SUGOL" } }
+  check_eq(tr("KLM12, when fifteen miles from SUGOL descend flight level eight zero", w),
+    "ATDIST KLM12 SUGOL 15 ALT KLM12 FL80")
+  check_eq(tr("KLM12 within 10 NM of LAMSO reduce speed 250", w), "ATDIST KLM12 LAMSO 10 SPD KLM12 250")
+  check_eq(tr("KLM12 alt 8000 at 30nm from SUGOL", w), "ATDIST KLM12 SUGOL 30 ALT KLM12 8000")
+  check(asks("KLM12 ten miles past SUGOL descend flight level eight zero", w), "a distance past a place is asked")
+end
