@@ -165,9 +165,32 @@ function M.handler(name, fn) G[name] = fn end
 --    speech recognition's "nine her" -> "niner", and a degree sign ending
 --    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
 --  * thousands grouped with a space: "18 000 feet" -> "18000 feet" (a
---    group of three digits that is "000" or is followed by feet).
+--    group of three digits that is "000" or is followed by feet);
+--  * a turn letter of lexicon.shorthand ("l", "rt") as a word before
+--    "hdg"/"heading" or after "hdg NNN": "lt hdg 250" -> "left hdg 250",
+--    "hdg 060 l" -> "hdg 060 left".
+local HEADING_WORDS = { hdg = true, heading = true, h = true }
+local function turn_letters(text, sh)
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local changed = false
+  for i, w in ipairs(toks) do
+    local letters, punct = w:match("^(%a+)(%p?)$")
+    local d = letters and sh[letters:lower()]
+    if d == "left" or d == "right" then
+      local nxt, prev = toks[i + 1] and toks[i + 1]:lower(), toks[i - 1]
+      if (nxt and HEADING_WORDS[nxt]) or (prev and prev:match("^%d%d%d$") and toks[i - 2]
+          and HEADING_WORDS[toks[i - 2]:lower()]) then
+        toks[i], changed = d .. punct, true
+      end
+    end
+  end
+  return changed and table.concat(toks, " ") or text
+end
+
 local function written_forms(text)
   local sh = lexicon.shorthand
+  text = turn_letters(text, sh)
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil

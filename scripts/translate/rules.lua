@@ -118,6 +118,7 @@ return function(intent, rule, words)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
+  rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
   rule { "due", "hdg", next = "@compass" }
   rule { "around", false, prev = { 3, "turn" } }

@@ -348,3 +348,15 @@ do -- a distance from a place before an instruction is its condition (ATDIST, NM
   check_eq(tr("KLM12 alt 8000 at 30nm from SUGOL", w), "ATDIST KLM12 SUGOL 30 ALT KLM12 8000")
   check(asks("KLM12 ten miles past SUGOL descend flight level eight zero", w), "a distance past a place is asked")
 end
+
+do -- turn letters typed before "hdg" or after its value; "by N" turns by N; "the heading of N ... right" is a heading
+  local w = { aircraft = { plane("RYR5FE", 120, 25000, 280) } }
+  check_eq(tr("ryr5fe lt hdg 250", w), "HDG RYR5FE 250 LEFT")
+  check_eq(tr("ryr5fe hdg 060 l fl150", w), "HDG RYR5FE 60 LEFT ; ALT RYR5FE FL150")
+  check_eq(tr("ryr5fe rt hdg 120 fl350", w), "HDG RYR5FE 120 RIGHT ; ALT RYR5FE FL350")
+  check_eq(tr("ryr5fe turn right by 20", w), "HDG RYR5FE 140 RIGHT")
+  check(grammar.translate("ryr5fe turn right by 200", w).commands[1] == nil, "a turn by more than 180 is confirmed")
+  check_eq(tr("RYR5FE please go to the heading of 200 degree on the right side", w), "HDG RYR5FE 200 RIGHT")
+  check_eq(tr("bring RYR5FE round left onto two nine zero and down to eight thousand feet", w),
+    "HDG RYR5FE 290 LEFT ; ALT RYR5FE 8000")
+end
