@@ -188,6 +188,30 @@ bool same_command(std::string_view produced, std::string_view expected) {
   return true;
 }
 
+namespace {
+// "ALT acid alt" and "VS acid vspd" next to each other, in either order, for
+// the same aircraft are one clearance: "ALT acid alt vspd" (the simulator's
+// ALT with a vertical speed sets the selected altitude and |vspd|, as the two
+// commands do; Simulation::set_altitude, set_vs).
+std::vector<std::string> fold_alt_vs(std::vector<std::string> cmds) {
+  auto words = [](const std::string& c) {
+    auto v = tokens(c);
+    command_first(v);
+    if (!v.empty()) v[0] = canonical_command(v[0]);
+    return v;
+  };
+  for (size_t i = 0; i + 1 < cmds.size(); ++i) {
+    auto a = words(cmds[i]), b = words(cmds[i + 1]);
+    if (a.size() == 3 && b.size() == 3 && a[0] == "VS" && b[0] == "ALT") std::swap(a, b);
+    if (a.size() == 3 && b.size() == 3 && a[0] == "ALT" && b[0] == "VS" && text::iequals(a[1], b[1])) {
+      cmds[i] = "ALT " + a[1] + " " + a[2] + " " + b[2];
+      cmds.erase(cmds.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+    }
+  }
+  return cmds;
+}
+}  // namespace
+
 bool score_case(std::string_view produced, bool asked, std::string_view expected) {
   for (const auto& alt_raw : text::split(expected, '|')) {
     auto alt = text::trim(alt_raw);
@@ -197,7 +221,7 @@ bool score_case(std::string_view produced, bool asked, std::string_view expected
       continue;
     }
     if (asked) continue;
-    auto p = split_commands(produced), e = split_commands(alt);
+    auto p = fold_alt_vs(split_commands(produced)), e = fold_alt_vs(split_commands(alt));
     if (p.size() != e.size()) continue;
     bool all = true;
     for (size_t i = 0; i < p.size() && all; ++i) all = same_command(p[i], e[i]);

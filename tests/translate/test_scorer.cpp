@@ -54,6 +54,16 @@ TEST_CASE("ALT's vertical speed is a magnitude: its sign does not count") {
   CHECK_FALSE(same_command("ALT KL1 FL100 1500", "ALT KL1 FL100 -2000"));
 }
 
+TEST_CASE("ALT then VS (or VS then ALT) of one aircraft is ALT with that vertical speed") {
+  CHECK(score_case("ALT BAW1 FL100 ; VS BAW1 -1500", false, "ALT BAW1 FL100 1500"));
+  CHECK(score_case("VS BAW1 -1500 ; ALT BAW1 FL100", false, "ALT BAW1 FL100 -1500"));
+  CHECK(score_case("ALT BAW1 FL100 1500", false, "ALT BAW1 FL100 ; VS BAW1 -1500"));
+  CHECK(score_case("HDG BAW1 90 ; ALT BAW1 FL100 ; VS BAW1 -1500", false, "HDG BAW1 90 ; ALT BAW1 FL100 1500"));
+  CHECK_FALSE(score_case("ALT BAW1 FL100 ; VS BAW1 -1500", false, "ALT BAW1 FL100 2000"));
+  CHECK_FALSE(score_case("ALT BAW1 FL100 ; VS KLM2 -1500", false, "ALT BAW1 FL100 1500"));
+  CHECK_FALSE(score_case("ALT BAW1 FL100 1000 ; VS BAW1 -1500", false, "ALT BAW1 FL100 1500"));
+}
+
 TEST_CASE("BlueSky's callsign-first form equals the command-first one, nested too") {
   CHECK(same_command("KL1 SPD 250", "SPD KL1 250"));
   CHECK(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 250"));
