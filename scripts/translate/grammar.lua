@@ -161,6 +161,7 @@ function M.handler(name, fn) G[name] = fn end
 --    that is a prefix and digits, or a prefix before a token starting with a
 --    digit, not after a number: "33.95 S 151.18 E" is a hemisphere;
 --    "dlh4ax" and "fl240" are left alone);
+--  * "a thousand", "a hundred" -> "one thousand", "one hundred";
 --  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", and
 --    speech recognition's "nine her" -> "niner", and a degree sign ending
 --    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
@@ -202,6 +203,8 @@ local function written_forms(text)
     if before and before:match("^[%d%.,%-]+$") then return nil end
     return w .. space .. digit
   end)
+  text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
+  text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")

@@ -70,6 +70,8 @@ return function(intent, rule, words)
 
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
+  -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
+  rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }

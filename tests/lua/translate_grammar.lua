@@ -360,3 +360,10 @@ do -- turn letters typed before "hdg" or after its value; "by N" turns by N; "th
   check_eq(tr("bring RYR5FE round left onto two nine zero and down to eight thousand feet", w),
     "HDG RYR5FE 290 LEFT ; ALT RYR5FE 8000")
 end
+
+do -- the sign of a vertical speed said after it; "a thousand" is one thousand
+  local w = { aircraft = { plane("GLO1420", 90, 25000, 280) } }
+  check_eq(tr("For GLO 1420 the vertical speed must be 1800 feet per minute descending", w), "VS GLO1420 -1800")
+  check_eq(tr("GLO1420 vs 1800 fpm climbing", w), "VS GLO1420 1800")
+  check_eq(tr("GLO1420 descend to 9000 with a thousand foot a minute descent", w), "ALT GLO1420 9000 1000")
+end
