@@ -121,6 +121,8 @@ std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string
   if (cmd == "ALT") return {A::kWord, A::kAlt, A::kMagnitude};  // ALT reads |vspd|
   if (cmd == "SPD") return {A::kWord, A::kSpd};
   if (cmd == "HDG") return {A::kWord, A::kHdg, A::kTurn};
+  if (cmd == "AT" && args.size() >= 4)  // AT acid wpt ALT alt | SPD spd
+    return {A::kWord, A::kWord, A::kWord, text::iequals(args[2], "SPD") ? A::kSpd : A::kAlt};
   if (cmd == "DEFWPT") return {A::kWord, A::kLat, A::kLon, A::kWord};
   if (cmd == "ADDWPT" || cmd == "DEST" || cmd == "ORIG") {
     if (args.size() >= 3 && text::to_double(args[1]) && text::to_double(args[2]))

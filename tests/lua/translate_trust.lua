@@ -102,6 +102,9 @@ check_eq(said(tr("KLM1234 ALT FL100")), "ALT KLM1234 FL100")
 check_eq(said(tr("FF 60")), "FF 60")
 -- English that happens to start with a command word stays English
 check(not tr("turn KLM1234 north").typed, "a compass word is English")
+-- a conditional's command typed without its aircraft gets the condition's; one that parses neither way is English
+check_eq(said(tr("klm1234 atalt fl080 spd 210")), "ATALT klm1234 fl080 spd klm1234 210")
+check(not tr("klm1234 atalt fl080 spd").typed, "a conditional whose command does not parse is English")
 check(not tr("delete the aircraft").typed, "glue words are English")
 
 -- 5. destructive and global requests wait for a yes

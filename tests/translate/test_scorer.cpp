@@ -54,6 +54,14 @@ TEST_CASE("ALT's vertical speed is a magnitude: its sign does not count") {
   CHECK_FALSE(same_command("ALT KL1 FL100 1500", "ALT KL1 FL100 -2000"));
 }
 
+TEST_CASE("AT's constraint compares as an altitude or a speed") {
+  CHECK(same_command("AT SWR18L KLO alt FL80", "AT SWR18L KLO ALT FL080"));
+  CHECK(same_command("AT SWR18L KLO ALT 8000", "AT SWR18L KLO ALT FL080"));
+  CHECK(same_command("AT SWR18L KLO SPD 250", "AT SWR18L KLO SPD 250"));
+  CHECK_FALSE(same_command("AT SWR18L KLO ALT FL90", "AT SWR18L KLO ALT FL080"));
+  CHECK_FALSE(same_command("AT SWR18L KLO SPD 250", "AT SWR18L KLO ALT 250"));
+}
+
 TEST_CASE("ALT then VS (or VS then ALT) of one aircraft is ALT with that vertical speed") {
   CHECK(score_case("ALT BAW1 FL100 ; VS BAW1 -1500", false, "ALT BAW1 FL100 1500"));
   CHECK(score_case("VS BAW1 -1500 ; ALT BAW1 FL100", false, "ALT BAW1 FL100 -1500"));
