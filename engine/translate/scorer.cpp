@@ -194,8 +194,9 @@ namespace {
 // "ALT acid alt" and "VS acid vspd" next to each other, in either order, for
 // the same aircraft are one clearance: "ALT acid alt vspd" (the simulator's
 // ALT with a vertical speed sets the selected altitude and |vspd|, as the two
-// commands do; Simulation::set_altitude, set_vs).
-std::vector<std::string> fold_alt_vs(std::vector<std::string> cmds) {
+// commands do; Simulation::set_altitude, set_vs). "LNAV acid ON" right after
+// "DIRECT acid wpt" adds nothing (a direct-to switches LNAV on: route_op).
+std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
   auto words = [](const std::string& c) {
     auto v = tokens(c);
     command_first(v);
@@ -207,6 +208,9 @@ std::vector<std::string> fold_alt_vs(std::vector<std::string> cmds) {
     if (a.size() == 3 && b.size() == 3 && a[0] == "VS" && b[0] == "ALT") std::swap(a, b);
     if (a.size() == 3 && b.size() == 3 && a[0] == "ALT" && b[0] == "VS" && text::iequals(a[1], b[1])) {
       cmds[i] = "ALT " + a[1] + " " + a[2] + " " + b[2];
+      cmds.erase(cmds.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+    } else if (a.size() >= 3 && b.size() == 3 && a[0] == "DIRECT" && b[0] == "LNAV" && text::iequals(a[1], b[1]) &&
+               text::iequals(b[2], "ON")) {
       cmds.erase(cmds.begin() + static_cast<std::ptrdiff_t>(i) + 1);
     }
   }
@@ -223,7 +227,7 @@ bool score_case(std::string_view produced, bool asked, std::string_view expected
       continue;
     }
     if (asked) continue;
-    auto p = fold_alt_vs(split_commands(produced)), e = fold_alt_vs(split_commands(alt));
+    auto p = fold_clearances(split_commands(produced)), e = fold_clearances(split_commands(alt));
     if (p.size() != e.size()) continue;
     bool all = true;
     for (size_t i = 0; i < p.size() && all; ++i) all = same_command(p[i], e[i]);

@@ -29,7 +29,7 @@ return {
       "plan", "departed", "shift", "activate", "deactivate", "unpause", "start", "over", "real", "time", "half",
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
-      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", },
+      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz", },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },
@@ -83,7 +83,7 @@ return {
   reason = { "because", "since", "cause" },
   reason_after_so = { "that", "it", "they", "it's", "its", "we" },
   -- abbreviations written in capitals that name no place
-  not_names = { "vfr", "ifr", "rpz", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
+  not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
       "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
   passed_over = { "skip", "skipping", "bypass", "bypassing", "not", "instead" },
@@ -129,6 +129,7 @@ return {
       near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
     { what = "approach clearances", words = "cleared clear",
       near = { "approach", "land", "landing", "takeoff", "take-off", "ils", "visual", "option" } },
+    { what = "approach clearances", words = "visual", near = { "runway", "approach" } },
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },

@@ -67,6 +67,7 @@ return function(intent, rule, words)
 
   -- an instruction announced with "expect" is no clearance
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
+  rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
 
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
@@ -186,7 +187,10 @@ return function(intent, rule, words)
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dir proceed direct-to", "direct" }
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
-  rule { "cleared", "direct", when = function(g) return #g.world.waypoints > 0 end }
+  -- ("cleared for the FMS bridge visual runway 28R": an approach clearance, not simulated)
+  rule { "cleared", "direct", when = function(g, i)
+    return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
+  end }
   rule { "destination dest", "dest" }
   rule { "fly", "dest", next = "to" }
   rule { "origin departed orig", "orig" }
@@ -261,7 +265,7 @@ return function(intent, rule, words)
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation
-  rule { "reset", false, near = { 3, "protected pz zone zoner separation radius" } }
+  rule { "reset", false, near = { 3, "protected pz rpz zone zoner separation radius" } }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -276,7 +280,7 @@ return function(intent, rule, words)
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
-  rule { "protected pz separation zone zoner zonedh radius", "zone" }
+  rule { "protected pz rpz separation zone zoner zonedh radius", "zone" }
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }

@@ -232,3 +232,6 @@ check_eq(said(tr("KLM1234 reduce speed to 400 kph")), "SPD KLM1234 216")
 r = tr("KLM1234, turn right heading 023, traffic 2 o'clock, 36 miles")
 check_eq(said(r), "HDG KLM1234 23 RIGHT")
 check(r.note ~= nil and r.note:find("traffic information ('traffic 2 o'clock, 36 miles')", 1, true) ~= nil, tostring(r.note))
+
+-- the same command in two command clauses ("hold on, pause") runs once
+check_eq(said(tr("hold on, pause")), "HOLD")

@@ -72,6 +72,12 @@ TEST_CASE("ALT then VS (or VS then ALT) of one aircraft is ALT with that vertica
   CHECK_FALSE(score_case("ALT BAW1 FL100 1000 ; VS BAW1 -1500", false, "ALT BAW1 FL100 1500"));
 }
 
+TEST_CASE("LNAV ON right after a direct-to of the same aircraft adds nothing") {
+  CHECK(score_case("DIRECT JBU614 BETTE ; LNAV JBU614 ON", false, "DIRECT JBU614 BETTE"));
+  CHECK_FALSE(score_case("DIRECT JBU614 BETTE ; LNAV JBU614 OFF", false, "DIRECT JBU614 BETTE"));
+  CHECK_FALSE(score_case("DIRECT JBU614 BETTE ; LNAV UAL9 ON", false, "DIRECT JBU614 BETTE"));
+}
+
 TEST_CASE("BlueSky's callsign-first form equals the command-first one, nested too") {
   CHECK(same_command("KL1 SPD 250", "SPD KL1 250"));
   CHECK(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 250"));
