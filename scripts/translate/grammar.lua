@@ -159,9 +159,12 @@ function M.handler(name, fn) G[name] = fn end
 --  * lexicon.shorthand prefixes before a value: "ryr81jc fl240 s270" ->
 --    "ryr81jc fl240 speed 270", "l 330" -> "left 330" (only a whole token
 --    that is a prefix and digits, or a prefix before a token starting with a
---    digit, not after a number: "33.95 S 151.18 E" is a hemisphere;
+--    digit, not after a number unless it is a turn letter: "33.95 S 151.18 E"
+--    is a hemisphere;
 --    "dlh4ax" and "fl240" are left alone);
---  * "a thousand", "a hundred" -> "one thousand", "one hundred";
+--  * "a thousand", "a hundred" -> "one thousand", "one hundred"; a typed
+--    callsign glued to its level, "klm12fl240" -> "klm12 fl240"; "m78" ->
+--    "mach .78";
 --  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", and
 --    speech recognition's "nine her" -> "niner", and a degree sign ending
 --    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
@@ -192,6 +195,9 @@ end
 local function written_forms(text)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
+  -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
+  text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
+  text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil
@@ -200,7 +206,8 @@ local function written_forms(text)
     local w = sh[pre:lower()]
     if not w then return nil end
     local before = text:sub(1, at - 1):match("(%S+)%s*$")
-    if before and before:match("^[%d%.,%-]+$") then return nil end
+    -- (after a number only a turn letter: "fl 310 rt 320"; "33.95 S" is a hemisphere, "2 h" hours)
+    if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
   text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")

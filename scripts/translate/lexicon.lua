@@ -52,7 +52,8 @@ return {
   },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
-  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right",
+  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", spd = "speed",
+                hdg = "heading",
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },

@@ -137,6 +137,20 @@ return function(intent, rule, words)
   -- waypoints, creation and deletion
   rule { "define make put", false, near = { 2, "box circle" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
+  -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
+  -- waypoint at a position, when no aircraft that flies and no aircraft type is named
+  local function new_fix_at(g, i)
+    if g:has_ref(1, #g.t + 1, "type") then return false end
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+      if r.exists then return false end
+    end
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
+      if q.kind == "lat" or q.kind == "lon" then return true end
+    end
+    return false
+  end
+  rule { "put place create make add", "defwpt", near = { 2, "@waypoint_nouns" }, when = new_fix_at }
+  rule { "waypoint wpt", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
   rule { "add", "defwpt", near = { 2, "@waypoint_nouns" }, when = function(g, i)
     if not g:followed_by(i, 4, "@named") then return false end

@@ -377,3 +377,14 @@ do -- a keyword in capitals is that word ("RPZ"); "advise when able direct X" is
   local r = grammar.translate("UAL9, cleared for the FMS bridge visual runway two eight right", w)
   check(#r.commands == 0 and r.note ~= nil, "a visual approach is named as not simulated")
 end
+
+do -- a new waypoint put at a position; glued typed forms; a turn letter after a level
+  check_eq(tr("put a waypoint called TEST1 at 52.3 north 4.7 east"), "DEFWPT TEST1 52.3 4.7")
+  check_eq(tr("waypoint TEST1 at 52.3N 4.7E please"), "DEFWPT TEST1 52.3 4.7")
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300) } }
+  check_eq(tr("klm12fl240", w), "ALT KLM12 FL240")
+  check_eq(tr("klm12 m78", w), "SPD KLM12 M0.78")
+  check_eq(tr("klm12 spd280", w), "SPD KLM12 280")
+  check_eq(tr("klm12 fl 310 rt 320", w), "ALT KLM12 FL310 ; HDG KLM12 320 RIGHT")
+  check_eq(tr("put a new aircraft TEST9 A320 at 52 north 4 east"), "CRE TEST9 A320 52 4")
+end
