@@ -346,6 +346,28 @@ return function(H, f, compass)
     end
   end
 
+  -- The places named in tokens [b, e), in order: waypoint references, and
+  -- user waypoints whose names read like callsigns ("TEST1"): {{name, b, e}}.
+  function m:route_places(b, e)
+    local user = {}
+    for _, w in ipairs(self.world.waypoints or {}) do user[w:upper()] = true end
+    local out = {}
+    local k = b
+    while k < math.min(e, #self.t + 1) do
+      local r = self:refs_in(k, k + 1, "waypoint")[1]
+      if r then
+        out[#out + 1] = r
+        k = r.e
+      else
+        if self.t[k].kind ~= "punct" and user[self.t[k].raw:upper()] then
+          out[#out + 1] = { name = self.t[k].raw:upper(), b = k, e = k + 1 }
+        end
+        k = k + 1
+      end
+    end
+    return out
+  end
+
   function m:add_waypoint(s)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
@@ -356,12 +378,12 @@ return function(H, f, compass)
     local at = self:find_word(s.b, s.e, "after before")
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
     local name_e = (next_to and at > s.trig) and at or s.e
-    local where
+    local where, named
     if lat and lon then
       where = f.num(lat) .. " " .. f.num(lon)
     else
       -- "define WP9 at ... and add it to X's route": "it" is the waypoint just defined
-      local named = self:refs_in(s.trig, name_e, "waypoint")[1]
+      named = self:route_places(s.trig, name_e)[1]
       local it = self.last_waypoint and self:word_in(s.trig, name_e, "it")
       where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, name_e, id)
       if not where then
@@ -383,6 +405,17 @@ return function(H, f, compass)
     if alt or spd then cmd = cmd .. " " .. (alt or "") end
     if spd then cmd = cmd .. " " .. spd end
     self:emit(cmd)
+    if not named then return end
+    -- "route EZY45 via TEST1 then NIK to EHAM": the next places of the route in
+    -- order; the last one after "to", when an airport (four letters), is the destination
+    local rest = self:route_places(named.e, s.e)
+    for k, r in ipairs(rest) do
+      if k == #rest and self:word(r.b - 1, "to") and r.name:match("^%a%a%a%a$") then
+        self:emit("DEST " .. id .. " " .. r.name:upper())
+      elseif self:word(r.b - 1, "then via and to") or (self.t[r.b - 1] or {}).text == "," then
+        self:emit("ADDWPT " .. id .. " " .. r.name)
+      end
+    end
   end
 
   -- The name given to a new waypoint or shape in tokens [b, e): a name that is

@@ -334,7 +334,7 @@ end
 do -- a place named that no command carries is asked about by name; one a direct-to passes, or an abbreviation, is not
   local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "LAMSO", "SUGOL" }) }, waypoints = { "LAMSO", "SUGOL" } }
   check_eq(tr("klm12 dc sugol fl230", w), "ASK I have ALT KLM12 FL230. What does 'sugol' mean?")
-  check_eq(tr("route KLM12 via LAMSO to EHAM", w), "ASK I have ADDWPT KLM12 LAMSO. What does 'EHAM' mean?")
+  check_eq(tr("Send KLM12 to EHAM and have it climb to FL300", w), "ASK I have ALT KLM12 FL300. What does 'EHAM' mean?")
   check_eq(tr("KLM12 skip LAMSO, route direct SUGOL", w), "DIRECT KLM12 SUGOL")
   check_eq(tr("KLM12 turn left heading 360, maintain VFR", w), "HDG KLM12 360 LEFT")
   check_eq(tr("KLM12 after LAMSO add the waypoint SUGOL", w), "ADDWPT KLM12 SUGOL,,,LAMSO")
@@ -387,4 +387,12 @@ do -- a new waypoint put at a position; glued typed forms; a turn letter after a
   check_eq(tr("klm12 spd280", w), "SPD KLM12 280")
   check_eq(tr("klm12 fl 310 rt 320", w), "ALT KLM12 FL310 ; HDG KLM12 320 RIGHT")
   check_eq(tr("put a new aircraft TEST9 A320 at 52 north 4 east"), "CRE TEST9 A320 52 4")
+end
+
+do -- a route said as places in order: each added, the last airport after "to" the destination
+  local w = { aircraft = { plane("EZY45", 45, 30000, 290) }, waypoints = { "TEST1", "LAMSO", "SUGOL" } }
+  check_eq(tr("route EZY45 via TEST1 to EHAM", w), "ADDWPT EZY45 TEST1 ; DEST EZY45 EHAM")
+  check_eq(tr("give EZY45 a route: LAMSO then SUGOL", w), "ADDWPT EZY45 LAMSO ; ADDWPT EZY45 SUGOL")
+  check_eq(tr("route EZY45 via TEST1, LAMSO and SUGOL to EHAM", w),
+    "ADDWPT EZY45 TEST1 ; ADDWPT EZY45 LAMSO ; ADDWPT EZY45 SUGOL ; DEST EZY45 EHAM")
 end
