@@ -526,8 +526,7 @@ function G:parse(b, e)
       local n_before = #self.out
       local at = self:at_altitude(s) or self:at_distance(s)
       local spec = M.intents[s.intent]
-      self:at_waypoint(s, spec)
-      self[spec and spec.handler or "infer"](self, s, spec)
+      if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
       if not self.ask and #self.out > n_before then
         self:leftovers(s)
         self:unexplained(s, n_before)
@@ -549,12 +548,30 @@ function G:parse(b, e)
   end
 end
 
--- "cross ARTIP at 220 knots", "at TP2 be at FL200": a value instruction
--- tied to a waypoint is a constraint the grammar does not translate (an
--- AT condition); asked, never issued at once.
+-- "cross CAMRN at one one thousand", "cross ARTIP at 220 knots": a crossing
+-- restriction at a waypoint of the aircraft's route is BlueSky's AT
+-- constraint ("AT id WPT ALT alt" / "SPD spd"); true when it was emitted.
+-- Any other value instruction tied to a waypoint ("at TP2 be at FL200") is
+-- an AT condition the grammar does not translate: asked, never issued at once.
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+    if self:word(r.b - 1, "cross crossing") and self:word(self:skip_fillers(r.e), "at") then
+      local ids = self:acids(s)
+      local now = #ids == 1 and self:state(ids[1])
+      local in_route = false
+      for _, w in ipairs(now and now.route or {}) do in_route = in_route or w:upper() == r.name:upper() end
+      local qs = self:quantities(r.e, s.e)
+      local q = #qs == 1 and qs[1]
+      local f = handlers.format
+      if in_route and q and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then
+        self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(q.value, q.fl))
+        return self:take(q) ~= nil
+      elseif in_route and q and (q.kind == "speed" or q.kind == "mach") then
+        self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        return self:take(q) ~= nil
+      end
+    end
     if self:word(r.b - 1, "at cross crossing over abeam overhead") then
       return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
         .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",

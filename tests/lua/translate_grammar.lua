@@ -396,3 +396,11 @@ do -- a route said as places in order: each added, the last airport after "to" t
   check_eq(tr("route EZY45 via TEST1, LAMSO and SUGOL to EHAM", w),
     "ADDWPT EZY45 TEST1 ; ADDWPT EZY45 LAMSO ; ADDWPT EZY45 SUGOL ; DEST EZY45 EHAM")
 end
+
+do -- "cross X at <level or speed>": an AT constraint at a waypoint of the route; off the route it is asked
+  local w = { aircraft = { plane("AAL2307", 90, 15000, 280, { "CAMRN" }) }, waypoints = { "CAMRN", "OTHER" } }
+  check_eq(tr("American twenty-three oh seven, cross CAMRN at one one thousand.", w), "AT AAL2307 CAMRN ALT 11000")
+  check_eq(tr("AAL2307 cross CAMRN at and maintain flight level one two zero", w), "AT AAL2307 CAMRN ALT FL120")
+  check_eq(tr("AAL2307 cross CAMRN at 250 knots", w), "AT AAL2307 CAMRN SPD 250")
+  check(asks("AAL2307 cross OTHER at one one thousand", w), "a crossing off the route is asked")
+end
