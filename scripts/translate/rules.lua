@@ -108,7 +108,7 @@ return function(intent, rule, words)
   rule { "multiplier", "dtmult" }
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
   rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
-  rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
+  rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow slower faster accelerate decelerate", "spd" }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }

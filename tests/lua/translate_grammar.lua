@@ -404,3 +404,7 @@ do -- "cross X at <level or speed>": an AT constraint at a waypoint of the route
   check_eq(tr("AAL2307 cross CAMRN at 250 knots", w), "AT AAL2307 CAMRN SPD 250")
   check(asks("AAL2307 cross OTHER at one one thousand", w), "a crossing off the route is asked")
 end
+
+do -- "fast-forward" after the simulation is named is fast-forward, not a faster clock
+  check_eq(tr("pause the sim, then fast-forward 10 minutes"), "HOLD ; FF 600")
+end
