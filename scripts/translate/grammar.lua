@@ -556,7 +556,7 @@ end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    if self:word(r.b - 1, "cross crossing") and self:word(self:skip_fillers(r.e), "at") then
+    if self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at") then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false

@@ -467,6 +467,11 @@ function m:leftovers(s)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
         emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
         spd_done = self:take(q)
+      elseif q.kind == "plain" and q.number.typed and self.t[q.b].raw:match("^%.%d%d?$") and not spd_done
+          and q.value >= 0.4 and q.value < 1 then
+        -- a typed ".78" beside other values is a Mach number ("dlh402 fl250 .78")
+        emit("SPD " .. ids[1] .. " " .. f.mach(q.value))
+        spd_done = self:take(q)
       elseif s.intent ~= "hdg" and not hdg_done and q.kind == "plain" and H.zero_led_heading(q) then
         -- three spoken digits led by zero are a heading: no level or speed is said so
         emit("HDG " .. ids[1] .. " " .. f.num(q.value))

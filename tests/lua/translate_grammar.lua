@@ -408,3 +408,8 @@ end
 do -- "fast-forward" after the simulation is named is fast-forward, not a faster clock
   check_eq(tr("pause the sim, then fast-forward 10 minutes"), "HOLD ; FF 600")
 end
+
+do -- a typed ".78" beside other values is a Mach number
+  local w = { aircraft = { plane("DLH402", 90, 25000, 280) } }
+  check_eq(tr("dlh402 fl250 .78", w), "ALT DLH402 FL250 ; SPD DLH402 M0.78")
+end
