@@ -309,6 +309,15 @@ function G:alone(i)
   return true
 end
 
+-- True when every token outside [b, e) is punctuation or a filler.
+function G:alone_but(b, e)
+  for k = 1, #self.t do
+    local t = self.t[k]
+    if (k < b or k >= e) and t.kind ~= "punct" and not t.filler then return false end
+  end
+  return true
+end
+
 -- True when every token but the one at i is punctuation, a filler or part of
 -- a callsign, and a callsign is there ("baw836 route?").
 function G:alone_with_aircraft(i)

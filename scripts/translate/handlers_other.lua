@@ -607,6 +607,7 @@ return function(H, f, compass)
     if id then self:emit(cmd .. " " .. id) end
   end
   function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
+  function m:delrte(s) self:one_acid(s, "DELRTE", "have its route cleared") end
   -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
   function m:pos(s)
     -- a navaid's kind said beside its name ("the Pampus VOR, PAM") is no place of its own

@@ -41,6 +41,7 @@ return function(intent, rule, words)
   intent "lnav" { cmd = "LNAV", args = { "acid", "ON", "OFF" }, handler = "lnav" }
   intent "vnav" { cmd = "VNAV", args = { "acid", "ON", "OFF" }, handler = "vnav" }
   intent "listrte" { cmd = "LISTRTE", args = { "acid" }, handler = "listrte" }
+  intent "delrte" { cmd = "DELRTE", args = { "acid" }, handler = "delrte" }
   intent "pos" { cmd = "POS", args = { "acid" }, handler = "pos" }
   intent "move" { cmd = "MOVE", args = { "acid", "lat", "lon", "alt", "hdg", "spd", "vspd" }, handler = "move",
                   absorbs = true }
@@ -95,8 +96,9 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
   end }
+  rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
-    return g:followed_by(i, 4, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
+    return g:followed_by(i, 5, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
@@ -194,6 +196,9 @@ return function(intent, rule, words)
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
+  -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
+  rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
   rule { "delete del remove rid kill rmv", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
@@ -206,6 +211,14 @@ return function(intent, rule, words)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
   end }
   rule { "destination dest", "dest" }
+  -- "fly to TEST1": a waypoint the simulation knows is flown to directly; other places are destinations
+  rule { "fly", "direct", next = "to", when = function(g, i)
+    local t = g.t[i + 2]
+    for _, w in ipairs(g.world.waypoints or {}) do
+      if t and w:upper() == t.raw:upper() then return true end
+    end
+    return false
+  end }
   rule { "fly", "dest", next = "to" }
   rule { "origin departed orig", "orig" }
   rule { "lnav", "lnav" }
@@ -216,11 +229,14 @@ return function(intent, rule, words)
   rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look" } }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
+  -- "route of klm1234?": the request opens with the noun and asks
+  rule { "route", "listrte", next = "of", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
   rule { "listrte rte", "listrte" }
 
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
+  rule { "doing", "pos", prev = { 3, "what what's whats" } }  -- "what's klm12 doing"
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
@@ -248,7 +264,9 @@ return function(intent, rule, words)
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "say altitude", "report your heading": a question about the aircraft's state
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
-  rule { "unpause op", "op" }
+  rule { "unpause unfreeze op", "op" }
+  rule { "go", "op", next = "again" }  -- "and go again"
+  rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }

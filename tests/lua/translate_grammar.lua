@@ -413,3 +413,18 @@ do -- a typed ".78" beside other values is a Mach number
   local w = { aircraft = { plane("DLH402", 90, 25000, 280) } }
   check_eq(tr("dlh402 fl250 .78", w), "ALT DLH402 FL250 ; SPD DLH402 M0.78")
 end
+
+do -- sim control and questions in other words; a route cleared; "fly to" a known waypoint is a direct-to
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "SUGOL" }) }, waypoints = { "TEST1", "SUGOL" } }
+  check_eq(tr("run it"), "OP")
+  check_eq(tr("and go again"), "OP")
+  check_eq(tr("ok, carry on, unfreeze"), "OP")
+  check_eq(tr("speed up 10x"), "DTMULT 10")
+  check_eq(tr("speed the sim up, times three"), "DTMULT 3")
+  check_eq(tr("what's klm12 doing", w), "POS KLM12")
+  check_eq(tr("route of klm12?", w), "LISTRTE KLM12")
+  check_eq(tr("Could you add SUGOL to the route of KLM12?", w), "ADDWPT KLM12 SUGOL")
+  check_eq(tr("clear the route of KLM12", w), "DELRTE KLM12")
+  check_eq(tr("remove SUGOL from the route of KLM12", w), "DELWPT KLM12 SUGOL")
+  check_eq(tr("KLM12, fly to TEST1 please", w), "ADDWPT KLM12 TEST1 ; DIRECT KLM12 TEST1")
+end
