@@ -211,6 +211,14 @@ return function(intent, rule, words)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
   end }
   rule { "destination dest", "dest" }
+  -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent to
+  rule { "send", "dest", when = function(g, i)
+    local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
+    for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
+      if r.name:match("^%a%a%a%a$") then return true end
+    end
+    return false
+  end }
   -- "fly to TEST1": a waypoint the simulation knows is flown to directly; other places are destinations
   rule { "fly", "direct", next = "to", when = function(g, i)
     local t = g.t[i + 2]
@@ -244,6 +252,16 @@ return function(intent, rule, words)
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" }, not_near = { 4, "lnav vnav navigation" } }
+  -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet": an aircraft that flies put at a position
+  rule { "put place", "move", when = function(g, i)
+    local named = false
+    for _, r in ipairs(g:refs_in(i + 1, math.min(#g.t + 1, i + 5), "aircraft")) do named = named or r.exists end
+    if not named then return false end
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 10))) do
+      if q.kind == "lat" or (q.kind == "plain" and q.number.decimal) then return true end
+    end
+    return false
+  end }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
   -- (a holding pattern) is no pause of the simulation

@@ -334,7 +334,7 @@ end
 do -- a place named that no command carries is asked about by name; one a direct-to passes, or an abbreviation, is not
   local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "LAMSO", "SUGOL" }) }, waypoints = { "LAMSO", "SUGOL" } }
   check_eq(tr("klm12 dc sugol fl230", w), "ASK I have ALT KLM12 FL230. What does 'sugol' mean?")
-  check_eq(tr("Send KLM12 to EHAM and have it climb to FL300", w), "ASK I have ALT KLM12 FL300. What does 'EHAM' mean?")
+  check_eq(tr("KLM12 climb FL300 for EHAM", w), "ASK I have ALT KLM12 FL300. What does 'EHAM' mean?")
   check_eq(tr("KLM12 skip LAMSO, route direct SUGOL", w), "DIRECT KLM12 SUGOL")
   check_eq(tr("KLM12 turn left heading 360, maintain VFR", w), "HDG KLM12 360 LEFT")
   check_eq(tr("KLM12 after LAMSO add the waypoint SUGOL", w), "ADDWPT KLM12 SUGOL,,,LAMSO")
@@ -427,4 +427,11 @@ do -- sim control and questions in other words; a route cleared; "fly to" a know
   check_eq(tr("clear the route of KLM12", w), "DELRTE KLM12")
   check_eq(tr("remove SUGOL from the route of KLM12", w), "DELWPT KLM12 SUGOL")
   check_eq(tr("KLM12, fly to TEST1 please", w), "ADDWPT KLM12 TEST1 ; DIRECT KLM12 TEST1")
+end
+
+do -- an aircraft that flies put at a position is moved; sent to an airport, its destination
+  local w = { aircraft = { plane("N345CS", 90, 5000, 120), plane("AAL100", 90, 5000, 250) } }
+  check_eq(tr("Put the Cessna N345CS at 42.0 -88.3, 3000 feet.", w), "MOVE N345CS 42 -88.3 3000")
+  check_eq(tr("Send AAL100 to KBOS and have it climb to 10,000.", w), "DEST AAL100 KBOS ; ALT AAL100 10000")
+  check(asks("Put a new Cessna N999 at 42.0 -88.3", w), "a callsign that does not fly is not moved")
 end
