@@ -600,7 +600,11 @@ return function(H, f, compass)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
   function m:vnav(s) nav(self, s, "VNAV") end
-  function m:switch(s, spec) self:emit(spec.cmd .. " " .. on_off(self, s)) end
+  -- "Is conflict detection switched on?": a yes/no question asks for the setting (the bare command shows it)
+  function m:switch(s, spec)
+    if self:word(1, "is are") and self.t[#self.t].text == "?" then return self:emit(spec.cmd) end
+    self:emit(spec.cmd .. " " .. on_off(self, s))
+  end
 
   function m:one_acid(s, cmd, what)
     local id = self:acid(s, what)

@@ -435,3 +435,8 @@ do -- an aircraft that flies put at a position is moved; sent to an airport, its
   check_eq(tr("Send AAL100 to KBOS and have it climb to 10,000.", w), "DEST AAL100 KBOS ; ALT AAL100 10000")
   check(asks("Put a new Cessna N999 at 42.0 -88.3", w), "a callsign that does not fly is not moved")
 end
+
+do -- a yes/no question about a switch asks for the setting
+  check_eq(tr("Is conflict detection switched on?"), "ASAS")
+  check_eq(tr("switch conflict detection on"), "ASAS ON")
+end
