@@ -118,7 +118,7 @@ return function(intent, rule, words)
   -- heading
   rule { "heading hdg headings", "hdg" }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
-  rule { "turn", "hdg" }
+  rule { "turn turning", "hdg" }
   rule { "left right", "hdg", when = function(g, i)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }

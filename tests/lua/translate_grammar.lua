@@ -440,3 +440,8 @@ do -- a yes/no question about a switch asks for the setting
   check_eq(tr("Is conflict detection switched on?"), "ASAS")
   check_eq(tr("switch conflict detection on"), "ASAS ON")
 end
+
+do -- "turning" is a turn
+  local w = { aircraft = { plane("JJP503", 300, 25000, 280) } }
+  check_eq(tr("Can you make JJP503 turning left for 90 degree?", w), "HDG JJP503 210 LEFT")
+end
