@@ -445,3 +445,9 @@ do -- "turning" is a turn
   local w = { aircraft = { plane("JJP503", 300, 25000, 280) } }
   check_eq(tr("Can you make JJP503 turning left for 90 degree?", w), "HDG JJP503 210 LEFT")
 end
+
+do -- typed shorthand for two aircraft, each with a value of its own unit; a bare fragment still asks
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300), plane("EZY45", 45, 30000, 290) } }
+  check_eq(tr("klm12 fl250 ezy45 fl310", w), "ALT KLM12 FL250 ; ALT EZY45 FL310")
+  check_eq(tr("KLM12 turn right heading 160 EZY45 2", w), "ASK I have HDG KLM12 160 RIGHT. What does 'EZY45 2' mean?")
+end
