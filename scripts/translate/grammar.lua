@@ -164,7 +164,7 @@ function M.handler(name, fn) G[name] = fn end
 --    "dlh4ax" and "fl240" are left alone);
 --  * "a thousand", "a hundred" -> "one thousand", "one hundred"; a typed
 --    callsign glued to its level, "klm12fl240" -> "klm12 fl240"; "m78" ->
---    "mach .78";
+--    "mach .78"; a level typed digit by digit, "fl 3 4 0" -> "fl 340";
 --  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", and
 --    speech recognition's "nine her" -> "niner", and a degree sign ending
 --    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
@@ -198,6 +198,8 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  -- a level typed digit by digit ("fl 3 4 0")
+  text = text:gsub("%f[%a]([Ff][Ll]) (%d) (%d) (%d)%f[%W]", "%1 %2%3%4")
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil

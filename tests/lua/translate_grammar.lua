@@ -451,3 +451,8 @@ do -- typed shorthand for two aircraft, each with a value of its own unit; a bar
   check_eq(tr("klm12 fl250 ezy45 fl310", w), "ALT KLM12 FL250 ; ALT EZY45 FL310")
   check_eq(tr("KLM12 turn right heading 160 EZY45 2", w), "ASK I have HDG KLM12 160 RIGHT. What does 'EZY45 2' mean?")
 end
+
+do -- a level typed digit by digit
+  local w = { aircraft = { plane("VLG23KA", 90, 30000, 280) } }
+  check_eq(tr("vlg23ka fl 3 4 0", w), "ALT VLG23KA FL340")
+end
