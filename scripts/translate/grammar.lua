@@ -750,14 +750,16 @@ end
 -- fl230": an instruction not read; "route EZY45 via TEST1 to EHAM": a
 -- destination dropped) is a leftover, asked about by name. Abbreviations
 -- that are no names (lexicon.not_names: "VFR", "RPZ"), names inside a reply
--- about what squawk does not simulate or a reason, and names passed over by
--- a direct-to ("skip TP1 and go direct TP2") are explained.
+-- about what squawk does not simulate or a reason, names passed over by a
+-- direct-to ("skip TP1 and go direct TP2") and names in an instruction only
+-- announced ("expect direct X", "advise when able direct X") are explained.
 function G:uncarried_names()
   local out = " " .. table.concat(self.out, " "):upper():gsub("[,;]", " ") .. " "
   local direct = out:find(" DIRECT ", 1, true) ~= nil
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b] and not self:in_reason(r.b)
-        and not (direct and self:preceded_by(r.b, 3, "@passed_over")) then
+        and not (direct and self:preceded_by(r.b, 3, "@passed_over"))
+        and not self:preceded_by(r.b, 4, "@not_a_clearance advise") then
       local name = r.name:upper()
       -- (an airport said by its three-letter code is carried by its ICAO name: SFO -> KSFO)
       if not out:find("[%s]%w?" .. name:gsub("%p", "%%%0") .. "[%s]") then

@@ -372,8 +372,7 @@ do -- a keyword in capitals is that word ("RPZ"); "advise when able direct X" is
   local w = { aircraft = { plane("UAL9", 90, 25000, 280, { "BENKY" }) }, waypoints = { "BENKY" } }
   check_eq(tr("turn resolution on and set RPZ to 5 NM", w), "RESO MVP ; ZONER 5")
   check_eq(tr("UAL9 CLIMB FL300", w), "ALT UAL9 FL300")
-  check(not tr("UAL9, fly heading zero seven zero, advise when able direct BENKY", w):find("DIRECT", 1, true),
-    "advise when able: no direct-to")
+  check_eq(tr("UAL9, fly heading zero seven zero, advise when able direct BENKY", w), "HDG UAL9 70")
   local r = grammar.translate("UAL9, cleared for the FMS bridge visual runway two eight right", w)
   check(#r.commands == 0 and r.note ~= nil, "a visual approach is named as not simulated")
 end
