@@ -600,9 +600,14 @@ return function(H, f, compass)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
   function m:vnav(s) nav(self, s, "VNAV") end
-  -- "Is conflict detection switched on?": a yes/no question asks for the setting (the bare command shows it)
+  -- True when the request asks what a setting is ("Is conflict detection switched on?", "what's the
+  -- current zone radius?", "which resolution method is active?"): the bare command shows it.
+  function m:asks_setting()
+    local first = self:skip_fillers(1)
+    return self.t[#self.t].text == "?" and self:word(first, "is are what what's whats which")
+  end
   function m:switch(s, spec)
-    if self:word(1, "is are") and self.t[#self.t].text == "?" then return self:emit(spec.cmd) end
+    if self:asks_setting() then return self:emit(spec.cmd) end
     self:emit(spec.cmd .. " " .. on_off(self, s))
   end
 
@@ -732,6 +737,7 @@ return function(H, f, compass)
   end
   function m:resolution(s)
     local b = s.b > 1 and s.b - 1 or s.b
+    if self:asks_setting() then return self:emit("RESO") end
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
@@ -739,6 +745,7 @@ return function(H, f, compass)
   end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical")
+    if self:asks_setting() and #self:quantities(s.b, s.e) == 0 then return self:emit(vertical and "ZONEDH" or "ZONER") end
     local before = #self.out
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
@@ -765,6 +772,7 @@ return function(H, f, compass)
   function m:look_ahead(s)
     local q = first(self, s, { time = true, plain = true })
     if q then return self:emit("DTLOOK " .. f.num(q.value)) end
+    if self:asks_setting() then return self:emit("DTLOOK") end
     self:need("How far ahead, in seconds, should conflict detection look?")
   end
 end

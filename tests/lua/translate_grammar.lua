@@ -435,8 +435,12 @@ do -- an aircraft that flies put at a position is moved; sent to an airport, its
   check(asks("Put a new Cessna N999 at 42.0 -88.3", w), "a callsign that does not fly is not moved")
 end
 
-do -- a yes/no question about a switch asks for the setting
+do -- a question about a setting gives the bare command, which shows it
   check_eq(tr("Is conflict detection switched on?"), "ASAS")
+  check_eq(tr("what's the current zone radius?"), "ZONER")
+  check_eq(tr("What look-ahead time are we using at the moment?"), "DTLOOK")
+  check_eq(tr("which resolution method is active?"), "RESO")
+  check_eq(tr("set the zone radius to 5 nm"), "ZONER 5")
   check_eq(tr("switch conflict detection on"), "ASAS ON")
 end
 
