@@ -252,15 +252,17 @@ return function(intent, rule, words)
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" }, not_near = { 4, "lnav vnav navigation" } }
-  -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet": an aircraft that flies put at a position
+  -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
+  -- that flies put at a position or over a place
   rule { "put place", "move", when = function(g, i)
-    local named = false
-    for _, r in ipairs(g:refs_in(i + 1, math.min(#g.t + 1, i + 5), "aircraft")) do named = named or r.exists end
+    local named
+    for _, r in ipairs(g:refs_in(i + 1, math.min(#g.t + 1, i + 5), "aircraft")) do named = named or (r.exists and r) end
     if not named then return false end
     for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 10))) do
       if q.kind == "lat" or (q.kind == "plain" and q.number.decimal) then return true end
     end
-    return false
+    local w = g:refs_in(named.e, math.min(#g.t + 1, named.e + 3), "waypoint")[1]
+    return w ~= nil and g:word(w.b - 1, "over on at")
   end }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"

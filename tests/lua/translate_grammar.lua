@@ -431,6 +431,7 @@ end
 do -- an aircraft that flies put at a position is moved; sent to an airport, its destination
   local w = { aircraft = { plane("N345CS", 90, 5000, 120), plane("AAL100", 90, 5000, 250) } }
   check_eq(tr("Put the Cessna N345CS at 42.0 -88.3, 3000 feet.", w), "MOVE N345CS 42 -88.3 3000")
+  check_eq(tr("put N345CS over SPY at fl200", w), "MOVE N345CS SPY FL200")
   check_eq(tr("Send AAL100 to KBOS and have it climb to 10,000.", w), "DEST AAL100 KBOS ; ALT AAL100 10000")
   check(asks("Put a new Cessna N999 at 42.0 -88.3", w), "a callsign that does not fly is not moved")
 end
