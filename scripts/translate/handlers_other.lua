@@ -631,6 +631,12 @@ return function(H, f, compass)
     -- an airport by its name ("where is Schiphol?")
     local airport = #self:refs_in(s.b, s.e, "aircraft") == 0 and self:airport_by_name(s.trig + 1, s.e)
     if airport then return self:emit("POS " .. airport) end
+    -- "show me where TEST01 and TEST03 are": each aircraft named
+    local ids = self:acids(s)
+    if #ids > 1 then
+      for _, id in ipairs(ids) do self:emit("POS " .. id) end
+      return
+    end
     self:one_acid(s, "POS", "be shown")
   end
 

@@ -460,3 +460,8 @@ do -- a level typed digit by digit
   local w = { aircraft = { plane("VLG23KA", 90, 30000, 280) } }
   check_eq(tr("vlg23ka fl 3 4 0", w), "ALT VLG23KA FL340")
 end
+
+do -- where several aircraft are: each shown
+  local w = { aircraft = { plane("TEST01", 90, 20000, 250), plane("TEST03", 90, 20000, 250) } }
+  check_eq(tr("Pause it and show me where TEST01 and TEST03 are.", w), "HOLD ; POS TEST01 ; POS TEST03")
+end
