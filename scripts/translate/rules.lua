@@ -98,7 +98,7 @@ return function(intent, rule, words)
   end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
-    return g:followed_by(i, 5, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
+    return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
@@ -147,7 +147,7 @@ return function(intent, rule, words)
       if r.exists then return false end
     end
     for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
-      if q.kind == "lat" or q.kind == "lon" then return true end
+      if q.kind == "lat" or q.kind == "lon" or (q.kind == "plain" and q.number.decimal) then return true end
     end
     return false
   end

@@ -465,3 +465,8 @@ do -- where several aircraft are: each shown
   local w = { aircraft = { plane("TEST01", 90, 20000, 250), plane("TEST03", 90, 20000, 250) } }
   check_eq(tr("Pause it and show me where TEST01 and TEST03 are.", w), "HOLD ; POS TEST01 ; POS TEST03")
 end
+
+do -- a waypoint added at a decimal position with no aircraft is defined; the sim sped up "to N times"
+  check_eq(tr("add a waypoint BRAVO 51.75 -1.25"), "DEFWPT BRAVO 51.75 -1.25")
+  check_eq(tr("speed the sim up to twenty times real time"), "DTMULT 20")
+end
