@@ -55,7 +55,7 @@ end
 -- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
 -- kept here after their first-sight figures were recorded, fixed by class.
 floors("tests/data/translate_round1.tsv", 0.96, 0.01, true)
-floors("tests/data/translate_round2.tsv", 0.76, 0.026, true)
+floors("tests/data/translate_round2.tsv", 0.79, 0.026, true)
 floors("tests/data/translate_round3.tsv", 0.93, 0.01, true)
 floors("tests/data/translate_round4.tsv", 0.93, 0.005, true)
 floors("tests/data/translate_round5.tsv", 0.92, 0.005, true)
