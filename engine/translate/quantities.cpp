@@ -168,9 +168,14 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       } else if (word_at(t, j, {"degrees", "degree", "deg", "\xC2\xB0"})) {
         ++j;
         Quantity dms = q;
+        bool minutes_lat = lat;
         if (j < end && t[j].kind == TokKind::kNumber && word_at(t, j + 1, {"minutes", "min", "minute"})) {
           dms.value = q.value + t[j].num / 60.0;
           j += 2;
+        } else if (j < end && t[j].kind == TokKind::kNumber && t[j].num >= 0 && t[j].num < 60 &&
+                   hemisphere(t, j + 1, minutes_lat) != 0) {
+          dms.value = q.value + t[j].num / 60.0;  // "55 degrees 30 north": minutes without their word
+          j += 1;
         }
         int h = hemisphere(t, j, lat);
         if (h != 0) {

@@ -394,7 +394,9 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     static const char* kNotNames[] = {"LNAV", "VNAV", "MVP", "ADS", "NM", "FL", "ASAS", "PZ", "KLM", "VS", "HDG",
                                       "ALT", "SPD", "CRE", "DEL", "ATC", "OFF", "ON", "ILS", "RNAV", "TCAS", "UTC", "GPS"};
     bool reserved = std::any_of(std::begin(kNotNames), std::end(kNotNames), [&](const char* n) { return raw == n; });
-    if (upper && !reserved && !names.airline_by_telephony(t[i].text)) add(RefKind::kWaypoint, raw, i, i + 1, false, false);
+    // (a grammar keyword in capitals, "RPZ", "CLIMB", is that word, no name)
+    if (upper && !reserved && !names.airline_by_telephony(t[i].text) && !names.vocabulary().is_keyword(t[i].text))
+      add(RefKind::kWaypoint, raw, i, i + 1, false, false);
   }
   std::sort(refs.begin(), refs.end(), [](const Reference& a, const Reference& b) { return a.begin < b.begin; });
   return refs;

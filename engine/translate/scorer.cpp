@@ -121,6 +121,8 @@ std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string
   if (cmd == "ALT") return {A::kWord, A::kAlt, A::kMagnitude};  // ALT reads |vspd|
   if (cmd == "SPD") return {A::kWord, A::kSpd};
   if (cmd == "HDG") return {A::kWord, A::kHdg, A::kTurn};
+  if (cmd == "AT" && args.size() >= 4)  // AT acid wpt ALT alt | SPD spd
+    return {A::kWord, A::kWord, A::kWord, text::iequals(args[2], "SPD") ? A::kSpd : A::kAlt};
   if (cmd == "DEFWPT") return {A::kWord, A::kLat, A::kLon, A::kWord};
   if (cmd == "ADDWPT" || cmd == "DEST" || cmd == "ORIG") {
     if (args.size() >= 3 && text::to_double(args[1]) && text::to_double(args[2]))
@@ -188,6 +190,34 @@ bool same_command(std::string_view produced, std::string_view expected) {
   return true;
 }
 
+namespace {
+// "ALT acid alt" and "VS acid vspd" next to each other, in either order, for
+// the same aircraft are one clearance: "ALT acid alt vspd" (the simulator's
+// ALT with a vertical speed sets the selected altitude and |vspd|, as the two
+// commands do; Simulation::set_altitude, set_vs). "LNAV acid ON" right after
+// "DIRECT acid wpt" adds nothing (a direct-to switches LNAV on: route_op).
+std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
+  auto words = [](const std::string& c) {
+    auto v = tokens(c);
+    command_first(v);
+    if (!v.empty()) v[0] = canonical_command(v[0]);
+    return v;
+  };
+  for (size_t i = 0; i + 1 < cmds.size(); ++i) {
+    auto a = words(cmds[i]), b = words(cmds[i + 1]);
+    if (a.size() == 3 && b.size() == 3 && a[0] == "VS" && b[0] == "ALT") std::swap(a, b);
+    if (a.size() == 3 && b.size() == 3 && a[0] == "ALT" && b[0] == "VS" && text::iequals(a[1], b[1])) {
+      cmds[i] = "ALT " + a[1] + " " + a[2] + " " + b[2];
+      cmds.erase(cmds.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+    } else if (a.size() >= 3 && b.size() == 3 && a[0] == "DIRECT" && b[0] == "LNAV" && text::iequals(a[1], b[1]) &&
+               text::iequals(b[2], "ON")) {
+      cmds.erase(cmds.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+    }
+  }
+  return cmds;
+}
+}  // namespace
+
 bool score_case(std::string_view produced, bool asked, std::string_view expected) {
   for (const auto& alt_raw : text::split(expected, '|')) {
     auto alt = text::trim(alt_raw);
@@ -197,7 +227,7 @@ bool score_case(std::string_view produced, bool asked, std::string_view expected
       continue;
     }
     if (asked) continue;
-    auto p = split_commands(produced), e = split_commands(alt);
+    auto p = fold_clearances(split_commands(produced)), e = fold_clearances(split_commands(alt));
     if (p.size() != e.size()) continue;
     bool all = true;
     for (size_t i = 0; i < p.size() && all; ++i) all = same_command(p[i], e[i]);

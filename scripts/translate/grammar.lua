@@ -160,15 +160,47 @@ function M.handler(name, fn) G[name] = fn end
 --  * lexicon.shorthand prefixes before a value: "ryr81jc fl240 s270" ->
 --    "ryr81jc fl240 speed 270", "l 330" -> "left 330" (only a whole token
 --    that is a prefix and digits, or a prefix before a token starting with a
---    digit, not after a number: "33.95 S 151.18 E" is a hemisphere;
+--    digit, not after a number unless it is a turn letter: "33.95 S 151.18 E"
+--    is a hemisphere;
 --    "dlh4ax" and "fl240" are left alone);
+--  * "a thousand", "a hundred" -> "one thousand", "one hundred"; a typed
+--    callsign glued to its level, "klm12fl240" -> "klm12 fl240"; "m78" ->
+--    "mach .78"; a level typed digit by digit, "fl 3 4 0" -> "fl 340";
 --  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", and
 --    speech recognition's "nine her" -> "niner", and a degree sign ending
 --    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
 --  * thousands grouped with a space: "18 000 feet" -> "18000 feet" (a
---    group of three digits that is "000" or is followed by feet).
+--    group of three digits that is "000" or is followed by feet);
+--  * a turn letter of lexicon.shorthand ("l", "rt") as a word before
+--    "hdg"/"heading" or after "hdg NNN": "lt hdg 250" -> "left hdg 250",
+--    "hdg 060 l" -> "hdg 060 left".
+local HEADING_WORDS = { hdg = true, heading = true, h = true }
+local function turn_letters(text, sh)
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local changed = false
+  for i, w in ipairs(toks) do
+    local letters, punct = w:match("^(%a+)(%p?)$")
+    local d = letters and sh[letters:lower()]
+    if d == "left" or d == "right" then
+      local nxt, prev = toks[i + 1] and toks[i + 1]:lower(), toks[i - 1]
+      if (nxt and HEADING_WORDS[nxt]) or (prev and prev:match("^%d%d%d$") and toks[i - 2]
+          and HEADING_WORDS[toks[i - 2]:lower()]) then
+        toks[i], changed = d .. punct, true
+      end
+    end
+  end
+  return changed and table.concat(toks, " ") or text
+end
+
 local function written_forms(text)
   local sh = lexicon.shorthand
+  text = turn_letters(text, sh)
+  -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
+  text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
+  text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  -- a level typed digit by digit ("fl 3 4 0")
+  text = text:gsub("%f[%a]([Ff][Ll]) (%d) (%d) (%d)%f[%W]", "%1 %2%3%4")
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil
@@ -177,9 +209,12 @@ local function written_forms(text)
     local w = sh[pre:lower()]
     if not w then return nil end
     local before = text:sub(1, at - 1):match("(%S+)%s*$")
-    if before and before:match("^[%d%.,%-]+$") then return nil end
+    -- (after a number only a turn letter: "fl 310 rt 320"; "33.95 S" is a hemisphere, "2 h" hours)
+    if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
+  text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
+  text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
@@ -273,6 +308,15 @@ function G:alone(i)
   for k = 1, #self.t do
     local t = self.t[k]
     if k ~= i and t.kind ~= "punct" and not t.filler then return false end
+  end
+  return true
+end
+
+-- True when every token outside [b, e) is punctuation or a filler.
+function G:alone_but(b, e)
+  for k = 1, #self.t do
+    local t = self.t[k]
+    if (k < b or k >= e) and t.kind ~= "punct" and not t.filler then return false end
   end
   return true
 end
@@ -449,6 +493,19 @@ function G:split_ellipsis(segs)
   for _, s in ipairs(segs) do
     local cur, e = s, s.e
     out[#out + 1] = cur
+    -- "klm12 fl250 ezy45 fl310": with no instruction word, an aircraft that flies
+    -- between values with units of their own starts a request of its own
+    if s.intent == "infer" then
+      for _, r in ipairs(self:refs_in(s.b + 1, e, "aircraft")) do
+        local before, after = self:quantities(cur.b, r.b), self:quantities(r.e, e)
+        local own = function(q) return q and (q.kind == "alt" and q.fl or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") end
+        if r.exists and #before > 0 and own(before[#before]) and own(after[1]) and after[1].b == self:skip_fillers(r.e) then
+          cur.e = r.b
+          cur = { intent = "infer", b = r.b, trig = r.b, e = e }
+          out[#out + 1] = cur
+        end
+      end
+    end
     local qs = (M.intents[s.intent] or {}).value and self:quantities(s.trig, e) or {}
     if #qs >= 2 then
       for _, r in ipairs(self:refs_in(qs[1].e, e, "aircraft")) do
@@ -492,10 +549,9 @@ function G:parse(b, e)
       local before = self.last_cond
       self.last_cond = nil
       local n_before = #self.out
-      local at = self:at_altitude(s)
+      local at = self:at_altitude(s) or self:at_distance(s)
       local spec = M.intents[s.intent]
-      self:at_waypoint(s, spec)
-      self[spec and spec.handler or "infer"](self, s, spec)
+      if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
       if not self.ask and #self.out > n_before then
         self:leftovers(s)
         self:unexplained(s, n_before)
@@ -517,12 +573,30 @@ function G:parse(b, e)
   end
 end
 
--- "cross ARTIP at 220 knots", "at TP2 be at FL200": a value instruction
--- tied to a waypoint is a constraint the grammar does not translate (an
--- AT condition); asked, never issued at once.
+-- "cross CAMRN at one one thousand", "cross ARTIP at 220 knots": a crossing
+-- restriction at a waypoint of the aircraft's route is BlueSky's AT
+-- constraint ("AT id WPT ALT alt" / "SPD spd"); true when it was emitted.
+-- Any other value instruction tied to a waypoint ("at TP2 be at FL200") is
+-- an AT condition the grammar does not translate: asked, never issued at once.
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+    if self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at") then
+      local ids = self:acids(s)
+      local now = #ids == 1 and self:state(ids[1])
+      local in_route = false
+      for _, w in ipairs(now and now.route or {}) do in_route = in_route or w:upper() == r.name:upper() end
+      local qs = self:quantities(r.e, s.e)
+      local q = #qs == 1 and qs[1]
+      local f = handlers.format
+      if in_route and q and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then
+        self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(q.value, q.fl))
+        return self:take(q) ~= nil
+      elseif in_route and q and (q.kind == "speed" or q.kind == "mach") then
+        self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        return self:take(q) ~= nil
+      end
+    end
     if self:word(r.b - 1, "at cross crossing over abeam overhead") then
       return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
         .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
@@ -673,6 +747,30 @@ function G:unknown_names()
   end
 end
 
+-- A waypoint, fix or airport named that no command carries ("klm12 dc sugol
+-- fl230": an instruction not read; "route EZY45 via TEST1 to EHAM": a
+-- destination dropped) is a leftover, asked about by name. Abbreviations
+-- that are no names (lexicon.not_names: "VFR", "RPZ"), names inside a reply
+-- about what squawk does not simulate or a reason, names passed over by a
+-- direct-to ("skip TP1 and go direct TP2") and names in an instruction only
+-- announced ("expect direct X", "advise when able direct X") are explained.
+function G:uncarried_names()
+  local out = " " .. table.concat(self.out, " "):upper():gsub("[,;]", " ") .. " "
+  local direct = out:find(" DIRECT ", 1, true) ~= nil
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b] and not self:in_reason(r.b)
+        and not (direct and self:preceded_by(r.b, 3, "@passed_over"))
+        and not self:preceded_by(r.b, 4, "@not_a_clearance advise") then
+      local name = r.name:upper()
+      -- (an airport said by its three-letter code is carried by its ICAO name: SFO -> KSFO)
+      if not out:find("[%s]%w?" .. name:gsub("%p", "%%%0") .. "[%s]") then
+        self.leftover = self:raw(r.b, r.e)
+        return
+      end
+    end
+  end
+end
+
 -- True when the text holds a word that starts an instruction of its own
 -- (the dialogue tells an answer to its question from a new request by it).
 function M.has_instruction(text)
@@ -797,6 +895,7 @@ function G:not_simulated()
       end
       local said = self:raw(i, e)
       self:mark_used(i, e)
+      for k = i, e - 1 do self.noted[k] = true end
       if not seen[class.what] then
         seen[class.what] = true
         found[#found + 1] = string.format("%s ('%s')", class.what, (said:gsub(" ([,.;:])", "%1")))
@@ -828,7 +927,7 @@ function M.translate(text, world)
   local u = squawk.translate.utterance(require("translate.types").join(written_forms(text), TYPES.phrases),
     world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
-    qcache = {}, taken = {} }, G)
+    qcache = {}, taken = {}, noted = {} }, G)
   g:settle_callsigns()
   local note = g:not_simulated()
   -- only what is not simulated was said: no instruction word and no value left
@@ -845,6 +944,7 @@ function M.translate(text, world)
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:uncarried() end
+  if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end

@@ -212,7 +212,7 @@ function M.translate(text, opts)
   if parts then
     local sim = opts.sim or squawk.sim.new()
     local scratch = sim:copy()
-    local all, trace = {}, {}
+    local all, trace, seen = {}, {}, {}
     for _, part in ipairs(parts) do
       local r = M.translate(part, setmetatable({ sim = scratch, in_list = true }, { __index = opts }))
       for _, t in ipairs(r.trace or {}) do trace[#trace + 1] = { node = t.node, said = "[" .. part .. "] " .. t.said } end
@@ -220,9 +220,12 @@ function M.translate(text, opts)
         r.trace = trace
         return r
       end
+      -- (the same command in two clauses, "hold on, pause", runs once)
       for _, c in ipairs(r.commands) do
-        all[#all + 1] = c
-        scratch:exec(c)
+        if not seen[c:upper()] then
+          all[#all + 1], seen[c:upper()] = c, true
+          scratch:exec(c)
+        end
       end
     end
     return { commands = all, trace = trace, mode = opts.mode or "offline" }

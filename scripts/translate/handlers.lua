@@ -418,6 +418,30 @@ function m:at_altitude(s)
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end
 
+-- "when fifteen miles from TARTN descend FL80", "within 10 NM of CGT", "alt
+-- 8000 at 30nm from cyyz": "ATDIST id NAME dist" [NM] or nil. A distance
+-- said after a place ("10 miles past X") is no such condition: its place
+-- stays uncarried and is asked about.
+function m:at_distance(s)
+  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" and s.intent ~= "vs" then
+    return nil
+  end
+  for _, q in ipairs(self:quantities(s.b, s.e)) do
+    if q.kind == "dist" and not self.taken[q.b] then
+      local k = self:skip_fillers(q.e)
+      if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
+      local r = self:word(k, "from of to before") and self:refs_in(self:skip_fillers(k + 1), self:skip_fillers(k + 1) + 1, "waypoint")[1]
+      if r then
+        local ids = self:acids(s)
+        if #ids ~= 1 then return nil end
+        self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
+        return "ATDIST " .. ids[1] .. " " .. r.name .. " " .. f.num(q.value)
+      end
+    end
+  end
+  return nil
+end
+
 -- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
@@ -442,6 +466,11 @@ function m:leftovers(s)
         alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
         emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        spd_done = self:take(q)
+      elseif q.kind == "plain" and q.number.typed and self.t[q.b].raw:match("^%.%d%d?$") and not spd_done
+          and q.value >= 0.4 and q.value < 1 then
+        -- a typed ".78" beside other values is a Mach number ("dlh402 fl250 .78")
+        emit("SPD " .. ids[1] .. " " .. f.mach(q.value))
         spd_done = self:take(q)
       elseif s.intent ~= "hdg" and not hdg_done and q.kind == "plain" and H.zero_led_heading(q) then
         -- three spoken digits led by zero are a heading: no level or speed is said so

@@ -346,22 +346,46 @@ return function(H, f, compass)
     end
   end
 
+  -- The places named in tokens [b, e), in order: waypoint references, and
+  -- user waypoints whose names read like callsigns ("TEST1"): {{name, b, e}}.
+  function m:route_places(b, e)
+    local user = {}
+    for _, w in ipairs(self.world.waypoints or {}) do user[w:upper()] = true end
+    local out = {}
+    local k = b
+    while k < math.min(e, #self.t + 1) do
+      local r = self:refs_in(k, k + 1, "waypoint")[1]
+      if r then
+        out[#out + 1] = r
+        k = r.e
+      else
+        if self.t[k].kind ~= "punct" and user[self.t[k].raw:upper()] then
+          out[#out + 1] = { name = self.t[k].raw:upper(), b = k, e = k + 1 }
+        end
+        k = k + 1
+      end
+    end
+    return out
+  end
+
   function m:add_waypoint(s)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig)
     -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
-    local at = self:find_word(s.trig, s.e, "after before")
+    -- (also before the verb: "after REMBI add the waypoint ESAMA")
+    local at = self:find_word(s.b, s.e, "after before")
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
-    local where
+    local name_e = (next_to and at > s.trig) and at or s.e
+    local where, named
     if lat and lon then
       where = f.num(lat) .. " " .. f.num(lon)
     else
       -- "define WP9 at ... and add it to X's route": "it" is the waypoint just defined
-      local named = self:refs_in(s.trig, next_to and at or s.e, "waypoint")[1]
-      local it = self.last_waypoint and self:word_in(s.trig, next_to and at or s.e, "it")
-      where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, next_to and at or s.e, id)
+      named = self:route_places(s.trig, name_e)[1]
+      local it = self.last_waypoint and self:word_in(s.trig, name_e, "it")
+      where = named and named.name or (it and self.last_waypoint) or self:waypoint(s.trig, name_e, id)
       if not where then
         return self:need("Where should the waypoint for " .. id .. " be? Please give a name or a latitude and longitude.")
       end
@@ -381,6 +405,17 @@ return function(H, f, compass)
     if alt or spd then cmd = cmd .. " " .. (alt or "") end
     if spd then cmd = cmd .. " " .. spd end
     self:emit(cmd)
+    if not named then return end
+    -- "route EZY45 via TEST1 then NIK to EHAM": the next places of the route in
+    -- order; the last one after "to", when an airport (four letters), is the destination
+    local rest = self:route_places(named.e, s.e)
+    for k, r in ipairs(rest) do
+      if k == #rest and self:word(r.b - 1, "to") and r.name:match("^%a%a%a%a$") then
+        self:emit("DEST " .. id .. " " .. r.name:upper())
+      elseif self:word(r.b - 1, "then via and to") or (self.t[r.b - 1] or {}).text == "," then
+        self:emit("ADDWPT " .. id .. " " .. r.name)
+      end
+    end
   end
 
   -- The name given to a new waypoint or shape in tokens [b, e): a name that is
@@ -565,13 +600,23 @@ return function(H, f, compass)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
   function m:vnav(s) nav(self, s, "VNAV") end
-  function m:switch(s, spec) self:emit(spec.cmd .. " " .. on_off(self, s)) end
+  -- True when the request asks what a setting is ("Is conflict detection switched on?", "what's the
+  -- current zone radius?", "which resolution method is active?"): the bare command shows it.
+  function m:asks_setting()
+    local first = self:skip_fillers(1)
+    return self.t[#self.t].text == "?" and self:word(first, "is are what what's whats which")
+  end
+  function m:switch(s, spec)
+    if self:asks_setting() then return self:emit(spec.cmd) end
+    self:emit(spec.cmd .. " " .. on_off(self, s))
+  end
 
   function m:one_acid(s, cmd, what)
     local id = self:acid(s, what)
     if id then self:emit(cmd .. " " .. id) end
   end
   function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
+  function m:delrte(s) self:one_acid(s, "DELRTE", "have its route cleared") end
   -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
   function m:pos(s)
     -- a navaid's kind said beside its name ("the Pampus VOR, PAM") is no place of its own
@@ -586,6 +631,12 @@ return function(H, f, compass)
     -- an airport by its name ("where is Schiphol?")
     local airport = #self:refs_in(s.b, s.e, "aircraft") == 0 and self:airport_by_name(s.trig + 1, s.e)
     if airport then return self:emit("POS " .. airport) end
+    -- "show me where TEST01 and TEST03 are": each aircraft named
+    local ids = self:acids(s)
+    if #ids > 1 then
+      for _, id in ipairs(ids) do self:emit("POS " .. id) end
+      return
+    end
     self:one_acid(s, "POS", "be shown")
   end
 
@@ -692,6 +743,7 @@ return function(H, f, compass)
   end
   function m:resolution(s)
     local b = s.b > 1 and s.b - 1 or s.b
+    if self:asks_setting() then return self:emit("RESO") end
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
@@ -699,6 +751,7 @@ return function(H, f, compass)
   end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical")
+    if self:asks_setting() and #self:quantities(s.b, s.e) == 0 then return self:emit(vertical and "ZONEDH" or "ZONER") end
     local before = #self.out
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
@@ -725,6 +778,7 @@ return function(H, f, compass)
   function m:look_ahead(s)
     local q = first(self, s, { time = true, plain = true })
     if q then return self:emit("DTLOOK " .. f.num(q.value)) end
+    if self:asks_setting() then return self:emit("DTLOOK") end
     self:need("How far ahead, in seconds, should conflict detection look?")
   end
 end

@@ -278,6 +278,19 @@ return function(H, f, wrap, compass)
                    number = abs_c[1].number }
       abs_c = {}
     end
+    -- "turn right by 200": a number after "by" is the degrees of the turn
+    if #rel_c == 0 and #abs_c == 1 and abs_c[1].kind == "plain" and self:word(abs_c[1].b - 1, "by")
+        and self:word_in(s.b, abs_c[1].b, "@left @right") then
+      rel_c[1] = { kind = "angle", value = abs_c[1].value, b = abs_c[1].b, e = abs_c[1].e, turn = 0,
+                   number = abs_c[1].number }
+      abs_c = {}
+    end
+    -- "the heading of 200 degrees on the right side": an angle said as the
+    -- heading is the heading, its side the direction of the turn
+    if #abs_c == 0 and #rel_c == 1 and self:preceded_by(rel_c[1].b, 2, "heading hdg") then
+      abs_c[1] = { kind = "heading", value = rel_c[1].value, b = rel_c[1].b, e = rel_c[1].e, number = rel_c[1].number }
+      rel_c = {}
+    end
     local abs, rel = self:pick(abs_c, s, "heading"), self:pick(rel_c, s, "heading")
     local correction = self:word_in(s.b, s.e, "@correction")
     local turn = 0

@@ -29,7 +29,7 @@ return {
       "plan", "departed", "shift", "activate", "deactivate", "unpause", "start", "over", "real", "time", "half",
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
-      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", },
+      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz", },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },
@@ -52,7 +52,8 @@ return {
   },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
-  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right",
+  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", spd = "speed",
+                hdg = "heading",
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
@@ -81,7 +82,12 @@ return {
   -- words that open the reason given for an instruction (to the end of its
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause" },
-  reason_after_so = { "that", "it", "they", "it's", "its" },
+  reason_after_so = { "that", "it", "they", "it's", "its", "we" },
+  -- abbreviations written in capitals that name no place
+  not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
+      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz" },
+  -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
+  passed_over = { "skip", "skipping", "bypass", "bypassing", "not", "instead" },
   below = { "below", "under" },
   above = { "above", "over" },
   relative = { "present", "current", "actual", "by" },
@@ -124,6 +130,7 @@ return {
       near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
     { what = "approach clearances", words = "cleared clear",
       near = { "approach", "land", "landing", "takeoff", "take-off", "ils", "visual", "option" } },
+    { what = "approach clearances", words = "visual", near = { "runway", "approach" } },
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },

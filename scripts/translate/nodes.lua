@@ -282,6 +282,26 @@ local function keyword_set()
   return keywords
 end
 
+-- A conditional's command typed without the aircraft ("atalt ana257 fl080
+-- spd 210") gets the condition's aircraft ("... SPD ANA257 210") when only
+-- that makes it parse; the line c unchanged when its command parses as
+-- typed; nil when it does not parse either way (the line is then English).
+-- name: c's registry name.
+local NESTED_AT = { ATALT = 4, ATSPD = 4, ATDIST = 5 }
+function M.complete_nested(c, name, scratch)
+  local k = NESTED_AT[name]
+  if not k then return c end
+  local w = {}
+  for x in c:gmatch("[^%s,]+") do w[#w + 1] = x end
+  if name == "ATDIST" and tonumber(w[3]) then k = 6 end  -- a lat/lon position: two words
+  if #w < k or not canonical_name(w[k]) then return c end
+  local nested = table.concat(w, " ", k)
+  local with_acid = w[k] .. " " .. w[2] .. (#w > k and " " .. table.concat(w, " ", k + 1) or "")
+  if scratch:check(nested) then return c end
+  if not scratch:check(with_acid) then return nil end
+  return table.concat(w, " ", 1, k - 1) .. " " .. with_acid
+end
+
 function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
@@ -309,6 +329,9 @@ function M.typed(state, ctx)
         return "english"
       end
     end
+    c = M.complete_nested(c, name, scratch)
+    if not c then return "english" end
+    cmds[k] = c
     if not scratch:check(c) then return "english" end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))

@@ -41,6 +41,7 @@ return function(intent, rule, words)
   intent "lnav" { cmd = "LNAV", args = { "acid", "ON", "OFF" }, handler = "lnav" }
   intent "vnav" { cmd = "VNAV", args = { "acid", "ON", "OFF" }, handler = "vnav" }
   intent "listrte" { cmd = "LISTRTE", args = { "acid" }, handler = "listrte" }
+  intent "delrte" { cmd = "DELRTE", args = { "acid" }, handler = "delrte" }
   intent "pos" { cmd = "POS", args = { "acid" }, handler = "pos" }
   intent "move" { cmd = "MOVE", args = { "acid", "lat", "lon", "alt", "hdg", "spd", "vspd" }, handler = "move",
                   absorbs = true }
@@ -67,9 +68,12 @@ return function(intent, rule, words)
 
   -- an instruction announced with "expect" is no clearance
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
+  rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
 
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
+  -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
+  rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
@@ -92,8 +96,9 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
   end }
+  rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
-    return g:followed_by(i, 4, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
+    return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
@@ -105,7 +110,7 @@ return function(intent, rule, words)
   rule { "multiplier", "dtmult" }
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
   rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
-  rule { "fast faster slower", "dtmult", prev = { 4, "@sim" } }
+  rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow slower faster accelerate decelerate", "spd" }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
@@ -113,11 +118,12 @@ return function(intent, rule, words)
   -- heading
   rule { "heading hdg headings", "hdg" }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
-  rule { "turn", "hdg" }
+  rule { "turn turning", "hdg" }
   rule { "left right", "hdg", when = function(g, i)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
+  rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
   rule { "due", "hdg", next = "@compass" }
   rule { "around", false, prev = { 3, "turn" } }
@@ -133,6 +139,20 @@ return function(intent, rule, words)
   -- waypoints, creation and deletion
   rule { "define make put", false, near = { 2, "box circle" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
+  -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
+  -- waypoint at a position, when no aircraft that flies and no aircraft type is named
+  local function new_fix_at(g, i)
+    if g:has_ref(1, #g.t + 1, "type") then return false end
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+      if r.exists then return false end
+    end
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
+      if q.kind == "lat" or q.kind == "lon" or (q.kind == "plain" and q.number.decimal) then return true end
+    end
+    return false
+  end
+  rule { "put place create make add", "defwpt", near = { 2, "@waypoint_nouns" }, when = new_fix_at }
+  rule { "waypoint wpt", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
   rule { "add", "defwpt", near = { 2, "@waypoint_nouns" }, when = function(g, i)
     if not g:followed_by(i, 4, "@named") then return false end
@@ -171,9 +191,14 @@ return function(intent, rule, words)
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
   rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
-  rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" } }
+  -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
+  local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
+  rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
-         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
+  -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
+  rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
   rule { "delete del remove rid kill rmv", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
@@ -181,8 +206,27 @@ return function(intent, rule, words)
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dir proceed direct-to", "direct" }
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
-  rule { "cleared", "direct", when = function(g) return #g.world.waypoints > 0 end }
+  -- ("cleared for the FMS bridge visual runway 28R": an approach clearance, not simulated)
+  rule { "cleared", "direct", when = function(g, i)
+    return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
+  end }
   rule { "destination dest", "dest" }
+  -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent to
+  rule { "send", "dest", when = function(g, i)
+    local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
+    for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
+      if r.name:match("^%a%a%a%a$") then return true end
+    end
+    return false
+  end }
+  -- "fly to TEST1": a waypoint the simulation knows is flown to directly; other places are destinations
+  rule { "fly", "direct", next = "to", when = function(g, i)
+    local t = g.t[i + 2]
+    for _, w in ipairs(g.world.waypoints or {}) do
+      if t and w:upper() == t.raw:upper() then return true end
+    end
+    return false
+  end }
   rule { "fly", "dest", next = "to" }
   rule { "origin departed orig", "orig" }
   rule { "lnav", "lnav" }
@@ -193,11 +237,14 @@ return function(intent, rule, words)
   rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look" } }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
+  -- "route of klm1234?": the request opens with the noun and asks
+  rule { "route", "listrte", next = "of", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
   rule { "listrte rte", "listrte" }
 
   -- information and repositioning
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
+  rule { "doing", "pos", prev = { 3, "what what's whats" } }  -- "what's klm12 doing"
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
@@ -205,6 +252,18 @@ return function(intent, rule, words)
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" }, not_near = { 4, "lnav vnav navigation" } }
+  -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
+  -- that flies put at a position or over a place
+  rule { "put place", "move", when = function(g, i)
+    local named
+    for _, r in ipairs(g:refs_in(i + 1, math.min(#g.t + 1, i + 5), "aircraft")) do named = named or (r.exists and r) end
+    if not named then return false end
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 10))) do
+      if q.kind == "lat" or (q.kind == "plain" and q.number.decimal) then return true end
+    end
+    local w = g:refs_in(named.e, math.min(#g.t + 1, named.e + 3), "waypoint")[1]
+    return w ~= nil and g:word(w.b - 1, "over on at")
+  end }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
   -- (a holding pattern) is no pause of the simulation
@@ -225,7 +284,9 @@ return function(intent, rule, words)
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "say altitude", "report your heading": a question about the aircraft's state
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
-  rule { "unpause op", "op" }
+  rule { "unpause unfreeze op", "op" }
+  rule { "go", "op", next = "again" }  -- "and go again"
+  rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
@@ -256,7 +317,7 @@ return function(intent, rule, words)
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation
-  rule { "reset", false, near = { 3, "protected pz zone zoner separation radius" } }
+  rule { "reset", false, near = { 3, "protected pz rpz zone zoner separation radius" } }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -271,7 +332,7 @@ return function(intent, rule, words)
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
-  rule { "protected pz separation zone zoner zonedh radius", "zone" }
+  rule { "protected pz rpz separation zone zoner zonedh radius", "zone" }
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }

@@ -330,3 +330,143 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   local r = grammar.translate("add it to AFR55's route", ww)
   check(r.ask ~= nil and not r.ask:find("EXIT1", 1, true), tostring(r.ask))
 end
+
+do -- a place named that no command carries is asked about by name; one a direct-to passes, or an abbreviation, is not
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "LAMSO", "SUGOL" }) }, waypoints = { "LAMSO", "SUGOL" } }
+  check_eq(tr("klm12 dc sugol fl230", w), "ASK I have ALT KLM12 FL230. What does 'sugol' mean?")
+  check_eq(tr("KLM12 climb FL300 for EHAM", w), "ASK I have ALT KLM12 FL300. What does 'EHAM' mean?")
+  check_eq(tr("KLM12 skip LAMSO, route direct SUGOL", w), "DIRECT KLM12 SUGOL")
+  check_eq(tr("KLM12 turn left heading 360, maintain VFR", w), "HDG KLM12 360 LEFT")
+  check_eq(tr("KLM12 after LAMSO add the waypoint SUGOL", w), "ADDWPT KLM12 SUGOL,,,LAMSO")
+end
+
+do -- a distance from a place before an instruction is its condition (ATDIST, NM); one past a place is asked
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "LAMSO", "SUGOL" }) }, waypoints = { "LAMSO", "SUGOL" } }
+  check_eq(tr("KLM12, when fifteen miles from SUGOL descend flight level eight zero", w),
+    "ATDIST KLM12 SUGOL 15 ALT KLM12 FL80")
+  check_eq(tr("KLM12 within 10 NM of LAMSO reduce speed 250", w), "ATDIST KLM12 LAMSO 10 SPD KLM12 250")
+  check_eq(tr("KLM12 alt 8000 at 30nm from SUGOL", w), "ATDIST KLM12 SUGOL 30 ALT KLM12 8000")
+  check(asks("KLM12 ten miles past SUGOL descend flight level eight zero", w), "a distance past a place is asked")
+end
+
+do -- turn letters typed before "hdg" or after its value; "by N" turns by N; "the heading of N ... right" is a heading
+  local w = { aircraft = { plane("RYR5FE", 120, 25000, 280) } }
+  check_eq(tr("ryr5fe lt hdg 250", w), "HDG RYR5FE 250 LEFT")
+  check_eq(tr("ryr5fe hdg 060 l fl150", w), "HDG RYR5FE 60 LEFT ; ALT RYR5FE FL150")
+  check_eq(tr("ryr5fe rt hdg 120 fl350", w), "HDG RYR5FE 120 RIGHT ; ALT RYR5FE FL350")
+  check_eq(tr("ryr5fe turn right by 20", w), "HDG RYR5FE 140 RIGHT")
+  check(grammar.translate("ryr5fe turn right by 200", w).commands[1] == nil, "a turn by more than 180 is confirmed")
+  check_eq(tr("RYR5FE please go to the heading of 200 degree on the right side", w), "HDG RYR5FE 200 RIGHT")
+  check_eq(tr("bring RYR5FE round left onto two nine zero and down to eight thousand feet", w),
+    "HDG RYR5FE 290 LEFT ; ALT RYR5FE 8000")
+end
+
+do -- the sign of a vertical speed said after it; "a thousand" is one thousand
+  local w = { aircraft = { plane("GLO1420", 90, 25000, 280) } }
+  check_eq(tr("For GLO 1420 the vertical speed must be 1800 feet per minute descending", w), "VS GLO1420 -1800")
+  check_eq(tr("GLO1420 vs 1800 fpm climbing", w), "VS GLO1420 1800")
+  check_eq(tr("GLO1420 descend to 9000 with a thousand foot a minute descent", w), "ALT GLO1420 9000 1000")
+end
+
+do -- a keyword in capitals is that word ("RPZ"); "advise when able direct X" is no clearance; a visual approach is not simulated
+  local w = { aircraft = { plane("UAL9", 90, 25000, 280, { "BENKY" }) }, waypoints = { "BENKY" } }
+  check_eq(tr("turn resolution on and set RPZ to 5 NM", w), "RESO MVP ; ZONER 5")
+  check_eq(tr("UAL9 CLIMB FL300", w), "ALT UAL9 FL300")
+  check_eq(tr("UAL9, fly heading zero seven zero, advise when able direct BENKY", w), "HDG UAL9 70")
+  local r = grammar.translate("UAL9, cleared for the FMS bridge visual runway two eight right", w)
+  check(#r.commands == 0 and r.note ~= nil, "a visual approach is named as not simulated")
+end
+
+do -- a new waypoint put at a position; glued typed forms; a turn letter after a level
+  check_eq(tr("put a waypoint called TEST1 at 52.3 north 4.7 east"), "DEFWPT TEST1 52.3 4.7")
+  check_eq(tr("waypoint TEST1 at 52.3N 4.7E please"), "DEFWPT TEST1 52.3 4.7")
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300) } }
+  check_eq(tr("klm12fl240", w), "ALT KLM12 FL240")
+  check_eq(tr("klm12 m78", w), "SPD KLM12 M0.78")
+  check_eq(tr("klm12 spd280", w), "SPD KLM12 280")
+  check_eq(tr("klm12 fl 310 rt 320", w), "ALT KLM12 FL310 ; HDG KLM12 320 RIGHT")
+  check_eq(tr("put a new aircraft TEST9 A320 at 52 north 4 east"), "CRE TEST9 A320 52 4")
+end
+
+do -- a route said as places in order: each added, the last airport after "to" the destination
+  local w = { aircraft = { plane("EZY45", 45, 30000, 290) }, waypoints = { "TEST1", "LAMSO", "SUGOL" } }
+  check_eq(tr("route EZY45 via TEST1 to EHAM", w), "ADDWPT EZY45 TEST1 ; DEST EZY45 EHAM")
+  check_eq(tr("give EZY45 a route: LAMSO then SUGOL", w), "ADDWPT EZY45 LAMSO ; ADDWPT EZY45 SUGOL")
+  check_eq(tr("route EZY45 via TEST1, LAMSO and SUGOL to EHAM", w),
+    "ADDWPT EZY45 TEST1 ; ADDWPT EZY45 LAMSO ; ADDWPT EZY45 SUGOL ; DEST EZY45 EHAM")
+end
+
+do -- "cross X at <level or speed>": an AT constraint at a waypoint of the route; off the route it is asked
+  local w = { aircraft = { plane("AAL2307", 90, 15000, 280, { "CAMRN" }) }, waypoints = { "CAMRN", "OTHER" } }
+  check_eq(tr("American twenty-three oh seven, cross CAMRN at one one thousand.", w), "AT AAL2307 CAMRN ALT 11000")
+  check_eq(tr("AAL2307 cross CAMRN at and maintain flight level one two zero", w), "AT AAL2307 CAMRN ALT FL120")
+  check_eq(tr("AAL2307 cross CAMRN at 250 knots", w), "AT AAL2307 CAMRN SPD 250")
+  check(asks("AAL2307 cross OTHER at one one thousand", w), "a crossing off the route is asked")
+end
+
+do -- "fast-forward" after the simulation is named is fast-forward, not a faster clock
+  check_eq(tr("pause the sim, then fast-forward 10 minutes"), "HOLD ; FF 600")
+end
+
+do -- a typed ".78" beside other values is a Mach number
+  local w = { aircraft = { plane("DLH402", 90, 25000, 280) } }
+  check_eq(tr("dlh402 fl250 .78", w), "ALT DLH402 FL250 ; SPD DLH402 M0.78")
+end
+
+do -- sim control and questions in other words; a route cleared; "fly to" a known waypoint is a direct-to
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300, { "SUGOL" }) }, waypoints = { "TEST1", "SUGOL" } }
+  check_eq(tr("run it"), "OP")
+  check_eq(tr("and go again"), "OP")
+  check_eq(tr("ok, carry on, unfreeze"), "OP")
+  check_eq(tr("speed up 10x"), "DTMULT 10")
+  check_eq(tr("speed the sim up, times three"), "DTMULT 3")
+  check_eq(tr("what's klm12 doing", w), "POS KLM12")
+  check_eq(tr("route of klm12?", w), "LISTRTE KLM12")
+  check_eq(tr("Could you add SUGOL to the route of KLM12?", w), "ADDWPT KLM12 SUGOL")
+  check_eq(tr("clear the route of KLM12", w), "DELRTE KLM12")
+  check_eq(tr("remove SUGOL from the route of KLM12", w), "DELWPT KLM12 SUGOL")
+  check_eq(tr("KLM12, fly to TEST1 please", w), "ADDWPT KLM12 TEST1 ; DIRECT KLM12 TEST1")
+end
+
+do -- an aircraft that flies put at a position is moved; sent to an airport, its destination
+  local w = { aircraft = { plane("N345CS", 90, 5000, 120), plane("AAL100", 90, 5000, 250) } }
+  check_eq(tr("Put the Cessna N345CS at 42.0 -88.3, 3000 feet.", w), "MOVE N345CS 42 -88.3 3000")
+  check_eq(tr("put N345CS over SPY at fl200", w), "MOVE N345CS SPY FL200")
+  check_eq(tr("Send AAL100 to KBOS and have it climb to 10,000.", w), "DEST AAL100 KBOS ; ALT AAL100 10000")
+  check(asks("Put a new Cessna N999 at 42.0 -88.3", w), "a callsign that does not fly is not moved")
+end
+
+do -- a question about a setting gives the bare command, which shows it
+  check_eq(tr("Is conflict detection switched on?"), "ASAS")
+  check_eq(tr("what's the current zone radius?"), "ZONER")
+  check_eq(tr("What look-ahead time are we using at the moment?"), "DTLOOK")
+  check_eq(tr("which resolution method is active?"), "RESO")
+  check_eq(tr("set the zone radius to 5 nm"), "ZONER 5")
+  check_eq(tr("switch conflict detection on"), "ASAS ON")
+end
+
+do -- "turning" is a turn
+  local w = { aircraft = { plane("JJP503", 300, 25000, 280) } }
+  check_eq(tr("Can you make JJP503 turning left for 90 degree?", w), "HDG JJP503 210 LEFT")
+end
+
+do -- typed shorthand for two aircraft, each with a value of its own unit; a bare fragment still asks
+  local w = { aircraft = { plane("KLM12", 110, 27000, 300), plane("EZY45", 45, 30000, 290) } }
+  check_eq(tr("klm12 fl250 ezy45 fl310", w), "ALT KLM12 FL250 ; ALT EZY45 FL310")
+  check_eq(tr("KLM12 turn right heading 160 EZY45 2", w), "ASK I have HDG KLM12 160 RIGHT. What does 'EZY45 2' mean?")
+end
+
+do -- a level typed digit by digit
+  local w = { aircraft = { plane("VLG23KA", 90, 30000, 280) } }
+  check_eq(tr("vlg23ka fl 3 4 0", w), "ALT VLG23KA FL340")
+end
+
+do -- where several aircraft are: each shown
+  local w = { aircraft = { plane("TEST01", 90, 20000, 250), plane("TEST03", 90, 20000, 250) } }
+  check_eq(tr("Pause it and show me where TEST01 and TEST03 are.", w), "HOLD ; POS TEST01 ; POS TEST03")
+end
+
+do -- a waypoint added at a decimal position with no aircraft is defined; the sim sped up "to N times"
+  check_eq(tr("add a waypoint BRAVO 51.75 -1.25"), "DEFWPT BRAVO 51.75 -1.25")
+  check_eq(tr("speed the sim up to twenty times real time"), "DTMULT 20")
+end

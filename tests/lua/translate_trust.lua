@@ -102,6 +102,9 @@ check_eq(said(tr("KLM1234 ALT FL100")), "ALT KLM1234 FL100")
 check_eq(said(tr("FF 60")), "FF 60")
 -- English that happens to start with a command word stays English
 check(not tr("turn KLM1234 north").typed, "a compass word is English")
+-- a conditional's command typed without its aircraft gets the condition's; one that parses neither way is English
+check_eq(said(tr("klm1234 atalt fl080 spd 210")), "ATALT klm1234 fl080 spd klm1234 210")
+check(not tr("klm1234 atalt fl080 spd").typed, "a conditional whose command does not parse is English")
 check(not tr("delete the aircraft").typed, "glue words are English")
 
 -- 5. destructive and global requests wait for a yes
@@ -229,3 +232,6 @@ check_eq(said(tr("KLM1234 reduce speed to 400 kph")), "SPD KLM1234 216")
 r = tr("KLM1234, turn right heading 023, traffic 2 o'clock, 36 miles")
 check_eq(said(r), "HDG KLM1234 23 RIGHT")
 check(r.note ~= nil and r.note:find("traffic information ('traffic 2 o'clock, 36 miles')", 1, true) ~= nil, tostring(r.note))
+
+-- the same command in two command clauses ("hold on, pause") runs once
+check_eq(said(tr("hold on, pause")), "HOLD")

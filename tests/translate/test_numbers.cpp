@@ -125,6 +125,14 @@ TEST_CASE("quantities: latitude and longitude forms") {
   CHECK(q[1].kind == QKind::kLon);
   CHECK(q[1].value == doctest::Approx(4.75));
 
+  // minutes said without their word, straight before the hemisphere
+  q = qty("55 degrees 30 north 003 degrees 00 west");
+  REQUIRE(q.size() == 2);
+  CHECK(q[0].kind == QKind::kLat);
+  CHECK(q[0].value == doctest::Approx(55.5));
+  CHECK(q[1].kind == QKind::kLon);
+  CHECK(q[1].value == doctest::Approx(-3.0));
+
   q = qty("N52.3 E4.76");
   REQUIRE(q.size() == 2);
   CHECK(q[0].kind == QKind::kLat);

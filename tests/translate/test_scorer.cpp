@@ -54,6 +54,30 @@ TEST_CASE("ALT's vertical speed is a magnitude: its sign does not count") {
   CHECK_FALSE(same_command("ALT KL1 FL100 1500", "ALT KL1 FL100 -2000"));
 }
 
+TEST_CASE("AT's constraint compares as an altitude or a speed") {
+  CHECK(same_command("AT SWR18L KLO alt FL80", "AT SWR18L KLO ALT FL080"));
+  CHECK(same_command("AT SWR18L KLO ALT 8000", "AT SWR18L KLO ALT FL080"));
+  CHECK(same_command("AT SWR18L KLO SPD 250", "AT SWR18L KLO SPD 250"));
+  CHECK_FALSE(same_command("AT SWR18L KLO ALT FL90", "AT SWR18L KLO ALT FL080"));
+  CHECK_FALSE(same_command("AT SWR18L KLO SPD 250", "AT SWR18L KLO ALT 250"));
+}
+
+TEST_CASE("ALT then VS (or VS then ALT) of one aircraft is ALT with that vertical speed") {
+  CHECK(score_case("ALT BAW1 FL100 ; VS BAW1 -1500", false, "ALT BAW1 FL100 1500"));
+  CHECK(score_case("VS BAW1 -1500 ; ALT BAW1 FL100", false, "ALT BAW1 FL100 -1500"));
+  CHECK(score_case("ALT BAW1 FL100 1500", false, "ALT BAW1 FL100 ; VS BAW1 -1500"));
+  CHECK(score_case("HDG BAW1 90 ; ALT BAW1 FL100 ; VS BAW1 -1500", false, "HDG BAW1 90 ; ALT BAW1 FL100 1500"));
+  CHECK_FALSE(score_case("ALT BAW1 FL100 ; VS BAW1 -1500", false, "ALT BAW1 FL100 2000"));
+  CHECK_FALSE(score_case("ALT BAW1 FL100 ; VS KLM2 -1500", false, "ALT BAW1 FL100 1500"));
+  CHECK_FALSE(score_case("ALT BAW1 FL100 1000 ; VS BAW1 -1500", false, "ALT BAW1 FL100 1500"));
+}
+
+TEST_CASE("LNAV ON right after a direct-to of the same aircraft adds nothing") {
+  CHECK(score_case("DIRECT JBU614 BETTE ; LNAV JBU614 ON", false, "DIRECT JBU614 BETTE"));
+  CHECK_FALSE(score_case("DIRECT JBU614 BETTE ; LNAV JBU614 OFF", false, "DIRECT JBU614 BETTE"));
+  CHECK_FALSE(score_case("DIRECT JBU614 BETTE ; LNAV UAL9 ON", false, "DIRECT JBU614 BETTE"));
+}
+
 TEST_CASE("BlueSky's callsign-first form equals the command-first one, nested too") {
   CHECK(same_command("KL1 SPD 250", "SPD KL1 250"));
   CHECK(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 250"));
