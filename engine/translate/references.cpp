@@ -325,6 +325,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
           return ids;
         }());
         if (m && (m->score >= 0.6 || fleet.size() == 1)) {
+          heard = {letters, 0.0, m->score};  // letters that spell no aircraft: confirmed, never substituted
           id = fleet[m->index].id;
           exists = true;
         }
@@ -370,15 +371,17 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
       double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;
       if (m.score >= need && m.groups > 0) {
-        // With several aircraft flying it was heard inexactly unless every digit and letter
-        // said is the aircraft's and either the words are its airline's or no other aircraft
-        // has that number (speech recognition garbles airline names far more than digits);
-        // with one aircraft there is nothing to confuse it with.
+        // Heard inexactly (asked about) unless every digit and letter said is the aircraft's
+        // and either the words are its airline's or no other aircraft has that number (speech
+        // recognition garbles airline names far more than digits). Two typed letters ("AC
+        // 851", "BA 123") are an airline code squawk has no table for: a partial callsign.
         const std::string said = text::upper(suf.joined(m.groups));
         const bool number_unique = std::count_if(fleet.begin(), fleet.end(), [&](const AircraftView& a) {
                                      return text::iequals(split_id(a.id).second, said);
                                    }) == 1;
-        if (fleet.size() > 1 && (said != text::upper(split_id(m.id).second) || (m.airline < 1.0 && !number_unique)))
+        const auto [prefix, number] = split_id(m.id);
+        const bool code = words.size() == 2 && t[words_begin].raw.size() == 2;
+        if (said != text::upper(number) || (code && !text::iequals(words, prefix)) || (m.airline < 1.0 && !number_unique))
           heard = {text::upper(words) + said, m.airline, m.digits};
         add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
       }

@@ -102,11 +102,11 @@ return {
   -- how many times real time, said in words
   multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
   -- a spoken callsign matched to an aircraft it does not spell exactly is
-  -- confirmed by a question; strict: whenever more than one aircraft flies
-  -- (any airline or digit that differs asks); else (one aircraft, nothing to
-  -- confuse it with) unless the airline and the digits both match at least
-  -- this well (similarity 0-1)
-  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true },
+  -- confirmed by a question; strict: whenever more than one aircraft flies,
+  -- and with one aircraft too when `alone` (any airline, digit or letter that
+  -- differs asks); else unless the airline and the digits both match at
+  -- least this well (similarity 0-1)
+  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true, alone = true },
   -- a spoken waypoint name matched to a known one at least this well (0-1)
   -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
   waypoint_confirm = 0.8,

@@ -149,6 +149,31 @@ check_eq(said(d:say("yes")), "ALT KLM1234 FL300")
 -- a spoken callsign whose digits differ from the only fitting aircraft asks while others fly
 r = tr("KLM one two four three climb flight level 300")
 check(r.ask ~= nil and r.ask:find("KLM1234", 1, true) ~= nil, said(r))
+-- with one aircraft in the sky too: a callsign close to it (transposed digits, a digit or its
+-- last letters unheard, letters that spell none) is asked about, an exact one is taken
+local lone = squawk.sim.new()
+check(lone:exec("CRE ACA851 A320 52 4 090 FL200 250"))
+local function one(text) return said(graph.translate(text, { sim = lone, mode = "offline" })) end
+check(one("air canada eight one five climb FL300"):find("^ASK Did you mean ACA851%? I heard ACA81") ~= nil, "transposed")
+check_eq(one("air canada eight five climb FL300"), "ASK Did you mean ACA851? I heard ACA85.")
+check_eq(one("ACA815 climb FL300"), "ASK Did you mean ACA851? There is no ACA815.")
+check_eq(one("air canada eight five one climb FL300"), "ALT ACA851 FL300")
+check_eq(one("ACA851 climb FL300"), "ALT ACA851 FL300")
+-- an airline's two-letter code is a partial callsign squawk has no table for: asked, alone or not
+check_eq(one("The AC 851 should descend on FL120"), "ASK Did you mean ACA851? I heard AC851.")
+-- a corrected callsign: the one after the correction is instructed, never the one before it
+local azu = squawk.sim.new()
+for _, line in ipairs({ "CRE AZU4014 A320 52 4 090 FL200 250", "CRE AZU4041 A320 52.2 4 090 FL200 250",
+    "CRE KLM12 B738 52.4 4 090 FL200 250", "CRE KLM21 B738 52.6 4 090 FL200 250" }) do
+  check(azu:exec(line))
+end
+local function cor(text) return said(graph.translate(text, { sim = azu, mode = "offline" })) end
+check_eq(cor("azul four zero one four correction four zero four one reduce speed two two zero"), "SPD AZU4041 220")
+check_eq(cor("AZU4014 correction 4041 reduce speed 220"), "SPD AZU4041 220")
+check_eq(cor("KLM12 correction KLM21 climb FL300"), "ALT KLM21 FL300")
+check_eq(cor("KLM12 climb FL300, correction KLM21"), "ALT KLM21 FL300")
+check_eq(cor("KLM12 descend FL120 correction FL110"), "ALT KLM12 FL110")
+check_eq(cor("AZU4014 correction 4099 reduce speed 220"), "ASK There is no aircraft AZU4099. Which aircraft do you mean?")
 -- fixes: a name that only sounds like one of several known names is confirmed, never substituted
 local wsim = sim:copy()
 check(wsim:exec("DEFWPT SQK01 52.3 4.3"))
@@ -176,6 +201,7 @@ check_eq(ctr("ryan air seven tango kilo climb flight level two one zero"), "ALT 
 check_eq(ctr("easy jet three three reduce speed two two zero"), "SPD EZY33 220")
 check_eq(ctr("speed bird four five turn left heading one two zero"), "ASK Did you mean BAW456? I heard BAW45.")
 check_eq(ctr("ryan air seven tango climb flight level two one zero"), "ASK Did you mean RYR7TK? I heard RYR7T.")
+check_eq(ctr("BA 456 climb FL300"), "ASK Did you mean BAW456? I heard BA456.")
 -- two spoken digits are a light aircraft's speed, an airliner's cut off
 check_eq(ctr("november seven seven alpha bravo reduce speed eight zero knots"), "SPD N77AB 80")
 check(ctr("speed bird four five six reduce speed eight zero knots"):find("^ASK What speed") ~= nil, "cut off")
