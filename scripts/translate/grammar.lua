@@ -34,8 +34,23 @@ local lexicon = require("translate.lexicon")
 -- the airlines, types and phonetic alphabet, handed to the C++ matchers once
 local names = require("translate.names")
 local TYPES = require("translate.types").build(names.designators)
+-- The spelling fixer never turns a word that means something of its own into another: a
+-- registry command's name ("delrte" is no "delete", "zoner" no "zone") and the words that name
+-- what squawk does not simulate ("holding" is no "heading") are kept as typed.
+local function spelling_kept()
+  local kept = {}
+  for _, w in ipairs(lexicon.spelling.common) do kept[#kept + 1] = w end
+  for _, c in ipairs(squawk.sim.commands()) do
+    kept[#kept + 1] = c.name:lower()
+    for _, a in ipairs(c.aliases or {}) do kept[#kept + 1] = a:lower() end
+  end
+  for _, n in ipairs(lexicon.not_simulated) do
+    for w in n.words:gmatch("%S+") do kept[#kept + 1] = w end
+  end
+  return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept } }, { __index = lexicon })
+end
 local NAMES = squawk.translate.tables({ airlines = names.airlines, types = TYPES.types,
-  designators = TYPES.designators }, lexicon)
+  designators = TYPES.designators }, spelling_kept())
 
 local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
 

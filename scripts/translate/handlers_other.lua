@@ -254,7 +254,7 @@ return function(H, f, compass)
     if airport then return airport end
     -- a name that sounds like a known one is confirmed, never substituted,
     -- unless it is the only name it could be
-    if best and best_score >= 0.5 and #names > 1 and not (self.world.confirmed or {})[best] then
+    if best and best_score >= 0.5 and not (self.world.confirmed or {})[best] then
       self.confirm = self.confirm or { id = best, heard = best_word }
       self:need(string.format("Did you mean %s? I heard '%s'.", best, best_word))
     end
@@ -276,16 +276,25 @@ return function(H, f, compass)
     return nil
   end
 
+  -- A phrase with a capitalised word beside it ("Point Reyes", "Amsterdam Schiphol") is part of a
+  -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
+  -- Capital airport": the word before is its city).
   function m:airport_named_in(b, e, named, placed)
+    local function proper(k)
+      local t = self.t[k]
+      return k > 1 and t ~= nil and t.kind == "word" and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
+    end
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words")) then
         local nx = self.t[i + 1]
-        local phrases = { t.text }
-        if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, t.text .. " " .. nx.text) end
-        for _, phrase in ipairs(phrases) do
-          local ids = named(phrase)
+        local phrases = { { t.text, i + 1 } }
+        if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
+        for _, p in ipairs(phrases) do
+          local phrase, after = p[1], p[2]
+          local city = self:word(after, "@airport_nouns")
+          local ids = ((proper(i - 1) and not city) or proper(after)) and {} or named(phrase)
           if #ids == 1 then return ids[1] end
           if #ids > 1 and #ids <= 4 then
             self:need(string.format("Which airport is '%s': %s?", phrase, table.concat(ids, " or ")))
@@ -701,6 +710,11 @@ return function(H, f, compass)
     local vertical = self:word_in(s.b, s.e, "@vertical")
     local before = #self.out
     for _, q in ipairs(self:quantities(s.b, s.e)) do
+      -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
+      for i = q.b - 1, s.b, -1 do
+        if self:word(i, "@vertical") then vertical = true break end
+        if self:word(i, "@zone_radius") then vertical = false break end
+      end
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
       if q.kind == "alt" or (q.kind == "plain" and vertical) then self:emit("ZONEDH " .. f.num(q.value)) end
     end

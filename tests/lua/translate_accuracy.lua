@@ -65,10 +65,11 @@ floors("tests/data/translate_round8.tsv", 0.87, 0.035, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
--- vice: one aircraft per row, its callsign garbled by speech recognition; a callsign not heard
--- exactly is asked about with one aircraft flying too (lexicon.callsign_confirm.alone), which
--- these rows score as asked (84 of 462; alone = false reads 389 right)
-floors("../shared/corpora/vice_trafscript.tsv", 0.72, 0.012)
+-- vice: one aircraft per row, its callsign and fix names garbled by speech recognition; a
+-- callsign not heard exactly is asked about with one aircraft flying too
+-- (lexicon.callsign_confirm.alone: 84 rows), a fix name not heard exactly is confirmed, the only
+-- known name too (lexicon.waypoint_confirm: 25 rows); these rows score as asked
+floors("../shared/corpora/vice_trafscript.tsv", 0.67, 0.012)
 
 -- squawk.translate.evaluate is eval-translate's scorer: a translator that always asks is right
 -- exactly on the rows that expect a question, never wrong; one that issues a command where a

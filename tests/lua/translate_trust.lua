@@ -180,10 +180,28 @@ check(wsim:exec("DEFWPT SQK01 52.3 4.3"))
 check(wsim:exec("DEFWPT SPIKE 52.5 4.5"))
 r = graph.translate("KLM1234 direct to sparky", { sim = wsim, mode = "offline", waypoints = { "SQK01", "SPIKE" } })
 check_eq(r.ask, "Did you mean SPIKE? I heard 'sparky'.")
+-- the only name known that sounds like the word said is confirmed too, never substituted
+local osim = sim:copy()
+check(osim:exec("DEFWPT WAVEY 52.3 4.3"))
+r = graph.translate("KLM1234 direct way", { sim = osim, mode = "offline", waypoints = { "WAVEY" } })
+check_eq(r.ask, "Did you mean WAVEY? I heard 'way'.")
+check_eq(said(graph.translate("KLM1234 direct wavey", { sim = osim, mode = "offline", waypoints = { "WAVEY" } })),
+  "ADDWPT KLM1234 WAVEY ; DIRECT KLM1234 WAVEY")
+-- the spelling fixer turns no command's name and no word of what is not simulated into another
+-- word: "delrte" is no "delete" (DEL would delete the aircraft), "holding" no "heading"
+check(said(tr("delrte for KLM1234")):find("^ASK") ~= nil, said(tr("delrte for KLM1234")))
+check(said(tr("KLM1234 holding 270")):find("HDG", 1, true) == nil, said(tr("KLM1234 holding 270")))
+check_eq(said(tr("KLM1234 headng 270")), "HDG KLM1234 270")
+-- a command's name said with its value: each value is the dimension named last before it
+check_eq(said(tr("zoner 3 zonedh 500")), "ZONER 3 ; ZONEDH 500")
+check_eq(said(tr("zonedh 300 zoner 3")), "ZONEDH 300 ; ZONER 3")
 -- an airport said by its name is the navdata's airport (when navdata is loaded)
 if #sim:airports_named("schiphol") == 1 then
   check_eq(said(graph.translate("KLM1234 direct to Schiphol", { sim = wsim, mode = "offline",
     waypoints = { "SQK01", "SPIKE" } })), "ADDWPT KLM1234 EHAM ; DIRECT KLM1234 EHAM")
+  -- a word of a longer name ("Point Reyes": Reyes Airport is in Bolivia) names no airport
+  check(said(graph.translate("KLM1234 proceed direct Point Reyes", { sim = wsim, mode = "offline",
+    waypoints = { "SQK01", "SPIKE" } })):find("SLRY", 1, true) == nil, "Point Reyes")
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
