@@ -124,6 +124,7 @@ return {
       near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
     { what = "approach clearances", words = "cleared clear",
       near = { "approach", "land", "landing", "takeoff", "take-off", "ils", "visual", "option" } },
+    { what = "approach clearances", words = "visual", near = { "runway", "approach" } },
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },

@@ -103,6 +103,12 @@ check_eq(said(tr("FF 60")), "FF 60")
 -- English that happens to start with a command word stays English
 check(not tr("turn KLM1234 north").typed, "a compass word is English")
 check(not tr("delete the aircraft").typed, "glue words are English")
+-- a condition's command is TrafScript too: run as typed when it parses, asked about when not
+check_eq(said(tr("SCHEDULE 60 HOLD")), "SCHEDULE 60 HOLD")
+check_eq(said(tr("delay 60 hdg klm1234 270 right")), "DELAY 60 hdg klm1234 270 right")
+check_eq(said(tr("klm1234 atalt fl080 spd klm1234 210")), "ATALT klm1234 fl080 spd klm1234 210")
+r = tr("klm1234 atalt fl080 spd 210")
+check(#(r.commands or {}) == 0 and (r.ask or ""):find("ATALT carries 'spd 210'", 1, true) ~= nil, said(r))
 
 -- 5. destructive and global requests wait for a yes
 local function dialogue() return graph.dialogue({ sim = sim, mode = "offline" }) end
@@ -135,6 +141,8 @@ check_eq(r.error, nil)
 r = tr("KLM1234 contact approach 119.7 and descend FL100")
 check_eq(said(r), "ALT KLM1234 FL100")
 check(r.note:find("radio frequencies", 1, true) ~= nil, tostring(r.note))
+r = tr("KLM1234, cleared for the river visual runway two eight right")
+check(#r.commands == 0 and (r.note or ""):find("approach clearances", 1, true) ~= nil, said(r))
 
 -- 3. callsigns exact or asked: a transposed or shortened typed callsign names the candidates
 r = tr("KLM1243 climb flight level 300")
