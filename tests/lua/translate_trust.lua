@@ -169,6 +169,10 @@ check_eq(one("air canada eight five one climb FL300"), "ALT ACA851 FL300")
 check_eq(one("ACA851 climb FL300"), "ALT ACA851 FL300")
 -- an airline's two-letter code is a partial callsign squawk has no table for: asked, alone or not
 check_eq(one("The AC 851 should descend on FL120"), "ASK Did you mean ACA851? I heard AC851.")
+-- an aircraft's exact id glued to a level or a shorthand value is the id and the value
+check_eq(one("aca851fl240"), "ALT ACA851 FL240")
+check_eq(one("ACA851S250"), "SPD ACA851 250")
+check_eq(one("aca85fl240"):find("^ASK") ~= nil, true)
 -- a corrected callsign: the one after the correction is instructed, never the one before it
 local azu = squawk.sim.new()
 for _, line in ipairs({ "CRE AZU4014 A320 52 4 090 FL200 250", "CRE AZU4041 A320 52.2 4 090 FL200 250",
