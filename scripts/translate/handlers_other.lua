@@ -250,7 +250,7 @@ return function(H, f, compass)
       end
     end
     if best and best_score >= L.waypoint_confirm then return best end
-    local airport = self:airport_by_name(b, e)
+    local airport = self:airport_by_name(b, e) or self:navaid_by_name(b, e, a)
     if airport then return airport end
     -- a name that sounds like a known one is confirmed, never substituted,
     -- unless it is the only name it could be
@@ -259,6 +259,35 @@ return function(H, f, compass)
       self:need(string.format("Did you mean %s? I heard '%s'.", best, best_word))
     end
     if best and best_score >= 0.5 then return best end
+    return nil
+  end
+
+  -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
+  -- airport has that name: one or two words in [b, e) that name navaids within
+  -- lexicon.navaid_range_nm of the aircraft `a`; the question names them when several idents fit.
+  function m:navaid_by_name(b, e, a)
+    local named = self.world.navaids_named
+    if not named or not a or not a.lat then return nil end
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t, nx = self.t[i], self.t[i + 1]
+      if not self.u:used(i) and t.kind == "word" and t.alpha and not t.filler and not t.number_word then
+        local phrases = {}  -- {words, the position after them}
+        if nx and i + 1 < e and nx.kind == "word" and nx.alpha and not self.u:used(i + 1) then
+          phrases[1] = { t.text .. " " .. nx.text, i + 2 }
+        end
+        if #t.text >= 4 and not t.keyword then phrases[#phrases + 1] = { t.text, i + 1 } end
+        for _, p in ipairs(phrases) do
+          local phrase = p[1]
+          -- ("Nantucket airport" is the airport, not the navaid of that name)
+          local ids = self:word(p[2], "@airport_nouns") and {} or named(phrase, a.lat, a.lon, L.navaid_range_nm)
+          if #ids == 1 then return ids[1] end
+          if #ids > 1 then
+            self:need(string.format("Which navaid is '%s': %s?", phrase, table.concat(ids, " or ")))
+            return ids[1]
+          end
+        end
+      end
+    end
     return nil
   end
 

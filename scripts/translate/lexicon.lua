@@ -110,6 +110,8 @@ return {
   -- a spoken waypoint name matched to a known one at least this well (0-1)
   -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
   waypoint_confirm = 1.0,
+  -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
+  navaid_range_nm = 250,
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
   -- what squawk does not simulate: a phrase starts at one of `words` (with

@@ -211,9 +211,16 @@ check_eq(said(tr("zonedh 300 zoner 3")), "ZONEDH 300 ; ZONER 3")
 if #sim:airports_named("schiphol") == 1 then
   check_eq(said(graph.translate("KLM1234 direct to Schiphol", { sim = wsim, mode = "offline",
     waypoints = { "SQK01", "SPIKE" } })), "ADDWPT KLM1234 EHAM ; DIRECT KLM1234 EHAM")
-  -- a word of a longer name ("Point Reyes": Reyes Airport is in Bolivia) names no airport
-  check(said(graph.translate("KLM1234 proceed direct Point Reyes", { sim = wsim, mode = "offline",
-    waypoints = { "SQK01", "SPIKE" } })):find("SLRY", 1, true) == nil, "Point Reyes")
+  -- a word of a longer name ("Point Reyes": Reyes Airport is in Bolivia) names no airport; a
+  -- navaid said by its navdata name near the aircraft is that navaid
+  local us = squawk.sim.new()
+  check(us:exec("CRE JBU1116 A320 37.75 -122.55 300 FL150 280"))
+  check(us:exec("CRE FDX1288 B763 40.6 -73.9 090 FL150 280"))
+  local function ustr(text) return said(graph.translate(text, { sim = us, mode = "offline" })) end
+  check_eq(ustr("JetBlue 1116 proceed direct Point Reyes"), "ADDWPT JBU1116 PYE ; DIRECT JBU1116 PYE")
+  check_eq(ustr("FedEx 1288 proceed direct Canarsie"), "ADDWPT FDX1288 CRI ; DIRECT FDX1288 CRI")
+  -- (Canarsie is 2000 NM from JBU1116: no navaid of that name near it)
+  check(ustr("JetBlue 1116 proceed direct Canarsie"):find("CRI", 1, true) == nil, "far navaid")
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
