@@ -157,6 +157,8 @@ grep -q "the translator did not load (.*graph.lua:1: one path check); only !Traf
 rm -rf "$home"
 expect "translate"       0 "^ALT KL204 FL300$" -- "$sq" translate "KL204 climb FL300" --setup "CRE KL204 A320 52 4 90 FL250 280"
 expect "translate asks"  0 "What altitude should KL204" -- "$sq" translate "KL204 descend" --setup "CRE KL204 A320 52 4 90 FL250 280"
+expect "translate names what is not simulated" 0 "squawk does not simulate transponder codes" -- "$sq" translate "KL204 squawk 7700" --setup "CRE KL204 A320 52 4 90 FL250 280"
+expect "translate --jsonl carries the note" 0 '"note":"squawk does not simulate transponder codes' -- "$sq" translate "KL204 squawk 7700 and descend FL100" --setup "CRE KL204 A320 52 4 90 FL250 280" --jsonl
 expect "eval right/asked/wrong" 0 "overall +76 +[0-9]+ +[0-9]+ +[0-9]+" -- "$sq" eval-translate tests/data/translate_heldout.tsv
 a=$("$sq" run "$d/random.lua" --seed 11)
 b=$("$sq" run "$d/random.lua" --seed 11)

@@ -205,13 +205,15 @@ int run_trafscript_only(const std::string& scenario, const script::VmOptions& o,
   return kExitFail;
 }
 
-int run_pipe(script::ReplSession& session) {
+// echo: each line read is printed before its reply (a transcript of the session).
+int run_pipe(script::ReplSession& session, bool echo) {
   WallClock clock;
   clock.lap();
   std::string line;
   int status = kExitOk;
   while (std::getline(std::cin, line)) {
     print_tick(session, clock.lap());
+    if (echo && !text::trim(line).empty()) std::printf("%s\n", std::string(text::trim(line)).c_str());
     if (!reply_to(session, line, status)) break;
   }
   return status;
@@ -220,7 +222,7 @@ int run_pipe(script::ReplSession& session) {
 }  // namespace
 
 int cmd_repl(const ArgV& argv) {
-  Args::Spec spec = with_vm_flags({});
+  Args::Spec spec = with_vm_flags({{}, {"--echo"}});
   for (const char* f : {"--mode", "--llm-url", "--llm-model", "--llm-api", "--clock"})
     spec.value_flags.emplace_back(f);
   auto args = Args::parse(argv, spec);
@@ -251,7 +253,7 @@ int cmd_repl(const ArgV& argv) {
     if (auto b = session->banner(); b.is_ok()) std::printf("%s\n", b->c_str());
   if (auto o = session->opening(); o.is_ok() && !o->empty()) std::printf("%s\n", o->c_str());
   std::fflush(stdout);
-  if (!tty) return run_pipe(*session);
+  if (!tty) return run_pipe(*session, args->has("--echo"));
   const std::string history = history_path();
   if (!history.empty()) read_history(history.c_str());
   const int status = run_terminal(*session);

@@ -45,10 +45,12 @@ nlohmann::json result_json(const translate::Translation& tr) {
     j["error"] = tr.error;
   else
     j["output"] = tr.text();
+  if (!tr.note.empty()) j["note"] = tr.note;
   return j;
 }
 
-// One JSON line per case: {"id","output"} | {"id","ask"} | {"id","error"}.
+// One JSON line per case: {"id","output"} | {"id","ask"} | {"id","error"}, with "note" when
+// something said is not simulated.
 // A graph that fails to run (not a case it cannot translate) stops it.
 Status print_jsonl(script::Vm& vm, const std::vector<translate::CorpusCase>& cases, const std::string& mode) {
   for (const auto& c : cases) {
@@ -103,6 +105,8 @@ int cmd_translate(const ArgV& argv) {
     std::printf("%s\n", result_json(*tr).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   } else if (tr->error.empty()) {
     std::printf("%s\n", tr->text().c_str());
+    // what squawk does not simulate, named (stdout keeps the commands alone)
+    if (!tr->note.empty()) std::fprintf(stderr, "%s\n", tr->note.c_str());
   }
   // The graph validated the commands on a scratch copy of the traffic; an
   // error means nothing valid came out (said once, on stderr).

@@ -189,7 +189,7 @@ const std::vector<Subcommand>& subcommands() {
        "  --no-notes     the registry documentation alone, without the grammar's words\n",
        cmd_rag},
       {"repl", "repl [SCENARIO.scn]        talk to the simulation in English (or !TrafScript)",
-       "usage: squawk repl [SCENARIO.scn] [--clock X] [--mode offline|single|multi]\n"
+       "usage: squawk repl [SCENARIO.scn] [--clock X] [--mode offline|single|multi] [--echo]\n"
        "                   [--llm-url URL] [--llm-model NAME] [--llm-api ollama|openai]\n"
        "                   [--seed N] [--navdata DIR]\n\n"
        "An interactive session on one simulation. Each English line goes through\n"
@@ -208,7 +208,8 @@ const std::vector<Subcommand>& subcommands() {
        "  :mode M       switch the translator      :help, :quit\n"
        "On a terminal: readline history, Tab completes callsigns and commands,\n"
        "Ctrl-C clears the line, Ctrl-D leaves. From a pipe there is no banner or\n"
-       "prompt, only replies.\n\n"
+       "prompt, only replies; --echo prints each line read before its reply (a\n"
+       "transcript).\n\n"
        "The LLM comes from --llm-url/--llm-model/--llm-api or SQUAWK_LLM_URL,\n"
        "SQUAWK_LLM_MODEL, SQUAWK_LLM_API; with none (or when the server fails) the\n"
        "offline grammar translates. The default mode is multi with an LLM, else\n"
@@ -324,7 +325,9 @@ const std::vector<Subcommand>& subcommands() {
        "or the question it asks back when a value is missing or unsure. Relative\n"
        "instructions and spoken callsigns are resolved against the traffic that the\n"
        "scenario (its time-0 commands) and the setup commands create; the commands\n"
-       "are validated on a scratch copy of it (exit code 1 when none is valid).\n\n"
+       "are validated on a scratch copy of it (exit code 1 when none is valid).\n"
+       "What was said that squawk does not simulate (holds, approach clearances,\n"
+       "squawk codes, frequencies) is named on stderr, and as \"note\" in JSON.\n\n"
        "  --scenario FILE  a .scn file whose time-0 commands set up the traffic\n"
        "  --setup CMDS     TrafScript commands run first, separated by ';'\n"
        "  --mode M         offline (default), single or multi (LLM modes need SQUAWK_LLM_URL)\n"

@@ -30,6 +30,22 @@ std::vector<std::string_view> lines_of(std::string_view data) {
   return out;
 }
 
+// Upper-case words of a name, punctuation dropped, joined by single spaces.
+std::string name_key(std::string_view name) {
+  std::string out;
+  bool gap = false;
+  for (char c : name) {
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      if (gap && !out.empty()) out.push_back(' ');
+      out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+      gap = false;
+    } else {
+      gap = true;
+    }
+  }
+  return out;
+}
+
 bool valid_latlon(double lat, double lon) { return std::fabs(lat) <= 90.0 && std::fabs(lon) <= 180.0; }
 
 Status parse_airports(std::string_view data, const std::string& path, std::vector<NavPoint>& out,
@@ -53,7 +69,19 @@ Status parse_airports(std::string_view data, const std::string& path, std::vecto
   return Status::ok();
 }
 
-void parse_navaids(std::string_view data, std::vector<NavPoint>& out) {
+// A navaid's name as nav.dat writes it after the ident, less its kind ("SAN FRANCISCO VOR-DME" ->
+// "SAN FRANCISCO").
+std::string navaid_name(const std::vector<std::string>& f) {
+  static const char* kKinds[] = {"VOR", "VOR-DME", "VORTAC", "NDB", "NDB-DME", "DME", "TACAN", "DME-ILS"};
+  size_t end = f.size();
+  if (end > 9 && std::any_of(std::begin(kKinds), std::end(kKinds), [&](const char* k) { return text::upper(f[end - 1]) == k; }))
+    --end;
+  std::string name;
+  for (size_t i = 8; i < end; ++i) name += (name.empty() ? "" : " ") + text::upper(f[i]);
+  return name;
+}
+
+void parse_navaids(std::string_view data, std::vector<NavPoint>& out, std::vector<std::string>& names) {
   for (auto raw : lines_of(data)) {
     const auto f = text::split_ws(raw);
     if (f.size() < 8) continue;
@@ -65,6 +93,7 @@ void parse_navaids(std::string_view data, std::vector<NavPoint>& out) {
     auto lon = text::to_double(f[2]);
     if (!lat || !lon || !valid_latlon(*lat, *lon)) continue;
     out.push_back({text::upper(f[7]), name, *lat, *lon});
+    names.push_back(name_key(navaid_name(f)));
   }
 }
 
@@ -122,14 +151,15 @@ Result<std::shared_ptr<const NavDb>> NavDb::parse(std::string_view airports_dat,
 Result<std::shared_ptr<NavDb>> NavDb::build(std::string_view airports_dat, std::string_view nav_dat,
                                             std::string_view fix_dat, const std::string& where) {
   std::vector<NavPoint> airports, waypoints;
-  std::vector<std::string> names;
+  std::vector<std::string> names, navaid_names;
   SQUAWK_RETURN_IF_ERROR(parse_airports(airports_dat, where + "/airports.dat", airports, names));
-  parse_navaids(nav_dat, waypoints);
+  parse_navaids(nav_dat, waypoints, navaid_names);
   parse_fixes(fix_dat, waypoints);
   if (airports.empty() && waypoints.empty())
     return Status::corruption("navdata folder '" + where + "' holds no airports, navaids or fixes");
   auto db = std::make_shared<NavDb>(std::move(airports), std::move(waypoints));
   db->airport_names_ = std::move(names);
+  db->navaid_names_ = std::move(navaid_names);
   return db;
 }
 
@@ -143,23 +173,6 @@ Result<std::shared_ptr<const NavDb>> NavDb::load_cached(const std::string& dir) 
   return db;
 }
 
-namespace {
-// Upper-case words of a name, punctuation dropped, joined by single spaces.
-std::string name_key(std::string_view name) {
-  std::string out;
-  bool gap = false;
-  for (char c : name) {
-    if (std::isalnum(static_cast<unsigned char>(c))) {
-      if (gap && !out.empty()) out.push_back(' ');
-      out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
-      gap = false;
-    } else {
-      gap = true;
-    }
-  }
-  return out;
-}
-}  // namespace
 
 std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const {
   std::vector<const NavPoint*> out;
@@ -176,6 +189,24 @@ std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const 
     }
     if (fits) out.push_back(&airports_[i]);
   }
+  return out;
+}
+
+std::vector<std::string> NavDb::navaids_named(std::string_view name, double ref_lat, double ref_lon,
+                                              double within_nm) const {
+  std::vector<std::pair<double, std::string>> found;
+  const std::string key = name_key(name);
+  if (key.empty()) return {};
+  for (size_t i = 0; i < navaid_names_.size() && i < waypoints_.size(); ++i) {
+    if (navaid_names_[i] != key) continue;
+    const NavPoint& p = waypoints_[i];
+    const double d = geo::kwikdist_nm(ref_lat, ref_lon, p.lat, p.lon);
+    if (d <= within_nm) found.emplace_back(d, p.id);
+  }
+  std::sort(found.begin(), found.end());
+  std::vector<std::string> out;
+  for (const auto& f : found)
+    if (std::find(out.begin(), out.end(), f.second) == out.end()) out.push_back(f.second);
   return out;
 }
 

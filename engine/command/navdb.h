@@ -51,6 +51,11 @@ class NavDb {
   // Airports whose name is `name`, or `name` and a generic word ("Airport",
   // "International"), case and punctuation ignored ("schiphol" -> EHAM).
   std::vector<const NavPoint*> airports_named(std::string_view name) const;
+  // Idents of the navaids whose name, less its kind ("SAN FRANCISCO" of nav.dat's "SAN
+  // FRANCISCO VOR-DME"), is `name` (case and punctuation ignored), within `within_nm` of
+  // (ref_lat, ref_lon) [deg], nearest first, each ident once.
+  std::vector<std::string> navaids_named(std::string_view name, double ref_lat, double ref_lon,
+                                         double within_nm) const;
   // The waypoint (fix or navaid) named `id` nearest (ref_lat, ref_lon) [deg].
   const NavPoint* waypoint(std::string_view id, double ref_lat, double ref_lon) const;
 
@@ -71,6 +76,7 @@ class NavDb {
   std::vector<NavPoint> airports_;
   std::vector<std::string> airport_names_;  // airports.dat names, upper case, by airports_ index (may be empty)
   std::vector<NavPoint> waypoints_;
+  std::vector<std::string> navaid_names_;  // nav.dat names less their kind, as name keys, by waypoints_ index (navaids first)
   std::unordered_map<std::string, size_t> airport_index_;
   std::unordered_multimap<std::string, size_t> waypoint_index_;
   std::string dir_;  // load()'s folder: where runway data are read from

@@ -7,6 +7,8 @@
 //   sim:check(line)      -> ok, message   (parse-only validation, nothing runs)
 //   sim:airports_named(name) -> { "EHAM", ... }  airports of the navdata whose name is
 //                           `name` or starts with its words ({} without navdata)
+//   sim:navaids_named(name, lat, lon, within_nm) -> { "SFO", ... }  idents of the navaids
+//                           called `name` within within_nm of lat, lon [deg], nearest first
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
 //                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
@@ -166,6 +168,20 @@ int l_airports_named(lua_State* L) {
   int k = 0;
   for (const command::NavPoint* a : s->navdb()->airports_named(name)) {
     lua_pushstring(L, a->id.c_str());
+    lua_rawseti(L, -2, ++k);
+  }
+  return 1;
+}
+
+int l_navaids_named(lua_State* L) {
+  command::Stack* s = self(L);
+  const std::string name = arg_string(L, 2, "name");
+  const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon"), within = arg_number(L, 5, "within_nm");
+  lua_newtable(L);
+  if (!s->navdb()) return 1;
+  int k = 0;
+  for (const std::string& id : s->navdb()->navaids_named(name, lat, lon, within)) {
+    lua_pushstring(L, id.c_str());
     lua_rawseti(L, -2, ++k);
   }
   return 1;
@@ -439,6 +455,7 @@ void bind_sim(lua_State* L) {
   static const luaL_Reg methods[] = {
       {"exec", guarded<l_exec>},         {"check", guarded<l_check>},
       {"airports_named", guarded<l_airports_named>},
+      {"navaids_named", guarded<l_navaids_named>},
       {"load", guarded<l_load>},         {"step", guarded<l_step>},
       {"run_until", guarded<l_run_until>}, {"run_for", guarded<l_run_for>},
       {"time", guarded<l_time>},         {"dt", guarded<l_dt>},

@@ -55,6 +55,9 @@ Result<translate::Translation> read_graph_result(lua_State* L) {
     get_field(L, -1, "error");
     if (lua_type(L, -1) == LUA_TSTRING) tr.error = lua_tostring(L, -1);
     lua_pop(L, 1);
+    get_field(L, -1, "note");
+    if (lua_type(L, -1) == LUA_TSTRING) tr.note = lua_tostring(L, -1);
+    lua_pop(L, 1);
     read_lines(L, "commands", tr.commands);
     get_field(L, -1, "confirm");
     if (lua_istable(L, -1)) read_lines(L, "commands", tr.on_yes);

@@ -325,6 +325,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
           return ids;
         }());
         if (m && (m->score >= 0.6 || fleet.size() == 1)) {
+          heard = {letters, 0.0, m->score};  // letters that spell no aircraft: confirmed, never substituted
           id = fleet[m->index].id;
           exists = true;
         }
@@ -341,10 +342,12 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     size_t words_begin = i;
     std::string words;
     bool keyword = false;  // an instruction word may be a misheard airline name ("front turn" = Frontier)
+    std::string last_word;  // as typed: two capitals are an airline code ("AC 851")
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
            names.phonetic_letter(t[i].text) == 0) {
       keyword = keyword || names.vocabulary().is_keyword(t[i].text);
       words += t[i].text;
+      last_word = t[i].raw;
       ++i;
     }
     // Letters of the phonetic alphabet between the airline and the digits are
@@ -370,15 +373,19 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
       double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;
       if (m.score >= need && m.groups > 0) {
-        // With several aircraft flying it was heard inexactly unless every digit and letter
-        // said is the aircraft's and either the words are its airline's or no other aircraft
-        // has that number (speech recognition garbles airline names far more than digits);
-        // with one aircraft there is nothing to confuse it with.
+        // Heard inexactly (asked about) unless every digit and letter said is the aircraft's
+        // and either the words are its airline's or no other aircraft has that number (speech
+        // recognition garbles airline names far more than digits). Two capitals before the
+        // digits ("AC 851", "BA 123") are an airline code squawk has no table for: a partial
+        // callsign.
         const std::string said = text::upper(suf.joined(m.groups));
         const bool number_unique = std::count_if(fleet.begin(), fleet.end(), [&](const AircraftView& a) {
                                      return text::iequals(split_id(a.id).second, said);
                                    }) == 1;
-        if (fleet.size() > 1 && (said != text::upper(split_id(m.id).second) || (m.airline < 1.0 && !number_unique)))
+        const auto [prefix, number] = split_id(m.id);
+        const bool code = last_word.size() == 2 && text::upper(last_word) == last_word && is_alpha(last_word) &&
+                          last_word != prefix;
+        if (said != text::upper(number) || code || (m.airline < 1.0 && !number_unique))
           heard = {text::upper(words) + said, m.airline, m.digits};
         add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
       }

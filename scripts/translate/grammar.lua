@@ -35,8 +35,23 @@ local lexicon = require("translate.lexicon")
 -- the airlines, types and phonetic alphabet, handed to the C++ matchers once
 local names = require("translate.names")
 local TYPES = require("translate.types").build(names.designators)
+-- The spelling fixer never turns a word that means something of its own into another: a
+-- registry command's name ("delrte" is no "delete", "zoner" no "zone") and the words that name
+-- what squawk does not simulate ("holding" is no "heading") are kept as typed.
+local function spelling_kept()
+  local kept = {}
+  for _, w in ipairs(lexicon.spelling.common) do kept[#kept + 1] = w end
+  for _, c in ipairs(squawk.sim.commands()) do
+    kept[#kept + 1] = c.name:lower()
+    for _, a in ipairs(c.aliases or {}) do kept[#kept + 1] = a:lower() end
+  end
+  for _, n in ipairs(lexicon.not_simulated) do
+    for w in n.words:gmatch("%S+") do kept[#kept + 1] = w end
+  end
+  return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept } }, { __index = lexicon })
+end
 local NAMES = squawk.translate.tables({ airlines = names.airlines, types = TYPES.types,
-  designators = TYPES.designators }, lexicon)
+  designators = TYPES.designators }, spelling_kept())
 
 local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
 
@@ -920,10 +935,32 @@ end
 local UNDERSTOOD = "I did not understand that. Which command, aircraft and value do you mean?"
 M.not_understood = UNDERSTOOD
 
+-- An aircraft's id glued to a level or a shorthand value ("klm12fl240", "ezy45s250"), written
+-- apart; only the exact id of an aircraft that flies, followed by FL or a lexicon.shorthand prefix
+-- and digits.
+local function unglued_ids(text, fleet)
+  if #fleet == 0 then return text end
+  local ids = {}
+  for _, a in ipairs(fleet) do ids[a.id:lower()] = true end
+  return (text:gsub("%f[%w]%w+", function(w)
+    local lw = w:lower()
+    local letters, digits = lw:match("(%a+)(%d+)$")
+    if not letters or #letters == #lw - #digits then return nil end
+    for cut = #lw - #digits - #letters, #lw - #digits - 1 do
+      local pre = lw:sub(cut + 1, #lw - #digits)
+      if ids[lw:sub(1, cut)] and (pre == "fl" or lexicon.shorthand[pre]) then
+        return w:sub(1, cut) .. " " .. w:sub(cut + 1)
+      end
+    end
+    return nil
+  end))
+end
+
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
+  text = unglued_ids(text, world.aircraft)
   local u = squawk.translate.utterance(require("translate.types").join(written_forms(text), TYPES.phrases),
     world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},

@@ -184,36 +184,49 @@ function m:skip_fillers(i, corrections)
   return i
 end
 
--- Callsigns the speaker restarted or corrected, settled once per request:
---  * "Brickyard eleven correction fourteen eleven": digits after a correction
---    replace the callsign's digits (the airline kept) when that names an
---    aircraft exactly;
---  * "Delta sixty, Delta six forty six" / "Lufthansa thirty one correction
---    Lufthansa forty one thirty": a callsign said again straight after
---    itself was a false start (r.false_start); the later one counts.
+-- Callsigns the speaker restarted or corrected, settled once per request;
+-- the corrected-away callsign is never instructed:
+--  * "Brickyard eleven correction fourteen eleven", "azul four zero one four
+--    correction four zero four one": digits after a correction replace the
+--    callsign's digits (the airline kept); an id no aircraft has is asked about;
+--  * "KLM12 correction KLM21", "Delta sixty, Delta six forty six": a
+--    callsign followed by a correction and another callsign, or an inexactly
+--    heard one said again straight after itself, was a false start
+--    (r.false_start); the later one counts;
+--  * "KLM12 climb FL300, correction KLM21": a callsign after a correction
+--    that ends the request replaces the one named before it.
 function m:settle_callsigns()
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and r.heard then
+    if r.kind == "aircraft" then
       local k = self:skip_fillers(r.e, false)
       if self:word(k, "@correction") then
         local q = self:quantities(self:skip_fillers(k, true), #self.t + 1)[1]
-        local airline = (r.heard.id or ""):match("^%a+")
+        local airline = (r.heard and r.heard.id or r.name):match("^%a+")
         if q and q.b == self:skip_fillers(k, true) and q.kind == "plain" and airline then
           local id = airline .. q.number.digits
-          if self:state(id) then
-            r.name, r.heard, r.e = self:state(id).id, nil, q.e
-            self:mark_used(q.b, q.e)
-          end
+          local known = self:state(id)
+          r.name, r.heard, r.e, r.exists = known and known.id or id, nil, q.e, known ~= nil
+          self:mark_used(q.b, q.e)
         end
       end
     end
   end
-  -- (only an inexactly heard one: "AC01, AC02 climb" names two aircraft)
+  -- (only an inexactly heard one when said again: "AC01, AC02 climb" names two aircraft)
+  local last  -- the last aircraft named before a correction
   for k, r in ipairs(self.refs) do
     local nxt = self.refs[k + 1]
-    if r.kind == "aircraft" and r.heard and nxt and nxt.kind == "aircraft" and self:skip_fillers(r.e, true) == nxt.b
-        and (self:word_in(r.e, nxt.b, "@correction") or airline_digits(r.heard.id) == airline_digits(nxt.name)) then
+    if r.kind == "aircraft" and nxt and nxt.kind == "aircraft" and self:skip_fillers(r.e, true) == nxt.b
+        and (self:word_in(r.e, nxt.b, "@correction")
+          or (r.heard and airline_digits(r.heard.id) == airline_digits(nxt.name))) then
       r.false_start = true
+    end
+    if r.kind == "aircraft" and not r.false_start then
+      local c = r.b - 1
+      while c > 0 and (self.t[c].kind == "punct" or self.t[c].filler) do c = c - 1 end
+      if last and c >= last.e and self:word(c, "@correction") and self:skip_fillers(r.e, false) > #self.t then
+        last.false_start = true
+      end
+      last = r
     end
   end
 end
@@ -221,12 +234,12 @@ end
 -- True when the heard callsign's airline and digits are those of exactly one
 -- aircraft, which is `name`, and every letter after them was heard too
 -- ("speedbird nine six" is not BAW96CA, "two alpha charlie" not DLH2AB);
--- with one aircraft flying (nothing to confuse it with) its last letters
--- may have gone unheard.
+-- with one aircraft flying and lexicon.callsign_confirm.alone off, its last
+-- letters may have gone unheard.
 function m:airline_and_digits_match(heard, name)
   local a, d, rest = airline_digits(heard)
   if a == "" or d == "" or self:letters_conflict(heard, name) then return false end
-  if #self.fleet > 1 and rest ~= select(3, airline_digits(name)) then return false end
+  if self:strict_callsigns() and rest ~= select(3, airline_digits(name)) then return false end
   local n = 0
   for _, ac in ipairs(self.fleet) do
     local a2, d2 = airline_digits(ac.id)
@@ -244,6 +257,12 @@ function m:letters_conflict(heard, name)
   return rest2:sub(1, #rest) ~= rest
 end
 
+-- True when every inexactly heard callsign is asked about (lexicon.callsign_confirm).
+function m:strict_callsigns()
+  local c = L.callsign_confirm
+  return c.strict and (#self.fleet > 1 or c.alone)
+end
+
 -- A spoken callsign matched to an aircraft whose airline or digits differ
 -- from what was heard is asked about, unless the speaker confirmed it.
 function m:confirm_callsigns(s)
@@ -252,7 +271,7 @@ function m:confirm_callsigns(s)
     local h = r.heard
     if h and not r.false_start and not (self.world.confirmed or {})[r.name]
         and not self:airline_and_digits_match(h.id, r.name)
-        and ((c.strict and #self.fleet > 1) or h.airline < c.airline or h.digits < c.digits
+        and (self:strict_callsigns() or h.airline < c.airline or h.digits < c.digits
           or self:letters_conflict(h.id, r.name)) then
       self.confirm = self.confirm or { id = r.name, heard = h.id }
       self:need(string.format("Did you mean %s? I heard %s.", r.name, h.id))

@@ -250,15 +250,44 @@ return function(H, f, compass)
       end
     end
     if best and best_score >= L.waypoint_confirm then return best end
-    local airport = self:airport_by_name(b, e)
+    local airport = self:airport_by_name(b, e) or self:navaid_by_name(b, e, a)
     if airport then return airport end
     -- a name that sounds like a known one is confirmed, never substituted,
     -- unless it is the only name it could be
-    if best and best_score >= 0.5 and #names > 1 and not (self.world.confirmed or {})[best] then
+    if best and best_score >= 0.5 and not (self.world.confirmed or {})[best] then
       self.confirm = self.confirm or { id = best, heard = best_word }
       self:need(string.format("Did you mean %s? I heard '%s'.", best, best_word))
     end
     if best and best_score >= 0.5 then return best end
+    return nil
+  end
+
+  -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
+  -- airport has that name: one or two words in [b, e) that name navaids within
+  -- lexicon.navaid_range_nm of the aircraft `a`; the question names them when several idents fit.
+  function m:navaid_by_name(b, e, a)
+    local named = self.world.navaids_named
+    if not named or not a or not a.lat then return nil end
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local t, nx = self.t[i], self.t[i + 1]
+      if not self.u:used(i) and t.kind == "word" and t.alpha and not t.filler and not t.number_word then
+        local phrases = {}  -- {words, the position after them}
+        if nx and i + 1 < e and nx.kind == "word" and nx.alpha and not self.u:used(i + 1) then
+          phrases[1] = { t.text .. " " .. nx.text, i + 2 }
+        end
+        if #t.text >= 4 and not t.keyword then phrases[#phrases + 1] = { t.text, i + 1 } end
+        for _, p in ipairs(phrases) do
+          local phrase = p[1]
+          -- ("Nantucket airport" is the airport, not the navaid of that name)
+          local ids = self:word(p[2], "@airport_nouns") and {} or named(phrase, a.lat, a.lon, L.navaid_range_nm)
+          if #ids == 1 then return ids[1] end
+          if #ids > 1 then
+            self:need(string.format("Which navaid is '%s': %s?", phrase, table.concat(ids, " or ")))
+            return ids[1]
+          end
+        end
+      end
+    end
     return nil
   end
 
@@ -276,16 +305,25 @@ return function(H, f, compass)
     return nil
   end
 
+  -- A phrase with a capitalised word beside it ("Point Reyes", "Amsterdam Schiphol") is part of a
+  -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
+  -- Capital airport": the word before is its city).
   function m:airport_named_in(b, e, named, placed)
+    local function proper(k)
+      local t = self.t[k]
+      return k > 1 and t ~= nil and t.kind == "word" and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
+    end
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words")) then
         local nx = self.t[i + 1]
-        local phrases = { t.text }
-        if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, t.text .. " " .. nx.text) end
-        for _, phrase in ipairs(phrases) do
-          local ids = named(phrase)
+        local phrases = { { t.text, i + 1 } }
+        if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
+        for _, p in ipairs(phrases) do
+          local phrase, after = p[1], p[2]
+          local city = self:word(after, "@airport_nouns")
+          local ids = ((proper(i - 1) and not city) or proper(after)) and {} or named(phrase)
           if #ids == 1 then return ids[1] end
           if #ids > 1 and #ids <= 4 then
             self:need(string.format("Which airport is '%s': %s?", phrase, table.concat(ids, " or ")))
@@ -754,6 +792,11 @@ return function(H, f, compass)
     if self:asks_setting() and #self:quantities(s.b, s.e) == 0 then return self:emit(vertical and "ZONEDH" or "ZONER") end
     local before = #self.out
     for _, q in ipairs(self:quantities(s.b, s.e)) do
+      -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
+      for i = q.b - 1, s.b, -1 do
+        if self:word(i, "@vertical") then vertical = true break end
+        if self:word(i, "@zone_radius") then vertical = false break end
+      end
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
       if q.kind == "alt" or (q.kind == "plain" and vertical) then self:emit("ZONEDH " .. f.num(q.value)) end
     end

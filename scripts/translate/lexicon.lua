@@ -108,14 +108,16 @@ return {
   -- how many times real time, said in words
   multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
   -- a spoken callsign matched to an aircraft it does not spell exactly is
-  -- confirmed by a question; strict: whenever more than one aircraft flies
-  -- (any airline or digit that differs asks); else (one aircraft, nothing to
-  -- confuse it with) unless the airline and the digits both match at least
-  -- this well (similarity 0-1)
-  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true },
+  -- confirmed by a question; strict: whenever more than one aircraft flies,
+  -- and with one aircraft too when `alone` (any airline, digit or letter that
+  -- differs asks); else unless the airline and the digits both match at
+  -- least this well (similarity 0-1)
+  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true, alone = true },
   -- a spoken waypoint name matched to a known one at least this well (0-1)
   -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
-  waypoint_confirm = 0.8,
+  waypoint_confirm = 1.0,
+  -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
+  navaid_range_nm = 250,
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
   -- what squawk does not simulate: a phrase starts at one of `words` (with
@@ -160,6 +162,8 @@ return {
   -- names said before a value they introduce
   named = { "named", "called" },
   id_words = { "named", "called", "callsign", "id" },
+  -- words after an airport's name ("Beijing Capital airport")
+  airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
@@ -188,6 +192,7 @@ return {
   -- units that make an altitude a level in feet
   feet = { "ft", "feet", "foot" },
   vertical = { "vertical", "height", "zonedh" },
+  zone_radius = { "radius", "zoner" },
   -- bare nouns naming what to show, after a handled instruction
   shown = { "altitude", "speed", "heading", "airspeed" },
 }

@@ -240,7 +240,8 @@ function M.world(sim, waypoints)
     a.route = names
   end
   return { aircraft = aircraft, waypoints = waypoints or {},
-           airports_named = function(name) return sim:airports_named(name) end }
+           airports_named = function(name) return sim:airports_named(name) end,
+           navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end }
 end
 
 function M.offline(state, ctx)
@@ -284,9 +285,9 @@ end
 
 -- A conditional's command typed without the aircraft ("atalt ana257 fl080
 -- spd 210") gets the condition's aircraft ("... SPD ANA257 210") when only
--- that makes it parse; the line c unchanged when its command parses as
--- typed; nil when it does not parse either way (the line is then English).
--- name: c's registry name.
+-- that makes it parse; otherwise the line c unchanged (a carried command
+-- that parses neither way is then asked about in M.typed). name: c's
+-- registry name.
 local NESTED_AT = { ATALT = 4, ATSPD = 4, ATDIST = 5 }
 function M.complete_nested(c, name, scratch)
   local k = NESTED_AT[name]
@@ -297,9 +298,34 @@ function M.complete_nested(c, name, scratch)
   if #w < k or not canonical_name(w[k]) then return c end
   local nested = table.concat(w, " ", k)
   local with_acid = w[k] .. " " .. w[2] .. (#w > k and " " .. table.concat(w, " ", k + 1) or "")
-  if scratch:check(nested) then return c end
-  if not scratch:check(with_acid) then return nil end
+  if scratch:check(nested) or not scratch:check(with_acid) then return c end
   return table.concat(w, " ", 1, k - 1) .. " " .. with_acid
+end
+
+-- The command a condition command carries as its last argument ("ATALT KL204 FL080 SPD KL204
+-- 210" -> "SPD KL204 210") and the position of its first word in the line, or nil when the
+-- command's usage ends in no command.
+local function carried_command(name, line)
+  local args = {}
+  for w in ((usage_of(name) or ""):match("^%S+%s+(.*)$") or ""):gmatch("[^,]+") do args[#args + 1] = w end
+  if args[#args] ~= "command" then return nil end
+  local words = {}
+  for w in line:gmatch("[^%s,]+") do words[#words + 1] = w end
+  return table.concat(words, " ", #args + 1), #args + 1
+end
+
+-- True when an argument of the command `name` typed in `line` is an English word of the grammar.
+local function has_english_word(line, name)
+  local n = 0
+  for w in line:gmatch("[^%s,]+") do
+    n = n + 1
+    local lw = w:lower()
+    local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
+    if name ~= "ECHO" and (GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
+      return true
+    end
+  end
+  return false
 end
 
 function M.typed(state, ctx)
@@ -320,18 +346,28 @@ function M.typed(state, ctx)
     -- an argument that is an English word of the grammar ("turn KL204 north": heading 360, not the
     -- bearing to a waypoint NORTH) makes the line English
     local name = canonical_name(c:match("^([%w_]+)"))
-    local n = 0
-    for w in c:gmatch("[^%s,]+") do
-      n = n + 1
-      local lw = w:lower()
-      local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
-      if name ~= "ECHO" and (GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
-        return "english"
+    c = M.complete_nested(c, name, scratch)
+    cmds[k] = c
+    -- the command a condition carries is TrafScript too ("SCHEDULE 60 HOLD"): its name is no
+    -- English word; one that does not parse ("ana257 atalt fl080 spd 210": SPD names no
+    -- aircraft) is asked about, never run nor read as English
+    local inner, inner_at = carried_command(name, c)
+    if inner then
+      local ok, why = scratch:check(inner)
+      if not canonical_name(inner:match("^([%w_]+)")) then return "english" end
+      if not ok then
+        state.ask = string.format("%s carries '%s', which is not a command it can run (%s). What should it run?",
+          name, inner, why)
+        M.say(state, "typed", "asks: " .. state.ask)
+        return "ask"
       end
     end
-    c = M.complete_nested(c, name, scratch)
-    if not c then return "english" end
-    cmds[k] = c
+    local words = {}
+    for w in c:gmatch("[^%s,]+") do words[#words + 1] = w end
+    if has_english_word(table.concat(words, " ", 1, (inner_at or #words + 1) - 1), name)
+        or (inner and has_english_word(inner, canonical_name(inner:match("^([%w_]+)")))) then
+      return "english"
+    end
     if not scratch:check(c) then return "english" end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))

@@ -102,10 +102,15 @@ check_eq(said(tr("KLM1234 ALT FL100")), "ALT KLM1234 FL100")
 check_eq(said(tr("FF 60")), "FF 60")
 -- English that happens to start with a command word stays English
 check(not tr("turn KLM1234 north").typed, "a compass word is English")
--- a conditional's command typed without its aircraft gets the condition's; one that parses neither way is English
+-- a conditional's command typed without its aircraft gets the condition's
 check_eq(said(tr("klm1234 atalt fl080 spd 210")), "ATALT klm1234 fl080 spd klm1234 210")
-check(not tr("klm1234 atalt fl080 spd").typed, "a conditional whose command does not parse is English")
 check(not tr("delete the aircraft").typed, "glue words are English")
+-- a condition's command is TrafScript too: run as typed when it parses, asked about when not
+check_eq(said(tr("SCHEDULE 60 HOLD")), "SCHEDULE 60 HOLD")
+check_eq(said(tr("delay 60 hdg klm1234 270 right")), "DELAY 60 hdg klm1234 270 right")
+check_eq(said(tr("klm1234 atalt fl080 spd klm1234 210")), "ATALT klm1234 fl080 spd klm1234 210")
+r = tr("klm1234 atalt fl080 spd")  -- parses neither as typed nor with the aircraft filled in
+check(#(r.commands or {}) == 0 and (r.ask or ""):find("ATALT carries 'spd'", 1, true) ~= nil, said(r))
 
 -- 5. destructive and global requests wait for a yes
 local function dialogue() return graph.dialogue({ sim = sim, mode = "offline" }) end
@@ -138,6 +143,8 @@ check_eq(r.error, nil)
 r = tr("KLM1234 contact approach 119.7 and descend FL100")
 check_eq(said(r), "ALT KLM1234 FL100")
 check(r.note:find("radio frequencies", 1, true) ~= nil, tostring(r.note))
+r = tr("KLM1234, cleared for the river visual runway two eight right")
+check(#r.commands == 0 and (r.note or ""):find("approach clearances", 1, true) ~= nil, said(r))
 
 -- 3. callsigns exact or asked: a transposed or shortened typed callsign names the candidates
 r = tr("KLM1243 climb flight level 300")
@@ -152,16 +159,70 @@ check_eq(said(d:say("yes")), "ALT KLM1234 FL300")
 -- a spoken callsign whose digits differ from the only fitting aircraft asks while others fly
 r = tr("KLM one two four three climb flight level 300")
 check(r.ask ~= nil and r.ask:find("KLM1234", 1, true) ~= nil, said(r))
+-- with one aircraft in the sky too: a callsign close to it (transposed digits, a digit or its
+-- last letters unheard, letters that spell none) is asked about, an exact one is taken
+local lone = squawk.sim.new()
+check(lone:exec("CRE ACA851 A320 52 4 090 FL200 250"))
+local function one(text) return said(graph.translate(text, { sim = lone, mode = "offline" })) end
+check(one("air canada eight one five climb FL300"):find("^ASK Did you mean ACA851%? I heard ACA81") ~= nil, "transposed")
+check_eq(one("air canada eight five climb FL300"), "ASK Did you mean ACA851? I heard ACA85.")
+check_eq(one("ACA815 climb FL300"), "ASK Did you mean ACA851? There is no ACA815.")
+check_eq(one("air canada eight five one climb FL300"), "ALT ACA851 FL300")
+check_eq(one("ACA851 climb FL300"), "ALT ACA851 FL300")
+-- an airline's two-letter code is a partial callsign squawk has no table for: asked, alone or not
+check_eq(one("The AC 851 should descend on FL120"), "ASK Did you mean ACA851? I heard AC851.")
+-- an aircraft's exact id glued to a level or a shorthand value is the id and the value
+check_eq(one("aca851fl240"), "ALT ACA851 FL240")
+check_eq(one("ACA851S250"), "SPD ACA851 250")
+check_eq(one("aca85fl240"):find("^ASK") ~= nil, true)
+-- a corrected callsign: the one after the correction is instructed, never the one before it
+local azu = squawk.sim.new()
+for _, line in ipairs({ "CRE AZU4014 A320 52 4 090 FL200 250", "CRE AZU4041 A320 52.2 4 090 FL200 250",
+    "CRE KLM12 B738 52.4 4 090 FL200 250", "CRE KLM21 B738 52.6 4 090 FL200 250" }) do
+  check(azu:exec(line))
+end
+local function cor(text) return said(graph.translate(text, { sim = azu, mode = "offline" })) end
+check_eq(cor("azul four zero one four correction four zero four one reduce speed two two zero"), "SPD AZU4041 220")
+check_eq(cor("AZU4014 correction 4041 reduce speed 220"), "SPD AZU4041 220")
+check_eq(cor("KLM12 correction KLM21 climb FL300"), "ALT KLM21 FL300")
+check_eq(cor("KLM12 climb FL300, correction KLM21"), "ALT KLM21 FL300")
+check_eq(cor("KLM12 descend FL120 correction FL110"), "ALT KLM12 FL110")
+check_eq(cor("AZU4014 correction 4099 reduce speed 220"), "ASK There is no aircraft AZU4099. Which aircraft do you mean?")
 -- fixes: a name that only sounds like one of several known names is confirmed, never substituted
 local wsim = sim:copy()
 check(wsim:exec("DEFWPT SQK01 52.3 4.3"))
 check(wsim:exec("DEFWPT SPIKE 52.5 4.5"))
 r = graph.translate("KLM1234 direct to sparky", { sim = wsim, mode = "offline", waypoints = { "SQK01", "SPIKE" } })
 check_eq(r.ask, "Did you mean SPIKE? I heard 'sparky'.")
+-- the only name known that sounds like the word said is confirmed too, never substituted
+local osim = sim:copy()
+check(osim:exec("DEFWPT WAVEY 52.3 4.3"))
+r = graph.translate("KLM1234 direct way", { sim = osim, mode = "offline", waypoints = { "WAVEY" } })
+check_eq(r.ask, "Did you mean WAVEY? I heard 'way'.")
+check_eq(said(graph.translate("KLM1234 direct wavey", { sim = osim, mode = "offline", waypoints = { "WAVEY" } })),
+  "ADDWPT KLM1234 WAVEY ; DIRECT KLM1234 WAVEY")
+-- the spelling fixer turns no command's name and no word of what is not simulated into another
+-- word: "delrte" is no "delete" (DEL would delete the aircraft), "holding" no "heading"
+check(said(tr("delrte for KLM1234")):find("^ASK") ~= nil, said(tr("delrte for KLM1234")))
+check(said(tr("KLM1234 holding 270")):find("HDG", 1, true) == nil, said(tr("KLM1234 holding 270")))
+check_eq(said(tr("KLM1234 headng 270")), "HDG KLM1234 270")
+-- a command's name said with its value: each value is the dimension named last before it
+check_eq(said(tr("zoner 3 zonedh 500")), "ZONER 3 ; ZONEDH 500")
+check_eq(said(tr("zonedh 300 zoner 3")), "ZONEDH 300 ; ZONER 3")
 -- an airport said by its name is the navdata's airport (when navdata is loaded)
 if #sim:airports_named("schiphol") == 1 then
   check_eq(said(graph.translate("KLM1234 direct to Schiphol", { sim = wsim, mode = "offline",
     waypoints = { "SQK01", "SPIKE" } })), "ADDWPT KLM1234 EHAM ; DIRECT KLM1234 EHAM")
+  -- a word of a longer name ("Point Reyes": Reyes Airport is in Bolivia) names no airport; a
+  -- navaid said by its navdata name near the aircraft is that navaid
+  local us = squawk.sim.new()
+  check(us:exec("CRE JBU1116 A320 37.75 -122.55 300 FL150 280"))
+  check(us:exec("CRE FDX1288 B763 40.6 -73.9 090 FL150 280"))
+  local function ustr(text) return said(graph.translate(text, { sim = us, mode = "offline" })) end
+  check_eq(ustr("JetBlue 1116 proceed direct Point Reyes"), "ADDWPT JBU1116 PYE ; DIRECT JBU1116 PYE")
+  check_eq(ustr("FedEx 1288 proceed direct Canarsie"), "ADDWPT FDX1288 CRI ; DIRECT FDX1288 CRI")
+  -- (Canarsie is 2000 NM from JBU1116: no navaid of that name near it)
+  check(ustr("JetBlue 1116 proceed direct Canarsie"):find("CRI", 1, true) == nil, "far navaid")
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
@@ -179,6 +240,7 @@ check_eq(ctr("ryan air seven tango kilo climb flight level two one zero"), "ALT 
 check_eq(ctr("easy jet three three reduce speed two two zero"), "SPD EZY33 220")
 check_eq(ctr("speed bird four five turn left heading one two zero"), "ASK Did you mean BAW456? I heard BAW45.")
 check_eq(ctr("ryan air seven tango climb flight level two one zero"), "ASK Did you mean RYR7TK? I heard RYR7T.")
+check_eq(ctr("BA 456 climb FL300"), "ASK Did you mean BAW456? I heard BA456.")
 -- two spoken digits are a light aircraft's speed, an airliner's cut off
 check_eq(ctr("november seven seven alpha bravo reduce speed eight zero knots"), "SPD N77AB 80")
 check(ctr("speed bird four five six reduce speed eight zero knots"):find("^ASK What speed") ~= nil, "cut off")
