@@ -39,7 +39,7 @@ namespace squawk::script {
 namespace {
 
 constexpr long long kEpisodeCost = 10'000;  // [instructions] charged per training episode
-constexpr long long kMaxSeed = 9007199254740992LL;
+constexpr long long kMaxInteger = 9007199254740992LL;  // 2^53: the largest a Lua number holds exactly
 
 std::optional<double> opt_field(lua_State* L, const char* key) {
   get_field(L, 1, key);
@@ -55,8 +55,8 @@ void apply_learner_keys(lua_State* L, rl::TrainConfig& cfg, long long episodes_d
   auto count = [&](const char* key, long long fallback, long long lo, long long hi) {
     return field_count(L, 1, key, fallback, lo, hi);
   };
-  cfg.seed = static_cast<uint64_t>(count("seed", static_cast<long long>(cfg.seed), 0, kMaxSeed));
-  cfg.episodes = count("episodes", episodes_default, 1, kMaxSeed);
+  cfg.seed = static_cast<uint64_t>(count("seed", static_cast<long long>(cfg.seed), 0, kMaxInteger));
+  cfg.episodes = count("episodes", episodes_default, 1, kMaxInteger);
   cfg.stop_at = count("stop_at", 0, 0, cfg.episodes);
   cfg.estimator = field_string(L, 1, "estimator", cfg.estimator);
   cfg.num_envs = static_cast<int>(count("envs", cfg.num_envs, 1, 4096));
@@ -71,7 +71,7 @@ void apply_learner_keys(lua_State* L, rl::TrainConfig& cfg, long long episodes_d
   cfg.clip = field_number(L, 1, "clip", cfg.clip);
   cfg.value_iters = static_cast<int>(count("value_iters", cfg.value_iters, 0, 1 << 20));
   cfg.branch_fraction = field_number(L, 1, "branch_fraction", cfg.branch_fraction);
-  cfg.eval_every = count("eval_every", cfg.eval_every, 0, kMaxSeed);
+  cfg.eval_every = count("eval_every", cfg.eval_every, 0, kMaxInteger);
   cfg.eval_episodes = count("eval_episodes", cfg.eval_episodes, 1, 1'000'000);
   check_status(cfg.validate());
 }
@@ -90,7 +90,7 @@ Learner learner_of(lua_State* L, const std::string& kind, Scenario& sc, uint64_t
   o.reads = &Vm::of(L).rules();
   o.gpt2.model = field_string(L, 1, "model", "tiny");
   if (o.gpt2.model != "tiny") o.gpt2.model = readable_folder(L, o.gpt2.model, "model");
-  o.gpt2.model_seed = static_cast<uint64_t>(field_count(L, 1, "model_seed", 0, 0, kMaxSeed));
+  o.gpt2.model_seed = static_cast<uint64_t>(field_count(L, 1, "model_seed", 0, 0, kMaxInteger));
   o.gpt2.prompt = readable(L, field_string(L, 1, "prompt", ""), "prompt");
   o.gpt2.spec.head = field_string(L, 1, "head", "action");
   o.gpt2.spec.trainable_blocks = static_cast<int>(field_count(L, 1, "blocks", -1, -1, 1024));
@@ -152,7 +152,7 @@ int l_train(lua_State* L) {
   const bool folder = gpt2 && field_string(L, 1, "model", "tiny") != "tiny";
   apply_learner_keys(L, cfg, gpt2 ? kGpt2TrainEpisodes : cfg.episodes, folder ? kGpt2FolderLr : cfg.lr);
   const auto validation = static_cast<uint64_t>(
-      field_count(L, 1, "validation_seed", static_cast<long long>(sc.eval_seed + 1000003), 0, kMaxSeed));
+      field_count(L, 1, "validation_seed", static_cast<long long>(sc.eval_seed + 1000003), 0, kMaxInteger));
   const std::string init = readable(L, field_string(L, 1, "init", ""), "init");
   const std::string resume = readable(L, field_string(L, 1, "resume", ""), "resume");
   if (!init.empty() && !resume.empty()) throw ArgError("squawk.rl.train: give 'init' or 'resume', not both");
