@@ -4,7 +4,8 @@
 
 namespace squawk::rl {
 
-Result<bool> play(env::VecEnv& envs, uint64_t seed, uint64_t first, uint64_t count, const Driver& driver) {
+Result<bool> play(env::VecEnv& envs, uint64_t seed, uint64_t first, uint64_t count,
+                  const Driver& driver) {
   envs.completed().clear();
   envs.start(seed, first, count);
   std::vector<int> slots;
@@ -28,9 +29,11 @@ Result<bool> play(env::VecEnv& envs, uint64_t seed, uint64_t first, uint64_t cou
   return true;
 }
 
-std::function<Status(Turn&)> policy_choice(Policy& policy, env::VecEnv& envs, EpisodeStreams& streams, bool greedy) {
+std::function<Status(Turn&)> policy_choice(Policy& policy, env::VecEnv& envs,
+                                           EpisodeStreams& streams, bool greedy) {
   return [&policy, &envs, &streams, greedy](Turn& t) {
-    policy.act(t.obs, static_cast<int>(t.slots.size()), t.slots, streams.rows(envs), greedy, t.actions);
+    policy.act(t.obs, static_cast<int>(t.slots.size()), t.slots, streams.rows(envs), greedy,
+               t.actions);
     streams.keep(envs);
     return Status::ok();
   };

@@ -47,8 +47,10 @@ struct Driver {
   std::function<bool(const Turn&)> after;  // empty: never stops the run
 };
 
-Result<bool> play(env::VecEnv& envs, uint64_t seed, uint64_t first, uint64_t count, const Driver& driver);
+Result<bool> play(env::VecEnv& envs, uint64_t seed, uint64_t first, uint64_t count,
+                  const Driver& driver);
 
-std::function<Status(Turn&)> policy_choice(Policy& policy, env::VecEnv& envs, EpisodeStreams& streams, bool greedy);
+std::function<Status(Turn&)> policy_choice(Policy& policy, env::VecEnv& envs,
+                                           EpisodeStreams& streams, bool greedy);
 
 }  // namespace squawk::rl

@@ -38,8 +38,9 @@ enum class RunEnd { kFinished, kStopped, kInterrupted };
 
 using OnUpdate = std::function<Result<bool>(const UpdateReport&)>;
 
-Result<RunEnd> run_training(Trainer& trainer, Policy& policy, env::VecEnv& eval_envs, const TrainConfig& cfg,
-                            uint64_t validation_seed, TrainProgress& progress, const UpdateProgress& within,
+Result<RunEnd> run_training(Trainer& trainer, Policy& policy, env::VecEnv& eval_envs,
+                            const TrainConfig& cfg, uint64_t validation_seed,
+                            TrainProgress& progress, const UpdateProgress& within,
                             const OnUpdate& on_update);
 
 }  // namespace squawk::rl

@@ -39,7 +39,8 @@ namespace squawk::script {
 namespace {
 
 constexpr long long kEpisodeCost = 10'000;  // [instructions] charged per training episode
-constexpr long long kMaxInteger = 9007199254740992LL;  // 2^53: the largest a Lua number holds exactly
+constexpr long long kMaxInteger =
+    9007199254740992LL;  // 2^53: the largest a Lua number holds exactly
 
 std::optional<double> opt_field(lua_State* L, const char* key) {
   get_field(L, 1, key);
@@ -51,7 +52,8 @@ std::optional<double> opt_field(lua_State* L, const char* key) {
 
 // The learner keys over `cfg` (the scenario's train table), by the rules of
 // apply_learner_flags (app/learner_flags.h).
-void apply_learner_keys(lua_State* L, rl::TrainConfig& cfg, long long episodes_default, double lr_default) {
+void apply_learner_keys(lua_State* L, rl::TrainConfig& cfg, long long episodes_default,
+                        double lr_default) {
   auto count = [&](const char* key, long long fallback, long long lo, long long hi) {
     return field_count(L, 1, key, fallback, lo, hi);
   };
@@ -60,7 +62,8 @@ void apply_learner_keys(lua_State* L, rl::TrainConfig& cfg, long long episodes_d
   cfg.stop_at = count("stop_at", 0, 0, cfg.episodes);
   cfg.estimator = field_string(L, 1, "estimator", cfg.estimator);
   cfg.num_envs = static_cast<int>(count("envs", cfg.num_envs, 1, 4096));
-  cfg.episodes_per_update = static_cast<int>(count("episodes_per_update", cfg.episodes_per_update, 1, 1 << 20));
+  cfg.episodes_per_update =
+      static_cast<int>(count("episodes_per_update", cfg.episodes_per_update, 1, 1 << 20));
   cfg.set_lr(field_number(L, 1, "lr", lr_default), opt_field(L, "lr_final"));
   cfg.gamma = field_number(L, 1, "gamma", cfg.gamma);
   cfg.lambda = field_number(L, 1, "lambda", cfg.lambda);
@@ -77,8 +80,8 @@ void apply_learner_keys(lua_State* L, rl::TrainConfig& cfg, long long episodes_d
 }
 
 // The learner of the table's policy keys (script/learner.h).
-Learner learner_of(lua_State* L, const std::string& kind, Scenario& sc, uint64_t seed, const std::string& from,
-                   bool resume) {
+Learner learner_of(lua_State* L, const std::string& kind, Scenario& sc, uint64_t seed,
+                   const std::string& from, bool resume) {
   VmOptions vo = Vm::of(L).options();
   vo.out_dir.clear();
   LearnerOptions o;
@@ -94,7 +97,8 @@ Learner learner_of(lua_State* L, const std::string& kind, Scenario& sc, uint64_t
   o.gpt2.prompt = readable(L, field_string(L, 1, "prompt", ""), "prompt");
   o.gpt2.spec.head = field_string(L, 1, "head", "action");
   o.gpt2.spec.trainable_blocks = static_cast<int>(field_count(L, 1, "blocks", -1, -1, 1024));
-  o.gpt2.spec.chunk_rows = static_cast<int>(field_count(L, 1, "chunk", o.gpt2.spec.chunk_rows, 1, 1 << 20));
+  o.gpt2.spec.chunk_rows =
+      static_cast<int>(field_count(L, 1, "chunk", o.gpt2.spec.chunk_rows, 1, 1 << 20));
   o.gpt2.spec.train_embeddings = field_boolean(L, 1, "train_embeddings", false);
   auto l = make_learner(o, sc, vo);
   if (!l) throw ArgError("squawk.rl.train: " + l.status().message());
@@ -144,18 +148,21 @@ void push_update(lua_State* L, const rl::UpdateReport& u) {
 int l_train(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
   const std::string path = readable(L, field_string(L, 1, "scenario", ""), "scenario");
-  if (path.empty()) throw ArgError("squawk.rl.train: field 'scenario' (a scenario file) is required");
+  if (path.empty())
+    throw ArgError("squawk.rl.train: field 'scenario' (a scenario file) is required");
   const std::string kind = field_string(L, 1, "policy", "mlp");
   Scenario sc = scenario_or_throw(L, path);
   rl::TrainConfig cfg = sc.train;
   const bool gpt2 = kind == "gpt2";
   const bool folder = gpt2 && field_string(L, 1, "model", "tiny") != "tiny";
-  apply_learner_keys(L, cfg, gpt2 ? kGpt2TrainEpisodes : cfg.episodes, folder ? kGpt2FolderLr : cfg.lr);
-  const auto validation = static_cast<uint64_t>(
-      field_count(L, 1, "validation_seed", static_cast<long long>(sc.eval_seed + 1000003), 0, kMaxInteger));
+  apply_learner_keys(L, cfg, gpt2 ? kGpt2TrainEpisodes : cfg.episodes,
+                     folder ? kGpt2FolderLr : cfg.lr);
+  const auto validation = static_cast<uint64_t>(field_count(
+      L, 1, "validation_seed", static_cast<long long>(sc.eval_seed + 1000003), 0, kMaxInteger));
   const std::string init = readable(L, field_string(L, 1, "init", ""), "init");
   const std::string resume = readable(L, field_string(L, 1, "resume", ""), "resume");
-  if (!init.empty() && !resume.empty()) throw ArgError("squawk.rl.train: give 'init' or 'resume', not both");
+  if (!init.empty() && !resume.empty())
+    throw ArgError("squawk.rl.train: give 'init' or 'resume', not both");
   const std::string save = field_string(L, 1, "save", "");
   if (!save.empty()) check_status(Vm::of(L).rules().check_write(save, "squawk.rl.train save"));
   get_field(L, 1, "on_update");

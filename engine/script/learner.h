@@ -30,25 +30,28 @@
 namespace squawk::script {
 
 struct LearnerOptions {
-  std::string kind = "mlp";   // "mlp" | "gpt2"
-  Gpt2PolicyOptions gpt2;     // gpt2: base model, seeds, prompt, spec
+  std::string kind = "mlp";  // "mlp" | "gpt2"
+  Gpt2PolicyOptions gpt2;    // gpt2: base model, seeds, prompt, spec
   bool mirror = false;
-  std::string from;           // checkpoint to start from; "" = a fresh policy
-  bool resume = false;        // from: keep its counters
-  uint64_t seed = 0;          // the run's seed (mlp: the initialisation)
-  const paths::PathRules* reads = nullptr;  // sandboxed callers: the read check for files a checkpoint names
+  std::string from;     // checkpoint to start from; "" = a fresh policy
+  bool resume = false;  // from: keep its counters
+  uint64_t seed = 0;    // the run's seed (mlp: the initialisation)
+  // Sandboxed callers: the read check for the files a checkpoint names.
+  const paths::PathRules* reads = nullptr;
 };
 
 struct Learner {
   std::unique_ptr<rl::Policy> policy;
   bool is_gpt2 = false;
-  rl::Checkpoint mlp;          // mlp: spec and counters (what its checkpoint holds besides parameters)
-  rl::PromptCheckpoint gpt2;   // gpt2: source, config, tokenizer, spec and counters
+  rl::Checkpoint mlp;  // mlp: spec and counters (what its checkpoint holds besides parameters)
+  rl::PromptCheckpoint gpt2;              // gpt2: source, config, tokenizer, spec and counters
   std::optional<rl::TrainState> restore;  // from a checkpoint: the learner state to go on from
 
   rl::TrainState& state() { return is_gpt2 ? static_cast<rl::TrainState&>(gpt2) : mlp; }
   rl::TrainProgress& progress() { return state().progress; }
-  const env::ObservationMirror& mirror() const { return is_gpt2 ? gpt2.spec.mirror : mlp.spec.mirror; }
+  const env::ObservationMirror& mirror() const {
+    return is_gpt2 ? gpt2.spec.mirror : mlp.spec.mirror;
+  }
   // Writes the checkpoint at `path`: with `trainer`, the policy and its learner
   // state (what resume needs); without, the MLP policy alone.
   Status save(const std::string& path, rl::Trainer* trainer);

@@ -62,17 +62,18 @@ TEST_CASE("play runs every episode once, turn by turn, and hands each its reward
   CHECK(index.size() == 12);
   CHECK(*index.begin() == 10);
   CHECK(*index.rbegin() == 21);
-  CHECK(rows == decisions);              // one row per decision
-  CHECK(ends == with_rows);              // every episode with a decision ends on a row
-  CHECK(turns >= rows / 4);              // at most 4 slots per turn
-  CHECK(reward < 0.0);                   // drift and intrusions cost
+  CHECK(rows == decisions);  // one row per decision
+  CHECK(ends == with_rows);  // every episode with a decision ends on a row
+  CHECK(turns >= rows / 4);  // at most 4 slots per turn
+  CHECK(reward < 0.0);       // drift and intrusions cost
 }
 
 TEST_CASE("play stops when after() says so, and passes choose()'s error on") {
   auto v = env::VecEnv::make(paper_env(), 4);
   REQUIRE(v);
   int turns = 0;
-  rl::Driver stop{[](rl::Turn&) { return Status::ok(); }, [&](const rl::Turn&) { return ++turns < 3; }};
+  rl::Driver stop{[](rl::Turn&) { return Status::ok(); },
+                  [&](const rl::Turn&) { return ++turns < 3; }};
   auto r = rl::play(*v, 1, 0, 50, stop);
   REQUIRE(r);
   CHECK_FALSE(*r);
@@ -126,23 +127,25 @@ TEST_CASE("run_training evaluates on schedule, reports every update, and stops w
   REQUIRE(train_envs);
   REQUIRE(eval_envs);
   // The whole run, and the same run stopped by on_update after its 3rd update.
-  auto run = [&](long long stop_after, std::vector<double>& returns, std::vector<long long>& evals) {
+  auto run = [&](long long stop_after, std::vector<double>& returns,
+                 std::vector<long long>& evals) {
     Rng init(4);
     auto p = rl::MlpPolicy::make({}, init);
     REQUIRE(p);
     rl::Trainer trainer(**p, *train_envs, cfg, 0);
     rl::TrainProgress progress;
-    auto end = rl::run_training(trainer, **p, *eval_envs, cfg, 99, progress, {},
-                                [&](const rl::UpdateReport& u) -> Result<bool> {
-                                  returns.push_back(u.stats.mean_return);
-                                  CHECK(u.progress.updates == static_cast<long long>(returns.size()));
-                                  CHECK(u.progress.episodes == 8 * u.progress.updates);
-                                  if (u.eval) {
-                                    evals.push_back(u.progress.episodes);
-                                    CHECK(u.eval->episodes == 6);
-                                  }
-                                  return u.progress.updates != stop_after;
-                                });
+    auto end =
+        rl::run_training(trainer, **p, *eval_envs, cfg, 99, progress, {},
+                         [&](const rl::UpdateReport& u) -> Result<bool> {
+                           returns.push_back(u.stats.mean_return);
+                           CHECK(u.progress.updates == static_cast<long long>(returns.size()));
+                           CHECK(u.progress.episodes == 8 * u.progress.updates);
+                           if (u.eval) {
+                             evals.push_back(u.progress.episodes);
+                             CHECK(u.eval->episodes == 6);
+                           }
+                           return u.progress.updates != stop_after;
+                         });
     REQUIRE(end);
     return *end;
   };
