@@ -72,6 +72,24 @@ expect "imitate no out"  2 "imitate expects SCENARIO.lua OUT.ckpt" -- "$sq" gpt2
 expect "train pretrained" 0 "done: 8 episodes" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --lr 1e-3 --episodes 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/run"
 expect "train gpt2 stop-at" 0 "16 episodes, stopping at 8" -- "$sq" train scenarios/horizontal_cr.lua --policy gpt2 --model "$pt" --train-embeddings --blocks 2 --episodes 16 --stop-at 8 --episodes-per-update 8 --envs 8 --eval-every 8 --eval-episodes 4 --out "$pt/stop"
 awk -F, 'END { exit $1 != 8 }' "$pt/stop/log.csv" && { echo "ok   gpt2 stop-at ends at 8"; pass=$((pass + 1)); } || { echo "FAIL gpt2 stop-at: log ends at $(tail -1 "$pt/stop/log.csv")"; fails=$((fails + 1)); }
+# squawk.rl.train is the same learner: the stop-at run above, as a Lua call,
+# gives the log's row (but the wall time) and a checkpoint with the same arrays.
+cat > "$tmp/rl_stop.lua" <<LUA
+squawk.rl.train{scenario = "scenarios/horizontal_cr.lua", policy = "gpt2", model = "$pt", train_embeddings = true,
+  blocks = 2, episodes = 16, stop_at = 8, episodes_per_update = 8, envs = 8, eval_every = 8, eval_episodes = 4,
+  save = squawk.out_dir .. "/a.ckpt",
+  on_update = function(u)
+    local e = u.eval
+    print(string.format("%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f", u.episodes, u.update, u.mean_return,
+      u.success_rate, u.entropy, u.grad_norm, e.success_rate, e.mean_reward, e.std_reward))
+  end}
+LUA
+mkdir -p "$tmp/rl_stop"
+lua_row=$("$sq" run "$tmp/rl_stop.lua" --allow-read "$pt" --out "$tmp/rl_stop" 2>/dev/null)
+[ -n "$lua_row" ] && [ "$lua_row" = "$(tail -1 "$pt/stop/log.csv" | cut -d, -f1,2,4-)" ] \
+  && cmp -s <(tail -n +3 "$pt/stop/checkpoint.ckpt") <(tail -n +3 "$tmp/rl_stop/a.ckpt") \
+  && { echo "ok   squawk.rl.train repeats squawk train"; pass=$((pass + 1)); } \
+  || { echo "FAIL squawk.rl.train: '$lua_row' against '$(tail -1 "$pt/stop/log.csv")'"; fails=$((fails + 1)); }
 # Training evaluates on the validation episodes (eval seed 2024 + 1000003), never
 # on those `squawk eval` reads: the default run's log equals one with that seed
 # named, but for the wall time, and not one on the evaluation seed.

@@ -1,7 +1,6 @@
 // squawk train / eval --policy gpt2: fine-tuning and evaluation of the GPT-2
 // prompt policy (paper §III.C.3-5). Reached through the --policy hook of
 // cmd_train / cmd_eval (cli_rl.cpp).
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -19,18 +18,11 @@
 #include "dist/comm.h"
 #include "env/vec_env.h"
 #include "nn/gemm.h"
-#include "rl/evaluator.h"
-#include "rl/vpg.h"
+#include "rl/train_run.h"
+#include "script/learner.h"
 #include "script/scenario.h"
 
 namespace squawk::app {
-
-namespace {
-
-// Adam step size on a Hugging Face folder unless --lr says otherwise.
-constexpr double kFolderLr = 1e-5;
-
-}  // namespace
 
 Args::Spec train_flags(bool gpt2) {
   std::vector<std::string> values = learner_flags();
@@ -57,8 +49,8 @@ int cmd_train_gpt2(const ArgV& argv) {
   if (Status st = apply_mirror_flag(*args, sc.train_env, popts->spec.mirror); !st.is_ok())
     return usage_error("train", "--mirror: " + st.message());
   rl::TrainConfig cfg = sc.train;
-  const double lr_default = popts->model == "tiny" ? cfg.lr : kFolderLr;
-  if (Status st = apply_learner_flags(*args, 20000, lr_default, cfg); !st.is_ok())
+  const double lr_default = popts->model == "tiny" ? cfg.lr : script::kGpt2FolderLr;
+  if (Status st = apply_learner_flags(*args, script::kGpt2TrainEpisodes, lr_default, cfg); !st.is_ok())
     return usage_error("train", st.message());
   auto validation = validation_seed(*args, sc.eval_seed);
   if (!validation) return usage_error("train", validation.status().message());
@@ -66,38 +58,23 @@ int cmd_train_gpt2(const ArgV& argv) {
   auto run = open_run_folder(*args->get("--out"), *args);
   if (!run) return failure(run.status());
 
-  Gpt2Policy g;
-  rl::PromptCheckpoint resume;
   const bool resuming = run->resuming;
   const std::string init_path = resuming ? "" : args->get_or("--init", "");
-  if (resuming || !init_path.empty()) {
-    auto c = rl::load_prompt_checkpoint(resuming ? run->checkpoint : init_path);
-    if (!c) return failure(c.status());
-    if (resuming) {
-      if (Status st = check_resume_seed(*run, c->progress.seed, cfg.seed); !st.is_ok()) return failure(st);
-      if (Status st = check_resume_mirror(run->checkpoint, c->spec.mirror, popts->spec.mirror); !st.is_ok())
-        return failure(st);
-    } else {
-      // --init: the learned state (parameters, Adam moments, value baseline)
-      // carries over; the counters, and so the schedules, start at zero.
-      if (!popts->spec.mirror.empty()) c->spec.mirror = popts->spec.mirror;
-      c->progress = rl::TrainProgress{};
-      c->progress.seed = cfg.seed;
-    }
-    auto p = gpt2_policy_from_checkpoint(*c, popts->prompt, vo);
-    if (!p) return failure(p.status());
-    g = std::move(*p);
-    resume = std::move(*c);
-  } else {
-    auto p = make_gpt2_policy(*popts, sc.train_env, vo);
-    if (!p) return failure(p.status());
-    g = std::move(*p);
-    g.meta.progress.seed = cfg.seed;
+  script::LearnerOptions lo;
+  lo.kind = "gpt2";
+  lo.gpt2 = *popts;
+  lo.from = resuming ? run->checkpoint : init_path;
+  lo.resume = resuming;
+  lo.seed = cfg.seed;
+  auto learner = script::make_learner(lo, sc, vo);
+  if (!learner) return failure(learner.status());
+  if (resuming) {
+    if (Status st = check_resume_seed(*run, learner->progress().seed, cfg.seed); !st.is_ok()) return failure(st);
+    if (Status st = check_resume_mirror(run->checkpoint, learner->mirror(), popts->spec.mirror); !st.is_ok())
+      return failure(st);
   }
-  rl::PromptPolicy& policy = *g.policy;
-  rl::PromptCheckpoint& meta = g.meta;
-  const bool restoring = resuming || !init_path.empty();
-  if (restoring) meta.progress = resume.progress;
+  rl::Policy& policy = *learner->policy;
+  rl::PromptCheckpoint& meta = learner->gpt2;
   meta.progress.estimator = cfg.estimator;
   meta.progress.scenario = sc.path;
   if (Status st = rl::check_obs_size(policy, env::observation_size(sc.train_env.num_intruders)); !st.is_ok())
@@ -108,9 +85,8 @@ int cmd_train_gpt2(const ArgV& argv) {
   if (!train_envs) return failure(train_envs.status());
   if (!eval_envs) return failure(eval_envs.status());
   rl::Trainer trainer(policy, *train_envs, cfg, meta.progress.updates);
-  if (restoring) {
-    if (Status st = trainer.restore(resume); !st.is_ok())
-      return failure(st.with_context(resuming ? run->checkpoint : init_path));
+  if (learner->restore) {
+    if (Status st = trainer.restore(*learner->restore); !st.is_ok()) return failure(st.with_context(lo.from));
   }
   auto log = TrainLog::open(*run, meta.progress.episodes);
   if (!log) return failure(log.status());
@@ -125,10 +101,6 @@ int cmd_train_gpt2(const ArgV& argv) {
                 static_cast<unsigned long long>(cfg.seed),
                 resuming ? " (resumed)" : init_path.empty() ? "" : (" (from " + init_path + ")").c_str(),
                 ranks_text().c_str());
-  const auto t0 = std::chrono::steady_clock::now();
-  const double wall0 = meta.progress.wall_s;
-  long long next_eval = cfg.eval_every > 0 ? (meta.progress.episodes / cfg.eval_every + 1) * cfg.eval_every
-                                           : cfg.episodes;
   // The bar counts episodes as they finish inside an update (a GPT-2 small
   // update takes minutes); its ETA covers the rest of this run.
   ProgressBar bar("train gpt2", cfg.end_episodes(), !quiet);
@@ -138,39 +110,33 @@ int cmd_train_gpt2(const ArgV& argv) {
     std::snprintf(line, sizeof line, f, a...);
     if (!quiet) bar.note(line);
   };
-  while (meta.progress.episodes < cfg.end_episodes()) {
-    const auto u0 = std::chrono::steady_clock::now();
-    const rl::UpdateStats st = trainer.update([&](long long done) {
-      bar.update(meta.progress.episodes + done, "(update " + std::to_string(trainer.updates() + 1) + ")");
-      return !InterruptGuard::requested();
-    });
-    if (st.interrupted) {
-      bar.finish();
-      print_interrupted(*run, meta.progress);
-      return kExitInterrupted;
-    }
-    const double update_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - u0).count();
-    if (Status ps = policy.error(); !ps.is_ok()) return failure(ps);
-    if (Status rs = sc.reward_error(); !rs.is_ok()) return failure(rs);
-    meta.progress.episodes += st.episodes;
-    meta.progress.updates = trainer.updates();
-    meta.progress.wall_s = wall0 + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    log->add(meta.progress, st);
-    note("update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, %.2f s\n",
-         meta.progress.updates, meta.progress.episodes, st.samples, st.mean_return, 100.0 * st.success_rate,
-         static_cast<double>(st.entropy), update_s);
-    if (meta.progress.episodes >= next_eval || meta.progress.episodes >= cfg.end_episodes()) {
-      next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
-      auto ev = rl::evaluate(policy, *eval_envs, {cfg.eval_episodes, *validation, false});
-      if (!ev) return failure(ev.status());
-      if (Status s = log->row(meta.progress, *ev); !s.is_ok()) return failure(s);
-      note("%lld episodes: eval success %.1f %%, mean reward %.3f (%lld episodes), most frequent action %.1f %%\n",
-           meta.progress.episodes, 100.0 * ev->success_rate, ev->mean_reward, ev->episodes,
-           100.0 * ev->most_frequent_share());
-    }
-    trainer.save(meta);
-    if (dist::rank() == 0)  // rank 0 alone writes; the other ranks hold the same state
-      if (Status s = rl::save_prompt_checkpoint(run->checkpoint, meta); !s.is_ok()) return failure(s);
+  auto within = [&](long long done) {
+    bar.update(meta.progress.episodes + done, "(update " + std::to_string(trainer.updates() + 1) + ")");
+    return !InterruptGuard::requested();
+  };
+  auto ended = rl::run_training(
+      trainer, policy, *eval_envs, cfg, *validation, meta.progress, within,
+      [&](const rl::UpdateReport& u) -> Result<bool> {
+        SQUAWK_RETURN_IF_ERROR(sc.reward_error());
+        log->add(meta.progress, u.stats);
+        note("update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, %.2f s\n",
+             u.progress.updates, u.progress.episodes, u.stats.samples, u.stats.mean_return,
+             100.0 * u.stats.success_rate, u.stats.entropy, u.update_s);
+        if (u.eval) {
+          SQUAWK_RETURN_IF_ERROR(log->row(meta.progress, *u.eval));
+          note("%lld episodes: eval success %.1f %%, mean reward %.3f (%lld episodes), most frequent action %.1f %%\n",
+               u.progress.episodes, 100.0 * u.eval->success_rate, u.eval->mean_reward, u.eval->episodes,
+               100.0 * u.eval->most_frequent_share());
+        }
+        // rank 0 alone writes; the other ranks hold the same state
+        if (dist::rank() == 0) SQUAWK_RETURN_IF_ERROR(learner->save(run->checkpoint, &trainer));
+        return true;
+      });
+  if (!ended) return failure(ended.status());
+  if (*ended == rl::RunEnd::kInterrupted) {
+    bar.finish();
+    print_interrupted(*run, meta.progress);
+    return kExitInterrupted;
   }
   bar.finish();
   if (!quiet)

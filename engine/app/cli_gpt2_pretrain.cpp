@@ -28,6 +28,7 @@
 #include "gpt2/checkpoint.h"
 #include "gpt2/readout.h"
 #include "nn/adam.h"
+#include "rl/play.h"
 #include "script/scenario.h"
 
 namespace squawk::app {
@@ -43,29 +44,24 @@ struct Corpus {
 };
 
 Result<Corpus> prompt_corpus(rl::PromptPolicy& policy, env::VecEnv& envs, long long episodes, uint64_t seed) {
-  static const double kActions[] = {-1.0, -0.5, 0.0, 0.5, 1.0};
+  static const float kActions[] = {-1.0f, -0.5f, 0.0f, 0.5f, 1.0f};
   Corpus out;
   Rng rng(seed ^ 0x9E7Bull);
-  envs.start(seed, 0, static_cast<uint64_t>(episodes));
-  std::vector<double> actions, rewards;
-  std::vector<uint8_t> dones;
   const auto d = static_cast<size_t>(envs.obs_size());
-  while (!envs.finished()) {
-    const size_t n = envs.waiting().size();
-    for (size_t i = 0; i < n; ++i) {
-      const auto row = envs.observations().subspan(i * d, d);
+  rl::Driver driver;
+  driver.choose = [&](rl::Turn& t) -> Status {
+    for (size_t i = 0; i < t.slots.size(); ++i) {
+      const auto row = t.obs.subspan(i * d, d);
       SQUAWK_ASSIGN_OR_RETURN(std::vector<int> ids, policy.suffix_tokens(row));
       std::vector<int> seq = policy.prefix_tokens();
       seq.insert(seq.end(), ids.begin(), ids.end());
       out.seqs.push_back(std::move(seq));
       out.obs.insert(out.obs.end(), row.begin(), row.end());
     }
-    actions.resize(n);
-    rewards.assign(n, 0.0);
-    dones.assign(n, 0);
-    for (double& a : actions) a = kActions[rng.uniform_int(0, 4)];
-    envs.step(actions, rewards, dones);
-  }
+    for (rl::ActionSample& a : t.actions) a.value = kActions[rng.uniform_int(0, 4)];
+    return Status::ok();
+  };
+  SQUAWK_RETURN_IF_ERROR(rl::play(envs, seed, 0, static_cast<uint64_t>(episodes), driver).status());
   return out;
 }
 

@@ -1,10 +1,6 @@
 // squawk train / squawk eval: the conflict-resolution learner and evaluator.
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <memory>
-
-#include <nlohmann/json.hpp>
 
 #include "app/cli.h"
 #include "app/gpt2_policy_factory.h"
@@ -22,30 +18,17 @@
 #include "env/vec_env.h"
 #include "rl/baseline_policies.h"
 #include "rl/checkpoint.h"
-#include "rl/evaluator.h"
-#include "rl/vpg.h"
+#include "script/learner.h"
+#include "rl/train_run.h"
 #include "script/scenario.h"
 
 namespace squawk::app {
 
 namespace {
 
-// The policy, and with a trainer the learner's state (what --resume needs).
-rl::Checkpoint checkpoint_of(rl::MlpPolicy& p, rl::Trainer* tr, const rl::TrainProgress& progress) {
-  rl::Checkpoint c;
-  c.spec = p.spec();
-  if (tr) {
-    tr->save(c);
-  } else {
-    c.params.assign(p.params().begin(), p.params().end());
-  }
-  c.progress = progress;
-  return c;
-}
-
 // Rank 0 alone writes checkpoints (dist/comm.h); the other ranks hold the same state.
-Status save_on_rank0(const std::string& path, const rl::Checkpoint& c) {
-  return dist::rank() == 0 ? rl::save_checkpoint(path, c) : Status::ok();
+Status save_on_rank0(script::Learner& l, const std::string& path, rl::Trainer* trainer) {
+  return dist::rank() == 0 ? l.save(path, trainer) : Status::ok();
 }
 
 }  // namespace
@@ -76,26 +59,18 @@ int cmd_train(const ArgV& given) {
   if (!run) return failure(run.status());
   const std::string best_path = out + "/best.ckpt";
 
-  std::unique_ptr<rl::MlpPolicy> policy;
-  rl::TrainProgress progress;
-  rl::Checkpoint resume;
+  script::LearnerOptions lo;
+  lo.from = run->resuming ? run->checkpoint : "";
+  lo.resume = run->resuming;
+  lo.seed = cfg.seed;
+  auto learner = script::make_learner(lo, sc, vo);
+  if (!learner) return failure(learner.status());
+  rl::Policy* policy = learner->policy.get();
+  rl::TrainProgress& progress = learner->progress();
   if (run->resuming) {
-    auto c = rl::load_checkpoint(run->checkpoint);
-    if (!c) return failure(c.status());
-    if (Status st = check_resume_seed(*run, c->progress.seed, cfg.seed); !st.is_ok()) return failure(st);
-    if (Status st = check_resume_mirror(run->checkpoint, c->spec.mirror, sc.policy.mirror); !st.is_ok())
+    if (Status st = check_resume_seed(*run, progress.seed, cfg.seed); !st.is_ok()) return failure(st);
+    if (Status st = check_resume_mirror(run->checkpoint, learner->mirror(), sc.policy.mirror); !st.is_ok())
       return failure(st);
-    auto p = rl::policy_from_checkpoint(*c);
-    if (!p) return failure(p.status());
-    policy = std::move(*p);
-    progress = c->progress;
-    resume = std::move(*c);
-  } else {
-    Rng init(cfg.seed);
-    auto p = rl::MlpPolicy::make(sc.policy, init);
-    if (!p) return failure(p.status());
-    policy = std::move(*p);
-    progress.seed = cfg.seed;
   }
   progress.estimator = cfg.estimator;
   progress.scenario = sc.path;
@@ -109,8 +84,8 @@ int cmd_train(const ArgV& given) {
   if (!eval_envs) return failure(eval_envs.status());
   const long long m = cfg.episodes_per_update;
   rl::Trainer trainer(*policy, *train_envs, cfg, progress.episodes / m);
-  if (run->resuming) {
-    if (Status st = trainer.restore(resume); !st.is_ok()) return failure(st.with_context(run->checkpoint));
+  if (learner->restore) {
+    if (Status st = trainer.restore(*learner->restore); !st.is_ok()) return failure(st.with_context(run->checkpoint));
   }
   auto log = TrainLog::open(*run, progress.episodes);
   if (!log) return failure(log.status());
@@ -123,54 +98,46 @@ int cmd_train(const ArgV& given) {
                 static_cast<unsigned long long>(cfg.seed), run->resuming ? " (resumed)" : "",
                 ranks_text().c_str());
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
-  const double wall0 = progress.wall_s;
   double best_success = -1.0;
-  long long next_eval = cfg.eval_every > 0 ? (progress.episodes / cfg.eval_every + 1) * cfg.eval_every
-                                           : cfg.episodes;
   InterruptGuard interrupt;
-  while (progress.episodes < cfg.end_episodes()) {
-    const rl::UpdateStats st = trainer.update([](long long) { return !InterruptGuard::requested(); });
-    if (st.interrupted) {
-      bar.finish();
-      if (Status s = save_on_rank0(run->checkpoint, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
-        return failure(s);
-      print_interrupted(*run, progress);
-      return kExitInterrupted;
-    }
-    progress.episodes += st.episodes;
-    progress.updates = trainer.updates();
-    progress.wall_s = wall0 + bar.elapsed();
-    log->add(progress, st);
-    if (Status rs = sc.reward_error(); !rs.is_ok()) {
-      bar.finish();
-      return failure(rs);
-    }
-    char extra[96];
-    std::snprintf(extra, sizeof extra, "return %.3f", st.mean_return);
-    bar.update(progress.episodes, extra);
-    if (progress.episodes < next_eval && progress.episodes < cfg.end_episodes()) continue;
-    next_eval += cfg.eval_every > 0 ? cfg.eval_every : cfg.episodes;
-    auto ev = rl::evaluate(*policy, *eval_envs, {cfg.eval_episodes, *validation, false});
-    if (!ev) return failure(ev.status());
-    if (Status s = log->row(progress, *ev); !s.is_ok()) return failure(s);
-    if (Status s = save_on_rank0(run->checkpoint, checkpoint_of(*policy, &trainer, progress)); !s.is_ok())
+  auto ended = rl::run_training(
+      trainer, *policy, *eval_envs, cfg, *validation, progress, [](long long) { return !InterruptGuard::requested(); },
+      [&](const rl::UpdateReport& u) -> Result<bool> {
+        log->add(progress, u.stats);
+        SQUAWK_RETURN_IF_ERROR(sc.reward_error());
+        char extra[96];
+        std::snprintf(extra, sizeof extra, "return %.3f", u.stats.mean_return);
+        bar.update(u.progress.episodes, extra);
+        if (!u.eval) return true;
+        SQUAWK_RETURN_IF_ERROR(log->row(progress, *u.eval));
+        SQUAWK_RETURN_IF_ERROR(save_on_rank0(*learner, run->checkpoint, &trainer));
+        if (u.eval->success_rate > best_success) {
+          best_success = u.eval->success_rate;
+          SQUAWK_RETURN_IF_ERROR(save_on_rank0(*learner, best_path, nullptr));
+        }
+        if (!quiet) {
+          char line[160];
+          std::snprintf(line, sizeof line, "%lld episodes, %.0f s: eval success %.1f %%, mean reward %.3f\n",
+                        u.progress.episodes, u.progress.wall_s, 100.0 * u.eval->success_rate, u.eval->mean_reward);
+          bar.note(line);
+        }
+        return true;
+      });
+  if (!ended) {
+    bar.finish();
+    return failure(ended.status());
+  }
+  if (*ended == rl::RunEnd::kInterrupted) {
+    bar.finish();
+    if (Status s = save_on_rank0(*learner, run->checkpoint, &trainer); !s.is_ok())
       return failure(s);
-    if (ev->success_rate > best_success) {
-      best_success = ev->success_rate;
-      if (Status s = save_on_rank0(best_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
-        return failure(s);
-    }
-    if (!quiet) {
-      char line[160];
-      std::snprintf(line, sizeof line, "%lld episodes, %.0f s: eval success %.1f %%, mean reward %.3f\n",
-                    progress.episodes, progress.wall_s, 100.0 * ev->success_rate, ev->mean_reward);
-      bar.note(line);
-    }
+    print_interrupted(*run, progress);
+    return kExitInterrupted;
   }
   bar.finish();
   // The policy alone (no optimiser state): what `squawk eval --checkpoint` needs.
   const std::string policy_path = out + "/policy.ckpt";
-  if (Status s = save_on_rank0(policy_path, checkpoint_of(*policy, nullptr, progress)); !s.is_ok())
+  if (Status s = save_on_rank0(*learner, policy_path, nullptr); !s.is_ok())
     return failure(s);
   if (!quiet)
     std::printf("done: %lld episodes in %s; checkpoint %s, best %s, policy %s, log %s\n", progress.episodes,

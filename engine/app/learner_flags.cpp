@@ -45,18 +45,13 @@ Status apply_learner_flags(const Args& args, long long episodes_default, double 
                            entropy.status(), entropy_final.status(), epochs.status(), minibatches.status(),
                            clip.status(), value_iters.status(), branch.status(), stop_at.status()})
     SQUAWK_RETURN_IF_ERROR(st);
-  if (args.has("--lr-final")) {
-    cfg.lr_final = *lr_final;
-  } else if (*lr != cfg.lr && cfg.lr > 0.0) {
-    cfg.lr_final = cfg.lr_final / cfg.lr * *lr;
-  }
+  cfg.set_lr(*lr, args.has("--lr-final") ? std::optional<double>(*lr_final) : std::nullopt);
   if (args.has("--entropy-final")) cfg.entropy_final = *entropy_final;  // else the scenario's (none: constant)
   cfg.episodes = *episodes;
   cfg.stop_at = *stop_at;
   cfg.num_envs = static_cast<int>(*envs_n);
   cfg.eval_every = *eval_every;
   cfg.eval_episodes = *eval_eps;
-  cfg.lr = *lr;
   cfg.seed = static_cast<uint64_t>(*seed);
   cfg.episodes_per_update = static_cast<int>(*per_update);
   cfg.gamma = *gamma;

@@ -7,6 +7,7 @@
 
 #include "dist/comm.h"
 #include "rl/episode_streams.h"
+#include "rl/play.h"
 
 namespace squawk::rl {
 
@@ -81,28 +82,15 @@ Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions
   const long long steps0 = envs.env_steps();
   EpisodeStreams streams(opts.seed ^ kEvalPolicySalt);
   const dist::Share part = dist::share(static_cast<uint64_t>(opts.episodes));
-  envs.completed().clear();
-  envs.start(opts.seed, part.first, part.count);
-  std::vector<ActionSample> acts;
-  std::vector<double> actions, rewards;
-  std::vector<uint8_t> dones;
   EvalResult res;
-  while (!envs.finished()) {
-    const auto n = envs.waiting().size();
-    acts.resize(n);
-    actions.resize(n);
-    rewards.resize(n);
-    dones.resize(n);
-    policy.act(envs.observations(), static_cast<int>(n), envs.waiting(), streams.rows(envs), opts.greedy, acts);
-    streams.keep(envs);
-    for (size_t r = 0; r < n; ++r) {
-      actions[r] = acts[r].value;
-      ++res.action_counts[static_cast<size_t>(action_bin(acts[r].value))];
-    }
-    envs.step(actions, rewards, dones);
-    if (progress)
-      progress(std::min(opts.episodes, static_cast<long long>(envs.completed().size()) * dist::size()), opts.episodes);
-  }
+  Driver driver{policy_choice(policy, envs, streams, opts.greedy), [&](const Turn& t) {
+                  for (const ActionSample& a : t.actions) ++res.action_counts[static_cast<size_t>(action_bin(a.value))];
+                  if (progress)
+                    progress(std::min(opts.episodes, static_cast<long long>(envs.completed().size()) * dist::size()),
+                             opts.episodes);
+                  return true;
+                }};
+  SQUAWK_RETURN_IF_ERROR(play(envs, opts.seed, part.first, part.count, driver).status());
   std::vector<env::EpisodeStats> eps = gather(envs.completed(), opts.episodes, res.action_counts);
   res.episodes = static_cast<long long>(eps.size());
   double sum = 0.0;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "nn/adam.h"
+#include "rl/play.h"
 
 namespace squawk::rl {
 
@@ -17,37 +18,28 @@ struct Labelled {
 
 // Flies `count` episodes from `first` of `seed` with `pilot` (greedy or
 // sampled), appending every decision with the teacher's greedy class; returns
-// the flights' success rate.
+// the flights' success rate (over every episode flown, those that ended
+// before a decision included).
 Result<double> fly(env::VecEnv& envs, Policy& pilot, bool greedy, Policy& teacher, uint64_t seed, uint64_t first,
                    uint64_t count, Rng& rng, Labelled& out) {
-  envs.start(seed, first, count);
-  envs.completed().clear();
-  std::vector<ActionSample> taught, flown;
-  std::vector<double> actions, rewards;
-  std::vector<uint8_t> dones;
-  while (!envs.finished()) {
-    const int n = static_cast<int>(envs.waiting().size());
-    const std::span<const float> obs = envs.observations();
+  std::vector<ActionSample> taught;
+  Driver driver;
+  driver.choose = [&](Turn& t) {
+    const int n = static_cast<int>(t.slots.size());
     taught.assign(static_cast<size_t>(n), {});
-    teacher.act(obs, n, envs.waiting(), {&rng, 1}, true, taught);
+    teacher.act(t.obs, n, t.slots, {&rng, 1}, true, taught);
     if (&pilot == &teacher) {
-      flown = taught;
+      std::copy(taught.begin(), taught.end(), t.actions.begin());
     } else {
-      flown.assign(static_cast<size_t>(n), {});
-      pilot.act(obs, n, envs.waiting(), {&rng, 1}, greedy, flown);
+      pilot.act(t.obs, n, t.slots, {&rng, 1}, greedy, t.actions);
     }
     SQUAWK_RETURN_IF_ERROR(teacher.error());
     SQUAWK_RETURN_IF_ERROR(pilot.error());
-    out.obs.insert(out.obs.end(), obs.begin(), obs.end());
-    actions.resize(static_cast<size_t>(n));
-    for (int r = 0; r < n; ++r) {
-      out.label.push_back(taught[static_cast<size_t>(r)].index);
-      actions[static_cast<size_t>(r)] = flown[static_cast<size_t>(r)].value;
-    }
-    rewards.assign(static_cast<size_t>(n), 0.0);
-    dones.assign(static_cast<size_t>(n), 0);
-    envs.step(actions, rewards, dones);
-  }
+    out.obs.insert(out.obs.end(), t.obs.begin(), t.obs.end());
+    for (const ActionSample& a : taught) out.label.push_back(a.index);
+    return Status::ok();
+  };
+  SQUAWK_RETURN_IF_ERROR(play(envs, seed, first, count, driver).status());
   const auto& done = envs.completed();
   const auto ok = std::count_if(done.begin(), done.end(), [](const env::EpisodeStats& e) { return e.success; });
   return done.empty() ? 0.0 : static_cast<double>(ok) / static_cast<double>(done.size());

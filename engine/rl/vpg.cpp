@@ -6,6 +6,7 @@
 #include "dist/comm.h"
 #include "rl/branch_returns.h"
 #include "rl/episode_streams.h"
+#include "rl/play.h"
 
 namespace squawk::rl {
 
@@ -47,6 +48,15 @@ Status TrainConfig::validate() const {
   if (eval_every < 0 || eval_episodes < 1)
     return Status::invalid("train eval_every must be >= 0 and eval_episodes >= 1");
   return Status::ok();
+}
+
+void TrainConfig::set_lr(double new_lr, std::optional<double> final_lr) {
+  if (final_lr) {
+    lr_final = *final_lr;
+  } else if (new_lr != lr && lr > 0.0) {
+    lr_final = lr_final / lr * new_lr;
+  }
+  lr = new_lr;
 }
 
 Status check_learner(const Policy& policy, const TrainConfig& config) {
@@ -302,43 +312,34 @@ bool Trainer::collect(const UpdateProgress& progress) {
   for (Episode& e : slot_episode_) e = Episode{};
   EpisodeStreams policy_streams(cfg_.seed ^ kTrainPolicySalt), branch_streams(cfg_.seed ^ kBranchSalt);
   const bool vine = cfg_.estimator == "vine";
-  envs_.completed().clear();
-  envs_.start(cfg_.seed, first_, part.count);
-  std::vector<ActionSample> acts;
-  std::vector<double> actions, rewards;
-  std::vector<uint8_t> dones;
-  while (!envs_.finished()) {
-    const std::vector<int> slots = envs_.waiting();
-    const auto n = slots.size();
-    acts.resize(n);
-    actions.resize(n);
-    rewards.resize(n);
-    dones.resize(n);
-    const std::span<const float> o = envs_.observations();
-    policy_.act(o, static_cast<int>(n), slots, policy_streams.rows(envs_), false, acts);
-    policy_streams.keep(envs_);
+  const auto act = policy_choice(policy_, envs_, policy_streams, false);
+  Driver driver;
+  driver.choose = [&](Turn& t) {
+    SQUAWK_RETURN_IF_ERROR(act(t));
     const std::span<Rng> branch_rngs = vine ? branch_streams.rows(envs_) : std::span<Rng>();
-    for (size_t r = 0; r < n; ++r) {
-      const auto s = static_cast<size_t>(slots[r]);
-      actions[r] = acts[r].value;
-      slot_index_[s] = envs_.env(slots[r]).stats().index;
+    for (size_t r = 0; r < t.slots.size(); ++r) {
+      const auto s = static_cast<size_t>(t.slots[r]);
+      slot_index_[s] = envs_.env(t.slots[r]).stats().index;
       auto& so = slot_episode_[s].obs;
-      so.insert(so.end(), o.begin() + static_cast<long>(r * obs), o.begin() + static_cast<long>((r + 1) * obs));
-      if (vine && branch_rngs[r].uniform() < cfg_.branch_fraction) slot_episode_[s].branches.push_back(envs_.env(slots[r]));
+      so.insert(so.end(), t.obs.begin() + static_cast<long>(r * obs), t.obs.begin() + static_cast<long>((r + 1) * obs));
+      if (vine && branch_rngs[r].uniform() < cfg_.branch_fraction) slot_episode_[s].branches.push_back(envs_.env(t.slots[r]));
     }
     if (vine) branch_streams.keep(envs_);
-    envs_.step(actions, rewards, dones);
-    for (size_t r = 0; r < n; ++r) {
-      const auto s = static_cast<size_t>(slots[r]);
-      slot_episode_[s].samples.push_back({acts[r], static_cast<float>(rewards[r])});
-      if (!dones[r]) continue;
+    return Status::ok();
+  };
+  driver.after = [&](const Turn& t) {
+    for (size_t r = 0; r < t.slots.size(); ++r) {
+      const auto s = static_cast<size_t>(t.slots[r]);
+      slot_episode_[s].samples.push_back({t.actions[r], static_cast<float>(t.rewards[r])});
+      if (!t.dones[r]) continue;
       episodes_[slot_index_[s] - first_] = std::move(slot_episode_[s]);
       slot_episode_[s] = Episode{};
     }
     const auto done = static_cast<long long>(envs_.completed().size()) * dist::size();
-    if (progress && !progress(std::min(done, static_cast<long long>(m)))) return false;
-  }
-  return true;
+    return !progress || progress(std::min(done, static_cast<long long>(m)));
+  };
+  // The choice above never fails (policy errors stay in Policy::error()).
+  return play(envs_, cfg_.seed, first_, part.count, driver).value_or(false);
 }
 
 UpdateStats Trainer::update(const UpdateProgress& progress) {

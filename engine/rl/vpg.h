@@ -89,6 +89,9 @@ struct TrainConfig {
 
   // Where this run ends: stop_at, or episodes when stop_at is 0.
   long long end_episodes() const { return stop_at > 0 ? stop_at : episodes; }
+  // Sets the step size `new_lr` and the final one: `final_lr` when given, else
+  // lr_final scaled by new_lr / lr, so the schedule keeps its shape.
+  void set_lr(double new_lr, std::optional<double> final_lr);
 
   Status validate() const;
 };

@@ -43,7 +43,9 @@ struct EnvBox {
   std::unique_ptr<env::HorizontalCrEnv> env;
 };
 
-Scenario load_or_throw(lua_State* L, const std::string& path) {
+}  // namespace
+
+Scenario scenario_or_throw(lua_State* L, const std::string& path) {
   VmOptions vo = Vm::of(L).options();
   vo.out_dir.clear();
   auto sc = load_scenario(path, vo);
@@ -51,12 +53,14 @@ Scenario load_or_throw(lua_State* L, const std::string& path) {
   return std::move(*sc);
 }
 
+namespace {
+
 int l_new(lua_State* L) {
   const std::string path = readable(L, arg_string(L, 1, "scenario"), "scenario");
   const std::string which = opt_string(L, 2, "settings", "eval");
   if (which != "train" && which != "eval")
     throw ArgError("squawk.env.new: settings '" + which + "': expected \"train\" or \"eval\"");
-  Scenario sc = load_or_throw(L, path);
+  Scenario sc = scenario_or_throw(L, path);
   auto e = env::HorizontalCrEnv::make(which == "train" ? sc.train_env : sc.eval_env);
   check_status(e.status());
   auto envp = std::make_unique<env::HorizontalCrEnv>(std::move(*e));
@@ -150,12 +154,14 @@ int l_mvp_action(lua_State* L) {
 constexpr long long kMaxEpisodes = 1'000'000;  // per evaluate call
 constexpr long long kEpisodeCost = 10'000;     // [instructions] charged per episode
 
-int l_evaluate(lua_State* L) {
+}  // namespace
+
+int env_evaluate(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
   const std::string path = readable(L, field_string(L, 1, "scenario", ""), "scenario");
   if (path.empty()) throw ArgError("squawk.env.evaluate: field 'scenario' (a scenario file) is required");
   const std::string kind = field_string(L, 1, "policy", "mlp");
-  Scenario sc = load_or_throw(L, path);
+  Scenario sc = scenario_or_throw(L, path);
   const long long episodes = field_count(L, 1, "episodes", sc.eval_episodes, 1, kMaxEpisodes);
   const auto seed = static_cast<uint64_t>(
       field_count(L, 1, "seed", static_cast<long long>(sc.eval_seed), 0, 9007199254740992LL));
@@ -198,8 +204,6 @@ int l_evaluate(lua_State* L) {
   return 1;
 }
 
-}  // namespace
-
 void bind_env(lua_State* L) {
   static const luaL_Reg methods[] = {{"reset", guarded<l_reset>},
                                      {"step", guarded<l_step>},
@@ -213,7 +217,7 @@ void bind_env(lua_State* L) {
   push_squawk_subtable(L, "env");
   lua_pushcfunction(L, guarded<l_new>);
   lua_setfield(L, -2, "new");
-  lua_pushcfunction(L, guarded<l_evaluate>);
+  lua_pushcfunction(L, guarded<env_evaluate>);
   lua_setfield(L, -2, "evaluate");
   lua_pop(L, 1);
 }

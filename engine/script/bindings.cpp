@@ -12,6 +12,7 @@ void bind_all(lua_State* L) {
   bind_sim(L);
   bind_geo(L);
   bind_gym(L);
+  bind_rl(L);
 }
 
 }  // namespace squawk::script

@@ -11,6 +11,7 @@
 #include "rl/branch_returns.h"
 #include "rl/checkpoint.h"
 #include "rl/mlp_policy.h"
+#include "rl/play.h"
 #include "script/prompt_renderer.h"
 
 namespace squawk::script {
@@ -28,23 +29,18 @@ rl::PromptRenderFn render_fn(std::shared_ptr<PromptRenderer> r) {
 // Prompts for the first kTinyVocabEpisodes episodes of `env` under the zero action.
 Result<std::string> vocabulary_text(PromptRenderer& r, const env::HorizontalCrConfig& env) {
   SQUAWK_ASSIGN_OR_RETURN(env::VecEnv envs, env::VecEnv::make(env, 16));
-  envs.start(0, 0, kTinyVocabEpisodes);
   std::string text;
-  std::vector<double> actions, rewards;
-  std::vector<uint8_t> dones;
-  while (!envs.finished()) {
-    const size_t n = envs.waiting().size();
-    const auto d = static_cast<size_t>(envs.obs_size());
-    for (size_t i = 0; i < n; ++i) {
-      SQUAWK_ASSIGN_OR_RETURN(env::Observation o, env::unflatten(envs.observations().subspan(i * d, d)));
+  const auto d = static_cast<size_t>(envs.obs_size());
+  rl::Driver driver;
+  driver.choose = [&](rl::Turn& t) -> Status {  // the actions stay 0
+    for (size_t i = 0; i < t.slots.size(); ++i) {
+      SQUAWK_ASSIGN_OR_RETURN(env::Observation o, env::unflatten(t.obs.subspan(i * d, d)));
       SQUAWK_ASSIGN_OR_RETURN(std::string p, r.render(o));
       text += p;
     }
-    actions.assign(n, 0.0);
-    rewards.assign(n, 0.0);
-    dones.assign(n, 0);
-    envs.step(actions, rewards, dones);
-  }
+    return Status::ok();
+  };
+  SQUAWK_RETURN_IF_ERROR(rl::play(envs, 0, 0, kTinyVocabEpisodes, driver).status());
   return text;
 }
 

@@ -54,6 +54,10 @@ inline constexpr const char* kShippedGpt2Checkpoint = "models/horizontal_cr_gpt2
 // The GPT-2 policy made mirror-symmetric, fine-tuned with --mirror from the same pretrained model.
 inline constexpr const char* kShippedGpt2MirrorCheckpoint = "models/horizontal_cr_gpt2_tiny_mirror.ckpt";
 inline constexpr const char* kDefaultPromptFile = "prompts/observation.lua";
+// GPT-2 training defaults where the scenario's train table is the MLP's:
+// the run's episodes, and the Adam step size on a Hugging Face folder.
+inline constexpr long long kGpt2TrainEpisodes = 20000;
+inline constexpr double kGpt2FolderLr = 1e-5;
 
 struct Gpt2PolicyOptions {
   std::string model = "tiny";  // "tiny" | Hugging Face folder
