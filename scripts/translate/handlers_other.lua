@@ -262,6 +262,17 @@ return function(H, f, compass)
     return nil
   end
 
+  -- The place `ids` (the idents `phrase` names) stand for: the one ident, or with 2..most of
+  -- them the first, asking which `kind` ("navaid", "airport") was meant; nil for none or too many.
+  function m:one_named(ids, kind, phrase, most)
+    if #ids == 1 then return ids[1] end
+    if #ids > 1 and #ids <= most then
+      self:need(string.format("Which %s is '%s': %s?", kind, phrase, table.concat(ids, " or ")))
+      return ids[1]
+    end
+    return nil
+  end
+
   -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
   -- airport has that name: one or two words in [b, e) that name navaids within
   -- lexicon.navaid_range_nm of the aircraft `a`; the question names them when several idents fit.
@@ -280,11 +291,8 @@ return function(H, f, compass)
           local phrase = p[1]
           -- ("Nantucket airport" is the airport, not the navaid of that name)
           local ids = self:word(p[2], "@airport_nouns") and {} or named(phrase, a.lat, a.lon, L.navaid_range_nm)
-          if #ids == 1 then return ids[1] end
-          if #ids > 1 then
-            self:need(string.format("Which navaid is '%s': %s?", phrase, table.concat(ids, " or ")))
-            return ids[1]
-          end
+          local id = self:one_named(ids, "navaid", phrase, math.huge)
+          if id then return id end
         end
       end
     end
@@ -324,11 +332,8 @@ return function(H, f, compass)
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
           local ids = ((proper(i - 1) and not city) or proper(after)) and {} or named(phrase)
-          if #ids == 1 then return ids[1] end
-          if #ids > 1 and #ids <= 4 then
-            self:need(string.format("Which airport is '%s': %s?", phrase, table.concat(ids, " or ")))
-            return ids[1]
-          end
+          local id = self:one_named(ids, "airport", phrase, 4)
+          if id then return id end
         end
       end
     end
