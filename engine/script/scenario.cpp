@@ -222,11 +222,18 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
 }
 
 void read_scenario(lua_State* L, int top, Scenario& s) {
-  check_keys(L, top, "scenario", {"rules", "env", "eval", "reward", "policy", "train", "name", "description"});
+  const bool env_file = push_table_field(L, top, "declaration");
+  if (!env_file)
+    check_keys(L, top, "scenario", {"rules", "env", "eval", "reward", "policy", "train", "name", "description"});
   env::HorizontalCrConfig& c = s.train_env;
   s.reward_status = std::make_shared<Status>();
-  s.lua_reward = read_environment_fields(L, top, c, s.vm, s.reward_status);
+  s.lua_reward = read_environment_fields(L, env_file ? lua_gettop(L) : top, c, s.vm, s.reward_status);
   if (c.rules == env::Rules::kGym) s.policy.head = "gaussian";
+  if (env_file) {
+    lua_pop(L, 1);
+    s.eval_env = c;
+    return;
+  }
   if (push_table_field(L, top, "policy")) {
     read_policy(L, -1, c, s.policy);
     lua_pop(L, 1);

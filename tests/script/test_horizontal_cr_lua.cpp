@@ -102,3 +102,31 @@ TEST_CASE("envs/horizontal_cr_gym.lua flies HorizontalCREnv-v0's episodes as the
   CHECK(t.episodes_without_decision == 0);
   CHECK(t.steps > 40 * 20);
 }
+
+TEST_CASE("an environment file loads as a scenario of its declaration (squawk train/eval envs/horizontal_cr.lua)") {
+  for (const auto& [file, scenario] : {std::pair{"envs/horizontal_cr.lua", "scenarios/horizontal_cr.lua"},
+                                       std::pair{"envs/horizontal_cr_gym.lua", "scenarios/horizontal_cr_gym.lua"}}) {
+    INFO(file);
+    auto declared = script::load_scenario(repo(file), {});
+    REQUIRE_MESSAGE(declared.is_ok(), declared.status().message());
+    auto sc = script::load_scenario(repo(scenario), {});
+    REQUIRE(sc.is_ok());
+    CHECK(declared->policy.head == sc->policy.head);
+    auto a = env::HorizontalCrEnv::make(declared->eval_env);
+    auto b = env::HorizontalCrEnv::make(sc->eval_env);
+    REQUIRE((a.is_ok() && b.is_ok()));
+    for (uint64_t seed = 1; seed <= 30; ++seed) {
+      Rng ra(seed), rb(seed);
+      bool ask = a->reset(ra);
+      REQUIRE(ask == b->reset(rb));
+      for (int k = 0; ask; ++k) {
+        const double act = 0.5 * static_cast<double>(k % 3 - 1);
+        REQUIRE(a->step(act) == b->step(act));
+        ask = !a->done();
+      }
+      CHECK(b->done());
+      CHECK(a->stats().total_reward == b->stats().total_reward);
+      CHECK(a->stats().steps == b->stats().steps);
+    }
+  }
+}
