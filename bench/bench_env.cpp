@@ -13,10 +13,17 @@
 // every simulator step), SectorCREnv-v0 (envs/sector_cr.lua) and MergeEnv-v0
 // (envs/merge.lua), each against BlueSky-Gym's measured figure
 // (docs/gym_envs.md, bench/gym_ref/compare.py).
+// HorizontalCR's Lua form (envs/horizontal_cr.lua, envs/horizontal_cr_gym.lua:
+// the declaration compiled into the same C++ kernel) runs beside the C++ form
+// on the same episodes and actions, timed in this thread's CPU seconds (the
+// machine is shared), with the ratio; the reward sums must agree exactly.
 // Prints figures only; no timing is asserted anywhere.
+#include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -28,6 +35,7 @@
 #include "core/paths.h"
 #include "env/horizontal_cr.h"
 #include "script/lua_env.h"
+#include "script/scenario.h"
 #include "script/vm.h"
 
 using namespace squawk;
@@ -191,6 +199,108 @@ Run two_threads(env::Rules rules, double seconds) {
   return {a.steps + b.steps, a.episodes + b.episodes, std::max(a.seconds, b.seconds), a.checksum + b.checksum};
 }
 
+// CPU seconds of the calling thread.
+double cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Episodes 0..episodes-1 of the C++ environment `scenario` (its evaluation
+// settings), seed k, actions uniform in [-1, 1] from Rng(k + 7); the reward
+// sum adds each step() the way the Lua form returns it (the automatic steps
+// before the first decision with the first step's reward).
+Run drive_cpp_form(const env::HorizontalCrConfig& c, long long episodes) {
+  auto e = env::HorizontalCrEnv::make(c);
+  Run r;
+  const double t0 = cpu_seconds();
+  for (long long k = 0; k < episodes; ++k) {
+    Rng ep(static_cast<uint64_t>(k)), act(static_cast<uint64_t>(k) + 7);
+    bool ask = e->reset(ep);
+    double pending = e->stats().total_reward;
+    if (!ask) r.checksum += pending;
+    while (ask) {
+      double reward = e->step(act.uniform(-1.0, 1.0));
+      if (pending != 0.0) reward = pending + reward;
+      pending = 0.0;
+      r.checksum += reward;
+      ask = !e->done();
+    }
+    r.steps += e->stats().steps;
+    ++r.episodes;
+  }
+  r.seconds = cpu_seconds() - t0;
+  return r;
+}
+
+// The same episodes and actions through the Lua form and the LuaEnv driver.
+Run drive_lua_form(const std::string& file, long long episodes) {
+  auto e = script::LuaEnv::load(paths::resource(file), {});
+  Run r;
+  if (!e) {
+    std::fprintf(stderr, "bench_env: %s\n", e.status().message().c_str());
+    return r;
+  }
+  std::vector<double> action(1);
+  const double t0 = cpu_seconds();
+  for (long long k = 0; k < episodes; ++k) {
+    Rng act(static_cast<uint64_t>(k) + 7);
+    if (!(*e)->reset(static_cast<uint64_t>(k)).is_ok()) return r;
+    while (true) {
+      action[0] = act.uniform(-1.0, 1.0);
+      auto s = (*e)->step(action);
+      if (!s) return r;
+      r.checksum += s->reward;
+      if (s->terminated || s->truncated) break;
+    }
+    ++r.episodes;
+  }
+  r.seconds = cpu_seconds() - t0;
+  return r;
+}
+
+// C++ form (the scenario file) and Lua form of one rule set, three
+// alternating rounds of the episodes the C++ form runs in `seconds`; the
+// fastest round of each counts. The Lua form runs two ways: stepped through
+// the LuaEnv driver (one Lua call per decision, as `squawk env run` does), and
+// its declaration compiled into the kernel (as `squawk train`/`eval` load it).
+void form_rows(const char* name, const char* scenario, const char* lua_file, double seconds) {
+  auto sc = script::load_scenario(paths::resource(scenario), {});
+  auto declared = script::load_scenario(paths::resource(lua_file), {});
+  for (const auto* loaded : {&sc, &declared})
+    if (!*loaded) {
+      std::fprintf(stderr, "bench_env: %s\n", loaded->status().message().c_str());
+      return;
+    }
+  long long episodes = 16;
+  while (drive_cpp_form(sc->eval_env, episodes).seconds < seconds / 4) episodes *= 2;
+  Run cpp, lua, compiled;
+  cpp.seconds = lua.seconds = compiled.seconds = 1e300;
+  for (int round = 0; round < 3; ++round) {
+    const Run c = drive_cpp_form(sc->eval_env, episodes), l = drive_lua_form(lua_file, episodes),
+              d = drive_cpp_form(declared->eval_env, episodes);
+    cpp = c.seconds < cpp.seconds ? c : cpp;
+    lua = l.seconds < lua.seconds ? l : lua;
+    compiled = d.seconds < compiled.seconds ? d : compiled;
+  }
+  lua.steps = cpp.steps;  // the same episodes (the reward sums below agree)
+  const auto row = [&](const std::string& form, const Run& r) {
+    std::printf("  %-30s %-44s %10.0f env steps/s (CPU) %7.0f episodes/s  reward sum %.17g\n", name, form.c_str(),
+                static_cast<double>(r.steps) / r.seconds, static_cast<double>(r.episodes) / r.seconds, r.checksum);
+  };
+  const auto ratio = [&](const std::string& form, const Run& r) {
+    std::printf("  %-30s %-44s %.2f x the C++ form's CPU time (%+.1f %% steps/s), rewards %s\n", name, form.c_str(),
+                r.seconds / cpp.seconds, 100.0 * (cpp.seconds / r.seconds - 1.0),
+                r.checksum == cpp.checksum && r.episodes == cpp.episodes ? "identical" : "DIFFER");
+  };
+  row(std::string("C++ form, ") + scenario, cpp);
+  row(std::string(lua_file) + ", stepped", lua);
+  row(std::string(lua_file) + ", compiled", compiled);
+  ratio(std::string(lua_file) + ", stepped", lua);
+  ratio(std::string(lua_file) + ", compiled", compiled);
+  std::printf("  %-30s %lld episodes per round, fastest of 3 rounds\n", name, episodes);
+}
+
 // The multi-agent sector (envs/sector_multi.lua, PettingZoo's parallel shape,
 // which the single-agent LuaEnv refuses) with `agents` agents, each given a
 // uniform random action every step, episodes until `seconds` of wall time.
@@ -253,7 +363,13 @@ void traffic_rows(double seconds) {
 
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::atof(argv[1]) : 2.0;
+  const bool forms_only = argc > 2 && std::string(argv[2]) == "forms";  // bench_env S forms: those rows alone
   std::printf("bench_env: %.1f s per row; one env step = 10 sub-steps of 5 s, 6 aircraft\n", seconds);
+  std::printf("HorizontalCR, C++ form and Lua form (same episodes and random actions, 1 thread, CPU time):\n");
+  form_rows("paper rules (Table 3 eval)", "scenarios/horizontal_cr.lua", "envs/horizontal_cr.lua", seconds);
+  form_rows("gym rules (HorizontalCREnv-v0)", "scenarios/horizontal_cr_gym.lua", "envs/horizontal_cr_gym.lua",
+            seconds);
+  if (forms_only) return 0;
   std::printf("gym rules (HorizontalCREnv-v0, ground cap 89 m/s):\n");
   print("random actions, 1 thread", drive(env::Rules::kGym, true, seconds, 1), kBlueSkyGymRandom);
   print("zero action, 1 thread", drive(env::Rules::kGym, false, seconds, 1), kBlueSkyGymZero);

@@ -36,6 +36,8 @@ expect "env run merge"   0 '"env": "MergeEnv-v0", "policy": "random", "episodes"
 expect "env multi"       1 "field 'parallel' = true: a multi-agent environment" -- "$sq" env run envs/sector_multi.lua
 expect "env no file"     1 "no environment file 'envs/nope.lua'" -- "$sq" env run envs/nope.lua
 expect "env plan waypoint" 0 "observation 20 numbers, action 1 in \[-1, 1\], at most 300 steps" -- "$sq" env run envs/plan_waypoint.lua --policy random --episodes 2
+expect "env run horizontal" 0 "terminated +1000 of 1000; truncated 0" -- "$sq" env run envs/horizontal_cr.lua --policy random --episodes 1000
+expect "eval env file"   0 "scenario +envs/horizontal_cr_gym.lua \(gym rules" -- "$sq" eval envs/horizontal_cr_gym.lua --policy zero --episodes 20
 expect "env static obstacle" 0 "observation 43 numbers, action 2 in \[-1, 1\], at most 100 steps" -- "$sq" env run envs/static_obstacle.lua --policy random --episodes 5
 tmp=$(mktemp -d)
 expect "demo"            0 "translator HDG KL001" -- "$sq" demo --record "$tmp/ep.jsonl" --svg "$tmp/ep.svg"

@@ -1,12 +1,22 @@
 // squawk.env: the conflict-resolution environment and evaluator from Lua.
 //
 //   local env = squawk.env.new("scenarios/horizontal_cr.lua" [, "train"|"eval"])
-//   env:reset(seed) -> needs_decision      (episode drawn from Rng(seed))
-//   env:step(action) -> reward, done       (action in [-1, 1], units of 45 deg)
+//   local env = squawk.env.new{rules =, env = {..}, reward = {..} | function}
+//                                          (a declaration: those fields of a
+//                                           scenario table, script/scenario.h;
+//                                           a reward function runs in this Vm)
+//   env:reset(seed) -> needs_decision, reward, truncated
+//                                          (episode drawn from Rng(seed); the
+//                                           reward and truncation of the
+//                                           automatic steps before the first
+//                                           decision, paper rules)
+//   env:step(action) -> reward, done, truncated
+//                                          (action in [-1, 1], units of 45 deg)
 //   env:observation() -> {intruder_distance = {..}, ..., sin_drift = {x}}
 //                                          (every field an array: the shape
 //                                           prompts/observation.lua renders)
-//   env:flat() -> {28 numbers}             (the MLP's input order)
+//   env:flat([t]) -> {28 numbers}          (the MLP's input order, as the float it
+//                                           is given; written into t when given)
 //   env:stats() -> {total_reward, decisions, steps, intrusions, reached, truncated, success}
 //   env:state() -> {t, own = {lat, lon, hdg, tas}, intruders = {{..}, ..}, waypoint = {lat, lon}}
 //   env:mvp_action() -> number
@@ -41,6 +51,7 @@ constexpr const char* kEnvMt = "squawk.Env";
 struct EnvBox {
   Scenario scenario;
   std::unique_ptr<env::HorizontalCrEnv> env;
+  std::vector<float> flat;  // observation_size floats, reused by flat()
 };
 
 }  // namespace
@@ -55,16 +66,37 @@ Scenario scenario_or_throw(lua_State* L, const std::string& path) {
 
 namespace {
 
+// The declaration table at index 1 as a scenario whose train and eval
+// settings are both the declared ones.
+Scenario declared_or_throw(lua_State* L) {
+  Scenario sc;
+  sc.path = "(declaration)";
+  sc.reward_status = std::make_shared<Status>();
+  // The reward function lives in this Vm, which outlives every object in it.
+  std::shared_ptr<Vm> here(std::shared_ptr<Vm>(), &Vm::of(L));
+  sc.lua_reward = read_environment_fields(L, 1, sc.train_env, here, sc.reward_status);
+  sc.eval_env = sc.train_env;
+  return sc;
+}
+
 int l_new(lua_State* L) {
-  const std::string path = readable(L, arg_string(L, 1, "scenario"), "scenario");
-  const std::string which = opt_string(L, 2, "settings", "eval");
-  if (which != "train" && which != "eval")
-    throw ArgError("squawk.env.new: settings '" + which + "': expected \"train\" or \"eval\"");
-  Scenario sc = scenario_or_throw(L, path);
+  const bool declared = lua_istable(L, 1);
+  std::string which = "eval";
+  Scenario sc;
+  if (declared) {
+    sc = declared_or_throw(L);
+  } else {
+    const std::string path = readable(L, arg_string(L, 1, "scenario"), "scenario");
+    which = opt_string(L, 2, "settings", "eval");
+    if (which != "train" && which != "eval")
+      throw ArgError("squawk.env.new: settings '" + which + "': expected \"train\" or \"eval\"");
+    sc = scenario_or_throw(L, path);
+  }
   auto e = env::HorizontalCrEnv::make(which == "train" ? sc.train_env : sc.eval_env);
   check_status(e.status());
   auto envp = std::make_unique<env::HorizontalCrEnv>(std::move(*e));
   EnvBox* box = new_object<EnvBox>(L, kEnvMt);
+  box->flat.assign(static_cast<size_t>(envp->observation_size()), 0.0f);
   box->scenario = std::move(sc);
   box->env = std::move(envp);
   return 1;
@@ -73,10 +105,15 @@ int l_new(lua_State* L) {
 env::HorizontalCrEnv& self(lua_State* L) { return *arg_object<EnvBox>(L, 1, kEnvMt)->env; }
 
 int l_reset(lua_State* L) {
-  env::HorizontalCrEnv& e = self(L);
+  EnvBox* box = arg_object<EnvBox>(L, 1, kEnvMt);
+  env::HorizontalCrEnv& e = *box->env;
   Rng rng(static_cast<uint64_t>(arg_integer(L, 2, "seed")));
-  lua_pushboolean(L, e.reset(rng));
-  return 1;
+  const bool ask = e.reset(rng);
+  check_status(box->scenario.reward_error());
+  lua_pushboolean(L, ask);
+  lua_pushnumber(L, e.stats().total_reward);
+  lua_pushboolean(L, e.stats().truncated);
+  return 3;
 }
 
 int l_step(lua_State* L) {
@@ -85,7 +122,8 @@ int l_step(lua_State* L) {
   check_status(box->scenario.reward_error());
   lua_pushnumber(L, r);
   lua_pushboolean(L, box->env->done());
-  return 2;
+  lua_pushboolean(L, box->env->stats().truncated);
+  return 3;
 }
 
 int l_observation(lua_State* L) {
@@ -95,10 +133,19 @@ int l_observation(lua_State* L) {
 }
 
 int l_flat(lua_State* L) {
-  env::HorizontalCrEnv& e = self(L);
-  std::vector<float> flat(static_cast<size_t>(e.observation_size()));
-  e.observe_flat(flat);
-  push_array(L, std::vector<double>(flat.begin(), flat.end()));
+  EnvBox* box = arg_object<EnvBox>(L, 1, kEnvMt);
+  box->env->observe_flat(box->flat);
+  if (lua_istable(L, 2)) {
+    lua_settop(L, 2);
+  } else if (lua_isnoneornil(L, 2)) {
+    lua_createtable(L, static_cast<int>(box->flat.size()), 0);
+  } else {
+    throw ArgError(type_error(L, 2, "t", "a table or nothing"));
+  }
+  for (size_t k = 0; k < box->flat.size(); ++k) {
+    lua_pushnumber(L, static_cast<double>(box->flat[k]));
+    lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
   return 1;
 }
 

@@ -121,8 +121,29 @@ Status LuaEnv::read_spec() {
   return Status::ok();
 }
 
+bool LuaEnv::read_plain_observation(int idx) {
+  lua_State* L = vm_->state();
+  if (!lua_istable(L, idx) || lua_rawlen(L, idx) != static_cast<lua_Unsigned>(spec_.observation_size))
+    return false;
+  if (lua_getmetatable(L, idx)) {
+    lua_pop(L, 1);
+    return false;
+  }
+  for (int k = 1; k <= spec_.observation_size; ++k) {
+    int is_number = 0;
+    lua_rawgeti(L, idx, k);
+    const double v = lua_tonumberx(L, -1, &is_number);
+    lua_pop(L, 1);
+    if (!is_number || !std::isfinite(v)) return false;
+    obs_[static_cast<size_t>(k - 1)] = v;
+  }
+  return true;
+}
+
 Status LuaEnv::read_observation(int idx, const char* fn) {
   lua_State* L = vm_->state();
+  idx = lua_absindex(L, idx);
+  if (read_plain_observation(idx)) return Status::ok();
   return catch_arg_errors(L, path_ + ": " + fn + ": ", [&] {
     if (!lua_istable(L, idx))
       throw ArgError(std::string("the observation: expected an array of numbers, got ") +

@@ -72,6 +72,10 @@ class LuaEnv {
   Status read_spec();
   // Reads the observation array at stack index `idx` into obs_.
   Status read_observation(int idx, const char* fn);
+  // The per-step path of read_observation: a table without metatable of
+  // observation_size finite numbers, read raw; false (obs_ partly written)
+  // sends the caller to the checked path, which names what is wrong.
+  bool read_plain_observation(int idx);
 
   std::string path_;
   std::unique_ptr<Vm> vm_;

@@ -220,34 +220,18 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
 }
 
 void read_scenario(lua_State* L, int top, Scenario& s) {
-  check_keys(L, top, "scenario", {"rules", "env", "eval", "reward", "policy", "train", "name", "description"});
-  const std::string rules = field_string(L, top, "rules", "paper");
+  const bool env_file = push_table_field(L, top, "declaration");
+  if (!env_file)
+    check_keys(L, top, "scenario", {"rules", "env", "eval", "reward", "policy", "train", "name", "description"});
   env::HorizontalCrConfig& c = s.train_env;
-  if (rules == "gym") {
-    c.rules = env::Rules::kGym;
-    s.policy.head = "gaussian";
-  } else if (rules == "paper") {
-    c.rules = env::Rules::kPaper;
-  } else {
-    throw ArgError("scenario field 'rules' is '" + rules + "': expected \"paper\" or \"gym\"");
-  }
-  if (push_table_field(L, top, "env")) {
-    check_keys(L, -1, "env", kEnvKeys);
-    read_env(L, -1, c);
+  s.reward_status = std::make_shared<Status>();
+  s.lua_reward = read_environment_fields(L, env_file ? lua_gettop(L) : top, c, s.vm, s.reward_status);
+  if (c.rules == env::Rules::kGym) s.policy.head = "gaussian";
+  if (env_file) {
     lua_pop(L, 1);
+    s.eval_env = c;
+    return;
   }
-  get_field(L, top, "reward");
-  if (lua_isfunction(L, -1)) {
-    s.reward_status = std::make_shared<Status>();
-    c.reward_fn = lua_reward(L, -1, s.vm, s.reward_status);
-    s.lua_reward = true;
-  } else if (lua_istable(L, -1)) {
-    read_weights(L, -1, c.weights);
-  } else if (!lua_isnil(L, -1)) {
-    throw ArgError(std::string("scenario field 'reward': expected a table of weights or a function, got ") +
-                   luaL_typename(L, -1));
-  }
-  lua_pop(L, 1);
   if (push_table_field(L, top, "policy")) {
     read_policy(L, -1, c, s.policy);
     lua_pop(L, 1);
@@ -269,6 +253,37 @@ void read_scenario(lua_State* L, int top, Scenario& s) {
 }
 
 }  // namespace
+
+bool read_environment_fields(lua_State* L, int idx, env::HorizontalCrConfig& c, std::shared_ptr<Vm> vm,
+                             std::shared_ptr<Status> reward_status) {
+  idx = lua_absindex(L, idx);
+  const std::string rules = field_string(L, idx, "rules", "paper");
+  if (rules == "gym") {
+    c.rules = env::Rules::kGym;
+  } else if (rules == "paper") {
+    c.rules = env::Rules::kPaper;
+  } else {
+    throw ArgError("scenario field 'rules' is '" + rules + "': expected \"paper\" or \"gym\"");
+  }
+  if (push_table_field(L, idx, "env")) {
+    check_keys(L, -1, "env", kEnvKeys);
+    read_env(L, -1, c);
+    lua_pop(L, 1);
+  }
+  bool lua_function = false;
+  get_field(L, idx, "reward");
+  if (lua_isfunction(L, -1)) {
+    c.reward_fn = lua_reward(L, -1, std::move(vm), std::move(reward_status));
+    lua_function = true;
+  } else if (lua_istable(L, -1)) {
+    read_weights(L, -1, c.weights);
+  } else if (!lua_isnil(L, -1)) {
+    throw ArgError(std::string("scenario field 'reward': expected a table of weights or a function, got ") +
+                   luaL_typename(L, -1));
+  }
+  lua_pop(L, 1);
+  return lua_function;
+}
 
 Result<Scenario> load_scenario(const std::string& path, const VmOptions& options) {
   if (!files::exists(path)) return Status::not_found("no scenario file '" + path + "'");

@@ -24,6 +24,10 @@
 //   train   = { estimator, episodes, episodes_per_update, num_envs, lr, lr_final, gamma,
 //               entropy_coef, entropy_final, lambda, epochs, minibatches, clip,
 //               grad_clip, branch_fraction, eval_every, eval_episodes, seed }
+// An environment file in the gym contract that declares a HorizontalCR
+// environment (envs/horizontal_cr.lua: a table with `declaration` = {rules,
+// env, reward}) loads as a scenario of that declaration for training and
+// evaluation alike, with the default policy and training settings.
 // A Lua reward function that raises an error makes that step's reward 0 and
 // records the first error in reward_error(); callers check it.
 #pragma once
@@ -55,5 +59,12 @@ struct Scenario {
 };
 
 Result<Scenario> load_scenario(const std::string& path, const VmOptions& options);
+
+// Reads the fields rules, env and reward of the table at idx (the layout
+// above) over the values already in c; throws ArgError naming the culprit.
+// A reward function is wrapped to run in `vm` (kept alive by the wrapper),
+// its first error going to *reward_status; returns true in that case.
+bool read_environment_fields(lua_State* L, int idx, env::HorizontalCrConfig& c, std::shared_ptr<Vm> vm,
+                             std::shared_ptr<Status> reward_status);
 
 }  // namespace squawk::script
