@@ -50,6 +50,13 @@ do -- headings: absolute, compass words, ATC digits
   check_eq(tr("Set the heading of aircraft TEST3 to one hundred and twenty degrees"), "HDG TEST3 120")
 end
 
+do -- DIRECT switches LNAV on: "resume own navigation" said with a direct-to is that DIRECT
+  local w = { aircraft = { plane("AC01", 90, 25000, 280, { "ARTIP", "SUGOL" }) } }
+  check_eq(tr("AC01 resume own navigation direct SUGOL", w), "DIRECT AC01 SUGOL")
+  check_eq(tr("AC01, resume your own navigation, then route direct ARTIP", w), "DIRECT AC01 ARTIP")
+  check_eq(tr("AC01 resume own navigation", w), "LNAV AC01 ON")
+end
+
 do -- relative instructions use the current state
   local w = { aircraft = { plane("AC01", 90, 25000, 280), plane("AC02", 20, 26000, 290) } }
   check_eq(tr("turn AC01 left 20 degrees", w), "HDG AC01 70 LEFT")
