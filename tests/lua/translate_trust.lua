@@ -262,6 +262,10 @@ check_eq(said(tr("KLM77 descend to 9 000 feet")), "ALT KLM77 9000")
 check_eq(said(tr("KLM1234 vertical speed minus 5 metres per second")), "VS KLM1234 -984")
 -- metres and kilometres convert without rounding beyond the unit said: whole feet, tenths of a mile
 check_eq(said(tr("KLM1234 descend to 3000 metres")), "ALT KLM1234 9843")
+-- metres per second beyond any climb rate are an airspeed
+check_eq(said(tr("KLM1234 set the airspeed to 120 metres per second")), "SPD KLM1234 233")
+check_eq(said(tr("KLM1234 fly 100 m/s")), "SPD KLM1234 194")
+check_eq(said(tr("KLM1234 climb with 10 m/s")), "VS KLM1234 1969")
 check_eq(said(tr("KLM1234 at 15 km from SPIKE descend to FL80")), "ATDIST KLM1234 SPIKE 8.1 ALT KLM1234 FL80")
 check_eq(said(tr("BAW8CK climb at 2500 feet a minute")), "VS BAW8CK 2500")
 check_eq(said(tr("fast forward two minutes fifteen")), "FF 135")
