@@ -172,6 +172,8 @@ return {
     { "belavia", "BRU" },
     { "estonian", "ELL" },
     { "loganair", "LOG" },
+    { "logan", "LOG" },  -- (Loganair's ICAO telephony)
+    { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
     { "futura", "FUA" },
     { "viva", "VIV" },
   },

@@ -36,6 +36,13 @@ do -- speeds: knots and Mach in every common form
   check_eq(tr("slow AC03 to 180 kts"), "SPD AC03 180")
 end
 
+do -- ICAO telephony designators: Loganair is "Logan", TUI Airways "Tomjet"
+  check_eq(tr("Logan two one alpha, climb flight level one zero zero"), "ALT LOG21A FL100")
+  check_eq(tr("Tomjet 3 kilo xray turn left heading 250"), "HDG TOM3KX 250 LEFT")
+  local w = { aircraft = { plane("LOG12", 90, 7000, 220), plane("KLM12", 90, 9000, 250) } }
+  check_eq(tr("Logan one two descend altitude five thousand feet", w), "ALT LOG12 5000")
+end
+
 do -- a typed flight number with letters after the airline name; glued units stay units
   check_eq(tr("Ryanair 8UK, fly heading 210, speed 230"), "HDG RYR8UK 210 ; SPD RYR8UK 230")
   check_eq(tr("speedbird 22mx climb FL300"), "ALT BAW22MX FL300")
