@@ -264,7 +264,8 @@ return function(H, f, compass)
 
   -- A place said by its name where an aircraft is put or sent: an airport of that name within
   -- lexicon.navaid_range_nm of the aircraft `a` (of any aircraft when `a` is nil), else a navaid of
-  -- that name there ("direct Perth" near Scotland is the PTH VOR, not YPPH), else an airport anywhere.
+  -- that name there ("direct Perth" near Scotland is the PTH VOR, not YPPH), else an airport
+  -- anywhere; with no traffic, else the one navaid of that name anywhere ("create ... at Ockham").
   function m:place_by_name(b, e, a)
     local near = a and { a } or self.fleet
     for _, r in ipairs(near) do
@@ -275,13 +276,17 @@ return function(H, f, compass)
       local id = self:navaid_by_name(b, e, r)
       if id then return id end
     end
-    return self:airport_by_name(b, e)
+    local airport = self:airport_by_name(b, e)
+    if airport or #near > 0 then return airport end
+    -- with no traffic to place it near, the name of one navaid anywhere (several are asked about)
+    return self:navaid_by_name(b, e, { lat = 0, lon = 0 }, math.huge)
   end
 
   -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
   -- airport has that name: one or two words in [b, e) that name navaids within
-  -- lexicon.navaid_range_nm of the aircraft `a`; the question names them when several idents fit.
-  function m:navaid_by_name(b, e, a)
+  -- range_nm (default lexicon.navaid_range_nm) of the aircraft `a`; the question names them when
+  -- several idents fit.
+  function m:navaid_by_name(b, e, a, range_nm)
     local named = self.world.navaids_named
     if not named or not a or not a.lat then return nil end
     for i = b, math.min(e, #self.t + 1) - 1 do
@@ -295,7 +300,7 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase = p[1]
           -- ("Nantucket airport" is the airport, not the navaid of that name)
-          local ids = self:word(p[2], "@airport_nouns") and {} or named(phrase, a.lat, a.lon, L.navaid_range_nm)
+          local ids = self:word(p[2], "@airport_nouns") and {} or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)
           if #ids == 1 then return ids[1] end
           if #ids > 1 then
             self:need(string.format("Which navaid is '%s': %s?", phrase, table.concat(ids, " or ")))

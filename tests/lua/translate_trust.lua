@@ -227,6 +227,11 @@ if #sim:airports_named("schiphol") == 1 then
   -- name near the traffic; an airport of that name near the aircraft before one far away
   check_eq(ustr("create UAL9 a B738 at Canarsie heading 090 FL200 280 knots"), "CRE UAL9 B738 CRI 90 FL200 280")
   check_eq(ustr("move JetBlue 1116 to Point Reyes at FL120"), "MOVE JBU1116 PYE FL120")
+  -- with no traffic: an airport of that name first, else the one navaid of that name anywhere
+  local empty = squawk.sim.new()
+  local function etr(text) return said(graph.translate(text, { sim = empty, mode = "offline" })) end
+  check_eq(etr("create UAL9 a B738 at Canarsie heading 090 FL200 280 knots"), "CRE UAL9 B738 CRI 90 FL200 280")
+  check_eq(etr("create KLM5 a B738 at Schiphol heading 090 FL100 250 knots"), "CRE KLM5 B738 EHAM 90 FL100 250")
   local uk = squawk.sim.new()
   check(uk:exec("CRE BAW12 A320 52.2 -1.2 090 FL150 280"))
   check(uk:exec("CRE LOG5 DH8D 56.2 -3.7 045 FL70 220"))
