@@ -313,6 +313,7 @@ return function(intent, rule, words)
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
   rule { "skip", "ff", next = "ahead forward" }
+  rule { "jump", "ff", next = "ahead forward" }  -- "jump forward five minutes"
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }

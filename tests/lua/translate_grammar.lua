@@ -255,6 +255,10 @@ do -- navigation and simulation phrases: own navigation, direct to a new fix, ru
   check_eq(tr("KLM123 proceed direct SPY", w), "DIRECT KLM123 SPY")
   check_eq(tr("Run the simulation for ten minutes"), "FF 600")
   check_eq(tr("Run the sim"), "OP")
+  -- a simulator instructor's words: the exercise is the simulation, "jump forward" fast-forwards
+  check_eq(tr("pause the exercise"), "HOLD")
+  check_eq(tr("OK, continue the exercise please"), "OP")
+  check_eq(tr("jump ahead ten minutes"), "FF 600")
   check_eq(tr("Run the simulation at 5x real time"), "DTMULT 5")
 end
 
