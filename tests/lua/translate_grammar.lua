@@ -36,6 +36,12 @@ do -- speeds: knots and Mach in every common form
   check_eq(tr("slow AC03 to 180 kts"), "SPD AC03 180")
 end
 
+do -- a level condition in non-native English: "when pass FL250" is "when passing FL250"
+  check_eq(tr("KLM123 descend FL200, when pass FL250 reduce speed 250"), "ALT KLM123 FL200 ; ATALT KLM123 FL250 SPD KLM123 250")
+  check_eq(tr("KLM123 climb to FL300 and when pass FL280 turn left heading 050"),
+    "ALT KLM123 FL300 ; ATALT KLM123 FL280 HDG KLM123 50 LEFT")
+end
+
 do -- ICAO telephony designators: Loganair is "Logan", TUI Airways "Tomjet"
   check_eq(tr("Logan two one alpha, climb flight level one zero zero"), "ALT LOG21A FL100")
   check_eq(tr("Tomjet 3 kilo xray turn left heading 250"), "HDG TOM3KX 250 LEFT")
