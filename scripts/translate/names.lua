@@ -174,6 +174,9 @@ return {
     { "loganair", "LOG" },
     { "logan", "LOG" },  -- (Loganair's ICAO telephony)
     { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
+    { "azul", "AZU" },
+    { "korean air", "KAL" },
+    { "pollot", "LOT" },
     { "futura", "FUA" },
     { "viva", "VIV" },
   },

@@ -279,6 +279,7 @@ return function(intent, rule, words)
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
+  rule { "give", "pos", next = "me us", near = { 4, "position status details" } }  -- "give me the position"
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }

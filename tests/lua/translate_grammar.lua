@@ -45,6 +45,11 @@ end
 do -- ICAO telephony designators: Loganair is "Logan", TUI Airways "Tomjet"
   check_eq(tr("Logan two one alpha, climb flight level one zero zero"), "ALT LOG21A FL100")
   check_eq(tr("Tomjet 3 kilo xray turn left heading 250"), "HDG TOM3KX 250 LEFT")
+  check_eq(tr("Azul 4410 climb flight level 310"), "ALT AZU4410 FL310")
+  check_eq(tr("Korean Air 85 reduce speed 250 knots"), "SPD KAL85 250")
+  -- "give me the position/status" asks for what the aircraft is doing
+  check_eq(tr("KLM123 give me the position please"), "POS KLM123")
+  check_eq(tr("give me KLM123's status"), "POS KLM123")
   local w = { aircraft = { plane("LOG12", 90, 7000, 220), plane("KLM12", 90, 9000, 250) } }
   check_eq(tr("Logan one two descend altitude five thousand feet", w), "ALT LOG12 5000")
 end
