@@ -270,6 +270,7 @@ do -- navigation and simulation phrases: own navigation, direct to a new fix, ru
   check_eq(tr("pause the exercise"), "HOLD")
   check_eq(tr("OK, continue the exercise please"), "OP")
   check_eq(tr("jump ahead ten minutes"), "FF 600")
+  check_eq(tr("bin KLM123 please"), "DEL KLM123")
   check_eq(tr("Run the simulation at 5x real time"), "DTMULT 5")
 end
 
