@@ -5,8 +5,9 @@
 //       places are errors). Scenario files load relative to the script folder.
 //   sim:exec(line)       -> ok, message   (TrafScript; `;` separates commands)
 //   sim:check(line)      -> ok, message   (parse-only validation, nothing runs)
-//   sim:airports_named(name) -> { "EHAM", ... }  airports of the navdata whose name is
-//                           `name` or starts with its words ({} without navdata)
+//   sim:airports_named(name [, lat, lon, within_nm]) -> { "EHAM", ... }  airports of the navdata
+//                           whose name is `name` or starts with its words, within within_nm of
+//                           lat, lon [deg] when given ({} without navdata)
 //   sim:navaids_named(name, lat, lon, within_nm) -> { "SFO", ... }  idents of the navaids
 //                           called `name` within within_nm of lat, lon [deg], nearest first
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
@@ -53,6 +54,7 @@
 #include "command/conformance.h"
 #include "command/registry.h"
 #include "command/stack.h"
+#include "core/geo.h"
 #include "core/paths.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
@@ -163,10 +165,14 @@ int l_exec(lua_State* L) {
 int l_airports_named(lua_State* L) {
   command::Stack* s = self(L);
   const std::string name = arg_string(L, 2, "name");
+  const bool near = !lua_isnoneornil(L, 3);
+  const double lat = near ? arg_number(L, 3, "lat") : 0.0, lon = near ? arg_number(L, 4, "lon") : 0.0;
+  const double within = near ? arg_number(L, 5, "within_nm") : 0.0;
   lua_newtable(L);
   if (!s->navdb()) return 1;
   int k = 0;
   for (const command::NavPoint* a : s->navdb()->airports_named(name)) {
+    if (near && geo::kwikdist_nm(lat, lon, a->lat, a->lon) > within) continue;
     lua_pushstring(L, a->id.c_str());
     lua_rawseti(L, -2, ++k);
   }

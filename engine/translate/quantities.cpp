@@ -152,12 +152,19 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
         if (word_at(t, j, {"ft", "feet"})) ++j;
       } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) && word_at(t, j + 1, {"per", "a"}) &&
                  word_at(t, j + 2, {"s", "second", "sec"}) && q.kind == QKind::kPlain) {
-        q.kind = QKind::kVs;  // "10 metres per second", "m/s" -> [ft/min], whole
-        q.value = std::round(q.value / 0.3048 * 60.0);
+        // "10 metres per second", "m/s" -> [ft/min], whole; from 40 m/s (7874 ft/min, beyond any
+        // climb) an airspeed -> [kt], to 0.1 ("velocity 150 m/s")
+        if (std::fabs(q.value) >= 40.0) {
+          q.kind = QKind::kSpeed;
+          q.value = std::round(q.value * 3600.0 / 1852.0 * 10.0) / 10.0;
+        } else {
+          q.kind = QKind::kVs;
+          q.value = std::round(q.value / 0.3048 * 60.0);
+        }
         j += 3;
       } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) && q.kind == QKind::kPlain) {
         q.kind = QKind::kAlt;
-        q.value = std::round(q.value / 0.3048 / 100.0) * 100.0;
+        q.value = std::round(q.value / 0.3048);  // [ft], whole
         ++j;
       } else if (word_at(t, j, {"kt", "kts", "knots", "knot", "kias", "kn", "kts."})) {
         q.kind = QKind::kSpeed;
@@ -204,11 +211,11 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
                  (word_at(t, j, {"km", "kilometres", "kilometers", "kilometre", "kilometer"}) &&
                   word_at(t, j + 1, {"per"}) && word_at(t, j + 2, {"h", "hour"}))) {
         q.kind = QKind::kSpeed;
-        q.value /= 1.852;  // km/h -> [kt] (the lexer reads "km/h" as "km per h")
+        q.value = std::round(q.value / 1.852 * 10.0) / 10.0;  // km/h -> [kt] to 0.1 (the lexer reads "km/h" as "km per h")
         j += word_at(t, j, {"kph", "kmh"}) ? 1 : 3;
       } else if (word_at(t, j, {"km", "kilometres", "kilometers", "kilometre", "kilometer"})) {
         q.kind = QKind::kDist;
-        q.value /= 1.852;  // [NM]
+        q.value = std::round(q.value / 1.852 * 10.0) / 10.0;  // [NM] to 0.1
         ++j;
       } else if (word_at(t, j, {"seconds", "second", "s", "sec", "secs"})) {
         q.kind = QKind::kTime;

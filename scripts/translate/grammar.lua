@@ -586,6 +586,23 @@ function G:parse(b, e)
       end
     end
   end
+  self:direct_resumes_nav()
+end
+
+-- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
+-- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's.
+function G:direct_resumes_nav()
+  for c = #self.out, 1, -1 do
+    local id = self.out[c]:match("^LNAV (%S+) ON$")
+    if id then
+      for d = c + 1, #self.out do
+        if self.out[d]:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ") then
+          table.remove(self.out, c)
+          break
+        end
+      end
+    end
+  end
 end
 
 -- "cross CAMRN at one one thousand", "cross ARTIP at 220 knots": a crossing

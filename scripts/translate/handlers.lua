@@ -420,7 +420,7 @@ end
 -- reduce speed 250", "leaving FL340 maintain Mach .82": "ATALT id alt" or nil.
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" then return nil end
-  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through passes leaves reaches")
+  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through passes leaves reaches pass")
   if a >= s.trig then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(s.b, a) > 0 then return nil end

@@ -91,7 +91,7 @@ return function(H, f, compass)
     local named_at
     if not lat or not lon then
       for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do named_at = named_at or r.name end
-      named_at = named_at or self:airport_by_name(s.trig + 1, s.e)
+      named_at = named_at or self:place_by_name(s.trig + 1, s.e)
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
     -- order: heading, altitude, speed: "fl300 290"); others are asked about
@@ -160,7 +160,7 @@ return function(H, f, compass)
     local named_at
     if not lat or not lon then
       for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do named_at = named_at or r.name end
-      named_at = named_at or self:airport_by_name(s.trig + 1, s.e)
+      named_at = named_at or self:place_by_name(s.trig + 1, s.e, self:state(id))
     end
     if (not lat or not lon) and not named_at then
       return self:need("Where should " .. id .. " go? Please give a latitude and longitude.")
@@ -250,8 +250,8 @@ return function(H, f, compass)
       end
     end
     if best and best_score >= L.waypoint_confirm then return best end
-    local airport = self:airport_by_name(b, e) or self:navaid_by_name(b, e, a)
-    if airport then return airport end
+    local place = self:place_by_name(b, e, a)
+    if place then return place end
     -- a name that sounds like a known one is confirmed, never substituted,
     -- unless it is the only name it could be
     if best and best_score >= 0.5 and not (self.world.confirmed or {})[best] then
@@ -273,10 +273,31 @@ return function(H, f, compass)
     return nil
   end
 
+  -- A place said by its name where an aircraft is put or sent: an airport of that name within
+  -- lexicon.navaid_range_nm of the aircraft `a` (of any aircraft when `a` is nil), else a navaid of
+  -- that name there ("direct Perth" near Scotland is the PTH VOR, not YPPH), else an airport
+  -- anywhere; with no traffic, else the one navaid of that name anywhere ("create ... at Ockham").
+  function m:place_by_name(b, e, a)
+    local near = a and { a } or self.fleet
+    for _, r in ipairs(near) do
+      local id = self:airport_by_name(b, e, r)
+      if id then return id end
+    end
+    for _, r in ipairs(near) do
+      local id = self:navaid_by_name(b, e, r)
+      if id then return id end
+    end
+    local airport = self:airport_by_name(b, e)
+    if airport or #near > 0 then return airport end
+    -- with no traffic to place it near, the name of one navaid anywhere (several are asked about)
+    return self:navaid_by_name(b, e, { lat = 0, lon = 0 }, math.huge)
+  end
+
   -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
   -- airport has that name: one or two words in [b, e) that name navaids within
-  -- lexicon.navaid_range_nm of the aircraft `a`; the question names them when several idents fit.
-  function m:navaid_by_name(b, e, a)
+  -- range_nm (default lexicon.navaid_range_nm) of the aircraft `a`; the question names them when
+  -- several idents fit.
+  function m:navaid_by_name(b, e, a, range_nm)
     local named = self.world.navaids_named
     if not named or not a or not a.lat then return nil end
     for i = b, math.min(e, #self.t + 1) - 1 do
@@ -290,7 +311,7 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase = p[1]
           -- ("Nantucket airport" is the airport, not the navaid of that name)
-          local ids = self:word(p[2], "@airport_nouns") and {} or named(phrase, a.lat, a.lon, L.navaid_range_nm)
+          local ids = self:word(p[2], "@airport_nouns") and {} or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)
           local id = self:one_named(ids, "navaid", phrase, math.huge)
           if id then return id end
         end
@@ -300,12 +321,18 @@ return function(H, f, compass)
   end
 
   -- An airport said by its name ("direct to Schiphol" -> EHAM): one or two
-  -- words in [b, e) that name exactly one airport of the navdata.
+  -- words in [b, e) that name exactly one airport of the navdata (within
+  -- lexicon.navaid_range_nm of `near` {lat, lon} [deg] when given).
   -- A word said after a place preposition ("at Barajas") is tried before
   -- any other ("a new Iberia aircraft": an airline, though an airport bears its name).
-  function m:airport_by_name(b, e)
+  function m:airport_by_name(b, e, near)
     local named = self.world.airports_named
     if not named then return nil end
+    if near then
+      if not near.lat then return nil end
+      local all = named
+      named = function(phrase) return all(phrase, near.lat, near.lon, L.navaid_range_nm) end
+    end
     for _, placed in ipairs({ true, false }) do
       local id = self:airport_named_in(b, e, named, placed)
       if id then return id end
@@ -617,7 +644,9 @@ return function(H, f, compass)
     if not id then return end
     local w = self:refs_in(s.b, s.e, "waypoint")
     local lat, lon = position(self:quantities(s.b, s.e), s.trig)
-    local airport = #w == 0 and self:airport_by_name(s.b, s.e)
+    -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
+    local a = self:state(id)
+    local airport = #w == 0 and ((a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e))
     if airport then
       self:emit(cmd .. " " .. id .. " " .. airport)
     elseif #w > 0 then

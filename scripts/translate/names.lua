@@ -172,6 +172,11 @@ return {
     { "belavia", "BRU" },
     { "estonian", "ELL" },
     { "loganair", "LOG" },
+    { "logan", "LOG" },  -- (Loganair's ICAO telephony)
+    { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
+    { "azul", "AZU" },
+    { "korean air", "KAL" },
+    { "pollot", "LOT" },
     { "futura", "FUA" },
     { "viva", "VIV" },
   },

@@ -240,7 +240,7 @@ function M.world(sim, waypoints)
     a.route = names
   end
   return { aircraft = aircraft, waypoints = waypoints or {},
-           airports_named = function(name) return sim:airports_named(name) end,
+           airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
            navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end }
 end
 

@@ -199,7 +199,7 @@ return function(intent, rule, words)
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
   rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
-  rule { "delete del remove rid kill rmv", "delete" }
+  rule { "delete del remove rid kill rmv bin", "delete" }  -- ("bin it": British for delete)
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
@@ -279,6 +279,7 @@ return function(intent, rule, words)
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
+  rule { "give", "pos", next = "me us", near = { 4, "position status details" } }  -- "give me the position"
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
@@ -313,6 +314,7 @@ return function(intent, rule, words)
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
   rule { "skip", "ff", next = "ahead forward" }
+  rule { "jump", "ff", next = "ahead forward" }  -- "jump forward five minutes"
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }

@@ -36,6 +36,24 @@ do -- speeds: knots and Mach in every common form
   check_eq(tr("slow AC03 to 180 kts"), "SPD AC03 180")
 end
 
+do -- a level condition in non-native English: "when pass FL250" is "when passing FL250"
+  check_eq(tr("KLM123 descend FL200, when pass FL250 reduce speed 250"), "ALT KLM123 FL200 ; ATALT KLM123 FL250 SPD KLM123 250")
+  check_eq(tr("KLM123 climb to FL300 and when pass FL280 turn left heading 050"),
+    "ALT KLM123 FL300 ; ATALT KLM123 FL280 HDG KLM123 50 LEFT")
+end
+
+do -- ICAO telephony designators: Loganair is "Logan", TUI Airways "Tomjet"
+  check_eq(tr("Logan two one alpha, climb flight level one zero zero"), "ALT LOG21A FL100")
+  check_eq(tr("Tomjet 3 kilo xray turn left heading 250"), "HDG TOM3KX 250 LEFT")
+  check_eq(tr("Azul 4410 climb flight level 310"), "ALT AZU4410 FL310")
+  check_eq(tr("Korean Air 85 reduce speed 250 knots"), "SPD KAL85 250")
+  -- "give me the position/status" asks for what the aircraft is doing
+  check_eq(tr("KLM123 give me the position please"), "POS KLM123")
+  check_eq(tr("give me KLM123's status"), "POS KLM123")
+  local w = { aircraft = { plane("LOG12", 90, 7000, 220), plane("KLM12", 90, 9000, 250) } }
+  check_eq(tr("Logan one two descend altitude five thousand feet", w), "ALT LOG12 5000")
+end
+
 do -- a typed flight number with letters after the airline name; glued units stay units
   check_eq(tr("Ryanair 8UK, fly heading 210, speed 230"), "HDG RYR8UK 210 ; SPD RYR8UK 230")
   check_eq(tr("speedbird 22mx climb FL300"), "ALT BAW22MX FL300")
@@ -48,6 +66,13 @@ do -- headings: absolute, compass words, ATC digits
   check_eq(tr("Point AC01 due south"), "HDG AC01 180")
   check_eq(tr("Make AC03 fly north-east"), "HDG AC03 45")
   check_eq(tr("Set the heading of aircraft TEST3 to one hundred and twenty degrees"), "HDG TEST3 120")
+end
+
+do -- DIRECT switches LNAV on: "resume own navigation" said with a direct-to is that DIRECT
+  local w = { aircraft = { plane("AC01", 90, 25000, 280, { "ARTIP", "SUGOL" }) } }
+  check_eq(tr("AC01 resume own navigation direct SUGOL", w), "DIRECT AC01 SUGOL")
+  check_eq(tr("AC01, resume your own navigation, then route direct ARTIP", w), "DIRECT AC01 ARTIP")
+  check_eq(tr("AC01 resume own navigation", w), "LNAV AC01 ON")
 end
 
 do -- relative instructions use the current state
@@ -241,6 +266,11 @@ do -- navigation and simulation phrases: own navigation, direct to a new fix, ru
   check_eq(tr("KLM123 proceed direct SPY", w), "DIRECT KLM123 SPY")
   check_eq(tr("Run the simulation for ten minutes"), "FF 600")
   check_eq(tr("Run the sim"), "OP")
+  -- a simulator instructor's words: the exercise is the simulation, "jump forward" fast-forwards
+  check_eq(tr("pause the exercise"), "HOLD")
+  check_eq(tr("OK, continue the exercise please"), "OP")
+  check_eq(tr("jump ahead ten minutes"), "FF 600")
+  check_eq(tr("bin KLM123 please"), "DEL KLM123")
   check_eq(tr("Run the simulation at 5x real time"), "DTMULT 5")
 end
 

@@ -223,6 +223,21 @@ if #sim:airports_named("schiphol") == 1 then
   check_eq(ustr("FedEx 1288 proceed direct Canarsie"), "ADDWPT FDX1288 CRI ; DIRECT FDX1288 CRI")
   -- (Canarsie is 2000 NM from JBU1116: no navaid of that name near it)
   check(ustr("JetBlue 1116 proceed direct Canarsie"):find("CRI", 1, true) == nil, "far navaid")
+  -- a place where an aircraft is put or moved is named like one it is sent to: a navaid of that
+  -- name near the traffic; an airport of that name near the aircraft before one far away
+  check_eq(ustr("create UAL9 a B738 at Canarsie heading 090 FL200 280 knots"), "CRE UAL9 B738 CRI 90 FL200 280")
+  check_eq(ustr("move JetBlue 1116 to Point Reyes at FL120"), "MOVE JBU1116 PYE FL120")
+  -- with no traffic: an airport of that name first, else the one navaid of that name anywhere
+  local empty = squawk.sim.new()
+  local function etr(text) return said(graph.translate(text, { sim = empty, mode = "offline" })) end
+  check_eq(etr("create UAL9 a B738 at Canarsie heading 090 FL200 280 knots"), "CRE UAL9 B738 CRI 90 FL200 280")
+  check_eq(etr("create KLM5 a B738 at Schiphol heading 090 FL100 250 knots"), "CRE KLM5 B738 EHAM 90 FL100 250")
+  local uk = squawk.sim.new()
+  check(uk:exec("CRE BAW12 A320 52.2 -1.2 090 FL150 280"))
+  check(uk:exec("CRE LOG5 DH8D 56.2 -3.7 045 FL70 220"))
+  local function ukt(text) return said(graph.translate(text, { sim = uk, mode = "offline" })) end
+  check_eq(ukt("Speedbird 12 destination Birmingham"), "DEST BAW12 EGBB")
+  check_eq(ukt("Logan 5 resume own navigation direct Perth"), "ADDWPT LOG5 PTH ; DIRECT LOG5 PTH")
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
@@ -250,6 +265,13 @@ check(ctr("speed bird four five six reduce speed eight zero knots"):find("^ASK W
 -- point's level kept as ADDWPT's altitude
 check_eq(said(tr("KLM77 descend to 9 000 feet")), "ALT KLM77 9000")
 check_eq(said(tr("KLM1234 vertical speed minus 5 metres per second")), "VS KLM1234 -984")
+-- metres and kilometres convert without rounding beyond the unit said: whole feet, tenths of a mile
+check_eq(said(tr("KLM1234 descend to 3000 metres")), "ALT KLM1234 9843")
+-- metres per second beyond any climb rate are an airspeed
+check_eq(said(tr("KLM1234 set the airspeed to 120 metres per second")), "SPD KLM1234 233")
+check_eq(said(tr("KLM1234 fly 100 m/s")), "SPD KLM1234 194")
+check_eq(said(tr("KLM1234 climb with 10 m/s")), "VS KLM1234 1969")
+check_eq(said(tr("KLM1234 at 15 km from SPIKE descend to FL80")), "ATDIST KLM1234 SPIKE 8.1 ALT KLM1234 FL80")
 check_eq(said(tr("BAW8CK climb at 2500 feet a minute")), "VS BAW8CK 2500")
 check_eq(said(tr("fast forward two minutes fifteen")), "FF 135")
 check_eq(said(tr("DLH4AX descend flightlevel two eight zero")), "ALT DLH4AX FL280")

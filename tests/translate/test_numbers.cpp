@@ -105,7 +105,7 @@ TEST_CASE("quantities: units decide the kind") {
   q = qty("3000 m");
   REQUIRE(q.size() == 1);
   CHECK(q[0].kind == QKind::kAlt);
-  CHECK(q[0].value == 9800);  // metres converted and rounded to 100 ft
+  CHECK(q[0].value == 9843);  // metres converted to whole feet
 
   q = qty("10 minutes 0.5 s 2.5 NM 10% 5x");
   REQUIRE(q.size() == 5);
