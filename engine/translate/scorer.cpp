@@ -11,7 +11,7 @@
 namespace squawk::translate {
 namespace {
 
-enum class Arg { kWord, kNum, kMagnitude, kAlt, kSpd, kHdg, kTurn, kLat, kLon, kRest };
+enum class Arg { kWord, kNum, kMagnitude, kVs, kAlt, kSpd, kHdg, kTurn, kLat, kLon, kRest };
 
 // Words and comma-separated arguments; an argument left out between commas
 // ("ADDWPT KL204 SPY,,,AFTERWP") keeps its place as an empty one. A comma
@@ -91,10 +91,12 @@ bool same_arg(const std::string& a, const std::string& b, Arg kind) {
     }
     case Arg::kTurn:
       return turn_word(a) == turn_word(b);
-    case Arg::kMagnitude: {
+    case Arg::kMagnitude: {  // a vertical speed's size [ft/min], within 1 ft/min (0.005 m/s)
       auto u = text::to_double(a), v = text::to_double(b);
-      return u && v && std::fabs(std::fabs(*u) - std::fabs(*v)) <= 1e-9 * std::max(1.0, std::fabs(*v));
+      return u && v && std::fabs(std::fabs(*u) - std::fabs(*v)) <= 1.0;
     }
+    case Arg::kVs:
+      return num_eq(a, b, 1.0);
     case Arg::kLat:
     case Arg::kLon:
       return num_eq(a, b, 1e-3) || text::iequals(a, b);
@@ -120,6 +122,7 @@ std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string
   if (cmd == "MOVE") return {A::kWord, A::kLat, A::kLon, A::kAlt, A::kHdg, A::kSpd, A::kNum};
   if (cmd == "ALT") return {A::kWord, A::kAlt, A::kMagnitude};  // ALT reads |vspd|
   if (cmd == "SPD") return {A::kWord, A::kSpd};
+  if (cmd == "VS") return {A::kWord, A::kVs};
   if (cmd == "HDG") return {A::kWord, A::kHdg, A::kTurn};
   if (cmd == "AT" && args.size() >= 4)  // AT acid wpt ALT alt | SPD spd
     return {A::kWord, A::kWord, A::kWord, text::iequals(args[2], "SPD") ? A::kSpd : A::kAlt};
