@@ -98,6 +98,12 @@ void push_fields(lua_State* L, const sim::fields::Field<Row> (&list)[N], const R
       lua_pushboolean(L, *b);
     } else if (const auto* s = std::get_if<std::string_view>(&v)) {
       lua_pushlstring(L, s->data(), s->size());
+    } else if (const auto* texts = std::get_if<const std::vector<std::string>*>(&v)) {
+      lua_createtable(L, static_cast<int>((*texts)->size()), 0);
+      for (size_t k = 0; k < (*texts)->size(); ++k) {
+        lua_pushlstring(L, (**texts)[k].data(), (**texts)[k].size());
+        lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
+      }
     } else {
       const auto& wps = std::get<const sim::Route*>(v)->waypoints();
       lua_createtable(L, static_cast<int>(wps.size()), 0);

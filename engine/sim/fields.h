@@ -14,8 +14,10 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "core/units.h"
 #include "sim/atmosphere.h"
@@ -27,8 +29,8 @@ namespace squawk::sim::fields {
 
 struct Absent {};
 // One field's value: a number, a flag, a text, a route (a list of waypoints,
-// written with kWaypoint) or nothing.
-using Value = std::variant<Absent, double, bool, std::string_view, const Route*>;
+// written with kWaypoint), a list of texts or nothing.
+using Value = std::variant<Absent, double, bool, std::string_view, const Route*, const std::vector<std::string>*>;
 
 template <class Row>
 struct Field {

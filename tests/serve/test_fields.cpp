@@ -1,13 +1,18 @@
 // The field lists of sim/fields.h are what Lua and serve's JSON show: every
-// declared field, and nothing else, with the same value in both.
+// declared field, and nothing else, with the same value in both; a command
+// reply's JSON holds script/reply_fields.h's fields and nothing else.
 #include <doctest/doctest.h>
 
+#include <chrono>
 #include <lua.hpp>
 #include <set>
 #include <string>
 
 #include "script/lua_util.h"
+#include "script/reply_fields.h"
+#include "script/serve_session.h"
 #include "script/vm.h"
+#include "serve/live_sim.h"
 #include "serve/state_json.h"
 #include "sim/fields.h"
 
@@ -172,4 +177,45 @@ TEST_CASE("a loss of separation has the kLos fields in Lua and in JSON") {
   lua_rawgeti(L, -1, 1);  // KL1 first: the JSON's order
   check_same(L, j["los"][0], sim::fields::kLos, "los");
   lua_pop(L, 2);
+}
+
+TEST_CASE("a command reply's JSON (POST /api/command) holds exactly kCommandReply's fields") {
+  script::Vm vm({});
+  auto session = script::ServeSession::open(vm, "", "offline");
+  REQUIRE(session.is_ok());
+  serve::LiveSim live(**session, {});
+  live.start();
+  auto reply = [&](const std::string& text, const std::string& selected) {
+    auto r = live.call([&](serve::LiveSim& l) { return l.command(text, "controller", {"controller", selected}); },
+                       std::chrono::seconds(30));
+    REQUIRE(r.is_ok());
+    const json j = *r;
+    std::set<std::string> declared, keys;
+    for (const auto& f : script::fields::kCommandReply) declared.insert(f.name);
+    for (const auto& [key, value] : j.items()) keys.insert(key);
+    CAPTURE(text);
+    CHECK(keys == declared);
+    CHECK(j["text"] == text);
+    CHECK(j["commands"].is_array());
+    CHECK(j["ok"].is_boolean());
+    CHECK(j["message"].is_string());
+    CHECK(j["trace"].is_string());
+    CHECK(j["cancelled"].is_boolean());
+    return j;
+  };
+  json j = reply("!CRE KL204 B744 52 4 90 FL200 280", "");
+  CHECK(j["ok"] == true);
+  CHECK(j["commands"] == json::array({"CRE KL204 B744 52 4 90 FL200 280"}));
+  CHECK((j["ask"].is_null() && j["addressed"].is_null() && j["cancelled"] == false));
+  reply("!CRE AF123 A320 53 4 90 FL200 280", "");
+  j = reply("climb to flight level 300", "");  // two aircraft, none named: a question
+  CHECK(j["ok"] == false);
+  CHECK(!j["ask"].get<std::string>().empty());
+  j = reply("cancel", "");
+  CHECK(j["cancelled"] == true);
+  j = reply("climb to flight level 300", "KL204");  // said to the selected aircraft
+  CHECK(j["addressed"] == "KL204");
+  CHECK(j["commands"] == json::array({"ALT KL204 FL300"}));
+  CHECK(j["ask"].is_null());
+  live.stop();
 }
