@@ -1,5 +1,5 @@
 // The JSON object of one row of a field list (sim/fields.h's Field): each
-// declared field under its name; a number, flag or text as itself, a route as
+// declared field under its name; a number, count, flag or text as itself, a route as
 // an array of kWaypoint objects, a list of texts as an array of strings; an
 // absent value is null.
 #pragma once
@@ -20,6 +20,8 @@ nlohmann::json fields_json(const sim::fields::Field<Row> (&list)[N], const Row& 
     nlohmann::json& j = out[f.name];
     if (const double* x = std::get_if<double>(&v)) {
       j = *x;
+    } else if (const long long* n = std::get_if<long long>(&v)) {
+      j = *n;
     } else if (const bool* b = std::get_if<bool>(&v)) {
       j = *b;
     } else if (const auto* s = std::get_if<std::string_view>(&v)) {

@@ -28,9 +28,11 @@
 namespace squawk::sim::fields {
 
 struct Absent {};
-// One field's value: a number, a flag, a text, a route (a list of waypoints,
-// written with kWaypoint), a list of texts or nothing.
-using Value = std::variant<Absent, double, bool, std::string_view, const Route*, const std::vector<std::string>*>;
+// One field's value: a number, a count (an integer in Lua and JSON), a flag,
+// a text, a route (a list of waypoints, written with kWaypoint), a list of
+// texts or nothing.
+using Value = std::variant<Absent, double, long long, bool, std::string_view, const Route*,
+                           const std::vector<std::string>*>;
 
 template <class Row>
 struct Field {

@@ -1,16 +1,21 @@
 // The field lists of sim/fields.h are what Lua and serve's JSON show: every
 // declared field, and nothing else, with the same value in both; a command
-// reply's JSON holds script/reply_fields.h's fields and nothing else.
+// reply's JSON holds script/reply_fields.h's fields and nothing else, and a
+// Lua reward function sees script/step_fields.h's.
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <lua.hpp>
 #include <set>
 #include <string>
 
 #include "script/lua_util.h"
 #include "script/reply_fields.h"
+#include "script/scenario.h"
 #include "script/serve_session.h"
+#include "script/step_fields.h"
 #include "script/vm.h"
 #include "serve/live_sim.h"
 #include "serve/state_json.h"
@@ -186,8 +191,11 @@ TEST_CASE("a command reply's JSON (POST /api/command) holds exactly kCommandRepl
   serve::LiveSim live(**session, {});
   live.start();
   auto reply = [&](const std::string& text, const std::string& selected) {
-    auto r = live.call([&](serve::LiveSim& l) { return l.command(text, "controller", {"controller", selected}); },
-                       std::chrono::seconds(30));
+    auto r = live.call(
+        [&](serve::LiveSim& l) {
+          return l.command(text, "controller", {"controller", selected});
+        },
+        std::chrono::seconds(30));
     REQUIRE(r.is_ok());
     const json j = *r;
     std::set<std::string> declared, keys;
@@ -218,4 +226,48 @@ TEST_CASE("a command reply's JSON (POST /api/command) holds exactly kCommandRepl
   CHECK(j["commands"] == json::array({"ALT KL204 FL300"}));
   CHECK(j["ask"].is_null());
   live.stop();
+}
+
+TEST_CASE("a Lua reward function sees exactly kStepFacts's fields, with their values and types") {
+  // A scenario whose reward returns what `body` computes from f.
+  auto reward_of = [](const std::string& body, const env::StepFacts& facts) {
+    const auto path = std::filesystem::temp_directory_path() / "squawk_test_step_fields.lua";
+    std::ofstream(path) << "return { reward = function(f) " << body << " end }\n";
+    auto s = script::load_scenario(path.string(), {});
+    REQUIRE_MESSAGE(s, s.status().message());
+    REQUIRE(s->train_env.reward_fn);
+    const double r = s->train_env.reward_fn(facts);
+    CHECK(s->reward_error().is_ok());
+    return r;
+  };
+  env::StepFacts f;
+  f.step = 7;
+  f.intrusions = 2;
+  f.substep_intrusions = 5;
+  f.cpa_ratio = 0.25;
+  f.drift = -12.5;
+  f.heading_change = 22.5;
+  f.waypoint_distance = 1234.5;
+  f.reached = true;
+  // The names the scenarios read (scenario.h), each with its own value.
+  CHECK(
+      reward_of("return f.step == 7 and f.intrusions == 2 and f.substep_intrusions == 5 and "
+                "f.cpa_ratio == 0.25 and f.drift_deg == -12.5 and f.heading_change_deg == 22.5 and "
+                "f.waypoint_distance_m == 1234.5 and f.reached and 1 or 0",
+                f) == 1.0);
+  CHECK(reward_of("local n = 0 for _ in pairs(f) do n = n + 1 end return n", f) ==
+        std::size(script::fields::kStepFacts));
+  for (const auto& field : script::fields::kStepFacts) {
+    const std::string name = field.name;
+    CAPTURE(name);
+    const sim::fields::Value v = field.get(f);
+    if (const bool* b = std::get_if<bool>(&v)) {
+      CHECK(reward_of("return f." + name + " == true and 1 or 0", f) == (*b ? 1.0 : 0.0));
+    } else if (const long long* n = std::get_if<long long>(&v)) {
+      CHECK(reward_of("return math.type(f." + name + ") == 'integer' and f." + name + " or -1",
+                      f) == static_cast<double>(*n));
+    } else {
+      CHECK(reward_of("return f." + name, f) == std::get<double>(v));
+    }
+  }
 }
