@@ -1,7 +1,7 @@
 // The Lua table of one row of a field list (sim/fields.h's Field): each
 // present field under its name; a number, flag or text as itself, a count as
-// a Lua integer, a route as an array of kWaypoint tables, a list of texts as
-// an array of strings; an absent value stays nil. Pushes the table.
+// a Lua integer, a route as an array of kWaypoint tables, a list of texts or
+// numbers as an array; an absent value stays nil. Pushes the table.
 #pragma once
 
 #include <lua.hpp>
@@ -27,6 +27,12 @@ void push_fields(lua_State* L, const sim::fields::Field<Row> (&list)[N], const R
       lua_pushboolean(L, *b);
     } else if (const auto* s = std::get_if<std::string_view>(&v)) {
       lua_pushlstring(L, s->data(), s->size());
+    } else if (const auto* numbers = std::get_if<std::span<const double>>(&v)) {
+      lua_createtable(L, static_cast<int>(numbers->size()), 0);
+      for (size_t k = 0; k < numbers->size(); ++k) {
+        lua_pushnumber(L, (*numbers)[k]);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+      }
     } else if (const auto* texts = std::get_if<const std::vector<std::string>*>(&v)) {
       lua_createtable(L, static_cast<int>((*texts)->size()), 0);
       for (size_t k = 0; k < (*texts)->size(); ++k) {

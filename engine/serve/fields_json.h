@@ -1,12 +1,13 @@
 // The JSON object of one row of a field list (sim/fields.h's Field): each
-// declared field under its name; a number, count, flag or text as itself, a route as
-// an array of kWaypoint objects, a list of texts as an array of strings; an
-// absent value is null.
+// declared field under its name; a number, count, flag or text as itself, a
+// route as an array of kWaypoint objects, a list of texts or numbers as an
+// array; an absent value is null.
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "sim/fields.h"
 
@@ -31,6 +32,8 @@ nlohmann::json fields_json(const sim::fields::Field<Row> (&list)[N], const Row& 
       for (const auto& w : (*r)->waypoints()) j.push_back(fields_json(sim::fields::kWaypoint, w));
     } else if (const auto* texts = std::get_if<const std::vector<std::string>*>(&v)) {
       j = **texts;
+    } else if (const auto* numbers = std::get_if<std::span<const double>>(&v)) {
+      j = std::vector<double>(numbers->begin(), numbers->end());
     }
   }
   return out;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cmath>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -30,9 +31,9 @@ namespace squawk::sim::fields {
 struct Absent {};
 // One field's value: a number, a count (an integer in Lua and JSON), a flag,
 // a text, a route (a list of waypoints, written with kWaypoint), a list of
-// texts or nothing.
+// texts, a list of numbers or nothing.
 using Value = std::variant<Absent, double, long long, bool, std::string_view, const Route*,
-                           const std::vector<std::string>*>;
+                           const std::vector<std::string>*, std::span<const double>>;
 
 template <class Row>
 struct Field {

@@ -1,7 +1,8 @@
 // The field lists of sim/fields.h are what Lua and serve's JSON show: every
 // declared field, and nothing else, with the same value in both; a command
-// reply's JSON holds script/reply_fields.h's fields and nothing else, and a
-// Lua reward function sees script/step_fields.h's.
+// reply's JSON holds script/reply_fields.h's fields and nothing else, a Lua
+// reward function sees script/step_fields.h's and env:observation()
+// script/observation_fields.h's.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -11,7 +12,9 @@
 #include <set>
 #include <string>
 
+#include "env/observation.h"
 #include "script/lua_util.h"
+#include "script/observation_fields.h"
 #include "script/reply_fields.h"
 #include "script/scenario.h"
 #include "script/serve_session.h"
@@ -270,4 +273,57 @@ TEST_CASE("a Lua reward function sees exactly kStepFacts's fields, with their va
       CHECK(reward_of("return f." + name, f) == std::get<double>(v));
     }
   }
+}
+
+TEST_CASE("env:observation() holds exactly kObservation's fields, the values of the flat form") {
+  script::Vm vm(script::VmOptions{});
+  lua_State* L = vm.state();
+  REQUIRE(vm.run_string(R"(
+    local e = squawk.env.new{rules = "paper"}
+    e:reset(3)
+    OBS, FLAT = e:observation(), e:flat())",
+                        "observation")
+              .is_ok());
+  lua_getglobal(L, "FLAT");
+  std::vector<float> flat(lua_rawlen(L, -1));
+  for (size_t k = 0; k < flat.size(); ++k) {
+    lua_rawgeti(L, -1, static_cast<lua_Integer>(k + 1));
+    flat[k] = static_cast<float>(lua_tonumber(L, -1));
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  auto o = env::unflatten(flat);  // the MLP's view, written by env/observation.cpp
+  REQUIRE_MESSAGE(o, o.status().message());
+  REQUIRE(o->num_intruders() > 0);
+  lua_getglobal(L, "OBS");
+  std::set<std::string> declared;
+  for (const auto& f : script::fields::kObservation) {
+    declared.insert(f.name);
+    const std::string name = f.name;
+    CAPTURE(name);
+    const auto want = std::get<std::span<const double>>(f.get(*o));
+    lua_getfield(L, -1, f.name);
+    REQUIRE(lua_istable(L, -1));
+    REQUIRE(lua_rawlen(L, -1) == want.size());
+    for (size_t k = 0; k < want.size(); ++k) {
+      lua_rawgeti(L, -1, static_cast<lua_Integer>(k + 1));
+      CHECK(static_cast<float>(lua_tonumber(L, -1)) == static_cast<float>(want[k]));
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  CHECK(lua_keys(L) == declared);
+  // Named as the flat form orders them: the fields' arrays in alphabetical order of the names.
+  std::vector<float> by_name;
+  for (const std::string& name : declared) {
+    lua_getfield(L, -1, name.c_str());
+    for (lua_Integer k = 1; k <= static_cast<lua_Integer>(lua_rawlen(L, -1)); ++k) {
+      lua_rawgeti(L, -1, k);
+      by_name.push_back(static_cast<float>(lua_tonumber(L, -1)));
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  CHECK(by_name == flat);
+  lua_pop(L, 1);
 }
