@@ -1,18 +1,22 @@
 // The field lists of sim/fields.h are what Lua and serve's JSON show: every
 // declared field, and nothing else, with the same value in both; a command
 // reply's JSON holds script/reply_fields.h's fields and nothing else, a Lua
-// reward function sees script/step_fields.h's and env:observation()
-// script/observation_fields.h's.
+// reward function sees script/step_fields.h's, env:observation()
+// script/observation_fields.h's and a phrasing template
+// script/advisory_fields.h's.
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <lua.hpp>
+#include <map>
 #include <set>
 #include <string>
 
 #include "env/observation.h"
+#include "script/advisory_fields.h"
 #include "script/lua_util.h"
 #include "script/observation_fields.h"
 #include "script/reply_fields.h"
@@ -326,4 +330,74 @@ TEST_CASE("env:observation() holds exactly kObservation's fields, the values of 
   }
   CHECK(by_name == flat);
   lua_pop(L, 1);
+}
+
+namespace {
+
+// `list`'s fields of `row` as the dump template below writes them:
+// name=kind:value, sorted by name (kind: Lua's math.type of a number).
+template <class Row, size_t N>
+std::map<std::string, std::string> expected_dump(const sim::fields::Field<Row> (&list)[N],
+                                                 const Row& row) {
+  std::map<std::string, std::string> out;
+  for (const auto& f : list) {
+    const sim::fields::Value v = f.get(row);
+    char buf[64];
+    if (const double* x = std::get_if<double>(&v)) {
+      std::snprintf(buf, sizeof buf, "float:%.14g", *x);
+      out[f.name] = buf;
+    } else if (const long long* n = std::get_if<long long>(&v)) {
+      out[f.name] = "integer:" + std::to_string(*n);
+    } else {
+      out[f.name] = std::string(std::get<std::string_view>(v));
+    }
+  }
+  return out;
+}
+
+std::string joined(const std::map<std::string, std::string>& m) {
+  std::string s;
+  for (const auto& [k, v] : m) s += (s.empty() ? "" : ";") + k + "=" + v;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "a phrasing template's advise(d) sees exactly kAdvisory's fields, and kAdvisoryTraffic's in "
+    "d.traffic") {
+  const auto path = std::filesystem::temp_directory_path() / "squawk_test_advisory_fields.lua";
+  std::ofstream(path) << R"(
+    local function dump(t)
+      local keys, out = {}, {}
+      for k in pairs(t) do keys[#keys + 1] = k end
+      table.sort(keys)
+      for _, k in ipairs(keys) do
+        local v = t[k]
+        if type(v) == "table" then
+          v = "{" .. dump(v) .. "}"
+        elseif math.type(v) then
+          v = math.type(v) .. ":" .. tostring(v)
+        end
+        out[#out + 1] = k .. "=" .. v
+      end
+      return table.concat(out, ";")
+    end
+    return { advise = dump })";
+  auto phraser = script::AdvisoryPhraser::load(path.string(), {});
+  REQUIRE_MESSAGE(phraser, phraser.status().message());
+  script::Advisory a{"KL204", 0.5, 270, 87.25, "left", std::nullopt};
+  auto plain = phraser->phrase(a);
+  REQUIRE_MESSAGE(plain, plain.status().message());
+  CHECK(*plain == joined(expected_dump(script::fields::kAdvisory, a)));
+  CHECK(
+      *plain ==
+      "action=float:0.5;callsign=KL204;current_heading=float:87.25;heading=integer:270;turn=left");
+  a.traffic = script::Advisory::Traffic{"AF123", 2, 4.5};
+  auto with_traffic = phraser->phrase(a);
+  REQUIRE_MESSAGE(with_traffic, with_traffic.status().message());
+  auto want = expected_dump(script::fields::kAdvisory, a);
+  want["traffic"] = "{" + joined(expected_dump(script::fields::kAdvisoryTraffic, *a.traffic)) + "}";
+  CHECK(*with_traffic == joined(want));
+  CHECK(want["traffic"] == "{clock=integer:2;distance_nm=float:4.5;id=AF123}");
 }
