@@ -4,7 +4,10 @@
 // sim:aircraft(), sim:get(), sim:conflicts(), sim:los()), serve's JSON
 // (serve/state_json.cpp) and through them the scope (web/) and the
 // translator's view of the traffic (scripts/translate) are built by walking
-// it, so every field has the same name and unit everywhere.
+// it, so every field has the same name and unit everywhere. The other types
+// that cross (command reply, step result, observation, advisory) have their
+// lists in script/*_fields.h over this Field and Value; script/lua_fields.h
+// and serve/fields_json.h are the one Lua and the one JSON walker.
 //
 // Contract: Traffic and the detector hold SI (m, m/s, s, deg); a getter
 // converts to the unit its field's name ends in (the edge's aviation units:
