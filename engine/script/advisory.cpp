@@ -1,5 +1,7 @@
 #include "script/advisory.h"
 
+#include "script/advisory_fields.h"
+#include "script/lua_fields.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
 
@@ -32,25 +34,9 @@ Result<std::string> AdvisoryPhraser::phrase(const Advisory& a) {
     get_field(L, -1, "advise");
     lua_remove(L, -2);
   }));
-  lua_createtable(L, 0, 7);
-  lua_pushstring(L, a.callsign.c_str());
-  lua_setfield(L, -2, "callsign");
-  lua_pushnumber(L, a.action);
-  lua_setfield(L, -2, "action");
-  lua_pushinteger(L, a.heading);
-  lua_setfield(L, -2, "heading");
-  lua_pushnumber(L, a.current_heading);
-  lua_setfield(L, -2, "current_heading");
-  lua_pushstring(L, a.turn.c_str());
-  lua_setfield(L, -2, "turn");
+  push_fields(L, fields::kAdvisory, a);
   if (a.traffic) {
-    lua_createtable(L, 0, 3);
-    lua_pushstring(L, a.traffic->id.c_str());
-    lua_setfield(L, -2, "id");
-    lua_pushinteger(L, a.traffic->clock);
-    lua_setfield(L, -2, "clock");
-    lua_pushnumber(L, a.traffic->distance_nm);
-    lua_setfield(L, -2, "distance_nm");
+    push_fields(L, fields::kAdvisoryTraffic, *a.traffic);
     lua_setfield(L, -2, "traffic");
   }
   std::string out;

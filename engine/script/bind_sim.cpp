@@ -57,6 +57,7 @@
 #include "core/geo.h"
 #include "core/paths.h"
 #include "script/bindings.h"
+#include "script/lua_fields.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
 #include "sim/atmosphere.h"
@@ -85,31 +86,6 @@ int push_outcome(lua_State* L, const Result<std::string>& r) {
   const std::string& msg = r.is_ok() ? r.value() : r.status().message();
   lua_pushlstring(L, msg.data(), msg.size());
   return 2;
-}
-
-// A table of `list`'s fields of `row` (sim/fields.h); absent ones stay nil.
-template <class Row, size_t N>
-void push_fields(lua_State* L, const sim::fields::Field<Row> (&list)[N], const Row& row) {
-  lua_createtable(L, 0, static_cast<int>(N));
-  for (const auto& f : list) {
-    const sim::fields::Value v = f.get(row);
-    if (std::holds_alternative<sim::fields::Absent>(v)) continue;
-    if (const double* x = std::get_if<double>(&v)) {
-      lua_pushnumber(L, *x);
-    } else if (const bool* b = std::get_if<bool>(&v)) {
-      lua_pushboolean(L, *b);
-    } else if (const auto* s = std::get_if<std::string_view>(&v)) {
-      lua_pushlstring(L, s->data(), s->size());
-    } else {
-      const auto& wps = std::get<const sim::Route*>(v)->waypoints();
-      lua_createtable(L, static_cast<int>(wps.size()), 0);
-      for (size_t k = 0; k < wps.size(); ++k) {
-        push_fields(L, sim::fields::kWaypoint, wps[k]);
-        lua_seti(L, -2, static_cast<lua_Integer>(k + 1));
-      }
-    }
-    lua_setfield(L, -2, f.name);
-  }
 }
 
 void push_aircraft(lua_State* L, const sim::Traffic& t, int i) {

@@ -254,14 +254,6 @@ void set_boolean(lua_State* L, const char* key, bool v) {
   lua_setfield(L, -2, key);
 }
 
-void push_array(lua_State* L, const std::vector<double>& v) {
-  lua_createtable(L, static_cast<int>(v.size()), 0);
-  for (size_t i = 0; i < v.size(); ++i) {
-    lua_pushnumber(L, v[i]);
-    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
-  }
-}
-
 double field_number(lua_State* L, int idx, const char* key, double fallback) {
   idx = lua_absindex(L, idx);
   get_field(L, idx, key);

@@ -110,9 +110,6 @@ void set_integer(lua_State* L, const char* key, lua_Integer v);
 void set_string(lua_State* L, const char* key, const std::string& v);
 void set_boolean(lua_State* L, const char* key, bool v);
 
-// Pushes a Lua array (1-based) of the numbers in v.
-void push_array(lua_State* L, const std::vector<double>& v);
-
 // Reads field `key` of the table at `idx`, or `fallback` when it is nil.
 double field_number(lua_State* L, int idx, const char* key, double fallback);
 std::string field_string(lua_State* L, int idx, const char* key, const std::string& fallback);

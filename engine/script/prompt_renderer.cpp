@@ -3,7 +3,9 @@
 #include <lua.hpp>
 
 #include "core/files.h"
+#include "script/lua_fields.h"
 #include "script/lua_util.h"
+#include "script/observation_fields.h"
 #include "script/vm.h"
 
 namespace squawk::script {
@@ -52,23 +54,7 @@ Result<std::shared_ptr<PromptRenderer>> PromptRenderer::load(const std::string& 
 }
 
 void push_observation(lua_State* L, const env::Observation& obs) {
-  lua_createtable(L, 0, 8);
-  push_array(L, obs.intruder_distance);
-  lua_setfield(L, -2, "intruder_distance");
-  push_array(L, obs.cos_difference_pos);
-  lua_setfield(L, -2, "cos_difference_pos");
-  push_array(L, obs.sin_difference_pos);
-  lua_setfield(L, -2, "sin_difference_pos");
-  push_array(L, obs.x_difference_speed);
-  lua_setfield(L, -2, "x_difference_speed");
-  push_array(L, obs.y_difference_speed);
-  lua_setfield(L, -2, "y_difference_speed");
-  push_array(L, {obs.waypoint_distance});
-  lua_setfield(L, -2, "waypoint_distance");
-  push_array(L, {obs.cos_drift});
-  lua_setfield(L, -2, "cos_drift");
-  push_array(L, {obs.sin_drift});
-  lua_setfield(L, -2, "sin_drift");
+  push_fields(L, fields::kObservation, obs);
 }
 
 PromptRenderer::~PromptRenderer() {

@@ -7,7 +7,9 @@
 #include "core/files.h"
 #include "core/paths.h"
 #include "core/units.h"
+#include "script/lua_fields.h"
 #include "script/lua_util.h"
+#include "script/step_fields.h"
 #include "script/vm.h"
 
 namespace squawk::script {
@@ -187,23 +189,7 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
     lua_State* S = vm->state();
     const int top = lua_gettop(S);
     lua_rawgeti(S, LUA_REGISTRYINDEX, ref);
-    lua_createtable(S, 0, 8);
-    lua_pushinteger(S, f.step);
-    lua_setfield(S, -2, "step");
-    lua_pushinteger(S, f.intrusions);
-    lua_setfield(S, -2, "intrusions");
-    lua_pushinteger(S, f.substep_intrusions);
-    lua_setfield(S, -2, "substep_intrusions");
-    lua_pushnumber(S, f.cpa_ratio);
-    lua_setfield(S, -2, "cpa_ratio");
-    lua_pushnumber(S, f.drift);
-    lua_setfield(S, -2, "drift_deg");
-    lua_pushnumber(S, f.heading_change);
-    lua_setfield(S, -2, "heading_change_deg");
-    lua_pushnumber(S, f.waypoint_distance);
-    lua_setfield(S, -2, "waypoint_distance_m");
-    lua_pushboolean(S, f.reached);
-    lua_setfield(S, -2, "reached");
+    push_fields(S, fields::kStepFacts, f);
     double r = 0.0;
     if (Status st = vm->pcall(1, 1); !st.is_ok()) {
       if (status->is_ok()) *status = Status::invalid("reward function: " + st.message());

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "script/reply_fields.h"
+#include "serve/fields_json.h"
 #include "serve/state_json.h"
 
 namespace squawk::serve {
@@ -10,14 +12,6 @@ namespace {
 
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
-
-json reply_json(const script::CommandReply& r) {
-  json j = {{"text", r.text}, {"commands", r.commands}, {"ok", r.ok}, {"message", r.message}, {"trace", r.trace}};
-  if (!r.ask.empty()) j["ask"] = r.ask;
-  if (r.cancelled) j["cancelled"] = true;
-  if (!r.addressed.empty()) j["addressed"] = r.addressed;
-  return j;
-}
 
 std::string join(const std::vector<std::string>& v, const char* sep) {
   std::string out;
@@ -156,7 +150,7 @@ void LiveSim::log(const std::string& who, const std::string& text) {
 }
 
 json LiveSim::command(const std::string& text, const std::string& who, const script::CommandOptions& opts) {
-  return reply_json(run_command(text, who, opts));
+  return fields_json(script::fields::kCommandReply, run_command(text, who, opts));
 }
 
 script::CommandReply LiveSim::run_command(const std::string& text, const std::string& who,

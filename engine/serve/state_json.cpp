@@ -3,40 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
-#include <variant>
 
 #include "core/cpa.h"
 #include "core/units.h"
+#include "serve/fields_json.h"
 #include "sim/atmosphere.h"
 #include "sim/conflict.h"
-#include "sim/fields.h"
 
 namespace squawk::serve {
 
 namespace {
 
 using nlohmann::json;
-
-// An object of `list`'s fields of `row` (sim/fields.h); absent ones are null.
-template <class Row, size_t N>
-json fields_json(const sim::fields::Field<Row> (&list)[N], const Row& row) {
-  json out = json::object();
-  for (const auto& f : list) {
-    const sim::fields::Value v = f.get(row);
-    json& j = out[f.name];
-    if (const double* x = std::get_if<double>(&v)) {
-      j = *x;
-    } else if (const bool* b = std::get_if<bool>(&v)) {
-      j = *b;
-    } else if (const auto* s = std::get_if<std::string_view>(&v)) {
-      j = std::string(*s);
-    } else if (const auto* r = std::get_if<const sim::Route*>(&v)) {
-      j = json::array();
-      for (const auto& w : (*r)->waypoints()) j.push_back(fields_json(sim::fields::kWaypoint, w));
-    }
-  }
-  return out;
-}
 
 // Where aircraft a and b are at their closest approach if both keep their
 // present ground velocity, from the present state (flat earth around the

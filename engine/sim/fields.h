@@ -4,7 +4,10 @@
 // sim:aircraft(), sim:get(), sim:conflicts(), sim:los()), serve's JSON
 // (serve/state_json.cpp) and through them the scope (web/) and the
 // translator's view of the traffic (scripts/translate) are built by walking
-// it, so every field has the same name and unit everywhere.
+// it, so every field has the same name and unit everywhere. The other types
+// that cross (command reply, step result, observation, advisory) have their
+// lists in script/*_fields.h over this Field and Value; script/lua_fields.h
+// and serve/fields_json.h are the one Lua and the one JSON walker.
 //
 // Contract: Traffic and the detector hold SI (m, m/s, s, deg); a getter
 // converts to the unit its field's name ends in (the edge's aviation units:
@@ -14,8 +17,11 @@
 #pragma once
 
 #include <cmath>
+#include <span>
+#include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "core/units.h"
 #include "sim/atmosphere.h"
@@ -26,9 +32,11 @@
 namespace squawk::sim::fields {
 
 struct Absent {};
-// One field's value: a number, a flag, a text, a route (a list of waypoints,
-// written with kWaypoint) or nothing.
-using Value = std::variant<Absent, double, bool, std::string_view, const Route*>;
+// One field's value: a number, a count (an integer in Lua and JSON), a flag,
+// a text, a route (a list of waypoints, written with kWaypoint), a list of
+// texts, a list of numbers or nothing.
+using Value = std::variant<Absent, double, long long, bool, std::string_view, const Route*,
+                           const std::vector<std::string>*, std::span<const double>>;
 
 template <class Row>
 struct Field {

@@ -89,7 +89,7 @@ def test_plain(squawk):
         r = command(addr, "!ALT KL204 FL9X")
         check(not r["ok"] and "FL9X" in r["message"], f"bad TrafScript names the culprit: {r['message']!r}")
         r = command(addr, "climb to flight level 300")
-        check("ask" in r and not r["ok"], f"missing callsign -> a question: {r.get('ask')!r}")
+        check(r.get("ask") and not r["ok"], f"missing callsign -> a question: {r.get('ask')!r}")
         r = command(addr, "cancel")
         check(r.get("cancelled") is True, "cancel drops the question")
 
