@@ -369,6 +369,12 @@ function M.typed(state, ctx)
       return "english"
     end
     if not scratch:check(c) then return "english" end
+    -- "KL204 turn 30 right" is a turn of 30 degrees in English, heading 030 in TrafScript:
+    -- a turn of one or two digits with a side, typed with the English word "turn", is English
+    if name == "HDG" and c:match("^(%S+)"):lower() == "turn" and c:match("^(%S+)") ~= "TURN"
+        and c:match("^%S+[%s,]+%S+[%s,]+%d%d?[%s,]+[LlRr]%a*%s*$") then
+      return "english"
+    end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
     if h and h > 360 then return "english" end

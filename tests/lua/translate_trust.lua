@@ -319,3 +319,15 @@ check(r.note ~= nil and r.note:find("traffic information ('traffic 2 o'clock, 36
 
 -- the same command in two command clauses ("hold on, pause") runs once
 check_eq(said(tr("hold on, pause")), "HOLD")
+
+-- a turn of one or two digits with a side and no "heading" is degrees of turn, also with the
+-- English word "turn" in callsign-first order; the registry's name in capitals stays TrafScript
+check_eq(said(tr("DLH4AX turn 20 left")), "HDG DLH4AX 70 LEFT")
+check_eq(said(tr("TURN DLH4AX 20 LEFT")), "HDG DLH4AX 20 LEFT")
+check_eq(said(tr("KLM77 turn left twenty")), "HDG KLM77 160 LEFT")
+-- a bare number after a side that would be a heading the long way round is asked, not guessed
+r = tr("BAW8CK turn left 200")
+check(r.ask ~= nil and r.ask:find("by 200 degrees, or fly heading 200", 1, true) ~= nil, said(r))
+check_eq(said(tr("BAW8CK turn left heading 200")), "HDG BAW8CK 200 LEFT")
+-- "plus or minus N" is a size either side, never a negative value
+check_eq(said(tr("set the vertical separation to plus or minus 800 ft")), "ZONEDH 800")
