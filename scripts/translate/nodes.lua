@@ -231,7 +231,7 @@ end
 
 -- What the offline grammar may know of the simulation: the aircraft
 -- (sim:aircraft() tables, the route as waypoint names), the user waypoints,
--- and the navdata's airports by name.
+-- and the navdata's airports by name and by three-letter code.
 function M.world(sim, waypoints)
   local aircraft = sim:aircraft()
   for _, a in ipairs(aircraft) do
@@ -241,7 +241,8 @@ function M.world(sim, waypoints)
   end
   return { aircraft = aircraft, waypoints = waypoints or {},
            airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
-           navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end }
+           navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end,
+           airports_coded = function(code, lat, lon, nm) return sim:airports_coded(code, lat, lon, nm) end }
 end
 
 function M.offline(state, ctx)
