@@ -10,10 +10,10 @@
 //                           lat, lon [deg] when given ({} without navdata)
 //   sim:navaids_named(name, lat, lon, within_nm) -> { "SFO", ... }  idents of the navaids
 //                           called `name` within within_nm of lat, lon [deg], nearest first
-//   sim:airports_coded(code, lat, lon, within_nm) -> { "KJFK", ... }  airports within within_nm of
-//                           lat, lon [deg] whose ICAO code is one letter before the three-letter
-//                           `code` and that lie within 10 nm of a navaid or fix `code` (the airport
-//                           people name by its three-letter code: JFK -> KJFK)
+//   sim:airports_coded(code, lat, lon) -> { "KJFK", ... }  airports whose ICAO code is one letter
+//                           before the three-letter `code` within 10 nm of the navaid or fix `code`
+//                           nearest lat, lon [deg] (the airport people name by the code of its
+//                           VOR: JFK -> KJFK)
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
 //                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
@@ -187,15 +187,15 @@ int l_airports_named(lua_State* L) {
 int l_airports_coded(lua_State* L) {
   command::Stack* s = self(L);
   const std::string code = text::upper(arg_string(L, 2, "code"));
-  const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon"), within = arg_number(L, 5, "within_nm");
+  const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon");
   lua_newtable(L);
   if (!s->navdb() || code.size() != 3) return 1;
+  const command::NavPoint* w = s->navdb()->waypoint(code, lat, lon);
+  if (!w) return 1;
   int k = 0;
   for (char c = 'A'; c <= 'Z'; ++c) {
     const command::NavPoint* a = s->navdb()->airport(std::string(1, c) + code);
-    if (!a || geo::kwikdist_nm(lat, lon, a->lat, a->lon) > within) continue;
-    const command::NavPoint* w = s->navdb()->waypoint(code, a->lat, a->lon);
-    if (!w || geo::kwikdist_nm(a->lat, a->lon, w->lat, w->lon) > 10.0) continue;
+    if (!a || geo::kwikdist_nm(a->lat, a->lon, w->lat, w->lon) > 10.0) continue;
     lua_pushstring(L, a->id.c_str());
     lua_rawseti(L, -2, ++k);
   }

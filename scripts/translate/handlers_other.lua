@@ -90,7 +90,11 @@ return function(H, f, compass)
     -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol")
     local named_at
     if not lat or not lon then
-      for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do named_at = named_at or r.name end
+      -- ("at JFK": the airport by its VOR's code, nearest the traffic, else anywhere: KJFK)
+      for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+        local near = self.fleet[1] or { lat = 0, lon = 0 }
+        named_at = named_at or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+      end
       named_at = named_at or self:place_by_name(s.trig + 1, s.e)
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
@@ -367,17 +371,17 @@ return function(H, f, compass)
     return nil
   end
 
-  -- The airport a place name stands for where an airport is meant (a destination, an origin of
-  -- the aircraft `id`): a three-letter code of a navaid beside an airport with that code after
-  -- one letter ("JFK" -> KJFK) within lexicon.navaid_range_nm of the aircraft, else the name
-  -- itself; several such airports are asked about.
-  function m:airport_meant(name, id)
-    local coded, a = self.world.airports_coded, self:state(id)
+  -- The airport a place name stands for where an airport is meant (a destination, an origin, where
+  -- an aircraft is created): a three-letter code of a navaid (the one of that code nearest `near`
+  -- {lat, lon} [deg]) beside an airport with that code after one letter ("JFK" -> KJFK), else the
+  -- name itself; several such airports are asked about.
+  function m:airport_meant(name, near)
+    local coded, a = self.world.airports_coded, near
     if not coded or not a or not a.lat or not name:match("^%a%a%a$") then return name end
     for _, w in ipairs(self.world.waypoints or {}) do
       if w:upper() == name:upper() then return name end  -- a user waypoint of that name
     end
-    return self:one_named(coded(name, a.lat, a.lon, L.navaid_range_nm), "airport", name, 4) or name
+    return self:one_named(coded(name, a.lat, a.lon), "airport", name, 4) or name
   end
 
   -- A name said after "direct (to)" that matches nothing known: the word as
@@ -494,7 +498,7 @@ return function(H, f, compass)
     local rest = self:route_places(named.e, s.e)
     local last = named.e
     for k, r in ipairs(rest) do
-      local airport = k == #rest and self:word(r.b - 1, "to into") and self:airport_meant(r.name:upper(), id)
+      local airport = k == #rest and self:word(r.b - 1, "to into") and self:airport_meant(r.name:upper(), self:state(id))
       if airport and airport:match("^%a%a%a%a$") then
         return self:emit("DEST " .. id .. " " .. airport)
       elseif self:word(r.b - 1, "then via and to") or (self.t[r.b - 1] or {}).text == "," then
@@ -679,7 +683,7 @@ return function(H, f, compass)
     if airport then
       self:emit(cmd .. " " .. id .. " " .. airport)
     elseif #w > 0 then
-      self:emit(cmd .. " " .. id .. " " .. self:airport_meant(w[#w].name, id))
+      self:emit(cmd .. " " .. id .. " " .. self:airport_meant(w[#w].name, self:state(id)))
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
     else

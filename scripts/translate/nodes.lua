@@ -242,7 +242,7 @@ function M.world(sim, waypoints)
   return { aircraft = aircraft, waypoints = waypoints or {},
            airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
            navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end,
-           airports_coded = function(code, lat, lon, nm) return sim:airports_coded(code, lat, lon, nm) end }
+           airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end }
 end
 
 function M.offline(state, ctx)

@@ -238,11 +238,14 @@ if #sim:airports_named("schiphol") == 1 then
   local function ukt(text) return said(graph.translate(text, { sim = uk, mode = "offline" })) end
   check_eq(ukt("Speedbird 12 destination Birmingham"), "DEST BAW12 EGBB")
   check_eq(ukt("Logan 5 resume own navigation direct Perth"), "ADDWPT LOG5 PTH ; DIRECT LOG5 PTH")
-  -- an airport meant by its three-letter code beside its VOR (JFK -> KJFK) near the aircraft; far
-  -- away the code stays the navaid it names
+  -- an airport meant by its three-letter code beside its VOR (JFK -> KJFK), near or far; a code
+  -- whose nearest navaid has no such airport beside it (LHR: the Lahr NDB) stays as said
   check_eq(ustr("set FDX1288's origin to JFK"), "ORIG FDX1288 KJFK")
   check_eq(ustr("JBU1116 destination SFO"), "DEST JBU1116 KSFO")
-  check_eq(ustr("FDX1288 destination SFO"), "DEST FDX1288 SFO")
+  check_eq(ukt("set the origin of BAW12 to JFK"), "ORIG BAW12 KJFK")
+  check_eq(ukt("BAW12 destination LHR"), "DEST BAW12 LHR")
+  check_eq(etr("create KLM5 a B738 at JFK heading 090 FL100 250 knots"), "CRE KLM5 B738 KJFK 90 FL100 250")
+  check_eq(etr("create KLM5 a B738 over JFK heading 090 FL100 250 knots"), "CRE KLM5 B738 JFK 90 FL100 250")
   -- a destination said after a route's last place is issued, or asked about, never dropped
   check_eq(ukt("route BAW12 via DTY and then on to Heathrow"), "ADDWPT BAW12 DTY ; DEST BAW12 EGLL")
   check_eq(ustr("route FDX1288 via CRI to JFK"), "ADDWPT FDX1288 CRI ; DEST FDX1288 KJFK")
