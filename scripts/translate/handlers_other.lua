@@ -755,6 +755,11 @@ return function(H, f, compass)
   end
 
   function m:bare(_, spec) self:emit(spec.cmd) end
+  -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
+  function m:resume(s)
+    self:emit("OP")
+    if self:find_word(s.trig + 1, s.e, "at") < s.e then self:time_mult(s) end
+  end
 
   -- first quantity of one of `kinds` in the segment, or nil
   local function first(self, s, kinds)

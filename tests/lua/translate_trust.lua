@@ -244,6 +244,8 @@ if #sim:airports_named("schiphol") == 1 then
   check_eq(ustr("JBU1116 destination SFO"), "DEST JBU1116 KSFO")
   check_eq(ukt("set the origin of BAW12 to JFK"), "ORIG BAW12 KJFK")
   check_eq(ukt("BAW12 destination LHR"), "DEST BAW12 LHR")
+  -- "send X to <airport by name>" is a destination
+  check_eq(ukt("send Speedbird 12 to Gatwick"), "DEST BAW12 EGKK")
   check_eq(etr("create KLM5 a B738 at JFK heading 090 FL100 250 knots"), "CRE KLM5 B738 KJFK 90 FL100 250")
   check_eq(etr("create KLM5 a B738 over JFK heading 090 FL100 250 knots"), "CRE KLM5 B738 JFK 90 FL100 250")
   -- a destination said after a route's last place is issued, or asked about, never dropped
@@ -344,3 +346,7 @@ check(r.ask ~= nil and r.ask:find("by 200 degrees, or fly heading 200", 1, true)
 check_eq(said(tr("BAW8CK turn left heading 200")), "HDG BAW8CK 200 LEFT")
 -- "plus or minus N" is a size either side, never a negative value
 check_eq(said(tr("set the vertical separation to plus or minus 800 ft")), "ZONEDH 800")
+
+-- a clock started at a rate: OP and the rate, neither dropped
+check_eq(said(tr("resume the simulation at x3")), "OP ; DTMULT 3")
+check_eq(said(tr("resume at double speed")), "OP ; DTMULT 2")
