@@ -350,3 +350,8 @@ check_eq(said(tr("set the vertical separation to plus or minus 800 ft")), "ZONED
 -- a clock started at a rate: OP and the rate, neither dropped
 check_eq(said(tr("resume the simulation at x3")), "OP ; DTMULT 3")
 check_eq(said(tr("resume at double speed")), "OP ; DTMULT 2")
+-- a family said as its number after an article is that type; the orbit "a 360" stays an orbit
+check_eq(said(tr("add a 737 called TST9 at 52.1 north 4.3 east heading 270 FL320 450 knots")),
+  "CRE TST9 B737 52.1 4.3 270 FL320 450")
+r = tr("BAW8CK make a 360")
+check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
