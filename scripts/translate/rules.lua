@@ -166,6 +166,7 @@ return function(intent, rule, words)
   rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
+  rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
   rule { "random", "mcre", when = function(g, i)
     local t = g.t[i - 1]

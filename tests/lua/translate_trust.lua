@@ -355,3 +355,7 @@ check_eq(said(tr("add a 737 called TST9 at 52.1 north 4.3 east heading 270 FL320
   "CRE TST9 B737 52.1 4.3 270 FL320 450")
 r = tr("BAW8CK make a 360")
 check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
+-- a word in a reason starts no instruction ("so we get the same run": no OP); "the random
+-- generator" is what a seed seeds, not random traffic
+check_eq(said(tr("KLM77 climb FL300 so we get the same run each time")), "ALT KLM77 FL300")
+check_eq(said(tr("seed the random number generator with 7")), "SEED 7")
