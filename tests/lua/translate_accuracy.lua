@@ -67,7 +67,7 @@ floors("tests/data/translate_round10.tsv", 0.91, 0.005, true)
 floors("tests/data/translate_round11.tsv", 0.93, 0.005, true)
 floors("tests/data/translate_round12.tsv", 0.95, 0.005, true)
 -- R13 and R14: measured at first sight (docs/translation_ledger.md), not fixed yet; floors at that figure
-floors("tests/data/translate_round13.tsv", 0.914, 0.004, true)
+floors("tests/data/translate_round13.tsv", 0.917, 0.004, true)
 floors("tests/data/translate_round14.tsv", 0.863, 0.0, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)

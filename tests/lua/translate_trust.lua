@@ -359,3 +359,6 @@ check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= n
 -- generator" is what a seed seeds, not random traffic
 check_eq(said(tr("KLM77 climb FL300 so we get the same run each time")), "ALT KLM77 FL300")
 check_eq(said(tr("seed the random number generator with 7")), "SEED 7")
+-- the clock is the simulation's: started, stopped, started at a rate
+check_eq(said(tr("stop the clock")), "HOLD")
+check_eq(said(tr("start the clock at 2x")), "OP ; DTMULT 2")
