@@ -10,6 +10,10 @@
 //                           lat, lon [deg] when given ({} without navdata)
 //   sim:navaids_named(name, lat, lon, within_nm) -> { "SFO", ... }  idents of the navaids
 //                           called `name` within within_nm of lat, lon [deg], nearest first
+//   sim:airports_coded(code, lat, lon) -> { "KJFK", ... }  airports whose ICAO code is one letter
+//                           before the three-letter `code` within 10 nm of the navaid or fix `code`
+//                           nearest lat, lon [deg] (the airport people name by the code of its
+//                           VOR: JFK -> KJFK)
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
 //                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
@@ -56,6 +60,7 @@
 #include "command/stack.h"
 #include "core/geo.h"
 #include "core/paths.h"
+#include "core/text.h"
 #include "script/bindings.h"
 #include "script/lua_fields.h"
 #include "script/lua_util.h"
@@ -149,6 +154,24 @@ int l_airports_named(lua_State* L) {
   int k = 0;
   for (const command::NavPoint* a : s->navdb()->airports_named(name)) {
     if (near && geo::kwikdist_nm(lat, lon, a->lat, a->lon) > within) continue;
+    lua_pushstring(L, a->id.c_str());
+    lua_rawseti(L, -2, ++k);
+  }
+  return 1;
+}
+
+int l_airports_coded(lua_State* L) {
+  command::Stack* s = self(L);
+  const std::string code = text::upper(arg_string(L, 2, "code"));
+  const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon");
+  lua_newtable(L);
+  if (!s->navdb() || code.size() != 3) return 1;
+  const command::NavPoint* w = s->navdb()->waypoint(code, lat, lon);
+  if (!w) return 1;
+  int k = 0;
+  for (char c = 'A'; c <= 'Z'; ++c) {
+    const command::NavPoint* a = s->navdb()->airport(std::string(1, c) + code);
+    if (!a || geo::kwikdist_nm(a->lat, a->lon, w->lat, w->lon) > 10.0) continue;
     lua_pushstring(L, a->id.c_str());
     lua_rawseti(L, -2, ++k);
   }
@@ -438,6 +461,7 @@ void bind_sim(lua_State* L) {
       {"exec", guarded<l_exec>},         {"check", guarded<l_check>},
       {"airports_named", guarded<l_airports_named>},
       {"navaids_named", guarded<l_navaids_named>},
+      {"airports_coded", guarded<l_airports_coded>},
       {"load", guarded<l_load>},         {"step", guarded<l_step>},
       {"run_until", guarded<l_run_until>}, {"run_for", guarded<l_run_for>},
       {"time", guarded<l_time>},         {"dt", guarded<l_dt>},

@@ -250,7 +250,9 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
     if (q.kind == QKind::kAngle && q.turn == 0 && prev({"left", "right"})) q.turn = t[p - 1].text == "left" ? -1 : 1;
     if (prev({"by"})) q.by = true;
     if (prev({"to"})) q.to = true;
-    if (prev({"minus", "negative"})) {
+    if (p >= floor + 3 && word_at(t, p - 3, {"plus"}) && word_at(t, p - 2, {"or"}) && word_at(t, p - 1, {"minus"})) {
+      p -= 3;  // "plus or minus 1000 feet": a size either side, not a negative value
+    } else if (prev({"minus", "negative"})) {
       q.value = -q.value;
       --p;
     }

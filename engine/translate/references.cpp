@@ -196,6 +196,14 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
 
   // Typed aircraft ids and aircraft types.
   for (size_t i = 0; i < t.size(); ++i) {
+    // a family said as its number after an article ("a 737", "an 320"): that type
+    if (!used[i] && t[i].kind == TokKind::kNumber && t[i].raw.size() == 3 && i > 0 &&
+        (t[i - 1].text == "a" || t[i - 1].text == "an")) {
+      if (auto ty = names.aircraft_type("", t[i].raw)) {
+        add(RefKind::kType, *ty, i, i + 1, false, false);
+        continue;
+      }
+    }
     if (used[i] || !is_word(t[i])) continue;
     const std::string& raw = t[i].raw;
     if (const AircraftView* a = world_id(raw)) {

@@ -451,8 +451,9 @@ end
 function G:segments(b, e)
   local trig = {}
   for i = b, e - 1 do
+    -- (a word in a reason, "so we get the same run each time", starts no instruction)
     local intent = self:intent_at(i)
-    if intent then trig[#trig + 1] = { intent = intent, pos = i } end
+    if intent and not self:in_reason(i) then trig[#trig + 1] = { intent = intent, pos = i } end
   end
   local segs = {}
   if #trig == 0 then return { { intent = "infer", b = b, trig = b, e = e } } end

@@ -90,7 +90,11 @@ return function(H, f, compass)
     -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol")
     local named_at
     if not lat or not lon then
-      for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do named_at = named_at or r.name end
+      -- ("at JFK": the airport by its VOR's code, nearest the traffic, else anywhere: KJFK)
+      for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+        local near = self.fleet[1] or { lat = 0, lon = 0 }
+        named_at = named_at or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+      end
       named_at = named_at or self:place_by_name(s.trig + 1, s.e)
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
@@ -367,6 +371,19 @@ return function(H, f, compass)
     return nil
   end
 
+  -- The airport a place name stands for where an airport is meant (a destination, an origin, where
+  -- an aircraft is created): a three-letter code of a navaid (the one of that code nearest `near`
+  -- {lat, lon} [deg]) beside an airport with that code after one letter ("JFK" -> KJFK), else the
+  -- name itself; several such airports are asked about.
+  function m:airport_meant(name, near)
+    local coded, a = self.world.airports_coded, near
+    if not coded or not a or not a.lat or not name:match("^%a%a%a$") then return name end
+    for _, w in ipairs(self.world.waypoints or {}) do
+      if w:upper() == name:upper() then return name end  -- a user waypoint of that name
+    end
+    return self:one_named(coded(name, a.lat, a.lon), "airport", name, 4) or name
+  end
+
   -- A name said after "direct (to)" that matches nothing known: the word as
   -- spoken, or letters spelled with the phonetic alphabet. Only when there
   -- is nothing to match against.
@@ -479,12 +496,28 @@ return function(H, f, compass)
     -- "route EZY45 via TEST1 then NIK to EHAM": the next places of the route in
     -- order; the last one after "to", when an airport (four letters), is the destination
     local rest = self:route_places(named.e, s.e)
+    local last = named.e
     for k, r in ipairs(rest) do
-      if k == #rest and self:word(r.b - 1, "to") and r.name:match("^%a%a%a%a$") then
-        self:emit("DEST " .. id .. " " .. r.name:upper())
+      local airport = k == #rest and self:word(r.b - 1, "to into") and self:airport_meant(r.name:upper(), self:state(id))
+      if airport and airport:match("^%a%a%a%a$") then
+        return self:emit("DEST " .. id .. " " .. airport)
       elseif self:word(r.b - 1, "then via and to") or (self.t[r.b - 1] or {}).text == "," then
         self:emit("ADDWPT " .. id .. " " .. r.name)
+        last = r.e
       end
+    end
+    -- "... and on to Boston", "then into Heathrow": an airport said by its name after the
+    -- route's last place and "to"/"into" is the destination; a name that names no airport is
+    -- asked about, never dropped
+    -- (not "add TEST1 to the end of KLM12's route" nor "to the route": an aircraft, a route)
+    local to = self:find_word(last, s.e, "to into")
+    if to + 1 < s.e and #self:refs_in(to + 1, s.e, "aircraft") == 0 and #self:quantities(to + 1, s.e) == 0
+        and not self:word_in(to + 1, s.e, "@route_nouns") then
+      local a = self:state(id)
+      local airport = (a and self:airport_by_name(to + 1, s.e, a)) or self:airport_by_name(to + 1, s.e)
+      if airport then return self:emit("DEST " .. id .. " " .. airport) end
+      return self:need(string.format("Which airport is '%s' (the destination of %s)? Please give its ICAO code.",
+        self:raw(to + 1, s.e), id))
     end
   end
 
@@ -650,7 +683,7 @@ return function(H, f, compass)
     if airport then
       self:emit(cmd .. " " .. id .. " " .. airport)
     elseif #w > 0 then
-      self:emit(cmd .. " " .. id .. " " .. w[#w].name)
+      self:emit(cmd .. " " .. id .. " " .. self:airport_meant(w[#w].name, self:state(id)))
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
     else
@@ -722,6 +755,11 @@ return function(H, f, compass)
   end
 
   function m:bare(_, spec) self:emit(spec.cmd) end
+  -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
+  function m:resume(s)
+    self:emit("OP")
+    if self:find_word(s.trig + 1, s.e, "at") < s.e then self:time_mult(s) end
+  end
 
   -- first quantity of one of `kinds` in the segment, or nil
   local function first(self, s, kinds)

@@ -269,10 +269,12 @@ return function(H, f, wrap, compass)
       end
       if q.b > s.trig and (q.kind == "alt" or q.kind == "speed") then break end
     end
-    -- "turn right 20", "left 90": a typed number of one or two digits after a turn
-    -- direction, with no "heading", is the degrees of the turn (headings have three)
-    if #rel_c == 0 and #abs_c == 1 and abs_c[1].kind == "plain" and abs_c[1].number.typed
-        and #abs_c[1].number.digits <= 2 and not self:word_in(s.b, s.e, "heading hdg")
+    -- "turn right 20", "left thirty": a number of one or two digits, typed or said as a number
+    -- (not digit by digit, as headings are), after a turn direction, with no "heading", is the
+    -- degrees of the turn (headings have three)
+    if #rel_c == 0 and #abs_c == 1 and abs_c[1].kind == "plain"
+        and ((abs_c[1].number.typed and #abs_c[1].number.digits <= 2)
+             or (not abs_c[1].number.typed and not abs_c[1].number.lead_digit and abs_c[1].value < 100)) and not self:word_in(s.b, s.e, "heading hdg")
         and self:word_in(s.b, abs_c[1].b, "@left @right") then
       rel_c[1] = { kind = "angle", value = abs_c[1].value, b = abs_c[1].b, e = abs_c[1].e, turn = 0,
                    number = abs_c[1].number }
@@ -354,6 +356,18 @@ return function(H, f, wrap, compass)
     end
     -- the way to turn, when it was said: HDG's LEFT/RIGHT (a squawk extension)
     local way = (rel and rel.turn ~= 0 and rel.turn) or turn
+    -- "turn right 180" with "turn" and no "heading" (typed, or a number not said digit by
+    -- digit): a heading the long way round (more than half a circle) or a turn of that many
+    -- degrees? Asked. Shorthand ("rt 320") names a heading
+    if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and now and #ids == 1
+        and (abs.number.typed or not abs.number.lead_digit) and self:word_in(s.b, s.e, "turn")
+        and not self:word_in(s.b, s.e, "heading hdg") and abs.value <= 360 then
+      local long = (way * (hdg - now.hdg_deg)) % 360
+      if long > 180 then
+        return self:need(string.format("Should %s turn %s by %s degrees, or fly heading %s the long way round?",
+          id, way < 0 and "left" or "right", f.num(abs.value), f.num(wrap(hdg))))
+      end
+    end
     local suffix = way < 0 and " LEFT" or way > 0 and " RIGHT" or ""
     -- a change from the present heading is each aircraft's own, in whole degrees
     local lines = {}

@@ -66,7 +66,7 @@ return {
   then_words = { "then" },
   correction = { "correction", "disregard" },
   -- the simulation itself, not an aircraft
-  sim = { "simulation", "sim", "simulator", "time", "exercise" },
+  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock" },
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
   route_nouns = { "route", "plan" },

@@ -231,7 +231,7 @@ end
 
 -- What the offline grammar may know of the simulation: the aircraft
 -- (sim:aircraft() tables, the route as waypoint names), the user waypoints,
--- and the navdata's airports by name.
+-- and the navdata's airports by name and by three-letter code.
 function M.world(sim, waypoints)
   local aircraft = sim:aircraft()
   for _, a in ipairs(aircraft) do
@@ -241,7 +241,8 @@ function M.world(sim, waypoints)
   end
   return { aircraft = aircraft, waypoints = waypoints or {},
            airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
-           navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end }
+           navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end,
+           airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end }
 end
 
 function M.offline(state, ctx)
@@ -369,6 +370,12 @@ function M.typed(state, ctx)
       return "english"
     end
     if not scratch:check(c) then return "english" end
+    -- "KL204 turn 30 right" is a turn of 30 degrees in English, heading 030 in TrafScript:
+    -- a turn of one or two digits with a side, typed with the English word "turn", is English
+    if name == "HDG" and c:match("^(%S+)"):lower() == "turn" and c:match("^(%S+)") ~= "TURN"
+        and c:match("^%S+[%s,]+%S+[%s,]+%d%d?[%s,]+[LlRr]%a*%s*$") then
+      return "english"
+    end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
     if h and h > 360 then return "english" end

@@ -47,7 +47,7 @@ return function(intent, rule, words)
                   absorbs = true }
   intent "bank" { cmd = "BANK", args = { "acid", "bankangle" }, handler = "bank" }
   intent "hold" { cmd = "HOLD", handler = "bare" }
-  intent "op" { cmd = "OP", handler = "bare" }
+  intent "op" { cmd = "OP", handler = "resume" }
   intent "reset" { cmd = "RESET", handler = "bare" }
   intent "ff" { cmd = "FF", also = { "DTMULT" }, args = { "seconds" }, handler = "fast_forward" }
   intent "dt" { cmd = "DT", args = { "dt" }, handler = "time_step" }
@@ -166,6 +166,7 @@ return function(intent, rule, words)
   rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
+  rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
   rule { "random", "mcre", when = function(g, i)
     local t = g.t[i - 1]
@@ -211,13 +212,15 @@ return function(intent, rule, words)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
   end }
   rule { "destination dest", "dest" }
-  -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent to
+  -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
+  -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata
   rule { "send", "dest", when = function(g, i)
     local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
     for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
       if r.name:match("^%a%a%a%a$") then return true end
     end
-    return false
+    local t, named = g.t[to + 1], g.world.airports_named
+    return named ~= nil and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4 and #named(t.text) > 0
   end }
   -- "fly to TEST1": a waypoint the simulation knows is flown to directly; other places are destinations
   rule { "fly", "direct", next = "to", when = function(g, i)
@@ -305,8 +308,10 @@ return function(intent, rule, words)
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x" } }
+  -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
+      or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x"))))
   end }
   rule { "real", false, prev = { 1, "than" } }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }

@@ -8,11 +8,11 @@ local sim = squawk.sim.new()
 check(sim:exec("CRE KL204 A320 52 4 90 FL250 280"))
 local function say(text) return graph.translate(text, { sim = sim, mode = "offline" }) end
 
--- "stop the clock" is not in the shipped grammar: it asks.
-check(say("stop the clock").ask ~= nil, "unknown phrasing asks")
+-- "stop the film" is not in the shipped grammar: it asks.
+check(say("stop the film").ask ~= nil, "unknown phrasing asks")
 -- One line adds it (as it would in scripts/translate/rules.lua) ...
-grammar.rule { "clock", "hold", prev = { 2, "stop" } }
-local r = say("stop the clock")
+grammar.rule { "film", "hold", prev = { 2, "stop" } }
+local r = say("stop the film")
 check_eq(r.commands and r.commands[1], "HOLD", "the new phrase translates")
 -- ... and a new wording for a command with arguments.
 check(say("KL204 swing onto 270").ask ~= nil, "a verb it does not know asks")

@@ -238,6 +238,21 @@ if #sim:airports_named("schiphol") == 1 then
   local function ukt(text) return said(graph.translate(text, { sim = uk, mode = "offline" })) end
   check_eq(ukt("Speedbird 12 destination Birmingham"), "DEST BAW12 EGBB")
   check_eq(ukt("Logan 5 resume own navigation direct Perth"), "ADDWPT LOG5 PTH ; DIRECT LOG5 PTH")
+  -- an airport meant by its three-letter code beside its VOR (JFK -> KJFK), near or far; a code
+  -- whose nearest navaid has no such airport beside it (LHR: the Lahr NDB) stays as said
+  check_eq(ustr("set FDX1288's origin to JFK"), "ORIG FDX1288 KJFK")
+  check_eq(ustr("JBU1116 destination SFO"), "DEST JBU1116 KSFO")
+  check_eq(ukt("set the origin of BAW12 to JFK"), "ORIG BAW12 KJFK")
+  check_eq(ukt("BAW12 destination LHR"), "DEST BAW12 LHR")
+  -- "send X to <airport by name>" is a destination
+  check_eq(ukt("send Speedbird 12 to Gatwick"), "DEST BAW12 EGKK")
+  check_eq(etr("create KLM5 a B738 at JFK heading 090 FL100 250 knots"), "CRE KLM5 B738 KJFK 90 FL100 250")
+  check_eq(etr("create KLM5 a B738 over JFK heading 090 FL100 250 knots"), "CRE KLM5 B738 JFK 90 FL100 250")
+  -- a destination said after a route's last place is issued, or asked about, never dropped
+  check_eq(ukt("route BAW12 via DTY and then on to Heathrow"), "ADDWPT BAW12 DTY ; DEST BAW12 EGLL")
+  check_eq(ustr("route FDX1288 via CRI to JFK"), "ADDWPT FDX1288 CRI ; DEST FDX1288 KJFK")
+  local r2 = graph.translate("route BAW12 via DTY and on to Gotham City", { sim = uk, mode = "offline" })
+  check(r2.ask ~= nil and r2.ask:find("'Gotham City'", 1, true) ~= nil, said(r2))
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
@@ -319,3 +334,31 @@ check(r.note ~= nil and r.note:find("traffic information ('traffic 2 o'clock, 36
 
 -- the same command in two command clauses ("hold on, pause") runs once
 check_eq(said(tr("hold on, pause")), "HOLD")
+
+-- a turn of one or two digits with a side and no "heading" is degrees of turn, also with the
+-- English word "turn" in callsign-first order; the registry's name in capitals stays TrafScript
+check_eq(said(tr("DLH4AX turn 20 left")), "HDG DLH4AX 70 LEFT")
+check_eq(said(tr("TURN DLH4AX 20 LEFT")), "HDG DLH4AX 20 LEFT")
+check_eq(said(tr("KLM77 turn left twenty")), "HDG KLM77 160 LEFT")
+-- a bare number after a side that would be a heading the long way round is asked, not guessed
+r = tr("BAW8CK turn left 200")
+check(r.ask ~= nil and r.ask:find("by 200 degrees, or fly heading 200", 1, true) ~= nil, said(r))
+check_eq(said(tr("BAW8CK turn left heading 200")), "HDG BAW8CK 200 LEFT")
+-- "plus or minus N" is a size either side, never a negative value
+check_eq(said(tr("set the vertical separation to plus or minus 800 ft")), "ZONEDH 800")
+
+-- a clock started at a rate: OP and the rate, neither dropped
+check_eq(said(tr("resume the simulation at x3")), "OP ; DTMULT 3")
+check_eq(said(tr("resume at double speed")), "OP ; DTMULT 2")
+-- a family said as its number after an article is that type; the orbit "a 360" stays an orbit
+check_eq(said(tr("add a 737 called TST9 at 52.1 north 4.3 east heading 270 FL320 450 knots")),
+  "CRE TST9 B737 52.1 4.3 270 FL320 450")
+r = tr("BAW8CK make a 360")
+check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
+-- a word in a reason starts no instruction ("so we get the same run": no OP); "the random
+-- generator" is what a seed seeds, not random traffic
+check_eq(said(tr("KLM77 climb FL300 so we get the same run each time")), "ALT KLM77 FL300")
+check_eq(said(tr("seed the random number generator with 7")), "SEED 7")
+-- the clock is the simulation's: started, stopped, started at a rate
+check_eq(said(tr("stop the clock")), "HOLD")
+check_eq(said(tr("start the clock at 2x")), "OP ; DTMULT 2")
