@@ -20,9 +20,9 @@
 // Prints figures only; no timing is asserted anywhere.
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <string>
 #include <thread>
 #include <vector>
@@ -30,9 +30,9 @@
 #include <lua.hpp>
 
 #include "core/geo.h"
+#include "core/paths.h"
 #include "core/rng.h"
 #include "core/units.h"
-#include "core/paths.h"
 #include "env/horizontal_cr.h"
 #include "script/lua_env.h"
 #include "script/scenario.h"
@@ -49,12 +49,12 @@ constexpr double kBlueSkyGymZero = 132.2;    // env steps/s, measured (zero acti
 // measured at load average 16 on the 2-core machine; HorizontalCREnv's figures above were taken idle.
 constexpr double kBlueSkyGymDescent = 5.9;
 constexpr double kBlueSkyGymVerticalCr = 13.4;  // VerticalCREnv-v0, the same way, load average 17-20
-// PlanWaypointEnv-v0 and StaticObstacleEnv-v0 (one env step = 10 x 1 s simulator steps), the same way,
-// 30 episodes each, load average 7-20 (docs/gym_envs.md).
+// PlanWaypointEnv-v0 and StaticObstacleEnv-v0 (one env step = 10 x 1 s simulator steps), the same
+// way, 30 episodes each, load average 7-20 (docs/gym_envs.md).
 constexpr double kBlueSkyGymPlanWaypoint = 32.4;
 constexpr double kBlueSkyGymStaticObstacle = 27.0;
-// SectorCREnv-v0 and MergeEnv-v0 on the real BlueSky, measured the same way (compare.py, random/zero/-1
-// episodes together, step() only), load average 14 on the 2-core machine.
+// SectorCREnv-v0 and MergeEnv-v0 on the real BlueSky, measured the same way (compare.py,
+// random/zero/-1 episodes together, step() only), load average 14 on the 2-core machine.
 constexpr double kBlueSkyGymSectorCr = 34.0;
 constexpr double kBlueSkyGymMerge = 21.4;
 
@@ -285,12 +285,14 @@ void form_rows(const char* name, const char* scenario, const char* lua_file, dou
   }
   lua.steps = cpp.steps;  // the same episodes (the reward sums below agree)
   const auto row = [&](const std::string& form, const Run& r) {
-    std::printf("  %-30s %-44s %10.0f env steps/s (CPU) %7.0f episodes/s  reward sum %.17g\n", name, form.c_str(),
-                static_cast<double>(r.steps) / r.seconds, static_cast<double>(r.episodes) / r.seconds, r.checksum);
+    std::printf("  %-30s %-44s %10.0f env steps/s (CPU) %7.0f episodes/s  reward sum %.17g\n", name,
+                form.c_str(), static_cast<double>(r.steps) / r.seconds,
+                static_cast<double>(r.episodes) / r.seconds, r.checksum);
   };
   const auto ratio = [&](const std::string& form, const Run& r) {
-    std::printf("  %-30s %-44s %.2f x the C++ form's CPU time (%+.1f %% steps/s), rewards %s\n", name, form.c_str(),
-                r.seconds / cpp.seconds, 100.0 * (cpp.seconds / r.seconds - 1.0),
+    std::printf("  %-30s %-44s %.2f x the C++ form's CPU time (%+.1f %% steps/s), rewards %s\n",
+                name, form.c_str(), r.seconds / cpp.seconds,
+                100.0 * (cpp.seconds / r.seconds - 1.0),
                 r.checksum == cpp.checksum && r.episodes == cpp.episodes ? "identical" : "DIFFER");
   };
   row(std::string("C++ form, ") + scenario, cpp);
@@ -347,28 +349,33 @@ Run drive_multi(int agents, double seconds) {
 // 5 x 1 s simulator steps of 5-26 aircraft per env step; envs/merge.lua:
 // 10 x 5 s of 20 aircraft on routes).
 void traffic_rows(double seconds) {
-  std::printf("Lua traffic environments (sector: 5 x 1 s simulator steps of 5-26 aircraft per env step; "
-              "merge: 10 x 5 s of 20):\n");
-  print("SectorCREnv-v0 (envs/sector_cr.lua), random, 1 thread", drive_lua("envs/sector_cr.lua", true, seconds, 1),
-        kBlueSkyGymSectorCr);
-  print("MergeEnv-v0 (envs/merge.lua), random, 1 thread", drive_lua("envs/merge.lua", true, seconds, 1),
-        kBlueSkyGymMerge);
+  std::printf(
+      "Lua traffic environments (sector: 5 x 1 s simulator steps of 5-26 aircraft per env step; "
+      "merge: 10 x 5 s of 20):\n");
+  print("SectorCREnv-v0 (envs/sector_cr.lua), random, 1 thread",
+        drive_lua("envs/sector_cr.lua", true, seconds, 1), kBlueSkyGymSectorCr);
+  print("MergeEnv-v0 (envs/merge.lua), random, 1 thread",
+        drive_lua("envs/merge.lua", true, seconds, 1), kBlueSkyGymMerge);
   const Run multi = drive_multi(10, seconds);
   std::printf("  %-56s %12.0f env steps/s  %8.0f episodes/s  (no BlueSky-Gym counterpart)\n",
-              "SectorMultiCR (envs/sector_multi.lua), 10 agents, random", multi.steps / multi.seconds,
-              multi.episodes / multi.seconds);
+              "SectorMultiCR (envs/sector_multi.lua), 10 agents, random",
+              multi.steps / multi.seconds, multi.episodes / multi.seconds);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::atof(argv[1]) : 2.0;
-  const bool forms_only = argc > 2 && std::string(argv[2]) == "forms";  // bench_env S forms: those rows alone
+  const bool forms_only =
+      argc > 2 && std::string(argv[2]) == "forms";  // bench_env S forms: those rows alone
   std::printf("bench_env: %.1f s per row; one env step = 10 sub-steps of 5 s, 6 aircraft\n", seconds);
-  std::printf("HorizontalCR, C++ form and Lua form (same episodes and random actions, 1 thread, CPU time):\n");
-  form_rows("paper rules (Table 3 eval)", "scenarios/horizontal_cr.lua", "envs/horizontal_cr.lua", seconds);
-  form_rows("gym rules (HorizontalCREnv-v0)", "scenarios/horizontal_cr_gym.lua", "envs/horizontal_cr_gym.lua",
+  std::printf(
+      "HorizontalCR, C++ form and Lua form (same episodes and random actions, 1 thread, CPU "
+      "time):\n");
+  form_rows("paper rules (Table 3 eval)", "scenarios/horizontal_cr.lua", "envs/horizontal_cr.lua",
             seconds);
+  form_rows("gym rules (HorizontalCREnv-v0)", "scenarios/horizontal_cr_gym.lua",
+            "envs/horizontal_cr_gym.lua", seconds);
   if (forms_only) return 0;
   std::printf("gym rules (HorizontalCREnv-v0, ground cap 89 m/s):\n");
   print("random actions, 1 thread", drive(env::Rules::kGym, true, seconds, 1), kBlueSkyGymRandom);

@@ -50,7 +50,8 @@ int cmd_train_gpt2(const ArgV& argv) {
     return usage_error("train", "--mirror: " + st.message());
   rl::TrainConfig cfg = sc.train;
   const double lr_default = popts->model == "tiny" ? cfg.lr : script::kGpt2FolderLr;
-  if (Status st = apply_learner_flags(*args, script::kGpt2TrainEpisodes, lr_default, cfg); !st.is_ok())
+  if (Status st = apply_learner_flags(*args, script::kGpt2TrainEpisodes, lr_default, cfg);
+      !st.is_ok())
     return usage_error("train", st.message());
   auto validation = validation_seed(*args, sc.eval_seed);
   if (!validation) return usage_error("train", validation.status().message());
@@ -69,8 +70,10 @@ int cmd_train_gpt2(const ArgV& argv) {
   auto learner = script::make_learner(lo, sc, vo);
   if (!learner) return failure(learner.status());
   if (resuming) {
-    if (Status st = check_resume_seed(*run, learner->progress().seed, cfg.seed); !st.is_ok()) return failure(st);
-    if (Status st = check_resume_mirror(run->checkpoint, learner->mirror(), popts->spec.mirror); !st.is_ok())
+    if (Status st = check_resume_seed(*run, learner->progress().seed, cfg.seed); !st.is_ok())
+      return failure(st);
+    if (Status st = check_resume_mirror(run->checkpoint, learner->mirror(), popts->spec.mirror);
+        !st.is_ok())
       return failure(st);
   }
   rl::Policy& policy = *learner->policy;
@@ -86,21 +89,25 @@ int cmd_train_gpt2(const ArgV& argv) {
   if (!eval_envs) return failure(eval_envs.status());
   rl::Trainer trainer(policy, *train_envs, cfg, meta.progress.updates);
   if (learner->restore) {
-    if (Status st = trainer.restore(*learner->restore); !st.is_ok()) return failure(st.with_context(lo.from));
+    if (Status st = trainer.restore(*learner->restore); !st.is_ok())
+      return failure(st.with_context(lo.from));
   }
   auto log = TrainLog::open(*run, meta.progress.episodes);
   if (!log) return failure(log.status());
 
   const bool quiet = args->has("--quiet");
   if (!quiet)
-    std::printf("training gpt2 (%s, %d trainable blocks%s, head %s, %zu trainable parameters) on %s: "
-                "%s, estimator %s, lr %g, seed %llu%s%s\n",
-                meta.source.c_str(), meta.spec.trainable_blocks, meta.spec.train_embeddings ? " and the embeddings" : "",
-                meta.spec.head.c_str(), policy.params().size(),
-                sc.path.c_str(), episodes_text(cfg).c_str(), cfg.estimator.c_str(), cfg.lr,
-                static_cast<unsigned long long>(cfg.seed),
-                resuming ? " (resumed)" : init_path.empty() ? "" : (" (from " + init_path + ")").c_str(),
-                ranks_text().c_str());
+    std::printf(
+        "training gpt2 (%s, %d trainable blocks%s, head %s, %zu trainable parameters) on %s: "
+        "%s, estimator %s, lr %g, seed %llu%s%s\n",
+        meta.source.c_str(), meta.spec.trainable_blocks,
+        meta.spec.train_embeddings ? " and the embeddings" : "", meta.spec.head.c_str(),
+        policy.params().size(), sc.path.c_str(), episodes_text(cfg).c_str(), cfg.estimator.c_str(),
+        cfg.lr, static_cast<unsigned long long>(cfg.seed),
+        resuming            ? " (resumed)"
+        : init_path.empty() ? ""
+                            : (" (from " + init_path + ")").c_str(),
+        ranks_text().c_str());
   // The bar counts episodes as they finish inside an update (a GPT-2 small
   // update takes minutes); its ETA covers the rest of this run.
   ProgressBar bar("train gpt2", cfg.end_episodes(), !quiet);
@@ -111,7 +118,8 @@ int cmd_train_gpt2(const ArgV& argv) {
     if (!quiet) bar.note(line);
   };
   auto within = [&](long long done) {
-    bar.update(meta.progress.episodes + done, "(update " + std::to_string(trainer.updates() + 1) + ")");
+    bar.update(meta.progress.episodes + done,
+               "(update " + std::to_string(trainer.updates() + 1) + ")");
     return !InterruptGuard::requested();
   };
   auto ended = rl::run_training(
@@ -119,14 +127,18 @@ int cmd_train_gpt2(const ArgV& argv) {
       [&](const rl::UpdateReport& u) -> Result<bool> {
         SQUAWK_RETURN_IF_ERROR(sc.reward_error());
         log->add(meta.progress, u.stats);
-        note("update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, %.2f s\n",
-             u.progress.updates, u.progress.episodes, u.stats.samples, u.stats.mean_return,
-             100.0 * u.stats.success_rate, u.stats.entropy, u.update_s);
+        note(
+            "update %lld: %lld episodes, %d decisions, return %.3f, success %.1f %%, entropy %.3f, "
+            "%.2f s\n",
+            u.progress.updates, u.progress.episodes, u.stats.samples, u.stats.mean_return,
+            100.0 * u.stats.success_rate, u.stats.entropy, u.update_s);
         if (u.eval) {
           SQUAWK_RETURN_IF_ERROR(log->row(meta.progress, *u.eval));
-          note("%lld episodes: eval success %.1f %%, mean reward %.3f (%lld episodes), most frequent action %.1f %%\n",
-               u.progress.episodes, 100.0 * u.eval->success_rate, u.eval->mean_reward, u.eval->episodes,
-               100.0 * u.eval->most_frequent_share());
+          note(
+              "%lld episodes: eval success %.1f %%, mean reward %.3f (%lld episodes), most "
+              "frequent action %.1f %%\n",
+              u.progress.episodes, 100.0 * u.eval->success_rate, u.eval->mean_reward,
+              u.eval->episodes, 100.0 * u.eval->most_frequent_share());
         }
         // rank 0 alone writes; the other ranks hold the same state
         if (dist::rank() == 0) SQUAWK_RETURN_IF_ERROR(learner->save(run->checkpoint, &trainer));

@@ -213,7 +213,8 @@ int run_pipe(script::ReplSession& session, bool echo) {
   int status = kExitOk;
   while (std::getline(std::cin, line)) {
     print_tick(session, clock.lap());
-    if (echo && !text::trim(line).empty()) std::printf("%s\n", std::string(text::trim(line)).c_str());
+    if (echo && !text::trim(line).empty())
+      std::printf("%s\n", std::string(text::trim(line)).c_str());
     if (!reply_to(session, line, status)) break;
   }
   return status;

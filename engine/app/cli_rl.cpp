@@ -18,8 +18,8 @@
 #include "env/vec_env.h"
 #include "rl/baseline_policies.h"
 #include "rl/checkpoint.h"
-#include "script/learner.h"
 #include "rl/train_run.h"
+#include "script/learner.h"
 #include "script/scenario.h"
 
 namespace squawk::app {
@@ -68,8 +68,10 @@ int cmd_train(const ArgV& given) {
   rl::Policy* policy = learner->policy.get();
   rl::TrainProgress& progress = learner->progress();
   if (run->resuming) {
-    if (Status st = check_resume_seed(*run, progress.seed, cfg.seed); !st.is_ok()) return failure(st);
-    if (Status st = check_resume_mirror(run->checkpoint, learner->mirror(), sc.policy.mirror); !st.is_ok())
+    if (Status st = check_resume_seed(*run, progress.seed, cfg.seed); !st.is_ok())
+      return failure(st);
+    if (Status st = check_resume_mirror(run->checkpoint, learner->mirror(), sc.policy.mirror);
+        !st.is_ok())
       return failure(st);
   }
   progress.estimator = cfg.estimator;
@@ -85,7 +87,8 @@ int cmd_train(const ArgV& given) {
   const long long m = cfg.episodes_per_update;
   rl::Trainer trainer(*policy, *train_envs, cfg, progress.episodes / m);
   if (learner->restore) {
-    if (Status st = trainer.restore(*learner->restore); !st.is_ok()) return failure(st.with_context(run->checkpoint));
+    if (Status st = trainer.restore(*learner->restore); !st.is_ok())
+      return failure(st.with_context(run->checkpoint));
   }
   auto log = TrainLog::open(*run, progress.episodes);
   if (!log) return failure(log.status());
@@ -101,7 +104,8 @@ int cmd_train(const ArgV& given) {
   double best_success = -1.0;
   InterruptGuard interrupt;
   auto ended = rl::run_training(
-      trainer, *policy, *eval_envs, cfg, *validation, progress, [](long long) { return !InterruptGuard::requested(); },
+      trainer, *policy, *eval_envs, cfg, *validation, progress,
+      [](long long) { return !InterruptGuard::requested(); },
       [&](const rl::UpdateReport& u) -> Result<bool> {
         log->add(progress, u.stats);
         SQUAWK_RETURN_IF_ERROR(sc.reward_error());
@@ -117,8 +121,10 @@ int cmd_train(const ArgV& given) {
         }
         if (!quiet) {
           char line[160];
-          std::snprintf(line, sizeof line, "%lld episodes, %.0f s: eval success %.1f %%, mean reward %.3f\n",
-                        u.progress.episodes, u.progress.wall_s, 100.0 * u.eval->success_rate, u.eval->mean_reward);
+          std::snprintf(line, sizeof line,
+                        "%lld episodes, %.0f s: eval success %.1f %%, mean reward %.3f\n",
+                        u.progress.episodes, u.progress.wall_s, 100.0 * u.eval->success_rate,
+                        u.eval->mean_reward);
           bar.note(line);
         }
         return true;
@@ -137,8 +143,7 @@ int cmd_train(const ArgV& given) {
   bar.finish();
   // The policy alone (no optimiser state): what `squawk eval --checkpoint` needs.
   const std::string policy_path = out + "/policy.ckpt";
-  if (Status s = save_on_rank0(*learner, policy_path, nullptr); !s.is_ok())
-    return failure(s);
+  if (Status s = save_on_rank0(*learner, policy_path, nullptr); !s.is_ok()) return failure(s);
   if (!quiet)
     std::printf("done: %lld episodes in %s; checkpoint %s, best %s, policy %s, log %s\n", progress.episodes,
                 fmt_duration(progress.wall_s).c_str(), run->checkpoint.c_str(), best_path.c_str(),

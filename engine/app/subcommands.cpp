@@ -20,9 +20,12 @@ namespace squawk::app {
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
-      {"demo", "demo                      the team loop: agent -> English -> translator -> simulator",
-       "usage: squawk demo [--policy mlp|gpt2] [--checkpoint FILE] [--seed N] [--record FILE.jsonl]\n"
-       "                   [--svg FILE.svg] [--scenario FILE.lua] [--advisory FILE.lua] [--quiet]\n\n"
+      {"demo",
+       "demo                      the team loop: agent -> English -> translator -> simulator",
+       "usage: squawk demo [--policy mlp|gpt2] [--checkpoint FILE] [--seed N] [--record "
+       "FILE.jsonl]\n"
+       "                   [--svg FILE.svg] [--scenario FILE.lua] [--advisory FILE.lua] "
+       "[--quiet]\n\n"
        "Runs one conflict episode of the paper's HorizontalCR evaluation setup\n"
        "(scenarios/horizontal_cr.lua) as a team: the deconfliction agent (the shipped\n"
        "trained MLP, or with --policy gpt2 the shipped fine-tuned tiny GPT-2 prompt\n"
@@ -36,8 +39,7 @@ const std::vector<Subcommand>& subcommands() {
        "  --seed N        the episode: the first of seed N's sequence that needs the agent\n"
        "  --record FILE   write the episode as JSON lines (for `squawk render`)\n"
        "  --svg FILE      draw the episode (Fig. 2 style)\n"
-       "Exit 1 when an advisory could not be translated or executed.\n"
-       SQUAWK_VM_FLAGS_HELP,
+       "Exit 1 when an advisory could not be translated or executed.\n" SQUAWK_VM_FLAGS_HELP,
        cmd_demo},
       {"run", "run FILE.lua [ARGS...]   run a Lua script (the script sees ARGS as `arg`)",
        "usage: squawk run FILE.lua [ARGS...] [--seed N] [--unsafe] [--out DIR]\n"
@@ -71,10 +73,11 @@ const std::vector<Subcommand>& subcommands() {
        "  check_near(got, want, tol, [msg])  passes when |got - want| <= tol\n"
        "A failed check prints file:line and the values; the script goes on. A script\n"
        "passes when it ends without error and with no failed check. The last line\n"
-       "is `N passed, N failed`; the exit code is 1 when any script failed.\n"
-       SQUAWK_VM_FLAGS_HELP,
+       "is `N passed, N failed`; the exit code is 1 when any script failed.\n" SQUAWK_VM_FLAGS_HELP,
        cmd_test},
-      {"gpt2", "gpt2 info|generate|logits|bench|init|train-bpe|pretrain|imitate   the GPT-2 engine on the CPU",
+      {"gpt2",
+       "gpt2 info|generate|logits|bench|init|train-bpe|pretrain|imitate   the GPT-2 engine on the "
+       "CPU",
        "usage: squawk gpt2 info DIR\n"
        "       squawk gpt2 generate DIR \"PROMPT\" [--max-tokens N] [--top-k K] [--seed N]\n"
        "       squawk gpt2 logits DIR \"TEXT\" [--json]\n"
@@ -134,10 +137,11 @@ const std::vector<Subcommand>& subcommands() {
        "              greedy action; after each round --epochs passes (default 8) of\n"
        "              cross-entropy in batches of --batch (64), Adam at --lr (3e-4).\n"
        "              Prints the agreement on --holdout 200 held-out MLP episodes\n"
-       "              after each epoch and writes OUT.ckpt (squawk eval reads it)\n"
-       SQUAWK_GPT2_FLAGS_HELP SQUAWK_VM_FLAGS_HELP,
+       "              after each epoch and writes OUT.ckpt (squawk eval reads "
+       "it)\n" SQUAWK_GPT2_FLAGS_HELP SQUAWK_VM_FLAGS_HELP,
        cmd_gpt2},
-      {"render", "render EPISODE.jsonl|SCENARIO.lua|SCENARIO.scn   draw an episode or traffic as SVG",
+      {"render",
+       "render EPISODE.jsonl|SCENARIO.lua|SCENARIO.scn   draw an episode or traffic as SVG",
        "usage: squawk render EPISODE.jsonl [--episode K] [--frame N] [--size PX]\n"
        "                     [--out FILE.svg|-]\n"
        "       squawk render SCENARIO.lua [--seed N] [--size PX] [--out FILE.svg|-]\n"
@@ -213,8 +217,7 @@ const std::vector<Subcommand>& subcommands() {
        "The LLM comes from --llm-url/--llm-model/--llm-api or SQUAWK_LLM_URL,\n"
        "SQUAWK_LLM_MODEL, SQUAWK_LLM_API; with none (or when the server fails) the\n"
        "offline grammar translates. The default mode is multi with an LLM, else\n"
-       "offline.\n"
-       SQUAWK_VM_FLAGS_HELP,
+       "offline.\n" SQUAWK_VM_FLAGS_HELP,
        cmd_repl},
       {"serve", "serve [SCENARIO.scn]       the radar scope in a browser, simulation running live",
        "usage: squawk serve [SCENARIO.scn] [--port N] [--host ADDR] [--allow-host NAME[,NAME]]\n"
@@ -246,8 +249,7 @@ const std::vector<Subcommand>& subcommands() {
        "POST /api/auto {\"on\"}, GET /api/navdata?south=&north=&west=&east=,\n"
        "GET /api/geo?south=&north=&west=&east=&step=. The page at /?capture=1 draws one\n"
        "state without the push stream (for headless screenshots). docs/scope_guide.md\n"
-       "explains the scope.\n"
-       SQUAWK_VM_FLAGS_HELP,
+       "explains the scope.\n" SQUAWK_VM_FLAGS_HELP,
        cmd_serve},
       {"llm", "llm chat TEXT | llm embed TEXT   ask the configured LLM server directly",
        "usage: squawk llm chat TEXT... [--stream] [--system TEXT] [--llm-url URL]\n"
@@ -280,8 +282,8 @@ const std::vector<Subcommand>& subcommands() {
        "  --json                one JSON object: env, policy, episodes, seed, mean_reward,\n"
        "                        std_reward, mean_length, terminated, truncated, steps_per_s\n"
        "With BlueSky's OpenAP data (--openap DIR or SQUAWK_OPENAP) the aircraft fly\n"
-       "OpenAP's limits, as in BlueSky-Gym; without it squawk's class model.\n"
-       SQUAWK_VM_FLAGS_HELP,
+       "OpenAP's limits, as in BlueSky-Gym; without it squawk's class "
+       "model.\n" SQUAWK_VM_FLAGS_HELP,
        cmd_env},
       {"scn", "scn FILE.scn               run a BlueSky scenario headless and summarise it",
        "usage: squawk scn FILE.scn [--until SECONDS] [--navdata DIR] [--dump-json] [--seed N]\n"
@@ -316,8 +318,10 @@ const std::vector<Subcommand>& subcommands() {
        "the whole registry as a JSON array of {name, aliases, args, usage, help,\n"
        "examples}; the translator and its retrieval index read this.\n",
        cmd_commands},
-      {"translate", "translate \"TEXT\" [--scenario FILE]  English -> TrafScript (the translation graph)",
-       "usage: squawk translate \"TEXT\" [--scenario FILE] [--setup \"CMD ; CMD\"] [--mode M] [--jsonl]\n"
+      {"translate",
+       "translate \"TEXT\" [--scenario FILE]  English -> TrafScript (the translation graph)",
+       "usage: squawk translate \"TEXT\" [--scenario FILE] [--setup \"CMD ; CMD\"] [--mode M] "
+       "[--jsonl]\n"
        "       squawk translate --tsv CORPUS.tsv [--mode M]\n\n"
        "Translates a controller's or experimenter's request into TrafScript through\n"
        "the translation graph (scripts/translate/graph.lua; offline mode: the Lua\n"
@@ -331,15 +335,18 @@ const std::vector<Subcommand>& subcommands() {
        "  --scenario FILE  a .scn file whose time-0 commands set up the traffic\n"
        "  --setup CMDS     TrafScript commands run first, separated by ';'\n"
        "  --mode M         offline (default), single or multi (LLM modes need SQUAWK_LLM_URL)\n"
-       "  --jsonl          print {\"output\": ...}, {\"ask\": ...} or {\"error\": ...} as one JSON line\n"
+       "  --jsonl          print {\"output\": ...}, {\"ask\": ...} or {\"error\": ...} as one JSON "
+       "line\n"
        "  --tsv CORPUS     run each case of a corpus (id setup utterance expected\n"
        "                   category) on a fresh simulation after its setup and print\n"
        "                   one JSON line per case: {\"id\", \"output\"} or {\"id\", \"ask\"};\n"
-       "                   named places read navdata from --navdata or SQUAWK_NAVDATA\n"
-       SQUAWK_VM_FLAGS_HELP,
+       "                   named places read navdata from --navdata or "
+       "SQUAWK_NAVDATA\n" SQUAWK_VM_FLAGS_HELP,
        cmd_translate},
-      {"eval-translate", "eval-translate CORPUS.tsv [--mode M]  translation right/asked/wrong per category",
-       "usage: squawk eval-translate CORPUS.tsv [--mode offline|single|multi] [--no-verify] [--failures] [--json]\n\n"
+      {"eval-translate",
+       "eval-translate CORPUS.tsv [--mode M]  translation right/asked/wrong per category",
+       "usage: squawk eval-translate CORPUS.tsv [--mode offline|single|multi] [--no-verify] "
+       "[--failures] [--json]\n\n"
        "Translates every case of a corpus through the translation graph on a fresh\n"
        "simulation after the case's setup and scores it with the corpus rules\n"
        "(shared/corpora/README.md): aliases folded, altitudes within 50 ft, headings\n"
@@ -352,23 +359,26 @@ const std::vector<Subcommand>& subcommands() {
        "                   SQUAWK_LLM_URL (an LLM server)\n"
        "  --no-verify      multi mode without the verifier node (paper Table 2)\n"
        "  --failures       list the cases it got wrong or asked, with what it produced\n"
-       "  --json           print the figures as JSON\n"
-       SQUAWK_VM_FLAGS_HELP,
+       "  --json           print the figures as JSON\n" SQUAWK_VM_FLAGS_HELP,
        cmd_eval_translate},
-      {"train", "train SCENARIO.lua --out DIR   train a conflict-resolution policy (MLP, or --policy gpt2)",
+      {"train",
+       "train SCENARIO.lua --out DIR   train a conflict-resolution policy (MLP, or --policy gpt2)",
        "usage: squawk train SCENARIO.lua --out DIR [--policy mlp|gpt2] [--episodes N] [--seed N]\n"
-       "                    [--estimator vpg|improved|ppo|vine] [--lr X] [--lr-final X] [--envs N]\n"
+       "                    [--estimator vpg|improved|ppo|vine] [--lr X] [--lr-final X] [--envs "
+       "N]\n"
        "                    [--episodes-per-update M] [--gamma X] [--lambda X] [--entropy X]\n"
        "                    [--entropy-final X] [--epochs N] [--minibatches K] [--clip X]\n"
        "                    [--value-iters N] [--branch-fraction X] [--mirror] [--stop-at N]\n"
        "                    [--eval-every N] [--eval-episodes N] [--validation-seed N]\n"
        "                    [--resume [--override] | --force] [--quiet] [--max-instructions N]\n"
-       "                    [--max-seconds S] [--max-memory MB] [--navdata DIR] [--allow-read DIRS]\n"
+       "                    [--max-seconds S] [--max-memory MB] [--navdata DIR] [--allow-read "
+       "DIRS]\n"
        "                    [--max-conflict-pairs N] [--unsafe]\n"
        "       squawk train --out DIR --resume\n"
        "       squawk train SCENARIO.lua --out DIR --policy gpt2 [--model tiny|DIR]\n"
        "                    [--model-seed N] [--prompt FILE] [--head action|lm] [--blocks K]\n"
-       "                    [--chunk N] [--train-embeddings] [--init CKPT] [--precision bf16|fp32]\n"
+       "                    [--chunk N] [--train-embeddings] [--init CKPT] [--precision "
+       "bf16|fp32]\n"
        "                    [learner flags]\n\n"
        "Trains the policy of a conflict-resolution scenario (scenarios/*.lua) by\n"
        "policy gradient with Adam, on the scenario's training settings, evaluating\n"
@@ -442,9 +452,11 @@ const std::vector<Subcommand>& subcommands() {
        "process at once.\n",
        cmd_train},
       {"eval", "eval SCENARIO.lua --policy P   success rate and reward over evaluation episodes",
-       "usage: squawk eval SCENARIO.lua [--policy random|zero|constant:V|turn-hold:V|mvp|lookahead|rollout:P|mlp|gpt2]\n"
+       "usage: squawk eval SCENARIO.lua [--policy "
+       "random|zero|constant:V|turn-hold:V|mvp|lookahead|rollout:P|mlp|gpt2]\n"
        "                   [--checkpoint FILE] [--episodes N] [--seed N] [--greedy] [--json]\n"
-       "                   [--record FILE.jsonl] [--show-prompt N] [--envs N] [--precision bf16|fp32]\n"
+       "                   [--record FILE.jsonl] [--show-prompt N] [--envs N] [--precision "
+       "bf16|fp32]\n"
        "--envs N: environments stepped together; --precision: GPT-2's matrix products\n"
        "(default the fastest this CPU supports, printed at start).\n\n"
        "Runs the scenario's evaluation episodes (default 1000, numbered from the\n"
@@ -482,8 +494,7 @@ const std::vector<Subcommand>& subcommands() {
        "                       separation_median_nm, separation_p5_nm}\n"
        "  --record FILE        write every episode as JSON lines (squawk render reads it)\n"
        "  --show-prompt N      gpt2: print the prompts of the first N decisions and\n"
-       "                       the action taken\n"
-       SQUAWK_GPT2_FLAGS_HELP SQUAWK_VM_FLAGS_HELP,
+       "                       the action taken\n" SQUAWK_GPT2_FLAGS_HELP SQUAWK_VM_FLAGS_HELP,
        cmd_eval},
       {"table3", "table3 SCENARIO.lua   the paper's Table 3: untrained/trained MLP and GPT-2",
        "usage: squawk table3 SCENARIO.lua [--episodes N] [--seed N] [--mlp-checkpoint FILE]\n"
@@ -507,8 +518,8 @@ const std::vector<Subcommand>& subcommands() {
        "with sampled actions (the table's columns) and greedy actions (the last\n"
        "column: its most frequent greedy action and that action's share). Prints a\n"
        "markdown table, then CSV (or writes the CSV to --csv FILE); --json prints\n"
-       "every row with both action histograms instead.\n"
-       SQUAWK_GPT2_FLAGS_HELP SQUAWK_VM_FLAGS_HELP,
+       "every row with both action histograms instead.\n" SQUAWK_GPT2_FLAGS_HELP
+           SQUAWK_VM_FLAGS_HELP,
        cmd_table3},
   };
   return table;

@@ -72,16 +72,19 @@ Status parse_airports(std::string_view data, const std::string& path, std::vecto
 // A navaid's name as nav.dat writes it after the ident, less its kind ("SAN FRANCISCO VOR-DME" ->
 // "SAN FRANCISCO").
 std::string navaid_name(const std::vector<std::string>& f) {
-  static const char* kKinds[] = {"VOR", "VOR-DME", "VORTAC", "NDB", "NDB-DME", "DME", "TACAN", "DME-ILS"};
+  static const char* kKinds[] = {"VOR",     "VOR-DME", "VORTAC", "NDB",
+                                 "NDB-DME", "DME",     "TACAN",  "DME-ILS"};
   size_t end = f.size();
-  if (end > 9 && std::any_of(std::begin(kKinds), std::end(kKinds), [&](const char* k) { return text::upper(f[end - 1]) == k; }))
+  if (end > 9 && std::any_of(std::begin(kKinds), std::end(kKinds),
+                             [&](const char* k) { return text::upper(f[end - 1]) == k; }))
     --end;
   std::string name;
   for (size_t i = 8; i < end; ++i) name += (name.empty() ? "" : " ") + text::upper(f[i]);
   return name;
 }
 
-void parse_navaids(std::string_view data, std::vector<NavPoint>& out, std::vector<std::string>& names) {
+void parse_navaids(std::string_view data, std::vector<NavPoint>& out,
+                   std::vector<std::string>& names) {
   for (auto raw : lines_of(data)) {
     const auto f = text::split_ws(raw);
     if (f.size() < 8) continue;
@@ -172,7 +175,6 @@ Result<std::shared_ptr<const NavDb>> NavDb::load_cached(const std::string& dir) 
   cache.emplace(dir, db);
   return db;
 }
-
 
 std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const {
   std::vector<const NavPoint*> out;

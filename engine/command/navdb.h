@@ -76,7 +76,8 @@ class NavDb {
   std::vector<NavPoint> airports_;
   std::vector<std::string> airport_names_;  // airports.dat names, upper case, by airports_ index (may be empty)
   std::vector<NavPoint> waypoints_;
-  std::vector<std::string> navaid_names_;  // nav.dat names less their kind, as name keys, by waypoints_ index (navaids first)
+  std::vector<std::string> navaid_names_;  // nav.dat names less their kind, as name keys, by
+                                           // waypoints_ index (navaids first)
   std::unordered_map<std::string, size_t> airport_index_;
   std::unordered_multimap<std::string, size_t> waypoint_index_;
   std::string dir_;  // load()'s folder: where runway data are read from

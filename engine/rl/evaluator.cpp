@@ -84,10 +84,13 @@ Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions
   const dist::Share part = dist::share(static_cast<uint64_t>(opts.episodes));
   EvalResult res;
   Driver driver{policy_choice(policy, envs, streams, opts.greedy), [&](const Turn& t) {
-                  for (const ActionSample& a : t.actions) ++res.action_counts[static_cast<size_t>(action_bin(a.value))];
+                  for (const ActionSample& a : t.actions)
+                    ++res.action_counts[static_cast<size_t>(action_bin(a.value))];
                   if (progress)
-                    progress(std::min(opts.episodes, static_cast<long long>(envs.completed().size()) * dist::size()),
-                             opts.episodes);
+                    progress(
+                        std::min(opts.episodes,
+                                 static_cast<long long>(envs.completed().size()) * dist::size()),
+                        opts.episodes);
                   return true;
                 }};
   SQUAWK_RETURN_IF_ERROR(play(envs, opts.seed, part.first, part.count, driver).status());

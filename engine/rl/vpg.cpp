@@ -321,8 +321,10 @@ bool Trainer::collect(const UpdateProgress& progress) {
       const auto s = static_cast<size_t>(t.slots[r]);
       slot_index_[s] = envs_.env(t.slots[r]).stats().index;
       auto& so = slot_episode_[s].obs;
-      so.insert(so.end(), t.obs.begin() + static_cast<long>(r * obs), t.obs.begin() + static_cast<long>((r + 1) * obs));
-      if (vine && branch_rngs[r].uniform() < cfg_.branch_fraction) slot_episode_[s].branches.push_back(envs_.env(t.slots[r]));
+      so.insert(so.end(), t.obs.begin() + static_cast<long>(r * obs),
+                t.obs.begin() + static_cast<long>((r + 1) * obs));
+      if (vine && branch_rngs[r].uniform() < cfg_.branch_fraction)
+        slot_episode_[s].branches.push_back(envs_.env(t.slots[r]));
     }
     if (vine) branch_streams.keep(envs_);
     return Status::ok();

@@ -20,7 +20,8 @@
 //   env:stats() -> {total_reward, decisions, steps, intrusions, reached, truncated, success}
 //   env:state() -> {t, own = {lat, lon, hdg, tas}, intruders = {{..}, ..}, waypoint = {lat, lon}}
 //   env:mvp_action() -> number
-//   squawk.env.evaluate{scenario = path, policy = "zero"|"constant:V"|"turn-hold:V"|"mvp"|"random"|"mlp"|"gpt2",
+//   squawk.env.evaluate{scenario = path, policy =
+//   "zero"|"constant:V"|"turn-hold:V"|"mvp"|"random"|"mlp"|"gpt2",
 //                       checkpoint = file, model = "tiny"|dir (gpt2, fresh head), prompt = file,
 //                       episodes = n, seed = s, greedy = bool}
 //     -> {success_rate, mean_reward, std_reward, episodes, reached_rate,

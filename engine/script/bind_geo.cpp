@@ -94,7 +94,8 @@ sim::Shape read_polygon(lua_State* L, int idx, const std::string& what) {
   if (lua_type(L, idx) != LUA_TTABLE) throw ArgError(what + " is not a table of lat, lon numbers");
   const lua_Integer n = length(L, idx);
   if (n < 6 || n % 2 != 0)
-    throw ArgError(what + " needs lat, lon pairs of at least 3 points, got " + std::to_string(n) + " numbers");
+    throw ArgError(what + " needs lat, lon pairs of at least 3 points, got " + std::to_string(n) +
+                   " numbers");
   sim::Shape poly;
   poly.kind = sim::Shape::Kind::kPoly;
   poly.coords.reserve(static_cast<size_t>(n));
@@ -124,7 +125,8 @@ int l_polygons(lua_State* L) {
   set.reserve(static_cast<size_t>(n));
   for (lua_Integer k = 1; k <= n; ++k) {
     get_index(L, 1, k);
-    set.push_back(read_polygon(L, lua_gettop(L), "squawk.geo.polygons: polygon " + std::to_string(k)));
+    set.push_back(
+        read_polygon(L, lua_gettop(L), "squawk.geo.polygons: polygon " + std::to_string(k)));
     lua_pop(L, 1);
   }
   new_object<Polygons>(L, kPolygonsMt, std::move(set));
@@ -143,14 +145,19 @@ int l_count_inside(lua_State* L) {
 }  // namespace
 
 void bind_geo(lua_State* L) {
-  static const luaL_Reg fns[] = {
-      {"kwikqdrdist", guarded<l_kwikqdrdist>}, {"kwikdist", guarded<l_kwikdist>},
-      {"kwikpos", guarded<l_kwikpos>},         {"destination", guarded<l_destination>},
-      {"wrap180", guarded<l_wrap<geo::wrap180>>}, {"wrap360", guarded<l_wrap<geo::wrap360>>},
-      {"gym_wrap180", guarded<l_wrap<geo::gym_wrap180>>}, {"cpa", guarded<l_cpa>},
-      {"inside", guarded<l_inside>},           {"polygons", guarded<l_polygons>},
-      {nullptr, nullptr}};
-  static const luaL_Reg polygon_methods[] = {{"count_inside", guarded<l_count_inside>}, {nullptr, nullptr}};
+  static const luaL_Reg fns[] = {{"kwikqdrdist", guarded<l_kwikqdrdist>},
+                                 {"kwikdist", guarded<l_kwikdist>},
+                                 {"kwikpos", guarded<l_kwikpos>},
+                                 {"destination", guarded<l_destination>},
+                                 {"wrap180", guarded<l_wrap<geo::wrap180>>},
+                                 {"wrap360", guarded<l_wrap<geo::wrap360>>},
+                                 {"gym_wrap180", guarded<l_wrap<geo::gym_wrap180>>},
+                                 {"cpa", guarded<l_cpa>},
+                                 {"inside", guarded<l_inside>},
+                                 {"polygons", guarded<l_polygons>},
+                                 {nullptr, nullptr}};
+  static const luaL_Reg polygon_methods[] = {{"count_inside", guarded<l_count_inside>},
+                                             {nullptr, nullptr}};
   define_class(L, kPolygonsMt, polygon_methods);
   push_squawk_subtable(L, "geo");
   luaL_setfuncs(L, fns, 0);

@@ -147,7 +147,8 @@ int l_airports_named(lua_State* L) {
   command::Stack* s = self(L);
   const std::string name = arg_string(L, 2, "name");
   const bool near = !lua_isnoneornil(L, 3);
-  const double lat = near ? arg_number(L, 3, "lat") : 0.0, lon = near ? arg_number(L, 4, "lon") : 0.0;
+  const double lat = near ? arg_number(L, 3, "lat") : 0.0,
+               lon = near ? arg_number(L, 4, "lon") : 0.0;
   const double within = near ? arg_number(L, 5, "within_nm") : 0.0;
   lua_newtable(L);
   if (!s->navdb()) return 1;
@@ -181,7 +182,8 @@ int l_airports_coded(lua_State* L) {
 int l_navaids_named(lua_State* L) {
   command::Stack* s = self(L);
   const std::string name = arg_string(L, 2, "name");
-  const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon"), within = arg_number(L, 5, "within_nm");
+  const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon"),
+               within = arg_number(L, 5, "within_nm");
   lua_newtable(L);
   if (!s->navdb()) return 1;
   int k = 0;
@@ -458,23 +460,35 @@ int l_commands(lua_State* L) {
 
 void bind_sim(lua_State* L) {
   static const luaL_Reg methods[] = {
-      {"exec", guarded<l_exec>},         {"check", guarded<l_check>},
+      {"exec", guarded<l_exec>},
+      {"check", guarded<l_check>},
       {"airports_named", guarded<l_airports_named>},
       {"navaids_named", guarded<l_navaids_named>},
       {"airports_coded", guarded<l_airports_coded>},
-      {"load", guarded<l_load>},         {"step", guarded<l_step>},
-      {"run_until", guarded<l_run_until>}, {"run_for", guarded<l_run_for>},
-      {"time", guarded<l_time>},         {"dt", guarded<l_dt>},
-      {"count", guarded<l_count>},       {"aircraft", guarded<l_aircraft>},
-      {"get", guarded<l_get>},           {"conflicts", guarded<l_conflicts>},
-      {"los", guarded<l_los>},           {"totals", guarded<l_totals>},
-      {"output", guarded<l_output>},     {"copy", guarded<l_copy>},
-      {"tally", guarded<l_tally>},       {"run_state", guarded<l_run_state>},
+      {"load", guarded<l_load>},
+      {"step", guarded<l_step>},
+      {"run_until", guarded<l_run_until>},
+      {"run_for", guarded<l_run_for>},
+      {"time", guarded<l_time>},
+      {"dt", guarded<l_dt>},
+      {"count", guarded<l_count>},
+      {"aircraft", guarded<l_aircraft>},
+      {"get", guarded<l_get>},
+      {"conflicts", guarded<l_conflicts>},
+      {"los", guarded<l_los>},
+      {"totals", guarded<l_totals>},
+      {"output", guarded<l_output>},
+      {"copy", guarded<l_copy>},
+      {"tally", guarded<l_tally>},
+      {"run_state", guarded<l_run_state>},
       {"dtmult", guarded<l_dtmult>},
-      {"create", guarded<l_create>},     {"select_vertical", guarded<l_select_vertical>},
-      {"values", guarded<l_values>},     {"delete_all", guarded<l_delete_all>},
+      {"create", guarded<l_create>},
+      {"select_vertical", guarded<l_select_vertical>},
+      {"values", guarded<l_values>},
+      {"delete_all", guarded<l_delete_all>},
       {"creconfs", guarded<l_creconfs>},
-      {"snapshot", guarded<l_snapshot>}, {nullptr, nullptr},
+      {"snapshot", guarded<l_snapshot>},
+      {nullptr, nullptr},
   };
   define_class(L, kSimMt, methods);
   push_squawk_subtable(L, "sim");

@@ -67,8 +67,9 @@ Status LuaEnv::read_spec() {
     if (s.id.empty()) throw ArgError("field 'id' (the environment's name, a string) is required");
     s.source = field_string(L, e, "source", "");
     if (field_boolean(L, e, "parallel", false))
-      throw ArgError("field 'parallel' = true: a multi-agent environment (PettingZoo's parallel API, tables "
-                     "keyed by agent); this driver steps single-agent files (docs/gym_envs.md)");
+      throw ArgError(
+          "field 'parallel' = true: a multi-agent environment (PettingZoo's parallel API, tables "
+          "keyed by agent); this driver steps single-agent files (docs/gym_envs.md)");
     get_field(L, e, "observation");
     if (!lua_istable(L, -1))
       throw ArgError("field 'observation' must be an array of {name =, size =}");
@@ -123,7 +124,8 @@ Status LuaEnv::read_spec() {
 
 bool LuaEnv::read_plain_observation(int idx) {
   lua_State* L = vm_->state();
-  if (!lua_istable(L, idx) || lua_rawlen(L, idx) != static_cast<lua_Unsigned>(spec_.observation_size))
+  if (!lua_istable(L, idx) ||
+      lua_rawlen(L, idx) != static_cast<lua_Unsigned>(spec_.observation_size))
     return false;
   if (lua_getmetatable(L, idx)) {
     lua_pop(L, 1);

@@ -208,10 +208,12 @@ std::function<double(const env::StepFacts&)> lua_reward(lua_State* L, int idx, s
 void read_scenario(lua_State* L, int top, Scenario& s) {
   const bool env_file = push_table_field(L, top, "declaration");
   if (!env_file)
-    check_keys(L, top, "scenario", {"rules", "env", "eval", "reward", "policy", "train", "name", "description"});
+    check_keys(L, top, "scenario",
+               {"rules", "env", "eval", "reward", "policy", "train", "name", "description"});
   env::HorizontalCrConfig& c = s.train_env;
   s.reward_status = std::make_shared<Status>();
-  s.lua_reward = read_environment_fields(L, env_file ? lua_gettop(L) : top, c, s.vm, s.reward_status);
+  s.lua_reward =
+      read_environment_fields(L, env_file ? lua_gettop(L) : top, c, s.vm, s.reward_status);
   if (c.rules == env::Rules::kGym) s.policy.head = "gaussian";
   if (env_file) {
     lua_pop(L, 1);
@@ -240,8 +242,8 @@ void read_scenario(lua_State* L, int top, Scenario& s) {
 
 }  // namespace
 
-bool read_environment_fields(lua_State* L, int idx, env::HorizontalCrConfig& c, std::shared_ptr<Vm> vm,
-                             std::shared_ptr<Status> reward_status) {
+bool read_environment_fields(lua_State* L, int idx, env::HorizontalCrConfig& c,
+                             std::shared_ptr<Vm> vm, std::shared_ptr<Status> reward_status) {
   idx = lua_absindex(L, idx);
   const std::string rules = field_string(L, idx, "rules", "paper");
   if (rules == "gym") {
@@ -264,8 +266,9 @@ bool read_environment_fields(lua_State* L, int idx, env::HorizontalCrConfig& c, 
   } else if (lua_istable(L, -1)) {
     read_weights(L, -1, c.weights);
   } else if (!lua_isnil(L, -1)) {
-    throw ArgError(std::string("scenario field 'reward': expected a table of weights or a function, got ") +
-                   luaL_typename(L, -1));
+    throw ArgError(
+        std::string("scenario field 'reward': expected a table of weights or a function, got ") +
+        luaL_typename(L, -1));
   }
   lua_pop(L, 1);
   return lua_function;

@@ -64,7 +64,7 @@ Result<Scenario> load_scenario(const std::string& path, const VmOptions& options
 // above) over the values already in c; throws ArgError naming the culprit.
 // A reward function is wrapped to run in `vm` (kept alive by the wrapper),
 // its first error going to *reward_status; returns true in that case.
-bool read_environment_fields(lua_State* L, int idx, env::HorizontalCrConfig& c, std::shared_ptr<Vm> vm,
-                             std::shared_ptr<Status> reward_status);
+bool read_environment_fields(lua_State* L, int idx, env::HorizontalCrConfig& c,
+                             std::shared_ptr<Vm> vm, std::shared_ptr<Status> reward_status);
 
 }  // namespace squawk::script

@@ -181,7 +181,8 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
           j += 2;
         } else if (j < end && t[j].kind == TokKind::kNumber && t[j].num >= 0 && t[j].num < 60 &&
                    hemisphere(t, j + 1, minutes_lat) != 0) {
-          dms.value = q.value + t[j].num / 60.0;  // "55 degrees 30 north": minutes without their word
+          dms.value =
+              q.value + t[j].num / 60.0;  // "55 degrees 30 north": minutes without their word
           j += 1;
         }
         int h = hemisphere(t, j, lat);
@@ -211,7 +212,8 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
                  (word_at(t, j, {"km", "kilometres", "kilometers", "kilometre", "kilometer"}) &&
                   word_at(t, j + 1, {"per"}) && word_at(t, j + 2, {"h", "hour"}))) {
         q.kind = QKind::kSpeed;
-        q.value = std::round(q.value / 1.852 * 10.0) / 10.0;  // km/h -> [kt] to 0.1 (the lexer reads "km/h" as "km per h")
+        q.value = std::round(q.value / 1.852 * 10.0) /
+                  10.0;  // km/h -> [kt] to 0.1 (the lexer reads "km/h" as "km per h")
         j += word_at(t, j, {"kph", "kmh"}) ? 1 : 3;
       } else if (word_at(t, j, {"km", "kilometres", "kilometers", "kilometre", "kilometer"})) {
         q.kind = QKind::kDist;
@@ -250,7 +252,8 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
     if (q.kind == QKind::kAngle && q.turn == 0 && prev({"left", "right"})) q.turn = t[p - 1].text == "left" ? -1 : 1;
     if (prev({"by"})) q.by = true;
     if (prev({"to"})) q.to = true;
-    if (p >= floor + 3 && word_at(t, p - 3, {"plus"}) && word_at(t, p - 2, {"or"}) && word_at(t, p - 1, {"minus"})) {
+    if (p >= floor + 3 && word_at(t, p - 3, {"plus"}) && word_at(t, p - 2, {"or"}) &&
+        word_at(t, p - 1, {"minus"})) {
       p -= 3;  // "plus or minus 1000 feet": a size either side, not a negative value
     } else if (prev({"minus", "negative"})) {
       q.value = -q.value;

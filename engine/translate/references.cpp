@@ -333,7 +333,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
           return ids;
         }());
         if (m && (m->score >= 0.6 || fleet.size() == 1)) {
-          heard = {letters, 0.0, m->score};  // letters that spell no aircraft: confirmed, never substituted
+          heard = {letters, 0.0,
+                   m->score};  // letters that spell no aircraft: confirmed, never substituted
           id = fleet[m->index].id;
           exists = true;
         }
@@ -391,8 +392,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
                                      return text::iequals(split_id(a.id).second, said);
                                    }) == 1;
         const auto [prefix, number] = split_id(m.id);
-        const bool code = last_word.size() == 2 && text::upper(last_word) == last_word && is_alpha(last_word) &&
-                          last_word != prefix;
+        const bool code = last_word.size() == 2 && text::upper(last_word) == last_word &&
+                          is_alpha(last_word) && last_word != prefix;
         if (said != text::upper(number) || code || (m.airline < 1.0 && !number_unique))
           heard = {text::upper(words) + said, m.airline, m.digits};
         add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
@@ -410,7 +411,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
                                       "ALT", "SPD", "CRE", "DEL", "ATC", "OFF", "ON", "ILS", "RNAV", "TCAS", "UTC", "GPS"};
     bool reserved = std::any_of(std::begin(kNotNames), std::end(kNotNames), [&](const char* n) { return raw == n; });
     // (a grammar keyword in capitals, "RPZ", "CLIMB", is that word, no name)
-    if (upper && !reserved && !names.airline_by_telephony(t[i].text) && !names.vocabulary().is_keyword(t[i].text))
+    if (upper && !reserved && !names.airline_by_telephony(t[i].text) &&
+        !names.vocabulary().is_keyword(t[i].text))
       add(RefKind::kWaypoint, raw, i, i + 1, false, false);
   }
   std::sort(refs.begin(), refs.end(), [](const Reference& a, const Reference& b) { return a.begin < b.begin; });

@@ -209,11 +209,12 @@ std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
   for (size_t i = 0; i + 1 < cmds.size(); ++i) {
     auto a = words(cmds[i]), b = words(cmds[i + 1]);
     if (a.size() == 3 && b.size() == 3 && a[0] == "VS" && b[0] == "ALT") std::swap(a, b);
-    if (a.size() == 3 && b.size() == 3 && a[0] == "ALT" && b[0] == "VS" && text::iequals(a[1], b[1])) {
+    if (a.size() == 3 && b.size() == 3 && a[0] == "ALT" && b[0] == "VS" &&
+        text::iequals(a[1], b[1])) {
       cmds[i] = "ALT " + a[1] + " " + a[2] + " " + b[2];
       cmds.erase(cmds.begin() + static_cast<std::ptrdiff_t>(i) + 1);
-    } else if (a.size() >= 3 && b.size() == 3 && a[0] == "DIRECT" && b[0] == "LNAV" && text::iequals(a[1], b[1]) &&
-               text::iequals(b[2], "ON")) {
+    } else if (a.size() >= 3 && b.size() == 3 && a[0] == "DIRECT" && b[0] == "LNAV" &&
+               text::iequals(a[1], b[1]) && text::iequals(b[2], "ON")) {
       cmds.erase(cmds.begin() + static_cast<std::ptrdiff_t>(i) + 1);
     }
   }

@@ -8,9 +8,9 @@
 // ASAS->CDMETHOD, DELETE->DEL, ...); names case-insensitive; altitudes in feet within 50 ft
 // (FL300 = 30000); speeds in knots within 0.5 kt or Mach within 0.0005
 // (M0.78 = .78); vertical speeds within 1 ft/min; latitude/longitude within
-// 1e-3 deg; headings modulo 360 within 0.5 deg; other numbers equal numerically; ATALT/ATSPD compare their
-// condition and then the nested command the same way. Expected `ASK` is
-// correct only when the translator asked. Pure functions.
+// 1e-3 deg; headings modulo 360 within 0.5 deg; other numbers equal numerically; ATALT/ATSPD
+// compare their condition and then the nested command the same way. Expected `ASK` is correct only
+// when the translator asked. Pure functions.
 #pragma once
 
 #include <string>

@@ -18,7 +18,7 @@ struct Translation {
   std::string ask;                    // a question back; empty when commands were produced
   std::vector<std::string> on_yes;    // with a yes/no `ask`: the commands a yes runs
   std::string error;                  // why no valid command came out; empty otherwise
-  std::string note;                   // what was said that squawk does not simulate; empty otherwise
+  std::string note;  // what was said that squawk does not simulate; empty otherwise
   bool asked() const { return !ask.empty(); }
   bool issued() const { return ask.empty() && error.empty() && !commands.empty(); }
   // "CMD ; CMD", or the question when one was asked, or "error: ..." .

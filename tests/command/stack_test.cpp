@@ -384,18 +384,21 @@ TEST_CASE("navdata: airports by name, whole or with a generic word, never a pref
   CHECK(ids("").empty());
 }
 
-TEST_CASE("navdata: navaids by name less their kind, near a point, nearest first, each ident once") {
-  auto db = NavDb::parse("EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n",
-                         "3  37.61947222 -122.37388889      7 11580  40   17.0 SFO  SAN FRANCISCO VOR-DME\n"
-                         "12  37.61948333 -122.37389167      7 11580  40    0.0 SFO  SAN FRANCISCO VOR-DME\n"
-                         "3  38.07962500 -122.86786667     16 11390  40   17.0 PYE  POINT REYES VOR-DME\n"
-                         "3  51.0 1.0 0 11000 40 0.0 PYX  POINT REYES VOR\n",
-                         "", "test");
+TEST_CASE(
+    "navdata: navaids by name less their kind, near a point, nearest first, each ident once") {
+  auto db = NavDb::parse(
+      "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n",
+      "3  37.61947222 -122.37388889      7 11580  40   17.0 SFO  SAN FRANCISCO VOR-DME\n"
+      "12  37.61948333 -122.37389167      7 11580  40    0.0 SFO  SAN FRANCISCO VOR-DME\n"
+      "3  38.07962500 -122.86786667     16 11390  40   17.0 PYE  POINT REYES VOR-DME\n"
+      "3  51.0 1.0 0 11000 40 0.0 PYX  POINT REYES VOR\n",
+      "", "test");
   REQUIRE(db.is_ok());
   const double lat = 37.75, lon = -122.55;
   CHECK((*db)->navaids_named("san francisco", lat, lon, 250) == std::vector<std::string>{"SFO"});
   CHECK((*db)->navaids_named("Point Reyes", lat, lon, 250) == std::vector<std::string>{"PYE"});
-  CHECK((*db)->navaids_named("point reyes", lat, lon, 1e5) == std::vector<std::string>{"PYE", "PYX"});
+  CHECK((*db)->navaids_named("point reyes", lat, lon, 1e5) ==
+        std::vector<std::string>{"PYE", "PYX"});
   CHECK((*db)->navaids_named("reyes", lat, lon, 250).empty());
   CHECK((*db)->navaids_named("vor dme", lat, lon, 250).empty());
   CHECK((*db)->navaids_named("", lat, lon, 250).empty());

@@ -97,15 +97,20 @@ TEST_CASE("envs/horizontal_cr.lua flies the C++ environment's paper episodes bit
   CHECK(t.steps > 400);
 }
 
-TEST_CASE("envs/horizontal_cr_gym.lua flies HorizontalCREnv-v0's episodes as the C++ environment does") {
-  const Tally t = compare("envs/horizontal_cr_gym.lua", "scenarios/horizontal_cr_gym.lua", 40, true);
+TEST_CASE(
+    "envs/horizontal_cr_gym.lua flies HorizontalCREnv-v0's episodes as the C++ environment does") {
+  const Tally t =
+      compare("envs/horizontal_cr_gym.lua", "scenarios/horizontal_cr_gym.lua", 40, true);
   CHECK(t.episodes_without_decision == 0);
   CHECK(t.steps > 40 * 20);
 }
 
-TEST_CASE("an environment file loads as a scenario of its declaration (squawk train/eval envs/horizontal_cr.lua)") {
-  for (const auto& [file, scenario] : {std::pair{"envs/horizontal_cr.lua", "scenarios/horizontal_cr.lua"},
-                                       std::pair{"envs/horizontal_cr_gym.lua", "scenarios/horizontal_cr_gym.lua"}}) {
+TEST_CASE(
+    "an environment file loads as a scenario of its declaration (squawk train/eval "
+    "envs/horizontal_cr.lua)") {
+  for (const auto& [file, scenario] :
+       {std::pair{"envs/horizontal_cr.lua", "scenarios/horizontal_cr.lua"},
+        std::pair{"envs/horizontal_cr_gym.lua", "scenarios/horizontal_cr_gym.lua"}}) {
     INFO(file);
     auto declared = script::load_scenario(repo(file), {});
     REQUIRE_MESSAGE(declared.is_ok(), declared.status().message());

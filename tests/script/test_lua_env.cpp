@@ -196,7 +196,8 @@ TEST_CASE("the driver adds the TimeLimit and checks what the file returns") {
 TEST_CASE("a multi-agent file is refused by the single-agent driver, by name") {
   auto e = script::LuaEnv::load(repo("envs/sector_multi.lua"), {});
   REQUIRE_FALSE(e.is_ok());
-  CHECK(e.status().message().find("sector_multi.lua: field 'parallel' = true: a multi-agent environment") !=
+  CHECK(e.status().message().find(
+            "sector_multi.lua: field 'parallel' = true: a multi-agent environment") !=
         std::string::npos);
 }
 

@@ -66,7 +66,8 @@ TEST_CASE("ALT then VS (or VS then ALT) of one aircraft is ALT with that vertica
   CHECK(score_case("ALT BAW1 FL100 ; VS BAW1 -1500", false, "ALT BAW1 FL100 1500"));
   CHECK(score_case("VS BAW1 -1500 ; ALT BAW1 FL100", false, "ALT BAW1 FL100 -1500"));
   CHECK(score_case("ALT BAW1 FL100 1500", false, "ALT BAW1 FL100 ; VS BAW1 -1500"));
-  CHECK(score_case("HDG BAW1 90 ; ALT BAW1 FL100 ; VS BAW1 -1500", false, "HDG BAW1 90 ; ALT BAW1 FL100 1500"));
+  CHECK(score_case("HDG BAW1 90 ; ALT BAW1 FL100 ; VS BAW1 -1500", false,
+                   "HDG BAW1 90 ; ALT BAW1 FL100 1500"));
   CHECK_FALSE(score_case("ALT BAW1 FL100 ; VS BAW1 -1500", false, "ALT BAW1 FL100 2000"));
   // a vertical speed within 1 ft/min (8 m/s down is -1574.8 ft/min), with its sign
   CHECK(score_case("VS BAW1 -1575", false, "VS BAW1 -1574.8"));
