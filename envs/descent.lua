@@ -76,10 +76,7 @@ end
 -- The sim (kept across episodes, as BlueSky-Gym keeps BlueSky's) and the
 -- ownship of a new episode (L161-173).
 function Descent:start(seed, options)
-  if not self.sim then
-    self.sim = squawk.sim.new{}
-    assert(self.sim:exec("DT " .. SIM_DT))
-  end
+  self.sim = self.sim or squawk.sim.new{dt_s = SIM_DT}
   -- BlueSky-Gym's descent never clears traffic at reset; it deletes the
   -- aircraft when an episode terminates (L200-203). Clearing here also
   -- covers an episode cut by the 300-step limit, which the descent never

@@ -73,10 +73,7 @@ function M:spawn(id, dmin, dmax)
 end
 
 function M:reset(seed, options)
-  if not self.sim then
-    self.sim = squawk.sim.new{}
-    assert(self.sim:exec("DT 5"))
-  end
+  self.sim = self.sim or squawk.sim.new{dt_s = 5}
   self.sim:delete_all()
   self.draws = Draws.new(seed, options and options.draws)
   self.wpt_reach, self.faf_reached = 0, 0

@@ -84,10 +84,7 @@ function E:info()
 end
 
 function E:reset(seed, options)
-  if not self.sim then
-    self.sim = squawk.sim.new{}
-    assert(self.sim:exec("DT " .. SIM_DT))
-  end
+  self.sim = self.sim or squawk.sim.new{dt_s = SIM_DT}
   self.draws = Draws.new(seed, options and options.draws)
   self.total_reward, self.waypoints_completed = 0, 0
   -- traf.cre defaults (L161): 52 N 4 E, heading 0, altitude 0; a no-op when KL001 still flies.

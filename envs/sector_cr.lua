@@ -153,10 +153,7 @@ function S:generate_ac()
 end
 
 function S:reset(seed, options)
-  if not self.sim then
-    self.sim = squawk.sim.new{}
-    assert(self.sim:exec("DT 1"))
-  end
+  self.sim = self.sim or squawk.sim.new{dt_s = 1}
   self.sim:delete_all()
   self.draws = Draws.new(seed, options and options.draws)
   self.total_reward, self.total_intrusions = 0, 0

@@ -63,10 +63,7 @@ function M:reset(seed, options)
   options = options or {}
   local n = options.num_agents or 10
   assert(math.type(n) == "integer" and n >= 2, "options.num_agents: a whole number >= 2")
-  if not self.sim then
-    self.sim = squawk.sim.new{}
-    assert(self.sim:exec("DT 1"))
-  end
+  self.sim = self.sim or squawk.sim.new{dt_s = 1}
   self.sim:delete_all()
   if options.resolution == "MVP" then
     assert(self.sim:exec("ZONER 5; DTLOOK 300; CDMETHOD ON; RESO MVP; RMETHV OFF"))

@@ -137,10 +137,7 @@ function E:info()
 end
 
 function E:reset(seed, options)
-  if not self.sim then
-    self.sim = squawk.sim.new{}
-    assert(self.sim:exec("DT " .. SIM_DT))
-  end
+  self.sim = self.sim or squawk.sim.new{dt_s = SIM_DT}
   self.sim:delete_all()                                  -- L96
   self.draws = Draws.new(seed, options and options.draws)
   self.total_reward, self.waypoint_reached, self.crashed = 0, 0, 0

@@ -135,6 +135,8 @@ int l_new(lua_State* L) {
   s->set_base_dir(dir);
   s->set_path_rules(&Vm::of(L).rules());  // the Vm outlives the sim (its userdata dies with the state)
   check_status(s->sim().set_cd_max_pairs(Vm::of(L).options().max_conflict_pairs));
+  // dt_s [s]: the simulation step, as TrafScript's DT (default 0.05)
+  if (opts) check_status(s->sim().set_dt(field_number(L, 1, "dt_s", s->sim().dt())));
   return 1;
 }
 

@@ -54,3 +54,9 @@ local names = {}
 for _, cmd in ipairs(squawk.sim.commands()) do names[cmd.name] = cmd end
 check(names.CRE ~= nil and names.ADDWPT ~= nil and names.CRECONFS ~= nil)
 check_eq(names.HDG.aliases[1], "HEADING")
+
+-- squawk.sim.new{dt_s}: the step in seconds, as TrafScript's DT
+local s5 = squawk.sim.new{dt_s = 5}
+local ok5, dt5 = s5:exec("DT")
+check(ok5 and dt5:find("dt 5 s", 1, true) ~= nil, dt5)
+check(not pcall(squawk.sim.new, {dt_s = -1}), "a negative step is refused")
