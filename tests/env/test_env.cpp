@@ -8,11 +8,12 @@
 
 #include "core/geo.h"
 #include "core/units.h"
-#include "env/pair_geometry.h"
 #include "env/horizontal_cr.h"
 #include "env/observation.h"
+#include "env/pair_geometry.h"
 #include "env/reward.h"
 #include "env/vec_env.h"
+#include "paper_settings.h"
 
 using namespace squawk;
 using namespace squawk::env;
@@ -37,9 +38,7 @@ TEST_CASE("paper reward follows Eq. 1-4 with the paper's weights") {
 }
 
 TEST_CASE("step facts count the sub-steps with an intruder inside the zone") {
-  HorizontalCrConfig c;  // paper rules
-  c.tlos = {300, 1000};
-  c.lookahead = 600;
+  HorizontalCrConfig c = test::paper_eval_config(false);
   auto e = HorizontalCrEnv::make(c);
   REQUIRE(e);
   struct Facts : EpisodeObserver {
@@ -161,9 +160,7 @@ TEST_CASE("observation matches BlueSky-Gym's formulas computed with kwikqdrdist"
 }
 
 TEST_CASE("paper rules: the agent is asked only when flying direct would conflict") {
-  HorizontalCrConfig c;
-  c.tlos = {300, 1000};
-  c.lookahead = 600;
+  HorizontalCrConfig c = test::paper_eval_config(false);
   auto e = HorizontalCrEnv::make(c);
   REQUIRE(e);
   int episodes = 0, reached = 0;

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "../env/paper_settings.h"
 #include "env/vec_env.h"
 #include "rl/baseline_policies.h"
 #include "rl/branch_returns.h"
@@ -16,11 +17,7 @@ namespace {
 
 // The paper scenario's evaluation settings (scenarios/horizontal_cr.lua).
 env::HorizontalCrConfig eval_config() {
-  env::HorizontalCrConfig ec;
-  ec.limits.speed_cap = 0.0;
-  ec.tlos = {300, 1000};
-  ec.lookahead = 600;
-  return ec;
+  return test::paper_eval_config(true);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <set>
 #include <vector>
 
+#include "../env/paper_settings.h"
 #include "env/vec_env.h"
 #include "rl/baseline_policies.h"
 #include "rl/mlp_policy.h"
@@ -15,10 +16,7 @@ using namespace squawk;
 namespace {
 
 env::HorizontalCrConfig paper_env() {
-  env::HorizontalCrConfig ec;
-  ec.tlos = {300, 1000};
-  ec.lookahead = 600;
-  return ec;
+  return test::paper_eval_config(false);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../env/paper_settings.h"
 #include "core/files.h"
 #include "env/vec_env.h"
 #include "nn/categorical.h"
@@ -393,9 +394,7 @@ TEST_CASE("the turn-hold rule turns only while flying at the waypoint") {
   CHECK(out[1].value == 0.0f);
   // In the paper setup it turns once per conflict and then holds: far more
   // holds than turns, and it still clears most conflicts.
-  env::HorizontalCrConfig ec;
-  ec.tlos = {300, 1000};
-  ec.lookahead = 600;
+  env::HorizontalCrConfig ec = test::paper_eval_config(false);
   auto v = env::VecEnv::make(ec, 8);
   REQUIRE(v);
   auto r = rl::evaluate(rule, *v, {100, 2024, false});
@@ -407,9 +406,7 @@ TEST_CASE("the turn-hold rule turns only while flying at the waypoint") {
 }
 
 TEST_CASE("evaluation is deterministic for a seed and rejects a mismatched policy") {
-  env::HorizontalCrConfig ec;
-  ec.tlos = {300, 1000};
-  ec.lookahead = 600;
+  env::HorizontalCrConfig ec = test::paper_eval_config(false);
   auto v = env::VecEnv::make(ec, 16);
   REQUIRE(v);
   Rng init(5);
@@ -437,10 +434,8 @@ TEST_CASE("the shipped checkpoints resolve conflicts on the paper's evaluation s
   auto p = rl::policy_from_checkpoint(*c);
   REQUIRE(p);
   CHECK((*p)->params().size() == 12581);
-  env::HorizontalCrConfig ec;  // scenarios/horizontal_cr.lua, eval table
-  ec.limits.speed_cap = 0.0;
-  ec.tlos = {300, 1000};
-  ec.lookahead = 600;
+  env::HorizontalCrConfig ec =
+      test::paper_eval_config(true);  // scenarios/horizontal_cr.lua, eval table
   auto v = env::VecEnv::make(ec, 32);
   REQUIRE(v);
   auto trained = rl::evaluate(**p, *v, {300, 2024, false});
