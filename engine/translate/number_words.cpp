@@ -45,16 +45,31 @@ std::string fraction_digits(const std::vector<Token>& t, size_t& i) {
   return f;
 }
 
+struct Homophone {
+  const char* heard;
+  const char* digit;
+  int value;
+};
+constexpr std::array<Homophone, 10> kHeard = {{{"to", "two", 2},
+                                               {"too", "two", 2},
+                                               {"on", "one", 1},
+                                               {"won", "one", 1},
+                                               {"once", "one", 1},
+                                               {"ones", "one", 1},
+                                               {"for", "four", 4},
+                                               {"ate", "eight", 8},
+                                               {"a", "eight", 8},
+                                               {"fine", "five", 5}}};
+
 }  // namespace
 
+int heard_digit(const std::string& w) {
+  for (const auto& h : kHeard)
+    if (w == h.heard) return h.value;
+  return -1;
+}
+
 void fold_digit_homophones(std::vector<Token>& t) {
-  struct Homophone {
-    const char* heard;
-    const char* digit;
-  };
-  static const std::array<Homophone, 10> kHeard = {{{"to", "two"}, {"too", "two"}, {"on", "one"}, {"won", "one"},
-                                                    {"once", "one"}, {"ones", "one"}, {"for", "four"},
-                                                    {"ate", "eight"}, {"a", "eight"}, {"fine", "five"}}};
   auto digit = [&](size_t i) { return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0; };
   for (size_t i = 1; i + 1 < t.size();) {
     const std::string& r = t[i].raw;

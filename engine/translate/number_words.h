@@ -45,6 +45,10 @@ struct SpokenNumber {
 // noise and is removed.
 void fold_digit_homophones(std::vector<Token>& toks);
 
+// The digit a word that sounds like one stands for, as fold_digit_homophones
+// reads it ("for" = 4, "to"/"too" = 2, "won"/"on"/"once"/"ones" = 1,
+// "ate"/"a" = 8, "fine" = 5), or -1.
+int heard_digit(const std::string& w);
 // Value 0-9 of a digit word ("niner" = 9, "fife" = 5), or -1.
 int digit_word(const std::string& w);
 // True when the token can start or continue a spoken number.

@@ -208,7 +208,68 @@ local function turn_letters(text, sh)
   return changed and table.concat(toks, " ") or text
 end
 
+-- A word that is a number as said or typed ("250", "fl240", "niner", "thirty").
+local function set_of(list)
+  local s = {}
+  for _, w in ipairs(list) do s[w] = true end
+  return s
+end
+local NUMBER_WORDS = set_of({ "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
+  "niner", "tree", "fife", "fower", "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen",
+  "seventeen", "eighteen", "nineteen", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety",
+  "hundred", "thousand" })
+local function heard_word_is(w, set)
+  if not w then return false end
+  w = w:lower():gsub("%p+$", "")
+  return set[w] == true or (set["#number"] == true and (NUMBER_WORDS[w] == true or w:match("^%d") ~= nil
+    or w:match("^fl%d+$") ~= nil))
+end
+local HEARD = {}
+for _, h in ipairs(lexicon.heard_as) do
+  for _, form in ipairs(h.heard) do
+    local words = {}
+    for w in form:gmatch("%S+") do words[#words + 1] = w end
+    HEARD[#HEARD + 1] = { words = words, means = h.means, before = h.before and set_of(h.before),
+                          after = h.after and set_of(h.after) }
+  end
+end
+-- Speech recognition's sound-alike forms of instruction words
+-- (lexicon.heard_as), rewritten only where the instruction word is expected.
+local function heard_forms(text)
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local out, i, changed = {}, 1, false
+  while i <= #toks do
+    local hit
+    for _, h in ipairs(HEARD) do
+      local n = #h.words
+      local ok = true
+      for k = 1, n do
+        local w = toks[i + k - 1]
+        -- punctuation may close the last word only ("turn write, heading")
+        ok = ok and w ~= nil and (w:lower() == h.words[k] or (k == n and w:lower():gsub("%p+$", "") == h.words[k]))
+      end
+      if ok then
+        local last = toks[i + n - 1]
+        local closed = last:match("%p$") ~= nil
+        if (h.before and not closed and heard_word_is(toks[i + n], h.before))
+            or (h.after and toks[i - 1] and not toks[i - 1]:match("%p$") and heard_word_is(toks[i - 1], h.after)) then
+          hit = { n = n, text = h.means .. (last:match("%p+$") or "") }
+          break
+        end
+      end
+    end
+    if hit then
+      out[#out + 1], i, changed = hit.text, i + hit.n, true
+    else
+      out[#out + 1], i = toks[i], i + 1
+    end
+  end
+  return changed and table.concat(out, " ") or text
+end
+
 local function written_forms(text)
+  text = heard_forms(text)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
