@@ -158,6 +158,10 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
     const std::string& w = t[j].text;
     int d = digit_word(w), teen = teen_word(w), tens = tens_word(w);
     if (d >= 0 || teen >= 0 || tens >= 0) {
+      // digits said singly or grouped after "thousand" are the next value, not its
+      // hundreds ("one one thousand two five zero knots", "seven thousand two twenty
+      // knots": 11000 then 250, 7000 then 220)
+      if (n.has_thousand && cur.empty() && d >= 0 && group_at(t, j + 1)) break;
       int v = d >= 0 ? d : teen >= 0 ? teen : tens;
       if (tens >= 0 && digit_at(t, j + 1) > 0) {
         v += digit_at(t, j + 1);

@@ -7,6 +7,9 @@
 //  - ATC digit-by-digit and grouped forms ("one two zero", "niner", "fife",
 //    "tree", "one eighty", "fifty one twenty"): adjacent groups concatenate;
 //  - hesitations ("ah", "uh", "um", "er") between groups are skipped;
+//  - digits said singly or grouped after "thousand" end the number ("one one
+//    thousand two five zero", "seven thousand two twenty": 11000, 7000;
+//    "four thousand five hundred" is one number);
 //  - a decimal part after "point" / "decimal" ("point seven eight" = 0.78),
 //    unless "thousand"/"hundred" follows (speech errors for "descend").
 // `digits` is the concatenation of the spoken groups with multipliers left

@@ -230,7 +230,8 @@ for _, h in ipairs(lexicon.heard_as) do
     local words = {}
     for w in form:gmatch("%S+") do words[#words + 1] = w end
     HEARD[#HEARD + 1] = { words = words, means = h.means, before = h.before and set_of(h.before),
-                          after = h.after and set_of(h.after) }
+                          after = h.after and set_of(h.after),
+                          between = h.between and { set_of(h.between[1]), set_of(h.between[2]) } }
   end
 end
 -- Speech recognition's sound-alike forms of instruction words
@@ -252,8 +253,11 @@ local function heard_forms(text)
       if ok then
         local last = toks[i + n - 1]
         local closed = last:match("%p$") ~= nil
+        local joined_before = toks[i - 1] ~= nil and not toks[i - 1]:match("%p$")
         if (h.before and not closed and heard_word_is(toks[i + n], h.before))
-            or (h.after and toks[i - 1] and not toks[i - 1]:match("%p$") and heard_word_is(toks[i - 1], h.after)) then
+            or (h.after and joined_before and heard_word_is(toks[i - 1], h.after))
+            or (h.between and not closed and joined_before and heard_word_is(toks[i - 1], h.between[1])
+                and heard_word_is(toks[i + n], h.between[2])) then
           hit = { n = n, text = h.means .. (last:match("%p+$") or "") }
           break
         end
@@ -1040,7 +1044,14 @@ function M.translate(text, world)
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
   text = unglued_ids(text, world.aircraft)
-  local u = squawk.translate.utterance(require("translate.types").join(written_forms(text), TYPES.phrases),
+  local types = require("translate.types")
+  text = written_forms(text)
+  -- type names with their digits said as words, where traffic is created
+  if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
+      or text:lower():find("%f[%a]add") then
+    text = types.spoken(text, TYPES)
+  end
+  local u = squawk.translate.utterance(types.join(text, TYPES.phrases),
     world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {}, noted = {} }, G)

@@ -184,11 +184,13 @@ return {
   },
   -- what speech recognition writes for an instruction word that sounds alike
   -- ("the send flight level one niner zero", "turn write heading 040",
-  -- "head in one one zero", "two six zero nots"). A heard form is that word
-  -- ONLY where the word is expected: `before` (the next word is one of these;
-  -- "#number" any number, digits or number words) or `after` (the word before
-  -- it is one of these). Anywhere else it stays what it is ("write the
-  -- heading down", "head into the wind", "the send button").
+  -- "head in one one zero", "two six zero nots", "descend two flight level").
+  -- A heard form is that word ONLY where the word is expected: `before` (the
+  -- next word is one of these; "#number" any number, digits or number words),
+  -- `after` (the word before it is one of these), or `between` (both: after
+  -- one of between[1] and before one of between[2]). Anywhere else it stays
+  -- what it is ("write the heading down", "head into the wind", "the send
+  -- button", "climb two four thousand").
   heard_as = {
     { heard = { "write", "rite", "wright" }, means = "right",
       before = { "heading", "hdg", "turn" }, after = { "turn" } },
@@ -196,6 +198,9 @@ return {
       before = { "#number", "flight", "level", "altitude", "to" } },
     { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
+    { heard = { "two", "too" }, means = "to",
+      between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
+                  { "flight", "level", "fl", "heading", "speed", "altitude" } } },
   },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },

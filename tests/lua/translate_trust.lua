@@ -405,3 +405,23 @@ check_eq(heard("say altitude, DLH400"), "POS DLH400")
 check_eq(heard("AAL100 say heading three three zero"), "HDG AAL100 330")
 -- a turn direction corrected is the one turned
 check_eq(heard("DLH40 turn right, correction, turn left heading one five zero"), "HDG DLH40 150 LEFT")
+check_eq(heard("AAL100 climb two flight level two eight zero"), "ALT AAL100 FL280")
+check_eq(heard("DLH40 turn left two heading one one zero"), "HDG DLH40 110 LEFT")
+-- spoken numbers: digits said singly or grouped after "thousand" are the next value; a heading said
+-- digit by digit is three digits when an altitude follows it
+check_eq(heard("create TST1 b738 at 52.1 4.3 heading two seven zero one two thousand two five zero knots"),
+  "CRE TST1 B738 52.1 4.3 270 12000 250")
+check_eq(heard("create TST2 b738 at 52.1 4.3 heading 090 nine thousand one eighty knots"),
+  "CRE TST2 B738 52.1 4.3 90 9000 180")
+check_eq(heard("AAL100 descend four thousand five hundred"), "ALT AAL100 4500")
+-- aircraft types with their digits said as words, where traffic is created
+check_eq(heard("create TST3 airbus a three two one at 52.1 4.3 heading 090 FL200 250 knots"),
+  "CRE TST3 A321 52.1 4.3 90 FL200 250")
+check_eq(heard("create TST4 boeing seven three seven eight hundred at 52.1 4.3 heading 090 FL200 250 knots"),
+  "CRE TST4 B738 52.1 4.3 90 FL200 250")
+check_eq(heard("create TST5 e one seventy five at 52.1 4.3 heading 090 FL200 250 knots"),
+  "CRE TST5 E175 52.1 4.3 90 FL200 250")
+-- (a family reads as its typed name does)
+check_eq(heard("spawn TST6 an a three thirty at 52.1 4.3 heading 090 FL200 250 knots"),
+  heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"))
+check(heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"):find("^CRE TST6 A33"))
