@@ -224,32 +224,35 @@ local function heard_word_is(w, set)
   return set[w] == true or (set["#number"] == true and (NUMBER_WORDS[w] == true or w:match("^%d") ~= nil
     or w:match("^fl%d+$") ~= nil))
 end
+-- lexicon.heard_as by the first word of each heard form
 local HEARD = {}
 for _, h in ipairs(lexicon.heard_as) do
   for _, form in ipairs(h.heard) do
     local words = {}
     for w in form:gmatch("%S+") do words[#words + 1] = w end
-    HEARD[#HEARD + 1] = { words = words, means = h.means, before = h.before and set_of(h.before),
-                          after = h.after and set_of(h.after),
-                          between = h.between and { set_of(h.between[1]), set_of(h.between[2]) } }
+    HEARD[words[1]] = HEARD[words[1]] or {}
+    table.insert(HEARD[words[1]], { words = words, means = h.means, before = h.before and set_of(h.before),
+                                    after = h.after and set_of(h.after),
+                                    between = h.between and { set_of(h.between[1]), set_of(h.between[2]) } })
   end
 end
 -- Speech recognition's sound-alike forms of instruction words
 -- (lexicon.heard_as), rewritten only where the instruction word is expected.
 local function heard_forms(text)
-  local toks = {}
-  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local toks, bare = {}, {}
+  for w in text:gmatch("%S+") do
+    toks[#toks + 1] = w
+    bare[#bare + 1] = w:lower():gsub("%p+$", "")
+  end
   local out, i, changed = {}, 1, false
   while i <= #toks do
     local hit
-    for _, h in ipairs(HEARD) do
+    for _, h in ipairs(HEARD[bare[i]] or {}) do
       local n = #h.words
       local ok = true
-      for k = 1, n do
-        local w = toks[i + k - 1]
-        -- punctuation may close the last word only ("turn write, heading")
-        ok = ok and w ~= nil and (w:lower() == h.words[k] or (k == n and w:lower():gsub("%p+$", "") == h.words[k]))
-      end
+      -- punctuation may close the last word only ("turn write, heading")
+      for k = 2, n do ok = ok and bare[i + k - 1] == h.words[k] end
+      for k = 1, n - 1 do ok = ok and not toks[i + k - 1]:match("%p$") end
       if ok then
         local last = toks[i + n - 1]
         local closed = last:match("%p$") ~= nil
