@@ -16,7 +16,8 @@ namespace {
 struct Suffix {
   std::vector<std::string> groups;
   std::vector<size_t> ends;  // token index one past each group
-  size_t hesitation = 0;     // groups before a hesitation between digits ("seven eight er niner": 2), else 0
+  size_t hesitation =
+      0;  // groups before a hesitation between digits ("seven eight er niner": 2), else 0
   std::string joined(size_t k) const {
     std::string s;
     for (size_t i = 0; i < k && i < groups.size(); ++i) s += groups[i];
@@ -28,9 +29,10 @@ bool is_word(const Token& t) { return t.kind == TokKind::kWord; }
 
 // A unit said after its number ("two five zero knots", "one zero degrees").
 bool is_unit_word(const std::string& w) {
-  static const char* kUnits[] = {"knots",   "knot", "kts",     "kt",     "feet",    "ft",    "foot",   "degrees",
-                                 "degree",  "fpm",  "percent", "miles",  "nautical", "mach", "seconds", "second",
-                                 "minutes", "minute", "thousand", "hundred"};
+  static const char* kUnits[] = {"knots",   "knot",    "kts",      "kt",       "feet",
+                                 "ft",      "foot",    "degrees",  "degree",   "fpm",
+                                 "percent", "miles",   "nautical", "mach",     "seconds",
+                                 "second",  "minutes", "minute",   "thousand", "hundred"};
   return std::any_of(std::begin(kUnits), std::end(kUnits), [&](const char* u) { return w == u; });
 }
 
@@ -69,8 +71,9 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       continue;
     }
     // a hesitation between spoken digits ("seven eight er niner") is skipped, and remembered
-    if ((k.text == "ah" || k.text == "uh" || k.text == "um" || k.text == "er") && !s.groups.empty() &&
-        s.hesitation == 0 && j + 1 < t.size() && is_word(t[j + 1]) && digit_word(t[j + 1].text) >= 0) {
+    if ((k.text == "ah" || k.text == "uh" || k.text == "um" || k.text == "er") &&
+        !s.groups.empty() && s.hesitation == 0 && j + 1 < t.size() && is_word(t[j + 1]) &&
+        digit_word(t[j + 1].text) >= 0) {
       s.hesitation = s.groups.size();
       ++j;
       continue;
@@ -87,11 +90,12 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       // a number, one digit and "hundred" with no number or unit after them
       static const char* kUnits[] = {"feet", "ft", "foot", "knots", "knot", "kts", "kt"};
       const bool value_after =
-          j + 1 < t.size() && (is_number_word(t[j + 1]) ||
-                               std::any_of(std::begin(kUnits), std::end(kUnits),
-                                           [&](const char* u) { return is_word(t[j + 1]) && t[j + 1].text == u; }));
-      if (k.text == "hundred" && s.groups.size() == 1 && s.groups[0].size() == 1 && s.groups[0] != "0" &&
-          !value_after) {
+          j + 1 < t.size() &&
+          (is_number_word(t[j + 1]) ||
+           std::any_of(std::begin(kUnits), std::end(kUnits),
+                       [&](const char* u) { return is_word(t[j + 1]) && t[j + 1].text == u; }));
+      if (k.text == "hundred" && s.groups.size() == 1 && s.groups[0].size() == 1 &&
+          s.groups[0] != "0" && !value_after) {
         s.groups[0] += "00";
         s.ends[0] = ++j;
         break;
@@ -286,14 +290,16 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       const std::string all = suf.joined(suf.groups.size());
       const std::string before = id.substr(0, id.size() - all.size()) + suf.joined(suf.hesitation);
       if (suf.hesitation > 0 && world_id(before))
-        heard = {before + " " + t[suf.ends[suf.hesitation - 1]].text + " " + all.substr(suf.joined(suf.hesitation).size()),
+        heard = {before + " " + t[suf.ends[suf.hesitation - 1]].text + " " +
+                     all.substr(suf.joined(suf.hesitation).size()),
                  1.0, 0.0};
       id = a->id;
       return true;
     }
     // a digit that speech recognition wrote as a word after the callsign's digits
     // ("KLM one two three for descend") is that digit when the callsign with it is an aircraft's
-    if (const size_t e = suf.ends.back(); e < t.size() && is_word(t[e]) && heard_digit(t[e].text) >= 0) {
+    if (const size_t e = suf.ends.back();
+        e < t.size() && is_word(t[e]) && heard_digit(t[e].text) >= 0) {
       if (const AircraftView* a = world_id(id + std::to_string(heard_digit(t[e].text)))) {
         id = a->id;
         end = e + 1;
@@ -311,13 +317,15 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     // before its unit, never as a digit or two bare before the word
     const std::string said_prefix = id.substr(0, id.size() - suf.joined(suf.groups.size()).size());
     size_t said = m.groups;
-    const bool single_digits = suf.groups.size() - m.groups <= 2 &&
-                               std::all_of(suf.groups.begin() + static_cast<long>(m.groups), suf.groups.end(),
-                                           [](const std::string& g) {
-                                             return g.size() == 1 && std::isdigit(static_cast<unsigned char>(g[0]));
-                                           });
+    const bool single_digits =
+        suf.groups.size() - m.groups <= 2 &&
+        std::all_of(suf.groups.begin() + static_cast<long>(m.groups), suf.groups.end(),
+                    [](const std::string& g) {
+                      return g.size() == 1 && std::isdigit(static_cast<unsigned char>(g[0]));
+                    });
     if (const size_t e = suf.ends.back(); single_digits && e < t.size() && is_word(t[e]) &&
-                                          names.vocabulary().is_keyword(t[e].text) && !is_unit_word(t[e].text))
+                                          names.vocabulary().is_keyword(t[e].text) &&
+                                          !is_unit_word(t[e].text))
       said = suf.groups.size();
     while (said < suf.groups.size() && !std::isdigit(static_cast<unsigned char>(suf.groups[said][0]))) ++said;
     heard = {said_prefix + text::upper(suf.joined(said)), m.airline, m.digits};
