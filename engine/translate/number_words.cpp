@@ -45,16 +45,31 @@ std::string fraction_digits(const std::vector<Token>& t, size_t& i) {
   return f;
 }
 
+struct Homophone {
+  const char* heard;
+  const char* digit;
+  int value;
+};
+constexpr std::array<Homophone, 10> kHeard = {{{"to", "two", 2},
+                                               {"too", "two", 2},
+                                               {"on", "one", 1},
+                                               {"won", "one", 1},
+                                               {"once", "one", 1},
+                                               {"ones", "one", 1},
+                                               {"for", "four", 4},
+                                               {"ate", "eight", 8},
+                                               {"a", "eight", 8},
+                                               {"fine", "five", 5}}};
+
 }  // namespace
 
+int heard_digit(const std::string& w) {
+  for (const auto& h : kHeard)
+    if (w == h.heard) return h.value;
+  return -1;
+}
+
 void fold_digit_homophones(std::vector<Token>& t) {
-  struct Homophone {
-    const char* heard;
-    const char* digit;
-  };
-  static const std::array<Homophone, 10> kHeard = {{{"to", "two"}, {"too", "two"}, {"on", "one"}, {"won", "one"},
-                                                    {"once", "one"}, {"ones", "one"}, {"for", "four"},
-                                                    {"ate", "eight"}, {"a", "eight"}, {"fine", "five"}}};
   auto digit = [&](size_t i) { return i < t.size() && t[i].kind == TokKind::kWord && digit_word(t[i].text) >= 0; };
   for (size_t i = 1; i + 1 < t.size();) {
     const std::string& r = t[i].raw;
@@ -143,6 +158,10 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
     const std::string& w = t[j].text;
     int d = digit_word(w), teen = teen_word(w), tens = tens_word(w);
     if (d >= 0 || teen >= 0 || tens >= 0) {
+      // digits said singly or grouped after "thousand" are the next value, not its
+      // hundreds ("one one thousand two five zero knots", "seven thousand two twenty
+      // knots": 11000 then 250, 7000 then 220)
+      if (n.has_thousand && cur.empty() && d >= 0 && group_at(t, j + 1)) break;
       int v = d >= 0 ? d : teen >= 0 ? teen : tens;
       if (tens >= 0 && digit_at(t, j + 1) > 0) {
         v += digit_at(t, j + 1);

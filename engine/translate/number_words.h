@@ -7,6 +7,9 @@
 //  - ATC digit-by-digit and grouped forms ("one two zero", "niner", "fife",
 //    "tree", "one eighty", "fifty one twenty"): adjacent groups concatenate;
 //  - hesitations ("ah", "uh", "um", "er") between groups are skipped;
+//  - digits said singly or grouped after "thousand" end the number ("one one
+//    thousand two five zero", "seven thousand two twenty": 11000, 7000;
+//    "four thousand five hundred" is one number);
 //  - a decimal part after "point" / "decimal" ("point seven eight" = 0.78),
 //    unless "thousand"/"hundred" follows (speech errors for "descend").
 // `digits` is the concatenation of the spoken groups with multipliers left
@@ -45,6 +48,10 @@ struct SpokenNumber {
 // noise and is removed.
 void fold_digit_homophones(std::vector<Token>& toks);
 
+// The digit a word that sounds like one stands for, as fold_digit_homophones
+// reads it ("for" = 4, "to"/"too" = 2, "won"/"on"/"once"/"ones" = 1,
+// "ate"/"a" = 8, "fine" = 5), or -1.
+int heard_digit(const std::string& w);
 // Value 0-9 of a digit word ("niner" = 9, "fife" = 5), or -1.
 int digit_word(const std::string& w);
 // True when the token can start or continue a spoken number.

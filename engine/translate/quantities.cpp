@@ -98,23 +98,26 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
     size_t p = i;  // walks back over prefix words
     auto prev = [&](std::initializer_list<const char*> w) { return p > floor && word_at(t, p - 1, w); };
     bool lat = false;
+    // A flight level or a heading said digit by digit is three digits; what follows
+    // is another value ("flight level three one zero one thousand five hundred feet
+    // per minute", "heading zero four five one one thousand": an altitude, so
+    // `thousand` is required after a heading's three digits).
+    auto three_digits = [&](size_t min_digits, bool thousand) {
+      if (n->typed || !(n->has_thousand || (!thousand && n->digits.size() > 3))) return;
+      size_t k = i;
+      while (k < end && k < i + 3 && t[k].kind == TokKind::kWord && digit_word(t[k].text) >= 0) ++k;
+      if (k < i + min_digits) return;
+      std::vector<Token> three(t.begin() + static_cast<long>(i), t.begin() + static_cast<long>(k));
+      if (auto v = read_number(three, 0)) {
+        q.number = *v;
+        q.value = v->value;
+        j = k;
+      }
+    };
     if (prev({"fl"}) || prev({"level"})) {
       q.kind = QKind::kAlt;
       q.flight_level = true;
-      if (!n->typed && (n->has_thousand || n->digits.size() > 3)) {
-        // A flight level is three digits; what follows is another value
-        // ("flight level three one zero one thousand five hundred feet per minute").
-        size_t k = i;
-        while (k < end && k < i + 3 && t[k].kind == TokKind::kWord && digit_word(t[k].text) >= 0) ++k;
-        if (k > i) {
-          std::vector<Token> three(t.begin() + static_cast<long>(i), t.begin() + static_cast<long>(k));
-          if (auto fl = read_number(three, 0)) {
-            q.number = *fl;
-            q.value = fl->value;
-            j = k;
-          }
-        }
-      }
+      three_digits(1, false);
       if (q.value < 1000.0) q.value *= 100.0;
       --p;
       if (prev({"flight"})) --p;
@@ -124,6 +127,7 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       --p;
     } else if (prev({"heading", "hdg", "headings"})) {
       q.kind = QKind::kHeading;
+      three_digits(3, true);
     } else if (prev({"latitude", "lat"})) {
       q.kind = QKind::kLat;
     } else if (prev({"longitude", "lon", "long"})) {

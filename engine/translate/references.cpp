@@ -16,6 +16,8 @@ namespace {
 struct Suffix {
   std::vector<std::string> groups;
   std::vector<size_t> ends;  // token index one past each group
+  size_t hesitation =
+      0;  // groups before a hesitation between digits ("seven eight er niner": 2), else 0
   std::string joined(size_t k) const {
     std::string s;
     for (size_t i = 0; i < k && i < groups.size(); ++i) s += groups[i];
@@ -24,6 +26,15 @@ struct Suffix {
 };
 
 bool is_word(const Token& t) { return t.kind == TokKind::kWord; }
+
+// A unit said after its number ("two five zero knots", "one zero degrees").
+bool is_unit_word(const std::string& w) {
+  static const char* kUnits[] = {"knots",   "knot",    "kts",      "kt",       "feet",
+                                 "ft",      "foot",    "degrees",  "degree",   "fpm",
+                                 "percent", "miles",   "nautical", "mach",     "seconds",
+                                 "second",  "minutes", "minute",   "thousand", "hundred"};
+  return std::any_of(std::begin(kUnits), std::end(kUnits), [&](const char* u) { return w == u; });
+}
 
 // Reads the digits and letters of a callsign from token j on. `restart`: the
 // first word of the airline just said; said again, it starts the callsign over
@@ -59,6 +70,14 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       ++j;
       continue;
     }
+    // a hesitation between spoken digits ("seven eight er niner") is skipped, and remembered
+    if ((k.text == "ah" || k.text == "uh" || k.text == "um" || k.text == "er") &&
+        !s.groups.empty() && s.hesitation == 0 && j + 1 < t.size() && is_word(t[j + 1]) &&
+        digit_word(t[j + 1].text) >= 0) {
+      s.hesitation = s.groups.size();
+      ++j;
+      continue;
+    }
     // "twenty-three oh seven": "oh" between spoken digits is a zero
     if ((k.text == "oh" || k.text == "o") && !s.groups.empty() && j + 1 < t.size() && is_word(t[j + 1]) &&
         digit_word(t[j + 1].text) >= 0) {
@@ -67,6 +86,20 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       continue;
     }
     if (k.text == "hundred" || k.text == "thousand") {
+      // "American one hundred", "Lufthansa four hundred": a flight number said as
+      // a number, one digit and "hundred" with no number or unit after them
+      static const char* kUnits[] = {"feet", "ft", "foot", "knots", "knot", "kts", "kt"};
+      const bool value_after =
+          j + 1 < t.size() &&
+          (is_number_word(t[j + 1]) ||
+           std::any_of(std::begin(kUnits), std::end(kUnits),
+                       [&](const char* u) { return is_word(t[j + 1]) && t[j + 1].text == u; }));
+      if (k.text == "hundred" && s.groups.size() == 1 && s.groups[0].size() == 1 &&
+          s.groups[0] != "0" && !value_after) {
+        s.groups[0] += "00";
+        s.ends[0] = ++j;
+        break;
+      }
       if (!s.groups.empty()) {
         s.groups.pop_back();
         s.ends.pop_back();
@@ -252,16 +285,48 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
   auto resolve = [&](std::string& id, const std::string& icao, const std::string& spoken, const Suffix& suf,
                      size_t& end) {
     if (const AircraftView* a = world_id(id)) {
+      // said with a hesitation between its digits, and the digits before it are another
+      // aircraft's ("speedbird seven eight er niner" with BAW78 and BAW789 flying): asked
+      const std::string all = suf.joined(suf.groups.size());
+      const std::string before = id.substr(0, id.size() - all.size()) + suf.joined(suf.hesitation);
+      if (suf.hesitation > 0 && world_id(before))
+        heard = {before + " " + t[suf.ends[suf.hesitation - 1]].text + " " +
+                     all.substr(suf.joined(suf.hesitation).size()),
+                 1.0, 0.0};
       id = a->id;
       return true;
+    }
+    // a digit that speech recognition wrote as a word after the callsign's digits
+    // ("KLM one two three for descend") is that digit when the callsign with it is an aircraft's
+    if (const size_t e = suf.ends.back();
+        e < t.size() && is_word(t[e]) && heard_digit(t[e].text) >= 0) {
+      if (const AircraftView* a = world_id(id + std::to_string(heard_digit(t[e].text)))) {
+        id = a->id;
+        end = e + 1;
+        return true;
+      }
     }
     if (fleet.empty()) return false;
     CallsignMatch m = match_world(icao, spoken, suf, fleet, names);
     if ((m.score < 0.45 && fleet.size() != 1) || m.groups == 0) return false;
     // heard as far as the match read it and the spelled letters after it: digit
     // groups after the match belong to the instruction ("... nine three four two, ten")
+    // unless they are one or two digits said singly with an instruction word after them
+    // ("Lufthansa four zero four climb" is DLH404 heard, not DLH40 and a stray four): a
+    // value is said in three digits or more, or comes after its instruction word or
+    // before its unit, never as a digit or two bare before the word
     const std::string said_prefix = id.substr(0, id.size() - suf.joined(suf.groups.size()).size());
     size_t said = m.groups;
+    const bool single_digits =
+        suf.groups.size() - m.groups <= 2 &&
+        std::all_of(suf.groups.begin() + static_cast<long>(m.groups), suf.groups.end(),
+                    [](const std::string& g) {
+                      return g.size() == 1 && std::isdigit(static_cast<unsigned char>(g[0]));
+                    });
+    if (const size_t e = suf.ends.back(); single_digits && e < t.size() && is_word(t[e]) &&
+                                          names.vocabulary().is_keyword(t[e].text) &&
+                                          !is_unit_word(t[e].text))
+      said = suf.groups.size();
     while (said < suf.groups.size() && !std::isdigit(static_cast<unsigned char>(suf.groups[said][0]))) ++said;
     heard = {said_prefix + text::upper(suf.joined(said)), m.airline, m.digits};
     id = m.id;

@@ -208,7 +208,75 @@ local function turn_letters(text, sh)
   return changed and table.concat(toks, " ") or text
 end
 
+-- A word that is a number as said or typed ("250", "fl240", "niner", "thirty").
+local function set_of(list)
+  local s = {}
+  for _, w in ipairs(list) do s[w] = true end
+  return s
+end
+local NUMBER_WORDS = set_of({ "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
+  "niner", "tree", "fife", "fower", "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen",
+  "seventeen", "eighteen", "nineteen", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety",
+  "hundred", "thousand" })
+local function heard_word_is(w, set)
+  if not w then return false end
+  w = w:lower():gsub("%p+$", "")
+  return set[w] == true or (set["#number"] == true and (NUMBER_WORDS[w] == true or w:match("^%d") ~= nil
+    or w:match("^fl%d+$") ~= nil))
+end
+-- lexicon.heard_as by the first word of each heard form
+local HEARD = {}
+for _, h in ipairs(lexicon.heard_as) do
+  for _, form in ipairs(h.heard) do
+    local words = {}
+    for w in form:gmatch("%S+") do words[#words + 1] = w end
+    HEARD[words[1]] = HEARD[words[1]] or {}
+    table.insert(HEARD[words[1]], { words = words, means = h.means, before = h.before and set_of(h.before),
+                                    after = h.after and set_of(h.after),
+                                    between = h.between and { set_of(h.between[1]), set_of(h.between[2]) } })
+  end
+end
+-- Speech recognition's sound-alike forms of instruction words
+-- (lexicon.heard_as), rewritten only where the instruction word is expected.
+local function heard_forms(text)
+  local toks, bare = {}, {}
+  for w in text:gmatch("%S+") do
+    toks[#toks + 1] = w
+    bare[#bare + 1] = w:lower():gsub("%p+$", "")
+  end
+  local out, i, changed = {}, 1, false
+  while i <= #toks do
+    local hit
+    for _, h in ipairs(HEARD[bare[i]] or {}) do
+      local n = #h.words
+      local ok = true
+      -- punctuation may close the last word only ("turn write, heading")
+      for k = 2, n do ok = ok and bare[i + k - 1] == h.words[k] end
+      for k = 1, n - 1 do ok = ok and not toks[i + k - 1]:match("%p$") end
+      if ok then
+        local last = toks[i + n - 1]
+        local closed = last:match("%p$") ~= nil
+        local joined_before = toks[i - 1] ~= nil and not toks[i - 1]:match("%p$")
+        if (h.before and not closed and heard_word_is(toks[i + n], h.before))
+            or (h.after and joined_before and heard_word_is(toks[i - 1], h.after))
+            or (h.between and not closed and joined_before and heard_word_is(toks[i - 1], h.between[1])
+                and heard_word_is(toks[i + n], h.between[2])) then
+          hit = { n = n, text = h.means .. (last:match("%p+$") or "") }
+          break
+        end
+      end
+    end
+    if hit then
+      out[#out + 1], i, changed = hit.text, i + hit.n, true
+    else
+      out[#out + 1], i = toks[i], i + 1
+    end
+  end
+  return changed and table.concat(out, " ") or text
+end
+
 local function written_forms(text)
+  text = heard_forms(text)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
@@ -979,7 +1047,14 @@ function M.translate(text, world)
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
   text = unglued_ids(text, world.aircraft)
-  local u = squawk.translate.utterance(require("translate.types").join(written_forms(text), TYPES.phrases),
+  local types = require("translate.types")
+  text = written_forms(text)
+  -- type names with their digits said as words, where traffic is created
+  if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
+      or text:lower():find("%f[%a]add") then
+    text = types.spoken(text, TYPES)
+  end
+  local u = squawk.translate.utterance(types.join(text, TYPES.phrases),
     world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {}, noted = {} }, G)

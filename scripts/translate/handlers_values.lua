@@ -183,6 +183,21 @@ return function(H, f, wrap, compass)
       local a = self:state(id)
       if a and dir ~= 0 and self:word_in(s.b, s.e, "climb climbing descend descending descent") then
         local cur = a.alt_ft or 0
+        -- "descend two eight thousand" straight after the verb may be "descend to eight
+        -- thousand" (lexicon.two_heard): the reading the verb allows, asked when both are
+        local n = q.number
+        if not relative and not fl and q.b == s.trig + 1 and self:word(s.trig, "climb descend") and not n.typed
+            and n.thousand and self.t[q.b].raw:lower() == "two" and #n.digits >= 2 and n.digits:sub(1, 1) == "2"
+            and target_ft == tonumber(n.digits) * 1000 then
+          local alt_to = tonumber(n.digits:sub(2)) * 1000
+          local function fits(x) return x > 0 and ((dir > 0 and x > cur + 50) or (dir < 0 and x < cur - 50)) end
+          if fits(alt_to) and fits(target_ft) then
+            return self:need(string.format("Should %s %s to %s ft or to %s ft?", id, verb, f.int(target_ft),
+              f.int(alt_to)))
+          elseif fits(alt_to) then
+            target_ft, alt = alt_to, f.alt(alt_to, false)
+          end
+        end
         if (dir > 0 and target_ft < cur - 1000) or (dir < 0 and target_ft > cur + 1000) then
           return self:need(string.format("%s is at %s ft: %s to %s? Please confirm the altitude.", id, f.int(cur),
             verb, alt))
@@ -296,8 +311,13 @@ return function(H, f, wrap, compass)
     local abs, rel = self:pick(abs_c, s, "heading"), self:pick(rel_c, s, "heading")
     local correction = self:word_in(s.b, s.e, "@correction")
     local turn = 0
-    if self:word_in(s.b, s.e, "@left") then turn = -1 end
-    if self:word_in(s.b, s.e, "@right") and self:find_word(s.b, s.e, "@right") < self:find_word(s.b, s.e, "@left") then
+    -- a direction said after a correction replaces the one before it ("turn left, correction, turn right")
+    local tb = s.b
+    for i = s.b, s.e - 1 do
+      if self:word(i, "@correction") and self:word_in(i + 1, s.e, "@left @right") then tb = i + 1 end
+    end
+    if self:word_in(tb, s.e, "@left") then turn = -1 end
+    if self:word_in(tb, s.e, "@right") and self:find_word(tb, s.e, "@right") < self:find_word(tb, s.e, "@left") then
       turn = 1
     end
     local named
@@ -323,7 +343,14 @@ return function(H, f, wrap, compass)
       elseif not n.typed and n.lead_digit and H.cut_off(n) then
         return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
       end
-      if not n.typed and n.lead_digit and n.groups == 2 and hdg < 40 then hdg = hdg * 10 end
+      if not n.typed and n.lead_digit and n.groups == 2 and hdg < 40 then
+        -- only a fluent "two five" lost its final zero; with a hesitation before or inside it
+        -- ("heading uh two two", "two uh two") a digit may be missing anywhere
+        if self:word_in(abs.b - 1, abs.e, "@hesitations") then
+          return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
+        end
+        hdg = hdg * 10
+      end
       if hdg > 360 then
         local r = self:repaired(abs, hdg, 0, 360, 5)
         if not r then return self:need("What heading should " .. id .. " fly? I heard " .. f.int(hdg) .. ".") end

@@ -33,6 +33,9 @@ return {
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },
+  -- hesitations: skipped inside a spoken number, but a number said with one is not
+  -- completed by guessing ("heading uh two two" asks which heading)
+  hesitations = { "ah", "uh", "um", "er" },
   -- typos are corrected to these words (one edit away, two for 7+ letters);
   -- short everyday words are left out: speech recognition makes real words
   -- near them ("loan", "train") far more often than typists misspell them
@@ -178,6 +181,26 @@ return {
     hotel = "H", india = "I", juliet = "J", juliett = "J", juliette = "J", kilo = "K", lima = "L", mike = "M",
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
+  },
+  -- what speech recognition writes for an instruction word that sounds alike
+  -- ("the send flight level one niner zero", "turn write heading 040",
+  -- "head in one one zero", "two six zero nots", "descend two flight level").
+  -- A heard form is that word ONLY where the word is expected: `before` (the
+  -- next word is one of these; "#number" any number, digits or number words),
+  -- `after` (the word before it is one of these), or `between` (both: after
+  -- one of between[1] and before one of between[2]). Anywhere else it stays
+  -- what it is ("write the heading down", "head into the wind", "the send
+  -- button", "climb two four thousand").
+  heard_as = {
+    { heard = { "write", "rite", "wright" }, means = "right",
+      before = { "heading", "hdg", "turn" }, after = { "turn" } },
+    { heard = { "the send", "this end", "the scent", "decent", "dissent" }, means = "descend",
+      before = { "#number", "flight", "level", "altitude", "to" } },
+    { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },
+    { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
+    { heard = { "two", "too" }, means = "to",
+      between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
+                  { "flight", "level", "fl", "heading", "speed", "altitude" } } },
   },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },

@@ -286,7 +286,17 @@ return function(intent, rule, words)
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
-  -- "say altitude", "report your heading": a question about the aircraft's state
+  -- "say altitude", "report your heading": a question about the aircraft's state (POS of the
+  -- aircraft named); "say heading 270", a value after the state word, is that instruction's value
+  rule { "say", false, when = function(g, i)
+    for k = i + 1, math.min(i + 3, #g.t) do
+      if g:word(k, "altitude speed heading level airspeed mach") then
+        local v = g.t[g:word(k + 1, "of to") and k + 2 or k + 1]
+        return v ~= nil and (v.kind == "number" or v.number_word == true) and not g.u:used(k + 1)
+      end
+    end
+    return false
+  end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"

@@ -138,6 +138,77 @@ function M.build(designators)
   return { types = rows, phrases = phrases, designators = all }
 end
 
+-- Type names as speech recognition writes them, digits as number words: after a
+-- maker or a designator's letter ("a three twenty", "b seven three eight", "e one
+-- ninety", "boeing seven six seven three hundred", "airbus a three two one"), the
+-- words read by the rules of spoken numbers (digits said singly, "twenty one",
+-- "ninety", "oh"; "three hundred" after a family is its -300 variant) become
+-- the written name, only when that name is one of `built`'s (M.build's result)
+-- and only in a request that creates traffic (`create` true): "a three twenty"
+-- anywhere else stays as said.
+local DIGITS = { zero = "0", oh = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6",
+                 seven = "7", eight = "8", nine = "9", niner = "9" }
+local TEENS = { ten = "10", eleven = "11", twelve = "12", thirteen = "13", fourteen = "14", fifteen = "15",
+                sixteen = "16", seventeen = "17", eighteen = "18", nineteen = "19" }
+local TENS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6", seventy = "7", eighty = "8",
+               ninety = "9" }
+local LETTERS = { a = "airbus", b = "boeing", e = "embraer" }
+function M.spoken(text, built)
+  if not built.known then
+    built.known = {}
+    for _, r in ipairs(built.types) do
+      built.known[r[2]] = true
+      built.known[r[1] .. " " .. r[2]] = true
+    end
+    for _, d in ipairs(built.designators) do built.known[d:lower()] = true end
+  end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local out, i, changed = {}, 1, false
+  while i <= #toks do
+    local w = toks[i]:lower()
+    local maker = LETTERS[w] and w or nil
+    local lead = maker and w or ""
+    local k = i + 1
+    if not maker and (w == "airbus" or w == "boeing" or w == "embraer") then
+      maker, lead = w, w .. " "
+      if w == "airbus" and toks[k] and toks[k]:lower() == "a" then lead, k = "a", k + 1 end
+    end
+    local best
+    if maker then
+      -- the digits said after the letter, one spoken group at a time, and the name each step spells
+      local digits, variant = "", nil
+      while toks[k] do
+        local x = toks[k]:lower()
+        local nx = toks[k + 1] and toks[k + 1]:lower()
+        if DIGITS[x] and nx == "hundred" and #digits == 3 and not variant then
+          variant, k = DIGITS[x] .. "00", k + 2
+        elseif variant then
+          break
+        elseif DIGITS[x] then
+          digits, k = digits .. DIGITS[x], k + 1
+        elseif TEENS[x] then
+          digits, k = digits .. TEENS[x], k + 1
+        elseif TENS[x] then
+          local unit = nx and DIGITS[nx]
+          if unit and unit ~= "0" then digits, k = digits .. TENS[x] .. unit, k + 2
+          else digits, k = digits .. TENS[x] .. "0", k + 1 end
+        else
+          break
+        end
+        local name = lead .. digits .. (variant and ("-" .. variant) or "")
+        if #digits >= 3 and built.known[name] then best = { name = name, e = k } end
+      end
+    end
+    if best then
+      out[#out + 1], i, changed = best.name, best.e, true
+    else
+      out[#out + 1], i = toks[i], i + 1
+    end
+  end
+  return changed and table.concat(out, " ") or text
+end
+
 -- The request with each name of several words as its designator ("a 737 MAX 8" -> "a B38M").
 function M.join(text, phrases)
   local lower = text:lower()

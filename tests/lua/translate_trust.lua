@@ -362,3 +362,66 @@ check_eq(said(tr("seed the random number generator with 7")), "SEED 7")
 -- the clock is the simulation's: started, stopped, started at a rate
 check_eq(said(tr("stop the clock")), "HOLD")
 check_eq(said(tr("start the clock at 2x")), "OP ; DTMULT 2")
+
+-- speech-recognition output (R15's classes; docs/translator_trust.md "Speech recognition")
+local asr = squawk.sim.new()
+for _, line in ipairs({ "CRE AAL100 B738 40.5 -73.5 090 FL240 280", "CRE DLH400 A321 50.0 8.5 180 FL300 290",
+    "CRE DLH40 A320 50.2 8.6 270 FL200 260", "CRE BAW78 A319 51.5 0.0 090 11000 250",
+    "CRE BAW789 A320 51.6 0.1 270 FL250 280", "CRE KLM544 B738 52.3 4.7 045 FL150 260" }) do
+  check(asr:exec(line))
+end
+local function heard(text) return said(graph.translate(text, { sim = asr, mode = "offline" })) end
+local function asks(text, part)
+  local s = heard(text)
+  check(s:sub(1, 4) == "ASK " and (not part or s:find(part, 1, true) ~= nil), text .. " -> " .. s)
+end
+-- sound-alike instruction words (lexicon.heard_as), only where the instruction word is expected
+check_eq(heard("DLH40 turn write heading one two zero"), "HDG DLH40 120 RIGHT")
+check_eq(heard("DLH40 rite heading zero six zero"), "HDG DLH40 60 RIGHT")
+check_eq(heard("AAL100 decent flight level two zero zero"), "ALT AAL100 FL200")
+check_eq(heard("AAL100 turn left heading two seven zero the send flight level two two zero"),
+  "HDG AAL100 270 LEFT ; ALT AAL100 FL220")
+check_eq(heard("DLH400 head in two four zero"), "HDG DLH400 240")
+check_eq(heard("DLH400 speed two niner zero nuts"), "SPD DLH400 290")
+check(not heard("write the heading down for DLH400"):find("RIGHT", 1, true))
+check(not heard("BAW78 the send key is stuck"):find("ALT", 1, true))
+-- flight numbers said as numbers; digits heard as words; digits left after a near callsign
+check_eq(heard("american one hundred climb flight level two six zero"), "ALT AAL100 FL260")
+check_eq(heard("lufthansa four hundred reduce speed two five zero knots"), "SPD DLH400 250")
+check_eq(heard("klm five four for descend flight level one two zero"), "ALT KLM544 FL120")
+asks("lufthansa four zero seven climb flight level three one zero", "DLH407")
+-- a hesitation inside a callsign both of whose readings fly, or inside a two-digit heading, asks
+asks("speedbird seven eight um niner descend flight level two one zero", "BAW789")
+check_eq(heard("speedbird seven eight niner descend flight level two one zero"), "ALT BAW789 FL210")
+asks("AAL100 turn left heading um three four", "headings have three digits")
+check_eq(heard("AAL100 turn left heading three four"), "HDG AAL100 340 LEFT")
+-- "two" straight after climb/descend may be "to": the reading the verb allows, asked when both are
+check_eq(heard("BAW78 descend two six thousand"), "ALT BAW78 6000")
+asks("AAL100 descend two two thousand", "to 22000 ft or to 2000 ft")
+check_eq(heard("AAL100 climb two six thousand"), "ALT AAL100 26000")
+-- "say heading" asks for a report (POS); a value after the state word is the instruction's value
+check_eq(heard("AAL100 say heading"), "POS AAL100")
+check_eq(heard("say altitude, DLH400"), "POS DLH400")
+check_eq(heard("AAL100 say heading three three zero"), "HDG AAL100 330")
+-- a turn direction corrected is the one turned
+check_eq(heard("DLH40 turn right, correction, turn left heading one five zero"), "HDG DLH40 150 LEFT")
+check_eq(heard("AAL100 climb two flight level two eight zero"), "ALT AAL100 FL280")
+check_eq(heard("DLH40 turn left two heading one one zero"), "HDG DLH40 110 LEFT")
+-- spoken numbers: digits said singly or grouped after "thousand" are the next value; a heading said
+-- digit by digit is three digits when an altitude follows it
+check_eq(heard("create TST1 b738 at 52.1 4.3 heading two seven zero one two thousand two five zero knots"),
+  "CRE TST1 B738 52.1 4.3 270 12000 250")
+check_eq(heard("create TST2 b738 at 52.1 4.3 heading 090 nine thousand one eighty knots"),
+  "CRE TST2 B738 52.1 4.3 90 9000 180")
+check_eq(heard("AAL100 descend four thousand five hundred"), "ALT AAL100 4500")
+-- aircraft types with their digits said as words, where traffic is created
+check_eq(heard("create TST3 airbus a three two one at 52.1 4.3 heading 090 FL200 250 knots"),
+  "CRE TST3 A321 52.1 4.3 90 FL200 250")
+check_eq(heard("create TST4 boeing seven three seven eight hundred at 52.1 4.3 heading 090 FL200 250 knots"),
+  "CRE TST4 B738 52.1 4.3 90 FL200 250")
+check_eq(heard("create TST5 e one seventy five at 52.1 4.3 heading 090 FL200 250 knots"),
+  "CRE TST5 E175 52.1 4.3 90 FL200 250")
+-- (a family reads as its typed name does)
+check_eq(heard("spawn TST6 an a three thirty at 52.1 4.3 heading 090 FL200 250 knots"),
+  heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"))
+check(heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"):find("^CRE TST6 A33"))
