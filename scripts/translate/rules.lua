@@ -80,6 +80,8 @@ return function(intent, rule, words)
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
+  rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
@@ -112,10 +114,13 @@ return function(intent, rule, words)
   rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
+  rule { "slow fast", false, prev = { 3, "is it's are was isn't" } }  -- "the Shuttle is a bit slow": a description
   rule { "slow slower faster accelerate decelerate", "spd" }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
 
   -- heading
+  -- "it's heading into the other traffic": the aircraft's present course described, no instruction
+  rule { "heading", false, prev = { 1, "it's is was are they're" } }
   rule { "heading hdg headings", "hdg" }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn turning", "hdg" }
@@ -237,7 +242,7 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look" } }
+  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where" } }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
@@ -245,6 +250,7 @@ return function(intent, rule, words)
   rule { "listrte rte", "listrte" }
 
   -- information and repositioning
+  rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
   rule { "doing", "pos", prev = { 3, "what what's whats" } }  -- "what's klm12 doing"
@@ -287,6 +293,8 @@ return function(intent, rule, words)
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
   -- "say altitude", "report your heading": a question about the aircraft's state
+  -- "head west, say heading 270": "say" before a value gives the value, it asks for no report
+  rule { "say", false, when = function(g, i) return #g:quantities(i + 1, math.min(#g.t + 1, i + 4)) > 0 end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
@@ -329,6 +337,14 @@ return function(intent, rule, words)
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
   rule { "seed", "seed" }
+  -- "remove the Ryanair from the scenario", "is detection on in this scenario": the scenario running,
+  -- no file to load (unless a file is named after it)
+  rule { "scenario", false, prev = { 2, "from for in this start of" }, when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 3) do
+      if g.t[k].raw:find("[%./]") and g.t[k].kind ~= "punct" then return false end
+    end
+    return true
+  end }
   rule { "scenario load open ic", "ic" }
   rule { "print", "echo" }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
