@@ -723,7 +723,9 @@ return function(H, f, compass)
   -- current zone radius?", "which resolution method is active?"): the bare command shows it.
   function m:asks_setting()
     local first = self:skip_fillers(1)
-    return self.t[#self.t].text == "?" and self:word(first, "is are what what's whats which")
+    -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?")
+    return self.t[#self.t].text == "?" and (self:word(first, "is are what what's whats which")
+      or self:word_in(1, #self.t + 1, "check whether"))
   end
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end

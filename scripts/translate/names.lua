@@ -182,6 +182,19 @@ return {
     { "pollot", "LOT" },
     { "futura", "FUA" },
     { "viva", "VIV" },
+    { "scooter", "TGW" },  -- (Scoot)
+    { "rex", "RXA" },  -- (Regional Express)
+    { "red cap", "AXM" },  -- (AirAsia)
+    { "xanadu", "XAX" },  -- (AirAsia X)
+    { "malaysian", "MAS" },
+    { "jetstar", "JST" },
+    { "cebu", "CEB" },
+    { "philippine", "PAL" },
+    { "thai", "THA" },
+    { "indonesia", "GIA" },  -- (Garuda)
+    { "ifly", "IGO" },  -- (IndiGo)
+    { "spicejet", "SEJ" },
+    { "volotea", "VOE" },
     { "shuttle", "SHT" },  -- (British Airways Shuttle)
     { "hansaline", "CLH" },  -- (Lufthansa CityLine)
   },

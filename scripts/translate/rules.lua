@@ -108,6 +108,8 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", false, prev = { 2, "half double" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  -- "slow everything down to half speed": the clock, when no aircraft is named
+  rule { "slow", "dtmult", near = { 5, "half" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "fast faster", "dtmult", prev = { 2, "twice thrice times x" } }  -- "run twice as fast"
   rule { "multiplier", "dtmult" }
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
@@ -296,6 +298,7 @@ return function(intent, rule, words)
   -- "head west, say heading 270": "say" before a value gives the value, it asks for no report
   rule { "say", false, when = function(g, i) return #g:quantities(i + 1, math.min(#g.t + 1, i + 4)) > 0 end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
+  rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
@@ -314,8 +317,8 @@ return function(intent, rule, words)
     return k < i + 4 and g:word(k + 1, "time")
   end }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
-         not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
-  rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x" } }
+         not_near = { 7, "real times faster x twice thrice" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
+  rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x twice thrice" } }
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
@@ -350,6 +353,10 @@ return function(intent, rule, words)
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
 
   -- conflict detection and resolution
+  -- "the look-ahead time for conflict detection", "the radius for resolution": the setting's owner
+  rule { "detection resolution", false, prev = { 3, "for of" }, when = function(g, i)
+    return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
+  end }
   rule { "detection asas cdmethod cd", "asas" }
   rule { "resolution resolve reso", "reso" }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
