@@ -55,23 +55,24 @@ end
 -- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
 -- kept here after their first-sight figures were recorded, fixed by class.
 floors("tests/data/translate_round1.tsv", 0.98, 0.01, true)
-floors("tests/data/translate_round2.tsv", 0.80, 0.026, true)
-floors("tests/data/translate_round3.tsv", 0.93, 0.01, true)
+floors("tests/data/translate_round2.tsv", 0.82, 0.016, true)
+floors("tests/data/translate_round3.tsv", 0.95, 0.008, true)
 floors("tests/data/translate_round4.tsv", 0.93, 0.005, true)
 floors("tests/data/translate_round5.tsv", 0.92, 0.005, true)
 floors("tests/data/translate_round6.tsv", 0.99, 0.005, true)
-floors("tests/data/translate_round7.tsv", 0.92, 0.005, true)
+floors("tests/data/translate_round7.tsv", 0.95, 0.005, true)
 floors("tests/data/translate_round8.tsv", 0.93, 0.005, true)
 floors("tests/data/translate_round9.tsv", 0.95, 0.012, true)
-floors("tests/data/translate_round10.tsv", 0.91, 0.005, true)
+floors("tests/data/translate_round10.tsv", 0.94, 0.004, true)
 floors("tests/data/translate_round11.tsv", 0.93, 0.005, true)
 floors("tests/data/translate_round12.tsv", 0.95, 0.005, true)
--- R13 and R14: measured at first sight (docs/translation_ledger.md), not fixed yet; floors at that figure
-floors("tests/data/translate_round13.tsv", 0.917, 0.004, true)
-floors("tests/data/translate_round14.tsv", 0.863, 0.0, true)
--- R15 and R16: measured at first sight on 243e1d4, not fixed yet; floors at that figure
+-- R13 and R14: measured at first sight (docs/translation_ledger.md); R13 and R14 gained from R16's fixes
+floors("tests/data/translate_round13.tsv", 0.947, 0.0, true)
+floors("tests/data/translate_round14.tsv", 0.88, 0.0, true)
+-- R15: measured at first sight on 243e1d4, not fixed yet; floors at that figure. R16: after translate8's
+-- fixes (an aircraft named by its airline or type, polite phrasing, the clock)
 floors("tests/data/translate_round15.tsv", 0.84, 0.039, true)
-floors("tests/data/translate_round16.tsv", 0.37, 0.021, true)
+floors("tests/data/translate_round16.tsv", 0.81, 0.017, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)

@@ -362,3 +362,54 @@ check_eq(said(tr("seed the random number generator with 7")), "SEED 7")
 -- the clock is the simulation's: started, stopped, started at a rate
 check_eq(said(tr("stop the clock")), "HOLD")
 check_eq(said(tr("start the clock at 2x")), "OP ; DTMULT 2")
+
+-- an aircraft named by "the" and its airline alone (telephony, or a name it is known by) is the
+-- one aircraft of that airline flying; with two it asks which, with none it asks; a callsign cut
+-- short in radiotelephony ("Lufthansa, descend") and other traffic named that way are no reference
+do
+  local fleet = squawk.sim.new()
+  for _, line in ipairs({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250",
+      "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE BAW123 A320 52.0 4.0 025 FL200 250",
+      "CRE EZY45 A319 52.1 3.8 060 FL180 270", "CRE N123AB C172 52.3 4.6 090 3500 110" }) do
+    check(fleet:exec(line))
+  end
+  local function ft(text) return said(graph.translate(text, { sim = fleet, mode = "offline" })) end
+  check_eq(ft("would you mind asking the Lufthansa to come down to FL 260?"), "ALT DLH4AX FL260")
+  check_eq(ft("I'd like the easyJet on heading 120, thanks"), "HDG EZY45 120")
+  check_eq(ft("could the BA slow to 230 knots please"), "SPD BAW123 230")
+  check_eq(ft("please have the British Airways climb to FL 220"), "ALT BAW123 FL220")
+  check_eq(ft("could the KLM climb to FL 300?"), "ASK Which KLM: KLM1234 or KLM77?")
+  check_eq(ft("can the Ryanair descend to FL 100?"), "ASK Which aircraft should change altitude? Please give its callsign.")
+  check_eq(ft("Lufthansa, descend FL 200"), "ASK Which aircraft should change altitude? Please give its callsign.")
+  check_eq(ft("please turn the easyJet left 20 degrees, it's getting close to the Lufthansa"), "HDG EZY45 40 LEFT")
+  check_eq(ft("EZY45 climb FL 200 to stay behind the BA"), "ALT EZY45 FL200")
+  -- a new aircraft of an airline is no reference to the one flying
+  check_eq(ft("add a Lufthansa A320, DLH9CK, at 52.5 north 4.1 east heading 090 FL 200 250 knots"),
+    "CRE DLH9CK A320 52.5 4.1 90 FL200 250")
+  -- by type or maker, when no callsign is said and one aircraft of it flies
+  check_eq(ft("could you turn the Cessna right onto heading 180?"), "HDG N123AB 180 RIGHT")
+  check_eq(ft("please slow the Boeing down to 240 knots"),
+    "ASK Which aircraft should change speed? Please give its callsign.")
+  -- an airline said with a number that is not the aircraft's airline asks, never takes the number alone
+  check_eq(ft("Scooter 77 climb FL 200"), "ASK Did you mean KLM77? I heard TGW77.")
+  -- the request's own words, read as English: "say" before a value, "heading into", "is a bit slow"
+  check_eq(ft("I'd like KLM77 to head south, say heading 180, thanks"), "HDG KLM77 180")
+  check_eq(ft("turn DLH4AX right 30 degrees, it's heading into the other traffic"), "HDG DLH4AX 120 RIGHT")
+  check_eq(ft("EZY45 is a bit slow, could you speed it up by 20 knots?"), "SPD EZY45 290")
+  -- a condition naming the level just cleared ("when it gets there") waits for it
+  check_eq(ft("could you climb BAW123 to FL 240, and once it's there, slow it to 250 knots"),
+    "ALT BAW123 FL240 ; ATALT BAW123 FL240 SPD BAW123 250")
+  -- a flight level is never relative, whatever "current" or "by" follows
+  check_eq(ft("descend KLM77 to flight level one two zero and keep its current heading"),
+    "ALT KLM77 FL120 ; HDG KLM77 180")
+  -- a reversal with no way said asks which way
+  check_eq(ft("please turn KLM77 around"), "ASK Should KLM77 turn around to the left or to the right?")
+  -- "the scenario" spoken of is no file to load; destinations asked about are shown
+  check_eq(ft("please remove the Cessna from the scenario"), "DEL N123AB")
+  check_eq(ft("what's the easyJet's destination?"), "DEST EZY45")
+  check_eq(ft("add SUGOL to the easyJet's route and send it direct there"), "ADDWPT EZY45 SUGOL ; DIRECT EZY45 SUGOL")
+  -- the clock, said politely
+  check_eq(ft("please carry on with the simulation"), "OP")
+  check_eq(ft("could you slow everything down to half speed?"), "DTMULT 0.5")
+  check_eq(ft("set the look-ahead time for conflict detection to 240 seconds"), "DTLOOK 240")
+end
