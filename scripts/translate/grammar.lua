@@ -995,11 +995,23 @@ local function unglued_ids(text, fleet)
   end))
 end
 
+-- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
+-- joined id is exactly an aircraft's (letters after the digits too).
+local function split_ids(text, fleet)
+  if #fleet == 0 then return text end
+  local ids = {}
+  for _, a in ipairs(fleet) do ids[a.id:lower()] = true end
+  return (text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", function(a, b)
+    if ids[(a .. b):lower()] then return a .. b end
+    return nil
+  end))
+end
+
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
-  text = unglued_ids(text, world.aircraft)
+  text = split_ids(unglued_ids(text, world.aircraft), world.aircraft)
   local u = squawk.translate.utterance(require("translate.types").join(written_forms(text), TYPES.phrases),
     world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},

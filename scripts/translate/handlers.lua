@@ -262,13 +262,14 @@ local function makers()
 end
 
 -- An aircraft named by "the" and its type or maker alone ("the Cessna",
--- "the A346", "the Boeing 777"), when no callsign is said in the request and
+-- "the A346", "the Boeing 777"), when no callsign is said in the request (an
+-- airline alone may be: "the Cessna ... as the Lufthansa") and
 -- exactly one aircraft flying is of that type (or that maker's), is a
 -- reference to it, as in airline_refs; a family said ("the 737") is the
 -- designator it names, and matches only an aircraft of that designator.
 function m:type_refs()
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" then return end
+    if r.kind == "aircraft" and not r.by_airline then return end
   end
   local i = 1
   while i <= #self.t do

@@ -244,7 +244,7 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where" } }
+  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
@@ -255,14 +255,15 @@ return function(intent, rule, words)
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
-  rule { "doing", "pos", prev = { 3, "what what's whats" } }  -- "what's klm12 doing"
+  rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
+  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }  -- "where's the MERIT intersection?"
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
   rule { "details status info information state pos", "pos" }
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
-  rule { "put", "move", near = { 3, "back" }, not_near = { 4, "lnav vnav navigation" } }
+  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place
   rule { "put place", "move", when = function(g, i)

@@ -408,6 +408,12 @@ do
   check_eq(ft("please remove the Cessna from the scenario"), "DEL N123AB")
   check_eq(ft("what's the easyJet's destination?"), "DEST EZY45")
   check_eq(ft("add SUGOL to the easyJet's route and send it direct there"), "ADDWPT EZY45 SUGOL ; DIRECT EZY45 SUGOL")
+  -- a callsign typed apart after its letters; positions, routes and states asked after in passing
+  check_eq(ft("could you please descend EZY 45 to FL 150?"), "ALT EZY45 FL150")
+  check_eq(ft("where's the SUGOL intersection?"), "POS SUGOL")
+  check_eq(ft("please check the Lufthansa's route"), "LISTRTE DLH4AX")
+  check_eq(ft("can you tell me what the Cessna is doing right now?"), "POS N123AB")
+  check_eq(ft("could you put the Cessna back on the same heading as the Lufthansa?"), "HDG N123AB 90")
   -- the clock, said politely
   check_eq(ft("please carry on with the simulation"), "OP")
   check_eq(ft("could you slow everything down to half speed?"), "DTMULT 0.5")
