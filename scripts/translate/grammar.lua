@@ -1017,6 +1017,7 @@ function M.translate(text, world)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {}, noted = {} }, G)
   g:settle_callsigns()
+  g:airline_types()
   g:airline_refs()
   g:type_refs()
   g:opening_right()

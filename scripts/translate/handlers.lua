@@ -247,18 +247,37 @@ function m:airline_refs()
   end
 end
 
--- Makers (lower case, "cessna") -> {designator = true} of the types squawk knows.
-local MAKERS
+-- Makers (lower case, "cessna") -> {designator = true} of the types squawk
+-- knows, and model names ("737", "a320") -> designator.
+local MAKERS, MODELS
 local function makers()
-  if MAKERS then return MAKERS end
-  MAKERS = {}
+  if MAKERS then return MAKERS, MODELS end
+  MAKERS, MODELS = {}, {}
   local names = require("translate.names")
   for _, row in ipairs(require("translate.types").build(names.designators).types) do
     local m = row[1]:lower()
     MAKERS[m] = MAKERS[m] or {}
     MAKERS[m][row[3]] = true
+    MODELS[row[2]] = MODELS[row[2]] or row[3]
   end
-  return MAKERS
+  return MAKERS, MODELS
+end
+
+-- "add a Ryanair 737, RYR81JC, ...", "a United 757, UAL1540": an airline and a
+-- model number after an article, with a callsign said straight after, are
+-- the new aircraft's airline and type, no flight number (the C++ matcher read
+-- RYR737): that reference becomes a type reference to the model's designator.
+function m:airline_types()
+  local _, models = makers()
+  for k, r in ipairs(self.refs) do
+    local nxt = self.refs[k + 1]
+    local digits = r.kind == "aircraft" and not r.exists and r.name:match("^%a+(%d+)$")
+    local ty = digits and models[digits]
+    if ty and self:word(r.b - 1, "@articles_new more") and nxt and nxt.kind == "aircraft"
+        and nxt.b <= self:skip_fillers(r.e, false) + 1 then
+      self.refs[k] = { kind = "type", name = ty, b = r.b, e = r.e }
+    end
+  end
 end
 
 -- An aircraft named by "the" and its type or maker alone ("the Cessna",

@@ -90,12 +90,20 @@ return function(H, f, compass)
     -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol")
     local named_at
     if not lat or not lon then
-      -- ("at JFK": the airport by its VOR's code, nearest the traffic, else anywhere: KJFK)
-      for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-        local near = self.fleet[1] or { lat = 0, lon = 0 }
-        named_at = named_at or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+      -- ("at Zurich... no, sorry, at Munich": the place said after the correction)
+      local from = s.b
+      for i = s.trig, s.e - 1 do
+        if self:word(i, "@correction sorry") then from = i end
       end
-      named_at = named_at or self:place_by_name(s.trig + 1, s.e)
+      -- ("at JFK": the airport by its VOR's code, nearest the traffic, else anywhere: KJFK)
+      for _, r in ipairs(self:refs_in(from, s.e, "waypoint")) do
+        local near = self.fleet[1] or { lat = 0, lon = 0 }
+        -- (a navaid's kind said after its name, "over Sparta VOR", is no place of its own)
+        if not self:word(r.b, "@navaid_kinds") then
+          named_at = named_at or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+        end
+      end
+      named_at = named_at or self:place_by_name(math.max(from, s.trig) + 1, s.e)
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
     -- order: heading, altitude, speed: "fl300 290"); others are asked about

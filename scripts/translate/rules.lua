@@ -197,6 +197,11 @@ return function(intent, rule, words)
   end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
+  -- "let's start with a Ryanair 737, RYR81JC, at ...", "I'd like an easyJet A320, EZY45, over ...": a new
+  -- aircraft's type and callsign after the article
+  rule { "start like", "create", near = { 2, "@articles_new" }, when = function(g, i)
+    return g:has_ref(i + 1, i + 7, "type") and g:new_aircraft_follows(g:find_word(i + 1, i + 7, "@articles_new"))
+  end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
   rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)

@@ -55,7 +55,7 @@ end
 -- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
 -- kept here after their first-sight figures were recorded, fixed by class.
 floors("tests/data/translate_round1.tsv", 0.98, 0.01, true)
-floors("tests/data/translate_round2.tsv", 0.82, 0.016, true)
+floors("tests/data/translate_round2.tsv", 0.824, 0.016, true)
 floors("tests/data/translate_round3.tsv", 0.95, 0.008, true)
 floors("tests/data/translate_round4.tsv", 0.93, 0.005, true)
 floors("tests/data/translate_round5.tsv", 0.92, 0.005, true)
@@ -72,7 +72,7 @@ floors("tests/data/translate_round14.tsv", 0.883, 0.0, true)
 -- R15: measured at first sight on 243e1d4, not fixed yet; floors at that figure. R16: after translate8's
 -- fixes (an aircraft named by its airline or type, polite phrasing, the clock)
 floors("tests/data/translate_round15.tsv", 0.84, 0.039, true)
-floors("tests/data/translate_round16.tsv", 0.83, 0.017, true)
+floors("tests/data/translate_round16.tsv", 0.846, 0.017, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)

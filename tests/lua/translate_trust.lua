@@ -414,6 +414,15 @@ do
   check_eq(ft("please check the Lufthansa's route"), "LISTRTE DLH4AX")
   check_eq(ft("can you tell me what the Cessna is doing right now?"), "POS N123AB")
   check_eq(ft("could you put the Cessna back on the same heading as the Lufthansa?"), "HDG N123AB 90")
+  -- a new aircraft introduced by its airline and model number, the callsign after: the number is the type
+  check_eq(ft("could we add a Delta 757, DAL77, at 52.6 north 4.9 east heading 180 FL 240 and 280 knots?"),
+    "CRE DAL77 B752 52.6 4.9 180 FL240 280")
+  check_eq(ft("let's start with a Ryanair 737, RYR12, at 52.7 north 4.1 east, heading west, FL 300 at 290 knots"),
+    "CRE RYR12 B737 52.7 4.1 270 FL300 290")
+  -- a place corrected in the request is the one after the correction, or asked, never the first
+  r = graph.translate("I'd like an aircraft SWR18, an A320, at SUGOL... no, sorry, at ARTIP, heading 090, FL 100, 250 knots",
+    { sim = fleet, mode = "offline" })
+  check(r.ask ~= nil or said(r):find("ARTIP", 1, true) ~= nil, said(r))
   -- the clock, said politely
   check_eq(ft("please carry on with the simulation"), "OP")
   check_eq(ft("could you slow everything down to half speed?"), "DTMULT 0.5")
