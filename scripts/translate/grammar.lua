@@ -1007,11 +1007,28 @@ local function split_ids(text, fleet)
   end))
 end
 
+-- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
+-- number with a unit is the instruction's value, no flight number (unless an
+-- aircraft has that id); a comma keeps the callsign matcher off it.
+local AIRLINE_WORDS = {}
+for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
+local function airline_values(text, fleet)
+  local ids = {}
+  for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
+  return (text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
+    local icao = AIRLINE_WORDS[w:lower()]
+    if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then
+      return the .. w .. "," .. s1 .. n .. s2 .. unit
+    end
+    return nil
+  end))
+end
+
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
-  text = split_ids(unglued_ids(text, world.aircraft), world.aircraft)
+  text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   local u = squawk.translate.utterance(require("translate.types").join(written_forms(text), TYPES.phrases),
     world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},

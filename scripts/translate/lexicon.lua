@@ -188,6 +188,9 @@ return {
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits
   two_heard = { "to", "too", "t" },
+  -- units a value said after an airline name carries ("turn the Ryanair 20 degrees"): no flight number
+  value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
+                  percent = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
   speed_units = { "knots", "knot", "kts", "kt" },
   -- the colours TRAIL acid accepts

@@ -423,6 +423,9 @@ do
   r = graph.translate("I'd like an aircraft SWR18, an A320, at SUGOL... no, sorry, at ARTIP, heading 090, FL 100, 250 knots",
     { sim = fleet, mode = "offline" })
   check(r.ask ~= nil or said(r):find("ARTIP", 1, true) ~= nil, said(r))
+  -- a number with a unit after "the" and an airline is the value, no flight number
+  check_eq(ft("could you turn the Lufthansa 30 degrees to the left please"), "HDG DLH4AX 60 LEFT")
+  check_eq(ft("could the easyJet 20 knots faster please"), "SPD EZY45 290")
   -- the clock, said politely
   check_eq(ft("please carry on with the simulation"), "OP")
   check_eq(ft("could you slow everything down to half speed?"), "DTMULT 0.5")
