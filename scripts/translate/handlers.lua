@@ -154,13 +154,17 @@ function m:acids(s)
 end
 
 -- An airline said with no flight number ("KLM, climb ..."): the question
--- names its aircraft when more than one fits.
+-- names its aircraft when more than one fits, and says so when none flies
+-- ("the Ryanair" with no RYR aircraft).
 function m:airline_only(s)
   for i = s.b, s.e - 1 do
     local icao, e = self:airline_at(i)
     local fits = icao and self:airline_fleet(icao) or {}
     if #fits > 1 then
       return self:need(string.format("Which %s: %s?", self:raw(i, e), table.concat(fits, " or ")))
+    end
+    if icao and #fits == 0 and self:word(i - 1, "the") and #self.fleet > 0 then
+      return self:need(string.format("No %s aircraft is flying. Which aircraft do you mean?", self:raw(i, e)))
     end
   end
 end

@@ -379,7 +379,7 @@ do
   check_eq(ft("could the BA slow to 230 knots please"), "SPD BAW123 230")
   check_eq(ft("please have the British Airways climb to FL 220"), "ALT BAW123 FL220")
   check_eq(ft("could the KLM climb to FL 300?"), "ASK Which KLM: KLM1234 or KLM77?")
-  check_eq(ft("can the Ryanair descend to FL 100?"), "ASK Which aircraft should change altitude? Please give its callsign.")
+  check_eq(ft("can the Ryanair descend to FL 100?"), "ASK No Ryanair aircraft is flying. Which aircraft do you mean?")
   check_eq(ft("Lufthansa, descend FL 200"), "ASK Which aircraft should change altitude? Please give its callsign.")
   check_eq(ft("please turn the easyJet left 20 degrees, it's getting close to the Lufthansa"), "HDG EZY45 40 LEFT")
   check_eq(ft("EZY45 climb FL 200 to stay behind the BA"), "ALT EZY45 FL200")
