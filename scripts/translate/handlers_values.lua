@@ -150,7 +150,10 @@ return function(H, f, wrap, compass)
     end
     -- ("by" before the instruction belongs to something else: "time by departure, climb ..."; a
     -- flight level is a level: "FL240 and hold its current heading", "FL130, lower by the time ...")
-    local relative = not fl and (q.by or self:word_in(s.trig, s.e, "@relative"))
+    -- ("3000 feet from where it is now": a change from the present level)
+    local from_here = self:find_word(s.trig, s.e, "from")
+    local relative = not fl and (q.by or self:word_in(s.trig, s.e, "@relative")
+      or (from_here < s.e and self:word(from_here + 1, "where")))
     if not relative and now and not q.to and not fl and dir ~= 0 then
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then

@@ -72,7 +72,7 @@ floors("tests/data/translate_round14.tsv", 0.883, 0.0, true)
 -- R15: measured at first sight on 243e1d4, not fixed yet; floors at that figure. R16: after translate8's
 -- fixes (an aircraft named by its airline or type, polite phrasing, the clock)
 floors("tests/data/translate_round15.tsv", 0.84, 0.039, true)
-floors("tests/data/translate_round16.tsv", 0.854, 0.017, true)
+floors("tests/data/translate_round16.tsv", 0.858, 0.017, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)

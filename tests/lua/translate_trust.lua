@@ -402,6 +402,8 @@ do
   -- a flight level is never relative, whatever "current" or "by" follows
   check_eq(ft("descend KLM77 to flight level one two zero and keep its current heading"),
     "ALT KLM77 FL120 ; HDG KLM77 180")
+  -- "N feet from where it is now" is a change from the present level
+  check_eq(ft("could you have the Lufthansa descend 2000 feet from where it is now?"), "ALT DLH4AX 28000")
   -- a reversal with no way said asks which way
   check_eq(ft("please turn KLM77 around"), "ASK Should KLM77 turn around to the left or to the right?")
   -- "the scenario" spoken of is no file to load; destinations asked about are shown
