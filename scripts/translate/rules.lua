@@ -187,6 +187,10 @@ return function(intent, rule, words)
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
+  -- "add Lambourne to the end of the Air France's route": a navaid or airport said by its one-word name
+  rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
+    return g:word(i + 2, "to") and g:place_by_name(i + 1, i + 2) ~= nil
+  end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }

@@ -428,6 +428,10 @@ do
   -- a number with a unit after "the" and an airline is the value, no flight number
   check_eq(ft("could you turn the Lufthansa 30 degrees to the left please"), "HDG DLH4AX 60 LEFT")
   check_eq(ft("could the easyJet 20 knots faster please"), "SPD EZY45 290")
+  -- a navaid said by its one-word name added to a route
+  if #fleet:airports_named("schiphol") == 1 then
+    check_eq(ft("could we add Pampus to the end of the KLM77's route?"), "ADDWPT KLM77 PAM")
+  end
   -- the clock, said politely
   check_eq(ft("please carry on with the simulation"), "OP")
   check_eq(ft("could you slow everything down to half speed?"), "DTMULT 0.5")
