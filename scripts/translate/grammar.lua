@@ -581,7 +581,8 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif (s["then"] == "then" or self:when_reached(s)) and before and #self.out == n_before + 1 and spec and spec.value
+      elseif (s["then"] == "then" or self:when_reached(s)) and before and #self.out == n_before + 1
+          and spec and spec.value
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       end

@@ -267,7 +267,8 @@ return function(intent, rule, words)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
-  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }  -- "where's the MERIT intersection?"
+  -- "where's the MERIT intersection?"
+  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
   rule { "details status info information state pos", "pos" }
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
@@ -327,7 +328,8 @@ return function(intent, rule, words)
     return k < i + 4 and g:word(k + 1, "time")
   end }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
-         not_near = { 7, "real times faster x twice thrice" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
+         not_near = { 7, "real times faster x twice thrice" },
+         when = function(g, i) return g:followed_by(i, 3, "@sim") end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x twice thrice" } }
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)

@@ -422,8 +422,8 @@ do
   check_eq(ft("let's start with a Ryanair 737, RYR12, at 52.7 north 4.1 east, heading west, FL 300 at 290 knots"),
     "CRE RYR12 B737 52.7 4.1 270 FL300 290")
   -- a place corrected in the request is the one after the correction, or asked, never the first
-  r = graph.translate("I'd like an aircraft SWR18, an A320, at SUGOL... no, sorry, at ARTIP, heading 090, FL 100, 250 knots",
-    { sim = fleet, mode = "offline" })
+  r = graph.translate("I'd like an aircraft SWR18, an A320, at SUGOL... no, sorry, at ARTIP, heading 090, "
+    .. "FL 100, 250 knots", { sim = fleet, mode = "offline" })
   check(r.ask ~= nil or said(r):find("ARTIP", 1, true) ~= nil, said(r))
   -- a number with a unit after "the" and an airline is the value, no flight number
   check_eq(ft("could you turn the Lufthansa 30 degrees to the left please"), "HDG DLH4AX 60 LEFT")
