@@ -649,13 +649,22 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif s["then"] == "then" and before and #self.out == n_before + 1 and spec and spec.value
+      elseif (s["then"] == "then" or self:when_reached(s)) and before and #self.out == n_before + 1
+          and spec and spec.value
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       end
     end
   end
   self:direct_resumes_nav()
+end
+
+-- True when the instruction opens with a condition that names the value of the
+-- instruction before it, by "there" or "level" and no value of its own ("climb
+-- to FL150, and when it gets there, speed it up to 290": ATALT ... FL150 SPD ...).
+function G:when_reached(s)
+  local c = self:find_word(s.b, s.trig, "@condition")
+  return c < s.trig and self:word_in(c + 1, s.trig, "there level") and #self:quantities(c, s.trig) == 0
 end
 
 -- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
@@ -807,7 +816,8 @@ end
 -- correction, are the instructions' to explain.)
 local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true }
 function G:uncarried()
-  if self:word_in(1, #self.t + 1, "@relative @same_as @below @above") then return end
+  -- (a value relative to another's; "as" alone is no comparison: "and slow it to 250 knots as well")
+  if self:word_in(1, #self.t + 1, "@relative same match @below @above") then return end
   local nums = {}
   for _, line in ipairs(self.out) do
     for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
@@ -953,6 +963,18 @@ function G:near_any(i, near)
   return false
 end
 
+-- "Right, for the next trial I'd like the KLM to turn left ...": a request
+-- that opens with "right" and a comma, and turns left later, opened with the
+-- speaker's "well"; that "right" is a filler, no direction.
+function G:opening_right()
+  local i = self:skip_fillers(1, false)
+  local t, nxt = self.t[i], self.t[i + 1]
+  if self:word(i, "@right") and nxt and nxt.kind == "punct" and nxt.text == ","
+      and self:word_in(i + 2, #self.t + 1, "@left") then
+    t.text, t.filler = "", true
+  end
+end
+
 -- True when an aircraft is named just before token i (fillers and commas between).
 function G:callsign_before(i)
   for _, r in ipairs(self.refs) do
@@ -1042,11 +1064,40 @@ local function unglued_ids(text, fleet)
   end))
 end
 
+-- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
+-- joined id is exactly an aircraft's (letters after the digits too).
+local function split_ids(text, fleet)
+  if #fleet == 0 then return text end
+  local ids = {}
+  for _, a in ipairs(fleet) do ids[a.id:lower()] = true end
+  return (text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", function(a, b)
+    if ids[(a .. b):lower()] then return a .. b end
+    return nil
+  end))
+end
+
+-- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
+-- number with a unit is the instruction's value, no flight number (unless an
+-- aircraft has that id); a comma keeps the callsign matcher off it.
+local AIRLINE_WORDS = {}
+for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
+local function airline_values(text, fleet)
+  local ids = {}
+  for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
+  return (text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
+    local icao = AIRLINE_WORDS[w:lower()]
+    if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then
+      return the .. w .. "," .. s1 .. n .. s2 .. unit
+    end
+    return nil
+  end))
+end
+
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
-  text = unglued_ids(text, world.aircraft)
+  text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   local types = require("translate.types")
   text = written_forms(text)
   -- type names with their digits said as words, where traffic is created
@@ -1059,6 +1110,10 @@ function M.translate(text, world)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {}, noted = {} }, G)
   g:settle_callsigns()
+  g:airline_types()
+  g:airline_refs()
+  g:type_refs()
+  g:opening_right()
   local note = g:not_simulated()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
@@ -1081,7 +1136,13 @@ function M.translate(text, world)
   if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm } end
   if #g.out == 0 and note then return { commands = {}, note = note } end
   if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
-  return { commands = g.out, note = note }
+  -- a command said twice in one request ("send the KLM direct to SPY ... add SPY and then go direct to it")
+  -- is one clearance
+  local out, seen = {}, {}
+  for _, line in ipairs(g.out) do
+    if not seen[line] then out[#out + 1], seen[line] = line, true end
+  end
+  return { commands = out, note = note }
 end
 
 return M

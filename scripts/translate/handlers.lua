@@ -73,11 +73,17 @@ function m:values_after_trigger(s)
   return n
 end
 
--- +1 for up/more words, -1 for down/less words, 0 when none.
+-- +1 for up/more words, -1 for down/less words, 0 when none; those in the
+-- instruction's own clause (from the last punctuation before its trigger)
+-- first: "the Shuttle is a bit slow, could you speed it up by 40 knots" is up.
 function m:direction(s)
-  for i = s.b, s.e - 1 do
-    if self:word(i, "@up") then return 1 end
-    if self:word(i, "@down") then return -1 end
+  local clause = s.trig or s.b
+  while clause > s.b and self.t[clause - 1].kind ~= "punct" do clause = clause - 1 end
+  for _, b in ipairs({ clause, s.b }) do
+    for i = b, s.e - 1 do
+      if self:word(i, "@up") then return 1 end
+      if self:word(i, "@down") then return -1 end
+    end
   end
   return 0
 end
@@ -148,24 +154,169 @@ function m:acids(s)
 end
 
 -- An airline said with no flight number ("KLM, climb ..."): the question
--- names its aircraft when more than one fits.
-local AIRLINES
+-- names its aircraft when more than one fits, and says so when none flies
+-- ("the Ryanair" with no RYR aircraft).
 function m:airline_only(s)
-  if not AIRLINES then
-    AIRLINES = {}
-    for _, a in ipairs(require("translate.names").airlines) do AIRLINES[a[1]] = a[2] end
-  end
   for i = s.b, s.e - 1 do
-    local t = self.t[i]
-    local icao = t.kind == "word" and (AIRLINES[t.text] or (t.raw:match("^%u%u%u$") and t.raw))
-    if icao then
-      local fits = {}
+    local icao, e = self:airline_at(i)
+    local fits = icao and self:airline_fleet(icao) or {}
+    if #fits > 1 then
+      return self:need(string.format("Which %s: %s?", self:raw(i, e), table.concat(fits, " or ")))
+    end
+    if icao and #fits == 0 and self:word(i - 1, "the") and #self.fleet > 0 then
+      return self:need(string.format("No %s aircraft is flying. Which aircraft do you mean?", self:raw(i, e)))
+    end
+  end
+end
+
+-- Airline names (telephony and translate/names.lua's common names, up to
+-- three words) -> ICAO prefix.
+local AIRLINE_NAMES
+local function airline_names()
+  if AIRLINE_NAMES then return AIRLINE_NAMES end
+  AIRLINE_NAMES = {}
+  local names = require("translate.names")
+  for _, list in ipairs({ names.airlines, names.common }) do
+    for _, a in ipairs(list) do AIRLINE_NAMES[a[1]] = a[2] end
+  end
+  return AIRLINE_NAMES
+end
+
+-- The airline named by the words at i (longest name first; a designator
+-- typed in capitals, "the DLH", too): ICAO prefix, first token after it.
+function m:airline_at(i)
+  local t = self.t[i]
+  if not t or t.kind ~= "word" then return nil end
+  local words = {}
+  for k = i, i + 2 do
+    if not self.t[k] or self.t[k].kind ~= "word" then break end
+    words[#words + 1] = self.t[k].text
+  end
+  for n = #words, 1, -1 do
+    local icao = airline_names()[table.concat(words, " ", 1, n)]
+    if icao then return icao, i + n end
+  end
+  if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
+  return nil
+end
+
+-- The flying aircraft of an airline (callsign = prefix, then a digit).
+function m:airline_fleet(icao)
+  local fits = {}
+  for _, a in ipairs(self.fleet) do
+    if a.id:upper():sub(1, #icao) == icao and a.id:sub(#icao + 1, #icao + 1):match("%d") then fits[#fits + 1] = a.id end
+  end
+  return fits
+end
+
+-- An aircraft named by "the" and its airline alone ("could the Ryanair come
+-- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
+-- airline flying, is a reference to it (added to self.refs, kind "aircraft",
+-- by_airline = true; lexicon.callsign_confirm.airline_alone). Not when the
+-- name is said with a flight number, letters or "heavy" after it (a callsign,
+-- matched or asked by the C++ matcher; "Lufthansa, descend ..." in
+-- radiotelephony is a callsign cut short and asks too), introduces a new
+-- aircraft ("a KLM Airbus", "one more Lufthansa, DLH9CK"), or names other
+-- traffic ("too close to the BA", "behind the KLM", "all except the
+-- Qantas": lexicon.airline_context). With two or more of the airline
+-- flying, airline_only asks which.
+function m:airline_refs()
+  local inside = {}
+  for _, r in ipairs(self.refs) do
+    for k = r.b, r.e - 1 do inside[k] = true end
+  end
+  if not L.callsign_confirm.airline_alone then return end
+  local i = 1
+  while i <= #self.t do
+    local icao, e = self:airline_at(i)
+    local nxt = self.t[e]
+    local prev = self.t[i - 1]
+    local ok = icao and not inside[i] and not inside[e - 1]
+        and prev and prev.kind == "word" and prev.text == "the"
+        and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
+          or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
+        and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
+          or self:word(e, "heavy super")))
+        and not self:new_aircraft_follows(e - 1)
+    local fits = ok and self:airline_fleet(icao) or {}
+    if #fits == 1 then
+      local r = { kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_airline = true }
+      local k = 1
+      while self.refs[k] and self.refs[k].b < i do k = k + 1 end
+      table.insert(self.refs, k, r)
+      i = e
+    else
+      i = i + 1
+    end
+  end
+end
+
+-- Makers (lower case, "cessna") -> {designator = true} of the types squawk
+-- knows, and model names ("737", "a320") -> designator.
+local MAKERS, MODELS
+local function makers()
+  if MAKERS then return MAKERS, MODELS end
+  MAKERS, MODELS = {}, {}
+  local names = require("translate.names")
+  for _, row in ipairs(require("translate.types").build(names.designators).types) do
+    local m = row[1]:lower()
+    MAKERS[m] = MAKERS[m] or {}
+    MAKERS[m][row[3]] = true
+    MODELS[row[2]] = MODELS[row[2]] or row[3]
+  end
+  return MAKERS, MODELS
+end
+
+-- "add a Ryanair 737, RYR81JC, ...", "a United 757, UAL1540": an airline and a
+-- model number after an article, with a callsign said straight after, are
+-- the new aircraft's airline and type, no flight number (the C++ matcher read
+-- RYR737): that reference becomes a type reference to the model's designator.
+function m:airline_types()
+  local _, models = makers()
+  for k, r in ipairs(self.refs) do
+    local nxt = self.refs[k + 1]
+    local digits = r.kind == "aircraft" and not r.exists and r.name:match("^%a+(%d+)$")
+    local ty = digits and models[digits]
+    if ty and self:word(r.b - 1, "@articles_new more") and nxt and nxt.kind == "aircraft"
+        and nxt.b <= self:skip_fillers(r.e, false) + 1 then
+      self.refs[k] = { kind = "type", name = ty, b = r.b, e = r.e }
+    end
+  end
+end
+
+-- An aircraft named by "the" and its type or maker alone ("the Cessna",
+-- "the A346", "the Boeing 777"), when no callsign is said in the request (an
+-- airline alone may be: "the Cessna ... as the Lufthansa") and
+-- exactly one aircraft flying is of that type (or that maker's), is a
+-- reference to it, as in airline_refs; a family said ("the 737") is the
+-- designator it names, and matches only an aircraft of that designator.
+function m:type_refs()
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and not r.by_airline then return end
+  end
+  local i = 1
+  while i <= #self.t do
+    local prev, t = self.t[i - 1], self.t[i]
+    local set, e
+    if prev and prev.kind == "word" and prev.text == "the" and t.kind == "word" then
+      for _, r in ipairs(self.refs) do
+        if r.kind == "type" and r.b == i then set, e = { [r.name] = true }, r.e end
+      end
+      if not set and makers()[t.text] then set, e = makers()[t.text], i + 1 end
+    end
+    local fits = {}
+    if set and not self:word(i - 2, "@airline_context @aircraft_context @below @above") then
       for _, a in ipairs(self.fleet) do
-        if a.id:upper():sub(1, #icao) == icao and a.id:sub(#icao + 1, #icao + 1):match("%d") then fits[#fits + 1] = a.id end
+        if a.type and set[a.type:upper()] then fits[#fits + 1] = a.id end
       end
-      if #fits > 1 then
-        return self:need(string.format("Which %s: %s?", t.raw, table.concat(fits, " or ")))
-      end
+    end
+    if #fits == 1 then
+      local k = 1
+      while self.refs[k] and self.refs[k].b < i do k = k + 1 end
+      table.insert(self.refs, k, { kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_type = true })
+      i = e
+    else
+      i = i + 1
     end
   end
 end

@@ -90,12 +90,20 @@ return function(H, f, compass)
     -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol")
     local named_at
     if not lat or not lon then
-      -- ("at JFK": the airport by its VOR's code, nearest the traffic, else anywhere: KJFK)
-      for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-        local near = self.fleet[1] or { lat = 0, lon = 0 }
-        named_at = named_at or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+      -- ("at Zurich... no, sorry, at Munich": the place said after the correction)
+      local from = s.b
+      for i = s.trig, s.e - 1 do
+        if self:word(i, "@correction sorry") then from = i end
       end
-      named_at = named_at or self:place_by_name(s.trig + 1, s.e)
+      -- ("at JFK": the airport by its VOR's code, nearest the traffic, else anywhere: KJFK)
+      for _, r in ipairs(self:refs_in(from, s.e, "waypoint")) do
+        local near = self.fleet[1] or { lat = 0, lon = 0 }
+        -- (a navaid's kind said after its name, "over Sparta VOR", is no place of its own)
+        if not self:word(r.b, "@navaid_kinds") then
+          named_at = named_at or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+        end
+      end
+      named_at = named_at or self:place_by_name(math.max(from, s.trig) + 1, s.e)
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
     -- order: heading, altitude, speed: "fl300 290"); others are asked about
@@ -410,7 +418,14 @@ return function(H, f, compass)
     local id = self:acid(s, "fly direct")
     if not id then return end
     local a = self:state(id)
-    local wp = self:waypoint(s.trig, s.e, id)
+    -- "add TABUM to its route and send it direct there", "add SPY and then go direct to it": the
+    -- waypoint this request added just before
+    local added
+    for c = #self.out, 1, -1 do
+      added = added or self.out[c]:match("^ADDWPT " .. id:gsub("%p", "%%%0") .. " ([^%s,]+)$")
+    end
+    local wp = added and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
+        and added or self:waypoint(s.trig, s.e, id)
     if not wp and a and a.route and #a.route == 1 then wp = a.route[1] end
     wp = wp or self:spoken_name(s.trig + 1, s.e)
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
@@ -418,6 +433,7 @@ return function(H, f, compass)
     if a then
       local in_route = false
       for _, r in ipairs(a.route or {}) do if r:lower() == wp:lower() then in_route = true end end
+      if added and added:lower() == wp:lower() then in_route = true end
       if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end
     end
     self:emit("DIRECT " .. id .. " " .. wp)
@@ -679,13 +695,19 @@ return function(H, f, compass)
     local lat, lon = position(self:quantities(s.b, s.e), s.trig)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
-    local airport = #w == 0 and ((a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e))
+    local airport = (a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e)
+    -- (two places said for one destination, "fly to PAM next, then on to Schiphol": which?)
+    if airport and #w > 0 and w[#w].name:upper() ~= airport and self:airport_meant(w[#w].name, a) ~= airport then
+      return self:need(string.format("Which should be the %s of %s: %s or %s?", what, id, w[#w].name, airport))
+    end
     if airport then
       self:emit(cmd .. " " .. id .. " " .. airport)
     elseif #w > 0 then
       self:emit(cmd .. " " .. id .. " " .. self:airport_meant(w[#w].name, self:state(id)))
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
+    elseif self:word_in(s.b, s.e, "what what's whats which where") and #self:quantities(s.b, s.e) == 0 then
+      self:emit(cmd .. " " .. id)  -- "what's the easyJet's destination?": shown
     else
       self:need("Which airport should be the " .. what .. " of " .. id .. "? Please give its ICAO code.")
     end
@@ -709,7 +731,9 @@ return function(H, f, compass)
   -- current zone radius?", "which resolution method is active?"): the bare command shows it.
   function m:asks_setting()
     local first = self:skip_fillers(1)
-    return self.t[#self.t].text == "?" and self:word(first, "is are what what's whats which")
+    -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?")
+    return self.t[#self.t].text == "?" and (self:word(first, "is are what what's whats which")
+      or self:word_in(1, #self.t + 1, "check whether"))
   end
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end

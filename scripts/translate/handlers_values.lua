@@ -148,8 +148,12 @@ return function(H, f, wrap, compass)
       if not ref then return self:need("What is the altitude of " .. others[#others].name .. "?") end
       return self:emit("ALT " .. ids[1] .. " " .. f.int((ref.alt_ft or 0) + (above and ft or -ft)))
     end
-    -- ("by" before the instruction belongs to something else: "time by departure, climb ...")
-    local relative = q.by or self:word_in(s.trig, s.e, "@relative")
+    -- ("by" before the instruction belongs to something else: "time by departure, climb ..."; a
+    -- flight level is a level: "FL240 and hold its current heading", "FL130, lower by the time ...")
+    -- ("3000 feet from where it is now": a change from the present level)
+    local from_here = self:find_word(s.trig, s.e, "from")
+    local relative = not fl and (q.by or self:word_in(s.trig, s.e, "@relative")
+      or (from_here < s.e and self:word(from_here + 1, "where")))
     if not relative and now and not q.to and not fl and dir ~= 0 then
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then
@@ -371,6 +375,8 @@ return function(H, f, wrap, compass)
       hdg = named
     elseif self:word_in(s.b, s.e, "@turn_around") then
       if not now then return self:need("What is the current heading of " .. id .. "?") end
+      -- (a reversal with no way said: either way is as short, and the way matters to traffic)
+      if turn == 0 then return self:need("Should " .. id .. " turn around to the left or to the right?") end
       offset = 180
     elseif self:word_in(math.max(1, s.trig - 2), s.e, "@present") and now then
       offset = 0

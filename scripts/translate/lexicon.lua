@@ -82,6 +82,9 @@ return {
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
                        "than", "traffic" },
+  -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
+  -- Austrian's level") that make it other traffic, not the aircraft instructed
+  airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but" },
   -- words that open the reason given for an instruction (to the end of its
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause" },
@@ -115,7 +118,9 @@ return {
   -- and with one aircraft too when `alone` (any airline, digit or letter that
   -- differs asks); else unless the airline and the digits both match at
   -- least this well (similarity 0-1)
-  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true, alone = true },
+  -- airline_alone: "the Ryanair" (an airline after "the", no flight number) names the one aircraft of that
+  -- airline flying; with two or more, or none, squawk asks
+  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true, alone = true, airline_alone = true },
   -- a spoken waypoint name matched to a known one at least this well (0-1)
   -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
   waypoint_confirm = 1.0,
@@ -206,6 +211,9 @@ return {
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits
   two_heard = { "to", "too", "t" },
+  -- units a value said after an airline name carries ("turn the Ryanair 20 degrees"): no flight number
+  value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
+                  percent = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
   speed_units = { "knots", "knot", "kts", "kt" },
   -- the colours TRAIL acid accepts

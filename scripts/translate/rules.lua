@@ -80,6 +80,8 @@ return function(intent, rule, words)
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
+  rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
@@ -106,16 +108,21 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", false, prev = { 2, "half double" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
+  -- "slow everything down to half speed": the clock, when no aircraft is named
+  rule { "slow", "dtmult", near = { 5, "half" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "fast faster", "dtmult", prev = { 2, "twice thrice times x" } }  -- "run twice as fast"
   rule { "multiplier", "dtmult" }
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
   rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
+  rule { "slow fast", false, prev = { 3, "is it's are was isn't" } }  -- "the Shuttle is a bit slow": a description
   rule { "slow slower faster accelerate decelerate", "spd" }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
 
   -- heading
+  -- "it's heading into the other traffic": the aircraft's present course described, no instruction
+  rule { "heading", false, prev = { 1, "it's is was are they're" } }
   rule { "heading hdg headings", "hdg" }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn turning", "hdg" }
@@ -180,6 +187,10 @@ return function(intent, rule, words)
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
+  -- "add Lambourne to the end of the Air France's route": a navaid or airport said by its one-word name
+  rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
+    return g:word(i + 2, "to") and g:place_by_name(i + 1, i + 2) ~= nil
+  end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
@@ -190,6 +201,11 @@ return function(intent, rule, words)
   end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
+  -- "let's start with a Ryanair 737, RYR81JC, at ...", "I'd like an easyJet A320, EZY45, over ...": a new
+  -- aircraft's type and callsign after the article
+  rule { "start like", "create", near = { 2, "@articles_new" }, when = function(g, i)
+    return g:has_ref(i + 1, i + 7, "type") and g:new_aircraft_follows(g:find_word(i + 1, i + 7, "@articles_new"))
+  end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
   rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
@@ -237,7 +253,7 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look" } }
+  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
@@ -245,16 +261,19 @@ return function(intent, rule, words)
   rule { "listrte rte", "listrte" }
 
   -- information and repositioning
+  rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
-  rule { "doing", "pos", prev = { 3, "what what's whats" } }  -- "what's klm12 doing"
+  rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
+  -- "where's the MERIT intersection?"
+  rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
   rule { "details status info information state pos", "pos" }
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
-  rule { "put", "move", near = { 3, "back" }, not_near = { 4, "lnav vnav navigation" } }
+  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place
   rule { "put place", "move", when = function(g, i)
@@ -298,6 +317,7 @@ return function(intent, rule, words)
     return false
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
+  rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
@@ -316,8 +336,9 @@ return function(intent, rule, words)
     return k < i + 4 and g:word(k + 1, "time")
   end }
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
-         not_near = { 7, "real times faster x" }, when = function(g, i) return g:followed_by(i, 3, "@sim") end }
-  rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x" } }
+         not_near = { 7, "real times faster x twice thrice" },
+         when = function(g, i) return g:followed_by(i, 3, "@sim") end }
+  rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x twice thrice" } }
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
@@ -339,11 +360,23 @@ return function(intent, rule, words)
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
   rule { "seed", "seed" }
+  -- "remove the Ryanair from the scenario", "is detection on in this scenario": the scenario running,
+  -- no file to load (unless a file is named after it)
+  rule { "scenario", false, prev = { 2, "from for in this start of" }, when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 3) do
+      if g.t[k].raw:find("[%./]") and g.t[k].kind ~= "punct" then return false end
+    end
+    return true
+  end }
   rule { "scenario load open ic", "ic" }
   rule { "print", "echo" }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
 
   -- conflict detection and resolution
+  -- "the look-ahead time for conflict detection", "the radius for resolution": the setting's owner
+  rule { "detection resolution", false, prev = { 3, "for of" }, when = function(g, i)
+    return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
+  end }
   rule { "detection asas cdmethod cd", "asas" }
   rule { "resolution resolve reso", "reso" }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },

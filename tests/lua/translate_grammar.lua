@@ -83,7 +83,9 @@ do -- relative instructions use the current state
   check_eq(tr("Climb AC01 by 2000 feet", w), "ALT AC01 27000")
   check_eq(tr("Slow AC01 down by 20 knots", w), "SPD AC01 260")
   check_eq(tr("Increase the speed of AC01 by 10%", w), "SPD AC01 308")
-  check_eq(tr("Turn AC01 around", w), "HDG AC01 270")
+  -- a reversal with no way said asks which way (either is as short); with the way, the way
+  check_eq(tr("Turn AC01 around", w), "ASK Should AC01 turn around to the left or to the right?")
+  check_eq(tr("Turn AC01 around to the left", w), "HDG AC01 270 LEFT")
   check_eq(tr("Give AC02 the same heading as AC01", w), "HDG AC02 90")
   -- without a world there is no current heading to turn from
   check(asks("turn AC01 left 20 degrees"))
@@ -235,7 +237,7 @@ do -- one instruction for two aircraft, each with its own value; 'by' before the
   -- a change from the present heading is each aircraft's own; the aircraft named together stay together
   check_eq(tr("EZY45 and AFR1234 turn left 20 degrees", w), "HDG EZY45 25 LEFT ; HDG AFR1234 160 LEFT")
   check_eq(tr("EZY45 and AFR1234 maintain present heading", w), "HDG EZY45 45 ; HDG AFR1234 180")
-  check_eq(tr("EZY45 and AFR1234 turn around", w), "HDG EZY45 225 ; HDG AFR1234 360")
+  check_eq(tr("EZY45 and AFR1234 turn around right", w), "HDG EZY45 225 RIGHT ; HDG AFR1234 360 RIGHT")
   check_eq(tr("EZY45 and AFR1234 maintain present speed", w), "SPD EZY45 290 ; SPD AFR1234 300")
   check_eq(tr("EZY45 left 30 degrees", w), "HDG EZY45 15 LEFT")
 end

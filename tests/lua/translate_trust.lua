@@ -425,3 +425,77 @@ check_eq(heard("create TST5 e one seventy five at 52.1 4.3 heading 090 FL200 250
 check_eq(heard("spawn TST6 an a three thirty at 52.1 4.3 heading 090 FL200 250 knots"),
   heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"))
 check(heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"):find("^CRE TST6 A33"))
+-- an aircraft named by "the" and its airline alone (telephony, or a name it is known by) is the
+-- one aircraft of that airline flying; with two it asks which, with none it asks; a callsign cut
+-- short in radiotelephony ("Lufthansa, descend") and other traffic named that way are no reference
+do
+  local fleet = squawk.sim.new()
+  for _, line in ipairs({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250",
+      "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE BAW123 A320 52.0 4.0 025 FL200 250",
+      "CRE EZY45 A319 52.1 3.8 060 FL180 270", "CRE N123AB C172 52.3 4.6 090 3500 110" }) do
+    check(fleet:exec(line))
+  end
+  local function ft(text) return said(graph.translate(text, { sim = fleet, mode = "offline" })) end
+  check_eq(ft("would you mind asking the Lufthansa to come down to FL 260?"), "ALT DLH4AX FL260")
+  check_eq(ft("I'd like the easyJet on heading 120, thanks"), "HDG EZY45 120")
+  check_eq(ft("could the BA slow to 230 knots please"), "SPD BAW123 230")
+  check_eq(ft("please have the British Airways climb to FL 220"), "ALT BAW123 FL220")
+  check_eq(ft("could the KLM climb to FL 300?"), "ASK Which KLM: KLM1234 or KLM77?")
+  check_eq(ft("can the Ryanair descend to FL 100?"), "ASK No Ryanair aircraft is flying. Which aircraft do you mean?")
+  check_eq(ft("Lufthansa, descend FL 200"), "ASK Which aircraft should change altitude? Please give its callsign.")
+  check_eq(ft("please turn the easyJet left 20 degrees, it's getting close to the Lufthansa"), "HDG EZY45 40 LEFT")
+  check_eq(ft("EZY45 climb FL 200 to stay behind the BA"), "ALT EZY45 FL200")
+  -- a new aircraft of an airline is no reference to the one flying
+  check_eq(ft("add a Lufthansa A320, DLH9CK, at 52.5 north 4.1 east heading 090 FL 200 250 knots"),
+    "CRE DLH9CK A320 52.5 4.1 90 FL200 250")
+  -- by type or maker, when no callsign is said and one aircraft of it flies
+  check_eq(ft("could you turn the Cessna right onto heading 180?"), "HDG N123AB 180 RIGHT")
+  check_eq(ft("please slow the Boeing down to 240 knots"),
+    "ASK Which aircraft should change speed? Please give its callsign.")
+  -- an airline said with a number that is not the aircraft's airline asks, never takes the number alone
+  check_eq(ft("Scooter 77 climb FL 200"), "ASK Did you mean KLM77? I heard TGW77.")
+  -- the request's own words, read as English: "say" before a value, "heading into", "is a bit slow"
+  check_eq(ft("I'd like KLM77 to head south, say heading 180, thanks"), "HDG KLM77 180")
+  check_eq(ft("turn DLH4AX right 30 degrees, it's heading into the other traffic"), "HDG DLH4AX 120 RIGHT")
+  check_eq(ft("EZY45 is a bit slow, could you speed it up by 20 knots?"), "SPD EZY45 290")
+  -- a condition naming the level just cleared ("when it gets there") waits for it
+  check_eq(ft("could you climb BAW123 to FL 240, and once it's there, slow it to 250 knots"),
+    "ALT BAW123 FL240 ; ATALT BAW123 FL240 SPD BAW123 250")
+  -- a flight level is never relative, whatever "current" or "by" follows
+  check_eq(ft("descend KLM77 to flight level one two zero and keep its current heading"),
+    "ALT KLM77 FL120 ; HDG KLM77 180")
+  -- "N feet from where it is now" is a change from the present level
+  check_eq(ft("could you have the Lufthansa descend 2000 feet from where it is now?"), "ALT DLH4AX 28000")
+  -- a reversal with no way said asks which way
+  check_eq(ft("please turn KLM77 around"), "ASK Should KLM77 turn around to the left or to the right?")
+  -- "the scenario" spoken of is no file to load; destinations asked about are shown
+  check_eq(ft("please remove the Cessna from the scenario"), "DEL N123AB")
+  check_eq(ft("what's the easyJet's destination?"), "DEST EZY45")
+  check_eq(ft("add SUGOL to the easyJet's route and send it direct there"), "ADDWPT EZY45 SUGOL ; DIRECT EZY45 SUGOL")
+  -- a callsign typed apart after its letters; positions, routes and states asked after in passing
+  check_eq(ft("could you please descend EZY 45 to FL 150?"), "ALT EZY45 FL150")
+  check_eq(ft("where's the SUGOL intersection?"), "POS SUGOL")
+  check_eq(ft("please check the Lufthansa's route"), "LISTRTE DLH4AX")
+  check_eq(ft("can you tell me what the Cessna is doing right now?"), "POS N123AB")
+  check_eq(ft("could you put the Cessna back on the same heading as the Lufthansa?"), "HDG N123AB 90")
+  -- a new aircraft introduced by its airline and model number, the callsign after: the number is the type
+  check_eq(ft("could we add a Delta 757, DAL77, at 52.6 north 4.9 east heading 180 FL 240 and 280 knots?"),
+    "CRE DAL77 B752 52.6 4.9 180 FL240 280")
+  check_eq(ft("let's start with a Ryanair 737, RYR12, at 52.7 north 4.1 east, heading west, FL 300 at 290 knots"),
+    "CRE RYR12 B737 52.7 4.1 270 FL300 290")
+  -- a place corrected in the request is the one after the correction, or asked, never the first
+  r = graph.translate("I'd like an aircraft SWR18, an A320, at SUGOL... no, sorry, at ARTIP, heading 090, "
+    .. "FL 100, 250 knots", { sim = fleet, mode = "offline" })
+  check(r.ask ~= nil or said(r):find("ARTIP", 1, true) ~= nil, said(r))
+  -- a number with a unit after "the" and an airline is the value, no flight number
+  check_eq(ft("could you turn the Lufthansa 30 degrees to the left please"), "HDG DLH4AX 60 LEFT")
+  check_eq(ft("could the easyJet 20 knots faster please"), "SPD EZY45 290")
+  -- a navaid said by its one-word name added to a route
+  if #fleet:airports_named("schiphol") == 1 then
+    check_eq(ft("could we add Pampus to the end of the KLM77's route?"), "ADDWPT KLM77 PAM")
+  end
+  -- the clock, said politely
+  check_eq(ft("please carry on with the simulation"), "OP")
+  check_eq(ft("could you slow everything down to half speed?"), "DTMULT 0.5")
+  check_eq(ft("set the look-ahead time for conflict detection to 240 seconds"), "DTLOOK 240")
+end
