@@ -275,6 +275,31 @@ local function heard_forms(text)
   return changed and table.concat(out, " ") or text
 end
 
+-- A level or heading whose digits were written apart ("fl 3 4 0", "flight level 1 30", "heading 0 90"):
+-- groups of one or two digits straight after "fl", "level", "heading" or "hdg" that make two or three
+-- digits together are one value.
+local SPLIT_AFTER = set_of({ "fl", "level", "heading", "hdg" })
+local function split_digits(text)
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local out, i, changed = {}, 1, false
+  while i <= #toks do
+    out[#out + 1] = toks[i]
+    local k, joined = i + 1, ""
+    if SPLIT_AFTER[toks[i]:lower()] then
+      while toks[k] and toks[k]:match("^%d%d?$") and #joined + #toks[k] <= 3 do
+        joined, k = joined .. toks[k], k + 1
+      end
+    end
+    if k - i > 2 and #joined >= 2 then
+      out[#out + 1], i, changed = joined, k, true
+    else
+      i = i + 1
+    end
+  end
+  return changed and table.concat(out, " ") or text
+end
+
 local function written_forms(text)
   text = heard_forms(text)
   local sh = lexicon.shorthand
@@ -282,8 +307,7 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
-  -- a level typed digit by digit ("fl 3 4 0")
-  text = text:gsub("%f[%a]([Ff][Ll]) (%d) (%d) (%d)%f[%W]", "%1 %2%3%4")
+  text = split_digits(text)
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil
@@ -983,6 +1007,14 @@ function G:callsign_before(i)
   return false
 end
 
+-- True when an instruction word stands before token i.
+function G:instruction_before(i)
+  for k = 1, i - 1 do
+    if self:intent_at(k) then return true end
+  end
+  return false
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -996,7 +1028,8 @@ function G:not_simulated()
     if t.kind == "word" and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
-            and (not c.after_callsign or self:callsign_before(i)) then
+            and (not c.after_callsign or self:callsign_before(i))
+            and (not c.after_instruction or self:instruction_before(i)) then
           class = c
           break
         end

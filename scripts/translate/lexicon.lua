@@ -152,6 +152,10 @@ return {
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
                "vacating", "when", "at" } },
+    -- "turn right 15 degrees, report heading": after an instruction, the readback of what it set is a
+    -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
+    { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
+      after_instruction = true, to_end = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits
