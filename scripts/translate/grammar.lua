@@ -300,8 +300,35 @@ local function split_digits(text)
   return changed and table.concat(out, " ") or text
 end
 
+-- An abbreviation spelled letter by letter, as speech recognition writes it ("q n h", "i l s"): single
+-- letters in a row that together are a word of lexicon.not_simulated or lexicon.not_names are that word.
+local SPELLED = set_of(lexicon.not_names)
+for _, n in ipairs(lexicon.not_simulated) do
+  for w in n.words:gmatch("%S+") do SPELLED[w] = true end
+end
+local function spelled(text)
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local out, i, changed = {}, 1, false
+  while i <= #toks do
+    local k = i
+    while toks[k] and toks[k]:match("^%a$") do k = k + 1 end
+    -- (the last letter may carry the punctuation: "q n h, one zero one three")
+    local last = toks[k] and toks[k]:match("^(%a)%p+$")
+    local word = table.concat(toks, "", i, k - 1):lower() .. (last and last:lower() or "")
+    local n = k - i + (last and 1 or 0)
+    if n >= 2 and SPELLED[word] then
+      out[#out + 1] = word .. (last and toks[k]:sub(2) or "")
+      i, changed = k + (last and 1 or 0), true
+    else
+      out[#out + 1], i = toks[i], i + 1
+    end
+  end
+  return changed and table.concat(out, " ") or text
+end
+
 local function written_forms(text)
-  text = heard_forms(text)
+  text = spelled(heard_forms(text))
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"

@@ -246,6 +246,14 @@ return function(H, f, compass)
         if #fits == 1 then return fits[1] end
       end
     end
+    -- a name spelled in the phonetic alphabet ("direct sierra papa yankee" -> SPY), exactly a known one
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local letters, k = "", i
+      while k < e and not self.u:used(k) and self.t[k].kind == "word" and L.phonetic[self.t[k].text] do
+        letters, k = letters .. L.phonetic[self.t[k].text], k + 1
+      end
+      if #letters >= 2 and seen[letters] then return letters end
+    end
     local best, best_score, best_word
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]

@@ -190,6 +190,8 @@ return {
     hotel = "H", india = "I", juliet = "J", juliett = "J", juliette = "J", kilo = "K", lima = "L", mike = "M",
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
+    -- letters said by their English names where that name is no everyday word ("five kay alfa")
+    kay = "K", aitch = "H", dee = "D", vee = "V", zed = "Z",
   },
   -- what speech recognition writes for an instruction word that sounds alike
   -- ("the send flight level one niner zero", "turn write heading 040",
@@ -224,6 +226,9 @@ return {
   trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
+  -- words of an altimeter setting: an altitude said with one is a level above the sea, no change by
+  -- that much ("descend 3000 feet QNH 1008")
+  altimeter = { "qnh", "altimeter", "qfe" },
   -- units that make an altitude a level in feet
   feet = { "ft", "feet", "foot" },
   vertical = { "vertical", "height", "zonedh" },
