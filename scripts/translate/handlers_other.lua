@@ -246,13 +246,18 @@ return function(H, f, compass)
         if #fits == 1 then return fits[1] end
       end
     end
-    -- a name spelled in the phonetic alphabet ("direct sierra papa yankee" -> SPY), exactly a known one
+    -- a name spelled in the phonetic alphabet ("direct sierra papa yankee" -> SPY) is exactly a known
+    -- one, else asked about (a letter's word is never read alone as a place: "lima")
     for i = b, math.min(e, #self.t + 1) - 1 do
       local letters, k = "", i
       while k < e and not self.u:used(k) and self.t[k].kind == "word" and L.phonetic[self.t[k].text] do
         letters, k = letters .. L.phonetic[self.t[k].text], k + 1
       end
       if #letters >= 2 and seen[letters] then return letters end
+      if #letters >= 2 then
+        return self:need(string.format("Which waypoint is %s? I heard '%s', which names no waypoint I know.",
+          letters, self:raw(i, k)))
+      end
     end
     local best, best_score, best_word
     for i = b, math.min(e, #self.t + 1) - 1 do
