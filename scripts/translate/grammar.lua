@@ -301,8 +301,10 @@ local function split_digits(text)
 end
 
 -- An abbreviation spelled letter by letter, as speech recognition writes it ("q n h", "i l s"): single
--- letters in a row that together are a word of lexicon.not_simulated or lexicon.not_names are that word.
+-- letters in a row that together are a word of lexicon.spelled, lexicon.not_simulated or lexicon.not_names
+-- are that word.
 local SPELLED = set_of(lexicon.not_names)
+for _, w in ipairs(lexicon.spelled) do SPELLED[w] = true end
 for _, n in ipairs(lexicon.not_simulated) do
   for w in n.words:gmatch("%S+") do SPELLED[w] = true end
 end

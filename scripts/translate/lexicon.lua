@@ -226,6 +226,9 @@ return {
   trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
+  -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of
+  -- not_names and not_simulated
+  spelled = { "fl" },
   -- words of an altimeter setting: an altitude said with one is a level above the sea, no change by
   -- that much ("descend 3000 feet QNH 1008")
   altimeter = { "qnh", "altimeter", "qfe" },

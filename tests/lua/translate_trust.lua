@@ -460,6 +460,7 @@ do
   check_eq(out, "ALT IBE3KT 6000")
   check(note ~= nil and note:find("altimeter", 1, true) ~= nil, tostring(note))
   check_eq(eut("iberia three kilo tango descend 3000 feet qnh 1015"), "ALT IBE3KT 3000")
+  check_eq(eut("air france two eight descend f l one niner zero"), "ALT AFR28 FL190")
   out, note = eut("klm six one mike cleared i l s approach runway two four")
   check_eq(out, "")
   check(note ~= nil and note:find("approach clearances", 1, true) ~= nil, tostring(note))
