@@ -181,7 +181,7 @@ function M.handler(name, fn) G[name] = fn end
 --  * "a thousand", "a hundred" -> "one thousand", "one hundred"; a typed
 --    callsign glued to its level, "klm12fl240" -> "klm12 fl240"; "m78" ->
 --    "mach .78"; a level typed digit by digit, "fl 3 4 0" -> "fl 340";
---  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", and
+--  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", "fox trot" -> "foxtrot", and
 --    speech recognition's "nine her" -> "niner", and a degree sign ending
 --    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
 --  * thousands grouped with a space: "18 000 feet" -> "18000 feet" (a
@@ -353,6 +353,7 @@ local function written_forms(text)
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
+  text = text:gsub("%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
   text = text:gsub("(%d)\xC2\xB0(%s)", "%1 degrees%2"):gsub("(%d)\xC2\xB0$", "%1 degrees")
   return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)

@@ -427,7 +427,7 @@ do
   for _, line in ipairs({ "CRE AFR28 A320 48.5 2.5 200 FL240 280", "CRE IBE3KT A321 40.4 -3.6 090 9000 250",
       "CRE SAS4472 A20N 55.6 12.6 130 FL350 M.78", "CRE SAS447 A320 55.7 12.7 300 FL310 280",
       "CRE KLM61M B738 52.3 4.7 010 FL150 260", "CRE AUA27D A320 48.1 16.5 240 FL120 250",
-      "DEFWPT ROK 48.9 2.4", "ADDWPT AFR28 ROK" }) do
+      "CRE EWG7FX A320 50.9 7.1 120 FL200 270", "DEFWPT ROK 48.9 2.4", "ADDWPT AFR28 ROK" }) do
     check(eu:exec(line))
   end
   local function eut(text)
@@ -470,6 +470,7 @@ do
   check_eq(eut("austrian to seven delta reduce speed two two zero knots"), "SPD AUA27D 220")
   check_eq(eut("iberia three kay tango descend altitude five thousand feet"), "ALT IBE3KT 5000")
   check_eq(eut("austrian two seven uh delta descend flight level one zero zero"), "ALT AUA27D FL100")
+  check_eq(eut("eurowings seven fox trot x ray climb flight level two two zero"), "ALT EWG7FX FL220")
   eu_asks("austrian to seven echo reduce speed two two zero knots")
   -- a fix spelled in the phonetic alphabet is the known name it spells, never a near one
   check_eq(eut("air france two eight proceed direct romeo oscar kilo"), "DIRECT AFR28 ROK")
