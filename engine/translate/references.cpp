@@ -39,12 +39,22 @@ bool is_unit_word(const std::string& w) {
 // Reads the digits and letters of a callsign from token j on. `restart`: the
 // first word of the airline just said; said again, it starts the callsign over
 // ("Delta sixty, Delta six forty six") and ends this one.
+// `heard_digits`: a word speech recognition writes for a digit ("for", "to": number_words.cpp's
+// heard_digit) is that digit where a digit or a spelled letter follows it ("lufthansa for seven one",
+// "swiss eight for kilo"); the caller takes that reading only when it is exactly an aircraft's id.
 Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used, const Tables& names,
-                   const std::string& restart = "") {
+                   const std::string& restart = "", bool heard_digits = false) {
   Suffix s;
   while (j < t.size() && !used[j] && s.groups.size() < 8) {
     const Token& k = t[j];
     if (!restart.empty() && is_word(k) && k.text == restart) break;
+    if (heard_digits && is_word(k) && k.text != "a" && k.text != "on" && heard_digit(k.text) >= 0 &&
+        j + 1 < t.size() && !used[j + 1] && is_word(t[j + 1]) &&
+        (digit_word(t[j + 1].text) >= 0 || names.phonetic_letter(t[j + 1].text) != 0)) {
+      s.groups.push_back(std::to_string(heard_digit(k.text)));
+      s.ends.push_back(++j);
+      continue;
+    }
     if (k.kind == TokKind::kNumber) {
       // A typed flight number with its letters, lexed as digits and a glued
       // word ("Ryanair 8UK"); a glued unit ("250kt", "30k") is not one.
@@ -70,10 +80,11 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       ++j;
       continue;
     }
-    // a hesitation between spoken digits ("seven eight er niner") is skipped, and remembered
+    // a hesitation between spoken digits ("seven eight er niner"), or between the digits and
+    // the letters ("two five uh foxtrot"), is skipped, and remembered
     if ((k.text == "ah" || k.text == "uh" || k.text == "um" || k.text == "er") &&
         !s.groups.empty() && s.hesitation == 0 && j + 1 < t.size() && is_word(t[j + 1]) &&
-        digit_word(t[j + 1].text) >= 0) {
+        (digit_word(t[j + 1].text) >= 0 || names.phonetic_letter(t[j + 1].text) != 0)) {
       s.hesitation = s.groups.size();
       ++j;
       continue;
@@ -370,6 +381,10 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       if (!icao && len > 1) icao = names.airline_by_telephony(joined);
       if (!icao) continue;
       Suffix suf = read_suffix(t, i + len, used, names, t[i].text);
+      if (!world_id(*icao + text::upper(suf.joined(suf.groups.size())))) {
+        Suffix heard_suf = read_suffix(t, i + len, used, names, t[i].text, true);
+        if (world_id(*icao + text::upper(heard_suf.joined(heard_suf.groups.size())))) suf = heard_suf;
+      }
       if (suf.groups.empty() || names.phonetic_letter(t[i + len].text) != 0) break;
       std::string id = *icao + text::upper(suf.joined(suf.groups.size()));
       size_t end = suf.ends.back();

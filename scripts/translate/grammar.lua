@@ -181,7 +181,7 @@ function M.handler(name, fn) G[name] = fn end
 --  * "a thousand", "a hundred" -> "one thousand", "one hundred"; a typed
 --    callsign glued to its level, "klm12fl240" -> "klm12 fl240"; "m78" ->
 --    "mach .78"; a level typed digit by digit, "fl 3 4 0" -> "fl 340";
---  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", and
+--  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", "fox trot" -> "foxtrot", and
 --    speech recognition's "nine her" -> "niner", and a degree sign ending
 --    a number ("rt 30°") -> "degrees" (one inside a coordinate stays);
 --  * thousands grouped with a space: "18 000 feet" -> "18000 feet" (a
@@ -275,15 +275,68 @@ local function heard_forms(text)
   return changed and table.concat(out, " ") or text
 end
 
+-- A level or heading whose digits were written apart ("fl 3 4 0", "flight level 1 30", "heading 0 90"):
+-- groups of one or two digits straight after "fl", "level", "heading" or "hdg" that make two or three
+-- digits together are one value.
+local SPLIT_AFTER = set_of({ "fl", "level", "heading", "hdg" })
+local function split_digits(text)
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local out, i, changed = {}, 1, false
+  while i <= #toks do
+    out[#out + 1] = toks[i]
+    local k, joined = i + 1, ""
+    if SPLIT_AFTER[toks[i]:lower()] then
+      while toks[k] and toks[k]:match("^%d%d?$") and #joined + #toks[k] <= 3 do
+        joined, k = joined .. toks[k], k + 1
+      end
+    end
+    if k - i > 2 and #joined >= 2 then
+      out[#out + 1], i, changed = joined, k, true
+    else
+      i = i + 1
+    end
+  end
+  return changed and table.concat(out, " ") or text
+end
+
+-- An abbreviation spelled letter by letter, as speech recognition writes it ("q n h", "i l s"): single
+-- letters in a row that together are a word of lexicon.spelled, lexicon.not_simulated or lexicon.not_names
+-- are that word.
+local SPELLED = set_of(lexicon.not_names)
+for _, w in ipairs(lexicon.spelled) do SPELLED[w] = true end
+for _, n in ipairs(lexicon.not_simulated) do
+  for w in n.words:gmatch("%S+") do SPELLED[w] = true end
+end
+local function spelled(text)
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local out, i, changed = {}, 1, false
+  while i <= #toks do
+    local k = i
+    while toks[k] and toks[k]:match("^%a$") do k = k + 1 end
+    -- (the last letter may carry the punctuation: "q n h, one zero one three")
+    local last = toks[k] and toks[k]:match("^(%a)%p+$")
+    local word = table.concat(toks, "", i, k - 1):lower() .. (last and last:lower() or "")
+    local n = k - i + (last and 1 or 0)
+    if n >= 2 and SPELLED[word] then
+      out[#out + 1] = word .. (last and toks[k]:sub(2) or "")
+      i, changed = k + (last and 1 or 0), true
+    else
+      out[#out + 1], i = toks[i], i + 1
+    end
+  end
+  return changed and table.concat(out, " ") or text
+end
+
 local function written_forms(text)
-  text = heard_forms(text)
+  text = spelled(heard_forms(text))
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
-  -- a level typed digit by digit ("fl 3 4 0")
-  text = text:gsub("%f[%a]([Ff][Ll]) (%d) (%d) (%d)%f[%W]", "%1 %2%3%4")
+  text = split_digits(text)
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil
@@ -300,6 +353,7 @@ local function written_forms(text)
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
+  text = text:gsub("%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
   text = text:gsub("(%d)\xC2\xB0(%s)", "%1 degrees%2"):gsub("(%d)\xC2\xB0$", "%1 degrees")
   return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
@@ -983,6 +1037,14 @@ function G:callsign_before(i)
   return false
 end
 
+-- True when an instruction word stands before token i.
+function G:instruction_before(i)
+  for k = 1, i - 1 do
+    if self:intent_at(k) then return true end
+  end
+  return false
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -996,7 +1058,8 @@ function G:not_simulated()
     if t.kind == "word" and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
-            and (not c.after_callsign or self:callsign_before(i)) then
+            and (not c.after_callsign or self:callsign_before(i))
+            and (not c.after_instruction or self:instruction_before(i)) then
           class = c
           break
         end

@@ -246,6 +246,19 @@ return function(H, f, compass)
         if #fits == 1 then return fits[1] end
       end
     end
+    -- a name spelled in the phonetic alphabet ("direct sierra papa yankee" -> SPY) is exactly a known
+    -- one, else asked about (a letter's word is never read alone as a place: "lima")
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      local letters, k = "", i
+      while k < e and not self.u:used(k) and self.t[k].kind == "word" and L.phonetic[self.t[k].text] do
+        letters, k = letters .. L.phonetic[self.t[k].text], k + 1
+      end
+      if #letters >= 2 and seen[letters] then return letters end
+      if #letters >= 2 then
+        return self:need(string.format("Which waypoint is %s? I heard '%s', which names no waypoint I know.",
+          letters, self:raw(i, k)))
+      end
+    end
     local best, best_score, best_word
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
@@ -291,6 +304,11 @@ return function(H, f, compass)
   -- anywhere; with no traffic, else the one navaid of that name anywhere ("create ... at Ockham").
   function m:place_by_name(b, e, a)
     local near = a and { a } or self.fleet
+    -- (the longer name first: "direct Zurich East" is the ZUE VOR, not Zurich airport and a word more)
+    for _, r in ipairs(near) do
+      local id = self:navaid_by_name(b, e, r, nil, true)
+      if id then return id end
+    end
     for _, r in ipairs(near) do
       local id = self:airport_by_name(b, e, r)
       if id then return id end
@@ -308,8 +326,8 @@ return function(H, f, compass)
   -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
   -- airport has that name: one or two words in [b, e) that name navaids within
   -- range_nm (default lexicon.navaid_range_nm) of the aircraft `a`; the question names them when
-  -- several idents fit.
-  function m:navaid_by_name(b, e, a, range_nm)
+  -- several idents fit; `two_words` (true) reads two-word names only.
+  function m:navaid_by_name(b, e, a, range_nm, two_words)
     local named = self.world.navaids_named
     if not named or not a or not a.lat then return nil end
     for i = b, math.min(e, #self.t + 1) - 1 do
@@ -319,11 +337,14 @@ return function(H, f, compass)
         if nx and i + 1 < e and nx.kind == "word" and nx.alpha and not self.u:used(i + 1) then
           phrases[1] = { t.text .. " " .. nx.text, i + 2 }
         end
-        if #t.text >= 4 and not t.keyword then phrases[#phrases + 1] = { t.text, i + 1 } end
+        if #t.text >= 4 and not t.keyword and not two_words then phrases[#phrases + 1] = { t.text, i + 1 } end
         for _, p in ipairs(phrases) do
           local phrase = p[1]
           -- ("Nantucket airport" is the airport, not the navaid of that name)
-          local ids = self:word(p[2], "@airport_nouns") and {} or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)
+          -- (with `two_words`, a name an airport bears too stays the airport's: "London City")
+          local airport = two_words and self.world.airports_named and #self.world.airports_named(phrase) > 0
+          local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
+            or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)
           local id = self:one_named(ids, "navaid", phrase, math.huge)
           if id then return id end
         end

@@ -106,6 +106,18 @@ return function(H, f, wrap, compass)
     if not target then return self:need("What altitude should " .. ids[1] .. " " .. verb .. " to?") end
     local q = target
     local ft, fl = q.value, q.fl
+    -- "flight level to eight zero": "to" between "level" and two spoken digits is "two" (FL280) or no
+    -- digit (FL080); the verb's direction from the present level decides, else squawk asks
+    if q.kind == "plain" and not q.number.typed and q.number.groups == 2 and #q.number.digits == 2
+        and self:word(q.b - 1, "@two_heard") and self:word(q.b - 2, "level fl") then
+      local two, bare, cur = (200 + q.value) * 100, q.value * 100, now and now.alt_ft
+      local function fits(x) return cur ~= nil and ((dir > 0 and x > cur + 50) or (dir < 0 and x < cur - 50)) end
+      if fits(two) == fits(bare) then
+        return self:need(string.format("Which flight level for %s: %s or %s? I heard 'flight level %s %s'.", ids[1],
+          f.alt(two, true), f.alt(bare, true), self.t[q.b - 1].raw, self:raw(q.b, q.e)))
+      end
+      ft, fl = fits(two) and two or bare, true
+    end
     if q.kind == "plain" and not q.number.typed and not q.number.thousand then
       local d = q.number.digits  -- a stutter: "one four fourteen" -> 14 (thousand)
       if #d >= 4 and #d % 2 == 0 and d:sub(1, #d // 2) == d:sub(#d // 2 + 1) then ft = tonumber(d:sub(1, #d // 2)) end
@@ -162,8 +174,9 @@ return function(H, f, wrap, compass)
     end
     -- "descend 3000 ft" typed right after the verb, from higher up: to or by? Both read as
     -- descents. (Spoken levels, "descend two thousand five hundred feet", are targets.)
+    -- (an altitude said with the altimeter setting it is read on, "3000 feet QNH 1008", is a level)
     if not relative and now and not q.to and not fl and dir ~= 0 and q.kind == "alt" and q.b == s.trig + 1
-        and q.number.typed and self:word(q.e - 1, "@feet") then
+        and q.number.typed and self:word(q.e - 1, "@feet") and not self:word_in(q.e, #self.t + 1, "@altimeter") then
       local cur = now.alt_ft or 0
       local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
       local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)
@@ -341,8 +354,13 @@ return function(H, f, wrap, compass)
       local n = abs.number
       -- headings are said as three digits; two ("two five") lost their final zero, unless
       -- they end in zero themselves ("three zero": 030 or 300?) or one was said
-      -- "heading to niner zero": two digits after "to" are a heading only with "to" as "two"
+      -- "heading to niner zero": two digits after "to" are a heading only with "to" as "two";
+      -- "heading to one zero" may also be 100 (the final zero lost): asked
       if not n.typed and n.groups == 2 and #n.digits == 2 and self:word(abs.b - 1, "@two_heard") then
+        if hdg * 10 <= 360 then
+          return self:need(string.format("What heading should %s fly: %d or %03d? I heard '%s %s'.", id, 200 + hdg,
+            hdg * 10, self.t[abs.b - 1].raw, self:raw(abs.b, abs.e)))
+        end
         hdg = 200 + hdg
       elseif not n.typed and n.lead_digit and H.cut_off(n) then
         return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")

@@ -152,6 +152,10 @@ return {
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
                "vacating", "when", "at" } },
+    -- "turn right 15 degrees, report heading": after an instruction, the readback of what it set is a
+    -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
+    { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
+      after_instruction = true, to_end = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits
@@ -186,6 +190,8 @@ return {
     hotel = "H", india = "I", juliet = "J", juliett = "J", juliette = "J", kilo = "K", lima = "L", mike = "M",
     november = "N", oscar = "O", papa = "P", quebec = "Q", romeo = "R", sierra = "S", tango = "T",
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
+    -- letters said by their English names where that name is no everyday word ("five kay alfa")
+    kay = "K", aitch = "H", dee = "D", vee = "V", zed = "Z",
   },
   -- what speech recognition writes for an instruction word that sounds alike
   -- ("the send flight level one niner zero", "turn write heading 040",
@@ -220,6 +226,12 @@ return {
   trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
+  -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of
+  -- not_names and not_simulated
+  spelled = { "fl" },
+  -- words of an altimeter setting: an altitude said with one is a level above the sea, no change by
+  -- that much ("descend 3000 feet QNH 1008")
+  altimeter = { "qnh", "altimeter", "qfe" },
   -- units that make an altitude a level in feet
   feet = { "ft", "feet", "foot" },
   vertical = { "vertical", "height", "zonedh" },

@@ -20,6 +20,7 @@ return {
     { "easy", "EZY" },
     { "easyjet", "EZY" },
     { "alpine", "EZS" },
+    { "topswiss", "EZS" },
     { "scandinavian", "SAS" },
     { "swiss", "SWR" },
     { "austrian", "AUA" },

@@ -238,6 +238,13 @@ if #sim:airports_named("schiphol") == 1 then
   local function ukt(text) return said(graph.translate(text, { sim = uk, mode = "offline" })) end
   check_eq(ukt("Speedbird 12 destination Birmingham"), "DEST BAW12 EGBB")
   check_eq(ukt("Logan 5 resume own navigation direct Perth"), "ADDWPT LOG5 PTH ; DIRECT LOG5 PTH")
+  -- a navaid's two-word name near the aircraft before an airport named by its first word ("Zurich
+  -- East" is the ZUE VOR, not Zurich airport and a word more)
+  local ch = squawk.sim.new()
+  check(ch:exec("CRE SWR12 A320 47.3 8.3 090 FL150 280"))
+  local function cht(text) return said(graph.translate(text, { sim = ch, mode = "offline" })) end
+  check(cht("swiss one two proceed direct zurich east"):find("DIRECT SWR12 ZUE", 1, true) ~= nil)
+  check(cht("swiss one two proceed direct zurich"):find("DIRECT SWR12 LSZH", 1, true) ~= nil)
   -- an airport meant by its three-letter code beside its VOR (JFK -> KJFK), near or far; a code
   -- whose nearest navaid has no such airport beside it (LHR: the Lahr NDB) stays as said
   check_eq(ustr("set FDX1288's origin to JFK"), "ORIG FDX1288 KJFK")
@@ -414,6 +421,61 @@ check_eq(heard("create TST1 b738 at 52.1 4.3 heading two seven zero one two thou
 check_eq(heard("create TST2 b738 at 52.1 4.3 heading 090 nine thousand one eighty knots"),
   "CRE TST2 B738 52.1 4.3 90 9000 180")
 check_eq(heard("AAL100 descend four thousand five hundred"), "ALT AAL100 4500")
+-- R17's classes (docs/translator_trust.md "Speech recognition"): European radiotelephony read by a recogniser
+do
+  local eu = squawk.sim.new()
+  for _, line in ipairs({ "CRE AFR28 A320 48.5 2.5 200 FL240 280", "CRE IBE3KT A321 40.4 -3.6 090 9000 250",
+      "CRE SAS4472 A20N 55.6 12.6 130 FL350 M.78", "CRE SAS447 A320 55.7 12.7 300 FL310 280",
+      "CRE KLM61M B738 52.3 4.7 010 FL150 260", "CRE AUA27D A320 48.1 16.5 240 FL120 250",
+      "CRE EWG7FX A320 50.9 7.1 120 FL200 270", "DEFWPT ROK 48.9 2.4", "ADDWPT AFR28 ROK" }) do
+    check(eu:exec(line))
+  end
+  local function eut(text)
+    local r = graph.translate(text, { sim = eu, mode = "offline" })
+    return said(r), r.note
+  end
+  local function eu_asks(text, part)
+    local s = eut(text)
+    check(s:sub(1, 4) == "ASK " and (not part or s:find(part, 1, true) ~= nil), text .. " -> " .. s)
+  end
+  -- a readback asked for after an instruction is the pilot's report: noted, no POS; alone it is POS
+  local out, note = eut("air france two eight descend flight level one nine zero report level")
+  check_eq(out, "ALT AFR28 FL190")
+  check(note ~= nil and note:find("report level", 1, true) ~= nil, tostring(note))
+  check_eq(eut("iberia three kilo tango turn left heading zero six zero and report heading"), "HDG IBE3KT 60 LEFT")
+  check_eq(eut("air france two eight report speed"), "POS AFR28")
+  -- "to" before two spoken digits: a heading asks when "two" and a lost final zero both give one; a
+  -- level takes the reading the verb allows from the present level, and asks when both or neither fit
+  eu_asks("klm six one mike turn right heading to three zero", "230 or 300")
+  check_eq(eut("klm six one mike turn right heading to eight zero"), "HDG KLM61M 280 RIGHT")
+  check_eq(eut("air france two eight climb flight level too six zero"), "ALT AFR28 FL260")
+  check_eq(eut("air france two eight descend flight level to five zero"), "ALT AFR28 FL50")
+  eu_asks("air france two eight descend flight level to one zero", "FL210 or FL10")
+  eu_asks("air france two eight maintain flight level to niner zero", "FL290 or FL90")
+  -- digits the recogniser wrote apart after "flight level" or "heading" are one value
+  check_eq(eut("air france two eight descend flight level 1 70"), "ALT AFR28 FL170")
+  check_eq(eut("klm six one mike fly heading 0 4 5"), "HDG KLM61M 45")
+  -- an abbreviation spelled letter by letter is that word; an altitude with its QNH is a level
+  out, note = eut("iberia three kilo tango descend altitude six thousand feet q n h one zero one five")
+  check_eq(out, "ALT IBE3KT 6000")
+  check(note ~= nil and note:find("altimeter", 1, true) ~= nil, tostring(note))
+  check_eq(eut("iberia three kilo tango descend 3000 feet qnh 1015"), "ALT IBE3KT 3000")
+  check_eq(eut("air france two eight descend f l one niner zero"), "ALT AFR28 FL190")
+  out, note = eut("klm six one mike cleared i l s approach runway two four")
+  check_eq(out, "")
+  check(note ~= nil and note:find("approach clearances", 1, true) ~= nil, tostring(note))
+  -- a digit heard as a word inside a callsign ("for", "to") or a letter said by its name ("kay") is
+  -- that digit or letter only when the callsign read so is exactly an aircraft's
+  check_eq(eut("scandinavian for four seven two climb flight level three seven zero"), "ALT SAS4472 FL370")
+  check_eq(eut("austrian to seven delta reduce speed two two zero knots"), "SPD AUA27D 220")
+  check_eq(eut("iberia three kay tango descend altitude five thousand feet"), "ALT IBE3KT 5000")
+  check_eq(eut("austrian two seven uh delta descend flight level one zero zero"), "ALT AUA27D FL100")
+  check_eq(eut("eurowings seven fox trot x ray climb flight level two two zero"), "ALT EWG7FX FL220")
+  eu_asks("austrian to seven echo reduce speed two two zero knots")
+  -- a fix spelled in the phonetic alphabet is the known name it spells, never a near one
+  check_eq(eut("air france two eight proceed direct romeo oscar kilo"), "DIRECT AFR28 ROK")
+  eu_asks("air france two eight proceed direct romeo oscar lima")
+end
 -- aircraft types with their digits said as words, where traffic is created
 check_eq(heard("create TST3 airbus a three two one at 52.1 4.3 heading 090 FL200 250 knots"),
   "CRE TST3 A321 52.1 4.3 90 FL200 250")
