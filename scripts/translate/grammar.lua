@@ -1045,9 +1045,9 @@ function G:issued()
 end
 
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
--- values; a place's name beside its issued code; the name "instead of" replaces; an ATC unit's place;
--- comments and purposes; courtesy and value phrases.
-function G:explained_spans(issued)
+-- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
+-- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
+function G:explained_spans(issued, kinds)
   local inside = {}
   for _, r in ipairs(self.refs) do
     for k = r.b, r.e - 1 do inside[k] = true end
@@ -1075,6 +1075,10 @@ function G:explained_spans(issued)
     if ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
         and self.t[i + 2] and self.t[i + 2].raw:match("^%u") then
       inside[i], inside[i + 2] = true, true
+    end
+    -- "go straight to Ockham, skipping Mayfield": a name a direct-to passes
+    if kinds.direct and self:word(i, "@passed_over") and self.t[i + 1] and self.t[i + 1].raw:match("^%u") then
+      inside[i + 1] = true
     end
     -- "New York departure", "Boston approach": the unit's place
     if self:word(i, FACILITIES) then
@@ -1134,7 +1138,7 @@ function G:unaccounted()
   end
   if #said == 0 then return end
   local issued, kinds = self:issued()
-  local inside = self:explained_spans(issued)
+  local inside = self:explained_spans(issued, kinds)
   for _, i in ipairs(said) do
     local t = self.t[i]
     if not inside[i] and not issued[t.text] and not self:in_reason(i)

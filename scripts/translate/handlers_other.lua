@@ -387,7 +387,8 @@ return function(H, f, compass)
           local ids = ((proper(i - 1) and not city) or proper(after)) and {} or named(phrase)
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
-            self:explain(i, city and after + 1 or after)
+            -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
+            self:explain((city and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
             return id
           end
         end
