@@ -127,6 +127,30 @@ local function word_set(words, level)
 end
 M.word_set = word_set
 
+-- Every word a rule or the lexicon names, for the check that every word is accounted for
+-- (G:unaccounted); lexicon.accounted's phrases are matched whole, never word by word.
+local KNOWN = {}
+local function know(text)
+  for w in tostring(text):lower():gmatch("[%a'%-]+") do KNOWN[w] = true end
+end
+local function know_all(v, seen)
+  if type(v) == "string" then return know(v) end
+  if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases then return end
+  seen[v] = true
+  for k, x in pairs(v) do
+    if type(k) == "string" then know(k) end
+    know_all(x, seen)
+  end
+end
+-- The words of a compiled rule are known words.
+local function know_rule(r)
+  know_all(r.words, {})
+  know_all(r.next or {}, {})
+  for _, k in ipairs({ "near", "not_near", "prev", "not_prev" }) do
+    if r[k] then know_all(r[k][2], {}) end
+  end
+end
+
 local function compile_rule(spec, level)
   local words, target = spec[1], spec[2]
   if type(words) ~= "string" then error("grammar: a rule starts with its words", level + 1) end
@@ -144,6 +168,7 @@ end
 local loading = true
 function M.rule(spec)
   local r = compile_rule(spec, 2)
+  know_rule(r)
   if loading then
     M.rules[#M.rules + 1] = r
   else
@@ -518,6 +543,12 @@ end
 
 function G:emit(line) self.out[#self.out + 1] = line end
 
+-- Tokens [b, e) were read by a handler (a place's name, "after" a waypoint): no leftover.
+function G:explain(b, e)
+  self.explained = self.explained or {}
+  for k = b, e - 1 do self.explained[k] = true end
+end
+
 -- The intent the word at i starts, or nil.
 function G:intent_at(i)
   local t = self.t[i]
@@ -575,7 +606,10 @@ function G:segments(b, e)
   for i = b, e - 1 do
     -- (a word in a reason, "so we get the same run each time", starts no instruction)
     local intent = self:intent_at(i)
-    if intent and not self:in_reason(i) then trig[#trig + 1] = { intent = intent, pos = i } end
+    if intent and not self:in_reason(i) then
+      trig[#trig + 1] = { intent = intent, pos = i }
+      self.triggers[i] = true
+    end
   end
   local segs = {}
   if #trig == 0 then return { { intent = "infer", b = b, trig = b, e = e } } end
@@ -936,12 +970,245 @@ function G:uncarried_names()
   end
 end
 
+-- ---- every word accounted for ----
+
+-- Words an instruction may hold (lexicon.accounted, docs/translator_trust.md): every word of every
+-- lexicon list and rule (KNOWN), the names squawk knows (telephony, airline names, type makers and
+-- models), the registry's command names, and the closed-class, courtesy and radiotelephony classes.
+local ACCOUNTED = lexicon.accounted
+local CONDITION = set_of(ACCOUNTED.condition)
+local MEANING = set_of(ACCOUNTED.negation)
+for w in pairs(CONDITION) do MEANING[w] = true end
+know_all(lexicon, {})
+know_all(names.airlines, {})
+know_all(names.common or {}, {})
+know_all(TYPES.types, {})
+for _, c in ipairs(squawk.sim.commands()) do
+  know(c.name)
+  for _, a in ipairs(c.aliases or {}) do know(a) end
+end
+-- the courtesy and value phrases by their first word, each as its words in the lexer's form ("it's" is "it")
+local PHRASES = {}
+for _, list in ipairs({ ACCOUNTED.courtesy_phrases, ACCOUNTED.value_phrases }) do
+  for _, p in ipairs(list) do
+    local words = {}
+    for w in p:gmatch("%S+") do words[#words + 1] = (w:gsub("'s$", "")) end
+    PHRASES[words[1]] = PHRASES[words[1]] or {}
+    table.insert(PHRASES[words[1]], words)
+  end
+end
+-- the closed classes and courtesy words (a clause of only these frames a request: "if that's alright")
+local FRAMING = {}
+for _, k in ipairs({ "articles", "pronouns", "auxiliaries", "modals", "prepositions", "conjunctions", "discourse",
+    "courtesy", "radiotelephony" }) do
+  for _, w in ipairs(ACCOUNTED[k]) do FRAMING[w] = true end
+end
+local MODALS = set_of(ACCOUNTED.modals)
+local FACILITIES = set_of(ACCOUNTED.facilities)
+local AIRPORT_NOUNS = set_of(lexicon.airport_nouns)
+local PERSONS = set_of({ "i", "we", "you", "i've", "we've", "you've", "i'm", "we're", "you're" })
+local SUBJECTS = set_of(ACCOUNTED.pronouns)
+for _, w in ipairs(ACCOUNTED.articles) do SUBJECTS[w] = true end
+local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELAY = true, SCHEDULE = true }
+
+-- The forms a word may be inflected from or to ("keeping" keep, "switched" switch, "pass" passing).
+local function inflections(w)
+  local out = { w .. "ing", w .. "s", w .. "ed" }
+  for _, suffix in ipairs({ "ing", "ed", "es", "s", "ly" }) do
+    local stem = w:match("^(%a%a+)" .. suffix .. "$")
+    if stem then
+      out[#out + 1], out[#out + 2], out[#out + 3] = stem, stem .. "e", stem .. "ing"  -- ("leaves" leaving)
+      if stem:match("(%a)%1$") then out[#out + 1] = stem:sub(1, -2) end  -- "running" run
+      if stem:match("i$") then out[#out + 1] = stem:sub(1, -2) .. "y" end  -- "carried" carry
+    end
+  end
+  return out
+end
+
+-- True when a word of the lexer's text (possessive, hyphenated and inflected forms too) is one squawk
+-- knows; an inflection of a negation or condition is no known word ("cancelling").
+local function known_word(w)
+  if KNOWN[w] then return true end
+  local base = w:gsub("'s$", ""):gsub("'$", "")
+  if KNOWN[base] then return true end
+  for _, form in ipairs(inflections(base)) do
+    if KNOWN[form] and not MEANING[form] then return true end
+  end
+  for part in base:gmatch("[^%-/]+") do
+    if not KNOWN[part] then return false end
+  end
+  return base:find("[%-/]") ~= nil
+end
+
+-- True when the negation or condition at i is carried by the parse (`kinds`: G:issued): a condition
+-- when a conditional command was issued, a switch word when something was switched off, a place passed
+-- over by a direct-to ("not to NEGRA but direct AMIKI"), or one of the readings below. (A word a
+-- handler read, "after" a waypoint in ADDWPT, is explained before: G:explain.)
+function G:meaning_carried(i, kinds)
+  local text, nx = self.t[i].text, self:skip_fillers(i + 1)
+  -- "before we add any traffic", "until I say stop", "before creating anything": the speaker's own next
+  -- step, which a command run now precedes; "when you get a sec": the listener's convenience
+  local who = self.t[nx] and self.t[nx].kind == "word" and self.t[nx].text
+  if who and (((text == "before" or text == "until") and (PERSONS[who] or who:match("%a%aing$")))
+      or ((text == "when" or text == "whenever" or text == "once") and who:match("^you"))) then
+    return true
+  end
+  -- "and after reduce the speed": "after" as "afterwards", before the next instruction
+  if text == "after" and self.triggers[nx] then return true end
+  -- "descend until 7000 feet": "until" as "to", before the value the instruction took
+  if text == "until" and self.taken[nx] then return true end
+  -- "to SFO instead of Oakland", "to LFPG instead": the value said replaces another
+  if text == "instead" and (self:word(nx, "of") or not self.t[nx] or self.t[nx].kind == "punct") then return true end
+  -- "if" opening a polite request ("I'd appreciate it if the Ryanair could turn ...") or a clause of
+  -- framing words only ("if that's alright")
+  if text == "if" then
+    local framing, modal = true, false
+    local k = i + 1
+    while k <= #self.t and not (self.t[k].kind == "punct" and self.t[k].text ~= "'") do
+      local t = self.t[k]
+      if t.kind == "word" and MODALS[t.text] then modal = true end
+      if not (t.kind == "word" and (FRAMING[t.text] or t.filler)) then framing = false end
+      k = k + 1
+    end
+    if modal or (framing and k > i + 1) then return true end
+  end
+  if CONDITION[text] and kinds.conditional then return true end
+  if self:word(i, "@off") and kinds.off then return true end
+  if self:word(i, "@passed_over") and kinds.direct then
+    for k = i + 1, math.min(#self.t, i + 3) do
+      if self:has_ref(k, k + 1, "waypoint") then return true end
+    end
+  end
+  return false
+end
+
+-- The commands issued, as a set of their lower-case words (a name said as it is issued: "direct
+-- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to.
+function G:issued()
+  local words, kinds = {}, {}
+  for _, line in ipairs(self.out) do
+    for w in line:lower():gmatch("[^%s,;]+") do words[w] = true end
+    for part in (line .. ";"):gmatch("([^;]+);") do
+      local name = (part:match("^%s*(%S+)") or ""):upper()
+      if CONDITIONAL[name] then kinds.conditional = true end
+      if name == "DIRECT" then kinds.direct = true end
+      if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
+    end
+  end
+  return words, kinds
+end
+
+-- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
+-- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
+-- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
+function G:explained_spans(issued, kinds)
+  local inside = {}
+  for _, r in ipairs(self.refs) do
+    for k = r.b, r.e - 1 do inside[k] = true end
+  end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    for k = q.b, q.e - 1 do inside[k] = true end
+  end
+  -- a place said by its name beside its code as issued ("destination Frankfurt, EDDF", "EPKK Krakow",
+  -- "London Heathrow, EGLL", "Amsterdam Schiphol (EHAM)", "the Pampus VOR, PAM"): the capitalised words
+  -- just before it (commas, brackets and kinds of place between) and the one just after it
+  local function beside(k) return self.t[k].kind == "punct" or self:word(k, "@airport_nouns @navaid_kinds") end
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" and issued[r.name:lower()] then
+      local k = r.b - 1
+      while k >= 1 and r.b - k <= 4 and (beside(k) or self.t[k].raw:match("^%u")) do
+        inside[k], k = true, k - 1
+      end
+      k = r.e
+      if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
+      if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
+    end
+  end
+  for i = 1, #self.t do
+    -- "to SFO instead of Oakland", "Stansted rather than Luton": the name replaced
+    if ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
+        and self.t[i + 2] and self.t[i + 2].raw:match("^%u") then
+      inside[i], inside[i + 2] = true, true
+    end
+    -- "go straight to Ockham, skipping Mayfield": a name a direct-to passes
+    if kinds.direct and self:word(i, "@passed_over") and self.t[i + 1] and self.t[i + 1].raw:match("^%u") then
+      inside[i + 1] = true
+    end
+    -- "New York departure", "Boston approach": the unit's place
+    if self:word(i, FACILITIES) then
+      for k = math.max(1, i - 2), i - 1 do
+        if self.t[k].kind == "word" and not MEANING[self.t[k].text] and not self.triggers[k] then inside[k] = true end
+      end
+    end
+    for _, p in ipairs(PHRASES[self.t[i].text] or {}) do
+      local ok = true
+      for k = 2, #p do ok = ok and self.t[i + k - 1] ~= nil and self.t[i + k - 1].text == p[k] end
+      if ok then for k = i, i + #p - 1 do inside[k] = true end end
+    end
+  end
+  -- Comments and purposes that name no instruction, value or place, to the end of their clause: a
+  -- clause after punctuation that opens with its own subject ("Delete N123AB, we don't need it for this
+  -- run"; "The participant is waiting."), "so" before a subject ("so the runs are repeatable"), and
+  -- "for" before a determiner after the request's first word ("for the novice participants").
+  local function comment(b, e)
+    if #self:quantities(b, e) > 0 or #self:refs_in(b, e, "aircraft") > 0 then return end
+    for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
+      if not self:word(r.b, "@not_names") then return end  -- ("we don't need the VFR traffic")
+    end
+    for x = b, e - 1 do if self.triggers[x] or self:intent_at(x) then return end end
+    for x = b, e - 1 do inside[x] = true end
+  end
+  local k = 1
+  while k <= #self.t do
+    local e = k
+    while e <= #self.t and not (self.t[e].kind == "punct" and self.t[e].text ~= "'") do e = e + 1 end
+    for j = k, e - 1 do
+      local t, nx = self.t[j], self.t[j + 1]
+      local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
+      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or (self:word(j, "so") and j > 1 and subject)
+          or (self:word(j, "for") and j > 1 and subject) then
+        comment(j, e)
+        break
+      end
+    end
+    k = e + 1
+  end
+  return inside
+end
+
+-- Once the request is read, a word no part of the parse explains is a leftover: a negation or a
+-- condition the commands do not carry ("climb FL340 unless BAW12 is there"), or a word squawk does not
+-- know ("climb FL340 gently"). Words inside a callsign, place, type or value, a reason, a reply about
+-- what squawk does not simulate, or a courtesy phrase ("when you get a chance") are explained.
+function G:unaccounted()
+  -- the words no list explains, and the negations and conditions: only these need the parse's account
+  local explained, said = self.explained or {}, {}
+  for i, t in ipairs(self.t) do
+    if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
+        and not explained[i] and not self.noted[i] and not self.u:used(i)
+        and (MEANING[t.text] or not known_word(t.text)) then
+      said[#said + 1] = i
+    end
+  end
+  if #said == 0 then return end
+  local issued, kinds = self:issued()
+  local inside = self:explained_spans(issued, kinds)
+  for _, i in ipairs(said) do
+    local t = self.t[i]
+    if not inside[i] and not issued[t.text] and not self:in_reason(i)
+        and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
+      self.leftover = t.raw
+      return
+    end
+  end
+end
+
 -- True when the text holds a word that starts an instruction of its own
 -- (the dialogue tells an answer to its question from a new request by it).
 function M.has_instruction(text)
   local u = squawk.translate.utterance(written_forms(text), nil, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = { aircraft = {}, waypoints = {} },
-    fleet = {}, out = {}, qcache = {} }, G)
+    fleet = {}, out = {}, qcache = {}, triggers = {} }, G)
   for i = 1, #g.t do
     if g:intent_at(i) then return true end
   end
@@ -1171,7 +1438,7 @@ function M.translate(text, world)
   local u = squawk.translate.utterance(types.join(text, TYPES.phrases),
     world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
-    qcache = {}, taken = {}, noted = {} }, G)
+    qcache = {}, taken = {}, noted = {}, triggers = {} }, G)
   g:settle_callsigns()
   g:airline_types()
   g:airline_refs()
@@ -1193,6 +1460,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:uncarried() end
   if not g.ask and not g.leftover then g:uncarried_names() end
+  if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end

@@ -243,7 +243,10 @@ return function(H, f, compass)
         for _, n in ipairs(names) do
           if #n >= 3 and #n < #t.text and n:match("^%a+$") and t.text:sub(1, #n) == n:lower() then fits[#fits + 1] = n end
         end
-        if #fits == 1 then return fits[1] end
+        if #fits == 1 then
+          self:explain(i, i + 1)
+          return fits[1]
+        end
       end
     end
     -- a name spelled in the phonetic alphabet ("direct sierra papa yankee" -> SPY) is exactly a known
@@ -253,13 +256,16 @@ return function(H, f, compass)
       while k < e and not self.u:used(k) and self.t[k].kind == "word" and L.phonetic[self.t[k].text] do
         letters, k = letters .. L.phonetic[self.t[k].text], k + 1
       end
-      if #letters >= 2 and seen[letters] then return letters end
+      if #letters >= 2 and seen[letters] then
+        self:explain(i, k)
+        return letters
+      end
       if #letters >= 2 then
         return self:need(string.format("Which waypoint is %s? I heard '%s', which names no waypoint I know.",
           letters, self:raw(i, k)))
       end
     end
-    local best, best_score, best_word
+    local best, best_score, best_word, best_span
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
@@ -267,14 +273,19 @@ return function(H, f, compass)
         local cand = t.text
         for k = 0, 1 do
           local idx, score = squawk.translate.best_match(cand, names)
-          if idx and (not best or score > best_score) then best, best_score, best_word = names[idx], score, cand end
+          if idx and (not best or score > best_score) then
+            best, best_score, best_word, best_span = names[idx], score, cand, { i, i + k + 1 }
+          end
           local nx = self.t[i + k + 1]
           if i + k + 1 >= e or nx.kind ~= "word" then break end
           cand = cand .. nx.text
         end
       end
     end
-    if best and best_score >= L.waypoint_confirm then return best end
+    if best and best_score >= L.waypoint_confirm then
+      self:explain(best_span[1], best_span[2])
+      return best
+    end
     local place = self:place_by_name(b, e, a)
     if place then return place end
     -- a name that sounds like a known one is confirmed, never substituted,
@@ -283,7 +294,10 @@ return function(H, f, compass)
       self.confirm = self.confirm or { id = best, heard = best_word }
       self:need(string.format("Did you mean %s? I heard '%s'.", best, best_word))
     end
-    if best and best_score >= 0.5 then return best end
+    if best and best_score >= 0.5 then
+      self:explain(best_span[1], best_span[2])
+      return best
+    end
     return nil
   end
 
@@ -346,7 +360,10 @@ return function(H, f, compass)
           local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
             or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)
           local id = self:one_named(ids, "navaid", phrase, math.huge)
-          if id then return id end
+          if id then
+            self:explain(i, p[2])
+            return id
+          end
         end
       end
     end
@@ -393,7 +410,11 @@ return function(H, f, compass)
           local city = self:word(after, "@airport_nouns")
           local ids = ((proper(i - 1) and not city) or proper(after)) and {} or named(phrase)
           local id = self:one_named(ids, "airport", phrase, 4)
-          if id then return id end
+          if id then
+            -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
+            self:explain((city and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            return id
+          end
         end
       end
     end
@@ -522,6 +543,7 @@ return function(H, f, compass)
     end
     if next_to then
       local after = self:word(at, "after")
+      self:explain(at, at + 1)
       return self:emit("ADDWPT " .. id .. " " .. where .. "," .. (alt or "") .. "," .. (spd or "") .. ","
         .. (after and next_to.name or "," .. next_to.name))
     end
@@ -826,7 +848,9 @@ return function(H, f, compass)
       end
       -- "fast forward" alone runs fast-time until stopped ("until I say stop" says so); more
       -- words ("a bit", "an hour and a half") said a duration that was not understood
-      for i = s.trig + 1, self:find_word(s.trig + 1, s.e, "until") - 1 do
+      local till = self:find_word(s.trig + 1, s.e, "until")
+      self:explain(till, till + 1)
+      for i = s.trig + 1, till - 1 do
         local t = self.t[i]
         if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things") then
           return self:need("For how long should the simulation fast-forward? Please give a time.")
@@ -866,8 +890,7 @@ return function(H, f, compass)
       local x = self.t[i].kind == "word" and tonumber(self.t[i].text:match("^x(%d+%.?%d*)$") or "")
       if x then
         self:mark_used(i, i + 1)
-        self.explained = self.explained or {}
-        self.explained[i] = true  -- a token that reads like a callsign, explained as the factor
+        self:explain(i, i + 1)  -- a token that reads like a callsign, explained as the factor
         return self:emit("DTMULT " .. f.num(x))
       end
     end

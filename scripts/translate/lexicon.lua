@@ -33,6 +33,97 @@ return {
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },
+  -- Every word accounted for (docs/translator_trust.md): a request becomes commands only when each of its
+  -- words is part of a callsign, place, type or value the parse read, an instruction word (the rules' words
+  -- and this file's lists), or a word of one of these classes; any other word is a leftover, asked about by
+  -- name. Classes of English, never a request's words: a new word joins the class it belongs to.
+  accounted = {
+    -- closed-class English, which carries no instruction of its own
+    articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
+        "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
+        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire" },
+    pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
+        "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
+        "they", "them", "their", "theirs", "themselves", "one", "ones", "someone", "somebody", "anyone",
+        "anybody", "everyone", "everybody", "something", "anything", "everything", "nothing", "nobody", "who",
+        "whom", "there",
+        "here", "i'm", "i'd", "i'll", "i've", "you're", "you'd", "you'll", "you've", "we're", "we'd", "we'll",
+        "we've", "he's", "she's", "it's", "it'll", "they're", "they'd", "they'll", "they've", "that's",
+        "there's", "here's", "what's", "let's", "who's", "where's", "how's", "that'll" },
+    auxiliaries = { "be", "am", "is", "are", "was", "were", "been", "being", "have", "has", "had", "having", "do",
+        "does", "did", "doing", "done", "get", "gets", "got", "getting", "go", "goes", "going", "gonna" },
+    modals = { "can", "could", "may", "might", "must", "shall", "should", "will", "would", "ought", "need",
+        "needs", "wanna" },
+    prepositions = { "about", "above", "across", "against", "along", "among", "around", "as", "at", "behind",
+        "below", "beneath", "beside", "between", "beyond", "by", "down", "during", "for", "from", "in", "inside",
+        "into", "like", "near", "of", "off", "on", "onto", "out", "outside", "over", "past", "per", "than",
+        "through", "to", "toward", "towards", "under", "up", "upon", "via", "with", "within", "round", "onto" },
+    conjunctions = { "and", "but", "or", "nor", "so", "yet", "also", "because", "that", "though", "although",
+        "whether", "while", "where", "how", "why", "then", "plus" },
+    -- discourse markers and degree adverbs
+    discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit",
+        "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
+        "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
+        "ok", "okay", "oh", "hmm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
+        "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
+        "entirely", "moment", "away", "back", "aside" },
+    -- courtesy and framing of a request
+    courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
+        "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
+        "put", "keep", "set", "bring", "take", "ready", "appreciate", "instruct", "sure",
+        -- verbs of opinion that frame a request ("I think the easyJet should go direct")
+        "think", "guess", "believe", "suppose", "reckon", "wonder", "hope", "prefer", "realise", "realize",
+        "know", "remember", "forget", "forgot", "notice", "grateful", "thankful",
+        -- verbs of the speaker's own talk ("while I explain this")
+        "explain", "brief", "talk", "discuss", "speak" },
+    -- radiotelephony courtesy
+    radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
+        "copied", "affirm", "affirmative", "understood", "g'day", "bye" },
+    -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
+    -- explained whole
+    courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",
+        "when able", "if able", "if you can", "if you could", "if you would", "if possible",
+        "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
+        "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
+        "after that", "after this", "at pilot's discretion", "at your discretion" },
+    -- the ordinary accompaniments of instructions: verbs of changing a setting, participles that
+    -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
+    -- "track direct", "to the left side", "the velocity")
+    accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
+        "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
+        "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
+        "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
+        -- kinds of traffic, parts of the airspace, and what a vector avoids
+        "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
+        "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
+        -- states and settings a request names ("which method is active", "the scenario file", "ADS-B noise")
+        "active", "inactive", "enabled", "disabled", "file", "ads-b", "adsb", "colliding", "collision",
+        "conflicting",
+        -- verbs that go with an instruction's direction or place: informal ones ("bump the speed up", "crank
+        -- the look-ahead up") and those of staying and going ("stay on 250 knots", "returning to Orly")
+        "bump", "crank", "push", "knock", "dial", "stay", "remain", "return", "sit", "head", "hand",
+        -- legs of an approach a vector is for ("vectors for base"), and alerts
+        "base", "downwind", "final", "spacing", "sequencing", "alert",
+        -- controllers' written abbreviations of instruction words
+        "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
+        -- squawk's own display, where a command shows or draws what it is asked
+        "console", "screen", "display", "window", "map", "scope", "draw" },
+    -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
+    -- "Kennedy altimeter"): the one or two words before these are its place
+    facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
+        "delivery", "director", "information", "altimeter", "qnh" },
+    -- phrases that bound a value or keep it in force ("or greater", "not less than", "until further
+    -- advised"): the value is the instruction's, explained whole
+    value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
+        "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
+        "until further notice" },
+    -- words that change what an instruction means: a leftover unless the parse carried them (a condition
+    -- command, a switch turned off, a direct-to past a place, a handler that read it)
+    negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
+        "can't", "cannot", "won't", "shouldn't", "mustn't", "isn't", "aren't", "wasn't", "without", "except" },
+    condition = { "if", "after", "until", "till", "before", "once", "when", "whenever", "unless" },
+  },
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
   hesitations = { "ah", "uh", "um", "er" },
@@ -87,7 +178,7 @@ return {
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but" },
   -- words that open the reason given for an instruction (to the end of its
   -- sentence): aircraft named in it are context, never instructed
-  reason = { "because", "since", "cause" },
+  reason = { "because", "since", "cause", "due" },
   reason_after_so = { "that", "it", "they", "it's", "its", "we" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",

@@ -196,8 +196,9 @@ do -- values as speech recognition writes them
     "ALT SWA5578 2700")
   check_eq(tr("Southwest fifty five seventy eight climb and maintain one three thousand, zero niner zero", w),
     "ALT SWA5578 13000 ; HDG SWA5578 90")
+  -- a word the recogniser garbled ("rioted" for "right heading") is asked about, never skipped
   check_eq(tr("Land Juliett fifty five seventy eight rioted in two seven zero",
-    world_of("CRE SWA5578 B738 40 -74 360 5000 250")), "HDG SWA5578 270")
+    world_of("CRE SWA5578 B738 40 -74 360 5000 250")), "ASK I have HDG SWA5578 270. What does 'rioted' mean?")
   check_eq(tr("Boeing 787-9"):find("DTMULT"), nil)
   check_eq(tr("Southwest fifty five seventy eight mark point six seven", w), "SPD SWA5578 M0.67")
   -- a stutter is repaired, a compound number is not cut ("seventy six thousand" is no 6000)

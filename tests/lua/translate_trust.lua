@@ -83,6 +83,36 @@ check_eq(said(tr("KLM77 sink to flight level 90")), "ALT KLM77 FL90")
 check_eq(said(tr("DLH4AX descend 12000 feet")), "ALT DLH4AX 12000")
 check_eq(said(tr("BAW8CK descend flight level 150 with 1800 feet for minute")), "ALT BAW8CK FL150 1800")
 
+-- every word accounted for (lexicon.accounted): a negation or a condition no command carries, and a word
+-- squawk does not know, are asked about by name and nothing runs
+check_eq(said(tr("KLM1234 don't climb FL340")), "ASK I have ALT KLM1234 FL340. What does 'don't' mean?")
+check_eq(said(tr("DLH4AX never turn left heading 200")), "ASK I have HDG DLH4AX 200 LEFT. What does 'never' mean?")
+check_eq(said(tr("descend KLM77 to FL100 unless you hear otherwise")),
+  "ASK I have ALT KLM77 FL100. What does 'unless' mean?")
+check_eq(said(tr("KLM1234 climb FL340 after the sim restarts")),
+  "ASK I have ALT KLM1234 FL340. What does 'after' mean?")
+check_eq(said(tr("if the clock runs, DLH4AX descend FL200")), "ASK I have ALT DLH4AX FL200. What does 'if' mean?")
+r = tr("KLM1234 climb FL340 gently")
+check_eq(said(r), "ASK I have ALT KLM1234 FL340. What does 'gently' mean?")
+check_eq(r.commands, nil)
+check_eq(said(tr("BAW8CK wobble heading 090")), "ASK I have HDG BAW8CK 90. What does 'wobble' mean?")
+-- polite and radiotelephony framing is accounted for: closed-class words, courtesy, "good day", a
+-- polite "if" ("if that's alright", "I'd appreciate it if ... could"), "when you get a chance"
+check_eq(said(tr("could you please climb KLM1234 to FL340, thanks")), "ALT KLM1234 FL340")
+check_eq(said(tr("DLH4AX, good day, turn left heading 200")), "HDG DLH4AX 200 LEFT")
+check_eq(said(tr("I'd appreciate it if KLM77 could descend to FL100")), "ALT KLM77 FL100")
+check_eq(said(tr("KLM77 reduce speed to 220 knots if that's alright")), "SPD KLM77 220")
+check_eq(said(tr("when you get a chance, would you have BAW8CK climb to FL240")), "ALT BAW8CK FL240")
+check_eq(said(tr("I think DLH4AX should go a bit faster, maybe 300 knots")), "SPD DLH4AX 300")
+-- a condition carried by a conditional command explains its word; a comment or a purpose with no
+-- instruction, value or aircraft in it explains itself; inflections of known words are known
+check_eq(said(tr("KLM1234 descend FL200, when passing FL220 reduce speed 250")),
+  "ALT KLM1234 FL200 ; ATALT KLM1234 FL220 SPD KLM1234 250")
+check_eq(said(tr("delete KLM77, we don't need it any more")), "DEL KLM77")
+check_eq(said(tr("pause the simulation so I can brief the participants")), "HOLD")
+check_eq(said(tr("KLM1234 keeping FL250, turn left heading 200")), "ALT KLM1234 FL250 ; HDG KLM1234 200 LEFT")
+check_eq(said(tr("DLH4AX descend FL200, rate 2000 feet per minute or greater")), "ALT DLH4AX FL200 2000")
+
 -- 2. turns the way they were said; relative turns in whole degrees; past 180 degrees asks yes/no
 check_eq(said(tr("BAW8CK turn right heading 300")), "HDG BAW8CK 300 RIGHT")
 check_eq(said(tr("BAW8CK turn left heading 020")), "HDG BAW8CK 20 LEFT")
