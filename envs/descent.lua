@@ -30,6 +30,10 @@ local RWY_LAT, RWY_LON = 52, 4                -- [deg] L95-96; also traf.cre's d
 local NM2KM = 1.852                           -- L97
 local CLIMB_ALT, DESCEND_ALT = 1000000, 0     -- [m] selected altitude for a climb / descent (L155, L158)
 local ACID = "KL001"
+-- info.success (squawk's definition; BlueSky-Gym has none): the aircraft
+-- passed the runway airborne, at most 1000 ft above it (the vertical margin
+-- of VerticalCREnv, L21 there): a finished descent, not a crash or a fly-over.
+local SUCCESS_MAX_ALT = 1000 * 0.3048         -- [m]
 
 local Descent = {
   id = "DescentEnv-v0",
@@ -58,8 +62,13 @@ function Descent:observe()
   }
 end
 
+-- Whether the episode so far meets info.success (above).
+function Descent:landed()
+  return self.final_altitude > 0 and self.final_altitude <= SUCCESS_MAX_ALT
+end
+
 function Descent:info()
-  return {total_reward = self.total_reward, final_altitude = self.final_altitude}
+  return {total_reward = self.total_reward, final_altitude = self.final_altitude, success = self:landed()}
 end
 
 -- numpy's np.random.randint(lo, hi): a whole number in [lo, hi). The

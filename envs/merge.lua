@@ -119,8 +119,9 @@ function M:observe()
 end
 
 function M:info()
+  -- info.success: no intruder within 4 NM at any step of the episode.
   return {total_reward = self.total_reward, faf_reach = self.faf_reached,
-          total_intrusions = self.total_intrusions}
+          total_intrusions = self.total_intrusions, success = self.total_intrusions == 0}
 end
 
 -- L256-267: the fix reached pays once; then the runway within 2 margins ends it.

@@ -80,7 +80,9 @@ function E:observe()
 end
 
 function E:info()
-  return {total_reward = self.total_reward, waypoints_completed = self.waypoints_completed}
+  -- info.success: all five waypoints reached (the episode's termination).
+  return {total_reward = self.total_reward, waypoints_completed = self.waypoints_completed,
+          success = self.waypoints_completed == NUM_WAYPOINTS}
 end
 
 function E:reset(seed, options)

@@ -199,7 +199,9 @@ function S:observe()
 end
 
 function S:info()
-  return {total_reward = self.total_reward, total_intrusions = self.total_intrusions}
+  -- info.success: no intruder within 5 NM at any step of the episode.
+  return {total_reward = self.total_reward, total_intrusions = self.total_intrusions,
+          success = self.total_intrusions == 0}
 end
 
 -- L116-131, L226-234, L133-138.

@@ -132,7 +132,9 @@ function E:observe()
 end
 
 function E:info()
+  -- info.success: the waypoint reached without entering a restricted area.
   return {total_reward = self.total_reward, waypoint_reached = self.waypoint_reached, crashed = self.crashed,
+          success = self.waypoint_reached == 1 and self.crashed == 0,
           average_drift = self.drift_n > 0 and self.drift_sum / self.drift_n or nil}
 end
 

@@ -133,8 +133,9 @@ function V:reward()
 end
 
 function V:info()
+  -- info.success: DescentEnv's (a finished descent) with no intrusion on the way.
   return {total_reward = self.total_reward, total_intrusions = self.total_intrusions,
-          final_altitude = self.final_altitude}
+          final_altitude = self.final_altitude, success = self:landed() and self.total_intrusions == 0}
 end
 
 return V

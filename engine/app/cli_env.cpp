@@ -1,16 +1,22 @@
 // squawk env: environments written as Lua files (envs/*.lua, script/lua_env.h).
 //
-//   squawk env run ENV.lua [--policy random|zero|constant:V[,V...]] [--episodes N]
-//                          [--seed S] [--json]
+//   squawk env run ENV.lua [--policy random|zero|constant:V[,V...]|script:FILE]
+//                          [--episodes N] [--seed S] [--json]
 // Episode k (0-based) resets with seed S + k; the random policy draws each
-// action uniformly in the declared Box from Rng(S). Prints the environment,
-// then mean episode reward (and its standard deviation), mean episode length,
-// the shares of episodes that terminated or were truncated, and env steps/s.
+// action uniformly in the declared Box from Rng(S); a script policy
+// (script/lua_policy.h) is reset with the episode's seed and asked for every
+// action. Prints the environment, then the episode statistics of EpisodeStats.
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "app/cli.h"
 #include "app/subcommands.h"
@@ -19,6 +25,7 @@
 #include "core/rng.h"
 #include "core/text.h"
 #include "script/lua_env.h"
+#include "script/lua_policy.h"
 
 namespace squawk::app {
 
@@ -26,7 +33,36 @@ namespace {
 
 struct EnvPolicy {
   bool random = false;
-  std::vector<double> constant;  // the action when not random
+  std::string script;            // the policy file of script:FILE, or ""
+  std::vector<double> constant;  // the action when neither random nor scripted
+};
+
+// What `squawk env run` reports over its episodes. Success counts episodes
+// whose last step's info.success was true, over those that reported one.
+// Action shares: for each action component, the fraction of steps whose
+// value lies in the lower, middle and upper third of [low, high] (the upper
+// third includes high).
+struct EpisodeStats {
+  long long episodes = 0, steps = 0, terminated = 0, truncated = 0;
+  long long success = 0, success_known = 0;
+  double reward_sum = 0, reward_sum2 = 0;
+  std::vector<std::array<long long, 3>> thirds;  // per action component
+
+  void count_action(std::span<const double> a, const script::LuaEnvSpec& spec) {
+    for (size_t k = 0; k < a.size(); ++k) {
+      const double u = (a[k] - spec.action_low[k]) / (spec.action_high[k] - spec.action_low[k]);
+      ++thirds[k][u < 1.0 / 3 ? 0 : u < 2.0 / 3 ? 1 : 2];
+    }
+  }
+  double mean() const { return reward_sum / static_cast<double>(episodes); }
+  double sd() const {
+    const double m = mean();
+    return std::sqrt(std::max(0.0, reward_sum2 / static_cast<double>(episodes) - m * m));
+  }
+  double share(size_t k, int third) const {
+    return static_cast<double>(thirds[k][static_cast<size_t>(third)]) /
+           static_cast<double>(std::max(1LL, steps));
+  }
 };
 
 Result<EnvPolicy> parse_policy(const std::string& p, const script::LuaEnvSpec& spec) {
@@ -60,7 +96,12 @@ Result<EnvPolicy> parse_policy(const std::string& p, const script::LuaEnvSpec& s
                                text::fmt_double(spec.action_high[k]) + "]");
     return pol;
   }
-  return Status::invalid("--policy '" + p + "': expected random, zero or constant:V[,V...]");
+  if (p.rfind("script:", 0) == 0 && p.size() > 7) {
+    pol.script = p.substr(7);
+    return pol;
+  }
+  return Status::invalid("--policy '" + p +
+                         "': expected random, zero, constant:V[,V...] or script:FILE");
 }
 
 int env_run(const ArgV& argv) {
@@ -83,59 +124,99 @@ int env_run(const ArgV& argv) {
   auto policy = parse_policy(policy_name, spec);
   if (!policy) return usage_error("env", policy.status().message());
 
+  std::unique_ptr<script::LuaPolicy> scripted;
+  if (!policy->script.empty()) {
+    if (!files::exists(policy->script))
+      return failure(Status::not_found("no policy file '" + policy->script + "'"));
+    auto loaded = script::LuaPolicy::load(policy->script, *opts, spec);
+    if (!loaded) return failure(Status::invalid(shown_error(loaded.status().message())));
+    scripted = std::move(*loaded);
+  }
+
   const uint64_t seed = opts->seed;
   Rng rng(seed);
   std::vector<double> action(static_cast<size_t>(spec.action_size()));
-  double sum = 0, sum2 = 0, len_sum = 0;
-  long long terminated = 0, truncated = 0, steps = 0;
+  EpisodeStats stats;
+  stats.thirds.assign(action.size(), {0, 0, 0});
   const auto t0 = std::chrono::steady_clock::now();
   for (long long k = 0; k < *episodes; ++k) {
-    if (Status st = e.reset(seed + static_cast<uint64_t>(k)); !st.is_ok())
-      return failure(Status::invalid(shown_error(st.message())));
+    const uint64_t episode_seed = seed + static_cast<uint64_t>(k);
+    Status st = e.reset(episode_seed);
+    if (st.is_ok() && scripted) st = scripted->reset(episode_seed);
+    if (!st.is_ok()) return failure(Status::invalid(shown_error(st.message())));
     double total = 0;
     while (true) {
-      for (size_t a = 0; a < action.size(); ++a)
-        action[a] = policy->random ? rng.uniform(spec.action_low[a], spec.action_high[a])
-                                   : policy->constant[a];
+      if (scripted) {
+        if (Status a = scripted->act(e.observation(), action); !a.is_ok())
+          return failure(Status::invalid(shown_error(a.message())));
+      } else {
+        for (size_t a = 0; a < action.size(); ++a)
+          action[a] = policy->random ? rng.uniform(spec.action_low[a], spec.action_high[a])
+                                     : policy->constant[a];
+      }
+      stats.count_action(action, spec);
       auto r = e.step(action);
       if (!r) return failure(Status::invalid(shown_error(r.status().message())));
       total += r->reward;
       if (r->terminated || r->truncated) {
-        terminated += r->terminated;
-        truncated += !r->terminated && r->truncated;
+        stats.terminated += r->terminated;
+        stats.truncated += !r->terminated && r->truncated;
+        if (r->success) {
+          ++stats.success_known;
+          stats.success += *r->success;
+        }
         break;
       }
     }
-    steps += e.steps();
-    len_sum += e.steps();
-    sum += total;
-    sum2 += total * total;
+    ++stats.episodes;
+    stats.steps += e.steps();
+    stats.reward_sum += total;
+    stats.reward_sum2 += total * total;
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const double n = static_cast<double>(*episodes);
-  const double mean = sum / n;
-  const double sd = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
+  const double n = static_cast<double>(stats.episodes);
+  const double steps_per_s = static_cast<double>(stats.steps) / seconds;
   if (args->has("--json")) {
+    std::string shares;
+    for (size_t a = 0; a < action.size(); ++a)
+      shares += std::string(a ? ", " : "") + "[" + text::fmt_double(stats.share(a, 0)) + ", " +
+                text::fmt_double(stats.share(a, 1)) + ", " + text::fmt_double(stats.share(a, 2)) +
+                "]";
+    const std::string success =
+        stats.success_known ? std::to_string(stats.success) : std::string("null");
     std::printf(
-        "{\"env\": \"%s\", \"policy\": \"%s\", \"episodes\": %lld, \"seed\": %llu, "
+        "{\"env\": \"%s\", \"policy\": %s, \"episodes\": %lld, \"seed\": %llu, "
         "\"mean_reward\": %.17g, "
         "\"std_reward\": %.17g, \"mean_length\": %.17g, \"terminated\": %lld, \"truncated\": %lld, "
+        "\"success\": %s, \"success_reported\": %lld, \"action_shares\": [%s], "
         "\"steps_per_s\": %.6g}\n",
-        spec.id.c_str(), policy_name.c_str(), *episodes, static_cast<unsigned long long>(seed),
-        mean, sd, len_sum / n, terminated, truncated, static_cast<double>(steps) / seconds);
+        spec.id.c_str(), nlohmann::json(policy_name).dump().c_str(), stats.episodes,
+        static_cast<unsigned long long>(seed), stats.mean(), stats.sd(),
+        static_cast<double>(stats.steps) / n, stats.terminated, stats.truncated, success.c_str(),
+        stats.success_known, shares.c_str(), steps_per_s);
     return kExitOk;
   }
   std::printf("%s (%s): observation %d numbers, action %d in [%s, %s], at most %d steps\n",
               spec.id.c_str(), file.c_str(), spec.observation_size, spec.action_size(),
               text::fmt_double(spec.action_low[0]).c_str(),
               text::fmt_double(spec.action_high[0]).c_str(), spec.max_episode_steps);
-  std::printf("policy %s, %lld episodes from seed %llu\n", policy_name.c_str(), *episodes,
+  std::printf("policy %s, %lld episodes from seed %llu\n", policy_name.c_str(), stats.episodes,
               static_cast<unsigned long long>(seed));
-  std::printf("  mean reward     %.4f (std %.4f)\n", mean, sd);
-  std::printf("  mean length     %.2f steps\n", len_sum / n);
-  std::printf("  terminated      %lld of %lld; truncated %lld\n", terminated, *episodes, truncated);
-  std::printf("  speed           %.0f env steps/s\n", static_cast<double>(steps) / seconds);
+  if (stats.success_known)
+    std::printf(
+        "  success         %lld of %lld (%.1f %%)\n", stats.success, stats.success_known,
+        100.0 * static_cast<double>(stats.success) / static_cast<double>(stats.success_known));
+  else
+    std::printf("  success         not reported (the file's info has no success)\n");
+  std::printf("  mean reward     %.4f (std %.4f)\n", stats.mean(), stats.sd());
+  std::printf("  mean length     %.2f steps\n", static_cast<double>(stats.steps) / n);
+  std::printf("  terminated      %lld of %lld; truncated %lld\n", stats.terminated, stats.episodes,
+              stats.truncated);
+  for (size_t a = 0; a < action.size(); ++a)
+    std::printf("  action %zu thirds %.3f low, %.3f middle, %.3f high\n", a + 1, stats.share(a, 0),
+                stats.share(a, 1), stats.share(a, 2));
+  std::printf("  speed           %.0f env steps/s\n", steps_per_s);
   return kExitOk;
 }
 

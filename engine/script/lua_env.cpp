@@ -167,6 +167,21 @@ Status LuaEnv::read_observation(int idx, const char* fn) {
   });
 }
 
+Status LuaEnv::read_success(int idx, LuaStep& r) {
+  lua_State* L = vm_->state();
+  if (!lua_istable(L, idx)) return Status::ok();
+  return catch_arg_errors(L, path_ + ": step: ", [&] {
+    get_field(L, idx, "success");
+    if (!lua_isnil(L, -1)) {
+      if (!lua_isboolean(L, -1))
+        throw ArgError(std::string("info.success (5th result) must be a boolean, got ") +
+                       luaL_typename(L, -1));
+      r.success = lua_toboolean(L, -1) != 0;
+    }
+    lua_pop(L, 1);
+  });
+}
+
 Status LuaEnv::reset(uint64_t seed) {
   lua_State* L = vm_->state();
   const int top = lua_gettop(L);
@@ -196,7 +211,7 @@ Result<LuaStep> LuaEnv::step(std::span<const double> action) {
     lua_pushnumber(L, action[k]);
     lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
   }
-  Status st = vm_->pcall(2, 4);
+  Status st = vm_->pcall(2, 5);
   LuaStep r;
   if (st.is_ok()) st = read_observation(top + 1, "step");
   if (st.is_ok()) {
@@ -212,6 +227,8 @@ Result<LuaStep> LuaEnv::step(std::span<const double> action) {
       r.reward = lua_tonumber(L, top + 2);
       r.terminated = lua_toboolean(L, top + 3) != 0;
       r.truncated = lua_toboolean(L, top + 4) != 0;
+      if (r.terminated || r.truncated || steps_ + 1 >= spec_.max_episode_steps)
+        st = read_success(top + 5, r);
     }
   }
   lua_settop(L, top);

@@ -11,7 +11,9 @@
 //   E:reset(seed, options) -> obs [, info]
 //   E:step(action)         -> obs, reward, terminated, truncated [, info]
 // obs is an array of observation_size finite numbers; action an array of
-// action_size numbers. The driver adds the TimeLimit: truncated once
+// action_size numbers. info.success (optional boolean), read at an episode's
+// last step, says whether the episode met the environment's own notion of
+// success (each file documents it). The driver adds the TimeLimit: truncated once
 // max_episode_steps steps ran without termination. Every call into the file
 // runs under the Vm's budget (a fresh one per call); Lua errors and contract
 // violations come back as Status naming the file, the function and the value.
@@ -19,6 +21,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -46,6 +49,9 @@ struct LuaStep {
   double reward = 0.0;
   bool terminated = false;
   bool truncated = false;  // the file's own, or the driver's TimeLimit
+  // info.success of the episode's last step (terminated or truncated);
+  // empty on other steps and when the file's info has no `success`.
+  std::optional<bool> success;
 };
 
 class LuaEnv {
@@ -76,6 +82,8 @@ class LuaEnv {
   // observation_size finite numbers, read raw; false (obs_ partly written)
   // sends the caller to the checked path, which names what is wrong.
   bool read_plain_observation(int idx);
+  // info.success of the info table at stack index `idx` (absent: none).
+  Status read_success(int idx, LuaStep& r);
 
   std::string path_;
   std::unique_ptr<Vm> vm_;

@@ -14,6 +14,7 @@
 #include "core/rng.h"
 #include "scratch_dir.h"
 #include "script/lua_env.h"
+#include "script/lua_policy.h"
 
 using namespace squawk;
 namespace fs = std::filesystem;
@@ -143,6 +144,48 @@ TEST_CASE("DescentEnv-v0 full descent crashes with -100; full climb passes the r
   CHECK(up.terminated);
   CHECK(up.obs.back()[0] > up.obs[0][0]);
   CHECK(up.rewards.back() < -50.0);  // -altitude / 60 above 3000 m
+}
+
+TEST_CASE("info.success at an episode's last step: the scripted descent lands, a dive does not") {
+  auto e = descent();
+  auto policy = script::LuaPolicy::load(repo("envs/policies/descent.lua"), {}, e->spec());
+  REQUIRE_MESSAGE(policy.is_ok(), policy.status().message());
+  std::vector<double> a(1);
+  for (uint64_t seed : {3, 4}) {
+    REQUIRE(e->reset(seed).is_ok());
+    REQUIRE((*policy)->reset(seed).is_ok());
+    while (true) {
+      REQUIRE((*policy)->act(e->observation(), a).is_ok());
+      CHECK(a[0] >= -1.0);
+      CHECK(a[0] <= 1.0);
+      auto r = e->step(a);
+      REQUIRE(r.is_ok());
+      if (!r->terminated) {
+        CHECK(!r->success.has_value());
+        continue;
+      }
+      REQUIRE(r->success.has_value());
+      CHECK(*r->success);  // passed the runway airborne, at most 1000 ft above it
+      CHECK(e->observation()[0] * 3000 + 1500 > 0.0);
+      CHECK(e->observation()[0] * 3000 + 1500 <= 304.8);
+      break;
+    }
+  }
+  REQUIRE(e->reset(3).is_ok());
+  while (true) {
+    auto r = e->step(std::vector<double>{-1.0});
+    REQUIRE(r.is_ok());
+    if (r->terminated) {
+      CHECK(r->success == std::optional<bool>(false));  // the ground
+      break;
+    }
+  }
+  // A policy for another environment is refused by name.
+  auto merge = load("envs/merge.lua");
+  auto wrong = script::LuaPolicy::load(repo("envs/policies/descent.lua"), {}, merge->spec());
+  REQUIRE(!wrong.is_ok());
+  CHECK(wrong.status().message().find("written for DescentEnv-v0, not MergeEnv-v0") !=
+        std::string::npos);
 }
 
 TEST_CASE("DescentEnv-v0 is deterministic per seed") {
