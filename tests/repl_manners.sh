@@ -5,7 +5,8 @@
 # announced again at tLOS 120 s and 60 s, and at t = 0 with the clock held
 # the predicted conflicts are announced and listed; TrafScript typed runs as
 # typed, destructive requests wait for a yes, what is not simulated is named
-# and a close callsign is asked about (docs/translator_trust.md).
+# a close callsign is asked about, and a leftover plain word (never a negation) may be
+# answered "ignore it" (docs/translator_trust.md).
 # usage: tests/repl_manners.sh path/to/squawk   (run from the repo root)
 set -u
 sq=${1:?usage: tests/repl_manners.sh SQUAWK_BINARY}
@@ -70,5 +71,12 @@ out=$(run '!CRE ACA851 A320 52 4 90 FL200 250\nair canada eight five climb FL300
 has "a callsign missing a digit asks with one aircraft" "$out" "? Did you mean ACA851? I heard ACA85."
 has "an airline's two-letter code asks" "$out" "? Did you mean ACA851? I heard AC851."
 has "neither ran" "$out" "> ALT" absent
+
+out=$(run "!CRE KL9 A320 52 4 90 FL200 250\nKL9 don't climb FL300\nignore it\nKL9 climb FL300 gently\nignore it\n")
+has "a negation asks" "$out" "What does 'don't' mean?   (answer, or say cancel)"
+has "a negation is never ignored: the request runs only after 'gently' is" "$out" "> ALT KL9 FL300"
+has "an unknown word offers ignore" "$out" "What does 'gently' mean?   (answer, say ignore if it means nothing, or cancel)"
+n=$(grep -c "^> ALT KL9" <<<"$out")
+if [ "$n" -eq 1 ]; then echo "ok   one ALT ran (after 'gently' was ignored)"; else echo "FAIL $n ALT ran"; fails=$((fails + 1)); fi
 
 [ "$fails" -eq 0 ] && echo "all passed" || { echo "$fails failed"; exit 1; }

@@ -20,6 +20,9 @@
 --             sel_mach=, route = {"WPT", ...}}, ...} (sim:aircraft()'s names and units),
 --             waypoints = {"NAME", ...}} or nil.
 --     world.confirmed: {[id] = true} for callsigns the speaker confirmed.
+--     world.ignored: {[word] = true} (lower case) for leftover words the speaker said
+--     carry nothing ("ignore it"); a question about a leftover plain word (neither a
+--     negation nor a condition) carries ignorable = that word.
 --     Never fails: a request it cannot fill completely becomes a question
 --     naming what is missing; a question about an inexactly heard callsign
 --     carries confirm = {id =, heard =}.
@@ -1182,10 +1185,10 @@ end
 -- what squawk does not simulate, or a courtesy phrase ("when you get a chance") are explained.
 function G:unaccounted()
   -- the words no list explains, and the negations and conditions: only these need the parse's account
-  local explained, said = self.explained or {}, {}
+  local explained, said, ignored = self.explained or {}, {}, self.world.ignored or {}
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
-        and not explained[i] and not self.noted[i] and not self.u:used(i)
+        and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
         and (MEANING[t.text] or not known_word(t.text)) then
       said[#said + 1] = i
     end
@@ -1198,6 +1201,7 @@ function G:unaccounted()
     if not inside[i] and not issued[t.text] and not self:in_reason(i)
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
       self.leftover = t.raw
+      if not MEANING[t.text] then self.ignorable = t.text end
       return
     end
   end
@@ -1464,7 +1468,7 @@ function M.translate(text, world)
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end
-  if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm } end
+  if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm, ignorable = g.ignorable } end
   if #g.out == 0 and note then return { commands = {}, note = note } end
   if #g.out == 0 then return { commands = {}, ask = UNDERSTOOD } end
   -- a command said twice in one request ("send the KLM direct to SPY ... add SPY and then go direct to it")

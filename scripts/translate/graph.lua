@@ -45,6 +45,8 @@
 --     opts.on_token streaming callback passed to the LLM
 --     opts.confirmed {[callsign] = true}: inexactly heard callsigns the
 --                   speaker confirmed (the dialogue sets it after "yes")
+--     opts.ignored  {[word] = true}: leftover words the speaker said carry
+--                   nothing (the dialogue sets it after "ignore it")
 --   A question about an inexactly heard callsign carries result.confirm =
 --   {id =, heard =}. Commands that need a yes first (confirmation(): several
 --   aircraft deleted, RESET, IC, conflict detection/resolution off; a
@@ -57,6 +59,9 @@
 --       is joined to the pending request ("KL204 descend" -> "to what
 --       altitude?" -> "flight level 100" -> ALT KL204 FL100; result.answered
 --       holds the question answered); say("cancel") drops it (result.cancelled).
+--       A question about a leftover plain word carries result.ignorable = the
+--       word: an answer from lexicon.ignore ("ignore it", "nothing") reads the
+--       request again with that word explained (validated as any request).
 --       After a question with result.confirm.commands the next say() runs
 --       them on "yes"
 --       (result.confirmed), drops them on "no" (result.cancelled) and on
@@ -261,6 +266,7 @@ function M.translate(text, opts)
     on_token = opts.on_token,
     waypoints = waypoints,
     confirmed = opts.confirmed,
+    ignored = opts.ignored,
   }
   local state = { request = text, trace = {}, retries = 0, mode = mode }
   nodes.say(state, "start", string.format("mode %s, %s", mode, llm and llm:describe() or "no LLM")
@@ -270,7 +276,7 @@ function M.translate(text, opts)
   local result = { trace = state.trace, mode = mode, error = state.error, note = state.note,
                    typed = state.source == "typed" or nil }
   if state.ask then
-    result.ask, result.confirm = state.ask, state.confirm
+    result.ask, result.confirm, result.ignorable = state.ask, state.confirm, state.ignorable
   else
     -- destructive or global commands wait for a yes: the question carries
     -- the commands that the yes runs (Dialogue:answer)
@@ -358,11 +364,14 @@ function Dialogue:say(text)
     return r
   end
   if pending and pending.confirm and grammar.lexicon_says(text, "yes") then
-    local opts = setmetatable({ confirmed = { [pending.confirm.id] = true } }, { __index = self.opts })
-    local r = M.translate(pending.request, opts)
-    r.answered = pending.question
-    self.pending = r.ask and { question = r.ask, request = pending.request, confirm = r.confirm } or nil
-    return r
+    local opts = setmetatable({ confirmed = { [pending.confirm.id] = true }, ignored = pending.ignored },
+      { __index = self.opts })
+    return self:again(pending, opts)
+  end
+  if pending and pending.ignorable and grammar.lexicon_says(text, "ignore") then
+    local ignored = { [pending.ignorable] = true }
+    for w in pairs(pending.ignored or {}) do ignored[w] = true end
+    return self:again(pending, setmetatable({ ignored = ignored }, { __index = self.opts }))
   end
   local r, request = nil, text
   local own = not pending or grammar.has_instruction(text)
@@ -375,7 +384,18 @@ function Dialogue:say(text)
       r.answered = pending.question
     end
   end
-  self.pending = r.ask and { question = r.ask, request = request, confirm = r.confirm } or nil
+  self.pending = r.ask and { question = r.ask, request = request, confirm = r.confirm, ignorable = r.ignorable }
+    or nil
+  return r
+end
+
+-- The pending request read again with the speaker's answer in `opts` (a callsign
+-- confirmed, a word ignored); a new question keeps what was answered so far.
+function Dialogue:again(pending, opts)
+  local r = M.translate(pending.request, opts)
+  r.answered = pending.question
+  self.pending = r.ask and { question = r.ask, request = pending.request, confirm = r.confirm,
+    ignorable = r.ignorable, ignored = opts.ignored } or nil
   return r
 end
 

@@ -219,6 +219,11 @@ return {
   navaid_range_nm = 250,
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
+  -- answers to "What does 'W' mean?" that say W carries nothing ("ignore it", "nothing",
+  -- "just a comment"): the request is read again with W explained; never offered for a
+  -- negation or a condition (lexicon.accounted.negation, condition words), which must be restated
+  ignore = { "ignore", "it", "that", "this", "word", "nothing", "skip", "disregard", "means", "just", "a",
+             "comment", "remark", "filler", "please", "the" },
   -- what squawk does not simulate: a phrase starts at one of `words` (with
   -- one of `near` within 4 words after it, when given) and runs to the end
   -- of its clause; it is named in the reply, never translated

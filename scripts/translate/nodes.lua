@@ -247,10 +247,10 @@ end
 
 function M.offline(state, ctx)
   local world = M.world(ctx.sim, ctx.waypoints)
-  world.confirmed = ctx.confirmed
+  world.confirmed, world.ignored = ctx.confirmed, ctx.ignored
   local tr = grammar.translate(state.request, world)
   if tr.ask then
-    state.ask, state.confirm = tr.ask, tr.confirm
+    state.ask, state.confirm, state.ignorable = tr.ask, tr.confirm, tr.ignorable
     M.say(state, "offline", "asks: " .. tr.ask)
     return "ask"
   end

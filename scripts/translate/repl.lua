@@ -147,6 +147,7 @@ end
 
 -- The reply of one command as lines.
 function Repl:format_reply(r)
+  if r.ask and r.ignorable then return "? " .. r.ask .. "   (answer, say ignore if it means nothing, or cancel)" end
   if r.ask then return "? " .. r.ask .. "   (answer, or say cancel)" end
   if r.cancelled then return "  cancelled (" .. (r.cancel_note or "dropped the question") .. ")" end
   if r.cancelled == false then return "  nothing to cancel: no question was pending" end

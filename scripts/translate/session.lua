@@ -23,6 +23,8 @@
 --                   the first failure stops the rest
 --         ask = question (the translator needs more; the next command()
 --               may answer it, "cancel" drops it),
+--         ignorable = the leftover word the question names, when "ignore
+--               it" may answer it (graph.lua, Dialogue:say),
 --         cancelled = true (a question was dropped) | false (a cancel with
 --               nothing pending), cancel_note = what was dropped, or
 --               "nothing to cancel",
@@ -413,7 +415,7 @@ function Session:command(text, opts)
   self.last = r
   reply.trace, reply.note = r.trace, r.note
   if r.ask then
-    reply.ask = r.ask
+    reply.ask, reply.ignorable = r.ask, r.ignorable
     return reply
   end
   if r.cancelled ~= nil then
