@@ -404,6 +404,30 @@ function G:alone_but(b, e)
   return true
 end
 
+-- True when [b, e) is a clause of its own in a request of several: every other
+-- token between the punctuation before and after it is a filler or "then"
+-- ("AAL2307 direct BRAVO, then carry on", "reso MVP, pz 3 nm, then go"), and
+-- the clause before it is no callsign alone ("KL204, resume" resumes no clock).
+function G:clause_alone(b, e)
+  local lo, hi = b - 1, e
+  while lo >= 1 and self.t[lo].kind ~= "punct" do lo = lo - 1 end
+  while hi <= #self.t and self.t[hi].kind ~= "punct" do hi = hi + 1 end
+  if lo < 1 then return false end
+  for k = lo + 1, hi - 1 do
+    local t = self.t[k]
+    if (k < b or k >= e) and not t.filler and not self:word(k, "@then_words") then return false end
+  end
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.e == lo then
+      for k = 1, r.b - 1 do
+        if self.t[k].kind ~= "punct" and not self.t[k].filler then return true end
+      end
+      return false
+    end
+  end
+  return true
+end
+
 -- True when every token but the one at i is punctuation, a filler or part of
 -- a callsign, and a callsign is there ("baw836 route?").
 function G:alone_with_aircraft(i)
@@ -537,7 +561,12 @@ function G:segments(b, e)
     local merged = false
     if last and not thn then
       local li = M.intents[last.intent] or {}
-      if (li.absorbs and this.value) or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
+      -- ("add SUGOL at FL200 and speed 250" is one waypoint; "route it via SUGOL and give it 280 knots",
+      -- a verb after "and", is a speed of its own)
+      local own_verb = last.intent == "addwpt" and self:word(tr.pos - 1, "and")
+        and not self:word(tr.pos, "speed spd altitude alt heading hdg level fl")
+      if (li.absorbs and this.value and not own_verb)
+          or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
         merged = true
       elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
         merged = true  -- "make a new ...": one request

@@ -149,6 +149,11 @@ function m:acids(s)
     if meant then ids[k] = meant end
   end
   if #ids == 0 then self:airline_only(s) end
+  -- "delete the easy and the klm": an airline said alone that names no one aircraft is asked
+  -- about, never dropped beside the one that does
+  for _, u in ipairs(#ids > 0 and self.airline_unresolved or {}) do
+    if u.b >= s.b and u.e <= s.e then self:airline_only(u) end
+  end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
 end
@@ -239,6 +244,12 @@ function m:airline_refs()
           or self:word(e, "heavy super")))
         and not self:new_aircraft_follows(e - 1)
     local fits = ok and self:airline_fleet(icao) or {}
+    -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
+    -- name no airline flying, "the ILS", are no airline)
+    if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
+      self.airline_unresolved = self.airline_unresolved or {}
+      table.insert(self.airline_unresolved, { b = i, e = e })
+    end
     if #fits == 1 then
       local r = { kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_airline = true }
       local k = 1

@@ -494,9 +494,23 @@ return function(H, f, compass)
       end
     end
     local alt, spd
+    -- "via SUGOL and ANDIK and give it 280 knots": values after "and" and a verb of their own
+    -- are the next instruction's, no constraint of the waypoint
+    local upto = s.e
+    for k = (named and named.e or s.trig + 1), s.e - 1 do
+      local nx = self.t[k + 1]
+      if self:word(k, "and") and nx and nx.kind == "word" and not nx.filler and not nx.number_word
+          and not self:word(k + 1, "at with to speed spd altitude alt level fl")
+          and not self:refs_in(k + 1, k + 2, "waypoint")[1] then
+        upto = k
+        break
+      end
+    end
     for _, q in ipairs(qs) do
+      if q.b >= upto then break end
       if q.kind == "alt" and not alt then alt = f.alt(q.value, q.fl) end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
+      if q.kind == "plain" and not spd and self:word(q.b - 1, "speed spd") then spd = f.int(q.value) end
       if q.kind == "mach" and not spd then spd = f.mach(q.value) end
     end
     if next_to then
@@ -505,8 +519,8 @@ return function(H, f, compass)
         .. (after and next_to.name or "," .. next_to.name))
     end
     local cmd = "ADDWPT " .. id .. " " .. where
-    if alt or spd then cmd = cmd .. " " .. (alt or "") end
-    if spd then cmd = cmd .. " " .. spd end
+    if alt then cmd = cmd .. " " .. alt end
+    if spd then cmd = cmd .. (alt and " " or ",,") .. spd end  -- (an empty altitude keeps its place)
     self:emit(cmd)
     if not named then return end
     -- "route EZY45 via TEST1 then NIK to EHAM": the next places of the route in

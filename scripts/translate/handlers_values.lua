@@ -153,7 +153,9 @@ return function(H, f, wrap, compass)
     -- ("3000 feet from where it is now": a change from the present level)
     local from_here = self:find_word(s.trig, s.e, "from")
     local relative = not fl and (q.by or self:word_in(s.trig, s.e, "@relative")
-      or (from_here < s.e and self:word(from_here + 1, "where")))
+      or (from_here < s.e and self:word(from_here + 1, "where"))
+      -- "down 2000 feet", "up 1000 ft": an amount in feet straight after the adverb is a change
+      or (self:word(q.b - 1, "up down") and self:word(q.e - 1, "@feet")))
     if not relative and now and not q.to and not fl and dir ~= 0 then
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then

@@ -46,12 +46,12 @@ return {
         "separation", "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite",
         "define", "teleport", "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes",
         "timestep", "protected", "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude",
-        "minimum", "horizontal", },
+        "minimum", "horizontal", "forward", "right", "left", },
     common = { "stop", "them", "last", "want", "have", "from", "with", "what", "also", "back", "give", "make",
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
-        "show", "send", "sent", "held", "lead", "deletion", "circle", },
+        "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts", },
   },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words

@@ -80,6 +80,11 @@ return function(intent, rule, words)
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "left 40 and down 4000 ft": an amount in feet after the adverb is a change of level
+  rule { "up down", "alt", near = { 2, "@feet" }, when = function(g, i)
+    local t = g.t[i + 1]
+    return t ~= nil and t.kind == "number"
+  end }
   -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
   rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
@@ -118,6 +123,8 @@ return function(intent, rule, words)
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" } }  -- "the Shuttle is a bit slow": a description
   rule { "slow slower faster accelerate decelerate", "spd" }
+  -- "and give it 280 knots": a speed given to the aircraft
+  rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
 
   -- heading
@@ -128,6 +135,17 @@ return function(intent, rule, words)
   rule { "turn turning", "hdg" }
   rule { "left right", "hdg", when = function(g, i)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
+  end }
+  -- "EWG7LM 10 right and climb ...", "KL204 20 degrees left": a turn by the amount said before it,
+  -- straight after the callsign (never "runway 10 right")
+  rule { "left right", "hdg", when = function(g, i)
+    local n = g:word(i - 1, "degrees degree deg") and i - 2 or i - 1
+    local t = g.t[n]
+    if not t or t.kind ~= "number" or g.u:used(n) or g:word(n - 1, "runway rwy") then return false end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == n then return true end
+    end
+    return false
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
@@ -318,6 +336,10 @@ return function(intent, rule, words)
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
+  -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
+  rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  rule { "go resume continue unpause", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
