@@ -428,6 +428,14 @@ function G:clause_alone(b, e)
   return true
 end
 
+-- True when "vertical" at i is said of conflict resolutions ("let MVP use vertical speed in the
+-- resolutions", "resolutions horizontal only, no vertical"), no safety factor or zone size.
+function G:vertical_resolutions(i)
+  return self:word(i, "vertical") and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp")
+    and not self:word_in(1, #self.t + 1, "factor zone pz rpz zonedh separation sep")
+    and not self:has_ref(1, #self.t + 1, "aircraft")
+end
+
 -- True when every token but the one at i is punctuation, a filler or part of
 -- a callsign, and a callsign is there ("baw836 route?").
 function G:alone_with_aircraft(i)

@@ -107,7 +107,7 @@ function m:acids(s)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
-          and not self:preceded_by(r.b, 3, "@aircraft_context") and not self:in_reason(r.b) then
+          and not self:as_context(r.b) and not self:in_reason(r.b) then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -156,6 +156,19 @@ function m:acids(s)
   end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
+end
+
+-- True when the aircraft named at i is context ("to avoid a conflict with KLM77", "to meet BAW123"):
+-- a word of lexicon.aircraft_context within the 3 tokens before it, with no instruction word
+-- between, and not the object of a verb that instructs it ("set up the conflict, bring EZY45 up to
+-- 310" instructs EZY45).
+function m:as_context(i)
+  if self:word(i - 1, "bring get put send have let make tell ask") then return false end
+  for k = i - 1, math.max(1, i - 3), -1 do
+    if self:intent_at(k) then return false end
+    if self:word(k, "@aircraft_context") then return true end
+  end
+  return false
 end
 
 -- An airline said with no flight number ("KLM, climb ..."): the question

@@ -9,11 +9,20 @@ return function(H, f, compass)
 
   -- A latitude/longitude pair in qs: marked ones, else two bare numbers in a
   -- row after the instruction word ("at 0 0", "position 51.9, 4.4").
-  local function position(qs, trig)
+  -- (g: the grammar, which takes the minutes of a degrees-and-minutes position as read)
+  local function position(qs, trig, g)
     local lat, lon
-    for _, q in ipairs(qs) do
-      if q.kind == "lat" and not lat then lat = q.value end
-      if q.kind == "lon" and not lon then lon = q.value end
+    for k, q in ipairs(qs) do
+      -- degrees and decimal minutes, "52 20.5 N 004 30 E": whole degrees straight before the minutes
+      local v, d = q.value, qs[k - 1]
+      if (q.kind == "lat" or q.kind == "lon") and d and d.kind == "plain" and d.e == q.b and d.value >= 0
+          and d.value == math.floor(d.value) and d.value <= (q.kind == "lat" and 90 or 180) and math.abs(v) < 60 then
+        v = (v < 0 and -1 or 1) * (d.value + math.abs(v) / 60)
+        g:take(q)
+        g:take(d)
+      end
+      if q.kind == "lat" and not lat then lat = v end
+      if q.kind == "lon" and not lon then lon = v end
     end
     if lat and lon then return lat, lon end
     for k = 1, #qs - 1 do
@@ -58,7 +67,7 @@ return function(H, f, compass)
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig)
+    local lat, lon = position(qs, s.trig, self)
     local hdg, alt, fl, spd, mach
     for _, q in ipairs(qs) do
       if q.kind == "heading" and not hdg then hdg = q.value end
@@ -168,7 +177,7 @@ return function(H, f, compass)
     local id = self:acid(s, "move")
     if not id then return end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig)
+    local lat, lon = position(qs, s.trig, self)
     local named_at
     if not lat or not lon then
       for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do named_at = named_at or r.name end
@@ -475,7 +484,7 @@ return function(H, f, compass)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig)
+    local lat, lon = position(qs, s.trig, self)
     -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
     -- (also before the verb: "after REMBI add the waypoint ESAMA")
     local at = self:find_word(s.b, s.e, "after before")
@@ -687,7 +696,17 @@ return function(H, f, compass)
       local k = self:find_word(s.b, s.e, "@named")
       if k + 1 < s.e and self.t[k + 1].kind == "word" then name = self.t[k + 1].raw:upper() end
     end
-    local lat, lon = position(self:quantities(s.b, s.e), s.trig)
+    if not name then
+      -- "define waypoint DELTA at ...", "define a fix GOLF at ...": a name typed in capitals after the
+      -- noun or the verb, also one that is a phonetic word
+      for k = s.trig, s.e - 1 do
+        if k == s.trig or self:word(k, "@waypoint_nouns") then
+          local n = self.t[self:skip_fillers(k + 1)]
+          if n and n.kind == "word" and n.raw:match("^%u[%u%d]+$") and not n.keyword then name = n.raw break end
+        end
+      end
+    end
+    local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     if not name then return self:need("What should the waypoint be called, and where is it?") end
     if not lat or not lon then return self:need("Where is waypoint " .. name .. "? Please give a latitude and longitude.") end
     self:emit("DEFWPT " .. name .. " " .. f.num(lat) .. " " .. f.num(lon))
@@ -706,7 +725,7 @@ return function(H, f, compass)
     local id = self:acid(s, "get it")
     if not id then return end
     local w = self:refs_in(s.b, s.e, "waypoint")
-    local lat, lon = position(self:quantities(s.b, s.e), s.trig)
+    local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
     local airport = (a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e)
@@ -743,8 +762,13 @@ return function(H, f, compass)
   function m:vnav(s) nav(self, s, "VNAV") end
   -- True when the request asks what a setting is ("Is conflict detection switched on?", "what's the
   -- current zone radius?", "which resolution method is active?"): the bare command shows it.
-  function m:asks_setting()
+  -- value: a setting with a value of its own (ZONER, DTLOOK, DT, RFACH), also asked for without "?"
+  -- ("what's the current pz radius", "show me the time step") when no number is said
+  function m:asks_setting(value)
     local first = self:skip_fillers(1)
+    if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
+      return true
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?")
     return self.t[#self.t].text == "?" and (self:word(first, "is are what what's whats which")
       or self:word_in(1, #self.t + 1, "check whether"))
@@ -752,6 +776,14 @@ return function(H, f, compass)
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end
     self:emit(spec.cmd .. " " .. on_off(self, s))
+    if spec.cmd ~= "ASAS" then return end
+    -- "turn on CD with 5 nm and 1000 ft": the protected zone's radius and half height
+    for _, q in ipairs(self:quantities(s.trig, s.e)) do
+      if q.kind == "dist" then self:emit("ZONER " .. f.num(self:take(q).value)) end
+      if q.kind == "alt" and not q.fl and self:word(q.e - 1, "@feet") then
+        self:emit("ZONEDH " .. f.num(self:take(q).value))
+      end
+    end
   end
 
   function m:one_acid(s, cmd, what)
@@ -849,6 +881,7 @@ return function(H, f, compass)
   function m:time_step(s)
     local q = first(self, s, { time = true, plain = true })
     if q then return self:emit("DT " .. f.num(q.value)) end
+    if self:asks_setting(true) then return self:emit("DT") end
     self:need("What time step, in seconds, should the simulation use?")
   end
   function m:time_mult(s)
@@ -897,9 +930,44 @@ return function(H, f, compass)
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
     self:need("Which conflict resolution method should I use (for example MVP), or should it be off?")
   end
+  -- RFACH / RFACV: the safety factor resolutions apply; each value is the kind said last before it
+  -- ("the horizontal resolution margin factor to 1.2 and the vertical one to 1.05")
+  function m:reso_factor(s)
+    local b = math.max(1, s.b - 4)  -- ("with horizontal factor 1.1": the kind said before the noun)
+    local function kind(e)
+      for k = e - 1, b, -1 do
+        if self:word(k, "vertical") then return "RFACV" end
+        if self:word(k, "horizontal lateral") then return "RFACH" end
+      end
+      return nil
+    end
+    if self:asks_setting(true) then return self:emit(kind(s.e) or "RFACH") end
+    local before = #self.out
+    for _, q in ipairs(self:quantities(s.trig, s.e)) do
+      -- ("the vertical one": a pronoun, no value)
+      local pronoun = self.t[q.b].text == "one" and self:word(q.b - 1, "vertical horizontal lateral")
+      if q.kind == "plain" and not pronoun then
+        local cmd = kind(q.b)
+        if not cmd then
+          return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(q.value)))
+        end
+        self:emit(cmd .. " " .. f.num(self:take(q).value))
+      end
+    end
+    if #self.out == before then self:need("What safety factor should conflict resolution apply?") end
+  end
+  -- RMETHV: resolutions with vertical speed (V/S) or horizontal only (OFF)
+  function m:reso_vertical()
+    local off = self:word_in(1, #self.t + 1, "no not off without don't dont never only")
+    self:emit(off and "RMETHV OFF" or "RMETHV V/S")
+  end
+  function m:resume_nav()
+    if self:asks_setting() then return self:emit("RESNAV") end
+    self:emit("RESNAV PASTCPA")  -- the one way squawk resumes navigation after a resolution
+  end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical")
-    if self:asks_setting() and #self:quantities(s.b, s.e) == 0 then return self:emit(vertical and "ZONEDH" or "ZONER") end
+    if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then return self:emit(vertical and "ZONEDH" or "ZONER") end
     local before = #self.out
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
@@ -931,7 +999,7 @@ return function(H, f, compass)
   function m:look_ahead(s)
     local q = first(self, s, { time = true, plain = true })
     if q then return self:emit("DTLOOK " .. f.num(q.value)) end
-    if self:asks_setting() then return self:emit("DTLOOK") end
+    if self:asks_setting(true) then return self:emit("DTLOOK") end
     self:need("How far ahead, in seconds, should conflict detection look?")
   end
 end

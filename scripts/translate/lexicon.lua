@@ -81,7 +81,7 @@ return {
            "descending", "decelerate", "minus" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
-                       "than", "traffic" },
+                       "than", "traffic", "meet", "meets", "catch" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but" },

@@ -58,6 +58,9 @@ return function(intent, rule, words)
   intent "asas" { cmd = "ASAS", args = { "ON", "OFF" }, handler = "switch" }
   intent "reso" { cmd = "RESO", args = { "MVP", "OFF" }, handler = "resolution" }
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
+  intent "rfac" { cmds = { "RFACH", "RFACV" }, args = { "factor" }, handler = "reso_factor" }
+  intent "rmethv" { cmd = "RMETHV", args = { "ON", "OFF" }, handler = "reso_vertical" }
+  intent "resnav" { cmd = "RESNAV", args = { "PASTCPA" }, handler = "resume_nav" }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
   intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic" }
@@ -153,6 +156,9 @@ return function(intent, rule, words)
   rule { "due", "hdg", next = "@compass" }
   rule { "around", false, prev = { 3, "turn" } }
 
+  -- conflict resolution in the vertical ("let MVP use vertical speed in the resolutions", "keep
+  -- resolutions horizontal only, no vertical"): RMETHV, never a vertical speed or a new method
+  rule { "vertical", "rmethv", when = function(g, i) return g:vertical_resolutions(i) end }
   -- vertical speed and bank
   rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
@@ -213,6 +219,14 @@ return function(intent, rule, words)
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
   rule { "via", "addwpt", prev = { 3, "route" } }
+  -- "define TGT2 at ... and send KL204 to it", "... and route UAL9 through it": the waypoint just
+  -- defined joins the route
+  rule { "send route take", "addwpt", when = function(g, i)
+    local defined = false
+    for k = 1, i - 1 do defined = defined or g:intent_at(k) == "defwpt" end
+    local it = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "it")
+    return defined and it <= #g.t and g:word(it - 1, "to through via over")
+  end }
   -- "add INTOP after AMDIL": a known waypoint put next to another
   rule { "add append insert", "addwpt", when = function(g, i)
     return g:has_ref(i + 1, i + 2, "waypoint") and g:word(i + 2, "after before")
@@ -288,6 +302,7 @@ return function(intent, rule, words)
   -- "where's the MERIT intersection?"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
+  rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
   rule { "details status info information state pos", "pos" }
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
@@ -346,6 +361,8 @@ return function(intent, rule, words)
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
+  -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
+  rule { "resume resumes", "resnav", near = { 6, "cpa" } }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "run", "op", next = "again" }  -- "let it run again"
@@ -400,11 +417,19 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
   end }
   rule { "detection asas cdmethod cd", "asas" }
+  -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
+  rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
+  rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
+  rule { "mvp resolution resolve reso resolutions", false, when = function(g)
+    for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
+    return false
+  end }
   rule { "resolution resolve reso", "reso" }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected pz rpz separation zone zoner zonedh radius", "zone" }
+  rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }
