@@ -1140,7 +1140,7 @@ function M.translate(text, world)
   -- type names with their digits said as words, where traffic is created
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
       or text:lower():find("%f[%a]add") then
-    text = types.spoken(text, TYPES)
+    text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
   local u = squawk.translate.utterance(types.join(text, TYPES.phrases),
     world, NAMES)

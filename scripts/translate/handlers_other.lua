@@ -61,16 +61,24 @@ return function(H, f, compass)
     end
     local types = self:refs_in(s.b, s.e, "type")
     local actype = types[1] and types[1].name
-    local model
+    local model, near
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if r.exists then near = near or r.name end
       if r.exists and self:word_in(s.b, s.e, "same") then model = self:state(r.name) end
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig, self)
+    if not lat or not lon then
+      -- "10 miles north of KL204", "20 miles east of it" (the aircraft named before)
+      local la, lo = self:offset_position(qs, s.b, s.e, near)
+      if la then lat, lon = la, lo elseif lo then return self:need(lo) end
+    end
     local hdg, alt, fl, spd, mach
     for _, q in ipairs(qs) do
       if q.kind == "heading" and not hdg then hdg = q.value end
+      -- "flying 300 deg": an angle with no turn is the heading
+      if q.kind == "angle" and q.turn == 0 and not hdg and q.value >= 0 and q.value <= 360 then hdg = q.value end
       if q.kind == "alt" and not alt then alt, fl = q.value, q.fl end
       if q.kind == "speed" and not spd and not mach then spd = q.value end
       if q.kind == "mach" and not spd and not mach then mach = q.value end
@@ -92,7 +100,9 @@ return function(H, f, compass)
         hdg = compass(self.t[h + 1].text, h + 2 < s.e and self.t[h + 2].text or "")
       end
     end
-    if model and self:word_in(s.b, s.e, "altitude") and not alt then alt, fl = model.alt_ft, true end
+    -- "the same heading, level and speed as KL204", "same FL as WZZ1234"
+    if model and self:word_in(s.b, s.e, "altitude level fl") and not alt then alt, fl = model.alt_ft, true end
+    if model and self:word_in(s.b, s.e, "heading hdg") and not hdg then hdg = model.hdg_deg end
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
       if model.sel_mach then mach = model.sel_mach else spd = model.cas_kt end
     end
@@ -124,7 +134,7 @@ return function(H, f, compass)
     end
     for _, q in ipairs(qs) do
       if q.b < from then goto continue end
-      local seen = false
+      local seen = self.taken[q.b] ~= nil  -- (read already: an offset's distance)
       for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
         local v = read[k]
         if v and math.abs(v - q.value) < 1e-9 then seen = true end
@@ -140,6 +150,12 @@ return function(H, f, compass)
     if #left == 1 and left[1].kind == "plain" and alt and not spd and not mach and left[1].value >= 40
         and left[1].value <= 700 then
       spd = left[1].value
+      left = {}
+    end
+    -- a typed ".85" after the level, no speed said, is a Mach number ("fl390 .85")
+    if #left == 1 and left[1].kind == "plain" and alt and not spd and not mach
+        and self.t[left[1].b].raw:match("^%.%d%d?$") and left[1].value >= 0.4 then
+      mach = left[1].value
       left = {}
     end
     if #left > 0 and id and actype then
@@ -173,11 +189,50 @@ return function(H, f, compass)
     self.subject = id
   end
 
+  -- A position said as a distance and a compass point from an aircraft ("10 nm north", "20 miles
+  -- south of where it is now", "15 nm south of RYR81JC", "20 miles east of it"): lat, lon [deg] on a
+  -- flat earth around the aircraft (d NM north is d/60 degrees of latitude), with the quantity taken;
+  -- nil when no compass point follows the distance. `from`: the aircraft meant when none is named
+  -- after "of" (the one moved; "it"). Returns nil, question when the aircraft's position is unknown.
+  function m:offset_position(qs, b, e, from)
+    for _, q in ipairs(qs) do
+      local k = q.e
+      if self:word(k, "to") and self:word(k + 1, "the") then k = k + 2 end
+      local t = self.t[k]
+      local brg = q.kind == "dist" and q.b >= b and q.e <= e and t and t.kind == "word" and L.compass[t.text]
+      if brg then
+        local ref = from
+        if self:word(k + 1, "of") then
+          local r = self:refs_in(k + 2, k + 3, "aircraft")[1]
+          if r then
+            ref = r.name
+            self.explained = self.explained or {}
+            self.explained[r.b] = true  -- the reference, not an aircraft instructed
+          elseif not self:word(k + 2, "it where its") then
+            return nil
+          end
+        end
+        local a = ref and self:state(ref)
+        if not a or not a.lat then return nil, "Where is " .. (ref or "the reference aircraft") .. "?" end
+        self:take(q)
+        self.explained = self.explained or {}
+        self.explained[k] = true
+        local rad = math.rad(brg)
+        return a.lat + q.value * math.cos(rad) / 60, a.lon + q.value * math.sin(rad) / (60 * math.cos(math.rad(a.lat)))
+      end
+    end
+    return nil
+  end
+
   function m:move(s)
     local id = self:acid(s, "move")
     if not id then return end
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig, self)
+    if not lat or not lon then
+      local la, lo = self:offset_position(qs, s.trig, s.e, id)
+      if la then lat, lon = la, lo elseif lo then return self:need(lo) end
+    end
     local named_at
     if not lat or not lon then
       for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do named_at = named_at or r.name end
@@ -646,9 +701,14 @@ return function(H, f, compass)
     if #self:refs_in(s.b, s.e, "aircraft") > 0 then
       return self:need("Which aircraft type should the random aircraft be? Please give its ICAO designator.")
     end
+    -- "all going to Schiphol": MCRE's destination (an airport or waypoint said after "to")
+    local to = self:find_word(s.trig, s.e, "to")
+    local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
+    if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
     local cmd = "MCRE " .. f.int(n.value)
-    if #types > 0 or alt then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
-    if alt then cmd = cmd .. " " .. f.alt(alt.value, alt.fl) end
+    if #types > 0 or alt or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
+    if alt or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
+    if dest then cmd = cmd .. " * " .. dest end
     self:emit(cmd)
   end
 

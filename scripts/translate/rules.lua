@@ -200,7 +200,7 @@ return function(intent, rule, words)
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
   rule { "random", "mcre", when = function(g, i)
-    local t = g.t[i - 1]
+    local t = g.t[g:word(i - 1, "more extra new") and i - 2 or i - 1]  -- ("3 more random ones")
     return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
   end }
   rule { "create spawn generate creat cre", "create" }
@@ -240,6 +240,12 @@ return function(intent, rule, words)
   end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
   rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
+  -- "callsign SWR19, A333, FL360, ...": a request that opens with a new callsign and its type
+  rule { "callsign", "create", when = function(g, i)
+    return g:skip_fillers(1) == i and g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 6, "type")
+  end }
+  -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
+  rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }

@@ -339,11 +339,13 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("afr55 drop it to FL150", w), "ALT AFR55 FL150")
   check_eq(tr("rmv klm123", w), "DEL KLM123")
   check_eq(tr("delete AFR55, I will re-create it later", w), "DEL AFR55")
-  -- random traffic; a plural type read as a callsign is asked about
+  -- random traffic; a plural type is that type, unless an aircraft has that id
   check_eq(tr("please generate 12 random aircraft"), "MCRE 12")
   check_eq(tr("add four random E190 at FL150 please"), "MCRE 4 E190 FL150")
   check_eq(tr("seed 3, then spawn 8 random aircraft"), "SEED 3 ; MCRE 8")
-  check(asks("create six random B738s"), "a plural type")
+  check_eq(tr("create six random B738s"), "MCRE 6 B738")
+  check_eq(tr("add 5 random A320s at FL300 all going to EHAM"), "MCRE 5 A320 FL300 * EHAM")
+  check(asks("create six random B738s", { aircraft = { { id = "B738S", lat = 52, lon = 4 } } }), "B738S flies")
   check_eq(tr("run ahead 90 seconds"), "FF 90")
   -- "it" after a definition is the waypoint just defined, and is never matched to a name
   local ww = { aircraft = w.aircraft, waypoints = { "EXIT1", "SPY" } }
