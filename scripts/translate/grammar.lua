@@ -351,6 +351,8 @@ function G:in_reason(i)
   for k = i - 1, 1, -1 do
     local t = self.t[k]
     if t.kind == "punct" and t.text ~= "," then return false end
+    -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
+    if t.kind == "punct" and self:word(k + 1, "@then_words") then return false end
     if self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then return true end
   end
   return false
@@ -670,7 +672,7 @@ function G:parse(b, e)
       local before = self.last_cond
       self.last_cond = nil
       local n_before = #self.out
-      local at = self:at_altitude(s) or self:at_distance(s)
+      local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
       local spec = M.intents[s.intent]
       if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
       if not self.ask and #self.out > n_before then
@@ -778,7 +780,10 @@ local function value_carried(q, nums)
     for _, c in ipairs({ v, v * 100, v * 1000, v * 10, v + 200 }) do
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
-    if q.kind ~= "alt" and v >= 0 and v <= 360 and math.abs((v - n + 180) % 360 - 180) <= 0.5 then return true end
+    -- (a heading, 360 said for 0: against a heading's number only, never a level's 30000)
+    if q.kind ~= "alt" and v >= 0 and v <= 360 and n >= 0 and n <= 360 and math.abs((v - n + 180) % 360 - 180) <= 0.5 then
+      return true
+    end
   end
   return false
 end

@@ -612,6 +612,36 @@ function m:at_altitude(s)
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end
 
+-- "in 2 min turn KL204 left heading 180", "pause it at 30 minutes", "when the clock hits 45 minutes
+-- pause the sim": the instruction waits for a time, "DELAY s" after "in"/"after" (from now) or
+-- "SCHEDULE hh:mm:ss" after "at" or the clock reaching it (simulation time); nil when no time is said
+-- or the instruction is the clock's own (FF, DT, DTLOOK, DTMULT take their time as a value).
+local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true }
+function m:at_time(s)
+  if OWN_TIME[s.intent] then return nil end
+  for _, q in ipairs(self:quantities(s.b, s.e)) do
+    local w = q.b - 1
+    while w > 0 and self.t[w].filler do w = w - 1 end
+    if q.kind == "time" and not self.taken[q.b] then
+      local clock = self:word(w, "hits hit reaches reach shows") and self:word_in(math.max(1, w - 3), w, "@sim")
+      if not self:word(w, "in after at") and not clock then return nil end
+      -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
+      -- 2 minutes EZY45 descend": left uncarried, so asked about)
+      if q.b > s.trig and self:word_in(s.trig, w, "and then") then return nil end
+      self:mark_used(q.b, q.e)
+      self:mark_used(w, w + 1)
+      local t = math.floor(q.value + 0.5)
+      local at = self:word(w, "in after") and "DELAY " .. f.num(q.value)
+        or string.format("SCHEDULE %02d:%02d:%02d", t // 3600, t % 3600 // 60, t % 60)
+      -- (one that opens the request times every instruction in it: "in 30 seconds KL204 climb ... and
+      -- EZY45 descend ...")
+      if w == self:skip_fillers(1) then self.at_all = at end
+      return at
+    end
+  end
+  return nil
+end
+
 -- "when fifteen miles from TARTN descend FL80", "within 10 NM of CGT", "alt
 -- 8000 at 30nm from cyyz": "ATDIST id NAME dist" [NM] or nil. A distance
 -- said after a place ("10 miles past X") is no such condition: its place

@@ -958,6 +958,8 @@ return function(H, f, compass)
       end
     end
     if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
+    local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
+    if real < s.e and self:word(real + 1, "time") then return self:emit("DTMULT 1") end
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end

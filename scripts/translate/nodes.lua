@@ -356,6 +356,10 @@ function M.typed(state, ctx)
     if inner then
       local ok, why = scratch:check(inner)
       if not canonical_name(inner:match("^([%w_]+)")) then return "english" end
+      -- ("schedule a pause at 20 min": English glue where the time should be)
+      local head = {}
+      for w in c:gmatch("[^%s,]+") do head[#head + 1] = w end
+      if has_english_word(table.concat(head, " ", 1, inner_at - 1), name) then return "english" end
       if not ok then
         state.ask = string.format("%s carries '%s', which is not a command it can run (%s). What should it run?",
           name, inner, why)

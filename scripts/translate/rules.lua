@@ -83,6 +83,14 @@ return function(intent, rule, words)
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "kl204 up to 300", "EWG7LM up to FL320 so it ...": straight after the callsign
+  rule { "up down", "alt", next = "to", not_near = { 3, "speed knots kts" }, not_prev = { 3, "speed spd" },
+         when = function(g, i)
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == i then return true end
+    end
+    return false
+  end }
   -- "left 40 and down 4000 ft": an amount in feet after the adverb is a change of level
   rule { "up down", "alt", near = { 2, "@feet" }, when = function(g, i)
     local t = g.t[i + 1]
@@ -107,6 +115,13 @@ return function(intent, rule, words)
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
   end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
+  -- "speed it up 4x": a factor glued to its x, no aircraft named
+  rule { "speed", "dtmult", near = { 2, "up" }, when = function(g, i)
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
+      if q.kind == "mult" then return not g:has_ref(1, #g.t + 1, "aircraft") end
+    end
+    return false
+  end }
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
     return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
@@ -391,6 +406,10 @@ return function(intent, rule, words)
   end }
   rule { "real", false, prev = { 1, "than" } }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }
+  -- "slow the clock to real time": the rate the clock is set to, no start of it
+  rule { "real", false, prev = { 1, "to" }, next = "time", when = function(g, i)
+    return g:word_in(math.max(1, i - 6), i, "slow slower faster speed multiplier rate")
+  end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }

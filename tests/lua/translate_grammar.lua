@@ -356,8 +356,9 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   -- a level condition said with "it passes / reaches / leaves"
   check_eq(tr("please descend AFR55 to FL150 and once it reaches FL250 slow it to 260 knots", w),
     "ALT AFR55 FL150 ; ATALT AFR55 FL250 SPD AFR55 260")
-  -- with no instruction word before it, the level said first must not wait for the condition: asked
-  check(asks("please take AFR55 down to FL150 and once it reaches FL250 slow it to 260 knots", w), "no ATALT prefix")
+  -- "down to" straight after the callsign is the instruction word; the level said first never waits
+  check_eq(tr("please take AFR55 down to FL150 and once it reaches FL250 slow it to 260 knots", w),
+    "ALT AFR55 FL150 ; ATALT AFR55 FL250 SPD AFR55 260")
   check_eq(tr("AFR55 descend FL100, when it leaves FL200 turn right heading 220", w),
     "ALT AFR55 FL100 ; ATALT AFR55 FL200 HDG AFR55 220 RIGHT")
   check_eq(tr("hold the sim, then let me look at the route of AFR55", ww), "HOLD ; LISTRTE AFR55")

@@ -44,7 +44,9 @@ check_eq(said(tr("KLM1234 climb FL320 to avoid a conflict with KLM77")), "ALT KL
 -- a duration said but not understood asks; a time no command carries is a leftover
 check_eq(said(tr("please fast forward the sim")), "FF")
 check_eq(said(tr("fast forward a little while")), "ASK For how long should the simulation fast-forward? Please give a time.")
-check_eq(said(tr("after 10 minutes remove KLM77")), "ASK I have DEL KLM77. What does '10 minutes' mean?")
+check_eq(said(tr("after 10 minutes remove KLM77")), "DELAY 600 DEL KLM77")
+check_eq(said(tr("KLM1234 climb FL300 and in 2 minutes KLM77 descend FL100")),
+  "ASK I have ALT KLM1234 FL300 ; ALT KLM77 FL100. What does '2 minutes' mean?")
 check_eq(said(tr("dtmult 6 and show trails")), "DTMULT 6 ; TRAIL ON")
 -- a second thing said in one breath is made too, or asked about, never dropped
 check_eq(said(tr("define waypoint P1 at 51.0 3.0 and P2 at 51.5 3.5")), "DEFWPT P1 51 3 ; DEFWPT P2 51.5 3.5")
