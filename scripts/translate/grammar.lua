@@ -539,6 +539,10 @@ function G:condition()
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), comma + 1 end
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), comma + 1 end
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), comma + 1 end
+    -- "when BAW123 is 20 miles from LEKKO, ...": ATDIST [NM]
+    local r = q.kind == "dist" and self:word(q.e, "from of to before")
+      and self:refs_in(self:skip_fillers(q.e + 1), self:skip_fillers(q.e + 1) + 1, "waypoint")[1]
+    if r then return "ATDIST " .. self.subject .. " " .. r.name .. " " .. f.num(q.value), comma + 1 end
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, comma + 1

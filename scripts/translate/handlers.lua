@@ -490,7 +490,8 @@ end
 -- question naming the ones it may have meant, else nil (and the aircraft
 -- meant, once the speaker confirmed it).
 function m:unknown_callsign(id)
-  if #self.fleet == 0 or self:state(id) then return nil end
+  -- (one this request creates is known: "create BEE12K ... and give it destination EHAM")
+  if #self.fleet == 0 or self:state(id) or (self.created or {})[id:upper()] then return nil end
   local near = self:near_callsigns(id)
   if #near == 1 and (self.world.confirmed or {})[near[1]] then return nil, near[1] end
   if #near == 1 then

@@ -187,6 +187,8 @@ return function(H, f, compass)
     if mach then cmd = cmd .. " " .. f.mach(mach) end
     self:emit(cmd)
     self.subject = id
+    self.created = self.created or {}
+    self.created[id] = true
   end
 
   -- A position said as a distance and a compass point from an aircraft ("10 nm north", "20 miles
@@ -487,6 +489,7 @@ return function(H, f, compass)
     local added
     for c = #self.out, 1, -1 do
       added = added or self.out[c]:match("^ADDWPT " .. id:gsub("%p", "%%%0") .. " ([^%s,]+)$")
+        or self.out[c]:match("^DEST " .. id:gsub("%p", "%%%0") .. " (%a+)$")  -- ("dest EHAM and direct to it")
     end
     local wp = added and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
         and added or self:waypoint(s.trig, s.e, id)
@@ -799,11 +802,26 @@ return function(H, f, compass)
       self:emit(cmd .. " " .. id .. " " .. self:airport_meant(w[#w].name, self:state(id)))
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
-    elseif self:word_in(s.b, s.e, "what what's whats which where") and #self:quantities(s.b, s.e) == 0 then
+    elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig))
+        and #self:quantities(s.b, s.e) == 0 then
       self:emit(cmd .. " " .. id)  -- "what's the easyJet's destination?": shown
     else
       self:need("Which airport should be the " .. what .. " of " .. id .. "? Please give its ICAO code.")
     end
+  end
+  -- True when the request is the word at i and an aircraft, asked ("origin of KL204?", "SAS930
+  -- destination?"): every other word is the callsign's, a filler or "of".
+  function m:noun_asked(i)
+    if self.t[#self.t].text ~= "?" then return false end
+    local inside = {}
+    for _, r in ipairs(self:refs_in(1, #self.t + 1, "aircraft")) do
+      for k = r.b, r.e - 1 do inside[k] = true end
+    end
+    for k = 1, #self.t do
+      local t = self.t[k]
+      if k ~= i and not inside[k] and t.kind ~= "punct" and not t.filler and not self:word(k, "of its") then return false end
+    end
+    return true
   end
   function m:dest(s) dest_orig(self, s, "DEST", "destination") end
   function m:orig(s) dest_orig(self, s, "ORIG", "origin") end

@@ -102,6 +102,18 @@ return function(H, f, wrap, compass)
       for _, id in ipairs(ids) do self:emit("ALT " .. id .. " " .. f.int((now.alt_ft or 0) * 2)) end
       return
     end
+    -- "put BAW123 at the same level as DLH4AX", "climb to the same altitude as AC01": the other's level
+    local refs = self:refs_in(s.b, s.e, "aircraft")
+    if not target and #refs >= 2 and self:word_in(s.b, s.e, "same") and self:word_in(s.b, s.e, "as") then
+      local src = self:state(refs[#refs].name)
+      if not src then return self:need("What is the altitude of " .. refs[#refs].name .. "?") end
+      local ft, cur = src.alt_ft or 0, (self:state(refs[1].name) or {}).alt_ft or 0
+      if (dir > 0 and ft < cur - 50) or (dir < 0 and ft > cur + 50) then
+        return self:need(string.format("%s is at %s ft, %s at %s ft: %s %s? Please confirm the altitude.", refs[1].name,
+          f.int(cur), refs[#refs].name, f.int(ft), verb, refs[1].name))
+      end
+      return self:emit("ALT " .. refs[1].name .. " " .. (ft >= 10000 and f.alt(ft, true) or f.int(ft)))
+    end
     if not target and rate then return self:vspeed(s) end
     -- "maintain present altitude": the current level, read from the traffic
     if not target and now and self:word_in(s.b, s.e, "present current")

@@ -80,6 +80,8 @@ return function(intent, rule, words)
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
+  -- "drop CHARL from united 9's route": a waypoint off the route
+  rule { "drop", "delwpt", near = { 8, "@route_nouns" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
@@ -105,6 +107,12 @@ return function(intent, rule, words)
   rule { "lower raise", "spd", near = { 4, "speed" } }
   rule { "lower raise", "alt" }
   rule { "maintain maintained", "maintain" }
+  -- "put BAW123 at the same level as DLH4AX"; "keep it at FL290 and 270 kts"
+  rule { "level altitude", "alt", prev = { 1, "same" }, next = "as" }
+  rule { "keep", "maintain", next = "it him her them", when = function(g, i)
+    return g:word(i + 2, "at") and g.t[i + 3] ~= nil and (g.t[i + 3].kind == "number" or g:word(i + 3, "fl flight"))
+  end }
+
 
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
@@ -290,6 +298,13 @@ return function(intent, rule, words)
     end
     local t, named = g.t[to + 1], g.world.airports_named
     return named ~= nil and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4 and #named(t.text) > 0
+  end }
+  -- "create KL207 ... and send it to ARTIP": a waypoint (no airport) for the aircraft just created
+  rule { "send", "addwpt", next = "it", when = function(g, i)
+    local created = false
+    for k = 1, i - 1 do created = created or g:intent_at(k) == "create" end
+    local r = created and g:word(i + 2, "to") and g:refs_in(i + 3, i + 4, "waypoint")[1]
+    return r and #r.name == 5  -- (a five-letter fix; "send it to JFK" names a destination)
   end }
   -- "fly to TEST1": a waypoint the simulation knows is flown to directly; other places are destinations
   rule { "fly", "direct", next = "to", when = function(g, i)
