@@ -616,8 +616,8 @@ end
 -- "in 2 min turn KL204 left heading 180", "pause it at 30 minutes", "when the clock hits 45 minutes
 -- pause the sim": the instruction waits for a time, "DELAY s" after "in"/"after" (from now) or
 -- "SCHEDULE hh:mm:ss" after "at" or the clock reaching it (simulation time); nil when no time is said
--- or the instruction is the clock's own (FF, DT, DTLOOK, DTMULT take their time as a value).
-local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true }
+-- or the instruction takes its time as a value (FF, DT, DTLOOK, DTMULT; CRECONFS's time to conflict).
+local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
 function m:at_time(s)
   if OWN_TIME[s.intent] then return nil end
   for _, q in ipairs(self:quantities(s.b, s.e)) do

@@ -191,6 +191,50 @@ return function(H, f, compass)
     self.created[id] = true
   end
 
+  -- CRECONFS acid,type,targetid,dpsi,cpa,tlosh,[dh,tlosv]: an intruder of a new callsign and a type,
+  -- set up against the aircraft flying: its track off the target's ("90 deg off its track", "crossing
+  -- from 60 degrees", "head-on": 180), the distance at closest approach ("cpa 0", "passing 1 mile",
+  -- "zero miss distance") and the time to loss of separation ("los in 200 s"); "1000 ft above it
+  -- with vertical LoS at 180 s" adds dh and tlosv. Each is asked for when not said.
+  function m:conflict_intruder(s)
+    local id, target
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if r.exists then target = target or r.name else id = id or r.name:upper() end
+    end
+    local named = self:find_word(s.b, s.e, "@named")
+    if not id and named + 1 < s.e and self.t[named + 1].kind == "word" then id = self.t[named + 1].raw:upper() end
+    local actype = (self:refs_in(s.b, s.e, "type")[1] or {}).name
+    if not id or not actype then return self:need("What callsign and aircraft type should the intruder have?") end
+    if not target then return self:need("Which aircraft should " .. id .. " conflict with?") end
+    local dpsi, cpa, tlosh, dh, tlosv
+    for k = s.b, s.e - 1 do
+      if self:word(k, "head-on") or (self:word(k, "head") and self:word(k + 1, "on")) then dpsi = 180 end
+    end
+    local vertical = self:find_word(s.b, s.e, "vertical")
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
+      if q.kind == "angle" and not dpsi then
+        dpsi = self:take(q).value
+      elseif (q.kind == "dist" or q.kind == "plain") and not cpa and near("cpa miss passing") then
+        cpa = self:take(q).value
+      elseif q.kind == "time" and q.b > vertical and dh and not tlosv then
+        tlosv = self:take(q).value
+      elseif q.kind == "time" and not tlosh and near("los") then
+        tlosh = self:take(q).value
+      elseif q.kind == "alt" and not dh and self:word(q.e, "@above @below") then
+        dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
+      end
+    end
+    if not dpsi then return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?") end
+    if not cpa then return self:need("How close, in nautical miles, should " .. id .. " pass " .. target .. "?") end
+    if not tlosh then return self:need("In how many seconds should " .. id .. " lose separation with " .. target .. "?") end
+    local cmd = string.format("CRECONFS %s %s %s %s %s %s", id, actype, target, f.num(dpsi), f.num(cpa), f.num(tlosh))
+    if dh then cmd = cmd .. " " .. f.num(dh) .. (tlosv and " " .. f.num(tlosv) or "") end
+    self:emit(cmd)
+    self.created = self.created or {}
+    self.created[id] = true
+  end
+
   -- A position said as a distance and a compass point from an aircraft ("10 nm north", "20 miles
   -- south of where it is now", "15 nm south of RYR81JC", "20 miles east of it"): lat, lon [deg] on a
   -- flat earth around the aircraft (d NM north is d/60 degrees of latitude), with the quantity taken;

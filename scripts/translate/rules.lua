@@ -61,6 +61,8 @@ return function(intent, rule, words)
   intent "rfac" { cmds = { "RFACH", "RFACV" }, args = { "factor" }, handler = "reso_factor" }
   intent "rmethv" { cmd = "RMETHV", args = { "ON", "OFF" }, handler = "reso_vertical" }
   intent "resnav" { cmd = "RESNAV", args = { "PASTCPA" }, handler = "resume_nav" }
+  intent "creconfs" { cmd = "CRECONFS", args = { "acid", "type", "targetid", "dpsi", "cpa", "tlosh", "dh", "tlosv" },
+                      handler = "conflict_intruder", absorbs = true, single = true }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
   intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic" }
@@ -226,6 +228,11 @@ return function(intent, rule, words)
     local t = g.t[g:word(i - 1, "more extra new") and i - 2 or i - 1]  -- ("3 more random ones")
     return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
   end }
+  -- "spawn a conflict for KL204: INT1, A320, 90 deg off its track, cpa 0, los in 200 s", "make an intruder
+  -- called TEST1 ... head-on, passing 1 mile, LoS after 4 minutes": an intruder set up to conflict
+  rule { "create spawn generate creat cre make new add put", "creconfs", when = function(g, i)
+    return g:followed_by(i, 4, "conflict intruder") and g:word_in(i + 1, #g.t + 1, "los cpa miss head-on head")
+  end }
   rule { "create spawn generate creat cre", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
@@ -338,6 +345,7 @@ return function(intent, rule, words)
   -- "where's the MERIT intersection?"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
+  rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
   rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
   rule { "details status info information state pos", "pos" }
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
