@@ -302,6 +302,13 @@ local function written_forms(text)
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
   text = text:gsub("(%d)\xC2\xB0(%s)", "%1 degrees%2"):gsub("(%d)\xC2\xB0$", "%1 degrees")
+  -- a change typed with its sign and unit ("+20 kts", "-1000 ft"): that many faster/slower, up/down
+  text = text:gsub("%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]", function(sign, n, unit)
+    local u = unit:lower()
+    if u == "kts" or u == "kt" or u == "knots" then return n .. " " .. unit .. (sign == "+" and " faster" or " slower") end
+    if u == "ft" or u == "feet" then return (sign == "+" and "up " or "down ") .. n .. " " .. unit end
+    return nil
+  end)
   return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
     if b == "000" or text:sub(at):match("^%s*[Ff][Ee]?[Ee]?[Tt]%f[%A]") or text:sub(at):match("^%s*[Ff][Oo][Oo][Tt]") then
       return a .. b

@@ -322,6 +322,8 @@ local function has_english_word(line, name)
     n = n + 1
     local lw = w:lower()
     local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
+    -- ("WZZ1234 speed +20": a change said with its sign, which SPD / ALT / HDG would read as a value)
+    if n > 1 and lw:match("^%+%d") and (name == "SPD" or name == "ALT" or name == "HDG") then return true end
     if name ~= "ECHO" and (GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
       return true
     end
