@@ -101,7 +101,9 @@ return function(H, f, compass)
       end
     end
     -- "the same heading, level and speed as KL204", "same FL as WZZ1234"
-    if model and self:word_in(s.b, s.e, "altitude level fl") and not alt then alt, fl = model.alt_ft, true end
+    if model and self:word_in(s.b, s.e, "altitude level fl") and not alt then
+      alt, fl = math.floor((model.alt_ft or 0) + 0.5), true  -- (the simulation's feet, to the foot)
+    end
     if model and self:word_in(s.b, s.e, "heading hdg") and not hdg then hdg = model.hdg_deg end
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
       if model.sel_mach then mach = model.sel_mach else spd = model.cas_kt end

@@ -107,7 +107,7 @@ return function(H, f, wrap, compass)
     if not target and #refs >= 2 and self:word_in(s.b, s.e, "same") and self:word_in(s.b, s.e, "as") then
       local src = self:state(refs[#refs].name)
       if not src then return self:need("What is the altitude of " .. refs[#refs].name .. "?") end
-      local ft, cur = src.alt_ft or 0, (self:state(refs[1].name) or {}).alt_ft or 0
+      local ft, cur = math.floor((src.alt_ft or 0) + 0.5), (self:state(refs[1].name) or {}).alt_ft or 0
       if (dir > 0 and ft < cur - 50) or (dir < 0 and ft > cur + 50) then
         return self:need(string.format("%s is at %s ft, %s at %s ft: %s %s? Please confirm the altitude.", refs[1].name,
           f.int(cur), refs[#refs].name, f.int(ft), verb, refs[1].name))
