@@ -449,25 +449,35 @@ return function(H, f, compass)
   -- lexicon.navaid_range_nm of `near` {lat, lon} [deg] when given).
   -- A word said after a place preposition ("at Barajas") is tried before
   -- any other ("a new Iberia aircraft": an airline, though an airport bears its name).
+  -- Near: within lexicon.navaid_range_nm of the aircraft `near`; anywhere, a small airfield is no
+  -- airport a name alone means ("Amsterdam" is no South African strip). A city said in capitals is
+  -- its large airport when no airport bears the name ("Frankfurt" -> EDDF "Frankfurt Main").
   function m:airport_by_name(b, e, near)
-    local named = self.world.airports_named
+    local named, city, class = self.world.airports_named, self.world.airports_of_city, self.world.airport_class
     if not named then return nil end
-    if near then
-      if not near.lat then return nil end
-      local all = named
-      named = function(phrase) return all(phrase, near.lat, near.lon, L.navaid_range_nm) end
+    local function within(list)
+      if near then return function(phrase) return list(phrase, near.lat, near.lon, L.navaid_range_nm) end end
+      return function(phrase)
+        local out = {}
+        for _, id in ipairs(list(phrase)) do
+          if not class or class(id) ~= "SMALL" then out[#out + 1] = id end
+        end
+        return out
+      end
     end
+    if near and not near.lat then return nil end
     for _, placed in ipairs({ true, false }) do
-      local id = self:airport_named_in(b, e, named, placed)
+      local id = self:airport_named_in(b, e, within(named), placed)
       if id then return id end
     end
-    return nil
+    return city and self:airport_named_in(b, e, within(city), false, true) or nil
   end
 
   -- A phrase with a capitalised word beside it ("Point Reyes", "Amsterdam Schiphol") is part of a
   -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
   -- Capital airport": the word before is its city).
-  function m:airport_named_in(b, e, named, placed)
+  -- (proper: only words typed with a capital, "Frankfurt")
+  function m:airport_named_in(b, e, named, placed, proper_only)
     local function proper(k)
       local t = self.t[k]
       return k > 1 and t ~= nil and t.kind == "word" and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
@@ -475,7 +485,8 @@ return function(H, f, compass)
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
-          and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words")) then
+          and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words"))
+          and (not proper_only or t.raw:match("^%u%l") ~= nil) then
         local nx = self.t[i + 1]
         local phrases = { { t.text, i + 1 } }
         if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end

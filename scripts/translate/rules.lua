@@ -296,6 +296,9 @@ return function(intent, rule, words)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
   end }
   rule { "destination dest", "dest" }
+  -- "KL204 is going to Frankfurt", "it's bound for Brussels": where the aircraft flies, said as a fact
+  rule { "going", "dest", next = "to", prev = { 1, "is it's are" }, when = function(g, i) return not g:intent_at(i + 2) end }
+  rule { "bound", "dest", next = "for", prev = { 1, "is it's are" } }
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata
   rule { "send", "dest", when = function(g, i)

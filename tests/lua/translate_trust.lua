@@ -577,6 +577,12 @@ do
   check_eq(bt("KL204 keep it at FL250 and 260 kts"), "ALT KL204 FL250 ; SPD KL204 260")
   check_eq(bt("destination of BAW123?"), "DEST BAW123")
   check_eq(bt("bin the wizz"), "DEL WZZ1234")
+  -- a city said in capitals is its large airport; a small field far away is none a name means
+  if #box:airports_named("schiphol") == 1 then
+    check_eq(bt("KL204 is going to Frankfurt"), "DEST KL204 EDDF")
+    check_eq(bt("change EZY45's destination to Brussels"), "DEST EZY45 EBBR")
+    check(bt("EZY45 origin Amsterdam"):find("^ASK") ~= nil, bt("EZY45 origin Amsterdam"))
+  end
   -- a time that no command carries beside a level is asked about (30000 is no heading 120)
   check(bt("KL204 climb FL300 and in 2 minutes EZY45 climb FL280"):find("'2 minutes'", 1, true) ~= nil,
     "a time in the middle of a request is asked about")
