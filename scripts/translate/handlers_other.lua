@@ -1046,6 +1046,24 @@ return function(H, f, compass)
     if q then return self:emit("SEED " .. f.int(q.value)) end
     self:need("Which random seed should I set?")
   end
+  -- WIND lat lon [alt] dir spd: where the wind blows from ("from 270", or the heading said) and its speed
+  function m:wind(s)
+    local qs = self:quantities(s.b, s.e)
+    local lat, lon = position(qs, s.trig, self)
+    if not lat or not lon then return self:need("Where should the wind be? Please give a latitude and longitude.") end
+    local alt, dir, spd
+    for _, q in ipairs(qs) do
+      if q.kind == "alt" and not alt then alt = self:take(q) end
+      if q.kind == "speed" and not spd then spd = self:take(q) end
+      if (q.kind == "heading" or q.kind == "angle" or (q.kind == "plain" and self:word(q.b - 1, "from")))
+          and not dir and q.value >= 0 and q.value <= 360 then
+        dir = self:take(q)
+      end
+    end
+    if not dir or not spd then return self:need("From which direction, and how strong in knots, should the wind blow?") end
+    self:emit(string.format("WIND %s %s%s %s %s", f.num(lat), f.num(lon), alt and " " .. f.alt(alt.value, alt.fl) or "",
+      f.num(dir.value), f.num(spd.value)))
+  end
   function m:scenario(s)
     for i = s.b, s.e - 1 do
       local t = self.t[i]
@@ -1056,6 +1074,13 @@ return function(H, f, compass)
   function m:echo(s)
     for i = s.b, s.e - 1 do
       if self.t[i].kind == "quoted" then return self:emit("ECHO " .. self.t[i].raw) end
+    end
+    -- the words after a colon, as typed
+    for i = s.trig, s.e - 1 do
+      if self.t[i].kind == "punct" and self.t[i].text == ":" and i + 1 < s.e then
+        self:mark_used(i + 1, s.e)
+        return self:emit("ECHO " .. self:raw(i + 1, s.e))
+      end
     end
     self:need("What text should I print?")
   end

@@ -55,6 +55,8 @@ return function(intent, rule, words)
   intent "seed" { cmd = "SEED", args = { "value" }, handler = "seed" }
   intent "ic" { cmd = "IC", args = { "filename" }, handler = "scenario" }
   intent "echo" { cmd = "ECHO", args = { "text" }, handler = "echo" }
+  intent "wind" { cmd = "WIND", args = { "lat", "lon", "alt", "dir", "spd" }, handler = "wind", absorbs = true,
+                  single = true }
   intent "asas" { cmd = "ASAS", args = { "ON", "OFF" }, handler = "switch" }
   intent "reso" { cmd = "RESO", args = { "MVP", "OFF" }, handler = "resolution" }
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
@@ -460,6 +462,15 @@ return function(intent, rule, words)
   end }
   rule { "scenario load open ic", "ic" }
   rule { "print", "echo" }
+  -- "put a note in the log: conflict 3 injected", "log: run 2 started": the text after the colon
+  rule { "note log", "echo", when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 4) do
+      if g.t[k].kind == "punct" and g.t[k].text == ":" then return k < #g.t end
+    end
+    return false
+  end }
+  -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
+  rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
 
   -- conflict detection and resolution

@@ -55,17 +55,17 @@ end
 -- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
 -- kept here after their first-sight figures were recorded, fixed by class.
 floors("tests/data/translate_round1.tsv", 0.98, 0.01, true)
-floors("tests/data/translate_round2.tsv", 0.837, 0.016, true)
+floors("tests/data/translate_round2.tsv", 0.84, 0.016, true)
 floors("tests/data/translate_round3.tsv", 0.96, 0.0073, true)
 floors("tests/data/translate_round4.tsv", 0.94, 0.0, true)
 floors("tests/data/translate_round5.tsv", 0.962, 0.0, true)
 floors("tests/data/translate_round6.tsv", 0.99, 0.005, true)
 floors("tests/data/translate_round7.tsv", 0.96, 0.0036, true)
-floors("tests/data/translate_round8.tsv", 0.939, 0.0, true)
+floors("tests/data/translate_round8.tsv", 0.943, 0.0, true)
 floors("tests/data/translate_round9.tsv", 0.95, 0.012, true)
 floors("tests/data/translate_round10.tsv", 0.94, 0.004, true)
 floors("tests/data/translate_round11.tsv", 0.953, 0.004, true)
-floors("tests/data/translate_round12.tsv", 0.95, 0.005, true)
+floors("tests/data/translate_round12.tsv", 0.957, 0.0039, true)
 -- R13-R16: measured at first sight (docs/translation_ledger.md), then fixed by class
 floors("tests/data/translate_round13.tsv", 0.951, 0.0, true)
 floors("tests/data/translate_round14.tsv", 0.896, 0.0, true)

@@ -577,6 +577,10 @@ do
   check_eq(bt("KL204 keep it at FL250 and 260 kts"), "ALT KL204 FL250 ; SPD KL204 260")
   check_eq(bt("destination of BAW123?"), "DEST BAW123")
   check_eq(bt("bin the wizz"), "DEL WZZ1234")
+  -- a note for the log, a wind where the verb places it
+  check_eq(bt("write a note in the log: trial 4 begins"), "ECHO trial 4 begins")
+  check_eq(bt("set a wind at 52.2 4.2, FL200, from 300 at 35 knots"), "WIND 52.2 4.2 FL200 300 35")
+  check(bt("add wind at 52.2 4.2"):find("^ASK From which direction") ~= nil, "a wind with no direction asked")
   -- a city said in capitals is its large airport; a small field far away is none a name means
   if #box:airports_named("schiphol") == 1 then
     check_eq(bt("KL204 is going to Frankfurt"), "DEST KL204 EDDF")
