@@ -305,7 +305,9 @@ local function written_forms(text)
   -- a change typed with its sign and unit ("+20 kts", "-1000 ft"): that many faster/slower, up/down
   text = text:gsub("%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]", function(sign, n, unit)
     local u = unit:lower()
-    if u == "kts" or u == "kt" or u == "knots" then return n .. " " .. unit .. (sign == "+" and " faster" or " slower") end
+    if u == "kts" or u == "kt" or u == "knots" then
+      return n .. " " .. unit .. (sign == "+" and " faster" or " slower")
+    end
     if u == "ft" or u == "feet" then return (sign == "+" and "up " or "down ") .. n .. " " .. unit end
     return nil
   end)
@@ -792,7 +794,8 @@ local function value_carried(q, nums)
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
     -- (a heading, 360 said for 0: against a heading's number only, never a level's 30000)
-    if q.kind ~= "alt" and v >= 0 and v <= 360 and n >= 0 and n <= 360 and math.abs((v - n + 180) % 360 - 180) <= 0.5 then
+    if q.kind ~= "alt" and v >= 0 and v <= 360 and n >= 0 and n <= 360
+        and math.abs((v - n + 180) % 360 - 180) <= 0.5 then
       return true
     end
   end

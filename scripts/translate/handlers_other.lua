@@ -227,9 +227,13 @@ return function(H, f, compass)
         dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
       end
     end
-    if not dpsi then return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?") end
+    if not dpsi then
+      return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?")
+    end
     if not cpa then return self:need("How close, in nautical miles, should " .. id .. " pass " .. target .. "?") end
-    if not tlosh then return self:need("In how many seconds should " .. id .. " lose separation with " .. target .. "?") end
+    if not tlosh then
+      return self:need("In how many seconds should " .. id .. " lose separation with " .. target .. "?")
+    end
     local cmd = string.format("CRECONFS %s %s %s %s %s %s", id, actype, target, f.num(dpsi), f.num(cpa), f.num(tlosh))
     if dh then cmd = cmd .. " " .. f.num(dh) .. (tlosv and " " .. f.num(tlosv) or "") end
     self:emit(cmd)
@@ -876,7 +880,9 @@ return function(H, f, compass)
     end
     for k = 1, #self.t do
       local t = self.t[k]
-      if k ~= i and not inside[k] and t.kind ~= "punct" and not t.filler and not self:word(k, "of its") then return false end
+      if k ~= i and not inside[k] and t.kind ~= "punct" and not t.filler and not self:word(k, "of its") then
+        return false
+      end
     end
     return true
   end
@@ -974,7 +980,36 @@ return function(H, f, compass)
     return nil
   end
 
+  -- "two and a half minutes", "an hour and a half", "1 and a half hours": [s] and the tokens' end, or nil
+  local UNIT_S = { second = 1, seconds = 1, sec = 1, secs = 1, minute = 60, minutes = 60, min = 60, mins = 60,
+                   hour = 3600, hours = 3600 }
+  local function and_a_half(self, b, e)
+    local function count(k)
+      if self:word(k, "a an") then return 1 end
+      local q = self:quantities(k, k + 1)[1]
+      return q and q.e == k + 1 and q.kind == "plain" and q.value or nil
+    end
+    for k = b, e - 1 do
+      local n = count(k)
+      if n and self:word(k + 1, "and") and self:word(k + 2, "a") and self:word(k + 3, "half")
+          and UNIT_S[(self.t[k + 4] or {}).text or ""] then
+        return (n + 0.5) * UNIT_S[self.t[k + 4].text], k + 5
+      end
+      if n and UNIT_S[(self.t[k + 1] or {}).text or ""] and self:word(k + 2, "and") and self:word(k + 3, "a")
+          and self:word(k + 4, "half") then
+        return (n + 0.5) * UNIT_S[self.t[k + 1].text], k + 5
+      end
+    end
+    return nil
+  end
+
   function m:fast_forward(s)
+    local half, half_e = and_a_half(self, s.trig + 1, s.e)
+    if half then
+      for _, q in ipairs(self:quantities(s.trig + 1, half_e)) do self:take(q) end
+      self:mark_used(s.trig + 1, half_e)
+      return self:emit("FF " .. f.num(half))
+    end
     local q = first(self, s, { time = true, mult = true })
     if not q then
       -- "half an hour", "a quarter of an hour": a fraction of a unit said in words
@@ -1060,7 +1095,9 @@ return function(H, f, compass)
         dir = self:take(q)
       end
     end
-    if not dir or not spd then return self:need("From which direction, and how strong in knots, should the wind blow?") end
+    if not dir or not spd then
+      return self:need("From which direction, and how strong in knots, should the wind blow?")
+    end
     self:emit(string.format("WIND %s %s%s %s %s", f.num(lat), f.num(lon), alt and " " .. f.alt(alt.value, alt.fl) or "",
       f.num(dir.value), f.num(spd.value)))
   end
@@ -1129,7 +1166,9 @@ return function(H, f, compass)
   end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical")
-    if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then return self:emit(vertical and "ZONEDH" or "ZONER") end
+    if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then
+      return self:emit(vertical and "ZONEDH" or "ZONER")
+    end
     local before = #self.out
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")

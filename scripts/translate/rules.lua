@@ -85,7 +85,8 @@ return function(intent, rule, words)
   rule { "climb descend desc clb", false, next = "rate" }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "drop CHARL from united 9's route": a waypoint off the route
-  rule { "drop", "delwpt", near = { 8, "@route_nouns" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+  rule { "drop", "delwpt", near = { 8, "@route_nouns" },
+         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
@@ -299,7 +300,8 @@ return function(intent, rule, words)
   end }
   rule { "destination dest", "dest" }
   -- "KL204 is going to Frankfurt", "it's bound for Brussels": where the aircraft flies, said as a fact
-  rule { "going", "dest", next = "to", prev = { 1, "is it's are" }, when = function(g, i) return not g:intent_at(i + 2) end }
+  rule { "going", "dest", next = "to", prev = { 1, "is it's are" },
+         when = function(g, i) return not g:intent_at(i + 2) end }
   rule { "bound", "dest", next = "for", prev = { 1, "is it's are" } }
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata

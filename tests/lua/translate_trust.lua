@@ -553,6 +553,8 @@ do
   check_eq(bt("after 90 seconds KL204 climb FL300 and EZY45 descend FL200"),
     "DELAY 90 ALT KL204 FL300 ; DELAY 90 ALT EZY45 FL200")
   check_eq(bt("make it 3x"), "DTMULT 3")
+  check_eq(bt("skip ahead three and a half minutes"), "FF 210")
+  check_eq(bt("ff an hour and a half"), "FF 5400")
   check_eq(bt("fast forward 2 min then slow the clock to real time"), "FF 120 ; DTMULT 1")
   -- positions from an aircraft: a distance and a compass point
   check_eq(bt("move KL204 30 nm north"), "MOVE KL204 52.5 4")
