@@ -624,7 +624,7 @@ function m:at_time(s)
     local w = q.b - 1
     while w > 0 and self.t[w].filler do w = w - 1 end
     if q.kind == "time" and not self.taken[q.b] then
-      local clock = self:word(w, "hits hit reaches reach shows") and self:word_in(math.max(1, w - 3), w, "@sim")
+      local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
       if not self:word(w, "in after at") and not clock then return nil end
       -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
       -- 2 minutes EZY45 descend": left uncarried, so asked about)

@@ -210,18 +210,18 @@ return function(H, f, compass)
     if not target then return self:need("Which aircraft should " .. id .. " conflict with?") end
     local dpsi, cpa, tlosh, dh, tlosv
     for k = s.b, s.e - 1 do
-      if self:word(k, "head-on") or (self:word(k, "head") and self:word(k + 1, "on")) then dpsi = 180 end
+      if self:word(k, "@head_on") and (self.t[k].text ~= "head" or self:word(k + 1, "on")) then dpsi = 180 end
     end
     local vertical = self:find_word(s.b, s.e, "vertical")
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
       if q.kind == "angle" and not dpsi then
         dpsi = self:take(q).value
-      elseif (q.kind == "dist" or q.kind == "plain") and not cpa and near("cpa miss passing") then
+      elseif (q.kind == "dist" or q.kind == "plain") and not cpa and near("@closest_approach") then
         cpa = self:take(q).value
       elseif q.kind == "time" and q.b > vertical and dh and not tlosv then
         tlosv = self:take(q).value
-      elseif q.kind == "time" and not tlosh and near("los") then
+      elseif q.kind == "time" and not tlosh and near("@loss_of_separation") then
         tlosh = self:take(q).value
       elseif q.kind == "alt" and not dh and self:word(q.e, "@above @below") then
         dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value

@@ -216,6 +216,16 @@ return {
                   percent = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
   speed_units = { "knots", "knot", "kts", "kt" },
+  -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
+  -- or after its closest approach, its loss of separation and a head-on course
+  intruder = { "intruder", "conflict" },
+  closest_approach = { "cpa", "miss", "passing" },
+  loss_of_separation = { "los" },
+  head_on = { "head-on", "head" },
+  -- the clock reaching a time ("when the clock hits 45 minutes")
+  clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
+  -- more of the same ("3 more random ones")
+  more = { "more", "extra", "new" },
   -- the colours TRAIL acid accepts
   trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words

@@ -228,13 +228,14 @@ return function(intent, rule, words)
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
   rule { "random", "mcre", when = function(g, i)
-    local t = g.t[g:word(i - 1, "more extra new") and i - 2 or i - 1]  -- ("3 more random ones")
+    local t = g.t[g:word(i - 1, "@more") and i - 2 or i - 1]  -- ("3 more random ones")
     return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
   end }
   -- "spawn a conflict for KL204: INT1, A320, 90 deg off its track, cpa 0, los in 200 s", "make an intruder
   -- called TEST1 ... head-on, passing 1 mile, LoS after 4 minutes": an intruder set up to conflict
   rule { "create spawn generate creat cre make new add put", "creconfs", when = function(g, i)
-    return g:followed_by(i, 4, "conflict intruder") and g:word_in(i + 1, #g.t + 1, "los cpa miss head-on head")
+    return g:followed_by(i, 4, "@intruder")
+      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
   end }
   rule { "create spawn generate creat cre", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
