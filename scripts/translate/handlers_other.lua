@@ -237,6 +237,7 @@ return function(H, f, compass)
     local cmd = string.format("CRECONFS %s %s %s %s %s %s", id, actype, target, f.num(dpsi), f.num(cpa), f.num(tlosh))
     if dh then cmd = cmd .. " " .. f.num(dh) .. (tlosv and " " .. f.num(tlosv) or "") end
     self:emit(cmd)
+    self:mark_used(s.b, s.e)  -- the description read whole ("zero miss distance", "LoS after 4 minutes")
     self.created = self.created or {}
     self.created[id] = true
   end
