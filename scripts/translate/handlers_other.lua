@@ -1157,13 +1157,17 @@ return function(H, f, compass)
     if #self.out == before then self:need("What safety factor should conflict resolution apply?") end
   end
   -- RMETHV: resolutions with vertical speed (V/S) or horizontal only (OFF)
-  function m:reso_vertical()
+  -- (both read their request whole: "allow vertical manoeuvres in the MVP resolutions", "resume nav
+  -- once past cpa" say nothing else)
+  function m:reso_vertical(s)
     local off = self:word_in(1, #self.t + 1, "no not off without don't dont never only")
     self:emit(off and "RMETHV OFF" or "RMETHV V/S")
+    self:mark_used(s.b, s.e)
   end
-  function m:resume_nav()
+  function m:resume_nav(s)
     if self:asks_setting() then return self:emit("RESNAV") end
     self:emit("RESNAV PASTCPA")  -- the one way squawk resumes navigation after a resolution
+    self:mark_used(s.b, s.e)
   end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical")

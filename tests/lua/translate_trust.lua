@@ -527,7 +527,7 @@ do
   check(bt("KL204 speed +10"):find("^ASK") ~= nil, "a signed value typed as TrafScript is no speed of 10 kt")
   check(bt("KL204 to two eight zero"):find("^ASK Heading 280 or flight level 280") ~= nil, bt("KL204 to two eight zero"))
   -- an aircraft the verb instructs is no context; one the aircraft is sent to meet is
-  check_eq(bt("for the encounter, get EZY45 up to FL310 to meet KL204"), "ALT EZY45 FL310")
+  check_eq(bt("for the conflict, get EZY45 up to FL310 to meet KL204"), "ALT EZY45 FL310")
   -- route: a speed after "and" and a verb of its own; a speed with no level keeps ADDWPT's place
   check_eq(bt("route KL204 via TULIP and DAHLI and give it 260 knots"),
     "ADDWPT KL204 TULIP ; ADDWPT KL204 DAHLI ; SPD KL204 260")
