@@ -49,7 +49,7 @@ std::string name_key(std::string_view name) {
 bool valid_latlon(double lat, double lon) { return std::fabs(lat) <= 90.0 && std::fabs(lon) <= 180.0; }
 
 Status parse_airports(std::string_view data, const std::string& path, std::vector<NavPoint>& out,
-                      std::vector<std::string>& names) {
+                      std::vector<std::string>& names, std::vector<std::string>& classes) {
   size_t lineno = 0;
   for (auto raw : lines_of(data)) {
     ++lineno;
@@ -65,6 +65,7 @@ Status parse_airports(std::string_view data, const std::string& path, std::vecto
                                 ": expected 'code, name, lat, lon, ...' with lat/lon in degrees");
     out.push_back({id, "APT", *lat, *lon});
     names.push_back(text::upper(text::trim(f[1])));
+    classes.push_back(f.size() > 4 ? text::upper(text::trim(f[4])) : std::string());
   }
   return Status::ok();
 }
@@ -154,14 +155,15 @@ Result<std::shared_ptr<const NavDb>> NavDb::parse(std::string_view airports_dat,
 Result<std::shared_ptr<NavDb>> NavDb::build(std::string_view airports_dat, std::string_view nav_dat,
                                             std::string_view fix_dat, const std::string& where) {
   std::vector<NavPoint> airports, waypoints;
-  std::vector<std::string> names, navaid_names;
-  SQUAWK_RETURN_IF_ERROR(parse_airports(airports_dat, where + "/airports.dat", airports, names));
+  std::vector<std::string> names, classes, navaid_names;
+  SQUAWK_RETURN_IF_ERROR(parse_airports(airports_dat, where + "/airports.dat", airports, names, classes));
   parse_navaids(nav_dat, waypoints, navaid_names);
   parse_fixes(fix_dat, waypoints);
   if (airports.empty() && waypoints.empty())
     return Status::corruption("navdata folder '" + where + "' holds no airports, navaids or fixes");
   auto db = std::make_shared<NavDb>(std::move(airports), std::move(waypoints));
   db->airport_names_ = std::move(names);
+  db->airport_classes_ = std::move(classes);
   db->navaid_names_ = std::move(navaid_names);
   return db;
 }
@@ -192,6 +194,25 @@ std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const 
     if (fits) out.push_back(&airports_[i]);
   }
   return out;
+}
+
+std::vector<const NavPoint*> NavDb::airports_of_city(std::string_view city) const {
+  std::vector<const NavPoint*> out;
+  const std::string key = name_key(city);
+  if (key.empty()) return out;
+  for (size_t i = 0; i < airport_names_.size() && i < airport_classes_.size() && i < airports_.size(); ++i) {
+    const std::string n = name_key(airport_names_[i]);
+    if (airport_classes_[i] == "LARGE" && n.size() > key.size() + 1 && n.compare(0, key.size(), key) == 0 &&
+        n[key.size()] == ' ')
+      out.push_back(&airports_[i]);
+  }
+  return out;
+}
+
+std::string NavDb::airport_class(std::string_view id) const {
+  for (size_t i = 0; i < airports_.size() && i < airport_classes_.size(); ++i)
+    if (airports_[i].id == id) return airport_classes_[i];
+  return std::string();
 }
 
 std::vector<std::string> NavDb::navaids_named(std::string_view name, double ref_lat, double ref_lon,

@@ -8,6 +8,9 @@
 //   sim:airports_named(name [, lat, lon, within_nm]) -> { "EHAM", ... }  airports of the navdata
 //                           whose name is `name` or starts with its words, within within_nm of
 //                           lat, lon [deg] when given ({} without navdata)
+//   sim:airports_of_city(name [, lat, lon, within_nm]) -> { "EDDF", ... }  large airports whose
+//                           name starts with the words of `name` and goes on ("Frankfurt")
+//   sim:airport_class(id) -> "LARGE" | "MEDIUM" | "SMALL" | ""  airports.dat's class
 //   sim:navaids_named(name, lat, lon, within_nm) -> { "SFO", ... }  idents of the navaids
 //                           called `name` within within_nm of lat, lon [deg], nearest first
 //   sim:airports_coded(code, lat, lon) -> { "KJFK", ... }  airports whose ICAO code is one letter
@@ -145,7 +148,8 @@ int l_exec(lua_State* L) {
   return push_outcome(L, s->exec(arg_string(L, 2, "line")));
 }
 
-int l_airports_named(lua_State* L) {
+// airports_named (city false) or airports_of_city (city true): ids, near lat/lon when given
+int push_airports(lua_State* L, bool city) {
   command::Stack* s = self(L);
   const std::string name = arg_string(L, 2, "name");
   const bool near = !lua_isnoneornil(L, 3);
@@ -155,11 +159,21 @@ int l_airports_named(lua_State* L) {
   lua_newtable(L);
   if (!s->navdb()) return 1;
   int k = 0;
-  for (const command::NavPoint* a : s->navdb()->airports_named(name)) {
+  for (const command::NavPoint* a : city ? s->navdb()->airports_of_city(name) : s->navdb()->airports_named(name)) {
     if (near && geo::kwikdist_nm(lat, lon, a->lat, a->lon) > within) continue;
     lua_pushstring(L, a->id.c_str());
     lua_rawseti(L, -2, ++k);
   }
+  return 1;
+}
+
+int l_airports_named(lua_State* L) { return push_airports(L, false); }
+int l_airports_of_city(lua_State* L) { return push_airports(L, true); }
+
+int l_airport_class(lua_State* L) {
+  command::Stack* s = self(L);
+  const std::string id = text::upper(arg_string(L, 2, "id"));
+  lua_pushstring(L, s->navdb() ? s->navdb()->airport_class(id).c_str() : "");
   return 1;
 }
 
@@ -465,6 +479,8 @@ void bind_sim(lua_State* L) {
       {"exec", guarded<l_exec>},
       {"check", guarded<l_check>},
       {"airports_named", guarded<l_airports_named>},
+      {"airports_of_city", guarded<l_airports_of_city>},
+      {"airport_class", guarded<l_airport_class>},
       {"navaids_named", guarded<l_navaids_named>},
       {"airports_coded", guarded<l_airports_coded>},
       {"load", guarded<l_load>},

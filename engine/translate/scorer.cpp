@@ -1,5 +1,6 @@
 #include "translate/scorer.h"
 
+#include "command/formats.h"
 #include "command/registry.h"
 
 #include <algorithm>
@@ -11,7 +12,7 @@
 namespace squawk::translate {
 namespace {
 
-enum class Arg { kWord, kNum, kMagnitude, kVs, kAlt, kSpd, kHdg, kTurn, kLat, kLon, kRest };
+enum class Arg { kWord, kNum, kMagnitude, kVs, kAlt, kSpd, kHdg, kTurn, kLat, kLon, kTime, kRest };
 
 // Words and comma-separated arguments; an argument left out between commas
 // ("ADDWPT KL204 SPY,,,AFTERWP") keeps its place as an empty one. A comma
@@ -97,6 +98,10 @@ bool same_arg(const std::string& a, const std::string& b, Arg kind) {
     }
     case Arg::kVs:
       return num_eq(a, b, 1.0);
+    case Arg::kTime: {  // [s], as the simulator reads it: "1:30" (MM:SS) is 90
+      auto u = command::parse_time(a), v = command::parse_time(b);
+      return u.is_ok() && v.is_ok() && std::fabs(*u - *v) <= 0.5;
+    }
     case Arg::kLat:
     case Arg::kLon:
       return num_eq(a, b, 1e-3) || text::iequals(a, b);
@@ -126,6 +131,8 @@ std::vector<Arg> arg_kinds(const std::string& cmd, const std::vector<std::string
   if (cmd == "HDG") return {A::kWord, A::kHdg, A::kTurn};
   if (cmd == "AT" && args.size() >= 4)  // AT acid wpt ALT alt | SPD spd
     return {A::kWord, A::kWord, A::kWord, text::iequals(args[2], "SPD") ? A::kSpd : A::kAlt};
+  if (cmd == "FF") return {A::kTime};
+  if (cmd == "SCHEDULE" || cmd == "DELAY") return {A::kTime, A::kNum};
   if (cmd == "DEFWPT") return {A::kWord, A::kLat, A::kLon, A::kWord};
   if (cmd == "ADDWPT" || cmd == "DEST" || cmd == "ORIG") {
     if (args.size() >= 3 && text::to_double(args[1]) && text::to_double(args[2]))
@@ -199,6 +206,8 @@ namespace {
 // ALT with a vertical speed sets the selected altitude and |vspd|, as the two
 // commands do; Simulation::set_altitude, set_vs). "LNAV acid ON" right after
 // "DIRECT acid wpt" adds nothing (a direct-to switches LNAV on: route_op).
+// "AFTER acid wp ADDWPT new [alt spd]" is "ADDWPT acid new,alt,spd,wp" and
+// BEFORE its beforewp (commands_route.cpp: both insert the same waypoint).
 std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
   auto words = [](const std::string& c) {
     auto v = tokens(c);
@@ -206,6 +215,12 @@ std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
     if (!v.empty()) v[0] = canonical_command(v[0]);
     return v;
   };
+  for (auto& c : cmds) {
+    auto v = words(c);
+    if (v.size() < 5 || (v[0] != "AFTER" && v[0] != "BEFORE") || !text::iequals(v[3], "ADDWPT")) continue;
+    const std::string alt = v.size() > 5 ? v[5] : "", spd = v.size() > 6 ? v[6] : "";
+    c = "ADDWPT " + v[1] + " " + v[4] + "," + alt + "," + spd + "," + (v[0] == "AFTER" ? v[2] : "," + v[2]);
+  }
   for (size_t i = 0; i + 1 < cmds.size(); ++i) {
     auto a = words(cmds[i]), b = words(cmds[i + 1]);
     if (a.size() == 3 && b.size() == 3 && a[0] == "VS" && b[0] == "ALT") std::swap(a, b);

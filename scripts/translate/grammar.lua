@@ -384,6 +384,15 @@ local function written_forms(text)
   text = text:gsub("%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
   text = text:gsub("(%d)\xC2\xB0(%s)", "%1 degrees%2"):gsub("(%d)\xC2\xB0$", "%1 degrees")
+  -- a change typed with its sign and unit ("+20 kts", "-1000 ft"): that many faster/slower, up/down
+  text = text:gsub("%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]", function(sign, n, unit)
+    local u = unit:lower()
+    if u == "kts" or u == "kt" or u == "knots" then
+      return n .. " " .. unit .. (sign == "+" and " faster" or " slower")
+    end
+    if u == "ft" or u == "feet" then return (sign == "+" and "up " or "down ") .. n .. " " .. unit end
+    return nil
+  end)
   return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
     if b == "000" or text:sub(at):match("^%s*[Ff][Ee]?[Ee]?[Tt]%f[%A]") or text:sub(at):match("^%s*[Ff][Oo][Oo][Tt]") then
       return a .. b
@@ -433,6 +442,8 @@ function G:in_reason(i)
   for k = i - 1, 1, -1 do
     local t = self.t[k]
     if t.kind == "punct" and t.text ~= "," then return false end
+    -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
+    if t.kind == "punct" and self:word(k + 1, "@then_words") then return false end
     if self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then return true end
   end
   return false
@@ -484,6 +495,38 @@ function G:alone_but(b, e)
     if (k < b or k >= e) and t.kind ~= "punct" and not t.filler then return false end
   end
   return true
+end
+
+-- True when [b, e) is a clause of its own in a request of several: every other
+-- token between the punctuation before and after it is a filler or "then"
+-- ("AAL2307 direct BRAVO, then carry on", "reso MVP, pz 3 nm, then go"), and
+-- the clause before it is no callsign alone ("KL204, resume" resumes no clock).
+function G:clause_alone(b, e)
+  local lo, hi = b - 1, e
+  while lo >= 1 and self.t[lo].kind ~= "punct" do lo = lo - 1 end
+  while hi <= #self.t and self.t[hi].kind ~= "punct" do hi = hi + 1 end
+  if lo < 1 then return false end
+  for k = lo + 1, hi - 1 do
+    local t = self.t[k]
+    if (k < b or k >= e) and not t.filler and not self:word(k, "@then_words") then return false end
+  end
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.e == lo then
+      for k = 1, r.b - 1 do
+        if self.t[k].kind ~= "punct" and not self.t[k].filler then return true end
+      end
+      return false
+    end
+  end
+  return true
+end
+
+-- True when "vertical" at i is said of conflict resolutions ("let MVP use vertical speed in the
+-- resolutions", "resolutions horizontal only, no vertical"), no safety factor or zone size.
+function G:vertical_resolutions(i)
+  return self:word(i, "vertical") and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp")
+    and not self:word_in(1, #self.t + 1, "factor zone pz rpz zonedh separation sep")
+    and not self:has_ref(1, #self.t + 1, "aircraft")
 end
 
 -- True when every token but the one at i is punctuation, a filler or part of
@@ -593,6 +636,10 @@ function G:condition()
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), comma + 1 end
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), comma + 1 end
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), comma + 1 end
+    -- "when BAW123 is 20 miles from LEKKO, ...": ATDIST [NM]
+    local r = q.kind == "dist" and self:word(q.e, "from of to before")
+      and self:refs_in(self:skip_fillers(q.e + 1), self:skip_fillers(q.e + 1) + 1, "waypoint")[1]
+    if r then return "ATDIST " .. self.subject .. " " .. r.name .. " " .. f.num(q.value), comma + 1 end
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, comma + 1
@@ -628,7 +675,12 @@ function G:segments(b, e)
     local merged = false
     if last and not thn then
       local li = M.intents[last.intent] or {}
-      if (li.absorbs and this.value) or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
+      -- ("add SUGOL at FL200 and speed 250" is one waypoint; "route it via SUGOL and give it 280 knots",
+      -- a verb after "and", is a speed of its own)
+      local own_verb = last.intent == "addwpt" and self:word(tr.pos - 1, "and")
+        and not self:word(tr.pos, "speed spd altitude alt heading hdg level fl")
+      if (li.absorbs and this.value and not own_verb)
+          or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
         merged = true
       elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
         merged = true  -- "make a new ...": one request
@@ -724,7 +776,7 @@ function G:parse(b, e)
       local before = self.last_cond
       self.last_cond = nil
       local n_before = #self.out
-      local at = self:at_altitude(s) or self:at_distance(s)
+      local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
       local spec = M.intents[s.intent]
       if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
       if not self.ask and #self.out > n_before then
@@ -832,7 +884,11 @@ local function value_carried(q, nums)
     for _, c in ipairs({ v, v * 100, v * 1000, v * 10, v + 200 }) do
       if math.abs(c - n) <= math.max(0.5, 1e-6 * math.abs(n)) then return true end
     end
-    if q.kind ~= "alt" and v >= 0 and v <= 360 and math.abs((v - n + 180) % 360 - 180) <= 0.5 then return true end
+    -- (a heading, 360 said for 0: against a heading's number only, never a level's 30000)
+    if q.kind ~= "alt" and v >= 0 and v <= 360 and n >= 0 and n <= 360
+        and math.abs((v - n + 180) % 360 - 180) <= 0.5 then
+      return true
+    end
   end
   return false
 end
@@ -1437,7 +1493,7 @@ function M.translate(text, world)
   -- type names with their digits said as words, where traffic is created
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
       or text:lower():find("%f[%a]add") then
-    text = types.spoken(text, TYPES)
+    text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
   local u = squawk.translate.utterance(types.join(text, TYPES.phrases),
     world, NAMES)

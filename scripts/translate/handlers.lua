@@ -107,7 +107,7 @@ function m:acids(s)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
-          and not self:preceded_by(r.b, 3, "@aircraft_context") and not self:in_reason(r.b) then
+          and not self:as_context(r.b) and not self:in_reason(r.b) then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -149,8 +149,26 @@ function m:acids(s)
     if meant then ids[k] = meant end
   end
   if #ids == 0 then self:airline_only(s) end
+  -- "delete the easy and the klm": an airline said alone that names no one aircraft is asked
+  -- about, never dropped beside the one that does
+  for _, u in ipairs(#ids > 0 and self.airline_unresolved or {}) do
+    if u.b >= s.b and u.e <= s.e then self:airline_only(u) end
+  end
   if #ids > 0 then self.subject, self.subjects = ids[1], { table.unpack(ids) } end
   return ids
+end
+
+-- True when the aircraft named at i is context ("to avoid a conflict with KLM77", "to meet BAW123"):
+-- a word of lexicon.aircraft_context within the 3 tokens before it, with no instruction word
+-- between, and not the object of a verb that instructs it ("set up the conflict, bring EZY45 up to
+-- 310" instructs EZY45).
+function m:as_context(i)
+  if self:word(i - 1, "bring get put send have let make tell ask") then return false end
+  for k = i - 1, math.max(1, i - 3), -1 do
+    if self:intent_at(k) then return false end
+    if self:word(k, "@aircraft_context") then return true end
+  end
+  return false
 end
 
 -- An airline said with no flight number ("KLM, climb ..."): the question
@@ -239,6 +257,12 @@ function m:airline_refs()
           or self:word(e, "heavy super")))
         and not self:new_aircraft_follows(e - 1)
     local fits = ok and self:airline_fleet(icao) or {}
+    -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
+    -- name no airline flying, "the ILS", are no airline)
+    if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
+      self.airline_unresolved = self.airline_unresolved or {}
+      table.insert(self.airline_unresolved, { b = i, e = e })
+    end
     if #fits == 1 then
       local r = { kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_airline = true }
       local k = 1
@@ -466,7 +490,8 @@ end
 -- question naming the ones it may have meant, else nil (and the aircraft
 -- meant, once the speaker confirmed it).
 function m:unknown_callsign(id)
-  if #self.fleet == 0 or self:state(id) then return nil end
+  -- (one this request creates is known: "create BEE12K ... and give it destination EHAM")
+  if #self.fleet == 0 or self:state(id) or (self.created or {})[id:upper()] then return nil end
   local near = self:near_callsigns(id)
   if #near == 1 and (self.world.confirmed or {})[near[1]] then return nil, near[1] end
   if #near == 1 then
@@ -586,6 +611,36 @@ function m:at_altitude(s)
   if #ids == 0 then return nil end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
+end
+
+-- "in 2 min turn KL204 left heading 180", "pause it at 30 minutes", "when the clock hits 45 minutes
+-- pause the sim": the instruction waits for a time, "DELAY s" after "in"/"after" (from now) or
+-- "SCHEDULE hh:mm:ss" after "at" or the clock reaching it (simulation time); nil when no time is said
+-- or the instruction takes its time as a value (FF, DT, DTLOOK, DTMULT; CRECONFS's time to conflict).
+local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
+function m:at_time(s)
+  if OWN_TIME[s.intent] then return nil end
+  for _, q in ipairs(self:quantities(s.b, s.e)) do
+    local w = q.b - 1
+    while w > 0 and self.t[w].filler do w = w - 1 end
+    if q.kind == "time" and not self.taken[q.b] then
+      local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
+      if not self:word(w, "in after at") and not clock then return nil end
+      -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
+      -- 2 minutes EZY45 descend": left uncarried, so asked about)
+      if q.b > s.trig and self:word_in(s.trig, w, "and then") then return nil end
+      self:mark_used(q.b, q.e)
+      self:mark_used(w, w + 1)
+      local t = math.floor(q.value + 0.5)
+      local at = self:word(w, "in after") and "DELAY " .. f.num(q.value)
+        or string.format("SCHEDULE %02d:%02d:%02d", t // 3600, t % 3600 // 60, t % 60)
+      -- (one that opens the request times every instruction in it: "in 30 seconds KL204 climb ... and
+      -- EZY45 descend ...")
+      if w == self:skip_fillers(1) then self.at_all = at end
+      return at
+    end
+  end
+  return nil
 end
 
 -- "when fifteen miles from TARTN descend FL80", "within 10 NM of CGT", "alt

@@ -9,11 +9,20 @@ return function(H, f, compass)
 
   -- A latitude/longitude pair in qs: marked ones, else two bare numbers in a
   -- row after the instruction word ("at 0 0", "position 51.9, 4.4").
-  local function position(qs, trig)
+  -- (g: the grammar, which takes the minutes of a degrees-and-minutes position as read)
+  local function position(qs, trig, g)
     local lat, lon
-    for _, q in ipairs(qs) do
-      if q.kind == "lat" and not lat then lat = q.value end
-      if q.kind == "lon" and not lon then lon = q.value end
+    for k, q in ipairs(qs) do
+      -- degrees and decimal minutes, "52 20.5 N 004 30 E": whole degrees straight before the minutes
+      local v, d = q.value, qs[k - 1]
+      if (q.kind == "lat" or q.kind == "lon") and d and d.kind == "plain" and d.e == q.b and d.value >= 0
+          and d.value == math.floor(d.value) and d.value <= (q.kind == "lat" and 90 or 180) and math.abs(v) < 60 then
+        v = (v < 0 and -1 or 1) * (d.value + math.abs(v) / 60)
+        g:take(q)
+        g:take(d)
+      end
+      if q.kind == "lat" and not lat then lat = v end
+      if q.kind == "lon" and not lon then lon = v end
     end
     if lat and lon then return lat, lon end
     for k = 1, #qs - 1 do
@@ -52,16 +61,24 @@ return function(H, f, compass)
     end
     local types = self:refs_in(s.b, s.e, "type")
     local actype = types[1] and types[1].name
-    local model
+    local model, near
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if r.exists then near = near or r.name end
       if r.exists and self:word_in(s.b, s.e, "same") then model = self:state(r.name) end
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig)
+    local lat, lon = position(qs, s.trig, self)
+    if not lat or not lon then
+      -- "10 miles north of KL204", "20 miles east of it" (the aircraft named before)
+      local la, lo = self:offset_position(qs, s.b, s.e, near)
+      if la then lat, lon = la, lo elseif lo then return self:need(lo) end
+    end
     local hdg, alt, fl, spd, mach
     for _, q in ipairs(qs) do
       if q.kind == "heading" and not hdg then hdg = q.value end
+      -- "flying 300 deg": an angle with no turn is the heading
+      if q.kind == "angle" and q.turn == 0 and not hdg and q.value >= 0 and q.value <= 360 then hdg = q.value end
       if q.kind == "alt" and not alt then alt, fl = q.value, q.fl end
       if q.kind == "speed" and not spd and not mach then spd = q.value end
       if q.kind == "mach" and not spd and not mach then mach = q.value end
@@ -83,7 +100,11 @@ return function(H, f, compass)
         hdg = compass(self.t[h + 1].text, h + 2 < s.e and self.t[h + 2].text or "")
       end
     end
-    if model and self:word_in(s.b, s.e, "altitude") and not alt then alt, fl = model.alt_ft, true end
+    -- "the same heading, level and speed as KL204", "same FL as WZZ1234"
+    if model and self:word_in(s.b, s.e, "altitude level fl") and not alt then
+      alt, fl = math.floor((model.alt_ft or 0) + 0.5), true  -- (the simulation's feet, to the foot)
+    end
+    if model and self:word_in(s.b, s.e, "heading hdg") and not hdg then hdg = model.hdg_deg end
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
       if model.sel_mach then mach = model.sel_mach else spd = model.cas_kt end
     end
@@ -115,7 +136,7 @@ return function(H, f, compass)
     end
     for _, q in ipairs(qs) do
       if q.b < from then goto continue end
-      local seen = false
+      local seen = self.taken[q.b] ~= nil  -- (read already: an offset's distance)
       for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
         local v = read[k]
         if v and math.abs(v - q.value) < 1e-9 then seen = true end
@@ -131,6 +152,12 @@ return function(H, f, compass)
     if #left == 1 and left[1].kind == "plain" and alt and not spd and not mach and left[1].value >= 40
         and left[1].value <= 700 then
       spd = left[1].value
+      left = {}
+    end
+    -- a typed ".85" after the level, no speed said, is a Mach number ("fl390 .85")
+    if #left == 1 and left[1].kind == "plain" and alt and not spd and not mach
+        and self.t[left[1].b].raw:match("^%.%d%d?$") and left[1].value >= 0.4 then
+      mach = left[1].value
       left = {}
     end
     if #left > 0 and id and actype then
@@ -162,13 +189,103 @@ return function(H, f, compass)
     if mach then cmd = cmd .. " " .. f.mach(mach) end
     self:emit(cmd)
     self.subject = id
+    self.created = self.created or {}
+    self.created[id] = true
+  end
+
+  -- CRECONFS acid,type,targetid,dpsi,cpa,tlosh,[dh,tlosv]: an intruder of a new callsign and a type,
+  -- set up against the aircraft flying: its track off the target's ("90 deg off its track", "crossing
+  -- from 60 degrees", "head-on": 180), the distance at closest approach ("cpa 0", "passing 1 mile",
+  -- "zero miss distance") and the time to loss of separation ("los in 200 s"); "1000 ft above it
+  -- with vertical LoS at 180 s" adds dh and tlosv. Each is asked for when not said.
+  function m:conflict_intruder(s)
+    local id, target
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if r.exists then target = target or r.name else id = id or r.name:upper() end
+    end
+    local named = self:find_word(s.b, s.e, "@named")
+    if not id and named + 1 < s.e and self.t[named + 1].kind == "word" then id = self.t[named + 1].raw:upper() end
+    local actype = (self:refs_in(s.b, s.e, "type")[1] or {}).name
+    if not id or not actype then return self:need("What callsign and aircraft type should the intruder have?") end
+    if not target then return self:need("Which aircraft should " .. id .. " conflict with?") end
+    local dpsi, cpa, tlosh, dh, tlosv
+    for k = s.b, s.e - 1 do
+      if self:word(k, "@head_on") and (self.t[k].text ~= "head" or self:word(k + 1, "on")) then dpsi = 180 end
+    end
+    local vertical = self:find_word(s.b, s.e, "vertical")
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
+      if q.kind == "angle" and not dpsi then
+        dpsi = self:take(q).value
+      elseif (q.kind == "dist" or q.kind == "plain") and not cpa and near("@closest_approach") then
+        cpa = self:take(q).value
+      elseif q.kind == "time" and q.b > vertical and dh and not tlosv then
+        tlosv = self:take(q).value
+      elseif q.kind == "time" and not tlosh and near("@loss_of_separation") then
+        tlosh = self:take(q).value
+      elseif q.kind == "alt" and not dh and self:word(q.e, "@above @below") then
+        dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
+      end
+    end
+    if not dpsi then
+      return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?")
+    end
+    if not cpa then return self:need("How close, in nautical miles, should " .. id .. " pass " .. target .. "?") end
+    if not tlosh then
+      return self:need("In how many seconds should " .. id .. " lose separation with " .. target .. "?")
+    end
+    local cmd = string.format("CRECONFS %s %s %s %s %s %s", id, actype, target, f.num(dpsi), f.num(cpa), f.num(tlosh))
+    if dh then cmd = cmd .. " " .. f.num(dh) .. (tlosv and " " .. f.num(tlosv) or "") end
+    self:emit(cmd)
+    self:mark_used(s.b, s.e)  -- the description read whole ("zero miss distance", "LoS after 4 minutes")
+    self.created = self.created or {}
+    self.created[id] = true
+  end
+
+  -- A position said as a distance and a compass point from an aircraft ("10 nm north", "20 miles
+  -- south of where it is now", "15 nm south of RYR81JC", "20 miles east of it"): lat, lon [deg] on a
+  -- flat earth around the aircraft (d NM north is d/60 degrees of latitude), with the quantity taken;
+  -- nil when no compass point follows the distance. `from`: the aircraft meant when none is named
+  -- after "of" (the one moved; "it"). Returns nil, question when the aircraft's position is unknown.
+  function m:offset_position(qs, b, e, from)
+    for _, q in ipairs(qs) do
+      local k = q.e
+      if self:word(k, "to") and self:word(k + 1, "the") then k = k + 2 end
+      local t = self.t[k]
+      local brg = q.kind == "dist" and q.b >= b and q.e <= e and t and t.kind == "word" and L.compass[t.text]
+      if brg then
+        local ref = from
+        if self:word(k + 1, "of") then
+          local r = self:refs_in(k + 2, k + 3, "aircraft")[1]
+          if r then
+            ref = r.name
+            self.explained = self.explained or {}
+            self.explained[r.b] = true  -- the reference, not an aircraft instructed
+          elseif not self:word(k + 2, "it where its") then
+            return nil
+          end
+        end
+        local a = ref and self:state(ref)
+        if not a or not a.lat then return nil, "Where is " .. (ref or "the reference aircraft") .. "?" end
+        self:take(q)
+        self.explained = self.explained or {}
+        self.explained[k] = true
+        local rad = math.rad(brg)
+        return a.lat + q.value * math.cos(rad) / 60, a.lon + q.value * math.sin(rad) / (60 * math.cos(math.rad(a.lat)))
+      end
+    end
+    return nil
   end
 
   function m:move(s)
     local id = self:acid(s, "move")
     if not id then return end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig)
+    local lat, lon = position(qs, s.trig, self)
+    if not lat or not lon then
+      local la, lo = self:offset_position(qs, s.trig, s.e, id)
+      if la then lat, lon = la, lo elseif lo then return self:need(lo) end
+    end
     local named_at
     if not lat or not lon then
       for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do named_at = named_at or r.name end
@@ -375,25 +492,35 @@ return function(H, f, compass)
   -- lexicon.navaid_range_nm of `near` {lat, lon} [deg] when given).
   -- A word said after a place preposition ("at Barajas") is tried before
   -- any other ("a new Iberia aircraft": an airline, though an airport bears its name).
+  -- Near: within lexicon.navaid_range_nm of the aircraft `near`; anywhere, a small airfield is no
+  -- airport a name alone means ("Amsterdam" is no South African strip). A city said in capitals is
+  -- its large airport when no airport bears the name ("Frankfurt" -> EDDF "Frankfurt Main").
   function m:airport_by_name(b, e, near)
-    local named = self.world.airports_named
+    local named, city, class = self.world.airports_named, self.world.airports_of_city, self.world.airport_class
     if not named then return nil end
-    if near then
-      if not near.lat then return nil end
-      local all = named
-      named = function(phrase) return all(phrase, near.lat, near.lon, L.navaid_range_nm) end
+    local function within(list)
+      if near then return function(phrase) return list(phrase, near.lat, near.lon, L.navaid_range_nm) end end
+      return function(phrase)
+        local out = {}
+        for _, id in ipairs(list(phrase)) do
+          if not class or class(id) ~= "SMALL" then out[#out + 1] = id end
+        end
+        return out
+      end
     end
+    if near and not near.lat then return nil end
     for _, placed in ipairs({ true, false }) do
-      local id = self:airport_named_in(b, e, named, placed)
+      local id = self:airport_named_in(b, e, within(named), placed)
       if id then return id end
     end
-    return nil
+    return city and self:airport_named_in(b, e, within(city), false, true) or nil
   end
 
   -- A phrase with a capitalised word beside it ("Point Reyes", "Amsterdam Schiphol") is part of a
   -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
   -- Capital airport": the word before is its city).
-  function m:airport_named_in(b, e, named, placed)
+  -- (proper: only words typed with a capital, "Frankfurt")
+  function m:airport_named_in(b, e, named, placed, proper_only)
     local function proper(k)
       local t = self.t[k]
       return k > 1 and t ~= nil and t.kind == "word" and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
@@ -401,7 +528,8 @@ return function(H, f, compass)
     for i = b, math.min(e, #self.t + 1) - 1 do
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
-          and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words")) then
+          and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words"))
+          and (not proper_only or t.raw:match("^%u%l") ~= nil) then
         local nx = self.t[i + 1]
         local phrases = { { t.text, i + 1 } }
         if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
@@ -465,6 +593,7 @@ return function(H, f, compass)
     local added
     for c = #self.out, 1, -1 do
       added = added or self.out[c]:match("^ADDWPT " .. id:gsub("%p", "%%%0") .. " ([^%s,]+)$")
+        or self.out[c]:match("^DEST " .. id:gsub("%p", "%%%0") .. " (%a+)$")  -- ("dest EHAM and direct to it")
     end
     local wp = added and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
         and added or self:waypoint(s.trig, s.e, id)
@@ -517,7 +646,7 @@ return function(H, f, compass)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig)
+    local lat, lon = position(qs, s.trig, self)
     -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
     -- (also before the verb: "after REMBI add the waypoint ESAMA")
     local at = self:find_word(s.b, s.e, "after before")
@@ -536,9 +665,23 @@ return function(H, f, compass)
       end
     end
     local alt, spd
+    -- "via SUGOL and ANDIK and give it 280 knots": values after "and" and a verb of their own
+    -- are the next instruction's, no constraint of the waypoint
+    local upto = s.e
+    for k = (named and named.e or s.trig + 1), s.e - 1 do
+      local nx = self.t[k + 1]
+      if self:word(k, "and") and nx and nx.kind == "word" and not nx.filler and not nx.number_word
+          and not self:word(k + 1, "at with to speed spd altitude alt level fl")
+          and not self:refs_in(k + 1, k + 2, "waypoint")[1] then
+        upto = k
+        break
+      end
+    end
     for _, q in ipairs(qs) do
+      if q.b >= upto then break end
       if q.kind == "alt" and not alt then alt = f.alt(q.value, q.fl) end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
+      if q.kind == "plain" and not spd and self:word(q.b - 1, "speed spd") then spd = f.int(q.value) end
       if q.kind == "mach" and not spd then spd = f.mach(q.value) end
     end
     if next_to then
@@ -548,8 +691,8 @@ return function(H, f, compass)
         .. (after and next_to.name or "," .. next_to.name))
     end
     local cmd = "ADDWPT " .. id .. " " .. where
-    if alt or spd then cmd = cmd .. " " .. (alt or "") end
-    if spd then cmd = cmd .. " " .. spd end
+    if alt then cmd = cmd .. " " .. alt end
+    if spd then cmd = cmd .. (alt and " " or ",,") .. spd end  -- (an empty altitude keeps its place)
     self:emit(cmd)
     if not named then return end
     -- "route EZY45 via TEST1 then NIK to EHAM": the next places of the route in
@@ -666,9 +809,14 @@ return function(H, f, compass)
     if #self:refs_in(s.b, s.e, "aircraft") > 0 then
       return self:need("Which aircraft type should the random aircraft be? Please give its ICAO designator.")
     end
+    -- "all going to Schiphol": MCRE's destination (an airport or waypoint said after "to")
+    local to = self:find_word(s.trig, s.e, "to")
+    local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
+    if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
     local cmd = "MCRE " .. f.int(n.value)
-    if #types > 0 or alt then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
-    if alt then cmd = cmd .. " " .. f.alt(alt.value, alt.fl) end
+    if #types > 0 or alt or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
+    if alt or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
+    if dest then cmd = cmd .. " * " .. dest end
     self:emit(cmd)
   end
 
@@ -716,7 +864,17 @@ return function(H, f, compass)
       local k = self:find_word(s.b, s.e, "@named")
       if k + 1 < s.e and self.t[k + 1].kind == "word" then name = self.t[k + 1].raw:upper() end
     end
-    local lat, lon = position(self:quantities(s.b, s.e), s.trig)
+    if not name then
+      -- "define waypoint DELTA at ...", "define a fix GOLF at ...": a name typed in capitals after the
+      -- noun or the verb, also one that is a phonetic word
+      for k = s.trig, s.e - 1 do
+        if k == s.trig or self:word(k, "@waypoint_nouns") then
+          local n = self.t[self:skip_fillers(k + 1)]
+          if n and n.kind == "word" and n.raw:match("^%u[%u%d]+$") and not n.keyword then name = n.raw break end
+        end
+      end
+    end
+    local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     if not name then return self:need("What should the waypoint be called, and where is it?") end
     if not lat or not lon then return self:need("Where is waypoint " .. name .. "? Please give a latitude and longitude.") end
     self:emit("DEFWPT " .. name .. " " .. f.num(lat) .. " " .. f.num(lon))
@@ -735,7 +893,7 @@ return function(H, f, compass)
     local id = self:acid(s, "get it")
     if not id then return end
     local w = self:refs_in(s.b, s.e, "waypoint")
-    local lat, lon = position(self:quantities(s.b, s.e), s.trig)
+    local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
     local airport = (a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e)
@@ -749,11 +907,28 @@ return function(H, f, compass)
       self:emit(cmd .. " " .. id .. " " .. self:airport_meant(w[#w].name, self:state(id)))
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
-    elseif self:word_in(s.b, s.e, "what what's whats which where") and #self:quantities(s.b, s.e) == 0 then
+    elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig))
+        and #self:quantities(s.b, s.e) == 0 then
       self:emit(cmd .. " " .. id)  -- "what's the easyJet's destination?": shown
     else
       self:need("Which airport should be the " .. what .. " of " .. id .. "? Please give its ICAO code.")
     end
+  end
+  -- True when the request is the word at i and an aircraft, asked ("origin of KL204?", "SAS930
+  -- destination?"): every other word is the callsign's, a filler or "of".
+  function m:noun_asked(i)
+    if self.t[#self.t].text ~= "?" then return false end
+    local inside = {}
+    for _, r in ipairs(self:refs_in(1, #self.t + 1, "aircraft")) do
+      for k = r.b, r.e - 1 do inside[k] = true end
+    end
+    for k = 1, #self.t do
+      local t = self.t[k]
+      if k ~= i and not inside[k] and t.kind ~= "punct" and not t.filler and not self:word(k, "of its") then
+        return false
+      end
+    end
+    return true
   end
   function m:dest(s) dest_orig(self, s, "DEST", "destination") end
   function m:orig(s) dest_orig(self, s, "ORIG", "origin") end
@@ -772,8 +947,13 @@ return function(H, f, compass)
   function m:vnav(s) nav(self, s, "VNAV") end
   -- True when the request asks what a setting is ("Is conflict detection switched on?", "what's the
   -- current zone radius?", "which resolution method is active?"): the bare command shows it.
-  function m:asks_setting()
+  -- value: a setting with a value of its own (ZONER, DTLOOK, DT, RFACH), also asked for without "?"
+  -- ("what's the current pz radius", "show me the time step") when no number is said
+  function m:asks_setting(value)
     local first = self:skip_fillers(1)
+    if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
+      return true
+    end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?")
     return self.t[#self.t].text == "?" and (self:word(first, "is are what what's whats which")
       or self:word_in(1, #self.t + 1, "check whether"))
@@ -781,6 +961,14 @@ return function(H, f, compass)
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end
     self:emit(spec.cmd .. " " .. on_off(self, s))
+    if spec.cmd ~= "ASAS" then return end
+    -- "turn on CD with 5 nm and 1000 ft": the protected zone's radius and half height
+    for _, q in ipairs(self:quantities(s.trig, s.e)) do
+      if q.kind == "dist" then self:emit("ZONER " .. f.num(self:take(q).value)) end
+      if q.kind == "alt" and not q.fl and self:word(q.e - 1, "@feet") then
+        self:emit("ZONEDH " .. f.num(self:take(q).value))
+      end
+    end
   end
 
   function m:one_acid(s, cmd, what)
@@ -836,7 +1024,36 @@ return function(H, f, compass)
     return nil
   end
 
+  -- "two and a half minutes", "an hour and a half", "1 and a half hours": [s] and the tokens' end, or nil
+  local UNIT_S = { second = 1, seconds = 1, sec = 1, secs = 1, minute = 60, minutes = 60, min = 60, mins = 60,
+                   hour = 3600, hours = 3600 }
+  local function and_a_half(self, b, e)
+    local function count(k)
+      if self:word(k, "a an") then return 1 end
+      local q = self:quantities(k, k + 1)[1]
+      return q and q.e == k + 1 and q.kind == "plain" and q.value or nil
+    end
+    for k = b, e - 1 do
+      local n = count(k)
+      if n and self:word(k + 1, "and") and self:word(k + 2, "a") and self:word(k + 3, "half")
+          and UNIT_S[(self.t[k + 4] or {}).text or ""] then
+        return (n + 0.5) * UNIT_S[self.t[k + 4].text], k + 5
+      end
+      if n and UNIT_S[(self.t[k + 1] or {}).text or ""] and self:word(k + 2, "and") and self:word(k + 3, "a")
+          and self:word(k + 4, "half") then
+        return (n + 0.5) * UNIT_S[self.t[k + 1].text], k + 5
+      end
+    end
+    return nil
+  end
+
   function m:fast_forward(s)
+    local half, half_e = and_a_half(self, s.trig + 1, s.e)
+    if half then
+      for _, q in ipairs(self:quantities(s.trig + 1, half_e)) do self:take(q) end
+      self:mark_used(s.trig + 1, half_e)
+      return self:emit("FF " .. f.num(half))
+    end
     local q = first(self, s, { time = true, mult = true })
     if not q then
       -- "half an hour", "a quarter of an hour": a fraction of a unit said in words
@@ -880,6 +1097,7 @@ return function(H, f, compass)
   function m:time_step(s)
     local q = first(self, s, { time = true, plain = true })
     if q then return self:emit("DT " .. f.num(q.value)) end
+    if self:asks_setting(true) then return self:emit("DT") end
     self:need("What time step, in seconds, should the simulation use?")
   end
   function m:time_mult(s)
@@ -895,6 +1113,8 @@ return function(H, f, compass)
       end
     end
     if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
+    local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
+    if real < s.e and self:word(real + 1, "time") then return self:emit("DTMULT 1") end
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end
@@ -905,6 +1125,26 @@ return function(H, f, compass)
     local q = first(self, s, { plain = true })
     if q then return self:emit("SEED " .. f.int(q.value)) end
     self:need("Which random seed should I set?")
+  end
+  -- WIND lat lon [alt] dir spd: where the wind blows from ("from 270", or the heading said) and its speed
+  function m:wind(s)
+    local qs = self:quantities(s.b, s.e)
+    local lat, lon = position(qs, s.trig, self)
+    if not lat or not lon then return self:need("Where should the wind be? Please give a latitude and longitude.") end
+    local alt, dir, spd
+    for _, q in ipairs(qs) do
+      if q.kind == "alt" and not alt then alt = self:take(q) end
+      if q.kind == "speed" and not spd then spd = self:take(q) end
+      if (q.kind == "heading" or q.kind == "angle" or (q.kind == "plain" and self:word(q.b - 1, "from")))
+          and not dir and q.value >= 0 and q.value <= 360 then
+        dir = self:take(q)
+      end
+    end
+    if not dir or not spd then
+      return self:need("From which direction, and how strong in knots, should the wind blow?")
+    end
+    self:emit(string.format("WIND %s %s%s %s %s", f.num(lat), f.num(lon), alt and " " .. f.alt(alt.value, alt.fl) or "",
+      f.num(dir.value), f.num(spd.value)))
   end
   function m:scenario(s)
     for i = s.b, s.e - 1 do
@@ -917,6 +1157,13 @@ return function(H, f, compass)
     for i = s.b, s.e - 1 do
       if self.t[i].kind == "quoted" then return self:emit("ECHO " .. self.t[i].raw) end
     end
+    -- the words after a colon, as typed
+    for i = s.trig, s.e - 1 do
+      if self.t[i].kind == "punct" and self.t[i].text == ":" and i + 1 < s.e then
+        self:mark_used(i + 1, s.e)
+        return self:emit("ECHO " .. self:raw(i + 1, s.e))
+      end
+    end
     self:need("What text should I print?")
   end
   function m:resolution(s)
@@ -927,9 +1174,50 @@ return function(H, f, compass)
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
     self:need("Which conflict resolution method should I use (for example MVP), or should it be off?")
   end
+  -- RFACH / RFACV: the safety factor resolutions apply; each value is the kind said last before it
+  -- ("the horizontal resolution margin factor to 1.2 and the vertical one to 1.05")
+  function m:reso_factor(s)
+    local b = math.max(1, s.b - 4)  -- ("with horizontal factor 1.1": the kind said before the noun)
+    local function kind(e)
+      for k = e - 1, b, -1 do
+        if self:word(k, "vertical") then return "RFACV" end
+        if self:word(k, "horizontal lateral") then return "RFACH" end
+      end
+      return nil
+    end
+    if self:asks_setting(true) then return self:emit(kind(s.e) or "RFACH") end
+    local before = #self.out
+    for _, q in ipairs(self:quantities(s.trig, s.e)) do
+      -- ("the vertical one": a pronoun, no value)
+      local pronoun = self.t[q.b].text == "one" and self:word(q.b - 1, "vertical horizontal lateral")
+      if q.kind == "plain" and not pronoun then
+        local cmd = kind(q.b)
+        if not cmd then
+          return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(q.value)))
+        end
+        self:emit(cmd .. " " .. f.num(self:take(q).value))
+      end
+    end
+    if #self.out == before then self:need("What safety factor should conflict resolution apply?") end
+  end
+  -- RMETHV: resolutions with vertical speed (V/S) or horizontal only (OFF)
+  -- (both read their request whole: "allow vertical manoeuvres in the MVP resolutions", "resume nav
+  -- once past cpa" say nothing else)
+  function m:reso_vertical(s)
+    local off = self:word_in(1, #self.t + 1, "no not off without don't dont never only")
+    self:emit(off and "RMETHV OFF" or "RMETHV V/S")
+    self:mark_used(s.b, s.e)
+  end
+  function m:resume_nav(s)
+    if self:asks_setting() then return self:emit("RESNAV") end
+    self:emit("RESNAV PASTCPA")  -- the one way squawk resumes navigation after a resolution
+    self:mark_used(s.b, s.e)
+  end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical")
-    if self:asks_setting() and #self:quantities(s.b, s.e) == 0 then return self:emit(vertical and "ZONEDH" or "ZONER") end
+    if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then
+      return self:emit(vertical and "ZONEDH" or "ZONER")
+    end
     local before = #self.out
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
@@ -961,7 +1249,7 @@ return function(H, f, compass)
   function m:look_ahead(s)
     local q = first(self, s, { time = true, plain = true })
     if q then return self:emit("DTLOOK " .. f.num(q.value)) end
-    if self:asks_setting() then return self:emit("DTLOOK") end
+    if self:asks_setting(true) then return self:emit("DTLOOK") end
     self:need("How far ahead, in seconds, should conflict detection look?")
   end
 end

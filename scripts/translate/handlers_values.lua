@@ -23,6 +23,11 @@ return function(H, f, wrap, compass)
       local n = q.number
       if q.kind == "plain" and not n.typed and n.groups == 3 and n.lead_digit and q.value <= 360 and not n.hundred
           and not n.decimal then
+        -- "WZZ1234 to three six zero": a level as much as a heading, with no word to say which
+        if self:word(q.b - 1, "to") then
+          return self:need(string.format("Heading %s or flight level %s? Please say which.", f.int(q.value),
+            f.int(q.value)))
+        end
         return self:heading(s)
       end
     end
@@ -97,6 +102,18 @@ return function(H, f, wrap, compass)
       for _, id in ipairs(ids) do self:emit("ALT " .. id .. " " .. f.int((now.alt_ft or 0) * 2)) end
       return
     end
+    -- "put BAW123 at the same level as DLH4AX", "climb to the same altitude as AC01": the other's level
+    local refs = self:refs_in(s.b, s.e, "aircraft")
+    if not target and #refs >= 2 and self:word_in(s.b, s.e, "same") and self:word_in(s.b, s.e, "as") then
+      local src = self:state(refs[#refs].name)
+      if not src then return self:need("What is the altitude of " .. refs[#refs].name .. "?") end
+      local ft, cur = math.floor((src.alt_ft or 0) + 0.5), (self:state(refs[1].name) or {}).alt_ft or 0
+      if (dir > 0 and ft < cur - 50) or (dir < 0 and ft > cur + 50) then
+        return self:need(string.format("%s is at %s ft, %s at %s ft: %s %s? Please confirm the altitude.", refs[1].name,
+          f.int(cur), refs[#refs].name, f.int(ft), verb, refs[1].name))
+      end
+      return self:emit("ALT " .. refs[1].name .. " " .. (ft >= 10000 and f.alt(ft, true) or f.int(ft)))
+    end
     if not target and rate then return self:vspeed(s) end
     -- "maintain present altitude": the current level, read from the traffic
     if not target and now and self:word_in(s.b, s.e, "present current")
@@ -165,7 +182,9 @@ return function(H, f, wrap, compass)
     -- ("3000 feet from where it is now": a change from the present level)
     local from_here = self:find_word(s.trig, s.e, "from")
     local relative = not fl and (q.by or self:word_in(s.trig, s.e, "@relative")
-      or (from_here < s.e and self:word(from_here + 1, "where")))
+      or (from_here < s.e and self:word(from_here + 1, "where"))
+      -- "down 2000 feet", "up 1000 ft": an amount in feet straight after the adverb is a change
+      or (self:word(q.b - 1, "up down") and self:word(q.e - 1, "@feet")))
     if not relative and now and not q.to and not fl and dir ~= 0 then
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then

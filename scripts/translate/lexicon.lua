@@ -137,12 +137,12 @@ return {
         "separation", "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite",
         "define", "teleport", "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes",
         "timestep", "protected", "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude",
-        "minimum", "horizontal", },
+        "minimum", "horizontal", "forward", "right", "left", },
     common = { "stop", "them", "last", "want", "have", "from", "with", "what", "also", "back", "give", "make",
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
-        "show", "send", "sent", "held", "lead", "deletion", "circle", },
+        "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts", },
   },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
@@ -172,7 +172,7 @@ return {
            "descending", "decelerate", "minus" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
-                       "than", "traffic" },
+                       "than", "traffic", "meet", "meets", "catch" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but" },
@@ -318,6 +318,16 @@ return {
                   percent = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
   speed_units = { "knots", "knot", "kts", "kt" },
+  -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
+  -- or after its closest approach, its loss of separation and a head-on course
+  intruder = { "intruder", "conflict" },
+  closest_approach = { "cpa", "miss", "passing" },
+  loss_of_separation = { "los" },
+  head_on = { "head-on", "head" },
+  -- the clock reaching a time ("when the clock hits 45 minutes")
+  clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
+  -- more of the same ("3 more random ones")
+  more = { "more", "extra", "new" },
   -- the colours TRAIL acid accepts
   trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words

@@ -241,6 +241,8 @@ function M.world(sim, waypoints)
   end
   return { aircraft = aircraft, waypoints = waypoints or {},
            airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
+           airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
+           airport_class = function(id) return sim:airport_class(id) end,
            navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end,
            airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end }
 end
@@ -322,6 +324,8 @@ local function has_english_word(line, name)
     n = n + 1
     local lw = w:lower()
     local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
+    -- ("WZZ1234 speed +20": a change said with its sign, which SPD / ALT / HDG would read as a value)
+    if n > 1 and lw:match("^%+%d") and (name == "SPD" or name == "ALT" or name == "HDG") then return true end
     if name ~= "ECHO" and (GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
       return true
     end
@@ -356,6 +360,10 @@ function M.typed(state, ctx)
     if inner then
       local ok, why = scratch:check(inner)
       if not canonical_name(inner:match("^([%w_]+)")) then return "english" end
+      -- ("schedule a pause at 20 min": English glue where the time should be)
+      local head = {}
+      for w in c:gmatch("[^%s,]+") do head[#head + 1] = w end
+      if has_english_word(table.concat(head, " ", 1, inner_at - 1), name) then return "english" end
       if not ok then
         state.ask = string.format("%s carries '%s', which is not a command it can run (%s). What should it run?",
           name, inner, why)

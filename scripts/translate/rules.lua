@@ -55,9 +55,16 @@ return function(intent, rule, words)
   intent "seed" { cmd = "SEED", args = { "value" }, handler = "seed" }
   intent "ic" { cmd = "IC", args = { "filename" }, handler = "scenario" }
   intent "echo" { cmd = "ECHO", args = { "text" }, handler = "echo" }
+  intent "wind" { cmd = "WIND", args = { "lat", "lon", "alt", "dir", "spd" }, handler = "wind", absorbs = true,
+                  single = true }
   intent "asas" { cmd = "ASAS", args = { "ON", "OFF" }, handler = "switch" }
   intent "reso" { cmd = "RESO", args = { "MVP", "OFF" }, handler = "resolution" }
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
+  intent "rfac" { cmds = { "RFACH", "RFACV" }, args = { "factor" }, handler = "reso_factor" }
+  intent "rmethv" { cmd = "RMETHV", args = { "ON", "OFF" }, handler = "reso_vertical" }
+  intent "resnav" { cmd = "RESNAV", args = { "PASTCPA" }, handler = "resume_nav" }
+  intent "creconfs" { cmd = "CRECONFS", args = { "acid", "type", "targetid", "dpsi", "cpa", "tlosh", "dh", "tlosv" },
+                      handler = "conflict_intruder", absorbs = true, single = true }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
   intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic" }
@@ -77,9 +84,25 @@ return function(intent, rule, words)
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
+  -- "drop CHARL from united 9's route": a waypoint off the route
+  rule { "drop", "delwpt", near = { 8, "@route_nouns" },
+         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "kl204 up to 300", "EWG7LM up to FL320 so it ...": straight after the callsign
+  rule { "up down", "alt", next = "to", not_near = { 3, "speed knots kts" }, not_prev = { 3, "speed spd" },
+         when = function(g, i)
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == i then return true end
+    end
+    return false
+  end }
+  -- "left 40 and down 4000 ft": an amount in feet after the adverb is a change of level
+  rule { "up down", "alt", near = { 2, "@feet" }, when = function(g, i)
+    local t = g.t[i + 1]
+    return t ~= nil and t.kind == "number"
+  end }
   -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
   rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
@@ -89,6 +112,12 @@ return function(intent, rule, words)
   rule { "lower raise", "spd", near = { 4, "speed" } }
   rule { "lower raise", "alt" }
   rule { "maintain maintained", "maintain" }
+  -- "put BAW123 at the same level as DLH4AX"; "keep it at FL290 and 270 kts"
+  rule { "level altitude", "alt", prev = { 1, "same" }, next = "as" }
+  rule { "keep", "maintain", next = "it him her them", when = function(g, i)
+    return g:word(i + 2, "at") and g.t[i + 3] ~= nil and (g.t[i + 3].kind == "number" or g:word(i + 3, "fl flight"))
+  end }
+
 
   -- speed, and the simulation's speed
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
@@ -99,6 +128,13 @@ return function(intent, rule, words)
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
   end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
+  -- "speed it up 4x": a factor glued to its x, no aircraft named
+  rule { "speed", "dtmult", near = { 2, "up" }, when = function(g, i)
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
+      if q.kind == "mult" then return not g:has_ref(1, #g.t + 1, "aircraft") end
+    end
+    return false
+  end }
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
     return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
@@ -118,6 +154,8 @@ return function(intent, rule, words)
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" } }  -- "the Shuttle is a bit slow": a description
   rule { "slow slower faster accelerate decelerate", "spd" }
+  -- "and give it 280 knots": a speed given to the aircraft
+  rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
 
   -- heading
@@ -129,12 +167,26 @@ return function(intent, rule, words)
   rule { "left right", "hdg", when = function(g, i)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
+  -- "EWG7LM 10 right and climb ...", "KL204 20 degrees left": a turn by the amount said before it,
+  -- straight after the callsign (never "runway 10 right")
+  rule { "left right", "hdg", when = function(g, i)
+    local n = g:word(i - 1, "degrees degree deg") and i - 2 or i - 1
+    local t = g.t[n]
+    if not t or t.kind ~= "number" or g.u:used(n) or g:word(n - 1, "runway rwy") then return false end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == n then return true end
+    end
+    return false
+  end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
   rule { "due", "hdg", next = "@compass" }
   rule { "around", false, prev = { 3, "turn" } }
 
+  -- conflict resolution in the vertical ("let MVP use vertical speed in the resolutions", "keep
+  -- resolutions horizontal only, no vertical"): RMETHV, never a vertical speed or a new method
+  rule { "vertical", "rmethv", when = function(g, i) return g:vertical_resolutions(i) end }
   -- vertical speed and bank
   rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
@@ -176,8 +228,14 @@ return function(intent, rule, words)
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
   rule { "random", "mcre", when = function(g, i)
-    local t = g.t[i - 1]
+    local t = g.t[g:word(i - 1, "@more") and i - 2 or i - 1]  -- ("3 more random ones")
     return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
+  end }
+  -- "spawn a conflict for KL204: INT1, A320, 90 deg off its track, cpa 0, los in 200 s", "make an intruder
+  -- called TEST1 ... head-on, passing 1 mile, LoS after 4 minutes": an intruder set up to conflict
+  rule { "create spawn generate creat cre make new add put", "creconfs", when = function(g, i)
+    return g:followed_by(i, 4, "@intruder")
+      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
   end }
   rule { "create spawn generate creat cre", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
@@ -195,6 +253,14 @@ return function(intent, rule, words)
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
   rule { "via", "addwpt", prev = { 3, "route" } }
+  -- "define TGT2 at ... and send KL204 to it", "... and route UAL9 through it": the waypoint just
+  -- defined joins the route
+  rule { "send route take", "addwpt", when = function(g, i)
+    local defined = false
+    for k = 1, i - 1 do defined = defined or g:intent_at(k) == "defwpt" end
+    local it = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "it")
+    return defined and it <= #g.t and g:word(it - 1, "to through via over")
+  end }
   -- "add INTOP after AMDIL": a known waypoint put next to another
   rule { "add append insert", "addwpt", when = function(g, i)
     return g:has_ref(i + 1, i + 2, "waypoint") and g:word(i + 2, "after before")
@@ -208,6 +274,12 @@ return function(intent, rule, words)
   end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
   rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
+  -- "callsign SWR19, A333, FL360, ...": a request that opens with a new callsign and its type
+  rule { "callsign", "create", when = function(g, i)
+    return g:skip_fillers(1) == i and g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 6, "type")
+  end }
+  -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
+  rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
@@ -228,6 +300,10 @@ return function(intent, rule, words)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
   end }
   rule { "destination dest", "dest" }
+  -- "KL204 is going to Frankfurt", "it's bound for Brussels": where the aircraft flies, said as a fact
+  rule { "going", "dest", next = "to", prev = { 1, "is it's are" },
+         when = function(g, i) return not g:intent_at(i + 2) end }
+  rule { "bound", "dest", next = "for", prev = { 1, "is it's are" } }
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata
   rule { "send", "dest", when = function(g, i)
@@ -237,6 +313,13 @@ return function(intent, rule, words)
     end
     local t, named = g.t[to + 1], g.world.airports_named
     return named ~= nil and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4 and #named(t.text) > 0
+  end }
+  -- "create KL207 ... and send it to ARTIP": a waypoint (no airport) for the aircraft just created
+  rule { "send", "addwpt", next = "it", when = function(g, i)
+    local created = false
+    for k = 1, i - 1 do created = created or g:intent_at(k) == "create" end
+    local r = created and g:word(i + 2, "to") and g:refs_in(i + 3, i + 4, "waypoint")[1]
+    return r and #r.name == 5  -- (a five-letter fix; "send it to JFK" names a destination)
   end }
   -- "fly to TEST1": a waypoint the simulation knows is flown to directly; other places are destinations
   rule { "fly", "direct", next = "to", when = function(g, i)
@@ -270,6 +353,8 @@ return function(intent, rule, words)
   -- "where's the MERIT intersection?"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
+  rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
+  rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
   rule { "details status info information state pos", "pos" }
   rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
@@ -318,12 +403,18 @@ return function(intent, rule, words)
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
+  -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
+  rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  rule { "go resume continue unpause", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
+  -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
+  rule { "resume resumes", "resnav", near = { 6, "cpa" } }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "run", "op", next = "again" }  -- "let it run again"
@@ -346,6 +437,10 @@ return function(intent, rule, words)
   end }
   rule { "real", false, prev = { 1, "than" } }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }
+  -- "slow the clock to real time": the rate the clock is set to, no start of it
+  rule { "real", false, prev = { 1, "to" }, next = "time", when = function(g, i)
+    return g:word_in(math.max(1, i - 6), i, "slow slower faster speed multiplier rate")
+  end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
@@ -370,6 +465,15 @@ return function(intent, rule, words)
   end }
   rule { "scenario load open ic", "ic" }
   rule { "print", "echo" }
+  -- "put a note in the log: conflict 3 injected", "log: run 2 started": the text after the colon
+  rule { "note log", "echo", when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 4) do
+      if g.t[k].kind == "punct" and g.t[k].text == ":" then return k < #g.t end
+    end
+    return false
+  end }
+  -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
+  rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
 
   -- conflict detection and resolution
@@ -378,11 +482,19 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
   end }
   rule { "detection asas cdmethod cd", "asas" }
+  -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
+  rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
+  rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
+  rule { "mvp resolution resolve reso resolutions", false, when = function(g)
+    for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
+    return false
+  end }
   rule { "resolution resolve reso", "reso" }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected pz rpz separation zone zoner zonedh radius", "zone" }
+  rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }

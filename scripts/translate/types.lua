@@ -210,6 +210,17 @@ function M.spoken(text, built)
 end
 
 -- The request with each name of several words as its designator ("a 737 MAX 8" -> "a B38M").
+-- Designators said in the plural where traffic is created ("5 random A320s", "two B738s"): the
+-- designator (a word that is a designator itself, or the id of an aircraft of `fleet`, stays).
+function M.plurals(text, built, fleet)
+  local known = {}
+  for _, d in ipairs(built.designators) do known[d:lower()] = true end
+  for _, a in ipairs(fleet or {}) do known[a.id:lower()] = true end
+  return (text:gsub("%f[%w](%w+)[sS]%f[%W]", function(d)
+    if known[d:lower()] and not known[(d .. "s"):lower()] then return d end
+  end))
+end
+
 function M.join(text, phrases)
   local lower = text:lower()
   for _, p in ipairs(phrases) do

@@ -384,6 +384,28 @@ TEST_CASE("navdata: airports by name, whole or with a generic word, never a pref
   CHECK(ids("").empty());
 }
 
+TEST_CASE("navdata: a city is the large airport whose name starts with it; classes as airports.dat gives them") {
+  auto db = NavDb::parse("EDDF, FRANKFURT MAIN, 50.026, 8.543, Large, 13123, GM,364\n"
+                         "EDFH, FRANKFURT HAHN, 49.949, 7.264, Medium, 11483, GM,1649\n"
+                         "FAAM, Amsterdam Airport, -26.633, 30.6, Small, , SF,4310\n"
+                         "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
+                         "XXXX, Frankfurter, 1.0, 1.0, Large\n",
+                         "", "", "test");
+  REQUIRE(db.is_ok());
+  auto ids = [&](const char* name) {
+    std::vector<std::string> out;
+    for (const NavPoint* a : (*db)->airports_of_city(name)) out.push_back(a->id);
+    return out;
+  };
+  CHECK(ids("Frankfurt") == std::vector<std::string>{"EDDF"});  // not the medium Hahn, nor "Frankfurter"
+  CHECK(ids("frankfurt main").empty());                          // the whole name is no city of it
+  CHECK(ids("amsterdam").empty());                               // a small field named so is no city's
+  CHECK(ids("").empty());
+  CHECK((*db)->airport_class("FAAM") == "SMALL");
+  CHECK((*db)->airport_class("EDDF") == "LARGE");
+  CHECK((*db)->airport_class("NONE").empty());
+}
+
 TEST_CASE(
     "navdata: navaids by name less their kind, near a point, nearest first, each ident once") {
   auto db = NavDb::parse(

@@ -340,11 +340,13 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("afr55 drop it to FL150", w), "ALT AFR55 FL150")
   check_eq(tr("rmv klm123", w), "DEL KLM123")
   check_eq(tr("delete AFR55, I will re-create it later", w), "DEL AFR55")
-  -- random traffic; a plural type read as a callsign is asked about
+  -- random traffic; a plural type is that type, unless an aircraft has that id
   check_eq(tr("please generate 12 random aircraft"), "MCRE 12")
   check_eq(tr("add four random E190 at FL150 please"), "MCRE 4 E190 FL150")
   check_eq(tr("seed 3, then spawn 8 random aircraft"), "SEED 3 ; MCRE 8")
-  check(asks("create six random B738s"), "a plural type")
+  check_eq(tr("create six random B738s"), "MCRE 6 B738")
+  check_eq(tr("add 5 random A320s at FL300 all going to EHAM"), "MCRE 5 A320 FL300 * EHAM")
+  check(asks("create six random B738s", { aircraft = { { id = "B738S", lat = 52, lon = 4 } } }), "B738S flies")
   check_eq(tr("run ahead 90 seconds"), "FF 90")
   -- "it" after a definition is the waypoint just defined, and is never matched to a name
   local ww = { aircraft = w.aircraft, waypoints = { "EXIT1", "SPY" } }
@@ -355,8 +357,9 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   -- a level condition said with "it passes / reaches / leaves"
   check_eq(tr("please descend AFR55 to FL150 and once it reaches FL250 slow it to 260 knots", w),
     "ALT AFR55 FL150 ; ATALT AFR55 FL250 SPD AFR55 260")
-  -- with no instruction word before it, the level said first must not wait for the condition: asked
-  check(asks("please take AFR55 down to FL150 and once it reaches FL250 slow it to 260 knots", w), "no ATALT prefix")
+  -- "down to" straight after the callsign is the instruction word; the level said first never waits
+  check_eq(tr("please take AFR55 down to FL150 and once it reaches FL250 slow it to 260 knots", w),
+    "ALT AFR55 FL150 ; ATALT AFR55 FL250 SPD AFR55 260")
   check_eq(tr("AFR55 descend FL100, when it leaves FL200 turn right heading 220", w),
     "ALT AFR55 FL100 ; ATALT AFR55 FL200 HDG AFR55 220 RIGHT")
   check_eq(tr("hold the sim, then let me look at the route of AFR55", ww), "HOLD ; LISTRTE AFR55")

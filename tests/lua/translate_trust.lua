@@ -44,7 +44,9 @@ check_eq(said(tr("KLM1234 climb FL320 to avoid a conflict with KLM77")), "ALT KL
 -- a duration said but not understood asks; a time no command carries is a leftover
 check_eq(said(tr("please fast forward the sim")), "FF")
 check_eq(said(tr("fast forward a little while")), "ASK For how long should the simulation fast-forward? Please give a time.")
-check_eq(said(tr("after 10 minutes remove KLM77")), "ASK I have DEL KLM77. What does '10 minutes' mean?")
+check_eq(said(tr("after 10 minutes remove KLM77")), "DELAY 600 DEL KLM77")
+check_eq(said(tr("KLM1234 climb FL300 and in 2 minutes KLM77 descend FL100")),
+  "ASK I have ALT KLM1234 FL300 ; ALT KLM77 FL100. What does '2 minutes' mean?")
 check_eq(said(tr("dtmult 6 and show trails")), "DTMULT 6 ; TRAIL ON")
 -- a second thing said in one breath is made too, or asked about, never dropped
 check_eq(said(tr("define waypoint P1 at 51.0 3.0 and P2 at 51.5 3.5")), "DEFWPT P1 51 3 ; DEFWPT P2 51.5 3.5")
@@ -590,4 +592,96 @@ do
   check_eq(ft("please carry on with the simulation"), "OP")
   check_eq(ft("could you slow everything down to half speed?"), "DTMULT 0.5")
   check_eq(ft("set the look-ahead time for conflict detection to 240 seconds"), "DTLOOK 240")
+end
+
+-- An experimenter's command box: sim control, creating and moving traffic, CD/CR settings
+do
+  local box = squawk.sim.new()
+  for _, line in ipairs({ "DEFWPT TULIP 52.3 4.6", "DEFWPT DAHLI 52.5 4.8", "CRE KL204 A320 52.0 4.0 090 FL250 280",
+      "CRE EZY45 A319 52.0 5.0 270 FL250 280", "CRE BAW123 B738 52.4 4.5 180 FL310 300", "ADDWPT BAW123 TULIP",
+      "ADDWPT BAW123 DAHLI", "CRE WZZ1234 A321 52.5 4.6 200 FL340 290" }) do
+    check(box:exec(line))
+  end
+  local function bt(text) return said(graph.translate(text, { sim = box, mode = "offline" })) end
+  -- the clock said as a clause of its own in a list runs; "KL204, resume" starts no clock
+  check_eq(bt("pause, BAW123 direct DAHLI, then go"), "HOLD ; DIRECT BAW123 DAHLI ; OP")
+  check_eq(bt("reso MVP, pz 4 nm, then carry on"), "RESO MVP ; ZONER 4 ; OP")
+  check_eq(bt("fine, carry on, run it"), "OP")
+  -- an airline said alone beside a resolved aircraft names no one aircraft: asked, never dropped
+  check(bt("remove the easyjet and the lufthansa"):find("^ASK No lufthansa aircraft") ~= nil,
+    bt("remove the easyjet and the lufthansa"))
+  -- "down/up N feet" is a change; "N right" after the callsign is a turn; a swapped letter pair is a typo
+  check_eq(bt("BAW123 down 3000 feet"), "ALT BAW123 28000")
+  check_eq(bt("KL204 20 left and up 2000 ft"), "HDG KL204 70 LEFT ; ALT KL204 27000")
+  check_eq(bt("EZY45 trun lfet heading 200"), "HDG EZY45 200 LEFT")
+  check_eq(bt("KL204 up to 300"), "ALT KL204 FL300")
+  check_eq(bt("KL204 +10 kts"), "SPD KL204 290")
+  check(bt("KL204 speed +10"):find("^ASK") ~= nil, "a signed value typed as TrafScript is no speed of 10 kt")
+  check(bt("KL204 to two eight zero"):find("^ASK Heading 280 or flight level 280") ~= nil, bt("KL204 to two eight zero"))
+  -- an aircraft the verb instructs is no context; one the aircraft is sent to meet is
+  check_eq(bt("for the conflict, get EZY45 up to FL310 to meet KL204"), "ALT EZY45 FL310")
+  -- route: a speed after "and" and a verb of its own; a speed with no level keeps ADDWPT's place
+  check_eq(bt("route KL204 via TULIP and DAHLI and give it 260 knots"),
+    "ADDWPT KL204 TULIP ; ADDWPT KL204 DAHLI ; SPD KL204 260")
+  check_eq(bt("KL204 add a waypoint at 52.2 4.4 at 250 knots"), "ADDWPT KL204 52.2 4.4,,250")
+  check_eq(bt("take DAHLI out of BAW123's route"), "DELWPT BAW123 DAHLI")
+  check_eq(bt("drop DAHLI from the speedbird's route"), "DELWPT BAW123 DAHLI")
+  -- waypoints: a name in capitals after the noun, degrees and decimal minutes, "and send X to it"
+  check_eq(bt("define a fix HOTEL at 52 15.0 N 004 45.0 E"), "DEFWPT HOTEL 52.25 4.75")
+  check_eq(bt("define MID1 at 52.2 4.5 and route EZY45 through it"), "DEFWPT MID1 52.2 4.5 ; ADDWPT EZY45 MID1")
+  -- CD/CR settings in words
+  check_eq(bt("vertical reso safety factor 1.2"), "RFACV 1.2")
+  check_eq(bt("set the horizontal resolution factor to 1.1"), "RFACH 1.1")
+  check(bt("resolution factor 1.3"):find("^ASK Should the horizontal or the vertical") ~= nil, "which factor")
+  check_eq(bt("allow vertical manoeuvres in the MVP resolutions"), "RMETHV V/S")
+  check_eq(bt("resolutions horizontal only please, no vertical"), "RMETHV OFF")
+  check_eq(bt("aircraft resume nav once past cpa"), "RESNAV PASTCPA")
+  check_eq(bt("switch on conflict detection with 3 nm and 800 ft"), "ASAS ON ; ZONER 3 ; ZONEDH 800")
+  check_eq(bt("what's the look-ahead now"), "DTLOOK")
+  check_eq(bt("lateral sep to 4 nm"), "ZONER 4")
+  -- timed instructions: by the clock (SCHEDULE) or from now (DELAY); one opening the request times all
+  check_eq(bt("at 15 minutes turn KL204 right heading 150"), "SCHEDULE 00:15:00 HDG KL204 150 RIGHT")
+  check_eq(bt("freeze the sim when the clock reaches 1 hour"), "SCHEDULE 01:00:00 HOLD")
+  check_eq(bt("after 90 seconds KL204 climb FL300 and EZY45 descend FL200"),
+    "DELAY 90 ALT KL204 FL300 ; DELAY 90 ALT EZY45 FL200")
+  check_eq(bt("make it 3x"), "DTMULT 3")
+  check_eq(bt("skip ahead three and a half minutes"), "FF 210")
+  check_eq(bt("ff an hour and a half"), "FF 5400")
+  check_eq(bt("fast forward 2 min then slow the clock to real time"), "FF 120 ; DTMULT 1")
+  -- positions from an aircraft: a distance and a compass point
+  check_eq(bt("move KL204 30 nm north"), "MOVE KL204 52.5 4")
+  check_eq(bt("shift EZY45 10 miles south of where it is now"), "MOVE EZY45 51.833333 5")
+  check_eq(bt("create KL205 A320 20 nm east of KL204 with the same heading, level and speed"),
+    "CRE KL205 A320 52 4.541423 90 FL250 280")
+  check_eq(bt("another Wizz: WZZ99, A321, 52.1 4.1, hdg 180, same FL as WZZ1234, 280 knots"),
+    "CRE WZZ99 A321 52.1 4.1 180 FL340 280")
+  check_eq(bt("callsign SAS11, A320, FL300, M.78, heading 045, at 52.6 4.2"), "CRE SAS11 A320 52.6 4.2 45 FL300 M0.78")
+  check_eq(bt("add 3 random B738s at FL200"), "MCRE 3 B738 FL200")
+  check_eq(bt("make 2 more random ones"), "MCRE 2")
+  -- an intruder set up against an aircraft, and a new aircraft instructed later in the request
+  check_eq(bt("make a conflict for EZY45: intruder INT9 A320, crossing from 45 degrees, cpa 0.5, los in 120 s"),
+    "CRECONFS INT9 A320 EZY45 45 0.5 120")
+  check(bt("spawn an intruder for EZY45: INT8, A320, cpa 1, los in 100 s"):find("^ASK At what angle") ~= nil,
+    "an intruder's angle asked")
+  check_eq(bt("create KL210 A320 at 52.2 4.2 heading 90 FL200 250 and send it to TULIP"),
+    "CRE KL210 A320 52.2 4.2 90 FL200 250 ; ADDWPT KL210 TULIP")
+  -- conditions, levels of others, queries
+  check_eq(bt("when BAW123 is 15 miles from DAHLI, descend it to FL250"), "ATDIST BAW123 DAHLI 15 ALT BAW123 FL250")
+  check_eq(bt("put EZY45 at the same level as BAW123"), "ALT EZY45 FL310")
+  check_eq(bt("KL204 keep it at FL250 and 260 kts"), "ALT KL204 FL250 ; SPD KL204 260")
+  check_eq(bt("destination of BAW123?"), "DEST BAW123")
+  check_eq(bt("bin the wizz"), "DEL WZZ1234")
+  -- a note for the log, a wind where the verb places it
+  check_eq(bt("write a note in the log: trial 4 begins"), "ECHO trial 4 begins")
+  check_eq(bt("set a wind at 52.2 4.2, FL200, from 300 at 35 knots"), "WIND 52.2 4.2 FL200 300 35")
+  check(bt("add wind at 52.2 4.2"):find("^ASK From which direction") ~= nil, "a wind with no direction asked")
+  -- a city said in capitals is its large airport; a small field far away is none a name means
+  if #box:airports_named("schiphol") == 1 then
+    check_eq(bt("KL204 is going to Frankfurt"), "DEST KL204 EDDF")
+    check_eq(bt("change EZY45's destination to Brussels"), "DEST EZY45 EBBR")
+    check(bt("EZY45 origin Amsterdam"):find("^ASK") ~= nil, bt("EZY45 origin Amsterdam"))
+  end
+  -- a time that no command carries beside a level is asked about (30000 is no heading 120)
+  check(bt("KL204 climb FL300 and in 2 minutes EZY45 climb FL280"):find("'2 minutes'", 1, true) ~= nil,
+    "a time in the middle of a request is asked about")
 end

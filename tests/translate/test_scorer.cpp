@@ -84,6 +84,22 @@ TEST_CASE("LNAV ON right after a direct-to of the same aircraft adds nothing") {
   CHECK_FALSE(score_case("DIRECT JBU614 BETTE ; LNAV UAL9 ON", false, "DIRECT JBU614 BETTE"));
 }
 
+TEST_CASE("a time compares in seconds as the simulator reads it: MM:SS and HH:MM:SS") {
+  CHECK(score_case("FF 1:30", false, "FF 90"));
+  CHECK(score_case("FF 90", false, "FF 0:01:30"));
+  CHECK_FALSE(score_case("FF 1:30", false, "FF 130"));
+  CHECK(score_case("SCHEDULE 1200 HOLD", false, "SCHEDULE 00:20:00 HOLD"));
+  CHECK_FALSE(score_case("SCHEDULE 1200 HOLD", false, "SCHEDULE 00:20:00 OP"));
+}
+
+TEST_CASE("AFTER / BEFORE acid wp ADDWPT new equal ADDWPT's afterwp / beforewp") {
+  CHECK(score_case("ADDWPT DLH4AX IVLUT,,,ARTIP", false, "AFTER DLH4AX ARTIP ADDWPT IVLUT"));
+  CHECK(score_case("ADDWPT DLH4AX NYKER,,,,ANDIK", false, "DLH4AX BEFORE ANDIK ADDWPT NYKER"));
+  CHECK(score_case("ADDWPT KL204 SSB,FL100,,SPL", false, "KL204 AFTER SPL ADDWPT SSB FL100"));
+  CHECK_FALSE(score_case("ADDWPT DLH4AX IVLUT,,,ARTIP", false, "BEFORE DLH4AX ARTIP ADDWPT IVLUT"));
+  CHECK_FALSE(score_case("ADDWPT DLH4AX IVLUT", false, "AFTER DLH4AX ARTIP ADDWPT IVLUT"));
+}
+
 TEST_CASE("BlueSky's callsign-first form equals the command-first one, nested too") {
   CHECK(same_command("KL1 SPD 250", "SPD KL1 250"));
   CHECK(same_command("ATALT KL1 FL130 SPD KL1 250", "ATALT KL1 FL130 KL1 SPD 250"));
