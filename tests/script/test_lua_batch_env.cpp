@@ -144,6 +144,26 @@ TEST_CASE("an action off the grid or a Lua error ends the run with the file's na
   REQUIRE_FALSE(r.is_ok());
   CHECK(r.status().message().find("no step here") != std::string::npos);
   CHECK(e->finished());
+
+  // The learner stops on it too, with the same message.
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 1;
+  spec.hidden = {4};
+  spec.action_values = script::grid_values(3);
+  Rng init(0);
+  auto p = rl::MlpPolicy::make(spec, init);
+  REQUIRE(p);
+  rl::TrainConfig tc;
+  tc.episodes = 8;
+  tc.episodes_per_update = 4;
+  tc.num_envs = 2;
+  rl::Trainer tr(**p, *e, tc, 0);
+  rl::TrainProgress progress;
+  auto ended = rl::run_training(tr, **p, *e, tc, 0, progress, {},
+                                [](const rl::UpdateReport&) -> Result<bool> { return true; });
+  REQUIRE_FALSE(ended.is_ok());
+  CHECK(ended.status().message().find("no step here") != std::string::npos);
+  CHECK(progress.episodes == 0);
 }
 
 TEST_CASE("the MLP learner raises the return of a Lua environment (sign.lua: random -6, best 0)") {
