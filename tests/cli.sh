@@ -35,6 +35,18 @@ expect "env run sector"  0 "terminated +0 of 3; truncated 3" -- "$sq" env run en
 expect "env run merge"   0 '"env": "MergeEnv-v0", "policy": "random", "episodes": 2' -- "$sq" env run envs/merge.lua --episodes 2 --json
 expect "env multi"       1 "field 'parallel' = true: a multi-agent environment" -- "$sq" env run envs/sector_multi.lua
 expect "env no file"     1 "no environment file 'envs/nope.lua'" -- "$sq" env run envs/nope.lua
+# An MLP trained on a Lua environment (squawk train --env) and evaluated by env
+# run: sign.lua pays -6 an episode to random actions, 0 to the best policy.
+gt=$(mktemp -d)
+expect "train env"       0 "done: 960 episodes" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/sign" --episodes 960 --eval-every 320
+expect "train env log"   0 "^960,60," -- cat "$gt/sign/log.csv"
+expect "env run mlp"     0 '"policy": "mlp:.*sign/policy.ckpt", "episodes": 40, "seed": 0, "mean_reward": (0|-0\.[0-9]+),' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/sign/policy.ckpt" --episodes 40 --json
+expect "env run mlp greedy" 0 '"mean_reward": 0, "std_reward": 0' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/sign/policy.ckpt" --greedy --episodes 40 --json
+expect "env mlp mismatch" 1 "reads 1 observation numbers; DescentEnv-v0 gives 4" -- "$sq" env run envs/descent.lua --policy "mlp:$gt/sign/policy.ckpt"
+expect "env greedy alone" 2 "--greedy goes with --policy mlp:CKPT" -- "$sq" env run envs/descent.lua --greedy
+expect "train env vine"  2 "on --env use \"improved\"" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/vine" --estimator vine
+expect "train levels alone" 2 "--levels and --hidden shape the policy of a --env" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --levels 3
+rm -rf "$gt"
 expect "env plan waypoint" 0 "observation 20 numbers, action 1 in \[-1, 1\], at most 300 steps" -- "$sq" env run envs/plan_waypoint.lua --policy random --episodes 2
 expect "env run horizontal" 0 "terminated +1000 of 1000; truncated 0" -- "$sq" env run envs/horizontal_cr.lua --policy random --episodes 1000
 expect "eval env file"   0 "scenario +envs/horizontal_cr_gym.lua \(gym rules" -- "$sq" eval envs/horizontal_cr_gym.lua --policy zero --episodes 20

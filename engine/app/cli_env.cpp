@@ -1,11 +1,15 @@
 // squawk env: environments written as Lua files (envs/*.lua, script/lua_env.h).
 //
-//   squawk env run ENV.lua [--policy random|zero|constant:V[,V...]|script:FILE]
-//                          [--episodes N] [--seed S] [--json]
+//   squawk env run ENV.lua [--policy random|zero|constant:V[,V...]|script:FILE|mlp:CKPT]
+//                          [--greedy] [--episodes N] [--seed S] [--json]
 // Episode k (0-based) resets with seed S + k; the random policy draws each
 // action uniformly in the declared Box from Rng(S); a script policy
 // (script/lua_policy.h) is reset with the episode's seed and asked for every
-// action. Prints the environment, then the episode statistics of EpisodeStats.
+// action. mlp:CKPT is a checkpoint of `squawk train --env`
+// (app/cli_train_env.h): its categorical head picks a class of the action grid
+// (script/lua_batch_env.h) from the observation, sampled from Rng(S) (the mode
+// with --greedy). Prints the environment, then the episode statistics of
+// EpisodeStats.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -24,6 +28,9 @@
 #include "core/files.h"
 #include "core/rng.h"
 #include "core/text.h"
+#include "rl/checkpoint.h"
+#include "rl/mlp_policy.h"
+#include "script/lua_batch_env.h"
 #include "script/lua_env.h"
 #include "script/lua_policy.h"
 
@@ -34,7 +41,9 @@ namespace {
 struct EnvPolicy {
   bool random = false;
   std::string script;            // the policy file of script:FILE, or ""
-  std::vector<double> constant;  // the action when neither random nor scripted
+  std::vector<double> constant;        // the action when neither random, scripted nor an MLP
+  std::unique_ptr<rl::MlpPolicy> mlp;  // mlp:CKPT
+  int levels = 0;                      // [-] mlp: grid levels per action component
 };
 
 // What `squawk env run` reports over its episodes. Success counts episodes
@@ -64,6 +73,28 @@ struct EpisodeStats {
            static_cast<double>(std::max(1LL, steps));
   }
 };
+
+// mlp:CKPT: a categorical MLP over `spec`'s action grid that reads its observation.
+Status load_mlp(const std::string& path, const script::LuaEnvSpec& spec, EnvPolicy& pol) {
+  SQUAWK_ASSIGN_OR_RETURN(rl::Checkpoint ck, rl::load_checkpoint(path));
+  SQUAWK_ASSIGN_OR_RETURN(pol.mlp, rl::policy_from_checkpoint(ck));
+  const rl::MlpPolicySpec& ps = pol.mlp->spec();
+  if (ps.obs_size != spec.observation_size)
+    return Status::invalid(path + ": the policy reads " + std::to_string(ps.obs_size) +
+                           " observation numbers; " + spec.id + " gives " +
+                           std::to_string(spec.observation_size) + " (trained on " +
+                           ck.progress.scenario + ")");
+  const auto classes = static_cast<int>(ps.action_values.size());
+  bool grid = ps.head == "categorical";
+  for (int c = 0; grid && c < classes; ++c)
+    grid = script::grid_class(ps.action_values[static_cast<size_t>(c)], classes) == c;
+  if (!grid)
+    return Status::invalid(
+        path + ": not a policy over an action grid (squawk train --env writes those; trained on " +
+        ck.progress.scenario + ")");
+  SQUAWK_ASSIGN_OR_RETURN(pol.levels, script::grid_levels(spec, classes));
+  return Status::ok();
+}
 
 Result<EnvPolicy> parse_policy(const std::string& p, const script::LuaEnvSpec& spec) {
   EnvPolicy pol;
@@ -100,12 +131,17 @@ Result<EnvPolicy> parse_policy(const std::string& p, const script::LuaEnvSpec& s
     pol.script = p.substr(7);
     return pol;
   }
+  if (p.rfind("mlp:", 0) == 0) {
+    SQUAWK_RETURN_IF_ERROR(load_mlp(p.substr(4), spec, pol));
+    return pol;
+  }
   return Status::invalid("--policy '" + p +
-                         "': expected random, zero, constant:V[,V...] or script:FILE");
+                         "': expected random, zero, constant:V[,V...], script:FILE or mlp:CKPT");
 }
 
 int env_run(const ArgV& argv) {
-  auto args = Args::parse(argv, with_vm_flags({{"--policy", "--episodes"}, {"--json"}}));
+  auto args =
+      Args::parse(argv, with_vm_flags({{"--policy", "--episodes"}, {"--json", "--greedy"}}));
   if (!args) return usage_error("env", args.status().message());
   if (args->positional().size() != 2)
     return usage_error("env", "usage: squawk env run ENV.lua [flags]");
@@ -122,7 +158,15 @@ int env_run(const ArgV& argv) {
   const script::LuaEnvSpec& spec = e.spec();
   const std::string policy_name = args->get_or("--policy", "random");
   auto policy = parse_policy(policy_name, spec);
-  if (!policy) return usage_error("env", policy.status().message());
+  if (!policy) {
+    if (policy_name.rfind("mlp:", 0) == 0) return failure(policy.status());
+    return usage_error("env", policy.status().message());
+  }
+  if (args->has("--greedy") && !policy->mlp)
+    return usage_error("env", "--greedy goes with --policy mlp:CKPT");
+  const bool greedy = args->has("--greedy");
+  std::vector<float> obs(static_cast<size_t>(spec.observation_size));
+  const int row = 0;
 
   std::unique_ptr<script::LuaPolicy> scripted;
   if (!policy->script.empty()) {
@@ -149,6 +193,11 @@ int env_run(const ArgV& argv) {
       if (scripted) {
         if (Status a = scripted->act(e.observation(), action); !a.is_ok())
           return failure(Status::invalid(shown_error(a.message())));
+      } else if (policy->mlp) {
+        for (size_t j = 0; j < obs.size(); ++j) obs[j] = static_cast<float>(e.observation()[j]);
+        rl::ActionSample choice;
+        policy->mlp->act(obs, 1, {&row, 1}, {&rng, 1}, greedy, {&choice, 1});
+        script::grid_action(spec, policy->levels, choice.index, action);
       } else {
         for (size_t a = 0; a < action.size(); ++a)
           action[a] = policy->random ? rng.uniform(spec.action_low[a], spec.action_high[a])

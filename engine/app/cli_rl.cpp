@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/cli.h"
+#include "app/cli_train_env.h"
 #include "app/gpt2_policy_factory.h"
 #include "app/interrupt.h"
 #include "app/learner_flags.h"
@@ -36,9 +37,16 @@ Status save_on_rank0(script::Learner& l, const std::string& path, rl::Trainer* t
 int cmd_train(const ArgV& given) {
   auto argv = resolve_train_argv(given, train_flags(true));
   if (!argv) return usage_error("train", argv.status().message());
+  if (auto probe = Args::parse(*argv, train_flags(true)); probe) {
+    if (probe->has("--env") && wants_gpt2(*argv))
+      return usage_error("train", "--env trains --policy mlp only");
+    if (!probe->has("--env") && (probe->has("--levels") || probe->has("--hidden")))
+      return usage_error("train", "--levels and --hidden shape the policy of a --env ENV.lua run");
+  }
   if (wants_gpt2(*argv)) return cmd_train_gpt2(*argv);
   auto args = Args::parse(*argv, train_flags(false));
   if (!args) return usage_error("train", args.status().message());
+  if (args->has("--env")) return cmd_train_env(*args);
   if (args->get_or("--policy", "mlp") != "mlp")
     return usage_error("train", "--policy: only 'mlp' trains here, got '" + args->get_or("--policy", "") + "'");
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");

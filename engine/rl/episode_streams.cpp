@@ -1,8 +1,10 @@
 #include "rl/episode_streams.h"
 
+#include "env/vec_env.h"
+
 namespace squawk::rl {
 
-std::span<Rng> EpisodeStreams::rows(const env::VecEnv& envs) {
+std::span<Rng> EpisodeStreams::rows(const env::BatchEnv& envs) {
   const auto slots = static_cast<size_t>(envs.size());
   if (slot_rng_.size() != slots) {
     slot_rng_.assign(slots, Rng());
@@ -12,7 +14,7 @@ std::span<Rng> EpisodeStreams::rows(const env::VecEnv& envs) {
   rows_.clear();
   for (int s : envs.waiting()) {
     const auto i = static_cast<size_t>(s);
-    const uint64_t k = envs.env(s).stats().index;
+    const uint64_t k = envs.episode(s);
     if (!slot_set_[i] || slot_episode_[i] != k) {
       slot_rng_[i] = Rng(env::episode_seed(seed_, k));
       slot_episode_[i] = k;
@@ -23,7 +25,7 @@ std::span<Rng> EpisodeStreams::rows(const env::VecEnv& envs) {
   return rows_;
 }
 
-void EpisodeStreams::keep(const env::VecEnv& envs) {
+void EpisodeStreams::keep(const env::BatchEnv& envs) {
   const std::vector<int>& waiting = envs.waiting();
   for (size_t r = 0; r < waiting.size() && r < rows_.size(); ++r) slot_rng_[static_cast<size_t>(waiting[r])] = rows_[r];
 }

@@ -1,4 +1,4 @@
-// EpisodeStreams: one random stream per episode of a VecEnv run. Episode k
+// EpisodeStreams: one random stream per episode of a BatchEnv run. Episode k
 // draws its policy samples from Rng(episode_seed(seed, k)) alone, so they do
 // not depend on its slot, on the episodes beside it, or on the process of a
 // data-parallel job that plays it (dist/comm.h): a batch of numbered episodes
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/rng.h"
-#include "env/vec_env.h"
+#include "env/batch_env.h"
 
 namespace squawk::rl {
 
@@ -23,13 +23,13 @@ class EpisodeStreams {
   explicit EpisodeStreams(uint64_t seed) : seed_(seed) {}
 
   // The streams of envs.waiting(), one per row.
-  std::span<Rng> rows(const env::VecEnv& envs);
+  std::span<Rng> rows(const env::BatchEnv& envs);
   // Stores the streams rows() returned, as the policy left them, back to their slots.
-  void keep(const env::VecEnv& envs);
+  void keep(const env::BatchEnv& envs);
 
  private:
   uint64_t seed_;
-  std::vector<Rng> slot_rng_;          // per VecEnv slot
+  std::vector<Rng> slot_rng_;          // per slot
   std::vector<uint64_t> slot_episode_; // [-] the episode each slot's stream belongs to
   std::vector<uint8_t> slot_set_;      // 1 once the slot has a stream
   std::vector<Rng> rows_;

@@ -71,7 +71,7 @@ std::vector<env::EpisodeStats> gather(const std::vector<env::EpisodeStats>& mine
 
 }  // namespace
 
-Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions& opts,
+Result<EvalResult> evaluate(Policy& policy, env::BatchEnv& envs, const EvalOptions& opts,
                             const std::function<void(long long, long long)>& progress) {
   if (opts.episodes < 1)
     return Status::invalid("evaluation needs at least 1 episode, got " + std::to_string(opts.episodes));

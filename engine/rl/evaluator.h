@@ -20,7 +20,7 @@
 #include <array>
 #include <functional>
 
-#include "env/vec_env.h"
+#include "env/batch_env.h"
 #include "rl/policy.h"
 
 namespace squawk::rl {
@@ -60,7 +60,7 @@ struct EvalResult {
 
 // progress(done, total) is called after every batched step when given (in a
 // job of several ranks, done is this rank's count times the number of ranks).
-Result<EvalResult> evaluate(Policy& policy, env::VecEnv& envs, const EvalOptions& opts,
+Result<EvalResult> evaluate(Policy& policy, env::BatchEnv& envs, const EvalOptions& opts,
                             const std::function<void(long long, long long)>& progress = {});
 
 }  // namespace squawk::rl

@@ -4,7 +4,7 @@
 
 namespace squawk::rl {
 
-Result<bool> play(env::VecEnv& envs, uint64_t seed, uint64_t first, uint64_t count,
+Result<bool> play(env::BatchEnv& envs, uint64_t seed, uint64_t first, uint64_t count,
                   const Driver& driver) {
   envs.completed().clear();
   envs.start(seed, first, count);
@@ -23,13 +23,14 @@ Result<bool> play(env::VecEnv& envs, uint64_t seed, uint64_t first, uint64_t cou
     SQUAWK_RETURN_IF_ERROR(driver.choose(turn));
     for (size_t r = 0; r < n; ++r) actions[r] = acts[r].value;
     envs.step(actions, rewards, dones);
+    SQUAWK_RETURN_IF_ERROR(envs.error());
     turn.obs = {};
     if (driver.after && !driver.after(turn)) return false;
   }
   return true;
 }
 
-std::function<Status(Turn&)> policy_choice(Policy& policy, env::VecEnv& envs,
+std::function<Status(Turn&)> policy_choice(Policy& policy, env::BatchEnv& envs,
                                            EpisodeStreams& streams, bool greedy) {
   return [&policy, &envs, &streams, greedy](Turn& t) {
     policy.act(t.obs, static_cast<int>(t.slots.size()), t.slots, streams.rows(envs), greedy,

@@ -5,7 +5,7 @@
 
 namespace squawk::rl {
 
-Result<RunEnd> run_training(Trainer& trainer, Policy& policy, env::VecEnv& eval_envs,
+Result<RunEnd> run_training(Trainer& trainer, Policy& policy, env::BatchEnv& eval_envs,
                             const TrainConfig& cfg, uint64_t validation_seed,
                             TrainProgress& progress, const UpdateProgress& within,
                             const OnUpdate& on_update) {
@@ -18,6 +18,7 @@ Result<RunEnd> run_training(Trainer& trainer, Policy& policy, env::VecEnv& eval_
   while (progress.episodes < end) {
     const auto u0 = Clock::now();
     const UpdateStats st = trainer.update(within);
+    SQUAWK_RETURN_IF_ERROR(trainer.envs().error());
     if (st.interrupted) return RunEnd::kInterrupted;
     const auto now = Clock::now();
     SQUAWK_RETURN_IF_ERROR(policy.error());

@@ -10,7 +10,8 @@
 // cfg.eval_episodes episodes of `validation_seed` on `eval_envs`
 // (evaluator.h). Then on_update(report) runs: false ends the run (kStopped),
 // an error ends it with that error. A policy failure (Policy::error) ends it
-// too, before on_update.
+// too, before on_update, and so does an environment's (BatchEnv::error of
+// the training or the evaluation batch).
 // `within` is Trainer::update's progress callback: its false abandons the
 // update in progress and ends the run kInterrupted, `progress` as after the
 // last finished update.
@@ -20,7 +21,7 @@
 #include <functional>
 
 #include "core/status.h"
-#include "env/vec_env.h"
+#include "env/batch_env.h"
 #include "rl/checkpoint.h"
 #include "rl/evaluator.h"
 #include "rl/vpg.h"
@@ -38,7 +39,7 @@ enum class RunEnd { kFinished, kStopped, kInterrupted };
 
 using OnUpdate = std::function<Result<bool>(const UpdateReport&)>;
 
-Result<RunEnd> run_training(Trainer& trainer, Policy& policy, env::VecEnv& eval_envs,
+Result<RunEnd> run_training(Trainer& trainer, Policy& policy, env::BatchEnv& eval_envs,
                             const TrainConfig& cfg, uint64_t validation_seed,
                             TrainProgress& progress, const UpdateProgress& within,
                             const OnUpdate& on_update);

@@ -71,7 +71,8 @@ Status check_learner(const Policy& policy, const TrainConfig& config) {
   return Status::ok();
 }
 
-Trainer::Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, long long update_index)
+Trainer::Trainer(Policy& policy, env::BatchEnv& envs, const TrainConfig& config,
+                 long long update_index)
     : policy_(policy),
       envs_(envs),
       cfg_(config),
@@ -311,7 +312,8 @@ bool Trainer::collect(const UpdateProgress& progress) {
   episodes_.assign(part.count, Episode{});
   for (Episode& e : slot_episode_) e = Episode{};
   EpisodeStreams policy_streams(cfg_.seed ^ kTrainPolicySalt), branch_streams(cfg_.seed ^ kBranchSalt);
-  const bool vine = cfg_.estimator == "vine";
+  env::VecEnv* const compiled = envs_.horizontal();
+  const bool vine = cfg_.estimator == "vine" && compiled;
   const auto act = policy_choice(policy_, envs_, policy_streams, false);
   Driver driver;
   driver.choose = [&](Turn& t) {
@@ -319,12 +321,12 @@ bool Trainer::collect(const UpdateProgress& progress) {
     const std::span<Rng> branch_rngs = vine ? branch_streams.rows(envs_) : std::span<Rng>();
     for (size_t r = 0; r < t.slots.size(); ++r) {
       const auto s = static_cast<size_t>(t.slots[r]);
-      slot_index_[s] = envs_.env(t.slots[r]).stats().index;
+      slot_index_[s] = envs_.episode(t.slots[r]);
       auto& so = slot_episode_[s].obs;
       so.insert(so.end(), t.obs.begin() + static_cast<long>(r * obs),
                 t.obs.begin() + static_cast<long>((r + 1) * obs));
       if (vine && branch_rngs[r].uniform() < cfg_.branch_fraction)
-        slot_episode_[s].branches.push_back(envs_.env(t.slots[r]));
+        slot_episode_[s].branches.push_back(compiled->env(t.slots[r]));
     }
     if (vine) branch_streams.keep(envs_);
     return Status::ok();

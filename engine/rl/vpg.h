@@ -56,6 +56,7 @@
 #include <string>
 #include <vector>
 
+#include "env/batch_env.h"
 #include "env/vec_env.h"
 #include "nn/adam.h"
 #include "nn/mlp.h"
@@ -97,7 +98,9 @@ struct TrainConfig {
 };
 
 // Ok unless `config` asks for a learner `policy` cannot drive (ppo and vine
-// need Policy::log_probs, vine a discrete head).
+// need Policy::log_probs, vine a discrete head). vine also needs the compiled
+// HorizontalCR batch (BatchEnv::horizontal()) to branch from snapshots; on
+// other batches it takes no step.
 Status check_learner(const Policy& policy, const TrainConfig& config);
 
 struct UpdateStats {
@@ -121,7 +124,9 @@ using UpdateProgress = std::function<bool(long long done_in_batch)>;
 class Trainer {
  public:
   // `update_index` is the number of updates already taken (resume).
-  Trainer(Policy& policy, env::VecEnv& envs, const TrainConfig& config, long long update_index);
+  // `envs`: the batch the episodes are played on (env/batch_env.h).
+  Trainer(Policy& policy, env::BatchEnv& envs, const TrainConfig& config, long long update_index);
+  env::BatchEnv& envs() { return envs_; }
   UpdateStats update(const UpdateProgress& progress = {});
   nn::Adam& adam() { return adam_; }
   long long updates() const { return updates_; }
@@ -168,7 +173,7 @@ class Trainer {
   void vine_steps(double c_h, UpdateStats& st);
 
   Policy& policy_;
-  env::VecEnv& envs_;
+  env::BatchEnv& envs_;
   TrainConfig cfg_;
   nn::Adam adam_;
   long long updates_ = 0;

@@ -1,0 +1,181 @@
+// squawk train --env ENV.lua --out DIR: the MLP learner on an environment
+// written in Lua (script/lua_batch_env.h), with the Box action discretised
+// into --levels K values per component and a categorical head over the K^d
+// grid classes.
+#include "app/cli_train_env.h"
+
+#include <cstdio>
+#include <memory>
+
+#include "app/cli.h"
+#include "app/interrupt.h"
+#include "app/learner_flags.h"
+#include "app/progress_bar.h"
+#include "app/subcommands.h"
+#include "app/train_log.h"
+#include "app/vm_options.h"
+#include "core/files.h"
+#include "core/text.h"
+#include "rl/checkpoint.h"
+#include "rl/mlp_policy.h"
+#include "rl/train_run.h"
+#include "script/lua_batch_env.h"
+
+namespace squawk::app {
+
+namespace {
+
+// The training defaults for Lua environments (flags override each).
+rl::TrainConfig lua_train_defaults() {
+  rl::TrainConfig c;
+  c.episodes = 2000;
+  c.episodes_per_update = 16;
+  c.num_envs = 8;
+  c.lr = c.lr_final = 3e-3;
+  c.eval_every = 500;
+  c.eval_episodes = 50;
+  return c;
+}
+
+// --hidden W[,W...]: the policy's hidden widths.
+Result<std::vector<int>> hidden_widths(const Args& args) {
+  std::vector<int> widths;
+  const std::string given = args.get_or("--hidden", "64,64");
+  for (const std::string& part : text::split(given, ',')) {
+    char* end = nullptr;
+    const long w = std::strtol(part.c_str(), &end, 10);
+    if (part.empty() || *end != '\0' || w < 1 || w > 4096)
+      return Status::invalid("--hidden " + given + ": '" + part + "' is not a width in 1..4096");
+    widths.push_back(static_cast<int>(w));
+  }
+  return widths;
+}
+
+Status save(const std::string& path, const rl::MlpPolicySpec& spec, rl::Policy& policy,
+            const rl::TrainProgress& progress, rl::Trainer* trainer) {
+  rl::Checkpoint c;
+  c.spec = spec;
+  if (trainer) {
+    trainer->save(c);
+  } else {
+    c.params.assign(policy.params().begin(), policy.params().end());
+  }
+  c.progress = progress;
+  return rl::save_checkpoint(path, c);
+}
+
+}  // namespace
+
+int cmd_train_env(const Args& args) {
+  const std::string file = *args.get("--env");
+  if (!args.positional().empty())
+    return usage_error("train",
+                       "--env " + file + " names the environment: no SCENARIO.lua besides it");
+  if (args.get_or("--policy", "mlp") != "mlp")
+    return usage_error("train",
+                       "--env trains --policy mlp only, got '" + args.get_or("--policy", "") + "'");
+  if (args.has("--resume") || args.has("--mirror"))
+    return usage_error("train", std::string("--env does not take ") +
+                                    (args.has("--resume") ? "--resume" : "--mirror"));
+  if (!args.has("--out")) return usage_error("train", "missing --out DIR");
+  if (!files::exists(file)) return failure(Status::not_found("no environment file '" + file + "'"));
+  auto vo = vm_options(args);
+  if (!vo) return usage_error("train", vo.status().message());
+  vo->out_dir.clear();  // environments write nothing
+  rl::TrainConfig cfg = lua_train_defaults();
+  if (Status st = apply_learner_flags(args, cfg.episodes, cfg.lr, cfg); !st.is_ok())
+    return usage_error("train", st.message());
+  if (cfg.estimator == "vine")
+    return usage_error("train",
+                       "--estimator vine branches the compiled HorizontalCR kernel; on --env use "
+                       "\"improved\", \"ppo\" or \"vpg\"");
+  auto levels = args.get_int("--levels", 5);
+  if (!levels) return usage_error("train", levels.status().message());
+  auto hidden = hidden_widths(args);
+  if (!hidden) return usage_error("train", hidden.status().message());
+  auto validation = validation_seed(args, 0);
+  if (!validation) return usage_error("train", validation.status().message());
+
+  auto train_envs = script::LuaBatchEnv::make(file, *vo, cfg.num_envs, static_cast<int>(*levels));
+  if (!train_envs) return failure(Status::invalid(shown_error(train_envs.status().message())));
+  auto eval_envs = script::LuaBatchEnv::make(file, *vo, cfg.num_envs, static_cast<int>(*levels));
+  if (!eval_envs) return failure(Status::invalid(shown_error(eval_envs.status().message())));
+  const script::LuaEnvSpec& es = (*train_envs)->spec();
+
+  rl::MlpPolicySpec spec;
+  spec.obs_size = es.observation_size;
+  spec.hidden = *hidden;
+  spec.action_values = script::grid_values((*train_envs)->classes());
+  Rng init(cfg.seed);
+  auto policy = rl::MlpPolicy::make(spec, init);
+  if (!policy) return failure(policy.status());
+
+  const std::string out = *args.get("--out");
+  auto run = open_run_folder(out, args);
+  if (!run) return failure(run.status());
+  rl::TrainProgress progress;
+  progress.seed = cfg.seed;
+  progress.estimator = cfg.estimator;
+  progress.scenario = file;
+  rl::Trainer trainer(**policy, **train_envs, cfg, 0);
+  auto log = TrainLog::open(*run, 0);
+  if (!log) return failure(log.status());
+  const bool quiet = args.has("--quiet");
+  if (!quiet)
+    std::printf(
+        "training mlp on %s (%s): %d action classes (%lld levels x %d components), %s, estimator "
+        "%s, "
+        "%zu parameters, seed %llu\n",
+        es.id.c_str(), file.c_str(), (*train_envs)->classes(), *levels, es.action_size(),
+        episodes_text(cfg).c_str(), cfg.estimator.c_str(), (*policy)->params().size(),
+        static_cast<unsigned long long>(cfg.seed));
+  const std::string best_path = out + "/best.ckpt", policy_path = out + "/policy.ckpt";
+  ProgressBar bar("train", cfg.end_episodes(), !quiet);
+  double best_reward = 0.0;
+  bool have_best = false;
+  InterruptGuard interrupt;
+  auto ended = rl::run_training(
+      trainer, **policy, **eval_envs, cfg, *validation, progress,
+      [](long long) { return !InterruptGuard::requested(); },
+      [&](const rl::UpdateReport& u) -> Result<bool> {
+        log->add(progress, u.stats);
+        char extra[96];
+        std::snprintf(extra, sizeof extra, "return %.3f", u.stats.mean_return);
+        bar.update(u.progress.episodes, extra);
+        if (!u.eval) return true;
+        SQUAWK_RETURN_IF_ERROR(log->row(progress, *u.eval));
+        SQUAWK_RETURN_IF_ERROR(save(run->checkpoint, spec, **policy, progress, &trainer));
+        if (!have_best || u.eval->mean_reward > best_reward) {
+          have_best = true;
+          best_reward = u.eval->mean_reward;
+          SQUAWK_RETURN_IF_ERROR(save(best_path, spec, **policy, progress, nullptr));
+        }
+        if (!quiet) {
+          char line[160];
+          std::snprintf(line, sizeof line,
+                        "%lld episodes, %.0f s: eval mean reward %.3f (std %.3f), %.1f steps\n",
+                        u.progress.episodes, u.progress.wall_s, u.eval->mean_reward,
+                        u.eval->std_reward, u.eval->mean_steps);
+          bar.note(line);
+        }
+        return true;
+      });
+  bar.finish();
+  if (!ended) return failure(Status::invalid(shown_error(ended.status().message())));
+  if (*ended == rl::RunEnd::kInterrupted) {
+    std::printf("interrupted after %lld episodes; %s holds the last evaluated policy\n",
+                progress.episodes, run->checkpoint.c_str());
+    return kExitInterrupted;
+  }
+  if (Status s = save(policy_path, spec, **policy, progress, nullptr); !s.is_ok())
+    return failure(s);
+  if (!quiet)
+    std::printf(
+        "done: %lld episodes in %s; policy %s (the last), best %s (highest evaluation mean "
+        "reward), log %s\n",
+        progress.episodes, fmt_duration(progress.wall_s).c_str(), policy_path.c_str(),
+        best_path.c_str(), run->log.c_str());
+  return kExitOk;
+}
+
+}  // namespace squawk::app

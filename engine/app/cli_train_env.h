@@ -1,0 +1,18 @@
+// `squawk train --env ENV.lua --out DIR [--levels K] [--hidden W,...]
+// [learner flags]`: the MLP learner (rl/vpg.h) on an environment written in
+// Lua, its Box action discretised into K levels per component (default 5)
+// and a categorical head over the K^d grid classes (script/lua_batch_env.h).
+// Writes DIR/checkpoint.ckpt (with the learner's state) and DIR/best.ckpt
+// (the highest validation mean reward) at each evaluation, DIR/policy.ckpt
+// (the last policy) at the end and DIR/log.csv; `squawk env run ENV.lua
+// --policy mlp:CKPT` evaluates a checkpoint.
+#pragma once
+
+#include "app/cli.h"
+
+namespace squawk::app {
+
+// `args`: train's parsed flags, with --env.
+int cmd_train_env(const Args& args);
+
+}  // namespace squawk::app

@@ -1,0 +1,209 @@
+// Lua environments as a batch for the learner (script/lua_batch_env.h): the
+// action grid, episodes identical to the single-instance driver whatever the
+// number of slots, errors that end a run, and the MLP learner raising the
+// return of a trivially learnable file (tests/data/gym/sign.lua).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "rl/evaluator.h"
+#include "rl/mlp_policy.h"
+#include "rl/play.h"
+#include "rl/train_run.h"
+#include "rl/vpg.h"
+#include "scratch_dir.h"
+#include "script/lua_batch_env.h"
+
+using namespace squawk;
+
+namespace {
+
+std::string repo(const char* rel) {
+  return std::string(SQUAWK_TEST_DATA) + "/../../" + rel;
+}
+
+std::unique_ptr<script::LuaBatchEnv> batch(const std::string& path, int slots, int levels) {
+  auto b = script::LuaBatchEnv::make(path, {}, slots, levels);
+  REQUIRE_MESSAGE(b.is_ok(), b.status().message());
+  return std::move(*b);
+}
+
+// The grid class of episode k's step t in the tests below.
+int class_of(uint64_t k, int t, int classes) {
+  return static_cast<int>((k * 7 + static_cast<uint64_t>(t) * 3) % static_cast<uint64_t>(classes));
+}
+
+}  // namespace
+
+TEST_CASE("the action grid: K levels per component, component j from digit j of the class") {
+  script::LuaEnvSpec s;
+  s.id = "Box2";
+  s.action_low = {-1, 0};
+  s.action_high = {1, 10};
+  auto c = script::grid_classes(s, 5);
+  REQUIRE(c);
+  CHECK(*c == 25);
+  std::vector<double> a(2);
+  script::grid_action(s, 5, 0, a);
+  CHECK(a == std::vector<double>{-1, 0});
+  script::grid_action(s, 5, 24, a);
+  CHECK(a == std::vector<double>{1, 10});
+  script::grid_action(s, 5, 7, a);  // digits 2, 1
+  CHECK(a == std::vector<double>{0, 2.5});
+  CHECK(script::grid_value(0, 25) == -1.0);
+  CHECK(script::grid_value(24, 25) == 1.0);
+  CHECK(script::grid_class(static_cast<float>(script::grid_value(7, 25)), 25) == 7);
+  CHECK(script::grid_class(0.05, 25) == -1);
+  CHECK(script::grid_class(1.0, 25) == 24);
+  auto k = script::grid_levels(s, 25);
+  REQUIRE(k);
+  CHECK(*k == 5);
+  CHECK(script::grid_levels(s, 24).status().message().find(
+            "24 action classes does not fit Box2's 2") != std::string::npos);
+  CHECK(script::grid_classes(s, 1).status().message().find("expected at least 2") !=
+        std::string::npos);
+  CHECK(script::grid_classes(s, 100).status().message().find("more than 4096 classes") !=
+        std::string::npos);
+}
+
+TEST_CASE("a batch plays the same episodes as one instance stepped alone, whatever its slots") {
+  const std::string path = repo("envs/descent.lua");
+  auto one = script::LuaEnv::load(path, {});
+  REQUIRE(one);
+  const int levels = 5;
+  std::vector<double> want;  // returns of episodes 0..5 of seed 40
+  std::vector<double> act(1);
+  for (uint64_t k = 0; k < 6; ++k) {
+    REQUIRE((*one)->reset(40 + k).is_ok());
+    double total = 0;
+    for (int t = 0;; ++t) {
+      script::grid_action((*one)->spec(), levels, class_of(k, t, levels), act);
+      auto r = (*one)->step(act);
+      REQUIRE(r);
+      total += r->reward;
+      if (r->terminated || r->truncated) break;
+    }
+    want.push_back(total);
+  }
+  for (int slots : {1, 4}) {
+    auto b = batch(path, slots, levels);
+    std::vector<int> step_of(static_cast<size_t>(slots), 0);
+    rl::Driver d;
+    d.choose = [&](rl::Turn& t) {
+      for (size_t r = 0; r < t.slots.size(); ++r) {
+        const int s = t.slots[r];
+        t.actions[r].value = static_cast<float>(script::grid_value(
+            class_of(b->episode(s), step_of[static_cast<size_t>(s)]++, levels), levels));
+      }
+      return Status::ok();
+    };
+    d.after = [&](const rl::Turn& t) {
+      for (size_t r = 0; r < t.slots.size(); ++r)
+        if (t.dones[r]) step_of[static_cast<size_t>(t.slots[r])] = 0;
+      return true;
+    };
+    auto played = rl::play(*b, 40, 0, 6, d);
+    REQUIRE_MESSAGE(played.is_ok(), played.status().message());
+    CHECK(*played);
+    std::vector<double> got(6, NAN);
+    for (const env::EpisodeStats& e : b->completed()) {
+      got[e.index] = e.total_reward;
+      CHECK(e.steps > 0);
+      CHECK(e.reached != e.truncated);
+    }
+    CHECK(got == want);
+  }
+}
+
+TEST_CASE("an action off the grid or a Lua error ends the run with the file's name") {
+  auto b = batch(repo("tests/data/gym/sign.lua"), 2, 3);
+  rl::Driver d;
+  d.choose = [](rl::Turn& t) {
+    for (auto& a : t.actions) a.value = 0.5f;  // classes -1, 0, 1
+    return Status::ok();
+  };
+  auto r = rl::play(*b, 0, 0, 4, d);
+  REQUIRE_FALSE(r.is_ok());
+  CHECK(r.status().message().find("sign.lua: action 0.5") != std::string::npos);
+  CHECK(r.status().message().find("3-point action grid (-1 + 2 c / 2)") != std::string::npos);
+
+  const std::string broken = (test::scratch_dir("lua_batch_env") / "broken.lua").string();
+  std::ofstream(broken) << "return {id = 'Broken-v0', observation = {{name = 'x', size = 1}},\n"
+                           "  action = {low = {-1}, high = {1}}, max_episode_steps = 5,\n"
+                           "  reset = function() return {0} end,\n"
+                           "  step = function(self, a) error('no step here') end}\n";
+  auto e = batch(broken, 2, 3);
+  d.choose = [](rl::Turn& t) {
+    for (auto& a : t.actions) a.value = 1.0f;
+    return Status::ok();
+  };
+  r = rl::play(*e, 0, 0, 4, d);
+  REQUIRE_FALSE(r.is_ok());
+  CHECK(r.status().message().find("no step here") != std::string::npos);
+  CHECK(e->finished());
+
+  // The learner stops on it too, with the same message.
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 1;
+  spec.hidden = {4};
+  spec.action_values = script::grid_values(3);
+  Rng init(0);
+  auto p = rl::MlpPolicy::make(spec, init);
+  REQUIRE(p);
+  rl::TrainConfig tc;
+  tc.episodes = 8;
+  tc.episodes_per_update = 4;
+  tc.num_envs = 2;
+  rl::Trainer tr(**p, *e, tc, 0);
+  rl::TrainProgress progress;
+  auto ended = rl::run_training(tr, **p, *e, tc, 0, progress, {},
+                                [](const rl::UpdateReport&) -> Result<bool> { return true; });
+  REQUIRE_FALSE(ended.is_ok());
+  CHECK(ended.status().message().find("no step here") != std::string::npos);
+  CHECK(progress.episodes == 0);
+}
+
+TEST_CASE("the MLP learner raises the return of a Lua environment (sign.lua: random -6, best 0)") {
+  auto train_envs = batch(repo("tests/data/gym/sign.lua"), 4, 5);
+  auto eval_envs = batch(repo("tests/data/gym/sign.lua"), 4, 5);
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 1;
+  spec.hidden = {16};
+  spec.action_values = script::grid_values(5);
+  Rng init(3);
+  auto p = rl::MlpPolicy::make(spec, init);
+  REQUIRE(p);
+  rl::TrainConfig tc;
+  tc.episodes = 640;
+  tc.episodes_per_update = 16;
+  tc.num_envs = 4;
+  tc.lr = tc.lr_final = 1e-2;
+  tc.value_hidden = {};
+  tc.eval_every = 0;
+  tc.eval_episodes = 100;
+  auto before = rl::evaluate(**p, *eval_envs, {100, 7, false});
+  REQUIRE(before);
+  CHECK(before->mean_reward < -3.0);
+  rl::Trainer tr(**p, *train_envs, tc, 0);
+  rl::TrainProgress progress;
+  const rl::EvalResult* last = nullptr;
+  rl::EvalResult kept;
+  auto ended = rl::run_training(tr, **p, *eval_envs, tc, 7, progress, {},
+                                [&](const rl::UpdateReport& u) -> Result<bool> {
+                                  if (u.eval) {
+                                    kept = *u.eval;
+                                    last = &kept;
+                                  }
+                                  return true;
+                                });
+  REQUIRE_MESSAGE(ended.is_ok(), ended.status().message());
+  CHECK(progress.episodes == 640);
+  REQUIRE(last);
+  MESSAGE("sign.lua: mean return " << before->mean_reward << " before, " << last->mean_reward
+                                   << " after 40 updates");
+  CHECK(last->mean_reward > -0.5);
+  CHECK(last->mean_steps == 4.0);
+}
