@@ -225,6 +225,9 @@ TEST_CASE("DEFWPT, ADDWPT, route listing, AT constraints, DIRECT, DELWPT") {
   REQUIRE(s.exec("DIRECT KL204 BRAVO"));
   CHECK(route().active() == 1);
   CHECK(error_of(s, "KL204 AFTER BRAVO ADDWPT CHARLIE").find("'CHARLIE'") != std::string::npos);
+  // a latitude for the new waypoint (BlueSky reads one token there) says how to name the point
+  CHECK(error_of(s, "KL204 AFTER BRAVO ADDWPT 52.2 4.9").find("'52.2' is a latitude") != std::string::npos);
+  CHECK(route().size() == 3);
   REQUIRE(s.exec("DEFWPT CHARLIE 52.2 4.9"));
   REQUIRE(s.exec("KL204 AFTER BRAVO ADDWPT CHARLIE FL120"));
   CHECK(route().waypoints()[2].name == "CHARLIE");
