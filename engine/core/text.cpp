@@ -104,6 +104,12 @@ std::string fmt_double(double v, int max_decimals) {
   return r;
 }
 
+std::string fmt_exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
 std::string quoted(std::string_view s) {
   std::string r;
   r.reserve(s.size() + 2);

@@ -23,6 +23,9 @@ std::optional<double> to_double(std::string_view s);
 std::optional<long long> to_int(std::string_view s);
 // Shortest decimal text that reads back to the same double ("%.17g" trimmed).
 std::string fmt_double(double v, int max_decimals = 6);
+// The double as given, for messages that must show a bad value: "%.17g"
+// (every digit, exponents, nan and inf as the C library writes them).
+std::string fmt_exact(double v);
 // Quotes a string for messages: 'FL9X'; control bytes appear as \xNN.
 std::string quoted(std::string_view s);
 

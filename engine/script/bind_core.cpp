@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/paths.h"
+#include "core/text.h"
 #include "script/bindings.h"
 #include "script/lua_util.h"
 #include "script/vm.h"
@@ -21,11 +22,7 @@ std::string caller_where(lua_State* L) {
 }
 
 std::string show(lua_State* L, int idx) {
-  if (lua_type(L, idx) == LUA_TNUMBER && !lua_isinteger(L, idx)) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", lua_tonumber(L, idx));
-    return buf;
-  }
+  if (lua_type(L, idx) == LUA_TNUMBER && !lua_isinteger(L, idx)) return text::fmt_exact(lua_tonumber(L, idx));
   if (lua_type(L, idx) == LUA_TSTRING) {
     std::string r(1, '"');
     r.append(lua_tostring(L, idx)).append(1, '"');

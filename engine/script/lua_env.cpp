@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/paths.h"
+#include "core/text.h"
 #include "script/lua_util.h"
 
 namespace squawk::script {
@@ -15,12 +16,6 @@ namespace {
 constexpr const char* kEnvKey = "squawk.gym.env";
 constexpr const char* kResetKey = "squawk.gym.reset";
 constexpr const char* kStepKey = "squawk.gym.step";
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 // Pushes the file's table.
 void push_env(lua_State* L) {
@@ -102,8 +97,8 @@ Status LuaEnv::read_spec() {
       if (!(s.action_low[k] <= s.action_high[k]) || !std::isfinite(s.action_low[k]) ||
           !std::isfinite(s.action_high[k]))
         throw ArgError("action bounds " + std::to_string(k + 1) +
-                       ": expected finite low <= high, got " + num(s.action_low[k]) + ", " +
-                       num(s.action_high[k]));
+                       ": expected finite low <= high, got " + text::fmt_exact(s.action_low[k]) + ", " +
+                       text::fmt_exact(s.action_high[k]));
     s.max_episode_steps =
         static_cast<int>(field_count(L, e, "max_episode_steps", 0, 1, 1'000'000'000));
     if (s.max_episode_steps == 0)
@@ -160,7 +155,7 @@ Status LuaEnv::read_observation(int idx, const char* fn) {
       const double v = lua_tonumber(L, -1);
       if (!lua_isnumber(L, -1) || !std::isfinite(v))
         throw ArgError("observation[" + std::to_string(k) + "]: expected a finite number, got " +
-                       (lua_isnumber(L, -1) ? num(v) : std::string(luaL_typename(L, -1))));
+                       (lua_isnumber(L, -1) ? text::fmt_exact(v) : std::string(luaL_typename(L, -1))));
       obs_[static_cast<size_t>(k - 1)] = v;
       lua_pop(L, 1);
     }
@@ -217,7 +212,7 @@ Result<LuaStep> LuaEnv::step(std::span<const double> action) {
   if (st.is_ok()) {
     if (!lua_isnumber(L, top + 2) || !std::isfinite(lua_tonumber(L, top + 2)))
       st = Status::invalid(path_ + ": step: the reward (2nd result) must be a finite number, got " +
-                           (lua_isnumber(L, top + 2) ? num(lua_tonumber(L, top + 2))
+                           (lua_isnumber(L, top + 2) ? text::fmt_exact(lua_tonumber(L, top + 2))
                                                      : std::string(luaL_typename(L, top + 2))));
     else if (!lua_isboolean(L, top + 3) || !lua_isboolean(L, top + 4))
       st = Status::invalid(

@@ -1,10 +1,10 @@
 #include "script/lua_policy.h"
 
 #include <cmath>
-#include <cstdio>
 #include <utility>
 
 #include "core/paths.h"
+#include "core/text.h"
 #include "script/lua_util.h"
 
 namespace squawk::script {
@@ -15,12 +15,6 @@ namespace {
 constexpr const char* kPolicyKey = "squawk.policy";
 constexpr const char* kActKey = "squawk.policy.act";
 constexpr const char* kResetKey = "squawk.policy.reset";
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 }  // namespace
 
@@ -98,10 +92,10 @@ Status LuaPolicy::act(std::span<const double> obs, std::span<double> action) {
         const double v = lua_tonumber(L, -1);
         if (!lua_isnumber(L, -1) || !std::isfinite(v))
           throw ArgError("action[" + std::to_string(k) + "]: expected a finite number, got " +
-                         (lua_isnumber(L, -1) ? num(v) : std::string(luaL_typename(L, -1))));
+                         (lua_isnumber(L, -1) ? text::fmt_exact(v) : std::string(luaL_typename(L, -1))));
         if (v < spec_.action_low[i] || v > spec_.action_high[i])
-          throw ArgError("action[" + std::to_string(k) + "] = " + num(v) + " is outside [" +
-                         num(spec_.action_low[i]) + ", " + num(spec_.action_high[i]) + "]");
+          throw ArgError("action[" + std::to_string(k) + "] = " + text::fmt_exact(v) + " is outside [" +
+                         text::fmt_exact(spec_.action_low[i]) + ", " + text::fmt_exact(spec_.action_high[i]) + "]");
         action[i] = v;
         lua_pop(L, 1);
       }
