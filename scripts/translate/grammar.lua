@@ -371,10 +371,14 @@ local function self_corrections(text)
   local pieces, from, k = {}, 1, 1
   while k <= #toks do
     local j, marked = k, false
-    while toks[j] and words[toks[j].bare] do marked = marked or markers[toks[j].bare]; j = j + 1 end
+    -- (punctuation alone, "...", belongs to the run)
+    while toks[j] and (words[toks[j].bare] or toks[j].bare == "") do
+      marked = marked or markers[toks[j].bare]
+      j = j + 1
+    end
     local nxt = toks[j]
     if j > k and marked and value(toks[k - 1]) and nxt
-        and (nxt.raw:match("^%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare]) then
+        and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare]) then
       pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
       from = nxt.at
       k = j
@@ -1499,13 +1503,22 @@ local function unglued_ids(text, fleet)
 end
 
 -- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
--- joined id is exactly an aircraft's (letters after the digits too).
+-- joined id is exactly an aircraft's (letters after the digits too); so are a flight number's
+-- letters said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
   if #fleet == 0 then return text end
-  local ids = {}
-  for _, a in ipairs(fleet) do ids[a.id:lower()] = true end
-  return (text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", function(a, b)
+  local ids, tails = {}, {}
+  for _, a in ipairs(fleet) do
+    ids[a.id:lower()] = true
+    local tail = a.id:lower():match("^%a+(%d+%a+)$")
+    if tail then tails[tail] = (tails[tail] or 0) + 1 end
+  end
+  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", function(a, b)
     if ids[(a .. b):lower()] then return a .. b end
+    return nil
+  end)
+  return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
+    if tails[(d .. l):lower()] == 1 then return d .. l end
     return nil
   end))
 end
