@@ -213,15 +213,17 @@ return function(H, f, compass)
       if self:word(k, "@head_on") and (self.t[k].text ~= "head" or self:word(k + 1, "on")) then dpsi = 180 end
     end
     local vertical = self:find_word(s.b, s.e, "vertical")
+    local times = {}  -- the times said: one alone, with no vertical part, is the time to loss of separation
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
+      if q.kind == "time" then times[#times + 1] = q end
       if q.kind == "angle" and not dpsi then
         dpsi = self:take(q).value
       elseif (q.kind == "dist" or q.kind == "plain") and not cpa and near("@closest_approach") then
         cpa = self:take(q).value
       elseif q.kind == "time" and q.b > vertical and dh and not tlosv then
         tlosv = self:take(q).value
-      elseif q.kind == "time" and not tlosh and near("@loss_of_separation") then
+      elseif q.kind == "time" and not tlosh and near("@loss_of_separation separation") then
         tlosh = self:take(q).value
       elseif q.kind == "alt" and not dh and self:word(q.e, "@above @below") then
         dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
@@ -231,6 +233,7 @@ return function(H, f, compass)
       return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?")
     end
     if not cpa then return self:need("How close, in nautical miles, should " .. id .. " pass " .. target .. "?") end
+    if not tlosh and not dh and #times == 1 then tlosh = self:take(times[1]).value end
     if not tlosh then
       return self:need("In how many seconds should " .. id .. " lose separation with " .. target .. "?")
     end

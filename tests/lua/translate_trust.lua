@@ -727,4 +727,10 @@ do
     "CRE RYR22AB B738 51.5 0.5 90 FL200 250")
   check_eq(lt("add a 737 called TST4 at ALPHA heading 225 at FL320 doing 280 knots"),
     "CRE TST4 B737 ALPHA 225 FL320 280")
+  -- an intruder's time: after "loss of separation", or the one time said with no vertical part
+  check_eq(lt("make an intruder named INT7, A320, against BAW123, at 60 degrees, cpa 1, separation lost in 240 seconds"),
+    "CRECONFS INT7 A320 BAW123 60 1 240")
+  check_eq(lt("add an intruder for KLM1234: INT8 A321, 30 degrees, cpa 0.5 nm, 150 s"), "CRECONFS INT8 A321 KLM1234 30 0.5 150")
+  check(lt("add an intruder for KLM1234: INT9 A321, 30 degrees, cpa 0.5 nm"):find("^ASK In how many seconds") ~= nil,
+    "an intruder with no time asks for it")
 end
