@@ -357,8 +357,49 @@ local function spelled(text)
   return changed and table.concat(out, " ") or text
 end
 
+-- Self-corrections said in words (lexicon.self_correction) become the word "correction", which the
+-- value handlers read: "reduce 270, no wait, 260" is "reduce 270 , correction , 260".
+local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
+local function self_corrections(text)
+  local sc = lexicon.self_correction
+  local words, markers, after = set_of(sc.words), set_of(sc.markers), set_of(sc.after)
+  local toks = {}
+  for at, w, e in text:gmatch("()(%S+)()") do
+    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
+  end
+  local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
+  local pieces, from, k = {}, 1, 1
+  while k <= #toks do
+    local j, marked = k, false
+    -- (punctuation alone, "...", belongs to the run)
+    while toks[j] and (words[toks[j].bare] or toks[j].bare == "") do
+      marked = marked or markers[toks[j].bare]
+      j = j + 1
+    end
+    local nxt = toks[j]
+    if j > k and marked and value(toks[k - 1]) and nxt
+        and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare]) then
+      pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
+      from = nxt.at
+      k = j
+    else
+      k = math.max(j, k + 1)
+    end
+  end
+  pieces[#pieces + 1] = text:sub(from)
+  return table.concat(pieces)
+end
+
+-- A speaker's label before the request ("instructor: ...", "ATC here - ...", lexicon.speaker_roles) is dropped.
+local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
+local function unlabelled(text)
+  local role, rest = text:match("^%s*(%a+)%s*[Hh]?[Ee]?[Rr]?[Ee]?%s*[:%-]%s*(.*)$")
+  if role and SPEAKER_ROLES[role:lower()] and rest ~= "" then return rest end
+  return text
+end
+
 local function written_forms(text)
-  text = spelled(heard_forms(text))
+  text = spelled(heard_forms(self_corrections(unlabelled(text))))
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
@@ -792,7 +833,7 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif (s["then"] == "then" or self:when_reached(s)) and before and #self.out == n_before + 1
+      elseif (self:then_after(segs, k) or self:when_reached(s)) and before and #self.out == n_before + 1
           and spec and spec.value
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
@@ -800,6 +841,13 @@ function G:parse(b, e)
     end
   end
   self:direct_resumes_nav()
+end
+
+-- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
+-- clearance held until reached ("descend and maintain 4000 then reduce speed to 210": it waits for
+-- 4000); in plain English "then" lists the next instruction ("slow to 280 then descend FL170").
+function G:then_after(segs, k)
+  return k > 1 and segs[k]["then"] == "then" and self:word_in(segs[k - 1].b, segs[k].e, "maintain")
 end
 
 -- True when the instruction opens with a condition that names the value of the
@@ -1455,13 +1503,22 @@ local function unglued_ids(text, fleet)
 end
 
 -- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
--- joined id is exactly an aircraft's (letters after the digits too).
+-- joined id is exactly an aircraft's (letters after the digits too); so are a flight number's
+-- letters said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
   if #fleet == 0 then return text end
-  local ids = {}
-  for _, a in ipairs(fleet) do ids[a.id:lower()] = true end
-  return (text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", function(a, b)
+  local ids, tails = {}, {}
+  for _, a in ipairs(fleet) do
+    ids[a.id:lower()] = true
+    local tail = a.id:lower():match("^%a+(%d+%a+)$")
+    if tail then tails[tail] = (tails[tail] or 0) + 1 end
+  end
+  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", function(a, b)
     if ids[(a .. b):lower()] then return a .. b end
+    return nil
+  end)
+  return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
+    if tails[(d .. l):lower()] == 1 then return d .. l end
     return nil
   end))
 end

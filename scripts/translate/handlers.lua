@@ -300,7 +300,7 @@ function m:airline_types()
   for k, r in ipairs(self.refs) do
     local nxt = self.refs[k + 1]
     local digits = r.kind == "aircraft" and not r.exists and r.name:match("^%a+(%d+)$")
-    local ty = digits and models[digits]
+    local ty = digits and (L.airline_variant[digits] or models[digits])
     if ty and self:word(r.b - 1, "@articles_new more") and nxt and nxt.kind == "aircraft"
         and nxt.b <= self:skip_fillers(r.e, false) + 1 then
       self.refs[k] = { kind = "type", name = ty, b = r.b, e = r.e }
@@ -596,7 +596,7 @@ end
 -- reduce speed 250", "leaving FL340 maintain Mach .82": "ATALT id alt" or nil.
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" then return nil end
-  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through passes leaves reaches pass")
+  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach")
   if a >= s.trig then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(s.b, a) > 0 then return nil end

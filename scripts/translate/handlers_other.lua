@@ -213,15 +213,17 @@ return function(H, f, compass)
       if self:word(k, "@head_on") and (self.t[k].text ~= "head" or self:word(k + 1, "on")) then dpsi = 180 end
     end
     local vertical = self:find_word(s.b, s.e, "vertical")
+    local times = {}  -- the times said: one alone, with no vertical part, is the time to loss of separation
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
+      if q.kind == "time" then times[#times + 1] = q end
       if q.kind == "angle" and not dpsi then
         dpsi = self:take(q).value
       elseif (q.kind == "dist" or q.kind == "plain") and not cpa and near("@closest_approach") then
         cpa = self:take(q).value
       elseif q.kind == "time" and q.b > vertical and dh and not tlosv then
         tlosv = self:take(q).value
-      elseif q.kind == "time" and not tlosh and near("@loss_of_separation") then
+      elseif q.kind == "time" and not tlosh and near("@loss_of_separation separation") then
         tlosh = self:take(q).value
       elseif q.kind == "alt" and not dh and self:word(q.e, "@above @below") then
         dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
@@ -231,6 +233,7 @@ return function(H, f, compass)
       return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?")
     end
     if not cpa then return self:need("How close, in nautical miles, should " .. id .. " pass " .. target .. "?") end
+    if not tlosh and not dh and #times == 1 then tlosh = self:take(times[1]).value end
     if not tlosh then
       return self:need("In how many seconds should " .. id .. " lose separation with " .. target .. "?")
     end
@@ -832,10 +835,20 @@ return function(H, f, compass)
   end
 
   function m:define_waypoint(s)
+    -- its type, said as what it is ("as a fix", "type VOR": never its name); "define a fix GOLF" names no type
+    local kind, kind_at = "", nil
+    for k = s.b, s.e - 1 do
+      local t = self.t[k]
+      local wt = t.kind == "word" and L.waypoint_types[t.text]
+      if wt and self:preceded_by(k, 2, "as type") then
+        kind, kind_at = " " .. wt, k
+        self:explain(k, k + 1)
+      end
+    end
     -- "define A1 at 52.1, 4.1 and A2 at 52.2, 4.4": one waypoint per name, each with the point after it
     local names = {}
     for _, r in ipairs(self.refs) do
-      if r.b >= s.b and r.b < s.e and (r.kind == "waypoint" or (r.kind == "aircraft" and not r.exists)) then
+      if r.b >= s.b and r.b < s.e and r.b ~= kind_at and (r.kind == "waypoint" or (r.kind == "aircraft" and not r.exists)) then
         names[#names + 1] = r
       end
     end
@@ -854,8 +867,9 @@ return function(H, f, compass)
       return
     end
     local name
-    local w = self:refs_in(s.b, s.e, "waypoint")
-    if #w > 0 then name = w[1].name end
+    for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+      if not name and r.b ~= kind_at then name = r.name end
+    end
     if not name then
       local a = self:refs_in(s.b, s.e, "aircraft")  -- "EXIT1" reads like an id
       if #a > 0 and not a[1].exists then name = a[1].name:upper() end
@@ -877,7 +891,7 @@ return function(H, f, compass)
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     if not name then return self:need("What should the waypoint be called, and where is it?") end
     if not lat or not lon then return self:need("Where is waypoint " .. name .. "? Please give a latitude and longitude.") end
-    self:emit("DEFWPT " .. name .. " " .. f.num(lat) .. " " .. f.num(lon))
+    self:emit("DEFWPT " .. name .. " " .. f.num(lat) .. " " .. f.num(lon) .. kind)
     self.last_waypoint = name
   end
 
@@ -941,7 +955,15 @@ return function(H, f, compass)
   end
   local function nav(self, s, cmd)
     local id = self:acid(s, "switch " .. cmd)
-    if id then self:emit(cmd .. " " .. id .. " " .. on_off(self, s)) end
+    if not id then return end
+    local on, now = on_off(self, s), self:state(id)
+    -- "resume own navigation" for an aircraft with no route and no waypoint named: nothing to fly
+    -- (the switch named, "lnav on", is set as asked)
+    if cmd == "LNAV" and on == "ON" and now and now.route and #now.route == 0
+        and not self:word_in(s.b, s.e, "lnav") and not self:has_ref(1, #self.t + 1, "waypoint") then
+      return self:need(string.format("%s has no route to navigate by. Which waypoint or heading should it fly?", id))
+    end
+    self:emit(cmd .. " " .. id .. " " .. on)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
   function m:vnav(s) nav(self, s, "VNAV") end

@@ -159,12 +159,24 @@ return {
   -- words after which a clause is a new instruction
   then_words = { "then" },
   correction = { "correction", "disregard" },
+  -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
+  -- create ..."): the label is no part of the request
+  speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
+  -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
+  -- "heading 090, oh no, right heading 200"): a run of `words` between a value and the next value,
+  -- direction or value noun, holding one of `markers`, is read as "correction"
+  self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er" },
+                      markers = { "no", "wait", "sorry", "actually", "make", "mean" },
+                      after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" } },
   -- the simulation itself, not an aircraft
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock" },
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
   route_nouns = { "route", "plan" },
   articles_new = { "a", "an", "new", "second", "another" },
+  -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
+  -- the family's first designator (B737, the 737-700), which a family said alone still names
+  airline_variant = { ["737"] = "B738" },
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
@@ -276,6 +288,8 @@ return {
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
+  -- DEFWPT's waypoint types, said after "as" or "type" ("define DELTA at 51.9 4.1 as a fix")
+  waypoint_types = { fix = "FIX", vor = "VOR", dme = "DME", ndb = "NDB" },
   -- pronouns: never read as a name ("add it to the route" is no waypoint "IT")
   pronouns = { it = true, its = true, him = true, her = true, them = true, they = true },
   -- words skipped before a spoken waypoint name

@@ -279,10 +279,13 @@ end
 
 do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   local w = { aircraft = { plane("KLM123", 90, 25000, 280), plane("AFR55", 180, 30000, 300) } }
-  -- "and then" lists the next instruction; a bare "then" after a level still waits for it
+  -- "and then" and a plain bare "then" list the next instruction; after "descend and maintain" (a
+  -- level held until reached) a bare "then" waits for it
   check_eq(tr("AFR55, reduce to 250 knots please, and then turn left heading 120", w),
     "SPD AFR55 250 ; HDG AFR55 120 LEFT")
-  check_eq(tr("AFR55 descend FL200 then speed 260", w), "ALT AFR55 FL200 ; ATALT AFR55 FL200 SPD AFR55 260")
+  check_eq(tr("AFR55 descend FL200 then speed 260", w), "ALT AFR55 FL200 ; SPD AFR55 260")
+  check_eq(tr("AFR55 descend and maintain FL200 then reduce speed 260", w),
+    "ALT AFR55 FL200 ; ATALT AFR55 FL200 SPD AFR55 260")
   -- a reason names other aircraft as context: they are given nothing
   check_eq(tr("Descend AFR55 to FL240 so that it passes under KLM123", w), "ALT AFR55 FL240")
   check_eq(tr("Slow KLM123 to 240 knots because AFR55 is right behind it", w), "SPD KLM123 240")
@@ -333,7 +336,10 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("show me where the Pampus VOR, PAM, is", wv), "POS PAM")
   check(asks("where is the Spijkerboor VOR?", wv), "a navaid by a name squawk cannot place asks")
   -- own navigation, vertical navigation, deletions in few words
-  check_eq(tr("let AFR55 resume its own route navigation", w), "LNAV AFR55 ON")
+  -- (with a route to navigate by; with none, asked)
+  local wr = { aircraft = { plane("KLM123", 90, 25000, 280), plane("AFR55", 180, 30000, 300, { "SPY" }) } }
+  check_eq(tr("let AFR55 resume its own route navigation", wr), "LNAV AFR55 ON")
+  check(asks("let AFR55 resume its own route navigation", w), "own navigation with no route asks")
   check_eq(tr("put KLM123 back on lnav", w), "LNAV KLM123 ON")
   check_eq(tr("AFR55 should follow its route vertically as well", w), "VNAV AFR55 ON")
   check_eq(tr("afr55 leaving my sector, drop it", w), "DEL AFR55")

@@ -575,8 +575,9 @@ do
   -- a new aircraft introduced by its airline and model number, the callsign after: the number is the type
   check_eq(ft("could we add a Delta 757, DAL77, at 52.6 north 4.9 east heading 180 FL 240 and 280 knots?"),
     "CRE DAL77 B752 52.6 4.9 180 FL240 280")
+  -- (a 737 said with an airline is the 737-800 airlines fly: lexicon.airline_variant)
   check_eq(ft("let's start with a Ryanair 737, RYR12, at 52.7 north 4.1 east, heading west, FL 300 at 290 knots"),
-    "CRE RYR12 B737 52.7 4.1 270 FL300 290")
+    "CRE RYR12 B738 52.7 4.1 270 FL300 290")
   -- a place corrected in the request is the one after the correction, or asked, never the first
   r = graph.translate("I'd like an aircraft SWR18, an A320, at SUGOL... no, sorry, at ARTIP, heading 090, "
     .. "FL 100, 250 knots", { sim = fleet, mode = "offline" })
@@ -684,4 +685,52 @@ do
   -- a time that no command carries beside a level is asked about (30000 is no heading 120)
   check(bt("KL204 climb FL300 and in 2 minutes EZY45 climb FL280"):find("'2 minutes'", 1, true) ~= nil,
     "a time in the middle of a request is asked about")
+end
+
+-- R20's classes (an ATC training lab): a self-correction said in words replaces the value (and
+-- the turn's direction) before it; a speaker's label is no part of the request; "when you reach"
+-- a level makes the instruction wait for it; a plain "then" lists the next instruction, the
+-- formal "descend and maintain ... then" waits; a waypoint's type said as what it is; "resume own
+-- navigation" with no route is asked about; a flight number's letters said apart; an airline's 737
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE KLM1234 B738 52.6 4.2 140 FL250 290", "CRE RYR81JC B738 51.2 0.4 310 FL110 250",
+      "CRE EIN44 A320 51.75 4.45 315 FL320 290", "CRE BAW123 A321 52.2 3.9 060 FL120 250",
+      "DEFWPT ALPHA 52.0 4.0", "ADDWPT RYR81JC ALPHA" }) do
+    check(lab:exec(line))
+  end
+  local function lt(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  check_eq(lt("KLM1234 speed 280, no wait, 270"), "SPD KLM1234 270")
+  check_eq(lt("KLM1234 climb to FL300... sorry FL310"), "ALT KLM1234 FL310")
+  check_eq(lt("RYR81JC descend to four thousand feet, no sorry, five thousand"), "ALT RYR81JC 5000")
+  check_eq(lt("KLM1234 turn right heading 200 ... actually make that 210"), "HDG KLM1234 210 RIGHT")
+  check_eq(lt("KLM1234 turn right heading 300, oh no, left heading 100"), "HDG KLM1234 100 LEFT")
+  check_eq(lt("instructor: KLM1234 climb FL300"), "ALT KLM1234 FL300")
+  check_eq(lt("Controller here - BAW123 speed 220"), "SPD BAW123 220")
+  check_eq(lt("EIN44 when you reach FL300 turn left heading 200"), "ATALT EIN44 FL300 HDG EIN44 200 LEFT")
+  check_eq(lt("EIN44 once you reach flight level 300 reduce speed 250"), "ATALT EIN44 FL300 SPD EIN44 250")
+  check_eq(lt("BAW123 slow to 230 then climb FL150"), "SPD BAW123 230 ; ALT BAW123 FL150")
+  check_eq(lt("BAW123 climb FL150 then speed 280"), "ALT BAW123 FL150 ; SPD BAW123 280")
+  check_eq(lt("BAW123 climb and maintain FL150 then increase speed to 280"),
+    "ALT BAW123 FL150 ; ATALT BAW123 FL150 SPD BAW123 280")
+  check_eq(lt("define waypoint DELTA at 51.9 4.1 as a fix"), "DEFWPT DELTA 51.9 4.1 FIX")
+  check_eq(lt("create a waypoint called ECHO at 52.1 4.3, type VOR"), "DEFWPT ECHO 52.1 4.3 VOR")
+  check_eq(lt("define a fix GOLF at 52.2 4.4"), "DEFWPT GOLF 52.2 4.4")
+  check_eq(lt("BAW123 resume own navigation"),
+    "ASK BAW123 has no route to navigate by. Which waypoint or heading should it fly?")
+  check_eq(lt("BAW123 lnav on"), "LNAV BAW123 ON")
+  check_eq(lt("RYR81JC resume own navigation"), "LNAV RYR81JC ON")
+  check_eq(lt("RYR81JC go back on your route"), "LNAV RYR81JC ON")
+  check_eq(lt("RYR81JC rejoin the route please"), "LNAV RYR81JC ON")
+  check_eq(lt("ryanair 81 JC turn left heading 250"), "HDG RYR81JC 250 LEFT")
+  check_eq(lt("add a Ryanair 737, RYR22AB, at 51.5 0.5, heading 090, FL200, 250 knots"),
+    "CRE RYR22AB B738 51.5 0.5 90 FL200 250")
+  check_eq(lt("add a 737 called TST4 at ALPHA heading 225 at FL320 doing 280 knots"),
+    "CRE TST4 B737 ALPHA 225 FL320 280")
+  -- an intruder's time: after "loss of separation", or the one time said with no vertical part
+  check_eq(lt("make an intruder named INT7, A320, against BAW123, at 60 degrees, cpa 1, separation lost in 240 seconds"),
+    "CRECONFS INT7 A320 BAW123 60 1 240")
+  check_eq(lt("add an intruder for KLM1234: INT8 A321, 30 degrees, cpa 0.5 nm, 150 s"), "CRECONFS INT8 A321 KLM1234 30 0.5 150")
+  check(lt("add an intruder for KLM1234: INT9 A321, 30 degrees, cpa 0.5 nm"):find("^ASK In how many seconds") ~= nil,
+    "an intruder with no time asks for it")
 end
