@@ -1455,15 +1455,56 @@ local function unglued_ids(text, fleet)
 end
 
 -- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
--- joined id is exactly an aircraft's (letters after the digits too).
+-- joined id is exactly an aircraft's (letters after the digits too); so is a registration
+-- written with its hyphen ("C-GKQM", "D-EABC": CGKQM, DEABC).
 local function split_ids(text, fleet)
   if #fleet == 0 then return text end
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:lower()] = true end
-  return (text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", function(a, b)
+  local function joined(a, b)
     if ids[(a .. b):lower()] then return a .. b end
     return nil
-  end))
+  end
+  return (text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined):gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined))
+end
+
+-- "where is Charlie Golf Kilo Quebec Mike", "Cessna Charlie Golf Kilo Quebec Mike, climb ...": a
+-- registration spelled in the phonetic alphabet anywhere, four letters or more, that is exactly the
+-- id of an aircraft flying is written as that id; a maker or model said before it is the aircraft's
+-- own and is written into the id too when the aircraft is of that maker or model.
+local TYPE_WORDS  -- maker or model (lower case) -> {designator = true}
+local function spelled_registrations(text, fleet)
+  if #fleet == 0 then return text end
+  if not TYPE_WORDS then
+    TYPE_WORDS = {}
+    for _, row in ipairs(TYPES.types) do
+      for _, w in ipairs({ row[1]:lower(), row[2]:lower() }) do
+        TYPE_WORDS[w] = TYPE_WORDS[w] or {}
+        TYPE_WORDS[w][row[3]] = true
+      end
+    end
+  end
+  local words = {}  -- {text, b, e} of each word
+  for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
+  for k, w in ipairs(words) do
+    if not lexicon.phonetic[w[1]] or k == 1 or not lexicon.phonetic[words[k - 1][1]] then
+      local set = TYPE_WORDS[w[1]]
+      local first = lexicon.phonetic[w[1]] and k or k + 1
+      local letters, last = "", nil
+      for j = first, #words do
+        local l = lexicon.phonetic[words[j][1]]
+        if not l or (j > first and not text:sub(words[j - 1][3], words[j][2] - 1):match("^%s+$")) then break end
+        letters, last = letters .. l, j
+      end
+      for _, a in ipairs(#letters >= 4 and fleet or {}) do
+        if a.id:upper() == letters then
+          local own = first > k and set and a.type and set[a.type:upper()]
+          return text:sub(1, (own and w or words[first])[2] - 1) .. a.id .. text:sub(words[last][3])
+        end
+      end
+    end
+  end
+  return text
 end
 
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
@@ -1488,6 +1529,7 @@ function M.translate(text, world)
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
+  text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   text = written_forms(text)
   -- type names with their digits said as words, where traffic is created

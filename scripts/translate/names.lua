@@ -11,6 +11,8 @@
 return {
   airlines = {
     { "speedbird", "BAW" },
+    { "reach", "RCH" },
+    { "navy", "NAVY" },
     { "lufthansa", "DLH" },
     { "klm", "KLM" },
     { "air france", "AFR" },
