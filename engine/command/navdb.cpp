@@ -180,8 +180,12 @@ Result<std::shared_ptr<const NavDb>> NavDb::load_cached(const std::string& dir) 
 
 std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const {
   std::vector<const NavPoint*> out;
-  const std::string key = name_key(name);
+  std::string key = name_key(name);
   if (key.empty()) return out;
+  // "Denver International": the navdata writes the word INTL ("DENVER INTL")
+  static const std::string kSaid = " INTERNATIONAL";
+  if (key.size() > kSaid.size() && key.compare(key.size() - kSaid.size(), kSaid.size(), kSaid) == 0)
+    key = key.substr(0, key.size() - kSaid.size()) + " INTL";
   // words a name may carry after the part people say ("Schiphol Airport")
   static const char* kGeneric[] = {"AIRPORT", "INTERNATIONAL", "INTL", "AIRFIELD", "AERODROME", "AIRBASE", "AIR BASE"};
   for (size_t i = 0; i < airport_names_.size() && i < airports_.size(); ++i) {

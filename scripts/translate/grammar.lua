@@ -357,8 +357,22 @@ local function spelled(text)
   return changed and table.concat(out, " ") or text
 end
 
+-- A type designator written with a hyphen after its letter ("C-17", "C-130") is that designator
+-- when squawk knows it.
+local KNOWN_TYPES
+local function hyphened_types(text)
+  if not KNOWN_TYPES then
+    KNOWN_TYPES = {}
+    for _, d in ipairs(TYPES.designators) do KNOWN_TYPES[d:upper()] = true end
+  end
+  return (text:gsub("%f[%w](%a)%-(%d%d%d?)%f[%W]", function(a, n)
+    if KNOWN_TYPES[(a .. n):upper()] then return a .. n end
+    return nil
+  end))
+end
+
 local function written_forms(text)
-  text = spelled(heard_forms(text))
+  text = hyphened_types(spelled(heard_forms(text)))
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"

@@ -56,7 +56,7 @@ end
 -- kept here after their first-sight figures were recorded (docs/translation_ledger.md),
 -- fixed by class; floors at the figures reached (right at least, wrong at most).
 floors("tests/data/translate_round1.tsv", 0.991, 0.0, true)
-floors("tests/data/translate_round2.tsv", 0.837, 0.0128, true)
+floors("tests/data/translate_round2.tsv", 0.84, 0.0128, true)
 floors("tests/data/translate_round3.tsv", 0.952, 0.0073, true)
 floors("tests/data/translate_round4.tsv", 0.949, 0.0, true)
 floors("tests/data/translate_round5.tsv", 0.956, 0.0, true)
@@ -73,7 +73,7 @@ floors("tests/data/translate_round15.tsv", 0.965, 0.0035, true)
 floors("tests/data/translate_round16.tsv", 0.87, 0.0081, true)
 floors("tests/data/translate_round17.tsv", 0.995, 0.0042, true)
 floors("tests/data/translate_round18.tsv", 0.953, 0.0033, true)
-floors("tests/data/translate_round19.tsv", 0.932, 0.0043, true)
+floors("tests/data/translate_round19.tsv", 0.949, 0.0043, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)

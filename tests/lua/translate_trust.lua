@@ -261,6 +261,11 @@ if #sim:airports_named("schiphol") == 1 then
   -- "at Kennedy": the airport beside the navaid of that name, as "at JFK" is (over it: the navaid)
   check_eq(ustr("create UAL9 a B738 at Kennedy heading 090 3000 feet 200 knots"), "CRE UAL9 B738 KJFK 90 3000 200")
   check_eq(ustr("create UAL9 a B738 over Kennedy heading 090 3000 feet 200 knots"), "CRE UAL9 B738 JFK 90 3000 200")
+  -- "International" as the navdata writes it (INTL)
+  local den = squawk.sim.new()
+  check(den:exec("CRE EJA882 C68A 39.6 -103.8 270 FL410 M.80"))
+  check_eq(said(graph.translate("Execjet 882 your new destination is Denver International", { sim = den,
+    mode = "offline" })), "DEST EJA882 KDEN")
   check_eq(said(graph.translate("create AAL7 an A321 at Kennedy, heading 040, 3000 feet, 210 knots",
     { sim = squawk.sim.new(), mode = "offline" })), "CRE AAL7 A321 KJFK 40 3000 210")
   check_eq(ustr("move JetBlue 1116 to Point Reyes at FL120"), "MOVE JBU1116 PYE FL120")
@@ -706,6 +711,9 @@ do
   check_eq(nt("what's the position of Charlie Foxtrot Alpha Bravo Charlie?"), "POS CFABC")
   check_eq(nt("Reach four five one, climb flight level two six zero"), "ALT RCH451 FL260")
   check_eq(nt("remove Navy two one"), "DEL NAVY21")
+  -- a designator written with its hyphen
+  check_eq(nt("create RCH9 a C-17 at 52 4, heading 090, FL100, 250 knots"), "CRE RCH9 C17 52 4 90 FL100 250")
+  check_eq(nt("create RCH10, C-130, at 52 4, heading 090, FL100, 250 knots"), "CRE RCH10 C130 52 4 90 FL100 250")
   check_eq(nt("Create Alaska five twelve, a B739, over SPY, FL240, heading 350, 290 knots"),
     "CRE ASA512 B739 SPY 350 FL240 290")
   check_eq(nt("create Alaska twenty-two oh seven, a B739, over SPY, FL240, heading 350, 290 knots"),
