@@ -188,9 +188,15 @@ std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const 
     key = key.substr(0, key.size() - kSaid.size()) + " INTL";
   // words a name may carry after the part people say ("Schiphol Airport")
   static const char* kGeneric[] = {"AIRPORT", "INTERNATIONAL", "INTL", "AIRFIELD", "AERODROME", "AIRBASE", "AIR BASE"};
+  // a name said as one word that the navdata writes as two ("LaGuardia": LA GUARDIA), or the other way
+  auto squeezed = [](std::string s) {
+    s.erase(std::remove(s.begin(), s.end(), ' '), s.end());
+    return s;
+  };
+  const std::string key_squeezed = squeezed(key);
   for (size_t i = 0; i < airport_names_.size() && i < airports_.size(); ++i) {
     const std::string n = name_key(airport_names_[i]);
-    bool fits = n == key;
+    bool fits = n == key || squeezed(n) == key_squeezed;
     if (!fits && n.size() > key.size() + 1 && n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ') {
       const std::string rest = n.substr(key.size() + 1);
       fits = std::any_of(std::begin(kGeneric), std::end(kGeneric), [&](const char* g) { return rest == g; });

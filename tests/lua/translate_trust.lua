@@ -266,6 +266,7 @@ if #sim:airports_named("schiphol") == 1 then
   check(den:exec("CRE EJA882 C68A 39.6 -103.8 270 FL410 M.80"))
   check_eq(said(graph.translate("Execjet 882 your new destination is Denver International", { sim = den,
     mode = "offline" })), "DEST EJA882 KDEN")
+  check_eq(ustr("FedEx 1288 your new destination is LaGuardia"), "DEST FDX1288 KLGA")
   check_eq(said(graph.translate("create AAL7 an A321 at Kennedy, heading 040, 3000 feet, 210 knots",
     { sim = squawk.sim.new(), mode = "offline" })), "CRE AAL7 A321 KJFK 40 3000 210")
   check_eq(ustr("move JetBlue 1116 to Point Reyes at FL120"), "MOVE JBU1116 PYE FL120")
