@@ -180,13 +180,23 @@ Result<std::shared_ptr<const NavDb>> NavDb::load_cached(const std::string& dir) 
 
 std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const {
   std::vector<const NavPoint*> out;
-  const std::string key = name_key(name);
+  std::string key = name_key(name);
   if (key.empty()) return out;
+  // "Denver International": the navdata writes the word INTL ("DENVER INTL")
+  static const std::string kSaid = " INTERNATIONAL";
+  if (key.size() > kSaid.size() && key.compare(key.size() - kSaid.size(), kSaid.size(), kSaid) == 0)
+    key = key.substr(0, key.size() - kSaid.size()) + " INTL";
   // words a name may carry after the part people say ("Schiphol Airport")
   static const char* kGeneric[] = {"AIRPORT", "INTERNATIONAL", "INTL", "AIRFIELD", "AERODROME", "AIRBASE", "AIR BASE"};
+  // a name said as one word that the navdata writes as two ("LaGuardia": LA GUARDIA), or the other way
+  auto squeezed = [](std::string s) {
+    s.erase(std::remove(s.begin(), s.end(), ' '), s.end());
+    return s;
+  };
+  const std::string key_squeezed = squeezed(key);
   for (size_t i = 0; i < airport_names_.size() && i < airports_.size(); ++i) {
     const std::string n = name_key(airport_names_[i]);
-    bool fits = n == key;
+    bool fits = n == key || squeezed(n) == key_squeezed;
     if (!fits && n.size() > key.size() + 1 && n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ') {
       const std::string rest = n.substr(key.size() + 1);
       fits = std::any_of(std::begin(kGeneric), std::end(kGeneric), [&](const char* g) { return rest == g; });

@@ -398,8 +398,22 @@ local function unlabelled(text)
   return text
 end
 
+-- A type designator written with a hyphen after its letter ("C-17", "C-130") is that designator
+-- when squawk knows it.
+local KNOWN_TYPES
+local function hyphened_types(text)
+  if not KNOWN_TYPES then
+    KNOWN_TYPES = {}
+    for _, d in ipairs(TYPES.designators) do KNOWN_TYPES[d:upper()] = true end
+  end
+  return (text:gsub("%f[%w](%a)%-(%d%d%d?)%f[%W]", function(a, n)
+    if KNOWN_TYPES[(a .. n):upper()] then return a .. n end
+    return nil
+  end))
+end
+
 local function written_forms(text)
-  text = spelled(heard_forms(self_corrections(unlabelled(text))))
+  text = hyphened_types(spelled(heard_forms(self_corrections(unlabelled(text)))))
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
@@ -1503,8 +1517,9 @@ local function unglued_ids(text, fleet)
 end
 
 -- "descend CLH 2AB": a callsign typed apart after its airline letters is joined when the
--- joined id is exactly an aircraft's (letters after the digits too); so are a flight number's
--- letters said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
+-- joined id is exactly an aircraft's (letters after the digits too), and so is a registration
+-- written with its hyphen ("C-GKQM", "D-EABC": CGKQM, DEABC); so are a flight number's letters
+-- said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
   if #fleet == 0 then return text end
   local ids, tails = {}, {}
@@ -1513,14 +1528,54 @@ local function split_ids(text, fleet)
     local tail = a.id:lower():match("^%a+(%d+%a+)$")
     if tail then tails[tail] = (tails[tail] or 0) + 1 end
   end
-  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", function(a, b)
+  local function joined(a, b)
     if ids[(a .. b):lower()] then return a .. b end
     return nil
-  end)
+  end
+  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined):gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined)
   return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
     if tails[(d .. l):lower()] == 1 then return d .. l end
     return nil
   end))
+end
+
+-- "where is Charlie Golf Kilo Quebec Mike", "Cessna Charlie Golf Kilo Quebec Mike, climb ...": a
+-- registration spelled in the phonetic alphabet anywhere, four letters or more, that is exactly the
+-- id of an aircraft flying is written as that id; a maker or model said before it is the aircraft's
+-- own and is written into the id too when the aircraft is of that maker or model.
+local TYPE_WORDS  -- maker or model (lower case) -> {designator = true}
+local function spelled_registrations(text, fleet)
+  if #fleet == 0 then return text end
+  if not TYPE_WORDS then
+    TYPE_WORDS = {}
+    for _, row in ipairs(TYPES.types) do
+      for _, w in ipairs({ row[1]:lower(), row[2]:lower() }) do
+        TYPE_WORDS[w] = TYPE_WORDS[w] or {}
+        TYPE_WORDS[w][row[3]] = true
+      end
+    end
+  end
+  local words = {}  -- {text, b, e} of each word
+  for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
+  for k, w in ipairs(words) do
+    if not lexicon.phonetic[w[1]] or k == 1 or not lexicon.phonetic[words[k - 1][1]] then
+      local set = TYPE_WORDS[w[1]]
+      local first = lexicon.phonetic[w[1]] and k or k + 1
+      local letters, last = "", nil
+      for j = first, #words do
+        local l = lexicon.phonetic[words[j][1]]
+        if not l or (j > first and not text:sub(words[j - 1][3], words[j][2] - 1):match("^%s+$")) then break end
+        letters, last = letters .. l, j
+      end
+      for _, a in ipairs(#letters >= 4 and fleet or {}) do
+        if a.id:upper() == letters then
+          local own = first > k and set and a.type and set[a.type:upper()]
+          return text:sub(1, (own and w or words[first])[2] - 1) .. a.id .. text:sub(words[last][3])
+        end
+      end
+    end
+  end
+  return text
 end
 
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
@@ -1545,6 +1600,7 @@ function M.translate(text, world)
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
+  text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   text = written_forms(text)
   -- type names with their digits said as words, where traffic is created

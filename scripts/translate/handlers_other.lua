@@ -52,6 +52,24 @@ return function(H, f, compass)
 
   function m:create_one(s, id_from)
     local id
+    -- ("create Alaska six eleven" with ASA331 flying: the airline heard whole and a flight number
+    -- no aircraft has is the new aircraft's callsign, not a slip for ASA331)
+    for _, r in ipairs(self:refs_in(id_from, s.e, "aircraft")) do
+      local h = r.heard
+      if r.exists and h and h.airline >= 1 and h.id:match("^%u%u%u?%d+%u*$") then
+        -- (the rest of the flight number said straight after: "Frontier one | one five")
+        -- ("Southwest thirty-one | oh five": "oh" is a zero)
+        local oh = self:word(r.e, "oh o") and 1 or 0
+        local q = self:quantities(r.e + oh, s.e)[1]
+        local id = h.id
+        local rest = q and q.b == r.e + oh and q.kind == "plain" and h.id:match("%d$") and q.number.digits
+        if rest then id = h.id .. ("0"):rep(oh) .. rest end
+        if not self:state(id) and not self:airline_and_digits_match(id, r.name) then
+          if rest then self:mark_used(q.b, q.e) end
+          r.name, r.exists, r.heard, r.e = id, false, nil, rest and q.e or r.e
+        end
+      end
+    end
     for _, r in ipairs(self:refs_in(id_from, s.e, "aircraft")) do
       if not r.exists then id = r.name break end
     end
@@ -124,7 +142,18 @@ return function(H, f, compass)
           named_at = named_at or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
         end
       end
-      named_at = named_at or self:place_by_name(math.max(from, s.trig) + 1, s.e)
+      if not named_at then
+        -- ("at Kennedy": the airport beside the navaid of that name, as "at JFK" is KJFK)
+        local was = {}
+        for k in pairs(self.explained or {}) do was[k] = true end
+        named_at = self:place_by_name(math.max(from, s.trig) + 1, s.e)
+        for k = math.max(from, s.trig) + 1, s.e - 1 do
+          if named_at and (self.explained or {})[k] and not was[k] then
+            if self:word(k - 1, "at") then named_at = self:airport_meant(named_at, self.fleet[1] or { lat = 0, lon = 0 }) end
+            break
+          end
+        end
+      end
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
     -- order: heading, altitude, speed: "fl300 290"); others are asked about

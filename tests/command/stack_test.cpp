@@ -371,7 +371,9 @@ TEST_CASE("navdata: airports by name, whole or with a generic word, never a pref
   auto db = NavDb::parse("# code,name,lat,lon,class\n"
                          "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
                          "EGLL, Heathrow Airport, 51.477, -0.461, Large, 12799, UK,83\n"
-                         "CYSY, Sachs Harbour, 71.99, -125.24, Small, , CA,\n",
+                         "CYSY, Sachs Harbour, 71.99, -125.24, Small, , CA,\n"
+                         "KDEN, DENVER INTL, 39.862, -104.673, Large, 16000, US/CO,5431\n"
+                         "KLGA, LA GUARDIA, 40.777, -73.873, Large, 7000, US/NY,22\n",
                          "", "", "test");
   REQUIRE(db.is_ok());
   auto ids = [&](const char* name) {
@@ -384,6 +386,13 @@ TEST_CASE("navdata: airports by name, whole or with a generic word, never a pref
   CHECK(ids("heathrow airport") == std::vector<std::string>{"EGLL"});
   CHECK(ids("sachs").empty());
   CHECK(ids("sachs harbour") == std::vector<std::string>{"CYSY"});
+  // "International" as said is the navdata's INTL
+  CHECK(ids("Denver International") == std::vector<std::string>{"KDEN"});
+  CHECK(ids("denver intl") == std::vector<std::string>{"KDEN"});
+  // said as one word where the navdata writes two
+  CHECK(ids("LaGuardia") == std::vector<std::string>{"KLGA"});
+  CHECK(ids("la guardia") == std::vector<std::string>{"KLGA"});
+  CHECK(ids("guardia").empty());
   CHECK(ids("").empty());
 }
 

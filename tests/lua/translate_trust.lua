@@ -258,6 +258,17 @@ if #sim:airports_named("schiphol") == 1 then
   -- a place where an aircraft is put or moved is named like one it is sent to: a navaid of that
   -- name near the traffic; an airport of that name near the aircraft before one far away
   check_eq(ustr("create UAL9 a B738 at Canarsie heading 090 FL200 280 knots"), "CRE UAL9 B738 CRI 90 FL200 280")
+  -- "at Kennedy": the airport beside the navaid of that name, as "at JFK" is (over it: the navaid)
+  check_eq(ustr("create UAL9 a B738 at Kennedy heading 090 3000 feet 200 knots"), "CRE UAL9 B738 KJFK 90 3000 200")
+  check_eq(ustr("create UAL9 a B738 over Kennedy heading 090 3000 feet 200 knots"), "CRE UAL9 B738 JFK 90 3000 200")
+  -- "International" as the navdata writes it (INTL)
+  local den = squawk.sim.new()
+  check(den:exec("CRE EJA882 C68A 39.6 -103.8 270 FL410 M.80"))
+  check_eq(said(graph.translate("Execjet 882 your new destination is Denver International", { sim = den,
+    mode = "offline" })), "DEST EJA882 KDEN")
+  check_eq(ustr("FedEx 1288 your new destination is LaGuardia"), "DEST FDX1288 KLGA")
+  check_eq(said(graph.translate("create AAL7 an A321 at Kennedy, heading 040, 3000 feet, 210 knots",
+    { sim = squawk.sim.new(), mode = "offline" })), "CRE AAL7 A321 KJFK 40 3000 210")
   check_eq(ustr("move JetBlue 1116 to Point Reyes at FL120"), "MOVE JBU1116 PYE FL120")
   -- with no traffic: an airport of that name first, else the one navaid of that name anywhere
   local empty = squawk.sim.new()
@@ -733,4 +744,31 @@ do
   check_eq(lt("add an intruder for KLM1234: INT8 A321, 30 degrees, cpa 0.5 nm, 150 s"), "CRECONFS INT8 A321 KLM1234 30 0.5 150")
   check(lt("add an intruder for KLM1234: INT9 A321, 30 degrees, cpa 0.5 nm"):find("^ASK In how many seconds") ~= nil,
     "an intruder with no time asks for it")
+end
+
+-- North American traffic (R19): a Canadian registration spelled or hyphenated, a maker before it; a
+-- military telephony; a new aircraft of an airline already flying, its flight number said in words
+do
+  local na = squawk.sim.new()
+  for _, line in ipairs({ "CRE CFABC C172 43.7 -79.2 090 3000 100", "CRE ASA331 B739 46.6 -122.6 350 FL200 290",
+      "CRE RCH451 C17 40.4 -74.6 045 FL240 300", "CRE NAVY21 C130 41.7 -88.9 020 9000 250",
+      "CRE DLH4AX A321 52.4 4.4 090 FL300 280" }) do
+    check(na:exec(line))
+  end
+  local function nt(text) return said(graph.translate(text, { sim = na, mode = "offline" })) end
+  check_eq(nt("C-FABC descend to two thousand five hundred"), "ALT CFABC 2500")
+  check_eq(nt("Cessna Charlie Foxtrot Alpha Bravo Charlie, fly heading two seven zero"), "HDG CFABC 270")
+  check_eq(nt("what's the position of Charlie Foxtrot Alpha Bravo Charlie?"), "POS CFABC")
+  check_eq(nt("Reach four five one, climb flight level two six zero"), "ALT RCH451 FL260")
+  check_eq(nt("remove Navy two one"), "DEL NAVY21")
+  -- a designator written with its hyphen
+  check_eq(nt("create RCH9 a C-17 at 52 4, heading 090, FL100, 250 knots"), "CRE RCH9 C17 52 4 90 FL100 250")
+  check_eq(nt("create RCH10, C-130, at 52 4, heading 090, FL100, 250 knots"), "CRE RCH10 C130 52 4 90 FL100 250")
+  check_eq(nt("Create Alaska five twelve, a B739, over SPY, FL240, heading 350, 290 knots"),
+    "CRE ASA512 B739 SPY 350 FL240 290")
+  check_eq(nt("create Alaska twenty-two oh seven, a B739, over SPY, FL240, heading 350, 290 knots"),
+    "CRE ASA2207 B739 SPY 350 FL240 290")
+  -- the flight number of an aircraft flying creates nothing new
+  check(nt("create Alaska three three one, a B739, over SPY, FL240, heading 350, 290 knots"):find("^ASK") ~= nil,
+    "an aircraft that flies is not created again")
 end

@@ -30,7 +30,7 @@ for text, want in pairs({
   ["Boeing 777-300ER"] = "B77W", ["787-9"] = "B789", ["a 737 MAX 8"] = "B38M", ["Boeing 737 max 9"] = "B39M",
   ["A321neo"] = "A21N", ["Airbus A330-200"] = "A332", ["A350-900"] = "A359", ["ATR 72-600"] = "AT76",
   ["Dash 8-400"] = "DH8D", ["Dash 8"] = "DH8D", ["Q400"] = "DH8D", ["Cessna 172"] = "C172", ["Embraer 190"] = "E190",
-  ["CRJ900"] = "CRJ9",
+  ["CRJ900"] = "CRJ9", ["Airbus A220-300"] = "BCS3", ["an A220-100"] = "BCS1", ["Cirrus SR22"] = "SR22",
 }) do
   check_eq(type_of("create X1 " .. text .. " at 52 4"), want, text)
 end
