@@ -361,7 +361,7 @@ return function(H, f, wrap, compass)
       if named then break end
       -- a compass word of a callsign ("Southwest 963") or a place ("northeast of") is no heading
       if self.t[i].kind == "word" and compass(self.t[i].text) and not self.u:used(i) and not self:word(i + 1, "of") then
-        named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "")
+        named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "", i + 2 < s.e and self.t[i + 2].text or "")
       end
     end
     local id = ids[1]

@@ -65,6 +65,11 @@ do -- headings: absolute, compass words, ATC digits
   check_eq(tr("Shamrock four five kilo, turn left heading three one zero"), "HDG EIN45K 310 LEFT")
   check_eq(tr("Point AC01 due south"), "HDG AC01 180")
   check_eq(tr("Make AC03 fly north-east"), "HDG AC03 45")
+  -- the sixteen-point compass: a cardinal and the intercardinal after it
+  check_eq(tr("Make AC03 fly west-south-west"), "HDG AC03 247.5")
+  check_eq(tr("AC01 head north north east"), "HDG AC01 22.5")
+  check_eq(tr("steer AC02 north-northwest"), "HDG AC02 337.5")
+  check_eq(tr("Point AC01 east south east"), "HDG AC01 112.5")
   check_eq(tr("Set the heading of aircraft TEST3 to one hundred and twenty degrees"), "HDG TEST3 120")
 end
 
