@@ -283,6 +283,12 @@ return function(H, f, wrap, compass)
         local a = self:state(id)
         if not a or (a.cas_kt or 0) <= 0 then return self:need("What is the current speed of " .. id .. "?") end
         if dir == 0 then return self:need("Should " .. id .. " fly faster or slower?") end
+        -- knots added to an aircraft holding a Mach number: which knots (its CAS now, or the
+        -- Mach's equivalent at a level it has not reached) is the speaker's to say
+        if a.sel_mach and q.kind ~= "percent" then
+          return self:need(string.format("%s holds %s: what speed should it fly, in knots or as a Mach number?",
+                                         id, f.mach(a.sel_mach)))
+        end
         local delta = q.kind == "percent" and a.cas_kt * q.value / 100 or q.value
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
       else
