@@ -40,9 +40,16 @@ local function wrap(h)
 end
 
 local BASE = { north = true, east = true, south = true, west = true }
-local function compass(a, b)
+-- A compass point said in one word ("southwest"), two ("south west": 225) or three
+-- ("west-south-west", "north northeast": the point halfway between the cardinal `a` and
+-- the intercardinal after it, 247.5 and 22.5); degrees, or nil when the words name none.
+local function compass(a, b, c)
   local x, y = L.compass[a], L.compass[b or ""]
   if not x then return nil end
+  local inter = BASE[a] and y and (BASE[b] and c and BASE[c] and compass(b, c) or (not BASE[b] and y))
+  if inter and inter % 90 ~= 0 and math.abs(inter - (x == 0 and inter > 180 and 360 or x)) == 45 then
+    return (inter + (x == 0 and inter > 180 and 360 or x)) / 2
+  end
   if not BASE[a] then return x end  -- "southwest"
   if y and not BASE[b] then y = nil end
   if not y then return x == 0 and 360 or x end

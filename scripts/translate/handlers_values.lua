@@ -283,6 +283,12 @@ return function(H, f, wrap, compass)
         local a = self:state(id)
         if not a or (a.cas_kt or 0) <= 0 then return self:need("What is the current speed of " .. id .. "?") end
         if dir == 0 then return self:need("Should " .. id .. " fly faster or slower?") end
+        -- knots added to an aircraft holding a Mach number: which knots (its CAS now, or the
+        -- Mach's equivalent at a level it has not reached) is the speaker's to say
+        if a.sel_mach and q.kind ~= "percent" then
+          return self:need(string.format("%s holds %s: what speed should it fly, in knots or as a Mach number?",
+                                         id, f.mach(a.sel_mach)))
+        end
         local delta = q.kind == "percent" and a.cas_kt * q.value / 100 or q.value
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
       else
@@ -361,7 +367,7 @@ return function(H, f, wrap, compass)
       if named then break end
       -- a compass word of a callsign ("Southwest 963") or a place ("northeast of") is no heading
       if self.t[i].kind == "word" and compass(self.t[i].text) and not self.u:used(i) and not self:word(i + 1, "of") then
-        named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "")
+        named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "", i + 2 < s.e and self.t[i + 2].text or "")
       end
     end
     local id = ids[1]

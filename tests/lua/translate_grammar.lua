@@ -65,6 +65,11 @@ do -- headings: absolute, compass words, ATC digits
   check_eq(tr("Shamrock four five kilo, turn left heading three one zero"), "HDG EIN45K 310 LEFT")
   check_eq(tr("Point AC01 due south"), "HDG AC01 180")
   check_eq(tr("Make AC03 fly north-east"), "HDG AC03 45")
+  -- the sixteen-point compass: a cardinal and the intercardinal after it
+  check_eq(tr("Make AC03 fly west-south-west"), "HDG AC03 247.5")
+  check_eq(tr("AC01 head north north east"), "HDG AC01 22.5")
+  check_eq(tr("steer AC02 north-northwest"), "HDG AC02 337.5")
+  check_eq(tr("Point AC01 east south east"), "HDG AC01 112.5")
   check_eq(tr("Set the heading of aircraft TEST3 to one hundred and twenty degrees"), "HDG TEST3 120")
 end
 
@@ -83,6 +88,11 @@ do -- relative instructions use the current state
   check_eq(tr("Climb AC01 by 2000 feet", w), "ALT AC01 27000")
   check_eq(tr("Slow AC01 down by 20 knots", w), "SPD AC01 260")
   check_eq(tr("Increase the speed of AC01 by 10%", w), "SPD AC01 308")
+  -- knots added to an aircraft holding a Mach number are asked about, knots to one holding knots are not
+  local m = world_of("CRE AAL1 B77W 52 4 120 FL350 M.82 ; CRE BAW1 A320 52 5 90 FL200 280")
+  check_eq(tr("increase AAL1 speed by 20 knots", m), "ASK AAL1 holds M0.82: what speed should it fly, in knots or as a Mach number?")
+  check_eq(tr("AAL1 ten knots slower", m), "ASK AAL1 holds M0.82: what speed should it fly, in knots or as a Mach number?")
+  check_eq(tr("BAW1 speed up by 20 knots", m), "SPD BAW1 300")
   -- a reversal with no way said asks which way (either is as short); with the way, the way
   check_eq(tr("Turn AC01 around", w), "ASK Should AC01 turn around to the left or to the right?")
   check_eq(tr("Turn AC01 around to the left", w), "HDG AC01 270 LEFT")
