@@ -1270,6 +1270,7 @@ return function(H, f, compass)
       return self:emit(vertical and "ZONEDH" or "ZONER")
     end
     local before = #self.out
+    local heights = {}  -- { value (ft), index of its ZONEDH line in self.out }
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
       for i = q.b - 1, s.b, -1 do
@@ -1277,7 +1278,21 @@ return function(H, f, compass)
         if self:word(i, "@zone_radius") then vertical = false break end
       end
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
-      if q.kind == "alt" or (q.kind == "plain" and vertical) then self:emit("ZONEDH " .. f.num(q.value)) end
+      if q.kind == "alt" or (q.kind == "plain" and vertical) then
+        self:emit("ZONEDH " .. f.num(self:take(q).value))
+        heights[#heights + 1] = { q.value, #self.out }
+      end
+    end
+    -- two vertical values are the separation and its half ("separation 1000 ft, half height 500"):
+    -- ZONEDH takes the half; any other pair contradicts itself and is asked
+    if #heights == 2 and heights[1][1] ~= heights[2][1] then
+      local lo, hi = heights[1], heights[2]
+      if lo[1] > hi[1] then lo, hi = hi, lo end
+      if hi[1] ~= 2 * lo[1] then
+        return self:need("Which half-height, in feet, should the protected zone have: "
+          .. f.num(heights[1][1]) .. " or " .. f.num(heights[2][1]) .. "?")
+      end
+      table.remove(self.out, hi[2])
     end
     if #self.out == before then
       self:need(vertical and "What half-height, in feet, should the protected zone have?"

@@ -396,6 +396,13 @@ check(r.ask ~= nil and r.ask:find("by 200 degrees, or fly heading 200", 1, true)
 check_eq(said(tr("BAW8CK turn left heading 200")), "HDG BAW8CK 200 LEFT")
 -- "plus or minus N" is a size either side, never a negative value
 check_eq(said(tr("set the vertical separation to plus or minus 800 ft")), "ZONEDH 800")
+-- a vertical separation and its half said together set the half; two heights that disagree are asked
+check_eq(said(tr("vertical separation 2000 ft, half height 1000 ft")), "ZONEDH 1000")
+check_eq(said(tr("set the zone half height to 500 feet, that is 1000 feet separation")), "ZONEDH 500")
+do
+  local r = tr("zonedh 1000 and half height 300")
+  check(r.commands == nil and r.ask ~= nil and r.ask:find("1000 or 300", 1, true) ~= nil, said(r))
+end
 
 -- a clock started at a rate: OP and the rate, neither dropped
 check_eq(said(tr("resume the simulation at x3")), "OP ; DTMULT 3")
