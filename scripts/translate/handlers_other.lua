@@ -987,9 +987,10 @@ return function(H, f, compass)
     if not id then return end
     local on, now = on_off(self, s), self:state(id)
     -- "resume own navigation" for an aircraft with no route and no waypoint named: nothing to fly
-    -- (the switch named, "lnav on", is set as asked)
+    -- (the switch named, "lnav on", is set as asked; a direct-to in the request names its place)
     if cmd == "LNAV" and on == "ON" and now and now.route and #now.route == 0
-        and not self:word_in(s.b, s.e, "lnav") and not self:has_ref(1, #self.t + 1, "waypoint") then
+        and not self:word_in(s.b, s.e, "lnav") and not self:has_ref(1, #self.t + 1, "waypoint")
+        and not self:word_in(1, #self.t + 1, "direct dct") then
       return self:need(string.format("%s has no route to navigate by. Which waypoint or heading should it fly?", id))
     end
     self:emit(cmd .. " " .. id .. " " .. on)

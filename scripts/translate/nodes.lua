@@ -275,7 +275,10 @@ end
 -- free-text argument would take "open the scenario demo.scn" as typed).
 local GLUE = { the = true, a = true, an = true, to = true, of = true, from = true, ["and"] = true, ["then"] = true,
   ["for"] = true, with = true, by = true, into = true, please = true, file = true, scenario = true,
-  aircraft = true, plane = true, flight = true, this = true, that = true, all = true, now = true }
+  aircraft = true, plane = true, flight = true, this = true, that = true, all = true, now = true,
+  -- (prepositions no argument is: "create KLM1234 at SPY" is English, not CRE of a type "AT";
+  -- "at" stays the AT command's own name, has_english_word)
+  at = true, over = true, near = true, via = true, towards = true, toward = true }
 
 local keywords
 local function keyword_set()
@@ -326,7 +329,8 @@ local function has_english_word(line, name)
     local turn_word = name == "HDG" and n == 4 and (lw == "left" or lw == "right")
     -- ("WZZ1234 speed +20": a change said with its sign, which SPD / ALT / HDG would read as a value)
     if n > 1 and lw:match("^%+%d") and (name == "SPD" or name == "ALT" or name == "HDG") then return true end
-    if name ~= "ECHO" and (GLUE[lw] or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
+    local own_name = lw:upper() == name
+    if name ~= "ECHO" and ((GLUE[lw] and not own_name) or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
       return true
     end
   end

@@ -137,6 +137,18 @@ check(not tr("turn KLM1234 north").typed, "a compass word is English")
 -- a conditional's command typed without its aircraft gets the condition's
 check_eq(said(tr("klm1234 atalt fl080 spd 210")), "ATALT klm1234 fl080 spd klm1234 210")
 check(not tr("delete the aircraft").typed, "glue words are English")
+-- a preposition is no argument: "create X at Y" is English (CRE would take "AT" for the type)
+check(not tr("create KLM77 at 52 4").typed, "a preposition is English")
+check(tr("create KLM77 at 52 4").ask ~= nil, "a create with no type asks")
+do  -- (the AT command's own name stays TrafScript)
+  local routed = squawk.sim.new()
+  check(routed:exec("CRE KL9 A320 52 4 90 FL250 280"))
+  check(routed:exec("DEFWPT WP1 52.1 4.5"))
+  check(routed:exec("ADDWPT KL9 WP1"))
+  local rt = graph.translate("at KL9 WP1 ALT FL120", { sim = routed, mode = "offline" })
+  check(rt.typed == true, "AT typed runs as typed")
+  check_eq(said(rt), "AT KL9 WP1 ALT FL120")
+end
 -- a condition's command is TrafScript too: run as typed when it parses, asked about when not
 check_eq(said(tr("SCHEDULE 60 HOLD")), "SCHEDULE 60 HOLD")
 check_eq(said(tr("delay 60 hdg klm1234 270 right")), "DELAY 60 hdg klm1234 270 right")
