@@ -40,7 +40,7 @@ namespace {
 
 struct EnvPolicy {
   bool random = false;
-  std::string script;            // the policy file of script:FILE, or ""
+  std::string script;                  // the policy file of script:FILE, or ""
   std::vector<double> constant;        // the action when neither random, scripted nor an MLP
   std::unique_ptr<rl::MlpPolicy> mlp;  // mlp:CKPT
   int levels = 0;                      // [-] mlp: grid levels per action component

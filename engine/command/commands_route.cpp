@@ -55,9 +55,10 @@ Result<std::string> insert_relative(Call& c, bool after) {
   if (c[1].text == "*") return Status::invalid("argument 2: needs a waypoint name, not '*'");
   // BlueSky reads the new waypoint as one token: a latitude there has no longitude after it
   if (is_lat(text::upper(c[3].text)))
-    return Status::invalid("argument 4: " + text::quoted(c[3].text) +
-                           " is a latitude, but the new waypoint is one name: define the point first "
-                           "(DEFWPT name lat lon), then insert it by name");
+    return Status::invalid(
+        "argument 4: " + text::quoted(c[3].text) +
+        " is a latitude, but the new waypoint is one name: define the point first "
+        "(DEFWPT name lat lon), then insert it by name");
   ArgReader r(c[3].text);
   SQUAWK_ASSIGN_OR_RETURN(ArgValue p, parse_position(r, c.stack.parse_context(), {}));
   const sim::Traffic& t = c.stack.sim().traffic();

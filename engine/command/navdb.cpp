@@ -156,7 +156,8 @@ Result<std::shared_ptr<NavDb>> NavDb::build(std::string_view airports_dat, std::
                                             std::string_view fix_dat, const std::string& where) {
   std::vector<NavPoint> airports, waypoints;
   std::vector<std::string> names, classes, navaid_names;
-  SQUAWK_RETURN_IF_ERROR(parse_airports(airports_dat, where + "/airports.dat", airports, names, classes));
+  SQUAWK_RETURN_IF_ERROR(
+      parse_airports(airports_dat, where + "/airports.dat", airports, names, classes));
   parse_navaids(nav_dat, waypoints, navaid_names);
   parse_fixes(fix_dat, waypoints);
   if (airports.empty() && waypoints.empty())
@@ -188,7 +189,8 @@ std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const 
     key = key.substr(0, key.size() - kSaid.size()) + " INTL";
   // words a name may carry after the part people say ("Schiphol Airport")
   static const char* kGeneric[] = {"AIRPORT", "INTERNATIONAL", "INTL", "AIRFIELD", "AERODROME", "AIRBASE", "AIR BASE"};
-  // a name said as one word that the navdata writes as two ("LaGuardia": LA GUARDIA), or the other way
+  // a name said as one word that the navdata writes as two ("LaGuardia": LA GUARDIA), or the other
+  // way
   auto squeezed = [](std::string s) {
     s.erase(std::remove(s.begin(), s.end(), ' '), s.end());
     return s;
@@ -210,10 +212,11 @@ std::vector<const NavPoint*> NavDb::airports_of_city(std::string_view city) cons
   std::vector<const NavPoint*> out;
   const std::string key = name_key(city);
   if (key.empty()) return out;
-  for (size_t i = 0; i < airport_names_.size() && i < airport_classes_.size() && i < airports_.size(); ++i) {
+  for (size_t i = 0;
+       i < airport_names_.size() && i < airport_classes_.size() && i < airports_.size(); ++i) {
     const std::string n = name_key(airport_names_[i]);
-    if (airport_classes_[i] == "LARGE" && n.size() > key.size() + 1 && n.compare(0, key.size(), key) == 0 &&
-        n[key.size()] == ' ')
+    if (airport_classes_[i] == "LARGE" && n.size() > key.size() + 1 &&
+        n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ')
       out.push_back(&airports_[i]);
   }
   return out;

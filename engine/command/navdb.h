@@ -54,7 +54,8 @@ class NavDb {
   // Large airports (airports.dat's class) whose name starts with the words of `city` and goes on
   // ("Frankfurt" -> EDDF "FRANKFURT MAIN", not the medium EDFH "FRANKFURT HAHN").
   std::vector<const NavPoint*> airports_of_city(std::string_view city) const;
-  // airports.dat's class of airport `id`, upper case ("LARGE", "MEDIUM", "SMALL"), or "" when unknown.
+  // airports.dat's class of airport `id`, upper case ("LARGE", "MEDIUM", "SMALL"), or "" when
+  // unknown.
   std::string airport_class(std::string_view id) const;
   // Idents of the navaids whose name, less its kind ("SAN FRANCISCO" of nav.dat's "SAN
   // FRANCISCO VOR-DME"), is `name` (case and punctuation ignored), within `within_nm` of
@@ -80,7 +81,8 @@ class NavDb {
 
   std::vector<NavPoint> airports_;
   std::vector<std::string> airport_names_;  // airports.dat names, upper case, by airports_ index (may be empty)
-  std::vector<std::string> airport_classes_;  // airports.dat classes, upper case, by airports_ index
+  std::vector<std::string>
+      airport_classes_;  // airports.dat classes, upper case, by airports_ index
   std::vector<NavPoint> waypoints_;
   std::vector<std::string> navaid_names_;  // nav.dat names less their kind, as name keys, by
                                            // waypoints_ index (navaids first)

@@ -22,7 +22,8 @@ std::string caller_where(lua_State* L) {
 }
 
 std::string show(lua_State* L, int idx) {
-  if (lua_type(L, idx) == LUA_TNUMBER && !lua_isinteger(L, idx)) return text::fmt_exact(lua_tonumber(L, idx));
+  if (lua_type(L, idx) == LUA_TNUMBER && !lua_isinteger(L, idx))
+    return text::fmt_exact(lua_tonumber(L, idx));
   if (lua_type(L, idx) == LUA_TSTRING) {
     std::string r(1, '"');
     r.append(lua_tostring(L, idx)).append(1, '"');

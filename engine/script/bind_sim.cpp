@@ -159,7 +159,8 @@ int push_airports(lua_State* L, bool city) {
   lua_newtable(L);
   if (!s->navdb()) return 1;
   int k = 0;
-  for (const command::NavPoint* a : city ? s->navdb()->airports_of_city(name) : s->navdb()->airports_named(name)) {
+  for (const command::NavPoint* a :
+       city ? s->navdb()->airports_of_city(name) : s->navdb()->airports_named(name)) {
     if (near && geo::kwikdist_nm(lat, lon, a->lat, a->lon) > within) continue;
     lua_pushstring(L, a->id.c_str());
     lua_rawseti(L, -2, ++k);
@@ -167,8 +168,12 @@ int push_airports(lua_State* L, bool city) {
   return 1;
 }
 
-int l_airports_named(lua_State* L) { return push_airports(L, false); }
-int l_airports_of_city(lua_State* L) { return push_airports(L, true); }
+int l_airports_named(lua_State* L) {
+  return push_airports(L, false);
+}
+int l_airports_of_city(lua_State* L) {
+  return push_airports(L, true);
+}
 
 int l_airport_class(lua_State* L) {
   command::Stack* s = self(L);

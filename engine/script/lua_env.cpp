@@ -97,8 +97,8 @@ Status LuaEnv::read_spec() {
       if (!(s.action_low[k] <= s.action_high[k]) || !std::isfinite(s.action_low[k]) ||
           !std::isfinite(s.action_high[k]))
         throw ArgError("action bounds " + std::to_string(k + 1) +
-                       ": expected finite low <= high, got " + text::fmt_exact(s.action_low[k]) + ", " +
-                       text::fmt_exact(s.action_high[k]));
+                       ": expected finite low <= high, got " + text::fmt_exact(s.action_low[k]) +
+                       ", " + text::fmt_exact(s.action_high[k]));
     s.max_episode_steps =
         static_cast<int>(field_count(L, e, "max_episode_steps", 0, 1, 1'000'000'000));
     if (s.max_episode_steps == 0)
@@ -154,8 +154,9 @@ Status LuaEnv::read_observation(int idx, const char* fn) {
       get_index(L, idx, k);
       const double v = lua_tonumber(L, -1);
       if (!lua_isnumber(L, -1) || !std::isfinite(v))
-        throw ArgError("observation[" + std::to_string(k) + "]: expected a finite number, got " +
-                       (lua_isnumber(L, -1) ? text::fmt_exact(v) : std::string(luaL_typename(L, -1))));
+        throw ArgError(
+            "observation[" + std::to_string(k) + "]: expected a finite number, got " +
+            (lua_isnumber(L, -1) ? text::fmt_exact(v) : std::string(luaL_typename(L, -1))));
       obs_[static_cast<size_t>(k - 1)] = v;
       lua_pop(L, 1);
     }

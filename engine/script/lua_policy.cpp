@@ -91,11 +91,13 @@ Status LuaPolicy::act(std::span<const double> obs, std::span<double> action) {
         const size_t i = static_cast<size_t>(k - 1);
         const double v = lua_tonumber(L, -1);
         if (!lua_isnumber(L, -1) || !std::isfinite(v))
-          throw ArgError("action[" + std::to_string(k) + "]: expected a finite number, got " +
-                         (lua_isnumber(L, -1) ? text::fmt_exact(v) : std::string(luaL_typename(L, -1))));
+          throw ArgError(
+              "action[" + std::to_string(k) + "]: expected a finite number, got " +
+              (lua_isnumber(L, -1) ? text::fmt_exact(v) : std::string(luaL_typename(L, -1))));
         if (v < spec_.action_low[i] || v > spec_.action_high[i])
-          throw ArgError("action[" + std::to_string(k) + "] = " + text::fmt_exact(v) + " is outside [" +
-                         text::fmt_exact(spec_.action_low[i]) + ", " + text::fmt_exact(spec_.action_high[i]) + "]");
+          throw ArgError("action[" + std::to_string(k) + "] = " + text::fmt_exact(v) +
+                         " is outside [" + text::fmt_exact(spec_.action_low[i]) + ", " +
+                         text::fmt_exact(spec_.action_high[i]) + "]");
         action[i] = v;
         lua_pop(L, 1);
       }

@@ -40,10 +40,12 @@ bool is_unit_word(const std::string& w) {
 // first word of the airline just said; said again, it starts the callsign over
 // ("Delta sixty, Delta six forty six") and ends this one.
 // `heard_digits`: a word speech recognition writes for a digit ("for", "to": number_words.cpp's
-// heard_digit) is that digit where a digit or a spelled letter follows it ("lufthansa for seven one",
-// "swiss eight for kilo"); the caller takes that reading only when it is exactly an aircraft's id.
-Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used, const Tables& names,
-                   const std::string& restart = "", bool heard_digits = false) {
+// heard_digit) is that digit where a digit or a spelled letter follows it ("lufthansa for seven
+// one", "swiss eight for kilo"); the caller takes that reading only when it is exactly an
+// aircraft's id.
+Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool>& used,
+                   const Tables& names, const std::string& restart = "",
+                   bool heard_digits = false) {
   Suffix s;
   while (j < t.size() && !used[j] && s.groups.size() < 8) {
     const Token& k = t[j];
@@ -383,7 +385,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       Suffix suf = read_suffix(t, i + len, used, names, t[i].text);
       if (!world_id(*icao + text::upper(suf.joined(suf.groups.size())))) {
         Suffix heard_suf = read_suffix(t, i + len, used, names, t[i].text, true);
-        if (world_id(*icao + text::upper(heard_suf.joined(heard_suf.groups.size())))) suf = heard_suf;
+        if (world_id(*icao + text::upper(heard_suf.joined(heard_suf.groups.size()))))
+          suf = heard_suf;
       }
       if (suf.groups.empty() || names.phonetic_letter(t[i + len].text) != 0) break;
       std::string id = *icao + text::upper(suf.joined(suf.groups.size()));

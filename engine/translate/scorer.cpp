@@ -217,9 +217,11 @@ std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
   };
   for (auto& c : cmds) {
     auto v = words(c);
-    if (v.size() < 5 || (v[0] != "AFTER" && v[0] != "BEFORE") || !text::iequals(v[3], "ADDWPT")) continue;
+    if (v.size() < 5 || (v[0] != "AFTER" && v[0] != "BEFORE") || !text::iequals(v[3], "ADDWPT"))
+      continue;
     const std::string alt = v.size() > 5 ? v[5] : "", spd = v.size() > 6 ? v[6] : "";
-    c = "ADDWPT " + v[1] + " " + v[4] + "," + alt + "," + spd + "," + (v[0] == "AFTER" ? v[2] : "," + v[2]);
+    c = "ADDWPT " + v[1] + " " + v[4] + "," + alt + "," + spd + "," +
+        (v[0] == "AFTER" ? v[2] : "," + v[2]);
   }
   for (size_t i = 0; i + 1 < cmds.size(); ++i) {
     auto a = words(cmds[i]), b = words(cmds[i + 1]);

@@ -11,7 +11,8 @@ bool swapped_pair(const std::string& a, const std::string& b) {
   if (a.size() != b.size()) return false;
   size_t i = 0;
   while (i < a.size() && a[i] == b[i]) ++i;
-  return i + 1 < a.size() && a[i] == b[i + 1] && a[i + 1] == b[i] && a.compare(i + 2, std::string::npos, b, i + 2) == 0;
+  return i + 1 < a.size() && a[i] == b[i + 1] && a[i + 1] == b[i] &&
+         a.compare(i + 2, std::string::npos, b, i + 2) == 0;
 }
 
 }  // namespace

@@ -226,7 +226,8 @@ TEST_CASE("DEFWPT, ADDWPT, route listing, AT constraints, DIRECT, DELWPT") {
   CHECK(route().active() == 1);
   CHECK(error_of(s, "KL204 AFTER BRAVO ADDWPT CHARLIE").find("'CHARLIE'") != std::string::npos);
   // a latitude for the new waypoint (BlueSky reads one token there) says how to name the point
-  CHECK(error_of(s, "KL204 AFTER BRAVO ADDWPT 52.2 4.9").find("'52.2' is a latitude") != std::string::npos);
+  CHECK(error_of(s, "KL204 AFTER BRAVO ADDWPT 52.2 4.9").find("'52.2' is a latitude") !=
+        std::string::npos);
   CHECK(route().size() == 3);
   REQUIRE(s.exec("DEFWPT CHARLIE 52.2 4.9"));
   REQUIRE(s.exec("KL204 AFTER BRAVO ADDWPT CHARLIE FL120"));
@@ -368,13 +369,14 @@ TEST_CASE("navdata: airports, fixes and navaids resolve where BlueSky accepts th
 
 
 TEST_CASE("navdata: airports by name, whole or with a generic word, never a prefix of another name") {
-  auto db = NavDb::parse("# code,name,lat,lon,class\n"
-                         "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
-                         "EGLL, Heathrow Airport, 51.477, -0.461, Large, 12799, UK,83\n"
-                         "CYSY, Sachs Harbour, 71.99, -125.24, Small, , CA,\n"
-                         "KDEN, DENVER INTL, 39.862, -104.673, Large, 16000, US/CO,5431\n"
-                         "KLGA, LA GUARDIA, 40.777, -73.873, Large, 7000, US/NY,22\n",
-                         "", "", "test");
+  auto db = NavDb::parse(
+      "# code,name,lat,lon,class\n"
+      "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
+      "EGLL, Heathrow Airport, 51.477, -0.461, Large, 12799, UK,83\n"
+      "CYSY, Sachs Harbour, 71.99, -125.24, Small, , CA,\n"
+      "KDEN, DENVER INTL, 39.862, -104.673, Large, 16000, US/CO,5431\n"
+      "KLGA, LA GUARDIA, 40.777, -73.873, Large, 7000, US/NY,22\n",
+      "", "", "test");
   REQUIRE(db.is_ok());
   auto ids = [&](const char* name) {
     std::vector<std::string> out;
@@ -396,22 +398,26 @@ TEST_CASE("navdata: airports by name, whole or with a generic word, never a pref
   CHECK(ids("").empty());
 }
 
-TEST_CASE("navdata: a city is the large airport whose name starts with it; classes as airports.dat gives them") {
-  auto db = NavDb::parse("EDDF, FRANKFURT MAIN, 50.026, 8.543, Large, 13123, GM,364\n"
-                         "EDFH, FRANKFURT HAHN, 49.949, 7.264, Medium, 11483, GM,1649\n"
-                         "FAAM, Amsterdam Airport, -26.633, 30.6, Small, , SF,4310\n"
-                         "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
-                         "XXXX, Frankfurter, 1.0, 1.0, Large\n",
-                         "", "", "test");
+TEST_CASE(
+    "navdata: a city is the large airport whose name starts with it; classes as airports.dat gives "
+    "them") {
+  auto db = NavDb::parse(
+      "EDDF, FRANKFURT MAIN, 50.026, 8.543, Large, 13123, GM,364\n"
+      "EDFH, FRANKFURT HAHN, 49.949, 7.264, Medium, 11483, GM,1649\n"
+      "FAAM, Amsterdam Airport, -26.633, 30.6, Small, , SF,4310\n"
+      "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n"
+      "XXXX, Frankfurter, 1.0, 1.0, Large\n",
+      "", "", "test");
   REQUIRE(db.is_ok());
   auto ids = [&](const char* name) {
     std::vector<std::string> out;
     for (const NavPoint* a : (*db)->airports_of_city(name)) out.push_back(a->id);
     return out;
   };
-  CHECK(ids("Frankfurt") == std::vector<std::string>{"EDDF"});  // not the medium Hahn, nor "Frankfurter"
-  CHECK(ids("frankfurt main").empty());                          // the whole name is no city of it
-  CHECK(ids("amsterdam").empty());                               // a small field named so is no city's
+  CHECK(ids("Frankfurt") ==
+        std::vector<std::string>{"EDDF"});  // not the medium Hahn, nor "Frankfurter"
+  CHECK(ids("frankfurt main").empty());     // the whole name is no city of it
+  CHECK(ids("amsterdam").empty());          // a small field named so is no city's
   CHECK(ids("").empty());
   CHECK((*db)->airport_class("FAAM") == "SMALL");
   CHECK((*db)->airport_class("EDDF") == "LARGE");
