@@ -234,6 +234,14 @@ function m:airline_fleet(icao)
   return fits
 end
 
+-- Adds a reference the utterance did not find (an aircraft named by its airline or type) to
+-- self.refs, kept in order of its first token.
+function m:insert_ref(r)
+  local k = 1
+  while self.refs[k] and self.refs[k].b < r.b do k = k + 1 end
+  table.insert(self.refs, k, r)
+end
+
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
 -- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
 -- airline flying, is a reference to it (added to self.refs, kind "aircraft",
@@ -271,10 +279,7 @@ function m:airline_refs()
       table.insert(self.airline_unresolved, { b = i, e = e })
     end
     if #fits == 1 then
-      local r = { kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_airline = true }
-      local k = 1
-      while self.refs[k] and self.refs[k].b < i do k = k + 1 end
-      table.insert(self.refs, k, r)
+      self:insert_ref({ kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_airline = true })
       i = e
     else
       i = i + 1
@@ -342,9 +347,7 @@ function m:type_refs()
       end
     end
     if #fits == 1 then
-      local k = 1
-      while self.refs[k] and self.refs[k].b < i do k = k + 1 end
-      table.insert(self.refs, k, { kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_type = true })
+      self:insert_ref({ kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_type = true })
       i = e
     else
       i = i + 1
