@@ -37,6 +37,7 @@
 local lexicon = require("translate.lexicon")
 -- the airlines, types and phonetic alphabet, handed to the C++ matchers once
 local names = require("translate.names")
+local tokens = require("translate.tokens")
 local TYPES = require("translate.types").build(names.designators)
 -- The spelling fixer never turns a word that means something of its own into another: a
 -- registry command's name ("delrte" is no "delete", "zoner" no "zone") and the words that name
@@ -272,9 +273,7 @@ local function heard_forms(text)
     toks[#toks + 1] = w
     bare[#bare + 1] = w:lower():gsub("%p+$", "")
   end
-  local out, i, changed = {}, 1, false
-  while i <= #toks do
-    local hit
+  return tokens.rewrite(text, toks, function(i)
     for _, h in ipairs(HEARD[bare[i]] or {}) do
       local n = #h.words
       local ok = true
@@ -289,18 +288,11 @@ local function heard_forms(text)
             or (h.after and joined_before and heard_word_is(toks[i - 1], h.after))
             or (h.between and not closed and joined_before and heard_word_is(toks[i - 1], h.between[1])
                 and heard_word_is(toks[i + n], h.between[2])) then
-          hit = { n = n, text = h.means .. (last:match("%p+$") or "") }
-          break
+          return h.means .. (last:match("%p+$") or ""), i + n
         end
       end
     end
-    if hit then
-      out[#out + 1], i, changed = hit.text, i + hit.n, true
-    else
-      out[#out + 1], i = toks[i], i + 1
-    end
-  end
-  return changed and table.concat(out, " ") or text
+  end)
 end
 
 -- A level or heading whose digits were written apart ("fl 3 4 0", "flight level 1 30", "heading 0 90"):
@@ -339,22 +331,16 @@ end
 local function spelled(text)
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
-  local out, i, changed = {}, 1, false
-  while i <= #toks do
+  return tokens.rewrite(text, toks, function(i)
     local k = i
     while toks[k] and toks[k]:match("^%a$") do k = k + 1 end
     -- (the last letter may carry the punctuation: "q n h, one zero one three")
     local last = toks[k] and toks[k]:match("^(%a)%p+$")
     local word = table.concat(toks, "", i, k - 1):lower() .. (last and last:lower() or "")
-    local n = k - i + (last and 1 or 0)
-    if n >= 2 and SPELLED[word] then
-      out[#out + 1] = word .. (last and toks[k]:sub(2) or "")
-      i, changed = k + (last and 1 or 0), true
-    else
-      out[#out + 1], i = toks[i], i + 1
+    if k - i + (last and 1 or 0) >= 2 and SPELLED[word] then
+      return word .. (last and toks[k]:sub(2) or ""), k + (last and 1 or 0)
     end
-  end
-  return changed and table.concat(out, " ") or text
+  end)
 end
 
 -- Self-corrections said in words (lexicon.self_correction) become the word "correction", which the

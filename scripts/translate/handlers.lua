@@ -234,12 +234,15 @@ function m:airline_fleet(icao)
   return fits
 end
 
--- Adds a reference the utterance did not find (an aircraft named by its airline or type) to
--- self.refs, kept in order of its first token.
-function m:insert_ref(r)
+-- With exactly one aircraft in `fits` (named by its airline or type over tokens b..e-1), adds
+-- it to self.refs as a reference the utterance did not find (kind "aircraft", flag `by` = true),
+-- kept in order of first token, and returns e; otherwise returns b + 1 (the next token to look at).
+function m:insert_ref(fits, b, e, by)
+  if #fits ~= 1 then return b + 1 end
   local k = 1
-  while self.refs[k] and self.refs[k].b < r.b do k = k + 1 end
-  table.insert(self.refs, k, r)
+  while self.refs[k] and self.refs[k].b < b do k = k + 1 end
+  table.insert(self.refs, k, { kind = "aircraft", name = fits[1], b = b, e = e, exists = true, [by] = true })
+  return e
 end
 
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
@@ -278,12 +281,7 @@ function m:airline_refs()
       self.airline_unresolved = self.airline_unresolved or {}
       table.insert(self.airline_unresolved, { b = i, e = e })
     end
-    if #fits == 1 then
-      self:insert_ref({ kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_airline = true })
-      i = e
-    else
-      i = i + 1
-    end
+    i = self:insert_ref(fits, i, e, "by_airline")
   end
 end
 
@@ -346,12 +344,7 @@ function m:type_refs()
         if a.type and set[a.type:upper()] then fits[#fits + 1] = a.id end
       end
     end
-    if #fits == 1 then
-      self:insert_ref({ kind = "aircraft", name = fits[1], b = i, e = e, exists = true, by_type = true })
-      i = e
-    else
-      i = i + 1
-    end
+    i = self:insert_ref(fits, i, e, "by_type")
   end
 end
 

@@ -169,8 +169,7 @@ function M.spoken(text, built)
   end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
-  local out, i, changed = {}, 1, false
-  while i <= #toks do
+  return require("translate.tokens").rewrite(text, toks, function(i)
     local w = toks[i]:lower()
     local maker = LETTERS[w] and w or nil
     local lead = maker and w or ""
@@ -205,13 +204,8 @@ function M.spoken(text, built)
         if #digits >= 3 and built.known[name] then best = { name = name, e = k } end
       end
     end
-    if best then
-      out[#out + 1], i, changed = best.name, best.e, true
-    else
-      out[#out + 1], i = toks[i], i + 1
-    end
-  end
-  return changed and table.concat(out, " ") or text
+    if best then return best.name, best.e end
+  end)
 end
 
 -- The request with each name of several words as its designator ("a 737 MAX 8" -> "a B38M").
