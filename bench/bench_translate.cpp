@@ -7,7 +7,8 @@
 // (preemption not counted), and as each utterance's best wall time over
 // the reps (its own cost, which holds on a shared, loaded machine).
 // Asserts nothing.
-//   bench_translate [CORPUS.tsv ...] [--reps N]
+// --slowest K lists the K utterances with the highest best-of-reps time.
+//   bench_translate [CORPUS.tsv ...] [--reps N] [--slowest K]
 #include <time.h>
 
 #include <algorithm>
@@ -43,9 +44,11 @@ double quantile(const std::vector<double>& v, double q) {
 int main(int argc, char** argv) {
   std::vector<std::string> paths;
   int reps = 5;
+  int slowest = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--reps" && i + 1 < argc) reps = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--slowest" && i + 1 < argc) slowest = std::max(0, std::atoi(argv[++i]));
     else paths.push_back(a);
   }
   if (paths.empty())
@@ -72,6 +75,7 @@ int main(int argc, char** argv) {
   }
   script::Vm vm{script::VmOptions{}};
   std::vector<double> ms, cpu, best;
+  std::vector<std::pair<double, const std::string*>> by_utterance;
   int failures = 0;
   for (const auto& c : cases) {
     command::Stack stack;
@@ -88,6 +92,7 @@ int main(int argc, char** argv) {
       failures += !tr.is_ok();
     }
     best.push_back(fastest);
+    by_utterance.emplace_back(fastest, &c.utterance);
   }
   std::sort(ms.begin(), ms.end());
   std::sort(cpu.begin(), cpu.end());
@@ -100,5 +105,8 @@ int main(int argc, char** argv) {
               quantile(cpu, 0.99), cpu.empty() ? 0.0 : cpu.back());
   std::printf("  best of %d reps    p50 %.3f ms   p99 %.3f ms   max %.3f ms\n", reps, quantile(best, 0.5),
               quantile(best, 0.99), best.empty() ? 0.0 : best.back());
+  std::sort(by_utterance.rbegin(), by_utterance.rend());
+  for (int k = 0; k < slowest && k < static_cast<int>(by_utterance.size()); ++k)
+    std::printf("  %8.3f ms  %s\n", by_utterance[k].first, by_utterance[k].second->c_str());
   return 0;
 }

@@ -169,6 +169,27 @@ local function compile_rule(spec, level)
   return r
 end
 
+-- The rules that may fire on a word, in M.rules' order: RULES_BY_WORD[w] for a word some rule
+-- lists, ANY_RULES ("*" rules only) for every other word. Rebuilt whenever M.rules changes.
+local RULES_BY_WORD, ANY_RULES = {}, {}
+local function index_rules()
+  RULES_BY_WORD, ANY_RULES = {}, {}
+  for _, r in ipairs(M.rules) do
+    if r.any then
+      ANY_RULES[#ANY_RULES + 1] = r
+      for _, list in pairs(RULES_BY_WORD) do list[#list + 1] = r end
+    else
+      for w, v in pairs(r.words) do
+        if v then
+          local list = RULES_BY_WORD[w] or table.move(ANY_RULES, 1, #ANY_RULES, 1, {})
+          RULES_BY_WORD[w] = list
+          list[#list + 1] = r
+        end
+      end
+    end
+  end
+end
+
 local loading = true
 function M.rule(spec)
   local r = compile_rule(spec, 2)
@@ -177,6 +198,7 @@ function M.rule(spec)
     M.rules[#M.rules + 1] = r
   else
     table.insert(M.rules, 1, r)
+    index_rules()
   end
 end
 
@@ -194,6 +216,7 @@ end
 
 require("translate.rules")(M.intent, M.rule, M.add_words)
 loading = false
+index_rules()
 
 -- handler(name, fn): a new handler method fn(g, s, spec) for intents to name.
 function M.handler(name, fn) G[name] = fn end
@@ -453,11 +476,11 @@ end
 
 function G:word(i, words)
   local t = self.t[i]
-  return t ~= nil and t.kind == "word" and word_set(words, 2)[t.text] == true
+  return t ~= nil and t.kind == "word" and (set_cache[words] or word_set(words, 2))[t.text] == true
 end
 
 function G:word_in(b, e, words)
-  local s = word_set(words, 2)
+  local s = set_cache[words] or word_set(words, 2)
   for i = b, math.min(e, #self.t + 1) - 1 do
     local t = self.t[i]
     if t.kind == "word" and s[t.text] then return true end
@@ -467,7 +490,7 @@ end
 
 -- The first position in [b, e) holding one of `words`, or e.
 function G:find_word(b, e, words)
-  local s = word_set(words, 2)
+  local s = set_cache[words] or word_set(words, 2)
   for i = b, math.min(e, #self.t + 1) - 1 do
     local t = self.t[i]
     if t.kind == "word" and s[t.text] then return i end
@@ -480,14 +503,24 @@ function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self
 -- from "because", "since" or "so that/it/they" to the end of the sentence
 -- ("climb KLM602 FL220 so that it clears BAW451": BAW451 is not instructed).
 function G:in_reason(i)
-  for k = i - 1, 1, -1 do
-    local t = self.t[k]
-    if t.kind == "punct" and t.text ~= "," then return false end
-    -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
-    if t.kind == "punct" and self:word(k + 1, "@then_words") then return false end
-    if self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then return true end
+  if not self.reason then
+    -- reason[i]: the nearest of a reason word and a sentence break before i is the reason word
+    self.reason = {}
+    local inside = false
+    for k = 1, #self.t do
+      self.reason[k] = inside
+      local t = self.t[k]
+      if t.kind == "punct" and t.text ~= "," then
+        inside = false
+      elseif t.kind == "punct" and self:word(k + 1, "@then_words") then
+        -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
+        inside = false
+      elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then
+        inside = true
+      end
+    end
   end
-  return false
+  return self.reason[i] or false
 end
 function G:preceded_by(i, span, words) return self:word_in(math.max(1, i - span), i, words) end
 function G:number_at(i) local t = self.t[i] return t ~= nil and not self.u:used(i) and t.number_word end
@@ -640,9 +673,8 @@ end
 function G:intent_at(i)
   local t = self.t[i]
   if not t or t.kind ~= "word" or self.u:used(i) then return nil end
-  for _, r in ipairs(M.rules) do
-    if (r.any or r.words[t.text])
-        and (not r.next or self:word(i + 1, r.next))
+  for _, r in ipairs(RULES_BY_WORD[t.text] or ANY_RULES) do
+    if (not r.next or self:word(i + 1, r.next))
         and (not r.near or self:followed_by(i, r.near[1], r.near[2]))
         and (not r.not_near or not self:followed_by(i, r.not_near[1], r.not_near[2]))
         and (not r.prev or self:preceded_by(i, r.prev[1], r.prev[2]))
@@ -1420,6 +1452,12 @@ function G:instruction_before(i)
   return false
 end
 
+-- Every word that starts a phrase of lexicon.not_simulated.
+local NOT_SIMULATED_WORDS = {}
+for _, c in ipairs(lexicon.not_simulated) do
+  for w in pairs(word_set(c.words, 1)) do NOT_SIMULATED_WORDS[w] = true end
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -1430,7 +1468,7 @@ function G:not_simulated()
   while i <= #self.t do
     local t = self.t[i]
     local class
-    if t.kind == "word" and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0) then
+    if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
             and (not c.after_callsign or self:callsign_before(i))
