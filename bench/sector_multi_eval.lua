@@ -10,11 +10,11 @@
 -- Per row: losses of separation (pairs of aircraft entering 5 NM) per agent
 -- flight hour, agent success (left the sector without a loss of separation,
 -- share of all agents), episode success (no loss of separation at all), the
--- mean episode reward per agent, and env steps/s (one step moves every agent;
+-- mean episode reward per agent, the mean steps an agent flies before it
+-- leaves (or the episode ends), and env steps/s (one step moves every agent;
 -- CPU time of the whole row, the policy's included). For the MLP, what it
 -- does: per action component the share of commands at each of its grid
--- levels (heading -22.5 .. +22.5 deg, CAS -20/3 .. +20/3 m/s) and the mean
--- steps an agent flies.
+-- levels (heading -22.5 .. +22.5 deg, CAS -20/3 .. +20/3 m/s).
 local episodes = tonumber(arg[1]) or 50
 local seed0 = tonumber(arg[2]) or 0
 local checkpoint = arg[3]
@@ -64,16 +64,16 @@ local rows = {{"do nothing", nil}, {"MVP", "MVP"}}
 if checkpoint then rows[3] = {greedy and "MLP (greedy)" or "MLP", nil, true} end
 print(string.format("SectorMultiCR-v0 (envs/sector_multi.lua): %d episodes per row from seed %d%s", episodes,
                     seed0, checkpoint and (", MLP " .. checkpoint) or ""))
-print("| agents | policy | LoS per flight hour | agent success | episode success | reward per agent | env steps/s |")
-print("|---|---|---|---|---|---|---|")
+print("| agents | policy | LoS per flight hour | agent success | episode success | reward per agent | steps per agent | env steps/s |")
+print("|---|---|---|---|---|---|---|---|")
 local behaviour = {}
 for _, n in ipairs({2, 5, 10, 20}) do
   for _, b in ipairs(rows) do
     local seen = {}
     local r = evaluate(n, b[2], b[3] and mlp_chooser(seen) or nil)
-    print(string.format("| %d | %s | %.3f | %.3f | %.3f | %.2f | %.0f |", n, b[1], r.los_per_hour, r.agent_success,
-                        r.episode_success, r.reward, r.sps))
-    if b[3] then behaviour[#behaviour + 1] = {n = n, seen = seen, agent_steps = r.agent_steps} end
+    print(string.format("| %d | %s | %.3f | %.3f | %.3f | %.2f | %.1f | %.0f |", n, b[1], r.los_per_hour,
+                        r.agent_success, r.episode_success, r.reward, r.agent_steps, r.sps))
+    if b[3] then behaviour[#behaviour + 1] = {n = n, seen = seen} end
   end
 end
 for _, b in ipairs(behaviour) do
@@ -88,5 +88,5 @@ for _, b in ipairs(behaviour) do
     end
     parts[#parts + 1] = name .. " " .. table.concat(shares, ", ")
   end
-  print(string.format("MLP at %d agents: %.1f steps per agent; %s", b.n, b.agent_steps, table.concat(parts, "; ")))
+  print(string.format("MLP at %d agents: %s", b.n, table.concat(parts, "; ")))
 end
