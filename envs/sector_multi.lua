@@ -8,16 +8,19 @@
 -- agents still flying, E.possible_agents all of them (both set by reset).
 -- The sector, the starts and the waypoints are SectorCREnv's with n aircraft
 -- (its minimum of 5 does not apply); every aircraft is an agent with
--- SectorCREnv's 31-number observation (itself and its 4 nearest other agents),
+-- SectorCREnv's 31-number observation (itself and its 4 nearest other agents,
+-- padded with absent ones when fewer fly),
 -- its 2-number action (heading +-22.5 deg, CAS +-20/3 m/s; an agent absent
 -- from `actions` gets no command and keeps its selections) and its reward
 -- (-0.1 per radian of drift, -1 per other aircraft within 5 NM). An agent
 -- terminates when it leaves the sector (it has crossed the border, near its
 -- waypoint when it flew there) and its aircraft is removed; every agent still
 -- flying is truncated at step max_episode_steps (the file applies the limit
--- itself: there is no multi-agent driver yet). resolution = "MVP" switches on
+-- itself, as the C++ driver script/lua_parallel_env.h does). resolution = "MVP" switches on
 -- the simulator's conflict detection (5 NM, 300 s look-ahead) and horizontal
 -- MVP resolution, the baseline a policy must beat.
+-- infos[agent].success, when the agent leaves: it left the sector (terminated)
+-- without a loss of separation.
 -- E:stats() after an episode: flight hours, losses of separation (pairs of
 -- aircraft entering 5 NM), agents that left the sector and those that left
 -- without a loss of separation. Units: as envs/sector_cr.lua.
@@ -45,6 +48,39 @@ function M:acid(k)
   return "AG" .. (k - 1)
 end
 
+-- SectorCREnv's observation holds the NEAREST nearest other aircraft; with
+-- fewer flying (fewer than 5 agents, or late in an episode), each of its
+-- per-neighbour slices is padded to NEAREST entries with an absent
+-- neighbour: 100 km north of the agent at its velocity (relative velocity 0:
+-- cos 1, sin 0), so every agent always observes 31 numbers.
+local NEAREST = S.observation[3].size
+local ABSENT = {cos = 1, dist = (100000 - 50000) / 15000, sin = 0, vx = 0, vy = 0, x = 100000 / 13000, y = 0}
+local function padded(obs, others)
+  local k = math.min(others, NEAREST)
+  if k == NEAREST then return obs end
+  local out, i = {}, 0
+  local function copy(n)
+    for _ = 1, n do
+      i = i + 1
+      out[#out + 1] = obs[i]
+    end
+  end
+  local function slice(absent)
+    copy(k)
+    for _ = k + 1, NEAREST do out[#out + 1] = absent end
+  end
+  copy(2)                      -- airspeed, cos(drift)
+  slice(ABSENT.cos)
+  slice(ABSENT.dist)
+  copy(1)                      -- sin(drift)
+  slice(ABSENT.sin)
+  slice(ABSENT.vx)
+  slice(ABSENT.vy)
+  slice(ABSENT.x)
+  slice(ABSENT.y)
+  return out
+end
+
 -- The observations of every agent still flying.
 function M:observe_all()
   local obs = {}
@@ -55,6 +91,7 @@ function M:observe_all()
       if b ~= a then others[#others + 1] = b end
     end
     obs[a], self.drifts[a] = self:observe_aircraft(a, self.wpts[self.index[a]], others)
+    obs[a] = padded(obs[a], #others)
   end
   return obs
 end
@@ -134,6 +171,7 @@ function M:step(actions)
     terms[a] = not geo.inside(lat, lon, self.poly)
     truncs[a] = limit and not terms[a]
     infos[a] = {intrusions = count[a], los = self.agent_los[a] or 0}
+    if terms[a] or truncs[a] then infos[a].success = terms[a] and not self.agent_los[a] end
     if terms[a] then
       self.stat.exited = self.stat.exited + 1
       if not self.agent_los[a] then self.stat.exited_clean = self.stat.exited_clean + 1 end

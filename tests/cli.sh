@@ -46,6 +46,16 @@ expect "env mlp mismatch" 1 "reads 1 observation numbers; DescentEnv-v0 gives 4"
 expect "env greedy alone" 2 "--greedy goes with --policy mlp:CKPT" -- "$sq" env run envs/descent.lua --greedy
 expect "train env vine"  2 "on --env use \"improved\"" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/vine" --estimator vine
 expect "train levels alone" 2 "--levels and --hidden shape the policy of a --env" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --levels 3
+# One MLP shared by every agent of the multi-agent sector: 3 agents, each
+# agent's trajectory an episode (12 = 4 sector episodes), then evaluated
+# beside "do nothing" and MVP by bench/sector_multi_eval.lua.
+expect "train multi"     0 "sector episodes played in training: 4$" -- "$sq" train --env envs/sector_multi.lua --agents 3 --out "$gt/multi" --episodes 12 --episodes-per-update 6 --eval-every 12 --eval-episodes 6 --envs 2
+expect "train multi log" 0 "^12,2," -- cat "$gt/multi/log.csv"
+expect "multi eval mlp"  0 "^\| 20 \| MLP \| [0-9.]+ \|" -- "$sq" run bench/sector_multi_eval.lua 1 0 "$gt/multi/policy.ckpt" --max-instructions 0 --allow-read "$gt"
+expect "multi eval mismatch" 1 "sign/policy.ckpt: the policy reads 1 observation numbers; SectorMultiCR-v0 gives 31" -- "$sq" run bench/sector_multi_eval.lua 1 0 "$gt/sign/policy.ckpt" --max-instructions 0 --allow-read "$gt"
+expect "train multi split" 2 "--episodes-per-update 16: the learner's episodes are agent trajectories, 3 per sector episode" -- "$sq" train --env envs/sector_multi.lua --agents 3 --out "$gt/split" --episodes-per-update 16
+expect "train agents single" 2 "--agents sets the agents of a multi-agent file; envs/descent.lua is single-agent" -- "$sq" train --env envs/descent.lua --agents 3 --out "$gt/single"
+expect "train agents alone" 2 "--agents sets the agents of a multi-agent --env" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --agents 3
 rm -rf "$gt"
 expect "env plan waypoint" 0 "observation 20 numbers, action 1 in \[-1, 1\], at most 300 steps" -- "$sq" env run envs/plan_waypoint.lua --policy random --episodes 2
 expect "env run horizontal" 0 "terminated +1000 of 1000; truncated 0" -- "$sq" env run envs/horizontal_cr.lua --policy random --episodes 1000

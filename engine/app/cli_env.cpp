@@ -28,8 +28,8 @@
 #include "core/files.h"
 #include "core/rng.h"
 #include "core/text.h"
-#include "rl/checkpoint.h"
 #include "rl/mlp_policy.h"
+#include "script/grid_policy.h"
 #include "script/lua_batch_env.h"
 #include "script/lua_env.h"
 #include "script/lua_policy.h"
@@ -42,8 +42,7 @@ struct EnvPolicy {
   bool random = false;
   std::string script;                  // the policy file of script:FILE, or ""
   std::vector<double> constant;        // the action when neither random, scripted nor an MLP
-  std::unique_ptr<rl::MlpPolicy> mlp;  // mlp:CKPT
-  int levels = 0;                      // [-] mlp: grid levels per action component
+  script::GridPolicy grid;             // mlp:CKPT (grid.mlp null otherwise)
 };
 
 // What `squawk env run` reports over its episodes. Success counts episodes
@@ -73,28 +72,6 @@ struct EpisodeStats {
            static_cast<double>(std::max(1LL, steps));
   }
 };
-
-// mlp:CKPT: a categorical MLP over `spec`'s action grid that reads its observation.
-Status load_mlp(const std::string& path, const script::LuaEnvSpec& spec, EnvPolicy& pol) {
-  SQUAWK_ASSIGN_OR_RETURN(rl::Checkpoint ck, rl::load_checkpoint(path));
-  SQUAWK_ASSIGN_OR_RETURN(pol.mlp, rl::policy_from_checkpoint(ck));
-  const rl::MlpPolicySpec& ps = pol.mlp->spec();
-  if (ps.obs_size != spec.observation_size)
-    return Status::invalid(path + ": the policy reads " + std::to_string(ps.obs_size) +
-                           " observation numbers; " + spec.id + " gives " +
-                           std::to_string(spec.observation_size) + " (trained on " +
-                           ck.progress.scenario + ")");
-  const auto classes = static_cast<int>(ps.action_values.size());
-  bool grid = ps.head == "categorical";
-  for (int c = 0; grid && c < classes; ++c)
-    grid = script::grid_class(ps.action_values[static_cast<size_t>(c)], classes) == c;
-  if (!grid)
-    return Status::invalid(
-        path + ": not a policy over an action grid (squawk train --env writes those; trained on " +
-        ck.progress.scenario + ")");
-  SQUAWK_ASSIGN_OR_RETURN(pol.levels, script::grid_levels(spec, classes));
-  return Status::ok();
-}
 
 Result<EnvPolicy> parse_policy(const std::string& p, const script::LuaEnvSpec& spec) {
   EnvPolicy pol;
@@ -132,7 +109,7 @@ Result<EnvPolicy> parse_policy(const std::string& p, const script::LuaEnvSpec& s
     return pol;
   }
   if (p.rfind("mlp:", 0) == 0) {
-    SQUAWK_RETURN_IF_ERROR(load_mlp(p.substr(4), spec, pol));
+    SQUAWK_ASSIGN_OR_RETURN(pol.grid, script::load_grid_policy(p.substr(4), spec));
     return pol;
   }
   return Status::invalid("--policy '" + p +
@@ -162,7 +139,7 @@ int env_run(const ArgV& argv) {
     if (policy_name.rfind("mlp:", 0) == 0) return failure(policy.status());
     return usage_error("env", policy.status().message());
   }
-  if (args->has("--greedy") && !policy->mlp)
+  if (args->has("--greedy") && !policy->grid.mlp)
     return usage_error("env", "--greedy goes with --policy mlp:CKPT");
   const bool greedy = args->has("--greedy");
   std::vector<float> obs(static_cast<size_t>(spec.observation_size));
@@ -193,11 +170,11 @@ int env_run(const ArgV& argv) {
       if (scripted) {
         if (Status a = scripted->act(e.observation(), action); !a.is_ok())
           return failure(Status::invalid(shown_error(a.message())));
-      } else if (policy->mlp) {
+      } else if (policy->grid.mlp) {
         for (size_t j = 0; j < obs.size(); ++j) obs[j] = static_cast<float>(e.observation()[j]);
         rl::ActionSample choice;
-        policy->mlp->act(obs, 1, {&row, 1}, {&rng, 1}, greedy, {&choice, 1});
-        script::grid_action(spec, policy->levels, choice.index, action);
+        policy->grid.mlp->act(obs, 1, {&row, 1}, {&rng, 1}, greedy, {&choice, 1});
+        script::grid_action(spec, policy->grid.levels, choice.index, action);
       } else {
         for (size_t a = 0; a < action.size(); ++a)
           action[a] = policy->random ? rng.uniform(spec.action_low[a], spec.action_high[a])

@@ -42,6 +42,8 @@ int cmd_train(const ArgV& given) {
       return usage_error("train", "--env trains --policy mlp only");
     if (!probe->has("--env") && (probe->has("--levels") || probe->has("--hidden")))
       return usage_error("train", "--levels and --hidden shape the policy of a --env ENV.lua run");
+    if (!probe->has("--env") && probe->has("--agents"))
+      return usage_error("train", "--agents sets the agents of a multi-agent --env ENV.lua run");
   }
   if (wants_gpt2(*argv)) return cmd_train_gpt2(*argv);
   auto args = Args::parse(*argv, train_flags(false));

@@ -1,9 +1,12 @@
 // squawk train --env ENV.lua --out DIR: the MLP learner on an environment
 // written in Lua (script/lua_batch_env.h), with the Box action discretised
 // into --levels K values per component and a categorical head over the K^d
-// grid classes.
+// grid classes. A multi-agent file (parallel = true) trains one MLP shared
+// by all its agents (script/lua_parallel_batch_env.h): each agent's
+// trajectory is an episode for the learner.
 #include "app/cli_train_env.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -20,6 +23,7 @@
 #include "rl/mlp_policy.h"
 #include "rl/train_run.h"
 #include "script/lua_batch_env.h"
+#include "script/lua_parallel_batch_env.h"
 
 namespace squawk::app {
 
@@ -49,6 +53,52 @@ Result<std::vector<int>> hidden_widths(const Args& args) {
     widths.push_back(static_cast<int>(w));
   }
   return widths;
+}
+
+// --agents N[,N...]: the num_agents a multi-agent file's sector episodes draw from (default 10).
+Result<std::vector<int>> agent_counts(const Args& args) {
+  std::vector<int> counts;
+  const std::string given = args.get_or("--agents", "10");
+  for (const std::string& part : text::split(given, ',')) {
+    char* end = nullptr;
+    const long n = std::strtol(part.c_str(), &end, 10);
+    if (part.empty() || *end != '\0' || n < 1 || n > 4096)
+      return Status::invalid("--agents " + given + ": '" + part + "' is not a count in 1..4096");
+    counts.push_back(static_cast<int>(n));
+  }
+  return counts;
+}
+
+// The training and evaluation batches of `file`, its declaration and the grid's classes.
+struct Batches {
+  std::unique_ptr<env::BatchEnv> train, eval;
+  script::LuaEnvSpec spec;
+  int classes = 0;
+  script::LuaParallelBatchEnv* parallel = nullptr;  // train, when the file is multi-agent
+};
+
+Result<Batches> make_batches(const std::string& file, const script::VmOptions& vo, int num_envs,
+                             int levels, const std::vector<int>* agents) {
+  Batches b;
+  if (agents) {
+    SQUAWK_ASSIGN_OR_RETURN(auto t,
+                            script::LuaParallelBatchEnv::make(file, vo, num_envs, levels, *agents));
+    SQUAWK_ASSIGN_OR_RETURN(auto e,
+                            script::LuaParallelBatchEnv::make(file, vo, num_envs, levels, *agents));
+    b.spec = t->spec();
+    b.classes = t->classes();
+    b.parallel = t.get();
+    b.train = std::move(t);
+    b.eval = std::move(e);
+  } else {
+    SQUAWK_ASSIGN_OR_RETURN(auto t, script::LuaBatchEnv::make(file, vo, num_envs, levels));
+    SQUAWK_ASSIGN_OR_RETURN(auto e, script::LuaBatchEnv::make(file, vo, num_envs, levels));
+    b.spec = t->spec();
+    b.classes = t->classes();
+    b.train = std::move(t);
+    b.eval = std::move(e);
+  }
+  return b;
 }
 
 Status save(const std::string& path, const rl::MlpPolicySpec& spec, rl::Policy& policy,
@@ -82,9 +132,31 @@ int cmd_train_env(const Args& args) {
   auto vo = vm_options(args);
   if (!vo) return usage_error("train", vo.status().message());
   vo->out_dir.clear();  // environments write nothing
+  auto parallel = script::is_parallel_env(file, *vo);
+  if (!parallel) return failure(Status::invalid(shown_error(parallel.status().message())));
+  if (args.has("--agents") && !*parallel)
+    return usage_error(
+        "train", "--agents sets the agents of a multi-agent file; " + file + " is single-agent");
+  auto agents = agent_counts(args);
+  if (!agents) return usage_error("train", agents.status().message());
+  // [-] learner episodes per sector episode: agent trajectories (1 for a single-agent file)
+  const int per_sector = *parallel ? *std::max_element(agents->begin(), agents->end()) : 1;
   rl::TrainConfig cfg = lua_train_defaults();
+  cfg.episodes *= per_sector;
+  cfg.episodes_per_update *= per_sector;
+  cfg.eval_every *= per_sector;
+  cfg.eval_episodes *= per_sector;
   if (Status st = apply_learner_flags(args, cfg.episodes, cfg.lr, cfg); !st.is_ok())
     return usage_error("train", st.message());
+  for (const auto& [flag, n] :
+       {std::pair{"--episodes-per-update", static_cast<long long>(cfg.episodes_per_update)},
+        std::pair{"--eval-episodes", cfg.eval_episodes}})
+    if (n % per_sector != 0)
+      return usage_error("train", std::string(flag) + " " + std::to_string(n) +
+                                      ": the learner's episodes are agent trajectories, " +
+                                      std::to_string(per_sector) +
+                                      " per sector episode (--agents): give a multiple of " +
+                                      std::to_string(per_sector));
   if (cfg.estimator == "vine")
     return usage_error("train",
                        "--estimator vine branches the compiled HorizontalCR kernel; on --env use "
@@ -96,16 +168,15 @@ int cmd_train_env(const Args& args) {
   auto validation = validation_seed(args, 0);
   if (!validation) return usage_error("train", validation.status().message());
 
-  auto train_envs = script::LuaBatchEnv::make(file, *vo, cfg.num_envs, static_cast<int>(*levels));
-  if (!train_envs) return failure(Status::invalid(shown_error(train_envs.status().message())));
-  auto eval_envs = script::LuaBatchEnv::make(file, *vo, cfg.num_envs, static_cast<int>(*levels));
-  if (!eval_envs) return failure(Status::invalid(shown_error(eval_envs.status().message())));
-  const script::LuaEnvSpec& es = (*train_envs)->spec();
+  auto batches = make_batches(file, *vo, cfg.num_envs, static_cast<int>(*levels),
+                              *parallel ? &*agents : nullptr);
+  if (!batches) return failure(Status::invalid(shown_error(batches.status().message())));
+  const script::LuaEnvSpec& es = batches->spec;
 
   rl::MlpPolicySpec spec;
   spec.obs_size = es.observation_size;
   spec.hidden = *hidden;
-  spec.action_values = script::grid_values((*train_envs)->classes());
+  spec.action_values = script::grid_values(batches->classes);
   Rng init(cfg.seed);
   auto policy = rl::MlpPolicy::make(spec, init);
   if (!policy) return failure(policy.status());
@@ -117,7 +188,7 @@ int cmd_train_env(const Args& args) {
   progress.seed = cfg.seed;
   progress.estimator = cfg.estimator;
   progress.scenario = file;
-  rl::Trainer trainer(**policy, **train_envs, cfg, 0);
+  rl::Trainer trainer(**policy, *batches->train, cfg, 0);
   auto log = TrainLog::open(*run, 0);
   if (!log) return failure(log.status());
   const bool quiet = args.has("--quiet");
@@ -126,16 +197,21 @@ int cmd_train_env(const Args& args) {
         "training mlp on %s (%s): %d action classes (%lld levels x %d components), %s, estimator "
         "%s, "
         "%zu parameters, seed %llu\n",
-        es.id.c_str(), file.c_str(), (*train_envs)->classes(), *levels, es.action_size(),
+        es.id.c_str(), file.c_str(), batches->classes, *levels, es.action_size(),
         episodes_text(cfg).c_str(), cfg.estimator.c_str(), (*policy)->params().size(),
         static_cast<unsigned long long>(cfg.seed));
+  if (!quiet && batches->parallel)
+    std::printf(
+        "one policy shared by every agent: %s agents per sector episode (--agents); an episode "
+        "is one agent's trajectory, %d numbered per sector episode\n",
+        args.get_or("--agents", "10").c_str(), per_sector);
   const std::string best_path = out + "/best.ckpt", policy_path = out + "/policy.ckpt";
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
   double best_reward = 0.0;
   bool have_best = false;
   InterruptGuard interrupt;
   auto ended = rl::run_training(
-      trainer, **policy, **eval_envs, cfg, *validation, progress,
+      trainer, **policy, *batches->eval, cfg, *validation, progress,
       [](long long) { return !InterruptGuard::requested(); },
       [&](const rl::UpdateReport& u) -> Result<bool> {
         log->add(progress, u.stats);
@@ -175,6 +251,8 @@ int cmd_train_env(const Args& args) {
         "reward), log %s\n",
         progress.episodes, fmt_duration(progress.wall_s).c_str(), policy_path.c_str(),
         best_path.c_str(), run->log.c_str());
+  if (!quiet && batches->parallel)
+    std::printf("sector episodes played in training: %lld\n", batches->parallel->sector_episodes());
   return kExitOk;
 }
 

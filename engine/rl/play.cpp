@@ -8,6 +8,7 @@ Result<bool> play(env::BatchEnv& envs, uint64_t seed, uint64_t first, uint64_t c
                   const Driver& driver) {
   envs.completed().clear();
   envs.start(seed, first, count);
+  SQUAWK_RETURN_IF_ERROR(envs.error());  // a reset can fail (a Lua file)
   std::vector<int> slots;
   std::vector<ActionSample> acts;
   std::vector<double> actions, rewards;

@@ -52,19 +52,15 @@ Result<std::unique_ptr<LuaEnv>> LuaEnv::load(const std::string& path, const VmOp
   return env;
 }
 
-Status LuaEnv::read_spec() {
-  lua_State* L = vm_->state();
-  push_env(L);
-  const int e = lua_gettop(L);
+Result<LuaEnvSpec> read_env_spec(lua_State* L, int e, const std::string& path) {
+  e = lua_absindex(L, e);
+  const int top = lua_gettop(L);
   LuaEnvSpec s;
-  Status st = catch_arg_errors(L, path_ + ": ", [&] {
+  Status st = catch_arg_errors(L, path + ": ", [&] {
     s.id = field_string(L, e, "id", "");
     if (s.id.empty()) throw ArgError("field 'id' (the environment's name, a string) is required");
     s.source = field_string(L, e, "source", "");
-    if (field_boolean(L, e, "parallel", false))
-      throw ArgError(
-          "field 'parallel' = true: a multi-agent environment (PettingZoo's parallel API, tables "
-          "keyed by agent); this driver steps single-agent files (docs/gym_envs.md)");
+    s.parallel = field_boolean(L, e, "parallel", false);
     get_field(L, e, "observation");
     if (!lua_istable(L, -1))
       throw ArgError("field 'observation' must be an array of {name =, size =}");
@@ -103,16 +99,42 @@ Status LuaEnv::read_spec() {
         static_cast<int>(field_count(L, e, "max_episode_steps", 0, 1, 1'000'000'000));
     if (s.max_episode_steps == 0)
       throw ArgError("field 'max_episode_steps' (a whole number >= 1) is required");
-    for (const auto& [fn, key] : {std::pair{"reset", kResetKey}, std::pair{"step", kStepKey}}) {
+  });
+  lua_settop(L, top);
+  if (!st.is_ok()) return st;
+  return s;
+}
+
+Status store_env_functions(lua_State* L, int e, const std::string& path, const char* reset_key,
+                           const char* step_key) {
+  e = lua_absindex(L, e);
+  const int top = lua_gettop(L);
+  Status st = catch_arg_errors(L, path + ": ", [&] {
+    for (const auto& [fn, key] : {std::pair{"reset", reset_key}, std::pair{"step", step_key}}) {
       get_field(L, e, fn);
       if (!lua_isfunction(L, -1))
         throw ArgError(std::string("field '") + fn + "' must be a function");
       lua_setfield(L, LUA_REGISTRYINDEX, key);
     }
   });
-  lua_settop(L, e - 1);
+  lua_settop(L, top);
+  return st;
+}
+
+Status LuaEnv::read_spec() {
+  lua_State* L = vm_->state();
+  push_env(L);
+  auto s = read_env_spec(L, -1, path_);
+  Status st = s.status();
+  if (st.is_ok() && s->parallel)
+    st = Status::invalid(
+        path_ +
+        ": field 'parallel' = true: a multi-agent environment (PettingZoo's parallel API, tables "
+        "keyed by agent); this driver steps single-agent files (docs/gym_envs.md)");
+  if (st.is_ok()) st = store_env_functions(L, -1, path_, kResetKey, kStepKey);
+  lua_pop(L, 1);
   if (!st.is_ok()) return st;
-  spec_ = std::move(s);
+  spec_ = std::move(*s);
   obs_.assign(static_cast<size_t>(spec_.observation_size), 0.0);
   return Status::ok();
 }

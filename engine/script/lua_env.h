@@ -42,6 +42,7 @@ struct LuaEnvSpec {
   int observation_size = 0;                     // sum of the fields' sizes
   std::vector<double> action_low, action_high;  // the Box, action_size each
   int max_episode_steps = 0;
+  bool parallel = false;  // E.parallel: multi-agent (script/lua_parallel_env.h)
   int action_size() const { return static_cast<int>(action_low.size()); }
 };
 
@@ -53,6 +54,16 @@ struct LuaStep {
   // empty on other steps and when the file's info has no `success`.
   std::optional<bool> success;
 };
+
+// The declaration of the environment table at stack index `idx` (id, source,
+// parallel, observation, action, max_episode_steps; the stack is left as it
+// was); errors name `path` and the field that is missing or malformed.
+Result<LuaEnvSpec> read_env_spec(lua_State* L, int idx, const std::string& path);
+// Stores the table's reset and step functions at `idx` in the registry under
+// the two keys (read once, so no metamethod of the table runs outside a
+// protected call); error naming `path` unless both are functions.
+Status store_env_functions(lua_State* L, int idx, const std::string& path, const char* reset_key,
+                           const char* step_key);
 
 class LuaEnv {
  public:

@@ -1,0 +1,26 @@
+// A checkpoint of `squawk train --env` (app/cli_train_env.h) read for an
+// environment file: a categorical MLP whose classes are the points of the
+// file's action grid (script/lua_batch_env.h).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/status.h"
+#include "rl/mlp_policy.h"
+#include "script/lua_env.h"
+
+namespace squawk::script {
+
+struct GridPolicy {
+  std::unique_ptr<rl::MlpPolicy> mlp;
+  int levels = 0;  // [-] grid levels per action component
+};
+
+// Loads the checkpoint at `path` for `spec` (per agent for a multi-agent
+// file). Errors name the file and what does not fit: the observation size
+// (with the environment the checkpoint was trained on), a head that is not
+// categorical over a grid, or a grid that does not fit spec's action.
+Result<GridPolicy> load_grid_policy(const std::string& path, const LuaEnvSpec& spec);
+
+}  // namespace squawk::script
