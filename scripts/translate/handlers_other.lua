@@ -828,13 +828,14 @@ return function(H, f, compass)
     self.last_shape = name
   end
 
-  -- "MCRE n [type [alt]]": random traffic; a type is given only when it is a known one
+  -- "MCRE n [type [alt [spd [dest]]]]": random traffic; a type is given only when it is a known one
   -- (a plural like "A320s" the lexer took for a callsign is asked about)
   function m:random_traffic(s)
-    local n, alt
+    local n, alt, spd
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.kind == "plain" and not n and q.value >= 1 and q.value <= 500 and q.value % 1 == 0 then n = self:take(q) end
       if q.kind == "alt" and not alt then alt = self:take(q) end
+      if q.kind == "speed" and not spd then spd = self:take(q) end
     end
     if not n then return self:need("How many random aircraft should I create?") end
     local types = self:refs_in(s.b, s.e, "type")
@@ -846,9 +847,10 @@ return function(H, f, compass)
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
     local cmd = "MCRE " .. f.int(n.value)
-    if #types > 0 or alt or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
-    if alt or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
-    if dest then cmd = cmd .. " * " .. dest end
+    if #types > 0 or alt or spd or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
+    if alt or spd or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
+    if spd or dest then cmd = cmd .. " " .. (spd and f.int(spd.value) or "*") end
+    if dest then cmd = cmd .. " " .. dest end
     self:emit(cmd)
   end
 
@@ -1107,6 +1109,12 @@ return function(H, f, compass)
       return self:emit("FF " .. f.num(half))
     end
     local q = first(self, s, { time = true, mult = true })
+    -- "FF 120": TrafScript's own word with a bare number, its seconds
+    local plain = first(self, s, { plain = true })
+    if not q and self.t[s.trig].raw:upper() == "FF" and plain and plain.b == s.trig + 1 then
+      self:take(plain)
+      return self:emit("FF " .. f.num(plain.value))
+    end
     if not q then
       -- "half an hour", "a quarter of an hour": a fraction of a unit said in words
       local frac = self:find_word(s.trig + 1, s.e, "@fractions")

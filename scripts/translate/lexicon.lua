@@ -171,6 +171,9 @@ return {
   -- the simulation itself, not an aircraft
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock" },
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight" },
+  -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE);
+  -- an agent is an aircraft in a learning environment's words
+  counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
   route_nouns = { "route", "plan" },
   articles_new = { "a", "an", "new", "second", "another" },

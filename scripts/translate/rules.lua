@@ -237,6 +237,13 @@ return function(intent, rule, words)
     return g:followed_by(i, 4, "@intruder")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
   end }
+  -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
+  -- aircraft with no callsign is random traffic
+  rule { "create spawn generate add sample", "mcre", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    local t = g.t[k]
+    return t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft")
+  end }
   rule { "create spawn generate creat cre", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
@@ -430,6 +437,15 @@ return function(intent, rule, words)
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x twice thrice" },
          when = function(g, i) return g:followed_by(i, 3, "@sim") end }
+  -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s": a duration straight after the verb (the
+  -- sim named between, or nothing) is how far to fast-forward
+  rule { "run advance step", "ff", not_prev = { 1, "time" }, not_near = { 7, "real times faster x twice thrice" },
+         when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    if g:word(k, "@sim") then k = g:skip_fillers(k + 1) end
+    local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
+    return q ~= nil and q.b == k and q.kind == "time"
+  end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x twice thrice" } }
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
@@ -491,6 +507,8 @@ return function(intent, rule, words)
     return false
   end }
   rule { "resolution resolve reso", "reso" }
+  -- "enable MVP", "switch to MVP": the method named alone is resolution by it
+  rule { "mvp", "reso", prev = { 3, "@on switch" } }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
