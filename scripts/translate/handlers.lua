@@ -257,9 +257,16 @@ end
 -- Qantas": lexicon.airline_context). With two or more of the airline
 -- flying, airline_only asks which.
 function m:airline_refs()
+  -- ("the EZY agent": a designator in capitals the lexer took for an unknown place names its airline)
+  local function unknown_place(r)
+    return r.kind == "waypoint" and not r.exists and r.e == r.b + 1 and self.t[r.b].raw:match("^%u%u%u$")
+      and not self:word(r.e, "@navaid_kinds")
+  end
   local inside = {}
   for _, r in ipairs(self.refs) do
-    for k = r.b, r.e - 1 do inside[k] = true end
+    if not unknown_place(r) then
+      for k = r.b, r.e - 1 do inside[k] = true end
+    end
   end
   if not L.callsign_confirm.airline_alone then return end
   local i = 1
@@ -280,6 +287,11 @@ function m:airline_refs()
     if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
       self.airline_unresolved = self.airline_unresolved or {}
       table.insert(self.airline_unresolved, { b = i, e = e })
+    end
+    if #fits == 1 then
+      for k = #self.refs, 1, -1 do
+        if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+      end
     end
     i = self:insert_ref(fits, i, e, "by_airline")
   end

@@ -170,9 +170,9 @@ return {
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" } },
   -- the simulation itself, not an aircraft
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock" },
-  aircraft_nouns = { "aircraft", "plane", "airplane", "flight" },
-  -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE);
-  -- an agent is an aircraft in a learning environment's words
+  -- (an agent: an aircraft, in a learning environment's words)
+  aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
   route_nouns = { "route", "plan" },

@@ -88,6 +88,19 @@ return function(intent, rule, words)
   rule { "drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
+  -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
+  rule { "drop", "delete", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
+      if r.b == k then
+        for x = r.e, #g.t do
+          if g.t[x].kind ~= "punct" and not g.t[x].filler and not g:word(x, "@aircraft_nouns") then return false end
+        end
+        return true
+      end
+    end
+    return false
+  end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
   -- "kl204 up to 300", "EWG7LM up to FL320 so it ...": straight after the callsign
@@ -182,6 +195,7 @@ return function(intent, rule, words)
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
   rule { "due", "hdg", next = "@compass" }
+  rule { "go turn", "hdg", next = "@compass" }  -- "go east", "go northeast": the heading of that point
   rule { "around", false, prev = { 3, "turn" } }
 
   -- conflict resolution in the vertical ("let MVP use vertical speed in the resolutions", "keep

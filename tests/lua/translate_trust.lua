@@ -791,3 +791,12 @@ do
   check(nt("create Alaska three three one, a B739, over SPY, FL240, heading 350, 290 knots"):find("^ASK") ~= nil,
     "an aircraft that flies is not created again")
 end
+
+-- An experimenter's words (R22): an agent is an aircraft; "the DLH", an airline's designator alone,
+-- names its one aircraft flying (two KLM aircraft: asked); "go east" is a heading; "drop" an aircraft
+-- with nothing after it deletes it
+check_eq(said(tr("have the DLH agent go southwest")), "HDG DLH4AX 225")
+check(said(tr("have the KLM agent go southwest")):find("^ASK") ~= nil, "two KLM aircraft fly")
+check_eq(said(tr("BAW8CK go west, then down to FL150")), "HDG BAW8CK 270 ; ALT BAW8CK FL150")
+check_eq(said(tr("drop the DLH agent")), "DEL DLH4AX")
+check_eq(said(tr("drop BAW8CK to FL180")), "ALT BAW8CK FL180")
