@@ -702,7 +702,11 @@ function m:leftovers(s)
       or function(line) self:emit(line) end
     if not self.taken[q.b] and (q.b > s.trig or (unit and s.trig > s.b)) then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
-        emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl))
+        -- "FL300 at 2000 fpm": the rate said with the level is the climb's or descent's (ALT's vspd)
+        local rate = self:quantities(q.e, math.min(#self.t + 1, q.e + 4))[1]
+        rate = rate and rate.kind == "vs" and self:skip_fillers(q.e) == rate.b - (self:word(q.e, "at") and 1 or 0)
+          and not self.taken[rate.b] and rate
+        emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl) .. (rate and " " .. f.int(math.abs(self:take(rate).value)) or ""))
         alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
         emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))

@@ -1014,7 +1014,13 @@ return function(H, f, compass)
   end
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end
-    self:emit(spec.cmd .. " " .. on_off(self, s))
+    local state = on_off(self, s)
+    -- "enable state-based conflict detection": the method named, which is what ON switches on
+    if spec.cmd == "ASAS" and state == "ON" then
+      local k = self:find_word(1, #self.t + 1, "state statebased")
+      if k <= #self.t and (self:word(k, "statebased") or self:word(k + 1, "based")) then state = "STATEBASED" end
+    end
+    self:emit(spec.cmd .. " " .. state)
     if spec.cmd ~= "ASAS" then return end
     -- "turn on CD with 5 nm and 1000 ft": the protected zone's radius and half height
     for _, q in ipairs(self:quantities(s.trig, s.e)) do

@@ -272,6 +272,9 @@ return {
     -- "make a left three sixty", "orbit right": squawk flies no orbits
     { what = "orbits", words = "orbit orbits" },
     { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" } },
+    -- "turn around completely, 360 to the right", "a full circle": a turn back onto the same heading
+    { what = "orbits", words = "turn turning", near = { "completely", "circle" }, to_end = true },
+    { what = "orbits", words = "full", near = { "circle", "360", "sixty", "turn" } },
     { what = "holding patterns", words = "holding" },
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" } },

@@ -57,7 +57,7 @@ return function(intent, rule, words)
   intent "echo" { cmd = "ECHO", args = { "text" }, handler = "echo" }
   intent "wind" { cmd = "WIND", args = { "lat", "lon", "alt", "dir", "spd" }, handler = "wind", absorbs = true,
                   single = true }
-  intent "asas" { cmd = "ASAS", args = { "ON", "OFF" }, handler = "switch" }
+  intent "asas" { cmd = "ASAS", args = { "ON", "OFF", "STATEBASED" }, handler = "switch" }
   intent "reso" { cmd = "RESO", args = { "MVP", "OFF" }, handler = "resolution" }
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "rfac" { cmds = { "RFACH", "RFACV" }, args = { "factor" }, handler = "reso_factor" }
@@ -377,7 +377,7 @@ return function(intent, rule, words)
   rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
   rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
   rule { "details status info information state pos", "pos" }
-  rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
+  rule { "position", "pos", prev = { 4, "show display see look log record" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft

@@ -800,3 +800,10 @@ check(said(tr("have the KLM agent go southwest")):find("^ASK") ~= nil, "two KLM 
 check_eq(said(tr("BAW8CK go west, then down to FL150")), "HDG BAW8CK 270 ; ALT BAW8CK FL150")
 check_eq(said(tr("drop the DLH agent")), "DEL DLH4AX")
 check_eq(said(tr("drop BAW8CK to FL180")), "ALT BAW8CK FL180")
+-- no instruction of a line dropped: the method named with detection, a position logged after a
+-- level, a rate said with a level given without a verb; a full turn is an orbit, not a heading
+check_eq(said(tr("switch on state-based conflict detection")), "ASAS STATEBASED")
+check_eq(said(tr("DLH4AX up to FL340 and record its position")), "ALT DLH4AX FL340 ; POS DLH4AX")
+check_eq(said(tr("BAW8CK go to FL240 at 1500 fpm and 270 knots")), "ALT BAW8CK FL240 1500 ; SPD BAW8CK 270")
+r = tr("BAW8CK turn around completely, 360 to the left")
+check(#(r.commands or {}) == 0 and (r.note or ""):find("orbits", 1, true) ~= nil, said(r))
