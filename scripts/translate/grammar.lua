@@ -667,23 +667,36 @@ function G:condition()
   if not self:word(i, "@condition") then return nil, 1 end
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
-  if comma > #self.t then return nil, 1 end
+  local rest = comma + 1
+  if comma > #self.t then
+    -- "when BAW123 reaches FL300 set its speed to 260": with no comma the condition ends at its value,
+    -- a level, a speed or Mach ("once AFR1023 slows to 250": a speed by its verb), and an
+    -- instruction must follow it
+    local q = self:quantities(i, #self.t + 1)[1]
+    local by_verb = q and q.kind == "plain"
+      and self:word(self:word(q.b - 1, "to") and q.b - 2 or q.b - 1, "@speed_verbs")
+    if not q or not (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or by_verb) or not self:any_instruction_in(q.e, #self.t + 1) then
+      return nil, 1
+    end
+    comma, rest = q.e, q.e
+  end
   local ids = self:refs_in(i, comma, "aircraft")
   if #ids == 0 then return nil, 1 end
   self.subject = ids[1].name
   local f = handlers.format
   for _, q in ipairs(self:quantities(i, comma)) do
-    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), comma + 1 end
-    if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), comma + 1 end
-    if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), comma + 1 end
-    if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), comma + 1 end
+    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), rest end
+    if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
+    if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
+    if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
+    if q.kind == "plain" and rest == q.e then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     -- "when BAW123 is 20 miles from LEKKO, ...": ATDIST [NM]
     local r = q.kind == "dist" and self:word(q.e, "from of to before")
       and self:refs_in(self:skip_fillers(q.e + 1), self:skip_fillers(q.e + 1) + 1, "waypoint")[1]
-    if r then return "ATDIST " .. self.subject .. " " .. r.name .. " " .. f.num(q.value), comma + 1 end
+    if r then return "ATDIST " .. self.subject .. " " .. r.name .. " " .. f.num(q.value), rest end
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
-  return nil, comma + 1
+  return nil, rest
 end
 
 -- ---- segments: one instruction each ----
@@ -1470,13 +1483,14 @@ function G:not_simulated()
   return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
 end
 
--- True when some unused word of the request still starts an instruction.
-function G:any_instruction()
-  for i = 1, #self.t do
+-- True when some unused word of the request (of tokens b..e-1) still starts an instruction.
+function G:any_instruction_in(b, e)
+  for i = b, e - 1 do
     if self:intent_at(i) then return true end
   end
   return false
 end
+function G:any_instruction() return self:any_instruction_in(1, #self.t + 1) end
 
 local UNDERSTOOD = "I did not understand that. Which command, aircraft and value do you mean?"
 M.not_understood = UNDERSTOOD

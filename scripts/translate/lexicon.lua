@@ -29,7 +29,9 @@ return {
       "plan", "departed", "shift", "activate", "deactivate", "unpause", "start", "over", "real", "time", "half",
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
-      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz", },
+      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
+      -- a position's labels as typed ("lat 51.95 lon 4.35"), and the random number generator a seed seeds
+      "lat", "lon", "lng", "rng", "prng", },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },
@@ -151,6 +153,8 @@ return {
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
+  -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")
+  speed_verbs = { "slows", "slowed", "slow", "accelerates", "accelerated", "decelerates", "decelerated" },
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
@@ -169,13 +173,14 @@ return {
                       markers = { "no", "wait", "sorry", "actually", "make", "mean" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" } },
   -- the simulation itself, not an aircraft
-  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock" },
+  -- (an episode: one run of a learning environment)
+  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
-  route_nouns = { "route", "plan" },
+  route_nouns = { "route", "plan", "path" },
   articles_new = { "a", "an", "new", "second", "another" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names

@@ -177,6 +177,8 @@ return function(intent, rule, words)
   rule { "heading hdg headings", "hdg" }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn turning", "hdg" }
+  -- "rotate BAW123 30 degrees to the left", "nudge N123AB 15 degrees left": a turn by an amount
+  rule { "rotate nudge veer swing", "hdg", near = { 6, "left right degrees degree" } }
   rule { "left right", "hdg", when = function(g, i)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
@@ -351,7 +353,7 @@ return function(intent, rule, words)
     return false
   end }
   rule { "fly", "dest", next = "to" }
-  rule { "origin departed orig", "orig" }
+  rule { "origin departed departing orig", "orig" }
   rule { "lnav", "lnav" }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
@@ -376,8 +378,9 @@ return function(intent, rule, words)
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
   rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
   rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
+  rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
   rule { "details status info information state pos", "pos" }
-  rule { "position", "pos", prev = { 4, "show display see look log record" } }  -- "show me BAW87L's position"
+  rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft

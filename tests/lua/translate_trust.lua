@@ -807,3 +807,12 @@ check_eq(said(tr("DLH4AX up to FL340 and record its position")), "ALT DLH4AX FL3
 check_eq(said(tr("BAW8CK go to FL240 at 1500 fpm and 270 knots")), "ALT BAW8CK FL240 1500 ; SPD BAW8CK 270")
 r = tr("BAW8CK turn around completely, 360 to the left")
 check(#(r.commands or {}) == 0 and (r.note or ""):find("orbits", 1, true) ~= nil, said(r))
+-- a condition said with no comma ends at its value, and an instruction must follow it
+check_eq(said(tr("when DLH4AX reaches FL320 slow it to 250 knots")), "ATALT DLH4AX FL320 SPD DLH4AX 250")
+check_eq(said(tr("once BAW8CK slows to 230 turn it left heading 300")), "ATSPD BAW8CK 230 HDG BAW8CK 300 LEFT")
+check(said(tr("when DLH4AX reaches FL320")):find("^ASK") ~= nil, "a condition with nothing to do asks")
+-- a data scientist's words: a position's labels, a turn by "rotate"/"nudge", an episode, a path
+check_eq(said(tr("move DLH4AX to lat 52.5 lon 4.1")), "MOVE DLH4AX 52.5 4.1")
+check_eq(said(tr("nudge DLH4AX 20 degrees right")), "HDG DLH4AX 110 RIGHT")
+check_eq(said(tr("remove BAW8CK from this episode")), "DEL BAW8CK")
+check_eq(said(tr("dump the state of DLH4AX")), "POS DLH4AX")
