@@ -405,6 +405,8 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  -- "KLM1234 -> SUGOL": an arrow typed between an aircraft and a place is a direct-to
+  text = text:gsub("(%w)%s*%-+>%s*(%w)", "%1 direct %2")
   text = split_digits(text)
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
@@ -1581,11 +1583,24 @@ end
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
 -- number with a unit is the instruction's value, no flight number (unless an
 -- aircraft has that id); a comma keeps the callsign matcher off it.
+local SPOKEN_DIGITS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
+  "niner", "ten", "eleven", "twelve", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety",
+  "hundred", "thousand" })
+for w in pairs(lexicon.phonetic) do SPOKEN_DIGITS[w] = true end  -- ("the Ryanair one Juliet Charlie")
 local AIRLINE_WORDS = {}
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
+  -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
+  -- aircraft has that id, or a number follows: "the Ryanair one two three")
+  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
+    local icao = AIRLINE_WORDS[w:lower()]
+    if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
+      return the .. w .. s1 .. "aircraft" .. s2 .. nx
+    end
+    return nil
+  end)
   return (text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
     local icao = AIRLINE_WORDS[w:lower()]
     if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then

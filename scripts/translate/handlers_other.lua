@@ -113,7 +113,7 @@ return function(H, f, compass)
       end
     end
     if not hdg then
-      local h = self:find_word(s.b, s.e, "heading hdg")
+      local h = self:find_word(s.b, s.e, "heading hdg facing pointing")  -- ("facing west")
       if h + 1 < s.e and compass(self.t[h + 1].text) then
         hdg = compass(self.t[h + 1].text, h + 2 < s.e and self.t[h + 2].text or "", h + 3 < s.e and self.t[h + 3].text or "")
       end

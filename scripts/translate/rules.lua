@@ -83,6 +83,11 @@ return function(intent, rule, words)
   rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
+  -- "cruise at mach .79", "cruise at 280 knots": a speed, when the value after the verb is one
+  rule { "cruise", "spd", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and (q.kind == "speed" or q.kind == "mach")
+  end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "drop CHARL from united 9's route": a waypoint off the route
   rule { "drop", "delwpt", near = { 8, "@route_nouns" },
@@ -151,6 +156,11 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
     return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
+  -- "set the speed to 20 times real time": a rate of the clock, no aircraft named
+  rule { "speed", "dtmult", when = function(g, i)
+    return g:followed_by(i, 5, "times x") and g:followed_by(i, 7, "real normal")
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
@@ -195,7 +205,7 @@ return function(intent, rule, words)
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
-  rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
+  rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
   rule { "due", "hdg", next = "@compass" }
   rule { "go turn", "hdg", next = "@compass" }  -- "go east", "go northeast": the heading of that point
   rule { "around", false, prev = { 3, "turn" } }
@@ -212,7 +222,7 @@ return function(intent, rule, words)
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
-  rule { "define make put", false, near = { 2, "box circle" } }  -- the shape's word starts it
+  rule { "define make put", false, near = { 2, "box circle circular" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
   -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
   -- waypoint at a position, when no aircraft that flies and no aircraft type is named
@@ -318,6 +328,13 @@ return function(intent, rule, words)
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dir proceed direct-to", "direct" }
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
+  -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
+  local function to_waypoint(g, i)
+    local k = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "towards toward at to")
+    return k <= #g.t and g:has_ref(g:skip_fillers(k + 1), g:skip_fillers(k + 1) + 1, "waypoint")
+  end
+  rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
+  rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
   -- ("cleared for the FMS bridge visual runway 28R": an approach clearance, not simulated)
   rule { "cleared", "direct", when = function(g, i)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
@@ -360,6 +377,7 @@ return function(intent, rule, words)
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
   rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
+  rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
@@ -498,6 +516,9 @@ return function(intent, rule, words)
     return true
   end }
   rule { "scenario load open ic", "ic" }
+  -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
+  rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },
+         when = function(g, i) return g:has_ref(i + 1, i + 7, "aircraft") and not g:word_in(i + 1, #g.t + 1, "log") end }
   rule { "print", "echo" }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started": the text after the colon
   rule { "note log", "echo", when = function(g, i)
@@ -528,7 +549,7 @@ return function(intent, rule, words)
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
-  rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
+  rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected pz rpz separation zone zoner zonedh radius", "zone" }
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
@@ -539,6 +560,13 @@ return function(intent, rule, words)
   -- shapes and the deletion area ("in the area" alone names no area)
   rule { "area", "area", prev = { 2, "deletion delete experiment" } }
   rule { "circle", "circle", near = { 3, "@named" } }
+  -- "a circle ZONE1 at 52.0 4.5", "a circular area C1 around 52 4": a shape at a position
+  rule { "circle circular", "circle", when = function(g, i)
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
+      if q.kind == "lat" or (q.kind == "plain" and q.number.decimal) then return true end
+    end
+    return false
+  end }
   rule { "box", "box", near = { 3, "@named" } }
 
   -- the radar display
