@@ -405,8 +405,15 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
-  -- "KLM1234 -> SUGOL": an arrow typed between an aircraft and a place is a direct-to
-  text = text:gsub("(%w)%s*%-+>%s*(%w)", "%1 direct %2")
+  -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own
+  text = text:gsub("%s*%((%a[^()]*)%)", ", %1,")
+  -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
+  -- after a setting's name, is no place)
+  text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
+    local b, a = before:lower(), after:lower()
+    if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
+    return before .. " direct " .. after
+  end)
   text = split_digits(text)
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]

@@ -146,6 +146,9 @@ return {
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
         "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts", },
   },
+  -- settings named before an arrow and their value ("alt -> FL330"): the arrow is no direct-to
+  direct_arrow_not = { alt = true, altitude = true, level = true, speed = true, heading = true, mach = true,
+                       vs = true, fl = true },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
   shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", spd = "speed",

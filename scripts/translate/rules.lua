@@ -108,6 +108,11 @@ return function(intent, rule, words)
   end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level
+  rule { "go", "alt", next = "to", when = function(g, i)
+    local q = g:quantities(i + 2, i + 3)[1]
+    return q ~= nil and q.b == i + 2 and q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0
+  end }
   -- "kl204 up to 300", "EWG7LM up to FL320 so it ...": straight after the callsign
   rule { "up down", "alt", next = "to", not_near = { 3, "speed knots kts" }, not_prev = { 3, "speed spd" },
          when = function(g, i)
@@ -275,6 +280,10 @@ return function(intent, rule, words)
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
+  -- "append 52.6, 4.2 as a waypoint for EZY45": a position added as a waypoint of an aircraft's
+  rule { "add append insert", "addwpt", near = { 8, "@waypoint_nouns" }, when = function(g, i)
+    return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "as") and g:has_ref(i + 1, #g.t + 1, "aircraft")
+  end }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
@@ -316,6 +325,19 @@ return function(intent, rule, words)
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
+  -- "UAL9 forget ALPHA": a waypoint of the aircraft's route left out of it
+  rule { "forget", "delwpt", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    local w = g:refs_in(k, k + 1, "waypoint")[1]
+    if not w then return false end
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+      local st = r.exists and g:state(r.name)
+      for _, name in ipairs(st and st.route or {}) do
+        if name:upper() == w.name:upper() then return true end
+      end
+    end
+    return false
+  end }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
@@ -372,6 +394,10 @@ return function(intent, rule, words)
   rule { "fly", "dest", next = "to" }
   rule { "origin departed departing orig", "orig" }
   rule { "lnav", "lnav" }
+  -- "stop BAW123 following its route": its lateral navigation off
+  rule { "stop", "lnav", near = { 4, "following follow" }, when = function(g, i)
+    return g:followed_by(i, 7, "@route_nouns") and g:has_ref(i + 1, i + 4, "aircraft")
+  end }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"

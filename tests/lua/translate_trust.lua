@@ -827,3 +827,21 @@ check_eq(said(tr("DLH4AX cruise at mach .78")), "SPD DLH4AX M0.78")
 check_eq(said(tr("make a circular area C9 around 52.2, 4.4 with a 15 nm radius")), "CIRCLE C9 52.2 4.4 15")
 check_eq(said(tr("create ABC12 A320 at 52.1 4.1 facing north at FL200 doing 250")), "CRE ABC12 A320 52.1 4.1 360 FL200 250")
 check_eq(said(tr("set the speed to 4 times real time")), "DTMULT 4")
+-- a level by "go to" and a bare thousand; a route waypoint forgotten; route following stopped; a
+-- position appended as a waypoint; a bracketed remark; an arrow after a setting's name is no direct-to
+check_eq(said(tr("BAW8CK go to 9000")), "ALT BAW8CK 9000")
+check(said(tr("BAW8CK go to 270")):find("^ASK") ~= nil, "a bare 270 after 'go to' is no level")
+check_eq(said(tr("stop DLH4AX following its flight plan")), "LNAV DLH4AX OFF")
+check_eq(said(tr("append 52.3, 4.9 as a waypoint for DLH4AX")), "ADDWPT DLH4AX 52.3 4.9")
+check_eq(said(tr("DLH4AX heading 120 (it should pass behind the KLM)")), "HDG DLH4AX 120")
+check_eq(said(tr("DLH4AX: alt -> FL310, spd -> 260")), "ALT DLH4AX FL310 ; SPD DLH4AX 260")
+do
+  local rs = squawk.sim.new()
+  check(rs:exec("CRE AB12 A320 52 4 090 FL200 250"))
+  check(rs:exec("DEFWPT WP1 52.1 4.5"))
+  check(rs:exec("DEFWPT WP2 52.2 4.8"))
+  check(rs:exec("ADDWPT AB12 WP1"))
+  local function rt(text) return said(graph.translate(text, { sim = rs, mode = "offline" })) end
+  check_eq(rt("AB12 forget WP1"), "DELWPT AB12 WP1")
+  check(rt("AB12 forget WP2"):find("^ASK") ~= nil, "a waypoint off the route is not forgotten")
+end
