@@ -1492,6 +1492,33 @@ function G:not_simulated()
   return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
 end
 
+-- "maintain present level, descend when ready": a climb or descent left to the pilot's discretion
+-- with no level said after it gives no level to fly; asked (never read as the other instruction's).
+local DISCRETION = {}
+for _, p in ipairs(lexicon.discretion) do
+  local words = {}
+  for w in p:gmatch("%S+") do words[#words + 1] = (w:gsub("'s$", "")) end
+  DISCRETION[#DISCRETION + 1] = words
+end
+function G:discretion_without_level()
+  for i = 1, #self.t do
+    if self:word(i, "climb descend climbing descending") then
+      local k = self:skip_fillers(i + 1)
+      for _, p in ipairs(DISCRETION) do
+        local ok = true
+        for j = 1, #p do ok = ok and self.t[k + j - 1] ~= nil and self.t[k + j - 1].text == p[j] end
+        local ids = self:refs_in(1, #self.t + 1, "aircraft")
+        -- (the level may follow in a clause of its own: "descend at pilot's discretion, maintain 12000")
+        if ok and #self:quantities(i, #self.t + 1) == 0 then
+          self.ask = string.format("To what level should %s %s? Please give a level or an altitude.",
+            #ids == 1 and ids[1].name or "the aircraft", (self.t[i].text:gsub("ing$", "")))
+          return
+        end
+      end
+    end
+  end
+end
+
 -- True when some unused word of the request (of tokens b..e-1) still starts an instruction.
 function G:any_instruction_in(b, e)
   for i = b, e - 1 do
@@ -1650,6 +1677,7 @@ function M.translate(text, world)
       for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
     end
   end
+  if not g.ask then g:discretion_without_level() end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end

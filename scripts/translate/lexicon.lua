@@ -161,6 +161,9 @@ return {
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
+  -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
+  discretion = { "when ready", "when able", "when you're ready", "at pilot's discretion", "at your discretion",
+                 "at your own discretion", "at own discretion" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
   -- words after which a clause is a new instruction
@@ -275,6 +278,9 @@ return {
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
       after_instruction = true, to_end = true },
+    -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the
+    -- pilot's planning, no clearance (lexicon.not_a_clearance)
+    { what = "expected clearances", words = "expect expecting" },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits

@@ -845,3 +845,14 @@ do
   check_eq(rt("AB12 forget WP1"), "DELWPT AB12 WP1")
   check(rt("AB12 forget WP2"):find("^ASK") ~= nil, "a waypoint off the route is not forgotten")
 end
+-- an "expect" is information, not a clearance: named as not simulated, never a turn or a level
+r = tr("DLH4AX expect runway 27 right")
+check(#(r.commands or {}) == 0 and (r.note or ""):find("expected clearances", 1, true) ~= nil, said(r))
+r = tr("DLH4AX descend FL240, expect ILS runway 06")
+check_eq(said(r), "ALT DLH4AX FL240")
+check((r.note or ""):find("expect ILS runway 06", 1, true) ~= nil, tostring(r.note))
+-- a climb or descent left to the pilot with no level said is asked about, never dropped
+check(said(tr("DLH4AX maintain present level, descend when ready")):find("^ASK To what level should DLH4AX descend") ~= nil,
+  "a discretionary descent with no level asks")
+check(said(tr("BAW8CK climb at your discretion")):find("^ASK") ~= nil, "no level")
+check_eq(said(tr("DLH4AX descend at pilot's discretion, maintain FL240")), "ALT DLH4AX FL240")
