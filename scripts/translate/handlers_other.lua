@@ -934,6 +934,21 @@ return function(H, f, compass)
     self:emit("DELWPT " .. id .. " " .. wp)
   end
 
+  -- "destination echo hotel alpha mike": an ICAO code spelled in the phonetic alphabet after the
+  -- instruction word, four letters exactly, that names an airport of the navdata (without navdata,
+  -- or with another count of letters, none)
+  local function spelled_airport(self, s)
+    local class = self.world.airport_class
+    local k = s.trig + 1
+    while k < s.e and not (self.t[k].kind == "word" and L.phonetic[self.t[k].text]) do k = k + 1 end
+    local from, code = k, ""
+    while k < s.e and self.t[k].kind == "word" and L.phonetic[self.t[k].text] and #code < 5 do
+      code, k = code .. L.phonetic[self.t[k].text], k + 1
+    end
+    if #code ~= 4 or not class or (class(code) or "") == "" then return nil end
+    self:mark_used(from, k)
+    return code
+  end
   local function dest_orig(self, s, cmd, what)
     local id = self:acid(s, "get it")
     if not id then return end
@@ -941,7 +956,7 @@ return function(H, f, compass)
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
-    local airport = (a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e)
+    local airport = (a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e) or spelled_airport(self, s)
     -- (two places said for one destination, "fly to PAM next, then on to Schiphol": which?)
     if airport and #w > 0 and w[#w].name:upper() ~= airport and self:airport_meant(w[#w].name, a) ~= airport then
       return self:need(string.format("Which should be the %s of %s: %s or %s?", what, id, w[#w].name, airport))

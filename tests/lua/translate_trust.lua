@@ -315,6 +315,10 @@ if #sim:airports_named("schiphol") == 1 then
   check_eq(ustr("route FDX1288 via CRI to JFK"), "ADDWPT FDX1288 CRI ; DEST FDX1288 KJFK")
   local r2 = graph.translate("route BAW12 via DTY and on to Gotham City", { sim = uk, mode = "offline" })
   check(r2.ask ~= nil and r2.ask:find("'Gotham City'", 1, true) ~= nil, said(r2))
+  -- an ICAO code spelled in the phonetic alphabet names the navdata's airport; one it lacks is asked about
+  check_eq(ukt("Speedbird 12 destination echo golf papa foxtrot"), "DEST BAW12 EGPF")
+  check_eq(ukt("set the origin of BAW12 to echo golf kilo kilo"), "ORIG BAW12 EGKK")
+  check(ukt("BAW12 destination echo xray yankee zulu"):find("^ASK") ~= nil, "no such airport")
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
