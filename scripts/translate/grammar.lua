@@ -909,15 +909,26 @@ function G:at_waypoint(s, spec)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
       for _, w in ipairs(now and now.route or {}) do in_route = in_route or w:upper() == r.name:upper() end
-      local qs = self:quantities(r.e, s.e)
-      local q = #qs == 1 and qs[1]
+      -- "cross SUGOL at FL200", "cross SUGOL at FL200 and 250 knots": a level and a speed at most, one
+      -- AT constraint each (BlueSky's AT acid wpname ALT/SPD value)
       local f = handlers.format
-      if in_route and q and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then
-        self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(q.value, q.fl))
-        return self:take(q) ~= nil
-      elseif in_route and q and (q.kind == "speed" or q.kind == "mach") then
-        self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
-        return self:take(q) ~= nil
+      local alt, spd, other = nil, nil, false
+      for _, q in ipairs(self:quantities(r.e, s.e)) do
+        if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q
+        elseif not spd and (q.kind == "speed" or q.kind == "mach") then spd = q
+        else other = true end
+      end
+      if in_route and not other and (alt or spd) then
+        if alt then
+          self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(alt.value, alt.fl))
+          self:take(alt)
+        end
+        if spd then
+          self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD "
+            .. (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value)))
+          self:take(spd)
+        end
+        return true
       end
     end
     if self:word(r.b - 1, "at cross crossing over abeam overhead") then

@@ -860,3 +860,16 @@ check(said(tr("DLH4AX maintain present level, descend when ready")):find("^ASK T
   "a discretionary descent with no level asks")
 check(said(tr("BAW8CK climb at your discretion")):find("^ASK") ~= nil, "no level")
 check_eq(said(tr("DLH4AX descend at pilot's discretion, maintain FL240")), "ALT DLH4AX FL240")
+-- "cross FIX at ALT and SPD": one AT constraint each at a waypoint of the route; off the route, asked
+do
+  local cs = squawk.sim.new()
+  for _, line in ipairs({ "CRE AB12 A320 52 4 090 FL200 250", "DEFWPT WP1 52.1 4.5", "DEFWPT WP2 52.2 4.8",
+      "ADDWPT AB12 WP1" }) do
+    check(cs:exec(line))
+  end
+  local function ct(text) return said(graph.translate(text, { sim = cs, mode = "offline" })) end
+  check_eq(ct("AB12 cross WP1 at FL150 and 240 knots"), "AT AB12 WP1 ALT FL150 ; AT AB12 WP1 SPD 240")
+  check_eq(ct("AB12 cross WP1 at mach .74"), "AT AB12 WP1 SPD M0.74")
+  check(ct("AB12 cross WP2 at FL150 and 240 knots"):find("^ASK") ~= nil, "WP2 is not on the route")
+  check(ct("AB12 cross WP1 at FL150, 240 knots, 3000 ft"):find("^ASK") ~= nil, "two levels for one fix")
+end
