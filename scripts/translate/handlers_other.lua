@@ -956,7 +956,17 @@ return function(H, f, compass)
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
-    local airport = (a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e) or spelled_airport(self, s)
+    local near = a and self:airport_by_name(s.b, s.e, a)
+    local airport = near or self:airport_by_name(s.b, s.e) or spelled_airport(self, s)
+    -- a name that only an airport far from the aircraft, and no large one, bears ("London" from over
+    -- the North Sea is CYXU, in Canada: the navdata names Heathrow HEATHROW): confirmed, never sent
+    local class = self.world.airport_class
+    if airport and a and a.lat and not near and class and class(airport) ~= "LARGE" and #w == 0 then
+      local line = cmd .. " " .. id .. " " .. airport
+      self.confirm = self.confirm or { commands = { line } }
+      return self:need(string.format("The only airport of that name is %s, more than %d NM from %s. Is that the %s? "
+        .. "(yes or no; else please give the ICAO code)", airport, L.navaid_range_nm, id, what))
+    end
     -- (two places said for one destination, "fly to PAM next, then on to Schiphol": which?)
     if airport and #w > 0 and w[#w].name:upper() ~= airport and self:airport_meant(w[#w].name, a) ~= airport then
       return self:need(string.format("Which should be the %s of %s: %s or %s?", what, id, w[#w].name, airport))

@@ -319,6 +319,11 @@ if #sim:airports_named("schiphol") == 1 then
   check_eq(ukt("Speedbird 12 destination echo golf papa foxtrot"), "DEST BAW12 EGPF")
   check_eq(ukt("set the origin of BAW12 to echo golf kilo kilo"), "ORIG BAW12 EGKK")
   check(ukt("BAW12 destination echo xray yankee zulu"):find("^ASK") ~= nil, "no such airport")
+  -- a city whose airports the navdata names otherwise ("London": HEATHROW, GATWICK) is no far airport
+  -- that bears the name (CYXU, Ontario): that one is confirmed, never sent
+  local lr = graph.translate("BAW12 destination London", { sim = uk, mode = "offline" })
+  check(#(lr.commands or {}) == 0 and (lr.ask or ""):find("CYXU", 1, true) ~= nil, said(lr))
+  check_eq(ukt("BAW12 destination Gatwick"), "DEST BAW12 EGKK")
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
