@@ -852,7 +852,7 @@ function G:parse(b, e)
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
       -- else was understood.
-      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
+      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig) then
         self.pending = self.pending or self.ask
         self.ask = nil
       elseif (self:then_after(segs, k) or self:when_reached(s)) and before and #self.out == n_before + 1
@@ -863,6 +863,13 @@ function G:parse(b, e)
     end
   end
   self:direct_resumes_nav()
+end
+
+-- True when the word at i asks for a change in one direction ("go left then climb FL320", "go faster
+-- and climb FL320", "fly west and slow down"): with no value said that instruction is asked about,
+-- never dropped beside the others.
+function G:change_word(i)
+  return self:word(i, "@left @right @faster_slower") or (self:word(i, "slow") and self:word(i + 1, "down"))
 end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a

@@ -221,6 +221,8 @@ return {
   off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },
   off_after = { "anymore", "longer" },
   on = { "on", "enable", "activate", "show", "start", "use" },
+  -- a change of speed said by its direction alone ("go faster", "slow down")
+  faster_slower = { "faster", "slower", "accelerate", "decelerate" },
   -- turns and compass points
   left = { "left" },
   right = { "right" },

@@ -212,7 +212,9 @@ return function(intent, rule, words)
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
   rule { "due", "hdg", next = "@compass" }
-  rule { "go turn", "hdg", next = "@compass" }  -- "go east", "go northeast": the heading of that point
+  rule { "go turn", "hdg", next = "@compass" }
+  rule { "left right", "hdg", prev = { 1, "go bear" } }  -- "go left then climb": a turn, its heading asked
+  rule { "@compass", "hdg", prev = { 1, "then" } }  -- "go up to FL320, then east"  -- "go east", "go northeast": the heading of that point
   rule { "around", false, prev = { 3, "turn" } }
 
   -- conflict resolution in the vertical ("let MVP use vertical speed in the resolutions", "keep

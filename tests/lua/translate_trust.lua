@@ -878,3 +878,10 @@ do
   check(ct("AB12 cross WP2 at FL150 and 240 knots"):find("^ASK") ~= nil, "WP2 is not on the route")
   check(ct("AB12 cross WP1 at FL150, 240 knots, 3000 ft"):find("^ASK") ~= nil, "two levels for one fix")
 end
+-- a turn or a change of speed said by its direction alone beside a complete instruction is asked
+-- about, never dropped; a compass point after "then" is a heading
+check(said(tr("DLH4AX go left then climb FL320")):find("^ASK What heading") ~= nil, "the turn is asked about")
+check(said(tr("DLH4AX go faster and descend FL200")):find("^ASK What speed") ~= nil, "the speed is asked about")
+check(said(tr("DLH4AX fly north and slow down")):find("^ASK What speed") ~= nil, "the speed is asked about")
+check_eq(said(tr("DLH4AX climb to FL320, then south")), "ALT DLH4AX FL320 ; HDG DLH4AX 180")
+check_eq(said(tr("get DLH4AX to climb to FL350 at 1000 fpm, we want a slow climb")), "ALT DLH4AX FL350 1000")
