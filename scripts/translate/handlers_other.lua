@@ -947,6 +947,12 @@ return function(H, f, compass)
     end
     if #code ~= 4 or not class or (class(code) or "") == "" then return nil end
     self:mark_used(from, k)
+    -- the place's name said just before its code ("Athens, Lima Golf Alpha Victor")
+    local b = from - 1
+    while b > s.trig and from - b <= 4 and (self.t[b].kind == "punct" or self.t[b].raw:match("^%u%l")) do
+      self:explain(b, b + 1)
+      b = b - 1
+    end
     return code
   end
   local function dest_orig(self, s, cmd, what)
@@ -956,15 +962,18 @@ return function(H, f, compass)
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
-    local near = a and self:airport_by_name(s.b, s.e, a)
-    local airport = near or self:airport_by_name(s.b, s.e) or spelled_airport(self, s)
-    -- a name that only an airport far from the aircraft, and no large one, bears ("London" from over
-    -- the North Sea is CYXU, in Canada: the navdata names Heathrow HEATHROW): confirmed, never sent
+    -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant)
+    local spelled = spelled_airport(self, s)
+    local near = spelled or (a and self:airport_by_name(s.b, s.e, a))
+    local airport = near or self:airport_by_name(s.b, s.e)
+    -- an airport found by name only far from the aircraft ("London" from over the North Sea is CYXU, in
+    -- Canada: the navdata names Heathrow HEATHROW; "Athens" from over Greece is KAHN, Georgia, ATHENS BEN
+    -- EPPS): confirmed, never sent
     local class = self.world.airport_class
-    if airport and a and a.lat and not near and class and class(airport) ~= "LARGE" and #w == 0 then
+    if airport and a and a.lat and not near and class and #w == 0 then
       local line = cmd .. " " .. id .. " " .. airport
       self.confirm = self.confirm or { commands = { line } }
-      return self:need(string.format("The only airport of that name is %s, more than %d NM from %s. Is that the %s? "
+      return self:need(string.format("The airport I found by that name is %s, more than %d NM from %s. Is that the %s? "
         .. "(yes or no; else please give the ICAO code)", airport, L.navaid_range_nm, id, what))
     end
     -- (two places said for one destination, "fly to PAM next, then on to Schiphol": which?)

@@ -324,6 +324,11 @@ if #sim:airports_named("schiphol") == 1 then
   local lr = graph.translate("BAW12 destination London", { sim = uk, mode = "offline" })
   check(#(lr.commands or {}) == 0 and (lr.ask or ""):find("CYXU", 1, true) ~= nil, said(lr))
   check_eq(ukt("BAW12 destination Gatwick"), "DEST BAW12 EGKK")
+  check_eq(ukt("Speedbird 12 your destination Glasgow, echo golf papa foxtrot"), "DEST BAW12 EGPF")
+  local gr = squawk.sim.new()
+  check(gr:exec("CRE AEE601 A320 38.5 23.0 090 FL300 280"))
+  local ar = graph.translate("AEE601 destination Athens", { sim = gr, mode = "offline" })
+  check(#(ar.commands or {}) == 0 and (ar.ask or ""):find("KAHN", 1, true) ~= nil, said(ar))
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
