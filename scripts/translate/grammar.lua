@@ -376,6 +376,37 @@ local function self_corrections(text)
   return table.concat(pieces)
 end
 
+-- "flight level two six zero, not two eight zero", "heading 300, not 310": a value said after "not"
+-- straight after another value is the one the speaker rules out (a readback corrected); it is dropped,
+-- with its "not", and the value before it stands.
+local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
+local function negated_values(text)
+  local toks = {}
+  for at, w, e in text:gmatch("()(%S+)()") do
+    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
+  end
+  local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
+  local pieces, from = {}, 1
+  for k, t in ipairs(toks) do
+    if t.bare == "not" and t.raw:lower() == "not" and value(toks[k - 1]) and k > from then
+      local j, numbers = k + 1, 0
+      while toks[j] and (value(toks[j]) or NEGATED_NOUNS[toks[j].bare]) do
+        if value(toks[j]) then numbers = numbers + 1 end
+        local stop = toks[j].raw:match("%p$")
+        j = j + 1
+        if stop then break end
+      end
+      if numbers > 0 then
+        local last = toks[j - 1]
+        pieces[#pieces + 1] = text:sub(from, t.at - 1) .. (last.raw:match("(%p+)$") or "")
+        from = last.e
+      end
+    end
+  end
+  pieces[#pieces + 1] = text:sub(from)
+  return table.concat(pieces)
+end
+
 -- A speaker's label before the request ("instructor: ...", "ATC here - ...", lexicon.speaker_roles) is dropped.
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 local function unlabelled(text)
@@ -399,7 +430,7 @@ local function hyphened_types(text)
 end
 
 local function written_forms(text)
-  text = hyphened_types(spelled(heard_forms(self_corrections(unlabelled(text)))))
+  text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(text))))))
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
@@ -1635,9 +1666,8 @@ end
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
 -- number with a unit is the instruction's value, no flight number (unless an
 -- aircraft has that id); a comma keeps the callsign matcher off it.
-local SPOKEN_DIGITS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
-  "niner", "ten", "eleven", "twelve", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety",
-  "hundred", "thousand" })
+local SPOKEN_DIGITS = { oh = true }
+for w in pairs(NUMBER_WORDS) do SPOKEN_DIGITS[w] = true end
 for w in pairs(lexicon.phonetic) do SPOKEN_DIGITS[w] = true end  -- ("the Ryanair one Juliet Charlie")
 local AIRLINE_WORDS = {}
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end

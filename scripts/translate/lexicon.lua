@@ -80,7 +80,9 @@ return {
         "explain", "brief", "talk", "discuss", "speak" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
-        "copied", "affirm", "affirmative", "understood", "g'day", "bye" },
+        "copied", "affirm", "affirmative", "understood", "g'day", "bye",
+        -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
+        "readback", "read-back", "incorrect", "said" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",

@@ -890,3 +890,8 @@ check(said(tr("DLH4AX go faster and descend FL200")):find("^ASK What speed") ~= 
 check(said(tr("DLH4AX fly north and slow down")):find("^ASK What speed") ~= nil, "the speed is asked about")
 check_eq(said(tr("DLH4AX climb to FL320, then south")), "ALT DLH4AX FL320 ; HDG DLH4AX 180")
 check_eq(said(tr("get DLH4AX to climb to FL350 at 1000 fpm, we want a slow climb")), "ALT DLH4AX FL350 1000")
+-- a readback corrected: the value after "not" is the one ruled out, the one before it stands
+check_eq(said(tr("DLH4AX readback incorrect, descend flight level two four zero, not two three zero")), "ALT DLH4AX FL240")
+check_eq(said(tr("BAW8CK I said heading 310, not 300")), "HDG BAW8CK 310")
+check(said(tr("DLH4AX do not descend")):find("^ASK") ~= nil, "a negated instruction is never run")
+check(said(tr("DLH4AX descend FL240, not before SPY")):find("^ASK") ~= nil, "a negated condition is asked about")
