@@ -1048,6 +1048,16 @@ return function(H, f, compass)
   end
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end
+    -- "run conflict detection every 2 seconds": the interval of detection (DT ASAS); switched on too
+    -- only when said ("turn on detection every 2 seconds")
+    if spec.cmd == "ASAS" then
+      for _, q in ipairs(self:quantities(s.b, s.e)) do
+        if q.kind == "time" and self:word(q.b - 1, "every each") then
+          if self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
+          return self:emit("DT ASAS " .. f.num(self:take(q).value))
+        end
+      end
+    end
     local state = on_off(self, s)
     -- "enable state-based conflict detection": the method named, which is what ON switches on
     if spec.cmd == "ASAS" and state == "ON" then

@@ -895,3 +895,9 @@ check_eq(said(tr("DLH4AX readback incorrect, descend flight level two four zero,
 check_eq(said(tr("BAW8CK I said heading 310, not 300")), "HDG BAW8CK 310")
 check(said(tr("DLH4AX do not descend")):find("^ASK") ~= nil, "a negated instruction is never run")
 check(said(tr("DLH4AX descend FL240, not before SPY")):find("^ASK") ~= nil, "a negated condition is asked about")
+-- detection "every N seconds" is its interval (DT ASAS), switched on only when said; "call sign" is
+-- the callsign
+check_eq(said(tr("run conflict detection every 3 seconds")), "DT ASAS 3")
+check_eq(said(tr("switch on conflict detection every 5 seconds")), "ASAS ON ; DT ASAS 5")
+check_eq(said(tr("create a new aircraft, type A320, call sign TST1, at 52.0 4.0, heading 090, FL200, 250 knots")),
+  "CRE TST1 A320 52 4 90 FL200 250")
