@@ -197,7 +197,7 @@ return {
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
   down = { "descend", "desc", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
-           "descending", "decelerate", "minus" },
+           "descending", "decelerate", "minus", "subtract" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
                        "than", "traffic", "meet", "meets", "catch" },

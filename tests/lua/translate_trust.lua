@@ -901,3 +901,9 @@ check_eq(said(tr("run conflict detection every 3 seconds")), "DT ASAS 3")
 check_eq(said(tr("switch on conflict detection every 5 seconds")), "ASAS ON ; DT ASAS 5")
 check_eq(said(tr("create a new aircraft, type A320, call sign TST1, at 52.0 4.0, heading 090, FL200, 250 knots")),
   "CRE TST1 A320 52 4 90 FL200 250")
+-- a heading changed by an amount: more (increase, plus, add) turns right, less (decrease, minus,
+-- subtract) left, from the present heading (DLH4AX flies 090); never the amount as a heading
+check_eq(said(tr("increase the heading of DLH4AX by 30")), "HDG DLH4AX 120 RIGHT")
+check_eq(said(tr("DLH4AX heading minus 20")), "HDG DLH4AX 70 LEFT")
+check_eq(said(tr("subtract 45 from DLH4AX's heading")), "HDG DLH4AX 45 LEFT")
+check_eq(said(tr("add 15 to the heading of DLH4AX")), "HDG DLH4AX 105 RIGHT")
