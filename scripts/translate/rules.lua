@@ -327,8 +327,9 @@ return function(intent, rule, words)
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
-  -- "UAL9 forget ALPHA": a waypoint of the aircraft's route left out of it
-  rule { "forget", "delwpt", when = function(g, i)
+  -- "UAL9 forget ALPHA", "Qatari 1018 delete MISOD": a waypoint of the aircraft's route, said straight
+  -- after the verb, left out of it
+  rule { "forget delete remove del", "delwpt", when = function(g, i)
     local k = g:skip_fillers(i + 1)
     local w = g:refs_in(k, k + 1, "waypoint")[1]
     if not w then return false end

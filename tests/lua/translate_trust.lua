@@ -907,3 +907,13 @@ check_eq(said(tr("increase the heading of DLH4AX by 30")), "HDG DLH4AX 120 RIGHT
 check_eq(said(tr("DLH4AX heading minus 20")), "HDG DLH4AX 70 LEFT")
 check_eq(said(tr("subtract 45 from DLH4AX's heading")), "HDG DLH4AX 45 LEFT")
 check_eq(said(tr("add 15 to the heading of DLH4AX")), "HDG DLH4AX 105 RIGHT")
+do -- a waypoint of the route said straight after "delete"/"remove" is taken off the route
+  local ds = squawk.sim.new()
+  for _, line in ipairs({ "CRE AB12 A320 52 4 090 FL200 250", "DEFWPT WP1 52.1 4.5", "ADDWPT AB12 WP1" }) do
+    check(ds:exec(line))
+  end
+  local function dt(text) return said(graph.translate(text, { sim = ds, mode = "offline" })) end
+  check_eq(dt("AB12 delete WP1"), "DELWPT AB12 WP1")
+  check_eq(dt("remove WP1 from AB12"), "DELWPT AB12 WP1")
+  check_eq(dt("delete AB12"), "DEL AB12")
+end
