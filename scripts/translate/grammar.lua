@@ -345,6 +345,8 @@ end
 
 -- Self-corrections said in words (lexicon.self_correction) become the word "correction", which the
 -- value handlers read: "reduce 270, no wait, 260" is "reduce 270 , correction , 260".
+local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
+  "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
 local function self_corrections(text)
   local sc = lexicon.self_correction
@@ -462,6 +464,14 @@ local function written_forms(text)
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
   text = text:gsub("%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
+  -- "Egyptair triple seven", "double two": a digit said twice or three times
+  text = text:gsub("%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
+    if DIGIT_WORDS[d:lower()] then return d .. " " .. d end
+    return nil
+  end):gsub("%f[%a]([Tt][Rr][Ii][Pp][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
+    if DIGIT_WORDS[d:lower()] then return d .. " " .. d .. " " .. d end
+    return nil
+  end)
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")

@@ -428,6 +428,9 @@ return function(intent, rule, words)
   rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
   rule { "details status info information state pos", "pos" }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
+  -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
+  rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
+  rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft

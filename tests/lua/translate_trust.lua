@@ -917,3 +917,16 @@ do -- a waypoint of the route said straight after "delete"/"remove" is taken off
   check_eq(dt("remove WP1 from AB12"), "DELWPT AB12 WP1")
   check_eq(dt("delete AB12"), "DEL AB12")
 end
+-- "position of X?" and "X position?" ask for its position; "triple seven" / "double two" are digits said
+-- again; "Sky Dubai" is flydubai's telephony
+check_eq(said(tr("Position of DLH4AX?")), "POS DLH4AX")
+check_eq(said(tr("BAW8CK position?")), "POS BAW8CK")
+do
+  local ms = squawk.sim.new()
+  check(ms:exec("CRE MSR777 B738 30.9 30.8 135 FL260 280"))
+  check(ms:exec("CRE FDB22 B738 25.0 56.9 250 FL280 270"))
+  local function mt(text) return said(graph.translate(text, { sim = ms, mode = "offline" })) end
+  check_eq(mt("Egyptair triple seven, climb flight level two eight zero"), "ALT MSR777 FL280")
+  check_eq(mt("Sky Dubai double two, descend flight level two four zero"), "ALT FDB22 FL240")
+  check_eq(mt("set the simulation to double speed"), "DTMULT 2")
+end
