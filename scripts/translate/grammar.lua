@@ -953,7 +953,11 @@ end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    if self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at") then
+    -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200": a constraint at a waypoint
+    local crossed = self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at")
+    local constrained = self:word(r.b - 1, "at") and self:word(r.b - 2, "constraint restriction")
+      and self:word(self:skip_fillers(r.e), "to of")
+    if crossed or constrained then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false

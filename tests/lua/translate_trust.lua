@@ -882,6 +882,7 @@ do
   check_eq(ct("AB12 cross WP1 at mach .74"), "AT AB12 WP1 SPD M0.74")
   check(ct("AB12 cross WP2 at FL150 and 240 knots"):find("^ASK") ~= nil, "WP2 is not on the route")
   check(ct("AB12 cross WP1 at FL150, 240 knots, 3000 ft"):find("^ASK") ~= nil, "two levels for one fix")
+  check_eq(ct("set the constraint at WP1 to FL160 for AB12"), "AT AB12 WP1 ALT FL160")
 end
 -- a turn or a change of speed said by its direction alone beside a complete instruction is asked
 -- about, never dropped; a compass point after "then" is a heading
