@@ -440,6 +440,9 @@ local function written_forms(text)
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
   -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own
   text = text:gsub("%s*%((%a[^()]*)%)", ", %1,")
+  -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
+  -- end) is quoted text, as in double quotes
+  text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
   -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
   -- after a setting's name, is no place)
   text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)

@@ -805,6 +805,20 @@ return function(H, f, compass)
     self.last_shape = name
   end
 
+  -- "GETWIND lat lon [alt]": the wind at a position (and level), shown
+  function m:get_wind(s)
+    local p = points(self, s.b, s.e)
+    if #p ~= 1 then return self:need("Where should I show the wind? Please give a latitude and longitude.") end
+    local cmd = "GETWIND " .. f.num(p[1][1]) .. " " .. f.num(p[1][2])
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "alt" then
+        cmd = cmd .. " " .. f.alt(self:take(q).value, q.fl)
+        break
+      end
+    end
+    self:emit(cmd)
+  end
+
   -- "BOX name lat lon lat lon [top bottom]": two corners, and the levels between which it lies
   function m:box(s)
     local name = new_name(self, s.b, s.e)

@@ -57,6 +57,7 @@ return function(intent, rule, words)
   intent "echo" { cmd = "ECHO", args = { "text" }, handler = "echo" }
   intent "wind" { cmd = "WIND", args = { "lat", "lon", "alt", "dir", "spd" }, handler = "wind", absorbs = true,
                   single = true }
+  intent "getwind" { cmd = "GETWIND", args = { "lat", "lon", "alt" }, handler = "get_wind" }
   intent "asas" { cmd = "ASAS", args = { "ON", "OFF", "STATEBASED" }, handler = "switch" }
   intent "reso" { cmd = "RESO", args = { "MVP", "OFF" }, handler = "resolution" }
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
@@ -561,6 +562,8 @@ return function(intent, rule, words)
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
+  -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
+  rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
 
   -- conflict detection and resolution

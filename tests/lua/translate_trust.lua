@@ -931,3 +931,8 @@ do
   check_eq(mt("Sky Dubai double two, descend flight level two four zero"), "ALT FDB22 FL240")
   check_eq(mt("set the simulation to double speed"), "DTMULT 2")
 end
+-- the wind at a position asked for is GETWIND; text in single quotes is quoted text
+check_eq(said(tr("what's the wind at 52.1, 4.3?")), "GETWIND 52.1 4.3")
+check_eq(said(tr("show me the wind at 52.1 4.3 at FL200")), "GETWIND 52.1 4.3 FL200")
+check_eq(said(tr("print 'run 3 started' to the log")), "ECHO run 3 started")
+check(said(tr("delete the pilots' aircraft DLH4AX")):find("^ASK") ~= nil, "an apostrophe opens no quote")
