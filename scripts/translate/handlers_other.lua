@@ -805,6 +805,28 @@ return function(H, f, compass)
     self.last_shape = name
   end
 
+  -- "PERF OPENAP" / "PERF CLASS": the performance model named; asked when none or both are
+  function m:performance(s)
+    local model
+    for k = 1, #self.t do
+      local named = nil  -- (a hyphenated word by its parts: "class-based")
+      for part in (self.t[k].kind == "word" and self.t[k].text or ""):gmatch("[^%-]+") do
+        named = named or L.perf_models[part]
+      end
+      if named then
+        if model and model ~= named then
+          return self:need("Which performance model should I use: OpenAP or the class model?")
+        end
+        model = named
+      end
+    end
+    if not model then
+      if self:asks_setting() then return self:emit("PERF") end
+      return self:need("Which performance model should I use: OpenAP or the class model?")
+    end
+    self:emit("PERF " .. model)
+  end
+
   -- "GETWIND lat lon [alt]": the wind at a position (and level), shown
   function m:get_wind(s)
     local p = points(self, s.b, s.e)

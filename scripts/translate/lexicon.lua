@@ -366,6 +366,8 @@ return {
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
   -- more of the same ("3 more random ones")
   more = { "more", "extra", "new" },
+  -- the performance models PERF selects, by the words that name them ("the simple class-based model")
+  perf_models = { openap = "OPENAP", class = "CLASS", classes = "CLASS", legacy = "CLASS", simple = "CLASS" },
   -- the colours TRAIL acid accepts
   trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words

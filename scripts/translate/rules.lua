@@ -57,6 +57,7 @@ return function(intent, rule, words)
   intent "echo" { cmd = "ECHO", args = { "text" }, handler = "echo" }
   intent "wind" { cmd = "WIND", args = { "lat", "lon", "alt", "dir", "spd" }, handler = "wind", absorbs = true,
                   single = true }
+  intent "perf" { cmd = "PERF", args = { "OPENAP", "CLASS" }, handler = "performance" }
   intent "getwind" { cmd = "GETWIND", args = { "lat", "lon", "alt" }, handler = "get_wind" }
   intent "asas" { cmd = "ASAS", args = { "ON", "OFF", "STATEBASED" }, handler = "switch" }
   intent "reso" { cmd = "RESO", args = { "MVP", "OFF" }, handler = "resolution" }
@@ -603,6 +604,10 @@ return function(intent, rule, words)
     return false
   end }
   rule { "box", "box", near = { 3, "@named" } }
+
+  -- the performance model ("switch to the simple class-based performance model", "use OpenAP")
+  rule { "performance perf", "perf", when = function(g) return g:word_in(1, #g.t + 1, "@perf_models model models") end }
+  rule { "openap", "perf", prev = { 3, "@on switch" } }
 
   -- the radar display
   rule { "trail trails", "trail" }

@@ -936,3 +936,7 @@ check_eq(said(tr("what's the wind at 52.1, 4.3?")), "GETWIND 52.1 4.3")
 check_eq(said(tr("show me the wind at 52.1 4.3 at FL200")), "GETWIND 52.1 4.3 FL200")
 check_eq(said(tr("print 'run 3 started' to the log")), "ECHO run 3 started")
 check(said(tr("delete the pilots' aircraft DLH4AX")):find("^ASK") ~= nil, "an apostrophe opens no quote")
+-- the performance model by name: PERF CLASS / PERF OPENAP; none or both named is asked
+check_eq(said(tr("switch to the class-based performance model")), "PERF CLASS")
+check_eq(said(tr("use OpenAP for the performance")), "PERF OPENAP")
+check(said(tr("change the performance model")):find("^ASK") ~= nil, "no model named")
