@@ -911,10 +911,24 @@ function G:parse(b, e)
 end
 
 -- True when the word at i asks for a change in one direction ("go left then climb FL320", "go faster
--- and climb FL320", "fly west and slow down"): with no value said that instruction is asked about,
--- never dropped beside the others.
+-- and climb FL320", "fly west and slow down", "heading 270 and climb", "speed 250, then left"): with
+-- no value said that instruction is asked about, never dropped beside the others. A climb or turn
+-- word inside another instruction ("a vertical speed for climbing", "turn the bank angle") is one only
+-- where it opens a clause of its own after another (a comma, "and" or "then" before it, or before its
+-- callsign), or is a turn side or speed direction said after "go".
 function G:change_word(i)
-  return self:word(i, "@left @right @faster_slower") or (self:word(i, "slow") and self:word(i + 1, "down"))
+  if self:word(i, "@left @right @faster_slower") and self:word(i - 1, "go") then return true end
+  if self:word(i, "slow") and self:word(i + 1, "down") and self:word(i - 1, "and then") then return true end
+  if not self:word(i, "@left @right @faster_slower @up @down turn") or self:word(i, "above below") then return false end
+  if self:word(i + 1, "@speed_units @feet") then return false end  -- ("two one, uh, turn knots": a garbled digit)
+  local k = i - 1
+  while k >= 1 do
+    local inside = false
+    for _, r in ipairs(self:refs_in(math.max(1, k - 3), k + 1, "aircraft")) do inside = inside or (r.b <= k and k < r.e) end
+    if not (inside or (self.t[k].kind == "word" and self.t[k].filler and not self:word(k, "and"))) then break end
+    k = k - 1
+  end
+  return k >= 1 and ((self.t[k].kind == "punct" and self.t[k].text ~= "'") or self:word(k, "and @then_words"))
 end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a

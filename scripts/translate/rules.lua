@@ -215,7 +215,7 @@ return function(intent, rule, words)
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
   rule { "due", "hdg", next = "@compass" }
   rule { "go turn", "hdg", next = "@compass" }
-  rule { "left right", "hdg", prev = { 1, "go bear" } }  -- "go left then climb": a turn, its heading asked
+  rule { "left right", "hdg", prev = { 1, "go bear then" } }  -- "go left then climb", "speed 250, then left": a turn
   rule { "@compass", "hdg", prev = { 1, "then" } }  -- "go up to FL320, then east"  -- "go east", "go northeast": the heading of that point
   rule { "around", false, prev = { 3, "turn" } }
 

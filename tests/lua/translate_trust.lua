@@ -940,3 +940,8 @@ check(said(tr("delete the pilots' aircraft DLH4AX")):find("^ASK") ~= nil, "an ap
 check_eq(said(tr("switch to the class-based performance model")), "PERF CLASS")
 check_eq(said(tr("use OpenAP for the performance")), "PERF OPENAP")
 check(said(tr("change the performance model")):find("^ASK") ~= nil, "no model named")
+-- an instruction with no value in a clause of its own after another is asked about, never dropped
+check(said(tr("DLH4AX heading 270 and climb")):find("^ASK What altitude") ~= nil, "the climb is asked about")
+check(said(tr("DLH4AX descend FL200 and increase speed")):find("^ASK What speed") ~= nil, "the speed is asked about")
+check(said(tr("DLH4AX speed 250, then left")):find("^ASK What heading") ~= nil, "the turn is asked about")
+check_eq(said(tr("DLH4AX climb and maintain FL320")), "ALT DLH4AX FL320")
