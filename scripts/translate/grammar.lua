@@ -921,6 +921,11 @@ function G:change_word(i)
   if self:word(i, "slow") and self:word(i + 1, "down") and self:word(i - 1, "and then") then return true end
   if not self:word(i, "@left @right @faster_slower @up @down turn") or self:word(i, "above below") then return false end
   if self:word(i + 1, "@speed_units @feet") then return false end  -- ("two one, uh, turn knots": a garbled digit)
+  -- ("climb and turn right heading 300", "turn right, climb FL320": a clause closed after the word)
+  local nx = self:word(i + 1, "@left @right") and i + 2 or i + 1
+  if self.t[nx] and ((self.t[nx].kind == "punct" and self.t[nx].text == ",") or self:word(nx, "and @then_words")) then
+    return true
+  end
   local k = i - 1
   while k >= 1 do
     local inside = false

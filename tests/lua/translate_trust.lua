@@ -945,3 +945,6 @@ check(said(tr("DLH4AX heading 270 and climb")):find("^ASK What altitude") ~= nil
 check(said(tr("DLH4AX descend FL200 and increase speed")):find("^ASK What speed") ~= nil, "the speed is asked about")
 check(said(tr("DLH4AX speed 250, then left")):find("^ASK What heading") ~= nil, "the turn is asked about")
 check_eq(said(tr("DLH4AX climb and maintain FL320")), "ALT DLH4AX FL320")
+check(said(tr("DLH4AX climb and turn right heading 300")):find("^ASK What altitude") ~= nil, "the climb is asked about")
+check(said(tr("DLH4AX turn right, descend FL200")):find("^ASK What heading") ~= nil, "the turn is asked about")
+check_eq(said(tr("DLH4AX turn left and fly heading 200")), "HDG DLH4AX 200 LEFT")
