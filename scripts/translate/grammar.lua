@@ -368,6 +368,8 @@ end
 
 -- Self-corrections said in words (lexicon.self_correction) become the word "correction", which the
 -- value handlers read: "reduce 270, no wait, 260" is "reduce 270 , correction , 260".
+local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
+  "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
 local function self_corrections(text)
   local sc = lexicon.self_correction
@@ -399,6 +401,37 @@ local function self_corrections(text)
   return table.concat(pieces)
 end
 
+-- "flight level two six zero, not two eight zero", "heading 300, not 310": a value said after "not"
+-- straight after another value is the one the speaker rules out (a readback corrected); it is dropped,
+-- with its "not", and the value before it stands.
+local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
+local function negated_values(text)
+  local toks = {}
+  for at, w, e in text:gmatch("()(%S+)()") do
+    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
+  end
+  local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
+  local pieces, from = {}, 1
+  for k, t in ipairs(toks) do
+    if t.bare == "not" and t.raw:lower() == "not" and value(toks[k - 1]) and k > from then
+      local j, numbers = k + 1, 0
+      while toks[j] and (value(toks[j]) or NEGATED_NOUNS[toks[j].bare]) do
+        if value(toks[j]) then numbers = numbers + 1 end
+        local stop = toks[j].raw:match("%p$")
+        j = j + 1
+        if stop then break end
+      end
+      if numbers > 0 then
+        local last = toks[j - 1]
+        pieces[#pieces + 1] = text:sub(from, t.at - 1) .. (last.raw:match("(%p+)$") or "")
+        from = last.e
+      end
+    end
+  end
+  pieces[#pieces + 1] = text:sub(from)
+  return table.concat(pieces)
+end
+
 -- A speaker's label before the request ("instructor: ...", "ATC here - ...", lexicon.speaker_roles) is dropped.
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 local function unlabelled(text)
@@ -422,12 +455,24 @@ local function hyphened_types(text)
 end
 
 local function written_forms(text)
-  text = hyphened_types(spelled(heard_forms(self_corrections(unlabelled(text)))))
+  text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(text))))))
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own
+  text = text:gsub("%s*%((%a[^()]*)%)", ", %1,")
+  -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
+  -- end) is quoted text, as in double quotes
+  text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
+  -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
+  -- after a setting's name, is no place)
+  text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
+    local b, a = before:lower(), after:lower()
+    if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
+    return before .. " direct " .. after
+  end)
   text = split_digits(text)
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
@@ -444,6 +489,15 @@ local function written_forms(text)
   text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
+  text = text:gsub("%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
+  -- "Egyptair triple seven", "double two": a digit said twice or three times
+  text = text:gsub("%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
+    if DIGIT_WORDS[d:lower()] then return d .. " " .. d end
+    return nil
+  end):gsub("%f[%a]([Tt][Rr][Ii][Pp][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
+    if DIGIT_WORDS[d:lower()] then return d .. " " .. d .. " " .. d end
+    return nil
+  end)
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
   text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
@@ -699,23 +753,36 @@ function G:condition()
   if not self:word(i, "@condition") then return nil, 1 end
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
-  if comma > #self.t then return nil, 1 end
+  local rest = comma + 1
+  if comma > #self.t then
+    -- "when BAW123 reaches FL300 set its speed to 260": with no comma the condition ends at its value,
+    -- a level, a speed or Mach ("once AFR1023 slows to 250": a speed by its verb), and an
+    -- instruction must follow it
+    local q = self:quantities(i, #self.t + 1)[1]
+    local by_verb = q and q.kind == "plain"
+      and self:word(self:word(q.b - 1, "to") and q.b - 2 or q.b - 1, "@speed_verbs")
+    if not q or not (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or by_verb) or not self:any_instruction_in(q.e, #self.t + 1) then
+      return nil, 1
+    end
+    comma, rest = q.e, q.e
+  end
   local ids = self:refs_in(i, comma, "aircraft")
   if #ids == 0 then return nil, 1 end
   self.subject = ids[1].name
   local f = handlers.format
   for _, q in ipairs(self:quantities(i, comma)) do
-    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), comma + 1 end
-    if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), comma + 1 end
-    if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), comma + 1 end
-    if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), comma + 1 end
+    if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), rest end
+    if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
+    if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
+    if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
+    if q.kind == "plain" and rest == q.e then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     -- "when BAW123 is 20 miles from LEKKO, ...": ATDIST [NM]
     local r = q.kind == "dist" and self:word(q.e, "from of to before")
       and self:refs_in(self:skip_fillers(q.e + 1), self:skip_fillers(q.e + 1) + 1, "waypoint")[1]
-    if r then return "ATDIST " .. self.subject .. " " .. r.name .. " " .. f.num(q.value), comma + 1 end
+    if r then return "ATDIST " .. self.subject .. " " .. r.name .. " " .. f.num(q.value), rest end
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
-  return nil, comma + 1
+  return nil, rest
 end
 
 -- ---- segments: one instruction each ----
@@ -862,7 +929,7 @@ function G:parse(b, e)
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
       -- else was understood.
-      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 then
+      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig) then
         self.pending = self.pending or self.ask
         self.ask = nil
       elseif (self:then_after(segs, k) or self:when_reached(s)) and before and #self.out == n_before + 1
@@ -873,6 +940,32 @@ function G:parse(b, e)
     end
   end
   self:direct_resumes_nav()
+end
+
+-- True when the word at i asks for a change in one direction ("go left then climb FL320", "go faster
+-- and climb FL320", "fly west and slow down", "heading 270 and climb", "speed 250, then left"): with
+-- no value said that instruction is asked about, never dropped beside the others. A climb or turn
+-- word inside another instruction ("a vertical speed for climbing", "turn the bank angle") is one only
+-- where it opens a clause of its own after another (a comma, "and" or "then" before it, or before its
+-- callsign), or is a turn side or speed direction said after "go".
+function G:change_word(i)
+  if self:word(i, "@left @right @faster_slower") and self:word(i - 1, "go") then return true end
+  if self:word(i, "slow") and self:word(i + 1, "down") and self:word(i - 1, "and then") then return true end
+  if not self:word(i, "@left @right @faster_slower @up @down turn") or self:word(i, "above below") then return false end
+  if self:word(i + 1, "@speed_units @feet") then return false end  -- ("two one, uh, turn knots": a garbled digit)
+  -- ("climb and turn right heading 300", "turn right, climb FL320": a clause closed after the word)
+  local nx = self:word(i + 1, "@left @right") and i + 2 or i + 1
+  if self.t[nx] and ((self.t[nx].kind == "punct" and self.t[nx].text == ",") or self:word(nx, "and @then_words")) then
+    return true
+  end
+  local k = i - 1
+  while k >= 1 do
+    local inside = false
+    for _, r in ipairs(self:refs_in(math.max(1, k - 3), k + 1, "aircraft")) do inside = inside or (r.b <= k and k < r.e) end
+    if not (inside or (self.t[k].kind == "word" and self.t[k].filler and not self:word(k, "and"))) then break end
+    k = k - 1
+  end
+  return k >= 1 and ((self.t[k].kind == "punct" and self.t[k].text ~= "'") or self:word(k, "and @then_words"))
 end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
@@ -914,20 +1007,35 @@ end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    if self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at") then
+    -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200": a constraint at a waypoint
+    local crossed = self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at")
+    local constrained = self:word(r.b - 1, "at") and self:word(r.b - 2, "constraint restriction")
+      and self:word(self:skip_fillers(r.e), "to of")
+    if crossed or constrained then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
       for _, w in ipairs(now and now.route or {}) do in_route = in_route or w:upper() == r.name:upper() end
-      local qs = self:quantities(r.e, s.e)
-      local q = #qs == 1 and qs[1]
+      -- "cross SUGOL at FL200", "cross SUGOL at FL200 and 250 knots": a level and a speed at most, one
+      -- AT constraint each (BlueSky's AT acid wpname ALT/SPD value)
       local f = handlers.format
-      if in_route and q and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then
-        self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(q.value, q.fl))
-        return self:take(q) ~= nil
-      elseif in_route and q and (q.kind == "speed" or q.kind == "mach") then
-        self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
-        return self:take(q) ~= nil
+      local alt, spd, other = nil, nil, false
+      for _, q in ipairs(self:quantities(r.e, s.e)) do
+        if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q
+        elseif not spd and (q.kind == "speed" or q.kind == "mach") then spd = q
+        else other = true end
+      end
+      if in_route and not other and (alt or spd) then
+        if alt then
+          self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(alt.value, alt.fl))
+          self:take(alt)
+        end
+        if spd then
+          self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD "
+            .. (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value)))
+          self:take(spd)
+        end
+        return true
       end
     end
     if self:word(r.b - 1, "at cross crossing over abeam overhead") then
@@ -1508,13 +1616,41 @@ function G:not_simulated()
   return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
 end
 
--- True when some unused word of the request still starts an instruction.
-function G:any_instruction()
+-- "maintain present level, descend when ready": a climb or descent left to the pilot's discretion
+-- with no level said after it gives no level to fly; asked (never read as the other instruction's).
+local DISCRETION = {}
+for _, p in ipairs(lexicon.discretion) do
+  local words = {}
+  for w in p:gmatch("%S+") do words[#words + 1] = (w:gsub("'s$", "")) end
+  DISCRETION[#DISCRETION + 1] = words
+end
+function G:discretion_without_level()
   for i = 1, #self.t do
+    if self:word(i, "climb descend climbing descending") then
+      local k = self:skip_fillers(i + 1)
+      for _, p in ipairs(DISCRETION) do
+        local ok = true
+        for j = 1, #p do ok = ok and self.t[k + j - 1] ~= nil and self.t[k + j - 1].text == p[j] end
+        local ids = self:refs_in(1, #self.t + 1, "aircraft")
+        -- (the level may follow in a clause of its own: "descend at pilot's discretion, maintain 12000")
+        if ok and #self:quantities(i, #self.t + 1) == 0 then
+          self.ask = string.format("To what level should %s %s? Please give a level or an altitude.",
+            #ids == 1 and ids[1].name or "the aircraft", (self.t[i].text:gsub("ing$", "")))
+          return
+        end
+      end
+    end
+  end
+end
+
+-- True when some unused word of the request (of tokens b..e-1) still starts an instruction.
+function G:any_instruction_in(b, e)
+  for i = b, e - 1 do
     if self:intent_at(i) then return true end
   end
   return false
 end
+function G:any_instruction() return self:any_instruction_in(1, #self.t + 1) end
 
 local UNDERSTOOD = "I did not understand that. Which command, aircraft and value do you mean?"
 M.not_understood = UNDERSTOOD
@@ -1605,11 +1741,23 @@ end
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
 -- number with a unit is the instruction's value, no flight number (unless an
 -- aircraft has that id); a comma keeps the callsign matcher off it.
+local SPOKEN_DIGITS = { oh = true }
+for w in pairs(NUMBER_WORDS) do SPOKEN_DIGITS[w] = true end
+for w in pairs(lexicon.phonetic) do SPOKEN_DIGITS[w] = true end  -- ("the Ryanair one Juliet Charlie")
 local AIRLINE_WORDS = {}
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
+  -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
+  -- aircraft has that id, or a number follows: "the Ryanair one two three")
+  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
+    local icao = AIRLINE_WORDS[w:lower()]
+    if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
+      return the .. w .. s1 .. "aircraft" .. s2 .. nx
+    end
+    return nil
+  end)
   return (text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
     local icao = AIRLINE_WORDS[w:lower()]
     if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then
@@ -1652,6 +1800,7 @@ function M.translate(text, world)
       for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
     end
   end
+  if not g.ask then g:discretion_without_level() end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end

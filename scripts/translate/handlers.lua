@@ -257,9 +257,16 @@ end
 -- Qantas": lexicon.airline_context). With two or more of the airline
 -- flying, airline_only asks which.
 function m:airline_refs()
+  -- ("the EZY agent": a designator in capitals the lexer took for an unknown place names its airline)
+  local function unknown_place(r)
+    return r.kind == "waypoint" and not r.exists and r.e == r.b + 1 and self.t[r.b].raw:match("^%u%u%u$")
+      and not self:word(r.e, "@navaid_kinds")
+  end
   local inside = {}
   for _, r in ipairs(self.refs) do
-    for k = r.b, r.e - 1 do inside[k] = true end
+    if not unknown_place(r) then
+      for k = r.b, r.e - 1 do inside[k] = true end
+    end
   end
   if not L.callsign_confirm.airline_alone then return end
   local i = 1
@@ -280,6 +287,11 @@ function m:airline_refs()
     if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
       self.airline_unresolved = self.airline_unresolved or {}
       table.insert(self.airline_unresolved, { b = i, e = e })
+    end
+    if #fits == 1 then
+      for k = #self.refs, 1, -1 do
+        if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+      end
     end
     i = self:insert_ref(fits, i, e, "by_airline")
   end
@@ -690,7 +702,11 @@ function m:leftovers(s)
       or function(line) self:emit(line) end
     if not self.taken[q.b] and (q.b > s.trig or (unit and s.trig > s.b)) then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
-        emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl))
+        -- "FL300 at 2000 fpm": the rate said with the level is the climb's or descent's (ALT's vspd)
+        local rate = self:quantities(q.e, math.min(#self.t + 1, q.e + 4))[1]
+        rate = rate and rate.kind == "vs" and self:skip_fillers(q.e) == rate.b - (self:word(q.e, "at") and 1 or 0)
+          and not self.taken[rate.b] and rate
+        emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl) .. (rate and " " .. f.int(math.abs(self:take(rate).value)) or ""))
         alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
         emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))

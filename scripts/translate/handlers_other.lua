@@ -113,7 +113,7 @@ return function(H, f, compass)
       end
     end
     if not hdg then
-      local h = self:find_word(s.b, s.e, "heading hdg")
+      local h = self:find_word(s.b, s.e, "heading hdg facing pointing")  -- ("facing west")
       if h + 1 < s.e and compass(self.t[h + 1].text) then
         hdg = compass(self.t[h + 1].text, h + 2 < s.e and self.t[h + 2].text or "", h + 3 < s.e and self.t[h + 3].text or "")
       end
@@ -805,6 +805,42 @@ return function(H, f, compass)
     self.last_shape = name
   end
 
+  -- "PERF OPENAP" / "PERF CLASS": the performance model named; asked when none or both are
+  function m:performance(s)
+    local model
+    for k = 1, #self.t do
+      local named = nil  -- (a hyphenated word by its parts: "class-based")
+      for part in (self.t[k].kind == "word" and self.t[k].text or ""):gmatch("[^%-]+") do
+        named = named or L.perf_models[part]
+      end
+      if named then
+        if model and model ~= named then
+          return self:need("Which performance model should I use: OpenAP or the class model?")
+        end
+        model = named
+      end
+    end
+    if not model then
+      if self:asks_setting() then return self:emit("PERF") end
+      return self:need("Which performance model should I use: OpenAP or the class model?")
+    end
+    self:emit("PERF " .. model)
+  end
+
+  -- "GETWIND lat lon [alt]": the wind at a position (and level), shown
+  function m:get_wind(s)
+    local p = points(self, s.b, s.e)
+    if #p ~= 1 then return self:need("Where should I show the wind? Please give a latitude and longitude.") end
+    local cmd = "GETWIND " .. f.num(p[1][1]) .. " " .. f.num(p[1][2])
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "alt" then
+        cmd = cmd .. " " .. f.alt(self:take(q).value, q.fl)
+        break
+      end
+    end
+    self:emit(cmd)
+  end
+
   -- "BOX name lat lon lat lon [top bottom]": two corners, and the levels between which it lies
   function m:box(s)
     local name = new_name(self, s.b, s.e)
@@ -828,13 +864,14 @@ return function(H, f, compass)
     self.last_shape = name
   end
 
-  -- "MCRE n [type [alt]]": random traffic; a type is given only when it is a known one
+  -- "MCRE n [type [alt [spd [dest]]]]": random traffic; a type is given only when it is a known one
   -- (a plural like "A320s" the lexer took for a callsign is asked about)
   function m:random_traffic(s)
-    local n, alt
+    local n, alt, spd
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.kind == "plain" and not n and q.value >= 1 and q.value <= 500 and q.value % 1 == 0 then n = self:take(q) end
       if q.kind == "alt" and not alt then alt = self:take(q) end
+      if q.kind == "speed" and not spd then spd = self:take(q) end
     end
     if not n then return self:need("How many random aircraft should I create?") end
     local types = self:refs_in(s.b, s.e, "type")
@@ -846,9 +883,10 @@ return function(H, f, compass)
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
     local cmd = "MCRE " .. f.int(n.value)
-    if #types > 0 or alt or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
-    if alt or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
-    if dest then cmd = cmd .. " * " .. dest end
+    if #types > 0 or alt or spd or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
+    if alt or spd or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
+    if spd or dest then cmd = cmd .. " " .. (spd and f.int(spd.value) or "*") end
+    if dest then cmd = cmd .. " " .. dest end
     self:emit(cmd)
   end
 
@@ -932,6 +970,27 @@ return function(H, f, compass)
     self:emit("DELWPT " .. id .. " " .. wp)
   end
 
+  -- "destination echo hotel alpha mike": an ICAO code spelled in the phonetic alphabet after the
+  -- instruction word, four letters exactly, that names an airport of the navdata (without navdata,
+  -- or with another count of letters, none)
+  local function spelled_airport(self, s)
+    local class = self.world.airport_class
+    local k = s.trig + 1
+    while k < s.e and not (self.t[k].kind == "word" and L.phonetic[self.t[k].text]) do k = k + 1 end
+    local from, code = k, ""
+    while k < s.e and self.t[k].kind == "word" and L.phonetic[self.t[k].text] and #code < 5 do
+      code, k = code .. L.phonetic[self.t[k].text], k + 1
+    end
+    if #code ~= 4 or not class or (class(code) or "") == "" then return nil end
+    self:mark_used(from, k)
+    -- the place's name said just before its code ("Athens, Lima Golf Alpha Victor")
+    local b = from - 1
+    while b > s.trig and from - b <= 4 and (self.t[b].kind == "punct" or self.t[b].raw:match("^%u%l")) do
+      self:explain(b, b + 1)
+      b = b - 1
+    end
+    return code
+  end
   local function dest_orig(self, s, cmd, what)
     local id = self:acid(s, "get it")
     if not id then return end
@@ -939,7 +998,20 @@ return function(H, f, compass)
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
-    local airport = (a and self:airport_by_name(s.b, s.e, a)) or self:airport_by_name(s.b, s.e)
+    -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant)
+    local spelled = spelled_airport(self, s)
+    local near = spelled or (a and self:airport_by_name(s.b, s.e, a))
+    local airport = near or self:airport_by_name(s.b, s.e)
+    -- an airport found by name only far from the aircraft ("London" from over the North Sea is CYXU, in
+    -- Canada: the navdata names Heathrow HEATHROW; "Athens" from over Greece is KAHN, Georgia, ATHENS BEN
+    -- EPPS): confirmed, never sent
+    local class = self.world.airport_class
+    if airport and a and a.lat and not near and class and #w == 0 then
+      local line = cmd .. " " .. id .. " " .. airport
+      self.confirm = self.confirm or { commands = { line } }
+      return self:need(string.format("The airport I found by that name is %s, more than %d NM from %s. Is that the %s? "
+        .. "(yes or no; else please give the ICAO code)", airport, L.navaid_range_nm, id, what))
+    end
     -- (two places said for one destination, "fly to PAM next, then on to Schiphol": which?)
     if airport and #w > 0 and w[#w].name:upper() ~= airport and self:airport_meant(w[#w].name, a) ~= airport then
       return self:need(string.format("Which should be the %s of %s: %s or %s?", what, id, w[#w].name, airport))
@@ -1012,7 +1084,23 @@ return function(H, f, compass)
   end
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end
-    self:emit(spec.cmd .. " " .. on_off(self, s))
+    -- "run conflict detection every 2 seconds": the interval of detection (DT ASAS); switched on too
+    -- only when said ("turn on detection every 2 seconds")
+    if spec.cmd == "ASAS" then
+      for _, q in ipairs(self:quantities(s.b, s.e)) do
+        if q.kind == "time" and self:word(q.b - 1, "every each") then
+          if self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
+          return self:emit("DT ASAS " .. f.num(self:take(q).value))
+        end
+      end
+    end
+    local state = on_off(self, s)
+    -- "enable state-based conflict detection": the method named, which is what ON switches on
+    if spec.cmd == "ASAS" and state == "ON" then
+      local k = self:find_word(1, #self.t + 1, "state statebased")
+      if k <= #self.t and (self:word(k, "statebased") or self:word(k + 1, "based")) then state = "STATEBASED" end
+    end
+    self:emit(spec.cmd .. " " .. state)
     if spec.cmd ~= "ASAS" then return end
     -- "turn on CD with 5 nm and 1000 ft": the protected zone's radius and half height
     for _, q in ipairs(self:quantities(s.trig, s.e)) do
@@ -1107,6 +1195,12 @@ return function(H, f, compass)
       return self:emit("FF " .. f.num(half))
     end
     local q = first(self, s, { time = true, mult = true })
+    -- "FF 120": TrafScript's own word with a bare number, its seconds
+    local plain = first(self, s, { plain = true })
+    if not q and self.t[s.trig].raw:upper() == "FF" and plain and plain.b == s.trig + 1 then
+      self:take(plain)
+      return self:emit("FF " .. f.num(plain.value))
+    end
     if not q then
       -- "half an hour", "a quarter of an hour": a fraction of a unit said in words
       local frac = self:find_word(s.trig + 1, s.e, "@fractions")

@@ -344,9 +344,28 @@ return function(H, f, wrap, compass)
                    number = abs_c[1].number }
       abs_c = {}
     end
+    -- "increase SAS9's heading by 30", "heading minus 20", "add 30 to the heading of SAS9", "subtract
+    -- 20 from EZY45's heading": the heading changed by an amount, more to the right, less to the left
+    if (#rel_c == 0 or (#rel_c == 1 and rel_c[1].turn == 0)) and not self:word_in(s.b, s.e, "@left @right") then
+      -- (the verb may open the segment before: "increase" alone starts a speed)
+      local vb = math.min(s.b, math.max(1, s.trig - 3))
+      local up = self:word_in(vb, s.e, "increase plus add")
+      local down = self:word_in(vb, s.e, "decrease minus subtract reduce")
+      for _, q in ipairs(up ~= down and self:quantities(s.b, s.e) or {}) do
+        if (q.kind == "plain" or q.kind == "heading" or q.kind == "angle")
+            and (self:word_in(math.max(1, q.b - 2), q.e, "by plus minus add subtract") or q.value < 0)
+            and math.abs(q.value) < 360 then
+          rel_c[1] = { kind = "angle", value = math.abs(q.value), b = q.b, e = q.e, turn = up and 1 or -1,
+                       number = q.number, changed = true }
+          abs_c = {}
+          self:take(q)
+          break
+        end
+      end
+    end
     -- "the heading of 200 degrees on the right side": an angle said as the
     -- heading is the heading, its side the direction of the turn
-    if #abs_c == 0 and #rel_c == 1 and self:preceded_by(rel_c[1].b, 2, "heading hdg") then
+    if #abs_c == 0 and #rel_c == 1 and not rel_c[1].changed and self:preceded_by(rel_c[1].b, 2, "heading hdg") then
       abs_c[1] = { kind = "heading", value = rel_c[1].value, b = rel_c[1].b, e = rel_c[1].e, number = rel_c[1].number }
       rel_c = {}
     end

@@ -29,7 +29,9 @@ return {
       "plan", "departed", "shift", "activate", "deactivate", "unpause", "start", "over", "real", "time", "half",
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
-      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz", },
+      "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
+      -- a position's labels as typed ("lat 51.95 lon 4.35"), and the random number generator a seed seeds
+      "lat", "lon", "lng", "rng", "prng", },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },
@@ -78,7 +80,9 @@ return {
         "explain", "brief", "talk", "discuss", "speak" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
-        "copied", "affirm", "affirmative", "understood", "g'day", "bye" },
+        "copied", "affirm", "affirmative", "understood", "g'day", "bye",
+        -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
+        "readback", "read-back", "incorrect", "said" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -144,6 +148,9 @@ return {
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
         "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts", },
   },
+  -- settings named before an arrow and their value ("alt -> FL330"): the arrow is no direct-to
+  direct_arrow_not = { alt = true, altitude = true, level = true, speed = true, heading = true, mach = true,
+                       vs = true, fl = true },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
   shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", spd = "speed",
@@ -151,9 +158,14 @@ return {
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
+  -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")
+  speed_verbs = { "slows", "slowed", "slow", "accelerates", "accelerated", "decelerates", "decelerated" },
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
+  -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
+  discretion = { "when ready", "when able", "when you're ready", "at pilot's discretion", "at your discretion",
+                 "at your own discretion", "at own discretion" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
   -- words after which a clause is a new instruction
@@ -169,10 +181,14 @@ return {
                       markers = { "no", "wait", "sorry", "actually", "make", "mean" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" } },
   -- the simulation itself, not an aircraft
-  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock" },
-  aircraft_nouns = { "aircraft", "plane", "airplane", "flight" },
+  -- (an episode: one run of a learning environment)
+  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode" },
+  -- (an agent: an aircraft, in a learning environment's words)
+  aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
+  counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
-  route_nouns = { "route", "plan" },
+  route_nouns = { "route", "plan", "path" },
   articles_new = { "a", "an", "new", "second", "another" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names
@@ -181,7 +197,7 @@ return {
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
   down = { "descend", "desc", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
-           "descending", "decelerate", "minus" },
+           "descending", "decelerate", "minus", "subtract" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
                        "than", "traffic", "meet", "meets", "catch" },
@@ -207,6 +223,8 @@ return {
   off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },
   off_after = { "anymore", "longer" },
   on = { "on", "enable", "activate", "show", "start", "use" },
+  -- a change of speed said by its direction alone ("go faster", "slow down")
+  faster_slower = { "faster", "slower", "accelerate", "decelerate" },
   -- turns and compass points
   left = { "left" },
   right = { "right" },
@@ -264,11 +282,17 @@ return {
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
       after_instruction = true, to_end = true },
+    -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the
+    -- pilot's planning, no clearance (lexicon.not_a_clearance)
+    { what = "expected clearances", words = "expect expecting" },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits
     { what = "orbits", words = "orbit orbits" },
     { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" } },
+    -- "turn around completely, 360 to the right", "a full circle": a turn back onto the same heading
+    { what = "orbits", words = "turn turning", near = { "completely", "circle" }, to_end = true },
+    { what = "orbits", words = "full", near = { "circle", "360", "sixty", "turn" } },
     { what = "holding patterns", words = "holding" },
     { what = "holding patterns", words = "hold",
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" } },
@@ -342,6 +366,8 @@ return {
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
   -- more of the same ("3 more random ones")
   more = { "more", "extra", "new" },
+  -- the performance models PERF selects, by the words that name them ("the simple class-based model")
+  perf_models = { openap = "OPENAP", class = "CLASS", classes = "CLASS", legacy = "CLASS", simple = "CLASS" },
   -- the colours TRAIL acid accepts
   trail_colours = { "blue", "red", "yellow" },
   -- resolution methods said in words

@@ -170,6 +170,7 @@ return {
     { "royal air maroc", "RAM" },
     { "air algerie", "DAH" },
     { "sunturk", "PGT" },
+    { "sky dubai", "FDB" },
     { "sunexpress", "SXS" },
     { "kestrel", "TCX" },
     { "monarch", "MON" },

@@ -57,7 +57,9 @@ return function(intent, rule, words)
   intent "echo" { cmd = "ECHO", args = { "text" }, handler = "echo" }
   intent "wind" { cmd = "WIND", args = { "lat", "lon", "alt", "dir", "spd" }, handler = "wind", absorbs = true,
                   single = true }
-  intent "asas" { cmd = "ASAS", args = { "ON", "OFF" }, handler = "switch" }
+  intent "perf" { cmd = "PERF", args = { "OPENAP", "CLASS" }, handler = "performance" }
+  intent "getwind" { cmd = "GETWIND", args = { "lat", "lon", "alt" }, handler = "get_wind" }
+  intent "asas" { cmd = "ASAS", args = { "ON", "OFF", "STATEBASED" }, handler = "switch" }
   intent "reso" { cmd = "RESO", args = { "MVP", "OFF" }, handler = "resolution" }
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "rfac" { cmds = { "RFACH", "RFACV" }, args = { "factor" }, handler = "reso_factor" }
@@ -83,13 +85,36 @@ return function(intent, rule, words)
   rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
+  -- "cruise at mach .79", "cruise at 280 knots": a speed, when the value after the verb is one
+  rule { "cruise", "spd", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and (q.kind == "speed" or q.kind == "mach")
+  end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "drop CHARL from united 9's route": a waypoint off the route
   rule { "drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
+  -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
+  rule { "drop", "delete", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
+      if r.b == k then
+        for x = r.e, #g.t do
+          if g.t[x].kind ~= "punct" and not g.t[x].filler and not g:word(x, "@aircraft_nouns") then return false end
+        end
+        return true
+      end
+    end
+    return false
+  end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level
+  rule { "go", "alt", next = "to", when = function(g, i)
+    local q = g:quantities(i + 2, i + 3)[1]
+    return q ~= nil and q.b == i + 2 and q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0
+  end }
   -- "kl204 up to 300", "EWG7LM up to FL320 so it ...": straight after the callsign
   rule { "up down", "alt", next = "to", not_near = { 3, "speed knots kts" }, not_prev = { 3, "speed spd" },
          when = function(g, i)
@@ -138,6 +163,11 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
     return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
+  -- "set the speed to 20 times real time": a rate of the clock, no aircraft named
+  rule { "speed", "dtmult", when = function(g, i)
+    return g:followed_by(i, 5, "times x") and g:followed_by(i, 7, "real normal")
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
@@ -164,6 +194,8 @@ return function(intent, rule, words)
   rule { "heading hdg headings", "hdg" }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn turning", "hdg" }
+  -- "rotate BAW123 30 degrees to the left", "nudge N123AB 15 degrees left": a turn by an amount
+  rule { "rotate nudge veer swing", "hdg", near = { 6, "left right degrees degree" } }
   rule { "left right", "hdg", when = function(g, i)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
@@ -180,8 +212,11 @@ return function(intent, rule, words)
   end }
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
-  rule { "point fly towards toward head send steer face", "hdg", near = { 4, "@compass" } }
+  rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
   rule { "due", "hdg", next = "@compass" }
+  rule { "go turn", "hdg", next = "@compass" }
+  rule { "left right", "hdg", prev = { 1, "go bear then" } }  -- "go left then climb", "speed 250, then left": a turn
+  rule { "@compass", "hdg", prev = { 1, "then" } }  -- "go up to FL320, then east"  -- "go east", "go northeast": the heading of that point
   rule { "around", false, prev = { 3, "turn" } }
 
   -- conflict resolution in the vertical ("let MVP use vertical speed in the resolutions", "keep
@@ -196,7 +231,7 @@ return function(intent, rule, words)
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
-  rule { "define make put", false, near = { 2, "box circle" } }  -- the shape's word starts it
+  rule { "define make put", false, near = { 2, "box circle circular" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
   -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
   -- waypoint at a position, when no aircraft that flies and no aircraft type is named
@@ -237,11 +272,22 @@ return function(intent, rule, words)
     return g:followed_by(i, 4, "@intruder")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
   end }
+  -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
+  -- aircraft with no callsign is random traffic
+  rule { "create spawn generate add sample", "mcre", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    local t = g.t[k]
+    return t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft")
+  end }
   rule { "create spawn generate creat cre", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
+  -- "append 52.6, 4.2 as a waypoint for EZY45": a position added as a waypoint of an aircraft's
+  rule { "add append insert", "addwpt", near = { 8, "@waypoint_nouns" }, when = function(g, i)
+    return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "as") and g:has_ref(i + 1, #g.t + 1, "aircraft")
+  end }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
@@ -283,6 +329,20 @@ return function(intent, rule, words)
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
+  -- "UAL9 forget ALPHA", "Qatari 1018 delete MISOD": a waypoint of the aircraft's route, said straight
+  -- after the verb, left out of it
+  rule { "forget delete remove del", "delwpt", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    local w = g:refs_in(k, k + 1, "waypoint")[1]
+    if not w then return false end
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+      local st = r.exists and g:state(r.name)
+      for _, name in ipairs(st and st.route or {}) do
+        if name:upper() == w.name:upper() then return true end
+      end
+    end
+    return false
+  end }
   rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
@@ -295,6 +355,13 @@ return function(intent, rule, words)
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dir proceed direct-to", "direct" }
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
+  -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
+  local function to_waypoint(g, i)
+    local k = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "towards toward at to")
+    return k <= #g.t and g:has_ref(g:skip_fillers(k + 1), g:skip_fillers(k + 1) + 1, "waypoint")
+  end
+  rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
+  rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
   -- ("cleared for the FMS bridge visual runway 28R": an approach clearance, not simulated)
   rule { "cleared", "direct", when = function(g, i)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
@@ -330,13 +397,18 @@ return function(intent, rule, words)
     return false
   end }
   rule { "fly", "dest", next = "to" }
-  rule { "origin departed orig", "orig" }
+  rule { "origin departed departing orig", "orig" }
   rule { "lnav", "lnav" }
+  -- "stop BAW123 following its route": its lateral navigation off
+  rule { "stop", "lnav", near = { 4, "following follow" }, when = function(g, i)
+    return g:followed_by(i, 7, "@route_nouns") and g:has_ref(i + 1, i + 4, "aircraft")
+  end }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
   rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
+  rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
@@ -355,8 +427,12 @@ return function(intent, rule, words)
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
   rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
   rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
+  rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
   rule { "details status info information state pos", "pos" }
-  rule { "position", "pos", prev = { 4, "show display see look" } }  -- "show me BAW87L's position"
+  rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
+  -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
+  rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
+  rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
   rule { "move mv reposition teleport shift place relocate", "move" }
   rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
@@ -430,6 +506,15 @@ return function(intent, rule, words)
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x twice thrice" },
          when = function(g, i) return g:followed_by(i, 3, "@sim") end }
+  -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s": a duration straight after the verb (the
+  -- sim named between, or nothing) is how far to fast-forward
+  rule { "run advance step", "ff", not_prev = { 1, "time" }, not_near = { 7, "real times faster x twice thrice" },
+         when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    if g:word(k, "@sim") then k = g:skip_fillers(k + 1) end
+    local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
+    return q ~= nil and q.b == k and q.kind == "time"
+  end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x twice thrice" } }
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
@@ -465,6 +550,9 @@ return function(intent, rule, words)
     return true
   end }
   rule { "scenario load open ic", "ic" }
+  -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
+  rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },
+         when = function(g, i) return g:has_ref(i + 1, i + 7, "aircraft") and not g:word_in(i + 1, #g.t + 1, "log") end }
   rule { "print", "echo" }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started": the text after the colon
   rule { "note log", "echo", when = function(g, i)
@@ -475,6 +563,8 @@ return function(intent, rule, words)
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
+  -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
+  rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
 
   -- conflict detection and resolution
@@ -491,9 +581,11 @@ return function(intent, rule, words)
     return false
   end }
   rule { "resolution resolve reso", "reso" }
+  -- "enable MVP", "switch to MVP": the method named alone is resolution by it
+  rule { "mvp", "reso", prev = { 3, "@on switch" } }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
-  rule { "radius", false, prev = { 12, "circle" } }  -- "a circle ... with a 20 mile radius"
+  rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected pz rpz separation zone zoner zonedh radius", "zone" }
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
@@ -504,7 +596,18 @@ return function(intent, rule, words)
   -- shapes and the deletion area ("in the area" alone names no area)
   rule { "area", "area", prev = { 2, "deletion delete experiment" } }
   rule { "circle", "circle", near = { 3, "@named" } }
+  -- "a circle ZONE1 at 52.0 4.5", "a circular area C1 around 52 4": a shape at a position
+  rule { "circle circular", "circle", when = function(g, i)
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
+      if q.kind == "lat" or (q.kind == "plain" and q.number.decimal) then return true end
+    end
+    return false
+  end }
   rule { "box", "box", near = { 3, "@named" } }
+
+  -- the performance model ("switch to the simple class-based performance model", "use OpenAP")
+  rule { "performance perf", "perf", when = function(g) return g:word_in(1, #g.t + 1, "@perf_models model models") end }
+  rule { "openap", "perf", prev = { 3, "@on switch" } }
 
   -- the radar display
   rule { "trail trails", "trail" }

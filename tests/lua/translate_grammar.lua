@@ -364,6 +364,14 @@ do -- polite sentences and hurried shorthand (round 5 and 6 classes)
   check_eq(tr("add 5 random A320s at FL300 all going to EHAM"), "MCRE 5 A320 FL300 * EHAM")
   check(asks("create six random B738s", { aircraft = { { id = "B738S", lat = 52, lon = 4 } } }), "B738S flies")
   check_eq(tr("run ahead 90 seconds"), "FF 90")
+  -- a count of aircraft with no callsign is random traffic; a duration right after "run"/"step" is FF
+  check_eq(tr("spawn 7 planes"), "MCRE 7")
+  check_eq(tr("generate 12 agents at FL200 doing 260 knots"), "MCRE 12 * FL200 260")
+  check_eq(tr("create 4 aircraft, type A321, all bound to EGLL"), "MCRE 4 A321 * * EGLL")
+  check_eq(tr("set seed 11 and step the simulation 45 seconds"), "SEED 11 ; FF 45")
+  check_eq(tr("add 3 jets then run 5 minutes"), "MCRE 3 ; FF 300")
+  check_eq(tr("HOLD then FF 90"), "HOLD ; FF 90")
+  check_eq(tr("switch to MVP please"), "RESO MVP")
   -- "it" after a definition is the waypoint just defined, and is never matched to a name
   local ww = { aircraft = w.aircraft, waypoints = { "EXIT1", "SPY" } }
   check_eq(tr("define a waypoint Q1 at 51.1, 3.1 and add it to AFR55's route", ww), "DEFWPT Q1 51.1 3.1 ; ADDWPT AFR55 Q1")

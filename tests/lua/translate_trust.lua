@@ -315,6 +315,20 @@ if #sim:airports_named("schiphol") == 1 then
   check_eq(ustr("route FDX1288 via CRI to JFK"), "ADDWPT FDX1288 CRI ; DEST FDX1288 KJFK")
   local r2 = graph.translate("route BAW12 via DTY and on to Gotham City", { sim = uk, mode = "offline" })
   check(r2.ask ~= nil and r2.ask:find("'Gotham City'", 1, true) ~= nil, said(r2))
+  -- an ICAO code spelled in the phonetic alphabet names the navdata's airport; one it lacks is asked about
+  check_eq(ukt("Speedbird 12 destination echo golf papa foxtrot"), "DEST BAW12 EGPF")
+  check_eq(ukt("set the origin of BAW12 to echo golf kilo kilo"), "ORIG BAW12 EGKK")
+  check(ukt("BAW12 destination echo xray yankee zulu"):find("^ASK") ~= nil, "no such airport")
+  -- a city whose airports the navdata names otherwise ("London": HEATHROW, GATWICK) is no far airport
+  -- that bears the name (CYXU, Ontario): that one is confirmed, never sent
+  local lr = graph.translate("BAW12 destination London", { sim = uk, mode = "offline" })
+  check(#(lr.commands or {}) == 0 and (lr.ask or ""):find("CYXU", 1, true) ~= nil, said(lr))
+  check_eq(ukt("BAW12 destination Gatwick"), "DEST BAW12 EGKK")
+  check_eq(ukt("Speedbird 12 your destination Glasgow, echo golf papa foxtrot"), "DEST BAW12 EGPF")
+  local gr = squawk.sim.new()
+  check(gr:exec("CRE AEE601 A320 38.5 23.0 090 FL300 280"))
+  local ar = graph.translate("AEE601 destination Athens", { sim = gr, mode = "offline" })
+  check(#(ar.commands or {}) == 0 and (ar.ask or ""):find("KAHN", 1, true) ~= nil, said(ar))
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
@@ -791,3 +805,146 @@ do
   check(nt("create Alaska three three one, a B739, over SPY, FL240, heading 350, 290 knots"):find("^ASK") ~= nil,
     "an aircraft that flies is not created again")
 end
+
+-- An experimenter's words (R22): an agent is an aircraft; "the DLH", an airline's designator alone,
+-- names its one aircraft flying (two KLM aircraft: asked); "go east" is a heading; "drop" an aircraft
+-- with nothing after it deletes it
+check_eq(said(tr("have the DLH agent go southwest")), "HDG DLH4AX 225")
+check(said(tr("have the KLM agent go southwest")):find("^ASK") ~= nil, "two KLM aircraft fly")
+check_eq(said(tr("BAW8CK go west, then down to FL150")), "HDG BAW8CK 270 ; ALT BAW8CK FL150")
+check_eq(said(tr("drop the DLH agent")), "DEL DLH4AX")
+check_eq(said(tr("drop BAW8CK to FL180")), "ALT BAW8CK FL180")
+-- no instruction of a line dropped: the method named with detection, a position logged after a
+-- level, a rate said with a level given without a verb; a full turn is an orbit, not a heading
+check_eq(said(tr("switch on state-based conflict detection")), "ASAS STATEBASED")
+check_eq(said(tr("DLH4AX up to FL340 and record its position")), "ALT DLH4AX FL340 ; POS DLH4AX")
+check_eq(said(tr("BAW8CK go to FL240 at 1500 fpm and 270 knots")), "ALT BAW8CK FL240 1500 ; SPD BAW8CK 270")
+r = tr("BAW8CK turn around completely, 360 to the left")
+check(#(r.commands or {}) == 0 and (r.note or ""):find("orbits", 1, true) ~= nil, said(r))
+-- a condition said with no comma ends at its value, and an instruction must follow it
+check_eq(said(tr("when DLH4AX reaches FL320 slow it to 250 knots")), "ATALT DLH4AX FL320 SPD DLH4AX 250")
+check_eq(said(tr("once BAW8CK slows to 230 turn it left heading 300")), "ATSPD BAW8CK 230 HDG BAW8CK 300 LEFT")
+check(said(tr("when DLH4AX reaches FL320")):find("^ASK") ~= nil, "a condition with nothing to do asks")
+-- a data scientist's words: a position's labels, a turn by "rotate"/"nudge", an episode, a path
+check_eq(said(tr("move DLH4AX to lat 52.5 lon 4.1")), "MOVE DLH4AX 52.5 4.1")
+check_eq(said(tr("nudge DLH4AX 20 degrees right")), "HDG DLH4AX 110 RIGHT")
+check_eq(said(tr("remove BAW8CK from this episode")), "DEL BAW8CK")
+check_eq(said(tr("dump the state of DLH4AX")), "POS DLH4AX")
+-- routes printed, places pointed at, an arrow, "the Lufthansa one", cruise at a speed, a circle at a
+-- position, a heading by "facing", the clock's rate as "times real time"
+check_eq(said(tr("print the flight plan of DLH4AX")), "LISTRTE DLH4AX")
+check_eq(said(tr("DLH4AX -> SPY")), "ADDWPT DLH4AX SPY ; DIRECT DLH4AX SPY")
+check_eq(said(tr("point the DLH at SPY")), "ADDWPT DLH4AX SPY ; DIRECT DLH4AX SPY")
+check_eq(said(tr("could the lufthansa one descend to FL260")), "ALT DLH4AX FL260")
+check(said(tr("the lufthansa one two three, descend FL260")):find("^ASK") ~= nil, "a flight number said in words")
+check_eq(said(tr("DLH4AX cruise at mach .78")), "SPD DLH4AX M0.78")
+check_eq(said(tr("make a circular area C9 around 52.2, 4.4 with a 15 nm radius")), "CIRCLE C9 52.2 4.4 15")
+check_eq(said(tr("create ABC12 A320 at 52.1 4.1 facing north at FL200 doing 250")), "CRE ABC12 A320 52.1 4.1 360 FL200 250")
+check_eq(said(tr("set the speed to 4 times real time")), "DTMULT 4")
+-- a level by "go to" and a bare thousand; a route waypoint forgotten; route following stopped; a
+-- position appended as a waypoint; a bracketed remark; an arrow after a setting's name is no direct-to
+check_eq(said(tr("BAW8CK go to 9000")), "ALT BAW8CK 9000")
+check(said(tr("BAW8CK go to 270")):find("^ASK") ~= nil, "a bare 270 after 'go to' is no level")
+check_eq(said(tr("stop DLH4AX following its flight plan")), "LNAV DLH4AX OFF")
+check_eq(said(tr("append 52.3, 4.9 as a waypoint for DLH4AX")), "ADDWPT DLH4AX 52.3 4.9")
+check_eq(said(tr("DLH4AX heading 120 (it should pass behind the KLM)")), "HDG DLH4AX 120")
+check_eq(said(tr("DLH4AX: alt -> FL310, spd -> 260")), "ALT DLH4AX FL310 ; SPD DLH4AX 260")
+do
+  local rs = squawk.sim.new()
+  check(rs:exec("CRE AB12 A320 52 4 090 FL200 250"))
+  check(rs:exec("DEFWPT WP1 52.1 4.5"))
+  check(rs:exec("DEFWPT WP2 52.2 4.8"))
+  check(rs:exec("ADDWPT AB12 WP1"))
+  local function rt(text) return said(graph.translate(text, { sim = rs, mode = "offline" })) end
+  check_eq(rt("AB12 forget WP1"), "DELWPT AB12 WP1")
+  check(rt("AB12 forget WP2"):find("^ASK") ~= nil, "a waypoint off the route is not forgotten")
+end
+-- an "expect" is information, not a clearance: named as not simulated, never a turn or a level
+r = tr("DLH4AX expect runway 27 right")
+check(#(r.commands or {}) == 0 and (r.note or ""):find("expected clearances", 1, true) ~= nil, said(r))
+r = tr("DLH4AX descend FL240, expect ILS runway 06")
+check_eq(said(r), "ALT DLH4AX FL240")
+check((r.note or ""):find("expect ILS runway 06", 1, true) ~= nil, tostring(r.note))
+-- a climb or descent left to the pilot with no level said is asked about, never dropped
+check(said(tr("DLH4AX maintain present level, descend when ready")):find("^ASK To what level should DLH4AX descend") ~= nil,
+  "a discretionary descent with no level asks")
+check(said(tr("BAW8CK climb at your discretion")):find("^ASK") ~= nil, "no level")
+check_eq(said(tr("DLH4AX descend at pilot's discretion, maintain FL240")), "ALT DLH4AX FL240")
+-- "cross FIX at ALT and SPD": one AT constraint each at a waypoint of the route; off the route, asked
+do
+  local cs = squawk.sim.new()
+  for _, line in ipairs({ "CRE AB12 A320 52 4 090 FL200 250", "DEFWPT WP1 52.1 4.5", "DEFWPT WP2 52.2 4.8",
+      "ADDWPT AB12 WP1" }) do
+    check(cs:exec(line))
+  end
+  local function ct(text) return said(graph.translate(text, { sim = cs, mode = "offline" })) end
+  check_eq(ct("AB12 cross WP1 at FL150 and 240 knots"), "AT AB12 WP1 ALT FL150 ; AT AB12 WP1 SPD 240")
+  check_eq(ct("AB12 cross WP1 at mach .74"), "AT AB12 WP1 SPD M0.74")
+  check(ct("AB12 cross WP2 at FL150 and 240 knots"):find("^ASK") ~= nil, "WP2 is not on the route")
+  check(ct("AB12 cross WP1 at FL150, 240 knots, 3000 ft"):find("^ASK") ~= nil, "two levels for one fix")
+  check_eq(ct("set the constraint at WP1 to FL160 for AB12"), "AT AB12 WP1 ALT FL160")
+end
+-- a turn or a change of speed said by its direction alone beside a complete instruction is asked
+-- about, never dropped; a compass point after "then" is a heading
+check(said(tr("DLH4AX go left then climb FL320")):find("^ASK What heading") ~= nil, "the turn is asked about")
+check(said(tr("DLH4AX go faster and descend FL200")):find("^ASK What speed") ~= nil, "the speed is asked about")
+check(said(tr("DLH4AX fly north and slow down")):find("^ASK What speed") ~= nil, "the speed is asked about")
+check_eq(said(tr("DLH4AX climb to FL320, then south")), "ALT DLH4AX FL320 ; HDG DLH4AX 180")
+check_eq(said(tr("get DLH4AX to climb to FL350 at 1000 fpm, we want a slow climb")), "ALT DLH4AX FL350 1000")
+-- a readback corrected: the value after "not" is the one ruled out, the one before it stands
+check_eq(said(tr("DLH4AX readback incorrect, descend flight level two four zero, not two three zero")), "ALT DLH4AX FL240")
+check_eq(said(tr("BAW8CK I said heading 310, not 300")), "HDG BAW8CK 310")
+check(said(tr("DLH4AX do not descend")):find("^ASK") ~= nil, "a negated instruction is never run")
+check(said(tr("DLH4AX descend FL240, not before SPY")):find("^ASK") ~= nil, "a negated condition is asked about")
+-- detection "every N seconds" is its interval (DT ASAS), switched on only when said; "call sign" is
+-- the callsign
+check_eq(said(tr("run conflict detection every 3 seconds")), "DT ASAS 3")
+check_eq(said(tr("switch on conflict detection every 5 seconds")), "ASAS ON ; DT ASAS 5")
+check_eq(said(tr("create a new aircraft, type A320, call sign TST1, at 52.0 4.0, heading 090, FL200, 250 knots")),
+  "CRE TST1 A320 52 4 90 FL200 250")
+-- a heading changed by an amount: more (increase, plus, add) turns right, less (decrease, minus,
+-- subtract) left, from the present heading (DLH4AX flies 090); never the amount as a heading
+check_eq(said(tr("increase the heading of DLH4AX by 30")), "HDG DLH4AX 120 RIGHT")
+check_eq(said(tr("DLH4AX heading minus 20")), "HDG DLH4AX 70 LEFT")
+check_eq(said(tr("subtract 45 from DLH4AX's heading")), "HDG DLH4AX 45 LEFT")
+check_eq(said(tr("add 15 to the heading of DLH4AX")), "HDG DLH4AX 105 RIGHT")
+do -- a waypoint of the route said straight after "delete"/"remove" is taken off the route
+  local ds = squawk.sim.new()
+  for _, line in ipairs({ "CRE AB12 A320 52 4 090 FL200 250", "DEFWPT WP1 52.1 4.5", "ADDWPT AB12 WP1" }) do
+    check(ds:exec(line))
+  end
+  local function dt(text) return said(graph.translate(text, { sim = ds, mode = "offline" })) end
+  check_eq(dt("AB12 delete WP1"), "DELWPT AB12 WP1")
+  check_eq(dt("remove WP1 from AB12"), "DELWPT AB12 WP1")
+  check_eq(dt("delete AB12"), "DEL AB12")
+end
+-- "position of X?" and "X position?" ask for its position; "triple seven" / "double two" are digits said
+-- again; "Sky Dubai" is flydubai's telephony
+check_eq(said(tr("Position of DLH4AX?")), "POS DLH4AX")
+check_eq(said(tr("BAW8CK position?")), "POS BAW8CK")
+do
+  local ms = squawk.sim.new()
+  check(ms:exec("CRE MSR777 B738 30.9 30.8 135 FL260 280"))
+  check(ms:exec("CRE FDB22 B738 25.0 56.9 250 FL280 270"))
+  local function mt(text) return said(graph.translate(text, { sim = ms, mode = "offline" })) end
+  check_eq(mt("Egyptair triple seven, climb flight level two eight zero"), "ALT MSR777 FL280")
+  check_eq(mt("Sky Dubai double two, descend flight level two four zero"), "ALT FDB22 FL240")
+  check_eq(mt("set the simulation to double speed"), "DTMULT 2")
+end
+-- the wind at a position asked for is GETWIND; text in single quotes is quoted text
+check_eq(said(tr("what's the wind at 52.1, 4.3?")), "GETWIND 52.1 4.3")
+check_eq(said(tr("show me the wind at 52.1 4.3 at FL200")), "GETWIND 52.1 4.3 FL200")
+check_eq(said(tr("print 'run 3 started' to the log")), "ECHO run 3 started")
+check(said(tr("delete the pilots' aircraft DLH4AX")):find("^ASK") ~= nil, "an apostrophe opens no quote")
+-- the performance model by name: PERF CLASS / PERF OPENAP; none or both named is asked
+check_eq(said(tr("switch to the class-based performance model")), "PERF CLASS")
+check_eq(said(tr("use OpenAP for the performance")), "PERF OPENAP")
+check(said(tr("change the performance model")):find("^ASK") ~= nil, "no model named")
+-- an instruction with no value in a clause of its own after another is asked about, never dropped
+check(said(tr("DLH4AX heading 270 and climb")):find("^ASK What altitude") ~= nil, "the climb is asked about")
+check(said(tr("DLH4AX descend FL200 and increase speed")):find("^ASK What speed") ~= nil, "the speed is asked about")
+check(said(tr("DLH4AX speed 250, then left")):find("^ASK What heading") ~= nil, "the turn is asked about")
+check_eq(said(tr("DLH4AX climb and maintain FL320")), "ALT DLH4AX FL320")
+check(said(tr("DLH4AX climb and turn right heading 300")):find("^ASK What altitude") ~= nil, "the climb is asked about")
+check(said(tr("DLH4AX turn right, descend FL200")):find("^ASK What heading") ~= nil, "the turn is asked about")
+check_eq(said(tr("DLH4AX turn left and fly heading 200")), "HDG DLH4AX 200 LEFT")
