@@ -359,7 +359,7 @@ local function self_corrections(text)
     local j, marked = k, false
     -- (punctuation alone, "...", belongs to the run)
     while toks[j] and (words[toks[j].bare] or toks[j].bare == "") do
-      marked = marked or markers[toks[j].bare]
+      marked = marked or markers[toks[j].bare] or (toks[j + 1] and markers[toks[j].bare .. " " .. toks[j + 1].bare])
       j = j + 1
     end
     local nxt = toks[j]
@@ -1059,12 +1059,14 @@ end
 -- that are no names (lexicon.not_names: "VFR", "RPZ"), names inside a reply
 -- about what squawk does not simulate or a reason, names passed over by a
 -- direct-to ("skip TP1 and go direct TP2") and names in an instruction only
--- announced ("expect direct X", "advise when able direct X") are explained.
+-- announced ("expect direct X", "advise when able direct X") are explained, and so are names a
+-- handler explained (a route said to go on as it does: "direct TWEED then GIRVA").
 function G:uncarried_names()
   local out = " " .. table.concat(self.out, " "):upper():gsub("[,;]", " ") .. " "
   local direct = out:find(" DIRECT ", 1, true) ~= nil
   for _, r in ipairs(self.refs) do
-    if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b] and not self:in_reason(r.b)
+    if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b]
+        and not (self.explained and self.explained[r.b]) and not self:in_reason(r.b)
         and not (direct and self:preceded_by(r.b, 3, "@passed_over"))
         and not self:preceded_by(r.b, 4, "@not_a_clearance advise") then
       local name = r.name:upper()
@@ -1404,6 +1406,23 @@ function G:opening_right()
   end
 end
 
+-- "vectors for runway zero one left", "rwy 27 right": a runway's number and the side said after it
+-- (lexicon.runway_sides) name the runway, never a value or a turn's direction ("zero one left" is no
+-- turn of 1 degree left): they are marked used and the side is made a filler.
+function G:runway_sides()
+  for i = 1, #self.t - 2 do
+    if self:word(i, "@runway") then
+      -- its number: typed ("27") or said digit by digit ("two seven", "zero one")
+      local k = i + 1
+      while k <= i + 2 and self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word) do k = k + 1 end
+      if k > i + 1 and self:word(k, "@runway_sides") then
+        self.t[k].text, self.t[k].filler = "", true
+        self:mark_used(i + 1, k + 1)
+      end
+    end
+  end
+end
+
 -- True when an aircraft is named just before token i (fillers and commas between).
 function G:callsign_before(i)
   for _, r in ipairs(self.refs) do
@@ -1603,6 +1622,7 @@ function M.translate(text, world)
   g:airline_refs()
   g:type_refs()
   g:opening_right()
+  g:runway_sides()
   local note = g:not_simulated()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end

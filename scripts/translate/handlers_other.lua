@@ -634,12 +634,24 @@ return function(H, f, compass)
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
     -- DIRECT needs the waypoint in the route: a known aircraft whose route lacks it gets it added first
     if a then
-      local in_route = false
-      for _, r in ipairs(a.route or {}) do if r:lower() == wp:lower() then in_route = true end end
+      local in_route, has = false, {}
+      for _, r in ipairs(a.route or {}) do
+        if r:lower() == wp:lower() then in_route = true end
+        has[r:upper()] = true
+      end
       if added and added:lower() == wp:lower() then in_route = true end
+      -- "after FYNER proceed direct PTH": from a waypoint of its route on, a new one: inserted after it
+      local at = self:find_word(s.b, s.trig, "after")
+      local from = at < s.trig and self:refs_in(at + 1, at + 2, "waypoint")[1]
+      if from and has[from.name:upper()] and not in_route then
+        self:explain(at, at + 1)
+        return self:emit("ADDWPT " .. a.id .. " " .. wp .. ",,," .. from.name)
+      end
       if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end
     end
     self:emit("DIRECT " .. id .. " " .. wp)
+    local to = self:route_places(s.trig, s.e)[1]
+    if to and to.name:upper() == wp:upper() then self:route_goes_on(id, wp, to.e, #self.t + 1) end
     -- a level said in the same breath without its verb ("direct LIVVN ... six thousand")
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.b > s.trig and q.kind == "alt" and q.number.thousand then
@@ -672,6 +684,25 @@ return function(H, f, compass)
       end
     end
     return out
+  end
+
+  -- "route direct TWEED then GIRVA", "after ABENI add ELTOK, then ROKNI": places said after `from` with
+  -- "then" (or a comma or "and") before each, that are the waypoints following `from` in id's route in
+  -- that order, say how the route goes on; they are explained, no instruction of their own.
+  function m:route_goes_on(id, from, b, e)
+    local route = (self:state(id) or {}).route or {}
+    local at
+    for k, w in ipairs(route) do
+      if w:upper() == from:upper() then at = k end
+    end
+    if not at then return end
+    for _, r in ipairs(self:route_places(b, e)) do
+      local sep = r.b - 1
+      if not (self:word(sep, "then and") or (self.t[sep] or {}).text == ",") then return end
+      if not route[at + 1] or route[at + 1]:upper() ~= r.name:upper() then return end
+      self:explain(sep, r.e)
+      at = at + 1
+    end
   end
 
   function m:add_waypoint(s)
@@ -719,6 +750,7 @@ return function(H, f, compass)
     if next_to then
       local after = self:word(at, "after")
       self:explain(at, at + 1)
+      if after then self:route_goes_on(id, next_to.name, math.max(at + 2, named and named.e or 0), #self.t + 1) end
       return self:emit("ADDWPT " .. id .. " " .. where .. "," .. (alt or "") .. "," .. (spd or "") .. ","
         .. (after and next_to.name or "," .. next_to.name))
     end

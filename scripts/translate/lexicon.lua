@@ -164,15 +164,16 @@ return {
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
   -- "heading 090, oh no, right heading 200"): a run of `words` between a value and the next value,
-  -- direction or value noun, holding one of `markers`, is read as "correction"
+  -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
+  -- correction, "KL204, make one orbit"), is read as "correction"
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er" },
-                      markers = { "no", "wait", "sorry", "actually", "make", "mean" },
+                      markers = { "no", "wait", "sorry", "actually", "make that", "mean" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" } },
   -- the simulation itself, not an aircraft
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock" },
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
-  route_nouns = { "route", "plan" },
+  route_nouns = { "route", "plan", "routing" },
   articles_new = { "a", "an", "new", "second", "another" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names
@@ -207,6 +208,9 @@ return {
   off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },
   off_after = { "anymore", "longer" },
   on = { "on", "enable", "activate", "show", "start", "use" },
+  -- a runway, and the sides a runway's number is said with ("runway two seven left"): part of its name
+  runway = { "runway", "rwy" },
+  runway_sides = { "left", "right", "center", "centre" },
   -- turns and compass points
   left = { "left" },
   right = { "right" },

@@ -261,9 +261,12 @@ return function(intent, rule, words)
     local it = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "it")
     return defined and it <= #g.t and g:word(it - 1, "to through via over")
   end }
-  -- "add INTOP after AMDIL": a known waypoint put next to another
-  rule { "add append insert", "addwpt", when = function(g, i)
-    return g:has_ref(i + 1, i + 2, "waypoint") and g:word(i + 2, "after before")
+  -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
+  -- next to another, the place said after "after"/"before" before or after the verb
+  rule { "add append insert route", "addwpt", when = function(g, i)
+    if not g:has_ref(i + 1, i + 2, "waypoint") then return false end
+    local at = g:find_word(1, #g.t + 1, "after before")
+    return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
   end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }

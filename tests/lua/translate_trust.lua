@@ -791,3 +791,30 @@ do
   check(nt("create Alaska three three one, a B739, over SPY, FL240, heading 350, 290 knots"):find("^ASK") ~= nil,
     "an aircraft that flies is not created again")
 end
+
+-- UK and Nordic radiotelephony (R24): a runway's side is part of its name, never a turn's direction;
+-- "make" alone is no self-correction; a waypoint put after another one of the route, the verb before
+-- or after "after X"; a route said to go on as it already does ("direct TWEED then GIRVA") is no
+-- instruction of its own, a place that does not follow so is asked about
+do
+  local setup = "DEFWPT TWEED 55.6 -2.5 ; DEFWPT GIRVA 55.2 -4.9 ; DEFWPT STIRA 56.0 -4.0 ; DEFWPT FYNER 56.1 -5.2 ; "
+    .. "DEFWPT KORAK 53.2 -8.0 ; CRE KLM1276 B738 55.4 -2.6 290 FL240 300 ; ADDWPT KLM1276 TWEED ; "
+    .. "ADDWPT KLM1276 GIRVA ; ADDWPT KLM1276 STIRA ; CRE LOG34 AT76 55.8 -4.5 320 FL110 220 ; ADDWPT LOG34 FYNER"
+  local uk = squawk.sim.new()
+  for _, line in ipairs(require("translate.nodes").split_commands(setup)) do check(uk:exec(line)) end
+  local function ut(text) return said(graph.translate(text, { sim = uk, mode = "offline", setup = setup })) end
+  check_eq(ut("KLM1276, you will get vectors for runway zero one left, turn right heading two three zero"),
+    "HDG KLM1276 230 RIGHT")
+  check_eq(ut("KLM1276 expect runway 27 right, turn left heading 180"), "HDG KLM1276 180 LEFT")
+  check_eq(ut("KLM1276 turn left heading 200, vectors ILS runway two three centre"), "HDG KLM1276 200 LEFT")
+  local r = graph.translate("KLM1276, make one left hand orbit for spacing", { sim = uk, mode = "offline", setup = setup })
+  check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
+  check_eq(ut("KLM1276 speed 250, make that 240"), "SPD KLM1276 240")
+  check_eq(ut("KLM1276, after TWEED add KORAK to your routing"), "ADDWPT KLM1276 KORAK,,,TWEED")
+  check_eq(ut("KLM1276 after GIRVA route KORAK then STIRA"), "ADDWPT KLM1276 KORAK,,,GIRVA")
+  check_eq(ut("KLM1276 route direct TWEED then GIRVA, descend flight level two zero zero"),
+    "DIRECT KLM1276 TWEED ; ALT KLM1276 FL200")
+  check_eq(ut("KLM1276 direct GIRVA then STIRA"), "DIRECT KLM1276 GIRVA")
+  check_eq(ut("KLM1276 direct TWEED then STIRA"), "ASK I have DIRECT KLM1276 TWEED. What does 'STIRA' mean?")
+  check_eq(ut("LOG34, after FYNER proceed direct KORAK"), "ADDWPT LOG34 KORAK,,,FYNER")
+end
