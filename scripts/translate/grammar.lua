@@ -966,6 +966,24 @@ local function own_unit(q)
   return q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading"
 end
 
+-- "climb FL390, not three seven zero", "heading one one zero, not one zero zero": a value after "not",
+-- straight after a value a command carries (nums) and ending its clause, says which value is not meant;
+-- true, and "not" and the value explained, when quantity q is one (qs: the quantities around it).
+function G:not_meant(q, qs, nums)
+  local n = q.b - 1
+  if not self:word(n, "not") or value_carried(q, nums) then return false end
+  local after = self.t[q.e]
+  if after and after.kind ~= "punct" then return false end
+  local p = (self.t[n - 1] or {}).text == "," and n - 1 or n
+  for _, v in ipairs(qs) do
+    if v.e == p and value_carried(v, nums) then
+      self:explain(n, q.e)
+      return true
+    end
+  end
+  return false
+end
+
 function G:unexplained(s, n_before)
   if self.leftover or not CHECKED[s.intent] then return end
   local nums = {}
@@ -980,10 +998,11 @@ function G:unexplained(s, n_before)
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     if not opened and own_unit(q) then opened = q.b end
   end
-  for _, q in ipairs(self:quantities(s.b, s.e)) do
+  local qs = self:quantities(s.b, s.e)
+  for _, q in ipairs(qs) do
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
         and q.b > corrected and ((opened and q.b > opened) or own_unit(q))
-        and not value_carried(q, nums) then
+        and not value_carried(q, nums) and not self:not_meant(q, qs, nums) then
       local b = q.b
       for _, r in ipairs(self.refs) do
         if r.kind == "aircraft" and r.e <= q.b and self:skip_fillers(r.e) == q.b then b = r.b end
@@ -1019,9 +1038,11 @@ function G:uncarried()
   end
   local corrected = 0
   for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
-  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+  local qs = self:quantities(1, #self.t + 1)
+  for _, q in ipairs(qs) do
     -- (a plain number with a decimal point is a coordinate; other plain ones are often recognition noise)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b] and not q.by and q.b > corrected and not value_carried(q, nums) then
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b] and not q.by
+        and q.b > corrected and not value_carried(q, nums) and not self:not_meant(q, qs, nums) then
       self.leftover = self:raw(q.b, q.e)
       return
     end

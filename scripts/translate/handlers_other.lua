@@ -1025,6 +1025,12 @@ return function(H, f, compass)
         and not self:word_in(1, #self.t + 1, "direct dct") then
       return self:need(string.format("%s has no route to navigate by. Which waypoint or heading should it fly?", id))
     end
+    -- "resume own navigation to MIKSI": its route resumed at that place, a direct-to (which turns LNAV on)
+    if cmd == "LNAV" and on == "ON" then
+      for _, r in ipairs(self:refs_in(s.trig + 1, s.e, "waypoint")) do
+        if self:word(r.b - 1, "to") then return self:direct(s) end
+      end
+    end
     self:emit(cmd .. " " .. id .. " " .. on)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
@@ -1197,12 +1203,13 @@ return function(H, f, compass)
       end
     end
     if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
-    local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
-    if real < s.e and self:word(real + 1, "time") then return self:emit("DTMULT 1") end
+    -- ("twice real time": the multiplier said, before "real time" alone)
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end
     end
+    local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
+    if real < s.e and self:word(real + 1, "time") then return self:emit("DTMULT 1") end
     self:need("How many times real time should the simulation run?")
   end
   function m:seed(s)

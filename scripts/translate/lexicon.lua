@@ -113,11 +113,11 @@ return {
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
         "delivery", "director", "information", "altimeter", "qnh" },
-    -- phrases that bound a value or keep it in force ("or greater", "not less than", "until further
-    -- advised"): the value is the instruction's, explained whole
+    -- phrases that bound a value, lift its bounds or keep it in force ("or greater", "not less than",
+    -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
         "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
-        "until further notice" },
+        "until further notice", "without restriction", "without restrictions" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
@@ -158,7 +158,7 @@ return {
   not_a_clearance = { "expect" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
-  correction = { "correction", "disregard" },
+  correction = { "correction", "disregard", "negative" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ..."): the label is no part of the request
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },

@@ -817,4 +817,29 @@ do
   check_eq(ut("KLM1276 direct GIRVA then STIRA"), "DIRECT KLM1276 GIRVA")
   check_eq(ut("KLM1276 direct TWEED then STIRA"), "ASK I have DIRECT KLM1276 TWEED. What does 'STIRA' mean?")
   check_eq(ut("LOG34, after FYNER proceed direct KORAK"), "ADDWPT LOG34 KORAK,,,FYNER")
+  check_eq(ut("KLM1276 resume own navigation to GIRVA"), "DIRECT KLM1276 GIRVA")
+  check_eq(ut("KLM1276 resume own navigation, climb FL300"), "LNAV KLM1276 ON ; ALT KLM1276 FL300")
+  -- a correction's verb gives the direction ("negative" as "correction"); a value after "not", straight
+  -- after the one meant and ending its clause, says which is not meant; anywhere else it is asked about
+  check_eq(ut("KLM1276 climb flight level two six zero, negative, descend, descend flight level two two zero"),
+    "ALT KLM1276 FL220")
+  check_eq(ut("KLM1276 descend FL200 correction climb FL260"), "ALT KLM1276 FL260")
+  check_eq(ut("KLM1276, negative, climb flight level three one zero, not three zero zero"), "ALT KLM1276 FL310")
+  check_eq(ut("KLM1276 it was heading one one zero, not one zero zero"), "HDG KLM1276 110")
+  check_eq(ut("KLM1276 climb FL310 not 300 speed 250"),
+    "ASK I have ALT KLM1276 FL310 ; SPD KLM1276 250. What does '300' mean?")
+  check_eq(ut("KLM1276 climb without restriction flight level three zero zero"), "ALT KLM1276 FL300")
+  check_eq(ut("KLM1276 climb FL300 without delay"), "ASK I have ALT KLM1276 FL300. What does 'without' mean?")
+  -- an aircraft shown, its route shown with the callsign said in words; the clock
+  check_eq(ut("show me KLM one two seven six"), "POS KLM1276")
+  check_eq(ut("show me KLM one two seven six's route"), "LISTRTE KLM1276")
+  check_eq(ut("jump us forward ten minutes"), "FF 600")
+  check_eq(ut("run it at twice real time"), "DTMULT 2")
+  check_eq(ut("speed it up, double"), "DTMULT 2")
+  -- a type's letters before its digits said as words ("CRJ nine"), a maker before its model ("Saab three
+  -- forty"); a new aircraft's callsign said in words before its type
+  check_eq(ut("create SAS32AB, a CRJ nine, at TWEED, flight level one zero zero, heading zero nine zero, "
+    .. "two five zero knots"), "CRE SAS32AB CRJ9 TWEED 90 FL100 250")
+  check_eq(ut("add a Loganair six two one, Saab three forty, at FYNER, flight level eight zero, heading three one "
+    .. "zero, two hundred knots"), "CRE LOG621 SF34 FYNER 310 FL80 200")
 end
