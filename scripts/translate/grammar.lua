@@ -398,6 +398,7 @@ local function hyphened_types(text)
   end))
 end
 
+local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w" })
 local function written_forms(text)
   text = hyphened_types(spelled(heard_forms(self_corrections(unlabelled(text)))))
   local sh = lexicon.shorthand
@@ -418,6 +419,14 @@ local function written_forms(text)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
+  -- a coordinate typed in digits with its point said ("55 decimal 5 north"): 55.5, only before a hemisphere
+  for _, word in ipairs({ "point", "decimal" }) do
+    local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
+    text = text:gsub("%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]", function(whole, frac, space, hemi)
+      if HEMISPHERES[hemi:lower()] then return whole .. "." .. frac .. space .. hemi end
+      return nil
+    end)
+  end
   text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")

@@ -842,4 +842,8 @@ do
     .. "two five zero knots"), "CRE SAS32AB CRJ9 TWEED 90 FL100 250")
   check_eq(ut("add a Loganair six two one, Saab three forty, at FYNER, flight level eight zero, heading three one "
     .. "zero, two hundred knots"), "CRE LOG621 SF34 FYNER 310 FL80 200")
+  -- a coordinate typed in digits with its point said, before a hemisphere; a heading's "point 5" is asked
+  check_eq(ut("create BAW9 A320 at 55 decimal 5 north 4 point 25 west heading 020 FL270 280 knots"),
+    "CRE BAW9 A320 55.5 -4.25 20 FL270 280")
+  check_eq(ut("KLM1276 heading 270 point 5"), "ASK I have HDG KLM1276 270. What does '5' mean?")
 end
