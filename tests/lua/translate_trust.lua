@@ -799,7 +799,8 @@ end
 do
   local setup = "DEFWPT TWEED 55.6 -2.5 ; DEFWPT GIRVA 55.2 -4.9 ; DEFWPT STIRA 56.0 -4.0 ; DEFWPT FYNER 56.1 -5.2 ; "
     .. "DEFWPT KORAK 53.2 -8.0 ; CRE KLM1276 B738 55.4 -2.6 290 FL240 300 ; ADDWPT KLM1276 TWEED ; "
-    .. "ADDWPT KLM1276 GIRVA ; ADDWPT KLM1276 STIRA ; CRE LOG34 AT76 55.8 -4.5 320 FL110 220 ; ADDWPT LOG34 FYNER"
+    .. "ADDWPT KLM1276 GIRVA ; ADDWPT KLM1276 STIRA ; CRE LOG34 AT76 55.8 -4.5 320 FL110 220 ; ADDWPT LOG34 FYNER ; "
+    .. "CRE WIF512 DH8D 56.3 -3.4 120 FL080 220"
   local uk = squawk.sim.new()
   for _, line in ipairs(require("translate.nodes").split_commands(setup)) do check(uk:exec(line)) end
   local function ut(text) return said(graph.translate(text, { sim = uk, mode = "offline", setup = setup })) end
@@ -833,6 +834,7 @@ do
   -- an aircraft shown, its route shown with the callsign said in words; the clock
   check_eq(ut("show me KLM one two seven six"), "POS KLM1276")
   check_eq(ut("show me KLM one two seven six's route"), "LISTRTE KLM1276")
+  check_eq(ut("show me Wideroe five one two"), "POS WIF512")  -- (Widerøe's telephony, names.lua)
   check_eq(ut("jump us forward ten minutes"), "FF 600")
   check_eq(ut("run it at twice real time"), "DTMULT 2")
   check_eq(ut("speed it up, double"), "DTMULT 2")
