@@ -838,6 +838,12 @@ do
   check_eq(ut("jump us forward ten minutes"), "FF 600")
   check_eq(ut("run it at twice real time"), "DTMULT 2")
   check_eq(ut("speed it up, double"), "DTMULT 2")
+  -- a list of commands, each clause opening with a command word, is read clause by clause; a pronoun
+  -- after the word makes it English, read whole
+  check_eq(ut("seed 7, mcre 3, ff 10 min"), "SEED 7 ; MCRE 3 ; FF 600")
+  check_eq(ut("speed it up a bit, run it at twice real time"), "DTMULT 2")
+  check(graph.command_clauses("speed it up a bit, run it at twice real time") == nil, "a pronoun after a command word")
+  check_eq(#graph.command_clauses("seed 7, mcre 3, ff 10 min"), 3)
   -- a type's letters before its digits said as words ("CRJ nine"), a maker before its model ("Saab three
   -- forty"); a new aircraft's callsign said in words before its type
   check_eq(ut("create SAS32AB, a CRJ nine, at TWEED, flight level one zero zero, heading zero nine zero, "
