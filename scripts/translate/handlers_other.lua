@@ -542,7 +542,7 @@ return function(H, f, compass)
     end
     if near and not near.lat then return nil end
     for _, placed in ipairs({ true, false }) do
-      local id = self:airport_named_in(b, e, within(named), placed)
+      local id = self:airport_named_in(b, e, within(named), placed, false, near ~= nil)
       if id then return id end
     end
     return city and self:airport_named_in(b, e, within(city), false, true) or nil
@@ -552,7 +552,10 @@ return function(H, f, compass)
   -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
   -- Capital airport": the word before is its city).
   -- (proper: only words typed with a capital, "Frankfurt")
-  function m:airport_named_in(b, e, named, placed, proper_only)
+  -- near: `named` looks near the aircraft; then a capitalised word before a name that only one airport in
+  -- the world bears, naming no airport near it itself, is the name's city ("diverting to Bergen Flesland":
+  -- FLESLAND, ENBR; "Gotham City" stays a longer name: CITY is London's and Belfast's)
+  function m:airport_named_in(b, e, named, placed, proper_only, near)
     local function proper(k)
       local t = self.t[k]
       return k > 1 and t ~= nil and t.kind == "word" and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
@@ -568,11 +571,13 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
-          local ids = ((proper(i - 1) and not city) or proper(after)) and {} or named(phrase)
+          local city_before = near and proper(i - 1) and #named(self.t[i - 1].text) == 0
+            and #self.world.airports_named(phrase) == 1
+          local ids = ((proper(i - 1) and not city and not city_before) or proper(after)) and {} or named(phrase)
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
-            self:explain((city and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            self:explain(((city and proper(i - 1)) or city_before) and i - 1 or i, city and after + 1 or after)
             return id
           end
         end

@@ -293,6 +293,13 @@ if #sim:airports_named("schiphol") == 1 then
   local function ukt(text) return said(graph.translate(text, { sim = uk, mode = "offline" })) end
   check_eq(ukt("Speedbird 12 destination Birmingham"), "DEST BAW12 EGBB")
   check_eq(ukt("Logan 5 resume own navigation direct Perth"), "ADDWPT LOG5 PTH ; DIRECT LOG5 PTH")
+  -- a city said before the name of an airport near the aircraft, naming none itself ("Bergen Flesland",
+  -- FLESLAND in the navdata); far from the aircraft the longer name is still no airport
+  local no = squawk.sim.new()
+  check(no:exec("CRE KLM1149 B738 59.4 10.8 010 FL140 290"))
+  check_eq(said(graph.translate("KLM1149 is diverting to Bergen Flesland, change his destination",
+    { sim = no, mode = "offline" })), "DEST KLM1149 ENBR")
+  check(ustr("FedEx 1288 new destination Bergen Flesland"):find("ENBR", 1, true) == nil, "far airport")
   -- a navaid's two-word name near the aircraft before an airport named by its first word ("Zurich
   -- East" is the ZUE VOR, not Zurich airport and a word more)
   local ch = squawk.sim.new()
