@@ -1028,7 +1028,8 @@ function G:dangling_correction()
   local last = #self.t
   while last > 0 and (self.t[last].kind == "punct" or self.t[last].filler) do last = last - 1 end
   if last > 0 and self:word(last, "@correction") then
-    self:need("You said 'correction' with nothing after it. What is the corrected instruction?")
+    self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
+      self.t[last].raw:lower()))
   end
 end
 

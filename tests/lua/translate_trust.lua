@@ -832,6 +832,8 @@ do
   check_eq(ut("KLM1276 climb flight level two six zero, negative, descend, descend flight level two two zero"),
     "ALT KLM1276 FL220")
   check_eq(ut("KLM1276 descend FL200 correction climb FL260"), "ALT KLM1276 FL260")
+  check_eq(ut("KLM1276 climb FL300, negative"),
+    "ASK You said 'negative' with nothing after it. What is the corrected instruction?")
   check_eq(ut("KLM1276, negative, climb flight level three one zero, not three zero zero"), "ALT KLM1276 FL310")
   check_eq(ut("KLM1276 it was heading one one zero, not one zero zero"), "HDG KLM1276 110")
   check_eq(ut("KLM1276 climb FL310 not 300 speed 250"),
