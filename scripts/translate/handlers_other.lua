@@ -710,6 +710,8 @@ return function(H, f, compass)
     end
   end
 
+  -- the instructions whose verb ends a waypoint's constraints ("add X, then climb FL300")
+  local VALUE_VERBS = { alt = true, spd = true, hdg = true, vs = true }
   function m:add_waypoint(s)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
@@ -741,6 +743,12 @@ return function(H, f, compass)
       if self:word(k, "and") and nx and nx.kind == "word" and not nx.filler and not nx.number_word
           and not self:word(k + 1, "at with to speed spd altitude alt level fl")
           and not self:refs_in(k + 1, k + 2, "waypoint")[1] then
+        upto = k
+        break
+      end
+      -- ("add KORAK to your route, after that climb FL300": the verb of a value instruction of its own;
+      -- a value's noun, "at FL300 speed 250", is the waypoint's constraint)
+      if self:word(k, "@up @down turn maintain") and VALUE_VERBS[self:intent_at(k) or ""] then
         upto = k
         break
       end

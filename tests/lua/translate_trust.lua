@@ -825,6 +825,11 @@ do
   check_eq(ut("KLM1276 direct GIRVA then STIRA"), "DIRECT KLM1276 GIRVA")
   check_eq(ut("KLM1276 direct TWEED then STIRA"), "ASK I have DIRECT KLM1276 TWEED. What does 'STIRA' mean?")
   check_eq(ut("LOG34, after FYNER proceed direct KORAK"), "ADDWPT LOG34 KORAK,,,FYNER")
+  -- a value instruction's verb after a waypoint added is no constraint of it (asked, never absorbed);
+  -- a value's noun is
+  check(ut("KLM1276 add KORAK to your route, after that climb FL300"):find("^ASK I have ADDWPT KLM1276 KORAK%.")
+    ~= nil, ut("KLM1276 add KORAK to your route, after that climb FL300"))
+  check_eq(ut("add waypoint KORAK to KLM1276 route at flight level 300 speed 250"), "ADDWPT KLM1276 KORAK FL300 250")
   check_eq(ut("KLM1276 resume own navigation to GIRVA"), "DIRECT KLM1276 GIRVA")
   check_eq(ut("KLM1276 resume own navigation, climb FL300"), "LNAV KLM1276 ON ; ALT KLM1276 FL300")
   -- a correction's verb gives the direction ("negative" as "correction"); a value after "not", straight
