@@ -384,7 +384,7 @@ local function self_corrections(text)
     local j, marked = k, false
     -- (punctuation alone, "...", belongs to the run)
     while toks[j] and (words[toks[j].bare] or toks[j].bare == "") do
-      marked = marked or markers[toks[j].bare]
+      marked = marked or markers[toks[j].bare] or (toks[j + 1] and markers[toks[j].bare .. " " .. toks[j + 1].bare])
       j = j + 1
     end
     local nxt = toks[j]
@@ -402,8 +402,9 @@ local function self_corrections(text)
 end
 
 -- "flight level two six zero, not two eight zero", "heading 300, not 310": a value said after "not"
--- straight after another value is the one the speaker rules out (a readback corrected); it is dropped,
--- with its "not", and the value before it stands.
+-- straight after another value, ending its clause, is the one the speaker rules out (a readback
+-- corrected); it is dropped, with its "not", and the value before it stands. Anywhere else ("climb FL310
+-- not 300 speed 250") the "not" stays, and is asked about.
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
 local function negated_values(text)
   local toks = {}
@@ -414,14 +415,14 @@ local function negated_values(text)
   local pieces, from = {}, 1
   for k, t in ipairs(toks) do
     if t.bare == "not" and t.raw:lower() == "not" and value(toks[k - 1]) and k > from then
-      local j, numbers = k + 1, 0
-      while toks[j] and (value(toks[j]) or NEGATED_NOUNS[toks[j].bare]) do
+      local j, numbers, stop = k + 1, 0, false
+      while toks[j] and (value(toks[j]) or (numbers == 0 and NEGATED_NOUNS[toks[j].bare])) do
         if value(toks[j]) then numbers = numbers + 1 end
-        local stop = toks[j].raw:match("%p$")
+        stop = toks[j].raw:match("%p$") ~= nil
         j = j + 1
         if stop then break end
       end
-      if numbers > 0 then
+      if numbers > 0 and (stop or not toks[j]) then
         local last = toks[j - 1]
         pieces[#pieces + 1] = text:sub(from, t.at - 1) .. (last.raw:match("(%p+)$") or "")
         from = last.e
@@ -454,6 +455,7 @@ local function hyphened_types(text)
   end))
 end
 
+local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w" })
 local function written_forms(text)
   text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(text))))))
   local sh = lexicon.shorthand
@@ -486,6 +488,14 @@ local function written_forms(text)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
     return w .. space .. digit
   end)
+  -- a coordinate typed in digits with its point said ("55 decimal 5 north"): 55.5, only before a hemisphere
+  for _, word in ipairs({ "point", "decimal" }) do
+    local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
+    text = text:gsub("%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]", function(whole, frac, space, hemi)
+      if HEMISPHERES[hemi:lower()] then return whole .. "." .. frac .. space .. hemi end
+      return nil
+    end)
+  end
   text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
@@ -1140,7 +1150,8 @@ function G:dangling_correction()
   local last = #self.t
   while last > 0 and (self.t[last].kind == "punct" or self.t[last].filler) do last = last - 1 end
   if last > 0 and self:word(last, "@correction") then
-    self:need("You said 'correction' with nothing after it. What is the corrected instruction?")
+    self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
+      self.t[last].raw:lower()))
   end
 end
 
@@ -1161,7 +1172,8 @@ function G:uncarried()
   for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; other plain ones are often recognition noise)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b] and not q.by and q.b > corrected and not value_carried(q, nums) then
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b] and not q.by
+        and q.b > corrected and not value_carried(q, nums) then
       self.leftover = self:raw(q.b, q.e)
       return
     end
@@ -1199,12 +1211,14 @@ end
 -- that are no names (lexicon.not_names: "VFR", "RPZ"), names inside a reply
 -- about what squawk does not simulate or a reason, names passed over by a
 -- direct-to ("skip TP1 and go direct TP2") and names in an instruction only
--- announced ("expect direct X", "advise when able direct X") are explained.
+-- announced ("expect direct X", "advise when able direct X") are explained, and so are names a
+-- handler explained (a route said to go on as it does: "direct TWEED then GIRVA").
 function G:uncarried_names()
   local out = " " .. table.concat(self.out, " "):upper():gsub("[,;]", " ") .. " "
   local direct = out:find(" DIRECT ", 1, true) ~= nil
   for _, r in ipairs(self.refs) do
-    if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b] and not self:in_reason(r.b)
+    if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b]
+        and not (self.explained and self.explained[r.b]) and not self:in_reason(r.b)
         and not (direct and self:preceded_by(r.b, 3, "@passed_over"))
         and not self:preceded_by(r.b, 4, "@not_a_clearance advise") then
       local name = r.name:upper()
@@ -1544,6 +1558,23 @@ function G:opening_right()
   end
 end
 
+-- "vectors for runway zero one left", "rwy 27 right": a runway's number and the side said after it
+-- (lexicon.runway_sides) name the runway, never a value or a turn's direction ("zero one left" is no
+-- turn of 1 degree left): they are marked used and the side is made a filler.
+function G:runway_sides()
+  for i = 1, #self.t - 2 do
+    if self:word(i, "@runway") then
+      -- its number: typed ("27") or said digit by digit ("two seven", "zero one")
+      local k = i + 1
+      while k <= i + 2 and self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word) do k = k + 1 end
+      if k > i + 1 and self:word(k, "@runway_sides") then
+        self.t[k].text, self.t[k].filler = "", true
+        self:mark_used(i + 1, k + 1)
+      end
+    end
+  end
+end
+
 -- True when an aircraft is named just before token i (fillers and commas between).
 function G:callsign_before(i)
   for _, r in ipairs(self.refs) do
@@ -1789,6 +1820,7 @@ function M.translate(text, world)
   g:airline_refs()
   g:type_refs()
   g:opening_right()
+  g:runway_sides()
   local note = g:not_simulated()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end

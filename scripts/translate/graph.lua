@@ -197,8 +197,10 @@ end
 
 -- "seed 7, mcre 20, ff 10 min": a list whose every comma-separated clause
 -- opens with a registry command word (name or alias; a leading "then"/"and"
--- skipped) -> the clauses, else nil.
+-- skipped) that a pronoun does not follow -> the clauses, else nil ("speed it
+-- up a bit, run it at twice real time" is English: no argument is a pronoun).
 local LINKS = { ["then"] = true, ["and"] = true }
+local PRONOUNS = require("translate.lexicon").pronouns
 function M.command_clauses(text)
   local parts = {}
   for part in (text .. ","):gmatch("([^,;]*)[,;]") do
@@ -206,6 +208,7 @@ function M.command_clauses(text)
     local first, rest = part:match("^(%S+)%s*(.*)$")
     while first and LINKS[first:lower()] do first, rest = rest:match("^(%S+)%s*(.*)$") end
     if not first or not nodes.canonical_name(first:gsub("[%p]+$", "")) then return nil end
+    if PRONOUNS[(rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")] then return nil end
     parts[#parts + 1] = first .. (rest ~= "" and (" " .. rest) or "")
   end
   return #parts >= 2 and parts or nil

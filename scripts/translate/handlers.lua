@@ -80,10 +80,19 @@ function m:values_after_trigger(s)
   return n
 end
 
--- +1 for up/more words, -1 for down/less words, 0 when none; those in the
+-- +1 for up/more words, -1 for down/less words, 0 when none; those after a correction, then those in the
 -- instruction's own clause (from the last punctuation before its trigger)
 -- first: "the Shuttle is a bit slow, could you speed it up by 40 knots" is up.
 function m:direction(s)
+  -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
+  for i = s.e - 1, s.b, -1 do
+    if self:word(i, "@correction") then
+      for k = i + 1, s.e - 1 do
+        if self:word(k, "@up") then return 1 end
+        if self:word(k, "@down") then return -1 end
+      end
+    end
+  end
   local clause = s.trig or s.b
   while clause > s.b and self.t[clause - 1].kind ~= "punct" do clause = clause - 1 end
   for _, b in ipairs({ clause, s.b }) do

@@ -542,7 +542,7 @@ return function(H, f, compass)
     end
     if near and not near.lat then return nil end
     for _, placed in ipairs({ true, false }) do
-      local id = self:airport_named_in(b, e, within(named), placed)
+      local id = self:airport_named_in(b, e, within(named), placed, false, near ~= nil)
       if id then return id end
     end
     return city and self:airport_named_in(b, e, within(city), false, true) or nil
@@ -552,7 +552,10 @@ return function(H, f, compass)
   -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
   -- Capital airport": the word before is its city).
   -- (proper: only words typed with a capital, "Frankfurt")
-  function m:airport_named_in(b, e, named, placed, proper_only)
+  -- near: `named` looks near the aircraft; then a capitalised word before a name that only one airport in
+  -- the world bears, naming no airport near it itself, is the name's city ("diverting to Bergen Flesland":
+  -- FLESLAND, ENBR; "Gotham City" stays a longer name: CITY is London's and Belfast's)
+  function m:airport_named_in(b, e, named, placed, proper_only, near)
     local function proper(k)
       local t = self.t[k]
       return k > 1 and t ~= nil and t.kind == "word" and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
@@ -568,11 +571,13 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
-          local ids = ((proper(i - 1) and not city) or proper(after)) and {} or named(phrase)
+          local city_before = near and proper(i - 1) and #named(self.t[i - 1].text) == 0
+            and #self.world.airports_named(phrase) == 1
+          local ids = ((proper(i - 1) and not city and not city_before) or proper(after)) and {} or named(phrase)
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
-            self:explain((city and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            self:explain(((city and proper(i - 1)) or city_before) and i - 1 or i, city and after + 1 or after)
             return id
           end
         end
@@ -634,12 +639,24 @@ return function(H, f, compass)
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
     -- DIRECT needs the waypoint in the route: a known aircraft whose route lacks it gets it added first
     if a then
-      local in_route = false
-      for _, r in ipairs(a.route or {}) do if r:lower() == wp:lower() then in_route = true end end
+      local in_route, has = false, {}
+      for _, r in ipairs(a.route or {}) do
+        if r:lower() == wp:lower() then in_route = true end
+        has[r:upper()] = true
+      end
       if added and added:lower() == wp:lower() then in_route = true end
+      -- "after FYNER proceed direct PTH": from a waypoint of its route on, a new one: inserted after it
+      local at = self:find_word(s.b, s.trig, "after")
+      local from = at < s.trig and self:refs_in(at + 1, at + 2, "waypoint")[1]
+      if from and has[from.name:upper()] and not in_route then
+        self:explain(at, at + 1)
+        return self:emit("ADDWPT " .. a.id .. " " .. wp .. ",,," .. from.name)
+      end
       if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end
     end
     self:emit("DIRECT " .. id .. " " .. wp)
+    local to = self:route_places(s.trig, s.e)[1]
+    if to and to.name:upper() == wp:upper() then self:route_goes_on(id, wp, to.e, #self.t + 1) end
     -- a level said in the same breath without its verb ("direct LIVVN ... six thousand")
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.b > s.trig and q.kind == "alt" and q.number.thousand then
@@ -674,6 +691,27 @@ return function(H, f, compass)
     return out
   end
 
+  -- "route direct TWEED then GIRVA", "after ABENI add ELTOK, then ROKNI": places said after `from` with
+  -- "then" (or a comma or "and") before each, that are the waypoints following `from` in id's route in
+  -- that order, say how the route goes on; they are explained, no instruction of their own.
+  function m:route_goes_on(id, from, b, e)
+    local route = (self:state(id) or {}).route or {}
+    local at
+    for k, w in ipairs(route) do
+      if w:upper() == from:upper() then at = k end
+    end
+    if not at then return end
+    for _, r in ipairs(self:route_places(b, e)) do
+      local sep = r.b - 1
+      if not (self:word(sep, "then and") or (self.t[sep] or {}).text == ",") then return end
+      if not route[at + 1] or route[at + 1]:upper() ~= r.name:upper() then return end
+      self:explain(sep, r.e)
+      at = at + 1
+    end
+  end
+
+  -- the instructions whose verb ends a waypoint's constraints ("add X, then climb FL300")
+  local VALUE_VERBS = { alt = true, spd = true, hdg = true, vs = true }
   function m:add_waypoint(s)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
@@ -708,6 +746,12 @@ return function(H, f, compass)
         upto = k
         break
       end
+      -- ("add KORAK to your route, after that climb FL300": the verb of a value instruction of its own;
+      -- a value's noun, "at FL300 speed 250", is the waypoint's constraint)
+      if self:word(k, "@up @down turn maintain") and VALUE_VERBS[self:intent_at(k) or ""] then
+        upto = k
+        break
+      end
     end
     for _, q in ipairs(qs) do
       if q.b >= upto then break end
@@ -719,6 +763,7 @@ return function(H, f, compass)
     if next_to then
       local after = self:word(at, "after")
       self:explain(at, at + 1)
+      if after then self:route_goes_on(id, next_to.name, math.max(at + 2, named and named.e or 0), #self.t + 1) end
       return self:emit("ADDWPT " .. id .. " " .. where .. "," .. (alt or "") .. "," .. (spd or "") .. ","
         .. (after and next_to.name or "," .. next_to.name))
     end
@@ -1065,6 +1110,12 @@ return function(H, f, compass)
         and not self:word_in(1, #self.t + 1, "direct dct") then
       return self:need(string.format("%s has no route to navigate by. Which waypoint or heading should it fly?", id))
     end
+    -- "resume own navigation to MIKSI": its route resumed at that place, a direct-to (which turns LNAV on)
+    if cmd == "LNAV" and on == "ON" then
+      for _, r in ipairs(self:refs_in(s.trig + 1, s.e, "waypoint")) do
+        if self:word(r.b - 1, "to") then return self:direct(s) end
+      end
+    end
     self:emit(cmd .. " " .. id .. " " .. on)
   end
   function m:lnav(s) nav(self, s, "LNAV") end
@@ -1259,12 +1310,13 @@ return function(H, f, compass)
       end
     end
     if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
-    local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
-    if real < s.e and self:word(real + 1, "time") then return self:emit("DTMULT 1") end
+    -- ("twice real time": the multiplier said, before "real time" alone)
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end
     end
+    local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
+    if real < s.e and self:word(real + 1, "time") then return self:emit("DTMULT 1") end
     self:need("How many times real time should the simulation run?")
   end
   function m:seed(s)

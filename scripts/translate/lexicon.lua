@@ -117,11 +117,11 @@ return {
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
         "delivery", "director", "information", "altimeter", "qnh" },
-    -- phrases that bound a value or keep it in force ("or greater", "not less than", "until further
-    -- advised"): the value is the instruction's, explained whole
+    -- phrases that bound a value, lift its bounds or keep it in force ("or greater", "not less than",
+    -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
         "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
-        "until further notice" },
+        "until further notice", "without restriction", "without restrictions" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
@@ -170,15 +170,16 @@ return {
   not_a_clearance = { "expect" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
-  correction = { "correction", "disregard" },
+  correction = { "correction", "disregard", "negative" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ..."): the label is no part of the request
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
   -- "heading 090, oh no, right heading 200"): a run of `words` between a value and the next value,
-  -- direction or value noun, holding one of `markers`, is read as "correction"
+  -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
+  -- correction, "KL204, make one orbit"), is read as "correction"
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er" },
-                      markers = { "no", "wait", "sorry", "actually", "make", "mean" },
+                      markers = { "no", "wait", "sorry", "actually", "make that", "mean" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" } },
   -- the simulation itself, not an aircraft
   -- (an episode: one run of a learning environment)
@@ -188,7 +189,7 @@ return {
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
-  route_nouns = { "route", "plan", "path" },
+  route_nouns = { "route", "plan", "path", "routing" },
   articles_new = { "a", "an", "new", "second", "another" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names
@@ -225,6 +226,9 @@ return {
   on = { "on", "enable", "activate", "show", "start", "use" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
+  -- a runway, and the sides a runway's number is said with ("runway two seven left"): part of its name
+  runway = { "runway", "rwy" },
+  runway_sides = { "left", "right", "center", "centre" },
   -- turns and compass points
   left = { "left" },
   right = { "right" },

@@ -41,6 +41,7 @@ return {
     { "turkish", "THY" },
     { "virgin", "VIR" },
     { "norshuttle", "NAX" },
+    { "wideroe", "WIF" },
     { "wizz air", "WZZ" },
     { "aeroflot", "AFL" },
     { "skytravel", "SKT" },

@@ -160,6 +160,10 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "speed it up a bit, run it at twice real time": the clock, no aircraft named and a multiplier said
+  rule { "speed", "dtmult", near = { 3, "up" }, when = function(g, i)
+    return not g:has_ref(1, #g.t + 1, "aircraft") and g:word_in(1, #g.t + 1, "@multipliers")
+  end }
   rule { "speed spd airspeed", "dtmult", when = function(g, i)
     return g:followed_by(i, 6, "times x") and (g:followed_by(i, 3, "@sim") or g:preceded_by(i, 2, "@sim"))
   end }
@@ -307,12 +311,21 @@ return function(intent, rule, words)
     local it = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "it")
     return defined and it <= #g.t and g:word(it - 1, "to through via over")
   end }
-  -- "add INTOP after AMDIL": a known waypoint put next to another
-  rule { "add append insert", "addwpt", when = function(g, i)
-    return g:has_ref(i + 1, i + 2, "waypoint") and g:word(i + 2, "after before")
+  -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
+  -- next to another, the place said after "after"/"before" before or after the verb
+  rule { "add append insert route", "addwpt", when = function(g, i)
+    if not g:has_ref(i + 1, i + 2, "waypoint") then return false end
+    local at = g:find_word(1, #g.t + 1, "after before")
+    return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
   end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
+  -- "add a Nor Shuttle seven seven five, Boeing 737-800, at GOTUR": a new aircraft's callsign said in
+  -- words before its type, which comes before any place
+  rule { "add put", "create", next = "@articles_new", when = function(g, i)
+    local ty = g:refs_in(i + 2, math.min(#g.t + 1, i + 12), "type")[1]
+    return ty ~= nil and not g:has_ref(i + 2, ty.b, "waypoint")
+  end }
   -- "let's start with a Ryanair 737, RYR81JC, at ...", "I'd like an easyJet A320, EZY45, over ...": a new
   -- aircraft's type and callsign after the article
   rule { "start like", "create", near = { 2, "@articles_new" }, when = function(g, i)
@@ -409,6 +422,13 @@ return function(intent, rule, words)
   rule { "vertical", "vnav", next = "profile navigation" }
   rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
+  -- "show me KLM one two seven six's route": the verb before the aircraft the route is of
+  rule { "route waypoints plan routing", "listrte", when = function(g, i)
+    for _, r in ipairs(g:refs_in(1, i, "aircraft")) do
+      if r.e == i and g:preceded_by(r.b, 3, "show list display print see") then return true end
+    end
+    return false
+  end }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
@@ -429,6 +449,12 @@ return function(intent, rule, words)
   rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
   rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
   rule { "details status info information state pos", "pos" }
+  -- "show me Wideroe five one two": an aircraft alone after the verb is shown where it is
+  rule { "show display", "pos", when = function(g, i)
+    local k = g:word(i + 1, "me us") and i + 2 or i + 1
+    local r = g:refs_in(k, k + 1, "aircraft")[1]
+    return r ~= nil and g:alone_but(i, r.e)
+  end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
@@ -497,6 +523,7 @@ return function(intent, rule, words)
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   rule { "run", "dtmult", near = { 4, "times x" } }
+  rule { "run", "dtmult", near = { 4, "@multipliers" } }  -- "run it at twice real time"
   rule { "dtmult", "dtmult" }
   rule { "start", "op", near = { 3, "@sim" } }
   rule { "run", false, when = function(g, i)  -- "run in fast time": the fast time is the instruction
@@ -522,7 +549,7 @@ return function(intent, rule, words)
       or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x"))))
   end }
   rule { "real", false, prev = { 1, "than" } }
-  rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }
+  rule { "real", "dtmult", next = "time", prev = { 1, "x times @multipliers" } }  -- ("twice real time")
   -- "slow the clock to real time": the rate the clock is set to, no start of it
   rule { "real", false, prev = { 1, "to" }, next = "time", when = function(g, i)
     return g:word_in(math.max(1, i - 6), i, "slow slower faster speed multiplier rate")
@@ -531,7 +558,7 @@ return function(intent, rule, words)
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
   rule { "skip", "ff", next = "ahead forward" }
-  rule { "jump", "ff", next = "ahead forward" }  -- "jump forward five minutes"
+  rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }

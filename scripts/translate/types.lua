@@ -82,6 +82,8 @@ local function pattern_names(d)
   if c then out[#out + 1] = { "airbus", "a220-" .. c .. "00" } end
   c = d:match("^SR(%d%d)$")
   if c then out[#out + 1] = { "cirrus", "sr" .. c } end
+  c = d:match("^SF(%d%d)$")
+  if c then out[#out + 1] = { "saab", c .. "0" } end
   if d == "E75L" or d == "E75S" then out[#out + 1] = { "embraer", "e175" }; out[#out + 1] = { "embraer", "175" } end
   return out
 end
@@ -160,12 +162,17 @@ local TENS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6"
 local LETTERS = { a = "airbus", b = "boeing", e = "embraer" }
 function M.spoken(text, built)
   if not built.known then
-    built.known = {}
+    built.known, built.makers, built.prefixes = {}, {}, {}
     for _, r in ipairs(built.types) do
       built.known[r[2]] = true
       built.known[r[1] .. " " .. r[2]] = true
+      built.makers[r[1]] = true
     end
-    for _, d in ipairs(built.designators) do built.known[d:lower()] = true end
+    for _, d in ipairs(built.designators) do
+      built.known[d:lower()] = true
+      local letters = d:lower():match("^(%a%a+)%d+$")
+      if letters then built.prefixes[letters] = true end
+    end
   end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
@@ -174,17 +181,22 @@ function M.spoken(text, built)
     local maker = LETTERS[w] and w or nil
     local lead = maker and w or ""
     local k = i + 1
-    if not maker and (w == "airbus" or w == "boeing" or w == "embraer") then
+    -- a designator's letters said before its digits ("CRJ nine" -> CRJ9): any number of digits
+    local prefix = false
+    if not maker and (w == "airbus" or w == "boeing" or w == "embraer" or built.makers[w]) then
       maker, lead = w, w .. " "
       if w == "airbus" and toks[k] and toks[k]:lower() == "a" then lead, k = "a", k + 1 end
+    elseif not maker and built.prefixes[w] then
+      maker, lead, prefix = w, w, true
     end
     local best
     if maker then
       -- the digits said after the letter, one spoken group at a time, and the name each step spells
       local digits, variant = "", nil
+      -- (a word's trailing punctuation, "nine,", ends the name and stays after it)
+      local function bare(j) return toks[j] and (toks[j]:lower():gsub("%p+$", "")) end
       while toks[k] do
-        local x = toks[k]:lower()
-        local nx = toks[k + 1] and toks[k + 1]:lower()
+        local x, nx = bare(k), toks[k]:match("%p$") == nil and bare(k + 1) or nil
         if DIGITS[x] and nx == "hundred" and #digits == 3 and not variant then
           variant, k = DIGITS[x] .. "00", k + 2
         elseif variant then
@@ -201,7 +213,9 @@ function M.spoken(text, built)
           break
         end
         local name = lead .. digits .. (variant and ("-" .. variant) or "")
-        if #digits >= 3 and built.known[name] then best = { name = name, e = k } end
+        local punct = toks[k - 1]:match("%p+$") or ""
+        if (#digits >= 3 or prefix) and built.known[name] then best = { name = name .. punct, e = k } end
+        if punct ~= "" then break end
       end
     end
     if best then return best.name, best.e end

@@ -293,6 +293,13 @@ if #sim:airports_named("schiphol") == 1 then
   local function ukt(text) return said(graph.translate(text, { sim = uk, mode = "offline" })) end
   check_eq(ukt("Speedbird 12 destination Birmingham"), "DEST BAW12 EGBB")
   check_eq(ukt("Logan 5 resume own navigation direct Perth"), "ADDWPT LOG5 PTH ; DIRECT LOG5 PTH")
+  -- a city said before the name of an airport near the aircraft, naming none itself ("Bergen Flesland",
+  -- FLESLAND in the navdata); far from the aircraft the longer name is still no airport
+  local no = squawk.sim.new()
+  check(no:exec("CRE KLM1149 B738 59.4 10.8 010 FL140 290"))
+  check_eq(said(graph.translate("KLM1149 is diverting to Bergen Flesland, change his destination",
+    { sim = no, mode = "offline" })), "DEST KLM1149 ENBR")
+  check(ustr("FedEx 1288 new destination Bergen Flesland"):find("ENBR", 1, true) == nil, "far airport")
   -- a navaid's two-word name near the aircraft before an airport named by its first word ("Zurich
   -- East" is the ZUE VOR, not Zurich airport and a word more)
   local ch = squawk.sim.new()
@@ -948,3 +955,73 @@ check_eq(said(tr("DLH4AX climb and maintain FL320")), "ALT DLH4AX FL320")
 check(said(tr("DLH4AX climb and turn right heading 300")):find("^ASK What altitude") ~= nil, "the climb is asked about")
 check(said(tr("DLH4AX turn right, descend FL200")):find("^ASK What heading") ~= nil, "the turn is asked about")
 check_eq(said(tr("DLH4AX turn left and fly heading 200")), "HDG DLH4AX 200 LEFT")
+-- UK and Nordic radiotelephony (R24): a runway's side is part of its name, never a turn's direction;
+-- "make" alone is no self-correction; a waypoint put after another one of the route, the verb before
+-- or after "after X"; a route said to go on as it already does ("direct TWEED then GIRVA") is no
+-- instruction of its own, a place that does not follow so is asked about
+do
+  local setup = "DEFWPT TWEED 55.6 -2.5 ; DEFWPT GIRVA 55.2 -4.9 ; DEFWPT STIRA 56.0 -4.0 ; DEFWPT FYNER 56.1 -5.2 ; "
+    .. "DEFWPT KORAK 53.2 -8.0 ; CRE KLM1276 B738 55.4 -2.6 290 FL240 300 ; ADDWPT KLM1276 TWEED ; "
+    .. "ADDWPT KLM1276 GIRVA ; ADDWPT KLM1276 STIRA ; CRE LOG34 AT76 55.8 -4.5 320 FL110 220 ; ADDWPT LOG34 FYNER ; "
+    .. "CRE WIF512 DH8D 56.3 -3.4 120 FL080 220"
+  local uk = squawk.sim.new()
+  for _, line in ipairs(require("translate.nodes").split_commands(setup)) do check(uk:exec(line)) end
+  local function ut(text) return said(graph.translate(text, { sim = uk, mode = "offline", setup = setup })) end
+  check_eq(ut("KLM1276, you will get vectors for runway zero one left, turn right heading two three zero"),
+    "HDG KLM1276 230 RIGHT")
+  check_eq(ut("KLM1276 expect runway 27 right, turn left heading 180"), "HDG KLM1276 180 LEFT")
+  check_eq(ut("KLM1276 turn left heading 200, vectors ILS runway two three centre"), "HDG KLM1276 200 LEFT")
+  local r = graph.translate("KLM1276, make one left hand orbit for spacing", { sim = uk, mode = "offline", setup = setup })
+  check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
+  check_eq(ut("KLM1276 speed 250, make that 240"), "SPD KLM1276 240")
+  check_eq(ut("KLM1276, after TWEED add KORAK to your routing"), "ADDWPT KLM1276 KORAK,,,TWEED")
+  check_eq(ut("KLM1276 after GIRVA route KORAK then STIRA"), "ADDWPT KLM1276 KORAK,,,GIRVA")
+  check_eq(ut("KLM1276 route direct TWEED then GIRVA, descend flight level two zero zero"),
+    "DIRECT KLM1276 TWEED ; ALT KLM1276 FL200")
+  check_eq(ut("KLM1276 direct GIRVA then STIRA"), "DIRECT KLM1276 GIRVA")
+  check_eq(ut("KLM1276 direct TWEED then STIRA"), "ASK I have DIRECT KLM1276 TWEED. What does 'STIRA' mean?")
+  check_eq(ut("LOG34, after FYNER proceed direct KORAK"), "ADDWPT LOG34 KORAK,,,FYNER")
+  -- a value instruction's verb after a waypoint added is no constraint of it (asked, never absorbed);
+  -- a value's noun is
+  check(ut("KLM1276 add KORAK to your route, after that climb FL300"):find("^ASK I have ADDWPT KLM1276 KORAK%.")
+    ~= nil, ut("KLM1276 add KORAK to your route, after that climb FL300"))
+  check_eq(ut("add waypoint KORAK to KLM1276 route at flight level 300 speed 250"), "ADDWPT KLM1276 KORAK FL300 250")
+  check_eq(ut("KLM1276 resume own navigation to GIRVA"), "DIRECT KLM1276 GIRVA")
+  check_eq(ut("KLM1276 resume own navigation, climb FL300"), "LNAV KLM1276 ON ; ALT KLM1276 FL300")
+  -- a correction's verb gives the direction ("negative" as "correction"); a value after "not", straight
+  -- after the one meant and ending its clause, says which is not meant; anywhere else it is asked about
+  check_eq(ut("KLM1276 climb flight level two six zero, negative, descend, descend flight level two two zero"),
+    "ALT KLM1276 FL220")
+  check_eq(ut("KLM1276 descend FL200 correction climb FL260"), "ALT KLM1276 FL260")
+  check_eq(ut("KLM1276 climb FL300, negative"),
+    "ASK You said 'negative' with nothing after it. What is the corrected instruction?")
+  check_eq(ut("KLM1276, negative, climb flight level three one zero, not three zero zero"), "ALT KLM1276 FL310")
+  check_eq(ut("KLM1276 it was heading one one zero, not one zero zero"), "HDG KLM1276 110")
+  check_eq(ut("KLM1276 climb FL310 not 300 speed 250"),
+    "ASK I have ALT KLM1276 FL310 ; SPD KLM1276 250. What does '300' mean?")
+  check_eq(ut("KLM1276 climb without restriction flight level three zero zero"), "ALT KLM1276 FL300")
+  check_eq(ut("KLM1276 climb FL300 without delay"), "ASK I have ALT KLM1276 FL300. What does 'without' mean?")
+  -- an aircraft shown, its route shown with the callsign said in words; the clock
+  check_eq(ut("show me KLM one two seven six"), "POS KLM1276")
+  check_eq(ut("show me KLM one two seven six's route"), "LISTRTE KLM1276")
+  check_eq(ut("show me Wideroe five one two"), "POS WIF512")  -- (Widerøe's telephony, names.lua)
+  check_eq(ut("jump us forward ten minutes"), "FF 600")
+  check_eq(ut("run it at twice real time"), "DTMULT 2")
+  check_eq(ut("speed it up, double"), "DTMULT 2")
+  -- a list of commands, each clause opening with a command word, is read clause by clause; a pronoun
+  -- after the word makes it English, read whole
+  check_eq(ut("seed 7, mcre 3, ff 10 min"), "SEED 7 ; MCRE 3 ; FF 600")
+  check_eq(ut("speed it up a bit, run it at twice real time"), "DTMULT 2")
+  check(graph.command_clauses("speed it up a bit, run it at twice real time") == nil, "a pronoun after a command word")
+  check_eq(#graph.command_clauses("seed 7, mcre 3, ff 10 min"), 3)
+  -- a type's letters before its digits said as words ("CRJ nine"), a maker before its model ("Saab three
+  -- forty"); a new aircraft's callsign said in words before its type
+  check_eq(ut("create SAS32AB, a CRJ nine, at TWEED, flight level one zero zero, heading zero nine zero, "
+    .. "two five zero knots"), "CRE SAS32AB CRJ9 TWEED 90 FL100 250")
+  check_eq(ut("add a Loganair six two one, Saab three forty, at FYNER, flight level eight zero, heading three one "
+    .. "zero, two hundred knots"), "CRE LOG621 SF34 FYNER 310 FL80 200")
+  -- a coordinate typed in digits with its point said, before a hemisphere; a heading's "point 5" is asked
+  check_eq(ut("create BAW9 A320 at 55 decimal 5 north 4 point 25 west heading 020 FL270 280 knots"),
+    "CRE BAW9 A320 55.5 -4.25 20 FL270 280")
+  check_eq(ut("KLM1276 heading 270 point 5"), "ASK I have HDG KLM1276 270. What does '5' mean?")
+end
