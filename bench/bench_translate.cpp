@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--reps" && i + 1 < argc) reps = std::max(1, std::atoi(argv[++i]));
-    else if (a == "--slowest" && i + 1 < argc) slowest = std::max(0, std::atoi(argv[++i]));
+    else if (a == "--slowest" && i + 1 < argc)
+      slowest = std::max(0, std::atoi(argv[++i]));
     else paths.push_back(a);
   }
   if (paths.empty())
