@@ -1090,10 +1090,16 @@ know_all(lexicon, {})
 know_all(names.airlines, {})
 know_all(names.common or {}, {})
 know_all(TYPES.types, {})
+-- A registry command's name or alias that no rule or list knows ("rmethv"), by its lower-case
+-- word: the command's lower-case name. Said in English, it is accounted for only by its command.
+-- (lexicon.english_command_names, known above, are English words first.)
+local COMMAND_ONLY = {}
 for _, c in ipairs(squawk.sim.commands()) do
-  know(c.name)
-  for _, a in ipairs(c.aliases or {}) do know(a) end
+  for _, w in ipairs({ c.name, table.unpack(c.aliases or {}) }) do
+    if not KNOWN[w:lower()] then COMMAND_ONLY[w:lower()] = c.name:lower() end
+  end
 end
+for w, name in pairs(COMMAND_ONLY) do know(w) know(name) end
 -- the courtesy and value phrases by their first word, each as its words in the lexer's form ("it's" is "it")
 local PHRASES = {}
 for _, list in ipairs({ ACCOUNTED.courtesy_phrases, ACCOUNTED.value_phrases }) do
@@ -1293,7 +1299,7 @@ function G:unaccounted()
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and (MEANING[t.text] or not known_word(t.text)) then
+        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text)) then
       said[#said + 1] = i
     end
   end
@@ -1302,7 +1308,7 @@ function G:unaccounted()
   local inside = self:explained_spans(issued, kinds)
   for _, i in ipairs(said) do
     local t = self.t[i]
-    if not inside[i] and not issued[t.text] and not self:in_reason(i)
+    if not inside[i] and not issued[COMMAND_ONLY[t.text] or t.text] and not self:in_reason(i)
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end

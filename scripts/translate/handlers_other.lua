@@ -568,7 +568,9 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
-          local ids = ((proper(i - 1) and not city) or proper(after)) and {} or named(phrase)
+          -- ("Eelde VOR" is the navaid, not the airport that bears its name)
+          local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")) and {}
+            or named(phrase)
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
@@ -1164,12 +1166,22 @@ return function(H, f, compass)
         return self:emit("DTMULT " .. f.num(x))
       end
     end
-    if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
-    local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
-    if real < s.e and self:word(real + 1, "time") then return self:emit("DTMULT 1") end
+    -- ("at twice real time": the multiplier said in words, before real time alone)
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end
+    end
+    if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
+    local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
+    if real < s.e and self:word(real + 1, "time") then
+      -- "N times real time": the factor said before the segment's "real"
+      for _, q in ipairs(self:word(real - 1, "times x") and self:quantities(real - 2, real - 1) or {}) do
+        if not self.taken[q.b] and (q.kind == "plain" or q.kind == "mult") then
+          self:take(q)
+          return self:emit("DTMULT " .. f.num(q.value))
+        end
+      end
+      return self:emit("DTMULT 1")
     end
     self:need("How many times real time should the simulation run?")
   end

@@ -30,6 +30,11 @@ return {
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
       "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz", },
+  -- registry command names that are everyday English words ("a delay", "the line"): said in a
+  -- sentence they name no command; any other registry name said ("rmethv") names its command
+  english_command_names = { "after", "area", "at", "bank", "before", "box", "call", "circle", "delay", "help",
+      "hold", "line", "lines", "noise", "run", "start", "wind", "trail", "trails", "load", "open", "continue",
+      "polygon", "reset", "seed", "echo", "perf" },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },

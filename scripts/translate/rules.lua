@@ -434,9 +434,11 @@ return function(intent, rule, words)
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
-      or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x"))))
+      or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x times"))))
   end }
   rule { "real", false, prev = { 1, "than" } }
+  -- ("resume at 5 times real time": the rate of the resume, read by it)
+  rule { "real", false, prev = { 1, "x times" }, when = function(g, i) return g:preceded_by(i, 7, "continue resume") end }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times" } }
   -- "slow the clock to real time": the rate the clock is set to, no start of it
   rule { "real", false, prev = { 1, "to" }, next = "time", when = function(g, i)
