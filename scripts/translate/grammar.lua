@@ -483,6 +483,7 @@ function G:in_reason(i)
   for k = i - 1, 1, -1 do
     local t = self.t[k]
     if t.kind == "punct" and t.text ~= "," then return false end
+    if self:purpose(k) then return true end
     -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
     if t.kind == "punct" and self:word(k + 1, "@then_words") then return false end
     if self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then return true end
@@ -1122,6 +1123,28 @@ local AIRPORT_NOUNS = set_of(lexicon.airport_nouns)
 local PERSONS = set_of({ "i", "we", "you", "i've", "we've", "you've", "i'm", "we're", "you're" })
 local SUBJECTS = set_of(ACCOUNTED.pronouns)
 for _, w in ipairs(ACCOUNTED.articles) do SUBJECTS[w] = true end
+
+-- True when "to" (or a modal) at k opens the purpose of the instruction before it ("descend FL240 to put it at the
+-- same level as KLM1234", "hdg 120 to close on TRA5GK"): after a value, before a verb no rule or list
+-- knows, typed in lower case (no value, name, code or instruction word), with no value in its clause.
+function G:purpose(k)
+  -- ("UAL9 heading 150 - should converge with KLM1877": what should follow, after the value or a dash)
+  local pv = self.t[k - 1]
+  if self:word(k, "@purpose_modals") and pv and (pv.kind == "punct" or #self:quantities(k - 1, k) > 0) then
+    return true
+  end
+  if not self:word(k, "to") then return false end
+  local nx = self.t[k + 1]
+  if not nx or nx.kind ~= "word" or not nx.alpha or nx.number_word or KNOWN[nx.text] or not nx.raw:match("^%l+$")
+      or #self:refs_in(k + 1, k + 2) > 0 then
+    return false
+  end
+  -- a value said before it, none in its clause
+  local e = k + 1
+  while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+  local before = self:quantities(1, k)
+  return #before > 0 and before[#before].e <= k and #self:quantities(k, e) == 0
+end
 local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELAY = true, SCHEDULE = true }
 
 -- The forms a word may be inflected from or to ("keeping" keep, "switched" switch, "pass" passing).

@@ -136,6 +136,24 @@ function m:acids(s)
       break
     end
   end
+  -- with the addressee named before the instruction ("DLH4AX descend FL240 to put it at the same level
+  -- as KLM1234", "UAL9 heading 150 - should converge with KLM1877"), a callsign said after the
+  -- instruction's last value with words of a clause between is context, never instructed
+  local addressed = false
+  for _, r in ipairs(self:refs_in(s.b, s.trig, "aircraft")) do
+    if r.exists and not self:as_context(r.b) then addressed = true end
+  end
+  local last_q = qs[#qs]
+  if addressed and last_q and last_q.b > s.trig and upto > last_q.e then
+    for _, r in ipairs(self:refs_in(last_q.e, upto, "aircraft")) do
+      local clause = false
+      for i = last_q.e, r.b - 1 do
+        local t = self.t[i]
+        if t.kind == "word" and not t.filler and not self:word(i, "and") then clause = true end
+      end
+      if clause then upto = last_q.e break end
+    end
+  end
   take(s.trig, upto)
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)

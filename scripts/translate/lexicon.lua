@@ -197,6 +197,8 @@ return {
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause", "due" },
   reason_after_so = { "that", "it", "they", "it's", "its", "we" },
+  -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
+  purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
       "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz" },
