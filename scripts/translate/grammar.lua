@@ -705,6 +705,19 @@ function G:segments(b, e)
   end
   local segs = {}
   if #trig == 0 then return { { intent = "infer", b = b, trig = b, e = e } } end
+  -- "KLM601 FL210, then ff 4 min": a callsign and a value with its own unit, a clause before the first
+  -- instruction word, are an instruction of their own
+  local qs = self:quantities(b, trig[1].pos)
+  local own = qs[1] and (qs[#qs].kind == "alt" and qs[#qs].fl or qs[#qs].kind == "speed" or qs[#qs].kind == "mach"
+    or qs[#qs].kind == "heading")
+  if own and self:has_ref(b, qs[1].b, "aircraft") and not self:word_in(b, trig[1].pos, "@level_condition @condition") then
+    for k = qs[#qs].e, trig[1].pos - 1 do
+      if self.t[k].kind == "punct" or self:word(k, "@then_words") then
+        segs[1] = { intent = "infer", b = b, trig = b, e = k }
+        break
+      end
+    end
+  end
   for k, tr in ipairs(trig) do
     local last = segs[#segs]
     local this = M.intents[tr.intent]
@@ -771,6 +784,15 @@ function G:split_ellipsis(segs)
         if r.exists and #before > 0 and own(before[#before]) and own(after[1]) and after[1].b == self:skip_fillers(r.e) then
           cur.e = r.b
           cur = { intent = "infer", b = r.b, trig = r.b, e = e }
+          out[#out + 1] = cur
+        end
+      end
+      -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" after values starts one for the two
+      for i = s.b + 1, e - 1 do
+        local after = self:quantities(i, e)
+        if self:word(i, "both") and #self:quantities(cur.b, i) > 0 and after[1] and after[1].b == self:skip_fillers(i + 1) then
+          cur.e = i
+          cur = { intent = "infer", b = i, trig = i, e = e }
           out[#out + 1] = cur
         end
       end

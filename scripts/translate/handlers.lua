@@ -157,6 +157,20 @@ function m:acids(s)
   take(s.trig, upto)
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
+  -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" names the two aircraft instructed before
+  if #ids == 0 and self:word_in(s.b, s.e, "both") then
+    local named = {}
+    for _, r in ipairs(self:refs_in(1, s.b, "aircraft")) do
+      if r.exists and not seen[r.name] and not r.false_start and not self:as_context(r.b) and not self:in_reason(r.b) then
+        seen[r.name] = true
+        named[#named + 1] = r.name
+      end
+    end
+    if #named ~= 2 then
+      self:need("Which two aircraft does 'both' mean? Please give their callsigns.")
+    end
+    for k, id in ipairs(named) do ids[k] = id end
+  end
   if #ids == 0 and self.subject then
     -- the aircraft named for the instruction before ("EZY45 and AFR1234 maintain present heading")
     local all = self.subjects and self.subjects[1] == self.subject and self.subjects or { self.subject }
