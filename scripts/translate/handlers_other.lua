@@ -86,7 +86,8 @@ return function(H, f, compass)
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig, self)
+    -- (values after the type count too: "KLM602 A320, 52.4 6.4, 270 deg, ..." has its instruction word later)
+    local lat, lon = position(qs, (types[1] and types[1].e < s.trig and types[1].b > s.b) and types[1].e or s.trig, self)
     if not lat or not lon then
       -- "10 miles north of KL204", "20 miles east of it" (the aircraft named before)
       local la, lo = self:offset_position(qs, s.b, s.e, near)
@@ -116,6 +117,18 @@ return function(H, f, compass)
       local h = self:find_word(s.b, s.e, "heading hdg")
       if h + 1 < s.e and compass(self.t[h + 1].text) then
         hdg = compass(self.t[h + 1].text, h + 2 < s.e and self.t[h + 2].text or "", h + 3 < s.e and self.t[h + 3].text or "")
+      end
+    end
+    -- "westbound", "on a northerly heading", "flying south": a compass point as the heading (not "10 nm
+    -- north of ...", a position)
+    for i = s.b, s.e - 1 do
+      local t = self.t[i]
+      local point = not hdg and t.kind == "word" and not self:word(i + 1, "of")
+        and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$") or t.text:match("^(%a+)wards?$")
+          or (self:word(i - 1, "@compass_verbs") and t.text))
+      if point and L.compass[point] then
+        hdg = L.compass[point]
+        self:explain(i, i + 1)
       end
     end
     -- "the same heading, level and speed as KL204", "same FL as WZZ1234"

@@ -217,6 +217,9 @@ return {
   -- turns and compass points
   left = { "left" },
   right = { "right" },
+  -- verbs of going before a compass point that is the heading ("flying south")
+  compass_verbs = { "flying", "heading", "going", "tracking", "travelling", "traveling", "moving", "pointing",
+      "facing", "flies", "headed" },
   compass = { north = 0, east = 90, south = 180, west = 270,
               northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
   -- fractions of an hour or a minute said in words ("half an hour", "a quarter of an hour")
