@@ -1636,6 +1636,7 @@ function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
+  text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")

@@ -584,10 +584,20 @@ return function(H, f, compass)
           -- ("Eelde VOR" is the navaid, not the airport that bears its name)
           local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")) and {}
             or named(phrase)
+          -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the one large or medium airport of
+          -- the name, when the two words together name none)
+          local cls = self.world.airport_class
+          local with_city = #ids == 0 and proper(i - 1) and not proper(after) and after == i + 1 and cls
+            and #named(self.t[i - 1].text .. " " .. phrase) == 0
+          if with_city then
+            for _, id in ipairs(named(phrase)) do
+              if cls(id) == "LARGE" or cls(id) == "MEDIUM" then ids[#ids + 1] = id end
+            end
+          end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
-            self:explain((city and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            self:explain(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
             return id
           end
         end

@@ -129,6 +129,14 @@ return {
         "can't", "cannot", "won't", "shouldn't", "mustn't", "isn't", "aren't", "wasn't", "without", "except" },
     condition = { "if", "after", "until", "till", "before", "once", "when", "whenever", "unless" },
   },
+  -- letters with accents written as navdata writes names, in plain letters ("Düsseldorf" DUSSELDORF)
+  accents = { ["à"] = "a", ["á"] = "a", ["â"] = "a", ["ã"] = "a", ["ä"] = "a", ["å"] = "a", ["ç"] = "c",
+      ["è"] = "e", ["é"] = "e", ["ê"] = "e", ["ë"] = "e", ["ì"] = "i", ["í"] = "i", ["î"] = "i", ["ï"] = "i",
+      ["ñ"] = "n", ["ò"] = "o", ["ó"] = "o", ["ô"] = "o", ["õ"] = "o", ["ö"] = "o", ["ø"] = "o", ["ù"] = "u",
+      ["ú"] = "u", ["û"] = "u", ["ü"] = "u", ["ý"] = "y", ["ÿ"] = "y", ["ß"] = "ss", ["À"] = "A", ["Á"] = "A",
+      ["Â"] = "A", ["Ä"] = "A", ["Å"] = "A", ["Ç"] = "C", ["È"] = "E", ["É"] = "E", ["Ê"] = "E", ["Ë"] = "E",
+      ["Í"] = "I", ["Î"] = "I", ["Ñ"] = "N", ["Ó"] = "O", ["Ô"] = "O", ["Ö"] = "O", ["Ø"] = "O", ["Ú"] = "U",
+      ["Ü"] = "U" },
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
   hesitations = { "ah", "uh", "um", "er" },

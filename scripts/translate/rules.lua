@@ -252,7 +252,14 @@ return function(intent, rule, words)
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
-  rule { "via", "addwpt", prev = { 3, "route" } }
+  rule { "via through", "addwpt", prev = { 3, "route" } }
+  -- "EZY45 route: SPY, BERGI", "route for UAL9: BEDUM, EEL, then ARTIP": a route written as a list
+  rule { "route rte", "addwpt", when = function(g, i)
+    local k = i + 1
+    if g:word(k, "for of") and g:has_ref(k + 1, k + 2, "aircraft") then k = g:refs_in(k + 1, k + 2, "aircraft")[1].e end
+    local t = g.t[k]
+    return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(k + 1, k + 2, "waypoint")
+  end }
   -- "define TGT2 at ... and send KL204 to it", "... and route UAL9 through it": the waypoint just
   -- defined joins the route
   rule { "send route take", "addwpt", when = function(g, i)
@@ -260,6 +267,15 @@ return function(intent, rule, words)
     for k = 1, i - 1 do defined = defined or g:intent_at(k) == "defwpt" end
     local it = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "it")
     return defined and it <= #g.t and g:word(it - 1, "to through via over")
+  end }
+  -- "CFG4RK add NORKU, dest Bremen": a waypoint, a clause of its own, added for an aircraft that flies
+  rule { "add append", "addwpt", when = function(g, i)
+    local flying = false
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do flying = flying or r.exists end
+    local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    local nx = r and g.t[r.e]
+    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= "."))
+      and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
   -- "add INTOP after AMDIL": a known waypoint put next to another
   rule { "add append insert", "addwpt", when = function(g, i)
