@@ -1643,7 +1643,7 @@ function M.translate(text, world)
   text = written_forms(text)
   -- type names with their digits said as words, where traffic is created
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
-      or text:lower():find("%f[%a]add") then
+      or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]mcre") or text:lower():find("%f[%a]random") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
   local u = squawk.translate.utterance(types.join(text, TYPES.phrases),

@@ -856,10 +856,22 @@ return function(H, f, compass)
   -- "MCRE n [type [alt]]": random traffic; a type is given only when it is a known one
   -- (a plural like "A320s" the lexer took for a callsign is asked about)
   function m:random_traffic(s)
-    local n, alt
-    for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if q.kind == "plain" and not n and q.value >= 1 and q.value <= 500 and q.value % 1 == 0 then n = self:take(q) end
+    local n, alt, spd
+    -- ("seed 42 then 15 random ac": the count just before "random", in the segment before)
+    local from = s.b
+    for _, q in ipairs(self:word(s.trig, "random") and self:quantities(math.max(1, s.trig - 2), s.trig) or {}) do
+      if q.kind == "plain" and q.e == s.trig and not self.taken[q.b] then from = math.min(from, q.b) end
+    end
+    for _, q in ipairs(self:quantities(from, s.e)) do
+      if q.kind == "plain" and not n and q.value >= 1 and q.value <= 500 and q.value % 1 == 0
+          and not self:word(q.b - 1, "speed spd") then
+        n = self:take(q)
+      end
       if q.kind == "alt" and not alt then alt = self:take(q) end
+      -- "speed 280", "280 kts": MCRE's speed [kt]
+      if not spd and (q.kind == "speed" or (q.kind == "plain" and n and q ~= n and self:word(q.b - 1, "speed spd"))) then
+        spd = self:take(q)
+      end
     end
     if not n then return self:need("How many random aircraft should I create?") end
     local types = self:refs_in(s.b, s.e, "type")
@@ -871,9 +883,10 @@ return function(H, f, compass)
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
     local cmd = "MCRE " .. f.int(n.value)
-    if #types > 0 or alt or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
-    if alt or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
-    if dest then cmd = cmd .. " * " .. dest end
+    if #types > 0 or alt or spd or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
+    if alt or spd or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
+    if spd or dest then cmd = cmd .. " " .. (spd and f.int(spd.value) or "*") end
+    if dest then cmd = cmd .. " " .. dest end
     self:emit(cmd)
   end
 

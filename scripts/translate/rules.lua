@@ -67,7 +67,7 @@ return function(intent, rule, words)
                       handler = "conflict_intruder", absorbs = true, single = true }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
-  intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic" }
+  intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic", absorbs = true }
   intent "area" { cmd = "AREA", args = { "shapename", "ON", "OFF" }, handler = "area" }
   intent "circle" { cmd = "CIRCLE", args = { "name", "radius" }, handler = "circle" }
   intent "box" { cmd = "BOX", args = { "name" }, handler = "box" }
@@ -227,6 +227,7 @@ return function(intent, rule, words)
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
+  rule { "mcre", "mcre" }
   rule { "random", "mcre", when = function(g, i)
     local t = g.t[g:word(i - 1, "@more") and i - 2 or i - 1]  -- ("3 more random ones")
     return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
