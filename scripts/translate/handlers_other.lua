@@ -1050,7 +1050,14 @@ return function(H, f, compass)
   end
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end
-    self:emit(spec.cmd .. " " .. on_off(self, s))
+    -- "detection statebased", "state-based detection": CDMETHOD's method, which is on
+    local method = spec.cmd == "ASAS" and self:find_word(s.b, s.e, "statebased state-based state")
+    if method and method < s.e and (not self:word(method, "state") or self:word(method + 1, "based")) then
+      self:explain(method, self:word(method, "state") and method + 2 or method + 1)
+      self:emit(spec.cmd .. " STATEBASED")
+    else
+      self:emit(spec.cmd .. " " .. on_off(self, s))
+    end
     if spec.cmd ~= "ASAS" then return end
     -- "turn on CD with 5 nm and 1000 ft": the protected zone's radius and half height
     for _, q in ipairs(self:quantities(s.trig, s.e)) do
@@ -1145,6 +1152,9 @@ return function(H, f, compass)
       return self:emit("FF " .. f.num(half))
     end
     local q = first(self, s, { time = true, mult = true })
+    -- "speed the simulation up by a factor of ten": a rate, no duration
+    local factor = self:find_word(s.trig, s.e, "factor")
+    if not q and factor < s.e then return self:time_mult({ b = factor, trig = factor, e = s.e }) end
     if not q then
       -- "half an hour", "a quarter of an hour": a fraction of a unit said in words
       local frac = self:find_word(s.trig + 1, s.e, "@fractions")
@@ -1363,6 +1373,10 @@ return function(H, f, compass)
   end
   function m:look_ahead(s)
     local q = first(self, s, { time = true, plain = true })
+    -- "a 180 s lookahead": the time said just before the word
+    for _, b in ipairs(q and {} or self:quantities(math.max(1, s.trig - 3), s.trig)) do
+      if b.kind == "time" and b.e == s.trig and not self.taken[b.b] then q = self:take(b) end
+    end
     if q then return self:emit("DTLOOK " .. f.num(q.value)) end
     if self:asks_setting(true) then return self:emit("DTLOOK") end
     self:need("How far ahead, in seconds, should conflict detection look?")
