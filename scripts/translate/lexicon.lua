@@ -99,6 +99,8 @@ return {
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
+        -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
+        "located", "positioned", "situated", "ownship",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
