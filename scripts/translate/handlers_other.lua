@@ -1274,6 +1274,14 @@ return function(H, f, compass)
         return self:emit("ECHO " .. self:raw(i + 1, s.e))
       end
     end
+    -- "print baseline no reso to the console": the words between the verb and where they go, as typed
+    local to = self:find_word(s.trig + 1, s.e, "to on")
+    local at = self:word(to + 1, "the") and to + 2 or to + 1
+    if to > s.trig + 1 and to < s.e and self:word(at, "console screen display window") then
+      self:mark_used(s.trig + 1, to)
+      self:explain(to, at + 1)
+      return self:emit("ECHO " .. self:raw(s.trig + 1, to))
+    end
     self:need("What text should I print?")
   end
   function m:resolution(s)

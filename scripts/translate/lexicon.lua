@@ -101,6 +101,8 @@ return {
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
+        -- the margin a resolution keeps ("resolution margin factor 1.05")
+        "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
@@ -187,7 +189,7 @@ return {
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock" },
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
-  route_nouns = { "route", "plan" },
+  route_nouns = { "route", "plan", "rte" },
   articles_new = { "a", "an", "new", "second", "another" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names

@@ -222,7 +222,7 @@ return function(intent, rule, words)
   end }
   rule { "addwpt", "addwpt" }
   rule { "delwpt", "delwpt" }
-  rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
+  rule { "create make", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
@@ -321,7 +321,7 @@ return function(intent, rule, words)
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
-  rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
+  rule { "remove delete del skip drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
   rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
@@ -374,12 +374,12 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
+  rule { "route rte waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
-  rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
+  rule { "route rte", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
   rule { "route", "listrte", next = "of", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
-  rule { "listrte rte", "listrte" }
+  rule { "listrte", "listrte" }
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
