@@ -1157,13 +1157,18 @@ function G:purpose(k)
   end
   if not self:word(k, "to") then return false end
   local nx = self.t[k + 1]
-  if not nx or nx.kind ~= "word" or not nx.alpha or nx.number_word or KNOWN[nx.text] or not nx.raw:match("^%l+$")
+  if not nx or nx.kind ~= "word" or not nx.alpha or nx.number_word or not nx.raw:match("^%l+$")
       or #self:refs_in(k + 1, k + 2) > 0 then
     return false
   end
-  -- a value said before it, none in its clause
+  -- a value said before it, none in its clause; a verb squawk knows only straight after the value, with
+  -- other traffic named in its clause and no instruction of its own ("hdg 060 to cross CFG4RK's track")
   local e = k + 1
   while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+  if KNOWN[nx.text] and (SUBJECTS[nx.text] or nx.filler or self:intent_at(k + 1) or not self:has_ref(k + 2, e, "aircraft")
+      or #self:quantities(k - 1, k) == 0) then
+    return false
+  end
   local before = self:quantities(1, k)
   return #before > 0 and before[#before].e <= k and #self:quantities(k, e) == 0
 end
@@ -1323,7 +1328,9 @@ function G:explained_spans(issued, kinds)
     for j = k, e - 1 do
       local t, nx = self.t[j], self.t[j + 1]
       local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
-      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or (self:word(j, "so") and j > 1 and subject)
+      -- ("delete KLC21, not needed for this run": a participle's clause, negated)
+      local participle = j == k and k > 1 and self:word(j, "not") and nx and nx.kind == "word" and nx.text:match("%aed$")
+      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (self:word(j, "so") and j > 1 and subject)
           or (self:word(j, "for") and j > 1 and subject) then
         comment(j, e)
         break
