@@ -519,8 +519,9 @@ return function(H, f, compass)
           -- ("Nantucket airport" is the airport, not the navaid of that name)
           -- (with `two_words`, a name an airport bears too stays the airport's: "London City")
           local airport = two_words and self.world.airports_named and #self.world.airports_named(phrase) > 0
+          local kind = self.t[p[2]] and self.t[p[2]].kind == "word" and L.navaid_types[self.t[p[2]].text]
           local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
-            or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)
+            or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, kind or nil)
           local id = self:one_named(ids, "navaid", phrase, math.huge)
           if id then
             self:explain(i, p[2])

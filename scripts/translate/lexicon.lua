@@ -310,6 +310,8 @@ return {
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
+  -- the navdata types a kind said after a navaid's name means ("the Eelde VOR" is EEL, not the NDB SO)
+  navaid_types = { vor = "VOR TACAN", vortac = "VOR TACAN", ndb = "NDB", dme = "DME" },
   -- DEFWPT's waypoint types, said after "as" or "type" ("define DELTA at 51.9 4.1 as a fix")
   waypoint_types = { fix = "FIX", vor = "VOR", dme = "DME", ndb = "NDB" },
   -- pronouns: never read as a name ("add it to the route" is no waypoint "IT")

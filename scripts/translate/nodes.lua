@@ -243,7 +243,7 @@ function M.world(sim, waypoints)
            airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
            airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
            airport_class = function(id) return sim:airport_class(id) end,
-           navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end,
+           navaids_named = function(name, lat, lon, nm, types) return sim:navaids_named(name, lat, lon, nm, types) end,
            airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end }
 end
 
