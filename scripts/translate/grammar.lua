@@ -1152,7 +1152,8 @@ for _, w in ipairs(ACCOUNTED.articles) do SUBJECTS[w] = true end
 function G:purpose(k)
   -- ("UAL9 heading 150 - should converge with KLM1877": what should follow, after the value or a dash)
   local pv = self.t[k - 1]
-  if self:word(k, "@purpose_modals") and pv and (pv.kind == "punct" or #self:quantities(k - 1, k) > 0) then
+  if self:word(k, "@purpose_modals") and pv
+      and (#self:quantities(k - 1, k) > 0 or (pv.kind == "punct" and k > 2 and #self:quantities(k - 2, k - 1) > 0)) then
     return true
   end
   if not self:word(k, "to") then return false end

@@ -150,6 +150,7 @@ function m:acids(s)
       for i = last_q.e, r.b - 1 do
         local t = self.t[i]
         if t.kind == "word" and not t.filler and not self:word(i, "and") then clause = true end
+        if self:word(i, "@correction") then clause = false break end  -- ("..., correction KLM21")
       end
       if clause then upto = last_q.e break end
     end

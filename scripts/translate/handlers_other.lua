@@ -556,7 +556,7 @@ return function(H, f, compass)
     end
     if near and not near.lat then return nil end
     for _, placed in ipairs({ true, false }) do
-      local id = self:airport_named_in(b, e, within(named), placed)
+      local id = self:airport_named_in(b, e, within(named), placed, false, near ~= nil)
       if id then return id end
     end
     return city and self:airport_named_in(b, e, within(city), false, true) or nil
@@ -566,7 +566,8 @@ return function(H, f, compass)
   -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
   -- Capital airport": the word before is its city).
   -- (proper: only words typed with a capital, "Frankfurt")
-  function m:airport_named_in(b, e, named, placed, proper_only)
+  -- (nearby: `named` reads near an aircraft only)
+  function m:airport_named_in(b, e, named, placed, proper_only, nearby)
     local function proper(k)
       local t = self.t[k]
       return k > 1 and t ~= nil and t.kind == "word" and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
@@ -585,15 +586,16 @@ return function(H, f, compass)
           -- ("Eelde VOR" is the navaid, not the airport that bears its name)
           local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")) and {}
             or named(phrase)
-          -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the one large or medium airport of
-          -- the name, when the two words together name none)
+          -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the only large or medium airport
+          -- of the name near the aircraft, when the two words together name none)
           local cls = self.world.airport_class
-          local with_city = #ids == 0 and proper(i - 1) and not proper(after) and after == i + 1 and cls
+          local with_city = nearby and #ids == 0 and proper(i - 1) and not proper(after) and after == i + 1 and cls
             and #named(self.t[i - 1].text .. " " .. phrase) == 0
           if with_city then
             for _, id in ipairs(named(phrase)) do
               if cls(id) == "LARGE" or cls(id) == "MEDIUM" then ids[#ids + 1] = id end
             end
+            if #ids > 1 then ids = {} end  -- ("Gotham City": no airport of that city, one of several "City")
           end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then

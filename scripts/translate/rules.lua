@@ -76,6 +76,28 @@ return function(intent, rule, words)
   -- an instruction announced with "expect" is no clearance
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
   rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
+  -- "BAW918 A320 @ TEBRO hdg 170 FL320 M0.78", "ac: AAL2307 B772 ...": a request (or its part after a
+  -- label and colon) that opens with a callsign no aircraft has and its type, then values: a new aircraft
+  -- (before any other rule: the first word after the type, "hdg", starts the creation)
+  rule { "*", "create", when = function(g, i)
+    local colon = 0
+    for k = 1, i - 1 do if g.t[k].kind == "punct" and g.t[k].text == ":" then colon = k end end
+    local j = colon + 1
+    while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
+    local r = g:refs_in(j, j + 1, "aircraft")[1]
+    local ty = r and not r.exists and r.b == j and g:refs_in(r.e, r.e + 2, "type")[1]
+    if not ty or i < ty.e or #g:quantities(ty.e, #g.t + 1) == 0
+        or (colon > 0 and (#g:quantities(1, colon) > 0 or #g:refs_in(1, colon, "aircraft") > 0)) then
+      return false
+    end
+    for k = ty.e, i - 1 do  -- (fired at the first word after the type)
+      if g.t[k].kind == "word" and not g.u:used(k) then return false end
+    end
+    for k = 1, colon - 1 do  -- ("new ac: BAW77, B744, ...": said by the label already)
+      if g:intent_at(k) == "create" then return false end
+    end
+    return true
+  end }
 
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
@@ -294,27 +316,6 @@ return function(intent, rule, words)
   -- "callsign SWR19, A333, FL360, ...": a request that opens with a new callsign and its type
   rule { "callsign", "create", when = function(g, i)
     return g:skip_fillers(1) == i and g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 6, "type")
-  end }
-  -- "BAW918 A320 @ TEBRO hdg 170 FL320 M0.78", "ac: AAL2307 B772 ...": a request (or its part after a
-  -- label and colon) that opens with a callsign no aircraft has and its type, then values: a new aircraft
-  rule { "*", "create", when = function(g, i)
-    local colon = 0
-    for k = 1, i - 1 do if g.t[k].kind == "punct" and g.t[k].text == ":" then colon = k end end
-    local j = colon + 1
-    while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
-    local r = g:refs_in(j, j + 1, "aircraft")[1]
-    local ty = r and not r.exists and r.b == j and g:refs_in(r.e, r.e + 2, "type")[1]
-    if not ty or i < ty.e or #g:quantities(ty.e, #g.t + 1) == 0
-        or (colon > 0 and (#g:quantities(1, colon) > 0 or #g:refs_in(1, colon, "aircraft") > 0)) then
-      return false
-    end
-    for k = ty.e, i - 1 do  -- (fired at the first word after the type)
-      if g.t[k].kind == "word" and not g.u:used(k) then return false end
-    end
-    for k = 1, colon - 1 do  -- ("new ac: BAW77, B744, ...": said by the label already)
-      if g:intent_at(k) == "create" then return false end
-    end
-    return true
   end }
   -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
   rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }

@@ -56,10 +56,10 @@ end
 -- kept here after their first-sight figures were recorded (docs/translation_ledger.md),
 -- fixed by class; floors at the figures reached (right at least, wrong at most).
 floors("tests/data/translate_round1.tsv", 0.991, 0.0, true)
-floors("tests/data/translate_round2.tsv", 0.843, 0.0128, true)
+floors("tests/data/translate_round2.tsv", 0.853, 0.0128, true)
 floors("tests/data/translate_round3.tsv", 0.952, 0.0073, true)
-floors("tests/data/translate_round4.tsv", 0.953, 0.0, true)
-floors("tests/data/translate_round5.tsv", 0.959, 0.0, true)
+floors("tests/data/translate_round4.tsv", 0.956, 0.0, true)
+floors("tests/data/translate_round5.tsv", 0.962, 0.0, true)
 floors("tests/data/translate_round6.tsv", 0.992, 0.0, true)
 floors("tests/data/translate_round7.tsv", 0.956, 0.0036, true)
 floors("tests/data/translate_round8.tsv", 0.954, 0.0, true)
@@ -68,15 +68,16 @@ floors("tests/data/translate_round10.tsv", 0.933, 0.0034, true)
 floors("tests/data/translate_round11.tsv", 0.953, 0.0037, true)
 floors("tests/data/translate_round12.tsv", 0.953, 0.0, true)
 floors("tests/data/translate_round13.tsv", 0.947, 0.0, true)
-floors("tests/data/translate_round14.tsv", 0.903, 0.0, true)
+floors("tests/data/translate_round14.tsv", 0.91, 0.0, true)
 floors("tests/data/translate_round15.tsv", 0.965, 0.0035, true)
 floors("tests/data/translate_round16.tsv", 0.87, 0.0081, true)
 floors("tests/data/translate_round17.tsv", 1.0, 0.0, true)
 floors("tests/data/translate_round18.tsv", 0.957, 0.0, true)
 floors("tests/data/translate_round19.tsv", 0.949, 0.0043, true)
 floors("tests/data/translate_round20.tsv", 0.957, 0.0, true)
-floors("tests/data/translate_round21.tsv", 0.947, 0.0094, true)
+floors("tests/data/translate_round21.tsv", 0.95, 0.0094, true)
 floors("tests/data/translate_round22.tsv", 0.757, 0.0174, true)
+floors("tests/data/translate_round23.tsv", 0.949, 0.0, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
@@ -86,7 +87,7 @@ floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
 -- known name too (lexicon.waypoint_confirm: 25 rows); these rows score as asked (a navaid said by
 -- its navdata name won 5 back); a word the recogniser garbled ("December eighteen five thousand",
 -- "Fighting two seven zero") is asked about by name (lexicon.accounted: 66 rows)
-floors("../shared/corpora/vice_trafscript.tsv", 0.545, 0.0044)
+floors("../shared/corpora/vice_trafscript.tsv", 0.549, 0.0044)
 
 -- squawk.translate.evaluate is eval-translate's scorer: a translator that always asks is right
 -- exactly on the rows that expect a question, never wrong; one that issues a command where a
