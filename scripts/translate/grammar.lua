@@ -483,7 +483,11 @@ function G:in_reason(i)
   for k = i - 1, 1, -1 do
     local t = self.t[k]
     if t.kind == "punct" and t.text ~= "," then return false end
-    if self:purpose(k) then return true end
+    if not self.purposes then  -- (where purposes open, found once per request)
+      self.purposes = {}
+      for x = 1, #self.t do if self:purpose(x) then self.purposes[x] = true end end
+    end
+    if self.purposes[k] then return true end
     -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
     if t.kind == "punct" and self:word(k + 1, "@then_words") then return false end
     if self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then return true end
@@ -789,8 +793,8 @@ function G:split_ellipsis(segs)
       end
       -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" after values starts one for the two
       for i = s.b + 1, e - 1 do
-        local after = self:quantities(i, e)
-        if self:word(i, "both") and #self:quantities(cur.b, i) > 0 and after[1] and after[1].b == self:skip_fillers(i + 1) then
+        local after = self:word(i, "both") and self:quantities(i, e) or {}
+        if after[1] and #self:quantities(cur.b, i) > 0 and after[1].b == self:skip_fillers(i + 1) then
           cur.e = i
           cur = { intent = "infer", b = i, trig = i, e = e }
           out[#out + 1] = cur
@@ -1166,8 +1170,8 @@ function G:purpose(k)
   -- other traffic named in its clause and no instruction of its own ("hdg 060 to cross CFG4RK's track")
   local e = k + 1
   while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
-  if KNOWN[nx.text] and (SUBJECTS[nx.text] or nx.filler or self:intent_at(k + 1) or not self:has_ref(k + 2, e, "aircraft")
-      or #self:quantities(k - 1, k) == 0) then
+  if KNOWN[nx.text] and (SUBJECTS[nx.text] or nx.filler or #self:quantities(k - 1, k) == 0
+      or not self:has_ref(k + 2, e, "aircraft") or self:intent_at(k + 1)) then
     return false
   end
   local before = self:quantities(1, k)

@@ -139,12 +139,14 @@ function m:acids(s)
   -- with the addressee named before the instruction ("DLH4AX descend FL240 to put it at the same level
   -- as KLM1234", "UAL9 heading 150 - should converge with KLM1877"), a callsign said after the
   -- instruction's last value with words of a clause between is context, never instructed
-  local addressed = false
-  for _, r in ipairs(self:refs_in(s.b, s.trig, "aircraft")) do
-    if r.exists and not self:as_context(r.b) then addressed = true end
-  end
   local last_q = qs[#qs]
-  if addressed and last_q and last_q.b > s.trig and upto > last_q.e then
+  local addressed = false
+  if last_q and last_q.b > s.trig and upto > last_q.e and self:has_ref(last_q.e, upto, "aircraft") then
+    for _, r in ipairs(self:refs_in(s.b, s.trig, "aircraft")) do
+      if r.exists and not self:as_context(r.b) then addressed = true end
+    end
+  end
+  if addressed then
     for _, r in ipairs(self:refs_in(last_q.e, upto, "aircraft")) do
       local clause = false
       for i = last_q.e, r.b - 1 do

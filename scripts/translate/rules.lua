@@ -80,23 +80,24 @@ return function(intent, rule, words)
   -- label and colon) that opens with a callsign no aircraft has and its type, then values: a new aircraft
   -- (before any other rule: the first word after the type, "hdg", starts the creation)
   rule { "*", "create", when = function(g, i)
-    local colon = 0
-    for k = 1, i - 1 do if g.t[k].kind == "punct" and g.t[k].text == ":" then colon = k end end
-    local j = colon + 1
-    while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
-    local r = g:refs_in(j, j + 1, "aircraft")[1]
-    local ty = r and not r.exists and r.b == j and g:refs_in(r.e, r.e + 2, "type")[1]
-    if not ty or i < ty.e or #g:quantities(ty.e, #g.t + 1) == 0
-        or (colon > 0 and (#g:quantities(1, colon) > 0 or #g:refs_in(1, colon, "aircraft") > 0)) then
-      return false
+    if g.opening_create == nil then
+      g.opening_create = false  -- (computed once per request: the rule is tried at every word)
+      local colon = 0
+      for k = 1, #g.t do if g.t[k].kind == "punct" and g.t[k].text == ":" then colon = k break end end
+      local j = colon + 1
+      while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
+      local r = g:refs_in(j, j + 1, "aircraft")[1]
+      local ty = r and not r.exists and r.b == j and g:refs_in(r.e, r.e + 2, "type")[1]
+      local labelled = colon > 0 and (#g:quantities(1, colon) > 0 or #g:refs_in(1, colon, "aircraft") > 0)
+      if ty and not labelled and #g:quantities(ty.e, #g.t + 1) > 0 then
+        local at = ty.e  -- (fired at the first word after the type)
+        while g.t[at] and (g.t[at].kind ~= "word" or g.u:used(at)) do at = at + 1 end
+        local said = false  -- ("new ac: BAW77, B744, ...": said by the label already)
+        for k = 1, colon - 1 do said = said or g:intent_at(k) == "create" end
+        g.opening_create = not said and g.t[at] ~= nil and at
+      end
     end
-    for k = ty.e, i - 1 do  -- (fired at the first word after the type)
-      if g.t[k].kind == "word" and not g.u:used(k) then return false end
-    end
-    for k = 1, colon - 1 do  -- ("new ac: BAW77, B744, ...": said by the label already)
-      if g:intent_at(k) == "create" then return false end
-    end
-    return true
+    return g.opening_create == i
   end }
 
   -- altitude
