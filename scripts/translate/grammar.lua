@@ -909,7 +909,9 @@ end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    if self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at") then
+    -- "cross NORKU at FL200", "at NORKU cross FL200", "at ELDAR speed 250": a waypoint of the route
+    if (self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at"))
+        or (self:word(r.b - 1, "at") and r.b - 1 == self:skip_fillers(s.b) + (self:has_ref(s.b, r.b, "aircraft") and 1 or 0)) then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
@@ -920,7 +922,8 @@ function G:at_waypoint(s, spec)
       if in_route and q and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then
         self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(q.value, q.fl))
         return self:take(q) ~= nil
-      elseif in_route and q and (q.kind == "speed" or q.kind == "mach") then
+      elseif in_route and q and (q.kind == "speed" or q.kind == "mach"
+          or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))) then
         self:emit("AT " .. ids[1] .. " " .. r.name .. " SPD " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
         return self:take(q) ~= nil
       end

@@ -834,6 +834,13 @@ do
   check_eq(et("a 240 s lookahead, then detection on"), "DTLOOK 240 ; ASAS ON")
   check_eq(et("print run 3 started to the console"), "ECHO run 3 started")
   check_eq(et("remove KLM77, not required any more"), "DEL KLM77")
+  -- a level or speed at a waypoint of the aircraft's route is AT; at another, squawk asks
+  check(ex:exec("DEFWPT TULIP 52.5 4.6"))
+  check(ex:exec("ADDWPT KLM77 TULIP"))
+  local function wt(text) return said(graph.translate(text, { sim = ex, mode = "offline", waypoints = { "TULIP" } })) end
+  check_eq(wt("KLM77 at TULIP descend FL100"), "AT KLM77 TULIP ALT FL100")
+  check_eq(wt("KLM77 at TULIP speed 220"), "AT KLM77 TULIP SPD 220")
+  check(wt("DLH4AX at TULIP speed 220"):find("^ASK Should that happen at TULIP") ~= nil, "TULIP is no waypoint of DLH4AX")
 end
 
 -- Places of the navdata said the way an experimenter writes them (R23): accents, a city before
