@@ -229,13 +229,15 @@ std::string NavDb::airport_class(std::string_view id) const {
 }
 
 std::vector<std::string> NavDb::navaids_named(std::string_view name, double ref_lat, double ref_lon,
-                                              double within_nm) const {
+                                              double within_nm, std::string_view types) const {
   std::vector<std::pair<double, std::string>> found;
   const std::string key = name_key(name);
   if (key.empty()) return {};
+  const std::string kinds = " " + text::upper(types) + " ";
   for (size_t i = 0; i < navaid_names_.size() && i < waypoints_.size(); ++i) {
     if (navaid_names_[i] != key) continue;
     const NavPoint& p = waypoints_[i];
+    if (!types.empty() && kinds.find(" " + p.type + " ") == std::string::npos) continue;
     const double d = geo::kwikdist_nm(ref_lat, ref_lon, p.lat, p.lon);
     if (d <= within_nm) found.emplace_back(d, p.id);
   }

@@ -11,8 +11,9 @@
 //   sim:airports_of_city(name [, lat, lon, within_nm]) -> { "EDDF", ... }  large airports whose
 //                           name starts with the words of `name` and goes on ("Frankfurt")
 //   sim:airport_class(id) -> "LARGE" | "MEDIUM" | "SMALL" | ""  airports.dat's class
-//   sim:navaids_named(name, lat, lon, within_nm) -> { "SFO", ... }  idents of the navaids
-//                           called `name` within within_nm of lat, lon [deg], nearest first
+//   sim:navaids_named(name, lat, lon, within_nm [, types]) -> { "SFO", ... }  idents of the navaids
+//                           called `name` within within_nm of lat, lon [deg], nearest first; of
+//                           the navdata types in `types` ("VOR TACAN") only, when given
 //   sim:airports_coded(code, lat, lon) -> { "KJFK", ... }  airports whose ICAO code is one letter
 //                           before the three-letter `code` within 10 nm of the navaid or fix `code`
 //                           nearest lat, lon [deg] (the airport people name by the code of its
@@ -205,10 +206,11 @@ int l_navaids_named(lua_State* L) {
   const std::string name = arg_string(L, 2, "name");
   const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon"),
                within = arg_number(L, 5, "within_nm");
+  const std::string types = lua_isnoneornil(L, 6) ? std::string() : arg_string(L, 6, "types");
   lua_newtable(L);
   if (!s->navdb()) return 1;
   int k = 0;
-  for (const std::string& id : s->navdb()->navaids_named(name, lat, lon, within)) {
+  for (const std::string& id : s->navdb()->navaids_named(name, lat, lon, within, types)) {
     lua_pushstring(L, id.c_str());
     lua_rawseti(L, -2, ++k);
   }

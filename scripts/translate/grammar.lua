@@ -25,7 +25,10 @@
 --     negation nor a condition) carries ignorable = that word.
 --     Never fails: a request it cannot fill completely becomes a question
 --     naming what is missing; a question about an inexactly heard callsign
---     carries confirm = {id =, heard =}.
+--     carries confirm = {id =, heard =}. A request whose commands are complete but
+--     one of them needs a yes first (a relative turn of more than 180 degrees, an
+--     airport found by name only far away) carries confirm_first = the question;
+--     the yes runs every command of the request (graph.lua).
 --   rule(spec), intent(name)(spec)   add a rule / an intent at run time,
 --     checked like the file's (an error names the caller's file:line).
 --     New rules go before the file's rules, so they win.
@@ -568,7 +571,8 @@ function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self
 -- ("climb KLM602 FL220 so that it clears BAW451": BAW451 is not instructed).
 function G:in_reason(i)
   if not self.reason then
-    -- reason[i]: the nearest of a reason word and a sentence break before i is the reason word
+    -- reason[i]: the nearest of a reason word (or a purpose, G:purpose) and a sentence break before
+    -- i is the reason word
     self.reason = {}
     local inside = false
     for k = 1, #self.t do
@@ -576,6 +580,8 @@ function G:in_reason(i)
       local t = self.t[k]
       if t.kind == "punct" and t.text ~= "," then
         inside = false
+      elseif self:purpose(k) then
+        inside = true
       elseif t.kind == "punct" and self:word(k + 1, "@then_words") then
         -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
         inside = false
@@ -727,6 +733,11 @@ end
 
 function G:emit(line) self.out[#self.out + 1] = line end
 
+-- The request's commands run only after a yes to `question` (the first such question stands).
+function G:confirm_before(question)
+  if not self.confirm_first then self.confirm_first = question end
+end
+
 -- Tokens [b, e) were read by a handler (a place's name, "after" a waypoint): no leftover.
 function G:explain(b, e)
   self.explained = self.explained or {}
@@ -813,6 +824,19 @@ function G:segments(b, e)
   end
   local segs = {}
   if #trig == 0 then return { { intent = "infer", b = b, trig = b, e = e } } end
+  -- "KLM601 FL210, then ff 4 min": a callsign and a value with its own unit, a clause before the first
+  -- instruction word, are an instruction of their own
+  local qs = self:quantities(b, trig[1].pos)
+  local own = qs[1] and (qs[#qs].kind == "alt" and qs[#qs].fl or qs[#qs].kind == "speed" or qs[#qs].kind == "mach"
+    or qs[#qs].kind == "heading")
+  if own and self:has_ref(b, qs[1].b, "aircraft") and not self:word_in(b, trig[1].pos, "@level_condition @condition") then
+    for k = qs[#qs].e, trig[1].pos - 1 do
+      if self.t[k].kind == "punct" or self:word(k, "@then_words") then
+        segs[1] = { intent = "infer", b = b, trig = b, e = k }
+        break
+      end
+    end
+  end
   for k, tr in ipairs(trig) do
     local last = segs[#segs]
     local this = M.intents[tr.intent]
@@ -879,6 +903,15 @@ function G:split_ellipsis(segs)
         if r.exists and #before > 0 and own(before[#before]) and own(after[1]) and after[1].b == self:skip_fillers(r.e) then
           cur.e = r.b
           cur = { intent = "infer", b = r.b, trig = r.b, e = e }
+          out[#out + 1] = cur
+        end
+      end
+      -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" after values starts one for the two
+      for i = s.b + 1, e - 1 do
+        local after = self:word(i, "both") and self:quantities(i, e) or {}
+        if after[1] and #self:quantities(cur.b, i) > 0 and after[1].b == self:skip_fillers(i + 1) then
+          cur.e = i
+          cur = { intent = "infer", b = i, trig = i, e = e }
           out[#out + 1] = cur
         end
       end
@@ -1017,11 +1050,14 @@ end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200": a constraint at a waypoint
+    -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200", "at NORKU cross FL200", "at ELDAR
+    -- speed 250": a constraint at a waypoint
     local crossed = self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at")
     local constrained = self:word(r.b - 1, "at") and self:word(r.b - 2, "constraint restriction")
       and self:word(self:skip_fillers(r.e), "to of")
-    if crossed or constrained then
+    local opening = self:word(r.b - 1, "at")
+      and r.b - 1 == self:skip_fillers(s.b) + (self:has_ref(s.b, r.b, "aircraft") and 1 or 0)
+    if crossed or constrained or opening then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
@@ -1032,7 +1068,8 @@ function G:at_waypoint(s, spec)
       local alt, spd, other = nil, nil, false
       for _, q in ipairs(self:quantities(r.e, s.e)) do
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q
-        elseif not spd and (q.kind == "speed" or q.kind == "mach") then spd = q
+        elseif not spd and (q.kind == "speed" or q.kind == "mach"
+            or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))) then spd = q
         else other = true end
       end
       if in_route and not other and (alt or spd) then
@@ -1244,10 +1281,16 @@ know_all(lexicon, {})
 know_all(names.airlines, {})
 know_all(names.common or {}, {})
 know_all(TYPES.types, {})
+-- A registry command's name or alias that no rule or list knows ("rmethv"), by its lower-case
+-- word: the command's lower-case name. Said in English, it is accounted for only by its command.
+-- (lexicon.english_command_names, known above, are English words first.)
+local COMMAND_ONLY = {}
 for _, c in ipairs(squawk.sim.commands()) do
-  know(c.name)
-  for _, a in ipairs(c.aliases or {}) do know(a) end
+  for _, w in ipairs({ c.name, table.unpack(c.aliases or {}) }) do
+    if not KNOWN[w:lower()] then COMMAND_ONLY[w:lower()] = c.name:lower() end
+  end
 end
+for w, name in pairs(COMMAND_ONLY) do know(w) know(name) end
 -- the courtesy and value phrases by their first word, each as its words in the lexer's form ("it's" is "it")
 local PHRASES = {}
 for _, list in ipairs({ ACCOUNTED.courtesy_phrases, ACCOUNTED.value_phrases }) do
@@ -1270,6 +1313,34 @@ local AIRPORT_NOUNS = set_of(lexicon.airport_nouns)
 local PERSONS = set_of({ "i", "we", "you", "i've", "we've", "you've", "i'm", "we're", "you're" })
 local SUBJECTS = set_of(ACCOUNTED.pronouns)
 for _, w in ipairs(ACCOUNTED.articles) do SUBJECTS[w] = true end
+
+-- True when "to" (or a modal) at k opens the purpose of the instruction before it ("descend FL240 to put it at the
+-- same level as KLM1234", "hdg 120 to close on TRA5GK"): after a value, before a verb no rule or list
+-- knows, typed in lower case (no value, name, code or instruction word), with no value in its clause.
+function G:purpose(k)
+  -- ("UAL9 heading 150 - should converge with KLM1877": what should follow, after the value or a dash)
+  local pv = self.t[k - 1]
+  if self:word(k, "@purpose_modals") and pv
+      and (#self:quantities(k - 1, k) > 0 or (pv.kind == "punct" and k > 2 and #self:quantities(k - 2, k - 1) > 0)) then
+    return true
+  end
+  if not self:word(k, "to") then return false end
+  local nx = self.t[k + 1]
+  if not nx or nx.kind ~= "word" or not nx.alpha or nx.number_word or not nx.raw:match("^%l+$")
+      or #self:refs_in(k + 1, k + 2) > 0 then
+    return false
+  end
+  -- a value said before it, none in its clause; a verb squawk knows only straight after the value, with
+  -- other traffic named in its clause and no instruction of its own ("hdg 060 to cross CFG4RK's track")
+  local e = k + 1
+  while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+  if KNOWN[nx.text] and (SUBJECTS[nx.text] or nx.filler or #self:quantities(k - 1, k) == 0
+      or not self:has_ref(k + 2, e, "aircraft") or self:intent_at(k + 1)) then
+    return false
+  end
+  local before = self:quantities(1, k)
+  return #before > 0 and before[#before].e <= k and #self:quantities(k, e) == 0
+end
 local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELAY = true, SCHEDULE = true }
 
 -- The forms a word may be inflected from or to ("keeping" keep, "switched" switch, "pass" passing).
@@ -1426,7 +1497,9 @@ function G:explained_spans(issued, kinds)
     for j = k, e - 1 do
       local t, nx = self.t[j], self.t[j + 1]
       local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
-      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or (self:word(j, "so") and j > 1 and subject)
+      -- ("delete KLC21, not needed for this run": a participle's clause, negated)
+      local participle = j == k and k > 1 and self:word(j, "not") and nx and nx.kind == "word" and nx.text:match("%aed$")
+      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (self:word(j, "so") and j > 1 and subject)
           or (self:word(j, "for") and j > 1 and subject) then
         comment(j, e)
         break
@@ -1447,7 +1520,7 @@ function G:unaccounted()
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and (MEANING[t.text] or not known_word(t.text)) then
+        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text)) then
       said[#said + 1] = i
     end
   end
@@ -1456,7 +1529,7 @@ function G:unaccounted()
   local inside = self:explained_spans(issued, kinds)
   for _, i in ipairs(said) do
     local t = self.t[i]
-    if not inside[i] and not issued[t.text] and not self:in_reason(i)
+    if not inside[i] and not issued[COMMAND_ONLY[t.text] or t.text] and not self:in_reason(i)
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end
@@ -1802,13 +1875,16 @@ function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
+  text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
+  -- "FL240 -> FL250": an arrow between two levels, from the one to the other
+  text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   text = written_forms(text)
   -- type names with their digits said as words, where traffic is created
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
-      or text:lower():find("%f[%a]add") then
+      or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]mcre") or text:lower():find("%f[%a]random") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
   local u = squawk.translate.utterance(types.join(text, TYPES.phrases),
@@ -1851,7 +1927,7 @@ function M.translate(text, world)
   for _, line in ipairs(g.out) do
     if not seen[line] then out[#out + 1], seen[line] = line, true end
   end
-  return { commands = out, note = note }
+  return { commands = out, note = note, confirm_first = g.confirm_first }
 end
 
 return M

@@ -49,9 +49,11 @@
 --                   nothing (the dialogue sets it after "ignore it")
 --   A question about an inexactly heard callsign carries result.confirm =
 --   {id =, heard =}. Commands that need a yes first (confirmation(): several
---   aircraft deleted, RESET, IC, conflict detection/resolution off; a
---   relative turn of more than 180 degrees) come back as a yes/no question
---   with result.confirm = {commands =} and no result.commands.
+--   aircraft deleted, RESET, IC, conflict detection/resolution off; the
+--   grammar's confirm_first: a relative turn of more than 180 degrees, an
+--   airport found by name only far away) come back as a yes/no question with
+--   result.confirm = {commands =}, every command of the request, and no
+--   result.commands.
 --   dialogue(opts) -> d   a conversation: d:say(text) -> result as translate()
 --       returns it. A result that asks keeps its partial request in d.pending
 --       ({question =, request =}) and the next say() answers it: a line with
@@ -284,7 +286,7 @@ function M.translate(text, opts)
     -- destructive or global commands wait for a yes: the question carries
     -- the commands that the yes runs (Dialogue:answer)
     local commands = state.commands or {}
-    local q = M.confirmation(commands, sim)
+    local q = #commands > 0 and state.confirm_first or M.confirmation(commands, sim)
     if q then
       nodes.say(state, "confirm", "asks first: " .. q)
       result.ask, result.confirm = q, { commands = commands }
@@ -367,14 +369,15 @@ function Dialogue:say(text)
     return r
   end
   if pending and pending.confirm and grammar.lexicon_says(text, "yes") then
-    local opts = setmetatable({ confirmed = { [pending.confirm.id] = true }, ignored = pending.ignored },
-      { __index = self.opts })
+    local confirmed = { [pending.confirm.id] = true }
+    for k in pairs(pending.confirmed or {}) do confirmed[k] = true end
+    local opts = setmetatable({ confirmed = confirmed, ignored = pending.ignored }, { __index = self.opts })
     return self:again(pending, opts)
   end
   if pending and pending.ignorable and grammar.lexicon_says(text, "ignore") then
     local ignored = { [pending.ignorable] = true }
     for w in pairs(pending.ignored or {}) do ignored[w] = true end
-    return self:again(pending, setmetatable({ ignored = ignored }, { __index = self.opts }))
+    return self:again(pending, setmetatable({ ignored = ignored, confirmed = pending.confirmed }, { __index = self.opts }))
   end
   local r, request = nil, text
   local own = not pending or grammar.has_instruction(text)
@@ -398,7 +401,7 @@ function Dialogue:again(pending, opts)
   local r = M.translate(pending.request, opts)
   r.answered = pending.question
   self.pending = r.ask and { question = r.ask, request = pending.request, confirm = r.confirm,
-    ignorable = r.ignorable, ignored = opts.ignored } or nil
+    ignorable = r.ignorable, ignored = opts.ignored, confirmed = opts.confirmed } or nil
   return r
 end
 

@@ -145,9 +145,44 @@ function m:acids(s)
       break
     end
   end
+  -- with the addressee named before the instruction ("DLH4AX descend FL240 to put it at the same level
+  -- as KLM1234", "UAL9 heading 150 - should converge with KLM1877"), a callsign said after the
+  -- instruction's last value with words of a clause between is context, never instructed
+  local last_q = qs[#qs]
+  local addressed = false
+  if last_q and last_q.b > s.trig and upto > last_q.e and self:has_ref(last_q.e, upto, "aircraft") then
+    for _, r in ipairs(self:refs_in(s.b, s.trig, "aircraft")) do
+      if r.exists and not self:as_context(r.b) then addressed = true end
+    end
+  end
+  if addressed then
+    for _, r in ipairs(self:refs_in(last_q.e, upto, "aircraft")) do
+      local clause = false
+      for i = last_q.e, r.b - 1 do
+        local t = self.t[i]
+        if t.kind == "word" and not t.filler and not self:word(i, "and") then clause = true end
+        if self:word(i, "@correction") then clause = false break end  -- ("..., correction KLM21")
+      end
+      if clause then upto = last_q.e break end
+    end
+  end
   take(s.trig, upto)
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
+  -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" names the two aircraft instructed before
+  if #ids == 0 and self:word_in(s.b, s.e, "both") then
+    local named = {}
+    for _, r in ipairs(self:refs_in(1, s.b, "aircraft")) do
+      if r.exists and not seen[r.name] and not r.false_start and not self:as_context(r.b) and not self:in_reason(r.b) then
+        seen[r.name] = true
+        named[#named + 1] = r.name
+      end
+    end
+    if #named ~= 2 then
+      self:need("Which two aircraft does 'both' mean? Please give their callsigns.")
+    end
+    for k, id in ipairs(named) do ids[k] = id end
+  end
   if #ids == 0 and self.subject then
     -- the aircraft named for the instruction before ("EZY45 and AFR1234 maintain present heading")
     local all = self.subjects and self.subjects[1] == self.subject and self.subjects or { self.subject }

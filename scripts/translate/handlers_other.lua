@@ -86,7 +86,8 @@ return function(H, f, compass)
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig, self)
+    -- (values after the type count too: "KLM602 A320, 52.4 6.4, 270 deg, ..." has its instruction word later)
+    local lat, lon = position(qs, (types[1] and types[1].e < s.trig and types[1].b > s.b) and types[1].e or s.trig, self)
     if not lat or not lon then
       -- "10 miles north of KL204", "20 miles east of it" (the aircraft named before)
       local la, lo = self:offset_position(qs, s.b, s.e, near)
@@ -116,6 +117,18 @@ return function(H, f, compass)
       local h = self:find_word(s.b, s.e, "heading hdg facing pointing")  -- ("facing west")
       if h + 1 < s.e and compass(self.t[h + 1].text) then
         hdg = compass(self.t[h + 1].text, h + 2 < s.e and self.t[h + 2].text or "", h + 3 < s.e and self.t[h + 3].text or "")
+      end
+    end
+    -- "westbound", "on a northerly heading", "flying south": a compass point as the heading (not "10 nm
+    -- north of ...", a position)
+    for i = s.b, s.e - 1 do
+      local t = self.t[i]
+      local point = not hdg and t.kind == "word" and not self:word(i + 1, "of")
+        and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$") or t.text:match("^(%a+)wards?$")
+          or (self:word(i - 1, "@compass_verbs") and t.text))
+      if point and L.compass[point] then
+        hdg = L.compass[point]
+        self:explain(i, i + 1)
       end
     end
     -- "the same heading, level and speed as KL204", "same FL as WZZ1234"
@@ -506,8 +519,9 @@ return function(H, f, compass)
           -- ("Nantucket airport" is the airport, not the navaid of that name)
           -- (with `two_words`, a name an airport bears too stays the airport's: "London City")
           local airport = two_words and self.world.airports_named and #self.world.airports_named(phrase) > 0
+          local kind = self.t[p[2]] and self.t[p[2]].kind == "word" and L.navaid_types[self.t[p[2]].text]
           local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
-            or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm)
+            or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, kind or nil)
           local id = self:one_named(ids, "navaid", phrase, math.huge)
           if id then
             self:explain(i, p[2])
@@ -552,10 +566,8 @@ return function(H, f, compass)
   -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
   -- Capital airport": the word before is its city).
   -- (proper: only words typed with a capital, "Frankfurt")
-  -- near: `named` looks near the aircraft; then a capitalised word before a name that only one airport in
-  -- the world bears, naming no airport near it itself, is the name's city ("diverting to Bergen Flesland":
-  -- FLESLAND, ENBR; "Gotham City" stays a longer name: CITY is London's and Belfast's)
-  function m:airport_named_in(b, e, named, placed, proper_only, near)
+  -- (nearby: `named` reads near an aircraft only)
+  function m:airport_named_in(b, e, named, placed, proper_only, nearby)
     local function proper(k)
       local t = self.t[k]
       return k > 1 and t ~= nil and t.kind == "word" and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
@@ -571,13 +583,24 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
-          local city_before = near and proper(i - 1) and #named(self.t[i - 1].text) == 0
-            and #self.world.airports_named(phrase) == 1
-          local ids = ((proper(i - 1) and not city and not city_before) or proper(after)) and {} or named(phrase)
+          -- ("Eelde VOR" is the navaid, not the airport that bears its name)
+          local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")) and {}
+            or named(phrase)
+          -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the only large or medium airport
+          -- of the name near the aircraft, when the two words together name none)
+          local cls = self.world.airport_class
+          local with_city = nearby and #ids == 0 and proper(i - 1) and not proper(after) and after == i + 1 and cls
+            and #named(self.t[i - 1].text .. " " .. phrase) == 0
+          if with_city then
+            for _, id in ipairs(named(phrase)) do
+              if cls(id) == "LARGE" or cls(id) == "MEDIUM" then ids[#ids + 1] = id end
+            end
+            if #ids > 1 then ids = {} end  -- ("Gotham City": no airport of that city, one of several "City")
+          end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
-            self:explain(((city and proper(i - 1)) or city_before) and i - 1 or i, city and after + 1 or after)
+            self:explain(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
             return id
           end
         end
@@ -913,10 +936,21 @@ return function(H, f, compass)
   -- (a plural like "A320s" the lexer took for a callsign is asked about)
   function m:random_traffic(s)
     local n, alt, spd
-    for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if q.kind == "plain" and not n and q.value >= 1 and q.value <= 500 and q.value % 1 == 0 then n = self:take(q) end
+    -- ("seed 42 then 15 random ac": the count just before "random", in the segment before)
+    local from = s.b
+    for _, q in ipairs(self:word(s.trig, "random") and self:quantities(math.max(1, s.trig - 2), s.trig) or {}) do
+      if q.kind == "plain" and q.e == s.trig and not self.taken[q.b] then from = math.min(from, q.b) end
+    end
+    for _, q in ipairs(self:quantities(from, s.e)) do
+      if q.kind == "plain" and not n and q.value >= 1 and q.value <= 500 and q.value % 1 == 0
+          and not self:word(q.b - 1, "speed spd") then
+        n = self:take(q)
+      end
       if q.kind == "alt" and not alt then alt = self:take(q) end
-      if q.kind == "speed" and not spd then spd = self:take(q) end
+      -- "speed 280", "280 kts": MCRE's speed [kt]
+      if not spd and (q.kind == "speed" or (q.kind == "plain" and n and q ~= n and self:word(q.b - 1, "speed spd"))) then
+        spd = self:take(q)
+      end
     end
     if not n then return self:need("How many random aircraft should I create?") end
     local types = self:refs_in(s.b, s.e, "type")
@@ -1052,10 +1086,8 @@ return function(H, f, compass)
     -- EPPS): confirmed, never sent
     local class = self.world.airport_class
     if airport and a and a.lat and not near and class and #w == 0 then
-      local line = cmd .. " " .. id .. " " .. airport
-      self.confirm = self.confirm or { commands = { line } }
-      return self:need(string.format("The airport I found by that name is %s, more than %d NM from %s. Is that the %s? "
-        .. "(yes or no; else please give the ICAO code)", airport, L.navaid_range_nm, id, what))
+      self:confirm_before(string.format("The airport I found by that name is %s, more than %d NM from %s. Is that the "
+        .. "%s? (yes or no; else please give the ICAO code)", airport, L.navaid_range_nm, id, what))
     end
     -- (two places said for one destination, "fly to PAM next, then on to Schiphol": which?)
     if airport and #w > 0 and w[#w].name:upper() ~= airport and self:airport_meant(w[#w].name, a) ~= airport then
@@ -1145,13 +1177,14 @@ return function(H, f, compass)
         end
       end
     end
-    local state = on_off(self, s)
-    -- "enable state-based conflict detection": the method named, which is what ON switches on
-    if spec.cmd == "ASAS" and state == "ON" then
-      local k = self:find_word(1, #self.t + 1, "state statebased")
-      if k <= #self.t and (self:word(k, "statebased") or self:word(k + 1, "based")) then state = "STATEBASED" end
+    -- "detection statebased", "state-based detection": CDMETHOD's method, which is on
+    local method = spec.cmd == "ASAS" and self:find_word(s.b, s.e, "statebased state-based state")
+    if method and method < s.e and (not self:word(method, "state") or self:word(method + 1, "based")) then
+      self:explain(method, self:word(method, "state") and method + 2 or method + 1)
+      self:emit(spec.cmd .. " STATEBASED")
+    else
+      self:emit(spec.cmd .. " " .. on_off(self, s))
     end
-    self:emit(spec.cmd .. " " .. state)
     if spec.cmd ~= "ASAS" then return end
     -- "turn on CD with 5 nm and 1000 ft": the protected zone's radius and half height
     for _, q in ipairs(self:quantities(s.trig, s.e)) do
@@ -1252,6 +1285,9 @@ return function(H, f, compass)
       self:take(plain)
       return self:emit("FF " .. f.num(plain.value))
     end
+    -- "speed the simulation up by a factor of ten": a rate, no duration
+    local factor = self:find_word(s.trig, s.e, "factor")
+    if not q and factor < s.e then return self:time_mult({ b = factor, trig = factor, e = s.e }) end
     if not q then
       -- "half an hour", "a quarter of an hour": a fraction of a unit said in words
       local frac = self:find_word(s.trig + 1, s.e, "@fractions")
@@ -1309,14 +1345,23 @@ return function(H, f, compass)
         return self:emit("DTMULT " .. f.num(x))
       end
     end
-    if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
-    -- ("twice real time": the multiplier said, before "real time" alone)
+    -- ("at twice real time": the multiplier said in words, before real time alone)
     for i = s.b, s.e - 1 do
       local v = self.t[i].kind == "word" and L.multipliers[self.t[i].text]
       if v then return self:emit("DTMULT " .. f.num(v)) end
     end
+    if self:word_in(s.b, s.e, "normal") then return self:emit("DTMULT 1") end  -- "at normal speed again"
     local real = self:find_word(s.b, s.e, "real")  -- "slow the clock to real time"
-    if real < s.e and self:word(real + 1, "time") then return self:emit("DTMULT 1") end
+    if real < s.e and self:word(real + 1, "time") then
+      -- "N times real time": the factor said before the segment's "real"
+      for _, q in ipairs(self:word(real - 1, "times x") and self:quantities(real - 2, real - 1) or {}) do
+        if not self.taken[q.b] and (q.kind == "plain" or q.kind == "mult") then
+          self:take(q)
+          return self:emit("DTMULT " .. f.num(q.value))
+        end
+      end
+      return self:emit("DTMULT 1")
+    end
     self:need("How many times real time should the simulation run?")
   end
   function m:seed(s)
@@ -1361,6 +1406,14 @@ return function(H, f, compass)
         self:mark_used(i + 1, s.e)
         return self:emit("ECHO " .. self:raw(i + 1, s.e))
       end
+    end
+    -- "print baseline no reso to the console": the words between the verb and where they go, as typed
+    local to = self:find_word(s.trig + 1, s.e, "to on")
+    local at = self:word(to + 1, "the") and to + 2 or to + 1
+    if to > s.trig + 1 and to < s.e and self:word(at, "console screen display window") then
+      self:mark_used(s.trig + 1, to)
+      self:explain(to, at + 1)
+      return self:emit("ECHO " .. self:raw(s.trig + 1, to))
     end
     self:need("What text should I print?")
   end
@@ -1461,6 +1514,10 @@ return function(H, f, compass)
   end
   function m:look_ahead(s)
     local q = first(self, s, { time = true, plain = true })
+    -- "a 180 s lookahead": the time said just before the word
+    for _, b in ipairs(q and {} or self:quantities(math.max(1, s.trig - 3), s.trig)) do
+      if b.kind == "time" and b.e == s.trig and not self.taken[b.b] then q = self:take(b) end
+    end
     if q then return self:emit("DTLOOK " .. f.num(q.value)) end
     if self:asks_setting(true) then return self:emit("DTLOOK") end
     self:need("How far ahead, in seconds, should conflict detection look?")

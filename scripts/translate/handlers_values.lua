@@ -94,6 +94,22 @@ return function(H, f, wrap, compass)
         end
       end
     end
+    -- "FL240 -> FL250", "from FL240 to FL250": the level it leaves, then the one it flies to
+    local a, b = with_unit[1], with_unit[2]
+    if b then
+      local arrow, words = false, 0
+      for k = a.e, b.b - 1 do
+        local t = self.t[k]
+        if t.kind == "punct" and t.raw:find(">", 1, true) then arrow = true end
+        if t.kind ~= "punct" then words = words + 1 end
+      end
+      if (arrow and words == 0) or (self:word(a.b - 1, "from") and b.b == a.e + 1 and self:word(a.e, "to")) then
+        self:take(a)
+        self:explain(a.b, b.b)
+        if self:word(a.b - 1, "from") then self:explain(a.b - 1, a.b) end
+        table.remove(with_unit, 1)
+      end
+    end
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local now = self:state(ids[1])
     local dir = self:direction(s)
@@ -472,10 +488,9 @@ return function(H, f, wrap, compass)
       local h = from and math.floor(from.hdg_deg + offset + 0.5) or hdg
       lines[#lines + 1] = "HDG " .. a .. " " .. (from and f.int(wrap(h)) or f.num(wrap(h))) .. suffix
     end
-    -- a relative turn of more than half a circle is confirmed before it runs
+    -- a relative turn of more than half a circle is confirmed before it runs (with the rest of the request)
     if offset and math.abs(offset) > 180 then
-      self.confirm = self.confirm or { commands = lines }
-      return self:need(string.format("Turn %s %s by %s degrees, the long way round, to %s? (yes or no)",
+      self:confirm_before(string.format("Turn %s %s by %s degrees, the long way round, to %s? (yes or no)",
         table.concat(ids, ", "), way < 0 and "left" or "right", f.num(math.abs(offset)),
         lines[1]:match("^HDG %S+ (%S+)")))
     end

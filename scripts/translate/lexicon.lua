@@ -32,6 +32,11 @@ return {
       "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
       -- a position's labels as typed ("lat 51.95 lon 4.35"), and the random number generator a seed seeds
       "lat", "lon", "lng", "rng", "prng", },
+  -- registry command names that are everyday English words ("a delay", "the line"): said in a
+  -- sentence they name no command; any other registry name said ("rmethv") names its command
+  english_command_names = { "after", "area", "at", "bank", "before", "box", "call", "circle", "delay", "help",
+      "hold", "line", "lines", "noise", "run", "start", "wind", "trail", "trails", "load", "open", "continue",
+      "polygon", "reset", "seed", "echo", "perf" },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
       "and", "now", },
@@ -98,6 +103,10 @@ return {
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
+        -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
+        "located", "positioned", "situated", "ownship",
+        -- the margin a resolution keeps ("resolution margin factor 1.05")
+        "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
@@ -128,6 +137,14 @@ return {
         "can't", "cannot", "won't", "shouldn't", "mustn't", "isn't", "aren't", "wasn't", "without", "except" },
     condition = { "if", "after", "until", "till", "before", "once", "when", "whenever", "unless" },
   },
+  -- letters with accents written as navdata writes names, in plain letters ("Düsseldorf" DUSSELDORF)
+  accents = { ["à"] = "a", ["á"] = "a", ["â"] = "a", ["ã"] = "a", ["ä"] = "a", ["å"] = "a", ["ç"] = "c",
+      ["è"] = "e", ["é"] = "e", ["ê"] = "e", ["ë"] = "e", ["ì"] = "i", ["í"] = "i", ["î"] = "i", ["ï"] = "i",
+      ["ñ"] = "n", ["ò"] = "o", ["ó"] = "o", ["ô"] = "o", ["õ"] = "o", ["ö"] = "o", ["ø"] = "o", ["ù"] = "u",
+      ["ú"] = "u", ["û"] = "u", ["ü"] = "u", ["ý"] = "y", ["ÿ"] = "y", ["ß"] = "ss", ["À"] = "A", ["Á"] = "A",
+      ["Â"] = "A", ["Ä"] = "A", ["Å"] = "A", ["Ç"] = "C", ["È"] = "E", ["É"] = "E", ["Ê"] = "E", ["Ë"] = "E",
+      ["Í"] = "I", ["Î"] = "I", ["Ñ"] = "N", ["Ó"] = "O", ["Ô"] = "O", ["Ö"] = "O", ["Ø"] = "O", ["Ú"] = "U",
+      ["Ü"] = "U" },
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
   hesitations = { "ah", "uh", "um", "er" },
@@ -189,7 +206,7 @@ return {
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
-  route_nouns = { "route", "plan", "path", "routing" },
+  route_nouns = { "route", "plan", "path", "routing", "rte" },
   articles_new = { "a", "an", "new", "second", "another" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names
@@ -209,6 +226,8 @@ return {
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause", "due" },
   reason_after_so = { "that", "it", "they", "it's", "its", "we" },
+  -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
+  purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
       "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz" },
@@ -232,6 +251,9 @@ return {
   -- turns and compass points
   left = { "left" },
   right = { "right" },
+  -- verbs of going before a compass point that is the heading ("flying south")
+  compass_verbs = { "flying", "heading", "going", "tracking", "travelling", "traveling", "moving", "pointing",
+      "facing", "flies", "headed" },
   compass = { north = 0, east = 90, south = 180, west = 270,
               northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
   -- fractions of an hour or a minute said in words ("half an hour", "a quarter of an hour")
@@ -316,6 +338,8 @@ return {
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
+  -- the navdata types a kind said after a navaid's name means ("the Eelde VOR" is EEL, not the NDB SO)
+  navaid_types = { vor = "VOR TACAN", vortac = "VOR TACAN", ndb = "NDB", dme = "DME" },
   -- DEFWPT's waypoint types, said after "as" or "type" ("define DELTA at 51.9 4.1 as a fix")
   waypoint_types = { fix = "FIX", vor = "VOR", dme = "DME", ndb = "NDB" },
   -- pronouns: never read as a name ("add it to the route" is no waypoint "IT")

@@ -243,7 +243,7 @@ function M.world(sim, waypoints)
            airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
            airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
            airport_class = function(id) return sim:airport_class(id) end,
-           navaids_named = function(name, lat, lon, nm) return sim:navaids_named(name, lat, lon, nm) end,
+           navaids_named = function(name, lat, lon, nm, types) return sim:navaids_named(name, lat, lon, nm, types) end,
            airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end }
 end
 
@@ -256,7 +256,7 @@ function M.offline(state, ctx)
     M.say(state, "offline", "asks: " .. tr.ask)
     return "ask"
   end
-  state.note = tr.note
+  state.note, state.confirm_first = tr.note, tr.confirm_first
   if tr.note then M.say(state, "offline", "not simulated: " .. tr.note) end
   if tr.note and #tr.commands == 0 then
     state.commands = {}

@@ -69,7 +69,7 @@ return function(intent, rule, words)
                       handler = "conflict_intruder", absorbs = true, single = true }
   intent "dtlook" { cmd = "DTLOOK", args = { "seconds" }, handler = "look_ahead" }
   intent "noise" { cmd = "NOISE", args = { "ON", "OFF" }, handler = "switch" }
-  intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic" }
+  intent "mcre" { cmd = "MCRE", args = { "n" }, handler = "random_traffic", absorbs = true }
   intent "area" { cmd = "AREA", args = { "shapename", "ON", "OFF" }, handler = "area" }
   intent "circle" { cmd = "CIRCLE", args = { "name", "radius" }, handler = "circle" }
   intent "box" { cmd = "BOX", args = { "name" }, handler = "box" }
@@ -78,6 +78,29 @@ return function(intent, rule, words)
   -- an instruction announced with "expect" is no clearance
   rule { "*", false, prev = { 2, "@not_a_clearance" } }
   rule { "*", false, prev = { 3, "advise" }, when = function(g, i) return g:preceded_by(i, 2, "able") end }  -- "advise when able direct X"
+  -- "BAW918 A320 @ TEBRO hdg 170 FL320 M0.78", "ac: AAL2307 B772 ...": a request (or its part after a
+  -- label and colon) that opens with a callsign no aircraft has and its type, then values: a new aircraft
+  -- (before any other rule: the first word after the type, "hdg", starts the creation)
+  rule { "*", "create", when = function(g, i)
+    if g.opening_create == nil then
+      g.opening_create = false  -- (computed once per request: the rule is tried at every word)
+      local colon = 0
+      for k = 1, #g.t do if g.t[k].kind == "punct" and g.t[k].text == ":" then colon = k break end end
+      local j = colon + 1
+      while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
+      local r = g:refs_in(j, j + 1, "aircraft")[1]
+      local ty = r and not r.exists and r.b == j and g:refs_in(r.e, r.e + 2, "type")[1]
+      local labelled = colon > 0 and (#g:quantities(1, colon) > 0 or #g:refs_in(1, colon, "aircraft") > 0)
+      if ty and not labelled and #g:quantities(ty.e, #g.t + 1) > 0 then
+        local at = ty.e  -- (fired at the first word after the type)
+        while g.t[at] and (g.t[at].kind ~= "word" or g.u:used(at)) do at = at + 1 end
+        local said = false  -- ("new ac: BAW77, B744, ...": said by the label already)
+        for k = 1, colon - 1 do said = said or g:intent_at(k) == "create" end
+        g.opening_create = not said and g.t[at] ~= nil and at
+      end
+    end
+    return g.opening_create == i
+  end }
 
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
@@ -261,11 +284,12 @@ return function(intent, rule, words)
   end }
   rule { "addwpt", "addwpt" }
   rule { "delwpt", "delwpt" }
-  rule { "create", "defwpt", near = { 3, "fix waypoint wpt" } }
+  rule { "create make", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
+  rule { "mcre", "mcre" }
   rule { "random", "mcre", when = function(g, i)
     local t = g.t[g:word(i - 1, "@more") and i - 2 or i - 1]  -- ("3 more random ones")
     return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
@@ -302,7 +326,14 @@ return function(intent, rule, words)
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
-  rule { "via", "addwpt", prev = { 3, "route" } }
+  rule { "via through", "addwpt", prev = { 3, "route" } }
+  -- "EZY45 route: SPY, BERGI", "route for UAL9: BEDUM, EEL, then ARTIP": a route written as a list
+  rule { "route rte", "addwpt", when = function(g, i)
+    local k = i + 1
+    if g:word(k, "for of") and g:has_ref(k + 1, k + 2, "aircraft") then k = g:refs_in(k + 1, k + 2, "aircraft")[1].e end
+    local t = g.t[k]
+    return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(k + 1, k + 2, "waypoint")
+  end }
   -- "define TGT2 at ... and send KL204 to it", "... and route UAL9 through it": the waypoint just
   -- defined joins the route
   rule { "send route take", "addwpt", when = function(g, i)
@@ -310,6 +341,15 @@ return function(intent, rule, words)
     for k = 1, i - 1 do defined = defined or g:intent_at(k) == "defwpt" end
     local it = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "it")
     return defined and it <= #g.t and g:word(it - 1, "to through via over")
+  end }
+  -- "CFG4RK add NORKU, dest Bremen": a waypoint, a clause of its own, added for an aircraft that flies
+  rule { "add append", "addwpt", when = function(g, i)
+    local flying = false
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do flying = flying or r.exists end
+    local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    local nx = r and g.t[r.e]
+    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= "."))
+      and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
   -- next to another, the place said after "after"/"before" before or after the verb
@@ -356,7 +396,7 @@ return function(intent, rule, words)
     end
     return false
   end }
-  rule { "remove delete del skip", "delwpt", near = { 8, "@route_nouns" },
+  rule { "remove delete del skip drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
   rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
@@ -420,7 +460,7 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
+  rule { "route rte waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "show me KLM one two seven six's route": the verb before the aircraft the route is of
   rule { "route waypoints plan routing", "listrte", when = function(g, i)
@@ -430,10 +470,10 @@ return function(intent, rule, words)
     return false
   end }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
-  rule { "route", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
+  rule { "route rte", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
   rule { "route", "listrte", next = "of", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
-  rule { "listrte rte", "listrte" }
+  rule { "listrte", "listrte" }
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
@@ -546,9 +586,11 @@ return function(intent, rule, words)
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
     return i + 1 > #g.t or g.t[i + 1].kind == "punct" or g:followed_by(i, 3, "@sim") or g:word(i + 1, "running and")
-      or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x"))))
+      or (g:word(i + 1, "at") and (g:word(i + 2, "@multipliers") or (g.t[i + 3] and g:word(i + 3, "x times"))))
   end }
   rule { "real", false, prev = { 1, "than" } }
+  -- ("resume at 5 times real time": the rate of the resume, read by it)
+  rule { "real", false, prev = { 1, "x times @multipliers" }, when = function(g, i) return g:preceded_by(i, 7, "continue resume") end }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times @multipliers" } }  -- ("twice real time")
   -- "slow the clock to real time": the rate the clock is set to, no start of it
   rule { "real", false, prev = { 1, "to" }, next = "time", when = function(g, i)

@@ -415,7 +415,9 @@ do -- turn letters typed before "hdg" or after its value; "by N" turns by N; "th
   check_eq(tr("ryr5fe hdg 060 l fl150", w), "HDG RYR5FE 60 LEFT ; ALT RYR5FE FL150")
   check_eq(tr("ryr5fe rt hdg 120 fl350", w), "HDG RYR5FE 120 RIGHT ; ALT RYR5FE FL350")
   check_eq(tr("ryr5fe turn right by 20", w), "HDG RYR5FE 140 RIGHT")
-  check(grammar.translate("ryr5fe turn right by 200", w).commands[1] == nil, "a turn by more than 180 is confirmed")
+  local long = grammar.translate("ryr5fe turn right by 200 and climb FL300", w)
+  check((long.confirm_first or ""):find("the long way round", 1, true) ~= nil, "a turn by more than 180 is confirmed")
+  check_eq(table.concat(long.commands, " ; "), "HDG RYR5FE 320 RIGHT ; ALT RYR5FE FL300")
   check_eq(tr("RYR5FE please go to the heading of 200 degree on the right side", w), "HDG RYR5FE 200 RIGHT")
   check_eq(tr("bring RYR5FE round left onto two nine zero and down to eight thousand feet", w),
     "HDG RYR5FE 290 LEFT ; ALT RYR5FE 8000")

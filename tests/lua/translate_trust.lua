@@ -179,6 +179,15 @@ check_eq(said(d:say("delete KLM77")), "DEL KLM77")
 d = dialogue()
 check(d:say("KLM1234 turn left 200 degrees").ask ~= nil, "the long turn asks")
 check_eq(said(d:say("affirm")), "HDG KLM1234 100 LEFT")
+-- a yes runs the whole request, not only what was asked about, and each question is asked once
+d = dialogue()
+check(d:say("KLM1234 turn left 200 degrees and climb FL300").ask ~= nil, "the long turn asks")
+check_eq(said(d:say("yes")), "HDG KLM1234 100 LEFT ; ALT KLM1234 FL300")
+d = dialogue()
+check(d:say("KLM1243 turn left 200 degrees and climb FL300").ask:find("Did you mean KLM1234", 1, true) ~= nil,
+  "the callsign is asked about first")
+check(said(d:say("yes")):find("long way round", 1, true) ~= nil, "then the long turn")
+check_eq(said(d:say("yes")), "HDG KLM1234 100 LEFT ; ALT KLM1234 FL300")
 
 -- 6. what squawk does not simulate is named, the rest runs
 r = tr("KLM1234 squawk 7700")
@@ -1024,4 +1033,72 @@ do
   check_eq(ut("create BAW9 A320 at 55 decimal 5 north 4 point 25 west heading 020 FL270 280 knots"),
     "CRE BAW9 A320 55.5 -4.25 20 FL270 280")
   check_eq(ut("KLM1276 heading 270 point 5"), "ASK I have HDG KLM1276 270. What does '5' mean?")
+end
+-- An experiment session set up at the command box (R23)
+do
+  local ex = squawk.sim.new()
+  for _, line in ipairs({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+      "CRE KLM77 B738 52.1 4.5 180 FL150 250" }) do
+    check(ex:exec(line))
+  end
+  local function et(text) return said(graph.translate(text, { sim = ex, mode = "offline" })) end
+  -- the addressee is named before the instruction; traffic named in its purpose is context
+  check_eq(et("DLH4AX descend FL240 to put it level with KLM77"), "ALT DLH4AX FL240")
+  check_eq(et("KLM77 turn left heading 200 to separate from KLM1234"), "HDG KLM77 200 LEFT")
+  check_eq(et("KLM1234 heading 090 to cross behind DLH4AX"), "HDG KLM1234 90")
+  check_eq(et("DLH4AX heading 270 - should pass behind KLM77"), "HDG DLH4AX 270")
+  -- a registry name no rule reads is asked about, never dropped beside what was read
+  local r = graph.translate("rmethv off - horizontal resolutions only", { sim = ex, mode = "offline" })
+  check(r.ask ~= nil and r.ask:find("'rmethv'", 1, true) ~= nil, said(r))
+  -- the clock resumed at a rate
+  check_eq(et("resume at 3 times real time"), "OP ; DTMULT 3")
+  check_eq(et("continue the simulation at twice real time"), "OP ; DTMULT 2")
+  check_eq(et("speed up the sim by a factor of 5"), "DTMULT 5")
+  -- "both" after the values of two aircraft; a value clause before the first instruction word
+  check_eq(et("KLM1234 FL300 and DLH4AX FL310, both 260 knots"),
+    "ALT KLM1234 FL300 ; ALT DLH4AX FL310 ; SPD KLM1234 260 ; SPD DLH4AX 260")
+  check(et("KLM1234 FL300, DLH4AX FL310, KLM77 FL320, both 260 knots"):find("^ASK Which two") ~= nil,
+    "'both' with three aircraft named asks")
+  check_eq(et("KLM77 FL140, then fast forward 2 minutes"), "ALT KLM77 FL140 ; FF 120")
+  -- a level arrow, from the one to the other
+  check_eq(et("KLM77 FL150 -> FL170"), "ALT KLM77 FL170")
+  check_eq(et("KLM77 from FL150 to FL130, speed 240"), "ALT KLM77 FL130 ; SPD KLM77 240")
+  -- a new aircraft in notebook shorthand, no verb; a compass point as its heading
+  check_eq(et("EZY12 A320 52.3 4.6 hdg 270 FL200 250"), "CRE EZY12 A320 52.3 4.6 270 FL200 250")
+  check_eq(et("ac: EZY13 A319, 52.1 4.1, heading 045, FL180, 240 kts"), "CRE EZY13 A319 52.1 4.1 45 FL180 240")
+  check_eq(et("create EZY14 A320 at 52.0 4.0, eastbound, FL200, 250 knots"), "CRE EZY14 A320 52 4 90 FL200 250")
+  check_eq(et("create EZY15 A320 located at 52.0 4.0 on a southerly heading, FL200, 250 knots"),
+    "CRE EZY15 A320 52 4 180 FL200 250")
+  -- random traffic with its type, level and speed; the detection method; a lookahead before its noun
+  check_eq(et("spawn 4 random A320s at FL250, speed 260"), "MCRE 4 A320 FL250 260")
+  check_eq(et("seed 7 then 12 random ac"), "SEED 7 ; MCRE 12")
+  check_eq(et("conflict detection state-based"), "ASAS STATEBASED")
+  check_eq(et("a 240 s lookahead, then detection on"), "DTLOOK 240 ; ASAS ON")
+  check_eq(et("print run 3 started to the console"), "ECHO run 3 started")
+  check_eq(et("remove KLM77, not required any more"), "DEL KLM77")
+  -- a level or speed at a waypoint of the aircraft's route is AT; at another, squawk asks
+  check(ex:exec("DEFWPT TULIP 52.5 4.6"))
+  check(ex:exec("ADDWPT KLM77 TULIP"))
+  local function wt(text) return said(graph.translate(text, { sim = ex, mode = "offline", waypoints = { "TULIP" } })) end
+  check_eq(wt("KLM77 at TULIP descend FL100"), "AT KLM77 TULIP ALT FL100")
+  check_eq(wt("KLM77 at TULIP speed 220"), "AT KLM77 TULIP SPD 220")
+  check(wt("DLH4AX at TULIP speed 220"):find("^ASK Should that happen at TULIP") ~= nil, "TULIP is no waypoint of DLH4AX")
+end
+
+-- Places of the navdata said the way an experimenter writes them (R23): accents, a city before
+-- the airport's name, a navaid's kind, a route as a list
+do
+  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
+  if not ok then
+    print("skipped: R23 place names need BlueSky's navdata at ../shared/bluesky/navdata")
+  else
+    check(nav:exec("CRE KLM1234 B738 52.2 4.2 300 FL250 280"))
+    local function pt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+    check_eq(pt("KLM1234 destination Düsseldorf"), "DEST KLM1234 EDDL")
+    check_eq(pt("KLM1234 dest Amsterdam Schiphol"), "DEST KLM1234 EHAM")
+    check_eq(pt("create KLM5 B738 @ Eelde VOR hdg 090 FL100 250kt"), "CRE KLM5 B738 EEL 90 FL100 250")
+    check_eq(pt("KLM1234 route: SPY, PAM"), "ADDWPT KLM1234 SPY ; ADDWPT KLM1234 PAM")
+    check_eq(pt("give KLM1234 a route through SPY and PAM"), "ADDWPT KLM1234 SPY ; ADDWPT KLM1234 PAM")
+    check_eq(pt("KLM1234 add PAM, dest Bremen"), "ADDWPT KLM1234 PAM ; DEST KLM1234 EDDW")
+  end
 end
