@@ -1017,10 +1017,14 @@ end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200": a constraint at a waypoint
+    -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200", "put a constraint on AEA44 at ORBIS,
+    -- FL250": a constraint at a waypoint
     local crossed = self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at")
-    local constrained = self:word(r.b - 1, "at") and self:word(r.b - 2, "constraint restriction")
-      and self:word(self:skip_fillers(r.e), "to of")
+    local after = self:skip_fillers(r.e)
+    if self.t[after] and self.t[after].kind == "punct" then after = self:skip_fillers(after + 1) end
+    local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
+      and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")
+        or self:word(after, "fl flight"))
     if crossed or constrained then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])

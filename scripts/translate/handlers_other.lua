@@ -258,6 +258,15 @@ return function(H, f, compass)
         dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
       end
     end
+    -- "from the left" crosses at +dpsi, "from its right" at -dpsi (360 - dpsi): the side said alone is a
+    -- crossing at 90 degrees
+    local from = self:find_word(s.b, s.e, "from")
+    local side = from < s.e and (self:word(from + 1, "@left @right") and from + 1
+      or self:word(from + 1, "the its his her their") and self:word(from + 2, "@left @right") and from + 2)
+    if side and dpsi ~= 180 then
+      dpsi = dpsi or 90
+      if self:word(side, "@right") then dpsi = (360 - dpsi) % 360 end
+    end
     if not dpsi then
       return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?")
     end
@@ -1259,6 +1268,12 @@ return function(H, f, compass)
       if unit < s.e then
         local seconds = L.fractions[self.t[frac].text] * (self:word(unit, "hour") and 3600 or 60)
         return self:emit("FF " .. f.num(seconds))
+      end
+      -- "an hour", "a minute": one of the unit
+      local one = self:find_word(s.trig + 1, s.e, "a an")
+      if one + 1 < s.e and self:word(one + 1, "hour minute second") then
+        self:mark_used(one, one + 2)
+        return self:emit("FF " .. f.num(UNIT_S[self.t[one + 1].text]))
       end
       -- "fast forward" alone runs fast-time until stopped ("until I say stop" says so); more
       -- words ("a bit", "an hour and a half") said a duration that was not understood

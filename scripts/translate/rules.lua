@@ -109,6 +109,18 @@ return function(intent, rule, words)
     return false
   end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
+  -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its
+  -- aircraft between them, is no change of level
+  rule { "up down", false, when = function(g, i)
+    if g:word(i - 1, "it him her them") and g:word(i - 2, "slow speed") then return true end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == i then
+        local b = g:word(r.b - 1, "the") and r.b - 1 or r.b
+        if g:word(b - 1, "slow speed") then return true end
+      end
+    end
+    return false
+  end }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
   -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level
   rule { "go", "alt", next = "to", when = function(g, i)
@@ -276,6 +288,13 @@ return function(intent, rule, words)
     return g:followed_by(i, 4, "@intruder")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
   end }
+  -- "intruder on IBE2604: INT1, B738, from the right, CPA 0, 250 s", "give TAP123 a head-on intruder, INT2,
+  -- B738, CPA 2 miles": the noun alone, no verb of creation before it, sets one up when its type and
+  -- closest approach or loss are said
+  rule { "intruder", "creconfs", when = function(g, i)
+    return not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
+      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
+  end }
   -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
   -- aircraft with no callsign is random traffic
   rule { "create spawn generate add sample", "mcre", when = function(g, i)
@@ -292,6 +311,8 @@ return function(intent, rule, words)
   rule { "add append insert", "addwpt", near = { 8, "@waypoint_nouns" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "as") and g:has_ref(i + 1, #g.t + 1, "aircraft")
   end }
+  -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
+  rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
@@ -511,6 +532,8 @@ return function(intent, rule, words)
   rule { "go resume continue unpause", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
+  -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
+  rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "go", "resume (please)": the whole request starts the clock
@@ -533,12 +556,15 @@ return function(intent, rule, words)
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x twice thrice" },
          when = function(g, i) return g:followed_by(i, 3, "@sim") end }
-  -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s": a duration straight after the verb (the
-  -- sim named between, or nothing) is how far to fast-forward
+  -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s", "run fast for an hour": a duration straight
+  -- after the verb (the sim named between, or nothing; "fast" and "for" before it) is how far to fast-forward
   rule { "run advance step", "ff", not_prev = { 1, "time" }, not_near = { 7, "real times faster x twice thrice" },
          when = function(g, i)
     local k = g:skip_fillers(i + 1)
     if g:word(k, "@sim") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "fast quickly ahead") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "for") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "hour minute") and g:word(k - 1, "a an") then return true end  -- ("for an hour")
     local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
     return q ~= nil and q.b == k and q.kind == "time"
   end }
