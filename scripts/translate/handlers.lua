@@ -123,7 +123,7 @@ function m:acids(s)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
-          and not self:as_context(r.b) and not self:in_reason(r.b) then
+          and not self:as_context(r.b) and not self:in_reason(r.b) and not self:compared_with(r.b) then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -185,6 +185,13 @@ function m:as_context(i)
     if self:word(k, "@aircraft_context") then return true end
   end
   return false
+end
+
+-- True when the aircraft named at i is the one compared with ("on the same level as the Iberia, FL330"):
+-- "as" (and "the") before it, "same" within the 5 words before that.
+function m:compared_with(i)
+  local k = self:word(i - 1, "the") and i - 2 or i - 1
+  return self:word(k, "as") and self:word_in(math.max(1, k - 5), k, "same")
 end
 
 -- An airline said with no flight number ("KLM, climb ..."): the question
