@@ -227,6 +227,13 @@ return function(H, f, compass)
   -- from 60 degrees", "head-on": 180), the distance at closest approach ("cpa 0", "passing 1 mile",
   -- "zero miss distance") and the time to loss of separation ("los in 200 s"); "1000 ft above it
   -- with vertical LoS at 180 s" adds dh and tlosv. Each is asked for when not said.
+  local function first_speed(self, s)
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "speed" and not self.taken[q.b] then return q end
+    end
+    return nil
+  end
+
   function m:conflict_intruder(s)
     local id, target
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
@@ -236,33 +243,47 @@ return function(H, f, compass)
     if not id and named + 1 < s.e and self.t[named + 1].kind == "word" then id = self.t[named + 1].raw:upper() end
     local actype = (self:refs_in(s.b, s.e, "type")[1] or {}).name
     if not id or not actype then return self:need("What callsign and aircraft type should the intruder have?") end
+    -- ("intruder on the Speedbird, I2, A320": the one aircraft of the airline said, the new one named after it)
+    for i = s.b, s.e - 1 do
+      local icao, e = self:airline_at(i)
+      local fits = not target and icao and self:word(i - 1, "the") and self:airline_fleet(icao) or {}
+      if #fits == 1 then
+        target = fits[1]
+        self:explain(i, e)
+      end
+    end
     if not target then return self:need("Which aircraft should " .. id .. " conflict with?") end
     local dpsi, cpa, tlosh, dh, tlosv
     for k = s.b, s.e - 1 do
       if self:word(k, "@head_on") and (self.t[k].text ~= "head" or self:word(k + 1, "on")) then dpsi = 180 end
     end
+    -- "from the left" crosses at +dpsi, "from its right" at -dpsi (360 - dpsi), "from the right at ninety"
+    -- says it as a bare number; the side said alone is a crossing at 90 degrees
+    local from = self:find_word(s.b, s.e, "from")
+    local side = from < s.e and (self:word(from + 1, "@left @right") and from + 1
+      or self:word(from + 1, "the its his her their") and self:word(from + 2, "@left @right") and from + 2)
     local vertical = self:find_word(s.b, s.e, "vertical")
     local times = {}  -- the times said: one alone, with no vertical part, is the time to loss of separation
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
       if q.kind == "time" then times[#times + 1] = q end
-      if q.kind == "angle" and not dpsi then
+      -- (a bare number beside the closest approach's word is its distance: "cpa 0", "1 mile cpa")
+      local beside = self:word(q.b - 1, "@closest_approach distance") or self:word(q.e, "@closest_approach")
+      if (q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at")))
+          and not dpsi then
         dpsi = self:take(q).value
-      elseif (q.kind == "dist" or q.kind == "plain") and not cpa and near("@closest_approach") then
+      elseif (q.kind == "dist" and not cpa and near("@closest_approach"))
+          or (q.kind == "plain" and not cpa and beside) then
         cpa = self:take(q).value
       elseif q.kind == "time" and q.b > vertical and dh and not tlosv then
         tlosv = self:take(q).value
-      elseif q.kind == "time" and not tlosh and near("@loss_of_separation separation") then
+      elseif not tlosh and ((q.kind == "time" and near("@loss_of_separation separation"))
+          or (q.kind == "plain" and self:word(q.b - 1, "@loss_of_separation"))) then  -- ("tlos 300")
         tlosh = self:take(q).value
       elseif q.kind == "alt" and not dh and self:word(q.e, "@above @below") then
         dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
       end
     end
-    -- "from the left" crosses at +dpsi, "from its right" at -dpsi (360 - dpsi): the side said alone is a
-    -- crossing at 90 degrees
-    local from = self:find_word(s.b, s.e, "from")
-    local side = from < s.e and (self:word(from + 1, "@left @right") and from + 1
-      or self:word(from + 1, "the its his her their") and self:word(from + 2, "@left @right") and from + 2)
     if side and dpsi ~= 180 then
       dpsi = dpsi or 90
       if self:word(side, "@right") then dpsi = (360 - dpsi) % 360 end
@@ -271,12 +292,19 @@ return function(H, f, compass)
       return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?")
     end
     if not cpa then return self:need("How close, in nautical miles, should " .. id .. " pass " .. target .. "?") end
-    if not tlosh and not dh and #times == 1 then tlosh = self:take(times[1]).value end
+    -- (one time said before the vertical part, no word of loss beside it: "1 mile CPA, 400 seconds, 1000
+    -- feet below with vertical loss at 300 s")
+    local before = {}
+    for _, q in ipairs(times) do if q.b < vertical and not self.taken[q.b] then before[#before + 1] = q end end
+    if not tlosh and #before == 1 and (dh or #times == 1) then tlosh = self:take(before[1]).value end
     if not tlosh then
       return self:need("In how many seconds should " .. id .. " lose separation with " .. target .. "?")
     end
     local cmd = string.format("CRECONFS %s %s %s %s %s %s", id, actype, target, f.num(dpsi), f.num(cpa), f.num(tlosh))
     if dh then cmd = cmd .. " " .. f.num(dh) .. (tlosv and " " .. f.num(tlosv) or "") end
+    -- its speed, after the vertical part ("..., vertical loss at 300 s, 280 knots")
+    local spd = dh and tlosv and first_speed(self, s)
+    if spd then cmd = cmd .. " " .. f.num(self:take(spd).value) end
     self:emit(cmd)
     self:mark_used(s.b, s.e)  -- the description read whole ("zero miss distance", "LoS after 4 minutes")
     self.created = self.created or {}

@@ -364,7 +364,7 @@ return {
   -- or after its closest approach, its loss of separation and a head-on course
   intruder = { "intruder", "conflict" },
   closest_approach = { "cpa", "miss", "passing" },
-  loss_of_separation = { "los" },
+  loss_of_separation = { "los", "tlos", "tlosh" },
   head_on = { "head-on", "head" },
   -- the clock reaching a time ("when the clock hits 45 minutes")
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
