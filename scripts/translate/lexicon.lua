@@ -77,7 +77,9 @@ return {
         "think", "guess", "believe", "suppose", "reckon", "wonder", "hope", "prefer", "realise", "realize",
         "know", "remember", "forget", "forgot", "notice", "grateful", "thankful",
         -- verbs of the speaker's own talk ("while I explain this")
-        "explain", "brief", "talk", "discuss", "speak" },
+        "explain", "brief", "talk", "discuss", "speak",
+        -- an experimenter watching what a run does ("let's watch it", "see the effect")
+        "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
@@ -95,6 +97,7 @@ return {
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
+        "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
@@ -113,6 +116,8 @@ return {
         "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
         -- squawk's own display, where a command shows or draws what it is asked
         "console", "screen", "display", "window", "map", "scope", "draw" },
+    -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
+    prefixes = { "co", "non", "pre", "semi", "sub", "multi" },
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",

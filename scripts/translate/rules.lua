@@ -83,6 +83,11 @@ return function(intent, rule, words)
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
   rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }
+  -- "stop the Iberia's descent, vertical speed zero", "stop the climb, level off, VS zero": the climb or
+  -- descent stopped by the vertical speed said, no level
+  rule { "climb climbing descend descending descent level", false, prev = { 3, "stop halt" },
+         near = { 6, "vs vertical" } }
+  rule { "level", false, next = "off", prev = { 6, "stop halt" }, near = { 4, "vs vertical" } }
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
   -- "cruise at mach .79", "cruise at 280 knots": a speed, when the value after the verb is one
@@ -480,8 +485,13 @@ return function(intent, rule, words)
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
+  -- "place EZY45, A319, at 38.4 N 6.6 W heading 290": a callsign no aircraft has, with its type, is created
+  rule { "place", "create", when = function(g, i)
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 3), "aircraft")[1]
+    return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
+  end }
   rule { "move mv reposition teleport shift place relocate", "move" }
-  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course" } }
+  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course route" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place
   rule { "put place", "move", when = function(g, i)
@@ -589,7 +599,7 @@ return function(intent, rule, words)
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation
-  rule { "reset", false, near = { 3, "protected pz rpz zone zoner separation radius" } }
+  rule { "reset", false, near = { 3, "protected protection pz rpz zone zoner separation radius" } }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -639,7 +649,7 @@ return function(intent, rule, words)
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
-  rule { "protected pz rpz separation zone zoner zonedh radius", "zone" }
+  rule { "protected protection pz rpz separation zone zoner zonedh radius", "zone" }
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
