@@ -581,6 +581,11 @@ function G:in_reason(i)
         inside = false
       elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then
         inside = true
+      elseif t.kind == "punct" and self:word(k + 1, "we") and self:word(k + 2, "@purpose_verbs")
+          and not self:word_in(k + 3, math.min(#self.t + 1, k + 5), "you") then
+        -- (", we want it crossing the Speedbird's track", ", we don't need fine resolution": the purpose
+        -- said after the instruction; ", we need you to climb" instructs)
+        inside = true
       end
     end
   end

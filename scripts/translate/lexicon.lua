@@ -213,6 +213,8 @@ return {
   -- words that open the reason given for an instruction (to the end of its
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause", "due" },
+  -- verbs of the experimenter's purpose after a comma (", we want it crossing ..."): a reason
+  purpose_verbs = { "want", "need", "don't", "dont", "wanna" },
   reason_after_so = { "that", "it", "they", "it's", "its", "we" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
