@@ -1815,9 +1815,9 @@ function M.translate(text, world)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   text = written_forms(text)
-  -- type names with their digits said as words, where traffic is created
+  -- type names with their digits said as words, where traffic is created (random traffic too)
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
-      or text:lower():find("%f[%a]add") then
+      or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]random") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
   local u = squawk.translate.utterance(types.join(text, TYPES.phrases),

@@ -955,9 +955,19 @@ return function(H, f, compass)
       if q.kind == "alt" and not alt then alt = self:take(q) end
       if q.kind == "speed" and not spd then spd = self:take(q) end
     end
+    -- ("12 random aircraft" with one aircraft flying: the count the callsign matcher read as its flight number)
+    local k = self:word(s.trig - 1, "@more") and s.trig - 2 or s.trig - 1
+    local counted = not n and self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word) and self.t[k].num
+    if counted and counted >= 1 and counted <= 500 and counted % 1 == 0 then
+      n = { value = counted }
+      self:explain(k, k + 1)
+      self:mark_used(k, k + 1)
+    end
     if not n then return self:need("How many random aircraft should I create?") end
     local types = self:refs_in(s.b, s.e, "type")
-    if #self:refs_in(s.b, s.e, "aircraft") > 0 then
+    local named = 0
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do if r.b ~= k or not counted then named = named + 1 end end
+    if named > 0 then
       return self:need("Which aircraft type should the random aircraft be? Please give its ICAO designator.")
     end
     -- "all going to Schiphol": MCRE's destination (an airport or waypoint said after "to")

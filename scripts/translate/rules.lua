@@ -283,6 +283,13 @@ return function(intent, rule, words)
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
+  -- "random traffic, 20 aircraft": the count said after
+  rule { "random", "mcre", next = "traffic", when = function(g, i)
+    for k = i + 2, math.min(#g.t, i + 5) do
+      if g.t[k].kind == "number" and g:word(k + 1, "@counted_aircraft") then return true end
+    end
+    return false
+  end }
   rule { "random", "mcre", when = function(g, i)
     local t = g.t[g:word(i - 1, "@more") and i - 2 or i - 1]  -- ("3 more random ones")
     return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
