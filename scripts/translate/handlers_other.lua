@@ -669,7 +669,13 @@ return function(H, f, compass)
       added = added or self.out[c]:match("^ADDWPT " .. id:gsub("%p", "%%%0") .. " ([^%s,]+)$")
         or self.out[c]:match("^DEST " .. id:gsub("%p", "%%%0") .. " (%a+)$")  -- ("dest EHAM and direct to it")
     end
-    local wp = added and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
+    -- "send AEA44 straight to the airport", "direct to its destination": the destination it has
+    local dest_word = self:find_word(s.trig + 1, s.e, "airport destination")
+    local to_dest = a and a.dest and a.dest ~= "" and dest_word < s.e and self:word(dest_word - 1, "the its his her")
+      and #self:refs_in(s.trig, s.e, "waypoint") == 0 and (dest_word + 1 >= s.e or self.t[dest_word + 1].kind == "punct")
+      and a.dest
+    if to_dest then self:explain(dest_word - 1, dest_word + 1) end
+    local wp = to_dest or added and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
         and added or self:waypoint(s.trig, s.e, id)
     if not wp and a and a.route and #a.route == 1 then wp = a.route[1] end
     wp = wp or self:spoken_name(s.trig + 1, s.e)
@@ -681,7 +687,7 @@ return function(H, f, compass)
         if r:lower() == wp:lower() then in_route = true end
         has[r:upper()] = true
       end
-      if added and added:lower() == wp:lower() then in_route = true end
+      if (added and added:lower() == wp:lower()) or wp == to_dest then in_route = true end
       -- "after FYNER proceed direct PTH": from a waypoint of its route on, a new one: inserted after it
       local at = self:find_word(s.b, s.trig, "after")
       local from = at < s.trig and self:refs_in(at + 1, at + 2, "waypoint")[1]

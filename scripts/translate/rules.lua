@@ -421,6 +421,7 @@ return function(intent, rule, words)
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata
   rule { "send", "dest", when = function(g, i)
     local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
+    if g:word(to - 1, "straight direct directly") then return false end  -- ("send it straight to Barcelona")
     for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
       if r.name:match("^%a%a%a%a$") then return true end
     end
