@@ -1192,7 +1192,7 @@ return function(H, f, compass)
     -- only when said ("turn on detection every 2 seconds")
     if spec.cmd == "ASAS" then
       for _, q in ipairs(self:quantities(s.b, s.e)) do
-        if q.kind == "time" and self:word(q.b - 1, "every each") then
+        if q.kind == "time" and self:word(q.b - 1, "every each interval") then  -- ("update interval 2 s")
           if self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
           return self:emit("DT ASAS " .. f.num(self:take(q).value))
         end

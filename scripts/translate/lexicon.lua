@@ -97,7 +97,7 @@ return {
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
-        "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer",
+        "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
@@ -206,7 +206,9 @@ return {
            "descending", "decelerate", "minus", "subtract" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
-                       "than", "traffic", "meet", "meets", "catch" },
+                       "than", "traffic", "meet", "meets", "catch",
+                       -- "out of the way of INT1"
+                       "way" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but" },

@@ -1069,6 +1069,9 @@ do
   -- random traffic: the count after, a count that reads like a flight number, plural designators
   check_eq(lt("random traffic, 15 aircraft"), "MCRE 15")
   check_eq(lt("12 random aircraft, all B738s"), "MCRE 12 B738")
+  -- an aircraft kept out of the way of is context; the interval of conflict detection
+  check_eq(lt("RYR81JC climb FL340 to get out of the way of AEA44"), "ALT RYR81JC FL340")
+  check_eq(lt("conflict detection update interval 3 seconds"), "DT ASAS 3")
   -- "straight to" is a direct-to; "the airport" is the aircraft's destination
   check_eq(lt("send RYR81JC straight to WPA"), "ADDWPT RYR81JC WPA ; DIRECT RYR81JC WPA")
 end
