@@ -107,6 +107,9 @@ end
 -- 1 on, 0 off, -1 not said.
 function m:on_off(s)
   local b = (s.b > 1 and self:word(s.b - 1, "off on")) and s.b - 1 or s.b
+  -- "drifting off its route, put it back on LNAV": switched back on, whatever went off before
+  local back = self:find_word(b, s.e, "back")
+  if back < s.e and self:word(back + 1, "on") then return 1 end
   if self:word_in(b, s.e, "@off") or self:word_in(s.b, s.e, "@off_after") then return 0 end
   if self:word_in(b, s.e, "@on") then return 1 end
   return -1

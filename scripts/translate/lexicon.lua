@@ -98,6 +98,8 @@ return {
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
         "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
+        -- an aircraft's present course described ("the Vueling's drifting off its route")
+        "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",

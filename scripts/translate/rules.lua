@@ -326,7 +326,7 @@ return function(intent, rule, words)
   -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
   rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
-         when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
+         when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
   -- "add Lambourne to the end of the Air France's route": a navaid or airport said by its one-word name
   rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
@@ -336,6 +336,8 @@ return function(intent, rule, words)
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
   rule { "via", "addwpt", prev = { 3, "route" } }
+  -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
+  rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   -- "define TGT2 at ... and send KL204 to it", "... and route UAL9 through it": the waypoint just
   -- defined joins the route
   rule { "send route take", "addwpt", when = function(g, i)

@@ -1072,6 +1072,9 @@ do
   -- an aircraft kept out of the way of is context; the interval of conflict detection
   check_eq(lt("RYR81JC climb FL340 to get out of the way of AEA44"), "ALT RYR81JC FL340")
   check_eq(lt("conflict detection update interval 3 seconds"), "DT ASAS 3")
+  -- switched back on whatever went off before; a waypoint flown via is added with its level and speed
+  check_eq(lt("AEA44 is drifting off its route, put it back on LNAV"), "LNAV AEA44 ON")
+  check_eq(lt("have RYR81JC fly via WPA at FL300 and 270 knots"), "ADDWPT RYR81JC WPA FL300 270")
   -- "straight to" is a direct-to; "the airport" is the aircraft's destination
   check_eq(lt("send RYR81JC straight to WPA"), "ADDWPT RYR81JC WPA ; DIRECT RYR81JC WPA")
 end
