@@ -355,6 +355,14 @@ return function(intent, rule, words)
   end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
+  -- "make a Vueling at SOTUK, VLG77, A320, ...": an airline after the article, and a new callsign of it
+  rule { "add put make", "create", next = "@articles_new", when = function(g, i)
+    local icao = g:airline_at(i + 2)
+    for _, r in ipairs(icao and g:refs_in(i + 3, math.min(#g.t + 1, i + 10), "aircraft") or {}) do
+      if not r.exists and r.name:upper():sub(1, #icao) == icao then return true end
+    end
+    return false
+  end }
   -- "add a Nor Shuttle seven seven five, Boeing 737-800, at GOTUR": a new aircraft's callsign said in
   -- words before its type, which comes before any place
   rule { "add put", "create", next = "@articles_new", when = function(g, i)

@@ -1075,6 +1075,8 @@ do
   -- switched back on whatever went off before; a waypoint flown via is added with its level and speed
   check_eq(lt("AEA44 is drifting off its route, put it back on LNAV"), "LNAV AEA44 ON")
   check_eq(lt("have RYR81JC fly via WPA at FL300 and 270 knots"), "ADDWPT RYR81JC WPA FL300 270")
+  -- an airline after the article, its new callsign after a place, is a new aircraft
+  check_eq(lt("make a Ryanair at WPA, RYR12, B738, heading east, FL300, 280 knots"), "CRE RYR12 B738 WPA 90 FL300 280")
   -- "straight to" is a direct-to; "the airport" is the aircraft's destination
   check_eq(lt("send RYR81JC straight to WPA"), "ADDWPT RYR81JC WPA ; DIRECT RYR81JC WPA")
 end
