@@ -149,6 +149,20 @@ function m:acids(s)
     end
   end
   take(s.trig, upto)
+  -- "EZY45 reduce to 240, the KLM will come right over it": an aircraft after a comma that a clause of its
+  -- own follows is talked about, not addressed, when the instruction's own aircraft was named before it
+  if #ids > 0 and self:has_ref(s.b, s.trig, "aircraft") then
+    for _, r in ipairs(self:refs_in(s.trig, upto, "aircraft")) do
+      local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      local nx = self.t[r.e]
+      if r.name == ids[1] and self.t[k] and self.t[k].kind == "punct" and nx and nx.kind == "word"
+          and not nx.filler then
+        ids, seen = {}, {}
+        take(s.b, s.trig)
+        break
+      end
+    end
+  end
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
   if #ids == 0 and self.subject then

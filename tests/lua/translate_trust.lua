@@ -1077,6 +1077,10 @@ do
   check_eq(lt("have RYR81JC fly via WPA at FL300 and 270 knots"), "ADDWPT RYR81JC WPA FL300 270")
   -- an airline after the article, its new callsign after a place, is a new aircraft
   check_eq(lt("make a Ryanair at WPA, RYR12, B738, heading east, FL300, 280 knots"), "CRE RYR12 B738 WPA 90 FL300 280")
+  -- an aircraft after a comma with a clause of its own is talked about, not addressed
+  check_eq(lt("AEA44 reduce to 240, the Ryanair will come right over it"), "SPD AEA44 240")
+  check_eq(lt("AEA44 descend FL280, the Ryanair is right behind"), "ALT AEA44 FL280")
+  check_eq(lt("descend FL280, Ryanair eight one juliet charlie"), "ALT RYR81JC FL280")
   -- "straight to" is a direct-to; "the airport" is the aircraft's destination
   check_eq(lt("send RYR81JC straight to WPA"), "ADDWPT RYR81JC WPA ; DIRECT RYR81JC WPA")
 end
