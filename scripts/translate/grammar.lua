@@ -587,6 +587,11 @@ function G:in_reason(i)
         inside = false
       elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then
         inside = true
+      elseif t.kind == "punct" and self:word(k + 1, "we") and self:word(k + 2, "@purpose_verbs")
+          and not self:word_in(k + 3, math.min(#self.t + 1, k + 5), "you") then
+        -- (", we want it crossing the Speedbird's track", ", we don't need fine resolution": the purpose
+        -- said after the instruction; ", we need you to climb" instructs)
+        inside = true
       end
     end
   end
@@ -1050,11 +1055,14 @@ end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200", "at NORKU cross FL200", "at ELDAR
-    -- speed 250": a constraint at a waypoint
+    -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200", "put a constraint on AEA44 at ORBIS,
+    -- FL250", "at NORKU cross FL200", "at ELDAR speed 250": a constraint at a waypoint
     local crossed = self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at")
-    local constrained = self:word(r.b - 1, "at") and self:word(r.b - 2, "constraint restriction")
-      and self:word(self:skip_fillers(r.e), "to of")
+    local after = self:skip_fillers(r.e)
+    if self.t[after] and self.t[after].kind == "punct" then after = self:skip_fillers(after + 1) end
+    local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
+      and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")
+        or self:word(after, "fl flight"))
     local opening = self:word(r.b - 1, "at")
       and r.b - 1 == self:skip_fillers(s.b) + (self:has_ref(s.b, r.b, "aircraft") and 1 or 0)
     if crossed or constrained or opening then
@@ -1882,7 +1890,7 @@ function M.translate(text, world)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   text = written_forms(text)
-  -- type names with their digits said as words, where traffic is created
+  -- type names with their digits said as words, where traffic is created (random traffic too)
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
       or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]mcre") or text:lower():find("%f[%a]random") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)

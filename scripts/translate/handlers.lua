@@ -107,6 +107,9 @@ end
 -- 1 on, 0 off, -1 not said.
 function m:on_off(s)
   local b = (s.b > 1 and self:word(s.b - 1, "off on")) and s.b - 1 or s.b
+  -- "drifting off its route, put it back on LNAV": switched back on, whatever went off before
+  local back = self:find_word(b, s.e, "back")
+  if back < s.e and self:word(back + 1, "on") then return 1 end
   if self:word_in(b, s.e, "@off") or self:word_in(s.b, s.e, "@off_after") then return 0 end
   if self:word_in(b, s.e, "@on") then return 1 end
   return -1
@@ -123,7 +126,7 @@ function m:acids(s)
     for _, r in ipairs(self:refs_in(b, e, "aircraft")) do
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
-          and not self:as_context(r.b) and not self:in_reason(r.b) then
+          and not self:as_context(r.b) and not self:in_reason(r.b) and not self:compared_with(r.b) then
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -167,6 +170,20 @@ function m:acids(s)
     end
   end
   take(s.trig, upto)
+  -- "EZY45 reduce to 240, the KLM will come right over it": an aircraft after a comma that a clause of its
+  -- own follows is talked about, not addressed, when the instruction's own aircraft was named before it
+  if #ids > 0 and self:has_ref(s.b, s.trig, "aircraft") then
+    for _, r in ipairs(self:refs_in(s.trig, upto, "aircraft")) do
+      local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      local nx = self.t[r.e]
+      if r.name == ids[1] and self.t[k] and self.t[k].kind == "punct" and nx and nx.kind == "word"
+          and not nx.filler then
+        ids, seen = {}, {}
+        take(s.b, s.trig)
+        break
+      end
+    end
+  end
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
   -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" names the two aircraft instructed before
@@ -220,6 +237,13 @@ function m:as_context(i)
     if self:word(k, "@aircraft_context") then return true end
   end
   return false
+end
+
+-- True when the aircraft named at i is the one compared with ("on the same level as the Iberia, FL330"):
+-- "as" (and "the") before it, "same" within the 5 words before that.
+function m:compared_with(i)
+  local k = self:word(i - 1, "the") and i - 2 or i - 1
+  return self:word(k, "as") and self:word_in(math.max(1, k - 5), k, "same")
 end
 
 -- An airline said with no flight number ("KLM, climb ..."): the question

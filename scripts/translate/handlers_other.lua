@@ -240,6 +240,13 @@ return function(H, f, compass)
   -- from 60 degrees", "head-on": 180), the distance at closest approach ("cpa 0", "passing 1 mile",
   -- "zero miss distance") and the time to loss of separation ("los in 200 s"); "1000 ft above it
   -- with vertical LoS at 180 s" adds dh and tlosv. Each is asked for when not said.
+  local function first_speed(self, s)
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "speed" and not self.taken[q.b] then return q end
+    end
+    return nil
+  end
+
   function m:conflict_intruder(s)
     local id, target
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
@@ -249,38 +256,68 @@ return function(H, f, compass)
     if not id and named + 1 < s.e and self.t[named + 1].kind == "word" then id = self.t[named + 1].raw:upper() end
     local actype = (self:refs_in(s.b, s.e, "type")[1] or {}).name
     if not id or not actype then return self:need("What callsign and aircraft type should the intruder have?") end
+    -- ("intruder on the Speedbird, I2, A320": the one aircraft of the airline said, the new one named after it)
+    for i = s.b, s.e - 1 do
+      local icao, e = self:airline_at(i)
+      local fits = not target and icao and self:word(i - 1, "the") and self:airline_fleet(icao) or {}
+      if #fits == 1 then
+        target = fits[1]
+        self:explain(i, e)
+      end
+    end
     if not target then return self:need("Which aircraft should " .. id .. " conflict with?") end
     local dpsi, cpa, tlosh, dh, tlosv
     for k = s.b, s.e - 1 do
       if self:word(k, "@head_on") and (self.t[k].text ~= "head" or self:word(k + 1, "on")) then dpsi = 180 end
     end
+    -- "from the left" crosses at +dpsi, "from its right" at -dpsi (360 - dpsi), "from the right at ninety"
+    -- says it as a bare number; the side said alone is a crossing at 90 degrees
+    local from = self:find_word(s.b, s.e, "from")
+    local side = from < s.e and (self:word(from + 1, "@left @right") and from + 1
+      or self:word(from + 1, "the its his her their") and self:word(from + 2, "@left @right") and from + 2)
     local vertical = self:find_word(s.b, s.e, "vertical")
     local times = {}  -- the times said: one alone, with no vertical part, is the time to loss of separation
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       local near = function(words) return self:word_in(math.max(s.b, q.b - 2), math.min(s.e, q.e + 3), words) end
       if q.kind == "time" then times[#times + 1] = q end
-      if q.kind == "angle" and not dpsi then
+      -- (a bare number beside the closest approach's word is its distance: "cpa 0", "1 mile cpa")
+      local beside = self:word(q.b - 1, "@closest_approach distance") or self:word(q.e, "@closest_approach")
+      if (q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at")))
+          and not dpsi then
         dpsi = self:take(q).value
-      elseif (q.kind == "dist" or q.kind == "plain") and not cpa and near("@closest_approach") then
+      elseif (q.kind == "dist" and not cpa and near("@closest_approach"))
+          or (q.kind == "plain" and not cpa and beside) then
         cpa = self:take(q).value
       elseif q.kind == "time" and q.b > vertical and dh and not tlosv then
         tlosv = self:take(q).value
-      elseif q.kind == "time" and not tlosh and near("@loss_of_separation separation") then
+      elseif not tlosh and ((q.kind == "time" and near("@loss_of_separation separation"))
+          or (q.kind == "plain" and self:word(q.b - 1, "@loss_of_separation"))) then  -- ("tlos 300")
         tlosh = self:take(q).value
       elseif q.kind == "alt" and not dh and self:word(q.e, "@above @below") then
         dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
       end
     end
+    if side and dpsi ~= 180 then
+      dpsi = dpsi or 90
+      if self:word(side, "@right") then dpsi = (360 - dpsi) % 360 end
+    end
     if not dpsi then
       return self:need("At what angle, in degrees, should " .. id .. " cross the track of " .. target .. "?")
     end
     if not cpa then return self:need("How close, in nautical miles, should " .. id .. " pass " .. target .. "?") end
-    if not tlosh and not dh and #times == 1 then tlosh = self:take(times[1]).value end
+    -- (one time said before the vertical part, no word of loss beside it: "1 mile CPA, 400 seconds, 1000
+    -- feet below with vertical loss at 300 s")
+    local before = {}
+    for _, q in ipairs(times) do if q.b < vertical and not self.taken[q.b] then before[#before + 1] = q end end
+    if not tlosh and #before == 1 and (dh or #times == 1) then tlosh = self:take(before[1]).value end
     if not tlosh then
       return self:need("In how many seconds should " .. id .. " lose separation with " .. target .. "?")
     end
     local cmd = string.format("CRECONFS %s %s %s %s %s %s", id, actype, target, f.num(dpsi), f.num(cpa), f.num(tlosh))
     if dh then cmd = cmd .. " " .. f.num(dh) .. (tlosv and " " .. f.num(tlosv) or "") end
+    -- its speed, after the vertical part ("..., vertical loss at 300 s, 280 knots")
+    local spd = dh and tlosv and first_speed(self, s)
+    if spd then cmd = cmd .. " " .. f.num(self:take(spd).value) end
     self:emit(cmd)
     self:mark_used(s.b, s.e)  -- the description read whole ("zero miss distance", "LoS after 4 minutes")
     self.created = self.created or {}
@@ -655,7 +692,13 @@ return function(H, f, compass)
       added = added or self.out[c]:match("^ADDWPT " .. id:gsub("%p", "%%%0") .. " ([^%s,]+)$")
         or self.out[c]:match("^DEST " .. id:gsub("%p", "%%%0") .. " (%a+)$")  -- ("dest EHAM and direct to it")
     end
-    local wp = added and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
+    -- "send AEA44 straight to the airport", "direct to its destination": the destination it has
+    local dest_word = self:find_word(s.trig + 1, s.e, "airport destination")
+    local to_dest = a and a.dest and a.dest ~= "" and dest_word < s.e and self:word(dest_word - 1, "the its his her")
+      and #self:refs_in(s.trig, s.e, "waypoint") == 0 and (dest_word + 1 >= s.e or self.t[dest_word + 1].kind == "punct")
+      and a.dest
+    if to_dest then self:explain(dest_word - 1, dest_word + 1) end
+    local wp = to_dest or added and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
         and added or self:waypoint(s.trig, s.e, id)
     if not wp and a and a.route and #a.route == 1 then wp = a.route[1] end
     wp = wp or self:spoken_name(s.trig + 1, s.e)
@@ -667,7 +710,7 @@ return function(H, f, compass)
         if r:lower() == wp:lower() then in_route = true end
         has[r:upper()] = true
       end
-      if added and added:lower() == wp:lower() then in_route = true end
+      if (added and added:lower() == wp:lower()) or wp == to_dest then in_route = true end
       -- "after FYNER proceed direct PTH": from a waypoint of its route on, a new one: inserted after it
       local at = self:find_word(s.b, s.trig, "after")
       local from = at < s.trig and self:refs_in(at + 1, at + 2, "waypoint")[1]
@@ -952,9 +995,19 @@ return function(H, f, compass)
         spd = self:take(q)
       end
     end
+    -- ("12 random aircraft" with one aircraft flying: the count the callsign matcher read as its flight number)
+    local k = self:word(s.trig - 1, "@more") and s.trig - 2 or s.trig - 1
+    local counted = not n and self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word) and self.t[k].num
+    if counted and counted >= 1 and counted <= 500 and counted % 1 == 0 then
+      n = { value = counted }
+      self:explain(k, k + 1)
+      self:mark_used(k, k + 1)
+    end
     if not n then return self:need("How many random aircraft should I create?") end
     local types = self:refs_in(s.b, s.e, "type")
-    if #self:refs_in(s.b, s.e, "aircraft") > 0 then
+    local named = 0
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do if r.b ~= k or not counted then named = named + 1 end end
+    if named > 0 then
       return self:need("Which aircraft type should the random aircraft be? Please give its ICAO designator.")
     end
     -- "all going to Schiphol": MCRE's destination (an airport or waypoint said after "to")
@@ -1171,7 +1224,7 @@ return function(H, f, compass)
     -- only when said ("turn on detection every 2 seconds")
     if spec.cmd == "ASAS" then
       for _, q in ipairs(self:quantities(s.b, s.e)) do
-        if q.kind == "time" and self:word(q.b - 1, "every each") then
+        if q.kind == "time" and self:word(q.b - 1, "every each interval") then  -- ("update interval 2 s")
           if self:on_off(s) >= 0 then self:emit("ASAS " .. on_off(self, s)) end
           return self:emit("DT ASAS " .. f.num(self:take(q).value))
         end
@@ -1295,6 +1348,12 @@ return function(H, f, compass)
       if unit < s.e then
         local seconds = L.fractions[self.t[frac].text] * (self:word(unit, "hour") and 3600 or 60)
         return self:emit("FF " .. f.num(seconds))
+      end
+      -- "an hour", "a minute": one of the unit
+      local one = self:find_word(s.trig + 1, s.e, "a an")
+      if one + 1 < s.e and self:word(one + 1, "hour minute second") then
+        self:mark_used(one, one + 2)
+        return self:emit("FF " .. f.num(UNIT_S[self.t[one + 1].text]))
       end
       -- "fast forward" alone runs fast-time until stopped ("until I say stop" says so); more
       -- words ("a bit", "an hour and a half") said a duration that was not understood

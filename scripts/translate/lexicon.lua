@@ -82,7 +82,9 @@ return {
         "think", "guess", "believe", "suppose", "reckon", "wonder", "hope", "prefer", "realise", "realize",
         "know", "remember", "forget", "forgot", "notice", "grateful", "thankful",
         -- verbs of the speaker's own talk ("while I explain this")
-        "explain", "brief", "talk", "discuss", "speak" },
+        "explain", "brief", "talk", "discuss", "speak",
+        -- an experimenter watching what a run does ("let's watch it", "see the effect")
+        "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
@@ -100,6 +102,9 @@ return {
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
+        "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
+        -- an aircraft's present course described ("the Vueling's drifting off its route")
+        "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
@@ -122,6 +127,8 @@ return {
         "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
         -- squawk's own display, where a command shows or draws what it is asked
         "console", "screen", "display", "window", "map", "scope", "draw" },
+    -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
+    prefixes = { "co", "non", "pre", "semi", "sub", "multi" },
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
@@ -218,13 +225,17 @@ return {
            "descending", "decelerate", "minus", "subtract" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
-                       "than", "traffic", "meet", "meets", "catch" },
+                       "than", "traffic", "meet", "meets", "catch",
+                       -- "out of the way of INT1"
+                       "way" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but" },
   -- words that open the reason given for an instruction (to the end of its
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause", "due" },
+  -- verbs of the experimenter's purpose after a comma (", we want it crossing ..."): a reason
+  purpose_verbs = { "want", "need", "don't", "dont", "wanna" },
   reason_after_so = { "that", "it", "they", "it's", "its", "we" },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
@@ -388,7 +399,7 @@ return {
   -- or after its closest approach, its loss of separation and a head-on course
   intruder = { "intruder", "conflict" },
   closest_approach = { "cpa", "miss", "passing" },
-  loss_of_separation = { "los" },
+  loss_of_separation = { "los", "tlos", "tlosh" },
   head_on = { "head-on", "head" },
   -- the clock reaching a time ("when the clock hits 45 minutes")
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },

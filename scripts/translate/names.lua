@@ -152,6 +152,7 @@ return {
     { "luxair", "LGL" },
     { "spanair", "JKK" },
     { "air europa", "AEA" },
+    { "europa", "AEA" },
     { "vueling", "VLG" },
     { "air malta", "AMC" },
     { "adria", "ADR" },

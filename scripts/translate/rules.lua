@@ -94,8 +94,9 @@ return function(intent, rule, words)
       if ty and not labelled and #g:quantities(ty.e, #g.t + 1) > 0 then
         local at = ty.e  -- (fired at the first word after the type)
         while g.t[at] and (g.t[at].kind ~= "word" or g.u:used(at)) do at = at + 1 end
-        local said = false  -- ("new ac: BAW77, B744, ...": said by the label already)
-        for k = 1, colon - 1 do said = said or g:intent_at(k) == "create" end
+        -- ("new ac: BAW77, B744, ...", "intruder on the Europa: T2, B738, ...": said by the label already)
+        local said = false
+        for k = 1, colon - 1 do said = said or g:intent_at(k) ~= nil end
         g.opening_create = not said and g.t[at] ~= nil and at
       end
     end
@@ -106,6 +107,11 @@ return function(intent, rule, words)
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
   rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }
+  -- "stop the Iberia's descent, vertical speed zero", "stop the climb, level off, VS zero": the climb or
+  -- descent stopped by the vertical speed said, no level
+  rule { "climb climbing descend descending descent level", false, prev = { 3, "stop halt" },
+         near = { 6, "vs vertical" } }
+  rule { "level", false, next = "off", prev = { 6, "stop halt" }, near = { 4, "vs vertical" } }
   -- "desc rate 1500": the verb gives the sign of a vertical speed
   rule { "climb descend desc clb", false, next = "rate" }
   -- "cruise at mach .79", "cruise at 280 knots": a speed, when the value after the verb is one
@@ -132,6 +138,18 @@ return function(intent, rule, words)
     return false
   end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
+  -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its
+  -- aircraft between them, is no change of level
+  rule { "up down", false, when = function(g, i)
+    if g:word(i - 1, "it him her them") and g:word(i - 2, "slow speed") then return true end
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == i then
+        local b = g:word(r.b - 1, "the") and r.b - 1 or r.b
+        if g:word(b - 1, "slow speed") then return true end
+      end
+    end
+    return false
+  end }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
   -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level
   rule { "go", "alt", next = "to", when = function(g, i)
@@ -290,6 +308,13 @@ return function(intent, rule, words)
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
   rule { "mcre", "mcre" }
+  -- "random traffic, 20 aircraft": the count said after
+  rule { "random", "mcre", next = "traffic", when = function(g, i)
+    for k = i + 2, math.min(#g.t, i + 5) do
+      if g.t[k].kind == "number" and g:word(k + 1, "@counted_aircraft") then return true end
+    end
+    return false
+  end }
   rule { "random", "mcre", when = function(g, i)
     local t = g.t[g:word(i - 1, "@more") and i - 2 or i - 1]  -- ("3 more random ones")
     return t ~= nil and (t.number_word or tonumber(t.text) ~= nil) and not g:followed_by(i, 2, "seed")
@@ -298,6 +323,13 @@ return function(intent, rule, words)
   -- called TEST1 ... head-on, passing 1 mile, LoS after 4 minutes": an intruder set up to conflict
   rule { "create spawn generate creat cre make new add put", "creconfs", when = function(g, i)
     return g:followed_by(i, 4, "@intruder")
+      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
+  end }
+  -- "intruder on IBE2604: INT1, B738, from the right, CPA 0, 250 s", "give TAP123 a head-on intruder, INT2,
+  -- B738, CPA 2 miles": the noun alone, no verb of creation before it, sets one up when its type and
+  -- closest approach or loss are said
+  rule { "intruder", "creconfs", when = function(g, i)
+    return not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
   end }
   -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
@@ -316,8 +348,10 @@ return function(intent, rule, words)
   rule { "add append insert", "addwpt", near = { 8, "@waypoint_nouns" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "as") and g:has_ref(i + 1, #g.t + 1, "aircraft")
   end }
+  -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
+  rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
-         when = function(g, i) return g:has_ref(i + 1, i + 7, "waypoint") end }
+         when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
   -- "add Lambourne to the end of the Air France's route": a navaid or airport said by its one-word name
   rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
@@ -334,6 +368,8 @@ return function(intent, rule, words)
     local t = g.t[k]
     return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(k + 1, k + 2, "waypoint")
   end }
+  -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
+  rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   -- "define TGT2 at ... and send KL204 to it", "... and route UAL9 through it": the waypoint just
   -- defined joins the route
   rule { "send route take", "addwpt", when = function(g, i)
@@ -360,6 +396,14 @@ return function(intent, rule, words)
   end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
+  -- "make a Vueling at SOTUK, VLG77, A320, ...": an airline after the article, and a new callsign of it
+  rule { "add put make", "create", next = "@articles_new", when = function(g, i)
+    local icao = g:airline_at(i + 2)
+    for _, r in ipairs(icao and g:refs_in(i + 3, math.min(#g.t + 1, i + 10), "aircraft") or {}) do
+      if not r.exists and r.name:upper():sub(1, #icao) == icao then return true end
+    end
+    return false
+  end }
   -- "add a Nor Shuttle seven seven five, Boeing 737-800, at GOTUR": a new aircraft's callsign said in
   -- words before its type, which comes before any place
   rule { "add put", "create", next = "@articles_new", when = function(g, i)
@@ -428,6 +472,7 @@ return function(intent, rule, words)
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata
   rule { "send", "dest", when = function(g, i)
     local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
+    if g:word(to - 1, "straight direct directly") then return false end  -- ("send it straight to Barcelona")
     for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
       if r.name:match("^%a%a%a%a$") then return true end
     end
@@ -499,8 +544,13 @@ return function(intent, rule, words)
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
+  -- "place EZY45, A319, at 38.4 N 6.6 W heading 290": a callsign no aircraft has, with its type, is created
+  rule { "place", "create", when = function(g, i)
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 3), "aircraft")[1]
+    return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
+  end }
   rule { "move mv reposition teleport shift place relocate", "move" }
-  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course" } }
+  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course route" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place
   rule { "put place", "move", when = function(g, i)
@@ -551,6 +601,8 @@ return function(intent, rule, words)
   rule { "go resume continue unpause", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
+  -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
+  rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "go", "resume (please)": the whole request starts the clock
@@ -573,12 +625,15 @@ return function(intent, rule, words)
   rule { "run advance", "ff", near = { 7, "for minutes minute seconds second hours hour min sec" },
          not_near = { 7, "real times faster x twice thrice" },
          when = function(g, i) return g:followed_by(i, 3, "@sim") end }
-  -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s": a duration straight after the verb (the
-  -- sim named between, or nothing) is how far to fast-forward
+  -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s", "run fast for an hour": a duration straight
+  -- after the verb (the sim named between, or nothing; "fast" and "for" before it) is how far to fast-forward
   rule { "run advance step", "ff", not_prev = { 1, "time" }, not_near = { 7, "real times faster x twice thrice" },
          when = function(g, i)
     local k = g:skip_fillers(i + 1)
     if g:word(k, "@sim") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "fast quickly ahead") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "for") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "hour minute") and g:word(k - 1, "a an") then return true end  -- ("for an hour")
     local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
     return q ~= nil and q.b == k and q.kind == "time"
   end }
@@ -605,7 +660,7 @@ return function(intent, rule, words)
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation
-  rule { "reset", false, near = { 3, "protected pz rpz zone zoner separation radius" } }
+  rule { "reset", false, near = { 3, "protected protection pz rpz zone zoner separation radius" } }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -655,7 +710,7 @@ return function(intent, rule, words)
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
-  rule { "protected pz rpz separation zone zoner zonedh radius", "zone" }
+  rule { "protected protection pz rpz separation zone zoner zonedh radius", "zone" }
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }

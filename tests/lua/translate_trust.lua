@@ -1102,3 +1102,62 @@ do
     check_eq(pt("KLM1234 add PAM, dest Bremen"), "ADDWPT KLM1234 PAM ; DEST KLM1234 EDDW")
   end
 end
+
+-- Lab talk of an experimenter at the scope (round 27's classes, sentences written here)
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE RYR81JC B738 52.0 4.0 010 FL320 280", "CRE AEA44 B738 52.3 4.3 135 FL300 290",
+      "CRE IBE2604 A321 52.5 4.6 035 FL330 290", "DEFWPT WPA 52.6 4.9", "ADDWPT AEA44 WPA" }) do
+    check(lab:exec(line))
+  end
+  local function lt(text) return said(graph.translate(text, { sim = lab, mode = "offline", waypoints = { "WPA" } })) end
+  -- a speed verb's particle with its aircraft between is no change of level
+  check_eq(lt("slow the Ryanair down to 250"), "SPD RYR81JC 250")
+  check_eq(lt("could you slow it down to 240, RYR81JC"), "SPD RYR81JC 240")
+  check_eq(lt("bring the Ryanair down to FL250"), "ALT RYR81JC FL250")
+  -- an intruder from the right crosses at 360 - angle, the side alone at 90; the noun alone sets one up;
+  -- a bare number after "at" is the angle, never the closest approach
+  check_eq(lt("put an intruder on AEA44, T1, A320, from the right at ninety, CPA 1.5 nm, loss in 360 seconds"),
+    "CRECONFS T1 A320 AEA44 270 1.5 360")
+  check_eq(lt("intruder on the Europa: T2, B738, from its left, cpa zero, tlos 200"), "CRECONFS T2 B738 AEA44 90 0 200")
+  check_eq(lt("an intruder for RYR81JC please, T3, A321, from the right at 30 degrees, 2 miles CPA, 300 s"),
+    "CRECONFS T3 A321 RYR81JC 330 2 300")
+  check_eq(lt("intruder on RYR81JC, T4, A320, head-on, cpa 0, 240 seconds, 1000 feet below with vertical loss at "
+    .. "180 s, 250 knots"), "CRECONFS T4 A320 RYR81JC 180 0 240 -1000 180 250")
+  -- the clock: a duration after "run (fast) for", "an hour"; "start again" as a clause of its own
+  check_eq(lt("set the seed to 99 and run fast for an hour"), "SEED 99 ; FF 3600")
+  check_eq(lt("fast forward a minute"), "FF 60")
+  check_eq(lt("pause, time step 0.2, then start again"), "HOLD ; DT 0.2 ; OP")
+  -- a constraint at a waypoint of the route is AT, never a move; without a value it is asked
+  check_eq(lt("put a constraint on AEA44 at WPA, FL250"), "AT AEA44 WPA ALT FL250")
+  check(lt("put a constraint on AEA44 at WPA"):find("^ASK") ~= nil)
+  -- the aircraft compared with is not the subject
+  check_eq(lt("put RYR81JC on the same level as the Iberia, FL330, so they meet"), "ALT RYR81JC FL330")
+  -- a climb or descent stopped by a vertical speed; back on the route
+  check_eq(lt("stop the Ryanair's climb, vertical speed zero"), "VS RYR81JC 0")
+  check_eq(lt("put AEA44 back on its route"), "LNAV AEA44 ON")
+  -- a callsign no aircraft has, placed with its type, is created
+  check_eq(lt("place TAP9, A320, at 52.1 N 4.2 E heading 090, FL200 and 250 knots"), "CRE TAP9 A320 52.1 4.2 90 FL200 250")
+  -- accounted: a hyphen's prefix, an experimenter watching, a setting shrunk, a purpose after a comma
+  check_eq(lt("RYR81JC descend FL300, we need it co-altitude with the Europa"), "ALT RYR81JC FL300")
+  check_eq(lt("ok let's watch the effect: fast forward 2 minutes"), "FF 120")
+  check_eq(lt("shrink the PZ to 3 nm"), "ZONER 3")
+  check_eq(lt("time step 0.5, we don't need fine resolution today"), "DT 0.5")
+  -- random traffic: the count after, a count that reads like a flight number, plural designators
+  check_eq(lt("random traffic, 15 aircraft"), "MCRE 15")
+  check_eq(lt("12 random aircraft, all B738s"), "MCRE 12 B738")
+  -- an aircraft kept out of the way of is context; the interval of conflict detection
+  check_eq(lt("RYR81JC climb FL340 to get out of the way of AEA44"), "ALT RYR81JC FL340")
+  check_eq(lt("conflict detection update interval 3 seconds"), "DT ASAS 3")
+  -- switched back on whatever went off before; a waypoint flown via is added with its level and speed
+  check_eq(lt("AEA44 is drifting off its route, put it back on LNAV"), "LNAV AEA44 ON")
+  check_eq(lt("have RYR81JC fly via WPA at FL300 and 270 knots"), "ADDWPT RYR81JC WPA FL300 270")
+  -- an airline after the article, its new callsign after a place, is a new aircraft
+  check_eq(lt("make a Ryanair at WPA, RYR12, B738, heading east, FL300, 280 knots"), "CRE RYR12 B738 WPA 90 FL300 280")
+  -- an aircraft after a comma with a clause of its own is talked about, not addressed
+  check_eq(lt("AEA44 reduce to 240, the Ryanair will come right over it"), "SPD AEA44 240")
+  check_eq(lt("AEA44 descend FL280, the Ryanair is right behind"), "ALT AEA44 FL280")
+  check_eq(lt("descend FL280, Ryanair eight one juliet charlie"), "ALT RYR81JC FL280")
+  -- "straight to" is a direct-to; "the airport" is the aircraft's destination
+  check_eq(lt("send RYR81JC straight to WPA"), "ADDWPT RYR81JC WPA ; DIRECT RYR81JC WPA")
+end
