@@ -327,7 +327,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     // unless they are one or two digits said singly with an instruction word after them
     // ("Lufthansa four zero four climb" is DLH404 heard, not DLH40 and a stray four): a
     // value is said in three digits or more, or comes after its instruction word or
-    // before its unit, never as a digit or two bare before the word
+    // before its unit, never as a digit or two bare before the word (a comma between
+    // them too: "Wizz Air three zero five two, correction, ...")
     const std::string said_prefix = id.substr(0, id.size() - suf.joined(suf.groups.size()).size());
     size_t said = m.groups;
     const bool single_digits =
@@ -336,14 +337,16 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
                     [](const std::string& g) {
                       return g.size() == 1 && std::isdigit(static_cast<unsigned char>(g[0]));
                     });
-    if (const size_t e = suf.ends.back(); single_digits && e < t.size() && is_word(t[e]) &&
-                                          names.vocabulary().is_keyword(t[e].text) &&
-                                          !is_unit_word(t[e].text))
+    size_t e = suf.ends.back();
+    while (e < t.size() && t[e].kind == TokKind::kPunct && t[e].text == ",") ++e;
+    if (single_digits && e < t.size() && is_word(t[e]) && names.vocabulary().is_keyword(t[e].text) &&
+        !is_unit_word(t[e].text))
       said = suf.groups.size();
+    const size_t matched = said;  // groups the reference spans: the digits said singly too
     while (said < suf.groups.size() && !std::isdigit(static_cast<unsigned char>(suf.groups[said][0]))) ++said;
     heard = {said_prefix + text::upper(suf.joined(said)), m.airline, m.digits};
     id = m.id;
-    end = suf.ends[m.groups - 1];
+    end = suf.ends[std::max(matched, m.groups) - 1];
     return true;
   };
   // Telephony designator + digits/letters.

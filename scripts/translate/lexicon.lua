@@ -82,7 +82,9 @@ return {
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
-        "readback", "read-back", "incorrect", "said" },
+        "readback", "read-back", "incorrect", "said",
+        -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
+        "identified", "identification" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",

@@ -1025,3 +1025,26 @@ do
     "CRE BAW9 A320 55.5 -4.25 20 FL270 280")
   check_eq(ut("KLM1276 heading 270 point 5"), "ASK I have HDG KLM1276 270. What does '5' mean?")
 end
+
+-- R28's classes (second-language radiotelephony in south-east Europe): airlines by their ICAO
+-- telephony (names.lua), another airline's telephony asked about, never matched by its digits alone;
+-- a callsign heard with a wrong last digit and corrected; radar identification stated to the pilot
+do
+  local see = squawk.sim.new()
+  for _, line in ipairs({ "CRE TVS421 B738 49.5 15.5 300 FL110 250", "CRE ASL354 A319 45.6 20.1 170 FL230 280",
+      "CRE ASL7TG AT76 44.0 21.5 320 FL140 210", "CRE LZB118 A320 42.7 23.4 090 FL200 270",
+      "CRE WZZ1235 A21N 47.4 19.2 260 FL350 280" }) do
+    check(see:exec(line))
+  end
+  local function se(text) return said(graph.translate(text, { sim = see, mode = "offline" })) end
+  check_eq(se("Skytravel four two one, descend flight level one zero zero"), "ALT TVS421 FL100")
+  check_eq(se("Air Serbia seven tango golf, speed two one zero"), "SPD ASL7TG 210")
+  check_eq(se("Flying Bulgaria one one eight climb FL240"), "ALT LZB118 FL240")
+  check_eq(se("Jat three five four, turn left heading one two zero"), "ASK Did you mean ASL354? I heard JAT354.")
+  check_eq(se("Wizz Air one two three four, correction, Wizz Air one two three five, climb flight level three six zero"),
+    "ALT WZZ1235 FL360")
+  check_eq(se("Wizz Air one two three four correction one two three five descend FL300"), "ALT WZZ1235 FL300")
+  check_eq(se("Wizz Air one two three four, descend FL300"), "ASK Did you mean WZZ1235? I heard WZZ1234.")
+  check_eq(se("Skytravel four two one, Prague Radar, identified, climb flight level one three zero"), "ALT TVS421 FL130")
+  check_eq(se("Air Serbia three five four, Beograd Control, radar identified, descend FL190"), "ALT ASL354 FL190")
+end
