@@ -903,6 +903,27 @@ function G:split_ellipsis(segs)
   return out
 end
 
+-- "add KIMON and then... no, add PELAG to the route", "add MARMA ... sorry, add FATIH": an instruction
+-- word of the segment's family (or the same word), then a correction (a correction word, or a run of lexicon.self_correction
+-- words holding a marker) straight before the segment's own instruction word: the first instruction was
+-- taken back, and the words from it to the second (its place, its value) are accounted for.
+local SC_WORDS, SC_MARKERS = set_of(lexicon.self_correction.words), set_of(lexicon.self_correction.markers)
+function G:taken_back(s)
+  local c, marked = s.trig, false
+  while c > s.b and (self.t[c - 1].kind == "punct" or self.t[c - 1].filler or SC_WORDS[self.t[c - 1].text]
+      or self:word(c - 1, "@correction")) do
+    c = c - 1
+    marked = marked or SC_MARKERS[self.t[c].text] or self:word(c, "@correction")
+  end
+  if not marked then return end
+  for i = s.b, c - 1 do
+    local intent = self:intent_at(i)
+    if self.t[i].text == self.t[s.trig].text or (intent and same_family(intent, s.intent)) then
+      return self:explain(i, s.trig)
+    end
+  end
+end
+
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
@@ -915,6 +936,7 @@ function G:parse(b, e)
     if k > 1 and self:word_in(segs[k - 1].trig, s.trig, "@correction") and same_family(segs[k - 1].intent, s.intent) then
       for c = #self.out, prev_out + 1, -1 do self.out[c] = nil end
     end
+    self:taken_back(s)
     prev_out = #self.out
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.

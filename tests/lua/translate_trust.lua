@@ -1047,4 +1047,20 @@ do
   check_eq(se("Wizz Air one two three four, descend FL300"), "ASK Did you mean WZZ1235? I heard WZZ1234.")
   check_eq(se("Skytravel four two one, Prague Radar, identified, climb flight level one three zero"), "ALT TVS421 FL130")
   check_eq(se("Air Serbia three five four, Beograd Control, radar identified, descend FL190"), "ALT ASL354 FL190")
+  -- an instruction taken back by a self-correction before the same instruction again: the second counts,
+  -- the first one's place is accounted for; before another instruction, the place is still asked about
+  check(see:exec("DEFWPT ROMBA 45.0 20.5"))
+  check(see:exec("DEFWPT TISAK 45.2 20.7"))
+  local function sw(text)
+    return said(graph.translate(text, { sim = see, mode = "offline", waypoints = { "ROMBA", "TISAK" } }))
+  end
+  check_eq(sw("Air Serbia 354 add ROMBA and then... no, add TISAK to your route"), "ADDWPT ASL354 TISAK")
+  check_eq(sw("Air Serbia 354 add ROMBA ... sorry, add TISAK to the route"), "ADDWPT ASL354 TISAK")
+  check_eq(sw("Air Serbia 354 add ROMBA, no, climb FL250"), "ASK I have ALT ASL354 FL250. What does 'ROMBA' mean?")
+  -- "when level" (and "once level", "when you are level") at a level is the condition, as "when reaching"
+  check_eq(se("Air Serbia three five four when level flight level two three zero, speed Mach seven six"),
+    "ATALT ASL354 FL230 SPD ASL354 M0.76")
+  check_eq(se("Air Serbia 354, when you are level FL230 reduce speed 250"), "ATALT ASL354 FL230 SPD ASL354 250")
+  check_eq(se("Air Serbia 354 once level FL230 turn right heading 200"), "ATALT ASL354 FL230 HDG ASL354 200 RIGHT")
+  check_eq(se("Air Serbia 354 flight level 230 speed 250"), "ALT ASL354 FL230 ; SPD ASL354 250")
 end
