@@ -400,6 +400,22 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       break;
     }
   }
+  // A US registration said after its aircraft's type or maker instead of "November" ("remove
+  // Cherokee eight two zero seven kilo", FAA phraseology): one word squawk reads as nothing else, then
+  // digits and letters that with "N" before them are exactly an aircraft's id.
+  for (size_t i = 0; i + 1 < t.size(); ++i) {
+    if (used[i] || !is_word(t[i]) || is_number_word(t[i]) || names.phonetic_letter(t[i].text) != 0 ||
+        names.vocabulary().is_keyword(t[i].text) || names.vocabulary().is_filler(t[i].text))
+      continue;
+    Suffix suf = read_suffix(t, i + 1, used, names);
+    if (suf.groups.size() < 2 || !std::isdigit(static_cast<unsigned char>(suf.groups.front()[0])) ||
+        !std::isalpha(static_cast<unsigned char>(suf.groups.back()[0])))
+      continue;
+    if (const AircraftView* a = world_id("N" + text::upper(suf.joined(suf.groups.size())))) {
+      add(RefKind::kAircraft, a->id, i, after_weight(t, suf.ends.back()), true, true);
+      i = suf.ends.back() - 1;
+    }
+  }
   // A registration spelled in the phonetic alphabet at the opening ("delta
   // mike echo climb ..."): three letters or more.
   {

@@ -1064,3 +1064,19 @@ do
   check_eq(se("Air Serbia 354 once level FL230 turn right heading 200"), "ATALT ASL354 FL230 HDG ASL354 200 RIGHT")
   check_eq(se("Air Serbia 354 flight level 230 speed 250"), "ALT ASL354 FL230 ; SPD ASL354 250")
 end
+
+-- R19's class: a US registration said after its aircraft's type or maker instead of "November" (FAA
+-- phraseology), anywhere in the request, is that aircraft only when the digits and letters are exactly
+-- its id; a near one is asked about
+do
+  local ga = squawk.sim.new()
+  for _, line in ipairs({ "CRE N4417P PA28 47.7 -122.2 180 4500 110", "CRE N62TX C182 47.5 -122.0 090 5500 120",
+      "CRE ASA331 B739 46.6 -122.6 350 FL200 290" }) do
+    check(ga:exec(line))
+  end
+  local function g(text) return said(graph.translate(text, { sim = ga, mode = "offline" })) end
+  check_eq(g("Please delete Cherokee four four one seven papa"), "DEL N4417P")
+  check_eq(g("turn Skylane six two tango x-ray left heading 270"), "HDG N62TX 270 LEFT")
+  check_eq(g("Skylane six two tango x-ray, climb 7500"), "ALT N62TX 7500")
+  check(g("remove Cherokee four four one eight papa"):find("^ASK") ~= nil, g("remove Cherokee four four one eight papa"))
+end
