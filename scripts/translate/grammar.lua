@@ -230,7 +230,7 @@ function M.handler(name, fn) G[name] = fn end
 --    digit, not after a number unless it is a turn letter: "33.95 S 151.18 E"
 --    is a hemisphere;
 --    "dlh4ax" and "fl240" are left alone);
---  * "a thousand", "a hundred" -> "one thousand", "one hundred"; a typed
+--  * "a thousand", "a hundred" -> "one thousand", "one hundred" (after "another" and "further" too); a typed
 --    callsign glued to its level, "klm12fl240" -> "klm12 fl240"; "m78" ->
 --    "mach .78"; a level typed digit by digit, "fl 3 4 0" -> "fl 340";
 --  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", "fox trot" -> "foxtrot", and
@@ -498,6 +498,9 @@ local function written_forms(text)
   end
   text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
+  -- ("another thousand feet", "a further hundred feet": one more of it)
+  text = text:gsub("%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
+    :gsub("%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
   text = text:gsub("%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
   -- "Egyptair triple seven", "double two": a digit said twice or three times

@@ -70,7 +70,7 @@ floors("tests/data/translate_round12.tsv", 0.957, 0.0, true)
 floors("tests/data/translate_round13.tsv", 0.951, 0.0, true)
 floors("tests/data/translate_round14.tsv", 0.906, 0.0, true)
 floors("tests/data/translate_round15.tsv", 0.965, 0.0035, true)
-floors("tests/data/translate_round16.tsv", 0.87, 0.0081, true)
+floors("tests/data/translate_round16.tsv", 0.879, 0.0041, true)
 floors("tests/data/translate_round17.tsv", 1.0, 0.0, true)
 floors("tests/data/translate_round18.tsv", 0.967, 0.0, true)
 floors("tests/data/translate_round19.tsv", 0.978, 0.0043, true)
@@ -88,7 +88,7 @@ floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
 -- known name too (lexicon.waypoint_confirm: 25 rows); these rows score as asked (a navaid said by
 -- its navdata name won 5 back); a word the recogniser garbled ("December eighteen five thousand",
 -- "Fighting two seven zero") is asked about by name (lexicon.accounted: 66 rows)
-floors("../shared/corpora/vice_trafscript.tsv", 0.551, 0.0044)
+floors("../shared/corpora/vice_trafscript.tsv", 0.554, 0.0044)
 
 -- squawk.translate.evaluate is eval-translate's scorer: a translator that always asks is right
 -- exactly on the rows that expect a question, never wrong; one that issues a command where a

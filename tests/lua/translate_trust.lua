@@ -1080,3 +1080,17 @@ do
   check_eq(g("Skylane six two tango x-ray, climb 7500"), "ALT N62TX 7500")
   check(g("remove Cherokee four four one eight papa"):find("^ASK") ~= nil, g("remove Cherokee four four one eight papa"))
 end
+
+-- R16's class: a step of a size said in everyday words is a change from the present level: "drop 4000
+-- feet", "another thousand feet", "a further 500 ft"; "drop to 4000 feet" is the level
+do
+  local st = squawk.sim.new()
+  check(st:exec("CRE OAL240 A320 38 23.5 090 FL280 280"))
+  check(st:exec("CRE N52RG C172 38.2 23.7 090 3500 100"))
+  local function s(text) return said(graph.translate(text, { sim = st, mode = "offline" })) end
+  check_eq(s("could you get the Olympic to drop 4000 feet please"), "ALT OAL240 24000")
+  check_eq(s("OAL240 drop to 4000 feet"), "ALT OAL240 4000")
+  check_eq(s("N52RG go up another thousand feet"), "ALT N52RG 4500")
+  check_eq(s("N52RG descend another five hundred feet"), "ALT N52RG 3000")
+  check_eq(s("N52RG climb a further 1000 feet"), "ALT N52RG 4500")
+end
