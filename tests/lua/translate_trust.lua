@@ -1093,4 +1093,8 @@ do
   check_eq(s("N52RG go up another thousand feet"), "ALT N52RG 4500")
   check_eq(s("N52RG descend another five hundred feet"), "ALT N52RG 3000")
   check_eq(s("N52RG climb a further 1000 feet"), "ALT N52RG 4500")
+  -- each aircraft with its own value after "at", no instruction word: each its own
+  check_eq(s("could we have the Olympic at FL 300, please, and N52RG at FL 100?"),
+    "ALT OAL240 FL300 ; ALT N52RG FL100")
+  check_eq(s("OAL240 at FL300, N52RG at 90 knots"), "ALT OAL240 FL300 ; SPD N52RG 90")
 end
