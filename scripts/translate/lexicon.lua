@@ -114,7 +114,10 @@ return {
         -- controllers' written abbreviations of instruction words
         "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
         -- squawk's own display, where a command shows or draws what it is asked
-        "console", "screen", "display", "window", "map", "scope", "draw" },
+        "console", "screen", "display", "window", "map", "scope", "draw",
+        -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
+        "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
+        "experiments" },
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",

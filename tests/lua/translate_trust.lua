@@ -1097,4 +1097,8 @@ do
   check_eq(s("could we have the Olympic at FL 300, please, and N52RG at FL 100?"),
     "ALT OAL240 FL300 ; ALT N52RG FL100")
   check_eq(s("OAL240 at FL300, N52RG at 90 knots"), "ALT OAL240 FL300 ; SPD N52RG 90")
+  -- the experiment a request is made for frames it and instructs nothing
+  check_eq(s("for this trial I'd like the Olympic to turn right heading 120"), "HDG OAL240 120 RIGHT")
+  check_eq(s("the participant needs the Olympic at FL 260 please"), "ALT OAL240 FL260")
+  check_eq(s("OAL240 climb FL300 gently"), "ASK I have ALT OAL240 FL300. What does 'gently' mean?")
 end
