@@ -327,8 +327,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     // unless they are one or two digits said singly with an instruction word after them
     // ("Lufthansa four zero four climb" is DLH404 heard, not DLH40 and a stray four): a
     // value is said in three digits or more, or comes after its instruction word or
-    // before its unit, never as a digit or two bare before the word (a comma between
-    // them too: "Wizz Air three zero five two, correction, ...")
+    // before its unit, never as a digit or two bare before the word (punctuation between
+    // them too: "Wizz Air three zero five two, correction, ...", "... five two... correction")
     const std::string said_prefix = id.substr(0, id.size() - suf.joined(suf.groups.size()).size());
     size_t said = m.groups;
     const bool single_digits =
@@ -338,7 +338,7 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
                       return g.size() == 1 && std::isdigit(static_cast<unsigned char>(g[0]));
                     });
     size_t e = suf.ends.back();
-    while (e < t.size() && t[e].kind == TokKind::kPunct && t[e].text == ",") ++e;
+    while (e < t.size() && t[e].kind == TokKind::kPunct) ++e;
     if (single_digits && e < t.size() && is_word(t[e]) && names.vocabulary().is_keyword(t[e].text) &&
         !is_unit_word(t[e].text))
       said = suf.groups.size();

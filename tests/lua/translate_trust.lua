@@ -1044,6 +1044,8 @@ do
   check_eq(se("Wizz Air one two three four, correction, Wizz Air one two three five, climb flight level three six zero"),
     "ALT WZZ1235 FL360")
   check_eq(se("Wizz Air one two three four correction one two three five descend FL300"), "ALT WZZ1235 FL300")
+  check_eq(se("Wizz Air one two three four... correction, Wizz Air one two three five, descend FL300"),
+    "ALT WZZ1235 FL300")
   check_eq(se("Wizz Air one two three four, descend FL300"), "ASK Did you mean WZZ1235? I heard WZZ1234.")
   check_eq(se("Skytravel four two one, Prague Radar, identified, climb flight level one three zero"), "ALT TVS421 FL130")
   check_eq(se("Air Serbia three five four, Beograd Control, radar identified, descend FL190"), "ALT ASL354 FL190")
