@@ -327,7 +327,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     // unless they are one or two digits said singly with an instruction word after them
     // ("Lufthansa four zero four climb" is DLH404 heard, not DLH40 and a stray four): a
     // value is said in three digits or more, or comes after its instruction word or
-    // before its unit, never as a digit or two bare before the word
+    // before its unit, never as a digit or two bare before the word (punctuation between
+    // them too: "Wizz Air three zero five two, correction, ...", "... five two... correction")
     const std::string said_prefix = id.substr(0, id.size() - suf.joined(suf.groups.size()).size());
     size_t said = m.groups;
     const bool single_digits =
@@ -336,14 +337,16 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
                     [](const std::string& g) {
                       return g.size() == 1 && std::isdigit(static_cast<unsigned char>(g[0]));
                     });
-    if (const size_t e = suf.ends.back(); single_digits && e < t.size() && is_word(t[e]) &&
-                                          names.vocabulary().is_keyword(t[e].text) &&
-                                          !is_unit_word(t[e].text))
+    size_t e = suf.ends.back();
+    while (e < t.size() && t[e].kind == TokKind::kPunct) ++e;
+    if (single_digits && e < t.size() && is_word(t[e]) && names.vocabulary().is_keyword(t[e].text) &&
+        !is_unit_word(t[e].text))
       said = suf.groups.size();
+    const size_t matched = said;  // groups the reference spans: the digits said singly too
     while (said < suf.groups.size() && !std::isdigit(static_cast<unsigned char>(suf.groups[said][0]))) ++said;
     heard = {said_prefix + text::upper(suf.joined(said)), m.airline, m.digits};
     id = m.id;
-    end = suf.ends[m.groups - 1];
+    end = suf.ends[std::max(matched, m.groups) - 1];
     return true;
   };
   // Telephony designator + digits/letters.
@@ -395,6 +398,22 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       add(RefKind::kAircraft, id, i, after_weight(t, end), exists, true);
       i = end - 1;
       break;
+    }
+  }
+  // A US registration said after its aircraft's type or maker instead of "November" ("remove
+  // Cherokee eight two zero seven kilo", FAA phraseology): one word squawk reads as nothing else, then
+  // digits and letters that with "N" before them are exactly an aircraft's id.
+  for (size_t i = 0; i + 1 < t.size(); ++i) {
+    if (used[i] || !is_word(t[i]) || is_number_word(t[i]) || names.phonetic_letter(t[i].text) != 0 ||
+        names.vocabulary().is_keyword(t[i].text) || names.vocabulary().is_filler(t[i].text))
+      continue;
+    Suffix suf = read_suffix(t, i + 1, used, names);
+    if (suf.groups.size() < 2 || !std::isdigit(static_cast<unsigned char>(suf.groups.front()[0])) ||
+        !std::isalpha(static_cast<unsigned char>(suf.groups.back()[0])))
+      continue;
+    if (const AircraftView* a = world_id("N" + text::upper(suf.joined(suf.groups.size())))) {
+      add(RefKind::kAircraft, a->id, i, after_weight(t, suf.ends.back()), true, true);
+      i = suf.ends.back() - 1;
     }
   }
   // A registration spelled in the phonetic alphabet at the opening ("delta

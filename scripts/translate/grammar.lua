@@ -233,7 +233,7 @@ function M.handler(name, fn) G[name] = fn end
 --    digit, not after a number unless it is a turn letter: "33.95 S 151.18 E"
 --    is a hemisphere;
 --    "dlh4ax" and "fl240" are left alone);
---  * "a thousand", "a hundred" -> "one thousand", "one hundred"; a typed
+--  * "a thousand", "a hundred" -> "one thousand", "one hundred" (after "another" and "further" too); a typed
 --    callsign glued to its level, "klm12fl240" -> "klm12 fl240"; "m78" ->
 --    "mach .78"; a level typed digit by digit, "fl 3 4 0" -> "fl 340";
 --  * "flightlevel" -> "flight level", "x-ray" / "x ray" -> "xray", "fox trot" -> "foxtrot", and
@@ -501,6 +501,9 @@ local function written_forms(text)
   end
   text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
+  -- ("another thousand feet", "a further hundred feet": one more of it)
+  text = text:gsub("%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
+    :gsub("%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
   text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
   text = text:gsub("%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
   -- "Egyptair triple seven", "double two": a digit said twice or three times
@@ -899,13 +902,16 @@ function G:split_ellipsis(segs)
   for _, s in ipairs(segs) do
     local cur, e = s, s.e
     out[#out + 1] = cur
-    -- "klm12 fl250 ezy45 fl310": with no instruction word, an aircraft that flies
-    -- between values with units of their own starts a request of its own
+    -- "klm12 fl250 ezy45 fl310", "have the BA at FL260 and the Lufthansa at FL320": with no
+    -- instruction word, an aircraft that flies between values with units of their own (straight
+    -- after it, or after "at") starts a request of its own
     if s.intent == "infer" then
       for _, r in ipairs(self:refs_in(s.b + 1, e, "aircraft")) do
         local before, after = self:quantities(cur.b, r.b), self:quantities(r.e, e)
         local own = function(q) return q and (q.kind == "alt" and q.fl or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") end
-        if r.exists and #before > 0 and own(before[#before]) and own(after[1]) and after[1].b == self:skip_fillers(r.e) then
+        local v = self:skip_fillers(r.e)
+        if self:word(v, "at") then v = v + 1 end
+        if r.exists and #before > 0 and own(before[#before]) and own(after[1]) and after[1].b == v then
           cur.e = r.b
           cur = { intent = "infer", b = r.b, trig = r.b, e = e }
           out[#out + 1] = cur
@@ -941,6 +947,27 @@ function G:split_ellipsis(segs)
   return out
 end
 
+-- "add KIMON and then... no, add PELAG to the route", "add MARMA ... sorry, add FATIH": an instruction
+-- word of the segment's family (or the same word), then a correction (a correction word, or a run of lexicon.self_correction
+-- words holding a marker) straight before the segment's own instruction word: the first instruction was
+-- taken back, and the words from it to the second (its place, its value) are accounted for.
+local SC_WORDS, SC_MARKERS = set_of(lexicon.self_correction.words), set_of(lexicon.self_correction.markers)
+function G:taken_back(s)
+  local c, marked = s.trig, false
+  while c > s.b and (self.t[c - 1].kind == "punct" or self.t[c - 1].filler or SC_WORDS[self.t[c - 1].text]
+      or self:word(c - 1, "@correction")) do
+    c = c - 1
+    marked = marked or SC_MARKERS[self.t[c].text] or self:word(c, "@correction")
+  end
+  if not marked then return end
+  for i = s.b, c - 1 do
+    local intent = self:intent_at(i)
+    if self.t[i].text == self.t[s.trig].text or (intent and same_family(intent, s.intent)) then
+      return self:explain(i, s.trig)
+    end
+  end
+end
+
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
@@ -953,6 +980,7 @@ function G:parse(b, e)
     if k > 1 and self:word_in(segs[k - 1].trig, s.trig, "@correction") and same_family(segs[k - 1].intent, s.intent) then
       for c = #self.out, prev_out + 1, -1 do self.out[c] = nil end
     end
+    self:taken_back(s)
     prev_out = #self.out
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.

@@ -676,10 +676,19 @@ function m:pick(c, s, repeated)
 end
 
 -- "at four thousand reduce speed to 210", "(when) passing flight level 130
--- reduce speed 250", "leaving FL340 maintain Mach .82": "ATALT id alt" or nil.
+-- reduce speed 250", "leaving FL340 maintain Mach .82", "when level flight level 350, speed Mach .78"
+-- ("level" after a condition word, as "reaching"): "ATALT id alt" or nil.
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" then return nil end
   local a = self:find_word(s.b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach")
+  if a >= s.trig and s.intent ~= "alt" then
+    for i = s.b, s.trig - 1 do
+      if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(s.b, i - 3), i, "@condition") then
+        a = i
+        break
+      end
+    end
+  end
   if a >= s.trig then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(s.b, a) > 0 then return nil end

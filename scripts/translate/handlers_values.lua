@@ -199,8 +199,11 @@ return function(H, f, wrap, compass)
     local from_here = self:find_word(s.trig, s.e, "from")
     local relative = not fl and (q.by or self:word_in(s.trig, s.e, "@relative")
       or (from_here < s.e and self:word(from_here + 1, "where"))
-      -- "down 2000 feet", "up 1000 ft": an amount in feet straight after the adverb is a change
-      or (self:word(q.b - 1, "up down") and self:word(q.e - 1, "@feet")))
+      -- "down 2000 feet", "up 1000 ft", "drop 4000 feet": an amount in feet straight after the adverb, or
+      -- after the everyday verb "drop" (no "to"), is a change
+      or (self:word(q.b - 1, "up down drop") and self:word(q.e - 1, "@feet"))
+      -- "another thousand feet", "a further 500 ft": one more step of that size
+      or self:word(q.b - 1, "another further"))
     if not relative and now and not q.to and not fl and dir ~= 0 then
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then

@@ -48,7 +48,7 @@ return {
     -- closed-class English, which carries no instruction of its own
     articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
         "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
-        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire" },
+        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further" },
     pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
         "they", "them", "their", "theirs", "themselves", "one", "ones", "someone", "somebody", "anyone",
@@ -89,7 +89,9 @@ return {
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
-        "readback", "read-back", "incorrect", "said" },
+        "readback", "read-back", "incorrect", "said",
+        -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
+        "identified", "identification" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -126,7 +128,11 @@ return {
         -- controllers' written abbreviations of instruction words
         "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
         -- squawk's own display, where a command shows or draws what it is asked
-        "console", "screen", "display", "window", "map", "scope", "draw" },
+        "console", "screen", "display", "window", "map", "scope", "draw",
+        -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
+        "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
+        "experiments" },
+
     -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
     prefixes = { "co", "non", "pre", "semi", "sub", "multi" },
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",

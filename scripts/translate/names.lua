@@ -44,7 +44,7 @@ return {
     { "wideroe", "WIF" },
     { "wizz air", "WZZ" },
     { "aeroflot", "AFL" },
-    { "skytravel", "SKT" },
+    { "skytravel", "TVS" },  -- (Smartwings, formerly Travel Service)
     { "qatari", "QTR" },
     { "etihad", "ETD" },
     { "singapore", "SIA" },
@@ -203,6 +203,15 @@ return {
     { "volotea", "VOE" },
     { "shuttle", "SHT" },  -- (British Airways Shuttle)
     { "hansaline", "CLH" },  -- (Lufthansa CityLine)
+    { "air serbia", "ASL" },
+    { "jat", "JAT" },  -- (Jat Airways, Air Serbia's predecessor: another airline)
+    { "flying bulgaria", "LZB" },  -- (Bulgaria Air)
+    { "air moldova", "MLD" },
+    { "montenegro", "MGX" },
+    { "air crete", "SEH" },  -- (Sky Express)
+    { "ellinair", "ELB" },
+    { "smart lynx", "ART" },
+    { "ukraine international", "AUI" },
   },
   common = {
     { "ba", "BAW" },

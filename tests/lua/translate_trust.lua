@@ -1161,3 +1161,82 @@ do
   -- "straight to" is a direct-to; "the airport" is the aircraft's destination
   check_eq(lt("send RYR81JC straight to WPA"), "ADDWPT RYR81JC WPA ; DIRECT RYR81JC WPA")
 end
+
+-- R28's classes (second-language radiotelephony in south-east Europe): airlines by their ICAO
+-- telephony (names.lua), another airline's telephony asked about, never matched by its digits alone;
+-- a callsign heard with a wrong last digit and corrected; radar identification stated to the pilot
+do
+  local see = squawk.sim.new()
+  for _, line in ipairs({ "CRE TVS421 B738 49.5 15.5 300 FL110 250", "CRE ASL354 A319 45.6 20.1 170 FL230 280",
+      "CRE ASL7TG AT76 44.0 21.5 320 FL140 210", "CRE LZB118 A320 42.7 23.4 090 FL200 270",
+      "CRE WZZ1235 A21N 47.4 19.2 260 FL350 280" }) do
+    check(see:exec(line))
+  end
+  local function se(text) return said(graph.translate(text, { sim = see, mode = "offline" })) end
+  check_eq(se("Skytravel four two one, descend flight level one zero zero"), "ALT TVS421 FL100")
+  check_eq(se("Air Serbia seven tango golf, speed two one zero"), "SPD ASL7TG 210")
+  check_eq(se("Flying Bulgaria one one eight climb FL240"), "ALT LZB118 FL240")
+  check_eq(se("Jat three five four, turn left heading one two zero"), "ASK Did you mean ASL354? I heard JAT354.")
+  check_eq(se("Wizz Air one two three four, correction, Wizz Air one two three five, climb flight level three six zero"),
+    "ALT WZZ1235 FL360")
+  check_eq(se("Wizz Air one two three four correction one two three five descend FL300"), "ALT WZZ1235 FL300")
+  check_eq(se("Wizz Air one two three four... correction, Wizz Air one two three five, descend FL300"),
+    "ALT WZZ1235 FL300")
+  check_eq(se("Wizz Air one two three four, descend FL300"), "ASK Did you mean WZZ1235? I heard WZZ1234.")
+  check_eq(se("Skytravel four two one, Prague Radar, identified, climb flight level one three zero"), "ALT TVS421 FL130")
+  check_eq(se("Air Serbia three five four, Beograd Control, radar identified, descend FL190"), "ALT ASL354 FL190")
+  -- an instruction taken back by a self-correction before the same instruction again: the second counts,
+  -- the first one's place is accounted for; before another instruction, the place is still asked about
+  check(see:exec("DEFWPT ROMBA 45.0 20.5"))
+  check(see:exec("DEFWPT TISAK 45.2 20.7"))
+  local function sw(text)
+    return said(graph.translate(text, { sim = see, mode = "offline", waypoints = { "ROMBA", "TISAK" } }))
+  end
+  check_eq(sw("Air Serbia 354 add ROMBA and then... no, add TISAK to your route"), "ADDWPT ASL354 TISAK")
+  check_eq(sw("Air Serbia 354 add ROMBA ... sorry, add TISAK to the route"), "ADDWPT ASL354 TISAK")
+  check_eq(sw("Air Serbia 354 add ROMBA, no, climb FL250"), "ASK I have ALT ASL354 FL250. What does 'ROMBA' mean?")
+  -- "when level" (and "once level", "when you are level") at a level is the condition, as "when reaching"
+  check_eq(se("Air Serbia three five four when level flight level two three zero, speed Mach seven six"),
+    "ATALT ASL354 FL230 SPD ASL354 M0.76")
+  check_eq(se("Air Serbia 354, when you are level FL230 reduce speed 250"), "ATALT ASL354 FL230 SPD ASL354 250")
+  check_eq(se("Air Serbia 354 once level FL230 turn right heading 200"), "ATALT ASL354 FL230 HDG ASL354 200 RIGHT")
+  check_eq(se("Air Serbia 354 flight level 230 speed 250"), "ALT ASL354 FL230 ; SPD ASL354 250")
+end
+
+-- R19's class: a US registration said after its aircraft's type or maker instead of "November" (FAA
+-- phraseology), anywhere in the request, is that aircraft only when the digits and letters are exactly
+-- its id; a near one is asked about
+do
+  local ga = squawk.sim.new()
+  for _, line in ipairs({ "CRE N4417P PA28 47.7 -122.2 180 4500 110", "CRE N62TX C182 47.5 -122.0 090 5500 120",
+      "CRE ASA331 B739 46.6 -122.6 350 FL200 290" }) do
+    check(ga:exec(line))
+  end
+  local function g(text) return said(graph.translate(text, { sim = ga, mode = "offline" })) end
+  check_eq(g("Please delete Cherokee four four one seven papa"), "DEL N4417P")
+  check_eq(g("turn Skylane six two tango x-ray left heading 270"), "HDG N62TX 270 LEFT")
+  check_eq(g("Skylane six two tango x-ray, climb 7500"), "ALT N62TX 7500")
+  check(g("remove Cherokee four four one eight papa"):find("^ASK") ~= nil, g("remove Cherokee four four one eight papa"))
+end
+
+-- R16's class: a step of a size said in everyday words is a change from the present level: "drop 4000
+-- feet", "another thousand feet", "a further 500 ft"; "drop to 4000 feet" is the level
+do
+  local st = squawk.sim.new()
+  check(st:exec("CRE OAL240 A320 38 23.5 090 FL280 280"))
+  check(st:exec("CRE N52RG C172 38.2 23.7 090 3500 100"))
+  local function s(text) return said(graph.translate(text, { sim = st, mode = "offline" })) end
+  check_eq(s("could you get the Olympic to drop 4000 feet please"), "ALT OAL240 24000")
+  check_eq(s("OAL240 drop to 4000 feet"), "ALT OAL240 4000")
+  check_eq(s("N52RG go up another thousand feet"), "ALT N52RG 4500")
+  check_eq(s("N52RG descend another five hundred feet"), "ALT N52RG 3000")
+  check_eq(s("N52RG climb a further 1000 feet"), "ALT N52RG 4500")
+  -- each aircraft with its own value after "at", no instruction word: each its own
+  check_eq(s("could we have the Olympic at FL 300, please, and N52RG at FL 100?"),
+    "ALT OAL240 FL300 ; ALT N52RG FL100")
+  check_eq(s("OAL240 at FL300, N52RG at 90 knots"), "ALT OAL240 FL300 ; SPD N52RG 90")
+  -- the experiment a request is made for frames it and instructs nothing
+  check_eq(s("for this trial I'd like the Olympic to turn right heading 120"), "HDG OAL240 120 RIGHT")
+  check_eq(s("the participant needs the Olympic at FL 260 please"), "ALT OAL240 FL260")
+  check_eq(s("OAL240 climb FL300 gently"), "ASK I have ALT OAL240 FL300. What does 'gently' mean?")
+end
