@@ -8,7 +8,8 @@
 // action. mlp:CKPT is a checkpoint of `squawk train --env`
 // (app/cli_train_env.h): its categorical head picks a class of the action grid
 // (script/lua_batch_env.h) from the observation, sampled from Rng(S) (the mode
-// with --greedy). Prints the environment, then the episode statistics of
+// with --greedy); a Gaussian head (train --gaussian) samples the action
+// likewise (the mean with --greedy), clipped to the Box (box_action()). Prints the environment, then the episode statistics of
 // EpisodeStats.
 #include <algorithm>
 #include <array>
@@ -43,7 +44,7 @@ struct EnvPolicy {
   std::string script;                  // the policy file of script:FILE, or ""
   std::vector<double> constant;        // the action when neither random, scripted nor an MLP
   std::unique_ptr<rl::MlpPolicy> mlp;  // mlp:CKPT
-  int levels = 0;                      // [-] mlp: grid levels per action component
+  int levels = 0;                      // [-] mlp: grid levels per action component (0: Gaussian)
 };
 
 // What `squawk env run` reports over its episodes. Success counts episodes
@@ -74,16 +75,21 @@ struct EpisodeStats {
   }
 };
 
-// mlp:CKPT: a categorical MLP over `spec`'s action grid that reads its observation.
+// mlp:CKPT: an MLP that reads `spec`'s observation: a categorical head over its
+// action grid, or a Gaussian head over a one-component Box (levels 0).
 Status load_mlp(const std::string& path, const script::LuaEnvSpec& spec, EnvPolicy& pol) {
   SQUAWK_ASSIGN_OR_RETURN(rl::Checkpoint ck, rl::load_checkpoint(path));
   SQUAWK_ASSIGN_OR_RETURN(pol.mlp, rl::policy_from_checkpoint(ck));
   const rl::MlpPolicySpec& ps = pol.mlp->spec();
+  if (ps.head == "gaussian" && spec.action_size() != 1)
+    return Status::invalid(path + ": a Gaussian policy acts on one number; " + spec.id +
+                           " takes " + std::to_string(spec.action_size()));
   if (ps.obs_size != spec.observation_size)
     return Status::invalid(path + ": the policy reads " + std::to_string(ps.obs_size) +
                            " observation numbers; " + spec.id + " gives " +
                            std::to_string(spec.observation_size) + " (trained on " +
                            ck.progress.scenario + ")");
+  if (ps.head == "gaussian") return Status::ok();  // levels 0
   const auto classes = static_cast<int>(ps.action_values.size());
   bool grid = ps.head == "categorical";
   for (int c = 0; grid && c < classes; ++c)
@@ -197,7 +203,10 @@ int env_run(const ArgV& argv) {
         for (size_t j = 0; j < obs.size(); ++j) obs[j] = static_cast<float>(e.observation()[j]);
         rl::ActionSample choice;
         policy->mlp->act(obs, 1, {&row, 1}, {&rng, 1}, greedy, {&choice, 1});
-        script::grid_action(spec, policy->levels, choice.index, action);
+        if (policy->levels == 0)
+          script::box_action(spec, choice.value, action);
+        else
+          script::grid_action(spec, policy->levels, choice.index, action);
       } else {
         for (size_t a = 0; a < action.size(); ++a)
           action[a] = policy->random ? rng.uniform(spec.action_low[a], spec.action_high[a])
