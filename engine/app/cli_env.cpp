@@ -9,8 +9,8 @@
 // (app/cli_train_env.h): its categorical head picks a class of the action grid
 // (script/lua_batch_env.h) from the observation, sampled from Rng(S) (the mode
 // with --greedy); a Gaussian head (train --gaussian) samples the action
-// likewise (the mean with --greedy), clipped to the Box (box_action()). Prints the environment, then the episode statistics of
-// EpisodeStats.
+// likewise (the mean with --greedy), clipped to the Box (box_action()).
+// Prints the environment, then the episode statistics of EpisodeStats.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -82,8 +82,8 @@ Status load_mlp(const std::string& path, const script::LuaEnvSpec& spec, EnvPoli
   SQUAWK_ASSIGN_OR_RETURN(pol.mlp, rl::policy_from_checkpoint(ck));
   const rl::MlpPolicySpec& ps = pol.mlp->spec();
   if (ps.head == "gaussian" && spec.action_size() != 1)
-    return Status::invalid(path + ": a Gaussian policy acts on one number; " + spec.id +
-                           " takes " + std::to_string(spec.action_size()));
+    return Status::invalid(path + ": a Gaussian policy acts on one number; " + spec.id + " takes " +
+                           std::to_string(spec.action_size()));
   if (ps.obs_size != spec.observation_size)
     return Status::invalid(path + ": the policy reads " + std::to_string(ps.obs_size) +
                            " observation numbers; " + spec.id + " gives " +

@@ -40,8 +40,10 @@ int cmd_train(const ArgV& given) {
   if (auto probe = Args::parse(*argv, train_flags(true)); probe) {
     if (probe->has("--env") && wants_gpt2(*argv))
       return usage_error("train", "--env trains --policy mlp only");
-    if (!probe->has("--env") && (probe->has("--levels") || probe->has("--hidden") || probe->has("--gaussian")))
-      return usage_error("train", "--levels, --gaussian and --hidden shape the policy of a --env ENV.lua run");
+    if (!probe->has("--env") &&
+        (probe->has("--levels") || probe->has("--hidden") || probe->has("--gaussian")))
+      return usage_error(
+          "train", "--levels, --gaussian and --hidden shape the policy of a --env ENV.lua run");
   }
   if (wants_gpt2(*argv)) return cmd_train_gpt2(*argv);
   auto args = Args::parse(*argv, train_flags(false));

@@ -91,7 +91,8 @@ int cmd_train_env(const Args& args) {
                        "\"improved\", \"ppo\" or \"vpg\"");
   const bool gaussian = args.has("--gaussian");
   if (gaussian && args.has("--levels"))
-    return usage_error("train", "--gaussian acts on the continuous Box: no --levels grid beside it");
+    return usage_error("train",
+                       "--gaussian acts on the continuous Box: no --levels grid beside it");
   auto levels = args.get_int("--levels", gaussian ? 0 : 5);
   if (!levels) return usage_error("train", levels.status().message());
   if (!gaussian && *levels < 2)

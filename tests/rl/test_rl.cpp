@@ -113,7 +113,8 @@ TEST_CASE("the Gaussian MLP policy's gradient (network and log sigma) matches fi
   REQUIRE(made);
   rl::MlpPolicy& p = **made;
   const int n = 4;
-  const std::vector<float> rows = {0.2f, -0.5f, 1.0f, -0.3f, 0.8f, 0.1f, 0.6f, 0.4f, -0.9f, -0.1f, 0.0f, 0.7f};
+  const std::vector<float> rows = {0.2f, -0.5f, 1.0f,  -0.3f, 0.8f, 0.1f,
+                                   0.6f, 0.4f,  -0.9f, -0.1f, 0.0f, 0.7f};
   const std::vector<rl::ActionSample> acts = {{-1, 0.9f}, {-1, -0.4f}, {-1, 0.1f}, {-1, -1.3f}};
   const std::vector<float> coef = {0.8f, -1.1f, 0.5f, 0.3f};
   const float ent = 0.1f;
@@ -125,7 +126,8 @@ TEST_CASE("the Gaussian MLP policy's gradient (network and log sigma) matches fi
     std::vector<float> lp(n);
     p.log_probs(rows, n, acts, lp);
     double l = 0.0;
-    for (size_t r = 0; r < lp.size(); ++r) l -= coef[r] * lp[r] + ent * nn::gaussian_entropy(p.params().back());
+    for (size_t r = 0; r < lp.size(); ++r)
+      l -= coef[r] * lp[r] + ent * nn::gaussian_entropy(p.params().back());
     return l;
   };
   std::span<float> theta = p.params();

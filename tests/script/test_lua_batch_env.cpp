@@ -234,11 +234,13 @@ TEST_CASE("continuous actions (levels 0): the number clipped to [-1, 1] and mapp
     e->step(acts, rewards, dones);
     REQUIRE(e->error().is_ok());
     const double a = std::min(v, 1.0);
-    for (size_t r = 0; r < 2; ++r) CHECK(rewards[r] == doctest::Approx(-(a - signs[r]) * (a - signs[r])));
+    for (size_t r = 0; r < 2; ++r)
+      CHECK(rewards[r] == doctest::Approx(-(a - signs[r]) * (a - signs[r])));
   }
   auto two = script::LuaBatchEnv::make(repo("envs/static_obstacle.lua"), {}, 1, 0);
   REQUIRE_FALSE(two);
-  CHECK(two.status().message().find("continuous actions need a one-component Box; StaticObstacleEnv-v0 has 2") !=
+  CHECK(two.status().message().find(
+            "continuous actions need a one-component Box; StaticObstacleEnv-v0 has 2") !=
         std::string::npos);
 }
 
