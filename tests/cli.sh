@@ -45,7 +45,15 @@ expect "env run mlp greedy" 0 '"mean_reward": 0, "std_reward": 0' -- "$sq" env r
 expect "env mlp mismatch" 1 "reads 1 observation numbers; DescentEnv-v0 gives 4" -- "$sq" env run envs/descent.lua --policy "mlp:$gt/sign/policy.ckpt"
 expect "env greedy alone" 2 "--greedy goes with --policy mlp:CKPT" -- "$sq" env run envs/descent.lua --greedy
 expect "train env vine"  2 "on --env use \"improved\"" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/vine" --estimator vine
-expect "train levels alone" 2 "--levels and --hidden shape the policy of a --env" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --levels 3
+# --gaussian: a Gaussian head over a one-component Box (sign.lua's best action is the sign itself).
+expect "train env gaussian" 0 "a Gaussian head over the continuous action" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/gauss" --gaussian --estimator ppo --episodes 640 --eval-every 320
+expect "env run gaussian greedy" 0 '"mean_reward": (0|-0\.[0-4][0-9]*),' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/gauss/policy.ckpt" --greedy --episodes 40 --json
+expect "env gaussian 2-d" 1 "a Gaussian policy acts on one number; StaticObstacleEnv-v0 takes 2" -- "$sq" env run envs/static_obstacle.lua --policy "mlp:$gt/gauss/policy.ckpt"
+expect "train gaussian 2-d" 1 "continuous actions need a one-component Box; MergeEnv-v0 has 2" -- "$sq" train --env envs/merge.lua --out "$gt/g2" --gaussian
+expect "train gaussian levels" 2 "--gaussian acts on the continuous Box: no --levels grid beside it" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/g3" --gaussian --levels 3
+expect "train gaussian multi" 2 "--gaussian acts on a one-component Box; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/g4" --gaussian
+expect "train levels 0"   2 "--levels 0: expected at least 2 per component" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/l0" --levels 0
+expect "train levels alone" 2 "--levels, --gaussian and --hidden shape the policy of a --env" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --levels 3
 # One MLP shared by every agent of the multi-agent sector: 3 agents, each
 # agent's trajectory an episode (12 = 4 sector episodes), then evaluated
 # beside "do nothing" and MVP by bench/sector_multi_eval.lua.

@@ -8,8 +8,9 @@
 // action. mlp:CKPT is a checkpoint of `squawk train --env`
 // (app/cli_train_env.h): its categorical head picks a class of the action grid
 // (script/lua_batch_env.h) from the observation, sampled from Rng(S) (the mode
-// with --greedy). Prints the environment, then the episode statistics of
-// EpisodeStats.
+// with --greedy); a Gaussian head (train --gaussian) samples the action
+// likewise (the mean with --greedy), clipped to the Box (box_action()).
+// Prints the environment, then the episode statistics of EpisodeStats.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -174,7 +175,7 @@ int env_run(const ArgV& argv) {
         for (size_t j = 0; j < obs.size(); ++j) obs[j] = static_cast<float>(e.observation()[j]);
         rl::ActionSample choice;
         policy->grid.mlp->act(obs, 1, {&row, 1}, {&rng, 1}, greedy, {&choice, 1});
-        script::grid_action(spec, policy->grid.levels, choice.index, action);
+        script::policy_action(spec, policy->grid, choice, action);
       } else {
         for (size_t a = 0; a < action.size(); ++a)
           action[a] = policy->random ? rng.uniform(spec.action_low[a], spec.action_high[a])

@@ -27,7 +27,8 @@ namespace squawk::app {
 Args::Spec train_flags(bool gpt2) {
   std::vector<std::string> values = learner_flags();
   values.insert(values.end(), {"--policy", "--env", "--levels", "--hidden", "--agents"});
-  std::vector<std::string> bools = {"--resume", "--override", "--force", "--quiet", "--mirror"};
+  std::vector<std::string> bools = {"--resume", "--override", "--force",
+                                    "--quiet",  "--mirror",   "--gaussian"};
   if (gpt2) {
     values.push_back("--init");
     values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());

@@ -40,8 +40,10 @@ int cmd_train(const ArgV& given) {
   if (auto probe = Args::parse(*argv, train_flags(true)); probe) {
     if (probe->has("--env") && wants_gpt2(*argv))
       return usage_error("train", "--env trains --policy mlp only");
-    if (!probe->has("--env") && (probe->has("--levels") || probe->has("--hidden")))
-      return usage_error("train", "--levels and --hidden shape the policy of a --env ENV.lua run");
+    if (!probe->has("--env") &&
+        (probe->has("--levels") || probe->has("--hidden") || probe->has("--gaussian")))
+      return usage_error(
+          "train", "--levels, --gaussian and --hidden shape the policy of a --env ENV.lua run");
     if (!probe->has("--env") && probe->has("--agents"))
       return usage_error("train", "--agents sets the agents of a multi-agent --env ENV.lua run");
   }

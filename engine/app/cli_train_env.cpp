@@ -161,8 +161,19 @@ int cmd_train_env(const Args& args) {
     return usage_error("train",
                        "--estimator vine branches the compiled HorizontalCR kernel; on --env use "
                        "\"improved\", \"ppo\" or \"vpg\"");
-  auto levels = args.get_int("--levels", 5);
+  const bool gaussian = args.has("--gaussian");
+  if (gaussian && *parallel)
+    return usage_error("train", "--gaussian acts on a one-component Box; " + file +
+                                    " is multi-agent, with a Box of several numbers per agent");
+  if (gaussian && args.has("--levels"))
+    return usage_error("train",
+                       "--gaussian acts on the continuous Box: no --levels grid beside it");
+  auto levels = args.get_int("--levels", gaussian ? 0 : 5);
   if (!levels) return usage_error("train", levels.status().message());
+  if (!gaussian && *levels < 2)
+    return usage_error("train", "--levels " + std::to_string(*levels) +
+                                    ": expected at least 2 per component (--gaussian for a "
+                                    "continuous action)");
   auto hidden = hidden_widths(args);
   if (!hidden) return usage_error("train", hidden.status().message());
   auto validation = validation_seed(args, 0);
@@ -176,7 +187,10 @@ int cmd_train_env(const Args& args) {
   rl::MlpPolicySpec spec;
   spec.obs_size = es.observation_size;
   spec.hidden = *hidden;
-  spec.action_values = script::grid_values(batches->classes);
+  if (gaussian)
+    spec.head = "gaussian";
+  else
+    spec.action_values = script::grid_values(batches->classes);
   Rng init(cfg.seed);
   auto policy = rl::MlpPolicy::make(spec, init);
   if (!policy) return failure(policy.status());
@@ -192,14 +206,18 @@ int cmd_train_env(const Args& args) {
   auto log = TrainLog::open(*run, 0);
   if (!log) return failure(log.status());
   const bool quiet = args.has("--quiet");
-  if (!quiet)
-    std::printf(
-        "training mlp on %s (%s): %d action classes (%lld levels x %d components), %s, estimator "
-        "%s, "
-        "%zu parameters, seed %llu\n",
-        es.id.c_str(), file.c_str(), batches->classes, *levels, es.action_size(),
-        episodes_text(cfg).c_str(), cfg.estimator.c_str(), (*policy)->params().size(),
-        static_cast<unsigned long long>(cfg.seed));
+  if (!quiet) {
+    char head[96];
+    if (gaussian)
+      std::snprintf(head, sizeof head, "a Gaussian head over the continuous action");
+    else
+      std::snprintf(head, sizeof head, "%d action classes (%lld levels x %d components)",
+                    batches->classes, *levels, es.action_size());
+    std::printf("training mlp on %s (%s): %s, %s, estimator %s, %zu parameters, seed %llu\n",
+                es.id.c_str(), file.c_str(), head, episodes_text(cfg).c_str(),
+                cfg.estimator.c_str(), (*policy)->params().size(),
+                static_cast<unsigned long long>(cfg.seed));
+  }
   if (!quiet && batches->parallel)
     std::printf(
         "one policy shared by every agent: %s agents per sector episode (--agents); an episode "

@@ -97,7 +97,7 @@ int l_act(lua_State* L) {
   rl::ActionSample choice;
   box->grid.mlp->act(box->obs, 1, {&row, 1}, {&box->rng, 1}, box->greedy, {&choice, 1});
   check_status(box->grid.mlp->error());
-  grid_action(box->spec, box->grid.levels, choice.index, box->action);
+  policy_action(box->spec, box->grid, choice, box->action);
   lua_createtable(L, static_cast<int>(box->action.size()), 0);
   for (size_t k = 0; k < box->action.size(); ++k) {
     lua_pushnumber(L, box->action[k]);

@@ -10,11 +10,15 @@ Result<GridPolicy> load_grid_policy(const std::string& path, const LuaEnvSpec& s
   GridPolicy pol;
   SQUAWK_ASSIGN_OR_RETURN(pol.mlp, rl::policy_from_checkpoint(ck));
   const rl::MlpPolicySpec& ps = pol.mlp->spec();
+  if (ps.head == "gaussian" && spec.action_size() != 1)
+    return Status::invalid(path + ": a Gaussian policy acts on one number; " + spec.id + " takes " +
+                           std::to_string(spec.action_size()));
   if (ps.obs_size != spec.observation_size)
     return Status::invalid(path + ": the policy reads " + std::to_string(ps.obs_size) +
                            " observation numbers; " + spec.id + " gives " +
                            std::to_string(spec.observation_size) + " (trained on " +
                            ck.progress.scenario + ")");
+  if (ps.head == "gaussian") return pol;  // levels 0
   const auto classes = static_cast<int>(ps.action_values.size());
   bool grid = ps.head == "categorical";
   for (int c = 0; grid && c < classes; ++c)
@@ -25,6 +29,14 @@ Result<GridPolicy> load_grid_policy(const std::string& path, const LuaEnvSpec& s
         ck.progress.scenario + ")");
   SQUAWK_ASSIGN_OR_RETURN(pol.levels, grid_levels(spec, classes));
   return pol;
+}
+
+void policy_action(const LuaEnvSpec& spec, const GridPolicy& pol, const rl::ActionSample& choice,
+                   std::span<double> out) {
+  if (pol.levels == 0)
+    box_action(spec, choice.value, out);
+  else
+    grid_action(spec, pol.levels, choice.index, out);
 }
 
 }  // namespace squawk::script

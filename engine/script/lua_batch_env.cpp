@@ -1,5 +1,6 @@
 #include "script/lua_batch_env.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace squawk::script {
@@ -42,6 +43,11 @@ void grid_action(const LuaEnvSpec& spec, int levels, int index, std::span<double
   }
 }
 
+void box_action(const LuaEnvSpec& spec, double v, std::span<double> out) {
+  const double u = (std::clamp(v, -1.0, 1.0) + 1.0) / 2.0;
+  out[0] = spec.action_low[0] + (spec.action_high[0] - spec.action_low[0]) * u;
+}
+
 double grid_value(int c, int classes) {
   return -1.0 + 2.0 * c / (classes - 1);
 }
@@ -69,7 +75,14 @@ Result<std::unique_ptr<LuaBatchEnv>> LuaBatchEnv::make(const std::string& path,
     SQUAWK_ASSIGN_OR_RETURN(auto e, LuaEnv::load(path, options));
     envs.push_back(std::move(e));
   }
-  SQUAWK_ASSIGN_OR_RETURN(const int classes, grid_classes(envs[0]->spec(), levels));
+  const LuaEnvSpec& spec = envs[0]->spec();
+  if (levels == 0) {
+    if (spec.action_size() != 1)
+      return Status::invalid(path + ": continuous actions need a one-component Box; " + spec.id +
+                             " has " + std::to_string(spec.action_size()) + " components");
+    return std::unique_ptr<LuaBatchEnv>(new LuaBatchEnv(std::move(envs), 0, 0));
+  }
+  SQUAWK_ASSIGN_OR_RETURN(const int classes, grid_classes(spec, levels));
   return std::unique_ptr<LuaBatchEnv>(new LuaBatchEnv(std::move(envs), levels, classes));
 }
 
@@ -125,13 +138,17 @@ void LuaBatchEnv::step(std::span<const double> actions, std::span<double> reward
     const int s = waiting_[r];
     const auto i = static_cast<size_t>(s);
     LuaEnv& e = *envs_[i];
-    const int c = grid_class(actions[r], classes_);
-    if (c < 0)
-      return fail(Status::invalid(e.path() + ": action " + std::to_string(actions[r]) +
-                                  " is not a class of the " + std::to_string(classes_) +
-                                  "-point action grid (-1 + 2 c / " + std::to_string(classes_ - 1) +
-                                  ")"));
-    grid_action(e.spec(), levels_, c, action_);
+    if (continuous()) {
+      box_action(e.spec(), actions[r], action_);
+    } else {
+      const int c = grid_class(actions[r], classes_);
+      if (c < 0)
+        return fail(Status::invalid(e.path() + ": action " + std::to_string(actions[r]) +
+                                    " is not a class of the " + std::to_string(classes_) +
+                                    "-point action grid (-1 + 2 c / " +
+                                    std::to_string(classes_ - 1) + ")"));
+      grid_action(e.spec(), levels_, c, action_);
+    }
     auto res = e.step(action_);
     if (!res) return fail(res.status());
     env::EpisodeStats& ep = running_[i];

@@ -13,6 +13,9 @@
 // takes class c as the number grid_value(c, C) = -1 + 2 c / (C - 1): a
 // categorical head whose action_values are grid_values(C) gives exactly
 // that, and for a one-component Box [-1, 1] the number is the action itself.
+// Continuous (levels 0, a one-component Box only): step() takes the number
+// v itself, clipped to [-1, 1] and mapped linearly onto [low, high]
+// (box_action(); a Gaussian head's raw sample).
 // completed(): index, total_reward, decisions and steps (both the episode's
 // length in steps), truncated (cut without termination) and reached (the file
 // terminated it); success stays false and min_separation 0 (the files define
@@ -43,6 +46,9 @@ Result<int> grid_classes(const LuaEnvSpec& spec, int levels);
 Result<int> grid_levels(const LuaEnvSpec& spec, int classes);
 // Writes the Box action of grid class `index` (0 <= index < K^d) into out [d].
 void grid_action(const LuaEnvSpec& spec, int levels, int index, std::span<double> out);
+// Continuous actions: out[0] = low + (high - low) (clip(v, -1, 1) + 1) / 2
+// for spec's one-component Box (out has size 1).
+void box_action(const LuaEnvSpec& spec, double v, std::span<double> out);
 // Class c of C as the number in [-1, 1] that step() takes, and all C of them in order.
 double grid_value(int c, int classes);
 std::vector<double> grid_values(int classes);
@@ -52,13 +58,15 @@ int grid_class(double v, int classes);
 class LuaBatchEnv final : public env::BatchEnv {
  public:
   // Loads `path` num_envs times (each instance its own Vm with `options`).
+  // levels 0: continuous actions (error unless the Box has one component).
   static Result<std::unique_ptr<LuaBatchEnv>> make(const std::string& path,
                                                    const VmOptions& options, int num_envs,
                                                    int levels);
 
   const LuaEnvSpec& spec() const { return envs_[0]->spec(); }
   int levels() const { return levels_; }
-  int classes() const { return classes_; }
+  int classes() const { return classes_; }  // 0 when continuous
+  bool continuous() const { return levels_ == 0; }
 
   void start(uint64_t seed, uint64_t first_episode, uint64_t count) override;
   int size() const override { return static_cast<int>(envs_.size()); }

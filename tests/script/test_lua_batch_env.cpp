@@ -207,3 +207,72 @@ TEST_CASE("the MLP learner raises the return of a Lua environment (sign.lua: ran
   CHECK(last->mean_reward > -0.5);
   CHECK(last->mean_steps == 4.0);
 }
+
+TEST_CASE("continuous actions (levels 0): the number clipped to [-1, 1] and mapped onto the Box") {
+  script::LuaEnvSpec s;
+  s.action_low = {0};
+  s.action_high = {10};
+  std::vector<double> a(1);
+  script::box_action(s, -0.5, a);
+  CHECK(a[0] == 2.5);
+  script::box_action(s, 3.0, a);
+  CHECK(a[0] == 10.0);
+  script::box_action(s, -7.0, a);
+  CHECK(a[0] == 0.0);
+  // sign.lua pays -(a - s)^2: the action 0.25 costs 0.5625 on s = 1 and
+  // 1.5625 on s = -1, and 9 (clipped to 1) costs 0 and 4.
+  auto e = batch(repo("tests/data/gym/sign.lua"), 2, 0);
+  CHECK(e->continuous());
+  CHECK(e->classes() == 0);
+  for (double v : {0.25, 9.0}) {
+    e->start(0, 0, 2);
+    std::vector<float> signs(e->observations().begin(), e->observations().end());
+    REQUIRE(signs.size() == 2);
+    const std::vector<double> acts(2, v);
+    std::vector<double> rewards(2);
+    std::vector<uint8_t> dones(2);
+    e->step(acts, rewards, dones);
+    REQUIRE(e->error().is_ok());
+    const double a = std::min(v, 1.0);
+    for (size_t r = 0; r < 2; ++r)
+      CHECK(rewards[r] == doctest::Approx(-(a - signs[r]) * (a - signs[r])));
+  }
+  auto two = script::LuaBatchEnv::make(repo("envs/static_obstacle.lua"), {}, 1, 0);
+  REQUIRE_FALSE(two);
+  CHECK(two.status().message().find(
+            "continuous actions need a one-component Box; StaticObstacleEnv-v0 has 2") !=
+        std::string::npos);
+}
+
+TEST_CASE("the Gaussian head learns a Lua environment's continuous action (sign.lua: best 0)") {
+  auto train_envs = batch(repo("tests/data/gym/sign.lua"), 4, 0);
+  auto eval_envs = batch(repo("tests/data/gym/sign.lua"), 4, 0);
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 1;
+  spec.hidden = {16};
+  spec.head = "gaussian";
+  Rng init(3);
+  auto p = rl::MlpPolicy::make(spec, init);
+  REQUIRE(p);
+  rl::TrainConfig tc;
+  tc.estimator = "ppo";
+  tc.episodes = 640;
+  tc.episodes_per_update = 16;
+  tc.num_envs = 4;
+  tc.lr = tc.lr_final = 1e-2;
+  tc.value_hidden = {};
+  tc.eval_every = 0;
+  auto before = rl::evaluate(**p, *eval_envs, {100, 7, true});
+  REQUIRE(before);
+  CHECK(before->mean_reward < -2.0);
+  rl::Trainer tr(**p, *train_envs, tc, 0);
+  rl::TrainProgress progress;
+  auto ended = rl::run_training(tr, **p, *eval_envs, tc, 7, progress, {},
+                                [](const rl::UpdateReport&) -> Result<bool> { return true; });
+  REQUIRE_MESSAGE(ended.is_ok(), ended.status().message());
+  auto after = rl::evaluate(**p, *eval_envs, {100, 7, true});
+  REQUIRE(after);
+  MESSAGE("sign.lua, Gaussian head (mean action): " << before->mean_reward << " before, "
+                                                    << after->mean_reward << " after 40 updates");
+  CHECK(after->mean_reward > -0.5);
+}
