@@ -339,8 +339,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
                     });
     size_t e = suf.ends.back();
     while (e < t.size() && t[e].kind == TokKind::kPunct) ++e;
-    if (single_digits && e < t.size() && is_word(t[e]) && names.vocabulary().is_keyword(t[e].text) &&
-        !is_unit_word(t[e].text))
+    if (single_digits && e < t.size() && is_word(t[e]) &&
+        names.vocabulary().is_keyword(t[e].text) && !is_unit_word(t[e].text))
       said = suf.groups.size();
     const size_t matched = said;  // groups the reference spans: the digits said singly too
     while (said < suf.groups.size() && !std::isdigit(static_cast<unsigned char>(suf.groups[said][0]))) ++said;
@@ -401,11 +401,12 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     }
   }
   // A US registration said after its aircraft's type or maker instead of "November" ("remove
-  // Cherokee eight two zero seven kilo", FAA phraseology): one word squawk reads as nothing else, then
-  // digits and letters that with "N" before them are exactly an aircraft's id.
+  // Cherokee eight two zero seven kilo", FAA phraseology): one word squawk reads as nothing else,
+  // then digits and letters that with "N" before them are exactly an aircraft's id.
   for (size_t i = 0; i + 1 < t.size(); ++i) {
-    if (used[i] || !is_word(t[i]) || is_number_word(t[i]) || names.phonetic_letter(t[i].text) != 0 ||
-        names.vocabulary().is_keyword(t[i].text) || names.vocabulary().is_filler(t[i].text))
+    if (used[i] || !is_word(t[i]) || is_number_word(t[i]) ||
+        names.phonetic_letter(t[i].text) != 0 || names.vocabulary().is_keyword(t[i].text) ||
+        names.vocabulary().is_filler(t[i].text))
       continue;
     Suffix suf = read_suffix(t, i + 1, used, names);
     if (suf.groups.size() < 2 || !std::isdigit(static_cast<unsigned char>(suf.groups.front()[0])) ||
