@@ -13,17 +13,18 @@
 #include <thread>
 #include <vector>
 
+#include "../finite_difference.h"
 #include "core/files.h"
 #include "env/observation.h"
+#include "env/vec_env.h"
 #include "gpt2/model.h"
 #include "nn/categorical.h"
 #include "nn/gemm.h"
+#include "rl/imitation.h"
 #include "rl/mirror.h"
 #include "rl/prompt_checkpoint.h"
 #include "rl/prompt_policy.h"
-#include "rl/imitation.h"
 #include "rl/vpg.h"
-#include "env/vec_env.h"
 #include "script/prompt_renderer.h"
 
 using namespace squawk;
@@ -302,17 +303,11 @@ TEST_CASE("policy-loss gradient matches finite differences (both heads, tail of 
             wpe + (p->prefix_tokens().size() + 6) * C + 9, wpe + 2 * C + 5, sz - 130, sz - 3};
     }
     for (size_t i : at) {
-      const float keep = theta[i];
-      const float eps = 1e-2f;
-      theta[i] = keep + eps;
+      const double fd = central_difference(theta[i], 1e-2f, [&] {
+        p->invalidate_cache();
+        return policy_loss(*p, obs, n, a, coef, ent);
+      });
       p->invalidate_cache();
-      const double up = policy_loss(*p, obs, n, a, coef, ent);
-      theta[i] = keep - eps;
-      p->invalidate_cache();
-      const double down = policy_loss(*p, obs, n, a, coef, ent);
-      theta[i] = keep;
-      p->invalidate_cache();
-      const double fd = (up - down) / (2.0 * eps);
       CAPTURE(i);
       CHECK(g[i] == doctest::Approx(fd).epsilon(0.03).scale(1e-3));
       ++checked;

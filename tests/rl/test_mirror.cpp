@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "../finite_difference.h"
 #include "env/horizontal_cr.h"
 #include "env/observation.h"
 #include "rl/checkpoint.h"
@@ -166,14 +167,7 @@ TEST_CASE("mirror-symmetric MLP policy gradient matches finite differences") {
   int large = 0;
   for (size_t i : {size_t{3}, size_t{700}, size_t{2800}, size_t{5000}, size_t{9000}, theta.size() - 400,
                    theta.size() - 7, theta.size() - 2}) {
-    const float keep = theta[i];
-    const float eps = 1e-2f;
-    theta[i] = keep + eps;
-    const double up = loss();
-    theta[i] = keep - eps;
-    const double down = loss();
-    theta[i] = keep;
-    const double fd = (up - down) / (2.0 * eps);
+    const double fd = central_difference(theta[i], 1e-2f, loss);
     CAPTURE(i);
     // The float32 loss carries ~1e-7 of rounding, so a central difference over
     // 2e-2 has up to ~4e-5 of noise (seen at a near-zero component, 2.7e-5

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../env/paper_settings.h"
+#include "../finite_difference.h"
 #include "core/files.h"
 #include "env/vec_env.h"
 #include "nn/categorical.h"
@@ -134,13 +135,7 @@ TEST_CASE("the Gaussian MLP policy's gradient (network and log sigma) matches fi
   int large = 0;
   for (size_t i = 0; i < theta.size(); ++i) {
     // eps 1e-3: at 1e-2 some ReLU inputs of this small net change sign.
-    const float keep = theta[i], eps = 1e-3f;
-    theta[i] = keep + eps;
-    const double up = loss();
-    theta[i] = keep - eps;
-    const double down = loss();
-    theta[i] = keep;
-    const double fd = (up - down) / (2.0 * eps);
+    const double fd = central_difference(theta[i], 1e-3f, loss);
     CAPTURE(i);
     CHECK(g[i] == doctest::Approx(fd).epsilon(0.02).scale(2e-3));
     large += std::fabs(fd) > 1e-3;
