@@ -414,6 +414,16 @@ r = tr("BAW8CK make a right 360")
 check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
 r = tr("DLH4AX descend flight level two six zero, correction")
 check(r.ask ~= nil and r.ask:find("correction", 1, true) ~= nil, said(r))
+-- an instruction after "then" waits for an orbit or a hold, which squawk does not fly: asked, never sent now
+r = tr("BAW8CK make one orbit to the right, then resume own navigation")
+check(r.ask ~= nil and r.ask:find("orbits", 1, true) ~= nil, said(r))
+r = tr("BAW8CK orbit left and then descend flight level one two zero")
+check(r.ask ~= nil and r.ask:find("waits for it", 1, true) ~= nil, said(r))
+r = tr("DLH4AX enter the hold, then turn left heading two seven zero")
+check(r.ask ~= nil and r.ask:find("holding patterns", 1, true) ~= nil, said(r))
+-- radiotelephony's "I say again" repeats the value said before it
+check_eq(said(tr("DLH4AX negative, flight level two six zero, I say again two six zero, descend")), "ALT DLH4AX FL260")
+check_eq(said(tr("BAW8CK turn left heading one two zero, I say again, heading one two zero")), "HDG BAW8CK 120 LEFT")
 
 -- units people type: km/h is a speed in knots, metres an altitude in feet
 check_eq(said(tr("KLM1234 speed 500 km/h")), "SPD KLM1234 270")
