@@ -1735,10 +1735,19 @@ function G:not_simulated()
           break
         end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
-        if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right") then
+        if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right")
+            and not (class.through and self:word(e, class.through)) then
           break
         end
         e = e + 1
+      end
+      -- "when passing FL250 contact Langen 120.8": a condition said before the phrase is part of it
+      local b = i - 1
+      while b >= 1 and self.t[b].kind ~= "punct" and not self:word(b, "@condition and then") do b = b - 1 end
+      if b >= 1 and b < i - 1 and self:word(b, "@condition") and #self:quantities(b + 1, i) > 0
+          and not self:any_instruction_in(b + 1, i) and (b == 1 or self.t[b - 1].kind == "punct") then
+        self:mark_used(b, i)
+        for k = b, i - 1 do self.noted[k] = true end
       end
       local said = self:raw(i, e)
       -- "make one orbit, then resume own navigation": what follows "then" waits for what is not flown

@@ -316,6 +316,9 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- "caution similar callsign", "caution wake turbulence": a warning to the pilot, no instruction
+    -- (`through`: instruction words that stay in the phrase: wake turbulence is no NOISE command)
+    { what = "cautions", words = "caution", through = "turbulence" },
     -- traffic information ("traffic 2 o'clock, 5 miles, eastbound, altitude indicates 3500") runs to the
     -- end of the request: the words in it describe the other aircraft, they instruct nobody
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },

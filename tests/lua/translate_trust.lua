@@ -421,6 +421,16 @@ r = tr("BAW8CK orbit left and then descend flight level one two zero")
 check(r.ask ~= nil and r.ask:find("waits for it", 1, true) ~= nil, said(r))
 r = tr("DLH4AX enter the hold, then turn left heading two seven zero")
 check(r.ask ~= nil and r.ask:find("holding patterns", 1, true) ~= nil, said(r))
+-- a caution to the pilot ("similar callsign", "wake turbulence") is named, the instruction beside it runs
+r = tr("DLH4AX caution similar callsign, descend flight level two four zero")
+check_eq(said(r), "ALT DLH4AX FL240")
+check(r.note ~= nil and r.note:find("cautions", 1, true) ~= nil, said(r))
+check_eq(said(tr("BAW8CK turn right heading zero niner zero, caution wake turbulence")), "HDG BAW8CK 90 RIGHT")
+-- a condition on what is not simulated ("when passing FL250 contact ...") goes with it; the rest runs
+r = tr("DLH4AX descend flight level one niner zero, when passing flight level two five zero contact radar one two zero decimal eight")
+check_eq(said(r), "ALT DLH4AX FL190")
+check(r.note ~= nil and r.note:find("radio frequencies", 1, true) ~= nil, said(r))
+check_eq(said(tr("BAW8CK climb FL300, once reaching FL250 squawk 7000")), "ALT BAW8CK FL300")
 -- radiotelephony's "I say again" repeats the value said before it
 check_eq(said(tr("DLH4AX negative, flight level two six zero, I say again two six zero, descend")), "ALT DLH4AX FL260")
 check_eq(said(tr("BAW8CK turn left heading one two zero, I say again, heading one two zero")), "HDG BAW8CK 120 LEFT")
