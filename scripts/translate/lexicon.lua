@@ -234,11 +234,14 @@ return {
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
                        "than", "traffic", "meet", "meets", "catch",
+                       -- "climb through DLH9CE's level"
+                       "through",
                        -- "out of the way of INT1"
                        "way" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
-  -- Austrian's level") that make it other traffic, not the aircraft instructed
-  airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but" },
+  -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
+  airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",
+                     "through" },
   -- words that open the reason given for an instruction (to the end of its
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause", "due" },

@@ -431,6 +431,8 @@ r = tr("DLH4AX descend flight level one niner zero, when passing flight level tw
 check_eq(said(r), "ALT DLH4AX FL190")
 check(r.note ~= nil and r.note:find("radio frequencies", 1, true) ~= nil, said(r))
 check_eq(said(tr("BAW8CK climb FL300, once reaching FL250 squawk 7000")), "ALT BAW8CK FL300")
+-- the aircraft climbed "through" another's level is other traffic, never the one instructed
+check_eq(said(tr("make BAW8CK climb through DLH4AX's level, up to FL360")), "ALT BAW8CK FL360")
 -- radiotelephony's "I say again" repeats the value said before it
 check_eq(said(tr("DLH4AX negative, flight level two six zero, I say again two six zero, descend")), "ALT DLH4AX FL260")
 check_eq(said(tr("BAW8CK turn left heading one two zero, I say again, heading one two zero")), "HDG BAW8CK 120 LEFT")
