@@ -1711,7 +1711,7 @@ end
 -- reply naming them, or nil. A phrase runs from its word to the next
 -- instruction word, "and"/"then", or punctuation other than a comma.
 function G:not_simulated()
-  local found, seen = {}, {}
+  local found, seen, after = {}, {}, {}
   local i = 1
   while i <= #self.t do
     local t = self.t[i]
@@ -1735,12 +1735,26 @@ function G:not_simulated()
           break
         end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
-        if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right") then
+        if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right")
+            and not (class.through and self:word(e, class.through)) then
           break
         end
         e = e + 1
       end
+      -- "when passing FL250 contact Langen 120.8": a condition said before the phrase is part of it
+      local b = i - 1
+      while b >= 1 and self.t[b].kind ~= "punct" and not self:word(b, "@condition and then") do b = b - 1 end
+      if b >= 1 and b < i - 1 and self:word(b, "@condition") and #self:quantities(b + 1, i) > 0
+          and not self:any_instruction_in(b + 1, i) and (b == 1 or self.t[b - 1].kind == "punct") then
+        self:mark_used(b, i)
+        for k = b, i - 1 do self.noted[k] = true end
+      end
       local said = self:raw(i, e)
+      -- "make one orbit, then resume own navigation": what follows "then" waits for what is not flown
+      local k = self:word(e, "and") and e + 1 or e
+      if class.takes_time and self:word(k, "then") then
+        after[#after + 1] = { at = k + 1, what = class.what, said = said }
+      end
       self:mark_used(i, e)
       for k = i, e - 1 do self.noted[k] = true end
       if not seen[class.what] then
@@ -1753,6 +1767,12 @@ function G:not_simulated()
     end
   end
   if #found == 0 then return nil end
+  for _, a in ipairs(after) do
+    if self:any_instruction_in(a.at, #self.t + 1) then
+      self:need(string.format("squawk does not simulate %s ('%s'), and what follows 'then' waits for it: "
+        .. "please give that instruction when it applies.", a.what, (a.said:gsub(" ([,.;:])", "%1"):gsub(",$", ""))))
+    end
+  end
   return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
 end
 

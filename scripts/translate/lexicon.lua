@@ -208,8 +208,10 @@ return {
   -- "heading 090, oh no, right heading 200"): a run of `words` between a value and the next value,
   -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
   -- correction, "KL204, make one orbit"), is read as "correction"
-  self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er" },
-                      markers = { "no", "wait", "sorry", "actually", "make that", "mean" },
+  -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
+  self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
+                                "say", "again" },
+                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" } },
   -- the simulation itself, not an aircraft
   -- (an episode: one run of a learning environment)
@@ -232,11 +234,14 @@ return {
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")
   aircraft_context = { "between", "avoid", "avoiding", "conflict", "conflicts", "behind", "follow", "following",
                        "than", "traffic", "meet", "meets", "catch",
+                       -- "climb through DLH9CE's level"
+                       "through",
                        -- "out of the way of INT1"
                        "way" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
-  -- Austrian's level") that make it other traffic, not the aircraft instructed
-  airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but" },
+  -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
+  airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",
+                     "through" },
   -- words that open the reason given for an instruction (to the end of its
   -- sentence): aircraft named in it are context, never instructed
   reason = { "because", "since", "cause", "due" },
@@ -299,7 +304,8 @@ return {
              "comment", "remark", "filler", "please", "the" },
   -- what squawk does not simulate: a phrase starts at one of `words` (with
   -- one of `near` within 4 words after it, when given) and runs to the end
-  -- of its clause; it is named in the reply, never translated
+  -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
+  -- while, so an instruction after "then" waits for it and is asked about, never sent now
   not_simulated = {
     { what = "transponder codes", words = "squawk squawking sq",
       near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
@@ -313,6 +319,9 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- "caution similar callsign", "caution wake turbulence": a warning to the pilot, no instruction
+    -- (`through`: instruction words that stay in the phrase: wake turbulence is no NOISE command)
+    { what = "cautions", words = "caution", through = "turbulence" },
     -- traffic information ("traffic 2 o'clock, 5 miles, eastbound, altitude indicates 3500") runs to the
     -- end of the request: the words in it describe the other aircraft, they instruct nobody
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
@@ -331,15 +340,15 @@ return {
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits
-    { what = "orbits", words = "orbit orbits" },
-    { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" } },
+    { what = "orbits", words = "orbit orbits", takes_time = true },
+    { what = "orbits", words = "make do", near = { "sixty", "360", "orbit", "orbits" }, takes_time = true },
     -- "turn around completely, 360 to the right", "a full circle": a turn back onto the same heading
     { what = "orbits", words = "turn turning", near = { "completely", "circle" }, to_end = true },
-    { what = "orbits", words = "full", near = { "circle", "360", "sixty", "turn" } },
-    { what = "holding patterns", words = "holding" },
+    { what = "orbits", words = "full", near = { "circle", "360", "sixty", "turn" }, takes_time = true },
+    { what = "holding patterns", words = "holding", takes_time = true },
     { what = "holding patterns", words = "hold",
-      near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" } },
-    { what = "holding patterns", words = "enter", near = { "hold", "holding" } },
+      near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true },
+    { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation
     { what = "holding patterns", words = "hold", after_callsign = true },
   },

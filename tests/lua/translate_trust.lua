@@ -414,6 +414,28 @@ r = tr("BAW8CK make a right 360")
 check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
 r = tr("DLH4AX descend flight level two six zero, correction")
 check(r.ask ~= nil and r.ask:find("correction", 1, true) ~= nil, said(r))
+-- an instruction after "then" waits for an orbit or a hold, which squawk does not fly: asked, never sent now
+r = tr("BAW8CK make one orbit to the right, then resume own navigation")
+check(r.ask ~= nil and r.ask:find("orbits", 1, true) ~= nil, said(r))
+r = tr("BAW8CK orbit left and then descend flight level one two zero")
+check(r.ask ~= nil and r.ask:find("waits for it", 1, true) ~= nil, said(r))
+r = tr("DLH4AX enter the hold, then turn left heading two seven zero")
+check(r.ask ~= nil and r.ask:find("holding patterns", 1, true) ~= nil, said(r))
+-- a caution to the pilot ("similar callsign", "wake turbulence") is named, the instruction beside it runs
+r = tr("DLH4AX caution similar callsign, descend flight level two four zero")
+check_eq(said(r), "ALT DLH4AX FL240")
+check(r.note ~= nil and r.note:find("cautions", 1, true) ~= nil, said(r))
+check_eq(said(tr("BAW8CK turn right heading zero niner zero, caution wake turbulence")), "HDG BAW8CK 90 RIGHT")
+-- a condition on what is not simulated ("when passing FL250 contact ...") goes with it; the rest runs
+r = tr("DLH4AX descend flight level one niner zero, when passing flight level two five zero contact radar one two zero decimal eight")
+check_eq(said(r), "ALT DLH4AX FL190")
+check(r.note ~= nil and r.note:find("radio frequencies", 1, true) ~= nil, said(r))
+check_eq(said(tr("BAW8CK climb FL300, once reaching FL250 squawk 7000")), "ALT BAW8CK FL300")
+-- the aircraft climbed "through" another's level is other traffic, never the one instructed
+check_eq(said(tr("make BAW8CK climb through DLH4AX's level, up to FL360")), "ALT BAW8CK FL360")
+-- radiotelephony's "I say again" repeats the value said before it
+check_eq(said(tr("DLH4AX negative, flight level two six zero, I say again two six zero, descend")), "ALT DLH4AX FL260")
+check_eq(said(tr("BAW8CK turn left heading one two zero, I say again, heading one two zero")), "HDG BAW8CK 120 LEFT")
 
 -- units people type: km/h is a speed in knots, metres an altitude in feet
 check_eq(said(tr("KLM1234 speed 500 km/h")), "SPD KLM1234 270")
