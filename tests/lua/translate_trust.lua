@@ -598,6 +598,13 @@ do
   check_eq(ft("can the Ryanair descend to FL 100?"), "ASK No Ryanair aircraft is flying. Which aircraft do you mean?")
   check_eq(ft("Lufthansa, descend FL 200"), "ASK Which aircraft should change altitude? Please give its callsign.")
   check_eq(ft("please turn the easyJet left 20 degrees, it's getting close to the Lufthansa"), "HDG EZY45 40 LEFT")
+  -- an airline said alone as a clause's aircraft, beside another clause's, is asked about: never
+  -- read as the aircraft named before or after
+  check_eq(ft("EZY45 heading 180, Lufthansa heading 270"), "ASK Which Lufthansa aircraft do you mean? Please give its callsign.")
+  check_eq(ft("Speedbird right heading 010, and EZY45 left heading 300"),
+    "ASK Which Speedbird aircraft do you mean? Please give its callsign.")
+  check_eq(ft("BAW123 climb FL 240 and KLM descend FL 140"), "ASK Which KLM: KLM1234 or KLM77?")
+  check_eq(ft("EZY45 heading 180, the Lufthansa heading 270"), "HDG EZY45 180 ; HDG DLH4AX 270")
   check_eq(ft("EZY45 climb FL 200 to stay behind the BA"), "ALT EZY45 FL200")
   -- a new aircraft of an airline is no reference to the one flying
   check_eq(ft("add a Lufthansa A320, DLH9CK, at 52.5 north 4.1 east heading 090 FL 200 250 knots"),
