@@ -209,7 +209,7 @@ function m:acids(s)
       if id:upper():sub(1, #u.icao) == u.icao then u = nil break end
     end
     local later = false  -- an aircraft named after the instruction ("turn left 090, EZY45")
-    for _, r in ipairs(self.refs) do later = later or (r.kind == "aircraft" and r.b >= s.e) end
+    for _, r in ipairs(self.refs) do later = later or (r.kind == "aircraft" and r.b >= s.e and not self:in_reason(r.b)) end
     if u and (#ids > 0 or self.subject or later) then
       self:airline_only(u)  -- "Which KLM: KLM1234 or KLM77?" where more than one flies
       self:need(string.format("Which %s aircraft do you mean? Please give its callsign.", self:raw(u.b, u.e)))
@@ -223,7 +223,8 @@ function m:acids(s)
   end
   if #ids == 0 then
     for _, r in ipairs(self.refs) do
-      if r.kind == "aircraft" and r.b >= s.e then ids[1] = r.name break end
+      -- (not one named in a reason: "... so he crosses the Lufthansa")
+      if r.kind == "aircraft" and r.b >= s.e and not self:in_reason(r.b) then ids[1] = r.name break end
     end
   end
   if #ids == 0 and #self.fleet == 1 then ids[1] = self.fleet[1].id end
@@ -309,11 +310,11 @@ function m:airline_at(i)
   return nil
 end
 
--- The first airline name (names.lua telephony or common name, its first word capitalised as typed)
--- said at a clause's start (the utterance's, or after punctuation, "and" or "then") with no flight
--- number, letters, "heavy" or a correction ("United correction Southwest 686") after it and inside no reference, from the start of s's clause to
--- s.e - 1; nil when there is none.
--- Returns {b, e, icao} (tokens b..e-1, the airline's ICAO prefix).
+-- The first airline name (names.lua telephony or common name, a capital in its first word as typed:
+-- "Luxair", "easyJet"; "reach" and "easy" are words too) said at a clause's start (the utterance's,
+-- or after punctuation, "and" or "then") with no flight number, letters, "heavy" or a correction
+-- ("United correction Southwest 686") after it and inside no reference, from the start of s's clause
+-- to s.e - 1; nil when there is none. Returns {b, e, icao} (tokens b..e-1, the airline's ICAO prefix).
 function m:airline_said_alone(s)
   local b = s.b
   while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
@@ -323,7 +324,7 @@ function m:airline_said_alone(s)
     local inside = false
     for _, r in ipairs(self.refs) do inside = inside or (r.b <= i and i < r.e) end
     local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
-    if icao and starts and (e > i + 1 or airline_names()[self.t[i].text]) and self.t[i].raw:match("^%u") and not inside
+    if icao and starts and (e > i + 1 or airline_names()[self.t[i].text]) and self.t[i].raw:match("%u") and not inside
         and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
           or self:word(e, "heavy super @correction"))) then
       return { b = i, e = e, icao = icao }

@@ -605,6 +605,13 @@ do
     "ASK Which Speedbird aircraft do you mean? Please give its callsign.")
   check_eq(ft("BAW123 climb FL 240 and KLM descend FL 140"), "ASK Which KLM: KLM1234 or KLM77?")
   check_eq(ft("EZY45 heading 180, the Lufthansa heading 270"), "HDG EZY45 180 ; HDG DLH4AX 270")
+  -- the purpose said after the instruction (", that should ...", ", I want X to ...", "so he/she ...")
+  -- names other traffic, never an aircraft instructed
+  check_eq(ft("turn the easyJet right heading 100, that should put him across the Lufthansa's track"),
+    "HDG EZY45 100 RIGHT")
+  check_eq(ft("slow the easyJet to 240, I want the BA to catch him"), "SPD EZY45 240")
+  check_eq(ft("EZY45 climb FL 250 so he crosses the Lufthansa"), "ALT EZY45 FL250")
+  check(ft("climb to FL 250 so she crosses the Lufthansa"):find("^ASK") ~= nil, "the Lufthansa is no aircraft instructed")
   check_eq(ft("EZY45 climb FL 200 to stay behind the BA"), "ALT EZY45 FL200")
   -- a new aircraft of an airline is no reference to the one flying
   check_eq(ft("add a Lufthansa A320, DLH9CK, at 52.5 north 4.1 east heading 090 FL 200 250 knots"),
