@@ -193,6 +193,8 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
   end }
+  -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
+  rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
   -- "speed it up 4x": a factor glued to its x, no aircraft named
   rule { "speed", "dtmult", near = { 2, "up" }, when = function(g, i)
