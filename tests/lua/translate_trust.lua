@@ -639,6 +639,11 @@ do
   -- "the scenario" spoken of is no file to load; destinations asked about are shown
   check_eq(ft("please remove the Cessna from the scenario"), "DEL N123AB")
   check_eq(ft("what's the easyJet's destination?"), "DEST EZY45")
+  -- "where is X going?" asks the destination; "where is X?" and "where it's going" in passing do not
+  check_eq(ft("where is the easyJet going?"), "DEST EZY45")
+  check_eq(ft("where's BAW123 headed to?"), "DEST BAW123")
+  check_eq(ft("where is BAW123?"), "POS BAW123")
+  check_eq(ft("could the BA climb to FL 240, it's too low for where it's going"), "ALT BAW123 FL240")
   check_eq(ft("add SUGOL to the easyJet's route and send it direct there"), "ADDWPT EZY45 SUGOL ; DIRECT EZY45 SUGOL")
   -- a callsign typed apart after its letters; positions, routes and states asked after in passing
   check_eq(ft("could you please descend EZY 45 to FL 150?"), "ALT EZY45 FL150")
