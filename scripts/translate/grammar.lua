@@ -590,10 +590,15 @@ function G:in_reason(i)
         inside = false
       elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then
         inside = true
-      elseif t.kind == "punct" and self:word(k + 1, "we") and self:word(k + 2, "@purpose_verbs")
+      elseif t.kind == "punct" and self:word(k + 1, "that this which") and self:word(k + 2, "@purpose_modals") then
+        -- (", that should put him across the Beeline's track": what the instruction should bring about)
+        inside = true
+      elseif t.kind == "punct" and (self:word(k + 1, "we") or self:word(k + 1, "i") and not self:word(k + 3, "to"))
+          and self:word(k + 2, "@purpose_verbs")
           and not self:word_in(k + 3, math.min(#self.t + 1, k + 5), "you") then
-        -- (", we want it crossing the Speedbird's track", ", we don't need fine resolution": the purpose
-        -- said after the instruction; ", we need you to climb" instructs)
+        -- (", we want it crossing the Speedbird's track", ", I want the Beeline to catch him", ", we don't
+        -- need fine resolution": the purpose said after the instruction; ", we need you to climb" and
+        -- ", I want to have a look at BAW123's position" instruct)
         inside = true
       end
     end

@@ -200,6 +200,22 @@ function m:acids(s)
     end
     for k, id in ipairs(named) do ids[k] = id end
   end
+  -- "EZY45 heading 180, Luxair heading 270": an airline said alone (capitalised, no flight number) in
+  -- the instruction's own words names no aircraft; it is asked about, never read as the aircraft named
+  -- before or after (alone in the request, the question below asks for the callsign)
+  do
+    local u = self:airline_said_alone(s)
+    for _, id in ipairs(u and ids or {}) do  -- "BAW177 ..., Speedbird diverting": its own name again
+      if id:upper():sub(1, #u.icao) == u.icao then u = nil break end
+    end
+    local later = false  -- an aircraft named after the instruction ("turn left 090, EZY45")
+    for _, r in ipairs(self.refs) do later = later or (r.kind == "aircraft" and r.b >= s.e and not self:in_reason(r.b)) end
+    if u and (#ids > 0 or self.subject or later) then
+      self:airline_only(u)  -- "Which KLM: KLM1234 or KLM77?" where more than one flies
+      self:need(string.format("Which %s aircraft do you mean? Please give its callsign.", self:raw(u.b, u.e)))
+      return ids
+    end
+  end
   if #ids == 0 and self.subject then
     -- the aircraft named for the instruction before ("EZY45 and AFR1234 maintain present heading")
     local all = self.subjects and self.subjects[1] == self.subject and self.subjects or { self.subject }
@@ -207,7 +223,8 @@ function m:acids(s)
   end
   if #ids == 0 then
     for _, r in ipairs(self.refs) do
-      if r.kind == "aircraft" and r.b >= s.e then ids[1] = r.name break end
+      -- (not one named in a reason: "... so he crosses the Lufthansa")
+      if r.kind == "aircraft" and r.b >= s.e and not self:in_reason(r.b) then ids[1] = r.name break end
     end
   end
   if #ids == 0 and #self.fleet == 1 then ids[1] = self.fleet[1].id end
@@ -291,6 +308,28 @@ function m:airline_at(i)
   end
   if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
   return nil
+end
+
+-- The first airline name (names.lua telephony or common name, a capital in its first word as typed:
+-- "Luxair", "easyJet"; "reach" and "easy" are words too) said at a clause's start (the utterance's,
+-- or after punctuation, "and" or "then") with no flight number, letters, "heavy" or a correction
+-- ("United correction Southwest 686") after it and inside no reference, from the start of s's clause
+-- to s.e - 1; nil when there is none. Returns {b, e, icao} (tokens b..e-1, the airline's ICAO prefix).
+function m:airline_said_alone(s)
+  local b = s.b
+  while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
+  for i = b, s.e - 1 do
+    local icao, e = self:airline_at(i)
+    local nxt = self.t[e]
+    local inside = false
+    for _, r in ipairs(self.refs) do inside = inside or (r.b <= i and i < r.e) end
+    local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
+    if icao and starts and (e > i + 1 or airline_names()[self.t[i].text]) and self.t[i].raw:match("%u") and not inside
+        and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
+          or self:word(e, "heavy super @correction"))) then
+      return { b = i, e = e, icao = icao }
+    end
+  end
 end
 
 -- The flying aircraft of an airline (callsign = prefix, then a digit).

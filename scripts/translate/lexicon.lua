@@ -247,7 +247,7 @@ return {
   reason = { "because", "since", "cause", "due" },
   -- verbs of the experimenter's purpose after a comma (", we want it crossing ..."): a reason
   purpose_verbs = { "want", "need", "don't", "dont", "wanna" },
-  reason_after_so = { "that", "it", "they", "it's", "its", "we" },
+  reason_after_so = { "that", "it", "they", "it's", "its", "we", "he", "she", "he's", "she's" },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place

@@ -193,6 +193,8 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
   end }
+  -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
+  rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
   -- "speed it up 4x": a factor glued to its x, no aircraft named
   rule { "speed", "dtmult", near = { 2, "up" }, when = function(g, i)
@@ -522,6 +524,16 @@ return function(intent, rule, words)
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
+  -- "where is the Air Portugal going?", "where's TAP447 headed to": the destination asked, not the
+  -- position; the question opens the request and ends with its verb ("where is UAL57 going to cross
+  -- GIPNO?" and "too high for where it's going" are no such question)
+  rule { "where where's", "dest", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 7)
+    local k = g:find_word(i + 1, e, "going headed bound")
+    if k == e or g:skip_fillers(1) ~= i then return false end
+    if g:word(k + 1, "to") then k = k + 1 end
+    return g.t[k + 1] == nil or g.t[k + 1].kind == "punct"
+  end }
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"

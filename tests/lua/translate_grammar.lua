@@ -136,6 +136,10 @@ do -- experimenter requests
   check_eq(tr("Print \"phase 2\" to the console"), "ECHO phase 2")
   check_eq(tr("run at double speed"), "DTMULT 2")
   check_eq(tr("speed the simulation up 10 times"), "DTMULT 10")
+  -- a multiplier said of the sim's speed
+  check_eq(tr("Double the sim speed."), "DTMULT 2")
+  check_eq(tr("could you double the simulation speed"), "DTMULT 2")
+  check_eq(tr("speed up the sim"), "FF")
   check_eq(tr("turn off CD"), "ASAS OFF")
   check_eq(tr("What is the altitude of KLM123?"), "POS KLM123")
   local w = { aircraft = { plane("AC01", 90, 25000, 280), plane("AC02", 20, 26000, 290) } }

@@ -620,6 +620,20 @@ do
   check_eq(ft("can the Ryanair descend to FL 100?"), "ASK No Ryanair aircraft is flying. Which aircraft do you mean?")
   check_eq(ft("Lufthansa, descend FL 200"), "ASK Which aircraft should change altitude? Please give its callsign.")
   check_eq(ft("please turn the easyJet left 20 degrees, it's getting close to the Lufthansa"), "HDG EZY45 40 LEFT")
+  -- an airline said alone as a clause's aircraft, beside another clause's, is asked about: never
+  -- read as the aircraft named before or after
+  check_eq(ft("EZY45 heading 180, Lufthansa heading 270"), "ASK Which Lufthansa aircraft do you mean? Please give its callsign.")
+  check_eq(ft("Speedbird right heading 010, and EZY45 left heading 300"),
+    "ASK Which Speedbird aircraft do you mean? Please give its callsign.")
+  check_eq(ft("BAW123 climb FL 240 and KLM descend FL 140"), "ASK Which KLM: KLM1234 or KLM77?")
+  check_eq(ft("EZY45 heading 180, the Lufthansa heading 270"), "HDG EZY45 180 ; HDG DLH4AX 270")
+  -- the purpose said after the instruction (", that should ...", ", I want X to ...", "so he/she ...")
+  -- names other traffic, never an aircraft instructed
+  check_eq(ft("turn the easyJet right heading 100, that should put him across the Lufthansa's track"),
+    "HDG EZY45 100 RIGHT")
+  check_eq(ft("slow the easyJet to 240, I want the BA to catch him"), "SPD EZY45 240")
+  check_eq(ft("EZY45 climb FL 250 so he crosses the Lufthansa"), "ALT EZY45 FL250")
+  check(ft("climb to FL 250 so she crosses the Lufthansa"):find("^ASK") ~= nil, "the Lufthansa is no aircraft instructed")
   check_eq(ft("EZY45 climb FL 200 to stay behind the BA"), "ALT EZY45 FL200")
   -- a new aircraft of an airline is no reference to the one flying
   check_eq(ft("add a Lufthansa A320, DLH9CK, at 52.5 north 4.1 east heading 090 FL 200 250 knots"),
@@ -647,6 +661,11 @@ do
   -- "the scenario" spoken of is no file to load; destinations asked about are shown
   check_eq(ft("please remove the Cessna from the scenario"), "DEL N123AB")
   check_eq(ft("what's the easyJet's destination?"), "DEST EZY45")
+  -- "where is X going?" asks the destination; "where is X?" and "where it's going" in passing do not
+  check_eq(ft("where is the easyJet going?"), "DEST EZY45")
+  check_eq(ft("where's BAW123 headed to?"), "DEST BAW123")
+  check_eq(ft("where is BAW123?"), "POS BAW123")
+  check_eq(ft("could the BA climb to FL 240, it's too low for where it's going"), "ALT BAW123 FL240")
   check_eq(ft("add SUGOL to the easyJet's route and send it direct there"), "ADDWPT EZY45 SUGOL ; DIRECT EZY45 SUGOL")
   -- a callsign typed apart after its letters; positions, routes and states asked after in passing
   check_eq(ft("could you please descend EZY 45 to FL 150?"), "ALT EZY45 FL150")
