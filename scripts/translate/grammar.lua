@@ -1114,6 +1114,12 @@ function G:at_waypoint(s, spec)
         else other = true end
       end
       if in_route and not other and (alt or spd) then
+        -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
+        -- or below FL150"): its command first, from the words before the crossing
+        local lead = r.b - 1
+        if spec and spec.handler and s.trig < lead and #self:quantities(s.b, lead) > 0 then
+          self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
+        end
         if alt then
           self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(alt.value, alt.fl))
           self:take(alt)

@@ -1281,3 +1281,21 @@ do
   check_eq(s("the participant needs the Olympic at FL 260 please"), "ALT OAL240 FL260")
   check_eq(s("OAL240 climb FL300 gently"), "ASK I have ALT OAL240 FL300. What does 'gently' mean?")
 end
+
+-- R30's classes (Gulf and Asian radiotelephony): a level instruction said before a crossing restriction
+-- runs with it, never dropped for it; a garbled airline word before more digits than an aircraft's
+-- flight number is asked about, never matched to the shorter number
+do
+  local asia = squawk.sim.new()
+  for _, line in ipairs({ "CRE UAE512 B77W 25.3 55.6 090 FL200 300", "DEFWPT DESDI 25.5 56.0", "ADDWPT UAE512 DESDI",
+      "CRE GIA412 B738 -4.90 106.80 190 FL170 280", "CRE QFA41 A333 -7.80 107.80 320 FL230 300" }) do
+    check(asia:exec(line))
+  end
+  local function at(text) return said(graph.translate(text, { sim = asia, mode = "offline" })) end
+  check_eq(at("Emirates five one two, descend to flight level one two zero, cross DESDI at or below flight level one five zero"),
+    "ALT UAE512 FL120 ; AT UAE512 DESDI ALT FL150")
+  check_eq(at("UAE512 descend FL120 and cross DESDI at 250 knots"), "ALT UAE512 FL120 ; AT UAE512 DESDI SPD 250")
+  check_eq(at("UAE512 cross DESDI at or below FL150"), "AT UAE512 DESDI ALT FL150")
+  check_eq(at("Garuda four one two maintain flight level one seven zero"), "ASK Did you mean QFA41? I heard GARUDA412.")
+  check_eq(at("Indonesia four one two maintain flight level one seven zero"), "ALT GIA412 FL170")
+end
