@@ -500,7 +500,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
         // (digits said beyond the match, "Garuda four one two" matched to QFA41: inexact too)
         const bool more_said = static_cast<size_t>(m.groups) < suf.groups.size();
         if (said != text::upper(number) || code || more_said || (m.airline < 1.0 && !number_unique))
-          heard = {text::upper(words) + text::upper(suf.joined(suf.groups.size())), m.airline, m.digits};
+          heard = {text::upper(words) + text::upper(suf.joined(suf.groups.size())), m.airline,
+                   m.digits};
         add(RefKind::kAircraft, m.id, words_begin, after_weight(t, suf.ends[m.groups - 1]), true, true);
       }
     }
