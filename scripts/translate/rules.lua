@@ -610,7 +610,7 @@ return function(intent, rule, words)
   -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
   rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
-  rule { "go resume continue unpause", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
+  rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own

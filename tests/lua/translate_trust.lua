@@ -709,6 +709,10 @@ do
   check_eq(bt("pause, BAW123 direct DAHLI, then go"), "HOLD ; DIRECT BAW123 DAHLI ; OP")
   check_eq(bt("reso MVP, pz 4 nm, then carry on"), "RESO MVP ; ZONER 4 ; OP")
   check_eq(bt("fine, carry on, run it"), "OP")
+  -- "run" said alone as the last clause starts the clock; a callsign before it is no clause of its own
+  check_eq(bt("Hold. KL204 heading 120. Run."), "HOLD ; HDG KL204 120 ; OP")
+  check_eq(bt("EZY45 climb FL300, then run"), "ALT EZY45 FL300 ; OP")
+  check(bt("KL204, run."):find("^ASK") ~= nil, bt("KL204, run."))
   -- an airline said alone beside a resolved aircraft names no one aircraft: asked, never dropped
   check(bt("remove the easyjet and the lufthansa"):find("^ASK No lufthansa aircraft") ~= nil,
     bt("remove the easyjet and the lufthansa"))
