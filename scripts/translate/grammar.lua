@@ -590,6 +590,11 @@ function G:in_reason(i)
         inside = false
       elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then
         inside = true
+      elseif self:word(k, "so") and k > 1 and self.t[k - 1].kind ~= "punct" and not self.t[k - 1].filler
+          and self:has_ref(k + 1, k + 3, "aircraft") then
+        -- ("slow VIR9 to 260 kt so the Speedbird catches up": "so" after an instruction's words, before an
+        -- aircraft, says what the instruction brings about; "so" opening a clause is a filler)
+        inside = true
       elseif t.kind == "punct" and self:word(k + 1, "that this which") and self:word(k + 2, "@purpose_modals") then
         -- (", that should put him across the Beeline's track": what the instruction should bring about)
         inside = true

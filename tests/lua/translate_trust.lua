@@ -633,6 +633,10 @@ do
     "HDG EZY45 100 RIGHT")
   check_eq(ft("slow the easyJet to 240, I want the BA to catch him"), "SPD EZY45 240")
   check_eq(ft("EZY45 climb FL 250 so he crosses the Lufthansa"), "ALT EZY45 FL250")
+  -- "so" straight after an instruction, before an aircraft, is the purpose; "so" opening a clause is a filler
+  check_eq(ft("slow EZY45 to 240 kt so the BA catches up"), "SPD EZY45 240")
+  check_eq(ft("EZY45 climb FL 260 so BAW123 can pass below"), "ALT EZY45 FL260")
+  check_eq(ft("ok, so EZY45 climb FL 260"), "ALT EZY45 FL260")
   check(ft("climb to FL 250 so she crosses the Lufthansa"):find("^ASK") ~= nil, "the Lufthansa is no aircraft instructed")
   check_eq(ft("EZY45 climb FL 200 to stay behind the BA"), "ALT EZY45 FL200")
   -- a new aircraft of an airline is no reference to the one flying
