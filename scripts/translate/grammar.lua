@@ -461,6 +461,15 @@ end
 local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w" })
 local function written_forms(text)
   text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(text))))))
+  -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
+  -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
+  -- leave it as typed
+  text = text:gsub("%f[%w]([NnSs])(%d%d?)%s+(%d%d?%.?%d*)%s+([EeWw])(%d%d?%d?)%s+(%d%d?%.?%d*)%f[^%w%.]",
+    function(ns, lat, lat_min, ew, lon, lon_min)
+      lat_min, lon_min = tonumber(lat_min), tonumber(lon_min)
+      if not lat_min or not lon_min or lat_min >= 60 or lon_min >= 60 then return nil end
+      return string.format("%.6f %s %.6f %s", tonumber(lat) + lat_min / 60, ns, tonumber(lon) + lon_min / 60, ew)
+    end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"

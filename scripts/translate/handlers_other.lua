@@ -1034,12 +1034,14 @@ return function(H, f, compass)
   end
 
   function m:define_waypoint(s)
-    -- its type, said as what it is ("as a fix", "type VOR": never its name); "define a fix GOLF" names no type
+    -- its type, said as what it is ("as a fix", "type VOR", "make it a FIX": never its name); "define
+    -- a fix GOLF" names no type
     local kind, kind_at = "", nil
     for k = s.b, s.e - 1 do
       local t = self.t[k]
       local wt = t.kind == "word" and L.waypoint_types[t.text]
-      if wt and self:preceded_by(k, 2, "as type") then
+      local make_it = self:word(k - 1, "a an") and self:word(k - 2, "it") and self:word(k - 3, "make")
+      if wt and (make_it or self:preceded_by(k, 2, "as type")) then
         kind, kind_at = " " .. wt, k
         self:explain(k, k + 1)
       end

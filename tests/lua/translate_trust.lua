@@ -51,6 +51,10 @@ check_eq(said(tr("dtmult 6 and show trails")), "DTMULT 6 ; TRAIL ON")
 -- a second thing said in one breath is made too, or asked about, never dropped
 check_eq(said(tr("define waypoint P1 at 51.0 3.0 and P2 at 51.5 3.5")), "DEFWPT P1 51 3 ; DEFWPT P2 51.5 3.5")
 check_eq(said(tr("define waypoint P1 at 51.0 3.0 and P2")), "ASK Where is waypoint P2? Please give a latitude and longitude.")
+-- a position typed as whole degrees after the hemisphere, then minutes; a waypoint's type said "make it a ..."
+check_eq(said(tr("define waypoint P1 at N52 30.0 E004 45.0 and make it a fix")), "DEFWPT P1 52.5 4.75 FIX")
+check_eq(said(tr("define waypoint P1 at S33 57 W070 06, make it a VOR")), "DEFWPT P1 -33.95 -70.1 VOR")
+check_eq(said(tr("cre KLM12 B738 N52 18.0 E004 30.0 090 FL100 250")), "CRE KLM12 B738 52.3 4.5 90 FL100 250")
 r = tr("klm77 fl120 sq 1234")
 check(said(r) == "ALT KLM77 FL120" and r.note:find("transponder codes", 1, true) ~= nil, said(r))
 check_eq(said(tr("klm1234 fl280 h320")), "ALT KLM1234 FL280 ; HDG KLM1234 320")
