@@ -470,6 +470,10 @@ local function written_forms(text)
       if not lat_min or not lon_min or lat_min >= 60 or lon_min >= 60 then return nil end
       return string.format("%.6f %s %.6f %s", tonumber(lat) + lat_min / 60, ns, tonumber(lon) + lon_min / 60, ew)
     end)
+  -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds; mm:ss or hh:mm stays as typed
+  text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)%f[^%d:]", function(h, m, sec)
+    return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds"
+  end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"

@@ -755,6 +755,10 @@ do
   check_eq(bt("lateral sep to 4 nm"), "ZONER 4")
   -- timed instructions: by the clock (SCHEDULE) or from now (DELAY); one opening the request times all
   check_eq(bt("at 15 minutes turn KL204 right heading 150"), "SCHEDULE 00:15:00 HDG KL204 150 RIGHT")
+  -- a time typed h:mm:ss is the clock's time; never dropped
+  check_eq(bt("pause the sim automatically at 00:25:00"), "SCHEDULE 00:25:00 HOLD")
+  check_eq(bt("at 1:02:30 KL204 climb FL300"), "SCHEDULE 01:02:30 ALT KL204 FL300")
+  check_eq(bt("fast forward 0:05:00"), "FF 300")
   check_eq(bt("freeze the sim when the clock reaches 1 hour"), "SCHEDULE 01:00:00 HOLD")
   check_eq(bt("after 90 seconds KL204 climb FL300 and EZY45 descend FL200"),
     "DELAY 90 ALT KL204 FL300 ; DELAY 90 ALT EZY45 FL200")
