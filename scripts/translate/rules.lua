@@ -417,8 +417,9 @@ return function(intent, rule, words)
   rule { "start like", "create", near = { 2, "@articles_new" }, when = function(g, i)
     return g:has_ref(i + 1, i + 7, "type") and g:new_aircraft_follows(g:find_word(i + 1, i + 7, "@articles_new"))
   end }
-  -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...": a type or a new callsign right after the verb
-  rule { "add put new spawn", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
+  -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...", "insert SAS19K B736 at ...": a type or a new callsign
+  -- right after the verb
+  rule { "add put new spawn insert", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   -- "callsign SWR19, A333, FL360, ...": a request that opens with a new callsign and its type
   rule { "callsign", "create", when = function(g, i)
     return g:skip_fillers(1) == i and g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 6, "type")

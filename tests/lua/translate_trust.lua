@@ -478,6 +478,9 @@ check_eq(said(tr("resume at double speed")), "OP ; DTMULT 2")
 -- a family said as its number after an article is that type; the orbit "a 360" stays an orbit
 check_eq(said(tr("add a 737 called TST9 at 52.1 north 4.3 east heading 270 FL320 450 knots")),
   "CRE TST9 B737 52.1 4.3 270 FL320 450")
+-- "insert" before a new callsign or a type creates it; before a waypoint and a route it adds the waypoint
+check_eq(said(tr("insert TST7 B736 at 52.2 4.4 heading 180 FL110 260")), "CRE TST7 B736 52.2 4.4 180 FL110 260")
+check_eq(said(tr("insert an A320 TST8 at 52.2 4.4 heading 090 FL150 280")), "CRE TST8 A320 52.2 4.4 90 FL150 280")
 r = tr("BAW8CK make a 360")
 check(#r.commands == 0 and r.note ~= nil and r.note:find("orbits", 1, true) ~= nil, said(r))
 -- a word in a reason starts no instruction ("so we get the same run": no OP); "the random
