@@ -41,32 +41,20 @@ rl::TrainConfig lua_train_defaults() {
   return c;
 }
 
-// --hidden W[,W...]: the policy's hidden widths.
-Result<std::vector<int>> hidden_widths(const Args& args) {
-  std::vector<int> widths;
-  const std::string given = args.get_or("--hidden", "64,64");
-  for (const std::string& part : text::split(given, ',')) {
-    char* end = nullptr;
-    const long w = std::strtol(part.c_str(), &end, 10);
-    if (part.empty() || *end != '\0' || w < 1 || w > 4096)
-      return Status::invalid("--hidden " + given + ": '" + part + "' is not a width in 1..4096");
-    widths.push_back(static_cast<int>(w));
-  }
-  return widths;
-}
-
-// --agents N[,N...]: the num_agents a multi-agent file's sector episodes draw from (default 10).
-Result<std::vector<int>> agent_counts(const Args& args) {
-  std::vector<int> counts;
-  const std::string given = args.get_or("--agents", "10");
+// `flag` N[,N...] (else `fallback`): integers in 1..4096, each one `what` ("width", "count").
+Result<std::vector<int>> int_list(const Args& args, const char* flag, const char* fallback,
+                                  const char* what) {
+  std::vector<int> out;
+  const std::string given = args.get_or(flag, fallback);
   for (const std::string& part : text::split(given, ',')) {
     char* end = nullptr;
     const long n = std::strtol(part.c_str(), &end, 10);
     if (part.empty() || *end != '\0' || n < 1 || n > 4096)
-      return Status::invalid("--agents " + given + ": '" + part + "' is not a count in 1..4096");
-    counts.push_back(static_cast<int>(n));
+      return Status::invalid(std::string(flag) + " " + given + ": '" + part + "' is not a " + what +
+                             " in 1..4096");
+    out.push_back(static_cast<int>(n));
   }
-  return counts;
+  return out;
 }
 
 // The training and evaluation batches of `file`, its declaration and the grid's classes.
@@ -137,7 +125,8 @@ int cmd_train_env(const Args& args) {
   if (args.has("--agents") && !*parallel)
     return usage_error(
         "train", "--agents sets the agents of a multi-agent file; " + file + " is single-agent");
-  auto agents = agent_counts(args);
+  // --agents: the num_agents a multi-agent file's sector episodes draw from
+  auto agents = int_list(args, "--agents", "10", "count");
   if (!agents) return usage_error("train", agents.status().message());
   // [-] learner episodes per sector episode: agent trajectories (1 for a single-agent file)
   const int per_sector = *parallel ? *std::max_element(agents->begin(), agents->end()) : 1;
@@ -174,7 +163,7 @@ int cmd_train_env(const Args& args) {
     return usage_error("train", "--levels " + std::to_string(*levels) +
                                     ": expected at least 2 per component (--gaussian for a "
                                     "continuous action)");
-  auto hidden = hidden_widths(args);
+  auto hidden = int_list(args, "--hidden", "64,64", "width");  // the policy's hidden widths
   if (!hidden) return usage_error("train", hidden.status().message());
   auto validation = validation_seed(args, 0);
   if (!validation) return usage_error("train", validation.status().message());

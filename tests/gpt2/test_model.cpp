@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../finite_difference.h"
 #include "core/rng.h"
 #include "gpt2/checkpoint.h"
 #include "gpt2/model.h"
@@ -85,17 +86,6 @@ float max_abs(const std::vector<float>& v) {
   float m = 0.0f;
   for (float x : v) m = std::max(m, std::fabs(x));
   return m;
-}
-
-// (loss(p + eps) - loss(p - eps)) / (2 eps) with eps = 1e-2; p is restored.
-double central_difference(float& p, const std::function<double()>& loss) {
-  const float saved = p, eps = 1e-2f;
-  p = saved + eps;
-  const double lp = loss();
-  p = saved - eps;
-  const double lm = loss();
-  p = saved;
-  return (lp - lm) / (2.0 * eps);
 }
 
 }  // namespace
@@ -268,7 +258,8 @@ static void check_tail_gradients(int k, bool embeddings, nn::Precision prec = nn
     for (int s = 0; s < (rows.empty() ? 4 : 6); ++s) {
       const size_t i = t.offset + (rows.empty() ? static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1))
                                                 : static_cast<size_t>(rows[s]) * C + static_cast<size_t>(pick.uniform_int(0, C - 1)));
-      const double fd = central_difference(model.params()[i], [&] { return loss_and_dhidden(nullptr); });
+      const double fd =
+          central_difference(model.params()[i], 1e-2f, [&] { return loss_and_dhidden(nullptr); });
       const double an = analytic[i - start];
       INFO(t.name << "[" << (i - t.offset) << "]: analytic " << an << ", finite difference " << fd);
       CHECK(std::fabs(an - fd) <= atol + rtol * std::fabs(fd));
@@ -349,7 +340,7 @@ static void check_lm_loss(nn::Precision prec, double loss_eps, double atol, doub
                                                 : 0;
       const size_t i = t.offset + (t.name.rfind("w", 0) == 0 ? r * C + static_cast<size_t>(pick.uniform_int(0, C - 1))
                                                              : static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1)));
-      const double fd = central_difference(model.params()[i], reference);
+      const double fd = central_difference(model.params()[i], 1e-2f, reference);
       INFO(t.name << "[" << (i - t.offset) << "]: analytic " << analytic[i] << ", finite difference " << fd);
       CHECK(std::fabs(analytic[i] - fd) <= atol + rtol * std::fabs(fd));
       ++checked;
@@ -514,14 +505,14 @@ TEST_CASE("read-out loss: gradients of model and probe match finite differences,
     Rng pick(t.offset + 7);
     for (int s = 0; s < 2; ++s) {
       const auto i = t.offset + static_cast<size_t>(pick.uniform_int(0, static_cast<int64_t>(t.size) - 1));
-      const double fd = weight * central_difference(model.params()[i], fresh_loss);
+      const double fd = weight * central_difference(model.params()[i], 1e-2f, fresh_loss);
       INFO(t.name << "[" << (i - t.offset) << "]: analytic " << model_grad[i] << ", finite difference " << fd);
       CHECK(std::fabs(model_grad[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
       ++checked;
     }
   }
   for (size_t i : {size_t{0}, size_t{37}, static_cast<size_t>(C) * D + 2}) {
-    const double fd = central_difference(probe.params[i], fresh_loss);
+    const double fd = central_difference(probe.params[i], 1e-2f, fresh_loss);
     INFO("probe[" << i << "]: analytic " << probe_grad[i] << ", finite difference " << fd);
     CHECK(std::fabs(probe_grad[i] - fd) <= 2e-3 + 2e-2 * std::fabs(fd));
     ++checked;
