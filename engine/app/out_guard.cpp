@@ -8,6 +8,7 @@
 
 #include "core/files.h"
 #include "core/text.h"
+#include "dist/comm.h"
 
 namespace fs = std::filesystem;
 
@@ -57,18 +58,32 @@ Result<ArgV> resolve_train_argv(const ArgV& argv, const Args::Spec& spec) {
   if (resume && force) return Status::invalid("--resume and --force contradict each other: choose one");
   if (args->has("--override") && !resume)
     return Status::invalid("--override goes with --resume (it replaces the flags of a run that continues)");
+  // Rank 0 alone looks and removes, and tells the others: a rank that starts later would see (or
+  // delete) the files rank 0 has begun to write.
   std::vector<std::string> found;
-  for (size_t k = 0; k < kRunMarkers; ++k)
-    if (files::exists(dir + "/" + kRunFiles[k])) found.emplace_back(kRunFiles[k]);
-  if (found.empty()) return argv;
-  if (force) {
+  std::string removal_error;
+  if (dist::rank() == 0) {
+    for (size_t k = 0; k < kRunMarkers; ++k)
+      if (files::exists(dir + "/" + kRunFiles[k])) found.emplace_back(kRunFiles[k]);
     for (const char* f : kRunFiles) {
+      if (found.empty() || !force || !removal_error.empty()) break;
       std::error_code ec;
       fs::remove(dir + "/" + f, ec);
-      if (ec) return Status::io_error("--force: cannot remove " + dir + "/" + f + ": " + ec.message());
+      if (ec) removal_error = "--force: cannot remove " + dir + "/" + f + ": " + ec.message();
     }
+  }
+  std::byte seen[2] = {std::byte{static_cast<unsigned char>(!found.empty())},
+                       std::byte{static_cast<unsigned char>(!removal_error.empty())}};
+  dist::broadcast({seen, 2}, 0);
+  if (!static_cast<bool>(seen[0])) return argv;
+  if (force) {
+    if (static_cast<bool>(seen[1]))
+      return Status::io_error(removal_error.empty()
+                                  ? "--force: rank 0 cannot remove the run in " + dir
+                                  : removal_error);
     return argv;
   }
+  if (found.empty()) found.emplace_back("as rank 0 sees it");
   if (!resume)
     return Status::invalid("--out " + dir + " already holds a run (" + text::join(found, ", ") +
                            "): --resume continues it, --force deletes it and starts over, or choose another --out");
