@@ -208,6 +208,9 @@ namespace {
 // "DIRECT acid wpt" adds nothing (a direct-to switches LNAV on: route_op).
 // "AFTER acid wp ADDWPT new [alt spd]" is "ADDWPT acid new,alt,spd,wp" and
 // BEFORE its beforewp (commands_route.cpp: both insert the same waypoint).
+// "AT acid wp alt/spd" is "AT acid wp ALT alt" and "AT acid wp SPD spd", and
+// the two for one waypoint read altitude first (commands_route.cpp `at` sets
+// the same constraints either way).
 std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
   auto words = [](const std::string& c) {
     auto v = tokens(c);
@@ -215,6 +218,25 @@ std::vector<std::string> fold_clearances(std::vector<std::string> cmds) {
     if (!v.empty()) v[0] = canonical_command(v[0]);
     return v;
   };
+  for (size_t i = 0; i < cmds.size(); ++i) {
+    auto v = words(cmds[i]);
+    if (v.size() != 4 || v[0] != "AT" || v[3].find('/') == std::string::npos) continue;
+    const auto parts = text::split(v[3], '/');
+    if (parts.size() != 2) continue;
+    const std::string at = "AT " + v[1] + " " + v[2];
+    std::vector<std::string> split;
+    if (!parts[0].empty()) split.push_back(at + " ALT " + parts[0]);
+    if (!parts[1].empty()) split.push_back(at + " SPD " + parts[1]);
+    cmds.erase(cmds.begin() + static_cast<std::ptrdiff_t>(i));
+    cmds.insert(cmds.begin() + static_cast<std::ptrdiff_t>(i), split.begin(), split.end());
+  }
+  for (size_t i = 0; i + 1 < cmds.size(); ++i) {
+    auto a = words(cmds[i]), b = words(cmds[i + 1]);
+    if (a.size() == 5 && b.size() == 5 && a[0] == "AT" && b[0] == "AT" &&
+        text::iequals(a[1], b[1]) && text::iequals(a[2], b[2]) && text::iequals(a[3], "SPD") &&
+        text::iequals(b[3], "ALT"))
+      std::swap(cmds[i], cmds[i + 1]);
+  }
   for (auto& c : cmds) {
     auto v = words(c);
     if (v.size() < 5 || (v[0] != "AFTER" && v[0] != "BEFORE") || !text::iequals(v[3], "ADDWPT"))

@@ -9,7 +9,8 @@
 // (FL300 = 30000); speeds in knots within 0.5 kt or Mach within 0.0005
 // (M0.78 = .78); vertical speeds within 1 ft/min; latitude/longitude within
 // 1e-3 deg; headings modulo 360 within 0.5 deg; other numbers equal numerically; ATALT/ATSPD
-// compare their condition and then the nested command the same way. Expected `ASK` is correct only
+// compare their condition and then the nested command the same way. "AT acid wp alt/spd" is
+// "AT acid wp ALT alt ; AT acid wp SPD spd" (either order). Expected `ASK` is correct only
 // when the translator asked. Pure functions.
 #pragma once
 

@@ -92,6 +92,22 @@ TEST_CASE("a time compares in seconds as the simulator reads it: MM:SS and HH:MM
   CHECK_FALSE(score_case("SCHEDULE 1200 HOLD", false, "SCHEDULE 00:20:00 OP"));
 }
 
+TEST_CASE(
+    "AT acid wp alt/spd is the ALT and the SPD constraint at that waypoint, in either order") {
+  CHECK(score_case("AT GFA272 MAKIN ALT FL100 ; AT GFA272 MAKIN SPD 250", false,
+                   "AT GFA272 MAKIN FL100/250"));
+  CHECK(score_case("AT GFA272 MAKIN SPD 250 ; AT GFA272 MAKIN ALT FL100", false,
+                   "GFA272 AT MAKIN 10000/250"));
+  CHECK(score_case("AT GFA272 MAKIN SPD 250", false, "AT GFA272 MAKIN /250"));
+  CHECK_FALSE(
+      score_case("AT GFA272 MAKIN ALT FL100 ; SPD GFA272 250", false, "AT GFA272 MAKIN FL100/250"));
+  CHECK_FALSE(score_case("AT GFA272 MAKIN ALT FL100 ; AT GFA272 ADSIS SPD 250", false,
+                         "AT GFA272 MAKIN FL100/250"));
+  CHECK_FALSE(score_case("AT GFA272 MAKIN ALT FL110 ; AT GFA272 MAKIN SPD 250", false,
+                         "AT GFA272 MAKIN FL100/250"));
+  CHECK_FALSE(score_case("AT GFA272 MAKIN ALT FL100", false, "AT GFA272 MAKIN FL100/250"));
+}
+
 TEST_CASE("AFTER / BEFORE acid wp ADDWPT new equal ADDWPT's afterwp / beforewp") {
   CHECK(score_case("ADDWPT DLH4AX IVLUT,,,ARTIP", false, "AFTER DLH4AX ARTIP ADDWPT IVLUT"));
   CHECK(score_case("ADDWPT DLH4AX NYKER,,,,ANDIK", false, "DLH4AX BEFORE ANDIK ADDWPT NYKER"));
