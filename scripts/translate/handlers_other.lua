@@ -171,7 +171,19 @@ return function(H, f, compass)
         named_at = self:place_by_name(math.max(from, s.trig) + 1, s.e)
         for k = math.max(from, s.trig) + 1, s.e - 1 do
           if named_at and (self.explained or {})[k] and not was[k] then
-            if self:word(k - 1, "at") then named_at = self:airport_meant(named_at, self.fleet[1] or { lat = 0, lon = 0 }) end
+            local a = self.fleet[1] or { lat = 0, lon = 0 }
+            if self:word(k - 1, "at") then named_at = self:airport_meant(named_at, a) end
+            -- ("at Marseille": a navaid said by its name that stands on a large airport is that airport; the
+            -- navaid of that ident nearest each aircraft flying stands on the same one, "at Clacton" is the
+            -- VOR on a small airfield)
+            local beside, class, on = self.world.airports_beside, self.world.airport_class, nil
+            if beside and class and self:word(k - 1, "at") and not named_at:match("^%a%a%a%a$") then
+              for _, b in ipairs(self.fleet) do
+                local ids = beside(named_at, b.lat, b.lon, L.on_airport_nm)
+                on = (#ids == 1 and class(ids[1]) == "LARGE" and (on == nil or on == ids[1])) and ids[1] or false
+              end
+            end
+            if on then named_at = on end
             break
           end
         end

@@ -1385,5 +1385,11 @@ do
     check_eq(nt("XY40 A320 at SPY heading 270 FL200 280kt, and XY41 A320 at PAM heading 090 FL200 280kt"),
       "CRE XY40 A320 SPY 270 FL200 280 ; CRE XY41 A320 PAM 90 FL200 280")
     check_eq(nt("cre xy32 a320 spy hdg 90 fl100 250kt"), "CRE XY32 A320 SPY 90 FL100 250")
+    -- a navaid said by its name that stands on an airport (Marseille's NDB MJ, 0.2 NM from LFML) is the airport
+    check_eq(table.concat(nav:airports_beside("MJ", 43.4, 5.2, 1), " "), "LFML")
+    check_eq(#nav:airports_beside("NOSUCH", 43.4, 5.2, 1), 0)
+    check(nav:exec("CRE AFR6202 A320 44.7 3.4 165 FL300 280"))
+    check_eq(nt("new Air France, AFR7710, A319, at Marseille, heading 270, 5000 feet, 220 knots"),
+      "CRE AFR7710 A319 LFML 270 5000 220")
   end
 end
