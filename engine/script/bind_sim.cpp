@@ -18,6 +18,9 @@
 //                           before the three-letter `code` within 10 nm of the navaid or fix `code`
 //                           nearest lat, lon [deg] (the airport people name by the code of its
 //                           VOR: JFK -> KJFK)
+//   sim:airports_beside(ident, lat, lon, within_nm) -> { "LFML", ... }  airports within
+//                           within_nm of the navaid or fix `ident` nearest lat, lon [deg], nearest
+//                           first ({} without it: the airport a navaid named after a city is on)
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
 //                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
@@ -57,7 +60,9 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "command/conformance.h"
 #include "command/registry.h"
@@ -195,6 +200,29 @@ int l_airports_coded(lua_State* L) {
   for (char c = 'A'; c <= 'Z'; ++c) {
     const command::NavPoint* a = s->navdb()->airport(std::string(1, c) + code);
     if (!a || geo::kwikdist_nm(a->lat, a->lon, w->lat, w->lon) > 10.0) continue;
+    lua_pushstring(L, a->id.c_str());
+    lua_rawseti(L, -2, ++k);
+  }
+  return 1;
+}
+
+int l_airports_beside(lua_State* L) {
+  command::Stack* s = self(L);
+  const std::string ident = text::upper(arg_string(L, 2, "ident"));
+  const double lat = arg_number(L, 3, "lat"), lon = arg_number(L, 4, "lon"),
+               within = arg_number(L, 5, "within_nm");
+  lua_newtable(L);
+  const command::NavPoint* w = s->navdb() ? s->navdb()->waypoint(ident, lat, lon) : nullptr;
+  if (!w) return 1;
+  std::vector<std::pair<double, const command::NavPoint*>> found;  // [NM], airport
+  for (const command::NavPoint& a : s->navdb()->airports()) {
+    const double d = geo::kwikdist_nm(a.lat, a.lon, w->lat, w->lon);
+    if (d <= within) found.emplace_back(d, &a);
+  }
+  std::sort(found.begin(), found.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  int k = 0;
+  for (const auto& [d, a] : found) {
     lua_pushstring(L, a->id.c_str());
     lua_rawseti(L, -2, ++k);
   }
@@ -490,6 +518,7 @@ void bind_sim(lua_State* L) {
       {"airport_class", guarded<l_airport_class>},
       {"navaids_named", guarded<l_navaids_named>},
       {"airports_coded", guarded<l_airports_coded>},
+      {"airports_beside", guarded<l_airports_beside>},
       {"load", guarded<l_load>},
       {"step", guarded<l_step>},
       {"run_until", guarded<l_run_until>},

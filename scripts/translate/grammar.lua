@@ -459,6 +459,29 @@ local function hyphened_types(text)
 end
 
 local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w" })
+
+-- A position typed in degrees and minutes whose minutes are 60 or more ("N55 75 W003 20", "51 75N",
+-- "55 degrees 75 north", "59 deg 65 min N"): its text, else nil. Such a position is asked about, never
+-- re-read as other numbers (the hemisphere dropped, the degrees taken for a heading).
+local function impossible_minutes(text)
+  local low = text:lower()
+  local function bad(deg, min) return deg:match("^%d+$") and tonumber(deg) <= 180 and tonumber(min) >= 60 end
+  local function said(b, e) return (text:sub(b, e - 1):gsub("[%s%.]+$", "")) end
+  -- the hemisphere before the degrees: "N55 75 W003 20"
+  for b, lat, lat_min, lon, lon_min, e in
+      low:gmatch("%f[%w]()[ns](%d%d?)%s+(%d+%.?%d*)[%s,]+[ew](%d%d?%d?)%s+(%d+%.?%d*)()%f[^%w%.]") do
+    if bad(lat, lat_min) or bad(lon, lon_min) then return said(b, e) end
+  end
+  -- the hemisphere after the minutes: "51 75N", "51 75 north"
+  for b, deg, min, hemi, e in low:gmatch("%f[%w%.]()(%d+)%s+(%d+%.?%d*)%s*(%a+)()%f[%A]") do
+    if HEMISPHERES[hemi] and bad(deg, min) then return said(b, e) end
+  end
+  -- degrees said with their word, then minutes, before the hemisphere: "55 degrees 75 north", "59 deg 65 min N"
+  for b, deg, min, w1, w2, e in low:gmatch("%f[%w%.]()(%d+)%s*deg%a*%.?%s+(%d+%.?%d*)%s*(%a*)%.?%s*(%a*)()") do
+    if (HEMISPHERES[w1] or (w1:match("^min") and HEMISPHERES[w2])) and bad(deg, min) then return said(b, e) end
+  end
+  return nil
+end
 local function written_forms(text)
   text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(text))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -912,6 +935,23 @@ function G:segments(b, e)
         last.e = start
       end
       segs[#segs + 1] = { intent = tr.intent, b = last and start or b, trig = tr.pos, e = e, ["then"] = thn }
+    end
+  end
+  -- "FL 340, M.79, heading 255 - create FIN6PM, A359, ...", "Heading 015, 6,000 feet, 200 knots, at 55 degrees
+  -- 40 north 12 degrees 50 east: create SAS88Y, E195": values said before the creation, for no aircraft
+  -- named, are the new aircraft's
+  for k, sg in ipairs(segs) do
+    if sg.intent == "create" and k > 1 then
+      local values_only = #self:refs_in(b, sg.trig, "aircraft") == 0
+      for j = 1, k - 1 do
+        values_only = values_only and (segs[j].intent == "infer" or ((M.intents[segs[j].intent] or {}).value
+          and self:word(segs[j].trig, "heading hdg fl flight level altitude alt speed spd mach")))  -- (no verb)
+      end
+      if values_only then
+        sg.b = segs[1].b
+        return { table.unpack(segs, k) }
+      end
+      break
     end
   end
   return segs
@@ -1390,6 +1430,15 @@ function G:purpose(k)
     return true
   end
   if not self:word(k, "to") then return false end
+  -- ("To create a same-level encounter: SAS1410 climb FL190": a purpose opening the request, up to its colon,
+  -- naming no value and no aircraft)
+  if self:skip_fillers(1) == k and self:word(k + 1, "create set build make test") then
+    for e = k + 2, #self.t do
+      local t = self.t[e]
+      if t.kind == "punct" then return t.text == ":" and #self:quantities(k, e) == 0 and #self:refs_in(k, e) == 0 end
+    end
+    return false
+  end
   local nx = self.t[k + 1]
   if not nx or nx.kind ~= "word" or not nx.alpha or nx.number_word or not nx.raw:match("^%l+$")
       or #self:refs_in(k + 1, k + 2) > 0 then
@@ -1966,6 +2015,11 @@ function M.translate(text, world)
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
+  local dm = impossible_minutes(text)
+  if dm then
+    return { commands = {}, ask = string.format("'%s' is no position: minutes run from 0 to 59. Which latitude "
+      .. "and longitude do you mean?", dm) }
+  end
   text = written_forms(text)
   -- type names with their digits said as words, where traffic is created (random traffic too)
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
@@ -1982,6 +2036,14 @@ function M.translate(text, world)
   g:type_refs()
   g:opening_right()
   g:runway_sides()
+  -- a latitude beyond a pole or a longitude beyond the antimeridian ("95 N", "190 W") is no position
+  for _, q in ipairs(g:quantities(1, #g.t + 1)) do
+    if (q.kind == "lat" and math.abs(q.value) > 90) or (q.kind == "lon" and math.abs(q.value) > 180) then
+      return { commands = {}, ask = string.format("'%s' is no %s: it runs from 0 to %d degrees %s. Which position "
+        .. "do you mean?", g:raw(q.b, q.e), q.kind == "lat" and "latitude" or "longitude", q.kind == "lat" and 90 or 180,
+        q.kind == "lat" and "north or south" or "east or west") }
+    end
+  end
   local note = g:not_simulated()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end

@@ -405,31 +405,40 @@ function m:airline_refs()
 end
 
 -- Makers (lower case, "cessna") -> {designator = true} of the types squawk
--- knows, and model names ("737", "a320") -> designator.
-local MAKERS, MODELS
+-- knows, model names ("737", "a320") -> designator, and designators said
+-- without their maker's letter ("738" -> B738, "319" -> A319: the digits of
+-- exactly one Airbus or Boeing designator).
+local MAKERS, MODELS, SHORT
 local function makers()
-  if MAKERS then return MAKERS, MODELS end
-  MAKERS, MODELS = {}, {}
+  if MAKERS then return MAKERS, MODELS, SHORT end
+  MAKERS, MODELS, SHORT = {}, {}, {}
   local names = require("translate.names")
-  for _, row in ipairs(require("translate.types").build(names.designators).types) do
+  local types = require("translate.types").build(names.designators)
+  for _, row in ipairs(types.types) do
     local m = row[1]:lower()
     MAKERS[m] = MAKERS[m] or {}
     MAKERS[m][row[3]] = true
     MODELS[row[2]] = MODELS[row[2]] or row[3]
   end
-  return MAKERS, MODELS
+  for _, d in ipairs(types.designators) do
+    local digits = d:match("^[AB](%d%d%d)$")
+    if digits then SHORT[digits] = SHORT[digits] == nil and d or false end
+  end
+  return MAKERS, MODELS, SHORT
 end
 
--- "add a Ryanair 737, RYR81JC, ...", "a United 757, UAL1540": an airline and a
--- model number after an article, with a callsign said straight after, are
+-- "add a Ryanair 737, RYR81JC, ...", "a United 757, UAL1540", "a Ryanair 738, ...": an airline and a
+-- model number (or a designator's digits) after an article, with a callsign said straight after, are
 -- the new aircraft's airline and type, no flight number (the C++ matcher read
 -- RYR737): that reference becomes a type reference to the model's designator.
 function m:airline_types()
-  local _, models = makers()
+  local _, models, short = makers()
   for k, r in ipairs(self.refs) do
     local nxt = self.refs[k + 1]
-    local digits = r.kind == "aircraft" and not r.exists and r.name:match("^%a+(%d+)$")
-    local ty = digits and (L.airline_variant[digits] or models[digits])
+    -- (with one aircraft flying the matcher may have heard "Ryanair 738" as it: inexactly, heard.id)
+    local heard = r.kind == "aircraft" and (not r.exists and r.name or (r.heard and r.heard.id ~= "" and r.heard.id))
+    local digits = heard and heard:match("^%a+(%d+)$")
+    local ty = digits and (L.airline_variant[digits] or models[digits] or short[digits])
     if ty and self:word(r.b - 1, "@articles_new more") and nxt and nxt.kind == "aircraft"
         and nxt.b <= self:skip_fillers(r.e, false) + 1 then
       self.refs[k] = { kind = "type", name = ty, b = r.b, e = r.e }

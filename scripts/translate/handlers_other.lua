@@ -77,6 +77,14 @@ return function(H, f, compass)
       local k = self:find_word(s.b, s.e, "@id_words")
       if k + 1 < s.e and self.t[k + 1].kind == "word" then id = self.t[k + 1].raw end
     end
+    -- ("an intruder for VIR9: DLH9KW ...", "a head-on for ICE204: spawn ICE205 ..."): the aircraft flying
+    -- that the new one is set up against is named as context
+    for _, r in ipairs(self.refs) do
+      if r.kind == "aircraft" and r.exists and self:word(r.b - 1, "for on against")
+          and self:preceded_by(r.b - 1, 2, "@intruder @head_on") then
+        self:explain(r.b, r.e)
+      end
+    end
     local types = self:refs_in(s.b, s.e, "type")
     local actype = types[1] and types[1].name
     local model, near
@@ -115,6 +123,7 @@ return function(H, f, compass)
     end
     if not hdg then
       local h = self:find_word(s.b, s.e, "heading hdg facing pointing")  -- ("facing west")
+      if self:word(h + 1, "due") then h = h + 1 end  -- ("heading due east")
       if h + 1 < s.e and compass(self.t[h + 1].text) then
         hdg = compass(self.t[h + 1].text, h + 2 < s.e and self.t[h + 2].text or "", h + 3 < s.e and self.t[h + 3].text or "")
       end
@@ -162,10 +171,33 @@ return function(H, f, compass)
         named_at = self:place_by_name(math.max(from, s.trig) + 1, s.e)
         for k = math.max(from, s.trig) + 1, s.e - 1 do
           if named_at and (self.explained or {})[k] and not was[k] then
-            if self:word(k - 1, "at") then named_at = self:airport_meant(named_at, self.fleet[1] or { lat = 0, lon = 0 }) end
+            local a = self.fleet[1] or { lat = 0, lon = 0 }
+            if self:word(k - 1, "at") then named_at = self:airport_meant(named_at, a) end
+            -- ("at Marseille": a navaid said by its name that stands on a large airport is that airport; the
+            -- navaid of that ident nearest each aircraft flying stands on the same one, "at Clacton" is the
+            -- VOR on a small airfield)
+            local beside, class, on = self.world.airports_beside, self.world.airport_class, nil
+            if beside and class and self:word(k - 1, "at") and not named_at:match("^%a%a%a%a$") then
+              for _, b in ipairs(self.fleet) do
+                local ids = beside(named_at, b.lat, b.lon, L.on_airport_nm)
+                on = (#ids == 1 and class(ids[1]) == "LARGE" and (on == nil or on == ids[1])) and ids[1] or false
+              end
+            end
+            if on then named_at = on end
             break
           end
         end
+      end
+    end
+    -- ("cre KLM1234 b738 sugol hdg 90 ...": a name typed in CRE's place of the position, straight after the
+    -- type, is that waypoint; the command's check asks when navdata has none of that name)
+    local typed = types[1] and types[1].e
+    if (not lat or not lon) and not named_at and typed and typed < s.e then
+      local t = self.t[typed]
+      if t.kind == "word" and t.alpha and #t.text >= 3 and #t.text <= 5 and not t.keyword and not t.filler
+          and not t.number_word and not L.phonetic[t.text] and not self.u:used(typed) and #self:refs_in(typed, typed + 1) == 0 then
+        named_at = t.text:upper()
+        self:explain(typed, typed + 1)
       end
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
@@ -185,6 +217,13 @@ return function(H, f, compass)
       end
       if not seen and (q.kind == "plain" or q.kind == "dist") then left[#left + 1] = q end
       ::continue::
+    end
+    -- the three said bare in CRE's order, an altitude in feet between ("cre EZY9TT A319 51 45N 000 30W 180 9000 240")
+    if #left == 3 and not (hdg or alt or spd or mach) and left[1].kind == "plain" and left[2].kind == "plain"
+        and left[3].kind == "plain" and left[1].value >= 0 and left[1].value <= 360 and left[2].value >= 1000
+        and left[2].value <= 60000 and left[3].value >= 40 and left[3].value <= 700 then
+      hdg, alt, spd = left[1].value, left[2].value, left[3].value
+      left = {}
     end
     -- CRE's order for values said bare: heading, altitude, speed ("52.15 4.25 45 fl310 290")
     if #left >= 1 and left[1].kind == "plain" and not hdg and alt and left[1].value >= 0 and left[1].value <= 360
@@ -282,8 +321,9 @@ return function(H, f, compass)
       if q.kind == "time" then times[#times + 1] = q end
       -- (a bare number beside the closest approach's word is its distance: "cpa 0", "1 mile cpa")
       local beside = self:word(q.b - 1, "@closest_approach distance") or self:word(q.e, "@closest_approach")
-      if (q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at")))
-          and not dpsi then
+      -- ("dpsi 180", "conflict angle 45": a bare number after CRECONFS's argument name or "angle")
+      if (q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at"))
+          or (q.kind == "plain" and self:word(q.b - 1, "dpsi angle"))) and not dpsi then
         dpsi = self:take(q).value
       elseif (q.kind == "dist" and not cpa and near("@closest_approach"))
           or (q.kind == "plain" and not cpa and beside) then

@@ -295,6 +295,9 @@ return {
   waypoint_confirm = 1.0,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
+  -- a navaid said by its name within this of a large airport stands on it: "create ... at Marseille" is the
+  -- airport (LFML), not its NDB (MJ) [NM]
+  on_airport_nm = 1,
   -- answers that confirm a question ("did you mean BAW123?")
   yes = { "yes", "affirm", "affirmative", "correct", "yep", "yeah", "confirmed", "confirm" },
   -- answers to "What does 'W' mean?" that say W carries nothing ("ignore it", "nothing",

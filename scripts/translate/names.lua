@@ -228,6 +228,7 @@ return {
     { "klm royal dutch", "KLM" },
     { "easy jet", "EZY" },
     { "wizz", "WZZ" },
+    { "norwegian", "NAX" },
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",

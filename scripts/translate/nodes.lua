@@ -244,7 +244,8 @@ function M.world(sim, waypoints)
            airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
            airport_class = function(id) return sim:airport_class(id) end,
            navaids_named = function(name, lat, lon, nm, types) return sim:navaids_named(name, lat, lon, nm, types) end,
-           airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end }
+           airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end,
+           airports_beside = function(id, lat, lon, nm) return sim:airports_beside(id, lat, lon, nm) end }
 end
 
 function M.offline(state, ctx)

@@ -86,11 +86,40 @@ return function(intent, rule, words)
       g.opening_create = false  -- (computed once per request: the rule is tried at every word)
       local colon = 0
       for k = 1, #g.t do if g.t[k].kind == "punct" and g.t[k].text == ":" then colon = k break end end
+      -- ("Let's start with the baseline pair. SAS1A A320 at VENOM ...": a sentence before it that names no
+      -- value and no aircraft is a label too)
+      for k = 1, colon == 0 and #g.t or 0 do
+        if g.t[k].kind == "punct" and g.t[k].text == "." then
+          if #g:quantities(1, k) == 0 and #g:refs_in(1, k, "aircraft") == 0 then colon = k end
+          break
+        end
+      end
       local j = colon + 1
       while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
       local r = g:refs_in(j, j + 1, "aircraft")[1]
       local ty = r and not r.exists and r.b == j and g:refs_in(r.e, r.e + 2, "type")[1]
-      local labelled = colon > 0 and (#g:quantities(1, colon) > 0 or #g:refs_in(1, colon, "aircraft") > 0)
+      if not ty then
+        -- ("A320 BAW1 at ...", "a Ryanair 738, RYR4GV, at MAYLA ...": the type first, after its article)
+        local a = g:word(j, "a an another") and j + 1 or j
+        local t1 = g:refs_in(a, a + 1, "type")[1]
+        local after = t1 and t1.b == a and t1.e
+        while after and g.t[after] and g.t[after].kind == "punct" do after = after + 1 end
+        local r2 = after and g:refs_in(after, after + 1, "aircraft")[1]
+        if r2 and not r2.exists and r2.b == after then ty = r2 end  -- (the creation fires after the callsign)
+      end
+      -- ("Need a slow one ...:", "One more:": "one" standing for an aircraft is no value)
+      local values = 0
+      for _, q in ipairs(colon > 0 and g:quantities(1, colon) or {}) do
+        if not (q.kind == "plain" and g:word(q.b, "one") and q.e == q.b + 1) then values = values + 1 end
+      end
+      -- ("an intruder for KLM77: XY22 A320 ...": the aircraft the new one is set up against labels it)
+      local named = 0
+      for _, a in ipairs(colon > 0 and g:refs_in(1, colon, "aircraft") or {}) do
+        if not (a.exists and g:word(a.b - 1, "for on against") and g:preceded_by(a.b - 1, 2, "@intruder @head_on")) then
+          named = named + 1
+        end
+      end
+      local labelled = colon > 0 and (values > 0 or named > 0)
       if ty and not labelled and #g:quantities(ty.e, #g.t + 1) > 0 then
         local at = ty.e  -- (fired at the first word after the type)
         while g.t[at] and (g.t[at].kind ~= "word" or g.u:used(at)) do at = at + 1 end
@@ -230,6 +259,7 @@ return function(intent, rule, words)
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" } }  -- "the Shuttle is a bit slow": a description
+  rule { "slow fast", false, prev = { 1, "a an" }, next = "one ones aircraft plane mover" }  -- "a slow one": a description
   rule { "slow slower faster accelerate decelerate", "spd" }
   -- "and give it 280 knots": a speed given to the aircraft
   rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
@@ -306,6 +336,16 @@ return function(intent, rule, words)
   rule { "delwpt", "delwpt" }
   rule { "create make", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
+  -- "To create a same-level encounter: SAS1410 climb FL190": the purpose of what follows the colon or comma
+  rule { "create set", false, prev = { 1, "to" }, when = function(g, i)
+    if g:skip_fillers(1) ~= i - 1 then return false end
+    for k = i + 1, math.min(#g.t, i + 6) do
+      if g.t[k].kind == "punct" and (g.t[k].text == ":" or g.t[k].text == ",") then
+        return #g:refs_in(i + 1, k, "aircraft") == 0 and #g:refs_in(i + 1, k, "type") == 0
+      end
+    end
+    return false
+  end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create spawn generate add", "mcre", near = { 3, "random" } }
@@ -330,6 +370,7 @@ return function(intent, rule, words)
   -- "intruder on IBE2604: INT1, B738, from the right, CPA 0, 250 s", "give TAP123 a head-on intruder, INT2,
   -- B738, CPA 2 miles": the noun alone, no verb of creation before it, sets one up when its type and
   -- closest approach or loss are said
+  rule { "creconfs", "creconfs" }  -- the command's name typed with its values in words ("creconfs INT1 B738 EZY45 dpsi 180 ...")
   rule { "intruder", "creconfs", when = function(g, i)
     return not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
@@ -379,6 +420,15 @@ return function(intent, rule, words)
     for k = 1, i - 1 do defined = defined or g:intent_at(k) == "defwpt" end
     local it = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "it")
     return defined and it <= #g.t and g:word(it - 1, "to through via over")
+  end }
+  -- "create EZY33AB ... routing BAPAG then MAYLA", "..., route ELTOK, dest ENGM", "..., same route, RUVAS then
+  -- OKAKI", "..., then give it TWEED at FL120": the waypoints of the aircraft created in the request
+  rule { "routing route via give", "addwpt", when = function(g, i)
+    local created = false
+    for k = 1, i - 1 do created = created or g:intent_at(k) == "create" end
+    local k = i + 1
+    while g.t[k] and (g.t[k].kind == "punct" or g:word(k, "it")) do k = k + 1 end
+    return created and g:has_ref(k, k + 1, "waypoint")
   end }
   -- "CFG4RK add NORKU, dest Bremen": a waypoint, a clause of its own, added for an aircraft that flies
   rule { "add append", "addwpt", when = function(g, i)
@@ -471,6 +521,13 @@ return function(intent, rule, words)
   rule { "going", "dest", next = "to", prev = { 1, "is it's are" },
          when = function(g, i) return not g:intent_at(i + 2) end }
   rule { "bound", "dest", next = "for", prev = { 1, "is it's are" } }
+  -- "create TAP447 ... going to Orly", "..., bound for Glasgow": where an aircraft created in the request flies
+  rule { "going headed bound", "dest", next = "to for", when = function(g, i)
+    for k = 1, i - 1 do
+      if g:intent_at(k) == "create" then return not g:intent_at(i + 2) end
+    end
+    return false
+  end }
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata
   rule { "send", "dest", when = function(g, i)
@@ -686,6 +743,8 @@ return function(intent, rule, words)
     end
     return true
   end }
+  -- "20 random aircraft for background load", "more traffic load": the noun, no file loaded
+  rule { "load", false, prev = { 1, "background traffic high low heavy light more extra" } }
   rule { "scenario load open ic", "ic" }
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
   rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },

@@ -1318,3 +1318,78 @@ do
   check_eq(at("Garuda four one two maintain flight level one seven zero"), "ASK Did you mean QFA41? I heard GARUDA412.")
   check_eq(at("Indonesia four one two maintain flight level one seven zero"), "ALT GIA412 FL170")
 end
+
+-- Creating aircraft the way experimenters say it (round 29's classes, sentences written here): a
+-- degrees-and-minutes position with its hemisphere anywhere, an impossible one asked about; values said
+-- before the callsign; the type before the callsign; a designator's digits after an airline; a label
+-- sentence or the aircraft an intruder is for before a colon; CRE's order typed bare
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+      "CRE KLM77 B738 52.1 4.5 180 FL150 250" }) do
+    check(lab:exec(line))
+  end
+  local function cr(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  -- minutes of 60 or more, or degrees beyond a pole or the antimeridian: asked, never re-read
+  check_eq(cr("create AB1 A320 at N55 75 W003 20 heading 090 FL200 250"),
+    "ASK 'N55 75 W003 20' is no position: minutes run from 0 to 59. Which latitude and longitude do you mean?")
+  check(cr("spawn XY12 B738 at 52 80N 004 10E, heading 180, FL100, 250 kt"):find("^ASK '52 80N' is no position") ~= nil)
+  check(cr("create XY12 B738 at 51 degrees 65 minutes north 3 degrees 10 minutes east heading 090")
+    :find("^ASK '51 degrees 65 minutes north' is no position") ~= nil)
+  check(cr("create XY12 B738 at 95 N 4 E heading 090 FL100 250"):find("^ASK '95 N' is no latitude") ~= nil)
+  check(cr("create XY12 B738 at 52 N 200 E heading 090 FL100 250"):find("^ASK '200 E' is no longitude") ~= nil)
+  -- the same forms with minutes that exist: signed decimal degrees
+  check_eq(cr("create XY12 B738 at 52 30N 004 45E heading 090 FL100 250"), "CRE XY12 B738 52.5 4.75 90 FL100 250")
+  check_eq(cr("put XY12, a B738, at 48 degrees 30 north 2 degrees 15 west, heading 270, FL120, 250 knots"),
+    "CRE XY12 B738 48.5 -2.25 270 FL120 250")
+  check_eq(cr("cre XY12 B738 52 15N 004 30W 270 12000 250"), "CRE XY12 B738 52.25 -4.5 270 12000 250")
+  -- values before the creation, for no aircraft named, are the new aircraft's; a verb before them is not
+  check_eq(cr("FL 250, 280 knots, heading 180 - create XY12, A320, at 52 N 4 E"), "CRE XY12 A320 52 4 180 FL250 280")
+  check_eq(cr("Speed 250, FL100, heading 090: spawn XY13 B738 at 52.5 4.5"), "CRE XY13 B738 52.5 4.5 90 FL100 250")
+  check(cr("climb to FL300 and create XY13 B738 at 52.5 4.5 heading 090 FL100 250"):find("^ASK") ~= nil)
+  -- the type first, or an airline and a designator's digits after an article, then the callsign
+  check_eq(cr("A320 XY14 at 52.1 4.1 heading 090 FL100 250"), "CRE XY14 A320 52.1 4.1 90 FL100 250")
+  check_eq(cr("create a Ryanair 319, RYR1AB, at 52 4 heading 090 FL100 250"), "CRE RYR1AB A319 52 4 90 FL100 250")
+  check_eq(cr("create a Norwegian 737-800, NAX55, at 60 10 heading 090 FL200 280"), "CRE NAX55 B738 60 10 90 FL200 280")
+  -- a sentence or label before it that names no value ("one" is the aircraft) and no other aircraft
+  check_eq(cr("Now the second aircraft. XY15 A320 at 52.3 4.3 heading 180 FL200 280"),
+    "CRE XY15 A320 52.3 4.3 180 FL200 280")
+  check_eq(cr("a fast one: XY16 B738 at 52.4 4.4 heading 090 FL300 300 kt"), "CRE XY16 B738 52.4 4.4 90 FL300 300")
+  check_eq(cr("an intruder for KLM77: XY22 A320 at 52.3 4.6 heading 270 FL150"), "CRE XY22 A320 52.3 4.6 270 FL150")
+  check_eq(cr("Set up a head-on for DLH4AX: create XY23 A321 at 52.4 4.9 heading 270 FL300 280"),
+    "CRE XY23 A321 52.4 4.9 270 FL300 280")
+  check_eq(cr("To set up an overtake: KLM77 reduce speed 220"), "SPD KLM77 220")
+  check_eq(cr("create XY33 C172 at 52 4 heading due west at 3000 ft, 100 knots"), "CRE XY33 C172 52 4 270 3000 100")
+  -- CRECONFS typed with its argument names; random traffic "for extra load" loads no file
+  check_eq(cr("creconfs XY20 A320 KLM77 dpsi 90 cpa 0.5 tlos 300"), "CRECONFS XY20 A320 KLM77 90 0.5 300")
+  check_eq(cr("spawn 10 random aircraft for extra load"), "MCRE 10")
+  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
+  if not ok then
+    print("skipped: creations at navdata places need BlueSky's navdata at ../shared/bluesky/navdata")
+  else
+    check(nav:exec("CRE KLM1234 B738 52.2 4.2 300 FL250 280"))
+    local function nt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+    -- the destination and the route said after the creation
+    check_eq(nt("create XY30 A320 at SPY heading 090 FL100 250, going to Schiphol"),
+      "CRE XY30 A320 SPY 90 FL100 250 ; DEST XY30 EHAM")
+    check_eq(nt("create XY30 A320 at SPY heading 090 FL100 250, bound for EDDF"),
+      "CRE XY30 A320 SPY 90 FL100 250 ; DEST XY30 EDDF")
+    check_eq(nt("create XY31 A320 at SPY heading 090 FL100 250, routing PAM then EEL"),
+      "CRE XY31 A320 SPY 90 FL100 250 ; ADDWPT XY31 PAM ; ADDWPT XY31 EEL")
+    check_eq(nt("create XY31 A320 at SPY heading 090 FL100 250, route PAM, dest EHAM"),
+      "CRE XY31 A320 SPY 90 FL100 250 ; ADDWPT XY31 PAM ; DEST XY31 EHAM")
+    check_eq(nt("create XY31 A320 at SPY heading 090 FL100 250, then give it PAM at FL80"),
+      "CRE XY31 A320 SPY 90 FL100 250 ; ADDWPT XY31 PAM FL80")
+    -- created at a fix with no verb, the fix typed in lower case in CRE's place
+    check_eq(nt("a Ryanair 738, RYR9XY, at PAM heading 225 FL 110 250 knots"), "CRE RYR9XY B738 PAM 225 FL110 250")
+    check_eq(nt("XY40 A320 at SPY heading 270 FL200 280kt, and XY41 A320 at PAM heading 090 FL200 280kt"),
+      "CRE XY40 A320 SPY 270 FL200 280 ; CRE XY41 A320 PAM 90 FL200 280")
+    check_eq(nt("cre xy32 a320 spy hdg 90 fl100 250kt"), "CRE XY32 A320 SPY 90 FL100 250")
+    -- a navaid said by its name that stands on an airport (Marseille's NDB MJ, 0.2 NM from LFML) is the airport
+    check_eq(table.concat(nav:airports_beside("MJ", 43.4, 5.2, 1), " "), "LFML")
+    check_eq(#nav:airports_beside("NOSUCH", 43.4, 5.2, 1), 0)
+    check(nav:exec("CRE AFR6202 A320 44.7 3.4 165 FL300 280"))
+    check_eq(nt("new Air France, AFR7710, A319, at Marseille, heading 270, 5000 feet, 220 knots"),
+      "CRE AFR7710 A319 LFML 270 5000 220")
+  end
+end
