@@ -1391,6 +1391,13 @@ return function(H, f, compass)
   function m:time_step(s)
     local q = first(self, s, { time = true, plain = true })
     if q then return self:emit("DT " .. f.num(q.value)) end
+    -- "a tenth of a second", "half a second": a fraction of a second said in words
+    local frac = self:find_word(s.b, s.e, "@fractions")
+    local unit = frac < s.e and self:find_word(frac + 1, math.min(s.e, frac + 4), "second seconds") or s.e
+    if unit < s.e then
+      self:mark_used(frac, unit + 1)
+      return self:emit("DT " .. f.num(L.fractions[self.t[frac].text]))
+    end
     if self:asks_setting(true) then return self:emit("DT") end
     self:need("What time step, in seconds, should the simulation use?")
   end
@@ -1439,10 +1446,21 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.kind == "alt" and not alt then alt = self:take(q) end
       if q.kind == "speed" and not spd then spd = self:take(q) end
-      if (q.kind == "heading" or q.kind == "angle" or (q.kind == "plain" and self:word(q.b - 1, "from")))
+      -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt")
+      local before_speed = self:word(q.e, "at") and self:quantities(q.e + 1, q.e + 2)[1]
+      local said = self:word(q.b - 1, "from") or (self:word(q.b - 1, "of") and self:word(q.b - 2, "wind winds"))
+        or (before_speed and before_speed.kind == "speed")
+      if (q.kind == "heading" or q.kind == "angle" or (q.kind == "plain" and said))
           and not dir and q.value >= 0 and q.value <= 360 then
         dir = self:take(q)
       end
+    end
+    -- ("from the west": a compass point)
+    local from = self:find_word(s.b, s.e, "from")
+    local point = from < s.e and L.compass[(self.t[self:word(from + 1, "the") and from + 2 or from + 1] or {}).text or ""]
+    if not dir and point then
+      dir = { value = point }
+      self:explain(from, self:word(from + 1, "the") and from + 3 or from + 2)
     end
     if not dir or not spd then
       return self:need("From which direction, and how strong in knots, should the wind blow?")
@@ -1484,6 +1502,10 @@ return function(H, f, compass)
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
+    -- "enable conflict detection and resolution": switched on (or off) with the detection before it
+    if self:on_off(s) < 0 and self.last_on ~= nil and self:word(s.trig - 1, "and") then
+      return self:emit(self.last_on == 1 and "RESO MVP" or "RESO OFF")
+    end
     self:need("Which conflict resolution method should I use (for example MVP), or should it be off?")
   end
   -- RFACH / RFACV: the safety factor resolutions apply; each value is the kind said last before it
@@ -1492,6 +1514,8 @@ return function(H, f, compass)
     local b = math.max(1, s.b - 4)  -- ("with horizontal factor 1.1": the kind said before the noun)
     local function kind(e)
       for k = e - 1, b, -1 do
+        local named = self:registry_word(k)  -- ("rfacv 1.1", "hrfac 1.2": the command's own name)
+        if named == "RFACH" or named == "RFACV" then return named end
         if self:word(k, "vertical") then return "RFACV" end
         if self:word(k, "horizontal lateral") then return "RFACH" end
       end
@@ -1516,8 +1540,21 @@ return function(H, f, compass)
   -- (both read their request whole: "allow vertical manoeuvres in the MVP resolutions", "resume nav
   -- once past cpa" say nothing else)
   function m:reso_vertical(s)
-    local off = self:word_in(1, #self.t + 1, "no not off without don't dont never only")
-    self:emit(off and "RMETHV OFF" or "RMETHV V/S")
+    -- ("rmethv off", "reso MVP, rmethv on": the command's own name, and the switch said after it)
+    if self:registry_word(s.trig) and self:word(s.trig + 1, "on off") then
+      self:emit(self:word(s.trig + 1, "off") and "RMETHV OFF" or "RMETHV V/S")
+      return self:mark_used(s.trig, s.trig + 2)
+    end
+    local all = #self.t + 1
+    local off = self:word_in(1, all, "no not off without don't dont never")
+    local only = self:word_in(1, all, "only")
+    -- ("vertical resolutions only": no method of squawk's; resolutions are horizontal, or horizontal
+    -- with vertical speed too)
+    if only and not off and not self:word_in(1, all, "horizontal lateral") then
+      return self:need("squawk's resolutions are horizontal only (RMETHV OFF) or horizontal with vertical "
+        .. "speed too (RMETHV V/S): which should it use?")
+    end
+    self:emit((off or only) and "RMETHV OFF" or "RMETHV V/S")
     self:mark_used(s.b, s.e)
   end
   function m:resume_nav(s)
@@ -1526,17 +1563,30 @@ return function(H, f, compass)
     self:mark_used(s.b, s.e)
   end
   function m:zone(s)
-    local vertical = self:word_in(s.b, s.e, "@vertical")
+    local vertical = self:word_in(s.b, s.e, "@vertical") or self:registry_word(s.trig) == "ZONEDH"
     if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then
       return self:emit(vertical and "ZONEDH" or "ZONER")
     end
     local before = #self.out
     local heights = {}  -- { value (ft), index of its ZONEDH line in self.out }
+    local qs, named = {}, false
+    -- a value before the zone's word is its own only with a unit, said just before it ("a 3 mile PZ";
+    -- "detection on with a 3 mile PZ", where detection set it already); a bare number there ("Run 2
+    -- setup: ZONER 5") is not
+    for _, q in ipairs(self:quantities(math.max(1, s.trig - 3), s.trig)) do
+      if (q.kind == "dist" or q.kind == "alt") and self:skip_fillers(q.e) == s.trig then
+        if self.taken[q.b] then named = true else qs[#qs + 1] = q end
+      end
+    end
     for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if (q.kind ~= "plain" or q.b > s.trig) and not (qs[1] and qs[1].b == q.b) then qs[#qs + 1] = q end
+    end
+    table.sort(qs, function(a, b) return a.b < b.b end)
+    for _, q in ipairs(qs) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
       for i = q.b - 1, s.b, -1 do
-        if self:word(i, "@vertical") then vertical = true break end
-        if self:word(i, "@zone_radius") then vertical = false break end
+        if self:word(i, "@vertical") or self:registry_word(i) == "ZONEDH" then vertical = true break end
+        if self:word(i, "@zone_radius") or self:registry_word(i) == "ZONER" then vertical = false break end
       end
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
       if q.kind == "alt" or (q.kind == "plain" and vertical) then
@@ -1555,7 +1605,7 @@ return function(H, f, compass)
       end
       table.remove(self.out, hi[2])
     end
-    if #self.out == before then
+    if #self.out == before and not named then
       self:need(vertical and "What half-height, in feet, should the protected zone have?"
         or "What radius, in nautical miles, should the protected zone have?")
     end

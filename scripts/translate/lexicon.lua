@@ -31,7 +31,9 @@ return {
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
       "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
       -- a position's labels as typed ("lat 51.95 lon 4.35"), and the random number generator a seed seeds
-      "lat", "lon", "lng", "rng", "prng", },
+      "lat", "lon", "lng", "rng", "prng",
+      -- the wind a request sets ("wind from 270 at 40 kt"): never part of a spoken callsign
+      "wind", "winds", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a
   -- sentence they name no command; any other registry name said ("rmethv") names its command
   english_command_names = { "after", "area", "at", "bank", "before", "box", "call", "circle", "delay", "help",
@@ -278,8 +280,8 @@ return {
       "facing", "flies", "headed" },
   compass = { north = 0, east = 90, south = 180, west = 270,
               northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
-  -- fractions of an hour or a minute said in words ("half an hour", "a quarter of an hour")
-  fractions = { half = 0.5, quarter = 0.25 },
+  -- fractions of an hour, a minute or a second said in words ("half an hour", "a tenth of a second")
+  fractions = { half = 0.5, quarter = 0.25, fifth = 0.2, tenth = 0.1, twentieth = 0.05, hundredth = 0.01 },
   -- how many times real time, said in words
   multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
   -- a spoken callsign matched to an aircraft it does not spell exactly is

@@ -268,7 +268,7 @@ return function(intent, rule, words)
 
   -- conflict resolution in the vertical ("let MVP use vertical speed in the resolutions", "keep
   -- resolutions horizontal only, no vertical"): RMETHV, never a vertical speed or a new method
-  rule { "vertical", "rmethv", when = function(g, i) return g:vertical_resolutions(i) end }
+  rule { "vertical horizontal lateral", "rmethv", when = function(g, i) return g:vertical_resolutions(i) end }
   -- vertical speed and bank
   rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
@@ -670,8 +670,17 @@ return function(intent, rule, words)
   rule { "skip", "ff", next = "ahead forward" }
   rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
+  -- "play it forward 3 minutes", "roll the sim on 10 minutes", "step forward 30 s": the clock moved on
+  -- by a time said after it, no aircraft named
+  rule { "play roll step wind push advance", "ff", near = { 4, "forward ahead on" },
+         not_prev = { 1, "time the a sim simulation" }, when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 8))[1]
+    return q ~= nil and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
+  -- "set the step to 0.2 s", "the simulation step 0.1": the step as a noun (the verb steps the clock on)
+  rule { "step", "dt", prev = { 1, "the a sim simulation integration update" }, not_near = { 3, "forward ahead on" } }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation
   rule { "reset", false, near = { 3, "protected protection pz rpz zone zoner separation radius" } }
   rule { "reset", "reset" }
@@ -700,6 +709,8 @@ return function(intent, rule, words)
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
+  -- "wind from 270 at 40 kt over 55.5 12.5", "a wind of 270 at 40 knots": where it blows from, said after it
+  rule { "wind winds", "wind", next = "from of", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
@@ -713,6 +724,10 @@ return function(intent, rule, words)
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
+  -- "Resolution method MVP, horizontal factor 1.2": a factor of a direction, resolution said before
+  rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
+    return g:word_in(1, i, "resolution resolutions reso resolve mvp")
+  end }
   rule { "mvp resolution resolve reso resolutions", false, when = function(g)
     for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
     return false
@@ -720,6 +735,7 @@ return function(intent, rule, words)
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
+  rule { "mvp", "reso", next = "on" }  -- "and MVP on"
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
