@@ -473,14 +473,18 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     }
     while (i < t.size() && t[i].kind == TokKind::kPunct && t[i].text == ",") ++i;
     Suffix suf = read_suffix(t, i, used, names);
-    // Digits followed by a unit are a quantity ("fast forward 2 minutes"), not a callsign.
+    // Digits followed by a unit are a quantity ("fast forward 2 minutes", "the protected zone 3 miles"),
+    // not a callsign.
     auto unit_after = [&](size_t e) {
       static const char* kUnits[] = {"s", "sec", "secs", "second", "seconds", "min", "mins", "minute", "minutes",
-                                     "h", "hour", "hours", "x", "times", "percent", "%"};
+                                     "h", "hour", "hours", "x", "times", "percent", "%", "nm", "mile", "miles"};
       return e < t.size() && is_word(t[e]) &&
              std::any_of(std::begin(kUnits), std::end(kUnits), [&](const char* u) { return t[e].text == u; });
     };
-    if (!suf.groups.empty() && !unit_after(suf.ends.back())) {
+    // One instruction word alone before the digits is that instruction and its value ("seed 1234
+    // please"), no airline misheard (that takes two words or more: "front turn" = Frontier).
+    const bool instruction_alone = keyword && i - words_begin == 1;
+    if (!suf.groups.empty() && !unit_after(suf.ends.back()) && !instruction_alone) {
       CallsignMatch m = match_world("", words, suf, fleet, names);
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
       double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;

@@ -1792,7 +1792,8 @@ function G:not_simulated()
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
             and (not c.after_callsign or self:callsign_before(i))
-            and (not c.after_instruction or self:instruction_before(i)) then
+            and (not c.after_instruction or self:instruction_before(i))
+            and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
           class = c
           break
         end

@@ -901,7 +901,31 @@ return function(H, f, compass)
     return out
   end
 
-  -- "CIRCLE name lat lon radius": "a circle named CTR around 52.3, 4.76 with a 20 nautical mile radius"
+  -- A shape's top and bottom, said as two levels or as one level and the surface ("from the surface up
+  -- to FL195"): " top bottom", "" when none is said, or nil after asking (one level alone)
+  local SURFACE = "surface ground sfc gnd sea"
+  local function shape_levels(self, s, name)
+    local levels = {}
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "alt" then levels[#levels + 1] = q end
+    end
+    if #levels == 1 and self:word_in(s.b, s.e, SURFACE) then
+      levels[2] = { value = 0 }
+      local k = self:find_word(s.b, s.e, SURFACE)
+      self:explain(k, k + 1)
+    end
+    if #levels == 2 then
+      local hi, lo = levels[1], levels[2]
+      if lo.value > hi.value then hi, lo = lo, hi end
+      return " " .. f.alt(hi.value, hi.fl) .. " " .. f.alt(lo.value, lo.fl)
+    elseif #levels > 0 then
+      return self:need("Between which two levels should " .. name .. " lie?")
+    end
+    return ""
+  end
+
+  -- "CIRCLE name lat lon radius [top bottom]": "a circle named CTR around 52.3, 4.76 with a 20 nautical
+  -- mile radius", "... radius 30 NM, from the surface up to FL195"
   function m:circle(s)
     local name = new_name(self, s.b, s.e)
     local p = points(self, s.b, s.e)[1]
@@ -912,7 +936,9 @@ return function(H, f, compass)
     if not name or not p or not radius then
       return self:need("To define the circle I need its name, centre (latitude and longitude) and radius in nautical miles.")
     end
-    self:emit(string.format("CIRCLE %s %s %s %s", name, f.num(p[1]), f.num(p[2]), f.num(radius)))
+    local levels = shape_levels(self, s, "circle " .. name)
+    if not levels then return end
+    self:emit(string.format("CIRCLE %s %s %s %s%s", name, f.num(p[1]), f.num(p[2]), f.num(radius), levels))
     self.last_shape = name
   end
 
@@ -959,20 +985,37 @@ return function(H, f, compass)
     if not name or #p ~= 2 then
       return self:need("To define the box I need its name and two corners (latitude and longitude each).")
     end
-    local cmd = string.format("BOX %s %s %s %s %s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2]))
-    local levels = {}
-    for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if q.kind == "alt" then levels[#levels + 1] = q end
-    end
-    if #levels == 2 then
-      local hi, lo = levels[1], levels[2]
-      if lo.value > hi.value then hi, lo = lo, hi end
-      cmd = cmd .. " " .. f.alt(hi.value, hi.fl) .. " " .. f.alt(lo.value, lo.fl)
-    elseif #levels > 0 then
-      return self:need("Between which two levels should box " .. name .. " lie?")
-    end
-    self:emit(cmd)
+    local levels = shape_levels(self, s, "box " .. name)
+    if not levels then return end
+    self:emit(string.format("BOX %s %s %s %s %s%s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]),
+      f.num(p[2][2]), levels))
     self.last_shape = name
+  end
+
+  -- "POLY name lat lon lat lon lat lon ...": a polygon of three corners or more ("Polygon LTMA: 51.2 -1.0,
+  -- 51.9 -1.0, 51.9 0.8, 51.2 0.8"); POLYALT when its top and bottom are said
+  function m:polygon(s)
+    local name = new_name(self, s.b, s.e)
+    local p = points(self, s.b, s.e)
+    if not name or #p < 3 then
+      return self:need("To define the polygon I need its name and three corners or more (latitude and longitude each).")
+    end
+    local levels = shape_levels(self, s, "polygon " .. name)
+    if not levels then return end
+    local corners = {}
+    for _, c in ipairs(p) do corners[#corners + 1] = f.num(c[1]) .. " " .. f.num(c[2]) end
+    self:emit((levels == "" and "POLY " .. name or "POLYALT " .. name .. levels) .. " " .. table.concat(corners, " "))
+    self.last_shape = name
+  end
+
+  -- "LINE name lat lon lat lon": "a reference line REF1 from 55.68 -3.27 to 56.12 -3.20" (drawn only)
+  function m:line(s)
+    local name = new_name(self, s.b, s.e)
+    local p = points(self, s.b, s.e)
+    if not name or #p ~= 2 then
+      return self:need("To draw the line I need its name and its two ends (latitude and longitude each).")
+    end
+    self:emit(string.format("LINE %s %s %s %s %s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2])))
   end
 
   -- "MCRE n [type [alt [spd [dest]]]]": random traffic; a type is given only when it is a known one
@@ -1030,6 +1073,16 @@ return function(H, f, compass)
       return self:emit(string.format("AREA %s %s %s %s", f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2])))
     end
     if #p == 0 and self.last_shape then return self:emit("AREA " .. self.last_shape) end
+    -- "Use SECT1 as the deletion area", "the CPHTMA circle as experiment area": the one name said is a
+    -- shape defined before (AREA refuses a name no shape has: the request is then asked about)
+    local named = {}
+    for _, r in ipairs(self.refs) do
+      if r.kind == "waypoint" or (r.kind == "aircraft" and not r.exists) then named[#named + 1] = r end
+    end
+    if #p == 0 and #named == 1 then
+      self:mark_used(named[1].b, named[1].e)
+      return self:emit("AREA " .. self:raw(named[1].b, named[1].e):upper())
+    end
     self:need("Which shape, or which two corners (latitude and longitude each), should the deletion area be?")
   end
 

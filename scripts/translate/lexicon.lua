@@ -107,6 +107,8 @@ return {
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
         "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
+        -- the dimensions of a setting ("the vertical size of the PZ")
+        "size", "sizes", "dimension", "dimensions", "extent",
         -- an aircraft's present course described ("the Vueling's drifting off its route")
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
@@ -119,6 +121,8 @@ return {
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
+        -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")
+        "reference", "boundary", "border", "corner", "corners", "edge", "centre", "center",
         -- states and settings a request names ("which method is active", "the scenario file", "ADS-B noise")
         "active", "inactive", "enabled", "disabled", "file", "ads-b", "adsb", "colliding", "collision",
         "conflicting",
@@ -348,8 +352,10 @@ return {
     { what = "orbits", words = "turn turning", near = { "completely", "circle" }, to_end = true },
     { what = "orbits", words = "full", near = { "circle", "360", "sixty", "turn" }, takes_time = true },
     { what = "holding patterns", words = "holding", takes_time = true },
+    -- (`not_before`: "hold the sim at 30 minutes" holds the simulation, no aircraft)
     { what = "holding patterns", words = "hold",
-      near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true },
+      near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true,
+      not_before = "@sim" },
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation
     { what = "holding patterns", words = "hold", after_callsign = true },

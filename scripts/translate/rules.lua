@@ -73,6 +73,8 @@ return function(intent, rule, words)
   intent "area" { cmd = "AREA", args = { "shapename", "ON", "OFF" }, handler = "area" }
   intent "circle" { cmd = "CIRCLE", args = { "name", "radius" }, handler = "circle" }
   intent "box" { cmd = "BOX", args = { "name" }, handler = "box" }
+  intent "poly" { cmds = { "POLY", "POLYALT" }, args = { "name" }, handler = "polygon" }
+  intent "line" { cmd = "LINE", args = { "name" }, handler = "line" }
   intent "trail" { cmd = "TRAIL", args = { "acid", "ON", "OFF" }, handler = "trail" }
 
   -- an instruction announced with "expect" is no clearance
@@ -196,6 +198,10 @@ return function(intent, rule, words)
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
+  -- "a speed-up of 8", "speedup factor 4": the clock's rate as a noun, no aircraft named
+  rule { "speed speedup speed-up", "dtmult", near = { 4, "of factor" }, when = function(g, i)
+    return (g:word(i, "speedup speed-up") or g:word(i + 1, "up")) and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "speed it up 4x": a factor glued to its x, no aircraft named
   rule { "speed", "dtmult", near = { 2, "up" }, when = function(g, i)
     for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
@@ -278,7 +284,7 @@ return function(intent, rule, words)
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
-  rule { "define make put", false, near = { 2, "box circle circular" } }  -- the shape's word starts it
+  rule { "define make put draw", false, near = { 2, "box circle circular polygon poly line" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
   -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
   -- waypoint at a position, when no aircraft that flies and no aircraft type is named
@@ -426,6 +432,9 @@ return function(intent, rule, words)
   end }
   -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
   rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }
+  -- "the area, so anything leaving it gets deleted": what a setting does, in the passive, no aircraft named
+  rule { "delete deleted remove removed", false, prev = { 1, "gets get got" },
+         when = function(g, i) return not g:has_ref(math.max(1, i - 5), i, "aircraft") end }
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
@@ -614,6 +623,11 @@ return function(intent, rule, words)
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
+  -- "let it go", "let it run", "let the sim run": the clock started, said alone or as a clause of its own
+  rule { "go run", "op", when = function(g, i)
+    local b = g:word(i - 1, "it") and i - 1 or (g:word(i - 1, "@sim") and g:word(i - 2, "the") and i - 2 or nil)
+    return b ~= nil and g:word(b - 1, "let") and (g:alone_but(b - 1, i + 1) or g:clause_alone(b - 1, i + 1))
+  end }
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
@@ -683,6 +697,8 @@ return function(intent, rule, words)
   rule { "step", "dt", prev = { 1, "the a sim simulation integration update" }, not_near = { 3, "forward ahead on" } }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation
   rule { "reset", false, near = { 3, "protected protection pz rpz zone zoner separation radius" } }
+  -- "pause the sim while I reset the eye tracker": the speaker's own doing in a clause of time, no instruction
+  rule { "reset restart", false, prev = { 1, "i we" }, when = function(g, i) return g:word(i - 2, "while when as after before until once") end }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -757,6 +773,33 @@ return function(intent, rule, words)
     return false
   end }
   rule { "box", "box", near = { 3, "@named" } }
+  -- "Polygon LTMA: 51.2 -1.0, 51.9 -1.0, ...", "a line REF1 from 55.68 -3.27 to 56.12 -3.20": a shape's
+  -- word with the corners after it (three or more for a polygon, two for a line)
+  local function corners_after(g, i)
+    local n, lat, k = 0, false, 1
+    local qs = g:quantities(i + 1, #g.t + 1)
+    while k <= #qs do
+      local q, nx = qs[k], qs[k + 1]
+      if q.kind == "lat" then
+        lat = true
+      elseif q.kind == "lon" and lat then
+        n, lat = n + 1, false
+      elseif q.kind == "plain" and nx and nx.kind == "plain" and nx.b - q.e <= 1 and math.abs(q.value) <= 90
+          and math.abs(nx.value) <= 180 then
+        n, k = n + 1, k + 1
+      end
+      k = k + 1
+    end
+    return n
+  end
+  rule { "polygon poly", "poly", when = function(g, i) return corners_after(g, i) >= 3 end }
+  rule { "box", "box", when = function(g, i)
+    return corners_after(g, i) == 2 and (g:has_ref(i + 1, i + 2, "waypoint") or g:has_ref(i + 1, i + 2, "aircraft"))
+  end }
+  rule { "line", "line", when = function(g, i)
+    return corners_after(g, i) == 2 and (g:followed_by(i, 3, "@named") or g:has_ref(i + 1, i + 3, "waypoint")
+      or g:has_ref(i + 1, i + 3, "aircraft"))
+  end }
 
   -- the performance model ("switch to the simple class-based performance model", "use OpenAP")
   rule { "performance perf", "perf", when = function(g) return g:word_in(1, #g.t + 1, "@perf_models model models") end }

@@ -855,6 +855,44 @@ do
   check_eq(lt("step forward 10 seconds"), "FF 10")
   check_eq(lt("roll the sim on 10 minutes"), "FF 600")
   check_eq(lt("push the clock ahead 2 minutes"), "FF 120")
+  -- the clock at a simulation time (SCHEDULE): "hold the sim" is the pause, no holding pattern
+  check_eq(lt("Hold the sim at 30 minutes sim time."), "SCHEDULE 00:30:00 HOLD")
+  check_eq(lt("hold the clock at 45 minutes"), "SCHEDULE 00:45:00 HOLD")
+  check_eq(lt("at 30 minutes, pause"), "SCHEDULE 00:30:00 HOLD")
+  check_eq(lt("at 30 minutes sim time, pause the sim"), "SCHEDULE 00:30:00 HOLD")
+  check_eq(lt("seed 7, mcre 20, ff 10 min"), "SEED 7 ; MCRE 20 ; FF 600")
+  -- the clock started, said as letting it go; the speaker's own reset in a clause of time is no RESET
+  check_eq(lt("let it go"), "OP")
+  check_eq(lt("ok, let it run"), "OP")
+  check_eq(lt("let the sim run"), "OP")
+  check_eq(lt("pause the sim for a sec while I reset the eye tracker"), "HOLD")
+  check(lt("pause and reset"):find("^ASK Reset the simulation") ~= nil, lt("pause and reset"))
+  -- the clock's rate as a noun, a setting's size
+  check_eq(lt("DT 0.05 and a speed-up of 8"), "DT 0.05 ; DTMULT 8")
+  check_eq(lt("speed up by a factor of 3"), "DTMULT 3")
+  check_eq(lt("vertical size of the PZ, 800 feet either side"), "ZONEDH 800")
+  check_eq(lt("PZ size 4 nm"), "ZONER 4")
+  -- one instruction word before digits is that instruction, no misheard airline; digits with a
+  -- distance unit are no flight number
+  check(lab:exec("CRE VLG1234 A320 40.6 -0.9 260 FL350 280"))
+  check(lab:exec("CRE TST3 B738 51.8 4.0 360 FL300 260"))
+  check_eq(lt("seed 1234 please"), "SEED 1234")
+  check_eq(lt("make the protected zone 3 miles and the vertical half-height 900 feet"), "ZONER 3 ; ZONEDH 900")
+  -- shapes: a polygon's corners, a line's two ends, levels as two or as one and the surface
+  check_eq(lt("Polygon LTMA: 51.2 -1.0, 51.9 -1.0, 51.9 0.8, 51.2 0.8."), "POLY LTMA 51.2 -1 51.9 -1 51.9 0.8 51.2 0.8")
+  check_eq(lt("make a polygon named SEC with corners 52N 4E, 53N 4E, 53N 6E and 52N 6E"), "POLY SEC 52 4 53 4 53 6 52 6")
+  check_eq(lt("define a polygon called P1 with corners 52 4, 53 4, 53 6 between FL100 and FL300"),
+    "POLYALT P1 FL300 FL100 52 4 53 4 53 6")
+  check_eq(lt("Draw a reference line REF1 from 55.68 -3.27 to 56.12 -3.20."), "LINE REF1 55.68 -3.27 56.12 -3.2")
+  check_eq(lt("Circle SCTMA at 55.9 -3.4 radius 30 NM, from the surface up to FL195."), "CIRCLE SCTMA 55.9 -3.4 30 FL195 0")
+  check_eq(lt("box B1 from 52 4 to 53 6 from the ground up to 5000 ft"), "BOX B1 52 4 53 6 5000 0")
+  check(lt("a circle named C1 around 52 4 radius 10 nm up to FL100"):find("^ASK Between which two levels") ~= nil,
+    "one level of a shape with no surface said is asked")
+  -- the deletion area by a shape's name; what a setting does, said in the passive, instructs nobody
+  check(lab:exec("BOX SECT1 59.5 10 60.5 12.5 FL660 FL245"))
+  check_eq(lt("Use SECT1 as the deletion area."), "AREA SECT1")
+  check_eq(lt("make SECT1 the deletion area"), "AREA SECT1")
+  check_eq(lt("Use the SECT1 box as experiment area, so anything leaving it gets deleted."), "AREA SECT1")
 end
 
 -- R20's classes (an ATC training lab): a self-correction said in words replaces the value (and
