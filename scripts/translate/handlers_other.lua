@@ -1067,7 +1067,7 @@ return function(H, f, compass)
 
   -- "AREA OFF", "AREA lat lon lat lon", "AREA shape" (one just defined: "make it the deletion area")
   function m:area(s)
-    if self:on_off(s) == 0 then return self:emit("AREA OFF") end
+    if self:on_off(s) == 0 or self:word_in(1, s.trig, "delete remove") then return self:emit("AREA OFF") end
     local p = points(self, s.b, s.e)
     if #p == 2 then
       return self:emit(string.format("AREA %s %s %s %s", f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2])))

@@ -432,6 +432,8 @@ return function(intent, rule, words)
   end }
   -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
   rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }
+  -- "delete the deletion area", "remove the experiment area": the area ended
+  rule { "delete remove", false, near = { 3, "area" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "the area, so anything leaving it gets deleted": what a setting does, in the passive, no aircraft named
   rule { "delete deleted remove removed", false, prev = { 1, "gets get got" },
          when = function(g, i) return not g:has_ref(math.max(1, i - 5), i, "aircraft") end }
@@ -617,6 +619,7 @@ return function(intent, rule, words)
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
+  rule { "carry", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on"
   -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
   rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
@@ -684,6 +687,11 @@ return function(intent, rule, words)
   rule { "skip", "ff", next = "ahead forward" }
   rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
+  -- "skip 5 minutes": a time straight after it, no waypoint or aircraft named
+  rule { "skip", "ff", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
+    return q ~= nil and q.b == g:skip_fillers(i + 1) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "play it forward 3 minutes", "roll the sim on 10 minutes", "step forward 30 s": the clock moved on
   -- by a time said after it, no aircraft named
   rule { "play roll step wind push advance", "ff", near = { 4, "forward ahead on" },
@@ -727,6 +735,12 @@ return function(intent, rule, words)
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
   -- "wind from 270 at 40 kt over 55.5 12.5", "a wind of 270 at 40 knots": where it blows from, said after it
   rule { "wind winds", "wind", next = "from of", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- "wind 270 at 30 kt at 52 4": its direction straight after it, its speed in knots after that
+  rule { "wind winds", "wind", when = function(g, i)
+    local qs = g:quantities(i + 1, math.min(#g.t + 1, i + 6))
+    return qs[1] ~= nil and qs[1].b == i + 1 and qs[2] ~= nil and qs[2].kind == "speed"
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
@@ -737,6 +751,7 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
   end }
   rule { "detection asas cdmethod cd", "asas" }
+  rule { "cr", "reso", next = "on off" }  -- "CD on, CR off": conflict resolution by its letters
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
@@ -763,18 +778,7 @@ return function(intent, rule, words)
   rule { "turbulence noise", "noise" }
 
   -- shapes and the deletion area ("in the area" alone names no area)
-  rule { "area", "area", prev = { 2, "deletion delete experiment" } }
-  rule { "circle", "circle", near = { 3, "@named" } }
-  -- "a circle ZONE1 at 52.0 4.5", "a circular area C1 around 52 4": a shape at a position
-  rule { "circle circular", "circle", when = function(g, i)
-    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
-      if q.kind == "lat" or (q.kind == "plain" and q.number.decimal) then return true end
-    end
-    return false
-  end }
-  rule { "box", "box", near = { 3, "@named" } }
-  -- "Polygon LTMA: 51.2 -1.0, 51.9 -1.0, ...", "a line REF1 from 55.68 -3.27 to 56.12 -3.20": a shape's
-  -- word with the corners after it (three or more for a polygon, two for a line)
+  -- the points said after word i: latitude/longitude pairs, marked or two plain numbers in a row
   local function corners_after(g, i)
     local n, lat, k = 0, false, 1
     local qs = g:quantities(i + 1, #g.t + 1)
@@ -792,6 +796,22 @@ return function(intent, rule, words)
     end
     return n
   end
+  rule { "area", "area", prev = { 2, "deletion delete experiment" } }
+  rule { "circle", "circle", near = { 3, "@named" } }
+  -- "circle C1 centred on 52 4, radius 20 nm": a name straight after it and a centre
+  rule { "circle", "circle", when = function(g, i)
+    return (g:has_ref(i + 1, i + 2, "waypoint") or g:has_ref(i + 1, i + 2, "aircraft")) and corners_after(g, i) >= 1
+  end }
+  -- "a circle ZONE1 at 52.0 4.5", "a circular area C1 around 52 4": a shape at a position
+  rule { "circle circular", "circle", when = function(g, i)
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
+      if q.kind == "lat" or (q.kind == "plain" and q.number.decimal) then return true end
+    end
+    return false
+  end }
+  rule { "box", "box", near = { 3, "@named" } }
+  -- "Polygon LTMA: 51.2 -1.0, 51.9 -1.0, ...", "a line REF1 from 55.68 -3.27 to 56.12 -3.20": a shape's
+  -- word with the corners after it (three or more for a polygon, two for a line)
   rule { "polygon poly", "poly", when = function(g, i) return corners_after(g, i) >= 3 end }
   rule { "box", "box", when = function(g, i)
     return corners_after(g, i) == 2 and (g:has_ref(i + 1, i + 2, "waypoint") or g:has_ref(i + 1, i + 2, "aircraft"))

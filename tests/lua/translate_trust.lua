@@ -893,6 +893,16 @@ do
   check_eq(lt("Use SECT1 as the deletion area."), "AREA SECT1")
   check_eq(lt("make SECT1 the deletion area"), "AREA SECT1")
   check_eq(lt("Use the SECT1 box as experiment area, so anything leaving it gets deleted."), "AREA SECT1")
+  check_eq(lt("delete the deletion area"), "AREA OFF")
+  check_eq(lt("remove the experiment area"), "AREA OFF")
+  check_eq(lt("circle C1 centred on 52 4, radius 20 nm"), "CIRCLE C1 52 4 20")
+  -- more ways of the same settings: the clock, the wind straight after its word, CR by its letters
+  check_eq(lt("skip 5 minutes"), "FF 300")
+  check_eq(lt("carry on"), "OP")
+  check_eq(lt("wind 270 at 30 kt at 52 4"), "WIND 52 4 270 30")
+  check_eq(lt("random seed 42"), "SEED 42")
+  local r = graph.translate("CD on, CR off", { sim = lab, mode = "offline" })
+  check_eq(r.confirm and table.concat(r.confirm.commands, " ; "), "ASAS ON ; RESO OFF")
 end
 
 -- R20's classes (an ATC training lab): a self-correction said in words replaces the value (and
