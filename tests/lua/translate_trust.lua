@@ -903,6 +903,12 @@ do
   check_eq(lt("random seed 42"), "SEED 42")
   local r = graph.translate("CD on, CR off", { sim = lab, mode = "offline" })
   check_eq(r.confirm and table.concat(r.confirm.commands, " ; "), "ASAS ON ; RESO OFF")
+  -- a setting's value the simulator refuses is asked about, naming the refusal, never sent
+  check_eq(lt("set the time step to 0 seconds"),
+    "ASK squawk would refuse DT 0 (time step 0 s is not in [0.001, 60] s). What value should it be?")
+  check(lt("set the look-ahead to 0"):find("^ASK squawk would refuse DTLOOK 0") ~= nil, lt("set the look-ahead to 0"))
+  check(lt("rfach 0.5 please"):find("^ASK squawk would refuse RFACH 0.5") ~= nil, lt("rfach 0.5 please"))
+  check(lt("set the sim speed to 0 times real time"):find("^ASK squawk would refuse DTMULT 0") ~= nil, "DTMULT 0 asked")
 end
 
 -- R20's classes (an ATC training lab): a self-correction said in words replaces the value (and
