@@ -777,6 +777,14 @@ function G:switch_follows(i)
   return self:word_in(i + 1, stop, "on off")
 end
 
+-- True when name is a waypoint defined for this run (DEFWPT), not one of the navdata.
+function G:user_waypoint(name)
+  for _, w in ipairs(self.world.waypoints or {}) do
+    if w:upper() == name:upper() then return true end
+  end
+  return false
+end
+
 function G:state(id)
   local lid = id:lower()
   for _, a in ipairs(self.fleet) do

@@ -1086,6 +1086,16 @@ return function(H, f, compass)
     self:need("Which shape, or which two corners (latitude and longitude each), should the deletion area be?")
   end
 
+  -- DEFWPT name lat lon DELETE: a user waypoint undefined, at the position it was defined at
+  function m:forget_waypoint(s)
+    local w = self:refs_in(s.trig + 1, s.e, "waypoint")[1]
+    local lat, lon
+    if w and self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(w.name) end
+    if not lat then return self:need("Which waypoint defined for this run should I delete?") end
+    self:mark_used(w.b, w.e)
+    self:emit(string.format("DEFWPT %s %s %s DELETE", w.name:upper(), f.num(lat), f.num(lon)))
+  end
+
   function m:define_waypoint(s)
     -- its type, said as what it is ("as a fix", "type VOR", "make it a FIX": never its name); "define
     -- a fix GOLF" names no type

@@ -244,7 +244,14 @@ function M.world(sim, waypoints)
            airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
            airport_class = function(id) return sim:airport_class(id) end,
            navaids_named = function(name, lat, lon, nm, types) return sim:navaids_named(name, lat, lon, nm, types) end,
-           airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end }
+           airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end,
+           -- a user waypoint's position (POS reads it and changes nothing): lat, lon or nil
+           user_waypoint_at = function(name)
+             local ok, out = sim:exec("POS " .. name)
+             local lat, lon = tostring(out or ""):match("^%S+ at (%-?[%d.]+) (%-?[%d.]+)")
+             if ok and lat then return tonumber(lat), tonumber(lon) end
+             return nil
+           end }
 end
 
 function M.offline(state, ctx)

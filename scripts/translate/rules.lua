@@ -35,6 +35,7 @@ return function(intent, rule, words)
                     absorbs = true }
   intent "defwpt" { cmd = "DEFWPT", args = { "name", "lat", "lon" }, handler = "define_waypoint", absorbs = true }
   intent "delwpt" { cmd = "DELWPT", args = { "acid", "wpname" }, handler = "delete_waypoint" }
+  intent "undefwpt" { cmd = "DEFWPT", args = { "name", "lat", "lon" }, handler = "forget_waypoint" }
   intent "direct" { cmd = "DIRECT", also = { "ADDWPT", "ALT" }, args = { "acid", "wpname" }, handler = "direct" }
   intent "dest" { cmd = "DEST", args = { "acid", "airport" }, handler = "dest" }
   intent "orig" { cmd = "ORIG", args = { "acid", "airport" }, handler = "orig" }
@@ -432,6 +433,17 @@ return function(intent, rule, words)
   end }
   -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
   rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }
+  -- "Delete my waypoint VALA", "remove the fix WP1": a waypoint defined for this run, when no aircraft
+  -- is named and none has it in its route, is undefined (DEFWPT ... DELETE)
+  rule { "delete remove del", "undefwpt", near = { 3, "@waypoint_nouns" }, when = function(g, i)
+    if g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    local w = g:refs_in(i + 1, math.min(#g.t + 1, i + 5), "waypoint")[1]
+    if not w or not g:user_waypoint(w.name) then return false end
+    for _, a in ipairs(g.fleet) do
+      for _, name in ipairs(a.route or {}) do if name:upper() == w.name:upper() then return false end end
+    end
+    return true
+  end }
   -- "delete the deletion area", "remove the experiment area": the area ended
   rule { "delete remove", false, near = { 3, "area" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "the area, so anything leaving it gets deleted": what a setting does, in the passive, no aircraft named

@@ -909,6 +909,16 @@ do
   check(lt("set the look-ahead to 0"):find("^ASK squawk would refuse DTLOOK 0") ~= nil, lt("set the look-ahead to 0"))
   check(lt("rfach 0.5 please"):find("^ASK squawk would refuse RFACH 0.5") ~= nil, lt("rfach 0.5 please"))
   check(lt("set the sim speed to 0 times real time"):find("^ASK squawk would refuse DTMULT 0") ~= nil, "DTMULT 0 asked")
+  -- a waypoint defined for this run, deleted with no aircraft named, is undefined where it was defined;
+  -- one on an aircraft's route, or with an aircraft named, leaves that route
+  check(lab:exec("DEFWPT VALA 55.55 12.40"))
+  check(lab:exec("DEFWPT VALB 55.75 12.95"))
+  check(lab:exec("ADDWPT SAS421 VALB"))
+  local function wt(text) return said(graph.translate(text, { sim = lab, mode = "offline", waypoints = { "VALA", "VALB" } })) end
+  check_eq(wt("Delete my waypoint VALA, we're not using it."), "DEFWPT VALA 55.55 12.4 DELETE")
+  check_eq(wt("remove the fix VALA"), "DEFWPT VALA 55.55 12.4 DELETE")
+  check(wt("delete waypoint VALB"):find("^ASK Which aircraft") ~= nil, wt("delete waypoint VALB"))
+  check_eq(wt("SAS421 delete waypoint VALB"), "DELWPT SAS421 VALB")
 end
 
 -- R20's classes (an ATC training lab): a self-correction said in words replaces the value (and
