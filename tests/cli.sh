@@ -16,6 +16,8 @@ expect "unknown flag"    2 "unknown flag '--bogus'" -- "$sq" test --bogus
 expect "missing file"    2 "missing FILE.lua" -- "$sq" run
 expect "bad seed"        2 "--seed expects an integer" -- "$sq" run "$d/args.lua" --seed x
 expect "args"            0 "^2	a	b$" -- "$sq" run "$d/args.lua" a b
+# more arguments than Lua's guaranteed stack slots (they are also passed as `...`)
+expect "many args"       0 "^200	1	2$" -- "$sq" run "$d/args.lua" $(seq 1 200)
 expect "sandbox"         1 "os.execute is not allowed in the sandbox; run squawk with --unsafe" -- "$sq" run "$d/execute.lua"
 expect "unsafe"          0 "^executed$" -- "$sq" run "$d/execute.lua" --unsafe
 expect "module line"     1 "mod.lua:7: value too large: 6" -- "$sq" run "$d/module/main.lua"

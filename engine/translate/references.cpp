@@ -454,10 +454,12 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     size_t words_begin = i;
     std::string words;
     bool keyword = false;  // an instruction word may be a misheard airline name ("front turn" = Frontier)
+    bool only_keywords = true;
     std::string last_word;  // as typed: two capitals are an airline code ("AC 851")
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
            names.phonetic_letter(t[i].text) == 0) {
       keyword = keyword || names.vocabulary().is_keyword(t[i].text);
+      only_keywords = only_keywords && names.vocabulary().is_keyword(t[i].text);
       words += t[i].text;
       last_word = t[i].raw;
       ++i;
@@ -473,14 +475,19 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     }
     while (i < t.size() && t[i].kind == TokKind::kPunct && t[i].text == ",") ++i;
     Suffix suf = read_suffix(t, i, used, names);
-    // Digits followed by a unit are a quantity ("fast forward 2 minutes"), not a callsign.
+    // Digits followed by a unit are a quantity ("fast forward 2 minutes", "the protected zone 3 miles"),
+    // not a callsign.
     auto unit_after = [&](size_t e) {
       static const char* kUnits[] = {"s", "sec", "secs", "second", "seconds", "min", "mins", "minute", "minutes",
-                                     "h", "hour", "hours", "x", "times", "percent", "%"};
+                                     "h", "hour", "hours", "x", "times", "percent", "%", "nm", "mile", "miles"};
       return e < t.size() && is_word(t[e]) &&
              std::any_of(std::begin(kUnits), std::end(kUnits), [&](const char* u) { return t[e].text == u; });
     };
-    if (!suf.groups.empty() && !unit_after(suf.ends.back())) {
+    // Instruction words alone before the digits are that instruction and its value ("seed 1234
+    // please", "random seed 42"), no airline misheard (that takes a word of its own: "front turn" =
+    // Frontier).
+    const bool instruction_alone = keyword && only_keywords && i > words_begin;
+    if (!suf.groups.empty() && !unit_after(suf.ends.back()) && !instruction_alone) {
       CallsignMatch m = match_world("", words, suf, fleet, names);
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
       double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;

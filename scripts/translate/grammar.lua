@@ -45,17 +45,33 @@ local TYPES = require("translate.types").build(names.designators)
 -- The spelling fixer never turns a word that means something of its own into another: a
 -- registry command's name ("delrte" is no "delete", "zoner" no "zone") and the words that name
 -- what squawk does not simulate ("holding" is no "heading") are kept as typed.
+-- A registry name that is no English word ("DTMULT", "rfach") is an instruction word too: typed in
+-- capitals inside English ("set DTMULT 4", "ZONER 5, DTLOOK 300") it names its command, no waypoint.
+-- REGISTRY_WORDS: such a name or alias, lower case -> its command's registry name ("pzdh" -> "ZONEDH").
+local REGISTRY_WORDS = {}
+do
+  local english = {}
+  for _, w in ipairs(lexicon.english_command_names) do english[w] = true end
+  for _, c in ipairs(squawk.sim.commands()) do
+    for _, w in ipairs({ c.name, table.unpack(c.aliases or {}) }) do
+      if w:match("^%a+$") and not english[w:lower()] then REGISTRY_WORDS[w:lower()] = c.name:upper() end
+    end
+  end
+end
 local function spelling_kept()
-  local kept = {}
+  local kept, keywords = {}, {}
   for _, w in ipairs(lexicon.spelling.common) do kept[#kept + 1] = w end
+  for _, w in ipairs(lexicon.keywords) do keywords[#keywords + 1] = w end
   for _, c in ipairs(squawk.sim.commands()) do
     kept[#kept + 1] = c.name:lower()
     for _, a in ipairs(c.aliases or {}) do kept[#kept + 1] = a:lower() end
   end
+  for w in pairs(REGISTRY_WORDS) do keywords[#keywords + 1] = w end
   for _, n in ipairs(lexicon.not_simulated) do
     for w in n.words:gmatch("%S+") do kept[#kept + 1] = w end
   end
-  return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept } }, { __index = lexicon })
+  return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept }, keywords = keywords },
+    { __index = lexicon })
 end
 local NAMES = squawk.translate.tables({ airlines = names.airlines, types = TYPES.types,
   designators = TYPES.designators }, spelling_kept())
@@ -218,8 +234,26 @@ function M.add_words(cmd)
 end
 
 require("translate.rules")(M.intent, M.rule, M.add_words)
+-- A registry name typed inside English that no rule lists ("rmethv off", "rfach 1.05", "pzdh 800")
+-- starts the intent of its command, after every rule of the file (the words stay unknown to the
+-- account of words: said with its command not issued, such a name is asked about)
+do
+  local listed = {}
+  for _, r in ipairs(M.rules) do for w in pairs(r.any and {} or r.words) do listed[w] = true end end
+  local names = {}
+  for w in pairs(REGISTRY_WORDS) do if not listed[w] then names[#names + 1] = w end end
+  table.sort(names)
+  for _, w in ipairs(names) do
+    for _, spec in pairs(M.intents) do
+      for _, c in ipairs(spec.cmds or { spec.cmd }) do
+        if c == REGISTRY_WORDS[w] then M.rules[#M.rules + 1] = compile_rule({ w, spec.name }, 1) end
+      end
+    end
+  end
+end
 loading = false
 index_rules()
+
 
 -- handler(name, fn): a new handler method fn(g, s, spec) for intents to name.
 function M.handler(name, fn) G[name] = fn end
@@ -585,6 +619,13 @@ function G:word(i, words)
   return t ~= nil and t.kind == "word" and (set_cache[words] or word_set(words, 2))[t.text] == true
 end
 
+-- The registry name of the command the word at i names when it is a registry name or alias that is
+-- no English word ("rfacv" RFACV, "pzdh" ZONEDH), else nil.
+function G:registry_word(i)
+  local t = self.t[i]
+  return t ~= nil and t.kind == "word" and REGISTRY_WORDS[t.text] or nil
+end
+
 function G:word_in(b, e, words)
   local s = set_cache[words] or word_set(words, 2)
   for i = b, math.min(e, #self.t + 1) - 1 do
@@ -721,8 +762,10 @@ end
 
 -- True when "vertical" at i is said of conflict resolutions ("let MVP use vertical speed in the
 -- resolutions", "resolutions horizontal only, no vertical"), no safety factor or zone size.
+-- ("horizontal resolutions only": resolutions without the vertical)
 function G:vertical_resolutions(i)
-  return self:word(i, "vertical") and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp")
+  local horizontal_only = self:word(i, "horizontal lateral") and self:word_in(math.max(1, i - 2), i + 4, "only")
+  return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp")
     and not self:word_in(1, #self.t + 1, "factor zone pz rpz zonedh separation sep")
     and not self:has_ref(1, #self.t + 1, "aircraft")
 end
@@ -755,6 +798,14 @@ function G:switch_follows(i)
     stop = stop + 1
   end
   return self:word_in(i + 1, stop, "on off")
+end
+
+-- True when name is a waypoint defined for this run (DEFWPT), not one of the navdata.
+function G:user_waypoint(name)
+  for _, w in ipairs(self.world.waypoints or {}) do
+    if w:upper() == name:upper() then return true end
+  end
+  return false
 end
 
 function G:state(id)
@@ -1798,7 +1849,8 @@ function G:not_simulated()
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
             and (not c.after_callsign or self:callsign_before(i))
-            and (not c.after_instruction or self:instruction_before(i)) then
+            and (not c.after_instruction or self:instruction_before(i))
+            and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
           class = c
           break
         end

@@ -203,13 +203,19 @@ end
 -- up a bit, run it at twice real time" is English: no argument is a pronoun).
 local LINKS = { ["then"] = true, ["and"] = true }
 local PRONOUNS = require("translate.lexicon").pronouns
+-- a clause opening with "at" or a condition word ("at 30 minutes, pause") is English: a time or a
+-- condition for the clause after it, no AT/AFTER/BEFORE command of its own
+local CONDITION_OPENERS = { at = true }
+for _, w in ipairs(require("translate.lexicon").accounted.condition) do CONDITION_OPENERS[w] = true end
 function M.command_clauses(text)
   local parts = {}
   for part in (text .. ","):gmatch("([^,;]*)[,;]") do
     part = part:gsub("^%s+", ""):gsub("%s+$", "")
     local first, rest = part:match("^(%S+)%s*(.*)$")
     while first and LINKS[first:lower()] do first, rest = rest:match("^(%S+)%s*(.*)$") end
-    if not first or not nodes.canonical_name(first:gsub("[%p]+$", "")) then return nil end
+    if not first or not nodes.canonical_name(first:gsub("[%p]+$", "")) or CONDITION_OPENERS[first:lower()] then
+      return nil
+    end
     if PRONOUNS[(rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")] then return nil end
     parts[#parts + 1] = first .. (rest ~= "" and (" " .. rest) or "")
   end

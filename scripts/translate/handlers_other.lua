@@ -941,7 +941,31 @@ return function(H, f, compass)
     return out
   end
 
-  -- "CIRCLE name lat lon radius": "a circle named CTR around 52.3, 4.76 with a 20 nautical mile radius"
+  -- A shape's top and bottom, said as two levels or as one level and the surface ("from the surface up
+  -- to FL195"): " top bottom", "" when none is said, or nil after asking (one level alone)
+  local SURFACE = "surface ground sfc gnd sea"
+  local function shape_levels(self, s, name)
+    local levels = {}
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if q.kind == "alt" then levels[#levels + 1] = q end
+    end
+    if #levels == 1 and self:word_in(s.b, s.e, SURFACE) then
+      levels[2] = { value = 0 }
+      local k = self:find_word(s.b, s.e, SURFACE)
+      self:explain(k, k + 1)
+    end
+    if #levels == 2 then
+      local hi, lo = levels[1], levels[2]
+      if lo.value > hi.value then hi, lo = lo, hi end
+      return " " .. f.alt(hi.value, hi.fl) .. " " .. f.alt(lo.value, lo.fl)
+    elseif #levels > 0 then
+      return self:need("Between which two levels should " .. name .. " lie?")
+    end
+    return ""
+  end
+
+  -- "CIRCLE name lat lon radius [top bottom]": "a circle named CTR around 52.3, 4.76 with a 20 nautical
+  -- mile radius", "... radius 30 NM, from the surface up to FL195"
   function m:circle(s)
     local name = new_name(self, s.b, s.e)
     local p = points(self, s.b, s.e)[1]
@@ -952,7 +976,9 @@ return function(H, f, compass)
     if not name or not p or not radius then
       return self:need("To define the circle I need its name, centre (latitude and longitude) and radius in nautical miles.")
     end
-    self:emit(string.format("CIRCLE %s %s %s %s", name, f.num(p[1]), f.num(p[2]), f.num(radius)))
+    local levels = shape_levels(self, s, "circle " .. name)
+    if not levels then return end
+    self:emit(string.format("CIRCLE %s %s %s %s%s", name, f.num(p[1]), f.num(p[2]), f.num(radius), levels))
     self.last_shape = name
   end
 
@@ -999,20 +1025,37 @@ return function(H, f, compass)
     if not name or #p ~= 2 then
       return self:need("To define the box I need its name and two corners (latitude and longitude each).")
     end
-    local cmd = string.format("BOX %s %s %s %s %s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2]))
-    local levels = {}
-    for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if q.kind == "alt" then levels[#levels + 1] = q end
-    end
-    if #levels == 2 then
-      local hi, lo = levels[1], levels[2]
-      if lo.value > hi.value then hi, lo = lo, hi end
-      cmd = cmd .. " " .. f.alt(hi.value, hi.fl) .. " " .. f.alt(lo.value, lo.fl)
-    elseif #levels > 0 then
-      return self:need("Between which two levels should box " .. name .. " lie?")
-    end
-    self:emit(cmd)
+    local levels = shape_levels(self, s, "box " .. name)
+    if not levels then return end
+    self:emit(string.format("BOX %s %s %s %s %s%s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]),
+      f.num(p[2][2]), levels))
     self.last_shape = name
+  end
+
+  -- "POLY name lat lon lat lon lat lon ...": a polygon of three corners or more ("Polygon LTMA: 51.2 -1.0,
+  -- 51.9 -1.0, 51.9 0.8, 51.2 0.8"); POLYALT when its top and bottom are said
+  function m:polygon(s)
+    local name = new_name(self, s.b, s.e)
+    local p = points(self, s.b, s.e)
+    if not name or #p < 3 then
+      return self:need("To define the polygon I need its name and three corners or more (latitude and longitude each).")
+    end
+    local levels = shape_levels(self, s, "polygon " .. name)
+    if not levels then return end
+    local corners = {}
+    for _, c in ipairs(p) do corners[#corners + 1] = f.num(c[1]) .. " " .. f.num(c[2]) end
+    self:emit((levels == "" and "POLY " .. name or "POLYALT " .. name .. levels) .. " " .. table.concat(corners, " "))
+    self.last_shape = name
+  end
+
+  -- "LINE name lat lon lat lon": "a reference line REF1 from 55.68 -3.27 to 56.12 -3.20" (drawn only)
+  function m:line(s)
+    local name = new_name(self, s.b, s.e)
+    local p = points(self, s.b, s.e)
+    if not name or #p ~= 2 then
+      return self:need("To draw the line I need its name and its two ends (latitude and longitude each).")
+    end
+    self:emit(string.format("LINE %s %s %s %s %s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2])))
   end
 
   -- "MCRE n [type [alt [spd [dest]]]]": random traffic; a type is given only when it is a known one
@@ -1064,13 +1107,33 @@ return function(H, f, compass)
 
   -- "AREA OFF", "AREA lat lon lat lon", "AREA shape" (one just defined: "make it the deletion area")
   function m:area(s)
-    if self:on_off(s) == 0 then return self:emit("AREA OFF") end
+    if self:on_off(s) == 0 or self:word_in(1, s.trig, "delete remove") then return self:emit("AREA OFF") end
     local p = points(self, s.b, s.e)
     if #p == 2 then
       return self:emit(string.format("AREA %s %s %s %s", f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2])))
     end
     if #p == 0 and self.last_shape then return self:emit("AREA " .. self.last_shape) end
+    -- "Use SECT1 as the deletion area", "the CPHTMA circle as experiment area": the one name said is a
+    -- shape defined before (AREA refuses a name no shape has: the request is then asked about)
+    local named = {}
+    for _, r in ipairs(self.refs) do
+      if r.kind == "waypoint" or (r.kind == "aircraft" and not r.exists) then named[#named + 1] = r end
+    end
+    if #p == 0 and #named == 1 then
+      self:mark_used(named[1].b, named[1].e)
+      return self:emit("AREA " .. self:raw(named[1].b, named[1].e):upper())
+    end
     self:need("Which shape, or which two corners (latitude and longitude each), should the deletion area be?")
+  end
+
+  -- DEFWPT name lat lon DELETE: a user waypoint undefined, at the position it was defined at
+  function m:forget_waypoint(s)
+    local w = self:refs_in(s.trig + 1, s.e, "waypoint")[1]
+    local lat, lon
+    if w and self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(w.name) end
+    if not lat then return self:need("Which waypoint defined for this run should I delete?") end
+    self:mark_used(w.b, w.e)
+    self:emit(string.format("DEFWPT %s %s %s DELETE", w.name:upper(), f.num(lat), f.num(lon)))
   end
 
   function m:define_waypoint(s)
@@ -1431,6 +1494,13 @@ return function(H, f, compass)
   function m:time_step(s)
     local q = first(self, s, { time = true, plain = true })
     if q then return self:emit("DT " .. f.num(q.value)) end
+    -- "a tenth of a second", "half a second": a fraction of a second said in words
+    local frac = self:find_word(s.b, s.e, "@fractions")
+    local unit = frac < s.e and self:find_word(frac + 1, math.min(s.e, frac + 4), "second seconds") or s.e
+    if unit < s.e then
+      self:mark_used(frac, unit + 1)
+      return self:emit("DT " .. f.num(L.fractions[self.t[frac].text]))
+    end
     if self:asks_setting(true) then return self:emit("DT") end
     self:need("What time step, in seconds, should the simulation use?")
   end
@@ -1479,10 +1549,21 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.kind == "alt" and not alt then alt = self:take(q) end
       if q.kind == "speed" and not spd then spd = self:take(q) end
-      if (q.kind == "heading" or q.kind == "angle" or (q.kind == "plain" and self:word(q.b - 1, "from")))
+      -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt")
+      local before_speed = self:word(q.e, "at") and self:quantities(q.e + 1, q.e + 2)[1]
+      local said = self:word(q.b - 1, "from") or (self:word(q.b - 1, "of") and self:word(q.b - 2, "wind winds"))
+        or (before_speed and before_speed.kind == "speed")
+      if (q.kind == "heading" or q.kind == "angle" or (q.kind == "plain" and said))
           and not dir and q.value >= 0 and q.value <= 360 then
         dir = self:take(q)
       end
+    end
+    -- ("from the west": a compass point)
+    local from = self:find_word(s.b, s.e, "from")
+    local point = from < s.e and L.compass[(self.t[self:word(from + 1, "the") and from + 2 or from + 1] or {}).text or ""]
+    if not dir and point then
+      dir = { value = point }
+      self:explain(from, self:word(from + 1, "the") and from + 3 or from + 2)
     end
     if not dir or not spd then
       return self:need("From which direction, and how strong in knots, should the wind blow?")
@@ -1524,6 +1605,10 @@ return function(H, f, compass)
     if self:word_in(1, #self.t + 1, "mvp") or self:word_in(b, s.e, "@mvp") then return self:emit("RESO MVP") end
     if self:on_off(s) == 0 then return self:emit("RESO OFF") end
     if self:on_off(s) == 1 then return self:emit("RESO MVP") end  -- MVP is the one method RESO has
+    -- "enable conflict detection and resolution": switched on (or off) with the detection before it
+    if self:on_off(s) < 0 and self.last_on ~= nil and self:word(s.trig - 1, "and") then
+      return self:emit(self.last_on == 1 and "RESO MVP" or "RESO OFF")
+    end
     self:need("Which conflict resolution method should I use (for example MVP), or should it be off?")
   end
   -- RFACH / RFACV: the safety factor resolutions apply; each value is the kind said last before it
@@ -1532,6 +1617,8 @@ return function(H, f, compass)
     local b = math.max(1, s.b - 4)  -- ("with horizontal factor 1.1": the kind said before the noun)
     local function kind(e)
       for k = e - 1, b, -1 do
+        local named = self:registry_word(k)  -- ("rfacv 1.1", "hrfac 1.2": the command's own name)
+        if named == "RFACH" or named == "RFACV" then return named end
         if self:word(k, "vertical") then return "RFACV" end
         if self:word(k, "horizontal lateral") then return "RFACH" end
       end
@@ -1556,8 +1643,21 @@ return function(H, f, compass)
   -- (both read their request whole: "allow vertical manoeuvres in the MVP resolutions", "resume nav
   -- once past cpa" say nothing else)
   function m:reso_vertical(s)
-    local off = self:word_in(1, #self.t + 1, "no not off without don't dont never only")
-    self:emit(off and "RMETHV OFF" or "RMETHV V/S")
+    -- ("rmethv off", "reso MVP, rmethv on": the command's own name, and the switch said after it)
+    if self:registry_word(s.trig) and self:word(s.trig + 1, "on off") then
+      self:emit(self:word(s.trig + 1, "off") and "RMETHV OFF" or "RMETHV V/S")
+      return self:mark_used(s.trig, s.trig + 2)
+    end
+    local all = #self.t + 1
+    local off = self:word_in(1, all, "no not off without don't dont never")
+    local only = self:word_in(1, all, "only")
+    -- ("vertical resolutions only": no method of squawk's; resolutions are horizontal, or horizontal
+    -- with vertical speed too)
+    if only and not off and not self:word_in(1, all, "horizontal lateral") then
+      return self:need("squawk's resolutions are horizontal only (RMETHV OFF) or horizontal with vertical "
+        .. "speed too (RMETHV V/S): which should it use?")
+    end
+    self:emit((off or only) and "RMETHV OFF" or "RMETHV V/S")
     self:mark_used(s.b, s.e)
   end
   function m:resume_nav(s)
@@ -1566,17 +1666,30 @@ return function(H, f, compass)
     self:mark_used(s.b, s.e)
   end
   function m:zone(s)
-    local vertical = self:word_in(s.b, s.e, "@vertical")
+    local vertical = self:word_in(s.b, s.e, "@vertical") or self:registry_word(s.trig) == "ZONEDH"
     if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then
       return self:emit(vertical and "ZONEDH" or "ZONER")
     end
     local before = #self.out
     local heights = {}  -- { value (ft), index of its ZONEDH line in self.out }
+    local qs, named = {}, false
+    -- a value before the zone's word is its own only with a unit, said just before it ("a 3 mile PZ";
+    -- "detection on with a 3 mile PZ", where detection set it already); a bare number there ("Run 2
+    -- setup: ZONER 5") is not
+    for _, q in ipairs(self:quantities(math.max(1, s.trig - 3), s.trig)) do
+      if (q.kind == "dist" or q.kind == "alt") and self:skip_fillers(q.e) == s.trig then
+        if self.taken[q.b] then named = true else qs[#qs + 1] = q end
+      end
+    end
     for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if (q.kind ~= "plain" or q.b > s.trig) and not (qs[1] and qs[1].b == q.b) then qs[#qs + 1] = q end
+    end
+    table.sort(qs, function(a, b) return a.b < b.b end)
+    for _, q in ipairs(qs) do
       -- a plain value is the dimension named last before it ("zoner 3 zonedh 500")
       for i = q.b - 1, s.b, -1 do
-        if self:word(i, "@vertical") then vertical = true break end
-        if self:word(i, "@zone_radius") then vertical = false break end
+        if self:word(i, "@vertical") or self:registry_word(i) == "ZONEDH" then vertical = true break end
+        if self:word(i, "@zone_radius") or self:registry_word(i) == "ZONER" then vertical = false break end
       end
       if q.kind == "dist" or (q.kind == "plain" and not vertical) then self:emit("ZONER " .. f.num(q.value)) end
       if q.kind == "alt" or (q.kind == "plain" and vertical) then
@@ -1595,7 +1708,7 @@ return function(H, f, compass)
       end
       table.remove(self.out, hi[2])
     end
-    if #self.out == before then
+    if #self.out == before and not named then
       self:need(vertical and "What half-height, in feet, should the protected zone have?"
         or "What radius, in nautical miles, should the protected zone have?")
     end

@@ -31,7 +31,9 @@ return {
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
       "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
       -- a position's labels as typed ("lat 51.95 lon 4.35"), and the random number generator a seed seeds
-      "lat", "lon", "lng", "rng", "prng", },
+      "lat", "lon", "lng", "rng", "prng",
+      -- the wind a request sets ("wind from 270 at 40 kt"): never part of a spoken callsign
+      "wind", "winds", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a
   -- sentence they name no command; any other registry name said ("rmethv") names its command
   english_command_names = { "after", "area", "at", "bank", "before", "box", "call", "circle", "delay", "help",
@@ -105,6 +107,8 @@ return {
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
         "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
+        -- the dimensions of a setting ("the vertical size of the PZ")
+        "size", "sizes", "dimension", "dimensions", "extent",
         -- an aircraft's present course described ("the Vueling's drifting off its route")
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
@@ -117,6 +121,8 @@ return {
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
+        -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")
+        "reference", "boundary", "border", "corner", "corners", "edge", "centre", "center",
         -- states and settings a request names ("which method is active", "the scenario file", "ADS-B noise")
         "active", "inactive", "enabled", "disabled", "file", "ads-b", "adsb", "colliding", "collision",
         "conflicting",
@@ -278,8 +284,8 @@ return {
       "facing", "flies", "headed" },
   compass = { north = 0, east = 90, south = 180, west = 270,
               northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
-  -- fractions of an hour or a minute said in words ("half an hour", "a quarter of an hour")
-  fractions = { half = 0.5, quarter = 0.25 },
+  -- fractions of an hour, a minute or a second said in words ("half an hour", "a tenth of a second")
+  fractions = { half = 0.5, quarter = 0.25, fifth = 0.2, tenth = 0.1, twentieth = 0.05, hundredth = 0.01 },
   -- how many times real time, said in words
   multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
   -- a spoken callsign matched to an aircraft it does not spell exactly is
@@ -349,8 +355,10 @@ return {
     { what = "orbits", words = "turn turning", near = { "completely", "circle" }, to_end = true },
     { what = "orbits", words = "full", near = { "circle", "360", "sixty", "turn" }, takes_time = true },
     { what = "holding patterns", words = "holding", takes_time = true },
+    -- (`not_before`: "hold the sim at 30 minutes" holds the simulation, no aircraft)
     { what = "holding patterns", words = "hold",
-      near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true },
+      near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true,
+      not_before = "@sim" },
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
     -- "KL204, hold": said to an aircraft, no pause of the simulation
     { what = "holding patterns", words = "hold", after_callsign = true },

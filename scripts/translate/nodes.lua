@@ -245,7 +245,14 @@ function M.world(sim, waypoints)
            airport_class = function(id) return sim:airport_class(id) end,
            navaids_named = function(name, lat, lon, nm, types) return sim:navaids_named(name, lat, lon, nm, types) end,
            airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end,
-           airports_beside = function(id, lat, lon, nm) return sim:airports_beside(id, lat, lon, nm) end }
+           airports_beside = function(id, lat, lon, nm) return sim:airports_beside(id, lat, lon, nm) end,
+           -- a user waypoint's position (POS reads it and changes nothing): lat, lon or nil
+           user_waypoint_at = function(name)
+             local ok, out = sim:exec("POS " .. name)
+             local lat, lon = tostring(out or ""):match("^%S+ at (%-?[%d.]+) (%-?[%d.]+)")
+             if ok and lat then return tonumber(lat), tonumber(lon) end
+             return nil
+           end }
 end
 
 function M.offline(state, ctx)
@@ -425,6 +432,23 @@ end
 -- speaker asked for: it is the translation, and the refusal is its result
 -- where it runs (the REPL shows "error: ..."). Only an LLM with retries left
 -- is sent back to try again.
+-- A simulation setting: a registry command whose arguments are numbers only ("ZONER [float]", "DT
+-- [float/txt,float]", "SEED int"), no aircraft, place or text.
+local settings
+local function is_setting(name)
+  if not settings then
+    settings = {}
+    for _, c in ipairs(squawk.sim.commands()) do
+      local numeric, other = false, false
+      for a in (c.args or ""):gmatch("[%a]+") do
+        if a == "float" or a == "int" or a == "time" then numeric = true elseif a ~= "txt" then other = true end
+      end
+      settings[c.name] = numeric and not other
+    end
+  end
+  return settings[name] == true
+end
+
 function M.validate(state, ctx)
   local cmds = M.split_commands(state.candidate or "")
   if #cmds == 0 then return rejected(state, ctx, "validate", "no command was produced") end
@@ -439,6 +463,14 @@ function M.validate(state, ctx)
     ok, msg = scratch:exec(c)
     if not ok and state.source == "llm" and state.retries < ctx.max_retries then
       return rejected(state, ctx, "validate", msg)
+    end
+    -- a setting read from English with a value the simulator refuses ("set the time step to 0") is
+    -- asked about, naming the refusal; typed TrafScript runs as typed
+    if not ok and state.source == "offline" and is_setting(canonical_name(c:match("^(%S+)"))) then
+      state.ask = string.format("squawk would refuse %s (%s). What value should it be?", c,
+        (msg:gsub("^[^:]*:%s*", ""):gsub("^%u+:%s*", "")))
+      M.say(state, "validate", "asks: " .. state.ask)
+      return "ask"
     end
     if not ok then msg = "the simulator will refuse it: " .. msg end
     if msg and msg ~= "" then outputs[#outputs + 1] = msg end

@@ -35,6 +35,7 @@ return function(intent, rule, words)
                     absorbs = true }
   intent "defwpt" { cmd = "DEFWPT", args = { "name", "lat", "lon" }, handler = "define_waypoint", absorbs = true }
   intent "delwpt" { cmd = "DELWPT", args = { "acid", "wpname" }, handler = "delete_waypoint" }
+  intent "undefwpt" { cmd = "DEFWPT", args = { "name", "lat", "lon" }, handler = "forget_waypoint" }
   intent "direct" { cmd = "DIRECT", also = { "ADDWPT", "ALT" }, args = { "acid", "wpname" }, handler = "direct" }
   intent "dest" { cmd = "DEST", args = { "acid", "airport" }, handler = "dest" }
   intent "orig" { cmd = "ORIG", args = { "acid", "airport" }, handler = "orig" }
@@ -73,6 +74,8 @@ return function(intent, rule, words)
   intent "area" { cmd = "AREA", args = { "shapename", "ON", "OFF" }, handler = "area" }
   intent "circle" { cmd = "CIRCLE", args = { "name", "radius" }, handler = "circle" }
   intent "box" { cmd = "BOX", args = { "name" }, handler = "box" }
+  intent "poly" { cmds = { "POLY", "POLYALT" }, args = { "name" }, handler = "polygon" }
+  intent "line" { cmd = "LINE", args = { "name" }, handler = "line" }
   intent "trail" { cmd = "TRAIL", args = { "acid", "ON", "OFF" }, handler = "trail" }
 
   -- an instruction announced with "expect" is no clearance
@@ -225,6 +228,10 @@ return function(intent, rule, words)
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
+  -- "a speed-up of 8", "speedup factor 4": the clock's rate as a noun, no aircraft named
+  rule { "speed speedup speed-up", "dtmult", near = { 4, "of factor" }, when = function(g, i)
+    return (g:word(i, "speedup speed-up") or g:word(i + 1, "up")) and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "speed it up 4x": a factor glued to its x, no aircraft named
   rule { "speed", "dtmult", near = { 2, "up" }, when = function(g, i)
     for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
@@ -298,7 +305,7 @@ return function(intent, rule, words)
 
   -- conflict resolution in the vertical ("let MVP use vertical speed in the resolutions", "keep
   -- resolutions horizontal only, no vertical"): RMETHV, never a vertical speed or a new method
-  rule { "vertical", "rmethv", when = function(g, i) return g:vertical_resolutions(i) end }
+  rule { "vertical horizontal lateral", "rmethv", when = function(g, i) return g:vertical_resolutions(i) end }
   -- vertical speed and bank
   rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
@@ -308,7 +315,7 @@ return function(intent, rule, words)
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
-  rule { "define make put", false, near = { 2, "box circle circular" } }  -- the shape's word starts it
+  rule { "define make put draw", false, near = { 2, "box circle circular polygon poly line" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
   -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
   -- waypoint at a position, when no aircraft that flies and no aircraft type is named
@@ -476,6 +483,22 @@ return function(intent, rule, words)
   end }
   -- "another Wizz please: WZZ88X, A320, ...": a request that opens with a new aircraft
   rule { "another", "create", when = function(g, i) return g:skip_fillers(1) == i and g:new_aircraft_follows(i) end }
+  -- "Delete my waypoint VALA", "remove the fix WP1": a waypoint defined for this run, when no aircraft
+  -- is named and none has it in its route, is undefined (DEFWPT ... DELETE)
+  rule { "delete remove del", "undefwpt", near = { 3, "@waypoint_nouns" }, when = function(g, i)
+    if g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    local w = g:refs_in(i + 1, math.min(#g.t + 1, i + 5), "waypoint")[1]
+    if not w or not g:user_waypoint(w.name) then return false end
+    for _, a in ipairs(g.fleet) do
+      for _, name in ipairs(a.route or {}) do if name:upper() == w.name:upper() then return false end end
+    end
+    return true
+  end }
+  -- "delete the deletion area", "remove the experiment area": the area ended
+  rule { "delete remove", false, near = { 3, "area" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- "the area, so anything leaving it gets deleted": what a setting does, in the passive, no aircraft named
+  rule { "delete deleted remove removed", false, prev = { 1, "gets get got" },
+         when = function(g, i) return not g:has_ref(math.max(1, i - 5), i, "aircraft") end }
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
@@ -665,12 +688,18 @@ return function(intent, rule, words)
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
+  rule { "carry", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on"
   -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
   rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
+  -- "let it go", "let it run", "let the sim run": the clock started, said alone or as a clause of its own
+  rule { "go run", "op", when = function(g, i)
+    local b = g:word(i - 1, "it") and i - 1 or (g:word(i - 1, "@sim") and g:word(i - 2, "the") and i - 2 or nil)
+    return b ~= nil and g:word(b - 1, "let") and (g:alone_but(b - 1, i + 1) or g:clause_alone(b - 1, i + 1))
+  end }
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
@@ -727,10 +756,26 @@ return function(intent, rule, words)
   rule { "skip", "ff", next = "ahead forward" }
   rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
+  -- "skip 5 minutes": a time straight after it, no waypoint or aircraft named
+  rule { "skip", "ff", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
+    return q ~= nil and q.b == g:skip_fillers(i + 1) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "play it forward 3 minutes", "roll the sim on 10 minutes", "step forward 30 s": the clock moved on
+  -- by a time said after it, no aircraft named
+  rule { "play roll step wind push advance", "ff", near = { 4, "forward ahead on" },
+         not_prev = { 1, "time the a sim simulation" }, when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 8))[1]
+    return q ~= nil and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
+  -- "set the step to 0.2 s", "the simulation step 0.1": the step as a noun (the verb steps the clock on)
+  rule { "step", "dt", prev = { 1, "the a sim simulation integration update" }, not_near = { 3, "forward ahead on" } }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation
   rule { "reset", false, near = { 3, "protected protection pz rpz zone zoner separation radius" } }
+  -- "pause the sim while I reset the eye tracker": the speaker's own doing in a clause of time, no instruction
+  rule { "reset restart", false, prev = { 1, "i we" }, when = function(g, i) return g:word(i - 2, "while when as after before until once") end }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -759,6 +804,14 @@ return function(intent, rule, words)
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
+  -- "wind from 270 at 40 kt over 55.5 12.5", "a wind of 270 at 40 knots": where it blows from, said after it
+  rule { "wind winds", "wind", next = "from of", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- "wind 270 at 30 kt at 52 4": its direction straight after it, its speed in knots after that
+  rule { "wind winds", "wind", when = function(g, i)
+    local qs = g:quantities(i + 1, math.min(#g.t + 1, i + 6))
+    return qs[1] ~= nil and qs[1].b == i + 1 and qs[2] ~= nil and qs[2].kind == "speed"
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
@@ -769,9 +822,14 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
   end }
   rule { "detection asas cdmethod cd", "asas" }
+  rule { "cr", "reso", next = "on off" }  -- "CD on, CR off": conflict resolution by its letters
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
+  -- "Resolution method MVP, horizontal factor 1.2": a factor of a direction, resolution said before
+  rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
+    return g:word_in(1, i, "resolution resolutions reso resolve mvp")
+  end }
   rule { "mvp resolution resolve reso resolutions", false, when = function(g)
     for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
     return false
@@ -779,6 +837,7 @@ return function(intent, rule, words)
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
+  rule { "mvp", "reso", next = "on" }  -- "and MVP on"
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
@@ -790,8 +849,30 @@ return function(intent, rule, words)
   rule { "turbulence noise", "noise" }
 
   -- shapes and the deletion area ("in the area" alone names no area)
+  -- the points said after word i: latitude/longitude pairs, marked or two plain numbers in a row
+  local function corners_after(g, i)
+    local n, lat, k = 0, false, 1
+    local qs = g:quantities(i + 1, #g.t + 1)
+    while k <= #qs do
+      local q, nx = qs[k], qs[k + 1]
+      if q.kind == "lat" then
+        lat = true
+      elseif q.kind == "lon" and lat then
+        n, lat = n + 1, false
+      elseif q.kind == "plain" and nx and nx.kind == "plain" and nx.b - q.e <= 1 and math.abs(q.value) <= 90
+          and math.abs(nx.value) <= 180 then
+        n, k = n + 1, k + 1
+      end
+      k = k + 1
+    end
+    return n
+  end
   rule { "area", "area", prev = { 2, "deletion delete experiment" } }
   rule { "circle", "circle", near = { 3, "@named" } }
+  -- "circle C1 centred on 52 4, radius 20 nm": a name straight after it and a centre
+  rule { "circle", "circle", when = function(g, i)
+    return (g:has_ref(i + 1, i + 2, "waypoint") or g:has_ref(i + 1, i + 2, "aircraft")) and corners_after(g, i) >= 1
+  end }
   -- "a circle ZONE1 at 52.0 4.5", "a circular area C1 around 52 4": a shape at a position
   rule { "circle circular", "circle", when = function(g, i)
     for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
@@ -800,6 +881,16 @@ return function(intent, rule, words)
     return false
   end }
   rule { "box", "box", near = { 3, "@named" } }
+  -- "Polygon LTMA: 51.2 -1.0, 51.9 -1.0, ...", "a line REF1 from 55.68 -3.27 to 56.12 -3.20": a shape's
+  -- word with the corners after it (three or more for a polygon, two for a line)
+  rule { "polygon poly", "poly", when = function(g, i) return corners_after(g, i) >= 3 end }
+  rule { "box", "box", when = function(g, i)
+    return corners_after(g, i) == 2 and (g:has_ref(i + 1, i + 2, "waypoint") or g:has_ref(i + 1, i + 2, "aircraft"))
+  end }
+  rule { "line", "line", when = function(g, i)
+    return corners_after(g, i) == 2 and (g:followed_by(i, 3, "@named") or g:has_ref(i + 1, i + 3, "waypoint")
+      or g:has_ref(i + 1, i + 3, "aircraft"))
+  end }
 
   -- the performance model ("switch to the simple class-based performance model", "use OpenAP")
   rule { "performance perf", "perf", when = function(g) return g:word_in(1, #g.t + 1, "@perf_models model models") end }
