@@ -585,16 +585,82 @@ function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self
 -- True when position i lies in a reason given for an instruction, which runs
 -- from "because", "since" or "so that/it/they" to the end of the sentence
 -- ("climb KLM602 FL220 so that it clears BAW451": BAW451 is not instructed).
+local COMMENTARY = lexicon.commentary
+local CM_SUBJECTS, CM_OWN, CM_LEADS, CM_LABELS = set_of(COMMENTARY.subjects), set_of(COMMENTARY.own),
+  set_of(COMMENTARY.leads), set_of(COMMENTARY.labels)
+local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.determiners)
+local CM_NEGATION = set_of(lexicon.accounted.negation)
+for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
+
+-- The end of the commentary span starting at b: the next punctuation other than a comma, hyphen or quote
+-- (a closing bracket for one opened at b - 1).
+local function commentary_end(self, b)
+  local e = b
+  while e <= #self.t do
+    local x = self.t[e]
+    if x.kind == "punct" and x.text ~= "," and x.text ~= "-" and x.text ~= "'" then break end
+    e = e + 1
+  end
+  return e
+end
+
+-- True when the tokens b .. e-1 may be set aside as commentary on an instruction (lexicon.commentary):
+-- no value, no place, no aircraft first ("- TOM6RT too"), no instruction word (one after a determiner is
+-- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
+-- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
+-- create a same-level encounter:")
+function G:commentary(b, e, lead)
+  if b >= e or #self:quantities(b, e) > 0 or self:has_ref(b, b + 1, "aircraft") then return false end
+  for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
+    if not self:word(r.b, "@not_names") then return false end
+  end
+  local own = self:word(b, CM_OWN)
+  for x = b, e - 1 do
+    local t = self.t[x]
+    if t.kind == "word" then
+      local last = x == e - 1 or self.t[x + 1].kind == "punct"
+      if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
+          or self:word(x, "@correction")
+          or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
+        return false
+      end
+      if self:intent_at(x) and not self:word(x - 1, CM_DETERMINERS) then return false end
+    end
+  end
+  return true
+end
+
 function G:in_reason(i)
   if not self.reason then
     -- reason[i]: the nearest of a reason word (or a purpose, G:purpose) and a sentence break before
     -- i is the reason word
     self.reason = {}
     local inside = false
+    local instructed = false  -- an instruction word said before k, outside a reason
+    local commas = 0          -- the commas up to k (self.apart: those that were a dash or a bracket)
     for k = 1, #self.t do
       self.reason[k] = inside
       local t = self.t[k]
-      if t.kind == "punct" and t.text ~= "," then
+      local start = k == 1 or (self.t[k - 1].kind == "punct" and self.t[k - 1].text ~= ",")
+      if t.kind == "punct" and t.text == "," then commas = commas + 1 end
+      if t.kind == "punct" and self:word(k - 1, CM_LABELS) and t.text == ":" then
+        -- ("descend to FL100, reason: lose the vertical overlap with TOM6RT": to the end of the sentence)
+        inside = true
+      elseif t.kind == "punct" and t.text == "," and (self.apart or {})[commas] and instructed
+          and self:commentary(k + 1, commentary_end(self, k + 1)) then
+        -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)")
+        inside = true
+      elseif t.kind == "punct" and t.text == "," and instructed and self:word(k + 1, CM_SUBJECTS)
+          and self:commentary(k + 1, commentary_end(self, k + 1)) then
+        -- ("Fast-forward 20 minutes, we only care about the descent phase")
+        inside = true
+      elseif start and t.kind == "word" and (CM_LEADS[t.text] or CM_LABELS[t.text]) then
+        -- ("For the vertical test: NAX3412 climb ...", "To create a same-level encounter: SAS1410 climb
+        -- FL190": a lead-in before a colon with no aircraft, value or place, its "to" verb aside)
+        local e = commentary_end(self, k + 1)
+        local lead = self.t[e] and self.t[e].text == ":" and not self:has_ref(k, e, "aircraft")
+        if lead then inside = self:commentary(k, e, true) or (t.text == "to" and self:commentary(k + 2, e, true)) end
+      elseif t.kind == "punct" and t.text ~= "," then
         inside = false
       elseif self:purpose(k) then
         inside = true
@@ -619,6 +685,7 @@ function G:in_reason(i)
         -- ", I want to have a look at BAW123's position" instruct)
         inside = true
       end
+      if not inside and not self.reason[k] and self:intent_at(k) then instructed = true end
     end
   end
   return self.reason[i] or false
@@ -991,6 +1058,75 @@ function G:taken_back(s)
   end
 end
 
+-- "SAS1507 direct... no wait, heading 150", "route: TWEED, then GRICE... actually no, just TWEED at FL90",
+-- "climb FL200 and turn left heading 200... actually no, just the climb": a self-correction after punctuation
+-- (a run of lexicon.self_correction words holding a marker) that is no value for a value (self_corrections
+-- reads those) takes back what it follows. An instruction word cut off before it, with no value, is
+-- dropped ("and" before it too). "just"/"only" after it says what stands: "the" and a noun of
+-- lexicon.self_correction.kept keeps the commands of that kind (self.kept: G:translate drops the others);
+-- a name or value replaces the names and values said since the last instruction word ("just TWEED at
+-- FL90"); anything else after "just" is asked about. The words taken back are marked used and noted.
+local SC = lexicon.self_correction
+local SC_KEPT, SC_ONLY = {}, set_of(SC.only)
+for cmd, nouns in pairs(SC.kept) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
+function G:self_corrected()
+  local a = 2
+  while a <= #self.t do
+    local c, marked = a, false
+    if self.t[a].kind == "punct" then
+      while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]) do
+        marked = marked or SC_MARKERS[self.t[c].text]
+        c = c + 1
+      end
+    end
+    local p = a - 1  -- the last instruction word before the run
+    while p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
+    if marked and c <= #self.t and p >= 1 then
+      local b = a
+      if p == a - 1 then
+        -- an instruction cut off: taken back, with the "and" that joined it
+        b = self:word(p - 1, "and") and p - 1 or p
+      end
+      if self:word(c, SC_ONLY) then
+        local kept = self:word(c + 1, "the") and SC_KEPT[self.t[c + 2] and self.t[c + 2].text or ""]
+        local e = c + 3
+        if self:word(e, "change instruction") then e = e + 1 end
+        -- the first name or value since the last instruction word, the start of what is said again
+        local q = p + 1
+        while q < b and not (self:has_ref(q, q + 1, "waypoint") or #self:quantities(q, q + 1) > 0) do q = q + 1 end
+        if kept and (e > #self.t or self.t[e].kind == "punct") then
+          self.kept = kept
+          self:mark_used(b, e)
+          for k = b, e - 1 do self.noted[k] = true end
+          a = e
+        elseif q < b and (self:has_ref(c + 1, c + 2, "waypoint")
+            or (self:quantities(c + 1, #self.t + 1)[1] or {}).b == c + 1) then
+          self:mark_used(q, c + 1)
+          for k = q, c do self.noted[k] = true end
+          local refs = {}
+          for _, r in ipairs(self.refs) do
+            if r.b < q or r.b > c then refs[#refs + 1] = r end
+          end
+          self.refs = refs
+          a = c + 1
+        else
+          local said = self:raw(c, math.min(e, #self.t + 1)):gsub(" ([,.;:])", "%1")
+          self:need(string.format("What stands after '%s'? Please say the instruction again in full.", said))
+          return
+        end
+      elseif b < a then
+        self:mark_used(b, c)
+        for k = b, c - 1 do self.noted[k] = true end
+        a = c
+      else
+        a = a + 1
+      end
+    else
+      a = a + 1
+    end
+  end
+end
+
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
@@ -1297,8 +1433,14 @@ function G:unknown_names()
   -- an aircraft named as a reference for another's value ("the same heading as AC02") or as the
   -- reason for an instruction ("to avoid a conflict between AC01 and AC02") is explained
   local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
+  -- ("climb FL190 - TOM6RT as well", "same for TOM6RT", "and also TOM6RT": an aircraft added to the
+  -- instruction, never context)
+  local function added(r)
+    return self:word(r.e, "too also") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
+      or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
+  end
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and (not r.exists or not (compared or self:in_reason(r.b))) and not r.false_start
+    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b))) and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
       self.leftover = self:raw(r.b, r.e)
@@ -1956,6 +2098,36 @@ local function airline_values(text, fleet)
   end))
 end
 
+-- A dash standing alone (" - ", " -- ", an en or em dash) or a bracket opening on a lower-case word
+-- ("800 ft (testing reduced vertical)") sets what follows apart: both are read as commas (the lexer
+-- drops them), and the ordinals of the commas they became are returned as a set (G:in_reason reads
+-- commentary after them). A comma between digits ("6,000") is no comma token and is not counted.
+local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
+local function set_apart(text)
+  local out, marks, n, i, open = {}, {}, 0, 1, false
+  while i <= #text do
+    local dash
+    for _, pat in ipairs(DASHES) do dash = dash or text:match(pat, i) end
+    local c = text:sub(i, i)
+    if dash then
+      n = n + 1
+      marks[n] = true
+      out[#out + 1], i = " , ", i + #dash
+    elseif c == "(" and text:match("^%(%l", i) and (i == 1 or text:sub(i - 1, i - 1):match("%s")) then
+      n = n + 1
+      marks[n], open = true, true
+      out[#out + 1], i = ", ", i + 1
+    elseif c == ")" and open then
+      n, open = n + 1, false
+      out[#out + 1], i = " ,", i + 1
+    else
+      if c == "," and not (text:sub(i - 1, i - 1):match("%d") and text:sub(i + 1, i + 1):match("%d")) then n = n + 1 end
+      out[#out + 1], i = c, i + 1
+    end
+  end
+  return table.concat(out), marks
+end
+
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
@@ -1972,10 +2144,11 @@ function M.translate(text, world)
       or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]mcre") or text:lower():find("%f[%a]random") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
-  local u = squawk.translate.utterance(types.join(text, TYPES.phrases),
-    world, NAMES)
+  local apart
+  text, apart = set_apart(types.join(text, TYPES.phrases))
+  local u = squawk.translate.utterance(text, world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
-    qcache = {}, taken = {}, noted = {}, triggers = {} }, G)
+    qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
   g:settle_callsigns()
   g:airline_types()
   g:airline_refs()
@@ -1983,6 +2156,7 @@ function M.translate(text, world)
   g:opening_right()
   g:runway_sides()
   local note = g:not_simulated()
+  g:self_corrected()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()
@@ -1994,6 +2168,15 @@ function M.translate(text, world)
     end
   end
   if not g.ask then g:discretion_without_level() end
+  -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
+  if not g.ask and g.kept then
+    local kept = {}
+    for _, line in ipairs(g.out) do
+      if line:find("%f[%w]" .. g.kept .. " ") then kept[#kept + 1] = line end
+    end
+    if #kept == 0 then g.ask = "Which instruction stands after the correction? Please say it again in full." end
+    g.out = kept
+  end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end
