@@ -142,7 +142,12 @@ local function know(text)
 end
 local function know_all(v, seen)
   if type(v) == "string" then return know(v) end
-  if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases then return end
+  -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
+  -- keep: they account for no word)
+  if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
+      or v == lexicon.aside or v == lexicon.self_correction.just_the then
+    return
+  end
   seen[v] = true
   for k, x in pairs(v) do
     if type(k) == "string" then know(k) end
@@ -479,8 +484,9 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
-  -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own
-  text = text:gsub("%s*%((%a[^()]*)%)", ", %1,")
+  -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
+  -- as after a dash (set_apart)
+  text = text:gsub("%s*%((%a[^()]*)%)", " - %1,")
   -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
   -- end) is quoted text, as in double quotes
   text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
@@ -585,10 +591,12 @@ function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self
 -- True when position i lies in a reason given for an instruction, which runs
 -- from "because", "since" or "so that/it/they" to the end of the sentence
 -- ("climb KLM602 FL220 so that it clears BAW451": BAW451 is not instructed).
-local COMMENTARY = lexicon.commentary
+local COMMENTARY = lexicon.aside
 local CM_SUBJECTS, CM_OWN, CM_LEADS, CM_LABELS = set_of(COMMENTARY.subjects), set_of(COMMENTARY.own),
   set_of(COMMENTARY.leads), set_of(COMMENTARY.labels)
 local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.determiners)
+local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_of(COMMENTARY.later),
+  set_of(COMMENTARY.lead_context)
 local CM_NEGATION = set_of(lexicon.accounted.negation)
 for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
 
@@ -604,7 +612,7 @@ local function commentary_end(self, b)
   return e
 end
 
--- True when the tokens b .. e-1 may be set aside as commentary on an instruction (lexicon.commentary):
+-- True when the tokens b .. e-1 may be set aside as commentary on an instruction (lexicon.aside):
 -- no value, no place, no aircraft first ("- TOM6RT too"), no instruction word (one after a determiner is
 -- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
@@ -645,7 +653,7 @@ function G:in_reason(i)
       if t.kind == "punct" and t.text == "," then commas = commas + 1 end
       if t.kind == "punct" and self:word(k - 1, CM_LABELS) and t.text == ":" then
         -- ("descend to FL100, reason: lose the vertical overlap with TOM6RT": to the end of the sentence)
-        inside = true
+        inside, self.reason[k - 1] = true, true
       elseif t.kind == "punct" and t.text == "," and (self.apart or {})[commas] and instructed
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)")
@@ -653,6 +661,12 @@ function G:in_reason(i)
       elseif t.kind == "punct" and t.text == "," and instructed and self:word(k + 1, CM_SUBJECTS)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase")
+        inside = true
+      elseif instructed and ((self:word(k, CM_WHILE) and self:word(k + 1, CM_OWN))
+          or (t.kind == "punct" and t.text == "," and self:word(k + 1, CM_OWN)
+              and self:word_in(k + 2, commentary_end(self, k + 1), CM_LATER)))
+          and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 then
+        -- ("pause the sim while I reset the eye tracker", ", we'll put it back on the route later")
         inside = true
       elseif start and t.kind == "word" and (CM_LEADS[t.text] or CM_LABELS[t.text]) then
         -- ("For the vertical test: NAX3412 climb ...", "To create a same-level encounter: SAS1410 climb
@@ -1063,12 +1077,12 @@ end
 -- (a run of lexicon.self_correction words holding a marker) that is no value for a value (self_corrections
 -- reads those) takes back what it follows. An instruction word cut off before it, with no value, is
 -- dropped ("and" before it too). "just"/"only" after it says what stands: "the" and a noun of
--- lexicon.self_correction.kept keeps the commands of that kind (self.kept: G:translate drops the others);
+-- lexicon.self_correction.just_the keeps the commands of that kind (self.kept: G:translate drops the others);
 -- a name or value replaces the names and values said since the last instruction word ("just TWEED at
 -- FL90"); anything else after "just" is asked about. The words taken back are marked used and noted.
 local SC = lexicon.self_correction
 local SC_KEPT, SC_ONLY = {}, set_of(SC.only)
-for cmd, nouns in pairs(SC.kept) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
+for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -1439,8 +1453,22 @@ function G:unknown_names()
     return self:word(r.e, "too also") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
       or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
   end
+  -- ("Add an intruder for VIR9: DLH9KW A321 at ...", "We need a head-on for ICE204: spawn ICE205 ..."):
+  -- an aircraft after a word of commentary.lead_context in a lead-in before a colon, when an aircraft
+  -- is named after the colon, is other traffic
+  local function lead_context(r)
+    if not self:word(r.b - 1, CM_LEAD_CONTEXT) then return false end
+    local colon = r.e
+    while self.t[colon] and self.t[colon].kind == "punct" and self.t[colon].text == "'" do colon = colon + 1 end
+    while self.t[colon] and self.t[colon].kind ~= "punct" do colon = colon + 1 end
+    for k = r.b - 1, 1, -1 do
+      if self.t[k].kind == "punct" and self.t[k].text ~= "," then return false end
+    end
+    return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
+  end
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b))) and not r.false_start
+    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r)))
+        and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
       self.leftover = self:raw(r.b, r.e)
@@ -2098,13 +2126,13 @@ local function airline_values(text, fleet)
   end))
 end
 
--- A dash standing alone (" - ", " -- ", an en or em dash) or a bracket opening on a lower-case word
--- ("800 ft (testing reduced vertical)") sets what follows apart: both are read as commas (the lexer
--- drops them), and the ordinals of the commas they became are returned as a set (G:in_reason reads
--- commentary after them). A comma between digits ("6,000") is no comma token and is not counted.
+-- A dash standing alone (" - ", " -- ", an en or em dash; a bracket written_forms made one: "800 ft
+-- (testing reduced vertical)") sets what follows apart: it is read as a comma (the lexer drops dashes),
+-- and the ordinals of the commas dashes became are returned as a set (G:in_reason reads commentary after
+-- them). A comma between digits ("6,000") is no comma token and is not counted.
 local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
 local function set_apart(text)
-  local out, marks, n, i, open = {}, {}, 0, 1, false
+  local out, marks, n, i = {}, {}, 0, 1
   while i <= #text do
     local dash
     for _, pat in ipairs(DASHES) do dash = dash or text:match(pat, i) end
@@ -2113,13 +2141,6 @@ local function set_apart(text)
       n = n + 1
       marks[n] = true
       out[#out + 1], i = " , ", i + #dash
-    elseif c == "(" and text:match("^%(%l", i) and (i == 1 or text:sub(i - 1, i - 1):match("%s")) then
-      n = n + 1
-      marks[n], open = true, true
-      out[#out + 1], i = ", ", i + 1
-    elseif c == ")" and open then
-      n, open = n + 1, false
-      out[#out + 1], i = " ,", i + 1
     else
       if c == "," and not (text:sub(i - 1, i - 1):match("%d") and text:sub(i + 1, i + 1):match("%d")) then n = n + 1 end
       out[#out + 1], i = c, i + 1
