@@ -644,7 +644,13 @@ function G:in_reason(i)
     -- i is the reason word
     self.reason = {}
     local inside = false
-    local instructed = false  -- an instruction word said before k, outside a reason
+    -- true when an instruction word is said before k, outside a reason (asked only where an aside may open)
+    local function instructed(k)
+      for x = 1, k - 1 do
+        if not self.reason[x] and self:intent_at(x) then return true end
+      end
+      return false
+    end
     local commas = 0          -- the commas up to k (self.apart: those that were a dash or a bracket)
     for k = 1, #self.t do
       self.reason[k] = inside
@@ -654,18 +660,18 @@ function G:in_reason(i)
       if t.kind == "punct" and self:word(k - 1, CM_LABELS) and t.text == ":" then
         -- ("descend to FL100, reason: lose the vertical overlap with TOM6RT": to the end of the sentence)
         inside, self.reason[k - 1] = true, true
-      elseif t.kind == "punct" and t.text == "," and (self.apart or {})[commas] and instructed
+      elseif t.kind == "punct" and t.text == "," and (self.apart or {})[commas] and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)")
         inside = true
-      elseif t.kind == "punct" and t.text == "," and instructed and self:word(k + 1, CM_SUBJECTS)
+      elseif t.kind == "punct" and t.text == "," and self:word(k + 1, CM_SUBJECTS) and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase")
         inside = true
-      elseif instructed and ((self:word(k, CM_WHILE) and self:word(k + 1, CM_OWN))
+      elseif ((self:word(k, CM_WHILE) and self:word(k + 1, CM_OWN))
           or (t.kind == "punct" and t.text == "," and self:word(k + 1, CM_OWN)
               and self:word_in(k + 2, commentary_end(self, k + 1), CM_LATER)))
-          and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 then
+          and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 and instructed(k) then
         -- ("pause the sim while I reset the eye tracker", ", we'll put it back on the route later")
         inside = true
       elseif start and t.kind == "word" and (CM_LEADS[t.text] or CM_LABELS[t.text]) then
@@ -699,7 +705,6 @@ function G:in_reason(i)
         -- ", I want to have a look at BAW123's position" instruct)
         inside = true
       end
-      if not inside and not self.reason[k] and self:intent_at(k) then instructed = true end
     end
   end
   return self.reason[i] or false
@@ -1094,7 +1099,7 @@ function G:self_corrected()
       end
     end
     local p = a - 1  -- the last instruction word before the run
-    while p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
+    while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
     if marked and c <= #self.t and p >= 1 then
       local b = a
       if p == a - 1 then
@@ -2132,6 +2137,7 @@ end
 -- them). A comma between digits ("6,000") is no comma token and is not counted.
 local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
 local function set_apart(text)
+  if not text:find("%s%-") and not text:find("\xE2\x80[\x93\x94]") then return text, nil end
   local out, marks, n, i = {}, {}, 0, 1
   while i <= #text do
     local dash

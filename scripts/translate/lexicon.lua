@@ -276,7 +276,7 @@ return {
           leads = { "for", "to" },
           labels = { "reason", "purpose", "rationale", "why", "aim", "goal", "note", "comment", "context" },
           blocks = { "and", "then", "also", "same", "both", "either", "again", "correction", "disregard",
-                     "negative", "plus" },
+                     "negative", "plus", "next" },
           determiners = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my",
                           "your", "s" } },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
