@@ -379,6 +379,7 @@ end
 local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
   "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
+local SIDES = set_of({ "left", "right" })
 local function self_corrections(text)
   local sc = lexicon.self_correction
   local words, markers, after = set_of(sc.words), set_of(sc.markers), set_of(sc.after)
@@ -396,7 +397,8 @@ local function self_corrections(text)
       j = j + 1
     end
     local nxt = toks[j]
-    if j > k and marked and value(toks[k - 1]) and nxt
+    -- (a turn's side corrected: "turn left... I mean right heading 200")
+    if j > k and marked and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare])) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare]) then
       pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
       from = nxt.at
@@ -652,6 +654,7 @@ function G:in_reason(i)
       return false
     end
     local commas = 0          -- the commas up to k (self.apart: those that were a dash or a bracket)
+    local lead_end            -- the comma that ends a lead-in ("For the overtake case, ...")
     for k = 1, #self.t do
       self.reason[k] = inside
       local t = self.t[k]
@@ -676,10 +679,18 @@ function G:in_reason(i)
         inside = true
       elseif start and t.kind == "word" and (CM_LEADS[t.text] or CM_LABELS[t.text]) then
         -- ("For the vertical test: NAX3412 climb ...", "To create a same-level encounter: SAS1410 climb
-        -- FL190": a lead-in before a colon with no aircraft, value or place, its "to" verb aside)
-        local e = commentary_end(self, k + 1)
-        local lead = self.t[e] and self.t[e].text == ":" and not self:has_ref(k, e, "aircraft")
-        if lead then inside = self:commentary(k, e, true) or (t.text == "to" and self:commentary(k + 2, e, true)) end
+        -- FL190", "For the overtake case, EZY45 speed 320": a lead-in before a colon, or a comma after
+        -- "for" or "to", with no aircraft, value or place, its "to" verb aside)
+        local e = k + 1
+        while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+        if not (self.t[e] and self.t[e].text == "," and CM_LEADS[t.text]) then e = commentary_end(self, k + 1) end
+        local lead = self.t[e] and (self.t[e].text == ":" or self.t[e].text == ",") and not self:has_ref(k, e, "aircraft")
+        if lead then
+          inside = self:commentary(k, e, true) or (t.text == "to" and self:commentary(k + 2, e, true))
+          lead_end = inside and e or nil
+        end
+      elseif k == lead_end then
+        inside = false
       elseif t.kind == "punct" and t.text ~= "," then
         inside = false
       elseif self:purpose(k) then
@@ -1081,10 +1092,13 @@ end
 -- "climb FL200 and turn left heading 200... actually no, just the climb": a self-correction after punctuation
 -- (a run of lexicon.self_correction words holding a marker) that is no value for a value (self_corrections
 -- reads those) takes back what it follows. An instruction word cut off before it, with no value, is
--- dropped ("and" before it too). "just"/"only" after it says what stands: "the" and a noun of
+-- dropped ("and" before it too); an instruction word after it takes back the last instruction before it,
+-- from its instruction word ("direct TWEED... no, make it heading 200"). "just"/"only" after it says what
+-- stands: "the" and a noun of
 -- lexicon.self_correction.just_the keeps the commands of that kind (self.kept: G:translate drops the others);
 -- a name or value replaces the names and values said since the last instruction word ("just TWEED at
--- FL90"); anything else after "just" is asked about. The words taken back are marked used and noted.
+-- FL90"); anything else after "just" but an instruction word is asked about. The words taken back are
+-- marked used and noted.
 local SC = lexicon.self_correction
 local SC_KEPT, SC_ONLY = {}, set_of(SC.only)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
@@ -1094,7 +1108,10 @@ function G:self_corrected()
     local c, marked = a, false
     if self.t[a].kind == "punct" then
       while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]) do
-        marked = marked or SC_MARKERS[self.t[c].text]
+        -- ("no" straight before what it negates is no correction: "conflict detection only, no resolution")
+        local nx = self.t[c + 1]
+        marked = marked or (SC_MARKERS[self.t[c].text]
+          and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
         c = c + 1
       end
     end
@@ -1106,7 +1123,7 @@ function G:self_corrected()
         -- an instruction cut off: taken back, with the "and" that joined it
         b = self:word(p - 1, "and") and p - 1 or p
       end
-      if self:word(c, SC_ONLY) then
+      if self:word(c, SC_ONLY) and not self:intent_at(c + 1) then
         local kept = self:word(c + 1, "the") and SC_KEPT[self.t[c + 2] and self.t[c + 2].text or ""]
         local e = c + 3
         if self:word(e, "change instruction") then e = e + 1 end
@@ -1136,6 +1153,19 @@ function G:self_corrected()
       elseif b < a then
         self:mark_used(b, c)
         for k = b, c - 1 do self.noted[k] = true end
+        a = c
+      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c)
+          and not self:word_in(a, c, "and also then") then
+        -- another instruction said in its place ("direct TWEED... no, make it heading 200", "climb FL200,
+        -- no wait, descend FL90"): the last one before the run, from its instruction word, is taken back
+        -- ("climb FL200, sorry, and turn left": an instruction added, none taken back)
+        self:mark_used(p, c)
+        for k = p, c - 1 do self.noted[k] = true end
+        local refs = {}
+        for _, r in ipairs(self.refs) do
+          if r.b < p or r.b >= c then refs[#refs + 1] = r end
+        end
+        self.refs = refs
         a = c
       else
         a = a + 1

@@ -1365,4 +1365,9 @@ do
   check_eq(ex("FIN7 descend FL150 and direct... no, just the descent"), "ALT FIN7 FL150")
   asked("FIN7 descend FL150 and turn right heading 250... actually no, just the first one")
   asked("FIN7 descend FL150 and turn right heading 250, sorry, only the speed")
+  check_eq(ex("FIN7 turn left... I mean right heading 250"), "HDG FIN7 250 RIGHT")
+  check_eq(ex("NAX12 direct OSLOA... no, make it heading 030"), "HDG NAX12 30")
+  check_eq(ex("NAX12 climb FL150, no wait, descend FL100"), "ALT NAX12 FL100")
+  check_eq(ex("NAX12 climb FL150, sorry, and turn left heading 030"), "ALT NAX12 FL150 ; HDG NAX12 30 LEFT")
+  check_eq(ex("For the overtake case, FIN7 speed 320"), "SPD FIN7 320")
 end
