@@ -627,6 +627,7 @@ function G:commentary(b, e, lead)
   local own = self:word(b, CM_OWN)
   for x = b, e - 1 do
     local t = self.t[x]
+    if self.noted[x] then return false end  -- (what squawk does not simulate: "- hold TOM6RT")
     if t.kind == "word" then
       local last = x == e - 1 or self.t[x + 1].kind == "punct"
       if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
@@ -634,7 +635,10 @@ function G:commentary(b, e, lead)
           or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
         return false
       end
-      if self:intent_at(x) and not self:word(x - 1, CM_DETERMINERS) then return false end
+      -- (a word some rule starts an instruction with, before an aircraft, whether or not it starts one
+      -- here: "- hold TOM6RT", "- move the easyJet")
+      local verb = RULES_BY_WORD[t.text] and self:has_ref(self:word(x + 1, "the") and x + 2 or x + 1, x + 3, "aircraft")
+      if (verb or self:intent_at(x)) and not self:word(x - 1, CM_DETERMINERS) then return false end
     end
   end
   return true
@@ -1483,9 +1487,9 @@ function G:unknown_names()
   -- reason for an instruction ("to avoid a conflict between AC01 and AC02") is explained
   local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
   -- ("climb FL190 - TOM6RT as well", "same for TOM6RT", "and also TOM6RT": an aircraft added to the
-  -- instruction, never context)
+  -- instruction; ", we want TOM6RT lower": one given a direction of its own; never context)
   local function added(r)
-    return self:word(r.e, "too also") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
+    return self:word(r.e, "too also @up @down @faster_slower") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
       or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
   end
   -- ("Add an intruder for VIR9: DLH9KW A321 at ...", "We need a head-on for ICE204: spawn ICE205 ..."):

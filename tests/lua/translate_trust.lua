@@ -1356,6 +1356,9 @@ do
   asked("NAX12 climb FL200 (via OSLOA)")
   asked("NAX12 climb FL200 - when ICE44 passes")
   asked("reason: ICE44, NAX12 descend FL100")
+  asked("NAX12 climb FL200 - we want ICE44 lower")
+  asked("NAX12 climb FL200, we want ICE44 down")
+  asked("NAX12 climb FL200 - hold ICE44")
   -- self-corrections
   check_eq(ex("FIN7 direct... no wait, heading 200 for now, we'll send it back to the route later"), "HDG FIN7 200")
   check_eq(ex("NAX12 direct... sorry, turn left heading 010 and climb FL150"), "HDG NAX12 10 LEFT ; ALT NAX12 FL150")
