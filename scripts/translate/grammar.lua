@@ -158,7 +158,12 @@ local function know(text)
 end
 local function know_all(v, seen)
   if type(v) == "string" then return know(v) end
-  if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases then return end
+  -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
+  -- keep: they account for no word)
+  if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
+      or v == lexicon.aside or v == lexicon.self_correction.just_the then
+    return
+  end
   seen[v] = true
   for k, x in pairs(v) do
     if type(k) == "string" then know(k) end
@@ -408,6 +413,7 @@ end
 local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine",
   "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
+local SIDES = set_of({ "left", "right" })
 local function self_corrections(text)
   local sc = lexicon.self_correction
   local words, markers, after = set_of(sc.words), set_of(sc.markers), set_of(sc.after)
@@ -425,7 +431,8 @@ local function self_corrections(text)
       j = j + 1
     end
     local nxt = toks[j]
-    if j > k and marked and value(toks[k - 1]) and nxt
+    -- (a turn's side corrected: "turn left... I mean right heading 200")
+    if j > k and marked and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare])) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare]) then
       pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
       from = nxt.at
@@ -536,8 +543,9 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
-  -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own
-  text = text:gsub("%s*%((%a[^()]*)%)", ", %1,")
+  -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
+  -- as after a dash (set_apart)
+  text = text:gsub("%s*%((%a[^()]*)%)", " - %1,")
   -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
   -- end) is quoted text, as in double quotes
   text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
@@ -649,16 +657,109 @@ function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self
 -- True when position i lies in a reason given for an instruction, which runs
 -- from "because", "since" or "so that/it/they" to the end of the sentence
 -- ("climb KLM602 FL220 so that it clears BAW451": BAW451 is not instructed).
+local COMMENTARY = lexicon.aside
+local CM_SUBJECTS, CM_OWN, CM_LEADS, CM_LABELS = set_of(COMMENTARY.subjects), set_of(COMMENTARY.own),
+  set_of(COMMENTARY.leads), set_of(COMMENTARY.labels)
+local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.determiners)
+local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_of(COMMENTARY.later),
+  set_of(COMMENTARY.lead_context)
+local CM_NEGATION = set_of(lexicon.accounted.negation)
+for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
+
+-- The end of the commentary span starting at b: the next punctuation other than a comma, hyphen or quote
+-- (a closing bracket for one opened at b - 1).
+local function commentary_end(self, b)
+  local e = b
+  while e <= #self.t do
+    local x = self.t[e]
+    if x.kind == "punct" and x.text ~= "," and x.text ~= "-" and x.text ~= "'" then break end
+    e = e + 1
+  end
+  return e
+end
+
+-- True when the tokens b .. e-1 may be set aside as commentary on an instruction (lexicon.aside):
+-- no value, no place, no aircraft first ("- TOM6RT too"), no instruction word (one after a determiner is
+-- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
+-- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
+-- create a same-level encounter:")
+function G:commentary(b, e, lead)
+  if b >= e or #self:quantities(b, e) > 0 or self:has_ref(b, b + 1, "aircraft") then return false end
+  for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
+    if not self:word(r.b, "@not_names") then return false end
+  end
+  local own = self:word(b, CM_OWN)
+  for x = b, e - 1 do
+    local t = self.t[x]
+    if self.noted[x] then return false end  -- (what squawk does not simulate: "- hold TOM6RT")
+    if t.kind == "word" then
+      local last = x == e - 1 or self.t[x + 1].kind == "punct"
+      if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
+          or self:word(x, "@correction")
+          or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
+        return false
+      end
+      -- (a word some rule starts an instruction with, before an aircraft, whether or not it starts one
+      -- here: "- hold TOM6RT", "- move the easyJet")
+      local verb = RULES_BY_WORD[t.text] and self:has_ref(self:word(x + 1, "the") and x + 2 or x + 1, x + 3, "aircraft")
+      if (verb or self:intent_at(x)) and not self:word(x - 1, CM_DETERMINERS) then return false end
+    end
+  end
+  return true
+end
+
 function G:in_reason(i)
   if not self.reason then
     -- reason[i]: the nearest of a reason word (or a purpose, G:purpose) and a sentence break before
     -- i is the reason word
     self.reason = {}
     local inside = false
+    -- true when an instruction word is said before k, outside a reason (asked only where an aside may open)
+    local function instructed(k)
+      for x = 1, k - 1 do
+        if not self.reason[x] and self:intent_at(x) then return true end
+      end
+      return false
+    end
+    local commas = 0          -- the commas up to k (self.apart: those that were a dash or a bracket)
+    local lead_end            -- the comma that ends a lead-in ("For the overtake case, ...")
     for k = 1, #self.t do
       self.reason[k] = inside
       local t = self.t[k]
-      if t.kind == "punct" and t.text ~= "," then
+      local start = k == 1 or (self.t[k - 1].kind == "punct" and self.t[k - 1].text ~= ",")
+      if t.kind == "punct" and t.text == "," then commas = commas + 1 end
+      if t.kind == "punct" and self:word(k - 1, CM_LABELS) and t.text == ":" then
+        -- ("descend to FL100, reason: lose the vertical overlap with TOM6RT": to the end of the sentence)
+        inside, self.reason[k - 1] = true, true
+      elseif t.kind == "punct" and t.text == "," and (self.apart or {})[commas] and instructed(k)
+          and self:commentary(k + 1, commentary_end(self, k + 1)) then
+        -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)")
+        inside = true
+      elseif t.kind == "punct" and t.text == "," and self:word(k + 1, CM_SUBJECTS) and instructed(k)
+          and self:commentary(k + 1, commentary_end(self, k + 1)) then
+        -- ("Fast-forward 20 minutes, we only care about the descent phase")
+        inside = true
+      elseif ((self:word(k, CM_WHILE) and self:word(k + 1, CM_OWN))
+          or (t.kind == "punct" and t.text == "," and self:word(k + 1, CM_OWN)
+              and self:word_in(k + 2, commentary_end(self, k + 1), CM_LATER)))
+          and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 and instructed(k) then
+        -- ("pause the sim while I reset the eye tracker", ", we'll put it back on the route later")
+        inside = true
+      elseif start and t.kind == "word" and (CM_LEADS[t.text] or CM_LABELS[t.text]) then
+        -- ("For the vertical test: NAX3412 climb ...", "To create a same-level encounter: SAS1410 climb
+        -- FL190", "For the overtake case, EZY45 speed 320": a lead-in before a colon, or a comma after
+        -- "for" or "to", with no aircraft, value or place, its "to" verb aside)
+        local e = k + 1
+        while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+        if not (self.t[e] and self.t[e].text == "," and CM_LEADS[t.text]) then e = commentary_end(self, k + 1) end
+        local lead = self.t[e] and (self.t[e].text == ":" or self.t[e].text == ",") and not self:has_ref(k, e, "aircraft")
+        if lead then
+          inside = self:commentary(k, e, true) or (t.text == "to" and self:commentary(k + 2, e, true))
+          lead_end = inside and e or nil
+        end
+      elseif k == lead_end then
+        inside = false
+      elseif t.kind == "punct" and t.text ~= "," then
         inside = false
       elseif self:purpose(k) then
         inside = true
@@ -1082,6 +1183,94 @@ function G:taken_back(s)
   end
 end
 
+-- "SAS1507 direct... no wait, heading 150", "route: TWEED, then GRICE... actually no, just TWEED at FL90",
+-- "climb FL200 and turn left heading 200... actually no, just the climb": a self-correction after punctuation
+-- (a run of lexicon.self_correction words holding a marker) that is no value for a value (self_corrections
+-- reads those) takes back what it follows. An instruction word cut off before it, with no value, is
+-- dropped ("and" before it too); an instruction word after it takes back the last instruction before it,
+-- from its instruction word ("direct TWEED... no, make it heading 200"). "just"/"only" after it says what
+-- stands: "the" and a noun of
+-- lexicon.self_correction.just_the keeps the commands of that kind (self.kept: G:translate drops the others);
+-- a name or value replaces the names and values said since the last instruction word ("just TWEED at
+-- FL90"); anything else after "just" but an instruction word is asked about. The words taken back are
+-- marked used and noted.
+local SC = lexicon.self_correction
+local SC_KEPT, SC_ONLY = {}, set_of(SC.only)
+for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
+function G:self_corrected()
+  local a = 2
+  while a <= #self.t do
+    local c, marked = a, false
+    if self.t[a].kind == "punct" then
+      while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]) do
+        -- ("no" straight before what it negates is no correction: "conflict detection only, no resolution")
+        local nx = self.t[c + 1]
+        marked = marked or (SC_MARKERS[self.t[c].text]
+          and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
+        c = c + 1
+      end
+    end
+    local p = a - 1  -- the last instruction word before the run
+    while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
+    if marked and c <= #self.t and p >= 1 then
+      local b = a
+      if p == a - 1 then
+        -- an instruction cut off: taken back, with the "and" that joined it
+        b = self:word(p - 1, "and") and p - 1 or p
+      end
+      if self:word(c, SC_ONLY) and not self:intent_at(c + 1) then
+        local kept = self:word(c + 1, "the") and SC_KEPT[self.t[c + 2] and self.t[c + 2].text or ""]
+        local e = c + 3
+        if self:word(e, "change instruction") then e = e + 1 end
+        -- the first name or value since the last instruction word, the start of what is said again
+        local q = p + 1
+        while q < b and not (self:has_ref(q, q + 1, "waypoint") or #self:quantities(q, q + 1) > 0) do q = q + 1 end
+        if kept and (e > #self.t or self.t[e].kind == "punct") then
+          self.kept = kept
+          self:mark_used(b, e)
+          for k = b, e - 1 do self.noted[k] = true end
+          a = e
+        elseif q < b and (self:has_ref(c + 1, c + 2, "waypoint")
+            or (self:quantities(c + 1, #self.t + 1)[1] or {}).b == c + 1) then
+          self:mark_used(q, c + 1)
+          for k = q, c do self.noted[k] = true end
+          local refs = {}
+          for _, r in ipairs(self.refs) do
+            if r.b < q or r.b > c then refs[#refs + 1] = r end
+          end
+          self.refs = refs
+          a = c + 1
+        else
+          local said = self:raw(c, math.min(e, #self.t + 1)):gsub(" ([,.;:])", "%1")
+          self:need(string.format("What stands after '%s'? Please say the instruction again in full.", said))
+          return
+        end
+      elseif b < a then
+        self:mark_used(b, c)
+        for k = b, c - 1 do self.noted[k] = true end
+        a = c
+      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c)
+          and not self:word_in(a, c, "and also then") then
+        -- another instruction said in its place ("direct TWEED... no, make it heading 200", "climb FL200,
+        -- no wait, descend FL90"): the last one before the run, from its instruction word, is taken back
+        -- ("climb FL200, sorry, and turn left": an instruction added, none taken back)
+        self:mark_used(p, c)
+        for k = p, c - 1 do self.noted[k] = true end
+        local refs = {}
+        for _, r in ipairs(self.refs) do
+          if r.b < p or r.b >= c then refs[#refs + 1] = r end
+        end
+        self.refs = refs
+        a = c
+      else
+        a = a + 1
+      end
+    else
+      a = a + 1
+    end
+  end
+end
+
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
@@ -1388,8 +1577,28 @@ function G:unknown_names()
   -- an aircraft named as a reference for another's value ("the same heading as AC02") or as the
   -- reason for an instruction ("to avoid a conflict between AC01 and AC02") is explained
   local compared = self:word_in(1, #self.t + 1, "@same_as @below @above @aircraft_context")
+  -- ("climb FL190 - TOM6RT as well", "same for TOM6RT", "and also TOM6RT": an aircraft added to the
+  -- instruction; ", we want TOM6RT lower": one given a direction of its own; never context)
+  local function added(r)
+    return self:word(r.e, "too also @up @down @faster_slower") or (self:word(r.e, "as") and self:word(r.e + 1, "well"))
+      or self:word(r.b - 1, "also likewise ditto") or (self:word(r.b - 1, "for") and self:word(r.b - 2, "same"))
+  end
+  -- ("Add an intruder for VIR9: DLH9KW A321 at ...", "We need a head-on for ICE204: spawn ICE205 ..."):
+  -- an aircraft after a word of commentary.lead_context in a lead-in before a colon, when an aircraft
+  -- is named after the colon, is other traffic
+  local function lead_context(r)
+    if not self:word(r.b - 1, CM_LEAD_CONTEXT) then return false end
+    local colon = r.e
+    while self.t[colon] and self.t[colon].kind == "punct" and self.t[colon].text == "'" do colon = colon + 1 end
+    while self.t[colon] and self.t[colon].kind ~= "punct" do colon = colon + 1 end
+    for k = r.b - 1, 1, -1 do
+      if self.t[k].kind == "punct" and self.t[k].text ~= "," then return false end
+    end
+    return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
+  end
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and (not r.exists or not (compared or self:in_reason(r.b))) and not r.false_start
+    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r)))
+        and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
       self.leftover = self:raw(r.b, r.e)
@@ -2057,6 +2266,30 @@ local function airline_values(text, fleet)
   end))
 end
 
+-- A dash standing alone (" - ", " -- ", an en or em dash; a bracket written_forms made one: "800 ft
+-- (testing reduced vertical)") sets what follows apart: it is read as a comma (the lexer drops dashes),
+-- and the ordinals of the commas dashes became are returned as a set (G:in_reason reads commentary after
+-- them). A comma between digits ("6,000") is no comma token and is not counted.
+local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
+local function set_apart(text)
+  if not text:find("%s%-") and not text:find("\xE2\x80[\x93\x94]") then return text, nil end
+  local out, marks, n, i = {}, {}, 0, 1
+  while i <= #text do
+    local dash
+    for _, pat in ipairs(DASHES) do dash = dash or text:match(pat, i) end
+    local c = text:sub(i, i)
+    if dash then
+      n = n + 1
+      marks[n] = true
+      out[#out + 1], i = " , ", i + #dash
+    else
+      if c == "," and not (text:sub(i - 1, i - 1):match("%d") and text:sub(i + 1, i + 1):match("%d")) then n = n + 1 end
+      out[#out + 1], i = c, i + 1
+    end
+  end
+  return table.concat(out), marks
+end
+
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
@@ -2078,10 +2311,11 @@ function M.translate(text, world)
       or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]mcre") or text:lower():find("%f[%a]random") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
-  local u = squawk.translate.utterance(types.join(text, TYPES.phrases),
-    world, NAMES)
+  local apart
+  text, apart = set_apart(types.join(text, TYPES.phrases))
+  local u = squawk.translate.utterance(text, world, NAMES)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
-    qcache = {}, taken = {}, noted = {}, triggers = {} }, G)
+    qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
   g:settle_callsigns()
   g:airline_types()
   g:airline_refs()
@@ -2097,6 +2331,7 @@ function M.translate(text, world)
     end
   end
   local note = g:not_simulated()
+  g:self_corrected()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()
@@ -2108,6 +2343,15 @@ function M.translate(text, world)
     end
   end
   if not g.ask then g:discretion_without_level() end
+  -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
+  if not g.ask and g.kept then
+    local kept = {}
+    for _, line in ipairs(g.out) do
+      if line:find("%f[%w]" .. g.kept .. " ") then kept[#kept + 1] = line end
+    end
+    if #kept == 0 then g.ask = "Which instruction stands after the correction? Please say it again in full." end
+    g.out = kept
+  end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end

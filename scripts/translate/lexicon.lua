@@ -218,7 +218,13 @@ return {
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
                                 "say", "again" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again" },
-                      after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" } },
+                      after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
+                      -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
+                      -- names the instructions said before it that stand (by the command they issued)
+                      only = { "just", "only" },
+                      just_the = { ALT = { "descent", "descend", "climb", "altitude", "level", "levels" },
+                                   HDG = { "turn", "heading", "vector" }, SPD = { "speed", "slowdown", "mach" },
+                                   DIRECT = { "direct", "directs" }, VS = { "rate" } } },
   -- the simulation itself, not an aircraft
   -- (an episode: one run of a learning environment)
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode" },
@@ -253,7 +259,32 @@ return {
   reason = { "because", "since", "cause", "due" },
   -- verbs of the experimenter's purpose after a comma (", we want it crossing ..."): a reason
   purpose_verbs = { "want", "need", "don't", "dont", "wanna" },
-  reason_after_so = { "that", "it", "they", "it's", "its", "we", "he", "she", "he's", "she's" },
+  reason_after_so = { "that", "it", "they", "it's", "its", "we", "he", "she", "he's", "she's", "the" },
+  -- asides set apart from a complete instruction (G:commentary; they account for no word): a span after a dash or in brackets,
+  -- or a clause after a comma opening with one of `subjects` ("- hard test of the turn model", ", we only
+  -- care about the descent phase"); a lead-in before a colon opening with one of `leads` ("For the
+  -- vertical test: ..."); what follows one of `labels` and a colon ("reason: lose the overlap with
+  -- TOM6RT"). A span holding one of `blocks` (it adds to, repeats or takes back an instruction) is asked
+  -- about, and so is one holding a negation or condition unless it opens with `own` (the experimenter's
+  -- own doing: "- I want to check the geometry before the conflict starts")
+  -- ("turn off trails, too cluttered": a degree word opens a remark too). After `own` and "while"
+  -- ("pause the sim while I reset the eye tracker") or in a clause of `own` with one of `later` ("heading
+  -- 150 for now, we'll put it back on the route later") the experimenter's own doing is set aside even
+  -- with instruction words, never with a value. Before a colon, an aircraft after one of `lead_context`
+  -- is other traffic when the request names its own aircraft after the colon ("Add an intruder for
+  -- VIR9: DLH9KW A321 at ...")
+  aside = { subjects = { "we", "i", "it", "he", "she", "they", "that", "this", "it's", "that's", "we're",
+                         "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too" },
+          own = { "we", "i", "we're", "we'll", "we'd", "i'm", "i'll", "i'd" },
+          while_words = { "while", "whilst" },
+          later = { "later", "afterwards", "afterward" },
+          lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },
+          leads = { "for", "to" },
+          labels = { "reason", "purpose", "rationale", "why", "aim", "goal", "note", "comment", "context" },
+          blocks = { "and", "then", "also", "same", "both", "either", "again", "correction", "disregard",
+                     "negative", "plus", "next" },
+          determiners = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my",
+                          "your", "s" } },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place

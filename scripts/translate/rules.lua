@@ -416,7 +416,10 @@ return function(intent, rule, words)
     local k = i + 1
     if g:word(k, "for of") and g:has_ref(k + 1, k + 2, "aircraft") then k = g:refs_in(k + 1, k + 2, "aircraft")[1].e end
     local t = g.t[k]
-    return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(k + 1, k + 2, "waypoint")
+    -- (names taken back by a self-correction are skipped: "route: TWEED, then GRICE... no, just TWEED")
+    local n = k + 1
+    while g.t[n] and g.u:used(n) and g.noted[n] do n = n + 1 end
+    return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(n, n + 1, "waypoint")
   end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }

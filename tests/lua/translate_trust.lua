@@ -1509,3 +1509,59 @@ do
       "CRE AFR7710 A319 LFML 270 5000 220")
   end
 end
+
+-- Experimenters' asides and self-corrections (R29, R25): a remark about the experiment after a dash, in
+-- brackets, after a comma with its own subject, a lead-in before a colon or after "reason:" is set
+-- aside when it holds no value, place, instruction word, negation or "also"; an aircraft it names is
+-- context. A self-correction takes back what it follows: a cut-off instruction, the names said again
+-- after "just", the kinds of command "just the ..." does not name; anything else is asked about.
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE NAX12 B738 60.1 11.0 090 FL120 280", "CRE ICE44 B752 60.3 12.0 270 FL90 290",
+      "CRE FIN7 A320 60.0 11.5 180 FL200 300", "DEFWPT OSLOA 60.2 11.2", "DEFWPT OSLOB 60.4 11.4" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
+  -- remarks after a dash, in brackets, after a comma
+  check_eq(ex("NAX12 descend FL80 - we'd like it under ICE44's band for this run"), "ALT NAX12 FL80")
+  check_eq(ex("FIN7 right 40 degrees - stress test of the bank model"), "HDG FIN7 220 RIGHT")
+  check_eq(ex("Move FIN7 to 60.05 11.6 - it began slightly too far east"), "MOVE FIN7 60.05 11.6")
+  check_eq(ex("vertical half-height 900 ft (sensitivity study for the thesis)"), "ZONEDH 900")
+  check_eq(ex("Fast-forward 5 minutes, we only need the cruise part"), "FF 300")
+  check_eq(ex("skip ahead 2 minutes so the tracks stabilise"), "FF 120")
+  check_eq(ex("Freeze the sim - I need to look at the geometry before the merge"), "HOLD")
+  check_eq(ex("hide the trails, too messy"), "TRAIL OFF")
+  -- lead-ins before a colon, and a reason given with its label
+  check_eq(ex("For the level-bust test: FIN7 descend FL150"), "ALT FIN7 FL150")
+  check_eq(ex("To set up a crossing encounter: NAX12 heading 180"), "HDG NAX12 180")
+  check_eq(ex("NAX12 - climb to FL140, reason: clear the overlap with ICE44"), "ALT NAX12 FL140")
+  check_eq(ex("Add an intruder for ICE44: TST9 A320 at 60.2 12.4 heading 090 FL90 280 kts"),
+    "CRE TST9 A320 60.2 12.4 90 FL90 280")
+  -- an aside that adds, negates or names a value, a place or another instruction is asked about
+  asked("NAX12 climb FL200 - ICE44 as well")
+  asked("NAX12 climb FL200, same for ICE44")
+  asked("NAX12 climb FL200 - and ICE44 descend")
+  asked("NAX12 climb FL200 (not ICE44)")
+  asked("NAX12 climb FL200 - don't let it level off")
+  asked("NAX12 climb FL200 (via OSLOA)")
+  asked("NAX12 climb FL200 - when ICE44 passes")
+  asked("reason: ICE44, NAX12 descend FL100")
+  asked("NAX12 climb FL200 - we want ICE44 lower")
+  asked("NAX12 climb FL200, we want ICE44 down")
+  asked("NAX12 climb FL200 - hold ICE44")
+  -- self-corrections
+  check_eq(ex("FIN7 direct... no wait, heading 200 for now, we'll send it back to the route later"), "HDG FIN7 200")
+  check_eq(ex("NAX12 direct... sorry, turn left heading 010 and climb FL150"), "HDG NAX12 10 LEFT ; ALT NAX12 FL150")
+  check_eq(ex("NAX12 route: OSLOA, then OSLOB... no wait, only OSLOA at FL130"), "ADDWPT NAX12 OSLOA FL130")
+  check_eq(ex("FIN7 descend FL150 and turn right heading 250... actually no, just the descent"), "ALT FIN7 FL150")
+  check_eq(ex("FIN7 descend FL150 and turn right heading 250, sorry, only the turn"), "HDG FIN7 250 RIGHT")
+  check_eq(ex("FIN7 descend FL150 and direct... no, just the descent"), "ALT FIN7 FL150")
+  asked("FIN7 descend FL150 and turn right heading 250... actually no, just the first one")
+  asked("FIN7 descend FL150 and turn right heading 250, sorry, only the speed")
+  check_eq(ex("FIN7 turn left... I mean right heading 250"), "HDG FIN7 250 RIGHT")
+  check_eq(ex("NAX12 direct OSLOA... no, make it heading 030"), "HDG NAX12 30")
+  check_eq(ex("NAX12 climb FL150, no wait, descend FL100"), "ALT NAX12 FL100")
+  check_eq(ex("NAX12 climb FL150, sorry, and turn left heading 030"), "ALT NAX12 FL150 ; HDG NAX12 30 LEFT")
+  check_eq(ex("For the overtake case, FIN7 speed 320"), "SPD FIN7 320")
+end
