@@ -258,8 +258,8 @@ return function(H, f, compass)
     if not id or not actype then return self:need("What callsign and aircraft type should the intruder have?") end
     -- ("intruder on the Speedbird, I2, A320": the one aircraft of the airline said, the new one named after it)
     for i = s.b, s.e - 1 do
-      local icao, e = self:airline_at(i)
-      local fits = not target and icao and self:word(i - 1, "the") and self:airline_fleet(icao) or {}
+      local icao, e, codes = self:airline_at(i)
+      local fits = not target and icao and self:word(i - 1, "the") and self:airline_fleet(icao, codes) or {}
       if #fits == 1 then
         target = fits[1]
         self:explain(i, e)
