@@ -614,9 +614,13 @@ return function(H, f, compass)
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words"))
           and (not proper_only or t.raw:match("^%u%l") ~= nil) then
-        local nx = self.t[i + 1]
+        local nx, nx2 = self.t[i + 1], self.t[i + 2]
         local phrases = { { t.text, i + 1 } }
         if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
+        -- (three words: "Charles de Gaulle")
+        if nx and nx2 and i + 2 < e and nx.kind == "word" and nx2.kind == "word" then
+          table.insert(phrases, 1, { t.text .. " " .. nx.text .. " " .. nx2.text, i + 3 })
+        end
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")

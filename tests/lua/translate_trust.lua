@@ -1176,6 +1176,30 @@ do
   end
 end
 
+-- Places by name where an aircraft is sent, put or routed (sentences written here, R25/R29's classes):
+-- a waypoint added with the level it is crossed at, an airport's name of three words, "going to" and a
+-- route's "land it at" an airport as the destination, "put X over" a navaid's nav.dat name
+do
+  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
+  if not ok then
+    print("skipped: place names need BlueSky's navdata at ../shared/bluesky/navdata")
+  else
+    for _, line in ipairs({ "CRE SWR38F A320 47.8 8.4 090 FL250 280", "CRE AFR12 A320 48.9 2.6 180 FL200 260" }) do
+      check(nav:exec(line))
+    end
+    local function pt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+    check_eq(pt("SWR38F add TRA at 9000 ft"), "ADDWPT SWR38F TRA 9000")
+    check_eq(pt("SWR38F, add TRA at flight level one eight zero, 250 knots"), "ADDWPT SWR38F TRA FL180 250")
+    check_eq(pt("AFR12 origin Charles de Gaulle, destination Orly"), "ORIG AFR12 LFPG ; DEST AFR12 LFPO")
+    check_eq(pt("create AFR9 A320 at 48.5 2.5 heading 090 FL100 250 knots going to Orly"),
+      "CRE AFR9 A320 48.5 2.5 90 FL100 250 ; DEST AFR9 LFPO")
+    check_eq(pt("route SWR38F via TRA and land it at Zurich"), "ADDWPT SWR38F TRA ; DEST SWR38F LSZH")
+    check_eq(pt("put SWR38F over Trasadingen at FL200 heading 180"), "MOVE SWR38F TRA FL200 180")
+    -- a landing said alone is a landing clearance, not simulated: asked about, never a destination
+    check(pt("SWR38F land at Zurich"):find("^ASK") ~= nil)
+  end
+end
+
 -- Brands and type families (names.lua's brands, types.nicknames): "the Transavia" is the one aircraft
 -- flying as TRA or TVF, a callsign said with the brand's name is its aircraft of those characters,
 -- "the Citation" the one Cessna business jet flying
