@@ -578,7 +578,10 @@ return function(H, f, compass)
   -- Near: within lexicon.navaid_range_nm of the aircraft `near`; anywhere, a small airfield is no
   -- airport a name alone means ("Amsterdam" is no South African strip). A city said in capitals is
   -- its large airport when no airport bears the name ("Frankfurt" -> EDDF "Frankfurt Main").
-  function m:airport_by_name(b, e, near)
+  -- `meant` (an airport is meant: a destination, an origin): a city said in capitals that names
+  -- navaids is the one large (else medium) airport beside them ("destination Toulouse" -> LFBO
+  -- "BLAGNAC" beside the TOULOUSE VOR; sim:airports_beside_navaids); several are asked about.
+  function m:airport_by_name(b, e, near, meant)
     local named, city, class = self.world.airports_named, self.world.airports_of_city, self.world.airport_class
     if not named then return nil end
     local function within(list)
@@ -596,7 +599,10 @@ return function(H, f, compass)
       local id = self:airport_named_in(b, e, within(named), placed, false, near ~= nil)
       if id then return id end
     end
-    return city and self:airport_named_in(b, e, within(city), false, true) or nil
+    local id = city and self:airport_named_in(b, e, within(city), false, true) or nil
+    local beside = self.world.airports_beside_navaids
+    if id or not meant or not beside then return id end
+    return self:airport_named_in(b, e, within(beside), false, true)
   end
 
   -- A phrase with a capitalised word beside it ("Point Reyes", "Amsterdam Schiphol") is part of a
@@ -863,7 +869,7 @@ return function(H, f, compass)
     if to + 1 < s.e and #self:refs_in(to + 1, s.e, "aircraft") == 0 and #self:quantities(to + 1, s.e) == 0
         and not self:word_in(to + 1, s.e, "@route_nouns") then
       local a = self:state(id)
-      local airport = (a and self:airport_by_name(to + 1, s.e, a)) or self:airport_by_name(to + 1, s.e)
+      local airport = (a and self:airport_by_name(to + 1, s.e, a, true)) or self:airport_by_name(to + 1, s.e)
       if airport then return self:emit("DEST " .. id .. " " .. airport) end
       return self:need(string.format("Which airport is '%s' (the destination of %s)? Please give its ICAO code.",
         self:raw(to + 1, s.e), id))
@@ -1138,7 +1144,7 @@ return function(H, f, compass)
     local a = self:state(id)
     -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant)
     local spelled = spelled_airport(self, s)
-    local near = spelled or (a and self:airport_by_name(s.b, s.e, a))
+    local near = spelled or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
     -- an airport found by name only far from the aircraft ("London" from over the North Sea is CYXU, in
     -- Canada: the navdata names Heathrow HEATHROW; "Athens" from over Greece is KAHN, Georgia, ATHENS BEN
