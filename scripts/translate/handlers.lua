@@ -373,6 +373,16 @@ end
 -- "then") or straight after it ("Lufthansa, DLH4AX, ..." names DLH4AX).
 function m:addressed_alone(b, e)
   if not L.callsign_confirm.airline_alone_addressee or not self.t[b].raw:match("%u") then return false end
+  local function clause_break(k)
+    return self.t[k].kind == "punct" or self:word(k, "and @then_words")
+  end
+  if b > 1 and not clause_break(b - 1) then return false end
+  if self:word(self:skip_fillers(e, false), "@correction") then return false end
+  local k = e
+  while self.t[k] and not clause_break(k) do k = k + 1 end
+  if self:has_ref(e, k, "aircraft") or self:has_ref(self:skip_fillers(e, false), self:skip_fillers(e, false) + 1, "aircraft") then
+    return false
+  end
   if self.several == nil then
     -- kinds of instruction said ("maintain" is a climb's, a speed's or a heading's), aircraft named
     -- (callsigns, and airlines written with a capital at a clause's start)
@@ -390,18 +400,7 @@ function m:addressed_alone(b, e)
     end
     self.several = n >= 2 or named >= 2
   end
-  if not self.several then return false end
-  local function clause_break(k)
-    return self.t[k].kind == "punct" or self:word(k, "and @then_words")
-  end
-  if b > 1 and not clause_break(b - 1) then return false end
-  if self:word(self:skip_fillers(e, false), "@correction") then return false end
-  local k = e
-  while self.t[k] and not clause_break(k) do k = k + 1 end
-  if self:has_ref(e, k, "aircraft") or self:has_ref(self:skip_fillers(e, false), self:skip_fillers(e, false) + 1, "aircraft") then
-    return false
-  end
-  return true
+  return self.several
 end
 
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
