@@ -222,6 +222,34 @@ std::vector<const NavPoint*> NavDb::airports_of_city(std::string_view city) cons
   return out;
 }
 
+std::vector<const NavPoint*> NavDb::airports_beside_navaids(std::string_view name) const {
+  std::vector<const NavPoint*> out;
+  const std::string key = name_key(name);
+  if (key.empty()) return out;
+  // airports of class `cls` within `nm` of a navaid called `name`, each once
+  auto within = [&](const char* cls, double nm) {
+    std::vector<const NavPoint*> found;
+    for (size_t w = 0; w < navaid_names_.size() && w < waypoints_.size(); ++w) {
+      if (navaid_names_[w] != key) continue;
+      for (size_t i = 0; i < airports_.size() && i < airport_classes_.size(); ++i) {
+        const NavPoint& a = airports_[i];
+        if (airport_classes_[i] == cls &&
+            geo::kwikdist_nm(a.lat, a.lon, waypoints_[w].lat, waypoints_[w].lon) <= nm &&
+            std::find(found.begin(), found.end(), &a) == found.end())
+          found.push_back(&a);
+      }
+    }
+    return found;
+  };
+  out = within("LARGE", kBesideNavaidNm);
+  if (!out.empty()) {
+    for (const NavPoint* a : within("LARGE", kCityNm))
+      if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
+    return out;
+  }
+  return within("MEDIUM", kBesideNavaidNm);
+}
+
 std::string NavDb::airport_class(std::string_view id) const {
   for (size_t i = 0; i < airports_.size() && i < airport_classes_.size(); ++i)
     if (airports_[i].id == id) return airport_classes_[i];

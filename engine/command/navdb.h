@@ -54,6 +54,14 @@ class NavDb {
   // Large airports (airports.dat's class) whose name starts with the words of `city` and goes on
   // ("Frankfurt" -> EDDF "FRANKFURT MAIN", not the medium EDFH "FRANKFURT HAHN").
   std::vector<const NavPoint*> airports_of_city(std::string_view city) const;
+  // The large airports, else the medium ones, within kBesideNavaidNm of a navaid called `name`
+  // (navaids_named's names, anywhere): the airport of a city people name by its city where the
+  // navdata names the airport otherwise ("Toulouse" -> LFBO "BLAGNAC", beside the TOULOUSE VOR).
+  // Beside a large one, the other large airports within kCityNm of the navaid come too: a city
+  // of several ("London": EGLL beside the LONDON VOR, EGKK, EGLC) is no one airport.
+  std::vector<const NavPoint*> airports_beside_navaids(std::string_view name) const;
+  static constexpr double kBesideNavaidNm = 10.0;
+  static constexpr double kCityNm = 30.0;
   // airports.dat's class of airport `id`, upper case ("LARGE", "MEDIUM", "SMALL"), or "" when
   // unknown.
   std::string airport_class(std::string_view id) const;

@@ -10,6 +10,8 @@
 //                           lat, lon [deg] when given ({} without navdata)
 //   sim:airports_of_city(name [, lat, lon, within_nm]) -> { "EDDF", ... }  large airports whose
 //                           name starts with the words of `name` and goes on ("Frankfurt")
+//   sim:airports_beside_navaids(name [, lat, lon, within_nm]) -> { "LFBO", ... }  the large (else
+//                           medium) airports within 10 nm of a navaid called `name` ("Toulouse")
 //   sim:airport_class(id) -> "LARGE" | "MEDIUM" | "SMALL" | ""  airports.dat's class
 //   sim:navaids_named(name, lat, lon, within_nm [, types]) -> { "SFO", ... }  idents of the navaids
 //                           called `name` within within_nm of lat, lon [deg], nearest first; of
@@ -154,8 +156,10 @@ int l_exec(lua_State* L) {
   return push_outcome(L, s->exec(arg_string(L, 2, "line")));
 }
 
-// airports_named (city false) or airports_of_city (city true): ids, near lat/lon when given
-int push_airports(lua_State* L, bool city) {
+enum class AirportsBy { kName, kCity, kNavaid };
+
+// airports_named, airports_of_city or airports_beside_navaids (by): ids, near lat/lon when given
+int push_airports(lua_State* L, AirportsBy by) {
   command::Stack* s = self(L);
   const std::string name = arg_string(L, 2, "name");
   const bool near = !lua_isnoneornil(L, 3);
@@ -165,8 +169,10 @@ int push_airports(lua_State* L, bool city) {
   lua_newtable(L);
   if (!s->navdb()) return 1;
   int k = 0;
-  for (const command::NavPoint* a :
-       city ? s->navdb()->airports_of_city(name) : s->navdb()->airports_named(name)) {
+  const command::NavDb& db = *s->navdb();
+  for (const command::NavPoint* a : by == AirportsBy::kCity     ? db.airports_of_city(name)
+                                    : by == AirportsBy::kNavaid ? db.airports_beside_navaids(name)
+                                                                : db.airports_named(name)) {
     if (near && geo::kwikdist_nm(lat, lon, a->lat, a->lon) > within) continue;
     lua_pushstring(L, a->id.c_str());
     lua_rawseti(L, -2, ++k);
@@ -175,10 +181,13 @@ int push_airports(lua_State* L, bool city) {
 }
 
 int l_airports_named(lua_State* L) {
-  return push_airports(L, false);
+  return push_airports(L, AirportsBy::kName);
 }
 int l_airports_of_city(lua_State* L) {
-  return push_airports(L, true);
+  return push_airports(L, AirportsBy::kCity);
+}
+int l_airports_beside_navaids(lua_State* L) {
+  return push_airports(L, AirportsBy::kNavaid);
 }
 
 int l_airport_class(lua_State* L) {
@@ -515,6 +524,7 @@ void bind_sim(lua_State* L) {
       {"check", guarded<l_check>},
       {"airports_named", guarded<l_airports_named>},
       {"airports_of_city", guarded<l_airports_of_city>},
+      {"airports_beside_navaids", guarded<l_airports_beside_navaids>},
       {"airport_class", guarded<l_airport_class>},
       {"navaids_named", guarded<l_navaids_named>},
       {"airports_coded", guarded<l_airports_coded>},

@@ -1078,8 +1078,11 @@ function G:segments(b, e)
       -- the previous instruction's ("EZY45 turn left 300 and AFR1234 descend")
       local start = tr.pos
       if last then
-        for _, r in ipairs(self:refs_in(last.trig + 1, tr.pos, "aircraft")) do
-          if self:skip_fillers(r.e) == tr.pos then start = r.b end
+        -- "speed 300, DLH9CE, left heading 200": a turn's direction said straight before its
+        -- instruction word is the turn's, and so is the aircraft named before that
+        if this.cmd == "HDG" and self:word(start - 1, "@left @right") and start - 1 > last.trig then start = start - 1 end
+        for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
+          if self:skip_fillers(r.e) == start then start = r.b end
         end
         -- "..., when passing flight level 130 reduce speed": the condition belongs to what follows it
         local cond = self:find_word(last.trig + 1, start, "@level_condition")

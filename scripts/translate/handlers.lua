@@ -250,7 +250,8 @@ end
 function m:as_context(i)
   if self:word(i - 1, "bring get put send have let make tell ask") then return false end
   for k = i - 1, math.max(1, i - 3), -1 do
-    if self:intent_at(k) then return false end
+    -- (nor across a sentence's end: "OK, conflict time. Jetairfly climb FL310")
+    if self:intent_at(k) or (self.t[k].kind == "punct" and self.t[k].text ~= ",") then return false end
     if self:word(k, "@aircraft_context") then return true end
   end
   return false
@@ -268,8 +269,8 @@ end
 -- ("the Ryanair" with no RYR aircraft).
 function m:airline_only(s)
   for i = s.b, s.e - 1 do
-    local icao, e = self:airline_at(i)
-    local fits = icao and self:airline_fleet(icao) or {}
+    local icao, e, codes = self:airline_at(i)
+    local fits = icao and self:airline_fleet(icao, codes) or {}
     if #fits > 1 then
       return self:need(string.format("Which %s: %s?", self:raw(i, e), table.concat(fits, " or ")))
     end
@@ -280,20 +281,26 @@ function m:airline_only(s)
 end
 
 -- Airline names (telephony and translate/names.lua's common names, up to
--- three words) -> ICAO prefix.
-local AIRLINE_NAMES
+-- three words) -> ICAO prefix; brand names -> {ICAO prefixes}; the ICAO prefix a brand's name names ->
+-- {the brand's prefixes} (TRA -> {TRA, TVF}: a callsign heard with "Transavia" is of either).
+local AIRLINE_NAMES, BRANDS, BRAND_OF
 local function airline_names()
-  if AIRLINE_NAMES then return AIRLINE_NAMES end
-  AIRLINE_NAMES = {}
+  if AIRLINE_NAMES then return AIRLINE_NAMES, BRANDS, BRAND_OF end
+  AIRLINE_NAMES, BRANDS, BRAND_OF = {}, {}, {}
   local names = require("translate.names")
   for _, list in ipairs({ names.airlines, names.common }) do
     for _, a in ipairs(list) do AIRLINE_NAMES[a[1]] = a[2] end
   end
-  return AIRLINE_NAMES
+  for _, b in ipairs(names.brands or {}) do
+    BRANDS[b[1]] = { table.unpack(b, 2) }
+    if AIRLINE_NAMES[b[1]] then BRAND_OF[AIRLINE_NAMES[b[1]]] = BRANDS[b[1]] end
+  end
+  return AIRLINE_NAMES, BRANDS, BRAND_OF
 end
 
 -- The airline named by the words at i (longest name first; a designator
--- typed in capitals, "the DLH", too): ICAO prefix, first token after it.
+-- typed in capitals, "the DLH", too): ICAO prefix, first token after it, and the ICAO prefixes of
+-- the brand the name is (names.lua's brands; nil for one airline).
 function m:airline_at(i)
   local t = self.t[i]
   if not t or t.kind ~= "word" then return nil end
@@ -303,8 +310,9 @@ function m:airline_at(i)
     words[#words + 1] = self.t[k].text
   end
   for n = #words, 1, -1 do
-    local icao = airline_names()[table.concat(words, " ", 1, n)]
-    if icao then return icao, i + n end
+    local said = table.concat(words, " ", 1, n)
+    local icao = airline_names()[said]
+    if icao then return icao, i + n, select(2, airline_names())[said] end
   end
   if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
   return nil
@@ -332,11 +340,14 @@ function m:airline_said_alone(s)
   end
 end
 
--- The flying aircraft of an airline (callsign = prefix, then a digit).
-function m:airline_fleet(icao)
+-- The flying aircraft of an airline (callsign = prefix, then a digit); `codes`, the prefixes of a
+-- brand (airline_at's third value), widens it to every airline flying under the brand's name.
+function m:airline_fleet(icao, codes)
   local fits = {}
   for _, a in ipairs(self.fleet) do
-    if a.id:upper():sub(1, #icao) == icao and a.id:sub(#icao + 1, #icao + 1):match("%d") then fits[#fits + 1] = a.id end
+    for _, c in ipairs(codes or { icao }) do
+      if a.id:upper():sub(1, #c) == c and a.id:sub(#c + 1, #c + 1):match("%d") then fits[#fits + 1] = a.id end
+    end
   end
   return fits
 end
@@ -350,6 +361,46 @@ function m:insert_ref(fits, b, e, by)
   while self.refs[k] and self.refs[k].b < b do k = k + 1 end
   table.insert(self.refs, k, { kind = "aircraft", name = fits[1], b = b, e = e, exists = true, [by] = true })
   return e
+end
+
+-- True when the airline named over tokens b..e-1 without "the" is a clause's addressee
+-- (lexicon.callsign_confirm.airline_alone_addressee): the request gives more than one kind of
+-- instruction or names more than one aircraft ("Ryanair turn left heading 100 and climb FL320",
+-- "easyJet 45 heading 180, Luxair heading 270"; one instruction to an airline alone, "Lufthansa,
+-- climb FL280", is a callsign cut short and asked about); the airline opens the utterance or a clause (after punctuation, "and" or
+-- "then"), is written with a capital ("easy" or "delta" in lower case are words), is said with no
+-- correction after it, and no callsign is said in its clause (up to the next punctuation, "and" or
+-- "then") or straight after it ("Lufthansa, DLH4AX, ..." names DLH4AX).
+function m:addressed_alone(b, e)
+  if not L.callsign_confirm.airline_alone_addressee or not self.t[b].raw:match("%u") then return false end
+  local function clause_break(k)
+    return self.t[k].kind == "punct" or self:word(k, "and @then_words")
+  end
+  if b > 1 and not clause_break(b - 1) then return false end
+  if self:word(self:skip_fillers(e, false), "@correction") then return false end
+  local k = e
+  while self.t[k] and not clause_break(k) do k = k + 1 end
+  if self:has_ref(e, k, "aircraft") or self:has_ref(self:skip_fillers(e, false), self:skip_fillers(e, false) + 1, "aircraft") then
+    return false
+  end
+  if self.several == nil then
+    -- kinds of instruction said ("maintain" is a climb's, a speed's or a heading's), aircraft named
+    -- (callsigns, and airlines written with a capital at a clause's start)
+    local kinds, n, named = {}, 0, 0
+    for i = 1, #self.t do
+      local intent = self:intent_at(i)
+      if intent and intent ~= "maintain" and not kinds[intent] and not self:in_reason(i) then
+        kinds[intent], n = true, n + 1
+      end
+      local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
+      if starts and self:airline_at(i) and self.t[i].raw:match("%u") then named = named + 1 end
+    end
+    for _, r in ipairs(self.refs) do
+      if r.kind == "aircraft" and not self:in_reason(r.b) then named = named + 1 end
+    end
+    self.several = n >= 2 or named >= 2
+  end
+  return self.several
 end
 
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
@@ -378,17 +429,17 @@ function m:airline_refs()
   if not L.callsign_confirm.airline_alone then return end
   local i = 1
   while i <= #self.t do
-    local icao, e = self:airline_at(i)
+    local icao, e, codes = self:airline_at(i)
     local nxt = self.t[e]
     local prev = self.t[i - 1]
-    local ok = icao and not inside[i] and not inside[e - 1]
-        and prev and prev.kind == "word" and prev.text == "the"
+    local the = prev and prev.kind == "word" and prev.text == "the"
         and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
           or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
+    local ok = icao and not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e))
         and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
           or self:word(e, "heavy super")))
         and not self:new_aircraft_follows(e - 1)
-    local fits = ok and self:airline_fleet(icao) or {}
+    local fits = ok and self:airline_fleet(icao, codes) or {}
     -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
     -- name no airline flying, "the ILS", are no airline)
     if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
@@ -459,17 +510,23 @@ function m:type_refs()
   local i = 1
   while i <= #self.t do
     local prev, t = self.t[i - 1], self.t[i]
-    local set, e
+    local set, e, nick
     if prev and prev.kind == "word" and prev.text == "the" and t.kind == "word" then
       for _, r in ipairs(self.refs) do
         if r.kind == "type" and r.b == i then set, e = { [r.name] = true }, r.e end
       end
       if not set and makers()[t.text] then set, e = makers()[t.text], i + 1 end
+      -- ("the Citation": a family's name, types.nicknames)
+      nick = not set and require("translate.types").nicknames[t.text]
+      if nick then set, e = {}, i + 1 end
     end
     local fits = {}
     if set and not self:word(i - 2, "@airline_context @aircraft_context @below @above") then
       for _, a in ipairs(self.fleet) do
-        if a.type and set[a.type:upper()] then fits[#fits + 1] = a.id end
+        local ty = a.type and a.type:upper()
+        local of_nick = false
+        for _, p in ipairs(ty and nick or {}) do of_nick = of_nick or ty:match(p) ~= nil end
+        if ty and (set[ty] or of_nick) then fits[#fits + 1] = a.id end
       end
     end
     i = self:insert_ref(fits, i, e, "by_type")
@@ -546,13 +603,20 @@ function m:airline_and_digits_match(heard, name)
   local a, d, rest = airline_digits(heard)
   if a == "" or d == "" or self:letters_conflict(heard, name) then return false end
   if self:strict_callsigns() and rest ~= select(3, airline_digits(name)) then return false end
+  -- (an airline of the heard one's brand is that airline: "Transavia 33KP" is TVF33KP, names.lua's brands)
+  local brand = select(3, airline_names())[a]
+  local function of(a2)
+    if a2 == a then return true end
+    for _, c in ipairs(brand or {}) do if c == a2 then return true end end
+    return false
+  end
   local n = 0
   for _, ac in ipairs(self.fleet) do
     local a2, d2 = airline_digits(ac.id)
-    if a2 == a and d2 == d then n = n + 1 end
+    if of(a2) and d2 == d then n = n + 1 end
   end
   local a3, d3 = airline_digits(name)
-  return n == 1 and a3 == a and d3 == d
+  return n == 1 and of(a3) and d3 == d
 end
 
 -- True when letters heard after the digits do not start the aircraft's

@@ -297,8 +297,8 @@ return function(H, f, compass)
     if not id or not actype then return self:need("What callsign and aircraft type should the intruder have?") end
     -- ("intruder on the Speedbird, I2, A320": the one aircraft of the airline said, the new one named after it)
     for i = s.b, s.e - 1 do
-      local icao, e = self:airline_at(i)
-      local fits = not target and icao and self:word(i - 1, "the") and self:airline_fleet(icao) or {}
+      local icao, e, codes = self:airline_at(i)
+      local fits = not target and icao and self:word(i - 1, "the") and self:airline_fleet(icao, codes) or {}
       if #fits == 1 then
         target = fits[1]
         self:explain(i, e)
@@ -618,7 +618,10 @@ return function(H, f, compass)
   -- Near: within lexicon.navaid_range_nm of the aircraft `near`; anywhere, a small airfield is no
   -- airport a name alone means ("Amsterdam" is no South African strip). A city said in capitals is
   -- its large airport when no airport bears the name ("Frankfurt" -> EDDF "Frankfurt Main").
-  function m:airport_by_name(b, e, near)
+  -- `meant` (an airport is meant: a destination, an origin): a city said in capitals that names
+  -- navaids is the one large (else medium) airport beside them ("destination Toulouse" -> LFBO
+  -- "BLAGNAC" beside the TOULOUSE VOR; sim:airports_beside_navaids); several are asked about.
+  function m:airport_by_name(b, e, near, meant)
     local named, city, class = self.world.airports_named, self.world.airports_of_city, self.world.airport_class
     if not named then return nil end
     local function within(list)
@@ -636,7 +639,10 @@ return function(H, f, compass)
       local id = self:airport_named_in(b, e, within(named), placed, false, near ~= nil)
       if id then return id end
     end
-    return city and self:airport_named_in(b, e, within(city), false, true) or nil
+    local id = city and self:airport_named_in(b, e, within(city), false, true) or nil
+    local beside = self.world.airports_beside_navaids
+    if id or not meant or not beside then return id end
+    return self:airport_named_in(b, e, within(beside), false, true)
   end
 
   -- A phrase with a capitalised word beside it ("Point Reyes", "Amsterdam Schiphol") is part of a
@@ -654,9 +660,13 @@ return function(H, f, compass)
       if not self.u:used(i) and t.kind == "word" and t.alpha and #t.text >= 4 and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and (not placed or self:word(i - 1, "@place_words"))
           and (not proper_only or t.raw:match("^%u%l") ~= nil) then
-        local nx = self.t[i + 1]
+        local nx, nx2 = self.t[i + 1], self.t[i + 2]
         local phrases = { { t.text, i + 1 } }
         if nx and i + 1 < e and nx.kind == "word" then table.insert(phrases, 1, { t.text .. " " .. nx.text, i + 2 }) end
+        -- (three words: "Charles de Gaulle")
+        if nx and nx2 and i + 2 < e and nx.kind == "word" and nx2.kind == "word" then
+          table.insert(phrases, 1, { t.text .. " " .. nx.text .. " " .. nx2.text, i + 3 })
+        end
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
@@ -899,7 +909,7 @@ return function(H, f, compass)
     if to + 1 < s.e and #self:refs_in(to + 1, s.e, "aircraft") == 0 and #self:quantities(to + 1, s.e) == 0
         and not self:word_in(to + 1, s.e, "@route_nouns") then
       local a = self:state(id)
-      local airport = (a and self:airport_by_name(to + 1, s.e, a)) or self:airport_by_name(to + 1, s.e)
+      local airport = (a and self:airport_by_name(to + 1, s.e, a, true)) or self:airport_by_name(to + 1, s.e)
       if airport then return self:emit("DEST " .. id .. " " .. airport) end
       return self:need(string.format("Which airport is '%s' (the destination of %s)? Please give its ICAO code.",
         self:raw(to + 1, s.e), id))
@@ -1237,7 +1247,7 @@ return function(H, f, compass)
     local a = self:state(id)
     -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant)
     local spelled = spelled_airport(self, s)
-    local near = spelled or (a and self:airport_by_name(s.b, s.e, a))
+    local near = spelled or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
     -- an airport found by name only far from the aircraft ("London" from over the North Sea is CYXU, in
     -- Canada: the navdata names Heathrow HEATHROW; "Athens" from over Greece is KAHN, Georgia, ATHENS BEN

@@ -326,7 +326,10 @@ return {
   -- least this well (similarity 0-1)
   -- airline_alone: "the Ryanair" (an airline after "the", no flight number) names the one aircraft of that
   -- airline flying; with two or more, or none, squawk asks
-  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true, alone = true, airline_alone = true },
+  -- airline_alone_addressee: so does an airline said alone, capitalised, as a clause's addressee
+  -- ("Lufthansa, mach .80") with no callsign in its clause
+  callsign_confirm = { airline = 0.5, digits = 0.6, strict = true, alone = true, airline_alone = true,
+    airline_alone_addressee = true },
   -- a spoken waypoint name matched to a known one at least this well (0-1)
   -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
   waypoint_confirm = 1.0,

@@ -242,6 +242,9 @@ function M.world(sim, waypoints)
   return { aircraft = aircraft, waypoints = waypoints or {},
            airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
            airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
+           airports_beside_navaids = function(name, lat, lon, nm)
+             return sim:airports_beside_navaids(name, lat, lon, nm)
+           end,
            airport_class = function(id) return sim:airport_class(id) end,
            navaids_named = function(name, lat, lon, nm, types) return sim:navaids_named(name, lat, lon, nm, types) end,
            airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end,

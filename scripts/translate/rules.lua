@@ -440,13 +440,17 @@ return function(intent, rule, words)
     while g.t[k] and (g.t[k].kind == "punct" or g:word(k, "it")) do k = k + 1 end
     return created and g:has_ref(k, k + 1, "waypoint")
   end }
-  -- "CFG4RK add NORKU, dest Bremen": a waypoint, a clause of its own, added for an aircraft that flies
+  -- "CFG4RK add NORKU, dest Bremen": a waypoint, a clause of its own, added for an aircraft that flies;
+  -- "WZZ1PM add VALA at 9000 ft", "add BENOT at flight level 180, 250 knots": with the level it is
+  -- crossed at ("at" and an altitude straight after it)
   rule { "add append", "addwpt", when = function(g, i)
     local flying = false
     for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do flying = flying or r.exists end
     local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
     local nx = r and g.t[r.e]
-    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= "."))
+    local q = r and g:word(r.e, "at") and g:quantities(r.e + 1, #g.t + 1)[1]
+    local level = q and q.b == r.e + 1 and q.kind == "alt"
+    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
@@ -547,12 +551,28 @@ return function(intent, rule, words)
   rule { "going", "dest", next = "to", prev = { 1, "is it's are" },
          when = function(g, i) return not g:intent_at(i + 2) end }
   rule { "bound", "dest", next = "for", prev = { 1, "is it's are" } }
-  -- "create TAP447 ... going to Orly", "..., bound for Glasgow": where an aircraft created in the request flies
-  rule { "going headed bound", "dest", next = "to for", when = function(g, i)
-    for k = 1, i - 1 do
-      if g:intent_at(k) == "create" then return not g:intent_at(i + 2) end
+  -- "create ... going to Orly", "..., bound for Glasgow", "route it via VALB and land it at Kastrup": the place after "to"/"at"
+  -- is an airport (its ICAO code, or a name of one or two words of the navdata's airports); a landing
+  -- is the destination only at the end of a route given before it ("UAL9 land at EGLL" alone is a
+  -- landing clearance, not simulated), and random traffic "all going to Schiphol" is MCRE's
+  local function airport_at(g, k)
+    for _, r in ipairs(g:refs_in(k, k + 1, "waypoint")) do
+      if r.name:match("^%a%a%a%a$") then return true end
     end
+    local t, nx, named = g.t[k], g.t[k + 1], g.world.airports_named
+    if not named or not t or t.kind ~= "word" or not t.alpha or #t.text < 4 then return false end
+    return #named(t.text) > 0 or (nx ~= nil and nx.kind == "word" and #named(t.text .. " " .. nx.text) > 0)
+  end
+  local function earlier(g, i, intent)
+    for k = 1, i - 1 do if g:intent_at(k) == intent then return true end end
     return false
+  end
+  rule { "going headed bound", "dest", next = "to for", when = function(g, i)
+    return not g:intent_at(i + 2) and not earlier(g, i, "mcre") and (earlier(g, i, "create") or airport_at(g, i + 2))
+  end }
+  rule { "land landing", "dest", when = function(g, i)
+    local at = g:word(i + 1, "at in") and i + 1 or g:word(i + 1, "it him her them") and g:word(i + 2, "at in") and i + 2
+    return at and earlier(g, i, "addwpt") and airport_at(g, at + 1) or false
   end }
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata
@@ -657,7 +677,12 @@ return function(intent, rule, words)
       if q.kind == "lat" or (q.kind == "plain" and q.number.decimal) then return true end
     end
     local w = g:refs_in(named.e, math.min(#g.t + 1, named.e + 3), "waypoint")[1]
-    return w ~= nil and g:word(w.b - 1, "over on at")
+    if w ~= nil and g:word(w.b - 1, "over on at") then return true end
+    -- ("put SWR38F over Trasadingen at FL200": a navaid's name near the aircraft, nav.dat's)
+    local p = g:skip_fillers(named.e)
+    local t, a, near = g.t[p + 1], named.exists and g:state(named.name), g.world.navaids_named
+    return g:word(p, "over on at") and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4
+      and near ~= nil and a ~= nil and a.lat ~= nil and #near(t.text, a.lat, a.lon, require("translate.lexicon").navaid_range_nm) > 0
   end }
 
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"

@@ -88,6 +88,21 @@ local function pattern_names(d)
   return out
 end
 
+-- Names a family of types is known by that spell no designator (lower case, one word, as said after
+-- "the": "the Citation") -> the patterns of its ICAO designators: a flying aircraft of any type that
+-- matches is one of the family, whether the performance models know its type or not (C525, C56X).
+M.nicknames = {
+  citation = { "^C5%d%w$", "^C6[58]%w$", "^C7[05]0$", "^C25%u$" },  -- (Cessna's business jets)
+  jumbo = { "^B74%w$" },
+  dreamliner = { "^B78%w$" },
+  learjet = { "^LJ%d%d$" },
+  gulfstream = { "^GLF%d$", "^G%d%d%d$" },
+  caravan = { "^C208$" },
+  skyhawk = { "^C172$" },
+  hercules = { "^C130$" },
+  herc = { "^C130$" },
+}
+
 function M.build(designators)
   local rows, seen, phrases, known = {}, {}, {}, {}
   local list = {}

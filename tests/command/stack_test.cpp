@@ -425,6 +425,37 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "navdata: a city named by its navaids is the large airport within 10 NM of them, else the "
+    "medium one") {
+  auto db = NavDb::parse(
+      "LFBO, BLAGNAC, 43.629, 1.364, Large, 11483, FR,499\n"
+      "LFBF, FRANCAZAL, 43.545, 1.368, Medium, 5900, FR,535\n"
+      "LSZB, BERN BELP, 46.914, 7.497, Medium, 4594, SZ,1674\n"
+      "XXXX, FAR FIELD, 44.0, 3.0, Large\n"
+      "EGLL, HEATHROW, 51.477, -0.461, Large, 12799, UK,83\n"
+      "EGKK, GATWICK, 51.148, -0.19, Large, 9486, UK,202\n"
+      "EGNX, EAST MIDLANDS, 52.831, -1.328, Large, 9491, UK,306\n",
+      "3  51.487 -0.467 0 11330 50 0.0 LON  LONDON VOR-DME\n"
+      "3  43.68 1.31 0 11710 60 0.0 TOU  TOULOUSE VOR-DME\n"
+      "2  46.91 7.50 0 336 50 0.0 BER  BERN NDB\n"
+      "3  45.0 5.0 0 11000 40 0.0 NOW  NOWHERE VOR\n",
+      "", "test");
+  REQUIRE(db.is_ok());
+  auto ids = [&](const char* name) {
+    std::vector<std::string> out;
+    for (const NavPoint* a : (*db)->airports_beside_navaids(name)) out.push_back(a->id);
+    return out;
+  };
+  CHECK(ids("Toulouse") == std::vector<std::string>{"LFBO"});  // the large one, not Francazal
+  CHECK(ids("bern") == std::vector<std::string>{"LSZB"});      // a medium one when no large
+  CHECK(ids("nowhere").empty());                               // no airport within 10 NM
+  // a city of several large airports (within 30 NM) is no one airport; one farther is not its
+  CHECK(ids("London") == std::vector<std::string>{"EGLL", "EGKK"});
+  CHECK(ids("blagnac").empty());                               // an airport's name is no navaid's
+  CHECK(ids("").empty());
+}
+
+TEST_CASE(
     "navdata: navaids by name less their kind, near a point, nearest first, each ident once") {
   auto db = NavDb::parse(
       "EHAM, SCHIPHOL, 52.309, 4.764, Large, 12467, NL,-11\n",

@@ -339,10 +339,11 @@ if #sim:airports_named("schiphol") == 1 then
   check_eq(ukt("Speedbird 12 destination echo golf papa foxtrot"), "DEST BAW12 EGPF")
   check_eq(ukt("set the origin of BAW12 to echo golf kilo kilo"), "ORIG BAW12 EGKK")
   check(ukt("BAW12 destination echo xray yankee zulu"):find("^ASK") ~= nil, "no such airport")
-  -- a city whose airports the navdata names otherwise ("London": HEATHROW, GATWICK) is no far airport
-  -- that bears the name (CYXU, Ontario): that one is confirmed, never sent
+  -- a city whose airports the navdata names otherwise ("London": HEATHROW, GATWICK, beside the LONDON
+  -- VOR) is no far airport that bears the name (CYXU, Ontario), nor one of its airports: asked which
   local lr = graph.translate("BAW12 destination London", { sim = uk, mode = "offline" })
-  check(#(lr.commands or {}) == 0 and (lr.ask or ""):find("CYXU", 1, true) ~= nil, said(lr))
+  check(#(lr.commands or {}) == 0 and (lr.ask or ""):find("EGLL or", 1, true) ~= nil
+    and lr.ask:find("CYXU", 1, true) == nil, said(lr))
   check_eq(ukt("BAW12 destination Gatwick"), "DEST BAW12 EGKK")
   check_eq(ukt("Speedbird 12 your destination Glasgow, echo golf papa foxtrot"), "DEST BAW12 EGPF")
   local gr = squawk.sim.new()
@@ -627,12 +628,25 @@ do
   check_eq(ft("can the Ryanair descend to FL 100?"), "ASK No Ryanair aircraft is flying. Which aircraft do you mean?")
   check_eq(ft("Lufthansa, descend FL 200"), "ASK Which aircraft should change altitude? Please give its callsign.")
   check_eq(ft("please turn the easyJet left 20 degrees, it's getting close to the Lufthansa"), "HDG EZY45 40 LEFT")
-  -- an airline said alone as a clause's aircraft, beside another clause's, is asked about: never
-  -- read as the aircraft named before or after
-  check_eq(ft("EZY45 heading 180, Lufthansa heading 270"), "ASK Which Lufthansa aircraft do you mean? Please give its callsign.")
+  -- an airline said alone as a clause's aircraft, beside another clause's, is the one aircraft of it
+  -- flying (never the aircraft named before or after); with two of it flying it asks which
+  check_eq(ft("EZY45 heading 180, Lufthansa heading 270"), "HDG EZY45 180 ; HDG DLH4AX 270")
   check_eq(ft("Speedbird right heading 010, and EZY45 left heading 300"),
-    "ASK Which Speedbird aircraft do you mean? Please give its callsign.")
+    "HDG BAW123 10 RIGHT ; HDG EZY45 300 LEFT")
   check_eq(ft("BAW123 climb FL 240 and KLM descend FL 140"), "ASK Which KLM: KLM1234 or KLM77?")
+  -- an airline said alone, capitalised, opening a request of several instructions or aircraft, is the
+  -- one aircraft of it flying; one instruction to it alone is a callsign cut short, asked about; a
+  -- callsign in its clause is the one meant
+  check_eq(ft("Lufthansa, turn left heading 250 and climb FL 320"), "HDG DLH4AX 250 LEFT ; ALT DLH4AX FL320")
+  check_eq(ft("easyJet: speed 280, then descend to FL 150"), "SPD EZY45 280 ; ALT EZY45 FL150")
+  check_eq(ft("Speedbird heading 090, easyJet heading 270"), "HDG BAW123 90 ; HDG EZY45 270")
+  check_eq(ft("Lufthansa, mach .78"), "ASK Which aircraft should change speed? Please give its callsign.")
+  check_eq(ft("KLM, turn right heading 300 and descend FL 200"), "ASK Which KLM: KLM1234 or KLM77?")
+  check_eq(ft("Ryanair, heading 300 and FL 200"):find("^ASK") ~= nil, true)
+  check_eq(ft("Lufthansa EZY45 heading 090 and climb FL 300"),
+    "ASK Which Lufthansa aircraft do you mean? Please give its callsign.")
+  -- in lower case an airline's word may be English ("easy", "delta"): asked about
+  check_eq(ft("lufthansa, turn left heading 250 and climb FL 320"):find("^ASK") ~= nil, true)
   check_eq(ft("EZY45 heading 180, the Lufthansa heading 270"), "HDG EZY45 180 ; HDG DLH4AX 270")
   -- the purpose said after the instruction (", that should ...", ", I want X to ...", "so he/she ...")
   -- names other traffic, never an aircraft instructed
@@ -800,7 +814,8 @@ do
   if #box:airports_named("schiphol") == 1 then
     check_eq(bt("KL204 is going to Frankfurt"), "DEST KL204 EDDF")
     check_eq(bt("change EZY45's destination to Brussels"), "DEST EZY45 EBBR")
-    check(bt("EZY45 origin Amsterdam"):find("^ASK") ~= nil, bt("EZY45 origin Amsterdam"))
+    -- (nor a small field far away: "Amsterdam" is the airport beside the AMSTERDAM VOR)
+    check_eq(bt("EZY45 origin Amsterdam"), "ORIG EZY45 EHAM")
   end
   -- a time that no command carries beside a level is asked about (30000 is no heading 120)
   check(bt("KL204 climb FL300 and in 2 minutes EZY45 climb FL280"):find("'2 minutes'", 1, true) ~= nil,
@@ -1277,6 +1292,59 @@ do
     check_eq(pt("give KLM1234 a route through SPY and PAM"), "ADDWPT KLM1234 SPY ; ADDWPT KLM1234 PAM")
     check_eq(pt("KLM1234 add PAM, dest Bremen"), "ADDWPT KLM1234 PAM ; DEST KLM1234 EDDW")
   end
+end
+
+-- Places by name where an aircraft is sent, put or routed (sentences written here, R25/R29's classes):
+-- a waypoint added with the level it is crossed at, an airport's name of three words, "going to" and a
+-- route's "land it at" an airport as the destination, "put X over" a navaid's nav.dat name
+do
+  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
+  if not ok then
+    print("skipped: place names need BlueSky's navdata at ../shared/bluesky/navdata")
+  else
+    for _, line in ipairs({ "CRE SWR38F A320 47.8 8.4 090 FL250 280", "CRE AFR12 A320 48.9 2.6 180 FL200 260" }) do
+      check(nav:exec(line))
+    end
+    local function pt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+    check_eq(pt("SWR38F add TRA at 9000 ft"), "ADDWPT SWR38F TRA 9000")
+    check_eq(pt("SWR38F, add TRA at flight level one eight zero, 250 knots"), "ADDWPT SWR38F TRA FL180 250")
+    check_eq(pt("AFR12 origin Charles de Gaulle, destination Orly"), "ORIG AFR12 LFPG ; DEST AFR12 LFPO")
+    check_eq(pt("create AFR9 A320 at 48.5 2.5 heading 090 FL100 250 knots going to Orly"),
+      "CRE AFR9 A320 48.5 2.5 90 FL100 250 ; DEST AFR9 LFPO")
+    check_eq(pt("route SWR38F via TRA and land it at Zurich"), "ADDWPT SWR38F TRA ; DEST SWR38F LSZH")
+    check_eq(pt("put SWR38F over Trasadingen at FL200 heading 180"), "MOVE SWR38F TRA FL200 180")
+    -- a landing said alone is a landing clearance, not simulated: asked about, never a destination
+    check(pt("SWR38F land at Zurich"):find("^ASK") ~= nil)
+    -- a city the navdata names no airport by, where an airport is meant: the airport beside its navaids
+    check_eq(pt("SWR38F origin Bern"), "ORIG SWR38F LSZB")
+    check(nav:exec("CRE AFR77 A320 43.8 1.6 180 FL150 250"))
+    check_eq(pt("AFR77 change destination to Toulouse"), "DEST AFR77 LFBO")
+    check_eq(pt("AFR77 destination Toulouse, and descend FL 100"), "DEST AFR77 LFBO ; ALT AFR77 FL100")
+  end
+end
+
+-- Brands and type families (names.lua's brands, types.nicknames): "the Transavia" is the one aircraft
+-- flying as TRA or TVF, a callsign said with the brand's name is its aircraft of those characters,
+-- "the Citation" the one Cessna business jet flying
+do
+  local sky = squawk.sim.new()
+  for _, line in ipairs({ "CRE TVF33KP B738 49.0 2.5 045 FL250 280", "CRE EZS1419 A320 47.5 8.0 090 FL300 280",
+      "CRE N525TX C525 49.2 4.2 270 FL280 250", "CRE JAF2RK B738 50.9 4.5 180 FL310 280",
+      "CRE B744X B744 51.0 3.0 090 FL350 290", "CRE SWR12 A320 47.4 8.5 270 FL320 280" }) do
+    check(sky:exec(line))
+  end
+  local function st(text) return said(graph.translate(text, { sim = sky, mode = "offline" })) end
+  check_eq(st("speed the Transavia up to 310"), "SPD TVF33KP 310")
+  check_eq(st("please bring the easyJet down to FL 200"), "ALT EZS1419 FL200")
+  check_eq(st("Transavia three three kilo papa, climb flight level two niner zero"), "ALT TVF33KP FL290")
+  check_eq(st("clear the Jetairfly's route"), "DELRTE JAF2RK")
+  check_eq(st("Topswiss, left heading 030 and descend FL 200"), "HDG EZS1419 30 LEFT ; ALT EZS1419 FL200")
+  -- (a callsign of no aircraft of the brand is still asked about)
+  check(st("Transavia three three kilo alpha, climb flight level two niner zero"):find("^ASK") ~= nil)
+  check_eq(st("could the Citation descend to 20,000 feet please?"), "ALT N525TX 20000")
+  check_eq(st("turn the Citation right heading 010"), "HDG N525TX 10 RIGHT")
+  check_eq(st("the jumbo, climb FL 370"), "ALT B744X FL370")
+  check(st("the Dreamliner climb FL 370"):find("^ASK") ~= nil, "no 787 flies")
 end
 
 -- Lab talk of an experimenter at the scope (round 27's classes, sentences written here)
