@@ -152,8 +152,7 @@ int cmd_train_env(const Args& args) {
                        "\"improved\", \"ppo\" or \"vpg\"");
   const bool gaussian = args.has("--gaussian");
   if (gaussian && *parallel)
-    return usage_error("train", "--gaussian acts on a one-component Box; " + file +
-                                    " is multi-agent, with a Box of several numbers per agent");
+    return usage_error("train", "--gaussian trains single-agent files; " + file + " is multi-agent");
   if (gaussian && args.has("--levels"))
     return usage_error("train",
                        "--gaussian acts on the continuous Box: no --levels grid beside it");
@@ -176,10 +175,12 @@ int cmd_train_env(const Args& args) {
   rl::MlpPolicySpec spec;
   spec.obs_size = es.observation_size;
   spec.hidden = *hidden;
-  if (gaussian)
+  if (gaussian) {
     spec.head = "gaussian";
-  else
+    spec.action_size = es.action_size();
+  } else {
     spec.action_values = script::grid_values(batches->classes);
+  }
   Rng init(cfg.seed);
   auto policy = rl::MlpPolicy::make(spec, init);
   if (!policy) return failure(policy.status());
@@ -198,7 +199,8 @@ int cmd_train_env(const Args& args) {
   if (!quiet) {
     char head[96];
     if (gaussian)
-      std::snprintf(head, sizeof head, "a Gaussian head over the continuous action");
+      std::snprintf(head, sizeof head, "a Gaussian head over the continuous action (%d components)",
+                    es.action_size());
     else
       std::snprintf(head, sizeof head, "%d action classes (%lld levels x %d components)",
                     batches->classes, *levels, es.action_size());
