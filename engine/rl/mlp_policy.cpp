@@ -11,6 +11,18 @@ namespace squawk::rl {
 
 Status MlpPolicySpec::validate() const {
   if (obs_size < 1) return Status::invalid("policy obs_size must be positive");
+  if (!obs_mean.empty() || !obs_std.empty()) {
+    if (obs_mean.size() != static_cast<size_t>(obs_size) || obs_std.size() != obs_mean.size())
+      return Status::invalid("policy obs_mean / obs_std hold " + std::to_string(obs_mean.size()) + " / " +
+                             std::to_string(obs_std.size()) + " numbers: expected obs_size = " +
+                             std::to_string(obs_size) + " each");
+    for (size_t j = 0; j < obs_std.size(); ++j)
+      if (!(obs_std[j] > 0.0 && std::isfinite(obs_std[j])) || !std::isfinite(obs_mean[j]))
+        return Status::invalid("policy obs_std[" + std::to_string(j) + "] = " + std::to_string(obs_std[j]) +
+                               ", obs_mean = " + std::to_string(obs_mean[j]) +
+                               ": expected a finite mean and a positive finite deviation");
+    if (!mirror.empty()) return Status::invalid("policy mirror does not take obs_mean / obs_std");
+  }
   for (int h : hidden)
     if (h < 1 || h > 4096)
       return Status::invalid("policy hidden width " + std::to_string(h) + ": expected 1..4096");
@@ -55,6 +67,14 @@ MlpPolicy::MlpPolicy(MlpPolicySpec spec, nn::Mlp mlp) : spec_(std::move(spec)), 
 void MlpPolicy::forward(std::span<const float> obs, int n, std::vector<float>& out) {
   const int k = mlp_.out_dim();
   out.resize(static_cast<size_t>(n) * static_cast<size_t>(k));
+  if (!spec_.obs_mean.empty()) {
+    const size_t d = spec_.obs_mean.size();
+    normed_.resize(static_cast<size_t>(n) * d);
+    for (size_t i = 0; i < normed_.size(); ++i)
+      normed_[i] = static_cast<float>((obs[i] - spec_.obs_mean[i % d]) / spec_.obs_std[i % d]);
+    mlp_.forward(params_, normed_.data(), n, out.data(), &cache_);
+    return;
+  }
   if (spec_.mirror.empty()) {
     mlp_.forward(params_, obs.data(), n, out.data(), &cache_);
     return;

@@ -13,6 +13,9 @@
 //   mirror (categorical only, beyond the paper): when set, the logits are
 //     made mirror-symmetric (rl/mirror.h) from the same network, run on each
 //     observation and its mirror image.
+//   obs_mean / obs_std (beyond the paper; empty = none, else obs_size each):
+//     the network reads (obs - obs_mean) / obs_std instead of obs
+//     (rl/obs_norm.h gives them); fixed, not trained.
 // Parameter buffer: the Mlp's parameters (nn/mlp.h layout), then log sigma_0
 // .. log sigma_{D-1} for the Gaussian head.
 #pragma once
@@ -36,6 +39,7 @@ struct MlpPolicySpec {
   double init_log_std = -0.5;                             // gaussian: initial log sigma
   int action_size = 1;                                    // gaussian: components D, 1..kMaxActionSize
   env::ObservationMirror mirror{};                        // empty = none
+  std::vector<double> obs_mean, obs_std;                  // [obs_size] each, or empty: no normalisation
 
   Status validate() const;
 };
@@ -79,6 +83,7 @@ class MlpPolicy : public Policy {
   nn::MlpCache cache_;
   std::vector<float> out_, dout_, logp_, d_log_std_;
   std::vector<float> rows_, raw_, draw_;  // mirror: [2n, D], [2n, K], [2n, K]
+  std::vector<float> normed_;              // obs_mean/obs_std: [n, D]
 };
 
 }  // namespace squawk::rl

@@ -286,6 +286,44 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   CHECK(rl::load_checkpoint(path).status().code() != Code::kOk);
 }
 
+TEST_CASE("obs_mean / obs_std: the network reads the normalised observation; checkpoints keep them") {
+  rl::MlpPolicySpec plain;
+  plain.obs_size = 2;
+  plain.hidden = {5};
+  plain.head = "gaussian";
+  plain.action_size = 2;
+  rl::MlpPolicySpec normed = plain;
+  normed.obs_mean = {1.0, -2.0};
+  normed.obs_std = {0.5, 4.0};
+  Rng r1(9), r2(9);
+  auto a = rl::MlpPolicy::make(plain, r1);
+  auto b = rl::MlpPolicy::make(normed, r2);
+  REQUIRE(a);
+  REQUIRE(b);
+  const std::vector<float> obs = {1.5f, 2.0f, 0.0f, -6.0f};                   // two rows
+  const std::vector<float> by_hand = {1.0f, 1.0f, -2.0f, -1.0f};              // (obs - mean) / std
+  std::vector<float> ya, yb;
+  (*a)->forward(by_hand, 2, ya);
+  (*b)->forward(obs, 2, yb);
+  CHECK(ya == yb);
+  const std::string path = temp_path("squawk_test_rl_norm.ckpt");
+  rl::Checkpoint c;
+  c.spec = normed;
+  c.params.assign((*b)->params().begin(), (*b)->params().end());
+  REQUIRE(rl::save_checkpoint(path, c).is_ok());
+  auto back = rl::load_checkpoint(path);
+  REQUIRE(back);
+  CHECK(back->spec.obs_mean == normed.obs_mean);
+  CHECK(back->spec.obs_std == normed.obs_std);
+  std::remove(path.c_str());
+  rl::MlpPolicySpec bad = normed;
+  bad.obs_std = {0.5};
+  CHECK(bad.validate().message() ==
+        "policy obs_mean / obs_std hold 2 / 1 numbers: expected obs_size = 2 each");
+  bad.obs_std = {0.5, 0.0};
+  CHECK(bad.validate().message().find("obs_std[1] = 0.000000") != std::string::npos);
+}
+
 TEST_CASE("a diagonal Gaussian checkpoint keeps its components; one without action_size has 1") {
   const std::string path = temp_path("squawk_test_rl_gauss.ckpt");
   for (const int d : {1, 2}) {

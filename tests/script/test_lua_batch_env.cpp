@@ -11,6 +11,7 @@
 
 #include "rl/evaluator.h"
 #include "rl/mlp_policy.h"
+#include "rl/obs_norm.h"
 #include "rl/play.h"
 #include "rl/train_run.h"
 #include "rl/vpg.h"
@@ -306,4 +307,42 @@ TEST_CASE("the Gaussian head learns a Lua environment's continuous action (sign.
                  << after->mean_reward << " after 40 updates");
     CHECK(after->mean_reward > -0.5 * spec.action_size);
   }
+}
+
+TEST_CASE("observation_stats: each number's mean and deviation over the episodes' decisions") {
+  // sign2.lua's observations do not depend on the actions: the statistics of
+  // the policy's episodes are those of the same episodes played with zeros.
+  auto envs = batch(repo("tests/data/gym/sign2.lua"), 3, 0);
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 2;
+  spec.hidden = {4};
+  spec.head = "gaussian";
+  spec.action_size = 2;
+  Rng init(1);
+  auto p = rl::MlpPolicy::make(spec, init);
+  REQUIRE(p);
+  auto stats = rl::observation_stats(**p, *envs, 5, 50);
+  REQUIRE_MESSAGE(stats.is_ok(), stats.status().message());
+  double sum[2] = {0, 0}, sq[2] = {0, 0};
+  long long rows = 0;
+  rl::Driver zeros{[&](rl::Turn& t) {
+                     for (size_t i = 0; i < t.obs.size(); ++i) {
+                       sum[i % 2] += t.obs[i];
+                       sq[i % 2] += t.obs[i] * t.obs[i];
+                     }
+                     rows += static_cast<long long>(t.slots.size());
+                     return Status::ok();
+                   },
+                   {}};
+  REQUIRE(rl::play(*envs, 5, 0, 50, zeros).value_or(false));
+  CHECK(rows == 200);  // 50 episodes of 4 steps
+  for (size_t j = 0; j < 2; ++j) {
+    const double mean = sum[j] / rows;
+    CHECK(stats->mean[j] == doctest::Approx(mean));
+    CHECK(stats->std[j] == doctest::Approx(std::sqrt(sq[j] / rows - mean * mean)));
+    CHECK(std::fabs(stats->mean[j]) < 0.3);  // signs of +-1, drawn evenly
+    CHECK(stats->std[j] > 0.9);
+  }
+  CHECK(rl::observation_stats(**p, *envs, 5, 0).status().message() ==
+        "observation statistics need at least 1 episode, got 0");
 }
