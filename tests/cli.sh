@@ -55,7 +55,8 @@ expect "env run gaussian 2-d greedy" 0 '"mean_reward": (0|-0\.[0-9]+),.*"action_
 # --obs-norm: the checkpoint keeps the statistics, and env run reads through them.
 expect "train obs-norm" 0 "observations normalised" -- "$sq" train --env tests/data/gym/sign2.lua --out "$gt/norm" --gaussian --obs-norm 20 --estimator ppo --episodes 640 --eval-every 320
 expect "env run obs-norm" 0 '"mean_reward": (0|-0\.[0-9]+),' -- "$sq" env run tests/data/gym/sign2.lua --policy "mlp:$gt/norm/policy.ckpt" --greedy --episodes 40 --json
-expect "obs-norm alone" 2 "--obs-norm normalises the observations of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --obs-norm 10
+expect "obs-norm alone" 2 "--obs-norm and --log-std shape the policy of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --obs-norm 10
+expect "log-std grid" 2 "--log-std -1: the Gaussian head's initial log sigma, in \[-5, 2\], with --gaussian" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ls" --log-std -1
 expect "train gaussian levels" 2 "--gaussian acts on the continuous Box: no --levels grid beside it" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/g3" --gaussian --levels 3
 expect "train gaussian multi" 2 "--gaussian trains single-agent files; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/g4" --gaussian
 expect "train levels 0"   2 "--levels 0: expected at least 2 per component" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/l0" --levels 0

@@ -176,9 +176,15 @@ int cmd_train_env(const Args& args) {
   rl::MlpPolicySpec spec;
   spec.obs_size = es.observation_size;
   spec.hidden = *hidden;
+  auto log_std = args.get_double("--log-std", spec.init_log_std);
+  if (!log_std) return usage_error("train", log_std.status().message());
+  if (args.has("--log-std") && (!gaussian || !(*log_std >= -5.0 && *log_std <= 2.0)))
+    return usage_error("train", "--log-std " + args.get_or("--log-std", "") +
+                                    ": the Gaussian head's initial log sigma, in [-5, 2], with --gaussian");
   if (gaussian) {
     spec.head = "gaussian";
     spec.action_size = es.action_size();
+    spec.init_log_std = *log_std;
   } else {
     spec.action_values = script::grid_values(batches->classes);
   }
