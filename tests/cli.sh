@@ -50,10 +50,17 @@ expect "train env vine"  2 "on --env use \"improved\"" -- "$sq" train --env test
 # --gaussian: a Gaussian head over a one-component Box (sign.lua's best action is the sign itself).
 expect "train env gaussian" 0 "a Gaussian head over the continuous action" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/gauss" --gaussian --estimator ppo --episodes 640 --eval-every 320
 expect "env run gaussian greedy" 0 '"mean_reward": (0|-0\.[0-4][0-9]*),' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/gauss/policy.ckpt" --greedy --episodes 40 --json
-expect "env gaussian 2-d" 1 "a Gaussian policy acts on one number; StaticObstacleEnv-v0 takes 2" -- "$sq" env run envs/static_obstacle.lua --policy "mlp:$gt/gauss/policy.ckpt"
-expect "train gaussian 2-d" 1 "continuous actions need a one-component Box; MergeEnv-v0 has 2" -- "$sq" train --env envs/merge.lua --out "$gt/g2" --gaussian
+expect "env gaussian 2-d" 1 "a Gaussian policy of 1 action component; StaticObstacleEnv-v0 takes 2" -- "$sq" env run envs/static_obstacle.lua --policy "mlp:$gt/gauss/policy.ckpt"
+# A diagonal Gaussian over a two-component Box (sign2.lua: best (s1, 5 + 5 s2) on [-1, 1] x [0, 10]).
+expect "train gaussian 2-d" 0 "a Gaussian head over the continuous action \(2 components\)" -- "$sq" train --env tests/data/gym/sign2.lua --out "$gt/g2" --gaussian --estimator ppo --episodes 640 --eval-every 320
+expect "env run gaussian 2-d greedy" 0 '"mean_reward": (0|-0\.[0-9]+),.*"action_shares": \[\[0\.[45][0-9]*, 0(\.0[0-9]*)?, 0\.[45][0-9]*\], \[0\.[45][0-9]*, 0(\.0[0-9]*)?, 0\.[45][0-9]*\]\]' -- "$sq" env run tests/data/gym/sign2.lua --policy "mlp:$gt/g2/policy.ckpt" --greedy --episodes 40 --json
+# --obs-norm: the checkpoint keeps the statistics, and env run reads through them.
+expect "train obs-norm" 0 "observations normalised" -- "$sq" train --env tests/data/gym/sign2.lua --out "$gt/norm" --gaussian --obs-norm 20 --estimator ppo --episodes 640 --eval-every 320
+expect "env run obs-norm" 0 '"mean_reward": (0|-0\.[0-9]+),' -- "$sq" env run tests/data/gym/sign2.lua --policy "mlp:$gt/norm/policy.ckpt" --greedy --episodes 40 --json
+expect "obs-norm alone" 2 "--obs-norm and --log-std shape the policy of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --obs-norm 10
+expect "log-std grid" 2 "--log-std -1: the Gaussian head's initial log sigma, in \[-5, 2\], with --gaussian" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ls" --log-std -1
 expect "train gaussian levels" 2 "--gaussian acts on the continuous Box: no --levels grid beside it" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/g3" --gaussian --levels 3
-expect "train gaussian multi" 2 "--gaussian acts on a one-component Box; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/g4" --gaussian
+expect "train gaussian multi" 2 "--gaussian trains single-agent files; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/g4" --gaussian
 expect "train levels 0"   2 "--levels 0: expected at least 2 per component" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/l0" --levels 0
 expect "train levels alone" 2 "--levels, --gaussian and --hidden shape the policy of a --env" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --levels 3
 # One MLP shared by every agent of the multi-agent sector: 3 agents, each

@@ -8,8 +8,8 @@
 // action. mlp:CKPT is a checkpoint of `squawk train --env`
 // (app/cli_train_env.h): its categorical head picks a class of the action grid
 // (script/lua_batch_env.h) from the observation, sampled from Rng(S) (the mode
-// with --greedy); a Gaussian head (train --gaussian) samples the action
-// likewise (the mean with --greedy), clipped to the Box (box_action()).
+// with --greedy); a Gaussian head (train --gaussian) samples each action
+// component likewise (the means with --greedy), clipped to the Box (box_action()).
 // Prints the environment, then the episode statistics of EpisodeStats.
 #include <algorithm>
 #include <array>

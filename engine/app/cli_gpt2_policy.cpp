@@ -26,7 +26,8 @@ namespace squawk::app {
 
 Args::Spec train_flags(bool gpt2) {
   std::vector<std::string> values = learner_flags();
-  values.insert(values.end(), {"--policy", "--env", "--levels", "--hidden", "--agents"});
+  values.insert(values.end(), {"--policy", "--env", "--levels", "--hidden", "--agents", "--obs-norm",
+                               "--log-std"});
   std::vector<std::string> bools = {"--resume", "--override", "--force",
                                     "--quiet",  "--mirror",   "--gaussian"};
   if (gpt2) {

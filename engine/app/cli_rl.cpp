@@ -44,6 +44,8 @@ int cmd_train(const ArgV& given) {
         (probe->has("--levels") || probe->has("--hidden") || probe->has("--gaussian")))
       return usage_error(
           "train", "--levels, --gaussian and --hidden shape the policy of a --env ENV.lua run");
+    if (!probe->has("--env") && (probe->has("--obs-norm") || probe->has("--log-std")))
+      return usage_error("train", "--obs-norm and --log-std shape the policy of a --env ENV.lua run");
     if (!probe->has("--env") && probe->has("--agents"))
       return usage_error("train", "--agents sets the agents of a multi-agent --env ENV.lua run");
   }

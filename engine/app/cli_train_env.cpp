@@ -21,6 +21,7 @@
 #include "core/text.h"
 #include "rl/checkpoint.h"
 #include "rl/mlp_policy.h"
+#include "rl/obs_norm.h"
 #include "rl/train_run.h"
 #include "script/lua_batch_env.h"
 #include "script/lua_parallel_batch_env.h"
@@ -152,8 +153,7 @@ int cmd_train_env(const Args& args) {
                        "\"improved\", \"ppo\" or \"vpg\"");
   const bool gaussian = args.has("--gaussian");
   if (gaussian && *parallel)
-    return usage_error("train", "--gaussian acts on a one-component Box; " + file +
-                                    " is multi-agent, with a Box of several numbers per agent");
+    return usage_error("train", "--gaussian trains single-agent files; " + file + " is multi-agent");
   if (gaussian && args.has("--levels"))
     return usage_error("train",
                        "--gaussian acts on the continuous Box: no --levels grid beside it");
@@ -176,13 +176,37 @@ int cmd_train_env(const Args& args) {
   rl::MlpPolicySpec spec;
   spec.obs_size = es.observation_size;
   spec.hidden = *hidden;
-  if (gaussian)
+  auto log_std = args.get_double("--log-std", spec.init_log_std);
+  if (!log_std) return usage_error("train", log_std.status().message());
+  if (args.has("--log-std") && (!gaussian || !(*log_std >= -5.0 && *log_std <= 2.0)))
+    return usage_error("train", "--log-std " + args.get_or("--log-std", "") +
+                                    ": the Gaussian head's initial log sigma, in [-5, 2], with --gaussian");
+  if (gaussian) {
     spec.head = "gaussian";
-  else
+    spec.action_size = es.action_size();
+    spec.init_log_std = *log_std;
+  } else {
     spec.action_values = script::grid_values(batches->classes);
+  }
   Rng init(cfg.seed);
   auto policy = rl::MlpPolicy::make(spec, init);
   if (!policy) return failure(policy.status());
+  // --obs-norm N: the mean and deviation of each observation number over N
+  // episodes of the initial policy (rl/obs_norm.h); the policy then reads the
+  // normalised numbers, from the same initial parameters.
+  auto norm_episodes = args.get_int("--obs-norm", 0);
+  if (!norm_episodes) return usage_error("train", norm_episodes.status().message());
+  if (args.has("--obs-norm")) {
+    if (*parallel)
+      return usage_error("train", "--obs-norm trains single-agent files; " + file + " is multi-agent");
+    auto stats = rl::observation_stats(**policy, *batches->eval, cfg.seed, *norm_episodes);
+    if (!stats) return failure(Status::invalid(shown_error(stats.status().message())));
+    spec.obs_mean = std::move(stats->mean);
+    spec.obs_std = std::move(stats->std);
+    Rng again(cfg.seed);
+    policy = rl::MlpPolicy::make(spec, again);
+    if (!policy) return failure(policy.status());
+  }
 
   const std::string out = *args.get("--out");
   auto run = open_run_folder(out, args);
@@ -198,14 +222,16 @@ int cmd_train_env(const Args& args) {
   if (!quiet) {
     char head[96];
     if (gaussian)
-      std::snprintf(head, sizeof head, "a Gaussian head over the continuous action");
+      std::snprintf(head, sizeof head, "a Gaussian head over the continuous action (%d components)",
+                    es.action_size());
     else
       std::snprintf(head, sizeof head, "%d action classes (%lld levels x %d components)",
                     batches->classes, *levels, es.action_size());
-    std::printf("training mlp on %s (%s): %s, %s, estimator %s, %zu parameters, seed %llu\n",
+    std::printf("training mlp on %s (%s): %s, %s, estimator %s, %zu parameters, seed %llu%s\n",
                 es.id.c_str(), file.c_str(), head, episodes_text(cfg).c_str(),
                 cfg.estimator.c_str(), (*policy)->params().size(),
-                static_cast<unsigned long long>(cfg.seed));
+                static_cast<unsigned long long>(cfg.seed),
+                spec.obs_mean.empty() ? "" : ", observations normalised");
   }
   if (!quiet && batches->parallel)
     std::printf(

@@ -9,9 +9,10 @@
 // episode number k of seed s is (its draws) is the implementation's, stated
 // in its header; it never depends on the number of slots.
 // Contract: observations() has one row of obs_size() floats per entry of
-// waiting(), in the same order; step() takes one action per waiting slot
-// (what rl::ActionSample::value holds: the implementation says what it
-// means) and writes each row's reward and whether its episode ended.
+// waiting(), in the same order; step() takes one action of action_size()
+// numbers per waiting slot (rl::ActionSample::component(0..): the
+// implementation says what they mean) and writes each row's reward and
+// whether its episode ended.
 // An implementation whose step can fail (a Lua error) keeps the first error
 // in error(), ends the run (finished() true) and does nothing more until the
 // next start(); callers check error() after every step.
@@ -39,8 +40,11 @@ class BatchEnv {
   // Slots waiting for a decision (ascending) and their observations [n, obs_size].
   virtual const std::vector<int>& waiting() const = 0;
   virtual std::span<const float> observations() const = 0;
-  // actions[r] goes to slot waiting()[r]; writes its reward and whether that
-  // slot's episode ended (1) into rewards[r] / dones[r].
+  // Numbers per action: 1 unless an implementation takes vectors.
+  virtual int action_size() const { return 1; }
+  // actions [n, action_size()] row-major: row r goes to slot waiting()[r];
+  // writes its reward and whether that slot's episode ended (1) into
+  // rewards[r] / dones[r].
   virtual void step(std::span<const double> actions, std::span<double> rewards,
                     std::span<uint8_t> dones) = 0;
   // True when every episode of the run has ended (or the run failed).

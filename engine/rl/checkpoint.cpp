@@ -15,7 +15,12 @@ Status save_checkpoint(const std::string& path, const Checkpoint& c) {
                          {"hidden", c.spec.hidden},
                          {"head", c.spec.head},
                          {"action_values", c.spec.action_values},
-                         {"init_log_std", c.spec.init_log_std}};
+                         {"init_log_std", c.spec.init_log_std},
+                         {"action_size", c.spec.action_size}};
+  if (!c.spec.obs_mean.empty()) {
+    spec["obs_mean"] = c.spec.obs_mean;
+    spec["obs_std"] = c.spec.obs_std;
+  }
   write_mirror(spec, c.spec.mirror);
   return write_train_checkpoint(path, kMagic, spec, c);
 }
@@ -30,6 +35,9 @@ Result<Checkpoint> load_checkpoint(const std::string& path) {
     c.spec.head = h.at("head").get<std::string>();
     c.spec.action_values = h.at("action_values").get<std::vector<double>>();
     c.spec.init_log_std = h.value("init_log_std", -0.5);
+    c.spec.action_size = h.contains("action_size") ? whole<int>(h, "action_size") : 1;
+    c.spec.obs_mean = h.value("obs_mean", std::vector<double>{});
+    c.spec.obs_std = h.value("obs_std", std::vector<double>{});
     c.spec.mirror = read_mirror(h);
     read_train_header(f, c);
   } catch (const std::exception& e) {

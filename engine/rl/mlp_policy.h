@@ -4,13 +4,20 @@
 //   head "categorical": K logits over action_values (the paper's
 //     {-1, -0.5, 0, 0.5, 1}); default hidden {96, 96} gives 28-96-96-5 =
 //     12,581 parameters, the paper's "~12,000".
-//   head "gaussian": one output = the mean, plus one free parameter log sigma
-//     (state-independent), for the gym rules' continuous action.
+//   head "gaussian": a diagonal Gaussian over action_size = D components
+//     (1 for the gym rules' continuous action): D outputs = the means, plus D
+//     free parameters log sigma_j (state-independent); the components are
+//     independent, so log pi(a|s) = sum_j log N(a_j; mu_j(s), sigma_j^2) and
+//     the entropy is the sum of theirs. A sample draws component 0 .. D-1 in
+//     turn from the row's stream (ActionSample::component).
 //   mirror (categorical only, beyond the paper): when set, the logits are
 //     made mirror-symmetric (rl/mirror.h) from the same network, run on each
 //     observation and its mirror image.
-// Parameter buffer: the Mlp's parameters (nn/mlp.h layout), then log sigma
-// for the Gaussian head.
+//   obs_mean / obs_std (beyond the paper; empty = none, else obs_size each):
+//     the network reads (obs - obs_mean) / obs_std instead of obs
+//     (rl/obs_norm.h gives them); fixed, not trained.
+// Parameter buffer: the Mlp's parameters (nn/mlp.h layout), then log sigma_0
+// .. log sigma_{D-1} for the Gaussian head.
 #pragma once
 
 #include <memory>
@@ -30,7 +37,9 @@ struct MlpPolicySpec {
   std::string head = "categorical";                       // "categorical" | "gaussian"
   std::vector<double> action_values = {-1, -0.5, 0, 0.5, 1};  // categorical classes
   double init_log_std = -0.5;                             // gaussian: initial log sigma
+  int action_size = 1;                                    // gaussian: components D, 1..kMaxActionSize
   env::ObservationMirror mirror{};                        // empty = none
+  std::vector<double> obs_mean, obs_std;                  // [obs_size] each, or empty: no normalisation
 
   Status validate() const;
 };
@@ -58,18 +67,23 @@ class MlpPolicy : public Policy {
 
   const MlpPolicySpec& spec() const { return spec_; }
   bool gaussian() const { return spec_.head == "gaussian"; }
-  // Output rows for obs [n, obs_size]: logits [n, K] (categorical) or means [n, 1].
+  // Output rows for obs [n, obs_size]: logits [n, K] (categorical) or means [n, D].
   void forward(std::span<const float> obs, int n, std::vector<float>& out);
 
  private:
   MlpPolicy(MlpPolicySpec spec, nn::Mlp mlp);
+  // The Gaussian head's log sigma_0 .. log sigma_{D-1} (the buffer's tail).
+  std::span<float> log_stds() {
+    return std::span<float>(params_).last(static_cast<size_t>(spec_.action_size));
+  }
 
   MlpPolicySpec spec_;
   nn::Mlp mlp_;
   std::vector<float> params_, grads_;
   nn::MlpCache cache_;
-  std::vector<float> out_, dout_, logp_;
+  std::vector<float> out_, dout_, logp_, d_log_std_;
   std::vector<float> rows_, raw_, draw_;  // mirror: [2n, D], [2n, K], [2n, K]
+  std::vector<float> normed_;              // obs_mean/obs_std: [n, D]
 };
 
 }  // namespace squawk::rl

@@ -13,16 +13,18 @@ Result<bool> play(env::BatchEnv& envs, uint64_t seed, uint64_t first, uint64_t c
   std::vector<ActionSample> acts;
   std::vector<double> actions, rewards;
   std::vector<uint8_t> dones;
+  const auto d = static_cast<size_t>(envs.action_size());
   while (!envs.finished()) {
     slots = envs.waiting();
     const size_t n = slots.size();
     acts.assign(n, ActionSample{});
-    actions.resize(n);
+    actions.resize(n * d);
     rewards.assign(n, 0.0);
     dones.assign(n, 0);
     Turn turn{slots, envs.observations(), acts, rewards, dones};
     SQUAWK_RETURN_IF_ERROR(driver.choose(turn));
-    for (size_t r = 0; r < n; ++r) actions[r] = acts[r].value;
+    for (size_t r = 0; r < n; ++r)
+      for (size_t j = 0; j < d; ++j) actions[r * d + j] = acts[r].component(static_cast<int>(j));
     envs.step(actions, rewards, dones);
     SQUAWK_RETURN_IF_ERROR(envs.error());
     turn.obs = {};

@@ -7,8 +7,9 @@
 // episodes first..first+count-1 of `seed` (env/batch_env.h) and, while any slot
 // waits for a decision, runs one turn:
 //   1. driver.choose(turn): fill turn.actions[r] for every waiting row r;
-//   2. envs.step() with turn.actions[r].value (what the env's header says it
-//      means: VecEnv units of the heading step, LuaBatchEnv a grid class);
+//   2. envs.step() with turn.actions[r]'s first envs.action_size() components
+//      (what the env's header says they mean: VecEnv units of the heading step,
+//      LuaBatchEnv a grid class or the continuous components);
 //   3. driver.after(turn): the rewards and ends of that step; false stops the run.
 // Turn shapes: slots [n] (the waiting slots, ascending; valid in both
 // calls), obs [n, obs_size] row-major (valid in choose only: the step

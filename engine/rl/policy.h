@@ -5,12 +5,15 @@
 // An action's `value` is what the environment receives (units of 45 deg,
 // clipped to [-1, 1] by the environment); `index` is the class of a discrete
 // head (-1 for continuous heads, whose `value` is the raw Gaussian sample).
+// A continuous head over D > 1 components (a diagonal Gaussian) puts
+// component 0 in `value` and components 1..D-1 in `more` (component()).
 // `slots` names the VecEnv slot of each row, for policies that read the
 // environment's state rather than the observation (MVP).
 // Trainable policies expose one contiguous parameter buffer and its gradient
 // buffer (same length) for nn::Adam and checkpoints.
 #pragma once
 
+#include <array>
 #include <span>
 #include <string>
 
@@ -19,9 +22,15 @@
 
 namespace squawk::rl {
 
+inline constexpr int kMaxActionSize = 4;  // [-] components of a continuous action at most
+
 struct ActionSample {
   int index = -1;      // [-] class of a discrete head, -1 when continuous
-  float value = 0.0f;  // [-] action in units of the env's heading step
+  float value = 0.0f;  // [-] action in units of the env's heading step (component 0)
+  std::array<float, kMaxActionSize - 1> more{};  // [-] components 1.. of a vector action
+
+  float component(int j) const { return j == 0 ? value : more[static_cast<size_t>(j - 1)]; }
+  float& component(int j) { return j == 0 ? value : more[static_cast<size_t>(j - 1)]; }
 };
 
 class Policy {

@@ -1,5 +1,7 @@
 #include "script/grid_policy.h"
 
+#include <array>
+
 #include "rl/checkpoint.h"
 #include "script/lua_batch_env.h"
 
@@ -10,9 +12,10 @@ Result<GridPolicy> load_grid_policy(const std::string& path, const LuaEnvSpec& s
   GridPolicy pol;
   SQUAWK_ASSIGN_OR_RETURN(pol.mlp, rl::policy_from_checkpoint(ck));
   const rl::MlpPolicySpec& ps = pol.mlp->spec();
-  if (ps.head == "gaussian" && spec.action_size() != 1)
-    return Status::invalid(path + ": a Gaussian policy acts on one number; " + spec.id + " takes " +
-                           std::to_string(spec.action_size()));
+  if (ps.head == "gaussian" && ps.action_size != spec.action_size())
+    return Status::invalid(path + ": a Gaussian policy of " + std::to_string(ps.action_size) +
+                           (ps.action_size == 1 ? " action component; " : " action components; ") +
+                           spec.id + " takes " + std::to_string(spec.action_size()));
   if (ps.obs_size != spec.observation_size)
     return Status::invalid(path + ": the policy reads " + std::to_string(ps.obs_size) +
                            " observation numbers; " + spec.id + " gives " +
@@ -33,10 +36,13 @@ Result<GridPolicy> load_grid_policy(const std::string& path, const LuaEnvSpec& s
 
 void policy_action(const LuaEnvSpec& spec, const GridPolicy& pol, const rl::ActionSample& choice,
                    std::span<double> out) {
-  if (pol.levels == 0)
-    box_action(spec, choice.value, out);
-  else
+  if (pol.levels == 0) {
+    std::array<double, rl::kMaxActionSize> v{};
+    for (size_t j = 0; j < out.size(); ++j) v[j] = choice.component(static_cast<int>(j));
+    box_action(spec, std::span<const double>(v).first(out.size()), out);
+  } else {
     grid_action(spec, pol.levels, choice.index, out);
+  }
 }
 
 }  // namespace squawk::script

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rl/policy.h"
+
 namespace squawk::script {
 
 Result<int> grid_classes(const LuaEnvSpec& spec, int levels) {
@@ -43,9 +45,18 @@ void grid_action(const LuaEnvSpec& spec, int levels, int index, std::span<double
   }
 }
 
-void box_action(const LuaEnvSpec& spec, double v, std::span<double> out) {
-  const double u = (std::clamp(v, -1.0, 1.0) + 1.0) / 2.0;
-  out[0] = spec.action_low[0] + (spec.action_high[0] - spec.action_low[0]) * u;
+void box_action(const LuaEnvSpec& spec, std::span<const double> v, std::span<double> out) {
+  for (size_t j = 0; j < out.size(); ++j) {
+    const double u = (std::clamp(v[j], -1.0, 1.0) + 1.0) / 2.0;
+    out[j] = spec.action_low[j] + (spec.action_high[j] - spec.action_low[j]) * u;
+  }
+}
+
+Status check_continuous(const LuaEnvSpec& spec, const std::string& path) {
+  if (spec.action_size() <= rl::kMaxActionSize) return Status::ok();
+  return Status::invalid(path + ": continuous actions need a Box of at most " +
+                         std::to_string(rl::kMaxActionSize) + " components; " + spec.id + " has " +
+                         std::to_string(spec.action_size()));
 }
 
 double grid_value(int c, int classes) {
@@ -77,9 +88,7 @@ Result<std::unique_ptr<LuaBatchEnv>> LuaBatchEnv::make(const std::string& path,
   }
   const LuaEnvSpec& spec = envs[0]->spec();
   if (levels == 0) {
-    if (spec.action_size() != 1)
-      return Status::invalid(path + ": continuous actions need a one-component Box; " + spec.id +
-                             " has " + std::to_string(spec.action_size()) + " components");
+    SQUAWK_RETURN_IF_ERROR(check_continuous(spec, path));
     return std::unique_ptr<LuaBatchEnv>(new LuaBatchEnv(std::move(envs), 0, 0));
   }
   SQUAWK_ASSIGN_OR_RETURN(const int classes, grid_classes(spec, levels));
@@ -139,7 +148,7 @@ void LuaBatchEnv::step(std::span<const double> actions, std::span<double> reward
     const auto i = static_cast<size_t>(s);
     LuaEnv& e = *envs_[i];
     if (continuous()) {
-      box_action(e.spec(), actions[r], action_);
+      box_action(e.spec(), actions.subspan(r * action_.size(), action_.size()), action_);
     } else {
       const int c = grid_class(actions[r], classes_);
       if (c < 0)

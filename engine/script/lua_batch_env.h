@@ -13,9 +13,10 @@
 // takes class c as the number grid_value(c, C) = -1 + 2 c / (C - 1): a
 // categorical head whose action_values are grid_values(C) gives exactly
 // that, and for a one-component Box [-1, 1] the number is the action itself.
-// Continuous (levels 0, a one-component Box only): step() takes the number
-// v itself, clipped to [-1, 1] and mapped linearly onto [low, high]
-// (box_action(); a Gaussian head's raw sample).
+// Continuous (levels 0, a Box of d <= rl::kMaxActionSize components):
+// action_size() is d and step() takes d numbers v per slot, each clipped to
+// [-1, 1] and mapped linearly onto its component's [low, high] (box_action();
+// a Gaussian head's raw sample).
 // completed(): index, total_reward, decisions and steps (both the episode's
 // length in steps), truncated (cut without termination) and reached (the file
 // terminated it); success stays false and min_separation 0 (the files define
@@ -46,9 +47,12 @@ Result<int> grid_classes(const LuaEnvSpec& spec, int levels);
 Result<int> grid_levels(const LuaEnvSpec& spec, int classes);
 // Writes the Box action of grid class `index` (0 <= index < K^d) into out [d].
 void grid_action(const LuaEnvSpec& spec, int levels, int index, std::span<double> out);
-// Continuous actions: out[0] = low + (high - low) (clip(v, -1, 1) + 1) / 2
-// for spec's one-component Box (out has size 1).
-void box_action(const LuaEnvSpec& spec, double v, std::span<double> out);
+// Continuous actions: out[j] = low_j + (high_j - low_j) (clip(v[j], -1, 1) + 1) / 2
+// for each of spec's d Box components (v and out have size d).
+void box_action(const LuaEnvSpec& spec, std::span<const double> v, std::span<double> out);
+// Ok when a continuous head can drive spec's Box (1 to rl::kMaxActionSize
+// components), else an error naming the file and the count.
+Status check_continuous(const LuaEnvSpec& spec, const std::string& path);
 // Class c of C as the number in [-1, 1] that step() takes, and all C of them in order.
 double grid_value(int c, int classes);
 std::vector<double> grid_values(int classes);
@@ -58,7 +62,7 @@ int grid_class(double v, int classes);
 class LuaBatchEnv final : public env::BatchEnv {
  public:
   // Loads `path` num_envs times (each instance its own Vm with `options`).
-  // levels 0: continuous actions (error unless the Box has one component).
+  // levels 0: continuous actions (check_continuous()).
   static Result<std::unique_ptr<LuaBatchEnv>> make(const std::string& path,
                                                    const VmOptions& options, int num_envs,
                                                    int levels);
@@ -71,6 +75,7 @@ class LuaBatchEnv final : public env::BatchEnv {
   void start(uint64_t seed, uint64_t first_episode, uint64_t count) override;
   int size() const override { return static_cast<int>(envs_.size()); }
   int obs_size() const override { return spec().observation_size; }
+  int action_size() const override { return continuous() ? spec().action_size() : 1; }
   const std::vector<int>& waiting() const override { return waiting_; }
   std::span<const float> observations() const override { return obs_; }
   void step(std::span<const double> actions, std::span<double> rewards,

@@ -104,44 +104,112 @@ TEST_CASE("categorical and Gaussian log-prob gradients match finite differences"
                                         nn::gaussian_log_prob(0.4f, 0.1f, -0.7f - h)) / (2 * h)).epsilon(1e-2));
 }
 
-TEST_CASE("the Gaussian MLP policy's gradient (network and log sigma) matches finite differences") {
+TEST_CASE("the Gaussian MLP policy's gradient (network and log sigmas) matches finite differences") {
+  // D = 1 (the gym rules' head) and D = 2, 3 (the diagonal head of the two-component Boxes):
+  // log pi sums the components' log densities, H their entropies.
+  for (const int d : {1, 2, 3}) {
+    CAPTURE(d);
+    rl::MlpPolicySpec spec;
+    spec.obs_size = 3;
+    spec.hidden = {8, 8};
+    spec.head = "gaussian";
+    spec.action_size = d;
+    Rng init(5);
+    auto made = rl::MlpPolicy::make(spec, init);
+    REQUIRE(made);
+    rl::MlpPolicy& p = **made;
+    const int n = 4;
+    const std::vector<float> rows = {0.2f, -0.5f, 1.0f,  -0.3f, 0.8f, 0.1f,
+                                     0.6f, 0.4f,  -0.9f, -0.1f, 0.0f, 0.7f};
+    std::vector<rl::ActionSample> acts = {{-1, 0.9f}, {-1, -0.4f}, {-1, 0.1f}, {-1, -1.3f}};
+    for (int r = 0; r < n; ++r)
+      for (int j = 1; j < d; ++j) acts[static_cast<size_t>(r)].component(j) = 0.3f * static_cast<float>(j - r);
+    // Distinct log sigmas, so a component's gradient landing on another's would show.
+    std::span<float> log_std = p.params().last(static_cast<size_t>(d));
+    for (int j = 0; j < d; ++j) log_std[static_cast<size_t>(j)] = -0.5f + 0.2f * static_cast<float>(j);
+    const std::vector<float> coef = {0.8f, -1.1f, 0.5f, 0.3f};
+    const float ent = 0.1f;
+    std::fill(p.grads().begin(), p.grads().end(), 0.0f);
+    const float mean_entropy = p.accumulate_gradient(rows, n, acts, coef, ent);
+    const std::vector<float> g(p.grads().begin(), p.grads().end());
+    // L = -sum coef log pi(a|s) - ent sum H, from log_probs and the log sigma parameters alone.
+    auto entropy = [&] {
+      double h = 0.0;
+      for (float ls : log_std) h += nn::gaussian_entropy(ls);
+      return h;
+    };
+    CHECK(mean_entropy == doctest::Approx(entropy()));
+    auto loss = [&] {
+      std::vector<float> lp(n);
+      p.log_probs(rows, n, acts, lp);
+      double l = 0.0;
+      for (size_t r = 0; r < lp.size(); ++r) l -= coef[r] * lp[r] + ent * entropy();
+      return l;
+    };
+    std::span<float> theta = p.params();
+    int large = 0;
+    for (size_t i = 0; i < theta.size(); ++i) {
+      // eps 1e-3: at 1e-2 some ReLU inputs of this small net change sign. The
+      // float log-probabilities (of order 1) leave about 5e-5 of rounding in
+      // each difference, hence the absolute floor 0.02 x 5e-3.
+      const double fd = central_difference(theta[i], 1e-3f, loss);
+      CAPTURE(i);
+      CHECK(g[i] == doctest::Approx(fd).epsilon(0.02).scale(5e-3));
+      large += std::fabs(fd) > 1e-3;
+    }
+    CHECK(large > static_cast<int>(theta.size()) / 4);
+    for (size_t j = 0; j < static_cast<size_t>(d); ++j) CHECK(g[g.size() - 1 - j] != 0.0f);  // each log sigma learns
+  }
+}
+
+TEST_CASE("a diagonal Gaussian samples each component from its own mean and sigma") {
   rl::MlpPolicySpec spec;
-  spec.obs_size = 3;
-  spec.hidden = {8, 8};
+  spec.obs_size = 2;
+  spec.hidden = {4};
   spec.head = "gaussian";
-  Rng init(5);
+  spec.action_size = 2;
+  Rng init(2);
   auto made = rl::MlpPolicy::make(spec, init);
   REQUIRE(made);
   rl::MlpPolicy& p = **made;
-  const int n = 4;
-  const std::vector<float> rows = {0.2f, -0.5f, 1.0f,  -0.3f, 0.8f, 0.1f,
-                                   0.6f, 0.4f,  -0.9f, -0.1f, 0.0f, 0.7f};
-  const std::vector<rl::ActionSample> acts = {{-1, 0.9f}, {-1, -0.4f}, {-1, 0.1f}, {-1, -1.3f}};
-  const std::vector<float> coef = {0.8f, -1.1f, 0.5f, 0.3f};
-  const float ent = 0.1f;
-  std::fill(p.grads().begin(), p.grads().end(), 0.0f);
-  p.accumulate_gradient(rows, n, acts, coef, ent);
-  const std::vector<float> g(p.grads().begin(), p.grads().end());
-  // L = -sum coef log pi(a|s) - ent sum H, from log_probs and the log sigma parameter alone.
-  auto loss = [&] {
-    std::vector<float> lp(n);
-    p.log_probs(rows, n, acts, lp);
-    double l = 0.0;
-    for (size_t r = 0; r < lp.size(); ++r)
-      l -= coef[r] * lp[r] + ent * nn::gaussian_entropy(p.params().back());
-    return l;
-  };
-  std::span<float> theta = p.params();
-  int large = 0;
-  for (size_t i = 0; i < theta.size(); ++i) {
-    // eps 1e-3: at 1e-2 some ReLU inputs of this small net change sign.
-    const double fd = central_difference(theta[i], 1e-3f, loss);
-    CAPTURE(i);
-    CHECK(g[i] == doctest::Approx(fd).epsilon(0.02).scale(2e-3));
-    large += std::fabs(fd) > 1e-3;
+  CHECK(p.params().size() == static_cast<size_t>((2 * 4 + 4) + (4 * 2 + 2) + 2));
+  std::span<float> log_std = p.params().last(2);
+  CHECK(log_std[0] == -0.5f);
+  CHECK(log_std[1] == -0.5f);
+  log_std[0] = std::log(0.1f);
+  log_std[1] = std::log(2.0f);
+  const std::vector<float> obs = {0.3f, -0.7f};
+  std::vector<float> mu;
+  p.forward(obs, 1, mu);
+  REQUIRE(mu.size() == 2);
+  rl::ActionSample greedy;
+  p.act(obs, 1, {}, {}, true, {&greedy, 1});
+  CHECK(greedy.index == -1);
+  CHECK(greedy.component(0) == mu[0]);
+  CHECK(greedy.component(1) == mu[1]);
+  Rng rng(11);
+  const int m = 4000;
+  double s[2] = {0, 0}, ss[2] = {0, 0};
+  for (int t = 0; t < m; ++t) {
+    rl::ActionSample a;
+    p.act(obs, 1, {}, {&rng, 1}, false, {&a, 1});
+    for (int j = 0; j < 2; ++j) {
+      const double x = a.component(j) - mu[static_cast<size_t>(j)];
+      s[j] += x;
+      ss[j] += x * x;
+    }
   }
-  CHECK(large > static_cast<int>(theta.size()) / 4);
-  CHECK(g.back() != 0.0f);  // log sigma learns
+  // Each component's sample mean within 4 standard errors of its mean, its deviation within 5 %.
+  CHECK(std::fabs(s[0] / m) < 4 * 0.1 / std::sqrt(m));
+  CHECK(std::fabs(s[1] / m) < 4 * 2.0 / std::sqrt(m));
+  CHECK(std::sqrt(ss[0] / m) == doctest::Approx(0.1).epsilon(0.05));
+  CHECK(std::sqrt(ss[1] / m) == doctest::Approx(2.0).epsilon(0.05));
+  rl::MlpPolicySpec wide = spec;
+  wide.action_size = rl::kMaxActionSize + 1;
+  CHECK(wide.validate().message() == "gaussian policy action_size 5: expected 1..4");
+  rl::MlpPolicySpec cat;
+  cat.action_size = 2;
+  CHECK(cat.validate().message().find("a categorical head acts through action_values") != std::string::npos);
 }
 
 TEST_CASE("checkpoint round trip and clear errors on damaged files") {
@@ -216,6 +284,87 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   CHECK(rl::load_checkpoint(path).status().message().find("first line") != std::string::npos);
   std::remove(path.c_str());
   CHECK(rl::load_checkpoint(path).status().code() != Code::kOk);
+}
+
+TEST_CASE("obs_mean / obs_std: the network reads the normalised observation; checkpoints keep them") {
+  rl::MlpPolicySpec plain;
+  plain.obs_size = 2;
+  plain.hidden = {5};
+  plain.head = "gaussian";
+  plain.action_size = 2;
+  rl::MlpPolicySpec normed = plain;
+  normed.obs_mean = {1.0, -2.0};
+  normed.obs_std = {0.5, 4.0};
+  Rng r1(9), r2(9);
+  auto a = rl::MlpPolicy::make(plain, r1);
+  auto b = rl::MlpPolicy::make(normed, r2);
+  REQUIRE(a);
+  REQUIRE(b);
+  const std::vector<float> obs = {1.5f, 2.0f, 0.0f, -6.0f};                   // two rows
+  const std::vector<float> by_hand = {1.0f, 1.0f, -2.0f, -1.0f};              // (obs - mean) / std
+  std::vector<float> ya, yb;
+  (*a)->forward(by_hand, 2, ya);
+  (*b)->forward(obs, 2, yb);
+  CHECK(ya == yb);
+  const std::string path = temp_path("squawk_test_rl_norm.ckpt");
+  rl::Checkpoint c;
+  c.spec = normed;
+  c.params.assign((*b)->params().begin(), (*b)->params().end());
+  REQUIRE(rl::save_checkpoint(path, c).is_ok());
+  auto back = rl::load_checkpoint(path);
+  REQUIRE(back);
+  CHECK(back->spec.obs_mean == normed.obs_mean);
+  CHECK(back->spec.obs_std == normed.obs_std);
+  std::remove(path.c_str());
+  rl::MlpPolicySpec bad = normed;
+  bad.obs_std = {0.5};
+  CHECK(bad.validate().message() ==
+        "policy obs_mean / obs_std hold 2 / 1 numbers: expected obs_size = 2 each");
+  bad.obs_std = {0.5, 0.0};
+  CHECK(bad.validate().message().find("obs_std[1] = 0.000000") != std::string::npos);
+}
+
+TEST_CASE("a diagonal Gaussian checkpoint keeps its components; one without action_size has 1") {
+  const std::string path = temp_path("squawk_test_rl_gauss.ckpt");
+  for (const int d : {1, 2}) {
+    CAPTURE(d);
+    rl::MlpPolicySpec spec;
+    spec.obs_size = 3;
+    spec.hidden = {4};
+    spec.head = "gaussian";
+    spec.action_size = d;
+    Rng rng(4);
+    auto p = rl::MlpPolicy::make(spec, rng);
+    REQUIRE(p);
+    rl::Checkpoint c;
+    c.spec = spec;
+    c.params.assign((*p)->params().begin(), (*p)->params().end());
+    REQUIRE(rl::save_checkpoint(path, c).is_ok());
+    auto back = rl::load_checkpoint(path);
+    REQUIRE(back);
+    CHECK(back->spec.action_size == d);
+    auto q = rl::policy_from_checkpoint(*back);
+    REQUIRE(q);
+    CHECK(std::vector<float>((*q)->params().begin(), (*q)->params().end()) == c.params);
+    // Checkpoints written before the key existed are one-component heads.
+    auto data = files::read(path);
+    REQUIRE(data);
+    const size_t nl1 = data->find('\n'), nl2 = data->find('\n', nl1 + 1);
+    nlohmann::json h = nlohmann::json::parse(data->substr(nl1 + 1, nl2 - nl1 - 1));
+    REQUIRE(h.erase("action_size") == 1);
+    REQUIRE(files::write_atomic(path, data->substr(0, nl1 + 1) + h.dump() + data->substr(nl2)).is_ok());
+    auto old = rl::load_checkpoint(path);
+    REQUIRE(old);
+    CHECK(old->spec.action_size == 1);
+    if (d == 1) {
+      CHECK(rl::policy_from_checkpoint(*old).is_ok());
+    } else {
+      auto wrong = rl::policy_from_checkpoint(*old);
+      REQUIRE_FALSE(wrong);
+      CHECK(wrong.status().message().find("its spec needs") != std::string::npos);
+    }
+  }
+  std::remove(path.c_str());
 }
 
 TEST_CASE("training is reproducible and a resumed run continues exactly") {

@@ -11,6 +11,7 @@
 
 #include "rl/evaluator.h"
 #include "rl/mlp_policy.h"
+#include "rl/obs_norm.h"
 #include "rl/play.h"
 #include "rl/train_run.h"
 #include "rl/vpg.h"
@@ -208,17 +209,18 @@ TEST_CASE("the MLP learner raises the return of a Lua environment (sign.lua: ran
   CHECK(last->mean_steps == 4.0);
 }
 
-TEST_CASE("continuous actions (levels 0): the number clipped to [-1, 1] and mapped onto the Box") {
+TEST_CASE("continuous actions (levels 0): each number clipped to [-1, 1] and mapped onto its Box component") {
   script::LuaEnvSpec s;
-  s.action_low = {0};
-  s.action_high = {10};
-  std::vector<double> a(1);
-  script::box_action(s, -0.5, a);
+  s.action_low = {0, -2};
+  s.action_high = {10, 2};
+  std::vector<double> a(2);
+  const std::vector<double> v1 = {-0.5, 0.5}, v2 = {3.0, -7.0};
+  script::box_action(s, v1, a);
   CHECK(a[0] == 2.5);
-  script::box_action(s, 3.0, a);
+  CHECK(a[1] == 1.0);
+  script::box_action(s, v2, a);
   CHECK(a[0] == 10.0);
-  script::box_action(s, -7.0, a);
-  CHECK(a[0] == 0.0);
+  CHECK(a[1] == -2.0);
   // sign.lua pays -(a - s)^2: the action 0.25 costs 0.5625 on s = 1 and
   // 1.5625 on s = -1, and 9 (clipped to 1) costs 0 and 4.
   auto e = batch(repo("tests/data/gym/sign.lua"), 2, 0);
@@ -237,42 +239,110 @@ TEST_CASE("continuous actions (levels 0): the number clipped to [-1, 1] and mapp
     for (size_t r = 0; r < 2; ++r)
       CHECK(rewards[r] == doctest::Approx(-(a - signs[r]) * (a - signs[r])));
   }
-  auto two = script::LuaBatchEnv::make(repo("envs/static_obstacle.lua"), {}, 1, 0);
-  REQUIRE_FALSE(two);
-  CHECK(two.status().message().find(
-            "continuous actions need a one-component Box; StaticObstacleEnv-v0 has 2") !=
-        std::string::npos);
+  // Sign2-v0 (tests/data/gym/sign2.lua): two numbers per slot, row-major;
+  // the second maps [-1, 1] onto [0, 10].
+  auto two = batch(repo("tests/data/gym/sign2.lua"), 2, 0);
+  CHECK(two->action_size() == 2);
+  two->start(0, 0, 2);
+  const std::vector<float> signs(two->observations().begin(), two->observations().end());
+  REQUIRE(signs.size() == 4);
+  const std::vector<double> acts = {0.5, -1.0, 9.0, 0.2};  // slot 0: (0.5, 0); slot 1: (1, 6)
+  std::vector<double> rewards(2);
+  std::vector<uint8_t> dones(2);
+  two->step(acts, rewards, dones);
+  REQUIRE(two->error().is_ok());
+  const double want[2][2] = {{0.5, -1.0}, {1.0, 0.2}};
+  for (size_t r = 0; r < 2; ++r)
+    CHECK(rewards[r] ==
+          doctest::Approx(-(want[r][0] - signs[2 * r]) * (want[r][0] - signs[2 * r]) -
+                          (want[r][1] - signs[2 * r + 1]) * (want[r][1] - signs[2 * r + 1])));
+  // A grid batch takes one number (the class) per slot.
+  CHECK(batch(repo("tests/data/gym/sign2.lua"), 1, 3)->action_size() == 1);
+  const std::string five = (test::scratch_dir("lua_batch_env") / "five.lua").string();
+  std::ofstream(five) << "return {id = 'Five-v0', observation = {{name = 'x', size = 1}},\n"
+                         "  action = {low = {-1, -1, -1, -1, -1}, high = {1, 1, 1, 1, 1}},\n"
+                         "  max_episode_steps = 1,\n"
+                         "  reset = function(self, seed) return {0} end,\n"
+                         "  step = function(self, a) return {0}, 0, true, false end}\n";
+  auto wide = script::LuaBatchEnv::make(five, {}, 1, 0);
+  REQUIRE_FALSE(wide);
+  CHECK_MESSAGE(wide.status().message().find(
+                    "continuous actions need a Box of at most 4 components; Five-v0 has 5") !=
+                    std::string::npos,
+                wide.status().message());
 }
 
-TEST_CASE("the Gaussian head learns a Lua environment's continuous action (sign.lua: best 0)") {
-  auto train_envs = batch(repo("tests/data/gym/sign.lua"), 4, 0);
-  auto eval_envs = batch(repo("tests/data/gym/sign.lua"), 4, 0);
+TEST_CASE("the Gaussian head learns a Lua environment's continuous action (sign.lua, sign2.lua: best 0)") {
+  for (const std::string file : {"sign.lua", "sign2.lua"}) {
+    CAPTURE(file);
+    auto train_envs = batch(repo(("tests/data/gym/" + file).c_str()), 4, 0);
+    auto eval_envs = batch(repo(("tests/data/gym/" + file).c_str()), 4, 0);
+    rl::MlpPolicySpec spec;
+    spec.obs_size = train_envs->obs_size();
+    spec.hidden = {16};
+    spec.head = "gaussian";
+    spec.action_size = train_envs->action_size();
+    Rng init(3);
+    auto p = rl::MlpPolicy::make(spec, init);
+    REQUIRE(p);
+    rl::TrainConfig tc;
+    tc.estimator = "ppo";
+    tc.episodes = 640;
+    tc.episodes_per_update = 16;
+    tc.num_envs = 4;
+    tc.lr = tc.lr_final = 1e-2;
+    tc.value_hidden = {};
+    tc.eval_every = 0;
+    auto before = rl::evaluate(**p, *eval_envs, {100, 7, true});
+    REQUIRE(before);
+    CHECK(before->mean_reward < -2.0);
+    rl::Trainer tr(**p, *train_envs, tc, 0);
+    rl::TrainProgress progress;
+    auto ended = rl::run_training(tr, **p, *eval_envs, tc, 7, progress, {},
+                                  [](const rl::UpdateReport&) -> Result<bool> { return true; });
+    REQUIRE_MESSAGE(ended.is_ok(), ended.status().message());
+    auto after = rl::evaluate(**p, *eval_envs, {100, 7, true});
+    REQUIRE(after);
+    MESSAGE(file << ", Gaussian head (mean action): " << before->mean_reward << " before, "
+                 << after->mean_reward << " after 40 updates");
+    CHECK(after->mean_reward > -0.5 * spec.action_size);
+  }
+}
+
+TEST_CASE("observation_stats: each number's mean and deviation over the episodes' decisions") {
+  // sign2.lua's observations do not depend on the actions: the statistics of
+  // the policy's episodes are those of the same episodes played with zeros.
+  auto envs = batch(repo("tests/data/gym/sign2.lua"), 3, 0);
   rl::MlpPolicySpec spec;
-  spec.obs_size = 1;
-  spec.hidden = {16};
+  spec.obs_size = 2;
+  spec.hidden = {4};
   spec.head = "gaussian";
-  Rng init(3);
+  spec.action_size = 2;
+  Rng init(1);
   auto p = rl::MlpPolicy::make(spec, init);
   REQUIRE(p);
-  rl::TrainConfig tc;
-  tc.estimator = "ppo";
-  tc.episodes = 640;
-  tc.episodes_per_update = 16;
-  tc.num_envs = 4;
-  tc.lr = tc.lr_final = 1e-2;
-  tc.value_hidden = {};
-  tc.eval_every = 0;
-  auto before = rl::evaluate(**p, *eval_envs, {100, 7, true});
-  REQUIRE(before);
-  CHECK(before->mean_reward < -2.0);
-  rl::Trainer tr(**p, *train_envs, tc, 0);
-  rl::TrainProgress progress;
-  auto ended = rl::run_training(tr, **p, *eval_envs, tc, 7, progress, {},
-                                [](const rl::UpdateReport&) -> Result<bool> { return true; });
-  REQUIRE_MESSAGE(ended.is_ok(), ended.status().message());
-  auto after = rl::evaluate(**p, *eval_envs, {100, 7, true});
-  REQUIRE(after);
-  MESSAGE("sign.lua, Gaussian head (mean action): " << before->mean_reward << " before, "
-                                                    << after->mean_reward << " after 40 updates");
-  CHECK(after->mean_reward > -0.5);
+  auto stats = rl::observation_stats(**p, *envs, 5, 50);
+  REQUIRE_MESSAGE(stats.is_ok(), stats.status().message());
+  double sum[2] = {0, 0}, sq[2] = {0, 0};
+  long long rows = 0;
+  rl::Driver zeros{[&](rl::Turn& t) {
+                     for (size_t i = 0; i < t.obs.size(); ++i) {
+                       sum[i % 2] += t.obs[i];
+                       sq[i % 2] += t.obs[i] * t.obs[i];
+                     }
+                     rows += static_cast<long long>(t.slots.size());
+                     return Status::ok();
+                   },
+                   {}};
+  REQUIRE(rl::play(*envs, 5, 0, 50, zeros).value_or(false));
+  CHECK(rows == 200);  // 50 episodes of 4 steps
+  for (size_t j = 0; j < 2; ++j) {
+    const double mean = sum[j] / rows;
+    CHECK(stats->mean[j] == doctest::Approx(mean));
+    CHECK(stats->std[j] == doctest::Approx(std::sqrt(sq[j] / rows - mean * mean)));
+    CHECK(std::fabs(stats->mean[j]) < 0.3);  // signs of +-1, drawn evenly
+    CHECK(stats->std[j] > 0.9);
+  }
+  CHECK(rl::observation_stats(**p, *envs, 5, 0).status().message() ==
+        "observation statistics need at least 1 episode, got 0");
 }
