@@ -141,6 +141,20 @@ check(not tr("turn KLM1234 north").typed, "a compass word is English")
 -- a conditional's command typed without its aircraft gets the condition's
 check_eq(said(tr("klm1234 atalt fl080 spd 210")), "ATALT klm1234 fl080 spd klm1234 210")
 check(not tr("delete the aircraft").typed, "glue words are English")
+-- a callsign spelled in the phonetic alphabet that starts with a command's name (ECHO) is English;
+-- ECHO with a message stays TrafScript
+do
+  local ga = squawk.sim.new()
+  check(ga:exec("CRE ECKJB P28A 40.8 -3.9 180 6500 110"))
+  check(ga:exec("CRE EDFXA C172 40.9 -3.8 090 4500 100"))
+  local function gt(text) return graph.translate(text, { sim = ga, mode = "offline" }) end
+  check_eq(said(gt("Echo Charlie Kilo Juliett Bravo, climb to seven thousand five hundred feet")), "ALT ECKJB 7500")
+  check_eq(said(gt("echo charlie kilo juliett bravo reduce speed nine zero knots")), "SPD ECKJB 90")
+  check_eq(said(gt("Echo Delta Foxtrot Xray Alfa turn left heading two seven zero")), "HDG EDFXA 270 LEFT")
+  check(not gt("Echo Delta Foxtrot Xray Alfa, descend three thousand feet").typed, "a spelled callsign is English")
+  check(gt("ECHO hello world").typed == true, "ECHO with a message runs as typed")
+  check(gt("echo sector Bravo opens").typed == true, "a message that spells nothing runs as typed")
+end
 -- a preposition is no argument: "create X at Y" is English (CRE would take "AT" for the type)
 check(not tr("create KLM77 at 52 4").typed, "a preposition is English")
 check(tr("create KLM77 at 52 4").ask ~= nil, "a create with no type asks")
