@@ -446,6 +446,14 @@ return {
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
   },
+  -- digits said in Spanish or Portuguese by a controller speaking English ("Avianca cero one nine",
+  -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit
+  -- only beside another digit, said or typed, of either language, or a spelled letter ("tres" alone stays
+  -- a word)
+  foreign_digits = { cero = "zero", uno = "one", dos = "two", tres = "three", ["três"] = "three",
+    cuatro = "four", cinco = "five", seis = "six", siete = "seven", ocho = "eight", nueve = "nine",
+    dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
+    nove = "nine" },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits

@@ -1154,6 +1154,14 @@ end
 check_eq(said(tr("what's the wind at 52.1, 4.3?")), "GETWIND 52.1 4.3")
 check_eq(said(tr("show me the wind at 52.1 4.3 at FL200")), "GETWIND 52.1 4.3 FL200")
 check_eq(said(tr("print 'run 3 started' to the log")), "ECHO run 3 started")
+-- digits said in Spanish or Portuguese beside another digit or a spelled letter are those digits;
+-- one alone is a word squawk does not know, asked about
+check_eq(said(tr("KLM uno dos tres cuatro, descend flight level two four zero")), "ALT KLM1234 FL240")
+check_eq(said(tr("KLM siete siete reduce speed dos dos cero knots")), "SPD KLM77 220")
+check_eq(said(tr("KLM one dois três quatro climb flight level três meia zero")), "ALT KLM1234 FL360")
+check_eq(said(tr("Speedbird ocho charlie kilo turn left heading cero nueve cero")), "HDG BAW8CK 90 LEFT")
+check_eq(said(tr("KLM77 tres descend flight level one two zero")),
+  "ASK I have ALT KLM77 FL120. What does 'tres' mean?")
 check(said(tr("delete the pilots' aircraft DLH4AX")):find("^ASK") ~= nil, "an apostrophe opens no quote")
 -- the performance model by name: PERF CLASS / PERF OPENAP; none or both named is asked
 check_eq(said(tr("switch to the class-based performance model")), "PERF CLASS")
