@@ -1150,6 +1150,17 @@ do
   check_eq(mt("Sky Dubai double two, descend flight level two four zero"), "ALT FDB22 FL240")
   check_eq(mt("set the simulation to double speed"), "DTMULT 2")
 end
+-- Latin American and Iberian airlines by their telephony or the name they fly under
+do
+  local la = squawk.sim.new()
+  check(la:exec("CRE ARG1303 B738 -34.6 -58.4 90 FL200 280"))
+  check(la:exec("CRE GLO1120 B738 -23.4 -46.5 90 FL200 280"))
+  local function lt(text) return said(graph.translate(text, { sim = la, mode = "offline" })) end
+  check_eq(lt("Aerolineas Argentinas one three zero three, descend flight level one two zero"), "ALT ARG1303 FL120")
+  check_eq(lt("Gol one one two zero, turn right heading zero niner zero"), "HDG GLO1120 90 RIGHT")
+  check_eq(lt("create Aerosky one one five, A320, at -33.4 -70.8, heading 350, FL100, 250 knots"),
+    "CRE SKU115 A320 -33.4 -70.8 350 FL100 250")
+end
 -- the wind at a position asked for is GETWIND; text in single quotes is quoted text
 check_eq(said(tr("what's the wind at 52.1, 4.3?")), "GETWIND 52.1 4.3")
 check_eq(said(tr("show me the wind at 52.1 4.3 at FL200")), "GETWIND 52.1 4.3 FL200")
