@@ -93,7 +93,10 @@ return {
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
         "readback", "read-back", "incorrect", "said",
         -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
-        "identified", "identification" },
+        "identified", "identification",
+        -- the same courtesy in Spanish or Portuguese ("descend FL120, gracias", "momentito, por favor")
+        "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
+        "tardes", "noches" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",

@@ -1171,6 +1171,8 @@ check_eq(said(tr("KLM uno dos tres cuatro, descend flight level two four zero"))
 check_eq(said(tr("KLM siete siete reduce speed dos dos cero knots")), "SPD KLM77 220")
 check_eq(said(tr("KLM one dois três quatro climb flight level três meia zero")), "ALT KLM1234 FL360")
 check_eq(said(tr("Speedbird ocho charlie kilo turn left heading cero nueve cero")), "HDG BAW8CK 90 LEFT")
+check_eq(said(tr("KLM77 descend flight level one two zero, gracias")), "ALT KLM77 FL120")
+check_eq(said(tr("freeze the simulation, momentito, por favor")), "HOLD")
 check_eq(said(tr("KLM77 tres descend flight level one two zero")),
   "ASK I have ALT KLM77 FL120. What does 'tres' mean?")
 check(said(tr("delete the pilots' aircraft DLH4AX")):find("^ASK") ~= nil, "an apostrophe opens no quote")
