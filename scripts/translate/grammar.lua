@@ -159,9 +159,9 @@ end
 local function know_all(v, seen)
   if type(v) == "string" then return know(v) end
   -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
-  -- keep: they account for no word)
+  -- keep, and lexicon.foreign_digits are digits only beside another: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
-      or v == lexicon.aside or v == lexicon.self_correction.just_the then
+      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits then
     return
   end
   seen[v] = true
@@ -312,6 +312,28 @@ local NUMBER_WORDS = set_of({ "zero", "one", "two", "three", "four", "five", "si
   "niner", "tree", "fife", "fower", "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen",
   "seventeen", "eighteen", "nineteen", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety",
   "hundred", "thousand" })
+-- Digits said in Spanish or Portuguese (lexicon.foreign_digits) beside another digit of either
+-- language, said or typed, or a spelled letter, are those digits in English: "Copa tres one one" ->
+-- "Copa three one one", "Speedbird ocho charlie kilo" -> "Speedbird eight charlie kilo".
+local function foreign_digits(text)
+  local toks, bare = {}, {}
+  for w in text:gmatch("%S+") do
+    toks[#toks + 1] = w
+    bare[#bare + 1] = w:lower():gsub("%p+$", "")
+  end
+  local F = lexicon.foreign_digits
+  local function digit(k)
+    local w = bare[k]
+    return w ~= nil and (F[w] ~= nil or NUMBER_WORDS[w] == true or w:match("^%d+$") ~= nil
+      or lexicon.phonetic[w] ~= nil)
+  end
+  return tokens.rewrite(text, toks, function(i)
+    local en = F[bare[i]]
+    -- (punctuation closing the word before parts the two: "Iberia tres uno... Iberia three")
+    local beside = (digit(i - 1) and not toks[i - 1]:match("%p$")) or (digit(i + 1) and not toks[i]:match("%p$"))
+    if en and beside then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
+  end)
+end
 local function heard_word_is(w, set)
   if not w then return false end
   w = w:lower():gsub("%p+$", "")
@@ -524,7 +546,7 @@ local function impossible_minutes(text)
   return nil
 end
 local function written_forms(text)
-  text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(text))))))
+  text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(foreign_digits(text)))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
   -- leave it as typed

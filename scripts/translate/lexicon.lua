@@ -93,7 +93,10 @@ return {
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
         "readback", "read-back", "incorrect", "said",
         -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
-        "identified", "identification" },
+        "identified", "identification",
+        -- the same courtesy in Spanish or Portuguese ("descend FL120, gracias", "momentito, por favor")
+        "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
+        "tardes", "noches" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -446,6 +449,14 @@ return {
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
   },
+  -- digits said in Spanish or Portuguese by a controller speaking English ("Avianca cero one nine",
+  -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit
+  -- only beside another digit, said or typed, of either language, or a spelled letter ("tres" alone stays
+  -- a word)
+  foreign_digits = { cero = "zero", uno = "one", dos = "two", tres = "three", ["três"] = "three",
+    cuatro = "four", cinco = "five", seis = "six", siete = "seven", ocho = "eight", nueve = "nine",
+    dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
+    nove = "nine" },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits

@@ -112,6 +112,14 @@ return {
     { "lan chile", "LAN" },
     { "tam", "TAM" },
     { "gol transporte", "GLO" },
+    { "gol", "GLO" },
+    { "argentina", "ARG" },
+    { "aerolineas argentinas", "ARG" },
+    { "aerosky", "SKU" },  -- (Sky Airline's ICAO telephony)
+    { "sky airline", "SKU" },
+    { "iberexpres", "IBS" },  -- (Iberia Express)
+    { "air nostrum", "ANE" },
+    { "binter", "IBB" },
     { "caribbean airlines", "BWA" },
     { "caribbean", "BWA" },
     { "fedex", "FDX" },

@@ -357,6 +357,9 @@ function M.typed(state, ctx)
     if c:find("[?!]") or c:find("%d,%d%d%d") then return "english" end
     local first, second, rest = c:match("^([%w_]+)[%s,]*([%w_]*)(.*)$")
     if not first then return "english" end
+    -- a letter of the spelling alphabet that is also a command's name, followed by another letter
+    -- ("Echo Charlie Kilo Juliett Bravo, climb ..."), spells a callsign: English, not ECHO
+    if lexicon.phonetic[first:lower()] and lexicon.phonetic[second:lower()] then return "english" end
     if not canonical_name(first) then
       -- "KL204 HDG 045": BlueSky's callsign-first form, run command first
       if not canonical_name(second) or not scratch:get(first) then return "english" end

@@ -141,6 +141,20 @@ check(not tr("turn KLM1234 north").typed, "a compass word is English")
 -- a conditional's command typed without its aircraft gets the condition's
 check_eq(said(tr("klm1234 atalt fl080 spd 210")), "ATALT klm1234 fl080 spd klm1234 210")
 check(not tr("delete the aircraft").typed, "glue words are English")
+-- a callsign spelled in the phonetic alphabet that starts with a command's name (ECHO) is English;
+-- ECHO with a message stays TrafScript
+do
+  local ga = squawk.sim.new()
+  check(ga:exec("CRE ECKJB P28A 40.8 -3.9 180 6500 110"))
+  check(ga:exec("CRE EDFXA C172 40.9 -3.8 090 4500 100"))
+  local function gt(text) return graph.translate(text, { sim = ga, mode = "offline" }) end
+  check_eq(said(gt("Echo Charlie Kilo Juliett Bravo, climb to seven thousand five hundred feet")), "ALT ECKJB 7500")
+  check_eq(said(gt("echo charlie kilo juliett bravo reduce speed nine zero knots")), "SPD ECKJB 90")
+  check_eq(said(gt("Echo Delta Foxtrot Xray Alfa turn left heading two seven zero")), "HDG EDFXA 270 LEFT")
+  check(not gt("Echo Delta Foxtrot Xray Alfa, descend three thousand feet").typed, "a spelled callsign is English")
+  check(gt("ECHO hello world").typed == true, "ECHO with a message runs as typed")
+  check(gt("echo sector Bravo opens").typed == true, "a message that spells nothing runs as typed")
+end
 -- a preposition is no argument: "create X at Y" is English (CRE would take "AT" for the type)
 check(not tr("create KLM77 at 52 4").typed, "a preposition is English")
 check(tr("create KLM77 at 52 4").ask ~= nil, "a create with no type asks")
@@ -1136,10 +1150,31 @@ do
   check_eq(mt("Sky Dubai double two, descend flight level two four zero"), "ALT FDB22 FL240")
   check_eq(mt("set the simulation to double speed"), "DTMULT 2")
 end
+-- Latin American and Iberian airlines by their telephony or the name they fly under
+do
+  local la = squawk.sim.new()
+  check(la:exec("CRE ARG1303 B738 -34.6 -58.4 90 FL200 280"))
+  check(la:exec("CRE GLO1120 B738 -23.4 -46.5 90 FL200 280"))
+  local function lt(text) return said(graph.translate(text, { sim = la, mode = "offline" })) end
+  check_eq(lt("Aerolineas Argentinas one three zero three, descend flight level one two zero"), "ALT ARG1303 FL120")
+  check_eq(lt("Gol one one two zero, turn right heading zero niner zero"), "HDG GLO1120 90 RIGHT")
+  check_eq(lt("create Aerosky one one five, A320, at -33.4 -70.8, heading 350, FL100, 250 knots"),
+    "CRE SKU115 A320 -33.4 -70.8 350 FL100 250")
+end
 -- the wind at a position asked for is GETWIND; text in single quotes is quoted text
 check_eq(said(tr("what's the wind at 52.1, 4.3?")), "GETWIND 52.1 4.3")
 check_eq(said(tr("show me the wind at 52.1 4.3 at FL200")), "GETWIND 52.1 4.3 FL200")
 check_eq(said(tr("print 'run 3 started' to the log")), "ECHO run 3 started")
+-- digits said in Spanish or Portuguese beside another digit or a spelled letter are those digits;
+-- one alone is a word squawk does not know, asked about
+check_eq(said(tr("KLM uno dos tres cuatro, descend flight level two four zero")), "ALT KLM1234 FL240")
+check_eq(said(tr("KLM siete siete reduce speed dos dos cero knots")), "SPD KLM77 220")
+check_eq(said(tr("KLM one dois três quatro climb flight level três meia zero")), "ALT KLM1234 FL360")
+check_eq(said(tr("Speedbird ocho charlie kilo turn left heading cero nueve cero")), "HDG BAW8CK 90 LEFT")
+check_eq(said(tr("KLM77 descend flight level one two zero, gracias")), "ALT KLM77 FL120")
+check_eq(said(tr("freeze the simulation, momentito, por favor")), "HOLD")
+check_eq(said(tr("KLM77 tres descend flight level one two zero")),
+  "ASK I have ALT KLM77 FL120. What does 'tres' mean?")
 check(said(tr("delete the pilots' aircraft DLH4AX")):find("^ASK") ~= nil, "an apostrophe opens no quote")
 -- the performance model by name: PERF CLASS / PERF OPENAP; none or both named is asked
 check_eq(said(tr("switch to the class-based performance model")), "PERF CLASS")
