@@ -708,6 +708,15 @@ function G:commentary(b, e, lead)
   return true
 end
 
+-- True when the clause from b names an instruction given "to" someone (", we want the easyJet to descend",
+-- ", I need EZY45 to turn"): what follows is wanted of an aircraft, never a purpose set aside.
+local function names_instructed(self, b)
+  for x = b, commentary_end(self, b) - 2 do
+    if self:word(x, "to") and self:intent_at(x + 1) then return true end
+  end
+  return false
+end
+
 function G:in_reason(i)
   if not self.reason then
     -- reason[i]: the nearest of a reason word (or a purpose, G:purpose) and a sentence break before
@@ -778,7 +787,7 @@ function G:in_reason(i)
         inside = true
       elseif t.kind == "punct" and (self:word(k + 1, "we") or self:word(k + 1, "i") and not self:word(k + 3, "to"))
           and self:word(k + 2, "@purpose_verbs")
-          and not self:word_in(k + 3, math.min(#self.t + 1, k + 5), "you") then
+          and not self:word_in(k + 3, math.min(#self.t + 1, k + 5), "you") and not names_instructed(self, k + 3) then
         -- (", we want it crossing the Speedbird's track", ", I want the Beeline to catch him", ", we don't
         -- need fine resolution": the purpose said after the instruction; ", we need you to climb" and
         -- ", I want to have a look at BAW123's position" instruct)
@@ -1600,7 +1609,7 @@ function G:unknown_names()
     return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
   end
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r)))
+    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
