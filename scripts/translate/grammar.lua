@@ -678,6 +678,13 @@ local function commentary_end(self, b)
   return e
 end
 
+-- True when the word at x is an airline's name said bare, capitalised, as a callsign is ("we want Finnair
+-- lower"): an aircraft addressed, never words of a remark.
+local function airline_bare(self, x)
+  return self.t[x].kind == "word" and self.t[x].raw:match("^%u") ~= nil and not self:word(x - 1, CM_DETERMINERS)
+    and self:airline_at(x) ~= nil
+end
+
 -- True when the tokens b .. e-1 may be set aside as commentary on an instruction (lexicon.aside):
 -- no value, no place, no aircraft first ("- TOM6RT too"), no instruction word (one after a determiner is
 -- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
@@ -695,7 +702,7 @@ function G:commentary(b, e, lead)
     if t.kind == "word" then
       local last = x == e - 1 or self.t[x + 1].kind == "punct"
       if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
-          or self:word(x, "@correction")
+          or self:word(x, "@correction") or airline_bare(self, x)
           or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
         return false
       end
@@ -709,10 +716,11 @@ function G:commentary(b, e, lead)
 end
 
 -- True when the clause from b names an instruction given "to" someone (", we want the easyJet to descend",
--- ", I need EZY45 to turn"): what follows is wanted of an aircraft, never a purpose set aside.
+-- ", I need EZY45 to turn") or an airline said bare: what follows is wanted of an aircraft, never a
+-- purpose set aside.
 local function names_instructed(self, b)
-  for x = b, commentary_end(self, b) - 2 do
-    if self:word(x, "to") and self:intent_at(x + 1) then return true end
+  for x = b, commentary_end(self, b) - 1 do
+    if (self:word(x, "to") and self:intent_at(x + 1)) or airline_bare(self, x) then return true end
   end
   return false
 end
@@ -1903,10 +1911,25 @@ end
 function G:unaccounted()
   -- the words no list explains, and the negations and conditions: only these need the parse's account
   local explained, said, ignored = self.explained or {}, {}, self.world.ignored or {}
+  -- (an airline's name said bare, "we want Finnair lower", when no command names an aircraft of it, none
+  -- creates one, "a KLM Cityhopper Embraer", no word before it makes it other traffic, "for Speedbird", and
+  -- no correction after it takes it back, "United correction Southwest six eighty six")
+  local function airline_left(i)
+    if not airline_bare(self, i) or not self.t[i].raw:match("^%u%l")
+        or self:word(i - 1, "@airline_context @aircraft_context for") then
+      return false
+    end
+    local icao, e = self:airline_at(i)
+    if self:word(self:skip_fillers(e, false), "@correction") then return false end
+    for _, c in ipairs(self.out) do
+      if c:find("%f[%w]" .. icao .. "%w") or c:match("^CRE ") then return false end
+    end
+    return true
+  end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text)) then
+        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text) or airline_left(i)) then
       said[#said + 1] = i
     end
   end

@@ -1632,4 +1632,25 @@ do
   check_eq(ex("NAX12 climb FL150, no wait, descend FL100"), "ALT NAX12 FL100")
   check_eq(ex("NAX12 climb FL150, sorry, and turn left heading 030"), "ALT NAX12 FL150 ; HDG NAX12 30 LEFT")
   check_eq(ex("For the overtake case, FIN7 speed 320"), "SPD FIN7 320")
+  -- "for" an aircraft opening the request, then another named: only the other is instructed
+  check_eq(ex("For ICE44, NAX12 speed 320"), "SPD NAX12 320")
+  check_eq(ex("for spacing on ICE44, FIN7 reduce 250"), "SPD FIN7 250")
+  check_eq(ex("for ICE44, climb FL300"), "ALT ICE44 FL300")
+  check_eq(ex("ICE44, NAX12 speed 320"), "SPD ICE44 320 ; SPD NAX12 320")
+  -- a remark that wants something "to" be done by an aircraft or an airline is asked about
+  asked("NAX12 climb FL190, we want the Icelandair to descend")
+  asked("NAX12 climb FL190, I need ICE44 to turn")
+  asked("NAX12 climb FL190, we want Finnair to slow down")
+  asked("NAX12 climb FL190, we want Finnair lower")
+  check_eq(ex("NAX12 climb FL190, I want the Icelandair to catch him"), "ALT NAX12 FL190")
+  -- a type said again after a correction replaces it
+  check_eq(ex("create TST1 B738... sorry A320, at 60.2 11.6 heading 200 FL100 250 kts"),
+    "CRE TST1 A320 60.2 11.6 200 FL100 250")
+  check_eq(ex("create TST1 type A320, I mean B752, at 60.2 11.6 heading 200 FL100 250 kts"),
+    "CRE TST1 B752 60.2 11.6 200 FL100 250")
+  -- a climb or descent after a creation's level with no level of its own is not dropped
+  asked("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts going to climb")
+  asked("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts, will descend")
+  check_eq(ex("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts then climb FL200"),
+    "CRE TST1 A320 60.2 11.6 200 FL100 250 ; ALT TST1 FL200")
 end
