@@ -1654,3 +1654,17 @@ do
   check_eq(ex("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts then climb FL200"),
     "CRE TST1 A320 60.2 11.6 200 FL100 250 ; ALT TST1 FL200")
 end
+-- telephony: "Alpine" is easyJet Europe (EJU), "Topswiss" easyJet Switzerland (EZS); "Lauda" names both
+-- Lauda Air (LDA) and Lauda Motion (LDM), so a callsign said with it is the one of them whose characters fit
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE EJU74QP A320 47.6 12.8 300 FL200 270", "CRE EZS12 A320 47.8 12.8 300 FL220 270",
+      "CRE LDM82Y A320 47.3 16.0 020 FL200 280" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  check_eq(ex("Alpine seven four quebec papa turn left heading 270"), "HDG EJU74QP 270 LEFT")
+  check_eq(ex("Topswiss one two descend FL150"), "ALT EZS12 FL150")
+  check_eq(ex("Lauda 82Y reduce 230"), "SPD LDM82Y 230")
+  check(ex("Lauda eight three yankee descend FL100"):find("^ASK") ~= nil)
+end
