@@ -1850,6 +1850,14 @@ function G:explained_spans(issued, kinds)
       if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
     end
   end
+  -- "direct to the merge point MRG01", "the metering fix RILAX": a word naming the place's role, before
+  -- "point" or a waypoint noun said straight before a place issued (a word with a meaning, "not", never)
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" and issued[r.name:lower()] and r.b > 2 and self:word(r.b - 1, "point @waypoint_nouns")
+        and self.t[r.b - 2].kind == "word" and not MEANING[self.t[r.b - 2].text] and not self.triggers[r.b - 2] then
+      inside[r.b - 2] = true
+    end
+  end
   for i = 1, #self.t do
     -- "to SFO instead of Oakland", "Stansted rather than Luton": the name replaced
     if ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))

@@ -1667,4 +1667,9 @@ do
   check_eq(ex("Topswiss one two descend FL150"), "ALT EZS12 FL150")
   check_eq(ex("Lauda 82Y reduce 230"), "SPD LDM82Y 230")
   check(ex("Lauda eight three yankee descend FL100"):find("^ASK") ~= nil)
+  -- a word naming a place's role before "point" or "fix" and the place's name
+  check(lab:exec("DEFWPT MRG01 47.5 13.0"))
+  check(lab:exec("ADDWPT EJU74QP MRG01"))
+  check_eq(ex("EJU74QP direct to the merge point MRG01"), "DIRECT EJU74QP MRG01")
+  check_eq(ex("EJU74QP proceed to the metering fix MRG01"), "DIRECT EJU74QP MRG01")
 end
