@@ -187,6 +187,16 @@ bool same_command(std::string_view produced, std::string_view expected) {
     return same_command(text::join(std::vector<std::string>(p.begin() + 3, p.end()), " "),
                         text::join(std::vector<std::string>(e.begin() + 3, e.end()), " "));
   }
+  // RMETHV ON and V/S both switch vertical resolutions on, OFF and NONE off
+  // (commands_asas.cpp rmethv).
+  if (cmd == "RMETHV") {
+    auto fold = [](std::string& v) {
+      if (text::iequals(v, "V/S")) v = "ON";
+      else if (text::iequals(v, "NONE")) v = "OFF";
+    };
+    for (size_t i = 1; i < p.size(); ++i) fold(p[i]);
+    for (size_t i = 1; i < e.size(); ++i) fold(e[i]);
+  }
   // A turn direction produced where the expected HDG states none: the
   // expected line predates the extension and names the same heading.
   if (cmd == "HDG" && p.size() == 4 && e.size() == 3 && is_turn_word(p[3])) p.pop_back();

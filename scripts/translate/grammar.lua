@@ -700,6 +700,13 @@ local function commentary_end(self, b)
   return e
 end
 
+-- True when the word at x is an airline's name said bare, capitalised, as a callsign is ("we want Finnair
+-- lower"): an aircraft addressed, never words of a remark.
+local function airline_bare(self, x)
+  return self.t[x].kind == "word" and self.t[x].raw:match("^%u") ~= nil and not self:word(x - 1, CM_DETERMINERS)
+    and self:airline_at(x) ~= nil
+end
+
 -- True when the tokens b .. e-1 may be set aside as commentary on an instruction (lexicon.aside):
 -- no value, no place, no aircraft first ("- TOM6RT too"), no instruction word (one after a determiner is
 -- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
@@ -717,7 +724,7 @@ function G:commentary(b, e, lead)
     if t.kind == "word" then
       local last = x == e - 1 or self.t[x + 1].kind == "punct"
       if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
-          or self:word(x, "@correction")
+          or self:word(x, "@correction") or airline_bare(self, x)
           or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
         return false
       end
@@ -728,6 +735,16 @@ function G:commentary(b, e, lead)
     end
   end
   return true
+end
+
+-- True when the clause from b names an instruction given "to" someone (", we want the easyJet to descend",
+-- ", I need EZY45 to turn") or an airline said bare: what follows is wanted of an aircraft, never a
+-- purpose set aside.
+local function names_instructed(self, b)
+  for x = b, commentary_end(self, b) - 1 do
+    if (self:word(x, "to") and self:intent_at(x + 1)) or airline_bare(self, x) then return true end
+  end
+  return false
 end
 
 function G:in_reason(i)
@@ -800,7 +817,7 @@ function G:in_reason(i)
         inside = true
       elseif t.kind == "punct" and (self:word(k + 1, "we") or self:word(k + 1, "i") and not self:word(k + 3, "to"))
           and self:word(k + 2, "@purpose_verbs")
-          and not self:word_in(k + 3, math.min(#self.t + 1, k + 5), "you") then
+          and not self:word_in(k + 3, math.min(#self.t + 1, k + 5), "you") and not names_instructed(self, k + 3) then
         -- (", we want it crossing the Speedbird's track", ", I want the Beeline to catch him", ", we don't
         -- need fine resolution": the purpose said after the instruction; ", we need you to climb" and
         -- ", I want to have a look at BAW123's position" instruct)
@@ -1622,7 +1639,7 @@ function G:unknown_names()
     return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
   end
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r)))
+    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
@@ -1855,6 +1872,14 @@ function G:explained_spans(issued, kinds)
       if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
     end
   end
+  -- "direct to the merge point MRG01", "the metering fix RILAX": a word naming the place's role, before
+  -- "point" or a waypoint noun said straight before a place issued (a word with a meaning, "not", never)
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" and issued[r.name:lower()] and r.b > 2 and self:word(r.b - 1, "point @waypoint_nouns")
+        and self.t[r.b - 2].kind == "word" and not MEANING[self.t[r.b - 2].text] and not self.triggers[r.b - 2] then
+      inside[r.b - 2] = true
+    end
+  end
   for i = 1, #self.t do
     -- "to SFO instead of Oakland", "Stansted rather than Luton": the name replaced
     if ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
@@ -1916,10 +1941,25 @@ end
 function G:unaccounted()
   -- the words no list explains, and the negations and conditions: only these need the parse's account
   local explained, said, ignored = self.explained or {}, {}, self.world.ignored or {}
+  -- (an airline's name said bare, "we want Finnair lower", when no command names an aircraft of it, none
+  -- creates one, "a KLM Cityhopper Embraer", no word before it makes it other traffic, "for Speedbird", and
+  -- no correction after it takes it back, "United correction Southwest six eighty six")
+  local function airline_left(i)
+    if not airline_bare(self, i) or not self.t[i].raw:match("^%u%l")
+        or self:word(i - 1, "@airline_context @aircraft_context for") then
+      return false
+    end
+    local icao, e = self:airline_at(i)
+    if self:word(self:skip_fillers(e, false), "@correction") then return false end
+    for _, c in ipairs(self.out) do
+      if c:find("%f[%w]" .. icao .. "%w") or c:match("^CRE ") then return false end
+    end
+    return true
+  end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text)) then
+        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text) or airline_left(i)) then
       said[#said + 1] = i
     end
   end

@@ -249,6 +249,24 @@ end
 -- 310" instructs EZY45).
 function m:as_context(i)
   if self:word(i - 1, "bring get put send have let make tell ask") then return false end
+  -- "For TOM6RT, EXS34M speed 320", "for spacing on TOM6RT, ...": "for" opening its sentence within the
+  -- 3 words before an aircraft and a comma, then another aircraft named: the first is the one the
+  -- instruction is for the sake of, never instructed
+  local lead = false
+  for k = i - 1, math.max(1, i - 4), -1 do
+    if self:intent_at(k) or self.t[k].kind == "punct" then break end
+    local before = self.t[k - 1]
+    if self:word(k, "for") and (before == nil or (before.kind == "punct" and before.text ~= ",")) then lead = true end
+  end
+  if lead then
+    for _, r in ipairs(self:refs_in(i, #self.t + 1, "aircraft")) do
+      if r.b == i and self.t[r.e] and self.t[r.e].text == "," then
+        for _, o in ipairs(self:refs_in(r.e + 1, #self.t + 1, "aircraft")) do
+          if o.exists and o.name ~= r.name then return true end
+        end
+      end
+    end
+  end
   for k = i - 1, math.max(1, i - 3), -1 do
     -- (nor across a sentence's end: "OK, conflict time. Jetairfly climb FL310")
     if self:intent_at(k) or (self.t[k].kind == "punct" and self.t[k].text ~= ",") then return false end

@@ -87,6 +87,10 @@ return function(H, f, compass)
     end
     local types = self:refs_in(s.b, s.e, "type")
     local actype = types[1] and types[1].name
+    -- ("B738... sorry, A320": a type said again after a correction replaces the one before it)
+    for k = 2, #types do
+      if self:word_in(types[k - 1].e, types[k].b, "@correction") then actype = types[k].name end
+    end
     local model, near
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
       if r.exists then near = near or r.name end
@@ -262,6 +266,18 @@ return function(H, f, compass)
       return self:need("What heading should " .. id .. " have?")
     end
     if (spd or mach) and not alt then return self:need("What altitude should " .. id .. " have?") end
+    -- "create ... FL100 250 knots, going to climb": a climb or descent said after the level with no level
+    -- of its own is an instruction the creation cannot carry (its level is then the state at creation): ask
+    for i = s.trig + 1, s.e - 1 do
+      if self:word(i, "climb climbs descend descends") and self:intent_at(i) == "alt" then
+        local after = false
+        for _, q in ipairs(qs) do after = after or (q.b > i and q.kind == "alt") end
+        if not after then
+          return self:need(string.format("Should %s %s after it is created? Please give the level.", id:upper(),
+            self.t[i].text:gsub("s$", "")))
+        end
+      end
+    end
     id = id:upper()
     local cmd = "CRE " .. id .. " " .. actype .. " " .. (named_at or (f.num(lat) .. " " .. f.num(lon)))
     if hdg or alt or spd or mach then cmd = cmd .. " " .. f.num(hdg or 0) end

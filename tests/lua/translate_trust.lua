@@ -1667,4 +1667,44 @@ do
   check_eq(ex("NAX12 climb FL150, no wait, descend FL100"), "ALT NAX12 FL100")
   check_eq(ex("NAX12 climb FL150, sorry, and turn left heading 030"), "ALT NAX12 FL150 ; HDG NAX12 30 LEFT")
   check_eq(ex("For the overtake case, FIN7 speed 320"), "SPD FIN7 320")
+  -- "for" an aircraft opening the request, then another named: only the other is instructed
+  check_eq(ex("For ICE44, NAX12 speed 320"), "SPD NAX12 320")
+  check_eq(ex("for spacing on ICE44, FIN7 reduce 250"), "SPD FIN7 250")
+  check_eq(ex("for ICE44, climb FL300"), "ALT ICE44 FL300")
+  check_eq(ex("ICE44, NAX12 speed 320"), "SPD ICE44 320 ; SPD NAX12 320")
+  -- a remark that wants something "to" be done by an aircraft or an airline is asked about
+  asked("NAX12 climb FL190, we want the Icelandair to descend")
+  asked("NAX12 climb FL190, I need ICE44 to turn")
+  asked("NAX12 climb FL190, we want Finnair to slow down")
+  asked("NAX12 climb FL190, we want Finnair lower")
+  check_eq(ex("NAX12 climb FL190, I want the Icelandair to catch him"), "ALT NAX12 FL190")
+  -- a type said again after a correction replaces it
+  check_eq(ex("create TST1 B738... sorry A320, at 60.2 11.6 heading 200 FL100 250 kts"),
+    "CRE TST1 A320 60.2 11.6 200 FL100 250")
+  check_eq(ex("create TST1 type A320, I mean B752, at 60.2 11.6 heading 200 FL100 250 kts"),
+    "CRE TST1 B752 60.2 11.6 200 FL100 250")
+  -- a climb or descent after a creation's level with no level of its own is not dropped
+  asked("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts going to climb")
+  asked("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts, will descend")
+  check_eq(ex("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts then climb FL200"),
+    "CRE TST1 A320 60.2 11.6 200 FL100 250 ; ALT TST1 FL200")
+end
+-- telephony: "Alpine" is easyJet Europe (EJU), "Topswiss" easyJet Switzerland (EZS); "Lauda" names both
+-- Lauda Air (LDA) and Lauda Motion (LDM), so a callsign said with it is the one of them whose characters fit
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE EJU74QP A320 47.6 12.8 300 FL200 270", "CRE EZS12 A320 47.8 12.8 300 FL220 270",
+      "CRE LDM82Y A320 47.3 16.0 020 FL200 280" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  check_eq(ex("Alpine seven four quebec papa turn left heading 270"), "HDG EJU74QP 270 LEFT")
+  check_eq(ex("Topswiss one two descend FL150"), "ALT EZS12 FL150")
+  check_eq(ex("Lauda 82Y reduce 230"), "SPD LDM82Y 230")
+  check(ex("Lauda eight three yankee descend FL100"):find("^ASK") ~= nil)
+  -- a word naming a place's role before "point" or "fix" and the place's name
+  check(lab:exec("DEFWPT MRG01 47.5 13.0"))
+  check(lab:exec("ADDWPT EJU74QP MRG01"))
+  check_eq(ex("EJU74QP direct to the merge point MRG01"), "DIRECT EJU74QP MRG01")
+  check_eq(ex("EJU74QP proceed to the metering fix MRG01"), "DIRECT EJU74QP MRG01")
 end

@@ -24,6 +24,12 @@ TEST_CASE("altitudes compare in feet within 50 ft") {
   CHECK(same_command("ALT KL1 FL90", "ALT KL1 9000"));
 }
 
+TEST_CASE("RMETHV: ON and V/S both mean vertical resolutions on, OFF and NONE off") {
+  CHECK(same_command("RMETHV V/S", "RMETHV ON"));
+  CHECK(same_command("RMETHV NONE", "RMETHV OFF"));
+  CHECK_FALSE(same_command("RMETHV V/S", "RMETHV OFF"));
+}
+
 TEST_CASE("speeds: knots or Mach, never mixed") {
   CHECK(same_command("SPD KL1 M0.78", "SPD KL1 .78"));
   CHECK(same_command("SPD KL1 0.78", "SPD KL1 M0.78"));
