@@ -26,9 +26,11 @@ namespace squawk::app {
 
 Args::Spec train_flags(bool gpt2) {
   std::vector<std::string> values = learner_flags();
-  values.insert(values.end(), {"--policy", "--env", "--levels", "--hidden", "--agents"});
-  std::vector<std::string> bools = {"--resume", "--override", "--force",
-                                    "--quiet",  "--mirror",   "--gaussian"};
+  values.insert(values.end(),
+                {"--policy", "--env", "--levels", "--hidden", "--agents", "--imitate",
+                 "--imitate-episodes", "--imitate-rounds", "--imitate-epochs", "--imitate-lr"});
+  std::vector<std::string> bools = {"--resume", "--override", "--force",    "--quiet",
+                                    "--mirror", "--gaussian", "--normalize"};
   if (gpt2) {
     values.push_back("--init");
     values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());

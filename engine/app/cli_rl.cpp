@@ -40,10 +40,14 @@ int cmd_train(const ArgV& given) {
   if (auto probe = Args::parse(*argv, train_flags(true)); probe) {
     if (probe->has("--env") && wants_gpt2(*argv))
       return usage_error("train", "--env trains --policy mlp only");
-    if (!probe->has("--env") &&
-        (probe->has("--levels") || probe->has("--hidden") || probe->has("--gaussian")))
+    if (!probe->has("--env") && (probe->has("--levels") || probe->has("--hidden") ||
+                                 probe->has("--gaussian") || probe->has("--normalize")))
       return usage_error(
-          "train", "--levels, --gaussian and --hidden shape the policy of a --env ENV.lua run");
+          "train",
+          "--levels, --gaussian, --hidden and --normalize shape the policy of a --env "
+          "ENV.lua run");
+    if (!probe->has("--env") && probe->has("--imitate"))
+      return usage_error("train", "--imitate POLICY.lua clones a rule of a --env ENV.lua run");
     if (!probe->has("--env") && probe->has("--agents"))
       return usage_error("train", "--agents sets the agents of a multi-agent --env ENV.lua run");
   }

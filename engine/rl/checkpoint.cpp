@@ -17,6 +17,10 @@ Status save_checkpoint(const std::string& path, const Checkpoint& c) {
                          {"action_values", c.spec.action_values},
                          {"init_log_std", c.spec.init_log_std}};
   write_mirror(spec, c.spec.mirror);
+  if (!c.spec.obs_shift.empty()) {
+    spec["obs_shift"] = c.spec.obs_shift;
+    spec["obs_scale"] = c.spec.obs_scale;
+  }
   return write_train_checkpoint(path, kMagic, spec, c);
 }
 
@@ -31,6 +35,8 @@ Result<Checkpoint> load_checkpoint(const std::string& path) {
     c.spec.action_values = h.at("action_values").get<std::vector<double>>();
     c.spec.init_log_std = h.value("init_log_std", -0.5);
     c.spec.mirror = read_mirror(h);
+    c.spec.obs_shift = h.value("obs_shift", std::vector<float>{});
+    c.spec.obs_scale = h.value("obs_scale", std::vector<float>{});
     read_train_header(f, c);
   } catch (const std::exception& e) {
     return Status::corruption("checkpoint " + path + ": bad JSON header: " + e.what());

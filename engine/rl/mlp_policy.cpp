@@ -11,6 +11,17 @@ namespace squawk::rl {
 
 Status MlpPolicySpec::validate() const {
   if (obs_size < 1) return Status::invalid("policy obs_size must be positive");
+  if (obs_shift.size() != obs_scale.size() ||
+      (!obs_shift.empty() && obs_shift.size() != static_cast<size_t>(obs_size)))
+    return Status::invalid("policy observation normalisation: " + std::to_string(obs_shift.size()) +
+                           " shifts and " + std::to_string(obs_scale.size()) +
+                           " scales (expected " + std::to_string(obs_size) + " each, or none)");
+  for (size_t j = 0; j < obs_shift.size(); ++j)
+    if (!std::isfinite(obs_shift[j]) || !std::isfinite(obs_scale[j]) || !(obs_scale[j] > 0.0f))
+      return Status::invalid("policy observation normalisation " + std::to_string(j) +
+                             ": expected a finite shift and a positive finite scale");
+  if (!obs_shift.empty() && !mirror.empty())
+    return Status::invalid("policy observation normalisation and mirror do not combine");
   for (int h : hidden)
     if (h < 1 || h > 4096)
       return Status::invalid("policy hidden width " + std::to_string(h) + ": expected 1..4096");
@@ -46,9 +57,26 @@ MlpPolicy::MlpPolicy(MlpPolicySpec spec, nn::Mlp mlp) : spec_(std::move(spec)), 
   grads_.assign(n, 0.0f);
 }
 
+Status MlpPolicy::set_obs_normalization(std::vector<float> shift, std::vector<float> scale) {
+  MlpPolicySpec s = spec_;
+  s.obs_shift = std::move(shift);
+  s.obs_scale = std::move(scale);
+  SQUAWK_RETURN_IF_ERROR(s.validate());
+  spec_ = std::move(s);
+  return Status::ok();
+}
+
 void MlpPolicy::forward(std::span<const float> obs, int n, std::vector<float>& out) {
   const int k = mlp_.out_dim();
   out.resize(static_cast<size_t>(n) * static_cast<size_t>(k));
+  if (!spec_.obs_shift.empty()) {
+    const auto d = static_cast<size_t>(spec_.obs_size);
+    normalized_.resize(static_cast<size_t>(n) * d);
+    for (size_t i = 0; i < normalized_.size(); ++i)
+      normalized_[i] = (obs[i] - spec_.obs_shift[i % d]) * spec_.obs_scale[i % d];
+    mlp_.forward(params_, normalized_.data(), n, out.data(), &cache_);
+    return;
+  }
   if (spec_.mirror.empty()) {
     mlp_.forward(params_, obs.data(), n, out.data(), &cache_);
     return;

@@ -9,6 +9,9 @@
 //   mirror (categorical only, beyond the paper): when set, the logits are
 //     made mirror-symmetric (rl/mirror.h) from the same network, run on each
 //     observation and its mirror image.
+//   observation normalisation (optional, beyond the paper): the network reads
+//     (obs[j] - obs_shift[j]) * obs_scale[j] instead of obs[j]; fixed numbers
+//     of the spec (saved in checkpoints), not parameters.
 // Parameter buffer: the Mlp's parameters (nn/mlp.h layout), then log sigma
 // for the Gaussian head.
 #pragma once
@@ -31,6 +34,7 @@ struct MlpPolicySpec {
   std::vector<double> action_values = {-1, -0.5, 0, 0.5, 1};  // categorical classes
   double init_log_std = -0.5;                             // gaussian: initial log sigma
   env::ObservationMirror mirror{};                        // empty = none
+  std::vector<float> obs_shift, obs_scale;                // [obs_size] each, or both empty = none
 
   Status validate() const;
 };
@@ -57,6 +61,9 @@ class MlpPolicy : public Policy {
                  std::span<float> out) override;
 
   const MlpPolicySpec& spec() const { return spec_; }
+  // Sets the observation normalisation (both [obs_size], or both empty for none); error when
+  // the spec with them is invalid (the policy is then unchanged).
+  Status set_obs_normalization(std::vector<float> shift, std::vector<float> scale);
   bool gaussian() const { return spec_.head == "gaussian"; }
   // Output rows for obs [n, obs_size]: logits [n, K] (categorical) or means [n, 1].
   void forward(std::span<const float> obs, int n, std::vector<float>& out);
@@ -70,6 +77,7 @@ class MlpPolicy : public Policy {
   nn::MlpCache cache_;
   std::vector<float> out_, dout_, logp_;
   std::vector<float> rows_, raw_, draw_;  // mirror: [2n, D], [2n, K], [2n, K]
+  std::vector<float> normalized_;         // [n, D] the normalised observations
 };
 
 }  // namespace squawk::rl

@@ -144,6 +144,69 @@ TEST_CASE("the Gaussian MLP policy's gradient (network and log sigma) matches fi
   CHECK(g.back() != 0.0f);  // log sigma learns
 }
 
+TEST_CASE(
+    "observation normalisation: the network reads (obs - shift) * scale, in checkpoints too") {
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 3;
+  spec.hidden = {8};
+  spec.head = "gaussian";
+  Rng init(5);
+  auto plain = rl::MlpPolicy::make(spec, init);
+  REQUIRE(plain);
+  Rng again(5);
+  auto normed = rl::MlpPolicy::make(spec, again);
+  REQUIRE(normed);
+  const std::vector<float> shift = {1.0f, -2.0f, 0.5f}, scale = {0.5f, 4.0f, 1.0f};
+  REQUIRE((*normed)->set_obs_normalization(shift, scale).is_ok());
+  const int n = 2;
+  const std::vector<float> rows = {3.0f, -2.5f, 0.5f, -1.0f, -1.75f, 2.0f};
+  std::vector<float> scaled(rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) scaled[i] = (rows[i] - shift[i % 3]) * scale[i % 3];
+  CHECK(scaled == std::vector<float>{1.0f, -2.0f, 0.0f, -1.0f, 1.0f, 1.5f});
+  std::vector<float> a, b;
+  (*normed)->forward(rows, n, a);
+  (*plain)->forward(scaled, n, b);
+  CHECK(a == b);
+  CHECK(a.size() == 2);
+  // The gradient is the plain network's on the normalised rows (the numbers are not parameters).
+  const std::vector<rl::ActionSample> acts = {{-1, 0.3f}, {-1, -0.6f}};
+  const std::vector<float> coef = {0.7f, -0.4f};
+  for (auto* p : {&**normed, &**plain}) std::fill(p->grads().begin(), p->grads().end(), 0.0f);
+  (*normed)->accumulate_gradient(rows, n, acts, coef, 0.05f);
+  (*plain)->accumulate_gradient(scaled, n, acts, coef, 0.05f);
+  CHECK(std::vector<float>((*normed)->grads().begin(), (*normed)->grads().end()) ==
+        std::vector<float>((*plain)->grads().begin(), (*plain)->grads().end()));
+  // A checkpoint keeps them; one without them loads as before (none).
+  rl::Checkpoint c;
+  c.spec = (*normed)->spec();
+  c.params.assign((*normed)->params().begin(), (*normed)->params().end());
+  const std::string path = temp_path("squawk_test_rl_norm.ckpt");
+  REQUIRE(rl::save_checkpoint(path, c).is_ok());
+  auto back = rl::load_checkpoint(path);
+  REQUIRE(back);
+  CHECK(back->spec.obs_shift == shift);
+  CHECK(back->spec.obs_scale == scale);
+  auto q = rl::policy_from_checkpoint(*back);
+  REQUIRE(q);
+  std::vector<float> d;
+  (*q)->forward(rows, n, d);
+  CHECK(d == a);
+  std::remove(path.c_str());
+  // Refused: sizes that disagree, a scale that is not positive, normalisation with a mirror.
+  CHECK((*normed)->set_obs_normalization({1.0f}, {1.0f}).message() ==
+        "policy observation normalisation: 1 shifts and 1 scales (expected 3 each, or none)");
+  CHECK((*normed)->set_obs_normalization(shift, {1.0f, 0.0f, 1.0f}).message() ==
+        "policy observation normalisation 1: expected a finite shift and a positive finite scale");
+  CHECK((*normed)->spec().obs_scale == scale);  // unchanged by the refusals
+  rl::MlpPolicySpec mirrored;
+  mirrored.mirror = env::observation_mirror(5, 1.0);
+  mirrored.obs_size = static_cast<int>(mirrored.mirror.scale.size());
+  mirrored.obs_shift.assign(mirrored.mirror.scale.size(), 0.0f);
+  mirrored.obs_scale.assign(mirrored.mirror.scale.size(), 1.0f);
+  CHECK(mirrored.validate().message() ==
+        "policy observation normalisation and mirror do not combine");
+}
+
 TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   Rng rng(1);
   auto p = rl::MlpPolicy::make({}, rng);
