@@ -59,10 +59,17 @@ expect "train obs-norm" 0 "observations normalised" -- "$sq" train --env tests/d
 expect "env run obs-norm" 0 '"mean_reward": (0|-0\.[0-9]+),' -- "$sq" env run tests/data/gym/sign2.lua --policy "mlp:$gt/norm/policy.ckpt" --greedy --episodes 40 --json
 expect "obs-norm alone" 2 "--obs-norm and --log-std shape the policy of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --obs-norm 10
 expect "log-std grid" 2 "--log-std -1: the Gaussian head's initial log sigma, in \[-5, 2\], with --gaussian" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ls" --log-std -1
+# --imitate: behaviour cloning of a Lua rule (sign_half.lua: half the sign, -1 an episode), then the learner.
+expect "train env imitate" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imit" --gaussian --obs-norm 20 --imitate tests/data/gym/sign_half.lua --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
+expect "env run cloned" 0 '"mean_reward": -1\.0[01][0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json
+expect "imitate needs env" 2 "--imitate POLICY.lua clones a rule of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/imx" --imitate tests/data/gym/sign_half.lua
+expect "imitate flags alone" 2 "--imitate-epochs sets --imitate POLICY.lua's cloning" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imy" --imitate-epochs 3
+expect "imitate multi-agent" 2 "--imitate clones a single-agent rule; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/imz" --imitate tests/data/gym/sign_half.lua
+expect "imitate wrong env" 1 "sign_half.lua" -- "$sq" train --env envs/descent.lua --out "$gt/imw" --gaussian --imitate tests/data/gym/sign_half.lua
 expect "train gaussian levels" 2 "--gaussian acts on the continuous Box: no --levels grid beside it" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/g3" --gaussian --levels 3
 expect "train gaussian multi" 2 "--gaussian trains single-agent files; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/g4" --gaussian
 expect "train levels 0"   2 "--levels 0: expected at least 2 per component" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/l0" --levels 0
-expect "train levels alone" 2 "--levels, --gaussian and --hidden shape the policy of a --env" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --levels 3
+expect "train levels alone" 2 "--levels, --gaussian and --hidden shape the policy of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --levels 3
 # One MLP shared by every agent of the multi-agent sector: 3 agents, each
 # agent's trajectory an episode (12 = 4 sector episodes), then evaluated
 # beside "do nothing" and MVP by bench/sector_multi_eval.lua.

@@ -26,8 +26,9 @@ namespace squawk::app {
 
 Args::Spec train_flags(bool gpt2) {
   std::vector<std::string> values = learner_flags();
-  values.insert(values.end(), {"--policy", "--env", "--levels", "--hidden", "--agents", "--obs-norm",
-                               "--log-std"});
+  values.insert(values.end(), {"--policy", "--env", "--levels", "--hidden", "--agents",
+                               "--obs-norm", "--log-std", "--imitate", "--imitate-episodes",
+                               "--imitate-rounds", "--imitate-epochs", "--imitate-lr"});
   std::vector<std::string> bools = {"--resume", "--override", "--force",
                                     "--quiet",  "--mirror",   "--gaussian"};
   if (gpt2) {

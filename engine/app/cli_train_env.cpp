@@ -3,10 +3,13 @@
 // into --levels K values per component and a categorical head over the K^d
 // grid classes. A multi-agent file (parallel = true) trains one MLP shared
 // by all its agents (script/lua_parallel_batch_env.h): each agent's
-// trajectory is an episode for the learner.
+// trajectory is an episode for the learner. --imitate POLICY.lua first clones
+// a scripted rule (rl/imitation.h, script/lua_teacher.h) and fits the value
+// baseline to its returns; the learner then fine-tunes the clone.
 #include "app/cli_train_env.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -19,12 +22,16 @@
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/text.h"
+#include "dist/comm.h"
 #include "rl/checkpoint.h"
+#include "rl/imitation.h"
 #include "rl/mlp_policy.h"
 #include "rl/obs_norm.h"
+#include "rl/play.h"
 #include "rl/train_run.h"
 #include "script/lua_batch_env.h"
 #include "script/lua_parallel_batch_env.h"
+#include "script/lua_teacher.h"
 
 namespace squawk::app {
 
@@ -103,6 +110,61 @@ Status save(const std::string& path, const rl::MlpPolicySpec& spec, rl::Policy& 
   return rl::save_checkpoint(path, c);
 }
 
+// The imitation settings of --imitate-episodes, --imitate-rounds, --imitate-epochs and
+// --imitate-lr (Adam), training episodes of seed + kImitateSeedOffset, held out: the validation
+// seed.
+constexpr uint64_t kImitateSeedOffset = 7919;
+
+Result<rl::ImitationConfig> imitation_config(const Args& args, const rl::TrainConfig& cfg,
+                                             uint64_t validation) {
+  rl::ImitationConfig ic;
+  SQUAWK_ASSIGN_OR_RETURN(ic.episodes, args.get_int("--imitate-episodes", 2000));
+  SQUAWK_ASSIGN_OR_RETURN(const long long rounds, args.get_int("--imitate-rounds", 2));
+  SQUAWK_ASSIGN_OR_RETURN(const long long epochs, args.get_int("--imitate-epochs", 8));
+  if (ic.episodes < 1 || rounds < 1 || rounds > 100 || epochs < 1 || epochs > 1000)
+    return Status::invalid(
+        "--imitate-episodes must be >= 1, --imitate-rounds 1..100 and --imitate-epochs 1..1000");
+  ic.rounds = static_cast<int>(rounds);
+  ic.epochs = static_cast<int>(epochs);
+  SQUAWK_ASSIGN_OR_RETURN(const double lr, args.get_double("--imitate-lr", 1e-3));
+  if (!(lr > 0.0 && lr < 1.0)) return Status::invalid("--imitate-lr must lie in (0, 1)");
+  ic.lr = static_cast<float>(lr);
+  ic.seed = cfg.seed + kImitateSeedOffset;
+  ic.holdout = std::min<long long>(cfg.eval_episodes, 200);
+  ic.holdout_seed = validation;
+  return ic;
+}
+
+// Clones `teacher` (the rule of `teacher_file`) into `policy` on `envs`, saves the clone as
+// `cloned_path` and fits the trainer's value baseline (when it has one) to the teacher's returns.
+Status imitate_rule(const std::string& teacher_file, rl::Policy& teacher, env::BatchEnv& envs,
+                    const rl::ImitationConfig& ic, const rl::MlpPolicySpec& spec,
+                    rl::MlpPolicy& policy, rl::Trainer& trainer, const std::string& cloned_path,
+                    bool quiet) {
+  rl::TeacherFlights flights;
+  SQUAWK_RETURN_IF_ERROR(rl::imitate(
+      policy, teacher, envs, ic,
+      [&](const rl::ImitationEpoch& e) {
+        if (!quiet)
+          std::printf(
+              "imitate %s: round %d (%s flew), epoch %d: %lld decisions, held-out agreement "
+              "%.3f, mean |action difference| %.4f\n",
+              teacher_file.c_str(), e.round, e.teacher_flew ? "teacher" : "student", e.epoch,
+              e.decisions, e.agreement, e.action_error);
+        return Status::ok();
+      },
+      &flights));
+  SQUAWK_RETURN_IF_ERROR(save(cloned_path, spec, policy, {}, nullptr));
+  if (!trainer.value_adam()) return Status::ok();
+  SQUAWK_ASSIGN_OR_RETURN(auto fit, trainer.pretrain_value(flights, ic.epochs, ic.batch, ic.seed));
+  if (!quiet)
+    std::printf(
+        "value baseline fitted to the teacher's returns (%zu steps): mean squared error %.3f -> "
+        "%.3f\n",
+        flights.rewards.size(), fit.before, fit.after);
+  return Status::ok();
+}
+
 }  // namespace
 
 int cmd_train_env(const Args& args) {
@@ -163,10 +225,23 @@ int cmd_train_env(const Args& args) {
     return usage_error("train", "--levels " + std::to_string(*levels) +
                                     ": expected at least 2 per component (--gaussian for a "
                                     "continuous action)");
+  const bool imitate = args.has("--imitate");
+  if (imitate && *parallel)
+    return usage_error("train",
+                       "--imitate clones a single-agent rule; " + file + " is multi-agent");
+  if (imitate && dist::size() > 1)
+    return usage_error("train", "--imitate runs in a job of one rank");
+  if (!imitate)
+    for (const char* f :
+         {"--imitate-episodes", "--imitate-rounds", "--imitate-epochs", "--imitate-lr"})
+      if (args.has(f))
+        return usage_error("train", std::string(f) + " sets --imitate POLICY.lua's cloning");
   auto hidden = int_list(args, "--hidden", "64,64", "width");  // the policy's hidden widths
   if (!hidden) return usage_error("train", hidden.status().message());
   auto validation = validation_seed(args, 0);
   if (!validation) return usage_error("train", validation.status().message());
+  auto ic = imitation_config(args, cfg, *validation);
+  if (!ic) return usage_error("train", ic.status().message());
 
   auto batches = make_batches(file, *vo, cfg.num_envs, static_cast<int>(*levels),
                               *parallel ? &*agents : nullptr);
@@ -191,15 +266,25 @@ int cmd_train_env(const Args& args) {
   Rng init(cfg.seed);
   auto policy = rl::MlpPolicy::make(spec, init);
   if (!policy) return failure(policy.status());
+  std::unique_ptr<script::LuaTeacher> teacher;
+  if (imitate) {
+    // the single-agent training batch is a LuaBatchEnv (make_batches)
+    auto t = script::LuaTeacher::load(*args.get("--imitate"), *vo,
+                                      static_cast<script::LuaBatchEnv&>(*batches->train));
+    if (!t) return failure(Status::invalid(shown_error(t.status().message())));
+    teacher = std::move(*t);
+  }
   // --obs-norm N: the mean and deviation of each observation number over N
-  // episodes of the initial policy (rl/obs_norm.h); the policy then reads the
-  // normalised numbers, from the same initial parameters.
+  // episodes of the initial policy, or of the --imitate rule (rl/obs_norm.h);
+  // the policy then reads the normalised numbers, from the same initial parameters.
   auto norm_episodes = args.get_int("--obs-norm", 0);
   if (!norm_episodes) return usage_error("train", norm_episodes.status().message());
   if (args.has("--obs-norm")) {
     if (*parallel)
       return usage_error("train", "--obs-norm trains single-agent files; " + file + " is multi-agent");
-    auto stats = rl::observation_stats(**policy, *batches->eval, cfg.seed, *norm_episodes);
+    auto stats = teacher
+                     ? rl::observation_stats(*teacher, *batches->train, cfg.seed, *norm_episodes)
+                     : rl::observation_stats(**policy, *batches->eval, cfg.seed, *norm_episodes);
     if (!stats) return failure(Status::invalid(shown_error(stats.status().message())));
     spec.obs_mean = std::move(stats->mean);
     spec.obs_std = std::move(stats->std);
@@ -239,6 +324,11 @@ int cmd_train_env(const Args& args) {
         "is one agent's trajectory, %d numbered per sector episode\n",
         args.get_or("--agents", "10").c_str(), per_sector);
   const std::string best_path = out + "/best.ckpt", policy_path = out + "/policy.ckpt";
+  if (teacher) {
+    Status st = imitate_rule(*args.get("--imitate"), *teacher, *batches->train, *ic, spec, **policy,
+                             trainer, out + "/cloned.ckpt", quiet);
+    if (!st.is_ok()) return failure(Status::invalid(shown_error(st.message())));
+  }
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
   double best_reward = 0.0;
   bool have_best = false;

@@ -1,6 +1,7 @@
 #include "rl/imitation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <vector>
 
@@ -12,17 +13,21 @@ namespace squawk::rl {
 namespace {
 
 struct Labelled {
-  std::vector<float> obs;  // [N, obs_size]
-  std::vector<int> label;  // [N]
+  std::vector<float> obs;           // [N, obs_size]
+  std::vector<ActionSample> label;  // [N] the teacher's greedy actions
 };
 
 // Flies `count` episodes from `first` of `seed` with `pilot` (greedy or
-// sampled), appending every decision with the teacher's greedy class; returns
-// the flights' success rate (over every episode flown, those that ended
-// before a decision included).
-Result<double> fly(env::VecEnv& envs, Policy& pilot, bool greedy, Policy& teacher, uint64_t seed, uint64_t first,
-                   uint64_t count, Rng& rng, Labelled& out) {
+// sampled), appending every decision with the teacher's greedy action and,
+// when `flights` is given, every ended episode's observations and rewards;
+// returns the flights' success rate (over every episode flown, those that
+// ended before a decision included).
+Result<double> fly(env::BatchEnv& envs, Policy& pilot, bool greedy, Policy& teacher, uint64_t seed,
+                   uint64_t first, uint64_t count, Rng& rng, Labelled& out,
+                   TeacherFlights* flights) {
   std::vector<ActionSample> taught;
+  const auto d = static_cast<size_t>(envs.obs_size());
+  std::vector<TeacherFlights> running(flights ? static_cast<size_t>(envs.size()) : 0);  // per slot
   Driver driver;
   driver.choose = [&](Turn& t) {
     const int n = static_cast<int>(t.slots.size());
@@ -36,9 +41,28 @@ Result<double> fly(env::VecEnv& envs, Policy& pilot, bool greedy, Policy& teache
     SQUAWK_RETURN_IF_ERROR(teacher.error());
     SQUAWK_RETURN_IF_ERROR(pilot.error());
     out.obs.insert(out.obs.end(), t.obs.begin(), t.obs.end());
-    for (const ActionSample& a : taught) out.label.push_back(a.index);
+    out.label.insert(out.label.end(), taught.begin(), taught.end());
+    if (flights)
+      for (size_t r = 0; r < t.slots.size(); ++r) {
+        auto& o = running[static_cast<size_t>(t.slots[r])].obs;
+        o.insert(o.end(), t.obs.begin() + static_cast<long>(r * d),
+                 t.obs.begin() + static_cast<long>((r + 1) * d));
+      }
     return Status::ok();
   };
+  if (flights)
+    driver.after = [&](const Turn& t) {
+      for (size_t r = 0; r < t.slots.size(); ++r) {
+        TeacherFlights& e = running[static_cast<size_t>(t.slots[r])];
+        e.rewards.push_back(t.rewards[r]);
+        if (!t.dones[r]) continue;
+        flights->obs.insert(flights->obs.end(), e.obs.begin(), e.obs.end());
+        flights->rewards.insert(flights->rewards.end(), e.rewards.begin(), e.rewards.end());
+        flights->lengths.push_back(static_cast<int>(e.rewards.size()));
+        e = TeacherFlights{};
+      }
+      return true;
+    };
   SQUAWK_RETURN_IF_ERROR(play(envs, seed, first, count, driver).status());
   const auto& done = envs.completed();
   const auto ok = std::count_if(done.begin(), done.end(), [](const env::EpisodeStats& e) { return e.success; });
@@ -48,9 +72,12 @@ Result<double> fly(env::VecEnv& envs, Policy& pilot, bool greedy, Policy& teache
 Status check_pair(Policy& student, Policy& teacher) {
   if (!student.trainable()) return Status::invalid("imitation: the student " + student.name() + " is not trainable");
   const auto s = student.action_values(), t = teacher.action_values();
-  if (t.empty())
-    return Status::invalid("imitation: the teacher " + teacher.name() +
-                           " has no discrete classes (expected a categorical head, e.g. an MLP checkpoint)");
+  if (s.empty() != t.empty())
+    return Status::invalid("imitation: the teacher " + teacher.name() + " has " +
+                           (t.empty() ? "a continuous action" : "discrete classes") +
+                           ", the student " + student.name() +
+                           (s.empty() ? " has a continuous one" : " has discrete classes") +
+                           " (expected the same kind)");
   if (!std::equal(s.begin(), s.end(), t.begin(), t.end()))
     return Status::invalid("imitation: the teacher " + teacher.name() + " and the student " + student.name() +
                            " have different action classes");
@@ -59,17 +86,20 @@ Status check_pair(Policy& student, Policy& teacher) {
 
 }  // namespace
 
-Status imitate(Policy& student, Policy& teacher, env::VecEnv& envs, const ImitationConfig& c,
-               const std::function<Status(const ImitationEpoch&)>& on_epoch) {
+Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const ImitationConfig& c,
+               const std::function<Status(const ImitationEpoch&)>& on_epoch,
+               TeacherFlights* flights) {
   SQUAWK_RETURN_IF_ERROR(check_pair(student, teacher));
   if (c.episodes < 1 || c.rounds < 1 || c.epochs < 1 || c.batch < 1 || c.holdout < 1 || !(c.lr > 0.0f))
     return Status::invalid("imitation: episodes, rounds, epochs, batch and holdout must be >= 1 and lr > 0");
   if (c.holdout_seed == c.seed) return Status::invalid("imitation: the held-out seed must differ from the training seed");
   const auto d = static_cast<size_t>(teacher.obs_size());
+  const bool continuous = student.action_values().empty();
   Rng rng(c.seed);
   Labelled held, data;
-  SQUAWK_RETURN_IF_ERROR(
-      fly(envs, teacher, true, teacher, c.holdout_seed, 0, static_cast<uint64_t>(c.holdout), rng, held).status());
+  SQUAWK_RETURN_IF_ERROR(fly(envs, teacher, true, teacher, c.holdout_seed, 0,
+                             static_cast<uint64_t>(c.holdout), rng, held, nullptr)
+                             .status());
   const int n_held = static_cast<int>(held.label.size());
   nn::Adam adam(student.params(), student.grads(), {.lr = c.lr, .grad_clip = c.grad_clip});
   std::vector<float> batch_obs(static_cast<size_t>(c.batch) * d), coef(static_cast<size_t>(c.batch),
@@ -78,10 +108,11 @@ Status imitate(Policy& student, Policy& teacher, env::VecEnv& envs, const Imitat
   const std::vector<int> no_slots(static_cast<size_t>(std::max(n_held, c.batch)), 0);
   for (int round = 0; round < c.rounds; ++round) {
     const bool teacher_flies = round == 0;
-    SQUAWK_ASSIGN_OR_RETURN(double success,
-                            fly(envs, teacher_flies ? teacher : student, false, teacher, c.seed,
-                                static_cast<uint64_t>(round) * static_cast<uint64_t>(c.episodes),
-                                static_cast<uint64_t>(c.episodes), rng, data));
+    SQUAWK_ASSIGN_OR_RETURN(
+        double success,
+        fly(envs, teacher_flies ? teacher : student, false, teacher, c.seed,
+            static_cast<uint64_t>(round) * static_cast<uint64_t>(c.episodes),
+            static_cast<uint64_t>(c.episodes), rng, data, teacher_flies ? flights : nullptr));
     const int n = static_cast<int>(data.label.size());
     std::vector<int> order(static_cast<size_t>(n));
     for (int epoch = 0; epoch < c.epochs; ++epoch) {
@@ -91,9 +122,7 @@ Status imitate(Policy& student, Policy& teacher, env::VecEnv& envs, const Imitat
         for (int r = 0; r < c.batch; ++r) {
           const auto row = static_cast<size_t>(order[static_cast<size_t>(b0 + r)]);
           std::copy_n(data.obs.begin() + static_cast<long>(row * d), d, batch_obs.begin() + static_cast<long>(r * d));
-          ActionSample& a = batch_act[static_cast<size_t>(r)];
-          a.index = data.label[row];
-          a.value = static_cast<float>(student.action_values()[static_cast<size_t>(a.index)]);
+          batch_act[static_cast<size_t>(r)] = data.label[row];
         }
         std::fill(student.grads().begin(), student.grads().end(), 0.0f);
         student.accumulate_gradient(batch_obs, c.batch, batch_act, coef, 0.0f);
@@ -104,9 +133,17 @@ Status imitate(Policy& student, Policy& teacher, env::VecEnv& envs, const Imitat
                   held_act);
       SQUAWK_RETURN_IF_ERROR(student.error());
       int agree = 0;
-      for (int r = 0; r < n_held; ++r) agree += held_act[static_cast<size_t>(r)].index == held.label[static_cast<size_t>(r)];
-      SQUAWK_RETURN_IF_ERROR(on_epoch({round, epoch, teacher_flies, success, n,
-                                       n_held > 0 ? static_cast<double>(agree) / n_held : 0.0}));
+      double error = 0.0;
+      for (int r = 0; r < n_held; ++r) {
+        const ActionSample &a = held_act[static_cast<size_t>(r)],
+                           &y = held.label[static_cast<size_t>(r)];
+        const double diff = std::abs(static_cast<double>(a.value) - static_cast<double>(y.value));
+        agree += continuous ? diff <= kContinuousAgreement : a.index == y.index;
+        error += diff;
+      }
+      const double held_n = std::max(1, n_held);
+      SQUAWK_RETURN_IF_ERROR(
+          on_epoch({round, epoch, teacher_flies, success, n, agree / held_n, error / held_n}));
     }
   }
   return Status::ok();

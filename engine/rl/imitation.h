@@ -5,21 +5,27 @@
 //
 // Round 0 flies `teacher` (greedy) over config.episodes training episodes;
 // round r > 0 flies the student (sampled) over the next config.episodes. Every
-// decision is labelled with the teacher's greedy class. After each round the
+// decision is labelled with the teacher's greedy action. After each round the
 // student takes config.epochs passes over all labelled decisions so far, in
 // shuffled batches of config.batch rows, one Adam step per batch on
-//   L = -(1/B) sum_r log pi(y_r | s_r)    (Policy::accumulate_gradient, coef 1/B).
+//   L = -(1/B) sum_r log pi(y_r | s_r)    (Policy::accumulate_gradient, coef 1/B),
+// y_r the teacher's class (discrete heads) or its action value (continuous
+// heads: the Gaussian log-likelihood of the teacher's number, log sigma
+// included).
 // Agreement: the share of held-out decisions (config.holdout episodes of
 // config.holdout_seed, flown by the teacher) where the student's greedy class
-// is the teacher's.
-// Shapes: decisions [N, obs_size] row-major, labels [N] class indices.
+// is the teacher's (continuous: where its greedy value is within
+// kContinuousAgreement of the teacher's); action_error the mean absolute
+// difference of the two greedy values over the same decisions.
+// Shapes: decisions [N, obs_size] row-major, labels [N] actions.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "core/status.h"
-#include "env/vec_env.h"
+#include "env/batch_env.h"
 #include "rl/policy.h"
 
 namespace squawk::rl {
@@ -36,18 +42,33 @@ struct ImitationConfig {
   uint64_t holdout_seed = 2;  // must differ from seed
 };
 
+inline constexpr double kContinuousAgreement = 0.1;  // [-] of the [-1, 1] action range
+
+// The teacher's round-0 flights, episode by episode (what a value baseline
+// can be fitted to before fine-tuning): obs [T, obs_size] of all episodes
+// concatenated in the order they ended, rewards [T], lengths [episodes].
+struct TeacherFlights {
+  std::vector<float> obs;
+  std::vector<double> rewards;
+  std::vector<int> lengths;
+};
+
 struct ImitationEpoch {
   int round = 0, epoch = 0;
   bool teacher_flew = true;   // who flew this round's episodes
   double flight_success = 0;  // [-] success rate of this round's flights
   long long decisions = 0;    // [-] labelled decisions so far
   double agreement = 0;       // [-] held-out agreement after this epoch
+  double action_error = 0;    // [-] held-out mean |student - teacher| greedy action value
 };
 
-// Both policies must have the same discrete classes (action_values) and obs
-// size; the student must be trainable. on_epoch runs after every epoch (the
-// caller saves or reports there); returning an error stops with that error.
-Status imitate(Policy& student, Policy& teacher, env::VecEnv& envs, const ImitationConfig& config,
-               const std::function<Status(const ImitationEpoch&)>& on_epoch);
+// Both policies must have the same discrete classes (action_values), or both
+// none (continuous), and the same obs size; the student must be trainable.
+// on_epoch runs after every epoch (the caller saves or reports there);
+// returning an error stops with that error. `flights`, when given, receives
+// round 0's teacher flights.
+Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const ImitationConfig& config,
+               const std::function<Status(const ImitationEpoch&)>& on_epoch,
+               TeacherFlights* flights = nullptr);
 
 }  // namespace squawk::rl

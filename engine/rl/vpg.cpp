@@ -131,6 +131,67 @@ void Trainer::save(TrainState& s) {
   s.value_t = value_adam_ ? value_adam_->t() : 0;
 }
 
+Result<Trainer::ValueFit> Trainer::pretrain_value(const TeacherFlights& f, int epochs, int batch,
+                                                  uint64_t seed) {
+  if (!value_)
+    return Status::invalid(
+        "value pretraining needs the learned value baseline (estimator improved or ppo)");
+  if (dist::size() > 1) return Status::invalid("value pretraining runs in a job of one rank");
+  if (epochs < 1 || batch < 1)
+    return Status::invalid("value pretraining: epochs and batch must be >= 1");
+  const auto d = static_cast<size_t>(envs_.obs_size()), n = f.rewards.size();
+  long long total_steps = 0;
+  for (int len : f.lengths) total_steps += len;
+  if (f.obs.size() != n * d || static_cast<size_t>(total_steps) != n)
+    return Status::invalid(
+        "value pretraining: " + std::to_string(f.obs.size()) + " observation numbers, " +
+        std::to_string(n) + " rewards and " + std::to_string(total_steps) +
+        " steps in the episode lengths (expected obs_size x steps, steps, steps)");
+  std::vector<float> g(n);
+  size_t start = 0;
+  for (int len : f.lengths) {
+    double acc = 0.0;
+    for (size_t t = start + static_cast<size_t>(len); t-- > start;) {
+      acc = f.rewards[t] + cfg_.gamma * acc;
+      g[t] = static_cast<float>(acc);
+    }
+    start += static_cast<size_t>(len);
+  }
+  std::vector<float> v(n);
+  const auto mse = [&] {
+    if (n > 0) value_->forward(value_params_, f.obs.data(), static_cast<int>(n), v.data(), nullptr);
+    double e = 0.0;
+    for (size_t i = 0; i < n; ++i) e += (v[i] - g[i]) * (v[i] - g[i]);
+    return n > 0 ? e / static_cast<double>(n) : 0.0;
+  };
+  ValueFit fit;
+  fit.before = mse();
+  const auto b = static_cast<size_t>(batch);
+  std::vector<size_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[i] = i;
+  Rng shuffle(seed);
+  std::vector<float> rows(b * d), vb(b), dv(b);
+  nn::MlpCache cache;
+  for (int e = 0; e < epochs; ++e) {
+    for (size_t i = n; i-- > 1;)
+      std::swap(order[i],
+                order[static_cast<size_t>(shuffle.uniform_int(0, static_cast<int64_t>(i)))]);
+    for (size_t lo = 0; lo + b <= n; lo += b) {
+      for (size_t j = 0; j < b; ++j)
+        std::copy_n(f.obs.begin() + static_cast<long>(order[lo + j] * d), d,
+                    rows.begin() + static_cast<long>(j * d));
+      value_->forward(value_params_, rows.data(), batch, vb.data(), &cache);
+      for (size_t j = 0; j < b; ++j)
+        dv[j] = static_cast<float>(2.0 * (vb[j] - g[order[lo + j]]) / static_cast<double>(b));
+      std::fill(value_grads_.begin(), value_grads_.end(), 0.0f);
+      value_->backward(value_params_, cache, dv.data(), value_grads_);
+      value_adam_->step();
+    }
+  }
+  fit.after = mse();
+  return fit;
+}
+
 double Trainer::step_all() {
   dist::sum(policy_.grads());
   return adam_.step();

@@ -61,6 +61,7 @@
 #include "nn/adam.h"
 #include "nn/mlp.h"
 #include "rl/checkpoint.h"
+#include "rl/imitation.h"
 #include "rl/policy.h"
 
 namespace squawk::rl {
@@ -141,6 +142,18 @@ class Trainer {
   // restore's inverse: the policy's parameters, Adam moments and step, and
   // the value baseline with its Adam state into `s` (s.progress untouched).
   void save(TrainState& s);
+  // Fits the value baseline to the discounted returns (config gamma) of
+  // `flights` (a teacher's episodes, rl/imitation.h) before the first update:
+  // `epochs` passes over its steps in shuffled minibatches of `batch` rows
+  // (a shuffle from Rng(seed)), one step of the value Adam per minibatch on
+  // the mean squared error. Returns that error over all the steps before
+  // and after. Errors: no value baseline, a job of several ranks, or
+  // flights whose sizes disagree.
+  struct ValueFit {
+    double before = 0.0, after = 0.0;  // [reward^2]
+  };
+  Result<ValueFit> pretrain_value(const TeacherFlights& flights, int epochs, int batch,
+                                  uint64_t seed);
 
  private:
   struct Sample {

@@ -85,6 +85,10 @@ class LuaBatchEnv final : public env::BatchEnv {
   long long env_steps() const override { return env_steps_; }
   uint64_t episode(int slot) const override { return running_[static_cast<size_t>(slot)].index; }
   Status error() const override { return error_; }
+  // The episode `slot` plays (valid while it waits): the steps it has taken
+  // and the seed its instance was reset with (seed s + k, as above).
+  long long steps(int slot) const { return running_[static_cast<size_t>(slot)].steps; }
+  uint64_t reset_seed(int slot) const { return seed_ + running_[static_cast<size_t>(slot)].index; }
 
  private:
   LuaBatchEnv(std::vector<std::unique_ptr<LuaEnv>> envs, int levels, int classes);

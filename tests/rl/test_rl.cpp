@@ -306,6 +306,18 @@ TEST_CASE("obs_mean / obs_std: the network reads the normalised observation; che
   (*a)->forward(by_hand, 2, ya);
   (*b)->forward(obs, 2, yb);
   CHECK(ya == yb);
+  // The gradient is the plain network's on the normalised rows (mean and std are not parameters).
+  std::vector<rl::ActionSample> acts(2);
+  acts[0].value = 0.3f;
+  acts[0].more[0] = -0.2f;
+  acts[1].value = -0.6f;
+  acts[1].more[0] = 0.9f;
+  const std::vector<float> coef = {0.7f, -0.4f};
+  for (auto* p : {&**a, &**b}) std::fill(p->grads().begin(), p->grads().end(), 0.0f);
+  (*a)->accumulate_gradient(by_hand, 2, acts, coef, 0.05f);
+  (*b)->accumulate_gradient(obs, 2, acts, coef, 0.05f);
+  CHECK(std::vector<float>((*a)->grads().begin(), (*a)->grads().end()) ==
+        std::vector<float>((*b)->grads().begin(), (*b)->grads().end()));
   const std::string path = temp_path("squawk_test_rl_norm.ckpt");
   rl::Checkpoint c;
   c.spec = normed;

@@ -1,7 +1,8 @@
 // Lua environments as a batch for the learner (script/lua_batch_env.h): the
 // action grid, episodes identical to the single-instance driver whatever the
-// number of slots, errors that end a run, and the MLP learner raising the
-// return of a trivially learnable file (tests/data/gym/sign.lua).
+// number of slots, errors that end a run, the MLP learner raising the
+// return of a trivially learnable file (tests/data/gym/sign.lua), and the
+// imitation of a scripted rule (tests/data/gym/sign_half.lua) on it.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "rl/evaluator.h"
+#include "rl/imitation.h"
 #include "rl/mlp_policy.h"
 #include "rl/obs_norm.h"
 #include "rl/play.h"
@@ -17,6 +19,7 @@
 #include "rl/vpg.h"
 #include "scratch_dir.h"
 #include "script/lua_batch_env.h"
+#include "script/lua_teacher.h"
 
 using namespace squawk;
 
@@ -345,4 +348,101 @@ TEST_CASE("observation_stats: each number's mean and deviation over the episodes
   }
   CHECK(rl::observation_stats(**p, *envs, 5, 0).status().message() ==
         "observation statistics need at least 1 episode, got 0");
+}
+
+// sign_half.lua plays half the sign: -0.25 a step. A student cloned from it
+// greedily plays that too (its mean reward is the rule's, -1 an episode,
+// where the untrained Gaussian head's is below -2), whatever the head.
+TEST_CASE("imitation clones a Lua rule on a Lua environment, Gaussian and grid heads") {
+  for (const int levels : {0, 5}) {
+    CAPTURE(levels);
+    auto envs = batch(repo("tests/data/gym/sign.lua"), 3, levels);
+    auto teacher = script::LuaTeacher::load(repo("tests/data/gym/sign_half.lua"), {}, *envs);
+    REQUIRE_MESSAGE(teacher.is_ok(), teacher.status().message());
+    CHECK(std::vector<double>((*teacher)->action_values().begin(),
+                              (*teacher)->action_values().end()) ==
+          (levels ? script::grid_values(5) : std::vector<double>{}));
+    rl::MlpPolicySpec spec;
+    spec.obs_size = 1;
+    spec.hidden = {16};
+    if (levels)
+      spec.action_values = script::grid_values(5);
+    else
+      spec.head = "gaussian";
+    Rng init(5);
+    auto p = rl::MlpPolicy::make(spec, init);
+    REQUIRE(p);
+    auto before = rl::evaluate(**p, *envs, {40, 9, true});
+    REQUIRE(before);
+    rl::ImitationConfig ic;
+    ic.episodes = 40;  // 160 decisions a round
+    ic.rounds = 2;
+    ic.epochs = 20;
+    ic.batch = 16;
+    ic.lr = 1e-2f;
+    ic.holdout = 10;
+    rl::TeacherFlights flights;
+    rl::ImitationEpoch last;
+    Status st = rl::imitate(
+        **p, **teacher, *envs, ic,
+        [&](const rl::ImitationEpoch& e) {
+          last = e;
+          return Status::ok();
+        },
+        &flights);
+    REQUIRE_MESSAGE(st.is_ok(),
+                    st.message());  // sign_half.lua fails unless reset before every episode
+    CHECK(last.round == 1);
+    CHECK_FALSE(last.teacher_flew);
+    CHECK(last.decisions == 320);
+    CHECK(last.agreement == 1.0);
+    CHECK(last.action_error < (levels ? 1e-6 : 0.05));
+    // round 0's flights: 40 episodes of four steps at -0.25
+    CHECK(flights.lengths == std::vector<int>(40, 4));
+    CHECK(flights.rewards == std::vector<double>(160, -0.25));
+    CHECK(flights.obs.size() == 160);
+    auto after = rl::evaluate(**p, *envs, {40, 9, true});
+    REQUIRE(after);
+    MESSAGE("sign.lua cloned from sign_half.lua (levels " << levels << "): " << before->mean_reward
+                                                          << " -> " << after->mean_reward);
+    CHECK(after->mean_reward == doctest::Approx(-1.0).epsilon(0.05));
+    if (!levels) CHECK(before->mean_reward < -1.5);
+
+    // The value baseline fitted to those flights' returns (gamma 0.5: -0.25 (1 + 0.5 + ...)).
+    rl::TrainConfig tc;
+    tc.estimator = "ppo";
+    tc.gamma = 0.5;
+    tc.value_hidden = {16};
+    tc.lr = 1e-2;
+    rl::Trainer tr(**p, *envs, tc, 0);
+    auto fit = tr.pretrain_value(flights, 40, 16, 3);
+    REQUIRE_MESSAGE(fit.is_ok(), fit.status().message());
+    MESSAGE("value fit: " << fit->before << " -> " << fit->after);
+    CHECK(fit->after < 0.01);
+    CHECK(fit->after < fit->before / 10);
+    rl::TeacherFlights broken = flights;
+    broken.lengths.pop_back();
+    auto bad = tr.pretrain_value(broken, 1, 16, 3);
+    REQUIRE_FALSE(bad);
+    CHECK(bad.status().message() ==
+          "value pretraining: 160 observation numbers, 160 rewards and 156 steps in "
+          "the episode lengths (expected obs_size x steps, steps, steps)");
+  }
+}
+
+TEST_CASE("imitation refuses a teacher and a student of different kinds") {
+  auto envs = batch(repo("tests/data/gym/sign.lua"), 2, 0);
+  auto teacher = script::LuaTeacher::load(repo("tests/data/gym/sign_half.lua"), {}, *envs);
+  REQUIRE(teacher);
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 1;
+  spec.hidden = {4};
+  Rng init(1);
+  auto p = rl::MlpPolicy::make(spec, init);
+  REQUIRE(p);
+  Status st = rl::imitate(**p, **teacher, *envs, {},
+                          [](const rl::ImitationEpoch&) { return Status::ok(); });
+  CHECK(st.message() == "imitation: the teacher script:" + repo("tests/data/gym/sign_half.lua") +
+                            " has a continuous action, the student mlp has discrete classes "
+                            "(expected the same kind)");
 }
