@@ -504,8 +504,10 @@ return function(H, f, compass)
   -- A waypoint named in [b, e): a known name, an upper-case name, or a
   -- spoken name matched against the world's waypoints and the route.
   function m:waypoint(b, e, id)
-    local w = self:refs_in(b, e, "waypoint")
-    if #w > 0 then return w[1].name end
+    -- (a navaid's kind typed in capitals is no place: "direct to the Sydney VOR")
+    for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
+      if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then return r.name end
+    end
     local names, seen = {}, {}
     for _, n in ipairs(self.world.waypoints) do names[#names + 1], seen[n] = n, true end
     local a = self:state(id)

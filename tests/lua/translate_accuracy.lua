@@ -55,7 +55,7 @@ end
 -- Rounds written by writers who never saw the grammar (docs/translator_trust.md):
 -- kept here after their first-sight figures were recorded (docs/translation_ledger.md),
 -- fixed by class; floors at the figures reached (right at least, wrong at most).
-floors("tests/data/translate_round1.tsv", 0.991, 0.0, true)
+floors("tests/data/translate_round1.tsv", 0.995, 0.0, true)
 floors("tests/data/translate_round2.tsv", 0.872, 0.0064, true)
 floors("tests/data/translate_round3.tsv", 0.952, 0.0073, true)
 floors("tests/data/translate_round4.tsv", 0.971, 0.0, true)
@@ -87,7 +87,7 @@ floors("tests/data/translate_round29.tsv", 0.974, 0.0033, true)
 floors("tests/data/translate_round30.tsv", 0.966, 0.0042, true)
 floors("tests/data/translate_round31.tsv", 0.929, 0.0, true)
 floors("tests/data/translate_round32.tsv", 0.958, 0.0084, true)
-floors("tests/data/translate_round34.tsv", 0.944, 0.0, true)
+floors("tests/data/translate_round34.tsv", 0.952, 0.0, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)

@@ -1725,6 +1725,9 @@ do
     check_eq(ex("Qantas 520, proceed direct to Brisbane, descend FL120"), "DIRECT QFA520 BN ; ALT QFA520 FL120")
     check_eq(ex("Virgin 817 cleared direct Sydney"), "DIRECT VOZ817 YSSY")
     check(ex("Rex 64 direct Melbourne"):find("^ASK Which place is meant: the ML navaid or the YMML airport") ~= nil)
+    -- a navaid's kind typed in capitals after the name is no waypoint of its own
+    check_eq(ex("Qantas 520, track direct to the Brisbane VOR"), "DIRECT QFA520 BN")
+    check_eq(ex("Rex 64 direct Melbourne VOR"), "ADDWPT RXA64 ML ; DIRECT RXA64 ML")
     check_eq(ex("Virgin eight one seven climb flight level three one zero"), "ALT VOZ817 FL310")
     check_eq(ex("create Virgin 1219 a B738 at -37.5 145.2 heading 330 FL110 250 knots"),
       "CRE VOZ1219 B738 -37.5 145.2 330 FL110 250")
