@@ -1729,6 +1729,10 @@ do
     check_eq(ex("Qantas 520, track direct to the Brisbane VOR"), "DIRECT QFA520 BN")
     check_eq(ex("Rex 64 direct Melbourne VOR"), "ADDWPT RXA64 ML ; DIRECT RXA64 ML")
     check_eq(ex("Virgin eight one seven climb flight level three one zero"), "ALT VOZ817 FL310")
+    -- greetings of the region carry nothing
+    check_eq(ex("Qantas 520, kia ora, climb flight level two four zero"), "ALT QFA520 FL240")
+    check_eq(ex("G'day mate, Virgin 817 reduce speed two eight zero"), "SPD VOZ817 280")
+    check_eq(ex("Rex 64 howzit, turn left heading 090"), "HDG RXA64 90 LEFT")
     check_eq(ex("create Virgin 1219 a B738 at -37.5 145.2 heading 330 FL110 250 knots"),
       "CRE VOZ1219 B738 -37.5 145.2 330 FL110 250")
     local empty = squawk.sim.new()
