@@ -311,6 +311,7 @@ local function airline_names()
   end
   for _, b in ipairs(names.brands or {}) do
     BRANDS[b[1]] = { table.unpack(b, 2) }
+    BRANDS[b[1]].shared = b.shared
     if AIRLINE_NAMES[b[1]] then BRAND_OF[AIRLINE_NAMES[b[1]]] = BRANDS[b[1]] end
   end
   return AIRLINE_NAMES, BRANDS, BRAND_OF

@@ -50,6 +50,25 @@ return function(H, f, compass)
     end
   end
 
+  -- The callsign of the new aircraft `r` (an aircraft reference no aircraft has): said with the name
+  -- of a brand separate airlines fly under (names.lua's brands marked `shared`: "Virgin 1219" is VIR
+  -- or VOZ), the prefix of the one of them flying now, else asked about (the name's own airline kept).
+  function m:brand_callsign(r)
+    local icao, _, codes = self:airline_at(r.b)
+    if not codes or not codes.shared or r.name:upper():sub(1, #icao) ~= icao then return r.name end
+    local flying = {}
+    for _, c in ipairs(codes) do
+      if #self:airline_fleet(c) > 0 then flying[#flying + 1] = c end
+    end
+    if #flying == 1 then
+      self:explain(r.b, r.e)
+      return flying[1] .. r.name:sub(#icao + 1)
+    end
+    self:need(string.format("Which airline is the new %s of: %s?", self:raw(r.b, r.e),
+      table.concat(codes, " or ")))
+    return r.name
+  end
+
   function m:create_one(s, id_from)
     local id
     -- ("create Alaska six eleven" with ASA331 flying: the airline heard whole and a flight number
@@ -71,7 +90,10 @@ return function(H, f, compass)
       end
     end
     for _, r in ipairs(self:refs_in(id_from, s.e, "aircraft")) do
-      if not r.exists then id = r.name break end
+      if not r.exists then
+        id = self:brand_callsign(r)
+        break
+      end
     end
     if not id then
       local k = self:find_word(s.b, s.e, "@id_words")
@@ -482,8 +504,10 @@ return function(H, f, compass)
   -- A waypoint named in [b, e): a known name, an upper-case name, or a
   -- spoken name matched against the world's waypoints and the route.
   function m:waypoint(b, e, id)
-    local w = self:refs_in(b, e, "waypoint")
-    if #w > 0 then return w[1].name end
+    -- (a navaid's kind typed in capitals is no place: "direct to the Sydney VOR")
+    for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
+      if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then return r.name end
+    end
     local names, seen = {}, {}
     for _, n in ipairs(self.world.waypoints) do names[#names + 1], seen[n] = n, true end
     local a = self:state(id)
@@ -571,12 +595,31 @@ return function(H, f, compass)
   -- lexicon.navaid_range_nm of the aircraft `a` (of any aircraft when `a` is nil), else a navaid of
   -- that name there ("direct Perth" near Scotland is the PTH VOR, not YPPH), else an airport
   -- anywhere; with no traffic, else the one navaid of that name anywhere ("create ... at Ockham").
+  -- A name that an airport and a navaid near the aircraft `a` both bear ("direct Melbourne": YMML
+  -- and the ML VOR) is the one of the two its route holds (its destination: the airport's), else
+  -- asked about, the airport kept (a direct-to a city names its VOR as often as its airport).
   function m:place_by_name(b, e, a)
     local near = a and { a } or self.fleet
     -- (the longer name first: "direct Zurich East" is the ZUE VOR, not Zurich airport and a word more)
     for _, r in ipairs(near) do
       local id = self:navaid_by_name(b, e, r, nil, true)
       if id then return id end
+    end
+    local airport = a and self:airport_by_name(b, e, a)
+    local asked = self.ask
+    local navaid = airport and self:navaid_by_name(b, e, a)
+    -- (a name several navaids there bear is no one navaid: "direct Frankfurt" is the airport)
+    if self.ask ~= asked then self.ask, navaid = asked, nil end
+    if navaid then
+      local held = {}
+      for _, r in ipairs(a.route or {}) do held[r:upper()] = true end
+      if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
+      local nav_held, airport_held = held[navaid:upper()], held[airport:upper()]
+      if nav_held and not airport_held then return navaid end
+      if nav_held or not airport_held then
+        self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, airport))
+      end
+      return airport
     end
     for _, r in ipairs(near) do
       local id = self:airport_by_name(b, e, r)

@@ -96,7 +96,9 @@ return {
         "identified", "identification",
         -- the same courtesy in Spanish or Portuguese ("descend FL120, gracias", "momentito, por favor")
         "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
-        "tardes", "noches" },
+        "tardes", "noches",
+        -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
+        "mate", "kia", "ora", "howzit" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",

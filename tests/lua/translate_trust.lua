@@ -1708,3 +1708,35 @@ do
   check_eq(ex("EJU74QP direct to the merge point MRG01"), "DIRECT EJU74QP MRG01")
   check_eq(ex("EJU74QP proceed to the metering fix MRG01"), "DIRECT EJU74QP MRG01")
 end
+-- a name an airport and a navaid near the aircraft both bear, in a direct-to: the one its route holds,
+-- else asked about; "Virgin" names Virgin Atlantic (VIR) and Virgin Australia (VOZ): a callsign said with
+-- it is the one flying, a new one takes the airline of the one flying, else is asked about
+do
+  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
+  if not ok then
+    print("skipped: city names in a direct-to need BlueSky's navdata at ../shared/bluesky/navdata")
+  else
+    for _, line in ipairs({ "CRE QFA520 B738 -27.9 152.4 050 FL160 280", "ADDWPT QFA520 BN",
+        "CRE VOZ817 B738 -34.4 150.5 040 FL240 300", "ADDWPT VOZ817 YSSY", "CRE RXA64 SF34 -37.4 144.0 100 FL170 240" }) do
+      check(nav:exec(line))
+    end
+    local function ex(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+    check_eq(ex("Qantas 520 track direct Brisbane"), "DIRECT QFA520 BN")
+    check_eq(ex("Qantas 520, proceed direct to Brisbane, descend FL120"), "DIRECT QFA520 BN ; ALT QFA520 FL120")
+    check_eq(ex("Virgin 817 cleared direct Sydney"), "DIRECT VOZ817 YSSY")
+    check(ex("Rex 64 direct Melbourne"):find("^ASK Which place is meant: the ML navaid or the YMML airport") ~= nil)
+    -- a navaid's kind typed in capitals after the name is no waypoint of its own
+    check_eq(ex("Qantas 520, track direct to the Brisbane VOR"), "DIRECT QFA520 BN")
+    check_eq(ex("Rex 64 direct Melbourne VOR"), "ADDWPT RXA64 ML ; DIRECT RXA64 ML")
+    check_eq(ex("Virgin eight one seven climb flight level three one zero"), "ALT VOZ817 FL310")
+    -- greetings of the region carry nothing
+    check_eq(ex("Qantas 520, kia ora, climb flight level two four zero"), "ALT QFA520 FL240")
+    check_eq(ex("G'day mate, Virgin 817 reduce speed two eight zero"), "SPD VOZ817 280")
+    check_eq(ex("Rex 64 howzit, turn left heading 090"), "HDG RXA64 90 LEFT")
+    check_eq(ex("create Virgin 1219 a B738 at -37.5 145.2 heading 330 FL110 250 knots"),
+      "CRE VOZ1219 B738 -37.5 145.2 330 FL110 250")
+    local empty = squawk.sim.new()
+    check(said(graph.translate("new aircraft Virgin 44, A333, at 51.2 -0.5, heading 270, FL200, 280 knots",
+      { sim = empty, mode = "offline" })):find("^ASK Which airline is the new Virgin 44 of: VIR or VOZ") ~= nil)
+  end
+end
