@@ -87,6 +87,13 @@ return function(H, f, compass)
     end
     local types = self:refs_in(s.b, s.e, "type")
     local actype = types[1] and types[1].name
+    -- ("a United triple seven, UAL9, B77W": a designator written as such is the variant meant, over a
+    -- family said by its spoken name; two designators written keep the first)
+    local written = {}
+    for _, r in ipairs(types) do
+      if r.e == r.b + 1 and self.t[r.b].raw:upper() == r.name then written[#written + 1] = r.name end
+    end
+    if #written == 1 then actype = written[1] end
     -- ("B738... sorry, A320": a type said again after a correction replaces the one before it)
     for k = 2, #types do
       if self:word_in(types[k - 1].e, types[k].b, "@correction") then actype = types[k].name end
@@ -890,6 +897,11 @@ return function(H, f, compass)
       if q.kind == "alt" and not alt then alt = f.alt(q.value, q.fl) end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
       if q.kind == "plain" and not spd and self:word(q.b - 1, "speed spd") then spd = f.int(q.value) end
+      -- "at 15000 and 250 knots": a bare number of whole hundreds, 1000 to 60000, after "at" is the altitude
+      if q.kind == "plain" and not alt and self:word(q.b - 1, "at") and q.value >= 1000 and q.value <= 60000
+          and q.value % 100 == 0 then
+        alt = f.alt(q.value, false)
+      end
       if q.kind == "mach" and not spd then spd = f.mach(q.value) end
     end
     if next_to then
