@@ -236,6 +236,17 @@ return function(H, f, compass)
       hdg, alt, spd = left[1].value, left[2].value, left[3].value
       left = {}
     end
+    -- with no altitude said, the one bare number of whole hundreds from 1000 to 60000 (no heading, no
+    -- speed) is the altitude ("at 43.55 -79.2, 6000, heading 260, 210 knots")
+    if not alt then
+      local at
+      for k, q in ipairs(left) do
+        if q.kind == "plain" and q.value >= 1000 and q.value <= 60000 and q.value % 100 == 0 then
+          at = not at and k or -1
+        end
+      end
+      if at and at > 0 then alt = table.remove(left, at).value end
+    end
     -- CRE's order for values said bare: heading, altitude, speed ("52.15 4.25 45 fl310 290")
     if #left >= 1 and left[1].kind == "plain" and not hdg and alt and left[1].value >= 0 and left[1].value <= 360
         and (#left == 2 or spd or mach) then

@@ -1734,6 +1734,12 @@ do
   check_eq(ex("create UAL15 A320 at 42.05 -89.2, heading 095, altitude FL200, speed 280"),
     "CRE UAL15 A320 42.05 -89.2 95 FL200 280")
   check_eq(ex("cre KL1 B738 42 -88 90 FL200 250, alt KL1 FL300"), "CRE KL1 B738 42 -88 90 FL200 250 ; ALT KL1 FL300")
+  -- a creation's one bare number of whole hundreds (1000 to 60000), no altitude said, is its altitude
+  check_eq(ex("Porter 345, Q400, DH8D, at 43.55 -79.2, 6000, heading two six zero, two ten knots"),
+    "CRE POE345 DH8D 43.55 -79.2 260 6000 210")
+  check_eq(ex("create FFT221 A320 at 42.1 -88.1 heading 350, give him 8000 and 220 knots"),
+    "CRE FFT221 A320 42.1 -88.1 350 8000 220")
+  asked("create FFT222 A320 at 42.1 -88.1 heading 350, 8000, 9000, 220 knots")
   check_eq(ex("back to real time rate please, multiplier 1"), "DTMULT 1")
   check_eq(ex("ok, back to real time rate"), "DTMULT 1")
 end
