@@ -389,7 +389,9 @@ return function(intent, rule, words)
     local t = g.t[k]
     return t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft")
   end }
-  rule { "create spawn generate creat cre", "create" }
+  -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
+  rule { "creating spawning", false, prev = { 1, "before after without" } }
+  rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }

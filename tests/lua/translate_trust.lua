@@ -1740,6 +1740,9 @@ do
   check_eq(ex("create FFT221 A320 at 42.1 -88.1 heading 350, give him 8000 and 220 knots"),
     "CRE FFT221 A320 42.1 -88.1 350 8000 220")
   asked("create FFT222 A320 at 42.1 -88.1 heading 350, 8000, 9000, 220 knots")
+  check_eq(ex("creating Westjet 611, B737, 43.75 -80.20, heading 100, FL140, 270"), "CRE WJA611 B737 43.75 -80.2 100 FL140 270")
+  check_eq(ex("now spawning SWA12, B737, 42.5 -88.5, heading 180, FL200, 280 knots"), "CRE SWA12 B737 42.5 -88.5 180 FL200 280")
+  check_eq(ex("set the seed to 7 before creating anything"), "SEED 7")
   check_eq(ex("back to real time rate please, multiplier 1"), "DTMULT 1")
   check_eq(ex("ok, back to real time rate"), "DTMULT 1")
 end
