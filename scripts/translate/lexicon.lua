@@ -87,6 +87,8 @@ return {
         "explain", "brief", "talk", "discuss", "speak",
         -- an experimenter watching what a run does ("let's watch it", "see the effect")
         "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens" },
+    -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
+    audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",

@@ -1743,6 +1743,9 @@ do
   check_eq(ex("creating Westjet 611, B737, 43.75 -80.20, heading 100, FL140, 270"), "CRE WJA611 B737 43.75 -80.2 100 FL140 270")
   check_eq(ex("now spawning SWA12, B737, 42.5 -88.5, heading 180, FL200, 280 knots"), "CRE SWA12 B737 42.5 -88.5 180 FL200 280")
   check_eq(ex("set the seed to 7 before creating anything"), "SEED 7")
+  -- the people in the room, addressed, carry nothing
+  check_eq(ex("ok observers, I'm going to start the clock now"), "OP")
+  check_eq(ex("alright folks, DAL889 climb FL240"), "ALT DAL889 FL240")
   check_eq(ex("back to real time rate please, multiplier 1"), "DTMULT 1")
   check_eq(ex("ok, back to real time rate"), "DTMULT 1")
 end
