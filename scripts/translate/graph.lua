@@ -207,15 +207,23 @@ local PRONOUNS = require("translate.lexicon").pronouns
 -- condition for the clause after it, no AT/AFTER/BEFORE command of its own
 local CONDITION_OPENERS = { at = true }
 for _, w in ipairs(require("translate.lexicon").accounted.condition) do CONDITION_OPENERS[w] = true end
+-- ("cre UAL1542 A320 at 42.05 -89.2, hdg 095 alt FL200": a heading, altitude or speed clause after a
+-- creation gives the new aircraft's fields, English for one creation; "..., alt UAL1542 FL300", naming
+-- its callsign, is a command of its own)
+local CREATION_FIELDS = { HDG = true, ALT = true, SPD = true }
 function M.command_clauses(text)
   local parts = {}
+  local prev, created
   for part in (text .. ","):gmatch("([^,;]*)[,;]") do
     part = part:gsub("^%s+", ""):gsub("%s+$", "")
     local first, rest = part:match("^(%S+)%s*(.*)$")
     while first and LINKS[first:lower()] do first, rest = rest:match("^(%S+)%s*(.*)$") end
-    if not first or not nodes.canonical_name(first:gsub("[%p]+$", "")) or CONDITION_OPENERS[first:lower()] then
+    local cmd = first and nodes.canonical_name(first:gsub("[%p]+$", ""))
+    local arg = (rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")
+    if not cmd or CONDITION_OPENERS[first:lower()] or (prev == "CRE" and CREATION_FIELDS[cmd] and arg ~= created) then
       return nil
     end
+    prev, created = cmd, arg
     if PRONOUNS[(rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")] then return nil end
     parts[#parts + 1] = first .. (rest ~= "" and (" " .. rest) or "")
   end

@@ -109,6 +109,13 @@ return function(H, f, compass)
     end
     local types = self:refs_in(s.b, s.e, "type")
     local actype = types[1] and types[1].name
+    -- ("a United triple seven, UAL9, B77W": a designator written as such is the variant meant, over a
+    -- family said by its spoken name; two designators written keep the first)
+    local written = {}
+    for _, r in ipairs(types) do
+      if r.e == r.b + 1 and self.t[r.b].raw:upper() == r.name then written[#written + 1] = r.name end
+    end
+    if #written == 1 then actype = written[1] end
     -- ("B738... sorry, A320": a type said again after a correction replaces the one before it)
     for k = 2, #types do
       if self:word_in(types[k - 1].e, types[k].b, "@correction") then actype = types[k].name end
@@ -250,6 +257,17 @@ return function(H, f, compass)
         and left[2].value <= 60000 and left[3].value >= 40 and left[3].value <= 700 then
       hdg, alt, spd = left[1].value, left[2].value, left[3].value
       left = {}
+    end
+    -- with no altitude said, the one bare number of whole hundreds from 1000 to 60000 (no heading, no
+    -- speed) is the altitude ("at 43.55 -79.2, 6000, heading 260, 210 knots")
+    if not alt then
+      local at
+      for k, q in ipairs(left) do
+        if q.kind == "plain" and q.value >= 1000 and q.value <= 60000 and q.value % 100 == 0 then
+          at = not at and k or -1
+        end
+      end
+      if at and at > 0 then alt = table.remove(left, at).value end
     end
     -- CRE's order for values said bare: heading, altitude, speed ("52.15 4.25 45 fl310 290")
     if #left >= 1 and left[1].kind == "plain" and not hdg and alt and left[1].value >= 0 and left[1].value <= 360
@@ -933,6 +951,11 @@ return function(H, f, compass)
       if q.kind == "alt" and not alt then alt = f.alt(q.value, q.fl) end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
       if q.kind == "plain" and not spd and self:word(q.b - 1, "speed spd") then spd = f.int(q.value) end
+      -- "at 15000 and 250 knots": a bare number of whole hundreds, 1000 to 60000, after "at" is the altitude
+      if q.kind == "plain" and not alt and self:word(q.b - 1, "at") and q.value >= 1000 and q.value <= 60000
+          and q.value % 100 == 0 then
+        alt = f.alt(q.value, false)
+      end
       if q.kind == "mach" and not spd then spd = f.mach(q.value) end
     end
     if next_to then

@@ -513,7 +513,12 @@ return function(H, f, wrap, compass)
     if not v then return self:need("What vertical speed should " .. id .. " fly, in feet per minute?") end
     self:take(v)
     local fpm = v.value
-    if fpm > 0 and self:direction(s) < 0 then fpm = -fpm end
+    -- the sign is the way the aircraft moves, named by the motion when one is said ("increase your rate of
+    -- descent to 2500" descends, "reduce your rate of climb to 500" climbs); otherwise the verb's direction
+    local down = self:word_in(s.b, s.e, "descent descend descending")
+    local up = self:word_in(s.b, s.e, "climb climbing")
+    local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
+    if fpm > 0 and dir < 0 then fpm = -fpm end
     self:emit("VS " .. id .. " " .. f.int(fpm))
   end
 end

@@ -87,6 +87,8 @@ return {
         "explain", "brief", "talk", "discuss", "speak",
         -- an experimenter watching what a run does ("let's watch it", "see the effect")
         "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens" },
+    -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
+    audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
@@ -367,6 +369,9 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
+    -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
+    { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },
     -- "caution similar callsign", "caution wake turbulence": a warning to the pilot, no instruction
     -- (`through`: instruction words that stay in the phrase: wake turbulence is no NOISE command)
     { what = "cautions", words = "caution", through = "turbulence" },

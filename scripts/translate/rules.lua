@@ -389,7 +389,9 @@ return function(intent, rule, words)
     local t = g.t[k]
     return t ~= nil and t.kind == "number" and g:word(k + 1, "@counted_aircraft")
   end }
-  rule { "create spawn generate creat cre", "create" }
+  -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
+  rule { "creating spawning", false, prev = { 1, "before after without" } }
+  rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
@@ -774,9 +776,11 @@ return function(intent, rule, words)
   -- ("resume at 5 times real time": the rate of the resume, read by it)
   rule { "real", false, prev = { 1, "x times @multipliers" }, when = function(g, i) return g:preceded_by(i, 7, "continue resume") end }
   rule { "real", "dtmult", next = "time", prev = { 1, "x times @multipliers" } }  -- ("twice real time")
-  -- "slow the clock to real time": the rate the clock is set to, no start of it
+  -- "slow the clock to real time", "back to real time rate, multiplier 1": the rate the clock is set to
+  -- (a word of the rate within 6 words before, or its rate or multiplier within 6 after), no start of it
   rule { "real", false, prev = { 1, "to" }, next = "time", when = function(g, i)
     return g:word_in(math.max(1, i - 6), i, "slow slower faster speed multiplier rate")
+      or g:word_in(i + 2, math.min(#g.t + 1, i + 7), "multiplier rate")
   end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }

@@ -1740,3 +1740,45 @@ do
       { sim = empty, mode = "offline" })):find("^ASK Which airline is the new Virgin 44 of: VIR or VOZ") ~= nil)
   end
 end
+
+-- a North American study (R33): a rate's sign is the motion it names; flight rules carry no altitude; a bare
+-- altitude after "at" constrains an added waypoint; a written designator beats a spoken family name; a
+-- creation's fields after a comma stay its own; "back to real time rate" sets the rate, no start
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100",
+      "DEFWPT LANDR 42.3 -87.5" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
+  check_eq(ex("Delta 889 increase your rate of descent to two thousand five hundred"), "VS DAL889 -2500")
+  check_eq(ex("DAL889 reduce your rate of climb to 500 fpm"), "VS DAL889 500")
+  check_eq(ex("DAL889 reduce rate of descent to 1000 feet per minute"), "VS DAL889 -1000")
+  asked("N731RS maintain VFR at or below 4500")
+  asked("N731RS maintain VFR on top")
+  check_eq(ex("add LANDR to Delta 889's route at 15000 and 250 knots"), "ADDWPT DAL889 LANDR 15000 250")
+  check_eq(ex("DAL889 add LANDR to the route at 12000"), "ADDWPT DAL889 LANDR 12000")
+  check_eq(ex("need a United triple seven, UAL9, B77W, FL260, 310 knots, heading 265, 41.98 -87.4"),
+    "CRE UAL9 B77W 41.98 -87.4 265 FL260 310")
+  check_eq(ex("create a Delta Airbus, DAL7, A321, at 41.9 -87.9 heading 090 FL200 280 knots"),
+    "CRE DAL7 A321 41.9 -87.9 90 FL200 280")
+  check_eq(ex("cre UAL1542 A320 at 42.05 -89.2, hdg 095 alt FL200 spd 280"), "CRE UAL1542 A320 42.05 -89.2 95 FL200 280")
+  check_eq(ex("create UAL15 A320 at 42.05 -89.2, heading 095, altitude FL200, speed 280"),
+    "CRE UAL15 A320 42.05 -89.2 95 FL200 280")
+  check_eq(ex("cre KL1 B738 42 -88 90 FL200 250, alt KL1 FL300"), "CRE KL1 B738 42 -88 90 FL200 250 ; ALT KL1 FL300")
+  -- a creation's one bare number of whole hundreds (1000 to 60000), no altitude said, is its altitude
+  check_eq(ex("Porter 345, Q400, DH8D, at 43.55 -79.2, 6000, heading two six zero, two ten knots"),
+    "CRE POE345 DH8D 43.55 -79.2 260 6000 210")
+  check_eq(ex("create FFT221 A320 at 42.1 -88.1 heading 350, give him 8000 and 220 knots"),
+    "CRE FFT221 A320 42.1 -88.1 350 8000 220")
+  asked("create FFT222 A320 at 42.1 -88.1 heading 350, 8000, 9000, 220 knots")
+  check_eq(ex("creating Westjet 611, B737, 43.75 -80.20, heading 100, FL140, 270"), "CRE WJA611 B737 43.75 -80.2 100 FL140 270")
+  check_eq(ex("now spawning SWA12, B737, 42.5 -88.5, heading 180, FL200, 280 knots"), "CRE SWA12 B737 42.5 -88.5 180 FL200 280")
+  check_eq(ex("set the seed to 7 before creating anything"), "SEED 7")
+  -- the people in the room, addressed, carry nothing
+  check_eq(ex("ok observers, I'm going to start the clock now"), "OP")
+  check_eq(ex("alright folks, DAL889 climb FL240"), "ALT DAL889 FL240")
+  check_eq(ex("back to real time rate please, multiplier 1"), "DTMULT 1")
+  check_eq(ex("ok, back to real time rate"), "DTMULT 1")
+end
