@@ -45,7 +45,8 @@ int cmd_train(const ArgV& given) {
       return usage_error(
           "train", "--levels, --gaussian and --hidden shape the policy of a --env ENV.lua run");
     if (!probe->has("--env") && (probe->has("--obs-norm") || probe->has("--log-std")))
-      return usage_error("train", "--obs-norm and --log-std shape the policy of a --env ENV.lua run");
+      return usage_error("train",
+                         "--obs-norm and --log-std shape the policy of a --env ENV.lua run");
     if (!probe->has("--env") && probe->has("--imitate"))
       return usage_error("train", "--imitate POLICY.lua clones a rule of a --env ENV.lua run");
     if (!probe->has("--env") && probe->has("--agents"))

@@ -215,7 +215,8 @@ int cmd_train_env(const Args& args) {
                        "\"improved\", \"ppo\" or \"vpg\"");
   const bool gaussian = args.has("--gaussian");
   if (gaussian && *parallel)
-    return usage_error("train", "--gaussian trains single-agent files; " + file + " is multi-agent");
+    return usage_error("train",
+                       "--gaussian trains single-agent files; " + file + " is multi-agent");
   if (gaussian && args.has("--levels"))
     return usage_error("train",
                        "--gaussian acts on the continuous Box: no --levels grid beside it");
@@ -254,8 +255,9 @@ int cmd_train_env(const Args& args) {
   auto log_std = args.get_double("--log-std", spec.init_log_std);
   if (!log_std) return usage_error("train", log_std.status().message());
   if (args.has("--log-std") && (!gaussian || !(*log_std >= -5.0 && *log_std <= 2.0)))
-    return usage_error("train", "--log-std " + args.get_or("--log-std", "") +
-                                    ": the Gaussian head's initial log sigma, in [-5, 2], with --gaussian");
+    return usage_error("train",
+                       "--log-std " + args.get_or("--log-std", "") +
+                           ": the Gaussian head's initial log sigma, in [-5, 2], with --gaussian");
   if (gaussian) {
     spec.head = "gaussian";
     spec.action_size = es.action_size();
@@ -281,7 +283,8 @@ int cmd_train_env(const Args& args) {
   if (!norm_episodes) return usage_error("train", norm_episodes.status().message());
   if (args.has("--obs-norm")) {
     if (*parallel)
-      return usage_error("train", "--obs-norm trains single-agent files; " + file + " is multi-agent");
+      return usage_error("train",
+                         "--obs-norm trains single-agent files; " + file + " is multi-agent");
     auto stats = teacher
                      ? rl::observation_stats(*teacher, *batches->train, cfg.seed, *norm_episodes)
                      : rl::observation_stats(**policy, *batches->eval, cfg.seed, *norm_episodes);

@@ -13,12 +13,13 @@ Status MlpPolicySpec::validate() const {
   if (obs_size < 1) return Status::invalid("policy obs_size must be positive");
   if (!obs_mean.empty() || !obs_std.empty()) {
     if (obs_mean.size() != static_cast<size_t>(obs_size) || obs_std.size() != obs_mean.size())
-      return Status::invalid("policy obs_mean / obs_std hold " + std::to_string(obs_mean.size()) + " / " +
-                             std::to_string(obs_std.size()) + " numbers: expected obs_size = " +
-                             std::to_string(obs_size) + " each");
+      return Status::invalid("policy obs_mean / obs_std hold " + std::to_string(obs_mean.size()) +
+                             " / " + std::to_string(obs_std.size()) +
+                             " numbers: expected obs_size = " + std::to_string(obs_size) + " each");
     for (size_t j = 0; j < obs_std.size(); ++j)
       if (!(obs_std[j] > 0.0 && std::isfinite(obs_std[j])) || !std::isfinite(obs_mean[j]))
-        return Status::invalid("policy obs_std[" + std::to_string(j) + "] = " + std::to_string(obs_std[j]) +
+        return Status::invalid("policy obs_std[" + std::to_string(j) +
+                               "] = " + std::to_string(obs_std[j]) +
                                ", obs_mean = " + std::to_string(obs_mean[j]) +
                                ": expected a finite mean and a positive finite deviation");
     if (!mirror.empty()) return Status::invalid("policy mirror does not take obs_mean / obs_std");
@@ -38,8 +39,8 @@ Status MlpPolicySpec::validate() const {
     return mirror.empty() ? Status::ok() : validate_mirror(mirror, obs_size, action_values);
   }
   if (head == "gaussian" && (action_size < 1 || action_size > kMaxActionSize))
-    return Status::invalid("gaussian policy action_size " + std::to_string(action_size) + ": expected 1.." +
-                           std::to_string(kMaxActionSize));
+    return Status::invalid("gaussian policy action_size " + std::to_string(action_size) +
+                           ": expected 1.." + std::to_string(kMaxActionSize));
   if (head == "gaussian")
     return mirror.empty() ? Status::ok()
                           : Status::invalid("policy mirror needs the categorical head, not the gaussian one");
@@ -50,7 +51,8 @@ Result<std::unique_ptr<MlpPolicy>> MlpPolicy::make(const MlpPolicySpec& spec, Rn
   SQUAWK_RETURN_IF_ERROR(spec.validate());
   std::vector<int> sizes = {spec.obs_size};
   sizes.insert(sizes.end(), spec.hidden.begin(), spec.hidden.end());
-  sizes.push_back(spec.head == "gaussian" ? spec.action_size : static_cast<int>(spec.action_values.size()));
+  sizes.push_back(spec.head == "gaussian" ? spec.action_size
+                                          : static_cast<int>(spec.action_values.size()));
   SQUAWK_ASSIGN_OR_RETURN(nn::Mlp mlp, nn::Mlp::make(sizes));
   std::unique_ptr<MlpPolicy> p(new MlpPolicy(spec, std::move(mlp)));
   p->mlp_.init(std::span<float>(p->params_).first(p->mlp_.num_params()), rng);
@@ -120,7 +122,8 @@ void MlpPolicy::log_probs(std::span<const float> obs, int n, std::span<const Act
       const auto i = static_cast<size_t>(r);
       float lp = 0.0f;
       for (size_t j = 0; j < k; ++j)
-        lp += nn::gaussian_log_prob(actions[i].component(static_cast<int>(j)), out_[i * k + j], log_std[j]);
+        lp += nn::gaussian_log_prob(actions[i].component(static_cast<int>(j)), out_[i * k + j],
+                                    log_std[j]);
       out[i] = lp;
     }
     return;
@@ -147,8 +150,9 @@ float MlpPolicy::accumulate_gradient(std::span<const float> obs, int n,
     for (int r = 0; r < n; ++r) {
       const auto i = static_cast<size_t>(r);
       for (size_t j = 0; j < k; ++j) {
-        const nn::GaussianGrad g = nn::gaussian_grad(actions[i].component(static_cast<int>(j)),
-                                                     out_[i * k + j], log_std[j], coef[i], ent_coef);
+        const nn::GaussianGrad g =
+            nn::gaussian_grad(actions[i].component(static_cast<int>(j)), out_[i * k + j],
+                              log_std[j], coef[i], ent_coef);
         dout_[i * k + j] = -g.d_mu;
         d_log_std_[j] -= g.d_log_std;
         entropy += nn::gaussian_entropy(log_std[j]);

@@ -37,9 +37,9 @@ struct MlpPolicySpec {
   std::string head = "categorical";                       // "categorical" | "gaussian"
   std::vector<double> action_values = {-1, -0.5, 0, 0.5, 1};  // categorical classes
   double init_log_std = -0.5;                             // gaussian: initial log sigma
-  int action_size = 1;                                    // gaussian: components D, 1..kMaxActionSize
+  int action_size = 1;  // gaussian: components D, 1..kMaxActionSize
   env::ObservationMirror mirror{};                        // empty = none
-  std::vector<double> obs_mean, obs_std;                  // [obs_size] each, or empty: no normalisation
+  std::vector<double> obs_mean, obs_std;  // [obs_size] each, or empty: no normalisation
 
   Status validate() const;
 };
@@ -83,7 +83,7 @@ class MlpPolicy : public Policy {
   nn::MlpCache cache_;
   std::vector<float> out_, dout_, logp_, d_log_std_;
   std::vector<float> rows_, raw_, draw_;  // mirror: [2n, D], [2n, K], [2n, K]
-  std::vector<float> normed_;              // obs_mean/obs_std: [n, D]
+  std::vector<float> normed_;             // obs_mean/obs_std: [n, D]
 };
 
 }  // namespace squawk::rl

@@ -664,7 +664,8 @@ Status Vm::run_file(const std::string& path, const std::vector<std::string>& arg
   // also as `...` (the stack grows to hold them: Lua guarantees only LUA_MINSTACK free slots)
   if (!lua_checkstack(L, static_cast<int>(args.size()) + 1)) {
     lua_pop(L, 1);
-    return Status::invalid(path + ": too many arguments (" + std::to_string(args.size()) + ") for the Lua stack");
+    return Status::invalid(path + ": too many arguments (" + std::to_string(args.size()) +
+                           ") for the Lua stack");
   }
   for (const auto& a : args) lua_pushstring(L, a.c_str());
   return pcall(static_cast<int>(args.size()), 0);

@@ -475,11 +475,12 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     }
     while (i < t.size() && t[i].kind == TokKind::kPunct && t[i].text == ",") ++i;
     Suffix suf = read_suffix(t, i, used, names);
-    // Digits followed by a unit are a quantity ("fast forward 2 minutes", "the protected zone 3 miles"),
-    // not a callsign.
+    // Digits followed by a unit are a quantity ("fast forward 2 minutes", "the protected zone 3
+    // miles"), not a callsign.
     auto unit_after = [&](size_t e) {
-      static const char* kUnits[] = {"s", "sec", "secs", "second", "seconds", "min", "mins", "minute", "minutes",
-                                     "h", "hour", "hours", "x", "times", "percent", "%", "nm", "mile", "miles"};
+      static const char* kUnits[] = {
+          "s",    "sec",   "secs", "second", "seconds", "min", "mins", "minute", "minutes", "h",
+          "hour", "hours", "x",    "times",  "percent", "%",   "nm",   "mile",   "miles"};
       return e < t.size() && is_word(t[e]) &&
              std::any_of(std::begin(kUnits), std::end(kUnits), [&](const char* u) { return t[e].text == u; });
     };

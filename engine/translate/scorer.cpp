@@ -191,8 +191,10 @@ bool same_command(std::string_view produced, std::string_view expected) {
   // (commands_asas.cpp rmethv).
   if (cmd == "RMETHV") {
     auto fold = [](std::string& v) {
-      if (text::iequals(v, "V/S")) v = "ON";
-      else if (text::iequals(v, "NONE")) v = "OFF";
+      if (text::iequals(v, "V/S"))
+        v = "ON";
+      else if (text::iequals(v, "NONE"))
+        v = "OFF";
     };
     for (size_t i = 1; i < p.size(); ++i) fold(p[i]);
     for (size_t i = 1; i < e.size(); ++i) fold(e[i]);

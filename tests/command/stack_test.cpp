@@ -451,7 +451,7 @@ TEST_CASE(
   CHECK(ids("nowhere").empty());                               // no airport within 10 NM
   // a city of several large airports (within 30 NM) is no one airport; one farther is not its
   CHECK(ids("London") == std::vector<std::string>{"EGLL", "EGKK"});
-  CHECK(ids("blagnac").empty());                               // an airport's name is no navaid's
+  CHECK(ids("blagnac").empty());  // an airport's name is no navaid's
   CHECK(ids("").empty());
 }
 

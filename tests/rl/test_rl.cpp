@@ -104,7 +104,8 @@ TEST_CASE("categorical and Gaussian log-prob gradients match finite differences"
                                         nn::gaussian_log_prob(0.4f, 0.1f, -0.7f - h)) / (2 * h)).epsilon(1e-2));
 }
 
-TEST_CASE("the Gaussian MLP policy's gradient (network and log sigmas) matches finite differences") {
+TEST_CASE(
+    "the Gaussian MLP policy's gradient (network and log sigmas) matches finite differences") {
   // D = 1 (the gym rules' head) and D = 2, 3 (the diagonal head of the two-component Boxes):
   // log pi sums the components' log densities, H their entropies.
   for (const int d : {1, 2, 3}) {
@@ -123,10 +124,12 @@ TEST_CASE("the Gaussian MLP policy's gradient (network and log sigmas) matches f
                                      0.6f, 0.4f,  -0.9f, -0.1f, 0.0f, 0.7f};
     std::vector<rl::ActionSample> acts = {{-1, 0.9f}, {-1, -0.4f}, {-1, 0.1f}, {-1, -1.3f}};
     for (int r = 0; r < n; ++r)
-      for (int j = 1; j < d; ++j) acts[static_cast<size_t>(r)].component(j) = 0.3f * static_cast<float>(j - r);
+      for (int j = 1; j < d; ++j)
+        acts[static_cast<size_t>(r)].component(j) = 0.3f * static_cast<float>(j - r);
     // Distinct log sigmas, so a component's gradient landing on another's would show.
     std::span<float> log_std = p.params().last(static_cast<size_t>(d));
-    for (int j = 0; j < d; ++j) log_std[static_cast<size_t>(j)] = -0.5f + 0.2f * static_cast<float>(j);
+    for (int j = 0; j < d; ++j)
+      log_std[static_cast<size_t>(j)] = -0.5f + 0.2f * static_cast<float>(j);
     const std::vector<float> coef = {0.8f, -1.1f, 0.5f, 0.3f};
     const float ent = 0.1f;
     std::fill(p.grads().begin(), p.grads().end(), 0.0f);
@@ -158,7 +161,8 @@ TEST_CASE("the Gaussian MLP policy's gradient (network and log sigmas) matches f
       large += std::fabs(fd) > 1e-3;
     }
     CHECK(large > static_cast<int>(theta.size()) / 4);
-    for (size_t j = 0; j < static_cast<size_t>(d); ++j) CHECK(g[g.size() - 1 - j] != 0.0f);  // each log sigma learns
+    for (size_t j = 0; j < static_cast<size_t>(d); ++j)
+      CHECK(g[g.size() - 1 - j] != 0.0f);  // each log sigma learns
   }
 }
 
@@ -209,7 +213,8 @@ TEST_CASE("a diagonal Gaussian samples each component from its own mean and sigm
   CHECK(wide.validate().message() == "gaussian policy action_size 5: expected 1..4");
   rl::MlpPolicySpec cat;
   cat.action_size = 2;
-  CHECK(cat.validate().message().find("a categorical head acts through action_values") != std::string::npos);
+  CHECK(cat.validate().message().find("a categorical head acts through action_values") !=
+        std::string::npos);
 }
 
 TEST_CASE("checkpoint round trip and clear errors on damaged files") {
@@ -286,7 +291,8 @@ TEST_CASE("checkpoint round trip and clear errors on damaged files") {
   CHECK(rl::load_checkpoint(path).status().code() != Code::kOk);
 }
 
-TEST_CASE("obs_mean / obs_std: the network reads the normalised observation; checkpoints keep them") {
+TEST_CASE(
+    "obs_mean / obs_std: the network reads the normalised observation; checkpoints keep them") {
   rl::MlpPolicySpec plain;
   plain.obs_size = 2;
   plain.hidden = {5};
@@ -300,8 +306,8 @@ TEST_CASE("obs_mean / obs_std: the network reads the normalised observation; che
   auto b = rl::MlpPolicy::make(normed, r2);
   REQUIRE(a);
   REQUIRE(b);
-  const std::vector<float> obs = {1.5f, 2.0f, 0.0f, -6.0f};                   // two rows
-  const std::vector<float> by_hand = {1.0f, 1.0f, -2.0f, -1.0f};              // (obs - mean) / std
+  const std::vector<float> obs = {1.5f, 2.0f, 0.0f, -6.0f};       // two rows
+  const std::vector<float> by_hand = {1.0f, 1.0f, -2.0f, -1.0f};  // (obs - mean) / std
   std::vector<float> ya, yb;
   (*a)->forward(by_hand, 2, ya);
   (*b)->forward(obs, 2, yb);
@@ -364,7 +370,8 @@ TEST_CASE("a diagonal Gaussian checkpoint keeps its components; one without acti
     const size_t nl1 = data->find('\n'), nl2 = data->find('\n', nl1 + 1);
     nlohmann::json h = nlohmann::json::parse(data->substr(nl1 + 1, nl2 - nl1 - 1));
     REQUIRE(h.erase("action_size") == 1);
-    REQUIRE(files::write_atomic(path, data->substr(0, nl1 + 1) + h.dump() + data->substr(nl2)).is_ok());
+    REQUIRE(
+        files::write_atomic(path, data->substr(0, nl1 + 1) + h.dump() + data->substr(nl2)).is_ok());
     auto old = rl::load_checkpoint(path);
     REQUIRE(old);
     CHECK(old->spec.action_size == 1);

@@ -212,7 +212,9 @@ TEST_CASE("the MLP learner raises the return of a Lua environment (sign.lua: ran
   CHECK(last->mean_steps == 4.0);
 }
 
-TEST_CASE("continuous actions (levels 0): each number clipped to [-1, 1] and mapped onto its Box component") {
+TEST_CASE(
+    "continuous actions (levels 0): each number clipped to [-1, 1] and mapped onto its Box "
+    "component") {
   script::LuaEnvSpec s;
   s.action_low = {0, -2};
   s.action_high = {10, 2};
@@ -275,7 +277,9 @@ TEST_CASE("continuous actions (levels 0): each number clipped to [-1, 1] and map
                 wide.status().message());
 }
 
-TEST_CASE("the Gaussian head learns a Lua environment's continuous action (sign.lua, sign2.lua: best 0)") {
+TEST_CASE(
+    "the Gaussian head learns a Lua environment's continuous action (sign.lua, sign2.lua: best "
+    "0)") {
   for (const std::string file : {"sign.lua", "sign2.lua"}) {
     CAPTURE(file);
     auto train_envs = batch(repo(("tests/data/gym/" + file).c_str()), 4, 0);
