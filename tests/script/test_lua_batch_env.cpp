@@ -40,6 +40,19 @@ int class_of(uint64_t k, int t, int classes) {
   return static_cast<int>((k * 7 + static_cast<uint64_t>(t) * 3) % static_cast<uint64_t>(classes));
 }
 
+// The learner settings of the small training tests: 640 episodes, 16 an update, 4
+// environments, Adam 1e-2, no value network, no evaluation during training.
+rl::TrainConfig small_run() {
+  rl::TrainConfig tc;
+  tc.episodes = 640;
+  tc.episodes_per_update = 16;
+  tc.num_envs = 4;
+  tc.lr = tc.lr_final = 1e-2;
+  tc.value_hidden = {};
+  tc.eval_every = 0;
+  return tc;
+}
+
 }  // namespace
 
 TEST_CASE("the action grid: K levels per component, component j from digit j of the class") {
@@ -180,13 +193,7 @@ TEST_CASE("the MLP learner raises the return of a Lua environment (sign.lua: ran
   Rng init(3);
   auto p = rl::MlpPolicy::make(spec, init);
   REQUIRE(p);
-  rl::TrainConfig tc;
-  tc.episodes = 640;
-  tc.episodes_per_update = 16;
-  tc.num_envs = 4;
-  tc.lr = tc.lr_final = 1e-2;
-  tc.value_hidden = {};
-  tc.eval_every = 0;
+  rl::TrainConfig tc = small_run();
   tc.eval_episodes = 100;
   auto before = rl::evaluate(**p, *eval_envs, {100, 7, false});
   REQUIRE(before);
@@ -292,14 +299,8 @@ TEST_CASE(
     Rng init(3);
     auto p = rl::MlpPolicy::make(spec, init);
     REQUIRE(p);
-    rl::TrainConfig tc;
+    rl::TrainConfig tc = small_run();
     tc.estimator = "ppo";
-    tc.episodes = 640;
-    tc.episodes_per_update = 16;
-    tc.num_envs = 4;
-    tc.lr = tc.lr_final = 1e-2;
-    tc.value_hidden = {};
-    tc.eval_every = 0;
     auto before = rl::evaluate(**p, *eval_envs, {100, 7, true});
     REQUIRE(before);
     CHECK(before->mean_reward < -2.0);
