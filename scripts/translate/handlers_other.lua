@@ -1033,6 +1033,17 @@ return function(H, f, compass)
     return out
   end
 
+  -- A new shape's name and its points ("lat lon" strings) in s when `fits(#points)`; else asks `question`
+  -- and gives nil.
+  local function named_points(self, s, fits, question)
+    local name, p = new_name(self, s.b, s.e), points(self, s.b, s.e)
+    if not name or not fits(#p) then return self:need(question) end
+    local corners = {}
+    for _, c in ipairs(p) do corners[#corners + 1] = f.num(c[1]) .. " " .. f.num(c[2]) end
+    return name, table.concat(corners, " ")
+  end
+  local function two(n) return n == 2 end
+
   -- A shape's top and bottom, said as two levels or as one level and the surface ("from the surface up
   -- to FL195"): " top bottom", "" when none is said, or nil after asking (one level alone)
   local SURFACE = "surface ground sfc gnd sea"
@@ -1112,42 +1123,32 @@ return function(H, f, compass)
 
   -- "BOX name lat lon lat lon [top bottom]": two corners, and the levels between which it lies
   function m:box(s)
-    local name = new_name(self, s.b, s.e)
-    local p = points(self, s.b, s.e)
-    if not name or #p ~= 2 then
-      return self:need("To define the box I need its name and two corners (latitude and longitude each).")
-    end
+    local name, corners = named_points(self, s, two,
+      "To define the box I need its name and two corners (latitude and longitude each).")
+    if not name then return end
     local levels = shape_levels(self, s, "box " .. name)
     if not levels then return end
-    self:emit(string.format("BOX %s %s %s %s %s%s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]),
-      f.num(p[2][2]), levels))
+    self:emit("BOX " .. name .. " " .. corners .. levels)
     self.last_shape = name
   end
 
   -- "POLY name lat lon lat lon lat lon ...": a polygon of three corners or more ("Polygon LTMA: 51.2 -1.0,
   -- 51.9 -1.0, 51.9 0.8, 51.2 0.8"); POLYALT when its top and bottom are said
   function m:polygon(s)
-    local name = new_name(self, s.b, s.e)
-    local p = points(self, s.b, s.e)
-    if not name or #p < 3 then
-      return self:need("To define the polygon I need its name and three corners or more (latitude and longitude each).")
-    end
+    local name, corners = named_points(self, s, function(n) return n >= 3 end,
+      "To define the polygon I need its name and three corners or more (latitude and longitude each).")
+    if not name then return end
     local levels = shape_levels(self, s, "polygon " .. name)
     if not levels then return end
-    local corners = {}
-    for _, c in ipairs(p) do corners[#corners + 1] = f.num(c[1]) .. " " .. f.num(c[2]) end
-    self:emit((levels == "" and "POLY " .. name or "POLYALT " .. name .. levels) .. " " .. table.concat(corners, " "))
+    self:emit((levels == "" and "POLY " .. name or "POLYALT " .. name .. levels) .. " " .. corners)
     self.last_shape = name
   end
 
   -- "LINE name lat lon lat lon": "a reference line REF1 from 55.68 -3.27 to 56.12 -3.20" (drawn only)
   function m:line(s)
-    local name = new_name(self, s.b, s.e)
-    local p = points(self, s.b, s.e)
-    if not name or #p ~= 2 then
-      return self:need("To draw the line I need its name and its two ends (latitude and longitude each).")
-    end
-    self:emit(string.format("LINE %s %s %s %s %s", name, f.num(p[1][1]), f.num(p[1][2]), f.num(p[2][1]), f.num(p[2][2])))
+    local name, ends = named_points(self, s, two,
+      "To draw the line I need its name and its two ends (latitude and longitude each).")
+    if name then self:emit("LINE " .. name .. " " .. ends) end
   end
 
   -- "MCRE n [type [alt [spd [dest]]]]": random traffic; a type is given only when it is a known one
