@@ -23,6 +23,8 @@
 //   sim:airports_beside(ident, lat, lon, within_nm) -> { "LFML", ... }  airports within
 //                           within_nm of the navaid or fix `ident` nearest lat, lon [deg], nearest
 //                           first ({} without it: the airport a navaid named after a city is on)
+//   sim:waypoints_at(lat, lon) -> { "54N20", ... }  idents of the fixes and navaids at exactly lat,
+//                           lon [deg] (the named points of a position said in degrees: NAT points)
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
 //                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
@@ -249,6 +251,21 @@ int l_navaids_named(lua_State* L) {
   int k = 0;
   for (const std::string& id : s->navdb()->navaids_named(name, lat, lon, within, types)) {
     lua_pushstring(L, id.c_str());
+    lua_rawseti(L, -2, ++k);
+  }
+  return 1;
+}
+
+int l_waypoints_at(lua_State* L) {
+  command::Stack* s = self(L);
+  const double lat = arg_number(L, 2, "lat"), lon = arg_number(L, 3, "lon");
+  lua_newtable(L);
+  if (!s->navdb()) return 1;
+  constexpr double kSameDeg = 1e-6;  // fix.dat writes six decimals
+  int k = 0;
+  for (const command::NavPoint& w : s->navdb()->waypoints()) {
+    if (std::abs(w.lat - lat) > kSameDeg || std::abs(w.lon - lon) > kSameDeg) continue;
+    lua_pushstring(L, w.id.c_str());
     lua_rawseti(L, -2, ++k);
   }
   return 1;
@@ -529,6 +546,7 @@ void bind_sim(lua_State* L) {
       {"navaids_named", guarded<l_navaids_named>},
       {"airports_coded", guarded<l_airports_coded>},
       {"airports_beside", guarded<l_airports_beside>},
+      {"waypoints_at", guarded<l_waypoints_at>},
       {"load", guarded<l_load>},
       {"step", guarded<l_step>},
       {"run_until", guarded<l_run_until>},

@@ -159,9 +159,11 @@ end
 local function know_all(v, seen)
   if type(v) == "string" then return know(v) end
   -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
-  -- keep, and lexicon.foreign_digits are digits only beside another: they account for no word)
+  -- keep, lexicon.foreign_digits are digits only beside another, and lexicon.atc_units name a station only
+  -- in the addressing position: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
-      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits then
+      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
+      or v == lexicon.atc_units then
     return
   end
   seen[v] = true
@@ -565,6 +567,8 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  -- a rate glued to its unit ("1000ft/min", "1500ft/m")
+  text = text:gsub("(%d)([Ff][Tt]/[Mm][Ii]?[Nn]?)%f[%A]", "%1 %2")
   -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
   -- as after a dash (set_apart)
   text = text:gsub("%s*%((%a[^()]*)%)", " - %1,")
@@ -1846,9 +1850,44 @@ function G:issued()
   return words, kinds
 end
 
+-- True when token i is in the name of the caller's own station, said in the addressing position: a
+-- clause of its own, set off by commas, straight after a callsign ("Shamrock 105, Shanwick, climb ...")
+-- or opening the request before one ("Santa Maria, Air Portugal 237, ..."); one to three capitalised
+-- words, a unit word after them ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities)
+-- or not, that name an air traffic unit (lexicon.atc_units) or the navdata's airport or city.
+local ATC_UNITS = set_of(lexicon.atc_units)
+function G:station_at(i)
+  local function punct(k) return self.t[k] ~= nil and self.t[k].kind == "punct" end
+  local b, e = i, i
+  while b > 1 and not punct(b - 1) do b = b - 1 end
+  while e <= #self.t and not punct(e) do e = e + 1 end
+  if not (punct(e) and (self.t[e].text == "," or self.t[e].text == ":")) then return false end
+  local after_callsign = false
+  for _, r in ipairs(self.refs) do
+    after_callsign = after_callsign or (r.kind == "aircraft" and r.e == b - 1 and self.t[b - 1].text == ",")
+  end
+  local before_callsign = b == self:skip_fillers(1) and #self:refs_in(e + 1, e + 2, "aircraft") > 0
+  if not (after_callsign or before_callsign) then return false end
+  local last = e - 1
+  if last > b and FACILITIES[self.t[last].text] then last = last - 1 end
+  if last - b > 2 or #self:quantities(b, e) > 0 or #self:refs_in(b, e, "aircraft") > 0 then return false end
+  local words = {}
+  for k = b, last do
+    local t = self.t[k]
+    if t.kind ~= "word" or not t.raw:match("^%u") or MEANING[t.text] or self.triggers[k] then return false end
+    words[#words + 1] = t.text
+  end
+  local name = table.concat(words, " ")
+  if ATC_UNITS[name] then return true end
+  for _, by in ipairs({ self.world.airports_named, self.world.airports_of_city }) do
+    if #by(name) > 0 then return true end
+  end
+  return false
+end
+
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
--- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
+-- (`kinds`: G:issued); an ATC unit's place, the caller's station; comments and purposes; courtesy and value phrases.
 function G:explained_spans(issued, kinds)
   local inside = {}
   for _, r in ipairs(self.refs) do
@@ -1896,6 +1935,7 @@ function G:explained_spans(issued, kinds)
         if self.t[k].kind == "word" and not MEANING[self.t[k].text] and not self.triggers[k] then inside[k] = true end
       end
     end
+    if self:station_at(i) then inside[i] = true end
     for _, p in ipairs(PHRASES[self.t[i].text] or {}) do
       local ok = true
       for k = 2, #p do ok = ok and self.t[i + k - 1] ~= nil and self.t[i + k - 1].text == p[k] end
@@ -2103,6 +2143,18 @@ function G:instruction_before(i)
   return false
 end
 
+-- "unable FL380, maintain FL360": the value said straight after "unable" is one the controller cannot
+-- give (a request refused); its tokens are marked used and explained, no instruction of their own.
+function G:refused()
+  for i = 1, #self.t - 1 do
+    local q = self:word(i, "unable") and self:quantities(i + 1, #self.t + 1)[1]
+    if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
+      self:mark_used(i, q.e)
+      for k = i, q.e - 1 do self.noted[k] = true end
+    end
+  end
+end
+
 -- Every word that starts a phrase of lexicon.not_simulated.
 local NOT_SIMULATED_WORDS = {}
 for _, c in ipairs(lexicon.not_simulated) do
@@ -2145,10 +2197,13 @@ function G:not_simulated()
         end
         e = e + 1
       end
-      -- "when passing FL250 contact Langen 120.8": a condition said before the phrase is part of it
+      -- "when passing FL250 contact Langen 120.8": a condition said before the phrase is part of it; so is
+      -- the position it is said at ("at 30 West contact Gander")
       local b = i - 1
-      while b >= 1 and self.t[b].kind ~= "punct" and not self:word(b, "@condition and then") do b = b - 1 end
-      if b >= 1 and b < i - 1 and self:word(b, "@condition") and #self:quantities(b + 1, i) > 0
+      while b >= 1 and self.t[b].kind ~= "punct" and not self:word(b, "@condition and then at") do b = b - 1 end
+      local at = self:word(b, "at") and self:quantities(b + 1, i)[1]
+      local placed = at and (at.kind == "lat" or at.kind == "lon")
+      if b >= 1 and b < i - 1 and (self:word(b, "@condition") and #self:quantities(b + 1, i) > 0 or placed)
           and not self:any_instruction_in(b + 1, i) and (b == 1 or self.t[b - 1].kind == "punct") then
         self:mark_used(b, i)
         for k = b, i - 1 do self.noted[k] = true end
@@ -2322,12 +2377,20 @@ local function airline_values(text, fleet)
     end
     return nil
   end)
-  return (text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
+  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
     local icao = AIRLINE_WORDS[w:lower()]
     if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then
       return the .. w .. "," .. s1 .. n .. s2 .. unit
     end
     return nil
+  end)
+  -- "Shamrock 1 2 3": a flight number typed digit by digit after its airline's telephony, three or four
+  -- single digits in a row, is one number
+  return (text:gsub("(%f[%a]%a+%s+)(%d[%d%s]*%d)%f[^%d%s]", function(w, run)
+    if not AIRLINE_WORDS[w:match("%a+"):lower()] or not run:match("^%d %d %d$") and not run:match("^%d %d %d %d$") then
+      return nil
+    end
+    return w .. run:gsub("%s", "")
   end))
 end
 
@@ -2397,6 +2460,7 @@ function M.translate(text, world)
   end
   local note = g:not_simulated()
   g:self_corrected()
+  g:refused()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()

@@ -140,6 +140,8 @@ function m:acids(s)
   local qs = self:quantities(s.trig, s.e)
   for k, q in ipairs(qs) do
     if q.b > s.trig then
+      -- (a latitude and the longitude after it are one value: "add 53 North 50 West to EIN105's route")
+      if q.kind == "lat" and qs[k + 1] and qs[k + 1].kind == "lon" then k, q = k + 1, qs[k + 1] end
       local comma = false
       for i = q.e, s.e - 1 do
         if self.t[i].kind == "punct" then comma = true end

@@ -162,14 +162,16 @@ return function(H, f, compass)
       end
     end
     -- "westbound", "on a northerly heading", "flying south": a compass point as the heading (not "10 nm
-    -- north of ...", a position)
+    -- north of ...", a position); with a heading said, one within 90 degrees of it describes it ("an
+    -- eastbound, ... heading 080")
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      local point = not hdg and t.kind == "word" and not self:word(i + 1, "of")
+      local point = t.kind == "word" and not self:word(i + 1, "of")
         and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$") or t.text:match("^(%a+)wards?$")
           or (self:word(i - 1, "@compass_verbs") and t.text))
-      if point and L.compass[point] then
-        hdg = L.compass[point]
+      local c = point and L.compass[point]
+      if c and (not hdg or math.abs((c - hdg + 180) % 360 - 180) < 90) then
+        hdg = hdg or c
         self:explain(i, i + 1)
       end
     end
@@ -181,9 +183,10 @@ return function(H, f, compass)
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
       if model.sel_mach then mach = model.sel_mach else spd = model.cas_kt end
     end
-    -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol")
-    local named_at
-    if not lat or not lon then
+    -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol");
+    -- "the same position as VIR3": that aircraft's (CRE takes an aircraft's id as its position)
+    local named_at = (not lat or not lon) and model and self:word_in(s.b, s.e, "position location") and model.id or nil
+    if (not lat or not lon) and not named_at then
       -- ("at Zurich... no, sorry, at Munich": the place said after the correction)
       local from = s.b
       for i = s.trig, s.e - 1 do
@@ -676,6 +679,15 @@ return function(H, f, compass)
           local kind = self.t[p[2]] and self.t[p[2]].kind == "word" and L.navaid_types[self.t[p[2]].text]
           local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
             or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, kind or nil)
+          -- (of several navaids of the name, the one the aircraft's route holds: "direct Stornoway" with
+          -- STN, not SAY or ISV, in its route)
+          local held = {}
+          for _, r in ipairs(#ids > 1 and a.route or {}) do
+            for _, n in ipairs(ids) do
+              if n:upper() == r:upper() then held[#held + 1] = n end
+            end
+          end
+          if #held == 1 then ids = held end
           local id = self:one_named(ids, "navaid", phrase, math.huge)
           if id then
             self:explain(i, p[2])
@@ -808,6 +820,41 @@ return function(H, f, compass)
     return nil
   end
 
+  -- A position said in degrees where a waypoint is meant ("direct 54 North 020 West", "after 56 North
+  -- 30 West"): the named point the navdata holds at exactly that position (the NAT points "54N20",
+  -- "5050N"), of several the one aircraft id's route holds. nil when [b, e) says no latitude and
+  -- longitude; false, after asking, when no named point lies there or several do and the route holds
+  -- none of them.
+  function m:point_at(b, e, id)
+    -- ("direct 55 30 North 30 West... correction, 55 North 30 West": the position said after a correction)
+    local k = self:find_word(b, e, "@correction")
+    while k < e do
+      b, k = k + 1, self:find_word(k + 1, e, "@correction")
+    end
+    local qs = self:quantities(b, e)
+    local said = false
+    for _, q in ipairs(qs) do said = said or q.kind == "lat" end
+    local lat, lon = position(qs, b, self)
+    if not (said and lat and lon) then return nil end
+    for _, q in ipairs(qs) do
+      if q.kind == "lat" or q.kind == "lon" then self:take(q) end
+    end
+    local where = string.format("%s %s", f.num(lat), f.num(lon))
+    local ids = self.world.waypoints_at and self.world.waypoints_at(lat, lon) or {}
+    local held = {}
+    for _, r in ipairs((self:state(id) or {}).route or {}) do held[r:upper()] = true end
+    local on_route = {}
+    for _, n in ipairs(ids) do
+      if held[n:upper()] then on_route[#on_route + 1] = n end
+    end
+    if #on_route == 1 then return on_route[1] end
+    if #ids == 1 then return ids[1] end
+    if #ids == 0 then
+      return self:need(string.format("No named point lies at %s. Which waypoint do you mean?", where)) or false
+    end
+    return self:need(string.format("Which point at %s is meant: %s?", where, table.concat(ids, " or "))) or false
+  end
+
   function m:direct(s)
     local id = self:acid(s, "fly direct")
     if not id then return end
@@ -825,8 +872,10 @@ return function(H, f, compass)
       and #self:refs_in(s.trig, s.e, "waypoint") == 0 and (dest_word + 1 >= s.e or self.t[dest_word + 1].kind == "punct")
       and a.dest
     if to_dest then self:explain(dest_word - 1, dest_word + 1) end
-    local wp = to_dest or added and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
-        and added or self:waypoint(s.trig, s.e, id)
+    local point = self:point_at(s.trig + 1, s.e, id)
+    if point == false then return end
+    local wp = to_dest or point or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
+        and self:word_in(s.trig, s.e, "there it") and added or self:waypoint(s.trig, s.e, id)
     if not wp and a and a.route and #a.route == 1 then wp = a.route[1] end
     wp = wp or self:spoken_name(s.trig + 1, s.e)
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
@@ -909,11 +958,28 @@ return function(H, f, compass)
     local id = self:acid(s, "get the waypoint")
     if not id then return end
     local qs = self:quantities(s.b, s.e)
-    local lat, lon = position(qs, s.trig, self)
     -- "... after WPC" / "before WPC": ADDWPT's afterwp / beforewp
     -- (also before the verb: "after REMBI add the waypoint ESAMA")
     local at = self:find_word(s.b, s.e, "after before")
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
+    -- ("after 54 North 30 West add ...": the named point at a position said in degrees after it; the
+    -- position added is said apart from it)
+    local said = at < s.e and not next_to and qs[1] and self:quantities(at + 1, at + 3)[1]
+    if said and said.b == at + 1 then
+      local lon
+      for _, q in ipairs(qs) do lon = lon or (q.b > at and q.kind == "lon" and q) end
+      local name = lon and self:point_at(at + 1, lon.e, id)
+      if name == false then return end
+      if name then
+        next_to = { name = name, b = at + 1, e = lon.e }
+        local rest = {}
+        for _, q in ipairs(qs) do
+          if q.b <= at or q.b >= lon.e then rest[#rest + 1] = q end
+        end
+        qs = rest
+      end
+    end
+    local lat, lon = position(qs, s.trig, self)
     local name_e = (next_to and at > s.trig) and at or s.e
     local where, named
     if lat and lon then
@@ -1295,7 +1361,9 @@ return function(H, f, compass)
   function m:delete_waypoint(s)
     local id = self:acid(s, "lose the waypoint")
     if not id then return end
-    local wp = self:waypoint(s.trig, s.e, id)
+    local point = self:point_at(s.trig + 1, s.e, id)
+    if point == false then return end
+    local wp = point or self:waypoint(s.trig, s.e, id)
     if not wp then return self:need("Which waypoint should I remove from the route of " .. id .. "?") end
     self:emit("DELWPT " .. id .. " " .. wp)
   end

@@ -55,6 +55,7 @@ return {
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
         "they", "them", "their", "theirs", "themselves", "one", "ones", "someone", "somebody", "anyone",
         "anybody", "everyone", "everybody", "something", "anything", "everything", "nothing", "nobody", "who",
+        "things", "stuff",
         "whom", "there",
         "here", "i'm", "i'd", "i'll", "i've", "you're", "you'd", "you'll", "you've", "we're", "we'd", "we'll",
         "we've", "he's", "she's", "it's", "it'll", "they're", "they'd", "they'll", "they've", "that's",
@@ -92,6 +93,8 @@ return {
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
+        -- a request granted ("Mach .84 approved")
+        "approved",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
         "readback", "read-back", "incorrect", "said",
         -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
@@ -108,7 +111,9 @@ return {
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
-        "after that", "after this", "at pilot's discretion", "at your discretion" },
+        "after that", "after this", "at pilot's discretion", "at your discretion",
+        -- the speaker holding the room a moment ("hang on, freeze it there")
+        "hang on", "bear with me" },
     -- the ordinary accompaniments of instructions: verbs of changing a setting, participles that
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
@@ -119,7 +124,8 @@ return {
         -- an aircraft's present course described ("the Vueling's drifting off its route")
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
-        "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
+        "instructions", "clearance", "reclearance", "amendment", "request", "requested", "automatic", "automatically",
+        "manual", "manually",
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
@@ -127,6 +133,7 @@ return {
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
+        "danger", "restricted", "prohibited",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
         -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")
         "reference", "boundary", "border", "corner", "corners", "edge", "centre", "center",
@@ -151,11 +158,12 @@ return {
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
-        "delivery", "director", "information", "altimeter", "qnh" },
+        "delivery", "director", "information", "altimeter", "qnh", "oceanic" },
     -- phrases that bound a value, lift its bounds or keep it in force ("or greater", "not less than",
     -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
-        "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
+        "at most", "not above", "not below", "not less than", "no less than", "not more than", "no more than",
+        "until further advised",
         "until further notice", "without restriction", "without restrictions" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
@@ -414,6 +422,11 @@ return {
   named = { "named", "called" },
   id_words = { "named", "called", "callsign", "id" },
   -- words after an airport's name ("Beijing Capital airport")
+  -- air traffic units named by no airport or city ("Shanwick", "Scottish"; the rest are the navdata's
+  -- airport and city names): a station in the addressing position (G:explained_spans)
+  atc_units = { "shanwick", "gander", "scottish", "maastricht", "reykjavik", "santa maria", "new york", "shannon",
+      "swanwick", "london", "manchester", "brest", "reims", "langen", "rhein", "karlsruhe", "padova", "bodo",
+      "canarias", "moncton", "montreal", "edmonton", "anchorage", "oakland", "sondrestrom" },
   airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },

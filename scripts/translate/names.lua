@@ -178,6 +178,7 @@ return {
     { "air baltic", "BTI" },
     { "airbaltic", "BTI" },
     { "iceair", "ICE" },
+    { "icelandair", "ICE" },
     { "martinair", "MPH" },
     { "corsair", "CRL" },
     { "air dolomiti", "DLA" },

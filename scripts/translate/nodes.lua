@@ -249,6 +249,7 @@ function M.world(sim, waypoints)
            navaids_named = function(name, lat, lon, nm, types) return sim:navaids_named(name, lat, lon, nm, types) end,
            airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end,
            airports_beside = function(id, lat, lon, nm) return sim:airports_beside(id, lat, lon, nm) end,
+           waypoints_at = function(lat, lon) return sim:waypoints_at(lat, lon) end,
            -- a user waypoint's position (POS reads it and changes nothing): lat, lon or nil
            user_waypoint_at = function(name)
              local ok, out = sim:exec("POS " .. name)

@@ -457,10 +457,24 @@ return function(intent, rule, words)
   end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
   -- next to another, the place said after "after"/"before" before or after the verb
+  -- ("after NAVPO add Lajes": a navaid or airport said by its one-word name)
   rule { "add append insert route", "addwpt", when = function(g, i)
-    if not g:has_ref(i + 1, i + 2, "waypoint") then return false end
     local at = g:find_word(1, #g.t + 1, "after before")
     return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
+      and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
+  end }
+  -- "add 56 North 40 West after 56 North 30 West", "add 61 North 50 West to the end of your route": a
+  -- latitude said straight after the verb (its degrees and minutes too), for an aircraft that flies, no
+  -- type named (no creation)
+  rule { "add append insert", "addwpt", when = function(g, i)
+    local qs = g:quantities(i + 1, math.min(#g.t + 1, i + 5))
+    local lat = qs[1] and qs[1].b == i + 1
+      and (qs[1].kind == "lat" or (qs[2] and qs[2].kind == "lat" and qs[2].b == qs[1].e))
+    if not lat or g:has_ref(1, #g.t + 1, "type") then return false end
+    for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
+      if r.exists then return true end
+    end
+    return false
   end }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
@@ -694,7 +708,7 @@ return function(intent, rule, words)
   rule { "hold pause", "hold", when = function(g, i) return i == 1 and g.t[2] ~= nil and g.t[2].kind == "punct" end }
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
-  rule { "pause hold freeze", "hold" }
+  rule { "pause hold freeze pausing freezing", "hold" }
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
@@ -715,6 +729,12 @@ return function(intent, rule, words)
       end
     end
     return false
+  end }
+  -- "report level", "report reaching": the report of a level the aircraft will reach, no question now
+  rule { "report", false, next = "level reaching passing" }
+  -- "advise when able to resume": the pilot's report asked for, not the instruction after "able to"
+  rule { "resume", false, when = function(g, i)
+    return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"

@@ -1782,3 +1782,65 @@ do
   check_eq(ex("back to real time rate please, multiplier 1"), "DTMULT 1")
   check_eq(ex("ok, back to real time rate"), "DTMULT 1")
 end
+-- North Atlantic oceanic R/T (R35): the caller's own station in the addressing position carries nothing;
+-- "unable" takes its value back; "report level" and "advise when able to resume" ask for a report; a
+-- flight number typed digit by digit; a rate glued to its unit; a compass point agreeing with the heading
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE EIN105 A332 53.0 -13.0 270 FL360 M.82", "CRE TAP237 A21N 38.0 -25.0 240 FL360 M.79",
+      "CRE WJA3 B38M 55.8 -7.0 280 FL340 300" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local function asked(text) check(ex(text):find("^ASK") ~= nil) end
+  check_eq(ex("Shamrock one zero five, Shanwick, climb flight level three eight zero"), "ALT EIN105 FL380")
+  check_eq(ex("WestJet 3, Scottish Control, turn right heading 310"), "HDG WJA3 310 RIGHT")
+  check_eq(ex("Santa Maria, Air Portugal 237, descend FL340"), "ALT TAP237 FL340")
+  check_eq(ex("Air Portugal 237, Gander Oceanic, Mach decimal eight zero"), "SPD TAP237 M0.8")
+  -- a place word anywhere else is still asked about
+  asked("Shamrock 105 climb FL380 Shanwick")
+  asked("Shamrock 105, Shanwick climb FL380")
+  check_eq(ex("Shamrock 105, unable FL380, maintain flight level three six zero"), "ALT EIN105 FL360")
+  asked("Shamrock 105 unable FL380")
+  asked("Shamrock 105 unable direct MALOT, turn left heading 250")
+  check_eq(ex("WJA3 climb to FL360, not above"), "ALT WJA3 FL360")
+  check_eq(ex("Air Portugal 237, Mach decimal seven eight approved"), "SPD TAP237 M0.78")
+  asked("Shamrock one zero five, report level")
+  check_eq(ex("EIN105 report your level"), "POS EIN105")
+  check_eq(ex("WJA3 turn left 30 degrees for weather, advise when able to resume"), "HDG WJA3 250 LEFT")
+  check_eq(ex("WJA3 climb FL380 at 1500ft/min"), "ALT WJA3 FL380 1500")
+  check_eq(ex("create Shamrock 1 2 3, A333, at 52 North 15 West, heading 270, FL370, Mach .82"),
+    "CRE EIN123 A333 52 -15 270 FL370 M0.82")
+  check_eq(ex("add an eastbound, EIN77, A333, at 52 North 30 West, heading 080, FL350"),
+    "CRE EIN77 A333 52 -30 80 FL350")
+  asked("add a westbound, EIN77, A333, at 52 North 30 West, heading 080, FL350")
+  check_eq(ex("Shamrock 105, climb FL380, at 20 West contact Shanwick on 127.9"), "ALT EIN105 FL380")
+  check_eq(ex("add Shamrock 22 as an A330, same position as Air Portugal 237, FL320, Mach .80, heading 240"),
+    "CRE EIN22 A332 TAP237 240 FL320 M0.8")
+  check_eq(ex("Shamrock 105 vectors to avoid the danger area, turn left heading 250"), "HDG EIN105 250 LEFT")
+end
+-- oceanic points said in degrees: the named point the navdata holds there (NAT "55N30"), the one of
+-- several the route holds, else asked; raw coordinates where the command takes them; a name several
+-- navaids bear, one of them in the route ("Stornoway": STN), is that one; a station the navdata names
+do
+  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
+  if not ok then
+    print("skipped: oceanic points need BlueSky's navdata at ../shared/bluesky/navdata")
+  else
+    for _, line in ipairs({ "CRE BAW117 B772 55.0 -12.0 270 FL350 M.84", "ADDWPT BAW117 55N20",
+        "ADDWPT BAW117 55N30", "CRE ICE455 B38M 57.5 -3.5 310 FL300 290", "ADDWPT ICE455 STN" }) do
+      check(nav:exec(line))
+    end
+    local function ex(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+    check_eq(ex("Speedbird 117 proceed direct 55 North 30 West"), "DIRECT BAW117 55N30")
+    check_eq(ex("BAW117 direct 54 north 40 west"), "ADDWPT BAW117 54N40 ; DIRECT BAW117 54N40")
+    check_eq(ex("Speedbird 117, direct 55 30 North 30 West... correction, 55 North 20 West"), "DIRECT BAW117 55N20")
+    check(ex("BAW117 direct 53 north 50 west"):find("^ASK Which point at 53 %-50 is meant") ~= nil)
+    check(ex("BAW117 direct 55 30 north 40 west"):find("^ASK No named point lies at 55.5 %-40") ~= nil)
+    check_eq(ex("Speedbird 117, add 55 North 40 West after 55 North 30 West"), "ADDWPT BAW117 55 -40,,,55N30")
+    check_eq(ex("add 56 North 50 West to the end of Speedbird 117's route"), "ADDWPT BAW117 56 -50")
+    check_eq(ex("remove 55 North 20 West from Speedbird 117's routing"), "DELWPT BAW117 55N20")
+    check_eq(ex("Iceair 455, direct Stornoway"), "DIRECT ICE455 STN")
+    check_eq(ex("Iceair 455, Dublin, climb FL320"), "ALT ICE455 FL320")
+  end
+end
