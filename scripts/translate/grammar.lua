@@ -1852,9 +1852,9 @@ end
 
 -- True when token i is in the name of the caller's own station, said in the addressing position: a
 -- clause of its own, set off by commas, straight after a callsign ("Shamrock 105, Shanwick, climb ...")
--- or opening the request before one ("Santa Maria, Air Portugal 237, ..."); one to three capitalised
--- words, a unit word after them ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities)
--- or not, that name an air traffic unit (lexicon.atc_units) or the navdata's airport or city.
+-- or opening the request before one ("Santa Maria, Air Portugal 237, ..."); one to three words, a unit
+-- word after them ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities) or not, that name
+-- an air traffic unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport or city.
 local ATC_UNITS = set_of(lexicon.atc_units)
 function G:station_at(i)
   local function punct(k) return self.t[k] ~= nil and self.t[k].kind == "punct" end
@@ -1862,6 +1862,15 @@ function G:station_at(i)
   while b > 1 and not punct(b - 1) do b = b - 1 end
   while e <= #self.t and not punct(e) do e = e + 1 end
   if not (punct(e) and (self.t[e].text == "," or self.t[e].text == ":")) then return false end
+  -- (once per clause: the navdata's names are read by a scan of its airports)
+  self.stations = self.stations or {}
+  if self.stations[b] == nil then self.stations[b] = self:station_clause(b, e) end
+  return self.stations[b]
+end
+
+-- True when tokens [b, e), a clause ending in a comma or colon, are a station in the addressing position
+-- (G:station_at).
+function G:station_clause(b, e)
   local after_callsign = false
   for _, r in ipairs(self.refs) do
     after_callsign = after_callsign or (r.kind == "aircraft" and r.e == b - 1 and self.t[b - 1].text == ",")
@@ -1871,14 +1880,15 @@ function G:station_at(i)
   local last = e - 1
   if last > b and FACILITIES[self.t[last].text] then last = last - 1 end
   if last - b > 2 or #self:quantities(b, e) > 0 or #self:refs_in(b, e, "aircraft") > 0 then return false end
-  local words = {}
+  local words, proper = {}, true
   for k = b, last do
     local t = self.t[k]
-    if t.kind ~= "word" or not t.raw:match("^%u") or MEANING[t.text] or self.triggers[k] then return false end
-    words[#words + 1] = t.text
+    if t.kind ~= "word" or MEANING[t.text] or self.triggers[k] then return false end
+    words[#words + 1], proper = t.text, proper and t.raw:match("^%u") ~= nil
   end
   local name = table.concat(words, " ")
   if ATC_UNITS[name] then return true end
+  if not proper then return false end
   for _, by in ipairs({ self.world.airports_named, self.world.airports_of_city }) do
     if #by(name) > 0 then return true end
   end
@@ -1936,6 +1946,12 @@ function G:explained_spans(issued, kinds)
       end
     end
     if self:station_at(i) then inside[i] = true end
+    -- "climb FL360, not above": the level said is a limit too, when nothing follows in its clause ("not
+    -- above FL370" names another level, asked about)
+    local nx = self.t[i + 2]
+    if self:word(i, "not") and self:word(i + 1, "above below") and (not nx or nx.kind == "punct") then
+      inside[i], inside[i + 1] = true, true
+    end
     for _, p in ipairs(PHRASES[self.t[i].text] or {}) do
       local ok = true
       for k = 2, #p do ok = ok and self.t[i + k - 1] ~= nil and self.t[i + k - 1].text == p[k] end

@@ -836,8 +836,10 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do said = said or q.kind == "lat" end
     local lat, lon = position(qs, b, self)
     if not (said and lat and lon) then return nil end
+    -- (the first latitude and longitude, which position() read; a position said after them is no part of it)
+    local took = {}
     for _, q in ipairs(qs) do
-      if q.kind == "lat" or q.kind == "lon" then self:take(q) end
+      if (q.kind == "lat" or q.kind == "lon") and not took[q.kind] then took[q.kind] = self:take(q) end
     end
     local where = string.format("%s %s", f.num(lat), f.num(lon))
     local ids = self.world.waypoints_at and self.world.waypoints_at(lat, lon) or {}

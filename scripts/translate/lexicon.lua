@@ -124,8 +124,8 @@ return {
         -- an aircraft's present course described ("the Vueling's drifting off its route")
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
-        "instructions", "clearance", "reclearance", "amendment", "request", "requested", "automatic", "automatically",
-        "manual", "manually",
+        "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
+        "automatically", "manual", "manually",
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
@@ -162,8 +162,7 @@ return {
     -- phrases that bound a value, lift its bounds or keep it in force ("or greater", "not less than",
     -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
-        "at most", "not above", "not below", "not less than", "no less than", "not more than", "no more than",
-        "until further advised",
+        "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
         "until further notice", "without restriction", "without restrictions" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)

@@ -463,10 +463,9 @@ return function(intent, rule, words)
     return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
-  -- "add 56 North 40 West after 56 North 30 West", "add 61 North 50 West to the end of your route": a
-  -- latitude said straight after the verb (its degrees and minutes too), for an aircraft that flies, no
-  -- type named (no creation)
-  rule { "add append insert", "addwpt", when = function(g, i)
+  -- True when a latitude is said straight after word i (its degrees and minutes too: "55 30 North"),
+  -- an aircraft that flies is named and no type is (no creation)
+  local function degrees_for_flying(g, i)
     local qs = g:quantities(i + 1, math.min(#g.t + 1, i + 5))
     local lat = qs[1] and qs[1].b == i + 1
       and (qs[1].kind == "lat" or (qs[2] and qs[2].kind == "lat" and qs[2].b == qs[1].e))
@@ -475,7 +474,9 @@ return function(intent, rule, words)
       if r.exists then return true end
     end
     return false
-  end }
+  end
+  -- "add 56 North 40 West after 56 North 30 West", "add 61 North 50 West to the end of your route"
+  rule { "add append insert", "addwpt", when = degrees_for_flying }
   rule { "add put make need want", "create", near = { 3, "@articles_new" },
          when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 7) end }
   -- "make a Vueling at SOTUK, VLG77, A320, ...": an airline after the article, and a new callsign of it
@@ -541,6 +542,9 @@ return function(intent, rule, words)
   end }
   rule { "remove delete del skip drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and no_direct(g, i) end }
+  -- "Virgin 3 delete 54 North 30 West": a position said in degrees straight after the verb, for an aircraft
+  -- that flies, is a point of its route (no deletion of the aircraft)
+  rule { "forget delete remove del", "delwpt", when = degrees_for_flying }
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
   rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }

@@ -1796,6 +1796,7 @@ do
   check_eq(ex("Shamrock one zero five, Shanwick, climb flight level three eight zero"), "ALT EIN105 FL380")
   check_eq(ex("WestJet 3, Scottish Control, turn right heading 310"), "HDG WJA3 310 RIGHT")
   check_eq(ex("Santa Maria, Air Portugal 237, descend FL340"), "ALT TAP237 FL340")
+  check_eq(ex("shamrock one zero five, shanwick, descend flight level three four zero"), "ALT EIN105 FL340")
   check_eq(ex("Air Portugal 237, Gander Oceanic, Mach decimal eight zero"), "SPD TAP237 M0.8")
   -- a place word anywhere else is still asked about
   asked("Shamrock 105 climb FL380 Shanwick")
@@ -1804,6 +1805,7 @@ do
   asked("Shamrock 105 unable FL380")
   asked("Shamrock 105 unable direct MALOT, turn left heading 250")
   check_eq(ex("WJA3 climb to FL360, not above"), "ALT WJA3 FL360")
+  asked("WJA3 climb FL380, not above FL370")
   check_eq(ex("Air Portugal 237, Mach decimal seven eight approved"), "SPD TAP237 M0.78")
   asked("Shamrock one zero five, report level")
   check_eq(ex("EIN105 report your level"), "POS EIN105")
@@ -1832,6 +1834,12 @@ do
       check(nav:exec(line))
     end
     local function ex(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+    -- sim:waypoints_at: the idents at exactly a position (both of 53N 50W's), none beside it
+    check_eq(table.concat(nav:waypoints_at(55, -30), " "), "55N30")
+    local two = nav:waypoints_at(53, -50)
+    table.sort(two)
+    check_eq(table.concat(two, " "), "5350N 53N50")
+    check_eq(#nav:waypoints_at(55.01, -30), 0)
     check_eq(ex("Speedbird 117 proceed direct 55 North 30 West"), "DIRECT BAW117 55N30")
     check_eq(ex("BAW117 direct 54 north 40 west"), "ADDWPT BAW117 54N40 ; DIRECT BAW117 54N40")
     check_eq(ex("Speedbird 117, direct 55 30 North 30 West... correction, 55 North 20 West"), "DIRECT BAW117 55N20")
@@ -1840,6 +1848,9 @@ do
     check_eq(ex("Speedbird 117, add 55 North 40 West after 55 North 30 West"), "ADDWPT BAW117 55 -40,,,55N30")
     check_eq(ex("add 56 North 50 West to the end of Speedbird 117's route"), "ADDWPT BAW117 56 -50")
     check_eq(ex("remove 55 North 20 West from Speedbird 117's routing"), "DELWPT BAW117 55N20")
+    check_eq(ex("Speedbird 117 delete 55 North 30 West"), "DELWPT BAW117 55N30")
+    -- a second position after the point is no part of it: asked about, never dropped
+    check(ex("BAW117 direct 55 north 30 west, then 55 north 40 west"):find("^ASK") ~= nil)
     check_eq(ex("Iceair 455, direct Stornoway"), "DIRECT ICE455 STN")
     check_eq(ex("Iceair 455, Dublin, climb FL320"), "ALT ICE455 FL320")
   end
