@@ -567,6 +567,8 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  -- a position typed as one word of whole degrees ("55N030W", "37N020W"), as oceanic points are written
+  text = text:gsub("%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
   -- a rate glued to its unit ("1000ft/min", "1500ft/m")
   text = text:gsub("(%d)([Ff][Tt]/[Mm][Ii]?[Nn]?)%f[%A]", "%1 %2")
   -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
@@ -1850,26 +1852,28 @@ function G:issued()
   return words, kinds
 end
 
--- True when token i is in the name of the caller's own station, said in the addressing position: a
--- clause of its own, set off by commas, straight after a callsign ("Shamrock 105, Shanwick, climb ...")
--- or opening the request before one ("Santa Maria, Air Portugal 237, ..."); one to three words, a unit
--- word after them ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities) or not, that name
--- an air traffic unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport or city.
+-- The name of the caller's own station, said in the addressing position, is marked used and explained
+-- before the parse (no word of it is an instruction: "Scottish Information"): a clause of its own, set
+-- off by commas, straight after a callsign ("Shamrock 105, Shanwick, climb ...") or opening the request
+-- before one ("Santa Maria, Air Portugal 237, ..."); one to three words, a unit word after them
+-- ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities) or not, that name an air traffic
+-- unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport or city.
 local ATC_UNITS = set_of(lexicon.atc_units)
-function G:station_at(i)
-  local function punct(k) return self.t[k] ~= nil and self.t[k].kind == "punct" end
-  local b, e = i, i
-  while b > 1 and not punct(b - 1) do b = b - 1 end
-  while e <= #self.t and not punct(e) do e = e + 1 end
-  if not (punct(e) and (self.t[e].text == "," or self.t[e].text == ":")) then return false end
-  -- (once per clause: the navdata's names are read by a scan of its airports)
-  self.stations = self.stations or {}
-  if self.stations[b] == nil then self.stations[b] = self:station_clause(b, e) end
-  return self.stations[b]
+function G:stations()
+  local b = 1
+  while b <= #self.t do
+    local e = b
+    while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+    if e > b and e <= #self.t and (self.t[e].text == "," or self.t[e].text == ":") and self:station_clause(b, e) then
+      self:mark_used(b, e)
+      for k = b, e - 1 do self.noted[k] = true end
+    end
+    b = e + 1
+  end
 end
 
 -- True when tokens [b, e), a clause ending in a comma or colon, are a station in the addressing position
--- (G:station_at).
+-- (G:stations).
 function G:station_clause(b, e)
   local after_callsign = false
   for _, r in ipairs(self.refs) do
@@ -1883,7 +1887,7 @@ function G:station_clause(b, e)
   local words, proper = {}, true
   for k = b, last do
     local t = self.t[k]
-    if t.kind ~= "word" or MEANING[t.text] or self.triggers[k] then return false end
+    if t.kind ~= "word" or MEANING[t.text] or self:intent_at(k) then return false end
     words[#words + 1], proper = t.text, proper and t.raw:match("^%u") ~= nil
   end
   local name = table.concat(words, " ")
@@ -1897,7 +1901,7 @@ end
 
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
--- (`kinds`: G:issued); an ATC unit's place, the caller's station; comments and purposes; courtesy and value phrases.
+-- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
 function G:explained_spans(issued, kinds)
   local inside = {}
   for _, r in ipairs(self.refs) do
@@ -1945,7 +1949,6 @@ function G:explained_spans(issued, kinds)
         if self.t[k].kind == "word" and not MEANING[self.t[k].text] and not self.triggers[k] then inside[k] = true end
       end
     end
-    if self:station_at(i) then inside[i] = true end
     -- "climb FL360, not above": the level said is a limit too, when nothing follows in its clause ("not
     -- above FL370" names another level, asked about)
     local nx = self.t[i + 2]
@@ -2477,6 +2480,7 @@ function M.translate(text, world)
   local note = g:not_simulated()
   g:self_corrected()
   g:refused()
+  g:stations()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()

@@ -93,8 +93,8 @@ return {
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
-        -- a request granted ("Mach .84 approved")
-        "approved",
+        -- a request granted, a report acknowledged ("Mach .84 approved", "position report received")
+        "approved", "received",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
         "readback", "read-back", "incorrect", "said",
         -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
@@ -158,7 +158,7 @@ return {
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
-        "delivery", "director", "information", "altimeter", "qnh", "oceanic" },
+        "delivery", "director", "information", "altimeter", "qnh", "oceanic", "radio" },
     -- phrases that bound a value, lift its bounds or keep it in force ("or greater", "not less than",
     -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",

@@ -1795,9 +1795,13 @@ do
   local function asked(text) check(ex(text):find("^ASK") ~= nil) end
   check_eq(ex("Shamrock one zero five, Shanwick, climb flight level three eight zero"), "ALT EIN105 FL380")
   check_eq(ex("WestJet 3, Scottish Control, turn right heading 310"), "HDG WJA3 310 RIGHT")
+  -- (a unit word that is an instruction word elsewhere names the unit: no POS for "Information")
+  check_eq(ex("WestJet 3, Scottish Information, climb FL360"), "ALT WJA3 FL360")
   check_eq(ex("Santa Maria, Air Portugal 237, descend FL340"), "ALT TAP237 FL340")
   check_eq(ex("shamrock one zero five, shanwick, descend flight level three four zero"), "ALT EIN105 FL340")
   check_eq(ex("Air Portugal 237, Gander Oceanic, Mach decimal eight zero"), "SPD TAP237 M0.8")
+  check_eq(ex("Air Portugal 237, Santa Maria Radio, position report received, climb FL380"), "ALT TAP237 FL380")
+  check_eq(ex("create TAP9 A339 at 38N020W heading 240 FL360 Mach .80"), "CRE TAP9 A339 38 -20 240 FL360 M0.8")
   -- a place word anywhere else is still asked about
   asked("Shamrock 105 climb FL380 Shanwick")
   asked("Shamrock 105, Shanwick climb FL380")
@@ -1849,6 +1853,7 @@ do
     check_eq(ex("add 56 North 50 West to the end of Speedbird 117's route"), "ADDWPT BAW117 56 -50")
     check_eq(ex("remove 55 North 20 West from Speedbird 117's routing"), "DELWPT BAW117 55N20")
     check_eq(ex("Speedbird 117 delete 55 North 30 West"), "DELWPT BAW117 55N30")
+    check_eq(ex("Speedbird 117 proceed direct 55N030W"), "DIRECT BAW117 55N30")
     -- a second position after the point is no part of it: asked about, never dropped
     check(ex("BAW117 direct 55 north 30 west, then 55 north 40 west"):find("^ASK") ~= nil)
     check_eq(ex("Iceair 455, direct Stornoway"), "DIRECT ICE455 STN")
