@@ -1592,8 +1592,10 @@ end
 -- correction, are the instructions' to explain.)
 local MUST_CARRY = { time = true, lat = true, lon = true, alt = true, speed = true, mach = true }
 function G:uncarried()
-  -- (a value relative to another's; "as" alone is no comparison: "and slow it to 250 knots as well")
-  if self:word_in(1, #self.t + 1, "@relative same match @below @above") then return end
+  -- (a value relative to another's, or a change "by" an amount; "as" alone is no comparison: "and slow it
+  -- to 250 knots as well"; a position is neither: "cross 30 West at or above FL360", "by 20 West")
+  local relative = self:word_in(1, #self.t + 1, "@relative same match @below @above")
+  local function position(q) return q.kind == "lat" or q.kind == "lon" end
   local nums = {}
   for _, line in ipairs(self.out) do
     for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
@@ -1602,8 +1604,8 @@ function G:uncarried()
   for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; other plain ones are often recognition noise)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b] and not q.by
-        and q.b > corrected and not value_carried(q, nums) then
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b]
+        and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
       self.leftover = self:raw(q.b, q.e)
       return
     end
@@ -2163,10 +2165,11 @@ function G:instruction_before(i)
 end
 
 -- "unable FL380, maintain FL360": the value said straight after "unable" is one the controller cannot
--- give (a request refused); its tokens are marked used and explained, no instruction of their own.
+-- give (a request refused); its tokens are marked used and explained, no instruction of their own ("if
+-- unable FL380, ..." is a condition on the pilot, left to the parse).
 function G:refused()
   for i = 1, #self.t - 1 do
-    local q = self:word(i, "unable") and self:quantities(i + 1, #self.t + 1)[1]
+    local q = self:word(i, "unable") and not self:word(i - 1, "if") and self:quantities(i + 1, #self.t + 1)[1]
     if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
       self:mark_used(i, q.e)
       for k = i, q.e - 1 do self.noted[k] = true end

@@ -1807,6 +1807,10 @@ do
   asked("Shamrock 105, Shanwick climb FL380")
   check_eq(ex("Shamrock 105, unable FL380, maintain flight level three six zero"), "ALT EIN105 FL360")
   asked("Shamrock 105 unable FL380")
+  asked("Shamrock 105, if unable FL380, maintain FL360")
+  -- a position no command carries is asked about, also beside a relative word or "by"
+  asked("Shamrock 105, climb FL380, cross 30 West at or above FL370")
+  asked("Shamrock 105, climb to reach FL380 by 20 West")
   asked("Shamrock 105 unable direct MALOT, turn left heading 250")
   check_eq(ex("WJA3 climb to FL360, not above"), "ALT WJA3 FL360")
   asked("WJA3 climb FL380, not above FL370")
