@@ -1848,6 +1848,7 @@ function G:issued()
       local name = (part:match("^%s*(%S+)") or ""):upper()
       if CONDITIONAL[name] then kinds.conditional = true end
       if name == "DIRECT" then kinds.direct = true end
+      if name == "DTMULT" or name == "FF" then kinds.clock = true end
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
     end
   end
@@ -1993,6 +1994,27 @@ function G:explained_spans(issued, kinds)
     k = e + 1
   end
   return inside
+end
+
+-- "run at double speed until the Gander boundary", "fast forward five minutes so the westbounds reach 20
+-- West": after the clock's rate or a jump in time is set, a clause from "until" or "so" that names no
+-- aircraft and no value but a position says what the run should reach by then: a remark, explained.
+function G:clock_remark()
+  local _, kinds = self:issued()
+  if not kinds.clock then return end
+  for i = 1, #self.t do
+    if self:word(i, "until so") and not self.u:used(i) then
+      local e = i + 1
+      while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+      local plain = e > i + 1 and #self:refs_in(i + 1, e, "aircraft") == 0
+      for _, q in ipairs(self:quantities(i + 1, e)) do plain = plain and (q.kind == "lat" or q.kind == "lon") end
+      for k = i + 1, e - 1 do plain = plain and not MEANING[self.t[k].text] end
+      if plain then
+        for k = i, e - 1 do self.noted[k] = true end
+        for _, q in ipairs(self:quantities(i + 1, e)) do self:take(q) end
+      end
+    end
+  end
 end
 
 -- Once the request is read, a word no part of the parse explains is a leftover: a negation or a
@@ -2507,6 +2529,7 @@ function M.translate(text, world)
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end
+  if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unaccounted() end

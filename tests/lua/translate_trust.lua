@@ -1828,6 +1828,10 @@ do
   check_eq(ex("add Shamrock 22 as an A330, same position as Air Portugal 237, FL320, Mach .80, heading 240"),
     "CRE EIN22 A332 TAP237 240 FL320 M0.8")
   check_eq(ex("Shamrock 105 vectors to avoid the danger area, turn left heading 250"), "HDG EIN105 250 LEFT")
+  -- what the run should reach, after a clock rate or a jump in time: a remark
+  check_eq(ex("run at four times speed until the eastbounds reach the boundary"), "DTMULT 4")
+  asked("fast forward until Shamrock 105 reaches the boundary")
+  asked("fast forward two minutes until not conflicting")
 end
 -- oceanic points said in degrees: the named point the navdata holds there (NAT "55N30"), the one of
 -- several the route holds, else asked; raw coordinates where the command takes them; a name several
