@@ -1436,9 +1436,22 @@ function G:at_waypoint(s, spec)
     local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
       and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")
         or self:word(after, "fl flight"))
-    local opening = self:word(r.b - 1, "at")
-      and r.b - 1 == self:skip_fillers(s.b) + (self:has_ref(s.b, r.b, "aircraft") and 1 or 0)
-    if crossed or constrained or opening then
+    -- "SULUR speed constraint 230 kt": the constraint named after the waypoint
+    constrained = constrained or self:word_in(r.e, r.e + 3, "constraint constraints restriction")
+    -- "at ELDAR speed 250", "Delta 889, at PAPPI maintain 250": "at" opening the clause, after its callsign
+    local first = self:skip_fillers(s.b)
+    for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
+    local opening = self:word(r.b - 1, "at") and r.b - 1 == first
+    -- "to be at AMPEG at FL120", "be at FL200 over ARTIP": the value the aircraft is to be at there, said
+    -- after the waypoint or between "be at" and it (`be_at`: the first token of that value)
+    local be_at
+    if self:word(r.b - 1, "at") and self:word(r.b - 2, "be") and self:word(after, "at") then be_at = r.b
+    elseif self:word(r.b - 1, "at over by") then
+      local k = self:find_word(s.b, r.b - 1, "be")
+      local qs = self:quantities(k + 2, r.b - 1)
+      if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
+    end
+    if crossed or constrained or opening or be_at then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
@@ -1447,16 +1460,25 @@ function G:at_waypoint(s, spec)
       -- AT constraint each (BlueSky's AT acid wpname ALT/SPD value)
       local f = handlers.format
       local alt, spd, other = nil, nil, false
-      for _, q in ipairs(self:quantities(r.e, s.e)) do
+      local said = self:quantities(r.e, s.e)
+      if be_at and be_at < r.b then
+        -- "be at FL200 over ARTIP": the value before the waypoint, and none after it
+        other = #said > 0
+        said = self:quantities(be_at, r.b - 1)
+      end
+      for _, q in ipairs(said) do
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
-            or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))) then spd = q
+            or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))
+            -- "at MRG01 FL100 220": a bare number straight after the level is the speed (FL100/220)
+            or (q.kind == "plain" and alt and self:skip_fillers(alt.e) == q.b and q.value >= 100 and q.value <= 400)) then
+          spd = q
         else other = true end
       end
       if in_route and not other and (alt or spd) then
         -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
         -- or below FL150"): its command first, from the words before the crossing
-        local lead = r.b - 1
+        local lead = be_at and be_at < r.b and be_at - 2 or r.b - 1
         if spec and spec.handler and s.trig < lead and #self:quantities(s.b, lead) > 0 then
           self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
         end
