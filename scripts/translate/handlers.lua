@@ -578,6 +578,21 @@ end
 --  * "KLM12 climb FL300, correction KLM21": a callsign after a correction
 --    that ends the request replaces the one named before it.
 function m:settle_callsigns()
+  -- "Austrian 123, AUA123, an A320 ...", "Ryanair 1WT, that's RYR1WT": a callsign said and then written (or
+  -- said again) as the same id, with punctuation, "that's" or "callsign" between, is one reference
+  for k = #self.refs - 1, 1, -1 do
+    local r, nxt = self.refs[k], self.refs[k + 1]
+    if r.kind == "aircraft" and nxt.kind == "aircraft" and r.name == nxt.name and nxt.b > r.e then
+      local between = true
+      for i = r.e, nxt.b - 1 do
+        between = between and (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "that that's is callsign"))
+      end
+      if between then
+        r.e = nxt.e
+        table.remove(self.refs, k + 1)
+      end
+    end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then
       local k = self:skip_fillers(r.e, false)

@@ -248,6 +248,11 @@ return function(H, f, compass)
         local v = read[k]
         if v and math.abs(v - q.value) < 1e-9 then seen = true end
       end
+      -- ("United 455, seven three niner, B739": the designator's digits said just before it)
+      for _, r in ipairs(types) do
+        seen = seen or (r.name == actype and q.kind == "plain" and self:skip_fillers(q.e) == r.b
+          and q.value == tonumber(actype:match("^%a+(%d+)%a?$")))
+      end
       if not seen and (q.kind == "plain" or q.kind == "dist") then left[#left + 1] = q end
       ::continue::
     end

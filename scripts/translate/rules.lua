@@ -99,11 +99,39 @@ return function(intent, rule, words)
       end
       local j = colon + 1
       while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
+      -- ("first one is KLM88 B789 ...", "can we have a Vueling A320 VLG88 ...": a lead-in of at most four
+      -- words before the first name, no value, place or instruction among them, is no instruction either)
+      local first = g.refs[1]
+      for _, r0 in ipairs(g.refs) do if r0.b < first.b then first = r0 end end
+      if first and first.b > j and first.b <= j + 8 and (first.kind == "aircraft" or first.kind == "type") then
+        local lead, to, words = true, first.b, 0
+        for k = j, first.b - 1 do
+          local _, ae = g:airline_at(k)
+          if lead and k < to and ae == first.b and first.kind == "type" then to = k end  -- ("a Vueling A320")
+          lead = lead and (k >= to or (g.t[k].kind == "word" and not g:intent_at(k) and not ae))
+          if k < to and not g.t[k].filler then words = words + 1 end
+        end
+        lead = lead and words <= 4
+        for _, q in ipairs(g:quantities(j, to)) do
+          lead = lead and q.kind == "plain" and g:word(q.b, "one") and q.e == q.b + 1
+        end
+        if lead then j = to end
+      end
       local r = g:refs_in(j, j + 1, "aircraft")[1]
-      local ty = r and not r.exists and r.b == j and g:refs_in(r.e, r.e + 2, "type")[1]
+      -- ("Westjet 1245 is a 737 MAX 8", "Envoy 3410, an E175, ...": the type after "is", an article, "also")
+      local k = r and r.e
+      -- ("United 455, seven three niner, B739": the type's digits said before its designator)
+      while k and g.t[k] and (g.t[k].kind == "punct" or g.t[k].kind == "number"
+          or g:word(k, "a an is also type zero one two three four five six seven eight nine niner")) do
+        k = k + 1
+      end
+      local ty = r and not r.exists and r.b == j and g:refs_in(k, k + 1, "type")[1]
       if not ty then
         -- ("A320 BAW1 at ...", "a Ryanair 738, RYR4GV, at MAYLA ...": the type first, after its article)
         local a = g:word(j, "a an another") and j + 1 or j
+        if g:word(a, "little") then a = a + 1 end  -- ("a little Cessna 172")
+        local _, ae = g:airline_at(a)
+        if ae and g:refs_in(ae, ae + 1, "type")[1] then a = ae end  -- ("a Vueling A320 VLG88")
         local t1 = g:refs_in(a, a + 1, "type")[1]
         local after = t1 and t1.b == a and t1.e
         while after and g.t[after] and g.t[after].kind == "punct" do after = after + 1 end
@@ -485,7 +513,7 @@ return function(intent, rule, words)
   end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...", "insert SAS19K B736 at ...": a type or a new callsign
   -- right after the verb
-  rule { "add put new spawn insert", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
+  rule { "add put new spawn insert adding", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   -- "callsign SWR19, A333, FL360, ...": a request that opens with a new callsign and its type
   rule { "callsign", "create", when = function(g, i)
     return g:skip_fillers(1) == i and g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 6, "type")

@@ -1782,3 +1782,35 @@ do
   check_eq(ex("back to real time rate please, multiplier 1"), "DTMULT 1")
   check_eq(ex("ok, back to real time rate"), "DTMULT 1")
 end
+
+-- the experimenter's language (cycle 16): a new aircraft said with no verb, its callsign first ("is a",
+-- an article or the designator's digits between it and the type) or after a short lead-in; a callsign
+-- said and then written as the same id is one aircraft
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
+  check_eq(ex("Frontier 12 is an A320, 9000 ft, 240 kt, at 42.1N 87.9W heading 180"),
+    "CRE FFT12 A320 42.1 -87.9 180 9000 240")
+  check_eq(ex("ok now Alaska 33, a B739, 41.7 -87.6, heading 020, FL200 and 290"),
+    "CRE ASA33 B739 41.7 -87.6 20 FL200 290")
+  check_eq(ex("Delta 41, three two one, A321, at 42.4 north 88.1 west, FL150 heading 090 speed 260"),
+    "CRE DAL41 A321 42.4 -88.1 90 FL150 260")
+  check_eq(ex("and a little Cessna 152, N52KT, 42.0 -88.3, 3500 ft, heading 270, 95 knots"),
+    "CRE N52KT C152 42 -88.3 270 3500 95")
+  check_eq(ex("next one is SKW20 E175 at 42.2 -87.8 heading 300, FL110, 250 knots"),
+    "CRE SKW20 E175 42.2 -87.8 300 FL110 250")
+  check_eq(ex("could we have an Alaska B738 ASA51 at 41.6 -88.4, FL230 heading 045 at 280 kt"),
+    "CRE ASA51 B738 41.6 -88.4 45 FL230 280")
+  check_eq(ex("create Delta 77, DAL77, an A320 at 42.3 -87.9, FL180, heading 200, 270 knots"),
+    "CRE DAL77 A320 42.3 -87.9 200 FL180 270")
+  check_eq(ex("spawn United 5K, that's UAL5K, a B738 at 41.8 -88.0 heading 010 FL160 250 knots"),
+    "CRE UAL5K B738 41.8 -88 10 FL160 250")
+  -- digits that are no designator's, said after the creation, are asked about
+  asked("create UAL455 B739 at 40.5 north 104.1 west, FL190 heading 225 speed 280 739")
+  -- a lead-in that instructs is no lead-in
+  asked("please descend UAL88 B738 at 41.6 -88.4, FL230 heading 045 at 280 kt")
+end
