@@ -713,7 +713,13 @@ end
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
 -- create a same-level encounter:")
 function G:commentary(b, e, lead)
-  if b >= e or #self:quantities(b, e) > 0 or self:has_ref(b, b + 1, "aircraft") then return false end
+  if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
+  for _, q in ipairs(self:quantities(b, e)) do
+    -- ("- this one is the Linate overflight", "- the long-haul one": "one" after a word standing for an aircraft)
+    local pronoun = q.kind == "plain" and q.e == q.b + 1 and self:word(q.b, "one") and q.b > b
+      and self.t[q.b - 1].kind == "word" and not self.t[q.b - 1].number_word
+    if not pronoun then return false end
+  end
   for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
   end
@@ -745,6 +751,19 @@ local function names_instructed(self, b)
     if (self:word(x, "to") and self:intent_at(x + 1)) or airline_bare(self, x) then return true end
   end
   return false
+end
+
+-- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
+-- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
+-- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
+-- in it (no value, place, aircraft or instruction word).
+function G:remark_sentence(k, instructed)
+  local e = commentary_end(self, k)
+  local stop = self.t[e]
+  if (stop and not (stop.text == "." or stop.text == "!")) or self:has_ref(k, e, "aircraft") then return false end
+  local after = false
+  for x = e + 1, #self.t do after = after or self:intent_at(x) ~= nil or self:has_ref(x, x + 1, "aircraft") end
+  return (instructed(k) or after) and self:commentary(k, e)
 end
 
 function G:in_reason(i)
@@ -796,6 +815,15 @@ function G:in_reason(i)
           inside = self:commentary(k, e, true) or (t.text == "to" and self:commentary(k + 2, e, true))
           lead_end = inside and e or nil
         end
+      elseif (self:word(k, "then") and self:word(k + 1, "i'll we'll") and self:commentary(k + 1, commentary_end(self, k + 1))
+            or self:word(k, "for") and self:word(k + 1, "when") and self:word(k + 2, CM_OWN)
+              and self:commentary(k + 2, commentary_end(self, k + 2))) and instructed(k) then
+        -- ("fast forward 60 sec then I'll hand over to the pseudo pilot", "set the sim rate to 5 for when we
+        -- restart": the experimenter's own doing after the instruction, or when it is for)
+        inside, self.reason[k] = true, true
+      elseif start and t.kind == "word" and self:remark_sentence(k, instructed) then
+        -- ("... 290 knots. First arrival of batch B.", "Let's start with the baseline pair. SAS1A A320 ..."
+        inside, self.reason[k] = true, true
       elseif k == lead_end then
         inside = false
       elseif t.kind == "punct" and t.text ~= "," then

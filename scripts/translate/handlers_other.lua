@@ -242,7 +242,7 @@ return function(H, f, compass)
       if (r.kind == "aircraft" or r.kind == "type") and r.b >= s.b and r.b < from then from = r.b end
     end
     for _, q in ipairs(qs) do
-      if q.b < from then goto continue end
+      if q.b < from or self:in_reason(q.b) then goto continue end  -- (nor "one" in a remark: "- the long-haul one")
       local seen = self.taken[q.b] ~= nil  -- (read already: an offset's distance)
       for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
         local v = read[k]

@@ -99,6 +99,10 @@ M.nicknames = {
   gulfstream = { "^GLF%d$", "^G%d%d%d$" },
   caravan = { "^C208$" },
   skyhawk = { "^C172$" },
+  pilatus = { "^PC%d%d$" },
+  baron = { "^BE5[58]$" },
+  bonanza = { "^BE3[356]$" },
+  piper = { "^P28%w$", "^PA%d%d%w?$" },
   hercules = { "^C130$" },
   herc = { "^C130$" },
 }

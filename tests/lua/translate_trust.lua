@@ -1813,4 +1813,22 @@ do
   asked("create UAL455 B739 at 40.5 north 104.1 west, FL190 heading 225 speed 280 739")
   -- a lead-in that instructs is no lead-in
   asked("please descend UAL88 B738 at 41.6 -88.4, FL230 heading 045 at 280 kt")
+  -- a remark in a sentence of its own, "one" standing for the aircraft in a remark, the experimenter's own
+  -- doing after "then I'll", what a setting is for ("for when we ..."): set aside; one that instructs is asked
+  check_eq(ex("create SKW9 E175 at 42.2 -87.8 heading 300 FL110 250 knots. Second arrival of the evening wave."),
+    "CRE SKW9 E175 42.2 -87.8 300 FL110 250")
+  check_eq(ex("Warm-up pair first. SKW10 E175 at 42.2 -87.8 heading 300 FL110 250 knots"),
+    "CRE SKW10 E175 42.2 -87.8 300 FL110 250")
+  check_eq(ex("cre SKW11 E175 42.2 -87.8 300 FL110 250 - the slow one of the stream"),
+    "CRE SKW11 E175 42.2 -87.8 300 FL110 250")
+  check_eq(ex("fast forward 2 minutes then I'll explain the display to the visitors"), "FF 120")
+  check_eq(ex("set the sim rate to 3 for when we reconvene"), "DTMULT 3")
+  asked("DAL889 climb FL240. Then N731RS.")
+  asked("DAL889 climb FL240. N731RS as well.")
+  asked("fast forward 2 minutes then I'll climb DAL889")
+  asked("cre SKW12 E175 42.2 -87.8 300 FL110 250 - the one at FL300")
+  -- a type, maker or family said before the callsign of a flying aircraft of that type describes it
+  check_eq(ex("where's the Cessna N731RS now"), "POS N731RS")
+  check_eq(ex("delete the Skyhawk N731RS"), "DEL N731RS")
+  asked("delete the Pilatus N731RS")
 end
