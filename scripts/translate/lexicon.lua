@@ -103,7 +103,7 @@ return {
         "mate", "kia", "ora", "howzit" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
-    courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",
+    courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",

@@ -644,16 +644,18 @@ return function(intent, rule, words)
   rule { "route rte waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "show me KLM one two seven six's route": the verb before the aircraft the route is of
+  -- ("pull up Air Canada 871's flight plan", "bring up the KLM's route")
   rule { "route waypoints plan routing", "listrte", when = function(g, i)
+    local at = g:word(i - 1, "flight") and g:word(i, "plan") and i - 1 or i
     for _, r in ipairs(g:refs_in(1, i, "aircraft")) do
-      if r.e == i and g:preceded_by(r.b, 3, "show list display print see") then return true end
+      if r.e == at and g:preceded_by(r.b, 3, "show list display print see pull bring") then return true end
     end
     return false
   end }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route rte", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
-  rule { "route", "listrte", next = "of", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
+  rule { "route", "listrte", next = "of for", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
   rule { "listrte", "listrte" }
 
   -- information and repositioning
@@ -681,10 +683,11 @@ return function(intent, rule, words)
   rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
   rule { "details status info information state pos", "pos" }
   -- "show me Wideroe five one two": an aircraft alone after the verb is shown where it is
+  -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own)
   rule { "show display", "pos", when = function(g, i)
-    local k = g:word(i + 1, "me us") and i + 2 or i + 1
+    local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
     local r = g:refs_in(k, k + 1, "aircraft")[1]
-    return r ~= nil and g:alone_but(i, r.e)
+    return r ~= nil and (g:alone_but(i, r.e) or g:clause_alone(i, r.e))
   end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
@@ -729,7 +732,8 @@ return function(intent, rule, words)
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
-  rule { "give", "pos", next = "me us", near = { 4, "position status details" } }  -- "give me the position"
+  -- "give me the position", "give me TEST01's and TEST02's positions"
+  rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }

@@ -1831,4 +1831,11 @@ do
   check_eq(ex("where's the Cessna N731RS now"), "POS N731RS")
   check_eq(ex("delete the Skyhawk N731RS"), "DEL N731RS")
   asked("delete the Pilatus N731RS")
+  -- requests for information: a flight plan pulled up, "route for X?", an aircraft shown in a clause of its own,
+  -- the positions of two aircraft
+  check_eq(ex("pull up Delta 889's flight plan"), "LISTRTE DAL889")
+  check_eq(ex("bring up DAL889's route please"), "LISTRTE DAL889")
+  check_eq(ex("route for Delta 889?"), "LISTRTE DAL889")
+  check_eq(ex("freeze, and show me Delta 889"), "HOLD ; POS DAL889")
+  check_eq(ex("can you give me DAL889's and N731RS's positions"), "POS DAL889 ; POS N731RS")
 end
