@@ -1267,6 +1267,20 @@ end
 local SC = lexicon.self_correction
 local SC_KEPT, SC_ONLY = {}, set_of(SC.only)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
+-- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
+-- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
+-- the instruction word at p, replaces it; true when it did.
+function G:value_said_again(p, a, c)
+  local v = self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c
+  local new = self:quantities(v, #self.t + 1)[1]
+  local old = self:quantities(p + 1, a)
+  if not (new and new.b == v and #old == 1 and (new.kind == old[1].kind or new.kind == "plain")) then return false end
+  if self.t[new.e] and self.t[new.e].kind ~= "punct" then return false end
+  self:mark_used(old[1].b, v)
+  for k = old[1].b, v - 1 do self.noted[k] = true end
+  return true
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -1319,7 +1333,9 @@ function G:self_corrected()
         self:mark_used(b, c)
         for k = b, c - 1 do self.noted[k] = true end
         a = c
-      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c)
+      elseif self:value_said_again(p, a, c) then
+        a = c
+      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1 or c)
           and not self:word_in(a, c, "and also then") then
         -- another instruction said in its place ("direct TWEED... no, make it heading 200", "climb FL200,
         -- no wait, descend FL90"): the last one before the run, from its instruction word, is taken back

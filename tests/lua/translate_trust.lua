@@ -1838,4 +1838,10 @@ do
   check_eq(ex("route for Delta 889?"), "LISTRTE DAL889")
   check_eq(ex("freeze, and show me Delta 889"), "HOLD ; POS DAL889")
   check_eq(ex("can you give me DAL889's and N731RS's positions"), "POS DAL889 ; POS N731RS")
+  -- a value said again after a self-correction replaces the one before it; "scratch that, just <the
+  -- instruction again>" takes back what it follows
+  check_eq(ex("Delta 889 slow to 240... no, make it 230"), "SPD DAL889 230")
+  check_eq(ex("DAL889 descend to 11 thousand ft, sorry, 12 thousand"), "ALT DAL889 12000")
+  check_eq(ex("DAL889 climb FL260 until further advised... scratch that, just climb FL260"), "ALT DAL889 FL260")
+  asked("DAL889 turn left heading 200... no, make it 190 and 230 knots")
 end
