@@ -358,7 +358,12 @@ return function(intent, rule, words)
     return false
   end
   rule { "put place create make add", "defwpt", near = { 2, "@waypoint_nouns" }, when = new_fix_at }
-  rule { "waypoint wpt", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
+  rule { "waypoint wpt waypoints", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
+  -- "new fix IAFN1 at 48.50 N 16.20 E", "a reference point called CENTRE at 52.0N, 3.75E", "the target point
+  -- for trial three, call it TGT3, 42.1 N 88.2 W": a fix or point said new, or named, at a position
+  rule { "fix point", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
+    return (g:preceded_by(i, 2, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
+  end }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
   rule { "add", "defwpt", near = { 2, "@waypoint_nouns" }, when = function(g, i)
     if not g:followed_by(i, 4, "@named") then return false end

@@ -1844,4 +1844,9 @@ do
   check_eq(ex("DAL889 descend to 11 thousand ft, sorry, 12 thousand"), "ALT DAL889 12000")
   check_eq(ex("DAL889 climb FL260 until further advised... scratch that, just climb FL260"), "ALT DAL889 FL260")
   asked("DAL889 turn left heading 200... no, make it 190 and 230 knots")
+  -- a fix or point said new or named at a position is defined; the plural lists several
+  check_eq(ex("new fix MRG2 at 42.5 N 87.9 W"), "DEFWPT MRG2 42.5 -87.9")
+  check_eq(ex("we need a reference point named HOLDPT at 42.0N, 88.0W"), "DEFWPT HOLDPT 42 -88")
+  check_eq(ex("waypoints: EN1 at 42.1 -88.1 and EN2 at 42.2 -88.2"), "DEFWPT EN1 42.1 -88.1 ; DEFWPT EN2 42.2 -88.2")
+  asked("DAL889 fix at 42.5 N 87.9 W")
 end
