@@ -163,13 +163,15 @@ return function(H, f, compass)
     end
     -- "westbound", "on a northerly heading", "flying south": a compass point as the heading (not "10 nm
     -- north of ...", a position)
+    -- ("she's westbound so heading 270": the point the heading said lies in, within 45 degrees, describes it)
     for i = s.b, s.e - 1 do
       local t = self.t[i]
-      local point = not hdg and t.kind == "word" and not self:word(i + 1, "of")
+      local point = t.kind == "word" and not self:word(i + 1, "of")
         and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$") or t.text:match("^(%a+)wards?$")
-          or (self:word(i - 1, "@compass_verbs") and t.text))
-      if point and L.compass[point] then
-        hdg = L.compass[point]
+          or (not hdg and self:word(i - 1, "@compass_verbs") and t.text))
+      local deg = point and L.compass[point]
+      if deg and (not hdg or math.abs((hdg - deg + 180) % 360 - 180) <= 45) then
+        hdg = hdg or deg
         self:explain(i, i + 1)
       end
     end

@@ -1849,4 +1849,9 @@ do
   check_eq(ex("we need a reference point named HOLDPT at 42.0N, 88.0W"), "DEFWPT HOLDPT 42 -88")
   check_eq(ex("waypoints: EN1 at 42.1 -88.1 and EN2 at 42.2 -88.2"), "DEFWPT EN1 42.1 -88.1 ; DEFWPT EN2 42.2 -88.2")
   asked("DAL889 fix at 42.5 N 87.9 W")
+  -- a position written with a slash; a compass point that agrees with the heading said describes it
+  check_eq(ex("new ac: SKW14 E175 42.35/-87.95 hdg 050 FL190 spd 275"), "CRE SKW14 E175 42.35 -87.95 50 FL190 275")
+  check_eq(ex("create SKW15 E175 at 42.3 -87.9, northbound, so heading 010, FL150, 260 knots"),
+    "CRE SKW15 E175 42.3 -87.9 10 FL150 260")
+  asked("create SKW16 E175 at 42.3 -87.9, southbound, heading 010, FL150, 260 knots")
 end
