@@ -196,7 +196,8 @@ return {
                        vs = true, fl = true },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
-  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", spd = "speed",
+  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", lft = "left",
+                rgt = "right", spd = "speed",
                 hdg = "heading",
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."

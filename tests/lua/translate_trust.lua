@@ -1830,7 +1830,7 @@ do
   -- a type, maker or family said before the callsign of a flying aircraft of that type describes it
   check_eq(ex("where's the Cessna N731RS now"), "POS N731RS")
   check_eq(ex("delete the Skyhawk N731RS"), "DEL N731RS")
-  asked("delete the Pilatus N731RS")
+  asked("delete the Baron N731RS")
   -- requests for information: a flight plan pulled up, "route for X?", an aircraft shown in a clause of its own,
   -- the positions of two aircraft
   check_eq(ex("pull up Delta 889's flight plan"), "LISTRTE DAL889")
@@ -1854,4 +1854,9 @@ do
   check_eq(ex("create SKW15 E175 at 42.3 -87.9, northbound, so heading 010, FL150, 260 knots"),
     "CRE SKW15 E175 42.3 -87.9 10 FL150 260")
   asked("create SKW16 E175 at 42.3 -87.9, southbound, heading 010, FL150, 260 knots")
+  -- typed turn shorthand before "hdg"; a Pilatus by its name (PCnn -> Pilatus PC-nn)
+  check_eq(ex("dal889 lft hdg 100"), "HDG DAL889 100 LEFT")
+  check_eq(ex("DAL889 rgt hdg 300"), "HDG DAL889 300 RIGHT")
+  check_eq(ex("creating N48PC, Pilatus PC-12, 42.1 -88.1, heading 010, 9500 feet, 190 knots"),
+    "CRE N48PC PC12 42.1 -88.1 10 9500 190")
 end
