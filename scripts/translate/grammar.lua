@@ -1495,11 +1495,18 @@ function G:at_waypoint(s, spec)
       local qs = self:quantities(k + 2, r.b - 1)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
     end
-    if crossed or constrained or opening or be_at then
+    -- "show me the constraints AUA123 has at NERDU", "what restrictions does KLM12 have at ARTIP?": asked for
+    local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
+      and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
+    if crossed or constrained or opening or be_at or shown then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
       for _, w in ipairs(now and now.route or {}) do in_route = in_route or w:upper() == r.name:upper() end
+      if shown and in_route then
+        self:emit("AT " .. ids[1] .. " " .. r.name)  -- (AT with no constraint lists those at the waypoint)
+        return true
+      end
       -- "cross SUGOL at FL200", "cross SUGOL at FL200 and 250 knots": a level and a speed at most, one
       -- AT constraint each (BlueSky's AT acid wpname ALT/SPD value)
       local f = handlers.format

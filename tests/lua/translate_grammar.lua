@@ -477,6 +477,10 @@ do -- "cross X at <level or speed>": an AT constraint at a waypoint of the route
   check(asks("AAL2307 to be at FL120 over OTHER", w), "a level to be at off the route is asked")
   check(asks("AAL2307 at CAMRN FL100 heading 220", w), "a heading at a waypoint is asked")
   check(asks("AAL2307 be at FL120 over CAMRN and 250 knots", w), "values on both sides of the waypoint are asked")
+  -- the constraints at a waypoint asked for: AT with no value shows them
+  check_eq(tr("show me the constraints AAL2307 has at CAMRN", w), "AT AAL2307 CAMRN")
+  check_eq(tr("what restrictions does American 2307 have at CAMRN?", w), "AT AAL2307 CAMRN")
+  check(asks("show me the constraints AAL2307 has at OTHER", w), "a waypoint off the route is asked about")
 end
 
 do -- "fast-forward" after the simulation is named is fast-forward, not a faster clock
