@@ -192,7 +192,14 @@ return function(H, f, compass)
         if self:word(i, "@correction sorry") then from = i end
       end
       -- ("at JFK": the airport by its VOR's code, nearest the traffic, else anywhere: KJFK)
-      for _, r in ipairs(self:refs_in(from, s.e, "waypoint")) do
+      -- ("set up LOWW arrival: AUA211 A320 at MASUR": the place said after "at", "over", ... first)
+      local places = self:refs_in(from, s.e, "waypoint")
+      table.sort(places, function(x, y)
+        local px, py = self:word(x.b - 1, "@place_words"), self:word(y.b - 1, "@place_words")
+        if px ~= py then return px end
+        return x.b < y.b
+      end)
+      for _, r in ipairs(places) do
         local near = self.fleet[1] or { lat = 0, lon = 0 }
         -- (a navaid's kind said after its name, "over Sparta VOR", is no place of its own)
         if not self:word(r.b, "@navaid_kinds") then

@@ -1860,3 +1860,17 @@ do
   check_eq(ex("creating N48PC, Pilatus PC-12, 42.1 -88.1, heading 010, 9500 feet, 190 knots"),
     "CRE N48PC PC12 42.1 -88.1 10 9500 190")
 end
+
+-- a creation at a named place: the place said after "at"/"over" is the position, over one named before it
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "DEFWPT GATEA 52.1 4.1", "DEFWPT GATEB 52.3 4.4", "CRE KLM12 B738 52 4 90 FL200 250" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text)
+    return said(graph.translate(text, { sim = lab, mode = "offline", waypoints = { "GATEA", "GATEB" } }))
+  end
+  check_eq(ex("GATEB arrival: create TST7 A320 at GATEA heading 100 FL230 270 kts"):match("^ASK I have CRE TST7 A320 GATEA"),
+    "ASK I have CRE TST7 A320 GATEA")
+  check_eq(ex("create TST8 A320 over GATEB heading 100 FL230 270 kts"), "CRE TST8 A320 GATEB 100 FL230 270")
+end
