@@ -140,8 +140,9 @@ return {
         "base", "downwind", "final", "spacing", "sequencing", "alert",
         -- controllers' written abbreviations of instruction words
         "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
-        -- squawk's own display, where a command shows or draws what it is asked
-        "console", "screen", "display", "window", "map", "scope", "draw",
+        -- squawk's own display, where a command shows or draws what it is asked, and the traffic on it
+        -- ("put a Delta CRJ900 on the board", "remove the United from the scene")
+        "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
         "experiments" },

@@ -1859,6 +1859,10 @@ do
   check_eq(ex("DAL889 rgt hdg 300"), "HDG DAL889 300 RIGHT")
   check_eq(ex("creating N48PC, Pilatus PC-12, 42.1 -88.1, heading 010, 9500 feet, 190 knots"),
     "CRE N48PC PC12 42.1 -88.1 10 9500 190")
+  -- the traffic on the display named as a place ("on the board", "from the scene")
+  check_eq(ex("put an Alaska B738 on the board, ASA70, FL150, heading 090, 270 knots, lat 42.1 lon -87.5"),
+    "CRE ASA70 B738 42.1 -87.5 90 FL150 270")
+  check_eq(ex("take N731RS out of the scene please"), "DEL N731RS")
 end
 
 -- a creation at a named place: the place said after "at"/"over" is the position, over one named before it
