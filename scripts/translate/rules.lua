@@ -118,9 +118,9 @@ return function(intent, rule, words)
         if lead then j = to end
       end
       local r = g:refs_in(j, j + 1, "aircraft")[1]
-      -- ("Westjet 1245 is a 737 MAX 8", "Envoy 3410, an E175, ...": the type after "is", an article, "also")
+      -- ("Westjet 1245 is a 737 MAX 8", "Envoy 3410, an E175, ...": the type after "is", an article, "also";
+      -- "United 455, seven three niner, B739": the type's digits said before its designator)
       local k = r and r.e
-      -- ("United 455, seven three niner, B739": the type's digits said before its designator)
       while k and g.t[k] and (g.t[k].kind == "punct" or g.t[k].kind == "number"
           or g:word(k, "a an is also type zero one two three four five six seven eight nine niner")) do
         k = k + 1
