@@ -719,7 +719,13 @@ end
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
 -- create a same-level encounter:")
 function G:commentary(b, e, lead)
-  if b >= e or #self:quantities(b, e) > 0 or self:has_ref(b, b + 1, "aircraft") then return false end
+  if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
+  for _, q in ipairs(self:quantities(b, e)) do
+    -- ("- this one is the Linate overflight", "- the long-haul one": "one" after a word standing for an aircraft)
+    local pronoun = q.kind == "plain" and q.e == q.b + 1 and self:word(q.b, "one") and q.b > b
+      and self.t[q.b - 1].kind == "word" and not self.t[q.b - 1].number_word
+    if not pronoun then return false end
+  end
   for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
   end
@@ -751,6 +757,19 @@ local function names_instructed(self, b)
     if (self:word(x, "to") and self:intent_at(x + 1)) or airline_bare(self, x) then return true end
   end
   return false
+end
+
+-- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
+-- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
+-- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
+-- in it (no value, place, aircraft or instruction word).
+function G:remark_sentence(k, instructed)
+  local e = commentary_end(self, k)
+  local stop = self.t[e]
+  if (stop and not (stop.text == "." or stop.text == "!")) or self:has_ref(k, e, "aircraft") then return false end
+  local after = false
+  for x = e + 1, #self.t do after = after or self:intent_at(x) ~= nil or self:has_ref(x, x + 1, "aircraft") end
+  return (instructed(k) or after) and self:commentary(k, e)
 end
 
 function G:in_reason(i)
@@ -802,6 +821,15 @@ function G:in_reason(i)
           inside = self:commentary(k, e, true) or (t.text == "to" and self:commentary(k + 2, e, true))
           lead_end = inside and e or nil
         end
+      elseif (self:word(k, "then") and self:word(k + 1, "i'll we'll") and self:commentary(k + 1, commentary_end(self, k + 1))
+            or self:word(k, "for") and self:word(k + 1, "when") and self:word(k + 2, CM_OWN)
+              and self:commentary(k + 2, commentary_end(self, k + 2))) and instructed(k) then
+        -- ("fast forward 60 sec then I'll hand over to the pseudo pilot", "set the sim rate to 5 for when we
+        -- restart": the experimenter's own doing after the instruction, or when it is for)
+        inside, self.reason[k] = true, true
+      elseif start and t.kind == "word" and self:remark_sentence(k, instructed) then
+        -- ("... 290 knots. First arrival of batch B.", "Let's start with the baseline pair. SAS1A A320 ..."
+        inside, self.reason[k] = true, true
       elseif k == lead_end then
         inside = false
       elseif t.kind == "punct" and t.text ~= "," then
@@ -1245,6 +1273,20 @@ end
 local SC = lexicon.self_correction
 local SC_KEPT, SC_ONLY = {}, set_of(SC.only)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
+-- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
+-- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
+-- the instruction word at p, replaces it; true when it did.
+function G:value_said_again(p, a, c)
+  local v = self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c
+  local new = self:quantities(v, #self.t + 1)[1]
+  local old = self:quantities(p + 1, a)
+  if not (new and new.b == v and #old == 1 and (new.kind == old[1].kind or new.kind == "plain")) then return false end
+  if self.t[new.e] and self.t[new.e].kind ~= "punct" then return false end
+  self:mark_used(old[1].b, v)
+  for k = old[1].b, v - 1 do self.noted[k] = true end
+  return true
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -1297,7 +1339,9 @@ function G:self_corrected()
         self:mark_used(b, c)
         for k = b, c - 1 do self.noted[k] = true end
         a = c
-      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c)
+      elseif self:value_said_again(p, a, c) then
+        a = c
+      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1 or c)
           and not self:word_in(a, c, "and also then") then
         -- another instruction said in its place ("direct TWEED... no, make it heading 200", "climb FL200,
         -- no wait, descend FL90"): the last one before the run, from its instruction word, is taken back
@@ -1442,27 +1486,56 @@ function G:at_waypoint(s, spec)
     local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
       and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")
         or self:word(after, "fl flight"))
-    local opening = self:word(r.b - 1, "at")
-      and r.b - 1 == self:skip_fillers(s.b) + (self:has_ref(s.b, r.b, "aircraft") and 1 or 0)
-    if crossed or constrained or opening then
+    -- "SULUR speed constraint 230 kt": the constraint named after the waypoint
+    constrained = constrained or self:word_in(r.e, r.e + 3, "constraint constraints restriction")
+    -- "at ELDAR speed 250", "Delta 889, at PAPPI maintain 250": "at" opening the clause, after its callsign
+    local first = self:skip_fillers(s.b)
+    for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
+    local opening = self:word(r.b - 1, "at") and r.b - 1 == first
+    -- "to be at AMPEG at FL120", "be at FL200 over ARTIP": the value the aircraft is to be at there, said
+    -- after the waypoint or between "be at" and it (`be_at`: the first token of that value)
+    local be_at
+    if self:word(r.b - 1, "at") and self:word(r.b - 2, "be") and self:word(after, "at") then be_at = r.b
+    elseif self:word(r.b - 1, "at over by") then
+      local k = self:find_word(s.b, r.b - 1, "be")
+      local qs = self:quantities(k + 2, r.b - 1)
+      if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
+    end
+    -- "show me the constraints AUA123 has at NERDU", "what restrictions does KLM12 have at ARTIP?": asked for
+    local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
+      and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
+    if crossed or constrained or opening or be_at or shown then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
       for _, w in ipairs(now and now.route or {}) do in_route = in_route or w:upper() == r.name:upper() end
+      if shown and in_route then
+        self:emit("AT " .. ids[1] .. " " .. r.name)  -- (AT with no constraint lists those at the waypoint)
+        return true
+      end
       -- "cross SUGOL at FL200", "cross SUGOL at FL200 and 250 knots": a level and a speed at most, one
       -- AT constraint each (BlueSky's AT acid wpname ALT/SPD value)
       local f = handlers.format
       local alt, spd, other = nil, nil, false
-      for _, q in ipairs(self:quantities(r.e, s.e)) do
+      local said = self:quantities(r.e, s.e)
+      if be_at and be_at < r.b then
+        -- "be at FL200 over ARTIP": the value before the waypoint, and none after it
+        other = #said > 0
+        said = self:quantities(be_at, r.b - 1)
+      end
+      for _, q in ipairs(said) do
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
-            or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))) then spd = q
+            or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))
+            -- "at MRG01 FL100 220": a bare number straight after the level is the speed (FL100/220)
+            or (q.kind == "plain" and alt and self:skip_fillers(alt.e) == q.b and q.value >= 100 and q.value <= 400)) then
+          spd = q
         else other = true end
       end
       if in_route and not other and (alt or spd) then
         -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
         -- or below FL150"): its command first, from the words before the crossing
-        local lead = r.b - 1
+        local lead = be_at and be_at < r.b and be_at - 2 or r.b - 1
         if spec and spec.handler and s.trig < lead and #self:quantities(s.b, lead) > 0 then
           self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
         end
@@ -2469,6 +2542,8 @@ function M.translate(text, world)
   text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
   text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+  -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
+  text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")

@@ -525,6 +525,21 @@ end
 -- reference to it, as in airline_refs; a family said ("the 737") is the
 -- designator it names, and matches only an aircraft of that designator.
 function m:type_refs()
+  -- ("the Pilatus N48TX", "the Baron N218PK": a type, maker or family said between "the" and the callsign of
+  -- a flying aircraft of that type describes it)
+  for _, r in ipairs(self.refs) do
+    local k = r.b - 1
+    if r.kind == "aircraft" and r.exists and self:word(k - 1, "the") and self.t[k].kind == "word" then
+      local ty
+      for _, a in ipairs(self.fleet) do if a.id == r.name then ty = a.type and a.type:upper() end end
+      local of = false
+      for _, p in ipairs(ty and require("translate.types").nicknames[self.t[k].text] or {}) do
+        of = of or ty:match(p) ~= nil
+      end
+      for _, t in ipairs(self:refs_in(k, k + 1, "type")) do of = of or t.name == ty end
+      if ty and (of or (makers()[self.t[k].text] or {})[ty]) then self:explain(k, k + 1) end
+    end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and not r.by_airline then return end
   end
@@ -580,6 +595,21 @@ end
 --  * "KLM12 climb FL300, correction KLM21": a callsign after a correction
 --    that ends the request replaces the one named before it.
 function m:settle_callsigns()
+  -- "Austrian 123, AUA123, an A320 ...", "Ryanair 1WT, that's RYR1WT": a callsign said and then written (or
+  -- said again) as the same id, with punctuation, "that's" or "callsign" between, is one reference
+  for k = #self.refs - 1, 1, -1 do
+    local r, nxt = self.refs[k], self.refs[k + 1]
+    if r.kind == "aircraft" and nxt.kind == "aircraft" and r.name == nxt.name and nxt.b > r.e then
+      local between = true
+      for i = r.e, nxt.b - 1 do
+        between = between and (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "that that's is callsign"))
+      end
+      if between then
+        r.e = nxt.e
+        table.remove(self.refs, k + 1)
+      end
+    end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then
       local k = self:skip_fillers(r.e, false)

@@ -193,7 +193,14 @@ return function(H, f, compass)
         if self:word(i, "@correction sorry") then from = i end
       end
       -- ("at JFK": the airport by its VOR's code, nearest the traffic, else anywhere: KJFK)
-      for _, r in ipairs(self:refs_in(from, s.e, "waypoint")) do
+      -- ("set up LOWW arrival: AUA211 A320 at MASUR": the place said after "at", "over", ... first)
+      local places = self:refs_in(from, s.e, "waypoint")
+      table.sort(places, function(x, y)
+        local px, py = self:word(x.b - 1, "@place_words"), self:word(y.b - 1, "@place_words")
+        if px ~= py then return px end
+        return x.b < y.b
+      end)
+      for _, r in ipairs(places) do
         local near = self.fleet[1] or { lat = 0, lon = 0 }
         -- (a navaid's kind said after its name, "over Sparta VOR", is no place of its own)
         if not self:word(r.b, "@navaid_kinds") then
@@ -245,11 +252,16 @@ return function(H, f, compass)
       if (r.kind == "aircraft" or r.kind == "type") and r.b >= s.b and r.b < from then from = r.b end
     end
     for _, q in ipairs(qs) do
-      if q.b < from then goto continue end
+      if q.b < from or self:in_reason(q.b) then goto continue end  -- (nor "one" in a remark: "- the long-haul one")
       local seen = self.taken[q.b] ~= nil  -- (read already: an offset's distance)
       for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
         local v = read[k]
         if v and math.abs(v - q.value) < 1e-9 then seen = true end
+      end
+      -- ("United 455, seven three niner, B739": the designator's digits said just before it)
+      for _, r in ipairs(types) do
+        seen = seen or (r.name == actype and q.kind == "plain" and self:skip_fillers(q.e) == r.b
+          and q.value == tonumber(actype:match("^%a+(%d+)%a?$")))
       end
       if not seen and (q.kind == "plain" or q.kind == "dist") then left[#left + 1] = q end
       ::continue::

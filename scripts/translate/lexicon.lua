@@ -106,7 +106,7 @@ return {
         "mate", "kia", "ora", "howzit" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
-    courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",
+    courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
@@ -147,8 +147,9 @@ return {
         "base", "downwind", "final", "spacing", "sequencing", "alert",
         -- controllers' written abbreviations of instruction words
         "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
-        -- squawk's own display, where a command shows or draws what it is asked
-        "console", "screen", "display", "window", "map", "scope", "draw",
+        -- squawk's own display, where a command shows or draws what it is asked, and the traffic on it
+        -- ("put a Delta CRJ900 on the board", "remove the United from the scene")
+        "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
         "experiments" },
@@ -203,7 +204,8 @@ return {
                        vs = true, fl = true },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
-  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", spd = "speed",
+  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", lft = "left",
+                rgt = "right", spd = "speed",
                 hdg = "heading",
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
@@ -230,8 +232,8 @@ return {
   -- correction, "KL204, make one orbit"), is read as "correction"
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again" },
-                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again" },
+                                "say", "again", "scratch" },
+                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)

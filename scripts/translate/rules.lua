@@ -99,11 +99,39 @@ return function(intent, rule, words)
       end
       local j = colon + 1
       while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
+      -- ("first one is KLM88 B789 ...", "can we have a Vueling A320 VLG88 ...": a lead-in of at most four
+      -- words before the first name, no value, place or instruction among them, is no instruction either)
+      local first = g.refs[1]
+      for _, r0 in ipairs(g.refs) do if r0.b < first.b then first = r0 end end
+      if first and first.b > j and first.b <= j + 8 and (first.kind == "aircraft" or first.kind == "type") then
+        local lead, to, words = true, first.b, 0
+        for k = j, first.b - 1 do
+          local _, ae = g:airline_at(k)
+          if lead and k < to and ae == first.b and first.kind == "type" then to = k end  -- ("a Vueling A320")
+          lead = lead and (k >= to or (g.t[k].kind == "word" and not g:intent_at(k) and not ae))
+          if k < to and not g.t[k].filler then words = words + 1 end
+        end
+        lead = lead and words <= 4
+        for _, q in ipairs(g:quantities(j, to)) do
+          lead = lead and q.kind == "plain" and g:word(q.b, "one") and q.e == q.b + 1
+        end
+        if lead then j = to end
+      end
       local r = g:refs_in(j, j + 1, "aircraft")[1]
-      local ty = r and not r.exists and r.b == j and g:refs_in(r.e, r.e + 2, "type")[1]
+      -- ("Westjet 1245 is a 737 MAX 8", "Envoy 3410, an E175, ...": the type after "is", an article, "also";
+      -- "United 455, seven three niner, B739": the type's digits said before its designator)
+      local k = r and r.e
+      while k and g.t[k] and (g.t[k].kind == "punct" or g.t[k].kind == "number"
+          or g:word(k, "a an is also type zero one two three four five six seven eight nine niner")) do
+        k = k + 1
+      end
+      local ty = r and not r.exists and r.b == j and g:refs_in(k, k + 1, "type")[1]
       if not ty then
         -- ("A320 BAW1 at ...", "a Ryanair 738, RYR4GV, at MAYLA ...": the type first, after its article)
         local a = g:word(j, "a an another") and j + 1 or j
+        if g:word(a, "little") then a = a + 1 end  -- ("a little Cessna 172")
+        local _, ae = g:airline_at(a)
+        if ae and g:refs_in(ae, ae + 1, "type")[1] then a = ae end  -- ("a Vueling A320 VLG88")
         local t1 = g:refs_in(a, a + 1, "type")[1]
         local after = t1 and t1.b == a and t1.e
         while after and g.t[after] and g.t[after].kind == "punct" do after = after + 1 end
@@ -330,7 +358,12 @@ return function(intent, rule, words)
     return false
   end
   rule { "put place create make add", "defwpt", near = { 2, "@waypoint_nouns" }, when = new_fix_at }
-  rule { "waypoint wpt", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
+  rule { "waypoint wpt waypoints", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
+  -- "new fix IAFN1 at 48.50 N 16.20 E", "a reference point called CENTRE at 52.0N, 3.75E", "the target point
+  -- for trial three, call it TGT3, 42.1 N 88.2 W": a fix or point said new, or named, at a position
+  rule { "fix point", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
+    return (g:preceded_by(i, 2, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
+  end }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
   rule { "add", "defwpt", near = { 2, "@waypoint_nouns" }, when = function(g, i)
     if not g:followed_by(i, 4, "@named") then return false end
@@ -500,7 +533,7 @@ return function(intent, rule, words)
   end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...", "insert SAS19K B736 at ...": a type or a new callsign
   -- right after the verb
-  rule { "add put new spawn insert", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
+  rule { "add put new spawn insert adding", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   -- "callsign SWR19, A333, FL360, ...": a request that opens with a new callsign and its type
   rule { "callsign", "create", when = function(g, i)
     return g:skip_fillers(1) == i and g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 6, "type")
@@ -634,16 +667,18 @@ return function(intent, rule, words)
   rule { "route rte waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "show me KLM one two seven six's route": the verb before the aircraft the route is of
+  -- ("pull up Air Canada 871's flight plan", "bring up the KLM's route")
   rule { "route waypoints plan routing", "listrte", when = function(g, i)
+    local at = g:word(i - 1, "flight") and g:word(i, "plan") and i - 1 or i
     for _, r in ipairs(g:refs_in(1, i, "aircraft")) do
-      if r.e == i and g:preceded_by(r.b, 3, "show list display print see") then return true end
+      if r.e == at and g:preceded_by(r.b, 3, "show list display print see pull bring") then return true end
     end
     return false
   end }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route rte", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
   -- "route of klm1234?": the request opens with the noun and asks
-  rule { "route", "listrte", next = "of", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
+  rule { "route", "listrte", next = "of for", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
   rule { "listrte", "listrte" }
 
   -- information and repositioning
@@ -671,10 +706,11 @@ return function(intent, rule, words)
   rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
   rule { "details status info information state pos", "pos" }
   -- "show me Wideroe five one two": an aircraft alone after the verb is shown where it is
+  -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own)
   rule { "show display", "pos", when = function(g, i)
-    local k = g:word(i + 1, "me us") and i + 2 or i + 1
+    local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
     local r = g:refs_in(k, k + 1, "aircraft")[1]
-    return r ~= nil and g:alone_but(i, r.e)
+    return r ~= nil and (g:alone_but(i, r.e) or g:clause_alone(i, r.e))
   end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
@@ -719,7 +755,8 @@ return function(intent, rule, words)
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
-  rule { "give", "pos", next = "me us", near = { 4, "position status details" } }  -- "give me the position"
+  -- "give me the position", "give me TEST01's and TEST02's positions"
+  rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }

@@ -10,7 +10,7 @@
 --     (B738 -> 737-800), A3FV -> A3F0-V00 (A332 -> A330-200), ATFV -> ATR F2-V00
 --     (AT76 -> ATR 72-600), DH8x -> Dash 8-x00 and Q x00, CRJn -> CRJ n00,
 --     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn, E75L/E75S -> E175, BCSn -> Airbus A220-n00,
---     SRnn -> Cirrus SRnn;
+--     SRnn -> Cirrus SRnn, PCnn -> Pilatus PC-nn;
 --   * a family ("737", "a330") is its base designator when one exists (B737,
 --     A320), else its first variant.
 -- M.build(designators) -> {types = {{maker, model, icao}, ...}, phrases = {{words, designator}, ...},
@@ -82,6 +82,8 @@ local function pattern_names(d)
   if c then out[#out + 1] = { "airbus", "a220-" .. c .. "00" } end
   c = d:match("^SR(%d%d)$")
   if c then out[#out + 1] = { "cirrus", "sr" .. c } end
+  c = d:match("^PC(%d%d)$")
+  if c then out[#out + 1] = { "pilatus", "pc-" .. c } end
   c = d:match("^SF(%d%d)$")
   if c then out[#out + 1] = { "saab", c .. "0" } end
   if d == "E75L" or d == "E75S" then out[#out + 1] = { "embraer", "e175" }; out[#out + 1] = { "embraer", "175" } end
@@ -99,6 +101,10 @@ M.nicknames = {
   gulfstream = { "^GLF%d$", "^G%d%d%d$" },
   caravan = { "^C208$" },
   skyhawk = { "^C172$" },
+  pilatus = { "^PC%d%d$" },
+  baron = { "^BE5[58]$" },
+  bonanza = { "^BE3[356]$" },
+  piper = { "^P28%w$", "^PA%d%d%w?$" },
   hercules = { "^C130$" },
   herc = { "^C130$" },
 }

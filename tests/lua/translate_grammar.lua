@@ -468,6 +468,19 @@ do -- "cross X at <level or speed>": an AT constraint at a waypoint of the route
   check_eq(tr("AAL2307 cross CAMRN at and maintain flight level one two zero", w), "AT AAL2307 CAMRN ALT FL120")
   check_eq(tr("AAL2307 cross CAMRN at 250 knots", w), "AT AAL2307 CAMRN SPD 250")
   check(asks("AAL2307 cross OTHER at one one thousand", w), "a crossing off the route is asked")
+  -- the same constraint said as the level to be at, named after the waypoint, or as a level/speed pair
+  check_eq(tr("AAL2307 to be at CAMRN at FL120", w), "AT AAL2307 CAMRN ALT FL120")
+  check_eq(tr("AAL2307 should be at 9000 feet over CAMRN", w), "AT AAL2307 CAMRN ALT 9000")
+  check_eq(tr("American 2307, at CAMRN be at flight level one two zero", w), "AT AAL2307 CAMRN ALT FL120")
+  check_eq(tr("AAL2307 CAMRN speed restriction 230 knots", w), "AT AAL2307 CAMRN SPD 230")
+  check_eq(tr("AAL2307 at CAMRN FL100 220", w), "AT AAL2307 CAMRN ALT FL100 ; AT AAL2307 CAMRN SPD 220")
+  check(asks("AAL2307 to be at FL120 over OTHER", w), "a level to be at off the route is asked")
+  check(asks("AAL2307 at CAMRN FL100 heading 220", w), "a heading at a waypoint is asked")
+  check(asks("AAL2307 be at FL120 over CAMRN and 250 knots", w), "values on both sides of the waypoint are asked")
+  -- the constraints at a waypoint asked for: AT with no value shows them
+  check_eq(tr("show me the constraints AAL2307 has at CAMRN", w), "AT AAL2307 CAMRN")
+  check_eq(tr("what restrictions does American 2307 have at CAMRN?", w), "AT AAL2307 CAMRN")
+  check(asks("show me the constraints AAL2307 has at OTHER", w), "a waypoint off the route is asked about")
 end
 
 do -- "fast-forward" after the simulation is named is fast-forward, not a faster clock

@@ -1868,3 +1868,100 @@ do
     check_eq(ex("Iceair 455, Dublin, climb FL320"), "ALT ICE455 FL320")
   end
 end
+
+
+-- the experimenter's language (cycle 16): a new aircraft said with no verb, its callsign first ("is a",
+-- an article or the designator's digits between it and the type) or after a short lead-in; a callsign
+-- said and then written as the same id is one aircraft
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
+  check_eq(ex("Frontier 12 is an A320, 9000 ft, 240 kt, at 42.1N 87.9W heading 180"),
+    "CRE FFT12 A320 42.1 -87.9 180 9000 240")
+  check_eq(ex("ok now Alaska 33, a B739, 41.7 -87.6, heading 020, FL200 and 290"),
+    "CRE ASA33 B739 41.7 -87.6 20 FL200 290")
+  check_eq(ex("Delta 41, three two one, A321, at 42.4 north 88.1 west, FL150 heading 090 speed 260"),
+    "CRE DAL41 A321 42.4 -88.1 90 FL150 260")
+  check_eq(ex("and a little Cessna 152, N52KT, 42.0 -88.3, 3500 ft, heading 270, 95 knots"),
+    "CRE N52KT C152 42 -88.3 270 3500 95")
+  check_eq(ex("next one is SKW20 E175 at 42.2 -87.8 heading 300, FL110, 250 knots"),
+    "CRE SKW20 E175 42.2 -87.8 300 FL110 250")
+  check_eq(ex("could we have an Alaska B738 ASA51 at 41.6 -88.4, FL230 heading 045 at 280 kt"),
+    "CRE ASA51 B738 41.6 -88.4 45 FL230 280")
+  check_eq(ex("create Delta 77, DAL77, an A320 at 42.3 -87.9, FL180, heading 200, 270 knots"),
+    "CRE DAL77 A320 42.3 -87.9 200 FL180 270")
+  check_eq(ex("spawn United 5K, that's UAL5K, a B738 at 41.8 -88.0 heading 010 FL160 250 knots"),
+    "CRE UAL5K B738 41.8 -88 10 FL160 250")
+  -- digits that are no designator's, said after the creation, are asked about
+  asked("create UAL455 B739 at 40.5 north 104.1 west, FL190 heading 225 speed 280 739")
+  -- a lead-in that instructs is no lead-in
+  asked("please descend UAL88 B738 at 41.6 -88.4, FL230 heading 045 at 280 kt")
+  -- a remark in a sentence of its own, "one" standing for the aircraft in a remark, the experimenter's own
+  -- doing after "then I'll", what a setting is for ("for when we ..."): set aside; one that instructs is asked
+  check_eq(ex("create SKW9 E175 at 42.2 -87.8 heading 300 FL110 250 knots. Second arrival of the evening wave."),
+    "CRE SKW9 E175 42.2 -87.8 300 FL110 250")
+  check_eq(ex("Warm-up pair first. SKW10 E175 at 42.2 -87.8 heading 300 FL110 250 knots"),
+    "CRE SKW10 E175 42.2 -87.8 300 FL110 250")
+  check_eq(ex("cre SKW11 E175 42.2 -87.8 300 FL110 250 - the slow one of the stream"),
+    "CRE SKW11 E175 42.2 -87.8 300 FL110 250")
+  check_eq(ex("fast forward 2 minutes then I'll explain the display to the visitors"), "FF 120")
+  check_eq(ex("set the sim rate to 3 for when we reconvene"), "DTMULT 3")
+  asked("DAL889 climb FL240. Then N731RS.")
+  asked("DAL889 climb FL240. N731RS as well.")
+  asked("fast forward 2 minutes then I'll climb DAL889")
+  asked("cre SKW12 E175 42.2 -87.8 300 FL110 250 - the one at FL300")
+  -- a type, maker or family said before the callsign of a flying aircraft of that type describes it
+  check_eq(ex("where's the Cessna N731RS now"), "POS N731RS")
+  check_eq(ex("delete the Skyhawk N731RS"), "DEL N731RS")
+  asked("delete the Baron N731RS")
+  -- requests for information: a flight plan pulled up, "route for X?", an aircraft shown in a clause of its own,
+  -- the positions of two aircraft
+  check_eq(ex("pull up Delta 889's flight plan"), "LISTRTE DAL889")
+  check_eq(ex("bring up DAL889's route please"), "LISTRTE DAL889")
+  check_eq(ex("route for Delta 889?"), "LISTRTE DAL889")
+  check_eq(ex("freeze, and show me Delta 889"), "HOLD ; POS DAL889")
+  check_eq(ex("can you give me DAL889's and N731RS's positions"), "POS DAL889 ; POS N731RS")
+  -- a value said again after a self-correction replaces the one before it; "scratch that, just <the
+  -- instruction again>" takes back what it follows
+  check_eq(ex("Delta 889 slow to 240... no, make it 230"), "SPD DAL889 230")
+  check_eq(ex("DAL889 descend to 11 thousand ft, sorry, 12 thousand"), "ALT DAL889 12000")
+  check_eq(ex("DAL889 climb FL260 until further advised... scratch that, just climb FL260"), "ALT DAL889 FL260")
+  asked("DAL889 turn left heading 200... no, make it 190 and 230 knots")
+  -- a fix or point said new or named at a position is defined; the plural lists several
+  check_eq(ex("new fix MRG2 at 42.5 N 87.9 W"), "DEFWPT MRG2 42.5 -87.9")
+  check_eq(ex("we need a reference point named HOLDPT at 42.0N, 88.0W"), "DEFWPT HOLDPT 42 -88")
+  check_eq(ex("waypoints: EN1 at 42.1 -88.1 and EN2 at 42.2 -88.2"), "DEFWPT EN1 42.1 -88.1 ; DEFWPT EN2 42.2 -88.2")
+  asked("DAL889 fix at 42.5 N 87.9 W")
+  -- a position written with a slash; a compass point that agrees with the heading said describes it
+  check_eq(ex("new ac: SKW14 E175 42.35/-87.95 hdg 050 FL190 spd 275"), "CRE SKW14 E175 42.35 -87.95 50 FL190 275")
+  check_eq(ex("create SKW15 E175 at 42.3 -87.9, northbound, so heading 010, FL150, 260 knots"),
+    "CRE SKW15 E175 42.3 -87.9 10 FL150 260")
+  asked("create SKW16 E175 at 42.3 -87.9, southbound, heading 010, FL150, 260 knots")
+  -- typed turn shorthand before "hdg"; a Pilatus by its name (PCnn -> Pilatus PC-nn)
+  check_eq(ex("dal889 lft hdg 100"), "HDG DAL889 100 LEFT")
+  check_eq(ex("DAL889 rgt hdg 300"), "HDG DAL889 300 RIGHT")
+  check_eq(ex("creating N48PC, Pilatus PC-12, 42.1 -88.1, heading 010, 9500 feet, 190 knots"),
+    "CRE N48PC PC12 42.1 -88.1 10 9500 190")
+  -- the traffic on the display named as a place ("on the board", "from the scene")
+  check_eq(ex("put an Alaska B738 on the board, ASA70, FL150, heading 090, 270 knots, lat 42.1 lon -87.5"),
+    "CRE ASA70 B738 42.1 -87.5 90 FL150 270")
+  check_eq(ex("take N731RS out of the scene please"), "DEL N731RS")
+end
+
+-- a creation at a named place: the place said after "at"/"over" is the position, over one named before it
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "DEFWPT GATEA 52.1 4.1", "DEFWPT GATEB 52.3 4.4", "CRE KLM12 B738 52 4 90 FL200 250" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text)
+    return said(graph.translate(text, { sim = lab, mode = "offline", waypoints = { "GATEA", "GATEB" } }))
+  end
+  check_eq(ex("GATEB arrival: create TST7 A320 at GATEA heading 100 FL230 270 kts"):match("^ASK I have CRE TST7 A320 GATEA"),
+    "ASK I have CRE TST7 A320 GATEA")
+  check_eq(ex("create TST8 A320 over GATEB heading 100 FL230 270 kts"), "CRE TST8 A320 GATEB 100 FL230 270")
+end
