@@ -1057,6 +1057,21 @@ local function same_family(a, b)
   return a == b or (ia and ib and ia.family ~= nil and ia.family == ib.family)
 end
 
+-- True when another flying aircraft opens a clause straight before the instruction word at i,
+-- after segment `last`'s ("AUA123 climb FL250; DLH6CK descend FL200", "... knots. DLH6CK speed 260"):
+-- after a punctuation mark or "and", the aircraft and then (fillers and a turn side aside) the word
+-- itself. The instruction is that aircraft's, never merged into the one before.
+function G:addressee_between(last, i)
+  local before = {}
+  for _, r in ipairs(self:refs_in(last.b, last.trig, "aircraft")) do before[r.name:upper()] = true end
+  local start = self:word(i - 1, "@left @right") and i - 1 or i
+  for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
+    local opens = self.t[r.b - 1] and (self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and"))
+    if r.exists and opens and not before[r.name:upper()] and self:skip_fillers(r.e) == start then return true end
+  end
+  return false
+end
+
 function G:segments(b, e)
   local trig = {}
   for i = b, e - 1 do
@@ -1106,7 +1121,7 @@ function G:segments(b, e)
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
           and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
-        if (last.intent == tr.intent or alt_pair) and not this.single then
+        if (last.intent == tr.intent or alt_pair) and not this.single and not self:addressee_between(last, tr.pos) then
           if tr.intent == "alt" then last.intent = "alt" end
           merged = true
         end
@@ -1187,11 +1202,14 @@ function G:split_ellipsis(segs)
     local qs = (M.intents[s.intent] or {}).value and self:quantities(s.trig, e) or {}
     if #qs >= 2 then
       for _, r in ipairs(self:refs_in(qs[1].e, e, "aircraft")) do
-        -- only across "and" or a comma: "heading 160 DLH4AX 2" is no second instruction
+        -- only across "and", a comma, a semicolon or a full stop: "heading 160 DLH4AX 2" is no second
+        -- instruction
         local joined = false
         for k = qs[1].e, r.b - 1 do
           local t = self.t[k]
-          if (t.kind == "punct" and t.text == ",") or self:word(k, "and") then joined = true end
+          if (t.kind == "punct" and (t.text == "," or t.text == ";" or t.text == ".")) or self:word(k, "and") then
+            joined = true
+          end
         end
         if qs[#qs].b >= r.e and joined then
           cur.e = r.b
@@ -1787,6 +1805,8 @@ local function known_word(w)
   end
   return base:find("[%-/]") ~= nil
 end
+-- True when the word at i is one squawk knows (known_word): English of the lexicon's lists, no name.
+function G:known_word(i) return self.t[i] ~= nil and self.t[i].kind == "word" and known_word(self.t[i].text) end
 
 -- True when the negation or condition at i is carried by the parse (`kinds`: G:issued): a condition
 -- when a conditional command was issued, a switch word when something was switched off, a place passed

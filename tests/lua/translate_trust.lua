@@ -1782,3 +1782,49 @@ do
   check_eq(ex("back to real time rate please, multiplier 1"), "DTMULT 1")
   check_eq(ex("ok, back to real time rate"), "DTMULT 1")
 end
+
+-- Cycle 16, radiotelephony typed as heard: instructions for several aircraft in one line, each opened by
+-- its callsign after a semicolon, full stop, comma or "and", are each aircraft's (never one merged
+-- instruction, never a value moved to the other aircraft); "I'm deleting ..." is a deletion said as done
+do
+  local rt = squawk.sim.new()
+  for _, line in ipairs({ "CRE AUA123 A320 48.1 16.5 090 FL200 280", "CRE DLH6CK A320 48.3 16.2 180 FL240 300",
+      "CRE UAL1542 B738 47.9 16.8 270 FL180 260" }) do
+    check(rt:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = rt, mode = "offline" })) end
+  check_eq(ex("AUA123 climb FL250; DLH6CK descend FL200"), "ALT AUA123 FL250 ; ALT DLH6CK FL200")
+  check_eq(ex("Austrian 123 descend flight level one five zero. Lufthansa six charlie kilo climb flight level three one zero."),
+    "ALT AUA123 FL150 ; ALT DLH6CK FL310")
+  check_eq(ex("AUA123 speed 250 knots; DLH6CK speed 260 knots"), "SPD AUA123 250 ; SPD DLH6CK 260")
+  check_eq(ex("AUA123 reduce 250 kts; DLH6CK 260 kts"), "SPD AUA123 250 ; SPD DLH6CK 260")
+  check_eq(ex("AUA123 left heading 200 and I'm deleting United 1542 now"), "HDG AUA123 200 LEFT ; DEL UAL1542")
+  check_eq(ex("removing UAL1542"), "DEL UAL1542")
+  -- the same aircraft said again is one instruction; a value with no callsign or separator is still asked about
+  check_eq(ex("AUA123 climb, AUA123 climb FL250"), "ALT AUA123 FL250")
+  check(ex("AUA123 speed 250 kts DLH6CK speed 260 kts"):find("^ASK") ~= nil)
+end
+
+-- an airport said by a distinctive part of its navdata name is the one airport near the aircraft whose name
+-- holds it ("Midway": CHICAGO MIDWAY INTL, "Kennedy": JOHN F KENNEDY INTL, "Love Field": DALLAS LOVE FLD);
+-- several are named in the question; none there (or a name that only says what kind of field) is asked about
+do
+  local us = squawk.sim.new()
+  if #us:airports_with_words("midway") >= 1 then
+    for _, line in ipairs({ "CRE ENY3410 E145 41.9 -87.9 090 9000 250", "CRE JBU615 A320 40.5 -73.5 090 9000 250",
+        "CRE SWA22 B737 32.5 -97.0 090 9000 250" }) do
+      check(us:exec(line))
+    end
+    local function ex(text) return said(graph.translate(text, { sim = us, mode = "offline" })) end
+    check_eq(ex("destination for Envoy 3410 is Midway"), "DEST ENY3410 KMDW")
+    check_eq(ex("jetblue six fifteen change destination to kennedy"), "DEST JBU615 KJFK")
+    check_eq(ex("JBU615 destination la guardia"), "DEST JBU615 KLGA")
+    check_eq(ex("Southwest 22 is going to Love Field"), "DEST SWA22 KDAL")
+    check(ex("ENY3410 destination Love Field"):find("^ASK") ~= nil)  -- Dallas is far from Chicago
+    check(ex("ENY3410 destination international"):find("^ASK") ~= nil)
+    check(ex("ENY3410 destination Ohare Midway"):find("^ASK") ~= nil)
+    check_eq(#us:airports_with_words("county regional"), 0)
+  else
+    print("skipped: airports by a part of their name need navdata (SQUAWK_NAVDATA)")
+  end
+end
