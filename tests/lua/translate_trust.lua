@@ -1800,6 +1800,11 @@ do
   check_eq(ex("AUA123 reduce 250 kts; DLH6CK 260 kts"), "SPD AUA123 250 ; SPD DLH6CK 260")
   check_eq(ex("AUA123 left heading 200 and I'm deleting United 1542 now"), "HDG AUA123 200 LEFT ; DEL UAL1542")
   check_eq(ex("removing UAL1542"), "DEL UAL1542")
+  -- a callsign taken back ("sorry", "no, I mean", "correction") is never instructed; two said plainly both are
+  check_eq(ex("DLH6CK, sorry, AUA123 descend FL150"), "ALT AUA123 FL150")
+  check_eq(ex("Lufthansa six charlie kilo, no, I mean Austrian 123, turn left heading 200"), "HDG AUA123 200 LEFT")
+  check_eq(ex("DLH6CK oh sorry AUA123 reduce speed 250"), "SPD AUA123 250")
+  check_eq(ex("DLH6CK and AUA123 descend FL150"), "ALT DLH6CK FL150 ; ALT AUA123 FL150")
   -- the same aircraft said again is one instruction; a value with no callsign or separator is still asked about
   check_eq(ex("AUA123 climb, AUA123 climb FL250"), "ALT AUA123 FL250")
   check(ex("AUA123 speed 250 kts DLH6CK speed 260 kts"):find("^ASK") ~= nil)
