@@ -92,6 +92,8 @@ return {
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
+        -- a clearance given again in place of the one before ("recleared direct CAPER", "re-cleared FL250")
+        "recleared", "reclear", "reclearance",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
         "readback", "read-back", "incorrect", "said",
         -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
@@ -108,7 +110,9 @@ return {
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
-        "after that", "after this", "at pilot's discretion", "at your discretion" },
+        "after that", "after this", "at pilot's discretion", "at your discretion",
+        -- urgency, said with a negation ("descend FL150 without delay")
+        "without delay", "with no delay", "without any delay" },
     -- the ordinary accompaniments of instructions: verbs of changing a setting, participles that
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
@@ -147,7 +151,7 @@ return {
         "experiments" },
 
     -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
-    prefixes = { "co", "non", "pre", "semi", "sub", "multi" },
+    prefixes = { "co", "non", "pre", "semi", "sub", "multi", "re" },
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
@@ -156,7 +160,10 @@ return {
     -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
         "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
-        "until further notice", "without restriction", "without restrictions" },
+        "until further notice", "without restriction", "without restrictions",
+        -- the same said with "till", without "further", or with the verb unbent ("until further advise")
+        "till further advised", "till further notice", "until advised", "till advised", "until further advise",
+        "till further advise", "until further instructions", "till further instructions" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
@@ -196,7 +203,9 @@ return {
                        vs = true, fl = true },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
-  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", spd = "speed",
+  -- (a turn side typed without its vowels, "turn lft heading 200", "hdg 120 rgt", is that side)
+  shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", lft = "left",
+                rgt = "right", rght = "right", spd = "speed",
                 hdg = "heading",
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
@@ -369,6 +378,10 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
+    -- runway squawk does not fly to
+    { what = "approaches to a runway", words = "vectors vectoring vector",
+      near = { "runway", "rwy", "ils", "final", "approach", "localizer", "localiser", "landing" } },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },

@@ -1233,7 +1233,8 @@ do
   check_eq(ut("KLM1276 climb FL310 not 300 speed 250"),
     "ASK I have ALT KLM1276 FL310 ; SPD KLM1276 250. What does '300' mean?")
   check_eq(ut("KLM1276 climb without restriction flight level three zero zero"), "ALT KLM1276 FL300")
-  check_eq(ut("KLM1276 climb FL300 without delay"), "ASK I have ALT KLM1276 FL300. What does 'without' mean?")
+  check_eq(ut("KLM1276 climb FL300 without a level off"), "ASK I have ALT KLM1276 FL300. What does 'without' mean?")
+  check_eq(ut("KLM1276 climb FL300 without delay"), "ALT KLM1276 FL300")  -- (urgency, as "expedite")
   -- an aircraft shown, its route shown with the callsign said in words; the clock
   check_eq(ut("show me KLM one two seven six"), "POS KLM1276")
   check_eq(ut("show me KLM one two seven six's route"), "LISTRTE KLM1276")
@@ -1805,6 +1806,19 @@ do
   check_eq(ex("Lufthansa six charlie kilo, no, I mean Austrian 123, turn left heading 200"), "HDG AUA123 200 LEFT")
   check_eq(ex("DLH6CK oh sorry AUA123 reduce speed 250"), "SPD AUA123 250")
   check_eq(ex("DLH6CK and AUA123 descend FL150"), "ALT DLH6CK FL150 ; ALT AUA123 FL150")
+  -- radiotelephony's framing of a clearance carries nothing more: given again ("recleared"), urgent ("without
+  -- delay"), in force "till further advised" (and its variants); what a vector is for ("vectors for runway
+  -- 28") is named as not simulated beside the heading; a turn side typed without vowels is that side
+  check_eq(ex("Austrian 123 recleared flight level 250"), "ALT AUA123 FL250")
+  check_eq(ex("AUA123 re-cleared FL250"), "ALT AUA123 FL250")
+  check_eq(ex("AUA123 descend flight level 150 without delay"), "ALT AUA123 FL150")
+  check_eq(ex("DLH6CK maintain 280 knots or greater till further advised"), "SPD DLH6CK 280")
+  check_eq(ex("DLH6CK keep 280 knots until further advise"), "SPD DLH6CK 280")
+  local v = graph.translate("AUA123 turn right heading 330, vectors for runway two eight", { sim = rt, mode = "offline" })
+  check(said(v) == "HDG AUA123 330 RIGHT" and (v.note or ""):find("approaches to a runway", 1, true) ~= nil, said(v))
+  check_eq(ex("AUA123 turn lft heading 200"), "HDG AUA123 200 LEFT")
+  check_eq(ex("dlh6ck hdg 120 rgt"), "HDG DLH6CK 120 RIGHT")
+  check(ex("AUA123 vectors heading 200 please, traffic"):find("approaches", 1, true) == nil)
   -- the same aircraft said again is one instruction; a value with no callsign or separator is still asked about
   check_eq(ex("AUA123 climb, AUA123 climb FL250"), "ALT AUA123 FL250")
   check(ex("AUA123 speed 250 kts DLH6CK speed 260 kts"):find("^ASK") ~= nil)
