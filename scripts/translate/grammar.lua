@@ -2063,12 +2063,18 @@ end
 -- ---- what squawk does not simulate ----
 
 -- True when one of `near` (words or typed numbers as written; "#number"
--- any number, "#waypoint" a waypoint name) is within 4 tokens after i.
+-- any number, "#waypoint" a waypoint name, "#frequency" a typed radio frequency of the VHF air
+-- band, 118.000 to 136.975 MHz with its decimals: "129.2") is within 4 tokens after i.
+local function frequency(t)
+  local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
+  return mhz and mhz >= 118 and mhz < 137
+end
 function G:near_any(i, near)
   for k = i + 1, math.min(#self.t, i + 4) do
     local t = self.t[k]
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
+          or (w == "#frequency" and frequency(t))
           or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0)
           or ((t.kind == "word" or t.kind == "number") and t.text == w) then
         return true
@@ -2242,6 +2248,58 @@ M.not_understood = UNDERSTOOD
 -- An aircraft's id glued to a level or a shorthand value ("klm12fl240", "ezy45s250"), written
 -- apart; only the exact id of an aircraft that flies, followed by FL or a lexicon.shorthand prefix
 -- and digits.
+-- "AUA123 speed 250, DLH6CK the same", "..., DLH6CK too", "..., same for DLH6CK": another flying aircraft
+-- said with "same", "too", "likewise", "ditto" or "as well" after it, or after "same for" in a clause of
+-- its own, ending its clause, gets the request's instructions too. Returns the aircraft so named (their tokens used, never instructed by the parse).
+local SAME_AFTER = { same = true, too = true, likewise = true, ditto = true }
+function G:same_for()
+  local named = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and not r.false_start and r.b > 1 then
+      local opens = true
+      local k = self:skip_fillers(r.e, false)
+      local e = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
+        or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
+      local b = r.b
+      if not e and self:word(r.b - 1, "for") and self:word(r.b - 2, "same likewise") then
+        b = self:word(r.b - 3, "the") and r.b - 3 or r.b - 2
+        opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
+        e = r.e
+      end
+      if e and opens and (not self.t[e] or self.t[e].kind == "punct") then
+        self:mark_used(b, e)
+        r.false_start = true
+        named[#named + 1] = r.name
+      end
+    end
+  end
+  return named
+end
+
+-- The request's commands given again to each aircraft of `named` (G:same_for): only when every command
+-- is one aircraft's, no creation; else asked about.
+function G:same_again(named)
+  if #named == 0 or self.ask or #self.out == 0 then return end
+  local id
+  for _, line in ipairs(self.out) do
+    local cmd, acid = line:match("^(%S+) (%S+)")
+    if cmd == "CRE" or not acid or not self:state(acid) or (id and acid ~= id) then
+      self.ask = string.format("Which instruction should %s get the same as? Please say it for %s.",
+        table.concat(named, " and "), table.concat(named, " and "))
+      return
+    end
+    id = acid
+  end
+  local out = {}
+  for _, line in ipairs(self.out) do out[#out + 1] = line end
+  for _, other in ipairs(named) do
+    for _, line in ipairs(self.out) do
+      out[#out + 1] = (line:gsub("^(%S+) " .. id:gsub("%p", "%%%0") .. "%f[%s%z]", "%1 " .. other))
+    end
+  end
+  self.out = out
+end
+
 local function unglued_ids(text, fleet)
   if #fleet == 0 then return text end
   local ids = {}
@@ -2402,6 +2460,7 @@ function M.translate(text, world)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
   g:settle_callsigns()
+  local same = g:same_for()
   g:airline_types()
   g:airline_refs()
   g:type_refs()
@@ -2428,6 +2487,7 @@ function M.translate(text, world)
     end
   end
   if not g.ask then g:discretion_without_level() end
+  g:same_again(same)
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

@@ -370,6 +370,9 @@ return {
       near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
     { what = "transponder codes", words = "transponder ident" },
     { what = "radio frequencies", words = "contact monitor frequency freq" },
+    -- a hand-off said with another verb before the frequency ("call Vienna on 129.2", "switch to approach
+    -- 119.1", "over to Wien 134.35", "go to 129.2")
+    { what = "radio frequencies", words = "call switch over go change", near = { "#frequency" } },
     { what = "approach clearances", words = "ils rnav rnp localizer localiser glideslope glidepath vor",
       near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
     { what = "approach clearances", words = "cleared clear",

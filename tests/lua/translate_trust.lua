@@ -1643,8 +1643,9 @@ do
   check_eq(ex("Add an intruder for ICE44: TST9 A320 at 60.2 12.4 heading 090 FL90 280 kts"),
     "CRE TST9 A320 60.2 12.4 90 FL90 280")
   -- an aside that adds, negates or names a value, a place or another instruction is asked about
-  asked("NAX12 climb FL200 - ICE44 as well")
-  asked("NAX12 climb FL200, same for ICE44")
+  -- (another aircraft with "as well" or "same for" gets the instruction too: G:same_for)
+  check_eq(ex("NAX12 climb FL200 - ICE44 as well"), "ALT NAX12 FL200 ; ALT ICE44 FL200")
+  check_eq(ex("NAX12 climb FL200, same for ICE44"), "ALT NAX12 FL200 ; ALT ICE44 FL200")
   asked("NAX12 climb FL200 - and ICE44 descend")
   asked("NAX12 climb FL200 (not ICE44)")
   asked("NAX12 climb FL200 - don't let it level off")
@@ -1819,6 +1820,19 @@ do
   check_eq(ex("AUA123 turn lft heading 200"), "HDG AUA123 200 LEFT")
   check_eq(ex("dlh6ck hdg 120 rgt"), "HDG DLH6CK 120 RIGHT")
   check(ex("AUA123 vectors heading 200 please, traffic"):find("approaches", 1, true) == nil)
+  -- a hand-off said with another verb before a frequency of the air band is named as not simulated
+  local h = graph.translate("AUA123 descend FL150, call Vienna on 129.2", { sim = rt, mode = "offline" })
+  check(said(h) == "ALT AUA123 FL150" and (h.note or ""):find("radio frequencies", 1, true) ~= nil, said(h))
+  check_eq(ex("AUA123 descend FL150 and switch to approach 119.1"), "ALT AUA123 FL150")
+  check(ex("AUA123 go to 250"):find("radio", 1, true) == nil)
+  -- another aircraft said with "same", "too", "as well" or after "same for" gets the instructions again;
+  -- where the request instructed several aircraft, which is asked
+  check_eq(ex("AUA123 reduce speed 250, DLH6CK the same"), "SPD AUA123 250 ; SPD DLH6CK 250")
+  check_eq(ex("AUA123 descend FL150 and reduce 250, same for Lufthansa six charlie kilo"),
+    "ALT AUA123 FL150 ; SPD AUA123 250 ; ALT DLH6CK FL150 ; SPD DLH6CK 250")
+  check_eq(ex("AUA123 turn left heading 200, DLH6CK too"), "HDG AUA123 200 LEFT ; HDG DLH6CK 200 LEFT")
+  check(ex("AUA123 FL150, DLH6CK FL160, UAL1542 same"):find("^ASK Which instruction should UAL1542") ~= nil)
+  check_eq(ex("AUA123 climb FL300, the same level as DLH6CK"), "ALT AUA123 FL300")
   -- the same aircraft said again is one instruction; a value with no callsign or separator is still asked about
   check_eq(ex("AUA123 climb, AUA123 climb FL250"), "ALT AUA123 FL250")
   check(ex("AUA123 speed 250 kts DLH6CK speed 260 kts"):find("^ASK") ~= nil)
