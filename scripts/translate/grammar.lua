@@ -1058,15 +1058,18 @@ local function same_family(a, b)
 end
 
 -- True when another flying aircraft opens a clause straight before the instruction word at i,
--- after segment `last`'s ("AUA123 climb FL250; DLH6CK descend FL200", "... knots. DLH6CK speed 260"):
--- after a punctuation mark or "and", the aircraft and then (fillers and a turn side aside) the word
--- itself. The instruction is that aircraft's, never merged into the one before.
+-- after segment `last`'s ("AUA123 climb FL250; DLH6CK descend FL200", "... knots. DLH6CK speed 260",
+-- "AUA123 reduce 250 DLH6CK reduce 240"): after a punctuation mark, "and" or the previous instruction's
+-- value, the aircraft and then (fillers and a turn side aside) the word itself. The instruction is that
+-- aircraft's, never merged into the one before.
 function G:addressee_between(last, i)
   local before = {}
   for _, r in ipairs(self:refs_in(last.b, last.trig, "aircraft")) do before[r.name:upper()] = true end
   local start = self:word(i - 1, "@left @right") and i - 1 or i
   for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
-    local opens = self.t[r.b - 1] and (self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and"))
+    local qs = self:quantities(last.trig, r.b)
+    local opens = self.t[r.b - 1] and (self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and")
+      or (qs[1] ~= nil and qs[#qs].e == r.b))
     if r.exists and opens and not before[r.name:upper()] and self:skip_fillers(r.e) == start then return true end
   end
   return false

@@ -124,7 +124,7 @@ return {
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "request", "requested", "automatic", "automatically", "manual", "manually",
-        "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
+        "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
         -- the margin a resolution keeps ("resolution margin factor 1.05")

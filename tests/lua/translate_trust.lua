@@ -1802,6 +1802,9 @@ do
   check_eq(ex("AUA123 reduce 250 kts; DLH6CK 260 kts"), "SPD AUA123 250 ; SPD DLH6CK 260")
   check_eq(ex("AUA123 left heading 200 and I'm deleting United 1542 now"), "HDG AUA123 200 LEFT ; DEL UAL1542")
   check_eq(ex("removing UAL1542"), "DEL UAL1542")
+  check_eq(ex("AUA123 reduce 250 DLH6CK reduce 240"), "SPD AUA123 250 ; SPD DLH6CK 240")
+  check_eq(ex("AUA123 left 200 DLH6CK right 100"), "HDG AUA123 200 LEFT ; HDG DLH6CK 100 RIGHT")
+  check_eq(ex("AUA123 climb unrestricted FL250"), "ALT AUA123 FL250")
   -- a callsign taken back ("sorry", "no, I mean", "correction") is never instructed; two said plainly both are
   check_eq(ex("DLH6CK, sorry, AUA123 descend FL150"), "ALT AUA123 FL150")
   check_eq(ex("Lufthansa six charlie kilo, no, I mean Austrian 123, turn left heading 200"), "HDG AUA123 200 LEFT")
@@ -1833,9 +1836,11 @@ do
   check_eq(ex("AUA123 turn left heading 200, DLH6CK too"), "HDG AUA123 200 LEFT ; HDG DLH6CK 200 LEFT")
   check(ex("AUA123 FL150, DLH6CK FL160, UAL1542 same"):find("^ASK Which instruction should UAL1542") ~= nil)
   check_eq(ex("AUA123 climb FL300, the same level as DLH6CK"), "ALT AUA123 FL300")
-  -- the same aircraft said again is one instruction; a value with no callsign or separator is still asked about
+  -- the same aircraft said again is one instruction; a callsign straight after a value, with no instruction
+  -- word after it, is still asked about
   check_eq(ex("AUA123 climb, AUA123 climb FL250"), "ALT AUA123 FL250")
-  check(ex("AUA123 speed 250 kts DLH6CK speed 260 kts"):find("^ASK") ~= nil)
+  check_eq(ex("AUA123 speed 250 kts DLH6CK speed 260 kts"), "SPD AUA123 250 ; SPD DLH6CK 260")
+  check(ex("AUA123 turn right heading 160 DLH6CK 2"):find("^ASK") ~= nil)
 end
 
 -- an airport said by a distinctive part of its navdata name is the one airport near the aircraft whose name
