@@ -2349,6 +2349,8 @@ end
 -- id of an aircraft flying is written as that id; a maker or model said before it is the aircraft's
 -- own and is written into the id too when the aircraft is of that maker or model.
 local TYPE_WORDS  -- maker or model (lower case) -> {designator = true}
+local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
   if not TYPE_WORDS then
@@ -2366,10 +2368,14 @@ local function spelled_registrations(text, fleet)
     if not lexicon.phonetic[w[1]] or k == 1 or not lexicon.phonetic[words[k - 1][1]] then
       local set = TYPE_WORDS[w[1]]
       local first = lexicon.phonetic[w[1]] and k or k + 1
-      local letters, last = "", nil
+      -- (after two letters or more, digits said or typed and more letters: "Hotel Kilo five zero one two"
+      -- is HK5012, "Delta Lima Hotel six Charlie Kilo" DLH6CK, when such an aircraft flies)
+      local letters, last, lead = "", nil, 0
       for j = first, #words do
         local l = lexicon.phonetic[words[j][1]]
+        if not l and lead >= 2 then l = SAID_DIGIT[words[j][1]] or words[j][1]:match("^%d+$") end
         if not l or (j > first and not text:sub(words[j - 1][3], words[j][2] - 1):match("^%s+$")) then break end
+        if l:match("^%a$") and lead == #letters then lead = lead + 1 end
         letters, last = letters .. l, j
       end
       for _, a in ipairs(#letters >= 4 and fleet or {}) do

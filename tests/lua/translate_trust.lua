@@ -1805,6 +1805,13 @@ do
   check_eq(ex("AUA123 reduce 250 DLH6CK reduce 240"), "SPD AUA123 250 ; SPD DLH6CK 240")
   check_eq(ex("AUA123 left 200 DLH6CK right 100"), "HDG AUA123 200 LEFT ; HDG DLH6CK 100 RIGHT")
   check_eq(ex("AUA123 climb unrestricted FL250"), "ALT AUA123 FL250")
+  -- a registration or callsign spelled in the phonetic alphabet with its digits said is that aircraft exactly
+  check(rt:exec("CRE HK5012 C208 48.0 16.0 180 13000 150"))
+  check_eq(ex("Hotel Kilo five zero one two, turn right heading two two zero"), "HDG HK5012 220 RIGHT")
+  check_eq(ex("hotel kilo 5012 descend 9000 feet"), "ALT HK5012 9000")
+  check_eq(ex("Delta Lima Hotel six Charlie Kilo descend FL150"), "ALT DLH6CK FL150")
+  check(ex("Hotel Kilo five zero one three, turn right heading two two zero"):find("^ASK") ~= nil)
+  check(rt:exec("DEL HK5012"))
   -- a callsign taken back ("sorry", "no, I mean", "correction") is never instructed; two said plainly both are
   check_eq(ex("DLH6CK, sorry, AUA123 descend FL150"), "ALT AUA123 FL150")
   check_eq(ex("Lufthansa six charlie kilo, no, I mean Austrian 123, turn left heading 200"), "HDG AUA123 200 LEFT")
