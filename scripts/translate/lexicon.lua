@@ -395,10 +395,10 @@ return {
     -- end of the request: the words in it describe the other aircraft, they instruct nobody
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
       to_end = true },
-    -- "report passing FL100", "report established": a report the pilot makes, no instruction
+    -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
-               "vacating", "when", "at" } },
+               "vacating", "when", "at", "steady" } },
     -- "turn right 15 degrees, report heading": after an instruction, the readback of what it set is a
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
