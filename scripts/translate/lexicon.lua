@@ -381,6 +381,10 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
+    -- (flying each instruction as given) does not keep
+    { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
+      through = "speed level altitude" },
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",

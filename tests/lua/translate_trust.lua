@@ -1829,6 +1829,8 @@ do
   check(said(v) == "HDG AUA123 330 RIGHT" and (v.note or ""):find("approaches to a runway", 1, true) ~= nil, said(v))
   local st = graph.translate("AUA123 turn right heading 190, report steady", { sim = rt, mode = "offline" })
   check(said(st) == "HDG AUA123 190 RIGHT" and (st.note or ""):find("position reports", 1, true) ~= nil, said(st))
+  local cr = graph.translate("AUA123 climb FL250, cancel speed restriction", { sim = rt, mode = "offline" })
+  check(said(cr) == "ALT AUA123 FL250" and (cr.note or ""):find("restrictions lifted", 1, true) ~= nil, said(cr))
   check_eq(ex("AUA123 turn lft heading 200"), "HDG AUA123 200 LEFT")
   check_eq(ex("dlh6ck hdg 120 rgt"), "HDG DLH6CK 120 RIGHT")
   check(ex("AUA123 vectors heading 200 please, traffic"):find("approaches", 1, true) == nil)
