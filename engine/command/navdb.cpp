@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <set>
 
 #include "core/files.h"
 #include "core/geo.h"
@@ -218,6 +219,36 @@ std::vector<const NavPoint*> NavDb::airports_of_city(std::string_view city) cons
     if (airport_classes_[i] == "LARGE" && n.size() > key.size() + 1 &&
         n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ')
       out.push_back(&airports_[i]);
+  }
+  return out;
+}
+
+std::vector<const NavPoint*> NavDb::airports_with_words(std::string_view words) const {
+  std::vector<const NavPoint*> out;
+  // words of many airports' names that tell what kind of field it is, not which
+  static const std::set<std::string> kKind = {
+      "AIRPORT", "INTL", "AIRFIELD", "AERODROME", "AIRBASE", "AIR", "BASE", "AFB", "FLD", "MUNI", "RGNL", "CO",
+      "COUNTY", "CITY", "MEML", "EXEC", "NATL", "METRO", "METROPOLITAN", "STRIP", "HELIPORT", "SEAPLANE",
+      "PORT", "ARPT"};
+  // such words as said, and as the navdata writes them ("Dallas Love Field": DALLAS LOVE FLD)
+  static const std::map<std::string, std::string> kWritten = {
+      {"INTERNATIONAL", "INTL"}, {"FIELD", "FLD"},          {"MUNICIPAL", "MUNI"}, {"REGIONAL", "RGNL"},
+      {"MEMORIAL", "MEML"},      {"EXECUTIVE", "EXEC"},     {"NATIONAL", "NATL"}};
+  const std::string said = name_key(words);
+  std::string key;
+  bool kind_only = true;
+  for (size_t b = 0; b < said.size();) {
+    const size_t e = std::min(said.find(' ', b), said.size());
+    std::string w = said.substr(b, e - b);
+    if (auto it = kWritten.find(w); it != kWritten.end()) w = it->second;
+    kind_only = kind_only && kKind.count(w) > 0;
+    key += (key.empty() ? "" : " ") + w;
+    b = e + 1;
+  }
+  if (key.empty() || kind_only) return out;
+  const std::string run = " " + key + " ";
+  for (size_t i = 0; i < airport_names_.size() && i < airports_.size(); ++i) {
+    if ((" " + name_key(airport_names_[i]) + " ").find(run) != std::string::npos) out.push_back(&airports_[i]);
   }
   return out;
 }

@@ -10,6 +10,8 @@
 //                           lat, lon [deg] when given ({} without navdata)
 //   sim:airports_of_city(name [, lat, lon, within_nm]) -> { "EDDF", ... }  large airports whose
 //                           name starts with the words of `name` and goes on ("Frankfurt")
+//   sim:airports_with_words(words [, lat, lon, within_nm]) -> { "KMDW", ... }  airports whose name
+//                           holds the words of `words` among others ("Midway": CHICAGO MIDWAY INTL)
 //   sim:airports_beside_navaids(name [, lat, lon, within_nm]) -> { "LFBO", ... }  the large (else
 //                           medium) airports within 10 nm of a navaid called `name` ("Toulouse")
 //   sim:airport_class(id) -> "LARGE" | "MEDIUM" | "SMALL" | ""  airports.dat's class
@@ -158,9 +160,10 @@ int l_exec(lua_State* L) {
   return push_outcome(L, s->exec(arg_string(L, 2, "line")));
 }
 
-enum class AirportsBy { kName, kCity, kNavaid };
+enum class AirportsBy { kName, kCity, kNavaid, kWords };
 
-// airports_named, airports_of_city or airports_beside_navaids (by): ids, near lat/lon when given
+// airports_named, airports_of_city, airports_beside_navaids or airports_with_words (by): ids, near
+// lat/lon when given
 int push_airports(lua_State* L, AirportsBy by) {
   command::Stack* s = self(L);
   const std::string name = arg_string(L, 2, "name");
@@ -174,6 +177,7 @@ int push_airports(lua_State* L, AirportsBy by) {
   const command::NavDb& db = *s->navdb();
   for (const command::NavPoint* a : by == AirportsBy::kCity     ? db.airports_of_city(name)
                                     : by == AirportsBy::kNavaid ? db.airports_beside_navaids(name)
+                                    : by == AirportsBy::kWords  ? db.airports_with_words(name)
                                                                 : db.airports_named(name)) {
     if (near && geo::kwikdist_nm(lat, lon, a->lat, a->lon) > within) continue;
     lua_pushstring(L, a->id.c_str());
@@ -190,6 +194,9 @@ int l_airports_of_city(lua_State* L) {
 }
 int l_airports_beside_navaids(lua_State* L) {
   return push_airports(L, AirportsBy::kNavaid);
+}
+int l_airports_with_words(lua_State* L) {
+  return push_airports(L, AirportsBy::kWords);
 }
 
 int l_airport_class(lua_State* L) {
@@ -541,6 +548,7 @@ void bind_sim(lua_State* L) {
       {"check", guarded<l_check>},
       {"airports_named", guarded<l_airports_named>},
       {"airports_of_city", guarded<l_airports_of_city>},
+      {"airports_with_words", guarded<l_airports_with_words>},
       {"airports_beside_navaids", guarded<l_airports_beside_navaids>},
       {"airport_class", guarded<l_airport_class>},
       {"navaids_named", guarded<l_navaids_named>},

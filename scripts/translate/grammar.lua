@@ -1091,6 +1091,24 @@ local function same_family(a, b)
   return a == b or (ia and ib and ia.family ~= nil and ia.family == ib.family)
 end
 
+-- True when another flying aircraft opens a clause straight before the instruction word at i,
+-- after segment `last`'s ("AUA123 climb FL250; DLH6CK descend FL200", "... knots. DLH6CK speed 260",
+-- "AUA123 reduce 250 DLH6CK reduce 240"): after a punctuation mark, "and" or the previous instruction's
+-- value, the aircraft and then (fillers and a turn side aside) the word itself. The instruction is that
+-- aircraft's, never merged into the one before.
+function G:addressee_between(last, i)
+  local before = {}
+  for _, r in ipairs(self:refs_in(last.b, last.trig, "aircraft")) do before[r.name:upper()] = true end
+  local start = self:word(i - 1, "@left @right") and i - 1 or i
+  for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
+    local qs = self:quantities(last.trig, r.b)
+    local opens = self.t[r.b - 1] and (self.t[r.b - 1].kind == "punct" or self:word(r.b - 1, "and")
+      or (qs[1] ~= nil and qs[#qs].e == r.b))
+    if r.exists and opens and not before[r.name:upper()] and self:skip_fillers(r.e) == start then return true end
+  end
+  return false
+end
+
 function G:segments(b, e)
   local trig = {}
   for i = b, e - 1 do
@@ -1140,7 +1158,7 @@ function G:segments(b, e)
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
           and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
-        if (last.intent == tr.intent or alt_pair) and not this.single then
+        if (last.intent == tr.intent or alt_pair) and not this.single and not self:addressee_between(last, tr.pos) then
           if tr.intent == "alt" then last.intent = "alt" end
           merged = true
         end
@@ -1221,11 +1239,14 @@ function G:split_ellipsis(segs)
     local qs = (M.intents[s.intent] or {}).value and self:quantities(s.trig, e) or {}
     if #qs >= 2 then
       for _, r in ipairs(self:refs_in(qs[1].e, e, "aircraft")) do
-        -- only across "and" or a comma: "heading 160 DLH4AX 2" is no second instruction
+        -- only across "and", a comma, a semicolon or a full stop: "heading 160 DLH4AX 2" is no second
+        -- instruction
         local joined = false
         for k = qs[1].e, r.b - 1 do
           local t = self.t[k]
-          if (t.kind == "punct" and t.text == ",") or self:word(k, "and") then joined = true end
+          if (t.kind == "punct" and (t.text == "," or t.text == ";" or t.text == ".")) or self:word(k, "and") then
+            joined = true
+          end
         end
         if qs[#qs].b >= r.e and joined then
           cur.e = r.b
@@ -1868,6 +1889,8 @@ local function known_word(w)
   end
   return base:find("[%-/]") ~= nil
 end
+-- True when the word at i is one squawk knows (known_word): English of the lexicon's lists, no name.
+function G:known_word(i) return self.t[i] ~= nil and self.t[i].kind == "word" and known_word(self.t[i].text) end
 
 -- True when the negation or condition at i is carried by the parse (`kinds`: G:issued): a condition
 -- when a conditional command was issued, a switch word when something was switched off, a place passed
@@ -2199,12 +2222,18 @@ end
 -- ---- what squawk does not simulate ----
 
 -- True when one of `near` (words or typed numbers as written; "#number"
--- any number, "#waypoint" a waypoint name) is within 4 tokens after i.
+-- any number, "#waypoint" a waypoint name, "#frequency" a typed radio frequency of the VHF air
+-- band, 118.000 to 136.975 MHz with its decimals: "129.2") is within 4 tokens after i.
+local function frequency(t)
+  local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
+  return mhz and mhz >= 118 and mhz < 137
+end
 function G:near_any(i, near)
   for k = i + 1, math.min(#self.t, i + 4) do
     local t = self.t[k]
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
+          or (w == "#frequency" and frequency(t))
           or (w == "#waypoint" and #self:refs_in(k, k + 1, "waypoint") > 0)
           or ((t.kind == "word" or t.kind == "number") and t.text == w) then
         return true
@@ -2394,6 +2423,58 @@ M.not_understood = UNDERSTOOD
 -- An aircraft's id glued to a level or a shorthand value ("klm12fl240", "ezy45s250"), written
 -- apart; only the exact id of an aircraft that flies, followed by FL or a lexicon.shorthand prefix
 -- and digits.
+-- "AUA123 speed 250, DLH6CK the same", "..., DLH6CK too", "..., same for DLH6CK": another flying aircraft
+-- said with "same", "too", "likewise", "ditto" or "as well" after it, or after "same for" in a clause of
+-- its own, ending its clause, gets the request's instructions too. Returns the aircraft so named (their tokens used, never instructed by the parse).
+local SAME_AFTER = { same = true, too = true, likewise = true, ditto = true }
+function G:same_for()
+  local named = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and not r.false_start and r.b > 1 then
+      local opens = true
+      local k = self:skip_fillers(r.e, false)
+      local e = (self.t[k] and SAME_AFTER[self.t[k].text] and k + 1)
+        or (self:word(k, "as") and self:word(k + 1, "well") and k + 2) or nil
+      local b = r.b
+      if not e and self:word(r.b - 1, "for") and self:word(r.b - 2, "same likewise") then
+        b = self:word(r.b - 3, "the") and r.b - 3 or r.b - 2
+        opens = b > 1 and (self.t[b - 1].kind == "punct" or self:word(b - 1, "and"))
+        e = r.e
+      end
+      if e and opens and (not self.t[e] or self.t[e].kind == "punct") then
+        self:mark_used(b, e)
+        r.false_start = true
+        named[#named + 1] = r.name
+      end
+    end
+  end
+  return named
+end
+
+-- The request's commands given again to each aircraft of `named` (G:same_for): only when every command
+-- is one aircraft's, no creation; else asked about.
+function G:same_again(named)
+  if #named == 0 or self.ask or #self.out == 0 then return end
+  local id
+  for _, line in ipairs(self.out) do
+    local cmd, acid = line:match("^(%S+) (%S+)")
+    if cmd == "CRE" or not acid or not self:state(acid) or (id and acid ~= id) then
+      self.ask = string.format("Which instruction should %s get the same as? Please say it for %s.",
+        table.concat(named, " and "), table.concat(named, " and "))
+      return
+    end
+    id = acid
+  end
+  local out = {}
+  for _, line in ipairs(self.out) do out[#out + 1] = line end
+  for _, other in ipairs(named) do
+    for _, line in ipairs(self.out) do
+      out[#out + 1] = (line:gsub("^(%S+) " .. id:gsub("%p", "%%%0") .. "%f[%s%z]", "%1 " .. other))
+    end
+  end
+  self.out = out
+end
+
 local function unglued_ids(text, fleet)
   if #fleet == 0 then return text end
   local ids = {}
@@ -2440,6 +2521,8 @@ end
 -- id of an aircraft flying is written as that id; a maker or model said before it is the aircraft's
 -- own and is written into the id too when the aircraft is of that maker or model.
 local TYPE_WORDS  -- maker or model (lower case) -> {designator = true}
+local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
+  five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
   if not TYPE_WORDS then
@@ -2457,10 +2540,14 @@ local function spelled_registrations(text, fleet)
     if not lexicon.phonetic[w[1]] or k == 1 or not lexicon.phonetic[words[k - 1][1]] then
       local set = TYPE_WORDS[w[1]]
       local first = lexicon.phonetic[w[1]] and k or k + 1
-      local letters, last = "", nil
+      -- (after two letters or more, digits said or typed and more letters: "Hotel Kilo five zero one two"
+      -- is HK5012, "Delta Lima Hotel six Charlie Kilo" DLH6CK, when such an aircraft flies)
+      local letters, last, lead = "", nil, 0
       for j = first, #words do
         local l = lexicon.phonetic[words[j][1]]
+        if not l and lead >= 2 then l = SAID_DIGIT[words[j][1]] or words[j][1]:match("^%d+$") end
         if not l or (j > first and not text:sub(words[j - 1][3], words[j][2] - 1):match("^%s+$")) then break end
+        if l:match("^%a$") and lead == #letters then lead = lead + 1 end
         letters, last = letters .. l, j
       end
       for _, a in ipairs(#letters >= 4 and fleet or {}) do
@@ -2564,6 +2651,7 @@ function M.translate(text, world)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
   g:settle_callsigns()
+  local same = g:same_for()
   g:airline_types()
   g:airline_refs()
   g:type_refs()
@@ -2592,6 +2680,7 @@ function M.translate(text, world)
     end
   end
   if not g.ask then g:discretion_without_level() end
+  g:same_again(same)
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

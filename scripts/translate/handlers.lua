@@ -629,9 +629,10 @@ function m:settle_callsigns()
   local last  -- the last aircraft named before a correction
   for k, r in ipairs(self.refs) do
     local nxt = self.refs[k + 1]
-    if r.kind == "aircraft" and nxt and nxt.kind == "aircraft" and self:skip_fillers(r.e, true) == nxt.b
-        and (self:word_in(r.e, nxt.b, "@correction")
-          or (r.heard and airline_digits(r.heard.id) == airline_digits(nxt.name))) then
+    if r.kind == "aircraft" and nxt and nxt.kind == "aircraft"
+        and (self:callsign_taken_back(r.e, nxt.b)
+          or (self:skip_fillers(r.e, true) == nxt.b and r.heard
+            and airline_digits(r.heard.id) == airline_digits(nxt.name))) then
       r.false_start = true
     end
     if r.kind == "aircraft" and not r.false_start then
@@ -643,6 +644,28 @@ function m:settle_callsigns()
       last = r
     end
   end
+end
+
+-- True when the words between two callsigns, [b, e), take the first back: punctuation, fillers and
+-- lexicon.self_correction words only, holding a correction word or a self-correction marker ("KLM12
+-- correction KLM21", "DLH6CK, sorry, AUA123", "DLH6CK, no, I mean AUA123").
+local SELF_CORRECTION, SC_MARKER = {}, {}
+for _, w in ipairs(L.self_correction.words) do SELF_CORRECTION[w] = true end
+for _, w in ipairs(L.self_correction.markers) do SC_MARKER[w] = true end
+function m:callsign_taken_back(b, e)
+  local marked = false
+  for i = b, e - 1 do
+    local t = self.t[i]
+    if t.kind ~= "punct" and not t.filler then
+      if self:word(i, "@correction") or SC_MARKER[t.text]
+          or (self.t[i + 1] and i + 1 < e and SC_MARKER[t.text .. " " .. self.t[i + 1].text]) then
+        marked = true
+      elseif not SELF_CORRECTION[t.text] then
+        return false
+      end
+    end
+  end
+  return marked
 end
 
 -- True when the heard callsign's airline and digits are those of exactly one

@@ -746,6 +746,36 @@ return function(H, f, compass)
     return self:airport_named_in(b, e, within(beside), false, true)
   end
 
+  -- An airport said by a distinctive part of its navdata name, where an airport is meant ("destination
+  -- Midway" -> KMDW "CHICAGO MIDWAY INTL", "is going to Kennedy" -> KJFK "JOHN F KENNEDY INTL"): one to
+  -- three words in [b, e), the first no English squawk knows, that the name of exactly one airport
+  -- within lexicon.navaid_range_nm of `near` {lat, lon} [deg] holds (sim:airports_with_words); the
+  -- question names them when several do (at most 4), nil when none.
+  function m:airport_by_words(b, e, near)
+    local with = self.world.airports_with_words
+    if not with or not near.lat then return nil end
+    local function free(k) return k < e and self.t[k] and self.t[k].kind == "word" and self.t[k].alpha
+      and not self.u:used(k) and not self.t[k].keyword and not self.t[k].filler and not self.t[k].number_word end
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      if free(i) and not L.phonetic[self.t[i].text] and not self:known_word(i) then
+        for n = 3, 1, -1 do
+          local words = {}
+          for k = i, i + n - 1 do words[#words + 1] = free(k) and self.t[k].text or nil end
+          if #words == n and (n > 1 or #words[1] >= 4) then
+            local phrase = table.concat(words, " ")
+            local ids = with(phrase, near.lat, near.lon, L.navaid_range_nm)
+            local id = self:one_named(ids, "airport", phrase, 4)
+            if id then
+              self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
+              return id
+            end
+          end
+        end
+      end
+    end
+    return nil
+  end
+
   -- A phrase with a capitalised word beside it ("Point Reyes", "Amsterdam Schiphol") is part of a
   -- longer name: no airport is named by the phrase alone, unless "airport" follows it ("Beijing
   -- Capital airport": the word before is its city).
@@ -1414,6 +1444,11 @@ return function(H, f, compass)
     local spelled = spelled_airport(self, s)
     local near = spelled or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
+    -- (a part of a name only near the aircraft: "Madrid" anywhere is SKMA, in Colombia)
+    if not airport and #w == 0 and a then
+      near = self:airport_by_words(s.b, s.e, a)
+      airport = near
+    end
     -- an airport found by name only far from the aircraft ("London" from over the North Sea is CYXU, in
     -- Canada: the navdata names Heathrow HEATHROW; "Athens" from over Greece is KAHN, Georgia, ATHENS BEN
     -- EPPS): confirmed, never sent

@@ -95,6 +95,8 @@ return {
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
         -- a request granted, a report acknowledged ("Mach .84 approved", "position report received")
         "approved", "received",
+        -- a clearance given again in place of the one before ("recleared direct CAPER", "re-cleared FL250")
+        "recleared", "reclear",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
         "readback", "read-back", "incorrect", "said",
         -- radar identification stated to the pilot ("Budapest Radar, identified, descend FL130")
@@ -113,7 +115,9 @@ return {
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
         "after that", "after this", "at pilot's discretion", "at your discretion",
         -- the speaker holding the room a moment ("hang on, freeze it there")
-        "hang on", "bear with me" },
+        "hang on", "bear with me",
+        -- urgency, said with a negation ("descend FL150 without delay")
+        "without delay", "with no delay", "without any delay" },
     -- the ordinary accompaniments of instructions: verbs of changing a setting, participles that
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
@@ -126,7 +130,7 @@ return {
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
         "automatically", "manual", "manually",
-        "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
+        "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
         -- the margin a resolution keeps ("resolution margin factor 1.05")
@@ -155,7 +159,7 @@ return {
         "experiments" },
 
     -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
-    prefixes = { "co", "non", "pre", "semi", "sub", "multi" },
+    prefixes = { "co", "non", "pre", "semi", "sub", "multi", "re" },
     -- an air traffic unit or setting named by its place ("New York departure", "Boston approach",
     -- "Kennedy altimeter"): the one or two words before these are its place
     facilities = { "departure", "approach", "center", "centre", "tower", "ground", "radar", "control",
@@ -164,7 +168,10 @@ return {
     -- "climb without restriction", "until further advised"): the value is the instruction's, explained whole
     value_phrases = { "or greater", "or better", "or more", "or less", "or above", "or below", "at least",
         "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
-        "until further notice", "without restriction", "without restrictions" },
+        "until further notice", "without restriction", "without restrictions",
+        -- the same said with "till", without "further", or with the verb unbent ("until further advise")
+        "till further advised", "till further notice", "until advised", "till advised", "until further advise",
+        "till further advise", "until further instructions", "till further instructions" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
@@ -204,8 +211,9 @@ return {
                        vs = true, fl = true },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
+  -- (a turn side typed without its vowels, "turn lft heading 200", "hdg 120 rgt", is that side)
   shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", lft = "left",
-                rgt = "right", spd = "speed",
+                rgt = "right", rght = "right", spd = "speed",
                 hdg = "heading",
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
@@ -370,6 +378,9 @@ return {
       near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
     { what = "transponder codes", words = "transponder ident" },
     { what = "radio frequencies", words = "contact monitor frequency freq" },
+    -- a hand-off said with another verb before the frequency ("call Vienna on 129.2", "switch to approach
+    -- 119.1", "over to Wien 134.35", "go to 129.2")
+    { what = "radio frequencies", words = "call switch over go change", near = { "#frequency" } },
     { what = "approach clearances", words = "ils rnav rnp localizer localiser glideslope glidepath vor",
       near = { "approach", "established", "intercept", "cleared", "runway", "#number" } },
     { what = "approach clearances", words = "cleared clear",
@@ -378,6 +389,14 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
+    -- (flying each instruction as given) does not keep
+    { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
+      through = "speed level altitude" },
+    -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
+    -- runway squawk does not fly to
+    { what = "approaches to a runway", words = "vectors vectoring vector",
+      near = { "runway", "rwy", "ils", "final", "approach", "localizer", "localiser", "landing" } },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },
@@ -388,10 +407,10 @@ return {
     -- end of the request: the words in it describe the other aircraft, they instruct nobody
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
       to_end = true },
-    -- "report passing FL100", "report established": a report the pilot makes, no instruction
+    -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
-               "vacating", "when", "at" } },
+               "vacating", "when", "at", "steady" } },
     -- "turn right 15 degrees, report heading": after an instruction, the readback of what it set is a
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },

@@ -581,7 +581,8 @@ return function(intent, rule, words)
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
   rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
-  rule { "delete del remove rid kill rmv bin", "delete" }  -- ("bin it": British for delete)
+  -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
+  rule { "delete del remove rid kill rmv bin deleting removing", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route

@@ -424,6 +424,29 @@ TEST_CASE(
   CHECK((*db)->airport_class("NONE").empty());
 }
 
+TEST_CASE("navdata: an airport by words its name holds; words of a field's kind alone name none") {
+  auto db = NavDb::parse(
+      "KMDW, CHICAGO MIDWAY INTL, 41.786, -87.752, Large, 6059, US/IL,620\n"
+      "KDAL, DALLAS LOVE FLD, 32.847, -96.852, Large, 8800, US/TX,487\n"
+      "KPRC, ERNEST A LOVE FLD, 34.654, -112.42, Large, 7550, US/AZ,5045\n"
+      "KXYZ, SOMEWHERE COUNTY RGNL, 1.0, 1.0, Small\n",
+      "", "", "test");
+  REQUIRE(db.is_ok());
+  auto ids = [&](const char* words) {
+    std::vector<std::string> out;
+    for (const NavPoint* a : (*db)->airports_with_words(words)) out.push_back(a->id);
+    return out;
+  };
+  CHECK(ids("Midway") == std::vector<std::string>{"KMDW"});
+  CHECK(ids("chicago midway international") == std::vector<std::string>{"KMDW"});
+  CHECK(ids("Dallas Love Field") == std::vector<std::string>{"KDAL"});  // "Field" as written: FLD
+  CHECK(ids("love field") == std::vector<std::string>{"KDAL", "KPRC"});
+  CHECK(ids("midw").empty());  // whole words only
+  CHECK(ids("county regional").empty());
+  CHECK(ids("international").empty());
+  CHECK(ids("").empty());
+}
+
 TEST_CASE(
     "navdata: a city named by its navaids is the large airport within 10 NM of them, else the "
     "medium one") {

@@ -1233,7 +1233,8 @@ do
   check_eq(ut("KLM1276 climb FL310 not 300 speed 250"),
     "ASK I have ALT KLM1276 FL310 ; SPD KLM1276 250. What does '300' mean?")
   check_eq(ut("KLM1276 climb without restriction flight level three zero zero"), "ALT KLM1276 FL300")
-  check_eq(ut("KLM1276 climb FL300 without delay"), "ASK I have ALT KLM1276 FL300. What does 'without' mean?")
+  check_eq(ut("KLM1276 climb FL300 without a level off"), "ASK I have ALT KLM1276 FL300. What does 'without' mean?")
+  check_eq(ut("KLM1276 climb FL300 without delay"), "ALT KLM1276 FL300")  -- (urgency, as "expedite")
   -- an aircraft shown, its route shown with the callsign said in words; the clock
   check_eq(ut("show me KLM one two seven six"), "POS KLM1276")
   check_eq(ut("show me KLM one two seven six's route"), "LISTRTE KLM1276")
@@ -1642,8 +1643,9 @@ do
   check_eq(ex("Add an intruder for ICE44: TST9 A320 at 60.2 12.4 heading 090 FL90 280 kts"),
     "CRE TST9 A320 60.2 12.4 90 FL90 280")
   -- an aside that adds, negates or names a value, a place or another instruction is asked about
-  asked("NAX12 climb FL200 - ICE44 as well")
-  asked("NAX12 climb FL200, same for ICE44")
+  -- (another aircraft with "as well" or "same for" gets the instruction too: G:same_for)
+  check_eq(ex("NAX12 climb FL200 - ICE44 as well"), "ALT NAX12 FL200 ; ALT ICE44 FL200")
+  check_eq(ex("NAX12 climb FL200, same for ICE44"), "ALT NAX12 FL200 ; ALT ICE44 FL200")
   asked("NAX12 climb FL200 - and ICE44 descend")
   asked("NAX12 climb FL200 (not ICE44)")
   asked("NAX12 climb FL200 - don't let it level off")
@@ -1911,7 +1913,7 @@ do
   check_eq(ex("fast forward 2 minutes then I'll explain the display to the visitors"), "FF 120")
   check_eq(ex("set the sim rate to 3 for when we reconvene"), "DTMULT 3")
   asked("DAL889 climb FL240. Then N731RS.")
-  asked("DAL889 climb FL240. N731RS as well.")
+  check_eq(ex("DAL889 climb FL240. N731RS as well."), "ALT DAL889 FL240 ; ALT N731RS FL240")
   asked("fast forward 2 minutes then I'll climb DAL889")
   asked("cre SKW12 E175 42.2 -87.8 300 FL110 250 - the one at FL300")
   -- a type, maker or family said before the callsign of a flying aircraft of that type describes it
@@ -1964,4 +1966,97 @@ do
   check_eq(ex("GATEB arrival: create TST7 A320 at GATEA heading 100 FL230 270 kts"):match("^ASK I have CRE TST7 A320 GATEA"),
     "ASK I have CRE TST7 A320 GATEA")
   check_eq(ex("create TST8 A320 over GATEB heading 100 FL230 270 kts"), "CRE TST8 A320 GATEB 100 FL230 270")
+end
+
+-- Cycle 16, radiotelephony typed as heard: instructions for several aircraft in one line, each opened by
+-- its callsign after a semicolon, full stop, comma or "and", are each aircraft's (never one merged
+-- instruction, never a value moved to the other aircraft); "I'm deleting ..." is a deletion said as done
+do
+  local rt = squawk.sim.new()
+  for _, line in ipairs({ "CRE AUA123 A320 48.1 16.5 090 FL200 280", "CRE DLH6CK A320 48.3 16.2 180 FL240 300",
+      "CRE UAL1542 B738 47.9 16.8 270 FL180 260" }) do
+    check(rt:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = rt, mode = "offline" })) end
+  check_eq(ex("AUA123 climb FL250; DLH6CK descend FL200"), "ALT AUA123 FL250 ; ALT DLH6CK FL200")
+  check_eq(ex("Austrian 123 descend flight level one five zero. Lufthansa six charlie kilo climb flight level three one zero."),
+    "ALT AUA123 FL150 ; ALT DLH6CK FL310")
+  check_eq(ex("AUA123 speed 250 knots; DLH6CK speed 260 knots"), "SPD AUA123 250 ; SPD DLH6CK 260")
+  check_eq(ex("AUA123 reduce 250 kts; DLH6CK 260 kts"), "SPD AUA123 250 ; SPD DLH6CK 260")
+  check_eq(ex("AUA123 left heading 200 and I'm deleting United 1542 now"), "HDG AUA123 200 LEFT ; DEL UAL1542")
+  check_eq(ex("removing UAL1542"), "DEL UAL1542")
+  check_eq(ex("AUA123 reduce 250 DLH6CK reduce 240"), "SPD AUA123 250 ; SPD DLH6CK 240")
+  check_eq(ex("AUA123 left 200 DLH6CK right 100"), "HDG AUA123 200 LEFT ; HDG DLH6CK 100 RIGHT")
+  check_eq(ex("AUA123 climb unrestricted FL250"), "ALT AUA123 FL250")
+  -- a registration or callsign spelled in the phonetic alphabet with its digits said is that aircraft exactly
+  check(rt:exec("CRE HK5012 C208 48.0 16.0 180 13000 150"))
+  check_eq(ex("Hotel Kilo five zero one two, turn right heading two two zero"), "HDG HK5012 220 RIGHT")
+  check_eq(ex("hotel kilo 5012 descend 9000 feet"), "ALT HK5012 9000")
+  check_eq(ex("Delta Lima Hotel six Charlie Kilo descend FL150"), "ALT DLH6CK FL150")
+  check(ex("Hotel Kilo five zero one three, turn right heading two two zero"):find("^ASK") ~= nil)
+  check(rt:exec("DEL HK5012"))
+  -- a callsign taken back ("sorry", "no, I mean", "correction") is never instructed; two said plainly both are
+  check_eq(ex("DLH6CK, sorry, AUA123 descend FL150"), "ALT AUA123 FL150")
+  check_eq(ex("Lufthansa six charlie kilo, no, I mean Austrian 123, turn left heading 200"), "HDG AUA123 200 LEFT")
+  check_eq(ex("DLH6CK oh sorry AUA123 reduce speed 250"), "SPD AUA123 250")
+  check_eq(ex("DLH6CK and AUA123 descend FL150"), "ALT DLH6CK FL150 ; ALT AUA123 FL150")
+  -- radiotelephony's framing of a clearance carries nothing more: given again ("recleared"), urgent ("without
+  -- delay"), in force "till further advised" (and its variants); what a vector is for ("vectors for runway
+  -- 28") is named as not simulated beside the heading; a turn side typed without vowels is that side
+  check_eq(ex("Austrian 123 recleared flight level 250"), "ALT AUA123 FL250")
+  check_eq(ex("AUA123 re-cleared FL250"), "ALT AUA123 FL250")
+  check_eq(ex("AUA123 descend flight level 150 without delay"), "ALT AUA123 FL150")
+  check_eq(ex("DLH6CK maintain 280 knots or greater till further advised"), "SPD DLH6CK 280")
+  check_eq(ex("DLH6CK keep 280 knots until further advise"), "SPD DLH6CK 280")
+  local v = graph.translate("AUA123 turn right heading 330, vectors for runway two eight", { sim = rt, mode = "offline" })
+  check(said(v) == "HDG AUA123 330 RIGHT" and (v.note or ""):find("approaches to a runway", 1, true) ~= nil, said(v))
+  local st = graph.translate("AUA123 turn right heading 190, report steady", { sim = rt, mode = "offline" })
+  check(said(st) == "HDG AUA123 190 RIGHT" and (st.note or ""):find("position reports", 1, true) ~= nil, said(st))
+  local cr = graph.translate("AUA123 climb FL250, cancel speed restriction", { sim = rt, mode = "offline" })
+  check(said(cr) == "ALT AUA123 FL250" and (cr.note or ""):find("restrictions lifted", 1, true) ~= nil, said(cr))
+  check_eq(ex("AUA123 turn lft heading 200"), "HDG AUA123 200 LEFT")
+  check_eq(ex("dlh6ck hdg 120 rgt"), "HDG DLH6CK 120 RIGHT")
+  check(ex("AUA123 vectors heading 200 please, traffic"):find("approaches", 1, true) == nil)
+  -- a hand-off said with another verb before a frequency of the air band is named as not simulated
+  local h = graph.translate("AUA123 descend FL150, call Vienna on 129.2", { sim = rt, mode = "offline" })
+  check(said(h) == "ALT AUA123 FL150" and (h.note or ""):find("radio frequencies", 1, true) ~= nil, said(h))
+  check_eq(ex("AUA123 descend FL150 and switch to approach 119.1"), "ALT AUA123 FL150")
+  check(ex("AUA123 go to 250"):find("radio", 1, true) == nil)
+  -- another aircraft said with "same", "too", "as well" or after "same for" gets the instructions again;
+  -- where the request instructed several aircraft, which is asked
+  check_eq(ex("AUA123 reduce speed 250, DLH6CK the same"), "SPD AUA123 250 ; SPD DLH6CK 250")
+  check_eq(ex("AUA123 descend FL150 and reduce 250, same for Lufthansa six charlie kilo"),
+    "ALT AUA123 FL150 ; SPD AUA123 250 ; ALT DLH6CK FL150 ; SPD DLH6CK 250")
+  check_eq(ex("AUA123 turn left heading 200, DLH6CK too"), "HDG AUA123 200 LEFT ; HDG DLH6CK 200 LEFT")
+  check(ex("AUA123 FL150, DLH6CK FL160, UAL1542 same"):find("^ASK Which instruction should UAL1542") ~= nil)
+  check_eq(ex("AUA123 climb FL300, the same level as DLH6CK"), "ALT AUA123 FL300")
+  -- the same aircraft said again is one instruction; a callsign straight after a value, with no instruction
+  -- word after it, is still asked about
+  check_eq(ex("AUA123 climb, AUA123 climb FL250"), "ALT AUA123 FL250")
+  check_eq(ex("AUA123 speed 250 kts DLH6CK speed 260 kts"), "SPD AUA123 250 ; SPD DLH6CK 260")
+  check(ex("AUA123 turn right heading 160 DLH6CK 2"):find("^ASK") ~= nil)
+end
+
+-- an airport said by a distinctive part of its navdata name is the one airport near the aircraft whose name
+-- holds it ("Midway": CHICAGO MIDWAY INTL, "Kennedy": JOHN F KENNEDY INTL, "Love Field": DALLAS LOVE FLD);
+-- several are named in the question; none there (or a name that only says what kind of field) is asked about
+do
+  local us = squawk.sim.new()
+  if #us:airports_with_words("midway") >= 1 then
+    for _, line in ipairs({ "CRE ENY3410 E145 41.9 -87.9 090 9000 250", "CRE JBU615 A320 40.5 -73.5 090 9000 250",
+        "CRE SWA22 B737 32.5 -97.0 090 9000 250" }) do
+      check(us:exec(line))
+    end
+    local function ex(text) return said(graph.translate(text, { sim = us, mode = "offline" })) end
+    check_eq(ex("destination for Envoy 3410 is Midway"), "DEST ENY3410 KMDW")
+    check_eq(ex("jetblue six fifteen change destination to kennedy"), "DEST JBU615 KJFK")
+    check_eq(ex("JBU615 destination la guardia"), "DEST JBU615 KLGA")
+    check_eq(ex("Southwest 22 is going to Love Field"), "DEST SWA22 KDAL")
+    check(ex("ENY3410 destination Love Field"):find("^ASK") ~= nil)  -- Dallas is far from Chicago
+    check(ex("ENY3410 destination international"):find("^ASK") ~= nil)
+    check(ex("ENY3410 destination Ohare Midway"):find("^ASK") ~= nil)
+    check_eq(#us:airports_with_words("county regional"), 0)
+  else
+    print("skipped: airports by a part of their name need navdata (SQUAWK_NAVDATA)")
+  end
 end
