@@ -1291,11 +1291,14 @@ function G:self_corrected()
         self:mark_used(b, c)
         for k = b, c - 1 do self.noted[k] = true end
         a = c
-      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c)
+      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1
+                            or self:word(c, SC_ONLY) and c + 1 or c)
           and not self:word_in(a, c, "and also then") then
         -- another instruction said in its place ("direct TWEED... no, make it heading 200", "climb FL200,
-        -- no wait, descend FL90"): the last one before the run, from its instruction word, is taken back
-        -- ("climb FL200, sorry, and turn left": an instruction added, none taken back)
+        -- no wait, descend FL90", "..., sorry, I mean just turn to heading 250"): the last one before the
+        -- run, from its instruction word, is taken back ("climb FL200, sorry, and turn left": an
+        -- instruction added, none taken back)
+        if self:word(c, SC_ONLY) then c = c + 1 end
         self:mark_used(p, c)
         for k = p, c - 1 do self.noted[k] = true end
         local refs = {}

@@ -1236,7 +1236,9 @@ return function(H, f, compass)
     for k = s.b, s.e - 1 do
       local t = self.t[k]
       local wt = t.kind == "word" and L.waypoint_types[t.text]
-      local make_it = self:word(k - 1, "a an") and self:word(k - 2, "it") and self:word(k - 3, "make")
+      -- "make it a fix", "it is a fix", "which is a fix"
+      local make_it = self:word(k - 1, "a an") and (self:word(k - 2, "it") and self:word(k - 3, "make")
+        or self:word(k - 2, "is"))
       if wt and (make_it or self:preceded_by(k, 2, "as type")) then
         kind, kind_at = " " .. wt, k
         self:explain(k, k + 1)
@@ -1559,7 +1561,7 @@ return function(H, f, compass)
       self:explain(till, till + 1)
       for i = s.trig + 1, till - 1 do
         local t = self.t[i]
-        if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things") then
+        if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things the fast") then
           return self:need("For how long should the simulation fast-forward? Please give a time.")
         end
       end

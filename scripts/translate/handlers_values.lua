@@ -441,7 +441,8 @@ return function(H, f, wrap, compass)
         if not r then return self:need("What heading should " .. id .. " fly? I heard " .. f.int(hdg) .. ".") end
         hdg = r
       end
-    elseif rel and rel.turn == 0 and turn == 0 then
+    elseif rel and (rel.turn == 0 and turn == 0 or rel.to and rel.value <= 360) then
+      -- "to 200 degrees" names the heading, also after a way to turn ("turn right to 200 degrees")
       if not (rel.to or self:word_in(s.b, s.e, "heading")) then
         return self:need(string.format("Should %s turn left or right by %s degrees, or fly heading %s?", id,
           f.num(rel.value), f.num(rel.value)))

@@ -602,6 +602,12 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "fly to ALGOI directly": a waypoint (no airport) flown to directly, said after it
+  rule { "fly", "direct", next = "to", when = function(g, i)
+    local k = g:skip_fillers(i + 2)
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    return r ~= nil and not r.name:match("^%a%a%a%a$") and g:word(g:skip_fillers(r.e), "directly direct")
+  end }
   rule { "fly", "dest", next = "to" }
   rule { "origin departed departing orig", "orig" }
   rule { "lnav", "lnav" }
@@ -766,6 +772,14 @@ return function(intent, rule, words)
     local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
     return q ~= nil and q.b == k and q.kind == "time"
   end }
+  -- "run the simulation fast (until I say stop)": fast time with no end, FF (a rate or a duration said
+  -- with it is read above)
+  rule { "run", "ff", not_near = { 7, "real times faster x twice thrice" }, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    if g:word(k, "the") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "@sim it") then k = g:skip_fillers(k + 1) end
+    return g:word(k, "fast") and not g:word(k + 1, "forward time")
+  end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x twice thrice" } }
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
@@ -782,6 +796,8 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "slow slower faster speed multiplier rate")
       or g:word_in(i + 2, math.min(#g.t + 1, i + 7), "multiplier rate")
   end }
+  -- "back to normal speed, real time": real time said again beside a normal rate names that rate
+  rule { "real", false, next = "time", when = function(g, i) return g:preceded_by(i, 4, "normal") end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
