@@ -159,9 +159,11 @@ end
 local function know_all(v, seen)
   if type(v) == "string" then return know(v) end
   -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
-  -- keep, and lexicon.foreign_digits are digits only beside another: they account for no word)
+  -- keep, and lexicon.foreign_digits are digits only beside another; lexicon.city_airports are places,
+  -- accounted for only where one is read: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
-      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits then
+      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
+      or v == lexicon.city_airports then
     return
   end
   seen[v] = true

@@ -702,10 +702,16 @@ return function(H, f, compass)
     local named, city, class = self.world.airports_named, self.world.airports_of_city, self.world.airport_class
     if not named then return nil end
     local function within(list)
-      if near then return function(phrase) return list(phrase, near.lat, near.lon, L.navaid_range_nm) end end
+      -- (a city said by its English name is read as the navdata names it: lexicon.city_airports)
+      local function said(phrase, ...)
+        local ids = list(phrase, ...)
+        if #ids == 0 and L.city_airports[phrase] then ids = list(L.city_airports[phrase], ...) end
+        return ids
+      end
+      if near then return function(phrase) return said(phrase, near.lat, near.lon, L.navaid_range_nm) end end
       return function(phrase)
         local out = {}
-        for _, id in ipairs(list(phrase)) do
+        for _, id in ipairs(said(phrase)) do
           if not class or class(id) ~= "SMALL" then out[#out + 1] = id end
         end
         return out

@@ -415,6 +415,13 @@ return {
   id_words = { "named", "called", "callsign", "id" },
   -- words after an airport's name ("Beijing Capital airport")
   airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome" },
+  -- cities English names otherwise than the navdata, each with the name the navdata gives its one
+  -- large airport (its own language's name, or the airport's: "Munich" is MUNCHEN, "Vienna" SCHWECHAT);
+  -- cities of several large airports (Rome, Milan, London, Paris) are none of these: a name alone is asked
+  city_airports = { munich = "munchen", nuremberg = "nurnberg", cologne = "koln bonn", vienna = "schwechat",
+                    prague = "ruzyne", venice = "venezia tessera", lisbon = "lisboa", copenhagen = "kastrup",
+                    warsaw = "okecie", athens = "eleftherios venizelos", turin = "torino", florence = "firenze",
+                    naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
