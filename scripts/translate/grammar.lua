@@ -1331,6 +1331,8 @@ function G:parse(b, e)
       for c = #self.out, prev_out + 1, -1 do self.out[c] = nil end
     end
     self:taken_back(s)
+    -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
+    -- FL250": a level said as a condition after the speed or heading instructions it holds
     prev_out = #self.out
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.
@@ -1343,6 +1345,17 @@ function G:parse(b, e)
       self.last_cond = nil
       local n_before = #self.out
       local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
+      -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
+      -- FL250": a level said as a condition after the speed or heading instruction it holds
+      local held, cut
+      if (s.intent == "spd" or s.intent == "hdg") and not at then held, cut = self:trailing_level(s) end
+      local ids = held and self:acids(s) or {}
+      if #ids == 1 then
+        at = "ATALT " .. ids[1] .. " " .. handlers.format.alt(held.value, held.fl)
+        self:mark_used(cut, s.e)
+        for i = cut, s.e - 1 do self.noted[i] = true end
+        s = { b = s.b, e = cut, trig = s.trig, intent = s.intent }
+      end
       local spec = M.intents[s.intent]
       if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
       if not self.ask and #self.out > n_before then
@@ -1366,6 +1379,30 @@ function G:parse(b, e)
     end
   end
   self:direct_resumes_nav()
+end
+
+-- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /
+-- reaches / passes FL250 (please)" closing the segment; the level and where its words begin, or nil.
+function G:trailing_level(s)
+  local c = self:find_word(s.trig + 1, s.e, "when once")
+  if c >= s.e then return nil end
+  local cut = c
+  while cut - 1 > s.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "but only")) do cut = cut - 1 end
+  local q = self:quantities(c + 1, s.e)[1]
+  if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
+  local reached = false
+  for i = c + 1, q.b - 1 do
+    if self:word(i, "reaches reaching passes passing gets at") then reached = true
+    elseif not (self:word(i, "it he she they is to flight level") or self.t[i].filler
+                or #self:refs_in(i, i + 1, "aircraft") > 0) then
+      return nil
+    end
+  end
+  for i = q.e, s.e - 1 do
+    if not (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "please")) then return nil end
+  end
+  if not reached then return nil end
+  return q, cut
 end
 
 -- True when the word at i asks for a change in one direction ("go left then climb FL320", "go faster
