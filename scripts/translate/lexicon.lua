@@ -86,7 +86,9 @@ return {
         -- verbs of the speaker's own talk ("while I explain this")
         "explain", "brief", "talk", "discuss", "speak",
         -- an experimenter watching what a run does ("let's watch it", "see the effect")
-        "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens" },
+        "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens",
+        -- the study a run belongs to, told as its story ("it departed there in our story", "for my study")
+        "story", "study", "storyline", "narrative" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody" },
     -- radiotelephony courtesy
@@ -100,7 +102,9 @@ return {
         "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
         "tardes", "noches",
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
-        "mate", "kia", "ora", "howzit" },
+        "mate", "kia", "ora", "howzit",
+        -- the same courtesy in German ("Grüß Gott", "Entschuldigung", "danke", "bitte", "servus")
+        "entschuldigung", "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -127,7 +131,7 @@ return {
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
-        "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
+        "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing", "mountains", "mountain", "hills",
         -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")
         "reference", "boundary", "border", "corner", "corners", "edge", "centre", "center",
         -- states and settings a request names ("which method is active", "the scenario file", "ADS-B noise")
