@@ -771,6 +771,10 @@ return function(H, f, compass)
           if id then
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
             self:explain(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            -- (the name said again, "go to Stuttgart, so Stuttgart is its destination", is the same place)
+            for k = after, math.min(e, #self.t + 1) - 1 do
+              if self:word(k, t.text) and not self.u:used(k) then self:explain(k, k + 1) end
+            end
             return id
           end
         end
@@ -877,7 +881,10 @@ return function(H, f, compass)
     local k = b
     while k < math.min(e, #self.t + 1) do
       local r = self:refs_in(k, k + 1, "waypoint")[1]
-      if r then
+      -- ("the Walda VOR, WLD": a kind of navaid said after a name is no place of its own)
+      if r and self:word(r.b, "@navaid_kinds") and self.t[r.b - 1] and self.t[r.b - 1].raw:match("^%u%l") then
+        k = r.e
+      elseif r then
         out[#out + 1] = r
         k = r.e
       else
@@ -984,7 +991,7 @@ return function(H, f, compass)
       local airport = k == #rest and self:word(r.b - 1, "to into") and self:airport_meant(r.name:upper(), self:state(id))
       if airport and airport:match("^%a%a%a%a$") then
         return self:emit("DEST " .. id .. " " .. airport)
-      elseif self:word(r.b - 1, "then via and to") or (self.t[r.b - 1] or {}).text == "," then
+      elseif self:word(r.b - 1, "then via and to over") or (self.t[r.b - 1] or {}).text == "," then
         self:emit("ADDWPT " .. id .. " " .. r.name)
         last = r.e
       end

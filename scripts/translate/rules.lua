@@ -425,6 +425,11 @@ return function(intent, rule, words)
   end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+  -- "the Swiss should fly over ALGOI then KPT, please add these to its route", "fly over the Walda VOR, WLD,
+  -- could you add this": the places flown over, added where the request asks for them to be added
+  rule { "over", "addwpt", prev = { 2, "fly go" }, when = function(g, i)
+    return g:has_ref(i + 1, math.min(#g.t + 1, i + 6), "waypoint") and g:word_in(i + 1, #g.t + 1, "add append insert")
+  end }
   -- "define TGT2 at ... and send KL204 to it", "... and route UAL9 through it": the waypoint just
   -- defined joins the route
   rule { "send route take", "addwpt", when = function(g, i)
