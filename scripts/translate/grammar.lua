@@ -2351,7 +2351,9 @@ local SPOKEN_DIGITS = { oh = true }
 for w in pairs(NUMBER_WORDS) do SPOKEN_DIGITS[w] = true end
 for w in pairs(lexicon.phonetic) do SPOKEN_DIGITS[w] = true end  -- ("the Ryanair one Juliet Charlie")
 local AIRLINE_WORDS = {}
+-- (one-word telephonies, and one-word names an airline is known by: "the British one")
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
+for _, a in ipairs(names.common) do AIRLINE_WORDS[a[1]] = AIRLINE_WORDS[a[1]] or a[2] end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
