@@ -297,6 +297,13 @@ return function(intent, rule, words)
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
+  -- "fly towards Kempten", "turn the Lufthansa towards the Innsbruck airport", "fly in the direction of
+  -- STUDYB": the heading that points at a place (HDG's name: the bearing to it)
+  rule { "fly flies turn head steer", "hdg", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 6)
+    local k = g:find_word(i + 1, e, "towards toward direction")
+    return k < e and (not g:word(k, "direction") or g:word(k + 1, "of")) and not g:intent_at(k)
+  end }
   rule { "due", "hdg", next = "@compass" }
   rule { "go turn", "hdg", next = "@compass" }
   rule { "left right", "hdg", prev = { 1, "go bear then" } }  -- "go left then climb", "speed 250, then left": a turn
