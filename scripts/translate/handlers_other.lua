@@ -1120,11 +1120,27 @@ return function(H, f, compass)
     self:emit("PERF " .. model)
   end
 
+  -- The place a wind is at, said by its name or code after a place word ("at Salzburg", "over KPT",
+  -- "at Munich airport"): the ident (WIND and GETWIND take a place for lat, lon), or nil
+  local function wind_place(self, s)
+    for k = s.b, s.e - 1 do
+      local nx = self.t[k + 1]
+      if self:word(k, "at over near around above") and nx and nx.kind == "word" then
+        local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
+        if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
+        local id = self:place_by_name(k + 1, math.min(s.e, k + 4))
+        if id then return id end
+      end
+    end
+    return nil
+  end
+
   -- "GETWIND lat lon [alt]": the wind at a position (and level), shown
   function m:get_wind(s)
     local p = points(self, s.b, s.e)
-    if #p ~= 1 then return self:need("Where should I show the wind? Please give a latitude and longitude.") end
-    local cmd = "GETWIND " .. f.num(p[1][1]) .. " " .. f.num(p[1][2])
+    local place = #p == 0 and wind_place(self, s)
+    if #p ~= 1 and not place then return self:need("Where should I show the wind? Please give a latitude and longitude.") end
+    local cmd = "GETWIND " .. (place or (f.num(p[1][1]) .. " " .. f.num(p[1][2])))
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.kind == "alt" then
         cmd = cmd .. " " .. f.alt(self:take(q).value, q.fl)
@@ -1474,13 +1490,12 @@ return function(H, f, compass)
     for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
       if self:word(r.b, "@navaid_kinds") then kind_said = true else places[#places + 1] = r end
     end
-    if kind_said and #places == 0 and #self:refs_in(s.b, s.e, "aircraft") == 0 then
-      return self:need("Which navaid do you mean? Please give its identifier.")
-    end
-    if #self:refs_in(s.b, s.e, "aircraft") == 0 and #places > 0 then return self:emit("POS " .. places[1].name) end
-    -- an airport by its name ("where is Schiphol?")
-    local airport = #self:refs_in(s.b, s.e, "aircraft") == 0 and self:airport_by_name(s.trig + 1, s.e)
-    if airport then return self:emit("POS " .. airport) end
+    local no_aircraft = #self:refs_in(s.b, s.e, "aircraft") == 0
+    if no_aircraft and #places > 0 then return self:emit("POS " .. places[1].name) end
+    -- a place by its name ("where is Schiphol?", "where is Munich airport?", "where the Kempten VOR is")
+    local named = no_aircraft and self:place_by_name(s.b, s.e)
+    if named then return self:emit("POS " .. named) end
+    if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end
     -- "show me where TEST01 and TEST03 are": each aircraft named
     local ids = self:acids(s)
     if #ids > 1 then
@@ -1652,6 +1667,8 @@ return function(H, f, compass)
   function m:wind(s)
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig, self)
+    local place = not (lat and lon) and wind_place(self, s)
+    if place then lat, lon = place, "" end
     if not lat or not lon then return self:need("Where should the wind be? Please give a latitude and longitude.") end
     local alt, dir, spd
     for _, q in ipairs(qs) do
@@ -1676,8 +1693,8 @@ return function(H, f, compass)
     if not dir or not spd then
       return self:need("From which direction, and how strong in knots, should the wind blow?")
     end
-    self:emit(string.format("WIND %s %s%s %s %s", f.num(lat), f.num(lon), alt and " " .. f.alt(alt.value, alt.fl) or "",
-      f.num(dir.value), f.num(spd.value)))
+    self:emit(string.format("WIND %s%s %s %s", place or (f.num(lat) .. " " .. f.num(lon)),
+      alt and " " .. f.alt(alt.value, alt.fl) or "", f.num(dir.value), f.num(spd.value)))
   end
   function m:scenario(s)
     for i = s.b, s.e - 1 do
