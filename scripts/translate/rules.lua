@@ -620,6 +620,10 @@ return function(intent, rule, words)
     local r = g:refs_in(k, k + 1, "waypoint")[1]
     return r ~= nil and not r.name:match("^%a%a%a%a$") and g:word(g:skip_fillers(r.e), "directly direct")
   end }
+  -- ("fly to heading 045", "fly to flight level 200": a value, no place)
+  rule { "fly", false, next = "to", when = function(g, i)
+    return g:word(i + 2, "heading hdg flight fl level altitude speed") or g.t[i + 2] ~= nil and g.t[i + 2].kind == "number"
+  end }
   rule { "fly", "dest", next = "to" }
   rule { "origin departed departing orig", "orig" }
   rule { "lnav", "lnav" }
