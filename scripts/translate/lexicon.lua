@@ -243,7 +243,7 @@ return {
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
-  waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
+  waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
   articles_new = { "a", "an", "new", "second", "another" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
