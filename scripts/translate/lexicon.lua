@@ -127,6 +127,8 @@ return {
         "default", "restriction", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
+        -- an aircraft described by its size ("the small Cessna", "a big Boeing")
+        "small", "little", "big",
         -- the margin a resolution keeps ("resolution margin factor 1.05")
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
