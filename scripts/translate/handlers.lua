@@ -832,6 +832,8 @@ function m:at_altitude(s)
     end
   end
   if a >= s.trig then return nil end
+  -- ("fly at 30000 ft and heading 100": the level flown at, an instruction of its own, no condition)
+  if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(s.b, a) > 0 then return nil end
   if (s.intent == "maintain" or s.intent == "alt") and not self:word(a, "passing leaving reaching") then return nil end

@@ -206,6 +206,11 @@ return function(intent, rule, words)
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
+  -- "fly at 30000 ft with speed 290 and heading 100", "stay at FL300": the level flown at
+  rule { "fly flies stay remain cruise", "alt", next = "at", when = function(g, i)
+    local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and q.b == i + 2 and q.kind == "alt"
+  end }
   rule { "level", "alt", next = "off" }
   rule { "lower raise", "spd", near = { 4, "speed" } }
   rule { "lower raise", "alt" }

@@ -1814,6 +1814,14 @@ do
     "ADDWPT EZY9 TESTA ; ADDWPT EZY9 TESTB")
   check_eq(ex("please make the Lufthansa fly towards TESTB"), "HDG DLH5TX TESTB")
   check_eq(ex("the easyJet should turn left in the direction of TESTA"), "HDG EZY9 TESTA LEFT")
+  -- "fly at" a level is the level flown, no condition on what follows; "fly to heading" no destination
+  check_eq(ex("the easyJet should fly at 30000 ft and heading 090"), "ALT EZY9 30000 ; HDG EZY9 90")
+  check_eq(ex("please let the Lufthansa fly to heading 045"), "HDG DLH5TX 45")
+  check_eq(ex("please create two waypoints: WPA at 48.2 11.1 and WPB at 48.4 11.8"),
+    "DEFWPT WPA 48.2 11.1 ; DEFWPT WPB 48.4 11.8")
+  check_eq(ex("please create a small Cessna 172, N77AB, at 48.2 11.3 heading 090 at 3000 feet and 100 knots"),
+    "CRE N77AB C172 48.2 11.3 90 3000 100")
+  check(ex("set the speed of both Lufthansa planes to 240 knots"):find("^ASK Which two aircraft does 'both Lufthansa' mean") ~= nil)
   -- with the navdata: a city English names otherwise than the navdata ("Munich": MUNCHEN; "Vienna": its
   -- airport SCHWECHAT), in every command that takes a place; a name said again is the same place
   if #lab:airports_named("munchen") == 1 then
@@ -1823,6 +1831,10 @@ do
     check_eq(ex("the Lufthansa should go to Stuttgart, so Stuttgart is its destination"), "DEST DLH5TX EDDS")
     check_eq(ex("please turn the easyJet towards Munich airport"), "HDG EZY9 EDDM")
     check_eq(ex("the British Airways should fly over the Kempten VOR, KPT, please add it to its route"), "ADDWPT BAW77 KPT")
+    check_eq(ex("please make a wind from 250 degrees with 30 knots at Salzburg"), "WIND LOWS 250 30")
+    check_eq(ex("what is the wind at Linz airport at flight level 100?"), "GETWIND LOWL FL100")
+    check_eq(ex("where is Munich airport?"), "POS EDDM")
+    check_eq(ex("please tell me where the Kempten VOR is"), "POS KPT")
   else
     print("skipped: city names of airports need navdata (SQUAWK_NAVDATA)")
   end
