@@ -611,9 +611,12 @@ return function(intent, rule, words)
     local r = created and g:word(i + 2, "to") and g:refs_in(i + 3, i + 4, "waypoint")[1]
     return r and #r.name == 5  -- (a five-letter fix; "send it to JFK" names a destination)
   end }
-  -- "fly to TEST1": a waypoint the simulation knows is flown to directly; other places are destinations
+  -- "fly to TEST1", "fly to our waypoint STUDYA": a waypoint the simulation knows is flown to directly;
+  -- other places are destinations
   rule { "fly", "direct", next = "to", when = function(g, i)
-    local t = g.t[i + 2]
+    local k = i + 2
+    while g:word(k, "the our my a @waypoint_nouns point") do k = k + 1 end
+    local t = g.t[k]
     for _, w in ipairs(g.world.waypoints or {}) do
       if t and w:upper() == t.raw:upper() then return true end
     end

@@ -1802,6 +1802,7 @@ do
   check_eq(ex("run the sim fast for five minutes"), "FF 300")
   check_eq(ex("switch the simulation back to normal speed, real time please"), "DTMULT 1")
   check_eq(ex("the Lufthansa should fly to TESTA directly"), "ADDWPT DLH5TX TESTA ; DIRECT DLH5TX TESTA")
+  check_eq(ex("the Lufthansa should fly to our waypoint TESTB"), "ADDWPT DLH5TX TESTB ; DIRECT DLH5TX TESTB")
   check_eq(ex("the easyJet should climb to FL260 and then go directly to TESTB? Sorry, I mean just turn to heading 300."),
     "ALT EZY9 FL260 ; HDG EZY9 300")
   check_eq(ex("the Lufthansa should slow to 250 knots once it reaches flight level 150"), "ATALT DLH5TX FL150 SPD DLH5TX 250")
