@@ -1045,9 +1045,11 @@ function G:condition()
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "plain" and rest == q.e then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     -- "when BAW123 is 20 miles from LEKKO, ...": ATDIST [NM]
-    local r = q.kind == "dist" and self:word(q.e, "from of to before")
-      and self:refs_in(self:skip_fillers(q.e + 1), self:skip_fillers(q.e + 1) + 1, "waypoint")[1]
-    if r then return "ATDIST " .. self.subject .. " " .. r.name .. " " .. f.num(q.value), rest end
+    local from = q.kind == "dist" and self:word(q.e, "from of to before") and self:skip_fillers(q.e + 1)
+    local r = from and self:refs_in(from, from + 1, "waypoint")[1]
+    -- ("when the Swiss is 10 miles from Munich airport": a place said by its name, near the aircraft)
+    local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject)))
+    if place then return "ATDIST " .. self.subject .. " " .. place .. " " .. f.num(q.value), rest end
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, rest

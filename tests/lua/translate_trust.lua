@@ -1835,6 +1835,8 @@ do
     check_eq(ex("please make a wind from 250 degrees with 30 knots at Salzburg"), "WIND LOWS 250 30")
     check_eq(ex("what is the wind at Linz airport at flight level 100?"), "GETWIND LOWL FL100")
     check_eq(ex("where is Munich airport?"), "POS EDDM")
+    check_eq(ex("when the easyJet is 15 miles from Munich airport, please let it descend to FL120"),
+      "ATDIST EZY9 EDDM 15 ALT EZY9 FL120")
     check_eq(ex("please tell me where the Kempten VOR is"), "POS KPT")
   else
     print("skipped: city names of airports need navdata (SQUAWK_NAVDATA)")
