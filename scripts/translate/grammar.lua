@@ -160,10 +160,11 @@ local function know_all(v, seen)
   if type(v) == "string" then return know(v) end
   -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
   -- keep, lexicon.foreign_digits are digits only beside another, and lexicon.atc_units name a station only
-  -- in the addressing position: they account for no word)
+  -- in the addressing position; lexicon.city_airports are places,
+  -- accounted for only where one is read: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
-      or v == lexicon.atc_units then
+      or v == lexicon.atc_units or v == lexicon.city_airports then
     return
   end
   seen[v] = true
@@ -1077,9 +1078,11 @@ function G:condition()
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "plain" and rest == q.e then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     -- "when BAW123 is 20 miles from LEKKO, ...": ATDIST [NM]
-    local r = q.kind == "dist" and self:word(q.e, "from of to before")
-      and self:refs_in(self:skip_fillers(q.e + 1), self:skip_fillers(q.e + 1) + 1, "waypoint")[1]
-    if r then return "ATDIST " .. self.subject .. " " .. r.name .. " " .. f.num(q.value), rest end
+    local from = q.kind == "dist" and self:word(q.e, "from of to before") and self:skip_fillers(q.e + 1)
+    local r = from and self:refs_in(from, from + 1, "waypoint")[1]
+    -- ("when the Swiss is 10 miles from Munich airport": a place said by its name, near the aircraft)
+    local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject)))
+    if place then return "ATDIST " .. self.subject .. " " .. place .. " " .. f.num(q.value), rest end
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, rest
@@ -1365,8 +1368,10 @@ function G:self_corrected()
       elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1 or c)
           and not self:word_in(a, c, "and also then") then
         -- another instruction said in its place ("direct TWEED... no, make it heading 200", "climb FL200,
-        -- no wait, descend FL90"): the last one before the run, from its instruction word, is taken back
-        -- ("climb FL200, sorry, and turn left": an instruction added, none taken back)
+        -- no wait, descend FL90", "..., sorry, I mean just turn to heading 250"): the last one before the
+        -- run, from its instruction word, is taken back ("climb FL200, sorry, and turn left": an
+        -- instruction added, none taken back)
+        if self:word(c, SC_ONLY) then c = c + 1 end
         self:mark_used(p, c)
         for k = p, c - 1 do self.noted[k] = true end
         local refs = {}
@@ -1397,6 +1402,8 @@ function G:parse(b, e)
       for c = #self.out, prev_out + 1, -1 do self.out[c] = nil end
     end
     self:taken_back(s)
+    -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
+    -- FL250": a level said as a condition after the speed or heading instructions it holds
     prev_out = #self.out
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.
@@ -1409,6 +1416,17 @@ function G:parse(b, e)
       self.last_cond = nil
       local n_before = #self.out
       local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
+      -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
+      -- FL250": a level said as a condition after the speed or heading instruction it holds
+      local held, cut
+      if (s.intent == "spd" or s.intent == "hdg") and not at then held, cut = self:trailing_level(s) end
+      local ids = held and self:acids(s) or {}
+      if #ids == 1 then
+        at = "ATALT " .. ids[1] .. " " .. handlers.format.alt(held.value, held.fl)
+        self:mark_used(cut, s.e)
+        for i = cut, s.e - 1 do self.noted[i] = true end
+        s = { b = s.b, e = cut, trig = s.trig, intent = s.intent }
+      end
       local spec = M.intents[s.intent]
       if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
       if not self.ask and #self.out > n_before then
@@ -1432,6 +1450,30 @@ function G:parse(b, e)
     end
   end
   self:direct_resumes_nav()
+end
+
+-- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /
+-- reaches / passes FL250 (please)" closing the segment; the level and where its words begin, or nil.
+function G:trailing_level(s)
+  local c = self:find_word(s.trig + 1, s.e, "when once")
+  if c >= s.e then return nil end
+  local cut = c
+  while cut - 1 > s.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "but only")) do cut = cut - 1 end
+  local q = self:quantities(c + 1, s.e)[1]
+  if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
+  local reached = false
+  for i = c + 1, q.b - 1 do
+    if self:word(i, "reaches reaching passes passing gets at") then reached = true
+    elseif not (self:word(i, "it he she they is to flight level") or self.t[i].filler
+                or #self:refs_in(i, i + 1, "aircraft") > 0) then
+      return nil
+    end
+  end
+  for i = q.e, s.e - 1 do
+    if not (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "please")) then return nil end
+  end
+  if not reached then return nil end
+  return q, cut
 end
 
 -- True when the word at i asks for a change in one direction ("go left then climb FL320", "go faster
@@ -2568,7 +2610,9 @@ local SPOKEN_DIGITS = { oh = true }
 for w in pairs(NUMBER_WORDS) do SPOKEN_DIGITS[w] = true end
 for w in pairs(lexicon.phonetic) do SPOKEN_DIGITS[w] = true end  -- ("the Ryanair one Juliet Charlie")
 local AIRLINE_WORDS = {}
+-- (one-word telephonies, and one-word names an airline is known by: "the British one")
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
+for _, a in ipairs(names.common) do AIRLINE_WORDS[a[1]] = AIRLINE_WORDS[a[1]] or a[2] end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end

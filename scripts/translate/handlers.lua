@@ -189,7 +189,18 @@ function m:acids(s)
   if #ids == 0 then take(s.b, s.trig) end
   self:confirm_callsigns(s)
   -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" names the two aircraft instructed before
-  if #ids == 0 and self:word_in(s.b, s.e, "both") then
+  -- ("both Lufthansa planes", "both the easyJets": the two aircraft of the airline named after it, when
+  -- exactly two of it fly)
+  local both = self:find_word(s.b, s.e, "both")
+  local icao, ae, codes
+  if both < s.e then icao, ae, codes = self:airline_at(self:word(both + 1, "the") and both + 2 or both + 1) end
+  local pair = icao and self:airline_fleet(icao, codes) or {}
+  if icao and #pair ~= 2 then
+    self:need(string.format("Which two aircraft does 'both %s' mean? Please give their callsigns.", self:raw(both + 1, ae)))
+  elseif #pair == 2 then
+    self:explain(both, ae)
+    ids = pair
+  elseif #ids == 0 and self:word_in(s.b, s.e, "both") then
     local named = {}
     for _, r in ipairs(self:refs_in(1, s.b, "aircraft")) do
       if r.exists and not seen[r.name] and not r.false_start and not self:as_context(r.b) and not self:in_reason(r.b) then
@@ -876,6 +887,8 @@ function m:at_altitude(s)
     end
   end
   if a >= s.trig then return nil end
+  -- ("fly at 30000 ft and heading 100": the level flown at, an instruction of its own, no condition)
+  if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(s.b, a) > 0 then return nil end
   if (s.intent == "maintain" or s.intent == "alt") and not self:word(a, "passing leaving reaching") then return nil end

@@ -726,10 +726,16 @@ return function(H, f, compass)
     local named, city, class = self.world.airports_named, self.world.airports_of_city, self.world.airport_class
     if not named then return nil end
     local function within(list)
-      if near then return function(phrase) return list(phrase, near.lat, near.lon, L.navaid_range_nm) end end
+      -- (a city said by its English name is read as the navdata names it: lexicon.city_airports)
+      local function said(phrase, ...)
+        local ids = list(phrase, ...)
+        if #ids == 0 and L.city_airports[phrase] then ids = list(L.city_airports[phrase], ...) end
+        return ids
+      end
+      if near then return function(phrase) return said(phrase, near.lat, near.lon, L.navaid_range_nm) end end
       return function(phrase)
         local out = {}
-        for _, id in ipairs(list(phrase)) do
+        for _, id in ipairs(said(phrase)) do
           if not class or class(id) ~= "SMALL" then out[#out + 1] = id end
         end
         return out
@@ -819,6 +825,10 @@ return function(H, f, compass)
           if id then
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
             self:explain(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
+            -- (the name said again, "go to Stuttgart, so Stuttgart is its destination", is the same place)
+            for k = after, math.min(e, #self.t + 1) - 1 do
+              if self:word(k, t.text) and not self.u:used(k) then self:explain(k, k + 1) end
+            end
             return id
           end
         end
@@ -964,7 +974,10 @@ return function(H, f, compass)
     local k = b
     while k < math.min(e, #self.t + 1) do
       local r = self:refs_in(k, k + 1, "waypoint")[1]
-      if r then
+      -- ("the Walda VOR, WLD": a kind of navaid said after a name is no place of its own)
+      if r and self:word(r.b, "@navaid_kinds") and self.t[r.b - 1] and self.t[r.b - 1].raw:match("^%u%l") then
+        k = r.e
+      elseif r then
         out[#out + 1] = r
         k = r.e
       else
@@ -1088,7 +1101,7 @@ return function(H, f, compass)
       local airport = k == #rest and self:word(r.b - 1, "to into") and self:airport_meant(r.name:upper(), self:state(id))
       if airport and airport:match("^%a%a%a%a$") then
         return self:emit("DEST " .. id .. " " .. airport)
-      elseif self:word(r.b - 1, "then via and to") or (self.t[r.b - 1] or {}).text == "," then
+      elseif self:word(r.b - 1, "then via and to over") or (self.t[r.b - 1] or {}).text == "," then
         self:emit("ADDWPT " .. id .. " " .. r.name)
         last = r.e
       end
@@ -1217,11 +1230,27 @@ return function(H, f, compass)
     self:emit("PERF " .. model)
   end
 
+  -- The place a wind is at, said by its name or code after a place word ("at Salzburg", "over KPT",
+  -- "at Munich airport"): the ident (WIND and GETWIND take a place for lat, lon), or nil
+  local function wind_place(self, s)
+    for k = s.b, s.e - 1 do
+      local nx = self.t[k + 1]
+      if self:word(k, "at over near around above") and nx and nx.kind == "word" then
+        local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
+        if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
+        local id = self:place_by_name(k + 1, math.min(s.e, k + 4))
+        if id then return id end
+      end
+    end
+    return nil
+  end
+
   -- "GETWIND lat lon [alt]": the wind at a position (and level), shown
   function m:get_wind(s)
     local p = points(self, s.b, s.e)
-    if #p ~= 1 then return self:need("Where should I show the wind? Please give a latitude and longitude.") end
-    local cmd = "GETWIND " .. f.num(p[1][1]) .. " " .. f.num(p[1][2])
+    local place = #p == 0 and wind_place(self, s)
+    if #p ~= 1 and not place then return self:need("Where should I show the wind? Please give a latitude and longitude.") end
+    local cmd = "GETWIND " .. (place or (f.num(p[1][1]) .. " " .. f.num(p[1][2])))
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.kind == "alt" then
         cmd = cmd .. " " .. f.alt(self:take(q).value, q.fl)
@@ -1346,7 +1375,9 @@ return function(H, f, compass)
     for k = s.b, s.e - 1 do
       local t = self.t[k]
       local wt = t.kind == "word" and L.waypoint_types[t.text]
-      local make_it = self:word(k - 1, "a an") and self:word(k - 2, "it") and self:word(k - 3, "make")
+      -- "make it a fix", "it is a fix", "which is a fix"
+      local make_it = self:word(k - 1, "a an") and (self:word(k - 2, "it") and self:word(k - 3, "make")
+        or self:word(k - 2, "is"))
       if wt and (make_it or self:preceded_by(k, 2, "as type")) then
         kind, kind_at = " " .. wt, k
         self:explain(k, k + 1)
@@ -1576,13 +1607,12 @@ return function(H, f, compass)
     for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
       if self:word(r.b, "@navaid_kinds") then kind_said = true else places[#places + 1] = r end
     end
-    if kind_said and #places == 0 and #self:refs_in(s.b, s.e, "aircraft") == 0 then
-      return self:need("Which navaid do you mean? Please give its identifier.")
-    end
-    if #self:refs_in(s.b, s.e, "aircraft") == 0 and #places > 0 then return self:emit("POS " .. places[1].name) end
-    -- an airport by its name ("where is Schiphol?")
-    local airport = #self:refs_in(s.b, s.e, "aircraft") == 0 and self:airport_by_name(s.trig + 1, s.e)
-    if airport then return self:emit("POS " .. airport) end
+    local no_aircraft = #self:refs_in(s.b, s.e, "aircraft") == 0
+    if no_aircraft and #places > 0 then return self:emit("POS " .. places[1].name) end
+    -- a place by its name ("where is Schiphol?", "where is Munich airport?", "where the Kempten VOR is")
+    local named = no_aircraft and self:place_by_name(s.b, s.e)
+    if named then return self:emit("POS " .. named) end
+    if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end
     -- "show me where TEST01 and TEST03 are": each aircraft named
     local ids = self:acids(s)
     if #ids > 1 then
@@ -1676,7 +1706,7 @@ return function(H, f, compass)
       self:explain(till, till + 1)
       for i = s.trig + 1, till - 1 do
         local t = self.t[i]
-        if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things") then
+        if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things the fast") then
           return self:need("For how long should the simulation fast-forward? Please give a time.")
         end
       end
@@ -1754,6 +1784,8 @@ return function(H, f, compass)
   function m:wind(s)
     local qs = self:quantities(s.b, s.e)
     local lat, lon = position(qs, s.trig, self)
+    local place = not (lat and lon) and wind_place(self, s)
+    if place then lat, lon = place, "" end
     if not lat or not lon then return self:need("Where should the wind be? Please give a latitude and longitude.") end
     local alt, dir, spd
     for _, q in ipairs(qs) do
@@ -1778,8 +1810,8 @@ return function(H, f, compass)
     if not dir or not spd then
       return self:need("From which direction, and how strong in knots, should the wind blow?")
     end
-    self:emit(string.format("WIND %s %s%s %s %s", f.num(lat), f.num(lon), alt and " " .. f.alt(alt.value, alt.fl) or "",
-      f.num(dir.value), f.num(spd.value)))
+    self:emit(string.format("WIND %s%s %s %s", place or (f.num(lat) .. " " .. f.num(lon)),
+      alt and " " .. f.alt(alt.value, alt.fl) or "", f.num(dir.value), f.num(spd.value)))
   end
   function m:scenario(s)
     for i = s.b, s.e - 1 do

@@ -411,6 +411,15 @@ return function(H, f, wrap, compass)
     local id = ids[1]
     local now = self:state(id)
     local refs = self:refs_in(s.b, s.e, "aircraft")
+    -- the place said after "towards" / "in the direction of" (a waypoint, or a place by its name)
+    local toward
+    local tw = self:find_word(s.b, s.e, "towards toward direction")
+    if not abs and not rel and tw < s.e and (not self:word(tw, "direction") or self:word(tw + 1, "of")) then
+      local at = self:word(tw, "direction") and tw + 2 or tw + 1
+      local r = self:refs_in(at, math.min(s.e, at + 3), "waypoint")[1]
+      if r then self:explain(tw, r.e) end
+      toward = r and r.name:upper() or self:place_by_name(at, s.e, now)
+    end
     local hdg, offset  -- offset: degrees from each aircraft's present heading
     if abs and (abs.kind == "heading" or not (rel and rel.b < abs.b and not correction)) then
       hdg = abs.value
@@ -441,7 +450,8 @@ return function(H, f, wrap, compass)
         if not r then return self:need("What heading should " .. id .. " fly? I heard " .. f.int(hdg) .. ".") end
         hdg = r
       end
-    elseif rel and rel.turn == 0 and turn == 0 then
+    elseif rel and (rel.turn == 0 and turn == 0 or rel.to and rel.value <= 360) then
+      -- "to 200 degrees" names the heading, also after a way to turn ("turn right to 200 degrees")
       if not (rel.to or self:word_in(s.b, s.e, "heading")) then
         return self:need(string.format("Should %s turn left or right by %s degrees, or fly heading %s?", id,
           f.num(rel.value), f.num(rel.value)))
@@ -454,6 +464,10 @@ return function(H, f, wrap, compass)
       offset = dir * rel.value
     elseif named then
       hdg = named
+    elseif toward then
+      -- "towards Kempten", "in the direction of Munich airport": HDG's name, the bearing to that place
+      for _, a in ipairs(ids) do self:emit("HDG " .. a .. " " .. toward .. (turn < 0 and " LEFT" or turn > 0 and " RIGHT" or "")) end
+      return
     elseif self:word_in(s.b, s.e, "@turn_around") then
       if not now then return self:need("What is the current heading of " .. id .. "?") end
       -- (a reversal with no way said: either way is as short, and the way matters to traffic)

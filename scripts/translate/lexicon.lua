@@ -87,7 +87,9 @@ return {
         -- verbs of the speaker's own talk ("while I explain this")
         "explain", "brief", "talk", "discuss", "speak",
         -- an experimenter watching what a run does ("let's watch it", "see the effect")
-        "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens" },
+        "watch", "observe", "effect", "effects", "result", "results", "outcome", "happens",
+        -- the study a run belongs to, told as its story ("it departed there in our story", "for my study")
+        "story", "study", "storyline", "narrative" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody" },
     -- radiotelephony courtesy
@@ -105,7 +107,9 @@ return {
         "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
         "tardes", "noches",
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
-        "mate", "kia", "ora", "howzit" },
+        "mate", "kia", "ora", "howzit",
+        -- the same courtesy in German ("Grüß Gott", "Entschuldigung", "danke", "bitte", "servus")
+        "entschuldigung", "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -133,12 +137,14 @@ return {
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
+        -- an aircraft described by its size ("the small Cessna", "a big Boeing")
+        "small", "little", "big",
         -- the margin a resolution keeps ("resolution margin factor 1.05")
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
         "danger", "restricted", "prohibited",
-        "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing",
+        "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing", "mountains", "mountain", "hills",
         -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")
         "reference", "boundary", "border", "corner", "corners", "edge", "centre", "center",
         -- states and settings a request names ("which method is active", "the scenario file", "ADS-B noise")
@@ -256,7 +262,7 @@ return {
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
-  waypoint_nouns = { "waypoint", "wpt", "wp", "fix" },
+  waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
   articles_new = { "a", "an", "new", "second", "another" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
@@ -448,6 +454,13 @@ return {
       "swanwick", "london", "manchester", "brest", "reims", "langen", "rhein", "karlsruhe", "padova", "bodo",
       "canarias", "moncton", "montreal", "edmonton", "anchorage", "oakland", "sondrestrom" },
   airport_nouns = { "airport", "international", "intl", "airfield", "aerodrome" },
+  -- cities English names otherwise than the navdata, each with the name the navdata gives its one
+  -- large airport (its own language's name, or the airport's: "Munich" is MUNCHEN, "Vienna" SCHWECHAT);
+  -- cities of several large airports (Rome, Milan, London, Paris) are none of these: a name alone is asked
+  city_airports = { munich = "munchen", nuremberg = "nurnberg", cologne = "koln bonn", vienna = "schwechat",
+                    prague = "ruzyne", venice = "venezia tessera", lisbon = "lisboa", copenhagen = "kastrup",
+                    warsaw = "okecie", athens = "eleftherios venizelos", turin = "torino", florence = "firenze",
+                    naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")

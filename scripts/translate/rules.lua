@@ -234,6 +234,11 @@ return function(intent, rule, words)
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
+  -- "fly at 30000 ft with speed 290 and heading 100", "stay at FL300": the level flown at
+  rule { "fly flies stay remain cruise", "alt", next = "at", when = function(g, i)
+    local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and q.b == i + 2 and q.kind == "alt"
+  end }
   rule { "level", "alt", next = "off" }
   rule { "lower raise", "spd", near = { 4, "speed" } }
   rule { "lower raise", "alt" }
@@ -325,6 +330,13 @@ return function(intent, rule, words)
   rule { "left right", "hdg", next = "by", not_prev = { 2, "turn" }, when = function(g, i) return g:number_at(i + 2) end }
   rule { "left right", "hdg", next = "onto", when = function(g, i) return g:number_at(i + 2) end }  -- "round left onto 290"
   rule { "point fly towards toward head send steer face facing", "hdg", near = { 4, "@compass" } }
+  -- "fly towards Kempten", "turn the Lufthansa towards the Innsbruck airport", "fly in the direction of
+  -- STUDYB": the heading that points at a place (HDG's name: the bearing to it)
+  rule { "fly flies turn head steer", "hdg", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 6)
+    local k = g:find_word(i + 1, e, "towards toward direction")
+    return k < e and (not g:word(k, "direction") or g:word(k + 1, "of")) and not g:intent_at(k)
+  end }
   rule { "due", "hdg", next = "@compass" }
   rule { "go turn", "hdg", next = "@compass" }
   rule { "left right", "hdg", prev = { 1, "go bear then" } }  -- "go left then climb", "speed 250, then left": a turn
@@ -458,6 +470,11 @@ return function(intent, rule, words)
   end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
+  -- "the Swiss should fly over ALGOI then KPT, please add these to its route", "fly over the Walda VOR, WLD,
+  -- could you add this": the places flown over, added where the request asks for them to be added
+  rule { "over", "addwpt", prev = { 2, "fly go" }, when = function(g, i)
+    return g:has_ref(i + 1, math.min(#g.t + 1, i + 6), "waypoint") and g:word_in(i + 1, #g.t + 1, "add append insert")
+  end }
   -- "define TGT2 at ... and send KL204 to it", "... and route UAL9 through it": the waypoint just
   -- defined joins the route
   rule { "send route take", "addwpt", when = function(g, i)
@@ -646,13 +663,26 @@ return function(intent, rule, words)
     local r = created and g:word(i + 2, "to") and g:refs_in(i + 3, i + 4, "waypoint")[1]
     return r and #r.name == 5  -- (a five-letter fix; "send it to JFK" names a destination)
   end }
-  -- "fly to TEST1": a waypoint the simulation knows is flown to directly; other places are destinations
+  -- "fly to TEST1", "fly to our waypoint STUDYA": a waypoint the simulation knows is flown to directly;
+  -- other places are destinations
   rule { "fly", "direct", next = "to", when = function(g, i)
-    local t = g.t[i + 2]
+    local k = i + 2
+    while g:word(k, "the our my a @waypoint_nouns point") do k = k + 1 end
+    local t = g.t[k]
     for _, w in ipairs(g.world.waypoints or {}) do
       if t and w:upper() == t.raw:upper() then return true end
     end
     return false
+  end }
+  -- "fly to ALGOI directly": a waypoint (no airport) flown to directly, said after it
+  rule { "fly", "direct", next = "to", when = function(g, i)
+    local k = g:skip_fillers(i + 2)
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    return r ~= nil and not r.name:match("^%a%a%a%a$") and g:word(g:skip_fillers(r.e), "directly direct")
+  end }
+  -- ("fly to heading 045", "fly to flight level 200": a value, no place)
+  rule { "fly", false, next = "to", when = function(g, i)
+    return g:word(i + 2, "heading hdg flight fl level altitude speed") or g.t[i + 2] ~= nil and g.t[i + 2].kind == "number"
   end }
   rule { "fly", "dest", next = "to" }
   rule { "origin departed departing orig", "orig" }
@@ -828,6 +858,14 @@ return function(intent, rule, words)
     local q = g:quantities(k, math.min(#g.t + 1, k + 3))[1]
     return q ~= nil and q.b == k and q.kind == "time"
   end }
+  -- "run the simulation fast (until I say stop)": fast time with no end, FF (a rate or a duration said
+  -- with it is read above)
+  rule { "run", "ff", not_near = { 7, "real times faster x twice thrice" }, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    if g:word(k, "the") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "@sim it") then k = g:skip_fillers(k + 1) end
+    return g:word(k, "fast") and not g:word(k + 1, "forward time")
+  end }
   rule { "run advance", "op", near = { 3, "@sim" }, not_near = { 7, "real times faster x twice thrice" } }
   -- ("resume at 2x", "continue at double speed": the clock starts, at that rate)
   rule { "continue resume", "op", when = function(g, i)
@@ -844,6 +882,8 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "slow slower faster speed multiplier rate")
       or g:word_in(i + 2, math.min(#g.t + 1, i + 7), "multiplier rate")
   end }
+  -- "back to normal speed, real time": real time said again beside a normal rate names that rate
+  rule { "real", false, next = "time", when = function(g, i) return g:preceded_by(i, 4, "normal") end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }

@@ -362,8 +362,8 @@ if #sim:airports_named("schiphol") == 1 then
   check_eq(ukt("Speedbird 12 your destination Glasgow, echo golf papa foxtrot"), "DEST BAW12 EGPF")
   local gr = squawk.sim.new()
   check(gr:exec("CRE AEE601 A320 38.5 23.0 090 FL300 280"))
-  local ar = graph.translate("AEE601 destination Athens", { sim = gr, mode = "offline" })
-  check(#(ar.commands or {}) == 0 and (ar.ask or ""):find("KAHN", 1, true) ~= nil, said(ar))
+  -- ("Athens", the city English names otherwise: its airport ELEFTHERIOS VENIZELOS, lexicon.city_airports)
+  check_eq(said(graph.translate("AEE601 destination Athens", { sim = gr, mode = "offline" })), "DEST AEE601 LGAV")
 else
   print("skipped: airport names need navdata (SQUAWK_NAVDATA)")
 end
@@ -2058,5 +2058,65 @@ do
     check_eq(#us:airports_with_words("county regional"), 0)
   else
     print("skipped: airports by a part of their name need navdata (SQUAWK_NAVDATA)")
+  end
+end
+
+-- Everyday words of visiting researchers (R36): "to" makes a heading of a turn's degrees; a fix said as what
+-- a new waypoint is; the clock run fast or back at normal speed; a waypoint flown to "directly"; a
+-- self-correction followed by "just" and another instruction; a level said as a condition after the
+-- instruction; greetings in German and the study told as a story; "the British one"; places flown over
+-- that the request asks to add; a heading towards a place
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE DLH5TX A320 48.4 11.2 090 FL240 280", "CRE BAW77 A320 48.6 10.0 100 FL300 280",
+      "CRE EZY9 A319 48.1 12.0 270 FL220 260", "DEFWPT TESTA 48.3 11.9", "DEFWPT TESTB 48.0 12.3" }) do
+    check(lab:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline", waypoints = { "TESTA", "TESTB" } })) end
+  check_eq(ex("could the Lufthansa please turn left to 200 degrees"), "HDG DLH5TX 200 LEFT")
+  check_eq(ex("the easyJet should descend to FL200 and turn right to 030 degrees"), "ALT EZY9 FL200 ; HDG EZY9 30 RIGHT")
+  check_eq(ex("please define a waypoint GATE2 at 47.9 N 12.1 E, which is a fix"), "DEFWPT GATE2 47.9 12.1 FIX")
+  check_eq(ex("please run the simulation fast until I tell you to stop"), "FF")
+  check_eq(ex("run the sim fast for five minutes"), "FF 300")
+  check_eq(ex("switch the simulation back to normal speed, real time please"), "DTMULT 1")
+  check_eq(ex("the Lufthansa should fly to TESTA directly"), "ADDWPT DLH5TX TESTA ; DIRECT DLH5TX TESTA")
+  check_eq(ex("the Lufthansa should fly to our waypoint TESTB"), "ADDWPT DLH5TX TESTB ; DIRECT DLH5TX TESTB")
+  check_eq(ex("the easyJet should climb to FL260 and then go directly to TESTB? Sorry, I mean just turn to heading 300."),
+    "ALT EZY9 FL260 ; HDG EZY9 300")
+  check_eq(ex("the Lufthansa should slow to 250 knots once it reaches flight level 150"), "ATALT DLH5TX FL150 SPD DLH5TX 250")
+  check_eq(ex("turn the easyJet to heading 090, but only when it is at FL210"), "ATALT EZY9 FL210 HDG EZY9 90")
+  check_eq(ex("Grüß Gott, could the easyJet climb to flight level 300, bitte?"), "ALT EZY9 FL300")
+  check_eq(ex("Entschuldigung, the Lufthansa should go to FL250, danke"), "ALT DLH5TX FL250")
+  check_eq(ex("in our story the easyJet is too slow, please give it 290 knots"), "SPD EZY9 290")
+  check_eq(ex("please let the British one climb to FL340"), "ALT BAW77 FL340")
+  check_eq(ex("for my study the easyJet should fly over TESTA and then over TESTB, please add these to its route"),
+    "ADDWPT EZY9 TESTA ; ADDWPT EZY9 TESTB")
+  check_eq(ex("please make the Lufthansa fly towards TESTB"), "HDG DLH5TX TESTB")
+  check_eq(ex("the easyJet should turn left in the direction of TESTA"), "HDG EZY9 TESTA LEFT")
+  -- "fly at" a level is the level flown, no condition on what follows; "fly to heading" no destination
+  check_eq(ex("the easyJet should fly at 30000 ft and heading 090"), "ALT EZY9 30000 ; HDG EZY9 90")
+  check_eq(ex("please let the Lufthansa fly to heading 045"), "HDG DLH5TX 45")
+  check_eq(ex("please create two waypoints: WPA at 48.2 11.1 and WPB at 48.4 11.8"),
+    "DEFWPT WPA 48.2 11.1 ; DEFWPT WPB 48.4 11.8")
+  check_eq(ex("please create a small Cessna 172, N77AB, at 48.2 11.3 heading 090 at 3000 feet and 100 knots"),
+    "CRE N77AB C172 48.2 11.3 90 3000 100")
+  check(ex("set the speed of both Lufthansa planes to 240 knots"):find("^ASK Which two aircraft does 'both Lufthansa' mean") ~= nil)
+  -- with the navdata: a city English names otherwise than the navdata ("Munich": MUNCHEN; "Vienna": its
+  -- airport SCHWECHAT), in every command that takes a place; a name said again is the same place
+  if #lab:airports_named("munchen") == 1 then
+    check_eq(ex("I would like the easyJet to land in Vienna, please set that as its destination"), "DEST EZY9 LOWW")
+    check_eq(ex("please move the Lufthansa to the Munich airport"), "MOVE DLH5TX EDDM")
+    check_eq(ex("create DLH8 A320 over Nuremberg airport, FL120, heading 180, 250 knots"), "CRE DLH8 A320 EDDN 180 FL120 250")
+    check_eq(ex("the Lufthansa should go to Stuttgart, so Stuttgart is its destination"), "DEST DLH5TX EDDS")
+    check_eq(ex("please turn the easyJet towards Munich airport"), "HDG EZY9 EDDM")
+    check_eq(ex("the British Airways should fly over the Kempten VOR, KPT, please add it to its route"), "ADDWPT BAW77 KPT")
+    check_eq(ex("please make a wind from 250 degrees with 30 knots at Salzburg"), "WIND LOWS 250 30")
+    check_eq(ex("what is the wind at Linz airport at flight level 100?"), "GETWIND LOWL FL100")
+    check_eq(ex("where is Munich airport?"), "POS EDDM")
+    check_eq(ex("when the easyJet is 15 miles from Munich airport, please let it descend to FL120"),
+      "ATDIST EZY9 EDDM 15 ALT EZY9 FL120")
+    check_eq(ex("please tell me where the Kempten VOR is"), "POS KPT")
+  else
+    print("skipped: city names of airports need navdata (SQUAWK_NAVDATA)")
   end
 end
