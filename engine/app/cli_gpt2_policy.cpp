@@ -29,8 +29,8 @@ Args::Spec train_flags(bool gpt2) {
   values.insert(values.end(), {"--policy", "--env", "--levels", "--hidden", "--agents",
                                "--obs-norm", "--log-std", "--imitate", "--imitate-episodes",
                                "--imitate-rounds", "--imitate-epochs", "--imitate-lr"});
-  std::vector<std::string> bools = {"--resume", "--override", "--force",
-                                    "--quiet",  "--mirror",   "--gaussian"};
+  std::vector<std::string> bools = {"--resume", "--override", "--force",        "--quiet",
+                                    "--mirror", "--gaussian", "--imitate-means"};
   if (gpt2) {
     values.push_back("--init");
     values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());

@@ -233,8 +233,8 @@ int cmd_train_env(const Args& args) {
   if (imitate && dist::size() > 1)
     return usage_error("train", "--imitate runs in a job of one rank");
   if (!imitate)
-    for (const char* f :
-         {"--imitate-episodes", "--imitate-rounds", "--imitate-epochs", "--imitate-lr"})
+    for (const char* f : {"--imitate-episodes", "--imitate-rounds", "--imitate-epochs",
+                          "--imitate-lr", "--imitate-means"})
       if (args.has(f))
         return usage_error("train", std::string(f) + " sets --imitate POLICY.lua's cloning");
   auto hidden = int_list(args, "--hidden", "64,64", "width");  // the policy's hidden widths
@@ -258,10 +258,15 @@ int cmd_train_env(const Args& args) {
     return usage_error("train",
                        "--log-std " + args.get_or("--log-std", "") +
                            ": the Gaussian head's initial log sigma, in [-5, 2], with --gaussian");
+  if (args.has("--imitate-means") && !gaussian)
+    return usage_error("train",
+                       "--imitate-means holds the Gaussian head's log sigma: add --gaussian");
   if (gaussian) {
     spec.head = "gaussian";
     spec.action_size = es.action_size();
     spec.init_log_std = *log_std;
+    // --imitate-means: the clone keeps its log sigmas, params()'s tail (rl/mlp_policy.h)
+    if (args.has("--imitate-means")) ic->held_tail = static_cast<size_t>(spec.action_size);
   } else {
     spec.action_values = script::grid_values(batches->classes);
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "nn/adam.h"
@@ -93,6 +94,10 @@ Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const Imit
   if (c.episodes < 1 || c.rounds < 1 || c.epochs < 1 || c.batch < 1 || c.holdout < 1 || !(c.lr > 0.0f))
     return Status::invalid("imitation: episodes, rounds, epochs, batch and holdout must be >= 1 and lr > 0");
   if (c.holdout_seed == c.seed) return Status::invalid("imitation: the held-out seed must differ from the training seed");
+  if (c.held_tail > student.params().size())
+    return Status::invalid("imitation: held_tail " + std::to_string(c.held_tail) +
+                           " exceeds the student's " + std::to_string(student.params().size()) +
+                           " parameters");
   const auto d = static_cast<size_t>(teacher.obs_size());
   const bool continuous = student.action_values().empty();
   Rng rng(c.seed);
@@ -126,6 +131,7 @@ Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const Imit
         }
         std::fill(student.grads().begin(), student.grads().end(), 0.0f);
         student.accumulate_gradient(batch_obs, c.batch, batch_act, coef, 0.0f);
+        std::ranges::fill(student.grads().last(c.held_tail), 0.0f);  // Adam moves them by 0
         adam.step();
         SQUAWK_RETURN_IF_ERROR(student.error());
       }
@@ -137,7 +143,10 @@ Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const Imit
       for (int r = 0; r < n_held; ++r) {
         const ActionSample &a = held_act[static_cast<size_t>(r)],
                            &y = held.label[static_cast<size_t>(r)];
-        const double diff = std::abs(static_cast<double>(a.value) - static_cast<double>(y.value));
+        double diff = 0.0;  // the largest component's (unused components are 0 in both)
+        for (int j = 0; j < kMaxActionSize; ++j)
+          diff = std::max(diff, std::abs(static_cast<double>(a.component(j)) -
+                                         static_cast<double>(y.component(j))));
         agree += continuous ? diff <= kContinuousAgreement : a.index == y.index;
         error += diff;
       }

@@ -9,17 +9,21 @@
 // student takes config.epochs passes over all labelled decisions so far, in
 // shuffled batches of config.batch rows, one Adam step per batch on
 //   L = -(1/B) sum_r log pi(y_r | s_r)    (Policy::accumulate_gradient, coef 1/B),
-// y_r the teacher's class (discrete heads) or its action value (continuous
-// heads: the Gaussian log-likelihood of the teacher's number, log sigma
-// included).
+// y_r the teacher's class (discrete heads) or its action values (continuous
+// heads: the Gaussian log-likelihood of the teacher's numbers, log sigma
+// included unless held: config.held_tail > 0 leaves the last held_tail
+// entries of params() where they are, for a Gaussian MlpPolicy its log sigmas,
+// so that the means are fitted at a fixed spread, the mean squared error).
 // Agreement: the share of held-out decisions (config.holdout episodes of
 // config.holdout_seed, flown by the teacher) where the student's greedy class
-// is the teacher's (continuous: where its greedy value is within
-// kContinuousAgreement of the teacher's); action_error the mean absolute
-// difference of the two greedy values over the same decisions.
+// is the teacher's (continuous: where every component of its greedy action is
+// within kContinuousAgreement of the teacher's); action_error the mean over the
+// same decisions of the largest absolute difference between the two greedy
+// actions' components.
 // Shapes: decisions [N, obs_size] row-major, labels [N] actions.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -40,6 +44,7 @@ struct ImitationConfig {
   uint64_t seed = 1;          // training episodes, shuffling and the student's samples
   long long holdout = 200;    // [-] held-out episodes
   uint64_t holdout_seed = 2;  // must differ from seed
+  size_t held_tail = 0;       // [-] trailing params() entries left unchanged (0: all trained)
 };
 
 inline constexpr double kContinuousAgreement = 0.1;  // [-] of the [-1, 1] action range

@@ -32,7 +32,12 @@ rl::ActionSample LuaTeacher::encode(std::span<const double> a) const {
     const double w = spec.action_high[j] - spec.action_low[j];
     return w > 0.0 ? std::clamp((a[j] - spec.action_low[j]) / w, 0.0, 1.0) : 0.5;
   };
-  if (envs_.continuous()) return {-1, static_cast<float>(2.0 * unit(0) - 1.0)};
+  if (envs_.continuous()) {  // every component, each mapped onto [-1, 1]
+    rl::ActionSample s{-1, 0.0f};
+    for (size_t j = 0; j < a.size(); ++j)
+      s.component(static_cast<int>(j)) = static_cast<float>(2.0 * unit(j) - 1.0);
+    return s;
+  }
   const int k = envs_.levels();
   int c = 0, place = 1;
   for (size_t j = 0; j < a.size(); ++j, place *= k)

@@ -435,6 +435,71 @@ TEST_CASE("imitation clones a Lua rule on a Lua environment, Gaussian and grid h
   }
 }
 
+// sign2_half.lua: half the first sign and the second component always at 10,
+// the top of [0, 10]. The teacher's label carries both components (each on
+// [-1, 1]); cloned with its log sigmas held (held_tail), the student plays the
+// rule's reward and keeps its log sigmas bit for bit; with them learned, the
+// constant component's sigma collapses.
+TEST_CASE("imitation of a two-component rule: every component labelled, log sigma held") {
+  auto envs = batch(repo("tests/data/gym/sign2.lua"), 3, 0);
+  auto teacher = script::LuaTeacher::load(repo("tests/data/gym/sign2_half.lua"), {}, *envs);
+  REQUIRE_MESSAGE(teacher.is_ok(), teacher.status().message());
+  auto rule = rl::evaluate(**teacher, *envs, {40, 9, true});
+  REQUIRE(rule);
+  for (const size_t held : {size_t{2}, size_t{0}}) {
+    CAPTURE(held);
+    rl::MlpPolicySpec spec;
+    spec.obs_size = 2;
+    spec.hidden = {16};
+    spec.head = "gaussian";
+    spec.action_size = 2;
+    spec.init_log_std = -1.0;
+    Rng init(5);
+    auto p = rl::MlpPolicy::make(spec, init);
+    REQUIRE(p);
+    const std::vector<float> log_std_before((*p)->params().end() - 2, (*p)->params().end());
+    rl::ImitationConfig ic;
+    ic.episodes = 40;
+    ic.rounds = 2;
+    ic.epochs = 20;
+    ic.batch = 16;
+    ic.lr = 1e-2f;
+    ic.holdout = 10;
+    ic.held_tail = held;
+    rl::ImitationEpoch last;
+    Status st = rl::imitate(**p, **teacher, *envs, ic, [&](const rl::ImitationEpoch& e) {
+      last = e;
+      return Status::ok();
+    });
+    REQUIRE_MESSAGE(st.is_ok(), st.message());
+    const std::vector<float> log_std_after((*p)->params().end() - 2, (*p)->params().end());
+    auto after = rl::evaluate(**p, *envs, {40, 9, true});
+    REQUIRE(after);
+    MESSAGE("sign2.lua cloned from sign2_half.lua, held "
+            << held << ": " << after->mean_reward << " (rule " << rule->mean_reward
+            << "), log sigma " << log_std_after[0] << ", " << log_std_after[1]);
+    if (held) {
+      CHECK(log_std_after == log_std_before);
+      CHECK(last.agreement == 1.0);
+      CHECK(after->mean_reward == doctest::Approx(rule->mean_reward).epsilon(0.02));
+    } else {
+      CHECK(log_std_after[1] < log_std_before[1] - 1.0);  // the constant component's sigma shrinks
+    }
+  }
+  rl::MlpPolicySpec small;
+  small.obs_size = 2;
+  small.hidden = {4};
+  small.head = "gaussian";
+  small.action_size = 2;
+  Rng init(1);
+  auto p = rl::MlpPolicy::make(small, init);
+  REQUIRE(p);
+  rl::ImitationConfig too_many;
+  too_many.held_tail = 1000;
+  CHECK(rl::imitate(**p, **teacher, *envs, too_many, {}).message() ==
+        "imitation: held_tail 1000 exceeds the student's 24 parameters");
+}
+
 TEST_CASE("imitation refuses a teacher and a student of different kinds") {
   auto envs = batch(repo("tests/data/gym/sign.lua"), 2, 0);
   auto teacher = script::LuaTeacher::load(repo("tests/data/gym/sign_half.lua"), {}, *envs);
