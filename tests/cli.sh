@@ -64,6 +64,9 @@ expect "train update-log" 0 "done: 640 episodes" -- "$sq" train --env tests/data
 expect "update-log rows" 0 "^41 episodes,mean_return,entropy,grad_norm,value_loss,advantage_sd,clip_fraction 640,-?[0-9.e-]+,-?[0-9.e-]+(,[0-9.e-]+){3},(0|0\.[0-9]+|1)$" -- bash -c "echo \$(wc -l < '$gt/ul/updates.csv') \$(head -1 '$gt/ul/updates.csv') \$(tail -1 '$gt/ul/updates.csv')"
 expect "update-log observes" 0 "" -- bash -c "cmp <(cut -d, -f1,2,4- '$gt/gauss/log.csv') <(cut -d, -f1,2,4- '$gt/ul/log.csv')"
 expect "update-log needs env" 2 "--update-log writes the updates of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --update-log
+# bench/gym_paired.lua: a rule against itself (the env and the rule each require their own "descent"), an MLP against a rule.
+expect "paired lua rule" 0 "mean \+0\.000, standard error 0\.000; A better in 0, equal in 3, worse in 0" -- "$sq" run bench/gym_paired.lua envs/vertical_cr.lua script:envs/policies/vertical_cr.lua script:envs/policies/vertical_cr.lua 3 0
+expect "paired lua mlp" 0 "over 20 paired episodes: mean \+[01]\.[0-9]+, .*A better in [1-9][0-9]*," -- "$sq" run bench/gym_paired.lua tests/data/gym/sign.lua "mlp:$gt/ul/policy.ckpt" script:tests/data/gym/sign_half.lua 20 0 --allow-read "$gt:tests/data/gym"
 # --imitate: behaviour cloning of a Lua rule (sign_half.lua: half the sign, -1 an episode), then the learner.
 expect "train env imitate" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imit" --gaussian --obs-norm 20 --imitate tests/data/gym/sign_half.lua --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
 expect "env run cloned" 0 '"mean_reward": -1\.0[01][0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json
