@@ -59,12 +59,24 @@ expect "train obs-norm" 0 "observations normalised" -- "$sq" train --env tests/d
 expect "env run obs-norm" 0 '"mean_reward": (0|-0\.[0-9]+),' -- "$sq" env run tests/data/gym/sign2.lua --policy "mlp:$gt/norm/policy.ckpt" --greedy --episodes 40 --json
 expect "obs-norm alone" 2 "--obs-norm and --log-std shape the policy of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --obs-norm 10
 expect "log-std grid" 2 "--log-std -1: the Gaussian head's initial log sigma, in \[-5, 2\], with --gaussian" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ls" --log-std -1
+# --update-log: one row per update in updates.csv (sign.lua's 640 episodes, 16 an update: 40 rows), and the same log.csv as without it (but its wall times).
+expect "train update-log" 0 "done: 640 episodes" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ul" --gaussian --estimator ppo --episodes 640 --eval-every 320 --update-log
+expect "update-log rows" 0 "^41 episodes,mean_return,entropy,grad_norm,value_loss,advantage_sd,clip_fraction 640,-?[0-9.e-]+,-?[0-9.e-]+(,[0-9.e-]+){3},(0|0\.[0-9]+|1)$" -- bash -c "echo \$(wc -l < '$gt/ul/updates.csv') \$(head -1 '$gt/ul/updates.csv') \$(tail -1 '$gt/ul/updates.csv')"
+expect "update-log observes" 0 "" -- bash -c "cmp <(cut -d, -f1,2,4- '$gt/gauss/log.csv') <(cut -d, -f1,2,4- '$gt/ul/log.csv')"
+expect "update-log needs env" 2 "--update-log writes the updates of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/x" --update-log
+# bench/gym_paired.lua: a rule against itself (the env and the rule each require their own "descent"), an MLP against a rule.
+expect "paired lua rule" 0 "mean \+0\.000, standard error 0\.000; A better in 0, equal in 3, worse in 0" -- "$sq" run bench/gym_paired.lua envs/vertical_cr.lua script:envs/policies/vertical_cr.lua script:envs/policies/vertical_cr.lua 3 0
+expect "paired lua mlp" 0 "over 20 paired episodes: mean \+[01]\.[0-9]+, .*A better in [1-9][0-9]*," -- "$sq" run bench/gym_paired.lua tests/data/gym/sign.lua "mlp:$gt/ul/policy.ckpt" script:tests/data/gym/sign_half.lua 20 0 --allow-read "$gt:tests/data/gym"
 # --imitate: behaviour cloning of a Lua rule (sign_half.lua: half the sign, -1 an episode), then the learner.
 expect "train env imitate" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imit" --gaussian --obs-norm 20 --imitate tests/data/gym/sign_half.lua --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
 expect "env run cloned" 0 '"mean_reward": -1\.0[01][0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json
 # --imitate-means: two components, the second held at its top; log sigma held, every component labelled.
 expect "train env imitate means" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign2.lua --out "$gt/imit2" --gaussian --log-std -1 --imitate tests/data/gym/sign2_half.lua --imitate-means --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
 expect "imitate means grid" 2 "--imitate-means holds the Gaussian head's log sigma: add --gaussian" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imv" --imitate tests/data/gym/sign_half.lua --imitate-means
+# --clone-log-std: the clone is fine-tuned from log sigma -3 (entropy -3 + 1.419 at the first update).
+expect "train clone-log-std" 0 "done: 64 episodes" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cls" --gaussian --imitate tests/data/gym/sign_half.lua --imitate-episodes 100 --imitate-rounds 1 --clone-log-std -3 --estimator ppo --episodes 64 --eval-every 0 --update-log
+expect "clone-log-std entropy" 0 "^16,[-0-9.e]+,-1\.58" -- sed -n 2p "$gt/cls/updates.csv"
+expect "clone-log-std alone" 2 "--clone-log-std -1: the cloned Gaussian head's log sigma, in \[-5, 2\], with --gaussian and --imitate" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cl" --gaussian --clone-log-std -1
 expect "imitate needs env" 2 "--imitate POLICY.lua clones a rule of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/imx" --imitate tests/data/gym/sign_half.lua
 expect "imitate flags alone" 2 "--imitate-epochs sets --imitate POLICY.lua's cloning" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imy" --imitate-epochs 3
 expect "imitate multi-agent" 2 "--imitate clones a single-agent rule; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/imz" --imitate tests/data/gym/sign_half.lua

@@ -26,11 +26,12 @@ namespace squawk::app {
 
 Args::Spec train_flags(bool gpt2) {
   std::vector<std::string> values = learner_flags();
-  values.insert(values.end(), {"--policy", "--env", "--levels", "--hidden", "--agents",
-                               "--obs-norm", "--log-std", "--imitate", "--imitate-episodes",
-                               "--imitate-rounds", "--imitate-epochs", "--imitate-lr"});
-  std::vector<std::string> bools = {"--resume", "--override", "--force",        "--quiet",
-                                    "--mirror", "--gaussian", "--imitate-means"};
+  values.insert(values.end(),
+                {"--policy", "--env", "--levels", "--hidden", "--agents", "--obs-norm", "--log-std",
+                 "--imitate", "--imitate-episodes", "--imitate-rounds", "--imitate-epochs",
+                 "--imitate-lr", "--clone-log-std"});
+  std::vector<std::string> bools = {"--resume",   "--override", "--force",        "--quiet",
+                                    "--mirror",   "--gaussian", "--imitate-means", "--update-log"};
   if (gpt2) {
     values.push_back("--init");
     values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());

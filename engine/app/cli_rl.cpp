@@ -49,6 +49,8 @@ int cmd_train(const ArgV& given) {
                          "--obs-norm and --log-std shape the policy of a --env ENV.lua run");
     if (!probe->has("--env") && probe->has("--imitate"))
       return usage_error("train", "--imitate POLICY.lua clones a rule of a --env ENV.lua run");
+    if (!probe->has("--env") && probe->has("--update-log"))
+      return usage_error("train", "--update-log writes the updates of a --env ENV.lua run");
     if (!probe->has("--env") && probe->has("--agents"))
       return usage_error("train", "--agents sets the agents of a multi-agent --env ENV.lua run");
   }

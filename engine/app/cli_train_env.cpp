@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "app/cli.h"
 #include "app/interrupt.h"
@@ -19,6 +20,7 @@
 #include "app/progress_bar.h"
 #include "app/subcommands.h"
 #include "app/train_log.h"
+#include "app/update_log.h"
 #include "app/vm_options.h"
 #include "core/files.h"
 #include "core/text.h"
@@ -261,6 +263,14 @@ int cmd_train_env(const Args& args) {
   if (args.has("--imitate-means") && !gaussian)
     return usage_error("train",
                        "--imitate-means holds the Gaussian head's log sigma: add --gaussian");
+  // --clone-log-std X: the log sigma the clone is fine-tuned from (cloning learns its own).
+  auto clone_log_std = args.get_double("--clone-log-std", 0.0);
+  if (!clone_log_std) return usage_error("train", clone_log_std.status().message());
+  if (args.has("--clone-log-std") &&
+      (!gaussian || !imitate || !(*clone_log_std >= -5.0 && *clone_log_std <= 2.0)))
+    return usage_error("train", "--clone-log-std " + args.get_or("--clone-log-std", "") +
+                                    ": the cloned Gaussian head's log sigma, in [-5, 2], with "
+                                    "--gaussian and --imitate");
   if (gaussian) {
     spec.head = "gaussian";
     spec.action_size = es.action_size();
@@ -311,6 +321,12 @@ int cmd_train_env(const Args& args) {
   rl::Trainer trainer(**policy, *batches->train, cfg, 0);
   auto log = TrainLog::open(*run, 0);
   if (!log) return failure(log.status());
+  std::optional<UpdateLog> updates;
+  if (args.has("--update-log")) {
+    auto opened = UpdateLog::open(out + "/updates.csv");
+    if (!opened) return failure(opened.status());
+    updates = std::move(*opened);
+  }
   const bool quiet = args.has("--quiet");
   if (!quiet) {
     char head[96];
@@ -336,6 +352,9 @@ int cmd_train_env(const Args& args) {
     Status st = imitate_rule(*args.get("--imitate"), *teacher, *batches->train, *ic, spec, **policy,
                              trainer, out + "/cloned.ckpt", quiet);
     if (!st.is_ok()) return failure(Status::invalid(shown_error(st.message())));
+    if (args.has("--clone-log-std"))  // the Gaussian log sigmas: the parameters' tail
+      std::ranges::fill((*policy)->params().last(static_cast<size_t>(spec.action_size)),
+                        static_cast<float>(*clone_log_std));
   }
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
   double best_reward = 0.0;
@@ -346,6 +365,7 @@ int cmd_train_env(const Args& args) {
       [](long long) { return !InterruptGuard::requested(); },
       [&](const rl::UpdateReport& u) -> Result<bool> {
         log->add(progress, u.stats);
+        if (updates) SQUAWK_RETURN_IF_ERROR(updates->add(u.progress.episodes, u.stats));
         char extra[96];
         std::snprintf(extra, sizeof extra, "return %.3f", u.stats.mean_return);
         bar.update(u.progress.episodes, extra);

@@ -197,14 +197,14 @@ double Trainer::step_all() {
   return adam_.step();
 }
 
-double Trainer::coefficients(std::vector<float>& coef) {
+void Trainer::coefficients(std::vector<float>& coef, UpdateStats& st) {
   const size_t n = batch_samples_.size();
   const int rows = static_cast<int>(n);
   coef.assign(n, 0.0f);
   const double inv_n = 1.0 / static_cast<double>(samples_);
   if (cfg_.estimator == "vpg") {
     for (size_t i = 0; i < n; ++i) coef[i] = static_cast<float>(batch_samples_[i].reward * inv_n);
-    return 0.0;
+    return;
   }
   std::vector<float> g(n);
   size_t start = 0;
@@ -246,7 +246,8 @@ double Trainer::coefficients(std::vector<float>& coef) {
   for (double a : adv) sq += (a - mean) * (a - mean);
   const double sd = std::sqrt(total(sq) * inv_n);
   for (size_t i = 0; i < n; ++i) coef[i] = static_cast<float>((adv[i] - mean) / (sd + 1e-8) * inv_n);
-  return value_loss;
+  st.value_loss = value_loss;
+  st.advantage_sd = sd;
 }
 
 std::vector<double> Trainer::advantages(const std::vector<float>& v, const std::vector<float>& g) const {
@@ -283,6 +284,7 @@ void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<Ac
   std::vector<float> rows, logp, c;
   std::vector<ActionSample> part_acts;
   std::vector<size_t> mine;  // local indices of this rank's samples in the part
+  double clipped_last = 0.0;  // samples clipped in the last pass
   for (int e = 0; e < cfg_.epochs; ++e) {
     if (parts > 1)
       for (size_t i = n; i-- > 1;)
@@ -310,6 +312,7 @@ void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<Ac
         // unclipped term is the smaller one, 0 where the clip is active.
         const double rho = first ? 1.0 : std::exp(static_cast<double>(logp[j]) - old_logp[i]);
         const bool clipped = (coef[i] > 0.0f && rho > 1.0 + cfg_.clip) || (coef[i] < 0.0f && rho < 1.0 - cfg_.clip);
+        if (clipped && e == cfg_.epochs - 1) clipped_last += 1.0;
         c[j] = clipped ? 0.0f : static_cast<float>(rho * coef[i] * scale);
       }
       std::fill(policy_.grads().begin(), policy_.grads().end(), 0.0f);
@@ -322,6 +325,7 @@ void Trainer::clipped_steps(const std::vector<float>& coef, const std::vector<Ac
       if (b == 0) st.grad_norm = norm;
     }
   }
+  st.clip_fraction = total(clipped_last) / static_cast<double>(n);
 }
 
 void Trainer::vine_steps(double c_h, UpdateStats& st) {
@@ -461,7 +465,7 @@ UpdateStats Trainer::update(const UpdateProgress& progress) {
     return st;
   }
   std::vector<float> coef;
-  st.value_loss = coefficients(coef);
+  coefficients(coef, st);
   const size_t local = batch_samples_.size();
   std::vector<ActionSample> batch_acts(local);
   for (size_t i = 0; i < local; ++i) batch_acts[i] = batch_samples_[i].action;

@@ -112,6 +112,8 @@ struct UpdateStats {
   double entropy = 0.0;      // [-] mean policy entropy over the samples
   double grad_norm = 0.0;    // [-] before clipping
   double value_loss = 0.0;   // [-] value MLP mean squared error (improved, before fitting)
+  double advantage_sd = 0.0;   // [reward] improved/ppo: advantages' deviation before normalising
+  double clip_fraction = 0.0;  // [-] ppo: share of the batch's samples clipped in the last pass
   bool interrupted = false;  // the progress callback stopped the batch: no step was taken
 };
 
@@ -170,15 +172,15 @@ class Trainer {
   bool collect(const UpdateProgress& progress);
   // Sums the policy gradients over the ranks and takes the Adam step; returns the norm.
   double step_all();
-  // Fills coef (one per batch sample) for the estimator; returns the value loss.
-  double coefficients(std::vector<float>& coef);
+  // Fills coef (one per batch sample) for the estimator, st.value_loss and st.advantage_sd.
+  void coefficients(std::vector<float>& coef, UpdateStats& st);
   // Advantages A_t (before normalisation) from the value MLP's v = V(s_t) and
   // the reward-to-go g.
   std::vector<double> advantages(const std::vector<float>& v, const std::vector<float>& g) const;
   // ppo: `epochs` x `minibatches` clipped-ratio steps from the normalised
   // advantages in coef (each times 1/N) with entropy bonus c_h. Sets
-  // st.entropy from the first pass (sample-weighted) and st.grad_norm from
-  // the first step.
+  // st.entropy from the first pass (sample-weighted), st.grad_norm from
+  // the first step and st.clip_fraction from the last pass.
   void clipped_steps(const std::vector<float>& coef, const std::vector<ActionSample>& acts, double c_h,
                      UpdateStats& st);
   // vine: the all-action steps on the branched states; sets st.entropy and
