@@ -438,13 +438,23 @@ local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five"
   "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
 local SIDES = set_of({ "left", "right" })
-local function self_corrections(text)
-  local sc = lexicon.self_correction
-  local words, markers, after = set_of(sc.words), set_of(sc.markers), set_of(sc.after)
+-- The words of `text` as {at, e, raw, bare} (at, e: byte positions of the word and after it; bare: lower
+-- case, punctuation trimmed at both ends). Callers only read the list: the last text's is kept, as
+-- the rewrites below mostly pass the text on unchanged.
+local last_text, last_words
+local function bare_words(text)
+  if text == last_text then return last_words end
   local toks = {}
   for at, w, e in text:gmatch("()(%S+)()") do
     toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
   end
+  last_text, last_words = text, toks
+  return toks
+end
+local function self_corrections(text)
+  local sc = lexicon.self_correction
+  local words, markers, after = set_of(sc.words), set_of(sc.markers), set_of(sc.after)
+  local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from, k = {}, 1, 1
   while k <= #toks do
@@ -475,10 +485,7 @@ end
 -- not 300 speed 250") the "not" stays, and is asked about.
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
 local function negated_values(text)
-  local toks = {}
-  for at, w, e in text:gmatch("()(%S+)()") do
-    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
-  end
+  local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from = {}, 1
   for k, t in ipairs(toks) do
