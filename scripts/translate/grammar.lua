@@ -317,12 +317,22 @@ local NUMBER_WORDS = set_of({ "zero", "one", "two", "three", "four", "five", "si
 -- Digits said in Spanish or Portuguese (lexicon.foreign_digits) beside another digit of either
 -- language, said or typed, or a spelled letter, are those digits in English: "Copa tres one one" ->
 -- "Copa three one one", "Speedbird ocho charlie kilo" -> "Speedbird eight charlie kilo".
-local function foreign_digits(text)
-  local toks, bare = {}, {}
-  for w in text:gmatch("%S+") do
-    toks[#toks + 1] = w
-    bare[#bare + 1] = w:lower():gsub("%p+$", "")
+-- The words of `text` and each in lower case without the punctuation closing it. Callers only read
+-- the lists: the last text's are kept (heard_forms mostly reads the text foreign_digits read).
+local last_plain, plain_toks, plain_bare
+local function plain_words(text)
+  if text ~= last_plain then
+    plain_toks, plain_bare = {}, {}
+    for w in text:gmatch("%S+") do
+      plain_toks[#plain_toks + 1] = w
+      plain_bare[#plain_bare + 1] = w:lower():gsub("%p+$", "")
+    end
+    last_plain = text
   end
+  return plain_toks, plain_bare
+end
+local function foreign_digits(text)
+  local toks, bare = plain_words(text)
   local F = lexicon.foreign_digits
   local function digit(k)
     local w = bare[k]
@@ -357,11 +367,7 @@ end
 -- Speech recognition's sound-alike forms of instruction words
 -- (lexicon.heard_as), rewritten only where the instruction word is expected.
 local function heard_forms(text)
-  local toks, bare = {}, {}
-  for w in text:gmatch("%S+") do
-    toks[#toks + 1] = w
-    bare[#bare + 1] = w:lower():gsub("%p+$", "")
-  end
+  local toks, bare = plain_words(text)
   return tokens.rewrite(text, toks, function(i)
     for _, h in ipairs(HEARD[bare[i]] or {}) do
       local n = #h.words
