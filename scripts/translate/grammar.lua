@@ -318,12 +318,22 @@ local NUMBER_WORDS = set_of({ "zero", "one", "two", "three", "four", "five", "si
 -- Digits said in Spanish or Portuguese (lexicon.foreign_digits) beside another digit of either
 -- language, said or typed, or a spelled letter, are those digits in English: "Copa tres one one" ->
 -- "Copa three one one", "Speedbird ocho charlie kilo" -> "Speedbird eight charlie kilo".
-local function foreign_digits(text)
-  local toks, bare = {}, {}
-  for w in text:gmatch("%S+") do
-    toks[#toks + 1] = w
-    bare[#bare + 1] = w:lower():gsub("%p+$", "")
+-- The words of `text` and each in lower case without the punctuation closing it. Callers only read
+-- the lists: the last text's are kept (heard_forms mostly reads the text foreign_digits read).
+local last_plain, plain_toks, plain_bare
+local function plain_words(text)
+  if text ~= last_plain then
+    plain_toks, plain_bare = {}, {}
+    for w in text:gmatch("%S+") do
+      plain_toks[#plain_toks + 1] = w
+      plain_bare[#plain_bare + 1] = w:lower():gsub("%p+$", "")
+    end
+    last_plain = text
   end
+  return plain_toks, plain_bare
+end
+local function foreign_digits(text)
+  local toks, bare = plain_words(text)
   local F = lexicon.foreign_digits
   local function digit(k)
     local w = bare[k]
@@ -358,11 +368,7 @@ end
 -- Speech recognition's sound-alike forms of instruction words
 -- (lexicon.heard_as), rewritten only where the instruction word is expected.
 local function heard_forms(text)
-  local toks, bare = {}, {}
-  for w in text:gmatch("%S+") do
-    toks[#toks + 1] = w
-    bare[#bare + 1] = w:lower():gsub("%p+$", "")
-  end
+  local toks, bare = plain_words(text)
   return tokens.rewrite(text, toks, function(i)
     for _, h in ipairs(HEARD[bare[i]] or {}) do
       local n = #h.words
@@ -439,13 +445,23 @@ local DIGIT_WORDS = set_of({ "zero", "oh", "one", "two", "three", "four", "five"
   "niner", "tree", "fife", "fower" })
 local UNIT_WORDS = set_of({ "feet", "ft", "knots", "kts", "kt", "degrees" })
 local SIDES = set_of({ "left", "right" })
-local function self_corrections(text)
-  local sc = lexicon.self_correction
-  local words, markers, after = set_of(sc.words), set_of(sc.markers), set_of(sc.after)
+-- The words of `text` as {at, e, raw, bare} (at, e: byte positions of the word and after it; bare: lower
+-- case, punctuation trimmed at both ends). Callers only read the list: the last text's is kept, as
+-- the rewrites below mostly pass the text on unchanged.
+local last_text, last_words
+local function bare_words(text)
+  if text == last_text then return last_words end
   local toks = {}
   for at, w, e in text:gmatch("()(%S+)()") do
     toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
   end
+  last_text, last_words = text, toks
+  return toks
+end
+local function self_corrections(text)
+  local sc = lexicon.self_correction
+  local words, markers, after = set_of(sc.words), set_of(sc.markers), set_of(sc.after)
+  local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from, k = {}, 1, 1
   while k <= #toks do
@@ -476,10 +492,7 @@ end
 -- not 300 speed 250") the "not" stays, and is asked about.
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
 local function negated_values(text)
-  local toks = {}
-  for at, w, e in text:gmatch("()(%S+)()") do
-    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
-  end
+  local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from = {}, 1
   for k, t in ipairs(toks) do

@@ -314,13 +314,17 @@ end
 -- Airline names (telephony and translate/names.lua's common names, up to
 -- three words) -> ICAO prefix; brand names -> {ICAO prefixes}; the ICAO prefix a brand's name names ->
 -- {the brand's prefixes} (TRA -> {TRA, TVF}: a callsign heard with "Transavia" is of either).
-local AIRLINE_NAMES, BRANDS, BRAND_OF
+-- AIRLINE_FIRST: the first words (up to the first space) of those names.
+local AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST
 local function airline_names()
   if AIRLINE_NAMES then return AIRLINE_NAMES, BRANDS, BRAND_OF end
-  AIRLINE_NAMES, BRANDS, BRAND_OF = {}, {}, {}
+  AIRLINE_NAMES, BRANDS, BRAND_OF, AIRLINE_FIRST = {}, {}, {}, {}
   local names = require("translate.names")
   for _, list in ipairs({ names.airlines, names.common }) do
-    for _, a in ipairs(list) do AIRLINE_NAMES[a[1]] = a[2] end
+    for _, a in ipairs(list) do
+      AIRLINE_NAMES[a[1]] = a[2]
+      AIRLINE_FIRST[a[1]:match("^[^ ]*")] = true
+    end
   end
   for _, b in ipairs(names.brands or {}) do
     BRANDS[b[1]] = { table.unpack(b, 2) }
@@ -336,6 +340,13 @@ end
 function m:airline_at(i)
   local t = self.t[i]
   if not t or t.kind ~= "word" then return nil end
+  -- (no name starts with this word: only the designator typed in capitals can match; a word holding
+  -- a space is looked up whole)
+  airline_names()
+  if not AIRLINE_FIRST[t.text] and not t.text:find(" ", 1, true) then
+    if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
+    return nil
+  end
   local words = {}
   for k = i, i + 2 do
     if not self.t[k] or self.t[k].kind ~= "word" then break end
@@ -360,14 +371,16 @@ function m:airline_said_alone(s)
   while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
   for i = b, s.e - 1 do
     local icao, e = self:airline_at(i)
-    local nxt = self.t[e]
-    local inside = false
-    for _, r in ipairs(self.refs) do inside = inside or (r.b <= i and i < r.e) end
-    local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
-    if icao and starts and (e > i + 1 or airline_names()[self.t[i].text]) and self.t[i].raw:match("%u") and not inside
-        and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
-          or self:word(e, "heavy super @correction"))) then
-      return { b = i, e = e, icao = icao }
+    if icao then
+      local nxt = self.t[e]
+      local inside = false
+      for _, r in ipairs(self.refs) do inside = inside or (r.b <= i and i < r.e) end
+      local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
+      if starts and (e > i + 1 or airline_names()[self.t[i].text]) and self.t[i].raw:match("%u") and not inside
+          and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
+            or self:word(e, "heavy super @correction"))) then
+        return { b = i, e = e, icao = icao }
+      end
     end
   end
 end

@@ -353,7 +353,7 @@ end
 function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
-  local scratch = ctx.sim:copy()
+  local scratch  -- a copy of ctx.sim, made once a line may be TrafScript (most English ends before)
   for k, c in ipairs(cmds) do
     -- a question, or a thousands separator ("alt KL204 12,000"), is English
     if c:find("[?!]") or c:find("%d,%d%d%d") then return "english" end
@@ -362,9 +362,11 @@ function M.typed(state, ctx)
     -- a letter of the spelling alphabet that is also a command's name, followed by another letter
     -- ("Echo Charlie Kilo Juliett Bravo, climb ..."), spells a callsign: English, not ECHO
     if lexicon.phonetic[first:lower()] and lexicon.phonetic[second:lower()] then return "english" end
+    if not canonical_name(first) and not canonical_name(second) then return "english" end
+    scratch = scratch or ctx.sim:copy()
     if not canonical_name(first) then
       -- "KL204 HDG 045": BlueSky's callsign-first form, run command first
-      if not canonical_name(second) or not scratch:get(first) then return "english" end
+      if not scratch:get(first) then return "english" end
       c = second .. " " .. first .. rest
       cmds[k] = c
     end

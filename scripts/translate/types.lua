@@ -258,7 +258,8 @@ end
 function M.join(text, phrases)
   local lower = text:lower()
   for _, p in ipairs(phrases) do
-    if lower:find(p[1]:match("^%S+"), 1, true) then  -- its first word is there: worth a pattern match
+    p.first = p.first or p[1]:match("^%S+")
+    if lower:find(p.first, 1, true) then  -- its first word is there: worth a pattern match
       p.pattern = p.pattern or ("%f[%w]" .. p[1]:gsub("%p", "%%%0")
         :gsub("%a", function(ch) return "[" .. ch:lower() .. ch:upper() .. "]" end)
         :gsub(" ", "[%%s%%-]+") .. "%f[%W]")
