@@ -30,8 +30,8 @@ Args::Spec train_flags(bool gpt2) {
                 {"--policy", "--env", "--levels", "--hidden", "--agents", "--obs-norm", "--log-std",
                  "--imitate", "--imitate-episodes", "--imitate-rounds", "--imitate-epochs",
                  "--imitate-lr", "--clone-log-std"});
-  std::vector<std::string> bools = {"--resume",   "--override", "--force",        "--quiet",
-                                    "--mirror",   "--gaussian", "--imitate-means", "--update-log"};
+  std::vector<std::string> bools = {"--resume", "--override", "--force",         "--quiet",
+                                    "--mirror", "--gaussian", "--imitate-means", "--update-log"};
   if (gpt2) {
     values.push_back("--init");
     values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());

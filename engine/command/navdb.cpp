@@ -227,13 +227,13 @@ std::vector<const NavPoint*> NavDb::airports_with_words(std::string_view words) 
   std::vector<const NavPoint*> out;
   // words of many airports' names that tell what kind of field it is, not which
   static const std::set<std::string> kKind = {
-      "AIRPORT", "INTL", "AIRFIELD", "AERODROME", "AIRBASE", "AIR", "BASE", "AFB", "FLD", "MUNI", "RGNL", "CO",
-      "COUNTY", "CITY", "MEML", "EXEC", "NATL", "METRO", "METROPOLITAN", "STRIP", "HELIPORT", "SEAPLANE",
-      "PORT", "ARPT"};
+      "AIRPORT", "INTL",  "AIRFIELD",     "AERODROME", "AIRBASE",  "AIR",      "BASE", "AFB",
+      "FLD",     "MUNI",  "RGNL",         "CO",        "COUNTY",   "CITY",     "MEML", "EXEC",
+      "NATL",    "METRO", "METROPOLITAN", "STRIP",     "HELIPORT", "SEAPLANE", "PORT", "ARPT"};
   // such words as said, and as the navdata writes them ("Dallas Love Field": DALLAS LOVE FLD)
   static const std::map<std::string, std::string> kWritten = {
-      {"INTERNATIONAL", "INTL"}, {"FIELD", "FLD"},          {"MUNICIPAL", "MUNI"}, {"REGIONAL", "RGNL"},
-      {"MEMORIAL", "MEML"},      {"EXECUTIVE", "EXEC"},     {"NATIONAL", "NATL"}};
+      {"INTERNATIONAL", "INTL"}, {"FIELD", "FLD"},      {"MUNICIPAL", "MUNI"}, {"REGIONAL", "RGNL"},
+      {"MEMORIAL", "MEML"},      {"EXECUTIVE", "EXEC"}, {"NATIONAL", "NATL"}};
   const std::string said = name_key(words);
   std::string key;
   bool kind_only = true;
@@ -248,7 +248,8 @@ std::vector<const NavPoint*> NavDb::airports_with_words(std::string_view words) 
   if (key.empty() || kind_only) return out;
   const std::string run = " " + key + " ";
   for (size_t i = 0; i < airport_names_.size() && i < airports_.size(); ++i) {
-    if ((" " + name_key(airport_names_[i]) + " ").find(run) != std::string::npos) out.push_back(&airports_[i]);
+    if ((" " + name_key(airport_names_[i]) + " ").find(run) != std::string::npos)
+      out.push_back(&airports_[i]);
   }
   return out;
 }

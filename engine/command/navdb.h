@@ -57,7 +57,8 @@ class NavDb {
   // Airports whose name holds the words of `words` as a run of whole words, the name's other words
   // around them ("Midway" -> KMDW "CHICAGO MIDWAY INTL", "Kennedy" -> KJFK "JOHN F KENNEDY INTL",
   // "Love Field" -> KDAL "DALLAS LOVE FLD" and KPRC "ERNEST A LOVE FLD"), case and punctuation
-  // ignored; none for words that only say what kind of field it is ("International", "County Regional").
+  // ignored; none for words that only say what kind of field it is ("International", "County
+  // Regional").
   std::vector<const NavPoint*> airports_with_words(std::string_view words) const;
   // The large airports, else the medium ones, within kBesideNavaidNm of a navaid called `name`
   // (navaids_named's names, anywhere): the airport of a city people name by its city where the
