@@ -1,7 +1,6 @@
--- The paired comparison of bench/gym_paired.sh in one process (the same
--- episodes and figures, about a hundred times faster): episode k (seed
--- SEED + k, k = 0 .. EPISODES-1) is played by each policy on a freshly loaded
--- environment, as `squawk env run ENV --policy P --seed SEED+k --episodes 1`
+-- The paired comparison of two policies on one environment, in one process:
+-- episode k (seed SEED + k, k = 0 .. EPISODES-1) is played by each policy on
+-- a freshly loaded environment, as `squawk env run ENV --policy P --seed SEED+k --episodes 1`
 -- plays it (mlp: checkpoints greedy: their mean or mode; script: rules reset
 -- with the episode's seed), and the per-episode differences A - B are
 -- summarised: their mean, its standard error (sd / sqrt(n)), and in how many
