@@ -221,6 +221,8 @@ return {
   shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", lft = "left",
                 rgt = "right", rght = "right", spd = "speed",
                 hdg = "heading",
+                -- (two letters swapped, or the vowels left out: "hgd 240", "sdp 270", "rdc 250 kts")
+                hgd = "heading", sdp = "speed", rdc = "reduce",
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },

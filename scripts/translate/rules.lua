@@ -502,6 +502,9 @@ return function(intent, rule, words)
     local nx = r and g.t[r.e]
     local q = r and g:word(r.e, "at") and g:quantities(r.e + 1, #g.t + 1)[1]
     local level = q and q.b == r.e + 1 and q.kind == "alt"
+    -- ("bel3kf add bitbu fl200", "add resmi fl60 210": the level typed straight after the name)
+    local typed = r and g:quantities(r.e, #g.t + 1)[1]
+    level = level or (typed and typed.b == r.e and typed.kind == "alt" and typed.fl)
     return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
@@ -604,7 +607,7 @@ return function(intent, rule, words)
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
-  rule { "direct directly dct dir proceed direct-to", "direct" }
+  rule { "direct directly dct drct dir proceed direct-to", "direct" }
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
   local function to_waypoint(g, i)
