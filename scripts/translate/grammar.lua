@@ -565,6 +565,8 @@ local function written_forms(text)
   end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
+  -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
+  text = text:gsub("%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")

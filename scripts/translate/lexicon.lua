@@ -156,7 +156,7 @@ return {
         -- legs of an approach a vector is for ("vectors for base"), and alerts
         "base", "downwind", "final", "spacing", "sequencing", "alert",
         -- controllers' written abbreviations of instruction words
-        "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
+        "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb", "degs", "vect", "vects", "vctr", "inc", "incr",
         -- squawk's own display, where a command shows or draws what it is asked, and the traffic on it
         -- ("put a Delta CRJ900 on the board", "remove the United from the scene")
         "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",

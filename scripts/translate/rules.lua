@@ -601,6 +601,9 @@ return function(intent, rule, words)
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
   rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
+  -- "clr rte", "clr route" typed short, the noun ending the request ("clr route as filed" is no deletion)
+  rule { "clr", "delrte", next = "@route_nouns",
+         when = function(g, i) return not g:has_ref(1, #g.t + 1, "waypoint") and i + 2 > #g.t end }
   -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
   rule { "delete del remove rid kill rmv bin deleting removing", "delete" }
   rule { "take", "delete", near = { 5, "out" } }

@@ -2152,6 +2152,13 @@ do
   check_eq(ex("klm88v sdp 230"), "SPD KLM88V 230")
   check_eq(ex("afr56bq rdc 250 kts"), "SPD AFR56BQ 250")
   check_eq(ex("klm88v drct testa"), "DIRECT KLM88V TESTA")
+  -- "v/s" for the vertical speed, "clr rte" for clearing the route, written abbreviations of known words
+  check_eq(ex("afr56bq v/s 1500 down"), "VS AFR56BQ -1500")
+  check_eq(ex("klm88v clr rte"), "DELRTE KLM88V")
+  check(ex("klm88v clr route as filed"):match("^ASK") ~= nil)
+  check_eq(ex("afr56bq inc spd 300"), "SPD AFR56BQ 300")
+  check_eq(ex("afr56bq hdg 200 vect ils"), "HDG AFR56BQ 200")
+  check_eq(ex("afr56bq r 20 degs"), "HDG AFR56BQ 110 RIGHT")
   -- a waypoint added with the level (and a bare speed straight after it); any other value is asked about
   check_eq(ex("afr56bq add testa fl60 210"), "ADDWPT AFR56BQ TESTA FL60 210")
   check_eq(ex("afr56bq add testa fl80"), "ADDWPT AFR56BQ TESTA FL80")
@@ -2165,6 +2172,8 @@ do
     check_eq(ex("klm88v add betus after testa"), "ADDWPT KLM88V BETUS,,,TESTA")
     check_eq(ex("klm88v add spy before testa"), "ADDWPT KLM88V SPY,,,,TESTA")
     check_eq(ex("afr56bq clb fl240 then dct spy"), "ALT AFR56BQ FL240 ; ADDWPT AFR56BQ SPY ; DIRECT AFR56BQ SPY")
+    check_eq(ex("cre ewg77 a320 at betus hdg 120 fl240 spd 280"), "CRE EWG77 A320 BETUS 120 FL240 280")
+    check_eq(ex("create ewg78 a320 over spy, hdg 260, fl200, 260 kts"), "CRE EWG78 A320 SPY 260 FL200 260")
     -- a capital anywhere leaves the line as typed
     check(ex("AFR56BQ add betus"):match("^ASK") ~= nil, ex("AFR56BQ add betus"))
   else
