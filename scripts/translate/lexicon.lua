@@ -248,8 +248,9 @@ return {
   -- correction, "KL204, make one orbit"), is read as "correction"
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch" },
-                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch" },
+                                "say", "again", "scratch", "corr" },
+                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
+                                  "corr" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)

@@ -369,6 +369,15 @@ function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
   local scratch = ctx.sim:copy()
+  -- "zoner?", "reso?": a setting's command name asked about alone is that command with no argument, which
+  -- shows the setting (only a command whose arguments are all optional; "hold?" runs nothing)
+  local asked = #cmds == 1 and cmds[1]:match("^%s*([%a_]+)%s*%?%s*$")
+  local shown = asked and canonical_name(asked)
+  if shown and (usage_of(shown) or ""):match("^%S+%s+%[") and scratch:check(shown) then
+    state.candidate, state.source = shown, "typed"
+    M.say(state, "typed", "a setting asked about: shown by " .. shown)
+    return "trafscript"
+  end
   for k, c in ipairs(cmds) do
     -- a question, or a thousands separator ("alt KL204 12,000"), is English
     if c:find("[?!]") or c:find("%d,%d%d%d") then return "english" end

@@ -258,6 +258,11 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
   end }
+  -- "sim x4": the multiplier typed straight after the simulation, nothing after it
+  rule { "sim simulation simulator", "dtmult", when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
+  end }
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"

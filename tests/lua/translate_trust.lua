@@ -2159,6 +2159,11 @@ do
   check_eq(ex("afr56bq inc spd 300"), "SPD AFR56BQ 300")
   check_eq(ex("afr56bq hdg 200 vect ils"), "HDG AFR56BQ 200")
   check_eq(ex("afr56bq r 20 degs"), "HDG AFR56BQ 110 RIGHT")
+  -- "sim x4" is the multiplier; a setting's command name asked about alone shows it
+  check_eq(ex("sim x4"), "DTMULT 4")
+  check_eq(ex("klm88v spd 240 .. corr 230"), "SPD KLM88V 230")
+  check_eq(ex("zoner?"), "ZONER")
+  check_eq(ex("dt ?"), "DT")
   -- a waypoint added with the level (and a bare speed straight after it); any other value is asked about
   check_eq(ex("afr56bq add testa fl60 210"), "ADDWPT AFR56BQ TESTA FL60 210")
   check_eq(ex("afr56bq add testa fl80"), "ADDWPT AFR56BQ TESTA FL80")
