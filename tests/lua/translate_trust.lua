@@ -2161,6 +2161,7 @@ do
   check_eq(ex("afr56bq r 20 degs"), "HDG AFR56BQ 110 RIGHT")
   -- "sim x4" is the multiplier; a setting's command name asked about alone shows it
   check_eq(ex("sim x4"), "DTMULT 4")
+  check_eq(ex("def wp gate7 at 52.25N 004.10E"), "DEFWPT GATE7 52.25 4.1")
   check_eq(ex("klm88v spd 240 .. corr 230"), "SPD KLM88V 230")
   check_eq(ex("zoner?"), "ZONER")
   check_eq(ex("dt ?"), "DT")
