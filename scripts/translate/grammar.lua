@@ -578,6 +578,8 @@ local function written_forms(text)
   end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
+  -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
+  text = text:gsub("%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
@@ -1614,6 +1616,15 @@ function G:at_waypoint(s, spec)
         local lead = be_at and be_at < r.b and be_at - 2 or r.b - 1
         if spec and spec.handler and s.trig < lead and #self:quantities(s.b, lead) > 0 then
           self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
+        end
+        -- "cross SUGOL at or above FL150", "at least 250 knots": BlueSky's AT sets the exact value, so a
+        -- bound runs only after a yes to that exact constraint
+        local bound = self:word_in(be_at or r.e, s.e, "above below higher lower least most greater less")
+        if bound and (alt or spd) then
+          local exact = alt and f.alt(alt.value, alt.fl)
+            or (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value) .. " knots")
+          self:confirm_before(string.format("squawk can set only an exact constraint at %s: %s would cross it at "
+            .. "exactly %s, not '%s'. Set that?", r.name, ids[1], exact, self:raw(be_at or r.e, s.e)))
         end
         if alt then
           self:emit("AT " .. ids[1] .. " " .. r.name .. " ALT " .. f.alt(alt.value, alt.fl))
@@ -2679,6 +2690,39 @@ local function set_apart(text)
   return table.concat(out), marks
 end
 
+-- "dlh9mk add betus after nurmo", "dct spi": in a line typed with no capital letter, a word in a place's
+-- slot (after "add", "dct", "after", ...; then each name listed straight after it) that is no word squawk
+-- knows and that the navdata holds as a fix, navaid or airport (world.place_known) within TYPED_PLACE_NM
+-- of an aircraft that flies (a recogniser's word far away, "direct sachs", is no such place) is that
+-- place, as if typed in capitals; without navdata nothing changes
+local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, drct = true, direct = true,
+  after = true, before = true, via = true, over = true, cross = true, at = true }
+local TYPED_PLACE_NM = 250
+local function typed_places(text, world)
+  if text:find("%u") or not world.place_known then return text end
+  local ids = {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
+  local function near(w)
+    local lat, lon = world.place_known(w:upper())
+    if not lat then return false end
+    for _, a in ipairs(world.aircraft) do
+      local dlat, dlon = lat - (a.lat or 0), (lon - (a.lon or 0)) * math.cos(math.rad(lat))
+      if a.lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= TYPED_PLACE_NM then return true end
+    end
+    return #world.aircraft == 0
+  end
+  local out, slot = {}, false
+  for lead, word, trail in text:gmatch("(%s*)([^%s]+)") do
+    local w, rest = word:match("^(%a[%a%d]*)(.*)$")
+    local named = w and slot and #w >= 3 and #w <= 5 and not known_word(w) and not ids[w]
+      and not lexicon.shorthand[w] and near(w)
+    out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
+    slot = (named and rest == "") or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
+      or (w == "to" and slot and PLACE_SLOTS[out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""] ~= nil)))
+  end
+  return table.concat(out)
+end
+
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
@@ -2696,7 +2740,7 @@ function M.translate(text, world)
     return { commands = {}, ask = string.format("'%s' is no position: minutes run from 0 to 59. Which latitude "
       .. "and longitude do you mean?", dm) }
   end
-  text = written_forms(text)
+  text = typed_places(written_forms(text), world)
   -- type names with their digits said as words, where traffic is created (random traffic too)
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
       or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]mcre") or text:lower():find("%f[%a]random") then

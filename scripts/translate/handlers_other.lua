@@ -1069,10 +1069,17 @@ return function(H, f, compass)
         break
       end
     end
+    local level_e  -- (the token after the level said)
+    local unread   -- a value after the verb that is neither the level nor the speed ("add RESMI FL60 500")
     for _, q in ipairs(qs) do
       if q.b >= upto then break end
-      if q.kind == "alt" and not alt then alt = f.alt(q.value, q.fl) end
+      local had_alt, had_spd = alt, spd
+      if q.kind == "alt" and not alt then alt, level_e = f.alt(q.value, q.fl), q.e end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
+      -- "add RESMI FL60 210": a bare number of 100 to 400 straight after the level is the speed (FL60/210)
+      if q.kind == "plain" and not spd and q.b == level_e and q.value >= 100 and q.value <= 400 then
+        spd = f.int(q.value)
+      end
       if q.kind == "plain" and not spd and self:word(q.b - 1, "speed spd") then spd = f.int(q.value) end
       -- "at 15000 and 250 knots": a bare number of whole hundreds, 1000 to 60000, after "at" is the altitude
       if q.kind == "plain" and not alt and self:word(q.b - 1, "at") and q.value >= 1000 and q.value <= 60000
@@ -1080,6 +1087,14 @@ return function(H, f, compass)
         alt = f.alt(q.value, false)
       end
       if q.kind == "mach" and not spd then spd = f.mach(q.value) end
+      if named and q.b >= named.e and alt == had_alt and spd == had_spd and not unread
+          and (q.kind == "plain" or q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
+        unread = q
+      end
+    end
+    if unread then
+      return self:need(string.format("I have %s to add to the route of %s. What does '%s' mean?", where, id,
+        self:raw(unread.b, unread.e)))
     end
     if next_to then
       local after = self:word(at, "after")

@@ -156,7 +156,7 @@ return {
         -- legs of an approach a vector is for ("vectors for base"), and alerts
         "base", "downwind", "final", "spacing", "sequencing", "alert",
         -- controllers' written abbreviations of instruction words
-        "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb",
+        "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb", "degs", "vect", "vects", "vctr", "inc", "incr",
         -- squawk's own display, where a command shows or draws what it is asked, and the traffic on it
         -- ("put a Delta CRJ900 on the board", "remove the United from the scene")
         "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
@@ -221,6 +221,8 @@ return {
   shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", lft = "left",
                 rgt = "right", rght = "right", spd = "speed",
                 hdg = "heading",
+                -- (two letters swapped, or the vowels left out: "hgd 240", "sdp 270", "rdc 250 kts")
+                hgd = "heading", sdp = "speed", rdc = "reduce",
                 rod = "rate of descent", roc = "rate of climb" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
@@ -246,8 +248,9 @@ return {
   -- correction, "KL204, make one orbit"), is read as "correction"
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch" },
-                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch" },
+                                "say", "again", "scratch", "corr" },
+                      markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
+                                  "corr" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)

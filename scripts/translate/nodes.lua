@@ -251,6 +251,18 @@ function M.world(sim, waypoints)
            airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end,
            airports_beside = function(id, lat, lon, nm) return sim:airports_beside(id, lat, lon, nm) end,
            waypoints_at = function(lat, lon) return sim:waypoints_at(lat, lon) end,
+           -- the position (lat, lon) of the fix, navaid or airport of that ident the navdata (or a DEFWPT)
+           -- holds, where no aircraft bears it and it is no navaid's or airport's name ("dover": the DVR
+           -- VOR, not the fix DOVER), else nil (POS reads it and changes nothing)
+           place_known = function(name)
+             local ok, out = sim:exec("POS " .. name)
+             local lat, lon = tostring(out or ""):match("^%S+ at (%-?[%d.]+) (%-?[%d.]+)")
+             if not ok or not lat or sim:get(name) or #sim:navaids_named(name, 0, 0, 1e5) > 0
+                 or #sim:airports_named(name) > 0 then
+               return nil
+             end
+             return tonumber(lat), tonumber(lon)
+           end,
            -- a user waypoint's position (POS reads it and changes nothing): lat, lon or nil
            user_waypoint_at = function(name)
              local ok, out = sim:exec("POS " .. name)
@@ -343,7 +355,10 @@ local function has_english_word(line, name)
     -- ("WZZ1234 speed +20": a change said with its sign, which SPD / ALT / HDG would read as a value)
     if n > 1 and lw:match("^%+%d") and (name == "SPD" or name == "ALT" or name == "HDG") then return true end
     local own_name = lw:upper() == name
-    if name ~= "ECHO" and ((GLUE[lw] and not own_name) or (n > 1 and not turn_word and (keyword_set()[lw] or lexicon.compass[lw]))) then
+    -- a field word typed short ("cre KL204 b738 lfpo hdg 060": "hdg" for heading) is English too
+    local short = #lw > 1 and lexicon.shorthand[lw]
+    if name ~= "ECHO" and ((GLUE[lw] and not own_name) or (n > 1 and not turn_word
+        and (keyword_set()[lw] or lexicon.compass[lw] or (short and keyword_set()[short])))) then
       return true
     end
   end
@@ -354,6 +369,18 @@ function M.typed(state, ctx)
   local cmds = M.split_commands(state.request)
   if #cmds == 0 then return "english" end
   local scratch  -- a copy of ctx.sim, made once a line may be TrafScript (most English ends before)
+  -- "zoner?", "reso?": a setting's command name asked about alone is that command with no argument, which
+  -- shows the setting (only a command whose arguments are all optional; "hold?" runs nothing)
+  local asked = #cmds == 1 and cmds[1]:match("^%s*([%a_]+)%s*%?%s*$")
+  local shown = asked and canonical_name(asked)
+  if shown and (usage_of(shown) or ""):match("^%S+%s+%[") then
+    scratch = ctx.sim:copy()
+    if scratch:check(shown) then
+      state.candidate, state.source = shown, "typed"
+      M.say(state, "typed", "a setting asked about: shown by " .. shown)
+      return "trafscript"
+    end
+  end
   for k, c in ipairs(cmds) do
     -- a question, or a thousands separator ("alt KL204 12,000"), is English
     if c:find("[?!]") or c:find("%d,%d%d%d") then return "english" end

@@ -258,6 +258,11 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
   end }
+  -- "sim x4": the multiplier typed straight after the simulation, nothing after it
+  rule { "sim simulation simulator", "dtmult", when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
+  end }
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
@@ -357,6 +362,7 @@ return function(intent, rule, words)
   -- waypoints, creation and deletion
   rule { "define make put draw", false, near = { 2, "box circle circular polygon poly line" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
+  rule { "def", "defwpt", next = "@waypoint_nouns" }  -- "def wp XIT2 at 51.25N 004.10E" typed short
   -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
   -- waypoint at a position, when no aircraft that flies and no aircraft type is named
   local function new_fix_at(g, i)
@@ -502,6 +508,9 @@ return function(intent, rule, words)
     local nx = r and g.t[r.e]
     local q = r and g:word(r.e, "at") and g:quantities(r.e + 1, #g.t + 1)[1]
     local level = q and q.b == r.e + 1 and q.kind == "alt"
+    -- ("bel3kf add bitbu fl200", "add resmi fl60 210": the level typed straight after the name)
+    local typed = r and g:quantities(r.e, #g.t + 1)[1]
+    level = level or (typed and typed.b == r.e and typed.kind == "alt" and typed.fl)
     return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
@@ -598,13 +607,16 @@ return function(intent, rule, words)
   -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
   rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
+  -- "clr rte", "clr route" typed short, the noun ending the request ("clr route as filed" is no deletion)
+  rule { "clr", "delrte", next = "@route_nouns",
+         when = function(g, i) return not g:has_ref(1, #g.t + 1, "waypoint") and i + 2 > #g.t end }
   -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
   rule { "delete del remove rid kill rmv bin deleting removing", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
-  rule { "direct directly dct dir proceed direct-to", "direct" }
+  rule { "direct directly dct drct dir proceed direct-to", "direct" }
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
   local function to_waypoint(g, i)

@@ -1531,10 +1531,12 @@ do
     check(asia:exec(line))
   end
   local function at(text) return said(graph.translate(text, { sim = asia, mode = "offline" })) end
-  check_eq(at("Emirates five one two, descend to flight level one two zero, cross DESDI at or below flight level one five zero"),
-    "ALT UAE512 FL120 ; AT UAE512 DESDI ALT FL150")
+  -- (a bound is no exact constraint: asked first, the yes runs the instruction and the exact constraint)
+  local bounded = graph.translate("Emirates five one two, descend to flight level one two zero, cross DESDI at or below "
+    .. "flight level one five zero", { sim = asia, mode = "offline" })
+  check_eq(table.concat(bounded.confirm.commands, " ; "), "ALT UAE512 FL120 ; AT UAE512 DESDI ALT FL150")
   check_eq(at("UAE512 descend FL120 and cross DESDI at 250 knots"), "ALT UAE512 FL120 ; AT UAE512 DESDI SPD 250")
-  check_eq(at("UAE512 cross DESDI at or below FL150"), "AT UAE512 DESDI ALT FL150")
+  check(at("UAE512 cross DESDI at or below FL150"):find("^ASK squawk can set only an exact constraint at DESDI") ~= nil)
   check_eq(at("Garuda four one two maintain flight level one seven zero"), "ASK Did you mean QFA41? I heard GARUDA412.")
   check_eq(at("Indonesia four one two maintain flight level one seven zero"), "ALT GIA412 FL170")
 end
@@ -2118,5 +2120,69 @@ do
     check_eq(ex("please tell me where the Kempten VOR is"), "POS KPT")
   else
     print("skipped: city names of airports need navdata (SQUAWK_NAVDATA)")
+  end
+end
+
+-- Cycle 17 (terse lowercase shorthand at a simulator's command box): field words typed short make a
+-- line English, a bound at a waypoint is confirmed before an exact constraint is set, typed letter
+-- swaps, lowercase place names in a place's slot, and a waypoint added with its level and speed
+do
+  local lab = squawk.sim.new()
+  for _, line in ipairs({ "CRE AFR56BQ A320 52.0 4.0 090 FL200 280", "CRE KLM88V E190 51.9 5.6 300 FL140 250",
+      "DEFWPT TESTA 52.3 4.5", "ADDWPT KLM88V TESTA" }) do
+    check(lab:exec(line))
+  end
+  local function tr38(text) return graph.translate(text, { sim = lab, mode = "offline", waypoints = { "TESTA" } }) end
+  local function ex(text) return said(tr38(text)) end
+  -- "hdg"/"spd" typed among TrafScript's arguments: the English reading, with the field's value
+  check_eq(ex("cre ewg12 a320 52.5 4.5 hdg 060"), "CRE EWG12 A320 52.5 4.5 60")
+  check_eq(ex("cre ewg13 a320 52.5 4.5 spd 250 hdg 100"):match("^ASK") and "ask" or "issued", "ask")
+  -- a bound ("at or above", "or below", "at least") is no exact AT constraint: asked first, the yes sets it
+  local r = tr38("klm88v cross testa at or above fl150")
+  check(r.ask ~= nil and r.ask:find("exactly FL150", 1, true) ~= nil, said(r))
+  check_eq(r.confirm.commands[1], "AT KLM88V TESTA ALT FL150")
+  r = tr38("KLM88V cross TESTA at or below FL150")
+  check(r.ask ~= nil and r.ask:find("only an exact constraint at TESTA", 1, true) ~= nil, said(r))
+  check_eq(r.confirm.commands[1], "AT KLM88V TESTA ALT FL150")
+  r = tr38("KLM88V cross TESTA at least 250 knots")
+  check(r.ask ~= nil and r.ask:find("exactly 250 knots", 1, true) ~= nil, said(r))
+  check_eq(ex("KLM88V cross TESTA at FL150"), "AT KLM88V TESTA ALT FL150")
+  -- two letters swapped or the vowels left out before a value
+  check_eq(ex("afr56bq hgd 240"), "HDG AFR56BQ 240")
+  check_eq(ex("klm88v sdp 230"), "SPD KLM88V 230")
+  check_eq(ex("afr56bq rdc 250 kts"), "SPD AFR56BQ 250")
+  check_eq(ex("klm88v drct testa"), "DIRECT KLM88V TESTA")
+  -- "v/s" for the vertical speed, "clr rte" for clearing the route, written abbreviations of known words
+  check_eq(ex("afr56bq v/s 1500 down"), "VS AFR56BQ -1500")
+  check_eq(ex("klm88v clr rte"), "DELRTE KLM88V")
+  check(ex("klm88v clr route as filed"):match("^ASK") ~= nil)
+  check_eq(ex("afr56bq inc spd 300"), "SPD AFR56BQ 300")
+  check_eq(ex("afr56bq hdg 200 vect ils"), "HDG AFR56BQ 200")
+  check_eq(ex("afr56bq r 20 degs"), "HDG AFR56BQ 110 RIGHT")
+  -- "sim x4" is the multiplier; a setting's command name asked about alone shows it
+  check_eq(ex("sim x4"), "DTMULT 4")
+  check_eq(ex("def wp gate7 at 52.25N 004.10E"), "DEFWPT GATE7 52.25 4.1")
+  check_eq(ex("klm88v spd 240 .. corr 230"), "SPD KLM88V 230")
+  check_eq(ex("zoner?"), "ZONER")
+  check_eq(ex("dt ?"), "DT")
+  -- a waypoint added with the level (and a bare speed straight after it); any other value is asked about
+  check_eq(ex("afr56bq add testa fl60 210"), "ADDWPT AFR56BQ TESTA FL60 210")
+  check_eq(ex("afr56bq add testa fl80"), "ADDWPT AFR56BQ TESTA FL80")
+  r = tr38("afr56bq add testa fl60 500")
+  check(r.ask ~= nil and r.ask:find("'500'", 1, true) ~= nil, said(r))
+  r = tr38("AFR56BQ add TESTA, hdg 210")
+  check(r.ask ~= nil and r.commands == nil, said(r))
+  -- with the navdata: a lowercase fix, navaid or airport name typed in a place's slot is that place
+  if lab:exec("POS BETUS") then
+    check_eq(ex("afr56bq add betus"), "ADDWPT AFR56BQ BETUS")
+    check_eq(ex("klm88v add betus after testa"), "ADDWPT KLM88V BETUS,,,TESTA")
+    check_eq(ex("klm88v add spy before testa"), "ADDWPT KLM88V SPY,,,,TESTA")
+    check_eq(ex("afr56bq clb fl240 then dct spy"), "ALT AFR56BQ FL240 ; ADDWPT AFR56BQ SPY ; DIRECT AFR56BQ SPY")
+    check_eq(ex("cre ewg77 a320 at betus hdg 120 fl240 spd 280"), "CRE EWG77 A320 BETUS 120 FL240 280")
+    check_eq(ex("create ewg78 a320 over spy, hdg 260, fl200, 260 kts"), "CRE EWG78 A320 SPY 260 FL200 260")
+    -- a capital anywhere leaves the line as typed
+    check(ex("AFR56BQ add betus"):match("^ASK") ~= nil, ex("AFR56BQ add betus"))
+  else
+    print("skipped: lowercase place names need navdata (SQUAWK_NAVDATA)")
   end
 end
