@@ -73,16 +73,7 @@ local function spelling_kept()
   return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept }, keywords = keywords },
     { __index = lexicon })
 end
--- (a telephony said with "Airways" or "Airlines" after it names the same airline: "Kenya Airways 212")
-local function airlines_said()
-  local out = {}
-  for _, a in ipairs(names.airlines) do
-    out[#out + 1] = a
-    for _, noun in ipairs({ "airways", "airlines" }) do out[#out + 1] = { a[1] .. " " .. noun, a[2] } end
-  end
-  return out
-end
-local NAMES = squawk.translate.tables({ airlines = airlines_said(), types = TYPES.types,
+local NAMES = squawk.translate.tables({ airlines = names.airlines, types = TYPES.types,
   designators = TYPES.designators }, spelling_kept())
 
 local M = { lexicon = lexicon, intents = {}, rules = {}, words = {} }
