@@ -504,10 +504,14 @@ end
 
 -- A speaker's label before the request ("instructor: ...", "ATC here - ...", "sim op: ...", one or two
 -- words of lexicon.speaker_roles or label_roles before a colon, or a dash set apart: "simulator-driven"
--- is no label) is dropped.
+-- is no label) is dropped, as is one role word addressed before a comma or "please" ("operator, ...",
+-- "operator please give ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local function unlabelled(text)
+  local role, said = text:match("^%s*(%a+)%s*,%s*(.+)$")
+  if not role then role, said = text:match("^%s*(%a+)%s+([Pp]lease%s.+)$") end
+  if role and SPEAKER_ROLES[role:lower()] then return said end
   local label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$")
   if not label or rest == "" or (sep == "-" and (before == "" or after == "")) then return text end
   local words = {}

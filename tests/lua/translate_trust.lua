@@ -975,6 +975,8 @@ do
   check_eq(lt("Operator: delete KLM1234"), "DEL KLM1234")
   check_eq(lt("pilot: EIN44 descend FL280"), "ALT EIN44 FL280")
   check_eq(lt("simulator operator - BAW123 heading 100"), "HDG BAW123 100")
+  check_eq(lt("operator, delete KLM1234"), "DEL KLM1234")
+  check_eq(lt("Operator please give BAW123 heading 100"), "HDG BAW123 100")
   check_eq(lt("EIN44 when you reach FL300 turn left heading 200"), "ATALT EIN44 FL300 HDG EIN44 200 LEFT")
   check_eq(lt("EIN44 once you reach flight level 300 reduce speed 250"), "ATALT EIN44 FL300 SPD EIN44 250")
   check_eq(lt("BAW123 slow to 230 then climb FL150"), "SPD BAW123 230 ; ALT BAW123 FL150")
