@@ -159,12 +159,12 @@ end
 local function know_all(v, seen)
   if type(v) == "string" then return know(v) end
   -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
-  -- keep, lexicon.foreign_digits are digits only beside another, and lexicon.atc_units name a station only
-  -- in the addressing position; lexicon.city_airports are places,
+  -- keep, lexicon.foreign_digits are digits only beside another, lexicon.atc_units name a station only
+  -- in the addressing position, lexicon.label_roles only a speaker's label; lexicon.city_airports are places,
   -- accounted for only where one is read: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
-      or v == lexicon.atc_units or v == lexicon.city_airports then
+      or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles then
     return
   end
   seen[v] = true
@@ -515,12 +515,25 @@ local function negated_values(text)
   return table.concat(pieces)
 end
 
--- A speaker's label before the request ("instructor: ...", "ATC here - ...", lexicon.speaker_roles) is dropped.
+-- A speaker's label before the request ("instructor: ...", "ATC here - ...", "sim op: ...", one or two
+-- words of lexicon.speaker_roles or label_roles before a colon, or a dash set apart: "simulator-driven"
+-- is no label) is dropped, as is one role word addressed before a comma or "please" ("operator, ...",
+-- "operator please give ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
+for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local function unlabelled(text)
-  local role, rest = text:match("^%s*(%a+)%s*[Hh]?[Ee]?[Rr]?[Ee]?%s*[:%-]%s*(.*)$")
-  if role and SPEAKER_ROLES[role:lower()] and rest ~= "" then return rest end
-  return text
+  local role, said = text:match("^%s*(%a+)%s*,%s*(.+)$")
+  if not role then role, said = text:match("^%s*(%a+)%s+([Pp]lease%s.+)$") end
+  if role and SPEAKER_ROLES[role:lower()] then return said end
+  local label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$")
+  if not label or rest == "" or (sep == "-" and (before == "" or after == "")) then return text end
+  local words = {}
+  for w in label:lower():gmatch("%a+") do words[#words + 1] = w end
+  if #words == 2 and words[2] == "here" then words[2] = nil end
+  for _, w in ipairs(words) do
+    if not SPEAKER_ROLES[w] then return text end
+  end
+  return rest
 end
 
 -- A type designator written with a hyphen after its letter ("C-17", "C-130") is that designator
@@ -2029,18 +2042,24 @@ function G:stations()
   while b <= #self.t do
     local e = b
     while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
-    if e > b and e <= #self.t and (self.t[e].text == "," or self.t[e].text == ":") and self:station_clause(b, e) then
-      self:mark_used(b, e)
-      for k = b, e - 1 do self.noted[k] = true end
+    if e > b and e <= #self.t and (self.t[e].text == "," or self.t[e].text == ":") then
+      -- the station straight after the callsign, no comma between ("Ethiopian 306 Nairobi, climb ...")
+      local from = b
+      for _, r in ipairs(self.refs) do
+        if r.kind == "aircraft" and r.b >= b and r.e > r.b and r.e < e then from = r.e end
+      end
+      if self:station_clause(from, e, from > b) then
+        self:mark_used(from, e)
+        for k = from, e - 1 do self.noted[k] = true end
+      end
     end
     b = e + 1
   end
 end
 
--- True when tokens [b, e), a clause ending in a comma or colon, are a station in the addressing position
--- (G:stations).
-function G:station_clause(b, e)
-  local after_callsign = false
+-- True when tokens [b, e), a clause ending in a comma or colon (`after_callsign`: or its part after a
+-- callsign), are a station in the addressing position (G:stations).
+function G:station_clause(b, e, after_callsign)
   for _, r in ipairs(self.refs) do
     after_callsign = after_callsign or (r.kind == "aircraft" and r.e == b - 1 and self.t[b - 1].text == ",")
   end
@@ -2056,7 +2075,7 @@ function G:station_clause(b, e)
     words[#words + 1], proper = t.text, proper and t.raw:match("^%u") ~= nil
   end
   local name = table.concat(words, " ")
-  if ATC_UNITS[name] then return true end
+  if ATC_UNITS[name] or lexicon.city_airports[name] then return true end
   if not proper then return false end
   for _, by in ipairs({ self.world.airports_named, self.world.airports_of_city }) do
     if #by(name) > 0 then return true end

@@ -240,8 +240,10 @@ return {
   then_words = { "then" },
   correction = { "correction", "disregard", "negative" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
-  -- create ..."): the label is no part of the request
+  -- create ...", "sim op: ..."): the label is no part of the request
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
+  -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
+  label_roles = { "operator", "op", "sim", "simulator", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter" },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
   -- "heading 090, oh no, right heading 200"): a run of `words` between a value and the next value,
   -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
@@ -463,7 +465,12 @@ return {
   city_airports = { munich = "munchen", nuremberg = "nurnberg", cologne = "koln bonn", vienna = "schwechat",
                     prague = "ruzyne", venice = "venezia tessera", lisbon = "lisboa", copenhagen = "kastrup",
                     warsaw = "okecie", athens = "eleftherios venizelos", turin = "torino", florence = "firenze",
-                    naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter" },
+                    naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter",
+                    delhi = "indira gandhi", ["new delhi"] = "indira gandhi", mumbai = "chhatrapati shivaji",
+                    bombay = "chhatrapati shivaji", kolkata = "netaji subhash chandra bose",
+                    calcutta = "netaji subhash chandra bose", hyderabad = "rajiv gandhi", karachi = "jinnah",
+                    lahore = "allama iqbal", kathmandu = "tribhuvan", ["addis ababa"] = "bole",
+                    ["dar es salaam"] = "mwalimu julius k nyerere" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")

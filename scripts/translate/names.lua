@@ -217,6 +217,16 @@ return {
     { "indonesia", "GIA" },  -- (Garuda)
     { "ifly", "IGO" },  -- (IndiGo)
     { "spicejet", "SEJ" },
+    { "vistara", "VTI" },
+    { "express india", "AXB" },  -- (Air India Express)
+    { "pakistan", "PIA" },
+    { "bangladesh", "BBC" },  -- (Biman Bangladesh)
+    { "srilankan", "ALK" },
+    { "tanzania", "ATC" },  -- (Air Tanzania)
+    { "rwandair", "RWD" },
+    { "skydubai", "FDB" },  -- (flydubai)
+    { "arabia", "ABY" },  -- (Air Arabia)
+    { "oman air", "OMA" },
     { "volotea", "VOE" },
     { "shuttle", "SHT" },  -- (British Airways Shuttle)
     { "hansaline", "CLH" },  -- (Lufthansa CityLine)

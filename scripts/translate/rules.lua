@@ -720,8 +720,14 @@ return function(intent, rule, words)
   end }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route rte", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
-  -- "route of klm1234?": the request opens with the noun and asks
-  rule { "route", "listrte", next = "of for", when = function(g, i) return g.t[#g.t].text == "?" and g:alone_but(i, #g.t + 1) end }
+  -- "route of klm1234?", "route of Kenya 480 please": the request opens with the noun and asks, or
+  -- names only the aircraft after it
+  rule { "route", "listrte", next = "of for", when = function(g, i)
+    if not g:alone_but(i, #g.t + 1) then return false end
+    if g.t[#g.t].text == "?" then return true end
+    local r = g:refs_in(i + 2, i + 3, "aircraft")[1]
+    return r ~= nil and g:alone_but(i, r.e)
+  end }
   rule { "listrte", "listrte" }
 
   -- information and repositioning

@@ -970,6 +970,13 @@ do
   check_eq(lt("KLM1234 turn right heading 300, oh no, left heading 100"), "HDG KLM1234 100 LEFT")
   check_eq(lt("instructor: KLM1234 climb FL300"), "ALT KLM1234 FL300")
   check_eq(lt("Controller here - BAW123 speed 220"), "SPD BAW123 220")
+  -- a label of two role words, and the simulator's or pilot's labels: "op" is no OP command
+  check_eq(lt("sim op: BAW123 speed 220"), "SPD BAW123 220")
+  check_eq(lt("Operator: delete KLM1234"), "DEL KLM1234")
+  check_eq(lt("pilot: EIN44 descend FL280"), "ALT EIN44 FL280")
+  check_eq(lt("simulator operator - BAW123 heading 100"), "HDG BAW123 100")
+  check_eq(lt("operator, delete KLM1234"), "DEL KLM1234")
+  check_eq(lt("Operator please give BAW123 heading 100"), "HDG BAW123 100")
   check_eq(lt("EIN44 when you reach FL300 turn left heading 200"), "ATALT EIN44 FL300 HDG EIN44 200 LEFT")
   check_eq(lt("EIN44 once you reach flight level 300 reduce speed 250"), "ATALT EIN44 FL300 SPD EIN44 250")
   check_eq(lt("BAW123 slow to 230 then climb FL150"), "SPD BAW123 230 ; ALT BAW123 FL150")
@@ -1149,6 +1156,26 @@ do
   check_eq(mt("Egyptair triple seven, climb flight level two eight zero"), "ALT MSR777 FL280")
   check_eq(mt("Sky Dubai double two, descend flight level two four zero"), "ALT FDB22 FL240")
   check_eq(mt("set the simulation to double speed"), "DTMULT 2")
+end
+-- South Asian and East African airlines by their ICAO telephony (PIA is "Pakistan", Biman "Bangladesh",
+-- Air Tanzania "Tanzania", SriLankan "Srilankan")
+do
+  local sa = squawk.sim.new()
+  for _, line in ipairs({ "CRE PIA207 B738 24.9 67.2 90 FL200 280", "CRE BBC85 B738 23.8 90.4 90 FL200 280",
+      "CRE ATC412 A320 -6.9 39.2 90 FL200 280", "CRE ALK226 A320 7.2 79.9 90 FL200 280" }) do
+    check(sa:exec(line))
+  end
+  local function st(text) return said(graph.translate(text, { sim = sa, mode = "offline" })) end
+  check_eq(st("Pakistan two zero seven, climb flight level two four zero"), "ALT PIA207 FL240")
+  check_eq(st("remove Bangladesh 85"), "DEL BBC85")
+  check_eq(st("Tanzania 412 turn left heading 300"), "HDG ATC412 300 LEFT")
+  check_eq(st("SriLankan 226 reduce speed 250 knots"), "SPD ALK226 250")
+  -- the telephony said with "Airways" or "Airlines"; "route of" opening a request naming only the aircraft
+  check_eq(st("Pakistan Airlines 207 descend FL180"), "ALT PIA207 FL180")
+  check_eq(st("create Tanzania Airways 77, A320, at HTDA heading 090, 6000 feet, 220 knots"),
+    "CRE ATC77 A320 HTDA 90 6000 220")
+  check_eq(st("route of Pakistan 207 please"), "LISTRTE PIA207")
+  check_eq(st("route of ALK226"), "LISTRTE ALK226")
 end
 -- Latin American and Iberian airlines by their telephony or the name they fly under
 do
@@ -1806,6 +1833,13 @@ do
   check_eq(ex("Air Portugal 237, Gander Oceanic, Mach decimal eight zero"), "SPD TAP237 M0.8")
   check_eq(ex("Air Portugal 237, Santa Maria Radio, position report received, climb FL380"), "ALT TAP237 FL380")
   check_eq(ex("create TAP9 A339 at 38N020W heading 240 FL360 Mach .80"), "CRE TAP9 A339 38 -20 240 FL360 M0.8")
+  -- the station straight after the callsign, before its comma; a city by its English name (Delhi,
+  -- Dar es Salaam) names its unit as the navdata's airport names it
+  check_eq(ex("WestJet 3 Scottish Control, turn right heading 310"), "HDG WJA3 310 RIGHT")
+  check_eq(ex("Air Portugal 237 Santa Maria, descend FL340"), "ALT TAP237 FL340")
+  check_eq(ex("Delhi, WestJet 3, climb FL360"), "ALT WJA3 FL360")
+  check_eq(ex("Shamrock 105 Dar es Salaam control, climb FL380"), "ALT EIN105 FL380")
+  asked("Shamrock 105 Ryanair, climb FL380")
   -- a place word anywhere else is still asked about
   asked("Shamrock 105 climb FL380 Shanwick")
   asked("Shamrock 105, Shanwick climb FL380")
