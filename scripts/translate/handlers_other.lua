@@ -615,8 +615,17 @@ return function(H, f, compass)
 
   -- The place `ids` (the idents `phrase` names) stand for: the one ident, or with 2..most of
   -- them the first, asking which `kind` ("navaid", "airport") was meant; nil for none or too many.
+  -- (one of them written beside the name, "destination Haneda, RJTT", is the one meant)
   function m:one_named(ids, kind, phrase, most)
     if #ids == 1 then return ids[1] end
+    for k, t in ipairs(self.t) do
+      for _, id in ipairs(ids) do
+        if #ids <= most and t.kind == "word" and t.raw == id then
+          self:explain(k, k + 1)
+          return id
+        end
+      end
+    end
     if #ids > 1 and #ids <= most then
       self:need(string.format("Which %s is '%s': %s?", kind, phrase, table.concat(ids, " or ")))
       return ids[1]

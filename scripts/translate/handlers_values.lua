@@ -110,6 +110,24 @@ return function(H, f, wrap, compass)
         table.remove(with_unit, 1)
       end
     end
+    -- "8900 metres, that is flight level 291": one level said in metres and restated in feet or as a flight
+    -- level (China's metric table rounds to within 100 ft); the restatement counts, a disagreement is asked
+    a, b = with_unit[1], with_unit[2]
+    local function metric(q) return self:word(q.e - 1, "@metres") end
+    if b and metric(a) ~= metric(b) and self:word_in(a.e, b.b, "that which ie i.e equals meaning thats") then
+      local restates = true
+      for k = a.e, b.b - 1 do restates = restates and (self.t[k].kind == "punct" or self:word(k, "@restating")) end
+      if restates then
+        if math.abs(a.value - b.value) > 100 then
+          return self:need(string.format("Which level for %s: %s or %s? They differ.", ids[1],
+            f.alt(a.value, a.fl), f.alt(b.value, b.fl)))
+        end
+        local kept = metric(a) and b or a
+        self:take(metric(a) and a or b)
+        self:explain(a.e, b.b)
+        with_unit = { kept }
+      end
+    end
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
     local now = self:state(ids[1])
     local dir = self:direction(s)
@@ -172,7 +190,13 @@ return function(H, f, wrap, compass)
     if fl and ft > 60000 then
       return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
     end
-    if not fl then
+    if not fl and q.kind == "alt" and self:word(q.e - 1, "@metres") then
+      -- a level in metres is the whole number said, converted exactly (8100 m = 26575 ft); a spoken one
+      -- is whole hundreds of metres ("eight thousand one hundred metres"), else a word was misheard
+      if ft < 100 or ft > 60000 or (not q.number.typed and q.number.value % 100 ~= 0) then
+        return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(q.number.value) .. " metres.")
+      end
+    elseif not fl then
       local r = self:repaired(q, ft, 0, 60000, 100)
       if not r then return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(ft) .. " ft.") end
       if r < 100 and not q.number.typed then r = r * 1000 end

@@ -553,6 +553,10 @@ return {
   altimeter = { "qnh", "altimeter", "qfe" },
   -- units that make an altitude a level in feet
   feet = { "ft", "feet", "foot" },
+  -- units that make an altitude a level in metres (the quantity's value is already in feet)
+  metres = { "m", "metres", "meters", "metre", "meter" },
+  -- words that restate a level in another unit ("9200 metres, that is flight level 301", "which is")
+  restating = { "that", "thats", "is", "which", "ie", "i.e", "equals", "meaning" },
   vertical = { "vertical", "height", "zonedh" },
   zone_radius = { "radius", "zoner" },
   -- bare nouns naming what to show, after a handled instruction

@@ -393,6 +393,24 @@ check_eq(said(tr("KLM77 descend to 9 000 feet")), "ALT KLM77 9000")
 check_eq(said(tr("KLM1234 vertical speed minus 5 metres per second")), "VS KLM1234 -984")
 -- metres and kilometres convert without rounding beyond the unit said: whole feet, tenths of a mile
 check_eq(said(tr("KLM1234 descend to 3000 metres")), "ALT KLM1234 9843")
+-- a level in metres said in words is the whole number said, converted exactly; one that is not whole
+-- hundreds of metres is asked about; feet, knots and headings said the same way keep their whole number
+check_eq(said(tr("KLM1234 descend to seven thousand two hundred metres")), "ALT KLM1234 23622")
+check_eq(said(tr("DLH4AX climb and maintain one zero thousand one hundred meters")), "ALT DLH4AX 33136")
+check_eq(said(tr("KLM77 descend to nine hundred metres QNH one zero one six")), "ALT KLM77 2953")
+check_eq(said(tr("KLM77 descend to two thousand one hundred metres on QNH 1018")), "ALT KLM77 6890")
+check_eq(said(tr("KLM1234 descend to seven thousand two hundred and fifty metres")),
+  "ASK Which altitude for KLM1234? I heard 7250 metres.")
+check_eq(said(tr("KLM77 descend to eight thousand one hundred feet")), "ALT KLM77 8100")
+check_eq(said(tr("KLM77 reduce speed two hundred twenty knots, turn left heading two hundred seventy")),
+  "SPD KLM77 220 ; HDG KLM77 270 LEFT")
+-- the same level restated in the other unit ("that is", "which is", "i.e."): the flight level or feet
+-- said count when they agree within 100 ft (China's metric table), else squawk asks
+check_eq(said(tr("DLH4AX descend to eight thousand nine hundred metres, that is flight level two niner one")),
+  "ALT DLH4AX FL291")
+check_eq(said(tr("DLH4AX descend to FL266, which is 8100 metres")), "ALT DLH4AX FL266")
+check(said(tr("DLH4AX descend to 8900 metres, i.e. FL271")):find("^ASK Which level for DLH4AX") ~= nil,
+  "a restatement that disagrees is asked about")
 -- metres per second beyond any climb rate are an airspeed
 check_eq(said(tr("KLM1234 set the airspeed to 120 metres per second")), "SPD KLM1234 233")
 check_eq(said(tr("KLM1234 fly 100 m/s")), "SPD KLM1234 194")
@@ -2218,5 +2236,20 @@ do
     check(ex("AFR56BQ add betus"):match("^ASK") ~= nil, ex("AFR56BQ add betus"))
   else
     print("skipped: lowercase place names need navdata (SQUAWK_NAVDATA)")
+  end
+end
+
+-- Cycle 18: a name the navdata gives to two airports, written with one's ICAO code beside it, is that
+-- airport; the name alone is asked about
+do
+  local east = squawk.sim.new()
+  check(east:exec("CRE CPA520 A333 34.9 138.5 060 FL300 280"))
+  local function ex(text) return said(graph.translate(text, { sim = east, mode = "offline" })) end
+  if #east:airports_named("munchen") == 1 then
+    check_eq(ex("Cathay 520 destination Haneda, RJTT"), "DEST CPA520 RJTT")
+    check_eq(ex("CPA520 destination Haneda (RJTY)"), "DEST CPA520 RJTY")
+    check(ex("Cathay 520 destination Haneda"):find("^ASK Which airport is 'haneda'") ~= nil, "the name alone")
+  else
+    print("skipped: airports sharing a name need navdata (SQUAWK_NAVDATA)")
   end
 end
