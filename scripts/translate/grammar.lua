@@ -1148,6 +1148,12 @@ function G:segments(b, e)
     if intent and not self:in_reason(i) then
       trig[#trig + 1] = { intent = intent, pos = i }
       self.triggers[i] = true
+      -- ("note for the log: run 4, MVP on"): a note's text after its colon is the note, whole
+      local colon = false
+      for k = i + 1, math.min(e, i + 5) - 1 do
+        colon = colon or (intent == "echo" and self.t[k].kind == "punct" and self.t[k].text == ":")
+      end
+      if colon then break end
     end
   end
   local segs = {}
