@@ -261,6 +261,8 @@ return {
     { "cityhopper", "KLC" },
     { "klm cityhopper", "KLC" },
     { "tap air portugal", "TAP" },
+    { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
+    { "spirit airlines", "NKS" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },
