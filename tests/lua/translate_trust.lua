@@ -2220,3 +2220,28 @@ do
     print("skipped: lowercase place names need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- a note's text after its colon is the note, whole (no setting inside it is run); a bare number left after
+-- MOVE's position is its altitude when it reads as one, else asked; "on the ground" in a creation is 0 ft and
+-- 0 kt; a correction naming "just"/"only" some of the aircraft takes back the others (and, with a value after,
+-- the values said before)
+do
+  local s40 = squawk.sim.new()
+  for _, line in ipairs({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+      "CRE NKS409 A320 52.0 4.0 025 FL200 250", "CRE BAW8CK A320 52.2 4.2 300 FL250 280" }) do
+    check(s40:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = s40, mode = "offline" })) end
+  check_eq(ex("note for the log: run 4, MVP on, PZ 5 nm"), "ECHO run 4 , MVP on , PZ 5 nm")
+  check_eq(ex("log: reso off now, dt 0.5 and FF 10 min"), "ECHO reso off now , dt 0.5 and FF 10 min")
+  check_eq(ex("move KLM77 to 52.3, 4.6 and keep it at 4000"), "MOVE KLM77 52.3 4.6 4000")
+  check_eq(ex("teleport DLH4AX to 52.5 4.1 at 12000"), "MOVE DLH4AX 52.5 4.1 12000")
+  check_eq(ex("reposition KLM77 at 52.3 4.6, 250"),
+    "ASK To move KLM77 I did not place '250'. Is it an altitude, heading or speed?")
+  check_eq(ex("create KLM900, B738, at 52.3 4.7, heading 240, on the ground"), "CRE KLM900 B738 52.3 4.7 240 0 0")
+  check_eq(ex("spawn DLH900 A320 at 52.31 4.76 hdg 180 on ground"), "CRE DLH900 A320 52.31 4.76 180 0 0")
+  check(ex("create KLM901 B738 at 52.3 4.7 heading 240 FL100 on the ground"):match("^ASK .*on the ground") ~= nil)
+  check_eq(ex("KLM77 and DLH4AX climb FL320, sorry, just DLH4AX"), "ALT DLH4AX FL320")
+  check_eq(ex("put KLM77 and BAW8CK at FL180 ... actually only BAW8CK, FL190"), "ALT BAW8CK FL190")
+  check_eq(ex("descend the Spirit and KLM77 to FL140, no wait, only the Spirit to FL120"), "ALT NKS409 FL120")
+end
