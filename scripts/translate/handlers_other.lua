@@ -120,6 +120,13 @@ return function(H, f, compass)
     for k = 2, #types do
       if self:word_in(types[k - 1].e, types[k].b, "@correction") then actype = types[k].name end
     end
+    -- ("create a Citation, EJA412, C56X"): a family's name said with a designator of that family describes it
+    local nicknames = require("translate.types").nicknames
+    for i = s.b, s.e - 1 do
+      for _, p in ipairs(actype and self.t[i].kind == "word" and nicknames[self.t[i].text] or {}) do
+        if actype:match(p) then self:explain(i, i + 1) end
+      end
+    end
     local model, near
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
       if r.exists then near = near or r.name end

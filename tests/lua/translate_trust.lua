@@ -2244,4 +2244,11 @@ do
   check_eq(ex("KLM77 and DLH4AX climb FL320, sorry, just DLH4AX"), "ALT DLH4AX FL320")
   check_eq(ex("put KLM77 and BAW8CK at FL180 ... actually only BAW8CK, FL190"), "ALT BAW8CK FL190")
   check_eq(ex("descend the Spirit and KLM77 to FL140, no wait, only the Spirit to FL120"), "ALT NKS409 FL120")
+  -- business and general-aviation designators written, "King Air 350/200" said; a family's name said with a
+  -- designator of that family describes it, with another it is asked about
+  check_eq(ex("create a Citation, EJA412, C56X, at 52.3 4.7 heading 030, 5000 ft, 210 kts"),
+    "CRE EJA412 C56X 52.3 4.7 30 5000 210")
+  check_eq(ex("create N441CP, a King Air 350, at 52.2 4.6 heading 270 at 8000 feet and 230 knots"),
+    "CRE N441CP B350 52.2 4.6 270 8000 230")
+  check(ex("create a Citation, EJA413, B738, at 52.3 4.7 heading 030, 5000 ft, 210 kts"):match("'Citation'") ~= nil)
 end
