@@ -2251,4 +2251,9 @@ do
   check_eq(ex("create N441CP, a King Air 350, at 52.2 4.6 heading 270 at 8000 feet and 230 knots"),
     "CRE N441CP B350 52.2 4.6 270 8000 230")
   check(ex("create a Citation, EJA413, B738, at 52.3 4.7 heading 030, 5000 ft, 210 kts"):match("'Citation'") ~= nil)
+  -- "vectors for <anything>" says what a vector is for: noted, the heading flown
+  local r40 = graph.translate("KLM77 turn right heading 090, vectors for Rotterdam, descend 5000", { sim = s40, mode = "offline" })
+  check_eq(said(r40), "HDG KLM77 90 RIGHT ; ALT KLM77 5000")
+  check(r40.note ~= nil and r40.note:find("vectors for Rotterdam", 1, true) ~= nil, tostring(r40.note))
+  check_eq(ex("DLH4AX left heading 200, vectors for spacing"), "HDG DLH4AX 200 LEFT")
 end
