@@ -2256,4 +2256,8 @@ do
   check_eq(said(r40), "HDG KLM77 90 RIGHT ; ALT KLM77 5000")
   check(r40.note ~= nil and r40.note:find("vectors for Rotterdam", 1, true) ~= nil, tostring(r40.note))
   check_eq(ex("DLH4AX left heading 200, vectors for spacing"), "HDG DLH4AX 200 LEFT")
+  -- "down to"/"up to" opening a clause after another instruction, a level after "to", changes level
+  check_eq(ex("KLM77 left 270, down to 3000"), "HDG KLM77 270 LEFT ; ALT KLM77 3000")
+  check_eq(ex("BAW8CK heading 310, then up to FL280"), "HDG BAW8CK 310 ; ALT BAW8CK FL280")
+  check(ex("KLM77 slow to 180, down to 250"):match("^ASK .*'250'") ~= nil)
 end
