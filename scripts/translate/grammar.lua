@@ -1148,6 +1148,12 @@ function G:segments(b, e)
     if intent and not self:in_reason(i) then
       trig[#trig + 1] = { intent = intent, pos = i }
       self.triggers[i] = true
+      -- ("note for the log: run 4, MVP on"): a note's text after its colon is the note, whole
+      local colon = false
+      for k = i + 1, math.min(e, i + 5) - 1 do
+        colon = colon or (intent == "echo" and self.t[k].kind == "punct" and self.t[k].text == ":")
+      end
+      if colon then break end
     end
   end
   local segs = {}
@@ -1354,7 +1360,9 @@ function G:self_corrected()
     end
     local p = a - 1  -- the last instruction word before the run
     while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
-    if marked and c <= #self.t and p >= 1 then
+    -- (with no instruction word before the run, "put the Fedex and the Spirit at FL350 ... actually just the
+    -- Spirit", only the aircraft narrowed)
+    if marked and c <= #self.t and (p >= 1 or (self:word(c, SC_ONLY) and self:has_ref(c + 1, c + 3, "aircraft"))) then
       local b = a
       if p == a - 1 then
         -- an instruction cut off: taken back, with the "and" that joined it
@@ -1367,7 +1375,39 @@ function G:self_corrected()
         -- the first name or value since the last instruction word, the start of what is said again
         local q = p + 1
         while q < b and not (self:has_ref(q, q + 1, "waypoint") or #self:quantities(q, q + 1) > 0) do q = q + 1 end
-        if kept and (e > #self.t or self.t[e].kind == "punct") then
+        -- ("the Fedex and the Spirit, FL350 ... actually just the Spirit, FL360"): the aircraft named after
+        -- "just" are the only ones instructed; the others named before are taken back, and a value said
+        -- after them replaces the values said since the last instruction word
+        local n = self:word(c + 1, "the") and c + 2 or c + 1
+        local only = {}
+        for _, r in ipairs(self.refs) do
+          if r.kind == "aircraft" and r.b >= n and (r.b == n or self:skip_fillers(only[#only].e, true) == r.b
+              or (self:word(only[#only].e, "and") and r.b <= only[#only].e + 2)) then
+            only[#only + 1] = r
+          end
+        end
+        if #only > 0 and not kept then
+          local named = {}
+          for _, r in ipairs(only) do named[r.name] = true end
+          local after = self:skip_fillers(only[#only].e, false)
+          if self:word(after, "to at") then after = after + 1 end
+          local again = (self:quantities(after, #self.t + 1)[1] or {}).b == after
+          local refs = {}
+          for _, r in ipairs(self.refs) do
+            local back = r.b < a and ((r.kind == "aircraft" and not named[r.name]) or (again and r.b >= q))
+            if back then
+              self:mark_used(r.b, r.e)
+              for k = r.b, r.e - 1 do self.noted[k] = true end
+            else
+              refs[#refs + 1] = r
+            end
+          end
+          self.refs = refs
+          local from = again and q < b and q or b
+          self:mark_used(from, n)
+          for k = from, n - 1 do self.noted[k] = true end
+          a = n
+        elseif kept and (e > #self.t or self.t[e].kind == "punct") then
           self.kept = kept
           self:mark_used(b, e)
           for k = b, e - 1 do self.noted[k] = true end

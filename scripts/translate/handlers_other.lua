@@ -120,6 +120,13 @@ return function(H, f, compass)
     for k = 2, #types do
       if self:word_in(types[k - 1].e, types[k].b, "@correction") then actype = types[k].name end
     end
+    -- ("create a Citation, EJA412, C56X"): a family's name said with a designator of that family describes it
+    local nicknames = require("translate.types").nicknames
+    for i = s.b, s.e - 1 do
+      for _, p in ipairs(actype and self.t[i].kind == "word" and nicknames[self.t[i].text] or {}) do
+        if actype:match(p) then self:explain(i, i + 1) end
+      end
+    end
     local model, near
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
       if r.exists then near = near or r.name end
@@ -241,6 +248,19 @@ return function(H, f, compass)
           and not t.number_word and not L.phonetic[t.text] and not self.u:used(typed) and #self:refs_in(typed, typed + 1) == 0 then
         named_at = t.text:upper()
         self:explain(typed, typed + 1)
+      end
+    end
+    -- "on the ground", "on ground": altitude 0 ft and speed 0 kt; with a level or speed said as well, asked
+    for i = s.trig, s.e - 1 do
+      local g = self:word(i, "on") and (self:word(i + 1, "the") and i + 2 or i + 1)
+      if g and self:word(g, "ground") then
+        if alt or spd or mach then
+          return self:need(string.format("Should %s be on the ground (altitude 0, speed 0) or at the level and speed said?",
+            id and id:upper() or "the new aircraft"))
+        end
+        alt, spd, fl = 0, 0, false
+        self:explain(i, g + 1)
+        break
       end
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
@@ -500,6 +520,19 @@ return function(H, f, compass)
       if q.kind == "speed" and not opt[3] then opt[3] = f.int(q.value) end
       if q.kind == "mach" and not opt[3] then opt[3] = f.mach(q.value) end
       if q.kind == "vs" and not opt[4] then opt[4] = f.int(q.value) end
+    end
+    -- a bare number left after the position is the altitude when it reads as one (whole hundreds of feet,
+    -- "and keep it at 3500"); any other is asked, never dropped
+    for _, q in ipairs(qs) do
+      local read = self.taken[q.b] ~= nil or (lat and math.abs(q.value - lat) < 1e-9)
+        or (lon and math.abs(q.value - lon) < 1e-9)
+      if q.kind == "plain" and q.b > s.trig and not read and not self:in_reason(q.b) then
+        if opt[1] or q.value < 1000 or q.value > 60000 or q.value % 100 ~= 0 then
+          return self:need(string.format("To move %s I did not place '%s'. Is it an altitude, heading or speed?",
+            id, self:raw(q.b, q.e)))
+        end
+        opt[1] = f.int(q.value)
+      end
     end
     local last = 0
     for k = 1, 4 do if opt[k] then last = k end end

@@ -407,7 +407,7 @@ return {
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",
-      near = { "runway", "rwy", "ils", "final", "approach", "localizer", "localiser", "landing" } },
+      near = { "runway", "rwy", "ils", "final", "approach", "localizer", "localiser", "landing", "for" } },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },

@@ -261,6 +261,8 @@ return {
     { "cityhopper", "KLC" },
     { "klm cityhopper", "KLC" },
     { "tap air portugal", "TAP" },
+    { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
+    { "spirit airlines", "NKS" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },
@@ -283,5 +285,6 @@ return {
     "A306", "A310", "A318", "A319", "A320", "A321", "A19N", "A20N", "A21N", "A332", "A333", "A339", "A343", "A346",
     "A359", "A35K", "A388", "BCS1", "BCS3", "E170", "E175", "E75L", "E75S", "E190", "E195", "E290", "E145", "CRJ2",
     "CRJ7", "CRJ9", "CRJX", "F100", "F70", "F50", "MD11", "MD80", "DC10", "C25A", "C560", "GLF4", "GLF5", "GLEX",
-    "CONC", "C172", "C152", "C182", "C208", "PC12", "BE20", "B350", "SR22", "A400", "C130", "C17", "AT45", "AT76", "DH8D" },
+    "CONC", "C172", "C152", "C182", "C208", "PC12", "BE20", "B350", "C56X", "C68A", "C25B", "E55P", "CL35",
+    "CL60", "LJ45", "GLF6", "BE40", "E135", "P28A", "SR22", "A400", "C130", "C17", "AT45", "AT76", "DH8D" },
 }

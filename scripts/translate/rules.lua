@@ -224,6 +224,15 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "N73WX left 270, down to 3000", "..., then up to FL240": opening a clause, a level after "to"
+  rule { "up down", "alt", next = "to", not_near = { 3, "speed knots kts" }, not_prev = { 3, "speed spd" },
+         when = function(g, i)
+    local p = g.t[i - 1]
+    if not (p and (p.kind == "punct" or g:word(i - 1, "then and"))) then return false end
+    local q = g:quantities(i + 2, i + 3)[1]
+    return q ~= nil and q.b == i + 2
+      and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0))
+  end }
   -- "left 40 and down 4000 ft": an amount in feet after the adverb is a change of level
   rule { "up down", "alt", near = { 2, "@feet" }, when = function(g, i)
     local t = g.t[i + 1]

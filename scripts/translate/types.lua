@@ -86,6 +86,8 @@ local function pattern_names(d)
   if c then out[#out + 1] = { "pilatus", "pc-" .. c } end
   c = d:match("^SF(%d%d)$")
   if c then out[#out + 1] = { "saab", c .. "0" } end
+  if d == "B350" then out[#out + 1] = { "beechcraft", "king air 350" } end
+  if d == "BE20" then out[#out + 1] = { "beechcraft", "king air 200" } end
   if d == "E75L" or d == "E75S" then out[#out + 1] = { "embraer", "e175" }; out[#out + 1] = { "embraer", "175" } end
   return out
 end

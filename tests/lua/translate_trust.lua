@@ -2253,3 +2253,44 @@ do
     print("skipped: airports sharing a name need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- a note's text after its colon is the note, whole (no setting inside it is run); a bare number left after
+-- MOVE's position is its altitude when it reads as one, else asked; "on the ground" in a creation is 0 ft and
+-- 0 kt; a correction naming "just"/"only" some of the aircraft takes back the others (and, with a value after,
+-- the values said before)
+do
+  local s40 = squawk.sim.new()
+  for _, line in ipairs({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+      "CRE NKS409 A320 52.0 4.0 025 FL200 250", "CRE BAW8CK A320 52.2 4.2 300 FL250 280" }) do
+    check(s40:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = s40, mode = "offline" })) end
+  check_eq(ex("note for the log: run 4, MVP on, PZ 5 nm"), "ECHO run 4 , MVP on , PZ 5 nm")
+  check_eq(ex("log: reso off now, dt 0.5 and FF 10 min"), "ECHO reso off now , dt 0.5 and FF 10 min")
+  check_eq(ex("move KLM77 to 52.3, 4.6 and keep it at 4000"), "MOVE KLM77 52.3 4.6 4000")
+  check_eq(ex("teleport DLH4AX to 52.5 4.1 at 12000"), "MOVE DLH4AX 52.5 4.1 12000")
+  check_eq(ex("reposition KLM77 at 52.3 4.6, 250"),
+    "ASK To move KLM77 I did not place '250'. Is it an altitude, heading or speed?")
+  check_eq(ex("create KLM900, B738, at 52.3 4.7, heading 240, on the ground"), "CRE KLM900 B738 52.3 4.7 240 0 0")
+  check_eq(ex("spawn DLH900 A320 at 52.31 4.76 hdg 180 on ground"), "CRE DLH900 A320 52.31 4.76 180 0 0")
+  check(ex("create KLM901 B738 at 52.3 4.7 heading 240 FL100 on the ground"):match("^ASK .*on the ground") ~= nil)
+  check_eq(ex("KLM77 and DLH4AX climb FL320, sorry, just DLH4AX"), "ALT DLH4AX FL320")
+  check_eq(ex("put KLM77 and BAW8CK at FL180 ... actually only BAW8CK, FL190"), "ALT BAW8CK FL190")
+  check_eq(ex("descend the Spirit and KLM77 to FL140, no wait, only the Spirit to FL120"), "ALT NKS409 FL120")
+  -- business and general-aviation designators written, "King Air 350/200" said; a family's name said with a
+  -- designator of that family describes it, with another it is asked about
+  check_eq(ex("create a Citation, EJA412, C56X, at 52.3 4.7 heading 030, 5000 ft, 210 kts"),
+    "CRE EJA412 C56X 52.3 4.7 30 5000 210")
+  check_eq(ex("create N441CP, a King Air 350, at 52.2 4.6 heading 270 at 8000 feet and 230 knots"),
+    "CRE N441CP B350 52.2 4.6 270 8000 230")
+  check(ex("create a Citation, EJA413, B738, at 52.3 4.7 heading 030, 5000 ft, 210 kts"):match("'Citation'") ~= nil)
+  -- "vectors for <anything>" says what a vector is for: noted, the heading flown
+  local r40 = graph.translate("KLM77 turn right heading 090, vectors for Rotterdam, descend 5000", { sim = s40, mode = "offline" })
+  check_eq(said(r40), "HDG KLM77 90 RIGHT ; ALT KLM77 5000")
+  check(r40.note ~= nil and r40.note:find("vectors for Rotterdam", 1, true) ~= nil, tostring(r40.note))
+  check_eq(ex("DLH4AX left heading 200, vectors for spacing"), "HDG DLH4AX 200 LEFT")
+  -- "down to"/"up to" opening a clause after another instruction, a level after "to", changes level
+  check_eq(ex("KLM77 left 270, down to 3000"), "HDG KLM77 270 LEFT ; ALT KLM77 3000")
+  check_eq(ex("BAW8CK heading 310, then up to FL280"), "HDG BAW8CK 310 ; ALT BAW8CK FL280")
+  check(ex("KLM77 slow to 180, down to 250"):match("^ASK .*'250'") ~= nil)
+end
