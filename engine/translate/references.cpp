@@ -384,8 +384,10 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       // a designator split by speech recognition ("speed bird", "ryan air") is that designator
       auto icao = names.airline_by_telephony(phrase);
       if (!icao && len > 1) icao = names.airline_by_telephony(joined);
-      // a telephony said with "Airways" or "Airlines" after it is that airline ("Kenya Airways 212")
-      if (!icao && len > 1 && (t[i + len - 1].text == "airways" || t[i + len - 1].text == "airlines"))
+      // a telephony said with "Airways" or "Airlines" after it is that airline ("Kenya Airways
+      // 212")
+      if (!icao && len > 1 &&
+          (t[i + len - 1].text == "airways" || t[i + len - 1].text == "airlines"))
         icao = names.airline_by_telephony(std::string_view(phrase).substr(0, phrase.rfind(' ')));
       if (!icao) continue;
       Suffix suf = read_suffix(t, i + len, used, names, t[i].text);
