@@ -53,6 +53,18 @@ rl::TrainConfig small_run() {
   return tc;
 }
 
+// A diagonal Gaussian policy of 2 observations and 2 actions with one hidden
+// layer of 4 (24 parameters), initialised from seed 1.
+Result<std::unique_ptr<rl::MlpPolicy>> small_gaussian() {
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 2;
+  spec.hidden = {4};
+  spec.head = "gaussian";
+  spec.action_size = 2;
+  Rng init(1);
+  return rl::MlpPolicy::make(spec, init);
+}
+
 }  // namespace
 
 TEST_CASE("the action grid: K levels per component, component j from digit j of the class") {
@@ -321,13 +333,7 @@ TEST_CASE("observation_stats: each number's mean and deviation over the episodes
   // sign2.lua's observations do not depend on the actions: the statistics of
   // the policy's episodes are those of the same episodes played with zeros.
   auto envs = batch(repo("tests/data/gym/sign2.lua"), 3, 0);
-  rl::MlpPolicySpec spec;
-  spec.obs_size = 2;
-  spec.hidden = {4};
-  spec.head = "gaussian";
-  spec.action_size = 2;
-  Rng init(1);
-  auto p = rl::MlpPolicy::make(spec, init);
+  auto p = small_gaussian();
   REQUIRE(p);
   auto stats = rl::observation_stats(**p, *envs, 5, 50);
   REQUIRE_MESSAGE(stats.is_ok(), stats.status().message());
@@ -486,13 +492,7 @@ TEST_CASE("imitation of a two-component rule: every component labelled, log sigm
       CHECK(log_std_after[1] < log_std_before[1] - 1.0);  // the constant component's sigma shrinks
     }
   }
-  rl::MlpPolicySpec small;
-  small.obs_size = 2;
-  small.hidden = {4};
-  small.head = "gaussian";
-  small.action_size = 2;
-  Rng init(1);
-  auto p = rl::MlpPolicy::make(small, init);
+  auto p = small_gaussian();
   REQUIRE(p);
   rl::ImitationConfig too_many;
   too_many.held_tail = 1000;
