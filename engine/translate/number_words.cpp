@@ -185,6 +185,10 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
       n.has_thousand = true;
       ++j;
     } else if (w == "and" && (n.has_hundred || n.has_thousand) && group_at(t, j + 1)) {
+      // "one zero thousand and niner thousand": a second thousands after "and" is a value of its own
+      size_t k = j + 1;
+      while (k < t.size() && t[k].kind == TokKind::kWord && is_number_word(t[k]) && t[k].text != "thousand") ++k;
+      if (n.has_thousand && is_word(t, k, "thousand")) break;
       ++j;
     } else if ((w == "ah" || w == "uh" || w == "um" || w == "er") && group_at(t, j + 1)) {
       ++j;  // a hesitation inside a number: "one ah zero eight zero"

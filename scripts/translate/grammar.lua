@@ -517,34 +517,35 @@ end
 
 -- A speaker's label before the request ("instructor: ...", "ATC here - ...", "sim op: ...", one or two
 -- words of lexicon.speaker_roles or label_roles before a colon, or a dash set apart: "simulator-driven"
--- is no label) is dropped, as is one role word addressed before a comma or "please" ("operator, ...",
--- "operator please give ...").
+-- is no label) is dropped, as is a role of one or two words addressed before a comma or "please"
+-- ("operator, ...", "pseudo-pilot, ...", "sim op please give ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
+local function all_roles(words)
+  for w in words:lower():gmatch("%a+") do
+    if not SPEAKER_ROLES[w] then return false end
+  end
+  return true
+end
 local function unlabelled(text)
-  local role, said = text:match("^%s*(%a+)%s*,%s*(.+)$")
-  if not role then role, said = text:match("^%s*(%a+)%s+([Pp]lease%s.+)$") end
-  if role and SPEAKER_ROLES[role:lower()] then return said end
+  local role, said = text:match("^%s*(%a+[%s%-]?%a*)%s*,%s*(.+)$")
+  if not role then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s+([Pp]lease%s.+)$") end
+  if role and all_roles(role) then return said end
   local label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$")
   if not label or rest == "" or (sep == "-" and (before == "" or after == "")) then return text end
-  local words = {}
-  for w in label:lower():gmatch("%a+") do words[#words + 1] = w end
-  if #words == 2 and words[2] == "here" then words[2] = nil end
-  for _, w in ipairs(words) do
-    if not SPEAKER_ROLES[w] then return text end
-  end
+  if not all_roles((label:lower():gsub("%s+here$", ""))) then return text end
   return rest
 end
 
--- A type designator written with a hyphen after its letter ("C-17", "C-130") is that designator
--- when squawk knows it.
+-- A type designator written with a hyphen after its letter or two ("C-17", "C-130", "MD-11", "DC-10")
+-- is that designator when squawk knows it.
 local KNOWN_TYPES
 local function hyphened_types(text)
   if not KNOWN_TYPES then
     KNOWN_TYPES = {}
     for _, d in ipairs(TYPES.designators) do KNOWN_TYPES[d:upper()] = true end
   end
-  return (text:gsub("%f[%w](%a)%-(%d%d%d?)%f[%W]", function(a, n)
+  return (text:gsub("%f[%w](%a%a?)%-(%d%d%d?)%f[%W]", function(a, n)
     if KNOWN_TYPES[(a .. n):upper()] then return a .. n end
     return nil
   end))
@@ -1601,6 +1602,29 @@ function G:direct_resumes_nav()
   end
 end
 
+-- The navaid said by its name after "cross" at token i ("cross Bowie at and maintain 13000": the UKW
+-- VORTAC, one word or two before "at") within lexicon.navaid_range_nm of one aircraft flying: a ref
+-- {kind = "waypoint", name, b, e} of its words, else nil. Reads only; explains nothing.
+function G:crossed_navaid(i)
+  local named = self.world.navaids_named
+  if not named or not self:word(i, "cross crossing crosses") then return nil end
+  for e = i + 2, i + 3 do
+    local words, ok = {}, true
+    for k = i + 1, e - 1 do
+      local t = self.t[k]
+      ok = ok and t ~= nil and t.kind == "word" and t.alpha and not t.keyword and not t.number_word
+      words[#words + 1] = t and t.text
+    end
+    if ok and self:word(e, "at") then
+      for _, a in ipairs(self.fleet) do
+        local ids = a.lat and named(table.concat(words, " "), a.lat, a.lon, lexicon.navaid_range_nm) or {}
+        if #ids == 1 then return { kind = "waypoint", name = ids[1], b = i + 1, e = e } end
+      end
+    end
+  end
+  return nil
+end
+
 -- "cross CAMRN at one one thousand", "cross ARTIP at 220 knots": a crossing
 -- restriction at a waypoint of the aircraft's route is BlueSky's AT
 -- constraint ("AT id WPT ALT alt" / "SPD spd"); true when it was emitted.
@@ -1608,7 +1632,17 @@ end
 -- an AT condition the grammar does not translate: asked, never issued at once.
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
-  for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+  -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at")
+  local refs = self:refs_in(s.b, s.e, "waypoint")
+  for i = s.b, s.e - 1 do
+    local r = self:crossed_navaid(i)
+    if r and (#refs == 0 or #self:refs_in(r.b, r.e, "waypoint") > 0) then
+      refs = { r }
+      self:explain(r.b, r.e)
+      break
+    end
+  end
+  for _, r in ipairs(refs) do
     -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200", "put a constraint on AEA44 at ORBIS,
     -- FL250", "at NORKU cross FL200", "at ELDAR speed 250": a constraint at a waypoint
     local crossed = self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at")
@@ -2506,6 +2540,51 @@ function G:not_simulated()
   return "squawk does not simulate " .. table.concat(found, ", ") .. ": nothing was sent for that."
 end
 
+-- "Alaska 1294 and United 1562, descend and maintain 10000 and 9000 respectively": with "respectively",
+-- the values said after the aircraft go to them in the order both were said, one value each, when the
+-- request issued one ALT, SPD or HDG per aircraft; any other shape is asked about (never one value for all).
+local RESPECTIVE = {
+  ALT = function(q) return (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) and handlers.format.alt(q.value, q.fl) end,
+  SPD = function(q)
+    if q.kind == "mach" then return handlers.format.mach(q.value) end
+    return (q.kind == "speed" or q.kind == "plain") and handlers.format.int(q.value)
+  end,
+  HDG = function(q) return (q.kind == "heading" or q.kind == "plain") and handlers.format.int(q.value) end,
+}
+function G:respectively()
+  local w = self:find_word(1, #self.t + 1, "respectively")
+  if w > #self.t then return end
+  local ids, seen, last = {}, {}, 0
+  for _, r in ipairs(self:refs_in(1, w, "aircraft")) do
+    if not seen[r.name] then ids[#ids + 1], seen[r.name] = r.name, true end
+    last = math.max(last, r.e)
+  end
+  local cmd = #ids >= 2 and #self.out == #ids and self.out[1]:match("^(%u+) ")
+  local values = {}
+  for _, q in ipairs(RESPECTIVE[cmd] and self:quantities(last, w) or {}) do
+    local v = RESPECTIVE[cmd](q)
+    if v then values[#values + 1] = { q = q, text = v } end
+  end
+  local lines = {}
+  for k, id in ipairs(#values == #ids and ids or {}) do
+    -- (what follows the value stays: "HDG id 270 LEFT")
+    local line = cmd .. " " .. id .. " "
+    for _, o in ipairs(self.out) do
+      if o:sub(1, #line) == line then lines[k] = line .. values[k].text .. (o:match("^%S+ %S+ %S+( .*)$") or "") end
+    end
+  end
+  if #lines ~= #ids or #ids < 2 then
+    self.ask = "Which value goes with which aircraft? Please give each aircraft its own instruction."
+    return
+  end
+  self.out = lines
+  for _, v in ipairs(values) do
+    self:take(v.q)
+    if self.leftover == self:raw(v.q.b, v.q.e) then self.leftover = nil end
+  end
+  self:explain(w, w + 1)
+end
+
 -- "maintain present level, descend when ready": a climb or descent left to the pilot's discretion
 -- with no level said after it gives no level to fly; asked (never read as the other instruction's).
 local DISCRETION = {}
@@ -2839,6 +2918,7 @@ function M.translate(text, world)
       for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
     end
   end
+  if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end
   g:same_again(same)
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand

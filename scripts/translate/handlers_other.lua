@@ -116,6 +116,15 @@ return function(H, f, compass)
       if r.e == r.b + 1 and self.t[r.b].raw:upper() == r.name then written[#written + 1] = r.name end
     end
     if #written == 1 then actype = written[1] end
+    -- ("a Boeing 767", "a United 787"): a family flown in several common variants, said by its
+    -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one
+    local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
+    for _, fam in ipairs(said and L.variant_families or {}) do
+      if said:sub(-#fam) == fam and not said:sub(1, -#fam - 1):match("%d$") then
+        return self:need(string.format("Which variant of the %s is meant? Please give its type designator "
+          .. "(for example %s).", self:raw(types[1].b, types[1].e), actype))
+      end
+    end
     -- ("B738... sorry, A320": a type said again after a correction replaces the one before it)
     for k = 2, #types do
       if self:word_in(types[k - 1].e, types[k].b, "@correction") then actype = types[k].name end
@@ -572,7 +581,11 @@ return function(H, f, compass)
   function m:waypoint(b, e, id)
     -- (a navaid's kind typed in capitals is no place: "direct to the Sydney VOR")
     for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
-      if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then return r.name end
+      if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
+        local whole = self:whole_place_name(r, b, e, id)
+        if whole ~= nil then return whole or nil end
+        return r.name
+      end
     end
     local names, seen = {}, {}
     for _, n in ipairs(self.world.waypoints) do names[#names + 1], seen[n] = n, true end
@@ -642,6 +655,40 @@ return function(H, f, compass)
     if best and best_score >= 0.5 then
       self:explain(best_span[1], best_span[2])
       return best
+    end
+    return nil
+  end
+
+  -- A waypoint ref `r` said as one word of a longer name in [b, e) ("direct Cedar Creek" with a fix CREEK
+  -- known): the navaid the words around it name together ("Cedar Creek" is the CQY VORTAC), else, with
+  -- a capitalised word beside the name that is no word squawk knows, false after asking which place
+  -- is meant; nil when the ref is the whole name.
+  function m:whole_place_name(r, b, e, id)
+    if r.e ~= r.b + 1 or self.t[r.b].raw == r.name then return nil end  -- (typed as its ident: "HONIE")
+    local a, named = self:state(id), self.world.navaids_named
+    local function word(k) return k >= b and k < e and self.t[k] and self.t[k].kind == "word" and self.t[k].alpha end
+    for _, k in ipairs({ r.b - 1, r.e }) do
+      local lo = math.min(k, r.b)
+      for _, near in ipairs(named and word(k) and (a and { a } or self.fleet) or {}) do
+        local ids = near.lat and named(self.t[lo].text .. " " .. self.t[lo + 1].text, near.lat, near.lon, L.navaid_range_nm) or {}
+        local navaid = self:one_named(ids, "navaid", self:raw(lo, lo + 2), math.huge)
+        if navaid then
+          self:explain(lo, lo + 2)
+          return navaid
+        end
+      end
+    end
+    local function proper(k)
+      local t = self.t[k]
+      return k >= b and k < e and t and t.kind == "word" and t.alpha and not t.keyword and not t.filler
+        and t.raw:match("^%u%l+$") ~= nil and not self:has_ref(k, k + 1, "aircraft")
+    end
+    for _, k in ipairs({ r.b - 1, r.e }) do
+      if proper(k) then
+        local said = self:raw(math.min(k, r.b), math.max(k, r.b) + 1)
+        self:need(string.format("Which place is '%s'? It is no navaid I know, and %s is only part of it.", said, r.name))
+        return false
+      end
     end
     return nil
   end

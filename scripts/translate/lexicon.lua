@@ -117,7 +117,8 @@ return {
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
-        "after that", "after this", "at pilot's discretion", "at your discretion",
+        "after that", "after this", "at pilot's discretion", "at your discretion", "pilot's discretion",
+        "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me",
         -- urgency, said with a negation ("descend FL150 without delay")
@@ -233,7 +234,7 @@ return {
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
   discretion = { "when ready", "when able", "when you're ready", "at pilot's discretion", "at your discretion",
-                 "at your own discretion", "at own discretion" },
+                 "at your own discretion", "at own discretion", "pilot's discretion" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
   -- words after which a clause is a new instruction
@@ -273,6 +274,10 @@ return {
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names
   airline_variant = { ["737"] = "B738" },
+  -- Boeing families flown in several common variants: their name alone ("a Boeing 767", "a United 787")
+  -- is asked about when an aircraft is created; any other family is its first variant (757 -> B752,
+  -- A330 -> A332, A350 -> A359, types.lua), as the writers of every round so far read it
+  variant_families = { "767", "777", "787" },
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },

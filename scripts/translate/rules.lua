@@ -460,6 +460,12 @@ return function(intent, rule, words)
   rule { "add append insert", "addwpt", near = { 8, "@waypoint_nouns" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "as") and g:has_ref(i + 1, #g.t + 1, "aircraft")
   end }
+  -- "proceed direct HONIE, cross HONIE at 14000", "cross CAMRN at and maintain FL190": a crossing
+  -- restriction (G:at_waypoint) is an instruction of its own wherever it is said in the line
+  rule { "cross crossing", "maintain", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    return (r ~= nil and g:word(g:skip_fillers(r.e), "at")) or g:crossed_navaid(i) ~= nil
+  end }
   -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
   rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
@@ -810,6 +816,9 @@ return function(intent, rule, words)
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
+  -- "restart the clock", "start the clock again": the clock runs on (OP); the simulation, exercise or
+  -- scenario restarted is a reset (confirmed first)
+  rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }

@@ -2294,3 +2294,60 @@ do
   check_eq(ex("BAW8CK heading 310, then up to FL280"), "HDG BAW8CK 310 ; ALT BAW8CK FL280")
   check(ex("KLM77 slow to 180, down to 250"):match("^ASK .*'250'") ~= nil)
 end
+
+-- Cycle 19 (R41, US Center and TRACON phraseology): a crossing restriction is AT wherever it is said in the
+-- line; a role of two words addressed before a comma is a label; "pilot's discretion" after a level; "restart
+-- the clock" runs it on; "respectively" pairs the values with the aircraft in order; "MD-11"; a family of
+-- several common variants said alone is asked about
+do
+  local s41 = squawk.sim.new()
+  for _, line in ipairs({ "CRE UPS2931 MD11 33.2 -85.1 045 FL200 300", "DEFWPT HONIE 33.5 -84.8",
+      "ADDWPT UPS2931 HONIE", "CRE ASA1294 B739 33.95 -117.2 265 FL190 290", "CRE UAL1562 B739 33.7 -117.6 315 FL190 250" }) do
+    check(s41:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = s41, mode = "offline" })) end
+  check_eq(ex("UPS 2931 proceed direct HONIE, cross HONIE at one four thousand"),
+    "DIRECT UPS2931 HONIE ; AT UPS2931 HONIE ALT 14000")
+  check_eq(ex("UPS2931 turn left heading 030, then cross HONIE at and maintain FL150"),
+    "HDG UPS2931 30 LEFT ; AT UPS2931 HONIE ALT FL150")
+  check_eq(ex("UPS2931 cross HONIE at 250 knots"), "AT UPS2931 HONIE SPD 250")
+  check_eq(ex("pseudo-pilot, delete UPS 2931"), "DEL UPS2931")
+  check_eq(ex("pseudo pilot, remove Alaska 1294 from the exercise"), "DEL ASA1294")
+  check_eq(ex("Alaska 1294 descend and maintain flight level one six zero, pilot's discretion"), "ALT ASA1294 FL160")
+  check_eq(ex("Alaska 1294 descend and maintain FL160 at pilots discretion"), "ALT ASA1294 FL160")
+  check_eq(ex("Alaska 1294 descend at pilot's discretion"),
+    "ASK To what level should ASA1294 descend? Please give a level or an altitude.")
+  check_eq(ex("restart the clock, we're good"), "OP")
+  check_eq(ex("start the sim clock again"), "OP")
+  check(ex("restart the exercise") ~= "OP", "a restarted exercise is no OP")
+  check_eq(ex("Alaska 1294 and United 1562, descend and maintain one zero thousand and niner thousand respectively"),
+    "ALT ASA1294 10000 ; ALT UAL1562 9000")
+  check_eq(ex("United 1562 and Alaska 1294 turn left heading 270 and 250 respectively"),
+    "HDG UAL1562 270 LEFT ; HDG ASA1294 250 LEFT")
+  check_eq(ex("Alaska 1294 and United 1562 reduce speed to 250 and 220 knots respectively"),
+    "SPD ASA1294 250 ; SPD UAL1562 220")
+  check(ex("Alaska 1294 and United 1562 descend to FL150, FL140 and FL130 respectively"):match("^ASK") ~= nil)
+  check_eq(ex("create FDX1400 MD-11 at 33.9 north 117.5 west heading 270 FL190 300 knots"),
+    "CRE FDX1400 MD11 33.9 -117.5 270 FL190 300")
+  check(ex("create UPS2120 Boeing 767 at 32.9 north 97.4 west heading 180 FL220 300 knots"):match("^ASK Which variant") ~= nil)
+  check(ex("create a United 787, UAL9, at 40 north 70 west heading 090 FL300 300 knots"):match("^ASK Which variant") ~= nil)
+  check_eq(ex("create UAL9 767-300 at 40 north 70 west heading 090 FL300 300 knots"), "CRE UAL9 B763 40 -70 90 FL300 300")
+  check_eq(ex("create UAL10 a 757 at 40 north 70 west heading 090 FL300 300 knots"), "CRE UAL10 B752 40 -70 90 FL300 300")
+  -- a multi-word navaid name is the navaid, never the fix named like one of its words; a VOR said by its
+  -- name after "cross" is a crossing restriction there
+  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
+  if not ok then
+    print("skipped: R41 navaid names need BlueSky's navdata at ../shared/bluesky/navdata")
+  else
+    for _, line in ipairs({ "CRE AAL2307 A321 33.5 -97.8 135 FL200 300", "ADDWPT AAL2307 UKW", "ADDWPT AAL2307 CREEK",
+        "CRE UPS1284 B752 32.2 -96.3 330 FL240 310", "ADDWPT UPS1284 CQY" }) do
+      check(nav:exec(line))
+    end
+    local function pt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+    check_eq(pt("UPS 1284 proceed direct Cedar Creek"), "DIRECT UPS1284 CQY")
+    check(pt("UPS 1284 proceed direct Fox Creek"):match("^ASK Which place is 'Fox Creek'") ~= nil)
+    check_eq(pt("American 2307, Fort Worth Center, cross Bowie at and maintain one three thousand"),
+      "AT AAL2307 UKW ALT 13000")
+    check_eq(pt("UPS 1284 cross Cedar Creek at flight level two one zero"), "AT UPS1284 CQY ALT FL210")
+  end
+end

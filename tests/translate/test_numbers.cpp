@@ -41,6 +41,12 @@ TEST_CASE("number words: ATC digit by digit and groups") {
   CHECK(num("fife tree").value == 53);
   CHECK(num("one one thousand").value == 11000);
   CHECK(num("one zero thousand").value == 10000);
+  // two levels joined by "and" are two values ("10000 and 9000 respectively"), never 10009000
+  SpokenNumber first = num("one zero thousand and niner thousand");
+  CHECK(first.value == 10000);
+  CHECK(first.end == 3);
+  CHECK(num("five thousand and two hundred").value == 5200);
+  CHECK(num("two thousand and fifty").value == 2050);
   SpokenNumber g = num("fifty one twenty");
   CHECK(g.digits == "5120");
   CHECK(g.groups == 2);
