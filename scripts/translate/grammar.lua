@@ -1602,23 +1602,26 @@ function G:direct_resumes_nav()
   end
 end
 
--- The navaid said by its name after "cross" at token i ("cross Bowie at and maintain 13000": the UKW
--- VORTAC, one word or two before "at") within lexicon.navaid_range_nm of one aircraft flying: a ref
--- {kind = "waypoint", name, b, e} of its words, else nil. Reads only; explains nothing.
+-- The navaid said by its name after "cross" at token i ("cross Bowie at and maintain 13000", "cross the
+-- Bowie VOR at": the UKW VORTAC, one word or two, with "the" before and its kind after, before "at")
+-- within lexicon.navaid_range_nm of one aircraft flying: a ref {kind = "waypoint", name, b, e, words (how
+-- many words its name has)}, else nil. Reads only; explains nothing.
 function G:crossed_navaid(i)
   local named = self.world.navaids_named
   if not named or not self:word(i, "cross crossing crosses") then return nil end
-  for e = i + 2, i + 3 do
+  local b = self:word(i + 1, "the") and i + 2 or i + 1
+  for n = 1, 2 do
     local words, ok = {}, true
-    for k = i + 1, e - 1 do
+    for k = b, b + n - 1 do
       local t = self.t[k]
       ok = ok and t ~= nil and t.kind == "word" and t.alpha and not t.keyword and not t.number_word
       words[#words + 1] = t and t.text
     end
+    local e = self:word(b + n, "@navaid_kinds") and b + n + 1 or b + n
     if ok and self:word(e, "at") then
       for _, a in ipairs(self.fleet) do
         local ids = a.lat and named(table.concat(words, " "), a.lat, a.lon, lexicon.navaid_range_nm) or {}
-        if #ids == 1 then return { kind = "waypoint", name = ids[1], b = i + 1, e = e } end
+        if #ids == 1 then return { kind = "waypoint", name = ids[1], b = i + 1, e = e, words = n } end
       end
     end
   end
@@ -1632,11 +1635,14 @@ end
 -- an AT condition the grammar does not translate: asked, never issued at once.
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
-  -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at")
+  -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at"; a fix
+  -- said whole stays that fix: "cross METRO at")
   local refs = self:refs_in(s.b, s.e, "waypoint")
   for i = s.b, s.e - 1 do
     local r = self:crossed_navaid(i)
-    if r and (#refs == 0 or #self:refs_in(r.b, r.e, "waypoint") > 0) then
+    local part = r and #self:refs_in(r.b, r.e, "waypoint") > 0
+    for _, f in ipairs(part and self:refs_in(r.b, r.e, "waypoint") or {}) do part = part and f.e - f.b < r.words end
+    if r and (#refs == 0 or part) then
       refs = { r }
       self:explain(r.b, r.e)
       break

@@ -121,8 +121,12 @@ return function(H, f, compass)
     local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
     for _, fam in ipairs(said and L.variant_families or {}) do
       if said:sub(-#fam) == fam and not said:sub(1, -#fam - 1):match("%d$") then
-        return self:need(string.format("Which variant of the %s is meant? Please give its type designator "
-          .. "(for example %s).", self:raw(types[1].b, types[1].e), actype))
+        local variants = {}
+        for _, d in ipairs(require("translate.names").designators) do
+          if d:match("^B" .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
+        end
+        return self:need(string.format("Which variant of the %s is meant: %s?", self:raw(types[1].b, types[1].e),
+          table.concat(variants, ", ")))
       end
     end
     -- ("B738... sorry, A320": a type said again after a correction replaces the one before it)
@@ -220,7 +224,11 @@ return function(H, f, compass)
         local near = self.fleet[1] or { lat = 0, lon = 0 }
         -- (a navaid's kind said after its name, "over Sparta VOR", is no place of its own)
         if not self:word(r.b, "@navaid_kinds") then
-          named_at = named_at or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+          -- ("over Cedar Creek": the navaid the words name together, not the fix CREEK)
+          local whole
+          if named_at == nil then whole = self:whole_place_name(r, from, s.e, nil) end
+          if whole == false then return end
+          named_at = named_at or whole or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
         end
       end
       if not named_at then
@@ -510,7 +518,13 @@ return function(H, f, compass)
     end
     local named_at
     if not lat or not lon then
-      for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do named_at = named_at or r.name end
+      -- ("move AAL2307 to Cedar Creek": the navaid the words name together, not the fix CREEK)
+      for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do
+        local whole
+        if named_at == nil then whole = self:whole_place_name(r, s.trig, s.e, id) end
+        if whole == false then return end
+        named_at = named_at or whole or r.name
+      end
       named_at = named_at or self:place_by_name(s.trig + 1, s.e, self:state(id))
     end
     if (not lat or not lon) and not named_at then

@@ -2333,6 +2333,7 @@ do
   check(ex("create a United 787, UAL9, at 40 north 70 west heading 090 FL300 300 knots"):match("^ASK Which variant") ~= nil)
   check_eq(ex("create UAL9 767-300 at 40 north 70 west heading 090 FL300 300 knots"), "CRE UAL9 B763 40 -70 90 FL300 300")
   check_eq(ex("create UAL10 a 757 at 40 north 70 west heading 090 FL300 300 knots"), "CRE UAL10 B752 40 -70 90 FL300 300")
+  check_eq(ex("create UAL11 a 777 at 40 north 70 west heading 090 FL300 300 knots"), "CRE UAL11 B772 40 -70 90 FL300 300")
   -- a multi-word navaid name is the navaid, never the fix named like one of its words; a VOR said by its
   -- name after "cross" is a crossing restriction there
   local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
