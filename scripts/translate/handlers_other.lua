@@ -679,7 +679,7 @@ return function(H, f, compass)
   -- is meant; nil when the ref is the whole name.
   function m:whole_place_name(r, b, e, id)
     if r.e ~= r.b + 1 or self.t[r.b].raw == r.name then return nil end  -- (typed as its ident: "HONIE")
-    local a, named = self:state(id), self.world.navaids_named
+    local a, named = id and self:state(id), self.world.navaids_named
     local function word(k) return k >= b and k < e and self.t[k] and self.t[k].kind == "word" and self.t[k].alpha end
     for _, k in ipairs({ r.b - 1, r.e }) do
       local lo = math.min(k, r.b)

@@ -2350,5 +2350,10 @@ do
     check_eq(pt("American 2307, Fort Worth Center, cross Bowie at and maintain one three thousand"),
       "AT AAL2307 UKW ALT 13000")
     check_eq(pt("UPS 1284 cross Cedar Creek at flight level two one zero"), "AT UPS1284 CQY ALT FL210")
+    check_eq(pt("move American 2307 to Cedar Creek"), "MOVE AAL2307 CQY")
+    check_eq(pt("create FDX77 B752 over Cedar Creek heading 090 FL200 300 knots"), "CRE FDX77 B752 CQY 90 FL200 300")
+    check(pt("create FDX78 B752 over Fox Creek heading 090 FL200 300 knots"):match("^ASK Which place is 'Fox Creek'") ~= nil)
+    -- (a fix said whole after "cross" stays that fix, though a navaid bears its name)
+    check_eq(pt("American 2307 cross CREEK at one two thousand"), "AT AAL2307 CREEK ALT 12000")
   end
 end
