@@ -2725,6 +2725,65 @@ local function airline_values(text, fleet)
   end))
 end
 
+-- "speedbird123", "easy45", "shamrock12ab": an airline's one-word telephony (or name) run into the flight
+-- number, as speech recognition writes it, is the id of the aircraft flying with that airline and number
+-- (matched exactly; anything else stays as said)
+local function glued_telephony(text, fleet)
+  if #fleet == 0 then return text end
+  local ids = {}
+  for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
+  return (text:gsub("%f[%w](%a+)(%d%w*)%f[%W]", function(word, number)
+    local icao = AIRLINE_WORDS[word:lower()]
+    return icao and ids[(icao .. number):upper()] or nil
+  end))
+end
+
+-- "wizzair to lima papa", "france soleil five to kilo lima", "lufthansa for hundred": a word speech
+-- recognition writes for a digit (lexicon.digit_homophones) after an airline's word or a digit or letter
+-- said, or before one, is that digit when the text so read names exactly one aircraft flying, matched
+-- exactly, that the text as heard does not (nor one whose id begins that aircraft's: with BAW4 and BAW42
+-- flying, "speedbird four to ..." stays as said); anything else stays as said (and may be asked about).
+local CALLSIGN_WORDS = { hundred = true, thousand = true }
+for w in pairs(SPOKEN_DIGITS) do CALLSIGN_WORDS[w] = true end
+local AIRLINE_LAST = {}  -- the last word of each airline's telephony or name
+for _, list in ipairs({ names.airlines, names.common, names.brands }) do
+  for _, a in ipairs(list) do AIRLINE_LAST[a[1]:match("(%S+)$")] = true end
+end
+local function exact_aircraft(text, world)
+  local found = {}
+  for _, r in ipairs(squawk.translate.utterance(text, world, NAMES):refs()) do
+    if r.kind == "aircraft" and r.exists and not r.heard then found[r.name:upper()] = true end
+  end
+  return found
+end
+local function homophone_ids(text, world)
+  if #world.aircraft == 0 then return text end
+  local toks, bare = plain_words(text)
+  local said
+  for i, w in ipairs(bare) do
+    local digit = lexicon.digit_homophones[w]
+    local prev, nxt = bare[i - 1], bare[i + 1]
+    local glued = prev and not toks[i - 1]:match("%p$") and (not nxt or not toks[i]:match("%p$"))
+    if digit and glued and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
+        or (nxt and (CALLSIGN_WORDS[nxt] or nxt:match("^%d+$")))) then
+      local words = {}
+      for k, t in ipairs(toks) do words[k] = t end
+      words[i] = digit .. (toks[i]:match("%p+$") or "")
+      local read = table.concat(words, " ")
+      said = said or exact_aircraft(text, world)
+      local new
+      for id in pairs(exact_aircraft(read, world)) do
+        if not said[id] then new = new == nil and id or false end
+      end
+      for id in pairs(new and said or {}) do
+        if new:sub(1, #id) == id then new = false end
+      end
+      if new then return homophone_ids(read, world) end
+    end
+  end
+  return text
+end
+
 -- A dash standing alone (" - ", " -- ", an en or em dash; a bracket written_forms made one: "800 ft
 -- (testing reduced vertical)") sets what follows apart: it is read as a comma (the lexer drops dashes),
 -- and the ordinals of the commas dashes became are returned as a set (G:in_reason reads commentary after
@@ -2753,7 +2812,10 @@ end
 -- slot (after "add", "dct", "after", ...; then each name listed straight after it) that is no word squawk
 -- knows and that the navdata holds as a fix, navaid or airport (world.place_known) within TYPED_PLACE_NM
 -- of an aircraft that flies (a recogniser's word far away, "direct sachs", is no such place) is that
--- place, as if typed in capitals; without navdata nothing changes
+-- place, as if typed in capitals; without navdata nothing changes. A name speech recognition split into
+-- syllables ("direct toe bix", "as bin", "u no ko") is joined when the first word alone is no such place and
+-- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
+-- does not know that is such a fix near the traffic, or one on an aircraft's route.
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, drct = true, direct = true,
   after = true, before = true, via = true, over = true, cross = true, at = true }
 local TYPED_PLACE_NM = 250
@@ -2770,11 +2832,32 @@ local function typed_places(text, world)
     end
     return #world.aircraft == 0
   end
-  local out, slot = {}, false
-  for lead, word, trail in text:gmatch("(%s*)([^%s]+)") do
+  local routed = {}
+  for _, a in ipairs(world.aircraft) do
+    for _, r in ipairs(a.route or {}) do routed[r:lower()] = true end
+  end
+  local parts = {}
+  for lead, word in text:gmatch("(%s*)([^%s]+)") do parts[#parts + 1] = { lead, word } end
+  local out, slot, k = {}, false, 1
+  while k <= #parts do
+    local lead, word = parts[k][1], parts[k][2]
     local w, rest = word:match("^(%a[%a%d]*)(.*)$")
     local named = w and slot and #w >= 3 and #w <= 5 and not known_word(w) and not ids[w]
       and not lexicon.shorthand[w] and near(w)
+    k = k + 1
+    if w and w:match("^%a+$") and slot and not named and rest == "" and not PLACE_SLOTS[w] and w ~= "to" and not routed[w] then
+      local joined = w
+      for j = k, math.min(k + 1, #parts) do
+        local x, punct = parts[j][2]:match("^(%a+)(%p*)$")
+        if not x or #joined + #x > 5 then break end
+        joined = joined .. x
+        if #joined >= 4 and not ids[joined] and (routed[joined] or (not known_word(joined) and near(joined))) then
+          named, w, rest, k = true, joined, punct, j + 1
+          break
+        end
+        if punct ~= "" then break end
+      end
+    end
     out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
     slot = (named and rest == "") or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
       or (w == "to" and slot and PLACE_SLOTS[out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""] ~= nil)))
@@ -2792,6 +2875,7 @@ function M.translate(text, world)
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
+  text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   local dm = impossible_minutes(text)
