@@ -2734,7 +2734,10 @@ local function glued_telephony(text, fleet)
   for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
   return (text:gsub("%f[%w](%a+)(%d%w*)%f[%W]", function(word, number)
     local icao = AIRLINE_WORDS[word:lower()]
-    return icao and ids[(icao .. number):upper()] or nil
+    local id = icao and ids[(icao .. number):upper()]
+    -- (an id typed as such stays as typed, in its case: "klm88v")
+    if not id or id:upper() == (word .. number):upper() then return nil end
+    return word:find("%u") and id or id:lower()
   end))
 end
 
