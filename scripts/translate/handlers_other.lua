@@ -3,6 +3,8 @@
 -- LISTRTE, BANK, FF, DT, DTMULT, SEED, IC, ECHO, ASAS, RESO, ZONER/ZONEDH,
 -- DTLOOK, NOISE, TRAIL); see translate/handlers.lua for the handler contract.
 local L = require("translate.lexicon")
+local PARTICLES = {}
+for _, w in ipairs(L.name_particles) do PARTICLES[w] = true end
 
 return function(H, f, compass)
   local m = H.methods
@@ -734,8 +736,24 @@ return function(H, f, compass)
       local t, nx = self.t[i], self.t[i + 1]
       if not self.u:used(i) and t.kind == "word" and t.alpha and not t.filler and not t.number_word then
         local phrases = {}  -- {words, the position after them}
+        -- (a name of three to six words said whole first, as said and as its short form: "san sebastian
+        -- de los reyes" is "S S REYES", SSY; lexicon.name_particles)
+        local words = { t.text }
+        for j = i + 1, math.min(e, i + 6) - 1 do
+          local w = self.t[j]
+          if self.u:used(j) or w.kind ~= "word" or not w.alpha or w.keyword or w.filler then break end
+          words[#words + 1] = w.text
+        end
+        for n = #words, 3, -1 do
+          local short = {}
+          for k = 1, n - 1 do
+            if not PARTICLES[words[k]] then short[#short + 1] = words[k]:sub(1, 1) end
+          end
+          phrases[#phrases + 1] = { table.concat(words, " ", 1, n), i + n }
+          phrases[#phrases + 1] = { table.concat(short, " ") .. " " .. words[n], i + n }
+        end
         if nx and i + 1 < e and nx.kind == "word" and nx.alpha and not self.u:used(i + 1) then
-          phrases[1] = { t.text .. " " .. nx.text, i + 2 }
+          phrases[#phrases + 1] = { t.text .. " " .. nx.text, i + 2 }
         end
         if #t.text >= 4 and not t.keyword and not two_words then phrases[#phrases + 1] = { t.text, i + 1 } end
         for _, p in ipairs(phrases) do

@@ -370,6 +370,11 @@ return {
   waypoint_confirm = 1.0,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
+  -- the little words inside a place's name ("San Sebastian de los Reyes") that the navdata's short form of
+  -- it leaves out ("S.S. REYES"); a name of three words or more said whole is looked for as said and as the
+  -- initials of its words before the last, these left out, then the last word
+  name_particles = { "de", "del", "la", "las", "los", "le", "les", "du", "des", "da", "do", "dos", "di",
+    "van", "von", "der", "den" },
   -- a navaid said by its name within this of a large airport stands on it: "create ... at Marseille" is the
   -- airport (LFML), not its NDB (MJ) [NM]
   on_airport_nm = 1,

@@ -2320,3 +2320,19 @@ do
   check_eq(ex("wizz air two lima papa proceed direct as bin"), "DIRECT WZZ2LP ASBIN")
   check(ex("wizz air two lima papa direct toe bax"):match("^ASK") ~= nil, "a near miss is asked about")
 end
+
+-- Cycle 19: a navaid's name of three words or more said whole is that navaid, the navdata's short form of it
+-- too ("San Sebastian de los Reyes": "S.S. REYES", SSY); its first two words alone name two others, asked about
+do
+  local mad = squawk.sim.new()
+  check(mad:exec("CRE AEA051 B738 40.0 -3.5 350 FL120 250"))
+  local function ex(text) return said(graph.translate(text, { sim = mad, mode = "offline" })) end
+  if #mad:navaids_named("s s reyes", 40, -3.5, 100) == 1 then
+    check_eq(ex("europa zero five one proceed direct san sebastian de los reyes"), "ADDWPT AEA051 SSY ; DIRECT AEA051 SSY")
+    check_eq(ex("AEA051 direct San Sebastian de los Reyes, then climb FL240"),
+      "ADDWPT AEA051 SSY ; DIRECT AEA051 SSY ; ALT AEA051 FL240")
+    check(ex("europa zero five one proceed direct san sebastian"):match("^ASK Which navaid") ~= nil, "SSN or HIG")
+  else
+    print("skipped: navaid names need navdata (SQUAWK_NAVDATA)")
+  end
+end
