@@ -574,6 +574,36 @@ local function impossible_minutes(text)
   end
   return nil
 end
+-- "flight level to for zero", "heading won eight zero": inside three words said as a level's or heading's
+-- digits straight after "level", "fl", "heading" or "hdg", a word speech recognition writes for a digit
+-- (lexicon.digit_homophones) is that digit; a "to" first stays (the level handler reads it as "two" or no
+-- digit), as do words followed by another digit or a distance or time unit ("heading for one zero miles")
+local VALUE_ANCHORS = set_of({ "level", "fl", "heading", "hdg" })
+local RUN_ENDS = set_of({ "miles", "mile", "nm", "minutes", "minute", "min", "seconds", "km" })
+local function value_homophones(text)
+  local toks, bare = plain_words(text)
+  local H = lexicon.digit_homophones
+  local convert = {}
+  for k, w in ipairs(bare) do
+    if VALUE_ANCHORS[w] and not toks[k]:match("%p$") then
+      local j, said, heard = k + 1, 0, {}
+      while j <= k + 3 and bare[j] and (DIGIT_WORDS[bare[j]] or H[bare[j]]) do
+        if DIGIT_WORDS[bare[j]] then said = said + 1 elseif not (j == k + 1 and H[bare[j]] == "two") then heard[#heard + 1] = j end
+        if toks[j]:match("%p$") then j = j + 1; break end
+        j = j + 1
+      end
+      local after = bare[j]
+      if j == k + 4 and said >= 1 and #heard > 0 and not (after and (DIGIT_WORDS[after] or H[after] or RUN_ENDS[after]
+          or after:match("^%d"))) then
+        for _, h in ipairs(heard) do convert[h] = true end
+      end
+    end
+  end
+  if not next(convert) then return text end
+  return tokens.rewrite(text, toks, function(i)
+    if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
+  end)
+end
 local function written_forms(text)
   text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(foreign_digits(text)))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -613,7 +643,7 @@ local function written_forms(text)
     if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
     return before .. " direct " .. after
   end)
-  text = split_digits(text)
+  text = value_homophones(split_digits(text))
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil

@@ -2319,6 +2319,13 @@ do
   check_eq(ex("wizz air two lima papa direct toe bix"), "DIRECT WZZ2LP TOBIX")
   check_eq(ex("wizz air two lima papa proceed direct as bin"), "DIRECT WZZ2LP ASBIN")
   check(ex("wizz air two lima papa direct toe bax"):match("^ASK") ~= nil, "a near miss is asked about")
+  -- a digit's homophone inside a level's or heading's three spoken digits is that digit; a level heard as
+  -- "zero" alone is asked about
+  check_eq(ex("wizz air two lima papa climb flight level three for zero"), "ALT WZZ2LP FL340")
+  check_eq(ex("lufthansa four hundred turn left heading won eight zero"), "HDG DLH400 180 LEFT")
+  check_eq(ex("lufthansa four hundred turn right heading two ate zero"), "HDG DLH400 280 RIGHT")
+  check(ex("lufthansa four hundred descend flight level for zero"):match("^ASK") ~= nil, "no level 0")
+  check(ex("lufthansa four hundred descend flight level to for zero"):match("^ASK") ~= nil, "FL240 or FL040")
 end
 
 -- Cycle 19: a navaid's name of three words or more said whole is that navaid, the navdata's short form of it
