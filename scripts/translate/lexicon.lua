@@ -526,9 +526,10 @@ return {
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
     nove = "nine" },
   -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
-  -- "lufthansa for hundred" DLH400): that digit only where the callsign so read is exactly one aircraft's
-  -- (grammar.lua homophone_ids)
-  digit_homophones = { to = "two", too = "two", ["for"] = "four", fore = "four", won = "one", ate = "eight" },
+  -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
+  -- read is exactly one aircraft's (grammar.lua homophone_ids)
+  digit_homophones = { to = "two", too = "two", ["for"] = "four", fore = "four", won = "one", ate = "eight",
+    oh = "zero" },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits

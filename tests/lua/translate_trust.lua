@@ -2311,6 +2311,7 @@ do
   check_eq(ex("wizz air to lima papa turn left heading one zero zero"), "HDG WZZ2LP 100 LEFT")
   check_eq(ex("lufthansa for hundred climb flight level three five zero"), "ALT DLH400 FL350")
   check_eq(ex("lufthansa for for descend flight level one zero zero"), "ALT DLH44 FL100")
+  check_eq(ex("lufthansa for oh oh climb flight level three five zero"), "ALT DLH400 FL350")
   -- (BAW4 flies: "to" after its number stays a preposition, and the level is read)
   check_eq(ex("speedbird four climb to two four zero"), "ALT BAW4 FL240")
   check(ex("speedbird four to turn left heading one zero zero") ~= "HDG BAW42 100 LEFT", "BAW4 flies")
