@@ -2799,19 +2799,28 @@ local function homophone_ids(text, world)
     local glued = prev and not toks[i - 1]:match("%p$") and (not nxt or not toks[i]:match("%p$"))
     if digit and glued and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
         or (nxt and (CALLSIGN_WORDS[nxt] or nxt:match("^%d+$")))) then
-      local words = {}
-      for k, t in ipairs(toks) do words[k] = t end
-      words[i] = digit .. (toks[i]:match("%p+$") or "")
-      local read = table.concat(words, " ")
+      -- (read with every homophone of the words said with it, "lufthansa for oh oh", else this one alone)
+      local words, alone = {}, {}
+      for k, t in ipairs(toks) do words[k], alone[k] = t, t end
+      alone[i] = digit .. (toks[i]:match("%p+$") or "")
+      for k = i, #toks do
+        local h = lexicon.digit_homophones[bare[k]]
+        if k > i and (toks[k - 1]:match("%p$") or not (h or CALLSIGN_WORDS[bare[k]] or bare[k]:match("^%d+$"))) then
+          break
+        end
+        if h then words[k] = h .. (toks[k]:match("%p+$") or "") end
+      end
       said = said or exact_aircraft(text, world)
-      local new
-      for id in pairs(exact_aircraft(read, world)) do
-        if not said[id] then new = new == nil and id or false end
+      for _, read in ipairs({ table.concat(words, " "), table.concat(alone, " ") }) do
+        local new
+        for id in pairs(exact_aircraft(read, world)) do
+          if not said[id] then new = new == nil and id or false end
+        end
+        for id in pairs(new and said or {}) do
+          if new:sub(1, #id) == id then new = false end
+        end
+        if new then return homophone_ids(read, world) end
       end
-      for id in pairs(new and said or {}) do
-        if new:sub(1, #id) == id then new = false end
-      end
-      if new then return homophone_ids(read, world) end
     end
   end
   return text
