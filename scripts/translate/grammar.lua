@@ -2755,15 +2755,22 @@ local function airline_values(text, fleet)
   end))
 end
 
--- "speedbird123", "easy45", "shamrock12ab": an airline's one-word telephony (or name) run into the flight
--- number, as speech recognition writes it, is the id of the aircraft flying with that airline and number
--- (matched exactly; anything else stays as said)
+-- "speedbird123", "easy45", "airfrance77": an airline's telephony (or name), its words run together, run
+-- into the flight number, as speech recognition writes it, is the id of the aircraft flying with that
+-- airline and number (matched exactly; anything else stays as said)
+local GLUED_AIRLINES = {}
+for _, list in ipairs({ names.airlines, names.common }) do
+  for _, a in ipairs(list) do
+    local glued = a[1]:gsub("%s", "")
+    GLUED_AIRLINES[glued] = GLUED_AIRLINES[glued] or a[2]
+  end
+end
 local function glued_telephony(text, fleet)
   if #fleet == 0 then return text end
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
   return (text:gsub("%f[%w](%a+)(%d%w*)%f[%W]", function(word, number)
-    local icao = AIRLINE_WORDS[word:lower()]
+    local icao = GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]
     -- (an id typed as such stays as typed, in its case: "klm88v")
     if not id or id:upper() == (word .. number):upper() then return nil end

@@ -2316,6 +2316,7 @@ do
   check_eq(ex("speedbird four climb to two four zero"), "ALT BAW4 FL240")
   check(ex("speedbird four to turn left heading one zero zero") ~= "HDG BAW42 100 LEFT", "BAW4 flies")
   check_eq(ex("speedbird42 turn right heading two seven zero"), "HDG BAW42 270 RIGHT")
+  check_eq(ex("wizzair2lp turn right heading two seven zero"), "HDG WZZ2LP 270 RIGHT")
   check(ex("speedbird43 turn right heading two seven zero"):match("^ASK") ~= nil, "no BAW43 flies")
   check_eq(ex("wizz air two lima papa direct toe bix"), "DIRECT WZZ2LP TOBIX")
   check_eq(ex("wizz air two lima papa proceed direct as bin"), "DIRECT WZZ2LP ASBIN")
