@@ -575,6 +575,36 @@ local function impossible_minutes(text)
   end
   return nil
 end
+-- "flight level to for zero", "heading won eight zero": inside three words said as a level's or heading's
+-- digits straight after "level", "fl", "heading" or "hdg", a word speech recognition writes for a digit
+-- (lexicon.digit_homophones) is that digit; a "to" first stays (the level handler reads it as "two" or no
+-- digit), as do words followed by another digit or a distance or time unit ("heading for one zero miles")
+local VALUE_ANCHORS = set_of({ "level", "fl", "heading", "hdg" })
+local RUN_ENDS = set_of({ "miles", "mile", "nm", "minutes", "minute", "min", "seconds", "km" })
+local function value_homophones(text)
+  local toks, bare = plain_words(text)
+  local H = lexicon.digit_homophones
+  local convert = {}
+  for k, w in ipairs(bare) do
+    if VALUE_ANCHORS[w] and not toks[k]:match("%p$") then
+      local j, said, heard = k + 1, 0, {}
+      while j <= k + 3 and bare[j] and (DIGIT_WORDS[bare[j]] or H[bare[j]]) do
+        if DIGIT_WORDS[bare[j]] then said = said + 1 elseif not (j == k + 1 and H[bare[j]] == "two") then heard[#heard + 1] = j end
+        if toks[j]:match("%p$") then j = j + 1; break end
+        j = j + 1
+      end
+      local after = bare[j]
+      if j == k + 4 and said >= 1 and #heard > 0 and not (after and (DIGIT_WORDS[after] or H[after] or RUN_ENDS[after]
+          or after:match("^%d"))) then
+        for _, h in ipairs(heard) do convert[h] = true end
+      end
+    end
+  end
+  if not next(convert) then return text end
+  return tokens.rewrite(text, toks, function(i)
+    if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
+  end)
+end
 local function written_forms(text)
   text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(foreign_digits(text)))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -614,7 +644,7 @@ local function written_forms(text)
     if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
     return before .. " direct " .. after
   end)
-  text = split_digits(text)
+  text = value_homophones(split_digits(text))
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil
@@ -2810,6 +2840,84 @@ local function airline_values(text, fleet)
   end))
 end
 
+-- "speedbird123", "easy45", "airfrance77": an airline's telephony (or name), its words run together, run
+-- into the flight number, as speech recognition writes it, is the id of the aircraft flying with that
+-- airline and number (matched exactly; anything else stays as said)
+local GLUED_AIRLINES = {}
+for _, list in ipairs({ names.airlines, names.common }) do
+  for _, a in ipairs(list) do
+    local glued = a[1]:gsub("%s", "")
+    GLUED_AIRLINES[glued] = GLUED_AIRLINES[glued] or a[2]
+  end
+end
+local function glued_telephony(text, fleet)
+  if #fleet == 0 then return text end
+  local ids = {}
+  for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
+  return (text:gsub("%f[%w](%a+)(%d%w*)%f[%W]", function(word, number)
+    local icao = GLUED_AIRLINES[word:lower()]
+    local id = icao and ids[(icao .. number):upper()]
+    -- (an id typed as such stays as typed, in its case: "klm88v")
+    if not id or id:upper() == (word .. number):upper() then return nil end
+    return word:find("%u") and id or id:lower()
+  end))
+end
+
+-- "wizzair to lima papa", "france soleil five to kilo lima", "lufthansa for hundred": a word speech
+-- recognition writes for a digit (lexicon.digit_homophones) after an airline's word or a digit or letter
+-- said, or before one, is that digit when the text so read names exactly one aircraft flying, matched
+-- exactly, that the text as heard does not (nor one whose id begins that aircraft's: with BAW4 and BAW42
+-- flying, "speedbird four to ..." stays as said); anything else stays as said (and may be asked about).
+local CALLSIGN_WORDS = { hundred = true, thousand = true }
+for w in pairs(SPOKEN_DIGITS) do CALLSIGN_WORDS[w] = true end
+local AIRLINE_LAST = {}  -- the last word of each airline's telephony or name
+for _, list in ipairs({ names.airlines, names.common, names.brands }) do
+  for _, a in ipairs(list) do AIRLINE_LAST[a[1]:match("(%S+)$")] = true end
+end
+local function exact_aircraft(text, world)
+  local found = {}
+  for _, r in ipairs(squawk.translate.utterance(text, world, NAMES):refs()) do
+    if r.kind == "aircraft" and r.exists and not r.heard then found[r.name:upper()] = true end
+  end
+  return found
+end
+local function homophone_ids(text, world)
+  if #world.aircraft == 0 then return text end
+  local toks, bare = plain_words(text)
+  local said
+  for i, w in ipairs(bare) do
+    local digit = lexicon.digit_homophones[w]
+    local prev, nxt = bare[i - 1], bare[i + 1]
+    local glued = prev and not toks[i - 1]:match("%p$") and (not nxt or not toks[i]:match("%p$"))
+    if digit and glued and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
+        or (nxt and (CALLSIGN_WORDS[nxt] or nxt:match("^%d+$")))) then
+      -- (read with every homophone of the words said with it, "lufthansa for oh oh", else this one alone)
+      local words, alone = {}, {}
+      for k, t in ipairs(toks) do words[k], alone[k] = t, t end
+      alone[i] = digit .. (toks[i]:match("%p+$") or "")
+      for k = i, #toks do
+        local h = lexicon.digit_homophones[bare[k]]
+        if k > i and (toks[k - 1]:match("%p$") or not (h or CALLSIGN_WORDS[bare[k]] or bare[k]:match("^%d+$"))) then
+          break
+        end
+        if h then words[k] = h .. (toks[k]:match("%p+$") or "") end
+      end
+      said = said or exact_aircraft(text, world)
+      for _, read in ipairs({ table.concat(words, " "), table.concat(alone, " ") }) do
+        local new
+        for id in pairs(exact_aircraft(read, world)) do
+          if not said[id] then new = new == nil and id or false end
+        end
+        for id in pairs(new and said or {}) do
+          if new:sub(1, #id) == id then new = false end
+        end
+        if new then return homophone_ids(read, world) end
+      end
+    end
+  end
+  return text
+end
+
 -- A dash standing alone (" - ", " -- ", an en or em dash; a bracket written_forms made one: "800 ft
 -- (testing reduced vertical)") sets what follows apart: it is read as a comma (the lexer drops dashes),
 -- and the ordinals of the commas dashes became are returned as a set (G:in_reason reads commentary after
@@ -2838,7 +2946,10 @@ end
 -- slot (after "add", "dct", "after", ...; then each name listed straight after it) that is no word squawk
 -- knows and that the navdata holds as a fix, navaid or airport (world.place_known) within TYPED_PLACE_NM
 -- of an aircraft that flies (a recogniser's word far away, "direct sachs", is no such place) is that
--- place, as if typed in capitals; without navdata nothing changes
+-- place, as if typed in capitals; without navdata nothing changes. A name speech recognition split into
+-- syllables ("direct toe bix", "as bin", "u no ko") is joined when the first word alone is no such place and
+-- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
+-- does not know that is such a fix near the traffic, or one on an aircraft's route.
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, drct = true, direct = true,
   after = true, before = true, via = true, over = true, cross = true, at = true }
 local TYPED_PLACE_NM = 250
@@ -2855,11 +2966,32 @@ local function typed_places(text, world)
     end
     return #world.aircraft == 0
   end
-  local out, slot = {}, false
-  for lead, word, trail in text:gmatch("(%s*)([^%s]+)") do
+  local routed = {}
+  for _, a in ipairs(world.aircraft) do
+    for _, r in ipairs(a.route or {}) do routed[r:lower()] = true end
+  end
+  local parts = {}
+  for lead, word in text:gmatch("(%s*)([^%s]+)") do parts[#parts + 1] = { lead, word } end
+  local out, slot, k = {}, false, 1
+  while k <= #parts do
+    local lead, word = parts[k][1], parts[k][2]
     local w, rest = word:match("^(%a[%a%d]*)(.*)$")
     local named = w and slot and #w >= 3 and #w <= 5 and not known_word(w) and not ids[w]
       and not lexicon.shorthand[w] and near(w)
+    k = k + 1
+    if w and w:match("^%a+$") and slot and not named and rest == "" and not PLACE_SLOTS[w] and w ~= "to" and not routed[w] then
+      local joined = w
+      for j = k, math.min(k + 1, #parts) do
+        local x, punct = parts[j][2]:match("^(%a+)(%p*)$")
+        if not x or #joined + #x > 5 then break end
+        joined = joined .. x
+        if #joined >= 4 and not ids[joined] and (routed[joined] or (not known_word(joined) and near(joined))) then
+          named, w, rest, k = true, joined, punct, j + 1
+          break
+        end
+        if punct ~= "" then break end
+      end
+    end
     out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
     slot = (named and rest == "") or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
       or (w == "to" and slot and PLACE_SLOTS[out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""] ~= nil)))
@@ -2877,6 +3009,7 @@ function M.translate(text, world)
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
+  text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   local dm = impossible_minutes(text)

@@ -3,6 +3,8 @@
 -- LISTRTE, BANK, FF, DT, DTMULT, SEED, IC, ECHO, ASAS, RESO, ZONER/ZONEDH,
 -- DTLOOK, NOISE, TRAIL); see translate/handlers.lua for the handler contract.
 local L = require("translate.lexicon")
+local PARTICLES = {}
+for _, w in ipairs(L.name_particles) do PARTICLES[w] = true end
 
 return function(H, f, compass)
   local m = H.methods
@@ -590,6 +592,16 @@ return function(H, f, compass)
     for _, id in ipairs(ids) do self:emit("DEL " .. id) end
   end
 
+  -- True when `heard` is `name` or `name` with one letter more anywhere ("toebix": "tobix").
+  local function spelled_within_one(heard, name)
+    if heard == name then return true end
+    if #heard ~= #name + 1 then return false end
+    for k = 1, #heard do
+      if heard:sub(1, k - 1) .. heard:sub(k + 1) == name then return true end
+    end
+    return false
+  end
+
   -- A waypoint named in [b, e): a known name, an upper-case name, or a
   -- spoken name matched against the world's waypoints and the route.
   function m:waypoint(b, e, id)
@@ -642,15 +654,18 @@ return function(H, f, compass)
       local t = self.t[i]
       if not self.u:used(i) and t.kind == "word" and not t.number_word and #t.text >= 2
           and (not t.keyword or t.text == "direct") and not t.filler and not L.pronouns[t.text] then
-        local cand = t.text
-        for k = 0, 1 do
-          local idx, score = squawk.translate.best_match(cand, names)
-          if idx and (not best or score > best_score) then
-            best, best_score, best_word, best_span = names[idx], score, cand, { i, i + k + 1 }
+        -- (a name speech recognition split into syllables, "direct as bin" -> ASBIN, "toe bix" -> TOBIX:
+        -- the two words together, when they spell the name, or the name and one silent letter more, are
+        -- kept before one word alone that sounds as well)
+        local cands, nx = { { t.text, 1 } }, self.t[i + 1]
+        if i + 1 < e and nx.kind == "word" then table.insert(cands, 1, { t.text .. nx.text, 2 }) end
+        for _, c in ipairs(cands) do
+          local idx, score = squawk.translate.best_match(c[1], names)
+          if idx and c[2] == 2 and not spelled_within_one(c[1], names[idx]:lower()) then idx = nil end
+          if idx and (not best or score > best_score
+              or (score == best_score and c[2] == 2 and best_span[2] == best_span[1] + 1)) then
+            best, best_score, best_word, best_span = names[idx], score, c[1], { i, i + c[2] }
           end
-          local nx = self.t[i + k + 1]
-          if i + k + 1 >= e or nx.kind ~= "word" then break end
-          cand = cand .. nx.text
         end
       end
     end
@@ -782,8 +797,24 @@ return function(H, f, compass)
       local t, nx = self.t[i], self.t[i + 1]
       if not self.u:used(i) and t.kind == "word" and t.alpha and not t.filler and not t.number_word then
         local phrases = {}  -- {words, the position after them}
+        -- (a name of three to six words said whole first, as said and as its short form: "san sebastian
+        -- de los reyes" is "S S REYES", SSY; lexicon.name_particles)
+        local words = { t.text }
+        for j = i + 1, math.min(e, i + 6) - 1 do
+          local w = self.t[j]
+          if self.u:used(j) or w.kind ~= "word" or not w.alpha or w.keyword or w.filler then break end
+          words[#words + 1] = w.text
+        end
+        for n = #words, 3, -1 do
+          local short = {}
+          for k = 1, n - 1 do
+            if not PARTICLES[words[k]] then short[#short + 1] = words[k]:sub(1, 1) end
+          end
+          phrases[#phrases + 1] = { table.concat(words, " ", 1, n), i + n }
+          phrases[#phrases + 1] = { table.concat(short, " ") .. " " .. words[n], i + n }
+        end
         if nx and i + 1 < e and nx.kind == "word" and nx.alpha and not self.u:used(i + 1) then
-          phrases[1] = { t.text .. " " .. nx.text, i + 2 }
+          phrases[#phrases + 1] = { t.text .. " " .. nx.text, i + 2 }
         end
         if #t.text >= 4 and not t.keyword and not two_words then phrases[#phrases + 1] = { t.text, i + 1 } end
         for _, p in ipairs(phrases) do

@@ -173,6 +173,10 @@ return function(H, f, wrap, compass)
       local d = q.number.digits  -- a stutter: "one four fourteen" -> 14 (thousand)
       if #d >= 4 and #d % 2 == 0 and d:sub(1, #d // 2) == d:sub(#d // 2 + 1) then ft = tonumber(d:sub(1, #d // 2)) end
     end
+    -- (a level said as "zero" alone, a word between it and "level" unread: "flight level for zero", is asked)
+    if q.kind == "plain" and ft == 0 and not q.number.typed then
+      return self:need(string.format("What altitude should %s %s to? I heard '%s'.", ids[1], verb, self:raw(q.b, q.e)))
+    end
     if q.kind == "plain" then
       if ft < 100 and not q.number.typed then
         ft = ft * 1000  -- "maintain niner (thousand)"

@@ -376,6 +376,11 @@ return {
   waypoint_confirm = 1.0,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
+  -- the little words inside a place's name ("San Sebastian de los Reyes") that the navdata's short form of
+  -- it leaves out ("S.S. REYES"); a name of three words or more said whole is looked for as said and as the
+  -- initials of its words before the last, these left out, then the last word
+  name_particles = { "de", "del", "la", "las", "los", "le", "les", "du", "des", "da", "do", "dos", "di",
+    "van", "von", "der", "den" },
   -- a navaid said by its name within this of a large airport stands on it: "create ... at Marseille" is the
   -- airport (LFML), not its NDB (MJ) [NM]
   on_airport_nm = 1,
@@ -526,6 +531,11 @@ return {
     cuatro = "four", cinco = "five", seis = "six", siete = "seven", ocho = "eight", nueve = "nine",
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
     nove = "nine" },
+  -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
+  -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
+  -- read is exactly one aircraft's (grammar.lua homophone_ids)
+  digit_homophones = { to = "two", too = "two", ["for"] = "four", fore = "four", won = "one", ate = "eight",
+    oh = "zero" },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits

@@ -2357,3 +2357,54 @@ do
     check_eq(pt("American 2307 cross CREEK at one two thousand"), "AT AAL2307 CREEK ALT 12000")
   end
 end
+
+-- Cycle 19 (R42's classes, docs/translator_trust.md "Speech recognition"): a digit's homophone inside a
+-- callsign is that digit only where the callsign so read is exactly one aircraft's; a telephony run into its
+-- number is that aircraft; a route's name split into syllables is joined when the words spell it (or it
+-- with one silent letter more); a near miss is asked about
+do
+  local s42 = squawk.sim.new()
+  for _, line in ipairs({ "CRE WZZ2LP A321 42.3 12.4 200 FL260 280", "CRE DLH400 B744 42.5 12.0 270 FL330 300",
+      "CRE DLH44 A320 42.1 12.9 180 FL120 250", "CRE BAW4 A320 42.0 12.2 090 FL200 250",
+      "CRE BAW42 A320 42.2 12.6 090 FL220 250", "DEFWPT TOBIX 42.6 12.8", "DEFWPT ASBIN 42.7 12.1",
+      "ADDWPT WZZ2LP TOBIX", "ADDWPT WZZ2LP ASBIN" }) do
+    check(s42:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = s42, mode = "offline" })) end
+  check_eq(ex("wizz air to lima papa turn left heading one zero zero"), "HDG WZZ2LP 100 LEFT")
+  check_eq(ex("lufthansa for hundred climb flight level three five zero"), "ALT DLH400 FL350")
+  check_eq(ex("lufthansa for for descend flight level one zero zero"), "ALT DLH44 FL100")
+  check_eq(ex("lufthansa for oh oh climb flight level three five zero"), "ALT DLH400 FL350")
+  -- (BAW4 flies: "to" after its number stays a preposition, and the level is read)
+  check_eq(ex("speedbird four climb to two four zero"), "ALT BAW4 FL240")
+  check(ex("speedbird four to turn left heading one zero zero") ~= "HDG BAW42 100 LEFT", "BAW4 flies")
+  check_eq(ex("speedbird42 turn right heading two seven zero"), "HDG BAW42 270 RIGHT")
+  check_eq(ex("wizzair2lp turn right heading two seven zero"), "HDG WZZ2LP 270 RIGHT")
+  check(ex("speedbird43 turn right heading two seven zero"):match("^ASK") ~= nil, "no BAW43 flies")
+  check_eq(ex("wizz air two lima papa direct toe bix"), "DIRECT WZZ2LP TOBIX")
+  check_eq(ex("wizz air two lima papa proceed direct as bin"), "DIRECT WZZ2LP ASBIN")
+  check(ex("wizz air two lima papa direct toe bax"):match("^ASK") ~= nil, "a near miss is asked about")
+  -- a digit's homophone inside a level's or heading's three spoken digits is that digit; a level heard as
+  -- "zero" alone is asked about
+  check_eq(ex("wizz air two lima papa climb flight level three for zero"), "ALT WZZ2LP FL340")
+  check_eq(ex("lufthansa four hundred turn left heading won eight zero"), "HDG DLH400 180 LEFT")
+  check_eq(ex("lufthansa four hundred turn right heading two ate zero"), "HDG DLH400 280 RIGHT")
+  check(ex("lufthansa four hundred descend flight level for zero"):match("^ASK") ~= nil, "no level 0")
+  check(ex("lufthansa four hundred descend flight level to for zero"):match("^ASK") ~= nil, "FL240 or FL040")
+end
+
+-- Cycle 19: a navaid's name of three words or more said whole is that navaid, the navdata's short form of it
+-- too ("San Sebastian de los Reyes": "S.S. REYES", SSY); its first two words alone name two others, asked about
+do
+  local mad = squawk.sim.new()
+  check(mad:exec("CRE AEA051 B738 40.0 -3.5 350 FL120 250"))
+  local function ex(text) return said(graph.translate(text, { sim = mad, mode = "offline" })) end
+  if #mad:navaids_named("s s reyes", 40, -3.5, 100) == 1 then
+    check_eq(ex("europa zero five one proceed direct san sebastian de los reyes"), "ADDWPT AEA051 SSY ; DIRECT AEA051 SSY")
+    check_eq(ex("AEA051 direct San Sebastian de los Reyes, then climb FL240"),
+      "ADDWPT AEA051 SSY ; DIRECT AEA051 SSY ; ALT AEA051 FL240")
+    check(ex("europa zero five one proceed direct san sebastian"):match("^ASK Which navaid") ~= nil, "SSN or HIG")
+  else
+    print("skipped: navaid names need navdata (SQUAWK_NAVDATA)")
+  end
+end
