@@ -4,15 +4,35 @@
 -- inexact callsigns asked about.
 local graph = require("translate.graph")
 
-local sim = squawk.sim.new()
-for _, line in ipairs({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
-    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" }) do
-  check(sim:exec(line))
-end
-local function tr(text) return graph.translate(text, { sim = sim, mode = "offline" }) end
 local function said(r)
   return r.ask and ("ASK " .. r.ask) or table.concat(r.commands or {}, " ; ")
 end
+-- A simulator set up by TrafScript lines (each must run), and a function that translates a text
+-- offline against it, returning what squawk says: "ASK ..." or the commands joined by " ; ".
+local function scene(lines)
+  local s = squawk.sim.new()
+  for _, line in ipairs(lines) do
+    check(s:exec(line), line)
+  end
+  return s, function(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+end
+-- The same over BlueSky's navdata at ../shared/bluesky/navdata; nil after saying which checks ("why")
+-- are skipped when it is absent.
+local function navscene(lines, why)
+  local ok, s = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
+  if not ok then
+    print("skipped: " .. why .. " need BlueSky's navdata at ../shared/bluesky/navdata")
+    return nil
+  end
+  for _, line in ipairs(lines) do
+    check(s:exec(line), line)
+  end
+  return s, function(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+end
+
+local sim = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+local function tr(text) return graph.translate(text, { sim = sim, mode = "offline" }) end
 
 -- 1. every value accounted for: a fragment left over is asked about, by name, and nothing runs
 local r = tr("KLM1234 turn right heading 160 DLH4AX 2")
@@ -247,12 +267,8 @@ check_eq(one("aca851fl240"), "ALT ACA851 FL240")
 check_eq(one("ACA851S250"), "SPD ACA851 250")
 check_eq(one("aca85fl240"):find("^ASK") ~= nil, true)
 -- a corrected callsign: the one after the correction is instructed, never the one before it
-local azu = squawk.sim.new()
-for _, line in ipairs({ "CRE AZU4014 A320 52 4 090 FL200 250", "CRE AZU4041 A320 52.2 4 090 FL200 250",
-    "CRE KLM12 B738 52.4 4 090 FL200 250", "CRE KLM21 B738 52.6 4 090 FL200 250" }) do
-  check(azu:exec(line))
-end
-local function cor(text) return said(graph.translate(text, { sim = azu, mode = "offline" })) end
+local azu, cor = scene({ "CRE AZU4014 A320 52 4 090 FL200 250", "CRE AZU4041 A320 52.2 4 090 FL200 250",
+    "CRE KLM12 B738 52.4 4 090 FL200 250", "CRE KLM21 B738 52.6 4 090 FL200 250" })
 check_eq(cor("azul four zero one four correction four zero four one reduce speed two two zero"), "SPD AZU4041 220")
 check_eq(cor("AZU4014 correction 4041 reduce speed 220"), "SPD AZU4041 220")
 check_eq(cor("KLM12 correction KLM21 climb FL300"), "ALT KLM21 FL300")
@@ -370,12 +386,8 @@ end
 
 -- spoken telephony split by speech recognition matches when every character does; a
 -- partial flight number asks while other aircraft fly
-local csim = squawk.sim.new()
-for _, line in ipairs({ "CRE BAW456 A320 51.5 0.2 090 FL150 250", "CRE RYR7TK B738 51.7 0.4 270 FL190 270",
-    "CRE EZY33 A319 51.2 0.1 180 FL110 240", "CRE N77AB C172 51.3 0.5 000 3000 100" }) do
-  check(csim:exec(line))
-end
-local function ctr(text) return said(graph.translate(text, { sim = csim, mode = "offline" })) end
+local csim, ctr = scene({ "CRE BAW456 A320 51.5 0.2 090 FL150 250", "CRE RYR7TK B738 51.7 0.4 270 FL190 270",
+    "CRE EZY33 A319 51.2 0.1 180 FL110 240", "CRE N77AB C172 51.3 0.5 000 3000 100" })
 check_eq(ctr("speed bird four five six turn left heading one two zero"), "HDG BAW456 120 LEFT")
 check_eq(ctr("ryan air seven tango kilo climb flight level two one zero"), "ALT RYR7TK FL210")
 check_eq(ctr("easy jet three three reduce speed two two zero"), "SPD EZY33 220")
@@ -525,13 +537,9 @@ check_eq(said(tr("stop the clock")), "HOLD")
 check_eq(said(tr("start the clock at 2x")), "OP ; DTMULT 2")
 
 -- speech-recognition output (R15's classes; docs/translator_trust.md "Speech recognition")
-local asr = squawk.sim.new()
-for _, line in ipairs({ "CRE AAL100 B738 40.5 -73.5 090 FL240 280", "CRE DLH400 A321 50.0 8.5 180 FL300 290",
+local asr, heard = scene({ "CRE AAL100 B738 40.5 -73.5 090 FL240 280", "CRE DLH400 A321 50.0 8.5 180 FL300 290",
     "CRE DLH40 A320 50.2 8.6 270 FL200 260", "CRE BAW78 A319 51.5 0.0 090 11000 250",
-    "CRE BAW789 A320 51.6 0.1 270 FL250 280", "CRE KLM544 B738 52.3 4.7 045 FL150 260" }) do
-  check(asr:exec(line))
-end
-local function heard(text) return said(graph.translate(text, { sim = asr, mode = "offline" })) end
+    "CRE BAW789 A320 51.6 0.1 270 FL250 280", "CRE KLM544 B738 52.3 4.7 045 FL150 260" })
 local function asks(text, part)
   local s = heard(text)
   check(s:sub(1, 4) == "ASK " and (not part or s:find(part, 1, true) ~= nil), text .. " -> " .. s)
@@ -577,13 +585,10 @@ check_eq(heard("create TST2 b738 at 52.1 4.3 heading 090 nine thousand one eight
 check_eq(heard("AAL100 descend four thousand five hundred"), "ALT AAL100 4500")
 -- R17's classes (docs/translator_trust.md "Speech recognition"): European radiotelephony read by a recogniser
 do
-  local eu = squawk.sim.new()
-  for _, line in ipairs({ "CRE AFR28 A320 48.5 2.5 200 FL240 280", "CRE IBE3KT A321 40.4 -3.6 090 9000 250",
+  local eu = scene({ "CRE AFR28 A320 48.5 2.5 200 FL240 280", "CRE IBE3KT A321 40.4 -3.6 090 9000 250",
       "CRE SAS4472 A20N 55.6 12.6 130 FL350 M.78", "CRE SAS447 A320 55.7 12.7 300 FL310 280",
       "CRE KLM61M B738 52.3 4.7 010 FL150 260", "CRE AUA27D A320 48.1 16.5 240 FL120 250",
-      "CRE EWG7FX A320 50.9 7.1 120 FL200 270", "DEFWPT ROK 48.9 2.4", "ADDWPT AFR28 ROK" }) do
-    check(eu:exec(line))
-  end
+      "CRE EWG7FX A320 50.9 7.1 120 FL200 270", "DEFWPT ROK 48.9 2.4", "ADDWPT AFR28 ROK" })
   local function eut(text)
     local r = graph.translate(text, { sim = eu, mode = "offline" })
     return said(r), r.note
@@ -645,13 +650,9 @@ check(heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"):find("
 -- one aircraft of that airline flying; with two it asks which, with none it asks; a callsign cut
 -- short in radiotelephony ("Lufthansa, descend") and other traffic named that way are no reference
 do
-  local fleet = squawk.sim.new()
-  for _, line in ipairs({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250",
+  local fleet, ft = scene({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250",
       "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE BAW123 A320 52.0 4.0 025 FL200 250",
-      "CRE EZY45 A319 52.1 3.8 060 FL180 270", "CRE N123AB C172 52.3 4.6 090 3500 110" }) do
-    check(fleet:exec(line))
-  end
-  local function ft(text) return said(graph.translate(text, { sim = fleet, mode = "offline" })) end
+      "CRE EZY45 A319 52.1 3.8 060 FL180 270", "CRE N123AB C172 52.3 4.6 090 3500 110" })
   check_eq(ft("would you mind asking the Lufthansa to come down to FL 260?"), "ALT DLH4AX FL260")
   check_eq(ft("I'd like the easyJet on heading 120, thanks"), "HDG EZY45 120")
   check_eq(ft("could the BA slow to 230 knots please"), "SPD BAW123 230")
@@ -755,13 +756,9 @@ end
 
 -- An experimenter's command box: sim control, creating and moving traffic, CD/CR settings
 do
-  local box = squawk.sim.new()
-  for _, line in ipairs({ "DEFWPT TULIP 52.3 4.6", "DEFWPT DAHLI 52.5 4.8", "CRE KL204 A320 52.0 4.0 090 FL250 280",
+  local box, bt = scene({ "DEFWPT TULIP 52.3 4.6", "DEFWPT DAHLI 52.5 4.8", "CRE KL204 A320 52.0 4.0 090 FL250 280",
       "CRE EZY45 A319 52.0 5.0 270 FL250 280", "CRE BAW123 B738 52.4 4.5 180 FL310 300", "ADDWPT BAW123 TULIP",
-      "ADDWPT BAW123 DAHLI", "CRE WZZ1234 A321 52.5 4.6 200 FL340 290" }) do
-    check(box:exec(line))
-  end
-  local function bt(text) return said(graph.translate(text, { sim = box, mode = "offline" })) end
+      "ADDWPT BAW123 DAHLI", "CRE WZZ1234 A321 52.5 4.6 200 FL340 290" })
   -- the clock said as a clause of its own in a list runs; "KL204, resume" starts no clock
   check_eq(bt("pause, BAW123 direct DAHLI, then go"), "HOLD ; DIRECT BAW123 DAHLI ; OP")
   check_eq(bt("reso MVP, pz 4 nm, then carry on"), "RESO MVP ; ZONER 4 ; OP")
@@ -974,13 +971,9 @@ end
 -- formal "descend and maintain ... then" waits; a waypoint's type said as what it is; "resume own
 -- navigation" with no route is asked about; a flight number's letters said apart; an airline's 737
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE KLM1234 B738 52.6 4.2 140 FL250 290", "CRE RYR81JC B738 51.2 0.4 310 FL110 250",
+  local lab, lt = scene({ "CRE KLM1234 B738 52.6 4.2 140 FL250 290", "CRE RYR81JC B738 51.2 0.4 310 FL110 250",
       "CRE EIN44 A320 51.75 4.45 315 FL320 290", "CRE BAW123 A321 52.2 3.9 060 FL120 250",
-      "DEFWPT ALPHA 52.0 4.0", "ADDWPT RYR81JC ALPHA" }) do
-    check(lab:exec(line))
-  end
-  local function lt(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+      "DEFWPT ALPHA 52.0 4.0", "ADDWPT RYR81JC ALPHA" })
   check_eq(lt("KLM1234 speed 280, no wait, 270"), "SPD KLM1234 270")
   check_eq(lt("KLM1234 climb to FL300... sorry FL310"), "ALT KLM1234 FL310")
   check_eq(lt("RYR81JC descend to four thousand feet, no sorry, five thousand"), "ALT RYR81JC 5000")
@@ -1026,13 +1019,9 @@ end
 -- North American traffic (R19): a Canadian registration spelled or hyphenated, a maker before it; a
 -- military telephony; a new aircraft of an airline already flying, its flight number said in words
 do
-  local na = squawk.sim.new()
-  for _, line in ipairs({ "CRE CFABC C172 43.7 -79.2 090 3000 100", "CRE ASA331 B739 46.6 -122.6 350 FL200 290",
+  local na, nt = scene({ "CRE CFABC C172 43.7 -79.2 090 3000 100", "CRE ASA331 B739 46.6 -122.6 350 FL200 290",
       "CRE RCH451 C17 40.4 -74.6 045 FL240 300", "CRE NAVY21 C130 41.7 -88.9 020 9000 250",
-      "CRE DLH4AX A321 52.4 4.4 090 FL300 280" }) do
-    check(na:exec(line))
-  end
-  local function nt(text) return said(graph.translate(text, { sim = na, mode = "offline" })) end
+      "CRE DLH4AX A321 52.4 4.4 090 FL300 280" })
   check_eq(nt("C-FABC descend to two thousand five hundred"), "ALT CFABC 2500")
   check_eq(nt("Cessna Charlie Foxtrot Alpha Bravo Charlie, fly heading two seven zero"), "HDG CFABC 270")
   check_eq(nt("what's the position of Charlie Foxtrot Alpha Bravo Charlie?"), "POS CFABC")
@@ -1116,12 +1105,8 @@ check(said(tr("BAW8CK climb at your discretion")):find("^ASK") ~= nil, "no level
 check_eq(said(tr("DLH4AX descend at pilot's discretion, maintain FL240")), "ALT DLH4AX FL240")
 -- "cross FIX at ALT and SPD": one AT constraint each at a waypoint of the route; off the route, asked
 do
-  local cs = squawk.sim.new()
-  for _, line in ipairs({ "CRE AB12 A320 52 4 090 FL200 250", "DEFWPT WP1 52.1 4.5", "DEFWPT WP2 52.2 4.8",
-      "ADDWPT AB12 WP1" }) do
-    check(cs:exec(line))
-  end
-  local function ct(text) return said(graph.translate(text, { sim = cs, mode = "offline" })) end
+  local cs, ct = scene({ "CRE AB12 A320 52 4 090 FL200 250", "DEFWPT WP1 52.1 4.5", "DEFWPT WP2 52.2 4.8",
+      "ADDWPT AB12 WP1" })
   check_eq(ct("AB12 cross WP1 at FL150 and 240 knots"), "AT AB12 WP1 ALT FL150 ; AT AB12 WP1 SPD 240")
   check_eq(ct("AB12 cross WP1 at mach .74"), "AT AB12 WP1 SPD M0.74")
   check(ct("AB12 cross WP2 at FL150 and 240 knots"):find("^ASK") ~= nil, "WP2 is not on the route")
@@ -1153,11 +1138,7 @@ check_eq(said(tr("DLH4AX heading minus 20")), "HDG DLH4AX 70 LEFT")
 check_eq(said(tr("subtract 45 from DLH4AX's heading")), "HDG DLH4AX 45 LEFT")
 check_eq(said(tr("add 15 to the heading of DLH4AX")), "HDG DLH4AX 105 RIGHT")
 do -- a waypoint of the route said straight after "delete"/"remove" is taken off the route
-  local ds = squawk.sim.new()
-  for _, line in ipairs({ "CRE AB12 A320 52 4 090 FL200 250", "DEFWPT WP1 52.1 4.5", "ADDWPT AB12 WP1" }) do
-    check(ds:exec(line))
-  end
-  local function dt(text) return said(graph.translate(text, { sim = ds, mode = "offline" })) end
+  local ds, dt = scene({ "CRE AB12 A320 52 4 090 FL200 250", "DEFWPT WP1 52.1 4.5", "ADDWPT AB12 WP1" })
   check_eq(dt("AB12 delete WP1"), "DELWPT AB12 WP1")
   check_eq(dt("remove WP1 from AB12"), "DELWPT AB12 WP1")
   check_eq(dt("delete AB12"), "DEL AB12")
@@ -1178,12 +1159,8 @@ end
 -- South Asian and East African airlines by their ICAO telephony (PIA is "Pakistan", Biman "Bangladesh",
 -- Air Tanzania "Tanzania", SriLankan "Srilankan")
 do
-  local sa = squawk.sim.new()
-  for _, line in ipairs({ "CRE PIA207 B738 24.9 67.2 90 FL200 280", "CRE BBC85 B738 23.8 90.4 90 FL200 280",
-      "CRE ATC412 A320 -6.9 39.2 90 FL200 280", "CRE ALK226 A320 7.2 79.9 90 FL200 280" }) do
-    check(sa:exec(line))
-  end
-  local function st(text) return said(graph.translate(text, { sim = sa, mode = "offline" })) end
+  local sa, st = scene({ "CRE PIA207 B738 24.9 67.2 90 FL200 280", "CRE BBC85 B738 23.8 90.4 90 FL200 280",
+      "CRE ATC412 A320 -6.9 39.2 90 FL200 280", "CRE ALK226 A320 7.2 79.9 90 FL200 280" })
   check_eq(st("Pakistan two zero seven, climb flight level two four zero"), "ALT PIA207 FL240")
   check_eq(st("remove Bangladesh 85"), "DEL BBC85")
   check_eq(st("Tanzania 412 turn left heading 300"), "HDG ATC412 300 LEFT")
@@ -1306,12 +1283,8 @@ do
 end
 -- An experiment session set up at the command box (R23)
 do
-  local ex = squawk.sim.new()
-  for _, line in ipairs({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
-      "CRE KLM77 B738 52.1 4.5 180 FL150 250" }) do
-    check(ex:exec(line))
-  end
-  local function et(text) return said(graph.translate(text, { sim = ex, mode = "offline" })) end
+  local ex, et = scene({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+      "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
   -- the addressee is named before the instruction; traffic named in its purpose is context
   check_eq(et("DLH4AX descend FL240 to put it level with KLM77"), "ALT DLH4AX FL240")
   check_eq(et("KLM77 turn left heading 200 to separate from KLM1234"), "HDG KLM77 200 LEFT")
@@ -1360,12 +1333,8 @@ end
 -- Places of the navdata said the way an experimenter writes them (R23): accents, a city before
 -- the airport's name, a navaid's kind, a route as a list
 do
-  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
-  if not ok then
-    print("skipped: R23 place names need BlueSky's navdata at ../shared/bluesky/navdata")
-  else
-    check(nav:exec("CRE KLM1234 B738 52.2 4.2 300 FL250 280"))
-    local function pt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+  local nav, pt = navscene({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280" }, "R23 place names")
+  if nav then
     check_eq(pt("KLM1234 destination Düsseldorf"), "DEST KLM1234 EDDL")
     check_eq(pt("KLM1234 dest Amsterdam Schiphol"), "DEST KLM1234 EHAM")
     check_eq(pt("create KLM5 B738 @ Eelde VOR hdg 090 FL100 250kt"), "CRE KLM5 B738 EEL 90 FL100 250")
@@ -1379,14 +1348,8 @@ end
 -- a waypoint added with the level it is crossed at, an airport's name of three words, "going to" and a
 -- route's "land it at" an airport as the destination, "put X over" a navaid's nav.dat name
 do
-  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
-  if not ok then
-    print("skipped: place names need BlueSky's navdata at ../shared/bluesky/navdata")
-  else
-    for _, line in ipairs({ "CRE SWR38F A320 47.8 8.4 090 FL250 280", "CRE AFR12 A320 48.9 2.6 180 FL200 260" }) do
-      check(nav:exec(line))
-    end
-    local function pt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+  local nav, pt = navscene({ "CRE SWR38F A320 47.8 8.4 090 FL250 280", "CRE AFR12 A320 48.9 2.6 180 FL200 260" }, "place names")
+  if nav then
     check_eq(pt("SWR38F add TRA at 9000 ft"), "ADDWPT SWR38F TRA 9000")
     check_eq(pt("SWR38F, add TRA at flight level one eight zero, 250 knots"), "ADDWPT SWR38F TRA FL180 250")
     check_eq(pt("AFR12 origin Charles de Gaulle, destination Orly"), "ORIG AFR12 LFPG ; DEST AFR12 LFPO")
@@ -1408,13 +1371,9 @@ end
 -- flying as TRA or TVF, a callsign said with the brand's name is its aircraft of those characters,
 -- "the Citation" the one Cessna business jet flying
 do
-  local sky = squawk.sim.new()
-  for _, line in ipairs({ "CRE TVF33KP B738 49.0 2.5 045 FL250 280", "CRE EZS1419 A320 47.5 8.0 090 FL300 280",
+  local sky, st = scene({ "CRE TVF33KP B738 49.0 2.5 045 FL250 280", "CRE EZS1419 A320 47.5 8.0 090 FL300 280",
       "CRE N525TX C525 49.2 4.2 270 FL280 250", "CRE JAF2RK B738 50.9 4.5 180 FL310 280",
-      "CRE B744X B744 51.0 3.0 090 FL350 290", "CRE SWR12 A320 47.4 8.5 270 FL320 280" }) do
-    check(sky:exec(line))
-  end
-  local function st(text) return said(graph.translate(text, { sim = sky, mode = "offline" })) end
+      "CRE B744X B744 51.0 3.0 090 FL350 290", "CRE SWR12 A320 47.4 8.5 270 FL320 280" })
   check_eq(st("speed the Transavia up to 310"), "SPD TVF33KP 310")
   check_eq(st("please bring the easyJet down to FL 200"), "ALT EZS1419 FL200")
   check_eq(st("Transavia three three kilo papa, climb flight level two niner zero"), "ALT TVF33KP FL290")
@@ -1430,11 +1389,8 @@ end
 
 -- Lab talk of an experimenter at the scope (round 27's classes, sentences written here)
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE RYR81JC B738 52.0 4.0 010 FL320 280", "CRE AEA44 B738 52.3 4.3 135 FL300 290",
-      "CRE IBE2604 A321 52.5 4.6 035 FL330 290", "DEFWPT WPA 52.6 4.9", "ADDWPT AEA44 WPA" }) do
-    check(lab:exec(line))
-  end
+  local lab = scene({ "CRE RYR81JC B738 52.0 4.0 010 FL320 280", "CRE AEA44 B738 52.3 4.3 135 FL300 290",
+      "CRE IBE2604 A321 52.5 4.6 035 FL330 290", "DEFWPT WPA 52.6 4.9", "ADDWPT AEA44 WPA" })
   local function lt(text) return said(graph.translate(text, { sim = lab, mode = "offline", waypoints = { "WPA" } })) end
   -- a speed verb's particle with its aircraft between is no change of level
   check_eq(lt("slow the Ryanair down to 250"), "SPD RYR81JC 250")
@@ -1491,13 +1447,9 @@ end
 -- telephony (names.lua), another airline's telephony asked about, never matched by its digits alone;
 -- a callsign heard with a wrong last digit and corrected; radar identification stated to the pilot
 do
-  local see = squawk.sim.new()
-  for _, line in ipairs({ "CRE TVS421 B738 49.5 15.5 300 FL110 250", "CRE ASL354 A319 45.6 20.1 170 FL230 280",
+  local see, se = scene({ "CRE TVS421 B738 49.5 15.5 300 FL110 250", "CRE ASL354 A319 45.6 20.1 170 FL230 280",
       "CRE ASL7TG AT76 44.0 21.5 320 FL140 210", "CRE LZB118 A320 42.7 23.4 090 FL200 270",
-      "CRE WZZ1235 A21N 47.4 19.2 260 FL350 280" }) do
-    check(see:exec(line))
-  end
-  local function se(text) return said(graph.translate(text, { sim = see, mode = "offline" })) end
+      "CRE WZZ1235 A21N 47.4 19.2 260 FL350 280" })
   check_eq(se("Skytravel four two one, descend flight level one zero zero"), "ALT TVS421 FL100")
   check_eq(se("Air Serbia seven tango golf, speed two one zero"), "SPD ASL7TG 210")
   check_eq(se("Flying Bulgaria one one eight climb FL240"), "ALT LZB118 FL240")
@@ -1532,12 +1484,8 @@ end
 -- phraseology), anywhere in the request, is that aircraft only when the digits and letters are exactly
 -- its id; a near one is asked about
 do
-  local ga = squawk.sim.new()
-  for _, line in ipairs({ "CRE N4417P PA28 47.7 -122.2 180 4500 110", "CRE N62TX C182 47.5 -122.0 090 5500 120",
-      "CRE ASA331 B739 46.6 -122.6 350 FL200 290" }) do
-    check(ga:exec(line))
-  end
-  local function g(text) return said(graph.translate(text, { sim = ga, mode = "offline" })) end
+  local ga, g = scene({ "CRE N4417P PA28 47.7 -122.2 180 4500 110", "CRE N62TX C182 47.5 -122.0 090 5500 120",
+      "CRE ASA331 B739 46.6 -122.6 350 FL200 290" })
   check_eq(g("Please delete Cherokee four four one seven papa"), "DEL N4417P")
   check_eq(g("turn Skylane six two tango x-ray left heading 270"), "HDG N62TX 270 LEFT")
   check_eq(g("Skylane six two tango x-ray, climb 7500"), "ALT N62TX 7500")
@@ -1570,12 +1518,8 @@ end
 -- runs with it, never dropped for it; a garbled airline word before more digits than an aircraft's
 -- flight number is asked about, never matched to the shorter number
 do
-  local asia = squawk.sim.new()
-  for _, line in ipairs({ "CRE UAE512 B77W 25.3 55.6 090 FL200 300", "DEFWPT DESDI 25.5 56.0", "ADDWPT UAE512 DESDI",
-      "CRE GIA412 B738 -4.90 106.80 190 FL170 280", "CRE QFA41 A333 -7.80 107.80 320 FL230 300" }) do
-    check(asia:exec(line))
-  end
-  local function at(text) return said(graph.translate(text, { sim = asia, mode = "offline" })) end
+  local asia, at = scene({ "CRE UAE512 B77W 25.3 55.6 090 FL200 300", "DEFWPT DESDI 25.5 56.0", "ADDWPT UAE512 DESDI",
+      "CRE GIA412 B738 -4.90 106.80 190 FL170 280", "CRE QFA41 A333 -7.80 107.80 320 FL230 300" })
   -- (a bound is no exact constraint: asked first, the yes runs the instruction and the exact constraint)
   local bounded = graph.translate("Emirates five one two, descend to flight level one two zero, cross DESDI at or below "
     .. "flight level one five zero", { sim = asia, mode = "offline" })
@@ -1591,12 +1535,8 @@ end
 -- before the callsign; the type before the callsign; a designator's digits after an airline; a label
 -- sentence or the aircraft an intruder is for before a colon; CRE's order typed bare
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
-      "CRE KLM77 B738 52.1 4.5 180 FL150 250" }) do
-    check(lab:exec(line))
-  end
-  local function cr(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local lab, cr = scene({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+      "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
   -- minutes of 60 or more, or degrees beyond a pole or the antimeridian: asked, never re-read
   check_eq(cr("create AB1 A320 at N55 75 W003 20 heading 090 FL200 250"),
     "ASK 'N55 75 W003 20' is no position: minutes run from 0 to 59. Which latitude and longitude do you mean?")
@@ -1630,12 +1570,8 @@ do
   -- CRECONFS typed with its argument names; random traffic "for extra load" loads no file
   check_eq(cr("creconfs XY20 A320 KLM77 dpsi 90 cpa 0.5 tlos 300"), "CRECONFS XY20 A320 KLM77 90 0.5 300")
   check_eq(cr("spawn 10 random aircraft for extra load"), "MCRE 10")
-  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
-  if not ok then
-    print("skipped: creations at navdata places need BlueSky's navdata at ../shared/bluesky/navdata")
-  else
-    check(nav:exec("CRE KLM1234 B738 52.2 4.2 300 FL250 280"))
-    local function nt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+  local nav, nt = navscene({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280" }, "creations at navdata places")
+  if nav then
     -- the destination and the route said after the creation
     check_eq(nt("create XY30 A320 at SPY heading 090 FL100 250, going to Schiphol"),
       "CRE XY30 A320 SPY 90 FL100 250 ; DEST XY30 EHAM")
@@ -1667,12 +1603,8 @@ end
 -- context. A self-correction takes back what it follows: a cut-off instruction, the names said again
 -- after "just", the kinds of command "just the ..." does not name; anything else is asked about.
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE NAX12 B738 60.1 11.0 090 FL120 280", "CRE ICE44 B752 60.3 12.0 270 FL90 290",
-      "CRE FIN7 A320 60.0 11.5 180 FL200 300", "DEFWPT OSLOA 60.2 11.2", "DEFWPT OSLOB 60.4 11.4" }) do
-    check(lab:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local lab, ex = scene({ "CRE NAX12 B738 60.1 11.0 090 FL120 280", "CRE ICE44 B752 60.3 12.0 270 FL90 290",
+      "CRE FIN7 A320 60.0 11.5 180 FL200 300", "DEFWPT OSLOA 60.2 11.2", "DEFWPT OSLOB 60.4 11.4" })
   local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
   -- remarks after a dash, in brackets, after a comma
   check_eq(ex("NAX12 descend FL80 - we'd like it under ICE44's band for this run"), "ALT NAX12 FL80")
@@ -1741,12 +1673,8 @@ end
 -- telephony: "Alpine" is easyJet Europe (EJU), "Topswiss" easyJet Switzerland (EZS); "Lauda" names both
 -- Lauda Air (LDA) and Lauda Motion (LDM), so a callsign said with it is the one of them whose characters fit
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE EJU74QP A320 47.6 12.8 300 FL200 270", "CRE EZS12 A320 47.8 12.8 300 FL220 270",
-      "CRE LDM82Y A320 47.3 16.0 020 FL200 280" }) do
-    check(lab:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local lab, ex = scene({ "CRE EJU74QP A320 47.6 12.8 300 FL200 270", "CRE EZS12 A320 47.8 12.8 300 FL220 270",
+      "CRE LDM82Y A320 47.3 16.0 020 FL200 280" })
   check_eq(ex("Alpine seven four quebec papa turn left heading 270"), "HDG EJU74QP 270 LEFT")
   check_eq(ex("Topswiss one two descend FL150"), "ALT EZS12 FL150")
   check_eq(ex("Lauda 82Y reduce 230"), "SPD LDM82Y 230")
@@ -1761,15 +1689,9 @@ end
 -- else asked about; "Virgin" names Virgin Atlantic (VIR) and Virgin Australia (VOZ): a callsign said with
 -- it is the one flying, a new one takes the airline of the one flying, else is asked about
 do
-  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
-  if not ok then
-    print("skipped: city names in a direct-to need BlueSky's navdata at ../shared/bluesky/navdata")
-  else
-    for _, line in ipairs({ "CRE QFA520 B738 -27.9 152.4 050 FL160 280", "ADDWPT QFA520 BN",
-        "CRE VOZ817 B738 -34.4 150.5 040 FL240 300", "ADDWPT VOZ817 YSSY", "CRE RXA64 SF34 -37.4 144.0 100 FL170 240" }) do
-      check(nav:exec(line))
-    end
-    local function ex(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+  local nav, ex = navscene({ "CRE QFA520 B738 -27.9 152.4 050 FL160 280", "ADDWPT QFA520 BN",
+        "CRE VOZ817 B738 -34.4 150.5 040 FL240 300", "ADDWPT VOZ817 YSSY", "CRE RXA64 SF34 -37.4 144.0 100 FL170 240" }, "city names in a direct-to")
+  if nav then
     check_eq(ex("Qantas 520 track direct Brisbane"), "DIRECT QFA520 BN")
     check_eq(ex("Qantas 520, proceed direct to Brisbane, descend FL120"), "DIRECT QFA520 BN ; ALT QFA520 FL120")
     check_eq(ex("Virgin 817 cleared direct Sydney"), "DIRECT VOZ817 YSSY")
@@ -1794,12 +1716,8 @@ end
 -- altitude after "at" constrains an added waypoint; a written designator beats a spoken family name; a
 -- creation's fields after a comma stay its own; "back to real time rate" sets the rate, no start
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100",
-      "DEFWPT LANDR 42.3 -87.5" }) do
-    check(lab:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local lab, ex = scene({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100",
+      "DEFWPT LANDR 42.3 -87.5" })
   local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
   check_eq(ex("Delta 889 increase your rate of descent to two thousand five hundred"), "VS DAL889 -2500")
   check_eq(ex("DAL889 reduce your rate of climb to 500 fpm"), "VS DAL889 500")
@@ -1835,12 +1753,8 @@ end
 -- "unable" takes its value back; "report level" and "advise when able to resume" ask for a report; a
 -- flight number typed digit by digit; a rate glued to its unit; a compass point agreeing with the heading
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE EIN105 A332 53.0 -13.0 270 FL360 M.82", "CRE TAP237 A21N 38.0 -25.0 240 FL360 M.79",
-      "CRE WJA3 B38M 55.8 -7.0 280 FL340 300" }) do
-    check(lab:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local lab, ex = scene({ "CRE EIN105 A332 53.0 -13.0 270 FL360 M.82", "CRE TAP237 A21N 38.0 -25.0 240 FL360 M.79",
+      "CRE WJA3 B38M 55.8 -7.0 280 FL340 300" })
   local function asked(text) check(ex(text):find("^ASK") ~= nil) end
   check_eq(ex("Shamrock one zero five, Shanwick, climb flight level three eight zero"), "ALT EIN105 FL380")
   check_eq(ex("WestJet 3, Scottish Control, turn right heading 310"), "HDG WJA3 310 RIGHT")
@@ -1893,15 +1807,9 @@ end
 -- several the route holds, else asked; raw coordinates where the command takes them; a name several
 -- navaids bear, one of them in the route ("Stornoway": STN), is that one; a station the navdata names
 do
-  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
-  if not ok then
-    print("skipped: oceanic points need BlueSky's navdata at ../shared/bluesky/navdata")
-  else
-    for _, line in ipairs({ "CRE BAW117 B772 55.0 -12.0 270 FL350 M.84", "ADDWPT BAW117 55N20",
-        "ADDWPT BAW117 55N30", "CRE ICE455 B38M 57.5 -3.5 310 FL300 290", "ADDWPT ICE455 STN" }) do
-      check(nav:exec(line))
-    end
-    local function ex(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+  local nav, ex = navscene({ "CRE BAW117 B772 55.0 -12.0 270 FL350 M.84", "ADDWPT BAW117 55N20",
+        "ADDWPT BAW117 55N30", "CRE ICE455 B38M 57.5 -3.5 310 FL300 290", "ADDWPT ICE455 STN" }, "oceanic points")
+  if nav then
     -- sim:waypoints_at: the idents at exactly a position (both of 53N 50W's), none beside it
     check_eq(table.concat(nav:waypoints_at(55, -30), " "), "55N30")
     local two = nav:waypoints_at(53, -50)
@@ -1930,11 +1838,7 @@ end
 -- an article or the designator's digits between it and the type) or after a short lead-in; a callsign
 -- said and then written as the same id is one aircraft
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100" }) do
-    check(lab:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local lab, ex = scene({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100" })
   local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
   check_eq(ex("Frontier 12 is an A320, 9000 ft, 240 kt, at 42.1N 87.9W heading 180"),
     "CRE FFT12 A320 42.1 -87.9 180 9000 240")
@@ -2010,10 +1914,7 @@ end
 
 -- a creation at a named place: the place said after "at"/"over" is the position, over one named before it
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "DEFWPT GATEA 52.1 4.1", "DEFWPT GATEB 52.3 4.4", "CRE KLM12 B738 52 4 90 FL200 250" }) do
-    check(lab:exec(line))
-  end
+  local lab = scene({ "DEFWPT GATEA 52.1 4.1", "DEFWPT GATEB 52.3 4.4", "CRE KLM12 B738 52 4 90 FL200 250" })
   local function ex(text)
     return said(graph.translate(text, { sim = lab, mode = "offline", waypoints = { "GATEA", "GATEB" } }))
   end
@@ -2026,12 +1927,8 @@ end
 -- its callsign after a semicolon, full stop, comma or "and", are each aircraft's (never one merged
 -- instruction, never a value moved to the other aircraft); "I'm deleting ..." is a deletion said as done
 do
-  local rt = squawk.sim.new()
-  for _, line in ipairs({ "CRE AUA123 A320 48.1 16.5 090 FL200 280", "CRE DLH6CK A320 48.3 16.2 180 FL240 300",
-      "CRE UAL1542 B738 47.9 16.8 270 FL180 260" }) do
-    check(rt:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = rt, mode = "offline" })) end
+  local rt, ex = scene({ "CRE AUA123 A320 48.1 16.5 090 FL200 280", "CRE DLH6CK A320 48.3 16.2 180 FL240 300",
+      "CRE UAL1542 B738 47.9 16.8 270 FL180 260" })
   check_eq(ex("AUA123 climb FL250; DLH6CK descend FL200"), "ALT AUA123 FL250 ; ALT DLH6CK FL200")
   check_eq(ex("Austrian 123 descend flight level one five zero. Lufthansa six charlie kilo climb flight level three one zero."),
     "ALT AUA123 FL150 ; ALT DLH6CK FL310")
@@ -2121,11 +2018,8 @@ end
 -- instruction; greetings in German and the study told as a story; "the British one"; places flown over
 -- that the request asks to add; a heading towards a place
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE DLH5TX A320 48.4 11.2 090 FL240 280", "CRE BAW77 A320 48.6 10.0 100 FL300 280",
-      "CRE EZY9 A319 48.1 12.0 270 FL220 260", "DEFWPT TESTA 48.3 11.9", "DEFWPT TESTB 48.0 12.3" }) do
-    check(lab:exec(line))
-  end
+  local lab = scene({ "CRE DLH5TX A320 48.4 11.2 090 FL240 280", "CRE BAW77 A320 48.6 10.0 100 FL300 280",
+      "CRE EZY9 A319 48.1 12.0 270 FL220 260", "DEFWPT TESTA 48.3 11.9", "DEFWPT TESTB 48.0 12.3" })
   local function ex(text) return said(graph.translate(text, { sim = lab, mode = "offline", waypoints = { "TESTA", "TESTB" } })) end
   check_eq(ex("could the Lufthansa please turn left to 200 degrees"), "HDG DLH5TX 200 LEFT")
   check_eq(ex("the easyJet should descend to FL200 and turn right to 030 degrees"), "ALT EZY9 FL200 ; HDG EZY9 30 RIGHT")
@@ -2179,11 +2073,8 @@ end
 -- line English, a bound at a waypoint is confirmed before an exact constraint is set, typed letter
 -- swaps, lowercase place names in a place's slot, and a waypoint added with its level and speed
 do
-  local lab = squawk.sim.new()
-  for _, line in ipairs({ "CRE AFR56BQ A320 52.0 4.0 090 FL200 280", "CRE KLM88V E190 51.9 5.6 300 FL140 250",
-      "DEFWPT TESTA 52.3 4.5", "ADDWPT KLM88V TESTA" }) do
-    check(lab:exec(line))
-  end
+  local lab = scene({ "CRE AFR56BQ A320 52.0 4.0 090 FL200 280", "CRE KLM88V E190 51.9 5.6 300 FL140 250",
+      "DEFWPT TESTA 52.3 4.5", "ADDWPT KLM88V TESTA" })
   local function tr38(text) return graph.translate(text, { sim = lab, mode = "offline", waypoints = { "TESTA" } }) end
   local function ex(text) return said(tr38(text)) end
   -- "hdg"/"spd" typed among TrafScript's arguments: the English reading, with the field's value
@@ -2259,12 +2150,8 @@ end
 -- 0 kt; a correction naming "just"/"only" some of the aircraft takes back the others (and, with a value after,
 -- the values said before)
 do
-  local s40 = squawk.sim.new()
-  for _, line in ipairs({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
-      "CRE NKS409 A320 52.0 4.0 025 FL200 250", "CRE BAW8CK A320 52.2 4.2 300 FL250 280" }) do
-    check(s40:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = s40, mode = "offline" })) end
+  local s40, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+      "CRE NKS409 A320 52.0 4.0 025 FL200 250", "CRE BAW8CK A320 52.2 4.2 300 FL250 280" })
   check_eq(ex("note for the log: run 4, MVP on, PZ 5 nm"), "ECHO run 4 , MVP on , PZ 5 nm")
   check_eq(ex("log: reso off now, dt 0.5 and FF 10 min"), "ECHO reso off now , dt 0.5 and FF 10 min")
   check_eq(ex("move KLM77 to 52.3, 4.6 and keep it at 4000"), "MOVE KLM77 52.3 4.6 4000")
@@ -2300,12 +2187,8 @@ end
 -- the clock" runs it on; "respectively" pairs the values with the aircraft in order; "MD-11"; a family of
 -- several common variants said alone is asked about
 do
-  local s41 = squawk.sim.new()
-  for _, line in ipairs({ "CRE UPS2931 MD11 33.2 -85.1 045 FL200 300", "DEFWPT HONIE 33.5 -84.8",
-      "ADDWPT UPS2931 HONIE", "CRE ASA1294 B739 33.95 -117.2 265 FL190 290", "CRE UAL1562 B739 33.7 -117.6 315 FL190 250" }) do
-    check(s41:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = s41, mode = "offline" })) end
+  local s41, ex = scene({ "CRE UPS2931 MD11 33.2 -85.1 045 FL200 300", "DEFWPT HONIE 33.5 -84.8",
+      "ADDWPT UPS2931 HONIE", "CRE ASA1294 B739 33.95 -117.2 265 FL190 290", "CRE UAL1562 B739 33.7 -117.6 315 FL190 250" })
   check_eq(ex("UPS 2931 proceed direct HONIE, cross HONIE at one four thousand"),
     "DIRECT UPS2931 HONIE ; AT UPS2931 HONIE ALT 14000")
   check_eq(ex("UPS2931 turn left heading 030, then cross HONIE at and maintain FL150"),
@@ -2336,15 +2219,9 @@ do
   check_eq(ex("create UAL11 a 777 at 40 north 70 west heading 090 FL300 300 knots"), "CRE UAL11 B772 40 -70 90 FL300 300")
   -- a multi-word navaid name is the navaid, never the fix named like one of its words; a VOR said by its
   -- name after "cross" is a crossing restriction there
-  local ok, nav = pcall(squawk.sim.new, { navdata = "../shared/bluesky/navdata" })
-  if not ok then
-    print("skipped: R41 navaid names need BlueSky's navdata at ../shared/bluesky/navdata")
-  else
-    for _, line in ipairs({ "CRE AAL2307 A321 33.5 -97.8 135 FL200 300", "ADDWPT AAL2307 UKW", "ADDWPT AAL2307 CREEK",
-        "CRE UPS1284 B752 32.2 -96.3 330 FL240 310", "ADDWPT UPS1284 CQY" }) do
-      check(nav:exec(line))
-    end
-    local function pt(text) return said(graph.translate(text, { sim = nav, mode = "offline" })) end
+  local nav, pt = navscene({ "CRE AAL2307 A321 33.5 -97.8 135 FL200 300", "ADDWPT AAL2307 UKW", "ADDWPT AAL2307 CREEK",
+        "CRE UPS1284 B752 32.2 -96.3 330 FL240 310", "ADDWPT UPS1284 CQY" }, "R41 navaid names")
+  if nav then
     check_eq(pt("UPS 1284 proceed direct Cedar Creek"), "DIRECT UPS1284 CQY")
     check(pt("UPS 1284 proceed direct Fox Creek"):match("^ASK Which place is 'Fox Creek'") ~= nil)
     check_eq(pt("American 2307, Fort Worth Center, cross Bowie at and maintain one three thousand"),
@@ -2363,14 +2240,10 @@ end
 -- number is that aircraft; a route's name split into syllables is joined when the words spell it (or it
 -- with one silent letter more); a near miss is asked about
 do
-  local s42 = squawk.sim.new()
-  for _, line in ipairs({ "CRE WZZ2LP A321 42.3 12.4 200 FL260 280", "CRE DLH400 B744 42.5 12.0 270 FL330 300",
+  local s42, ex = scene({ "CRE WZZ2LP A321 42.3 12.4 200 FL260 280", "CRE DLH400 B744 42.5 12.0 270 FL330 300",
       "CRE DLH44 A320 42.1 12.9 180 FL120 250", "CRE BAW4 A320 42.0 12.2 090 FL200 250",
       "CRE BAW42 A320 42.2 12.6 090 FL220 250", "DEFWPT TOBIX 42.6 12.8", "DEFWPT ASBIN 42.7 12.1",
-      "ADDWPT WZZ2LP TOBIX", "ADDWPT WZZ2LP ASBIN" }) do
-    check(s42:exec(line))
-  end
-  local function ex(text) return said(graph.translate(text, { sim = s42, mode = "offline" })) end
+      "ADDWPT WZZ2LP TOBIX", "ADDWPT WZZ2LP ASBIN" })
   check_eq(ex("wizz air to lima papa turn left heading one zero zero"), "HDG WZZ2LP 100 LEFT")
   check_eq(ex("lufthansa for hundred climb flight level three five zero"), "ALT DLH400 FL350")
   check_eq(ex("lufthansa for for descend flight level one zero zero"), "ALT DLH44 FL100")
