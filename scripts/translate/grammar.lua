@@ -1549,6 +1549,7 @@ function G:parse(b, e)
     end
   end
   self:direct_resumes_nav()
+  self:destination_not_waypoint()
 end
 
 -- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /
@@ -1626,6 +1627,32 @@ function G:direct_resumes_nav()
         if self.out[d]:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ") then
           table.remove(self.out, c)
           break
+        end
+      end
+    end
+  end
+end
+
+-- "after DELON proceed to Minsk, set destination UMMS": the airport the request sets as an aircraft's
+-- destination is the end of its route, no waypoint added to it as well (DEST puts it there; the
+-- waypoint it was to follow stays read). Kept when a DIRECT flies to it (DIRECT needs it in the route).
+function G:destination_not_waypoint()
+  for c = #self.out, 1, -1 do
+    local id, dest = self.out[c]:match("^DEST (%S+) (%S+)$")
+    if id then
+      local acid, place = id:gsub("%p", "%%%0"), dest:gsub("%p", "%%%0")
+      local direct = false
+      for _, line in ipairs(self.out) do direct = direct or line:match("^DIRECT " .. acid .. " " .. place .. "$") ~= nil end
+      for d = #self.out, 1, -1 do
+        local after = not direct and (self.out[d] .. " "):match("^ADDWPT " .. acid .. " " .. place .. ",?,?,?(%S*) $")
+        if after then
+          table.remove(self.out, d)
+          for k, t in ipairs(self.t) do
+            if after ~= "" and t.raw:upper() == after:upper() then
+              self.explained = self.explained or {}
+              self.explained[k] = true
+            end
+          end
         end
       end
     end
@@ -2502,6 +2529,16 @@ for _, c in ipairs(lexicon.not_simulated) do
   for w in pairs(word_set(c.words, 1)) do NOT_SIMULATED_WORDS[w] = true end
 end
 
+-- True when token i is a navaid's kind said after its name ("relocate to TKT VOR at FL300", "direct
+-- Minsk NDB"): the place, no approach (a kind followed by "approach", "TKT VOR approach", is one).
+function G:navaid_named_before(i)
+  if not self:word(i, "@navaid_kinds") or self:word(self:skip_fillers(i + 1), "approach") then return false end
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" and r.b < i and r.e >= i and not self:word(r.b, "@navaid_kinds") then return true end
+  end
+  return false
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -2512,7 +2549,8 @@ function G:not_simulated()
   while i <= #self.t do
     local t = self.t[i]
     local class
-    if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0) then
+    if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
+        and not self:navaid_named_before(i) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
             and (not c.after_callsign or self:callsign_before(i))

@@ -178,7 +178,11 @@ return {
         "until further notice", "without restriction", "without restrictions",
         -- the same said with "till", without "further", or with the verb unbent ("until further advise")
         "till further advised", "till further notice", "until advised", "till advised", "until further advise",
-        "till further advise", "until further instructions", "till further instructions" },
+        "till further advise", "until further instructions", "till further instructions",
+        -- the same in ICAO English as a second language, "than" or the noun left out ("rate not less 1000 feet
+        -- per minute", "maintain FL130 until further"), or the bound said before its value's noun ("not above
+        -- speed 270")
+        "not less", "not more", "until further", "till further", "not above speed", "not below speed" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
