@@ -1723,7 +1723,10 @@ function G:at_waypoint(s, spec)
     -- "to be at AMPEG at FL120", "be at FL200 over ARTIP": the value the aircraft is to be at there, said
     -- after the waypoint or between "be at" and it (`be_at`: the first token of that value)
     local be_at
-    if self:word(r.b - 1, "at") and self:word(r.b - 2, "be") and self:word(after, "at") then be_at = r.b
+    -- ("be at PETKA flight level 80": the value straight after the waypoint, "at" left out)
+    if self:word(r.b - 1, "at") and self:word(r.b - 2, "be")
+        and (self:word(after, "at") or (self:quantities(after, s.e)[1] or {}).b == after) then
+      be_at = r.b
     elseif self:word(r.b - 1, "at over by") then
       local k = self:find_word(s.b, r.b - 1, "be")
       local qs = self:quantities(k + 2, r.b - 1)

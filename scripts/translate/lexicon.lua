@@ -489,7 +489,10 @@ return {
                     bombay = "chhatrapati shivaji", kolkata = "netaji subhash chandra bose",
                     calcutta = "netaji subhash chandra bose", hyderabad = "rajiv gandhi", karachi = "jinnah",
                     lahore = "allama iqbal", kathmandu = "tribhuvan", ["addis ababa"] = "bole",
-                    ["dar es salaam"] = "mwalimu julius k nyerere" },
+                    ["dar es salaam"] = "mwalimu julius k nyerere", tashkent = "yuzhny", yerevan = "zvartnots",
+                    baku = "heydar aliyev", ["st petersburg"] = "pulkovo", ["saint petersburg"] = "pulkovo",
+                    yekaterinburg = "koltsovo", novosibirsk = "tolmachevo", samara = "kurumoch", bishkek = "manas",
+                    kyiv = "boryspil intl", kiev = "boryspil intl" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
