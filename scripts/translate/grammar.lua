@@ -2542,6 +2542,16 @@ function G:navaid_named_before(i)
   return false
 end
 
+-- True when the place named just after token i ends the request ("keep speed 280 until VAKNO", a full
+-- stop or question mark after it at most).
+function G:said_last(i)
+  local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
+  if not r then return false end
+  local k = self:skip_fillers(r.e)
+  while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
+  return k > #self.t
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -2558,6 +2568,7 @@ function G:not_simulated()
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
+            and (not c.last or self:said_last(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
           class = c
           break

@@ -416,9 +416,9 @@ return {
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
     -- "keep speed 280 until VAKNO", "maintain FL200 till DETAK": the value is flown now, its end at the
-    -- place is not kept (what follows "then" waits for it, asked)
+    -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
-      takes_time = true },
+      last = true },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
