@@ -2591,13 +2591,15 @@ function G:not_simulated()
         e = e + 1
       end
       -- "when passing FL250 contact Langen 120.8": a condition said before the phrase is part of it; so is
-      -- the position it is said at ("at 30 West contact Gander")
+      -- the position it is said at ("at 30 West contact Gander") and the place it waits for ("after DETAK
+      -- expect vectors")
       local b = i - 1
       while b >= 1 and self.t[b].kind ~= "punct" and not self:word(b, "@condition and then at") do b = b - 1 end
       local at = self:word(b, "at") and self:quantities(b + 1, i)[1]
       local placed = at and (at.kind == "lat" or at.kind == "lon")
-      if b >= 1 and b < i - 1 and (self:word(b, "@condition") and #self:quantities(b + 1, i) > 0 or placed)
-          and not self:any_instruction_in(b + 1, i) and (b == 1 or self.t[b - 1].kind == "punct") then
+      local place = self:word(b, "after") and #self:refs_in(b + 1, i, "waypoint") > 0
+      if b >= 1 and b < i - 1 and (self:word(b, "@condition") and #self:quantities(b + 1, i) > 0 or placed or place)
+          and not self:any_instruction_in(b + 1, i) and (b == 1 or self.t[b - 1].kind == "punct" or self:callsign_before(b)) then
         self:mark_used(b, i)
         for k = b, i - 1 do self.noted[k] = true end
       end

@@ -2440,6 +2440,8 @@ do
   check(ex("Siberian 1042 speed 220 till VAKNX then reduce 180"):match("^ASK") ~= nil, "'then' waits")
   check(ex("Siberian 1042 maintain 170 knots until VAKNX then contact tower"):match("^ASK") ~= nil, "'then' waits")
   check_eq(ex("Aeroflot 1700, be at PETKX flight level eight zero"), "AT AFL1700 PETKX ALT FL80")
+  check_eq(ex("Siberian 1042 after VAKNX expect vectors, now keep speed 280"), "SPD SBI1042 280")
+  check(ex("Siberian 1042 after VAKNX descend FL100"):match("^ASK") ~= nil, "a descent after a place is asked")
   check_eq(ex("Aeroflot seventeen hundred turn left heading 120"), "HDG AFL1700 120 LEFT")
   check_eq(ex("What is position of Siberian 1042?"), "POS SBI1042")
   check_eq(ex("instructor here, remove Georgian 751, he is landed"), "DEL TGZ751")
