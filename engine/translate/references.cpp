@@ -99,16 +99,17 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
       continue;
     }
     if (k.text == "hundred" || k.text == "thousand") {
-      // "American one hundred", "Lufthansa four hundred": a flight number said as
-      // a number, one digit and "hundred" with no number or unit after them
+      // "American one hundred", "Lufthansa four hundred", "Aeroflot seventeen hundred": a
+      // flight number said as a number, one group of one or two digits (no leading zero) and
+      // "hundred" with no number or unit after them
       static const char* kUnits[] = {"feet", "ft", "foot", "knots", "knot", "kts", "kt"};
       const bool value_after =
           j + 1 < t.size() &&
           (is_number_word(t[j + 1]) ||
            std::any_of(std::begin(kUnits), std::end(kUnits),
                        [&](const char* u) { return is_word(t[j + 1]) && t[j + 1].text == u; }));
-      if (k.text == "hundred" && s.groups.size() == 1 && s.groups[0].size() == 1 &&
-          s.groups[0] != "0" && !value_after) {
+      if (k.text == "hundred" && s.groups.size() == 1 && s.groups[0].size() <= 2 && s.groups[0][0] != '0' &&
+          !value_after) {
         s.groups[0] += "00";
         s.ends[0] = ++j;
         break;

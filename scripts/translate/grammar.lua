@@ -1549,6 +1549,7 @@ function G:parse(b, e)
     end
   end
   self:direct_resumes_nav()
+  self:destination_not_waypoint()
 end
 
 -- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /
@@ -1632,6 +1633,32 @@ function G:direct_resumes_nav()
   end
 end
 
+-- "after DELON proceed to Minsk, set destination UMMS": the airport the request sets as an aircraft's
+-- destination is the end of its route, no waypoint added to it as well (DEST puts it there; the
+-- waypoint it was to follow stays read). Kept when a DIRECT flies to it (DIRECT needs it in the route).
+function G:destination_not_waypoint()
+  for c = #self.out, 1, -1 do
+    local id, dest = self.out[c]:match("^DEST (%S+) (%S+)$")
+    if id then
+      local acid, place = id:gsub("%p", "%%%0"), dest:gsub("%p", "%%%0")
+      local direct = false
+      for _, line in ipairs(self.out) do direct = direct or line:match("^DIRECT " .. acid .. " " .. place .. "$") ~= nil end
+      for d = #self.out, 1, -1 do
+        local after = not direct and (self.out[d] .. " "):match("^ADDWPT " .. acid .. " " .. place .. ",?,?,?(%S*) $")
+        if after then
+          table.remove(self.out, d)
+          for k, t in ipairs(self.t) do
+            if after ~= "" and t.raw:upper() == after:upper() then
+              self.explained = self.explained or {}
+              self.explained[k] = true
+            end
+          end
+        end
+      end
+    end
+  end
+end
+
 -- The navaid said by its name after "cross" at token i ("cross Bowie at and maintain 13000", "cross the
 -- Bowie VOR at": the UKW VORTAC, one word or two, with "the" before and its kind after, before "at")
 -- within lexicon.navaid_range_nm of one aircraft flying: a ref {kind = "waypoint", name, b, e, words (how
@@ -1696,7 +1723,10 @@ function G:at_waypoint(s, spec)
     -- "to be at AMPEG at FL120", "be at FL200 over ARTIP": the value the aircraft is to be at there, said
     -- after the waypoint or between "be at" and it (`be_at`: the first token of that value)
     local be_at
-    if self:word(r.b - 1, "at") and self:word(r.b - 2, "be") and self:word(after, "at") then be_at = r.b
+    -- ("be at PETKA flight level 80": the value straight after the waypoint, "at" left out)
+    if self:word(r.b - 1, "at") and self:word(r.b - 2, "be")
+        and (self:word(after, "at") or (self:quantities(after, s.e)[1] or {}).b == after) then
+      be_at = r.b
     elseif self:word(r.b - 1, "at over by") then
       local k = self:find_word(s.b, r.b - 1, "be")
       local qs = self:quantities(k + 2, r.b - 1)
@@ -2502,6 +2532,26 @@ for _, c in ipairs(lexicon.not_simulated) do
   for w in pairs(word_set(c.words, 1)) do NOT_SIMULATED_WORDS[w] = true end
 end
 
+-- True when token i is a navaid's kind said after its name ("relocate to TKT VOR at FL300", "direct
+-- Minsk NDB"): the place, no approach (a kind followed by "approach", "TKT VOR approach", is one).
+function G:navaid_named_before(i)
+  if not self:word(i, "@navaid_kinds") or self:word(self:skip_fillers(i + 1), "approach") then return false end
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" and r.b < i and r.e >= i and not self:word(r.b, "@navaid_kinds") then return true end
+  end
+  return false
+end
+
+-- True when the place named just after token i ends the request ("keep speed 280 until VAKNO", a full
+-- stop or question mark after it at most).
+function G:said_last(i)
+  local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
+  if not r then return false end
+  local k = self:skip_fillers(r.e)
+  while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
+  return k > #self.t
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -2512,11 +2562,13 @@ function G:not_simulated()
   while i <= #self.t do
     local t = self.t[i]
     local class
-    if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0) then
+    if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
+        and not self:navaid_named_before(i) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
+            and (not c.last or self:said_last(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
           class = c
           break
@@ -2539,13 +2591,15 @@ function G:not_simulated()
         e = e + 1
       end
       -- "when passing FL250 contact Langen 120.8": a condition said before the phrase is part of it; so is
-      -- the position it is said at ("at 30 West contact Gander")
+      -- the position it is said at ("at 30 West contact Gander") and the place it waits for ("after DETAK
+      -- expect vectors")
       local b = i - 1
       while b >= 1 and self.t[b].kind ~= "punct" and not self:word(b, "@condition and then at") do b = b - 1 end
       local at = self:word(b, "at") and self:quantities(b + 1, i)[1]
       local placed = at and (at.kind == "lat" or at.kind == "lon")
-      if b >= 1 and b < i - 1 and (self:word(b, "@condition") and #self:quantities(b + 1, i) > 0 or placed)
-          and not self:any_instruction_in(b + 1, i) and (b == 1 or self.t[b - 1].kind == "punct") then
+      local place = self:word(b, "after") and #self:refs_in(b + 1, i, "waypoint") > 0
+      if b >= 1 and b < i - 1 and (self:word(b, "@condition") and #self:quantities(b + 1, i) > 0 or placed or place)
+          and not self:any_instruction_in(b + 1, i) and (b == 1 or self.t[b - 1].kind == "punct" or self:callsign_before(b)) then
         self:mark_used(b, i)
         for k = b, i - 1 do self.noted[k] = true end
       end

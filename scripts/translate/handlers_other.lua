@@ -29,8 +29,9 @@ return function(H, f, compass)
     if lat and lon then return lat, lon end
     for k = 1, #qs - 1 do
       local a, b = qs[k], qs[k + 1]
+      -- (two bare numbers side by side or a mark between; "altitude 0 speed 0" is no position)
       if a.b >= trig and a.kind == "plain" and b.kind == "plain" and b.b - a.e <= 1
-          and math.abs(a.value) <= 90 and math.abs(b.value) <= 180 then
+          and (b.b == a.e or not g.t[a.e].text:match("%a")) and math.abs(a.value) <= 90 and math.abs(b.value) <= 180 then
         return a.value, b.value
       end
     end

@@ -114,7 +114,12 @@ return function(H, f, wrap, compass)
     -- level (China's metric table rounds to within 100 ft); the restatement counts, a disagreement is asked
     a, b = with_unit[1], with_unit[2]
     local function metric(q) return self:word(q.e - 1, "@metres") end
-    if b and metric(a) ~= metric(b) and self:word_in(a.e, b.b, "that which ie i.e equals meaning thats") then
+    -- (with only a comma between, "10700 metres, flight level 351", the two agreeing restate one level)
+    local comma_only = b ~= nil and b.b > a.e and math.abs(a.value - b.value) <= 100
+    if comma_only then
+      for k = a.e, b.b - 1 do comma_only = comma_only and self.t[k].kind == "punct" end
+    end
+    if b and metric(a) ~= metric(b) and (comma_only or self:word_in(a.e, b.b, "that which ie i.e equals meaning thats")) then
       local restates = true
       for k = a.e, b.b - 1 do restates = restates and (self.t[k].kind == "punct" or self:word(k, "@restating")) end
       if restates then
@@ -157,6 +162,11 @@ return function(H, f, wrap, compass)
     if not target then return self:need("What altitude should " .. ids[1] .. " " .. verb .. " to?") end
     local q = target
     local ft, fl = q.value, q.fl
+    -- "descend to height 600 metres on QFE": a height above the airfield, no altitude above the sea
+    if not fl and self:word_in(s.b, #self.t + 1, "qfe") then
+      return self:need(string.format("Which altitude for %s? I heard '%s' on QFE, a height above the airfield, "
+        .. "and squawk flies altitudes above the sea.", ids[1], self:raw(q.b, q.e)))
+    end
     -- "flight level to eight zero": "to" between "level" and two spoken digits is "two" (FL280) or no
     -- digit (FL080); the verb's direction from the present level decides, else squawk asks
     if q.kind == "plain" and not q.number.typed and q.number.groups == 2 and #q.number.digits == 2
@@ -183,6 +193,17 @@ return function(H, f, wrap, compass)
       elseif ft >= 100 and ft < 1000 and not q.number.hundred then
         ft, fl = ft * 100, true  -- "climb three five zero": a flight level
       end
+    end
+    -- "flight level 9500 metres": a metric flight level (Russia's, China's) is that many metres, converted
+    -- exactly (9500 m = 31168 ft)
+    local metres_after = self:word(q.e, "@metres")
+    if fl and q.number.value >= 1000 and q.number.value <= 18000 and (metres_after or self:word(q.e - 1, "@metres")) then
+      if metres_after then self:explain(q.e, q.e + 1) end
+      ft, fl = math.floor(q.number.value / 0.3048 + 0.5), false
+      local m = {}
+      for k, v in pairs(q) do m[k] = v end
+      m.kind, m.value, m.fl = "metric", ft, false
+      q = m
     end
     if fl and q.number.value >= 1000 then  -- "flight level 9000": levels have three digits
       return self:need("Which flight level for " .. ids[1] .. "? I heard flight level " .. f.int(q.number.value) .. ".")

@@ -178,7 +178,11 @@ return {
         "until further notice", "without restriction", "without restrictions",
         -- the same said with "till", without "further", or with the verb unbent ("until further advise")
         "till further advised", "till further notice", "until advised", "till advised", "until further advise",
-        "till further advise", "until further instructions", "till further instructions" },
+        "till further advise", "until further instructions", "till further instructions",
+        -- the same in ICAO English as a second language, "than" or the noun left out ("rate not less 1000 feet
+        -- per minute", "maintain FL130 until further"), or the bound said before its value's noun ("not above
+        -- speed 270")
+        "not less", "not more", "until further", "till further", "not above speed", "not below speed" },
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
@@ -411,6 +415,10 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- "keep speed 280 until VAKNO", "maintain FL200 till DETAK": the value is flown now, its end at the
+    -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
+    { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
+      last = true },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
@@ -481,7 +489,10 @@ return {
                     bombay = "chhatrapati shivaji", kolkata = "netaji subhash chandra bose",
                     calcutta = "netaji subhash chandra bose", hyderabad = "rajiv gandhi", karachi = "jinnah",
                     lahore = "allama iqbal", kathmandu = "tribhuvan", ["addis ababa"] = "bole",
-                    ["dar es salaam"] = "mwalimu julius k nyerere" },
+                    ["dar es salaam"] = "mwalimu julius k nyerere", tashkent = "yuzhny", yerevan = "zvartnots",
+                    baku = "heydar aliyev", ["st petersburg"] = "pulkovo", ["saint petersburg"] = "pulkovo",
+                    yekaterinburg = "koltsovo", novosibirsk = "tolmachevo", samara = "kurumoch", bishkek = "manas",
+                    kyiv = "boryspil intl", kiev = "boryspil intl" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")

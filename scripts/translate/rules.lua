@@ -249,6 +249,11 @@ return function(intent, rule, words)
     return q ~= nil and q.b == i + 2 and q.kind == "alt"
   end }
   rule { "level", "alt", next = "off" }
+  -- "occupy flight level 180", "occupy 5700 metres": the level taken (ICAO English of the former USSR)
+  rule { "occupy occupies occupying", "alt", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and q.b <= i + 2 and (q.kind == "alt" or g:word(i + 1, "fl flight level altitude"))
+  end }
   rule { "lower raise", "spd", near = { 4, "speed" } }
   rule { "lower raise", "alt" }
   rule { "maintain maintained", "maintain" }

@@ -2281,3 +2281,58 @@ do
     print("skipped: navaid names need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- Cycle 20 (R43's classes, docs/translator_trust.md "ICAO English as a second language"): a QFE height is
+-- asked about; a navaid's kind after its name is that place (a MOVE keeps its level); a destination set is no
+-- waypoint as well; metric flight levels; "occupy" a level; bounds without "than"; a limit that ends at a place;
+-- "be at FIX FL80"; the region's airline telephony; a flight number said as "seventeen hundred"
+do
+  local s43 = squawk.sim.new()
+  for _, line in ipairs({ "CRE AFL1700 A321 55.9 37.4 240 FL150 280", "CRE SBI1042 A320 55.1 37.9 350 FL120 250",
+      "CRE TGZ751 A320 55.4 37.0 060 FL170 290", "CRE CSN6023 A330 55.2 38.3 090 FL280 290",
+      "DEFWPT TKTX 55.5 37.6", "DEFWPT PETKX 55.6 37.8", "DEFWPT VAKNX 55.3 37.2", "ADDWPT AFL1700 PETKX",
+      "ADDWPT SBI1042 VAKNX" }) do
+    check(s43:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = s43, mode = "offline" })) end
+  check(ex("Aeroflot 1700 descend to height 600 metres on QFE"):match("^ASK.*QFE") ~= nil, "a QFE height is asked")
+  check(ex("SBI1042 descend height 900 m QFE"):match("^ASK.*QFE") ~= nil, "a QFE height is asked")
+  check_eq(ex("SBI1042 descend 4000 feet QNH 1003"), "ALT SBI1042 4000")
+  check_eq(ex("instructor: Siberian 1042 relocate to TKTX VOR at flight level 200"), "MOVE SBI1042 TKTX FL200")
+  check_eq(ex("move Georgian 751 to TKTX NDB at 9000 feet"), "MOVE TGZ751 TKTX 9000")
+  check_eq(ex("China Southern 6023 descend flight level 8100 metres"), "ALT CSN6023 26575")
+  check_eq(ex("CSN6023 occupy flight level 9500 m"), "ALT CSN6023 31168")
+  check_eq(ex("China Southern 6023, climb 10700 metres, flight level three five one"), "ALT CSN6023 FL351")
+  check(ex("China Southern 6023, climb 10700 metres, flight level 330"):match("^ASK") ~= nil, "they differ")
+  check_eq(ex("Siberian 1042 occupy FL110"), "ALT SBI1042 FL110")
+  check_eq(ex("Georgian 751, occupy 3600 metres"), "ALT TGZ751 11811")
+  check_eq(ex("Siberian 1042 climb FL160 rate not less 1500 feet per minute"), "ALT SBI1042 FL160 1500")
+  check_eq(ex("Georgian 751 maintain flight level 170 until further"), "ALT TGZ751 FL170")
+  check_eq(ex("Georgian 751 descend FL150, not above speed 250"), "ALT TGZ751 FL150 ; SPD TGZ751 250")
+  check_eq(ex("Siberian 1042 keep speed 280 until VAKNX"), "SPD SBI1042 280")
+  check(ex("Siberian 1042 speed 220 till VAKNX then reduce 180"):match("^ASK") ~= nil, "'then' waits")
+  check(ex("Siberian 1042 maintain 170 knots until VAKNX then contact tower"):match("^ASK") ~= nil, "'then' waits")
+  check_eq(ex("Aeroflot 1700, be at PETKX flight level eight zero"), "AT AFL1700 PETKX ALT FL80")
+  check_eq(ex("Siberian 1042 after VAKNX expect vectors, now keep speed 280"), "SPD SBI1042 280")
+  check(ex("Siberian 1042 after VAKNX descend FL100"):match("^ASK") ~= nil, "a descent after a place is asked")
+  check_eq(ex("Aeroflot seventeen hundred turn left heading 120"), "HDG AFL1700 120 LEFT")
+  check_eq(ex("What is position of Siberian 1042?"), "POS SBI1042")
+  check_eq(ex("instructor here, remove Georgian 751, he is landed"), "DEL TGZ751")
+  check_eq(ex("create Ural 2790, A320, at PETKX, heading 360, flight level 110, speed 250"),
+    "CRE SVR2790 A320 PETKX 360 FL110 250")
+  check_eq(ex("Create Air Astana 145 A321 at TKTX heading 120 FL 170 speed 270"), "CRE KZR145 A321 TKTX 120 FL170 270")
+  check_eq(ex("create UZB3021 B752 at TKTX heading 080 altitude 0 speed 0"), "CRE UZB3021 B752 TKTX 80 0 0")
+  local bru = squawk.sim.new()
+  if #bru:airports_named("yuzhny") == 1 then
+    for _, line in ipairs({ "CRE THY398 A321 53.1 28.9 320 FL240 290", "DEFWPT DELOX 53.3 28.5",
+        "ADDWPT THY398 DELOX" }) do
+      check(bru:exec(line))
+    end
+    local function nb(text) return said(graph.translate(text, { sim = bru, mode = "offline" })) end
+    check_eq(nb("Turkish 398, after DELOX proceed to Minsk, set destination UMMS"), "DEST THY398 UMMS")
+    check_eq(nb("make aircraft UZB3021 Boeing 757 at Tashkent airport, heading 080, altitude zero, speed zero"),
+      "CRE UZB3021 B752 UTTT 80 0 0")
+  else
+    print("skipped: airports by their city need navdata (SQUAWK_NAVDATA)")
+  end
+end
