@@ -129,10 +129,14 @@ local function add_intent(name, spec, level)
   M.intents[name] = spec
 end
 
--- Word lists: "a b @list *" -> set
-local set_cache = {}
+-- Word lists: "a b @list *" -> set. set_cache maps a list's text to its set and a set to itself
+-- (weak keys: a set built per call goes with its caller).
+local set_cache = setmetatable({}, { __mode = "k" })
 local function word_set(words, level)
-  if type(words) == "table" then return words end
+  if type(words) == "table" then
+    set_cache[words] = words
+    return words
+  end
   local s = set_cache[words]
   if s then return s end
   s = {}
@@ -342,9 +346,10 @@ local function foreign_digits(text)
   end
   return tokens.rewrite(text, toks, function(i)
     local en = F[bare[i]]
+    if not en then return nil end
     -- (punctuation closing the word before parts the two: "Iberia tres uno... Iberia three")
     local beside = (digit(i - 1) and not toks[i - 1]:match("%p$")) or (digit(i + 1) and not toks[i]:match("%p$"))
-    if en and beside then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
+    if beside then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
   end)
 end
 local function heard_word_is(w, set)
@@ -370,7 +375,9 @@ end
 local function heard_forms(text)
   local toks, bare = plain_words(text)
   return tokens.rewrite(text, toks, function(i)
-    for _, h in ipairs(HEARD[bare[i]] or {}) do
+    local forms = HEARD[bare[i]]
+    if not forms then return nil end
+    for _, h in ipairs(forms) do
       local n = #h.words
       local ok = true
       -- punctuation may close the last word only ("turn write, heading")
@@ -428,6 +435,7 @@ local function spelled(text)
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   return tokens.rewrite(text, toks, function(i)
+    if #toks[i] ~= 1 then return nil end  -- (a run starts with a single letter)
     local k = i
     while toks[k] and toks[k]:match("^%a$") do k = k + 1 end
     -- (the last letter may carry the punctuation: "q n h, one zero one three")
@@ -605,6 +613,12 @@ local function value_homophones(text)
     if convert[i] then return H[bare[i]] .. (toks[i]:match("%p+$") or ""), i + 1 end
   end)
 end
+-- digits, "point" or "decimal" in any case, digits, a word: written_forms reads a hemisphere's decimal point
+local POINT_SAID = {}
+for _, word in ipairs({ "point", "decimal" }) do
+  local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
+  POINT_SAID[#POINT_SAID + 1] = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]"
+end
 local function written_forms(text)
   text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(foreign_digits(text)))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -658,9 +672,8 @@ local function written_forms(text)
     return w .. space .. digit
   end)
   -- a coordinate typed in digits with its point said ("55 decimal 5 north"): 55.5, only before a hemisphere
-  for _, word in ipairs({ "point", "decimal" }) do
-    local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
-    text = text:gsub("%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]", function(whole, frac, space, hemi)
+  for _, pattern in ipairs(POINT_SAID) do
+    text = text:gsub(pattern, function(whole, frac, space, hemi)
       if HEMISPHERES[hemi:lower()] then return whole .. "." .. frac .. space .. hemi end
       return nil
     end)
@@ -712,7 +725,8 @@ end
 
 function G:word(i, words)
   local t = self.t[i]
-  return t ~= nil and t.kind == "word" and (set_cache[words] or word_set(words, 2))[t.text] == true
+  if t == nil or t.kind ~= "word" then return false end
+  return (set_cache[words] or word_set(words, 2))[t.text] == true
 end
 
 -- The registry name of the command the word at i names when it is a registry name or alias that is
@@ -724,8 +738,11 @@ end
 
 function G:word_in(b, e, words)
   local s = set_cache[words] or word_set(words, 2)
-  for i = b, math.min(e, #self.t + 1) - 1 do
-    local t = self.t[i]
+  local toks = self.t
+  local last = #toks + 1
+  if e < last then last = e end
+  for i = b, last - 1 do
+    local t = toks[i]
     if t.kind == "word" and s[t.text] then return true end
   end
   return false
@@ -734,8 +751,11 @@ end
 -- The first position in [b, e) holding one of `words`, or e.
 function G:find_word(b, e, words)
   local s = set_cache[words] or word_set(words, 2)
-  for i = b, math.min(e, #self.t + 1) - 1 do
-    local t = self.t[i]
+  local toks = self.t
+  local last = #toks + 1
+  if e < last then last = e end
+  for i = b, last - 1 do
+    local t = toks[i]
     if t.kind == "word" and s[t.text] then return i end
   end
   return e
@@ -931,7 +951,14 @@ function G:refs_in(b, e, kind)
   end
   return out
 end
-function G:has_ref(b, e, kind) return #self:refs_in(b, math.min(e, #self.t + 1), kind) > 0 end
+function G:has_ref(b, e, kind)
+  local last = #self.t + 1
+  if e < last then last = e end
+  for _, r in ipairs(self.refs) do
+    if r.kind == kind and r.b >= b and r.b < last then return true end
+  end
+  return false
+end
 
 function G:type_or_aircraft_word(b, e)
   e = math.min(e, #self.t + 1)
@@ -2942,8 +2969,8 @@ local function homophone_ids(text, world)
   for i, w in ipairs(bare) do
     local digit = lexicon.digit_homophones[w]
     local prev, nxt = bare[i - 1], bare[i + 1]
-    local glued = prev and not toks[i - 1]:match("%p$") and (not nxt or not toks[i]:match("%p$"))
-    if digit and glued and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
+    local glued = digit and prev and not toks[i - 1]:match("%p$") and (not nxt or not toks[i]:match("%p$"))
+    if glued and (AIRLINE_LAST[prev] or CALLSIGN_WORDS[prev] or prev:match("^%d+$")
         or (nxt and (CALLSIGN_WORDS[nxt] or nxt:match("^%d+$")))) then
       -- (read with every homophone of the words said with it, "lufthansa for oh oh", else this one alone)
       local words, alone = {}, {}

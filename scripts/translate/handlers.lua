@@ -342,9 +342,9 @@ function m:airline_at(i)
   if not t or t.kind ~= "word" then return nil end
   -- (no name starts with this word: only the designator typed in capitals can match; a word holding
   -- a space is looked up whole)
-  airline_names()
+  if not AIRLINE_NAMES then airline_names() end
   if not AIRLINE_FIRST[t.text] and not t.text:find(" ", 1, true) then
-    if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
+    if #t.raw == 3 and t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
     return nil
   end
   local words = {}
@@ -354,8 +354,8 @@ function m:airline_at(i)
   end
   for n = #words, 1, -1 do
     local said = table.concat(words, " ", 1, n)
-    local icao = airline_names()[said]
-    if icao then return icao, i + n, select(2, airline_names())[said] end
+    local icao = AIRLINE_NAMES[said]
+    if icao then return icao, i + n, BRANDS[said] end
   end
   if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
   return nil

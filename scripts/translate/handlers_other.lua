@@ -727,12 +727,14 @@ return function(H, f, compass)
   -- them the first, asking which `kind` ("navaid", "airport") was meant; nil for none or too many.
   -- (one of them written beside the name, "destination Haneda, RJTT", is the one meant)
   function m:one_named(ids, kind, phrase, most)
-    if #ids == 1 then return ids[1] end
-    for k, t in ipairs(self.t) do
-      for _, id in ipairs(ids) do
-        if #ids <= most and t.kind == "word" and t.raw == id then
+    if #ids <= 1 then return ids[1] end
+    if #ids <= most then
+      local named = {}
+      for _, id in ipairs(ids) do named[id] = true end
+      for k, t in ipairs(self.t) do
+        if t.kind == "word" and named[t.raw] then
           self:explain(k, k + 1)
-          return id
+          return t.raw
         end
       end
     end

@@ -257,16 +257,40 @@ function M.plurals(text, built, fleet)
   end))
 end
 
-function M.join(text, phrases)
-  local lower = text:lower()
-  for _, p in ipairs(phrases) do
-    p.first = p.first or p[1]:match("^%S+")
-    if lower:find(p.first, 1, true) then  -- its first word is there: worth a pattern match
-      p.pattern = p.pattern or ("%f[%w]" .. p[1]:gsub("%p", "%%%0")
-        :gsub("%a", function(ch) return "[" .. ch:lower() .. ch:upper() .. "]" end)
-        :gsub(" ", "[%%s%%-]+") .. "%f[%W]")
-      text = text:gsub(p.pattern, p[2])
+-- The phrases of M.join grouped by their first word: {firsts = {word, ...} in order of first
+-- appearance, at = {[word] = {position in phrases, ...}}}; built once per phrase list, which must not
+-- change after its first join.
+local function by_first_word(phrases)
+  local firsts, at = {}, {}
+  for k, p in ipairs(phrases) do
+    local first = p[1]:match("^%S+")
+    if not at[first] then
+      at[first] = {}
+      firsts[#firsts + 1] = first
     end
+    local list = at[first]
+    list[#list + 1] = k
+  end
+  return { firsts = firsts, at = at }
+end
+
+function M.join(text, phrases)
+  local index = phrases.by_first or by_first_word(phrases)
+  phrases.by_first = index
+  -- the phrases whose first word `text` holds (worth a pattern match), in their order in `phrases`
+  local lower, hits = text:lower(), {}
+  for _, first in ipairs(index.firsts) do
+    if lower:find(first, 1, true) then
+      for _, k in ipairs(index.at[first]) do hits[#hits + 1] = k end
+    end
+  end
+  table.sort(hits)
+  for _, k in ipairs(hits) do
+    local p = phrases[k]
+    p.pattern = p.pattern or ("%f[%w]" .. p[1]:gsub("%p", "%%%0")
+      :gsub("%a", function(ch) return "[" .. ch:lower() .. ch:upper() .. "]" end)
+      :gsub(" ", "[%%s%%-]+") .. "%f[%W]")
+    text = text:gsub(p.pattern, p[2])
   end
   return text
 end
