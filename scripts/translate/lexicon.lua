@@ -237,6 +237,11 @@ return {
                  "at your own discretion", "at own discretion", "pilot's discretion" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
+  -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
+  -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
+  -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
+  question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
+                    not_after = { "i", "we" } },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   correction = { "correction", "disregard", "negative" },

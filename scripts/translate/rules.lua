@@ -318,6 +318,13 @@ return function(intent, rule, words)
   -- "and give it 280 knots": a speed given to the aircraft
   rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
+  -- a pilot's readback "reducing 250", "increasing to 280 knots": the participle carries its value (said
+  -- right after it); with none it describes ("the gap is reducing"), no instruction
+  rule { "reducing increasing decreasing slowing", "spd", not_near = { 4, "altitude rate vertical" },
+         when = function(g, i)
+           local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
+           return q ~= nil and (q.kind == "speed" or q.kind == "mach" or q.kind == "plain")
+         end }
 
   -- heading
   -- "it's heading into the other traffic": the aircraft's present course described, no instruction

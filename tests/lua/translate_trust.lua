@@ -2408,3 +2408,32 @@ do
     print("skipped: navaid names need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- Cycle 20 (translate44): a pilot's readback, question and the words a pseudo-pilot types
+do
+  local nb = squawk.sim.new()
+  for _, line in ipairs({ "CRE FIN7 A320 60.0 24.0 090 FL260 280", "CRE KLM1153 B738 59.5 10.5 040 FL170 280" }) do
+    check(nb:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = nb, mode = "offline" })) end
+  local function asks(text, part)
+    local got = ex(text)
+    check(got:match("^ASK") ~= nil and got:find(part, 1, true) ~= nil, text .. " -> " .. got)
+  end
+  -- a readback's speed participle carries its value; a number said after an instruction word that no
+  -- command carries is asked about, never dropped
+  check_eq(ex("KLM1153 reducing 250 and descending FL130"), "SPD KLM1153 250 ; ALT KLM1153 FL130")
+  check_eq(ex("KLM1153 descending FL130, increasing to 280 knots"), "ALT KLM1153 FL130 ; SPD KLM1153 280")
+  check_eq(ex("slowing 220, KLM1153"), "SPD KLM1153 220")
+  asks("KLM1153 descend FL130, frobbing 250", "'250'")
+  asks("KLM1153 descend FL130 and 250", "'250'")
+  -- a pilot's question back: a repeat asked for, or whether a clearance stands, is no instruction
+  asks("say again the level for FIN7?", "asks for a repeat")
+  asks("FIN7 say that again, heading?", "asks for a repeat")
+  asks("say again the speed, KLM1153", "asks for a repeat")
+  asks("FIN7 confirm cleared FL200?", "asks whether a clearance stands")
+  asks("KLM1153 confirm heading 270?", "asks whether a clearance stands")
+  -- (the controller's own repeat, and a state question with no value, read as before)
+  check_eq(ex("FIN7 descend FL240, I say again, FL240"), "ALT FIN7 FL240")
+  check_eq(ex("FIN7 confirm level?"), "POS FIN7")
+end
