@@ -753,6 +753,8 @@ local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_
   set_of(COMMENTARY.lead_context)
 local CM_NEGATION = set_of(lexicon.accounted.negation)
 for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
+-- (a person in the room opens a remark as "we" does: "freeze the sim, trainee needs a break")
+for _, w in ipairs(lexicon.speaker_roles) do CM_SUBJECTS[w] = true end
 
 -- The end of the commentary span starting at b: the next punctuation other than a comma, hyphen or quote
 -- (a closing bracket for one opened at b - 1).

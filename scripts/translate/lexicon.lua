@@ -232,6 +232,8 @@ return {
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
+  -- before the level an aircraft leaves, said with the one it is cleared to ("leaving FL260 for FL200")
+  level_left = { "leaving", "passing", "vacating" },
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
   discretion = { "when ready", "when able", "when you're ready", "at pilot's discretion", "at your discretion",
                  "at your own discretion", "at own discretion", "pilot's discretion" },
@@ -482,6 +484,8 @@ return {
                     prague = "ruzyne", venice = "venezia tessera", lisbon = "lisboa", copenhagen = "kastrup",
                     warsaw = "okecie", athens = "eleftherios venizelos", turin = "torino", florence = "firenze",
                     naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter",
+                    amsterdam = "schiphol", oslo = "gardermoen", bergen = "flesland", stavanger = "sola",
+                    trondheim = "vaernes",
                     delhi = "indira gandhi", ["new delhi"] = "indira gandhi", mumbai = "chhatrapati shivaji",
                     bombay = "chhatrapati shivaji", kolkata = "netaji subhash chandra bose",
                     calcutta = "netaji subhash chandra bose", hyderabad = "rajiv gandhi", karachi = "jinnah",

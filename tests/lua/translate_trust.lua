@@ -2436,4 +2436,39 @@ do
   -- (the controller's own repeat, and a state question with no value, read as before)
   check_eq(ex("FIN7 descend FL240, I say again, FL240"), "ALT FIN7 FL240")
   check_eq(ex("FIN7 confirm level?"), "POS FIN7")
+  -- the level a readback leaves is no instruction: the one after "for" is
+  check_eq(ex("FIN7 leaving FL260 for FL200"), "ALT FIN7 FL200")
+  check_eq(ex("left heading 210 and leaving FL260 for FL200, FIN7"), "HDG FIN7 210 LEFT ; ALT FIN7 FL200")
+  check_eq(ex("FIN7 right heading 120, out of FL260 for FL240"), "HDG FIN7 120 RIGHT ; ALT FIN7 FL240")
+  check_eq(ex("FIN7 turn left heading 200 and from FL260 to FL220"), "HDG FIN7 200 LEFT ; ALT FIN7 FL220")
+  -- a word inside a callsign gives no direction ("3UP" is no climb)
+  local up = squawk.sim.new()
+  check(up:exec("CRE RYR3UP B738 57.3 23.4 140 FL150 280"))
+  check(up:exec("CRE EZY4DN A320 57.0 23.0 140 FL150 280"))
+  check_eq(said(graph.translate("Ryanair 3UP descend FL90", { sim = up, mode = "offline" })), "ALT RYR3UP FL90")
+  check_eq(said(graph.translate("Easy 4DN climb FL200", { sim = up, mode = "offline" })), "ALT EZY4DN FL200")
+  check(said(graph.translate("Ryanair 3UP climb FL90", { sim = up, mode = "offline" })):match("^ASK") ~= nil,
+    "a climb to a lower level is still asked about")
+  -- the clock sped up by a factor typed "x2"; a person in the room opens a remark after a comma
+  check_eq(ex("speed the sim up x2"), "DTMULT 2")
+  check_eq(ex("speed up the simulation x4"), "DTMULT 4")
+  check_eq(ex("freeze the sim, trainee needs a break"), "HOLD")
+  check_eq(ex("pause, instructor wants to brief the student"), "HOLD")
+end
+
+-- Cycle 20: a city's one airport said by the city's name (lexicon.city_airports), far from the aircraft too;
+-- an airport the navdata marks closed is no destination
+do
+  local os = squawk.sim.new()
+  check(os:exec("CRE KLM1153 B738 59.5 10.5 040 FL170 280"))
+  local function ex(text) return said(graph.translate(text, { sim = os, mode = "offline" })) end
+  if #os:airports_named("gardermoen") == 1 then
+    check_eq(ex("KLM1153 origin Amsterdam, destination Oslo Gardermoen"), "ORIG KLM1153 EHAM ; DEST KLM1153 ENGM")
+    check_eq(ex("KLM1153 destination Oslo"), "DEST KLM1153 ENGM")
+    check_eq(ex("KLM1153 origin Copenhagen"), "ORIG KLM1153 EKCH")
+    check(ex("KLM1153 destination London"):match("^ASK The airport I found") ~= nil,
+      "a name found far away is still confirmed first")
+  else
+    print("skipped: airports by city need navdata (SQUAWK_NAVDATA)")
+  end
 end
