@@ -32,6 +32,8 @@ return {
       "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
       -- a position's labels as typed ("lat 51.95 lon 4.35"), and the random number generator a seed seeds
       "lat", "lon", "lng", "rng", "prng",
+      -- a flight level as typed ("descend FL120, Finnair 7": never a garbled callsign's word)
+      "fl",
       -- the wind a request sets ("wind from 270 at 40 kt"): never part of a spoken callsign
       "wind", "winds", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a

@@ -2454,6 +2454,16 @@ do
   check_eq(ex("speed up the simulation x4"), "DTMULT 4")
   check_eq(ex("freeze the sim, trainee needs a break"), "HOLD")
   check_eq(ex("pause, instructor wants to brief the student"), "HOLD")
+  -- a readback's callsign at the end, after a typed level: the words before the level are no garbled callsign
+  local sas = squawk.sim.new()
+  for _, line in ipairs({ "CRE SAS123 A20N 59.5 19.6 270 FL150 290", "CRE FIN7 A320 60.0 24.0 090 FL260 280",
+      "CRE ICE306 B752 61.2 9.2 100 FL280 290" }) do
+    check(sas:exec(line))
+  end
+  local function rb(text) return said(graph.translate(text, { sim = sas, mode = "offline" })) end
+  check_eq(rb("descend FL120, Finnair 7"), "ALT FIN7 FL120")
+  check_eq(rb("climb to FL300 Finnair 7"), "ALT FIN7 FL300")
+  check_eq(rb("right heading 060, descend FL120, FIN7"), "HDG FIN7 60 RIGHT ; ALT FIN7 FL120")
 end
 
 -- Cycle 20: a city's one airport said by the city's name (lexicon.city_airports), far from the aircraft too;
