@@ -911,7 +911,10 @@ return function(H, f, compass)
           for k = i, i + n - 1 do words[#words + 1] = free(k) and self.t[k].text or nil end
           if #words == n and (n > 1 or #words[1] >= 4) then
             local phrase = table.concat(words, " ")
-            local ids = with(phrase, near.lat, near.lon, L.navaid_range_nm)
+            local ids, class = {}, self.world.airport_class
+            for _, x in ipairs(with(phrase, near.lat, near.lon, L.navaid_range_nm)) do
+              if not class or class(x) ~= "CLOSED" then ids[#ids + 1] = x end  -- (a closed airport is none)
+            end
             local id = self:one_named(ids, "airport", phrase, 4)
             if id then
               self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
