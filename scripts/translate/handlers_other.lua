@@ -94,6 +94,14 @@ return function(H, f, compass)
     for _, r in ipairs(self:refs_in(id_from, s.e, "aircraft")) do
       if not r.exists then
         id = self:brand_callsign(r)
+        -- ("a second Norstar, NSZ88"): a capitalised word squawk does not know, straight before the new
+        -- callsign and opening with its first letter, is the airline's name for it (it changes nothing)
+        local k = self.t[r.b - 1] and self.t[r.b - 1].kind == "punct" and self.t[r.b - 1].text == "," and r.b - 2 or r.b - 1
+        local w = self.t[k]
+        if w and w.kind == "word" and w.alpha and #w.text >= 4 and w.raw:match("^%u%l") and not self:known_word(k)
+            and not self.u:used(k) and w.raw:sub(1, 1) == id:sub(1, 1):upper() then
+          self:explain(k, k + 1)
+        end
         break
       end
     end

@@ -2463,6 +2463,11 @@ do
   local function rb(text) return said(graph.translate(text, { sim = sas, mode = "offline" })) end
   check_eq(rb("descend FL120, Finnair 7"), "ALT FIN7 FL120")
   check_eq(rb("climb to FL300 Finnair 7"), "ALT FIN7 FL300")
+  -- an airline's name squawk does not know, before the new callsign it opens, names the new aircraft's airline
+  check_eq(rb("create a second Norstar, NSZ88, B738 at 59.0 17.0 heading 020 FL200 290 knots"),
+    "CRE NSZ88 B738 59 17 20 FL200 290")
+  check(rb("create a Foobar, NSZ88, B738 at 59.0 17.0 heading 020 FL200 290 knots"):match("^ASK.*'Foobar'") ~= nil,
+    "a word that does not open the callsign is asked about")
   check_eq(rb("right heading 060, descend FL120, FIN7"), "HDG FIN7 60 RIGHT ; ALT FIN7 FL120")
 end
 
