@@ -465,7 +465,8 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
            names.phonetic_letter(t[i].text) == 0) {
       keyword = keyword || names.vocabulary().is_keyword(t[i].text);
-      only_keywords = only_keywords && names.vocabulary().is_keyword(t[i].text);
+      // ("climb to FL300, Finnair 7": "to" after an instruction word keeps the words an instruction)
+      only_keywords = only_keywords && (names.vocabulary().is_keyword(t[i].text) || (i > words_begin && t[i].text == "to"));
       words += t[i].text;
       last_word = t[i].raw;
       ++i;

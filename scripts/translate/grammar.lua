@@ -773,6 +773,8 @@ local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_
   set_of(COMMENTARY.lead_context)
 local CM_NEGATION = set_of(lexicon.accounted.negation)
 for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
+-- (a person in the room opens a remark as "we" does: "freeze the sim, trainee needs a break")
+for _, w in ipairs(lexicon.speaker_roles) do CM_SUBJECTS[w] = true end
 
 -- The end of the commentary span starting at b: the next punctuation other than a comma, hyphen or quote
 -- (a closing bracket for one opened at b - 1).
@@ -1403,6 +1405,53 @@ function G:value_said_again(p, a, c)
   return true
 end
 
+-- A pilot's question back to the controller (lexicon.question_back) is asked about, never read as the
+-- instruction whose words it holds: "say again the level for FIN7?" (a repeat asked for: no value in its
+-- clause) and "confirm cleared FL200?" (a clearance asked about: a value or place in its clause). A clause runs to
+-- '.', '?', ';' or the end; "say again? I say, descend FL360" (nothing in it) reads on as before.
+local QUESTION_BACK_NOT_AFTER = {}
+for _, w in ipairs(lexicon.question_back.not_after) do QUESTION_BACK_NOT_AFTER[w] = true end
+function G:question_back()
+  local qb = lexicon.question_back
+  -- the end (one past) of a phrase of `phrases` said at i, or nil
+  local function phrase_end(i, phrases)
+    for _, p in ipairs(phrases) do
+      local k = i
+      for w in p:gmatch("%S+") do
+        if not (self.t[k] and self.t[k].kind == "word" and self.t[k].text == w) then k = nil break end
+        k = k + 1
+      end
+      if k then return k end
+    end
+  end
+  local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub(",$", "")) end
+  local function clause_end(k)
+    while k <= #self.t and not (self.t[k].kind == "punct" and self.t[k].text ~= ",") do k = k + 1 end
+    return k
+  end
+  for i = 1, #self.t do
+    local before = self.t[i - 1]
+    if not self.u:used(i) and not (before and QUESTION_BACK_NOT_AFTER[before.text]) then
+      local re = phrase_end(i, qb.repeat_words)
+      if re then
+        local e = clause_end(re)
+        if e > re and #self:quantities(re, e) == 0 then
+          return self:need(string.format("'%s' asks for a repeat: it is a question, no instruction. What "
+            .. "should the aircraft do?", said(i, e)))
+        end
+      end
+      local ce = phrase_end(i, qb.confirm)
+      if ce then
+        local e = clause_end(ce)
+        if #self:quantities(ce, e) > 0 or #self:refs_in(ce, e, "waypoint") > 0 then
+          return self:need(string.format("'%s' asks whether a clearance stands: it is a question, no "
+            .. "instruction. Please give the instruction itself.", said(i, e)))
+        end
+      end
+    end
+  end
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -1942,9 +1991,15 @@ function G:uncarried()
   end
   local corrected = 0
   for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
+  local first = 1
+  while first <= #self.t and not self:intent_at(first) do first = first + 1 end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
-    -- (a plain number with a decimal point is a coordinate; other plain ones are often recognition noise)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and q.number.decimal)) and not self.taken[q.b]
+    -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
+    -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
+    -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
+    -- often recognition noise in a callsign)
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or (q.value >= 10 and q.b > first))))
+        and not self.taken[q.b]
         and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
       self.leftover = self:raw(q.b, q.e)
       return
@@ -3126,6 +3181,7 @@ function M.translate(text, world)
   end
   local note = g:not_simulated()
   g:self_corrected()
+  g:question_back()
   g:refused()
   g:stations()
   -- only what is not simulated was said: no instruction word and no value left

@@ -83,13 +83,21 @@ end
 -- +1 for up/more words, -1 for down/less words, 0 when none; those after a correction, then those in the
 -- instruction's own clause (from the last punctuation before its trigger)
 -- first: "the Shuttle is a bit slow, could you speed it up by 40 knots" is up.
+-- (a word inside a callsign is no direction: "Ryanair 3UP descend FL90" descends)
 function m:direction(s)
+  local names = self:refs_in(s.b, s.e, "aircraft")
+  local function said(i, list)
+    for _, r in ipairs(names) do
+      if i >= r.b and i < r.e then return false end
+    end
+    return self:word(i, list)
+  end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
   for i = s.e - 1, s.b, -1 do
     if self:word(i, "@correction") then
       for k = i + 1, s.e - 1 do
-        if self:word(k, "@up") then return 1 end
-        if self:word(k, "@down") then return -1 end
+        if said(k, "@up") then return 1 end
+        if said(k, "@down") then return -1 end
       end
     end
   end
@@ -97,8 +105,8 @@ function m:direction(s)
   while clause > s.b and self.t[clause - 1].kind ~= "punct" do clause = clause - 1 end
   for _, b in ipairs({ clause, s.b }) do
     for i = b, s.e - 1 do
-      if self:word(i, "@up") then return 1 end
-      if self:word(i, "@down") then return -1 end
+      if said(i, "@up") then return 1 end
+      if said(i, "@down") then return -1 end
     end
   end
   return 0
@@ -971,6 +979,18 @@ function m:at_distance(s)
   return nil
 end
 
+-- True when level quantity q is the one the aircraft leaves, said straight before level b it flies to:
+-- "from FL240 to FL250", a readback's "leaving FL260 for FL200", "out of 9000 for 6000" (the words
+-- before q are explained).
+function m:level_left(q, b)
+  if not (b and b.kind == "alt" and b.b == q.e + 1) then return false end
+  local left = (self:word(q.b - 1, "from") and self:word(q.e, "to")) and q.b - 1
+    or (self:word(q.b - 1, "@level_left") and self:word(q.e, "for to") and q.b - 1)
+    or (self:word(q.b - 1, "of") and self:word(q.b - 2, "out") and self:word(q.e, "for to") and q.b - 2)
+  if left then self:explain(left, q.b) end
+  return left and true or false
+end
+
 -- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
@@ -983,7 +1003,10 @@ function m:leftovers(s)
   local alt_done = s.intent == "alt" or out:find("ALT " .. ids[1] .. " ", 1, true) ~= nil
   local spd_done = s.intent == "spd" or out:find("SPD " .. ids[1], 1, true) ~= nil
   local hdg_done = s.intent == "direct"  -- a direct-to is its lateral instruction
-  for _, q in ipairs(self:quantities(s.b, s.e)) do
+  local qs = self:quantities(s.b, s.e)
+  for k, q in ipairs(qs) do
+    -- (the level left, "leaving FL260 for FL200", is no instruction: the one after it is)
+    if q.kind == "alt" and not alt_done and self:level_left(q, qs[k + 1]) then self:take(q) end
     -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300")
     local unit = (q.kind == "alt" and q.fl) or q.kind == "speed" or q.kind == "mach"
     -- in spoken order: one said before the instruction word goes before its command

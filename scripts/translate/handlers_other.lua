@@ -95,6 +95,14 @@ return function(H, f, compass)
     for _, r in ipairs(self:refs_in(id_from, s.e, "aircraft")) do
       if not r.exists then
         id = self:brand_callsign(r)
+        -- ("a second Norstar, NSZ88"): a capitalised word squawk does not know, straight before the new
+        -- callsign and opening with its first letter, is the airline's name for it (it changes nothing)
+        local k = self.t[r.b - 1] and self.t[r.b - 1].kind == "punct" and self.t[r.b - 1].text == "," and r.b - 2 or r.b - 1
+        local w = self.t[k]
+        if w and w.kind == "word" and w.alpha and #w.text >= 4 and w.raw:match("^%u%l") and not self:known_word(k)
+            and not self.u:used(k) and w.raw:sub(1, 1) == id:sub(1, 1):upper() then
+          self:explain(k, k + 1)
+        end
         break
       end
     end
@@ -862,21 +870,29 @@ return function(H, f, compass)
   function m:airport_by_name(b, e, near, meant)
     local named, city, class = self.world.airports_named, self.world.airports_of_city, self.world.airport_class
     if not named then return nil end
+    self.city_airport = self.city_airport or {}
     local function within(list)
-      -- (a city said by its English name is read as the navdata names it: lexicon.city_airports)
-      local function said(phrase, ...)
-        local ids = list(phrase, ...)
-        if #ids == 0 and L.city_airports[phrase] then ids = list(L.city_airports[phrase], ...) end
-        return ids
-      end
-      if near then return function(phrase) return said(phrase, near.lat, near.lon, L.navaid_range_nm) end end
-      return function(phrase)
+      -- (a city said by its English name is read as the navdata names it, lexicon.city_airports, when no
+      -- airport kept bears the name; an airport the navdata marks closed is none: "Oslo" is no longer
+      -- Fornebu; far from the aircraft, a small one is none either)
+      local function kept(ids)
         local out = {}
-        for _, id in ipairs(said(phrase)) do
-          if not class or class(id) ~= "SMALL" then out[#out + 1] = id end
+        for _, id in ipairs(ids) do
+          local c = class and class(id)
+          if c ~= "CLOSED" and (near or c ~= "SMALL") then out[#out + 1] = id end
         end
         return out
       end
+      local function said(phrase, ...)
+        local ids = kept(list(phrase, ...))
+        if #ids == 0 and L.city_airports[phrase] then
+          ids = kept(list(L.city_airports[phrase], ...))
+          for _, id in ipairs(ids) do self.city_airport[id] = true end
+        end
+        return ids
+      end
+      if near then return function(phrase) return said(phrase, near.lat, near.lon, L.navaid_range_nm) end end
+      return function(phrase) return said(phrase) end
     end
     if near and not near.lat then return nil end
     for _, placed in ipairs({ true, false }) do
@@ -906,7 +922,10 @@ return function(H, f, compass)
           for k = i, i + n - 1 do words[#words + 1] = free(k) and self.t[k].text or nil end
           if #words == n and (n > 1 or #words[1] >= 4) then
             local phrase = table.concat(words, " ")
-            local ids = with(phrase, near.lat, near.lon, L.navaid_range_nm)
+            local ids, class = {}, self.world.airport_class
+            for _, x in ipairs(with(phrase, near.lat, near.lon, L.navaid_range_nm)) do
+              if not class or class(x) ~= "CLOSED" then ids[#ids + 1] = x end  -- (a closed airport is none)
+            end
             local id = self:one_named(ids, "airport", phrase, 4)
             if id then
               self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
@@ -1635,8 +1654,9 @@ return function(H, f, compass)
     -- an airport found by name only far from the aircraft ("London" from over the North Sea is CYXU, in
     -- Canada: the navdata names Heathrow HEATHROW; "Athens" from over Greece is KAHN, Georgia, ATHENS BEN
     -- EPPS): confirmed, never sent
+    -- (a city's one airport read through lexicon.city_airports, "origin Amsterdam", is that airport, far or near)
     local class = self.world.airport_class
-    if airport and a and a.lat and not near and class and #w == 0 then
+    if airport and a and a.lat and not near and class and #w == 0 and not (self.city_airport or {})[airport] then
       self:confirm_before(string.format("The airport I found by that name is %s, more than %d NM from %s. Is that the "
         .. "%s? (yes or no; else please give the ICAO code)", airport, L.navaid_range_nm, id, what))
     end

@@ -94,7 +94,8 @@ return function(H, f, wrap, compass)
         end
       end
     end
-    -- "FL240 -> FL250", "from FL240 to FL250": the level it leaves, then the one it flies to
+    -- "FL240 -> FL250", "from FL240 to FL250", "leaving FL240 for FL250": the level it leaves, then the one it
+    -- flies to
     local a, b = with_unit[1], with_unit[2]
     if b then
       local arrow, words = false, 0
@@ -103,10 +104,9 @@ return function(H, f, wrap, compass)
         if t.kind == "punct" and t.raw:find(">", 1, true) then arrow = true end
         if t.kind ~= "punct" then words = words + 1 end
       end
-      if (arrow and words == 0) or (self:word(a.b - 1, "from") and b.b == a.e + 1 and self:word(a.e, "to")) then
+      if (arrow and words == 0) or self:level_left(a, b) then
         self:take(a)
         self:explain(a.b, b.b)
-        if self:word(a.b - 1, "from") then self:explain(a.b - 1, a.b) end
         table.remove(with_unit, 1)
       end
     end

@@ -32,6 +32,8 @@ return {
       "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
       -- a position's labels as typed ("lat 51.95 lon 4.35"), and the random number generator a seed seeds
       "lat", "lon", "lng", "rng", "prng",
+      -- a flight level as typed ("descend FL120, Finnair 7": never a garbled callsign's word)
+      "fl",
       -- the wind a request sets ("wind from 270 at 40 kt"): never part of a spoken callsign
       "wind", "winds", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a
@@ -236,11 +238,18 @@ return {
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
+  -- before the level an aircraft leaves, said with the one it is cleared to ("leaving FL260 for FL200")
+  level_left = { "leaving", "passing", "vacating" },
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
   discretion = { "when ready", "when able", "when you're ready", "at pilot's discretion", "at your discretion",
                  "at your own discretion", "at own discretion", "pilot's discretion" },
   -- before an instruction word: the instruction is only announced, not given
   not_a_clearance = { "expect" },
+  -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
+  -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
+  -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
+  question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
+                    not_after = { "i", "we" } },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   correction = { "correction", "disregard", "negative" },
@@ -485,6 +494,8 @@ return {
                     prague = "ruzyne", venice = "venezia tessera", lisbon = "lisboa", copenhagen = "kastrup",
                     warsaw = "okecie", athens = "eleftherios venizelos", turin = "torino", florence = "firenze",
                     naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter",
+                    amsterdam = "schiphol", oslo = "gardermoen", bergen = "flesland", stavanger = "sola",
+                    trondheim = "vaernes",
                     delhi = "indira gandhi", ["new delhi"] = "indira gandhi", mumbai = "chhatrapati shivaji",
                     bombay = "chhatrapati shivaji", kolkata = "netaji subhash chandra bose",
                     calcutta = "netaji subhash chandra bose", hyderabad = "rajiv gandhi", karachi = "jinnah",

@@ -284,10 +284,18 @@ return function(intent, rule, words)
   rule { "speed speedup speed-up", "dtmult", near = { 4, "of factor" }, when = function(g, i)
     return (g:word(i, "speedup speed-up") or g:word(i + 1, "up")) and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
-  -- "speed it up 4x": a factor glued to its x, no aircraft named
-  rule { "speed", "dtmult", near = { 2, "up" }, when = function(g, i)
+  -- "speed it up 4x", "speed the sim up x2": a factor glued to its x, no aircraft named
+  rule { "speed", "dtmult", near = { 3, "up" }, when = function(g, i)
     for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
       if q.kind == "mult" then return not g:has_ref(1, #g.t + 1, "aircraft") end
+    end
+    -- ("x2" reads like a callsign no aircraft has: no other aircraft named)
+    for k = i + 1, math.min(#g.t, i + 4) do
+      local t = g.t[k]
+      if t.kind == "word" and t.text:match("^x%d+$") then
+        return not g:has_ref(1, k, "aircraft") and not g:has_ref(k + 1, #g.t + 1, "aircraft")
+          and #g:refs_in(k, k + 1, "aircraft") <= 1 and not (g:refs_in(k, k + 1, "aircraft")[1] or {}).exists
+      end
     end
     return false
   end }
@@ -323,6 +331,13 @@ return function(intent, rule, words)
   -- "and give it 280 knots": a speed given to the aircraft
   rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
+  -- a pilot's readback "reducing 250", "increasing to 280 knots": the participle carries its value (said
+  -- right after it); with none it describes ("the gap is reducing"), no instruction
+  rule { "reducing increasing decreasing slowing", "spd", not_near = { 4, "altitude rate vertical" },
+         when = function(g, i)
+           local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
+           return q ~= nil and (q.kind == "speed" or q.kind == "mach" or q.kind == "plain")
+         end }
 
   -- heading
   -- "it's heading into the other traffic": the aircraft's present course described, no instruction

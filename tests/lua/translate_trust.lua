@@ -2336,3 +2336,84 @@ do
     print("skipped: airports by their city need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- Cycle 20 (translate44): a pilot's readback, question and the words a pseudo-pilot types
+do
+  local nb = squawk.sim.new()
+  for _, line in ipairs({ "CRE FIN7 A320 60.0 24.0 090 FL260 280", "CRE KLM1153 B738 59.5 10.5 040 FL170 280" }) do
+    check(nb:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = nb, mode = "offline" })) end
+  local function asks(text, part)
+    local got = ex(text)
+    check(got:match("^ASK") ~= nil and got:find(part, 1, true) ~= nil, text .. " -> " .. got)
+  end
+  -- a readback's speed participle carries its value; a number said after an instruction word that no
+  -- command carries is asked about, never dropped
+  check_eq(ex("KLM1153 reducing 250 and descending FL130"), "SPD KLM1153 250 ; ALT KLM1153 FL130")
+  check_eq(ex("KLM1153 descending FL130, increasing to 280 knots"), "ALT KLM1153 FL130 ; SPD KLM1153 280")
+  check_eq(ex("slowing 220, KLM1153"), "SPD KLM1153 220")
+  asks("KLM1153 descend FL130, frobbing 250", "'250'")
+  asks("KLM1153 descend FL130 and 250", "'250'")
+  -- a pilot's question back: a repeat asked for, or whether a clearance stands, is no instruction
+  asks("say again the level for FIN7?", "asks for a repeat")
+  asks("FIN7 say that again, heading?", "asks for a repeat")
+  asks("say again the speed, KLM1153", "asks for a repeat")
+  asks("FIN7 confirm cleared FL200?", "asks whether a clearance stands")
+  asks("KLM1153 confirm heading 270?", "asks whether a clearance stands")
+  -- (the controller's own repeat, and a state question with no value, read as before)
+  check_eq(ex("FIN7 descend FL240, I say again, FL240"), "ALT FIN7 FL240")
+  check_eq(ex("FIN7 confirm level?"), "POS FIN7")
+  -- the level a readback leaves is no instruction: the one after "for" is
+  check_eq(ex("FIN7 leaving FL260 for FL200"), "ALT FIN7 FL200")
+  check_eq(ex("left heading 210 and leaving FL260 for FL200, FIN7"), "HDG FIN7 210 LEFT ; ALT FIN7 FL200")
+  check_eq(ex("FIN7 right heading 120, out of FL260 for FL240"), "HDG FIN7 120 RIGHT ; ALT FIN7 FL240")
+  check_eq(ex("FIN7 turn left heading 200 and from FL260 to FL220"), "HDG FIN7 200 LEFT ; ALT FIN7 FL220")
+  -- a word inside a callsign gives no direction ("3UP" is no climb)
+  local up = squawk.sim.new()
+  check(up:exec("CRE RYR3UP B738 57.3 23.4 140 FL150 280"))
+  check(up:exec("CRE EZY4DN A320 57.0 23.0 140 FL150 280"))
+  check_eq(said(graph.translate("Ryanair 3UP descend FL90", { sim = up, mode = "offline" })), "ALT RYR3UP FL90")
+  check_eq(said(graph.translate("Easy 4DN climb FL200", { sim = up, mode = "offline" })), "ALT EZY4DN FL200")
+  check(said(graph.translate("Ryanair 3UP climb FL90", { sim = up, mode = "offline" })):match("^ASK") ~= nil,
+    "a climb to a lower level is still asked about")
+  -- the clock sped up by a factor typed "x2"; a person in the room opens a remark after a comma
+  check_eq(ex("speed the sim up x2"), "DTMULT 2")
+  check_eq(ex("speed up the simulation x4"), "DTMULT 4")
+  check_eq(ex("freeze the sim, trainee needs a break"), "HOLD")
+  check_eq(ex("pause, instructor wants to brief the student"), "HOLD")
+  -- a readback's callsign at the end, after a typed level: the words before the level are no garbled callsign
+  local sas = squawk.sim.new()
+  for _, line in ipairs({ "CRE SAS123 A20N 59.5 19.6 270 FL150 290", "CRE FIN7 A320 60.0 24.0 090 FL260 280",
+      "CRE ICE306 B752 61.2 9.2 100 FL280 290" }) do
+    check(sas:exec(line))
+  end
+  local function rb(text) return said(graph.translate(text, { sim = sas, mode = "offline" })) end
+  check_eq(rb("descend FL120, Finnair 7"), "ALT FIN7 FL120")
+  check_eq(rb("climb to FL300 Finnair 7"), "ALT FIN7 FL300")
+  -- an airline's name squawk does not know, before the new callsign it opens, names the new aircraft's airline
+  check_eq(rb("create a second Norstar, NSZ88, B738 at 59.0 17.0 heading 020 FL200 290 knots"),
+    "CRE NSZ88 B738 59 17 20 FL200 290")
+  check(rb("create a Foobar, NSZ88, B738 at 59.0 17.0 heading 020 FL200 290 knots"):match("^ASK.*'Foobar'") ~= nil,
+    "a word that does not open the callsign is asked about")
+  check_eq(rb("right heading 060, descend FL120, FIN7"), "HDG FIN7 60 RIGHT ; ALT FIN7 FL120")
+end
+
+-- Cycle 20: a city's one airport said by the city's name (lexicon.city_airports), far from the aircraft too;
+-- an airport the navdata marks closed is no destination
+do
+  local os = squawk.sim.new()
+  check(os:exec("CRE KLM1153 B738 59.5 10.5 040 FL170 280"))
+  local function ex(text) return said(graph.translate(text, { sim = os, mode = "offline" })) end
+  if #os:airports_named("gardermoen") == 1 then
+    check_eq(ex("KLM1153 origin Amsterdam, destination Oslo Gardermoen"), "ORIG KLM1153 EHAM ; DEST KLM1153 ENGM")
+    check_eq(ex("KLM1153 destination Oslo"), "DEST KLM1153 ENGM")
+    check_eq(ex("KLM1153 origin Copenhagen"), "ORIG KLM1153 EKCH")
+    -- (Stockholm Tullinge, ESCN, is closed: Arlanda or Bromma is asked about, never the closed field)
+    check(ex("KLM1153 destination Stockholm"):match("^ASK") ~= nil, "no closed airport")
+    check(ex("KLM1153 destination London"):match("^ASK The airport I found") ~= nil,
+      "a name found far away is still confirmed first")
+  else
+    print("skipped: airports by city need navdata (SQUAWK_NAVDATA)")
+  end
+end
