@@ -67,6 +67,10 @@ expect "update-log needs env" 2 "--update-log writes the updates of a --env ENV.
 # bench/gym_paired.lua: a rule against itself (the env and the rule each require their own "descent"), an MLP against a rule.
 expect "paired lua rule" 0 "mean \+0\.000, standard error 0\.000; A better in 0, equal in 3, worse in 0" -- "$sq" run bench/gym_paired.lua envs/vertical_cr.lua script:envs/policies/vertical_cr.lua script:envs/policies/vertical_cr.lua 3 0
 expect "paired lua mlp" 0 "over 20 paired episodes: mean \+[01]\.[0-9]+, .*A better in [1-9][0-9]*," -- "$sq" run bench/gym_paired.lua tests/data/gym/sign.lua "mlp:$gt/ul/policy.ckpt" script:tests/data/gym/sign_half.lua 20 0 --allow-read "$gt:tests/data/gym"
+# bench/gym_imitation_probe.lua: the greedy MLP flies the sign (+-1), so it is 0.5 from sign_half.lua's half sign at every
+# decision; sign_late.lua answers from the step before, which a fresh instance lacks in 3 of every 4 decisions.
+expect "probe error" 0 "rule states, \|clone - rule\| \(80 decisions\): component 1: mean 0\.(4[5-9][0-9]|500)," -- "$sq" run bench/gym_imitation_probe.lua tests/data/gym/sign.lua "mlp:$gt/ul/policy.ckpt" script:tests/data/gym/sign_half.lua 20 0 trace=3 --allow-read "$gt:tests/data/gym"
+expect "probe replay" 0 "replay: a fresh rule answers 60 of 80 rule-state observations differently \(0\.750\)" -- "$sq" run bench/gym_imitation_probe.lua tests/data/gym/sign.lua "mlp:$gt/ul/policy.ckpt" script:tests/data/gym/sign_late.lua 20 0 noise= --allow-read "$gt:tests/data/gym"
 # --imitate: behaviour cloning of a Lua rule (sign_half.lua: half the sign, -1 an episode), then the learner.
 expect "train env imitate" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imit" --gaussian --obs-norm 20 --imitate tests/data/gym/sign_half.lua --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
 expect "env run cloned" 0 '"mean_reward": -1\.0[01][0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json
