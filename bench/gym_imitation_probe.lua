@@ -117,20 +117,55 @@ for k = 0, episodes - 1 do
   local s = seed + k
   local rule = rule_for(s)
   rule_total = rule_total + fly(env, rule, s, function(obs, a)
-    add(on_rule, clone:act(obs), a)
-    states[#states + 1] = {obs = copy(obs), action = copy(a), seed = s}
+    local c = clone:act(obs)
+    add(on_rule, c, a)
+    states[#states + 1] = {obs = copy(obs), action = copy(a), clone = c, seed = s}
   end)
 end
 report("rule states, |clone - rule|", on_rule)
 
+-- The rule-state error of component 1 by the size of the rule's own action there.
+local buckets = {{0, 0.05}, {0.05, 0.5}, {0.5, 0.999}, {0.999, math.huge}}
+local parts = {}
+for _, b in ipairs(buckets) do
+  local n, sum = 0, 0
+  for _, st in ipairs(states) do
+    local m = math.abs(st.action[1])
+    if m >= b[1] and m < b[2] then n, sum = n + 1, sum + math.abs(st.clone[1] - st.action[1]) end
+  end
+  parts[#parts + 1] = string.format("[%g, %g): %.3f of decisions, mean %.3f", b[1], b[2], n / #states,
+                                    n > 0 and sum / n or 0)
+end
+print("rule states, component 1 by the rule's |action|: " .. table.concat(parts, "; "))
+
 -- Clone states: the clone flies, a rule instance that has seen every one of its states labels them.
-local on_clone = errors()
+local on_clone, firsts = errors(), {}
 for k = 0, episodes - 1 do
   local s = seed + k
   local rule = rule_for(s)
-  clone_total = clone_total + fly(env, clone, s, function(obs, a) add(on_clone, a, rule:act(obs)) end)
+  local t, first = 0, nil
+  clone_total = clone_total + fly(env, clone, s, function(obs, a)
+    local label = rule:act(obs)
+    add(on_clone, a, label)
+    t = t + 1
+    for i = 1, #a do
+      if not first and math.abs(a[i] - label[i]) > 0.1 then first = {t, math.abs(label[1]) > 0.1} end
+    end
+  end)
+  firsts[#firsts + 1] = first or {math.huge, false}
 end
 report("clone states, |clone - rule|", on_clone)
+-- Divergence: the first decision of each clone flight more than 0.1 from the rule's label there.
+table.sort(firsts, function(x, y) return x[1] < y[1] end)
+local at_first, turning, never = 0, 0, 0
+for _, f in ipairs(firsts) do
+  if f[1] == 1 then at_first = at_first + 1 end
+  if f[1] == math.huge then never = never + 1 elseif f[2] then turning = turning + 1 end
+end
+local median = firsts[(#firsts + 1) // 2][1]
+print(string.format("divergence: the clone first leaves the rule's label by more than 0.1 at step %s (median over %d "
+                    .. "episodes); at step 1 in %d, never in %d; the rule was turning (|label 1| > 0.1) there in %d",
+                    median == math.huge and "never" or tostring(median), #firsts, at_first, never, turning))
 print(string.format("mean return over %d episodes: rule %.3f, clone (greedy) %.3f", episodes, rule_total / episodes,
                     clone_total / episodes))
 
