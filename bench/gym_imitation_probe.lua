@@ -11,8 +11,8 @@
 --   jumps         every rule-state observation, each number moved by
 --                 N(0, (EPS * its spread over the rule's states)^2): the share of
 --                 decisions where the rule's action moves by more than 0.5 of
---                 the [-1, 1] range (a discontinuity within EPS of the state),
---                 beside the clone's share
+--                 the [-1, 1] range (a discontinuity within EPS of the state;
+--                 both answers from fresh instances), beside the clone's share
 --   noise         the rule flown with N(0, s^2) added to every action component
 --                 (clipped to [-1, 1]) for s in NOISE: its mean return, what an
 --                 imitator with that error and no bias would reach
@@ -201,8 +201,7 @@ local rule_jumps, clone_jumps = 0, 0
 for _, st in ipairs(states) do
   local moved = {}
   for j = 1, size do moved[j] = st.obs[j] + eps * sd[j] * gauss() end
-  local rule = rule_for(st.seed)
-  local a, b = rule:act(copy(st.obs)), rule:act(copy(moved))
+  local a, b = rule_for(st.seed):act(copy(st.obs)), rule_for(st.seed):act(copy(moved))  -- fresh: no memory between
   local c, d = clone:act(copy(st.obs)), clone:act(moved)
   local rj, cj = false, false
   for i = 1, #a do
