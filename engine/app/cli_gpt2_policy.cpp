@@ -29,7 +29,7 @@ Args::Spec train_flags(bool gpt2) {
   values.insert(values.end(),
                 {"--policy", "--env", "--levels", "--hidden", "--agents", "--obs-norm", "--log-std",
                  "--imitate", "--imitate-episodes", "--imitate-rounds", "--imitate-epochs",
-                 "--imitate-lr", "--clone-log-std"});
+                 "--imitate-lr", "--imitate-permute", "--clone-log-std"});
   std::vector<std::string> bools = {"--resume", "--override", "--force",         "--quiet",
                                     "--mirror", "--gaussian", "--imitate-means", "--update-log"};
   if (gpt2) {

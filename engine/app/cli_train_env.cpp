@@ -236,7 +236,7 @@ int cmd_train_env(const Args& args) {
     return usage_error("train", "--imitate runs in a job of one rank");
   if (!imitate)
     for (const char* f : {"--imitate-episodes", "--imitate-rounds", "--imitate-epochs",
-                          "--imitate-lr", "--imitate-means"})
+                          "--imitate-lr", "--imitate-means", "--imitate-permute"})
       if (args.has(f))
         return usage_error("train", std::string(f) + " sets --imitate POLICY.lua's cloning");
   auto hidden = int_list(args, "--hidden", "64,64", "width");  // the policy's hidden widths
@@ -271,6 +271,13 @@ int cmd_train_env(const Args& args) {
     return usage_error("train", "--clone-log-std " + args.get_or("--clone-log-std", "") +
                                     ": the cloned Gaussian head's log sigma, in [-5, 2], with "
                                     "--gaussian and --imitate");
+  // --imitate-permute COUNT:START,...: the observation's interchangeable slots
+  // (rl/slot_permutation.h)
+  if (args.has("--imitate-permute")) {
+    auto layout = rl::parse_slot_layout(*args.get("--imitate-permute"), es.observation_size);
+    if (!layout) return usage_error("train", "--imitate-permute: " + layout.status().message());
+    ic->permute = *std::move(layout);
+  }
   if (gaussian) {
     spec.head = "gaussian";
     spec.action_size = es.action_size();

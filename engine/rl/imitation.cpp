@@ -99,6 +99,11 @@ Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const Imit
                            " exceeds the student's " + std::to_string(student.params().size()) +
                            " parameters");
   const auto d = static_cast<size_t>(teacher.obs_size());
+  for (const int s : c.permute.starts)
+    if (c.permute.count >= 2 && (s < 0 || static_cast<size_t>(s + c.permute.count) > d))
+      return Status::invalid("imitation: the permuted block at " + std::to_string(s) + " (" +
+                             std::to_string(c.permute.count) + " slots) lies outside the " +
+                             std::to_string(d) + " observation numbers");
   const bool continuous = student.action_values().empty();
   Rng rng(c.seed);
   Labelled held, data;
@@ -129,6 +134,9 @@ Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const Imit
           std::copy_n(data.obs.begin() + static_cast<long>(row * d), d, batch_obs.begin() + static_cast<long>(r * d));
           batch_act[static_cast<size_t>(r)] = data.label[row];
         }
+        if (c.permute.count >= 2)
+          for (size_t r = 0; r < static_cast<size_t>(c.batch); ++r)
+            permute_slots(std::span<float>(batch_obs.data() + r * d, d), c.permute, rng);
         std::fill(student.grads().begin(), student.grads().end(), 0.0f);
         student.accumulate_gradient(batch_obs, c.batch, batch_act, coef, 0.0f);
         std::ranges::fill(student.grads().last(c.held_tail), 0.0f);  // Adam moves them by 0

@@ -14,6 +14,10 @@
 // included unless held: config.held_tail > 0 leaves the last held_tail
 // entries of params() where they are, for a Gaussian MlpPolicy its log sigmas,
 // so that the means are fitted at a fixed spread, the mean squared error).
+// config.permute (rl/slot_permutation.h), when it has slots, shows each batch
+// row with its slots in a fresh random order (the label unchanged): for a
+// teacher that treats those objects alike; the held-out figures read the
+// observations as flown.
 // Agreement: the share of held-out decisions (config.holdout episodes of
 // config.holdout_seed, flown by the teacher) where the student's greedy class
 // is the teacher's (continuous: where every component of its greedy action is
@@ -31,6 +35,7 @@
 #include "core/status.h"
 #include "env/batch_env.h"
 #include "rl/policy.h"
+#include "rl/slot_permutation.h"
 
 namespace squawk::rl {
 
@@ -45,6 +50,7 @@ struct ImitationConfig {
   long long holdout = 200;    // [-] held-out episodes
   uint64_t holdout_seed = 2;  // must differ from seed
   size_t held_tail = 0;       // [-] trailing params() entries left unchanged (0: all trained)
+  SlotLayout permute{};       // slots shuffled in every batch row (count < 2: none, no draws)
 };
 
 inline constexpr double kContinuousAgreement = 0.1;  // [-] of the [-1, 1] action range
