@@ -71,6 +71,13 @@ expect "paired lua mlp" 0 "over 20 paired episodes: mean \+[01]\.[0-9]+, .*A bet
 expect "profile rule" 0 "success 83\.3 %, mean return -3\.606 \(sd 4\.21\), intrusion part -1\.667, the rest -1\.939, mean length 70\.2" -- "$sq" run bench/gym_profile.lua envs/sector_cr.lua script:envs/policies/sector_cr.lua 6 0
 expect "profile steps" 0 "^intruder-steps an episode by step: 1-1 0\.00, 2-10 1\.17, 11-30 0\.50, 31-60 0\.00" -- "$sq" run bench/gym_profile.lua envs/sector_cr.lua script:envs/policies/sector_cr.lua 6 0
 expect "profile shares" 0 "^action shares \(lower/middle/upper third\): 0\.20/0\.62/0\.18; 0\.00/1\.00/0\.00$" -- "$sq" run bench/gym_profile.lua envs/sector_cr.lua script:envs/policies/sector_cr.lua 6 0
+# --init CKPT: a run that starts from a trained policy (sign.lua: 4 steps an episode, so 2000 greedy episodes are 8000 steps) and keeps it.
+expect "train init" 0 "value baseline fitted to the starting policy's returns \(8000 steps\)" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/init" --init "$gt/gauss/policy.ckpt" --gaussian --estimator ppo --episodes 320 --eval-every 320
+expect "env run init greedy" 0 '"mean_reward": (0|-0\.[0-4][0-9]*),' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/init/policy.ckpt" --greedy --episodes 40 --json
+expect "init no hidden" 2 "--init CKPT starts from the checkpoint's policy: no --hidden beside it" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i2" --init "$gt/gauss/policy.ckpt" --gaussian --hidden 8
+expect "init head" 1 "its policy's head \(gaussian, 1 components\) is not this run's \(5 grid classes\)" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i3" --init "$gt/gauss/policy.ckpt"
+expect "init obs size" 1 "its policy reads 1 observation numbers; DescentEnv-v0 gives 4" -- "$sq" train --env envs/descent.lua --out "$gt/i4" --init "$gt/gauss/policy.ckpt" --gaussian
+expect "init scenario" 2 "--init CKPT starts a --env ENV.lua or a --policy gpt2 run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/i5" --init "$gt/gauss/policy.ckpt"
 # --imitate: behaviour cloning of a Lua rule (sign_half.lua: half the sign, -1 an episode), then the learner.
 expect "train env imitate" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imit" --gaussian --obs-norm 20 --imitate tests/data/gym/sign_half.lua --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
 expect "env run cloned" 0 '"mean_reward": -1\.0[01][0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json

@@ -18,6 +18,7 @@
 #include "app/interrupt.h"
 #include "app/learner_flags.h"
 #include "app/progress_bar.h"
+#include "app/train_init.h"
 #include "app/subcommands.h"
 #include "app/train_log.h"
 #include "app/update_log.h"
@@ -283,6 +284,19 @@ int cmd_train_env(const Args& args) {
   Rng init(cfg.seed);
   auto policy = rl::MlpPolicy::make(spec, init);
   if (!policy) return failure(policy.status());
+  // --init CKPT: the run starts from a checkpoint's policy (its spec: widths,
+  // head, grid, observation statistics) instead of a fresh network.
+  if (args.has("--init")) {
+    for (const char* f : {"--imitate", "--hidden", "--obs-norm", "--log-std"})
+      if (args.has(f))
+        return usage_error(
+            "train",
+            std::string("--init CKPT starts from the checkpoint's policy: no ") + f + " beside it");
+    auto start = init_policy(*args.get("--init"), es, spec);
+    if (!start) return failure(Status::invalid(shown_error(start.status().message())));
+    spec = start->spec;
+    policy = std::move(start->policy);
+  }
   std::unique_ptr<script::LuaTeacher> teacher;
   if (imitate) {
     // the single-agent training batch is a LuaBatchEnv (make_batches)
@@ -355,6 +369,10 @@ int cmd_train_env(const Args& args) {
     if (args.has("--clone-log-std"))  // the Gaussian log sigmas: the parameters' tail
       std::ranges::fill((*policy)->params().last(static_cast<size_t>(spec.action_size)),
                         static_cast<float>(*clone_log_std));
+  }
+  if (args.has("--init")) {
+    Status st = fit_value_to_policy(**policy, *batches->train, *ic, trainer, quiet);
+    if (!st.is_ok()) return failure(Status::invalid(shown_error(st.message())));
   }
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
   double best_reward = 0.0;
