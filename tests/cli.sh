@@ -78,6 +78,8 @@ expect "init no hidden" 2 "--init CKPT starts from the checkpoint's policy: no -
 expect "init head" 1 "its policy's head \(gaussian, 1 components\) is not this run's \(5 grid classes\)" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i3" --init "$gt/gauss/policy.ckpt"
 expect "init obs size" 1 "its policy reads 1 observation numbers; DescentEnv-v0 gives 4" -- "$sq" train --env envs/descent.lua --out "$gt/i4" --init "$gt/gauss/policy.ckpt" --gaussian
 expect "init scenario" 2 "--init CKPT starts a --env ENV.lua or a --policy gpt2 run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/i5" --init "$gt/gauss/policy.ckpt"
+# bench/gym_sector_close.lua: the same 6 episodes' intruder-steps by distance (1.67 an episode, as the profile's count).
+expect "sector close" 0 "1\.67 intruder-steps an episode; under 2 NM 0\.00, 2-4 NM 0\.67, 4-4\.8 NM 0\.83, 4\.8-5 NM 0\.17; relative speed under 30 m/s 0\.00" -- "$sq" run bench/gym_sector_close.lua script:envs/policies/sector_cr.lua 6 0
 # --imitate: behaviour cloning of a Lua rule (sign_half.lua: half the sign, -1 an episode), then the learner.
 expect "train env imitate" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imit" --gaussian --obs-norm 20 --imitate tests/data/gym/sign_half.lua --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
 expect "env run cloned" 0 '"mean_reward": -1\.0[01][0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json
