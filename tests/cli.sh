@@ -74,6 +74,9 @@ expect "profile shares" 0 "^action shares \(lower/middle/upper third\): 0\.20/0\
 # --init CKPT: a run that starts from a trained policy (sign.lua: 4 steps an episode, so 2000 greedy episodes are 8000 steps) and keeps it.
 expect "train init" 0 "value baseline fitted to the starting policy's returns \(8000 steps\)" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/init" --init "$gt/gauss/policy.ckpt" --gaussian --estimator ppo --episodes 320 --eval-every 320
 expect "env run init greedy" 0 '"mean_reward": (0|-0\.[0-4][0-9]*),' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/init/policy.ckpt" --greedy --episodes 40 --json
+# --init with --clone-log-std -3: the starting policy's log sigma (entropy -3 + 1.419 at the first update, as after cloning).
+expect "train init log-std" 0 "done: 64 episodes" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ils" --init "$gt/gauss/policy.ckpt" --gaussian --clone-log-std -3 --estimator ppo --episodes 64 --eval-every 0 --update-log
+expect "init log-std entropy" 0 "^16,[-0-9.e]+,-1\.58" -- sed -n 2p "$gt/ils/updates.csv"
 expect "init no hidden" 2 "--init CKPT starts from the checkpoint's policy: no --hidden beside it" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i2" --init "$gt/gauss/policy.ckpt" --gaussian --hidden 8
 expect "init head" 1 "its policy's head \(gaussian, 1 components\) is not this run's \(5 grid classes\)" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i3" --init "$gt/gauss/policy.ckpt"
 expect "init obs size" 1 "its policy reads 1 observation numbers; DescentEnv-v0 gives 4" -- "$sq" train --env envs/descent.lua --out "$gt/i4" --init "$gt/gauss/policy.ckpt" --gaussian
@@ -89,7 +92,7 @@ expect "imitate means grid" 2 "--imitate-means holds the Gaussian head's log sig
 # --clone-log-std: the clone is fine-tuned from log sigma -3 (entropy -3 + 1.419 at the first update).
 expect "train clone-log-std" 0 "done: 64 episodes" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cls" --gaussian --imitate tests/data/gym/sign_half.lua --imitate-episodes 100 --imitate-rounds 1 --clone-log-std -3 --estimator ppo --episodes 64 --eval-every 0 --update-log
 expect "clone-log-std entropy" 0 "^16,[-0-9.e]+,-1\.58" -- sed -n 2p "$gt/cls/updates.csv"
-expect "clone-log-std alone" 2 "--clone-log-std -1: the cloned Gaussian head's log sigma, in \[-5, 2\], with --gaussian and --imitate" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cl" --gaussian --clone-log-std -1
+expect "clone-log-std alone" 2 "--clone-log-std -1: the cloned Gaussian head's log sigma, in \[-5, 2\], with --gaussian and --imitate or --init" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cl" --gaussian --clone-log-std -1
 expect "imitate needs env" 2 "--imitate POLICY.lua clones a rule of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/imx" --imitate tests/data/gym/sign_half.lua
 expect "imitate flags alone" 2 "--imitate-epochs sets --imitate POLICY.lua's cloning" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imy" --imitate-epochs 3
 expect "imitate multi-agent" 2 "--imitate clones a single-agent rule; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/imz" --imitate tests/data/gym/sign_half.lua
