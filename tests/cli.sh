@@ -80,6 +80,7 @@ expect "init log-std entropy" 0 "^16,[-0-9.e]+,-1\.58" -- sed -n 2p "$gt/ils/upd
 expect "init no hidden" 2 "--init CKPT starts from the checkpoint's policy: no --hidden beside it" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i2" --init "$gt/gauss/policy.ckpt" --gaussian --hidden 8
 expect "init head" 1 "its policy's head \(gaussian, 1 components\) is not this run's \(5 grid classes\)" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i3" --init "$gt/gauss/policy.ckpt"
 expect "init obs size" 1 "its policy reads 1 observation numbers; DescentEnv-v0 gives 4" -- "$sq" train --env envs/descent.lua --out "$gt/i4" --init "$gt/gauss/policy.ckpt" --gaussian
+expect "init multi-agent" 2 "--init starts single-agent files from a checkpoint; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/i6" --init "$gt/gauss/policy.ckpt"
 expect "init scenario" 2 "--init CKPT starts a --env ENV.lua or a --policy gpt2 run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/i5" --init "$gt/gauss/policy.ckpt"
 # bench/gym_sector_close.lua: the same 6 episodes' intruder-steps by distance (1.67 an episode, as the profile's count).
 expect "sector close" 0 "1\.67 intruder-steps an episode; under 2 NM 0\.00, 2-4 NM 0\.67, 4-4\.8 NM 0\.83, 4\.8-5 NM 0\.17; relative speed under 30 m/s 0\.00" -- "$sq" run bench/gym_sector_close.lua script:envs/policies/sector_cr.lua 6 0

@@ -287,6 +287,9 @@ int cmd_train_env(const Args& args) {
   // --init CKPT: the run starts from a checkpoint's policy (its spec: widths,
   // head, grid, observation statistics) instead of a fresh network.
   if (args.has("--init")) {
+    if (*parallel)
+      return usage_error("train", "--init starts single-agent files from a checkpoint; " + file +
+                                      " is multi-agent");
     for (const char* f : {"--imitate", "--hidden", "--obs-norm", "--log-std"})
       if (args.has(f))
         return usage_error(
