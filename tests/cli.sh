@@ -71,6 +71,23 @@ expect "paired lua mlp" 0 "over 20 paired episodes: mean \+[01]\.[0-9]+, .*A bet
 # decision; sign_late.lua answers from the step before, which a fresh instance lacks in 3 of every 4 decisions.
 expect "probe error" 0 "rule states, \|clone - rule\| \(80 decisions\): component 1: mean 0\.(4[5-9][0-9]|500)," -- "$sq" run bench/gym_imitation_probe.lua tests/data/gym/sign.lua "mlp:$gt/ul/policy.ckpt" script:tests/data/gym/sign_half.lua 20 0 trace=3 --allow-read "$gt:tests/data/gym"
 expect "probe replay" 0 "replay: a fresh rule answers 60 of 80 rule-state observations differently \(0\.750\)" -- "$sq" run bench/gym_imitation_probe.lua tests/data/gym/sign.lua "mlp:$gt/ul/policy.ckpt" script:tests/data/gym/sign_late.lua 20 0 noise= --allow-read "$gt:tests/data/gym"
+# bench/gym_profile.lua: one policy's success, return split into its intrusion part and the rest, length (env run's figures for the same 6 episodes), where the intruder-steps fall and the action shares.
+expect "profile rule" 0 "success 83\.3 %, mean return -3\.606 \(sd 4\.21\), intrusion part -1\.667, the rest -1\.939, mean length 70\.2" -- "$sq" run bench/gym_profile.lua envs/sector_cr.lua script:envs/policies/sector_cr.lua 6 0
+expect "profile steps" 0 "^intruder-steps an episode by step: 1-1 0\.00, 2-10 1\.17, 11-30 0\.50, 31-60 0\.00" -- "$sq" run bench/gym_profile.lua envs/sector_cr.lua script:envs/policies/sector_cr.lua 6 0
+expect "profile shares" 0 "^action shares \(lower/middle/upper third\): 0\.20/0\.62/0\.18; 0\.00/1\.00/0\.00$" -- "$sq" run bench/gym_profile.lua envs/sector_cr.lua script:envs/policies/sector_cr.lua 6 0
+# --init CKPT: a run that starts from a trained policy (sign.lua: 4 steps an episode, so 2000 greedy episodes are 8000 steps) and keeps it.
+expect "train init" 0 "value baseline fitted to the starting policy's returns \(8000 steps\)" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/init" --init "$gt/gauss/policy.ckpt" --gaussian --estimator ppo --episodes 320 --eval-every 320
+expect "env run init greedy" 0 '"mean_reward": (0|-0\.[0-4][0-9]*),' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/init/policy.ckpt" --greedy --episodes 40 --json
+# --init with --clone-log-std -3: the starting policy's log sigma (entropy -3 + 1.419 at the first update, as after cloning).
+expect "train init log-std" 0 "done: 64 episodes" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ils" --init "$gt/gauss/policy.ckpt" --gaussian --clone-log-std -3 --estimator ppo --episodes 64 --eval-every 0 --update-log
+expect "init log-std entropy" 0 "^16,[-0-9.e]+,-1\.58" -- sed -n 2p "$gt/ils/updates.csv"
+expect "init no hidden" 2 "--init CKPT starts from the checkpoint's policy: no --hidden beside it" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i2" --init "$gt/gauss/policy.ckpt" --gaussian --hidden 8
+expect "init head" 1 "its policy's head \(gaussian, 1 components\) is not this run's \(5 grid classes\)" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/i3" --init "$gt/gauss/policy.ckpt"
+expect "init obs size" 1 "its policy reads 1 observation numbers; DescentEnv-v0 gives 4" -- "$sq" train --env envs/descent.lua --out "$gt/i4" --init "$gt/gauss/policy.ckpt" --gaussian
+expect "init multi-agent" 2 "--init starts single-agent files from a checkpoint; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/i6" --init "$gt/gauss/policy.ckpt"
+expect "init scenario" 2 "--init CKPT starts a --env ENV.lua or a --policy gpt2 run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/i5" --init "$gt/gauss/policy.ckpt"
+# bench/gym_sector_close.lua: the same 6 episodes' intruder-steps by distance (1.67 an episode, as the profile's count).
+expect "sector close" 0 "1\.67 intruder-steps an episode; under 2 NM 0\.00, 2-4 NM 0\.67, 4-4\.8 NM 0\.83, 4\.8-5 NM 0\.17; relative speed under 30 m/s 0\.00" -- "$sq" run bench/gym_sector_close.lua script:envs/policies/sector_cr.lua 6 0
 # --imitate: behaviour cloning of a Lua rule (sign_half.lua: half the sign, -1 an episode), then the learner.
 expect "train env imitate" 0 "round 1 \(student flew\), epoch 9: 3200 decisions, held-out agreement 1\.000" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imit" --gaussian --obs-norm 20 --imitate tests/data/gym/sign_half.lua --imitate-episodes 400 --imitate-rounds 2 --imitate-epochs 10 --imitate-lr 1e-2 --estimator ppo --episodes 64 --eval-every 0
 expect "env run cloned" 0 '"mean_reward": -1\.0[01][0-9]*, "std_reward"' -- "$sq" env run tests/data/gym/sign.lua --policy "mlp:$gt/imit/cloned.ckpt" --greedy --episodes 40 --json
@@ -84,7 +101,7 @@ expect "imitate means grid" 2 "--imitate-means holds the Gaussian head's log sig
 # --clone-log-std: the clone is fine-tuned from log sigma -3 (entropy -3 + 1.419 at the first update).
 expect "train clone-log-std" 0 "done: 64 episodes" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cls" --gaussian --imitate tests/data/gym/sign_half.lua --imitate-episodes 100 --imitate-rounds 1 --clone-log-std -3 --estimator ppo --episodes 64 --eval-every 0 --update-log
 expect "clone-log-std entropy" 0 "^16,[-0-9.e]+,-1\.58" -- sed -n 2p "$gt/cls/updates.csv"
-expect "clone-log-std alone" 2 "--clone-log-std -1: the cloned Gaussian head's log sigma, in \[-5, 2\], with --gaussian and --imitate" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cl" --gaussian --clone-log-std -1
+expect "clone-log-std alone" 2 "--clone-log-std -1: the cloned Gaussian head's log sigma, in \[-5, 2\], with --gaussian and --imitate or --init" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cl" --gaussian --clone-log-std -1
 expect "imitate needs env" 2 "--imitate POLICY.lua clones a rule of a --env ENV.lua run" -- "$sq" train scenarios/horizontal_cr.lua --out "$gt/imx" --imitate tests/data/gym/sign_half.lua
 expect "imitate flags alone" 2 "--imitate-epochs sets --imitate POLICY.lua's cloning" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imy" --imitate-epochs 3
 expect "imitate multi-agent" 2 "--imitate clones a single-agent rule; envs/sector_multi.lua is multi-agent" -- "$sq" train --env envs/sector_multi.lua --out "$gt/imz" --imitate tests/data/gym/sign_half.lua

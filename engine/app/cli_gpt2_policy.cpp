@@ -29,11 +29,10 @@ Args::Spec train_flags(bool gpt2) {
   values.insert(values.end(),
                 {"--policy", "--env", "--levels", "--hidden", "--agents", "--obs-norm", "--log-std",
                  "--imitate", "--imitate-episodes", "--imitate-rounds", "--imitate-epochs",
-                 "--imitate-lr", "--imitate-permute", "--clone-log-std"});
+                 "--imitate-lr", "--imitate-permute", "--clone-log-std", "--init"});
   std::vector<std::string> bools = {"--resume", "--override", "--force",         "--quiet",
                                     "--mirror", "--gaussian", "--imitate-means", "--update-log"};
   if (gpt2) {
-    values.push_back("--init");
     values.insert(values.end(), kGpt2PolicyFlags.begin(), kGpt2PolicyFlags.end());
     bools.push_back("--train-embeddings");
   }

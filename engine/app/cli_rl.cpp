@@ -58,6 +58,8 @@ int cmd_train(const ArgV& given) {
   auto args = Args::parse(*argv, train_flags(false));
   if (!args) return usage_error("train", args.status().message());
   if (args->has("--env")) return cmd_train_env(*args);
+  if (args->has("--init"))
+    return usage_error("train", "--init CKPT starts a --env ENV.lua or a --policy gpt2 run");
   if (args->get_or("--policy", "mlp") != "mlp")
     return usage_error("train", "--policy: only 'mlp' trains here, got '" + args->get_or("--policy", "") + "'");
   if (!args->has("--out")) return usage_error("train", "missing --out DIR");

@@ -19,6 +19,7 @@
 #include "app/learner_flags.h"
 #include "app/progress_bar.h"
 #include "app/subcommands.h"
+#include "app/train_init.h"
 #include "app/train_log.h"
 #include "app/update_log.h"
 #include "app/vm_options.h"
@@ -266,11 +267,11 @@ int cmd_train_env(const Args& args) {
   // --clone-log-std X: the log sigma the clone is fine-tuned from (cloning learns its own).
   auto clone_log_std = args.get_double("--clone-log-std", 0.0);
   if (!clone_log_std) return usage_error("train", clone_log_std.status().message());
-  if (args.has("--clone-log-std") &&
-      (!gaussian || !imitate || !(*clone_log_std >= -5.0 && *clone_log_std <= 2.0)))
+  if (args.has("--clone-log-std") && (!gaussian || !(imitate || args.has("--init")) ||
+                                      !(*clone_log_std >= -5.0 && *clone_log_std <= 2.0)))
     return usage_error("train", "--clone-log-std " + args.get_or("--clone-log-std", "") +
                                     ": the cloned Gaussian head's log sigma, in [-5, 2], with "
-                                    "--gaussian and --imitate");
+                                    "--gaussian and --imitate or --init");
   // --imitate-permute COUNT:START,...: the observation's interchangeable slots
   // (rl/slot_permutation.h)
   if (args.has("--imitate-permute")) {
@@ -290,6 +291,22 @@ int cmd_train_env(const Args& args) {
   Rng init(cfg.seed);
   auto policy = rl::MlpPolicy::make(spec, init);
   if (!policy) return failure(policy.status());
+  // --init CKPT: the run starts from a checkpoint's policy (its spec: widths,
+  // head, grid, observation statistics) instead of a fresh network.
+  if (args.has("--init")) {
+    if (*parallel)
+      return usage_error("train", "--init starts single-agent files from a checkpoint; " + file +
+                                      " is multi-agent");
+    for (const char* f : {"--imitate", "--hidden", "--obs-norm", "--log-std"})
+      if (args.has(f))
+        return usage_error(
+            "train",
+            std::string("--init CKPT starts from the checkpoint's policy: no ") + f + " beside it");
+    auto start = init_policy(*args.get("--init"), es, spec);
+    if (!start) return failure(Status::invalid(shown_error(start.status().message())));
+    spec = start->spec;
+    policy = std::move(start->policy);
+  }
   std::unique_ptr<script::LuaTeacher> teacher;
   if (imitate) {
     // the single-agent training batch is a LuaBatchEnv (make_batches)
@@ -359,9 +376,13 @@ int cmd_train_env(const Args& args) {
     Status st = imitate_rule(*args.get("--imitate"), *teacher, *batches->train, *ic, spec, **policy,
                              trainer, out + "/cloned.ckpt", quiet);
     if (!st.is_ok()) return failure(Status::invalid(shown_error(st.message())));
-    if (args.has("--clone-log-std"))  // the Gaussian log sigmas: the parameters' tail
-      std::ranges::fill((*policy)->params().last(static_cast<size_t>(spec.action_size)),
-                        static_cast<float>(*clone_log_std));
+  }
+  if (args.has("--clone-log-std"))  // the Gaussian log sigmas: the parameters' tail
+    std::ranges::fill((*policy)->params().last(static_cast<size_t>(spec.action_size)),
+                      static_cast<float>(*clone_log_std));
+  if (args.has("--init")) {
+    Status st = fit_value_to_policy(**policy, *batches->train, *ic, trainer, quiet);
+    if (!st.is_ok()) return failure(Status::invalid(shown_error(st.message())));
   }
   ProgressBar bar("train", cfg.end_episodes(), !quiet);
   double best_reward = 0.0;

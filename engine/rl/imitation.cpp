@@ -87,6 +87,17 @@ Status check_pair(Policy& student, Policy& teacher) {
 
 }  // namespace
 
+Result<TeacherFlights> greedy_flights(Policy& pilot, env::BatchEnv& envs, uint64_t seed,
+                                      uint64_t count) {
+  SQUAWK_RETURN_IF_ERROR(check_obs_size(pilot, envs.obs_size()));
+  Rng rng(seed);
+  Labelled decisions;
+  TeacherFlights flights;
+  SQUAWK_RETURN_IF_ERROR(
+      fly(envs, pilot, true, pilot, seed, 0, count, rng, decisions, &flights).status());
+  return flights;
+}
+
 Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const ImitationConfig& c,
                const std::function<Status(const ImitationEpoch&)>& on_epoch,
                TeacherFlights* flights) {

@@ -78,6 +78,12 @@ struct ImitationEpoch {
 // on_epoch runs after every epoch (the caller saves or reports there);
 // returning an error stops with that error. `flights`, when given, receives
 // round 0's teacher flights.
+// `pilot`'s own greedy flights over episodes 0 .. count-1 of `seed` on `envs`
+// (the round-0 flights imitate() records of its teacher), for a value baseline
+// fitted before fine-tuning a policy that did not come from a rule.
+Result<TeacherFlights> greedy_flights(Policy& pilot, env::BatchEnv& envs, uint64_t seed,
+                                      uint64_t count);
+
 Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const ImitationConfig& config,
                const std::function<Status(const ImitationEpoch&)>& on_epoch,
                TeacherFlights* flights = nullptr);
