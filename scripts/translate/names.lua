@@ -289,7 +289,6 @@ return {
     { "tap air portugal", "TAP" },
     { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
     { "spirit airlines", "NKS" },
-    { "jet2", "EXS" },  -- (Jet2.com, telephony Channex)
     { "qatar airways", "QTR" },
     { "cathay pacific", "CPA" },
   },
