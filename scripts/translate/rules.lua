@@ -803,9 +803,12 @@ return function(intent, rule, words)
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
-  -- "place EZY45, A319, at 38.4 N 6.6 W heading 290": a callsign no aircraft has, with its type, is created
+  -- "place EZY45, A319, at 38.4 N 6.6 W heading 290", "place a Ryanair, RYR5GH, B738, over LOREL ...": a
+  -- callsign no aircraft has, with its type, is created
   rule { "place", "create", when = function(g, i)
-    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 3), "aircraft")[1]
+    local k = g:word(i + 1, "a an") and g:airline_at(i + 2) and select(2, g:airline_at(i + 2)) or i + 1
+    if g.t[k] and g.t[k].kind == "punct" then k = k + 1 end
+    local r = g:refs_in(k, math.min(#g.t + 1, k + 2), "aircraft")[1]
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
   end }
   rule { "move mv reposition teleport shift place relocate", "move" }

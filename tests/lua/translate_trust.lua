@@ -2441,6 +2441,7 @@ do
   check(ex("the AI climbs KLM1234"):match("^ASK") ~= nil, "the AI named inside the request is asked about")
   check_eq(ex("run it for 90 seconds"), "FF 90")
   check_eq(ex("set the sim running"), "OP")
+  check_eq(ex("place an easyJet, EZY12, A320, at 52 4 heading 090 FL200 250 knots"), "CRE EZY12 A320 52 4 90 FL200 250")
   check_eq(ex("freeze the sim, participant needs a break"), "HOLD")
   check(ex("divert KLM1234 around the weather"):match("^ASK") ~= nil, "a diversion to no airport is asked about")
   if #tm:airports_named("eindhoven") == 1 then
