@@ -743,8 +743,9 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
+  rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
   -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
-  rule { "route rte waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" },
+  rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
          not_prev = { 1, "your our my" } }
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "show me KLM one two seven six's route": the verb before the aircraft the route is of
