@@ -890,7 +890,7 @@ return function(intent, rule, words)
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "set the sim running", "get it running again": the clock started
-  rule { "running", "op", prev = { 1, "@sim it" }, when = function(g, i)
+  rule { "running", "op", prev = { 1, "@sim it" }, not_near = { 4, "speed rate times real normal" }, when = function(g, i)
     local b = g:word(i - 2, "the") and i - 2 or i - 1
     return g:word(b - 1, "set get")
   end }
