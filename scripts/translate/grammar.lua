@@ -168,7 +168,8 @@ local function know_all(v, seen)
   -- accounted for only where one is read: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
-      or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles then
+      or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles
+      or v == lexicon.addressed_roles then
     return
   end
   seen[v] = true
@@ -526,23 +527,39 @@ end
 -- A speaker's label before the request ("instructor: ...", "ATC here - ...", "sim op: ...", one or two
 -- words of lexicon.speaker_roles or label_roles before a colon, or a dash set apart: "simulator-driven"
 -- is no label) is dropped, as is a role of one or two words addressed before a comma or "please"
--- ("operator, ...", "pseudo-pilot, ...", "sim op please give ...").
+-- ("operator, ...", "pseudo-pilot, ...", "sim op please give ..."). The machine teammate
+-- (lexicon.addressed_roles) opening the line is its addressee even without a comma before a word
+-- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
+local ADDRESSED = set_of(lexicon.addressed_roles.names)
+local GREETINGS = set_of(lexicon.addressed_roles.greetings)
 local function all_roles(words)
   for w in words:lower():gmatch("%a+") do
     if not SPEAKER_ROLES[w] then return false end
   end
   return true
 end
-local function unlabelled(text)
+local function role_dropped(text)
   local role, said = text:match("^%s*(%a+[%s%-]?%a*)%s*,%s*(.+)$")
   if not role then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s+([Pp]lease%s.+)$") end
   if role and all_roles(role) then return said end
   local label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$")
-  if not label or rest == "" or (sep == "-" and (before == "" or after == "")) then return text end
-  if not all_roles((label:lower():gsub("%s+here$", ""))) then return text end
-  return rest
+  if label and rest ~= "" and not (sep == "-" and (before == "" or after == ""))
+      and all_roles((label:lower():gsub("%s+here$", ""))) then
+    return rest
+  end
+  local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
+  if name and ADDRESSED[name:lower()] then return next_word end
+  return text
+end
+local function unlabelled(text)
+  local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
+  if greeting and GREETINGS[greeting:lower()] then
+    local said = role_dropped(after)
+    if said ~= after then return said end
+  end
+  return role_dropped(text)
 end
 
 -- A type designator written with a hyphen after its letter or two ("C-17", "C-130", "MD-11", "DC-10")

@@ -257,7 +257,12 @@ return {
   -- create ...", "sim op: ..."): the label is no part of the request
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
-  label_roles = { "operator", "op", "sim", "simulator", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter" },
+  label_roles = { "operator", "op", "sim", "simulator", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
+                  "ai", "teammate", "assistant" },
+  -- of those, the machine teammate a controller talks to: it opens a line as its addressee even without a comma
+  -- ("AI what's the Virgin's altitude?", "hey teammate descend ..."); a greeting of `greetings` may come first
+  -- ("ok AI, ...", "hey teammate: ...")
+  addressed_roles = { names = { "ai", "teammate", "assistant" }, greetings = { "ok", "okay", "hey", "hi", "right", "alright", "so" } },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
   -- "heading 090, oh no, right heading 200"): a run of `words` between a value and the next value,
   -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
@@ -328,7 +333,8 @@ return {
   -- is other traffic when the request names its own aircraft after the colon ("Add an intruder for
   -- VIR9: DLH9KW A321 at ...")
   aside = { subjects = { "we", "i", "it", "he", "she", "they", "that", "this", "it's", "that's", "we're",
-                         "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too" },
+                         "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too",
+                         "participant", "participants", "experimenter", "researcher" },
           own = { "we", "i", "we're", "we'll", "we'd", "i'm", "i'll", "i'd" },
           while_words = { "while", "whilst" },
           later = { "later", "afterwards", "afterward" },

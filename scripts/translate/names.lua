@@ -289,6 +289,8 @@ return {
     { "tap air portugal", "TAP" },
     { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
     { "spirit airlines", "NKS" },
+    { "qatar airways", "QTR" },
+    { "cathay pacific", "CPA" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },

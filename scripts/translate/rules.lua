@@ -693,8 +693,9 @@ return function(intent, rule, words)
     return at and earlier(g, i, "addwpt") and airport_at(g, at + 1) or false
   end }
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
-  -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata
-  rule { "send", "dest", when = function(g, i)
+  -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata ("divert Ryanair
+  -- 23AB to Eindhoven", "KLM1234 divert to EHRD": diverted to an airport, the new destination)
+  rule { "send divert diverting", "dest", when = function(g, i)
     local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
     if g:word(to - 1, "straight direct directly") then return false end  -- ("send it straight to Barcelona")
     for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
@@ -742,7 +743,10 @@ return function(intent, rule, words)
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
   rule { "vertical", "vnav", next = "profile navigation" }
-  rule { "route rte waypoints plan", "listrte", prev = { 4, "show list display what print see look where check" } }
+  rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
+  -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
+  rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
+         not_prev = { 1, "your our my" } }
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "show me KLM one two seven six's route": the verb before the aircraft the route is of
   -- ("pull up Air Canada 871's flight plan", "bring up the KLM's route")
@@ -800,9 +804,12 @@ return function(intent, rule, words)
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
-  -- "place EZY45, A319, at 38.4 N 6.6 W heading 290": a callsign no aircraft has, with its type, is created
+  -- "place EZY45, A319, at 38.4 N 6.6 W heading 290", "place a Ryanair, RYR5GH, B738, over LOREL ...": a
+  -- callsign no aircraft has, with its type, is created
   rule { "place", "create", when = function(g, i)
-    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 3), "aircraft")[1]
+    local k = g:word(i + 1, "a an") and g:airline_at(i + 2) and select(2, g:airline_at(i + 2)) or i + 1
+    if g.t[k] and g.t[k].kind == "punct" then k = k + 1 end
+    local r = g:refs_in(k, math.min(#g.t + 1, k + 2), "aircraft")[1]
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
   end }
   rule { "move mv reposition teleport shift place relocate", "move" }
@@ -882,6 +889,11 @@ return function(intent, rule, words)
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
+  -- "set the sim running", "get it running again": the clock started
+  rule { "running", "op", prev = { 1, "@sim it" }, not_near = { 4, "speed rate times real normal" }, when = function(g, i)
+    local b = g:word(i - 2, "the") and i - 2 or i - 1
+    return g:word(b - 1, "set get")
+  end }
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
   -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
@@ -907,7 +919,7 @@ return function(intent, rule, words)
   rule { "run advance step", "ff", not_prev = { 1, "time" }, not_near = { 7, "real times faster x twice thrice" },
          when = function(g, i)
     local k = g:skip_fillers(i + 1)
-    if g:word(k, "@sim") then k = g:skip_fillers(k + 1) end
+    if g:word(k, "@sim it") then k = g:skip_fillers(k + 1) end  -- ("run it for 90 seconds")
     if g:word(k, "fast quickly ahead") then k = g:skip_fillers(k + 1) end
     if g:word(k, "for") then k = g:skip_fillers(k + 1) end
     if g:word(k, "hour minute") and g:word(k - 1, "a an") then return true end  -- ("for an hour")

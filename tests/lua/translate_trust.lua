@@ -2417,3 +2417,37 @@ do
     print("skipped: airports by city need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- Cycle 21 (R48): the machine teammate addressed before the request is a label ("AI, ...", "teammate: ...",
+-- "ok AI, ...", "AI what's ..."), never an instruction of its own; the teammate's own plans are asked about;
+-- a diversion to an airport is its new destination; the clock run "for" a time; study people open a remark
+do
+  local tm = squawk.sim.new()
+  for _, line in ipairs({ "CRE KLM1234 B738 52 4 090 FL300 280", "CRE RYR5GH B738 52.1 4.2 090 FL280 280",
+      "CRE QTR8 B77W 52.4 4 090 FL350 280" }) do
+    check(tm:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = tm, mode = "offline" })) end
+  check_eq(ex("AI, climb KLM1234 to FL340"), "ALT KLM1234 FL340")
+  check_eq(ex("teammate: RYR5GH speed 250"), "SPD RYR5GH 250")
+  check_eq(ex("hey AI, KLM1234 heading 200"), "HDG KLM1234 200")
+  check_eq(ex("assistant please give RYR5GH heading 120"), "HDG RYR5GH 120")
+  check_eq(ex("ok teammate, can you descend the KLM to FL200 for me?"), "ALT KLM1234 FL200")
+  check_eq(ex("the Qatar Airways climb FL370"), "ALT QTR8 FL370")
+  -- (no concrete instruction: asked, never a clearance invented; "AI" in the callsign position is no label)
+  check(ex("teammate, what's your plan for the KLM?"):match("^ASK") ~= nil, "the teammate's plan is no route")
+  check(ex("AI, you handle the Ryanair from now on"):match("^ASK") ~= nil, "no clearance invented")
+  check(ex("AI 101 climb FL300"):match("^ASK") ~= nil, "a callsign AI 101 is no addressee")
+  check(ex("the AI climbs KLM1234"):match("^ASK") ~= nil, "the AI named inside the request is asked about")
+  check_eq(ex("run it for 90 seconds"), "FF 90")
+  check_eq(ex("set the sim running"), "OP")
+  check_eq(ex("place an easyJet, EZY12, A320, at 52 4 heading 090 FL200 250 knots"), "CRE EZY12 A320 52 4 90 FL200 250")
+  check_eq(ex("freeze the sim, participant needs a break"), "HOLD")
+  check(ex("divert KLM1234 around the weather"):match("^ASK") ~= nil, "a diversion to no airport is asked about")
+  if #tm:airports_named("eindhoven") == 1 then
+    check_eq(ex("divert KLM1234 to Eindhoven"), "DEST KLM1234 EHEH")
+    check_eq(ex("RYR5GH diverting to Rotterdam"), "DEST RYR5GH EHRD")
+  else
+    print("skipped: diversions by city need navdata (SQUAWK_NAVDATA)")
+  end
+end
