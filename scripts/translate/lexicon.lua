@@ -446,6 +446,9 @@ return {
     -- end of the request: the words in it describe the other aircraft, they instruct nobody
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
       to_end = true },
+    -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told
+    -- to the pilot ("the number of aircraft" is none)
+    { what = "approach sequences", words = "number", near = { "#number" }, not_before = "of" },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",

@@ -660,6 +660,13 @@ return function(intent, rule, words)
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
+  -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO": the waypoint where the route is
+  -- rejoined is flown to directly ("rejoin the route" alone is LNAV)
+  rule { "rejoin rejoining", "direct", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    while g:word(k, "the your its his her @route_nouns track airway at to over by") do k = g:skip_fillers(k + 1) end
+    return k <= i + 6 and g:has_ref(k, k + 1, "waypoint")
+  end }
   -- ("cleared for the FMS bridge visual runway 28R": an approach clearance, not simulated)
   rule { "cleared", "direct", when = function(g, i)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
