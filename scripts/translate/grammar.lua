@@ -2257,7 +2257,7 @@ end
 -- off by commas, straight after a callsign ("Shamrock 105, Shanwick, climb ...") or opening the request
 -- before one ("Santa Maria, Air Portugal 237, ..."); one to three words, a unit word after them
 -- ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities) or not, that name an air traffic
--- unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport or city.
+-- unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport, city or navaid.
 local ATC_UNITS = set_of(lexicon.atc_units)
 function G:stations()
   local b = 1
@@ -2302,7 +2302,9 @@ function G:station_clause(b, e, after_callsign)
   for _, by in ipairs({ self.world.airports_named, self.world.airports_of_city }) do
     if #by(name) > 0 then return true end
   end
-  return false
+  -- (a place named by its navaid: "Kano, Ethiopian 935, ...", the KANO VOR-DME anywhere in the navdata)
+  local navaids = self.world.navaids_named
+  return navaids ~= nil and #navaids(name, 0, 0, 1e5) > 0
 end
 
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
