@@ -2537,8 +2537,8 @@ local function frequency(t)
   local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
   return mhz and mhz >= 118 and mhz < 137
 end
-function G:near_any(i, near)
-  for k = i + 1, math.min(#self.t, i + 4) do
+function G:near_any(i, near, window)
+  for k = i + 1, math.min(#self.t, i + (window or 4)) do
     local t = self.t[k]
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
@@ -2649,7 +2649,7 @@ function G:not_simulated()
     if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
         and not self:navaid_named_before(i) then
       for _, c in ipairs(lexicon.not_simulated) do
-        if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
+        if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
             and (not c.last or self:said_last(i))

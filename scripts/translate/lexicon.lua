@@ -405,7 +405,7 @@ return {
   ignore = { "ignore", "it", "that", "this", "word", "nothing", "skip", "disregard", "means", "just", "a",
              "comment", "remark", "filler", "please", "the" },
   -- what squawk does not simulate: a phrase starts at one of `words` (with
-  -- one of `near` within 4 words after it, when given) and runs to the end
+  -- one of `near` within `window` words after it, 4 by default, when given) and runs to the end
   -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
   -- while, so an instruction after "then" waits for it and is asked about, never sent now
   not_simulated = {
@@ -443,8 +443,9 @@ return {
     -- (`through`: instruction words that stay in the phrase: wake turbulence is no NOISE command)
     { what = "cautions", words = "caution", through = "turbulence" },
     -- traffic information ("traffic 2 o'clock, 5 miles, eastbound, altitude indicates 3500") runs to the
-    -- end of the request: the words in it describe the other aircraft, they instruct nobody
-    { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
+    -- end of the request: the words in it describe the other aircraft, they instruct nobody (the aircraft
+    -- may be named before its clock position: "traffic, an Emirates 777, at your two o'clock")
+    { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" }, window = 9,
       to_end = true },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told
     -- to the pilot ("the number of aircraft" is none)
