@@ -507,7 +507,14 @@ return {
                     ["dar es salaam"] = "mwalimu julius k nyerere", tashkent = "yuzhny", yerevan = "zvartnots",
                     baku = "heydar aliyev", ["st petersburg"] = "pulkovo", ["saint petersburg"] = "pulkovo",
                     yekaterinburg = "koltsovo", novosibirsk = "tolmachevo", samara = "kurumoch", bishkek = "manas",
-                    kyiv = "boryspil intl", kiev = "boryspil intl" },
+                    kyiv = "boryspil intl", kiev = "boryspil intl",
+                    -- (West and Central Africa: capitals and hubs whose one airport the navdata names otherwise)
+                    lagos = "murtala muhammed", abuja = "nnamdi azikiwe", kano = "mallam aminu", accra = "kotoka",
+                    lome = "gnassingbe eyadema", abidjan = "abidjan felix houphouet boigny", dakar = "leopold sedar senghor",
+                    kinshasa = "ndjili", brazzaville = "maya maya", luanda = "luanda 4 de fevereiro",
+                    niamey = "diori hamani", cotonou = "cadjehoun", bamako = "senou", libreville = "leon m ba",
+                    yaounde = "yaounde nsimalen", monrovia = "monrovia roberts", freetown = "freetown lungi",
+                    ["n'djamena"] = "ndjamena hassan djamous", ndjamena = "ndjamena hassan djamous" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
