@@ -448,8 +448,8 @@ return {
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" }, window = 9,
       to_end = true },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told
-    -- to the pilot ("the number of aircraft" is none)
-    { what = "approach sequences", words = "number", near = { "#number" }, not_before = "of" },
+    -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
+    { what = "approach sequences", words = "number", near = { "#number" }, window = 1 },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
