@@ -1009,6 +1009,13 @@ return function(intent, rule, words)
     return qs[1] ~= nil and qs[1].b == i + 1 and qs[2] ~= nil and qs[2].kind == "speed"
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
+  -- "wind at 6.5 north 3.3 east from 220 at 15 knots", "a harmattan wind at 12N 8.5E, from 050, 20 knots": a
+  -- position straight after it, where it blows from said after that
+  rule { "wind winds", "wind", when = function(g, i)
+    local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or nil
+    return q ~= nil and (q.kind == "lat" or q.kind == "lon") and g:find_word(i + 3, #g.t + 1, "from") <= #g.t
+      and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
+  end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
