@@ -2436,6 +2436,10 @@ do
   check_eq(ex("ARA512 you're number three behind the ASKY, reduce speed 220 knots"), "SPD ARA512 220")
   check_eq(ex("ARA512 maintain FL200, number one in sequence"), "ALT ARA512 FL200")
   check_eq(ex("ARA512 turn left heading 160, traffic a Dash 8 at your two o'clock"), "HDG ARA512 160 LEFT")
+  check_eq(said(graph.translate("wind at 6.5 north 3.3 east from two two zero at 15 knots", { mode = "offline" })),
+    "WIND 6.5 3.3 220 15")
+  check_eq(said(graph.translate("a wind over 12N 8.5E, from 050 degrees, 20 knots", { mode = "offline" })),
+    "WIND 12 8.5 50 20")
   check_eq(ex("List the route for Arik 512"), "LISTRTE ARA512")
   check_eq(ex("delete ASKY 602"), "DEL SKK602")
   check_eq(ex("what's the speed of Cote d'Ivoire 701"), "POS VRE701")
