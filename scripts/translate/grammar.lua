@@ -2274,7 +2274,7 @@ end
 -- off by commas, straight after a callsign ("Shamrock 105, Shanwick, climb ...") or opening the request
 -- before one ("Santa Maria, Air Portugal 237, ..."); one to three words, a unit word after them
 -- ("Scottish Control", "Gander Oceanic": lexicon.accounted.facilities) or not, that name an air traffic
--- unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport or city.
+-- unit (lexicon.atc_units, in any case) or, capitalised, the navdata's airport, city or navaid.
 local ATC_UNITS = set_of(lexicon.atc_units)
 function G:stations()
   local b = 1
@@ -2319,7 +2319,9 @@ function G:station_clause(b, e, after_callsign)
   for _, by in ipairs({ self.world.airports_named, self.world.airports_of_city }) do
     if #by(name) > 0 then return true end
   end
-  return false
+  -- (a place named by its navaid: "Kano, Ethiopian 935, ...", the KANO VOR-DME anywhere in the navdata)
+  local navaids = self.world.navaids_named
+  return navaids ~= nil and #navaids(name, 0, 0, 1e5) > 0
 end
 
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
@@ -2552,8 +2554,8 @@ local function frequency(t)
   local mhz = t.kind == "number" and t.text:match("^1[123]%d%.%d+$") and tonumber(t.text)
   return mhz and mhz >= 118 and mhz < 137
 end
-function G:near_any(i, near)
-  for k = i + 1, math.min(#self.t, i + 4) do
+function G:near_any(i, near, window)
+  for k = i + 1, math.min(#self.t, i + (window or 4)) do
     local t = self.t[k]
     for _, w in ipairs(near) do
       if (w == "#number" and t.kind == "number") or (w == "#number" and t.number_word)
@@ -2664,7 +2666,7 @@ function G:not_simulated()
     if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
         and not self:navaid_named_before(i) then
       for _, c in ipairs(lexicon.not_simulated) do
-        if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near))
+        if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
             and (not c.last or self:said_last(i))

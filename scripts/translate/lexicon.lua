@@ -411,7 +411,7 @@ return {
   ignore = { "ignore", "it", "that", "this", "word", "nothing", "skip", "disregard", "means", "just", "a",
              "comment", "remark", "filler", "please", "the" },
   -- what squawk does not simulate: a phrase starts at one of `words` (with
-  -- one of `near` within 4 words after it, when given) and runs to the end
+  -- one of `near` within `window` words after it, 4 by default, when given) and runs to the end
   -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
   -- while, so an instruction after "then" waits for it and is asked about, never sent now
   not_simulated = {
@@ -449,9 +449,13 @@ return {
     -- (`through`: instruction words that stay in the phrase: wake turbulence is no NOISE command)
     { what = "cautions", words = "caution", through = "turbulence" },
     -- traffic information ("traffic 2 o'clock, 5 miles, eastbound, altitude indicates 3500") runs to the
-    -- end of the request: the words in it describe the other aircraft, they instruct nobody
-    { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" },
+    -- end of the request: the words in it describe the other aircraft, they instruct nobody (the aircraft
+    -- may be named before its clock position: "traffic, an Emirates 777, at your two o'clock")
+    { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" }, window = 9,
       to_end = true },
+    -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told
+    -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
+    { what = "approach sequences", words = "number", near = { "#number" }, window = 1 },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
@@ -509,7 +513,14 @@ return {
                     ["dar es salaam"] = "mwalimu julius k nyerere", tashkent = "yuzhny", yerevan = "zvartnots",
                     baku = "heydar aliyev", ["st petersburg"] = "pulkovo", ["saint petersburg"] = "pulkovo",
                     yekaterinburg = "koltsovo", novosibirsk = "tolmachevo", samara = "kurumoch", bishkek = "manas",
-                    kyiv = "boryspil intl", kiev = "boryspil intl" },
+                    kyiv = "boryspil intl", kiev = "boryspil intl",
+                    -- (West and Central Africa: capitals and hubs whose one airport the navdata names otherwise)
+                    lagos = "murtala muhammed", abuja = "nnamdi azikiwe", kano = "mallam aminu", accra = "kotoka",
+                    lome = "gnassingbe eyadema", abidjan = "abidjan felix houphouet boigny", dakar = "leopold sedar senghor",
+                    kinshasa = "ndjili", brazzaville = "maya maya", luanda = "luanda 4 de fevereiro",
+                    niamey = "diori hamani", cotonou = "cadjehoun", bamako = "senou", libreville = "leon m ba",
+                    yaounde = "yaounde nsimalen", monrovia = "monrovia roberts", freetown = "freetown lungi",
+                    ["n'djamena"] = "ndjamena hassan djamous", ndjamena = "ndjamena hassan djamous" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")

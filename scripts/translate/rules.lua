@@ -660,6 +660,13 @@ return function(intent, rule, words)
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
+  -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO": the waypoint where the route is
+  -- rejoined is flown to directly ("rejoin the route" alone is LNAV)
+  rule { "rejoin rejoining", "direct", when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    while g:word(k, "the your its his her @route_nouns track airway at to over by") do k = g:skip_fillers(k + 1) end
+    return k <= i + 6 and g:has_ref(k, k + 1, "waypoint")
+  end }
   -- ("cleared for the FMS bridge visual runway 28R": an approach clearance, not simulated)
   rule { "cleared", "direct", when = function(g, i)
     return #g.world.waypoints > 0 and not g:followed_by(i, 8, "visual approach ils rnav localizer land landing")
@@ -1013,6 +1020,13 @@ return function(intent, rule, words)
     local qs = g:quantities(i + 1, math.min(#g.t + 1, i + 6))
     return qs[1] ~= nil and qs[1].b == i + 1 and qs[2] ~= nil and qs[2].kind == "speed"
       and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "wind at 6.5 north 3.3 east from 220 at 15 knots", "a harmattan wind at 12N 8.5E, from 050, 20 knots": a
+  -- position straight after it, where it blows from said after that
+  rule { "wind winds", "wind", when = function(g, i)
+    local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or nil
+    return q ~= nil and (q.kind == "lat" or q.kind == "lon") and g:find_word(i + 3, #g.t + 1, "from") <= #g.t
+      and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
   end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }

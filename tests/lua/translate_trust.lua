@@ -2451,3 +2451,39 @@ do
     print("skipped: diversions by city need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- Cycle 21 (R47, West and Central African controllers): "rejoin X" flies to X; a place in the approach sequence
+-- and traffic information past the other aircraft's name are named, never asked about; the region's airlines by
+-- telephony or name anywhere in the request; a station named by its navaid; a city's one airport
+do
+  local af = squawk.sim.new()
+  for _, line in ipairs({ "CRE ARA512 B737 6.5 3.5 090 FL200 280", "CRE SKK602 B737 6.6 3.6 270 FL220 280",
+      "CRE VRE701 A320 6.4 3.4 180 FL240 270", "CRE AFW401 DH8D 6.3 3.3 000 FL140 230",
+      "DEFWPT KISMO 6.9 3.9", "ADDWPT ARA512 KISMO" }) do
+    check(af:exec(line))
+  end
+  local function ex(text) return said(graph.translate(text, { sim = af, mode = "offline" })) end
+  check_eq(ex("ARA512 rejoin KISMO"), "DIRECT ARA512 KISMO")
+  check_eq(ex("ARA512 descend FL150, rejoin the route at KISMO"), "ALT ARA512 FL150 ; DIRECT ARA512 KISMO")
+  check_eq(ex("ARA512 you are rejoining your track at KISMO"), "DIRECT ARA512 KISMO")
+  check_eq(ex("ARA512 reduce speed 250 knots, you are number two"), "SPD ARA512 250")
+  check_eq(ex("ARA512 you're number three behind the ASKY, reduce speed 220 knots"), "SPD ARA512 220")
+  check_eq(ex("ARA512 maintain FL200, number one in sequence"), "ALT ARA512 FL200")
+  check_eq(ex("ARA512 turn left heading 160, traffic a Dash 8 at your two o'clock"), "HDG ARA512 160 LEFT")
+  check_eq(said(graph.translate("wind at 6.5 north 3.3 east from two two zero at 15 knots", { mode = "offline" })),
+    "WIND 6.5 3.3 220 15")
+  check_eq(said(graph.translate("a wind over 12N 8.5E, from 050 degrees, 20 knots", { mode = "offline" })),
+    "WIND 12 8.5 50 20")
+  check_eq(ex("List the route for Arik 512"), "LISTRTE ARA512")
+  check_eq(ex("delete ASKY 602"), "DEL SKK602")
+  check_eq(ex("what's the speed of Cote d'Ivoire 701"), "POS VRE701")
+  check_eq(ex("Approach, Blue Marlin four zero one, climb flight level one six zero"), "ALT AFW401 FL160")
+  if #af:airports_named("murtala muhammed") == 1 then
+    check_eq(ex("Kano, Arik five one two, climb flight level two four zero"), "ALT ARA512 FL240")
+    check_eq(ex("Lome: ASKY 602 descend FL180"), "ALT SKK602 FL180")
+    check_eq(ex("ARA512 new destination Lagos"), "DEST ARA512 DNMM")
+    check_eq(ex("SKK602 new destination Abidjan"), "DEST SKK602 DIAP")
+  else
+    print("skipped: stations and cities by navdata names need navdata (SQUAWK_NAVDATA)")
+  end
+end
