@@ -2986,13 +2986,19 @@ for _, list in ipairs({ names.airlines, names.common }) do
     GLUED_AIRLINES[glued] = GLUED_AIRLINES[glued] or a[2]
   end
 end
+-- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
+-- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies.
 local function glued_telephony(text, fleet)
-  if #fleet == 0 then return text end
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
-  return (text:gsub("%f[%w](%a+)(%d%w*)%f[%W]", function(word, number)
+  return (text:gsub("()%f[%w](%a+)(%d%w*)%f[%W]", function(at, word, number)
     local icao = GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]
+    if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$") then
+      for w in text:sub(1, at - 1):lower():gmatch("%a+") do
+        if lexicon.creation_verbs[w] then id = (icao .. number):upper() end
+      end
+    end
     -- (an id typed as such stays as typed, in its case: "klm88v")
     if not id or id:upper() == (word .. number):upper() then return nil end
     return word:find("%u") and id or id:lower()
