@@ -2423,7 +2423,6 @@ end
 do
   local ns = squawk.sim.new()
   check(ns:exec("CRE SWG412 B738 42.9 -80.1 040 FL260 280"))
-  check(ns:exec("ADDWPT SWG412 ERBUS"))
   local function tr(text) return said(graph.translate(text, { sim = ns, mode = "offline" })) end
   check(not tr("SWG412 speed one zero thousand two hundred and fifty knots"):match("SPD SWG412 10250"),
     "no speed of thousands of knots")
@@ -2447,4 +2446,19 @@ do
   check_eq(tp("united nine descend and maintain flight level too one zero"), "ALT UAL9 FL210")
   check(tp("united nine descend and maintain flight level to eight zero"):match("^ASK") ~= nil,
     "FL280 or FL080 both lie below FL300: asked")
+end
+
+-- Cycle 21 (R45): an airport's ICAO code spelled letter by letter ("c y v r") is that code
+do
+  local as = squawk.sim.new()
+  check(as:exec("CRE WJA123 B38M 48.6 -122.3 300 FL200 280"))
+  local function ta(text) return said(graph.translate(text, { sim = as, mode = "offline" })) end
+  if as:airport_class("CYVR") ~= "" then
+    check_eq(ta("give westjet one twenty three destination c y v r"), "DEST WJA123 CYVR")
+    check_eq(ta("westjet one twenty three origin k s e a"), "ORIG WJA123 KSEA")
+    check(ta("westjet one twenty three destination c y v q r"):match("^DEST WJA123 CYVR") == nil,
+      "five letters spell no airport code")
+  else
+    print("skipped: spelled airport codes need navdata (SQUAWK_NAVDATA)")
+  end
 end
