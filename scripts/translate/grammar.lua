@@ -3005,13 +3005,19 @@ for _, list in ipairs({ names.airlines, names.common }) do
     GLUED_AIRLINES[glued] = GLUED_AIRLINES[glued] or a[2]
   end
 end
+-- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
+-- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies.
 local function glued_telephony(text, fleet)
-  if #fleet == 0 then return text end
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
-  return (text:gsub("%f[%w](%a+)(%d%w*)%f[%W]", function(word, number)
+  return (text:gsub("()%f[%w](%a+)(%d%w*)%f[%W]", function(at, word, number)
     local icao = GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]
+    if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$") then
+      for w in text:sub(1, at - 1):lower():gmatch("%a+") do
+        if lexicon.creation_verbs[w] then id = (icao .. number):upper() end
+      end
+    end
     -- (an id typed as such stays as typed, in its case: "klm88v")
     if not id or id:upper() == (word .. number):upper() then return nil end
     return word:find("%u") and id or id:lower()
@@ -3108,6 +3114,27 @@ end
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, drct = true, direct = true,
   after = true, before = true, via = true, over = true, cross = true, at = true }
 local TYPED_PLACE_NM = 250
+-- "destination c y v r", "origin boston k b o s": four single letters spelled in a row (none before or after)
+-- that join into an airport's ICAO code the navdata holds (world.airport_class), and no aircraft's id, are
+-- that code
+local function spelled_airports(text, world)
+  if not world.airport_class then return text end
+  local ids = {}
+  for _, a in ipairs(world.aircraft) do ids[(a.id or ""):upper()] = true end
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  return tokens.rewrite(text, toks, function(i)
+    if (toks[i - 1] and toks[i - 1]:match("^%a$")) or not toks[i]:match("^%l$") then return nil end
+    for k = i + 1, i + 3 do
+      if not (toks[k] and toks[k]:match("^%l$")) then return nil end
+    end
+    local last = toks[i + 4] and toks[i + 4]:match("^(%l)%p+$")
+    if last or (toks[i + 4] and toks[i + 4]:match("^%a$")) then return nil end
+    local code = table.concat(toks, "", i, i + 3):upper()
+    if ids[code] or (world.airport_class(code) or "") == "" then return nil end
+    return code, i + 4
+  end)
+end
 local function typed_places(text, world)
   if text:find("%u") or not world.place_known then return text end
   local ids = {}
@@ -3172,7 +3199,7 @@ function M.translate(text, world)
     return { commands = {}, ask = string.format("'%s' is no position: minutes run from 0 to 59. Which latitude "
       .. "and longitude do you mean?", dm) }
   end
-  text = typed_places(written_forms(text), world)
+  text = spelled_airports(typed_places(written_forms(text), world), world)
   -- type names with their digits said as words, where traffic is created (random traffic too)
   if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
       or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]mcre") or text:lower():find("%f[%a]random") then

@@ -173,11 +173,15 @@ return function(H, f, wrap, compass)
         and self:word(q.b - 1, "@two_heard") and self:word(q.b - 2, "level fl") then
       local two, bare, cur = (200 + q.value) * 100, q.value * 100, now and now.alt_ft
       local function fits(x) return cur ~= nil and ((dir > 0 and x > cur + 50) or (dir < 0 and x < cur - 50)) end
-      if fits(two) == fits(bare) then
+      -- (no transition altitude lies below 3000 ft: "flight level too one zero" is never FL010)
+      if bare < 3000 then
+        ft, fl = two, true
+      elseif fits(two) == fits(bare) then
         return self:need(string.format("Which flight level for %s: %s or %s? I heard 'flight level %s %s'.", ids[1],
           f.alt(two, true), f.alt(bare, true), self.t[q.b - 1].raw, self:raw(q.b, q.e)))
+      else
+        ft, fl = fits(two) and two or bare, true
       end
-      ft, fl = fits(two) and two or bare, true
     end
     if q.kind == "plain" and not q.number.typed and not q.number.thousand then
       local d = q.number.digits  -- a stutter: "one four fourteen" -> 14 (thousand)

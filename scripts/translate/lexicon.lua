@@ -575,6 +575,9 @@ return {
   -- read is exactly one aircraft's (grammar.lua homophone_ids)
   digit_homophones = { to = "two", too = "two", ["for"] = "four", fore = "four", won = "one", ate = "eight",
     oh = "zero" },
+  -- verbs that open a creation ("create", "make a cactus 1496 ..."): an airline's telephony run into its
+  -- number after one is the new aircraft's id (grammar.lua glued_telephony)
+  creation_verbs = { create = true, creat = true, cre = true, spawn = true, generate = true, make = true },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits

@@ -609,7 +609,7 @@ do
   check_eq(eut("klm six one mike turn right heading to eight zero"), "HDG KLM61M 280 RIGHT")
   check_eq(eut("air france two eight climb flight level too six zero"), "ALT AFR28 FL260")
   check_eq(eut("air france two eight descend flight level to five zero"), "ALT AFR28 FL50")
-  eu_asks("air france two eight descend flight level to one zero", "FL210 or FL10")
+  check_eq(eut("air france two eight descend flight level to one zero"), "ALT AFR28 FL210")  -- (no FL010)
   eu_asks("air france two eight maintain flight level to niner zero", "FL290 or FL90")
   -- digits the recogniser wrote apart after "flight level" or "heading" are one value
   check_eq(eut("air france two eight descend flight level 1 70"), "ALT AFR28 FL170")
@@ -2485,5 +2485,50 @@ do
     check_eq(ex("SKK602 new destination Abidjan"), "DEST SKK602 DIAP")
   else
     print("skipped: stations and cities by navdata names need navdata (SQUAWK_NAVDATA)")
+  end
+end
+
+-- Cycle 21 (R45): a speed said after a level's "thousand" is a value of its own; homophones inside a
+-- thousands; an airline's telephony run into its number in a creation is the ICAO code and number
+do
+  local ns = squawk.sim.new()
+  check(ns:exec("CRE SWG412 B738 42.9 -80.1 040 FL260 280"))
+  local function tr(text) return said(graph.translate(text, { sim = ns, mode = "offline" })) end
+  check(not tr("SWG412 speed one zero thousand two hundred and fifty knots"):match("SPD SWG412 10250"),
+    "no speed of thousands of knots")
+  check_eq(tr("sunwing four twelve descend and maintain one to thousand"), "ALT SWG412 12000")
+  check_eq(tr("sunwing four twelve descend and maintain won for thousand"), "ALT SWG412 14000")
+  check_eq(tr("sunwing four twelve descend to four thousand"), "ALT SWG412 4000")
+  check_eq(tr("sunwing four twelve reduce speed to too fifty"), "SPD SWG412 250")
+  check_eq(tr("create a new aircraft delta1022 b739 at 41.3 north 71.6 west heading 250 flight level 200 at 280 knots"),
+    "CRE DAL1022 B739 41.3 -71.6 250 FL200 280")
+  check_eq(tr("make united77 a320 at 41.3 north 71.6 west heading 090 flight level 240 at 280 knots"),
+    "CRE UAL77 A320 41.3 -71.6 90 FL240 280")
+end
+
+-- Cycle 21 (R45): "to" before a latitude or longitude is the preposition when "two" would pass the pole or
+-- the antimeridian; "flight level too one zero" is FL210, no flight level lying below 3000 ft
+do
+  local ps = squawk.sim.new()
+  check(ps:exec("CRE UAL9 B738 40.5 -74.0 090 FL300 280"))
+  local function tp(text) return said(graph.translate(text, { sim = ps, mode = "offline" })) end
+  check_eq(tp("move united nine to four zero point eight north seven four point two west"), "MOVE UAL9 40.8 -74.2")
+  check_eq(tp("united nine descend and maintain flight level too one zero"), "ALT UAL9 FL210")
+  check(tp("united nine descend and maintain flight level to eight zero"):match("^ASK") ~= nil,
+    "FL280 or FL080 both lie below FL300: asked")
+end
+
+-- Cycle 21 (R45): an airport's ICAO code spelled letter by letter ("c y v r") is that code
+do
+  local as = squawk.sim.new()
+  check(as:exec("CRE WJA123 B38M 48.6 -122.3 300 FL200 280"))
+  local function ta(text) return said(graph.translate(text, { sim = as, mode = "offline" })) end
+  if as:airport_class("CYVR") ~= "" then
+    check_eq(ta("give westjet one twenty three destination c y v r"), "DEST WJA123 CYVR")
+    check_eq(ta("westjet one twenty three origin k s e a"), "ORIG WJA123 KSEA")
+    check(ta("westjet one twenty three destination c y v q r"):match("^DEST WJA123 CYVR") == nil,
+      "five letters spell no airport code")
+  else
+    print("skipped: spelled airport codes need navdata (SQUAWK_NAVDATA)")
   end
 end

@@ -189,6 +189,25 @@ TEST_CASE("digit homophones between digits are digits") {
   CHECK(read("one nine-year zero knots") == "one nine zero knots");
   CHECK(read("six D four") == "six d four");                          // a written capital stays (a callsign letter)
   CHECK(read("runway two a") == "runway two a");                       // not between digits
+  // thousands said as two words, one a homophone; a preposition first stays
+  CHECK(read("maintain one to thousand") == "maintain one two thousand");
+  CHECK(read("descend to won too thousand") == "descend to one two thousand");
+  CHECK(read("climb won for thousand") == "climb one four thousand");
+  CHECK(read("descend to four thousand") == "descend to four thousand");
+  CHECK(read("climb for two thousand") == "climb for two thousand");
+  CHECK(read("reduce speed to too fifty") == "reduce speed to two fifty");
+  CHECK(read("it is too late") == "it is too late");
+}
+
+TEST_CASE("a speed said after thousand is a value of its own") {
+  auto t = lex("one zero thousand two hundred and fifty knots");
+  auto n = read_number(t, 0);
+  REQUIRE(n.has_value());
+  CHECK(n->value == 10000);
+  auto speed = read_number(t, n->end);
+  REQUIRE(speed.has_value());
+  CHECK(speed->value == 250);
+  CHECK(num("four thousand two hundred and fifty feet").value == 4250);
 }
 
 TEST_CASE("hyphen-joined digit groups are one number; aircraft models stay names") {
