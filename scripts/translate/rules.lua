@@ -211,6 +211,8 @@ return function(intent, rule, words)
     return false
   end }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "go higher to 36000", "take it higher to FL360": a level after "higher ... to" ("lower" is read below)
+  rule { "higher", "alt", next = "to", not_near = { 3, "speed knots kts" } }
   -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level
   rule { "go", "alt", next = "to", when = function(g, i)
     local q = g:quantities(i + 2, i + 3)[1]
