@@ -687,7 +687,7 @@ return function(intent, rule, words)
     for k = 1, i - 1 do if g:intent_at(k) == intent then return true end end
     return false
   end
-  rule { "going headed bound", "dest", next = "to for", when = function(g, i)
+  rule { "going goes headed heads bound", "dest", next = "to for", when = function(g, i)
     return not g:intent_at(i + 2) and not earlier(g, i, "mcre") and (earlier(g, i, "create") or airport_at(g, i + 2))
   end }
   rule { "land landing", "dest", when = function(g, i)

@@ -2431,4 +2431,10 @@ do
     "a level after an unread direction word is asked about, not dropped")
   check(hi("SWR12 higher please 36000 and turn right 30 degrees"):match("^ASK.*'36000'") ~= nil,
     "a level after an unread direction word is asked about, not dropped")
+  -- "goes to"/"heads to" an airport, said as a fact, is the destination; a level after it is no airport
+  if #hs:airports_named("zurich") > 0 then
+    check_eq(hi("SWR12 goes to EDDF"), "DEST SWR12 EDDF")
+    check_eq(hi("SWR12 heads to LSZH"), "DEST SWR12 LSZH")
+  end
+  check_eq(hi("SWR12 goes to FL300"), "ALT SWR12 FL300")
 end
