@@ -2437,4 +2437,8 @@ do
     check_eq(hi("SWR12 heads to LSZH"), "DEST SWR12 LSZH")
   end
   check_eq(hi("SWR12 goes to FL300"), "ALT SWR12 FL300")
+  -- "follow your route (again)" is the route's lateral navigation back on
+  check(hs:exec("ADDWPT SWR12 47.6 9.0"))
+  check_eq(hi("SWR12 follow your route again"), "LNAV SWR12 ON")
+  check_eq(hi("please have SWR12 follow the route"), "LNAV SWR12 ON")
 end
