@@ -891,7 +891,8 @@ return function(intent, rule, words)
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"
-  rule { "follow", "lnav", next = "your its the", near = { 3, "route" } }  -- "follow your route again"
+  rule { "follow", "lnav", next = "your its the", near = { 3, "route" },  -- "follow your route again"
+         not_near = { 6, "vertically vertical vnav profile altitude altitudes level levels" } }
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   rule { "run", "dtmult", near = { 4, "times x" } }
