@@ -2009,7 +2009,11 @@ function G:uncarried()
   local corrected = 0
   for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
   local first = 1
-  while first <= #self.t and not self:intent_at(first) do first = first + 1 end
+  -- (a word of direction or motion, "go higher to 36000" unread, opens the instructions as a verb does)
+  while first <= #self.t and not self:intent_at(first) and not (self.t[first].kind == "word"
+      and not self.u:used(first) and self:word(first, "@up @down go")) do
+    first = first + 1
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in

@@ -211,6 +211,8 @@ return function(intent, rule, words)
     return false
   end }
   rule { "up down", "alt", prev = { 1, "go come" }, not_near = { 2, "speed knots" } }
+  -- "go higher to 36000", "take it higher to FL360": a level after "higher ... to" ("lower" is read below)
+  rule { "higher", "alt", next = "to", not_near = { 3, "speed knots kts" } }
   -- "N123AB go to 3500": a bare number of a thousand or more is no heading or speed, but a level
   rule { "go", "alt", next = "to", when = function(g, i)
     local q = g:quantities(i + 2, i + 3)[1]
@@ -692,7 +694,7 @@ return function(intent, rule, words)
     for k = 1, i - 1 do if g:intent_at(k) == intent then return true end end
     return false
   end
-  rule { "going headed bound", "dest", next = "to for", when = function(g, i)
+  rule { "going goes headed heads bound", "dest", next = "to for", when = function(g, i)
     return not g:intent_at(i + 2) and not earlier(g, i, "mcre") and (earlier(g, i, "create") or airport_at(g, i + 2))
   end }
   rule { "land landing", "dest", when = function(g, i)
@@ -908,6 +910,8 @@ return function(intent, rule, words)
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"
+  rule { "follow", "lnav", next = "your its the", near = { 3, "route" },  -- "follow your route again"
+         not_near = { 6, "vertically vertical vnav profile altitude altitudes level levels" } }
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   rule { "run", "dtmult", near = { 4, "times x" } }

@@ -2532,3 +2532,28 @@ do
     print("skipped: spelled airport codes need navdata (SQUAWK_NAVDATA)")
   end
 end
+
+-- Cycle 21 (R46): "go higher to N" is a level; a value said after a word of direction or motion is never
+-- dropped in silence when another instruction is read
+do
+  local hs = squawk.sim.new()
+  check(hs:exec("CRE SWR12 A320 47.55 8.30 90 FL240 280"))
+  local function hi(text) return said(graph.translate(text, { sim = hs, mode = "offline" })) end
+  check_eq(hi("SWR12 go higher to 36000 and turn right 30 degrees"), "ALT SWR12 36000 ; HDG SWR12 120 RIGHT")
+  check_eq(hi("take SWR12 higher to FL360"), "ALT SWR12 FL360")
+  check_eq(hi("SWR12 go lower to 8000 and turn left 20 degrees"), "ALT SWR12 8000 ; HDG SWR12 70 LEFT")
+  check(hi("SWR12 go higher 36000 and turn right 30 degrees"):match("^ASK.*'36000'") ~= nil,
+    "a level after an unread direction word is asked about, not dropped")
+  check(hi("SWR12 higher please 36000 and turn right 30 degrees"):match("^ASK.*'36000'") ~= nil,
+    "a level after an unread direction word is asked about, not dropped")
+  -- "goes to"/"heads to" an airport, said as a fact, is the destination; a level after it is no airport
+  if #hs:airports_named("zurich") > 0 then
+    check_eq(hi("SWR12 goes to EDDF"), "DEST SWR12 EDDF")
+    check_eq(hi("SWR12 heads to LSZH"), "DEST SWR12 LSZH")
+  end
+  check_eq(hi("SWR12 goes to FL300"), "ALT SWR12 FL300")
+  -- "follow your route (again)" is the route's lateral navigation back on
+  check(hs:exec("ADDWPT SWR12 47.6 9.0"))
+  check_eq(hi("SWR12 follow your route again"), "LNAV SWR12 ON")
+  check_eq(hi("please have SWR12 follow the route"), "LNAV SWR12 ON")
+end
