@@ -36,19 +36,22 @@ bool group_at(const std::vector<Token>& t, size_t i) {
          (digit_word(t[i].text) >= 0 || teen_word(t[i].text) >= 0 || tens_word(t[i].text) >= 0);
 }
 
-// True when the number words (and "and") from i, one speed with at most one "hundred" ("two hundred and
-// fifty"; "five hundred one hundred ten" is two values), are followed by a speed's unit.
+// True when the number words (and "and") from i, one speed with at most one "hundred" ("two hundred
+// and fifty"; "five hundred one hundred ten" is two values), are followed by a speed's unit.
 bool speed_follows(const std::vector<Token>& t, size_t i) {
   int hundreds = 0;
-  for (; i < t.size() && t[i].kind == TokKind::kWord && (is_number_word(t[i]) || t[i].text == "and"); ++i) {
+  for (;
+       i < t.size() && t[i].kind == TokKind::kWord && (is_number_word(t[i]) || t[i].text == "and");
+       ++i) {
     if (t[i].text == "thousand" || (t[i].text == "hundred" && ++hundreds > 1)) return false;
   }
   return i < t.size() && t[i].kind == TokKind::kWord &&
          (t[i].text == "knots" || t[i].text == "knot" || t[i].text == "kts" || t[i].text == "kt");
 }
 
-// True when "to" at i opens a latitude or longitude said in digits ("move UAL9 to four zero point eight
-// north"): as the digit two it would make a degree beyond the pole or the antimeridian (240.8 north).
+// True when "to" at i opens a latitude or longitude said in digits ("move UAL9 to four zero point
+// eight north"): as the digit two it would make a degree beyond the pole or the antimeridian (240.8
+// north).
 bool position_after_to(const std::vector<Token>& t, size_t i) {
   if (t[i].text != "to" && t[i].text != "too") return false;
   std::string digits;
@@ -60,7 +63,7 @@ bool position_after_to(const std::vector<Token>& t, size_t i) {
   }
   const double limit = is_word(t, j, "north") || is_word(t, j, "south") ? 90.0
                        : is_word(t, j, "east") || is_word(t, j, "west") ? 180.0
-                                                                          : 0.0;
+                                                                        : 0.0;
   return limit > 0.0 && !digits.empty() && std::strtod(("2" + digits).c_str(), nullptr) > limit &&
          std::strtod(digits.c_str(), nullptr) <= limit;
 }
@@ -124,11 +127,12 @@ void fold_digit_homophones(std::vector<Token>& t) {
     }
   }
   // Thousands said as two words of which one is heard as a homophone ("one to thousand", "won too
-  // thousand", "won for thousand": 12000, 12000, 14000): both are digits; a first "to", "too" or "for"
-  // stays a preposition ("descend to four thousand"), as does one after another digit.
+  // thousand", "won for thousand": 12000, 12000, 14000): both are digits; a first "to", "too" or
+  // "for" stays a preposition ("descend to four thousand"), as does one after another digit.
   auto heard = [&](size_t i) {
     return i < t.size() && t[i].kind == TokKind::kWord &&
-           (t[i].text == "to" || t[i].text == "too" || t[i].text == "won" || t[i].text == "for" || t[i].text == "ate");
+           (t[i].text == "to" || t[i].text == "too" || t[i].text == "won" || t[i].text == "for" ||
+            t[i].text == "ate");
   };
   auto fold = [&](size_t i) {
     for (const auto& h : kHeard)
@@ -137,17 +141,18 @@ void fold_digit_homophones(std::vector<Token>& t) {
   for (size_t i = 0; i + 2 < t.size(); ++i) {
     const std::string& w = t[i].text;
     const bool first = digit(i) || w == "won" || w == "ate";
-    if (!first || !(digit(i + 1) || heard(i + 1)) || !(heard(i) || heard(i + 1)) || !is_word(t, i + 2, "thousand") ||
+    if (!first || !(digit(i + 1) || heard(i + 1)) || !(heard(i) || heard(i + 1)) ||
+        !is_word(t, i + 2, "thousand") ||
         (i > 0 && (digit(i - 1) || heard(i - 1)) && t[i - 1].text != "to"))
       continue;
     fold(i);
     fold(i + 1);
   }
-  // "reduce speed to too fifty", "descend to too thousand": "too" straight after the preposition "to" and
-  // before a number word is the digit two
+  // "reduce speed to too fifty", "descend to too thousand": "too" straight after the preposition
+  // "to" and before a number word is the digit two
   for (size_t i = 1; i + 1 < t.size(); ++i)
-    if (t[i].kind == TokKind::kWord && t[i].text == "too" && is_word(t, i - 1, "to") && t[i + 1].kind == TokKind::kWord &&
-        is_number_word(t[i + 1]))
+    if (t[i].kind == TokKind::kWord && t[i].text == "too" && is_word(t, i - 1, "to") &&
+        t[i + 1].kind == TokKind::kWord && is_number_word(t[i + 1]))
       t[i].text = "two";
 }
 
@@ -217,8 +222,8 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
       // hundreds ("one one thousand two five zero knots", "seven thousand two twenty
       // knots": 11000 then 250, 7000 then 220)
       if (n.has_thousand && cur.empty() && d >= 0 && group_at(t, j + 1)) break;
-      // nor are words said after "thousand" that end in a speed's unit ("one zero thousand two hundred and
-      // fifty knots": 10000 then 250; no speed runs to thousands of knots)
+      // nor are words said after "thousand" that end in a speed's unit ("one zero thousand two
+      // hundred and fifty knots": 10000 then 250; no speed runs to thousands of knots)
       if (n.has_thousand && cur.empty() && speed_follows(t, j)) break;
       int v = d >= 0 ? d : teen >= 0 ? teen : tens;
       if (tens >= 0 && digit_at(t, j + 1) > 0) {
@@ -243,9 +248,12 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
       n.has_thousand = true;
       ++j;
     } else if (w == "and" && (n.has_hundred || n.has_thousand) && group_at(t, j + 1)) {
-      // "one zero thousand and niner thousand": a second thousands after "and" is a value of its own
+      // "one zero thousand and niner thousand": a second thousands after "and" is a value of its
+      // own
       size_t k = j + 1;
-      while (k < t.size() && t[k].kind == TokKind::kWord && is_number_word(t[k]) && t[k].text != "thousand") ++k;
+      while (k < t.size() && t[k].kind == TokKind::kWord && is_number_word(t[k]) &&
+             t[k].text != "thousand")
+        ++k;
       if (n.has_thousand && is_word(t, k, "thousand")) break;
       ++j;
     } else if ((w == "ah" || w == "uh" || w == "um" || w == "er") && group_at(t, j + 1)) {

@@ -108,8 +108,8 @@ Suffix read_suffix(const std::vector<Token>& t, size_t j, const std::vector<bool
           (is_number_word(t[j + 1]) ||
            std::any_of(std::begin(kUnits), std::end(kUnits),
                        [&](const char* u) { return is_word(t[j + 1]) && t[j + 1].text == u; }));
-      if (k.text == "hundred" && s.groups.size() == 1 && s.groups[0].size() <= 2 && s.groups[0][0] != '0' &&
-          !value_after) {
+      if (k.text == "hundred" && s.groups.size() == 1 && s.groups[0].size() <= 2 &&
+          s.groups[0][0] != '0' && !value_after) {
         s.groups[0] += "00";
         s.ends[0] = ++j;
         break;
@@ -465,8 +465,10 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
     while (i < t.size() && i - words_begin < 4 && is_word(t[i]) && !used[i] && !is_number_word(t[i]) &&
            names.phonetic_letter(t[i].text) == 0) {
       keyword = keyword || names.vocabulary().is_keyword(t[i].text);
-      // ("climb to FL300, Finnair 7": "to" after an instruction word keeps the words an instruction)
-      only_keywords = only_keywords && (names.vocabulary().is_keyword(t[i].text) || (i > words_begin && t[i].text == "to"));
+      // ("climb to FL300, Finnair 7": "to" after an instruction word keeps the words an
+      // instruction)
+      only_keywords = only_keywords && (names.vocabulary().is_keyword(t[i].text) ||
+                                        (i > words_begin && t[i].text == "to"));
       words += t[i].text;
       last_word = t[i].raw;
       ++i;
