@@ -255,6 +255,8 @@ return function(H, f, wrap, compass)
       -- "down 2000 feet", "up 1000 ft", "drop 4000 feet": an amount in feet straight after the adverb, or
       -- after the everyday verb "drop" (no "to"), is a change
       or (self:word(q.b - 1, "up down drop") and self:word(q.e - 1, "@feet"))
+      -- "1000 feet lower", "2000 ft up": an amount in feet straight before the comparative is a change
+      or (self:word(q.e, "higher lower up down") and self:word(q.e - 1, "@feet"))
       -- "another thousand feet", "a further 500 ft": one more step of that size
       or self:word(q.b - 1, "another further"))
     if not relative and now and not q.to and not fl and dir ~= 0 then
@@ -361,7 +363,8 @@ return function(H, f, wrap, compass)
           return self:need(string.format("%s holds %s: what speed should it fly, in knots or as a Mach number?",
                                          id, f.mach(a.sel_mach)))
         end
-        local delta = q.kind == "percent" and a.cas_kt * q.value / 100 or q.value
+        -- (the change's sign is its direction word's: "minus 20 knots" is 20 knots slower, never faster)
+        local delta = math.abs(q.kind == "percent" and a.cas_kt * q.value / 100 or q.value)
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
       else
         local kt = q.value

@@ -2557,3 +2557,16 @@ do
   check_eq(hi("SWR12 follow your route again"), "LNAV SWR12 ON")
   check_eq(hi("please have SWR12 follow the route"), "LNAV SWR12 ON")
 end
+
+-- An amount before the comparative ("1000 feet lower", "2000 ft up") is a change of level, never a cleared
+-- altitude of that many feet; "minus 20 knots" is slower (the direction word gives the sign, not the number's)
+do
+  local _, ex = scene({ "CRE EWG7YC A320 53 9 090 FL330 280", "CRE CFG1TK A320 53 8 090 FL300 300" })
+  check_eq(ex("EWG7YC 1000 feet lower please"), "ALT EWG7YC 32000")
+  check_eq(ex("EWG7YC 2000 ft down"), "ALT EWG7YC 31000")
+  check_eq(ex("EWG7YC 1000 feet higher"), "ALT EWG7YC 34000")
+  check_eq(ex("EWG7YC descend to 11000 feet"), "ALT EWG7YC 11000")
+  check_eq(ex("CFG1TK minus 20 knots"), "SPD CFG1TK 280")
+  check_eq(ex("CFG1TK speed minus 15 kts"), "SPD CFG1TK 285")
+  check_eq(ex("CFG1TK 10 knots faster"), "SPD CFG1TK 310")
+end
