@@ -42,15 +42,8 @@ for _, k in ipairs(list(opt.trace)) do traced[k] = true end
 local eps = tonumber(opt.eps or 0.01)
 local noises = opt.noise and list(opt.noise) or {0.02, 0.05, 0.1, 0.2}
 
--- Each load starts without the modules an earlier one cached (as bench/gym_paired.lua).
-local preloaded = {}
-for name in pairs(package.loaded) do preloaded[name] = true end
-local function load(path)
-  for name in pairs(package.loaded) do
-    if not preloaded[name] then package.loaded[name] = nil end
-  end
-  return squawk.gym.load(path)
-end
+local gym = require("gym_load")
+local load = gym.load
 
 local function rule_for(s)
   local r = load(rule_spec:sub(8))

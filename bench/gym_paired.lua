@@ -12,23 +12,8 @@ local usage = "usage: squawk run bench/gym_paired.lua ENV.lua POLICY_A POLICY_B 
 local env_file, policy_a, policy_b = assert(arg[1], usage), assert(arg[2], usage), assert(arg[3], usage)
 local episodes, seed, verbose = tonumber(arg[4] or 200), tonumber(arg[5] or 0), arg[6] == "v"
 
--- An environment and a rule may each require a module of the same name from
--- their own folders (envs/descent.lua, envs/policies/descent.lua): every
--- load starts without the modules an earlier one cached.
-local preloaded = {}
-for name in pairs(package.loaded) do preloaded[name] = true end
-local function load(path)
-  for name in pairs(package.loaded) do
-    if not preloaded[name] then package.loaded[name] = nil end
-  end
-  return squawk.gym.load(path)
-end
-
-local function policy_for(spec, env)
-  if spec:sub(1, 7) == "script:" then return load(spec:sub(8)) end
-  if spec:sub(1, 4) == "mlp:" then return squawk.gym.mlp(spec:sub(5), env, {seed = 0, greedy = true}) end
-  error("policy " .. spec .. ": expected script:FILE or mlp:CKPT")
-end
+local gym = require("gym_load")
+local load, policy_for = gym.load, gym.policy
 
 -- The return, steps and last info of episode `s` under `spec`.
 local function play(spec, s)

@@ -14,20 +14,7 @@ local usage = "usage: squawk run bench/gym_profile.lua ENV.lua POLICY [EPISODES 
 local env_file, spec = assert(arg[1], usage), assert(arg[2], usage)
 local episodes, seed, penalty = tonumber(arg[3] or 200), tonumber(arg[4] or 0), tonumber(arg[5] or -1)
 
-local preloaded = {}
-for name in pairs(package.loaded) do preloaded[name] = true end
-local function load(path)
-  for name in pairs(package.loaded) do
-    if not preloaded[name] then package.loaded[name] = nil end
-  end
-  return squawk.gym.load(path)
-end
-
-local function policy_for(env)
-  if spec:sub(1, 7) == "script:" then return load(spec:sub(8)) end
-  if spec:sub(1, 4) == "mlp:" then return squawk.gym.mlp(spec:sub(5), env, {seed = 0, greedy = true}) end
-  error("policy " .. spec .. ": expected script:FILE or mlp:CKPT")
-end
+local gym = require("gym_load")
 
 -- Step buckets [first, last] for where the intruder-steps fall.
 local buckets = {{1, 1}, {2, 10}, {11, 30}, {31, 60}, {61, 100}, {101, 200}}
@@ -38,8 +25,8 @@ local n_success, sum_r, sum_r2, sum_steps, sum_intr = 0, 0, 0, 0, 0
 local start_episodes, start_intr, later_only_episodes, n_steps = 0, 0, 0, 0
 
 for k = 0, episodes - 1 do
-  local env = load(env_file)
-  local policy = policy_for(env)
+  local env = gym.load(env_file)
+  local policy = gym.policy(spec, env)
   local obs, info = env:reset(seed + k)
   if policy.reset then policy:reset(seed + k) end
   local low, high = env.action.low, env.action.high

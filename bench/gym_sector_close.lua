@@ -13,21 +13,13 @@ local spec = assert(arg[1], usage)
 local episodes, seed = tonumber(arg[2] or 200), tonumber(arg[3] or 0)
 local ZONE_NM, SLOW_MS = 5, 30
 
-local preloaded = {}
-for name in pairs(package.loaded) do preloaded[name] = true end
-local function load(path)
-  for name in pairs(package.loaded) do
-    if not preloaded[name] then package.loaded[name] = nil end
-  end
-  return squawk.gym.load(path)
-end
+local gym = require("gym_load")
 
 local limits = {2, 4, 4.8, ZONE_NM}  -- [NM] upper edges of the distance bins
 local bins, slow = {0, 0, 0, 0}, 0
 for k = 0, episodes - 1 do
-  local env = load("envs/sector_cr.lua")
-  local policy = spec:sub(1, 7) == "script:" and load(spec:sub(8)) or
-                 squawk.gym.mlp(assert(spec:match("^mlp:(.+)$"), usage), env, {seed = 0, greedy = true})
+  local env = gym.load("envs/sector_cr.lua")
+  local policy = gym.policy(spec, env)
   local obs = env:reset(seed + k)
   if policy.reset then policy:reset(seed + k) end
   for _ = 1, env.max_episode_steps do
