@@ -158,14 +158,7 @@ Status imitate_rule(const std::string& teacher_file, rl::Policy& teacher, env::B
       },
       &flights));
   SQUAWK_RETURN_IF_ERROR(save(cloned_path, spec, policy, {}, nullptr));
-  if (!trainer.value_adam()) return Status::ok();
-  SQUAWK_ASSIGN_OR_RETURN(auto fit, trainer.pretrain_value(flights, ic.epochs, ic.batch, ic.seed));
-  if (!quiet)
-    std::printf(
-        "value baseline fitted to the teacher's returns (%zu steps): mean squared error %.3f -> "
-        "%.3f\n",
-        flights.rewards.size(), fit.before, fit.after);
-  return Status::ok();
+  return fit_value(trainer, flights, ic, "the teacher's", quiet);
 }
 
 }  // namespace

@@ -38,11 +38,16 @@ Status fit_value_to_policy(rl::MlpPolicy& policy, env::BatchEnv& envs,
   if (!trainer.value_adam()) return Status::ok();
   SQUAWK_ASSIGN_OR_RETURN(
       auto flights, rl::greedy_flights(policy, envs, ic.seed, static_cast<uint64_t>(ic.episodes)));
+  return fit_value(trainer, flights, ic, "the starting policy's", quiet);
+}
+
+Status fit_value(rl::Trainer& trainer, const rl::TeacherFlights& flights,
+                 const rl::ImitationConfig& ic, const char* whose, bool quiet) {
+  if (!trainer.value_adam()) return Status::ok();
   SQUAWK_ASSIGN_OR_RETURN(auto fit, trainer.pretrain_value(flights, ic.epochs, ic.batch, ic.seed));
   if (!quiet)
     std::printf(
-        "value baseline fitted to the starting policy's returns (%zu steps): mean squared error "
-        "%.3f -> %.3f\n",
+        "value baseline fitted to %s returns (%zu steps): mean squared error %.3f -> %.3f\n", whose,
         flights.rewards.size(), fit.before, fit.after);
   return Status::ok();
 }

@@ -27,8 +27,13 @@ Result<InitPolicy> init_policy(const std::string& path, const script::LuaEnvSpec
                                const rl::MlpPolicySpec& wanted);
 
 // Fits the trainer's value baseline (when it has one) to the discounted returns
-// of `policy`'s own greedy flights (ic.episodes episodes of ic.seed; ic.epochs
-// passes in batches of ic.batch), as --imitate fits it to the rule's; prints the
+// of `flights` (ic.epochs passes in batches of ic.batch, seed ic.seed); prints
+// the fit, naming whose returns they are ("the teacher's"), unless `quiet`.
+Status fit_value(rl::Trainer& trainer, const rl::TeacherFlights& flights,
+                 const rl::ImitationConfig& ic, const char* whose, bool quiet);
+
+// fit_value to the discounted returns of `policy`'s own greedy flights (ic.episodes episodes of
+// ic.seed; ic.epochs passes in batches of ic.batch), as --imitate fits it to the rule's; prints the
 // fit unless `quiet`.
 Status fit_value_to_policy(rl::MlpPolicy& policy, env::BatchEnv& envs,
                            const rl::ImitationConfig& ic, rl::Trainer& trainer, bool quiet);
