@@ -441,9 +441,14 @@ return function(H, f, compass)
       -- (a bare number beside the closest approach's word is its distance: "cpa 0", "1 mile cpa")
       local beside = self:word(q.b - 1, "@closest_approach distance") or self:word(q.e, "@closest_approach")
       -- ("dpsi 180", "conflict angle 45": a bare number after CRECONFS's argument name or "angle")
-      if (q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at"))
-          or (q.kind == "plain" and self:word(q.b - 1, "dpsi angle"))) and not dpsi then
+      local angle = q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at"))
+        or (q.kind == "plain" and self:word(q.b - 1, "dpsi angle"))
+      if angle and not dpsi then
         dpsi = self:take(q).value
+      elseif q.value == dpsi and (angle or (q.kind == "plain"
+          and not self:word(q.b - 1, "@loss_of_separation @closest_approach"))) then
+        -- ("head-on, 180 degrees", "head-on (180)": the same angle said twice)
+        self:take(q)
       elseif (q.kind == "dist" and not cpa and near("@closest_approach"))
           or (q.kind == "plain" and not cpa and beside) then
         cpa = self:take(q).value
@@ -454,6 +459,10 @@ return function(H, f, compass)
         tlosh = self:take(q).value
       elseif q.kind == "alt" and not dh and self:word(q.e, "@above @below") then
         dh = (self:word(q.e, "@below") and -1 or 1) * self:take(q).value
+      elseif (q.kind == "plain" or q.kind == "alt") and not dh and self:word(q.b - 1, "dh") then  -- ("dh 1000")
+        dh = self:take(q).value
+      elseif (q.kind == "plain" or q.kind == "time") and dh and not tlosv and self:word(q.b - 1, "tlosv") then
+        tlosv = self:take(q).value
       end
     end
     if side and dpsi ~= 180 then
@@ -477,6 +486,12 @@ return function(H, f, compass)
     -- its speed, after the vertical part ("..., vertical loss at 300 s, 280 knots")
     local spd = dh and tlosv and first_speed(self, s)
     if spd then cmd = cmd .. " " .. f.num(self:take(spd).value) end
+    -- a value said in the description and read as none of the arguments is asked about, never dropped
+    for _, q in ipairs(self:quantities(s.b, s.e)) do
+      if not self.taken[q.b] then
+        return self:need(string.format("I have %s. What does '%s' mean?", cmd, self:raw(q.b, q.e)))
+      end
+    end
     self:emit(cmd)
     self:mark_used(s.b, s.e)  -- the description read whole ("zero miss distance", "LoS after 4 minutes")
     self.created = self.created or {}

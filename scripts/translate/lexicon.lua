@@ -615,7 +615,7 @@ return {
   metres = { "m", "metres", "meters", "metre", "meter" },
   -- words that restate a level in another unit ("9200 metres, that is flight level 301", "which is")
   restating = { "that", "thats", "is", "which", "ie", "i.e", "equals", "meaning" },
-  vertical = { "vertical", "height", "zonedh" },
+  vertical = { "vertical", "height", "zonedh", "dh" },
   zone_radius = { "radius", "zoner" },
   -- bare nouns naming what to show, after a handled instruction
   shown = { "altitude", "speed", "heading", "airspeed" },

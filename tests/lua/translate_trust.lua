@@ -2570,3 +2570,17 @@ do
   check_eq(ex("CFG1TK speed minus 15 kts"), "SPD CFG1TK 285")
   check_eq(ex("CFG1TK 10 knots faster"), "SPD CFG1TK 310")
 end
+
+-- CRECONFS's optional arguments by their names ("dh 1000", "tlosv 200") are read, and a value of the
+-- description read as no argument is asked about, never dropped; "dh" beside the protected zone is its
+-- half height
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("creconfs XY20 A320 KLM77 dpsi 90 cpa 0.5 tlos 300 dh 1000 tlosv 200"),
+    "CRECONFS XY20 A320 KLM77 90 0.5 300 1000 200")
+  check_eq(ex("creconfs XY20 A320 KLM77 dpsi 90 cpa 0.5 tlos 300 dh 1000"), "CRECONFS XY20 A320 KLM77 90 0.5 300 1000")
+  check(ex("creconfs XY20 A320 KLM77 dpsi 90 cpa 0.5 tlos 300 7777"):match("^ASK .*'7777'") ~= nil, "a stray value")
+  check_eq(ex("add a conflict for KLM77: XY21, A320, head-on (180), 1 nm CPA, 240 s to LoS"),
+    "CRECONFS XY21 A320 KLM77 180 1 240")
+  check_eq(ex("pz 5 nm, dh 1000, lookahead 300"), "ZONER 5 ; ZONEDH 1000 ; DTLOOK 300")
+end
