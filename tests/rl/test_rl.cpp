@@ -11,6 +11,7 @@
 
 #include "../env/paper_settings.h"
 #include "../finite_difference.h"
+#include "../small_gaussian.h"
 #include "core/files.h"
 #include "env/vec_env.h"
 #include "nn/categorical.h"
@@ -167,13 +168,7 @@ TEST_CASE(
 }
 
 TEST_CASE("a diagonal Gaussian samples each component from its own mean and sigma") {
-  rl::MlpPolicySpec spec;
-  spec.obs_size = 2;
-  spec.hidden = {4};
-  spec.head = "gaussian";
-  spec.action_size = 2;
-  Rng init(2);
-  auto made = rl::MlpPolicy::make(spec, init);
+  auto made = small_gaussian(2);
   REQUIRE(made);
   rl::MlpPolicy& p = **made;
   CHECK(p.params().size() == static_cast<size_t>((2 * 4 + 4) + (4 * 2 + 2) + 2));
@@ -208,7 +203,7 @@ TEST_CASE("a diagonal Gaussian samples each component from its own mean and sigm
   CHECK(std::fabs(s[1] / m) < 4 * 2.0 / std::sqrt(m));
   CHECK(std::sqrt(ss[0] / m) == doctest::Approx(0.1).epsilon(0.05));
   CHECK(std::sqrt(ss[1] / m) == doctest::Approx(2.0).epsilon(0.05));
-  rl::MlpPolicySpec wide = spec;
+  rl::MlpPolicySpec wide = p.spec();
   wide.action_size = rl::kMaxActionSize + 1;
   CHECK(wide.validate().message() == "gaussian policy action_size 5: expected 1..4");
   rl::MlpPolicySpec cat;

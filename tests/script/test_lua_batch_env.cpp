@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../small_gaussian.h"
 #include "rl/evaluator.h"
 #include "rl/imitation.h"
 #include "rl/mlp_policy.h"
@@ -51,18 +52,6 @@ rl::TrainConfig small_run() {
   tc.value_hidden = {};
   tc.eval_every = 0;
   return tc;
-}
-
-// A diagonal Gaussian policy of 2 observations and 2 actions with one hidden
-// layer of 4 (24 parameters), initialised from seed 1.
-Result<std::unique_ptr<rl::MlpPolicy>> small_gaussian() {
-  rl::MlpPolicySpec spec;
-  spec.obs_size = 2;
-  spec.hidden = {4};
-  spec.head = "gaussian";
-  spec.action_size = 2;
-  Rng init(1);
-  return rl::MlpPolicy::make(spec, init);
 }
 
 }  // namespace
@@ -333,7 +322,7 @@ TEST_CASE("observation_stats: each number's mean and deviation over the episodes
   // sign2.lua's observations do not depend on the actions: the statistics of
   // the policy's episodes are those of the same episodes played with zeros.
   auto envs = batch(repo("tests/data/gym/sign2.lua"), 3, 0);
-  auto p = small_gaussian();
+  auto p = small_gaussian(1);
   REQUIRE(p);
   auto stats = rl::observation_stats(**p, *envs, 5, 50);
   REQUIRE_MESSAGE(stats.is_ok(), stats.status().message());
@@ -492,7 +481,7 @@ TEST_CASE("imitation of a two-component rule: every component labelled, log sigm
       CHECK(log_std_after[1] < log_std_before[1] - 1.0);  // the constant component's sigma shrinks
     }
   }
-  auto p = small_gaussian();
+  auto p = small_gaussian(1);
   REQUIRE(p);
   rl::ImitationConfig too_many;
   too_many.held_tail = 1000;
