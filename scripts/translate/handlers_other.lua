@@ -1650,6 +1650,22 @@ return function(H, f, compass)
     end
     return code
   end
+  -- An airport's ICAO code typed in lower case straight after the instruction word ("orig eidw", "dest
+  -- egcc", "dest: einn"): a word of four letters, no English squawk knows, that names an airport of the
+  -- navdata (upper-case codes are names already). Marked used; nil when none.
+  local function typed_code(self, s)
+    local class = self.world.airport_class
+    local k = s.trig + 1
+    while k < s.e and (self:word(k, "to from is as") or self.t[k].kind == "punct") do k = k + 1 end
+    local t = self.t[k]
+    if not class or k >= s.e or t.kind ~= "word" or not t.raw:match("^%l%l%l%l$") or self.u:used(k)
+        or self:known_word(k) or (class(t.raw:upper()) or "") == "" then
+      return nil
+    end
+    self:mark_used(k, k + 1)
+    self:explain(k, k + 1)
+    return t.raw:upper()
+  end
   local function dest_orig(self, s, cmd, what)
     local id = self:acid(s, "get it")
     if not id then return end
@@ -1658,7 +1674,7 @@ return function(H, f, compass)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
     -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant)
-    local spelled = spelled_airport(self, s)
+    local spelled = spelled_airport(self, s) or typed_code(self, s)
     local near = spelled or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
     -- (a part of a name only near the aircraft: "Madrid" anywhere is SKMA, in Colombia)
@@ -1821,6 +1837,13 @@ return function(H, f, compass)
   function m:bare(_, spec) self:emit(spec.cmd) end
   -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
   function m:resume(s)
+    -- "back to real time" with no word that starts the clock: the clock started again (OP) or
+    -- its rate set back to 1 (DTMULT 1)? Writers mean either; asked. "real time speed" is the rate
+    if self:word(s.trig, "real") and self:word(s.trig + 2, "speed") then return self:emit("DTMULT 1") end
+    if self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
+        and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
+      return self:need("Should the simulation start running (OP), or run at real-time rate again (DTMULT 1)?")
+    end
     self:emit("OP")
     if self:find_word(s.trig + 1, s.e, "at") < s.e then self:time_mult(s) end
   end
