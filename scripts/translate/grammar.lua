@@ -668,6 +668,10 @@ local function written_forms(text)
   -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
   -- end) is quoted text, as in double quotes
   text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
+  -- "jet2 44m", "Jet 2 one two": the airline's brand name (its telephony is Channex, EXS) before a flight number
+  text = text:gsub("%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
+    if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
+  end)
   -- "dest eidw -> einn": an arrow between two places after the name of an airport setting changes it
   -- from the one to the other: the setting takes the second
   text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)

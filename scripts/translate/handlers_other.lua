@@ -1123,7 +1123,10 @@ return function(H, f, compass)
     end
     self:emit("DIRECT " .. id .. " " .. wp)
     local to = self:route_places(s.trig, s.e)[1]
-    if to and to.name:upper() == wp:upper() then self:route_goes_on(id, wp, to.e, #self.t + 1) end
+    local route = a and a.route or {}
+    local last = a ~= nil and (#route == 0 or route[#route]:upper() == wp:upper() or not (a.route and
+      self:listed(a.route, wp)))
+    if to and to.name:upper() == wp:upper() then self:route_goes_on(id, wp, to.e, #self.t + 1, last) end
     -- a level said in the same breath without its verb ("direct LIVVN ... six thousand")
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.b > s.trig and q.kind == "alt" and q.number.thousand then
@@ -1163,21 +1166,36 @@ return function(H, f, compass)
 
   -- "route direct TWEED then GIRVA", "after ABENI add ELTOK, then ROKNI": places said after `from` with
   -- "then" (or a comma or "and") before each, that are the waypoints following `from` in id's route in
-  -- that order, say how the route goes on; they are explained, no instruction of their own.
-  function m:route_goes_on(id, from, b, e)
+  -- that order, say how the route goes on; they are explained, no instruction of their own. With `last`
+  -- (`from` ends the route once this request has run: "dct LANAK then TWEED"), places the route does not
+  -- hold, said after it, are added after it in that order (ADDWPT).
+  function m:route_goes_on(id, from, b, e, last)
     local route = (self:state(id) or {}).route or {}
     local at
     for k, w in ipairs(route) do
       if w:upper() == from:upper() then at = k end
     end
-    if not at then return end
+    if not at and not last then return end
+    local ended = last
     for _, r in ipairs(self:route_places(b, e)) do
       local sep = r.b - 1
       if not (self:word(sep, "then and") or (self.t[sep] or {}).text == ",") then return end
-      if not route[at + 1] or route[at + 1]:upper() ~= r.name:upper() then return end
+      if ended and not self:listed(route, r.name) then
+        self:emit("ADDWPT " .. id .. " " .. r.name:upper())
+      elseif not at or not route[at + 1] or route[at + 1]:upper() ~= r.name:upper() then
+        return
+      else
+        at = at + 1
+      end
       self:explain(sep, r.e)
-      at = at + 1
     end
+  end
+  -- True when list (of names) holds name, in any case
+  function m:listed(list, name)
+    for _, w in ipairs(list) do
+      if w:upper() == name:upper() then return true end
+    end
+    return false
   end
 
   -- the instructions whose verb ends a waypoint's constraints ("add X, then climb FL300")

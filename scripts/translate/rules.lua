@@ -806,6 +806,13 @@ return function(intent, rule, words)
   end }
   rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
   rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
+  -- "a320 EIN77 fl 200 pos NIMAT hdg 100": "pos" before a place, in a request that names an aircraft type,
+  -- is where a new aircraft is placed (the creation's position), no request to show one
+  rule { "pos", false, when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx ~= nil and (g:has_ref(i + 1, i + 2, "waypoint") or nx.kind == "number")
+      and g:has_ref(1, #g.t + 1, "type")
+  end }
   rule { "details status info information state pos", "pos" }
   -- "show me Wideroe five one two": an aircraft alone after the verb is shown where it is
   -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own)

@@ -2679,3 +2679,18 @@ do
     check(ex("ein6tr dest qqqz"):match("^ASK ") ~= nil, ex("ein6tr dest qqqz"))
   end
 end
+
+-- "Jet2" (Channex, EXS) before a flight number is that airline ("jet2 44m", "Jet 2 four four mike"); an aircraft
+-- whose id is JET2 keeps it. "pos NAME" in a line that names an aircraft type is where a new aircraft is placed.
+-- "dct LANAK then TWEED", LANAK ending the route: the places after it are added after it; one the route already
+-- holds earlier is asked about
+do
+  local _, ex = scene({ "CRE EXS31K B738 54 -3 250 FL200 280", "CRE JET2 A320 54 -4 100 FL100 250",
+      "DEFWPT KOBAL 54.2 -2.8", "DEFWPT TULIX 54.4 -2.5", "ADDWPT EXS31K KOBAL" })
+  check_eq(ex("jet2 31k left 10"), "HDG EXS31K 240 LEFT")
+  check_eq(ex("Jet 2 three one kilo climb FL240"), "ALT EXS31K FL240")
+  check_eq(ex("jet2 climb fl300"), "ALT JET2 FL300")
+  check_eq(ex("a321 EXS9 fl 150 pos KOBAL hdg 090 250kt"), "CRE EXS9 A321 KOBAL 90 FL150 250")
+  check_eq(ex("exs31k dct KOBAL then TULIX"), "DIRECT EXS31K KOBAL ; ADDWPT EXS31K TULIX")
+  check(ex("exs31k dct TULIX then KOBAL"):match("^ASK .*'KOBAL'") ~= nil, ex("exs31k dct TULIX then KOBAL"))
+end
