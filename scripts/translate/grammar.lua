@@ -3184,7 +3184,7 @@ end
 -- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
 -- does not know that is such a fix near the traffic, or one on an aircraft's route.
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
-  after = true, before = true, via = true, over = true, cross = true, at = true }
+  after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
 local TYPED_PLACE_NM = 250
 -- "destination c y v r", "origin boston k b o s": four single letters spelled in a row (none before or after)
 -- that join into an airport's ICAO code the navdata holds (world.airport_class), and no aircraft's id, are

@@ -879,7 +879,7 @@ return function(intent, rule, words)
   -- aircraft named); "say heading 270", a value after the state word, is that instruction's value
   rule { "say", false, when = function(g, i)
     for k = i + 1, math.min(i + 3, #g.t) do
-      if g:word(k, "altitude speed heading level airspeed mach alt lvl hdg spd") then
+      if g:word(k, "altitude speed heading level airspeed mach alt lvl hdg spd fl") then
         local v = g.t[g:word(k + 1, "of to") and k + 2 or k + 1]
         return v ~= nil and (v.kind == "number" or v.number_word == true) and not g.u:used(k + 1)
       end
@@ -892,7 +892,7 @@ return function(intent, rule, words)
   rule { "resume", false, when = function(g, i)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
-  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos" } }
+  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
   rule { "carry", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on"
   -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another

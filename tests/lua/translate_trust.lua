@@ -2625,6 +2625,8 @@ do
   check_eq(ex("log22 where now"), "POS LOG22")
   check_eq(ex("sht4kd say alt 5000"), "ALT SHT4KD 5000")
   check(ex("log22 where to"):match("^ASK ") ~= nil, ex("log22 where to"))
+  check_eq(ex("log22 say fl"), "POS LOG22")
+  check_eq(ex("log22 say fl 150"), "ALT LOG22 FL150")
 end
 
 -- Typed short forms and slips of the lab's keyboard: "lef" a turn side, "dtc" a direct-to, "prot zone" the
@@ -2692,5 +2694,7 @@ do
   check_eq(ex("jet2 climb fl300"), "ALT JET2 FL300")
   check_eq(ex("a321 EXS9 fl 150 pos KOBAL hdg 090 250kt"), "CRE EXS9 A321 KOBAL 90 FL150 250")
   check_eq(ex("exs31k dct KOBAL then TULIX"), "DIRECT EXS31K KOBAL ; ADDWPT EXS31K TULIX")
+  check_eq(ex("exs31k dct kobal then tulix"), "DIRECT EXS31K KOBAL ; ADDWPT EXS31K TULIX")
+  check_eq(ex("exs31k dct kobal then climb fl220"), "DIRECT EXS31K KOBAL ; ALT EXS31K FL220")
   check(ex("exs31k dct TULIX then KOBAL"):match("^ASK .*'KOBAL'") ~= nil, ex("exs31k dct TULIX then KOBAL"))
 end
