@@ -668,6 +668,16 @@ local function written_forms(text)
   -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
   -- end) is quoted text, as in double quotes
   text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
+  -- "jet2 44m", "Jet 2 one two": the airline's brand name (its telephony is Channex, EXS) before a flight number
+  text = text:gsub("%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
+    if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
+  end)
+  -- "dest eidw -> einn": an arrow between two places after the name of an airport setting changes it
+  -- from the one to the other: the setting takes the second
+  text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
+    if not lexicon.arrow_settings[setting:lower()] then return nil end
+    return setting .. space .. to
+  end)
   -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
   -- after a setting's name, is no place)
   text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
@@ -1297,6 +1307,21 @@ function G:segments(b, e)
       segs[#segs + 1] = { intent = tr.intent, b = last and start or b, trig = tr.pos, e = e, ["then"] = thn }
     end
   end
+  -- "dct PTH, once there fl 80": a value said after "once/when there" closing a direct-to is an
+  -- instruction of its own that waits for the waypoint (G:parse)
+  for k = #segs, 1, -1 do
+    local sg = segs[k]
+    if sg.intent == "direct" then
+      local c = self:find_word(sg.trig + 1, sg.e, "@condition")
+      local v = c < sg.e and self:word(c + 1, "there") and self:skip_fillers(c + 2)
+      if v and v < sg.e and (self:quantities(v, sg.e)[1] or {}).b ~= nil then
+        local cut = c
+        while cut - 1 > sg.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "and")) do cut = cut - 1 end
+        table.insert(segs, k + 1, { intent = "infer", b = cut, trig = v, e = sg.e })
+        sg.e = cut
+      end
+    end
+  end
   -- "FL 340, M.79, heading 255 - create FIN6PM, A359, ...", "Heading 015, 6,000 feet, 200 knots, at 55 degrees
   -- 40 north 12 degrees 50 east: create SAS88Y, E195": values said before the creation, for no aircraft
   -- named, are the new aircraft's
@@ -1612,6 +1637,14 @@ function G:parse(b, e)
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut
       if (s.intent == "spd" or s.intent == "hdg") and not at then held, cut = self:trailing_level(s) end
+      -- "descend FL70 and reduce 180 kts when level": the instruction before's value, reached
+      local reached_cut = not held and not at and before and self:trailing_reached(s)
+      local s0 = s
+      if reached_cut then
+        self:mark_used(reached_cut, s.e)
+        for i = reached_cut, s.e - 1 do self.noted[i] = true end
+        s = { b = s.b, e = reached_cut, trig = s.trig, intent = s.intent }
+      end
       local ids = held and self:acids(s) or {}
       if #ids == 1 then
         at = "ATALT " .. ids[1] .. " " .. handlers.format.alt(held.value, held.fl)
@@ -1634,10 +1667,27 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig) then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif (self:then_after(segs, k) or self:when_reached(s)) and before and #self.out == n_before + 1
+      elseif (self:then_after(segs, k) or self:when_reached(s) or reached_cut) and before and #self.out == n_before + 1
           and spec and spec.value
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
+      elseif self:when_reached(s) and not before and #self.out == n_before + 1 and n_before > 0
+          and self.out[n_before]:match("^DIRECT ") and not self.ask then
+        -- "dct PTH, once there FL80": the constraint at the waypoint flown to (AT id WPT ALT/SPD value)
+        local id, wpt = self.out[n_before]:match("^DIRECT (%S+) (%S+)$")
+        local cmd, value = self.out[#self.out]:match("^(%u+) " .. (id or ""):gsub("%p", "%%%0") .. " (%S+)$")
+        if id and (cmd == "ALT" or cmd == "SPD") then
+          self.out[#self.out] = "AT " .. id .. " " .. wpt .. " " .. cmd .. " " .. value
+          local c = self:find_word(s.b, s.trig, "@condition")
+          for i = c, s.trig - 1 do self.noted[i] = true end
+        else
+          self:need("I have " .. table.concat(self.out, " ; ") .. ". squawk can tie only a level or a speed to "
+            .. (wpt or "the waypoint") .. ": what should happen there?")
+        end
+      elseif reached_cut and not self.ask then
+        -- (a condition it cannot carry is asked about, never dropped)
+        self:need("I have " .. table.concat(self.out, " ; ") .. ". When should the last instruction start: '"
+          .. self:raw(reached_cut, s0.e) .. "'?")
       end
     end
   end
@@ -1707,7 +1757,25 @@ end
 -- to FL150, and when it gets there, speed it up to 290": ATALT ... FL150 SPD ...).
 function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
-  return c < s.trig and self:word_in(c + 1, s.trig, "there level") and #self:quantities(c, s.trig) == 0
+  return c < s.trig and self:word_in(c + 1, s.trig, "there level lvl") and #self:quantities(c, s.trig) == 0
+end
+
+-- The same condition said after the instruction it holds, closing its segment ("reduce 180 kts when
+-- level", "speed 250 once there", "when it's level please"): where its words begin, or nil. Only "it",
+-- "is", "gets", "reaches" and fillers may join "when"/"once" to "level", "lvl" or "there".
+function G:trailing_reached(s)
+  local c = self:find_word(s.trig + 1, s.e, "when once")
+  if c >= s.e then return nil end
+  local named = false
+  for i = c + 1, s.e - 1 do
+    if self:word(i, "there level lvl") then named = true
+    elseif not (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "it it's its is gets reaches please")) then
+      return nil
+    end
+  end
+  if not named then return nil end
+  while c - 1 > s.trig and self.t[c - 1].kind == "punct" do c = c - 1 end
+  return c
 end
 
 -- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
@@ -3115,8 +3183,8 @@ end
 -- syllables ("direct toe bix", "as bin", "u no ko") is joined when the first word alone is no such place and
 -- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
 -- does not know that is such a fix near the traffic, or one on an aircraft's route.
-local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, drct = true, direct = true,
-  after = true, before = true, via = true, over = true, cross = true, at = true }
+local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
+  after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
 local TYPED_PLACE_NM = 250
 -- "destination c y v r", "origin boston k b o s": four single letters spelled in a row (none before or after)
 -- that join into an airport's ICAO code the navdata holds (world.airport_class), and no aircraft's id, are
@@ -3192,6 +3260,10 @@ function M.translate(text, world)
   text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
   text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+  -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between
+  if text:lower():find("wind", 1, true) then
+    text = text:gsub("%f[%w%.](%d%d%d)/(%d%d?%d?)%s*[Kk]?[Tt]?[Ss]?%f[^%w%.]", "from %1 at %2 knots")
+  end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)

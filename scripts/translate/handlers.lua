@@ -927,7 +927,7 @@ end
 
 -- "in 2 min turn KL204 left heading 180", "pause it at 30 minutes", "when the clock hits 45 minutes
 -- pause the sim": the instruction waits for a time, "DELAY s" after "in"/"after" (from now) or
--- "SCHEDULE hh:mm:ss" after "at" or the clock reaching it (simulation time); nil when no time is said
+-- "SCHEDULE hh:mm:ss" after "at", "schedule" or the clock reaching it (simulation time); nil when no time is said
 -- or the instruction takes its time as a value (FF, DT, DTLOOK, DTMULT; CRECONFS's time to conflict).
 local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
 function m:at_time(s)
@@ -937,7 +937,7 @@ function m:at_time(s)
     while w > 0 and self.t[w].filler do w = w - 1 end
     if q.kind == "time" and not self.taken[q.b] then
       local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
-      if not self:word(w, "in after at") and not clock then return nil end
+      if not self:word(w, "in after at schedule") and not clock then return nil end
       -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
       -- 2 minutes EZY45 descend": left uncarried, so asked about)
       if q.b > s.trig and self:word_in(s.trig, w, "and then") then return nil end
@@ -956,7 +956,7 @@ function m:at_time(s)
 end
 
 -- "when fifteen miles from TARTN descend FL80", "within 10 NM of CGT", "alt
--- 8000 at 30nm from cyyz": "ATDIST id NAME dist" [NM] or nil. A distance
+-- 8000 at 30nm from cyyz", "at 10 from GOW desc 3000": "ATDIST id NAME dist" [NM] or nil. A distance
 -- said after a place ("10 miles past X") is no such condition: its place
 -- stays uncarried and is asked about.
 function m:at_distance(s)
@@ -964,7 +964,10 @@ function m:at_distance(s)
     return nil
   end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
-    if q.kind == "dist" and not self.taken[q.b] then
+    -- ("at 10 from GOW": a bare number between "at" and "from" a place is its distance, NM)
+    local bare = q.kind == "plain" and q.value > 0 and q.value < 1000 and self:word(q.b - 1, "at")
+      and self:word(q.e, "from")
+    if (q.kind == "dist" or bare) and not self.taken[q.b] then
       local k = self:skip_fillers(q.e)
       if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
       local r = self:word(k, "from of to before") and self:refs_in(self:skip_fillers(k + 1), self:skip_fillers(k + 1) + 1, "waypoint")[1]

@@ -1123,7 +1123,10 @@ return function(H, f, compass)
     end
     self:emit("DIRECT " .. id .. " " .. wp)
     local to = self:route_places(s.trig, s.e)[1]
-    if to and to.name:upper() == wp:upper() then self:route_goes_on(id, wp, to.e, #self.t + 1) end
+    local route = a and a.route or {}
+    local last = a ~= nil and (#route == 0 or route[#route]:upper() == wp:upper() or not (a.route and
+      self:listed(a.route, wp)))
+    if to and to.name:upper() == wp:upper() then self:route_goes_on(id, wp, to.e, #self.t + 1, last) end
     -- a level said in the same breath without its verb ("direct LIVVN ... six thousand")
     for _, q in ipairs(self:quantities(s.b, s.e)) do
       if q.b > s.trig and q.kind == "alt" and q.number.thousand then
@@ -1163,21 +1166,36 @@ return function(H, f, compass)
 
   -- "route direct TWEED then GIRVA", "after ABENI add ELTOK, then ROKNI": places said after `from` with
   -- "then" (or a comma or "and") before each, that are the waypoints following `from` in id's route in
-  -- that order, say how the route goes on; they are explained, no instruction of their own.
-  function m:route_goes_on(id, from, b, e)
+  -- that order, say how the route goes on; they are explained, no instruction of their own. With `last`
+  -- (`from` ends the route once this request has run: "dct LANAK then TWEED"), places the route does not
+  -- hold, said after it, are added after it in that order (ADDWPT).
+  function m:route_goes_on(id, from, b, e, last)
     local route = (self:state(id) or {}).route or {}
     local at
     for k, w in ipairs(route) do
       if w:upper() == from:upper() then at = k end
     end
-    if not at then return end
+    if not at and not last then return end
+    local ended = last
     for _, r in ipairs(self:route_places(b, e)) do
       local sep = r.b - 1
       if not (self:word(sep, "then and") or (self.t[sep] or {}).text == ",") then return end
-      if not route[at + 1] or route[at + 1]:upper() ~= r.name:upper() then return end
+      if ended and not self:listed(route, r.name) then
+        self:emit("ADDWPT " .. id .. " " .. r.name:upper())
+      elseif not at or not route[at + 1] or route[at + 1]:upper() ~= r.name:upper() then
+        return
+      else
+        at = at + 1
+      end
       self:explain(sep, r.e)
-      at = at + 1
     end
+  end
+  -- True when list (of names) holds name, in any case
+  function m:listed(list, name)
+    for _, w in ipairs(list) do
+      if w:upper() == name:upper() then return true end
+    end
+    return false
   end
 
   -- the instructions whose verb ends a waypoint's constraints ("add X, then climb FL300")
@@ -1650,6 +1668,22 @@ return function(H, f, compass)
     end
     return code
   end
+  -- An airport's ICAO code typed in lower case straight after the instruction word ("orig eidw", "dest
+  -- egcc", "dest: einn"): a word of four letters, no English squawk knows, that names an airport of the
+  -- navdata (upper-case codes are names already). Marked used; nil when none.
+  local function typed_code(self, s)
+    local class = self.world.airport_class
+    local k = s.trig + 1
+    while k < s.e and (self:word(k, "to from is as") or self.t[k].kind == "punct") do k = k + 1 end
+    local t = self.t[k]
+    if not class or k >= s.e or t.kind ~= "word" or not t.raw:match("^%l%l%l%l$") or self.u:used(k)
+        or self:known_word(k) or (class(t.raw:upper()) or "") == "" then
+      return nil
+    end
+    self:mark_used(k, k + 1)
+    self:explain(k, k + 1)
+    return t.raw:upper()
+  end
   local function dest_orig(self, s, cmd, what)
     local id = self:acid(s, "get it")
     if not id then return end
@@ -1658,7 +1692,7 @@ return function(H, f, compass)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
     -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant)
-    local spelled = spelled_airport(self, s)
+    local spelled = spelled_airport(self, s) or typed_code(self, s)
     local near = spelled or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
     -- (a part of a name only near the aircraft: "Madrid" anywhere is SKMA, in Colombia)
@@ -1821,6 +1855,13 @@ return function(H, f, compass)
   function m:bare(_, spec) self:emit(spec.cmd) end
   -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
   function m:resume(s)
+    -- "back to real time" with no word that starts the clock: the clock started again (OP) or
+    -- its rate set back to 1 (DTMULT 1)? Writers mean either; asked. "real time speed" is the rate
+    if self:word(s.trig, "real") and self:word(s.trig + 2, "speed") then return self:emit("DTMULT 1") end
+    if self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
+        and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
+      return self:need("Should the simulation start running (OP), or run at real-time rate again (DTMULT 1)?")
+    end
     self:emit("OP")
     if self:find_word(s.trig + 1, s.e, "at") < s.e then self:time_mult(s) end
   end

@@ -403,11 +403,12 @@ return function(H, f, wrap, compass)
     end
     -- "turn right 20", "left thirty": a number of one or two digits, typed or said as a number
     -- (not digit by digit, as headings are), after a turn direction, with no "heading", is the
-    -- degrees of the turn (headings have three)
+    -- degrees of the turn (headings have three); after "turn" with no side ("turn 30") it is
+    -- asked about below: a turn of that many degrees, or a heading?
     if #rel_c == 0 and #abs_c == 1 and abs_c[1].kind == "plain"
         and ((abs_c[1].number.typed and #abs_c[1].number.digits <= 2)
              or (not abs_c[1].number.typed and not abs_c[1].number.lead_digit and abs_c[1].value < 100)) and not self:word_in(s.b, s.e, "heading hdg")
-        and self:word_in(s.b, abs_c[1].b, "@left @right") then
+        and self:word_in(s.b, abs_c[1].b, "@left @right turn") then
       rel_c[1] = { kind = "angle", value = abs_c[1].value, b = abs_c[1].b, e = abs_c[1].e, turn = 0,
                    number = abs_c[1].number }
       abs_c = {}
@@ -540,11 +541,11 @@ return function(H, f, wrap, compass)
     end
     -- the way to turn, when it was said: HDG's LEFT/RIGHT (a squawk extension)
     local way = (rel and rel.turn ~= 0 and rel.turn) or turn
-    -- "turn right 180" with "turn" and no "heading" (typed, or a number not said digit by
-    -- digit): a heading the long way round (more than half a circle) or a turn of that many
-    -- degrees? Asked. Shorthand ("rt 320") names a heading
+    -- "turn right 180", "r 360", "l 200" with no "heading" (typed, or a number not said digit
+    -- by digit): a heading the long way round (more than half a circle) or a turn of that many
+    -- degrees (a "360" an orbit)? Asked. The short way round it is the heading
     if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and now and #ids == 1
-        and (abs.number.typed or not abs.number.lead_digit) and self:word_in(s.b, s.e, "turn")
+        and (abs.number.typed or not abs.number.lead_digit)
         and not self:word_in(s.b, s.e, "heading hdg") and abs.value <= 360 then
       local long = (way * (hdg - now.hdg_deg)) % 360
       if long > 180 then

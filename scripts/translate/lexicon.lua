@@ -137,7 +137,7 @@ return {
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
         "automatically", "manual", "manually",
-        "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
+        "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac", "acft",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
         -- an aircraft described by its size ("the small Cessna", "a big Boeing")
@@ -219,14 +219,17 @@ return {
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
         "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts", },
   },
+  -- airport settings named before "A -> B" ("dest eidw -> einn"): changed from A to B
+  arrow_settings = { dest = true, destination = true, orig = true, origin = true },
   -- settings named before an arrow and their value ("alt -> FL330"): the arrow is no direct-to
   direct_arrow_not = { alt = true, altitude = true, level = true, speed = true, heading = true, mach = true,
                        vs = true, fl = true },
   -- typed shorthand: a prefix written before its value, glued or apart
   -- ("s270", "h 240", "l330", "rod 1500"), stands for these words
-  -- (a turn side typed without its vowels, "turn lft heading 200", "hdg 120 rgt", is that side)
+  -- (a turn side typed without its vowels or cut short, "turn lft heading 200", "hdg 120 rgt", "turn lef 45", is
+  -- that side)
   shorthand = { s = "speed", h = "heading", l = "left", r = "right", lt = "left", rt = "right", lft = "left",
-                rgt = "right", rght = "right", spd = "speed",
+                rgt = "right", rght = "right", lef = "left", spd = "speed",
                 hdg = "heading",
                 -- (two letters swapped, or the vowels left out: "hgd 240", "sdp 270", "rdc 250 kts")
                 hgd = "heading", sdp = "speed", rdc = "reduce",

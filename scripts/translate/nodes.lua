@@ -428,9 +428,10 @@ function M.typed(state, ctx)
     end
     if not scratch:check(c) then return "english" end
     -- "KL204 turn 30 right" is a turn of 30 degrees in English, heading 030 in TrafScript:
-    -- a turn of one or two digits with a side, typed with the English word "turn", is English
+    -- a turn of one or two digits, with a side or none ("exp1 turn 30": 30 degrees or heading
+    -- 030?), typed with the English word "turn", is English
     if name == "HDG" and c:match("^(%S+)"):lower() == "turn" and c:match("^(%S+)") ~= "TURN"
-        and c:match("^%S+[%s,]+%S+[%s,]+%d%d?[%s,]+[LlRr]%a*%s*$") then
+        and (c:match("^%S+[%s,]+%S+[%s,]+%d%d?[%s,]+[LlRr]%a*%s*$") or c:match("^%S+[%s,]+%S+[%s,]+%d%d?%s*$")) then
       return "english"
     end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English

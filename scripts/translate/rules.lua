@@ -437,7 +437,7 @@ return function(intent, rule, words)
   end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
-  rule { "create spawn generate add", "mcre", near = { 3, "random" } }
+  rule { "create cre spawn generate add", "mcre", near = { 3, "random" } }
   rule { "mcre", "mcre" }
   -- "random traffic, 20 aircraft": the count said after
   rule { "random", "mcre", next = "traffic", when = function(g, i)
@@ -653,7 +653,7 @@ return function(intent, rule, words)
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
-  rule { "direct directly dct drct dir proceed direct-to", "direct" }
+  rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
   local function to_waypoint(g, i)
@@ -799,8 +799,20 @@ return function(intent, rule, words)
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
   rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
+  -- "exp1 where", "KL204 where now?": the question typed after the aircraft, nothing after it
+  rule { "where", "pos", when = function(g, i)
+    local k = g:word(i + 1, "now") and i + 2 or i + 1
+    return (g.t[k] == nil or g.t[k].kind == "punct") and g:has_ref(math.max(1, i - 2), i, "aircraft")
+  end }
   rule { "state", false, next = "based" }  -- "state-based conflict detection": CDMETHOD's method
   rule { "dump", false, next = "the its", near = { 4, "state position details status" } }  -- "dump the state of ..."
+  -- "a320 EIN77 fl 200 pos NIMAT hdg 100": "pos" before a place, in a request that names an aircraft type,
+  -- is where a new aircraft is placed (the creation's position), no request to show one
+  rule { "pos", false, when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx ~= nil and (g:has_ref(i + 1, i + 2, "waypoint") or nx.kind == "number")
+      and g:has_ref(1, #g.t + 1, "type")
+  end }
   rule { "details status info information state pos", "pos" }
   -- "show me Wideroe five one two": an aircraft alone after the verb is shown where it is
   -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own)
@@ -867,7 +879,7 @@ return function(intent, rule, words)
   -- aircraft named); "say heading 270", a value after the state word, is that instruction's value
   rule { "say", false, when = function(g, i)
     for k = i + 1, math.min(i + 3, #g.t) do
-      if g:word(k, "altitude speed heading level airspeed mach") then
+      if g:word(k, "altitude speed heading level airspeed mach alt lvl hdg spd fl") then
         local v = g.t[g:word(k + 1, "of to") and k + 2 or k + 1]
         return v ~= nil and (v.kind == "number" or v.number_word == true) and not g.u:used(k + 1)
       end
@@ -880,7 +892,7 @@ return function(intent, rule, words)
   rule { "resume", false, when = function(g, i)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
-  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach" } }
+  rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
   rule { "carry", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on"
   -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
@@ -904,7 +916,7 @@ return function(intent, rule, words)
     return g:word(b - 1, "set get")
   end }
   -- "go", "resume (please)": the whole request starts the clock
-  rule { "go resume", "op", when = function(g, i) return g:alone(i) end }
+  rule { "go resume run", "op", when = function(g, i) return g:alone(i) end }  -- ("ok run")
   -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
   rule { "resume resumes", "resnav", near = { 6, "cpa" } }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
@@ -1027,9 +1039,13 @@ return function(intent, rule, words)
   end }
   -- "wind at 6.5 north 3.3 east from 220 at 15 knots", "a harmattan wind at 12N 8.5E, from 050, 20 knots": a
   -- position straight after it, where it blows from said after that
+  -- ("wind at 53.4 -6.3 from 270 at 25 kts": a latitude and longitude in bare decimal degrees)
   rule { "wind winds", "wind", when = function(g, i)
     local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or nil
-    return q ~= nil and (q.kind == "lat" or q.kind == "lon") and g:find_word(i + 3, #g.t + 1, "from") <= #g.t
+    local nx = q and q.kind == "plain" and g:quantities(q.e, q.e + 1)[1] or nil
+    local pair = nx ~= nil and nx.kind == "plain" and q.number.typed and nx.number.typed
+      and (q.number.digits or ""):find("%.") ~= nil and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
+    return q ~= nil and (q.kind == "lat" or q.kind == "lon" or pair) and g:find_word(i + 3, #g.t + 1, "from") <= #g.t
       and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
   end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
@@ -1061,7 +1077,7 @@ return function(intent, rule, words)
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
-  rule { "protected protection pz rpz separation zone zoner zonedh radius", "zone" }
+  rule { "protected protection prot pz rpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }

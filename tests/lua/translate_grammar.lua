@@ -262,7 +262,7 @@ do -- the display's trails: on/off with the point interval, a colour per aircraf
   check_eq(tr("Show aircraft trails"), "TRAIL ON")
   check_eq(tr("Hide the trails"), "TRAIL OFF")
   check_eq(tr("turn on trails every 5 seconds"), "TRAIL ON 5")
-  check_eq(tr("Go back to real time and turn the trails off"), "OP ; TRAIL OFF")
+  check_eq(tr("run it in real time again and turn the trails off"), "OP ; TRAIL OFF")
   check_eq(tr("show the trail of KLM123 in red", w), "TRAIL KLM123 RED")
   check(asks("make the trail yellow"), "a colour needs an aircraft")
 end
@@ -450,7 +450,7 @@ do -- a new waypoint put at a position; glued typed forms; a turn letter after a
   check_eq(tr("klm12fl240", w), "ALT KLM12 FL240")
   check_eq(tr("klm12 m78", w), "SPD KLM12 M0.78")
   check_eq(tr("klm12 spd280", w), "SPD KLM12 280")
-  check_eq(tr("klm12 fl 310 rt 320", w), "ALT KLM12 FL310 ; HDG KLM12 320 RIGHT")
+  check_eq(tr("klm12 fl 310 rt 160", w), "ALT KLM12 FL310 ; HDG KLM12 160 RIGHT")
   check_eq(tr("put a new aircraft TEST9 A320 at 52 north 4 east"), "CRE TEST9 A320 52 4")
 end
 

@@ -1937,7 +1937,7 @@ do
   check_eq(ex("AUA123 left heading 200 and I'm deleting United 1542 now"), "HDG AUA123 200 LEFT ; DEL UAL1542")
   check_eq(ex("removing UAL1542"), "DEL UAL1542")
   check_eq(ex("AUA123 reduce 250 DLH6CK reduce 240"), "SPD AUA123 250 ; SPD DLH6CK 240")
-  check_eq(ex("AUA123 left 200 DLH6CK right 100"), "HDG AUA123 200 LEFT ; HDG DLH6CK 100 RIGHT")
+  check_eq(ex("AUA123 left 040 DLH6CK right 250"), "HDG AUA123 40 LEFT ; HDG DLH6CK 250 RIGHT")
   check_eq(ex("AUA123 climb unrestricted FL250"), "ALT AUA123 FL250")
   -- a registration or callsign spelled in the phonetic alphabet with its digits said is that aircraft exactly
   check(rt:exec("CRE HK5012 C208 48.0 16.0 180 13000 150"))
@@ -2177,7 +2177,7 @@ do
   check(r40.note ~= nil and r40.note:find("vectors for Rotterdam", 1, true) ~= nil, tostring(r40.note))
   check_eq(ex("DLH4AX left heading 200, vectors for spacing"), "HDG DLH4AX 200 LEFT")
   -- "down to"/"up to" opening a clause after another instruction, a level after "to", changes level
-  check_eq(ex("KLM77 left 270, down to 3000"), "HDG KLM77 270 LEFT ; ALT KLM77 3000")
+  check_eq(ex("KLM77 left 110, down to 3000"), "HDG KLM77 110 LEFT ; ALT KLM77 3000")
   check_eq(ex("BAW8CK heading 310, then up to FL280"), "HDG BAW8CK 310 ; ALT BAW8CK FL280")
   check(ex("KLM77 slow to 180, down to 250"):match("^ASK .*'250'") ~= nil)
 end
@@ -2583,4 +2583,118 @@ do
   check_eq(ex("add a conflict for KLM77: XY21, A320, head-on (180), 1 nm CPA, 240 s to LoS"),
     "CRECONFS XY21 A320 KLM77 180 1 240")
   check_eq(ex("pz 5 nm, dh 1000, lookahead 300"), "ZONER 5 ; ZONEDH 1000 ; DTLOOK 300")
+end
+
+-- A turn side with a bare number and no "heading" ("r 360", "l 200", "right 360"), typed as shorthand too, that
+-- would be a heading the long way round asks whether it is a turn by that many degrees (a "360" an orbit) or the
+-- heading; the short way round it is the heading. "turn 30" with no side asks: 30 degrees, or heading 030?
+do
+  local _, ex = scene({ "CRE EIN9QT A320 53 -6 150 FL090 250", "CRE RYR3MX B738 53 -5 060 FL070 240" })
+  check(ex("EIN9QT right 360"):match("^ASK Should EIN9QT turn right by 360 degrees, or fly heading 360") ~= nil,
+    ex("EIN9QT right 360"))
+  check(ex("ryr3mx l 210"):match("^ASK .*the long way round") ~= nil, ex("ryr3mx l 210"))
+  check_eq(ex("ryr3mx r 200"), "HDG RYR3MX 200 RIGHT")
+  check_eq(ex("ein9qt l 090"), "HDG EIN9QT 90 LEFT")
+  check_eq(ex("ein9qt rt hdg 360"), "HDG EIN9QT 360 RIGHT")
+  check(ex("ein9qt turn 40"):match("^ASK Should EIN9QT turn left or right by 40 degrees") ~= nil, ex("ein9qt turn 40"))
+  check(ex("turn ryr3mx twenty"):match("^ASK Should RYR3MX turn left or right") ~= nil, ex("turn ryr3mx twenty"))
+  check_eq(ex("ein9qt turn 40 left"), "HDG EIN9QT 110 LEFT")
+  check_eq(ex("RYR3MX turn 240"), "HDG RYR3MX 240")
+  check_eq(ex("TURN RYR3MX 30"), "HDG RYR3MX 30")  -- TrafScript in capitals: heading 030
+end
+
+-- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
+-- "real time speed" is the rate; "run it in real time again" starts it
+do
+  local _, ex = scene({})
+  check(ex("back to real time"):match("^ASK .*%(OP%).*%(DTMULT 1%)") ~= nil, ex("back to real time"))
+  check(ex("ok go back to real time pls"):match("^ASK ") ~= nil, ex("ok go back to real time pls"))
+  check_eq(ex("back to real time speed"), "DTMULT 1")
+  check_eq(ex("run it in real time again"), "OP")
+  check_eq(ex("ok run"), "OP")
+end
+
+-- A state asked for with its typed short name after "say"/"report" ("say alt", "report lvl", "say spd"), and
+-- "where" typed after the callsign, show the aircraft (POS); "say alt 5000" is a level
+do
+  local _, ex = scene({ "CRE SHT4KD A320 55 -3 300 FL110 250", "CRE LOG22 E145 56 -4 150 FL140 260" })
+  check_eq(ex("sht4kd say lvl"), "POS SHT4KD")
+  check_eq(ex("report hdg log22"), "POS LOG22")
+  check_eq(ex("say spd sht4kd"), "POS SHT4KD")
+  check_eq(ex("log22 where?"), "POS LOG22")
+  check_eq(ex("log22 where now"), "POS LOG22")
+  check_eq(ex("sht4kd say alt 5000"), "ALT SHT4KD 5000")
+  check(ex("log22 where to"):match("^ASK ") ~= nil, ex("log22 where to"))
+  check_eq(ex("log22 say fl"), "POS LOG22")
+  check_eq(ex("log22 say fl 150"), "ALT LOG22 FL150")
+end
+
+-- Typed short forms and slips of the lab's keyboard: "lef" a turn side, "dtc" a direct-to, "prot zone" the
+-- protected zone, "acft" aircraft, "cre N random" random traffic (MCRE)
+do
+  local _, ex = scene({ "CRE EZY7LP A320 53 -3 130 FL150 280", "DEFWPT KOBAL 53.2 -2.8" })
+  check_eq(ex("ezy7lp turn lef 30"), "HDG EZY7LP 100 LEFT")
+  check_eq(ex("ezy7lp lef hdg 090"), "HDG EZY7LP 90 LEFT")
+  check_eq(ex("ezy7lp dtc KOBAL fl 120"), "ADDWPT EZY7LP KOBAL ; DIRECT EZY7LP KOBAL ; ALT EZY7LP FL120")
+  check_eq(ex("prot zone 4 nm"), "ZONER 4")
+  check_eq(ex("cre 8 random acft"), "MCRE 8")
+  check(ex("ezy7lp turn lef"):match("^ASK ") ~= nil, ex("ezy7lp turn lef"))
+end
+
+-- A condition said after the instruction it holds: "reduce 180 kts when level" waits for the level cleared
+-- before it (ATALT), "dct KOBAL, once there FL80" is the constraint at the waypoint flown to (AT ... ALT); a
+-- turn tied there asks. "at 10 from KOBAL" (a bare number between "at" and "from" a place) is a distance, NM
+do
+  local _, ex = scene({ "CRE LOG7Y E145 53 -3 150 FL140 260", "DEFWPT KOBAL 53.2 -2.8", "ADDWPT LOG7Y KOBAL" })
+  check_eq(ex("log7y desc fl90 and reduce 200 kts when lvl"), "ALT LOG7Y FL90 ; ATALT LOG7Y FL90 SPD LOG7Y 200")
+  check_eq(ex("log7y climb fl160, speed 280 once it's level"), "ALT LOG7Y FL160 ; ATALT LOG7Y FL160 SPD LOG7Y 280")
+  check(ex("log7y desc fl90 and turn left 20 when level"):match("^ASK ") ~= nil,
+    ex("log7y desc fl90 and turn left 20 when level"))
+  check_eq(ex("log7y dct KOBAL, once there fl 80"), "DIRECT LOG7Y KOBAL ; AT LOG7Y KOBAL ALT FL80")
+  check_eq(ex("log7y dct KOBAL when there 210 kts"), "DIRECT LOG7Y KOBAL ; AT LOG7Y KOBAL SPD 210")
+  check(ex("log7y dct KOBAL and once there turn right 30"):match("^ASK ") ~= nil,
+    ex("log7y dct KOBAL and once there turn right 30"))
+  check_eq(ex("log7y at 15 from KOBAL desc fl100"), "ATDIST LOG7Y KOBAL 15 ALT LOG7Y FL100")
+  check_eq(ex("log7y reduce 220 at 8 from KOBAL"), "ATDIST LOG7Y KOBAL 8 SPD LOG7Y 220")
+  check(ex("log7y at 5000 from KOBAL desc fl100"):match("^ATDIST") == nil, "no distance of 5000 NM")
+end
+
+-- A wind written as direction/speed ("270/25", "090/15kt") and placed at a bare decimal latitude and longitude;
+-- "schedule 00:10:00 ..." opening a request runs it then (SCHEDULE)
+do
+  local _, ex = scene({ "CRE EXP4 A320 53 -5 000 FL230 260" })
+  check_eq(ex("wind at 52.1 -7.3 240/30"), "WIND 52.1 -7.3 240 30")
+  check_eq(ex("set wind 090/15kt at 51.9 -8.0"), "WIND 51.9 -8 90 15")
+  check_eq(ex("wind at 52.1 -7.3 from 240 at 30 kts"), "WIND 52.1 -7.3 240 30")
+  check_eq(ex("schedule 00:05:00 exp4 fl250"), "SCHEDULE 00:05:00 ALT EXP4 FL250")
+  check_eq(ex("schedule 00:12:30 exp4 speed 240"), "SCHEDULE 00:12:30 SPD EXP4 240")
+end
+
+-- An airport's ICAO code typed in lower case after orig/origin/dest ("orig eidw dest egcc") is that airport;
+-- "dest eidw -> einn" changes the destination to the second; an unknown code is asked about
+do
+  local s, ex = navscene({ "CRE EIN6TR A320 53.5 -6.5 090 FL200 280" }, "lower-case airport codes")
+  if s then
+    check_eq(ex("ein6tr orig eidw dest egcc"), "ORIG EIN6TR EIDW ; DEST EIN6TR EGCC")
+    check_eq(ex("ein6tr dest: einn spd 250"), "DEST EIN6TR EINN ; SPD EIN6TR 250")
+    check_eq(ex("ein6tr dest eidw -> egcc"), "DEST EIN6TR EGCC")
+    check(ex("ein6tr dest qqqz"):match("^ASK ") ~= nil, ex("ein6tr dest qqqz"))
+  end
+end
+
+-- "Jet2" (Channex, EXS) before a flight number is that airline ("jet2 44m", "Jet 2 four four mike"); an aircraft
+-- whose id is JET2 keeps it. "pos NAME" in a line that names an aircraft type is where a new aircraft is placed.
+-- "dct LANAK then TWEED", LANAK ending the route: the places after it are added after it; one the route already
+-- holds earlier is asked about
+do
+  local _, ex = scene({ "CRE EXS31K B738 54 -3 250 FL200 280", "CRE JET2 A320 54 -4 100 FL100 250",
+      "DEFWPT KOBAL 54.2 -2.8", "DEFWPT TULIX 54.4 -2.5", "ADDWPT EXS31K KOBAL" })
+  check_eq(ex("jet2 31k left 10"), "HDG EXS31K 240 LEFT")
+  check_eq(ex("Jet 2 three one kilo climb FL240"), "ALT EXS31K FL240")
+  check_eq(ex("jet2 climb fl300"), "ALT JET2 FL300")
+  check_eq(ex("a321 EXS9 fl 150 pos KOBAL hdg 090 250kt"), "CRE EXS9 A321 KOBAL 90 FL150 250")
+  check_eq(ex("exs31k dct KOBAL then TULIX"), "DIRECT EXS31K KOBAL ; ADDWPT EXS31K TULIX")
+  check_eq(ex("exs31k dct kobal then tulix"), "DIRECT EXS31K KOBAL ; ADDWPT EXS31K TULIX")
+  check_eq(ex("exs31k dct kobal then climb fl220"), "DIRECT EXS31K KOBAL ; ALT EXS31K FL220")
+  check(ex("exs31k dct TULIX then KOBAL"):match("^ASK .*'KOBAL'") ~= nil, ex("exs31k dct TULIX then KOBAL"))
 end
