@@ -1080,9 +1080,14 @@ return function(H, f, compass)
     return self:need(string.format("Which point at %s is meant: %s?", where, table.concat(ids, " or "))) or false
   end
 
+  -- "the airBaltic and the Finnair both direct EDISA": each aircraft named flies there
   function m:direct(s)
-    local id = self:acid(s, "fly direct")
-    if not id then return end
+    local ids = self:acids(s)
+    if #ids == 0 then return self:need("Which aircraft should fly direct? Please give its callsign.") end
+    for _, id in ipairs(ids) do self:direct_one(s, id) end
+  end
+
+  function m:direct_one(s, id)
     local a = self:state(id)
     -- "add TABUM to its route and send it direct there", "add SPY and then go direct to it": the
     -- waypoint this request added just before
@@ -1747,9 +1752,15 @@ return function(H, f, compass)
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
-    -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?")
-    return self.t[#self.t].text == "?" and (self:word(first, "is are what what's whats which")
-      or self:word_in(1, #self.t + 1, "check whether"))
+    -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
+    -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
+    local ends = #self.t
+    for k = 1, #self.t do
+      local t = self.t[k]
+      if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!") then ends = k break end
+    end
+    return self.t[ends].text == "?" and (self:word(first, "is are what what's whats which")
+      or self:word_in(1, ends, "check whether"))
   end
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end

@@ -961,8 +961,9 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "slow slower faster speed multiplier rate")
       or g:word_in(i + 2, math.min(#g.t + 1, i + 7), "multiplier rate")
   end }
-  -- "back to normal speed, real time": real time said again beside a normal rate names that rate
-  rule { "real", false, next = "time", when = function(g, i) return g:preceded_by(i, 4, "normal") end }
+  -- "back to normal speed, real time", "back to normal speed, please, real time": real time said again beside
+  -- a normal rate (anywhere in the request) names that rate
+  rule { "real", false, next = "time", when = function(g, i) return g:word_in(1, #g.t + 1, "normal") end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
