@@ -3219,6 +3219,7 @@ function M.translate(text, world)
   g:airline_types()
   g:airline_refs()
   g:type_refs()
+  g:prefix_refs()
   g:opening_right()
   g:runway_sides()
   -- a latitude beyond a pole or a longitude beyond the antimeridian ("95 N", "190 W") is no position

@@ -508,6 +508,28 @@ function m:airline_refs()
   end
 end
 
+-- An aircraft named by the letters of its callsign as a word, after a determiner and before an aircraft
+-- noun ("our test aircraft" TEST01, "the intruder plane" INTRUDER2), when no airline has that name and
+-- exactly one aircraft flying has those letters before its digits: a reference to it, as in airline_refs
+-- (by_prefix = true; the noun is part of it). Two of those letters flying ("the test aircraft" with TEST01
+-- and TEST02) name neither: the request is asked about as before.
+function m:prefix_refs()
+  local i = 2
+  while i < #self.t do
+    local t = self.t[i]
+    local fits = {}
+    if t.kind == "word" and t.alpha and #t.text >= 2 and self:word(i - 1, "the our this that my your")
+        and self:word(i + 1, "@aircraft_nouns")
+        and not self:airline_at(i) and not self:has_ref(i, i + 2, "aircraft") then
+      for _, a in ipairs(self.fleet) do
+        local letters = a.id:match("^(%a+)%d")
+        if letters and letters:lower() == t.text then fits[#fits + 1] = a.id end
+      end
+    end
+    i = self:insert_ref(fits, i, i + 2, "by_prefix")
+  end
+end
+
 -- Makers (lower case, "cessna") -> {designator = true} of the types squawk
 -- knows, model names ("737", "a320") -> designator, and designators said
 -- without their maker's letter ("738" -> B738, "319" -> A319: the digits of

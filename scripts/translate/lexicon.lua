@@ -51,7 +51,7 @@ return {
   accounted = {
     -- closed-class English, which carries no instruction of its own
     articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
-        "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
+        "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many", "different",
         "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further" },
     pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
@@ -589,8 +589,8 @@ return {
   speed_units = { "knots", "knot", "kts", "kt" },
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course
-  intruder = { "intruder", "conflict" },
-  closest_approach = { "cpa", "miss", "passing" },
+  intruder = { "intruder", "conflict", "conflicting" },
+  closest_approach = { "cpa", "miss", "passing", "closest" },
   loss_of_separation = { "los", "tlos", "tlosh" },
   head_on = { "head-on", "head" },
   -- the clock reaching a time ("when the clock hits 45 minutes")
