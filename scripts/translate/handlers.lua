@@ -473,6 +473,22 @@ function m:airline_refs()
     return r.kind == "waypoint" and not r.exists and r.e == r.b + 1 and self.t[r.b].raw:match("^%u%u%u$")
       and not self:word(r.e, "@navaid_kinds")
   end
+  -- "the SAS one, could it ...", "descend the SAS one to FL80": "one" after "the" and an airline, no digit,
+  -- number word or spelled letter after it, is the pronoun (the airline's aircraft), no flight number; the
+  -- callsign the matcher heard in it is no reference
+  local function pronoun_one(k)
+    local after = self.t[k + 1]
+    return self:word(k, "one") and not (after and (after.kind == "number" or after.number_word
+      or L.phonetic[after.text] or self:word(k + 1, "heavy super")))
+  end
+  for k = #self.refs, 1, -1 do
+    local r = self.refs[k]
+    local icao, e = self:airline_at(r.b)
+    if r.kind == "aircraft" and icao and e == r.e - 1 and self:word(r.b - 1, "the") and pronoun_one(e)
+        and (not r.exists or r.heard) then
+      table.remove(self.refs, k)
+    end
+  end
   local inside = {}
   for _, r in ipairs(self.refs) do
     if not unknown_place(r) then
@@ -490,7 +506,7 @@ function m:airline_refs()
           or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
     local ok = icao and not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e))
         and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
-          or self:word(e, "heavy super")))
+          or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
         and not self:new_aircraft_follows(e - 1)
     local fits = ok and self:airline_fleet(icao, codes) or {}
     -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
@@ -503,6 +519,10 @@ function m:airline_refs()
       for k = #self.refs, 1, -1 do
         if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
       end
+    end
+    if ok and the and pronoun_one(e) then  -- (the pronoun is part of the name, no value)
+      self:mark_used(e, e + 1)
+      e = e + 1
     end
     i = self:insert_ref(fits, i, e, "by_airline")
   end

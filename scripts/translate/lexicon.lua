@@ -76,7 +76,7 @@ return {
     discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit",
         "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
-        "ok", "okay", "oh", "hmm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
+        "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
         "entirely", "moment", "away", "back", "aside" },
     -- courtesy and framing of a request
@@ -111,7 +111,10 @@ return {
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
         "mate", "kia", "ora", "howzit",
         -- the same courtesy in German ("Grüß Gott", "Entschuldigung", "danke", "bitte", "servus")
-        "entschuldigung", "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi" },
+        "entschuldigung", "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi",
+        -- the same in the Nordic and Baltic languages ("Hej, ...", "Tack", "Kiitos", "Labdien", "Paldies")
+        "hej", "hei", "moi", "tere", "tack", "takk", "tak", "kiitos", "labdien", "paldies", "labas", "aciu",
+        "aitah", "sveiki" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
