@@ -2063,7 +2063,9 @@ function G:unknown_names()
     return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
   end
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
+    -- (in a reason, "also" adds nothing: "because the A350 also goes through HAGIS")
+    if r.kind == "aircraft" and (not r.exists or (added(r) and not self:in_reason(r.b))
+          or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
@@ -2071,6 +2073,39 @@ function G:unknown_names()
       return
     end
   end
+end
+
+-- After a request that only shows something (POS, LISTRTE), what the speaker wants to see in it, as a
+-- sentence of its own or a clause after a comma opening with a subject ("Where's the Norwegian? Is it
+-- already at RIGNO?", "show me its route, I want to see if MILTA is before EDISA", "I'm not sure KOGAV is
+-- in there"), is the reason for asking and is explained, the places it names too: it runs to the end of the
+-- request and holds no instruction word, no value and no aircraft the commands do not name. Nothing is
+-- flown by a query, so such a remark changes nothing.
+local SHOWS = { POS = true, LISTRTE = true }
+function G:info_remarks()
+  if #self.out == 0 then return end
+  local out = " " .. table.concat(self.out, " ") .. " "
+  for _, line in ipairs(self.out) do
+    if not SHOWS[line:match("^(%S+)")] then return end
+  end
+  local b
+  for k = 2, #self.t do
+    local t = self.t[k - 1]
+    if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!"
+        or (t.text == "," and self:word(k, CM_SUBJECTS))) then
+      b = k
+      break
+    end
+  end
+  if not b or b > #self.t then return end
+  if #self:quantities(b, #self.t + 1) > 0 then return end
+  for k = b, #self.t do
+    if self:intent_at(k) then return end
+  end
+  for _, r in ipairs(self:refs_in(b, #self.t + 1, "aircraft")) do
+    if not out:find(" " .. r.name:upper() .. " ", 1, true) then return end
+  end
+  self:explain(b, #self.t + 1)
 end
 
 -- A waypoint, fix or airport named that no command carries ("klm12 dc sugol
@@ -3215,6 +3250,8 @@ function M.translate(text, world)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
   g:settle_callsigns()
+  if DEBUG_REFS then for _, r in ipairs(g.refs) do print("REF", r.kind, r.name, r.b, r.e, r.exists) end
+    for k, t in ipairs(g.t) do io.write(k, ":", t.kind, ":", t.text, " ") end print() end
   local same = g:same_for()
   g:airline_types()
   g:airline_refs()
@@ -3258,6 +3295,7 @@ function M.translate(text, world)
     g.out = kept
   end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
+  if not g.ask then g:info_remarks() end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
