@@ -3024,6 +3024,23 @@ local function airline_values(text, fleet)
     end
     return nil
   end)
+  -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
+  -- thirty five degrees right")
+  local function spoken(ws)
+    for w in ws:gmatch("[^%s%-]+") do
+      if not NUMBER_WORDS[w:lower()] then return false end
+    end
+    return true
+  end
+  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
+                             "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" }) do
+    text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
+      if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
+        return the .. w .. "," .. s1 .. n .. s2 .. unit
+      end
+      return nil
+    end)
+  end
   -- "Shamrock 1 2 3": a flight number typed digit by digit after its airline's telephony, three or four
   -- single digits in a row, is one number
   return (text:gsub("(%f[%a]%a+%s+)(%d[%d%s]*%d)%f[^%d%s]", function(w, run)

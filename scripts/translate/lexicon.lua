@@ -78,7 +78,9 @@ return {
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
-        "entirely", "moment", "away", "back", "aside" },
+        "entirely", "moment", "away", "back", "aside", "apart",
+        -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
+        "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
@@ -168,7 +170,13 @@ return {
         "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
-        "experiments" },
+        "experiments",
+        -- a human-factors study's instruments and measures ("the eye tracker is calibrated", "fill in the
+        -- NASA-TLX", "so the geometry works", "the crossing angle")
+        "eye", "tracker", "eye-tracker", "nasa", "tlx", "nasa-tlx", "questionnaire", "workload", "geometry",
+        "calibrated", "crossing", "condition", "conditions", "baseline", "measurement", "measurements",
+        -- a part of the airspace a study is run in ("for the terminal area trials")
+        "terminal", "en-route", "enroute" },
 
     -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
     prefixes = { "co", "non", "pre", "semi", "sub", "multi", "re" },
@@ -352,7 +360,9 @@ return {
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
-      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz" },
+      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz",
+      -- a study's questionnaires and measures ("fill in the NASA-TLX")
+      "nasa", "tlx", "nasa-tlx" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
   passed_over = { "skip", "skipping", "bypass", "bypassing", "not", "instead" },
   below = { "below", "under" },
