@@ -1176,6 +1176,13 @@ function G:condition()
   if #ids == 0 then return nil, 1 end
   self.subject = ids[1].name
   local f = handlers.format
+  -- "when the Widerøe passes VIBUK, it should descend to 5000 feet", "once DLH2VA gets to MALIX, descend
+  -- FL80": a waypoint the aircraft reaches, no value, is a constraint there (G:at_condition)
+  local places = self:refs_in(i, comma, "waypoint")
+  if #places == 1 and #self:quantities(i, comma) == 0 and places[1].exists then
+    self.at_place = places[1].name
+    return "", rest
+  end
   for _, q in ipairs(self:quantities(i, comma)) do
     if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), rest end
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
@@ -1191,6 +1198,27 @@ function G:condition()
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, rest
+end
+
+-- The instructions after a condition at a waypoint (G:condition: self.at_place) become BlueSky's AT
+-- constraints there ("AT id WPT ALT alt", "AT id WPT SPD spd"), each a level or speed of the condition's
+-- aircraft, the waypoint on its route; anything else (a heading, another aircraft, a place off the route)
+-- is asked, as at_waypoint asks.
+function G:at_condition()
+  local id, wp = self.subject, self.at_place
+  local on_route = false
+  for _, w in ipairs((self:state(id) or {}).route or {}) do on_route = on_route or w:upper() == wp:upper() end
+  local out = {}
+  for _, line in ipairs(self.out) do
+    local cmd, who, value = line:match("^(%u+) (%S+) (%S+)$")
+    if not on_route or who ~= id or (cmd ~= "ALT" and cmd ~= "SPD") then
+      self.ask = string.format("Should that happen at %s? squawk does not translate instructions tied to a "
+        .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.", wp, wp)
+      return
+    end
+    out[#out + 1] = string.format("AT %s %s %s %s", id, wp, cmd, value)
+  end
+  self.out = out
 end
 
 -- ---- segments: one instruction each ----
@@ -3296,7 +3324,11 @@ function M.translate(text, world)
     g:parse(rest, #g.t + 1)
     if cond and not g.ask then
       if #g.out == 0 then g.ask = "What should happen when the condition is met?" end
-      for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
+      if g.at_place then
+        g:at_condition()
+      else
+        for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
+      end
     end
   end
   if not g.ask then g:respectively() end
