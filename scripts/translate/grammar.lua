@@ -1153,6 +1153,32 @@ for name, spec in pairs(M.intents) do
 end
 
 -- ---- conditions: "When AC01 reaches FL200, ..." ----
+-- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
+-- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120"): "once" or "when", "it" or
+-- the aircraft, a verb of reaching, then a level and words with no value, aircraft or instruction of their
+-- own to the end. Returns the position of "once"/"when" and the level's quantity, or nil.
+local REACHING = { passes = true, reaches = true, passing = true, reaching = true, crosses = true, hits = true }
+function G:trailing_level_condition()
+  for k = 2, #self.t do
+    if self:word(k, "once when") then
+      local v = k + 1
+      if self:word(v, "it") or self:has_ref(v, v + 1, "aircraft") then v = v + 1 end
+      if REACHING[(self.t[v] or {}).text] then
+        local q = self:quantities(v + 1, #self.t + 1)[1]
+        if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) then
+          for x = q.e, #self.t do
+            if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
+          end
+          if #self:quantities(q.e, #self.t + 1) > 0 then return nil end
+          return k, q
+        end
+      end
+      return nil
+    end
+  end
+  return nil
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -3321,7 +3347,20 @@ function M.translate(text, world)
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()
   if not g.ask then
-    g:parse(rest, #g.t + 1)
+    local k, level = nil, nil
+    if not cond then k, level = g:trailing_level_condition() end
+    g:parse(rest, k or #g.t + 1)
+    if k and not g.ask then
+      -- (the condition's words: what the ATALT says)
+      g:take(level)
+      g:explain(k, #g.t + 1)
+      local f = handlers.format
+      for c = 1, #g.out do
+        local id = g.out[c]:match("^%u+ (%S+)")
+        g.out[c] = "ATALT " .. id .. " " .. (level.kind == "alt" and f.alt(level.value, level.fl) or f.int(level.value))
+          .. " " .. g.out[c]
+      end
+    end
     if cond and not g.ask then
       if #g.out == 0 then g.ask = "What should happen when the condition is met?" end
       if g.at_place then
