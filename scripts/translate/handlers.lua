@@ -1055,9 +1055,7 @@ function m:leftovers(s)
     local emit = q.b < s.trig and function(line) table.insert(self.out, #self.out, line) end
       or function(line) self:emit(line) end
     if not self.taken[q.b] and (q.b > s.trig or (unit and s.trig > s.b)) then
-      if q.kind == "alt" and not alt_done and self:level_kept(ids, q, q.value, s.b, false) then
-        alt_done = true
-      elseif q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
+      if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
         -- "FL300 at 2000 fpm": the rate said with the level is the climb's or descent's (ALT's vspd)
         local rate = self:quantities(q.e, math.min(#self.t + 1, q.e + 4))[1]
         rate = rate and rate.kind == "vs" and self:skip_fillers(q.e) == rate.b - (self:word(q.e, "at") and 1 or 0)

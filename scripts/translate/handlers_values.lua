@@ -71,32 +71,6 @@ return function(H, f, wrap, compass)
     self:altitude(s)
   end
 
-  -- "the Finnair should keep FL350 but slow down to 250", "stay at FL350 and reduce 250": a level `ft` [ft]
-  -- (the value q) that every aircraft of `ids` flies and is cleared to, said after a verb of keeping (not the
-  -- clearance word "maintain") in tokens [b, q.b), is a statement that it stays: the value is read and true is
-  -- returned, no command issued. With `others`, only when the request gives another instruction (said alone,
-  -- it is the ALT it says).
-  function m:level_kept(ids, q, ft, b, others)
-    if not self:word_in(b, q.b, "keep stay remain") then return false end
-    for _, id in ipairs(ids) do
-      local a = self:state(id)
-      if not a or math.abs((a.alt_ft or 0) - ft) > 50 or math.abs((a.sel_alt_ft or a.alt_ft or 0) - ft) > 50 then
-        return false
-      end
-    end
-    if others then
-      local other = false
-      for i = 1, #self.t do
-        local intent = self:intent_at(i)
-        other = other or (intent and intent ~= "alt" and intent ~= "maintain" and not self:in_reason(i))
-      end
-      if not other then return false end
-    end
-    self:take(q)
-    self:explain(q.b, q.e)
-    return true
-  end
-
   function m:altitude(s)
     local ids = self:acids(s)
     if #ids == 0 then return self:need("Which aircraft should change altitude? Please give its callsign.") end
@@ -304,7 +278,6 @@ return function(H, f, wrap, compass)
         return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
       end
     end
-    if not relative and dir == 0 and self:level_kept(ids, q, ft, s.b, true) then return end
     for _, id in ipairs(ids) do
       local alt, target_ft
       if relative then

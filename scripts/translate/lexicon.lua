@@ -51,7 +51,7 @@ return {
   accounted = {
     -- closed-class English, which carries no instruction of its own
     articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
-        "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many", "different",
+        "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
         "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further" },
     pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
