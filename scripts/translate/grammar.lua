@@ -1938,7 +1938,7 @@ function G:at_waypoint(s, spec)
         return true
       end
     end
-    if self:word(r.b - 1, "at cross crossing over abeam overhead") then
+    if self:word(r.b - 1, "at cross crossing over abeam overhead") and not self:in_reason(r.b) then
       return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
         .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
         r.name, r.name))

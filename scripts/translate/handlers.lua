@@ -511,7 +511,22 @@ function m:airline_refs()
     local fits = ok and self:airline_fleet(icao, codes) or {}
     -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
     -- name no airline flying, "the ILS", are no airline)
-    if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
+    -- ("The SAS that's coming from the south, SAS 517, could it descend": the airline said again with its
+    -- flight number, in the same sentence before any instruction, is the one meant)
+    local named_later = false
+    for _, r in ipairs(#fits > 1 and self.refs or {}) do
+      if r.kind == "aircraft" and r.exists and r.b >= e and r.b <= e + 10 then
+        local sentence = true
+        for k = e, r.b - 1 do
+          local t = self.t[k]
+          sentence = sentence and not (t.kind == "punct" and t.text ~= ",") and not self:intent_at(k)
+        end
+        for _, id in ipairs(fits) do named_later = named_later or (sentence and id == r.name) end
+      end
+    end
+    if ok and named_later then self:explain(i, e) end
+    if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i)
+        and not named_later then
       self.airline_unresolved = self.airline_unresolved or {}
       table.insert(self.airline_unresolved, { b = i, e = e })
     end
