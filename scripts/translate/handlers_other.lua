@@ -1106,6 +1106,12 @@ return function(H, f, compass)
     if point == false then return end
     local wp = to_dest or point or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
         and self:word_in(s.trig, s.e, "there it") and added or self:waypoint(s.trig, s.e, id)
+    -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
+    -- adverb that ends the clause
+    if not wp and self:word(s.trig, "directly direct") then
+      local to = self:find_word(s.b, s.trig, "to")
+      if to < s.trig then wp = self:waypoint(to + 1, s.trig, id) end
+    end
     if not wp and a and a.route and #a.route == 1 then wp = a.route[1] end
     wp = wp or self:spoken_name(s.trig + 1, s.e)
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
