@@ -897,6 +897,10 @@ return function(intent, rule, words)
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
+  -- "could you start it again?": the clock, no aircraft named in the request
+  rule { "start", "op", next = "it", when = function(g, i)
+    return g:word(i + 2, "again") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "set the sim running", "get it running again": the clock started
   rule { "running", "op", prev = { 1, "@sim it" }, not_near = { 4, "speed rate times real normal" }, when = function(g, i)
