@@ -1040,6 +1040,10 @@ return function(intent, rule, words)
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
+  -- "write 'trial 4 start' into the log", "put 'baseline done' in the log": quoted text for the log
+  rule { "write put add enter", "echo", when = function(g, i)
+    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log")
+  end }
 
   -- conflict detection and resolution
   -- "the look-ahead time for conflict detection", "the radius for resolution": the setting's owner
