@@ -654,6 +654,11 @@ function m:type_refs()
         if ty and (set[ty] or of_nick) then fits[#fits + 1] = a.id end
       end
     end
+    -- ("the CRJ": a family in capitals the lexer took for an unknown place)
+    for k = #self.refs, 1, -1 do
+      local r = self.refs[k]
+      if #fits == 1 and r.kind == "waypoint" and not r.exists and r.b == i and r.e == e then table.remove(self.refs, k) end
+    end
     i = self:insert_ref(fits, i, e, "by_type")
   end
 end
