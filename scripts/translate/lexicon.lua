@@ -145,8 +145,10 @@ return {
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
-        -- an aircraft described by its size ("the small Cessna", "a big Boeing")
-        "small", "little", "big",
+        -- an aircraft described by its size ("the small Cessna", "a big Boeing") or its airline's country ("the
+        -- German one, the Lufthansa"; names that are airlines' own, "Norwegian", "Swiss", are not here)
+        "small", "little", "big", "german", "swedish", "danish", "finnish", "dutch", "french", "spanish",
+        "italian", "polish", "latvian", "lithuanian", "icelandic", "portuguese", "hungarian", "greek",
         -- the margin a resolution keeps ("resolution margin factor 1.05")
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
