@@ -2441,6 +2441,23 @@ function G:explained_spans(issued, kinds)
       k = r.e
       if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
       if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
+      -- ("direct GRM, the Gardermoen VOR": its name after "the", with its kind of navaid or airport after it)
+      if self.t[r.e] and self.t[r.e].kind == "punct" and self:word(r.e + 1, "the") then
+        local n = r.e + 2
+        while n < r.e + 5 and self.t[n] and self.t[n].kind == "word" and self.t[n].raw:match("^%u")
+            and not self:word(n, "@navaid_kinds @airport_nouns") and not MEANING[self.t[n].text] do
+          n = n + 1
+        end
+        local words = {}
+        for x = r.e + 2, n - 1 do words[#words + 1] = self.t[x].text end
+        local named = n > r.e + 2 and self.world.navaids_named
+          and self.world.navaids_named(table.concat(words, " "), 0, 0, 1e5) or {}
+        local same = false
+        for _, id in ipairs(named) do same = same or id:upper() == r.name:upper() end
+        if same and self:word(n, "@navaid_kinds @airport_nouns") then
+          for x = r.e + 1, n do inside[x] = true end
+        end
+      end
     end
   end
   -- "direct to the merge point MRG01", "the metering fix RILAX": a word naming the place's role, before
