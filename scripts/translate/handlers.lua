@@ -496,6 +496,22 @@ function m:airline_refs()
     end
   end
   if not L.callsign_confirm.airline_alone then return end
+  -- ("create the SAS flight SAS902, an A21N, at Arlanda", "create an SAS A320 for us, callsign SAS123": the
+  -- airline said before a new callsign of its own, straight before it (an aircraft noun between or none) or
+  -- after an article, describes it: no place)
+  for i = 1, #self.t do
+    local icao, e = self:airline_at(i)
+    local at = icao and (self:word(e, "@aircraft_nouns") and e + 1 or e)
+    local upto = icao and (self:word(i - 1, "@articles_new") and #self.t + 1 or at + 1)
+    for _, r in ipairs(icao and self:refs_in(at, upto, "aircraft") or {}) do
+      if not r.exists and r.name:upper():sub(1, #icao) == icao then
+        for k = #self.refs, 1, -1 do
+          if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+        end
+        self:explain(i, r.b == at and at or e)
+      end
+    end
+  end
   local i = 1
   while i <= #self.t do
     local icao, e, codes = self:airline_at(i)

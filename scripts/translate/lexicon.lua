@@ -301,7 +301,7 @@ return {
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
-  articles_new = { "a", "an", "new", "second", "another" },
+  articles_new = { "a", "an", "new", "second", "another", "more" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names
   airline_variant = { ["737"] = "B738" },
