@@ -1157,13 +1157,13 @@ end
 -- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120"): "once" or "when", "it" or
 -- the aircraft, a verb of reaching, then a level and words with no value, aircraft or instruction of their
 -- own to the end. Returns the position of "once"/"when" and the level's quantity, or nil.
-local REACHING = { passes = true, reaches = true, passing = true, reaching = true, crosses = true, hits = true }
+local REACHING = { passes = true, reaches = true, crosses = true, hits = true }
 function G:trailing_level_condition()
   for k = 2, #self.t do
     if self:word(k, "once when") then
       local v = k + 1
       if self:word(v, "it") or self:has_ref(v, v + 1, "aircraft") then v = v + 1 end
-      if REACHING[(self.t[v] or {}).text] then
+      if v > k + 1 and REACHING[(self.t[v] or {}).text] then
         local q = self:quantities(v + 1, #self.t + 1)[1]
         if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) then
           for x = q.e, #self.t do
@@ -3366,13 +3366,21 @@ function M.translate(text, world)
   if not g.ask then
     local k, level = nil, nil
     if not cond then k, level = g:trailing_level_condition() end
-    g:parse(rest, k or #g.t + 1)
+    -- (a trailing condition holds the instruction of its own clause: the one after the last comma, "and"
+    -- or "then" before it)
+    local clause = rest
+    for x = rest, (k or 0) - 1 do
+      if g.t[x].kind == "punct" or g:word(x, "and @then_words") then clause = x + 1 end
+    end
+    if clause > rest then g:parse(rest, clause) end
+    local before = #g.out
+    g:parse(clause, k or #g.t + 1)
     if k and not g.ask then
       -- (the condition's words: what the ATALT says)
       g:take(level)
       g:explain(k, #g.t + 1)
       local f = handlers.format
-      for c = 1, #g.out do
+      for c = before + 1, #g.out do
         local id = g.out[c]:match("^%u+ (%S+)")
         g.out[c] = "ATALT " .. id .. " " .. (level.kind == "alt" and f.alt(level.value, level.fl) or f.int(level.value))
           .. " " .. g.out[c]
