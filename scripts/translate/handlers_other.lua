@@ -634,6 +634,17 @@ return function(H, f, compass)
       if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
         local whole = self:whole_place_name(r, b, e, id)
         if whole ~= nil then return whole or nil end
+        -- ("direct TEBBY": the name of the one navaid near the aircraft, TEB, before a fix of that ident
+        -- elsewhere, off its route)
+        local a = self:state(id)
+        local near = a and a.lat and self.world.navaids_named
+          and self.world.navaids_named(r.name, a.lat, a.lon, L.navaid_range_nm) or {}
+        local routed = false
+        for _, w in ipairs(a and a.route or {}) do routed = routed or w:upper() == r.name:upper() end
+        if #near == 1 and near[1]:upper() ~= r.name:upper() and not routed then
+          self:explain(r.b, r.e)
+          return near[1]
+        end
         return r.name
       end
     end
