@@ -2117,8 +2117,10 @@ function G:unknown_names()
     return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
   end
   for _, r in ipairs(self.refs) do
-    -- (in a reason, "also" adds nothing: "because the A350 also goes through HAGIS")
-    if r.kind == "aircraft" and (not r.exists or (added(r) and not self:in_reason(r.b))
+    -- (in a reason, "also" before a verb adds nothing: "because the A350 also goes through HAGIS"; a direction
+    -- does: "- we want ICE44 lower")
+    if r.kind == "aircraft" and (not r.exists or (added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
+          and self.t[r.e + 1] and self.t[r.e + 1].kind == "word" and not self:intent_at(r.e + 1)))
           or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
