@@ -682,7 +682,10 @@ local function written_forms(text)
   end)
   text = text:gsub("()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
     local w = sh[pre:lower()]
-    if not w then return nil end
+    -- ("when it's 15 miles from HEL": the letter of a contraction is no shorthand)
+    if not w or text:sub(at - 1, at - 1) == "'" or text:sub(math.max(1, at - 3), at - 1) == "\u{2019}" then
+      return nil
+    end
     local before = text:sub(1, at - 1):match("(%S+)%s*$")
     -- (after a number only a turn letter: "fl 310 rt 320"; "33.95 S" is a hemisphere, "2 h" hours)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end

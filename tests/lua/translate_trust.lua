@@ -2656,6 +2656,9 @@ do
     check(ex("when the Finnair passes MILTA, turn it left heading 180"):match("^ASK Should that happen at MILTA")
       ~= nil, "a heading at a waypoint")
     check(ex("when the Finnair passes EDERA, climb to FL370"):match("^ASK") ~= nil, "off the route")
+    -- the letter of a contraction before a number is no shorthand ("when it's 15 miles": no speed)
+    check_eq(ex("could the airBaltic descend to 8000 feet when it's 15 miles from EDISA?"),
+      "ATDIST BTI1AA EDISA 15 ALT BTI1AA 8000")
     -- a place in a reason is no condition at it
     check_eq(ex("could the airBaltic fly 260 knots and the Finnair 280 knots, so they reach EDISA together"),
       "SPD BTI1AA 260 ; SPD FIN2BB 280")
