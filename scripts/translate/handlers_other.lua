@@ -1115,6 +1115,13 @@ return function(H, f, compass)
     if to_dest then self:explain(dest_word - 1, dest_word + 1) end
     local point = self:point_at(s.trig + 1, s.e, id)
     if point == false then return end
+    -- "direct INKIG, correction, MALIX", "straight to INKIG... no, to MALIX, sorry, MALIX": a place said after
+    -- a correction replaces the one before it
+    local places = self:refs_in(s.trig, s.e, "waypoint")
+    if not point and #places >= 2 and self:word_in(places[1].e, places[#places].b, "@correction no sorry wait actually mean scratch") then
+      self:explain(places[1].b, places[#places].b)
+      point = self:waypoint(places[#places].b, s.e, id)
+    end
     local wp = to_dest or point or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
         and self:word_in(s.trig, s.e, "there it") and added or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the

@@ -2656,6 +2656,9 @@ do
     check(ex("when the Finnair passes MILTA, turn it left heading 180"):match("^ASK Should that happen at MILTA")
       ~= nil, "a heading at a waypoint")
     check(ex("when the Finnair passes EDERA, climb to FL370"):match("^ASK") ~= nil, "off the route")
+    -- a place said after a correction replaces the one before it (it was dropped in silence)
+    check_eq(ex("the Finnair direct NATAN, correction, MILTA"), "DIRECT FIN2BB MILTA")
+    check_eq(ex("could the Finnair go straight to NATAN... no, sorry, EDISA"), "DIRECT FIN2BB EDISA")
     -- the letter of a contraction before a number is no shorthand ("when it's 15 miles": no speed)
     check_eq(ex("could the airBaltic descend to 8000 feet when it's 15 miles from EDISA?"),
       "ATDIST BTI1AA EDISA 15 ALT BTI1AA 8000")
