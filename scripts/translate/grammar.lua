@@ -1870,6 +1870,12 @@ function G:at_waypoint(s, spec)
     local first = self:skip_fillers(s.b)
     for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
     local opening = self:word(r.b - 1, "at") and r.b - 1 == first
+    -- ("descend to FL60 and, when it is at RIGNO, reduce to 210 knots", "once it's at RIGNO, speed 210": a
+    -- condition of reaching the waypoint, opening its clause, is a constraint there)
+    local k = r.b - 2
+    if self:word(k, "is") then k = k - 1 end
+    opening = opening or (self:word(r.b - 1, "at") and self:word(k, "it it's") and self:word(k - 1, "when once")
+      and (k - 1 == first or self.t[k - 2] and (self.t[k - 2].kind == "punct" or self:word(k - 2, "and @then_words"))))
     -- "to be at AMPEG at FL120", "be at FL200 over ARTIP": the value the aircraft is to be at there, said
     -- after the waypoint or between "be at" and it (`be_at`: the first token of that value)
     local be_at

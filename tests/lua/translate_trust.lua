@@ -2656,6 +2656,10 @@ do
     check(ex("when the Finnair passes MILTA, turn it left heading 180"):match("^ASK Should that happen at MILTA")
       ~= nil, "a heading at a waypoint")
     check(ex("when the Finnair passes EDERA, climb to FL370"):match("^ASK") ~= nil, "off the route")
+    check_eq(ex("the Finnair should climb to FL370 and, when it is at MILTA, slow to 250 knots"),
+      "ALT FIN2BB FL370 ; AT FIN2BB MILTA SPD 250")
+    check(ex("the Finnair should climb to FL370 and, when it is at EDERA, slow to 250 knots"):match("^ASK") ~= nil,
+      "a condition mid-request at a place off the route")
     -- a place said after a correction replaces the one before it (it was dropped in silence)
     check_eq(ex("the Finnair direct NATAN, correction, MILTA"), "DIRECT FIN2BB MILTA")
     check_eq(ex("could the Finnair go straight to NATAN... no, sorry, EDISA"), "DIRECT FIN2BB EDISA")
