@@ -2431,6 +2431,7 @@ end
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
 -- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
+local CITY_NM = 40  -- a place said "near" a city lies this near one of its airports [NM]
 function G:explained_spans(issued, kinds)
   local inside = {}
   for _, r in ipairs(self.refs) do
@@ -2452,6 +2453,15 @@ function G:explained_spans(issued, kinds)
       k = r.e
       if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
       if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
+      -- ("at the RIX VOR near Riga": the city it lies by, a name the navdata gives a city's airport)
+      local n = self:word(r.e, "@navaid_kinds @airport_nouns") and r.e + 1 or r.e
+      local city = self.t[n + 1] and self.t[n + 1].kind == "word" and self.t[n + 1].raw:match("^%u") and self.t[n + 1].text
+      local lat, lon
+      if self:word(n, "near by") and city and self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(r.name) end
+      if lat and (#self.world.airports_of_city(lexicon.city_airports[city] or city, lat, lon, CITY_NM) > 0
+          or #self.world.airports_named(lexicon.city_airports[city] or city, lat, lon, CITY_NM) > 0) then
+        inside[n], inside[n + 1] = true, true
+      end
       -- ("direct GRM, the Gardermoen VOR": its name after "the", with its kind of navaid or airport after it)
       if self.t[r.e] and self.t[r.e].kind == "punct" and self:word(r.e + 1, "the") then
         local n = r.e + 2

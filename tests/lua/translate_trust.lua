@@ -2676,6 +2676,11 @@ do
     -- said before "directly"
     check_eq(ex("SAS5 direct TEBBY"), "ADDWPT SAS5 TEB ; DIRECT SAS5 TEB")
     check_eq(ex("SAS5, go to ARL directly please"), "ADDWPT SAS5 ARL ; DIRECT SAS5 ARL")
+    -- the city a place lies by ("near Riga"), when one of the city's airports is near it; another city asks
+    check_eq(ex("create BTI9ZZ BCS3 at the RIX VOR near Riga, heading 270, FL240, 290 knots"),
+      "CRE BTI9ZZ BCS3 RIX 270 FL240 290")
+    check(ex("create BTI9ZZ BCS3 at the RIX VOR near Oslo, heading 270, FL240, 290 knots"):match("^ASK .*'Oslo'") ~= nil,
+      "a city far from the place")
     -- an airline said before a new callsign of its own describes it; "one more" creates
     check_eq(ex("please create the SAS flight SAS9, an A320, at Arlanda, heading 180, FL100, 250 knots"),
       "CRE SAS9 A320 ESSA 180 FL100 250")
