@@ -2607,6 +2607,9 @@ do
   check_eq(ex("Hej, could the Lufthansa climb to FL320? Tack."), "ALT DLH4AX FL320")
   check_eq(ex("Labdien, ehm, the Lufthansa should reduce to 250 knots, paldies"), "SPD DLH4AX 250")
   check_eq(ex("Hei, the German one, the Lufthansa, heading 120 please. Kiitos!"), "HDG DLH4AX 120")
+  -- knots taken off the speed flown
+  check_eq(ex("the Lufthansa is a bit fast, could you take off 20 knots?"), "SPD DLH4AX 260")
+  check_eq(ex("knock 15 knots off the Lufthansa's speed"), "SPD DLH4AX 265")
   -- a regional family named without its variant
   check_eq(ex("could the CRJ descend to 6000 feet"), "ALT WIF3 6000")
   -- a human-factors study's words around an instruction
