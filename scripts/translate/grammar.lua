@@ -1842,6 +1842,26 @@ end
 -- an AT condition the grammar does not translate: asked, never issued at once.
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
+  -- "direct to the Arlanda VOR, and then when it's there descend to 4000 feet": "there" is the place the
+  -- aircraft was just sent direct to, a level or a speed there its AT constraint
+  local there = self:find_word(s.b, s.trig, "there")
+  if there < s.trig and self:word_in(math.max(s.b, there - 4), there, "when once") then
+    local ids, place = self:acids(s), nil
+    for _, line in ipairs(ids[1] and self.out or {}) do
+      place = line:match("^DIRECT " .. ids[1]:gsub("%p", "%%%0") .. " (%S+)$") or place
+    end
+    local qs = self:quantities(s.trig, s.e)
+    local q = #ids == 1 and #qs == 1 and qs[1]
+    local kind = q and ((q.kind == "alt" and "ALT") or ((q.kind == "speed" or q.kind == "mach") and "SPD"))
+    if place and kind then
+      local f = handlers.format
+      self:take(q)
+      self:explain(self:find_word(math.max(s.b, there - 4), there, "when once"), there + 1)
+      self:emit(string.format("AT %s %s %s %s", ids[1], place, kind,
+        kind == "ALT" and f.alt(q.value, q.fl) or (q.kind == "mach" and f.mach(q.value) or f.int(q.value))))
+      return true
+    end
+  end
   -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at"; a fix
   -- said whole stays that fix: "cross METRO at")
   local refs = self:refs_in(s.b, s.e, "waypoint")

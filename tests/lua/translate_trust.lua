@@ -2669,6 +2669,11 @@ do
     -- the letter of a contraction before a number is no shorthand ("when it's 15 miles": no speed)
     check_eq(ex("could the airBaltic descend to 8000 feet when it's 15 miles from EDISA?"),
       "ATDIST BTI1AA EDISA 15 ALT BTI1AA 8000")
+    -- "when it's there" after a direct-to: a level or a speed at that place; a heading there asks
+    check_eq(ex("the Finnair direct MILTA, and when it's there climb to FL370"),
+      "DIRECT FIN2BB MILTA ; AT FIN2BB MILTA ALT FL370")
+    check(ex("the Finnair direct MILTA and when it's there turn left heading 100"):match("^ASK") ~= nil,
+      "a heading once there")
     -- a place in a reason is no condition at it
     check_eq(ex("could the airBaltic fly 260 knots and the Finnair 280 knots, so they reach EDISA together"),
       "SPD BTI1AA 260 ; SPD FIN2BB 280")
