@@ -202,6 +202,8 @@ function m:acids(s)
   local both = self:find_word(s.b, s.e, "both")
   local icao, ae, codes
   if both < s.e then icao, ae, codes = self:airline_at(self:word(both + 1, "the") and both + 2 or both + 1) end
+  -- ("both the Finnair and the airBaltic": two aircraft named, no two of one airline)
+  if icao and self:word(ae, "and") then icao = nil end
   local pair = icao and self:airline_fleet(icao, codes) or {}
   if icao and #pair ~= 2 then
     self:need(string.format("Which two aircraft does 'both %s' mean? Please give their callsigns.", self:raw(both + 1, ae)))

@@ -913,6 +913,7 @@ return function(intent, rule, words)
   rule { "resume resumes", "resnav", near = { 6, "cpa" } }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
+  rule { "own", "lnav", next = "route", prev = { 3, "fly follow back resume" } }  -- "fly its own route again"
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"
   rule { "follow", "lnav", next = "your its the", near = { 3, "route" },  -- "follow your route again"
          not_near = { 6, "vertically vertical vnav profile altitude altitudes level levels" } }

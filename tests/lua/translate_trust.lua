@@ -2645,6 +2645,11 @@ do
     "CRE FIN2BB A321 58.6 21.5 220 FL350 270", "ADDWPT FIN2BB NATAN", "ADDWPT FIN2BB MILTA", "ADDWPT FIN2BB EDISA",
     "CRE SAS5 A320 59.4 18.2 010 FL120 280", "CRE NAX741 B738 59.7 10.9 030 FL090 250" }, "round 52's classes")
   if ex then
+    -- "both the Finnair and the airBaltic": the two aircraft named, no two of one airline
+    check_eq(ex("Both the Finnair and the airBaltic should descend to flight level 300."),
+      "ALT FIN2BB FL300 ; ALT BTI1AA FL300")
+    check(ex("both Finnair planes descend FL300"):match("^ASK Which two") ~= nil, "one Finnair flying")
+    check_eq(ex("could the Finnair fly its own route again?"), "LNAV FIN2BB ON")
     -- a direct-to for every aircraft named together
     check_eq(ex("the airBaltic and the Finnair should both go direct to EDISA"),
       "DIRECT BTI1AA EDISA ; DIRECT FIN2BB EDISA")
