@@ -857,6 +857,10 @@ return function(intent, rule, words)
   rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
+  -- "how fast is the Norwegian flying?", "how high is SAS1421 now?": a question of an aircraft's state
+  rule { "how", "pos", next = "fast high", when = function(g, i)
+    return g:has_ref(i + 2, math.min(#g.t + 1, i + 6), "aircraft") and g.t[#g.t].text == "?"
+  end }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "give me the position", "give me TEST01's and TEST02's positions"
   rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }

@@ -2607,6 +2607,9 @@ do
   check_eq(ex("Hej, could the Lufthansa climb to FL320? Tack."), "ALT DLH4AX FL320")
   check_eq(ex("Labdien, ehm, the Lufthansa should reduce to 250 knots, paldies"), "SPD DLH4AX 250")
   check_eq(ex("Hei, the German one, the Lufthansa, heading 120 please. Kiitos!"), "HDG DLH4AX 120")
+  -- a question of how fast or how high an aircraft flies shows it
+  check_eq(ex("How fast is the Lufthansa flying at the moment?"), "POS DLH4AX")
+  check_eq(ex("how high is our test aircraft now?"), "POS TEST07")
   -- knots taken off the speed flown
   check_eq(ex("the Lufthansa is a bit fast, could you take off 20 knots?"), "SPD DLH4AX 260")
   check_eq(ex("knock 15 knots off the Lufthansa's speed"), "SPD DLH4AX 265")
