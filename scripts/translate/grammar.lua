@@ -3379,8 +3379,6 @@ function M.translate(text, world)
   local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
     qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
   g:settle_callsigns()
-  if DEBUG_REFS then for _, r in ipairs(g.refs) do print("REF", r.kind, r.name, r.b, r.e, r.exists) end
-    for k, t in ipairs(g.t) do io.write(k, ":", t.kind, ":", t.text, " ") end print() end
   local same = g:same_for()
   g:airline_types()
   g:airline_refs()
