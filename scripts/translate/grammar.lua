@@ -3419,10 +3419,14 @@ function M.translate(text, world)
       g:take(level)
       g:explain(k, #g.t + 1)
       local f = handlers.format
+      local at = level.kind == "alt" and f.alt(level.value, level.fl) or f.int(level.value)
       for c = before + 1, #g.out do
         local id = g.out[c]:match("^%u+ (%S+)")
-        g.out[c] = "ATALT " .. id .. " " .. (level.kind == "alt" and f.alt(level.value, level.fl) or f.int(level.value))
-          .. " " .. g.out[c]
+        if not id or not g:state(id) then
+          g.ask = "Which aircraft's instruction should wait for " .. at .. "? Please say it with its callsign."
+          break
+        end
+        g.out[c] = "ATALT " .. id .. " " .. at .. " " .. g.out[c]
       end
     end
     if cond and not g.ask then

@@ -2630,6 +2630,7 @@ do
     "ATALT DLH4AX FL250 SPD DLH4AX 240")
   check_eq(ex("DLH4AX descend FL200, reduce to 240 knots once it passes FL250"),
     "ALT DLH4AX FL200 ; ATALT DLH4AX FL250 SPD DLH4AX 240")
+  check(ex("pause the sim once it reaches FL100"):match("^ASK") ~= nil, "a trailing condition with no aircraft's command")
   -- CRECONFS's closest point, said in words, and "a conflicting aircraft"
   check_eq(ex("create a conflicting aircraft against the Lufthansa: INT5, an A320, at 45 degrees, 1 mile at "
     .. "closest point, 200 seconds to loss of separation"), "CRECONFS INT5 A320 DLH4AX 45 1 200")
