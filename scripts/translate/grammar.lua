@@ -692,7 +692,10 @@ local function written_forms(text)
   end)
   text = text:gsub("()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
     local w = sh[pre:lower()]
-    if not w then return nil end
+    -- ("when it's 15 miles from HEL": the letter of a contraction is no shorthand)
+    if not w or text:sub(at - 1, at - 1) == "'" or text:sub(math.max(1, at - 3), at - 1) == "\u{2019}" then
+      return nil
+    end
     local before = text:sub(1, at - 1):match("(%S+)%s*$")
     -- (after a number only a turn letter: "fl 310 rt 320"; "33.95 S" is a hemisphere, "2 h" hours)
     if before and before:match("^[%d%.,%-]+$") and w ~= "left" and w ~= "right" then return nil end
@@ -1163,6 +1166,32 @@ for name, spec in pairs(M.intents) do
 end
 
 -- ---- conditions: "When AC01 reaches FL200, ..." ----
+-- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
+-- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120"): "once" or "when", "it" or
+-- the aircraft, a verb of reaching, then a level and words with no value, aircraft or instruction of their
+-- own to the end. Returns the position of "once"/"when" and the level's quantity, or nil.
+local REACHING = { passes = true, reaches = true, crosses = true, hits = true }
+function G:trailing_level_condition()
+  for k = 2, #self.t do
+    if self:word(k, "once when") then
+      local v = k + 1
+      if self:word(v, "it") or self:has_ref(v, v + 1, "aircraft") then v = v + 1 end
+      if v > k + 1 and REACHING[(self.t[v] or {}).text] then
+        local q = self:quantities(v + 1, #self.t + 1)[1]
+        if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) then
+          for x = q.e, #self.t do
+            if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
+          end
+          if #self:quantities(q.e, #self.t + 1) > 0 then return nil end
+          return k, q
+        end
+      end
+      return nil
+    end
+  end
+  return nil
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -1186,6 +1215,13 @@ function G:condition()
   if #ids == 0 then return nil, 1 end
   self.subject = ids[1].name
   local f = handlers.format
+  -- "when the Widerøe passes VIBUK, it should descend to 5000 feet", "once DLH2VA gets to MALIX, descend
+  -- FL80": a waypoint the aircraft reaches, no value, is a constraint there (G:at_condition)
+  local places = self:refs_in(i, comma, "waypoint")
+  if #places == 1 and #self:quantities(i, comma) == 0 and places[1].exists then
+    self.at_place = places[1].name
+    return "", rest
+  end
   for _, q in ipairs(self:quantities(i, comma)) do
     if q.kind == "alt" then return "ATALT " .. self.subject .. " " .. f.alt(q.value, q.fl), rest end
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
@@ -1201,6 +1237,27 @@ function G:condition()
   end
   self.ask = "At what altitude or speed should " .. self.subject .. " act?"
   return nil, rest
+end
+
+-- The instructions after a condition at a waypoint (G:condition: self.at_place) become BlueSky's AT
+-- constraints there ("AT id WPT ALT alt", "AT id WPT SPD spd"), each a level or speed of the condition's
+-- aircraft, the waypoint on its route; anything else (a heading, another aircraft, a place off the route)
+-- is asked, as at_waypoint asks.
+function G:at_condition()
+  local id, wp = self.subject, self.at_place
+  local on_route = false
+  for _, w in ipairs((self:state(id) or {}).route or {}) do on_route = on_route or w:upper() == wp:upper() end
+  local out = {}
+  for _, line in ipairs(self.out) do
+    local cmd, who, value = line:match("^(%u+) (%S+) (%S+)$")
+    if not on_route or who ~= id or (cmd ~= "ALT" and cmd ~= "SPD") then
+      self.ask = string.format("Should that happen at %s? squawk does not translate instructions tied to a "
+        .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.", wp, wp)
+      return
+    end
+    out[#out + 1] = string.format("AT %s %s %s %s", id, wp, cmd, value)
+  end
+  self.out = out
 end
 
 -- ---- segments: one instruction each ----
@@ -1672,7 +1729,7 @@ function G:parse(b, e)
           and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       elseif self:when_reached(s) and not before and #self.out == n_before + 1 and n_before > 0
-          and self.out[n_before]:match("^DIRECT ") and not self.ask then
+          and self.out[n_before]:match("^DIRECT ") and not self.out[#self.out]:match("^AT ") and not self.ask then
         -- "dct PTH, once there FL80": the constraint at the waypoint flown to (AT id WPT ALT/SPD value)
         local id, wpt = self.out[n_before]:match("^DIRECT (%S+) (%S+)$")
         local cmd, value = self.out[#self.out]:match("^(%u+) " .. (id or ""):gsub("%p", "%%%0") .. " (%S+)$")
@@ -1853,6 +1910,26 @@ end
 -- an AT condition the grammar does not translate: asked, never issued at once.
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
+  -- "direct to the Arlanda VOR, and then when it's there descend to 4000 feet": "there" is the place the
+  -- aircraft was just sent direct to, a level or a speed there its AT constraint
+  local there = self:find_word(s.b, s.trig, "there")
+  if there < s.trig and self:word_in(math.max(s.b, there - 4), there, "when once") then
+    local ids, place = self:acids(s), nil
+    for _, line in ipairs(ids[1] and self.out or {}) do
+      place = line:match("^DIRECT " .. ids[1]:gsub("%p", "%%%0") .. " (%S+)$") or place
+    end
+    local qs = self:quantities(s.trig, s.e)
+    local q = #ids == 1 and #qs == 1 and qs[1]
+    local kind = q and ((q.kind == "alt" and "ALT") or ((q.kind == "speed" or q.kind == "mach") and "SPD"))
+    if place and kind then
+      local f = handlers.format
+      self:take(q)
+      self:explain(self:find_word(math.max(s.b, there - 4), there, "when once"), there + 1)
+      self:emit(string.format("AT %s %s %s %s", ids[1], place, kind,
+        kind == "ALT" and f.alt(q.value, q.fl) or (q.kind == "mach" and f.mach(q.value) or f.int(q.value))))
+      return true
+    end
+  end
   -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at"; a fix
   -- said whole stays that fix: "cross METRO at")
   local refs = self:refs_in(s.b, s.e, "waypoint")
@@ -1881,6 +1958,12 @@ function G:at_waypoint(s, spec)
     local first = self:skip_fillers(s.b)
     for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
     local opening = self:word(r.b - 1, "at") and r.b - 1 == first
+    -- ("descend to FL60 and, when it is at RIGNO, reduce to 210 knots", "once it's at RIGNO, speed 210": a
+    -- condition of reaching the waypoint, opening its clause, is a constraint there)
+    local k = r.b - 2
+    if self:word(k, "is") then k = k - 1 end
+    opening = opening or (self:word(r.b - 1, "at") and self:word(k, "it it's") and self:word(k - 1, "when once")
+      and (k - 1 == first or self.t[k - 2] and (self.t[k - 2].kind == "punct" or self:word(k - 2, "and @then_words"))))
     -- "to be at AMPEG at FL120", "be at FL200 over ARTIP": the value the aircraft is to be at there, said
     -- after the waypoint or between "be at" and it (`be_at`: the first token of that value)
     local be_at
@@ -1952,7 +2035,7 @@ function G:at_waypoint(s, spec)
         return true
       end
     end
-    if self:word(r.b - 1, "at cross crossing over abeam overhead") then
+    if self:word(r.b - 1, "at cross crossing over abeam overhead") and not self:in_reason(r.b) then
       return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
         .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
         r.name, r.name))
@@ -2131,7 +2214,11 @@ function G:unknown_names()
     return self.t[colon] ~= nil and self.t[colon].text == ":" and self:has_ref(colon + 1, #self.t + 1, "aircraft")
   end
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
+    -- (in a reason, "also" before a verb adds nothing: "because the A350 also goes through HAGIS"; a direction
+    -- does: "- we want ICE44 lower")
+    if r.kind == "aircraft" and (not r.exists or (added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
+          and self.t[r.e + 1] and self.t[r.e + 1].kind == "word" and not self:intent_at(r.e + 1)))
+          or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
@@ -2139,6 +2226,39 @@ function G:unknown_names()
       return
     end
   end
+end
+
+-- After a request that only shows something (POS, LISTRTE), what the speaker wants to see in it, as a
+-- sentence of its own or a clause after a comma opening with a subject ("Where's the Norwegian? Is it
+-- already at RIGNO?", "show me its route, I want to see if MILTA is before EDISA", "I'm not sure KOGAV is
+-- in there"), is the reason for asking and is explained, the places it names too: it runs to the end of the
+-- request and holds no instruction word, no value and no aircraft the commands do not name. Nothing is
+-- flown by a query, so such a remark changes nothing.
+local SHOWS = { POS = true, LISTRTE = true }
+function G:info_remarks()
+  if #self.out == 0 then return end
+  local out = " " .. table.concat(self.out, " ") .. " "
+  for _, line in ipairs(self.out) do
+    if not SHOWS[line:match("^(%S+)")] then return end
+  end
+  local b
+  for k = 2, #self.t do
+    local t = self.t[k - 1]
+    if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!"
+        or (t.text == "," and self:word(k, CM_SUBJECTS))) then
+      b = k
+      break
+    end
+  end
+  if not b or b > #self.t then return end
+  if #self:quantities(b, #self.t + 1) > 0 then return end
+  for k = b, #self.t do
+    if self:intent_at(k) then return end
+  end
+  for _, r in ipairs(self:refs_in(b, #self.t + 1, "aircraft")) do
+    if not out:find(" " .. r.name:upper() .. " ", 1, true) then return end
+  end
+  self:explain(b, #self.t + 1)
 end
 
 -- A waypoint, fix or airport named that no command carries ("klm12 dc sugol
@@ -2399,6 +2519,7 @@ end
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
 -- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
+local CITY_NM = 40  -- a place said "near" a city lies this near one of its airports [NM]
 function G:explained_spans(issued, kinds)
   local inside = {}
   for _, r in ipairs(self.refs) do
@@ -2420,6 +2541,32 @@ function G:explained_spans(issued, kinds)
       k = r.e
       if self.t[k] and self.t[k].kind == "punct" then k = k + 1 end
       if self.t[k] and self.t[k].kind == "word" and self.t[k].raw:match("^%u") then inside[k] = true end
+      -- ("at the RIX VOR near Riga": the city it lies by, a name the navdata gives a city's airport)
+      local n = self:word(r.e, "@navaid_kinds @airport_nouns") and r.e + 1 or r.e
+      local city = self.t[n + 1] and self.t[n + 1].kind == "word" and self.t[n + 1].raw:match("^%u") and self.t[n + 1].text
+      local lat, lon
+      if self:word(n, "near by") and city and self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(r.name) end
+      if lat and (#self.world.airports_of_city(lexicon.city_airports[city] or city, lat, lon, CITY_NM) > 0
+          or #self.world.airports_named(lexicon.city_airports[city] or city, lat, lon, CITY_NM) > 0) then
+        inside[n], inside[n + 1] = true, true
+      end
+      -- ("direct GRM, the Gardermoen VOR": its name after "the", with its kind of navaid or airport after it)
+      if self.t[r.e] and self.t[r.e].kind == "punct" and self:word(r.e + 1, "the") then
+        local n = r.e + 2
+        while n < r.e + 5 and self.t[n] and self.t[n].kind == "word" and self.t[n].raw:match("^%u")
+            and not self:word(n, "@navaid_kinds @airport_nouns") and not MEANING[self.t[n].text] do
+          n = n + 1
+        end
+        local words = {}
+        for x = r.e + 2, n - 1 do words[#words + 1] = self.t[x].text end
+        local named = n > r.e + 2 and self.world.navaids_named
+          and self.world.navaids_named(table.concat(words, " "), 0, 0, 1e5) or {}
+        local same = false
+        for _, id in ipairs(named) do same = same or id:upper() == r.name:upper() end
+        if same and self:word(n, "@navaid_kinds @airport_nouns") then
+          for x = r.e + 1, n do inside[x] = true end
+        end
+      end
     end
   end
   -- "direct to the merge point MRG01", "the metering fix RILAX": a word naming the place's role, before
@@ -3057,6 +3204,23 @@ local function airline_values(text, fleet)
     end
     return nil
   end)
+  -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
+  -- thirty five degrees right")
+  local function spoken(ws)
+    for w in ws:gmatch("[^%s%-]+") do
+      if not NUMBER_WORDS[w:lower()] then return false end
+    end
+    return true
+  end
+  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
+                             "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" }) do
+    text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
+      if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
+        return the .. w .. "," .. s1 .. n .. s2 .. unit
+      end
+      return nil
+    end)
+  end
   -- "Shamrock 1 2 3": a flight number typed digit by digit after its airline's telephony, three or four
   -- single digits in a row, is one number
   return (text:gsub("(%f[%a]%a+%s+)(%d[%d%s]*%d)%f[^%d%s]", function(w, run)
@@ -3291,6 +3455,7 @@ function M.translate(text, world)
   g:airline_types()
   g:airline_refs()
   g:type_refs()
+  g:prefix_refs()
   g:opening_right()
   g:runway_sides()
   -- a latitude beyond a pole or a longitude beyond the antimeridian ("95 N", "190 W") is no position
@@ -3310,10 +3475,39 @@ function M.translate(text, world)
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()
   if not g.ask then
-    g:parse(rest, #g.t + 1)
+    local k, level = nil, nil
+    if not cond then k, level = g:trailing_level_condition() end
+    -- (a trailing condition holds the instruction of its own clause: the one after the last comma, "and"
+    -- or "then" before it)
+    local clause = rest
+    for x = rest, (k or 0) - 1 do
+      if g.t[x].kind == "punct" or g:word(x, "and @then_words") then clause = x + 1 end
+    end
+    if clause > rest then g:parse(rest, clause) end
+    local before = #g.out
+    g:parse(clause, k or #g.t + 1)
+    if k and not g.ask then
+      -- (the condition's words: what the ATALT says)
+      g:take(level)
+      g:explain(k, #g.t + 1)
+      local f = handlers.format
+      local at = level.kind == "alt" and f.alt(level.value, level.fl) or f.int(level.value)
+      for c = before + 1, #g.out do
+        local id = g.out[c]:match("^%u+ (%S+)")
+        if not id or not g:state(id) then
+          g.ask = "Which aircraft's instruction should wait for " .. at .. "? Please say it with its callsign."
+          break
+        end
+        g.out[c] = "ATALT " .. id .. " " .. at .. " " .. g.out[c]
+      end
+    end
     if cond and not g.ask then
       if #g.out == 0 then g.ask = "What should happen when the condition is met?" end
-      for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
+      if g.at_place then
+        g:at_condition()
+      else
+        for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
+      end
     end
   end
   if not g.ask then g:respectively() end
@@ -3329,6 +3523,7 @@ function M.translate(text, world)
     g.out = kept
   end
   if not g.ask and #g.out == 0 then g.ask = g.pending end
+  if not g.ask then g:info_remarks() end
   if not g.ask then g:dangling_correction() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end

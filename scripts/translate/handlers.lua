@@ -202,6 +202,8 @@ function m:acids(s)
   local both = self:find_word(s.b, s.e, "both")
   local icao, ae, codes
   if both < s.e then icao, ae, codes = self:airline_at(self:word(both + 1, "the") and both + 2 or both + 1) end
+  -- ("both the Finnair and the airBaltic": two aircraft named, no two of one airline)
+  if icao and self:word(ae, "and") then icao = nil end
   local pair = icao and self:airline_fleet(icao, codes) or {}
   if icao and #pair ~= 2 then
     self:need(string.format("Which two aircraft does 'both %s' mean? Please give their callsigns.", self:raw(both + 1, ae)))
@@ -473,6 +475,22 @@ function m:airline_refs()
     return r.kind == "waypoint" and not r.exists and r.e == r.b + 1 and self.t[r.b].raw:match("^%u%u%u$")
       and not self:word(r.e, "@navaid_kinds")
   end
+  -- "the SAS one, could it ...", "descend the SAS one to FL80": "one" after "the" and an airline, no digit,
+  -- number word or spelled letter after it, is the pronoun (the airline's aircraft), no flight number; the
+  -- callsign the matcher heard in it is no reference
+  local function pronoun_one(k)
+    local after = self.t[k + 1]
+    return self:word(k, "one") and not (after and (after.kind == "number" or after.number_word
+      or L.phonetic[after.text] or self:word(k + 1, "heavy super")))
+  end
+  for k = #self.refs, 1, -1 do
+    local r = self.refs[k]
+    local icao, e = self:airline_at(r.b)
+    if r.kind == "aircraft" and icao and e == r.e - 1 and self:word(r.b - 1, "the") and pronoun_one(e)
+        and (not r.exists or r.heard) then
+      table.remove(self.refs, k)
+    end
+  end
   local inside = {}
   for _, r in ipairs(self.refs) do
     if not unknown_place(r) then
@@ -480,6 +498,22 @@ function m:airline_refs()
     end
   end
   if not L.callsign_confirm.airline_alone then return end
+  -- ("create the SAS flight SAS902, an A21N, at Arlanda", "create an SAS A320 for us, callsign SAS123": the
+  -- airline said before a new callsign of its own, straight before it (an aircraft noun between or none) or
+  -- after an article, describes it: no place)
+  for i = 1, #self.t do
+    local icao, e = self:airline_at(i)
+    local at = icao and (self:word(e, "@aircraft_nouns") and e + 1 or e)
+    local upto = icao and (self:word(i - 1, "@articles_new") and #self.t + 1 or at + 1)
+    for _, r in ipairs(icao and self:refs_in(at, upto, "aircraft") or {}) do
+      if not r.exists and r.name:upper():sub(1, #icao) == icao then
+        for k = #self.refs, 1, -1 do
+          if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+        end
+        self:explain(i, r.b == at and at or e)
+      end
+    end
+  end
   local i = 1
   while i <= #self.t do
     local icao, e, codes = self:airline_at(i)
@@ -490,12 +524,27 @@ function m:airline_refs()
           or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
     local ok = icao and not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e))
         and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
-          or self:word(e, "heavy super")))
+          or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
         and not self:new_aircraft_follows(e - 1)
     local fits = ok and self:airline_fleet(icao, codes) or {}
     -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
     -- name no airline flying, "the ILS", are no airline)
-    if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
+    -- ("The SAS that's coming from the south, SAS 517, could it descend": the airline said again with its
+    -- flight number, in the same sentence before any instruction, is the one meant)
+    local named_later = false
+    for _, r in ipairs(#fits > 1 and self.refs or {}) do
+      if r.kind == "aircraft" and r.exists and r.b >= e and r.b <= e + 10 then
+        local sentence = true
+        for k = e, r.b - 1 do
+          local t = self.t[k]
+          sentence = sentence and not (t.kind == "punct" and t.text ~= ",") and not self:intent_at(k)
+        end
+        for _, id in ipairs(fits) do named_later = named_later or (sentence and id == r.name) end
+      end
+    end
+    if ok and named_later then self:explain(i, e) end
+    if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i)
+        and not named_later then
       self.airline_unresolved = self.airline_unresolved or {}
       table.insert(self.airline_unresolved, { b = i, e = e })
     end
@@ -504,7 +553,33 @@ function m:airline_refs()
         if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
       end
     end
+    if ok and the and pronoun_one(e) then  -- (the pronoun is part of the name, no value)
+      self:mark_used(e, e + 1)
+      e = e + 1
+    end
     i = self:insert_ref(fits, i, e, "by_airline")
+  end
+end
+
+-- An aircraft named by the letters of its callsign as a word, after a determiner and before an aircraft
+-- noun ("our test aircraft" TEST01, "the intruder plane" INTRUDER2), when no airline has that name and
+-- exactly one aircraft flying has those letters before its digits: a reference to it, as in airline_refs
+-- (by_prefix = true; the noun is part of it). Two of those letters flying ("the test aircraft" with TEST01
+-- and TEST02) name neither: the request is asked about as before.
+function m:prefix_refs()
+  local i = 2
+  while i < #self.t do
+    local t = self.t[i]
+    local fits = {}
+    if t.kind == "word" and t.alpha and #t.text >= 2 and self:word(i - 1, "the our this that my your")
+        and self:word(i + 1, "@aircraft_nouns")
+        and not self:airline_at(i) and not self:has_ref(i, i + 2, "aircraft") then
+      for _, a in ipairs(self.fleet) do
+        local letters = a.id:match("^(%a+)%d")
+        if letters and letters:lower() == t.text then fits[#fits + 1] = a.id end
+      end
+    end
+    i = self:insert_ref(fits, i, i + 2, "by_prefix")
   end
 end
 
@@ -596,6 +671,11 @@ function m:type_refs()
         for _, p in ipairs(ty and nick or {}) do of_nick = of_nick or ty:match(p) ~= nil end
         if ty and (set[ty] or of_nick) then fits[#fits + 1] = a.id end
       end
+    end
+    -- ("the CRJ": a family in capitals the lexer took for an unknown place)
+    for k = #self.refs, 1, -1 do
+      local r = self.refs[k]
+      if #fits == 1 and r.kind == "waypoint" and not r.exists and r.b == i and r.e == e then table.remove(self.refs, k) end
     end
     i = self:insert_ref(fits, i, e, "by_type")
   end

@@ -634,6 +634,24 @@ return function(H, f, compass)
       if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
         local whole = self:whole_place_name(r, b, e, id)
         if whole ~= nil then return whole or nil end
+        -- ("direct TEBBY": the name of the one navaid near the aircraft, TEB, before a fix of that ident
+        -- elsewhere, off its route)
+        local a = self:state(id)
+        local near = a and a.lat and self.world.navaids_named
+          and self.world.navaids_named(r.name, a.lat, a.lon, L.navaid_range_nm) or {}
+        local keep = false
+        for _, w in ipairs(a and a.route or {}) do keep = keep or w:upper() == r.name:upper() end
+        -- (a fix of that ident near the aircraft stays that fix)
+        local flat, flon = nil, nil
+        if #near == 1 and self.world.user_waypoint_at then flat, flon = self.world.user_waypoint_at(r.name) end
+        if flat then
+          local dlat, dlon = flat - a.lat, (flon - a.lon) * math.cos(math.rad(a.lat))
+          keep = keep or 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm
+        end
+        if #near == 1 and near[1]:upper() ~= r.name:upper() and not keep then
+          self:explain(r.b, r.e)
+          return near[1]
+        end
         return r.name
       end
     end
@@ -1080,9 +1098,14 @@ return function(H, f, compass)
     return self:need(string.format("Which point at %s is meant: %s?", where, table.concat(ids, " or "))) or false
   end
 
+  -- "the airBaltic and the Finnair both direct EDISA": each aircraft named flies there
   function m:direct(s)
-    local id = self:acid(s, "fly direct")
-    if not id then return end
+    local ids = self:acids(s)
+    if #ids == 0 then return self:need("Which aircraft should fly direct? Please give its callsign.") end
+    for _, id in ipairs(ids) do self:direct_one(s, id) end
+  end
+
+  function m:direct_one(s, id)
     local a = self:state(id)
     -- "add TABUM to its route and send it direct there", "add SPY and then go direct to it": the
     -- waypoint this request added just before
@@ -1099,8 +1122,21 @@ return function(H, f, compass)
     if to_dest then self:explain(dest_word - 1, dest_word + 1) end
     local point = self:point_at(s.trig + 1, s.e, id)
     if point == false then return end
+    -- "direct INKIG, correction, MALIX", "straight to INKIG... no, to MALIX, sorry, MALIX": a place said after
+    -- a correction replaces the one before it
+    local places = self:refs_in(s.trig, s.e, "waypoint")
+    if not point and #places >= 2 and self:word_in(places[1].e, places[#places].b, "@correction no sorry wait actually mean scratch") then
+      self:explain(places[1].b, places[#places].b)
+      point = self:waypoint(places[#places].b, s.e, id)
+    end
     local wp = to_dest or point or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
         and self:word_in(s.trig, s.e, "there it") and added or self:waypoint(s.trig, s.e, id)
+    -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
+    -- adverb that ends the clause
+    if not wp and self:word(s.trig, "directly direct") then
+      local to = self:find_word(s.b, s.trig, "to")
+      if to < s.trig then wp = self:waypoint(to + 1, s.trig, id) end
+    end
     if not wp and a and a.route and #a.route == 1 then wp = a.route[1] end
     wp = wp or self:spoken_name(s.trig + 1, s.e)
     if not wp then return self:need("Direct to which waypoint should " .. id .. " fly?") end
@@ -1781,9 +1817,15 @@ return function(H, f, compass)
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
-    -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?")
-    return self.t[#self.t].text == "?" and (self:word(first, "is are what what's whats which")
-      or self:word_in(1, #self.t + 1, "check whether"))
+    -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
+    -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
+    local ends = #self.t
+    for k = 1, #self.t do
+      local t = self.t[k]
+      if t.kind == "punct" and (t.text == "?" or t.text == "." or t.text == "!") then ends = k break end
+    end
+    return self.t[ends].text == "?" and (self:word(first, "is are what what's whats which")
+      or self:word_in(1, ends, "check whether"))
   end
   function m:switch(s, spec)
     if self:asks_setting() then return self:emit(spec.cmd) end

@@ -348,6 +348,8 @@ return function(H, f, wrap, compass)
     end
     if not q then return self:need("What speed should " .. ids[1] .. " fly? Please give knots or a Mach number.") end
     local dir = self:direction(s)
+    -- "take off about 30 knots", "knock 20 knots off": knots taken away
+    if dir == 0 and self:word_in(s.b, s.e, "take knock") and self:word_in(s.b, s.e, "off") then dir = -1 end
     for _, id in ipairs(ids) do
       local spd
       if q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1) then

@@ -76,9 +76,11 @@ return {
     discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit",
         "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
-        "ok", "okay", "oh", "hmm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
+        "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
-        "entirely", "moment", "away", "back", "aside" },
+        "entirely", "moment", "away", "back", "aside", "apart",
+        -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
+        "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
@@ -111,7 +113,10 @@ return {
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
         "mate", "kia", "ora", "howzit",
         -- the same courtesy in German ("Grüß Gott", "Entschuldigung", "danke", "bitte", "servus")
-        "entschuldigung", "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi" },
+        "entschuldigung", "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi",
+        -- the same in the Nordic and Baltic languages ("Hej, ...", "Tack", "Kiitos", "Labdien", "Paldies")
+        "hej", "hei", "moi", "tere", "tack", "takk", "tak", "kiitos", "labdien", "paldies", "labas", "aciu",
+        "aitah", "sveiki" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -140,8 +145,10 @@ return {
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac", "acft",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
-        -- an aircraft described by its size ("the small Cessna", "a big Boeing")
-        "small", "little", "big",
+        -- an aircraft described by its size ("the small Cessna", "a big Boeing") or its airline's country ("the
+        -- German one, the Lufthansa"; names that are airlines' own, "Norwegian", "Swiss", are not here)
+        "small", "little", "big", "german", "swedish", "danish", "finnish", "dutch", "french", "spanish",
+        "italian", "polish", "latvian", "lithuanian", "icelandic", "portuguese", "hungarian", "greek",
         -- the margin a resolution keeps ("resolution margin factor 1.05")
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
@@ -165,7 +172,13 @@ return {
         "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
-        "experiments" },
+        "experiments",
+        -- a human-factors study's instruments and measures ("the eye tracker is calibrated", "fill in the
+        -- NASA-TLX", "so the geometry works", "the crossing angle")
+        "eye", "tracker", "eye-tracker", "nasa", "tlx", "nasa-tlx", "questionnaire", "workload", "geometry",
+        "calibrated", "crossing", "condition", "conditions", "baseline", "measurement", "measurements",
+        -- a part of the airspace a study is run in ("for the terminal area trials")
+        "terminal", "en-route", "enroute" },
 
     -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
     prefixes = { "co", "non", "pre", "semi", "sub", "multi", "re" },
@@ -291,7 +304,7 @@ return {
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
-  articles_new = { "a", "an", "new", "second", "another" },
+  articles_new = { "a", "an", "new", "second", "another", "more" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
   -- the family's first designator (B737, the 737-700), which a family said alone still names
   airline_variant = { ["737"] = "B738" },
@@ -352,7 +365,9 @@ return {
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
-      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz" },
+      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz",
+      -- a study's questionnaires and measures ("fill in the NASA-TLX")
+      "nasa", "tlx", "nasa-tlx" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
   passed_over = { "skip", "skipping", "bypass", "bypassing", "not", "instead" },
   below = { "below", "under" },
@@ -592,8 +607,8 @@ return {
   speed_units = { "knots", "knot", "kts", "kt" },
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course
-  intruder = { "intruder", "conflict" },
-  closest_approach = { "cpa", "miss", "passing" },
+  intruder = { "intruder", "conflict", "conflicting" },
+  closest_approach = { "cpa", "miss", "passing", "closest" },
   loss_of_separation = { "los", "tlos", "tlosh" },
   head_on = { "head-on", "head" },
   -- the clock reaching a time ("when the clock hits 45 minutes")

@@ -869,6 +869,10 @@ return function(intent, rule, words)
   rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
+  -- "how fast is the Norwegian flying?", "how high is SAS1421 now?": a question of an aircraft's state
+  rule { "how", "pos", next = "fast high", when = function(g, i)
+    return g:has_ref(i + 2, math.min(#g.t + 1, i + 6), "aircraft") and g.t[#g.t].text == "?"
+  end }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "give me the position", "give me TEST01's and TEST02's positions"
   rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }
@@ -909,6 +913,10 @@ return function(intent, rule, words)
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
+  -- "could you start it again?": the clock, no aircraft named in the request
+  rule { "start", "op", next = "it", when = function(g, i)
+    return g:word(i + 2, "again") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "go", "op", next = "on", near = { 4, "@sim" } }  -- "go on with the simulation"
   -- "set the sim running", "get it running again": the clock started
   rule { "running", "op", prev = { 1, "@sim it" }, not_near = { 4, "speed rate times real normal" }, when = function(g, i)
@@ -921,6 +929,7 @@ return function(intent, rule, words)
   rule { "resume resumes", "resnav", near = { 6, "cpa" } }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
+  rule { "own", "lnav", next = "route", prev = { 3, "fly follow back resume" } }  -- "fly its own route again"
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"
   rule { "follow", "lnav", next = "your its the", near = { 3, "route" },  -- "follow your route again"
          not_near = { 6, "vertically vertical vnav profile altitude altitudes level levels" } }
@@ -973,8 +982,9 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "slow slower faster speed multiplier rate")
       or g:word_in(i + 2, math.min(#g.t + 1, i + 7), "multiplier rate")
   end }
-  -- "back to normal speed, real time": real time said again beside a normal rate names that rate
-  rule { "real", false, next = "time", when = function(g, i) return g:preceded_by(i, 4, "normal") end }
+  -- "back to normal speed, real time", "back to normal speed, please, real time": real time said again beside
+  -- a normal rate (anywhere in the request) names that rate
+  rule { "real", false, next = "time", when = function(g, i) return g:word_in(1, #g.t + 1, "normal") end }
   rule { "real", "op", next = "time" }
   rule { "fast", "ff", next = "forward" }
   rule { "ff fastforward fwd", "ff" }
@@ -1051,6 +1061,10 @@ return function(intent, rule, words)
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
+  -- "write 'trial 4 start' into the log", "put 'baseline done' in the log": quoted text for the log
+  rule { "write put add enter", "echo", when = function(g, i)
+    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log")
+  end }
 
   -- conflict detection and resolution
   -- "the look-ahead time for conflict detection", "the radius for resolution": the setting's owner

@@ -109,6 +109,9 @@ M.nicknames = {
   piper = { "^P28%w$", "^PA%d%d%w?$" },
   hercules = { "^C130$" },
   herc = { "^C130$" },
+  -- (regional families named without their variant: "the CRJ" is a CRJ200 to CRJ1000, "the ATR" an ATR 42 or 72)
+  crj = { "^CRJ%w$" },
+  atr = { "^AT[4-7]%w$" },
 }
 
 function M.build(designators)

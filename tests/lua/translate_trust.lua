@@ -2698,3 +2698,125 @@ do
   check_eq(ex("exs31k dct kobal then climb fl220"), "DIRECT EXS31K KOBAL ; ALT EXS31K FL220")
   check(ex("exs31k dct TULIX then KOBAL"):match("^ASK .*'KOBAL'") ~= nil, ex("exs31k dct TULIX then KOBAL"))
 end
+-- Round 52's classes (human-factors researchers over Scandinavia and the Baltic: polite full sentences,
+-- aircraft by airline or nickname, greetings in their own languages)
+do
+  local _, ex = scene({ "CRE TEST07 B738 59.4 18.7 300 FL100 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+    "CRE SAS1421 A320 55 12 010 FL120 280", "CRE WIF3 CRJ9 60 10 110 FL080 220" })
+  -- an aircraft named by its callsign's letters before an aircraft noun ("our test aircraft": TEST07)
+  check_eq(ex("could you turn our test aircraft left heading 200"), "HDG TEST07 200 LEFT")
+  check_eq(ex("the test plane should climb to FL140, please"), "ALT TEST07 FL140")
+  check_eq(ex("please set the test aircraft's speed to 230 knots"), "SPD TEST07 230")
+  check(ex("climb the test to FL140"):match("^ASK") ~= nil, "the letters with no aircraft noun name nothing")
+  -- "the SAS one": "one" with no digit after it is the pronoun, no flight number 1
+  check_eq(ex("could you bring the SAS one down to FL90"), "ALT SAS1421 FL90")
+  check_eq(ex("the SAS one, turn it right heading 090 please"), "HDG SAS1421 90 RIGHT")
+  check_eq(ex("reduce the SAS one to 210 knots"), "SPD SAS1421 210")
+  check_eq(ex("the SAS one four two one, descend FL90"), "ALT SAS1421 FL90")
+  -- a relative turn said in words after an airline is no flight number
+  check_eq(ex("turn the Lufthansa fifteen degrees right"), "HDG DLH4AX 105 RIGHT")
+  check_eq(ex("could the Lufthansa go twenty five degrees left"), "HDG DLH4AX 65 LEFT")
+  -- greetings and thanks in the Nordic and Baltic languages, and their hesitations
+  check_eq(ex("Hej, could the Lufthansa climb to FL320? Tack."), "ALT DLH4AX FL320")
+  check_eq(ex("Labdien, ehm, the Lufthansa should reduce to 250 knots, paldies"), "SPD DLH4AX 250")
+  check_eq(ex("Hei, the German one, the Lufthansa, heading 120 please. Kiitos!"), "HDG DLH4AX 120")
+  -- a question of how fast or how high an aircraft flies shows it
+  check_eq(ex("How fast is the Lufthansa flying at the moment?"), "POS DLH4AX")
+  check_eq(ex("how high is our test aircraft now?"), "POS TEST07")
+  -- knots taken off the speed flown
+  check_eq(ex("the Lufthansa is a bit fast, could you take off 20 knots?"), "SPD DLH4AX 260")
+  check_eq(ex("knock 15 knots off the Lufthansa's speed"), "SPD DLH4AX 265")
+  -- a regional family named without its variant
+  check_eq(ex("could the CRJ descend to 6000 feet"), "ALT WIF3 6000")
+  -- a human-factors study's words around an instruction
+  check_eq(ex("pause the sim please, the participant is filling in the NASA-TLX"), "HOLD")
+  check_eq(ex("the eye tracker is calibrated now, please run the sim again"), "OP")
+  -- the clock: "start it again" with no aircraft named, real time beside a normal rate, a note for the log
+  check_eq(ex("could you start it again? the participant is ready"), "OP")
+  check_eq(ex("normal speed again, please, and real time"), "DTMULT 1")
+  check_eq(ex("please write 'block 2 begins' into the log"), "ECHO block 2 begins")
+  -- a question about a setting, a remark after it; an instruction after it still asks
+  check_eq(ex("Is conflict detection on at the moment? The alerts seem quiet."), "ASAS")
+  check(ex("Is conflict detection on? Please switch it on if not."):match("^ASK") ~= nil, "a condition after it")
+  -- a trailing level condition with its own subject; said with a participle it is read as before
+  check_eq(ex("slow the Lufthansa to 240 knots once it reaches FL250 on the way down"),
+    "ATALT DLH4AX FL250 SPD DLH4AX 240")
+  check_eq(ex("DLH4AX descend FL200, reduce to 240 knots once it passes FL250"),
+    "ALT DLH4AX FL200 ; ATALT DLH4AX FL250 SPD DLH4AX 240")
+  check(ex("pause the sim once it reaches FL100"):match("^ASK") ~= nil, "a trailing condition with no aircraft's command")
+  -- CRECONFS's closest point, said in words, and "a conflicting aircraft"
+  check_eq(ex("create a conflicting aircraft against the Lufthansa: INT5, an A320, at 45 degrees, 1 mile at "
+    .. "closest point, 200 seconds to loss of separation"), "CRECONFS INT5 A320 DLH4AX 45 1 200")
+end
+do
+  local _, ex = scene({ "CRE TEST07 B738 59.4 18.7 300 FL100 250", "CRE TEST08 B738 59.5 18.7 300 FL100 250",
+    "CRE SAS1421 A320 55 12 010 FL120 280", "CRE SAS88 A320 56 12 010 FL160 280" })
+  check(ex("could you turn our test aircraft left heading 200"):match("^ASK") ~= nil, "two test aircraft")
+  check(ex("bring the SAS one down to FL90"):match("^ASK Which SAS") ~= nil, "two SAS")
+  -- the airline said again with its flight number in the same sentence names that one
+  check_eq(ex("the SAS up north, SAS 88, should climb to FL200"), "ALT SAS88 FL200")
+  check(ex("the SAS should climb to FL200, SAS88 too"):match("^ASK") ~= nil, "an instruction between")
+end
+do
+  local _, ex = navscene({ "CRE BTI1AA BCS3 57.5 20.0 120 FL350 280", "ADDWPT BTI1AA EDERA", "ADDWPT BTI1AA EDISA",
+    "CRE FIN2BB A321 58.6 21.5 220 FL350 270", "ADDWPT FIN2BB NATAN", "ADDWPT FIN2BB MILTA", "ADDWPT FIN2BB EDISA",
+    "CRE SAS5 A320 59.4 18.2 010 FL120 280", "CRE NAX741 B738 59.7 10.9 030 FL090 250" }, "round 52's classes")
+  if ex then
+    -- "both the Finnair and the airBaltic": the two aircraft named, no two of one airline
+    check_eq(ex("Both the Finnair and the airBaltic should descend to flight level 300."),
+      "ALT FIN2BB FL300 ; ALT BTI1AA FL300")
+    check(ex("both Finnair planes descend FL300"):match("^ASK Which two") ~= nil, "one Finnair flying")
+    check_eq(ex("could the Finnair fly its own route again?"), "LNAV FIN2BB ON")
+    -- a direct-to for every aircraft named together
+    check_eq(ex("the airBaltic and the Finnair should both go direct to EDISA"),
+      "DIRECT BTI1AA EDISA ; DIRECT FIN2BB EDISA")
+    -- a remark after a query naming places is its reason; one with an instruction or a value is not
+    check_eq(ex("where is the Finnair now? has it passed NATAN already?"), "POS FIN2BB")
+    check_eq(ex("show me the airBaltic's route, I want to check that EDERA comes first"), "LISTRTE BTI1AA")
+    check(ex("where is the Finnair? is it at FL300 yet?"):match("^ASK") ~= nil, "a value in the remark")
+    -- a condition at a waypoint of the route is an AT constraint; a heading there, or a place off the
+    -- route, is asked
+    check_eq(ex("when the Finnair passes MILTA, it should climb to FL370"), "AT FIN2BB MILTA ALT FL370")
+    check_eq(ex("once the Finnair gets to MILTA, reduce to 250 knots"), "AT FIN2BB MILTA SPD 250")
+    check(ex("when the Finnair passes MILTA, turn it left heading 180"):match("^ASK Should that happen at MILTA")
+      ~= nil, "a heading at a waypoint")
+    check(ex("when the Finnair passes EDERA, climb to FL370"):match("^ASK") ~= nil, "off the route")
+    check_eq(ex("the Finnair should climb to FL370 and, when it is at MILTA, slow to 250 knots"),
+      "ALT FIN2BB FL370 ; AT FIN2BB MILTA SPD 250")
+    check(ex("the Finnair should climb to FL370 and, when it is at EDERA, slow to 250 knots"):match("^ASK") ~= nil,
+      "a condition mid-request at a place off the route")
+    -- a place said after a correction replaces the one before it (it was dropped in silence)
+    check_eq(ex("the Finnair direct NATAN, correction, MILTA"), "DIRECT FIN2BB MILTA")
+    check_eq(ex("could the Finnair go straight to NATAN... no, sorry, EDISA"), "DIRECT FIN2BB EDISA")
+    -- the letter of a contraction before a number is no shorthand ("when it's 15 miles": no speed)
+    check_eq(ex("could the airBaltic descend to 8000 feet when it's 15 miles from EDISA?"),
+      "ATDIST BTI1AA EDISA 15 ALT BTI1AA 8000")
+    -- "when it's there" after a direct-to: a level or a speed at that place; a heading there asks
+    check_eq(ex("the Finnair direct MILTA, and when it's there climb to FL370"),
+      "DIRECT FIN2BB MILTA ; AT FIN2BB MILTA ALT FL370")
+    check(ex("the Finnair direct MILTA and when it's there turn left heading 100"):match("^ASK") ~= nil,
+      "a heading once there")
+    -- a place in a reason is no condition at it
+    check_eq(ex("could the airBaltic fly 260 knots and the Finnair 280 knots, so they reach EDISA together"),
+      "SPD BTI1AA 260 ; SPD FIN2BB 280")
+    -- a navaid's name after its ident, when the navdata gives it that name
+    check_eq(ex("NAX741 direct GRM, the Gardermoen VOR"), "ADDWPT NAX741 GRM ; DIRECT NAX741 GRM")
+    check(ex("NAX741 direct GRM, the Oslo VOR"):match("^ASK .*'Oslo'") ~= nil, "another navaid's name")
+    -- the one navaid near the aircraft by its name, never a fix of that ident on another continent; the place
+    -- said before "directly"
+    check_eq(ex("SAS5 direct TEBBY"), "ADDWPT SAS5 TEB ; DIRECT SAS5 TEB")
+    check_eq(ex("SAS5, go to ARL directly please"), "ADDWPT SAS5 ARL ; DIRECT SAS5 ARL")
+    -- the city a place lies by ("near Riga"), when one of the city's airports is near it; another city asks
+    check_eq(ex("create BTI9ZZ BCS3 at the RIX VOR near Riga, heading 270, FL240, 290 knots"),
+      "CRE BTI9ZZ BCS3 RIX 270 FL240 290")
+    check(ex("create BTI9ZZ BCS3 at the RIX VOR near Oslo, heading 270, FL240, 290 knots"):match("^ASK .*'Oslo'") ~= nil,
+      "a city far from the place")
+    -- an airline said before a new callsign of its own describes it; "one more" creates
+    check_eq(ex("please create the SAS flight SAS9, an A320, at Arlanda, heading 180, FL100, 250 knots"),
+      "CRE SAS9 A320 ESSA 180 FL100 250")
+    check_eq(ex("could you create an SAS A321 for us, callsign SAS10, at 59 north 18 east, heading 090, FL110, 260 knots"),
+      "CRE SAS10 A321 59 18 90 FL110 260")
+    check_eq(ex("make one more A320 at the Trosa VOR heading 090, FL120, 240 knots, callsign EXP5"),
+      "CRE EXP5 A320 TRS 90 FL120 240")
+  end
+end
