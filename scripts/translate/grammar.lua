@@ -938,7 +938,8 @@ function G:in_reason(i)
       elseif t.kind == "punct" and self:word(k + 1, "@then_words") then
         -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
         inside = false
-      elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then
+      elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so"))
+          or (self:word(k, "see") and self:word(k + 1, "@see_whether") and instructed(k)) then
         inside = true
       elseif self:word(k, "so") and k > 1 and self.t[k - 1].kind ~= "punct" and not self.t[k - 1].filler
           and self:has_ref(k + 1, k + 3, "aircraft") then

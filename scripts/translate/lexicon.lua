@@ -212,7 +212,7 @@ return {
         "separation", "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite",
         "define", "teleport", "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes",
         "timestep", "protected", "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude",
-        "minimum", "horizontal", "forward", "right", "left", },
+        "minimum", "horizontal", "forward", "right", "left", "creconfs", },
     common = { "stop", "them", "last", "want", "have", "from", "with", "what", "also", "back", "give", "make",
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
@@ -319,6 +319,9 @@ return {
   -- verbs of the experimenter's purpose after a comma (", we want it crossing ..."): a reason
   purpose_verbs = { "want", "need", "don't", "dont", "wanna" },
   reason_after_so = { "that", "it", "they", "it's", "its", "we", "he", "she", "he's", "she's", "the" },
+  -- the experimenter's check after an instruction, "see" then one of these ("ff 2 min and see if they lose
+  -- separation", ", see whether that's enough"): a reason, to the end of its sentence
+  see_whether = { "if", "whether" },
   -- asides set apart from a complete instruction (G:commentary; they account for no word): a span after a dash or in brackets,
   -- or a clause after a comma opening with one of `subjects` ("- hard test of the turn model", ", we only
   -- care about the descent phase"); a lead-in before a colon opening with one of `leads` ("For the
@@ -340,7 +343,9 @@ return {
           later = { "later", "afterwards", "afterward" },
           lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },
           leads = { "for", "to" },
-          labels = { "reason", "purpose", "rationale", "why", "aim", "goal", "note", "comment", "context" },
+          -- (a note to oneself, "note to self:", is the speaker's, to the end of its sentence)
+          labels = { "reason", "purpose", "rationale", "why", "aim", "goal", "note", "comment", "context", "self",
+                     "myself" },
           blocks = { "and", "then", "also", "same", "both", "either", "again", "correction", "disregard",
                      "negative", "plus", "next" },
           determiners = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my",
@@ -589,10 +594,22 @@ return {
   speed_units = { "knots", "knot", "kts", "kt" },
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course
-  intruder = { "intruder", "conflict" },
+  intruder = { "intruder", "conflict", "conflicting", "converger" },
   closest_approach = { "cpa", "miss", "passing" },
-  loss_of_separation = { "los", "tlos", "tlosh" },
+  loss_of_separation = { "los", "tlos", "tlosh", "loss" },
   head_on = { "head-on", "head" },
+  -- a new aircraft placed along another's track ("20 nm ahead of KLM12", "dead behind KL001 at 15 nm"):
+  -- the side, as a bearing off that aircraft's heading [deg]; its course then said against that
+  -- aircraft's: the reverse ("head-on", "opposite direction", "coming the other way", "reciprocal") or the
+  -- same ("same heading", "same track"); its level and speed by a difference ("1000 ft above", "30 kt faster")
+  along_track = { ahead = 0, behind = 180 },
+  -- whom a note is for when it is the speaker's own ("note to self:", "note for me:"), not the log's
+  note_to_self = { "self", "myself", "me" },
+  ownship = { "ownship", "own-ship" },
+  course_reversed = { "head-on", "opposite", "reciprocal", "other" },
+  course_nouns = { "heading", "hdg", "direction", "track", "course", "way" },
+  faster = { "faster", "quicker" },
+  slower = { "slower" },
   -- the clock reaching a time ("when the clock hits 45 minutes")
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
   -- more of the same ("3 more random ones")

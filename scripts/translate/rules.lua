@@ -452,17 +452,37 @@ return function(intent, rule, words)
   end }
   -- "spawn a conflict for KL204: INT1, A320, 90 deg off its track, cpa 0, los in 200 s", "make an intruder
   -- called TEST1 ... head-on, passing 1 mile, LoS after 4 minutes": an intruder set up to conflict
+  -- ("put an intruder 20 nm ahead of KLM12 head-on", "intruder INT4 dead behind KL001 at 15 nm": placed
+  -- at a distance along an aircraft's track, the intruder is a creation, CRE)
+  local function along_track(g)
+    for _, q in ipairs(g:quantities(1, #g.t + 1)) do
+      if q.kind == "dist" and (g:word(q.e, "@along_track") or g:word(q.b - 1, "at") and g:word_in(math.max(1, q.b - 5), q.b, "@along_track")) then
+        return true
+      end
+    end
+    return false
+  end
   rule { "create spawn generate creat cre make new add put", "creconfs", when = function(g, i)
     return g:followed_by(i, 4, "@intruder")
-      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
+      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
   end }
+  rule { "intruder", "create", when = along_track }
+  -- ("INT3: A320, 40 nm ahead of the ownship KL001, ...": a new callsign and a type, no other creation word)
+  rule { "ahead behind", "create", when = function(g, i)
+    if not along_track(g) or not g:has_ref(1, #g.t + 1, "type") then return false end
+    for k = 1, i - 1 do if g:intent_at(k) == "create" then return false end end
+    for _, r in ipairs(g.refs) do if r.kind == "aircraft" and not r.exists then return true end end
+    return false
+  end }
+  -- ("opposite heading", "same track": the new aircraft's course against the one it is placed by, no turn)
+  rule { "heading hdg direction track course", false, prev = { 1, "same opposite reciprocal" }, when = along_track }
   -- "intruder on IBE2604: INT1, B738, from the right, CPA 0, 250 s", "give TAP123 a head-on intruder, INT2,
-  -- B738, CPA 2 miles": the noun alone, no verb of creation before it, sets one up when its type and
+  -- B738, CPA 2 miles", "conflict on KL001: INT2, A320, 135 deg, cpa 2, tlosh 500": the noun alone, no verb of creation before it, sets one up when its type and
   -- closest approach or loss are said
   rule { "creconfs", "creconfs" }  -- the command's name typed with its values in words ("creconfs INT1 B738 EZY45 dpsi 180 ...")
-  rule { "intruder", "creconfs", when = function(g, i)
+  rule { "intruder conflict conflicting converger", "creconfs", when = function(g, i)
     return not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
-      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
+      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
   end }
   -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
   -- aircraft with no callsign is random traffic
@@ -989,6 +1009,12 @@ return function(intent, rule, words)
   rule { "reset", false, near = { 3, "protected protection pz rpz zone zoner separation radius" } }
   -- "pause the sim while I reset the eye tracker": the speaker's own doing in a clause of time, no instruction
   rule { "reset restart", false, prev = { 1, "i we" }, when = function(g, i) return g:word(i - 2, "while when as after before until once") end }
+  -- "reset KL001 to 50.5, 5.0, FL200, ...": an aircraft put back to a position said is moved there
+  rule { "reset", "move", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "aircraft")[1]
+    local q = r and r.exists and g:word(r.e, "to") and g:quantities(r.e + 1, r.e + 2)[1]
+    return q ~= nil and q ~= false and (q.kind == "lat" or q.kind == "plain" and math.abs(q.value) <= 90)
+  end }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -1008,6 +1034,8 @@ return function(intent, rule, words)
   rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "aircraft") and not g:word_in(i + 1, #g.t + 1, "log") end }
   rule { "print", "echo" }
+  -- "note to self: ...", "note for me: ...": the experimenter's own note, no text for the log
+  rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started": the text after the colon
   rule { "note log", "echo", when = function(g, i)
     for k = i + 1, math.min(#g.t, i + 4) do
@@ -1058,6 +1086,14 @@ return function(intent, rule, words)
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
   rule { "mvp", "reso", next = "on" }  -- "and MVP on"
+  -- "pz 5 nm, dh 1000, lookahead 300, mvp": the method named alone as an item of a list of conflict
+  -- detection settings
+  rule { "mvp", "reso", when = function(g, i)
+    local before, after = g.t[i - 1], g.t[i + 1]
+    return before ~= nil and (before.kind == "punct" and before.text == "," or g:word(i - 1, "and"))
+      and (after == nil or after.kind == "punct")
+      and g:word_in(1, i - 1, "pz rpz zone zoner zonedh dh dtlook lookahead asas cdmethod detection")
+  end }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"

@@ -2584,3 +2584,63 @@ do
     "CRECONFS XY21 A320 KLM77 180 1 240")
   check_eq(ex("pz 5 nm, dh 1000, lookahead 300"), "ZONER 5 ; ZONEDH 1000 ; DTLOOK 300")
 end
+
+-- A new aircraft placed along another's track ("12 nm ahead of PH101", "right behind PH101 at 8 nm"):
+-- the position d NM along that aircraft's heading (or its reverse), the course, level and speed said
+-- against its own ("reciprocal heading", "coming the other way", "same track"; "2000 feet below"; "20 kts
+-- quicker"); a course not said, or no callsign and type, is asked
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("spawn an intruder 12 nm ahead of PH101, reciprocal heading, same altitude, call it TX1, type B738, 250 kt"),
+    "CRE TX1 B738 51 3.317803 270 FL220 250")
+  check_eq(ex("TX2 A321 30 nm behind SAS7 on the same track, 2000 feet below, 20 kts quicker"),
+    "CRE TX2 A321 50.5 6 180 FL280 320")
+  check_eq(ex("intruder TX3, E190, 10 nm ahead of SAS7, coming the other way, FL300, 280 kt"),
+    "CRE TX3 E190 49.833333 6 0 FL300 280")
+  check_eq(ex("TX4 A320 right behind PH101 at 8 nm, same course, same level, same speed"),
+    "CRE TX4 A320 51 2.788131 90 FL220 260")
+  check_eq(ex("put an intruder 15 nm ahead of SAS7"), "ASK To create the aircraft I need its callsign, aircraft type. What should they be?")
+  check_eq(ex("TX5 A320 15 nm ahead of SAS7 at FL300, 280 kt"), "ASK What heading should TX5 have?")
+end
+
+-- CRECONFS said the researcher's way: "conflict on X: ...", "a converger for X", "a conflicting A320", its
+-- name typed short ("crecons", "creconf") with its values bare in the command's order, "400 s to loss";
+-- a value not said is still asked for
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("creconf TX7 A320 PH101 45 2 300"), "CRECONFS TX7 A320 PH101 45 2 300")
+  check_eq(ex("crecons TX7 A320 PH101 45 2 300 1000 100 250"), "CRECONFS TX7 A320 PH101 45 2 300 1000 100 250")
+  check_eq(ex("crecons TX7 A320 PH101 45 2"), "ASK At what angle, in degrees, should TX7 cross the track of PH101?")
+  check_eq(ex("conflict on SAS7: TX8, A319, dpsi 60, cpa 1, tlosh 200"), "CRECONFS TX8 A319 SAS7 60 1 200")
+  check_eq(ex("a converger for PH101: TX9, B738, 20 degrees, cpa 0.5 nm, 300 s to loss"),
+    "CRECONFS TX9 B738 PH101 20 0.5 300")
+  check_eq(ex("give PH101 a conflicting A320, TX10, 90 deg, passing 2 nm, 120 seconds to loss of separation"),
+    "CRECONFS TX10 A320 PH101 90 2 120")
+  check_eq(ex("conflict on SAS7: TX8, A319, dpsi 60, cpa 1"), "ASK In how many seconds should TX8 lose separation with SAS7?")
+  check(ex("there is a conflict between SAS7 and PH101"):match("^ASK") ~= nil, "a conflict described sets up nothing")
+end
+
+-- The researcher's settings and remarks: "mvp" alone as an item of a list of detection settings is RESO MVP
+-- (alone as a request it is asked); "note to self: ..." is the speaker's own to the end of its sentence, the
+-- sentence after it is read; "and see if ..." after an instruction is the check the experimenter will make
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("zoner 4, dtlook 200 and mvp"), "ZONER 4 ; DTLOOK 200 ; RESO MVP")
+  check_eq(ex("asas on, mvp"), "ASAS ON ; RESO MVP")
+  check(ex("mvp"):match("^ASK") ~= nil, "the method named alone")
+  check_eq(ex("note to self: seed 9 diverged. dt 0.5"), "DT 0.5")
+  check(ex("note to myself: try pz 4 next"):match("^ASK") ~= nil, "a note to self runs nothing")
+  check_eq(ex("note for the log: pz 4 from now"), "ECHO pz 4 from now")
+  check_eq(ex("ff 3 min and see if SAS7 and PH101 lose separation"), "FF 180")
+  check_eq(ex("SAS7 left 20, see whether that clears PH101"), "HDG SAS7 160 LEFT")
+end
+
+-- MOVE's values in its order, as CRE's: the last bare value after the level and heading is the speed; "reset
+-- X to <position>" moves X (a bare value with no level and heading before it is still asked)
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("move SAS7 to 50.2 6.1, FL310, heading 200, 290"), "MOVE SAS7 50.2 6.1 FL310 200 290")
+  check_eq(ex("move SAS7 to 50.2 6.1, FL310, 290"), "ASK To move SAS7 I did not place '290'. Is it an altitude, heading or speed?")
+  check_eq(ex("reset PH101 to 51.0, 3.0, FL220, heading 090, 260 kts"), "MOVE PH101 51 3 FL220 90 260")
+  check(ex("reset PH101"):match("^ASK") ~= nil, "reset with an aircraft and no position")
+end
