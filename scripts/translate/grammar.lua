@@ -1478,8 +1478,10 @@ function G:self_corrected()
       while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]) do
         -- ("no" straight before what it negates is no correction: "conflict detection only, no resolution")
         local nx = self.t[c + 1]
+        -- ("250 knots or less... make it 240": "make it" after a mark, its value said alone, G:value_said_again)
         marked = marked or (SC_MARKERS[self.t[c].text]
           and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
+          or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil)
         c = c + 1
       end
     end

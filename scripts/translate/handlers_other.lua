@@ -1820,6 +1820,8 @@ return function(H, f, compass)
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
+    -- ("which resolution method is active": a request opening with "which" asks, "?" or not)
+    if self:word(first, "which") and #self:quantities(1, #self.t + 1) == 0 then return true end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?")
     return self.t[#self.t].text == "?" and (self:word(first, "is are what what's whats which")
       or self:word_in(1, #self.t + 1, "check whether"))

@@ -179,7 +179,7 @@ return {
         "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
         "until further notice", "without restriction", "without restrictions",
         -- the same said with "till", without "further", or with the verb unbent ("until further advise")
-        "till further advised", "till further notice", "until advised", "till advised", "until further advise",
+        "till further advised", "till further notice", "until advised", "till advised", "until further advise", "until further advice", "till further advice",
         "till further advise", "until further instructions", "till further instructions",
         -- the same in ICAO English as a second language, "than" or the noun left out ("rate not less 1000 feet
         -- per minute", "maintain FL130 until further"), or the bound said before its value's noun ("not above

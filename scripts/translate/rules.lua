@@ -571,6 +571,13 @@ return function(intent, rule, words)
     return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
+  -- "add SUDIK to air malta 77", "add ZAGNB for croatia 7TK": a waypoint straight after the verb, for an
+  -- aircraft that flies named straight after "to"/"for", its clause ending there
+  rule { "add append", "addwpt", when = function(g, i)
+    local w = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    local a = w and g:word(w.e, "to for") and g:refs_in(w.e + 1, w.e + 2, "aircraft")[1]
+    return a ~= nil and a ~= false and a.exists and (g.t[a.e] == nil or g.t[a.e].kind == "punct" or g:word(a.e, "and"))
+  end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
   -- next to another, the place said after "after"/"before" before or after the verb
   -- ("after NAVPO add Lajes": a navaid or airport said by its one-word name)

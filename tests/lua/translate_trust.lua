@@ -2644,3 +2644,21 @@ do
   check_eq(ex("reset PH101 to 51.0, 3.0, FL220, heading 090, 260 kts"), "MOVE PH101 51 3 FL220 90 260")
   check(ex("reset PH101"):match("^ASK") ~= nil, "reset with an aircraft and no position")
 end
+
+-- Southern European controllers' and instructors' phrasing (R49): "make it N" after a value corrects it;
+-- "until further advice" keeps the value in force; "which ... is set/active" shows the setting; "add WPT
+-- to/for ACID" adds the waypoint to that aircraft's route (a clause that goes on past the aircraft is asked)
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300",
+    "DEFWPT ROSSA 51.2 3.4" })
+  check_eq(ex("PH101 speed 240 knots, make it 230"), "SPD PH101 230")
+  check(ex("PH101 speed 240 knots, make it 230 and climb FL300"):match("^ASK") ~= nil, "a value not said alone")
+  check_eq(ex("PH101 climb FL240, make it snappy"), "ASK I have ALT PH101 FL240. What does 'snappy' mean?")
+  check_eq(ex("PH101 maintain 250 knots until further advice"), "SPD PH101 250")
+  check_eq(ex("which time step is set"), "DT")
+  check_eq(ex("which resolution method is active"), "RESO")
+  check_eq(ex("add ROSSA to PH101"), "ADDWPT PH101 ROSSA")
+  check_eq(ex("instructor: add ROSSA for SAS7"), "ADDWPT SAS7 ROSSA")
+  check_eq(ex("add ROSSA to PH101 and descend FL200"), "ADDWPT PH101 ROSSA ; ALT PH101 FL200")
+  check(ex("add ROSSA to PH101 after SAS7"):match("^ASK") ~= nil, "a clause going on past the aircraft")
+end
