@@ -2069,6 +2069,7 @@ function G:unknown_names()
     if r.kind == "aircraft" and (not r.exists or added(r) or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
+        and not self.noted[r.b]  -- (in a phrase of what squawk does not simulate: "contact Brussels one two seven")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
       self.leftover = self:raw(r.b, r.e)
       return

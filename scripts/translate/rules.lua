@@ -261,6 +261,7 @@ return function(intent, rule, words)
   rule { "maintain maintained", "maintain" }
   -- "put BAW123 at the same level as DLH4AX"; "keep it at FL290 and 270 kts"
   rule { "level altitude", "alt", prev = { 1, "same" }, next = "as" }
+  rule { "level", "alt", prev = { 2, "same" }, next = "as", when = function(g, i) return g:word(i - 1, "flight") end }
   rule { "keep", "maintain", next = "it him her them", when = function(g, i)
     return g:word(i + 2, "at") and g.t[i + 3] ~= nil and (g.t[i + 3].kind == "number" or g:word(i + 3, "fl flight"))
   end }

@@ -2662,3 +2662,12 @@ do
   check_eq(ex("add ROSSA to PH101 and descend FL200"), "ADDWPT PH101 ROSSA ; ALT PH101 FL200")
   check(ex("add ROSSA to PH101 after SAS7"):match("^ASK") ~= nil, "a clause going on past the aircraft")
 end
+
+-- A station named like an airline's telephony in a hand-off ("contact Brussels one two seven decimal one") is
+-- part of what squawk does not simulate, never an aircraft left over; "the same flight level as X" is X's level
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("PH101 descend FL200, contact Brussels one two seven decimal one"), "ALT PH101 FL200")
+  check_eq(ex("put PH101 at the same flight level as SAS7"), "ALT PH101 FL300")
+  check(ex("PH101 descend FL200, BEL127 climb FL250"):match("^ASK") ~= nil, "an aircraft no one flies, instructed")
+end
