@@ -482,7 +482,8 @@ return function(intent, rule, words)
   -- closest approach or loss are said
   rule { "creconfs", "creconfs" }  -- the command's name typed with its values in words ("creconfs INT1 B738 EZY45 dpsi 180 ...")
   rule { "intruder conflict conflicting converger", "creconfs", when = function(g, i)
-    return not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
+    return g:find_word(1, #g.t + 1, "intruder conflict conflicting converger") == i  -- (the first one said)
+      and not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
       and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
   end }
   -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of

@@ -2617,6 +2617,8 @@ do
   check_eq(ex("give PH101 a conflicting A320, TX10, 90 deg, passing 2 nm, 120 seconds to loss of separation"),
     "CRECONFS TX10 A320 PH101 90 2 120")
   check_eq(ex("conflict on SAS7: TX8, A319, dpsi 60, cpa 1"), "ASK In how many seconds should TX8 lose separation with SAS7?")
+  check_eq(ex("set up a crossing conflict for SAS7: intruder TX11, A321, 90 deg, cpa 1, tlosh 300"),
+    "CRECONFS TX11 A321 SAS7 90 1 300")
   check(ex("there is a conflict between SAS7 and PH101"):match("^ASK") ~= nil, "a conflict described sets up nothing")
 end
 
