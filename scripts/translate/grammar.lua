@@ -858,6 +858,20 @@ local function names_instructed(self, b)
   return false
 end
 
+-- The colon ending a title that opens the request at k ("converging pair please:", "head-on pair:"): at most
+-- four words before it, none a word any rule starts an instruction with, an airline or a value, place or
+-- aircraft (G:commentary), with the request going on after it; nil when there is none.
+local function title_end(self, k)
+  local e = commentary_end(self, k)
+  if not (self.t[e] and self.t[e].text == ":" and e < #self.t and e - k <= 4 and self:commentary(k, e, true)) then
+    return nil
+  end
+  for x = k, e - 1 do
+    if self.t[x].kind == "word" and (RULES_BY_WORD[self.t[x].text] or self:airline_at(x)) then return nil end
+  end
+  return e
+end
+
 -- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
 -- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
 -- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
@@ -908,6 +922,10 @@ function G:in_reason(i)
           and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 and instructed(k) then
         -- ("pause the sim while I reset the eye tracker", ", we'll put it back on the route later")
         inside = true
+      elseif k == self:skip_fillers(1) and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
+          and title_end(self, k) then
+        -- ("converging pair please: KLM401 B738 at ...": a title opening the request, up to its colon)
+        inside, lead_end, self.reason[k] = true, title_end(self, k), true
       elseif start and t.kind == "word" and (CM_LEADS[t.text] or CM_LABELS[t.text]) then
         -- ("For the vertical test: NAX3412 climb ...", "To create a same-level encounter: SAS1410 climb
         -- FL190", "For the overtake case, EZY45 speed 320": a lead-in before a colon, or a comma after
@@ -1417,7 +1435,9 @@ function G:value_said_again(p, a, c)
   local new = self:quantities(v, #self.t + 1)[1]
   local old = self:quantities(p + 1, a)
   if not (new and new.b == v and #old == 1 and (new.kind == old[1].kind or new.kind == "plain")) then return false end
-  if self.t[new.e] and self.t[new.e].kind ~= "punct" then return false end
+  local nx = new.e  -- (a filler after it, "make it 240 please", still ends its clause)
+  while self.t[nx] and self.t[nx].filler do nx = nx + 1 end
+  if self.t[nx] and self.t[nx].kind ~= "punct" then return false end
   self:mark_used(old[1].b, v)
   for k = old[1].b, v - 1 do self.noted[k] = true end
   return true

@@ -47,9 +47,18 @@ return function(H, f, compass)
       end
     end
     if #starts <= 1 then return self:create_one(s, s.b) end
+    -- "..., both at FL250 and 270 knots": values said after "both", "all" or "each" in the last one's part,
+    -- no aircraft after it, are each one's
+    -- (an aircraft named after it leaves unclear whose values follow: asked)
+    local shared = self:find_word(starts[#starts], s.e, "both all each")
+    if shared == s.e then
+      shared = nil
+    elseif self:has_ref(shared, s.e, "aircraft") or self:has_ref(shared, s.e, "type") then
+      return self:need(string.format("Which of the new aircraft do the values after '%s' belong to?", self.t[shared].raw))
+    end
     for k, st in ipairs(starts) do
       local b = k == 1 and s.b or st
-      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e }, st)
+      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e, shared = shared, shared_e = s.e }, st)
     end
   end
 
@@ -158,6 +167,9 @@ return function(H, f, compass)
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
+    for _, q in ipairs(s.shared and self:quantities(s.shared, s.shared_e) or {}) do  -- (said for "both")
+      if q.b >= s.e then qs[#qs + 1] = q end
+    end
     -- (values after the type count too: "KLM602 A320, 52.4 6.4, 270 deg, ..." has its instruction word later)
     local lat, lon = position(qs, (types[1] and types[1].e < s.trig and types[1].b > s.b) and types[1].e or s.trig, self)
     local along  -- the aircraft the new one is placed ahead of or behind

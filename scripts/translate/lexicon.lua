@@ -78,7 +78,7 @@ return {
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         "ok", "okay", "oh", "hmm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
-        "entirely", "moment", "away", "back", "aside" },
+        "entirely", "moment", "away", "back", "aside", "closer", "nearer", "farther" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",

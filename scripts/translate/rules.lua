@@ -106,9 +106,12 @@ return function(intent, rule, words)
       if first and first.b > j and first.b <= j + 8 and (first.kind == "aircraft" or first.kind == "type") then
         local lead, to, words = true, first.b, 0
         for k = j, first.b - 1 do
-          local _, ae = g:airline_at(k)
+          local icao, ae = g:airline_at(k)
           if lead and k < to and ae == first.b and first.kind == "type" then to = k end  -- ("a Vueling A320")
-          lead = lead and (k >= to or (g.t[k].kind == "word" and not g:intent_at(k) and not ae))
+          -- ("first aircraft Air Malta AMC412 A320 ...": the airline of the new callsign said before it)
+          local own = ae == first.b and first.kind == "aircraft" and not first.exists
+            and first.name:upper():sub(1, #icao) == icao
+          lead = lead and (k >= to or (g.t[k].kind == "word" and not g:intent_at(k) and (not ae or own)))
           if k < to and not g.t[k].filler then words = words + 1 end
         end
         lead = lead and words <= 4

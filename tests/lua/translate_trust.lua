@@ -2655,6 +2655,10 @@ do
     "DEFWPT ROSSA 51.2 3.4" })
   check_eq(ex("PH101 speed 240 knots, make it 230"), "SPD PH101 230")
   check(ex("PH101 speed 240 knots, make it 230 and climb FL300"):match("^ASK") ~= nil, "a value not said alone")
+  check_eq(ex("PH101 speed 240 knots, make it 230 please"), "SPD PH101 230")
+  -- the new callsign's airline said before it in a lead-in ("first aircraft Air Malta AMC412 A320 ...")
+  check_eq(ex("first aircraft Speedbird BAW9 A320 51.5N 3.5E heading 100 level 190 speed 280"),
+    "CRE BAW9 A320 51.5 3.5 100 FL190 280")
   check_eq(ex("PH101 climb FL240, make it snappy"), "ASK I have ALT PH101 FL240. What does 'snappy' mean?")
   check_eq(ex("PH101 maintain 250 knots until further advice"), "SPD PH101 250")
   check_eq(ex("which time step is set"), "DT")
@@ -2672,4 +2676,19 @@ do
   check_eq(ex("PH101 descend FL200, contact Brussels one two seven decimal one"), "ALT PH101 FL200")
   check_eq(ex("put PH101 at the same flight level as SAS7"), "ALT PH101 FL300")
   check(ex("PH101 descend FL200, BEL127 climb FL250"):match("^ASK") ~= nil, "an aircraft no one flies, instructed")
+end
+
+-- A pair created in one request by a researcher: a title before the colon ("symmetric geometry:") names the
+-- scenario; values said after "both"/"all" at the end are each new aircraft's (with an aircraft named after
+-- "both", whose values follow is asked); "closer" describes a move whose position is said
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260" })
+  check_eq(ex("symmetric geometry: TX1 A320 at 52.0 4.0 heading 090 and TX2 A320 at 52.0 5.0 heading 270, both FL300, 280 kt"),
+    "CRE TX1 A320 52 4 90 FL300 280 ; CRE TX2 A320 52 5 270 FL300 280")
+  check(ex("write a note in the log: trial 4 begins"):match("^ECHO") ~= nil, "an instruction before a colon is no title")
+  check_eq(ex("overtake: TX1 A320 at 52.0 4.0 heading 090 and TX2 A320 at 52.0 4.5 heading 090, both FL300, TX1 at 300 kt"),
+    "ASK Which of the new aircraft do the values after 'both' belong to?")
+  check(ex("don't: PH101 climb FL300"):match("^ASK") ~= nil, "a negation before the colon is no title")
+  check_eq(ex("move PH101 closer: 51.2 3.3, FL220, heading 090, 250"), "MOVE PH101 51.2 3.3 FL220 90 250")
+  check(ex("move PH101 closer"):match("^ASK") ~= nil, "closer, no position")
 end
