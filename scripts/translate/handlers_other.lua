@@ -112,6 +112,11 @@ return function(H, f, compass)
             and not self.u:used(k) and w.raw:sub(1, 1) == id:sub(1, 1):upper() then
           self:explain(k, k + 1)
         end
+        -- ("put an ITA, ITY231 A320, ...", "a Qatar Airways, QTR7, ..."): the new callsign's airline by its name
+        for a = math.max(1, k - 2), k do
+          local icao, ae = self:airline_at(a)
+          if icao and ae == k + 1 and id:upper():sub(1, #icao) == icao then self:explain(a, k + 1) end
+        end
         break
       end
     end

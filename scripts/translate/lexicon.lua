@@ -138,6 +138,8 @@ return {
         "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
         "automatically", "manual", "manually",
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac",
+        -- a speed named by the aircraft's configuration ("minimum clean speed, 210 knots")
+        "clean",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
         -- an aircraft described by its size ("the small Cessna", "a big Boeing")

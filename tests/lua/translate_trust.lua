@@ -2656,6 +2656,11 @@ do
   check_eq(ex("PH101 speed 240 knots, make it 230"), "SPD PH101 230")
   check(ex("PH101 speed 240 knots, make it 230 and climb FL300"):match("^ASK") ~= nil, "a value not said alone")
   check_eq(ex("PH101 speed 240 knots, make it 230 please"), "SPD PH101 230")
+  -- "minimum clean speed" names the speed by the configuration: the value said is flown, none said is asked
+  check_eq(ex("PH101 reduce minimum clean speed, 210 knots"), "SPD PH101 210")
+  check(ex("PH101 reduce minimum clean speed"):match("^ASK") ~= nil, "no speed said")
+  -- the new callsign's airline by its name before it ("put an ITA, ITY77 A320, ...": ITA Airways)
+  check_eq(ex("put an ITA, ITY77 A320, at 43.9 N 7.9 E, heading 240, FL130, 270 kt"), "CRE ITY77 A320 43.9 7.9 240 FL130 270")
   -- the new callsign's airline said before it in a lead-in ("first aircraft Air Malta AMC412 A320 ...")
   check_eq(ex("first aircraft Speedbird BAW9 A320 51.5N 3.5E heading 100 level 190 speed 280"),
     "CRE BAW9 A320 51.5 3.5 100 FL190 280")
