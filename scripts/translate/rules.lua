@@ -1067,9 +1067,15 @@ return function(intent, rule, words)
   end }
   -- "wind at 6.5 north 3.3 east from 220 at 15 knots", "a harmattan wind at 12N 8.5E, from 050, 20 knots": a
   -- position straight after it, where it blows from said after that
+  -- ("wind at 38.8 north 9.1 west, FL100, 310 degrees 25 knots": its direction in degrees and its speed in
+  -- knots said after the position, no "from")
   rule { "wind winds", "wind", when = function(g, i)
     local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or nil
-    return q ~= nil and (q.kind == "lat" or q.kind == "lon") and g:find_word(i + 3, #g.t + 1, "from") <= #g.t
+    local told = g:find_word(i + 3, #g.t + 1, "from") <= #g.t
+    for _, v in ipairs(q and not told and g:quantities(q.e, #g.t + 1) or {}) do
+      told = told or (v.kind == "angle" and (g:quantities(v.e, v.e + 1)[1] or {}).kind == "speed")
+    end
+    return q ~= nil and (q.kind == "lat" or q.kind == "lon") and told
       and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
   end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown

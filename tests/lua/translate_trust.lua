@@ -2661,6 +2661,9 @@ do
   check(ex("PH101 reduce minimum clean speed"):match("^ASK") ~= nil, "no speed said")
   -- the new callsign's airline by its name before it ("put an ITA, ITY77 A320, ...": ITA Airways)
   check_eq(ex("put an ITA, ITY77 A320, at 43.9 N 7.9 E, heading 240, FL130, 270 kt"), "CRE ITY77 A320 43.9 7.9 240 FL130 270")
+  -- a wind's direction in degrees and speed in knots said after its position and level, no "from"
+  check_eq(ex("wind at 51.5 north 3.5 east, FL150, 250 degrees 30 knots"), "WIND 51.5 3.5 FL150 250 30")
+  check(ex("wind at 51.5 north 3.5 east, 250 degrees"):match("^ASK") ~= nil, "no wind speed")
   -- the new callsign's airline said before it in a lead-in ("first aircraft Air Malta AMC412 A320 ...")
   check_eq(ex("first aircraft Speedbird BAW9 A320 51.5N 3.5E heading 100 level 190 speed 280"),
     "CRE BAW9 A320 51.5 3.5 100 FL190 280")
