@@ -579,6 +579,8 @@ return function(H, f, compass)
       end
       local k = q.e
       if self:word(k, "to") and self:word(k + 1, "the") then k = k + 2 end
+      local front = self:word(k, "in") and self:word(k + 1, "front")  -- ("20 nm in front of KLM12")
+      if front then k = k + 1 end
       local t = self.t[k]
       local side = q.kind == "dist" and q.b >= b and q.e <= e and t and t.kind == "word" and L.along_track[t.text]
       -- ("ahead of the ownship KL001")
@@ -588,7 +590,7 @@ return function(H, f, compass)
       if r and r.exists then
         local a = self:state(r.name)
         self:take(q)
-        self:explain(k, r.e)
+        self:explain(front and k - 1 or k, r.e)
         if self:word(k - 1, "dead right straight directly") then self:explain(k - 1, k) end
         local rad = math.rad(a.hdg_deg + side)
         return a.lat + q.value * math.cos(rad) / 60,

@@ -604,7 +604,7 @@ return {
   -- the side, as a bearing off that aircraft's heading [deg]; its course then said against that
   -- aircraft's: the reverse ("head-on", "opposite direction", "coming the other way", "reciprocal") or the
   -- same ("same heading", "same track"); its level and speed by a difference ("1000 ft above", "30 kt faster")
-  along_track = { ahead = 0, behind = 180 },
+  along_track = { ahead = 0, behind = 180, front = 0 },  -- ("in front of")
   -- whom a note is for when it is the speaker's own ("note to self:", "note for me:"), not the log's
   note_to_self = { "self", "myself", "me" },
   ownship = { "ownship", "own-ship" },

@@ -460,7 +460,8 @@ return function(intent, rule, words)
   -- at a distance along an aircraft's track, the intruder is a creation, CRE)
   local function along_track(g)
     for _, q in ipairs(g:quantities(1, #g.t + 1)) do
-      if q.kind == "dist" and (g:word(q.e, "@along_track") or g:word(q.b - 1, "at") and g:word_in(math.max(1, q.b - 5), q.b, "@along_track")) then
+      if q.kind == "dist" and (g:word(q.e, "@along_track") or g:word(q.e, "in") and g:word(q.e + 1, "front")
+          or g:word(q.b - 1, "at") and g:word_in(math.max(1, q.b - 5), q.b, "@along_track")) then
         return true
       end
     end

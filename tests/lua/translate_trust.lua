@@ -2599,6 +2599,9 @@ do
     "CRE TX3 E190 49.833333 6 0 FL300 280")
   check_eq(ex("TX4 A320 right behind PH101 at 8 nm, same course, same level, same speed"),
     "CRE TX4 A320 51 2.788131 90 FL220 260")
+  check_eq(ex("spawn TX6 A320 20 nm in front of SAS7, head-on, same level, 280 kt"), "CRE TX6 A320 49.666667 6 0 FL300 280")
+  -- (37 km is read as 20.0 NM, to 0.1 NM)
+  check_eq(ex("TX7 A320 37 km ahead of PH101, opposite direction, FL220, 280 kt"), "CRE TX7 A320 51 3.529672 270 FL220 280")
   check_eq(ex("put an intruder 15 nm ahead of SAS7"), "ASK To create the aircraft I need its callsign, aircraft type. What should they be?")
   check_eq(ex("TX5 A320 15 nm ahead of SAS7 at FL300, 280 kt"), "ASK What heading should TX5 have?")
 end
