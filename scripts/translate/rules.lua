@@ -1101,6 +1101,10 @@ return function(intent, rule, words)
     for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
     return false
   end }
+  -- "after a resolution aircraft should resume nav once past CPA": when navigation resumes after one (RESNAV)
+  rule { "resolution resolutions resolving", false, prev = { 2, "after following" }, when = function(g, i)
+    return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "resume resumes") and g:word_in(i + 1, #g.t + 1, "cpa")
+  end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }

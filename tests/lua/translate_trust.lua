@@ -2636,6 +2636,9 @@ do
   check_eq(ex("note to self: seed 9 diverged. dt 0.5"), "DT 0.5")
   check(ex("note to myself: try pz 4 next"):match("^ASK") ~= nil, "a note to self runs nothing")
   check_eq(ex("note for the log: pz 4 from now"), "ECHO pz 4 from now")
+  -- "after a resolution ... resume nav once past CPA" says when navigation resumes (RESNAV), no method
+  check_eq(ex("after a resolution aircraft should resume nav once past CPA"), "RESNAV PASTCPA")
+  check_eq(ex("resolution method MVP, then resume nav past CPA"), "RESO MVP ; RESNAV PASTCPA")
   check_eq(ex("ff 3 min and see if SAS7 and PH101 lose separation"), "FF 180")
   check_eq(ex("SAS7 left 20, see whether that clears PH101"), "HDG SAS7 160 LEFT")
 end
