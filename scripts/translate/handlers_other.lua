@@ -554,6 +554,33 @@ return function(H, f, compass)
     self.created[id] = true
   end
 
+  -- "swap the levels of KLM12 and TRA6021" (headings, speeds): each of the two aircraft named flies the
+  -- other's present level, heading or speed (lexicon.swapped); anything else is asked
+  function m:swap(s)
+    local refs = {}
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if r.exists then refs[#refs + 1] = r end
+    end
+    local k = self:find_word(s.trig, s.e, "@swapped")
+    if #refs ~= 2 or k >= s.e or refs[1].name == refs[2].name then
+      return self:need("Which two aircraft should swap their levels, headings or speeds?")
+    end
+    local cmd = L.swapped[self.t[k].text]
+    local a, b = refs[1].name:upper(), refs[2].name:upper()
+    for _, pair in ipairs({ { a, self:state(b) }, { b, self:state(a) } }) do
+      local id, o = pair[1], pair[2]
+      if cmd == "ALT" then
+        local ft = math.floor((o.alt_ft or 0) + 0.5)
+        self:emit("ALT " .. id .. " " .. (ft >= 10000 and f.alt(ft, true) or f.int(ft)))
+      elseif cmd == "HDG" then
+        self:emit("HDG " .. id .. " " .. f.num(math.floor((o.hdg_deg or 0) + 0.5) % 360))
+      else
+        self:emit("SPD " .. id .. " " .. (o.sel_mach and f.mach(o.sel_mach) or f.int(o.cas_kt or 0)))
+      end
+    end
+    self:mark_used(s.b, s.e)
+  end
+
   -- A position said as a distance and a compass point from an aircraft ("10 nm north", "20 miles
   -- south of where it is now", "15 nm south of RYR81JC", "20 miles east of it"), or along a named
   -- aircraft's track ("20 nm ahead of KLM12", "dead behind KL001 at 15 nm": the bearing its heading, or

@@ -604,6 +604,10 @@ return {
   -- the side, as a bearing off that aircraft's heading [deg]; its course then said against that
   -- aircraft's: the reverse ("head-on", "opposite direction", "coming the other way", "reciprocal") or the
   -- same ("same heading", "same track"); its level and speed by a difference ("1000 ft above", "30 kt faster")
+  -- what two aircraft swap ("swap the levels of KLM12 and TRA6021"), by the command that sets it (the
+  -- spelling fixer makes "headings" "heading")
+  swapped = { levels = "ALT", level = "ALT", altitudes = "ALT", altitude = "ALT", headings = "HDG", heading = "HDG",
+              speeds = "SPD", speed = "SPD" },
   along_track = { ahead = 0, behind = 180, front = 0 },  -- ("in front of")
   -- whom a note is for when it is the speaker's own ("note to self:", "note for me:"), not the log's
   note_to_self = { "self", "myself", "me" },

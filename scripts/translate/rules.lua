@@ -65,6 +65,7 @@ return function(intent, rule, words)
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "rfac" { cmds = { "RFACH", "RFACV" }, args = { "factor" }, handler = "reso_factor" }
   intent "rmethv" { cmd = "RMETHV", args = { "ON", "OFF" }, handler = "reso_vertical" }
+  intent "swap" { cmds = { "ALT", "HDG", "SPD" }, handler = "swap" }
   intent "resnav" { cmd = "RESNAV", args = { "PASTCPA" }, handler = "resume_nav" }
   intent "creconfs" { cmd = "CRECONFS", args = { "acid", "type", "targetid", "dpsi", "cpa", "tlosh", "dh", "tlosv" },
                       handler = "conflict_intruder", absorbs = true, single = true }
@@ -262,6 +263,8 @@ return function(intent, rule, words)
   rule { "lower raise", "spd", near = { 4, "speed" } }
   rule { "lower raise", "alt" }
   rule { "maintain maintained", "maintain" }
+  -- "swap the levels of KLM12 and TRA6021", "exchange their headings": each flies the other's
+  rule { "swap exchange", "swap", near = { 4, "@swapped" } }
   -- "put BAW123 at the same level as DLH4AX"; "keep it at FL290 and 270 kts"
   rule { "level altitude", "alt", prev = { 1, "same" }, next = "as" }
   rule { "level", "alt", prev = { 2, "same" }, next = "as", when = function(g, i) return g:word(i - 1, "flight") end }
@@ -271,6 +274,8 @@ return function(intent, rule, words)
 
 
   -- speed, and the simulation's speed
+  -- ("swap their headings", "exchange the speeds of ..."): what is swapped, no value of its own
+  rule { "heading headings speed speeds level levels altitude altitudes", false, prev = { 4, "swap exchange" } }
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"

@@ -2706,3 +2706,15 @@ do
   check_eq(ex("move PH101 closer: 51.2 3.3, FL220, heading 090, 250"), "MOVE PH101 51.2 3.3 FL220 90 250")
   check(ex("move PH101 closer"):match("^ASK") ~= nil, "closer, no position")
 end
+
+-- Two aircraft swap their levels, headings or speeds ("swap the levels of A and B", "A and B swap headings"):
+-- each flies the other's present value; one aircraft, or three, is asked
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300",
+    "CRE TX1 A320 50.5 4.0 270 FL260 280" })
+  check_eq(ex("swap the levels of PH101 and SAS7"), "ALT PH101 FL300 ; ALT SAS7 FL220")
+  check_eq(ex("PH101 and SAS7 swap headings"), "HDG PH101 180 ; HDG SAS7 90")
+  check_eq(ex("exchange the speeds of PH101 and TX1"), "SPD PH101 280 ; SPD TX1 260")
+  check(ex("swap the levels of PH101"):match("^ASK") ~= nil, "one aircraft")
+  check(ex("swap the levels of PH101, SAS7 and TX1"):match("^ASK") ~= nil, "three aircraft")
+end
