@@ -2145,6 +2145,9 @@ for _, c in ipairs(squawk.sim.commands()) do
     if not KNOWN[w:lower()] then COMMAND_ONLY[w:lower()] = c.name:lower() end
   end
 end
+-- (the resolution method's name, "mvp", likewise: accounted for only by a command that carries it, RESO MVP,
+-- or inside an instruction read whole: "pz 5 nm / mvp" never drops it)
+for _, w in ipairs(lexicon.mvp) do if w == "mvp" then COMMAND_ONLY[w] = w end end
 for w, name in pairs(COMMAND_ONLY) do know(w) know(name) end
 -- the courtesy and value phrases by their first word, each as its words in the lexer's form ("it's" is "it")
 local PHRASES = {}

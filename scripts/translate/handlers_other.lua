@@ -555,7 +555,8 @@ return function(H, f, compass)
   end
 
   -- "swap the levels of KLM12 and TRA6021" (headings, speeds): each of the two aircraft named flies the
-  -- other's present level, heading or speed (lexicon.swapped); anything else is asked
+  -- other's present level, heading or speed (lexicon.swapped), after a yes (two aircraft swapping levels
+  -- climb and descend through each other's); anything else is asked
   function m:swap(s)
     local refs = {}
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
@@ -567,6 +568,7 @@ return function(H, f, compass)
     end
     local cmd = L.swapped[self.t[k].text]
     local a, b = refs[1].name:upper(), refs[2].name:upper()
+    self:confirm_before(string.format("Swap the %ss of %s and %s? (yes or no)", (self.t[k].text:gsub("s$", "")), a, b))
     for _, pair in ipairs({ { a, self:state(b) }, { b, self:state(a) } }) do
       local id, o = pair[1], pair[2]
       if cmd == "ALT" then

@@ -1094,7 +1094,7 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
   end }
   rule { "detection asas cdmethod cd", "asas" }
-  rule { "cr", "reso", next = "on off" }  -- "CD on, CR off": conflict resolution by its letters
+  rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
@@ -1118,7 +1118,7 @@ return function(intent, rule, words)
   -- detection settings
   rule { "mvp", "reso", when = function(g, i)
     local before, after = g.t[i - 1], g.t[i + 1]
-    return before ~= nil and (before.kind == "punct" and before.text == "," or g:word(i - 1, "and"))
+    return before ~= nil and (before.kind == "punct" or g:word(i - 1, "and"))
       and (after == nil or after.kind == "punct")
       and g:word_in(1, i - 1, "pz rpz zone zoner zonedh dh dtlook lookahead asas cdmethod detection")
   end }

@@ -2633,6 +2633,11 @@ do
   check_eq(ex("zoner 4, dtlook 200 and mvp"), "ZONER 4 ; DTLOOK 200 ; RESO MVP")
   check_eq(ex("asas on, mvp"), "ASAS ON ; RESO MVP")
   check(ex("mvp"):match("^ASK") ~= nil, "the method named alone")
+  check_eq(ex("PZ 5 NM; DH 1000 ft; lookahead 300 s; MVP"), "ZONER 5 ; ZONEDH 1000 ; DTLOOK 300 ; RESO MVP")
+  check_eq(ex("cd statebased, cr mvp, pz 5"), "ASAS STATEBASED ; RESO MVP ; ZONER 5")
+  -- "mvp" is accounted for only by a command that carries it: never dropped
+  check_eq(ex("dtlook 300 with mvp"), "ASK I have DTLOOK 300. What does 'mvp' mean?")
+  check_eq(ex("let MVP use vertical speed in the resolutions"), "RMETHV V/S")
   check_eq(ex("note to self: seed 9 diverged. dt 0.5"), "DT 0.5")
   check(ex("note to myself: try pz 4 next"):match("^ASK") ~= nil, "a note to self runs nothing")
   check_eq(ex("note for the log: pz 4 from now"), "ECHO pz 4 from now")
@@ -2708,13 +2713,19 @@ do
 end
 
 -- Two aircraft swap their levels, headings or speeds ("swap the levels of A and B", "A and B swap headings"):
--- each flies the other's present value; one aircraft, or three, is asked
+-- after a yes, each flies the other's present value; one aircraft, or three, is asked
 do
-  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300",
+  local s = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300",
     "CRE TX1 A320 50.5 4.0 270 FL260 280" })
-  check_eq(ex("swap the levels of PH101 and SAS7"), "ALT PH101 FL300 ; ALT SAS7 FL220")
-  check_eq(ex("PH101 and SAS7 swap headings"), "HDG PH101 180 ; HDG SAS7 90")
-  check_eq(ex("exchange the speeds of PH101 and TX1"), "SPD PH101 280 ; SPD TX1 260")
+  local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+  local function swapped(text)
+    local r = graph.translate(text, { sim = s, mode = "offline" })
+    check(r.ask ~= nil and r.ask:match("^Swap the ") ~= nil and r.confirm ~= nil, text)
+    return table.concat(r.confirm and r.confirm.commands or {}, " ; ")
+  end
+  check_eq(swapped("swap the levels of PH101 and SAS7"), "ALT PH101 FL300 ; ALT SAS7 FL220")
+  check_eq(swapped("PH101 and SAS7 swap headings"), "HDG PH101 180 ; HDG SAS7 90")
+  check_eq(swapped("exchange the speeds of PH101 and TX1"), "SPD PH101 280 ; SPD TX1 260")
   check(ex("swap the levels of PH101"):match("^ASK") ~= nil, "one aircraft")
   check(ex("swap the levels of PH101, SAS7 and TX1"):match("^ASK") ~= nil, "three aircraft")
 end
