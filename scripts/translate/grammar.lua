@@ -858,7 +858,7 @@ local function names_instructed(self, b)
   return false
 end
 
--- The colon ending a title that opens the request at k ("converging pair please:", "head-on pair:"): at most
+-- The colon ending a title that opens the request at k ("converging pair please:", "symmetric geometry:"): at most
 -- four words before it, none a word any rule starts an instruction with, an airline or a value, place or
 -- aircraft (G:commentary), with the request going on after it; nil when there is none.
 local function title_end(self, k)
@@ -2147,7 +2147,7 @@ for _, c in ipairs(squawk.sim.commands()) do
 end
 -- (the resolution method's name, "mvp", likewise: accounted for only by a command that carries it, RESO MVP,
 -- or inside an instruction read whole: "pz 5 nm / mvp" never drops it)
-for _, w in ipairs(lexicon.mvp) do if w == "mvp" then COMMAND_ONLY[w] = w end end
+COMMAND_ONLY.mvp = "mvp"
 for w, name in pairs(COMMAND_ONLY) do know(w) know(name) end
 -- the courtesy and value phrases by their first word, each as its words in the lexer's form ("it's" is "it")
 local PHRASES = {}

@@ -487,8 +487,8 @@ return function(intent, rule, words)
   -- ("opposite heading", "same track": the new aircraft's course against the one it is placed by, no turn)
   rule { "heading hdg direction track course", false, prev = { 1, "same opposite reciprocal" }, when = along_track }
   -- "intruder on IBE2604: INT1, B738, from the right, CPA 0, 250 s", "give TAP123 a head-on intruder, INT2,
-  -- B738, CPA 2 miles", "conflict on KL001: INT2, A320, 135 deg, cpa 2, tlosh 500": the noun alone, no verb of creation before it, sets one up when its type and
-  -- closest approach or loss are said
+  -- B738, CPA 2 miles", "conflict on KL001: INT2, A320, 135 deg, cpa 2, tlosh 500": the noun alone, no verb of
+  -- creation before it, sets one up when its type and closest approach or loss are said
   rule { "creconfs", "creconfs" }  -- the command's name typed with its values in words ("creconfs INT1 B738 EZY45 dpsi 180 ...")
   rule { "intruder conflict conflicting converger", "creconfs", when = function(g, i)
     return g:find_word(1, #g.t + 1, "intruder conflict conflicting converger") == i  -- (the first one said)
