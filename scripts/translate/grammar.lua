@@ -871,6 +871,20 @@ local function names_instructed(self, b)
   return false
 end
 
+-- The colon ending a title that opens the request at k ("converging pair please:", "symmetric geometry:"): at most
+-- four words before it, none a word any rule starts an instruction with, an airline or a value, place or
+-- aircraft (G:commentary), with the request going on after it; nil when there is none.
+local function title_end(self, k)
+  local e = commentary_end(self, k)
+  if not (self.t[e] and self.t[e].text == ":" and e < #self.t and e - k <= 4 and self:commentary(k, e, true)) then
+    return nil
+  end
+  for x = k, e - 1 do
+    if self.t[x].kind == "word" and (RULES_BY_WORD[self.t[x].text] or self:airline_at(x)) then return nil end
+  end
+  return e
+end
+
 -- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
 -- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
 -- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
@@ -921,6 +935,10 @@ function G:in_reason(i)
           and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 and instructed(k) then
         -- ("pause the sim while I reset the eye tracker", ", we'll put it back on the route later")
         inside = true
+      elseif k == self:skip_fillers(1) and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
+          and title_end(self, k) then
+        -- ("converging pair please: KLM401 B738 at ...": a title opening the request, up to its colon)
+        inside, lead_end, self.reason[k] = true, title_end(self, k), true
       elseif start and t.kind == "word" and (CM_LEADS[t.text] or CM_LABELS[t.text]) then
         -- ("For the vertical test: NAX3412 climb ...", "To create a same-level encounter: SAS1410 climb
         -- FL190", "For the overtake case, EZY45 speed 320": a lead-in before a colon, or a comma after
@@ -951,7 +969,8 @@ function G:in_reason(i)
       elseif t.kind == "punct" and self:word(k + 1, "@then_words") then
         -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
         inside = false
-      elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so")) then
+      elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so"))
+          or (self:word(k, "see") and self:word(k + 1, "@see_whether") and instructed(k)) then
         inside = true
       elseif self:word(k, "so") and k > 1 and self.t[k - 1].kind ~= "punct" and not self.t[k - 1].filler
           and self:has_ref(k + 1, k + 3, "aircraft") then
@@ -1498,7 +1517,9 @@ function G:value_said_again(p, a, c)
   local new = self:quantities(v, #self.t + 1)[1]
   local old = self:quantities(p + 1, a)
   if not (new and new.b == v and #old == 1 and (new.kind == old[1].kind or new.kind == "plain")) then return false end
-  if self.t[new.e] and self.t[new.e].kind ~= "punct" then return false end
+  local nx = new.e  -- (a filler after it, "make it 240 please", still ends its clause)
+  while self.t[nx] and self.t[nx].filler do nx = nx + 1 end
+  if self.t[nx] and self.t[nx].kind ~= "punct" then return false end
   self:mark_used(old[1].b, v)
   for k = old[1].b, v - 1 do self.noted[k] = true end
   return true
@@ -1559,8 +1580,10 @@ function G:self_corrected()
       while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]) do
         -- ("no" straight before what it negates is no correction: "conflict detection only, no resolution")
         local nx = self.t[c + 1]
+        -- ("250 knots or less... make it 240": "make it" after a mark, its value said alone, G:value_said_again)
         marked = marked or (SC_MARKERS[self.t[c].text]
           and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
+          or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil)
         c = c + 1
       end
     end
@@ -2221,6 +2244,7 @@ function G:unknown_names()
           or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
+        and not self.noted[r.b]  -- (in a phrase of what squawk does not simulate: "contact Brussels one two seven")
         and not out:find("%f[%w]" .. r.name:upper():gsub("%p", "%%%0") .. "%f[%W]") and not meant(r) then
       self.leftover = self:raw(r.b, r.e)
       return
@@ -2309,6 +2333,9 @@ for _, c in ipairs(squawk.sim.commands()) do
     if not KNOWN[w:lower()] then COMMAND_ONLY[w:lower()] = c.name:lower() end
   end
 end
+-- (the resolution method's name, "mvp", likewise: accounted for only by a command that carries it, RESO MVP,
+-- or inside an instruction read whole: "pz 5 nm / mvp" never drops it)
+COMMAND_ONLY.mvp = "mvp"
 for w, name in pairs(COMMAND_ONLY) do know(w) know(name) end
 -- the courtesy and value phrases by their first word, each as its words in the lexer's form ("it's" is "it")
 local PHRASES = {}

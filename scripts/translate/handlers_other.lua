@@ -47,9 +47,18 @@ return function(H, f, compass)
       end
     end
     if #starts <= 1 then return self:create_one(s, s.b) end
+    -- "..., both at FL250 and 270 knots": values said after "both", "all" or "each" in the last one's part,
+    -- no aircraft after it, are each one's
+    -- (an aircraft named after it leaves unclear whose values follow: asked)
+    local shared = self:find_word(starts[#starts], s.e, "both all each")
+    if shared == s.e then
+      shared = nil
+    elseif self:has_ref(shared, s.e, "aircraft") or self:has_ref(shared, s.e, "type") then
+      return self:need(string.format("Which of the new aircraft do the values after '%s' belong to?", self.t[shared].raw))
+    end
     for k, st in ipairs(starts) do
       local b = k == 1 and s.b or st
-      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e }, st)
+      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e, shared = shared, shared_e = s.e }, st)
     end
   end
 
@@ -102,6 +111,11 @@ return function(H, f, compass)
         if w and w.kind == "word" and w.alpha and #w.text >= 4 and w.raw:match("^%u%l") and not self:known_word(k)
             and not self.u:used(k) and w.raw:sub(1, 1) == id:sub(1, 1):upper() then
           self:explain(k, k + 1)
+        end
+        -- ("put an ITA, ITY231 A320, ...", "a Qatar Airways, QTR7, ..."): the new callsign's airline by its name
+        for a = math.max(1, k - 2), k do
+          local icao, ae = self:airline_at(a)
+          if icao and ae == k + 1 and id:upper():sub(1, #icao) == icao then self:explain(a, k + 1) end
         end
         break
       end
@@ -158,14 +172,45 @@ return function(H, f, compass)
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
+    for _, q in ipairs(s.shared and self:quantities(s.shared, s.shared_e) or {}) do  -- (said for "both")
+      if q.b >= s.e then qs[#qs + 1] = q end
+    end
     -- (values after the type count too: "KLM602 A320, 52.4 6.4, 270 deg, ..." has its instruction word later)
     local lat, lon = position(qs, (types[1] and types[1].e < s.trig and types[1].b > s.b) and types[1].e or s.trig, self)
+    local along  -- the aircraft the new one is placed ahead of or behind
     if not lat or not lon then
-      -- "10 miles north of KL204", "20 miles east of it" (the aircraft named before)
-      local la, lo = self:offset_position(qs, s.b, s.e, near)
-      if la then lat, lon = la, lo elseif lo then return self:need(lo) end
+      -- "10 miles north of KL204", "20 miles east of it" (the aircraft named before), "20 nm ahead of KLM12"
+      local la, lo, ref = self:offset_position(qs, s.b, s.e, near)
+      if la then lat, lon, along = la, lo, ref elseif lo then return self:need(lo) end
     end
     local hdg, alt, fl, spd, mach
+    -- placed along an aircraft's track: its course, level and speed said against that aircraft's
+    -- ("head-on", "opposite direction", "coming the other way", "same track"; "1000 ft above"; "30 kt faster")
+    if along then
+      local a = self:state(along)
+      model = a
+      for i = s.b, s.e - 1 do
+        local head_on = self:word(i, "head") and self:word(i + 1, "on")
+        local reversed = head_on or self:word(i, "@course_reversed") and (self.t[i].text == "head-on"
+          or self:word(i + 1, "@course_nouns") or self:word(i, "reciprocal"))
+        if reversed and not hdg then
+          hdg = (a.hdg_deg + 180) % 360
+          self:explain(i, (head_on or self:word(i + 1, "@course_nouns")) and i + 2 or i + 1)
+        elseif self:word(i, "same") and self:word(i + 1, "@course_nouns") and not hdg then
+          hdg = a.hdg_deg
+          self:explain(i, i + 2)
+        end
+      end
+      for _, q in ipairs(qs) do
+        if q.kind == "alt" and not q.fl and not alt and self:word(q.e, "@above @below") then
+          alt, fl = a.alt_ft + (self:word(q.e, "@below") and -1 or 1) * self:take(q).value, true
+          self:explain(q.e, q.e + 1)
+        elseif q.kind == "speed" and not spd and not mach and self:word(q.e, "@faster @slower") then
+          spd = a.cas_kt + (self:word(q.e, "@slower") and -1 or 1) * self:take(q).value
+          self:explain(q.e, q.e + 1)
+        end
+      end
+    end
     for _, q in ipairs(qs) do
       if q.kind == "heading" and not hdg then hdg = q.value end
       -- "flying 300 deg": an angle with no turn is the heading
@@ -406,9 +451,9 @@ return function(H, f, compass)
   end
 
   function m:conflict_intruder(s)
-    local id, target
+    local id, target, target_e
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
-      if r.exists then target = target or r.name else id = id or r.name:upper() end
+      if r.exists then target, target_e = target or r.name, target_e or r.e else id = id or r.name:upper() end
     end
     local named = self:find_word(s.b, s.e, "@named")
     if not id and named + 1 < s.e and self.t[named + 1].kind == "word" then id = self.t[named + 1].raw:upper() end
@@ -425,6 +470,17 @@ return function(H, f, compass)
     end
     if not target then return self:need("Which aircraft should " .. id .. " conflict with?") end
     local dpsi, cpa, tlosh, dh, tlosv
+    -- ("crecons INT6 A320 KLM1234 270 1 180": the command's name typed, its values bare after the target
+    -- in the command's order, nothing else)
+    local bare, at = {}, target_e
+    for _, q in ipairs(self:word(s.trig, "creconfs") and self:quantities(target_e, s.e) or {}) do
+      if q.kind ~= "plain" or q.b ~= at then bare = {} break end
+      bare[#bare + 1], at = q, q.e
+    end
+    if #bare >= 3 and at == s.e then
+      dpsi, cpa, tlosh = self:take(bare[1]).value, self:take(bare[2]).value, self:take(bare[3]).value
+      dh, tlosv = bare[4] and self:take(bare[4]).value, bare[5] and self:take(bare[5]).value
+    end
     for k = s.b, s.e - 1 do
       if self:word(k, "@head_on") and (self.t[k].text ~= "head" or self:word(k + 1, "on")) then dpsi = 180 end
     end
@@ -484,7 +540,7 @@ return function(H, f, compass)
     local cmd = string.format("CRECONFS %s %s %s %s %s %s", id, actype, target, f.num(dpsi), f.num(cpa), f.num(tlosh))
     if dh then cmd = cmd .. " " .. f.num(dh) .. (tlosv and " " .. f.num(tlosv) or "") end
     -- its speed, after the vertical part ("..., vertical loss at 300 s, 280 knots")
-    local spd = dh and tlosv and first_speed(self, s)
+    local spd = dh and tlosv and (bare[6] or first_speed(self, s))
     if spd then cmd = cmd .. " " .. f.num(self:take(spd).value) end
     -- a value said in the description and read as none of the arguments is asked about, never dropped
     for _, q in ipairs(self:quantities(s.b, s.e)) do
@@ -498,16 +554,77 @@ return function(H, f, compass)
     self.created[id] = true
   end
 
+  -- "swap the levels of KLM12 and TRA6021" (headings, speeds): each of the two aircraft named flies the
+  -- other's present level, heading or speed (lexicon.swapped), after a yes (two aircraft swapping levels
+  -- climb and descend through each other's); anything else is asked
+  function m:swap(s)
+    local refs = {}
+    for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
+      if r.exists then refs[#refs + 1] = r end
+    end
+    local k = self:find_word(s.trig, s.e, "@swapped")
+    if #refs ~= 2 or k >= s.e or refs[1].name == refs[2].name then
+      return self:need("Which two aircraft should swap their levels, headings or speeds?")
+    end
+    local cmd = L.swapped[self.t[k].text]
+    local a, b = refs[1].name:upper(), refs[2].name:upper()
+    self:confirm_before(string.format("Swap the %ss of %s and %s? (yes or no)", (self.t[k].text:gsub("s$", "")), a, b))
+    for _, pair in ipairs({ { a, self:state(b) }, { b, self:state(a) } }) do
+      local id, o = pair[1], pair[2]
+      if cmd == "ALT" then
+        local ft = math.floor((o.alt_ft or 0) + 0.5)
+        self:emit("ALT " .. id .. " " .. (ft >= 10000 and f.alt(ft, true) or f.int(ft)))
+      elseif cmd == "HDG" then
+        self:emit("HDG " .. id .. " " .. f.num(math.floor((o.hdg_deg or 0) + 0.5) % 360))
+      else
+        self:emit("SPD " .. id .. " " .. (o.sel_mach and f.mach(o.sel_mach) or f.int(o.cas_kt or 0)))
+      end
+    end
+    self:mark_used(s.b, s.e)
+  end
+
   -- A position said as a distance and a compass point from an aircraft ("10 nm north", "20 miles
-  -- south of where it is now", "15 nm south of RYR81JC", "20 miles east of it"): lat, lon [deg] on a
-  -- flat earth around the aircraft (d NM north is d/60 degrees of latitude), with the quantity taken;
-  -- nil when no compass point follows the distance. `from`: the aircraft meant when none is named
-  -- after "of" (the one moved; "it"). Returns nil, question when the aircraft's position is unknown.
+  -- south of where it is now", "15 nm south of RYR81JC", "20 miles east of it"), or along a named
+  -- aircraft's track ("20 nm ahead of KLM12", "dead behind KL001 at 15 nm": the bearing its heading, or
+  -- the reverse): lat, lon [deg] on a flat earth around the aircraft (d NM north is d/60 degrees of
+  -- latitude), with the quantity taken, and for a place along a track that aircraft's id; nil when no
+  -- compass point or side follows the distance. `from`: the aircraft meant when none is named after
+  -- "of" (the one moved; "it"). Returns nil, question when the aircraft's position is unknown.
   function m:offset_position(qs, b, e, from)
     for _, q in ipairs(qs) do
+      -- ("behind KL001 at 15 nm": the side and the aircraft before the distance)
+      local r
+      for _, x in ipairs(q.kind == "dist" and q.b >= b and q.e <= e and self:word(q.b - 1, "at")
+          and self:refs_in(b, q.b - 1, "aircraft") or {}) do
+        if x.exists and x.e == q.b - 1 then r = x end
+      end
+      if r and L.along_track[(self.t[r.b - 1] or {}).text] then
+        local a = self:state(r.name)
+        self:take(q)
+        self:explain(self:word(r.b - 2, "dead right straight directly") and r.b - 2 or r.b - 1, r.e)
+        local rad = math.rad(a.hdg_deg + L.along_track[self.t[r.b - 1].text])
+        return a.lat + q.value * math.cos(rad) / 60,
+          a.lon + q.value * math.sin(rad) / (60 * math.cos(math.rad(a.lat))), r.name
+      end
       local k = q.e
       if self:word(k, "to") and self:word(k + 1, "the") then k = k + 2 end
+      local front = self:word(k, "in") and self:word(k + 1, "front")  -- ("20 nm in front of KLM12")
+      if front then k = k + 1 end
       local t = self.t[k]
+      local side = q.kind == "dist" and q.b >= b and q.e <= e and t and t.kind == "word" and L.along_track[t.text]
+      -- ("ahead of the ownship KL001")
+      local at = self:word(k + 1, "of") and k + 2 or k + 1
+      while self.t[at] and (self.t[at].filler or self:word(at, "@ownship")) do at = at + 1 end
+      r = side and self:refs_in(at, at + 1, "aircraft")[1]
+      if r and r.exists then
+        local a = self:state(r.name)
+        self:take(q)
+        self:explain(front and k - 1 or k, r.e)
+        if self:word(k - 1, "dead right straight directly") then self:explain(k - 1, k) end
+        local rad = math.rad(a.hdg_deg + side)
+        return a.lat + q.value * math.cos(rad) / 60,
+          a.lon + q.value * math.sin(rad) / (60 * math.cos(math.rad(a.lat))), r.name
+      end
       local brg = q.kind == "dist" and q.b >= b and q.e <= e and t and t.kind == "word" and L.compass[t.text]
       if brg then
         local ref = from
@@ -571,16 +688,20 @@ return function(H, f, compass)
       if q.kind == "vs" and not opt[4] then opt[4] = f.int(q.value) end
     end
     -- a bare number left after the position is the altitude when it reads as one (whole hundreds of feet,
-    -- "and keep it at 3500"); any other is asked, never dropped
-    for _, q in ipairs(qs) do
+    -- "and keep it at 3500"); the last value, after the level and heading with no speed said, is the speed
+    -- (MOVE's order, as CRE's: "to 52.3 5.3, FL200, heading 270, 250"); any other is asked, never dropped
+    for k, q in ipairs(qs) do
       local read = self.taken[q.b] ~= nil or (lat and math.abs(q.value - lat) < 1e-9)
         or (lon and math.abs(q.value - lon) < 1e-9)
       if q.kind == "plain" and q.b > s.trig and not read and not self:in_reason(q.b) then
-        if opt[1] or q.value < 1000 or q.value > 60000 or q.value % 100 ~= 0 then
+        if opt[1] and opt[2] and not opt[3] and k == #qs and q.value >= 40 and q.value <= 700 then
+          opt[3] = f.int(q.value)
+        elseif opt[1] or q.value < 1000 or q.value > 60000 or q.value % 100 ~= 0 then
           return self:need(string.format("To move %s I did not place '%s'. Is it an altitude, heading or speed?",
             id, self:raw(q.b, q.e)))
+        else
+          opt[1] = f.int(q.value)
         end
-        opt[1] = f.int(q.value)
       end
     end
     local last = 0
@@ -1817,6 +1938,8 @@ return function(H, f, compass)
     if value and self:word(first, "what what's whats show display print") and #self:quantities(1, #self.t + 1) == 0 then
       return true
     end
+    -- ("which resolution method is active": a request opening with "which" asks, "?" or not)
+    if self:word(first, "which") and #self:quantities(1, #self.t + 1) == 0 then return true end
     -- (a question: "is ... on?", "what is ...?", "can you check which/whether ...?"; its first sentence, a
     -- remark may follow: "Is the conflict detection on now? I can't see any alerts.")
     local ends = #self.t
@@ -1909,9 +2032,10 @@ return function(H, f, compass)
   end
 
   -- first quantity of one of `kinds` in the segment, or nil
+  -- the first value of one of `kinds` in segment s, none said in a remark ("note to self: episode 14 ...")
   local function first(self, s, kinds)
     for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if kinds[q.kind] then return q end
+      if kinds[q.kind] and not self:in_reason(q.b) then return q end
     end
     return nil
   end

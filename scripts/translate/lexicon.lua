@@ -78,7 +78,7 @@ return {
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
-        "entirely", "moment", "away", "back", "aside", "apart",
+        "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
         -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
         "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger" },
     -- courtesy and framing of a request
@@ -143,6 +143,8 @@ return {
         "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
         "automatically", "manual", "manually",
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac", "acft",
+        -- a speed named by the aircraft's configuration ("minimum clean speed, 210 knots")
+        "clean",
         -- participles that place what follows ("located at NARIX"), and the experimenter's own aircraft
         "located", "positioned", "situated", "ownship",
         -- an aircraft described by its size ("the small Cessna", "a big Boeing") or its airline's country ("the
@@ -192,7 +194,7 @@ return {
         "at most", "not less than", "no less than", "not more than", "no more than", "until further advised",
         "until further notice", "without restriction", "without restrictions",
         -- the same said with "till", without "further", or with the verb unbent ("until further advise")
-        "till further advised", "till further notice", "until advised", "till advised", "until further advise",
+        "till further advised", "till further notice", "until advised", "till advised", "until further advise", "until further advice", "till further advice",
         "till further advise", "until further instructions", "till further instructions",
         -- the same in ICAO English as a second language, "than" or the noun left out ("rate not less 1000 feet
         -- per minute", "maintain FL130 until further"), or the bound said before its value's noun ("not above
@@ -225,7 +227,7 @@ return {
         "separation", "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite",
         "define", "teleport", "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes",
         "timestep", "protected", "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude",
-        "minimum", "horizontal", "forward", "right", "left", },
+        "minimum", "horizontal", "forward", "right", "left", "creconfs", },
     common = { "stop", "them", "last", "want", "have", "from", "with", "what", "also", "back", "give", "make",
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
@@ -335,6 +337,9 @@ return {
   -- verbs of the experimenter's purpose after a comma (", we want it crossing ..."): a reason
   purpose_verbs = { "want", "need", "don't", "dont", "wanna" },
   reason_after_so = { "that", "it", "they", "it's", "its", "we", "he", "she", "he's", "she's", "the" },
+  -- the experimenter's check after an instruction, "see" then one of these ("ff 2 min and see if they lose
+  -- separation", ", see whether that's enough"): a reason, to the end of its sentence
+  see_whether = { "if", "whether" },
   -- asides set apart from a complete instruction (G:commentary; they account for no word): a span after a dash or in brackets,
   -- or a clause after a comma opening with one of `subjects` ("- hard test of the turn model", ", we only
   -- care about the descent phase"); a lead-in before a colon opening with one of `leads` ("For the
@@ -356,7 +361,9 @@ return {
           later = { "later", "afterwards", "afterward" },
           lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },
           leads = { "for", "to" },
-          labels = { "reason", "purpose", "rationale", "why", "aim", "goal", "note", "comment", "context" },
+          -- (a note to oneself, "note to self:", is the speaker's, to the end of its sentence)
+          labels = { "reason", "purpose", "rationale", "why", "aim", "goal", "note", "comment", "context", "self",
+                     "myself" },
           blocks = { "and", "then", "also", "same", "both", "either", "again", "correction", "disregard",
                      "negative", "plus", "next" },
           determiners = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my",
@@ -607,10 +614,26 @@ return {
   speed_units = { "knots", "knot", "kts", "kt" },
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course
-  intruder = { "intruder", "conflict", "conflicting" },
+  intruder = { "intruder", "conflict", "conflicting", "converger" },
   closest_approach = { "cpa", "miss", "passing", "closest" },
-  loss_of_separation = { "los", "tlos", "tlosh" },
+  loss_of_separation = { "los", "tlos", "tlosh", "loss" },
   head_on = { "head-on", "head" },
+  -- what two aircraft swap ("swap the levels of KLM12 and TRA6021"), by the command that sets it (the
+  -- spelling fixer makes "headings" "heading")
+  swapped = { levels = "ALT", level = "ALT", altitudes = "ALT", altitude = "ALT", headings = "HDG", heading = "HDG",
+              speeds = "SPD", speed = "SPD" },
+  -- a new aircraft placed along another's track ("20 nm ahead of KLM12", "dead behind KL001 at 15 nm"):
+  -- the side, as a bearing off that aircraft's heading [deg]; its course then said against that
+  -- aircraft's: the reverse ("head-on", "opposite direction", "coming the other way", "reciprocal") or the
+  -- same ("same heading", "same track"); its level and speed by a difference ("1000 ft above", "30 kt faster")
+  along_track = { ahead = 0, behind = 180, front = 0 },  -- ("in front of")
+  -- whom a note is for when it is the speaker's own ("note to self:", "note for me:"), not the log's
+  note_to_self = { "self", "myself", "me" },
+  ownship = { "ownship", "own-ship" },
+  course_reversed = { "head-on", "opposite", "reciprocal", "other" },
+  course_nouns = { "heading", "hdg", "direction", "track", "course", "way" },
+  faster = { "faster", "quicker" },
+  slower = { "slower" },
   -- the clock reaching a time ("when the clock hits 45 minutes")
   clock_reaches = { "hits", "hit", "reaches", "reach", "shows" },
   -- more of the same ("3 more random ones")

@@ -314,6 +314,8 @@ return {
     { "spirit airlines", "NKS" },
     { "qatar airways", "QTR" },
     { "cathay pacific", "CPA" },
+    { "ita", "ITY" },  -- (ITA Airways, telephony Itarrow)
+    { "ita airways", "ITY" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },

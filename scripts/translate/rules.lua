@@ -65,6 +65,7 @@ return function(intent, rule, words)
   intent "zone" { cmds = { "ZONER", "ZONEDH" }, handler = "zone" }
   intent "rfac" { cmds = { "RFACH", "RFACV" }, args = { "factor" }, handler = "reso_factor" }
   intent "rmethv" { cmd = "RMETHV", args = { "ON", "OFF" }, handler = "reso_vertical" }
+  intent "swap" { cmds = { "ALT", "HDG", "SPD" }, handler = "swap" }
   intent "resnav" { cmd = "RESNAV", args = { "PASTCPA" }, handler = "resume_nav" }
   intent "creconfs" { cmd = "CRECONFS", args = { "acid", "type", "targetid", "dpsi", "cpa", "tlosh", "dh", "tlosv" },
                       handler = "conflict_intruder", absorbs = true, single = true }
@@ -106,9 +107,12 @@ return function(intent, rule, words)
       if first and first.b > j and first.b <= j + 8 and (first.kind == "aircraft" or first.kind == "type") then
         local lead, to, words = true, first.b, 0
         for k = j, first.b - 1 do
-          local _, ae = g:airline_at(k)
+          local icao, ae = g:airline_at(k)
           if lead and k < to and ae == first.b and first.kind == "type" then to = k end  -- ("a Vueling A320")
-          lead = lead and (k >= to or (g.t[k].kind == "word" and not g:intent_at(k) and not ae))
+          -- ("first aircraft Air Malta AMC412 A320 ...": the airline of the new callsign said before it)
+          local own = ae == first.b and first.kind == "aircraft" and not first.exists
+            and first.name:upper():sub(1, #icao) == icao
+          lead = lead and (k >= to or (g.t[k].kind == "word" and not g:intent_at(k) and (not ae or own)))
           if k < to and not g.t[k].filler then words = words + 1 end
         end
         lead = lead and words <= 4
@@ -259,14 +263,19 @@ return function(intent, rule, words)
   rule { "lower raise", "spd", near = { 4, "speed" } }
   rule { "lower raise", "alt" }
   rule { "maintain maintained", "maintain" }
+  -- "swap the levels of KLM12 and TRA6021", "exchange their headings": each flies the other's
+  rule { "swap exchange", "swap", near = { 4, "@swapped" } }
   -- "put BAW123 at the same level as DLH4AX"; "keep it at FL290 and 270 kts"
   rule { "level altitude", "alt", prev = { 1, "same" }, next = "as" }
+  rule { "level", "alt", prev = { 2, "same" }, next = "as", when = function(g, i) return g:word(i - 1, "flight") end }
   rule { "keep", "maintain", next = "it him her them", when = function(g, i)
     return g:word(i + 2, "at") and g.t[i + 3] ~= nil and (g.t[i + 3].kind == "number" or g:word(i + 3, "fl flight"))
   end }
 
 
   -- speed, and the simulation's speed
+  -- ("swap their headings", "exchange the speeds of ..."): what is swapped, no value of its own
+  rule { "heading headings speed speeds level levels altitude altitudes", false, prev = { 4, "swap exchange" } }
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
@@ -452,17 +461,39 @@ return function(intent, rule, words)
   end }
   -- "spawn a conflict for KL204: INT1, A320, 90 deg off its track, cpa 0, los in 200 s", "make an intruder
   -- called TEST1 ... head-on, passing 1 mile, LoS after 4 minutes": an intruder set up to conflict
+  -- ("put an intruder 20 nm ahead of KLM12 head-on", "intruder INT4 dead behind KL001 at 15 nm": placed
+  -- at a distance along an aircraft's track, the intruder is a creation, CRE)
+  local function along_track(g)
+    for _, q in ipairs(g:quantities(1, #g.t + 1)) do
+      if q.kind == "dist" and (g:word(q.e, "@along_track") or g:word(q.e, "in") and g:word(q.e + 1, "front")
+          or g:word(q.b - 1, "at") and g:word_in(math.max(1, q.b - 5), q.b, "@along_track")) then
+        return true
+      end
+    end
+    return false
+  end
   rule { "create spawn generate creat cre make new add put", "creconfs", when = function(g, i)
     return g:followed_by(i, 4, "@intruder")
-      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
+      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
   end }
+  rule { "intruder", "create", when = along_track }
+  -- ("INT3: A320, 40 nm ahead of the ownship KL001, ...": a new callsign and a type, no other creation word)
+  rule { "ahead behind", "create", when = function(g, i)
+    if not along_track(g) or not g:has_ref(1, #g.t + 1, "type") then return false end
+    for k = 1, i - 1 do if g:intent_at(k) == "create" then return false end end
+    for _, r in ipairs(g.refs) do if r.kind == "aircraft" and not r.exists then return true end end
+    return false
+  end }
+  -- ("opposite heading", "same track": the new aircraft's course against the one it is placed by, no turn)
+  rule { "heading hdg direction track course", false, prev = { 1, "same opposite reciprocal" }, when = along_track }
   -- "intruder on IBE2604: INT1, B738, from the right, CPA 0, 250 s", "give TAP123 a head-on intruder, INT2,
-  -- B738, CPA 2 miles": the noun alone, no verb of creation before it, sets one up when its type and
-  -- closest approach or loss are said
+  -- B738, CPA 2 miles", "conflict on KL001: INT2, A320, 135 deg, cpa 2, tlosh 500": the noun alone, no verb of
+  -- creation before it, sets one up when its type and closest approach or loss are said
   rule { "creconfs", "creconfs" }  -- the command's name typed with its values in words ("creconfs INT1 B738 EZY45 dpsi 180 ...")
-  rule { "intruder", "creconfs", when = function(g, i)
-    return not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
-      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on")
+  rule { "intruder conflict conflicting converger", "creconfs", when = function(g, i)
+    return g:find_word(1, #g.t + 1, "intruder conflict conflicting converger") == i  -- (the first one said)
+      and not g:word_in(1, i, "create spawn generate creat cre make new add put") and g:has_ref(i + 1, #g.t + 1, "type")
+      and g:word_in(i + 1, #g.t + 1, "@loss_of_separation @closest_approach @head_on") and not along_track(g)
   end }
   -- "spawn 3 aircraft", "generate 5 aircraft at FL300, type B738", "sample 8 planes": a count of
   -- aircraft with no callsign is random traffic
@@ -550,6 +581,13 @@ return function(intent, rule, words)
     level = level or (typed and typed.b == r.e and typed.kind == "alt" and typed.fl)
     return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
+  end }
+  -- "add SUDIK to air malta 77", "add ZAGNB for croatia 7TK": a waypoint straight after the verb, for an
+  -- aircraft that flies named straight after "to"/"for", its clause ending there
+  rule { "add append", "addwpt", when = function(g, i)
+    local w = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    local a = w and g:word(w.e, "to for") and g:refs_in(w.e + 1, w.e + 2, "aircraft")[1]
+    return a ~= nil and a ~= false and a.exists and (g.t[a.e] == nil or g.t[a.e].kind == "punct" or g:word(a.e, "and"))
   end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
   -- next to another, the place said after "after"/"before" before or after the verb
@@ -1011,6 +1049,12 @@ return function(intent, rule, words)
   rule { "reset", false, near = { 3, "protected protection pz rpz zone zoner separation radius" } }
   -- "pause the sim while I reset the eye tracker": the speaker's own doing in a clause of time, no instruction
   rule { "reset restart", false, prev = { 1, "i we" }, when = function(g, i) return g:word(i - 2, "while when as after before until once") end }
+  -- "reset KL001 to 50.5, 5.0, FL200, ...": an aircraft put back to a position said is moved there
+  rule { "reset", "move", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "aircraft")[1]
+    local q = r and r.exists and g:word(r.e, "to") and g:quantities(r.e + 1, r.e + 2)[1]
+    return q ~= nil and q ~= false and (q.kind == "lat" or q.kind == "plain" and math.abs(q.value) <= 90)
+  end }
   rule { "reset", "reset" }
   rule { "start", "reset", next = "over" }
   rule { "clear", "reset", near = { 3, "@sim" } }
@@ -1030,6 +1074,8 @@ return function(intent, rule, words)
   rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "aircraft") and not g:word_in(i + 1, #g.t + 1, "log") end }
   rule { "print", "echo" }
+  -- "note to self: ...", "note for me: ...": the experimenter's own note, no text for the log
+  rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started": the text after the colon
   rule { "note log", "echo", when = function(g, i)
     for k = i + 1, math.min(#g.t, i + 4) do
@@ -1049,13 +1095,19 @@ return function(intent, rule, words)
   end }
   -- "wind at 6.5 north 3.3 east from 220 at 15 knots", "a harmattan wind at 12N 8.5E, from 050, 20 knots": a
   -- position straight after it, where it blows from said after that
-  -- ("wind at 53.4 -6.3 from 270 at 25 kts": a latitude and longitude in bare decimal degrees)
+  -- ("wind at 53.4 -6.3 from 270 at 25 kts": a latitude and longitude in bare decimal degrees; "wind at
+  -- 38.8 north 9.1 west, FL100, 310 degrees 25 knots": its direction in degrees and its speed in knots said
+  -- after the position, no "from")
   rule { "wind winds", "wind", when = function(g, i)
     local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or nil
     local nx = q and q.kind == "plain" and g:quantities(q.e, q.e + 1)[1] or nil
     local pair = nx ~= nil and nx.kind == "plain" and q.number.typed and nx.number.typed
       and (q.number.digits or ""):find("%.") ~= nil and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
-    return q ~= nil and (q.kind == "lat" or q.kind == "lon" or pair) and g:find_word(i + 3, #g.t + 1, "from") <= #g.t
+    local told = g:find_word(i + 3, #g.t + 1, "from") <= #g.t
+    for _, v in ipairs(q and not told and g:quantities(q.e, #g.t + 1) or {}) do
+      told = told or (v.kind == "angle" and (g:quantities(v.e, v.e + 1)[1] or {}).kind == "speed")
+    end
+    return q ~= nil and (q.kind == "lat" or q.kind == "lon" or pair) and told
       and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
   end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
@@ -1072,7 +1124,7 @@ return function(intent, rule, words)
     return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
   end }
   rule { "detection asas cdmethod cd", "asas" }
-  rule { "cr", "reso", next = "on off" }  -- "CD on, CR off": conflict resolution by its letters
+  rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
@@ -1084,10 +1136,22 @@ return function(intent, rule, words)
     for k = 1, #g.t do if g:vertical_resolutions(k) then return true end end
     return false
   end }
+  -- "after a resolution aircraft should resume nav once past CPA": when navigation resumes after one (RESNAV)
+  rule { "resolution resolutions resolving", false, prev = { 2, "after following" }, when = function(g, i)
+    return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "resume resumes") and g:word_in(i + 1, #g.t + 1, "cpa")
+  end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
   rule { "mvp", "reso", next = "on" }  -- "and MVP on"
+  -- "pz 5 nm, dh 1000, lookahead 300, mvp": the method named alone as an item of a list of conflict
+  -- detection settings
+  rule { "mvp", "reso", when = function(g, i)
+    local before, after = g.t[i - 1], g.t[i + 1]
+    return before ~= nil and (before.kind == "punct" or g:word(i - 1, "and"))
+      and (after == nil or after.kind == "punct")
+      and g:word_in(1, i - 1, "pz rpz zone zoner zonedh dh dtlook lookahead asas cdmethod detection")
+  end }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
          not_near = { 4, "minimum nm nautical miles radius ft feet" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"

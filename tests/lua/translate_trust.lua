@@ -2820,3 +2820,147 @@ do
       "CRE EXP5 A320 TRS 90 FL120 240")
   end
 end
+-- A new aircraft placed along another's track ("12 nm ahead of PH101", "right behind PH101 at 8 nm"):
+-- the position d NM along that aircraft's heading (or its reverse), the course, level and speed said
+-- against its own ("reciprocal heading", "coming the other way", "same track"; "2000 feet below"; "20 kts
+-- quicker"); a course not said, or no callsign and type, is asked
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("spawn an intruder 12 nm ahead of PH101, reciprocal heading, same altitude, call it TX1, type B738, 250 kt"),
+    "CRE TX1 B738 51 3.317803 270 FL220 250")
+  check_eq(ex("TX2 A321 30 nm behind SAS7 on the same track, 2000 feet below, 20 kts quicker"),
+    "CRE TX2 A321 50.5 6 180 FL280 320")
+  check_eq(ex("intruder TX3, E190, 10 nm ahead of SAS7, coming the other way, FL300, 280 kt"),
+    "CRE TX3 E190 49.833333 6 0 FL300 280")
+  check_eq(ex("TX4 A320 right behind PH101 at 8 nm, same course, same level, same speed"),
+    "CRE TX4 A320 51 2.788131 90 FL220 260")
+  check_eq(ex("spawn TX6 A320 20 nm in front of SAS7, head-on, same level, 280 kt"), "CRE TX6 A320 49.666667 6 0 FL300 280")
+  -- (37 km is read as 20.0 NM, to 0.1 NM)
+  check_eq(ex("TX7 A320 37 km ahead of PH101, opposite direction, FL220, 280 kt"), "CRE TX7 A320 51 3.529672 270 FL220 280")
+  check_eq(ex("put an intruder 15 nm ahead of SAS7"), "ASK To create the aircraft I need its callsign, aircraft type. What should they be?")
+  check_eq(ex("TX5 A320 15 nm ahead of SAS7 at FL300, 280 kt"), "ASK What heading should TX5 have?")
+end
+
+-- CRECONFS said the researcher's way: "conflict on X: ...", "a converger for X", "a conflicting A320", its
+-- name typed short ("crecons", "creconf") with its values bare in the command's order, "400 s to loss";
+-- a value not said is still asked for
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("creconf TX7 A320 PH101 45 2 300"), "CRECONFS TX7 A320 PH101 45 2 300")
+  check_eq(ex("crecons TX7 A320 PH101 45 2 300 1000 100 250"), "CRECONFS TX7 A320 PH101 45 2 300 1000 100 250")
+  check_eq(ex("crecons TX7 A320 PH101 45 2"), "ASK At what angle, in degrees, should TX7 cross the track of PH101?")
+  check_eq(ex("conflict on SAS7: TX8, A319, dpsi 60, cpa 1, tlosh 200"), "CRECONFS TX8 A319 SAS7 60 1 200")
+  check_eq(ex("a converger for PH101: TX9, B738, 20 degrees, cpa 0.5 nm, 300 s to loss"),
+    "CRECONFS TX9 B738 PH101 20 0.5 300")
+  check_eq(ex("give PH101 a conflicting A320, TX10, 90 deg, passing 2 nm, 120 seconds to loss of separation"),
+    "CRECONFS TX10 A320 PH101 90 2 120")
+  check_eq(ex("conflict on SAS7: TX8, A319, dpsi 60, cpa 1"), "ASK In how many seconds should TX8 lose separation with SAS7?")
+  check_eq(ex("set up a crossing conflict for SAS7: intruder TX11, A321, 90 deg, cpa 1, tlosh 300"),
+    "CRECONFS TX11 A321 SAS7 90 1 300")
+  check(ex("there is a conflict between SAS7 and PH101"):match("^ASK") ~= nil, "a conflict described sets up nothing")
+end
+
+-- The researcher's settings and remarks: "mvp" alone as an item of a list of detection settings is RESO MVP
+-- (alone as a request it is asked); "note to self: ..." is the speaker's own to the end of its sentence, the
+-- sentence after it is read; "and see if ..." after an instruction is the check the experimenter will make
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("zoner 4, dtlook 200 and mvp"), "ZONER 4 ; DTLOOK 200 ; RESO MVP")
+  check_eq(ex("asas on, mvp"), "ASAS ON ; RESO MVP")
+  check(ex("mvp"):match("^ASK") ~= nil, "the method named alone")
+  check_eq(ex("PZ 5 NM; DH 1000 ft; lookahead 300 s; MVP"), "ZONER 5 ; ZONEDH 1000 ; DTLOOK 300 ; RESO MVP")
+  check_eq(ex("cd statebased, cr mvp, pz 5"), "ASAS STATEBASED ; RESO MVP ; ZONER 5")
+  -- "mvp" is accounted for only by a command that carries it: never dropped
+  check_eq(ex("dtlook 300 with mvp"), "ASK I have DTLOOK 300. What does 'mvp' mean?")
+  check_eq(ex("let MVP use vertical speed in the resolutions"), "RMETHV V/S")
+  check_eq(ex("note to self: seed 9 diverged. dt 0.5"), "DT 0.5")
+  check(ex("note to myself: try pz 4 next"):match("^ASK") ~= nil, "a note to self runs nothing")
+  check_eq(ex("note for the log: pz 4 from now"), "ECHO pz 4 from now")
+  -- "after a resolution ... resume nav once past CPA" says when navigation resumes (RESNAV), no method
+  check_eq(ex("after a resolution aircraft should resume nav once past CPA"), "RESNAV PASTCPA")
+  check_eq(ex("resolution method MVP, then resume nav past CPA"), "RESO MVP ; RESNAV PASTCPA")
+  check_eq(ex("ff 3 min and see if SAS7 and PH101 lose separation"), "FF 180")
+  check_eq(ex("SAS7 left 20, see whether that clears PH101"), "HDG SAS7 160 LEFT")
+end
+
+-- MOVE's values in its order, as CRE's: the last bare value after the level and heading is the speed; "reset
+-- X to <position>" moves X (a bare value with no level and heading before it is still asked)
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("move SAS7 to 50.2 6.1, FL310, heading 200, 290"), "MOVE SAS7 50.2 6.1 FL310 200 290")
+  check_eq(ex("move SAS7 to 50.2 6.1, FL310, 290"), "ASK To move SAS7 I did not place '290'. Is it an altitude, heading or speed?")
+  check_eq(ex("reset PH101 to 51.0, 3.0, FL220, heading 090, 260 kts"), "MOVE PH101 51 3 FL220 90 260")
+  check(ex("reset PH101"):match("^ASK") ~= nil, "reset with an aircraft and no position")
+end
+
+-- Southern European controllers' and instructors' phrasing (R49): "make it N" after a value corrects it;
+-- "until further advice" keeps the value in force; "which ... is set/active" shows the setting; "add WPT
+-- to/for ACID" adds the waypoint to that aircraft's route (a clause that goes on past the aircraft is asked)
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300",
+    "DEFWPT ROSSA 51.2 3.4" })
+  check_eq(ex("PH101 speed 240 knots, make it 230"), "SPD PH101 230")
+  check(ex("PH101 speed 240 knots, make it 230 and climb FL300"):match("^ASK") ~= nil, "a value not said alone")
+  check_eq(ex("PH101 speed 240 knots, make it 230 please"), "SPD PH101 230")
+  -- "minimum clean speed" names the speed by the configuration: the value said is flown, none said is asked
+  check_eq(ex("PH101 reduce minimum clean speed, 210 knots"), "SPD PH101 210")
+  check(ex("PH101 reduce minimum clean speed"):match("^ASK") ~= nil, "no speed said")
+  -- the new callsign's airline by its name before it ("put an ITA, ITY77 A320, ...": ITA Airways)
+  check_eq(ex("put an ITA, ITY77 A320, at 43.9 N 7.9 E, heading 240, FL130, 270 kt"), "CRE ITY77 A320 43.9 7.9 240 FL130 270")
+  -- a wind's direction in degrees and speed in knots said after its position and level, no "from"
+  check_eq(ex("wind at 51.5 north 3.5 east, FL150, 250 degrees 30 knots"), "WIND 51.5 3.5 FL150 250 30")
+  check(ex("wind at 51.5 north 3.5 east, 250 degrees"):match("^ASK") ~= nil, "no wind speed")
+  -- the new callsign's airline said before it in a lead-in ("first aircraft Air Malta AMC412 A320 ...")
+  check_eq(ex("first aircraft Speedbird BAW9 A320 51.5N 3.5E heading 100 level 190 speed 280"),
+    "CRE BAW9 A320 51.5 3.5 100 FL190 280")
+  check_eq(ex("PH101 climb FL240, make it snappy"), "ASK I have ALT PH101 FL240. What does 'snappy' mean?")
+  check_eq(ex("PH101 maintain 250 knots until further advice"), "SPD PH101 250")
+  check_eq(ex("which time step is set"), "DT")
+  check_eq(ex("which resolution method is active"), "RESO")
+  check_eq(ex("add ROSSA to PH101"), "ADDWPT PH101 ROSSA")
+  check_eq(ex("instructor: add ROSSA for SAS7"), "ADDWPT SAS7 ROSSA")
+  check_eq(ex("add ROSSA to PH101 and descend FL200"), "ADDWPT PH101 ROSSA ; ALT PH101 FL200")
+  check(ex("add ROSSA to PH101 after SAS7"):match("^ASK") ~= nil, "a clause going on past the aircraft")
+end
+
+-- A station named like an airline's telephony in a hand-off ("contact Brussels one two seven decimal one") is
+-- part of what squawk does not simulate, never an aircraft left over; "the same flight level as X" is X's level
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
+  check_eq(ex("PH101 descend FL200, contact Brussels one two seven decimal one"), "ALT PH101 FL200")
+  check_eq(ex("put PH101 at the same flight level as SAS7"), "ALT PH101 FL300")
+  check(ex("PH101 descend FL200, BEL127 climb FL250"):match("^ASK") ~= nil, "an aircraft no one flies, instructed")
+end
+
+-- A pair created in one request by a researcher: a title before the colon ("symmetric geometry:") names the
+-- scenario; values said after "both"/"all" at the end are each new aircraft's (with an aircraft named after
+-- "both", whose values follow is asked); "closer" describes a move whose position is said
+do
+  local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260" })
+  check_eq(ex("symmetric geometry: TX1 A320 at 52.0 4.0 heading 090 and TX2 A320 at 52.0 5.0 heading 270, both FL300, 280 kt"),
+    "CRE TX1 A320 52 4 90 FL300 280 ; CRE TX2 A320 52 5 270 FL300 280")
+  check(ex("write a note in the log: trial 4 begins"):match("^ECHO") ~= nil, "an instruction before a colon is no title")
+  check_eq(ex("overtake: TX1 A320 at 52.0 4.0 heading 090 and TX2 A320 at 52.0 4.5 heading 090, both FL300, TX1 at 300 kt"),
+    "ASK Which of the new aircraft do the values after 'both' belong to?")
+  check(ex("don't: PH101 climb FL300"):match("^ASK") ~= nil, "a negation before the colon is no title")
+  check_eq(ex("move PH101 closer: 51.2 3.3, FL220, heading 090, 250"), "MOVE PH101 51.2 3.3 FL220 90 250")
+  check(ex("move PH101 closer"):match("^ASK") ~= nil, "closer, no position")
+end
+
+-- Two aircraft swap their levels, headings or speeds ("swap the levels of A and B", "A and B swap headings"):
+-- after a yes, each flies the other's present value; one aircraft, or three, is asked
+do
+  local s = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300",
+    "CRE TX1 A320 50.5 4.0 270 FL260 280" })
+  local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+  local function swapped(text)
+    local r = graph.translate(text, { sim = s, mode = "offline" })
+    check(r.ask ~= nil and r.ask:match("^Swap the ") ~= nil and r.confirm ~= nil, text)
+    return table.concat(r.confirm and r.confirm.commands or {}, " ; ")
+  end
+  check_eq(swapped("swap the levels of PH101 and SAS7"), "ALT PH101 FL300 ; ALT SAS7 FL220")
+  check_eq(swapped("PH101 and SAS7 swap headings"), "HDG PH101 180 ; HDG SAS7 90")
+  check_eq(swapped("exchange the speeds of PH101 and TX1"), "SPD PH101 280 ; SPD TX1 260")
+  check(ex("swap the levels of PH101"):match("^ASK") ~= nil, "one aircraft")
+  check(ex("swap the levels of PH101, SAS7 and TX1"):match("^ASK") ~= nil, "three aircraft")
+end
