@@ -3111,7 +3111,9 @@ end
 -- slot (after "add", "dct", "after", ...; then each name listed straight after it) that is no word squawk
 -- knows and that the navdata holds as a fix, navaid or airport (world.place_known) within TYPED_PLACE_NM
 -- of an aircraft that flies (a recogniser's word far away, "direct sachs", is no such place) is that
--- place, as if typed in capitals; without navdata nothing changes. A name speech recognition split into
+-- place, as if typed in capitals; without navdata nothing changes. In a line with capitals only a word
+-- written as a proper name is read so ("Add Willo to Easy 8472's route"; "add willo" there stays a word).
+-- A name speech recognition split into
 -- syllables ("direct toe bix", "as bin", "u no ko") is joined when the first word alone is no such place and
 -- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
 -- does not know that is such a fix near the traffic, or one on an aircraft's route.
@@ -3140,7 +3142,8 @@ local function spelled_airports(text, world)
   end)
 end
 local function typed_places(text, world)
-  if text:find("%u") or not world.place_known then return text end
+  if not world.place_known then return text end
+  local capitals = text:find("%u") ~= nil
   local ids = {}
   for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
   local function near(w)
@@ -3161,11 +3164,13 @@ local function typed_places(text, world)
   local out, slot, k = {}, false, 1
   while k <= #parts do
     local lead, word = parts[k][1], parts[k][2]
-    local w, rest = word:match("^(%a[%a%d]*)(.*)$")
-    local named = w and slot and #w >= 3 and #w <= 5 and not known_word(w) and not ids[w]
-      and not lexicon.shorthand[w] and near(w)
+    local raw, rest = word:match("^(%a[%a%d]*)(.*)$")
+    local w = raw and raw:lower()
+    local named = w and slot and #w >= 3 and #w <= 5 and (not capitals or raw:match("^%u%l+$"))
+      and not known_word(w) and not ids[w] and not lexicon.shorthand[w] and near(w)
     k = k + 1
-    if w and w:match("^%a+$") and slot and not named and rest == "" and not PLACE_SLOTS[w] and w ~= "to" and not routed[w] then
+    if w and not capitals and w:match("^%a+$") and slot and not named and rest == "" and not PLACE_SLOTS[w]
+        and w ~= "to" and not routed[w] then
       local joined = w
       for j = k, math.min(k + 1, #parts) do
         local x, punct = parts[j][2]:match("^(%a+)(%p*)$")
@@ -3179,8 +3184,10 @@ local function typed_places(text, world)
       end
     end
     out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
-    slot = (named and rest == "") or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
-      or (w == "to" and slot and PLACE_SLOTS[out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""] ~= nil)))
+    -- (a list goes on after a name read so: "add willo then timba")
+    slot = (named and rest == "") or (slot and (w == "then" or w == "and") and rest == "")
+      or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
+      or (w == "to" and slot and PLACE_SLOTS[(out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""):lower()] ~= nil)))
   end
   return table.concat(out)
 end

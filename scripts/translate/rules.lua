@@ -551,6 +551,19 @@ return function(intent, rule, words)
     return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
+  -- "add SUDIK to air malta 77", "add ZAGNB for croatia 7TK", "add WILLO then TIMBA to Speedbird 31F": places
+  -- listed straight after the verb ("then", "and" or a comma between) and given, with "to" or "for", to an
+  -- aircraft that flies
+  rule { "add append", "addwpt", when = function(g, i)
+    local r, k = g:refs_in(i + 1, i + 2, "waypoint")[1], nil
+    while r do
+      k = r.e
+      local nx = (g:word(k, "then and") or (g.t[k] or {}).text == ",") and k + 1 or k
+      r = nx > k and g:refs_in(nx, nx + 1, "waypoint")[1]
+    end
+    local a = k and g:word(k, "to for") and g:refs_in(k + 1, k + 2, "aircraft")[1]
+    return a ~= nil and a ~= false and a.exists
+  end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
   -- next to another, the place said after "after"/"before" before or after the verb
   -- ("after NAVPO add Lajes": a navaid or airport said by its one-word name)
