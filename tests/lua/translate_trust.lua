@@ -1526,7 +1526,7 @@ do
   check_eq(table.concat(bounded.confirm.commands, " ; "), "ALT UAE512 FL120 ; AT UAE512 DESDI ALT FL150")
   check_eq(at("UAE512 descend FL120 and cross DESDI at 250 knots"), "ALT UAE512 FL120 ; AT UAE512 DESDI SPD 250")
   check(at("UAE512 cross DESDI at or below FL150"):find("^ASK squawk can set only an exact constraint at DESDI") ~= nil)
-  check_eq(at("Garuda four one two maintain flight level one seven zero"), "ASK Did you mean QFA41? I heard GARUDA412.")
+  check_eq(at("Kanuda four one two maintain flight level one seven zero"), "ASK Did you mean QFA41? I heard KANUDA412.")
   check_eq(at("Indonesia four one two maintain flight level one seven zero"), "ALT GIA412 FL170")
 end
 
@@ -2583,4 +2583,36 @@ do
   check_eq(ex("add a conflict for KLM77: XY21, A320, head-on (180), 1 nm CPA, 240 s to LoS"),
     "CRECONFS XY21 A320 KLM77 180 1 240")
   check_eq(ex("pz 5 nm, dh 1000, lookahead 300"), "ZONER 5 ; ZONEDH 1000 ; DTLOOK 300")
+end
+
+-- Places given to an aircraft after the verb ("add SUDIK to air malta 77", "add X for Y", a list with
+-- "then"), and a fix written as a proper name in a line with capitals ("Add Willo to Ryanair 4KP's route")
+-- when the navdata holds it near the traffic; a name it does not hold, or no such aircraft, still asks
+do
+  local s, ex = navscene({ "CRE RYR4KP B738 50.9 -0.5 090 FL200 260", "CRE EZY77 A320 51.2 0.3 270 FL180 250" },
+    "places given to an aircraft by 'to'/'for'")
+  if s then
+    check_eq(ex("Add Willo to Ryanair 4KP's route"), "ADDWPT RYR4KP WILLO")
+    check_eq(ex("please add Willo to RYR4KP"), "ADDWPT RYR4KP WILLO")
+    check_eq(ex("add WILLO for easy 77"), "ADDWPT EZY77 WILLO")
+    check_eq(ex("add WILLO then MAY to EZY77"), "ADDWPT EZY77 WILLO ; ADDWPT EZY77 MAY")
+    check_eq(ex("add WILLO, MAY to easy seven seven"), "ADDWPT EZY77 WILLO ; ADDWPT EZY77 MAY")
+    check_eq(ex("Easy 77 direct Willo"), "ADDWPT EZY77 WILLO ; DIRECT EZY77 WILLO")
+    check(ex("add WILLO to KLM999"):match("^ASK") ~= nil, "no such aircraft")
+    check(ex("Add Banana to EZY77's route"):match("^ASK") ~= nil, "no such place")
+    -- (in a line with capitals a fix's name in lower case is a word, not read as the place)
+    check(ex("add willo to RYR4KP"):match("^ASK") ~= nil, "lower case in a line with capitals")
+  end
+end
+
+-- Airlines said by their telephony or their own name in Asia, the Middle East, Africa and cargo ("Garuda
+-- 412", "IndiGo 2231", "Connie 412"), where aircraft of other airlines share the flight number
+do
+  local _, ex = scene({ "CRE GIA412 B738 -5 107 190 FL170 280", "CRE IGO412 A20N 19 73 100 FL300 280",
+    "CRE CKS412 B744 40 -80 090 FL330 290", "CRE VJC412 A321 10 106 010 FL250 280", "CRE KLM412 B738 52 4 090 FL200 250" })
+  check_eq(ex("Garuda four one two, maintain flight level one seven zero"), "ALT GIA412 FL170")
+  check_eq(ex("indigo 412 descend FL240"), "ALT IGO412 FL240")
+  check_eq(ex("Connie four twelve, climb flight level three five zero"), "ALT CKS412 FL350")
+  check_eq(ex("Vietjet 412 turn left heading 320"), "HDG VJC412 320 LEFT")
+  check(ex("Bamboo 412 descend FL240"):match("^ASK") ~= nil, "an airline with no aircraft flying asks")
 end
