@@ -1711,13 +1711,16 @@ function G:when_reached(s)
 end
 
 -- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
--- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's.
+-- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's (also one that waits
+-- for a condition: "after passing FL100 resume own navigation direct HEMEL").
 function G:direct_resumes_nav()
   for c = #self.out, 1, -1 do
     local id = self.out[c]:match("^LNAV (%S+) ON$")
     if id then
       for d = c + 1, #self.out do
-        if self.out[d]:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ") then
+        local o = self.out[d]
+        if o:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ")
+            or o:find(" DIRECT " .. id .. " ", 1, true) then
           table.remove(self.out, c)
           break
         end

@@ -2616,3 +2616,19 @@ do
   check_eq(ex("Vietjet 412 turn left heading 320"), "HDG VJC412 320 LEFT")
   check(ex("Bamboo 412 descend FL240"):match("^ASK") ~= nil, "an airline with no aircraft flying asks")
 end
+
+-- A level passed, left or reached before the instruction that waits for it, with the instruction's own
+-- lead words between ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct
+-- HEMEL"): ATALT; without the condition word, or with no instruction after the level, it is no condition
+do
+  local _, ex = scene({ "CRE SAS77 A320 59 11 090 FL80 250", "DEFWPT NIBAX 59.5 12.0", "ADDWPT SAS77 NIBAX",
+    "CRE FIN3 A320 60 24 180 FL150 280" })
+  check_eq(ex("SAS77 climb FL130, when passing FL100 fly heading 120"), "ALT SAS77 FL130 ; ATALT SAS77 FL100 HDG SAS77 120")
+  check_eq(ex("Scandinavian seven seven, climb flight level one three zero, after passing flight level one one zero resume "
+    .. "own navigation direct NIBAX"), "ALT SAS77 FL130 ; ATALT SAS77 FL110 DIRECT SAS77 NIBAX")
+  check_eq(ex("SAS77 climb FL130, when passing FL100 proceed direct NIBAX"), "ALT SAS77 FL130 ; ATALT SAS77 FL100 DIRECT SAS77 NIBAX")
+  check_eq(ex("FIN3 descend FL90, leaving FL120 fly heading 200"), "ALT FIN3 FL90 ; ATALT FIN3 FL120 HDG FIN3 200")
+  check_eq(ex("SAS77 climb FL130, resume own navigation direct NIBAX"), "ALT SAS77 FL130 ; DIRECT SAS77 NIBAX")
+  check(ex("SAS77 climb FL130, when passing FL100 resume own navigation"):match("^ASK") ~= nil,
+    "a condition with no instruction waiting for it")
+end
