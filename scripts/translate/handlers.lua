@@ -988,12 +988,15 @@ function m:at_distance(s)
     if q.kind == "dist" and not self.taken[q.b] then
       local k = self:skip_fillers(q.e)
       if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
-      local r = self:word(k, "from of to before") and self:refs_in(self:skip_fillers(k + 1), self:skip_fillers(k + 1) + 1, "waypoint")[1]
-      if r then
-        local ids = self:acids(s)
+      local p = self:word(k, "from of to before") and self:skip_fillers(k + 1)
+      local r = p and self:refs_in(p, p + 1, "waypoint")[1]
+      local ids = p and self:acids(s) or {}
+      -- ("when 20 miles from Minna descend FL200": a navaid or airport said by its name)
+      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, p + 1, self:state(ids[1])))
+      if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
-        return "ATDIST " .. ids[1] .. " " .. r.name .. " " .. f.num(q.value)
+        return "ATDIST " .. ids[1] .. " " .. name .. " " .. f.num(q.value)
       end
     end
   end

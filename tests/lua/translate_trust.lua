@@ -2632,3 +2632,16 @@ do
   check(ex("SAS77 climb FL130, when passing FL100 resume own navigation"):match("^ASK") ~= nil,
     "a condition with no instruction waiting for it")
 end
+
+-- A distance from a navaid said by its name before the instruction that waits for it ("when 15 miles from
+-- Mayfield descend FL120"): ATDIST at the navaid; a name the navdata does not hold asks
+do
+  local s, ex = navscene({ "CRE RYR4KP B738 50.9 -0.5 090 FL200 260", "CRE EZY77 A320 51.2 0.3 270 FL180 250" },
+    "distances from navaids said by name")
+  if s then
+    check_eq(ex("EZY77 when 15 miles from Mayfield descend FL120"), "ATDIST EZY77 MAY 15 ALT EZY77 FL120")
+    check_eq(ex("Easy 77, when 25 miles from Detling reduce speed 250 knots"), "ATDIST EZY77 DET 25 SPD EZY77 250")
+    check_eq(ex("RYR4KP at 10 miles from Mayfield turn left heading 040"), "ATDIST RYR4KP MAY 10 HDG RYR4KP 40 LEFT")
+    check(ex("EZY77 when 20 miles from Banana descend FL120"):match("^ASK") ~= nil, "no such navaid")
+  end
+end
