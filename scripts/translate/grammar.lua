@@ -1790,7 +1790,11 @@ function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then return end
   -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at"; a fix
   -- said whole stays that fix: "cross METRO at")
-  local refs = self:refs_in(s.b, s.e, "waypoint")
+  -- (a place named in a phrase of what squawk does not simulate, "hold at KUDES", is no constraint's)
+  local refs = {}
+  for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+    if not (self.noted[r.b] and self.u:used(r.b)) then refs[#refs + 1] = r end
+  end
   for i = s.b, s.e - 1 do
     local r = self:crossed_navaid(i)
     local part = r and #self:refs_in(r.b, r.e, "waypoint") > 0

@@ -2645,3 +2645,17 @@ do
     check(ex("EZY77 when 20 miles from Banana descend FL120"):match("^ASK") ~= nil, "no such navaid")
   end
 end
+
+-- A hold at a fix said with a clearance ("descend FL100 and hold at KUDES", "expect holding over ARSOT"): the
+-- hold is named as not simulated and the clearance runs; the fix is no constraint's place. A clearance
+-- after "then" waits for the hold, and is asked about
+do
+  local s, ex = scene({ "CRE AUA61 A320 47.5 9.5 090 FL200 280", "DEFWPT MOLIX 47.8 10.0", "ADDWPT AUA61 MOLIX" })
+  local r = graph.translate("Austrian six one, descend flight level one one zero and hold at MOLIX", { sim = s, mode = "offline" })
+  check_eq(said(r), "ALT AUA61 FL110")
+  check(r.note ~= nil and r.note:find("holding patterns ('hold at MOLIX')", 1, true) ~= nil, tostring(r.note))
+  check_eq(ex("AUA61 hold over MOLIX, descend FL110"), "ALT AUA61 FL110")
+  check_eq(ex("AUA61 expect holding at MOLIX, turn left heading 010"), "HDG AUA61 10 LEFT")
+  check_eq(ex("AUA61 cross MOLIX at FL110"), "AT AUA61 MOLIX ALT FL110")
+  check(ex("AUA61 hold at MOLIX then descend FL110"):match("^ASK .*waits for it") ~= nil, "after the hold")
+end
