@@ -1240,6 +1240,14 @@ function G:segments(b, e)
   local qs = self:quantities(b, trig[1].pos)
   local own = qs[1] and (qs[#qs].kind == "alt" and qs[#qs].fl or qs[#qs].kind == "speed" or qs[#qs].kind == "mach"
     or qs[#qs].kind == "heading")
+  -- ("Wizz Air 3117, negative, flight level 280, descend": a level with only a comma between it and a climb or
+  -- descent that has no value of its own is that verb's)
+  if own and qs[#qs].kind == "alt" and trig[1].intent == "alt"
+      and #self:quantities(trig[1].pos, trig[2] and trig[2].pos or e) == 0 then
+    local k = qs[#qs].e
+    while k < trig[1].pos and self.t[k].kind == "punct" and self.t[k].text == "," do k = k + 1 end
+    own = k ~= trig[1].pos
+  end
   if own and self:has_ref(b, qs[1].b, "aircraft") and not self:word_in(b, trig[1].pos, "@level_condition @condition") then
     for k = qs[#qs].e, trig[1].pos - 1 do
       if self.t[k].kind == "punct" or self:word(k, "@then_words") then

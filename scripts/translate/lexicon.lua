@@ -181,6 +181,10 @@ return {
         -- the same said with "till", without "further", or with the verb unbent ("until further advise")
         "till further advised", "till further notice", "until advised", "till advised", "until further advise",
         "till further advise", "until further instructions", "till further instructions",
+        -- (the noun controllers of many regions use: "speed 280 knots until further advice")
+        "until further advice", "till further advice", "until further clearance", "till further clearance",
+        "until further notification", "until advised otherwise", "until otherwise advised",
+        "unless otherwise advised", "unless advised otherwise",
         -- the same in ICAO English as a second language, "than" or the noun left out ("rate not less 1000 feet
         -- per minute", "maintain FL130 until further"), or the bound said before its value's noun ("not above
         -- speed 270")

@@ -334,6 +334,7 @@ return {
     { "botswana", "BOT" },
     { "precision air", "PRF" },
     { "airlink", "LNK" },
+    { "link", "LNK" },  -- (Airlink's ICAO telephony)
     { "aerolineas", "ARG" },
   },
   common = {

@@ -2659,3 +2659,18 @@ do
   check_eq(ex("AUA61 cross MOLIX at FL110"), "AT AUA61 MOLIX ALT FL110")
   check(ex("AUA61 hold at MOLIX then descend FL110"):match("^ASK .*waits for it") ~= nil, "after the hold")
 end
+
+-- "until further advice", "unless otherwise advised": a value kept in force, explained with it; a level said
+-- before a climb or descent that has no value of its own, a comma between ("negative, flight level 280,
+-- descend"), is that verb's; a level the aircraft is not on that side of still asks
+do
+  local _, ex = scene({ "CRE TAP55 A320 39 -9 180 FL300 290" })
+  check_eq(ex("TAP55 speed 280 knots until further advice"), "SPD TAP55 280")
+  check_eq(ex("Air Portugal five five, maintain flight level three zero zero until further clearance"), "ALT TAP55 FL300")
+  check_eq(ex("TAP55 maintain 270 knots unless otherwise advised"), "SPD TAP55 270")
+  check_eq(ex("Air Portugal five five, negative, flight level two six zero, descend"), "ALT TAP55 FL260")
+  check_eq(ex("TAP55, flight level 260, descend now"), "ALT TAP55 FL260")
+  check_eq(ex("TAP55 FL260, descend, heading 200"), "ALT TAP55 FL260 ; HDG TAP55 200")
+  check(ex("TAP55 FL260, climb"):match("^ASK TAP55 is at 30000 ft") ~= nil, "a climb to a lower level")
+  check(ex("TAP55 speed 280 knots until further rubbish"):match("^ASK") ~= nil, "an unknown word after 'further'")
+end
