@@ -233,6 +233,7 @@ return {
     { "viva", "VIV" },
     { "scooter", "TGW" },  -- (Scoot)
     { "rex", "RXA" },  -- (Regional Express)
+    { "velocity", "VOZ" },  -- (Virgin Australia)
     { "red cap", "AXM" },  -- (AirAsia)
     { "xanadu", "XAX" },  -- (AirAsia X)
     { "malaysian", "MAS" },

@@ -806,6 +806,16 @@ return function(intent, rule, words)
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
+  -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length
+  rule { "doing", "pos", when = function(g, i)
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == i then
+        local k = g:word(r.b - 1, "is") and r.b - 2 or r.b - 1
+        return g:word(k, "what what's whats")
+      end
+    end
+    return false
+  end }
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
   -- "where's the MERIT intersection?"
