@@ -875,6 +875,13 @@ return function(intent, rule, words)
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
+  -- "stop a moment the simulation", "stop for a minute the sim": the while said before the object
+  rule { "stop", "hold", when = function(g, i)
+    local k = g:word(i + 1, "for") and i + 2 or i + 1
+    if not (g:word(k, "a") and g:word(k + 1, "moment second minute bit while")) then return false end
+    k = g:word(k + 2, "the") and k + 3 or k + 2
+    return g:word(k, "@sim")
+  end }
   -- "restart the clock", "start the clock again": the clock runs on (OP); the simulation, exercise or
   -- scenario restarted is a reset (confirmed first)
   rule { "restart start", "op", near = { 3, "clock" } }

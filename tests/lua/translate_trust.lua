@@ -2687,3 +2687,18 @@ do
   check_eq(ex("set velocity of KLM12 to 250 knots"), "SPD KLM12 250")
   check(ex("KLM12 velocity two five zero"):match("^ASK") ~= nil, "velocity and a bare number is no heading")
 end
+
+-- A supervisor's sim control as heard: "fast forward to minutes" (a recogniser's "to" for "two" before a unit,
+-- no number said), "fast forward, I'll tell you when to stop" (fast time until stopped), "stop a moment the
+-- simulation" (the while said before the object); a duration still not understood asks
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 300" })
+  check_eq(ex("fast forward to minutes"), "FF 120")
+  check_eq(ex("fast forward too minutes please"), "FF 120")
+  check_eq(ex("Fast forward, I'll tell you when to stop"), "FF")
+  check_eq(ex("fast forward, we tell you when"), "FF")
+  check_eq(ex("stop a moment the simulation"), "HOLD")
+  check_eq(ex("stop for a minute the sim please"), "HOLD")
+  check(ex("fast forward to"):match("^ASK For how long") ~= nil, "no unit after 'to'")
+  check(ex("KLM12 stop climbing in the sim"):match("^HOLD") == nil, "a climb stopped is no pause")
+end
