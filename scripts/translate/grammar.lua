@@ -2262,6 +2262,14 @@ function G:meaning_carried(i, kinds)
     if modal or (framing and k > i + 1) then return true end
   end
   if CONDITION[text] and kinds.conditional then return true end
+  -- "maintain FL130, do not descend": a climb or descent refused after a level maintained, the clause
+  -- ending there, says that level again
+  if (text == "not" or text == "don't" or text == "dont" or text == "never") and kinds.alt
+      and self:word(nx, "climb descend") and self:word_in(1, i, "maintain")
+      and (not self.t[nx + 1] or (self.t[nx + 1].kind == "punct" and self.t[nx + 1].text ~= "'")) then
+    self:explain(nx, nx + 1)
+    return true
+  end
   if self:word(i, "@off") and kinds.off then return true end
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
@@ -2281,6 +2289,7 @@ function G:issued()
       local name = (part:match("^%s*(%S+)") or ""):upper()
       if CONDITIONAL[name] then kinds.conditional = true end
       if name == "DIRECT" then kinds.direct = true end
+      if name == "ALT" then kinds.alt = true end
       if name == "DTMULT" or name == "FF" then kinds.clock = true end
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
     end

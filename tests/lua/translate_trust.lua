@@ -2702,3 +2702,14 @@ do
   check(ex("fast forward to"):match("^ASK For how long") ~= nil, "no unit after 'to'")
   check(ex("KLM12 stop climbing in the sim"):match("^HOLD") == nil, "a climb stopped is no pause")
 end
+
+-- "maintain FL130, do not descend": a climb or descent refused after a level maintained, its clause ending
+-- there, says that level again; a refusal with more words ("below FL120", "yet") or after no maintain asks
+do
+  local _, ex = scene({ "CRE IGO77 A320 19 73 090 FL130 280" })
+  check_eq(ex("IFLY seven seven, negative, maintain flight level one three zero, do not descend"), "ALT IGO77 FL130")
+  check_eq(ex("IGO77 maintain FL130, don't climb"), "ALT IGO77 FL130")
+  check(ex("IGO77 maintain FL130, do not descend below FL120"):match("^ASK .*'not'") ~= nil, "a bound refused")
+  check(ex("IGO77 maintain FL130, do not descend yet"):match("^ASK .*'not'") ~= nil, "a refusal for now")
+  check(ex("IGO77 turn left heading 100, do not descend"):match("^ASK .*'not'") ~= nil, "no level maintained")
+end
