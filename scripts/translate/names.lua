@@ -233,7 +233,6 @@ return {
     { "viva", "VIV" },
     { "scooter", "TGW" },  -- (Scoot)
     { "rex", "RXA" },  -- (Regional Express)
-    { "velocity", "VOZ" },  -- (Virgin Australia)
     { "red cap", "AXM" },  -- (AirAsia)
     { "xanadu", "XAX" },  -- (AirAsia X)
     { "malaysian", "MAS" },
