@@ -2708,3 +2708,13 @@ do
   check(ex("IGO77 maintain FL130, do not descend yet"):match("^ASK .*'not'") ~= nil, "a refusal for now")
   check(ex("IGO77 turn left heading 100, do not descend"):match("^ASK .*'not'") ~= nil, "no level maintained")
 end
+
+-- A neo said apart from its model ("Airbus 320 neo", "A321 neo", "a three twenty neo") is the neo's designator,
+-- never the older model's with "neo" dropped
+do
+  local _, ex = scene({ "CRE KLM1 A320 52 4 090 FL200 250" })
+  check_eq(ex("create KZR30 Airbus 320 neo at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR30 A20N 52.5 4.5 290 FL150 250")
+  check_eq(ex("create KZR31 A321 neo at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR31 A21N 52.5 4.5 290 FL150 250")
+  check_eq(ex("create KZR32 a three twenty neo at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR32 A20N 52.5 4.5 290 FL150 250")
+  check_eq(ex("create KZR33 Airbus 320 at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR33 A320 52.5 4.5 290 FL150 250")
+end
