@@ -1326,6 +1326,14 @@ function G:segments(b, e)
   local qs = self:quantities(b, trig[1].pos)
   local own = qs[1] and (qs[#qs].kind == "alt" and qs[#qs].fl or qs[#qs].kind == "speed" or qs[#qs].kind == "mach"
     or qs[#qs].kind == "heading")
+  -- ("Wizz Air 3117, negative, flight level 280, descend": a level with only a comma between it and a climb or
+  -- descent that has no value of its own is that verb's)
+  if own and qs[#qs].kind == "alt" and trig[1].intent == "alt"
+      and #self:quantities(trig[1].pos, trig[2] and trig[2].pos or e) == 0 then
+    local k = qs[#qs].e
+    while k < trig[1].pos and self.t[k].kind == "punct" and self.t[k].text == "," do k = k + 1 end
+    own = k ~= trig[1].pos
+  end
   if own and self:has_ref(b, qs[1].b, "aircraft") and not self:word_in(b, trig[1].pos, "@level_condition @condition") then
     for k = qs[#qs].e, trig[1].pos - 1 do
       if self.t[k].kind == "punct" or self:word(k, "@then_words") then
@@ -1859,13 +1867,16 @@ function G:trailing_reached(s)
 end
 
 -- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
--- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's.
+-- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's (also one that waits
+-- for a condition: "after passing FL100 resume own navigation direct HEMEL").
 function G:direct_resumes_nav()
   for c = #self.out, 1, -1 do
     local id = self.out[c]:match("^LNAV (%S+) ON$")
     if id then
       for d = c + 1, #self.out do
-        if self.out[d]:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ") then
+        local o = self.out[d]
+        if o:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ")
+            or o:find(" DIRECT " .. id .. " ", 1, true) then
           table.remove(self.out, c)
           break
         end
@@ -1955,7 +1966,11 @@ function G:at_waypoint(s, spec)
   end
   -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at"; a fix
   -- said whole stays that fix: "cross METRO at")
-  local refs = self:refs_in(s.b, s.e, "waypoint")
+  -- (a place named in a phrase of what squawk does not simulate, "hold at KUDES", is no constraint's)
+  local refs = {}
+  for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+    if not (self.noted[r.b] and self.u:used(r.b)) then refs[#refs + 1] = r end
+  end
   for i = s.b, s.e - 1 do
     local r = self:crossed_navaid(i)
     local part = r and #self:refs_in(r.b, r.e, "waypoint") > 0
@@ -2462,6 +2477,14 @@ function G:meaning_carried(i, kinds)
     if modal or (framing and k > i + 1) then return true end
   end
   if CONDITION[text] and kinds.conditional then return true end
+  -- "maintain FL130, do not descend": a climb or descent refused after a level maintained, the clause
+  -- ending there, says that level again
+  if (text == "not" or text == "don't" or text == "dont" or text == "never") and kinds.alt
+      and self:word(nx, "climb descend") and self:word_in(1, i, "maintain")
+      and (not self.t[nx + 1] or (self.t[nx + 1].kind == "punct" and self.t[nx + 1].text ~= "'")) then
+    self:explain(nx, nx + 1)
+    return true
+  end
   if self:word(i, "@off") and kinds.off then return true end
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
@@ -2481,6 +2504,7 @@ function G:issued()
       local name = (part:match("^%s*(%S+)") or ""):upper()
       if CONDITIONAL[name] then kinds.conditional = true end
       if name == "DIRECT" then kinds.direct = true end
+      if name == "ALT" then kinds.alt = true end
       if name == "DTMULT" or name == "FF" then kinds.clock = true end
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
     end
@@ -3370,7 +3394,9 @@ end
 -- slot (after "add", "dct", "after", ...; then each name listed straight after it) that is no word squawk
 -- knows and that the navdata holds as a fix, navaid or airport (world.place_known) within TYPED_PLACE_NM
 -- of an aircraft that flies (a recogniser's word far away, "direct sachs", is no such place) is that
--- place, as if typed in capitals; without navdata nothing changes. A name speech recognition split into
+-- place, as if typed in capitals; without navdata nothing changes. In a line with capitals only a word
+-- written as a proper name is read so ("Add Willo to Easy 8472's route"; "add willo" there stays a word).
+-- A name speech recognition split into
 -- syllables ("direct toe bix", "as bin", "u no ko") is joined when the first word alone is no such place and
 -- two or three words run together (four or five letters, no punctuation between) are one: a word squawk
 -- does not know that is such a fix near the traffic, or one on an aircraft's route.
@@ -3399,7 +3425,8 @@ local function spelled_airports(text, world)
   end)
 end
 local function typed_places(text, world)
-  if text:find("%u") or not world.place_known then return text end
+  if not world.place_known then return text end
+  local capitals = text:find("%u") ~= nil
   local ids = {}
   for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
   local function near(w)
@@ -3420,11 +3447,13 @@ local function typed_places(text, world)
   local out, slot, k = {}, false, 1
   while k <= #parts do
     local lead, word = parts[k][1], parts[k][2]
-    local w, rest = word:match("^(%a[%a%d]*)(.*)$")
-    local named = w and slot and #w >= 3 and #w <= 5 and not known_word(w) and not ids[w]
-      and not lexicon.shorthand[w] and near(w)
+    local raw, rest = word:match("^(%a[%a%d]*)(.*)$")
+    local w = raw and raw:lower()
+    local named = w and slot and #w >= 3 and #w <= 5 and (not capitals or raw:match("^%u%l+$"))
+      and not known_word(w) and not ids[w] and not lexicon.shorthand[w] and near(w)
     k = k + 1
-    if w and w:match("^%a+$") and slot and not named and rest == "" and not PLACE_SLOTS[w] and w ~= "to" and not routed[w] then
+    if w and not capitals and w:match("^%a+$") and slot and not named and rest == "" and not PLACE_SLOTS[w]
+        and w ~= "to" and not routed[w] then
       local joined = w
       for j = k, math.min(k + 1, #parts) do
         local x, punct = parts[j][2]:match("^(%a+)(%p*)$")
@@ -3438,8 +3467,10 @@ local function typed_places(text, world)
       end
     end
     out[#out + 1] = lead .. (named and (w:upper() .. rest) or word)
-    slot = (named and rest == "") or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
-      or (w == "to" and slot and PLACE_SLOTS[out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""] ~= nil)))
+    -- (a list goes on after a name read so: "add willo then timba")
+    slot = (named and rest == "") or (slot and (w == "then" or w == "and") and rest == "")
+      or (w ~= nil and rest == "" and (PLACE_SLOTS[w] ~= nil
+      or (w == "to" and slot and PLACE_SLOTS[(out[#out - 1] and out[#out - 1]:match("(%a+)$") or ""):lower()] ~= nil)))
   end
   return table.concat(out)
 end

@@ -975,13 +975,24 @@ end
 
 -- "at four thousand reduce speed to 210", "(when) passing flight level 130
 -- reduce speed 250", "leaving FL340 maintain Mach .82", "when level flight level 350, speed Mach .78"
--- ("level" after a condition word, as "reaching"): "ATALT id alt" or nil.
+-- ("level" after a condition word, as "reaching"); "after passing FL100 (resume own navigation) direct HEMEL"
+-- (a direct-to waits for a level passed, left or reached): "ATALT id alt" or nil.
 function m:at_altitude(s)
-  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" then return nil end
-  local a = self:find_word(s.b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach")
+  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt"
+      and s.intent ~= "direct" then
+    return nil
+  end
+  -- ("after passing FL100 resume own navigation direct HEMEL": the words leading to the direct-to are a
+  -- segment of their own, and the condition is said before them, from the clause's start)
+  local b = s.b
+  if s.intent == "direct" and self:word(b - 1, "@condition_lead") then
+    b = b - 1
+    while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+  end
+  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach")
   if a >= s.trig and s.intent ~= "alt" then
-    for i = s.b, s.trig - 1 do
-      if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(s.b, i - 3), i, "@condition") then
+    for i = b, s.trig - 1 do
+      if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
         a = i
         break
       end
@@ -991,13 +1002,23 @@ function m:at_altitude(s)
   -- ("fly at 30000 ft and heading 100": the level flown at, an instruction of its own, no condition)
   if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
-  if #self:quantities(s.b, a) > 0 then return nil end
-  if (s.intent == "maintain" or s.intent == "alt") and not self:word(a, "passing leaving reaching") then return nil end
+  if #self:quantities(b, a) > 0 then return nil end
+  if (s.intent == "maintain" or s.intent == "alt" or s.intent == "direct")
+      and not self:word(a, "passing leaving reaching") then
+    return nil
+  end
   -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" a condition
-  if s.intent == "alt" and not self:word_in(math.max(s.b, a - 2), a, "@condition") then return nil end
+  if (s.intent == "alt" or s.intent == "direct") and not self:word_in(math.max(b, a - 2), a, "@condition") then
+    return nil
+  end
   local qs = self:quantities(a + 1, s.trig)
   local q = qs[1]
-  if not q or q.b ~= a + 1 or self:skip_fillers(q.e) ~= s.trig then return nil end
+  if not q or q.b ~= a + 1 then return nil end
+  local k = self:skip_fillers(q.e)
+  while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")) do
+    k = self:skip_fillers(k + 1)
+  end
+  if k ~= s.trig then return nil end
   if q.kind ~= "alt" and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then return nil end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
@@ -1050,12 +1071,15 @@ function m:at_distance(s)
     if (q.kind == "dist" or bare) and not self.taken[q.b] then
       local k = self:skip_fillers(q.e)
       if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
-      local r = self:word(k, "from of to before") and self:refs_in(self:skip_fillers(k + 1), self:skip_fillers(k + 1) + 1, "waypoint")[1]
-      if r then
-        local ids = self:acids(s)
+      local p = self:word(k, "from of to before") and self:skip_fillers(k + 1)
+      local r = p and self:refs_in(p, p + 1, "waypoint")[1]
+      local ids = p and self:acids(s) or {}
+      -- ("when 20 miles from Minna descend FL200": a navaid or airport said by its name)
+      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, p + 1, self:state(ids[1])))
+      if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
-        return "ATDIST " .. ids[1] .. " " .. r.name .. " " .. f.num(q.value)
+        return "ATDIST " .. ids[1] .. " " .. name .. " " .. f.num(q.value)
       end
     end
   end

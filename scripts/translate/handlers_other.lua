@@ -2094,9 +2094,20 @@ return function(H, f, compass)
         self:mark_used(one, one + 2)
         return self:emit("FF " .. f.num(UNIT_S[self.t[one + 1].text]))
       end
-      -- "fast forward" alone runs fast-time until stopped ("until I say stop" says so); more
-      -- words ("a bit", "an hour and a half") said a duration that was not understood
+      -- "fast forward to minutes": a recogniser's "to" for "two", straight before a unit and no number
+      local to = self:find_word(s.trig + 1, s.e, "to too")
+      if to + 1 < s.e and UNIT_S[self.t[to + 1].text] and self.t[to + 1].text:match("s$")
+          and #self:quantities(s.trig + 1, s.e) == 0 then
+        self:mark_used(to, to + 2)
+        return self:emit("FF " .. f.num(2 * UNIT_S[self.t[to + 1].text]))
+      end
+      -- "fast forward" alone runs fast-time until stopped ("until I say stop", "I'll tell you when to stop"
+      -- say so); more words ("a bit", "an hour and a half") said a duration that was not understood
       local till = self:find_word(s.trig + 1, s.e, "until")
+      local told = self:find_word(s.trig + 1, till, "tell say")
+      if told < till and self:word(told + 1, "you when") then
+        till = self:word(told - 1, "i i'll ill we we'll") and told - 1 or told
+      end
       self:explain(till, till + 1)
       for i = s.trig + 1, till - 1 do
         local t = self.t[i]

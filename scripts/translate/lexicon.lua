@@ -196,6 +196,10 @@ return {
         -- the same said with "till", without "further", or with the verb unbent ("until further advise")
         "till further advised", "till further notice", "until advised", "till advised", "until further advise", "until further advice", "till further advice",
         "till further advise", "until further instructions", "till further instructions",
+        -- (the noun controllers of many regions use: "speed 280 knots until further advice")
+        "until further advice", "till further advice", "until further clearance", "till further clearance",
+        "until further notification", "until advised otherwise", "until otherwise advised",
+        "unless otherwise advised", "unless advised otherwise",
         -- the same in ICAO English as a second language, "than" or the noun left out ("rate not less 1000 feet
         -- per minute", "maintain FL130 until further"), or the bound said before its value's noun ("not above
         -- speed 270")
@@ -256,6 +260,9 @@ return {
   -- words before a level that make the next instruction wait for it
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
+  -- words between such a level and the instruction word that waits for it, part of the instruction
+  -- ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct HEMEL")
+  condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then" },
   -- before the level an aircraft leaves, said with the one it is cleared to ("leaving FL260 for FL200")
   level_left = { "leaving", "passing", "vacating" },
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about

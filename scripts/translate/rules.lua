@@ -582,12 +582,18 @@ return function(intent, rule, words)
     return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
-  -- "add SUDIK to air malta 77", "add ZAGNB for croatia 7TK": a waypoint straight after the verb, for an
-  -- aircraft that flies named straight after "to"/"for", its clause ending there
+  -- "add SUDIK to air malta 77", "add ZAGNB for croatia 7TK", "add WILLO then TIMBA to Speedbird 31F": places
+  -- listed straight after the verb ("then", "and" or a comma between) and given, with "to" or "for", to an
+  -- aircraft that flies
   rule { "add append", "addwpt", when = function(g, i)
-    local w = g:refs_in(i + 1, i + 2, "waypoint")[1]
-    local a = w and g:word(w.e, "to for") and g:refs_in(w.e + 1, w.e + 2, "aircraft")[1]
-    return a ~= nil and a ~= false and a.exists and (g.t[a.e] == nil or g.t[a.e].kind == "punct" or g:word(a.e, "and"))
+    local r, k = g:refs_in(i + 1, i + 2, "waypoint")[1], nil
+    while r do
+      k = r.e
+      local nx = (g:word(k, "then and") or (g.t[k] or {}).text == ",") and k + 1 or k
+      r = nx > k and g:refs_in(nx, nx + 1, "waypoint")[1]
+    end
+    local a = k and g:word(k, "to for") and g:refs_in(k + 1, k + 2, "aircraft")[1]
+    return a ~= nil and a ~= false and a.exists
   end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
   -- next to another, the place said after "after"/"before" before or after the verb
@@ -831,6 +837,16 @@ return function(intent, rule, words)
   rule { "where", "pos", next = "is are 's" }
   rule { "where's", "pos" }
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
+  -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length
+  rule { "doing", "pos", when = function(g, i)
+    for _, r in ipairs(g.refs) do
+      if r.kind == "aircraft" and r.e == i then
+        local k = g:word(r.b - 1, "is") and r.b - 2 or r.b - 1
+        return g:word(k, "what what's whats")
+      end
+    end
+    return false
+  end }
   -- "where's EZY45?" (the lexer drops the 's), "tell me where BAW123 is"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
   -- "where's the MERIT intersection?"
@@ -902,6 +918,13 @@ return function(intent, rule, words)
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
+  -- "stop a moment the simulation", "stop for a minute the sim": the while said before the object
+  rule { "stop", "hold", when = function(g, i)
+    local k = g:word(i + 1, "for") and i + 2 or i + 1
+    if not (g:word(k, "a") and g:word(k + 1, "moment second minute bit while")) then return false end
+    k = g:word(k + 2, "the") and k + 3 or k + 2
+    return g:word(k, "@sim")
+  end }
   -- "restart the clock", "start the clock again": the clock runs on (OP); the simulation, exercise or
   -- scenario restarted is a reset (confirmed first)
   rule { "restart start", "op", near = { 3, "clock" } }

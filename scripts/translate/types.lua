@@ -39,7 +39,11 @@ local function spellings(model)
   local fam, max = m:match("^(%d%d%d) max (%d+)$")
   if fam then out[#out + 1] = fam .. "-" .. max; out[#out + 1] = "max" .. max end
   local base, neo = m:match("^(a%d%d%d)(neo)$")
-  if base then out[#out + 1] = base:sub(2) .. neo; out[#out + 1] = base .. " neo" end
+  if base then
+    out[#out + 1] = base:sub(2) .. neo
+    out[#out + 1] = base .. " neo"
+    out[#out + 1] = base:sub(2) .. " neo"  -- ("Airbus 320 neo")
+  end
   return out
 end
 
@@ -148,7 +152,11 @@ function M.build(designators)
       end
     end
     for _, n in ipairs(pattern_names(d)) do
-      for _, sp in ipairs(spellings(n[2])) do add(rows, seen, n[1], sp, d) end
+      for _, sp in ipairs(spellings(n[2])) do
+        add(rows, seen, n[1], sp, d)
+        -- ("a320 neo", "320 neo": the variant said apart is a name of several words too)
+        if sp:find(" ") and not n[2]:find(" ") then phrases[#phrases + 1] = { sp, d } end
+      end
       -- several words, or digits joined by a hyphen the lexer splits ("dash 8-400")
       if n[2]:find(" ") then
         phrases[#phrases + 1] = { n[2], d }

@@ -1526,7 +1526,7 @@ do
   check_eq(table.concat(bounded.confirm.commands, " ; "), "ALT UAE512 FL120 ; AT UAE512 DESDI ALT FL150")
   check_eq(at("UAE512 descend FL120 and cross DESDI at 250 knots"), "ALT UAE512 FL120 ; AT UAE512 DESDI SPD 250")
   check(at("UAE512 cross DESDI at or below FL150"):find("^ASK squawk can set only an exact constraint at DESDI") ~= nil)
-  check_eq(at("Garuda four one two maintain flight level one seven zero"), "ASK Did you mean QFA41? I heard GARUDA412.")
+  check_eq(at("Kanuda four one two maintain flight level one seven zero"), "ASK Did you mean QFA41? I heard KANUDA412.")
   check_eq(at("Indonesia four one two maintain flight level one seven zero"), "ALT GIA412 FL170")
 end
 
@@ -2963,4 +2963,137 @@ do
   check_eq(swapped("exchange the speeds of PH101 and TX1"), "SPD PH101 280 ; SPD TX1 260")
   check(ex("swap the levels of PH101"):match("^ASK") ~= nil, "one aircraft")
   check(ex("swap the levels of PH101, SAS7 and TX1"):match("^ASK") ~= nil, "three aircraft")
+end
+-- Places given to an aircraft after the verb ("add SUDIK to air malta 77", "add X for Y", a list with
+-- "then"), and a fix written as a proper name in a line with capitals ("Add Willo to Ryanair 4KP's route")
+-- when the navdata holds it near the traffic; a name it does not hold, or no such aircraft, still asks
+do
+  local s, ex = navscene({ "CRE RYR4KP B738 50.9 -0.5 090 FL200 260", "CRE EZY77 A320 51.2 0.3 270 FL180 250" },
+    "places given to an aircraft by 'to'/'for'")
+  if s then
+    check_eq(ex("Add Willo to Ryanair 4KP's route"), "ADDWPT RYR4KP WILLO")
+    check_eq(ex("please add Willo to RYR4KP"), "ADDWPT RYR4KP WILLO")
+    check_eq(ex("add WILLO for easy 77"), "ADDWPT EZY77 WILLO")
+    check_eq(ex("add WILLO then MAY to EZY77"), "ADDWPT EZY77 WILLO ; ADDWPT EZY77 MAY")
+    check_eq(ex("add WILLO, MAY to easy seven seven"), "ADDWPT EZY77 WILLO ; ADDWPT EZY77 MAY")
+    check_eq(ex("Easy 77 direct Willo"), "ADDWPT EZY77 WILLO ; DIRECT EZY77 WILLO")
+    check(ex("add WILLO to KLM999"):match("^ASK") ~= nil, "no such aircraft")
+    check(ex("Add Banana to EZY77's route"):match("^ASK") ~= nil, "no such place")
+    -- (in a line with capitals a fix's name in lower case is a word, not read as the place)
+    check(ex("add willo to RYR4KP"):match("^ASK") ~= nil, "lower case in a line with capitals")
+  end
+end
+
+-- Airlines said by their telephony or their own name in Asia, the Middle East, Africa and cargo ("Garuda
+-- 412", "IndiGo 2231", "Connie 412"), where aircraft of other airlines share the flight number
+do
+  local _, ex = scene({ "CRE GIA412 B738 -5 107 190 FL170 280", "CRE IGO412 A20N 19 73 100 FL300 280",
+    "CRE CKS412 B744 40 -80 090 FL330 290", "CRE VJC412 A321 10 106 010 FL250 280", "CRE KLM412 B738 52 4 090 FL200 250" })
+  check_eq(ex("Garuda four one two, maintain flight level one seven zero"), "ALT GIA412 FL170")
+  check_eq(ex("indigo 412 descend FL240"), "ALT IGO412 FL240")
+  check_eq(ex("Connie four twelve, climb flight level three five zero"), "ALT CKS412 FL350")
+  check_eq(ex("Vietjet 412 turn left heading 320"), "HDG VJC412 320 LEFT")
+  check(ex("Bamboo 412 descend FL240"):match("^ASK") ~= nil, "an airline with no aircraft flying asks")
+end
+
+-- A level passed, left or reached before the instruction that waits for it, with the instruction's own
+-- lead words between ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct
+-- HEMEL"): ATALT; without the condition word, or with no instruction after the level, it is no condition
+do
+  local _, ex = scene({ "CRE SAS77 A320 59 11 090 FL80 250", "DEFWPT NIBAX 59.5 12.0", "ADDWPT SAS77 NIBAX",
+    "CRE FIN3 A320 60 24 180 FL150 280" })
+  check_eq(ex("SAS77 climb FL130, when passing FL100 fly heading 120"), "ALT SAS77 FL130 ; ATALT SAS77 FL100 HDG SAS77 120")
+  check_eq(ex("Scandinavian seven seven, climb flight level one three zero, after passing flight level one one zero resume "
+    .. "own navigation direct NIBAX"), "ALT SAS77 FL130 ; ATALT SAS77 FL110 DIRECT SAS77 NIBAX")
+  check_eq(ex("SAS77 climb FL130, when passing FL100 proceed direct NIBAX"), "ALT SAS77 FL130 ; ATALT SAS77 FL100 DIRECT SAS77 NIBAX")
+  check_eq(ex("FIN3 descend FL90, leaving FL120 fly heading 200"), "ALT FIN3 FL90 ; ATALT FIN3 FL120 HDG FIN3 200")
+  check_eq(ex("SAS77 climb FL130, resume own navigation direct NIBAX"), "ALT SAS77 FL130 ; DIRECT SAS77 NIBAX")
+  check(ex("SAS77 climb FL130, when passing FL100 resume own navigation"):match("^ASK") ~= nil,
+    "a condition with no instruction waiting for it")
+end
+
+-- A distance from a navaid said by its name before the instruction that waits for it ("when 15 miles from
+-- Mayfield descend FL120"): ATDIST at the navaid; a name the navdata does not hold asks
+do
+  local s, ex = navscene({ "CRE RYR4KP B738 50.9 -0.5 090 FL200 260", "CRE EZY77 A320 51.2 0.3 270 FL180 250" },
+    "distances from navaids said by name")
+  if s then
+    check_eq(ex("EZY77 when 15 miles from Mayfield descend FL120"), "ATDIST EZY77 MAY 15 ALT EZY77 FL120")
+    check_eq(ex("Easy 77, when 25 miles from Detling reduce speed 250 knots"), "ATDIST EZY77 DET 25 SPD EZY77 250")
+    check_eq(ex("RYR4KP at 10 miles from Mayfield turn left heading 040"), "ATDIST RYR4KP MAY 10 HDG RYR4KP 40 LEFT")
+    check(ex("EZY77 when 20 miles from Banana descend FL120"):match("^ASK") ~= nil, "no such navaid")
+  end
+end
+
+-- A hold at a fix said with a clearance ("descend FL100 and hold at KUDES", "expect holding over ARSOT"): the
+-- hold is named as not simulated and the clearance runs; the fix is no constraint's place. A clearance
+-- after "then" waits for the hold, and is asked about
+do
+  local s, ex = scene({ "CRE AUA61 A320 47.5 9.5 090 FL200 280", "DEFWPT MOLIX 47.8 10.0", "ADDWPT AUA61 MOLIX" })
+  local r = graph.translate("Austrian six one, descend flight level one one zero and hold at MOLIX", { sim = s, mode = "offline" })
+  check_eq(said(r), "ALT AUA61 FL110")
+  check(r.note ~= nil and r.note:find("holding patterns ('hold at MOLIX')", 1, true) ~= nil, tostring(r.note))
+  check_eq(ex("AUA61 hold over MOLIX, descend FL110"), "ALT AUA61 FL110")
+  check_eq(ex("AUA61 expect holding at MOLIX, turn left heading 010"), "HDG AUA61 10 LEFT")
+  check_eq(ex("AUA61 cross MOLIX at FL110"), "AT AUA61 MOLIX ALT FL110")
+  check(ex("AUA61 hold at MOLIX then descend FL110"):match("^ASK .*waits for it") ~= nil, "after the hold")
+end
+
+-- "until further advice", "unless otherwise advised": a value kept in force, explained with it; a level said
+-- before a climb or descent that has no value of its own, a comma between ("negative, flight level 280,
+-- descend"), is that verb's; a level the aircraft is not on that side of still asks
+do
+  local _, ex = scene({ "CRE TAP55 A320 39 -9 180 FL300 290" })
+  check_eq(ex("TAP55 speed 280 knots until further advice"), "SPD TAP55 280")
+  check_eq(ex("Air Portugal five five, maintain flight level three zero zero until further clearance"), "ALT TAP55 FL300")
+  check_eq(ex("TAP55 maintain 270 knots unless otherwise advised"), "SPD TAP55 270")
+  check_eq(ex("Air Portugal five five, negative, flight level two six zero, descend"), "ALT TAP55 FL260")
+  check_eq(ex("TAP55, flight level 260, descend now"), "ALT TAP55 FL260")
+  check_eq(ex("TAP55 FL260, descend, heading 200"), "ALT TAP55 FL260 ; HDG TAP55 200")
+  check(ex("TAP55 FL260, climb"):match("^ASK TAP55 is at 30000 ft") ~= nil, "a climb to a lower level")
+  check(ex("TAP55 speed 280 knots until further rubbish"):match("^ASK") ~= nil, "an unknown word after 'further'")
+end
+
+-- "what's CALLSIGN doing?" with the callsign said in words of any length
+do
+  local _, ex = scene({ "CRE QFA141 B738 -29 153 90 FL200 300", "CRE KLM12 A320 -28 152 90 FL200 300" })
+  check_eq(ex("What's Qantas one four one doing?"), "POS QFA141")
+  check_eq(ex("what is Qantas one four one doing"), "POS QFA141")
+  check_eq(ex("what's KLM one two doing"), "POS KLM12")
+end
+
+-- A supervisor's sim control as heard: "fast forward to minutes" (a recogniser's "to" for "two" before a unit,
+-- no number said), "fast forward, I'll tell you when to stop" (fast time until stopped), "stop a moment the
+-- simulation" (the while said before the object); a duration still not understood asks
+do
+  local _, ex = scene({ "CRE KLM12 A320 52 4 090 FL200 300" })
+  check_eq(ex("fast forward to minutes"), "FF 120")
+  check_eq(ex("fast forward too minutes please"), "FF 120")
+  check_eq(ex("Fast forward, I'll tell you when to stop"), "FF")
+  check_eq(ex("fast forward, we tell you when"), "FF")
+  check_eq(ex("stop a moment the simulation"), "HOLD")
+  check_eq(ex("stop for a minute the sim please"), "HOLD")
+  check(ex("fast forward to"):match("^ASK For how long") ~= nil, "no unit after 'to'")
+  check(ex("KLM12 stop climbing in the sim"):match("^HOLD") == nil, "a climb stopped is no pause")
+end
+
+-- "maintain FL130, do not descend": a climb or descent refused after a level maintained, its clause ending
+-- there, says that level again; a refusal with more words ("below FL120", "yet") or after no maintain asks
+do
+  local _, ex = scene({ "CRE IGO77 A320 19 73 090 FL130 280" })
+  check_eq(ex("IFLY seven seven, negative, maintain flight level one three zero, do not descend"), "ALT IGO77 FL130")
+  check_eq(ex("IGO77 maintain FL130, don't climb"), "ALT IGO77 FL130")
+  check(ex("IGO77 maintain FL130, do not descend below FL120"):match("^ASK .*'not'") ~= nil, "a bound refused")
+  check(ex("IGO77 maintain FL130, do not descend yet"):match("^ASK .*'not'") ~= nil, "a refusal for now")
+  check(ex("IGO77 turn left heading 100, do not descend"):match("^ASK .*'not'") ~= nil, "no level maintained")
+end
+
+-- A neo said apart from its model ("Airbus 320 neo", "A321 neo", "a three twenty neo") is the neo's designator,
+-- never the older model's with "neo" dropped
+do
+  local _, ex = scene({ "CRE KLM1 A320 52 4 090 FL200 250" })
+  check_eq(ex("create KZR30 Airbus 320 neo at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR30 A20N 52.5 4.5 290 FL150 250")
+  check_eq(ex("create KZR31 A321 neo at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR31 A21N 52.5 4.5 290 FL150 250")
+  check_eq(ex("create KZR32 a three twenty neo at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR32 A20N 52.5 4.5 290 FL150 250")
+  check_eq(ex("create KZR33 Airbus 320 at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR33 A320 52.5 4.5 290 FL150 250")
 end
