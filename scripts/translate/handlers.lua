@@ -345,7 +345,7 @@ end
 -- The airline named by the words at i (longest name first; a designator
 -- typed in capitals, "the DLH", too): ICAO prefix, first token after it, and the ICAO prefixes of
 -- the brand the name is (names.lua's brands; nil for one airline).
-function m:airline_at(i)
+local function airline_at(self, i)
   local t = self.t[i]
   if not t or t.kind ~= "word" then return nil end
   -- (no name starts with this word: only the designator typed in capitals can match; a word holding
@@ -366,6 +366,21 @@ function m:airline_at(i)
     if icao then return icao, i + n, BRANDS[said] end
   end
   if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
+  return nil
+end
+function m:airline_at(i)
+  local found = self.airlines_at  -- per request: found[i] = {icao, e, brand} or false
+  if not found then
+    found = {}
+    self.airlines_at = found
+  end
+  local a = found[i]
+  if a == nil then
+    local icao, e, brand = airline_at(self, i)
+    a = icao ~= nil and { icao, e, brand }
+    found[i] = a
+  end
+  if a then return a[1], a[2], a[3] end
   return nil
 end
 
@@ -483,28 +498,32 @@ function m:airline_refs()
   local i = 1
   while i <= #self.t do
     local icao, e, codes = self:airline_at(i)
-    local nxt = self.t[e]
-    local prev = self.t[i - 1]
-    local the = prev and prev.kind == "word" and prev.text == "the"
-        and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
-          or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
-    local ok = icao and not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e))
-        and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
-          or self:word(e, "heavy super")))
-        and not self:new_aircraft_follows(e - 1)
-    local fits = ok and self:airline_fleet(icao, codes) or {}
-    -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
-    -- name no airline flying, "the ILS", are no airline)
-    if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
-      self.airline_unresolved = self.airline_unresolved or {}
-      table.insert(self.airline_unresolved, { b = i, e = e })
-    end
-    if #fits == 1 then
-      for k = #self.refs, 1, -1 do
-        if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+    if not icao then
+      i = i + 1  -- (no airline named at i)
+    else
+      local nxt = self.t[e]
+      local prev = self.t[i - 1]
+      local the = prev and prev.kind == "word" and prev.text == "the"
+          and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
+            or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
+      local ok = icao and not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e))
+          and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
+            or self:word(e, "heavy super")))
+          and not self:new_aircraft_follows(e - 1)
+      local fits = ok and self:airline_fleet(icao, codes) or {}
+      -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
+      -- name no airline flying, "the ILS", are no airline)
+      if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i) then
+        self.airline_unresolved = self.airline_unresolved or {}
+        table.insert(self.airline_unresolved, { b = i, e = e })
       end
+      if #fits == 1 then
+        for k = #self.refs, 1, -1 do
+          if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+        end
+      end
+      i = self:insert_ref(fits, i, e, "by_airline")
     end
-    i = self:insert_ref(fits, i, e, "by_airline")
   end
 end
 
