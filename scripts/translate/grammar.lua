@@ -346,9 +346,17 @@ local function plain_words(text)
   end
   return plain_toks, plain_bare
 end
+-- True when one of the words `bare` is a key of `set`.
+local function any_of(bare, set)
+  for _, w in ipairs(bare) do
+    if set[w] ~= nil then return true end
+  end
+  return false
+end
 local function foreign_digits(text)
   local toks, bare = plain_words(text)
   local F = lexicon.foreign_digits
+  if not any_of(bare, F) then return text end
   local function digit(k)
     local w = bare[k]
     return w ~= nil and (F[w] ~= nil or NUMBER_WORDS[w] == true or w:match("^%d+$") ~= nil
@@ -384,6 +392,7 @@ end
 -- (lexicon.heard_as), rewritten only where the instruction word is expected.
 local function heard_forms(text)
   local toks, bare = plain_words(text)
+  if not any_of(bare, HEARD) then return text end
   return tokens.rewrite(text, toks, function(i)
     local forms = HEARD[bare[i]]
     if not forms then return nil end
@@ -443,6 +452,8 @@ for _, n in ipairs(lexicon.not_simulated) do
   for w in n.words:gmatch("%S+") do SPELLED[w] = true end
 end
 local function spelled(text)
+  -- (no single letter before another: "q n", "h,")
+  if not (" " .. text .. " "):find("%s%a%s+%a[%s%p]") then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   return tokens.rewrite(text, toks, function(i)
@@ -3014,6 +3025,14 @@ local function spelled_registrations(text, fleet)
       end
     end
   end
+  local spelling = false  -- (a phonetic letter said)
+  for w in text:gmatch("[%w]+") do
+    if lexicon.phonetic[w:lower()] then
+      spelling = true
+      break
+    end
+  end
+  if not spelling then return text end
   local words = {}  -- {text, b, e} of each word
   for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
   for k, w in ipairs(words) do
@@ -3206,6 +3225,7 @@ local TYPED_PLACE_NM = 250
 -- that code
 local function spelled_airports(text, world)
   if not world.airport_class then return text end
+  if not text:find("%l%s+%l%s+%l%s+%l") then return text end  -- (no four letters apart in a row)
   local ids = {}
   for _, a in ipairs(world.aircraft) do ids[(a.id or ""):upper()] = true end
   local toks = {}
