@@ -342,9 +342,7 @@ local function airline_names()
   return AIRLINE_NAMES, BRANDS, BRAND_OF
 end
 
--- The airline named by the words at i (longest name first; a designator
--- typed in capitals, "the DLH", too): ICAO prefix, first token after it, and the ICAO prefixes of
--- the brand the name is (names.lua's brands; nil for one airline).
+-- G:airline_at's reading of the words at i, each time anew.
 local function airline_at(self, i)
   local t = self.t[i]
   if not t or t.kind ~= "word" then return nil end
@@ -368,6 +366,9 @@ local function airline_at(self, i)
   if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
   return nil
 end
+-- The airline named by the words at i (longest name first; a designator
+-- typed in capitals, "the DLH", too): ICAO prefix, first token after it, and the ICAO prefixes of
+-- the brand the name is (names.lua's brands; nil for one airline). Read once per request and position.
 function m:airline_at(i)
   local found = self.airlines_at  -- per request: found[i] = {icao, e, brand} or false
   if not found then
