@@ -202,11 +202,20 @@ local function compile_rule(spec, level)
 end
 
 -- The rules that may fire on a word, in M.rules' order: RULES_BY_WORD[w] for a word some rule
--- lists, ANY_RULES ("*" rules only) for every other word. Rebuilt whenever M.rules changes.
-local RULES_BY_WORD, ANY_RULES = {}, {}
+-- lists, ANY_RULES ("*" rules only) for every other word. CONDITION_SETS[w]: the word sets of the
+-- rules' near, not_near, prev and not_prev conditions that hold w. Rebuilt whenever M.rules changes.
+local RULES_BY_WORD, ANY_RULES, CONDITION_SETS = {}, {}, {}
 local function index_rules()
-  RULES_BY_WORD, ANY_RULES = {}, {}
+  RULES_BY_WORD, ANY_RULES, CONDITION_SETS = {}, {}, {}
   for _, r in ipairs(M.rules) do
+    for _, k in ipairs({ "near", "not_near", "prev", "not_prev" }) do
+      for w, v in pairs(r[k] and r[k][2] or {}) do
+        if v then
+          CONDITION_SETS[w] = CONDITION_SETS[w] or {}
+          CONDITION_SETS[w][r[k][2]] = true
+        end
+      end
+    end
     if r.any then
       ANY_RULES[#ANY_RULES + 1] = r
       for _, list in pairs(RULES_BY_WORD) do list[#list + 1] = r end
@@ -337,9 +346,17 @@ local function plain_words(text)
   end
   return plain_toks, plain_bare
 end
+-- True when one of the words `bare` is a key of `set`.
+local function any_of(bare, set)
+  for _, w in ipairs(bare) do
+    if set[w] ~= nil then return true end
+  end
+  return false
+end
 local function foreign_digits(text)
   local toks, bare = plain_words(text)
   local F = lexicon.foreign_digits
+  if not any_of(bare, F) then return text end
   local function digit(k)
     local w = bare[k]
     return w ~= nil and (F[w] ~= nil or NUMBER_WORDS[w] == true or w:match("^%d+$") ~= nil
@@ -375,6 +392,7 @@ end
 -- (lexicon.heard_as), rewritten only where the instruction word is expected.
 local function heard_forms(text)
   local toks, bare = plain_words(text)
+  if not any_of(bare, HEARD) then return text end
   return tokens.rewrite(text, toks, function(i)
     local forms = HEARD[bare[i]]
     if not forms then return nil end
@@ -404,6 +422,7 @@ end
 -- digits together are one value.
 local SPLIT_AFTER = set_of({ "fl", "level", "heading", "hdg" })
 local function split_digits(text)
+  if not text:find("%d%s+%d") then return text end  -- (no two digit groups side by side)
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   local out, i, changed = {}, 1, false
@@ -433,6 +452,8 @@ for _, n in ipairs(lexicon.not_simulated) do
   for w in n.words:gmatch("%S+") do SPELLED[w] = true end
 end
 local function spelled(text)
+  -- (no single letter before another: "q n", "h,")
+  if not (" " .. text .. " "):find("%s%a%s+%a[%s%p]") then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   return tokens.rewrite(text, toks, function(i)
@@ -467,9 +488,10 @@ local function bare_words(text)
   last_text, last_words = text, toks
   return toks
 end
+local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
+  set_of(lexicon.self_correction.markers), set_of(lexicon.self_correction.after)
 local function self_corrections(text)
-  local sc = lexicon.self_correction
-  local words, markers, after = set_of(sc.words), set_of(sc.markers), set_of(sc.after)
+  local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from, k = {}, 1, 1
@@ -753,10 +775,24 @@ function G:raw(b, e)
   return table.concat(words, " ")
 end
 
+-- self.words[i]: the text of token i when it is a word, else false (nil past the end).
+local function word_texts(toks)
+  local words = {}
+  for i, t in ipairs(toks) do words[i] = t.kind == "word" and t.text end
+  return words
+end
+
+-- The word at k is a filler from here on, its text blank (it is no word of any list). A token's text
+-- changes only here: self.words follows it.
+function G:blank(k)
+  self.t[k].text, self.t[k].filler = "", true
+  self.words[k] = ""
+end
+
 function G:word(i, words)
-  local t = self.t[i]
-  if t == nil or t.kind ~= "word" then return false end
-  return (set_cache[words] or word_set(words, 2))[t.text] == true
+  local w = self.words[i]
+  if not w then return false end
+  return (set_cache[words] or word_set(words, 2))[w] == true
 end
 
 -- The registry name of the command the word at i names when it is a registry name or alias that is
@@ -766,27 +802,29 @@ function G:registry_word(i)
   return t ~= nil and t.kind == "word" and REGISTRY_WORDS[t.text] or nil
 end
 
-function G:word_in(b, e, words)
-  local s = set_cache[words] or word_set(words, 2)
-  local toks = self.t
-  local last = #toks + 1
+-- True when one of the words b .. e-1 of texts (G's self.words; e past the end reads as the end) is a
+-- word of set s.
+local function word_among(texts, b, e, s)
+  local last = #texts + 1
   if e < last then last = e end
-  for i = b, last - 1 do
-    local t = toks[i]
-    if t.kind == "word" and s[t.text] then return true end
+  for k = b, last - 1 do
+    local w = texts[k]
+    if w and s[w] then return true end
   end
   return false
 end
 
+function G:word_in(b, e, words) return word_among(self.words, b, e, set_cache[words] or word_set(words, 2)) end
+
 -- The first position in [b, e) holding one of `words`, or e.
 function G:find_word(b, e, words)
   local s = set_cache[words] or word_set(words, 2)
-  local toks = self.t
-  local last = #toks + 1
+  local texts = self.words
+  local last = #texts + 1
   if e < last then last = e end
   for i = b, last - 1 do
-    local t = toks[i]
-    if t.kind == "word" and s[t.text] then return i end
+    local w = texts[i]
+    if w and s[w] then return i end
   end
   return e
 end
@@ -898,39 +936,53 @@ function G:remark_sentence(k, instructed)
   return (instructed(k) or after) and self:commentary(k, e)
 end
 
+local REASON_WORDS = word_set("@reason")
 function G:in_reason(i)
   if not self.reason then
     -- reason[i]: the nearest of a reason word (or a purpose, G:purpose) and a sentence break before
     -- i is the reason word
     self.reason = {}
     local inside = false
+    -- intents[x]: self:intent_at(x) or false, asked once while the spans are found (nothing here marks
+    -- a word used)
+    local intents = {}
     -- true when an instruction word is said before k, outside a reason (asked only where an aside may open)
     local function instructed(k)
       for x = 1, k - 1 do
-        if not self.reason[x] and self:intent_at(x) then return true end
+        if not self.reason[x] then
+          local intent = intents[x]
+          if intent == nil then
+            intent = self:intent_at(x) or false
+            intents[x] = intent
+          end
+          if intent then return true end
+        end
       end
       return false
     end
     local commas = 0          -- the commas up to k (self.apart: those that were a dash or a bracket)
     local lead_end            -- the comma that ends a lead-in ("For the overtake case, ...")
-    for k = 1, #self.t do
-      self.reason[k] = inside
-      local t = self.t[k]
-      local start = k == 1 or (self.t[k - 1].kind == "punct" and self.t[k - 1].text ~= ",")
-      if t.kind == "punct" and t.text == "," then commas = commas + 1 end
-      if t.kind == "punct" and self:word(k - 1, CM_LABELS) and t.text == ":" then
+    local toks, reason = self.t, self.reason
+    for k = 1, #toks do
+      reason[k] = inside
+      local t = toks[k]
+      local w = self.words[k]  -- (false for punctuation and numbers)
+      local punct = t.kind == "punct"
+      local start = k == 1 or (toks[k - 1].kind == "punct" and toks[k - 1].text ~= ",")
+      if punct and t.text == "," then commas = commas + 1 end
+      if punct and t.text == ":" and self:word(k - 1, CM_LABELS) then
         -- ("descend to FL100, reason: lose the vertical overlap with TOM6RT": to the end of the sentence)
-        inside, self.reason[k - 1] = true, true
-      elseif t.kind == "punct" and t.text == "," and (self.apart or {})[commas] and instructed(k)
+        inside, reason[k - 1] = true, true
+      elseif punct and t.text == "," and (self.apart or {})[commas] and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("left 70 degrees - hard test of the turn model", "800 ft (testing reduced vertical)")
         inside = true
-      elseif t.kind == "punct" and t.text == "," and self:word(k + 1, CM_SUBJECTS) and instructed(k)
+      elseif punct and t.text == "," and self:word(k + 1, CM_SUBJECTS) and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase")
         inside = true
-      elseif ((self:word(k, CM_WHILE) and self:word(k + 1, CM_OWN))
-          or (t.kind == "punct" and t.text == "," and self:word(k + 1, CM_OWN)
+      elseif ((w and CM_WHILE[w] and self:word(k + 1, CM_OWN))
+          or (punct and t.text == "," and self:word(k + 1, CM_OWN)
               and self:word_in(k + 2, commentary_end(self, k + 1), CM_LATER)))
           and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 and instructed(k) then
         -- ("pause the sim while I reset the eye tracker", ", we'll put it back on the route later")
@@ -951,36 +1003,36 @@ function G:in_reason(i)
           inside = self:commentary(k, e, true) or (t.text == "to" and self:commentary(k + 2, e, true))
           lead_end = inside and e or nil
         end
-      elseif (self:word(k, "then") and self:word(k + 1, "i'll we'll") and self:commentary(k + 1, commentary_end(self, k + 1))
-            or self:word(k, "for") and self:word(k + 1, "when") and self:word(k + 2, CM_OWN)
+      elseif (w == "then" and self:word(k + 1, "i'll we'll") and self:commentary(k + 1, commentary_end(self, k + 1))
+            or w == "for" and self:word(k + 1, "when") and self:word(k + 2, CM_OWN)
               and self:commentary(k + 2, commentary_end(self, k + 2))) and instructed(k) then
         -- ("fast forward 60 sec then I'll hand over to the pseudo pilot", "set the sim rate to 5 for when we
         -- restart": the experimenter's own doing after the instruction, or when it is for)
-        inside, self.reason[k] = true, true
+        inside, reason[k] = true, true
       elseif start and t.kind == "word" and self:remark_sentence(k, instructed) then
         -- ("... 290 knots. First arrival of batch B.", "Let's start with the baseline pair. SAS1A A320 ..."
-        inside, self.reason[k] = true, true
+        inside, reason[k] = true, true
       elseif k == lead_end then
         inside = false
-      elseif t.kind == "punct" and t.text ~= "," then
+      elseif punct and t.text ~= "," then
         inside = false
       elseif self:purpose(k) then
         inside = true
-      elseif t.kind == "punct" and self:word(k + 1, "@then_words") then
+      elseif punct and self:word(k + 1, "@then_words") then
         -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
         inside = false
-      elseif self:word(k, "@reason") or (self:word(k, "so") and self:word(k + 1, "@reason_after_so"))
-          or (self:word(k, "see") and self:word(k + 1, "@see_whether") and instructed(k)) then
+      elseif (w and REASON_WORDS[w]) or (w == "so" and self:word(k + 1, "@reason_after_so"))
+          or (w == "see" and self:word(k + 1, "@see_whether") and instructed(k)) then
         inside = true
-      elseif self:word(k, "so") and k > 1 and self.t[k - 1].kind ~= "punct" and not self.t[k - 1].filler
+      elseif w == "so" and k > 1 and self.t[k - 1].kind ~= "punct" and not self.t[k - 1].filler
           and self:has_ref(k + 1, k + 3, "aircraft") then
         -- ("slow VIR9 to 260 kt so the Speedbird catches up": "so" after an instruction's words, before an
         -- aircraft, says what the instruction brings about; "so" opening a clause is a filler)
         inside = true
-      elseif t.kind == "punct" and self:word(k + 1, "that this which") and self:word(k + 2, "@purpose_modals") then
+      elseif punct and self:word(k + 1, "that this which") and self:word(k + 2, "@purpose_modals") then
         -- (", that should put him across the Beeline's track": what the instruction should bring about)
         inside = true
-      elseif t.kind == "punct" and (self:word(k + 1, "we") or self:word(k + 1, "i") and not self:word(k + 3, "to"))
+      elseif punct and (self:word(k + 1, "we") or self:word(k + 1, "i") and not self:word(k + 3, "to"))
           and self:word(k + 2, "@purpose_verbs")
           and not self:word_in(k + 3, math.min(#self.t + 1, k + 5), "you") and not names_instructed(self, k + 3) then
         -- (", we want it crossing the Speedbird's track", ", I want the Beeline to catch him", ", we don't
@@ -1161,16 +1213,37 @@ function G:explain(b, e)
   for k = b, e - 1 do self.explained[k] = true end
 end
 
+-- self.said_sets[s]: true when a word of the rule condition set s may be in the request (it was when the
+-- request was read: a word blanked since is no longer there), nil when none is.
+local function sets_said(self)
+  local said = {}
+  for _, w in ipairs(self.words) do
+    local sets = w and CONDITION_SETS[w]
+    if sets then
+      for s in pairs(sets) do said[s] = true end
+    end
+  end
+  self.said_sets = said
+  return said
+end
+
 -- The intent the word at i starts, or nil.
 function G:intent_at(i)
-  local t = self.t[i]
-  if not t or t.kind ~= "word" or self.u:used(i) then return nil end
-  for _, r in ipairs(RULES_BY_WORD[t.text] or ANY_RULES) do
-    if (not r.next or self:word(i + 1, r.next))
-        and (not r.near or self:followed_by(i, r.near[1], r.near[2]))
-        and (not r.not_near or not self:followed_by(i, r.not_near[1], r.not_near[2]))
-        and (not r.prev or self:preceded_by(i, r.prev[1], r.prev[2]))
-        and (not r.not_prev or not self:preceded_by(i, r.not_prev[1], r.not_prev[2]))
+  local texts = self.words
+  local w = texts[i]
+  if not w or self.u:used(i) then return nil end
+  local next_word = texts[i + 1]
+  local said = self.said_sets or sets_said(self)
+  for _, r in ipairs(RULES_BY_WORD[w] or ANY_RULES) do
+    -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
+    -- of whose words is said is not looked for)
+    local near, not_near, prev, not_prev = r.near, r.not_near, r.prev, r.not_prev
+    if (not r.next or (next_word and r.next[next_word] == true))
+        and (not near or (said[near[2]] and word_among(texts, i + 1, i + 1 + near[1], near[2])))
+        and (not not_near or not (said[not_near[2]] and word_among(texts, i + 1, i + 1 + not_near[1], not_near[2])))
+        and (not prev or (said[prev[2]] and word_among(texts, i > prev[1] and i - prev[1] or 1, i, prev[2])))
+        and (not not_prev
+          or not (said[not_prev[2]] and word_among(texts, i > not_prev[1] and i - not_prev[1] or 1, i, not_prev[2])))
         and (not r.when or r.when(self, i)) then
       return r.intent or nil
     end
@@ -1539,14 +1612,23 @@ end
 -- '.', '?', ';' or the end; "say again? I say, descend FL360" (nothing in it) reads on as before.
 local QUESTION_BACK_NOT_AFTER = {}
 for _, w in ipairs(lexicon.question_back.not_after) do QUESTION_BACK_NOT_AFTER[w] = true end
+-- PHRASE_WORDS[phrase]: the phrase's words, split once
+local PHRASE_WORDS = setmetatable({}, { __index = function(split, phrase)
+  local words = {}
+  for w in phrase:gmatch("%S+") do words[#words + 1] = w end
+  split[phrase] = words
+  return words
+end })
 function G:question_back()
   local qb = lexicon.question_back
+  local toks = self.t
   -- the end (one past) of a phrase of `phrases` said at i, or nil
   local function phrase_end(i, phrases)
     for _, p in ipairs(phrases) do
       local k = i
-      for w in p:gmatch("%S+") do
-        if not (self.t[k] and self.t[k].kind == "word" and self.t[k].text == w) then k = nil break end
+      for _, w in ipairs(PHRASE_WORDS[p]) do
+        local t = toks[k]
+        if not (t and t.kind == "word" and t.text == w) then k = nil break end
         k = k + 1
       end
       if k then return k end
@@ -1557,9 +1639,15 @@ function G:question_back()
     while k <= #self.t and not (self.t[k].kind == "punct" and self.t[k].text ~= ",") do k = k + 1 end
     return k
   end
+  -- the words a phrase opens with: a word no phrase opens with starts no question
+  local opens = {}
+  for _, list in ipairs({ qb.repeat_words, qb.confirm }) do
+    for _, p in ipairs(list) do opens[PHRASE_WORDS[p][1]] = true end
+  end
   for i = 1, #self.t do
     local before = self.t[i - 1]
-    if not self.u:used(i) and not (before and QUESTION_BACK_NOT_AFTER[before.text]) then
+    if self.t[i].kind == "word" and opens[self.t[i].text] and not self.u:used(i)
+        and not (before and QUESTION_BACK_NOT_AFTER[before.text]) then
       local re = phrase_end(i, qb.repeat_words)
       if re then
         local e = clause_end(re)
@@ -2378,14 +2466,17 @@ for _, w in ipairs(ACCOUNTED.articles) do SUBJECTS[w] = true end
 -- True when "to" (or a modal) at k opens the purpose of the instruction before it ("descend FL240 to put it at the
 -- same level as KLM1234", "hdg 120 to close on TRA5GK"): after a value, before a verb no rule or list
 -- knows, typed in lower case (no value, name, code or instruction word), with no value in its clause.
+local PURPOSE_MODALS = word_set("@purpose_modals")
 function G:purpose(k)
   -- ("UAL9 heading 150 - should converge with KLM1877": what should follow, after the value or a dash)
+  local w = self.words[k]
+  if not w then return false end
   local pv = self.t[k - 1]
-  if self:word(k, "@purpose_modals") and pv
+  if PURPOSE_MODALS[w] and pv
       and (#self:quantities(k - 1, k) > 0 or (pv.kind == "punct" and k > 2 and #self:quantities(k - 2, k - 1) > 0)) then
     return true
   end
-  if not self:word(k, "to") then return false end
+  if w ~= "to" then return false end
   -- ("To create a same-level encounter: SAS1410 climb FL190": a purpose opening the request, up to its colon,
   -- naming no value and no aircraft)
   if self:skip_fillers(1) == k and self:word(k + 1, "create set build make test") then
@@ -2756,8 +2847,9 @@ end
 -- (the dialogue tells an answer to its question from a new request by it).
 function M.has_instruction(text)
   local u = squawk.translate.utterance(written_forms(text), nil, NAMES)
-  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = { aircraft = {}, waypoints = {} },
-    fleet = {}, out = {}, qcache = {}, triggers = {} }, G)
+  local toks = u:tokens()
+  local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(),
+    world = { aircraft = {}, waypoints = {} }, fleet = {}, out = {}, qcache = {}, triggers = {} }, G)
   for i = 1, #g.t do
     if g:intent_at(i) then return true end
   end
@@ -2844,10 +2936,10 @@ end
 -- speaker's "well"; that "right" is a filler, no direction.
 function G:opening_right()
   local i = self:skip_fillers(1, false)
-  local t, nxt = self.t[i], self.t[i + 1]
+  local nxt = self.t[i + 1]
   if self:word(i, "@right") and nxt and nxt.kind == "punct" and nxt.text == ","
       and self:word_in(i + 2, #self.t + 1, "@left") then
-    t.text, t.filler = "", true
+    self:blank(i)
   end
 end
 
@@ -2861,7 +2953,7 @@ function G:runway_sides()
       local k = i + 1
       while k <= i + 2 and self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word) do k = k + 1 end
       if k > i + 1 and self:word(k, "@runway_sides") then
-        self.t[k].text, self.t[k].filler = "", true
+        self:blank(k)
         self:mark_used(i + 1, k + 1)
       end
     end
@@ -3199,12 +3291,22 @@ local function spelled_registrations(text, fleet)
       end
     end
   end
+  local spelling = false  -- (a phonetic letter said)
+  for w in text:gmatch("[%w]+") do
+    if lexicon.phonetic[w:lower()] then
+      spelling = true
+      break
+    end
+  end
+  if not spelling then return text end
   local words = {}  -- {text, b, e} of each word
   for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
   for k, w in ipairs(words) do
-    if not lexicon.phonetic[w[1]] or k == 1 or not lexicon.phonetic[words[k - 1][1]] then
+    local first = lexicon.phonetic[w[1]] and k or k + 1
+    -- (a spelling starts at the first letter of a run, said at k or after a maker or model at k)
+    if (not lexicon.phonetic[w[1]] or k == 1 or not lexicon.phonetic[words[k - 1][1]])
+        and words[first] and lexicon.phonetic[words[first][1]] then
       local set = TYPE_WORDS[w[1]]
-      local first = lexicon.phonetic[w[1]] and k or k + 1
       -- (after two letters or more, digits said or typed and more letters: "Hotel Kilo five zero one two"
       -- is HK5012, "Delta Lima Hotel six Charlie Kilo" DLH6CK, when such an aircraft flies)
       local letters, last, lead = "", nil, 0
@@ -3408,6 +3510,7 @@ local TYPED_PLACE_NM = 250
 -- that code
 local function spelled_airports(text, world)
   if not world.airport_class then return text end
+  if not text:find("%l%s+%l%s+%l%s+%l") then return text end  -- (no four letters apart in a row)
   local ids = {}
   for _, a in ipairs(world.aircraft) do ids[(a.id or ""):upper()] = true end
   local toks = {}
@@ -3499,15 +3602,17 @@ function M.translate(text, world)
   end
   text = spelled_airports(typed_places(written_forms(text), world), world)
   -- type names with their digits said as words, where traffic is created (random traffic too)
-  if text:lower():find("%f[%a]create") or text:lower():find("%f[%a]spawn") or text:lower():find("%f[%a]generate")
-      or text:lower():find("%f[%a]add") or text:lower():find("%f[%a]mcre") or text:lower():find("%f[%a]random") then
+  local lower = text:lower()
+  if lower:find("%f[%a]create") or lower:find("%f[%a]spawn") or lower:find("%f[%a]generate")
+      or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
   local apart
   text, apart = set_apart(types.join(text, TYPES.phrases))
   local u = squawk.translate.utterance(text, world, NAMES)
-  local g = setmetatable({ u = u, t = u:tokens(), refs = u:refs(), world = world, fleet = world.aircraft, out = {},
-    qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
+  local toks = u:tokens()
+  local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
+    fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
   g:settle_callsigns()
   local same = g:same_for()
   g:airline_types()

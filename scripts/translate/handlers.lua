@@ -344,10 +344,8 @@ local function airline_names()
   return AIRLINE_NAMES, BRANDS, BRAND_OF
 end
 
--- The airline named by the words at i (longest name first; a designator
--- typed in capitals, "the DLH", too): ICAO prefix, first token after it, and the ICAO prefixes of
--- the brand the name is (names.lua's brands; nil for one airline).
-function m:airline_at(i)
+-- G:airline_at's reading of the words at i, each time anew.
+local function airline_at(self, i)
   local t = self.t[i]
   if not t or t.kind ~= "word" then return nil end
   -- (no name starts with this word: only the designator typed in capitals can match; a word holding
@@ -368,6 +366,24 @@ function m:airline_at(i)
     if icao then return icao, i + n, BRANDS[said] end
   end
   if t.raw:match("^%u%u%u$") then return t.raw, i + 1 end
+  return nil
+end
+-- The airline named by the words at i (longest name first; a designator
+-- typed in capitals, "the DLH", too): ICAO prefix, first token after it, and the ICAO prefixes of
+-- the brand the name is (names.lua's brands; nil for one airline). Read once per request and position.
+function m:airline_at(i)
+  local found = self.airlines_at  -- per request: found[i] = {icao, e, brand} or false
+  if not found then
+    found = {}
+    self.airlines_at = found
+  end
+  local a = found[i]
+  if a == nil then
+    local icao, e, brand = airline_at(self, i)
+    a = icao ~= nil and { icao, e, brand }
+    found[i] = a
+  end
+  if a then return a[1], a[2], a[3] end
   return nil
 end
 
@@ -517,47 +533,51 @@ function m:airline_refs()
   local i = 1
   while i <= #self.t do
     local icao, e, codes = self:airline_at(i)
-    local nxt = self.t[e]
-    local prev = self.t[i - 1]
-    local the = prev and prev.kind == "word" and prev.text == "the"
-        and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
-          or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
-    local ok = icao and not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e))
-        and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
-          or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
-        and not self:new_aircraft_follows(e - 1)
-    local fits = ok and self:airline_fleet(icao, codes) or {}
-    -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
-    -- name no airline flying, "the ILS", are no airline)
-    -- ("The SAS that's coming from the south, SAS 517, could it descend": the airline said again with its
-    -- flight number, in the same sentence before any instruction, is the one meant)
-    local named_later = false
-    for _, r in ipairs(#fits > 1 and self.refs or {}) do
-      if r.kind == "aircraft" and r.exists and r.b >= e and r.b <= e + 10 then
-        local sentence = true
-        for k = e, r.b - 1 do
-          local t = self.t[k]
-          sentence = sentence and not (t.kind == "punct" and t.text ~= ",") and not self:intent_at(k)
+    if not icao then
+      i = i + 1  -- (no airline named at i)
+    else
+      local nxt = self.t[e]
+      local prev = self.t[i - 1]
+      local the = prev and prev.kind == "word" and prev.text == "the"
+          and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
+            or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
+      local ok = not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e))
+          and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
+            or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
+          and not self:new_aircraft_follows(e - 1)
+      local fits = ok and self:airline_fleet(icao, codes) or {}
+      -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
+      -- name no airline flying, "the ILS", are no airline)
+      -- ("The SAS that's coming from the south, SAS 517, could it descend": the airline said again with its
+      -- flight number, in the same sentence before any instruction, is the one meant)
+      local named_later = false
+      for _, r in ipairs(#fits > 1 and self.refs or {}) do
+        if r.kind == "aircraft" and r.exists and r.b >= e and r.b <= e + 10 then
+          local sentence = true
+          for k = e, r.b - 1 do
+            local t = self.t[k]
+            sentence = sentence and not (t.kind == "punct" and t.text ~= ",") and not self:intent_at(k)
+          end
+          for _, id in ipairs(fits) do named_later = named_later or (sentence and id == r.name) end
         end
-        for _, id in ipairs(fits) do named_later = named_later or (sentence and id == r.name) end
       end
-    end
-    if ok and named_later then self:explain(i, e) end
-    if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i)
-        and not named_later then
-      self.airline_unresolved = self.airline_unresolved or {}
-      table.insert(self.airline_unresolved, { b = i, e = e })
-    end
-    if #fits == 1 then
-      for k = #self.refs, 1, -1 do
-        if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+      if ok and named_later then self:explain(i, e) end
+      if ok and (#fits > 1 or (#fits == 0 and airline_names()[self.t[i].text])) and not self:in_reason(i)
+          and not named_later then
+        self.airline_unresolved = self.airline_unresolved or {}
+        table.insert(self.airline_unresolved, { b = i, e = e })
       end
+      if #fits == 1 then
+        for k = #self.refs, 1, -1 do
+          if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+        end
+      end
+      if ok and the and pronoun_one(e) then  -- (the pronoun is part of the name, no value)
+        self:mark_used(e, e + 1)
+        e = e + 1
+      end
+      i = self:insert_ref(fits, i, e, "by_airline")
     end
-    if ok and the and pronoun_one(e) then  -- (the pronoun is part of the name, no value)
-      self:mark_used(e, e + 1)
-      e = e + 1
-    end
-    i = self:insert_ref(fits, i, e, "by_airline")
   end
 end
 

@@ -1,0 +1,43 @@
+-- Lua instructions per request of the offline translation graph, over the utterances
+-- build/bench_translate times (../shared/corpora nl2trafscript_dev.tsv and vice_trafscript.tsv,
+-- each against its case's setup): a count hook on every instruction, so the figure is exact and
+-- holds on a loaded machine, where wall times do not. Each request is translated once first
+-- (not counted), as the bench warms it. Prints the mean per request, then the TOP functions by
+-- the instructions run in them (not in what they call), as file:line-defined.
+-- usage: squawk run --unsafe bench/translate_instructions.lua [TOP]   (--unsafe: the debug library;
+--   the corpora must be in ../shared/corpora)
+local graph = require("translate.graph")
+local nodes = require("translate.nodes")
+local top = tonumber(arg and arg[1]) or 25
+assert(debug and debug.sethook, "run with --unsafe: the count hook needs the debug library")
+
+local per_function, total, requests = {}, 0, 0
+local getinfo = debug.getinfo
+local function count()
+  total = total + 1
+  local info = getinfo(2, "S")
+  local key = info.short_src:match("[^/]*$") .. ":" .. info.linedefined
+  per_function[key] = (per_function[key] or 0) + 1
+end
+
+for _, path in ipairs({ "../shared/corpora/nl2trafscript_dev.tsv", "../shared/corpora/vice_trafscript.tsv" }) do
+  squawk.translate.evaluate(path, function(c)
+    local sim = squawk.sim.new()
+    for _, line in ipairs(nodes.split_commands(c.setup)) do sim:exec(line) end
+    local opts = { mode = "offline", sim = sim, waypoints = nodes.defined_waypoints(c.setup) }
+    graph.translate(c.utterance, opts)
+    debug.sethook(count, "", 1)
+    local r = graph.translate(c.utterance, opts)
+    debug.sethook()
+    requests = requests + 1
+    return r
+  end)
+end
+
+print(string.format("%d requests, %.0f Lua instructions per request", requests, total / requests))
+local rows = {}
+for key, n in pairs(per_function) do rows[#rows + 1] = { key, n } end
+table.sort(rows, function(a, b) return a[2] > b[2] end)
+for k = 1, math.min(top, #rows) do
+  print(string.format("%6.2f %%  %7.0f  %s", 100 * rows[k][2] / total, rows[k][2] / requests, rows[k][1]))
+end
