@@ -23,6 +23,7 @@
 -- words "CMD" "text"   more words people use for a registry command, for
 -- the retrieval documents of the LLM modes (checked against the registry).
 return function(intent, rule, words)
+  local CITY_AIRPORTS = require("translate.lexicon").city_airports
   intent "alt" { cmd = "ALT", args = { "acid", "alt", "vspd" }, handler = "altitude", value = true, family = "alt" }
   intent "maintain" { cmds = { "ALT", "SPD", "HDG" }, handler = "maintain", value = true, family = "alt" }
   intent "spd" { cmd = "SPD", args = { "acid", "spd" }, handler = "speed", value = true }
@@ -704,14 +705,27 @@ return function(intent, rule, words)
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata ("divert Ryanair
   -- 23AB to Eindhoven", "KLM1234 divert to EHRD": diverted to an airport, the new destination)
-  rule { "send divert diverting", "dest", when = function(g, i)
+  -- ("route VIR9 to Heathrow", "send him to Charleroi": a city said for its airport, lexicon.city_airports,
+  -- is an airport too)
+  local function sent_to_airport(g, i)
     local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
     if g:word(to - 1, "straight direct directly") then return false end  -- ("send it straight to Barcelona")
     for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
       if r.name:match("^%a%a%a%a$") then return true end
     end
     local t, named = g.t[to + 1], g.world.airports_named
-    return named ~= nil and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4 and #named(t.text) > 0
+    return named ~= nil and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4
+      and (#named(t.text) > 0 or CITY_AIRPORTS[t.text] ~= nil)
+  end
+  rule { "send divert diverting", "dest", when = sent_to_airport }
+  -- "route VIR9 to Heathrow", "reroute the Air France to Lyon": the aircraft straight after the verb, then
+  -- "to" and an airport ("route DAL88 via MERIT ..." lists waypoints)
+  rule { "route reroute", "dest", when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
+      if r.b == k and g:word(r.e, "to") then return sent_to_airport(g, r.e - 1) end
+    end
+    return false
   end }
   -- "create KL207 ... and send it to ARTIP": a waypoint (no airport) for the aircraft just created
   rule { "send", "addwpt", next = "it", when = function(g, i)

@@ -2584,3 +2584,32 @@ do
     "CRECONFS XY21 A320 KLM77 180 1 240")
   check_eq(ex("pz 5 nm, dh 1000, lookahead 300"), "ZONER 5 ; ZONEDH 1000 ; DTLOOK 300")
 end
+
+-- A navaid said by its name and its kind ("over the Hamburg VOR at FL120") is the place, never an approach
+-- clearance; a name that no navaid of that kind bears places nothing
+do
+  local nav, ex = navscene({}, "navaids by name and kind")
+  if nav then
+    check_eq(ex("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots"),
+      "CRE DLH42 A320 LAM 180 FL240 280")
+    check_eq(ex("new aircraft KLM5 B738 sitting on the Nicky VOR, flight level 200, heading 270, 260 kts"),
+      "CRE KLM5 B738 NIK 270 FL200 260")
+    check(ex("create XY12 A320 above the Lambourne NDB at FL100 heading 090 250 kts"):match("^ASK") ~= nil,
+      "no NDB bears the name: asked")
+  end
+end
+
+-- "send/route/reroute X to" an airport said by its name or its city's (lexicon.city_airports) is its
+-- destination; a fix after "to" is no destination, and "route X via A and on to B" lists the route first
+do
+  local nav, ex = navscene({ "CRE DAL88 A321 41.5 -71.5 045 FL200 280", "CRE RYR4TK B738 50.8 4.0 135 FL240 270" },
+    "destinations by city")
+  if nav then
+    check_eq(ex("please send DAL88 to Boston"), "DEST DAL88 KBOS")
+    check_eq(ex("reroute DAL88 to Boston"), "DEST DAL88 KBOS")
+    check_eq(ex("route RYR4TK to Charleroi please"), "DEST RYR4TK EBCI")
+    check_eq(ex("Ryanair four tango kilo, send him to Ostend"), "DEST RYR4TK EBOS")
+    check_eq(ex("route DAL88 to MERIT"):match("^ASK") ~= nil, true)
+    check_eq(ex("route DAL88 via MERIT and on to Boston"), "ADDWPT DAL88 MERIT ; DEST DAL88 KBOS")
+  end
+end
