@@ -1934,6 +1934,16 @@ return function(H, f, compass)
   function m:time_mult(s)
     local q = first(self, s, { mult = true, plain = true })
     if q then return self:emit("DTMULT " .. f.num(q.value)) end
+    -- "pause, then 3x speed", "and then 5 times faster": a factor said before the instruction word, in
+    -- its clause (no comma, "then" or "and" between), no other instruction's
+    local k = s.b - 1
+    while k >= 1 and self.t[k].kind ~= "punct" and not self:word(k, "then and") and not self.u:used(k) do k = k - 1 end
+    for _, p in ipairs(self:quantities(k + 1, s.b)) do
+      if p.kind == "mult" and not self.taken[p.b] then
+        self:take(p)
+        return self:emit("DTMULT " .. f.num(p.value))
+      end
+    end
     -- "sim speed x2": the factor glued to its x
     for i = s.b, s.e - 1 do
       local x = self.t[i].kind == "word" and tonumber(self.t[i].text:match("^x(%d+%.?%d*)$") or "")

@@ -325,7 +325,9 @@ return function(intent, rule, words)
   rule { "fast faster", "dtmult", prev = { 2, "twice thrice times x" } }  -- "run twice as fast"
   rule { "multiplier", "dtmult" }
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
-  rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
+  -- "run the simulation fast for 30 seconds" (not "run it and fast forward 3 minutes": an instruction of its own)
+  rule { "fast", false, prev = { 4, "run advance" },
+         when = function(g, i) return not (g:word(i - 1, "and") and g:word(i + 1, "forward")) end }
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" } }  -- "the Shuttle is a bit slow": a description
@@ -900,6 +902,12 @@ return function(intent, rule, words)
   -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
   rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  -- "run it and fast forward 3 minutes", "run the sim and ff 60 s": the clock started, then moved on
+  rule { "run", "op", when = function(g, i)
+    local k = i + 1
+    if g:word(k, "the") and g:word(k + 1, "@sim") then k = k + 2 elseif g:word(k, "it @sim") then k = k + 1 end
+    return g:word(k, "and") and g:word(k + 1, "fast ff")
+  end }
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"

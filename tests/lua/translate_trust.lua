@@ -2613,3 +2613,15 @@ do
     check_eq(ex("route DAL88 via MERIT and on to Boston"), "ADDWPT DAL88 MERIT ; DEST DAL88 KBOS")
   end
 end
+
+-- The clock in a list of steps: a factor said before its word after "then" ("pause, then 3x speed") is the
+-- rate, and "run it and fast forward N" starts the clock and moves it on; "run it fast for N" stays one jump
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("freeze it, set seed 7, then 4x speed"), "HOLD ; SEED 7 ; DTMULT 4")
+  check_eq(ex("pause and then 2 times speed please"), "HOLD ; DTMULT 2")
+  check_eq(ex("right, run it and fast forward 90 seconds"), "OP ; FF 90")
+  check_eq(ex("run the sim and ff 2 min"), "OP ; FF 120")
+  check_eq(ex("run the simulation fast for 45 seconds"), "FF 45")
+  check(ex("pause, then speed"):match("^ASK") ~= nil, "no factor said: asked")
+end
