@@ -1650,15 +1650,52 @@ return function(H, f, compass)
     end
     return code
   end
+  -- "orig eddf", "destination to eham": an ICAO code typed in lower case straight after the instruction
+  -- word ("to" between or not) that names an airport of the navdata; nil for any other word
+  local function typed_airport(self, s)
+    local class = self.world.airport_class
+    local k = self:word(s.trig + 1, "to is") and s.trig + 2 or s.trig + 1
+    local t = self.t[k]
+    if not class or k >= s.e or t.kind ~= "word" or not t.raw:match("^%l%l%l%l$") or self.u:used(k) then return nil end
+    local code = t.raw:upper()
+    local c = class(code) or ""
+    if c == "" or c == "CLOSED" then return nil end
+    self:mark_used(k, k + 1)
+    self:explain(k, k + 1)
+    return code
+  end
+  -- "Heathrow as its destination": the first token of the place said before "as (its|the)" and the
+  -- instruction word at `trig` (at most four words, after "and", "then", "with" or punctuation), and the
+  -- token of "as"; nil when the word stands otherwise
+  local function placed_as(self, trig)
+    local as = self:word(trig - 1, "its the") and trig - 2 or trig - 1
+    if not self:word(as, "as") then return nil end
+    local b = as
+    while b > as - 4 and self.t[b - 1] and self.t[b - 1].kind == "word" and not self:word(b - 1, "and then with")
+        and not self.u:used(b - 1) do
+      b = b - 1
+    end
+    if b < as then return b, as end
+    return nil
+  end
   local function dest_orig(self, s, cmd, what)
     local id = self:acid(s, "get it")
     if not id then return end
+    -- "Amsterdam as its origin and Heathrow as its destination": each place before its own word
+    local b, as = nil, nil
+    if s.b == s.trig then b, as = placed_as(self, s.trig) end
+    local nb = s.e <= #self.t and self:word(s.e, "destination dest origin orig") and placed_as(self, s.e)
+    if b or (nb and nb > s.trig) then
+      if as then self:explain(as, s.trig) end
+      s = { b = b or s.b, trig = s.trig, e = nb and nb > s.trig and nb or s.e, intent = s.intent }
+    end
     local w = self:refs_in(s.b, s.e, "waypoint")
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
-    -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant)
-    local spelled = spelled_airport(self, s)
+    -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant; one typed in lower
+    -- case straight after the word, "orig eddf, dest eham", is that airport)
+    local spelled = typed_airport(self, s) or spelled_airport(self, s)
     local near = spelled or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
     -- (a part of a name only near the aircraft: "Madrid" anywhere is SKMA, in Colombia)

@@ -2625,3 +2625,20 @@ do
   check_eq(ex("run the simulation fast for 45 seconds"), "FF 45")
   check(ex("pause, then speed"):match("^ASK") ~= nil, "no factor said: asked")
 end
+
+-- Destinations and origins as researchers type them: an ICAO code in lower case straight after the word
+-- ("orig eddf, dest eham"), and each place said before "as its origin/destination"; an unknown name asks
+do
+  local nav, ex = navscene({ "CRE KLM601 B738 51.0 6.0 300 FL250 280" }, "airports typed and said as")
+  if nav then
+    check_eq(ex("KLM601 orig eddf, dest eham"), "ORIG KLM601 EDDF ; DEST KLM601 EHAM")
+    check_eq(ex("KLM601 destination is ebbr"), "DEST KLM601 EBBR")
+    check(ex("KLM601 destination lane"):match("^ASK") ~= nil, "a word that is no airport code asks")
+    check_eq(ex("give KLM601 Gatwick as its origin and Heathrow as its destination"),
+      "ORIG KLM601 EGKK ; DEST KLM601 EGLL")
+    check_eq(ex("KLM601 should get a route via SPY and Eindhoven as its destination"),
+      "ADDWPT KLM601 SPY ; DEST KLM601 EHEH")
+    check(ex("give KLM601 Gatwick as its origin and Frobnitz as its destination"):match("^ASK") ~= nil,
+      "an unknown name asks")
+  end
+end
