@@ -1278,6 +1278,13 @@ function G:segments(b, e)
         end
       end
     end
+    -- "create NKS1021 A320 ... and then UPS2951 B763 at ...": a new callsign and its type after "then"
+    -- open another creation, its values the creation's (M:create makes each aircraft)
+    if last and thn and last.intent == "create" and this.value then
+      for _, r in ipairs(self:refs_in(thn_at + 1, tr.pos, "aircraft")) do
+        merged = merged or (not r.exists and #self:refs_in(r.e, math.min(tr.pos, r.e + 2), "type") > 0)
+      end
+    end
     if not merged then
       -- an aircraft named just before the instruction word is its subject, not
       -- the previous instruction's ("EZY45 turn left 300 and AFR1234 descend")

@@ -47,9 +47,15 @@ return function(H, f, compass)
       end
     end
     if #starts <= 1 then return self:create_one(s, s.b) end
+    -- ("AAA1 A320 at 53 7 heading 090 and BBB2 A320 at 52.7 7.5 heading 000, both FL300 at 280 kts"): values
+    -- said after "both", "all" or "each" at the end are every new aircraft's
+    local last = starts[#starts]
+    local shared = self:find_word(last, s.e, "both all each")
     for k, st in ipairs(starts) do
       local b = k == 1 and s.b or st
-      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e }, st)
+      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e, several = true,
+                        shared = k < #starts and shared < s.e and { b = shared, e = s.e } or nil }, st)
+      if self.ask then return end
     end
   end
 
@@ -158,6 +164,7 @@ return function(H, f, compass)
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
+    for _, q in ipairs(s.shared and self:quantities(s.shared.b, s.shared.e) or {}) do qs[#qs + 1] = q end
     -- (values after the type count too: "KLM602 A320, 52.4 6.4, 270 deg, ..." has its instruction word later)
     local lat, lon = position(qs, (types[1] and types[1].e < s.trig and types[1].b > s.b) and types[1].e or s.trig, self)
     if not lat or not lon then
@@ -213,6 +220,13 @@ return function(H, f, compass)
     if model and self:word_in(s.b, s.e, "heading hdg") and not hdg then hdg = model.hdg_deg end
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
       if model.sel_mach then mach = model.sel_mach else spd = model.cas_kt end
+    end
+    -- "TEST01 ... at FL300 and 280 knots, and TEST02 ..., same level and speed": the values of the aircraft
+    -- created before it in this request
+    local before = not model and self.created_values
+    if before and self:word_in(s.b, s.e, "same") then
+      if self:word_in(s.b, s.e, "altitude level fl") and not alt then alt, fl = before.alt, before.fl end
+      if self:word_in(s.b, s.e, "speed") and not spd and not mach then spd, mach = before.spd, before.mach end
     end
     -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol");
     -- "the same position as VIR3": that aircraft's (CRE takes an aircraft's id as its position)
@@ -368,7 +382,7 @@ return function(H, f, compass)
     if (spd or mach or alt) and not hdg then
       return self:need("What heading should " .. id .. " have?")
     end
-    if (spd or mach) and not alt then return self:need("What altitude should " .. id .. " have?") end
+    if ((spd or mach) or s.several) and not alt then return self:need("What altitude should " .. id .. " have?") end
     -- "create ... FL100 250 knots, going to climb": a climb or descent said after the level with no level
     -- of its own is an instruction the creation cannot carry (its level is then the state at creation): ask
     for i = s.trig + 1, s.e - 1 do
@@ -391,6 +405,7 @@ return function(H, f, compass)
     self.subject = id
     self.created = self.created or {}
     self.created[id] = true
+    self.created_values = { alt = alt, fl = fl, spd = spd, mach = mach }
   end
 
   -- CRECONFS acid,type,targetid,dpsi,cpa,tlosh,[dh,tlosv]: an intruder of a new callsign and a type,

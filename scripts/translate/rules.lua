@@ -139,10 +139,16 @@ return function(intent, rule, words)
         local r2 = after and g:refs_in(after, after + 1, "aircraft")[1]
         if r2 and not r2.exists and r2.b == after then ty = r2 end  -- (the creation fires after the callsign)
       end
-      -- ("Need a slow one ...:", "One more:": "one" standing for an aircraft is no value)
-      local values = 0
+      -- ("Need a slow one ...:", "One more:": "one" standing for an aircraft is no value; nor is the count of
+      -- the aircraft that follow, "two aircraft please:", "make two test aircraft:")
+      local values, new = 0, 0
+      for _, r in ipairs(colon > 0 and g:refs_in(colon + 1, #g.t + 1, "aircraft") or {}) do
+        if not r.exists then new = new + 1 end
+      end
       for _, q in ipairs(colon > 0 and g:quantities(1, colon) or {}) do
-        if not (q.kind == "plain" and g:word(q.b, "one") and q.e == q.b + 1) then values = values + 1 end
+        local count = q.kind == "plain" and q.value == new
+          and (g:word(q.e, "@counted_aircraft") or g:word(q.e + 1, "@counted_aircraft"))
+        if not (q.kind == "plain" and g:word(q.b, "one") and q.e == q.b + 1) and not count then values = values + 1 end
       end
       -- ("an intruder for KLM77: XY22 A320 ...": the aircraft the new one is set up against labels it)
       local named = 0

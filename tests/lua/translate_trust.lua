@@ -2642,3 +2642,22 @@ do
       "an unknown name asks")
   end
 end
+
+-- Several aircraft created in one request: a count of them before a colon ("two aircraft please: ...") is
+-- no value when it matches the callsigns after it, "and then" opens the next one, values after "both" at
+-- the end are every one's, "same level and speed" are the ones created before it; one left without a
+-- level asks
+do
+  local _, ex = scene({})
+  check_eq(ex("two aircraft please: AB1 A320 at 51.0 3.0 heading 045 FL200 250, and AB2 B738 at 51.5 3.0 heading 135 FL220 260"),
+    "CRE AB1 A320 51 3 45 FL200 250 ; CRE AB2 B738 51.5 3 135 FL220 260")
+  check(ex("3 aircraft: AB1 A320 at 51.0 3.0 heading 045 FL200 250"):match("^ASK") ~= nil, "three announced, one given")
+  check_eq(ex("create AB1 A320 at 51.0 3.0 hdg 045 FL200 250 and then AB2 B738 at 51.5 3.0 hdg 135 FL220 260"),
+    "CRE AB1 A320 51 3 45 FL200 250 ; CRE AB2 B738 51.5 3 135 FL220 260")
+  check_eq(ex("two aircraft crossing: AB1 A320 at 51.0 3.0 heading 090 and AB2 A320 at 50.7 3.5 heading 000, both FL250 at 270 kts"),
+    "CRE AB1 A320 51 3 90 FL250 270 ; CRE AB2 A320 50.7 3.5 0 FL250 270")
+  check_eq(ex("create AB1, an A320, at 51.0 3.0 heading 090 at FL250 and 270 knots, and AB2, also an A320, at 51.0 4.0 heading 270, same level and speed"),
+    "CRE AB1 A320 51 3 90 FL250 270 ; CRE AB2 A320 51 4 270 FL250 270")
+  check(ex("create AB1 A320 at 51.0 3.0 heading 090 and AB2 A320 at 50.7 3.5 heading 000 FL250 270 kts"):match("^ASK") ~= nil,
+    "the first one's level unsaid: asked")
+end
