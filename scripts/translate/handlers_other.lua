@@ -2080,6 +2080,13 @@ return function(H, f, compass)
         return self:emit("ECHO " .. self:raw(i + 1, s.e))
       end
     end
+    -- "a note on screen saying baseline run", "a message that says trial 2": the words after, as typed
+    local saying = self:find_word(s.trig + 1, s.e, "saying says reading")
+    if saying + 1 < s.e then
+      self:explain(s.trig + 1, saying + 1)
+      self:mark_used(saying + 1, s.e)
+      return self:emit("ECHO " .. self:raw(saying + 1, s.e))
+    end
     -- "print baseline no reso to the console": the words between the verb and where they go, as typed
     local to = self:find_word(s.trig + 1, s.e, "to on")
     local at = self:word(to + 1, "the") and to + 2 or to + 1

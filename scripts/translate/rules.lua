@@ -1036,12 +1036,18 @@ return function(intent, rule, words)
   rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "aircraft") and not g:word_in(i + 1, #g.t + 1, "log") end }
   rule { "print", "echo" }
-  -- "put a note in the log: conflict 3 injected", "log: run 2 started": the text after the colon
-  rule { "note log", "echo", when = function(g, i)
+  -- "put a note in the log: conflict 3 injected", "log: run 2 started", "write a message for the participant:
+  -- Block 1 finished": the text after the colon
+  rule { "note log message", "echo", when = function(g, i)
     for k = i + 1, math.min(#g.t, i + 4) do
       if g.t[k].kind == "punct" and g.t[k].text == ":" then return k < #g.t end
     end
     return false
+  end }
+  -- "put a note on screen saying baseline run", "show a message that says trial 2": the text after "saying"
+  rule { "note message", "echo", when = function(g, i)
+    local k = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "saying says reading")
+    return k < #g.t and (not g:word(k, "says") or g:word(k - 1, "that which"))
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }

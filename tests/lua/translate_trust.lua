@@ -2661,3 +2661,13 @@ do
   check(ex("create AB1 A320 at 51.0 3.0 heading 090 and AB2 A320 at 50.7 3.5 heading 000 FL250 270 kts"):match("^ASK") ~= nil,
     "the first one's level unsaid: asked")
 end
+
+-- A message or note for the screen: the text after "message ...:" or after "saying" / "that says", as typed;
+-- "saying" with nothing after it asks
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("could you write a message for the pilots: break in five minutes"), "ECHO break in five minutes")
+  check_eq(ex("put a note on the screen saying trial 4 of 8"), "ECHO trial 4 of 8")
+  check_eq(ex("display a message that says conflict block starts"), "ECHO conflict block starts")
+  check(ex("leave a message saying"):match("^ASK") ~= nil, "no text: asked")
+end
