@@ -1047,7 +1047,7 @@ return function(intent, rule, words)
   -- "put a note on screen saying baseline run", "show a message that says trial 2": the text after "saying"
   rule { "note message", "echo", when = function(g, i)
     local k = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "saying says reading")
-    return k < #g.t and (not g:word(k, "says") or g:word(k - 1, "that which"))
+    return k < #g.t and g:word(k, "saying says reading") and (not g:word(k, "says") or g:word(k - 1, "that which"))
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }

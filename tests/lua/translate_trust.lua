@@ -2666,7 +2666,8 @@ end
 -- "saying" with nothing after it asks
 do
   local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
-  check_eq(ex("could you write a message for the pilots: break in five minutes"), "ECHO break in five minutes")
+  check_eq(ex("could you write a message for the pilots: break after this run"), "ECHO break after this run")
+  check_eq(ex("observers, note the conflict between KLM77 and the tanker"):match("^ECHO"), nil)
   check_eq(ex("put a note on the screen saying trial 4 of 8"), "ECHO trial 4 of 8")
   check_eq(ex("display a message that says conflict block starts"), "ECHO conflict block starts")
   check(ex("leave a message saying"):match("^ASK") ~= nil, "no text: asked")
