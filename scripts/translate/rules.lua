@@ -1011,6 +1011,7 @@ return function(intent, rule, words)
   end }
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
+  rule { "step", "dt", next = "size length" }  -- "step size 0.5 s": the simulation's time step, a noun
   -- "set the step to 0.2 s", "the simulation step 0.1": the step as a noun (the verb steps the clock on)
   rule { "step", "dt", prev = { 1, "the a sim simulation integration update" }, not_near = { 3, "forward ahead on" } }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation

@@ -2672,3 +2672,11 @@ do
   check_eq(ex("display a message that says conflict block starts"), "ECHO conflict block starts")
   check(ex("leave a message saying"):match("^ASK") ~= nil, "no text: asked")
 end
+
+-- "step size" / "step length" is the simulation's time step (DT), a noun, never a jump of the clock
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("step size 0.25 s"), "DT 0.25")
+  check_eq(ex("make the step length 1 second"), "DT 1")
+  check(ex("step size please"):match("^ASK") ~= nil, "no value: asked")
+end
