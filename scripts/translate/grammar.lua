@@ -1445,6 +1445,13 @@ function G:segments(b, e)
         end
       end
     end
+    -- "create NKS1021 A320 ... and then UPS2951 B763 at ...": a new callsign and its type after "then"
+    -- open another creation, its values the creation's (M:create makes each aircraft)
+    if last and thn and last.intent == "create" and this.value then
+      for _, r in ipairs(self:refs_in(thn_at + 1, tr.pos, "aircraft")) do
+        merged = merged or (not r.exists and #self:refs_in(r.e, math.min(tr.pos, r.e + 2), "type") > 0)
+      end
+    end
     if not merged then
       -- an aircraft named just before the instruction word is its subject, not
       -- the previous instruction's ("EZY45 turn left 300 and AFR1234 descend")
@@ -2996,11 +3003,24 @@ for _, c in ipairs(lexicon.not_simulated) do
 end
 
 -- True when token i is a navaid's kind said after its name ("relocate to TKT VOR at FL300", "direct
--- Minsk NDB"): the place, no approach (a kind followed by "approach", "TKT VOR approach", is one).
+-- Minsk NDB", "over the Spijkerboor VOR at FL180"): the place, no approach (a kind followed by
+-- "approach", "TKT VOR approach", is one). The name is an ident read as a waypoint, or the one or two
+-- words before the kind that name a navaid of that kind anywhere in the navdata.
 function G:navaid_named_before(i)
   if not self:word(i, "@navaid_kinds") or self:word(self:skip_fillers(i + 1), "approach") then return false end
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" and r.b < i and r.e >= i and not self:word(r.b, "@navaid_kinds") then return true end
+  end
+  local named, kind = self.world.navaids_named, lexicon.navaid_types[self.t[i].text]
+  local function name_word(k)
+    local t = self.t[k]
+    return t and t.kind == "word" and t.alpha and not t.keyword and not t.filler and not t.number_word
+  end
+  local phrase = ""
+  for k = i - 1, math.max(1, i - 2), -1 do
+    if not named or not name_word(k) then break end
+    phrase = self.t[k].text .. (phrase == "" and "" or " " .. phrase)
+    if #named(phrase, 0, 0, math.huge, kind) > 0 then return true end
   end
   return false
 end

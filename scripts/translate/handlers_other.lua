@@ -47,18 +47,19 @@ return function(H, f, compass)
       end
     end
     if #starts <= 1 then return self:create_one(s, s.b) end
-    -- "..., both at FL250 and 270 knots": values said after "both", "all" or "each" in the last one's part,
-    -- no aircraft after it, are each one's
-    -- (an aircraft named after it leaves unclear whose values follow: asked)
-    local shared = self:find_word(starts[#starts], s.e, "both all each")
-    if shared == s.e then
-      shared = nil
-    elseif self:has_ref(shared, s.e, "aircraft") or self:has_ref(shared, s.e, "type") then
+    -- values said after "both", "all" or "each" at the end are every new aircraft's ("AAA1 A320 at 53 7
+    -- heading 090 and BBB2 A320 at 52.7 7.5 heading 000, both FL300 at 280 kts"); an aircraft or a type
+    -- named after it leaves unclear whose values follow: asked
+    local last = starts[#starts]
+    local shared = self:find_word(last, s.e, "both all each")
+    if shared < s.e and (self:has_ref(shared, s.e, "aircraft") or self:has_ref(shared, s.e, "type")) then
       return self:need(string.format("Which of the new aircraft do the values after '%s' belong to?", self.t[shared].raw))
     end
     for k, st in ipairs(starts) do
       local b = k == 1 and s.b or st
-      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e, shared = shared, shared_e = s.e }, st)
+      self:create_one({ intent = s.intent, b = b, trig = b, e = starts[k + 1] or s.e, several = true,
+                        shared = k < #starts and shared < s.e and { b = shared, e = s.e } or nil }, st)
+      if self.ask then return end
     end
   end
 
@@ -172,9 +173,7 @@ return function(H, f, compass)
     end
     if not actype and model and self:word_in(s.b, s.e, "type") then actype = model.type end
     local qs = self:quantities(s.b, s.e)
-    for _, q in ipairs(s.shared and self:quantities(s.shared, s.shared_e) or {}) do  -- (said for "both")
-      if q.b >= s.e then qs[#qs + 1] = q end
-    end
+    for _, q in ipairs(s.shared and self:quantities(s.shared.b, s.shared.e) or {}) do qs[#qs + 1] = q end
     -- (values after the type count too: "KLM602 A320, 52.4 6.4, 270 deg, ..." has its instruction word later)
     local lat, lon = position(qs, (types[1] and types[1].e < s.trig and types[1].b > s.b) and types[1].e or s.trig, self)
     local along  -- the aircraft the new one is placed ahead of or behind
@@ -258,6 +257,13 @@ return function(H, f, compass)
     if model and self:word_in(s.b, s.e, "heading hdg") and not hdg then hdg = model.hdg_deg end
     if model and self:word_in(s.b, s.e, "speed") and not spd and not mach then
       if model.sel_mach then mach = model.sel_mach else spd = model.cas_kt end
+    end
+    -- "TEST01 ... at FL300 and 280 knots, and TEST02 ..., same level and speed": the values of the aircraft
+    -- created before it in this request
+    local before = not model and self.created_values
+    if before and self:word_in(s.b, s.e, "same") then
+      if self:word_in(s.b, s.e, "altitude level fl") and not alt then alt, fl = before.alt, before.fl end
+      if self:word_in(s.b, s.e, "speed") and not spd and not mach then spd, mach = before.spd, before.mach end
     end
     -- a position by name: a fix or navaid said as its name ("over LOPIK"), an airport by its name ("at Schiphol");
     -- "the same position as VIR3": that aircraft's (CRE takes an aircraft's id as its position)
@@ -413,7 +419,7 @@ return function(H, f, compass)
     if (spd or mach or alt) and not hdg then
       return self:need("What heading should " .. id .. " have?")
     end
-    if (spd or mach) and not alt then return self:need("What altitude should " .. id .. " have?") end
+    if ((spd or mach) or s.several) and not alt then return self:need("What altitude should " .. id .. " have?") end
     -- "create ... FL100 250 knots, going to climb": a climb or descent said after the level with no level
     -- of its own is an instruction the creation cannot carry (its level is then the state at creation): ask
     for i = s.trig + 1, s.e - 1 do
@@ -436,6 +442,7 @@ return function(H, f, compass)
     self.subject = id
     self.created = self.created or {}
     self.created[id] = true
+    self.created_values = { alt = alt, fl = fl, spd = spd, mach = mach }
   end
 
   -- CRECONFS acid,type,targetid,dpsi,cpa,tlosh,[dh,tlosv]: an intruder of a new callsign and a type,
@@ -1825,31 +1832,58 @@ return function(H, f, compass)
     end
     return code
   end
-  -- An airport's ICAO code typed in lower case straight after the instruction word ("orig eidw", "dest
-  -- egcc", "dest: einn"): a word of four letters, no English squawk knows, that names an airport of the
-  -- navdata (upper-case codes are names already). Marked used; nil when none.
-  local function typed_code(self, s)
+  -- "orig eidw", "dest: einn", "destination to eham": an airport's ICAO code typed in lower case straight
+  -- after the instruction word ("to", "from", "is", "as" or punctuation between or not): a word of four
+  -- letters, no English squawk knows, that names an open airport of the navdata (upper-case codes are
+  -- names already). Marked used; nil when none.
+  local function typed_airport(self, s)
     local class = self.world.airport_class
     local k = s.trig + 1
     while k < s.e and (self:word(k, "to from is as") or self.t[k].kind == "punct") do k = k + 1 end
     local t = self.t[k]
     if not class or k >= s.e or t.kind ~= "word" or not t.raw:match("^%l%l%l%l$") or self.u:used(k)
-        or self:known_word(k) or (class(t.raw:upper()) or "") == "" then
+        or self:known_word(k) then
       return nil
     end
+    local code = t.raw:upper()
+    local c = class(code) or ""
+    if c == "" or c == "CLOSED" then return nil end
     self:mark_used(k, k + 1)
     self:explain(k, k + 1)
-    return t.raw:upper()
+    return code
+  end
+  -- "Heathrow as its destination": the first token of the place said before "as (its|the)" and the
+  -- instruction word at `trig` (at most four words, after "and", "then", "with" or punctuation), and the
+  -- token of "as"; nil when the word stands otherwise
+  local function placed_as(self, trig)
+    local as = self:word(trig - 1, "its the") and trig - 2 or trig - 1
+    if not self:word(as, "as") then return nil end
+    local b = as
+    while b > as - 4 and self.t[b - 1] and self.t[b - 1].kind == "word" and not self:word(b - 1, "and then with")
+        and not self.u:used(b - 1) do
+      b = b - 1
+    end
+    if b < as then return b, as end
+    return nil
   end
   local function dest_orig(self, s, cmd, what)
     local id = self:acid(s, "get it")
     if not id then return end
+    -- "Amsterdam as its origin and Heathrow as its destination": each place before its own word
+    local b, as = nil, nil
+    if s.b == s.trig then b, as = placed_as(self, s.trig) end
+    local nb = s.e <= #self.t and self:word(s.e, "destination dest origin orig") and placed_as(self, s.e)
+    if b or (nb and nb > s.trig) then
+      if as then self:explain(as, s.trig) end
+      s = { b = b or s.b, trig = s.trig, e = nb and nb > s.trig and nb or s.e, intent = s.intent }
+    end
     local w = self:refs_in(s.b, s.e, "waypoint")
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = self:state(id)
-    -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant)
-    local spelled = spelled_airport(self, s) or typed_code(self, s)
+    -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant; one typed in lower
+    -- case straight after the word, "orig eddf, dest eham", is that airport)
+    local spelled = spelled_airport(self, s) or typed_airport(self, s)
     local near = spelled or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
     -- (a part of a name only near the aircraft: "Madrid" anywhere is SKMA, in Colombia)
@@ -2152,6 +2186,16 @@ return function(H, f, compass)
   function m:time_mult(s)
     local q = first(self, s, { mult = true, plain = true })
     if q then return self:emit("DTMULT " .. f.num(q.value)) end
+    -- "pause, then 3x speed", "and then 5 times faster": a factor said before the instruction word, in
+    -- its clause (no comma, "then" or "and" between), no other instruction's
+    local k = s.b - 1
+    while k >= 1 and self.t[k].kind ~= "punct" and not self:word(k, "then and") and not self.u:used(k) do k = k - 1 end
+    for _, p in ipairs(self:quantities(k + 1, s.b)) do
+      if p.kind == "mult" and not self.taken[p.b] then
+        self:take(p)
+        return self:emit("DTMULT " .. f.num(p.value))
+      end
+    end
     -- "sim speed x2": the factor glued to its x
     for i = s.b, s.e - 1 do
       local x = self.t[i].kind == "word" and tonumber(self.t[i].text:match("^x(%d+%.?%d*)$") or "")
@@ -2235,6 +2279,13 @@ return function(H, f, compass)
         self:mark_used(i + 1, s.e)
         return self:emit("ECHO " .. self:raw(i + 1, s.e))
       end
+    end
+    -- "a note on screen saying baseline run", "a message that says trial 2": the words after, as typed
+    local saying = self:find_word(s.trig + 1, s.e, "saying says reading")
+    if saying + 1 < s.e then
+      self:explain(s.trig + 1, saying + 1)
+      self:mark_used(saying + 1, s.e)
+      return self:emit("ECHO " .. self:raw(saying + 1, s.e))
     end
     -- "print baseline no reso to the console": the words between the verb and where they go, as typed
     local to = self:find_word(s.trig + 1, s.e, "to on")

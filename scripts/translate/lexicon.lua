@@ -552,7 +552,10 @@ return {
                     kinshasa = "ndjili", brazzaville = "maya maya", luanda = "luanda 4 de fevereiro",
                     niamey = "diori hamani", cotonou = "cadjehoun", bamako = "senou", libreville = "leon m ba",
                     yaounde = "yaounde nsimalen", monrovia = "monrovia roberts", freetown = "freetown lungi",
-                    ["n'djamena"] = "ndjamena hassan djamous", ndjamena = "ndjamena hassan djamous" },
+                    ["n'djamena"] = "ndjamena hassan djamous", ndjamena = "ndjamena hassan djamous",
+                    -- (Belgium, Switzerland and New England: the city's airport named after a place beside it)
+                    charleroi = "brussels south", ostend = "oostende", antwerp = "deurne", basel = "bale mulhouse",
+                    boston = "general edward lawrence logan" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")

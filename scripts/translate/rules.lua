@@ -23,6 +23,7 @@
 -- words "CMD" "text"   more words people use for a registry command, for
 -- the retrieval documents of the LLM modes (checked against the registry).
 return function(intent, rule, words)
+  local CITY_AIRPORTS = require("translate.lexicon").city_airports
   intent "alt" { cmd = "ALT", args = { "acid", "alt", "vspd" }, handler = "altitude", value = true, family = "alt" }
   intent "maintain" { cmds = { "ALT", "SPD", "HDG" }, handler = "maintain", value = true, family = "alt" }
   intent "spd" { cmd = "SPD", args = { "acid", "spd" }, handler = "speed", value = true }
@@ -142,10 +143,16 @@ return function(intent, rule, words)
         local r2 = after and g:refs_in(after, after + 1, "aircraft")[1]
         if r2 and not r2.exists and r2.b == after then ty = r2 end  -- (the creation fires after the callsign)
       end
-      -- ("Need a slow one ...:", "One more:": "one" standing for an aircraft is no value)
-      local values = 0
+      -- ("Need a slow one ...:", "One more:": "one" standing for an aircraft is no value; nor is the count of
+      -- the aircraft that follow, "two aircraft please:", "make two test aircraft:")
+      local values, new = 0, 0
+      for _, r in ipairs(colon > 0 and g:refs_in(colon + 1, #g.t + 1, "aircraft") or {}) do
+        if not r.exists then new = new + 1 end
+      end
       for _, q in ipairs(colon > 0 and g:quantities(1, colon) or {}) do
-        if not (q.kind == "plain" and g:word(q.b, "one") and q.e == q.b + 1) then values = values + 1 end
+        local count = q.kind == "plain" and q.value == new
+          and (g:word(q.e, "@counted_aircraft") or g:word(q.e + 1, "@counted_aircraft"))
+        if not (q.kind == "plain" and g:word(q.b, "one") and q.e == q.b + 1) and not count then values = values + 1 end
       end
       -- ("an intruder for KLM77: XY22 A320 ...": the aircraft the new one is set up against labels it)
       local named = 0
@@ -333,7 +340,9 @@ return function(intent, rule, words)
   rule { "fast faster", "dtmult", prev = { 2, "twice thrice times x" } }  -- "run twice as fast"
   rule { "multiplier", "dtmult" }
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
-  rule { "fast", false, prev = { 4, "run advance" } }  -- "run the simulation fast for 30 seconds"
+  -- "run the simulation fast for 30 seconds" (not "run it and fast forward 3 minutes": an instruction of its own)
+  rule { "fast", false, prev = { 4, "run advance" },
+         when = function(g, i) return not (g:word(i - 1, "and") and g:word(i + 1, "forward")) end }
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
   rule { "slow fast", false, prev = { 3, "is it's are was isn't" } }  -- "the Shuttle is a bit slow": a description
@@ -748,14 +757,27 @@ return function(intent, rule, words)
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata ("divert Ryanair
   -- 23AB to Eindhoven", "KLM1234 divert to EHRD": diverted to an airport, the new destination)
-  rule { "send divert diverting", "dest", when = function(g, i)
+  -- ("route VIR9 to Heathrow", "send him to Charleroi": a city said for its airport, lexicon.city_airports,
+  -- is an airport too)
+  local function sent_to_airport(g, i)
     local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
     if g:word(to - 1, "straight direct directly") then return false end  -- ("send it straight to Barcelona")
     for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
       if r.name:match("^%a%a%a%a$") then return true end
     end
     local t, named = g.t[to + 1], g.world.airports_named
-    return named ~= nil and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4 and #named(t.text) > 0
+    return named ~= nil and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4
+      and (#named(t.text) > 0 or CITY_AIRPORTS[t.text] ~= nil)
+  end
+  rule { "send divert diverting", "dest", when = sent_to_airport }
+  -- "route VIR9 to Heathrow", "reroute the Air France to Lyon": the aircraft straight after the verb, then
+  -- "to" and an airport ("route DAL88 via MERIT ..." lists waypoints)
+  rule { "route reroute", "dest", when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
+      if r.b == k and g:word(r.e, "to") then return sent_to_airport(g, r.e - 1) end
+    end
+    return false
   end }
   -- "create KL207 ... and send it to ARTIP": a waypoint (no airport) for the aircraft just created
   rule { "send", "addwpt", next = "it", when = function(g, i)
@@ -963,6 +985,12 @@ return function(intent, rule, words)
   -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
   rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  -- "run it and fast forward 3 minutes", "run the sim and ff 60 s": the clock started, then moved on
+  rule { "run", "op", when = function(g, i)
+    local k = i + 1
+    if g:word(k, "the") and g:word(k + 1, "@sim") then k = k + 2 elseif g:word(k, "it @sim") then k = k + 1 end
+    return g:word(k, "and") and g:word(k + 1, "fast ff")
+  end }
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
@@ -1066,6 +1094,7 @@ return function(intent, rule, words)
   end }
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
+  rule { "step", "dt", next = "size length" }  -- "step size 0.5 s": the simulation's time step, a noun
   -- "set the step to 0.2 s", "the simulation step 0.1": the step as a noun (the verb steps the clock on)
   rule { "step", "dt", prev = { 1, "the a sim simulation integration update" }, not_near = { 3, "forward ahead on" } }
   -- "reset the protected zone to 5 nm": a setting set again, not the simulation
@@ -1099,12 +1128,18 @@ return function(intent, rule, words)
   rule { "print", "echo" }
   -- "note to self: ...", "note for me: ...": the experimenter's own note, no text for the log
   rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }
-  -- "put a note in the log: conflict 3 injected", "log: run 2 started": the text after the colon
-  rule { "note log", "echo", when = function(g, i)
+  -- "put a note in the log: conflict 3 injected", "log: run 2 started", "write a message for the participant:
+  -- Block 1 finished": the text after the colon
+  rule { "note log message", "echo", when = function(g, i)
     for k = i + 1, math.min(#g.t, i + 4) do
       if g.t[k].kind == "punct" and g.t[k].text == ":" then return k < #g.t end
     end
     return false
+  end }
+  -- "put a note on screen saying baseline run", "show a message that says trial 2": the text after "saying"
+  rule { "note message", "echo", when = function(g, i)
+    local k = g:find_word(i + 1, math.min(#g.t + 1, i + 6), "saying says reading")
+    return k < #g.t and g:word(k, "saying says reading") and (not g:word(k, "says") or g:word(k - 1, "that which"))
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }

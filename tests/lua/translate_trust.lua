@@ -3097,3 +3097,98 @@ do
   check_eq(ex("create KZR32 a three twenty neo at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR32 A20N 52.5 4.5 290 FL150 250")
   check_eq(ex("create KZR33 Airbus 320 at 52.5 4.5 heading 290 FL150 250 knots"), "CRE KZR33 A320 52.5 4.5 290 FL150 250")
 end
+-- A navaid said by its name and its kind ("over the Hamburg VOR at FL120") is the place, never an approach
+-- clearance; a name that no navaid of that kind bears places nothing
+do
+  local nav, ex = navscene({}, "navaids by name and kind")
+  if nav then
+    check_eq(ex("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots"),
+      "CRE DLH42 A320 LAM 180 FL240 280")
+    check_eq(ex("new aircraft KLM5 B738 sitting on the Nicky VOR, flight level 200, heading 270, 260 kts"),
+      "CRE KLM5 B738 NIK 270 FL200 260")
+    check(ex("create XY12 A320 above the Lambourne NDB at FL100 heading 090 250 kts"):match("^ASK") ~= nil,
+      "no NDB bears the name: asked")
+  end
+end
+
+-- "send/route/reroute X to" an airport said by its name or its city's (lexicon.city_airports) is its
+-- destination; a fix after "to" is no destination, and "route X via A and on to B" lists the route first
+do
+  local nav, ex = navscene({ "CRE DAL88 A321 41.5 -71.5 045 FL200 280", "CRE RYR4TK B738 50.8 4.0 135 FL240 270" },
+    "destinations by city")
+  if nav then
+    check_eq(ex("please send DAL88 to Boston"), "DEST DAL88 KBOS")
+    check_eq(ex("reroute DAL88 to Boston"), "DEST DAL88 KBOS")
+    check_eq(ex("route RYR4TK to Charleroi please"), "DEST RYR4TK EBCI")
+    check_eq(ex("Ryanair four tango kilo, send him to Ostend"), "DEST RYR4TK EBOS")
+    check_eq(ex("route DAL88 to MERIT"):match("^ASK") ~= nil, true)
+    check_eq(ex("route DAL88 via MERIT and on to Boston"), "ADDWPT DAL88 MERIT ; DEST DAL88 KBOS")
+  end
+end
+
+-- The clock in a list of steps: a factor said before its word after "then" ("pause, then 3x speed") is the
+-- rate, and "run it and fast forward N" starts the clock and moves it on; "run it fast for N" stays one jump
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("freeze it, set seed 7, then 4x speed"), "HOLD ; SEED 7 ; DTMULT 4")
+  check_eq(ex("pause and then 2 times speed please"), "HOLD ; DTMULT 2")
+  check_eq(ex("right, run it and fast forward 90 seconds"), "OP ; FF 90")
+  check_eq(ex("run the sim and ff 2 min"), "OP ; FF 120")
+  check_eq(ex("run the simulation fast for 45 seconds"), "FF 45")
+  check(ex("pause, then speed"):match("^ASK") ~= nil, "no factor said: asked")
+end
+
+-- Destinations and origins as researchers type them: an ICAO code in lower case straight after the word
+-- ("orig eddf, dest eham"), and each place said before "as its origin/destination"; an unknown name asks
+do
+  local nav, ex = navscene({ "CRE KLM601 B738 51.0 6.0 300 FL250 280" }, "airports typed and said as")
+  if nav then
+    check_eq(ex("KLM601 orig eddf, dest eham"), "ORIG KLM601 EDDF ; DEST KLM601 EHAM")
+    check_eq(ex("KLM601 destination is ebbr"), "DEST KLM601 EBBR")
+    check(ex("KLM601 destination lane"):match("^ASK") ~= nil, "a word that is no airport code asks")
+    check_eq(ex("give KLM601 Gatwick as its origin and Heathrow as its destination"),
+      "ORIG KLM601 EGKK ; DEST KLM601 EGLL")
+    check_eq(ex("KLM601 should get a route via SPY and Eindhoven as its destination"),
+      "ADDWPT KLM601 SPY ; DEST KLM601 EHEH")
+    check(ex("give KLM601 Gatwick as its origin and Frobnitz as its destination"):match("^ASK") ~= nil,
+      "an unknown name asks")
+  end
+end
+
+-- Several aircraft created in one request: a count of them before a colon ("two aircraft please: ...") is
+-- no value when it matches the callsigns after it, "and then" opens the next one, values after "both" at
+-- the end are every one's, "same level and speed" are the ones created before it; one left without a
+-- level asks
+do
+  local _, ex = scene({})
+  check_eq(ex("two aircraft please: AB1 A320 at 51.0 3.0 heading 045 FL200 250, and AB2 B738 at 51.5 3.0 heading 135 FL220 260"),
+    "CRE AB1 A320 51 3 45 FL200 250 ; CRE AB2 B738 51.5 3 135 FL220 260")
+  check(ex("3 aircraft: AB1 A320 at 51.0 3.0 heading 045 FL200 250"):match("^ASK") ~= nil, "three announced, one given")
+  check_eq(ex("create AB1 A320 at 51.0 3.0 hdg 045 FL200 250 and then AB2 B738 at 51.5 3.0 hdg 135 FL220 260"),
+    "CRE AB1 A320 51 3 45 FL200 250 ; CRE AB2 B738 51.5 3 135 FL220 260")
+  check_eq(ex("two aircraft crossing: AB1 A320 at 51.0 3.0 heading 090 and AB2 A320 at 50.7 3.5 heading 000, both FL250 at 270 kts"),
+    "CRE AB1 A320 51 3 90 FL250 270 ; CRE AB2 A320 50.7 3.5 0 FL250 270")
+  check_eq(ex("create AB1, an A320, at 51.0 3.0 heading 090 at FL250 and 270 knots, and AB2, also an A320, at 51.0 4.0 heading 270, same level and speed"),
+    "CRE AB1 A320 51 3 90 FL250 270 ; CRE AB2 A320 51 4 270 FL250 270")
+  check(ex("create AB1 A320 at 51.0 3.0 heading 090 and AB2 A320 at 50.7 3.5 heading 000 FL250 270 kts"):match("^ASK") ~= nil,
+    "the first one's level unsaid: asked")
+end
+
+-- A message or note for the screen: the text after "message ...:" or after "saying" / "that says", as typed;
+-- "saying" with nothing after it asks
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("could you write a message for the pilots: break after this run"), "ECHO break after this run")
+  check_eq(ex("observers, note the conflict between KLM77 and the tanker"):match("^ECHO"), nil)
+  check_eq(ex("put a note on the screen saying trial 4 of 8"), "ECHO trial 4 of 8")
+  check_eq(ex("display a message that says conflict block starts"), "ECHO conflict block starts")
+  check(ex("leave a message saying"):match("^ASK") ~= nil, "no text: asked")
+end
+
+-- "step size" / "step length" is the simulation's time step (DT), a noun, never a jump of the clock
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("step size 0.25 s"), "DT 0.25")
+  check_eq(ex("make the step length 1 second"), "DT 1")
+  check(ex("step size please"):match("^ASK") ~= nil, "no value: asked")
+end
