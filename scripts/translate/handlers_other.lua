@@ -471,7 +471,7 @@ return function(H, f, compass)
       local icao, e, codes = self:airline_at(i)
       local fits = not target and icao and self:word(i - 1, "the") and self:airline_fleet(icao, codes) or {}
       if #fits == 1 then
-        target = fits[1]
+        target, target_e = fits[1], e
         self:explain(i, e)
       end
     end

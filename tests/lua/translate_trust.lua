@@ -3192,3 +3192,15 @@ do
   check_eq(ex("make the step length 1 second"), "DT 1")
   check(ex("step size please"):match("^ASK") ~= nil, "no value: asked")
 end
+
+-- CRECONFS against an aircraft named by its airline ("against the Lufthansa"): the target is that airline's
+-- one aircraft and the values after it are read as with a callsign (the airline's words end the target;
+-- this raised a Lua error before); bare values not straight after the target are asked about
+do
+  local _, ex = scene({ "CRE DLH4AX A320 52 4 090 FL300 280", "CRE KLM12 B738 52.5 4.5 180 FL300 280" })
+  check_eq(ex("creconfs against the Lufthansa: INT1, A320, 90 degrees, cpa 1 nm, 200 s"),
+    "CRECONFS INT1 A320 DLH4AX 90 1 200")
+  check_eq(ex("conflict against the Lufthansa: INT2 B738 crossing at 60 degrees, passing 2 miles, los in 300 s"),
+    "CRECONFS INT2 B738 DLH4AX 60 2 300")
+  check(ex("crecons the Lufthansa INT3 A320 270 1 180"):match("^ASK") ~= nil, "bare values apart from the target")
+end
