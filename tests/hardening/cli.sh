@@ -47,7 +47,7 @@ expect "5 --unsafe"          0 "^key=sekrit$" -- env SQUAWK_LLM_API_KEY=sekrit "
 expect "9 SCHEDULE loop"      1 "more than 100000 queued commands at one time" -- "$sq" scn $d/sch2.scn
 expect "9 self-scheduling"   1 "more than 100000 queued commands at one time" -- "$sq" scn $d/sch_grow.scn
 expect "9 DT 1e-300"         1 "is not in \[0.001, 60\] s" -- "$sq" scn $d/dt_tiny.scn
-expect "9 --max-time wall"   1 "after 1 s of wall-clock time \(--max-time\)" -- "$sq" scn $d/sch_grow.scn --until 100000 --max-time 1
+expect "9 --max-time wall"   1 "after 1 s of wall-clock time \(--max-time\)" -- "$sq" scn $d/sch_every.scn --until 100000000 --max-time 1
 expect "9 --max-sim-time"    0 "ran to t = 20.00 s" -- "$sq" scn $d/sch_every.scn --max-sim-time 20
 out=$("$sq" scn $d/dump_fail.scn --dump-json 2>/dev/null); err=$("$sq" scn $d/dump_fail.scn --dump-json 2>&1 >/dev/null)
 if grep -q '"simt"' <<<"$out" && ! grep -q KL9 <<<"$out" && grep -q "ALT KL9 FL100: argument 1: no aircraft 'KL9'" <<<"$err"; then
