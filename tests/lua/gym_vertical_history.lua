@@ -50,3 +50,39 @@ for seed = 0, 2 do
   check_eq(total, last.total_reward)
   check(t > 30, "the episode flies to the runway: " .. t .. " steps")
 end
+
+-- envs/vertical_cr_glide.lua: the history's 45 numbers, then the steps left
+-- at the last step's ground speed (/ 40) and the glide to the runway's height
+-- (action units); the episodes are the history's.
+local glide = squawk.gym.load(squawk.home .. "/envs/vertical_cr_glide.lua")
+check_eq(glide.id, base.id)
+size = 0
+for _, slice in ipairs(glide.observation) do size = size + slice.size end
+check_eq(size, 47)
+for seed = 3, 4 do
+  local oh, og = hist:reset(seed), glide:reset(seed)
+  check_eq(#og, 47)
+  for i = 1, 45 do check_eq(og[i], oh[i]) end
+  check_eq(og[46], 0, "no ground speed at reset"); check_eq(og[47], 0)
+  local t, th, tg = 0, false, false
+  repeat
+    t = t + 1
+    local a = act(oh, t)
+    local nh, rh, uh
+    nh, rh, th, uh = hist:step(a)
+    local ng, rg, ug
+    ng, rg, tg, ug = glide:step(a)
+    check_eq(rg, rh, "reward, seed " .. seed .. " step " .. t); check_eq(tg, th); check_eq(ug, uh)
+    for i = 1, 45 do check_eq(ng[i], nh[i]) end
+    local runway_km, alt = 100 + 200 * ng[17], 1500 + 3000 * ng[1]
+    if runway_km > 0 then
+      -- 4.2-5.4 km a step (the ground speed changes with altitude): the steps left
+      check(ng[46] * 40 > runway_km / 5.4 and ng[46] * 40 < runway_km / 4.2, "steps left, step " .. t)
+      -- flying the glide for the steps left reaches the runway's height
+      check_near(alt + ng[47] * 12.5 * 30 * ng[46] * 40, 0, 1e-6, "glide, step " .. t)
+      check(ng[47] < 0 or alt <= 0, "a glide down while airborne: " .. ng[47])
+    end
+    oh = nh
+  until th or uh
+  check_eq(t > 30, true)
+end
