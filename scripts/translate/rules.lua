@@ -1027,6 +1027,8 @@ return function(intent, rule, words)
   rule { "run", "dtmult", near = { 4, "times x" } }
   rule { "run", "dtmult", near = { 4, "@multipliers" } }  -- "run it at twice real time"
   rule { "dtmult", "dtmult" }
+  -- "start the next exercise from file munich_arrivals": a scenario file to load (IC), not the clock
+  rule { "start", "ic", near = { 6, "file" } }
   rule { "start", "op", near = { 3, "@sim" } }
   rule { "run", false, when = function(g, i)  -- "run in fast time": the fast time is the instruction
     local k = g:find_word(i + 1, i + 4, "fast")
@@ -1180,6 +1182,11 @@ return function(intent, rule, words)
   -- "the look-ahead time for conflict detection", "the radius for resolution": the setting's owner
   rule { "detection resolution", false, prev = { 3, "for of" }, when = function(g, i)
     return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
+  end }
+  -- "conflict detection look ahead five minutes": detection names the look-ahead's owner, no switch (one is
+  -- said with an on or off word: "detection on, look ahead 5 minutes")
+  rule { "detection asas cd", false, near = { 2, "look lookahead dtlook" }, when = function(g, i)
+    return not g:word_in(math.max(1, i - 3), math.min(#g.t + 1, i + 4), "@on @off")
   end }
   rule { "detection asas cdmethod cd", "asas" }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
