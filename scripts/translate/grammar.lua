@@ -3056,12 +3056,13 @@ function G:navaid_named_before(i)
   return false
 end
 
--- True when the place named just after token i ends the request ("keep speed 280 until VAKNO", a full
--- stop or question mark after it at most).
+-- True when the place named just after token i, or the distance ("till four DME", "until 10 miles"),
+-- ends the request ("keep speed 280 until VAKNO", a full stop or question mark after it at most).
 function G:said_last(i)
   local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
-  if not r then return false end
-  local k = self:skip_fillers(r.e)
+  local unit = self:find_word(i + 1, math.min(#self.t + 1, i + 4), "dme miles mile nm")
+  if not r and unit > math.min(#self.t, i + 3) then return false end
+  local k = self:skip_fillers(r and r.e or unit + 1)
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   return k > #self.t
 end

@@ -470,6 +470,10 @@ return {
     -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
       last = true },
+    -- "speed 180 knots till four DME", "keep 250 until 10 miles": the same, its end a distance from the runway
+    -- or a navaid
+    { what = "limits that end at a distance", words = "until till", near = { "dme", "miles", "mile", "nm" },
+      after_instruction = true, last = true },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
@@ -660,7 +664,7 @@ return {
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of
   -- not_names and not_simulated
-  spelled = { "fl" },
+  spelled = { "fl", "mvp" },
   -- words of an altimeter setting: an altitude said with one is a level above the sea, no change by
   -- that much ("descend 3000 feet QNH 1008")
   altimeter = { "qnh", "altimeter", "qfe" },

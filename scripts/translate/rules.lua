@@ -864,7 +864,8 @@ return function(intent, rule, words)
     for _, r in ipairs(g.refs) do
       if r.kind == "aircraft" and r.e == i then
         local k = g:word(r.b - 1, "is") and r.b - 2 or r.b - 1
-        return g:word(k, "what what's whats")
+        -- (a spoken callsign's reference may take in the question's words before it: "what is LOT two eight")
+        return g:word(k, "what what's whats") or g:word(r.b, "what what's whats")
       end
     end
     return false
