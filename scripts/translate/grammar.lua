@@ -3683,8 +3683,10 @@ function M.translate(text, world)
   text = spelled_airports(typed_places(written_forms(text), world), world)
   -- type names with their digits said as words, where traffic is created (random traffic too)
   local lower = text:lower()
+  -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen")
   if lower:find("%f[%a]create") or lower:find("%f[%a]spawn") or lower:find("%f[%a]generate")
-      or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random") then
+      or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random")
+      or lower:find("%f[%a]new%f[%A]") or lower:find("%f[%a]set up%f[%A]") or lower:find("%f[%a]put%f[%A]") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
   local apart

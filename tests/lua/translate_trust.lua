@@ -3275,3 +3275,41 @@ do
   check(ex("Swiss one five three zero, when reaching increase speed two eight zero"):match("^ASK") ~= nil,
     "no level to reach: asked")
 end
+
+-- "what is <callsign said in words> doing" shows the aircraft (POS), also when the callsign's reference takes in
+-- the question's words
+do
+  local _, ex = scene({ "CRE LOT28 E195 51.30 20.70 010 FL130 270", "CRE WZZ1WA A321 52.40 19.80 090 FL100 250" })
+  check_eq(ex("what is LOT two eight doing"), "POS LOT28")
+  check_eq(ex("instructor: what is Wizz one whiskey alpha doing"), "POS WZZ1WA")
+end
+
+-- A limit that ends at a distance ("till four DME", "until 10 miles") said last is not simulated: the value is
+-- flown now; anything after it waits for it and is asked about
+do
+  local _, ex = scene({ "CRE EDW12 A320 47.35 9.10 290 FL90 240" })
+  check_eq(ex("Edelweiss one two, reduce speed one seven zero knots until five DME"), "SPD EDW12 170")
+  check_eq(ex("EDW12 maintain 200 knots till 8 miles."), "SPD EDW12 200")
+  check(ex("EDW12 speed 180 till 4 DME then reduce 160"):match("^ASK") ~= nil, "'then' waits")
+end
+
+-- A distance from a navaid said by a two-word name ("ten miles from Zurich East") is ATDIST there
+do
+  local _, ex = navscene({ "CRE EDW12 A320 47.35 9.10 290 FL90 240" }, "distances from two-word navaid names")
+  if ex then
+    check_eq(ex("Edelweiss one two, twelve miles from Zurich East reduce speed two one zero"),
+      "ATDIST EDW12 ZUE 12 SPD EDW12 210")
+  end
+end
+
+-- Type names said as words ("Embraer one ninety five", "A three nineteen", "A three twenty one neo") where traffic
+-- is set up with "new traffic", "set up" or "put" as well as "create"
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("new traffic: KLM88, A three nineteen, at 52.5 4.5, heading 180, FL150, 250 knots"),
+    "CRE KLM88 A319 52.5 4.5 180 FL150 250")
+  check_eq(ex("set up KLM89, Embraer one ninety five, at 52.6 4.6, heading 090, FL120, 240 knots"),
+    "CRE KLM89 E195 52.6 4.6 90 FL120 240")
+  check_eq(ex("put KLM90, A three twenty one neo, at 52.7 4.7, heading 270, FL140, 260 knots"),
+    "CRE KLM90 A21N 52.7 4.7 270 FL140 260")
+end
