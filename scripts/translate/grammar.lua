@@ -1805,6 +1805,11 @@ function G:parse(b, e)
     -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
     -- FL250": a level said as a condition after the speed or heading instructions it holds
     prev_out = #self.out
+    -- "climb four thousand... negative, maintain seven thousand": an instruction that the next one, of its
+    -- family, corrects asks nothing about the value taken back (a climb below the aircraft)
+    local nx = segs[k + 1]
+    local corrected = nx and s.trig < nx.trig and self:word_in(s.trig, nx.trig, "@correction")
+      and same_family(s.intent, nx.intent)
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.
     if k > 1 and #self.out > 0 and self.out[#self.out]:match("^POS ") and self:word(s.trig, "@shown")
@@ -1872,6 +1877,10 @@ function G:parse(b, e)
         self:need("I have " .. table.concat(self.out, " ; ") .. ". When should the last instruction start: '"
           .. self:raw(reached_cut, s0.e) .. "'?")
       end
+    end
+    if corrected and self.ask then
+      self.ask = nil
+      self:explain(s.trig, nx.b)
     end
   end
   self:direct_resumes_nav()
@@ -3056,13 +3065,12 @@ function G:navaid_named_before(i)
   return false
 end
 
--- True when the place named just after token i, or the distance ("till four DME", "until 10 miles"),
--- ends the request ("keep speed 280 until VAKNO", a full stop or question mark after it at most).
+-- True when the place named just after token i ends the request ("keep speed 280 until VAKNO", a full
+-- stop or question mark after it at most).
 function G:said_last(i)
   local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
-  local unit = self:find_word(i + 1, math.min(#self.t + 1, i + 4), "dme miles mile nm")
-  if not r and unit > math.min(#self.t, i + 3) then return false end
-  local k = self:skip_fillers(r and r.e or unit + 1)
+  if not r then return false end
+  local k = self:skip_fillers(r.e)
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   return k > #self.t
 end

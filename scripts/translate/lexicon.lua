@@ -470,10 +470,6 @@ return {
     -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
       last = true },
-    -- "speed 180 knots till four DME", "keep 250 until 10 miles": the same, its end a distance from the runway
-    -- or a navaid
-    { what = "limits that end at a distance", words = "until till", near = { "dme", "miles", "mile", "nm" },
-      after_instruction = true, last = true },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
