@@ -612,6 +612,12 @@ return function(intent, rule, words)
     return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
+  -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM": the same said with "put (in)", the two waypoints
+  -- on either side of "before"/"after"
+  rule { "put", "addwpt", when = function(g, i)
+    local w = g:word(i + 1, "in") and i + 2 or i + 1
+    return g:has_ref(w, w + 1, "waypoint") and g:word(w + 1, "after before") and g:has_ref(w + 2, w + 3, "waypoint")
+  end }
   -- True when a latitude is said straight after word i (its degrees and minutes too: "55 30 North"),
   -- an aircraft that flies is named and no type is (no creation)
   local function degrees_for_flying(g, i)

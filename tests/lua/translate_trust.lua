@@ -3314,3 +3314,13 @@ do
   check_eq(ex("AUA456 descend 9000, correction, climb 9000"), "ALT AUA456 9000")
   check(ex("AUA456 descend 5000... correction, 9000"):match("^ASK AUA456 is at 7000 ft") ~= nil, "still a descent")
 end
+
+-- "put (in) X before/after Y": a waypoint put next to one of the route (ADDWPT), as with "add"; "put in X" with
+-- no place beside it is asked
+do
+  local _, ex = scene({ "DEFWPT ROTAX 47.8 18.6", "DEFWPT ERGAN 47.9 18.9", "CRE WZZ2231 A21N 47.95 18.50 130 FL120 270",
+    "ADDWPT WZZ2231 ERGAN" })
+  check_eq(ex("Wizz two two three one, put in ROTAX before ERGAN"), "ADDWPT WZZ2231 ROTAX,,,,ERGAN")
+  check_eq(ex("WZZ2231 put ROTAX after ERGAN"), "ADDWPT WZZ2231 ROTAX,,,ERGAN")
+  check(ex("Wizz two two three one, put in ROTAX"):match("^ASK") ~= nil, "no place beside it: asked")
+end
