@@ -1805,6 +1805,11 @@ function G:parse(b, e)
     -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
     -- FL250": a level said as a condition after the speed or heading instructions it holds
     prev_out = #self.out
+    -- "climb four thousand... negative, maintain seven thousand": an instruction that the next one, of its
+    -- family, corrects asks nothing about the value taken back (a climb below the aircraft)
+    local nx = segs[k + 1]
+    local corrected = nx and s.trig < nx.trig and self:word_in(s.trig, nx.trig, "@correction")
+      and same_family(s.intent, nx.intent)
     -- "Status of BAW45? Altitude, speed, everything": a bare noun after a
     -- handled instruction names what to show, not a new instruction.
     if k > 1 and #self.out > 0 and self.out[#self.out]:match("^POS ") and self:word(s.trig, "@shown")
@@ -1873,6 +1878,10 @@ function G:parse(b, e)
           .. self:raw(reached_cut, s0.e) .. "'?")
       end
     end
+    if corrected and self.ask then
+      self.ask = nil
+      self:explain(s.trig, nx.b)
+    end
   end
   self:direct_resumes_nav()
   self:destination_not_waypoint()
@@ -1937,10 +1946,14 @@ end
 
 -- True when the instruction opens with a condition that names the value of the
 -- instruction before it, by "there" or "level" and no value of its own ("climb
--- to FL150, and when it gets there, speed it up to 290": ATALT ... FL150 SPD ...).
+-- to FL150, and when it gets there, speed it up to 290": ATALT ... FL150 SPD ...), or by "reaching" alone
+-- ("descend FL60, when reaching reduce speed 210").
 function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
-  return c < s.trig and self:word_in(c + 1, s.trig, "there level lvl") and #self:quantities(c, s.trig) == 0
+  if c >= s.trig or #self:quantities(c, s.trig) > 0 then return false end
+  local verb = self:skip_fillers(c + 1)
+  return self:word_in(c + 1, s.trig, "there level lvl")
+    or (self:word(verb, "reaching") and self:skip_fillers(verb + 1) == s.trig)
 end
 
 -- The same condition said after the instruction it holds, closing its segment ("reduce 180 kts when
@@ -2076,6 +2089,35 @@ function G:at_waypoint(s, spec)
       break
     end
   end
+  -- "at Wagram reduce speed 210", "at Oscar Kilo Lima speed 220", "after NERDU descend FL70": the clause
+  -- opening, after its callsign, with "at" or "after" and a place (no value; a name of three words at most)
+  -- before its instruction word; `opens` is the place's first token. A place said there by its name or spelled in the
+  -- phonetic alphabet is the waypoint of the condition (a spelling that names no waypoint of the aircraft's
+  -- route is asked about, never dropped). After the place is no constraint at it (BlueSky's AT meets the
+  -- value at the waypoint, before it is passed): asked, naming the place.
+  local first = self:skip_fillers(s.b)
+  for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
+  local opens = self:word(first, "at after") and self:skip_fillers(first + 1)
+  if opens and #refs == 0 and opens < s.trig and s.trig < s.e and #self:quantities(opens, s.trig) == 0 then
+    local ids = self:acids(s)
+    local now = #ids == 1 and self:state(ids[1])
+    local letters, k = "", opens
+    while k < s.trig and self.t[k].kind == "word" and lexicon.phonetic[self.t[k].text] do
+      letters, k = letters .. lexicon.phonetic[self.t[k].text], k + 1
+    end
+    local name
+    if #letters >= 2 and k == s.trig then
+      for _, w in ipairs(now and now.route or {}) do name = name or (w:upper() == letters and letters) end
+      if not name then
+        return self:need(string.format("Which waypoint is %s? I heard '%s', which names no waypoint on the route.",
+          letters, self:raw(opens, k)))
+      end
+      self:explain(opens, k)
+    elseif now and s.trig <= opens + 3 then
+      name = self:place_by_name(opens, s.trig, now)
+    end
+    if name then refs = { { b = opens, e = s.trig, name = name } } end
+  end
   for _, r in ipairs(refs) do
     -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200", "put a constraint on AEA44 at ORBIS,
     -- FL250", "at NORKU cross FL200", "at ELDAR speed 250": a constraint at a waypoint
@@ -2088,9 +2130,7 @@ function G:at_waypoint(s, spec)
     -- "SULUR speed constraint 230 kt": the constraint named after the waypoint
     constrained = constrained or self:word_in(r.e, r.e + 3, "constraint constraints restriction")
     -- "at ELDAR speed 250", "Delta 889, at PAPPI maintain 250": "at" opening the clause, after its callsign
-    local first = self:skip_fillers(s.b)
-    for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
-    local opening = self:word(r.b - 1, "at") and r.b - 1 == first
+    local opening = r.b == opens and self:word(first, "at")
     -- ("descend to FL60 and, when it is at RIGNO, reduce to 210 knots", "once it's at RIGNO, speed 210": a
     -- condition of reaching the waypoint, opening its clause, is a constraint there)
     local k = r.b - 2
@@ -2168,10 +2208,10 @@ function G:at_waypoint(s, spec)
         return true
       end
     end
-    if self:word(r.b - 1, "at cross crossing over abeam overhead") and not self:in_reason(r.b) then
-      return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
+    if (self:word(r.b - 1, "at cross crossing over abeam overhead") or r.b == opens) and not self:in_reason(r.b) then
+      return self:need(string.format("Should that happen %s %s? squawk does not translate instructions tied to a "
         .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
-        r.name, r.name))
+        r.b == opens and self.t[first].text or "at", r.name, r.name))
     end
   end
 end
@@ -3185,6 +3225,34 @@ function G:discretion_without_level()
   end
 end
 
+-- "turn left heading 140, then when able direct MABOD": a direct-to left to the pilot's discretion, said with a
+-- heading for the same aircraft, is flown later, when the pilot can; squawk would issue both at once and the
+-- direct-to would end the heading, so the request is asked about.
+function G:direct_when_able()
+  local headed = {}
+  for _, line in ipairs(self.out) do
+    local id = line:match("^HDG (%S+)")
+    if id then headed[id] = true end
+  end
+  local id
+  for _, line in ipairs(self.out) do
+    local to = line:match("^DIRECT (%S+)")
+    if to and headed[to] then id = to end
+  end
+  if not id then return end
+  for i = 1, #self.t do
+    for _, p in ipairs(DISCRETION) do
+      local ok = true
+      for j = 1, #p do ok = ok and self.t[i + j - 1] ~= nil and self.t[i + j - 1].text == p[j] end
+      if ok then
+        self.ask = string.format("Should %s keep its heading until it can go direct? squawk issues both at once, "
+          .. "and the direct-to ends the heading: please give the direct-to when it is due.", id)
+        return
+      end
+    end
+  end
+end
+
 -- True when some unused word of the request (of tokens b..e-1) still starts an instruction.
 function G:any_instruction_in(b, e)
   for i = b, e - 1 do
@@ -3623,8 +3691,10 @@ function M.translate(text, world)
   text = spelled_airports(typed_places(written_forms(text), world), world)
   -- type names with their digits said as words, where traffic is created (random traffic too)
   local lower = text:lower()
+  -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen")
   if lower:find("%f[%a]create") or lower:find("%f[%a]spawn") or lower:find("%f[%a]generate")
-      or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random") then
+      or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random")
+      or lower:find("%f[%a]new%f[%A]") or lower:find("%f[%a]set up%f[%A]") or lower:find("%f[%a]put%f[%A]") then
     text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft)
   end
   local apart
@@ -3695,6 +3765,7 @@ function M.translate(text, world)
   end
   if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end
+  if not g.ask then g:direct_when_able() end
   g:same_again(same)
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then

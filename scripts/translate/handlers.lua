@@ -1094,8 +1094,9 @@ function m:at_distance(s)
       local p = self:word(k, "from of to before") and self:skip_fillers(k + 1)
       local r = p and self:refs_in(p, p + 1, "waypoint")[1]
       local ids = p and self:acids(s) or {}
-      -- ("when 20 miles from Minna descend FL200": a navaid or airport said by its name)
-      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, p + 1, self:state(ids[1])))
+      -- ("when 20 miles from Minna descend FL200", "ten miles from Zurich East descend": a navaid or airport
+      -- said by its name, of one or two words)
+      local name = r and r.name or (p and #ids == 1 and self:place_by_name(p, math.min(s.e, p + 2), self:state(ids[1])))
       if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value

@@ -116,7 +116,10 @@ return {
         "entschuldigung", "gruss", "gott", "servus", "hallo", "danke", "bitte", "guten", "gruezi",
         -- the same in the Nordic and Baltic languages ("Hej, ...", "Tack", "Kiitos", "Labdien", "Paldies")
         "hej", "hei", "moi", "tere", "tack", "takk", "tak", "kiitos", "labdien", "paldies", "labas", "aciu",
-        "aitah", "sveiki" },
+        "aitah", "sveiki",
+        -- the same in the Central European languages ("dobrý den", "dzień dobry", "szia", "dobar dan", "děkuji")
+        "dobry", "dobre", "dobar", "dober", "dzien", "szia", "sziasztok", "szervusz", "czesc", "ahoj", "dekuji",
+        "dakujem", "dziekuje", "dziekujemy", "koszonom", "hvala", "nashledanou", "prosim" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -124,7 +127,8 @@ return {
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
-        "after that", "after this", "at pilot's discretion", "at your discretion", "pilot's discretion",
+        "after that", "after this", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
+        "do widzenia", "do videnia", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me",
@@ -656,7 +660,7 @@ return {
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of
   -- not_names and not_simulated
-  spelled = { "fl" },
+  spelled = { "fl", "mvp" },
   -- words of an altimeter setting: an altitude said with one is a level above the sea, no change by
   -- that much ("descend 3000 feet QNH 1008")
   altimeter = { "qnh", "altimeter", "qfe" },

@@ -612,6 +612,12 @@ return function(intent, rule, words)
     return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
+  -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM": the same said with "put (in)", the two waypoints
+  -- on either side of "before"/"after"
+  rule { "put", "addwpt", when = function(g, i)
+    local w = g:word(i + 1, "in") and i + 2 or i + 1
+    return g:has_ref(w, w + 1, "waypoint") and g:word(w + 1, "after before") and g:has_ref(w + 2, w + 3, "waypoint")
+  end }
   -- True when a latitude is said straight after word i (its degrees and minutes too: "55 30 North"),
   -- an aircraft that flies is named and no type is (no creation)
   local function degrees_for_flying(g, i)
@@ -864,7 +870,8 @@ return function(intent, rule, words)
     for _, r in ipairs(g.refs) do
       if r.kind == "aircraft" and r.e == i then
         local k = g:word(r.b - 1, "is") and r.b - 2 or r.b - 1
-        return g:word(k, "what what's whats")
+        -- (a spoken callsign's reference may take in the question's words before it: "what is LOT two eight")
+        return g:word(k, "what what's whats") or g:word(r.b, "what what's whats")
       end
     end
     return false
@@ -1027,6 +1034,8 @@ return function(intent, rule, words)
   rule { "run", "dtmult", near = { 4, "times x" } }
   rule { "run", "dtmult", near = { 4, "@multipliers" } }  -- "run it at twice real time"
   rule { "dtmult", "dtmult" }
+  -- "start the next exercise from file munich_arrivals": a scenario file to load (IC), not the clock
+  rule { "start", "ic", near = { 6, "file" } }
   rule { "start", "op", near = { 3, "@sim" } }
   rule { "run", false, when = function(g, i)  -- "run in fast time": the fast time is the instruction
     local k = g:find_word(i + 1, i + 4, "fast")
@@ -1180,6 +1189,11 @@ return function(intent, rule, words)
   -- "the look-ahead time for conflict detection", "the radius for resolution": the setting's owner
   rule { "detection resolution", false, prev = { 3, "for of" }, when = function(g, i)
     return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
+  end }
+  -- "conflict detection look ahead five minutes": detection names the look-ahead's owner, no switch (one is
+  -- said with an on or off word: "detection on, look ahead 5 minutes")
+  rule { "detection asas cd", false, near = { 2, "look lookahead dtlook" }, when = function(g, i)
+    return not g:word_in(math.max(1, i - 3), math.min(#g.t + 1, i + 4), "@on @off")
   end }
   rule { "detection asas cdmethod cd", "asas" }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters

@@ -3204,3 +3204,123 @@ do
     "CRECONFS INT2 B738 DLH4AX 60 2 300")
   check(ex("crecons the Lufthansa INT3 A320 270 1 180"):match("^ASK") ~= nil, "bare values apart from the target")
 end
+
+-- A condition at a waypoint opening the clause after the callsign, "at" and the waypoint said by its ident,
+-- spelled in the phonetic alphabet or by its navaid's name: BlueSky's AT constraint there when the waypoint is
+-- on the aircraft's route; a spelling that names no waypoint of the route, a heading there, or an instruction
+-- "after" the place (AT would meet the value before it) is asked about, naming the place (the spelled place was
+-- dropped before: the speed ran at once)
+do
+  local _, ex = scene({ "DEFWPT OKLAB 49.9 13.6", "DEFWPT VEMIS 50.1 14.0", "CRE CSA752 A319 49.85 13.30 050 FL140 280",
+    "ADDWPT CSA752 OKLAB" })
+  check_eq(ex("CSA seven five two, at Oscar Kilo Lima Alpha Bravo reduce speed two two zero"), "AT CSA752 OKLAB SPD 220")
+  check(ex("CSA seven five two, after Oscar Kilo Lima Alpha Bravo descend flight level one two zero")
+    :match("^ASK Should that happen after OKLAB%?") ~= nil, "after the place: asked, naming it")
+  check(ex("CSA seven five two, at Victor Echo Mike India Sierra speed two two zero"):match("^ASK Which waypoint is VEMIS")
+    ~= nil, "a spelled waypoint off the route: asked")
+  check(ex("CSA seven five two, at Oscar Kilo Lima speed two two zero"):match("^ASK") ~= nil, "a spelling of no waypoint")
+  check(ex("CSA seven five two, after OKLAB turn left heading 300"):match("^ASK") ~= nil, "a heading there: asked")
+end
+do
+  local _, ex = navscene({ "CRE AUA123 A320 48.50 15.60 110 FL110 270", "ADDWPT AUA123 WGM" },
+    "a condition at a navaid said by its name")
+  if ex then
+    check_eq(ex("Austrian one two three, at Wagram descend flight level eight zero"), "AT AUA123 WGM ALT FL80")
+  end
+end
+
+-- "when able" / "when ready" before a direct-to said with a heading for the same aircraft: the direct-to is flown
+-- later, when the pilot can; issued at once it would end the heading, so it is asked about. A level or a direct-to
+-- alone "when able" is still given.
+do
+  local _, ex = scene({ "DEFWPT MADOR 48.4 16.9", "CRE EWG8TC A320 48.60 16.70 200 FL100 260", "ADDWPT EWG8TC MADOR" })
+  check(ex("Eurowings eight tango charlie, fly heading one six zero, when ready proceed direct MADOR")
+    :match("^ASK Should EWG8TC keep its heading") ~= nil, "heading now, direct-to later: asked")
+  check_eq(ex("EWG8TC when able direct MADOR"), "DIRECT EWG8TC MADOR")
+  check_eq(ex("EWG8TC direct MADOR, descend FL80 when able"), "DIRECT EWG8TC MADOR ; ALT EWG8TC FL80")
+end
+
+-- "start ... from file X": a scenario file to load (IC, confirmed first), never the clock started (OP); a file
+-- name that is no scenario file is asked for
+do
+  local s, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  local r = graph.translate("start the afternoon exercise from file westbound.scn", { sim = s, mode = "offline" })
+  check_eq(r.confirm and table.concat(r.confirm.commands, " ; "), "IC westbound.scn")
+  check_eq(ex("start the afternoon exercise from file westbound"), "ASK Which scenario file should I load?")
+  check_eq(ex("start the exercise"), "OP")
+end
+
+-- "conflict detection look ahead N minutes": detection names whose look-ahead is set, no switch; with an on or
+-- off word it switches too
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("conflict detection lookahead two minutes"), "DTLOOK 120")
+  check_eq(ex("enable conflict detection, look ahead two minutes"), "ASAS ON ; DTLOOK 120")
+end
+
+-- Greetings and thanks in the Central European languages ("dobrý den", "dzień dobry", "szia", "jó napot",
+-- "děkuji") are courtesy, no words left over
+do
+  local _, ex = scene({ "CRE AUA456 B772 47.70 16.30 350 7000 210" })
+  check_eq(ex("Austrian four five six, dobrý den, climb flight level one two zero"), "ALT AUA456 FL120")
+  check_eq(ex("Austrian four five six, jó napot, climb flight level one two zero, děkuji"), "ALT AUA456 FL120")
+  check_eq(ex("Austrian four five six, szia, turn left heading three two zero"), "HDG AUA456 320 LEFT")
+end
+
+-- "when reaching" alone after a level: the instruction waits for that level (ATALT); with no level before, asked
+do
+  local _, ex = scene({ "CRE SWR1530 A320 47.54 18.49 090 FL90 250" })
+  check_eq(ex("Swiss one five three zero, climb flight level one two zero, when reaching increase speed two eight zero"),
+    "ALT SWR1530 FL120 ; ATALT SWR1530 FL120 SPD SWR1530 280")
+  check(ex("Swiss one five three zero, when reaching increase speed two eight zero"):match("^ASK") ~= nil,
+    "no level to reach: asked")
+end
+
+-- "what is <callsign said in words> doing" shows the aircraft (POS), also when the callsign's reference takes in
+-- the question's words
+do
+  local _, ex = scene({ "CRE LOT28 E195 51.30 20.70 010 FL130 270", "CRE WZZ1WA A321 52.40 19.80 090 FL100 250" })
+  check_eq(ex("what is LOT two eight doing"), "POS LOT28")
+  check_eq(ex("instructor: what is Wizz one whiskey alpha doing"), "POS WZZ1WA")
+end
+
+-- A distance from a navaid said by a two-word name ("ten miles from Zurich East") is ATDIST there
+do
+  local _, ex = navscene({ "CRE EDW12 A320 47.35 9.10 290 FL90 240" }, "distances from two-word navaid names")
+  if ex then
+    check_eq(ex("Edelweiss one two, twelve miles from Zurich East reduce speed two one zero"),
+      "ATDIST EDW12 ZUE 12 SPD EDW12 210")
+  end
+end
+
+-- Type names said as words ("Embraer one ninety five", "A three nineteen", "A three twenty one neo") where traffic
+-- is set up with "new traffic", "set up" or "put" as well as "create"
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("new traffic: KLM88, A three nineteen, at 52.5 4.5, heading 180, FL150, 250 knots"),
+    "CRE KLM88 A319 52.5 4.5 180 FL150 250")
+  check_eq(ex("set up KLM89, Embraer one ninety five, at 52.6 4.6, heading 090, FL120, 240 knots"),
+    "CRE KLM89 E195 52.6 4.6 90 FL120 240")
+  check_eq(ex("put KLM90, A three twenty one neo, at 52.7 4.7, heading 270, FL140, 260 knots"),
+    "CRE KLM90 A21N 52.7 4.7 270 FL140 260")
+end
+
+-- An instruction corrected by the next one of its family ("climb four thousand... negative, maintain seven
+-- thousand") is not read: no question about the value taken back (a climb below the aircraft), the correction
+-- stands; a value alone corrected under the same verb is still checked
+do
+  local _, ex = scene({ "CRE AUA456 B772 47.70 16.30 350 7000 210" })
+  check_eq(ex("Austrian four five six, climb three thousand... negative, maintain seven thousand"), "ALT AUA456 7000")
+  check_eq(ex("AUA456 descend 9000, correction, climb 9000"), "ALT AUA456 9000")
+  check(ex("AUA456 descend 5000... correction, 9000"):match("^ASK AUA456 is at 7000 ft") ~= nil, "still a descent")
+end
+
+-- "put (in) X before/after Y": a waypoint put next to one of the route (ADDWPT), as with "add"; "put in X" with
+-- no place beside it is asked
+do
+  local _, ex = scene({ "DEFWPT ROTAX 47.8 18.6", "DEFWPT ERGAN 47.9 18.9", "CRE WZZ2231 A21N 47.95 18.50 130 FL120 270",
+    "ADDWPT WZZ2231 ERGAN" })
+  check_eq(ex("Wizz two two three one, put in ROTAX before ERGAN"), "ADDWPT WZZ2231 ROTAX,,,,ERGAN")
+  check_eq(ex("WZZ2231 put ROTAX after ERGAN"), "ADDWPT WZZ2231 ROTAX,,,ERGAN")
+  check(ex("Wizz two two three one, put in ROTAX"):match("^ASK") ~= nil, "no place beside it: asked")
+end
