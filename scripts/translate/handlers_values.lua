@@ -259,7 +259,9 @@ return function(H, f, wrap, compass)
       or (self:word(q.e, "higher lower up down") and self:word(q.e - 1, "@feet"))
       -- "another thousand feet", "a further 500 ft": one more step of that size
       or self:word(q.b - 1, "another further"))
-    if not relative and now and not q.to and not fl and dir ~= 0 then
+    -- (a value said after a correction replaces a level said before it: "climb 9000... correction, 5000"
+    -- is a level, never a step)
+    if not relative and now and not q.to and not fl and dir ~= 0 and not self:word_in(s.trig, q.b, "@correction") then
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then
         relative = true

@@ -3324,3 +3324,14 @@ do
   check_eq(ex("WZZ2231 put ROTAX after ERGAN"), "ADDWPT WZZ2231 ROTAX,,,ERGAN")
   check(ex("Wizz two two three one, put in ROTAX"):match("^ASK") ~= nil, "no place beside it: asked")
 end
+
+-- A level said after a correction replaces the level said before it, so it is never read as a step
+-- ("climb 9000... correction, 5000" from 7000 is a climb to 5000: the verb contradicts it, asked; it
+-- was cleared as 12000); without a correction a small typed amount after "climb" stays a step
+do
+  local _, ex = scene({ "CRE AUA456 A320 48 16 090 7000 250" })
+  check(ex("AUA456 climb 9000... correction, 5000"):match("^ASK .*climb to 5000") ~= nil, "corrected below")
+  check(ex("AUA456 climb 9000 feet, correction, 5000 feet"):match("^ASK") ~= nil, "corrected below, in feet")
+  check_eq(ex("AUA456 climb 9000, correction 8000"), "ALT AUA456 8000")
+  check_eq(ex("AUA456 climb 2000"), "ALT AUA456 9000")
+end
