@@ -1619,6 +1619,8 @@ end
 -- '.', '?', ';' or the end; "say again? I say, descend FL360" (nothing in it) reads on as before.
 local QUESTION_BACK_NOT_AFTER = {}
 for _, w in ipairs(lexicon.question_back.not_after) do QUESTION_BACK_NOT_AFTER[w] = true end
+local QUESTION_PAST = {}
+for _, w in ipairs(lexicon.question_back.past) do QUESTION_PAST[w] = true end
 -- PHRASE_WORDS[phrase]: the phrase's words, split once
 local PHRASE_WORDS = setmetatable({}, { __index = function(split, phrase)
   local words = {}
@@ -1645,6 +1647,16 @@ function G:question_back()
   local function clause_end(k)
     while k <= #self.t and not (self.t[k].kind == "punct" and self.t[k].text ~= ",") do k = k + 1 end
     return k
+  end
+  -- "resolution method -- which one did Pablo use last week?": a clause asking what was done, answered by nobody here
+  local k = 1
+  while k <= #self.t do
+    local e = clause_end(k)
+    if self.t[e] and self.t[e].text == "?" and self:word_in(k, e, QUESTION_PAST) then
+      return self:need(string.format("'%s' asks what was done before: it is a question, no instruction. What "
+        .. "should I do?", said(k, e) .. "?"))
+    end
+    k = e + 1
   end
   -- the words a phrase opens with: a word no phrase opens with starts no question
   local opens = {}
@@ -3611,6 +3623,15 @@ function M.translate(text, world)
   end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
+  -- "330/FL350/280kt": values written with slashes between (each part holding a digit) are values apart;
+  -- a fraction "1/2" stays whole
+  text = text:gsub("[^%s,;]+", function(w)
+    if not w:find("/", 1, true) or w:match("^%d/%d+$") then return nil end
+    for part in (w .. "/"):gmatch("([^/]*)/") do
+      if not part:find("%d") then return nil end
+    end
+    return (w:gsub("/", " "))
+  end)
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)

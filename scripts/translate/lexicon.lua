@@ -273,8 +273,10 @@ return {
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
   -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
+  -- A clause ending in "?" that holds one of `past` asks what was done before ("which one did Pablo use last
+  -- week?"): a question, no instruction.
   question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
-                    not_after = { "i", "we" } },
+                    not_after = { "i", "we" }, past = { "did", "didn't" } },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   correction = { "correction", "disregard", "negative" },
