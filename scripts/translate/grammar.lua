@@ -2819,6 +2819,35 @@ function G:clock_remark()
   end
 end
 
+-- "AFR6204 and IBE3421 -- no, forget the Iberia. Just AFR6204 heading 220": an aircraft named straight after a
+-- word of lexicon.forget ("the" and "about" between at most) is taken out of the request: no command names it.
+-- Nothing left asks for the instruction again.
+function G:forgotten()
+  for i = 1, #self.t do
+    if self:word(i, "@forget") then
+      local k = self:skip_fillers(i + 1)
+      while self:word(k, "the about") do k = k + 1 end
+      local r = self:refs_in(k, k + 1, "aircraft")[1]
+      if r and r.exists then
+        local id, kept = r.name:upper(), {}
+        for _, line in ipairs(self.out) do
+          if not line:find("%f[%w]" .. id .. "%f[^%w]") then kept[#kept + 1] = line end
+        end
+        self.out = kept
+        for x = i, r.b - 1 do self.noted[x] = true end
+        for _, o in ipairs(self.refs) do  -- (every mention of it)
+          if o.kind == "aircraft" and o.name:upper() == id then
+            for x = o.b, o.e - 1 do self.noted[x] = true end
+          end
+        end
+        if #kept == 0 then
+          self.ask = string.format("I left %s out, as said. Which instruction stands? Please say it again in full.", id)
+        end
+      end
+    end
+  end
+end
+
 -- Once the request is read, a word no part of the parse explains is a leftover: a negation or a
 -- condition the commands do not carry ("climb FL340 unless BAW12 is there"), or a word squawk does not
 -- know ("climb FL340 gently"). Words inside a callsign, place, type or value, a reason, a reply about
@@ -3717,6 +3746,7 @@ function M.translate(text, world)
   if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end
   g:same_again(same)
+  if not g.ask then g:forgotten() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

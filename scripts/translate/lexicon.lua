@@ -277,6 +277,8 @@ return {
   -- week?"): a question, no instruction.
   question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
                     not_after = { "i", "we" }, past = { "did", "didn't" } },
+  -- an aircraft named straight after one of these is left out of the request (G:forgotten): "forget the Iberia"
+  forget = { "forget" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   correction = { "correction", "disregard", "negative" },
