@@ -2848,6 +2848,68 @@ function G:forgotten()
   end
 end
 
+-- "TVF52KL and AFR1234 are co-altitude at 350, good. Push AFR7516 down to 350 too", "AFR7706 stop at FL170 and
+-- the Transavia keeps FL170 -- that's our conflict": aircraft named as the subject of a verb of
+-- lexicon.described (and not told to do anything after it: lexicon.described_not) are described, not
+-- instructed. A command for such an aircraft, named nowhere else, whose values are all said in the
+-- description's clause is the description misread: it is left out. One with a value said elsewhere is the
+-- described aircraft's own instruction ("KLM12 is too high, descend FL200") unless another aircraft was named
+-- before the description ("Iberia 0842 climb FL390... no wait, the Transavia's there. Make it FL380"): then
+-- it is asked about.
+function G:described()
+  local described = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists then
+      -- (a group: "X and Y are ...")
+      local k, group = r.e, { r }
+      while self:word(k, "and") and self:has_ref(k + 1, k + 2, "aircraft") do
+        local o = self:refs_in(k + 1, k + 2, "aircraft")[1]
+        group[#group + 1], k = o, o.e
+      end
+      if self:word(k, "@described") and not self:word(k + 1, "@described_not") then
+        local e = k
+        while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+        for _, o in ipairs(group) do described[o.name:upper()] = { b = r.b, e = e } end
+      end
+    end
+  end
+  for id, span in pairs(described) do
+    local elsewhere, other_before = false, false
+    for _, o in ipairs(self.refs) do
+      if o.kind == "aircraft" and o.name:upper() == id and (o.b < span.b or o.b >= span.e) then elsewhere = true end
+      if o.kind == "aircraft" and o.b < span.b and not described[o.name:upper()] then other_before = true end
+    end
+    local values = {}
+    for _, q in ipairs(self:quantities(span.b, span.e)) do  -- (a level in feet or in hundreds)
+      values[#values + 1] = tostring(math.floor(q.value))
+      values[#values + 1] = tostring(math.floor(q.value / 100))
+    end
+    if not elsewhere then
+      local kept = {}
+      for _, line in ipairs(self.out) do
+        if line:find("%f[%w]" .. id .. "%f[^%w]") then
+          local own = false
+          for _, v in ipairs(values) do own = own or line:find("%f[%d]" .. v .. "%f[^%d]") ~= nil end
+          if not own and not other_before then
+            kept[#kept + 1] = line
+          elseif not own then
+            self.ask = string.format("I have %s, but %s was only described, not told to do anything. Which "
+              .. "aircraft should get it?", line, id)
+            return
+          end
+        else
+          kept[#kept + 1] = line
+        end
+      end
+      if #kept < #self.out then
+        self.out = kept
+        for x = span.b, span.e - 1 do self.noted[x] = true end
+        for _, q in ipairs(self:quantities(span.b, span.e)) do self:take(q) end
+      end
+    end
+  end
+end
+
 -- Once the request is read, a word no part of the parse explains is a leftover: a negation or a
 -- condition the commands do not carry ("climb FL340 unless BAW12 is there"), or a word squawk does not
 -- know ("climb FL340 gently"). Words inside a callsign, place, type or value, a reason, a reply about
@@ -3639,6 +3701,7 @@ local function typed_places(text, world)
   return table.concat(out)
 end
 
+local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true }
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
@@ -3652,6 +3715,10 @@ function M.translate(text, world)
   end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
+  -- "the Transavia's there", "KLM12's already at FL300": a name's "'s" before a word of place or time is "is"
+  text = text:gsub("(%f[%w][%u%d][%w]*)['\xE2\x80\x99]+s (%l+)", function(name, w)
+    if DESCRIBED_AFTER[w] then return name .. " is " .. w end
+  end)
   -- "330/FL350/280kt": values written with slashes between (each part holding a digit) are values apart;
   -- a fraction "1/2" stays whole
   text = text:gsub("[^%s,;]+", function(w)
@@ -3747,6 +3814,7 @@ function M.translate(text, world)
   if not g.ask then g:discretion_without_level() end
   g:same_again(same)
   if not g.ask then g:forgotten() end
+  if not g.ask then g:described() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

@@ -279,6 +279,12 @@ return {
                     not_after = { "i", "we" }, past = { "did", "didn't" } },
   -- an aircraft named straight after one of these is left out of the request (G:forgotten): "forget the Iberia"
   forget = { "forget" },
+  -- an aircraft named as the subject of one of `described` is described, not instructed (G:described): "X and Y are
+  -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there"; unless one of `described_not`
+  -- follows ("X is cleared FL200", "X is to climb")
+  described = { "is", "are", "keeps", "stays", "remains", "sits" },
+  described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "climbing", "descending",
+                    "turning", "both", "also" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   correction = { "correction", "disregard", "negative" },
