@@ -2049,8 +2049,24 @@ end
 -- constraint ("AT id WPT ALT alt" / "SPD spd"); true when it was emitted.
 -- Any other value instruction tied to a waypoint ("at TP2 be at FL200") is
 -- an AT condition the grammar does not translate: asked, never issued at once.
+local function tied_to_waypoint(self, r)
+  return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
+    .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
+    r.name, r.name))
+end
 function G:at_waypoint(s, spec)
-  if not (spec and spec.value) and s.intent ~= "infer" then return end
+  if not (spec and spec.value) and s.intent ~= "infer" then
+    -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in the clause of
+    -- an instruction with no value of its own)
+    for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+      local qs = self:word(r.b - 1, "at") and self:quantities(s.b, r.b - 1) or {}
+      local q = qs[#qs]
+      if q and q.e == r.b - 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach") and not self:in_reason(r.b) then
+        return tied_to_waypoint(self, r)
+      end
+    end
+    return
+  end
   -- "direct to the Arlanda VOR, and then when it's there descend to 4000 feet": "there" is the place the
   -- aircraft was just sent direct to, a level or a speed there its AT constraint
   local there = self:find_word(s.b, s.trig, "there")
@@ -2181,9 +2197,7 @@ function G:at_waypoint(s, spec)
       end
     end
     if self:word(r.b - 1, "at cross crossing over abeam overhead") and not self:in_reason(r.b) then
-      return self:need(string.format("Should that happen at %s? squawk does not translate instructions tied to a "
-        .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
-        r.name, r.name))
+      return tied_to_waypoint(self, r)
     end
   end
 end
