@@ -2871,18 +2871,25 @@ end
 -- before the description ("Iberia 0842 climb FL390... no wait, the Transavia's there. Make it FL380"): then
 -- it is asked about.
 function G:described()
-  local described = {}
+  local described, grouped = {}, {}
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and r.exists then
+    if r.kind == "aircraft" and r.exists and not grouped[r.b] then
       -- (a group: "X and Y are ...")
       local k, group = r.e, { r }
       while self:word(k, "and") and self:has_ref(k + 1, k + 2, "aircraft") do
         local o = self:refs_in(k + 1, k + 2, "aircraft")[1]
-        group[#group + 1], k = o, o.e
+        group[#group + 1], k, grouped[o.b] = o, o.e, true
       end
-      if self:word(k, "@described") and not self:word(k + 1, "@described_not") then
-        local e = k
+      if self:word(k, "@described") and not self:word(k + 1, "@described_not")
+          and not self:word(self:word(r.b - 1, "the") and r.b - 2 or r.b - 1, "@described_after") then
+        -- (the clause ends at punctuation, or at an instruction word after its first value: "KLM12 is at FL300
+        -- climb FL320")
+        local e = k + 1
         while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+        local q = self:quantities(k + 1, e)[1]
+        for x = q and q.e or e, e - 1 do
+          if self:intent_at(x) then e = x break end
+        end
         for _, o in ipairs(group) do described[o.name:upper()] = { b = r.b, e = e } end
       end
     end

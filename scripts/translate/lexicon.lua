@@ -285,6 +285,8 @@ return {
   described = { "is", "are", "keeps", "stays", "remains", "sits" },
   described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "climbing", "descending",
                     "turning", "both", "also" },
+  -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
+  described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   correction = { "correction", "disregard", "negative" },
