@@ -110,6 +110,8 @@ return {
         -- the same courtesy in Spanish or Portuguese ("descend FL120, gracias", "momentito, por favor")
         "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
         "tardes", "noches",
+        -- and in French ("climb FL120, bonjour", "merci, au revoir")
+        "bonjour", "bonsoir", "merci", "salut", "revoir",
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
         "mate", "kia", "ora", "howzit",
         -- the same courtesy in German ("Grüß Gott", "Entschuldigung", "danke", "bitte", "servus")
@@ -608,15 +610,24 @@ return {
     { heard = { "two", "too" }, means = "to",
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
+    -- Spanish and French phraseology before its value, read the same way ("rumbo dos cero cero", "descienda
+    -- nivel de vuelo tres uno cero", "cap 270", "montez niveau 350")
+    { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" } },
+    { heard = { "nivel de vuelo", "nivel", "niveau" }, means = "flight level", before = { "#number" } },
+    { heard = { "velocidad", "vitesse" }, means = "speed", before = { "#number" } },
+    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a" } },
+    { heard = { "ascienda", "suba", "montez" }, means = "climb", before = { "#number", "nivel", "niveau", "a" } },
   },
-  -- digits said in Spanish or Portuguese by a controller speaking English ("Avianca cero one nine",
+  -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",
   -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit
   -- only beside another digit, said or typed, of either language, or a spelled letter ("tres" alone stays
   -- a word)
   foreign_digits = { cero = "zero", uno = "one", dos = "two", tres = "three", ["três"] = "three",
     cuatro = "four", cinco = "five", seis = "six", siete = "seven", ocho = "eight", nueve = "nine",
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
-    nove = "nine" },
+    nove = "nine",
+    -- and French ("France Soleil quatre un deux zero"; "six" and "zero" as in English)
+    un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine" },
   -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
   -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
   -- read is exactly one aircraft's (grammar.lua homophone_ids)

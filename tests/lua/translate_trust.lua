@@ -3269,3 +3269,15 @@ do
   check_eq(ex("add 5 random B738s at FL250 doing 260 knots, all inbound WPA"), "MCRE 5 B738 FL250 260 WPA")
   check_eq(ex("add 5 random B738s at FL250, all inbound to WPA"), "MCRE 5 B738 FL250 * WPA")
 end
+
+-- Spanish and French phraseology: "rumbo"/"cap" heading, "nivel de vuelo"/"niveau" flight level, "descienda"/
+-- "descendez", "suba"/"montez" before their values; French digits beside another digit; French courtesy words.
+-- A word of them with no value after it stays a word and is asked about
+do
+  local _, ex = scene({ "CRE VLG1005 A320 41 1 090 FL350 280", "CRE TVF4120 B738 44 1 090 FL200 280" })
+  check_eq(ex("Vueling uno cero cero cinco, rumbo uno cuatro cero"), "HDG VLG1005 140")
+  check_eq(ex("VLG1005 descienda nivel de vuelo dos ocho cero"), "ALT VLG1005 FL280")
+  check_eq(ex("France Soleil quatre un deux zero, montez niveau 240, merci"), "ALT TVF4120 FL240")
+  check_eq(ex("TVF4120 cap 090, bonjour"), "HDG TVF4120 90")
+  check(ex("VLG1005 rumbo"):match("^ASK") ~= nil, "no value: asked")
+end
