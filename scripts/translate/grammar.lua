@@ -3737,18 +3737,22 @@ function M.translate(text, world)
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
   -- "the Transavia's there", "KLM12's already at FL300": a name's "'s" before a word of place or time is "is"
-  text = text:gsub("(%f[%w][%u%d][%w]*)['\xE2\x80\x99]+s (%l+)", function(name, w)
-    if DESCRIBED_AFTER[w] then return name .. " is " .. w end
-  end)
+  if text:find("'s ", 1, true) or text:find("\xE2\x80\x99s ", 1, true) then
+    text = text:gsub("(%f[%w][%u%d][%w]*)['\xE2\x80\x99]+s (%l+)", function(name, w)
+      if DESCRIBED_AFTER[w] then return name .. " is " .. w end
+    end)
+  end
   -- "330/FL350/280kt": values written with slashes between (each part holding a digit) are values apart;
   -- a fraction "1/2" stays whole
-  text = text:gsub("[^%s,;]+", function(w)
-    if not w:find("/", 1, true) or w:match("^%d/%d+$") then return nil end
-    for part in (w .. "/"):gmatch("([^/]*)/") do
-      if not part:find("%d") then return nil end
-    end
-    return (w:gsub("/", " "))
-  end)
+  if text:find("/", 1, true) then
+    text = text:gsub("[^%s,;]*/[^%s,;]*", function(w)
+      if w:match("^%d/%d+$") then return nil end
+      for part in (w .. "/"):gmatch("([^/]*)/") do
+        if not part:find("%d") then return nil end
+      end
+      return (w:gsub("/", " "))
+    end)
+  end
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
