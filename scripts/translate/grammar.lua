@@ -2056,9 +2056,9 @@ local function tied_to_waypoint(self, r)
 end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then
-    -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in the clause of
-    -- an instruction with no value of its own)
-    for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+    -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in a direct's
+    -- clause)
+    for _, r in ipairs(s.intent == "direct" and self:refs_in(s.b, s.e, "waypoint") or {}) do
       local qs = self:word(r.b - 1, "at") and self:quantities(s.b, r.b - 1) or {}
       local q = qs[#qs]
       if q and q.e == r.b - 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach") and not self:in_reason(r.b) then
