@@ -1619,6 +1619,8 @@ end
 -- '.', '?', ';' or the end; "say again? I say, descend FL360" (nothing in it) reads on as before.
 local QUESTION_BACK_NOT_AFTER = {}
 for _, w in ipairs(lexicon.question_back.not_after) do QUESTION_BACK_NOT_AFTER[w] = true end
+local QUESTION_PAST = {}
+for _, w in ipairs(lexicon.question_back.past) do QUESTION_PAST[w] = true end
 -- PHRASE_WORDS[phrase]: the phrase's words, split once
 local PHRASE_WORDS = setmetatable({}, { __index = function(split, phrase)
   local words = {}
@@ -1645,6 +1647,16 @@ function G:question_back()
   local function clause_end(k)
     while k <= #self.t and not (self.t[k].kind == "punct" and self.t[k].text ~= ",") do k = k + 1 end
     return k
+  end
+  -- "resolution method -- which one did Pablo use last week?": a clause asking what was done, answered by nobody here
+  local k = 1
+  while k <= #self.t do
+    local e = clause_end(k)
+    if self.t[e] and self.t[e].text == "?" and self:word_in(k, e, QUESTION_PAST) then
+      return self:need(string.format("'%s' asks what was done before: it is a question, no instruction. What "
+        .. "should I do?", said(k, e) .. "?"))
+    end
+    k = e + 1
   end
   -- the words a phrase opens with: a word no phrase opens with starts no question
   local opens = {}
@@ -2050,8 +2062,25 @@ end
 -- constraint ("AT id WPT ALT alt" / "SPD spd"); true when it was emitted.
 -- Any other value instruction tied to a waypoint ("at TP2 be at FL200") is
 -- an AT condition the grammar does not translate: asked, never issued at once.
+-- (the question about an instruction tied to waypoint r, said with `word`: "at" unless given)
+local function tied_to_waypoint(self, r, word)
+  return self:need(string.format("Should that happen %s %s? squawk does not translate instructions tied to a "
+    .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
+    word or "at", r.name, r.name))
+end
 function G:at_waypoint(s, spec)
-  if not (spec and spec.value) and s.intent ~= "infer" then return end
+  if not (spec and spec.value) and s.intent ~= "infer" then
+    -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in a direct's
+    -- clause)
+    for _, r in ipairs(s.intent == "direct" and self:refs_in(s.b, s.e, "waypoint") or {}) do
+      local qs = self:word(r.b - 1, "at") and self:quantities(s.b, r.b - 1) or {}
+      local q = qs[#qs]
+      if q and q.e == r.b - 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach") and not self:in_reason(r.b) then
+        return tied_to_waypoint(self, r)
+      end
+    end
+    return
+  end
   -- "direct to the Arlanda VOR, and then when it's there descend to 4000 feet": "there" is the place the
   -- aircraft was just sent direct to, a level or a speed there its AT constraint
   local there = self:find_word(s.b, s.trig, "there")
@@ -2209,9 +2238,7 @@ function G:at_waypoint(s, spec)
       end
     end
     if (self:word(r.b - 1, "at cross crossing over abeam overhead") or r.b == opens) and not self:in_reason(r.b) then
-      return self:need(string.format("Should that happen %s %s? squawk does not translate instructions tied to a "
-        .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
-        r.b == opens and self.t[first].text or "at", r.name, r.name))
+      return tied_to_waypoint(self, r, r.b == opens and self.t[first].text or "at")
     end
   end
 end
@@ -2842,6 +2869,104 @@ function G:clock_remark()
       if plain then
         for k = i, e - 1 do self.noted[k] = true end
         for _, q in ipairs(self:quantities(i + 1, e)) do self:take(q) end
+      end
+    end
+  end
+end
+
+-- "AFR6204 and IBE3421 -- no, forget the Iberia. Just AFR6204 heading 220": an aircraft named straight after a
+-- word of lexicon.forget ("the" and "about" between at most) is taken out of the request: no command names it.
+-- Nothing left asks for the instruction again.
+function G:forgotten()
+  for i = 1, #self.t do
+    if self:word(i, "@forget") then
+      local k = self:skip_fillers(i + 1)
+      while self:word(k, "the about") do k = k + 1 end
+      local r = self:refs_in(k, k + 1, "aircraft")[1]
+      if r and r.exists then
+        local id, kept = r.name:upper(), {}
+        for _, line in ipairs(self.out) do
+          if not line:find("%f[%w]" .. id .. "%f[^%w]") then kept[#kept + 1] = line end
+        end
+        self.out = kept
+        for x = i, r.b - 1 do self.noted[x] = true end
+        for _, o in ipairs(self.refs) do  -- (every mention of it)
+          if o.kind == "aircraft" and o.name:upper() == id then
+            for x = o.b, o.e - 1 do self.noted[x] = true end
+          end
+        end
+        if #kept == 0 then
+          self.ask = string.format("I left %s out, as said. Which instruction stands? Please say it again in full.", id)
+        end
+      end
+    end
+  end
+end
+
+-- "TVF52KL and AFR1234 are co-altitude at 350, good. Push AFR7516 down to 350 too", "AFR7706 stop at FL170 and
+-- the Transavia keeps FL170 -- that's our conflict": aircraft named as the subject of a verb of
+-- lexicon.described (and not told to do anything after it: lexicon.described_not) are described, not
+-- instructed. A command for such an aircraft, named nowhere else, whose values are all said in the
+-- description's clause is the description misread: it is left out. One with a value said elsewhere is the
+-- described aircraft's own instruction ("KLM12 is too high, descend FL200") unless another aircraft was named
+-- before the description ("Iberia 0842 climb FL390... no wait, the Transavia's there. Make it FL380"): then
+-- it is asked about.
+function G:described()
+  local described, grouped = {}, {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists and not grouped[r.b] then
+      -- (a group: "X and Y are ...")
+      local k, group = r.e, { r }
+      while self:word(k, "and") and self:has_ref(k + 1, k + 2, "aircraft") do
+        local o = self:refs_in(k + 1, k + 2, "aircraft")[1]
+        group[#group + 1], k, grouped[o.b] = o, o.e, true
+      end
+      if self:word(k, "@described") and not self:word(k + 1, "@described_not")
+          and not self:word(self:word(r.b - 1, "the") and r.b - 2 or r.b - 1, "@described_after") then
+        -- (the clause ends at punctuation, or at an instruction word after its first value: "KLM12 is at FL300
+        -- climb FL320")
+        local e = k + 1
+        while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
+        local q = self:quantities(k + 1, e)[1]
+        for x = q and q.e or e, e - 1 do
+          if self:intent_at(x) then e = x break end
+        end
+        for _, o in ipairs(group) do described[o.name:upper()] = { b = r.b, e = e } end
+      end
+    end
+  end
+  for id, span in pairs(described) do
+    local elsewhere, other_before = false, false
+    for _, o in ipairs(self.refs) do
+      if o.kind == "aircraft" and o.name:upper() == id and (o.b < span.b or o.b >= span.e) then elsewhere = true end
+      if o.kind == "aircraft" and o.b < span.b and not described[o.name:upper()] then other_before = true end
+    end
+    local values = {}
+    for _, q in ipairs(self:quantities(span.b, span.e)) do  -- (a level in feet or in hundreds)
+      values[#values + 1] = tostring(math.floor(q.value))
+      values[#values + 1] = tostring(math.floor(q.value / 100))
+    end
+    if not elsewhere then
+      local kept = {}
+      for _, line in ipairs(self.out) do
+        if line:find("%f[%w]" .. id .. "%f[^%w]") then
+          local own = false
+          for _, v in ipairs(values) do own = own or line:find("%f[%d]" .. v .. "%f[^%d]") ~= nil end
+          if not own and not other_before then
+            kept[#kept + 1] = line
+          elseif not own then
+            self.ask = string.format("I have %s, but %s was only described, not told to do anything. Which "
+              .. "aircraft should get it?", line, id)
+            return
+          end
+        else
+          kept[#kept + 1] = line
+        end
+      end
+      if #kept < #self.out then
+        self.out = kept
+        for x = span.b, span.e - 1 do self.noted[x] = true end
+        for _, q in ipairs(self:quantities(span.b, span.e)) do self:take(q) end
       end
     end
   end
@@ -3666,6 +3791,7 @@ local function typed_places(text, world)
   return table.concat(out)
 end
 
+local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true }
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
@@ -3679,6 +3805,23 @@ function M.translate(text, world)
   end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
+  -- "the Transavia's there", "KLM12's already at FL300": a name's "'s" before a word of place or time is "is"
+  if text:find("'s ", 1, true) or text:find("\xE2\x80\x99s ", 1, true) then
+    text = text:gsub("(%f[%w][%u%d][%w]*)['\xE2\x80\x99]+s (%l+)", function(name, w)
+      if DESCRIBED_AFTER[w] then return name .. " is " .. w end
+    end)
+  end
+  -- "330/FL350/280kt": values written with slashes between (each part holding a digit) are values apart;
+  -- a fraction "1/2" stays whole
+  if text:find("/", 1, true) then
+    text = text:gsub("[^%s,;]*/[^%s,;]*", function(w)
+      if w:match("^%d/%d+$") then return nil end
+      for part in (w .. "/"):gmatch("([^/]*)/") do
+        if not part:find("%d") then return nil end
+      end
+      return (w:gsub("/", " "))
+    end)
+  end
   text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
@@ -3767,6 +3910,8 @@ function M.translate(text, world)
   if not g.ask then g:discretion_without_level() end
   if not g.ask then g:direct_when_able() end
   g:same_again(same)
+  if not g.ask then g:forgotten() end
+  if not g.ask then g:described() end
   -- "... actually no, just the descent" (G:self_corrected): only the commands of that kind stand
   if not g.ask and g.kept then
     local kept = {}

@@ -1693,8 +1693,10 @@ return function(H, f, compass)
     if named > 0 then
       return self:need("Which aircraft type should the random aircraft be? Please give its ICAO designator.")
     end
-    -- "all going to Schiphol": MCRE's destination (an airport or waypoint said after "to")
-    local to = self:find_word(s.trig, s.e, "to")
+    -- "all going to Schiphol", "all inbound Barcelona": MCRE's destination (an airport or waypoint said after
+    -- "to" or "inbound")
+    local to = self:find_word(s.trig, s.e, "to inbound")
+    if self:word(to, "inbound") and self:word(to + 1, "to for") then to = to + 1 end
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
     local cmd = "MCRE " .. f.int(n.value)

@@ -110,6 +110,8 @@ return {
         -- the same courtesy in Spanish or Portuguese ("descend FL120, gracias", "momentito, por favor")
         "gracias", "obrigado", "obrigada", "por", "favor", "momentito", "buenos", "buenas", "dias", "días",
         "tardes", "noches",
+        -- and in French ("climb FL120, bonjour", "merci, au revoir")
+        "bonjour", "bonsoir", "merci", "salut", "revoir",
         -- greetings of Australia, New Zealand and South Africa ("G'day mate", "kia ora", "howzit")
         "mate", "kia", "ora", "howzit",
         -- the same courtesy in German ("Grüß Gott", "Entschuldigung", "danke", "bitte", "servus")
@@ -277,8 +279,20 @@ return {
   -- a pilot's question back to the controller, no instruction (G:question_back): "say again (the level)"
   -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
+  -- A clause ending in "?" that holds one of `past` asks what was done before ("which one did Pablo use last
+  -- week?"): a question, no instruction.
   question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
-                    not_after = { "i", "we" } },
+                    not_after = { "i", "we" }, past = { "did", "didn't" } },
+  -- an aircraft named straight after one of these is left out of the request (G:forgotten): "forget the Iberia"
+  forget = { "forget" },
+  -- an aircraft named as the subject of one of `described` is described, not instructed (G:described): "X and Y are
+  -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there"; unless one of `described_not`
+  -- follows ("X is cleared FL200", "X is to climb")
+  described = { "is", "are", "keeps", "stays", "remains", "sits" },
+  described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "climbing", "descending",
+                    "turning", "both", "also" },
+  -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
+  described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   correction = { "correction", "disregard", "negative" },
@@ -600,15 +614,24 @@ return {
     { heard = { "two", "too" }, means = "to",
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
+    -- Spanish and French phraseology before its value, read the same way ("rumbo dos cero cero", "descienda
+    -- nivel de vuelo tres uno cero", "cap 270", "montez niveau 350")
+    { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" } },
+    { heard = { "nivel de vuelo", "nivel", "niveau" }, means = "flight level", before = { "#number" } },
+    { heard = { "velocidad", "vitesse" }, means = "speed", before = { "#number" } },
+    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a" } },
+    { heard = { "ascienda", "suba", "montez" }, means = "climb", before = { "#number", "nivel", "niveau", "a" } },
   },
-  -- digits said in Spanish or Portuguese by a controller speaking English ("Avianca cero one nine",
+  -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",
   -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit
   -- only beside another digit, said or typed, of either language, or a spelled letter ("tres" alone stays
   -- a word)
   foreign_digits = { cero = "zero", uno = "one", dos = "two", tres = "three", ["três"] = "three",
     cuatro = "four", cinco = "five", seis = "six", siete = "seven", ocho = "eight", nueve = "nine",
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
-    nove = "nine" },
+    nove = "nine",
+    -- and French ("France Soleil quatre un deux zero"; "six" and "zero" as in English)
+    un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine" },
   -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
   -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
   -- read is exactly one aircraft's (grammar.lua homophone_ids)

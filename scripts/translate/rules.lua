@@ -1046,8 +1046,10 @@ return function(intent, rule, words)
          when = function(g, i) return g:followed_by(i, 3, "@sim") end }
   -- "step the sim 30 seconds", "run 2 minutes", "advance 60 s", "run fast for an hour": a duration straight
   -- after the verb (the sim named between, or nothing; "fast" and "for" before it) is how far to fast-forward
+  -- ("sim step 0.5 s", "the simulation step 0.1 s": the step as a noun, the time step, is no verb)
   rule { "run advance step", "ff", not_prev = { 1, "time" }, not_near = { 7, "real times faster x twice thrice" },
          when = function(g, i)
+    if g:word(i, "step") and g:word(i - 1, "the a sim simulation integration update") then return false end
     local k = g:skip_fillers(i + 1)
     if g:word(k, "@sim it") then k = g:skip_fillers(k + 1) end  -- ("run it for 90 seconds")
     if g:word(k, "fast quickly ahead") then k = g:skip_fillers(k + 1) end

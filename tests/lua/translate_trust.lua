@@ -3335,3 +3335,79 @@ do
   check_eq(ex("AUA456 climb 9000, correction 8000"), "ALT AUA456 8000")
   check_eq(ex("AUA456 climb 2000"), "ALT AUA456 9000")
 end
+-- Values written with slashes between ("280/FL250/250kt") are values apart, each accounted for; a fraction stays
+-- whole and words with slashes are no values
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("BAW91 A320 51.5N 003.2E 120/FL240/260kt"), "CRE BAW91 A320 51.5 3.2 120 FL240 260")
+  check_eq(ex("create DLH3 A321 52.1/4.4 hdg 200/fl180"), "CRE DLH3 A321 52.1 4.4 200 FL180")
+  check(ex("BAW92 A320 51.5N 003.2E 120/FL240/zz9"):match("^ASK") ~= nil, "a part squawk cannot read is asked about")
+end
+
+-- "sim step 0.5 s": the simulation's step, a noun after "sim", is the time step; "step" alone with a time still
+-- moves the clock on
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("sim step 0.2 s"), "DT 0.2")
+  check_eq(ex("simulation step to 1 s"), "DT 1")
+  check_eq(ex("step the sim 45 seconds"), "FF 45")
+end
+
+-- A question about what was done ("which one did we use yesterday?") is no instruction, whatever words it holds
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
+  check(ex("conflict resolution -- which method did Jan pick on Monday?"):find("question, no instruction", 1, true),
+    "a question about the past: asked")
+  check(ex("did KLM77 get the descent to FL150?"):match("^ASK") ~= nil, "asked")
+  check_eq(ex("what's the reso method?"), "RESO")
+end
+
+-- "forget the KLM": an aircraft named after "forget" is left out of the request; when nothing is left, asked
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280" })
+  check_eq(ex("DLH4AX and KLM77 -- no, forget the KLM. Just DLH4AX heading 300"), "HDG DLH4AX 300")
+  check_eq(ex("KLM77 and DLH4AX descend FL180, forget DLH4AX"), "ALT KLM77 FL180")
+  check(ex("KLM77 speed 220, forget about KLM77"):match("^ASK") ~= nil, "nothing left: asked")
+end
+
+-- Aircraft described ("X and Y are level at 300", "the Lufthansa keeps FL300", "the KLM's there") are not
+-- instructed by the description; a value said outside it, after another aircraft was addressed, is asked about;
+-- the aircraft described alone still gets the instruction after it
+do
+  local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280",
+    "CRE BAW8CK A320 52.0 4.0 025 FL280 250" })
+  check_eq(ex("KLM77 and DLH4AX are level at 300 on crossing tracks, good. Take BAW8CK up to 300 as well."),
+    "ALT BAW8CK FL300")
+  check_eq(ex("BAW8CK climb FL300 and the Lufthansa keeps FL300 -- the vertical geometry we want"), "ALT BAW8CK FL300")
+  check(ex("BAW8CK descend FL240... no wait, the KLM's there. Make it FL250"):match("^ASK") ~= nil,
+    "the correction after a described aircraft: asked")
+  check_eq(ex("KLM77 is too low, climb FL240"), "ALT KLM77 FL240")
+  check_eq(ex("DLH4AX is cleared to FL340"), "ALT DLH4AX FL340")
+end
+
+-- "direct X, FL340 at X": a level or speed tied to a waypoint in a direct's clause is asked about, never issued
+-- at once
+do
+  local _, ex = scene({ "DEFWPT WPA 52.5 4.5", "CRE KLM77 B738 52 4 090 FL200 250" })
+  check(ex("KLM77 direct WPA, FL240 at WPA"):find("Should that happen at WPA", 1, true), "asked")
+  check_eq(ex("KLM77 direct WPA, FL240"), "ADDWPT KLM77 WPA ; DIRECT KLM77 WPA ; ALT KLM77 FL240")
+end
+
+-- Random traffic "all inbound X": X is MCRE's destination
+do
+  local _, ex = scene({ "DEFWPT WPA 52.5 4.5", "CRE KLM77 B738 52 4 090 FL200 250" })
+  check_eq(ex("add 5 random B738s at FL250 doing 260 knots, all inbound WPA"), "MCRE 5 B738 FL250 260 WPA")
+  check_eq(ex("add 5 random B738s at FL250, all inbound to WPA"), "MCRE 5 B738 FL250 * WPA")
+end
+
+-- Spanish and French phraseology: "rumbo"/"cap" heading, "nivel de vuelo"/"niveau" flight level, "descienda"/
+-- "descendez", "suba"/"montez" before their values; French digits beside another digit; French courtesy words.
+-- A word of them with no value after it stays a word and is asked about
+do
+  local _, ex = scene({ "CRE VLG1005 A320 41 1 090 FL350 280", "CRE TVF4120 B738 44 1 090 FL200 280" })
+  check_eq(ex("Vueling uno cero cero cinco, rumbo uno cuatro cero"), "HDG VLG1005 140")
+  check_eq(ex("VLG1005 descienda nivel de vuelo dos ocho cero"), "ALT VLG1005 FL280")
+  check_eq(ex("France Soleil quatre un deux zero, montez niveau 240, merci"), "ALT TVF4120 FL240")
+  check_eq(ex("TVF4120 cap 090, bonjour"), "HDG TVF4120 90")
+  check(ex("VLG1005 rumbo"):match("^ASK") ~= nil, "no value: asked")
+end
