@@ -2173,8 +2173,13 @@ return function(H, f, compass)
     self:emit("DTMULT " .. f.num(q.value))  -- "speed the sim up 10 times"
   end
   function m:time_step(s)
+    -- ("asas dt 2 sec", "dt asas 2": conflict detection's own interval, DT ASAS)
+    local asas = self:word(s.trig - 1, "detection asas cd") and s.trig - 1
+      or self:word(s.trig + 1, "detection asas cd") and s.trig + 1
+    if asas then self:explain(asas, asas + 1) end
     local q = first(self, s, { time = true, plain = true })
-    if q then return self:emit("DT " .. f.num(q.value)) end
+    if q then return self:emit((asas and "DT ASAS " or "DT ") .. f.num(q.value)) end
+    if asas then return self:need("How often, in seconds, should conflict detection run?") end
     -- "a tenth of a second", "half a second": a fraction of a second said in words
     local frac = self:find_word(s.b, s.e, "@fractions")
     local unit = frac < s.e and self:find_word(frac + 1, math.min(s.e, frac + 4), "second seconds") or s.e

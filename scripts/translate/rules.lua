@@ -1197,6 +1197,8 @@ return function(intent, rule, words)
   rule { "detection asas cd", false, near = { 2, "look lookahead dtlook" }, when = function(g, i)
     return not g:word_in(math.max(1, i - 3), math.min(#g.t + 1, i + 4), "@on @off")
   end }
+  -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
+  rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor

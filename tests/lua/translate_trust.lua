@@ -3411,3 +3411,13 @@ do
   check_eq(ex("TVF4120 cap 090, bonjour"), "HDG TVF4120 90")
   check(ex("VLG1005 rumbo"):match("^ASK") ~= nil, "no value: asked")
 end
+
+-- "asas dt 2 sec", "detection dt 1.5 s": conflict detection's interval (DT ASAS), never the simulation's time
+-- step with detection switched on; without a value, asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("asas dt 2 sec"), "DT ASAS 2")
+  check_eq(ex("detection dt 1.5 s"), "DT ASAS 1.5")
+  check_eq(ex("set the time step to 0.1 s"), "DT 0.1")
+  check(ex("asas dt"):match("^ASK") ~= nil, "no interval said")
+end
