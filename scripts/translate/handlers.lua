@@ -999,7 +999,7 @@ end
 -- (a direct-to waits for a level passed, left or reached): "ATALT id alt" or nil.
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt"
-      and s.intent ~= "direct" then
+      and s.intent ~= "direct" and s.intent ~= "vs" then
     return nil
   end
   -- ("after passing FL100 resume own navigation direct HEMEL": the words leading to the direct-to are a
@@ -1023,12 +1023,14 @@ function m:at_altitude(s)
   if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
-  if (s.intent == "maintain" or s.intent == "alt" or s.intent == "direct")
+  if (s.intent == "maintain" or s.intent == "alt" or s.intent == "direct" or s.intent == "vs")
       and not self:word(a, "passing leaving reaching") then
     return nil
   end
-  -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" a condition
-  if (s.intent == "alt" or s.intent == "direct") and not self:word_in(math.max(b, a - 2), a, "@condition") then
+  -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" and "leaving 11000
+  -- descend at 1000 feet per minute" (the verb an imperative) a condition
+  if (s.intent == "alt" or s.intent == "direct" or s.intent == "vs")
+      and not self:word_in(math.max(b, a - 2), a, "@condition") and self.t[s.trig].text:match("ing$") then
     return nil
   end
   local qs = self:quantities(a + 1, s.trig)

@@ -3421,3 +3421,16 @@ do
   check_eq(ex("set the time step to 0.1 s"), "DT 0.1")
   check(ex("asas dt"):match("^ASK") ~= nil, "no interval said")
 end
+
+-- A level left or passed before a vertical speed, or before an imperative climb or descent with a rate
+-- ("leaving 11000 descend at 1000 feet per minute", "leaving FL110 vertical speed 1000 down"): the rate
+-- waits for the level (ATALT); it was read as the level to descend to, or dropped. A participle stays a
+-- pilot's report ("passing FL355 descending FL340")
+do
+  local _, ex = scene({ "CRE JZA8156 DH8D 45 -75 090 13000 250" })
+  check_eq(ex("JZA8156 leaving 11000 descend at 1000 fpm"), "ATALT JZA8156 11000 VS JZA8156 -1000")
+  check_eq(ex("Jazz 8156 leaving one one thousand descend at one thousand feet per minute"),
+    "ATALT JZA8156 11000 VS JZA8156 -1000")
+  check_eq(ex("JZA8156 leaving FL110 vertical speed 1000 down"), "ATALT JZA8156 FL110 VS JZA8156 -1000")
+  check_eq(ex("JZA8156 passing 11000 reduce speed 210"), "ATALT JZA8156 11000 SPD JZA8156 210")
+end
