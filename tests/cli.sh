@@ -98,6 +98,8 @@ expect "train env imitate permute" 0 "round 1 \(student flew\), epoch 9: 3200 de
 expect "imitate permute outside" 2 "--imitate-permute: slot layout '10:0,40': block 40..49 lies outside the observation's 43 numbers" -- "$sq" train --env envs/static_obstacle.lua --out "$gt/imp" --imitate envs/policies/static_obstacle.lua --imitate-permute 10:0,40
 expect "imitate permute alone" 2 "--imitate-permute sets --imitate POLICY.lua's cloning" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imq" --imitate-permute 2:0
 expect "imitate means grid" 2 "--imitate-means holds the Gaussian head's log sigma: add --gaussian" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/imv" --imitate tests/data/gym/sign_half.lua --imitate-means
+expect "imitate saturate grid" 2 "--imitate-saturate moves the Gaussian head's labels: add --gaussian" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ims" --imitate tests/data/gym/sign_half.lua --imitate-saturate 1.2
+expect "imitate saturate range" 2 "--imitate-saturate must lie in \[1, 3\]" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/ims" --gaussian --imitate tests/data/gym/sign_half.lua --imitate-saturate 0.9
 # --clone-log-std: the clone is fine-tuned from log sigma -3 (entropy -3 + 1.419 at the first update).
 expect "train clone-log-std" 0 "done: 64 episodes" -- "$sq" train --env tests/data/gym/sign.lua --out "$gt/cls" --gaussian --imitate tests/data/gym/sign_half.lua --imitate-episodes 100 --imitate-rounds 1 --clone-log-std -3 --estimator ppo --episodes 64 --eval-every 0 --update-log
 expect "clone-log-std entropy" 0 "^16,[-0-9.e]+,-1\.58" -- sed -n 2p "$gt/cls/updates.csv"

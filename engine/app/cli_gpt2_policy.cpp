@@ -26,10 +26,11 @@ namespace squawk::app {
 
 Args::Spec train_flags(bool gpt2) {
   std::vector<std::string> values = learner_flags();
-  values.insert(values.end(),
-                {"--policy", "--env", "--levels", "--hidden", "--agents", "--obs-norm", "--log-std",
-                 "--imitate", "--imitate-episodes", "--imitate-rounds", "--imitate-epochs",
-                 "--imitate-lr", "--imitate-permute", "--clone-log-std", "--init"});
+  values.insert(
+      values.end(),
+      {"--policy", "--env", "--levels", "--hidden", "--agents", "--obs-norm", "--log-std",
+       "--imitate", "--imitate-episodes", "--imitate-rounds", "--imitate-epochs", "--imitate-lr",
+       "--imitate-permute", "--imitate-saturate", "--clone-log-std", "--init"});
   std::vector<std::string> bools = {"--resume", "--override", "--force",         "--quiet",
                                     "--mirror", "--gaussian", "--imitate-means", "--update-log"};
   if (gpt2) {

@@ -135,6 +135,10 @@ Result<rl::ImitationConfig> imitation_config(const Args& args, const rl::TrainCo
   ic.seed = cfg.seed + kImitateSeedOffset;
   ic.holdout = std::min<long long>(cfg.eval_episodes, 200);
   ic.holdout_seed = validation;
+  SQUAWK_ASSIGN_OR_RETURN(const double saturate, args.get_double("--imitate-saturate", 1.0));
+  if (!(saturate >= 1.0 && saturate <= 3.0))
+    return Status::invalid("--imitate-saturate must lie in [1, 3]");
+  ic.saturated_label = static_cast<float>(saturate);
   return ic;
 }
 
@@ -229,8 +233,9 @@ int cmd_train_env(const Args& args) {
   if (imitate && dist::size() > 1)
     return usage_error("train", "--imitate runs in a job of one rank");
   if (!imitate)
-    for (const char* f : {"--imitate-episodes", "--imitate-rounds", "--imitate-epochs",
-                          "--imitate-lr", "--imitate-means", "--imitate-permute"})
+    for (const char* f :
+         {"--imitate-episodes", "--imitate-rounds", "--imitate-epochs", "--imitate-lr",
+          "--imitate-means", "--imitate-permute", "--imitate-saturate"})
       if (args.has(f))
         return usage_error("train", std::string(f) + " sets --imitate POLICY.lua's cloning");
   auto hidden = int_list(args, "--hidden", "64,64", "width");  // the policy's hidden widths
@@ -257,6 +262,9 @@ int cmd_train_env(const Args& args) {
   if (args.has("--imitate-means") && !gaussian)
     return usage_error("train",
                        "--imitate-means holds the Gaussian head's log sigma: add --gaussian");
+  if (args.has("--imitate-saturate") && !gaussian)
+    return usage_error("train",
+                       "--imitate-saturate moves the Gaussian head's labels: add --gaussian");
   // --clone-log-std X: the log sigma the clone is fine-tuned from (cloning learns its own).
   auto clone_log_std = args.get_double("--clone-log-std", 0.0);
   if (!clone_log_std) return usage_error("train", clone_log_std.status().message());

@@ -109,13 +109,16 @@ Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const Imit
     return Status::invalid("imitation: held_tail " + std::to_string(c.held_tail) +
                            " exceeds the student's " + std::to_string(student.params().size()) +
                            " parameters");
+  const bool continuous = student.action_values().empty();
+  if (!(c.saturated_label >= 1.0f) || (c.saturated_label != 1.0f && !continuous))
+    return Status::invalid("imitation: saturated_label " + std::to_string(c.saturated_label) +
+                           " (expected >= 1, and 1 for a discrete head)");
   const auto d = static_cast<size_t>(teacher.obs_size());
   for (const int s : c.permute.starts)
     if (c.permute.count >= 2 && (s < 0 || static_cast<size_t>(s + c.permute.count) > d))
       return Status::invalid("imitation: the permuted block at " + std::to_string(s) + " (" +
                              std::to_string(c.permute.count) + " slots) lies outside the " +
                              std::to_string(d) + " observation numbers");
-  const bool continuous = student.action_values().empty();
   Rng rng(c.seed);
   Labelled held, data;
   SQUAWK_RETURN_IF_ERROR(fly(envs, teacher, true, teacher, c.holdout_seed, 0,
@@ -143,7 +146,12 @@ Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const Imit
         for (int r = 0; r < c.batch; ++r) {
           const auto row = static_cast<size_t>(order[static_cast<size_t>(b0 + r)]);
           std::copy_n(data.obs.begin() + static_cast<long>(row * d), d, batch_obs.begin() + static_cast<long>(r * d));
-          batch_act[static_cast<size_t>(r)] = data.label[row];
+          ActionSample& y = batch_act[static_cast<size_t>(r)];
+          y = data.label[row];
+          if (continuous)  // unused components are 0
+            for (int j = 0; j < kMaxActionSize; ++j)
+              if (std::abs(y.component(j)) >= 1.0f)
+                y.component(j) = std::copysign(c.saturated_label, y.component(j));
         }
         if (c.permute.count >= 2)
           for (size_t r = 0; r < static_cast<size_t>(c.batch); ++r)
@@ -163,9 +171,11 @@ Status imitate(Policy& student, Policy& teacher, env::BatchEnv& envs, const Imit
         const ActionSample &a = held_act[static_cast<size_t>(r)],
                            &y = held.label[static_cast<size_t>(r)];
         double diff = 0.0;  // the largest component's (unused components are 0 in both)
-        for (int j = 0; j < kMaxActionSize; ++j)
-          diff = std::max(diff, std::abs(static_cast<double>(a.component(j)) -
-                                         static_cast<double>(y.component(j))));
+        for (int j = 0; j < kMaxActionSize; ++j) {
+          const float flown = continuous ? std::clamp(a.component(j), -1.0f, 1.0f) : a.component(j);
+          diff = std::max(
+              diff, std::abs(static_cast<double>(flown) - static_cast<double>(y.component(j))));
+        }
         agree += continuous ? diff <= kContinuousAgreement : a.index == y.index;
         error += diff;
       }

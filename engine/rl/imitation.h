@@ -14,16 +14,20 @@
 // included unless held: config.held_tail > 0 leaves the last held_tail
 // entries of params() where they are, for a Gaussian MlpPolicy its log sigmas,
 // so that the means are fitted at a fixed spread, the mean squared error).
+// config.saturated_label > 1 (continuous heads) fits every label component at
+// the box edge (|y| = 1) at sign(y) * saturated_label instead: the action is
+// clipped to [-1, 1] when flown, so a mean pushed past the edge flies the
+// rule's full rate where a mean fitted to the edge itself stays inside it.
 // config.permute (rl/slot_permutation.h), when it has slots, shows each batch
 // row with its slots in a fresh random order (the label unchanged): for a
 // teacher that treats those objects alike; the held-out figures read the
 // observations as flown.
 // Agreement: the share of held-out decisions (config.holdout episodes of
 // config.holdout_seed, flown by the teacher) where the student's greedy class
-// is the teacher's (continuous: where every component of its greedy action is
-// within kContinuousAgreement of the teacher's); action_error the mean over the
-// same decisions of the largest absolute difference between the two greedy
-// actions' components.
+// is the teacher's (continuous: where every component of its greedy action,
+// clipped to [-1, 1] as flown, is within kContinuousAgreement of the
+// teacher's); action_error the mean over the same decisions of the largest
+// absolute difference between the two greedy actions' (clipped) components.
 // Shapes: decisions [N, obs_size] row-major, labels [N] actions.
 #pragma once
 
@@ -51,6 +55,7 @@ struct ImitationConfig {
   uint64_t holdout_seed = 2;  // must differ from seed
   size_t held_tail = 0;       // [-] trailing params() entries left unchanged (0: all trained)
   SlotLayout permute{};       // slots shuffled in every batch row (count < 2: none, no draws)
+  float saturated_label = 1;  // [-] target of a label component at +-1 (>= 1; 1: as labelled)
 };
 
 inline constexpr double kContinuousAgreement = 0.1;  // [-] of the [-1, 1] action range

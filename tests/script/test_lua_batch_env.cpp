@@ -489,6 +489,60 @@ TEST_CASE("imitation of a two-component rule: every component labelled, log sigm
         "imitation: held_tail 1000 exceeds the student's 24 parameters");
 }
 
+// sign2_half.lua's second component is always at the edge of the box (+1):
+// fitted as labelled the clone's mean stays at 1, fitted at saturated_label
+// 1.5 it goes past the edge (flown clipped, the rule's action), while the
+// first component's labels (+-0.5, inside the box) are fitted as they are.
+TEST_CASE("imitation with saturated_label: a label at the box edge is fitted past it") {
+  auto envs = batch(repo("tests/data/gym/sign2.lua"), 3, 0);
+  auto teacher = script::LuaTeacher::load(repo("tests/data/gym/sign2_half.lua"), {}, *envs);
+  REQUIRE_MESSAGE(teacher.is_ok(), teacher.status().message());
+  const std::vector<float> obs = {1, 1, 1, -1, -1, 1, -1, -1};  // [4, 2] every pair of signs
+  const std::vector<int> slots = {0, 1, 2, 3};
+  for (const float saturated : {1.0f, 1.5f}) {
+    CAPTURE(saturated);
+    rl::MlpPolicySpec spec;
+    spec.obs_size = 2;
+    spec.hidden = {16};
+    spec.head = "gaussian";
+    spec.action_size = 2;
+    spec.init_log_std = -1.0;
+    Rng init(5);
+    auto p = rl::MlpPolicy::make(spec, init);
+    REQUIRE(p);
+    rl::ImitationConfig ic;
+    ic.episodes = 40;
+    ic.rounds = 2;
+    ic.epochs = 20;
+    ic.batch = 16;
+    ic.lr = 1e-2f;
+    ic.holdout = 10;
+    ic.held_tail = 2;
+    ic.saturated_label = saturated;
+    rl::ImitationEpoch last;
+    Status st = rl::imitate(**p, **teacher, *envs, ic, [&](const rl::ImitationEpoch& e) {
+      last = e;
+      return Status::ok();
+    });
+    REQUIRE_MESSAGE(st.is_ok(), st.message());
+    CHECK(last.agreement == 1.0);  // the clipped action is the rule's either way
+    std::vector<rl::ActionSample> means(4);
+    Rng rng(1);
+    (*p)->act(obs, 4, slots, {&rng, 1}, true, means);
+    for (size_t r = 0; r < 4; ++r) {
+      CAPTURE(r);
+      CHECK(means[r].component(0) == doctest::Approx(0.5 * obs[2 * r]).epsilon(0.1));
+      CHECK(means[r].component(1) == doctest::Approx(saturated).epsilon(0.05));
+    }
+  }
+  auto p = small_gaussian(1);
+  REQUIRE(p);
+  rl::ImitationConfig below;
+  below.saturated_label = 0.9f;
+  CHECK(rl::imitate(**p, **teacher, *envs, below, {}).message() ==
+        "imitation: saturated_label 0.900000 (expected >= 1, and 1 for a discrete head)");
+}
+
 TEST_CASE("imitation refuses a teacher and a student of different kinds") {
   auto envs = batch(repo("tests/data/gym/sign.lua"), 2, 0);
   auto teacher = script::LuaTeacher::load(repo("tests/data/gym/sign_half.lua"), {}, *envs);
