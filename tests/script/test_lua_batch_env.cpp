@@ -430,6 +430,30 @@ TEST_CASE("imitation clones a Lua rule on a Lua environment, Gaussian and grid h
   }
 }
 
+// The student and the cloning both sign2 tests below use: a [2] -> 16 -> [2] Gaussian MLP,
+// 40 episodes a round, 2 rounds of 20 epochs in batches of 16, the last `held` parameters held.
+static Result<std::unique_ptr<rl::MlpPolicy>> sign2_student() {
+  rl::MlpPolicySpec spec;
+  spec.obs_size = 2;
+  spec.hidden = {16};
+  spec.head = "gaussian";
+  spec.action_size = 2;
+  spec.init_log_std = -1.0;
+  Rng init(5);
+  return rl::MlpPolicy::make(spec, init);
+}
+static rl::ImitationConfig sign2_imitation(size_t held) {
+  rl::ImitationConfig ic;
+  ic.episodes = 40;
+  ic.rounds = 2;
+  ic.epochs = 20;
+  ic.batch = 16;
+  ic.lr = 1e-2f;
+  ic.holdout = 10;
+  ic.held_tail = held;
+  return ic;
+}
+
 // sign2_half.lua: half the first sign and the second component always at 10,
 // the top of [0, 10]. The teacher's label carries both components (each on
 // [-1, 1]); cloned with its log sigmas held (held_tail), the student plays the
@@ -443,24 +467,10 @@ TEST_CASE("imitation of a two-component rule: every component labelled, log sigm
   REQUIRE(rule);
   for (const size_t held : {size_t{2}, size_t{0}}) {
     CAPTURE(held);
-    rl::MlpPolicySpec spec;
-    spec.obs_size = 2;
-    spec.hidden = {16};
-    spec.head = "gaussian";
-    spec.action_size = 2;
-    spec.init_log_std = -1.0;
-    Rng init(5);
-    auto p = rl::MlpPolicy::make(spec, init);
+    auto p = sign2_student();
     REQUIRE(p);
     const std::vector<float> log_std_before((*p)->params().end() - 2, (*p)->params().end());
-    rl::ImitationConfig ic;
-    ic.episodes = 40;
-    ic.rounds = 2;
-    ic.epochs = 20;
-    ic.batch = 16;
-    ic.lr = 1e-2f;
-    ic.holdout = 10;
-    ic.held_tail = held;
+    rl::ImitationConfig ic = sign2_imitation(held);
     rl::ImitationEpoch last;
     Status st = rl::imitate(**p, **teacher, *envs, ic, [&](const rl::ImitationEpoch& e) {
       last = e;
@@ -501,23 +511,9 @@ TEST_CASE("imitation with saturated_label: a label at the box edge is fitted pas
   const std::vector<int> slots = {0, 1, 2, 3};
   for (const float saturated : {1.0f, 1.5f}) {
     CAPTURE(saturated);
-    rl::MlpPolicySpec spec;
-    spec.obs_size = 2;
-    spec.hidden = {16};
-    spec.head = "gaussian";
-    spec.action_size = 2;
-    spec.init_log_std = -1.0;
-    Rng init(5);
-    auto p = rl::MlpPolicy::make(spec, init);
+    auto p = sign2_student();
     REQUIRE(p);
-    rl::ImitationConfig ic;
-    ic.episodes = 40;
-    ic.rounds = 2;
-    ic.epochs = 20;
-    ic.batch = 16;
-    ic.lr = 1e-2f;
-    ic.holdout = 10;
-    ic.held_tail = 2;
+    rl::ImitationConfig ic = sign2_imitation(2);
     ic.saturated_label = saturated;
     rl::ImitationEpoch last;
     Status st = rl::imitate(**p, **teacher, *envs, ic, [&](const rl::ImitationEpoch& e) {
