@@ -2365,12 +2365,24 @@ function G:uncarried()
       and not self.u:used(first) and self:word(first, "@up @down go")) do
     first = first + 1
   end
+  -- (a number straight after an aircraft flying, "at" between or not, and closed by a comma or "and",
+  -- "KLM12 330, turn left 090", "AEA6062 at 330, direct XING2", is a value said for it, however early)
+  local function said_for_aircraft(q)
+    if not (self.t[q.e] and ((self.t[q.e].kind == "punct" and self.t[q.e].text == ",") or self:word(q.e, "and"))) then
+      return false
+    end
+    for _, r in ipairs(self:refs_in(1, q.b + 1, "aircraft")) do
+      if r.exists and (r.e == q.b or (r.e == q.b - 1 and self:word(r.e, "at"))) then return true end
+    end
+    return false
+  end
   for _, q in ipairs(self:quantities(1, #self.t + 1)) do
     -- (a plain number with a decimal point is a coordinate; one of two digits or more said after the first
     -- instruction word is a value said for an instruction, "descend FL130, reducing 250", never dropped in
     -- silence; single digits, and numbers before any instruction, "United 82 82 flight 8180 descend", are
     -- often recognition noise in a callsign)
-    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal or (q.value >= 10 and q.b > first))))
+    if (MUST_CARRY[q.kind] or (q.kind == "plain" and (q.number.decimal
+          or (q.value >= 10 and (q.b > first or said_for_aircraft(q))))))
         and not self.taken[q.b]
         and not ((q.by or relative) and not position(q)) and q.b > corrected and not value_carried(q, nums) then
       self.leftover = self:raw(q.b, q.e)

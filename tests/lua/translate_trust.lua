@@ -3434,3 +3434,15 @@ do
   check_eq(ex("JZA8156 leaving FL110 vertical speed 1000 down"), "ATALT JZA8156 FL110 VS JZA8156 -1000")
   check_eq(ex("JZA8156 passing 11000 reduce speed 210"), "ATALT JZA8156 11000 SPD JZA8156 210")
 end
+
+-- A number said straight after an aircraft flying ("at" between or not) and closed by a comma or "and"
+-- ("KLM12 330, turn left 090", "AEA6062 at 330, direct XING2") is a value said for it: carried or asked
+-- about, never dropped in silence (numbers before any instruction were taken for callsign noise)
+do
+  local _, ex = scene({ "CRE AEA6062 B738 42 2 090 FL300 280", "DEFWPT XING2 42.2 2.5", "ADDWPT AEA6062 XING2",
+    "CRE KLM12 B738 42 3 090 FL300 280" })
+  check(ex("KLM12 330, turn left 090"):match("^ASK .*'330'") ~= nil, "a number before the instruction")
+  check(ex("AEA6062 at 330, direct XING2"):match("^ASK .*'330'") ~= nil, "a number after 'at' before a direct")
+  check(ex("KLM12 330 and turn left 090"):match("^ASK .*'330'") ~= nil, "a number before 'and'")
+  check_eq(ex("KLM12 250 kts, turn left 090"), "SPD KLM12 250 ; HDG KLM12 90 LEFT")
+end
