@@ -517,6 +517,43 @@ local function self_corrections(text)
   return table.concat(pieces)
 end
 
+-- "descend and maintain 6000, you said seven", "negative, it's one zero thousand, readback was one one
+-- thousand": a clause opening after a comma with a phrase of lexicon.readback_heard and holding only values
+-- up to the end of its sentence names the value the pilot read back wrongly; it is dropped when a value was
+-- said before it (the corrected instruction stands). With no value before it, or other words after the
+-- values, it stays and is asked about.
+local READBACK_HEARD = {}
+for _, p in ipairs(lexicon.readback_heard) do
+  local first = p:match("^(%S+)")
+  READBACK_HEARD[first] = READBACK_HEARD[first] or {}
+  table.insert(READBACK_HEARD[first], p)
+end
+local function readback_heard(text)
+  local toks = bare_words(text)
+  local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
+  local seen_value = false
+  for k, t in ipairs(toks) do
+    if k > 1 and toks[k - 1].raw:match(",$") and seen_value then
+      for _, p in ipairs(READBACK_HEARD[t.bare] or {}) do
+        local j, ok = k, true
+        for w in p:gmatch("%S+") do
+          ok = ok and toks[j] ~= nil and toks[j].bare == w and (j == k or not toks[j - 1].raw:match("%p$"))
+          j = j + 1
+        end
+        local n = j
+        while ok and toks[n] and value(toks[n]) and not (n > j and toks[n - 1].raw:match("[,;]$")) do n = n + 1 end
+        local last = toks[n - 1]
+        if ok and n > j and (not toks[n] or last.raw:match("[%.!;]$")) then
+          return text:sub(1, toks[k - 1].e - 2) .. (last.raw:match("([%.!;])$") or "")
+            .. (toks[n] and " " .. text:sub(toks[n].at) or "")
+        end
+      end
+    end
+    seen_value = seen_value or value(t) ~= nil
+  end
+  return text
+end
+
 -- "flight level two six zero, not two eight zero", "heading 300, not 310": a value said after "not"
 -- straight after another value, ending its clause, is the one the speaker rules out (a readback
 -- corrected); it is dropped, with its "not", and the value before it stands. Anywhere else ("climb FL310
@@ -659,7 +696,7 @@ for _, word in ipairs({ "point", "decimal" }) do
   POINT_SAID[#POINT_SAID + 1] = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]"
 end
 local function written_forms(text)
-  text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(foreign_digits(text)))))))
+  text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
   -- leave it as typed
@@ -1068,6 +1105,16 @@ function G:type_or_aircraft_word(b, e)
   return self:has_ref(b, e, "type") or self:word_in(b, e, "@aircraft_nouns")
 end
 
+-- True when aircraft reference r names a callsign no aircraft has: not matched to one, or heard with its
+-- airline said whole and a flight number no aircraft of that airline has ("Jazz 7455" with JZA7721 flying:
+-- a new aircraft, no slip for JZA7721).
+function G:new_callsign(r)
+  if not r.exists then return true end
+  local h = r.heard
+  return h ~= nil and h.airline >= 1 and h.id:match("^%u%u%u?%d+%u*$") ~= nil and not self:state(h.id)
+    and not self:airline_and_digits_match(h.id, r.name)
+end
+
 -- True when an aircraft type, or a callsign no aircraft has, is named within
 -- the three tokens after i (punctuation and fillers not counted).
 function G:new_aircraft_follows(i)
@@ -1075,7 +1122,7 @@ function G:new_aircraft_follows(i)
   while self.t[k] and seen < 3 do
     if self.t[k].kind ~= "punct" and not self.t[k].filler then seen = seen + 1 end
     for _, r in ipairs(self.refs) do
-      if r.b == k and (r.kind == "type" or (r.kind == "aircraft" and not r.exists)) then return true end
+      if r.b == k and (r.kind == "type" or (r.kind == "aircraft" and self:new_callsign(r))) then return true end
     end
     k = k + 1
   end
@@ -3505,8 +3552,10 @@ end
 local TYPE_WORDS  -- maker or model (lower case) -> {designator = true}
 local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
   five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
+local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
+  text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")  -- ("X-ray", "x ray": the letter X, as the lexer reads it)
   if not TYPE_WORDS then
     TYPE_WORDS = {}
     for _, row in ipairs(TYPES.types) do
@@ -3542,8 +3591,15 @@ local function spelled_registrations(text, fleet)
         if l:match("^%a$") and lead == #letters then lead = lead + 1 end
         letters, last = letters .. l, j
       end
+      -- (a Canadian registration is said without its nationality letter, "Golf Kilo Whiskey Alpha" for
+      -- C-GKWA: the four letters after C of lexicon.nationless_registrations, when no aircraft is the four
+      -- letters themselves)
+      local held = {}
+      for _, a in ipairs(#letters >= 4 and fleet or {}) do held[a.id:upper()] = true end
+      local nationless = #letters == 4 and not held[letters]
       for _, a in ipairs(#letters >= 4 and fleet or {}) do
-        if a.id:upper() == letters then
+        local id = a.id:upper()
+        if id == letters or (nationless and id:sub(2) == letters and NATIONLESS[id:sub(1, 1) .. letters:sub(1, 1)]) then
           local own = first > k and set and a.type and set[a.type:upper()]
           return text:sub(1, (own and w or words[first])[2] - 1) .. a.id .. text:sub(words[last][3])
         end

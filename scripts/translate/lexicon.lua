@@ -283,6 +283,11 @@ return {
   -- week?"): a question, no instruction.
   question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
                     not_after = { "i", "we" }, past = { "did", "didn't" } },
+  -- the wrong value a pilot read back, named by the controller after the corrected instruction ("descend and
+  -- maintain 6000, you said seven", ", readback was one one thousand"): each phrase, after a comma, opens a
+  -- clause of values only that ends the request or its sentence (G: readback_heard)
+  readback_heard = { "you said", "you read back", "you read", "you readback", "you read it back as", "readback was",
+                     "read back was", "your readback was", "he read back", "pilot read back" },
   -- an aircraft named straight after one of these is left out of the request (G:forgotten): "forget the Iberia"
   forget = { "forget" },
   -- an aircraft named as the subject of one of `described` is described, not instructed (G:described): "X and Y are
@@ -300,7 +305,7 @@ return {
   -- create ...", "sim op: ..."): the label is no part of the request
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
-  label_roles = { "operator", "op", "sim", "simulator", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
+  label_roles = { "operator", "op", "sim", "simulator", "sup", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
                   "ai", "teammate", "assistant" },
   -- of those, the machine teammate a controller talks to: it opens a line as its addressee even without a comma
   -- ("AI what's the Virgin's altitude?", "hey teammate descend ..."); a greeting of `greetings` may come first
@@ -326,7 +331,7 @@ return {
   -- (an episode: one run of a learning environment)
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode" },
   -- (an agent: an aircraft, in a learning environment's words)
-  aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent", "target" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes" },
@@ -586,6 +591,9 @@ return {
   pronouns = { it = true, its = true, him = true, her = true, them = true, they = true },
   -- words skipped before a spoken waypoint name
   before_name = { "to", "the", "ah", "uh", "direct", "via", "now", "point" },
+  -- the nationality letter and first letter of registrations said without that nationality letter (Canada's
+  -- C-F..., C-G..., C-I...: "Golf Kilo Whiskey Alpha" is C-GKWA)
+  nationless_registrations = { "CF", "CG", "CI" },
   -- the phonetic alphabet (spelled waypoint names)
   phonetic = {
     alpha = "A", alfa = "A", bravo = "B", charlie = "C", delta = "D", echo = "E", foxtrot = "F", golf = "G",

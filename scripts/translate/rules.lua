@@ -130,7 +130,7 @@ return function(intent, rule, words)
           or g:word(k, "a an is also type zero one two three four five six seven eight nine niner")) do
         k = k + 1
       end
-      local ty = r and not r.exists and r.b == j and g:refs_in(k, k + 1, "type")[1]
+      local ty = r and g:new_callsign(r) and r.b == j and g:refs_in(k, k + 1, "type")[1]
       if not ty then
         -- ("A320 BAW1 at ...", "a Ryanair 738, RYR4GV, at MAYLA ...": the type first, after its article)
         local a = g:word(j, "a an another") and j + 1 or j

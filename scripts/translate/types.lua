@@ -224,6 +224,18 @@ function M.spoken(text, built)
       maker, lead, prefix = w, w, true
     end
     local best
+    -- ("seven thirty-seven", "seven eighty seven": a Boeing family said as its number is, "737")
+    local tens, unit, after = (toks[i + 1] or ""):lower():match("^(%a+)%-(%a+)(%p*)$")
+    local e = i + 2
+    if not tens and toks[i + 2] and not toks[i + 1]:match("%p$") then
+      tens, unit, after, e = toks[i + 1]:lower(), toks[i + 2]:lower():match("^(%a+)(%p*)$"), nil, i + 3
+      after = toks[i + 2]:match("%p*$")
+    end
+    local family = w == "seven" and tens and TENS[tens] and DIGITS[unit or ""] == "7" and "7" .. TENS[tens] .. "7"
+    if family and built.known["boeing " .. family] then
+      best = { name = family .. (after or ""), e = e }
+      maker = nil
+    end
     if maker then
       -- the digits said after the letter, one spoken group at a time, and the name each step spells
       local digits, variant = "", nil
@@ -248,9 +260,17 @@ function M.spoken(text, built)
         end
         local name = lead .. digits .. (variant and ("-" .. variant) or "")
         local punct = toks[k - 1]:match("%p+$") or ""
+        -- ("Airbus three twenty": the maker's letter left out)
+        if w == "airbus" and lead ~= "a" and #digits == 3 and not built.known[name] then name = "airbus a" .. digits end
         if (#digits >= 3 or prefix) and built.known[name] then best = { name = name .. punct, e = k } end
         if punct ~= "" then break end
       end
+    end
+    -- ("seven thirty-seven max eight": the MAX's number said as a word, "737 max 8")
+    local bare_max = best and not best.name:match("%p$") and toks[best.e] and toks[best.e]:lower()
+    local n = toks[best and best.e + 1 or 0]
+    if bare_max == "max" and n and DIGITS[n:lower():gsub("%p+$", "")] then
+      best = { name = best.name .. " max " .. DIGITS[n:lower():gsub("%p+$", "")] .. (n:match("%p+$") or ""), e = best.e + 2 }
     end
     if best then return best.name, best.e end
   end)
