@@ -1093,6 +1093,11 @@ function m:at_distance(s)
     if (q.kind == "dist" or bare) and not self.taken[q.b] then
       local k = self:skip_fillers(q.e)
       if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
+      -- ("cross 15 miles north of Seattle at 10000": the side of the place the aircraft comes from)
+      if self:word(k, "@compass") and self:word(k + 1, "of from") and self:word_in(s.b, q.b, "cross crossing") then
+        self:explain(k, k + 1)
+        k = k + 1
+      end
       local p = self:word(k, "from of to before") and self:skip_fillers(k + 1)
       local r = p and self:refs_in(p, p + 1, "waypoint")[1]
       local ids = p and self:acids(s) or {}

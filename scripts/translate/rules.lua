@@ -528,6 +528,14 @@ return function(intent, rule, words)
     local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
     return (r ~= nil and g:word(g:skip_fillers(r.e), "at")) or g:crossed_navaid(i) ~= nil
   end }
+  -- "cross two zero miles from Toronto at one one thousand", "cross 15 miles north of SEA at 10000": a crossing
+  -- restriction at a distance from a place, its level or speed said after "at" (handlers' at_distance: ATDIST)
+  rule { "cross crossing", "maintain", when = function(g, i)
+    local q = g:quantities(i + 1, #g.t + 1)[1]
+    if not q or q.kind ~= "dist" or q.b ~= g:skip_fillers(i + 1) then return false end
+    local k = g:word(q.e, "@compass") and q.e + 1 or q.e
+    return g:word(k, "from of") and g:word_in(k + 1, #g.t + 1, "at")
+  end }
   -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
   rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
