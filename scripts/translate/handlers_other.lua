@@ -944,16 +944,36 @@ return function(H, f, compass)
       end
       return airport
     end
+    -- (where no aircraft is meant, a name said after "over", "above", ... that an airport and a navaid within
+    -- lexicon.city_nm of it both bear under other idents, "over Sherbrooke": CYSC and the YSC VORTAC, is asked
+    -- about, the airport kept; "at Sherbrooke" is the airport)
+    local function beside(airport)
+      local at = self.world.user_waypoint_at
+      local lat, lon = nil, nil
+      local k = self.airport_said_at
+      if at and not a and k and self:word(k - 1, "@place_words") and not self:word(k - 1, "at") then
+        lat, lon = at(airport)
+      end
+      if not lat then return airport end
+      local asked = self.ask
+      local navaid = self:navaid_by_name(b, e, { lat = lat, lon = lon }, L.city_nm)
+      self.ask = asked
+      if navaid and navaid:upper() ~= airport:upper() then
+        self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, airport))
+      end
+      return airport
+    end
     for _, r in ipairs(near) do
       local id = self:airport_by_name(b, e, r)
-      if id then return id end
+      if id then return beside(id) end
     end
     for _, r in ipairs(near) do
       local id = self:navaid_by_name(b, e, r)
       if id then return id end
     end
     local airport = self:airport_by_name(b, e)
-    if airport or #near > 0 then return airport end
+    if airport then return beside(airport) end
+    if #near > 0 then return nil end
     -- with no traffic to place it near, the name of one navaid anywhere (several are asked about)
     return self:navaid_by_name(b, e, { lat = 0, lon = 0 }, math.huge)
   end
@@ -997,6 +1017,12 @@ return function(H, f, compass)
           local kind = self.t[p[2]] and self.t[p[2]].kind == "word" and L.navaid_types[self.t[p[2]].text]
           local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
             or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, kind or nil)
+          -- ("the Ottawa VOR": the VOR YOW, not the DME IOW of the same name that the navdata types TACAN)
+          local first_kind = kind and kind:match("^%S+")
+          if #ids > 1 and first_kind ~= kind then
+            local only = named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, first_kind)
+            if #only == 1 then ids = only end
+          end
           -- (of several navaids of the name, the one the aircraft's route holds: "direct Stornoway" with
           -- STN, not SAY or ISV, in its route)
           local held = {}
@@ -1140,6 +1166,7 @@ return function(H, f, compass)
           end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
+            self.airport_said_at = i
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
             self:explain(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
             -- (the name said again, "go to Stuttgart, so Stuttgart is its destination", is the same place)

@@ -450,6 +450,8 @@ return {
   waypoint_confirm = 1.0,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
+  -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)
+  city_nm = 30,
   -- the little words inside a place's name ("San Sebastian de los Reyes") that the navdata's short form of
   -- it leaves out ("S.S. REYES"); a name of three words or more said whole is looked for as said and as the
   -- initials of its words before the last, these left out, then the last word
