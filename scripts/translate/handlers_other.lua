@@ -1086,10 +1086,68 @@ return function(H, f, compass)
       local id = self:airport_named_in(b, e, within(named), placed, false, near ~= nil)
       if id then return id end
     end
-    local id = city and self:airport_named_in(b, e, within(city), false, true) or nil
     local beside = self.world.airports_beside_navaids
+    -- (a city whose large airports the navdata names otherwise too, beside its navaids, is no one airport:
+    -- "Montreal" is CYMX "MONTREAL INTL MIRABEL" or CYUL "PIERRE ELLIOTT TRUDEAU INTL", asked)
+    local of_city, by_navaid = city and within(city), beside and within(beside)
+    local function city_airports(phrase)
+      local ids = of_city(phrase)
+      if #ids ~= 1 or not by_navaid or not class then return ids end
+      for _, id in ipairs(by_navaid(phrase)) do
+        if id ~= ids[1] and class(id) == "LARGE" then ids[#ids + 1] = id end
+      end
+      return ids
+    end
+    local id = city and self:airport_named_in(b, e, city_airports, false, true) or nil
     if id or not meant or not beside then return id end
     return self:airport_named_in(b, e, within(beside), false, true)
+  end
+
+  -- An airport said as its city and a distinctive part of its navdata name ("Toronto Pearson" -> CYYZ
+  -- "LESTER B PEARSON INTL", "Montreal Trudeau" -> CYUL, "Boston Logan" -> KBOS), where an airport is meant:
+  -- a capitalised word in [b, e) and one or two capitalised words after it, the airports whose names hold
+  -- the latter (sim:airports_with_words, within lexicon.navaid_range_nm of the aircraft `near`) that lie
+  -- within lexicon.city_nm of a navaid named by the city (sim:airports_beside) or bear the city's name
+  -- (sim:airports_named, airports_of_city, lexicon.city_airports). Exactly one is that airport, both words
+  -- explained; none or several give nil (the name is read otherwise, or asked about).
+  function m:airport_of_city_said(b, e, near)
+    local w = self.world
+    if not (w.airports_with_words and w.navaids_named and w.airports_beside) or not near or not near.lat then return nil end
+    local function proper(k)
+      local t = self.t[k]
+      return k < e and t ~= nil and t.kind == "word" and t.alpha and t.raw:match("^%u%l") ~= nil and not self.u:used(k)
+        and not t.keyword and not t.filler and not t.number_word and not L.phonetic[t.text]
+    end
+    local range = L.navaid_range_nm
+    for i = b, math.min(e, #self.t + 1) - 2 do
+      if proper(i) and proper(i + 1) then
+        local city = self.t[i].text
+        local of_city = {}
+        for _, nav in ipairs(w.navaids_named(city, near.lat, near.lon, range)) do
+          for _, id in ipairs(w.airports_beside(nav, near.lat, near.lon, L.city_nm)) do of_city[id] = true end
+        end
+        for _, list in ipairs({ w.airports_named, w.airports_of_city }) do
+          for _, name in ipairs({ city, L.city_airports[city] }) do
+            for _, id in ipairs(list and name and list(name, near.lat, near.lon, range) or {}) do of_city[id] = true end
+          end
+        end
+        for n = 2, 1, -1 do
+          if n == 1 or proper(i + 2) then
+            local words = {}
+            for k = i + 1, i + n do words[#words + 1] = self.t[k].text end
+            local found = {}
+            for _, id in ipairs(w.airports_with_words(table.concat(words, " "), near.lat, near.lon, range)) do
+              if of_city[id] then found[#found + 1] = id end
+            end
+            if #found == 1 then
+              self:explain(i, self:word(i + n + 1, "@airport_nouns") and i + n + 2 or i + n + 1)
+              return found[1]
+            end
+          end
+        end
+      end
+    end
+    return nil
   end
 
   -- An airport said by a distinctive part of its navdata name, where an airport is meant ("destination
@@ -1913,7 +1971,7 @@ return function(H, f, compass)
     -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant; one typed in lower
     -- case straight after the word, "orig eddf, dest eham", is that airport)
     local spelled = spelled_airport(self, s) or typed_airport(self, s)
-    local near = spelled or (a and self:airport_by_name(s.b, s.e, a, true))
+    local near = spelled or (a and self:airport_of_city_said(s.b, s.e, a)) or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
     -- (a part of a name only near the aircraft: "Madrid" anywhere is SKMA, in Colombia)
     if not airport and #w == 0 and a then
