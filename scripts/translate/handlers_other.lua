@@ -1089,12 +1089,16 @@ return function(H, f, compass)
     local beside = self.world.airports_beside_navaids
     -- (a city whose large airports the navdata names otherwise too, beside its navaids, is no one airport:
     -- "Montreal" is CYMX "MONTREAL INTL MIRABEL" or CYUL "PIERRE ELLIOTT TRUDEAU INTL", asked)
-    local of_city, by_navaid = city and within(city), beside and within(beside)
+    local of_city, navaids, by = city and within(city), self.world.navaids_named, self.world.airports_beside
     local function city_airports(phrase)
       local ids = of_city(phrase)
-      if #ids ~= 1 or not by_navaid or not class then return ids end
-      for _, id in ipairs(by_navaid(phrase)) do
-        if id ~= ids[1] and class(id) == "LARGE" then ids[#ids + 1] = id end
+      if #ids ~= 1 or not near or not navaids or not by or not class then return ids end
+      for _, nav in ipairs(navaids(phrase, near.lat, near.lon, L.navaid_range_nm)) do
+        for _, id in ipairs(by(nav, near.lat, near.lon, L.beside_navaid_nm)) do
+          local known = false
+          for _, x in ipairs(ids) do known = known or x == id end
+          if not known and class(id) == "LARGE" then ids[#ids + 1] = id end
+        end
       end
       return ids
     end

@@ -452,6 +452,9 @@ return {
   navaid_range_nm = 250,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)
   city_nm = 30,
+  -- an airport this near a navaid named after a city [NM] is one of that city's ("Montreal": CYUL, 4 NM from the
+  -- MONTREAL NDB; NavDb::kBesideNavaidNm)
+  beside_navaid_nm = 10,
   -- the little words inside a place's name ("San Sebastian de los Reyes") that the navdata's short form of
   -- it leaves out ("S.S. REYES"); a name of three words or more said whole is looked for as said and as the
   -- initials of its words before the last, these left out, then the last word
