@@ -433,7 +433,7 @@ return {
   -- fractions of an hour, a minute or a second said in words ("half an hour", "a tenth of a second")
   fractions = { half = 0.5, quarter = 0.25, fifth = 0.2, tenth = 0.1, twentieth = 0.05, hundredth = 0.01 },
   -- how many times real time, said in words
-  multipliers = { twice = 2, double = 2, thrice = 3, half = 0.5 },
+  multipliers = { twice = 2, double = 2, thrice = 3, triple = 3, quadruple = 4, half = 0.5 },
   -- a spoken callsign matched to an aircraft it does not spell exactly is
   -- confirmed by a question; strict: whenever more than one aircraft flies,
   -- and with one aircraft too when `alone` (any airline, digit or letter that

@@ -332,7 +332,7 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
-  rule { "speed spd airspeed", false, prev = { 2, "half double" } }
+  rule { "speed spd airspeed", false, prev = { 2, "half double triple quadruple" } }
   rule { "speed spd airspeed", "spd" }
   rule { "slow slower", "dtmult", near = { 3, "@sim" } }
   -- "slow everything down to half speed": the clock, when no aircraft is named
@@ -1204,6 +1204,11 @@ return function(intent, rule, words)
   -- said with an on or off word: "detection on, look ahead 5 minutes")
   rule { "detection asas cd", false, near = { 2, "look lookahead dtlook" }, when = function(g, i)
     return not g:word_in(math.max(1, i - 3), math.min(#g.t + 1, i + 4), "@on @off")
+  end }
+  -- "look-ahead five minutes on the conflict probe", "probe look-ahead two minutes": the conflict probe is
+  -- conflict detection, named as the setting's owner (no switch)
+  rule { "probe", false, when = function(g, i)
+    return g:word_in(1, #g.t + 1, "look lookahead dtlook") and not g:word_in(1, #g.t + 1, "@on @off")
   end }
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
