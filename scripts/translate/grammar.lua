@@ -165,11 +165,12 @@ local function know_all(v, seen)
   -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
   -- keep, lexicon.foreign_digits are digits only beside another, lexicon.atc_units name a station only
   -- in the addressing position, lexicon.label_roles only a speaker's label; lexicon.city_airports are places,
-  -- accounted for only where one is read: they account for no word)
+  -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
+  -- lexicon.nationless_registrations are letters of a registration: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles
-      or v == lexicon.addressed_roles then
+      or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations then
     return
   end
   seen[v] = true

@@ -3446,3 +3446,62 @@ do
   check(ex("KLM12 330 and turn left 090"):match("^ASK .*'330'") ~= nil, "a number before 'and'")
   check_eq(ex("KLM12 250 kts, turn left 090"), "SPD KLM12 250 ; HDG KLM12 90 LEFT")
 end
+
+-- A sim supervisor's label ("sup:", "sim sup:", "sup,") is no part of the request
+do
+  local _, ex = scene({ "CRE WJA88 B738 50 -100 090 FL300 280" })
+  check_eq(ex("sup: pause the simulation"), "HOLD")
+  check_eq(ex("sim sup: WestJet 88 climb FL340"), "ALT WJA88 FL340")
+  check_eq(ex("sup, fast forward two minutes"), "FF 120")
+  check(ex("sup"):match("^ASK") ~= nil, "a label alone says nothing")
+end
+
+-- The wrong value a pilot read back, named after the corrected instruction ("..., you said seven",
+-- "..., readback was one one thousand"), is dropped; the instruction stands. Not at the start of a request,
+-- nor with other words after the values
+do
+  local _, ex = scene({ "CRE ROU1766 A320 45 -75 090 FL200 280" })
+  check_eq(ex("Rouge 1766 negative, climb and maintain flight level two four zero, you read back two two zero"),
+    "ALT ROU1766 FL240")
+  check_eq(ex("ROU1766 readback incorrect, turn left heading 150, you said 160."), "HDG ROU1766 150 LEFT")
+  check_eq(ex("ROU1766 reduce speed 250, your readback was two six zero"), "SPD ROU1766 250")
+  check(ex("ROU1766 you said seven"):match("^ASK") ~= nil, "no instruction before it")
+  check(ex("ROU1766 climb FL240, you said 220 so climb FL250"):match("^ASK") ~= nil, "more after the values")
+end
+
+-- A Canadian registration said without its C ("Foxtrot Alpha Bravo Kilo" for C-FABK) is that aircraft
+-- when no aircraft is the four letters themselves; other nationality letters are still asked about
+do
+  local _, ex = scene({ "CRE CFABK C172 45 -75 090 3000 100", "CRE GOBCD C152 45.2 -75 090 3000 90" })
+  check_eq(ex("Foxtrot Alpha Bravo Kilo climb to 4500"), "ALT CFABK 4500")
+  check_eq(ex("Cessna Foxtrot Alpha Bravo Kilo turn right heading 120"), "HDG CFABK 120 RIGHT")
+  check_eq(ex("Golf Oscar Bravo Charlie Delta descend 2500"), "ALT GOBCD 2500")
+  check(ex("Oscar Bravo Charlie Delta descend 2500"):match("^ASK") ~= nil, "no Canadian registration")
+end
+
+-- A new aircraft said with its airline whole and a flight number no aircraft of it has ("Jazz 7455" with
+-- JZA7721 flying) is a new callsign, no slip: "new target, ...", a request opening with it and its type; a
+-- Boeing family said as its number ("seven forty-seven", "seven thirty-seven max eight") and "Airbus three
+-- nineteen" are types where traffic is created
+do
+  local _, ex = scene({ "CRE JZA7721 DH8D 45 -75 090 9000 240", "CRE WJA12 B738 45.5 -75 090 FL250 280",
+    "DEFWPT DOTTY 45.3 -75.3" })
+  check_eq(ex("new target: Jazz 7310, DH8D, over DOTTY, heading 180, 8000, 220 knots"),
+    "CRE JZA7310 DH8D DOTTY 180 8000 220")
+  check_eq(ex("Jazz 7310, DH8D, at DOTTY, heading 180, 8000, 220 knots"), "CRE JZA7310 DH8D DOTTY 180 8000 220")
+  check_eq(ex("Jazz 7721 heading 180"), "HDG JZA7721 180")
+  check_eq(ex("create WestJet 99, seven thirty-seven max eight, at DOTTY, heading 270, FL200, 280 knots"),
+    "CRE WJA99 B38M DOTTY 270 FL200 280")
+  check_eq(ex("create WestJet 99, Airbus three nineteen, at DOTTY, heading 270, FL200, 280 knots"),
+    "CRE WJA99 A319 DOTTY 270 FL200 280")
+  check(ex("create WestJet 99, seven thirty seven, at DOTTY, heading 270, FL200, 280 knots"):match("^ASK") ~= nil,
+    "a family names no one variant")
+end
+
+-- The conflict probe named as a look-ahead's owner; "triple speed"
+do
+  local _, ex = scene({ "CRE WJA88 B738 50 -100 090 FL300 280" })
+  check_eq(ex("probe look-ahead three minutes"), "DTLOOK 180")
+  check_eq(ex("set the look ahead on the conflict probe to 4 minutes"), "DTLOOK 240")
+  check(ex("probe WJA88"):match("^ASK") ~= nil, "a probe with no look-ahead")
+end
