@@ -3505,3 +3505,42 @@ do
   check_eq(ex("set the look ahead on the conflict probe to 4 minutes"), "DTLOOK 240")
   check(ex("probe WJA88"):match("^ASK") ~= nil, "a probe with no look-ahead")
 end
+
+-- An airport said as its city and a part of its navdata name ("Montreal Mirabel" -> CYMX "MONTREAL INTL
+-- MIRABEL", "Toronto City Centre" -> CYTZ beside the TORONTO VOR); a city whose large airports the navdata
+-- names otherwise ("Montreal": CYMX, CYUL) is asked about, and so is a name the city does not hold
+do
+  local nav, ex = navscene({ "CRE ACA1 A320 45.3 -74.5 090 FL200 280", "CRE WJA2 B738 43.9 -79.9 090 FL200 280" },
+    "airports said as city and name")
+  if nav then
+    check_eq(ex("ACA1 origin Montreal Mirabel"), "ORIG ACA1 CYMX")
+    check_eq(ex("WJA2 destination Toronto City Centre"), "DEST WJA2 CYTZ")
+    check_eq(ex("ACA1 destination Montreal"), "ASK Which airport is 'montreal': CYMX or CYUL?")
+    check(ex("ACA1 destination Ottawa Trudeau"):match("^ASK .*'Trudeau'") ~= nil, "Trudeau is no Ottawa airport")
+  end
+end
+
+-- A crossing restriction at a distance from a place ("cross 12 miles west of YUL at 9000") is ATDIST there
+-- with its level or speed; a place squawk does not know is asked about
+do
+  local nav, ex = navscene({ "CRE ACA1 A320 45.3 -74.5 090 FL200 280" }, "crossing restrictions at a distance")
+  if nav then
+    check_eq(ex("ACA1 cross one two miles west of YUL at 9000"), "ATDIST ACA1 YUL 12 ALT ACA1 9000")
+    check_eq(ex("ACA1 cross 15 miles from YUL at 250 knots"), "ATDIST ACA1 YUL 15 SPD ACA1 250")
+    check(ex("ACA1 cross 20 miles from Gotham at 9000"):match("^ASK .*'Gotham'") ~= nil, "an unknown place")
+  end
+end
+
+-- A place said after "over" that an airport and a navaid beside it name under other idents ("over
+-- Sherbrooke": CYSC, the YSC VORTAC) is asked about where traffic is created; "at Sherbrooke" is the airport,
+-- "the Sherbrooke VOR" the navaid, "the Ottawa VOR" the VOR YOW, not the DME IOW of that name
+do
+  local nav, ex = navscene({}, "places an airport and a navaid name")
+  if nav then
+    check(ex("create JZA55 DH8D over Sherbrooke heading 090 7000 200 knots"):match("^ASK Which place is meant") ~= nil,
+      "airport or navaid")
+    check_eq(ex("create JZA55 DH8D at Sherbrooke heading 090 7000 200 knots"), "CRE JZA55 DH8D CYSC 90 7000 200")
+    check_eq(ex("create JZA55 DH8D over the Sherbrooke VOR heading 090 7000 200 knots"), "CRE JZA55 DH8D YSC 90 7000 200")
+    check_eq(ex("where is the Ottawa VOR"), "POS YOW")
+  end
+end
