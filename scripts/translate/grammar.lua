@@ -3592,15 +3592,17 @@ local function spelled_registrations(text, fleet)
         if l:match("^%a$") and lead == #letters then lead = lead + 1 end
         letters, last = letters .. l, j
       end
-      -- (a Canadian registration is said without its nationality letter, "Golf Kilo Whiskey Alpha" for
-      -- C-GKWA: the four letters after C of lexicon.nationless_registrations, when no aircraft is the four
-      -- letters themselves)
+      -- (a Canadian registration is said after the aircraft's maker or model without its nationality letter,
+      -- "Cessna Golf Kilo Whiskey Alpha" for the C172 C-GKWA: the four letters after C of
+      -- lexicon.nationless_registrations, when no aircraft is the four letters themselves; the letters alone
+      -- are confirmed)
       local held = {}
       for _, a in ipairs(#letters >= 4 and fleet or {}) do held[a.id:upper()] = true end
-      local nationless = #letters == 4 and not held[letters]
+      local nationless = #letters == 4 and not held[letters] and first > k and set
       for _, a in ipairs(#letters >= 4 and fleet or {}) do
         local id = a.id:upper()
-        if id == letters or (nationless and id:sub(2) == letters and NATIONLESS[id:sub(1, 1) .. letters:sub(1, 1)]) then
+        if id == letters or (nationless and id:sub(2) == letters and NATIONLESS[id:sub(1, 1) .. letters:sub(1, 1)]
+            and a.type and set[a.type:upper()]) then
           local own = first > k and set and a.type and set[a.type:upper()]
           return text:sub(1, (own and w or words[first])[2] - 1) .. a.id .. text:sub(words[last][3])
         end

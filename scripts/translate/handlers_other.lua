@@ -944,14 +944,16 @@ return function(H, f, compass)
       end
       return airport
     end
-    -- (where no aircraft is meant, a name said after "over", "above", ... that an airport and a navaid within
-    -- lexicon.city_nm of it both bear under other idents, "over Sherbrooke": CYSC and the YSC VORTAC, is asked
-    -- about, the airport kept; "at Sherbrooke" is the airport)
+    -- (where no aircraft is meant, a name said after "over", "above", ... that an airport other than a large
+    -- one and a navaid within lexicon.city_nm of it both bear under other idents, "over Sherbrooke": the
+    -- medium CYSC and the YSC VORTAC, is asked about, the airport kept; "at Sherbrooke" is the airport, and so
+    -- is "over Schiphol", a large airport, as a large airport is what its name means)
     local function beside(airport)
-      local at = self.world.user_waypoint_at
+      local at, class = self.world.user_waypoint_at, self.world.airport_class
       local lat, lon = nil, nil
       local k = self.airport_said_at
-      if at and not a and k and self:word(k - 1, "@place_words") and not self:word(k - 1, "at") then
+      if at and class and class(airport) ~= "LARGE" and not a and k and self:word(k - 1, "@place_words")
+          and not self:word(k - 1, "at") then
         lat, lon = at(airport)
       end
       if not lat then return airport end

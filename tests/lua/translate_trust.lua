@@ -3469,14 +3469,16 @@ do
   check(ex("ROU1766 climb FL240, you said 220 so climb FL250"):match("^ASK") ~= nil, "more after the values")
 end
 
--- A Canadian registration said without its C ("Foxtrot Alpha Bravo Kilo" for C-FABK) is that aircraft
--- when no aircraft is the four letters themselves; other nationality letters are still asked about
+-- A Canadian registration said after the aircraft's maker or model without its C ("Cessna Foxtrot Alpha
+-- Bravo Kilo" for the C172 C-FABK) is that aircraft when no aircraft is the four letters themselves; the
+-- letters alone, another maker, or other nationality letters are still asked about
 do
   local _, ex = scene({ "CRE CFABK C172 45 -75 090 3000 100", "CRE GOBCD C152 45.2 -75 090 3000 90" })
-  check_eq(ex("Foxtrot Alpha Bravo Kilo climb to 4500"), "ALT CFABK 4500")
   check_eq(ex("Cessna Foxtrot Alpha Bravo Kilo turn right heading 120"), "HDG CFABK 120 RIGHT")
   check_eq(ex("Golf Oscar Bravo Charlie Delta descend 2500"), "ALT GOBCD 2500")
-  check(ex("Oscar Bravo Charlie Delta descend 2500"):match("^ASK") ~= nil, "no Canadian registration")
+  check(ex("Foxtrot Alpha Bravo Kilo climb to 4500"):match("^ASK") ~= nil, "the letters alone")
+  check(ex("Piper Foxtrot Alpha Bravo Kilo climb to 4500"):match("^ASK") ~= nil, "another maker")
+  check(ex("Cessna Oscar Bravo Charlie Delta descend 2500"):match("^ASK") ~= nil, "no Canadian registration")
 end
 
 -- A new aircraft said with its airline whole and a flight number no aircraft of it has ("Jazz 7455" with
@@ -3531,9 +3533,10 @@ do
   end
 end
 
--- A place said after "over" that an airport and a navaid beside it name under other idents ("over
--- Sherbrooke": CYSC, the YSC VORTAC) is asked about where traffic is created; "at Sherbrooke" is the airport,
--- "the Sherbrooke VOR" the navaid, "the Ottawa VOR" the VOR YOW, not the DME IOW of that name
+-- A place said after "over" that an airport other than a large one and a navaid beside it name under other
+-- idents ("over Sherbrooke": the medium CYSC, the YSC VORTAC) is asked about where traffic is created; "at
+-- Sherbrooke" is the airport, "the Sherbrooke VOR" the navaid, "over Ottawa" the large CYOW, "the Ottawa VOR"
+-- the VOR YOW, not the DME IOW of that name
 do
   local nav, ex = navscene({}, "places an airport and a navaid name")
   if nav then
@@ -3542,5 +3545,6 @@ do
     check_eq(ex("create JZA55 DH8D at Sherbrooke heading 090 7000 200 knots"), "CRE JZA55 DH8D CYSC 90 7000 200")
     check_eq(ex("create JZA55 DH8D over the Sherbrooke VOR heading 090 7000 200 knots"), "CRE JZA55 DH8D YSC 90 7000 200")
     check_eq(ex("where is the Ottawa VOR"), "POS YOW")
+    check_eq(ex("create JZA55 DH8D over Ottawa heading 090 7000 200 knots"), "CRE JZA55 DH8D CYOW 90 7000 200")
   end
 end
