@@ -3506,6 +3506,8 @@ do
   check_eq(ex("probe look-ahead three minutes"), "DTLOOK 180")
   check_eq(ex("set the look ahead on the conflict probe to 4 minutes"), "DTLOOK 240")
   check(ex("probe WJA88"):match("^ASK") ~= nil, "a probe with no look-ahead")
+  check_eq(ex("triple speed please"), "DTMULT 3")
+  check_eq(ex("run the sim at quadruple speed"), "DTMULT 4")
 end
 
 -- An airport said as its city and a part of its navdata name ("Montreal Mirabel" -> CYMX "MONTREAL INTL
