@@ -1752,6 +1752,18 @@ function G:self_corrected()
     end
     local p = a - 1  -- the last instruction word before the run
     while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
+    -- ("add BOBTA then DEBEK, actually just add ERBUS at the end of his route": with no instruction word
+    -- before the run, the instruction said in its place names its verb again; the words from that verb's
+    -- first saying are taken back)
+    local v = self:word(c, SC_ONLY) and c + 1 or c
+    if marked and p < 1 and v <= #self.t and self:intent_at(v) and self.t[v].kind == "word" then
+      for k = a - 1, 1, -1 do
+        if self.t[k].kind == "word" and self.t[k].text == self.t[v].text then
+          p = k
+          break
+        end
+      end
+    end
     -- (with no instruction word before the run, "put the Fedex and the Spirit at FL350 ... actually just the
     -- Spirit", only the aircraft narrowed)
     if marked and c <= #self.t and (p >= 1 or (self:word(c, SC_ONLY) and self:has_ref(c + 1, c + 3, "aircraft"))) then

@@ -3550,3 +3550,13 @@ do
     check_eq(ex("create JZA55 DH8D over Ottawa heading 090 7000 200 knots"), "CRE JZA55 DH8D CYOW 90 7000 200")
   end
 end
+
+-- A correction with no instruction word before it that says its verb again ("add ALPHA then BRAVO, actually
+-- just add CHARL at the end of the route"): the words from the verb's first saying are taken back
+do
+  local _, ex = scene({ "CRE WJA12 B738 45.5 -75 090 FL250 280", "DEFWPT ALPHA 45.6 -74.8", "DEFWPT BRAVO 45.7 -74.6",
+    "DEFWPT CHARL 45.8 -74.4" })
+  check_eq(ex("WJA12 add ALPHA then BRAVO, actually just add CHARL at the end of the route"), "ADDWPT WJA12 CHARL")
+  check_eq(ex("WJA12 add ALPHA and BRAVO, sorry, add CHARL to the end of his route"), "ADDWPT WJA12 CHARL")
+  check(ex("WJA12 add ALPHA then BRAVO, actually just CHARL"):match("^ASK") ~= nil, "no verb said again")
+end
