@@ -1861,6 +1861,38 @@ function G:self_corrected()
   end
 end
 
+-- "maintain 280 knots until HUMPP... correction, until PAE", "via ALPHA, sorry, via BRAVO": a place, then a
+-- run of punctuation and correction words (lexicon.correction, lexicon.self_correction's markers) and the
+-- same word before another place: the first place is the one corrected, and it is taken back with its word
+-- and the run (marked used and noted).
+local PLACE_CORRECTION = set_of(lexicon.correction)
+for w in pairs(SC_MARKERS) do PLACE_CORRECTION[w] = true end
+function G:places_corrected()
+  local starts = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "waypoint" then starts[r.b] = r end
+  end
+  for _, before in ipairs(self.refs) do
+    local w = before.kind == "waypoint" and before.b > 1 and self.t[before.b - 1]
+    local c, marked = before.e, false
+    while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler or SC_WORDS[self.t[c].text]
+        or PLACE_CORRECTION[self.t[c].text]) do
+      marked = marked or PLACE_CORRECTION[self.t[c].text] ~= nil
+      c = c + 1
+    end
+    if w and w.kind == "word" and marked and self:word(c, w.text) and starts[c + 1] then
+      self:mark_used(before.b - 1, c)
+      for k = before.b - 1, c - 1 do self.noted[k] = true end
+      local refs = {}
+      for _, r in ipairs(self.refs) do
+        if r.b < before.b - 1 or r.b >= c then refs[#refs + 1] = r end
+      end
+      self.refs = refs
+      return
+    end
+  end
+end
+
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
@@ -3947,6 +3979,7 @@ function M.translate(text, world)
   end
   local note = g:not_simulated()
   g:self_corrected()
+  g:places_corrected()
   g:question_back()
   g:refused()
   g:stations()

@@ -3560,3 +3560,14 @@ do
   check_eq(ex("WJA12 add ALPHA and BRAVO, sorry, add CHARL to the end of his route"), "ADDWPT WJA12 CHARL")
   check(ex("WJA12 add ALPHA then BRAVO, actually just CHARL"):match("^ASK") ~= nil, "no verb said again")
 end
+
+-- A place corrected after the same word ("until ALPHA... correction, until BRAVO", "via ALPHA, sorry, via
+-- BRAVO"): the first place is taken back; a place said after a correction without its word is still asked
+do
+  local _, ex = scene({ "CRE WJA12 B738 45.5 -75 090 FL250 280", "DEFWPT ALPHA 45.6 -74.8", "DEFWPT BRAVO 45.7 -74.6",
+    "ADDWPT WJA12 ALPHA", "ADDWPT WJA12 BRAVO" })
+  check_eq(ex("WJA12 maintain 270 knots until ALPHA... correction, until BRAVO"), "SPD WJA12 270")
+  check_eq(ex("WJA12 proceed direct ALPHA, sorry, direct BRAVO"), "DIRECT WJA12 BRAVO")
+  check(ex("WJA12 maintain 270 knots until ALPHA... correction, BRAVO"):match("^ASK .*'ALPHA'") ~= nil,
+    "no word said again")
+end
