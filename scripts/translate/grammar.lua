@@ -3666,6 +3666,20 @@ local AIRLINE_WORDS = {}
 -- (one-word telephonies, and one-word names an airline is known by: "the British one")
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
 for _, a in ipairs(names.common) do AIRLINE_WORDS[a[1]] = AIRLINE_WORDS[a[1]] or a[2] end
+-- "put in a Transat A321, TSC 302, at FRANX": an airline's ICAO code typed in capitals apart from its flight
+-- number is joined to it when the request names that airline by a word of its own ("Transat": TSC)
+local function named_airline_ids(text)
+  if not text:find("%u%u%u%s+%d") then return text end
+  local said = {}
+  for w in text:gmatch("%a+") do
+    local code = AIRLINE_WORDS[w:lower()]
+    if code then said[code] = true end
+  end
+  return (text:gsub("%f[%w](%u%u%u)%s+(%d+%a?)%f[%W]", function(code, n)
+    if said[code] then return code .. n end
+    return nil
+  end))
+end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
@@ -3937,7 +3951,7 @@ function M.translate(text, world)
       return (w:gsub("/", " "))
     end)
   end
-  text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
+  text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")

@@ -3500,6 +3500,14 @@ do
     "a family names no one variant")
 end
 
+-- An airline's ICAO code typed apart from its flight number where the request names the airline ("a Porter
+-- Dash 8, POE 77"): one callsign; a code the request does not name stays apart and is asked about
+do
+  local _, ex = scene({ "CRE WJA12 B738 45.5 -75 090 FL250 280", "DEFWPT DOTTY 45.3 -75.3" })
+  check_eq(ex("add a Porter DH8D, POE 77, at DOTTY, heading 090, 8000, 220 knots"), "CRE POE77 DH8D DOTTY 90 8000 220")
+  check(ex("add a DH8D, POE 77, at DOTTY, heading 090, 8000, 220 knots"):match("^ASK") ~= nil, "no airline named")
+end
+
 -- The conflict probe named as a look-ahead's owner; "triple speed"
 do
   local _, ex = scene({ "CRE WJA88 B738 50 -100 090 FL300 280" })
