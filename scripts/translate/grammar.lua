@@ -3673,7 +3673,7 @@ local function named_airline_ids(text)
   local said = {}
   for w in text:gmatch("%a+") do
     local code = AIRLINE_WORDS[w:lower()]
-    if code then said[code] = true end
+    if code and code ~= w:upper() then said[code] = true end  -- (the code itself names no airline: "KLM 36 14")
   end
   return (text:gsub("%f[%w](%u%u%u)%s+(%d+%a?)%f[%W]", function(code, n)
     if said[code] then return code .. n end
