@@ -331,7 +331,7 @@ return {
   -- (an episode: one run of a learning environment)
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode" },
   -- (an agent: an aircraft, in a learning environment's words)
-  aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent", "target" },
+  aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes" },

@@ -517,6 +517,9 @@ return function(intent, rule, words)
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
+  -- "new target: Jazz 7310, DH8D, ...": a radar target, when a new callsign or a type follows ("new target
+  -- altitude" is no aircraft)
+  rule { "new", "create", next = "target", when = function(g, i) return g:new_aircraft_follows(i + 1) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
   -- "append 52.6, 4.2 as a waypoint for EZY45": a position added as a waypoint of an aircraft's
   rule { "add append insert", "addwpt", near = { 8, "@waypoint_nouns" }, when = function(g, i)

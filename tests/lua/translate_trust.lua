@@ -3492,6 +3492,7 @@ do
     "CRE JZA7310 DH8D DOTTY 180 8000 220")
   check_eq(ex("Jazz 7310, DH8D, at DOTTY, heading 180, 8000, 220 knots"), "CRE JZA7310 DH8D DOTTY 180 8000 220")
   check_eq(ex("Jazz 7721 heading 180"), "HDG JZA7721 180")
+  check_eq(ex("WJA12 new target altitude FL300"), "ALT WJA12 FL300")
   check_eq(ex("create WestJet 99, seven thirty-seven max eight, at DOTTY, heading 270, FL200, 280 knots"),
     "CRE WJA99 B38M DOTTY 270 FL200 280")
   check_eq(ex("create WestJet 99, Airbus three nineteen, at DOTTY, heading 270, FL200, 280 knots"),
