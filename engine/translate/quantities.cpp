@@ -66,7 +66,10 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
     if (word_at(t, i, {"half", "double", "triple", "quadruple"})) {
       Quantity q;
       q.begin = i;
-      q.value = t[i].text == "half" ? 0.5 : t[i].text == "double" ? 2.0 : t[i].text == "triple" ? 3.0 : 4.0;
+      q.value = t[i].text == "half"     ? 0.5
+                : t[i].text == "double" ? 2.0
+                : t[i].text == "triple" ? 3.0
+                                        : 4.0;
       size_t j = i + 1;
       if (word_at(t, j, {"a", "an"})) ++j;
       if (q.value == 0.5 && word_at(t, j, {"second", "seconds", "sec"})) {
