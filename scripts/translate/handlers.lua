@@ -1093,10 +1093,13 @@ function m:at_distance(s)
     if (q.kind == "dist" or bare) and not self.taken[q.b] then
       local k = self:skip_fillers(q.e)
       if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
-      -- ("cross 15 miles north of Seattle at 10000": the side of the place the aircraft comes from)
-      if self:word(k, "@compass") and self:word(k + 1, "of from") and self:word_in(s.b, q.b, "cross crossing") then
-        self:explain(k, k + 1)
-        k = k + 1
+      -- ("cross 15 miles north of Seattle at 10000", "... south east of ...": the side of the place the
+      -- aircraft comes from)
+      local side = k
+      while side < k + 2 and self:word(side, "@compass") do side = side + 1 end
+      if side > k and self:word(side, "of from") and self:word_in(s.b, q.b, "cross crossing") then
+        self:explain(k, side)
+        k = side
       end
       local p = self:word(k, "from of to before") and self:skip_fillers(k + 1)
       local r = p and self:refs_in(p, p + 1, "waypoint")[1]

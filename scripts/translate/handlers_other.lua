@@ -1132,18 +1132,33 @@ return function(H, f, compass)
         for _, nav in ipairs(w.navaids_named(city, near.lat, near.lon, range)) do
           for _, id in ipairs(w.airports_beside(nav, near.lat, near.lon, L.city_nm)) do of_city[id] = true end
         end
+        -- (the airports named after the city anchor it, their neighbours within lexicon.city_nm its airports
+        -- too: "Montreal Trudeau" is CYUL, 17 NM from CYMX "MONTREAL INTL MIRABEL"; at most lexicon.city_anchors
+        -- of them. A word inside one airport's name names no city: "Ohare Midway" is no Chicago airport)
+        local anchors = {}
         for _, list in ipairs({ w.airports_named, w.airports_of_city }) do
           for _, name in ipairs({ city, L.city_airports[city] }) do
-            for _, id in ipairs(list and name and list(name, near.lat, near.lon, range) or {}) do of_city[id] = true end
+            for _, id in ipairs(list and name and list(name, near.lat, near.lon, range) or {}) do
+              if not of_city[id] and #anchors < L.city_anchors and w.user_waypoint_at then
+                local lat, lon = w.user_waypoint_at(id)
+                if lat then anchors[#anchors + 1] = { lat = lat, lon = lon } end
+              end
+              of_city[id] = true
+            end
           end
         end
         for n = 2, 1, -1 do
           if n == 1 or proper(i + 2) then
             local words = {}
             for k = i + 1, i + n do words[#words + 1] = self.t[k].text end
+            local phrase = table.concat(words, " ")
+            local by_city = {}
+            for _, at in ipairs(anchors) do
+              for _, id in ipairs(w.airports_with_words(phrase, at.lat, at.lon, L.city_nm)) do by_city[id] = true end
+            end
             local found = {}
-            for _, id in ipairs(w.airports_with_words(table.concat(words, " "), near.lat, near.lon, range)) do
-              if of_city[id] then found[#found + 1] = id end
+            for _, id in ipairs(w.airports_with_words(phrase, near.lat, near.lon, range)) do
+              if of_city[id] or by_city[id] then found[#found + 1] = id end
             end
             if #found == 1 then
               self:explain(i, self:word(i + n + 1, "@airport_nouns") and i + n + 2 or i + n + 1)

@@ -455,6 +455,9 @@ return {
   -- an airport this near a navaid named after a city [NM] is one of that city's ("Montreal": CYUL, 4 NM from the
   -- MONTREAL NDB; NavDb::kBesideNavaidNm)
   beside_navaid_nm = 10,
+  -- the airports named after a city whose surroundings (city_nm) hold the city's other airports, at most
+  -- ("Montreal Trudeau": CYUL beside CYMX "MONTREAL INTL MIRABEL")
+  city_anchors = 6,
   -- the little words inside a place's name ("San Sebastian de los Reyes") that the navdata's short form of
   -- it leaves out ("S.S. REYES"); a name of three words or more said whole is looked for as said and as the
   -- initials of its words before the last, these left out, then the last word

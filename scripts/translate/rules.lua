@@ -536,7 +536,8 @@ return function(intent, rule, words)
   rule { "cross crossing", "maintain", when = function(g, i)
     local q = g:quantities(i + 1, #g.t + 1)[1]
     if not q or q.kind ~= "dist" or q.b ~= g:skip_fillers(i + 1) then return false end
-    local k = g:word(q.e, "@compass") and q.e + 1 or q.e
+    local k = q.e
+    while k < q.e + 2 and g:word(k, "@compass") do k = k + 1 end  -- ("south east of")
     return g:word(k, "from of") and g:word_in(k + 1, #g.t + 1, "at")
   end }
   -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move

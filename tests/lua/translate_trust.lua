@@ -3531,6 +3531,14 @@ do
     check_eq(ex("ACA1 destination Montreal"), "ASK Which airport is 'montreal': CYMX or CYUL?")
     check(ex("ACA1 destination Ottawa Trudeau"):match("^ASK .*'Trudeau'") ~= nil, "Trudeau is no Ottawa airport")
   end
+  -- (an airport named after the city anchors it: KDCA lies 10 NM from KIAD "WASHINGTON DULLES INTL"; a word
+  -- inside one airport's name names no city)
+  nav, ex = navscene({ "CRE ACA4 A320 38.8 -77.3 090 FL200 280", "CRE AAL2 A321 41.5 -87.5 090 FL200 280" },
+    "airports said as city and name")
+  if nav then
+    check_eq(ex("ACA4 destination Washington Reagan"), "DEST ACA4 KDCA")
+    check(ex("AAL2 destination Ohare Midway"):match("^ASK") ~= nil, "Ohare is no city")
+  end
 end
 
 -- A crossing restriction at a distance from a place ("cross 12 miles west of YUL at 9000") is ATDIST there
@@ -3540,6 +3548,7 @@ do
   if nav then
     check_eq(ex("ACA1 cross one two miles west of YUL at 9000"), "ATDIST ACA1 YUL 12 ALT ACA1 9000")
     check_eq(ex("ACA1 cross 15 miles from YUL at 250 knots"), "ATDIST ACA1 YUL 15 SPD ACA1 250")
+    check_eq(ex("ACA1 cross two five miles south east of YUL at one zero thousand"), "ATDIST ACA1 YUL 25 ALT ACA1 10000")
     check(ex("ACA1 cross 20 miles from Gotham at 9000"):match("^ASK .*'Gotham'") ~= nil, "an unknown place")
   end
 end
