@@ -212,7 +212,8 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       } else if (hemisphere(t, j, lat) != 0) {
         set_position(q, lat, hemisphere(t, j, lat), t);
         ++j;
-      } else if (word_at(t, j, {"nm", "miles", "mile", "nautical"})) {
+      } else if (word_at(t, j,
+                         {"nm", "miles", "mile", "nautical", "dme"})) {  // ("20 DME": NM off a DME)
         q.kind = QKind::kDist;
         ++j;
         if (word_at(t, j, {"mile", "miles"})) ++j;

@@ -11,9 +11,9 @@
 //   ("52 N", "52.3N", "N52.3", "51 degrees 30 minutes north", "N52°18.6'",
 //   chart form "5230N 00445E" (degrees and minutes run together),
 //   "latitude 47.46"), time ("10 minutes", "0.5 s", "half a second"),
-//   distance ("2.5 NM", "9.26 km" = 5 NM), percent, multiplier ("5x", "half speed", "double speed",
-//   "triple speed"), angle ("20 degrees"), or plain. Values are in aviation units here (ft, kt,
-//   deg, fpm, s, NM): they go straight into TrafScript text. Never fails.
+//   distance ("2.5 NM", "9.26 km" = 5 NM, "20 DME"), percent, multiplier ("5x", "half speed",
+//   "double speed", "triple speed"), angle ("20 degrees"), or plain. Values are in aviation units
+//   here (ft, kt, deg, fpm, s, NM): they go straight into TrafScript text. Never fails.
 #pragma once
 
 #include <string>

@@ -208,6 +208,19 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "knock out KLM1234", "knock out the Cessna": an aircraft taken out of the simulation, nothing after it
+  rule { "knock", "delete", next = "out", when = function(g, i)
+    local k = g:skip_fillers(i + 2)
+    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
+      if r.b == k and r.exists then
+        for x = r.e, #g.t do
+          if g.t[x].kind ~= "punct" and not g.t[x].filler and not g:word(x, "@aircraft_nouns") then return false end
+        end
+        return true
+      end
+    end
+    return false
+  end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its
   -- aircraft between them, is no change of level

@@ -3509,6 +3509,14 @@ do
   check(ex("add a DH8D, POE 77, at DOTTY, heading 090, 8000, 220 knots"):match("^ASK") ~= nil, "no airline named")
 end
 
+-- "knock out" an aircraft, nothing after it: deleted; with an instruction after it, no deletion
+do
+  local _, ex = scene({ "CRE WJA12 B738 45.5 -75 090 FL250 280", "CRE CFABK C172 45 -75 090 3000 100" })
+  check_eq(ex("sup: knock out WestJet 12"), "DEL WJA12")
+  check_eq(ex("knock out the Cessna please"), "DEL CFABK")
+  check(ex("knock out WJA12 and climb"):match("^ASK") ~= nil, "an instruction after it")
+end
+
 -- The conflict probe named as a look-ahead's owner; "triple speed"
 do
   local _, ex = scene({ "CRE WJA88 B738 50 -100 090 FL300 280" })
@@ -3549,6 +3557,7 @@ do
     check_eq(ex("ACA1 cross one two miles west of YUL at 9000"), "ATDIST ACA1 YUL 12 ALT ACA1 9000")
     check_eq(ex("ACA1 cross 15 miles from YUL at 250 knots"), "ATDIST ACA1 YUL 15 SPD ACA1 250")
     check_eq(ex("ACA1 cross two five miles south east of YUL at one zero thousand"), "ATDIST ACA1 YUL 25 ALT ACA1 10000")
+    check_eq(ex("ACA1 cross 18 DME west of YUL at 7000"), "ATDIST ACA1 YUL 18 ALT ACA1 7000")
     check(ex("ACA1 cross 20 miles from Gotham at 9000"):match("^ASK .*'Gotham'") ~= nil, "an unknown place")
   end
 end
