@@ -212,9 +212,8 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       } else if (hemisphere(t, j, lat) != 0) {
         set_position(q, lat, hemisphere(t, j, lat), t);
         ++j;
-      } else if (word_at(t, j,
-                         {"nm", "miles", "mile", "nautical", "dme"})) {  // ("20 DME": NM off a DME)
-        q.kind = QKind::kDist;
+      } else if (word_at(t, j, {"nm", "miles", "mile", "nautical", "dme"})) {
+        q.kind = QKind::kDist;  // [NM] ("20 DME": nautical miles off a DME)
         ++j;
         if (word_at(t, j, {"mile", "miles"})) ++j;
       } else if (word_at(t, j, {"kph", "kmh"}) ||
