@@ -2603,6 +2603,32 @@ do
   check_eq(ex("TURN RYR3MX 30"), "HDG RYR3MX 30")  -- TrafScript in capitals: heading 030
 end
 
+-- Numbers whose kind or size the typing leaves open: a heading typed with two digits and no leading zero
+-- ("hdg 27": 027 or 270?), a bare three-digit number kept or maintained ("keep it at 230": a level or a
+-- speed, unless it is the aircraft's own present one), a side and a heading straight behind ("turn right
+-- 270" from 090: a reversal or a turn of 270 degrees?) are asked, naming both readings; three typed digits
+-- led by zero after a level verb are a flight level ("descend 070")
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250", "CRE TST8M A320 45 10 200 FL240 280" })
+  check(ex("tst7k hdg 27"):match("^ASK What heading should TST7K fly: 027 or 270%?") ~= nil, ex("tst7k hdg 27"))
+  check(ex("tst7k heading 12 please"):match("^ASK .*012 or 120") ~= nil, ex("tst7k heading 12 please"))
+  check_eq(ex("TST7K HDG 27"), "HDG TST7K 27")  -- TrafScript in capitals: heading 027
+  check_eq(ex("tst7k hdg 95"), "HDG tst7k 95")  -- typed TrafScript: no other reading
+  check_eq(ex("tst7k hdg 027"), "HDG tst7k 027")
+  check(ex("tst7k keep it at 230"):match("^ASK Should TST7K fly FL230 or 230 knots%?") ~= nil, ex("tst7k keep it at 230"))
+  check(ex("tst8m maintain 310"):match("^ASK .*FL310 or 310 knots") ~= nil, ex("tst8m maintain 310"))
+  check_eq(ex("tst8m maintain 240"), "ALT TST8M FL240")  -- its own level
+  check_eq(ex("tst7k keep it at 250"), "SPD TST7K 250")  -- its own speed
+  check_eq(ex("tst7k maintain 230 kts"), "SPD TST7K 230")
+  check_eq(ex("tst7k maintain two three zero"), "SPD TST7K 230")
+  check_eq(ex("tst8m descend 070"), "ALT TST8M FL70")
+  check_eq(ex("tst7k climb 090"), "ALT TST7K FL90")
+  check(ex("tst7k turn right 270"):match("^ASK Should TST7K turn right by 270 degrees, or turn right onto heading 270") ~= nil,
+    ex("tst7k turn right 270"))
+  check_eq(ex("tst7k turn right heading 270"), "HDG TST7K 270 RIGHT")
+  check_eq(ex("tst8m l 170"), "HDG TST8M 170 LEFT")
+end
+
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
