@@ -675,6 +675,8 @@ local function written_forms(text)
   end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
+  -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7"
+  text = text:gsub("%f[%w](%a[%w_]*)%s*=%s*([%w%.%-])", "%1: %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
   text = text:gsub("%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"

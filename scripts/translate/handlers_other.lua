@@ -2107,9 +2107,10 @@ return function(H, f, compass)
       return self:emit("FF " .. f.num(half))
     end
     local q = first(self, s, { time = true, mult = true })
-    -- "FF 120": TrafScript's own word with a bare number, its seconds
+    -- "FF 120", "ff: 120", "ff=120": TrafScript's own word with a bare number, its seconds
     local plain = first(self, s, { plain = true })
-    if not q and self.t[s.trig].raw:upper() == "FF" and plain and plain.b == s.trig + 1 then
+    local set = self.t[s.trig + 1] and self.t[s.trig + 1].raw == ":" and 1 or 0
+    if not q and self.t[s.trig].raw:upper() == "FF" and plain and plain.b == s.trig + 1 + set then
       self:take(plain)
       return self:emit("FF " .. f.num(plain.value))
     end

@@ -2629,6 +2629,19 @@ do
   check_eq(ex("tst8m l 170"), "HDG TST8M 170 LEFT")
 end
 
+-- Settings typed key=value, as in a config or a log ("seed=7", "dt=0.5, dtmult=4", "reso=mvp"): the
+-- setting and its value, as with a space between; a key that names no setting is still asked about
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250" })
+  check_eq(ex("seed=7"), "SEED 7")
+  check_eq(ex("dt=0.5, dtmult=4"), "DT 0.5 ; DTMULT 4")
+  check_eq(ex("reso=mvp"), "RESO MVP")
+  check_eq(ex("pz=5nm"), "ZONER 5")
+  check_eq(ex("ff=90"), "FF 90")
+  check_eq(ex("tst7k spd=230"), "SPD TST7K 230")
+  check(ex("q=5"):match("^ASK ") ~= nil, ex("q=5"))
+end
+
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
