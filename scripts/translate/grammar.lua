@@ -938,6 +938,18 @@ function G:remark_sentence(k, instructed)
   return (instructed(k) or after) and self:commentary(k, e)
 end
 
+-- True when the colon at k follows "note" or "comment" opening the request and one sentence runs from it to
+-- the end ("note: run 3, seed 42, baseline no reso"): the note is the request, text for the log (ECHO),
+-- no remark beside an instruction
+local function whole_note(self, k)
+  if k - 1 ~= self:skip_fillers(1) or not self:word(k - 1, "note comment") or k >= #self.t then return false end
+  for x = k + 1, #self.t - 1 do
+    local t = self.t[x]
+    if t.kind == "punct" and t.text ~= "," and t.text ~= ":" then return false end
+  end
+  return true
+end
+
 local REASON_WORDS = word_set("@reason")
 function G:in_reason(i)
   if not self.reason then
@@ -972,7 +984,7 @@ function G:in_reason(i)
       local punct = t.kind == "punct"
       local start = k == 1 or (toks[k - 1].kind == "punct" and toks[k - 1].text ~= ",")
       if punct and t.text == "," then commas = commas + 1 end
-      if punct and t.text == ":" and self:word(k - 1, CM_LABELS) then
+      if punct and t.text == ":" and self:word(k - 1, CM_LABELS) and not whole_note(self, k) then
         -- ("descend to FL100, reason: lose the vertical overlap with TOM6RT": to the end of the sentence)
         inside, reason[k - 1] = true, true
       elseif punct and t.text == "," and (self.apart or {})[commas] and instructed(k)

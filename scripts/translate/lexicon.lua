@@ -96,6 +96,11 @@ return {
         "story", "study", "storyline", "narrative" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody" },
+    -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
+    chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
+        "thx", "pls", "haha", "idk",
+        -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")
+        "bugged", "buggy", "glitched", "glitchy", "coffee", "lunch", "brb" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",

@@ -855,7 +855,7 @@ return function(intent, rule, words)
   -- "where is the Air Portugal going?", "where's TAP447 headed to": the destination asked, not the
   -- position; the question opens the request and ends with its verb ("where is UAL57 going to cross
   -- GIPNO?" and "too high for where it's going" are no such question)
-  rule { "where where's", "dest", when = function(g, i)
+  rule { "where where's wheres", "dest", when = function(g, i)
     local e = math.min(#g.t + 1, i + 7)
     local k = g:find_word(i + 1, e, "going headed bound")
     if k == e or g:skip_fillers(1) ~= i then return false end
@@ -863,7 +863,7 @@ return function(intent, rule, words)
     return g.t[k + 1] == nil or g.t[k + 1].kind == "punct"
   end }
   rule { "where", "pos", next = "is are 's" }
-  rule { "where's", "pos" }
+  rule { "where's wheres", "pos" }  -- ("wheres the speedbird": typed without the apostrophe)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
   -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length
   rule { "doing", "pos", when = function(g, i)
@@ -1141,7 +1141,7 @@ return function(intent, rule, words)
   rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started", "write a message for the participant:
   -- Block 1 finished": the text after the colon
-  rule { "note log message", "echo", when = function(g, i)
+  rule { "note comment log message", "echo", when = function(g, i)
     for k = i + 1, math.min(#g.t, i + 4) do
       if g.t[k].kind == "punct" and g.t[k].text == ":" then return k < #g.t end
     end

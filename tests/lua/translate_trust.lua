@@ -2642,6 +2642,46 @@ do
   check(ex("q=5"):match("^ASK ") ~= nil, ex("q=5"))
 end
 
+-- "both" with no aircraft named before it is the two aircraft flying when only two fly ("turn both 20
+-- right", "where are they both"); with three or more it still asks which two
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250", "CRE TST8M A320 45 10 200 FL240 280" })
+  check_eq(ex("turn both 30 left"), "HDG TST7K 60 LEFT ; HDG TST8M 170 LEFT")
+  check_eq(ex("where are they both"), "POS TST7K ; POS TST8M")
+  check_eq(ex("both of them descend fl070"), "ALT TST7K FL70 ; ALT TST8M FL70")
+  local _, ex3 = scene({ "CRE TST7K A320 45 9 090 FL080 250", "CRE TST8M A320 45 10 200 FL240 280",
+    "CRE TST9Q A320 45 11 200 FL240 280" })
+  check(ex3("turn both 30 left"):match("^ASK Which two aircraft does 'both' mean") ~= nil, ex3("turn both 30 left"))
+end
+
+-- A question about where an aircraft is ("where is ryanair", "wheres the speedbird", "what's Ryanair doing")
+-- names the one aircraft of that airline flying, also without "the": a question, no cut-short callsign
+-- given an instruction ("ryanair climb fl200" still asks); typed chat shorthand ("rn", "lol", "thx") and a
+-- fault or a break given as the reason ("its bugged", "need coffee") carry no instruction
+do
+  local _, ex = scene({ "CRE RYR4TK B738 45 9 090 FL080 250", "CRE BAW77 A320 45 10 200 FL240 280",
+    "CRE EZY12 A320 45 11 200 FL240 280", "CRE EZY34 A320 45 11.5 200 FL240 280" })
+  check_eq(ex("where is ryanair"), "POS RYR4TK")
+  check_eq(ex("wheres the speedbird"), "POS BAW77")
+  check_eq(ex("what's ryanair doing rn"), "POS RYR4TK")
+  check(ex("where is easyjet"):match("^ASK Which ") ~= nil, ex("where is easyjet"))
+  check(ex("ryanair climb fl200"):match("^ASK ") ~= nil, ex("ryanair climb fl200"))
+  check_eq(ex("baw77 fl250 lol"), "ALT BAW77 FL250")
+  check_eq(ex("remove ezy12 its bugged"), "DEL EZY12")
+  check_eq(ex("freeze the sim, need coffee"), "HOLD")
+  check(ex("baw77 fl250 banana"):match("^ASK .*'banana'") ~= nil, ex("baw77 fl250 banana"))
+end
+
+-- A note opening the request, its one sentence the whole request ("note: run 3, seed 42, no reso",
+-- "comment: first episode"), is text for the log; a note beside an instruction stays a remark
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250" })
+  check_eq(ex("note: run 2, baseline"), "ECHO run 2 , baseline")
+  check_eq(ex("comment: first episode"), "ECHO first episode")
+  check_eq(ex("note to self: episode 3 is the head-on one. set lookahead 120"), "DTLOOK 120")
+  check_eq(ex("tst7k descend fl070, comment: lose the overlap"), "ALT TST7K FL70")
+end
+
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
