@@ -1493,6 +1493,18 @@ return function(H, f, compass)
   -- no flying aircraft ("EXIT1" reads like an id), else the word after
   -- "named"/"called"; nil when none.
   local function new_name(self, b, e)
+    -- "name MXPCTR", "call it MILROM", "name it REF1", "named CTR": the name given in words, before any place
+    -- said by its name ("circle around LIMC, name MXPCTR, ...": LIMC is where it is, no name)
+    for k = b, e - 2 do
+      local at = (self:word(k, "@named") or (self:word(k, "name call") and not self:word(k - 1, "the its a")))
+        and k + 1
+      if at and self:word(at, "it") then at = at + 1 elseif self:word(k, "call") then at = nil end
+      if at and at < e and self.t[at].kind == "word" and self.t[at].raw:match("^%w+$") then
+        self:explain(k, at)
+        self:mark_used(at, at + 1)
+        return self.t[at].raw:upper()
+      end
+    end
     local w = self:refs_in(b, e, "waypoint")
     if #w > 0 then return w[1].name end
     local a = self:refs_in(b, e, "aircraft")
@@ -1524,11 +1536,27 @@ return function(H, f, compass)
     return out
   end
 
+  -- Places said by their name in s that lie at one of the points `p` given in figures (within 0.1 degree:
+  -- "line from LIML to LIRF, call it MILROM: 45.445 9.277 41.804 12.251"): the points' names, explained
+  local function places_at_points(self, s, p)
+    for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+      local lat, lon
+      if self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(r.name) end
+      for _, c in ipairs(lat and p or {}) do
+        if math.abs(c[1] - lat) <= 0.1 and math.abs(c[2] - lon) <= 0.1 then
+          self:explain(r.b, r.e)
+          break
+        end
+      end
+    end
+  end
+
   -- A new shape's name and its points ("lat lon" strings) in s when `fits(#points)`; else asks `question`
   -- and gives nil.
   local function named_points(self, s, fits, question)
     local name, p = new_name(self, s.b, s.e), points(self, s.b, s.e)
     if not name or not fits(#p) then return self:need(question) end
+    places_at_points(self, s, p)
     local corners = {}
     for _, c in ipairs(p) do corners[#corners + 1] = f.num(c[1]) .. " " .. f.num(c[2]) end
     return name, table.concat(corners, " ")
@@ -1570,6 +1598,7 @@ return function(H, f, compass)
     if not name or not p or not radius then
       return self:need("To define the circle I need its name, centre (latitude and longitude) and radius in nautical miles.")
     end
+    places_at_points(self, s, { p })
     local levels = shape_levels(self, s, "circle " .. name)
     if not levels then return end
     self:emit(string.format("CIRCLE %s %s %s %s%s", name, f.num(p[1]), f.num(p[2]), f.num(radius), levels))

@@ -2682,6 +2682,22 @@ do
   check_eq(ex("tst7k descend fl070, comment: lose the overlap"), "ALT TST7K FL70")
 end
 
+-- A shape's name given in words ("name MXP1", "call it REF2", "name it C3") is its name, also when a place
+-- is said by its name too; that place is accounted for when it lies at one of the points given in figures
+-- (within 0.1 degree), and asked about when it does not
+do
+  local _, ex = navscene({}, "places named at a shape's points")
+  if ex then
+    check_eq(ex("circle round EHAM, name AMSCTR, 52.309 4.764 radius 12nm"), "CIRCLE AMSCTR 52.309 4.764 12")
+    check_eq(ex("line from EHAM to EDDF, call it AMSFRA: 52.309 4.764 50.033 8.570"),
+      "LINE AMSFRA 52.309 4.764 50.033 8.57")
+    check(ex("circle round EDDF, name AMSCTR, 52.309 4.764 radius 12nm"):match("^ASK .*'EDDF'") ~= nil,
+      ex("circle round EDDF, name AMSCTR, 52.309 4.764 radius 12nm"))
+  end
+  local _, ex2 = scene({})
+  check_eq(ex2("box named ZONE1 52 4 53 5"), "BOX ZONE1 52 4 53 5")
+end
+
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
