@@ -658,7 +658,29 @@ for _, word in ipairs({ "point", "decimal" }) do
   local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
   POINT_SAID[#POINT_SAID + 1] = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]"
 end
+-- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x"): the
+-- simulation's rate, written out as "sim speed x4" (a callsign-like "x4" or a bare "4x" names no aircraft)
+local function lone_multipliers(text)
+  if not text:find("%d[xX]") and not text:find("[xX]%d") then return text end
+  local words = {}
+  for b, w, e in text:gmatch("()(%S+)()") do words[#words + 1] = { b = b, w = w, e = e } end
+  local out, last = {}, 1
+  local function joins(t) return t ~= nil and (t.w:lower() == "then" or t.w:lower() == "and") end
+  for k, t in ipairs(words) do
+    local core, tail = t.w:match("^(.-)([,;%.!]?)$")
+    local n = core:match("^[xX](%d+%.?%d*)$") or core:match("^(%d+%.?%d*)[xX]$")
+    local prev, nx = words[k - 1], words[k + 1]
+    if n and (not prev or prev.w:match("[,;%.!:]$") or joins(prev)) and (tail ~= "" or not nx or joins(nx)) then
+      out[#out + 1] = text:sub(last, t.b - 1) .. "sim speed x" .. n .. tail
+      last = t.e
+    end
+  end
+  out[#out + 1] = text:sub(last)
+  return table.concat(out)
+end
+
 local function written_forms(text)
+  text = lone_multipliers(text)
   text = hyphened_types(spelled(heard_forms(negated_values(self_corrections(unlabelled(foreign_digits(text)))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more

@@ -1726,8 +1726,17 @@ return function(H, f, compass)
     -- "to" or "inbound")
     local to = self:find_word(s.trig, s.e, "to inbound")
     if self:word(to, "inbound") and self:word(to + 1, "to for") then to = to + 1 end
+    -- ("all heading for Fiumicino", "bound for LIRF": "for" after a verb of going)
+    local going = self:find_word(s.trig, s.e, "heading headed bound going")
+    if to == s.e and self:word(going + 1, "for") then to = going + 1 end
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
+    -- (a place after a verb of going that names no airport or waypoint is asked about, never dropped)
+    local k = to < s.e and not dest and self:word(to - 1, "going heading headed bound flying inbound all")
+      and self:skip_fillers(to + 1)
+    if k and k < s.e and self.t[k].kind == "word" and not self:word(k, "be") then
+      return self:need(string.format("Where should the random aircraft fly to? I heard '%s'.", self:raw(k, s.e)))
+    end
     local cmd = "MCRE " .. f.int(n.value)
     if #types > 0 or alt or spd or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
     if alt or spd or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end

@@ -457,10 +457,12 @@ return function(intent, rule, words)
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create cre spawn generate add", "mcre", near = { 3, "random" } }
   rule { "mcre", "mcre" }
-  -- "random traffic, 20 aircraft": the count said after
+  -- "random traffic, 20 aircraft", "random traffic, 12 b738": the count said after, of aircraft or of a type
   rule { "random", "mcre", next = "traffic", when = function(g, i)
     for k = i + 2, math.min(#g.t, i + 5) do
-      if g.t[k].kind == "number" and g:word(k + 1, "@counted_aircraft") then return true end
+      if g.t[k].kind == "number" and (g:word(k + 1, "@counted_aircraft") or g:has_ref(k + 1, k + 2, "type")) then
+        return true
+      end
     end
     return false
   end }
