@@ -987,6 +987,9 @@ return function(H, f, compass)
         end
         if nx and i + 1 < e and nx.kind == "word" and nx.alpha and not self.u:used(i + 1) then
           phrases[#phrases + 1] = { t.text .. " " .. nx.text, i + 2 }
+          -- ("saint prex" for the navdata's "ST. PREX", "st gallen" for "SAINT GALLEN")
+          local saint = L.saint_forms[t.text]
+          if saint then phrases[#phrases + 1] = { saint .. " " .. nx.text, i + 2 } end
         end
         if #t.text >= 4 and not t.keyword and not two_words then phrases[#phrases + 1] = { t.text, i + 1 } end
         for _, p in ipairs(phrases) do
@@ -1257,7 +1260,14 @@ return function(H, f, compass)
       self:explain(places[1].b, places[#places].b)
       point = self:waypoint(places[#places].b, s.e, id)
     end
-    local wp = to_dest or point or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
+    -- ("vlg6fx add DOGEX then direct it": the waypoint an add said before names, when the add is read with
+    -- the direct, which adds it)
+    local before = self:refs_in(s.b, s.trig, "waypoint")
+    local prior = before[#before]
+    local told = not added and prior and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
+      and self:word_in(math.max(s.b, prior.b - 2), prior.b, "add insert append include") and prior.name:upper()
+    if told then self:explain(math.max(s.b, prior.b - 2), prior.e) end
+    local wp = to_dest or point or told or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
         and self:word_in(s.trig, s.e, "there it") and added or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
     -- adverb that ends the clause
@@ -1390,6 +1400,15 @@ return function(H, f, compass)
       end
     end
     local lat, lon = position(qs, s.trig, self)
+    -- ("ezy73kl at 45.8 8.9 insert wpt": the position said after "at" before the verb, none after it)
+    local placed = self:find_word(s.b, s.trig, "at")
+    if not (lat and lon) and placed < s.trig and #self:refs_in(s.trig, s.e, "waypoint") == 0 then
+      local before = {}
+      for _, q in ipairs(qs) do
+        if q.b > placed and q.e <= s.trig then before[#before + 1] = q end
+      end
+      if before[1] and before[1].b == placed + 1 then lat, lon = position(before, placed + 1, self) end
+    end
     local name_e = (next_to and at > s.trig) and at or s.e
     local where, named
     if lat and lon then

@@ -544,6 +544,8 @@ return {
   turn_around = { "around", "opposite", "reverse" },
   -- names said before a value they introduce
   named = { "named", "called" },
+  -- a place name's "Saint" said in full or short, each tried as the other in navaid names ("saint prex", ST. PREX)
+  saint_forms = { saint = "st", st = "saint" },
   id_words = { "named", "called", "callsign", "id" },
   -- words after an airport's name ("Beijing Capital airport")
   -- air traffic units named by no airport or city ("Shanwick", "Scottish"; the rest are the navdata's

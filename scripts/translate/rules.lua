@@ -1165,12 +1165,14 @@ return function(intent, rule, words)
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "wind at 6.5 north 3.3 east from 220 at 15 knots", "a harmattan wind at 12N 8.5E, from 050, 20 knots": a
-  -- position straight after it, where it blows from said after that
+  -- position straight after it ("at" before it or none), where it blows from said after that
   -- ("wind at 53.4 -6.3 from 270 at 25 kts": a latitude and longitude in bare decimal degrees; "wind at
   -- 38.8 north 9.1 west, FL100, 310 degrees 25 knots": its direction in degrees and its speed in knots said
   -- after the position, no "from")
   rule { "wind winds", "wind", when = function(g, i)
-    local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or nil
+    -- ("wind 47.2 11.4 FL200 from 270 at 45 kts": the position straight after it, typed)
+    local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or g:quantities(i + 1, i + 2)[1]
+    if q and q.b == i + 1 and not q.number.typed then q = nil end
     local nx = q and q.kind == "plain" and g:quantities(q.e, q.e + 1)[1] or nil
     local pair = nx ~= nil and nx.kind == "plain" and q.number.typed and nx.number.typed
       and (q.number.digits or ""):find("%.") ~= nil and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
@@ -1260,6 +1262,11 @@ return function(intent, rule, words)
     return n
   end
   rule { "area", "area", prev = { 2, "deletion delete experiment" } }
+  -- "restrict sim area to box 45 6 48 13", "limit the simulation area to 45 6 48 13": the area traffic is
+  -- kept in (aircraft leaving it are deleted), two corners after it ("box" is its form, no shape named)
+  rule { "area", "area", prev = { 2, "@sim" }, when = function(g, i) return corners_after(g, i) == 2 end }
+  rule { "area", "area", prev = { 3, "restrict limit confine" }, when = function(g, i) return corners_after(g, i) == 2 end }
+  rule { "box", false, prev = { 2, "area" }, when = function(g, i) return corners_after(g, i) == 2 end }
   rule { "circle", "circle", near = { 3, "@named" } }
   -- "circle C1 centred on 52 4, radius 20 nm": a name straight after it and a centre
   rule { "circle", "circle", when = function(g, i)

@@ -2698,6 +2698,37 @@ do
   check_eq(ex2("box named ZONE1 52 4 53 5"), "BOX ZONE1 52 4 53 5")
 end
 
+-- Random traffic and the clock in an experimenter's notes: the count of a type after "random traffic,",
+-- the destination after "heading for" / "bound for" (a place after a verb of going that names nothing
+-- is asked), a multiplier typed alone as a clause ("then x4", ", 4x") the clock's rate
+do
+  local _, ex = scene({ "DEFWPT MYFIX 45 9" })
+  check_eq(ex("random traffic, 6 a320 at fl300 going to MYFIX"), "MCRE 6 A320 FL300 * MYFIX")
+  check_eq(ex("make 5 random ones all heading for MYFIX"), "MCRE 5 * * * MYFIX")
+  check(ex("make 5 random ones bound for atlantis"):match("^ASK .*'atlantis'") ~= nil, ex("make 5 random ones bound for atlantis"))
+  check_eq(ex("20 random aircraft to fill the sky"), "MCRE 20")
+  check_eq(ex("seed 3 then 10 random b738 then x8"), "SEED 3 ; MCRE 10 B738 ; DTMULT 8")
+  check_eq(ex("pause, 2x"), "HOLD ; DTMULT 2")
+end
+
+-- Areas and winds typed as notes: "restrict sim area to box 45 6 48 13" (two corners after the sim's
+-- area, "box" its form), a wind's position typed straight after "wind"; a waypoint's position said after
+-- "at" before the verb ("ezy1 at 45.8 8.9 insert wpt"); "add X then direct it" flies to X
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250", "DEFWPT MYFIX 45.5 9.5", "DEFWPT OTHFX 45.7 9.9",
+    "ADDWPT TST7K MYFIX" })
+  check_eq(ex("restrict sim area to box 44 8 46 10"), "AREA 44 8 46 10")
+  check_eq(ex("limit the area to 44 8 46 10"), "AREA 44 8 46 10")
+  check_eq(ex("wind 45.2 9.4 FL100 from 250 at 30 kts"), "WIND 45.2 9.4 FL100 250 30")
+  check_eq(ex("tst7k at 45.3 9.2 insert wpt"), "ADDWPT TST7K 45.3 9.2")
+  check_eq(ex("tst7k add OTHFX then direct it"), "ADDWPT TST7K OTHFX ; DIRECT TST7K OTHFX")
+  check(ex("tst7k add OTHFX then direct MYFIX"):match("^ASK .*'OTHFX'") ~= nil, ex("tst7k add OTHFX then direct MYFIX"))
+end
+do
+  local _, ex = navscene({ "CRE TST7K A320 46.4 6.6 090 FL080 250" }, "navaid names with Saint")
+  if ex then check_eq(ex("tst7k direct saint prex"), "ADDWPT TST7K SPR ; DIRECT TST7K SPR") end
+end
+
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
