@@ -575,7 +575,18 @@ local function role_dropped(text)
   if name and ADDRESSED[name:lower()] then return next_word end
   return text
 end
+local ASSENT = set_of(lexicon.assent)
+-- "... climb fl150? engineer: yes do it": a second speaker's label and assent after the request are dropped
+local function assent_dropped(text)
+  local said, label, reply = text:match("^(.-[%?%.!])%s*(%a+[%s%-]?%a*)%s*:%s*(.-)%s*[%.!]?$")
+  if not said or not all_roles(label) or reply == "" then return text end
+  for w in reply:lower():gmatch("[^%s,]+") do
+    if not ASSENT[w] then return text end
+  end
+  return said
+end
 local function unlabelled(text)
+  text = assent_dropped(text)
   local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
   if greeting and GREETINGS[greeting:lower()] then
     local said = role_dropped(after)

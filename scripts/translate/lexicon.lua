@@ -306,7 +306,11 @@ return {
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
   label_roles = { "operator", "op", "sim", "simulator", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
-                  "ai", "teammate", "assistant" },
+                  "ai", "teammate", "assistant", "engineer" },
+  -- a second speaker's label and assent after the request ("student: ity2011 climb fl150? engineer: yes do
+  -- it"): the request stands as said; any other word after such a label leaves the line as typed
+  assent = { "yes", "yeah", "yep", "ok", "okay", "sure", "do", "it", "go", "ahead", "fine", "approved",
+             "affirm", "correct", "please", "that", "right", "send" },
   -- of those, the machine teammate a controller talks to: it opens a line as its addressee even without a comma
   -- ("AI what's the Virgin's altitude?", "hey teammate descend ..."); a greeting of `greetings` may come first
   -- ("ok AI, ...", "hey teammate: ...")

@@ -2729,6 +2729,17 @@ do
   if ex then check_eq(ex("tst7k direct saint prex"), "ADDWPT TST7K SPR ; DIRECT TST7K SPR") end
 end
 
+-- A brand several airlines fly under said alone in a question ("where is the netjets": NJE or EJA), and a
+-- second speaker's label with an assent after the request ("student: ... climb fl150? engineer: yes do
+-- it"): the request as said; a label followed by anything but assent is read as typed
+do
+  local _, ex = scene({ "CRE NJE318 C56X 47.3 10.75 090 FL230 250", "CRE ITY2011 A319 41.85 11.8 070 FL090 240" })
+  check_eq(ex("where is the netjets"), "POS NJE318")
+  check_eq(ex("student: ity2011 climb fl150? engineer: yes do it"), "ALT ITY2011 FL150")
+  check_eq(ex("ity2011 climb fl150. instructor: ok go ahead"), "ALT ITY2011 FL150")
+  check(ex("ity2011 climb fl150? engineer: maybe later"):match("^ASK ") ~= nil, ex("ity2011 climb fl150? engineer: maybe later"))
+end
+
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
