@@ -73,6 +73,16 @@ local function spelling_kept()
   return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept }, keywords = keywords },
     { __index = lexicon })
 end
+-- SETTING_KEYS: the keys of a setting typed key=value ("seed=7", "pz=5nm", "hdg=270"): registry names and
+-- aliases, typed shorthand, and lexicon.setting_keys
+local SETTING_KEYS = {}
+do
+  for _, c in ipairs(squawk.sim.commands()) do
+    for _, w in ipairs({ c.name, table.unpack(c.aliases or {}) }) do SETTING_KEYS[w:lower()] = true end
+  end
+  for w in pairs(lexicon.shorthand) do SETTING_KEYS[w] = true end
+  for _, w in ipairs(lexicon.setting_keys) do SETTING_KEYS[w] = true end
+end
 local NAMES = squawk.translate.tables({ airlines = names.airlines, types = TYPES.types,
   designators = TYPES.designators }, spelling_kept())
 
@@ -708,8 +718,14 @@ local function written_forms(text)
   end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
-  -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7"
-  text = text:gsub("%f[%w](%a[%w_]*)%s*=%s*([%w%.%-])", "%1: %2")
+  -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7" (only a key that names
+  -- a command or a setting: "t=300" in a note stays as typed, as does all of "log: seed=7 baseline")
+  local label = text:match("^%s*(%a+)%s*:")
+  if not (label and lexicon.note_labels[label:lower()]) then
+    text = text:gsub("%f[%w](%a[%w_]*)(%s*=%s*)([%w%.%-])", function(key, _, v)
+      if SETTING_KEYS[key:lower()] then return key .. ": " .. v end
+    end)
+  end
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
   text = text:gsub("%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"

@@ -264,6 +264,12 @@ return {
                 -- (two letters swapped, or the vowels left out: "hgd 240", "sdp 270", "rdc 250 kts")
                 hgd = "heading", sdp = "speed", rdc = "reduce",
                 rod = "rate of descent", roc = "rate of climb" },
+  -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
+  -- the registry's names and the shorthand
+  setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",
+                   "multiplier", "speedup", "timestep", "step", "radius" },
+  -- labels of text for the log, before a colon opening the request ("log: seed=7 baseline"): kept as typed
+  note_labels = { note = true, log = true, comment = true, message = true, memo = true, echo = true },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
   -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")

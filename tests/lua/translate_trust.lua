@@ -2640,6 +2640,8 @@ do
   check_eq(ex("ff=90"), "FF 90")
   check_eq(ex("tst7k spd=230"), "SPD TST7K 230")
   check(ex("q=5"):match("^ASK ") ~= nil, ex("q=5"))
+  check_eq(ex("log: reward spike at t=300"), "ECHO reward spike at t=300")  -- no setting's key: as typed
+  check_eq(ex("note: seed=42 baseline"), "ECHO seed=42 baseline")
 end
 
 -- "both" with no aircraft named before it is the two aircraft flying when only two fly ("turn both 20
