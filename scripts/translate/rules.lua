@@ -174,6 +174,14 @@ return function(intent, rule, words)
     return g.opening_create == i
   end }
 
+  -- "swr84c altitude?", "afr1442 spd?": a state word asked with "?" straight after it, an aircraft named before
+  -- it and no value said anywhere: a question of the aircraft's state (POS), no instruction
+  rule { "altitude alt level fl speed spd heading hdg mach", "pos", when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
+      and #g:quantities(1, #g.t + 1) == 0
+  end }
+
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
@@ -962,8 +970,12 @@ return function(intent, rule, words)
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
   -- "how fast is the Norwegian flying?", "how high is SAS1421 now?": a question of an aircraft's state
+  -- (typed without "?" too, when the request ends at the aircraft or its verb: "how high is afr1442")
   rule { "how", "pos", next = "fast high", when = function(g, i)
-    return g:has_ref(i + 2, math.min(#g.t + 1, i + 6), "aircraft") and g.t[#g.t].text == "?"
+    local r = g:refs_in(i + 2, math.min(#g.t + 1, i + 6), "aircraft")[1]
+    if not r then return false end
+    local k = g:word(r.e, "now flying going climbing descending") and r.e + 1 or r.e
+    return g.t[#g.t].text == "?" or k > #g.t
   end }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "give me the position", "give me TEST01's and TEST02's positions"
