@@ -206,6 +206,13 @@ return function(H, f, wrap, compass)
     if q.kind == "plain" then
       if q.number.typed and #q.number.digits == 3 and q.number.digits:find("^0[1-9]") then
         ft, fl = ft * 100, true  -- "descend 070": three typed digits led by zero are a flight level
+      elseif q.number.typed and q.number.digits:match("^[1-9]%d?$") and not q.number.thousand and not q.number.hundred then
+        -- "climb 25" typed: hundreds of feet (2500) or thousands (25000)? Asked, naming the readings in range
+        local said = {}
+        if ft >= 10 then said[#said + 1] = f.int(ft * 100) .. " ft" end
+        if ft <= 60 then said[#said + 1] = f.int(ft * 1000) .. " ft" end
+        return self:need(string.format("What altitude should %s %s to: %s? I heard '%s'.", ids[1], verb,
+          table.concat(said, " or "), self:raw(q.b, q.e)))
       elseif ft < 100 and not q.number.typed then
         ft = ft * 1000  -- "maintain niner (thousand)"
       elseif ft >= 100 and ft < 1000 and not q.number.hundred then

@@ -2606,8 +2606,9 @@ end
 -- Numbers whose kind or size the typing leaves open: a heading typed with two digits and no leading zero
 -- ("hdg 27": 027 or 270?), a bare three-digit number kept or maintained ("keep it at 230": a level or a
 -- speed, unless it is the aircraft's own present one), a side and a heading straight behind ("turn right
--- 270" from 090: a reversal or a turn of 270 degrees?) are asked, naming both readings; three typed digits
--- led by zero after a level verb are a flight level ("descend 070")
+-- 270" from 090: a reversal or a turn of 270 degrees?), one or two typed digits after a level verb ("climb
+-- 25") are asked, naming the readings; three typed digits led by zero after a level verb are a flight level
+-- ("descend 070")
 do
   local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250", "CRE TST8M A320 45 10 200 FL240 280" })
   check(ex("tst7k hdg 27"):match("^ASK What heading should TST7K fly: 027 or 270%?") ~= nil, ex("tst7k hdg 27"))
@@ -2623,6 +2624,11 @@ do
   check_eq(ex("tst7k maintain two three zero"), "SPD TST7K 230")
   check_eq(ex("tst8m descend 070"), "ALT TST8M FL70")
   check_eq(ex("tst7k climb 090"), "ALT TST7K FL90")
+  -- one or two typed digits after a level verb: hundreds or thousands of feet? (it was a change of 25 ft)
+  check(ex("tst7k climb 25"):match("^ASK What altitude should TST7K climb to: 2500 ft or 25000 ft%?") ~= nil,
+    ex("tst7k climb 25"))
+  check(ex("tst8m descend 8"):match("^ASK .*8000 ft%?") ~= nil, ex("tst8m descend 8"))
+  check_eq(ex("tst8m descend 8 thousand"), "ALT TST8M 8000")
   check(ex("tst7k turn right 270"):match("^ASK Should TST7K turn right by 270 degrees, or turn right onto heading 270") ~= nil,
     ex("tst7k turn right 270"))
   check_eq(ex("tst7k turn right heading 270"), "HDG TST7K 270 RIGHT")
