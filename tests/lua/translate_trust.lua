@@ -2748,13 +2748,14 @@ do
   check(ex("ity2011 climb fl150? engineer: maybe later"):match("^ASK ") ~= nil, ex("ity2011 climb fl150? engineer: maybe later"))
 end
 
--- A state word typed with "?" after an aircraft and no value ("swr84c altitude?", "afr1442 spd?") asks for its
--- state (POS), as does "how high is afr1442" typed without "?"; with no "?" the state word stays an
--- instruction that lacks its value
+-- A state word typed with "?" after an aircraft and no value ("swr84c altitude?", "afr1442 speed?") asks for
+-- its state (POS), as does "how high is afr1442" typed without "?"; with no "?", or an instruction's
+-- shorthand ("fl?"), it stays an instruction that lacks its value
 do
   local _, ex = scene({ "CRE SWR84C A320 46.5 6.7 250 FL140 270" })
   check_eq(ex("swr84c altitude?"), "POS SWR84C")
-  check_eq(ex("swr84c spd?"), "POS SWR84C")
+  check_eq(ex("swr84c speed?"), "POS SWR84C")
+  check(ex("swr84c fl?"):match("^ASK ") ~= nil, ex("swr84c fl?"))
   check_eq(ex("how high is swr84c"), "POS SWR84C")
   check(ex("swr84c altitude"):match("^ASK What altitude") ~= nil, ex("swr84c altitude"))
   check(ex("swr84c climb?"):match("^ASK What altitude") ~= nil, ex("swr84c climb?"))
