@@ -726,6 +726,8 @@ local function written_forms(text)
       if SETTING_KEYS[key:lower()] then return key .. ": " .. v end
     end)
   end
+  -- "realtime" written as one word
+  text = text:gsub("%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
   text = text:gsub("%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"

@@ -2486,6 +2486,10 @@ return function(H, f, compass)
       return
     end
     local q = first(self, s, { time = true })
+    -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
+    if self:on_off(s) < 0 and not q and self.last_on == nil then
+      return self:need("Should the trails be shown (TRAIL ON) or hidden (TRAIL OFF)?")
+    end
     local switch = on_off(self, s)
     self:emit("TRAIL " .. switch .. ((q and switch == "ON") and (" " .. f.num(q.value)) or ""))
   end

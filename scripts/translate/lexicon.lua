@@ -338,8 +338,8 @@ return {
                                    HDG = { "turn", "heading", "vector" }, SPD = { "speed", "slowdown", "mach" },
                                    DIRECT = { "direct", "directs" }, VS = { "rate" } } },
   -- the simulation itself, not an aircraft
-  -- (an episode: one run of a learning environment)
-  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode" },
+  -- (an episode: one run of a learning environment; "env", "environment": the environment itself)
+  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)

@@ -2761,6 +2761,18 @@ do
   check(ex("swr84c climb?"):match("^ASK What altitude") ~= nil, ex("swr84c climb?"))
 end
 
+-- A learning environment's words for the simulation ("reset env", "pause the environment"), "realtime" as
+-- one word; trails neither shown nor hidden ("clear trails") are asked about (it showed them)
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250" })
+  check_eq(ex("pause env"), "HOLD")
+  check(ex("reset env"):match("^ASK Reset the simulation") ~= nil, ex("reset env"))
+  check_eq(ex("realtime speed"), ex("real time speed"))
+  check(ex("clear trails"):match("^ASK Should the trails be shown") ~= nil, ex("clear trails"))
+  check_eq(ex("show trails"), "TRAIL ON")
+  check_eq(ex("trails every 5 seconds"), "TRAIL ON 5")
+end
+
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
