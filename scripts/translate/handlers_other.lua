@@ -2487,10 +2487,13 @@ return function(H, f, compass)
     end
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
-    if self:on_off(s) < 0 and not q and self.last_on == nil then
+    if self:on_off(s) < 0 and not q and self.last_on == nil
+        and not self:word_in(math.max(1, s.b - 2), s.b, "@on @off") then
       return self:need("Should the trails be shown (TRAIL ON) or hidden (TRAIL OFF)?")
     end
-    local switch = on_off(self, s)
+    -- (the switch said just before the segment: "dtmult 6 and hide trails")
+    local before = self:on_off(s) < 0 and self:on_off({ b = math.max(1, s.b - 2), e = s.b }) or -1
+    local switch = before >= 0 and (before == 1 and "ON" or "OFF") or on_off(self, s)
     self:emit("TRAIL " .. switch .. ((q and switch == "ON") and (" " .. f.num(q.value)) or ""))
   end
   function m:look_ahead(s)

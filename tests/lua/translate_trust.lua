@@ -2762,7 +2762,8 @@ do
 end
 
 -- A learning environment's words for the simulation ("reset env", "pause the environment"), "realtime" as
--- one word; trails neither shown nor hidden ("clear trails") are asked about (it showed them)
+-- one word; trails neither shown nor hidden ("clear trails") are asked about (it showed them), hidden when
+-- "hide" opens their clause after another instruction
 do
   local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250" })
   check_eq(ex("pause env"), "HOLD")
@@ -2771,6 +2772,7 @@ do
   check(ex("clear trails"):match("^ASK Should the trails be shown") ~= nil, ex("clear trails"))
   check_eq(ex("show trails"), "TRAIL ON")
   check_eq(ex("trails every 5 seconds"), "TRAIL ON 5")
+  check_eq(ex("dtmult 6 and hide trails"), "DTMULT 6 ; TRAIL OFF")  -- (it showed them)
 end
 
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
