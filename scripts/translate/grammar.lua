@@ -726,6 +726,8 @@ local function written_forms(text)
       if SETTING_KEYS[key:lower()] then return key .. ": " .. v end
     end)
   end
+  -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
+  text = text:gsub("%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
   -- "realtime" written as one word
   text = text:gsub("%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
