@@ -2487,6 +2487,9 @@ return function(H, f, compass)
     end
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
+    -- ("draw trails behind the aircraft", "display the trails": shown)
+    local drawn = self:word_in(math.max(1, s.b - 2), s.e, "draw display")
+    if drawn then self.last_on = self:on_off(s) < 0 and 1 or self.last_on end
     if self:on_off(s) < 0 and not q and self.last_on == nil
         and not self:word_in(math.max(1, s.b - 2), s.b, "@on @off") then
       return self:need("Should the trails be shown (TRAIL ON) or hidden (TRAIL OFF)?")

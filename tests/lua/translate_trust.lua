@@ -2774,6 +2774,7 @@ do
   check_eq(ex("trails every 5 seconds"), "TRAIL ON 5")
   check_eq(ex("dtmult 6 and hide trails"), "DTMULT 6 ; TRAIL OFF")  -- (it showed them)
   check_eq(ex("ff 2m"), "FF 120")
+  check_eq(ex("could you draw trails behind the aircraft"), "TRAIL ON")
 end
 
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
