@@ -73,6 +73,16 @@ local function spelling_kept()
   return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept }, keywords = keywords },
     { __index = lexicon })
 end
+-- SETTING_KEYS: the keys of a setting typed key=value ("seed=7", "pz=5nm", "hdg=270"): registry names and
+-- aliases, typed shorthand, and lexicon.setting_keys
+local SETTING_KEYS = {}
+do
+  for _, c in ipairs(squawk.sim.commands()) do
+    for _, w in ipairs({ c.name, table.unpack(c.aliases or {}) }) do SETTING_KEYS[w:lower()] = true end
+  end
+  for w in pairs(lexicon.shorthand) do SETTING_KEYS[w] = true end
+  for _, w in ipairs(lexicon.setting_keys) do SETTING_KEYS[w] = true end
+end
 local NAMES = squawk.translate.tables({ airlines = names.airlines, types = TYPES.types,
   designators = TYPES.designators }, spelling_kept())
 
@@ -613,7 +623,18 @@ local function role_dropped(text)
   if name and ADDRESSED[name:lower()] then return next_word end
   return text
 end
+local ASSENT = set_of(lexicon.assent)
+-- "... climb fl150? engineer: yes do it": a second speaker's label and assent after the request are dropped
+local function assent_dropped(text)
+  local said, label, reply = text:match("^(.-[%?%.!])%s*(%a+[%s%-]?%a*)%s*:%s*(.-)%s*[%.!]?$")
+  if not said or not all_roles(label) or reply == "" then return text end
+  for w in reply:lower():gmatch("[^%s,]+") do
+    if not ASSENT[w] then return text end
+  end
+  return said
+end
 local function unlabelled(text)
+  text = assent_dropped(text)
   local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
   if greeting and GREETINGS[greeting:lower()] then
     local said = role_dropped(after)
@@ -696,7 +717,29 @@ for _, word in ipairs({ "point", "decimal" }) do
   local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
   POINT_SAID[#POINT_SAID + 1] = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]"
 end
+-- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x"): the
+-- simulation's rate, written out as "sim speed x4" (a callsign-like "x4" or a bare "4x" names no aircraft)
+local function lone_multipliers(text)
+  if not text:find("%d[xX]") and not text:find("[xX]%d") then return text end
+  local words = {}
+  for b, w, e in text:gmatch("()(%S+)()") do words[#words + 1] = { b = b, w = w, e = e } end
+  local out, last = {}, 1
+  local function joins(t) return t ~= nil and (t.w:lower() == "then" or t.w:lower() == "and") end
+  for k, t in ipairs(words) do
+    local core, tail = t.w:match("^(.-)([,;%.!]?)$")
+    local n = core:match("^[xX](%d+%.?%d*)$") or core:match("^(%d+%.?%d*)[xX]$")
+    local prev, nx = words[k - 1], words[k + 1]
+    if n and (not prev or prev.w:match("[,;%.!:]$") or joins(prev)) and (tail ~= "" or not nx or joins(nx)) then
+      out[#out + 1] = text:sub(last, t.b - 1) .. "sim speed x" .. n .. tail
+      last = t.e
+    end
+  end
+  out[#out + 1] = text:sub(last)
+  return table.concat(out)
+end
+
 local function written_forms(text)
+  text = lone_multipliers(text)
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -713,6 +756,18 @@ local function written_forms(text)
   end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
+  -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7" (only a key that names
+  -- a command or a setting: "t=300" in a note stays as typed, as does all of "log: seed=7 baseline")
+  local label = text:match("^%s*(%a+)%s*:")
+  if not (label and lexicon.note_labels[label:lower()]) then
+    text = text:gsub("%f[%w](%a[%w_]*)(%s*=%s*)([%w%.%-])", function(key, _, v)
+      if SETTING_KEYS[key:lower()] then return key .. ": " .. v end
+    end)
+  end
+  -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
+  text = text:gsub("%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
+  -- "realtime" written as one word
+  text = text:gsub("%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
   text = text:gsub("%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
@@ -974,6 +1029,18 @@ function G:remark_sentence(k, instructed)
   return (instructed(k) or after) and self:commentary(k, e)
 end
 
+-- True when the colon at k follows "note" or "comment" opening the request and one sentence runs from it to
+-- the end ("note: run 3, seed 42, baseline no reso"): the note is the request, text for the log (ECHO),
+-- no remark beside an instruction
+local function whole_note(self, k)
+  if k - 1 ~= self:skip_fillers(1) or not self:word(k - 1, "note comment") or k >= #self.t then return false end
+  for x = k + 1, #self.t - 1 do
+    local t = self.t[x]
+    if t.kind == "punct" and t.text ~= "," and t.text ~= ":" then return false end
+  end
+  return true
+end
+
 local REASON_WORDS = word_set("@reason")
 function G:in_reason(i)
   if not self.reason then
@@ -1008,7 +1075,7 @@ function G:in_reason(i)
       local punct = t.kind == "punct"
       local start = k == 1 or (toks[k - 1].kind == "punct" and toks[k - 1].text ~= ",")
       if punct and t.text == "," then commas = commas + 1 end
-      if punct and t.text == ":" and self:word(k - 1, CM_LABELS) then
+      if punct and t.text == ":" and self:word(k - 1, CM_LABELS) and not whole_note(self, k) then
         -- ("descend to FL100, reason: lose the vertical overlap with TOM6RT": to the end of the sentence)
         inside, reason[k - 1] = true, true
       elseif punct and t.text == "," and (self.apart or {})[commas] and instructed(k)

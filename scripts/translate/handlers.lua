@@ -218,6 +218,8 @@ function m:acids(s)
         named[#named + 1] = r.name
       end
     end
+    -- ("turn both 20 right" with none named before: the two aircraft flying, when only two fly)
+    if #named == 0 and #self.fleet == 2 then named = { self.fleet[1].id, self.fleet[2].id } end
     if #named ~= 2 then
       self:need("Which two aircraft does 'both' mean? Please give their callsigns.")
     end
@@ -474,6 +476,14 @@ function m:addressed_alone(b, e)
   return self.several
 end
 
+-- True when the airline said alone over tokens b..e-1 is what a question about an aircraft's
+-- whereabouts names ("where is ryanair", "what's Ryanair doing"): a question, never a cut-short callsign
+-- given an instruction, so it is the one aircraft of that airline flying (asked about with several).
+function m:asked_where(b, e)
+  local k = self:word(b - 1, "is are") and b - 2 or b - 1
+  return self:word(k, "where wheres") or (self:word(k, "what whats") and self:word(e, "doing"))
+end
+
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
 -- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
 -- airline flying, is a reference to it (added to self.refs, kind "aircraft",
@@ -541,7 +551,7 @@ function m:airline_refs()
       local the = prev and prev.kind == "word" and prev.text == "the"
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
             or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
-      local ok = not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e))
+      local ok = not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e) or self:asked_where(i, e))
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
             or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
           and not self:new_aircraft_follows(e - 1)

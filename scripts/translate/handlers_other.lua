@@ -1009,6 +1009,9 @@ return function(H, f, compass)
         end
         if nx and i + 1 < e and nx.kind == "word" and nx.alpha and not self.u:used(i + 1) then
           phrases[#phrases + 1] = { t.text .. " " .. nx.text, i + 2 }
+          -- ("saint prex" for the navdata's "ST. PREX", "st gallen" for "SAINT GALLEN")
+          local saint = L.saint_forms[t.text]
+          if saint then phrases[#phrases + 1] = { saint .. " " .. nx.text, i + 2 } end
         end
         if #t.text >= 4 and not t.keyword and not two_words then phrases[#phrases + 1] = { t.text, i + 1 } end
         for _, p in ipairs(phrases) do
@@ -1363,7 +1366,14 @@ return function(H, f, compass)
       self:explain(places[1].b, places[#places].b)
       point = self:waypoint(places[#places].b, s.e, id)
     end
-    local wp = to_dest or point or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
+    -- ("vlg6fx add DOGEX then direct it": the waypoint an add said before names, when the add is read with
+    -- the direct, which adds it)
+    local before = self:refs_in(s.b, s.trig, "waypoint")
+    local prior = before[#before]
+    local told = not added and prior and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
+      and self:word_in(math.max(s.b, prior.b - 2), prior.b, "add insert append include") and prior.name:upper()
+    if told then self:explain(math.max(s.b, prior.b - 2), prior.e) end
+    local wp = to_dest or point or told or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
         and self:word_in(s.trig, s.e, "there it") and added or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
     -- adverb that ends the clause
@@ -1496,6 +1506,15 @@ return function(H, f, compass)
       end
     end
     local lat, lon = position(qs, s.trig, self)
+    -- ("ezy73kl at 45.8 8.9 insert wpt": the position said after "at" before the verb, none after it)
+    local placed = self:find_word(s.b, s.trig, "at")
+    if not (lat and lon) and placed < s.trig and #self:refs_in(s.trig, s.e, "waypoint") == 0 then
+      local before = {}
+      for _, q in ipairs(qs) do
+        if q.b > placed and q.e <= s.trig then before[#before + 1] = q end
+      end
+      if before[1] and before[1].b == placed + 1 then lat, lon = position(before, placed + 1, self) end
+    end
     local name_e = (next_to and at > s.trig) and at or s.e
     local where, named
     if lat and lon then
@@ -1599,6 +1618,18 @@ return function(H, f, compass)
   -- no flying aircraft ("EXIT1" reads like an id), else the word after
   -- "named"/"called"; nil when none.
   local function new_name(self, b, e)
+    -- "name MXPCTR", "call it MILROM", "name it REF1", "named CTR": the name given in words, before any place
+    -- said by its name ("circle around LIMC, name MXPCTR, ...": LIMC is where it is, no name)
+    for k = b, e - 2 do
+      local at = (self:word(k, "@named") or (self:word(k, "name call") and not self:word(k - 1, "the its a")))
+        and k + 1
+      if at and self:word(at, "it") then at = at + 1 elseif self:word(k, "call") then at = nil end
+      if at and at < e and self.t[at].kind == "word" and self.t[at].raw:match("^%w+$") then
+        self:explain(k, at)
+        self:mark_used(at, at + 1)
+        return self.t[at].raw:upper()
+      end
+    end
     local w = self:refs_in(b, e, "waypoint")
     if #w > 0 then return w[1].name end
     local a = self:refs_in(b, e, "aircraft")
@@ -1630,11 +1661,27 @@ return function(H, f, compass)
     return out
   end
 
+  -- Places said by their name in s that lie at one of the points `p` given in figures (within 0.1 degree:
+  -- "line from LIML to LIRF, call it MILROM: 45.445 9.277 41.804 12.251"): the points' names, explained
+  local function places_at_points(self, s, p)
+    for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+      local lat, lon
+      if self.world.user_waypoint_at then lat, lon = self.world.user_waypoint_at(r.name) end
+      for _, c in ipairs(lat and p or {}) do
+        if math.abs(c[1] - lat) <= 0.1 and math.abs(c[2] - lon) <= 0.1 then
+          self:explain(r.b, r.e)
+          break
+        end
+      end
+    end
+  end
+
   -- A new shape's name and its points ("lat lon" strings) in s when `fits(#points)`; else asks `question`
   -- and gives nil.
   local function named_points(self, s, fits, question)
     local name, p = new_name(self, s.b, s.e), points(self, s.b, s.e)
     if not name or not fits(#p) then return self:need(question) end
+    places_at_points(self, s, p)
     local corners = {}
     for _, c in ipairs(p) do corners[#corners + 1] = f.num(c[1]) .. " " .. f.num(c[2]) end
     return name, table.concat(corners, " ")
@@ -1676,6 +1723,7 @@ return function(H, f, compass)
     if not name or not p or not radius then
       return self:need("To define the circle I need its name, centre (latitude and longitude) and radius in nautical miles.")
     end
+    places_at_points(self, s, { p })
     local levels = shape_levels(self, s, "circle " .. name)
     if not levels then return end
     self:emit(string.format("CIRCLE %s %s %s %s%s", name, f.num(p[1]), f.num(p[2]), f.num(radius), levels))
@@ -1803,8 +1851,17 @@ return function(H, f, compass)
     -- "to" or "inbound")
     local to = self:find_word(s.trig, s.e, "to inbound")
     if self:word(to, "inbound") and self:word(to + 1, "to for") then to = to + 1 end
+    -- ("all heading for Fiumicino", "bound for LIRF": "for" after a verb of going)
+    local going = self:find_word(s.trig, s.e, "heading headed bound going")
+    if to == s.e and self:word(going + 1, "for") then to = going + 1 end
     local dest = to < s.e and (self:refs_in(to + 1, to + 2, "waypoint")[1] or {}).name
     if to < s.e and not dest then dest = self:place_by_name(to + 1, math.min(s.e, to + 3), self.fleet[1]) end
+    -- (a place after a verb of going that names no airport or waypoint is asked about, never dropped)
+    local k = to < s.e and not dest and self:word(to - 1, "going heading headed bound flying inbound all")
+      and self:skip_fillers(to + 1)
+    if k and k < s.e and self.t[k].kind == "word" and not self:word(k, "be") then
+      return self:need(string.format("Where should the random aircraft fly to? I heard '%s'.", self:raw(k, s.e)))
+    end
     local cmd = "MCRE " .. f.int(n.value)
     if #types > 0 or alt or spd or dest then cmd = cmd .. " " .. (types[1] and types[1].name or "*") end
     if alt or spd or dest then cmd = cmd .. " " .. (alt and f.alt(alt.value, alt.fl) or "*") end
@@ -2213,9 +2270,10 @@ return function(H, f, compass)
       return self:emit("FF " .. f.num(half))
     end
     local q = first(self, s, { time = true, mult = true })
-    -- "FF 120": TrafScript's own word with a bare number, its seconds
+    -- "FF 120", "ff: 120", "ff=120": TrafScript's own word with a bare number, its seconds
     local plain = first(self, s, { plain = true })
-    if not q and self.t[s.trig].raw:upper() == "FF" and plain and plain.b == s.trig + 1 then
+    local set = self.t[s.trig + 1] and self.t[s.trig + 1].raw == ":" and 1 or 0
+    if not q and self.t[s.trig].raw:upper() == "FF" and plain and plain.b == s.trig + 1 + set then
       self:take(plain)
       return self:emit("FF " .. f.num(plain.value))
     end
@@ -2534,7 +2592,17 @@ return function(H, f, compass)
       return
     end
     local q = first(self, s, { time = true })
-    local switch = on_off(self, s)
+    -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
+    -- ("draw trails behind the aircraft", "display the trails": shown)
+    local drawn = self:word_in(math.max(1, s.b - 2), s.e, "draw display")
+    if drawn then self.last_on = self:on_off(s) < 0 and 1 or self.last_on end
+    if self:on_off(s) < 0 and not q and self.last_on == nil
+        and not self:word_in(math.max(1, s.b - 2), s.b, "@on @off") then
+      return self:need("Should the trails be shown (TRAIL ON) or hidden (TRAIL OFF)?")
+    end
+    -- (the switch said just before the segment: "dtmult 6 and hide trails")
+    local before = self:on_off(s) < 0 and self:on_off({ b = math.max(1, s.b - 2), e = s.b }) or -1
+    local switch = before >= 0 and (before == 1 and "ON" or "OFF") or on_off(self, s)
     self:emit("TRAIL " .. switch .. ((q and switch == "ON") and (" " .. f.num(q.value)) or ""))
   end
   function m:look_ahead(s)

@@ -52,9 +52,21 @@ return function(H, f, wrap, compass)
           -- "maintain two five zero" is a speed; "maintain four thousand" an altitude.
           -- so is a value with knots one word further on ("maintain two one, uh, turn knots")
           local k = self:skip_fillers(q.e)
-          if (q.value >= 100 and q.value <= 400 or self:word(k, "@speed_units")
-                or self:word(self:skip_fillers(k + 1), "@speed_units"))
-              and not q.number.thousand and not q.number.hundred then
+          local knots = self:word(k, "@speed_units") or self:word(self:skip_fillers(k + 1), "@speed_units")
+          -- "keep it at 230", typed with no unit: a flight level or a speed? The aircraft's own present
+          -- level or speed says which is kept; otherwise asked
+          if q.number.typed and not knots and q.value >= 100 and q.value <= 400 and q.value == math.floor(q.value)
+              and not q.number.thousand and not q.number.hundred and not q.number.digits:find("^0") then
+            local ids = self:acids(s)
+            local now = ids[1] and self:state(ids[1])
+            local level = now and math.abs((now.alt_ft or 0) - q.value * 100) < 50
+            local speed = now and math.abs((now.cas_kt or 0) - q.value) < 3
+            if level and not speed then return self:altitude(s) end
+            if speed and not level then return self:speed(s) end
+            return self:need(string.format("Should %s fly FL%03d or %d knots? I heard '%s'.", ids[1] or "it",
+              q.value, q.value, self:raw(q.b, q.e)))
+          end
+          if (q.value >= 100 and q.value <= 400 or knots) and not q.number.thousand and not q.number.hundred then
             return self:speed(s)
           end
           return self:altitude(s)
@@ -192,7 +204,16 @@ return function(H, f, wrap, compass)
       return self:need(string.format("What altitude should %s %s to? I heard '%s'.", ids[1], verb, self:raw(q.b, q.e)))
     end
     if q.kind == "plain" then
-      if ft < 100 and not q.number.typed then
+      if q.number.typed and #q.number.digits == 3 and q.number.digits:find("^0[1-9]") then
+        ft, fl = ft * 100, true  -- "descend 070": three typed digits led by zero are a flight level
+      elseif q.number.typed and q.number.digits:match("^[1-9]%d?$") and not q.number.thousand and not q.number.hundred then
+        -- "climb 25" typed: hundreds of feet (2500) or thousands (25000)? Asked, naming the readings in range
+        local said = {}
+        if ft >= 10 then said[#said + 1] = f.int(ft * 100) .. " ft" end
+        if ft <= 60 then said[#said + 1] = f.int(ft * 1000) .. " ft" end
+        return self:need(string.format("What altitude should %s %s to: %s? I heard '%s'.", ids[1], verb,
+          table.concat(said, " or "), self:raw(q.b, q.e)))
+      elseif ft < 100 and not q.number.typed then
         ft = ft * 1000  -- "maintain niner (thousand)"
       elseif ft >= 100 and ft < 1000 and not q.number.hundred then
         ft, fl = ft * 100, true  -- "climb three five zero": a flight level
@@ -498,6 +519,11 @@ return function(H, f, wrap, compass)
       elseif not n.typed and n.lead_digit and H.cut_off(n) then
         return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
       end
+      -- "hdg 27" typed: two digits with no leading zero may have lost the final one (027 or 270?)
+      if n.typed and #n.digits == 2 and hdg >= 10 and hdg <= 36 and hdg == math.floor(hdg) then
+        return self:need(string.format("What heading should %s fly: %03d or %d? I heard '%s'.", id, hdg, hdg * 10,
+          self:raw(abs.b, abs.e)))
+      end
       if not n.typed and n.lead_digit and n.groups == 2 and hdg < 40 then
         -- only a fluent "two five" lost its final zero; with a hesitation before or inside it
         -- ("heading uh two two", "two uh two") a digit may be missing anywhere
@@ -547,14 +573,20 @@ return function(H, f, wrap, compass)
     local way = (rel and rel.turn ~= 0 and rel.turn) or turn
     -- "turn right 180", "r 360", "l 200" with no "heading" (typed, or a number not said digit
     -- by digit): a heading the long way round (more than half a circle) or a turn of that many
-    -- degrees (a "360" an orbit)? Asked. The short way round it is the heading
+    -- degrees (a "360" an orbit)? Asked. So is a heading straight behind ("turn right 270" from 090: a
+    -- reversal onto 270, or a turn of 270 degrees?) unless both readings are one heading. The short
+    -- way round it is the heading
     if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and now and #ids == 1
         and (abs.number.typed or not abs.number.lead_digit)
         and not self:word_in(s.b, s.e, "heading hdg") and abs.value <= 360 then
       local long = (way * (hdg - now.hdg_deg)) % 360
+      local side = way < 0 and "left" or "right"
       if long > 180 then
         return self:need(string.format("Should %s turn %s by %s degrees, or fly heading %s the long way round?",
-          id, way < 0 and "left" or "right", f.num(abs.value), f.num(wrap(hdg))))
+          id, side, f.num(abs.value), f.num(wrap(hdg))))
+      elseif long == 180 and abs.value ~= 180 then
+        return self:need(string.format("Should %s turn %s by %s degrees, or turn %s onto heading %s, straight behind?",
+          id, side, f.num(abs.value), side, f.num(wrap(hdg))))
       end
     end
     local suffix = way < 0 and " LEFT" or way > 0 and " RIGHT" or ""

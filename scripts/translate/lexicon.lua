@@ -96,6 +96,11 @@ return {
         "story", "study", "storyline", "narrative" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody" },
+    -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
+    chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
+        "thx", "pls", "haha", "idk",
+        -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")
+        "bugged", "buggy", "glitched", "glitchy", "coffee", "lunch", "brb" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
@@ -259,6 +264,12 @@ return {
                 -- (two letters swapped, or the vowels left out: "hgd 240", "sdp 270", "rdc 250 kts")
                 hgd = "heading", sdp = "speed", rdc = "reduce",
                 rod = "rate of descent", roc = "rate of climb" },
+  -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
+  -- the registry's names and the shorthand
+  setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",
+                   "multiplier", "speedup", "timestep", "step", "radius" },
+  -- labels of text for the log, before a colon opening the request ("log: seed=7 baseline"): kept as typed
+  note_labels = { note = true, log = true, comment = true, message = true, memo = true, echo = true },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
   -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")
@@ -306,7 +317,11 @@ return {
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
   label_roles = { "operator", "op", "sim", "simulator", "sup", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
-                  "ai", "teammate", "assistant" },
+                  "ai", "teammate", "assistant", "engineer" },
+  -- a second speaker's label and assent after the request ("student: ity2011 climb fl150? engineer: yes do
+  -- it"): the request stands as said; any other word after such a label leaves the line as typed
+  assent = { "yes", "yeah", "yep", "ok", "okay", "sure", "do", "it", "go", "ahead", "fine", "approved",
+             "affirm", "correct", "please", "that", "right", "send" },
   -- of those, the machine teammate a controller talks to: it opens a line as its addressee even without a comma
   -- ("AI what's the Virgin's altitude?", "hey teammate descend ..."); a greeting of `greetings` may come first
   -- ("ok AI, ...", "hey teammate: ...")
@@ -328,8 +343,8 @@ return {
                                    HDG = { "turn", "heading", "vector" }, SPD = { "speed", "slowdown", "mach" },
                                    DIRECT = { "direct", "directs" }, VS = { "rate" } } },
   -- the simulation itself, not an aircraft
-  -- (an episode: one run of a learning environment)
-  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode" },
+  -- (an episode: one run of a learning environment; "env", "environment": the environment itself)
+  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
@@ -552,6 +567,8 @@ return {
   turn_around = { "around", "opposite", "reverse" },
   -- names said before a value they introduce
   named = { "named", "called" },
+  -- a place name's "Saint" said in full or short, each tried as the other in navaid names ("saint prex", ST. PREX)
+  saint_forms = { saint = "st", st = "saint" },
   id_words = { "named", "called", "callsign", "id" },
   -- words after an airport's name ("Beijing Capital airport")
   -- air traffic units named by no airport or city ("Shanwick", "Scottish"; the rest are the navdata's

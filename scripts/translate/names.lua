@@ -18,6 +18,7 @@
 return {
   airlines = {
     { "speedbird", "BAW" },
+    { "helvetic", "OAW" },
     { "reach", "RCH" },
     { "navy", "NAVY" },
     { "lufthansa", "DLH" },
@@ -364,6 +365,9 @@ return {
     { "cathay pacific", "CPA" },
     { "ita", "ITY" },  -- (ITA Airways, telephony Itarrow)
     { "ita airways", "ITY" },
+    { "smartwings", "TVS" },
+    { "pegasus", "PGT" },
+    { "netjets", "NJE" },  -- (a brand: NetJets Europe, NJE, and NetJets Aviation, EJA)
   },
   brands = {
     { "transavia", "TRA", "TVF" },
@@ -380,6 +384,7 @@ return {
     { "british airways", "BAW", "SHT", "CFE", "EFW" },
     { "ba", "BAW", "SHT", "CFE", "EFW" },
     { "virgin", "VIR", "VOZ", shared = true },
+    { "netjets", "EJA", "NJE" },  -- (NetJets Aviation, telephony Execjet; NetJets Europe, Fraction)
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",

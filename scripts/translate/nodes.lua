@@ -434,6 +434,13 @@ function M.typed(state, ctx)
         and (c:match("^%S+[%s,]+%S+[%s,]+%d%d?[%s,]+[LlRr]%a*%s*$") or c:match("^%S+[%s,]+%S+[%s,]+%d%d?%s*$")) then
       return "english"
     end
+    -- "dlh3gm hdg 27": a heading typed with two digits and no leading zero, in lower case, is English
+    -- (027 or 270? asked there); "DLH3GM HDG 27" in capitals stays TrafScript, heading 027
+    local verb = c:match("^(%S+)")
+    if name == "HDG" and verb ~= verb:upper() and c:match("^%S+[%s,]+%S+[%s,]+[1-3]%d%f[^%w.]")
+        and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)")) <= 36 then
+      return "english"
+    end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
     if h and h > 360 then return "english" end

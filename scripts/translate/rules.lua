@@ -174,6 +174,15 @@ return function(intent, rule, words)
     return g.opening_create == i
   end }
 
+  -- "swr84c altitude?", "afr1442 speed?": a state word asked with "?" straight after it, an aircraft named
+  -- before it and no value said anywhere: a question of the aircraft's state (POS), no instruction (an
+  -- instruction's shorthand, "ezy45 fl?", "hdg?", is a value left out: asked)
+  rule { "altitude speed heading mach airspeed", "pos", when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx ~= nil and nx.kind == "punct" and nx.text == "?" and g:has_ref(1, i, "aircraft")
+      and #g:quantities(1, #g.t + 1) == 0
+  end }
+
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
@@ -470,10 +479,12 @@ return function(intent, rule, words)
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
   rule { "create cre spawn generate add", "mcre", near = { 3, "random" } }
   rule { "mcre", "mcre" }
-  -- "random traffic, 20 aircraft": the count said after
+  -- "random traffic, 20 aircraft", "random traffic, 12 b738": the count said after, of aircraft or of a type
   rule { "random", "mcre", next = "traffic", when = function(g, i)
     for k = i + 2, math.min(#g.t, i + 5) do
-      if g.t[k].kind == "number" and g:word(k + 1, "@counted_aircraft") then return true end
+      if g.t[k].kind == "number" and (g:word(k + 1, "@counted_aircraft") or g:has_ref(k + 1, k + 2, "type")) then
+        return true
+      end
     end
     return false
   end }
@@ -880,7 +891,7 @@ return function(intent, rule, words)
   -- "where is the Air Portugal going?", "where's TAP447 headed to": the destination asked, not the
   -- position; the question opens the request and ends with its verb ("where is UAL57 going to cross
   -- GIPNO?" and "too high for where it's going" are no such question)
-  rule { "where where's", "dest", when = function(g, i)
+  rule { "where where's wheres", "dest", when = function(g, i)
     local e = math.min(#g.t + 1, i + 7)
     local k = g:find_word(i + 1, e, "going headed bound")
     if k == e or g:skip_fillers(1) ~= i then return false end
@@ -888,7 +899,7 @@ return function(intent, rule, words)
     return g.t[k + 1] == nil or g.t[k + 1].kind == "punct"
   end }
   rule { "where", "pos", next = "is are 's" }
-  rule { "where's", "pos" }
+  rule { "where's wheres", "pos" }  -- ("wheres the speedbird": typed without the apostrophe)
   rule { "doing", "pos", prev = { 4, "what what's whats" } }  -- "what's klm12 doing"
   -- "what's Qantas one four one doing", "what is Velocity 923 doing": a callsign said in words of any length
   rule { "doing", "pos", when = function(g, i)
@@ -985,8 +996,12 @@ return function(intent, rule, words)
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
   -- "how fast is the Norwegian flying?", "how high is SAS1421 now?": a question of an aircraft's state
+  -- (typed without "?" too, when the request ends at the aircraft or its verb: "how high is afr1442")
   rule { "how", "pos", next = "fast high", when = function(g, i)
-    return g:has_ref(i + 2, math.min(#g.t + 1, i + 6), "aircraft") and g.t[#g.t].text == "?"
+    local r = g:refs_in(i + 2, math.min(#g.t + 1, i + 6), "aircraft")[1]
+    if not r then return false end
+    local k = g:word(r.e, "now flying going climbing descending") and r.e + 1 or r.e
+    return g.t[#g.t].text == "?" or k > #g.t
   end }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "give me the position", "give me TEST01's and TEST02's positions"
@@ -1166,7 +1181,7 @@ return function(intent, rule, words)
   rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started", "write a message for the participant:
   -- Block 1 finished": the text after the colon
-  rule { "note log message", "echo", when = function(g, i)
+  rule { "note comment log message", "echo", when = function(g, i)
     for k = i + 1, math.min(#g.t, i + 4) do
       if g.t[k].kind == "punct" and g.t[k].text == ":" then return k < #g.t end
     end
@@ -1188,12 +1203,14 @@ return function(intent, rule, words)
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "wind at 6.5 north 3.3 east from 220 at 15 knots", "a harmattan wind at 12N 8.5E, from 050, 20 knots": a
-  -- position straight after it, where it blows from said after that
+  -- position straight after it ("at" before it or none), where it blows from said after that
   -- ("wind at 53.4 -6.3 from 270 at 25 kts": a latitude and longitude in bare decimal degrees; "wind at
   -- 38.8 north 9.1 west, FL100, 310 degrees 25 knots": its direction in degrees and its speed in knots said
   -- after the position, no "from")
   rule { "wind winds", "wind", when = function(g, i)
-    local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or nil
+    -- ("wind 47.2 11.4 FL200 from 270 at 45 kts": the position straight after it, typed)
+    local q = g:word(i + 1, "at over") and g:quantities(i + 2, i + 3)[1] or g:quantities(i + 1, i + 2)[1]
+    if q and q.b == i + 1 and not q.number.typed then q = nil end
     local nx = q and q.kind == "plain" and g:quantities(q.e, q.e + 1)[1] or nil
     local pair = nx ~= nil and nx.kind == "plain" and q.number.typed and nx.number.typed
       and (q.number.digits or ""):find("%.") ~= nil and math.abs(q.value) <= 90 and math.abs(nx.value) <= 180
@@ -1288,6 +1305,11 @@ return function(intent, rule, words)
     return n
   end
   rule { "area", "area", prev = { 2, "deletion delete experiment" } }
+  -- "restrict sim area to box 45 6 48 13", "limit the simulation area to 45 6 48 13": the area traffic is
+  -- kept in (aircraft leaving it are deleted), two corners after it ("box" is its form, no shape named)
+  rule { "area", "area", prev = { 2, "@sim" }, when = function(g, i) return corners_after(g, i) == 2 end }
+  rule { "area", "area", prev = { 3, "restrict limit confine" }, when = function(g, i) return corners_after(g, i) == 2 end }
+  rule { "box", false, prev = { 2, "area" }, when = function(g, i) return corners_after(g, i) == 2 end }
   rule { "circle", "circle", near = { 3, "@named" } }
   -- "circle C1 centred on 52 4, radius 20 nm": a name straight after it and a centre
   rule { "circle", "circle", when = function(g, i)

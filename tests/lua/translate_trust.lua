@@ -2603,6 +2603,180 @@ do
   check_eq(ex("TURN RYR3MX 30"), "HDG RYR3MX 30")  -- TrafScript in capitals: heading 030
 end
 
+-- Numbers whose kind or size the typing leaves open: a heading typed with two digits and no leading zero
+-- ("hdg 27": 027 or 270?), a bare three-digit number kept or maintained ("keep it at 230": a level or a
+-- speed, unless it is the aircraft's own present one), a side and a heading straight behind ("turn right
+-- 270" from 090: a reversal or a turn of 270 degrees?), one or two typed digits after a level verb ("climb
+-- 25") are asked, naming the readings; three typed digits led by zero after a level verb are a flight level
+-- ("descend 070")
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250", "CRE TST8M A320 45 10 200 FL240 280" })
+  check(ex("tst7k hdg 27"):match("^ASK What heading should TST7K fly: 027 or 270%?") ~= nil, ex("tst7k hdg 27"))
+  check(ex("tst7k heading 12 please"):match("^ASK .*012 or 120") ~= nil, ex("tst7k heading 12 please"))
+  check_eq(ex("TST7K HDG 27"), "HDG TST7K 27")  -- TrafScript in capitals: heading 027
+  check_eq(ex("tst7k hdg 95"), "HDG tst7k 95")  -- typed TrafScript: no other reading
+  check_eq(ex("tst7k hdg 027"), "HDG tst7k 027")
+  check(ex("tst7k keep it at 230"):match("^ASK Should TST7K fly FL230 or 230 knots%?") ~= nil, ex("tst7k keep it at 230"))
+  check(ex("tst8m maintain 310"):match("^ASK .*FL310 or 310 knots") ~= nil, ex("tst8m maintain 310"))
+  check_eq(ex("tst8m maintain 240"), "ALT TST8M FL240")  -- its own level
+  check_eq(ex("tst7k keep it at 250"), "SPD TST7K 250")  -- its own speed
+  check_eq(ex("tst7k maintain 230 kts"), "SPD TST7K 230")
+  check_eq(ex("tst7k maintain two three zero"), "SPD TST7K 230")
+  check_eq(ex("tst8m descend 070"), "ALT TST8M FL70")
+  check_eq(ex("tst7k climb 090"), "ALT TST7K FL90")
+  -- one or two typed digits after a level verb: hundreds or thousands of feet? (it was a change of 25 ft)
+  check(ex("tst7k climb 25"):match("^ASK What altitude should TST7K climb to: 2500 ft or 25000 ft%?") ~= nil,
+    ex("tst7k climb 25"))
+  check(ex("tst8m descend 8"):match("^ASK .*8000 ft%?") ~= nil, ex("tst8m descend 8"))
+  check_eq(ex("tst8m descend 8 thousand"), "ALT TST8M 8000")
+  check(ex("tst7k turn right 270"):match("^ASK Should TST7K turn right by 270 degrees, or turn right onto heading 270") ~= nil,
+    ex("tst7k turn right 270"))
+  check_eq(ex("tst7k turn right heading 270"), "HDG TST7K 270 RIGHT")
+  check_eq(ex("tst8m l 170"), "HDG TST8M 170 LEFT")
+end
+
+-- Settings typed key=value, as in a config or a log ("seed=7", "dt=0.5, dtmult=4", "reso=mvp"): the
+-- setting and its value, as with a space between; a key that names no setting is still asked about
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250" })
+  check_eq(ex("seed=7"), "SEED 7")
+  check_eq(ex("dt=0.5, dtmult=4"), "DT 0.5 ; DTMULT 4")
+  check_eq(ex("reso=mvp"), "RESO MVP")
+  check_eq(ex("pz=5nm"), "ZONER 5")
+  check_eq(ex("ff=90"), "FF 90")
+  check_eq(ex("tst7k spd=230"), "SPD TST7K 230")
+  check(ex("q=5"):match("^ASK ") ~= nil, ex("q=5"))
+  check_eq(ex("log: reward spike at t=300"), "ECHO reward spike at t=300")  -- no setting's key: as typed
+  check_eq(ex("note: seed=42 baseline"), "ECHO seed=42 baseline")
+end
+
+-- "both" with no aircraft named before it is the two aircraft flying when only two fly ("turn both 20
+-- right", "where are they both"); with three or more it still asks which two
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250", "CRE TST8M A320 45 10 200 FL240 280" })
+  check_eq(ex("turn both 30 left"), "HDG TST7K 60 LEFT ; HDG TST8M 170 LEFT")
+  check_eq(ex("where are they both"), "POS TST7K ; POS TST8M")
+  check_eq(ex("both of them descend fl070"), "ALT TST7K FL70 ; ALT TST8M FL70")
+  local _, ex3 = scene({ "CRE TST7K A320 45 9 090 FL080 250", "CRE TST8M A320 45 10 200 FL240 280",
+    "CRE TST9Q A320 45 11 200 FL240 280" })
+  check(ex3("turn both 30 left"):match("^ASK Which two aircraft does 'both' mean") ~= nil, ex3("turn both 30 left"))
+end
+
+-- A question about where an aircraft is ("where is ryanair", "wheres the speedbird", "what's Ryanair doing")
+-- names the one aircraft of that airline flying, also without "the": a question, no cut-short callsign
+-- given an instruction ("ryanair climb fl200" still asks); typed chat shorthand ("rn", "lol", "thx") and a
+-- fault or a break given as the reason ("its bugged", "need coffee") carry no instruction
+do
+  local _, ex = scene({ "CRE RYR4TK B738 45 9 090 FL080 250", "CRE BAW77 A320 45 10 200 FL240 280",
+    "CRE EZY12 A320 45 11 200 FL240 280", "CRE EZY34 A320 45 11.5 200 FL240 280" })
+  check_eq(ex("where is ryanair"), "POS RYR4TK")
+  check_eq(ex("wheres the speedbird"), "POS BAW77")
+  check_eq(ex("what's ryanair doing rn"), "POS RYR4TK")
+  check(ex("where is easyjet"):match("^ASK Which ") ~= nil, ex("where is easyjet"))
+  check(ex("ryanair climb fl200"):match("^ASK ") ~= nil, ex("ryanair climb fl200"))
+  check_eq(ex("baw77 fl250 lol"), "ALT BAW77 FL250")
+  check_eq(ex("remove ezy12 its bugged"), "DEL EZY12")
+  check_eq(ex("freeze the sim, need coffee"), "HOLD")
+  check(ex("baw77 fl250 banana"):match("^ASK .*'banana'") ~= nil, ex("baw77 fl250 banana"))
+end
+
+-- A note opening the request, its one sentence the whole request ("note: run 3, seed 42, no reso",
+-- "comment: first episode"), is text for the log; a note beside an instruction stays a remark
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250" })
+  check_eq(ex("note: run 2, baseline"), "ECHO run 2 , baseline")
+  check_eq(ex("comment: first episode"), "ECHO first episode")
+  check_eq(ex("note to self: episode 3 is the head-on one. set lookahead 120"), "DTLOOK 120")
+  check_eq(ex("tst7k descend fl070, comment: lose the overlap"), "ALT TST7K FL70")
+end
+
+-- A shape's name given in words ("name MXP1", "call it REF2", "name it C3") is its name, also when a place
+-- is said by its name too; that place is accounted for when it lies at one of the points given in figures
+-- (within 0.1 degree), and asked about when it does not
+do
+  local _, ex = navscene({}, "places named at a shape's points")
+  if ex then
+    check_eq(ex("circle round EHAM, name AMSCTR, 52.309 4.764 radius 12nm"), "CIRCLE AMSCTR 52.309 4.764 12")
+    check_eq(ex("line from EHAM to EDDF, call it AMSFRA: 52.309 4.764 50.033 8.570"),
+      "LINE AMSFRA 52.309 4.764 50.033 8.57")
+    check(ex("circle round EDDF, name AMSCTR, 52.309 4.764 radius 12nm"):match("^ASK .*'EDDF'") ~= nil,
+      ex("circle round EDDF, name AMSCTR, 52.309 4.764 radius 12nm"))
+  end
+  local _, ex2 = scene({})
+  check_eq(ex2("box named ZONE1 52 4 53 5"), "BOX ZONE1 52 4 53 5")
+end
+
+-- Random traffic and the clock in an experimenter's notes: the count of a type after "random traffic,",
+-- the destination after "heading for" / "bound for" (a place after a verb of going that names nothing
+-- is asked), a multiplier typed alone as a clause ("then x4", ", 4x") the clock's rate
+do
+  local _, ex = scene({ "DEFWPT MYFIX 45 9" })
+  check_eq(ex("random traffic, 6 a320 at fl300 going to MYFIX"), "MCRE 6 A320 FL300 * MYFIX")
+  check_eq(ex("make 5 random ones all heading for MYFIX"), "MCRE 5 * * * MYFIX")
+  check(ex("make 5 random ones bound for atlantis"):match("^ASK .*'atlantis'") ~= nil, ex("make 5 random ones bound for atlantis"))
+  check_eq(ex("20 random aircraft to fill the sky"), "MCRE 20")
+  check_eq(ex("seed 3 then 10 random b738 then x8"), "SEED 3 ; MCRE 10 B738 ; DTMULT 8")
+  check_eq(ex("pause, 2x"), "HOLD ; DTMULT 2")
+end
+
+-- Areas and winds typed as notes: "restrict sim area to box 45 6 48 13" (two corners after the sim's
+-- area, "box" its form), a wind's position typed straight after "wind"; a waypoint's position said after
+-- "at" before the verb ("ezy1 at 45.8 8.9 insert wpt"); "add X then direct it" flies to X
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250", "DEFWPT MYFIX 45.5 9.5", "DEFWPT OTHFX 45.7 9.9",
+    "ADDWPT TST7K MYFIX" })
+  check_eq(ex("restrict sim area to box 44 8 46 10"), "AREA 44 8 46 10")
+  check_eq(ex("limit the area to 44 8 46 10"), "AREA 44 8 46 10")
+  check_eq(ex("wind 45.2 9.4 FL100 from 250 at 30 kts"), "WIND 45.2 9.4 FL100 250 30")
+  check_eq(ex("tst7k at 45.3 9.2 insert wpt"), "ADDWPT TST7K 45.3 9.2")
+  check_eq(ex("tst7k add OTHFX then direct it"), "ADDWPT TST7K OTHFX ; DIRECT TST7K OTHFX")
+  check(ex("tst7k add OTHFX then direct MYFIX"):match("^ASK .*'OTHFX'") ~= nil, ex("tst7k add OTHFX then direct MYFIX"))
+end
+do
+  local _, ex = navscene({ "CRE TST7K A320 46.4 6.6 090 FL080 250" }, "navaid names with Saint")
+  if ex then check_eq(ex("tst7k direct saint prex"), "ADDWPT TST7K SPR ; DIRECT TST7K SPR") end
+end
+
+-- A brand several airlines fly under said alone in a question ("where is the netjets": NJE or EJA), and a
+-- second speaker's label with an assent after the request ("student: ... climb fl150? engineer: yes do
+-- it"): the request as said; a label followed by anything but assent is read as typed
+do
+  local _, ex = scene({ "CRE NJE318 C56X 47.3 10.75 090 FL230 250", "CRE ITY2011 A319 41.85 11.8 070 FL090 240" })
+  check_eq(ex("where is the netjets"), "POS NJE318")
+  check_eq(ex("student: ity2011 climb fl150? engineer: yes do it"), "ALT ITY2011 FL150")
+  check_eq(ex("ity2011 climb fl150. instructor: ok go ahead"), "ALT ITY2011 FL150")
+  check(ex("ity2011 climb fl150? engineer: maybe later"):match("^ASK ") ~= nil, ex("ity2011 climb fl150? engineer: maybe later"))
+end
+
+-- A state word typed with "?" after an aircraft and no value ("swr84c altitude?", "afr1442 speed?") asks for
+-- its state (POS), as does "how high is afr1442" typed without "?"; with no "?", or an instruction's
+-- shorthand ("fl?"), it stays an instruction that lacks its value
+do
+  local _, ex = scene({ "CRE SWR84C A320 46.5 6.7 250 FL140 270" })
+  check_eq(ex("swr84c altitude?"), "POS SWR84C")
+  check_eq(ex("swr84c speed?"), "POS SWR84C")
+  check(ex("swr84c fl?"):match("^ASK ") ~= nil, ex("swr84c fl?"))
+  check_eq(ex("how high is swr84c"), "POS SWR84C")
+  check(ex("swr84c altitude"):match("^ASK What altitude") ~= nil, ex("swr84c altitude"))
+  check(ex("swr84c climb?"):match("^ASK What altitude") ~= nil, ex("swr84c climb?"))
+end
+
+-- A learning environment's words for the simulation ("reset env", "pause the environment"), "realtime" as
+-- one word; trails neither shown nor hidden ("clear trails") are asked about (it showed them), hidden when
+-- "hide" opens their clause after another instruction
+do
+  local _, ex = scene({ "CRE TST7K A320 45 9 090 FL080 250" })
+  check_eq(ex("pause env"), "HOLD")
+  check(ex("reset env"):match("^ASK Reset the simulation") ~= nil, ex("reset env"))
+  check_eq(ex("realtime speed"), ex("real time speed"))
+  check(ex("clear trails"):match("^ASK Should the trails be shown") ~= nil, ex("clear trails"))
+  check_eq(ex("show trails"), "TRAIL ON")
+  check_eq(ex("trails every 5 seconds"), "TRAIL ON 5")
+  check_eq(ex("dtmult 6 and hide trails"), "DTMULT 6 ; TRAIL OFF")  -- (it showed them)
+  check_eq(ex("ff 2m"), "FF 120")
+  check_eq(ex("could you draw trails behind the aircraft"), "TRAIL ON")
+end
+
 -- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
