@@ -923,6 +923,39 @@ local function title_end(self, k)
   return e
 end
 
+-- The full stop or colon ending an experiment's label that opens a sentence at k ("exp CDR-FR-ES, run 1.",
+-- "Trial 3B:"; lexicon.aside.study_labels): label words, each followed by one to three identifiers (plain
+-- numbers, words written with a capital or a digit; no aircraft, type or instruction word), commas
+-- between, with more of the request after it; nil when there is none.
+local CM_STUDY = set_of(COMMENTARY.study_labels)
+local function study_label_end(self, k)
+  local x = k
+  while CM_STUDY[self.words[x] or ""] do
+    local ids = 0
+    x = x + 1
+    while self.t[x] and self.t[x].kind ~= "punct" do
+      local t = self.t[x]
+      local id = t.kind == "number" or (t.kind == "word" and (t.raw:match("%u") or t.raw:match("%d")))
+      if not id or ids == 3 or self:intent_at(x) or self:has_ref(x, x + 1, "aircraft")
+          or self:has_ref(x, x + 1, "type") then
+        return nil
+      end
+      ids, x = ids + 1, x + 1
+    end
+    local stop = self.t[x]
+    if ids == 0 or not stop then return nil end
+    if stop.text == "." or stop.text == ":" then
+      for _, q in ipairs(self:quantities(k, x)) do
+        if q.kind ~= "plain" then return nil end
+      end
+      return x < #self.t and x or nil
+    end
+    if stop.text ~= "," then return nil end
+    x = x + 1
+  end
+  return nil
+end
+
 -- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
 -- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
 -- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
@@ -987,6 +1020,9 @@ function G:in_reason(i)
           and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 and instructed(k) then
         -- ("pause the sim while I reset the eye tracker", ", we'll put it back on the route later")
         inside = true
+      elseif start and t.kind == "word" and study_label_end(self, k) then
+        -- ("exp CDR-FR-ES, run 1. cre AFR1234 ...": an experiment's label, up to its full stop or colon)
+        inside, reason[k] = true, true
       elseif k == self:skip_fillers(1) and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
           and title_end(self, k) then
         -- ("converging pair please: KLM401 B738 at ...": a title opening the request, up to its colon)

@@ -392,7 +392,13 @@ return {
           blocks = { "and", "then", "also", "same", "both", "either", "again", "correction", "disregard",
                      "negative", "plus", "next" },
           determiners = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my",
-                          "your", "s" } },
+                          "your", "s" },
+          -- an experiment's label opening a sentence of its own before the request ("exp CDR-FR-ES, run 1.",
+          -- "Trial 3B:", "session 2, block A."): one of these, each with an identifier (a number, or words in
+          -- capitals or with digits), and nothing else up to the full stop or colon
+          study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
+                           "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
+                           "participant", "subject", "iteration", "rep", "replication", "day" } },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place

@@ -3446,3 +3446,15 @@ do
   check(ex("KLM12 330 and turn left 090"):match("^ASK .*'330'") ~= nil, "a number before 'and'")
   check_eq(ex("KLM12 250 kts, turn left 090"), "SPD KLM12 250 ; HDG KLM12 90 LEFT")
 end
+
+-- An experiment's label opening a sentence before the request ("exp ATC-NL-BE, run 4.", "Block C:",
+-- "session 3, block B."): label words each with an identifier, set aside; one with a unit is no label,
+-- and a label alone instructs nothing
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("exp ATC-NL-BE, run 4. KLM12 climb FL340"), "ALT KLM12 FL340")
+  check_eq(ex("Block C: KLM12 speed 250"), "SPD KLM12 250")
+  check_eq(ex("session 3, block B. cre EZY9 A320 52.5 4.5 180 FL250 260"), "CRE EZY9 A320 52.5 4.5 180 FL250 260")
+  check(ex("run 5 min. KLM12 climb FL340"):match("FF 300") ~= nil, "a time is no label")
+  check(ex("exp ATC-NL-BE, run 4."):match("^ASK") ~= nil, "a label alone instructs nothing")
+end
