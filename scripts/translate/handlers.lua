@@ -143,7 +143,8 @@ function m:acids(s)
   -- a callsign after the instruction's value with a value of its own is
   -- not the subject ("turn right heading 160 DLH4AX 2"); one after a comma,
   -- or ending the request, is the addressee ("heading two seven zero, Air
-  -- France one two three four", "hdg 120 for test01")
+  -- France one two three four", "hdg 120 for test01"), also after all the
+  -- values ("add CNF1 at FL340 270 kt to AFR6204")
   local upto = s.e
   local qs = self:quantities(s.trig, s.e)
   for k, q in ipairs(qs) do
@@ -154,7 +155,7 @@ function m:acids(s)
       for i = q.e, s.e - 1 do
         if self.t[i].kind == "punct" then comma = true end
       end
-      if not comma and qs[k + 1] then upto = q.e end
+      if not comma and qs[k + 1] and self:has_ref(q.e, qs[#qs].b, "aircraft") then upto = q.e end
       break
     end
   end

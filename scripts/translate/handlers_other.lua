@@ -1429,8 +1429,10 @@ return function(H, f, compass)
       local had_alt, had_spd = alt, spd
       if q.kind == "alt" and not alt then alt, level_e = f.alt(q.value, q.fl), q.e end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
-      -- "add RESMI FL60 210": a bare number of 100 to 400 straight after the level is the speed (FL60/210)
-      if q.kind == "plain" and not spd and q.b == level_e and q.value >= 100 and q.value <= 400 then
+      -- "add RESMI FL60 210", "add ARBEK at FL320, 280": a bare number of 100 to 400 straight after the level
+      -- (a comma between or none) is the speed (FL60/210)
+      local after_level = level_e ~= nil and (q.b == level_e or (q.b == level_e + 1 and self.t[level_e].text == ","))
+      if q.kind == "plain" and not spd and after_level and q.value >= 100 and q.value <= 400 then
         spd = f.int(q.value)
       end
       if q.kind == "plain" and not spd and self:word(q.b - 1, "speed spd") then spd = f.int(q.value) end
@@ -1469,7 +1471,7 @@ return function(H, f, compass)
       local airport = k == #rest and self:word(r.b - 1, "to into") and self:airport_meant(r.name:upper(), self:state(id))
       if airport and airport:match("^%a%a%a%a$") then
         return self:emit("DEST " .. id .. " " .. airport)
-      elseif self:word(r.b - 1, "then via and to over") or (self.t[r.b - 1] or {}).text == "," then
+      elseif self:word(r.b - 1, "then via and to over") or (self.t[r.b - 1] or {}).text == "," or r.b == last then
         self:emit("ADDWPT " .. id .. " " .. r.name)
         last = r.e
       end

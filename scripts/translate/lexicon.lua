@@ -329,7 +329,7 @@ return {
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
-  waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes" },
+  waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes", "wpts", "wps" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
   articles_new = { "a", "an", "new", "second", "another", "more" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not

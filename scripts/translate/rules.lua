@@ -191,6 +191,14 @@ return function(intent, rule, words)
     return q ~= nil and (q.kind == "speed" or q.kind == "mach")
   end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
+  -- "drop LAMUT from AFR7516", "take KOPOR off the Iberia": a known waypoint said straight after the verb
+  -- and taken "from" or "off" an aircraft that flies
+  rule { "drop remove delete take", "delwpt", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    local k = r and g:word(r.e, "from off") and (g:word(r.e + 1, "the") and r.e + 2 or r.e + 1)
+    local a = k and g:refs_in(k, k + 1, "aircraft")[1]
+    return a ~= nil and a ~= false and a.exists == true
+  end }
   -- "drop CHARL from united 9's route": a waypoint off the route
   rule { "drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
@@ -545,11 +553,21 @@ return function(intent, rule, words)
   rule { "route rte", "addwpt", when = function(g, i)
     local k = i + 1
     if g:word(k, "for of") and g:has_ref(k + 1, k + 2, "aircraft") then k = g:refs_in(k + 1, k + 2, "aircraft")[1].e end
+    -- ("route AFR1234: BUSIL MADOT MTL": the aircraft straight after the word)
+    if g:has_ref(k, k + 1, "aircraft") then k = g:refs_in(k, k + 1, "aircraft")[1].e end
     local t = g.t[k]
     -- (names taken back by a self-correction are skipped: "route: TWEED, then GRICE... no, just TWEED")
     local n = k + 1
     while g.t[n] and g.u:used(n) and g.noted[n] do n = n + 1 end
     return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(n, n + 1, "waypoint")
+  end }
+  -- "VLG2211 route MERGE then ABRIX", "IBE3421: wpt PPG then GIROM": a route or waypoint word straight after
+  -- an aircraft that flies (a colon between or none) and straight before a known place
+  rule { "route rte wpt wp wpts waypoint waypoints", "addwpt", when = function(g, i)
+    local b = (g.t[i - 1] or {}).text == ":" and i - 1 or i
+    local flying = false
+    for _, r in ipairs(g:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists) end
+    return flying and g:has_ref(i + 1, i + 2, "waypoint")
   end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
@@ -612,11 +630,12 @@ return function(intent, rule, words)
     return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
-  -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM": the same said with "put (in)", the two waypoints
-  -- on either side of "before"/"after"
-  rule { "put", "addwpt", when = function(g, i)
+  -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM", "squeeze MADOT in after BUSIL": the same said with
+  -- "put (in)", "squeeze" or "slot", the two waypoints on either side of "before"/"after" ("in" before it or none)
+  rule { "put squeeze slot", "addwpt", when = function(g, i)
     local w = g:word(i + 1, "in") and i + 2 or i + 1
-    return g:has_ref(w, w + 1, "waypoint") and g:word(w + 1, "after before") and g:has_ref(w + 2, w + 3, "waypoint")
+    local at = g:word(w + 1, "in") and w + 2 or w + 1
+    return g:has_ref(w, w + 1, "waypoint") and g:word(at, "after before") and g:has_ref(at + 1, at + 2, "waypoint")
   end }
   -- True when a latitude is said straight after word i (its degrees and minutes too: "55 30 North"),
   -- an aircraft that flies is named and no type is (no creation)

@@ -3458,3 +3458,25 @@ do
   check(ex("run 5 min. KLM12 climb FL340"):match("FF 300") ~= nil, "a time is no label")
   check(ex("exp ATC-NL-BE, run 4."):match("^ASK") ~= nil, "a label alone instructs nothing")
 end
+
+-- Route building in an experimenter's shorthand: "route KLM12: ALFA BRAVO" (the aircraft straight after
+-- "route", places one after another), "KLM12 route ALFA then BRAVO", "KLM12: wpt ALFA", "add wpts ALFA and
+-- BRAVO", a level and a bare speed with a comma between ("add ALFA at FL320, 280"), the aircraft after all
+-- the values ("add ALFA at FL340 270 kt to KLM12"), "drop ALFA from KLM12" (DELWPT), "squeeze BRAVO in
+-- after ALFA". A number that is no speed is still asked about, and an aircraft dropped is no waypoint.
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.2 4.5", "DEFWPT BRAVO 52.4 4.9", "DEFWPT CHARL 52.6 5.2",
+    "CRE KLM12 B738 52 4 090 FL300 280", "CRE EZY9 A320 52.5 4.5 180 FL250 260", "ADDWPT EZY9 ALFA",
+    "ADDWPT EZY9 CHARL" })
+  check_eq(ex("route KLM12: ALFA BRAVO CHARL"), "ADDWPT KLM12 ALFA ; ADDWPT KLM12 BRAVO ; ADDWPT KLM12 CHARL")
+  check_eq(ex("KLM12 route ALFA then BRAVO"), "ADDWPT KLM12 ALFA ; ADDWPT KLM12 BRAVO")
+  check_eq(ex("KLM12: wpt BRAVO then CHARL"), "ADDWPT KLM12 BRAVO ; ADDWPT KLM12 CHARL")
+  check_eq(ex("KLM12 add wpts ALFA and CHARL"), "ADDWPT KLM12 ALFA ; ADDWPT KLM12 CHARL")
+  check_eq(ex("KLM12: add BRAVO at FL320, 280"), "ADDWPT KLM12 BRAVO FL320 280")
+  check(ex("KLM12: add BRAVO at FL320, 20"):match("^ASK .*'20'") ~= nil, "20 is no speed")
+  check_eq(ex("add BRAVO at FL340 270 kt to KLM12"), "ADDWPT KLM12 BRAVO FL340 270")
+  check_eq(ex("drop CHARL from EZY9"), "DELWPT EZY9 CHARL")
+  check_eq(ex("take ALFA off the EZY9"), "DELWPT EZY9 ALFA")
+  check_eq(ex("squeeze BRAVO in after ALFA on EZY9"), "ADDWPT EZY9 BRAVO,,,ALFA")
+  check(ex("drop EZY9 from the list"):match("DELWPT") == nil, "an aircraft dropped is no waypoint")
+end
