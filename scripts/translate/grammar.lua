@@ -3875,8 +3875,10 @@ function M.translate(text, world)
     end)
   end
   -- "330/FL350/280kt": values written with slashes between (each part holding a digit) are values apart;
-  -- a fraction "1/2" stays whole
+  -- a fraction "1/2" stays whole; "VLG2211 / A320 / 42.3 -2.0 / 040": a slash with spaces on both sides
+  -- separates fields as a comma does
   if text:find("/", 1, true) then
+    text = text:gsub("(%S)%s+/%s+(%S)", "%1, %2")
     text = text:gsub("[^%s,;]*/[^%s,;]*", function(w)
       if w:match("^%d/%d+$") then return nil end
       for part in (w .. "/"):gmatch("([^/]*)/") do

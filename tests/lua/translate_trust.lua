@@ -3492,3 +3492,11 @@ do
   check(ex("LH402 speed 240"):match("^ASK") ~= nil, "no DLH402 flies")
   check(ex("KL401 speed 240"):match("^ASK") ~= nil, "KL is KLM's code, no DLH")
 end
+
+-- A new aircraft's fields written with spaced slashes between ("EZY12 / A319 / 51.2 N 0.3 W / 270 /
+-- FL120 / 250 kt"): each slash separates fields as a comma does
+do
+  local _, ex = scene({})
+  check_eq(ex("EZY12 / A319 / 51.2 N 0.3 W / 270 / FL120 / 250 kt"), "CRE EZY12 A319 51.2 -0.3 270 FL120 250")
+  check_eq(ex("KLM7 / B738 / 52.1 4.6 / hdg 090 / FL300 / 280"), "CRE KLM7 B738 52.1 4.6 90 FL300 280")
+end
