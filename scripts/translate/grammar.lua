@@ -2617,7 +2617,11 @@ function G:purpose(k)
   -- other traffic named in its clause and no instruction of its own ("hdg 060 to cross CFG4RK's track")
   local e = k + 1
   while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
-  if KNOWN[nx.text] and (SUBJECTS[nx.text] or nx.filler or #self:quantities(k - 1, k) == 0
+  -- ("climb VLG2211 to 370 to make it a triple", "... to get them closer": a verb squawk knows with a pronoun
+  -- straight after it, no instruction word in its clause, says what the value brings about)
+  local effect = KNOWN[nx.text] and not SUBJECTS[nx.text] and not nx.filler and self:word(k + 2, "it them")
+  for x = k + 1, effect and e - 1 or 0 do effect = effect and not self:intent_at(x) end
+  if KNOWN[nx.text] and not effect and (SUBJECTS[nx.text] or nx.filler or #self:quantities(k - 1, k) == 0
       or not self:has_ref(k + 2, e, "aircraft") or self:intent_at(k + 1)) then
     return false
   end

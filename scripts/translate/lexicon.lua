@@ -52,7 +52,8 @@ return {
     -- closed-class English, which carries no instruction of its own
     articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
         "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
-        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further" },
+        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further",
+        "whatever", "whichever" },
     pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
         "they", "them", "their", "theirs", "themselves", "one", "ones", "someone", "somebody", "anyone",
@@ -76,6 +77,8 @@ return {
     discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit",
         "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
+        -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
+        "hard", "sharp", "sharply",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
@@ -298,7 +301,8 @@ return {
   correction = { "correction", "disregard", "negative" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
-  speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
+  speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee",
+                    "colleague", "colleagues" },
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
   label_roles = { "operator", "op", "sim", "simulator", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
                   "ai", "teammate", "assistant" },

@@ -3500,3 +3500,18 @@ do
   check_eq(ex("EZY12 / A319 / 51.2 N 0.3 W / 270 / FL120 / 250 kt"), "CRE EZY12 A319 51.2 -0.3 270 FL120 250")
   check_eq(ex("KLM7 / B738 / 52.1 4.6 / hdg 090 / FL300 / 280"), "CRE KLM7 B738 52.1 4.6 90 FL300 280")
 end
+
+-- Words of an experimenter's aside beside an instruction: the effect a value should have said as "to"
+-- and a verb with "it" or "them" ("to make it a triple", "to get them closer"), how hard a turn is flown
+-- ("hard left"), "whatever type", a colleague in the room ("colleague's asking something"). A verb of an
+-- instruction in that clause is still no aside, and a turn with no heading still asks.
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "CRE EZY9 A320 52.5 4.5 180 FL250 260" })
+  check_eq(ex("climb KLM12 to 340 to make it a quadruple"), "ALT KLM12 FL340")
+  check_eq(ex("descend EZY9 to FL230 to get them closer"), "ALT EZY9 FL230")
+  check(ex("climb KLM12 to 340 to make it climb FL360"):match("^ASK") ~= nil, "an instruction in the clause")
+  check_eq(ex("KLM12 hard right heading 140"), "HDG KLM12 140 RIGHT")
+  check(ex("KLM12 turn hard"):match("^ASK") ~= nil, "no heading")
+  check_eq(ex("mcre 5, whatever type, FL280, 260 kt"), "MCRE 5 * FL280 260")
+  check_eq(ex("pause the sim, colleague's got a question"), "HOLD")
+end
