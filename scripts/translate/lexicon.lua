@@ -53,7 +53,7 @@ return {
     articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
         "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
         "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further",
-        "whatever", "whichever" },
+        "whatever" },
     pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
         "they", "them", "their", "theirs", "themselves", "one", "ones", "someone", "somebody", "anyone",

@@ -3513,5 +3513,6 @@ do
   check_eq(ex("KLM12 hard right heading 140"), "HDG KLM12 140 RIGHT")
   check(ex("KLM12 turn hard"):match("^ASK") ~= nil, "no heading")
   check_eq(ex("mcre 5, whatever type, FL280, 260 kt"), "MCRE 5 * FL280 260")
+  check(ex("KLM12, EZY9... whichever one is the A320, climb 360"):match("^ASK") ~= nil, "a choice left open")
   check_eq(ex("pause the sim, colleague's got a question"), "HOLD")
 end
