@@ -673,6 +673,18 @@ local function written_forms(text)
   text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)%f[^%d:]", function(h, m, sec)
     return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds"
   end)
+  -- "CPA half a mile", "a quarter of a mile": a fraction of a mile said in words is that many nautical miles
+  text = text:gsub("%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
+    if lexicon.fraction_units[unit:lower()] then return "0.5 nm" end
+  end)
+  text = text:gsub("%f[%a][Aa]%s+([Qq]uarter)%s+o?f?%s*a?%s*(%a+)", function(_, unit)
+    if lexicon.fraction_units[unit:lower()] then return "0.25 nm" end
+  end)
+  -- "descend 8 500 m", "12 000 ft": a number with a space between its thousands and its last three digits,
+  -- typed with its unit straight after, is one number
+  text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
+    if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
+  end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash

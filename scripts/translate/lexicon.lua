@@ -333,6 +333,11 @@ return {
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
+  -- units a fraction said in words is of ("half a mile": 0.5 nm)
+  fraction_units = { mile = true, miles = true, nm = true, nmi = true, mi = true },
+  -- units that close a number typed with a space before its last three digits ("8 500 m", "12 000 ft")
+  thousands_units = { m = true, ft = true, feet = true, foot = true, metres = true, meters = true, metre = true,
+                      meter = true },
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes", "wpts", "wps" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
   articles_new = { "a", "an", "new", "second", "another", "more" },

@@ -3516,3 +3516,17 @@ do
   check(ex("KLM12, EZY9... whichever one is the A320, climb 360"):match("^ASK") ~= nil, "a choice left open")
   check_eq(ex("pause the sim, colleague's got a question"), "HOLD")
 end
+
+-- Values written the way French and Spanish experimenters write them: a fraction of a mile in words
+-- ("CPA half a mile", "a quarter of a mile": 0.5 and 0.25 nm) and a number with a space before its last
+-- three digits when its unit follows ("8 500 m", "12 000 ft"); three digits before the space stay apart
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("creconfs against KLM12: EZY3, A320, 90 degree angle, CPA half a mile, 200 s"),
+    "CRECONFS EZY3 A320 KLM12 90 0.5 200")
+  check_eq(ex("creconfs against KLM12: EZY3, A320, 45 degrees, cpa a quarter of a mile, 150 s"),
+    "CRECONFS EZY3 A320 KLM12 45 0.25 150")
+  check_eq(ex("KLM12 descend 7 500 m"), "ALT KLM12 24606")
+  check_eq(ex("KLM12 descend 12 000 ft"), "ALT KLM12 12000")
+  check(ex("KLM12 heading 270 200 ft"):match("^ASK") ~= nil, "a heading and a number apart")
+end
