@@ -226,6 +226,12 @@ return function(H, f, compass)
           if not alt and (w.text == "alt" or w.text == "altitude") then alt = q.value end
           if not spd and not mach and (w.text == "spd" or w.text == "speed") then spd = q.value end
           if not hdg and (w.text == "hdg" or w.text == "heading") then hdg = q.value end
+          -- ("southbound 170": a number straight after a compass point's "-bound" or "-erly" word, within 90
+          -- degrees of it, is the heading it describes)
+          local c = L.compass[w.text:match("^(%a+)bound$") or w.text:match("^(%a+)erly$") or ""]
+          if not hdg and c and q.value <= 360 and math.abs((c - q.value + 180) % 360 - 180) < 90 then
+            hdg = q.value
+          end
         end
       end
     end

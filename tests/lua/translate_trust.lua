@@ -3530,3 +3530,12 @@ do
   check_eq(ex("KLM12 descend 12 000 ft"), "ALT KLM12 12000")
   check(ex("KLM12 heading 270 200 ft"):match("^ASK") ~= nil, "a heading and a number apart")
 end
+
+-- A new aircraft's heading said as a number straight after its compass word ("northbound 010",
+-- "westerly 260"): the number, when within 90 degrees of the point; one that is not is asked about
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.2 4.5" })
+  check_eq(ex("EZY3, A320, over ALFA, northbound 010, FL300 at 270"), "CRE EZY3 A320 ALFA 10 FL300 270")
+  check_eq(ex("EZY3, A320, over ALFA, westerly 260, FL300 at 270"), "CRE EZY3 A320 ALFA 260 FL300 270")
+  check(ex("EZY3, A320, over ALFA, northbound 170, FL300 at 270"):match("^ASK") ~= nil, "170 is no northbound heading")
+end
