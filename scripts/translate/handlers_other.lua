@@ -557,7 +557,9 @@ return function(H, f, compass)
     if spd then cmd = cmd .. " " .. f.num(self:take(spd).value) end
     -- a value said in the description and read as none of the arguments is asked about, never dropped
     for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if not self.taken[q.b] then
+      -- ("new one TVF88AB": "one" after "new" or "another" stands for the intruder, no value)
+      local pronoun = q.kind == "plain" and q.e == q.b + 1 and self:word(q.b, "one") and self:word(q.b - 1, "new another")
+      if not self.taken[q.b] and not pronoun then
         return self:need(string.format("I have %s. What does '%s' mean?", cmd, self:raw(q.b, q.e)))
       end
     end

@@ -524,6 +524,12 @@ return function(intent, rule, words)
   rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
+  -- ("creconfs: new one TVF88AB, B738, target AFR6204, ...": the new aircraft of a conflict set up before it is
+  -- its intruder, no creation of its own)
+  rule { "new", false, when = function(g, i)
+    for k = 1, i - 1 do if g:intent_at(k) == "creconfs" then return true end end
+    return false
+  end }
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   rule { "add append insert give", "addwpt", near = { 4, "@waypoint_nouns" } }
   -- "append 52.6, 4.2 as a waypoint for EZY45": a position added as a waypoint of an aircraft's

@@ -3539,3 +3539,15 @@ do
   check_eq(ex("EZY3, A320, over ALFA, westerly 260, FL300 at 270"), "CRE EZY3 A320 ALFA 260 FL300 270")
   check(ex("EZY3, A320, over ALFA, northbound 170, FL300 at 270"):match("^ASK") ~= nil, "170 is no northbound heading")
 end
+
+-- A conflict set up with its intruder introduced as "new" or "new one" ("creconfs: new one EZY3, A320,
+-- target KLM12, ..."): the new aircraft is the intruder, no creation of its own, and "one" no value
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("creconfs: new one EZY3, A320, target KLM12, 60 degree angle, cpa 1 nm, 200 s"),
+    "CRECONFS EZY3 A320 KLM12 60 1 200")
+  check_eq(ex("creconfs: new EZY3, A320, target KLM12, 60 degree angle, cpa 1 nm, 200 s"),
+    "CRECONFS EZY3 A320 KLM12 60 1 200")
+  check(ex("creconfs: new one EZY3, A320, target KLM12, 60 degree angle, cpa 1 nm, 200 s, 7"):match("^ASK .*'7'")
+    ~= nil, "a value left over")
+end
