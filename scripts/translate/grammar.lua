@@ -3295,6 +3295,9 @@ function G:not_simulated()
         if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
           break
         end
+        -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
+        -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
+        if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
         if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right")
             and not (class.through and self:word(e, class.through)) then

@@ -333,6 +333,8 @@ return {
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
+  -- imperative verbs that open an instruction of their own after a comma, even after traffic information
+  clause_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite" },
   -- units a fraction said in words is of ("half a mile": 0.5 nm)
   fraction_units = { mile = true, miles = true, nm = true, nmi = true, mi = true },
   -- units that close a number typed with a space before its last three digits ("8 500 m", "12 000 ft")

@@ -3551,3 +3551,14 @@ do
   check(ex("creconfs: new one EZY3, A320, target KLM12, 60 degree angle, cpa 1 nm, 200 s, 7"):match("^ASK .*'7'")
     ~= nil, "a value left over")
 end
+
+-- Traffic information followed by an instruction after a comma ("traffic eleven o'clock, turn left 20
+-- degrees"): the clause opening with an imperative verb (lexicon.clause_verbs) is an instruction; the
+-- traffic's own description ("eastbound, altitude indicates FL330", "climbing through") instructs nobody
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12, traffic ten o'clock, 6 miles, turn right 30 degrees"), "HDG KLM12 120 RIGHT")
+  check_eq(ex("KLM12, traffic two o'clock opposite direction, descend FL280"), "ALT KLM12 FL280")
+  check_eq(ex("KLM12 traffic two o'clock, 5 miles, eastbound, altitude indicates FL310"), "")
+  check_eq(ex("KLM12 traffic one o'clock, climbing through FL290"), "")
+end
