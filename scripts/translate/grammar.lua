@@ -3553,21 +3553,6 @@ local function split_ids(text, fleet)
   end))
 end
 
--- "AF7706 direct LSE", "IB3421 climb FL300": a callsign typed with its airline's IATA code in capitals
--- (names.iata) glued to its flight number, that is no aircraft's id, is written as the ICAO callsign of
--- those characters when that aircraft flies; any other, and a code said apart ("AC 851": a callsign cut
--- short as often), is left for the matcher to ask about.
-local function iata_ids(text, fleet)
-  if #fleet == 0 then return text end
-  local ids = {}
-  for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
-  return (text:gsub("%f[%w](%u[%u%d])(%d[%d%u]*)%f[^%w]", function(code, rest)
-    local icao = names.iata[code]
-    if not icao or ids[code .. rest] or not ids[icao .. rest] then return nil end
-    return icao .. rest
-  end))
-end
-
 -- "where is Charlie Golf Kilo Quebec Mike", "Cessna Charlie Golf Kilo Quebec Mike, climb ...": a
 -- registration spelled in the phonetic alphabet anywhere, four letters or more, that is exactly the
 -- id of an aircraft flying is written as that id; a maker or model said before it is the aircraft's
@@ -3906,8 +3891,7 @@ function M.translate(text, world)
       return (w:gsub("/", " "))
     end)
   end
-  text = airline_values(split_ids(unglued_ids(iata_ids(text, world.aircraft), world.aircraft), world.aircraft),
-    world.aircraft)
+  text = airline_values(split_ids(unglued_ids(text, world.aircraft), world.aircraft), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")

@@ -365,14 +365,6 @@ return {
     { "ita", "ITY" },  -- (ITA Airways, telephony Itarrow)
     { "ita airways", "ITY" },
   },
-  -- iata: an airline's two-character IATA code -> its ICAO prefix; a callsign typed with the code
-  -- glued to its flight number ("AF7706") is the aircraft of the ICAO callsign with those digits when it flies
-  iata = { AF = "AFR", KL = "KLM", BA = "BAW", LH = "DLH", IB = "IBE", VY = "VLG", UX = "AEA", V7 = "VOE",
-    TO = "TVF", HV = "TRA", I2 = "IBS", FR = "RYR", U2 = "EZY", LX = "SWR", OS = "AUA", SN = "BEL", TP = "TAP",
-    SK = "SAS", AY = "FIN", EI = "EIN", DY = "NAX", W6 = "WZZ", EW = "EWG", DE = "CFG", LO = "LOT", OK = "CSA",
-    A3 = "AEE", TK = "THY", EK = "UAE", QR = "QTR", EY = "ETD", AA = "AAL", DL = "DAL", UA = "UAL", AC = "ACA",
-    WN = "SWA", B6 = "JBU", AS = "ASA", QF = "QFA", SQ = "SIA", CX = "CPA", NH = "ANA", JL = "JAL", LY = "ELY",
-    VS = "VIR", LG = "LGL", BY = "TOM", PC = "PGT", AT = "RAM", NT = "IBB", YW = "ANE", PM = "CNF", BT = "BTI" },
   brands = {
     { "transavia", "TRA", "TVF" },
     { "lauda", "LDA", "LDM" },

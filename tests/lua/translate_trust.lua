@@ -3481,18 +3481,6 @@ do
   check(ex("drop EZY9 from the list"):match("DELWPT") == nil, "an aircraft dropped is no waypoint")
 end
 
--- A callsign typed with its airline's IATA code glued to it (names.iata: "BA2841", "LH401") is the aircraft
--- of the ICAO callsign with those characters when it flies; one whose ICAO callsign does not fly, or a code
--- said apart ("LH 401"), is asked about
-do
-  local _, ex = scene({ "CRE BAW2841 A320 52 4 090 FL300 280", "CRE DLH401 A321 52.5 4.5 180 FL250 260" })
-  check_eq(ex("BA2841 climb FL340"), "ALT BAW2841 FL340")
-  check(ex("LH 401 speed 240"):match("^ASK") ~= nil, "a code said apart")
-  check_eq(ex("LH401 speed 240"), "SPD DLH401 240")
-  check(ex("LH402 speed 240"):match("^ASK") ~= nil, "no DLH402 flies")
-  check(ex("KL401 speed 240"):match("^ASK") ~= nil, "KL is KLM's code, no DLH")
-end
-
 -- A new aircraft's fields written with spaced slashes between ("EZY12 / A319 / 51.2 N 0.3 W / 270 /
 -- FL120 / 250 kt"): each slash separates fields as a comma does
 do
