@@ -922,9 +922,9 @@ return function(intent, rule, words)
       and g:has_ref(1, #g.t + 1, "type")
   end }
   rule { "details status info information state pos", "pos" }
-  -- "show me Wideroe five one two": an aircraft alone after the verb is shown where it is
+  -- "show me Wideroe five one two", "check IBE3421": an aircraft alone after the verb is shown where it is
   -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own)
-  rule { "show display", "pos", when = function(g, i)
+  rule { "show display check", "pos", when = function(g, i)
     local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
     local r = g:refs_in(k, k + 1, "aircraft")[1]
     return r ~= nil and (g:alone_but(i, r.e) or g:clause_alone(i, r.e))

@@ -3550,3 +3550,11 @@ do
   check_eq(ex("KLM12 traffic two o'clock, 5 miles, eastbound, altitude indicates FL310"), "")
   check_eq(ex("KLM12 traffic one o'clock, climbing through FL290"), "")
 end
+
+-- "check KLM12": an aircraft alone after "check" (as after "show") is shown where it is; with more
+-- said after it, it is no request to show
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("check KLM12"), "POS KLM12")
+  check(ex("check KLM12 is at FL310"):match("^POS") == nil, "a statement to check is no request to show")
+end
