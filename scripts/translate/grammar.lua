@@ -706,6 +706,10 @@ local function written_forms(text)
   text = text:gsub("%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
     if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
   end)
+  -- "orig/dest AFR1234: LFPG -> LFML", "origin/destination EZY45 EGKK EHAM": both settings written as one
+  -- with a slash, then the aircraft and the two airports in that order (an arrow between them or none)
+  text = text:gsub("%f[%a]([Oo][Rr][Ii][Gg]%a*)%s*/%s*([Dd][Ee][Ss][Tt]%a*)%s+(%w+):?%s+(%a%a%a%a)%s*%-*>?%s*(%a%a%a%a)%f[%A]",
+    "%3 origin %4, destination %5")
   -- "dest eidw -> einn": an arrow between two places after the name of an airport setting changes it
   -- from the one to the other: the setting takes the second
   text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)

@@ -3558,3 +3558,15 @@ do
   check_eq(ex("check KLM12"), "POS KLM12")
   check(ex("check KLM12 is at FL310"):match("^POS") == nil, "a statement to check is no request to show")
 end
+
+-- Origin and destination written as one setting with a slash ("orig/dest KLM12: EHAM -> EGLL",
+-- "origin/destination KLM12 EHAM EGLL"): the aircraft, then the two airports in that order; one airport
+-- only is asked about
+do
+  local s, ex = navscene({ "CRE KLM12 B738 52 4 090 FL300 280" }, "orig/dest written as one setting")
+  if s then
+    check_eq(ex("orig/dest KLM12: EHAM -> EGLL"), "ORIG KLM12 EHAM ; DEST KLM12 EGLL")
+    check_eq(ex("origin/destination KLM12 EHAM EGLL"), "ORIG KLM12 EHAM ; DEST KLM12 EGLL")
+    check(ex("orig/dest KLM12: EHAM"):match("^ASK") ~= nil, "one airport for two settings")
+  end
+end
