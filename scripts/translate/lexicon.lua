@@ -362,7 +362,9 @@ return {
                        -- "climb through DLH9CE's level"
                        "through",
                        -- "out of the way of INT1"
-                       "way" },
+                       "way",
+                       -- "turn left 20 into the Vueling 1723", "turn towards VLG1723": the traffic turned toward
+                       "into", "towards", "toward" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",

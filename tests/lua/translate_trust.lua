@@ -3570,3 +3570,13 @@ do
     check(ex("orig/dest KLM12: EHAM"):match("^ASK") ~= nil, "one airport for two settings")
   end
 end
+
+-- The traffic a turn is made toward ("turn left 20 into the easyJet", "turn right 30 towards EZY9") is
+-- context, never instructed nor asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "CRE EZY9 A320 52.5 4.5 180 FL300 260" })
+  check_eq(ex("KLM12 turn left 20 into the easyJet 9"), "HDG KLM12 70 LEFT")
+  check_eq(ex("KLM12 turn right 30 towards EZY9"), "HDG KLM12 120 RIGHT")
+  local r = ex("KLM12 turn left 20 into EZY9 and EZY9 climb FL340")
+  check(r:match("^ASK") ~= nil or r == "HDG KLM12 70 LEFT ; ALT EZY9 FL340", "EZY9's climb never given to KLM12: " .. r)
+end
