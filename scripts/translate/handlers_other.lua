@@ -2341,15 +2341,20 @@ return function(H, f, compass)
     end
     if self:asks_setting(true) then return self:emit(kind(s.e) or "RFACH") end
     local before = #self.out
-    for _, q in ipairs(self:quantities(s.trig, s.e)) do
+    -- ("a 20 percent margin": a margin in percent, said before the noun, is the factor 1.2)
+    local by_margin = self:word(s.trig, "margin")
+    for _, q in ipairs(self:quantities(by_margin and s.b or s.trig, s.e)) do
       -- ("the vertical one": a pronoun, no value)
       local pronoun = self.t[q.b].text == "one" and self:word(q.b - 1, "vertical horizontal lateral")
-      if q.kind == "plain" and not pronoun then
+      local margin = by_margin and q.kind == "percent"
+      if (q.kind == "plain" and not pronoun and not by_margin) or margin then
         local cmd = kind(q.b)
+        local value = margin and 1 + q.value / 100 or q.value
         if not cmd then
-          return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(q.value)))
+          return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(value)))
         end
-        self:emit(cmd .. " " .. f.num(self:take(q).value))
+        self:take(q)
+        self:emit(cmd .. " " .. f.num(value))
       end
     end
     if #self.out == before then self:need("What safety factor should conflict resolution apply?") end

@@ -3580,3 +3580,13 @@ do
   local r = ex("KLM12 turn left 20 into EZY9 and EZY9 climb FL340")
   check(r:match("^ASK") ~= nil or r == "HDG KLM12 70 LEFT ; ALT EZY9 FL340", "EZY9's climb never given to KLM12: " .. r)
 end
+
+-- Conflict resolution's safety factor said as a margin in percent ("give the horizontal resolutions a 20
+-- percent margin": RFACH 1.2); a margin with no percent, or with no direction, is asked about
+do
+  local _, ex = scene({})
+  check_eq(ex("give the horizontal resolutions a 15 percent margin"), "RFACH 1.15")
+  check_eq(ex("give the horizontal resolutions a 25% margin"), "RFACH 1.25")
+  check(ex("give the horizontal resolutions a 20 margin"):match("^ASK") ~= nil, "no percent")
+  check(ex("give the resolutions a 20 percent margin"):match("^ASK") ~= nil, "no direction")
+end
