@@ -740,9 +740,12 @@ return function(intent, rule, words)
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
+  -- (the place a waypoint's code, or a navaid's name with its kind after it: "point the Iberia at the Gerona VOR")
   local function to_waypoint(g, i)
     local k = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "towards toward at to")
-    return k <= #g.t and g:has_ref(g:skip_fillers(k + 1), g:skip_fillers(k + 1) + 1, "waypoint")
+    local w = g:skip_fillers(k + 1)
+    return k <= #g.t and (g:has_ref(w, w + 1, "waypoint")
+      or (g:word(w + 1, "@navaid_kinds") and g:place_by_name(w, w + 1) ~= nil))
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }

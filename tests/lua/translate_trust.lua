@@ -3590,3 +3590,13 @@ do
   check(ex("give the horizontal resolutions a 20 margin"):match("^ASK") ~= nil, "no percent")
   check(ex("give the resolutions a 20 percent margin"):match("^ASK") ~= nil, "no direction")
 end
+
+-- "point KLM12 at the Spijkerboor VOR": a navaid said by its name with its kind after it, after "point ...
+-- at", is flown to directly, as its code is; a name alone there is still asked about
+do
+  local s, ex = navscene({ "CRE KLM12 B738 52 4 090 FL300 280" }, "pointing at a navaid by its name")
+  if s then
+    check_eq(ex("point KLM12 at the Spijkerboor VOR"), "ADDWPT KLM12 SPY ; DIRECT KLM12 SPY")
+    check(ex("point KLM12 at the Nowhereville VOR"):match("^ASK") ~= nil, "no such navaid")
+  end
+end
