@@ -294,7 +294,11 @@ function m:as_context(i)
   for k = i - 1, math.max(1, i - 3), -1 do
     -- (nor across a sentence's end: "OK, conflict time. Jetairfly climb FL310")
     if self:intent_at(k) or (self.t[k].kind == "punct" and self.t[k].text ~= ",") then return false end
-    if self:word(k, "@aircraft_context") then return true end
+    if self:word(k, "@aircraft_context") then
+      -- ("insert SUGOL into KLM601's route": the aircraft whose route it is, no traffic turned toward)
+      local r = self:word(k, "into towards toward") and self:refs_in(i, i + 1, "aircraft")[1]
+      return not (r and self:word(r.e, "@route_nouns"))
+    end
   end
   return false
 end

@@ -3577,6 +3577,10 @@ do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "CRE EZY9 A320 52.5 4.5 180 FL300 260" })
   check_eq(ex("KLM12 turn left 20 into the easyJet 9"), "HDG KLM12 70 LEFT")
   check_eq(ex("KLM12 turn right 30 towards EZY9"), "HDG KLM12 120 RIGHT")
+  -- (the aircraft whose route a waypoint goes into is addressed: "insert ALFA into EZY9's route after BRAVO")
+  local _, routed = scene({ "DEFWPT ALFA 52.2 4.5", "DEFWPT BRAVO 52.4 4.9", "CRE EZY9 A320 52.5 4.5 180 FL300 260",
+    "ADDWPT EZY9 BRAVO" })
+  check_eq(routed("insert ALFA into EZY9's route after BRAVO"), "ADDWPT EZY9 ALFA,,,BRAVO")
   local r = ex("KLM12 turn left 20 into EZY9 and EZY9 climb FL340")
   check(r:match("^ASK") ~= nil or r == "HDG KLM12 70 LEFT ; ALT EZY9 FL340", "EZY9's climb never given to KLM12: " .. r)
 end
