@@ -1234,7 +1234,7 @@ return function(intent, rule, words)
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
   -- "give the horizontal resolutions a 20 percent margin": the safety factor said as a margin in percent
   rule { "resolution resolve reso resolutions", false, near = { 5, "margin" } }
-  rule { "margin", "rfac", prev = { 5, "resolution resolutions reso resolve" } }
+  rule { "margin", "rfac", prev = { 5, "resolution resolutions reso resolve" }, not_near = { 1, "factor" } }
   -- "Resolution method MVP, horizontal factor 1.2": a factor of a direction, resolution said before
   rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
     return g:word_in(1, i, "resolution resolutions reso resolve mvp")

@@ -3591,6 +3591,7 @@ do
   local _, ex = scene({})
   check_eq(ex("give the horizontal resolutions a 15 percent margin"), "RFACH 1.15")
   check_eq(ex("give the horizontal resolutions a 25% margin"), "RFACH 1.25")
+  check_eq(ex("vertical resolution margin factor 1.08"), "RFACV 1.08")
   check(ex("give the horizontal resolutions a 20 margin"):match("^ASK") ~= nil, "no percent")
   check(ex("give the resolutions a 20 percent margin"):match("^ASK") ~= nil, "no direction")
 end
