@@ -754,6 +754,18 @@ local function written_forms(text)
   text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)%f[^%d:]", function(h, m, sec)
     return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds"
   end)
+  -- "CPA half a mile", "a quarter of a mile": a fraction of a mile said in words is that many nautical miles
+  text = text:gsub("%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
+    if lexicon.fraction_units[unit:lower()] then return "0.5 nm" end
+  end)
+  text = text:gsub("%f[%a][Aa]%s+([Qq]uarter)%s+o?f?%s*a?%s*(%a+)", function(_, unit)
+    if lexicon.fraction_units[unit:lower()] then return "0.25 nm" end
+  end)
+  -- "descend 8 500 m", "12 000 ft": a number with a space between its thousands and its last three digits,
+  -- typed with its unit straight after, is one number
+  text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
+    if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
+  end)
   local sh = lexicon.shorthand
   text = turn_letters(text, sh)
   -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7" (only a key that names
@@ -787,6 +799,10 @@ local function written_forms(text)
   text = text:gsub("%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
     if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
   end)
+  -- "orig/dest AFR1234: LFPG -> LFML", "origin/destination EZY45 EGKK EHAM": both settings written as one
+  -- with a slash, then the aircraft and the two airports in that order (an arrow between them or none)
+  text = text:gsub("%f[%a]([Oo][Rr][Ii][Gg]%a*)%s*/%s*([Dd][Ee][Ss][Tt]%a*)%s+(%w+):?%s+(%a%a%a%a)%s*%-*>?%s*(%a%a%a%a)%f[%A]",
+    "%3 origin %4, destination %5")
   -- "dest eidw -> einn": an arrow between two places after the name of an airport setting changes it
   -- from the one to the other: the setting takes the second
   text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
@@ -1016,6 +1032,39 @@ local function title_end(self, k)
   return e
 end
 
+-- The full stop or colon ending an experiment's label that opens a sentence at k ("exp CDR-FR-ES, run 1.",
+-- "Trial 3B:"; lexicon.aside.study_labels): label words, each followed by one to three identifiers (plain
+-- numbers, words written with a capital or a digit; no aircraft, type or instruction word), commas
+-- between, with more of the request after it; nil when there is none.
+local CM_STUDY = set_of(COMMENTARY.study_labels)
+local function study_label_end(self, k)
+  local x = k
+  while CM_STUDY[self.words[x] or ""] do
+    local ids = 0
+    x = x + 1
+    while self.t[x] and self.t[x].kind ~= "punct" do
+      local t = self.t[x]
+      local id = t.kind == "number" or (t.kind == "word" and (t.raw:match("%u") or t.raw:match("%d")))
+      if not id or ids == 3 or self:intent_at(x) or self:has_ref(x, x + 1, "aircraft")
+          or self:has_ref(x, x + 1, "type") then
+        return nil
+      end
+      ids, x = ids + 1, x + 1
+    end
+    local stop = self.t[x]
+    if ids == 0 or not stop then return nil end
+    if stop.text == "." or stop.text == ":" then
+      for _, q in ipairs(self:quantities(k, x)) do
+        if q.kind ~= "plain" then return nil end
+      end
+      return x < #self.t and x or nil
+    end
+    if stop.text ~= "," then return nil end
+    x = x + 1
+  end
+  return nil
+end
+
 -- True when the sentence opening at k is a remark beside the sentences that instruct: it ends the
 -- request or with a full stop or "!" (a question may ask for something, a colon labels what follows),
 -- something is instructed before it (`instructed(k)`) or after it, and it is commentary with no aircraft
@@ -1092,6 +1141,9 @@ function G:in_reason(i)
           and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0 and instructed(k) then
         -- ("pause the sim while I reset the eye tracker", ", we'll put it back on the route later")
         inside = true
+      elseif start and t.kind == "word" and study_label_end(self, k) then
+        -- ("exp CDR-FR-ES, run 1. cre AFR1234 ...": an experiment's label, up to its full stop or colon)
+        inside, reason[k] = true, true
       elseif k == self:skip_fillers(1) and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
           and title_end(self, k) then
         -- ("converging pair please: KLM401 B738 at ...": a title opening the request, up to its colon)
@@ -2740,7 +2792,11 @@ function G:purpose(k)
   -- other traffic named in its clause and no instruction of its own ("hdg 060 to cross CFG4RK's track")
   local e = k + 1
   while e <= #self.t and self.t[e].kind ~= "punct" do e = e + 1 end
-  if KNOWN[nx.text] and (SUBJECTS[nx.text] or nx.filler or #self:quantities(k - 1, k) == 0
+  -- ("climb VLG2211 to 370 to make it a triple", "... to get them closer": a verb squawk knows with a pronoun
+  -- straight after it, no instruction word in its clause, says what the value brings about)
+  local effect = KNOWN[nx.text] and not SUBJECTS[nx.text] and not nx.filler and self:word(k + 2, "it them")
+  for x = k + 1, effect and e - 1 or 0 do effect = effect and not self:intent_at(x) end
+  if KNOWN[nx.text] and not effect and (SUBJECTS[nx.text] or nx.filler or #self:quantities(k - 1, k) == 0
       or not self:has_ref(k + 2, e, "aircraft") or self:intent_at(k + 1)) then
     return false
   end
@@ -3402,6 +3458,9 @@ function G:not_simulated()
         if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
           break
         end
+        -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
+        -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
+        if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
         if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right")
             and not (class.through and self:word(e, class.through)) then
@@ -4008,8 +4067,10 @@ function M.translate(text, world)
     end)
   end
   -- "330/FL350/280kt": values written with slashes between (each part holding a digit) are values apart;
-  -- a fraction "1/2" stays whole
+  -- a fraction "1/2" stays whole; "VLG2211 / A320 / 42.3 -2.0 / 040": a slash with spaces on both sides
+  -- separates fields as a comma does
   if text:find("/", 1, true) then
+    text = text:gsub("(%S)%s+/%s+(%S)", "%1, %2")
     text = text:gsub("[^%s,;]*/[^%s,;]*", function(w)
       if w:match("^%d/%d+$") then return nil end
       for part in (w .. "/"):gmatch("([^/]*)/") do

@@ -143,7 +143,8 @@ function m:acids(s)
   -- a callsign after the instruction's value with a value of its own is
   -- not the subject ("turn right heading 160 DLH4AX 2"); one after a comma,
   -- or ending the request, is the addressee ("heading two seven zero, Air
-  -- France one two three four", "hdg 120 for test01")
+  -- France one two three four", "hdg 120 for test01"), also after all the
+  -- values ("add CNF1 at FL340 270 kt to AFR6204")
   local upto = s.e
   local qs = self:quantities(s.trig, s.e)
   for k, q in ipairs(qs) do
@@ -154,7 +155,7 @@ function m:acids(s)
       for i = q.e, s.e - 1 do
         if self.t[i].kind == "punct" then comma = true end
       end
-      if not comma and qs[k + 1] then upto = q.e end
+      if not comma and qs[k + 1] and self:has_ref(q.e, qs[#qs].b, "aircraft") then upto = q.e end
       break
     end
   end
@@ -295,7 +296,11 @@ function m:as_context(i)
   for k = i - 1, math.max(1, i - 3), -1 do
     -- (nor across a sentence's end: "OK, conflict time. Jetairfly climb FL310")
     if self:intent_at(k) or (self.t[k].kind == "punct" and self.t[k].text ~= ",") then return false end
-    if self:word(k, "@aircraft_context") then return true end
+    if self:word(k, "@aircraft_context") then
+      -- ("insert SUGOL into KLM601's route": the aircraft whose route it is, no traffic turned toward)
+      local r = self:word(k, "into towards toward") and self:refs_in(i, i + 1, "aircraft")[1]
+      return not (r and self:word(r.e, "@route_nouns"))
+    end
   end
   return false
 end

@@ -226,6 +226,12 @@ return function(H, f, compass)
           if not alt and (w.text == "alt" or w.text == "altitude") then alt = q.value end
           if not spd and not mach and (w.text == "spd" or w.text == "speed") then spd = q.value end
           if not hdg and (w.text == "hdg" or w.text == "heading") then hdg = q.value end
+          -- ("southbound 170": a number straight after a compass point's "-bound" or "-erly" word, within 90
+          -- degrees of it, is the heading it describes)
+          local c = L.compass[w.text:match("^(%a+)bound$") or w.text:match("^(%a+)erly$") or ""]
+          if not hdg and c and q.value <= 360 and math.abs((c - q.value + 180) % 360 - 180) < 90 then
+            hdg = q.value
+          end
         end
       end
     end
@@ -551,7 +557,9 @@ return function(H, f, compass)
     if spd then cmd = cmd .. " " .. f.num(self:take(spd).value) end
     -- a value said in the description and read as none of the arguments is asked about, never dropped
     for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if not self.taken[q.b] then
+      -- ("new one TVF88AB": "one" after "new" or "another" stands for the intruder, no value)
+      local pronoun = q.kind == "plain" and q.e == q.b + 1 and self:word(q.b, "one") and self:word(q.b - 1, "new another")
+      if not self.taken[q.b] and not pronoun then
         return self:need(string.format("I have %s. What does '%s' mean?", cmd, self:raw(q.b, q.e)))
       end
     end
@@ -1554,8 +1562,10 @@ return function(H, f, compass)
       local had_alt, had_spd = alt, spd
       if q.kind == "alt" and not alt then alt, level_e = f.alt(q.value, q.fl), q.e end
       if q.kind == "speed" and not spd then spd = f.int(q.value) end
-      -- "add RESMI FL60 210": a bare number of 100 to 400 straight after the level is the speed (FL60/210)
-      if q.kind == "plain" and not spd and q.b == level_e and q.value >= 100 and q.value <= 400 then
+      -- "add RESMI FL60 210", "add ARBEK at FL320, 280": a bare number of 100 to 400 straight after the level
+      -- (a comma between or none) is the speed (FL60/210)
+      local after_level = level_e ~= nil and (q.b == level_e or (q.b == level_e + 1 and self.t[level_e].text == ","))
+      if q.kind == "plain" and not spd and after_level and q.value >= 100 and q.value <= 400 then
         spd = f.int(q.value)
       end
       if q.kind == "plain" and not spd and self:word(q.b - 1, "speed spd") then spd = f.int(q.value) end
@@ -1594,7 +1604,7 @@ return function(H, f, compass)
       local airport = k == #rest and self:word(r.b - 1, "to into") and self:airport_meant(r.name:upper(), self:state(id))
       if airport and airport:match("^%a%a%a%a$") then
         return self:emit("DEST " .. id .. " " .. airport)
-      elseif self:word(r.b - 1, "then via and to over") or (self.t[r.b - 1] or {}).text == "," then
+      elseif self:word(r.b - 1, "then via and to over") or (self.t[r.b - 1] or {}).text == "," or r.b == last then
         self:emit("ADDWPT " .. id .. " " .. r.name)
         last = r.e
       end
@@ -2495,15 +2505,20 @@ return function(H, f, compass)
     end
     if self:asks_setting(true) then return self:emit(kind(s.e) or "RFACH") end
     local before = #self.out
-    for _, q in ipairs(self:quantities(s.trig, s.e)) do
+    -- ("a 20 percent margin": a margin in percent, said before the noun, is the factor 1.2)
+    local by_margin = self:word(s.trig, "margin")
+    for _, q in ipairs(self:quantities(by_margin and s.b or s.trig, s.e)) do
       -- ("the vertical one": a pronoun, no value)
       local pronoun = self.t[q.b].text == "one" and self:word(q.b - 1, "vertical horizontal lateral")
-      if q.kind == "plain" and not pronoun then
+      local margin = by_margin and q.kind == "percent"
+      if (q.kind == "plain" and not pronoun and not by_margin) or margin then
         local cmd = kind(q.b)
+        local value = margin and 1 + q.value / 100 or q.value
         if not cmd then
-          return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(q.value)))
+          return self:need(string.format("Should the horizontal or the vertical safety factor be %s?", f.num(value)))
         end
-        self:emit(cmd .. " " .. f.num(self:take(q).value))
+        self:take(q)
+        self:emit(cmd .. " " .. f.num(value))
       end
     end
     if #self.out == before then self:need("What safety factor should conflict resolution apply?") end

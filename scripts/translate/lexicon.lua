@@ -52,7 +52,8 @@ return {
     -- closed-class English, which carries no instruction of its own
     articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
         "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
-        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further" },
+        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further",
+        "whatever" },
     pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
         "they", "them", "their", "theirs", "themselves", "one", "ones", "someone", "somebody", "anyone",
@@ -76,6 +77,8 @@ return {
     discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit",
         "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
+        -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
+        "hard", "sharp", "sharply",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
@@ -314,7 +317,8 @@ return {
   correction = { "correction", "disregard", "negative" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
-  speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee" },
+  speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee",
+                    "colleague", "colleagues" },
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
   label_roles = { "operator", "op", "sim", "simulator", "sup", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
                   "ai", "teammate", "assistant", "engineer" },
@@ -349,7 +353,14 @@ return {
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
-  waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes" },
+  -- imperative verbs that open an instruction of their own after a comma, even after traffic information
+  clause_verbs = { "turn", "climb", "descend", "reduce", "increase", "fly", "proceed", "expedite" },
+  -- units a fraction said in words is of ("half a mile": 0.5 nm)
+  fraction_units = { mile = true, miles = true, nm = true, nmi = true, mi = true },
+  -- units that close a number typed with a space before its last three digits ("8 500 m", "12 000 ft")
+  thousands_units = { m = true, ft = true, feet = true, foot = true, metres = true, meters = true, metre = true,
+                      meter = true },
+  waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes", "wpts", "wps" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
   articles_new = { "a", "an", "new", "second", "another", "more" },
   -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
@@ -371,7 +382,9 @@ return {
                        -- "climb through DLH9CE's level"
                        "through",
                        -- "out of the way of INT1"
-                       "way" },
+                       "way",
+                       -- "turn left 20 into the Vueling 1723", "turn towards VLG1723": the traffic turned toward
+                       "into", "towards", "toward" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",
@@ -412,7 +425,13 @@ return {
           blocks = { "and", "then", "also", "same", "both", "either", "again", "correction", "disregard",
                      "negative", "plus", "next" },
           determiners = { "the", "a", "an", "this", "that", "our", "its", "their", "his", "her", "my",
-                          "your", "s" } },
+                          "your", "s" },
+          -- an experiment's label opening a sentence of its own before the request ("exp CDR-FR-ES, run 1.",
+          -- "Trial 3B:", "session 2, block A."): one of these, each with an identifier (a number, or words in
+          -- capitals or with digits), and nothing else up to the full stop or colon
+          study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
+                           "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
+                           "participant", "subject", "iteration", "rep", "replication", "day" } },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place

@@ -200,6 +200,14 @@ return function(intent, rule, words)
     return q ~= nil and (q.kind == "speed" or q.kind == "mach")
   end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
+  -- "drop LAMUT from AFR7516", "take KOPOR off the Iberia": a known waypoint said straight after the verb
+  -- and taken "from" or "off" an aircraft that flies
+  rule { "drop remove delete take", "delwpt", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    local k = r and g:word(r.e, "from off") and (g:word(r.e + 1, "the") and r.e + 2 or r.e + 1)
+    local a = k and g:refs_in(k, k + 1, "aircraft")[1]
+    return a ~= nil and a ~= false and a.exists == true
+  end }
   -- "drop CHARL from united 9's route": a waypoint off the route
   rule { "drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
@@ -540,6 +548,12 @@ return function(intent, rule, words)
   rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
+  -- ("creconfs: new one TVF88AB, B738, target AFR6204, ...": the new aircraft of a conflict set up before it is
+  -- its intruder, no creation of its own)
+  rule { "new", false, when = function(g, i)
+    for k = 1, i - 1 do if g:intent_at(k) == "creconfs" then return true end end
+    return false
+  end }
   rule { "new", "create", when = function(g, i) return g:type_or_aircraft_word(i + 1, i + 3) end }
   -- "new target: Jazz 7310, DH8D, ...": a radar target, when a new callsign or a type follows ("new target
   -- altitude" is no aircraft)
@@ -581,11 +595,21 @@ return function(intent, rule, words)
   rule { "route rte", "addwpt", when = function(g, i)
     local k = i + 1
     if g:word(k, "for of") and g:has_ref(k + 1, k + 2, "aircraft") then k = g:refs_in(k + 1, k + 2, "aircraft")[1].e end
+    -- ("route AFR1234: BUSIL MADOT MTL": the aircraft straight after the word)
+    if g:has_ref(k, k + 1, "aircraft") then k = g:refs_in(k, k + 1, "aircraft")[1].e end
     local t = g.t[k]
     -- (names taken back by a self-correction are skipped: "route: TWEED, then GRICE... no, just TWEED")
     local n = k + 1
     while g.t[n] and g.u:used(n) and g.noted[n] do n = n + 1 end
     return t ~= nil and t.kind == "punct" and t.text == ":" and g:has_ref(n, n + 1, "waypoint")
+  end }
+  -- "VLG2211 route MERGE then ABRIX", "IBE3421: wpt PPG then GIROM": a route or waypoint word straight after
+  -- an aircraft that flies (a colon between or none) and straight before a known place
+  rule { "route rte wpt wp wpts waypoint waypoints", "addwpt", when = function(g, i)
+    local b = (g.t[i - 1] or {}).text == ":" and i - 1 or i
+    local flying = false
+    for _, r in ipairs(g:refs_in(1, b, "aircraft")) do flying = flying or (r.e == b and r.exists) end
+    return flying and g:has_ref(i + 1, i + 2, "waypoint")
   end }
   -- "set the Air France to fly via MAKIL at FL280 and 260 knots": a waypoint flown via is added to the route
   rule { "via", "addwpt", prev = { 2, "fly go" }, when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
@@ -648,11 +672,12 @@ return function(intent, rule, words)
     return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
-  -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM": the same said with "put (in)", the two waypoints
-  -- on either side of "before"/"after"
-  rule { "put", "addwpt", when = function(g, i)
+  -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM", "squeeze MADOT in after BUSIL": the same said with
+  -- "put (in)", "squeeze" or "slot", the two waypoints on either side of "before"/"after" ("in" before it or none)
+  rule { "put squeeze slot", "addwpt", when = function(g, i)
     local w = g:word(i + 1, "in") and i + 2 or i + 1
-    return g:has_ref(w, w + 1, "waypoint") and g:word(w + 1, "after before") and g:has_ref(w + 2, w + 3, "waypoint")
+    local at = g:word(w + 1, "in") and w + 2 or w + 1
+    return g:has_ref(w, w + 1, "waypoint") and g:word(at, "after before") and g:has_ref(at + 1, at + 2, "waypoint")
   end }
   -- True when a latitude is said straight after word i (its degrees and minutes too: "55 30 North"),
   -- an aircraft that flies is named and no type is (no creation)
@@ -751,9 +776,12 @@ return function(intent, rule, words)
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
+  -- (the place a waypoint's code, or a navaid's name with its kind after it: "point the Iberia at the Gerona VOR")
   local function to_waypoint(g, i)
     local k = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "towards toward at to")
-    return k <= #g.t and g:has_ref(g:skip_fillers(k + 1), g:skip_fillers(k + 1) + 1, "waypoint")
+    local w = g:skip_fillers(k + 1)
+    return k <= #g.t and (g:has_ref(w, w + 1, "waypoint")
+      or (g:word(w + 1, "@navaid_kinds") and g:place_by_name(w, w + 1) ~= nil))
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
@@ -933,9 +961,9 @@ return function(intent, rule, words)
       and g:has_ref(1, #g.t + 1, "type")
   end }
   rule { "details status info information state pos", "pos" }
-  -- "show me Wideroe five one two": an aircraft alone after the verb is shown where it is
+  -- "show me Wideroe five one two", "check IBE3421": an aircraft alone after the verb is shown where it is
   -- ("pause, and show me the Swiss three eight foxtrot": the clause of its own)
-  rule { "show display", "pos", when = function(g, i)
+  rule { "show display check", "pos", when = function(g, i)
     local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
     local r = g:refs_in(k, k + 1, "aircraft")[1]
     return r ~= nil and (g:alone_but(i, r.e) or g:clause_alone(i, r.e))
@@ -1251,6 +1279,9 @@ return function(intent, rule, words)
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }
   rule { "factor", "rfac", prev = { 4, "resolution resolutions reso resolve safety" } }
+  -- "give the horizontal resolutions a 20 percent margin": the safety factor said as a margin in percent
+  rule { "resolution resolve reso resolutions", false, near = { 5, "margin" } }
+  rule { "margin", "rfac", prev = { 5, "resolution resolutions reso resolve" }, not_near = { 1, "factor" } }
   -- "Resolution method MVP, horizontal factor 1.2": a factor of a direction, resolution said before
   rule { "factor", "rfac", prev = { 1, "horizontal lateral vertical" }, when = function(g, i)
     return g:word_in(1, i, "resolution resolutions reso resolve mvp")

@@ -3772,3 +3772,161 @@ do
   check(ex("WJA12 maintain 270 knots until ALPHA... correction, BRAVO"):match("^ASK .*'ALPHA'") ~= nil,
     "no word said again")
 end
+-- An experiment's label opening a sentence before the request ("exp ATC-NL-BE, run 4.", "Block C:",
+-- "session 3, block B."): label words each with an identifier, set aside; one with a unit is no label,
+-- and a label alone instructs nothing
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("exp ATC-NL-BE, run 4. KLM12 climb FL340"), "ALT KLM12 FL340")
+  check_eq(ex("Block C: KLM12 speed 250"), "SPD KLM12 250")
+  check_eq(ex("session 3, block B. cre EZY9 A320 52.5 4.5 180 FL250 260"), "CRE EZY9 A320 52.5 4.5 180 FL250 260")
+  check(ex("run 5 min. KLM12 climb FL340"):match("FF 300") ~= nil, "a time is no label")
+  check(ex("exp ATC-NL-BE, run 4."):match("^ASK") ~= nil, "a label alone instructs nothing")
+end
+
+-- Route building in an experimenter's shorthand: "route KLM12: ALFA BRAVO" (the aircraft straight after
+-- "route", places one after another), "KLM12 route ALFA then BRAVO", "KLM12: wpt ALFA", "add wpts ALFA and
+-- BRAVO", a level and a bare speed with a comma between ("add ALFA at FL320, 280"), the aircraft after all
+-- the values ("add ALFA at FL340 270 kt to KLM12"), "drop ALFA from KLM12" (DELWPT), "squeeze BRAVO in
+-- after ALFA". A number that is no speed is still asked about, and an aircraft dropped is no waypoint.
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.2 4.5", "DEFWPT BRAVO 52.4 4.9", "DEFWPT CHARL 52.6 5.2",
+    "CRE KLM12 B738 52 4 090 FL300 280", "CRE EZY9 A320 52.5 4.5 180 FL250 260", "ADDWPT EZY9 ALFA",
+    "ADDWPT EZY9 CHARL" })
+  check_eq(ex("route KLM12: ALFA BRAVO CHARL"), "ADDWPT KLM12 ALFA ; ADDWPT KLM12 BRAVO ; ADDWPT KLM12 CHARL")
+  check_eq(ex("KLM12 route ALFA then BRAVO"), "ADDWPT KLM12 ALFA ; ADDWPT KLM12 BRAVO")
+  check_eq(ex("KLM12: wpt BRAVO then CHARL"), "ADDWPT KLM12 BRAVO ; ADDWPT KLM12 CHARL")
+  check_eq(ex("KLM12 add wpts ALFA and CHARL"), "ADDWPT KLM12 ALFA ; ADDWPT KLM12 CHARL")
+  check_eq(ex("KLM12: add BRAVO at FL320, 280"), "ADDWPT KLM12 BRAVO FL320 280")
+  check(ex("KLM12: add BRAVO at FL320, 20"):match("^ASK .*'20'") ~= nil, "20 is no speed")
+  check_eq(ex("add BRAVO at FL340 270 kt to KLM12"), "ADDWPT KLM12 BRAVO FL340 270")
+  check_eq(ex("drop CHARL from EZY9"), "DELWPT EZY9 CHARL")
+  check_eq(ex("take ALFA off the EZY9"), "DELWPT EZY9 ALFA")
+  check_eq(ex("squeeze BRAVO in after ALFA on EZY9"), "ADDWPT EZY9 BRAVO,,,ALFA")
+  check(ex("drop EZY9 from the list"):match("DELWPT") == nil, "an aircraft dropped is no waypoint")
+end
+
+-- A new aircraft's fields written with spaced slashes between ("EZY12 / A319 / 51.2 N 0.3 W / 270 /
+-- FL120 / 250 kt"): each slash separates fields as a comma does
+do
+  local _, ex = scene({})
+  check_eq(ex("EZY12 / A319 / 51.2 N 0.3 W / 270 / FL120 / 250 kt"), "CRE EZY12 A319 51.2 -0.3 270 FL120 250")
+  check_eq(ex("KLM7 / B738 / 52.1 4.6 / hdg 090 / FL300 / 280"), "CRE KLM7 B738 52.1 4.6 90 FL300 280")
+end
+
+-- Words of an experimenter's aside beside an instruction: the effect a value should have said as "to"
+-- and a verb with "it" or "them" ("to make it a triple", "to get them closer"), how hard a turn is flown
+-- ("hard left"), "whatever type", a colleague in the room ("colleague's asking something"). A verb of an
+-- instruction in that clause is still no aside, and a turn with no heading still asks.
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "CRE EZY9 A320 52.5 4.5 180 FL250 260" })
+  check_eq(ex("climb KLM12 to 340 to make it a quadruple"), "ALT KLM12 FL340")
+  check_eq(ex("descend EZY9 to FL230 to get them closer"), "ALT EZY9 FL230")
+  check(ex("climb KLM12 to 340 to make it climb FL360"):match("^ASK") ~= nil, "an instruction in the clause")
+  check_eq(ex("KLM12 hard right heading 140"), "HDG KLM12 140 RIGHT")
+  check(ex("KLM12 turn hard"):match("^ASK") ~= nil, "no heading")
+  check_eq(ex("mcre 5, whatever type, FL280, 260 kt"), "MCRE 5 * FL280 260")
+  check(ex("KLM12, EZY9... whichever one is the A320, climb 360"):match("^ASK") ~= nil, "a choice left open")
+  check_eq(ex("pause the sim, colleague's got a question"), "HOLD")
+end
+
+-- Values written the way French and Spanish experimenters write them: a fraction of a mile in words
+-- ("CPA half a mile", "a quarter of a mile": 0.5 and 0.25 nm) and a number with a space before its last
+-- three digits when its unit follows ("8 500 m", "12 000 ft"); three digits before the space stay apart
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("creconfs against KLM12: EZY3, A320, 90 degree angle, CPA half a mile, 200 s"),
+    "CRECONFS EZY3 A320 KLM12 90 0.5 200")
+  check_eq(ex("creconfs against KLM12: EZY3, A320, 45 degrees, cpa a quarter of a mile, 150 s"),
+    "CRECONFS EZY3 A320 KLM12 45 0.25 150")
+  check_eq(ex("KLM12 descend 7 500 m"), "ALT KLM12 24606")
+  check_eq(ex("KLM12 descend 12 000 ft"), "ALT KLM12 12000")
+  check(ex("KLM12 heading 270 200 ft"):match("^ASK") ~= nil, "a heading and a number apart")
+end
+
+-- A new aircraft's heading said as a number straight after its compass word ("northbound 010",
+-- "westerly 260"): the number, when within 90 degrees of the point; one that is not is asked about
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.2 4.5" })
+  check_eq(ex("EZY3, A320, over ALFA, northbound 010, FL300 at 270"), "CRE EZY3 A320 ALFA 10 FL300 270")
+  check_eq(ex("EZY3, A320, over ALFA, westerly 260, FL300 at 270"), "CRE EZY3 A320 ALFA 260 FL300 270")
+  check(ex("EZY3, A320, over ALFA, northbound 170, FL300 at 270"):match("^ASK") ~= nil, "170 is no northbound heading")
+end
+
+-- A conflict set up with its intruder introduced as "new" or "new one" ("creconfs: new one EZY3, A320,
+-- target KLM12, ..."): the new aircraft is the intruder, no creation of its own, and "one" no value
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("creconfs: new one EZY3, A320, target KLM12, 60 degree angle, cpa 1 nm, 200 s"),
+    "CRECONFS EZY3 A320 KLM12 60 1 200")
+  check_eq(ex("creconfs: new EZY3, A320, target KLM12, 60 degree angle, cpa 1 nm, 200 s"),
+    "CRECONFS EZY3 A320 KLM12 60 1 200")
+  check(ex("creconfs: new one EZY3, A320, target KLM12, 60 degree angle, cpa 1 nm, 200 s, 7"):match("^ASK .*'7'")
+    ~= nil, "a value left over")
+end
+
+-- Traffic information followed by an instruction after a comma ("traffic eleven o'clock, turn left 20
+-- degrees"): the clause opening with an imperative verb (lexicon.clause_verbs) is an instruction; the
+-- traffic's own description ("eastbound, altitude indicates FL330", "climbing through") instructs nobody
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12, traffic ten o'clock, 6 miles, turn right 30 degrees"), "HDG KLM12 120 RIGHT")
+  check_eq(ex("KLM12, traffic two o'clock opposite direction, descend FL280"), "ALT KLM12 FL280")
+  check_eq(ex("KLM12 traffic two o'clock, 5 miles, eastbound, altitude indicates FL310"), "")
+  check_eq(ex("KLM12 traffic one o'clock, climbing through FL290"), "")
+end
+
+-- "check KLM12": an aircraft alone after "check" (as after "show") is shown where it is; with more
+-- said after it, it is no request to show
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("check KLM12"), "POS KLM12")
+  check(ex("check KLM12 is at FL310"):match("^POS") == nil, "a statement to check is no request to show")
+end
+
+-- Origin and destination written as one setting with a slash ("orig/dest KLM12: EHAM -> EGLL",
+-- "origin/destination KLM12 EHAM EGLL"): the aircraft, then the two airports in that order; one airport
+-- only is asked about
+do
+  local s, ex = navscene({ "CRE KLM12 B738 52 4 090 FL300 280" }, "orig/dest written as one setting")
+  if s then
+    check_eq(ex("orig/dest KLM12: EHAM -> EGLL"), "ORIG KLM12 EHAM ; DEST KLM12 EGLL")
+    check_eq(ex("origin/destination KLM12 EHAM EGLL"), "ORIG KLM12 EHAM ; DEST KLM12 EGLL")
+    check(ex("orig/dest KLM12: EHAM"):match("^ASK") ~= nil, "one airport for two settings")
+  end
+end
+
+-- The traffic a turn is made toward ("turn left 20 into the easyJet", "turn right 30 towards EZY9") is
+-- context, never instructed nor asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "CRE EZY9 A320 52.5 4.5 180 FL300 260" })
+  check_eq(ex("KLM12 turn left 20 into the easyJet 9"), "HDG KLM12 70 LEFT")
+  check_eq(ex("KLM12 turn right 30 towards EZY9"), "HDG KLM12 120 RIGHT")
+  -- (the aircraft whose route a waypoint goes into is addressed: "insert ALFA into EZY9's route after BRAVO")
+  local _, routed = scene({ "DEFWPT ALFA 52.2 4.5", "DEFWPT BRAVO 52.4 4.9", "CRE EZY9 A320 52.5 4.5 180 FL300 260",
+    "ADDWPT EZY9 BRAVO" })
+  check_eq(routed("insert ALFA into EZY9's route after BRAVO"), "ADDWPT EZY9 ALFA,,,BRAVO")
+  local r = ex("KLM12 turn left 20 into EZY9 and EZY9 climb FL340")
+  check(r:match("^ASK") ~= nil or r == "HDG KLM12 70 LEFT ; ALT EZY9 FL340", "EZY9's climb never given to KLM12: " .. r)
+end
+
+-- Conflict resolution's safety factor said as a margin in percent ("give the horizontal resolutions a 20
+-- percent margin": RFACH 1.2); a margin with no percent, or with no direction, is asked about
+do
+  local _, ex = scene({})
+  check_eq(ex("give the horizontal resolutions a 15 percent margin"), "RFACH 1.15")
+  check_eq(ex("give the horizontal resolutions a 25% margin"), "RFACH 1.25")
+  check_eq(ex("vertical resolution margin factor 1.08"), "RFACV 1.08")
+  check(ex("give the horizontal resolutions a 20 margin"):match("^ASK") ~= nil, "no percent")
+  check(ex("give the resolutions a 20 percent margin"):match("^ASK") ~= nil, "no direction")
+end
+
+-- "point KLM12 at the Spijkerboor VOR": a navaid said by its name with its kind after it, after "point ...
+-- at", is flown to directly, as its code is; a name alone there is still asked about
+do
+  local s, ex = navscene({ "CRE KLM12 B738 52 4 090 FL300 280" }, "pointing at a navaid by its name")
+  if s then
+    check_eq(ex("point KLM12 at the Spijkerboor VOR"), "ADDWPT KLM12 SPY ; DIRECT KLM12 SPY")
+    check(ex("point KLM12 at the Nowhereville VOR"):match("^ASK") ~= nil, "no such navaid")
+  end
+end
