@@ -113,3 +113,20 @@ for i = 1, 10 do
   check(geo.inside(so.wpt_lat, so.wpt_lon, so.polygons[i]) == false, "waypoint outside area " .. i)
   check(obs[23 + i] >= math.sqrt(100 / math.pi) / 50 and obs[23 + i] < math.sqrt(1000 / math.pi) / 50, "radius " .. i)
 end
+
+-- The rule (envs/policies/static_obstacle.lua) and its cloning teacher inside an area's enclosing
+-- circle: the start 5 km from the centre of a 23.3 km circle (R = 12.6 NM) at bearing 80 deg, the
+-- waypoint north. The rule takes the heading nearest the waypoint's that points away from the
+-- centre (at least 90 deg off its bearing: 350-345 deg, a turn of 10-15 deg left, a chord of
+-- 45 km in the circle); the teacher only one within 30 deg of straight out (bearing 260 deg:
+-- 290 deg at nearest, 70 deg left, a full turn).
+obs = so:reset(0, {draws = draws_with(5, 80)})
+check(obs[14] * 170 < obs[24] * 50 * 1.852, "the start lies inside area 1's circle")
+local rule = squawk.gym.load(squawk.home .. "/envs/policies/static_obstacle.lua")
+local teacher = squawk.gym.load(squawk.home .. "/envs/policies/static_obstacle_teacher.lua")
+check_eq(rule.escape_deg, 90); check_eq(teacher.escape_deg, 30)
+local ra, ta = rule:act(obs), teacher:act(obs)
+check(ra[1] <= -10 / 45 + 1e-9 and ra[1] >= -15 / 45 - 1e-9, "the rule turns 10-15 deg left: " .. ra[1])
+check_eq(ta[1], -1, "the teacher turns fully left")
+check_eq(rule.blocked, false); check_eq(teacher.blocked, false)
+check_eq(ra[2], 1); check_eq(ta[2], 1)
