@@ -936,6 +936,7 @@ return function(H, f, compass)
       local id = self:navaid_by_name(b, e, r, nil, true)
       if id then return id end
     end
+    local unasked = self.ask
     local airport = a and self:airport_by_name(b, e, a)
     local asked = self.ask
     local navaid = airport and self:navaid_by_name(b, e, a)
@@ -946,7 +947,12 @@ return function(H, f, compass)
       for _, r in ipairs(a.route or {}) do held[r:upper()] = true end
       if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
       local nav_held, airport_held = held[navaid:upper()], held[airport:upper()]
-      if nav_held and not airport_held then return navaid end
+      -- (the navaid its route holds answers which of a city's airports was meant: "15 miles north of Seattle"
+      -- with SEA in the route is SEA, not KSEA or KBFI)
+      if nav_held and not airport_held then
+        self.ask = unasked
+        return navaid
+      end
       if nav_held or not airport_held then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, airport))
       end

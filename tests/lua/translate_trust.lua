@@ -3734,6 +3734,12 @@ do
     check_eq(ex("ACA1 cross 18 DME west of YUL at 7000"), "ATDIST ACA1 YUL 18 ALT ACA1 7000")
     check(ex("ACA1 cross 20 miles from Gotham at 9000"):match("^ASK .*'Gotham'") ~= nil, "an unknown place")
   end
+  -- (a city of two large airports, "Seattle": KSEA and KBFI, is the navaid of its name the route holds)
+  nav, ex = navscene({ "CRE ASA9 B739 47.9 -122.4 180 FL200 280", "ADDWPT ASA9 SEA" }, "crossing restrictions at a distance")
+  if nav then
+    check_eq(ex("ASA9 cross one two miles north of Seattle at 9000"), "ATDIST ASA9 SEA 12 ALT ASA9 9000")
+    check(ex("ASA9 destination Seattle"):match("^ASK Which airport") ~= nil, "two large airports")
+  end
 end
 
 -- A place said after "over" that an airport other than a large one and a navaid beside it name under other
