@@ -16,7 +16,7 @@ local episodes, seed, verbose = tonumber(arg[2] or 1000), tonumber(arg[3] or 0),
 
 local gym = require("gym_load")
 local geo = squawk.geo
-local ENV_FILE, ACID, NM2KM, MARGIN = "envs/plan_waypoint.lua", "KL001", 1.852, 5
+local ENV_FILE, ACID, NM2KM = "envs/plan_waypoint.lua", "KL001", 1.852
 
 local function dist_km(lat1, lon1, lat2, lon2)
   local _, d = geo.kwikqdrdist(lat1, lon1, lat2, lon2)
@@ -24,7 +24,7 @@ local function dist_km(lat1, lon1, lat2, lon2)
 end
 
 -- The straight-line length [km] from point 0 through the points in `order`
--- (indices into pts, point 0 the start), skipping those already within MARGIN.
+-- (indices into pts, point 0 the start).
 local function tour(pts, order)
   local len, cur = 0, pts[0]
   for _, i in ipairs(order) do
@@ -72,16 +72,17 @@ local function play(k)
   local policy = gym.policy(policy_spec, env)
   local obs = env:reset(k)
   if policy.reset then policy:reset(k) end
-  local lat, lon, _, hdg, _, gs = env.sim:values(ACID)
+  local lat, lon, _, hdg = env.sim:values(ACID)
   local pts = {[0] = {lat, lon}}
   for i = 1, 5 do pts[i] = {env.wpt_lat[i], env.wpt_lon[i]} end
-  local reached_order, flown, turned, gs_sum, steps, total, info = {}, 0, 0, 0, 0, 0, nil
+  local reached_order, flown, turned, gs_sum, gs_n, steps, total, info = {}, 0, 0, 0, 0, 0, 0, nil
   local acts = {0, 0, 0}   -- actions below -1/3, between, above 1/3
   for t = 1, env.max_episode_steps do
     local before = {}
     for i = 1, 5 do before[i] = env.wpt_reach[i] end
     local a = policy:act(obs)[1]
-    acts[a < -1 / 3 and 1 or a > 1 / 3 and 3 or 2] = acts[a < -1 / 3 and 1 or a > 1 / 3 and 3 or 2] + 1
+    local third = a < -1 / 3 and 1 or a > 1 / 3 and 3 or 2
+    acts[third] = acts[third] + 1
     local o, r, terminated, truncated, i = env:step({a})
     obs, total, steps, info = o, total + r, t, i
     for w = 1, 5 do
@@ -91,25 +92,21 @@ local function play(k)
       local la, lo, _, h, _, g = env.sim:values(ACID)
       flown = flown + dist_km(lat, lon, la, lo)
       turned = turned + math.abs(geo.gym_wrap180(h - hdg))
-      gs_sum = gs_sum + g
+      gs_sum, gs_n = gs_sum + g, gs_n + 1
       lat, lon, hdg = la, lo, h
     end
     if terminated or truncated then break end
   end
-  -- The full order: reached ones, then the open ones nearest-neighbour from the last reached.
-  local order, seen = {}, {}
-  for _, w in ipairs(reached_order) do order[#order + 1], seen[w] = w, true end
-  local open_left = {}
-  for w = 1, 5 do if not seen[w] then open_left[#open_left + 1] = w end end
+  local open_d = {}
+  for w = 1, 5 do
+    if env.wpt_reach[w] == 0 then open_d[#open_d + 1] = string.format("%.1f", dist_km(lat, lon, pts[w][1], pts[w][2])) end
+  end
   local best_len = math.huge
   for _, o in ipairs(ORDERS) do best_len = math.min(best_len, tour(pts, o)) end
-  local open_d = {}
-  for _, w in ipairs(open_left) do open_d[#open_d + 1] = string.format("%.1f", dist_km(lat, lon, pts[w][1], pts[w][2])) end
   return {
     total = total, steps = steps, success = info.success, reached = #reached_order,
     nn = tour(pts, nn_order(pts)), best = best_len,
-    own = #open_left == 0 and tour(pts, order) or nil,
-    flown = flown, turned = turned, gs = gs_sum / math.max(steps, 1), acts = acts,
+    flown = flown, turned = turned, gs = gs_sum / math.max(gs_n, 1), acts = acts,
     open_d = table.concat(open_d, " "), order = table.concat(reached_order, ""),
   }
 end
