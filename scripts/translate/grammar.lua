@@ -1904,8 +1904,9 @@ function G:self_corrected()
         local n = self:word(c + 1, "the") and c + 2 or c + 1
         local only = {}
         for _, r in ipairs(self.refs) do
-          if r.kind == "aircraft" and r.b >= n and (r.b == n or self:skip_fillers(only[#only].e, true) == r.b
-              or (self:word(only[#only].e, "and") and r.b <= only[#only].e + 2)) then
+          local last = only[#only]
+          if r.kind == "aircraft" and r.b >= n and (r.b == n or (last and (self:skip_fillers(last.e, true) == r.b
+              or (self:word(last.e, "and") and r.b <= last.e + 2)))) then
             only[#only + 1] = r
           end
         end

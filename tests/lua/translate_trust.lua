@@ -3766,6 +3766,9 @@ do
   check_eq(ex("WJA12 add ALPHA then BRAVO, actually just add CHARL at the end of the route"), "ADDWPT WJA12 CHARL")
   check_eq(ex("WJA12 add ALPHA and BRAVO, sorry, add CHARL to the end of his route"), "ADDWPT WJA12 CHARL")
   check(ex("WJA12 add ALPHA then BRAVO, actually just CHARL"):match("^ASK") ~= nil, "no verb said again")
+  -- (a correction whose "just" is followed by a verb before the aircraft, with no aircraft before it: asked)
+  check(ex("add the ALPHA gate... actually no, just give WJA12 the destination CYUL instead"):match("^ASK") ~= nil,
+    "a correction naming its aircraft after a verb")
 end
 
 -- A place corrected after the same word ("until ALPHA... correction, until BRAVO", "via ALPHA, sorry, via
