@@ -187,6 +187,15 @@ bool same_command(std::string_view produced, std::string_view expected) {
     return same_command(text::join(std::vector<std::string>(p.begin() + 3, p.end()), " "),
                         text::join(std::vector<std::string>(e.begin() + 3, e.end()), " "));
   }
+  // ATDIST acid wpt dist CMD ...: the place and distance [NM], then the command it runs, compared
+  // as one
+  if (cmd == "ATDIST" && p.size() > 4 && e.size() > 4) {
+    if (!text::iequals(p[1], e[1]) || !text::iequals(p[2], e[2]) ||
+        !same_arg(p[3], e[3], Arg::kNum))
+      return false;
+    return same_command(text::join(std::vector<std::string>(p.begin() + 4, p.end()), " "),
+                        text::join(std::vector<std::string>(e.begin() + 4, e.end()), " "));
+  }
   // RMETHV ON and V/S both switch vertical resolutions on, OFF and NONE off
   // (commands_asas.cpp rmethv).
   if (cmd == "RMETHV") {

@@ -132,6 +132,11 @@ TEST_CASE("conditionals compare the condition and the nested command") {
   CHECK(same_command("ATALT AC01 20000 SPD AC01 280", "ATALT AC01 FL200 SPD AC01 280"));
   CHECK_FALSE(same_command("ATALT AC01 20000 SPD AC01 290", "ATALT AC01 FL200 SPD AC01 280"));
   CHECK(same_command("ECHO hello World", "ECHO Hello world"));
+  CHECK(same_command("ATDIST KL1 OKE 20 ALT KL1 FL80", "ATDIST KL1 OKE 20 ALT KL1 FL080"));
+  CHECK(same_command("ATDIST KL1 OKE 20.0 ALT KL1 8000", "ATDIST KL1 OKE 20 KL1 ALT FL080"));
+  CHECK_FALSE(same_command("ATDIST KL1 OKE 25 ALT KL1 FL80", "ATDIST KL1 OKE 20 ALT KL1 FL80"));
+  CHECK_FALSE(same_command("ATDIST KL1 OKE 20 ALT KL1 FL90", "ATDIST KL1 OKE 20 ALT KL1 FL80"));
+  CHECK_FALSE(same_command("ATDIST KL1 SPY 20 ALT KL1 FL80", "ATDIST KL1 OKE 20 ALT KL1 FL80"));
 }
 
 TEST_CASE("arguments left out between commas keep their places; a comma at a word's end only separates") {
