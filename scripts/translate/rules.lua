@@ -212,32 +212,22 @@ return function(intent, rule, words)
   rule { "drop", "delwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") end }
   rule { "drop", "delete", next = "him her it them", not_near = { 3, "to down level fl feet ft thousand altitude" } }  -- "out of my airspace, drop him"
+  -- an aircraft named at token k (one flying when `flying`) with nothing but fillers and aircraft nouns after it
+  local function aircraft_alone(g, k, flying)
+    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
+      if r.b == k and (r.exists or not flying) then
+        for x = r.e, #g.t do
+          if g.t[x].kind ~= "punct" and not g.t[x].filler and not g:word(x, "@aircraft_nouns") then return false end
+        end
+        return true
+      end
+    end
+    return false
+  end
   -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
-  rule { "drop", "delete", when = function(g, i)
-    local k = g:skip_fillers(i + 1)
-    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
-      if r.b == k then
-        for x = r.e, #g.t do
-          if g.t[x].kind ~= "punct" and not g.t[x].filler and not g:word(x, "@aircraft_nouns") then return false end
-        end
-        return true
-      end
-    end
-    return false
-  end }
+  rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "knock out KLM1234", "knock out the Cessna": an aircraft taken out of the simulation, nothing after it
-  rule { "knock", "delete", next = "out", when = function(g, i)
-    local k = g:skip_fillers(i + 2)
-    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
-      if r.b == k and r.exists then
-        for x = r.e, #g.t do
-          if g.t[x].kind ~= "punct" and not g.t[x].filler and not g:word(x, "@aircraft_nouns") then return false end
-        end
-        return true
-      end
-    end
-    return false
-  end }
+  rule { "knock", "delete", next = "out", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 2), true) end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its
   -- aircraft between them, is no change of level
