@@ -2171,10 +2171,17 @@ end
 -- True when the instruction opens with a condition that names the value of the
 -- instruction before it, by "there" or "level" and no value of its own ("climb
 -- to FL150, and when it gets there, speed it up to 290": ATALT ... FL150 SPD ...), or by "reaching" alone
--- ("descend FL60, when reaching reduce speed 210").
+-- ("descend FL60, when reaching reduce speed 210"; "reaching" alone opening the clause: "climb FL370, reaching
+-- Mach .79").
 function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
-  if c >= s.trig or #self:quantities(c, s.trig) > 0 then return false end
+  if c >= s.trig then
+    -- ("climb FL370, reaching Mach .79", "on reaching reduce 250": "reaching" alone opening the clause)
+    local v = self:skip_fillers(s.b)
+    if self:word(v, "on") then v = self:skip_fillers(v + 1) end
+    return self:word(v, "reaching") and self:skip_fillers(v + 1) == s.trig
+  end
+  if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
   return self:word_in(c + 1, s.trig, "there level lvl")
     or (self:word(verb, "reaching") and self:skip_fillers(verb + 1) == s.trig)
@@ -2390,10 +2397,27 @@ function G:at_waypoint(s, spec)
       local qs = self:quantities(k + 2, r.b - 1)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
     end
+    -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 by PITES": the level
+    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there as well (`level_by`: that
+    -- level, the only value said before "by"; only "level", "reach", "be", "to" and fillers beside it)
+    local level_by
+    local from = s.intent == "infer" and first or s.trig + 1
+    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by")
+        and self:word_in(s.intent == "infer" and first or s.trig, r.b - 1, "level reach reaching") then
+      local qs = self:quantities(s.b, r.b - 1)
+      level_by = #qs == 1 and qs[1].kind == "alt" and qs[1] or nil
+      for i = from, r.b - 2 do
+        local inside = level_by and i >= level_by.b and i < level_by.e
+        if not (inside or self.t[i].filler or (self.t[i].kind == "punct" and self.t[i].text == ",")
+            or self:word(i, "level reach reaching be to and")) then
+          level_by = nil
+        end
+      end
+    end
     -- "show me the constraints AUA123 has at NERDU", "what restrictions does KLM12 have at ARTIP?": asked for
     local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
       and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
-    if crossed or constrained or opening or be_at or shown then
+    if crossed or constrained or opening or be_at or shown or level_by then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
@@ -2411,6 +2435,8 @@ function G:at_waypoint(s, spec)
         -- "be at FL200 over ARTIP": the value before the waypoint, and none after it
         other = #said > 0
         said = self:quantities(be_at, r.b - 1)
+      elseif level_by then
+        other, said = #said > 0, { level_by }
       end
       for _, q in ipairs(said) do
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q

@@ -847,6 +847,12 @@ return function(H, f, compass)
         end
       end
     end
+    -- ("direct Olno": the name of the navaid LNO near the aircraft, said exactly, before a waypoint of its
+    -- route that only sounds like it, HELEN; the place that name means, as m:place_by_name reads it)
+    local asked = self.ask
+    local navaid = best and best_word ~= best:lower() and self:navaid_by_name(b, e, a)
+    self.ask = asked
+    if navaid then return self:place_by_name(b, e, a) or navaid end
     if best and best_score >= L.waypoint_confirm then
       self:explain(best_span[1], best_span[2])
       return best

@@ -314,6 +314,19 @@ return function(intent, rule, words)
   -- ("swap their headings", "exchange the speeds of ..."): what is swapped, no value of its own
   rule { "heading headings speed speeds level levels altitude altitudes", false, prev = { 4, "swap exchange" } }
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
+  -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
+  -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
+  -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude)
+  rule { "mach", "spd", when = function(g, i)
+    local q = g:quantities(i, math.min(#g.t + 1, i + 4))[1]
+    if not (q and q.kind == "mach" and q.b == i) then return false end
+    local k = i - 1
+    while k >= 1 and (g.t[k].filler or (g.t[k].kind == "punct" and g.t[k].text == ",")) do k = k - 1 end
+    if g:word(k, "reaching") then return true end
+    local qs = g:quantities(math.max(1, k - 4), k + 1)
+    local lvl = qs[#qs]
+    return lvl ~= nil and lvl.kind == "alt" and lvl.e == k + 1 and g:word(lvl.b - 1, "passing reaching leaving")
+  end }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"

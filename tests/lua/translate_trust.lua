@@ -3939,3 +3939,40 @@ do
     check(ex("point KLM12 at the Nowhereville VOR"):match("^ASK") ~= nil, "no such navaid")
   end
 end
+
+-- A Mach number said with no verb straight after a level passed or reached ("climb FL360, passing FL340
+-- Mach .80", "when passing FL340 M.80") waits for that level (ATALT); after "reaching" alone ("on reaching
+-- Mach .80") for the level just cleared; said with no condition it is a speed at once
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 climb FL360, passing FL340 Mach .80"), "ALT KLM12 FL360 ; ATALT KLM12 FL340 SPD KLM12 M0.8")
+  check_eq(ex("KLM12 climb FL360 when passing FL340 M.80, heading 120"),
+    "ALT KLM12 FL360 ; ATALT KLM12 FL340 SPD KLM12 M0.8 ; HDG KLM12 120")
+  check_eq(ex("KLM12 climb FL360, on reaching Mach .80"), "ALT KLM12 FL360 ; ATALT KLM12 FL360 SPD KLM12 M0.8")
+  check_eq(ex("KLM12 descend FL240, reaching reduce 250 knots"), "ALT KLM12 FL240 ; ATALT KLM12 FL240 SPD KLM12 250")
+  check_eq(ex("KLM12 climb FL360 Mach .80"), "ALT KLM12 FL360 ; SPD KLM12 M0.8")
+end
+
+-- A climb or descent to be level by a waypoint of the route ("descend FL240 level by ALFA", "descend to
+-- reach FL240 by ALFA", "be level FL240 by ALFA"): the level is an AT constraint there as well; a waypoint
+-- off the route, or another value said after it, is asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
+    "ADDWPT KLM12 ALFA" })
+  check_eq(ex("KLM12 descend FL240 level by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend to reach FL240 by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12, be level FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check(ex("KLM12 descend FL240 level by BRAVO"):match("^ASK") ~= nil, "BRAVO is off the route")
+  check(ex("KLM12 descend FL240 level by ALFA 250 knots"):match("^ASK") ~= nil, "a speed after the waypoint")
+end
+
+-- A navaid said exactly by its name near the aircraft ("direct Pampus": PAM) is that navaid, before a
+-- waypoint of the route that only sounds like it (PAMPAS); the waypoint said as spelled stays the waypoint
+do
+  local s, ex = navscene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT PAMPAS 52.1 4.3", "ADDWPT KLM12 PAMPAS" },
+    "a navaid's name before a sound-alike waypoint")
+  if s then
+    check_eq(ex("KLM12 direct Pampus"), "ADDWPT KLM12 PAM ; DIRECT KLM12 PAM")
+    check_eq(ex("KLM12 direct PAMPAS"), "DIRECT KLM12 PAMPAS")
+  end
+end
