@@ -1606,7 +1606,16 @@ function G:segments(b, e)
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
           and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
-        if (last.intent == tr.intent or alt_pair) and not this.single and not self:addressee_between(last, tr.pos) then
+        -- ("descend FL300, 25 miles before KOK descend FL260": a distance from a place opening the second
+        -- instruction's clause, after the first's value, is that instruction's condition, no repeat)
+        local dist_between = false
+        for _, q in ipairs(self:quantities(last.trig, tr.pos)) do
+          local k = self:skip_fillers(q.e)
+          dist_between = dist_between or (q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
+            and self:word(self:word(k, "out") and k + 1 or k, "from of to before"))
+        end
+        if (last.intent == tr.intent or alt_pair) and not this.single and not self:addressee_between(last, tr.pos)
+            and not dist_between then
           if tr.intent == "alt" then last.intent = "alt" end
           merged = true
         end
@@ -1633,6 +1642,15 @@ function G:segments(b, e)
         -- "..., when passing flight level 130 reduce speed": the condition belongs to what follows it
         local cond = self:find_word(last.trig + 1, start, "@level_condition")
         if cond < start then start = cond end
+        -- (the distance of a condition said before the instruction word, with "at" or "within" before it)
+        for _, q in ipairs(self:quantities(last.trig + 1, start)) do
+          local k = self:skip_fillers(q.e)
+          if q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
+              and self:word(self:word(k, "out") and k + 1 or k, "from of to before") then
+            start = math.min(start, self:word(q.b - 1, "at within") and q.b - 1 or q.b)
+            break
+          end
+        end
         last.e = start
       end
       segs[#segs + 1] = { intent = tr.intent, b = last and start or b, trig = tr.pos, e = e, ["then"] = thn }
@@ -2079,9 +2097,13 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig) then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif (self:then_after(segs, k) or self:when_reached(s) or reached_cut) and before and #self.out == n_before + 1
-          and spec and spec.value
-          and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
+      elseif before and #self.out == n_before + 1 and spec and spec.value
+          and ((self:then_after(segs, k)
+                and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD"))
+            -- ("descend FL230 and when level turn right heading 140": any instruction but one of the
+            -- condition's own kind waits for the value reached)
+            or ((self:when_reached(s) or reached_cut) and not self.out[#self.out]:match("^AT")
+                and self.out[#self.out]:upper():match("^%u+") ~= before:match("^AT(%u+)"))) then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       elseif self:when_reached(s) and not before and #self.out == n_before + 1 and n_before > 0
           and self.out[n_before]:match("^DIRECT ") and not self.out[#self.out]:match("^AT ") and not self.ask then
@@ -2414,10 +2436,15 @@ function G:at_waypoint(s, spec)
         end
       end
     end
+    -- "descend FL300, at VALKO FL250", "descend FL310 then at LIPNI FL270": a clause of its own after the
+    -- instruction's value, "at", the waypoint and straight after it a value, with no verb: a constraint there
+    local clause_at = self:word(r.b - 1, "at") and r.b - 1 > s.trig and #self:quantities(s.trig, r.b - 1) > 0
+      and ((self.t[r.b - 2].kind == "punct" and self.t[r.b - 2].text == ",") or self:word(r.b - 2, "@then_words"))
+      and (self:quantities(after, s.e)[1] or {}).b == after
     -- "show me the constraints AUA123 has at NERDU", "what restrictions does KLM12 have at ARTIP?": asked for
     local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
       and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
-    if crossed or constrained or opening or be_at or shown or level_by then
+    if crossed or constrained or opening or be_at or shown or level_by or clause_at then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false

@@ -3976,3 +3976,38 @@ do
     check_eq(ex("KLM12 direct PAMPAS"), "DIRECT KLM12 PAMPAS")
   end
 end
+
+-- A clause of its own after an instruction's value, "at", a route waypoint and a value straight after it, no
+-- verb ("descend FL260, at ALFA FL240", "... then at ALFA 250 knots"): a constraint there (AT); a waypoint off
+-- the route, or an instruction there with a verb, is still asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
+    "ADDWPT KLM12 ALFA" })
+  check_eq(ex("KLM12 descend FL260, at ALFA FL240"), "ALT KLM12 FL260 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL260 then at ALFA 250 knots"), "ALT KLM12 FL260 ; AT KLM12 ALFA SPD 250")
+  check(ex("KLM12 descend FL260, at BRAVO FL240"):match("^ASK") ~= nil, "BRAVO is off the route")
+  check(ex("KLM12 descend FL260, at ALFA turn left heading 200"):match("^ASK") ~= nil, "a turn at a waypoint")
+end
+
+-- "when level" before an instruction of another kind than the climb or descent it follows ("descend FL260
+-- and when level turn right heading 140"): it waits for the level (ATALT), as a speed does; "then" alone
+-- lists the next instruction
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 descend FL260 and when level turn right heading 140"),
+    "ALT KLM12 FL260 ; ATALT KLM12 FL260 HDG KLM12 140 RIGHT")
+  check_eq(ex("KLM12 descend FL260, when level reduce 250 knots"), "ALT KLM12 FL260 ; ATALT KLM12 FL260 SPD KLM12 250")
+  check_eq(ex("KLM12 descend FL260 then turn left heading 200"), "ALT KLM12 FL260 ; HDG KLM12 200 LEFT")
+end
+
+-- A distance from a place opening the clause of a second instruction of the same kind ("descend FL260, 20
+-- miles before ALFA descend FL240"): the second waits for it (ATDIST), the first runs now; a distance past
+-- a place is no such condition and is asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "ADDWPT KLM12 ALFA" })
+  check_eq(ex("KLM12 descend FL260, 20 miles before ALFA descend FL240"),
+    "ALT KLM12 FL260 ; ATDIST KLM12 ALFA 20 ALT KLM12 FL240")
+  check_eq(ex("KLM12 descend FL260, at 20 miles from ALFA reduce 250 knots"),
+    "ALT KLM12 FL260 ; ATDIST KLM12 ALFA 20 SPD KLM12 250")
+  check(ex("KLM12 descend FL260, 20 miles past ALFA descend FL240"):match("^ASK") ~= nil, "past a place")
+end
