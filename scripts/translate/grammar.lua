@@ -2097,13 +2097,13 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig) then
         self.pending = self.pending or self.ask
         self.ask = nil
-      elseif before and #self.out == n_before + 1 and spec and spec.value
-          and ((self:then_after(segs, k)
-                and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD"))
-            -- ("descend FL230 and when level turn right heading 140": any instruction but one of the
-            -- condition's own kind waits for the value reached)
-            or ((self:when_reached(s) or reached_cut) and not self.out[#self.out]:match("^AT")
-                and self.out[#self.out]:upper():match("^%u+") ~= before:match("^AT(%u+)"))) then
+      elseif (self:then_after(segs, k) or self:when_reached(s) or reached_cut) and before and #self.out == n_before + 1
+          and spec and spec.value
+          and ((self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD")
+            -- ("descend FL230 and when level turn right heading 140": a heading said as one waits for the
+            -- level reached too; a turn by degrees, counted from the heading now, is asked about)
+            or (not self:then_after(segs, k) and self.out[#self.out]:match("^HDG ") and before:match("^ATALT ")
+                and self:word_in(s.b, s.e, "heading hdg"))) then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       elseif self:when_reached(s) and not before and #self.out == n_before + 1 and n_before > 0
           and self.out[n_before]:match("^DIRECT ") and not self.out[#self.out]:match("^AT ") and not self.ask then

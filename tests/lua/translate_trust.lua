@@ -3989,14 +3989,15 @@ do
   check(ex("KLM12 descend FL260, at ALFA turn left heading 200"):match("^ASK") ~= nil, "a turn at a waypoint")
 end
 
--- "when level" before an instruction of another kind than the climb or descent it follows ("descend FL260
--- and when level turn right heading 140"): it waits for the level (ATALT), as a speed does; "then" alone
--- lists the next instruction
+-- "when level" before a heading after a climb or descent ("descend FL260 and when level turn right heading
+-- 140"): it waits for the level (ATALT), as a speed does; a turn by degrees there is asked about, and "then"
+-- alone lists the next instruction
 do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
   check_eq(ex("KLM12 descend FL260 and when level turn right heading 140"),
     "ALT KLM12 FL260 ; ATALT KLM12 FL260 HDG KLM12 140 RIGHT")
   check_eq(ex("KLM12 descend FL260, when level reduce 250 knots"), "ALT KLM12 FL260 ; ATALT KLM12 FL260 SPD KLM12 250")
+  check(ex("KLM12 descend FL260, when level turn left 20 degrees"):match("^ASK") ~= nil, "a turn by degrees")
   check_eq(ex("KLM12 descend FL260 then turn left heading 200"), "ALT KLM12 FL260 ; HDG KLM12 200 LEFT")
 end
 
