@@ -1804,6 +1804,7 @@ end
 -- '.', '?', ';' or the end; "say again? I say, descend FL360" (nothing in it) reads on as before.
 local QUESTION_BACK_NOT_AFTER = {}
 for _, w in ipairs(lexicon.question_back.not_after) do QUESTION_BACK_NOT_AFTER[w] = true end
+local QUESTION_ADDRESSED = table.concat(lexicon.question_back.addressed, " ")
 local QUESTION_PAST = {}
 for _, w in ipairs(lexicon.question_back.past) do QUESTION_PAST[w] = true end
 -- PHRASE_WORDS[phrase]: the phrase's words, split once
@@ -1853,7 +1854,7 @@ function G:question_back()
     if self.t[i].kind == "word" and opens[self.t[i].text] and not self.u:used(i)
         and not (before and QUESTION_BACK_NOT_AFTER[before.text]) then
       local re = phrase_end(i, qb.repeat_words)
-      if re then
+      if re and not self:word(self:skip_fillers(re), QUESTION_ADDRESSED) then
         local e = clause_end(re)
         if e > re and #self:quantities(re, e) == 0 then
           return self:need(string.format("'%s' asks for a repeat: it is a question, no instruction. What "

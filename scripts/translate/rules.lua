@@ -559,6 +559,7 @@ return function(intent, rule, words)
   -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
   rule { "creating spawning", false, prev = { 1, "before after without" } }
   rule { "create spawn generate creat cre creating spawning", "create" }
+  rule { "pop", "mcre", next = "up", near = { 4, "random" } }  -- "pop up ten random aircraft"
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   -- ("creconfs: new one TVF88AB, B738, target AFR6204, ...": the new aircraft of a conflict set up before it is

@@ -4012,3 +4012,28 @@ do
     "ALT KLM12 FL260 ; ATDIST KLM12 ALFA 20 SPD KLM12 250")
   check(ex("KLM12 descend FL260, 20 miles past ALFA descend FL240"):match("^ASK") ~= nil, "past a place")
 end
+
+-- Telephony designators of TUI's airlines said in full ("tuijet" TUI, "beauty" JAF), before any verb: the
+-- aircraft of that airline and flight number
+do
+  local _, ex = scene({ "CRE TUI7RB B738 52 4 090 FL300 280", "CRE JAF2PL B738 52.3 4.3 180 FL320 280" })
+  check_eq(ex("remove tuijet seven romeo bravo"), "DEL TUI7RB")
+  check_eq(ex("beauty 2PL descend FL280"), "ALT JAF2PL FL280")
+  check(ex("remove tuijet 9ZZ"):match("^ASK") ~= nil, "no such TUI flight")
+end
+
+-- "say again your speed": the controller asking the aircraft to say its own value again is a report asked
+-- for (POS), as "say your speed" is; "say again the level" stays a question back, asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 say again your level"), "POS KLM12")
+  check_eq(ex("KLM12, say again your heading please"), "POS KLM12")
+  check(ex("KLM12 say again the level"):match("^ASK") ~= nil, "a pilot's question back")
+end
+
+-- "pop up N random aircraft": random traffic (MCRE), as "spawn" is; "pop up" with a callsign creates it
+do
+  local _, ex = scene({})
+  check_eq(ex("pop up twelve random aircraft"), "MCRE 12")
+  check_eq(ex("pop up KLM12 B738 at 52 4 heading 090 FL300 250 knots"), "CRE KLM12 B738 52 4 90 FL300 250")
+end
