@@ -1996,6 +1996,18 @@ return function(H, f, compass)
     local wp = point or self:waypoint(s.trig, s.e, id)
     if not wp then return self:need("Which waypoint should I remove from the route of " .. id .. "?") end
     self:emit("DELWPT " .. id .. " " .. wp)
+    -- "delete DEPAX and ROLIS", "remove DEPAX, ROLIS": each further waypoint of its route listed after "and" or
+    -- a comma is removed too (one off its route stays unexplained, and is asked about)
+    local route = {}
+    for _, w in ipairs((self:state(id) or {}).route or {}) do route[w:upper()] = true end
+    for _, r in ipairs(self:refs_in(s.trig + 1, s.e, "waypoint")) do
+      local sep = self.t[r.b - 1]
+      if r.name:upper() ~= wp:upper() and route[r.name:upper()] and sep
+          and (self:word(r.b - 1, "and") or (sep.kind == "punct" and sep.text == ",")) then
+        self:emit("DELWPT " .. id .. " " .. r.name)
+        self:explain(r.b - 1, r.e)
+      end
+    end
   end
 
   -- "destination echo hotel alpha mike": an ICAO code spelled in the phonetic alphabet after the

@@ -799,11 +799,13 @@ return function(intent, rule, words)
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
-  -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO": the waypoint where the route is
-  -- rejoined is flown to directly ("rejoin the route" alone is LNAV)
+  -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO", "rejoin own navigation at NORKU":
+  -- the waypoint where the route is rejoined is flown to directly ("rejoin the route" alone is LNAV)
   rule { "rejoin rejoining", "direct", when = function(g, i)
     local k = g:skip_fillers(i + 1)
-    while g:word(k, "the your its his her @route_nouns track airway at to over by") do k = g:skip_fillers(k + 1) end
+    while g:word(k, "the your its his her own @route_nouns track airway navigation nav at to over by") do
+      k = g:skip_fillers(k + 1)
+    end
     return k <= i + 6 and g:has_ref(k, k + 1, "waypoint")
   end }
   -- ("cleared for the FMS bridge visual runway 28R": an approach clearance, not simulated)
@@ -1106,6 +1108,8 @@ return function(intent, rule, words)
   -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
   rule { "resume resumes", "resnav", near = { 6, "cpa" } }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
+  -- ("rejoin own navigation at NORKU": the rejoining's, a direct-to the waypoint)
+  rule { "own", false, prev = { 2, "rejoin rejoining" }, near = { 3, "at to over by" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "own", "lnav", next = "route", prev = { 3, "fly follow back resume" } }  -- "fly its own route again"
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"

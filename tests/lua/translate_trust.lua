@@ -4037,3 +4037,23 @@ do
   check_eq(ex("pop up twelve random aircraft"), "MCRE 12")
   check_eq(ex("pop up KLM12 B738 at 52 4 heading 090 FL300 250 knots"), "CRE KLM12 B738 52 4 90 FL300 250")
 end
+
+-- Route waypoints listed after a removal ("delete ALFA and BRAVO", "remove ALFA, BRAVO"): each removed; one
+-- off the route is asked about
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9", "DEFWPT CHARL 52.5 5.2",
+    "CRE KLM12 B738 52 4 090 FL300 280", "ADDWPT KLM12 ALFA", "ADDWPT KLM12 BRAVO" })
+  check_eq(ex("KLM12 delete ALFA and BRAVO"), "DELWPT KLM12 ALFA ; DELWPT KLM12 BRAVO")
+  check_eq(ex("KLM12 remove ALFA, BRAVO, then climb FL320"), "DELWPT KLM12 ALFA ; DELWPT KLM12 BRAVO ; ALT KLM12 FL320")
+  check(ex("KLM12 delete ALFA and CHARL"):match("^ASK") ~= nil, "CHARL is off the route")
+end
+
+-- "rejoin own navigation at BRAVO": the waypoint the route is rejoined at is flown to directly, as after
+-- "rejoin the route at"; with no waypoint it is LNAV
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9", "CRE KLM12 B738 52 4 090 FL300 280",
+    "ADDWPT KLM12 ALFA", "ADDWPT KLM12 BRAVO", "LNAV KLM12 OFF" })
+  check_eq(ex("KLM12 rejoin own navigation at BRAVO"), "DIRECT KLM12 BRAVO")
+  check_eq(ex("KLM12 rejoin your own navigation at BRAVO, descend FL280"), "DIRECT KLM12 BRAVO ; ALT KLM12 FL280")
+  check_eq(ex("KLM12 rejoin own navigation"), "LNAV KLM12 ON")
+end
