@@ -2442,6 +2442,10 @@ function G:at_waypoint(s, spec)
     local clause_at = self:word(r.b - 1, "at") and r.b - 1 > s.trig and #self:quantities(s.trig, r.b - 1) > 0
       and ((self.t[r.b - 2].kind == "punct" and self.t[r.b - 2].text == ",") or self:word(r.b - 2, "@then_words"))
       and (self:quantities(after, s.e)[1] or {}).b == after
+    -- (a comma after the value opens another clause: "at ALFA FL240, 250 knots" is asked about, never tied there)
+    for i = after, s.e - 1 do
+      clause_at = clause_at and not (self.t[i].kind == "punct" and self.t[i].text == ",")
+    end
     -- "show me the constraints AUA123 has at NERDU", "what restrictions does KLM12 have at ARTIP?": asked for
     local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
       and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0

@@ -3987,6 +3987,7 @@ do
   check_eq(ex("KLM12 descend FL260 then at ALFA 250 knots"), "ALT KLM12 FL260 ; AT KLM12 ALFA SPD 250")
   check(ex("KLM12 descend FL260, at BRAVO FL240"):match("^ASK") ~= nil, "BRAVO is off the route")
   check(ex("KLM12 descend FL260, at ALFA turn left heading 200"):match("^ASK") ~= nil, "a turn at a waypoint")
+  check(ex("KLM12 descend FL260, at ALFA FL240, 250 knots"):match("^ASK") ~= nil, "a speed in a clause after it")
 end
 
 -- "when level" before a heading after a climb or descent ("descend FL260 and when level turn right heading
@@ -4011,6 +4012,9 @@ do
   check_eq(ex("KLM12 descend FL260, at 20 miles from ALFA reduce 250 knots"),
     "ALT KLM12 FL260 ; ATDIST KLM12 ALFA 20 SPD KLM12 250")
   check(ex("KLM12 descend FL260, 20 miles past ALFA descend FL240"):match("^ASK") ~= nil, "past a place")
+  -- (a level to be reached by a distance before a place is no condition of reaching that distance)
+  check(ex("KLM12 descend to be level FL240 20 miles before ALFA"):match("^ASK") ~= nil, "level by a distance")
+  check(ex("KLM12 descend FL240, level 20 miles before ALFA"):match("^ASK") ~= nil, "level by a distance")
 end
 
 -- Telephony designators of TUI's airlines said in full ("tuijet" TUI, "beauty" JAF), before any verb: the
