@@ -316,16 +316,24 @@ return function(intent, rule, words)
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
   -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
   -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
-  -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude)
+  -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude); only after
+  -- an instruction, and not in a report asked for ("report reaching, Mach .79": the Mach is given now)
   rule { "mach", "spd", when = function(g, i)
     local q = g:quantities(i, math.min(#g.t + 1, i + 4))[1]
     if not (q and q.kind == "mach" and q.b == i) then return false end
     local k = i - 1
     while k >= 1 and (g.t[k].filler or (g.t[k].kind == "punct" and g.t[k].text == ",")) do k = k - 1 end
-    if g:word(k, "reaching") then return true end
-    local qs = g:quantities(math.max(1, k - 4), k + 1)
-    local lvl = qs[#qs]
-    return lvl ~= nil and lvl.kind == "alt" and lvl.e == k + 1 and g:word(lvl.b - 1, "passing reaching leaving")
+    local verb = k
+    if not g:word(k, "reaching") then
+      local qs = g:quantities(math.max(1, k - 4), k + 1)
+      local lvl = qs[#qs]
+      if not (lvl and lvl.kind == "alt" and lvl.e == k + 1 and g:word(lvl.b - 1, "passing reaching leaving")) then
+        return false
+      end
+      verb = lvl.b - 1
+    end
+    if g:word(verb - 1, "on when once") then verb = verb - 1 end
+    return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
   end }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
