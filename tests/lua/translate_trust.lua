@@ -3964,6 +3964,7 @@ do
   check_eq(ex("KLM12 descend FL240 level by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12 descend to reach FL240 by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12, be level FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL240 to be level at ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
   check(ex("KLM12 descend FL240 level by BRAVO"):match("^ASK") ~= nil, "BRAVO is off the route")
   check(ex("KLM12 descend FL240 level by ALFA 250 knots"):match("^ASK") ~= nil, "a speed after the waypoint")
 end
