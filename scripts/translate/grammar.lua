@@ -2320,6 +2320,12 @@ function G:at_waypoint(s, spec)
       if q and q.e == r.b - 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach") and not self:in_reason(r.b) then
         return tied_to_waypoint(self, r)
       end
+      -- ("direct ALFA, at ALFA FL240": a level or speed said straight after "at" and the waypoint)
+      local after = (self:quantities(r.e, s.e)[1] or {})
+      if r.b - 1 > s.trig and self:word(r.b - 1, "at") and after.b == self:skip_fillers(r.e)
+          and (after.kind == "alt" or after.kind == "speed" or after.kind == "mach") and not self:in_reason(r.b) then
+        return tied_to_waypoint(self, r)
+      end
     end
     return
   end

@@ -3991,6 +3991,8 @@ do
   check(ex("KLM12 descend FL260, at BRAVO FL240"):match("^ASK") ~= nil, "BRAVO is off the route")
   check(ex("KLM12 descend FL260, at ALFA turn left heading 200"):match("^ASK") ~= nil, "a turn at a waypoint")
   check(ex("KLM12 descend FL260, at ALFA FL240, 250 knots"):match("^ASK") ~= nil, "a speed in a clause after it")
+  -- (after a direct-to, "at ALFA FL240" is asked about, never a level given now)
+  check(ex("KLM12 direct ALFA, at ALFA FL240"):match("^ASK") ~= nil, "a level at the waypoint flown to")
 end
 
 -- "when level" before a heading after a climb or descent ("descend FL260 and when level turn right heading
