@@ -1451,6 +1451,38 @@ function G:trailing_level_condition()
   return nil
 end
 
+-- A level said after "until" ("until passing FL370", "till reaching FL280") ends the instruction before it, a
+-- limit squawk's commands do not carry. After a vertical rate, a level cleared said before it ("climb
+-- FL380 rate 2000 or greater until passing FL370") the rate is held to the level cleared: the limit is
+-- accounted for; after a speed ("maintain Mach .80 until passing FL340") it is asked about, never read as a
+-- level to fly. ("climb until FL250", "rate of descent 2000 fpm until FL100": the level to fly, read by the
+-- handlers.)
+function G:level_limits()
+  for i = 1, #self.t do
+    if self:word(i, "until till") then
+      local v = self:skip_fillers(i + 1)
+      if self:word(v, "passing reaching leaving") then v = self:skip_fillers(v + 1) end
+      local q = self:quantities(v, #self.t + 1)[1]
+      if q and q.b == v and q.kind == "alt" then
+        local b = i
+        while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+        local rate, speed, cleared = self:word_in(b, i, "rate"), false, false
+        for _, p in ipairs(self:quantities(b, i)) do
+          rate, speed = rate or p.kind == "vs", speed or p.kind == "speed" or p.kind == "mach"
+        end
+        for _, p in ipairs(self:quantities(1, i)) do cleared = cleared or p.kind == "alt" end
+        if rate and cleared then
+          self:mark_used(q.b, q.e)
+          self:explain(i, q.e)
+        elseif speed then
+          self:need(string.format("squawk cannot end an instruction at a level ('%s'). Should it hold until told "
+            .. "otherwise?", self:raw(i, q.e)))
+        end
+      end
+    end
+  end
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -4179,6 +4211,7 @@ function M.translate(text, world)
   g:prefix_refs()
   g:opening_right()
   g:runway_sides()
+  g:level_limits()
   -- a latitude beyond a pole or a longitude beyond the antimeridian ("95 N", "190 W") is no position
   for _, q in ipairs(g:quantities(1, #g.t + 1)) do
     if (q.kind == "lat" and math.abs(q.value) > 90) or (q.kind == "lon" and math.abs(q.value) > 180) then

@@ -4066,3 +4066,16 @@ do
   check_eq(ex("KLM12 rejoin your own navigation at BRAVO, descend FL280"), "DIRECT KLM12 BRAVO ; ALT KLM12 FL280")
   check_eq(ex("KLM12 rejoin own navigation"), "LNAV KLM12 ON")
 end
+
+-- A level said after "until" ends the instruction before it: after a vertical rate ("climb FL360 rate 2000 or
+-- greater until passing FL340") the rate is held to the level cleared; after a speed ("maintain Mach .80
+-- until passing FL340") it is asked about, never a level to fly
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 climb FL360 rate 2000 or greater until passing FL340"), "ALT KLM12 FL360 2000")
+  check_eq(ex("KLM12 climb FL360, 1500 fpm until reaching FL340"), "ALT KLM12 FL360 1500")
+  local r = ex("KLM12 maintain Mach .80 until passing FL340")
+  check(r:match("^ASK") ~= nil and r:find("until passing", 1, true) ~= nil, r)
+  -- (with no level cleared before it, the level after "until" is the one to fly)
+  check(ex("KLM12 rate of descent 2000 feet per minute until FL260"):find("FL260", 1, true) ~= nil, "the level to fly")
+end
