@@ -1483,6 +1483,22 @@ function G:level_limits()
   end
 end
 
+-- A level said after "passing" or "leaving" that became a level to fly ("KLM12 passing FL340 Mach .80": a
+-- pilot's report of the level passed, or a condition with nothing to hold) is asked about, never issued.
+function G:passing_level_flown()
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if q.kind == "alt" and self:word(q.b - 1, "passing leaving") then
+      local level = " " .. handlers.format.alt(q.value, q.fl)
+      for _, line in ipairs(self.out) do
+        if line:match("^ALT %S+ %S+") and (line .. " "):find(level .. " ", 1, true) then
+          return self:need(string.format("I have %s. Is '%s' a level to fly to, or a level the aircraft passes?",
+            table.concat(self.out, " ; "), self:raw(q.b - 1, q.e)))
+        end
+      end
+    end
+  end
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -4265,6 +4281,7 @@ function M.translate(text, world)
       end
     end
   end
+  if not g.ask then g:passing_level_flown() end
   if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end
   if not g.ask then g:direct_when_able() end

@@ -3951,6 +3951,9 @@ do
   check_eq(ex("KLM12 climb FL360, on reaching Mach .80"), "ALT KLM12 FL360 ; ATALT KLM12 FL360 SPD KLM12 M0.8")
   check_eq(ex("KLM12 descend FL240, reaching reduce 250 knots"), "ALT KLM12 FL240 ; ATALT KLM12 FL240 SPD KLM12 250")
   check_eq(ex("KLM12 climb FL360 Mach .80"), "ALT KLM12 FL360 ; SPD KLM12 M0.8")
+  -- (a level after "passing" with no instruction before it, "KLM12 passing FL340 Mach .80", is no level to fly)
+  check(ex("KLM12 passing FL340 Mach .80"):match("^ASK") ~= nil, "a level passed")
+  check_eq(ex("KLM12 passing FL340 reduce 250 knots"), "ATALT KLM12 FL340 SPD KLM12 250")
   -- (a report asked for is no condition of the Mach said after it)
   check(ex("KLM12 climb FL360 report reaching, Mach .80"):find("ATALT", 1, true) == nil, "a report asked for")
 end
