@@ -1657,7 +1657,8 @@ function G:segments(b, e)
         -- ("descend FL300, 25 miles before KOK descend FL260": a distance from a place opening the second
         -- instruction's clause, after the first's value, is that instruction's condition, no repeat)
         local dist_between = false
-        for _, q in ipairs(self:quantities(last.trig, tr.pos)) do
+        local between = (last.intent == tr.intent or alt_pair) and this.value and self:quantities(last.trig, tr.pos)
+        for _, q in ipairs(between or {}) do
           local k = self:skip_fillers(q.e)
           dist_between = dist_between or (q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
             and self:word(self:word(k, "out") and k + 1 or k, "from of to before"))
