@@ -1451,6 +1451,54 @@ function G:trailing_level_condition()
   return nil
 end
 
+-- A level said after "until" ("until passing FL370", "till reaching FL280") ends the instruction before it, a
+-- limit squawk's commands do not carry. After a vertical rate, a level cleared said before it ("climb
+-- FL380 rate 2000 or greater until passing FL370") the rate is held to the level cleared: the limit is
+-- accounted for; after a speed ("maintain Mach .80 until passing FL340") it is asked about, never read as a
+-- level to fly. ("climb until FL250", "rate of descent 2000 fpm until FL100": the level to fly, read by the
+-- handlers.)
+function G:level_limits()
+  for i = 1, #self.t do
+    if self:word(i, "until till") then
+      local v = self:skip_fillers(i + 1)
+      if self:word(v, "passing reaching leaving") then v = self:skip_fillers(v + 1) end
+      local q = self:quantities(v, #self.t + 1)[1]
+      if q and q.b == v and q.kind == "alt" then
+        local b = i
+        while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
+        local rate, speed, cleared = self:word_in(b, i, "rate"), false, false
+        for _, p in ipairs(self:quantities(b, i)) do
+          rate, speed = rate or p.kind == "vs", speed or p.kind == "speed" or p.kind == "mach"
+        end
+        for _, p in ipairs(self:quantities(1, i)) do cleared = cleared or p.kind == "alt" end
+        if rate and cleared then
+          self:mark_used(q.b, q.e)
+          self:explain(i, q.e)
+        elseif speed then
+          self:need(string.format("squawk cannot end an instruction at a level ('%s'). Should it hold until told "
+            .. "otherwise?", self:raw(i, q.e)))
+        end
+      end
+    end
+  end
+end
+
+-- A level said after "passing" or "leaving" that became a level to fly ("KLM12 passing FL340 Mach .80": a
+-- pilot's report of the level passed, or a condition with nothing to hold) is asked about, never issued.
+function G:passing_level_flown()
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    if q.kind == "alt" and self:word(q.b - 1, "passing leaving") then
+      local level = " " .. handlers.format.alt(q.value, q.fl)
+      for _, line in ipairs(self.out) do
+        if line:match("^ALT %S+ %S+") and (line .. " "):find(level .. " ", 1, true) then
+          return self:need(string.format("I have %s. Is '%s' a level to fly to, or a level the aircraft passes?",
+            table.concat(self.out, " ; "), self:raw(q.b - 1, q.e)))
+        end
+      end
+    end
+  end
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
@@ -1606,7 +1654,17 @@ function G:segments(b, e)
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
           and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
-        if (last.intent == tr.intent or alt_pair) and not this.single and not self:addressee_between(last, tr.pos) then
+        -- ("descend FL300, 25 miles before KOK descend FL260": a distance from a place opening the second
+        -- instruction's clause, after the first's value, is that instruction's condition, no repeat)
+        local dist_between = false
+        local between = (last.intent == tr.intent or alt_pair) and this.value and self:quantities(last.trig, tr.pos)
+        for _, q in ipairs(between or {}) do
+          local k = self:skip_fillers(q.e)
+          dist_between = dist_between or (q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
+            and self:word(self:word(k, "out") and k + 1 or k, "from of to before"))
+        end
+        if (last.intent == tr.intent or alt_pair) and not this.single and not self:addressee_between(last, tr.pos)
+            and not dist_between then
           if tr.intent == "alt" then last.intent = "alt" end
           merged = true
         end
@@ -1633,6 +1691,15 @@ function G:segments(b, e)
         -- "..., when passing flight level 130 reduce speed": the condition belongs to what follows it
         local cond = self:find_word(last.trig + 1, start, "@level_condition")
         if cond < start then start = cond end
+        -- (the distance of a condition said before the instruction word, with "at" or "within" before it)
+        for _, q in ipairs(self:quantities(last.trig + 1, start)) do
+          local k = self:skip_fillers(q.e)
+          if q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
+              and self:word(self:word(k, "out") and k + 1 or k, "from of to before") then
+            start = math.min(start, self:word(q.b - 1, "at within") and q.b - 1 or q.b)
+            break
+          end
+        end
         last.e = start
       end
       segs[#segs + 1] = { intent = tr.intent, b = last and start or b, trig = tr.pos, e = e, ["then"] = thn }
@@ -1786,6 +1853,7 @@ end
 -- '.', '?', ';' or the end; "say again? I say, descend FL360" (nothing in it) reads on as before.
 local QUESTION_BACK_NOT_AFTER = {}
 for _, w in ipairs(lexicon.question_back.not_after) do QUESTION_BACK_NOT_AFTER[w] = true end
+local QUESTION_ADDRESSED = table.concat(lexicon.question_back.addressed, " ")
 local QUESTION_PAST = {}
 for _, w in ipairs(lexicon.question_back.past) do QUESTION_PAST[w] = true end
 -- PHRASE_WORDS[phrase]: the phrase's words, split once
@@ -1835,7 +1903,7 @@ function G:question_back()
     if self.t[i].kind == "word" and opens[self.t[i].text] and not self.u:used(i)
         and not (before and QUESTION_BACK_NOT_AFTER[before.text]) then
       local re = phrase_end(i, qb.repeat_words)
-      if re then
+      if re and not self:word(self:skip_fillers(re), QUESTION_ADDRESSED) then
         local e = clause_end(re)
         if e > re and #self:quantities(re, e) == 0 then
           return self:need(string.format("'%s' asks for a repeat: it is a question, no instruction. What "
@@ -2081,7 +2149,11 @@ function G:parse(b, e)
         self.ask = nil
       elseif (self:then_after(segs, k) or self:when_reached(s) or reached_cut) and before and #self.out == n_before + 1
           and spec and spec.value
-          and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD") then
+          and ((self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD")
+            -- ("descend FL230 and when level turn right heading 140": a heading said as one waits for the
+            -- level reached too; a turn by degrees, counted from the heading now, is asked about)
+            or (not self:then_after(segs, k) and self.out[#self.out]:match("^HDG ") and before:match("^ATALT ")
+                and self:word_in(s.b, s.e, "heading hdg"))) then
         self.out[#self.out] = before .. " " .. self.out[#self.out]
       elseif self:when_reached(s) and not before and #self.out == n_before + 1 and n_before > 0
           and self.out[n_before]:match("^DIRECT ") and not self.out[#self.out]:match("^AT ") and not self.ask then
@@ -2171,10 +2243,17 @@ end
 -- True when the instruction opens with a condition that names the value of the
 -- instruction before it, by "there" or "level" and no value of its own ("climb
 -- to FL150, and when it gets there, speed it up to 290": ATALT ... FL150 SPD ...), or by "reaching" alone
--- ("descend FL60, when reaching reduce speed 210").
+-- ("descend FL60, when reaching reduce speed 210"; "reaching" alone opening the clause: "climb FL370, reaching
+-- Mach .79").
 function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
-  if c >= s.trig or #self:quantities(c, s.trig) > 0 then return false end
+  if c >= s.trig then
+    -- ("climb FL370, reaching Mach .79", "on reaching reduce 250": "reaching" alone opening the clause)
+    local v = self:skip_fillers(s.b)
+    if self:word(v, "on") then v = self:skip_fillers(v + 1) end
+    return self:word(v, "reaching") and self:skip_fillers(v + 1) == s.trig
+  end
+  if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
   return self:word_in(c + 1, s.trig, "there level lvl")
     or (self:word(verb, "reaching") and self:skip_fillers(verb + 1) == s.trig)
@@ -2290,6 +2369,12 @@ function G:at_waypoint(s, spec)
       if q and q.e == r.b - 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach") and not self:in_reason(r.b) then
         return tied_to_waypoint(self, r)
       end
+      -- ("direct ALFA, at ALFA FL240": a level or speed said straight after "at" and the waypoint)
+      local after = (self:quantities(r.e, s.e)[1] or {})
+      if r.b - 1 > s.trig and self:word(r.b - 1, "at") and after.b == self:skip_fillers(r.e)
+          and (after.kind == "alt" or after.kind == "speed" or after.kind == "mach") and not self:in_reason(r.b) then
+        return tied_to_waypoint(self, r)
+      end
     end
     return
   end
@@ -2390,10 +2475,39 @@ function G:at_waypoint(s, spec)
       local qs = self:quantities(k + 2, r.b - 1)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
     end
+    -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES": the level
+    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there as well (`level_by`: that
+    -- level, the only value said before "by" or "at"; only "level", "reach", "be", "to" and fillers beside it)
+    local level_by
+    local from = s.intent == "infer" and first or s.trig + 1
+    local said_level = false  -- ("level" said as a word of its own, not in "flight level")
+    for i = s.intent == "infer" and first or s.trig, r.b - 2 do
+      said_level = said_level or self:word(i, "reach reaching") or (self:word(i, "level") and not self:word(i - 1, "flight"))
+    end
+    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at") and said_level then
+      local qs = self:quantities(s.b, r.b - 1)
+      level_by = #qs == 1 and qs[1].kind == "alt" and qs[1] or nil
+      for i = from, r.b - 2 do
+        local inside = level_by and i >= level_by.b and i < level_by.e
+        if not (inside or self.t[i].filler or (self.t[i].kind == "punct" and self.t[i].text == ",")
+            or self:word(i, "level reach reaching be to and")) then
+          level_by = nil
+        end
+      end
+    end
+    -- "descend FL300, at VALKO FL250", "descend FL310 then at LIPNI FL270": a clause of its own after the
+    -- instruction's value, "at", the waypoint and straight after it a value, with no verb: a constraint there
+    local clause_at = self:word(r.b - 1, "at") and r.b - 1 > s.trig and #self:quantities(s.trig, r.b - 1) > 0
+      and ((self.t[r.b - 2].kind == "punct" and self.t[r.b - 2].text == ",") or self:word(r.b - 2, "@then_words"))
+      and (self:quantities(after, s.e)[1] or {}).b == after
+    -- (a comma after the value opens another clause: "at ALFA FL240, 250 knots" is asked about, never tied there)
+    for i = after, s.e - 1 do
+      clause_at = clause_at and not (self.t[i].kind == "punct" and self.t[i].text == ",")
+    end
     -- "show me the constraints AUA123 has at NERDU", "what restrictions does KLM12 have at ARTIP?": asked for
     local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
       and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
-    if crossed or constrained or opening or be_at or shown then
+    if crossed or constrained or opening or be_at or shown or level_by or clause_at then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
       local in_route = false
@@ -2411,6 +2525,8 @@ function G:at_waypoint(s, spec)
         -- "be at FL200 over ARTIP": the value before the waypoint, and none after it
         other = #said > 0
         said = self:quantities(be_at, r.b - 1)
+      elseif level_by then
+        other, said = #said > 0, { level_by }
       end
       for _, q in ipairs(said) do
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q
@@ -4112,6 +4228,7 @@ function M.translate(text, world)
   g:prefix_refs()
   g:opening_right()
   g:runway_sides()
+  g:level_limits()
   -- a latitude beyond a pole or a longitude beyond the antimeridian ("95 N", "190 W") is no position
   for _, q in ipairs(g:quantities(1, #g.t + 1)) do
     if (q.kind == "lat" and math.abs(q.value) > 90) or (q.kind == "lon" and math.abs(q.value) > 180) then
@@ -4165,6 +4282,7 @@ function M.translate(text, world)
       end
     end
   end
+  if not g.ask then g:passing_level_flown() end
   if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end
   if not g.ask then g:direct_when_able() end

@@ -1105,7 +1105,11 @@ function m:at_distance(s)
     -- ("at 10 from GOW": a bare number between "at" and "from" a place is its distance, NM)
     local bare = q.kind == "plain" and q.value > 0 and q.value < 1000 and self:word(q.b - 1, "at")
       and self:word(q.e, "from")
-    if (q.kind == "dist" or bare) and not self.taken[q.b] then
+    -- ("be level 20 miles before ALFA", "descend to be level FL240 20 miles before ALFA": a level to be
+    -- reached by a distance, no condition squawk can carry; its words are left over and asked about)
+    local level_at = self:word(q.b, "level fl flight")
+    for i = s.b, q.b - 1 do level_at = level_at or (self:word(i, "level") and not self:word(i - 1, "flight")) end
+    if (q.kind == "dist" or bare) and not self.taken[q.b] and not level_at then
       local k = self:skip_fillers(q.e)
       if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
       -- ("cross 15 miles north of Seattle at 10000", "... south east of ...": the side of the place the

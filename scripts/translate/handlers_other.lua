@@ -847,6 +847,12 @@ return function(H, f, compass)
         end
       end
     end
+    -- ("direct Olno": the name of the navaid LNO near the aircraft, said exactly, before a waypoint of its
+    -- route that only sounds like it, HELEN; the place that name means, as m:place_by_name reads it)
+    local asked = self.ask
+    local navaid = best and best_word ~= best:lower() and self:navaid_by_name(b, e, a)
+    self.ask = asked
+    if navaid then return self:place_by_name(b, e, a) or navaid end
     if best and best_score >= L.waypoint_confirm then
       self:explain(best_span[1], best_span[2])
       return best
@@ -1990,6 +1996,18 @@ return function(H, f, compass)
     local wp = point or self:waypoint(s.trig, s.e, id)
     if not wp then return self:need("Which waypoint should I remove from the route of " .. id .. "?") end
     self:emit("DELWPT " .. id .. " " .. wp)
+    -- "delete DEPAX and ROLIS", "remove DEPAX, ROLIS": each further waypoint of its route listed after "and" or
+    -- a comma is removed too (one off its route stays unexplained, and is asked about)
+    local route = {}
+    for _, w in ipairs((self:state(id) or {}).route or {}) do route[w:upper()] = true end
+    for _, r in ipairs(self:refs_in(s.trig + 1, s.e, "waypoint")) do
+      local sep = self.t[r.b - 1]
+      if r.name:upper() ~= wp:upper() and route[r.name:upper()] and sep
+          and (self:word(r.b - 1, "and") or (sep.kind == "punct" and sep.text == ",")) then
+        self:emit("DELWPT " .. id .. " " .. r.name)
+        self:explain(r.b - 1, r.e)
+      end
+    end
   end
 
   -- "destination echo hotel alpha mike": an ICAO code spelled in the phonetic alphabet after the

@@ -294,9 +294,10 @@ return {
   -- with no value in its clause asks for a repeat; "confirm cleared FL200?", "confirm heading 270?" with a value
   -- asks whether a clearance stands. Not after `not_after` ("I say again 260" is the controller's own repeat).
   -- A clause ending in "?" that holds one of `past` asks what was done before ("which one did Pablo use last
-  -- week?"): a question, no instruction.
+  -- week?"): a question, no instruction. A repeat asked with one of `addressed` after it ("say again your
+  -- speed") is the controller asking the aircraft for its own value: a report, read as "say your speed".
   question_back = { repeat_words = { "say again", "say that again" }, confirm = { "confirm" },
-                    not_after = { "i", "we" }, past = { "did", "didn't" } },
+                    not_after = { "i", "we" }, past = { "did", "didn't" }, addressed = { "your" } },
   -- the wrong value a pilot read back, named by the controller after the corrected instruction ("descend and
   -- maintain 6000, you said seven", ", readback was one one thousand"): each phrase, after a comma, opens a
   -- clause of values only that ends the request or its sentence (G: readback_heard)

@@ -227,6 +227,8 @@ return {
     { "loganair", "LOG" },
     { "logan", "LOG" },  -- (Loganair's ICAO telephony)
     { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
+    { "tuijet", "TUI" },  -- (TUIfly)
+    { "beauty", "JAF" },  -- (TUI fly Belgium)
     { "azul", "AZU" },
     { "korean air", "KAL" },
     { "pollot", "LOT" },

@@ -304,6 +304,27 @@ return function(intent, rule, words)
   -- ("swap their headings", "exchange the speeds of ..."): what is swapped, no value of its own
   rule { "heading headings speed speeds level levels altitude altitudes", false, prev = { 4, "swap exchange" } }
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
+  -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
+  -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
+  -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude); only after
+  -- an instruction, and not in a report asked for ("report reaching, Mach .79": the Mach is given now)
+  rule { "mach", "spd", when = function(g, i)
+    local q = g:quantities(i, math.min(#g.t + 1, i + 4))[1]
+    if not (q and q.kind == "mach" and q.b == i) then return false end
+    local k = i - 1
+    while k >= 1 and (g.t[k].filler or (g.t[k].kind == "punct" and g.t[k].text == ",")) do k = k - 1 end
+    local verb = k
+    if not g:word(k, "reaching") then
+      local qs = g:quantities(math.max(1, k - 4), k + 1)
+      local lvl = qs[#qs]
+      if not (lvl and lvl.kind == "alt" and lvl.e == k + 1 and g:word(lvl.b - 1, "passing reaching leaving")) then
+        return false
+      end
+      verb = lvl.b - 1
+    end
+    if g:word(verb - 1, "on when once") then verb = verb - 1 end
+    return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
+  end }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"
@@ -536,6 +557,7 @@ return function(intent, rule, words)
   -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
   rule { "creating spawning", false, prev = { 1, "before after without" } }
   rule { "create spawn generate creat cre creating spawning", "create" }
+  rule { "pop", "mcre", next = "up", near = { 4, "random" } }  -- "pop up ten random aircraft"
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
   -- ("creconfs: new one TVF88AB, B738, target AFR6204, ...": the new aircraft of a conflict set up before it is
@@ -775,11 +797,13 @@ return function(intent, rule, words)
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
-  -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO": the waypoint where the route is
-  -- rejoined is flown to directly ("rejoin the route" alone is LNAV)
+  -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO", "rejoin own navigation at NORKU":
+  -- the waypoint where the route is rejoined is flown to directly ("rejoin the route" alone is LNAV)
   rule { "rejoin rejoining", "direct", when = function(g, i)
     local k = g:skip_fillers(i + 1)
-    while g:word(k, "the your its his her @route_nouns track airway at to over by") do k = g:skip_fillers(k + 1) end
+    while g:word(k, "the your its his her own @route_nouns track airway navigation nav at to over by") do
+      k = g:skip_fillers(k + 1)
+    end
     return k <= i + 6 and g:has_ref(k, k + 1, "waypoint")
   end }
   -- ("cleared for the FMS bridge visual runway 28R": an approach clearance, not simulated)
@@ -1082,6 +1106,8 @@ return function(intent, rule, words)
   -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
   rule { "resume resumes", "resnav", near = { 6, "cpa" } }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }
+  -- ("rejoin own navigation at NORKU": the rejoining's, a direct-to the waypoint)
+  rule { "own", false, prev = { 2, "rejoin rejoining" }, near = { 3, "at to over by" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "own", "lnav", next = "route", prev = { 3, "fly follow back resume" } }  -- "fly its own route again"
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"

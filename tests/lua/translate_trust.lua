@@ -3939,3 +3939,146 @@ do
     check(ex("point KLM12 at the Nowhereville VOR"):match("^ASK") ~= nil, "no such navaid")
   end
 end
+
+-- A Mach number said with no verb straight after a level passed or reached ("climb FL360, passing FL340
+-- Mach .80", "when passing FL340 M.80") waits for that level (ATALT); after "reaching" alone ("on reaching
+-- Mach .80") for the level just cleared; said with no condition it is a speed at once
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 climb FL360, passing FL340 Mach .80"), "ALT KLM12 FL360 ; ATALT KLM12 FL340 SPD KLM12 M0.8")
+  check_eq(ex("KLM12 climb FL360 when passing FL340 M.80, heading 120"),
+    "ALT KLM12 FL360 ; ATALT KLM12 FL340 SPD KLM12 M0.8 ; HDG KLM12 120")
+  check_eq(ex("KLM12 climb FL360, on reaching Mach .80"), "ALT KLM12 FL360 ; ATALT KLM12 FL360 SPD KLM12 M0.8")
+  check_eq(ex("KLM12 descend FL240, reaching reduce 250 knots"), "ALT KLM12 FL240 ; ATALT KLM12 FL240 SPD KLM12 250")
+  check_eq(ex("KLM12 climb FL360 Mach .80"), "ALT KLM12 FL360 ; SPD KLM12 M0.8")
+  -- (a level after "passing" with no instruction before it, "KLM12 passing FL340 Mach .80", is no level to fly)
+  check(ex("KLM12 passing FL340 Mach .80"):match("^ASK") ~= nil, "a level passed")
+  check_eq(ex("KLM12 passing FL340 reduce 250 knots"), "ATALT KLM12 FL340 SPD KLM12 250")
+  -- (a report asked for is no condition of the Mach said after it)
+  check(ex("KLM12 climb FL360 report reaching, Mach .80"):find("ATALT", 1, true) == nil, "a report asked for")
+end
+
+-- A climb or descent to be level by a waypoint of the route ("descend FL240 level by ALFA", "descend to
+-- reach FL240 by ALFA", "be level FL240 by ALFA"): the level is an AT constraint there as well; a waypoint
+-- off the route, or another value said after it, is asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
+    "ADDWPT KLM12 ALFA" })
+  check_eq(ex("KLM12 descend FL240 level by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend to reach FL240 by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12, be level FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL240 to be level at ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check(ex("KLM12 descend FL240 level by BRAVO"):match("^ASK") ~= nil, "BRAVO is off the route")
+  check(ex("KLM12 descend FL240 level by ALFA 250 knots"):match("^ASK") ~= nil, "a speed after the waypoint")
+end
+
+-- A navaid said exactly by its name near the aircraft ("direct Pampus": PAM) is that navaid, before a
+-- waypoint of the route that only sounds like it (PAMPAS); the waypoint said as spelled stays the waypoint
+do
+  local s, ex = navscene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT PAMPAS 52.1 4.3", "ADDWPT KLM12 PAMPAS" },
+    "a navaid's name before a sound-alike waypoint")
+  if s then
+    check_eq(ex("KLM12 direct Pampus"), "ADDWPT KLM12 PAM ; DIRECT KLM12 PAM")
+    check_eq(ex("KLM12 direct PAMPAS"), "DIRECT KLM12 PAMPAS")
+  end
+end
+
+-- A clause of its own after an instruction's value, "at", a route waypoint and a value straight after it, no
+-- verb ("descend FL260, at ALFA FL240", "... then at ALFA 250 knots"): a constraint there (AT); a waypoint off
+-- the route, or an instruction there with a verb, is still asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
+    "ADDWPT KLM12 ALFA" })
+  check_eq(ex("KLM12 descend FL260, at ALFA FL240"), "ALT KLM12 FL260 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL260 then at ALFA 250 knots"), "ALT KLM12 FL260 ; AT KLM12 ALFA SPD 250")
+  check(ex("KLM12 descend FL260, at BRAVO FL240"):match("^ASK") ~= nil, "BRAVO is off the route")
+  check(ex("KLM12 descend FL260, at ALFA turn left heading 200"):match("^ASK") ~= nil, "a turn at a waypoint")
+  check(ex("KLM12 descend FL260, at ALFA FL240, 250 knots"):match("^ASK") ~= nil, "a speed in a clause after it")
+  -- (after a direct-to, "at ALFA FL240" is asked about, never a level given now)
+  check(ex("KLM12 direct ALFA, at ALFA FL240"):match("^ASK") ~= nil, "a level at the waypoint flown to")
+end
+
+-- "when level" before a heading after a climb or descent ("descend FL260 and when level turn right heading
+-- 140"): it waits for the level (ATALT), as a speed does; a turn by degrees there is asked about, and "then"
+-- alone lists the next instruction
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 descend FL260 and when level turn right heading 140"),
+    "ALT KLM12 FL260 ; ATALT KLM12 FL260 HDG KLM12 140 RIGHT")
+  check_eq(ex("KLM12 descend FL260, when level reduce 250 knots"), "ALT KLM12 FL260 ; ATALT KLM12 FL260 SPD KLM12 250")
+  check(ex("KLM12 descend FL260, when level turn left 20 degrees"):match("^ASK") ~= nil, "a turn by degrees")
+  check_eq(ex("KLM12 descend FL260 then turn left heading 200"), "ALT KLM12 FL260 ; HDG KLM12 200 LEFT")
+end
+
+-- A distance from a place opening the clause of a second instruction of the same kind ("descend FL260, 20
+-- miles before ALFA descend FL240"): the second waits for it (ATDIST), the first runs now; a distance past
+-- a place is no such condition and is asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "ADDWPT KLM12 ALFA" })
+  check_eq(ex("KLM12 descend FL260, 20 miles before ALFA descend FL240"),
+    "ALT KLM12 FL260 ; ATDIST KLM12 ALFA 20 ALT KLM12 FL240")
+  check_eq(ex("KLM12 descend FL260, at 20 miles from ALFA reduce 250 knots"),
+    "ALT KLM12 FL260 ; ATDIST KLM12 ALFA 20 SPD KLM12 250")
+  check(ex("KLM12 descend FL260, 20 miles past ALFA descend FL240"):match("^ASK") ~= nil, "past a place")
+  -- (a level to be reached by a distance before a place is no condition of reaching that distance)
+  check(ex("KLM12 descend to be level FL240 20 miles before ALFA"):match("^ASK") ~= nil, "level by a distance")
+  check(ex("KLM12 descend FL240, level 20 miles before ALFA"):match("^ASK") ~= nil, "level by a distance")
+end
+
+-- Telephony designators of TUI's airlines said in full ("tuijet" TUI, "beauty" JAF), before any verb: the
+-- aircraft of that airline and flight number
+do
+  local _, ex = scene({ "CRE TUI7RB B738 52 4 090 FL300 280", "CRE JAF2PL B738 52.3 4.3 180 FL320 280" })
+  check_eq(ex("remove tuijet seven romeo bravo"), "DEL TUI7RB")
+  check_eq(ex("beauty 2PL descend FL280"), "ALT JAF2PL FL280")
+  check(ex("remove tuijet 9ZZ"):match("^ASK") ~= nil, "no such TUI flight")
+end
+
+-- "say again your speed": the controller asking the aircraft to say its own value again is a report asked
+-- for (POS), as "say your speed" is; "say again the level" stays a question back, asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 say again your level"), "POS KLM12")
+  check_eq(ex("KLM12, say again your heading please"), "POS KLM12")
+  check(ex("KLM12 say again the level"):match("^ASK") ~= nil, "a pilot's question back")
+end
+
+-- "pop up N random aircraft": random traffic (MCRE), as "spawn" is; "pop up" with a callsign creates it
+do
+  local _, ex = scene({})
+  check_eq(ex("pop up twelve random aircraft"), "MCRE 12")
+  check_eq(ex("pop up KLM12 B738 at 52 4 heading 090 FL300 250 knots"), "CRE KLM12 B738 52 4 90 FL300 250")
+end
+
+-- Route waypoints listed after a removal ("delete ALFA and BRAVO", "remove ALFA, BRAVO"): each removed; one
+-- off the route is asked about
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9", "DEFWPT CHARL 52.5 5.2",
+    "CRE KLM12 B738 52 4 090 FL300 280", "ADDWPT KLM12 ALFA", "ADDWPT KLM12 BRAVO" })
+  check_eq(ex("KLM12 delete ALFA and BRAVO"), "DELWPT KLM12 ALFA ; DELWPT KLM12 BRAVO")
+  check_eq(ex("KLM12 remove ALFA, BRAVO, then climb FL320"), "DELWPT KLM12 ALFA ; DELWPT KLM12 BRAVO ; ALT KLM12 FL320")
+  check(ex("KLM12 delete ALFA and CHARL"):match("^ASK") ~= nil, "CHARL is off the route")
+end
+
+-- "rejoin own navigation at BRAVO": the waypoint the route is rejoined at is flown to directly, as after
+-- "rejoin the route at"; with no waypoint it is LNAV
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9", "CRE KLM12 B738 52 4 090 FL300 280",
+    "ADDWPT KLM12 ALFA", "ADDWPT KLM12 BRAVO", "LNAV KLM12 OFF" })
+  check_eq(ex("KLM12 rejoin own navigation at BRAVO"), "DIRECT KLM12 BRAVO")
+  check_eq(ex("KLM12 rejoin your own navigation at BRAVO, descend FL280"), "DIRECT KLM12 BRAVO ; ALT KLM12 FL280")
+  check_eq(ex("KLM12 rejoin own navigation"), "LNAV KLM12 ON")
+end
+
+-- A level said after "until" ends the instruction before it: after a vertical rate ("climb FL360 rate 2000 or
+-- greater until passing FL340") the rate is held to the level cleared; after a speed ("maintain Mach .80
+-- until passing FL340") it is asked about, never a level to fly
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 climb FL360 rate 2000 or greater until passing FL340"), "ALT KLM12 FL360 2000")
+  check_eq(ex("KLM12 climb FL360, 1500 fpm until reaching FL340"), "ALT KLM12 FL360 1500")
+  local r = ex("KLM12 maintain Mach .80 until passing FL340")
+  check(r:match("^ASK") ~= nil and r:find("until passing", 1, true) ~= nil, r)
+  -- (with no level cleared before it, the level after "until" is the one to fly)
+  check(ex("KLM12 rate of descent 2000 feet per minute until FL260"):find("FL260", 1, true) ~= nil, "the level to fly")
+end
