@@ -1426,18 +1426,30 @@ end
 
 -- ---- conditions: "When AC01 reaches FL200, ..." ----
 -- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
--- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120"): "once" or "when", "it" or
--- the aircraft, a verb of reaching, then a level and words with no value, aircraft or instruction of their
--- own to the end. Returns the position of "once"/"when" and the level's quantity, or nil.
-local REACHING = { passes = true, reaches = true, crosses = true, hits = true }
+-- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120", "250 knots by the time it's
+-- passing FL200", "by the time it gets to FL200"): "once", "when" or "by the time", "it" or the aircraft, a
+-- verb of reaching, then a level and words with no value, aircraft or instruction of their own to the end;
+-- or, after a speed instruction and no level one, "by" and the level alone ("speed 250 by FL200": the speed
+-- held from that level). Returns the position of the condition's first word and the level's quantity, or nil;
+-- "by the time" with no level so read is asked about (self.ask).
+local REACHING = { passes = true, reaches = true, crosses = true, hits = true, passing = true, reaching = true,
+                   crossing = true, through = true }
 function G:trailing_level_condition()
   for k = 2, #self.t do
-    if self:word(k, "once when") then
-      local v = k + 1
-      if self:word(v, "it") or self:has_ref(v, v + 1, "aircraft") then v = v + 1 end
-      if v > k + 1 and REACHING[(self.t[v] or {}).text] then
+    local by_time = self:word(k, "by") and self:word(k + 1, "the") and self:word(k + 2, "time")
+    local by_level = self:word(k, "by") and not by_time
+    if self:word(k, "once when") or by_time or by_level then
+      local v = by_time and k + 3 or k + 1
+      local subject = v
+      if self:word(v, "it it's he's she's") or self:has_ref(v, v + 1, "aircraft") then v = v + 1 end
+      if v > subject and self:word(v, "is 's") then v = v + 1 end
+      if v > subject and self:word(v, "gets") and self:word(v + 1, "to") then v = v + 1 end
+      local reached = v > subject and (REACHING[(self.t[v] or {}).text] or self:word(v - 1, "gets"))
+      if by_level then v = k end
+      if reached or by_level then
         local q = self:quantities(v + 1, #self.t + 1)[1]
-        if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) then
+        if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and not by_level)) then
+          if by_level and not self:speed_before_level(k) then return nil end
           for x = q.e, #self.t do
             if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
           end
@@ -1445,10 +1457,27 @@ function G:trailing_level_condition()
           return k, q
         end
       end
-      return nil
+      -- ("250 knots by the time it's level": a moment squawk cannot wait for, asked about)
+      if by_time then
+        self.ask = "By the time of what? squawk can wait for a level (ATALT) or a distance from a place (ATDIST): "
+          .. "please say the level, or give the instruction when it applies."
+      end
+      if not by_level then return nil end
     end
   end
   return nil
+end
+
+-- True when the words before position k give a speed instruction and no level one ("speed 250 by FL200",
+-- not "descend by 2000 feet").
+function G:speed_before_level(k)
+  local spd = false
+  for x = 1, k - 1 do
+    local intent = self:intent_at(x)
+    if intent == "alt" or intent == "vs" then return false end
+    spd = spd or intent == "spd"
+  end
+  return spd
 end
 
 function G:condition()

@@ -1056,9 +1056,10 @@ return function(intent, rule, words)
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
-  rule { "carry", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on"
-  -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
-  rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  rule { "carry go", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on", "go on"
+  -- "..., then carry on", "..., then go", "ok carry on, run it", "OK, go on, and run at 2x": a clause of its own
+  rule { "carry go", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  rule { "keep", "op", next = "going", when = function(g, i) return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
   -- "run it and fast forward 3 minutes", "run the sim and ff 60 s": the clock started, then moved on
   rule { "run", "op", when = function(g, i)

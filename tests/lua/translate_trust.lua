@@ -3939,3 +3939,25 @@ do
     check(ex("point KLM12 at the Nowhereville VOR"):match("^ASK") ~= nil, "no such navaid")
   end
 end
+
+-- A speed to hold "by the time" a level is passed, said after it ("should be at 230 knots by the time it
+-- reaches FL150", "speed 240 by FL120"): the speed waits for the level (ATALT), no level clearance; a moment
+-- that is no level ("by the time it's established") is asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 should be doing 230 knots by the time it's through FL150"), "ATALT KLM12 FL150 SPD KLM12 230")
+  check_eq(ex("KLM12 reduce to 230 kt by the time it reaches FL150"), "ATALT KLM12 FL150 SPD KLM12 230")
+  check_eq(ex("KLM12 reduce to 230 kt by the time it gets to FL150"), "ATALT KLM12 FL150 SPD KLM12 230")
+  check_eq(ex("KLM12 speed 240 by FL120"), "ATALT KLM12 FL120 SPD KLM12 240")
+  check_eq(ex("KLM12 descend by 3000 feet"), "ALT KLM12 27000")
+  check(ex("KLM12 230 knots by the time it's established"):match("^ASK") ~= nil, "no level to wait for")
+end
+
+-- The clock started by "go on" or "keep going" said as a clause of its own ("fine, go on, and run at 3x")
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("fine, go on, and run at 3x"), "OP ; DTMULT 3")
+  check_eq(ex("alright, keep going, then fast forward 2 minutes"), "OP ; FF 120")
+  check_eq(ex("go on"), "OP")
+  check_eq(ex("KLM12 go on heading 120"), "HDG KLM12 120")
+end
