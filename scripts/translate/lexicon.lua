@@ -189,6 +189,13 @@ return {
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
         "experiments",
+        -- an airspace design put to the test ("we're evaluating reduced separation", "the one that tests the
+        -- new branch", "the designer's note", "a quick check before we run"; a verb's plain form, "to test
+        -- ...", is left to G:purpose)
+        "tests", "testing", "tested", "evaluates", "evaluating", "evaluated", "evaluation", "assessing",
+        "assessment", "validating", "validation", "designer", "designers", "designing", "designed", "quick",
+        -- what an aircraft carries or flies for ("a B763 cargo", "a charter out of Katowice")
+        "cargo", "freighter", "freight", "passenger", "passengers", "charter", "airliner",
         -- a human-factors study's instruments and measures ("the eye tracker is calibrated", "fill in the
         -- NASA-TLX", "so the geometry works", "the crossing angle")
         "eye", "tracker", "eye-tracker", "nasa", "tlx", "nasa-tlx", "questionnaire", "workload", "geometry",

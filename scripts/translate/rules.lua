@@ -1208,6 +1208,11 @@ return function(intent, rule, words)
   rule { "print", "echo" }
   -- "note to self: ...", "note for me: ...": the experimenter's own note, no text for the log
   rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }
+  -- "designer's note, no action: ...": a note said to need no action is the speaker's own, no text for the log
+  rule { "note", false, when = function(g, i)
+    local k = (g.t[i + 1] or {}).kind == "punct" and i + 2 or i + 1
+    return g:word(k, "no") and g:word(k + 1, "action")
+  end }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started", "write a message for the participant:
   -- Block 1 finished": the text after the colon
   rule { "note comment log message", "echo", when = function(g, i)

@@ -3961,3 +3961,17 @@ do
   check_eq(ex("go on"), "OP")
   check_eq(ex("KLM12 go on heading 120"), "HDG KLM12 120")
 end
+
+-- An airspace designer's words for putting a design to the test ("we're evaluating reduced separation", "a
+-- freighter", "a quick look"): no instruction of their own; a note said to need no action is the speaker's
+-- own, no text for the log, and what it names is still accounted for or asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("We're evaluating closer spacing, so set the horizontal separation radius to 4 miles"), "ZONER 4")
+  check_eq(ex("Quick check before we start: what's on KLM12's route?"), "LISTRTE KLM12")
+  check_eq(ex("create a B744 freighter, CLX7, at 52.1 4.3, heading 180, FL240, 260 knots"),
+    "CRE CLX7 B744 52.1 4.3 180 FL240 260")
+  check_eq(ex("designer's note, no action: KLM12 is the slow one. KLM12 climb FL320"), "ALT KLM12 FL320")
+  check(ex("note, no action: KLM12 flies the ZZZZZ branch. KLM12 climb FL320"):match("^ASK") ~= nil,
+    "a name in the note is asked about")
+end
