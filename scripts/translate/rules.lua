@@ -444,12 +444,12 @@ return function(intent, rule, words)
   rule { "def", "defwpt", next = "@waypoint_nouns" }  -- "def wp XIT2 at 51.25N 004.10E" typed short
   -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
   -- waypoint at a position, when no aircraft that flies and no aircraft type is named
-  local function new_fix_at(g, i)
+  local function new_fix_at(g, i, span)
     if g:has_ref(1, #g.t + 1, "type") then return false end
     for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
       if r.exists then return false end
     end
-    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + (span or 8)))) do
       if q.kind == "lat" or q.kind == "lon" or (q.kind == "plain" and q.number.decimal) then return true end
     end
     return false
@@ -457,9 +457,14 @@ return function(intent, rule, words)
   rule { "put place create make add", "defwpt", near = { 2, "@waypoint_nouns" }, when = new_fix_at }
   rule { "waypoint wpt waypoints", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
   -- "new fix IAFN1 at 48.50 N 16.20 E", "a reference point called CENTRE at 52.0N, 3.75E", "the target point
-  -- for trial three, call it TGT3, 42.1 N 88.2 W": a fix or point said new, or named, at a position
-  rule { "fix point", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
-    return (g:preceded_by(i, 2, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
+  -- for trial three, call it TGT3, 42.1 N 88.2 W", "place the new southern entry ENTRX at ...": a fix or point
+  -- (an airspace design's gate, entry or exit) said new, or named, at a position
+  rule { "fix point gate entry exit", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
+    return (g:preceded_by(i, 3, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
+  end }
+  rule { "put place create make add", "defwpt", when = function(g, i)
+    return g:word(i + 1, "the a an") and g:word(i + 2, "new") and g:followed_by(i + 2, 4, "fix point gate entry exit")
+      and new_fix_at(g, i, 11)
   end }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
   rule { "add", "defwpt", near = { 2, "@waypoint_nouns" }, when = function(g, i)
@@ -673,11 +678,14 @@ return function(intent, rule, words)
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
   -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM", "squeeze MADOT in after BUSIL": the same said with
-  -- "put (in)", "squeeze" or "slot", the two waypoints on either side of "before"/"after" ("in" before it or none)
+  -- "put (in)", "squeeze" or "slot", the two waypoints on either side of "before"/"after" ("in" before it or none);
+  -- "define NEWPT at ..., then slot it in before ERGOM": "it" the waypoint the request defines before
   rule { "put squeeze slot", "addwpt", when = function(g, i)
     local w = g:word(i + 1, "in") and i + 2 or i + 1
     local at = g:word(w + 1, "in") and w + 2 or w + 1
-    return g:has_ref(w, w + 1, "waypoint") and g:word(at, "after before") and g:has_ref(at + 1, at + 2, "waypoint")
+    local defined = g:word(w, "it") and g:word_in(1, i, "define defwpt")
+    return (g:has_ref(w, w + 1, "waypoint") or defined) and g:word(at, "after before")
+      and g:has_ref(at + 1, at + 2, "waypoint")
   end }
   -- True when a latitude is said straight after word i (its degrees and minutes too: "55 30 North"),
   -- an aircraft that flies is named and no type is (no creation)

@@ -3975,3 +3975,17 @@ do
   check(ex("note, no action: KLM12 flies the ZZZZZ branch. KLM12 climb FL320"):match("^ASK") ~= nil,
     "a name in the note is asked about")
 end
+
+-- An airspace design's new points: a gate, entry or exit said new at a position is a waypoint defined
+-- ("place the new arrival gate GATEN at ..."), and "it" after such a definition is the new waypoint
+-- ("define NEWPT at ..., then slot it in before BRAVO"); a point with no name is asked about
+do
+  local _, ex = scene({ "DEFWPT BRAVO 52.4 4.9", "CRE EZY9 A320 52.5 4.5 180 FL300 260", "ADDWPT EZY9 BRAVO" })
+  check_eq(ex("place the new arrival gate GATEN at 52.9 4.8"), "DEFWPT GATEN 52.9 4.8")
+  check_eq(ex("create a new exit EXITW at 52.1 3.5"), "DEFWPT EXITW 52.1 3.5")
+  check_eq(ex("define NEWPT at 52.45 4.7, then slot it in before BRAVO on EZY9"),
+    "DEFWPT NEWPT 52.45 4.7 ; ADDWPT EZY9 NEWPT,,,,BRAVO")
+  check_eq(ex("define NEWPT 52.45 4.7 and put it after BRAVO on EZY9"), "DEFWPT NEWPT 52.45 4.7 ; ADDWPT EZY9 NEWPT,,,BRAVO")
+  check(ex("place the new gate at 52.9 4.8"):match("^ASK") ~= nil, "a gate with no name")
+  check(ex("put it after BRAVO on EZY9"):match("^ASK") ~= nil, "'it' with nothing defined")
+end
