@@ -767,6 +767,8 @@ local function written_forms(text)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
   local sh = lexicon.shorthand
+  -- "zone r 4 nm": ZONER's name typed apart, no right turn
+  text = text:gsub("%f[%a]([Zz][Oo][Nn][Ee])%s+([Rr])%f[%A]", "%1 radius")
   text = turn_letters(text, sh)
   -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7" (only a key that names
   -- a command or a setting: "t=300" in a note stays as typed, as does all of "log: seed=7 baseline")

@@ -439,6 +439,8 @@ return function(intent, rule, words)
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
+  -- ("it's spawned in the wrong place": the noun, no verb of placing)
+  rule { "place", false, prev = { 1, "wrong right" } }
   rule { "define make put draw", false, near = { 2, "box circle circular polygon poly line" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
   rule { "def", "defwpt", next = "@waypoint_nouns" }  -- "def wp XIT2 at 51.25N 004.10E" typed short
@@ -550,6 +552,11 @@ return function(intent, rule, words)
   end }
   -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
   rule { "creating spawning", false, prev = { 1, "before after without" } }
+  -- "delete WZZ61B, it's spawned in the wrong place", "it was created too close": how an aircraft came to be,
+  -- a reason, no creation
+  rule { "spawn spawned create created generate generated", false, when = function(g, i)
+    return g.t[i].raw:lower():match("ed$") ~= nil and g:word_in(math.max(1, i - 2), i, "it's it was were been is are s")
+  end }
   rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
   rule { "new", false, next = "@waypoint_nouns" }  -- "define a new waypoint called WP9"
@@ -919,6 +926,13 @@ return function(intent, rule, words)
     if g.t[#g.t].text == "?" then return true end
     local r = g:refs_in(i + 2, i + 3, "aircraft")[1]
     return r ~= nil and g:alone_but(i, r.e)
+  end }
+  -- "give me the route of LOT3KL", "give us KLM12's waypoints": the route given to the speaker, shown
+  rule { "route rte waypoints", "listrte", when = function(g, i)
+    for k = math.max(1, i - 5), i - 1 do
+      if g:word(k, "give") and g:word(k + 1, "me us") then return true end
+    end
+    return false
   end }
   rule { "listrte", "listrte" }
 

@@ -3989,3 +3989,17 @@ do
   check(ex("place the new gate at 52.9 4.8"):match("^ASK") ~= nil, "a gate with no name")
   check(ex("put it after BRAVO on EZY9"):match("^ASK") ~= nil, "'it' with nothing defined")
 end
+
+-- Small set-up phrasings of a test conductor: the route "given" to the speaker is shown; a level left
+-- with the one it is cleared to ("leave FL140 for 8000 feet"); how an aircraft came to be, said as the
+-- reason for deleting it, is no creation, nor "place" a noun a move; ZONER's name typed apart ("zone r")
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL140 280", "CRE EZY9 A320 52.5 4.5 180 FL300 260" })
+  check_eq(ex("give me the route of KLM12"), "LISTRTE KLM12")
+  check_eq(ex("KLM12 leave FL140 for 8000 feet"), "ALT KLM12 8000")
+  check(ex("KLM12 leave FL140"):match("^ASK") ~= nil, "a level left with none to go to")
+  check_eq(ex("remove EZY9, it was generated at the wrong level"), "DEL EZY9")
+  check_eq(ex("delete KLM12, it's sitting in the wrong place"), "DEL KLM12")
+  check_eq(ex("zone r 6 nm and zone dh 1200 ft"), "ZONER 6 ; ZONEDH 1200")
+  check_eq(ex("KLM12 r 30"), "HDG KLM12 120 RIGHT")
+end
