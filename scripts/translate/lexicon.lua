@@ -140,6 +140,8 @@ return {
         "after that", "after this", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
         "do widzenia", "do videnia", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
+        -- help offered with a value given twice ("... -- that's 50.7 / 16.2 in decimal if it helps")
+        "if it helps", "if that helps", "in case it helps", "in case that helps",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me",
         -- urgency, said with a negation ("descend FL150 without delay")

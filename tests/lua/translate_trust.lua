@@ -4003,3 +4003,17 @@ do
   check_eq(ex("zone r 6 nm and zone dh 1200 ft"), "ZONER 6 ; ZONEDH 1200")
   check_eq(ex("KLM12 r 30"), "HDG KLM12 120 RIGHT")
 end
+
+-- An airport setting said with the one it replaces after "not", "instead of" or "rather than" ("origin
+-- EDDM, not EDDF"): the first is set, the replaced one no candidate; said with no other airport, asked
+-- about; and a value said apologetically twice ("... in decimal, if it helps") is courtesy
+do
+  local _, ex = navscene({ "CRE DLH4 A320 50.5 9.0 090 FL200 250", "ORIG DLH4 EDDF" }, "airports replaced")
+  if ex then
+    check_eq(ex("DLH4's origin should be EDDM, not EDDF"), "ORIG DLH4 EDDM")
+    check_eq(ex("DLH4 destination EDDH rather than EDDL"), "DEST DLH4 EDDH")
+    check(ex("DLH4's origin should not be EDDF"):match("^ASK") ~= nil, "only the replaced airport")
+  end
+  local _, ex2 = scene({})
+  check_eq(ex2("new fix GAMMA at 52 30.0 N 4 15.0 E, that's 52.5 4.25 in decimal if that helps"), "DEFWPT GAMMA 52.5 4.25")
+end
