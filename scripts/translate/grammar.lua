@@ -2444,7 +2444,10 @@ function G:at_waypoint(s, spec)
         said = self:quantities(be_at, r.b - 1)
       end
       for _, q in ipairs(said) do
-        if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q
+        -- ("cross BEBEX at 6000": after a crossing, a bare number in hundreds of feet, 1000 or more, is a level)
+        if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)
+            or (crossed and q.kind == "plain" and q.value >= 1000 and q.value <= 60000 and q.value % 100 == 0)) then
+          alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
             or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))
             -- "at MRG01 FL100 220": a bare number straight after the level is the speed (FL100/220)

@@ -4017,3 +4017,11 @@ do
   local _, ex2 = scene({})
   check_eq(ex2("new fix GAMMA at 52 30.0 N 4 15.0 E, that's 52.5 4.25 in decimal if that helps"), "DEFWPT GAMMA 52.5 4.25")
 end
+
+-- A crossing restriction with a bare number in hundreds of feet ("cross BRAVO at 7000"), BRAVO on the
+-- route, is its level (`AT ... ALT`); a bare number under 1000 ("cross BRAVO at 240") is still asked about
+do
+  local _, ex = scene({ "DEFWPT BRAVO 52.4 4.9", "CRE EZY9 A320 52.5 4.5 180 FL100 260", "ADDWPT EZY9 BRAVO" })
+  check_eq(ex("EZY9 cross BRAVO at 7000"), "AT EZY9 BRAVO ALT 7000")
+  check(ex("EZY9 cross BRAVO at 240"):match("^ASK") ~= nil, "a bare number under 1000 at a crossing")
+end
