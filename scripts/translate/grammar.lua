@@ -3047,6 +3047,17 @@ function G:explained_spans(issued, kinds)
       end
     end
   end
+  -- "another departure out of Modlin: RYR2AB B738 at EPMO": a capitalised word elsewhere in the request that is
+  -- the navdata's own name of an airport issued by its code
+  local named = self.world.airports_named
+  for k = 1, named and #self.t or 0 do
+    local t = self.t[k]
+    if not inside[k] and t.kind == "word" and t.raw:match("^%u%l+$") and not MEANING[t.text] then
+      for _, code in ipairs(named(t.text)) do
+        if issued[code:lower()] then inside[k] = true end
+      end
+    end
+  end
   -- "direct to the merge point MRG01", "the metering fix RILAX": a word naming the place's role, before
   -- "point" or a waypoint noun said straight before a place issued (a word with a meaning, "not", never)
   for _, r in ipairs(self.refs) do

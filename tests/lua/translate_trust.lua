@@ -4025,3 +4025,15 @@ do
   check_eq(ex("EZY9 cross BRAVO at 7000"), "AT EZY9 BRAVO ALT 7000")
   check(ex("EZY9 cross BRAVO at 240"):match("^ASK") ~= nil, "a bare number under 1000 at a crossing")
 end
+
+-- An airport's own navdata name said elsewhere in the request than beside its code ("one more departure out
+-- of Schiphol: KLM9 ... at EHAM") is accounted for by the code issued; another airport's name is asked about
+do
+  local s, ex = navscene({}, "an airport's name apart from its code")
+  if s then
+    check_eq(ex("one more departure out of Schiphol: KLM9 B738 at EHAM heading 240 altitude 3000 ft speed 200"),
+      "CRE KLM9 B738 EHAM 240 3000 200")
+    check(ex("one more departure out of Eindhoven: KLM9 B738 at EHAM heading 240 altitude 3000 ft speed 200")
+      :match("^ASK") ~= nil, "another airport's name")
+  end
+end
