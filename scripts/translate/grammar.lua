@@ -767,6 +767,8 @@ local function written_forms(text)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
   local sh = lexicon.shorthand
+  -- "zone r 4 nm": ZONER's name typed apart, no right turn
+  text = text:gsub("%f[%a]([Zz][Oo][Nn][Ee])%s+([Rr])%f[%A]", "%1 radius")
   text = turn_letters(text, sh)
   -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7" (only a key that names
   -- a command or a setting: "t=300" in a note stays as typed, as does all of "log: seed=7 baseline")
@@ -1426,18 +1428,30 @@ end
 
 -- ---- conditions: "When AC01 reaches FL200, ..." ----
 -- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
--- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120"): "once" or "when", "it" or
--- the aircraft, a verb of reaching, then a level and words with no value, aircraft or instruction of their
--- own to the end. Returns the position of "once"/"when" and the level's quantity, or nil.
-local REACHING = { passes = true, reaches = true, crosses = true, hits = true }
+-- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120", "250 knots by the time it's
+-- passing FL200", "by the time it gets to FL200"): "once", "when" or "by the time", "it" or the aircraft, a
+-- verb of reaching, then a level and words with no value, aircraft or instruction of their own to the end;
+-- or, after a speed instruction and no level one, "by" and the level alone ("speed 250 by FL200": the speed
+-- held from that level). Returns the position of the condition's first word and the level's quantity, or nil;
+-- "by the time" with no level so read is asked about (self.ask).
+local REACHING = { passes = true, reaches = true, crosses = true, hits = true, passing = true, reaching = true,
+                   crossing = true, through = true }
 function G:trailing_level_condition()
   for k = 2, #self.t do
-    if self:word(k, "once when") then
-      local v = k + 1
-      if self:word(v, "it") or self:has_ref(v, v + 1, "aircraft") then v = v + 1 end
-      if v > k + 1 and REACHING[(self.t[v] or {}).text] then
+    local by_time = self:word(k, "by") and self:word(k + 1, "the") and self:word(k + 2, "time")
+    local by_level = self:word(k, "by") and not by_time
+    if self:word(k, "once when") or by_time or by_level then
+      local v = by_time and k + 3 or k + 1
+      local subject = v
+      if self:word(v, "it it's he's she's") or self:has_ref(v, v + 1, "aircraft") then v = v + 1 end
+      if v > subject and self:word(v, "is 's") then v = v + 1 end
+      if v > subject and self:word(v, "gets") and self:word(v + 1, "to") then v = v + 1 end
+      local reached = v > subject and (REACHING[(self.t[v] or {}).text] or self:word(v - 1, "gets"))
+      if by_level then v = k end
+      if reached or by_level then
         local q = self:quantities(v + 1, #self.t + 1)[1]
-        if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000)) then
+        if q and q.b == self:skip_fillers(v + 1) and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and not by_level)) then
+          if by_level and not self:speed_before_level(k) then return nil end
           for x = q.e, #self.t do
             if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
           end
@@ -1445,7 +1459,12 @@ function G:trailing_level_condition()
           return k, q
         end
       end
-      return nil
+      -- ("250 knots by the time it's level": a moment squawk cannot wait for, asked about)
+      if by_time then
+        self.ask = "By the time of what? squawk can wait for a level (ATALT) or a distance from a place (ATDIST): "
+          .. "please say the level, or give the instruction when it applies."
+      end
+      if not by_level then return nil end
     end
   end
   return nil
@@ -1497,6 +1516,18 @@ function G:passing_level_flown()
       end
     end
   end
+end
+
+-- True when the words before position k give a speed instruction and no level one ("speed 250 by FL200",
+-- not "descend by 2000 feet").
+function G:speed_before_level(k)
+  local spd = false
+  for x = 1, k - 1 do
+    local intent = self:intent_at(x)
+    if intent == "alt" or intent == "vs" then return false end
+    spd = spd or intent == "spd"
+  end
+  return spd
 end
 
 function G:condition()
@@ -2529,7 +2560,10 @@ function G:at_waypoint(s, spec)
         other, said = #said > 0, { level_by }
       end
       for _, q in ipairs(said) do
-        if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)) then alt = q
+        -- ("cross BEBEX at 6000": after a crossing, a bare number in hundreds of feet, 1000 or more, is a level)
+        if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)
+            or (crossed and q.kind == "plain" and q.value >= 1000 and q.value <= 60000 and q.value % 100 == 0)) then
+          alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
             or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))
             -- "at MRG01 FL100 220": a bare number straight after the level is the speed (FL100/220)
@@ -3126,6 +3160,17 @@ function G:explained_spans(issued, kinds)
         if same and self:word(n, "@navaid_kinds @airport_nouns") then
           for x = r.e + 1, n do inside[x] = true end
         end
+      end
+    end
+  end
+  -- "another departure out of Modlin: RYR2AB B738 at EPMO": a capitalised word elsewhere in the request that is
+  -- the navdata's own name of an airport issued by its code
+  local named = self.world.airports_named
+  for k = 1, named and #self.t or 0 do
+    local t = self.t[k]
+    if not inside[k] and t.kind == "word" and t.raw:match("^%u%l+$") and not MEANING[t.text] then
+      for _, code in ipairs(named(t.text)) do
+        if issued[code:lower()] then inside[k] = true end
       end
     end
   end

@@ -1137,12 +1137,12 @@ function m:at_distance(s)
 end
 
 -- True when level quantity q is the one the aircraft leaves, said straight before level b it flies to:
--- "from FL240 to FL250", a readback's "leaving FL260 for FL200", "out of 9000 for 6000" (the words
--- before q are explained).
+-- "from FL240 to FL250", a readback's "leaving FL260 for FL200", "leave FL110 for 9000 feet", "out of 9000
+-- for 6000" (the words before q are explained).
 function m:level_left(q, b)
   if not (b and b.kind == "alt" and b.b == q.e + 1) then return false end
   local left = (self:word(q.b - 1, "from") and self:word(q.e, "to")) and q.b - 1
-    or (self:word(q.b - 1, "@level_left") and self:word(q.e, "for to") and q.b - 1)
+    or (self:word(q.b - 1, "@level_left leave vacate") and self:word(q.e, "for to") and q.b - 1)
     or (self:word(q.b - 1, "of") and self:word(q.b - 2, "out") and self:word(q.e, "for to") and q.b - 2)
   if left then self:explain(left, q.b) end
   return left and true or false

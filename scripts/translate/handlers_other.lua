@@ -2076,6 +2076,19 @@ return function(H, f, compass)
       if as then self:explain(as, s.trig) end
       s = { b = b or s.b, trig = s.trig, e = nb and nb > s.trig and nb or s.e, intent = s.intent }
     end
+    -- ("EDDB, not Dresden", "EDDB instead of EDDC", "EDDB rather than Leipzig": the place said after the
+    -- negation, ending the instruction, is the one replaced, no candidate)
+    for k = s.trig + 1, s.e - 2 do
+      local from = (self:word(k, "not") and k + 1) or (self:word(k, "instead") and self:word(k + 1, "of") and k + 2)
+        or (self:word(k, "rather") and self:word(k + 1, "than") and k + 2)
+      if from and from < s.e and #self:quantities(from, s.e) == 0 and #self:refs_in(from, s.e, "aircraft") == 0
+          and (#self:refs_in(from, s.e, "waypoint") > 0 or self:airport_by_name(from, s.e) ~= nil)
+          and #self:refs_in(s.b, k, "waypoint") + (self:airport_by_name(s.b, k) and 1 or 0) > 0 then
+        self:explain(k, s.e)
+        s = { b = s.b, trig = s.trig, e = k, intent = s.intent }
+        break
+      end
+    end
     local w = self:refs_in(s.b, s.e, "waypoint")
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)

@@ -140,6 +140,8 @@ return {
         "after that", "after this", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
         "do widzenia", "do videnia", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
+        -- help offered with a value given twice ("... -- that's 50.7 / 16.2 in decimal if it helps")
+        "if it helps", "if that helps", "in case it helps", "in case that helps",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me",
         -- urgency, said with a negation ("descend FL150 without delay")
@@ -189,6 +191,13 @@ return {
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
         "experiments",
+        -- an airspace design put to the test ("we're evaluating reduced separation", "the one that tests the
+        -- new branch", "the designer's note", "a quick check before we run"; a verb's plain form, "to test
+        -- ...", is left to G:purpose)
+        "tests", "testing", "tested", "evaluates", "evaluating", "evaluated", "evaluation", "assessing",
+        "assessment", "validating", "validation", "designer", "designers", "designing", "designed", "quick",
+        -- what an aircraft carries or flies for ("a B763 cargo", "a charter out of Katowice")
+        "cargo", "freighter", "freight", "passenger", "passengers", "charter", "airliner",
         -- a human-factors study's instruments and measures ("the eye tracker is calibrated", "fill in the
         -- NASA-TLX", "so the geometry works", "the crossing angle")
         "eye", "tracker", "eye-tracker", "nasa", "tlx", "nasa-tlx", "questionnaire", "workload", "geometry",

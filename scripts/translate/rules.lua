@@ -450,17 +450,19 @@ return function(intent, rule, words)
   rule { "bank", "bank" }
 
   -- waypoints, creation and deletion
+  -- ("it's spawned in the wrong place": the noun, no verb of placing)
+  rule { "place", false, prev = { 1, "wrong right" } }
   rule { "define make put draw", false, near = { 2, "box circle circular polygon poly line" } }  -- the shape's word starts it
   rule { "define defwpt", "defwpt" }
   rule { "def", "defwpt", next = "@waypoint_nouns" }  -- "def wp XIT2 at 51.25N 004.10E" typed short
   -- "put a waypoint called TEST1 at 52.3 north 4.7 east", "waypoint TEST1 at 52.3N 4.7E": a new
   -- waypoint at a position, when no aircraft that flies and no aircraft type is named
-  local function new_fix_at(g, i)
+  local function new_fix_at(g, i, span)
     if g:has_ref(1, #g.t + 1, "type") then return false end
     for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do
       if r.exists then return false end
     end
-    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 8))) do
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + (span or 8)))) do
       if q.kind == "lat" or q.kind == "lon" or (q.kind == "plain" and q.number.decimal) then return true end
     end
     return false
@@ -468,9 +470,14 @@ return function(intent, rule, words)
   rule { "put place create make add", "defwpt", near = { 2, "@waypoint_nouns" }, when = new_fix_at }
   rule { "waypoint wpt waypoints", "defwpt", not_prev = { 3, "put place create make add define" }, when = new_fix_at }
   -- "new fix IAFN1 at 48.50 N 16.20 E", "a reference point called CENTRE at 52.0N, 3.75E", "the target point
-  -- for trial three, call it TGT3, 42.1 N 88.2 W": a fix or point said new, or named, at a position
-  rule { "fix point", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
-    return (g:preceded_by(i, 2, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
+  -- for trial three, call it TGT3, 42.1 N 88.2 W", "place the new southern entry ENTRX at ...": a fix or point
+  -- (an airspace design's gate, entry or exit) said new, or named, at a position
+  rule { "fix point gate entry exit", "defwpt", not_prev = { 3, "put place create make add define" }, when = function(g, i)
+    return (g:preceded_by(i, 3, "new reference target") or g:followed_by(i, 2, "@named")) and new_fix_at(g, i)
+  end }
+  rule { "put place create make add", "defwpt", when = function(g, i)
+    return g:word(i + 1, "the a an") and g:word(i + 2, "new") and g:followed_by(i + 2, 4, "fix point gate entry exit")
+      and new_fix_at(g, i, 11)
   end }
   -- "add a waypoint called ENTRY at 52 N 3.5 E": a new waypoint, when no flying aircraft is named
   rule { "add", "defwpt", near = { 2, "@waypoint_nouns" }, when = function(g, i)
@@ -556,6 +563,11 @@ return function(intent, rule, words)
   end }
   -- ("creating N48TX, PC12, ..."; "set the seed before creating anything" names no creation)
   rule { "creating spawning", false, prev = { 1, "before after without" } }
+  -- "delete WZZ61B, it's spawned in the wrong place", "it was created too close": how an aircraft came to be,
+  -- a reason, no creation
+  rule { "spawn spawned create created generate generated", false, when = function(g, i)
+    return g.t[i].raw:lower():match("ed$") ~= nil and g:word_in(math.max(1, i - 2), i, "it's it was were been is are s")
+  end }
   rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "mcre", next = "up", near = { 4, "random" } }  -- "pop up ten random aircraft"
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."
@@ -685,11 +697,14 @@ return function(intent, rule, words)
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
   -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM", "squeeze MADOT in after BUSIL": the same said with
-  -- "put (in)", "squeeze" or "slot", the two waypoints on either side of "before"/"after" ("in" before it or none)
+  -- "put (in)", "squeeze" or "slot", the two waypoints on either side of "before"/"after" ("in" before it or none);
+  -- "define NEWPT at ..., then slot it in before ERGOM": "it" the waypoint the request defines before
   rule { "put squeeze slot", "addwpt", when = function(g, i)
     local w = g:word(i + 1, "in") and i + 2 or i + 1
     local at = g:word(w + 1, "in") and w + 2 or w + 1
-    return g:has_ref(w, w + 1, "waypoint") and g:word(at, "after before") and g:has_ref(at + 1, at + 2, "waypoint")
+    local defined = g:word(w, "it") and g:word_in(1, i, "define defwpt")
+    return (g:has_ref(w, w + 1, "waypoint") or defined) and g:word(at, "after before")
+      and g:has_ref(at + 1, at + 2, "waypoint")
   end }
   -- True when a latitude is said straight after word i (its degrees and minutes too: "55 30 North"),
   -- an aircraft that flies is named and no type is (no creation)
@@ -926,6 +941,13 @@ return function(intent, rule, words)
     local r = g:refs_in(i + 2, i + 3, "aircraft")[1]
     return r ~= nil and g:alone_but(i, r.e)
   end }
+  -- "give me the route of LOT3KL", "give us KLM12's waypoints": the route given to the speaker, shown
+  rule { "route rte waypoints", "listrte", when = function(g, i)
+    for k = math.max(1, i - 5), i - 1 do
+      if g:word(k, "give") and g:word(k + 1, "me us") then return true end
+    end
+    return false
+  end }
   rule { "listrte", "listrte" }
 
   -- information and repositioning
@@ -1070,9 +1092,10 @@ return function(intent, rule, words)
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
-  rule { "carry", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on"
-  -- "..., then carry on", "..., then go", "ok carry on, run it": a clause of its own after another
-  rule { "carry", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  rule { "carry go", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on", "go on"
+  -- "..., then carry on", "..., then go", "ok carry on, run it", "OK, go on, and run at 2x": a clause of its own
+  rule { "carry go", "op", next = "on", when = function(g, i) return g:clause_alone(i, i + 2) end }
+  rule { "keep", "op", next = "going", when = function(g, i) return g:alone_but(i, i + 2) or g:clause_alone(i, i + 2) end }
   rule { "run", "op", next = "it", when = function(g, i) return g:clause_alone(i, i + 2) end }
   -- "run it and fast forward 3 minutes", "run the sim and ff 60 s": the clock started, then moved on
   rule { "run", "op", when = function(g, i)
@@ -1223,6 +1246,11 @@ return function(intent, rule, words)
   rule { "print", "echo" }
   -- "note to self: ...", "note for me: ...": the experimenter's own note, no text for the log
   rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }
+  -- "designer's note, no action: ...": a note said to need no action is the speaker's own, no text for the log
+  rule { "note", false, when = function(g, i)
+    local k = (g.t[i + 1] or {}).kind == "punct" and i + 2 or i + 1
+    return g:word(k, "no") and g:word(k + 1, "action")
+  end }
   -- "put a note in the log: conflict 3 injected", "log: run 2 started", "write a message for the participant:
   -- Block 1 finished": the text after the colon
   rule { "note comment log message", "echo", when = function(g, i)

@@ -4082,3 +4082,100 @@ do
   -- (with no level cleared before it, the level after "until" is the one to fly)
   check(ex("KLM12 rate of descent 2000 feet per minute until FL260"):find("FL260", 1, true) ~= nil, "the level to fly")
 end
+-- A speed to hold "by the time" a level is passed, said after it ("should be at 230 knots by the time it
+-- reaches FL150", "speed 240 by FL120"): the speed waits for the level (ATALT), no level clearance; a moment
+-- that is no level ("by the time it's established") is asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("KLM12 should be doing 230 knots by the time it's through FL150"), "ATALT KLM12 FL150 SPD KLM12 230")
+  check_eq(ex("KLM12 reduce to 230 kt by the time it reaches FL150"), "ATALT KLM12 FL150 SPD KLM12 230")
+  check_eq(ex("KLM12 reduce to 230 kt by the time it gets to FL150"), "ATALT KLM12 FL150 SPD KLM12 230")
+  check_eq(ex("KLM12 speed 240 by FL120"), "ATALT KLM12 FL120 SPD KLM12 240")
+  check_eq(ex("KLM12 descend by 3000 feet"), "ALT KLM12 27000")
+  check(ex("KLM12 230 knots by the time it's established"):match("^ASK") ~= nil, "no level to wait for")
+end
+
+-- The clock started by "go on" or "keep going" said as a clause of its own ("fine, go on, and run at 3x")
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("fine, go on, and run at 3x"), "OP ; DTMULT 3")
+  check_eq(ex("alright, keep going, then fast forward 2 minutes"), "OP ; FF 120")
+  check_eq(ex("go on"), "OP")
+  check_eq(ex("KLM12 go on heading 120"), "HDG KLM12 120")
+end
+
+-- An airspace designer's words for putting a design to the test ("we're evaluating reduced separation", "a
+-- freighter", "a quick look"): no instruction of their own; a note said to need no action is the speaker's
+-- own, no text for the log, and what it names is still accounted for or asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
+  check_eq(ex("We're evaluating closer spacing, so set the horizontal separation radius to 4 miles"), "ZONER 4")
+  check_eq(ex("Quick check before we start: what's on KLM12's route?"), "LISTRTE KLM12")
+  check_eq(ex("create a B744 freighter, CLX7, at 52.1 4.3, heading 180, FL240, 260 knots"),
+    "CRE CLX7 B744 52.1 4.3 180 FL240 260")
+  check_eq(ex("designer's note, no action: KLM12 is the slow one. KLM12 climb FL320"), "ALT KLM12 FL320")
+  check(ex("note, no action: KLM12 flies the ZZZZZ branch. KLM12 climb FL320"):match("^ASK") ~= nil,
+    "a name in the note is asked about")
+end
+
+-- An airspace design's new points: a gate, entry or exit said new at a position is a waypoint defined
+-- ("place the new arrival gate GATEN at ..."), and "it" after such a definition is the new waypoint
+-- ("define NEWPT at ..., then slot it in before BRAVO"); a point with no name is asked about
+do
+  local _, ex = scene({ "DEFWPT BRAVO 52.4 4.9", "CRE EZY9 A320 52.5 4.5 180 FL300 260", "ADDWPT EZY9 BRAVO" })
+  check_eq(ex("place the new arrival gate GATEN at 52.9 4.8"), "DEFWPT GATEN 52.9 4.8")
+  check_eq(ex("create a new exit EXITW at 52.1 3.5"), "DEFWPT EXITW 52.1 3.5")
+  check_eq(ex("define NEWPT at 52.45 4.7, then slot it in before BRAVO on EZY9"),
+    "DEFWPT NEWPT 52.45 4.7 ; ADDWPT EZY9 NEWPT,,,,BRAVO")
+  check_eq(ex("define NEWPT 52.45 4.7 and put it after BRAVO on EZY9"), "DEFWPT NEWPT 52.45 4.7 ; ADDWPT EZY9 NEWPT,,,BRAVO")
+  check(ex("place the new gate at 52.9 4.8"):match("^ASK") ~= nil, "a gate with no name")
+  check(ex("put it after BRAVO on EZY9"):match("^ASK") ~= nil, "'it' with nothing defined")
+end
+
+-- Small set-up phrasings of a test conductor: the route "given" to the speaker is shown; a level left
+-- with the one it is cleared to ("leave FL140 for 8000 feet"); how an aircraft came to be, said as the
+-- reason for deleting it, is no creation, nor "place" a noun a move; ZONER's name typed apart ("zone r")
+do
+  local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL140 280", "CRE EZY9 A320 52.5 4.5 180 FL300 260" })
+  check_eq(ex("give me the route of KLM12"), "LISTRTE KLM12")
+  check_eq(ex("KLM12 leave FL140 for 8000 feet"), "ALT KLM12 8000")
+  check(ex("KLM12 leave FL140"):match("^ASK") ~= nil, "a level left with none to go to")
+  check_eq(ex("remove EZY9, it was generated at the wrong level"), "DEL EZY9")
+  check_eq(ex("delete KLM12, it's sitting in the wrong place"), "DEL KLM12")
+  check_eq(ex("zone r 6 nm and zone dh 1200 ft"), "ZONER 6 ; ZONEDH 1200")
+  check_eq(ex("KLM12 r 30"), "HDG KLM12 120 RIGHT")
+end
+
+-- An airport setting said with the one it replaces after "not", "instead of" or "rather than" ("origin
+-- EDDM, not EDDF"): the first is set, the replaced one no candidate; said with no other airport, asked
+-- about; and a value said apologetically twice ("... in decimal, if it helps") is courtesy
+do
+  local _, ex = navscene({ "CRE DLH4 A320 50.5 9.0 090 FL200 250", "ORIG DLH4 EDDF" }, "airports replaced")
+  if ex then
+    check_eq(ex("DLH4's origin should be EDDM, not EDDF"), "ORIG DLH4 EDDM")
+    check_eq(ex("DLH4 destination EDDH rather than EDDL"), "DEST DLH4 EDDH")
+    check(ex("DLH4's origin should not be EDDF"):match("^ASK") ~= nil, "only the replaced airport")
+  end
+  local _, ex2 = scene({})
+  check_eq(ex2("new fix GAMMA at 52 30.0 N 4 15.0 E, that's 52.5 4.25 in decimal if that helps"), "DEFWPT GAMMA 52.5 4.25")
+end
+
+-- A crossing restriction with a bare number in hundreds of feet ("cross BRAVO at 7000"), BRAVO on the
+-- route, is its level (`AT ... ALT`); a bare number under 1000 ("cross BRAVO at 240") is still asked about
+do
+  local _, ex = scene({ "DEFWPT BRAVO 52.4 4.9", "CRE EZY9 A320 52.5 4.5 180 FL100 260", "ADDWPT EZY9 BRAVO" })
+  check_eq(ex("EZY9 cross BRAVO at 7000"), "AT EZY9 BRAVO ALT 7000")
+  check(ex("EZY9 cross BRAVO at 240"):match("^ASK") ~= nil, "a bare number under 1000 at a crossing")
+end
+
+-- An airport's own navdata name said elsewhere in the request than beside its code ("one more departure out
+-- of Schiphol: KLM9 ... at EHAM") is accounted for by the code issued; another airport's name is asked about
+do
+  local s, ex = navscene({}, "an airport's name apart from its code")
+  if s then
+    check_eq(ex("one more departure out of Schiphol: KLM9 B738 at EHAM heading 240 altitude 3000 ft speed 200"),
+      "CRE KLM9 B738 EHAM 240 3000 200")
+    check(ex("one more departure out of Eindhoven: KLM9 B738 at EHAM heading 240 altitude 3000 ft speed 200")
+      :match("^ASK") ~= nil, "another airport's name")
+  end
+end
