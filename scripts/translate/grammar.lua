@@ -2286,8 +2286,13 @@ function G:when_reached(s)
   end
   if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
-  return self:word_in(c + 1, s.trig, "there level lvl")
-    or (self:word(verb, "reaching") and self:skip_fillers(verb + 1) == s.trig)
+  if self:word_in(c + 1, s.trig, "there level lvl") then return true end
+  -- ("when reaching", "when you reach it", "once it reaches that": the level of the instruction before)
+  if self:word(verb, "you it he she they") then verb = self:skip_fillers(verb + 1) end
+  if not self:word(verb, "reaching reach reaches") then return false end
+  local k = self:skip_fillers(verb + 1)
+  if self:word(k, "it that") then k = self:skip_fillers(k + 1) end
+  return k == s.trig
 end
 
 -- The same condition said after the instruction it holds, closing its segment ("reduce 180 kts when

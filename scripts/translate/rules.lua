@@ -187,6 +187,11 @@ return function(intent, rule, words)
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
   rule { "descending climbing descent", false, prev = { 2, "fpm minute min" } }
+  -- "vertical speed 1500 descending", "vs 1500 descent": the word after a vertical speed's number gives its sign
+  rule { "descending climbing descent", false, when = function(g, i)
+    return g.t[i - 1] ~= nil and g.t[i - 1].kind == "number"
+      and (g:word(i - 2, "vs") or (g:word(i - 2, "speed") and g:word(i - 3, "vertical")))
+  end }
   -- "stop the Iberia's descent, vertical speed zero", "stop the climb, level off, VS zero": the climb or
   -- descent stopped by the vertical speed said, no level
   rule { "climb climbing descend descending descent level", false, prev = { 3, "stop halt" },

@@ -4179,3 +4179,23 @@ do
       :match("^ASK") ~= nil, "another airport's name")
   end
 end
+
+-- A direction word straight after a vertical speed's number gives its sign ("vertical speed 1500 descending",
+-- "vs 1500 descent"); a climbing word keeps it positive
+do
+  local _, ex = scene({ "CRE LAN77 A320 -33 -70.8 090 FL150 250" })
+  check_eq(ex("LAN77 vertical speed 1500 descending"), "VS LAN77 -1500")
+  check_eq(ex("LAN77 vs 2000 descent"), "VS LAN77 -2000")
+  check_eq(ex("LAN77 vertical speed 1200 climbing"), "VS LAN77 1200")
+  check_eq(ex("LAN77 vertical speed 1500 descending to FL100"), "VS LAN77 -1500 ; ALT LAN77 FL100")
+end
+
+-- "when you reach (it)", "once it reaches that" opening the clause after a level cleared wait for that level,
+-- as "when reaching" does
+do
+  local _, ex = scene({ "CRE LAN78 A320 -33 -70.8 090 FL150 250" })
+  check_eq(ex("LAN78 descend FL100 and when you reach it reduce 220"), "ALT LAN78 FL100 ; ATALT LAN78 FL100 SPD LAN78 220")
+  check_eq(ex("LAN78 climb FL190, once it reaches that, turn left heading 200"),
+    "ALT LAN78 FL190 ; ATALT LAN78 FL190 HDG LAN78 200 LEFT")
+  check_eq(ex("LAN78 descend FL100, when reaching reduce 220"), "ALT LAN78 FL100 ; ATALT LAN78 FL100 SPD LAN78 220")
+end
