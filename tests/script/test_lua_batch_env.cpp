@@ -453,6 +453,14 @@ static rl::ImitationConfig sign2_imitation(size_t held) {
   ic.held_tail = held;
   return ic;
 }
+// What rl::imitate answers when it refuses `config` for a small Gaussian student (nothing is
+// fitted).
+static std::string imitation_refused(rl::Policy& teacher, env::BatchEnv& envs,
+                                     const rl::ImitationConfig& config) {
+  auto p = small_gaussian(1);
+  REQUIRE(p);
+  return rl::imitate(**p, teacher, envs, config, {}).message();
+}
 
 // sign2_half.lua: half the first sign and the second component always at 10,
 // the top of [0, 10]. The teacher's label carries both components (each on
@@ -491,11 +499,9 @@ TEST_CASE("imitation of a two-component rule: every component labelled, log sigm
       CHECK(log_std_after[1] < log_std_before[1] - 1.0);  // the constant component's sigma shrinks
     }
   }
-  auto p = small_gaussian(1);
-  REQUIRE(p);
   rl::ImitationConfig too_many;
   too_many.held_tail = 1000;
-  CHECK(rl::imitate(**p, **teacher, *envs, too_many, {}).message() ==
+  CHECK(imitation_refused(**teacher, *envs, too_many) ==
         "imitation: held_tail 1000 exceeds the student's 24 parameters");
 }
 
@@ -531,11 +537,9 @@ TEST_CASE("imitation with saturated_label: a label at the box edge is fitted pas
       CHECK(means[r].component(1) == doctest::Approx(saturated).epsilon(0.05));
     }
   }
-  auto p = small_gaussian(1);
-  REQUIRE(p);
   rl::ImitationConfig below;
   below.saturated_label = 0.9f;
-  CHECK(rl::imitate(**p, **teacher, *envs, below, {}).message() ==
+  CHECK(imitation_refused(**teacher, *envs, below) ==
         "imitation: saturated_label 0.900000 (expected >= 1, and 1 for a discrete head)");
 }
 
