@@ -339,6 +339,13 @@ return {
     { "airlink", "LNK" },
     { "link", "LNK" },  -- (Airlink's ICAO telephony)
     { "aerolineas", "ARG" },
+    -- airlines of South America: ICAO telephony ("Bondi 5120": Flybondi; "Rocksmart 252": JetSMART), and the
+    -- airline's own name where controllers and instructors there say it ("LATAM 3402", "JetSMART 252")
+    { "bondi", "FBZ" },
+    { "rocksmart", "JAT" },
+    { "latam", "TAM" },  -- (a brand, below)
+    { "flybondi", "FBZ" },
+    { "jetsmart", "JAT" },  -- (a brand, below)
   },
   common = {
     { "ba", "BAW" },
@@ -370,6 +377,7 @@ return {
     { "smartwings", "TVS" },
     { "pegasus", "PGT" },
     { "netjets", "NJE" },  -- (a brand: NetJets Europe, NJE, and NetJets Aviation, EJA)
+    { "sky", "SKU" },  -- (Sky Airline, Chile: "the Sky"; a brand, below)
   },
   brands = {
     { "transavia", "TRA", "TVF" },
@@ -387,6 +395,9 @@ return {
     { "ba", "BAW", "SHT", "CFE", "EFW" },
     { "virgin", "VIR", "VOZ", shared = true },
     { "netjets", "EJA", "NJE" },  -- (NetJets Aviation, telephony Execjet; NetJets Europe, Fraction)
+    { "latam", "TAM", "LAN", "LPE", "LNE", "DSM" },  -- (LATAM Brasil, Chile, Peru, Ecuador, Argentina)
+    { "jetsmart", "JAT", "JES", "JZR" },  -- (JetSMART, JetSMART Argentina, JetSMART Peru)
+    { "sky", "SKU", "SKX" },  -- (Sky Airline, Sky Airline Peru)
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",
