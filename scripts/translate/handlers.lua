@@ -506,6 +506,32 @@ function m:airline_refs()
     return r.kind == "waypoint" and not r.exists and r.e == r.b + 1 and self.t[r.b].raw:match("^%u%u%u$")
       and not self:word(r.e, "@navaid_kinds")
   end
+  -- ("the LATAM", "to avoid the LATAM": the navdata's fix LATAM, in France) a place named by an airline's
+  -- name, one word, that no aircraft flying has in its route and that lies beyond lexicon.navaid_range_nm
+  -- of every aircraft flying, is the airline: its ref is dropped
+  local function airline_not_place(r)
+    if r.kind ~= "waypoint" or r.e ~= r.b + 1 or not airline_names()[self.t[r.b].text]
+        or self:word(r.e, "@navaid_kinds") or not self.world.user_waypoint_at then
+      return false
+    end
+    local lat, lon = self.world.user_waypoint_at(r.name)
+    if not lat then return false end
+    local any = false
+    for _, a in ipairs(self.fleet) do
+      for _, w in ipairs(a.route or {}) do
+        if w:upper() == r.name:upper() then return false end
+      end
+      if a.lat then
+        local dlat, dlon = a.lat - lat, (a.lon - lon) * math.cos(math.rad(lat))
+        if 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm then return false end
+        any = true
+      end
+    end
+    return any
+  end
+  for k = #self.refs, 1, -1 do
+    if airline_not_place(self.refs[k]) then table.remove(self.refs, k) end
+  end
   -- "the SAS one, could it ...", "descend the SAS one to FL80": "one" after "the" and an airline, no digit,
   -- number word or spelled letter after it, is the pronoun (the airline's aircraft), no flight number; the
   -- callsign the matcher heard in it is no reference
@@ -1148,6 +1174,30 @@ function m:level_left(q, b)
   return left and true or false
 end
 
+-- True when value q, said before token `trig`, stands in a sentence that ends (".", "!", ":") before
+-- `trig`: "students see: both at FL150 opposite direction. LATAM 3090 turn right 30 degrees" gives no
+-- instruction the level. A level after "at" in such a sentence with no aircraft and no instruction word
+-- ("both at FL150", "they are at FL150") describes the traffic: it is taken and its sentence explained;
+-- any other value there is left for the leftover check to ask about.
+function m:sentence_before(q, trig)
+  local function ends(k)
+    local t = self.t[k]
+    return t ~= nil and t.kind == "punct" and (t.text == "." or t.text == "!" or t.text == ":")
+  end
+  local stop = q.e
+  while stop < trig and not ends(stop) do stop = stop + 1 end
+  if stop >= trig then return false end
+  local start = q.b
+  while start > 1 and not ends(start - 1) do start = start - 1 end
+  local described = q.kind == "alt" and self:word(q.b - 1, "at") and not self:has_ref(start, stop, "aircraft")
+  for k = start, stop - 1 do described = described and not self:intent_at(k) end
+  if described then
+    self:take(q)
+    self:explain(start, stop + 1)
+  end
+  return true
+end
+
 -- "AC02: heading 180, FL200, 250 kts", "dct NORKU FL200": values with
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
@@ -1169,7 +1219,7 @@ function m:leftovers(s)
     -- in spoken order: one said before the instruction word goes before its command
     local emit = q.b < s.trig and function(line) table.insert(self.out, #self.out, line) end
       or function(line) self:emit(line) end
-    if not self.taken[q.b] and (q.b > s.trig or (unit and s.trig > s.b)) then
+    if not self.taken[q.b] and (q.b > s.trig or (unit and s.trig > s.b and not self:sentence_before(q, s.trig))) then
       if q.kind == "alt" and not alt_done and (q.fl or self:word(q.e - 1, "@feet")) then
         -- "FL300 at 2000 fpm": the rate said with the level is the climb's or descent's (ALT's vspd)
         local rate = self:quantities(q.e, math.min(#self.t + 1, q.e + 4))[1]
