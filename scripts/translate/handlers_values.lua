@@ -286,6 +286,12 @@ return function(H, f, wrap, compass)
       local cur = now.alt_ft or 0
       if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then
         relative = true
+        -- ("both climb 1000 feet", "all of them up 500 ft": the step read from one aircraft's level, no "by"
+        -- said, is asked for several: each by that much, or all to one level?)
+        if #ids > 1 then
+          return self:need(string.format("Should %s each climb by %s ft? I heard '%s' with no 'by'.",
+            table.concat(ids, " and "), f.int(ft), self:raw(q.b, q.e)))
+        end
       end
     end
     -- "descend 3000 ft" typed right after the verb, from higher up: to or by? Both read as
@@ -571,13 +577,12 @@ return function(H, f, wrap, compass)
     end
     -- the way to turn, when it was said: HDG's LEFT/RIGHT (a squawk extension)
     local way = (rel and rel.turn ~= 0 and rel.turn) or turn
-    -- "turn right 180", "r 360", "l 200" with no "heading" (typed, or a number not said digit
-    -- by digit): a heading the long way round (more than half a circle) or a turn of that many
-    -- degrees (a "360" an orbit)? Asked. So is a heading straight behind ("turn right 270" from 090: a
-    -- reversal onto 270, or a turn of 270 degrees?) unless both readings are one heading. The short
-    -- way round it is the heading
+    -- "turn right 180", "r 360", "l 200", "turn right 190" with no "heading" (typed, or a number not said
+    -- digit by digit): a heading or a turn of that many degrees (a "360" an orbit)? Both are said, and
+    -- the two land on different headings: asked, the long way round and straight behind named. A number
+    -- typed with a leading zero ("turn left 090") is a heading: no turn's degrees are written so
     if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and now and #ids == 1
-        and (abs.number.typed or not abs.number.lead_digit)
+        and (abs.number.typed or not abs.number.lead_digit) and not abs.number.digits:find("^0")
         and not self:word_in(s.b, s.e, "heading hdg") and abs.value <= 360 then
       local long = (way * (hdg - now.hdg_deg)) % 360
       local side = way < 0 and "left" or "right"
@@ -587,6 +592,9 @@ return function(H, f, wrap, compass)
       elseif long == 180 and abs.value ~= 180 then
         return self:need(string.format("Should %s turn %s by %s degrees, or turn %s onto heading %s, straight behind?",
           id, side, f.num(abs.value), side, f.num(wrap(hdg))))
+      elseif wrap(now.hdg_deg + way * abs.value) ~= wrap(hdg) then
+        return self:need(string.format("Should %s turn %s by %s degrees, or fly heading %s?", id, side,
+          f.num(abs.value), f.num(wrap(hdg))))
       end
     end
     local suffix = way < 0 and " LEFT" or way > 0 and " RIGHT" or ""
