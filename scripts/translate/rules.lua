@@ -1307,9 +1307,10 @@ return function(intent, rule, words)
   end }
 
   -- conflict detection and resolution
-  -- "the look-ahead time for conflict detection", "the radius for resolution": the setting's owner
+  -- "the look-ahead time for conflict detection", "the radius for resolution", "look ahead time 5 minutes
+  -- for the detection": the setting's owner (the setting named within the ten words before)
   rule { "detection resolution", false, prev = { 3, "for of" }, when = function(g, i)
-    return g:word_in(math.max(1, i - 6), i, "look lookahead dtlook zone radius separation")
+    return g:word_in(math.max(1, i - 10), i, "look lookahead dtlook zone radius separation")
   end }
   -- "conflict detection look ahead five minutes": detection names the look-ahead's owner, no switch (one is
   -- said with an on or off word: "detection on, look ahead 5 minutes")
