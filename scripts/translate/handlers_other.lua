@@ -449,6 +449,11 @@ return function(H, f, compass)
     self.created = self.created or {}
     self.created[id] = true
     self.created_values = { alt = alt, fl = fl, spd = spd, mach = mach }
+    -- (where it is created: the place its destination is looked for from)
+    local clat, clon = lat, lon
+    if named_at and self.world.user_waypoint_at then clat, clon = self.world.user_waypoint_at(named_at) end
+    self.created_at = self.created_at or {}
+    self.created_at[id] = clat and clon and { lat = clat, lon = clon } or nil
   end
 
   -- CRECONFS acid,type,targetid,dpsi,cpa,tlosh,[dh,tlosv]: an intruder of a new callsign and a type,
@@ -1130,6 +1135,71 @@ return function(H, f, compass)
     local id = city and self:airport_named_in(b, e, city_airports, false, true) or nil
     if id or not meant or not beside then return id end
     return self:airport_named_in(b, e, within(beside), false, true)
+  end
+
+  -- A city said where an airport is meant (a destination, an origin) that names no airport near the aircraft
+  -- `near` {lat, lon} [deg]: the large and medium airports anywhere that bear the name of one to three
+  -- capitalised words in [b, e) (sim:airports_named, airports_of_city) or lie beside navaids of that name
+  -- (sim:airports_beside_navaids: SACO "AMBROSIO L V TARAVELLA" beside the CORDOBA VOR) are its candidates.
+  -- Returns the nearest and true when it is the region's (lexicon.region_nm, region_ratio: "Cordoba" from
+  -- Buenos Aires is SACO, 350 NM, not LEBA "CORDOBA" in Spain), the one candidate and false when it lies
+  -- farther (the caller confirms it), nil when none; several of the region, or several none of them the
+  -- region's, are asked about. The name is explained with an airport returned.
+  function m:airport_of_region(b, e, near)
+    local w = self.world
+    local at, class = w.user_waypoint_at, w.airport_class
+    if not (near and near.lat and at and class and w.airports_named and w.airports_beside_navaids) then return nil end
+    local function candidates(phrase)
+      local out, seen = {}, {}
+      for _, list in ipairs({ w.airports_named, w.airports_of_city, w.airports_beside_navaids }) do
+        for _, id in ipairs(list and list(phrase) or {}) do
+          local c = class(id)
+          if not seen[id] and (c == "LARGE" or c == "MEDIUM") then
+            local lat, lon = at(id)
+            if lat then
+              local dlat, dlon = lat - near.lat, (lon - near.lon) * math.cos(math.rad(near.lat))
+              out[#out + 1] = { id = id, nm = 60 * math.sqrt(dlat * dlat + dlon * dlon) }
+            end
+            seen[id] = true
+          end
+        end
+      end
+      table.sort(out, function(x, y) return x.nm < y.nm end)
+      return out
+    end
+    local function word(k)
+      local t = self.t[k]
+      return k < e and t ~= nil and t.kind == "word" and t.alpha and t.raw:match("^%u") ~= nil and not self.u:used(k)
+        and not t.keyword and not t.filler and not t.number_word and not L.phonetic[t.text]
+    end
+    for i = b, math.min(e, #self.t + 1) - 1 do
+      for n = 3, 1, -1 do
+        local ok, words = true, {}
+        for k = i, i + n - 1 do
+          ok = ok and word(k)
+          words[#words + 1] = ok and self.t[k].text or nil
+        end
+        local found = ok and #self.t[i].text >= 4 and candidates(table.concat(words, " ")) or {}
+        if #found > 0 then
+          self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
+          local first, second = found[1], found[2]
+          local region = first.nm <= L.region_nm
+          if second and (not region or second.nm < L.region_ratio * first.nm) then
+            -- (several airports of the region bear the name or lie by its navaids: "Porto Alegre" is SBPA
+            -- or SBCO; several far away, none the region's: "London" from Argentina, KLOZ or CYXU or ...;
+            -- asked, nearest first)
+            local ids = {}
+            for _, c in ipairs(found) do
+              if (not region or c.nm < L.region_ratio * first.nm) and #ids < 4 then ids[#ids + 1] = c.id end
+            end
+            self:need(string.format("Which airport is '%s': %s?", self:raw(i, i + n), table.concat(ids, " or ")))
+            return first.id, true
+          end
+          return first.id, region
+        end
+      end
+    end
+    return nil
   end
 
   -- An airport said as its city and a distinctive part of its navdata name ("Toronto Pearson" -> CYYZ
@@ -2092,12 +2162,19 @@ return function(H, f, compass)
     local w = self:refs_in(s.b, s.e, "waypoint")
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
-    local a = self:state(id)
+    local a = self:state(id) or (self.created_at or {})[id:upper()]
     -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant; one typed in lower
     -- case straight after the word, "orig eddf, dest eham", is that airport)
     local spelled = spelled_airport(self, s) or typed_airport(self, s)
     local near = spelled or (a and self:airport_of_city_said(s.b, s.e, a)) or (a and self:airport_by_name(s.b, s.e, a, true))
-    local airport = near or self:airport_by_name(s.b, s.e)
+    -- (a city whose airport lies farther: the region's, else the nearest of its name, confirmed below)
+    local airport = near
+    if not airport and a and #w == 0 then
+      local regional
+      airport, regional = self:airport_of_region(s.b, s.e, a)
+      if regional then near = airport end
+    end
+    airport = airport or self:airport_by_name(s.b, s.e)
     -- (a part of a name only near the aircraft: "Madrid" anywhere is SKMA, in Colombia)
     if not airport and #w == 0 and a then
       near = self:airport_by_words(s.b, s.e, a)

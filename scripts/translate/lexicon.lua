@@ -499,6 +499,12 @@ return {
   -- an airport this near a navaid named after a city [NM] is one of that city's ("Montreal": CYUL, 4 NM from the
   -- MONTREAL NDB; NavDb::kBesideNavaidNm)
   beside_navaid_nm = 10,
+  -- a city said as a destination or origin and found by no airport near the aircraft is its region's when its
+  -- nearest airport lies within region_nm [NM] of the aircraft and every other airport of that name
+  -- region_ratio times as far or farther ("destination Cordoba" from Buenos Aires: SACO 350 NM, not LEBA,
+  -- Spain, 5400 NM)
+  region_nm = 1000,
+  region_ratio = 4,
   -- the airports named after a city whose surroundings (city_nm) hold the city's other airports, at most
   -- ("Montreal Trudeau": CYUL beside CYMX "MONTREAL INTL MIRABEL")
   city_anchors = 6,
