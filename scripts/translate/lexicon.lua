@@ -82,6 +82,10 @@ return {
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
+        -- the same markers in Spanish and Portuguese, said in English by their speakers ("vamos, LATAM 3402 ...",
+        -- "bueno, ...", "entonces ...", "bom, ...", "olha: ...")
+        "vamos", "bueno", "entonces", "listo", "dale", "vale", "mira", "ojo", "bom", "entao", "então", "olha",
+        "pronto", "beleza",
         -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
         "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger" },
     -- courtesy and framing of a request
@@ -98,7 +102,10 @@ return {
         -- the study a run belongs to, told as its story ("it departed there in our story", "for my study")
         "story", "study", "storyline", "narrative" },
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
-    audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody" },
+    audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
+        -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
+        "chicos", "chicas", "muchachos", "alumnos", "estudiantes", "amigos", "pessoal", "galera", "gente", "alunos",
+        "turma" },
     -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
         "thx", "pls", "haha", "idk",
