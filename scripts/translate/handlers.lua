@@ -582,7 +582,11 @@ function m:airline_refs()
       local the = prev and prev.kind == "word" and prev.text == "the"
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
             or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
-      local ok = not inside[i] and not inside[e - 1] and (the or self:addressed_alone(i, e) or self:asked_where(i, e))
+      -- ("insert PTA after DORVO for Flybondi": the airline capitalised after "for", ending its clause, is the
+      -- aircraft the instruction is for)
+      local for_it = self:word(i - 1, "for") and self.t[i].raw:match("^%u") ~= nil and (not nxt or nxt.kind == "punct")
+      local ok = not inside[i] and not inside[e - 1]
+          and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e))
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
             or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
           and not self:new_aircraft_follows(e - 1)
