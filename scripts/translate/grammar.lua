@@ -766,6 +766,8 @@ local function written_forms(text)
   text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
+  -- "un-pause", "un-freeze": the prefix "un-" written with a hyphen is the one word ("unpause")
+  text = text:gsub("%f[%a]([Uu][Nn])%-(%a)", "%1%2")
   local sh = lexicon.shorthand
   -- "zone r 4 nm": ZONER's name typed apart, no right turn
   text = text:gsub("%f[%a]([Zz][Oo][Nn][Ee])%s+([Rr])%f[%A]", "%1 radius")

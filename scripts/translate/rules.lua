@@ -183,6 +183,9 @@ return function(intent, rule, words)
       and #g:quantities(1, #g.t + 1) == 0
   end }
 
+  -- "put the sim 3 times faster, the climb takes too long", "the turn was too late": the instruction word after
+  -- "the", the subject of a verb of description, is a noun
+  rule { "climb descent turn", false, prev = { 1, "the" }, next = "takes took is was seems looks" }
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign
@@ -374,6 +377,18 @@ return function(intent, rule, words)
   rule { "speed", "dtmult", when = function(g, i)
     return g:followed_by(i, 5, "times x") and g:followed_by(i, 7, "real normal")
       and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  -- "speed the simulation to x5", "speed the sim up to x3": a multiplier typed with its x after the simulation
+  -- ("x5" reads like a callsign no aircraft has: no aircraft named elsewhere)
+  rule { "speed", "dtmult", near = { 3, "@sim" }, when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 6) do
+      local t = g.t[k]
+      if t.kind == "word" and t.text:match("^x%d+$") then
+        return not g:has_ref(1, k, "aircraft") and not g:has_ref(k + 1, #g.t + 1, "aircraft")
+          and not (g:refs_in(k, k + 1, "aircraft")[1] or {}).exists
+      end
+    end
+    return false
   end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
@@ -1202,6 +1217,11 @@ return function(intent, rule, words)
   rule { "ff fastforward fwd", "ff" }
   rule { "skip", "ff", next = "ahead forward" }
   rule { "jump", "ff", near = { 3, "ahead forward" } }  -- "jump forward five minutes", "jump us forward"
+  -- "go forward 90 seconds", "go forward 2 minutes": a time straight after "forward", no aircraft named
+  rule { "go", "ff", next = "forward", when = function(g, i)
+    local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and q.b == g:skip_fillers(i + 2) and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "skip", "ff", near = { 4, "ahead forward" } }  -- "skip one hour forward"
   -- "skip 5 minutes": a time straight after it, no waypoint or aircraft named
   rule { "skip", "ff", when = function(g, i)
