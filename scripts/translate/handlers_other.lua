@@ -1138,7 +1138,8 @@ return function(H, f, compass)
   end
 
   -- A city said where an airport is meant (a destination, an origin) that names no airport near the aircraft
-  -- `near` {lat, lon} [deg]: the large and medium airports anywhere that bear the name of one to three
+  -- `near` {lat, lon} [deg] (nil: no traffic to be near; one candidate is the airport): the large and medium
+  -- airports anywhere that bear the name of one to three
   -- capitalised words in [b, e) (sim:airports_named, airports_of_city) or lie beside navaids of that name
   -- (sim:airports_beside_navaids: SACO "AMBROSIO L V TARAVELLA" beside the CORDOBA VOR) are its candidates.
   -- Returns the nearest and true when it is the region's (lexicon.region_nm, region_ratio: "Cordoba" from
@@ -1148,7 +1149,7 @@ return function(H, f, compass)
   function m:airport_of_region(b, e, near)
     local w = self.world
     local at, class = w.user_waypoint_at, w.airport_class
-    if not (near and near.lat and at and class and w.airports_named and w.airports_beside_navaids) then return nil end
+    if not (at and class and w.airports_named and w.airports_beside_navaids) or (near and not near.lat) then return nil end
     local function candidates(phrase)
       local out, seen = {}, {}
       for _, list in ipairs({ w.airports_named, w.airports_of_city, w.airports_beside_navaids }) do
@@ -1156,9 +1157,11 @@ return function(H, f, compass)
           local c = class(id)
           if not seen[id] and (c == "LARGE" or c == "MEDIUM") then
             local lat, lon = at(id)
-            if lat then
+            if lat and near then
               local dlat, dlon = lat - near.lat, (lon - near.lon) * math.cos(math.rad(near.lat))
               out[#out + 1] = { id = id, nm = 60 * math.sqrt(dlat * dlat + dlon * dlon) }
+            elseif lat then
+              out[#out + 1] = { id = id, nm = 0 }
             end
             seen[id] = true
           end
@@ -1184,13 +1187,13 @@ return function(H, f, compass)
           self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
           local first, second = found[1], found[2]
           local region = first.nm <= L.region_nm
-          if second and (not region or second.nm < L.region_ratio * first.nm) then
+          if second and (not region or not near or second.nm < L.region_ratio * first.nm) then
             -- (several airports of the region bear the name or lie by its navaids: "Porto Alegre" is SBPA
             -- or SBCO; several far away, none the region's: "London" from Argentina, KLOZ or CYXU or ...;
             -- asked, nearest first)
             local ids = {}
             for _, c in ipairs(found) do
-              if (not region or c.nm < L.region_ratio * first.nm) and #ids < 4 then ids[#ids + 1] = c.id end
+              if (not region or not near or c.nm < L.region_ratio * first.nm) and #ids < 4 then ids[#ids + 1] = c.id end
             end
             self:need(string.format("Which airport is '%s': %s?", self:raw(i, i + n), table.concat(ids, " or ")))
             return first.id, true
@@ -2318,8 +2321,18 @@ return function(H, f, compass)
     end
     local no_aircraft = #self:refs_in(s.b, s.e, "aircraft") == 0
     if no_aircraft and #places > 0 then return self:emit("POS " .. places[1].name) end
-    -- a place by its name ("where is Schiphol?", "where is Munich airport?", "where the Kempten VOR is")
-    local named = no_aircraft and self:place_by_name(s.b, s.e)
+    -- a place by its name ("where is Schiphol?", "where is Munich airport?", "where the Kempten VOR is"); an
+    -- airport said as such by the name of its city's navaids near the traffic ("show me Ezeiza airport": SAEZ
+    -- "MINISTRO PISTARINI" beside the EZEIZA VOR), as a destination is
+    local named
+    if no_aircraft and self:word_in(s.b, s.e, "@airport_nouns") then
+      for _, a in ipairs(self.fleet) do
+        named = named or self:airport_by_name(s.b, s.e, a, true)
+      end
+      -- (none near: the traffic's region's, "where is Cordoba airport?" over Argentina is SACO, not LEBA)
+      named = named or self:airport_of_region(s.b, s.e, self.fleet[1])
+    end
+    named = named or (no_aircraft and self:place_by_name(s.b, s.e))
     if named then return self:emit("POS " .. named) end
     if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end
     -- "show me where TEST01 and TEST03 are": each aircraft named

@@ -346,6 +346,7 @@ return {
     { "latam", "TAM" },  -- (a brand, below)
     { "flybondi", "FBZ" },
     { "jetsmart", "JAT" },  -- (a brand, below)
+    { "sky", "SKU" },  -- (Sky Airline, Chile: "Sky 101", "the Sky"; a brand, below)
   },
   common = {
     { "ba", "BAW" },
@@ -377,7 +378,6 @@ return {
     { "smartwings", "TVS" },
     { "pegasus", "PGT" },
     { "netjets", "NJE" },  -- (a brand: NetJets Europe, NJE, and NetJets Aviation, EJA)
-    { "sky", "SKU" },  -- (Sky Airline, Chile: "the Sky"; a brand, below)
   },
   brands = {
     { "transavia", "TRA", "TVF" },

@@ -1024,6 +1024,21 @@ return function(intent, rule, words)
     local r = g:refs_in(k, k + 1, "aircraft")[1]
     return r ~= nil and (g:alone_but(i, r.e) or g:clause_alone(i, r.e))
   end }
+  -- "show me Ezeiza airport", "show me the Santiago airport", "show me SAEZ": a place alone after the verb, no
+  -- aircraft named, is shown where it is
+  rule { "show display", "pos", when = function(g, i)
+    if g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
+    local last = #g.t
+    while last > k and (g.t[last].kind == "punct" or g.t[last].filler) do last = last - 1 end
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    if r and r.exists and r.e == last + 1 then return true end
+    if not g:word(last, "@airport_nouns") or last - k < 1 or last - k > 3 then return false end
+    for x = k, last - 1 do
+      if g.t[x].kind ~= "word" or not g.t[x].raw:match("^%u") then return false end
+    end
+    return true
+  end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
