@@ -2150,13 +2150,17 @@ return function(H, f, compass)
       s = { b = b or s.b, trig = s.trig, e = nb and nb > s.trig and nb or s.e, intent = s.intent }
     end
     -- ("EDDB, not Dresden", "EDDB instead of EDDC", "EDDB rather than Leipzig": the place said after the
-    -- negation, ending the instruction, is the one replaced, no candidate)
+    -- negation, ending the instruction, is the one replaced, no candidate; "land at Ezeiza, not Aeroparque":
+    -- the one said first an airport by its city's navaids near the aircraft)
+    local here = self:state(id) or (self.created_at or {})[id:upper()]
     for k = s.trig + 1, s.e - 2 do
       local from = (self:word(k, "not") and k + 1) or (self:word(k, "instead") and self:word(k + 1, "of") and k + 2)
         or (self:word(k, "rather") and self:word(k + 1, "than") and k + 2)
       if from and from < s.e and #self:quantities(from, s.e) == 0 and #self:refs_in(from, s.e, "aircraft") == 0
-          and (#self:refs_in(from, s.e, "waypoint") > 0 or self:airport_by_name(from, s.e) ~= nil)
-          and #self:refs_in(s.b, k, "waypoint") + (self:airport_by_name(s.b, k) and 1 or 0) > 0 then
+          and (#self:refs_in(from, s.e, "waypoint") > 0 or self:airport_by_name(from, s.e) ~= nil
+            or (here and self:airport_by_name(from, s.e, here, true)) ~= nil)
+          and #self:refs_in(s.b, k, "waypoint") + ((self:airport_by_name(s.b, k)
+            or (here and self:airport_by_name(s.b, k, here, true))) and 1 or 0) > 0 then
         self:explain(k, s.e)
         s = { b = s.b, trig = s.trig, e = k, intent = s.intent }
         break
@@ -2165,7 +2169,7 @@ return function(H, f, compass)
     local w = self:refs_in(s.b, s.e, "waypoint")
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
-    local a = self:state(id) or (self.created_at or {})[id:upper()]
+    local a = here
     -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant; one typed in lower
     -- case straight after the word, "orig eddf, dest eham", is that airport)
     local spelled = spelled_airport(self, s) or typed_airport(self, s)

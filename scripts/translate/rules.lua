@@ -860,7 +860,10 @@ return function(intent, rule, words)
     end
     local t, nx, named = g.t[k], g.t[k + 1], g.world.airports_named
     if not named or not t or t.kind ~= "word" or not t.alpha or #t.text < 4 then return false end
+    -- (or a city whose airport lies by navaids of its name: "Ezeiza", SAEZ beside the EZEIZA VOR)
+    local beside = g.world.airports_beside_navaids
     return #named(t.text) > 0 or (nx ~= nil and nx.kind == "word" and #named(t.text .. " " .. nx.text) > 0)
+      or (beside ~= nil and t.raw:match("^%u") ~= nil and #beside(t.text) > 0)
   end
   local function earlier(g, i, intent)
     for k = 1, i - 1 do if g:intent_at(k) == intent then return true end end
@@ -868,6 +871,11 @@ return function(intent, rule, words)
   end
   rule { "going goes headed heads bound", "dest", next = "to for", when = function(g, i)
     return not g:intent_at(i + 2) and not earlier(g, i, "mcre") and (earlier(g, i, "create") or airport_at(g, i + 2))
+  end }
+  -- "Flybondi 5120 will land at Ezeiza, not Aeroparque", "the GOL should go to Congonhas": where the aircraft
+  -- will land or should go, said with a modal, is its destination (an airport named after "at"/"to")
+  rule { "land go", "dest", prev = { 1, "will should shall must" }, when = function(g, i)
+    return g:word(i + 1, g:word(i, "land") and "at in" or "to") and airport_at(g, i + 2)
   end }
   rule { "land landing", "dest", when = function(g, i)
     local at = g:word(i + 1, "at in") and i + 1 or g:word(i + 1, "it him her them") and g:word(i + 2, "at in") and i + 2
