@@ -1137,34 +1137,30 @@ return function(H, f, compass)
     return self:airport_named_in(b, e, within(beside), false, true)
   end
 
-  -- A city said where an airport is meant (a destination, an origin) that names no airport near the aircraft
-  -- `near` {lat, lon} [deg] (nil: no traffic to be near; one candidate is the airport): the large and medium
-  -- airports anywhere that bear the name of one to three
-  -- capitalised words in [b, e) (sim:airports_named, airports_of_city) or lie beside navaids of that name
-  -- (sim:airports_beside_navaids: SACO "AMBROSIO L V TARAVELLA" beside the CORDOBA VOR) are its candidates.
-  -- Returns the nearest and true when it is the region's (lexicon.region_nm, region_ratio: "Cordoba" from
-  -- Buenos Aires is SACO, 350 NM, not LEBA "CORDOBA" in Spain), the one candidate and false when it lies
-  -- farther (the caller confirms it), nil when none; several of the region, or several none of them the
-  -- region's, are asked about. The name is explained with an airport returned.
+  -- A city said where an airport is meant (a destination, an origin, a place shown) that names no airport
+  -- near the aircraft `near` {lat, lon} [deg], as the region's airport: one to three capitalised words in
+  -- [b, e) that large or medium airports bear (sim:airports_named), else that name their city
+  -- (sim:airports_of_city) or navaids beside them (sim:airports_beside_navaids: SACO "AMBROSIO L V
+  -- TARAVELLA" beside the CORDOBA VOR). Of the first of those kinds that has any, the nearest is the region's
+  -- when it lies within lexicon.region_nm of `near` and every other lexicon.region_ratio times as far or
+  -- farther ("Cordoba" from Buenos Aires is SACO, 350 NM, not LEBA in Spain); with no `near` (no traffic)
+  -- the one there is. Returns its ident (the name explained), nil when there is none; several of the region
+  -- are asked about ("Porto Alegre": SBPA or SBCO?).
   function m:airport_of_region(b, e, near)
     local w = self.world
     local at, class = w.user_waypoint_at, w.airport_class
     if not (at and class and w.airports_named and w.airports_beside_navaids) or (near and not near.lat) then return nil end
-    local function candidates(phrase)
+    local function candidates(phrase, lists)
       local out, seen = {}, {}
-      for _, list in ipairs({ w.airports_named, w.airports_of_city, w.airports_beside_navaids }) do
+      for _, list in ipairs(lists) do
         for _, id in ipairs(list and list(phrase) or {}) do
           local c = class(id)
-          if not seen[id] and (c == "LARGE" or c == "MEDIUM") then
-            local lat, lon = at(id)
-            if lat and near then
-              local dlat, dlon = lat - near.lat, (lon - near.lon) * math.cos(math.rad(near.lat))
-              out[#out + 1] = { id = id, nm = 60 * math.sqrt(dlat * dlat + dlon * dlon) }
-            elseif lat then
-              out[#out + 1] = { id = id, nm = 0 }
-            end
-            seen[id] = true
+          local lat, lon = at(id)
+          if not seen[id] and (c == "LARGE" or c == "MEDIUM") and lat then
+            local dlat, dlon = near and lat - near.lat or 0, near and (lon - near.lon) * math.cos(math.rad(near.lat)) or 0
+            out[#out + 1] = { id = id, nm = 60 * math.sqrt(dlat * dlat + dlon * dlon) }
           end
+          seen[id] = true
         end
       end
       table.sort(out, function(x, y) return x.nm < y.nm end)
@@ -1177,28 +1173,29 @@ return function(H, f, compass)
     end
     for i = b, math.min(e, #self.t + 1) - 1 do
       for n = 3, 1, -1 do
-        local ok, words = true, {}
+        local ok, words = #(self.t[i] or {}).text >= 4, {}
         for k = i, i + n - 1 do
           ok = ok and word(k)
           words[#words + 1] = ok and self.t[k].text or nil
         end
-        local found = ok and #self.t[i].text >= 4 and candidates(table.concat(words, " ")) or {}
-        if #found > 0 then
-          self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
-          local first, second = found[1], found[2]
-          local region = first.nm <= L.region_nm
-          if second and (not region or not near or second.nm < L.region_ratio * first.nm) then
-            -- (several airports of the region bear the name or lie by its navaids: "Porto Alegre" is SBPA
-            -- or SBCO; several far away, none the region's: "London" from Argentina, KLOZ or CYXU or ...;
-            -- asked, nearest first)
+        local phrase = ok and table.concat(words, " ")
+        for _, lists in ipairs(ok and { { w.airports_named }, { w.airports_of_city, w.airports_beside_navaids } } or {}) do
+          local found = candidates(phrase, lists)
+          local first = found[1]
+          if first and (not near or first.nm <= L.region_nm) then
             local ids = {}
             for _, c in ipairs(found) do
-              if (not region or not near or c.nm < L.region_ratio * first.nm) and #ids < 4 then ids[#ids + 1] = c.id end
+              if (not near or c.nm < L.region_ratio * first.nm) and #ids < 4 then ids[#ids + 1] = c.id end
             end
-            self:need(string.format("Which airport is '%s': %s?", self:raw(i, i + n), table.concat(ids, " or ")))
-            return first.id, true
+            self:explain(i, self:word(i + n, "@airport_nouns") and i + n + 1 or i + n)
+            if #ids > 1 then
+              self:need(string.format("Which airport is '%s': %s?", self:raw(i, i + n), table.concat(ids, " or ")))
+            end
+            return first.id
           end
-          return first.id, region
+        end
+        if ok and #candidates(phrase, { w.airports_named, w.airports_of_city, w.airports_beside_navaids }) > 0 then
+          return nil  -- (airports of that name, none the region's: the caller's lookup anywhere decides)
         end
       end
     end
@@ -2174,14 +2171,13 @@ return function(H, f, compass)
     -- case straight after the word, "orig eddf, dest eham", is that airport)
     local spelled = spelled_airport(self, s) or typed_airport(self, s)
     local near = spelled or (a and self:airport_of_city_said(s.b, s.e, a)) or (a and self:airport_by_name(s.b, s.e, a, true))
-    -- (a city whose airport lies farther: the region's, else the nearest of its name, confirmed below)
-    local airport = near
-    if not airport and a and #w == 0 then
-      local regional
-      airport, regional = self:airport_of_region(s.b, s.e, a)
-      if regional then near = airport end
+    local airport = near or self:airport_by_name(s.b, s.e)
+    -- (a city whose airport lies farther, none of its name read through lexicon.city_airports: the region's,
+    -- "destination Cordoba" from Buenos Aires SACO, not LEBA in Spain; else the one found, confirmed below)
+    if not near and a and #w == 0 and not (airport and (self.city_airport or {})[airport]) then
+      near = self:airport_of_region(s.b, s.e, a)
+      airport = near or airport
     end
-    airport = airport or self:airport_by_name(s.b, s.e)
     -- (a part of a name only near the aircraft: "Madrid" anywhere is SKMA, in Colombia)
     if not airport and #w == 0 and a then
       near = self:airport_by_words(s.b, s.e, a)

@@ -577,12 +577,15 @@ return function(H, f, wrap, compass)
     end
     -- the way to turn, when it was said: HDG's LEFT/RIGHT (a squawk extension)
     local way = (rel and rel.turn ~= 0 and rel.turn) or turn
-    -- "turn right 180", "r 360", "l 200", "turn right 190" with no "heading" (typed, or a number not said
-    -- digit by digit): a heading or a turn of that many degrees (a "360" an orbit)? Both are said, and
-    -- the two land on different headings: asked, the long way round and straight behind named. A number
-    -- typed with a leading zero ("turn left 090") is a heading: no turn's degrees are written so
+    -- "turn right 180", "r 360", "l 200" with no "heading" (typed, or a number not said digit by digit): a
+    -- heading the long way round (more than half a circle) or a turn of that many degrees (a "360" an
+    -- orbit)? Asked. So is a heading straight behind ("turn right 270" from 090: a reversal onto 270, or a
+    -- turn of 270 degrees?) unless both readings are one heading. The short way round, "turn" said ("turn
+    -- right 190" from 080) reads either way too: asked; without it ("l 230", "left 270, down to 3000", typed
+    -- shorthand) it is the heading. A number typed with a leading zero ("turn left 090") is a heading: no
+    -- turn's degrees are written so
     if hdg and not offset and way ~= 0 and abs and abs.kind == "plain" and now and #ids == 1
-        and (abs.number.typed or not abs.number.lead_digit) and not abs.number.digits:find("^0")
+        and (abs.number.typed or not abs.number.lead_digit)
         and not self:word_in(s.b, s.e, "heading hdg") and abs.value <= 360 then
       local long = (way * (hdg - now.hdg_deg)) % 360
       local side = way < 0 and "left" or "right"
@@ -592,7 +595,8 @@ return function(H, f, wrap, compass)
       elseif long == 180 and abs.value ~= 180 then
         return self:need(string.format("Should %s turn %s by %s degrees, or turn %s onto heading %s, straight behind?",
           id, side, f.num(abs.value), side, f.num(wrap(hdg))))
-      elseif wrap(now.hdg_deg + way * abs.value) ~= wrap(hdg) then
+      elseif self:word_in(s.b, s.e, "turn") and not abs.number.digits:find("^0") and not self:word(abs.b - 1, "to onto")
+          and wrap(now.hdg_deg + way * abs.value) ~= wrap(hdg) then
         return self:need(string.format("Should %s turn %s by %s degrees, or fly heading %s?", id, side,
           f.num(abs.value), f.num(wrap(hdg))))
       end
