@@ -185,6 +185,8 @@ return {
         -- states and settings a request names ("which method is active", "the scenario file", "ADS-B noise")
         "active", "inactive", "enabled", "disabled", "file", "ads-b", "adsb", "colliding", "collision",
         "conflicting",
+        -- the part of the simulation a setting belongs to ("turn on the conflict detection module")
+        "module", "modules", "function", "functionality", "feature", "system", "logic",
         -- verbs that go with an instruction's direction or place: informal ones ("bump the speed up", "crank
         -- the look-ahead up") and those of staying and going ("stay on 250 knots", "returning to Orly")
         "bump", "crank", "push", "knock", "dial", "stay", "remain", "return", "sit", "head", "hand",

@@ -1387,6 +1387,12 @@ return function(intent, rule, words)
   rule { "resolution resolutions resolving", false, prev = { 2, "after following" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "resume resumes") and g:word_in(i + 1, #g.t + 1, "cpa")
   end }
+  -- "resolution only past CPA", "keep resolving until past CPA": when a resolution ends and navigation resumes
+  -- (RESNAV PASTCPA); "past" before "CPA" names it
+  rule { "resolution resolutions resolving reso", false, near = { 4, "past" }, when = function(g, i)
+    return g:word_in(i + 1, math.min(#g.t + 1, i + 6), "cpa")
+  end }
+  rule { "past", "resnav", next = "cpa", when = function(g, i) return g:word_in(1, i, "resolution resolutions resolving reso") end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
