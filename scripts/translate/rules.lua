@@ -1387,6 +1387,18 @@ return function(intent, rule, words)
   rule { "resolution resolutions resolving", false, prev = { 2, "after following" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 8), "resume resumes") and g:word_in(i + 1, #g.t + 1, "cpa")
   end }
+  -- "LATAM 3090 climb FL160, vertical resolution", "turn left 30 degrees - a lateral resolution": the kind of
+  -- resolution an instruction before it is, named after it to the end of the request (no setting)
+  rule { "resolution", false, prev = { 2, "vertical lateral horizontal" }, when = function(g, i)
+    for k = i + 1, #g.t do
+      if g.t[k].kind ~= "punct" and not g.t[k].filler then return false end
+    end
+    for k = 1, i - 2 do
+      local intent = g:intent_at(k)
+      if intent == "alt" or intent == "hdg" or intent == "spd" or intent == "vs" then return true end
+    end
+    return false
+  end }
   -- "resolution only past CPA", "keep resolving until past CPA": when a resolution ends and navigation resumes
   -- (RESNAV PASTCPA); "past" before "CPA" names it
   rule { "resolution resolutions resolving reso", false, near = { 4, "past" }, when = function(g, i)
