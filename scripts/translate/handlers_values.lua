@@ -63,6 +63,12 @@ return function(H, f, wrap, compass)
             local speed = now and math.abs((now.cas_kt or 0) - q.value) < 3
             if level and not speed then return self:altitude(s) end
             if speed and not level then return self:speed(s) end
+            -- ("cancel the speed restriction... no, just maintain 250": the speed named before it, no level
+            -- or climb named anywhere, says which)
+            if self:word_in(1, s.trig, "speed spd airspeed") and not self:word_in(1, #self.t + 1,
+                "level altitude alt fl flight climb climbing descend descending descent feet ft height") then
+              return self:speed(s)
+            end
             return self:need(string.format("Should %s fly FL%03d or %d knots? I heard '%s'.", ids[1] or "it",
               q.value, q.value, self:raw(q.b, q.e)))
           end
