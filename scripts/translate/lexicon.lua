@@ -104,7 +104,7 @@ return {
     -- the people in the room, addressed ("ok observers, I'm going to start the clock", "ok folks, first one")
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
-        "chicos", "chicas", "muchachos", "alumnos", "estudiantes", "amigos", "pessoal", "galera", "gente", "alunos",
+        "chicos", "chicas", "muchachos", "alumnos", "estudiantes", "amigos", "pessoal", "galera", "alunos",
         "turma" },
     -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
