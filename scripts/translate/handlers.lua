@@ -507,11 +507,12 @@ function m:airline_refs()
       and not self:word(r.e, "@navaid_kinds")
   end
   -- ("the LATAM", "to avoid the LATAM": the navdata's fix LATAM, in France) a place named by an airline's
-  -- name, one word, that no aircraft flying has in its route and that lies beyond lexicon.navaid_range_nm
-  -- of every aircraft flying, is the airline: its ref is dropped
+  -- name, one word, with an aircraft of that airline flying, that no aircraft flying has in its route and
+  -- that lies beyond lexicon.navaid_range_nm of every aircraft flying, is the airline: its ref is dropped
   local function airline_not_place(r)
-    if r.kind ~= "waypoint" or r.e ~= r.b + 1 or not airline_names()[self.t[r.b].text]
-        or self:word(r.e, "@navaid_kinds") or not self.world.user_waypoint_at then
+    local icao = r.kind == "waypoint" and r.e == r.b + 1 and airline_names()[self.t[r.b].text]
+    if not icao or self:word(r.e, "@navaid_kinds") or not self.world.user_waypoint_at
+        or #self:airline_fleet(icao, BRANDS[self.t[r.b].text]) == 0 then
       return false
     end
     local lat, lon = self.world.user_waypoint_at(r.name)
@@ -531,6 +532,19 @@ function m:airline_refs()
   end
   for k = #self.refs, 1, -1 do
     if airline_not_place(self.refs[k]) then table.remove(self.refs, k) end
+  end
+  -- ("before MTL add LATAM at FL280" with no LATAM aircraft flying: the fix) a name typed in capitals that
+  -- the callsign matcher kept from places for being an airline's telephony is the place the navdata or a
+  -- DEFWPT holds under it when no aircraft of that airline flies
+  for i = 1, #self.t do
+    local t = self.t[i]
+    local icao = t.kind == "word" and #t.raw >= 3 and #t.raw <= 6 and t.raw:match("^%u%u+$") and airline_names()[t.text]
+    if icao and not self:has_ref(i, i + 1) and #self:airline_fleet(icao, BRANDS[t.text]) == 0
+        and self.world.user_waypoint_at and self.world.user_waypoint_at(t.raw) then
+      local k = 1
+      while self.refs[k] and self.refs[k].b < i do k = k + 1 end
+      table.insert(self.refs, k, { kind = "waypoint", name = t.raw, b = i, e = i + 1, exists = false })
+    end
   end
   -- "the SAS one, could it ...", "descend the SAS one to FL80": "one" after "the" and an airline, no digit,
   -- number word or spelled letter after it, is the pronoun (the airline's aircraft), no flight number; the

@@ -872,10 +872,13 @@ return function(intent, rule, words)
   rule { "going goes headed heads bound", "dest", next = "to for", when = function(g, i)
     return not g:intent_at(i + 2) and not earlier(g, i, "mcre") and (earlier(g, i, "create") or airport_at(g, i + 2))
   end }
-  -- "Flybondi 5120 will land at Ezeiza, not Aeroparque", "the GOL should go to Congonhas": where the aircraft
-  -- will land or should go, said with a modal, is its destination (an airport named after "at"/"to")
+  -- "Flybondi 5120 will land at Ezeiza, not Aeroparque", "the GOL 1455 should go to Congonhas": where the
+  -- aircraft named straight before the modal will land or should go is its destination (an airport named
+  -- after "at"/"to"); said of "it" after an instruction ("..., it will go to Riga") it is context
   rule { "land go", "dest", prev = { 1, "will should shall must" }, when = function(g, i)
-    return g:word(i + 1, g:word(i, "land") and "at in" or "to") and airport_at(g, i + 2)
+    local named = false
+    for _, r in ipairs(g:refs_in(1, i - 1, "aircraft")) do named = named or r.e == i - 1 end
+    return named and g:word(i + 1, g:word(i, "land") and "at in" or "to") and airport_at(g, i + 2)
   end }
   rule { "land landing", "dest", when = function(g, i)
     local at = g:word(i + 1, "at in") and i + 1 or g:word(i + 1, "it him her them") and g:word(i + 2, "at in") and i + 2
