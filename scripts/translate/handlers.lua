@@ -195,7 +195,22 @@ function m:acids(s)
       end
     end
   end
-  if #ids == 0 then take(s.b, s.trig) end
+  -- "Argentina 1320 and Flybondi are converging, so Flybondi 5120 turn right": with an aircraft named after
+  -- the last "so" or sentence end before the instruction word, those named before it are talked about, not
+  -- instructed
+  if #ids == 0 then
+    local from = s.b
+    for k = s.trig - 1, s.b, -1 do
+      local t = self.t[k]
+      if self:word(k, "so") or (t.kind == "punct" and (t.text == "." or t.text == ":" or t.text == ";" or t.text == "!")) then
+        if self:has_ref(k + 1, s.trig, "aircraft") then from = k + 1 end
+        break
+      end
+    end
+    -- (said with "is" or "are" the clause describes them: explained)
+    if from > s.b and self:word_in(s.b, from, "is are was were") then self:explain(s.b, from) end
+    take(from, s.trig)
+  end
   self:confirm_callsigns(s)
   -- "BAW918 FL300 and DLH9LT FL310, both 280 kt": "both" names the two aircraft instructed before
   -- ("both Lufthansa planes", "both the easyJets": the two aircraft of the airline named after it, when

@@ -4326,3 +4326,13 @@ do
   check_eq(ex("TAM90 keep the speed... no, just maintain 250"), "SPD TAM90 250")
   check(ex("TAM90 maintain 250"):match("^ASK") ~= nil, "maintain 250 with nothing named")
 end
+
+-- Aircraft named before the last "so" or sentence end before an instruction, another named after it, are
+-- talked about, not instructed ("X and Y are converging, so Y turn right heading 360"); with none named after
+-- it, those before are the instruction's
+do
+  local _, ex = scene({ "CRE ARG5 B738 -34.0 -60.0 090 FL200 280", "CRE FBZ6 B738 -34.5 -59.0 270 FL200 280" })
+  check_eq(ex("ARG5 and FBZ6 are head on, so FBZ6 turn left heading 200"), "HDG FBZ6 200 LEFT")
+  check_eq(ex("ARG5 is too fast. FBZ6 turn left heading 200"), "HDG FBZ6 200 LEFT")
+  check_eq(ex("ARG5 and FBZ6 turn left heading 200"), "HDG ARG5 200 LEFT ; HDG FBZ6 200 LEFT")
+end
