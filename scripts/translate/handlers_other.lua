@@ -1490,6 +1490,9 @@ return function(H, f, compass)
         return self:emit("ADDWPT " .. a.id .. " " .. wp .. ",,," .. from.name)
       end
       if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end
+    elseif (self.created or {})[id:upper()] and not (added and added:lower() == wp:lower()) then
+      -- ("create ARG1890 ... and route direct FDO": an aircraft created in the request has no route yet)
+      self:emit("ADDWPT " .. id:upper() .. " " .. wp)
     end
     self:emit("DIRECT " .. id .. " " .. wp)
     local to = self:route_places(s.trig, s.e)[1]

@@ -4336,3 +4336,10 @@ do
   check_eq(ex("ARG5 is too fast. FBZ6 turn left heading 200"), "HDG FBZ6 200 LEFT")
   check_eq(ex("ARG5 and FBZ6 turn left heading 200"), "HDG ARG5 200 LEFT ; HDG FBZ6 200 LEFT")
 end
+
+-- A direct-to for an aircraft created in the same request (no route yet) adds the waypoint first
+do
+  local _, ex = scene({ "DEFWPT PAMPA -34.0 -58.0" })
+  check_eq(ex("create ARG77 B738 at -34.5 -58.5 heading 030 FL090 250 kt and route direct PAMPA"),
+    "CRE ARG77 B738 -34.5 -58.5 30 FL90 250 ; ADDWPT ARG77 PAMPA ; DIRECT ARG77 PAMPA")
+end
