@@ -514,9 +514,13 @@ local function self_corrections(text)
       j = j + 1
     end
     local nxt = toks[j]
+    -- (a position corrected: "at 34 30 S 58 50 W, no, at -34.50 -58.83": a hemisphere after a number before,
+    -- "at" and a number after)
+    local position = toks[k - 1] and toks[k - 1].raw:match("^[NnSsEeWw]%p*$") and value(toks[k - 2])
+      and nxt and nxt.bare == "at" and toks[j + 1] and toks[j + 1].raw:match("^%-?%d")
     -- (a turn's side corrected: "turn left... I mean right heading 200")
-    if j > k and marked and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare])) and nxt
-        and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare]) then
+    if j > k and marked and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
+        and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
       pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
       from = nxt.at
       k = j

@@ -2054,7 +2054,12 @@ return function(H, f, compass)
         end
       end
     end
-    local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
+    -- (a position corrected, "at 34.5 S 58.8 W, no, at -34.50 -58.83": the one after the last correction)
+    local from = s.b
+    for k = s.trig, s.e - 1 do
+      if self:word(k, "@correction") and #self:quantities(k + 1, s.e) >= 2 then from = k + 1 end
+    end
+    local lat, lon = position(self:quantities(from, s.e), math.max(s.trig, from), self)
     if not name then return self:need("What should the waypoint be called, and where is it?") end
     if not lat or not lon then return self:need("Where is waypoint " .. name .. "? Please give a latitude and longitude.") end
     self:emit("DEFWPT " .. name .. " " .. f.num(lat) .. " " .. f.num(lon) .. kind)

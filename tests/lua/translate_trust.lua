@@ -4343,3 +4343,12 @@ do
   check_eq(ex("create ARG77 B738 at -34.5 -58.5 heading 030 FL090 250 kt and route direct PAMPA"),
     "CRE ARG77 B738 -34.5 -58.5 30 FL90 250 ; ADDWPT ARG77 PAMPA ; DIRECT ARG77 PAMPA")
 end
+
+-- A waypoint's position corrected in the same breath ("at 34.5 S 58.8 W, no, at -34.50 -58.83") is the one
+-- said after the correction, in either notation
+do
+  local _, ex = scene({})
+  check_eq(ex("new waypoint PAMPA at 33.5 S 60.8 W, no, at -33.60 -60.90"), "DEFWPT PAMPA -33.6 -60.9")
+  check_eq(ex("new waypoint PAMPA at 33 30 S 60 48 W, no wait, at 33.6 S 60.9 W"), "DEFWPT PAMPA -33.6 -60.9")
+  check_eq(ex("new waypoint PAMPA at 33.5 S 60.8 W"), "DEFWPT PAMPA -33.5 -60.8")
+end
