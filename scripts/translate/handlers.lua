@@ -548,13 +548,16 @@ function m:airline_refs()
   for k = #self.refs, 1, -1 do
     if airline_not_place(self.refs[k]) then table.remove(self.refs, k) end
   end
-  -- ("before MTL add LATAM at FL280" with no LATAM aircraft flying: the fix) a name typed in capitals that
-  -- the callsign matcher kept from places for being an airline's telephony is the place the navdata or a
-  -- DEFWPT holds under it when no aircraft of that airline flies
-  for i = 1, #self.t do
-    local t = self.t[i]
-    local icao = t.kind == "word" and #t.raw >= 3 and #t.raw <= 6 and t.raw:match("^%u%u+$") and airline_names()[t.text]
+  -- ("before MTL add LATAM at FL280" with no LATAM aircraft flying: the fix) a name of five capitals, a
+  -- fix's, that the callsign matcher kept from places for being an airline's telephony is the place the
+  -- navdata or a DEFWPT holds under it when no aircraft of that airline flies, no number follows and no
+  -- aircraft type is named (a new aircraft's airline: "create a LATAM A320")
+  local typed = self:has_ref(1, #self.t + 1, "type")
+  for i = 1, typed and 0 or #self.t do
+    local t, nx = self.t[i], self.t[i + 1]
+    local icao = t.kind == "word" and t.raw:match("^%u%u%u%u%u$") and airline_names()[t.text]
     if icao and not self:has_ref(i, i + 1) and #self:airline_fleet(icao, BRANDS[t.text]) == 0
+        and not (nx and (nx.kind == "number" or nx.number_word))
         and self.world.user_waypoint_at and self.world.user_waypoint_at(t.raw) then
       local k = 1
       while self.refs[k] and self.refs[k].b < i do k = k + 1 end
