@@ -1491,8 +1491,11 @@ return function(H, f, compass)
       end
       if not in_route then self:emit("ADDWPT " .. a.id .. " " .. wp) end
     elseif (self.created or {})[id:upper()] and not (added and added:lower() == wp:lower()) then
-      -- ("create ARG1890 ... and route direct FDO": an aircraft created in the request has no route yet)
-      self:emit("ADDWPT " .. id:upper() .. " " .. wp)
+      -- ("create ARG1890 ... and route direct FDO": an aircraft created in the request has no route yet; the
+      -- waypoint said straight after the direct-to's word, "to" between or not)
+      local k = self:skip_fillers(self:word(s.trig + 1, "to") and s.trig + 2 or s.trig + 1)
+      local r = self:refs_in(k, k + 1, "waypoint")[1]
+      if r and r.b == k and r.name:upper() == wp:upper() then self:emit("ADDWPT " .. id:upper() .. " " .. wp) end
     end
     self:emit("DIRECT " .. id .. " " .. wp)
     local to = self:route_places(s.trig, s.e)[1]
