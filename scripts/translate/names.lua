@@ -347,6 +347,10 @@ return {
     { "flybondi", "FBZ" },
     { "jetsmart", "JAT" },  -- (a brand, below)
     { "sky", "SKU" },  -- (Sky Airline, Chile: "Sky 101", "the Sky"; a brand, below)
+    { "aeroandes", "ANS" },  -- (Andes Lineas Aereas; "the Andes" is the mountains)
+    { "boliviana", "BOV" },  -- (Boliviana de Aviacion)
+    { "passaredo", "PTB" },  -- (VOEPASS)
+    { "voepass", "PTB" },
   },
   common = {
     { "ba", "BAW" },

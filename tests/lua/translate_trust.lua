@@ -4352,3 +4352,10 @@ do
   check_eq(ex("new waypoint PAMPA at 33 30 S 60 48 W, no wait, at 33.6 S 60.9 W"), "DEFWPT PAMPA -33.6 -60.9")
   check_eq(ex("new waypoint PAMPA at 33.5 S 60.8 W"), "DEFWPT PAMPA -33.5 -60.8")
 end
+
+-- More South American telephonies: "Boliviana 612" (BOV), "Passaredo 2240" (VOEPASS, PTB)
+do
+  local _, ex = scene({ "CRE BOV612 B738 -17.6 -63.1 090 FL200 250", "CRE PTB2240 AT76 -22.0 -47.0 180 FL150 220" })
+  check_eq(ex("Boliviana 612 climb FL240"), "ALT BOV612 FL240")
+  check_eq(ex("Passaredo 2240 descend FL110"), "ALT PTB2240 FL110")
+end
