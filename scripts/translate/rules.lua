@@ -411,6 +411,10 @@ return function(intent, rule, words)
   rule { "slow slower faster accelerate decelerate", "spd" }
   -- "and give it 280 knots": a speed given to the aircraft
   rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
+  -- "increase the level to FL130", "reduce your level to FL070": the level named straight after the verb
+  rule { "reduce increase decrease", "alt", next = "the your its his her", when = function(g, i)
+    return g:word(i + 2, "level altitude")
+  end }
   rule { "reduce increase decrease", "spd", not_near = { 4, "altitude rate vertical" } }
   -- a pilot's readback "reducing 250", "increasing to 280 knots": the participle carries its value (said
   -- right after it); with none it describes ("the gap is reducing"), no instruction
@@ -1105,6 +1109,9 @@ return function(intent, rule, words)
   rule { "restart start", "op", near = { 3, "clock" } }
   rule { "restart", "reset", near = { 3, "@sim" } }
   rule { "what how know", "pos", near = { 4, "altitude speed heading position level" } }
+  -- "which is the altitude of the Azul?": the question asked with "which", as non-native speakers do
+  rule { "which", "pos", next = "is", near = { 4, "altitude speed heading position level" }, when = function(g)
+    return g.t[#g.t].text == "?" end }
   -- "how fast is the Norwegian flying?", "how high is SAS1421 now?": a question of an aircraft's state
   -- (typed without "?" too, when the request ends at the aircraft or its verb: "how high is afr1442")
   rule { "how", "pos", next = "fast high", when = function(g, i)
@@ -1180,6 +1187,10 @@ return function(intent, rule, words)
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "own", "lnav", next = "route", prev = { 3, "fly follow back resume" } }  -- "fly its own route again"
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"
+  -- "return to the route", "return to its route": the route flown again (a place named is a direct-to)
+  rule { "return returns", "lnav", next = "to", when = function(g, i)
+    return g:word(i + 2, "the its your his her") and g:word(i + 3, "route") and not g:has_ref(i + 4, #g.t + 1, "waypoint")
+  end }
   rule { "follow", "lnav", next = "your its the", near = { 3, "route" },  -- "follow your route again"
          not_near = { 6, "vertically vertical vnav profile altitude altitudes level levels" } }
   rule { "run", "op", next = "again" }  -- "let it run again"

@@ -4359,3 +4359,14 @@ do
   check_eq(ex("Boliviana 612 climb FL240"), "ALT BOV612 FL240")
   check_eq(ex("Passaredo 2240 descend FL110"), "ALT PTB2240 FL110")
 end
+
+-- Second-language phrasings of ordinary requests: "increase the level to FL130" (the level named after the
+-- verb), "which is the altitude of X?" (a question), "return to the route" (LNAV; a place after it is asked)
+do
+  local _, ex = scene({ "CRE GLO7 B738 -23.5 -46.9 270 FL090 250", "DEFWPT TEXAS -23.0 -46.0", "ADDWPT GLO7 TEXAS" })
+  check_eq(ex("GLO7 increase the level to FL130"), "ALT GLO7 FL130")
+  check_eq(ex("GLO7 reduce 220 level FL080"), "SPD GLO7 220 ; ALT GLO7 FL80")
+  check_eq(ex("which is the altitude of GLO7?"), "POS GLO7")
+  check_eq(ex("GLO7 return to the route"), "LNAV GLO7 ON")
+  check(ex("GLO7 return to the route at TEXAS"):match("^ASK") ~= nil, "a place to rejoin at")
+end
