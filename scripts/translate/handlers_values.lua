@@ -640,8 +640,13 @@ return function(H, f, wrap, compass)
     local fpm = v.value
     -- the sign is the way the aircraft moves, named by the motion when one is said ("increase your rate of
     -- descent to 2500" descends, "reduce your rate of climb to 500" climbs); otherwise the verb's direction
-    local down = self:word_in(s.b, s.e, "descent descend descending")
-    local up = self:word_in(s.b, s.e, "climb climbing")
+    -- (in the instruction's whole clause, up to the punctuation around it: "descend with vertical speed 2000",
+    -- "vertical speed 2000 feet per minute for descend" descend)
+    local cb, ce = s.b, s.e
+    while cb > 1 and self.t[cb - 1].kind ~= "punct" do cb = cb - 1 end
+    while ce <= #self.t and self.t[ce].kind ~= "punct" do ce = ce + 1 end
+    local down = self:word_in(cb, ce, "descent descend descending")
+    local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
     if fpm > 0 and dir < 0 then fpm = -fpm end
     self:emit("VS " .. id .. " " .. f.int(fpm))

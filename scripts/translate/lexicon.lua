@@ -392,7 +392,8 @@ return {
   variant_families = { "767", "787" },
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
-  up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing" },
+  up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing",
+         "ascend", "rise" },
   down = { "descend", "desc", "down", "drop", "lower", "reduce", "decrease", "slow", "slower", "below", "descent", "sink",
            "descending", "decelerate", "minus", "subtract" },
   -- words that name an aircraft as context, not as the one instructed ("avoid AC02")

@@ -208,6 +208,11 @@ return function(intent, rule, words)
     return q ~= nil and (q.kind == "speed" or q.kind == "mach")
   end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
+  -- "rise to FL200", "ascend to FL200": a climb said so, with its level after it
+  rule { "ascend rise", "alt", when = function(g, i)
+    local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
+    return q ~= nil and q.kind == "alt"
+  end }
   -- "drop LAMUT from AFR7516", "take KOPOR off the Iberia": a known waypoint said straight after the verb
   -- and taken "from" or "off" an aircraft that flies
   rule { "drop remove delete take", "delwpt", when = function(g, i)
@@ -835,6 +840,14 @@ return function(intent, rule, words)
       or (g:word(w + 1, "@navaid_kinds") and g:place_by_name(w, w + 1) ~= nil))
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
+  -- "Sky 101 go to TBN", "go to the waypoint TBN": a waypoint's code (no airport's four letters) straight after
+  -- "go to", a waypoint noun between or none, is flown to directly
+  rule { "go", "direct", next = "to", when = function(g, i)
+    local k = g:skip_fillers(i + 2)
+    while g:word(k, "the @waypoint_nouns point") do k = g:skip_fillers(k + 1) end
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    return r ~= nil and r.b == k and not r.name:match("^%a%a%a%a$")
+  end }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
   -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO", "rejoin own navigation at NORKU":
   -- the waypoint where the route is rejoined is flown to directly ("rejoin the route" alone is LNAV)
