@@ -840,14 +840,6 @@ return function(intent, rule, words)
       or (g:word(w + 1, "@navaid_kinds") and g:place_by_name(w, w + 1) ~= nil))
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
-  -- "Sky 101 go to TBN", "go to the waypoint TBN": a waypoint's code (no airport's four letters) straight after
-  -- "go to", a waypoint noun between or none, is flown to directly
-  rule { "go", "direct", next = "to", when = function(g, i)
-    local k = g:skip_fillers(i + 2)
-    while g:word(k, "the @waypoint_nouns point") do k = g:skip_fillers(k + 1) end
-    local r = g:refs_in(k, k + 1, "waypoint")[1]
-    return r ~= nil and r.b == k and not r.name:match("^%a%a%a%a$")
-  end }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
   -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO", "rejoin own navigation at NORKU":
   -- the waypoint where the route is rejoined is flown to directly ("rejoin the route" alone is LNAV)
