@@ -2512,13 +2512,13 @@ function G:at_waypoint(s, spec)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
     end
     -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES": the level
-    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there as well (`level_by`: that
+    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there (`level_by`: that
     -- level, the only value said before "by" or "at"; only "level", "reach", "be", "to" and fillers beside it)
     local level_by
     local from = s.intent == "infer" and first or s.trig + 1
     local said_level = false  -- ("level" said as a word of its own, not in "flight level")
     for i = s.intent == "infer" and first or s.trig, r.b - 2 do
-      said_level = said_level or self:word(i, "reach reaching") or (self:word(i, "level") and not self:word(i - 1, "flight"))
+      said_level = said_level or self:word(i, "reach reaching lvl") or (self:word(i, "level") and not self:word(i - 1, "flight"))
     end
     if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at") and said_level then
       local qs = self:quantities(s.b, r.b - 1)
@@ -2526,7 +2526,7 @@ function G:at_waypoint(s, spec)
       for i = from, r.b - 2 do
         local inside = level_by and i >= level_by.b and i < level_by.e
         if not (inside or self.t[i].filler or (self.t[i].kind == "punct" and self.t[i].text == ",")
-            or self:word(i, "level reach reaching be to and")) then
+            or self:word(i, "level lvl reach reaching be to and")) then
           level_by = nil
         end
       end
@@ -2578,9 +2578,11 @@ function G:at_waypoint(s, spec)
       end
       if in_route and not other and (alt or spd) then
         -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
-        -- or below FL150"): its command first, from the words before the crossing
+        -- or below FL150"): its command first, from the words before the crossing. A level to be reached by
+        -- the waypoint is that constraint alone, never a level cleared now as well ("descend FL100 to be
+        -- level by BIG": the AT constraint only)
         local lead = be_at and be_at < r.b and be_at - 2 or r.b - 1
-        if spec and spec.handler and s.trig < lead and #self:quantities(s.b, lead) > 0 then
+        if spec and spec.handler and not level_by and s.trig < lead and #self:quantities(s.b, lead) > 0 then
           self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
         end
         -- "cross SUGOL at or above FL150", "at least 250 knots": BlueSky's AT sets the exact value, so a

@@ -3959,15 +3959,18 @@ do
 end
 
 -- A climb or descent to be level by a waypoint of the route ("descend FL240 level by ALFA", "descend to
--- reach FL240 by ALFA", "be level FL240 by ALFA"): the level is an AT constraint there as well; a waypoint
--- off the route, or another value said after it, is asked about
+-- reach FL240 by ALFA", "be level FL240 by ALFA"): the level is one AT constraint there, never a level
+-- cleared now as well; a waypoint off the route, or another value said after it, is asked about
 do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
     "ADDWPT KLM12 ALFA" })
-  check_eq(ex("KLM12 descend FL240 level by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
-  check_eq(ex("KLM12 descend to reach FL240 by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL240 level by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend to reach FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12, be level FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
-  check_eq(ex("KLM12 descend FL240 to be level at ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL240 to be level at ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(ex("klm12 desc FL240 to be lvl by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL240, to be level by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check(ex("KLM12 descend FL240 by ALFA"):match("^ASK") ~= nil, "no 'level' or 'reach': by the waypoint or a change?")
   check(ex("KLM12 descend FL240 level by BRAVO"):match("^ASK") ~= nil, "BRAVO is off the route")
   check(ex("KLM12 descend FL240 level by ALFA 250 knots"):match("^ASK") ~= nil, "a speed after the waypoint")
 end
