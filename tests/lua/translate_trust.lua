@@ -4202,3 +4202,85 @@ do
     "ALT LAN78 FL190 ; ATALT LAN78 FL190 HDG LAN78 200 LEFT")
   check_eq(ex("LAN78 descend FL100, when reaching reduce 220"), "ALT LAN78 FL100 ; ATALT LAN78 FL100 SPD LAN78 220")
 end
+
+-- A condition of the level reached ("on reaching", "when level", "when you reach it", "once there") is
+-- carried or asked, never dropped: after a level cleared it holds a speed, a heading, a switch of navigation
+-- or a direct-to (ATALT); said after its instruction it holds it the same; with no level before it, or
+-- before a turn by degrees, it is asked about
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.6 12.6 090 FL150 250", "DEFWPT KOBRA 55.8 13.4", "ADDWPT SAS31 KOBRA" })
+  check_eq(ex("sas31 climb FL190 on reaching resume own navigation"),
+    "ALT SAS31 FL190 ; ATALT SAS31 FL190 LNAV SAS31 ON")
+  check_eq(ex("SAS31 descend FL110, when level own nav"), "ALT SAS31 FL110 ; ATALT SAS31 FL110 LNAV SAS31 ON")
+  check_eq(ex("SAS31 descend FL110, on reaching direct KOBRA"),
+    "ALT SAS31 FL110 ; ATALT SAS31 FL110 DIRECT SAS31 KOBRA")
+  check_eq(ex("SAS31 climb FL190, slow to 230 once you get there"),
+    "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
+  check_eq(ex("SAS31 climb FL190, speed 230 when you're level"), "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
+  check(ex("SAS31 slow to 230 when you reach it"):match("^ASK") ~= nil, "no level before 'when you reach it'")
+  check(ex("SAS31 speed 230 once there"):match("^ASK") ~= nil, "no level before 'once there'")
+  check(ex("SAS31 on reaching slow to 230"):match("^ASK") ~= nil, "no level before 'on reaching'")
+  check(ex("SAS31 when you reach it, slow to 230"):match("^ASK") ~= nil, "no level before 'when you reach it'")
+  check(ex("SAS31 climb FL190, on reaching turn right 30 degrees"):match("^ASK") ~= nil, "a turn by degrees")
+  check(ex("SAS31 direct KOBRA, slow to 230 when you get there"):match("^ASK") ~= nil, "no level before it")
+  -- (the listener's convenience is no condition)
+  check_eq(ex("SAS31 slow to 230 when you get a chance"), "SPD SAS31 230")
+end
+
+-- Text-ATC typed abbreviations of instruction words ("trn lft 15", "red 220", "desc pd FL150", "expd desc",
+-- "maint 280 kts", "til") are read as the words where a word beside them shows the instruction; elsewhere
+-- they stay as typed ("trail red" is a colour, "direct TRN" a place); a typed hesitation ("err") is one
+do
+  local _, ex = scene({ "CRE SAS32 A320 55.6 12.6 090 FL150 250", "CRE SAS33 A320 55.9 12.9 270 FL150 250" })
+  check_eq(ex("sas32 trn lft 15"), "HDG SAS32 75 LEFT")
+  check_eq(ex("sas32 trn rt hdg 120"), "HDG SAS32 120 RIGHT")
+  check_eq(ex("sas32 red 220"), "SPD SAS32 220")
+  check_eq(ex("sas32 hdg 120, red 210, desc FL90"), "HDG SAS32 120 ; SPD SAS32 210 ; ALT SAS32 FL90")
+  check_eq(ex("sas32 desc pd FL100"), "ALT SAS32 FL100")
+  check_eq(ex("sas32 expd desc 3000 fpm"), "VS SAS32 -3000")
+  check_eq(ex("sas32 desc FL100 expd"), "ALT SAS32 FL100")
+  check_eq(ex("sas32 mach .. err spd 240"), "SPD SAS32 240")
+  check(ex("sas32 trail red"):match("^TRAIL ") ~= nil, "a trail's colour")
+  check(ex("sas32 red"):match("^ASK") ~= nil, "'red' with no value is no speed")
+  check(ex("sas32 pd"):match("^ASK") ~= nil, "'pd' alone")
+end
+
+-- A value held "until established" on the approach ("maint 8000 til established") is flown now, its end not
+-- kept (named as not simulated), when the limit ends the request; an instruction after it, which waits for
+-- it, is asked about, and so is a limit at a distance ("until 4 dme"). "maintain 280 or greater" is a speed
+do
+  local _, ex = scene({ "CRE SAS34 A320 55.6 12.6 090 FL150 250" })
+  check_eq(ex("SAS34 heading 200, maint 4000 til established"), "HDG SAS34 200 ; ALT SAS34 4000")
+  check_eq(ex("SAS34 maintain 180 knots until established on the localizer"), "SPD SAS34 180")
+  check_eq(ex("SAS34 maintain 230 or greater"), "SPD SAS34 230")
+  check(ex("SAS34 maintain 180 knots until established, then descend 3000"):match("^ASK") ~= nil,
+    "an instruction waiting for the limit")
+  check(ex("sas34 red 160 kts until 4 dme"):match("^ASK") ~= nil, "a limit at a distance")
+end
+
+-- The online network's words for a pilot gone, given as the reason for removing the aircraft ("pilot dc'd",
+-- "he's disconnected", "pilot went afk") carry nothing; "say route" lists the route; "sim run", ".hold" (a
+-- text client's dot command) run and hold the clock; the wind told to an aircraft addressed is no WIND
+do
+  local _, ex = scene({ "CRE SAS35 A320 55.6 12.6 090 FL150 250", "DEFWPT KOBRA 55.8 13.4", "ADDWPT SAS35 KOBRA" })
+  check_eq(ex("del sas35, pilot dc'd"), "DEL SAS35")
+  check_eq(ex("remove sas35 from the scope, he's disconnected"), "DEL SAS35")
+  check_eq(ex("delete sas35 pilot went afk"), "DEL SAS35")
+  check_eq(ex("sas35 say route"), "LISTRTE SAS35")
+  check_eq(ex("sim run"), "OP")
+  check_eq(ex("sim stop"), "HOLD")
+  check_eq(ex(".hold"), "HOLD")
+  check_eq(ex("scandinavian 35, wind 240 at 12, reduce 200"), "SPD SAS35 200")
+  check(ex("sas35 pilot went afk"):match("^ASK") ~= nil, "a reason with no instruction")
+end
+
+-- A clause opening "at WPT" before a climb, descent or speed change with a bare number ("at KOBRA desc
+-- 4000", "at KOBRA reduce 210") is the AT constraint there, as the instruction alone reads the number
+do
+  local _, ex = scene({ "CRE SAS36 A320 55.6 12.6 090 7000 250", "DEFWPT KOBRA 55.8 13.4", "DEFWPT LUPUS 55.1 13.0",
+    "ADDWPT SAS36 KOBRA" })
+  check_eq(ex("SAS36 at KOBRA desc 4000"), "AT SAS36 KOBRA ALT 4000")
+  check_eq(ex("SAS36 at KOBRA reduce to 210"), "AT SAS36 KOBRA SPD 210")
+  check(ex("SAS36 at LUPUS desc 4000"):match("^ASK") ~= nil, "a waypoint off the route")
+  check(ex("SAS36 at KOBRA descend 40"):match("^ASK") ~= nil, "a bare number under 1000")
+end
