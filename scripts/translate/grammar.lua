@@ -2353,6 +2353,9 @@ end
 -- "when"/"once" to "level", "lvl", "there" or a verb of reaching.
 function G:trailing_reached(s)
   local c = self:find_word(s.trig + 1, s.e, "when once")
+  -- ("resume own nav on reaching": "on" before the verb of reaching)
+  local on = self:find_word(s.trig + 1, s.e, "on upon")
+  if on < c and self:word(self:skip_fillers(on + 1), "reaching") then c = on end
   if c >= s.e then return nil end
   local named = false
   for i = c + 1, s.e - 1 do
@@ -2369,15 +2372,17 @@ end
 
 -- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
 -- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's (also one that waits
--- for a condition: "after passing FL100 resume own navigation direct HEMEL").
+-- for a condition: "after passing FL100 resume own navigation direct HEMEL": the condition the LNAV
+-- waited for is the DIRECT's).
 function G:direct_resumes_nav()
   for c = #self.out, 1, -1 do
-    local id = self.out[c]:match("^LNAV (%S+) ON$")
-    if id then
+    local cond, id = self.out[c]:match("^(.-)LNAV (%S+) ON$")
+    if id and (cond == "" or cond:match("^AT%u* ")) then
       for d = c + 1, #self.out do
         local o = self.out[d]
-        if o:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ")
-            or o:find(" DIRECT " .. id .. " ", 1, true) then
+        local plain = o:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ")
+        if plain or o:find(" DIRECT " .. id .. " ", 1, true) then
+          if plain and cond ~= "" then self.out[d] = cond .. o end
           table.remove(self.out, c)
           break
         end

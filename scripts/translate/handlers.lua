@@ -1011,10 +1011,12 @@ end
 -- "at four thousand reduce speed to 210", "(when) passing flight level 130
 -- reduce speed 250", "leaving FL340 maintain Mach .82", "when level flight level 350, speed Mach .78"
 -- ("level" after a condition word, as "reaching"); "after passing FL100 (resume own navigation) direct HEMEL"
--- (a direct-to waits for a level passed, left or reached): "ATALT id alt" or nil.
+-- (a direct-to waits for a level passed, left or reached; so does a switch of navigation: "on reaching FL120
+-- resume own navigation"): "ATALT id alt" or nil.
+local NAV_INTENTS = { direct = true, lnav = true, vnav = true }
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt"
-      and s.intent ~= "direct" and s.intent ~= "vs" then
+      and not NAV_INTENTS[s.intent] and s.intent ~= "vs" then
     return nil
   end
   -- ("after passing FL100 resume own navigation direct HEMEL": the words leading to the direct-to are a
@@ -1038,13 +1040,13 @@ function m:at_altitude(s)
   if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
-  if (s.intent == "maintain" or s.intent == "alt" or s.intent == "direct" or s.intent == "vs")
+  if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")
       and not self:word(a, "passing leaving reaching") then
     return nil
   end
   -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" and "leaving 11000
   -- descend at 1000 feet per minute" (the verb an imperative) a condition
-  if (s.intent == "alt" or s.intent == "direct" or s.intent == "vs")
+  if (s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")
       and not self:word_in(math.max(b, a - 2), a, "@condition") and self.t[s.trig].text:match("ing$") then
     return nil
   end

@@ -3182,8 +3182,8 @@ do
   check_eq(ex("SAS77 climb FL130, when passing FL100 proceed direct NIBAX"), "ALT SAS77 FL130 ; ATALT SAS77 FL100 DIRECT SAS77 NIBAX")
   check_eq(ex("FIN3 descend FL90, leaving FL120 fly heading 200"), "ALT FIN3 FL90 ; ATALT FIN3 FL120 HDG FIN3 200")
   check_eq(ex("SAS77 climb FL130, resume own navigation direct NIBAX"), "ALT SAS77 FL130 ; DIRECT SAS77 NIBAX")
-  check(ex("SAS77 climb FL130, when passing FL100 resume own navigation"):match("^ASK") ~= nil,
-    "a condition with no instruction waiting for it")
+  check_eq(ex("SAS77 climb FL130, when passing FL100 resume own navigation"),
+    "ALT SAS77 FL130 ; ATALT SAS77 FL100 LNAV SAS77 ON")
 end
 
 -- A distance from a navaid said by its name before the instruction that waits for it ("when 15 miles from
@@ -4223,6 +4223,10 @@ do
   check(ex("SAS31 when you reach it, slow to 230"):match("^ASK") ~= nil, "no level before 'when you reach it'")
   check(ex("SAS31 climb FL190, on reaching turn right 30 degrees"):match("^ASK") ~= nil, "a turn by degrees")
   check(ex("SAS31 direct KOBRA, slow to 230 when you get there"):match("^ASK") ~= nil, "no level before it")
+  -- (said after its instruction with "on reaching"; a level said in the condition holds a switch of navigation)
+  check_eq(ex("SAS31 descend FL110, own nav on reaching"), "ALT SAS31 FL110 ; ATALT SAS31 FL110 LNAV SAS31 ON")
+  check_eq(ex("SAS31 on reaching FL170 resume own navigation"), "ATALT SAS31 FL170 LNAV SAS31 ON")
+  check(ex("SAS31 slow to 230 on reaching"):match("^ASK") ~= nil, "no level before 'on reaching'")
   -- (the listener's convenience is no condition)
   check_eq(ex("SAS31 slow to 230 when you get a chance"), "SPD SAS31 230")
 end
