@@ -148,7 +148,10 @@ return {
         "if it helps", "if that helps", "in case it helps", "in case that helps",
         -- the pilot of an online network gone, the reason for removing the aircraft ("pilot dc'd")
         "pilot dc'd", "pilot dcd", "pilot dced", "pilot disconnected", "pilot went afk", "pilot is afk", "pilot afk",
-        "pilot timed out", "pilot logged off", "pilot is gone", "pilot gone",
+        "pilot timed out", "pilot logged off", "pilot is gone", "pilot gone", "pilot left", "pilot has left",
+        "pilot has disconnected", "connection lost", "lost connection", "lost his connection", "lost her connection",
+        -- the rest of a route kept after a direct-to ("dct BIG, rest of route unchanged")
+        "rest of route unchanged", "rest of the route unchanged", "rest of route as filed",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me",
         -- urgency, said with a negation ("descend FL150 without delay")
@@ -296,6 +299,10 @@ return {
     tl = { word = "turn left", next = "#number hdg heading" }, tr = { word = "turn right", next = "#number hdg heading" },
     fh = { word = "fly heading", next = "#number" },
     rsm = { word = "resume", next = "own normal nav navigation route speed" }, ctc = { word = "contact" },
+    dm = { word = "descend and maintain", next = "#number fl flight" },
+    cm = { word = "climb and maintain", next = "#number fl flight" },
+    recl = { word = "recleared", next = "#number fl flight" }, rv = { word = "radar vectors", next = "hdg heading" },
+    blw = { word = "below", next = "#number fl flight" }, abv = { word = "above", next = "#number fl flight" },
     red = { word = "reduce", next = "#number spd speed to", not_prev = "trail colour color a in" },
     pd = { word = "pilot's discretion", prev = "desc descend dsc dscnd dsnd climb clb clmb",
            next = "#number fl flight" },

@@ -4245,8 +4245,13 @@ do
   check_eq(ex("sas32 desc FL100 expd"), "ALT SAS32 FL100")
   check_eq(ex("sas32 mach .. err spd 240"), "SPD SAS32 240")
   check(ex("sas32 trail red"):match("^TRAIL ") ~= nil, "a trail's colour")
+  check_eq(ex("sas32 dm FL100"), "ALT SAS32 FL100")
+  check_eq(ex("sas32 rv hdg 200"), "HDG SAS32 200")
+  check_eq(ex("sas32 fh 200"), "HDG SAS32 200")
+  check_eq(ex("sas32 tl hdg 060"), "HDG SAS32 60 LEFT")
   check(ex("sas32 red"):match("^ASK") ~= nil, "'red' with no value is no speed")
   check(ex("sas32 pd"):match("^ASK") ~= nil, "'pd' alone")
+  check(ex("sas32 cm FL100"):match("^ASK") ~= nil, "a climb to a level below the aircraft")
 end
 
 -- A value held "until established" on the approach ("maint 8000 til established") is flown now, its end not
@@ -4270,6 +4275,8 @@ do
   check_eq(ex("del sas35, pilot dc'd"), "DEL SAS35")
   check_eq(ex("remove sas35 from the scope, he's disconnected"), "DEL SAS35")
   check_eq(ex("delete sas35 pilot went afk"), "DEL SAS35")
+  check_eq(ex("remove sas35, connection lost"), "DEL SAS35")
+  check_eq(ex("sas35 dct KOBRA, rest of route unchanged"), "DIRECT SAS35 KOBRA")
   check_eq(ex("sas35 say route"), "LISTRTE SAS35")
   check_eq(ex("sim run"), "OP")
   check_eq(ex("sim stop"), "HOLD")
