@@ -586,6 +586,10 @@ return {
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
       through = "speed level altitude" },
+    -- "EZY45KL resume normal speed": said to an aircraft, its speed restriction lifted (said alone, "resume
+    -- normal speed" is the simulation's rate, DTMULT 1)
+    { what = "restrictions lifted", words = "resume", near = { "speed" }, window = 2, after_callsign = true,
+      not_before = "speed", through = "speed" },
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",
