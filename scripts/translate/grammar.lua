@@ -2274,8 +2274,8 @@ function G:trailing_level(s)
   if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
   local reached = false
   for i = c + 1, q.b - 1 do
-    if self:word(i, "reaches reaching passes passing gets at") then reached = true
-    elseif not (self:word(i, "it he she they is to flight level") or self.t[i].filler
+    if self:word(i, "reaches reaching reach passes passing gets get at") then reached = true
+    elseif not (self:word(i, "it he she they you you're is are to flight level") or self.t[i].filler
                 or #self:refs_in(i, i + 1, "aircraft") > 0) then
       return nil
     end
@@ -2353,11 +2353,17 @@ end
 -- "when"/"once" to "level", "lvl", "there" or a verb of reaching.
 function G:trailing_reached(s)
   local c = self:find_word(s.trig + 1, s.e, "when once")
-  -- ("resume own nav on reaching": "on" before the verb of reaching)
-  local on = self:find_word(s.trig + 1, s.e, "on upon")
-  if on < c and self:word(self:skip_fillers(on + 1), "reaching") then c = on end
-  if c >= s.e then return nil end
+  -- ("resume own nav on reaching", "reduce 250 after reaching", "... after level", "reduce 250 reaching": "on",
+  -- "upon" or "after" before the verb of reaching or "level", or the verb alone)
+  local on = self:find_word(s.trig + 1, s.e, "on upon after reaching")
   local named = false
+  if on < c and self:word(on, "reaching") then
+    c, named = on, true
+  elseif on < c and self:word(self:skip_fillers(on + 1), self:word(on, "after") and "reaching level" or "reaching") then
+    c = on
+  end
+  -- (words another reading took, "report reaching", are no condition)
+  if c >= s.e or self.u:used(c) or self.u:used(self:skip_fillers(c + 1)) then return nil end
   for i = c + 1, s.e - 1 do
     if self:word(i, "there level lvl reach reaches reaching") then named = true
     elseif not (self.t[i].kind == "punct" or self.t[i].filler
@@ -3070,7 +3076,8 @@ function G:meaning_carried(i, kinds)
   local who = self.t[nx] and self.t[nx].kind == "word" and self.t[nx].text
   if who and (((text == "before" or text == "until") and (PERSONS[who] or who:match("%a%aing$")))
       or ((text == "when" or text == "whenever" or text == "once") and who:match("^you")
-        and not self:word_in(nx + 1, math.min(nx + 4, #self.t + 1), "reach reaches reaching there level lvl"))) then
+        and not self:word_in(nx + 1, math.min(nx + 4, #self.t + 1), "reach reaches reaching there level lvl")
+        and #self:quantities(nx + 1, math.min(nx + 5, #self.t + 1)) == 0)) then
     return true
   end
   -- "and after reduce the speed": "after" as "afterwards", before the next instruction

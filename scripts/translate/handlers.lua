@@ -1027,6 +1027,10 @@ function m:at_altitude(s)
     while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
   end
   local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach")
+  -- ("when you get to FL180 reduce 250", "once it gets to FL180": "to" after "get" is the verb's)
+  local got = self:find_word(b, s.trig, "get gets getting")
+  local got_to = got < a and self:word(got + 1, "to")
+  if got_to then a = got + 1 end
   if a >= s.trig and s.intent ~= "alt" then
     for i = b, s.trig - 1 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
@@ -1041,7 +1045,7 @@ function m:at_altitude(s)
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
   if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")
-      and not self:word(a, "passing leaving reaching") then
+      and not self:word(a, "passing leaving reaching") and not got_to then
     return nil
   end
   -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" and "leaving 11000
