@@ -176,8 +176,10 @@ local function know_all(v, seen)
   -- keep, lexicon.foreign_digits are digits only beside another, lexicon.atc_units name a station only
   -- in the addressing position, lexicon.label_roles only a speaker's label; lexicon.city_airports are places,
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
-  -- lexicon.nationless_registrations are letters of a registration: they account for no word)
+  -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
+  -- their words only where those fit: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
+      or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations then
@@ -742,8 +744,36 @@ local function lone_multipliers(text)
   return table.concat(out)
 end
 
+-- lexicon.typed_abbreviations read as the words they stand for, where the words beside them allow
+local ABBREVIATIONS = {}
+for abbr, a in pairs(lexicon.typed_abbreviations) do
+  ABBREVIATIONS[abbr] = { word = a.word, next = a.next and word_set(a.next, 1), prev = a.prev and word_set(a.prev, 1),
+    not_prev = a.not_prev and word_set(a.not_prev, 1) }
+end
+local function typed_abbreviations(text)
+  local toks = {}
+  for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
+  local function fits(set, k)
+    local w = bare(k)
+    return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil))
+  end
+  local changed = false
+  for k, w in ipairs(toks) do
+    local letters, punct = w:match("^(%a+)(%p*)$")
+    local a = letters and ABBREVIATIONS[letters:lower()]
+    if a and (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
+        and not (a.not_prev and fits(a.not_prev, k - 1)) then
+      toks[k], changed = a.word .. punct, true
+    end
+  end
+  return changed and table.concat(toks, " ") or text
+end
+
 local function written_forms(text)
-  text = lone_multipliers(text)
+  -- ".hold", ".run": a command typed with a text client's leading dot is the word
+  text = text:gsub("^(%s*)%.(%a)", "%1%2")
+  text = typed_abbreviations(lone_multipliers(text))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -2154,8 +2184,10 @@ function G:parse(b, e)
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut
       if (s.intent == "spd" or s.intent == "hdg") and not at then held, cut = self:trailing_level(s) end
-      -- "descend FL70 and reduce 180 kts when level": the instruction before's value, reached
-      local reached_cut = not held and not at and before and self:trailing_reached(s)
+      -- "descend FL70 and reduce 180 kts when level": the instruction before's value, reached ("reduce 220
+      -- when you reach it" with no level before it: asked, never run at once)
+      local reached_cut = not held and not at and self:trailing_reached(s)
+      local unheld = reached_cut and not before
       local s0 = s
       if reached_cut then
         self:mark_used(reached_cut, s.e)
@@ -2184,9 +2216,16 @@ function G:parse(b, e)
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig) then
         self.pending = self.pending or self.ask
         self.ask = nil
+      elseif unheld and not self.ask then
+        self:need("I have " .. table.concat(self.out, " ; ") .. ". No level was cleared before '"
+          .. self:raw(reached_cut, s0.e) .. "': which level should the last instruction wait for?")
       elseif (self:then_after(segs, k) or self:when_reached(s) or reached_cut) and before and #self.out == n_before + 1
-          and spec and spec.value
-          and ((self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD")
+          and spec
+          and ((spec.value and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD"))
+            -- ("climb FL090, on reaching resume own navigation", "when level direct LOREL": a switch of
+            -- navigation or a direct-to waits for the value reached as a speed does)
+            or (not self:then_after(segs, k) and self.out[#self.out]:match("^[LV]NAV ")
+                or self.out[#self.out]:match("^DIRECT %S+ %S+$"))
             -- ("descend FL230 and when level turn right heading 140": a heading said as one waits for the
             -- level reached too; a turn by degrees, counted from the heading now, is asked about)
             or (not self:then_after(segs, k) and self.out[#self.out]:match("^HDG ") and before:match("^ATALT ")
@@ -2209,6 +2248,16 @@ function G:parse(b, e)
         -- (a condition it cannot carry is asked about, never dropped)
         self:need("I have " .. table.concat(self.out, " ; ") .. ". When should the last instruction start: '"
           .. self:raw(reached_cut, s0.e) .. "'?")
+      elseif not at and not self.ask and #self.out > n_before and not self.out[#self.out]:match("^AT%u* ")
+          and self:when_reached(s) then
+        -- ("on reaching turn left 20 degrees", "when you reach it reduce 220" with no level before it: the
+        -- condition opening the clause is asked about, never dropped)
+        local c, e = self:find_word(s.b, s.trig, "@condition"), s.trig
+        if c >= s.trig then c = self:find_word(s.b, s.trig, "reaching") end
+        if self:word(c - 1, "on") then c = c - 1 end
+        while e > c + 1 and self.t[e - 1].kind == "punct" do e = e - 1 end
+        self:need("I have " .. table.concat(self.out, " ; ") .. ". When should the last instruction start: '"
+          .. self:raw(c, e) .. "'?")
       end
     end
     if corrected and self.ask then
@@ -2231,8 +2280,8 @@ function G:trailing_level(s)
   if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
   local reached = false
   for i = c + 1, q.b - 1 do
-    if self:word(i, "reaches reaching passes passing gets at") then reached = true
-    elseif not (self:word(i, "it he she they is to flight level") or self.t[i].filler
+    if self:word(i, "reaches reaching reach passes passing gets get at") then reached = true
+    elseif not (self:word(i, "it he she they you you're is are to flight level") or self.t[i].filler
                 or #self:refs_in(i, i + 1, "aircraft") > 0) then
       return nil
     end
@@ -2286,7 +2335,10 @@ function G:when_reached(s)
   local c = self:find_word(s.b, s.trig, "@condition")
   if c >= s.trig then
     -- ("climb FL370, reaching Mach .79", "on reaching reduce 250": "reaching" alone opening the clause)
+    -- (after the clause's callsign: "RYR8GN on reaching reduce 220")
     local v = self:skip_fillers(s.b)
+    for _, a in ipairs(self:refs_in(v, v + 1, "aircraft")) do v = self:skip_fillers(a.e) end
+    if self.t[v] and self.t[v].kind == "punct" then v = self:skip_fillers(v + 1) end
     if self:word(v, "on") then v = self:skip_fillers(v + 1) end
     return self:word(v, "reaching") and self:skip_fillers(v + 1) == s.trig
   end
@@ -2302,15 +2354,26 @@ function G:when_reached(s)
 end
 
 -- The same condition said after the instruction it holds, closing its segment ("reduce 180 kts when
--- level", "speed 250 once there", "when it's level please"): where its words begin, or nil. Only "it",
--- "is", "gets", "reaches" and fillers may join "when"/"once" to "level", "lvl" or "there".
+-- level", "speed 250 once there", "when it's level please", "reduce 220 when you reach it", "once it
+-- reaches that"): where its words begin, or nil. Only "it", "you", "is", "gets", "that" and fillers may join
+-- "when"/"once" to "level", "lvl", "there" or a verb of reaching.
 function G:trailing_reached(s)
   local c = self:find_word(s.trig + 1, s.e, "when once")
-  if c >= s.e then return nil end
+  -- ("resume own nav on reaching", "reduce 250 after reaching", "... after level", "reduce 250 reaching": "on",
+  -- "upon" or "after" before the verb of reaching or "level", or the verb alone)
+  local on = self:find_word(s.trig + 1, s.e, "on upon after reaching")
   local named = false
+  if on < c and self:word(on, "reaching") then
+    c, named = on, true
+  elseif on < c and self:word(self:skip_fillers(on + 1), self:word(on, "after") and "reaching level" or "reaching") then
+    c = on
+  end
+  -- (words another reading took, "report reaching", are no condition)
+  if c >= s.e or self.u:used(c) or self.u:used(self:skip_fillers(c + 1)) then return nil end
   for i = c + 1, s.e - 1 do
-    if self:word(i, "there level lvl") then named = true
-    elseif not (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "it it's its is gets reaches please")) then
+    if self:word(i, "there level lvl reach reaches reaching") then named = true
+    elseif not (self.t[i].kind == "punct" or self.t[i].filler
+        or self:word(i, "it it's its is gets get you you're are that please")) then
       return nil
     end
   end
@@ -2321,15 +2384,17 @@ end
 
 -- "resume own navigation direct TIMBA": BlueSky's DIRECT switches LNAV on, so
 -- an "LNAV id ON" followed by a DIRECT for the same aircraft is that DIRECT's (also one that waits
--- for a condition: "after passing FL100 resume own navigation direct HEMEL").
+-- for a condition: "after passing FL100 resume own navigation direct HEMEL": the condition the LNAV
+-- waited for is the DIRECT's).
 function G:direct_resumes_nav()
   for c = #self.out, 1, -1 do
-    local id = self.out[c]:match("^LNAV (%S+) ON$")
-    if id then
+    local cond, id = self.out[c]:match("^(.-)LNAV (%S+) ON$")
+    if id and (cond == "" or cond:match("^AT%u* ")) then
       for d = c + 1, #self.out do
         local o = self.out[d]
-        if o:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ")
-            or o:find(" DIRECT " .. id .. " ", 1, true) then
+        local plain = o:match("^DIRECT " .. id:gsub("%p", "%%%0") .. " ")
+        if plain or o:find(" DIRECT " .. id .. " ", 1, true) then
+          if plain and cond ~= "" then self.out[d] = cond .. o end
           table.remove(self.out, c)
           break
         end
@@ -2518,13 +2583,13 @@ function G:at_waypoint(s, spec)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
     end
     -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES": the level
-    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there as well (`level_by`: that
+    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there (`level_by`: that
     -- level, the only value said before "by" or "at"; only "level", "reach", "be", "to" and fillers beside it)
     local level_by
     local from = s.intent == "infer" and first or s.trig + 1
     local said_level = false  -- ("level" said as a word of its own, not in "flight level")
     for i = s.intent == "infer" and first or s.trig, r.b - 2 do
-      said_level = said_level or self:word(i, "reach reaching") or (self:word(i, "level") and not self:word(i - 1, "flight"))
+      said_level = said_level or self:word(i, "reach reaching lvl") or (self:word(i, "level") and not self:word(i - 1, "flight"))
     end
     if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at") and said_level then
       local qs = self:quantities(s.b, r.b - 1)
@@ -2532,7 +2597,7 @@ function G:at_waypoint(s, spec)
       for i = from, r.b - 2 do
         local inside = level_by and i >= level_by.b and i < level_by.e
         if not (inside or self.t[i].filler or (self.t[i].kind == "punct" and self.t[i].text == ",")
-            or self:word(i, "level reach reaching be to and")) then
+            or self:word(i, "level lvl reach reaching be to and")) then
           level_by = nil
         end
       end
@@ -2572,11 +2637,16 @@ function G:at_waypoint(s, spec)
       end
       for _, q in ipairs(said) do
         -- ("cross BEBEX at 6000": after a crossing, a bare number in hundreds of feet, 1000 or more, is a level)
+        -- (so is one after a climb or descent: "at MIRSI descend 4000", as the climb or descent alone reads it)
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)
-            or (crossed and q.kind == "plain" and q.value >= 1000 and q.value <= 60000 and q.value % 100 == 0)) then
+            or ((crossed or s.intent == "alt") and q.kind == "plain" and q.value >= 1000 and q.value <= 60000
+              and q.value % 100 == 0)) then
           alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
             or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))
+            -- ("at MIRSI reduce 210": a bare number of knots straight after a speed verb)
+            or (q.kind == "plain" and s.intent == "spd" and q.value >= 100 and q.value <= 400 and not q.number.decimal
+              and (q.b == self:skip_fillers(s.trig + 1) or (self:word(q.b - 1, "to") and q.b - 1 == self:skip_fillers(s.trig + 1))))
             -- "at MRG01 FL100 220": a bare number straight after the level is the speed (FL100/220)
             or (q.kind == "plain" and alt and self:skip_fillers(alt.e) == q.b and q.value >= 100 and q.value <= 400)) then
           spd = q
@@ -2584,9 +2654,11 @@ function G:at_waypoint(s, spec)
       end
       if in_route and not other and (alt or spd) then
         -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
-        -- or below FL150"): its command first, from the words before the crossing
+        -- or below FL150"): its command first, from the words before the crossing. A level to be reached by
+        -- the waypoint is that constraint alone, never a level cleared now as well ("descend FL100 to be
+        -- level by BIG": the AT constraint only)
         local lead = be_at and be_at < r.b and be_at - 2 or r.b - 1
-        if spec and spec.handler and s.trig < lead and #self:quantities(s.b, lead) > 0 then
+        if spec and spec.handler and not level_by and s.trig < lead and #self:quantities(s.b, lead) > 0 then
           self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = lead }, spec)
         end
         -- "cross SUGOL at or above FL150", "at least 250 knots": BlueSky's AT sets the exact value, so a
@@ -3006,9 +3078,12 @@ function G:meaning_carried(i, kinds)
   local text, nx = self.t[i].text, self:skip_fillers(i + 1)
   -- "before we add any traffic", "until I say stop", "before creating anything": the speaker's own next
   -- step, which a command run now precedes; "when you get a sec": the listener's convenience
+  -- (never "when you reach it", "once you get there", "when you're level": the level reached, a condition)
   local who = self.t[nx] and self.t[nx].kind == "word" and self.t[nx].text
   if who and (((text == "before" or text == "until") and (PERSONS[who] or who:match("%a%aing$")))
-      or ((text == "when" or text == "whenever" or text == "once") and who:match("^you"))) then
+      or ((text == "when" or text == "whenever" or text == "once") and who:match("^you")
+        and not self:word_in(nx + 1, math.min(nx + 4, #self.t + 1), "reach reaches reaching there level lvl")
+        and #self:quantities(nx + 1, math.min(nx + 5, #self.t + 1)) == 0)) then
     return true
   end
   -- "and after reduce the speed": "after" as "afterwards", before the next instruction
@@ -3591,11 +3666,22 @@ function G:navaid_named_before(i)
 end
 
 -- True when the place named just after token i ends the request ("keep speed 280 until VAKNO", a full
--- stop or question mark after it at most).
-function G:said_last(i)
+-- stop or question mark after it at most); with no place, when the words after it do, each a number, a
+-- unit of distance or one of `near` ("reduce 160 knots until 4 DME", "until established").
+function G:said_last(i, near)
   local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
-  if not r then return false end
-  local k = self:skip_fillers(r.e)
+  local k
+  if r then
+    k = self:skip_fillers(r.e)
+  elseif near then
+    k = i + 1
+    while self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word or self.t[k].filler
+        or self:word(k, "@fraction_units") or self:word(k, near)) do
+      k = k + 1
+    end
+  else
+    return false
+  end
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   return k > #self.t
 end
@@ -3616,7 +3702,7 @@ function G:not_simulated()
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
-            and (not c.last or self:said_last(i))
+            and (not c.last or self:said_last(i, c.last ~= true and c.last or nil))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
           class = c
           break

@@ -1073,10 +1073,12 @@ end
 -- "at four thousand reduce speed to 210", "(when) passing flight level 130
 -- reduce speed 250", "leaving FL340 maintain Mach .82", "when level flight level 350, speed Mach .78"
 -- ("level" after a condition word, as "reaching"); "after passing FL100 (resume own navigation) direct HEMEL"
--- (a direct-to waits for a level passed, left or reached): "ATALT id alt" or nil.
+-- (a direct-to waits for a level passed, left or reached; so does a switch of navigation: "on reaching FL120
+-- resume own navigation"): "ATALT id alt" or nil.
+local NAV_INTENTS = { direct = true, lnav = true, vnav = true }
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt"
-      and s.intent ~= "direct" and s.intent ~= "vs" then
+      and not NAV_INTENTS[s.intent] and s.intent ~= "vs" then
     return nil
   end
   -- ("after passing FL100 resume own navigation direct HEMEL": the words leading to the direct-to are a
@@ -1087,6 +1089,10 @@ function m:at_altitude(s)
     while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
   end
   local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach")
+  -- ("when you get to FL180 reduce 250", "once it gets to FL180": "to" after "get" is the verb's)
+  local got = self:find_word(b, s.trig, "get gets getting")
+  local got_to = got < a and self:word(got + 1, "to")
+  if got_to then a = got + 1 end
   if a >= s.trig and s.intent ~= "alt" then
     for i = b, s.trig - 1 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
@@ -1100,13 +1106,13 @@ function m:at_altitude(s)
   if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
-  if (s.intent == "maintain" or s.intent == "alt" or s.intent == "direct" or s.intent == "vs")
-      and not self:word(a, "passing leaving reaching") then
+  if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")
+      and not self:word(a, "passing leaving reaching") and not got_to then
     return nil
   end
   -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" and "leaving 11000
   -- descend at 1000 feet per minute" (the verb an imperative) a condition
-  if (s.intent == "alt" or s.intent == "direct" or s.intent == "vs")
+  if (s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")
       and not self:word_in(math.max(b, a - 2), a, "@condition") and self.t[s.trig].text:match("ing$") then
     return nil
   end

@@ -53,6 +53,8 @@ return function(H, f, wrap, compass)
           -- so is a value with knots one word further on ("maintain two one, uh, turn knots")
           local k = self:skip_fillers(q.e)
           local knots = self:word(k, "@speed_units") or self:word(self:skip_fillers(k + 1), "@speed_units")
+            -- ("maintain 280 or greater": a speed's bound; a level's is "or above")
+            or (self:word(k, "or") and self:word(k + 1, "greater faster"))
           -- "keep it at 230", typed with no unit: a flight level or a speed? The aircraft's own present
           -- level or speed says which is kept; otherwise asked
           if q.number.typed and not knots and q.value >= 100 and q.value <= 400 and q.value == math.floor(q.value)

@@ -110,7 +110,11 @@ return {
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
         "thx", "pls", "haha", "idk",
         -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")
-        "bugged", "buggy", "glitched", "glitchy", "coffee", "lunch", "brb" },
+        "bugged", "buggy", "glitched", "glitchy", "coffee", "lunch", "brb",
+        -- a pilot of an online network gone, given as the reason for removing the aircraft ("dc'd", "he's
+        -- disconnected", "went afk", "timed out"; "pilot" with them: courtesy_phrases)
+        "dc'd", "dcd", "dced", "disconnected", "disconnect", "disconnects", "afk", "offline", "logged", "timed",
+        "went", "gone", "network", "vatsim", "ivao" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
@@ -149,6 +153,12 @@ return {
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
         -- help offered with a value given twice ("... -- that's 50.7 / 16.2 in decimal if it helps")
         "if it helps", "if that helps", "in case it helps", "in case that helps",
+        -- the pilot of an online network gone, the reason for removing the aircraft ("pilot dc'd")
+        "pilot dc'd", "pilot dcd", "pilot dced", "pilot disconnected", "pilot went afk", "pilot is afk", "pilot afk",
+        "pilot timed out", "pilot logged off", "pilot is gone", "pilot gone", "pilot left", "pilot has left",
+        "pilot has disconnected", "connection lost", "lost connection", "lost his connection", "lost her connection",
+        -- the rest of a route kept after a direct-to ("dct BIG, rest of route unchanged")
+        "rest of route unchanged", "rest of the route unchanged", "rest of route as filed",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me",
         -- urgency, said with a negation ("descend FL150 without delay")
@@ -285,6 +295,29 @@ return {
                 -- (two letters swapped, or the vowels left out: "hgd 240", "sdp 270", "rdc 250 kts")
                 hgd = "heading", sdp = "speed", rdc = "reduce",
                 rod = "rate of descent", roc = "rate of climb" },
+  -- controllers' typed abbreviations of instruction words (text ATC on the online networks), read as the
+  -- words they stand for where a word beside them shows the instruction: `word`, the words read; `next` /
+  -- `prev`, words one of which must be the next / the previous word ("#number": a value typed with digits,
+  -- "fl180" too); `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct TRN" is
+  -- Turnberry, "trail red" a colour, "Red Cap" an airline).
+  typed_abbreviations = {
+    expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until" },
+    maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
+    mnt = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
+    trn = { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
+    tl = { word = "turn left", next = "#number hdg heading" }, tr = { word = "turn right", next = "#number hdg heading" },
+    fh = { word = "fly heading", next = "#number" },
+    rsm = { word = "resume", next = "own normal nav navigation route speed" }, ctc = { word = "contact" },
+    dm = { word = "descend and maintain", next = "#number fl flight" },
+    cm = { word = "climb and maintain", next = "#number fl flight" },
+    recl = { word = "recleared", next = "#number fl flight" }, rv = { word = "radar vectors", next = "hdg heading" },
+    blw = { word = "below", next = "#number fl flight" }, abv = { word = "above", next = "#number fl flight" },
+    red = { word = "reduce", next = "#number spd speed to", not_prev = "trail colour color a in" },
+    pd = { word = "pilot's discretion", prev = "desc descend dsc dscnd dsnd climb clb clmb",
+           next = "#number fl flight" },
+    -- (hesitations typed as said: "mach .. err spd 270")
+    err = { word = "uh" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
+    uhm = { word = "uh" }, ehm = { word = "uh" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",
@@ -553,14 +586,26 @@ return {
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
     { what = "altimeter settings", words = "altimeter qnh qfe" },
+    -- "JetBlue 1123, wind 310 at 15, reduce 190": the surface wind told to the aircraft addressed, no
+    -- setting of the simulation's wind (said with no callsign before it, "wind 310 at 15" is WIND's)
+    { what = "wind reports", words = "wind", near = { "#number" }, window = 1, after_callsign = true },
     -- "keep speed 280 until VAKNO", "maintain FL200 till DETAK": the value is flown now, its end at the
     -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
       last = true },
+    -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
+    -- approach, said straight after the word and last (`last`: the words it may hold). (One ending at a
+    -- distance, "until 4 DME", is asked about: R51's writer read it as a meaning squawk cannot place.)
+    { what = "limits that end on the approach", words = "until till", near = { "established" }, window = 1,
+      after_instruction = true, last = "established on the localizer localiser ils final approach" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
       through = "speed level altitude" },
+    -- "EZY45KL resume normal speed": said to an aircraft, its speed restriction lifted (said alone, "resume
+    -- normal speed" is the simulation's rate, DTMULT 1)
+    { what = "restrictions lifted", words = "resume", near = { "speed" }, window = 2, after_callsign = true,
+      not_before = "speed", through = "speed" },
     -- "turn right heading 330, vectors for runway 28", "vectoring for the ILS": what a vector is for, a
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",

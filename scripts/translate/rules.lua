@@ -962,6 +962,8 @@ return function(intent, rule, words)
   rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
          not_prev = { 1, "your our my" } }
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
+  -- "ryr8gn say route", "say your routing": the aircraft asked for its route, as "say altitude" for its state
+  rule { "route rte routing", "listrte", prev = { 2, "say" } }
   -- "show me KLM one two seven six's route": the verb before the aircraft the route is of
   -- ("pull up Air Canada 871's flight plan", "bring up the KLM's route")
   rule { "route waypoints plan routing", "listrte", when = function(g, i)
@@ -1184,6 +1186,13 @@ return function(intent, rule, words)
   end }
   -- "go", "resume (please)": the whole request starts the clock
   rule { "go resume run", "op", when = function(g, i) return g:alone(i) end }  -- ("ok run")
+  -- "sim run", "sim start", "sim stop": the simulation named before its verb, said alone or as a clause
+  rule { "go run start", "op", prev = { 1, "@sim" }, when = function(g, i)
+    return g:alone_but(i - 1, i + 1) or g:clause_alone(i - 1, i + 1)
+  end }
+  rule { "stop", "hold", prev = { 1, "@sim" }, when = function(g, i)
+    return g:alone_but(i - 1, i + 1) or g:clause_alone(i - 1, i + 1)
+  end }
   -- "resume nav past cpa", "resume navigation once past the CPA": how aircraft resume after a resolution
   rule { "resume resumes", "resnav", near = { 6, "cpa" } }
   rule { "resume", "lnav", near = { 3, "navigation nav route" } }

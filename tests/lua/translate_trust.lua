@@ -3184,8 +3184,8 @@ do
   check_eq(ex("SAS77 climb FL130, when passing FL100 proceed direct NIBAX"), "ALT SAS77 FL130 ; ATALT SAS77 FL100 DIRECT SAS77 NIBAX")
   check_eq(ex("FIN3 descend FL90, leaving FL120 fly heading 200"), "ALT FIN3 FL90 ; ATALT FIN3 FL120 HDG FIN3 200")
   check_eq(ex("SAS77 climb FL130, resume own navigation direct NIBAX"), "ALT SAS77 FL130 ; DIRECT SAS77 NIBAX")
-  check(ex("SAS77 climb FL130, when passing FL100 resume own navigation"):match("^ASK") ~= nil,
-    "a condition with no instruction waiting for it")
+  check_eq(ex("SAS77 climb FL130, when passing FL100 resume own navigation"),
+    "ALT SAS77 FL130 ; ATALT SAS77 FL100 LNAV SAS77 ON")
 end
 
 -- A distance from a navaid said by its name before the instruction that waits for it ("when 15 miles from
@@ -3961,15 +3961,18 @@ do
 end
 
 -- A climb or descent to be level by a waypoint of the route ("descend FL240 level by ALFA", "descend to
--- reach FL240 by ALFA", "be level FL240 by ALFA"): the level is an AT constraint there as well; a waypoint
--- off the route, or another value said after it, is asked about
+-- reach FL240 by ALFA", "be level FL240 by ALFA"): the level is one AT constraint there, never a level
+-- cleared now as well; a waypoint off the route, or another value said after it, is asked about
 do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "DEFWPT ALFA 52.1 4.5", "DEFWPT BRAVO 52.3 4.9",
     "ADDWPT KLM12 ALFA" })
-  check_eq(ex("KLM12 descend FL240 level by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
-  check_eq(ex("KLM12 descend to reach FL240 by ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL240 level by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend to reach FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12, be level FL240 by ALFA"), "AT KLM12 ALFA ALT FL240")
-  check_eq(ex("KLM12 descend FL240 to be level at ALFA"), "ALT KLM12 FL240 ; AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL240 to be level at ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(ex("klm12 desc FL240 to be lvl by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check_eq(ex("KLM12 descend FL240, to be level by ALFA"), "AT KLM12 ALFA ALT FL240")
+  check(ex("KLM12 descend FL240 by ALFA"):match("^ASK") ~= nil, "no 'level' or 'reach': by the waypoint or a change?")
   check(ex("KLM12 descend FL240 level by BRAVO"):match("^ASK") ~= nil, "BRAVO is off the route")
   check(ex("KLM12 descend FL240 level by ALFA 250 knots"):match("^ASK") ~= nil, "a speed after the waypoint")
 end
@@ -4381,4 +4384,109 @@ do
   -- ("go to X" is a direct-to, a waypoint added or a destination as writers mean it: asked)
   check(ex("JAT9 go to the waypoint KALUX"):match("^ASK") ~= nil, "go to a waypoint")
   check_eq(ex("JAT9 rise to FL200"), "ALT JAT9 FL200")
+end
+
+-- A condition of the level reached ("on reaching", "when level", "when you reach it", "once there") is
+-- carried or asked, never dropped: after a level cleared it holds a speed, a heading, a switch of navigation
+-- or a direct-to (ATALT); said after its instruction it holds it the same; with no level before it, or
+-- before a turn by degrees, it is asked about
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.6 12.6 090 FL150 250", "DEFWPT KOBRA 55.8 13.4", "ADDWPT SAS31 KOBRA" })
+  check_eq(ex("sas31 climb FL190 on reaching resume own navigation"),
+    "ALT SAS31 FL190 ; ATALT SAS31 FL190 LNAV SAS31 ON")
+  check_eq(ex("SAS31 descend FL110, when level own nav"), "ALT SAS31 FL110 ; ATALT SAS31 FL110 LNAV SAS31 ON")
+  check_eq(ex("SAS31 descend FL110, on reaching direct KOBRA"),
+    "ALT SAS31 FL110 ; ATALT SAS31 FL110 DIRECT SAS31 KOBRA")
+  check_eq(ex("SAS31 climb FL190, slow to 230 once you get there"),
+    "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
+  check_eq(ex("SAS31 climb FL190, speed 230 when you're level"), "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
+  check(ex("SAS31 slow to 230 when you reach it"):match("^ASK") ~= nil, "no level before 'when you reach it'")
+  check(ex("SAS31 speed 230 once there"):match("^ASK") ~= nil, "no level before 'once there'")
+  check(ex("SAS31 on reaching slow to 230"):match("^ASK") ~= nil, "no level before 'on reaching'")
+  check(ex("SAS31 when you reach it, slow to 230"):match("^ASK") ~= nil, "no level before 'when you reach it'")
+  check(ex("SAS31 climb FL190, on reaching turn right 30 degrees"):match("^ASK") ~= nil, "a turn by degrees")
+  check(ex("SAS31 direct KOBRA, slow to 230 when you get there"):match("^ASK") ~= nil, "no level before it")
+  -- (said after its instruction with "on reaching"; a level said in the condition holds a switch of navigation)
+  check_eq(ex("SAS31 descend FL110, own nav on reaching"), "ALT SAS31 FL110 ; ATALT SAS31 FL110 LNAV SAS31 ON")
+  check_eq(ex("SAS31 on reaching FL170 resume own navigation"), "ATALT SAS31 FL170 LNAV SAS31 ON")
+  check(ex("SAS31 slow to 230 on reaching"):match("^ASK") ~= nil, "no level before 'on reaching'")
+  check_eq(ex("SAS31 climb FL190, slow to 230 after reaching"), "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
+  check_eq(ex("SAS31 climb FL190, slow to 230 reaching"), "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
+  -- (a report asked for is no condition)
+  check(ex("SAS31 climb FL190, report reaching"):find("ATALT", 1, true) == nil, "a report asked for")
+  -- ("when you get to FL170": the level reached, never a level to fly and the speed at once)
+  check_eq(ex("SAS31 when you get to FL170 slow to 230"), "ATALT SAS31 FL170 SPD SAS31 230")
+  check_eq(ex("SAS31 once it gets to FL170 resume own navigation"), "ATALT SAS31 FL170 LNAV SAS31 ON")
+  check_eq(ex("SAS31 slow to 230 once you get to FL170"), "ATALT SAS31 FL170 SPD SAS31 230")
+  -- (the listener's convenience is no condition)
+  check_eq(ex("SAS31 slow to 230 when you get a chance"), "SPD SAS31 230")
+end
+
+-- Text-ATC typed abbreviations of instruction words ("trn lft 15", "red 220", "desc pd FL150", "expd desc",
+-- "maint 280 kts", "til") are read as the words where a word beside them shows the instruction; elsewhere
+-- they stay as typed ("trail red" is a colour, "direct TRN" a place); a typed hesitation ("err") is one
+do
+  local _, ex = scene({ "CRE SAS32 A320 55.6 12.6 090 FL150 250", "CRE SAS33 A320 55.9 12.9 270 FL150 250" })
+  check_eq(ex("sas32 trn lft 15"), "HDG SAS32 75 LEFT")
+  check_eq(ex("sas32 trn rt hdg 120"), "HDG SAS32 120 RIGHT")
+  check_eq(ex("sas32 red 220"), "SPD SAS32 220")
+  check_eq(ex("sas32 hdg 120, red 210, desc FL90"), "HDG SAS32 120 ; SPD SAS32 210 ; ALT SAS32 FL90")
+  check_eq(ex("sas32 desc pd FL100"), "ALT SAS32 FL100")
+  check_eq(ex("sas32 expd desc 3000 fpm"), "VS SAS32 -3000")
+  check_eq(ex("sas32 desc FL100 expd"), "ALT SAS32 FL100")
+  check_eq(ex("sas32 mach .. err spd 240"), "SPD SAS32 240")
+  check(ex("sas32 trail red"):match("^TRAIL ") ~= nil, "a trail's colour")
+  check_eq(ex("sas32 dm FL100"), "ALT SAS32 FL100")
+  check_eq(ex("sas32 rv hdg 200"), "HDG SAS32 200")
+  check_eq(ex("sas32 fh 200"), "HDG SAS32 200")
+  check_eq(ex("sas32 tl hdg 060"), "HDG SAS32 60 LEFT")
+  check(ex("sas32 red"):match("^ASK") ~= nil, "'red' with no value is no speed")
+  check(ex("sas32 pd"):match("^ASK") ~= nil, "'pd' alone")
+  check(ex("sas32 cm FL100"):match("^ASK") ~= nil, "a climb to a level below the aircraft")
+end
+
+-- A value held "until established" on the approach ("maint 8000 til established") is flown now, its end not
+-- kept (named as not simulated), when the limit ends the request; an instruction after it, which waits for
+-- it, is asked about, and so is a limit at a distance ("until 4 dme"). "maintain 280 or greater" is a speed
+do
+  local _, ex = scene({ "CRE SAS34 A320 55.6 12.6 090 FL150 250" })
+  check_eq(ex("SAS34 heading 200, maint 4000 til established"), "HDG SAS34 200 ; ALT SAS34 4000")
+  check_eq(ex("SAS34 maintain 180 knots until established on the localizer"), "SPD SAS34 180")
+  check_eq(ex("SAS34 maintain 230 or greater"), "SPD SAS34 230")
+  check(ex("SAS34 maintain 180 knots until established, then descend 3000"):match("^ASK") ~= nil,
+    "an instruction waiting for the limit")
+  check(ex("sas34 red 160 kts until 4 dme"):match("^ASK") ~= nil, "a limit at a distance")
+end
+
+-- The online network's words for a pilot gone, given as the reason for removing the aircraft ("pilot dc'd",
+-- "he's disconnected", "pilot went afk") carry nothing; "say route" lists the route; "sim run", ".hold" (a
+-- text client's dot command) run and hold the clock; the wind told to an aircraft addressed is no WIND
+do
+  local _, ex = scene({ "CRE SAS35 A320 55.6 12.6 090 FL150 250", "DEFWPT KOBRA 55.8 13.4", "ADDWPT SAS35 KOBRA" })
+  check_eq(ex("del sas35, pilot dc'd"), "DEL SAS35")
+  check_eq(ex("remove sas35 from the scope, he's disconnected"), "DEL SAS35")
+  check_eq(ex("delete sas35 pilot went afk"), "DEL SAS35")
+  check_eq(ex("remove sas35, connection lost"), "DEL SAS35")
+  -- (said to an aircraft, "resume normal speed" lifts its speed restriction, no simulation rate)
+  check_eq(ex("sas35 resume normal speed, descend FL100"), "ALT SAS35 FL100")
+  check_eq(ex("resume normal speed"), "DTMULT 1")
+  check_eq(ex("sas35 resume normal navigation"), "LNAV SAS35 ON")
+  check_eq(ex("sas35 dct KOBRA, rest of route unchanged"), "DIRECT SAS35 KOBRA")
+  check_eq(ex("sas35 say route"), "LISTRTE SAS35")
+  check_eq(ex("sim run"), "OP")
+  check_eq(ex("sim stop"), "HOLD")
+  check_eq(ex(".hold"), "HOLD")
+  check_eq(ex("scandinavian 35, wind 240 at 12, reduce 200"), "SPD SAS35 200")
+  check(ex("sas35 pilot went afk"):match("^ASK") ~= nil, "a reason with no instruction")
+end
+
+-- A clause opening "at WPT" before a climb, descent or speed change with a bare number ("at KOBRA desc
+-- 4000", "at KOBRA reduce 210") is the AT constraint there, as the instruction alone reads the number
+do
+  local _, ex = scene({ "CRE SAS36 A320 55.6 12.6 090 7000 250", "DEFWPT KOBRA 55.8 13.4", "DEFWPT LUPUS 55.1 13.0",
+    "ADDWPT SAS36 KOBRA" })
+  check_eq(ex("SAS36 at KOBRA desc 4000"), "AT SAS36 KOBRA ALT 4000")
+  check_eq(ex("SAS36 at KOBRA reduce to 210"), "AT SAS36 KOBRA SPD 210")
+  check(ex("SAS36 at LUPUS desc 4000"):match("^ASK") ~= nil, "a waypoint off the route")
+  check(ex("SAS36 at KOBRA descend 40"):match("^ASK") ~= nil, "a bare number under 1000")
 end
