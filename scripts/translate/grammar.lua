@@ -501,7 +501,21 @@ local function bare_words(text)
 end
 local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
   set_of(lexicon.self_correction.markers), set_of(lexicon.self_correction.after)
+-- patterns finding the first word of each marker as a whole word in lower-case text (a marker's word is
+-- a token's bare text only where one of these finds it)
+local SC_MARKER_PATTERNS = {}
+for _, m in ipairs(lexicon.self_correction.markers) do
+  SC_MARKER_PATTERNS[#SC_MARKER_PATTERNS + 1] = "%f[%w]" .. m:match("^%S+") .. "%f[%W]"
+end
+-- True when the lower-case text holds one of the words of `patterns` (whole-word patterns, as above).
+local function holds_word(lower, patterns)
+  for _, p in ipairs(patterns) do
+    if lower:find(p) then return true end
+  end
+  return false
+end
 local function self_corrections(text)
+  if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
   local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
@@ -539,7 +553,10 @@ for _, p in ipairs(lexicon.readback_heard) do
   READBACK_HEARD[first] = READBACK_HEARD[first] or {}
   table.insert(READBACK_HEARD[first], p)
 end
+local READBACK_HEARD_PATTERNS = {}
+for first in pairs(READBACK_HEARD) do READBACK_HEARD_PATTERNS[#READBACK_HEARD_PATTERNS + 1] = "%f[%w]" .. first .. "%f[%W]" end
 local function readback_heard(text)
+  if not holds_word(text:lower(), READBACK_HEARD_PATTERNS) then return text end
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local seen_value = false
@@ -940,6 +957,35 @@ function G:find_word(b, e, words)
   return e
 end
 
+-- LIST_WORDS[words]: the words G:word(i, words) is true for, as an array
+local LIST_WORDS = {}
+-- True when a word of `words` may be in the request: it was when the request was first asked about (a word
+-- is only ever blanked, so a false stays true). A guard in front of a scan of every position for words
+-- that are seldom said.
+function G:said(words)
+  local present = self.present  -- per request: present[w] for each word said
+  if not present then
+    present = {}
+    local texts = self.words
+    for k = 1, #texts do
+      if texts[k] then present[texts[k]] = true end
+    end
+    self.present = present
+  end
+  local list = LIST_WORDS[words]
+  if not list then
+    list = {}
+    for w, v in pairs(set_cache[words] or word_set(words, 2)) do
+      if v == true then list[#list + 1] = w end
+    end
+    LIST_WORDS[words] = list
+  end
+  for k = 1, #list do
+    if present[list[k]] then return true end
+  end
+  return false
+end
+
 function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self.t + 1, i + 1 + span), words) end
 -- True when position i lies in a reason given for an instruction, which runs
 -- from "because", "since" or "so that/it/they" to the end of the sentence
@@ -1119,6 +1165,7 @@ function G:in_reason(i)
     local commas = 0          -- the commas up to k (self.apart: those that were a dash or a bracket)
     local lead_end            -- the comma that ends a lead-in ("For the overtake case, ...")
     local toks, reason = self.t, self.reason
+    local opening = self:skip_fillers(1)  -- (the request's first word)
     for k = 1, #toks do
       reason[k] = inside
       local t = toks[k]
@@ -1146,7 +1193,7 @@ function G:in_reason(i)
       elseif start and t.kind == "word" and study_label_end(self, k) then
         -- ("exp CDR-FR-ES, run 1. cre AFR1234 ...": an experiment's label, up to its full stop or colon)
         inside, reason[k] = true, true
-      elseif k == self:skip_fillers(1) and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
+      elseif k == opening and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
           and title_end(self, k) then
         -- ("converging pair please: KLM401 B738 at ...": a title opening the request, up to its colon)
         inside, lead_end, self.reason[k] = true, title_end(self, k), true
@@ -1403,7 +1450,19 @@ function G:intent_at(i)
   if not w or self.u:used(i) then return nil end
   local next_word = texts[i + 1]
   local said = self.said_sets or sets_said(self)
-  for _, r in ipairs(RULES_BY_WORD[w] or ANY_RULES) do
+  local rules = RULES_BY_WORD[w]
+  if not rules then
+    -- (per request: the "*" rules whose near or prev set is said, the others never fire)
+    rules = self.any_rules
+    if not rules then
+      rules = {}
+      for _, r in ipairs(ANY_RULES) do
+        if (not r.near or said[r.near[2]]) and (not r.prev or said[r.prev[2]]) then rules[#rules + 1] = r end
+      end
+      self.any_rules = rules
+    end
+  end
+  for _, r in ipairs(rules) do
     -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
     -- of whose words is said is not looked for)
     local near, not_near, prev, not_prev = r.near, r.not_near, r.prev, r.not_prev
@@ -1437,6 +1496,7 @@ end
 local REACHING = { passes = true, reaches = true, crosses = true, hits = true, passing = true, reaching = true,
                    crossing = true, through = true }
 function G:trailing_level_condition()
+  if not self:said("by once when") then return nil end
   for k = 2, #self.t do
     local by_time = self:word(k, "by") and self:word(k + 1, "the") and self:word(k + 2, "time")
     local by_level = self:word(k, "by") and not by_time
@@ -1477,6 +1537,7 @@ end
 -- level to fly. ("climb until FL250", "rate of descent 2000 fpm until FL100": the level to fly, read by the
 -- handlers.)
 function G:level_limits()
+  if not self:said("until till") then return end
   for i = 1, #self.t do
     if self:word(i, "until till") then
       local v = self:skip_fillers(i + 1)
@@ -1973,7 +2034,7 @@ function G:self_corrected()
     -- ("add BOBTA then DEBEK, actually just add ERBUS at the end of his route": with no instruction word
     -- before the run, the instruction said in its place names its verb again; the words from that verb's
     -- first saying are taken back)
-    local v = self:word(c, SC_ONLY) and c + 1 or c
+    local v = marked and self:word(c, SC_ONLY) and c + 1 or c
     if marked and p < 1 and v <= #self.t and self:intent_at(v) and self.t[v].kind == "word" then
       for k = a - 1, 1, -1 do
         if self.t[k].kind == "word" and self.t[k].text == self.t[v].text then
@@ -2677,7 +2738,7 @@ function G:unexplained(s, n_before)
     for _, n in ipairs(line_numbers(self.out[c])) do nums[#nums + 1] = n end
   end
   local corrected = 0
-  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corrected = i end end
+  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corrected = i end end
   local relative = self:word_in(s.b, s.e, "@relative @same_as @below @above")
   -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7")
   local opened = s.intent ~= "infer" and s.trig or nil
@@ -2725,7 +2786,7 @@ function G:uncarried()
     for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
   end
   local corrected = 0
-  for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
+  for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
   local first = 1
   -- (a word of direction or motion, "go higher to 36000" unread, opens the instructions as a verb does)
   while first <= #self.t and not self:intent_at(first) and not (self.t[first].kind == "word"
@@ -3187,9 +3248,10 @@ function G:explained_spans(issued, kinds)
       inside[r.b - 2] = true
     end
   end
+  local replaced = self:said("instead rather")
   for i = 1, #self.t do
     -- "to SFO instead of Oakland", "Stansted rather than Luton": the name replaced
-    if ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
+    if replaced and ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
         and self.t[i + 2] and self.t[i + 2].raw:match("^%u") then
       inside[i], inside[i + 2] = true, true
     end
@@ -3272,6 +3334,7 @@ end
 -- word of lexicon.forget ("the" and "about" between at most) is taken out of the request: no command names it.
 -- Nothing left asks for the instruction again.
 function G:forgotten()
+  if not self:said("@forget") then return end
   for i = 1, #self.t do
     if self:word(i, "@forget") then
       local k = self:skip_fillers(i + 1)
@@ -3513,6 +3576,7 @@ end
 -- (lexicon.runway_sides) name the runway, never a value or a turn's direction ("zero one left" is no
 -- turn of 1 degree left): they are marked used and the side is made a filler.
 function G:runway_sides()
+  if not self:said("@runway") then return end
   for i = 1, #self.t - 2 do
     if self:word(i, "@runway") then
       -- its number: typed ("27") or said digit by digit ("two seven", "zero one")
@@ -3546,6 +3610,7 @@ end
 -- give (a request refused); its tokens are marked used and explained, no instruction of their own ("if
 -- unable FL380, ..." is a condition on the pilot, left to the parse).
 function G:refused()
+  if not self:said("unable") then return end
   for i = 1, #self.t - 1 do
     local q = self:word(i, "unable") and not self:word(i - 1, "if") and self:quantities(i + 1, #self.t + 1)[1]
     if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
@@ -3729,6 +3794,7 @@ for _, p in ipairs(lexicon.discretion) do
   DISCRETION[#DISCRETION + 1] = words
 end
 function G:discretion_without_level()
+  if not self:said("climb descend climbing descending") then return end
   for i = 1, #self.t do
     if self:word(i, "climb descend climbing descending") then
       local k = self:skip_fillers(i + 1)
@@ -4140,6 +4206,9 @@ end
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
   after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
 local TYPED_PLACE_NM = 250
+-- patterns finding a word of PLACE_SLOTS as a whole word in " " .. lower-case text .. " "
+local PLACE_SLOT_PATTERNS = {}
+for w in pairs(PLACE_SLOTS) do PLACE_SLOT_PATTERNS[#PLACE_SLOT_PATTERNS + 1] = "%s" .. w .. "%s" end
 -- "destination c y v r", "origin boston k b o s": four single letters spelled in a row (none before or after)
 -- that join into an airport's ICAO code the navdata holds (world.airport_class), and no aircraft's id, are
 -- that code
@@ -4164,6 +4233,15 @@ local function spelled_airports(text, world)
 end
 local function typed_places(text, world)
   if not world.place_known then return text end
+  -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
+  local padded, slots = " " .. text:lower() .. " ", false
+  for _, p in ipairs(PLACE_SLOT_PATTERNS) do
+    if padded:find(p) then
+      slots = true
+      break
+    end
+  end
+  if not slots then return (text:match("^(.-)%s*$")) end
   local capitals = text:find("%u") ~= nil
   local ids = {}
   for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end

@@ -93,7 +93,7 @@ function m:direction(s)
     return self:word(i, list)
   end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
-  for i = s.e - 1, s.b, -1 do
+  for i = self:said("@correction") and s.e - 1 or 0, s.b, -1 do
     if self:word(i, "@correction") then
       for k = i + 1, s.e - 1 do
         if said(k, "@up") then return 1 end
@@ -602,6 +602,7 @@ end
 -- (by_prefix = true; the noun is part of it). Two of those letters flying ("the test aircraft" with TEST01
 -- and TEST02) name neither: the request is asked about as before.
 function m:prefix_refs()
+  if not self:said("@aircraft_nouns") then return end
   local i = 2
   while i < #self.t do
     local t = self.t[i]
@@ -977,7 +978,7 @@ end
 -- values after the last correction word.
 function m:corrected(cands, with_unit, plain, s)
   local corr
-  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
+  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corr = i end end
   if not corr then return cands end
   local later = {}
   for _, list in ipairs({ with_unit, plain }) do
@@ -994,13 +995,13 @@ end
 function m:pick(c, s, repeated)
   if #c == 0 then return nil end
   local corr
-  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
+  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corr = i end end
   if corr then
     for _, q in ipairs(c) do if q.b > corr then return self:take(q) end end
     return self:take(c[#c])
   end
   local reps = 0
-  for i = s.b, s.e - 1 do if self:word(i, repeated) then reps = reps + 1 end end
+  for i = s.b, self:said(repeated) and s.e - 1 or 0 do if self:word(i, repeated) then reps = reps + 1 end end
   if reps >= 2 then
     for k = 1, #c - 1 do self:take(c[k]) end  -- "maintain 5000 ... maintain 6000": the last one counts
     return self:take(c[#c])
