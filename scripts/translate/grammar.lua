@@ -312,7 +312,13 @@ function M.handler(name, fn) G[name] = fn end
 --    "hdg"/"heading" or after "hdg NNN": "lt hdg 250" -> "left hdg 250",
 --    "hdg 060 l" -> "hdg 060 left".
 local HEADING_WORDS = { hdg = true, heading = true, h = true }
+local HEADING_PATTERNS = {}  -- a word of HEADING_WORDS whole in " " .. lower-case text .. " "
+for w in pairs(HEADING_WORDS) do HEADING_PATTERNS[#HEADING_PATTERNS + 1] = "%s" .. w .. "%s" end
 local function turn_letters(text, sh)
+  -- (a turn letter is read only beside a heading word: with none said, the text stands)
+  local padded, heading = " " .. text:lower() .. " ", false
+  for _, p in ipairs(HEADING_PATTERNS) do heading = heading or padded:find(p) ~= nil end
+  if not heading then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   local changed = false
@@ -942,10 +948,13 @@ local function word_among(texts, b, e, s)
   return false
 end
 
-function G:word_in(b, e, words) return word_among(self.words, b, e, set_cache[words] or word_set(words, 2)) end
+function G:word_in(b, e, words)
+  return self:said(words) and word_among(self.words, b, e, set_cache[words] or word_set(words, 2))
+end
 
 -- The first position in [b, e) holding one of `words`, or e.
 function G:find_word(b, e, words)
+  if not self:said(words) then return e end
   local s = set_cache[words] or word_set(words, 2)
   local texts = self.words
   local last = #texts + 1
@@ -957,33 +966,49 @@ function G:find_word(b, e, words)
   return e
 end
 
--- LIST_WORDS[words]: the words G:word(i, words) is true for, as an array
-local LIST_WORDS = {}
+-- LIST_WORDS[words]: the words of a word list or set (G:word's `words`), as an array
+local LIST_WORDS = setmetatable({}, { __mode = "k" })
 -- True when a word of `words` may be in the request: it was when the request was first asked about (a word
--- is only ever blanked, so a false stays true). A guard in front of a scan of every position for words
+-- is only ever blanked, so a false stays true). Per request and list; a guard in front of a scan for words
 -- that are seldom said.
 function G:said(words)
-  local present = self.present  -- per request: present[w] for each word said
-  if not present then
-    present = {}
+  local memo = self.said_memo  -- per request: memo[words] = the answer
+  if not memo then
+    memo = {}
+    self.said_memo = memo
+    local present = {}  -- present[w] for each word said
     local texts = self.words
     for k = 1, #texts do
       if texts[k] then present[texts[k]] = true end
     end
     self.present = present
   end
+  local v = memo[words]
+  if v ~= nil then return v end
   local list = LIST_WORDS[words]
   if not list then
     list = {}
-    for w, v in pairs(set_cache[words] or word_set(words, 2)) do
-      if v == true then list[#list + 1] = w end
+    for w, x in pairs(set_cache[words] or word_set(words, 2)) do
+      if x then list[#list + 1] = w end
     end
     LIST_WORDS[words] = list
   end
-  for k = 1, #list do
-    if present[list[k]] then return true end
+  -- (the shorter of the list and the request is walked)
+  local texts = self.words
+  if #list > #texts then
+    v = word_among(texts, 1, #texts + 1, set_cache[words] or word_set(words, 2))
+  else
+    local present = self.present
+    v = false
+    for k = 1, #list do
+      if present[list[k]] then
+        v = true
+        break
+      end
+    end
   end
-  return false
+  memo[words] = v
+  return v
 end
 
 function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self.t + 1, i + 1 + span), words) end
@@ -2502,7 +2527,7 @@ function G:at_waypoint(s, spec)
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
     if not (self.noted[r.b] and self.u:used(r.b)) then refs[#refs + 1] = r end
   end
-  for i = s.b, s.e - 1 do
+  for i = s.b, self:said("cross crossing crosses") and s.e - 1 or 0 do
     local r = self:crossed_navaid(i)
     local part = r and #self:refs_in(r.b, r.e, "waypoint") > 0
     for _, f in ipairs(part and self:refs_in(r.b, r.e, "waypoint") or {}) do part = part and f.e - f.b < r.words end

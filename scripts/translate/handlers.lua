@@ -534,14 +534,16 @@ function m:airline_refs()
   -- after an article, describes it: no place)
   for i = 1, #self.t do
     local icao, e = self:airline_at(i)
-    local at = icao and (self:word(e, "@aircraft_nouns") and e + 1 or e)
-    local upto = icao and (self:word(i - 1, "@articles_new") and #self.t + 1 or at + 1)
-    for _, r in ipairs(icao and self:refs_in(at, upto, "aircraft") or {}) do
-      if not r.exists and r.name:upper():sub(1, #icao) == icao then
-        for k = #self.refs, 1, -1 do
-          if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+    if icao then
+      local at = self:word(e, "@aircraft_nouns") and e + 1 or e
+      local upto = self:word(i - 1, "@articles_new") and #self.t + 1 or at + 1
+      for _, r in ipairs(self:refs_in(at, upto, "aircraft")) do
+        if not r.exists and r.name:upper():sub(1, #icao) == icao then
+          for k = #self.refs, 1, -1 do
+            if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+          end
+          self:explain(i, r.b == at and at or e)
         end
-        self:explain(i, r.b == at and at or e)
       end
     end
   end
@@ -1027,7 +1029,7 @@ function m:at_altitude(s)
   end
   local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach")
   if a >= s.trig and s.intent ~= "alt" then
-    for i = b, s.trig - 1 do
+    for i = b, self:said("level") and s.trig - 1 or 0 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
         a = i
         break
@@ -1109,7 +1111,7 @@ function m:at_distance(s)
     -- ("be level 20 miles before ALFA", "descend to be level FL240 20 miles before ALFA": a level to be
     -- reached by a distance, no condition squawk can carry; its words are left over and asked about)
     local level_at = self:word(q.b, "level fl flight")
-    for i = s.b, q.b - 1 do level_at = level_at or (self:word(i, "level") and not self:word(i - 1, "flight")) end
+    for i = s.b, self:said("level") and q.b - 1 or 0 do level_at = level_at or (self:word(i, "level") and not self:word(i - 1, "flight")) end
     if (q.kind == "dist" or bare) and not self.taken[q.b] and not level_at then
       local k = self:skip_fillers(q.e)
       if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
