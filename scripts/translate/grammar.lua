@@ -830,17 +830,19 @@ local function written_forms(text)
     "%3 origin %4, destination %5")
   -- "dest eidw -> einn": an arrow between two places after the name of an airport setting changes it
   -- from the one to the other: the setting takes the second
-  text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
-    if not lexicon.arrow_settings[setting:lower()] then return nil end
-    return setting .. space .. to
-  end)
-  -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
-  -- after a setting's name, is no place)
-  text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
-    local b, a = before:lower(), after:lower()
-    if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
-    return before .. " direct " .. after
-  end)
+  if text:find("->", 1, true) then
+    text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
+      if not lexicon.arrow_settings[setting:lower()] then return nil end
+      return setting .. space .. to
+    end)
+    -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
+    -- after a setting's name, is no place)
+    text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
+      local b, a = before:lower(), after:lower()
+      if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
+      return before .. " direct " .. after
+    end)
+  end
   text = value_homophones(split_digits(text))
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
@@ -3934,7 +3936,8 @@ function G:same_again(named)
 end
 
 local function unglued_ids(text, fleet)
-  if #fleet == 0 then return text end
+  -- (only a word holding digits, letters and digits again, in that order, is cut)
+  if #fleet == 0 or not text:find("%d%a+%d") then return text end
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:lower()] = true end
   return (text:gsub("%f[%w]%w+", function(w)
@@ -4266,7 +4269,12 @@ local function typed_places(text, world)
       break
     end
   end
-  if not slots then return (text:match("^(.-)%s*$")) end
+  if not slots then
+    -- (the words as the loop below joins them: the text less its trailing white space, %s)
+    local e = #text
+    while e > 0 and (text:byte(e) == 32 or (text:byte(e) >= 9 and text:byte(e) <= 13)) do e = e - 1 end
+    return text:sub(1, e)
+  end
   local capitals = text:find("%u") ~= nil
   local ids = {}
   for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end
