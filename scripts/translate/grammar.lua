@@ -357,7 +357,7 @@ local function plain_words(text)
     plain_toks, plain_bare = {}, {}
     for w in text:gmatch("%S+") do
       plain_toks[#plain_toks + 1] = w
-      plain_bare[#plain_bare + 1] = w:lower():gsub("%p+$", "")
+      plain_bare[#plain_bare + 1] = w:lower():match("^(.-)%p*$")
     end
     last_plain = text
   end
@@ -500,7 +500,7 @@ local function bare_words(text)
   if text == last_text then return last_words end
   local toks = {}
   for at, w, e in text:gmatch("()(%S+)()") do
-    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
+    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():match("^%p*(.-)%p*$") }
   end
   last_text, last_words = text, toks
   return toks

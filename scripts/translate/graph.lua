@@ -176,10 +176,6 @@ function M.modes.multi(opts)
   return common_tail(g, "fill", "retrieve")
 end
 
--- graphs[shape]: the graph M.modes built for a mode ("multi unverified": opts.verify false), built once
--- (a graph is never changed once built)
-local graphs = {}
-
 local cached_llm, llm_checked = nil, false
 local function default_llm()
   if not llm_checked then
@@ -295,9 +291,7 @@ function M.translate(text, opts)
   nodes.say(state, "start", string.format("mode %s, %s", mode, llm and llm:describe() or "no LLM")
     .. (requested ~= mode and (" (" .. requested .. " needs an LLM: set SQUAWK_LLM_URL)") or ""))
   for _, note in ipairs(setup_notes) do nodes.say(state, "setup", note) end
-  local shape = mode .. (opts.verify == false and " unverified" or "")
-  graphs[shape] = graphs[shape] or M.modes[mode](opts)
-  graphs[shape]:run(state, ctx)
+  M.modes[mode](opts):run(state, ctx)
   local result = { trace = state.trace, mode = mode, error = state.error, note = state.note,
                    typed = state.source == "typed" or nil }
   if state.ask then
