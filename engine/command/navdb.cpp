@@ -47,6 +47,21 @@ std::string name_key(std::string_view name) {
   return out;
 }
 
+// A name key without its spaces ("LA GUARDIA" -> "LAGUARDIA").
+std::string squeezed(std::string s) {
+  s.erase(std::remove(s.begin(), s.end(), ' '), s.end());
+  return s;
+}
+
+// True when `run` (words) is a run of whole words of `name` (words joined by single spaces).
+bool holds_run(std::string_view name, std::string_view run) {
+  for (size_t p = name.find(run); p != std::string_view::npos; p = name.find(run, p + 1))
+    if ((p == 0 || name[p - 1] == ' ') &&
+        (p + run.size() == name.size() || name[p + run.size()] == ' '))
+      return true;
+  return false;
+}
+
 bool valid_latlon(double lat, double lon) { return std::fabs(lat) <= 90.0 && std::fabs(lon) <= 180.0; }
 
 Status parse_airports(std::string_view data, const std::string& path, std::vector<NavPoint>& out,
@@ -164,6 +179,10 @@ Result<std::shared_ptr<NavDb>> NavDb::build(std::string_view airports_dat, std::
   if (airports.empty() && waypoints.empty())
     return Status::corruption("navdata folder '" + where + "' holds no airports, navaids or fixes");
   auto db = std::make_shared<NavDb>(std::move(airports), std::move(waypoints));
+  for (std::string& n : names) {
+    n = name_key(n);
+    db->airport_squeezed_.push_back(squeezed(n));
+  }
   db->airport_names_ = std::move(names);
   db->airport_classes_ = std::move(classes);
   db->navaid_names_ = std::move(navaid_names);
@@ -192,14 +211,11 @@ std::vector<const NavPoint*> NavDb::airports_named(std::string_view name) const 
   static const char* kGeneric[] = {"AIRPORT", "INTERNATIONAL", "INTL", "AIRFIELD", "AERODROME", "AIRBASE", "AIR BASE"};
   // a name said as one word that the navdata writes as two ("LaGuardia": LA GUARDIA), or the other
   // way
-  auto squeezed = [](std::string s) {
-    s.erase(std::remove(s.begin(), s.end(), ' '), s.end());
-    return s;
-  };
   const std::string key_squeezed = squeezed(key);
-  for (size_t i = 0; i < airport_names_.size() && i < airports_.size(); ++i) {
-    const std::string n = name_key(airport_names_[i]);
-    bool fits = n == key || squeezed(n) == key_squeezed;
+  for (size_t i = 0;
+       i < airport_names_.size() && i < airport_squeezed_.size() && i < airports_.size(); ++i) {
+    const std::string& n = airport_names_[i];
+    bool fits = n == key || airport_squeezed_[i] == key_squeezed;
     if (!fits && n.size() > key.size() + 1 && n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ') {
       const std::string rest = n.substr(key.size() + 1);
       fits = std::any_of(std::begin(kGeneric), std::end(kGeneric), [&](const char* g) { return rest == g; });
@@ -215,7 +231,7 @@ std::vector<const NavPoint*> NavDb::airports_of_city(std::string_view city) cons
   if (key.empty()) return out;
   for (size_t i = 0;
        i < airport_names_.size() && i < airport_classes_.size() && i < airports_.size(); ++i) {
-    const std::string n = name_key(airport_names_[i]);
+    const std::string& n = airport_names_[i];
     if (airport_classes_[i] == "LARGE" && n.size() > key.size() + 1 &&
         n.compare(0, key.size(), key) == 0 && n[key.size()] == ' ')
       out.push_back(&airports_[i]);
@@ -246,10 +262,8 @@ std::vector<const NavPoint*> NavDb::airports_with_words(std::string_view words) 
     b = e + 1;
   }
   if (key.empty() || kind_only) return out;
-  const std::string run = " " + key + " ";
   for (size_t i = 0; i < airport_names_.size() && i < airports_.size(); ++i) {
-    if ((" " + name_key(airport_names_[i]) + " ").find(run) != std::string::npos)
-      out.push_back(&airports_[i]);
+    if (holds_run(airport_names_[i], key)) out.push_back(&airports_[i]);
   }
   return out;
 }

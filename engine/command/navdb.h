@@ -95,7 +95,11 @@ class NavDb {
                                               std::string_view fix_dat, const std::string& where);
 
   std::vector<NavPoint> airports_;
-  std::vector<std::string> airport_names_;  // airports.dat names, upper case, by airports_ index (may be empty)
+  std::vector<std::string>
+      airport_names_;  // airports.dat names as name keys (upper-case words joined by
+                       // single spaces), by airports_ index (may be empty)
+  std::vector<std::string>
+      airport_squeezed_;  // airport_names_ without their spaces, by airports_ index
   std::vector<std::string>
       airport_classes_;  // airports.dat classes, upper case, by airports_ index
   std::vector<NavPoint> waypoints_;

@@ -314,7 +314,13 @@ function M.handler(name, fn) G[name] = fn end
 --    "hdg"/"heading" or after "hdg NNN": "lt hdg 250" -> "left hdg 250",
 --    "hdg 060 l" -> "hdg 060 left".
 local HEADING_WORDS = { hdg = true, heading = true, h = true }
+local HEADING_PATTERNS = {}  -- a word of HEADING_WORDS whole in " " .. lower-case text .. " "
+for w in pairs(HEADING_WORDS) do HEADING_PATTERNS[#HEADING_PATTERNS + 1] = "%s" .. w .. "%s" end
 local function turn_letters(text, sh)
+  -- (a turn letter is read only beside a heading word: with none said, the text stands)
+  local padded, heading = " " .. text:lower() .. " ", false
+  for _, p in ipairs(HEADING_PATTERNS) do heading = heading or padded:find(p) ~= nil end
+  if not heading then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   local changed = false
@@ -353,7 +359,7 @@ local function plain_words(text)
     plain_toks, plain_bare = {}, {}
     for w in text:gmatch("%S+") do
       plain_toks[#plain_toks + 1] = w
-      plain_bare[#plain_bare + 1] = w:lower():gsub("%p+$", "")
+      plain_bare[#plain_bare + 1] = w:lower():match("^(.-)%p*$")
     end
     last_plain = text
   end
@@ -496,14 +502,28 @@ local function bare_words(text)
   if text == last_text then return last_words end
   local toks = {}
   for at, w, e in text:gmatch("()(%S+)()") do
-    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():gsub("^%p+", ""):gsub("%p+$", "") }
+    toks[#toks + 1] = { at = at, e = e, raw = w, bare = w:lower():match("^%p*(.-)%p*$") }
   end
   last_text, last_words = text, toks
   return toks
 end
 local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
   set_of(lexicon.self_correction.markers), set_of(lexicon.self_correction.after)
+-- patterns finding the first word of each marker as a whole word in lower-case text (a marker's word is
+-- a token's bare text only where one of these finds it)
+local SC_MARKER_PATTERNS = {}
+for _, m in ipairs(lexicon.self_correction.markers) do
+  SC_MARKER_PATTERNS[#SC_MARKER_PATTERNS + 1] = "%f[%w]" .. m:match("^%S+") .. "%f[%W]"
+end
+-- True when the lower-case text holds one of the words of `patterns` (whole-word patterns, as above).
+local function holds_word(lower, patterns)
+  for _, p in ipairs(patterns) do
+    if lower:find(p) then return true end
+  end
+  return false
+end
 local function self_corrections(text)
+  if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
   local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
@@ -545,7 +565,10 @@ for _, p in ipairs(lexicon.readback_heard) do
   READBACK_HEARD[first] = READBACK_HEARD[first] or {}
   table.insert(READBACK_HEARD[first], p)
 end
+local READBACK_HEARD_PATTERNS = {}
+for first in pairs(READBACK_HEARD) do READBACK_HEARD_PATTERNS[#READBACK_HEARD_PATTERNS + 1] = "%f[%w]" .. first .. "%f[%W]" end
 local function readback_heard(text)
+  if not holds_word(text:lower(), READBACK_HEARD_PATTERNS) then return text end
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local seen_value = false
@@ -843,17 +866,19 @@ local function written_forms(text)
     "%3 origin %4, destination %5")
   -- "dest eidw -> einn": an arrow between two places after the name of an airport setting changes it
   -- from the one to the other: the setting takes the second
-  text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
-    if not lexicon.arrow_settings[setting:lower()] then return nil end
-    return setting .. space .. to
-  end)
-  -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
-  -- after a setting's name, is no place)
-  text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
-    local b, a = before:lower(), after:lower()
-    if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
-    return before .. " direct " .. after
-  end)
+  if text:find("->", 1, true) then
+    text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
+      if not lexicon.arrow_settings[setting:lower()] then return nil end
+      return setting .. space .. to
+    end)
+    -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
+    -- after a setting's name, is no place)
+    text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
+      local b, a = before:lower(), after:lower()
+      if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
+      return before .. " direct " .. after
+    end)
+  end
   text = value_homophones(split_digits(text))
   text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
@@ -961,10 +986,13 @@ local function word_among(texts, b, e, s)
   return false
 end
 
-function G:word_in(b, e, words) return word_among(self.words, b, e, set_cache[words] or word_set(words, 2)) end
+function G:word_in(b, e, words)
+  return self:said(words) and word_among(self.words, b, e, set_cache[words] or word_set(words, 2))
+end
 
 -- The first position in [b, e) holding one of `words`, or e.
 function G:find_word(b, e, words)
+  if not self:said(words) then return e end
   local s = set_cache[words] or word_set(words, 2)
   local texts = self.words
   local last = #texts + 1
@@ -974,6 +1002,51 @@ function G:find_word(b, e, words)
     if w and s[w] then return i end
   end
   return e
+end
+
+-- LIST_WORDS[words]: the words of a word list or set (G:word's `words`), as an array
+local LIST_WORDS = setmetatable({}, { __mode = "k" })
+-- True when a word of `words` may be in the request: it was when the request was first asked about (a word
+-- is only ever blanked, so a false stays true). Per request and list; a guard in front of a scan for words
+-- that are seldom said.
+function G:said(words)
+  local memo = self.said_memo  -- per request: memo[words] = the answer
+  if not memo then
+    memo = {}
+    self.said_memo = memo
+    local present = {}  -- present[w] for each word said
+    local texts = self.words
+    for k = 1, #texts do
+      if texts[k] then present[texts[k]] = true end
+    end
+    self.present = present
+  end
+  local v = memo[words]
+  if v ~= nil then return v end
+  local list = LIST_WORDS[words]
+  if not list then
+    list = {}
+    for w, x in pairs(set_cache[words] or word_set(words, 2)) do
+      if x then list[#list + 1] = w end
+    end
+    LIST_WORDS[words] = list
+  end
+  -- (the shorter of the list and the request is walked)
+  local texts = self.words
+  if #list > #texts then
+    v = word_among(texts, 1, #texts + 1, set_cache[words] or word_set(words, 2))
+  else
+    local present = self.present
+    v = false
+    for k = 1, #list do
+      if present[list[k]] then
+        v = true
+        break
+      end
+    end
+  end
+  memo[words] = v
+  return v
 end
 
 function G:followed_by(i, span, words) return self:word_in(i + 1, math.min(#self.t + 1, i + 1 + span), words) end
@@ -1155,6 +1228,7 @@ function G:in_reason(i)
     local commas = 0          -- the commas up to k (self.apart: those that were a dash or a bracket)
     local lead_end            -- the comma that ends a lead-in ("For the overtake case, ...")
     local toks, reason = self.t, self.reason
+    local opening = self:skip_fillers(1)  -- (the request's first word)
     for k = 1, #toks do
       reason[k] = inside
       local t = toks[k]
@@ -1182,7 +1256,7 @@ function G:in_reason(i)
       elseif start and t.kind == "word" and study_label_end(self, k) then
         -- ("exp CDR-FR-ES, run 1. cre AFR1234 ...": an experiment's label, up to its full stop or colon)
         inside, reason[k] = true, true
-      elseif k == self:skip_fillers(1) and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
+      elseif k == opening and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
           and title_end(self, k) then
         -- ("converging pair please: KLM401 B738 at ...": a title opening the request, up to its colon)
         inside, lead_end, self.reason[k] = true, title_end(self, k), true
@@ -1439,7 +1513,19 @@ function G:intent_at(i)
   if not w or self.u:used(i) then return nil end
   local next_word = texts[i + 1]
   local said = self.said_sets or sets_said(self)
-  for _, r in ipairs(RULES_BY_WORD[w] or ANY_RULES) do
+  local rules = RULES_BY_WORD[w]
+  if not rules then
+    -- (per request: the "*" rules whose near or prev set is said, the others never fire)
+    rules = self.any_rules
+    if not rules then
+      rules = {}
+      for _, r in ipairs(ANY_RULES) do
+        if (not r.near or said[r.near[2]]) and (not r.prev or said[r.prev[2]]) then rules[#rules + 1] = r end
+      end
+      self.any_rules = rules
+    end
+  end
+  for _, r in ipairs(rules) do
     -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
     -- of whose words is said is not looked for)
     local near, not_near, prev, not_prev = r.near, r.not_near, r.prev, r.not_prev
@@ -1473,6 +1559,7 @@ end
 local REACHING = { passes = true, reaches = true, crosses = true, hits = true, passing = true, reaching = true,
                    crossing = true, through = true }
 function G:trailing_level_condition()
+  if not self:said("by once when") then return nil end
   for k = 2, #self.t do
     local by_time = self:word(k, "by") and self:word(k + 1, "the") and self:word(k + 2, "time")
     local by_level = self:word(k, "by") and not by_time
@@ -1513,6 +1600,7 @@ end
 -- level to fly. ("climb until FL250", "rate of descent 2000 fpm until FL100": the level to fly, read by the
 -- handlers.)
 function G:level_limits()
+  if not self:said("until till") then return end
   for i = 1, #self.t do
     if self:word(i, "until till") then
       local v = self:skip_fillers(i + 1)
@@ -2009,7 +2097,7 @@ function G:self_corrected()
     -- ("add BOBTA then DEBEK, actually just add ERBUS at the end of his route": with no instruction word
     -- before the run, the instruction said in its place names its verb again; the words from that verb's
     -- first saying are taken back)
-    local v = self:word(c, SC_ONLY) and c + 1 or c
+    local v = marked and self:word(c, SC_ONLY) and c + 1 or c
     if marked and p < 1 and v <= #self.t and self:intent_at(v) and self.t[v].kind == "word" then
       for k = a - 1, 1, -1 do
         if self.t[k].kind == "word" and self.t[k].text == self.t[v].text then
@@ -2512,7 +2600,7 @@ function G:at_waypoint(s, spec)
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
     if not (self.noted[r.b] and self.u:used(r.b)) then refs[#refs + 1] = r end
   end
-  for i = s.b, s.e - 1 do
+  for i = s.b, self:said("cross crossing crosses") and s.e - 1 or 0 do
     local r = self:crossed_navaid(i)
     local part = r and #self:refs_in(r.b, r.e, "waypoint") > 0
     for _, f in ipairs(part and self:refs_in(r.b, r.e, "waypoint") or {}) do part = part and f.e - f.b < r.words end
@@ -2755,7 +2843,7 @@ function G:unexplained(s, n_before)
     for _, n in ipairs(line_numbers(self.out[c])) do nums[#nums + 1] = n end
   end
   local corrected = 0
-  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corrected = i end end
+  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corrected = i end end
   local relative = self:word_in(s.b, s.e, "@relative @same_as @below @above")
   -- with no instruction word the first value with a unit is the instruction ("ezy45 fl120 7")
   local opened = s.intent ~= "infer" and s.trig or nil
@@ -2803,7 +2891,7 @@ function G:uncarried()
     for _, n in ipairs(line_numbers(line)) do nums[#nums + 1] = n end
   end
   local corrected = 0
-  for i = 1, #self.t do if self:word(i, "@correction") then corrected = i end end
+  for i = 1, self:said("@correction") and #self.t or 0 do if self:word(i, "@correction") then corrected = i end end
   local first = 1
   -- (a word of direction or motion, "go higher to 36000" unread, opens the instructions as a verb does)
   while first <= #self.t and not self:intent_at(first) and not (self.t[first].kind == "word"
@@ -3268,9 +3356,10 @@ function G:explained_spans(issued, kinds)
       inside[r.b - 2] = true
     end
   end
+  local replaced = self:said("instead rather")
   for i = 1, #self.t do
     -- "to SFO instead of Oakland", "Stansted rather than Luton": the name replaced
-    if ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
+    if replaced and ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
         and self.t[i + 2] and self.t[i + 2].raw:match("^%u") then
       inside[i], inside[i + 2] = true, true
     end
@@ -3353,6 +3442,7 @@ end
 -- word of lexicon.forget ("the" and "about" between at most) is taken out of the request: no command names it.
 -- Nothing left asks for the instruction again.
 function G:forgotten()
+  if not self:said("@forget") then return end
   for i = 1, #self.t do
     if self:word(i, "@forget") then
       local k = self:skip_fillers(i + 1)
@@ -3594,6 +3684,7 @@ end
 -- (lexicon.runway_sides) name the runway, never a value or a turn's direction ("zero one left" is no
 -- turn of 1 degree left): they are marked used and the side is made a filler.
 function G:runway_sides()
+  if not self:said("@runway") then return end
   for i = 1, #self.t - 2 do
     if self:word(i, "@runway") then
       -- its number: typed ("27") or said digit by digit ("two seven", "zero one")
@@ -3627,6 +3718,7 @@ end
 -- give (a request refused); its tokens are marked used and explained, no instruction of their own ("if
 -- unable FL380, ..." is a condition on the pilot, left to the parse).
 function G:refused()
+  if not self:said("unable") then return end
   for i = 1, #self.t - 1 do
     local q = self:word(i, "unable") and not self:word(i - 1, "if") and self:quantities(i + 1, #self.t + 1)[1]
     if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
@@ -3821,6 +3913,7 @@ for _, p in ipairs(lexicon.discretion) do
   DISCRETION[#DISCRETION + 1] = words
 end
 function G:discretion_without_level()
+  if not self:said("climb descend climbing descending") then return end
   for i = 1, #self.t do
     if self:word(i, "climb descend climbing descending") then
       local k = self:skip_fillers(i + 1)
@@ -3935,7 +4028,8 @@ function G:same_again(named)
 end
 
 local function unglued_ids(text, fleet)
-  if #fleet == 0 then return text end
+  -- (only a word holding digits, letters and digits again, in that order, is cut)
+  if #fleet == 0 or not text:find("%d%a+%d") then return text end
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:lower()] = true end
   return (text:gsub("%f[%w]%w+", function(w)
@@ -4232,6 +4326,9 @@ end
 local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc = true, drct = true, direct = true,
   after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
 local TYPED_PLACE_NM = 250
+-- patterns finding a word of PLACE_SLOTS as a whole word in " " .. lower-case text .. " "
+local PLACE_SLOT_PATTERNS = {}
+for w in pairs(PLACE_SLOTS) do PLACE_SLOT_PATTERNS[#PLACE_SLOT_PATTERNS + 1] = "%s" .. w .. "%s" end
 -- "destination c y v r", "origin boston k b o s": four single letters spelled in a row (none before or after)
 -- that join into an airport's ICAO code the navdata holds (world.airport_class), and no aircraft's id, are
 -- that code
@@ -4256,6 +4353,20 @@ local function spelled_airports(text, world)
 end
 local function typed_places(text, world)
   if not world.place_known then return text end
+  -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
+  local padded, slots = " " .. text:lower() .. " ", false
+  for _, p in ipairs(PLACE_SLOT_PATTERNS) do
+    if padded:find(p) then
+      slots = true
+      break
+    end
+  end
+  if not slots then
+    -- (the words as the loop below joins them: the text less its trailing white space, %s)
+    local e = #text
+    while e > 0 and (text:byte(e) == 32 or (text:byte(e) >= 9 and text:byte(e) <= 13)) do e = e - 1 end
+    return text:sub(1, e)
+  end
   local capitals = text:find("%u") ~= nil
   local ids = {}
   for _, a in ipairs(world.aircraft) do ids[(a.id or ""):lower()] = true end

@@ -93,7 +93,7 @@ function m:direction(s)
     return self:word(i, list)
   end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
-  for i = s.e - 1, s.b, -1 do
+  for i = self:said("@correction") and s.e - 1 or 0, s.b, -1 do
     if self:word(i, "@correction") then
       for k = i + 1, s.e - 1 do
         if said(k, "@up") then return 1 end
@@ -592,14 +592,16 @@ function m:airline_refs()
   -- after an article, describes it: no place)
   for i = 1, #self.t do
     local icao, e = self:airline_at(i)
-    local at = icao and (self:word(e, "@aircraft_nouns") and e + 1 or e)
-    local upto = icao and (self:word(i - 1, "@articles_new") and #self.t + 1 or at + 1)
-    for _, r in ipairs(icao and self:refs_in(at, upto, "aircraft") or {}) do
-      if not r.exists and r.name:upper():sub(1, #icao) == icao then
-        for k = #self.refs, 1, -1 do
-          if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+    if icao then
+      local at = self:word(e, "@aircraft_nouns") and e + 1 or e
+      local upto = self:word(i - 1, "@articles_new") and #self.t + 1 or at + 1
+      for _, r in ipairs(self:refs_in(at, upto, "aircraft")) do
+        if not r.exists and r.name:upper():sub(1, #icao) == icao then
+          for k = #self.refs, 1, -1 do
+            if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
+          end
+          self:explain(i, r.b == at and at or e)
         end
-        self:explain(i, r.b == at and at or e)
       end
     end
   end
@@ -664,6 +666,7 @@ end
 -- (by_prefix = true; the noun is part of it). Two of those letters flying ("the test aircraft" with TEST01
 -- and TEST02) name neither: the request is asked about as before.
 function m:prefix_refs()
+  if not self:said("@aircraft_nouns") then return end
   local i = 2
   while i < #self.t do
     local t = self.t[i]
@@ -1039,7 +1042,7 @@ end
 -- values after the last correction word.
 function m:corrected(cands, with_unit, plain, s)
   local corr
-  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
+  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corr = i end end
   if not corr then return cands end
   local later = {}
   for _, list in ipairs({ with_unit, plain }) do
@@ -1056,13 +1059,13 @@ end
 function m:pick(c, s, repeated)
   if #c == 0 then return nil end
   local corr
-  for i = s.b, s.e - 1 do if self:word(i, "@correction") then corr = i end end
+  for i = s.b, self:said("@correction") and s.e - 1 or 0 do if self:word(i, "@correction") then corr = i end end
   if corr then
     for _, q in ipairs(c) do if q.b > corr then return self:take(q) end end
     return self:take(c[#c])
   end
   local reps = 0
-  for i = s.b, s.e - 1 do if self:word(i, repeated) then reps = reps + 1 end end
+  for i = s.b, self:said(repeated) and s.e - 1 or 0 do if self:word(i, repeated) then reps = reps + 1 end end
   if reps >= 2 then
     for k = 1, #c - 1 do self:take(c[k]) end  -- "maintain 5000 ... maintain 6000": the last one counts
     return self:take(c[#c])
@@ -1094,7 +1097,7 @@ function m:at_altitude(s)
   local got_to = got < a and self:word(got + 1, "to")
   if got_to then a = got + 1 end
   if a >= s.trig and s.intent ~= "alt" then
-    for i = b, s.trig - 1 do
+    for i = b, self:said("level") and s.trig - 1 or 0 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
         a = i
         break
@@ -1176,7 +1179,7 @@ function m:at_distance(s)
     -- ("be level 20 miles before ALFA", "descend to be level FL240 20 miles before ALFA": a level to be
     -- reached by a distance, no condition squawk can carry; its words are left over and asked about)
     local level_at = self:word(q.b, "level fl flight")
-    for i = s.b, q.b - 1 do level_at = level_at or (self:word(i, "level") and not self:word(i - 1, "flight")) end
+    for i = s.b, self:said("level") and q.b - 1 or 0 do level_at = level_at or (self:word(i, "level") and not self:word(i - 1, "flight")) end
     if (q.kind == "dist" or bare) and not self.taken[q.b] and not level_at then
       local k = self:skip_fillers(q.e)
       if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"

@@ -489,7 +489,7 @@ return function(H, f, wrap, compass)
     local turn = 0
     -- a direction said after a correction replaces the one before it ("turn left, correction, turn right")
     local tb = s.b
-    for i = s.b, s.e - 1 do
+    for i = s.b, correction and s.e - 1 or 0 do
       if self:word(i, "@correction") and self:word_in(i + 1, s.e, "@left @right") then tb = i + 1 end
     end
     if self:word_in(tb, s.e, "@left") then turn = -1 end

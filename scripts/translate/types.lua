@@ -279,12 +279,19 @@ end
 -- The request with each name of several words as its designator ("a 737 MAX 8" -> "a B38M").
 -- Designators said in the plural where traffic is created ("5 random A320s", "two B738s"): the
 -- designator (a word that is a designator itself, or the id of an aircraft of `fleet`, stays).
+local lower_designators = setmetatable({}, { __mode = "k" })  -- [built] = {[designator in lower case] = true}
 function M.plurals(text, built, fleet)
-  local known = {}
-  for _, d in ipairs(built.designators) do known[d:lower()] = true end
-  for _, a in ipairs(fleet or {}) do known[a.id:lower()] = true end
+  local designators = lower_designators[built]
+  if not designators then
+    designators = {}
+    for _, d in ipairs(built.designators) do designators[d:lower()] = true end
+    lower_designators[built] = designators
+  end
+  local ids = {}
+  for _, a in ipairs(fleet or {}) do ids[a.id:lower()] = true end
+  local function known(w) return designators[w] or ids[w] end
   return (text:gsub("%f[%w](%w+)[sS]%f[%W]", function(d)
-    if known[d:lower()] and not known[(d .. "s"):lower()] then return d end
+    if known(d:lower()) and not known((d .. "s"):lower()) then return d end
   end))
 end
 
