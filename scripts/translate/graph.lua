@@ -219,10 +219,9 @@ function M.command_clauses(text)
     local first, rest = part:match("^(%S+)%s*(.*)$")
     while first and LINKS[first:lower()] do first, rest = rest:match("^(%S+)%s*(.*)$") end
     local cmd = first and nodes.canonical_name(first:gsub("[%p]+$", ""))
+    if not cmd or CONDITION_OPENERS[first:lower()] then return nil end
     local arg = (rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")
-    if not cmd or CONDITION_OPENERS[first:lower()] or (prev == "CRE" and CREATION_FIELDS[cmd] and arg ~= created) then
-      return nil
-    end
+    if prev == "CRE" and CREATION_FIELDS[cmd] and arg ~= created then return nil end
     prev, created = cmd, arg
     if PRONOUNS[(rest:match("^(%S+)") or ""):lower():gsub("[%p]+$", "")] then return nil end
     parts[#parts + 1] = first .. (rest ~= "" and (" " .. rest) or "")

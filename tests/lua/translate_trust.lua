@@ -1270,6 +1270,9 @@ do
   check_eq(ut("speed it up a bit, run it at twice real time"), "DTMULT 2")
   check(graph.command_clauses("speed it up a bit, run it at twice real time") == nil, "a pronoun after a command word")
   check_eq(#graph.command_clauses("seed 7, mcre 3, ff 10 min"), 3)
+  -- a clause that is only a linking word ("hold, and", speech's empty clauses) is no command: read whole
+  check(graph.command_clauses("hold, and") == nil, "a clause of a linking word alone")
+  check_eq(ut("hold, and"), "HOLD")
   -- a type's letters before its digits said as words ("CRJ nine"), a maker before its model ("Saab three
   -- forty"); a new aircraft's callsign said in words before its type
   check_eq(ut("create SAS32AB, a CRJ nine, at TWEED, flight level one zero zero, heading zero nine zero, "
