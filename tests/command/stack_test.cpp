@@ -545,6 +545,11 @@ TEST_CASE(
   CHECK(s.sim().traffic().route[s.sim().index_of("A1")].waypoints()[0].lat ==
         doctest::Approx(51.646111));
   CHECK(s.reference().lat == doctest::Approx(51.5));
+  // AFTER's new waypoint resolves from the reference its aircraft set
+  REQUIRE(s.exec("ADDWPT B1 SOLO"));
+  REQUIRE(s.exec("B1 AFTER SOLO ADDWPT LAM"));
+  CHECK(s.sim().traffic().route[s.sim().index_of("B1")].waypoints().back().lat ==
+        doctest::Approx(51.646111));
   // a line's commands run in order, each from the reference the one before left
   REQUIRE(s.exec("ALT B0 FL130; CRE B2 A320 LAM 90 FL100 250"));
   CHECK(at(s, "B2", 38.907314, 16.225853));
