@@ -50,7 +50,7 @@ Result<ArgValue> parse_one(ArgType t, ArgReader& r, const ParseContext& ctx, Geo
   if (t == ArgType::kLatLon || t == ArgType::kWpt) {
     SQUAWK_ASSIGN_OR_RETURN(v, parse_position(r, ctx, ref));
     v.type = t;
-    ref = v.pos;
+    if (t == ArgType::kLatLon && ctx.traffic->index_of(v.text) < 0) ref = v.pos;
     return v;
   }
   const std::string token = r.next();
@@ -238,11 +238,11 @@ Result<ArgValue> parse_position(ArgReader& r, const ParseContext& ctx, GeoPoint 
                            no_navdata_hint(ctx));
 }
 
-Result<std::vector<ArgValue>> parse_args(const Signature& sig, std::string_view argtext,
-                                         const ParseContext& ctx) {
+Result<ParsedArgs> parse_args(const Signature& sig, std::string_view argtext,
+                              const ParseContext& ctx) {
   std::vector<ArgValue> out;
   ArgReader r(argtext);
-  GeoPoint ref;
+  GeoPoint ref = ctx.ref;
   int last_acid = -1;
   size_t k = 0;
   while (k < sig.params.size() || (!r.at_end() && sig.repeat_last && !sig.params.empty())) {
@@ -292,7 +292,7 @@ Result<std::vector<ArgValue>> parse_args(const Signature& sig, std::string_view 
                            (sig.params.size() == 1 ? "" : "s") + ", but " +
                            std::to_string(sig.params.size() + extra) + " were given");
   }
-  return out;
+  return ParsedArgs{std::move(out), ref};
 }
 
 }  // namespace squawk::command

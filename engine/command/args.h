@@ -21,6 +21,13 @@
 //              waypoint (DEFWPT), a fix or navaid (nearest the reference)
 //   wpt        like latlon, and keeps the name (empty for lat/lon pairs)
 //   wpinroute  a waypoint name in the route of the last acid parsed, or `*`
+//
+// The reference position (BlueSky's bs.ref, bluesky/refdata.py): a parse
+// starts from ParseContext::ref; an acid parsed moves it to that aircraft, a
+// latlon parsed moves it to the position (not when the position is an
+// aircraft: BlueSky's PosArg returns an aircraft's position without moving
+// it); wpt and hdg do not move it (BlueSky's WptArg and txt2hdg read it only).
+// ParsedArgs::ref is where it ends; the stack keeps it between commands.
 // Parsing only reads the context; it never changes the simulation.
 #pragma once
 
@@ -81,6 +88,13 @@ struct ParseContext {
   const sim::Traffic* traffic = nullptr;
   const NavDb* navdb = nullptr;                          // null: no navdata loaded
   const std::map<std::string, GeoPoint>* user_wpts = nullptr;  // DEFWPT, upper-case names
+  GeoPoint ref;  // the reference position the parse starts from (see above)
+};
+
+// The values of a parse and the reference position after it.
+struct ParsedArgs {
+  std::vector<ArgValue> values;
+  GeoPoint ref;
 };
 
 // Resolves one position token (and possibly the next token, for lat lon and
@@ -89,9 +103,10 @@ struct ParseContext {
 class ArgReader;
 Result<ArgValue> parse_position(ArgReader& reader, const ParseContext& ctx, GeoPoint ref);
 
-// Parses `argtext` against `sig`. Errors name the argument position, its type
-// and the token, and are prefixed by nothing (the caller adds the command).
-Result<std::vector<ArgValue>> parse_args(const Signature& sig, std::string_view argtext,
-                                         const ParseContext& ctx);
+// Parses `argtext` against `sig`, starting from the reference ctx.ref. Errors
+// name the argument position, its type and the token, and are prefixed by
+// nothing (the caller adds the command).
+Result<ParsedArgs> parse_args(const Signature& sig, std::string_view argtext,
+                              const ParseContext& ctx);
 
 }  // namespace squawk::command

@@ -59,8 +59,10 @@ Result<std::string> insert_relative(Call& c, bool after) {
         "argument 4: " + text::quoted(c[3].text) +
         " is a latitude, but the new waypoint is one name: define the point first "
         "(DEFWPT name lat lon), then insert it by name");
+  // (the new waypoint's name resolves from the reference, at the aircraft: BlueSky's addwptStack)
   ArgReader r(c[3].text);
-  SQUAWK_ASSIGN_OR_RETURN(ArgValue p, parse_position(r, c.stack.parse_context(), {}));
+  const ParseContext ctx = c.stack.parse_context();
+  SQUAWK_ASSIGN_OR_RETURN(ArgValue p, parse_position(r, ctx, ctx.ref));
   const sim::Traffic& t = c.stack.sim().traffic();
   const int i = c.acid(0);
   sim::Waypoint wp = make_waypoint(t, i, p);

@@ -1,5 +1,5 @@
 // Simulation control and scripting commands: OP, HOLD, FF, DT, DTMULT, RESET,
-// IC, PCALL, SEED, ECHO, HELP, SCHEDULE, DELAY, NOISE, TRAIL.
+// IC, PCALL, SEED, ECHO, HELP, SCHEDULE, DELAY, NOISE, TRAIL, NEAR.
 #include "command/handler_util.h"
 #include "command/line.h"
 #include "core/text.h"
@@ -127,6 +127,15 @@ Result<std::string> trail(Call& c) {
   return std::string();
 }
 
+// NEAR position,command: the reference position (args.h) moves to the position
+// (an aircraft's too), then the command runs from it.
+Result<std::string> near(Call& c) {
+  if (text::trim(c[1].text).empty())
+    return Status::invalid("argument 2: missing the command to run");
+  c.stack.set_reference(c[0].pos);
+  return c.stack.run_nested(c[1].text);
+}
+
 }  // namespace
 
 void add_sim_commands(std::vector<CommandDecl>& out) {
@@ -182,6 +191,18 @@ void add_sim_commands(std::vector<CommandDecl>& out) {
                  "trail points in seconds (default 10), or sets one aircraft's trail colour (BLUE, RED or "
                  "YELLOW). A display setting: it does not change the traffic.",
                  {"TRAIL ON", "TRAIL ON 5", "TRAIL KL204 RED"}, trail, {}});
+  out.push_back(
+      {"NEAR",
+       {},
+       "latlon,string",
+       "NEAR lat,lon,command",
+       "Runs a command with the reference position moved to lat lon first, so a navaid or fix name "
+       "in it is the one of that name nearest there. The reference otherwise follows the aircraft "
+       "and positions of the commands before; RESET and IC put it back at 0 0. squawk also takes a "
+       "named place or an aircraft as the position (BlueSky takes lat lon only).",
+       {"NEAR 51.6 0.2 CRE KL204 A320 LAM 90 FL100 250"},
+       near,
+       {}});
 }
 
 }  // namespace squawk::command

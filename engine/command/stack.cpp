@@ -22,6 +22,7 @@ namespace {
 constexpr int kMaxIncludeDepth = 16;      // nested IC / PCALL files
 constexpr long kMaxPerInstant = 100'000;  // queued commands run at one sim time
 constexpr size_t kMaxQueued = 1'000'000;  // commands waiting in the queue
+constexpr int kMaxNested = 8;             // NEAR inside NEAR
 
 // A failure's grouping key: the message with quoted values and a leading
 // aircraft id ("KL1: ...", as the simulation words it) blanked, so failures
@@ -96,13 +97,14 @@ std::string usage_suffix(const CommandDecl& d) { return " (usage: " + d.usage + 
 
 // Parses the arguments of a resolved command; `*` only where the command
 // takes every aircraft.
-Result<std::vector<ArgValue>> parse_call(const Resolved& rc, const std::string& typed, const ParseContext& ctx) {
+Result<ParsedArgs> parse_call(const Resolved& rc, const std::string& typed,
+                              const ParseContext& ctx) {
   auto args = parse_args(rc.decl->signature, rc.argtext, ctx);
   if (!args)
     return Status::error(args.status().code(), typed + ": " + args.status().message() + usage_suffix(*rc.decl));
   if (!rc.decl->all_aircraft)
-    for (size_t k = 0; k < args->size(); ++k)
-      if ((*args)[k].type == ArgType::kAcid && (*args)[k].acids.size() > 1)
+    for (size_t k = 0; k < args->values.size(); ++k)
+      if (args->values[k].type == ArgType::kAcid && args->values[k].acids.size() > 1)
         return Status::invalid(typed + ": argument " + std::to_string(k + 1) +
                                ": '*' (every aircraft) is not accepted here; name one aircraft" +
                                usage_suffix(*rc.decl));
@@ -123,6 +125,7 @@ ParseContext Stack::parse_context() const {
   ctx.traffic = &sim_.traffic();
   ctx.navdb = navdb_.get();
   ctx.user_wpts = &user_wpts_;
+  ctx.ref = ref_;
   return ctx;
 }
 
@@ -141,10 +144,28 @@ Result<std::string> Stack::run_command(std::string_view text, bool from_queue, b
   }
   if (rc.acid_unknown)
     return Status::not_found(typed + ": no aircraft " + text::quoted(rc.name) + usage_suffix(*rc.decl));
-  SQUAWK_ASSIGN_OR_RETURN(auto args, parse_call(rc, typed, parse_context()));
-  Call call{*this, rc.decl->name, args};
+  SQUAWK_ASSIGN_OR_RETURN(auto parsed, parse_call(rc, typed, parse_context()));
+  // The parse's reference stands before the handler runs (RESET and IC clear
+  // it, NEAR sets it for its command) and is taken back when the command fails.
+  const GeoPoint ref_before = ref_;
+  ref_ = parsed.ref;
+  Call call{*this, rc.decl->name, parsed.values};
   auto out = rc.decl->handler(call);
-  if (!out) return Status::error(out.status().code(), typed + ": " + out.status().message());
+  if (!out) {
+    ref_ = ref_before;
+    return Status::error(out.status().code(), typed + ": " + out.status().message());
+  }
+  return out;
+}
+
+Result<std::string> Stack::run_nested(std::string_view command) {
+  if (nested_depth_ >= kMaxNested)
+    return Status::invalid("more than " + std::to_string(kMaxNested) +
+                           " commands nested in one another");
+  bool skipped = false;
+  ++nested_depth_;
+  auto out = run_command(command, !where_.empty(), &skipped);
+  --nested_depth_;
   return out;
 }
 
@@ -167,6 +188,7 @@ Result<std::string> Stack::exec(std::string_view line) {
 }
 
 Status Stack::check(std::string_view line) const {
+  ParseContext ctx = parse_context();
   for (const auto& cmd : split_commands(line)) {
     const std::string typed(text::trim(cmd));
     Resolved rc = resolve(typed, sim_.traffic());
@@ -174,7 +196,8 @@ Status Stack::check(std::string_view line) const {
       return Status::not_found(typed + ": unknown command or aircraft " + text::quoted(rc.name));
     if (rc.acid_unknown)
       return Status::not_found(typed + ": no aircraft " + text::quoted(rc.name) + usage_suffix(*rc.decl));
-    SQUAWK_RETURN_IF_ERROR(parse_call(rc, typed, parse_context()).status());
+    SQUAWK_ASSIGN_OR_RETURN(const ParsedArgs parsed, parse_call(rc, typed, ctx));
+    ctx.ref = parsed.ref;  // each command starts from the reference the one before left
   }
   return Status::ok();
 }
@@ -403,6 +426,7 @@ void Stack::reset() {
   conditions_.clear();
   fired_.clear();
   user_wpts_.clear();
+  ref_ = GeoPoint{};
   dtmult_ = 1.0;
   noise_ = false;
   trails_ = Trails();
@@ -464,6 +488,8 @@ std::string Stack::snapshot() const {
     b::put<double>(out, p.lat);
     b::put<double>(out, p.lon);
   }
+  b::put<double>(out, ref_.lat);
+  b::put<double>(out, ref_.lon);
   b::put<uint64_t>(out, seed_);
   b::put<double>(out, dtmult_);
   b::put<uint8_t>(out, noise_ ? 1 : 0);

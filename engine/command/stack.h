@@ -6,6 +6,10 @@
 //    ordered by (time, arrival);
 //  - conditional commands (ATALT / ATSPD / ATDIST);
 //  - user waypoints (DEFWPT);
+//  - the reference position (BlueSky's bs.ref, args.h): where the last
+//    successful command's parse left it; a navaid or fix named in a position
+//    is the one of that name nearest it. (0, 0) after construction, RESET and
+//    IC; a failed command leaves it as it was;
 //  - the seed RESET uses, and switches squawk records without modelling
 //    (DTMULT, NOISE), and the display's trail settings (TRAIL).
 // Counters (tally) and collected output are bookkeeping, not state.
@@ -139,6 +143,8 @@ class Stack {
   size_t queued() const { return queue_.size(); }
   const std::vector<Condition>& conditions() const { return conditions_; }
   const std::map<std::string, GeoPoint>& user_waypoints() const { return user_wpts_; }
+  // The reference position the next command's parse starts from [deg].
+  GeoPoint reference() const { return ref_; }
 
   // Deterministic bytes of the full state: Simulation::snapshot() followed by
   // the command-layer state listed at the top.
@@ -156,7 +162,13 @@ class Stack {
   }
   Status define_waypoint(const std::string& name, GeoPoint pos);
   Status delete_user_waypoint(const std::string& name);
-  // RESET: simulation, queue, conditions, user waypoints (seed kept).
+  // NEAR: sets the reference position before a handler runs its command.
+  void set_reference(GeoPoint p) { ref_ = p; }
+  // Runs one command (no `;`) from a handler (NEAR), as a line of the
+  // scenario running now or as typed when none runs; the caller's own
+  // failure handling covers it. Error: more than 8 nested in one another.
+  Result<std::string> run_nested(std::string_view command);
+  // RESET: simulation, queue, conditions, user waypoints, reference (seed kept).
   void reset();
   uint64_t seed() const { return seed_; }
   void set_seed(uint64_t seed);
@@ -199,6 +211,7 @@ class Stack {
   std::vector<Queued> fired_;  // condition commands due at the next step
   std::string where_;          // "file:line" of the queued line running now ("" when none)
   std::map<std::string, GeoPoint> user_wpts_;
+  GeoPoint ref_;  // the reference position [deg]
   uint64_t seed_ = 0;
   double dtmult_ = 1.0;
   bool noise_ = false;
@@ -210,6 +223,7 @@ class Stack {
   std::optional<std::chrono::steady_clock::time_point> deadline_;
   bool past_deadline() const { return deadline_ && std::chrono::steady_clock::now() > *deadline_; }
   int include_depth_ = 0;  // PCALL nesting guard (not state: always 0 between calls)
+  int nested_depth_ = 0;   // run_nested guard (not state: always 0 between calls)
 
   Tally tally_;
   std::vector<std::string> output_;

@@ -27,6 +27,11 @@
 //                           first ({} without it: the airport a navaid named after a city is on)
 //   sim:waypoints_at(lat, lon) -> { "54N20", ... }  idents of the fixes and navaids at exactly lat,
 //                           lon [deg] (the named points of a position said in degrees: NAT points)
+//   sim:reference()      -> lat, lon [deg]  the reference position the next command starts from
+//                           (command/args.h: a navaid or fix name is the one nearest it)
+//   sim:locate(text [, lat, lon]) -> lat, lon [deg], or nil, message: where a position argument
+//                           `text` ("LAM", "EHAM", "52 4", an aircraft) resolves from the
+//                           reference, or from lat, lon when given; nothing changes
 //   sim:load(file)       -> ok, message   (IC: reset, then the .scn file; PCALLs
 //                                          in it are found from its folder)
 //   sim:step([n = 1])                     (n steps: due commands, dynamics, conditions)
@@ -71,6 +76,7 @@
 #include <vector>
 
 #include "command/conformance.h"
+#include "command/line.h"
 #include "command/registry.h"
 #include "command/stack.h"
 #include "core/geo.h"
@@ -276,6 +282,31 @@ int l_waypoints_at(lua_State* L) {
     lua_rawseti(L, -2, ++k);
   }
   return 1;
+}
+
+int l_reference(lua_State* L) {
+  const command::GeoPoint ref = self(L)->reference();
+  lua_pushnumber(L, ref.lat);
+  lua_pushnumber(L, ref.lon);
+  return 2;
+}
+
+int l_locate(lua_State* L) {
+  command::Stack* s = self(L);
+  const std::string text = arg_string(L, 2, "text");
+  command::ParseContext ctx = s->parse_context();
+  if (!lua_isnoneornil(L, 3)) ctx.ref = {arg_number(L, 3, "lat"), arg_number(L, 4, "lon")};
+  command::ArgReader r(text);
+  auto p = command::parse_position(r, ctx, ctx.ref);
+  if (p && !r.at_end()) p = Status::invalid("more than one position in " + text::quoted(text));
+  if (!p) {
+    lua_pushnil(L);
+    lua_pushstring(L, p.status().message().c_str());
+    return 2;
+  }
+  lua_pushnumber(L, p->pos.lat);
+  lua_pushnumber(L, p->pos.lon);
+  return 2;
 }
 
 int l_check(lua_State* L) {
@@ -555,6 +586,8 @@ void bind_sim(lua_State* L) {
       {"airports_coded", guarded<l_airports_coded>},
       {"airports_beside", guarded<l_airports_beside>},
       {"waypoints_at", guarded<l_waypoints_at>},
+      {"reference", guarded<l_reference>},
+      {"locate", guarded<l_locate>},
       {"load", guarded<l_load>},
       {"step", guarded<l_step>},
       {"run_until", guarded<l_run_until>},

@@ -296,7 +296,13 @@ return function(H, f, compass)
           local whole
           if named_at == nil then whole = self:whole_place_name(r, from, s.e, nil) end
           if whole == false then return end
-          named_at = named_at or whole or (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+          if named_at == nil and not whole then
+            named_at = (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+            -- (said as its name, "over Lambourne", or typed as the ident, "over LAM")
+            named_at = self:creation_place(named_at, self.t[r.b].raw:upper() ~= r.name:upper() and self:raw(r.b, r.e))
+            if not named_at then return end
+          end
+          named_at = named_at or whole
         end
       end
       if not named_at then
@@ -309,16 +315,33 @@ return function(H, f, compass)
             local a = self.fleet[1] or { lat = 0, lon = 0 }
             if self:word(k - 1, "at") then named_at = self:airport_meant(named_at, a) end
             -- ("at Marseille": a navaid said by its name that stands on a large airport is that airport; the
-            -- navaid of that ident nearest each aircraft flying stands on the same one, "at Clacton" is the
-            -- VOR on a small airfield)
+            -- navaid of that ident nearest each aircraft flying, or with none flying the one the simulator
+            -- takes where it bears the name, stands on the same one, "at Clacton" is the VOR on a small
+            -- airfield)
             local beside, class, on = self.world.airports_beside, self.world.airport_class, nil
+            local e = k
+            while (self.explained or {})[e] and not was[e] and e < s.e do e = e + 1 end
+            -- ("at Kastrup VOR": the navaid, its kind said; "at Santiago airport": the name less "airport")
+            local at_place = self:word(k - 1, "at") and not self:word(e, "@navaid_kinds")
+            if e - 1 > k and self:word(e - 1, "@airport_nouns") then e = e - 1 end
+            local phrase = self:raw(k, e)
             if beside and class and self:word(k - 1, "at") and not named_at:match("^%a%a%a%a$") then
-              for _, b in ipairs(self.fleet) do
-                local ids = beside(named_at, b.lat, b.lon, L.on_airport_nm)
+              local at = self.fleet
+              if #at == 0 and at_place and self.world.locate and self.world.navaids_named then
+                local lat, lon = self.world.locate(named_at, table.concat(self.out, " ; "))
+                at = {}
+                for _, id in ipairs(lat and self.world.navaids_named(phrase, lat, lon, L.on_airport_nm) or {}) do
+                  if id:upper() == named_at:upper() then at = { { lat = lat, lon = lon } } end
+                end
+              end
+              for _, b in ipairs(at) do
+                local ids = b.lat and beside(named_at, b.lat, b.lon, L.on_airport_nm) or {}
                 on = (#ids == 1 and class(ids[1]) == "LARGE" and (on == nil or on == ids[1])) and ids[1] or false
               end
             end
             if on then named_at = on end
+            named_at = self:creation_place(named_at, phrase, at_place)
+            if not named_at then return end
             break
           end
         end
@@ -331,7 +354,8 @@ return function(H, f, compass)
       local t = self.t[typed]
       if t.kind == "word" and t.alpha and #t.text >= 3 and #t.text <= 5 and not t.keyword and not t.filler
           and not t.number_word and not L.phonetic[t.text] and not self.u:used(typed) and #self:refs_in(typed, typed + 1) == 0 then
-        named_at = t.text:upper()
+        named_at = self:creation_place(t.text:upper())
+        if not named_at then return end
         self:explain(typed, typed + 1)
       end
     end
@@ -1351,6 +1375,71 @@ return function(H, f, compass)
       end
     end
     return nil
+  end
+
+  -- Where an aircraft is created at `ident` (a place said as `phrase`, its name, or typed as the ident
+  -- when nil): the ident, where the simulator, from the reference position it
+  -- has when the command runs (after the commands emitted before), resolves it to the place meant:
+  -- an airport, a user waypoint or an aircraft always; a navaid or fix typed as its ident, the one of
+  -- that ident nearest the first aircraft flying (any, with none flying); one said by its name, a
+  -- navaid of that name. Said by name where the simulator takes another navaid of that ident ("at
+  -- Aeroparque": the N NDB nearest 0 0 is no AEROPARQUE), the one airport that bears the name and
+  -- stands beside the navaid of that name (`at`: said after "at", its kind not said: SABE), else nil
+  -- after asking which place is meant. An airport found by its name alone with none flying, where large
+  -- airports (else medium ones) stand beside navaids of that name farther than lexicon.navaid_range_nm
+  -- from it ("Santiago": LEST, and SCEL beside the SANTIAGO VOR in Chile), is asked about: nil.
+  function m:creation_place(ident, phrase, at)
+    local w = self.world
+    if not w.locate or not ident or self:state(ident) then return ident end
+    for _, name in ipairs(w.waypoints or {}) do
+      if name:upper() == ident:upper() then return ident end
+    end
+    local lat, lon = w.locate(ident, table.concat(self.out, " ; "))
+    if not lat then return ident end  -- (the command's check names what is wrong)
+    local named = w.navaids_named
+    if w.airport_class and w.airport_class(ident) ~= "" then
+      if not phrase or #self.fleet > 0 or not w.airports_beside_navaids then return ident end
+      local far = {}
+      for _, id in ipairs(w.airports_beside_navaids(phrase)) do
+        local alat, alon = w.locate(id)
+        if id:upper() ~= ident:upper() and alat
+            and math.abs(alat - lat) * 60 + math.abs((alon - lon + 180) % 360 - 180) * 60 * math.cos(math.rad(lat))
+              > L.navaid_range_nm then
+          far[#far + 1] = id
+        end
+      end
+      if #far == 0 then return ident end
+      return self:need(string.format("Which airport is '%s': %s, the airport of that name, or %s beside a %s "
+        .. "navaid far from it? Please give the ICAO code.", phrase, ident:upper(), table.concat(far, ", "),
+        phrase:upper()))
+    end
+    -- (within lexicon.on_airport_nm: the SPIJKERBOOR NDB and VOR, both SPY, are one place)
+    local function close(lat2, lon2)
+      return lat2 and math.abs(lat2 - lat) * 60 + math.abs((lon2 - lon + 180) % 360 - 180) * 60
+        * math.cos(math.rad(lat)) <= L.on_airport_nm
+    end
+    if not phrase then
+      local a = self.fleet[1]
+      if not a or close(w.locate(ident, nil, a.lat, a.lon)) then return ident end
+      return self:need(string.format("Which %s is meant? The simulator would take the one at %s %s, not the one "
+        .. "nearest %s. Please give its position.", ident:upper(), f.num(lat), f.num(lon), a.id))
+    end
+    if not named then return ident end
+    for _, id in ipairs(named(phrase, lat, lon, L.on_airport_nm)) do
+      if id:upper() == ident:upper() then return ident end
+    end
+    if at and w.airports_with_words and w.airports_beside_navaids then
+      local bears = {}
+      for _, id in ipairs(w.airports_with_words(phrase)) do bears[id] = true end
+      local both = {}
+      for _, id in ipairs(w.airports_beside_navaids(phrase)) do
+        if bears[id] then both[#both + 1] = id end
+      end
+      if #both == 1 then return both[1] end
+    end
+    return self:need(string.format("Which place is '%s'? The simulator would take %s at %s %s, which is not the "
+      .. "%s navaid. Please give its position or the airport's ICAO code.", phrase, ident:upper(), f.num(lat),
+      f.num(lon), phrase:upper()))
   end
 
   -- The airport a place name stands for where an airport is meant (a destination, an origin, where

@@ -255,20 +255,26 @@ function M.world(sim, waypoints)
            -- holds, where no aircraft bears it and it is no navaid's or airport's name ("dover": the DVR
            -- VOR, not the fix DOVER), else nil (POS reads it and changes nothing)
            place_known = function(name)
-             local ok, out = sim:exec("POS " .. name)
-             local lat, lon = tostring(out or ""):match("^%S+ at (%-?[%d.]+) (%-?[%d.]+)")
-             if not ok or not lat or sim:get(name) or #sim:navaids_named(name, 0, 0, 1e5) > 0
+             local lat, lon = sim:locate(name)
+             if not lat or sim:get(name) or #sim:navaids_named(name, 0, 0, 1e5) > 0
                  or #sim:airports_named(name) > 0 then
                return nil
              end
-             return tonumber(lat), tonumber(lon)
+             return lat, lon
            end,
-           -- a user waypoint's position (POS reads it and changes nothing): lat, lon or nil
-           user_waypoint_at = function(name)
-             local ok, out = sim:exec("POS " .. name)
-             local lat, lon = tostring(out or ""):match("^%S+ at (%-?[%d.]+) (%-?[%d.]+)")
-             if ok and lat then return tonumber(lat), tonumber(lon) end
-             return nil
+           -- a user waypoint's position (as a position argument resolves it now): lat, lon or nil
+           user_waypoint_at = function(name) return sim:locate(name) end,
+           -- where position argument `text` resolves (sim:locate) when the commands of `prior` (a
+           -- TrafScript line, may be nil) have run first, or from lat, lon when given: lat, lon, or nil
+           -- when it does not resolve or `prior` fails; the simulation is left as it was
+           locate = function(text, prior, lat, lon)
+             local s = sim
+             if prior and prior ~= "" then
+               s = sim:copy()
+               if not s:exec(prior) then return nil end
+             end
+             local plat, plon = s:locate(text, lat, lon)
+             return plat, plon
            end }
 end
 

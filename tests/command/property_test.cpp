@@ -60,7 +60,9 @@ struct Gen {
   }
 
   std::string command() {
-    switch (rng.uniform_int(0, 38)) {
+    switch (rng.uniform_int(0, 39)) {
+      case 39:
+        return "NEAR " + lat() + " " + lon() + " " + command();
       case 34:
       case 35:
       case 36:

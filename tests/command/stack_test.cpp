@@ -497,3 +497,104 @@ TEST_CASE(
   CHECK((*db)->navaids_named("vor dme", lat, lon, 250).empty());
   CHECK((*db)->navaids_named("", lat, lon, 250).empty());
 }
+
+namespace {
+
+// Two navaids that share the ident LAM (nav.dat: the LAMBOURNE VOR-DME near London and the LICA 28
+// ILS's LAM in Italy) and a fix of its own.
+Stack with_two_lams() {
+  Stack s(0);
+  s.set_navdb(
+      std::make_shared<const NavDb>(std::vector<NavPoint>{{"EGLL", "APT", 51.477, -0.461}},
+                                    std::vector<NavPoint>{{"LAM", "VOR", 51.646111, 0.151667},
+                                                          {"LAM", "ILS", 38.907314, 16.225853},
+                                                          {"SOLO", "FIX", 45.0, 10.0}}));
+  return s;
+}
+
+bool at(const Stack& s, const char* id, double lat, double lon) {
+  const int i = s.sim().index_of(id);
+  return i >= 0 && std::abs(s.sim().traffic().lat[i] - lat) < 1e-6 &&
+         std::abs(s.sim().traffic().lon[i] - lon) < 1e-6;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "reference position: kept between commands as BlueSky's bs.ref; (0, 0) at the start and after "
+    "RESET") {
+  Stack s = with_two_lams();
+  CHECK(s.reference().lat == 0.0);
+  CHECK(s.reference().lon == 0.0);
+  // an empty scene: LAM nearest (0, 0) is the Italian one
+  REQUIRE(s.exec("CRE B0 A320 LAM 90 FL100 250"));
+  CHECK(at(s, "B0", 38.907314, 16.225853));
+  // traffic created over London moves the reference there: the next command's LAM is Lambourne
+  REQUIRE(s.exec("CRE A1 A320 51.5 -0.1 90 FL100 250"));
+  CHECK(s.reference().lat == doctest::Approx(51.5));
+  REQUIRE(s.exec("CRE B1 A320 LAM 90 FL100 250"));
+  CHECK(at(s, "B1", 51.646111, 0.151667));
+  // an aircraft named moves it to that aircraft (AcidArg); a position that is an aircraft does not
+  // (PosArg)
+  REQUIRE(s.exec("ALT B0 FL120"));
+  CHECK(s.reference().lat == doctest::Approx(38.907314));
+  REQUIRE(s.exec("CRE C1 A320 A1 90 FL100 250"));
+  CHECK(s.reference().lat == doctest::Approx(38.907314));
+  // a waypoint argument reads it and leaves it (WptArg): ADDWPT's acid set it
+  REQUIRE(s.exec("ADDWPT A1 LAM"));
+  CHECK(s.sim().traffic().route[s.sim().index_of("A1")].waypoints()[0].lat ==
+        doctest::Approx(51.646111));
+  CHECK(s.reference().lat == doctest::Approx(51.5));
+  // AFTER's new waypoint resolves from the reference its aircraft set
+  REQUIRE(s.exec("ADDWPT B1 SOLO"));
+  REQUIRE(s.exec("B1 AFTER SOLO ADDWPT LAM"));
+  CHECK(s.sim().traffic().route[s.sim().index_of("B1")].waypoints().back().lat ==
+        doctest::Approx(51.646111));
+  // a line's commands run in order, each from the reference the one before left
+  REQUIRE(s.exec("ALT B0 FL130; CRE B2 A320 LAM 90 FL100 250"));
+  CHECK(at(s, "B2", 38.907314, 16.225853));
+  // RESET (and IC) put it back at (0, 0)
+  REQUIRE(s.exec("CRE D1 A320 51.5 -0.1 90 FL100 250; RESET"));
+  CHECK(s.reference().lat == 0.0);
+  REQUIRE(s.exec("CRE B3 A320 LAM 90 FL100 250"));
+  CHECK(at(s, "B3", 38.907314, 16.225853));
+}
+
+TEST_CASE("reference position: a failed command leaves it and the whole state as they were") {
+  Stack s = with_two_lams();
+  REQUIRE(s.exec("CRE A1 A320 51.5 -0.1 90 FL100 250"));
+  // the parse reached 10 10 before the handler refused the duplicate callsign
+  error_of(s, "CRE A1 A320 10 10 90 FL100 250");
+  error_of(s, "CRE X1 A320 10 10 90 FL100 -5");
+  error_of(s, "NEAR 10 10 CRE A1 A320 LAM 90 FL100 250");
+  error_of(s, "NEAR 10 10 WIBBLE");
+  CHECK(s.reference().lat == doctest::Approx(51.5));
+  REQUIRE(s.exec("CRE B1 A320 LAM 90 FL100 250"));
+  CHECK(at(s, "B1", 51.646111, 0.151667));
+  // the snapshot holds it: two stacks that differ only in it differ
+  Stack a = with_two_lams(), b = with_two_lams();
+  REQUIRE(a.exec("NEAR 1 1 ECHO x"));
+  REQUIRE(b.exec("NEAR 2 2 ECHO x"));
+  CHECK(a.snapshot() != b.snapshot());
+}
+
+TEST_CASE(
+    "NEAR lat,lon,command: the command runs from that reference; check() carries the reference") {
+  Stack s = with_two_lams();
+  REQUIRE(s.exec("NEAR 51.6 0.2 CRE B1 A320 LAM 90 FL100 250"));
+  CHECK(at(s, "B1", 51.646111, 0.151667));
+  REQUIRE(s.exec("NEAR EGLL CRE B2 A320 LAM 90 FL100 250"));
+  CHECK(at(s, "B2", 51.646111, 0.151667));
+  REQUIRE(s.exec("NEAR 40 15 CRE B3 A320 LAM 90 FL100 250"));
+  CHECK(at(s, "B3", 38.907314, 16.225853));
+  CHECK_FALSE(s.check("NEAR 40 15"));
+  // from a scenario line as typed
+  s.schedule(0.0, "NEAR 51.6 0.2 CRE B4 A320 LAM 90 FL100 250");
+  s.process_due();
+  CHECK(at(s, "B4", 51.646111, 0.151667));
+  CHECK(
+      error_of(
+          s,
+          "NEAR 1 1 NEAR 1 1 NEAR 1 1 NEAR 1 1 NEAR 1 1 NEAR 1 1 NEAR 1 1 NEAR 1 1 NEAR 1 1 ECHO x")
+          .find("nested") != std::string::npos);
+}

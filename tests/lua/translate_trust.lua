@@ -3281,10 +3281,15 @@ end
 do
   local nav, ex = navscene({}, "navaids by name and kind")
   if nav then
-    check_eq(ex("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots"),
+    -- (in an empty scene LAM and NIK resolve from 0 0 to other navaids of those idents: asked, naming them;
+    -- "Creation places and the reference position" below)
+    check(ex("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots")
+      :match("^ASK Which place is 'Lambourne") ~= nil, "LAM from 0 0 is the LICA 28 ILS")
+    check(ex("new aircraft KLM5 B738 sitting on the Nicky VOR, flight level 200, heading 270, 260 kts")
+      :match("^ASK Which place is 'Nicky") ~= nil, "NIK from 0 0 is the NIKSIC NDB")
+    local _, near = navscene({ "CRE BAW1 A320 51.5 -0.3 090 FL200 250" }, "navaids by name and kind")
+    check_eq(near("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots"),
       "CRE DLH42 A320 LAM 180 FL240 280")
-    check_eq(ex("new aircraft KLM5 B738 sitting on the Nicky VOR, flight level 200, heading 270, 260 kts"),
-      "CRE KLM5 B738 NIK 270 FL200 260")
     check(ex("create XY12 A320 above the Lambourne NDB at FL100 heading 090 250 kts"):match("^ASK") ~= nil,
       "no NDB bears the name: asked")
   end
@@ -4492,4 +4497,48 @@ do
   check_eq(ex("SAS36 at KOBRA reduce to 210"), "AT SAS36 KOBRA SPD 210")
   check(ex("SAS36 at LUPUS desc 4000"):match("^ASK") ~= nil, "a waypoint off the route")
   check(ex("SAS36 at KOBRA descend 40"):match("^ASK") ~= nil, "a bare number under 1000")
+end
+
+-- Creation places and the reference position: a place where traffic is created is issued by its ident
+-- only where the simulator, from the reference it has when the CRE runs, resolves the ident to the place
+-- meant; otherwise the airport the name means or a question naming the place
+do
+  local r
+  local s, ex = navscene({}, "creation places and the reference position")
+  if s then
+    -- an empty scene resolves from 0 0: LAM there is the LICA 28 ILS, not the LAMBOURNE VOR
+    r = ex("spawn RYR4TT, an A320, at Lambourne heading 090 FL150 at 250 knots")
+    check(r:match("^ASK") and r:find("Lambourne", 1, true) ~= nil, r)
+    -- a navaid whose ident the simulator takes from 0 0 is issued (OCK: the OCKHAM VOR)
+    check_eq(ex("spawn BAW7Q, an A320, over Ockham heading 090 FL150 at 250 knots"), "CRE BAW7Q A320 OCK 90 FL150 250")
+    -- a navaid said by its name that stands on a large airport is the airport: EZE is on SAEZ
+    check_eq(ex("put ARG77, a B738, at Ezeiza, heading 200, FL050, 220 knots"), "CRE ARG77 B738 SAEZ 200 FL50 220")
+    -- the AEROPARQUE NDB's ident N is another N NDB from 0 0: the airport that bears the name beside it
+    check_eq(ex("create FBZ10 B738 at Aeroparque heading 090 FL040 200 knots"), "CRE FBZ10 B738 SABE 90 FL40 200")
+    -- the one airport named SANTIAGO (LEST, Spain) where SANTIAGO navaids stand in Chile and elsewhere too
+    r = ex("create JAT9 A320 at Santiago airport heading 350 FL060 210 knots")
+    check(r:match("^ASK") and r:find("LEST", 1, true) ~= nil and r:find("SCEL", 1, true) ~= nil, r)
+    -- a navaid said with its kind is the navaid: KAS from 0 0 is the KASANE NDB, asked, never EKCH
+    r = ex("add SAS3 A320 at the Kastrup VOR heading 180 FL110 260 knots")
+    check(r:match("^ASK Which place is 'Kastrup") ~= nil, r)
+    -- a name that names one airport and no navaid far from it stays issued; other large airports of the
+    -- city around it are no other place ("Gatwick": EGLC within lexicon.navaid_range_nm)
+    check_eq(ex("create KLM5 B738 at Schiphol heading 090 FL100 250 knots"), "CRE KLM5 B738 EHAM 90 FL100 250")
+    check_eq(ex("create EZY5 A320 at Gatwick heading 260 3000 ft 200 knots"), "CRE EZY5 A320 EGKK 260 3000 200")
+  end
+  -- traffic over London: the reference is there, and LAM is the Lambourne VOR
+  local s2, ex2 = navscene({ "CRE BAW1 A320 51.5 -0.3 090 FL200 250" }, "creation places near traffic")
+  if s2 then
+    check_eq(ex2("spawn RYR4TT, an A320, at Lambourne heading 090 FL150 at 250 knots"), "CRE RYR4TT A320 LAM 90 FL150 250")
+    check_eq(ex2("create EZY9 A319 over LAM heading 180 FL120 250 knots"), "CRE EZY9 A319 LAM 180 FL120 250")
+    -- typed as its ident with traffic flying elsewhere than the reference: the one nearest the traffic
+    -- is meant, and the simulator would take the other one
+    local s3, ex3 = navscene({ "CRE BAW2 A320 51.5 -0.3 090 FL200 250", "NEAR 39 16 ECHO reference in Italy" },
+      "creation places near traffic")
+    r = ex3("create EZY9 A319 over LAM heading 180 FL120 250 knots")
+    check(r:match("^ASK Which LAM is meant") ~= nil, r)
+    -- the translator's look-ups leave the simulation's reference where the scene left it
+    local lat, lon = s2:reference()
+    check(math.abs(lat - 51.5) < 1e-9 and math.abs(lon + 0.3) < 1e-9, lat .. " " .. lon)
+  end
 end
