@@ -302,9 +302,9 @@ std::string NavDb::airport_class(std::string_view id) const {
   return std::string();
 }
 
-std::vector<std::string> NavDb::navaids_named(std::string_view name, double ref_lat, double ref_lon,
-                                              double within_nm, std::string_view types) const {
-  std::vector<std::pair<double, std::string>> found;
+std::vector<const NavPoint*> NavDb::navaids_named(std::string_view name, double ref_lat, double ref_lon,
+                                                  double within_nm, std::string_view types) const {
+  std::vector<std::pair<double, size_t>> found;
   const std::string key = name_key(name);
   if (key.empty()) return {};
   const std::string kinds = " " + text::upper(types) + " ";
@@ -313,12 +313,14 @@ std::vector<std::string> NavDb::navaids_named(std::string_view name, double ref_
     const NavPoint& p = waypoints_[i];
     if (!types.empty() && kinds.find(" " + p.type + " ") == std::string::npos) continue;
     const double d = geo::kwikdist_nm(ref_lat, ref_lon, p.lat, p.lon);
-    if (d <= within_nm) found.emplace_back(d, p.id);
+    if (d <= within_nm) found.emplace_back(d, i);
   }
   std::sort(found.begin(), found.end());
-  std::vector<std::string> out;
-  for (const auto& f : found)
-    if (std::find(out.begin(), out.end(), f.second) == out.end()) out.push_back(f.second);
+  std::vector<const NavPoint*> out;
+  for (const auto& f : found) {
+    const NavPoint* p = &waypoints_[f.second];
+    if (std::none_of(out.begin(), out.end(), [&](const NavPoint* q) { return q->id == p->id; })) out.push_back(p);
+  }
   return out;
 }
 

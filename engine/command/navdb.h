@@ -71,12 +71,12 @@ class NavDb {
   // airports.dat's class of airport `id`, upper case ("LARGE", "MEDIUM", "SMALL"), or "" when
   // unknown.
   std::string airport_class(std::string_view id) const;
-  // Idents of the navaids whose name, less its kind ("SAN FRANCISCO" of nav.dat's "SAN
-  // FRANCISCO VOR-DME"), is `name` (case and punctuation ignored), within `within_nm` of
-  // (ref_lat, ref_lon) [deg], nearest first, each ident once; of the NavPoint types in `types`
-  // ("VOR TACAN", space-separated) only, when it is not empty.
-  std::vector<std::string> navaids_named(std::string_view name, double ref_lat, double ref_lon,
-                                         double within_nm, std::string_view types = {}) const;
+  // The navaids whose name, less its kind ("SAN FRANCISCO" of nav.dat's "SAN FRANCISCO
+  // VOR-DME"), is `name` (case and punctuation ignored), within `within_nm` of (ref_lat,
+  // ref_lon) [deg], nearest first, each ident once (its nearest); of the NavPoint types in
+  // `types` ("VOR TACAN", space-separated) only, when it is not empty. Pointers into this NavDb.
+  std::vector<const NavPoint*> navaids_named(std::string_view name, double ref_lat, double ref_lon,
+                                             double within_nm, std::string_view types = {}) const;
   // The waypoint (fix or navaid) named `id` nearest (ref_lat, ref_lon) [deg].
   const NavPoint* waypoint(std::string_view id, double ref_lat, double ref_lon) const;
 

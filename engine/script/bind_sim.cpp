@@ -15,9 +15,10 @@
 //   sim:airports_beside_navaids(name [, lat, lon, within_nm]) -> { "LFBO", ... }  the large (else
 //                           medium) airports within 10 nm of a navaid called `name` ("Toulouse")
 //   sim:airport_class(id) -> "LARGE" | "MEDIUM" | "SMALL" | ""  airports.dat's class
-//   sim:navaids_named(name, lat, lon, within_nm [, types]) -> { "SFO", ... }  idents of the navaids
-//                           called `name` within within_nm of lat, lon [deg], nearest first; of
-//                           the navdata types in `types` ("VOR TACAN") only, when given
+//   sim:navaids_named(name, lat, lon, within_nm [, types]) -> { "SFO", ... }, { {lat, lon}, ... }
+//                           idents of the navaids called `name` within within_nm of lat, lon [deg],
+//                           nearest first, and their positions [deg]; of the navdata types in
+//                           `types` ("VOR TACAN") only, when given
 //   sim:airports_coded(code, lat, lon) -> { "KJFK", ... }  airports whose ICAO code is one letter
 //                           before the three-letter `code` within 10 nm of the navaid or fix `code`
 //                           nearest lat, lon [deg] (the airport people name by the code of its
@@ -260,13 +261,21 @@ int l_navaids_named(lua_State* L) {
                within = arg_number(L, 5, "within_nm");
   const std::string types = lua_isnoneornil(L, 6) ? std::string() : arg_string(L, 6, "types");
   lua_newtable(L);
-  if (!s->navdb()) return 1;
+  lua_newtable(L);
+  if (!s->navdb()) return 2;
   int k = 0;
-  for (const std::string& id : s->navdb()->navaids_named(name, lat, lon, within, types)) {
-    lua_pushstring(L, id.c_str());
-    lua_rawseti(L, -2, ++k);
+  for (const command::NavPoint* p : s->navdb()->navaids_named(name, lat, lon, within, types)) {
+    ++k;
+    lua_pushstring(L, p->id.c_str());
+    lua_rawseti(L, -3, k);
+    lua_createtable(L, 2, 0);
+    lua_pushnumber(L, p->lat);
+    lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, p->lon);
+    lua_rawseti(L, -2, 2);
+    lua_rawseti(L, -2, k);
   }
-  return 1;
+  return 2;
 }
 
 int l_waypoints_at(lua_State* L) {

@@ -1384,8 +1384,9 @@ return function(H, f, compass)
   -- that ident nearest the first aircraft flying (any, with none flying); one said by its name, a
   -- navaid of that name. Said by name where the simulator takes another navaid of that ident ("at
   -- Aeroparque": the N NDB nearest 0 0 is no AEROPARQUE), the one airport that bears the name and
-  -- stands beside the navaid of that name (`at`: said after "at", its kind not said: SABE), else nil
-  -- after asking which place is meant. An airport found by its name alone with none flying, where large
+  -- stands beside the navaid of that name (`at`: said after "at", its kind not said: SABE), else the
+  -- position of the navaids of that name where they are one place ("lat lon"), else nil after asking
+  -- which place is meant. An airport found by its name alone with none flying, where large
   -- airports (else medium ones) stand beside navaids of that name farther than lexicon.navaid_range_nm
   -- from it ("Santiago": LEST, and SCEL beside the SANTIAGO VOR in Chile), is asked about: nil.
   function m:creation_place(ident, phrase, at)
@@ -1436,6 +1437,20 @@ return function(H, f, compass)
         if bears[id] then both[#both + 1] = id end
       end
       if #both == 1 then return both[1] end
+    end
+    -- (the navaids of that name anywhere, where they are one place: its position, which no reference
+    -- can move: "at Lambourne" in an empty scene is the LAMBOURNE VOR's latitude and longitude)
+    local _, points = named(phrase, 0, 0, 1e5)
+    local p = points and points[1]
+    if p then
+      for k = 2, #points do
+        if math.abs(points[k][1] - p[1]) * 60 + math.abs((points[k][2] - p[2] + 180) % 360 - 180) * 60
+            * math.cos(math.rad(p[1])) > L.on_airport_nm then
+          p = nil
+          break
+        end
+      end
+      if p then return f.num(p[1]) .. " " .. f.num(p[2]) end
     end
     return self:need(string.format("Which place is '%s'? The simulator would take %s at %s %s, which is not the "
       .. "%s navaid. Please give its position or the airport's ICAO code.", phrase, ident:upper(), f.num(lat),

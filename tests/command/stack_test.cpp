@@ -489,10 +489,18 @@ TEST_CASE(
       "", "test");
   REQUIRE(db.is_ok());
   const double lat = 37.75, lon = -122.55;
-  CHECK((*db)->navaids_named("san francisco", lat, lon, 250) == std::vector<std::string>{"SFO"});
-  CHECK((*db)->navaids_named("Point Reyes", lat, lon, 250) == std::vector<std::string>{"PYE"});
-  CHECK((*db)->navaids_named("point reyes", lat, lon, 1e5) ==
-        std::vector<std::string>{"PYE", "PYX"});
+  auto idents = [&](const std::vector<const NavPoint*>& points) {
+    std::vector<std::string> ids;
+    for (const NavPoint* p : points) ids.push_back(p->id);
+    return ids;
+  };
+  CHECK(idents((*db)->navaids_named("san francisco", lat, lon, 250)) == std::vector<std::string>{"SFO"});
+  CHECK(idents((*db)->navaids_named("Point Reyes", lat, lon, 250)) == std::vector<std::string>{"PYE"});
+  const auto reyes = (*db)->navaids_named("point reyes", lat, lon, 1e5);
+  CHECK(idents(reyes) == std::vector<std::string>{"PYE", "PYX"});
+  REQUIRE(reyes.size() == 2);
+  CHECK(reyes[1]->lat == doctest::Approx(51.0));
+  CHECK(reyes[1]->lon == doctest::Approx(1.0));
   CHECK((*db)->navaids_named("reyes", lat, lon, 250).empty());
   CHECK((*db)->navaids_named("vor dme", lat, lon, 250).empty());
   CHECK((*db)->navaids_named("", lat, lon, 250).empty());

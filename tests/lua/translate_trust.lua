@@ -3281,12 +3281,12 @@ end
 do
   local nav, ex = navscene({}, "navaids by name and kind")
   if nav then
-    -- (in an empty scene LAM and NIK resolve from 0 0 to other navaids of those idents: asked, naming them;
-    -- "Creation places and the reference position" below)
-    check(ex("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots")
-      :match("^ASK Which place is 'Lambourne") ~= nil, "LAM from 0 0 is the LICA 28 ILS")
-    check(ex("new aircraft KLM5 B738 sitting on the Nicky VOR, flight level 200, heading 270, 260 kts")
-      :match("^ASK Which place is 'Nicky") ~= nil, "NIK from 0 0 is the NIKSIC NDB")
+    -- (in an empty scene LAM and NIK resolve from 0 0 to other navaids of those idents: the navaid named is
+    -- given by its position; "Creation places and the reference position" below)
+    check_eq(ex("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots"),
+      "CRE DLH42 A320 51.646111 0.151667 180 FL240 280")
+    check_eq(ex("new aircraft KLM5 B738 sitting on the Nicky VOR, flight level 200, heading 270, 260 kts"),
+      "CRE KLM5 B738 51.162498 4.189167 270 FL200 260")
     local _, near = navscene({ "CRE BAW1 A320 51.5 -0.3 090 FL200 250" }, "navaids by name and kind")
     check_eq(near("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots"),
       "CRE DLH42 A320 LAM 180 FL240 280")
@@ -4506,9 +4506,10 @@ do
   local r
   local s, ex = navscene({}, "creation places and the reference position")
   if s then
-    -- an empty scene resolves from 0 0: LAM there is the LICA 28 ILS, not the LAMBOURNE VOR
-    r = ex("spawn RYR4TT, an A320, at Lambourne heading 090 FL150 at 250 knots")
-    check(r:match("^ASK") and r:find("Lambourne", 1, true) ~= nil, r)
+    -- an empty scene resolves from 0 0: LAM there is the LICA 28 ILS, so the LAMBOURNE VOR is given by its
+    -- position, which no reference moves
+    check_eq(ex("spawn RYR4TT, an A320, at Lambourne heading 090 FL150 at 250 knots"),
+      "CRE RYR4TT A320 51.646111 0.151667 90 FL150 250")
     -- a navaid whose ident the simulator takes from 0 0 is issued (OCK: the OCKHAM VOR)
     check_eq(ex("spawn BAW7Q, an A320, over Ockham heading 090 FL150 at 250 knots"), "CRE BAW7Q A320 OCK 90 FL150 250")
     -- a navaid said by its name that stands on a large airport is the airport: EZE is on SAEZ
@@ -4518,9 +4519,10 @@ do
     -- the one airport named SANTIAGO (LEST, Spain) where SANTIAGO navaids stand in Chile and elsewhere too
     r = ex("create JAT9 A320 at Santiago airport heading 350 FL060 210 knots")
     check(r:match("^ASK") and r:find("LEST", 1, true) ~= nil and r:find("SCEL", 1, true) ~= nil, r)
-    -- a navaid said with its kind is the navaid: KAS from 0 0 is the KASANE NDB, asked, never EKCH
-    r = ex("add SAS3 A320 at the Kastrup VOR heading 180 FL110 260 knots")
-    check(r:match("^ASK Which place is 'Kastrup") ~= nil, r)
+    -- a navaid said with its kind is the navaid, never the airport: KAS from 0 0 is the KASANE NDB, so the
+    -- KASTRUP VOR by its position, never EKCH
+    check_eq(ex("add SAS3 A320 at the Kastrup VOR heading 180 FL110 260 knots"),
+      "CRE SAS3 A320 55.590519 12.613603 180 FL110 260")
     -- a name that names one airport and no navaid far from it stays issued; other large airports of the
     -- city around it are no other place ("Gatwick": EGLC within lexicon.navaid_range_nm)
     check_eq(ex("create KLM5 B738 at Schiphol heading 090 FL100 250 knots"), "CRE KLM5 B738 EHAM 90 FL100 250")
