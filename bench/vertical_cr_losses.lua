@@ -14,11 +14,18 @@
 -- script: policy with a `threat` method (envs/policies/vertical_cr.lua) the mean number of
 -- steps it flew away from an intruder and, for "high", how many of them avoided one within
 -- the last 10 steps (the avoidance left it too high to glide down).
--- With `v`, one line per episode.
--- usage: squawk run bench/vertical_cr_losses.lua POLICY [EPISODES [SEED]] [v] [--openap DIR] [--allow-read DIR]
-local usage = "usage: squawk run bench/vertical_cr_losses.lua POLICY [EPISODES [SEED]] [v]"
+-- With `v`, one line per episode; with `env=FILE` the episodes are FILE's (a file with the same
+-- episodes and a longer observation, such as envs/vertical_cr_history.lua, for a checkpoint
+-- trained on it).
+-- usage: squawk run bench/vertical_cr_losses.lua POLICY [EPISODES [SEED]] [v] [env=FILE] [--openap DIR] [--allow-read DIR]
+local usage = "usage: squawk run bench/vertical_cr_losses.lua POLICY [EPISODES [SEED]] [v] [env=FILE]"
 local spec = assert(arg[1], usage)
-local episodes, seed, verbose = tonumber(arg[2] or 200), tonumber(arg[3] or 0), arg[4] == "v"
+local episodes, seed = tonumber(arg[2] or 200), tonumber(arg[3] or 0)
+local verbose, env_file = false, "envs/vertical_cr.lua"
+for i = 4, #arg do
+  if arg[i] == "v" then verbose = true end
+  env_file = arg[i]:match("^env=(.*)$") or env_file
+end
 local SUCCESS_MAX_ALT, LATE_STEPS = 1000 * 0.3048, 10
 
 local gym = require("gym_load")
@@ -31,7 +38,7 @@ end
 local all = {n = 0, ret = 0, intr = 0, hold = 0, dive = 0, final = 0, alt = 0, avoid = 0, late = 0}
 
 local function play(s)
-  local env = gym.load("envs/vertical_cr.lua")
+  local env = gym.load(env_file)
   local policy = gym.policy(spec, env)
   local avoided = false
   if type(policy.threat) == "function" then
