@@ -20,13 +20,14 @@ local NUM_INTRUDERS = 5
 local MAX_RATE, STEP_S = 12.5, 30         -- [m/s], [s] the action's scale and one env step
 local ZONE_KM = 5 * 1.852                 -- [km] horizontal intrusion distance
 local VERT_M = 1000 * 0.3048              -- [m] vertical intrusion distance
-local H_MARGIN_KM, V_MARGIN_M = 0.5, 15   -- prediction margins on the intrusion zone
+local H_MARGIN_KM, V_MARGIN_M = 1.0, 50   -- margins on the intrusion zone (prediction, a clone's error)
 local INTRUSION, CRASH = 50, 100          -- costs (the reward's magnitudes)
 local SHAPING, FINAL = 1 / 600, 1 / 60    -- [1/m] altitude costs before and at the runway
 local SAFE_M = 120                        -- [m] a final altitude below this counts as a crash (margin for a clone)
 local GRID_M, MOVES = 75, 5               -- [m] plan grid; a full-rate step moves MOVES levels (375 m)
 local CEILING_M = 1200                    -- [m] the plan stays below max(alt, target) + this
 local RATE_STEP = 0.5                     -- [m/s] first-step vertical speed resolution
+local HOLD_RATE = 0.625                   -- [m/s] the hold's vertical speed (action 0.05)
 local VS_ACCEL = 1.524                    -- [m/s^2] the simulator's V/S ramp
 local CAS = 150                           -- [m/s] the ownship's calibrated airspeed (descent.lua)
 local SCALE, SCALE_GAIN = 0.97, 0.3       -- observed over true ground speed: first guess, smoothing
@@ -171,6 +172,9 @@ function P:act(obs)
     local c = cost_at(1, h) + after(h, mode) + 1e-6 * math.abs(r)
     if c < best then best_rate, best = r, c end
   end
+  -- A hold (a rate under HOLD_RATE) reverses the present vertical speed at HOLD_RATE: an action
+  -- a clone can read from vz, where one near 0 averages into the default 7.6 m/s band.
+  if math.abs(best_rate) < HOLD_RATE then best_rate = vz > 0 and -HOLD_RATE or HOLD_RATE end
   return {Descent.rate_action(best_rate)}
 end
 
