@@ -35,25 +35,27 @@ local function act(obs)
   return t:act(obs)[1]
 end
 
--- Far from the runway with no intruder near: hold the target (the smallest rate the action allows).
-check(math.abs(act(observation(150, {}))) <= 0.2 / 12.5 + 1e-12, "holds the target")
+local HOLD = 0.625 / 12.5  -- the teacher's hold: its vertical speed reversed at 0.625 m/s (up from 0)
 
--- An intruder head-on 17 km ahead at the same altitude closes about 9.5 km a step: within 5 NM
--- at the end of this step. Leaving its 1000 ft (and the teacher's 15 m margin) in one step from
--- level flight takes the full rate (330 m with the V/S ramp), so the teacher flies it; the rule,
--- with no previous distance to read a closing rate from, holds.
-local head_on = {{17, 0, 0, 180, 150}}
-check_eq(math.abs(act(observation(150, head_on))), 1, "full rate away from the head-on intruder")
+-- Far from the runway with no intruder near: hold the target.
+check_near(act(observation(150, {})), HOLD, 1e-12, "holds the target")
+
+-- An intruder head-on at the same altitude closes about 9.5 km a step. 25 km ahead it is within
+-- the teacher's zone (5 NM and 4 km) at the end of the second step, and leaving its 1000 ft and
+-- 250 m takes most of the full rate for those two steps; the rule, with no previous distance to
+-- read a closing rate from, holds. 40 km ahead there are three steps: a gentler start.
+local head_on = {{25, 0, 0, 180, 150}}
+check(math.abs(act(observation(150, head_on))) >= 0.5, "away from the head-on intruder 25 km ahead")
 rule:reset(0)
 check(math.abs(rule:act(observation(150, head_on))[1]) < 0.02, "the rule holds on its first look")
--- 25 km ahead it is within 5 NM at the end of the next step: two steps to climb or descend
--- 320 m, so less than the full rate now.
-local early = act(observation(150, {{25, 0, 0, 180, 150}}))
-check(math.abs(early) > 0.05 and math.abs(early) < 1, "a start away from the intruder 25 km ahead")
--- The same intruder 400 m above is already clear: hold.
-check(math.abs(act(observation(150, {{17, 0, 400, 180, 150}}))) <= 0.2 / 12.5 + 1e-12, "clear above: hold")
+local early = act(observation(150, {{40, 0, 0, 180, 150}}))
+check(math.abs(early) > HOLD and math.abs(early) < 0.5, "a gentle start for the intruder 40 km ahead")
+-- 17 km ahead and 600 m above it is clear of the zone and the margin: hold; 400 m above it is
+-- not: away from it, down.
+check_near(act(observation(150, {{17, 0, 600, 180, 150}})), HOLD, 1e-12, "600 m above: hold")
+check(act(observation(150, {{17, 0, 400, 180, 150}})) < -0.2, "400 m above: down")
 
 -- The descent as late as possible: 60 km out (about 12 steps) there is time to hold; 35 km out
 -- (about 7 steps) 2880 m to lose (to the 120 m aim) needs most of the full rate from now on.
-check(math.abs(act(observation(60, {}))) <= 0.2 / 12.5 + 1e-12, "60 km out: hold")
+check_near(act(observation(60, {})), HOLD, 1e-12, "60 km out: hold")
 check(act(observation(35, {})) <= -0.5, "35 km out: descend")
