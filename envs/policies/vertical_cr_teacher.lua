@@ -7,12 +7,13 @@
 -- step that passes the runway (or −100 on the ground), and flies the plan's first step. The
 -- intruders fly straight and level (envs/vertical_cr.lua): each one's position and velocity
 -- relative to the ownship are read from its distance, bearing and x/y/z_difference_speed, and
--- extrapolated; the ownship flies north at the ground speed measured over the last step, scaled
--- with altitude by the true airspeed of a constant CAS (ISA density). The plan's altitudes lie
--- on a grid of GRID_M from the present altitude, one step's change at most the full rate (375 m);
--- the first step's vertical speed is chosen finer (RATE_STEP) and flown through the simulator's
--- V/S ramp (1.524 m/s², engine/sim/simulation.cpp). Observation: envs/policies/vertical_cr.lua's
--- comment. Units: metres, seconds, m/s; km where named.
+-- extrapolated; the ownship flies north at the true airspeed of its 150 m/s CAS (ISA,
+-- compressible) times the observed ratio of runway distance flown to it (smoothed). The plan's
+-- altitudes lie on a grid of GRID_M from the present altitude, one step's change at most the full
+-- rate (375 m); the first step's vertical speed is chosen finer (RATE_STEP) and flown through the
+-- simulator's V/S ramp (1.524 m/s², engine/sim/simulation.cpp). For a clone it keeps margins
+-- beyond the intrusion zone, aims above SAFE_M at the runway and holds at ±HOLD_RATE.
+-- Observation: envs/policies/vertical_cr.lua's comment. Units: metres, seconds, m/s; km where named.
 
 local Descent = require("descent")
 
