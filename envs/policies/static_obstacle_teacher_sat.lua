@@ -5,7 +5,7 @@
 -- exactly as the tight one (every one of 1000 episodes of seeds 0 and 5000; with
 -- 15 deg, 9 of 100 differ), and a clone's mean may err by up to 0.6 on such a turn
 -- without changing the flight (docs/gym_envs.md, "A StaticObstacle MLP from
--- saturated labels"). Its labels are for cloning only. Units: degrees.
+-- saturated labels (measured)"). Its labels are for cloning only. Units: degrees.
 local SAT_DEG = 17  -- [deg] a larger selected turn is labelled +-45 deg (action +-1)
 local D_HEADING = 45  -- [deg per unit of action] (envs/static_obstacle.lua)
 
