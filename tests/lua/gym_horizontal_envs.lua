@@ -130,3 +130,32 @@ check(ra[1] <= -10 / 45 + 1e-9 and ra[1] >= -15 / 45 - 1e-9, "the rule turns 10-
 check_eq(ta[1], -1, "the teacher turns fully left")
 check_eq(rule.blocked, false); check_eq(teacher.blocked, false)
 check_eq(ra[2], 1); check_eq(ta[2], 1)
+
+-- The saturated teacher (envs/policies/static_obstacle_teacher_sat.lua) flies as the tight one,
+-- step for step, and labels every turn of more than 17 deg as the full turn: two environments
+-- of the same seed, each flown by one teacher, stay equal.
+local tight = squawk.gym.load(squawk.home .. "/envs/policies/static_obstacle_teacher_tight.lua")
+local sat = squawk.gym.load(squawk.home .. "/envs/policies/static_obstacle_teacher_sat.lua")
+local so2 = squawk.gym.load(squawk.home .. "/envs/static_obstacle.lua")
+local widened, labels = 0, 0
+for seed = 0, 9 do
+  local oa, ob = so:reset(seed), so2:reset(seed)
+  for _ = 1, 100 do
+    local ta, sa = tight:act(oa), sat:act(ob)
+    check_eq(sa[2], ta[2])
+    if math.abs(ta[1]) * 45 <= 17 then
+      check_eq(sa[1], ta[1], "a turn within one step's reach is kept")
+    else
+      check_eq(sa[1], ta[1] > 0 and 1 or -1, "a longer turn is labelled full")
+      if math.abs(ta[1]) < 1 then widened = widened + 1 end
+    end
+    labels = labels + 1
+    local ra, terma, rb, termb
+    oa, ra, terma = so:step(ta)
+    ob, rb, termb = so2:step(sa)
+    check_eq(rb, ra); check_eq(termb, terma)
+    for i = 1, #oa do check_eq(ob[i], oa[i], "observation " .. i) end
+    if terma then break end
+  end
+end
+check(widened > 0, "some turns of 17-45 deg were widened: " .. widened .. " of " .. labels)
