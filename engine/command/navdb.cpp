@@ -302,8 +302,9 @@ std::string NavDb::airport_class(std::string_view id) const {
   return std::string();
 }
 
-std::vector<const NavPoint*> NavDb::navaids_named(std::string_view name, double ref_lat, double ref_lon,
-                                                  double within_nm, std::string_view types) const {
+std::vector<const NavPoint*> NavDb::navaids_named(std::string_view name, double ref_lat,
+                                                  double ref_lon, double within_nm,
+                                                  std::string_view types) const {
   std::vector<std::pair<double, size_t>> found;
   const std::string key = name_key(name);
   if (key.empty()) return {};
@@ -319,7 +320,8 @@ std::vector<const NavPoint*> NavDb::navaids_named(std::string_view name, double 
   std::vector<const NavPoint*> out;
   for (const auto& f : found) {
     const NavPoint* p = &waypoints_[f.second];
-    if (std::none_of(out.begin(), out.end(), [&](const NavPoint* q) { return q->id == p->id; })) out.push_back(p);
+    if (std::none_of(out.begin(), out.end(), [&](const NavPoint* q) { return q->id == p->id; }))
+      out.push_back(p);
   }
   return out;
 }

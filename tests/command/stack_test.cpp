@@ -494,8 +494,10 @@ TEST_CASE(
     for (const NavPoint* p : points) ids.push_back(p->id);
     return ids;
   };
-  CHECK(idents((*db)->navaids_named("san francisco", lat, lon, 250)) == std::vector<std::string>{"SFO"});
-  CHECK(idents((*db)->navaids_named("Point Reyes", lat, lon, 250)) == std::vector<std::string>{"PYE"});
+  CHECK(idents((*db)->navaids_named("san francisco", lat, lon, 250)) ==
+        std::vector<std::string>{"SFO"});
+  CHECK(idents((*db)->navaids_named("Point Reyes", lat, lon, 250)) ==
+        std::vector<std::string>{"PYE"});
   const auto reyes = (*db)->navaids_named("point reyes", lat, lon, 1e5);
   CHECK(idents(reyes) == std::vector<std::string>{"PYE", "PYX"});
   REQUIRE(reyes.size() == 2);
