@@ -438,8 +438,9 @@ end
 
 -- A level or heading whose digits were written apart ("fl 3 4 0", "flight level 1 30", "heading 0 90"):
 -- groups of one or two digits straight after "fl", "level", "heading" or "hdg" that make two or three
--- digits together are one value.
-local SPLIT_AFTER = set_of({ "fl", "level", "heading", "hdg" })
+-- digits together are one value. After the typed abbreviations "fl" and "hdg" only single digits join
+-- ("hdg 2 7 0"): a typed "hdg 2 70" may have lost or gained a digit and stays apart (asked).
+local SPLIT_AFTER = { fl = "^%d$", hdg = "^%d$", level = "^%d%d?$", heading = "^%d%d?$" }
 local function split_digits(text)
   if not text:find("%d%s+%d") then return text end  -- (no two digit groups side by side)
   local toks = {}
@@ -448,8 +449,9 @@ local function split_digits(text)
   while i <= #toks do
     out[#out + 1] = toks[i]
     local k, joined = i + 1, ""
-    if SPLIT_AFTER[toks[i]:lower()] then
-      while toks[k] and toks[k]:match("^%d%d?$") and #joined + #toks[k] <= 3 do
+    local group = SPLIT_AFTER[toks[i]:lower()]
+    if group then
+      while toks[k] and toks[k]:match(group) and #joined + #toks[k] <= 3 do
         joined, k = joined .. toks[k], k + 1
       end
     end
@@ -2301,7 +2303,8 @@ function G:parse(b, e)
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
       -- else was understood.
-      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig) then
+      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
+          and not self:cut_off(s.trig) then
         self.pending = self.pending or self.ask
         self.ask = nil
       elseif unheld and not self.ask then
@@ -2405,6 +2408,20 @@ function G:change_word(i)
     k = k - 1
   end
   return k >= 1 and ((self.t[k].kind == "punct" and self.t[k].text ~= "'") or self:word(k, "and @then_words"))
+end
+
+-- True when the word at i follows "then", "and" or a comma.
+function G:linked(i)
+  return i > 1 and ((self.t[i - 1].kind == "punct" and self.t[i - 1].text == ",") or self:word(i - 1, "and @then_words"))
+end
+
+-- True when the instruction word at i ends the request straight after "then", "and" or a comma
+-- ("hdg 200 and spd"): a request cut off before its value, asked about.
+function G:cut_off(i)
+  for k = i + 1, #self.t do
+    if self.t[k].kind ~= "punct" then return false end
+  end
+  return self:linked(i)
 end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
@@ -2872,6 +2889,36 @@ function G:dangling_correction()
   if last > 0 and self:word(last, "@correction") then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self.t[last].raw:lower()))
+  end
+end
+
+-- "climb fl300 then fl": a value's name (lexicon.value_names) closing the request after "then", "and" or
+-- a comma, with no value after it, is an instruction cut off; asked (a list of value names is not).
+function G:dangling_value_name()
+  local last = #self.t
+  while last > 0 and (self.t[last].kind == "punct" or self.t[last].filler) do last = last - 1 end
+  if last < 2 or not self:word(last, "@value_names") then return end
+  local first = self:word(last, "level") and self:word(last - 1, "flight") and last - 1 or last
+  -- (a list of value names is a reference: "the same heading, level and speed")
+  if self:linked(first) and not self:word(first - 2, "@value_names") then
+    self:need(string.format("I have %s. '%s' ends the request with no value after it: which value do you mean?",
+      table.concat(self.out, " ; "), self:raw(first, last + 1)))
+  end
+end
+
+-- "aua513 dlh1kz climb fl180": two aircraft typed side by side, nothing between them and no word of
+-- lexicon.all ("both") in the request, may be a callsign typed again in place of the first; asked
+-- (a comma or "and" between lists them).
+function G:side_by_side_callsigns()
+  local prev
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists then
+      if prev and prev.e == r.b and prev.name:upper() ~= r.name:upper() and not self:word_in(1, #self.t + 1, "@all") then
+        self:need(string.format("Which aircraft do you mean: %s, %s or both?", prev.name:upper(), r.name:upper()))
+        return
+      end
+      prev = r
+    end
   end
 end
 
@@ -4449,6 +4496,8 @@ function M.translate(text, world)
       return (w:gsub("/", " "))
     end)
   end
+  -- "swr18k ,edw22": a comma typed against the next word closes the word before
+  if text:find("%s,%w") then text = text:gsub("(%S)%s+,(%w)", "%1, %2") end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
@@ -4554,6 +4603,8 @@ function M.translate(text, world)
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:info_remarks() end
   if not g.ask then g:dangling_correction() end
+  if not g.ask and #g.out > 0 then g:dangling_value_name() end
+  if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end

@@ -366,6 +366,9 @@ return {
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
+  -- a value's name that ends a request straight after "then", "and" or a comma ("climb fl300 then fl"):
+  -- the request was cut off before the value, asked
+  value_names = { "fl", "level", "altitude", "alt", "heading", "hdg", "speed", "spd", "mach", "vs", "rate" },
   correction = { "correction", "disregard", "negative" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
@@ -535,6 +538,9 @@ return {
   -- a spoken waypoint name matched to a known one at least this well (0-1)
   -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
   waypoint_confirm = 1.0,
+  -- a speed [kt] below this, typed for an aircraft created in the air ("cre tst9 a320 48 11 90 fl200 25"),
+  -- is no speed it can fly: asked, never created
+  create_min_kt = 40,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)

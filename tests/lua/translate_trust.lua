@@ -4542,3 +4542,27 @@ do
     check(math.abs(lat - 51.5) < 1e-9 and math.abs(lon + 0.3) < 1e-9, lat .. " " .. lon)
   end
 end
+
+-- Typed slips that must never run as a guess (R61): digits typed apart after "hdg"/"fl" in groups other
+-- than single digits, a fix name with two letters swapped, two callsigns side by side, a value's name
+-- cut off at the end, an aircraft created in the air too slow to fly; a comma typed against a callsign
+-- still lists it
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE BAW8CK A320 52.0 4.0 025 FL200 250",
+    "DEFWPT TOLIP 52.3 4.6", "ADDWPT KLM77 TOLIP" })
+  check_eq(ex("klm77 hdg 1 8 0"), "HDG KLM77 180")
+  check(ex("klm77 hdg 1 80"):match("^ASK") ~= nil, ex("klm77 hdg 1 80"))
+  check(ex("klm77 fl 1 20"):match("^ASK") ~= nil, ex("klm77 fl 1 20"))
+  check_eq(ex("klm77 dct tolip"), "DIRECT klm77 tolip")
+  check_eq(ex("klm77 dct tolpi"), "ASK Did you mean TOLIP? I heard 'tolpi'.")
+  check_eq(ex("klm77 baw8ck descend fl90"), "ASK Which aircraft do you mean: KLM77, BAW8CK or both?")
+  check_eq(ex("klm77 and baw8ck descend fl90"), "ALT KLM77 FL90 ; ALT BAW8CK FL90")
+  check_eq(ex("klm77 fl140 ,baw8ck fl160"), "ALT KLM77 FL140 ; ALT BAW8CK FL160")
+  check(ex("klm77 descend fl100, then level"):match("^ASK I have ALT KLM77 FL100%. 'level' ends") ~= nil,
+    ex("klm77 descend fl100, then level"))
+  check(ex("klm77 hdg 200 and spd"):match("^ASK What speed") ~= nil, ex("klm77 hdg 200 and spd"))
+  check(ex("cre tst5 b738 52 4 180 fl100 30"):match("^ASK") ~= nil, ex("cre tst5 b738 52 4 180 fl100 30"))
+  check(ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"):match("^ASK TST5 would fly at 30 kt") ~= nil,
+    ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"))
+  check_eq(ex("cre tst6 b738 52 4 180 fl100 300"), "CRE tst6 b738 52 4 180 fl100 300")
+end
