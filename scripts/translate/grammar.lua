@@ -438,8 +438,9 @@ end
 
 -- A level or heading whose digits were written apart ("fl 3 4 0", "flight level 1 30", "heading 0 90"):
 -- groups of one or two digits straight after "fl", "level", "heading" or "hdg" that make two or three
--- digits together are one value. After the typed abbreviations "fl" and "hdg" only single digits join
--- ("hdg 2 7 0"): a typed "hdg 2 70" may have lost or gained a digit and stays apart (asked).
+-- digits together are one value. After the typed abbreviations "fl" and "hdg" only single digits join a
+-- first group ("hdg 2 7 0", "fl 16 0"): a typed "hdg 2 70" may have lost or gained a digit and stays apart
+-- (asked).
 local SPLIT_AFTER = { fl = "^%d$", hdg = "^%d$", level = "^%d%d?$", heading = "^%d%d?$" }
 local function split_digits(text)
   if not text:find("%d%s+%d") then return text end  -- (no two digit groups side by side)
@@ -451,7 +452,7 @@ local function split_digits(text)
     local k, joined = i + 1, ""
     local group = SPLIT_AFTER[toks[i]:lower()]
     if group then
-      while toks[k] and toks[k]:match(group) and #joined + #toks[k] <= 3 do
+      while toks[k] and toks[k]:match(k == i + 1 and "^%d%d?$" or group) and #joined + #toks[k] <= 3 do
         joined, k = joined .. toks[k], k + 1
       end
     end
@@ -2303,8 +2304,7 @@ function G:parse(b, e)
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
       -- else was understood.
-      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
-          and not self:cut_off(s.trig) then
+      if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig) then
         self.pending = self.pending or self.ask
         self.ask = nil
       elseif unheld and not self.ask then
@@ -2415,14 +2415,6 @@ function G:linked(i)
   return i > 1 and ((self.t[i - 1].kind == "punct" and self.t[i - 1].text == ",") or self:word(i - 1, "and @then_words"))
 end
 
--- True when the instruction word at i ends the request straight after "then", "and" or a comma
--- ("hdg 200 and spd"): a request cut off before its value, asked about.
-function G:cut_off(i)
-  for k = i + 1, #self.t do
-    if self.t[k].kind ~= "punct" then return false end
-  end
-  return self:linked(i)
-end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
 -- clearance held until reached ("descend and maintain 4000 then reduce speed to 210": it waits for

@@ -315,8 +315,9 @@ return {
     red = { word = "reduce", next = "#number spd speed to", not_prev = "trail colour color a in" },
     pd = { word = "pilot's discretion", prev = "desc descend dsc dscnd dsnd climb clb clmb",
            next = "#number fl flight" },
-    -- (hesitations typed as said: "mach .. err spd 270")
-    err = { word = "uh" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
+    -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it
+    -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
+    err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
     uhm = { word = "uh" }, ehm = { word = "uh" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
@@ -390,8 +391,9 @@ return {
   -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
   -- correction, "KL204, make one orbit"), is read as "correction"
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
+  -- (typed: "210 hmm no 200")
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch", "corr" },
+                                "say", "again", "scratch", "corr", "hmm" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
                                   "corr" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },

@@ -4560,9 +4560,22 @@ do
   check_eq(ex("klm77 fl140 ,baw8ck fl160"), "ALT KLM77 FL140 ; ALT BAW8CK FL160")
   check(ex("klm77 descend fl100, then level"):match("^ASK I have ALT KLM77 FL100%. 'level' ends") ~= nil,
     ex("klm77 descend fl100, then level"))
-  check(ex("klm77 hdg 200 and spd"):match("^ASK What speed") ~= nil, ex("klm77 hdg 200 and spd"))
+  check(ex("klm77 hdg 200 and spd"):match("^ASK I have HDG KLM77 200%. 'spd' ends") ~= nil, ex("klm77 hdg 200 and spd"))
   check(ex("cre tst5 b738 52 4 180 fl100 30"):match("^ASK") ~= nil, ex("cre tst5 b738 52 4 180 fl100 30"))
   check(ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"):match("^ASK TST5 would fly at 30 kt") ~= nil,
     ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"))
   check_eq(ex("cre tst6 b738 52 4 180 fl100 300"), "CRE tst6 b738 52 4 180 fl100 300")
+end
+
+-- A typed correction (R61): "err" and "sry" are "sorry", "hmm no" is a correction run: the
+-- value or fix after them replaces the one before; one left alone at the end corrects nothing
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "DEFWPT TOLIP 52.3 4.6", "DEFWPT MAVOR 52.4 4.7",
+    "ADDWPT KLM77 TOLIP", "ADDWPT KLM77 MAVOR" })
+  check_eq(ex("klm77 fl170 err fl190"), "ALT KLM77 FL190")
+  check_eq(ex("klm77 hdg 240 sry 250"), "HDG KLM77 250")
+  check_eq(ex("klm77 spd 230 hmm no 240"), "SPD KLM77 240")
+  check_eq(ex("klm77 dct tolip err mavor"), "DIRECT KLM77 MAVOR")
+  check_eq(ex("klm77 hdg 240 err"), "HDG KLM77 240")
+  check(ex("klm77 hdg 240 err 250 270"):match("^ASK") ~= nil, ex("klm77 hdg 240 err 250 270"))
 end
