@@ -278,7 +278,9 @@ return {
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
-        "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts", },
+        "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts",
+        -- (a controller position named in a hand-off: "contact director 118.82")
+        "director", },
   },
   -- airport settings named before "A -> B" ("dest eidw -> einn"): changed from A to B
   arrow_settings = { dest = true, destination = true, orig = true, origin = true },
@@ -579,7 +581,8 @@ return {
   -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
   -- while, so an instruction after "then" waits for it and is asked about, never sent now
   not_simulated = {
-    { what = "transponder codes", words = "squawk squawking sq",
+    -- ("squak", "sqwk": squawk typed short)
+    { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
       near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
     { what = "transponder codes", words = "transponder ident" },
     { what = "radio frequencies", words = "contact monitor frequency freq" },

@@ -4579,3 +4579,12 @@ do
   check_eq(ex("klm77 hdg 240 err"), "HDG KLM77 240")
   check(ex("klm77 hdg 240 err 250 270"):match("^ASK") ~= nil, ex("klm77 hdg 240 err 250 270"))
 end
+
+-- What squawk does not simulate, typed short (R61): "squak"/"sqwk" is a transponder code, a controller
+-- position after "contact" ("director") no direct-to; the simulated part of the request stands
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("klm77 sqwk 4410 and descend fl120"), "ALT KLM77 FL120")
+  check_eq(ex("klm77 climb fl190 then contact director 119.45"), "ALT KLM77 FL190")
+  check(ex("klm77 squak"):match("^ASK") ~= nil or ex("klm77 squak") == "", ex("klm77 squak"))
+end
