@@ -4490,6 +4490,18 @@ function M.translate(text, world)
   end
   -- "swr18k ,edw22": a comma typed against the next word closes the word before
   if text:find("%s,%w") then text = text:gsub("(%S)%s+,(%w)", "%1, %2") end
+  -- "spd 2o0", "hdg 12O": a letter O typed for a zero in a value of three figures or more, a digit first
+  if text:find("%d[oO]") then
+    text = text:gsub("%f[%w](%d[%doO][%doO]+)%f[%W]", function(v) return (v:gsub("[oO]", "0")) end)
+  end
+  -- "aua131 .82": a Mach number typed alone after a callsign, two figures from .40 on
+  if text:find("%s%.[4-9]%d") then
+    text = text:gsub("(%S+)(%s+)%.([4-9]%d)%f[^%w%.]", function(id, space, digits)
+      for _, a in ipairs(world.aircraft) do
+        if a.id:lower() == id:lower() then return id .. space .. "m." .. digits end
+      end
+    end)
+  end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)

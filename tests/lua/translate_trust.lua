@@ -4588,3 +4588,13 @@ do
   check_eq(ex("klm77 climb fl190 then contact director 119.45"), "ALT KLM77 FL190")
   check(ex("klm77 squak"):match("^ASK") ~= nil or ex("klm77 squak") == "", ex("klm77 squak"))
 end
+
+-- Values typed with a slip (R61): a letter O for a zero in a value of three figures ("hdg 3o0"), a Mach
+-- number typed alone after the callsign (".78"), as it is after a level
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("klm77 hdg 3o0"), "HDG KLM77 300")
+  check_eq(ex("klm77 spd 24O"), "SPD KLM77 240")
+  check_eq(ex("klm77 .78"), "SPD KLM77 M0.78")
+  check(ex("klm77 climb fl200 .78"):match("^ALT KLM77 FL200") ~= nil, ex("klm77 climb fl200 .78"))
+end
