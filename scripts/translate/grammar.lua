@@ -4490,6 +4490,12 @@ function M.translate(text, world)
   end
   -- "swr18k ,edw22": a comma typed against the next word closes the word before
   if text:find("%s,%w") then text = text:gsub("(%S)%s+,(%w)", "%1, %2") end
+  -- "vs +1500", "roc +800": a plus typed before a vertical speed is its sign (a climb)
+  if text:find("%+%d") then
+    text = text:gsub("%f[%w](%a+)(%s*)%+(%d)", function(w, space, d)
+      if lexicon.signed_rate_words[w:lower()] then return w .. space .. d end
+    end)
+  end
   -- "spd 2o0", "hdg 12O": a letter O typed for a zero in a value of three figures or more, a digit first
   if text:find("%d[oO]") then
     text = text:gsub("%f[%w](%d[%doO][%doO]+)%f[%W]", function(v) return (v:gsub("[oO]", "0")) end)

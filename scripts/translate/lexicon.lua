@@ -369,6 +369,8 @@ return {
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
+  -- words after which a "+" typed before the number is its sign ("vs +1500"): a climb
+  signed_rate_words = { vs = true, roc = true, rate = true, vspd = true },
   -- a value's name that ends a request straight after "then", "and" or a comma ("climb fl300 then fl"):
   -- the request was cut off before the value, asked
   value_names = { "fl", "level", "altitude", "alt", "heading", "hdg", "speed", "spd", "mach", "vs", "rate" },
@@ -782,7 +784,7 @@ return {
   value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
                   percent = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
-  speed_units = { "knots", "knot", "kts", "kt" },
+  speed_units = { "knots", "knot", "kts", "kt", "knts", "kits" },  -- ("250 kits": kts typed with a slip)
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course
   intruder = { "intruder", "conflict", "conflicting", "converger" },

@@ -4590,11 +4590,16 @@ do
 end
 
 -- Values typed with a slip (R61): a letter O for a zero in a value of three figures ("hdg 3o0"), a Mach
--- number typed alone after the callsign (".78"), as it is after a level
+-- number typed alone after the callsign (".78"), as it is after a level; a sign typed before a vertical
+-- speed ("vs +1200"); "kits" for kts
 do
   local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
   check_eq(ex("klm77 hdg 3o0"), "HDG KLM77 300")
   check_eq(ex("klm77 spd 24O"), "SPD KLM77 240")
   check_eq(ex("klm77 .78"), "SPD KLM77 M0.78")
+  -- a plus typed before a vertical speed is its sign; "kits" after a speed is knots
+  check_eq(ex("klm77 fl190 vs +1200"), "ALT KLM77 FL190 ; VS KLM77 1200")
+  check_eq(ex("klm77 spd 230 kits"), "SPD KLM77 230")
+  check(ex("klm77 spd +20"):match("^ASK") ~= nil, ex("klm77 spd +20"))
   check(ex("klm77 climb fl200 .78"):match("^ALT KLM77 FL200") ~= nil, ex("klm77 climb fl200 .78"))
 end
