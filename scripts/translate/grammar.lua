@@ -4066,7 +4066,27 @@ function G:same_again(named)
   self.out = out
 end
 
+-- "dlh4tkdescend fl220", "swr1285climb": an aircraft's id typed against an instruction word
+-- (lexicon.spelling.targets, the shorthand, "dct"/"dir") is cut from it
+local GLUED_WORDS = set_of(lexicon.spelling.targets)
+for w in pairs(lexicon.shorthand) do if #w >= 2 then GLUED_WORDS[w] = true end end
+GLUED_WORDS.dct, GLUED_WORDS.dir, GLUED_WORDS.desc = true, true, true
+local function unglued_words(text, fleet)
+  if #fleet == 0 or not text:find("%d%a%a%a") then return text end
+  return (text:gsub("%f[%w](%a+%d%w*%a%a%a+)%f[%W]", function(w)
+    local lw = w:lower()
+    for _, a in ipairs(fleet) do
+      local id = a.id:lower()
+      if #lw > #id and lw:sub(1, #id) == id and GLUED_WORDS[lw:sub(#id + 1)] then
+        return w:sub(1, #id) .. " " .. w:sub(#id + 1)
+      end
+    end
+    return nil
+  end))
+end
+
 local function unglued_ids(text, fleet)
+  text = unglued_words(text, fleet)
   -- (only a word holding digits, letters and digits again, in that order, is cut)
   if #fleet == 0 or not text:find("%d%a+%d") then return text end
   local ids = {}

@@ -4603,3 +4603,12 @@ do
   check(ex("klm77 spd +20"):match("^ASK") ~= nil, ex("klm77 spd +20"))
   check(ex("klm77 climb fl200 .78"):match("^ALT KLM77 FL200") ~= nil, ex("klm77 climb fl200 .78"))
 end
+
+-- A callsign typed against its instruction word (R61): "klm77climb fl190" is "klm77 climb fl190"; a word
+-- that only starts with a callsign and goes on with no instruction word is not cut
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("klm77climb fl190"), "ALT KLM77 FL190")
+  check_eq(ex("klm77hdg 250"), "HDG KLM77 250")
+  check(ex("klm77xyz climb fl190"):match("^ASK") ~= nil, ex("klm77xyz climb fl190"))
+end
