@@ -2472,8 +2472,10 @@ return function(H, f, compass)
     -- "back to real time" with no word that starts the clock: the clock started again (OP) or
     -- its rate set back to 1 (DTMULT 1)? Writers mean either; asked. "real time speed" is the rate
     if self:word(s.trig, "real") and self:word(s.trig + 2, "speed") then return self:emit("DTMULT 1") end
-    if self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
-        and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
+    -- ("dtmult 1 back to realtime": said after the rate set back to 1, it explains that rate)
+    local back = self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
+    if back and self.out[#self.out] == "DTMULT 1" then return self:explain(s.b, s.e) end
+    if back and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
       return self:need("Should the simulation start running (OP), or run at real-time rate again (DTMULT 1)?")
     end
     self:emit("OP")

@@ -4612,3 +4612,10 @@ do
   check_eq(ex("klm77hdg 250"), "HDG KLM77 250")
   check(ex("klm77xyz climb fl190"):match("^ASK") ~= nil, ex("klm77xyz climb fl190"))
 end
+
+-- "back to real time" said after the rate typed as 1 explains it (R61); alone it is still asked (OP or DTMULT 1)
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("dtmult 1, back to real time"), "DTMULT 1")
+  check(ex("dtmult 4 back to real time"):match("^ASK") ~= nil, ex("dtmult 4 back to real time"))
+end
