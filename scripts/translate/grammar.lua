@@ -2884,15 +2884,19 @@ function G:dangling_correction()
   end
 end
 
--- "climb fl300 then fl": a value's name (lexicon.value_names) closing the request after "then", "and" or
--- a comma, with no value after it, is an instruction cut off; asked (a list of value names is not).
+-- "climb fl300 then fl", "climb fl320 spd": a value's name (lexicon.value_names) closing the request after
+-- "then", "and", a comma or a value, with no value after it, is an instruction cut off; asked (a list of
+-- value names is not).
 function G:dangling_value_name()
   local last = #self.t
   while last > 0 and (self.t[last].kind == "punct" or self.t[last].filler) do last = last - 1 end
   if last < 2 or not self:word(last, "@value_names") then return end
   local first = self:word(last, "level") and self:word(last - 1, "flight") and last - 1 or last
-  -- (a list of value names is a reference: "the same heading, level and speed")
-  if self:linked(first) and not self:word(first - 2, "@value_names") then
+  -- (a list of value names is a reference: "the same heading, level and speed"; a typed abbreviation straight
+  -- after a value, "climb fl320 spd", was cut off too, where a word may be the value's unit: "0.79 Mach")
+  local after_value = self:word(first, "spd hdg fl vs alt")
+    and (self.t[first - 1].kind == "number" or self.t[first - 1].raw:match("%d$") ~= nil)
+  if (self:linked(first) and not self:word(first - 2, "@value_names")) or after_value then
     self:need(string.format("I have %s. '%s' ends the request with no value after it: which value do you mean?",
       table.concat(self.out, " ; "), self:raw(first, last + 1)))
   end

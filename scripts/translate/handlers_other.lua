@@ -462,7 +462,7 @@ return function(H, f, compass)
         end
       end
     end
-    if spd and spd < L.create_min_kt and alt and alt > 0 then
+    if spd and spd < L.min_airborne_kt and alt and alt > 0 then
       return self:need(string.format("%s would fly at %s kt: which speed should it have?", id:upper(), f.int(spd)))
     end
     id = id:upper()

@@ -544,9 +544,9 @@ return {
   -- a spoken waypoint name matched to a known one at least this well (0-1)
   -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
   waypoint_confirm = 1.0,
-  -- a speed [kt] below this, typed for an aircraft created in the air ("cre tst9 a320 48 11 90 fl200 25"),
-  -- is no speed it can fly: asked, never created
-  create_min_kt = 40,
+  -- a speed [kt] below this, typed for an aircraft created in the air ("cre tst9 a320 48 11 90 fl200 25") or
+  -- typed as SPD's ("spd 25"), is no speed it can fly: asked, never run
+  min_airborne_kt = 40,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)

@@ -447,13 +447,16 @@ function M.typed(state, ctx)
         and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)")) <= 36 then
       return "english"
     end
-    -- "cre tst9 a320 48 11 90 fl200 25": an aircraft created in the air below lexicon.create_min_kt
+    -- "cre tst9 a320 48 11 90 fl200 25": an aircraft created in the air below lexicon.min_airborne_kt
     -- is English (its speed asked about there)
     if name == "CRE" then
       local alt, spd = c:match("(%S+)[%s,]+(%d+)%s*$")
       local level = alt and tonumber((alt:gsub("^[Ff][Ll]", "")))
-      if level and level > 0 and tonumber(spd) < lexicon.create_min_kt then return "english" end
+      if level and level > 0 and tonumber(spd) < lexicon.min_airborne_kt then return "english" end
     end
+    -- ("spd 25": a speed of knots below it, no Mach number, is English too)
+    local typed_kt = name == "SPD" and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)%s*$"))
+    if typed_kt and typed_kt >= 1 and typed_kt < lexicon.min_airborne_kt then return "english" end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
     if h and h > 360 then return "english" end

@@ -4561,6 +4561,9 @@ do
   check(ex("klm77 descend fl100, then level"):match("^ASK I have ALT KLM77 FL100%. 'level' ends") ~= nil,
     ex("klm77 descend fl100, then level"))
   check(ex("klm77 hdg 200 and spd"):match("^ASK I have HDG KLM77 200%. 'spd' ends") ~= nil, ex("klm77 hdg 200 and spd"))
+  check(ex("klm77 descend fl120 hdg"):match("^ASK I have ALT KLM77 FL120%. 'hdg' ends") ~= nil, ex("klm77 descend fl120 hdg"))
+  check(ex("klm77 spd 30"):match("^ASK") ~= nil, ex("klm77 spd 30"))
+  check_eq(ex("spd klm77 0.78"), "SPD klm77 0.78")
   check(ex("cre tst5 b738 52 4 180 fl100 30"):match("^ASK") ~= nil, ex("cre tst5 b738 52 4 180 fl100 30"))
   check(ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"):match("^ASK TST5 would fly at 30 kt") ~= nil,
     ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"))
