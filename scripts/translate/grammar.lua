@@ -4512,8 +4512,9 @@ function M.translate(text, world)
       return (w:gsub("/", " "))
     end)
   end
-  -- "swr18k ,edw22": a comma typed against the next word closes the word before
-  if text:find("%s,%w") then text = text:gsub("(%S)%s+,(%w)", "%1, %2") end
+  -- "swr18k ,edw22", "dlh4tk,ewg7ma": a comma typed against the next word closes the word before (a comma
+  -- between digits, "12,000" or "48.1,16.5", stays)
+  if text:find(",%a") then text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2") end
   -- "vs +1500", "roc +800": a plus typed before a vertical speed is its sign (a climb)
   if text:find("%+%d") then
     text = text:gsub("%f[%w](%a+)(%s*)%+(%d)", function(w, space, d)

@@ -4558,6 +4558,8 @@ do
   check_eq(ex("klm77 baw8ck descend fl90"), "ASK Which aircraft do you mean: KLM77, BAW8CK or both?")
   check_eq(ex("klm77 and baw8ck descend fl90"), "ALT KLM77 FL90 ; ALT BAW8CK FL90")
   check_eq(ex("klm77 fl140 ,baw8ck fl160"), "ALT KLM77 FL140 ; ALT BAW8CK FL160")
+  check_eq(ex("klm77,baw8ck fl170"), "ALT KLM77 FL170 ; ALT BAW8CK FL170")
+  check_eq(ex("klm77 fl170,spd 230"), "ALT KLM77 FL170 ; SPD KLM77 230")
   check(ex("klm77 descend fl100, then level"):match("^ASK I have ALT KLM77 FL100%. 'level' ends") ~= nil,
     ex("klm77 descend fl100, then level"))
   check(ex("klm77 hdg 200 and spd"):match("^ASK I have HDG KLM77 200%. 'spd' ends") ~= nil, ex("klm77 hdg 200 and spd"))
