@@ -547,6 +547,8 @@ return {
   -- a speed [kt] below this, typed for an aircraft created in the air ("cre tst9 a320 48 11 90 fl200 25") or
   -- typed as SPD's ("spd 25"), is no speed it can fly: asked, never run
   min_airborne_kt = 40,
+  -- a vertical speed [ft/min] typed below this as VS's ("vs 15") may have lost its zeros: asked
+  min_typed_fpm = 100,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)

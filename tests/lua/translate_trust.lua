@@ -4566,6 +4566,11 @@ do
   check(ex("klm77 descend fl120 hdg"):match("^ASK I have ALT KLM77 FL120%. 'hdg' ends") ~= nil, ex("klm77 descend fl120 hdg"))
   check(ex("klm77 spd 30"):match("^ASK") ~= nil, ex("klm77 spd 30"))
   check_eq(ex("spd klm77 0.78"), "SPD klm77 0.78")
+  -- a heading of one digit and a vertical speed under lexicon.min_typed_fpm, typed, are asked
+  check(ex("klm77 hdg 3"):match("^ASK What heading") ~= nil, ex("klm77 hdg 3"))
+  check(ex("klm77 vs -12"):match("^ASK What vertical speed") ~= nil, ex("klm77 vs -12"))
+  check_eq(ex("klm77 vs -1200"), "VS klm77 -1200")
+  check_eq(ex("klm77 hdg 007"), "HDG klm77 007")
   check(ex("cre tst5 b738 52 4 180 fl100 30"):match("^ASK") ~= nil, ex("cre tst5 b738 52 4 180 fl100 30"))
   check(ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"):match("^ASK TST5 would fly at 30 kt") ~= nil,
     ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"))
