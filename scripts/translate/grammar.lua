@@ -438,8 +438,10 @@ end
 
 -- A level or heading whose digits were written apart ("fl 3 4 0", "flight level 1 30", "heading 0 90"):
 -- groups of one or two digits straight after "fl", "level", "heading" or "hdg" that make two or three
--- digits together are one value.
-local SPLIT_AFTER = set_of({ "fl", "level", "heading", "hdg" })
+-- digits together are one value. After the typed abbreviations "fl" and "hdg" only single digits join a
+-- first group ("hdg 2 7 0", "fl 16 0"): a typed "hdg 2 70" may have lost or gained a digit and stays apart
+-- (asked).
+local SPLIT_AFTER = { fl = "^%d$", hdg = "^%d$", level = "^%d%d?$", heading = "^%d%d?$" }
 local function split_digits(text)
   if not text:find("%d%s+%d") then return text end  -- (no two digit groups side by side)
   local toks = {}
@@ -448,8 +450,9 @@ local function split_digits(text)
   while i <= #toks do
     out[#out + 1] = toks[i]
     local k, joined = i + 1, ""
-    if SPLIT_AFTER[toks[i]:lower()] then
-      while toks[k] and toks[k]:match("^%d%d?$") and #joined + #toks[k] <= 3 do
+    local group = SPLIT_AFTER[toks[i]:lower()]
+    if group then
+      while toks[k] and toks[k]:match(k == i + 1 and "^%d%d?$" or group) and #joined + #toks[k] <= 3 do
         joined, k = joined .. toks[k], k + 1
       end
     end
@@ -2407,6 +2410,12 @@ function G:change_word(i)
   return k >= 1 and ((self.t[k].kind == "punct" and self.t[k].text ~= "'") or self:word(k, "and @then_words"))
 end
 
+-- True when the word at i follows "then", "and" or a comma.
+function G:linked(i)
+  return i > 1 and ((self.t[i - 1].kind == "punct" and self.t[i - 1].text == ",") or self:word(i - 1, "and @then_words"))
+end
+
+
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
 -- clearance held until reached ("descend and maintain 4000 then reduce speed to 210": it waits for
 -- 4000); in plain English "then" lists the next instruction ("slow to 280 then descend FL170").
@@ -2872,6 +2881,40 @@ function G:dangling_correction()
   if last > 0 and self:word(last, "@correction") then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self.t[last].raw:lower()))
+  end
+end
+
+-- "climb fl300 then fl", "climb fl320 spd": a value's name (lexicon.value_names) closing the request after
+-- "then", "and", a comma or a value, with no value after it, is an instruction cut off; asked (a list of
+-- value names is not).
+function G:dangling_value_name()
+  local last = #self.t
+  while last > 0 and (self.t[last].kind == "punct" or self.t[last].filler) do last = last - 1 end
+  if last < 2 or not self:word(last, "@value_names") then return end
+  local first = self:word(last, "level") and self:word(last - 1, "flight") and last - 1 or last
+  -- (a list of value names is a reference: "the same heading, level and speed"; a typed abbreviation straight
+  -- after a value, "climb fl320 spd", was cut off too, where a word may be the value's unit: "0.79 Mach")
+  local after_value = self:word(first, "spd hdg fl vs alt")
+    and (self.t[first - 1].kind == "number" or self.t[first - 1].raw:match("%d$") ~= nil)
+  if (self:linked(first) and not self:word(first - 2, "@value_names")) or after_value then
+    self:need(string.format("I have %s. '%s' ends the request with no value after it: which value do you mean?",
+      table.concat(self.out, " ; "), self:raw(first, last + 1)))
+  end
+end
+
+-- "aua513 dlh1kz climb fl180": two aircraft typed side by side, nothing between them and no word of
+-- lexicon.all ("both") in the request, may be a callsign typed again in place of the first; asked
+-- (a comma or "and" between lists them).
+function G:side_by_side_callsigns()
+  local prev
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.exists then
+      if prev and prev.e == r.b and prev.name:upper() ~= r.name:upper() and not self:word_in(1, #self.t + 1, "@all") then
+        self:need(string.format("Which aircraft do you mean: %s, %s or both?", prev.name:upper(), r.name:upper()))
+        return
+      end
+      prev = r
+    end
   end
 end
 
@@ -4027,7 +4070,27 @@ function G:same_again(named)
   self.out = out
 end
 
+-- "dlh4tkdescend fl220", "swr1285climb": an aircraft's id typed against an instruction word
+-- (lexicon.spelling.targets, the shorthand, "dct"/"dir") is cut from it
+local GLUED_WORDS = set_of(lexicon.spelling.targets)
+for w in pairs(lexicon.shorthand) do if #w >= 2 then GLUED_WORDS[w] = true end end
+GLUED_WORDS.dct, GLUED_WORDS.dir, GLUED_WORDS.desc = true, true, true
+local function unglued_words(text, fleet)
+  if #fleet == 0 or not text:find("%d%a%a%a") then return text end
+  return (text:gsub("%f[%w](%a+%d%w*%a%a%a+)%f[%W]", function(w)
+    local lw = w:lower()
+    for _, a in ipairs(fleet) do
+      local id = a.id:lower()
+      if #lw > #id and lw:sub(1, #id) == id and GLUED_WORDS[lw:sub(#id + 1)] then
+        return w:sub(1, #id) .. " " .. w:sub(#id + 1)
+      end
+    end
+    return nil
+  end))
+end
+
 local function unglued_ids(text, fleet)
+  text = unglued_words(text, fleet)
   -- (only a word holding digits, letters and digits again, in that order, is cut)
   if #fleet == 0 or not text:find("%d%a+%d") then return text end
   local ids = {}
@@ -4449,6 +4512,27 @@ function M.translate(text, world)
       return (w:gsub("/", " "))
     end)
   end
+  -- "swr18k ,edw22", "dlh4tk,ewg7ma": a comma typed against the next word closes the word before (a comma
+  -- between digits, "12,000" or "48.1,16.5", stays)
+  if text:find(",%a") then text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2") end
+  -- "vs +1500", "roc +800": a plus typed before a vertical speed is its sign (a climb)
+  if text:find("%+%d") then
+    text = text:gsub("%f[%w](%a+)(%s*)%+(%d)", function(w, space, d)
+      if lexicon.signed_rate_words[w:lower()] then return w .. space .. d end
+    end)
+  end
+  -- "spd 2o0", "hdg 12O": a letter O typed for a zero in a value of three figures or more, a digit first
+  if text:find("%d[oO]") then
+    text = text:gsub("%f[%w](%d[%doO][%doO]+)%f[%W]", function(v) return (v:gsub("[oO]", "0")) end)
+  end
+  -- "aua131 .82": a Mach number typed alone after a callsign, two figures from .40 on
+  if text:find("%s%.[4-9]%d") then
+    text = text:gsub("(%S+)(%s+)%.([4-9]%d)%f[^%w%.]", function(id, space, digits)
+      for _, a in ipairs(world.aircraft) do
+        if a.id:lower() == id:lower() then return id .. space .. "m." .. digits end
+      end
+    end)
+  end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
@@ -4554,6 +4638,8 @@ function M.translate(text, world)
   if not g.ask and #g.out == 0 then g.ask = g.pending end
   if not g.ask then g:info_remarks() end
   if not g.ask then g:dangling_correction() end
+  if not g.ask and #g.out > 0 then g:dangling_value_name() end
+  if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end

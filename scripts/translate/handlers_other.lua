@@ -462,6 +462,9 @@ return function(H, f, compass)
         end
       end
     end
+    if spd and spd < L.min_airborne_kt and alt and alt > 0 then
+      return self:need(string.format("%s would fly at %s kt: which speed should it have?", id:upper(), f.int(spd)))
+    end
     id = id:upper()
     local cmd = "CRE " .. id .. " " .. actype .. " " .. (named_at or (f.num(lat) .. " " .. f.num(lon)))
     if hdg or alt or spd or mach then cmd = cmd .. " " .. f.num(hdg or 0) end
@@ -791,6 +794,15 @@ return function(H, f, compass)
     return false
   end
 
+  -- True when `heard` is `name` with two neighbouring letters swapped ("rokli": "rokil"), a typing slip
+  -- that may as well name another fix.
+  local function swapped_letters(heard, name)
+    if #heard ~= #name or heard == name then return false end
+    local k = 1
+    while heard:byte(k) == name:byte(k) do k = k + 1 end
+    return heard:sub(k, k + 1) == name:sub(k + 1, k + 1) .. name:sub(k, k) and heard:sub(k + 2) == name:sub(k + 2)
+  end
+
   -- A waypoint named in [b, e): a known name, an upper-case name, or a
   -- spoken name matched against the world's waypoints and the route.
   function m:waypoint(b, e, id)
@@ -882,7 +894,8 @@ return function(H, f, compass)
     local navaid = best and best_word ~= best:lower() and self:navaid_by_name(b, e, a)
     self.ask = asked
     if navaid then return self:place_by_name(b, e, a) or navaid end
-    if best and best_score >= L.waypoint_confirm then
+    -- (a typed name with two letters swapped is confirmed below, never taken as sounding the same)
+    if best and best_score >= L.waypoint_confirm and not swapped_letters(best_word, best:lower()) then
       self:explain(best_span[1], best_span[2])
       return best
     end
@@ -2474,8 +2487,10 @@ return function(H, f, compass)
     -- "back to real time" with no word that starts the clock: the clock started again (OP) or
     -- its rate set back to 1 (DTMULT 1)? Writers mean either; asked. "real time speed" is the rate
     if self:word(s.trig, "real") and self:word(s.trig + 2, "speed") then return self:emit("DTMULT 1") end
-    if self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
-        and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
+    -- ("dtmult 1 back to realtime": said after the rate set back to 1, it explains that rate)
+    local back = self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
+    if back and self.out[#self.out] == "DTMULT 1" then return self:explain(s.b, s.e) end
+    if back and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
       return self:need("Should the simulation start running (OP), or run at real-time rate again (DTMULT 1)?")
     end
     self:emit("OP")

@@ -4,6 +4,7 @@
 -- the traffic; without it they ask.
 return function(H, f, wrap, compass)
   local m = H.methods
+  local L = require("translate.lexicon")
 
   function m:infer(s)
     local qs = self:quantities(s.b, s.e)
@@ -538,6 +539,10 @@ return function(H, f, wrap, compass)
         return self:need(string.format("What heading should %s fly: %03d or %d? I heard '%s'.", id, hdg, hdg * 10,
           self:raw(abs.b, abs.e)))
       end
+      -- "hdg 2" typed: one digit, no leading zero, is a heading cut short
+      if n.typed and #n.digits == 1 and hdg >= 1 and hdg == math.floor(hdg) then
+        return self:need("What heading should " .. id .. " fly? I heard " .. n.digits .. ": headings have three digits.")
+      end
       if not n.typed and n.lead_digit and n.groups == 2 and hdg < 40 then
         -- only a fluent "two five" lost its final zero; with a hesitation before or inside it
         -- ("heading uh two two", "two uh two") a digit may be missing anywhere
@@ -640,6 +645,11 @@ return function(H, f, wrap, compass)
     if not v then return self:need("What vertical speed should " .. id .. " fly, in feet per minute?") end
     self:take(v)
     local fpm = v.value
+    -- ("vs 15": below lexicon.min_typed_fpm, hundreds of ft/min with the zeros left out?)
+    if fpm ~= 0 and math.abs(fpm) < L.min_typed_fpm then
+      return self:need(string.format("What vertical speed should %s fly, in feet per minute? I heard '%s'.", id,
+        self:raw(v.b, v.e)))
+    end
     -- the sign is the way the aircraft moves, named by the motion when one is said ("increase your rate of
     -- descent to 2500" descends, "reduce your rate of climb to 500" climbs); otherwise the verb's direction
     -- (in the instruction's whole clause, up to the punctuation around it: "descend with vertical speed 2000",

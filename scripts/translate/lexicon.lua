@@ -278,7 +278,9 @@ return {
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
-        "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts", },
+        "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts",
+        -- (a controller position named in a hand-off: "contact director 118.82")
+        "director", },
   },
   -- airport settings named before "A -> B" ("dest eidw -> einn"): changed from A to B
   arrow_settings = { dest = true, destination = true, orig = true, origin = true },
@@ -315,8 +317,9 @@ return {
     red = { word = "reduce", next = "#number spd speed to", not_prev = "trail colour color a in" },
     pd = { word = "pilot's discretion", prev = "desc descend dsc dscnd dsnd climb clb clmb",
            next = "#number fl flight" },
-    -- (hesitations typed as said: "mach .. err spd 270")
-    err = { word = "uh" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
+    -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it
+    -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
+    err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
     uhm = { word = "uh" }, ehm = { word = "uh" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
@@ -366,6 +369,11 @@ return {
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
+  -- words after which a "+" typed before the number is its sign ("vs +1500"): a climb
+  signed_rate_words = { vs = true, roc = true, rate = true, vspd = true },
+  -- a value's name that ends a request straight after "then", "and" or a comma ("climb fl300 then fl"):
+  -- the request was cut off before the value, asked
+  value_names = { "fl", "level", "altitude", "alt", "heading", "hdg", "speed", "spd", "mach", "vs", "rate" },
   correction = { "correction", "disregard", "negative" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
@@ -387,8 +395,9 @@ return {
   -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
   -- correction, "KL204, make one orbit"), is read as "correction"
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
+  -- (typed: "210 hmm no 200")
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch", "corr" },
+                                "say", "again", "scratch", "corr", "hmm" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
                                   "corr" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
@@ -535,6 +544,11 @@ return {
   -- a spoken waypoint name matched to a known one at least this well (0-1)
   -- is taken as said; below it (down to 0.5) squawk asks "did you mean ...?"
   waypoint_confirm = 1.0,
+  -- a speed [kt] below this, typed for an aircraft created in the air ("cre tst9 a320 48 11 90 fl200 25") or
+  -- typed as SPD's ("spd 25"), is no speed it can fly: asked, never run
+  min_airborne_kt = 40,
+  -- a vertical speed [ft/min] typed below this as VS's ("vs 15") may have lost its zeros: asked
+  min_typed_fpm = 100,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)
@@ -571,7 +585,8 @@ return {
   -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
   -- while, so an instruction after "then" waits for it and is asked about, never sent now
   not_simulated = {
-    { what = "transponder codes", words = "squawk squawking sq",
+    -- ("squak", "sqwk": squawk typed short)
+    { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
       near = { "ident", "code", "standby", "mode", "vfr", "#number" } },
     { what = "transponder codes", words = "transponder ident" },
     { what = "radio frequencies", words = "contact monitor frequency freq" },
@@ -771,7 +786,7 @@ return {
   value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
                   percent = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
-  speed_units = { "knots", "knot", "kts", "kt" },
+  speed_units = { "knots", "knot", "kts", "kt", "knts", "kits" },  -- ("250 kits": kts typed with a slip)
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before
   -- or after its closest approach, its loss of separation and a head-on course
   intruder = { "intruder", "conflict", "conflicting", "converger" },

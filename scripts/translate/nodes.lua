@@ -440,13 +440,26 @@ function M.typed(state, ctx)
         and (c:match("^%S+[%s,]+%S+[%s,]+%d%d?[%s,]+[LlRr]%a*%s*$") or c:match("^%S+[%s,]+%S+[%s,]+%d%d?%s*$")) then
       return "english"
     end
-    -- "dlh3gm hdg 27": a heading typed with two digits and no leading zero, in lower case, is English
-    -- (027 or 270? asked there); "DLH3GM HDG 27" in capitals stays TrafScript, heading 027
+    -- "dlh3gm hdg 27", "hdg 2": a heading typed with one or two digits and no leading zero, in lower case,
+    -- is English (027 or 270? asked there); "DLH3GM HDG 27" in capitals stays TrafScript, heading 027
     local verb = c:match("^(%S+)")
-    if name == "HDG" and verb ~= verb:upper() and c:match("^%S+[%s,]+%S+[%s,]+[1-3]%d%f[^%w.]")
+    if name == "HDG" and verb ~= verb:upper() and c:match("^%S+[%s,]+%S+[%s,]+[1-3]?%d%f[^%w.]")
         and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)")) <= 36 then
       return "english"
     end
+    -- "cre tst9 a320 48 11 90 fl200 25": an aircraft created in the air below lexicon.min_airborne_kt
+    -- is English (its speed asked about there)
+    if name == "CRE" then
+      local alt, spd = c:match("(%S+)[%s,]+(%d+)%s*$")
+      local level = alt and tonumber((alt:gsub("^[Ff][Ll]", "")))
+      if level and level > 0 and tonumber(spd) < lexicon.min_airborne_kt then return "english" end
+    end
+    -- ("spd 25": a speed of knots below it, no Mach number, is English too; so is a vertical speed typed
+    -- below lexicon.min_typed_fpm, "vs 15": hundreds of ft/min with the zeros left out?)
+    local typed_kt = name == "SPD" and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)%s*$"))
+    if typed_kt and typed_kt >= 1 and typed_kt < lexicon.min_airborne_kt then return "english" end
+    local typed_fpm = name == "VS" and tonumber(c:match("^%S+[%s,]+%S+[%s,]+([%-%+]?%d+)%s*$"))
+    if typed_fpm and typed_fpm ~= 0 and math.abs(typed_fpm) < lexicon.min_typed_fpm then return "english" end
     -- a heading beyond 360 is wrapped by TrafScript but asked about in English
     local h = canonical_name(c:match("^([%w_]+)")) == "HDG" and tonumber(c:match("^[%w_]+[%s,]+[%w_]+[%s,]+([%d%.]+)"))
     if h and h > 360 then return "english" end

@@ -4544,3 +4544,90 @@ do
     check(math.abs(lat - 51.5) < 1e-9 and math.abs(lon + 0.3) < 1e-9, lat .. " " .. lon)
   end
 end
+
+-- Typed slips that must never run as a guess (R61): digits typed apart after "hdg"/"fl" in groups other
+-- than single digits, a fix name with two letters swapped, two callsigns side by side, a value's name
+-- cut off at the end, an aircraft created in the air too slow to fly; a comma typed against a callsign
+-- still lists it
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE BAW8CK A320 52.0 4.0 025 FL200 250",
+    "DEFWPT TOLIP 52.3 4.6", "ADDWPT KLM77 TOLIP" })
+  check_eq(ex("klm77 hdg 1 8 0"), "HDG KLM77 180")
+  check(ex("klm77 hdg 1 80"):match("^ASK") ~= nil, ex("klm77 hdg 1 80"))
+  check(ex("klm77 fl 1 20"):match("^ASK") ~= nil, ex("klm77 fl 1 20"))
+  check_eq(ex("klm77 dct tolip"), "DIRECT klm77 tolip")
+  check_eq(ex("klm77 dct tolpi"), "ASK Did you mean TOLIP? I heard 'tolpi'.")
+  check_eq(ex("klm77 baw8ck descend fl90"), "ASK Which aircraft do you mean: KLM77, BAW8CK or both?")
+  check_eq(ex("klm77 and baw8ck descend fl90"), "ALT KLM77 FL90 ; ALT BAW8CK FL90")
+  check_eq(ex("klm77 fl140 ,baw8ck fl160"), "ALT KLM77 FL140 ; ALT BAW8CK FL160")
+  check_eq(ex("klm77,baw8ck fl170"), "ALT KLM77 FL170 ; ALT BAW8CK FL170")
+  check_eq(ex("klm77 fl170,spd 230"), "ALT KLM77 FL170 ; SPD KLM77 230")
+  check(ex("klm77 descend fl100, then level"):match("^ASK I have ALT KLM77 FL100%. 'level' ends") ~= nil,
+    ex("klm77 descend fl100, then level"))
+  check(ex("klm77 hdg 200 and spd"):match("^ASK I have HDG KLM77 200%. 'spd' ends") ~= nil, ex("klm77 hdg 200 and spd"))
+  check(ex("klm77 descend fl120 hdg"):match("^ASK I have ALT KLM77 FL120%. 'hdg' ends") ~= nil, ex("klm77 descend fl120 hdg"))
+  check(ex("klm77 spd 30"):match("^ASK") ~= nil, ex("klm77 spd 30"))
+  check_eq(ex("spd klm77 0.78"), "SPD klm77 0.78")
+  -- a heading of one digit and a vertical speed under lexicon.min_typed_fpm, typed, are asked
+  check(ex("klm77 hdg 3"):match("^ASK What heading") ~= nil, ex("klm77 hdg 3"))
+  check(ex("klm77 vs -12"):match("^ASK What vertical speed") ~= nil, ex("klm77 vs -12"))
+  check_eq(ex("klm77 vs -1200"), "VS klm77 -1200")
+  check_eq(ex("klm77 hdg 007"), "HDG klm77 007")
+  check(ex("cre tst5 b738 52 4 180 fl100 30"):match("^ASK") ~= nil, ex("cre tst5 b738 52 4 180 fl100 30"))
+  check(ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"):match("^ASK TST5 would fly at 30 kt") ~= nil,
+    ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"))
+  check_eq(ex("cre tst6 b738 52 4 180 fl100 300"), "CRE tst6 b738 52 4 180 fl100 300")
+end
+
+-- A typed correction (R61): "err" and "sry" are "sorry", "hmm no" is a correction run: the
+-- value or fix after them replaces the one before; one left alone at the end corrects nothing
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "DEFWPT TOLIP 52.3 4.6", "DEFWPT MAVOR 52.4 4.7",
+    "ADDWPT KLM77 TOLIP", "ADDWPT KLM77 MAVOR" })
+  check_eq(ex("klm77 fl170 err fl190"), "ALT KLM77 FL190")
+  check_eq(ex("klm77 hdg 240 sry 250"), "HDG KLM77 250")
+  check_eq(ex("klm77 spd 230 hmm no 240"), "SPD KLM77 240")
+  check_eq(ex("klm77 dct tolip err mavor"), "DIRECT KLM77 MAVOR")
+  check_eq(ex("klm77 hdg 240 err"), "HDG KLM77 240")
+  check(ex("klm77 hdg 240 err 250 270"):match("^ASK") ~= nil, ex("klm77 hdg 240 err 250 270"))
+end
+
+-- What squawk does not simulate, typed short (R61): "squak"/"sqwk" is a transponder code, a controller
+-- position after "contact" ("director") no direct-to; the simulated part of the request stands
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("klm77 sqwk 4410 and descend fl120"), "ALT KLM77 FL120")
+  check_eq(ex("klm77 climb fl190 then contact director 119.45"), "ALT KLM77 FL190")
+  check(ex("klm77 squak"):match("^ASK") ~= nil or ex("klm77 squak") == "", ex("klm77 squak"))
+end
+
+-- Values typed with a slip (R61): a letter O for a zero in a value of three figures ("hdg 3o0"), a Mach
+-- number typed alone after the callsign (".78"), as it is after a level; a sign typed before a vertical
+-- speed ("vs +1200"); "kits" for kts
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("klm77 hdg 3o0"), "HDG KLM77 300")
+  check_eq(ex("klm77 spd 24O"), "SPD KLM77 240")
+  check_eq(ex("klm77 .78"), "SPD KLM77 M0.78")
+  -- a plus typed before a vertical speed is its sign; "kits" after a speed is knots
+  check_eq(ex("klm77 fl190 vs +1200"), "ALT KLM77 FL190 ; VS KLM77 1200")
+  check_eq(ex("klm77 spd 230 kits"), "SPD KLM77 230")
+  check(ex("klm77 spd +20"):match("^ASK") ~= nil, ex("klm77 spd +20"))
+  check(ex("klm77 climb fl200 .78"):match("^ALT KLM77 FL200") ~= nil, ex("klm77 climb fl200 .78"))
+end
+
+-- A callsign typed against its instruction word (R61): "klm77climb fl190" is "klm77 climb fl190"; a word
+-- that only starts with a callsign and goes on with no instruction word is not cut
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("klm77climb fl190"), "ALT KLM77 FL190")
+  check_eq(ex("klm77hdg 250"), "HDG KLM77 250")
+  check(ex("klm77xyz climb fl190"):match("^ASK") ~= nil, ex("klm77xyz climb fl190"))
+end
+
+-- "back to real time" said after the rate typed as 1 explains it (R61); alone it is still asked (OP or DTMULT 1)
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("dtmult 1, back to real time"), "DTMULT 1")
+  check(ex("dtmult 4 back to real time"):match("^ASK") ~= nil, ex("dtmult 4 back to real time"))
+end
