@@ -4542,3 +4542,31 @@ do
     check(math.abs(lat - 51.5) < 1e-9 and math.abs(lon + 0.3) < 1e-9, lat .. " " .. lon)
   end
 end
+
+-- Cycle 29 (R62): a bare spoken "maintain NNN" is the level kept when it is the aircraft's own present
+-- level and not its present speed; otherwise a speed as before, and a value said with "knots" a speed
+do
+  local _, ex = scene({ "CRE TAI611 A320 14.0 -89.0 090 FL310 320", "CRE AVA44 B738 13.0 -88.0 180 FL240 250" })
+  check_eq(ex("Taca six one one maintain three one zero, traffic two o'clock"), "ALT TAI611 FL310")
+  check_eq(ex("Taca six one one maintain two eight zero"), "SPD TAI611 280")
+  check_eq(ex("Taca six one one maintain three one zero knots"), "SPD TAI611 310")
+  -- (a level that is also its present speed: the speed reading stands, no level guessed)
+  check_eq(ex("Avianca four four maintain two five zero"), "SPD AVA44 250")
+end
+
+-- Cycle 29 (R62): Spanish clearance words a controller mixes into English ("descienda y mantenga ... pies",
+-- "mantenga", "vire izquierda", "reduzca ... nudos"), the Caribbean "yuh", and typed "dsnd", "clmb"
+do
+  local _, ex = scene({ "CRE AMX318 B738 19.4 -99.1 030 FL180 280", "CRE VOI27 A320 20.0 -100.0 200 FL200 290" })
+  check_eq(ex("Aeromexico tres uno ocho, descienda y mantenga uno cero mil pies"), "ALT AMX318 10000")
+  check_eq(ex("Aeromexico 318, mantenga flight level one six zero, reduce two five zero"),
+    "ALT AMX318 FL160 ; SPD AMX318 250")
+  check_eq(ex("Volaris 27 vire izquierda rumbo uno ocho cero"), "HDG VOI27 180 LEFT")
+  check_eq(ex("Volaris 27 reduzca dos cuatro cero nudos"), "SPD VOI27 240")
+  check_eq(ex("Volaris 27 yuh cleared to descend flight level one two zero"), "ALT VOI27 FL120")
+  check_eq(ex("amx318 dsnd 9000"), "ALT AMX318 9000")
+  check_eq(ex("voi27 clmb fl240"), "ALT VOI27 FL240")
+  -- where the class stops: a Spanish verb with no value of its own after it is asked about
+  check(ex("Volaris 27 mantenga"):match("^ASK") ~= nil, "mantenga with nothing after it")
+  check(ex("Volaris 27 vire, uh"):match("^ASK") ~= nil, "vire with nothing after it")
+end
