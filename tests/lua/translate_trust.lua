@@ -4570,3 +4570,14 @@ do
   check(ex("Volaris 27 mantenga"):match("^ASK") ~= nil, "mantenga with nothing after it")
   check(ex("Volaris 27 vire, uh"):match("^ASK") ~= nil, "vire with nothing after it")
 end
+
+-- Cycle 29 (R62): three digits alone after a level passed, left or reached ("passing two two zero increase
+-- Mach .78") are a flight level the next instruction waits for; after "at" they are still asked about
+do
+  local _, ex = scene({ "CRE CMP77 B738 9.0 -79.0 090 FL200 280" })
+  check_eq(ex("Copa 77 climb flight level three one zero, passing two four zero increase mach point seven eight"),
+    "ALT CMP77 FL310 ; ATALT CMP77 FL240 SPD CMP77 M0.78")
+  check_eq(ex("Copa 77 climb FL310, leaving 250 reduce 270 knots"), "ALT CMP77 FL310 ; ATALT CMP77 FL250 SPD CMP77 270")
+  check(ex("Copa 77 climb flight level three one zero, at two two zero reduce two five zero knots"):match("^ASK") ~= nil,
+    "at three digits")
+end
