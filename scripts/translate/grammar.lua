@@ -3759,7 +3759,8 @@ end
 
 -- True when the place named just after token i ends the request ("keep speed 280 until VAKNO", a full
 -- stop or question mark after it at most); with no place, when the words after it do, each a number, a
--- unit of distance or one of `near` ("reduce 160 knots until 4 DME", "until established").
+-- unit of distance or one of `near` ("reduce 160 knots until 4 DME", "until established"; a comma only where
+-- `near` holds ",": "until established, cleared ILS runway 10").
 function G:said_last(i, near)
   local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
   local k
@@ -3768,7 +3769,8 @@ function G:said_last(i, near)
   elseif near then
     k = i + 1
     while self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word or self.t[k].filler
-        or self:word(k, "@fraction_units") or self:word(k, near)) do
+        or self:word(k, "@fraction_units") or self:word(k, near)
+        or (self.t[k].kind == "punct" and self.t[k].text == "," and near:find(" , ", 1, true))) do
       k = k + 1
     end
   else

@@ -601,10 +601,11 @@ return {
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
       last = true },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
-    -- approach, said straight after the word and last (`last`: the words it may hold). (One ending at a
+    -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
+    -- "until established, cleared ILS runway 10" closes with the approach clearance). (One ending at a
     -- distance, "until 4 DME", is asked about: R51's writer read it as a meaning squawk cannot place.)
     { what = "limits that end on the approach", words = "until till", near = { "established" }, window = 1,
-      after_instruction = true, last = "established on the localizer localiser ils final approach" },
+      after_instruction = true, last = "established on the localizer localiser ils final approach , cleared for runway rwy" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },

@@ -4581,3 +4581,13 @@ do
   check(ex("Copa 77 climb flight level three one zero, at two two zero reduce two five zero knots"):match("^ASK") ~= nil,
     "at three digits")
 end
+
+-- Cycle 29 (R62): a limit ending on the approach followed by the approach clearance ("until established,
+-- cleared ILS runway 10") is named, not flown; an instruction after it still asks
+do
+  local _, ex = scene({ "CRE NKS88 A320 18.2 -65.4 280 12000 250" })
+  check_eq(ex("Spirit eight eight descend and maintain two thousand until established, cleared ILS runway two six"),
+    "ALT NKS88 2000")
+  check(ex("Spirit eight eight descend and maintain two thousand until established, turn left heading 250"):match("^ASK")
+    ~= nil, "an instruction after the limit")
+end
