@@ -4591,3 +4591,18 @@ do
   check(ex("Spirit eight eight descend and maintain two thousand until established, turn left heading 250"):match("^ASK")
     ~= nil, "an instruction after the limit")
 end
+
+-- Cycle 29 (R62): the Caribbean's, Central America's and Mexico's airlines by telephony (Cubana, Arajet,
+-- LIAT, Bahamas, Cayman, TACA, Aeroenlaces, ...) and "Spirit" for Spirit Wings, anywhere in the request;
+-- a flight number of none of their aircraft still asks
+do
+  local _, ex = scene({ "CRE CUB215 A320 22.0 -82.0 090 FL200 280", "CRE DWI33 B738 18.5 -69.0 180 FL150 250",
+    "CRE LIA360 AT76 13.0 -61.0 010 9000 200", "CRE NKS902 A320 18.3 -65.0 270 FL120 250",
+    "CRE BHS71 B737 25.0 -77.4 150 FL170 260" })
+  check_eq(ex("instructor: remove Cubana two one five"), "DEL CUB215")
+  check_eq(ex("clear the route of Arajet 33"), "DELRTE DWI33")
+  check_eq(ex("LIAT three sixty climb one one thousand"), "ALT LIA360 11000")
+  check_eq(ex("take out Spirit nine zero two"), "DEL NKS902")
+  check_eq(ex("Bahamas seven one turn right heading two zero zero"), "HDG BHS71 200 RIGHT")
+  check(ex("Cubana two one six descend flight level one eight zero"):match("^ASK") ~= nil, "CUB216 flies not")
+end
