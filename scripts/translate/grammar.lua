@@ -1414,8 +1414,9 @@ function G:vertical_resolutions(i)
 end
 
 -- True when every token but the one at i is punctuation, a filler or part of
--- a callsign, and a callsign is there ("baw836 route?").
-function G:alone_with_aircraft(i)
+-- a callsign, and a callsign is there ("baw836 route?"); tokens [skip_b, skip_e) are left out of the
+-- check when given (a verb of showing the caller has read: "KLM12 route, show it").
+function G:alone_with_aircraft(i, skip_b, skip_e)
   local named = false
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then named = true end
@@ -1423,7 +1424,7 @@ function G:alone_with_aircraft(i)
   if not named then return false end
   for k = 1, #self.t do
     local t = self.t[k]
-    if k ~= i and t.kind ~= "punct" and not t.filler then
+    if k ~= i and t.kind ~= "punct" and not t.filler and not (skip_b and k >= skip_b and k < skip_e) then
       local inside = false
       for _, r in ipairs(self.refs) do
         if r.kind == "aircraft" and k >= r.b and k < r.e then inside = true end

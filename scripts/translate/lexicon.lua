@@ -692,6 +692,14 @@ return {
                     baku = "heydar aliyev", ["st petersburg"] = "pulkovo", ["saint petersburg"] = "pulkovo",
                     yekaterinburg = "koltsovo", novosibirsk = "tolmachevo", samara = "kurumoch", bishkek = "manas",
                     kyiv = "boryspil intl", kiev = "boryspil intl",
+                    -- (the Caribbean, Central America and Mexico: the stations named by their city, "Havana",
+                    -- "Kingston", whose airport the navdata names otherwise)
+                    havana = "jose marti", habana = "jose marti", ["la habana"] = "jose marti",
+                    ["mexico city"] = "licenciado benito juarez", guadalajara = "don miguel hidalgo",
+                    monterrey = "general mariano escobedo", tegucigalpa = "toncontin",
+                    ["santo domingo"] = "las americas", kingston = "norman manley", ["montego bay"] = "sangster",
+                    nassau = "lynden pindling", ["port of spain"] = "piarco", ["grand cayman"] = "owen roberts",
+                    ["panama city"] = "tocumen", bogota = "eldorado", ["port-au-prince"] = "toussaint louverture",
                     -- (West and Central Africa: capitals and hubs whose one airport the navdata names otherwise)
                     lagos = "murtala muhammed", abuja = "nnamdi azikiwe", kano = "mallam aminu", accra = "kotoka",
                     lome = "gnassingbe eyadema", abidjan = "abidjan felix houphouet boigny", dakar = "leopold sedar senghor",

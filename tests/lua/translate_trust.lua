@@ -4606,3 +4606,26 @@ do
   check_eq(ex("Bahamas seven one turn right heading two zero zero"), "HDG BHS71 200 RIGHT")
   check(ex("Cubana two one six descend flight level one eight zero"):match("^ASK") ~= nil, "CUB216 flies not")
 end
+
+-- Cycle 29 (R62): an aircraft and "route", a verb of showing after it ("route please, show it") lists the route;
+-- anything more after it still asks
+do
+  local _, ex = scene({ "CRE CMP902 B738 9.0 -79.0 090 FL200 280" })
+  check_eq(ex("Copa 902 route please, show it"), "LISTRTE CMP902")
+  check_eq(ex("cmp902 route, display"), "LISTRTE CMP902")
+  check(ex("Copa 902 route, show it to the students"):match("^ASK") ~= nil, "more after the verb")
+end
+
+-- Cycle 29 (R62): the region's stations said by their city alone after the callsign ("Iberia 6621, Havana,
+-- ...", "Kingston"), and its cities as destinations
+do
+  local s, ex = navscene({ "CRE IBE6621 A332 23.5 -80.0 250 FL330 290", "CRE BWA9 B738 17.5 -76.0 280 FL200 280" },
+    "the region's stations by their city")
+  if s then
+    check_eq(ex("Iberia 6621, Havana, descend flight level two eight zero"), "ALT IBE6621 FL280")
+    check_eq(ex("Caribbean nine, Kingston, turn left heading two five zero"), "HDG BWA9 250 LEFT")
+    check_eq(ex("BWA9 new destination Montego Bay"), "DEST BWA9 MKJS")
+    -- (a name that is no station nor city there is still asked about)
+    check(ex("Iberia 6621, Habanero, descend flight level two eight zero"):match("^ASK") ~= nil, "no station")
+  end
+end
