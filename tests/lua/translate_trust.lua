@@ -4629,3 +4629,18 @@ do
     check(ex("Iberia 6621, Habanero, descend flight level two eight zero"):match("^ASK") ~= nil, "no station")
   end
 end
+
+-- Cycle 29 (R62): a type's variant said after "dash" ("Boeing seven three seven dash eight hundred"), and
+-- "Airbus three three zero three hundred" keeping its variant (A333, never the family's A332); "dash" with
+-- a variant digit alone ("seven three seven dash eight") is still asked about
+do
+  local _, ex = scene({})
+  check_eq(ex("create CMP71, Boeing seven three seven dash eight hundred, at 9 north 79 west, heading 090, FL240, 290 knots"),
+    "CRE CMP71 B738 9 -79 90 FL240 290")
+  check_eq(ex("create IBE44, Airbus three three zero three hundred, at 20 north 70 west, heading 270, FL350, 280 knots"),
+    "CRE IBE44 A333 20 -70 270 FL350 280")
+  check_eq(ex("create IBE45, Airbus three three zero dash two hundred, at 20 north 71 west, heading 270, FL330, 280 knots"),
+    "CRE IBE45 A332 20 -71 270 FL330 280")
+  check(ex("create CMP72, Boeing seven three seven dash eight, at 9 north 78 west, heading 090, FL240, 290 knots")
+    :match("^ASK") ~= nil, "dash eight")
+end
