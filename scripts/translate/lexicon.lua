@@ -775,6 +775,8 @@ return {
     { heard = { "mil" }, means = "thousand", after = { "#number" } },
     { heard = { "pies" }, means = "feet", after = { "#number", "mil", "thousand" } },
     { heard = { "nudos" }, means = "knots", after = { "#number" } },
+    { heard = { "proceda" }, means = "proceed", before = { "directo", "direct", "direct-to" } },
+    { heard = { "directo" }, means = "direct", before = { "a", "al" }, after = { "proceda", "proceed", "vuele" } },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",
   -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit

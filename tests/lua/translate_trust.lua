@@ -4557,13 +4557,15 @@ end
 -- Cycle 29 (R62): Spanish clearance words a controller mixes into English ("descienda y mantenga ... pies",
 -- "mantenga", "vire izquierda", "reduzca ... nudos"), the Caribbean "yuh", and typed "dsnd", "clmb"
 do
-  local _, ex = scene({ "CRE AMX318 B738 19.4 -99.1 030 FL180 280", "CRE VOI27 A320 20.0 -100.0 200 FL200 290" })
+  local _, ex = scene({ "CRE AMX318 B738 19.4 -99.1 030 FL180 280", "CRE VOI27 A320 20.0 -100.0 200 FL200 290",
+    "DEFWPT ALPHA 20.5 -100.2", "ADDWPT VOI27 ALPHA" })
   check_eq(ex("Aeromexico tres uno ocho, descienda y mantenga uno cero mil pies"), "ALT AMX318 10000")
   check_eq(ex("Aeromexico 318, mantenga flight level one six zero, reduce two five zero"),
     "ALT AMX318 FL160 ; SPD AMX318 250")
   check_eq(ex("Volaris 27 vire izquierda rumbo uno ocho cero"), "HDG VOI27 180 LEFT")
   check_eq(ex("Volaris 27 reduzca dos cuatro cero nudos"), "SPD VOI27 240")
   check_eq(ex("Volaris 27 yuh cleared to descend flight level one two zero"), "ALT VOI27 FL120")
+  check_eq(ex("Volaris 27 proceda directo a ALPHA"), "DIRECT VOI27 ALPHA")
   check_eq(ex("amx318 dsnd 9000"), "ALT AMX318 9000")
   check_eq(ex("voi27 clmb fl240"), "ALT VOI27 FL240")
   -- where the class stops: a Spanish verb with no value of its own after it is asked about
