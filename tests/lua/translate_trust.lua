@@ -4566,6 +4566,9 @@ do
   check_eq(ex("Volaris 27 reduzca dos cuatro cero nudos"), "SPD VOI27 240")
   check_eq(ex("Volaris 27 yuh cleared to descend flight level one two zero"), "ALT VOI27 FL120")
   check_eq(ex("Volaris 27 proceda directo a ALPHA"), "DIRECT VOI27 ALPHA")
+  check_eq(ex("Aeromexico 318 mantenga rumbo actual"), "HDG AMX318 30")
+  check_eq(ex("Aeromexico 318 mantenga velocidad actual"), "SPD AMX318 280")
+  check(ex("Aeromexico 318 rumbo actual"):match("^ASK") ~= nil, "rumbo actual with no verb")
   check_eq(ex("amx318 dsnd 9000"), "ALT AMX318 9000")
   check_eq(ex("voi27 clmb fl240"), "ALT VOI27 FL240")
   -- where the class stops: a Spanish verb with no value of its own after it is asked about
