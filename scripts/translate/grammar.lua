@@ -1417,8 +1417,9 @@ function G:vertical_resolutions(i)
 end
 
 -- True when every token but the one at i is punctuation, a filler or part of
--- a callsign, and a callsign is there ("baw836 route?").
-function G:alone_with_aircraft(i)
+-- a callsign, and a callsign is there ("baw836 route?"); tokens [skip_b, skip_e) are left out of the
+-- check when given (a verb of showing the caller has read: "KLM12 route, show it").
+function G:alone_with_aircraft(i, skip_b, skip_e)
   local named = false
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then named = true end
@@ -1426,7 +1427,7 @@ function G:alone_with_aircraft(i)
   if not named then return false end
   for k = 1, #self.t do
     local t = self.t[k]
-    if k ~= i and t.kind ~= "punct" and not t.filler then
+    if k ~= i and t.kind ~= "punct" and not t.filler and not (skip_b and k >= skip_b and k < skip_e) then
       local inside = false
       for _, r in ipairs(self.refs) do
         if r.kind == "aircraft" and k >= r.b and k < r.e then inside = true end
@@ -3802,7 +3803,8 @@ end
 
 -- True when the place named just after token i ends the request ("keep speed 280 until VAKNO", a full
 -- stop or question mark after it at most); with no place, when the words after it do, each a number, a
--- unit of distance or one of `near` ("reduce 160 knots until 4 DME", "until established").
+-- unit of distance or one of `near` ("reduce 160 knots until 4 DME", "until established"; a comma only where
+-- `near` holds ",": "until established, cleared ILS runway 10").
 function G:said_last(i, near)
   local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
   local k
@@ -3811,7 +3813,8 @@ function G:said_last(i, near)
   elseif near then
     k = i + 1
     while self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word or self.t[k].filler
-        or self:word(k, "@fraction_units") or self:word(k, near)) do
+        or self:word(k, "@fraction_units") or self:word(k, near)
+        or (self.t[k].kind == "punct" and self.t[k].text == "," and near:find(" , ", 1, true))) do
       k = k + 1
     end
   else

@@ -1127,10 +1127,17 @@ function m:at_altitude(s)
     k = self:skip_fillers(k + 1)
   end
   if k ~= s.trig then return nil end
-  if q.kind ~= "alt" and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then return nil end
+  -- ("passing two two zero increase Mach .78": three digits alone after a level passed, left or reached are
+  -- a flight level)
+  local fl_digits = q.kind == "plain" and self:word(a, "passing leaving reaching") and #q.number.digits == 3
+    and q.value >= 100 and q.value <= 600 and not q.number.thousand and not q.number.hundred
+  if q.kind ~= "alt" and not fl_digits and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then
+    return nil
+  end
   local ids = self:acids(s)
   if #ids == 0 then return nil end
   self:mark_used(q.b, q.e)  -- the condition's altitude is not the instruction's value
+  if fl_digits then return "ATALT " .. ids[1] .. " " .. f.alt(q.value * 100, true) end
   return "ATALT " .. ids[1] .. " " .. f.alt(q.value, q.fl)
 end
 

@@ -76,6 +76,13 @@ return function(H, f, wrap, compass)
               q.value, q.value, self:raw(q.b, q.e)))
           end
           if (q.value >= 100 and q.value <= 400 or knots) and not q.number.thousand and not q.number.hundred then
+            -- (spoken with no unit, "maintain two niner zero" is the level kept when it is the aircraft's own
+            -- present level and not its present speed)
+            local ids = self:acids(s)
+            local now = not knots and ids[1] and self:state(ids[1])
+            if now and math.abs((now.alt_ft or 0) - q.value * 100) < 50 and math.abs((now.cas_kt or 0) - q.value) >= 3 then
+              return self:altitude(s)
+            end
             return self:speed(s)
           end
           return self:altitude(s)

@@ -61,7 +61,9 @@ return {
         "things", "stuff",
         "whom", "there",
         "here", "i'm", "i'd", "i'll", "i've", "you're", "you'd", "you'll", "you've", "we're", "we'd", "we'll",
-        "we've", "he's", "she's", "it's", "it'll", "they're", "they'd", "they'll", "they've", "that's",
+        "we've",
+        -- Caribbean English's "you" and "you're" ("Caribbean 417 yuh cleared direct POS")
+        "yuh", "he's", "she's", "it's", "it'll", "they're", "they'd", "they'll", "they've", "that's",
         "there's", "here's", "what's", "let's", "who's", "where's", "how's", "that'll" },
     auxiliaries = { "be", "am", "is", "are", "was", "were", "been", "being", "have", "has", "had", "having", "do",
         "does", "did", "doing", "done", "get", "gets", "got", "getting", "go", "goes", "going", "gonna" },
@@ -306,6 +308,11 @@ return {
     expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until" },
     maint = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
     mnt = { word = "maintain", next = "#number fl flight speed spd heading hdg altitude alt level present own" },
+    -- (the vowels left out of a level change: "dsnd 5000", "clmb fl240")
+    dsnd = { word = "descend", next = "#number fl flight level to" },
+    dscnd = { word = "descend", next = "#number fl flight level to" },
+    dsc = { word = "descend", next = "#number fl flight level to" },
+    clmb = { word = "climb", next = "#number fl flight level to" },
     trn = { word = "turn", next = "left right lft rt lt rgt l r hdg heading" },
     tl = { word = "turn left", next = "#number hdg heading" }, tr = { word = "turn right", next = "#number hdg heading" },
     fh = { word = "fly heading", next = "#number" },
@@ -609,10 +616,11 @@ return {
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
       last = true },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
-    -- approach, said straight after the word and last (`last`: the words it may hold). (One ending at a
+    -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
+    -- "until established, cleared ILS runway 10" closes with the approach clearance). (One ending at a
     -- distance, "until 4 DME", is asked about: R51's writer read it as a meaning squawk cannot place.)
     { what = "limits that end on the approach", words = "until till", near = { "established" }, window = 1,
-      after_instruction = true, last = "established on the localizer localiser ils final approach" },
+      after_instruction = true, last = "established on the localizer localiser ils final approach , cleared for runway rwy" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },
@@ -699,6 +707,14 @@ return {
                     baku = "heydar aliyev", ["st petersburg"] = "pulkovo", ["saint petersburg"] = "pulkovo",
                     yekaterinburg = "koltsovo", novosibirsk = "tolmachevo", samara = "kurumoch", bishkek = "manas",
                     kyiv = "boryspil intl", kiev = "boryspil intl",
+                    -- (the Caribbean, Central America and Mexico: the stations named by their city, "Havana",
+                    -- "Kingston", whose airport the navdata names otherwise)
+                    havana = "jose marti", habana = "jose marti", ["la habana"] = "jose marti",
+                    ["mexico city"] = "licenciado benito juarez", guadalajara = "don miguel hidalgo",
+                    monterrey = "general mariano escobedo", tegucigalpa = "toncontin",
+                    ["santo domingo"] = "las americas", kingston = "norman manley", ["montego bay"] = "sangster",
+                    nassau = "lynden pindling", ["port of spain"] = "piarco", ["grand cayman"] = "owen roberts",
+                    ["panama city"] = "tocumen", bogota = "eldorado", ["port-au-prince"] = "toussaint louverture",
                     -- (West and Central Africa: capitals and hubs whose one airport the navdata names otherwise)
                     lagos = "murtala muhammed", abuja = "nnamdi azikiwe", kano = "mallam aminu", accra = "kotoka",
                     lome = "gnassingbe eyadema", abidjan = "abidjan felix houphouet boigny", dakar = "leopold sedar senghor",
@@ -757,8 +773,29 @@ return {
     { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" } },
     { heard = { "nivel de vuelo", "nivel", "niveau" }, means = "flight level", before = { "#number" } },
     { heard = { "velocidad", "vitesse" }, means = "speed", before = { "#number" } },
-    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a" } },
-    { heard = { "ascienda", "suba", "montez" }, means = "climb", before = { "#number", "nivel", "niveau", "a" } },
+    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a", "y" } },
+    { heard = { "ascienda", "suba", "montez" }, means = "climb", before = { "#number", "nivel", "niveau", "a", "y" } },
+    -- (and the rest of a Spanish clearance: "descienda y mantenga uno dos mil pies", "mantenga rumbo ...",
+    -- "vire izquierda rumbo ...", "reduzca dos cinco cero nudos")
+    { heard = { "mantenga", "mantener" }, means = "maintain",
+      before = { "#number", "nivel", "rumbo", "velocidad", "a", "flight", "fl", "level", "heading", "speed",
+                 "present" } },
+    { heard = { "y" }, means = "and", between = { { "descienda", "ascienda", "suba", "descend", "climb" },
+                                                  { "mantenga", "mantener", "maintain" } } },
+    { heard = { "vire", "gire" }, means = "turn",
+      before = { "izquierda", "derecha", "left", "right", "rumbo", "heading", "#number" } },
+    { heard = { "izquierda" }, means = "left", after = { "vire", "gire", "turn" } },
+    { heard = { "derecha" }, means = "right", after = { "vire", "gire", "turn" } },
+    { heard = { "reduzca" }, means = "reduce", before = { "#number", "velocidad", "a", "speed" } },
+    { heard = { "aumente" }, means = "increase", before = { "#number", "velocidad", "a", "speed" } },
+    { heard = { "mil" }, means = "thousand", after = { "#number" } },
+    { heard = { "pies" }, means = "feet", after = { "#number", "mil", "thousand" } },
+    { heard = { "nudos" }, means = "knots", after = { "#number" } },
+    { heard = { "rumbo actual" }, means = "present heading", after = { "mantenga", "mantener", "maintain" } },
+    { heard = { "velocidad actual" }, means = "present speed", after = { "mantenga", "mantener", "maintain" } },
+    { heard = { "nivel actual" }, means = "present level", after = { "mantenga", "mantener", "maintain" } },
+    { heard = { "proceda" }, means = "proceed", before = { "directo", "direct", "direct-to" } },
+    { heard = { "directo" }, means = "direct", before = { "a", "al" }, after = { "proceda", "proceed", "vuele" } },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",
   -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit

@@ -125,6 +125,25 @@ return {
     { "binter", "IBB" },
     { "caribbean airlines", "BWA" },
     { "caribbean", "BWA" },
+    -- the Caribbean's, Central America's and Mexico's airlines, by telephony and by name
+    { "cubana", "CUB" },
+    { "arajet", "DWI" },
+    { "liat", "LIA" },
+    { "bahamas", "BHS" },  -- (Bahamasair's ICAO telephony)
+    { "bahamasair", "BHS" },
+    { "cayman", "CAY" },  -- (Cayman Airways)
+    { "cayman airways", "CAY" },
+    { "islandways", "IWY" },  -- (interCaribbean Airways)
+    { "intercaribbean", "IWY" },
+    { "windward", "WIA" },  -- (Winair)
+    { "winair", "WIA" },
+    { "taca", "TAI" },  -- (Avianca El Salvador)
+    { "lacsa", "LRC" },  -- (Avianca Costa Rica)
+    { "surinam", "SLM" },
+    { "aeroenlaces", "VIV" },  -- (Viva Aerobus's ICAO telephony)
+    { "viva aerobus", "VIV" },
+    { "costera", "SLI" },  -- (Aeromexico Connect)
+    { "spirit", "NKS" },  -- (Spirit Wings said short, as US controllers do)
     { "fedex", "FDX" },
     { "ups", "UPS" },
     { "giant", "GTI" },

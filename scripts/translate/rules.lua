@@ -975,6 +975,18 @@ return function(intent, rule, words)
   end }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route rte", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
+  -- "Copa 245 route please, show it", "KLM12 route, display": the same, a verb of showing said after the noun
+  -- (its object "it" or "me" at most) closing the request
+  rule { "route rte", "listrte", when = function(g, i)
+    local k = i + 1
+    while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler) do k = k + 1 end
+    if not g:word(k, "show display") then return false end
+    local e = g:word(k + 1, "it me") and k + 2 or k + 1
+    for x = e, #g.t do
+      if g.t[x].kind ~= "punct" and not g.t[x].filler then return false end
+    end
+    return g:alone_with_aircraft(i, k, e)
+  end }
   -- "route of klm1234?", "route of Kenya 480 please": the request opens with the noun and asks, or
   -- names only the aircraft after it
   rule { "route", "listrte", next = "of for", when = function(g, i)

@@ -243,6 +243,12 @@ function M.spoken(text, built)
       local function bare(j) return toks[j] and (toks[j]:lower():gsub("%p+$", "")) end
       while toks[k] do
         local x, nx = bare(k), toks[k]:match("%p$") == nil and bare(k + 1) or nil
+        -- ("seven three seven dash eight hundred": "dash" before the variant's hundreds is its hyphen)
+        if x == "dash" and nx and DIGITS[nx] and #digits == 3 and not variant and toks[k + 1]:match("%p$") == nil
+            and bare(k + 2) == "hundred" then
+          k = k + 1
+          x, nx = nx, bare(k + 1)
+        end
         if DIGITS[x] and nx == "hundred" and #digits == 3 and not variant then
           variant, k = DIGITS[x] .. "00", k + 2
         elseif variant then
@@ -261,7 +267,9 @@ function M.spoken(text, built)
         local name = lead .. digits .. (variant and ("-" .. variant) or "")
         local punct = toks[k - 1]:match("%p+$") or ""
         -- ("Airbus three twenty": the maker's letter left out)
-        if w == "airbus" and lead ~= "a" and #digits == 3 and not built.known[name] then name = "airbus a" .. digits end
+        if w == "airbus" and lead ~= "a" and #digits == 3 and not built.known[name] then
+          name = "airbus a" .. digits .. (variant and ("-" .. variant) or "")
+        end
         if (#digits >= 3 or prefix) and built.known[name] then best = { name = name .. punct, e = k } end
         if punct ~= "" then break end
       end

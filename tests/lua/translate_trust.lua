@@ -4631,3 +4631,110 @@ do
   check_eq(ex("dtmult 1, back to real time"), "DTMULT 1")
   check(ex("dtmult 4 back to real time"):match("^ASK") ~= nil, ex("dtmult 4 back to real time"))
 end
+
+-- Cycle 29 (R62): a bare spoken "maintain NNN" is the level kept when it is the aircraft's own present
+-- level and not its present speed; otherwise a speed as before, and a value said with "knots" a speed
+do
+  local _, ex = scene({ "CRE TAI611 A320 14.0 -89.0 090 FL310 320", "CRE AVA44 B738 13.0 -88.0 180 FL240 250" })
+  check_eq(ex("Taca six one one maintain three one zero, traffic two o'clock"), "ALT TAI611 FL310")
+  check_eq(ex("Taca six one one maintain two eight zero"), "SPD TAI611 280")
+  check_eq(ex("Taca six one one maintain three one zero knots"), "SPD TAI611 310")
+  -- (a level that is also its present speed: the speed reading stands, no level guessed)
+  check_eq(ex("Avianca four four maintain two five zero"), "SPD AVA44 250")
+end
+
+-- Cycle 29 (R62): Spanish clearance words a controller mixes into English ("descienda y mantenga ... pies",
+-- "mantenga", "vire izquierda", "reduzca ... nudos"), the Caribbean "yuh", and typed "dsnd", "clmb"
+do
+  local _, ex = scene({ "CRE AMX318 B738 19.4 -99.1 030 FL180 280", "CRE VOI27 A320 20.0 -100.0 200 FL200 290",
+    "DEFWPT ALPHA 20.5 -100.2", "ADDWPT VOI27 ALPHA" })
+  check_eq(ex("Aeromexico tres uno ocho, descienda y mantenga uno cero mil pies"), "ALT AMX318 10000")
+  check_eq(ex("Aeromexico 318, mantenga flight level one six zero, reduce two five zero"),
+    "ALT AMX318 FL160 ; SPD AMX318 250")
+  check_eq(ex("Volaris 27 vire izquierda rumbo uno ocho cero"), "HDG VOI27 180 LEFT")
+  check_eq(ex("Volaris 27 reduzca dos cuatro cero nudos"), "SPD VOI27 240")
+  check_eq(ex("Volaris 27 yuh cleared to descend flight level one two zero"), "ALT VOI27 FL120")
+  check_eq(ex("Volaris 27 proceda directo a ALPHA"), "DIRECT VOI27 ALPHA")
+  check_eq(ex("Aeromexico 318 mantenga rumbo actual"), "HDG AMX318 30")
+  check_eq(ex("Aeromexico 318 mantenga velocidad actual"), "SPD AMX318 280")
+  check(ex("Aeromexico 318 rumbo actual"):match("^ASK") ~= nil, "rumbo actual with no verb")
+  check_eq(ex("amx318 dsnd 9000"), "ALT AMX318 9000")
+  check_eq(ex("voi27 clmb fl240"), "ALT VOI27 FL240")
+  -- where the class stops: a Spanish verb with no value of its own after it is asked about
+  check(ex("Volaris 27 mantenga"):match("^ASK") ~= nil, "mantenga with nothing after it")
+  check(ex("Volaris 27 vire, uh"):match("^ASK") ~= nil, "vire with nothing after it")
+end
+
+-- Cycle 29 (R62): three digits alone after a level passed, left or reached ("passing two two zero increase
+-- Mach .78") are a flight level the next instruction waits for; after "at" they are still asked about
+do
+  local _, ex = scene({ "CRE CMP77 B738 9.0 -79.0 090 FL200 280" })
+  check_eq(ex("Copa 77 climb flight level three one zero, passing two four zero increase mach point seven eight"),
+    "ALT CMP77 FL310 ; ATALT CMP77 FL240 SPD CMP77 M0.78")
+  check_eq(ex("Copa 77 climb FL310, leaving 250 reduce 270 knots"), "ALT CMP77 FL310 ; ATALT CMP77 FL250 SPD CMP77 270")
+  check(ex("Copa 77 climb flight level three one zero, at two two zero reduce two five zero knots"):match("^ASK") ~= nil,
+    "at three digits")
+end
+
+-- Cycle 29 (R62): a limit ending on the approach followed by the approach clearance ("until established,
+-- cleared ILS runway 10") is named, not flown; an instruction after it still asks
+do
+  local _, ex = scene({ "CRE NKS88 A320 18.2 -65.4 280 12000 250" })
+  check_eq(ex("Spirit eight eight descend and maintain two thousand until established, cleared ILS runway two six"),
+    "ALT NKS88 2000")
+  check(ex("Spirit eight eight descend and maintain two thousand until established, turn left heading 250"):match("^ASK")
+    ~= nil, "an instruction after the limit")
+end
+
+-- Cycle 29 (R62): the Caribbean's, Central America's and Mexico's airlines by telephony (Cubana, Arajet,
+-- LIAT, Bahamas, Cayman, TACA, Aeroenlaces, ...) and "Spirit" for Spirit Wings, anywhere in the request;
+-- a flight number of none of their aircraft still asks
+do
+  local _, ex = scene({ "CRE CUB215 A320 22.0 -82.0 090 FL200 280", "CRE DWI33 B738 18.5 -69.0 180 FL150 250",
+    "CRE LIA360 AT76 13.0 -61.0 010 9000 200", "CRE NKS902 A320 18.3 -65.0 270 FL120 250",
+    "CRE BHS71 B737 25.0 -77.4 150 FL170 260" })
+  check_eq(ex("instructor: remove Cubana two one five"), "DEL CUB215")
+  check_eq(ex("clear the route of Arajet 33"), "DELRTE DWI33")
+  check_eq(ex("LIAT three sixty climb one one thousand"), "ALT LIA360 11000")
+  check_eq(ex("take out Spirit nine zero two"), "DEL NKS902")
+  check_eq(ex("Bahamas seven one turn right heading two zero zero"), "HDG BHS71 200 RIGHT")
+  check(ex("Cubana two one six descend flight level one eight zero"):match("^ASK") ~= nil, "CUB216 flies not")
+end
+
+-- Cycle 29 (R62): an aircraft and "route", a verb of showing after it ("route please, show it") lists the route;
+-- anything more after it still asks
+do
+  local _, ex = scene({ "CRE CMP902 B738 9.0 -79.0 090 FL200 280" })
+  check_eq(ex("Copa 902 route please, show it"), "LISTRTE CMP902")
+  check_eq(ex("cmp902 route, display"), "LISTRTE CMP902")
+  check(ex("Copa 902 route, show it to the students"):match("^ASK") ~= nil, "more after the verb")
+end
+
+-- Cycle 29 (R62): the region's stations said by their city alone after the callsign ("Iberia 6621, Havana,
+-- ...", "Kingston"), and its cities as destinations
+do
+  local s, ex = navscene({ "CRE IBE6621 A332 23.5 -80.0 250 FL330 290", "CRE BWA9 B738 17.5 -76.0 280 FL200 280" },
+    "the region's stations by their city")
+  if s then
+    check_eq(ex("Iberia 6621, Havana, descend flight level two eight zero"), "ALT IBE6621 FL280")
+    check_eq(ex("Caribbean nine, Kingston, turn left heading two five zero"), "HDG BWA9 250 LEFT")
+    check_eq(ex("BWA9 new destination Montego Bay"), "DEST BWA9 MKJS")
+    -- (a name that is no station nor city there is still asked about)
+    check(ex("Iberia 6621, Habanero, descend flight level two eight zero"):match("^ASK") ~= nil, "no station")
+  end
+end
+
+-- Cycle 29 (R62): a type's variant said after "dash" ("Boeing seven three seven dash eight hundred"), and
+-- "Airbus three three zero three hundred" keeping its variant (A333, never the family's A332); "dash" with
+-- a variant digit alone ("seven three seven dash eight") is still asked about
+do
+  local _, ex = scene({})
+  check_eq(ex("create CMP71, Boeing seven three seven dash eight hundred, at 9 north 79 west, heading 090, FL240, 290 knots"),
+    "CRE CMP71 B738 9 -79 90 FL240 290")
+  check_eq(ex("create IBE44, Airbus three three zero three hundred, at 20 north 70 west, heading 270, FL350, 280 knots"),
+    "CRE IBE44 A333 20 -70 270 FL350 280")
+  check_eq(ex("create IBE45, Airbus three three zero dash two hundred, at 20 north 71 west, heading 270, FL330, 280 knots"),
+    "CRE IBE45 A332 20 -71 270 FL330 280")
+  check(ex("create CMP72, Boeing seven three seven dash eight, at 9 north 78 west, heading 090, FL240, 290 knots")
+    :match("^ASK") ~= nil, "dash eight")
+end
