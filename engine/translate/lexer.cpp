@@ -66,6 +66,13 @@ bool thousands_grouped(std::string_view s) {
   return true;
 }
 
+// "0,76": a zero, a decimal comma and one to three digits, as French and Arabic write a decimal (a
+// list or a thousands grouping never opens with a lone zero).
+bool zero_decimal_comma(std::string_view s) {
+  return s.size() >= 3 && s.size() <= 5 && s[0] == '0' && s[1] == ',' &&
+         all_of(s.substr(2), is_digit);
+}
+
 // Degrees with minutes (and seconds) written with ° ' " marks, hemisphere
 // letter before or after: "N52°18.6'", "52°18'N", "004°45.8'E".
 bool lex_dms(std::string_view s, std::vector<Token>& out) {
@@ -139,6 +146,11 @@ void lex_core(std::string_view c, std::vector<Token>& out) {
     for (char ch : c)
       if (ch != ',') digits += ch;
     out.push_back(number(text::to_double(digits).value_or(0.0), c, false));
+    return;
+  }
+  if (zero_decimal_comma(c)) {
+    out.push_back(
+        number(text::to_double(std::string("0.").append(c.substr(2))).value_or(0.0), c, true));
     return;
   }
   if (c.front() == '.' && c.size() > 1 && all_of(c.substr(1), is_digit)) {

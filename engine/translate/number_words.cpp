@@ -190,6 +190,19 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
       n.value *= 1000.0;
       n.has_thousand = true;
       ++j;
+      // "9 thousand 500 feet", "9 thousand 5 hundred": typed hundreds after the thousands are its
+      // hundreds (a bare number is so only before feet: "4 thousand 300 knots" is two values)
+      if (j < t.size() && t[j].kind == TokKind::kNumber && !t[j].spelled) {
+        const double h = t[j].num;
+        if (h >= 1 && h <= 9 && h == static_cast<int>(h) && is_word(t, j + 1, "hundred")) {
+          n.value += h * 100.0;
+          j += 2;
+        } else if (h >= 100 && h <= 900 && static_cast<int>(h) % 100 == 0 &&
+                   (is_word(t, j + 1, "feet") || is_word(t, j + 1, "ft"))) {
+          n.value += h;
+          ++j;
+        }
+      }
     } else if (is_word(t, j, "hundred")) {
       n.value *= 100.0;
       n.has_hundred = true;
