@@ -1163,6 +1163,9 @@ return function(intent, rule, words)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  -- "request your present heading", "request your level": the controller asking the aircraft's own value
+  -- (a report, as "say"), never an instruction to keep it
+  rule { "request", "pos", next = "your", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   rule { "carry", "op", next = "on", near = { 4, "@sim" } }  -- "carry on with the simulation"
   rule { "carry go", "op", next = "on", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "carry on", "go on"
   -- "..., then carry on", "..., then go", "ok carry on, run it", "OK, go on, and run at 2x": a clause of its own
@@ -1222,6 +1225,11 @@ return function(intent, rule, words)
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   rule { "run", "dtmult", near = { 4, "times x" } }
+  -- "run x2", "run x4": the multiplier typed straight after the verb, nothing after it
+  rule { "run", "dtmult", when = function(g, i)
+    local nx = g.t[i + 1]
+    return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
+  end }
   rule { "run", "dtmult", near = { 4, "@multipliers" } }  -- "run it at twice real time"
   rule { "dtmult", "dtmult" }
   -- "start the next exercise from file munich_arrivals": a scenario file to load (IC), not the clock
