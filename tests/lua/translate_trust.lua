@@ -4738,3 +4738,51 @@ do
   check(ex("create CMP72, Boeing seven three seven dash eight, at 9 north 78 west, heading 090, FL240, 290 knots")
     :match("^ASK") ~= nil, "dash eight")
 end
+
+-- Cycle 30 (R63): "request your <state>" is the controller asking the aircraft's own value (a report), never an
+-- instruction to keep it; "request" with an instruction's value after it is still no report
+do
+  local _, ex = scene({ "CRE SVA117 B77W 24.0 39.0 140 FL330 290" })
+  check_eq(ex("Saudia 117 request your present heading"), "POS SVA117")
+  check_eq(ex("SVA117 request your level"), "POS SVA117")
+  check(ex("Saudia 117 request heading 150"):match("^POS") == nil, "a value after the state word")
+end
+
+-- Cycle 30 (R63): a Mach number written with a decimal comma ("mach 0,78"), as French and Arabic write decimals;
+-- a comma after another first digit is no decimal
+do
+  local _, ex = scene({ "CRE DAH2050 A332 36.5 3.0 090 FL350 280" })
+  check_eq(ex("Air Algerie 2050 mach 0,81"), "SPD DAH2050 M0.81")
+  check_eq(ex("DAH2050 maintain mach 0,8"), "SPD DAH2050 M0.8")
+  check(ex("DAH2050 mach 1,81"):match("^ASK") ~= nil, "1,81 is no Mach number")
+end
+
+-- Cycle 30 (R63): typed thousands and hundreds, "8 thousand 500 feet", "6 thousand 5 hundred": one altitude; a
+-- bare number after "thousand" with no feet is still another value
+do
+  local _, ex = scene({ "CRE RJA214 A320 31.0 36.0 180 12000 250" })
+  check_eq(ex("Jordanian 214 descend 8 thousand 500 feet"), "ALT RJA214 8500")
+  check_eq(ex("RJA214 descend to 6 thousand 5 hundred"), "ALT RJA214 6500")
+  check(ex("RJA214 descend 8 thousand 300 knots"):match("^ALT RJA214 8000") ~= nil
+    or ex("RJA214 descend 8 thousand 300 knots"):match("^ASK") ~= nil, "300 knots is no hundreds")
+end
+
+-- Cycle 30 (R63): the Middle East's and North Africa's airlines by telephony and name ("Nile Bird", "Nas",
+-- "Nouvelair", "Arabia Maroc"); a flight number no aircraft flies is still asked about
+do
+  local _, ex = scene({ "CRE NIA330 A320 30.0 31.0 300 FL170 270", "CRE KNE88 A320 24.5 46.5 010 FL250 280",
+    "CRE LBT702 A320 36.0 10.0 350 FL110 250", "CRE MAC41 A320 33.5 -7.5 030 FL130 260" })
+  check_eq(ex("Nile Bird 330 climb flight level 210"), "ALT NIA330 FL210")
+  check_eq(ex("position of Nas 88"), "POS KNE88")
+  check_eq(ex("Nouvelair 702 turn left heading 300"), "HDG LBT702 300 LEFT")
+  check_eq(ex("Arabia Maroc 41 descend flight level 90"), "ALT MAC41 FL90")
+  check_eq(ex("create Nouvelair 703 A320 at 36.2 10.1 heading 180 FL100 240"), "CRE LBT703 A320 36.2 10.1 180 FL100 240")
+  check(ex("Nile Bird 331 climb flight level 210"):match("^ASK") ~= nil, "no such flight")
+end
+
+-- Cycle 30 (R63): "run x4": the clock's multiplier typed straight after "run", nothing after it
+do
+  local _, ex = scene({ "CRE RAM77 B738 33.0 -7.0 090 FL200 280" })
+  check_eq(ex("run x4"), "DTMULT 4")
+  check(ex("run x4 RAM77"):match("^DTMULT 4$") == nil, "more after the multiplier")
+end
