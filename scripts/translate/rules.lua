@@ -1086,7 +1086,7 @@ return function(intent, rule, words)
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
   end }
   rule { "move mv reposition teleport shift place relocate", "move" }
-  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course route" } }
+  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course route normal real" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place
   rule { "put place", "move", when = function(g, i)
@@ -1391,6 +1391,20 @@ return function(intent, rule, words)
   end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
+  -- "wind at 30.1 31.4 FL200", "winds over 33N 7W?": the request opening with the wind at a position (a level
+  -- after it at most) and nothing else, no direction nor speed told: the wind there, shown
+  rule { "wind winds", "getwind", next = "at over", when = function(g, i)
+    if i ~= g:skip_fillers(1) then return false end
+    local qs = g:quantities(i + 2, #g.t + 1)
+    local a, b = qs[1], qs[2]
+    if not (a and b and a.b == i + 2 and b.b == a.e and a.number.typed and b.number.typed) then return false end
+    local e = b.e
+    if qs[3] and qs[3].b == e and qs[3].kind == "alt" then e = qs[3].e end
+    for x = e, #g.t do
+      if g.t[x].kind ~= "punct" and not g.t[x].filler then return false end
+    end
+    return true
+  end }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
   -- "write 'trial 4 start' into the log", "put 'baseline done' in the log": quoted text for the log
   rule { "write put add enter", "echo", when = function(g, i)

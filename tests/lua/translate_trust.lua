@@ -4780,9 +4780,22 @@ do
   check(ex("Nile Bird 331 climb flight level 210"):match("^ASK") ~= nil, "no such flight")
 end
 
--- Cycle 30 (R63): "run x4": the clock's multiplier typed straight after "run", nothing after it
+-- Cycle 30 (R63): "run x4": the clock's multiplier typed straight after "run", nothing after it; "put ... back to
+-- normal speed" is the clock's rate
 do
   local _, ex = scene({ "CRE RAM77 B738 33.0 -7.0 090 FL200 280" })
   check_eq(ex("run x4"), "DTMULT 4")
   check(ex("run x4 RAM77"):match("^DTMULT 4$") == nil, "more after the multiplier")
+  -- "put the sim back to normal speed": the clock's rate, no aircraft put back; an aircraft put back still moves
+  check_eq(ex("put the sim back to normal speed"), "DTMULT 1")
+  check_eq(ex("put RAM77 back to 33.2 -7.1"), "MOVE RAM77 33.2 -7.1")
+end
+
+-- Cycle 30 (R63): "wind at LAT LON [level]" opening the request with nothing else: the wind there, shown (GETWIND);
+-- a direction and speed told after it set it (WIND)
+do
+  local _, ex = scene({ "CRE MSR808 A320 30.0 31.0 300 FL170 270" })
+  check_eq(ex("wind at 29.8 32.1 FL240"), "GETWIND 29.8 32.1 FL240")
+  check_eq(ex("winds over 31N 30E?"), "GETWIND 31 30")
+  check_eq(ex("wind at 29.8 32.1 FL240 from 310 at 30 kts"), "WIND 29.8 32.1 FL240 310 30")
 end
