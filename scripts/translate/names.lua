@@ -327,7 +327,7 @@ return {
     { "juneyao", "DKH" },
     { "csa lines", "CSA" },
     -- airlines of the Middle East and North Africa: ICAO telephony, and the airline's own name where
-    -- controllers there say it ("Nile Bird 201", "Nas 45", "Nouvelair 1420")
+    -- controllers there say it ("Nile Bird 201", "Nas 45", "Nouvelair 1420", "Royal Maroc 205")
     { "nile bird", "NIA" },
     { "nilebird", "NIA" },
     { "nile air", "NIA" },
@@ -335,6 +335,7 @@ return {
     { "flynas", "KNE" },
     { "nas", "KNE" },
     { "nouvelair", "LBT" },
+    { "royal maroc", "RAM" },
     { "arabia maroc", "MAC" },
     { "air arabia maroc", "MAC" },
     { "arabia egypt", "RBG" },

@@ -4771,11 +4771,14 @@ end
 -- "Nouvelair", "Arabia Maroc"); a flight number no aircraft flies is still asked about
 do
   local _, ex = scene({ "CRE NIA330 A320 30.0 31.0 300 FL170 270", "CRE KNE88 A320 24.5 46.5 010 FL250 280",
-    "CRE LBT702 A320 36.0 10.0 350 FL110 250", "CRE MAC41 A320 33.5 -7.5 030 FL130 260" })
+    "CRE LBT702 A320 36.0 10.0 350 FL110 250", "CRE MAC41 A320 33.5 -7.5 030 FL130 260",
+    "CRE RAM1190 E190 32.6 -7.9 030 6000 210" })
   check_eq(ex("Nile Bird 330 climb flight level 210"), "ALT NIA330 FL210")
   check_eq(ex("position of Nas 88"), "POS KNE88")
   check_eq(ex("Nouvelair 702 turn left heading 300"), "HDG LBT702 300 LEFT")
   check_eq(ex("Arabia Maroc 41 descend flight level 90"), "ALT MAC41 FL90")
+  check_eq(ex("move Royal Maroc 1190 to 33.1 -7.6"), "MOVE RAM1190 33.1 -7.6")
+  check_eq(ex("Royal Maroc 1190 turn right heading 060"), "HDG RAM1190 60 RIGHT")
   check_eq(ex("create Nouvelair 703 A320 at 36.2 10.1 heading 180 FL100 240"), "CRE LBT703 A320 36.2 10.1 180 FL100 240")
   check(ex("Nile Bird 331 climb flight level 210"):match("^ASK") ~= nil, "no such flight")
 end
