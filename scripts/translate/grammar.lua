@@ -2580,6 +2580,34 @@ function G:at_waypoint(s, spec)
           and (after.kind == "alt" or after.kind == "speed" or after.kind == "mach") and not self:in_reason(r.b) then
         return tied_to_waypoint(self, r)
       end
+      -- ("direct HHOOD, then at HHOOD climb FL190": a clause opened by "at" and the waypoint after "then" or a
+      -- comma ends there, its instruction the next one: an instruction tied to the waypoint)
+      local opener = self.t[r.b - 2] and (self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "@then_words"))
+      if r.b - 1 > s.trig and self:word(r.b - 1, "at") and opener and self:skip_fillers(r.e) >= s.e and s.e <= #self.t
+          and not self:in_reason(r.b) then
+        return tied_to_waypoint(self, r)
+      end
+    end
+    -- "direct MENLO, cross it at FL150", "direct SLI, cross at 10000": a crossing after the direct, of the one
+    -- waypoint it names, is the AT constraint there, a level or a speed said straight after "at"
+    local cr = s.intent == "direct" and self:find_word(s.trig, s.e, "cross") or s.e
+    local k = cr < s.e and self:skip_fillers(cr + 1) or s.e
+    if self:word(k, "it") then k = self:skip_fillers(k + 1) end
+    local qs = self:word(k, "at") and self:quantities(k + 1, s.e) or {}
+    local q = qs[1]
+    local kind = #qs == 1 and q.b == self:skip_fillers(k + 1) and self:skip_fillers(q.e) >= s.e
+      and ((q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and q.value <= 60000 and q.value % 100 == 0)) and "ALT"
+        or ((q.kind == "speed" or q.kind == "mach") and "SPD"))
+    local wps = kind and self:refs_in(s.b, cr, "waypoint") or {}
+    local ids = #wps == 1 and self:acids(s) or {}
+    if #ids == 1 then
+      local f = handlers.format
+      self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = cr }, spec)
+      self:take(q)
+      self:explain(cr, q.b)
+      self:emit(string.format("AT %s %s %s %s", ids[1], wps[1].name, kind,
+        kind == "ALT" and f.alt(q.value, q.fl) or (q.kind == "mach" and f.mach(q.value) or f.int(q.value))))
+      return true
     end
     return
   end

@@ -4738,3 +4738,13 @@ do
   check(ex("create CMP72, Boeing seven three seven dash eight, at 9 north 78 west, heading 090, FL240, 290 knots")
     :match("^ASK") ~= nil, "dash eight")
 end
+
+-- Cycle 30 (R64): a crossing said after a direct ("direct ALFA, cross it at FL150") is the AT constraint at
+-- the waypoint flown to; "direct ALFA, then at ALFA climb ..." (the instruction in the next clause) is asked
+-- about, never run at once
+do
+  local _, ex = scene({ "DEFWPT RIVKA 52.3 4.8", "CRE KLM88 A320 52.0 4.0 090 FL250 280", "ADDWPT KLM88 RIVKA" })
+  check_eq(ex("KLM88 go direct RIVKA, cross it at FL170"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT FL170")
+  check_eq(ex("KLM88 direct RIVKA, cross at 9000"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT 9000")
+  check(ex("KLM88 direct RIVKA, then at RIVKA descend FL120"):match("^ASK Should that happen at RIVKA") ~= nil, "then at")
+end
