@@ -810,9 +810,10 @@ local function written_forms(text)
       if not lat_min or not lon_min or lat_min >= 60 or lon_min >= 60 then return nil end
       return string.format("%.6f %s %.6f %s", tonumber(lat) + lat_min / 60, ns, tonumber(lon) + lon_min / 60, ew)
     end)
-  -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds; mm:ss or hh:mm stays as typed
-  text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)%f[^%d:]", function(h, m, sec)
-    return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds"
+  -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds, also before a colon that opens
+  -- what follows ("schedule at 00:15:00: ..."); mm:ss or hh:mm stays as typed
+  text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
+    return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds" .. colon
   end)
   -- "CPA half a mile", "a quarter of a mile": a fraction of a mile said in words is that many nautical miles
   text = text:gsub("%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)

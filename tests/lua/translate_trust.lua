@@ -4748,3 +4748,11 @@ do
   check_eq(ex("KLM88 direct RIVKA, cross at 9000"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT 9000")
   check(ex("KLM88 direct RIVKA, then at RIVKA descend FL120"):match("^ASK Should that happen at RIVKA") ~= nil, "then at")
 end
+
+-- Cycle 30 (R64): a simulation time typed h:mm:ss before a colon ("schedule at 00:15:00: ...") is the time of
+-- the SCHEDULE, never dropped
+do
+  local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
+  check_eq(ex("schedule at 00:20:00: KLM88 climb to FL300"), "SCHEDULE 00:20:00 ALT KLM88 FL300")
+  check_eq(ex("at 01:05:30: KLM88 speed 250"), "SCHEDULE 01:05:30 SPD KLM88 250")
+end
