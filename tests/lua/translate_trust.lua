@@ -4756,3 +4756,13 @@ do
   check_eq(ex("schedule at 00:20:00: KLM88 climb to FL300"), "SCHEDULE 00:20:00 ALT KLM88 FL300")
   check_eq(ex("at 01:05:30: KLM88 speed 250"), "SCHEDULE 01:05:30 SPD KLM88 250")
 end
+
+-- Cycle 30 (R64): metres per minute are a rate, never a level ("climb 1200 m/min": asked); a level in metres
+-- above FL450 (13716 m) is asked ("16000 m"), one below it converted
+do
+  local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
+  check(ex("have KLM88 climb 1200 m/min"):match("^ASK .*metres per min") ~= nil, "m/min")
+  check(ex("KLM88 climb 900 metres per minute"):match("^ASK") ~= nil, "metres per minute")
+  check(ex("KLM88 climb 16000 m"):match("^ASK Which altitude for KLM88") ~= nil, "16000 m")
+  check_eq(ex("KLM88 climb 11600 m"), "ALT KLM88 38058")
+end
