@@ -4766,3 +4766,12 @@ do
   check(ex("KLM88 climb 16000 m"):match("^ASK Which altitude for KLM88") ~= nil, "16000 m")
   check_eq(ex("KLM88 climb 11600 m"), "ALT KLM88 38058")
 end
+
+-- Cycle 30 (R64): fast-forward "until" a time typed after it ("until t=30 min") is asked for a duration, never
+-- run as fast-time until stopped; "until I say stop" is still FF alone
+do
+  local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
+  check(ex("FF until t=30 min"):match("^ASK For how long") ~= nil, "until t=30")
+  check(ex("fast forward until sim time 00:45:00"):match("^ASK") ~= nil, "until a clock time")
+  check_eq(ex("fast forward until I say stop"), "FF")
+end
