@@ -4575,6 +4575,10 @@ function M.translate(text, world)
       .. "and longitude do you mean?", dm) }
   end
   text = spelled_airports(typed_places(written_forms(text), world), world)
+  -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
+  -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
+  -- would run without it
+  local two_part = text:match("%f[%d:](%d%d?:[0-5]%d):?%f[^%d:]")
   -- type names with their digits said as words, where traffic is created (random traffic too)
   local lower = text:lower()
   -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen")
@@ -4679,6 +4683,10 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
+  end
+  if two_part and not g.ask and g.out[1] and not g.out[1]:find("^FF") then
+    g.ask = string.format("I have %s. Which time is '%s': hours and minutes, or minutes and seconds? Please "
+      .. "type it h:mm:ss.", table.concat(g.out, " ; "), two_part)
   end
   if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm, ignorable = g.ignorable } end
   if #g.out == 0 and note then return { commands = {}, note = note } end

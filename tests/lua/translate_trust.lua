@@ -4775,3 +4775,12 @@ do
   check(ex("fast forward until sim time 00:45:00"):match("^ASK") ~= nil, "until a clock time")
   check_eq(ex("fast forward until I say stop"), "FF")
 end
+
+-- Cycle 30 (R64): a time typed in two parts ("at 10:30", "schedule at 00:15: ...") is hours and minutes or
+-- minutes and seconds: asked, never dropped; "ff 2:30" is still fast-forward's own time
+do
+  local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
+  check(ex("at 11:45 KLM88 climb FL300"):match("^ASK .*'11:45'") ~= nil, "at hh:mm")
+  check(ex("schedule at 00:25: KLM88 speed 250"):match("^ASK .*'00:25'") ~= nil, "schedule at mm:ss:")
+  check(ex("ff 2:30"):match("^FF") ~= nil, "ff m:ss")
+end
