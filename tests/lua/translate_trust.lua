@@ -4784,3 +4784,11 @@ do
   check(ex("schedule at 00:25: KLM88 speed 250"):match("^ASK .*'00:25'") ~= nil, "schedule at mm:ss:")
   check(ex("ff 2:30"):match("^FF") ~= nil, "ff m:ss")
 end
+
+-- Cycle 30 (R64): "kill" before a route noun clears the route ("kill the whole route on KLM88"); "kill KLM88"
+-- alone still deletes the aircraft, and a waypoint named still deletes only it
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.3 4.8", "CRE KLM88 A320 52.0 4.0 090 FL250 280", "ADDWPT KLM88 ALFA" })
+  check_eq(ex("kill the entire route on KLM88"), "DELRTE KLM88")
+  check_eq(ex("kill ALFA from the route of KLM88"), "DELWPT KLM88 ALFA")
+end
