@@ -810,9 +810,10 @@ local function written_forms(text)
       if not lat_min or not lon_min or lat_min >= 60 or lon_min >= 60 then return nil end
       return string.format("%.6f %s %.6f %s", tonumber(lat) + lat_min / 60, ns, tonumber(lon) + lon_min / 60, ew)
     end)
-  -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds; mm:ss or hh:mm stays as typed
-  text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)%f[^%d:]", function(h, m, sec)
-    return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds"
+  -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds, also before a colon that opens
+  -- what follows ("schedule at 00:15:00: ..."); mm:ss or hh:mm stays as typed
+  text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
+    return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds" .. colon
   end)
   -- "CPA half a mile", "a quarter of a mile": a fraction of a mile said in words is that many nautical miles
   text = text:gsub("%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
@@ -2580,6 +2581,34 @@ function G:at_waypoint(s, spec)
           and (after.kind == "alt" or after.kind == "speed" or after.kind == "mach") and not self:in_reason(r.b) then
         return tied_to_waypoint(self, r)
       end
+      -- ("direct HHOOD, then at HHOOD climb FL190": a clause opened by "at" and the waypoint after "then" or a
+      -- comma ends there, its instruction the next one: an instruction tied to the waypoint)
+      local opener = self.t[r.b - 2] and (self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "@then_words"))
+      if r.b - 1 > s.trig and self:word(r.b - 1, "at") and opener and self:skip_fillers(r.e) >= s.e and s.e <= #self.t
+          and not self:in_reason(r.b) then
+        return tied_to_waypoint(self, r)
+      end
+    end
+    -- "direct MENLO, cross it at FL150", "direct SLI, cross at 10000": a crossing after the direct, of the one
+    -- waypoint it names, is the AT constraint there, a level or a speed said straight after "at"
+    local cr = s.intent == "direct" and self:find_word(s.trig, s.e, "cross") or s.e
+    local k = cr < s.e and self:skip_fillers(cr + 1) or s.e
+    if self:word(k, "it") then k = self:skip_fillers(k + 1) end
+    local qs = self:word(k, "at") and self:quantities(k + 1, s.e) or {}
+    local q = qs[1]
+    local kind = #qs == 1 and q.b == self:skip_fillers(k + 1) and self:skip_fillers(q.e) >= s.e
+      and ((q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and q.value <= 60000 and q.value % 100 == 0)) and "ALT"
+        or ((q.kind == "speed" or q.kind == "mach") and "SPD"))
+    local wps = kind and self:refs_in(s.b, cr, "waypoint") or {}
+    local ids = #wps == 1 and self:acids(s) or {}
+    if #ids == 1 then
+      local f = handlers.format
+      self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = cr }, spec)
+      self:take(q)
+      self:explain(cr, q.b)
+      self:emit(string.format("AT %s %s %s %s", ids[1], wps[1].name, kind,
+        kind == "ALT" and f.alt(q.value, q.fl) or (q.kind == "mach" and f.mach(q.value) or f.int(q.value))))
+      return true
     end
     return
   end
@@ -4546,6 +4575,10 @@ function M.translate(text, world)
       .. "and longitude do you mean?", dm) }
   end
   text = spelled_airports(typed_places(written_forms(text), world), world)
+  -- a time typed in two parts ("at 10:30", "schedule at 00:15: ..."): hours and minutes or minutes and
+  -- seconds, which squawk does not tell apart (FF reads "ff 1:30" itself); asked when another command
+  -- would run without it
+  local two_part = text:match("%f[%d:](%d%d?:[0-5]%d):?%f[^%d:]")
   -- type names with their digits said as words, where traffic is created (random traffic too)
   local lower = text:lower()
   -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen")
@@ -4650,6 +4683,10 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
+  end
+  if two_part and not g.ask and g.out[1] and not g.out[1]:find("^FF") then
+    g.ask = string.format("I have %s. Which time is '%s': hours and minutes, or minutes and seconds? Please "
+      .. "type it h:mm:ss.", table.concat(g.out, " ; "), two_part)
   end
   if g.ask then return { commands = {}, ask = g.ask, confirm = g.confirm, ignorable = g.ignorable } end
   if #g.out == 0 and note then return { commands = {}, note = note } end

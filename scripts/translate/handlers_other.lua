@@ -2575,6 +2575,14 @@ return function(H, f, compass)
       if told < till and self:word(told + 1, "you when") then
         till = self:word(told - 1, "i i'll ill we we'll") and told - 1 or told
       end
+      -- ("until t=20 min", "until 00:20": a time after "until" is when to stop, which squawk does not
+      -- turn into a duration: asked)
+      for i = till + 1, s.e - 1 do
+        if self.t[i].text:find("%d") then
+          return self:need("For how long should the simulation fast-forward? I heard 'until "
+            .. self:raw(till + 1, s.e) .. "': please give a duration.")
+        end
+      end
       self:explain(till, till + 1)
       for i = s.trig + 1, till - 1 do
         local t = self.t[i]

@@ -256,10 +256,17 @@ return function(H, f, wrap, compass)
     if fl and ft > 60000 then
       return self:need("Which flight level for " .. ids[1] .. "? I heard " .. f.alt(ft, true) .. ".")
     end
+    if not fl and q.kind == "alt" and self:word(q.e - 1, "@metres") and self:word(q.e, "per")
+        and self:word(q.e + 1, "min mins minute minutes sec secs second seconds s") then
+      -- "climb 1500 m/min": metres per unit of time are a rate, no level (VS is in ft/min): asked
+      return self:need("What altitude or vertical speed for " .. ids[1] .. "? I heard " .. f.int(q.number.value)
+        .. " metres per " .. self.t[q.e + 1].text .. ".")
+    end
     if not fl and q.kind == "alt" and self:word(q.e - 1, "@metres") then
       -- a level in metres is the whole number said, converted exactly (8100 m = 26575 ft); a spoken one
-      -- is whole hundreds of metres ("eight thousand one hundred metres"), else a word was misheard
-      if ft < 100 or ft > 60000 or (not q.number.typed and q.number.value % 100 ~= 0) then
+      -- is whole hundreds of metres ("eight thousand one hundred metres"), else a word was misheard; above
+      -- FL450 (13716 m) no airliner flies: "15000 m" is feet or a slip, asked
+      if ft < 100 or ft > 45000 or (not q.number.typed and q.number.value % 100 ~= 0) then
         return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(q.number.value) .. " metres.")
       end
     elseif not fl then

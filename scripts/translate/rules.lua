@@ -817,8 +817,9 @@ return function(intent, rule, words)
   -- "Virgin 3 delete 54 North 30 West": a position said in degrees straight after the verb, for an aircraft
   -- that flies, is a point of its route (no deletion of the aircraft)
   rule { "forget delete remove del", "delwpt", when = degrees_for_flying }
-  -- "clear the route of EWG7LP", "clear UAL485's route completely": the whole route, no waypoint named
-  rule { "clear delete remove erase wipe", "delrte", near = { 4, "@route_nouns" },
+  -- "clear the route of EWG7LP", "clear UAL485's route completely", "kill the whole route on ASA31": the
+  -- whole route, no waypoint named
+  rule { "clear delete remove erase wipe kill", "delrte", near = { 4, "@route_nouns" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
   -- "clr rte", "clr route" typed short, the noun ending the request ("clr route as filed" is no deletion)
   rule { "clr", "delrte", next = "@route_nouns",

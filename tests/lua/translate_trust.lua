@@ -4802,3 +4802,57 @@ do
   check_eq(ex("winds over 31N 30E?"), "GETWIND 31 30")
   check_eq(ex("wind at 29.8 32.1 FL240 from 310 at 30 kts"), "WIND 29.8 32.1 FL240 310 30")
 end
+
+-- Cycle 30 (R64): a crossing said after a direct ("direct ALFA, cross it at FL150") is the AT constraint at
+-- the waypoint flown to; "direct ALFA, then at ALFA climb ..." (the instruction in the next clause) is asked
+-- about, never run at once
+do
+  local _, ex = scene({ "DEFWPT RIVKA 52.3 4.8", "CRE KLM88 A320 52.0 4.0 090 FL250 280", "ADDWPT KLM88 RIVKA" })
+  check_eq(ex("KLM88 go direct RIVKA, cross it at FL170"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT FL170")
+  check_eq(ex("KLM88 direct RIVKA, cross at 9000"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT 9000")
+  check(ex("KLM88 direct RIVKA, then at RIVKA descend FL120"):match("^ASK Should that happen at RIVKA") ~= nil, "then at")
+end
+
+-- Cycle 30 (R64): a simulation time typed h:mm:ss before a colon ("schedule at 00:15:00: ...") is the time of
+-- the SCHEDULE, never dropped
+do
+  local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
+  check_eq(ex("schedule at 00:20:00: KLM88 climb to FL300"), "SCHEDULE 00:20:00 ALT KLM88 FL300")
+  check_eq(ex("at 01:05:30: KLM88 speed 250"), "SCHEDULE 01:05:30 SPD KLM88 250")
+end
+
+-- Cycle 30 (R64): metres per minute are a rate, never a level ("climb 1200 m/min": asked); a level in metres
+-- above FL450 (13716 m) is asked ("16000 m"), one below it converted
+do
+  local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
+  check(ex("have KLM88 climb 1200 m/min"):match("^ASK .*metres per min") ~= nil, "m/min")
+  check(ex("KLM88 climb 900 metres per minute"):match("^ASK") ~= nil, "metres per minute")
+  check(ex("KLM88 climb 16000 m"):match("^ASK Which altitude for KLM88") ~= nil, "16000 m")
+  check_eq(ex("KLM88 climb 11600 m"), "ALT KLM88 38058")
+end
+
+-- Cycle 30 (R64): fast-forward "until" a time typed after it ("until t=30 min") is asked for a duration, never
+-- run as fast-time until stopped; "until I say stop" is still FF alone
+do
+  local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
+  check(ex("FF until t=30 min"):match("^ASK For how long") ~= nil, "until t=30")
+  check(ex("fast forward until sim time 00:45:00"):match("^ASK") ~= nil, "until a clock time")
+  check_eq(ex("fast forward until I say stop"), "FF")
+end
+
+-- Cycle 30 (R64): a time typed in two parts ("at 10:30", "schedule at 00:15: ...") is hours and minutes or
+-- minutes and seconds: asked, never dropped; "ff 2:30" is still fast-forward's own time
+do
+  local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
+  check(ex("at 11:45 KLM88 climb FL300"):match("^ASK .*'11:45'") ~= nil, "at hh:mm")
+  check(ex("schedule at 00:25: KLM88 speed 250"):match("^ASK .*'00:25'") ~= nil, "schedule at mm:ss:")
+  check(ex("ff 2:30"):match("^FF") ~= nil, "ff m:ss")
+end
+
+-- Cycle 30 (R64): "kill" before a route noun clears the route ("kill the whole route on KLM88"); "kill KLM88"
+-- alone still deletes the aircraft, and a waypoint named still deletes only it
+do
+  local _, ex = scene({ "DEFWPT ALFA 52.3 4.8", "CRE KLM88 A320 52.0 4.0 090 FL250 280", "ADDWPT KLM88 ALFA" })
+  check_eq(ex("kill the entire route on KLM88"), "DELRTE KLM88")
+  check_eq(ex("kill ALFA from the route of KLM88"), "DELWPT KLM88 ALFA")
+end
