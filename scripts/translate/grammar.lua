@@ -3856,7 +3856,8 @@ end
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
--- instruction word, "and"/"then", or punctuation other than a comma.
+-- instruction word, "and"/"then", or punctuation other than a comma (a class
+-- with `one_value`: to its first number, inclusive).
 function G:not_simulated()
   local found, seen, after = {}, {}, {}
   local i = 1
@@ -3882,6 +3883,10 @@ function G:not_simulated()
         local x = self.t[e]
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
         if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
+          break
+        end
+        if class.one_value and x.kind == "number" then
+          e = e + 1
           break
         end
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of

@@ -590,7 +590,8 @@ return {
   -- what squawk does not simulate: a phrase starts at one of `words` (with
   -- one of `near` within `window` words after it, 4 by default, when given) and runs to the end
   -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
-  -- while, so an instruction after "then" waits for it and is asked about, never sent now
+  -- while, so an instruction after "then" waits for it and is asked about, never sent now; `one_value`:
+  -- the phrase ends at its first number ("QNH 1021, 180 knots": the speed is an instruction)
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -607,7 +608,7 @@ return {
     { what = "approach clearances", words = "visual", near = { "runway", "approach" } },
     { what = "approach clearances", words = "intercept established join",
       near = { "localizer", "localiser", "glideslope", "ils", "final" } },
-    { what = "altimeter settings", words = "altimeter qnh qfe" },
+    { what = "altimeter settings", words = "altimeter qnh qfe", one_value = true },
     -- "JetBlue 1123, wind 310 at 15, reduce 190": the surface wind told to the aircraft addressed, no
     -- setting of the simulation's wind (said with no callsign before it, "wind 310 at 15" is WIND's)
     { what = "wind reports", words = "wind", near = { "#number" }, window = 1, after_callsign = true },

@@ -4856,3 +4856,12 @@ do
   check_eq(ex("kill the entire route on KLM88"), "DELRTE KLM88")
   check_eq(ex("kill ALFA from the route of KLM88"), "DELWPT KLM88 ALFA")
 end
+
+-- An altimeter setting is its word and one value: what follows it after a comma is read ("descend 3000 feet
+-- QNH 1021, 180 knots" keeps its speed, never dropped); a bare number after it is still asked about
+do
+  local _, ex = scene({ "CRE NOZ77 DH8D 60.2 5.1 090 FL100 250" })
+  check_eq(ex("NOZ77 descend 3000 feet QNH 1021, 180 knots"), "ALT NOZ77 3000 ; SPD NOZ77 180")
+  check_eq(ex("NOZ77 descend 3000 feet QNH 1021"), "ALT NOZ77 3000")
+  check(ex("NOZ77 descend 3000 feet QNH 1021, 180"):match("^ASK") ~= nil, "a bare number after the setting")
+end
