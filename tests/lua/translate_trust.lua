@@ -9,13 +9,13 @@ local function said(r)
 end
 -- A simulator set up by TrafScript lines (each must run), and a function that translates a text
 -- offline against it, returning what squawk says: "ASK ..." or the commands joined by " ; ".
-local function scene(lines)
-  local s = squawk.sim.new()
+local function set_up(s, lines)
   for _, line in ipairs(lines) do
     check(s:exec(line), line)
   end
   return s, function(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
 end
+local function scene(lines) return set_up(squawk.sim.new(), lines) end
 -- The same over BlueSky's navdata at ../shared/bluesky/navdata; nil after saying which checks ("why")
 -- are skipped when it is absent.
 local function navscene(lines, why)
@@ -24,11 +24,10 @@ local function navscene(lines, why)
     print("skipped: " .. why .. " need BlueSky's navdata at ../shared/bluesky/navdata")
     return nil
   end
-  for _, line in ipairs(lines) do
-    check(s:exec(line), line)
-  end
-  return s, function(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+  return set_up(s, lines)
 end
+-- What squawk said (`said`'s text) is a question; `why` names the case in a failure.
+local function asked(text, why) check(text:match("^ASK") ~= nil, why) end
 
 local sim = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
     "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
@@ -254,7 +253,7 @@ check(r.ask ~= nil and r.ask:find("KLM1234", 1, true) ~= nil, said(r))
 -- last letters unheard, letters that spell none) is asked about, an exact one is taken
 local lone = squawk.sim.new()
 check(lone:exec("CRE ACA851 A320 52 4 090 FL200 250"))
-local function one(text) return said(graph.translate(text, { sim = lone, mode = "offline" })) end
+local _, one = set_up(lone, {})
 check(one("air canada eight one five climb FL300"):find("^ASK Did you mean ACA851%? I heard ACA81") ~= nil, "transposed")
 check_eq(one("air canada eight five climb FL300"), "ASK Did you mean ACA851? I heard ACA85.")
 check_eq(one("ACA815 climb FL300"), "ASK Did you mean ACA851? There is no ACA815.")
@@ -305,7 +304,7 @@ if #sim:airports_named("schiphol") == 1 then
   local us = squawk.sim.new()
   check(us:exec("CRE JBU1116 A320 37.75 -122.55 300 FL150 280"))
   check(us:exec("CRE FDX1288 B763 40.6 -73.9 090 FL150 280"))
-  local function ustr(text) return said(graph.translate(text, { sim = us, mode = "offline" })) end
+  local _, ustr = set_up(us, {})
   check_eq(ustr("JetBlue 1116 proceed direct Point Reyes"), "ADDWPT JBU1116 PYE ; DIRECT JBU1116 PYE")
   check_eq(ustr("FedEx 1288 proceed direct Canarsie"), "ADDWPT FDX1288 CRI ; DIRECT FDX1288 CRI")
   -- (Canarsie is 2000 NM from JBU1116: no navaid of that name near it)
@@ -327,13 +326,13 @@ if #sim:airports_named("schiphol") == 1 then
   check_eq(ustr("move JetBlue 1116 to Point Reyes at FL120"), "MOVE JBU1116 PYE FL120")
   -- with no traffic: an airport of that name first, else the one navaid of that name anywhere
   local empty = squawk.sim.new()
-  local function etr(text) return said(graph.translate(text, { sim = empty, mode = "offline" })) end
+  local _, etr = set_up(empty, {})
   check_eq(etr("create UAL9 a B738 at Canarsie heading 090 FL200 280 knots"), "CRE UAL9 B738 CRI 90 FL200 280")
   check_eq(etr("create KLM5 a B738 at Schiphol heading 090 FL100 250 knots"), "CRE KLM5 B738 EHAM 90 FL100 250")
   local uk = squawk.sim.new()
   check(uk:exec("CRE BAW12 A320 52.2 -1.2 090 FL150 280"))
   check(uk:exec("CRE LOG5 DH8D 56.2 -3.7 045 FL70 220"))
-  local function ukt(text) return said(graph.translate(text, { sim = uk, mode = "offline" })) end
+  local _, ukt = set_up(uk, {})
   check_eq(ukt("Speedbird 12 destination Birmingham"), "DEST BAW12 EGBB")
   check_eq(ukt("Logan 5 resume own navigation direct Perth"), "ADDWPT LOG5 PTH ; DIRECT LOG5 PTH")
   -- a city said before the name of an airport near the aircraft, naming none itself ("Bergen Flesland",
@@ -347,7 +346,7 @@ if #sim:airports_named("schiphol") == 1 then
   -- East" is the ZUE VOR, not Zurich airport and a word more)
   local ch = squawk.sim.new()
   check(ch:exec("CRE SWR12 A320 47.3 8.3 090 FL150 280"))
-  local function cht(text) return said(graph.translate(text, { sim = ch, mode = "offline" })) end
+  local _, cht = set_up(ch, {})
   check(cht("swiss one two proceed direct zurich east"):find("DIRECT SWR12 ZUE", 1, true) ~= nil)
   check(cht("swiss one two proceed direct zurich"):find("DIRECT SWR12 LSZH", 1, true) ~= nil)
   -- an airport meant by its three-letter code beside its VOR (JFK -> KJFK), near or far; a code
@@ -858,7 +857,7 @@ do
   local lab = squawk.sim.new()
   check(lab:exec("CRE SAS421 A320 55.9 12.2 180 FL140 280"))
   check(lab:exec("CRE NAX3412 B38M 55.2 12.9 340 FL120 270"))
-  local function lt(text) return said(graph.translate(text, { sim = lab, mode = "offline" })) end
+  local _, lt = set_up(lab, {})
   check_eq(lt("conflict detection ON, reso MVP, rmethv off, rfach 1.05"), "ASAS ON ; RESO MVP ; RMETHV OFF ; RFACH 1.05")
   check_eq(lt("DT 0.2 and DTMULT 4"), "DT 0.2 ; DTMULT 4")
   check_eq(lt("DTMULT 4 and DT 0.2"), "DTMULT 4 ; DT 0.2")
@@ -1088,7 +1087,7 @@ do
   check(rs:exec("DEFWPT WP1 52.1 4.5"))
   check(rs:exec("DEFWPT WP2 52.2 4.8"))
   check(rs:exec("ADDWPT AB12 WP1"))
-  local function rt(text) return said(graph.translate(text, { sim = rs, mode = "offline" })) end
+  local _, rt = set_up(rs, {})
   check_eq(rt("AB12 forget WP1"), "DELWPT AB12 WP1")
   check(rt("AB12 forget WP2"):find("^ASK") ~= nil, "a waypoint off the route is not forgotten")
 end
@@ -1151,7 +1150,7 @@ do
   local ms = squawk.sim.new()
   check(ms:exec("CRE MSR777 B738 30.9 30.8 135 FL260 280"))
   check(ms:exec("CRE FDB22 B738 25.0 56.9 250 FL280 270"))
-  local function mt(text) return said(graph.translate(text, { sim = ms, mode = "offline" })) end
+  local _, mt = set_up(ms, {})
   check_eq(mt("Egyptair triple seven, climb flight level two eight zero"), "ALT MSR777 FL280")
   check_eq(mt("Sky Dubai double two, descend flight level two four zero"), "ALT FDB22 FL240")
   check_eq(mt("set the simulation to double speed"), "DTMULT 2")
@@ -1177,7 +1176,7 @@ do
   local la = squawk.sim.new()
   check(la:exec("CRE ARG1303 B738 -34.6 -58.4 90 FL200 280"))
   check(la:exec("CRE GLO1120 B738 -23.4 -46.5 90 FL200 280"))
-  local function lt(text) return said(graph.translate(text, { sim = la, mode = "offline" })) end
+  local _, lt = set_up(la, {})
   check_eq(lt("Aerolineas Argentinas one three zero three, descend flight level one two zero"), "ALT ARG1303 FL120")
   check_eq(lt("Gol one one two zero, turn right heading zero niner zero"), "HDG GLO1120 90 RIGHT")
   check_eq(lt("create Aerosky one one five, A320, at -33.4 -70.8, heading 350, FL100, 250 knots"),
@@ -1501,7 +1500,7 @@ do
   local st = squawk.sim.new()
   check(st:exec("CRE OAL240 A320 38 23.5 090 FL280 280"))
   check(st:exec("CRE N52RG C172 38.2 23.7 090 3500 100"))
-  local function s(text) return said(graph.translate(text, { sim = st, mode = "offline" })) end
+  local _, s = set_up(st, {})
   check_eq(s("could you get the Olympic to drop 4000 feet please"), "ALT OAL240 24000")
   check_eq(s("OAL240 drop to 4000 feet"), "ALT OAL240 4000")
   check_eq(s("N52RG go up another thousand feet"), "ALT N52RG 4500")
@@ -1608,7 +1607,6 @@ end
 do
   local lab, ex = scene({ "CRE NAX12 B738 60.1 11.0 090 FL120 280", "CRE ICE44 B752 60.3 12.0 270 FL90 290",
       "CRE FIN7 A320 60.0 11.5 180 FL200 300", "DEFWPT OSLOA 60.2 11.2", "DEFWPT OSLOB 60.4 11.4" })
-  local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
   -- remarks after a dash, in brackets, after a comma
   check_eq(ex("NAX12 descend FL80 - we'd like it under ICE44's band for this run"), "ALT NAX12 FL80")
   check_eq(ex("FIN7 right 40 degrees - stress test of the bank model"), "HDG FIN7 220 RIGHT")
@@ -1628,15 +1626,15 @@ do
   -- (another aircraft with "as well" or "same for" gets the instruction too: G:same_for)
   check_eq(ex("NAX12 climb FL200 - ICE44 as well"), "ALT NAX12 FL200 ; ALT ICE44 FL200")
   check_eq(ex("NAX12 climb FL200, same for ICE44"), "ALT NAX12 FL200 ; ALT ICE44 FL200")
-  asked("NAX12 climb FL200 - and ICE44 descend")
-  asked("NAX12 climb FL200 (not ICE44)")
-  asked("NAX12 climb FL200 - don't let it level off")
-  asked("NAX12 climb FL200 (via OSLOA)")
-  asked("NAX12 climb FL200 - when ICE44 passes")
-  asked("reason: ICE44, NAX12 descend FL100")
-  asked("NAX12 climb FL200 - we want ICE44 lower")
-  asked("NAX12 climb FL200, we want ICE44 down")
-  asked("NAX12 climb FL200 - hold ICE44")
+  asked(ex("NAX12 climb FL200 - and ICE44 descend"), "NAX12 climb FL200 - and ICE44 descend")
+  asked(ex("NAX12 climb FL200 (not ICE44)"), "NAX12 climb FL200 (not ICE44)")
+  asked(ex("NAX12 climb FL200 - don't let it level off"), "NAX12 climb FL200 - don't let it level off")
+  asked(ex("NAX12 climb FL200 (via OSLOA)"), "NAX12 climb FL200 (via OSLOA)")
+  asked(ex("NAX12 climb FL200 - when ICE44 passes"), "NAX12 climb FL200 - when ICE44 passes")
+  asked(ex("reason: ICE44, NAX12 descend FL100"), "reason: ICE44, NAX12 descend FL100")
+  asked(ex("NAX12 climb FL200 - we want ICE44 lower"), "NAX12 climb FL200 - we want ICE44 lower")
+  asked(ex("NAX12 climb FL200, we want ICE44 down"), "NAX12 climb FL200, we want ICE44 down")
+  asked(ex("NAX12 climb FL200 - hold ICE44"), "NAX12 climb FL200 - hold ICE44")
   -- self-corrections
   check_eq(ex("FIN7 direct... no wait, heading 200 for now, we'll send it back to the route later"), "HDG FIN7 200")
   check_eq(ex("NAX12 direct... sorry, turn left heading 010 and climb FL150"), "HDG NAX12 10 LEFT ; ALT NAX12 FL150")
@@ -1644,8 +1642,8 @@ do
   check_eq(ex("FIN7 descend FL150 and turn right heading 250... actually no, just the descent"), "ALT FIN7 FL150")
   check_eq(ex("FIN7 descend FL150 and turn right heading 250, sorry, only the turn"), "HDG FIN7 250 RIGHT")
   check_eq(ex("FIN7 descend FL150 and direct... no, just the descent"), "ALT FIN7 FL150")
-  asked("FIN7 descend FL150 and turn right heading 250... actually no, just the first one")
-  asked("FIN7 descend FL150 and turn right heading 250, sorry, only the speed")
+  asked(ex("FIN7 descend FL150 and turn right heading 250... actually no, just the first one"), "FIN7 descend FL150 and turn right heading 250... actually no, just the first one")
+  asked(ex("FIN7 descend FL150 and turn right heading 250, sorry, only the speed"), "FIN7 descend FL150 and turn right heading 250, sorry, only the speed")
   check_eq(ex("FIN7 turn left... I mean right heading 250"), "HDG FIN7 250 RIGHT")
   check_eq(ex("NAX12 direct OSLOA... no, make it heading 030"), "HDG NAX12 30")
   check_eq(ex("NAX12 climb FL150, no wait, descend FL100"), "ALT NAX12 FL100")
@@ -1657,10 +1655,10 @@ do
   check_eq(ex("for ICE44, climb FL300"), "ALT ICE44 FL300")
   check_eq(ex("ICE44, NAX12 speed 320"), "SPD ICE44 320 ; SPD NAX12 320")
   -- a remark that wants something "to" be done by an aircraft or an airline is asked about
-  asked("NAX12 climb FL190, we want the Icelandair to descend")
-  asked("NAX12 climb FL190, I need ICE44 to turn")
-  asked("NAX12 climb FL190, we want Finnair to slow down")
-  asked("NAX12 climb FL190, we want Finnair lower")
+  asked(ex("NAX12 climb FL190, we want the Icelandair to descend"), "NAX12 climb FL190, we want the Icelandair to descend")
+  asked(ex("NAX12 climb FL190, I need ICE44 to turn"), "NAX12 climb FL190, I need ICE44 to turn")
+  asked(ex("NAX12 climb FL190, we want Finnair to slow down"), "NAX12 climb FL190, we want Finnair to slow down")
+  asked(ex("NAX12 climb FL190, we want Finnair lower"), "NAX12 climb FL190, we want Finnair lower")
   check_eq(ex("NAX12 climb FL190, I want the Icelandair to catch him"), "ALT NAX12 FL190")
   -- a type said again after a correction replaces it
   check_eq(ex("create TST1 B738... sorry A320, at 60.2 11.6 heading 200 FL100 250 kts"),
@@ -1668,8 +1666,8 @@ do
   check_eq(ex("create TST1 type A320, I mean B752, at 60.2 11.6 heading 200 FL100 250 kts"),
     "CRE TST1 B752 60.2 11.6 200 FL100 250")
   -- a climb or descent after a creation's level with no level of its own is not dropped
-  asked("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts going to climb")
-  asked("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts, will descend")
+  asked(ex("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts going to climb"), "create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts going to climb")
+  asked(ex("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts, will descend"), "create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts, will descend")
   check_eq(ex("create TST1 A320 at 60.2 11.6 heading 200 FL100 250 kts then climb FL200"),
     "CRE TST1 A320 60.2 11.6 200 FL100 250 ; ALT TST1 FL200")
 end
@@ -1721,12 +1719,11 @@ end
 do
   local lab, ex = scene({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100",
       "DEFWPT LANDR 42.3 -87.5" })
-  local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
   check_eq(ex("Delta 889 increase your rate of descent to two thousand five hundred"), "VS DAL889 -2500")
   check_eq(ex("DAL889 reduce your rate of climb to 500 fpm"), "VS DAL889 500")
   check_eq(ex("DAL889 reduce rate of descent to 1000 feet per minute"), "VS DAL889 -1000")
-  asked("N731RS maintain VFR at or below 4500")
-  asked("N731RS maintain VFR on top")
+  asked(ex("N731RS maintain VFR at or below 4500"), "N731RS maintain VFR at or below 4500")
+  asked(ex("N731RS maintain VFR on top"), "N731RS maintain VFR on top")
   check_eq(ex("add LANDR to Delta 889's route at 15000 and 250 knots"), "ADDWPT DAL889 LANDR 15000 250")
   check_eq(ex("DAL889 add LANDR to the route at 12000"), "ADDWPT DAL889 LANDR 12000")
   check_eq(ex("need a United triple seven, UAL9, B77W, FL260, 310 knots, heading 265, 41.98 -87.4"),
@@ -1742,7 +1739,7 @@ do
     "CRE POE345 DH8D 43.55 -79.2 260 6000 210")
   check_eq(ex("create FFT221 A320 at 42.1 -88.1 heading 350, give him 8000 and 220 knots"),
     "CRE FFT221 A320 42.1 -88.1 350 8000 220")
-  asked("create FFT222 A320 at 42.1 -88.1 heading 350, 8000, 9000, 220 knots")
+  asked(ex("create FFT222 A320 at 42.1 -88.1 heading 350, 8000, 9000, 220 knots"), "create FFT222 A320 at 42.1 -88.1 heading 350, 8000, 9000, 220 knots")
   check_eq(ex("creating Westjet 611, B737, 43.75 -80.20, heading 100, FL140, 270"), "CRE WJA611 B737 43.75 -80.2 100 FL140 270")
   check_eq(ex("now spawning SWA12, B737, 42.5 -88.5, heading 180, FL200, 280 knots"), "CRE SWA12 B737 42.5 -88.5 180 FL200 280")
   check_eq(ex("set the seed to 7 before creating anything"), "SEED 7")
@@ -1758,7 +1755,6 @@ end
 do
   local lab, ex = scene({ "CRE EIN105 A332 53.0 -13.0 270 FL360 M.82", "CRE TAP237 A21N 38.0 -25.0 240 FL360 M.79",
       "CRE WJA3 B38M 55.8 -7.0 280 FL340 300" })
-  local function asked(text) check(ex(text):find("^ASK") ~= nil) end
   check_eq(ex("Shamrock one zero five, Shanwick, climb flight level three eight zero"), "ALT EIN105 FL380")
   check_eq(ex("WestJet 3, Scottish Control, turn right heading 310"), "HDG WJA3 310 RIGHT")
   -- (a unit word that is an instruction word elsewhere names the unit: no POS for "Information")
@@ -1774,21 +1770,21 @@ do
   check_eq(ex("Air Portugal 237 Santa Maria, descend FL340"), "ALT TAP237 FL340")
   check_eq(ex("Delhi, WestJet 3, climb FL360"), "ALT WJA3 FL360")
   check_eq(ex("Shamrock 105 Dar es Salaam control, climb FL380"), "ALT EIN105 FL380")
-  asked("Shamrock 105 Ryanair, climb FL380")
+  asked(ex("Shamrock 105 Ryanair, climb FL380"), "Shamrock 105 Ryanair, climb FL380")
   -- a place word anywhere else is still asked about
-  asked("Shamrock 105 climb FL380 Shanwick")
-  asked("Shamrock 105, Shanwick climb FL380")
+  asked(ex("Shamrock 105 climb FL380 Shanwick"), "Shamrock 105 climb FL380 Shanwick")
+  asked(ex("Shamrock 105, Shanwick climb FL380"), "Shamrock 105, Shanwick climb FL380")
   check_eq(ex("Shamrock 105, unable FL380, maintain flight level three six zero"), "ALT EIN105 FL360")
-  asked("Shamrock 105 unable FL380")
-  asked("Shamrock 105, if unable FL380, maintain FL360")
+  asked(ex("Shamrock 105 unable FL380"), "Shamrock 105 unable FL380")
+  asked(ex("Shamrock 105, if unable FL380, maintain FL360"), "Shamrock 105, if unable FL380, maintain FL360")
   -- a position no command carries is asked about, also beside a relative word or "by"
-  asked("Shamrock 105, climb FL380, cross 30 West at or above FL370")
-  asked("Shamrock 105, climb to reach FL380 by 20 West")
-  asked("Shamrock 105 unable direct MALOT, turn left heading 250")
+  asked(ex("Shamrock 105, climb FL380, cross 30 West at or above FL370"), "Shamrock 105, climb FL380, cross 30 West at or above FL370")
+  asked(ex("Shamrock 105, climb to reach FL380 by 20 West"), "Shamrock 105, climb to reach FL380 by 20 West")
+  asked(ex("Shamrock 105 unable direct MALOT, turn left heading 250"), "Shamrock 105 unable direct MALOT, turn left heading 250")
   check_eq(ex("WJA3 climb to FL360, not above"), "ALT WJA3 FL360")
-  asked("WJA3 climb FL380, not above FL370")
+  asked(ex("WJA3 climb FL380, not above FL370"), "WJA3 climb FL380, not above FL370")
   check_eq(ex("Air Portugal 237, Mach decimal seven eight approved"), "SPD TAP237 M0.78")
-  asked("Shamrock one zero five, report level")
+  asked(ex("Shamrock one zero five, report level"), "Shamrock one zero five, report level")
   check_eq(ex("EIN105 report your level"), "POS EIN105")
   check_eq(ex("WJA3 turn left 30 degrees for weather, advise when able to resume"), "HDG WJA3 250 LEFT")
   check_eq(ex("WJA3 climb FL380 at 1500ft/min"), "ALT WJA3 FL380 1500")
@@ -1796,15 +1792,15 @@ do
     "CRE EIN123 A333 52 -15 270 FL370 M0.82")
   check_eq(ex("add an eastbound, EIN77, A333, at 52 North 30 West, heading 080, FL350"),
     "CRE EIN77 A333 52 -30 80 FL350")
-  asked("add a westbound, EIN77, A333, at 52 North 30 West, heading 080, FL350")
+  asked(ex("add a westbound, EIN77, A333, at 52 North 30 West, heading 080, FL350"), "add a westbound, EIN77, A333, at 52 North 30 West, heading 080, FL350")
   check_eq(ex("Shamrock 105, climb FL380, at 20 West contact Shanwick on 127.9"), "ALT EIN105 FL380")
   check_eq(ex("add Shamrock 22 as an A330, same position as Air Portugal 237, FL320, Mach .80, heading 240"),
     "CRE EIN22 A332 TAP237 240 FL320 M0.8")
   check_eq(ex("Shamrock 105 vectors to avoid the danger area, turn left heading 250"), "HDG EIN105 250 LEFT")
   -- what the run should reach, after a clock rate or a jump in time: a remark
   check_eq(ex("run at four times speed until the eastbounds reach the boundary"), "DTMULT 4")
-  asked("fast forward until Shamrock 105 reaches the boundary")
-  asked("fast forward two minutes until not conflicting")
+  asked(ex("fast forward until Shamrock 105 reaches the boundary"), "fast forward until Shamrock 105 reaches the boundary")
+  asked(ex("fast forward two minutes until not conflicting"), "fast forward two minutes until not conflicting")
 end
 -- oceanic points said in degrees: the named point the navdata holds there (NAT "55N30"), the one of
 -- several the route holds, else asked; raw coordinates where the command takes them; a name several
@@ -1842,7 +1838,6 @@ end
 -- said and then written as the same id is one aircraft
 do
   local lab, ex = scene({ "CRE DAL889 B738 42.0 -88.0 090 FL200 280", "CRE N731RS C172 42.2 -88.2 180 3000 100" })
-  local function asked(text) local r = ex(text) check(r:find("^ASK") ~= nil, text .. " -> " .. r) end
   check_eq(ex("Frontier 12 is an A320, 9000 ft, 240 kt, at 42.1N 87.9W heading 180"),
     "CRE FFT12 A320 42.1 -87.9 180 9000 240")
   check_eq(ex("ok now Alaska 33, a B739, 41.7 -87.6, heading 020, FL200 and 290"),
@@ -1860,9 +1855,9 @@ do
   check_eq(ex("spawn United 5K, that's UAL5K, a B738 at 41.8 -88.0 heading 010 FL160 250 knots"),
     "CRE UAL5K B738 41.8 -88 10 FL160 250")
   -- digits that are no designator's, said after the creation, are asked about
-  asked("create UAL455 B739 at 40.5 north 104.1 west, FL190 heading 225 speed 280 739")
+  asked(ex("create UAL455 B739 at 40.5 north 104.1 west, FL190 heading 225 speed 280 739"), "create UAL455 B739 at 40.5 north 104.1 west, FL190 heading 225 speed 280 739")
   -- a lead-in that instructs is no lead-in
-  asked("please descend UAL88 B738 at 41.6 -88.4, FL230 heading 045 at 280 kt")
+  asked(ex("please descend UAL88 B738 at 41.6 -88.4, FL230 heading 045 at 280 kt"), "please descend UAL88 B738 at 41.6 -88.4, FL230 heading 045 at 280 kt")
   -- a remark in a sentence of its own, "one" standing for the aircraft in a remark, the experimenter's own
   -- doing after "then I'll", what a setting is for ("for when we ..."): set aside; one that instructs is asked
   check_eq(ex("create SKW9 E175 at 42.2 -87.8 heading 300 FL110 250 knots. Second arrival of the evening wave."),
@@ -1873,14 +1868,14 @@ do
     "CRE SKW11 E175 42.2 -87.8 300 FL110 250")
   check_eq(ex("fast forward 2 minutes then I'll explain the display to the visitors"), "FF 120")
   check_eq(ex("set the sim rate to 3 for when we reconvene"), "DTMULT 3")
-  asked("DAL889 climb FL240. Then N731RS.")
+  asked(ex("DAL889 climb FL240. Then N731RS."), "DAL889 climb FL240. Then N731RS.")
   check_eq(ex("DAL889 climb FL240. N731RS as well."), "ALT DAL889 FL240 ; ALT N731RS FL240")
-  asked("fast forward 2 minutes then I'll climb DAL889")
-  asked("cre SKW12 E175 42.2 -87.8 300 FL110 250 - the one at FL300")
+  asked(ex("fast forward 2 minutes then I'll climb DAL889"), "fast forward 2 minutes then I'll climb DAL889")
+  asked(ex("cre SKW12 E175 42.2 -87.8 300 FL110 250 - the one at FL300"), "cre SKW12 E175 42.2 -87.8 300 FL110 250 - the one at FL300")
   -- a type, maker or family said before the callsign of a flying aircraft of that type describes it
   check_eq(ex("where's the Cessna N731RS now"), "POS N731RS")
   check_eq(ex("delete the Skyhawk N731RS"), "DEL N731RS")
-  asked("delete the Baron N731RS")
+  asked(ex("delete the Baron N731RS"), "delete the Baron N731RS")
   -- requests for information: a flight plan pulled up, "route for X?", an aircraft shown in a clause of its own,
   -- the positions of two aircraft
   check_eq(ex("pull up Delta 889's flight plan"), "LISTRTE DAL889")
@@ -1893,17 +1888,17 @@ do
   check_eq(ex("Delta 889 slow to 240... no, make it 230"), "SPD DAL889 230")
   check_eq(ex("DAL889 descend to 11 thousand ft, sorry, 12 thousand"), "ALT DAL889 12000")
   check_eq(ex("DAL889 climb FL260 until further advised... scratch that, just climb FL260"), "ALT DAL889 FL260")
-  asked("DAL889 turn left heading 200... no, make it 190 and 230 knots")
+  asked(ex("DAL889 turn left heading 200... no, make it 190 and 230 knots"), "DAL889 turn left heading 200... no, make it 190 and 230 knots")
   -- a fix or point said new or named at a position is defined; the plural lists several
   check_eq(ex("new fix MRG2 at 42.5 N 87.9 W"), "DEFWPT MRG2 42.5 -87.9")
   check_eq(ex("we need a reference point named HOLDPT at 42.0N, 88.0W"), "DEFWPT HOLDPT 42 -88")
   check_eq(ex("waypoints: EN1 at 42.1 -88.1 and EN2 at 42.2 -88.2"), "DEFWPT EN1 42.1 -88.1 ; DEFWPT EN2 42.2 -88.2")
-  asked("DAL889 fix at 42.5 N 87.9 W")
+  asked(ex("DAL889 fix at 42.5 N 87.9 W"), "DAL889 fix at 42.5 N 87.9 W")
   -- a position written with a slash; a compass point that agrees with the heading said describes it
   check_eq(ex("new ac: SKW14 E175 42.35/-87.95 hdg 050 FL190 spd 275"), "CRE SKW14 E175 42.35 -87.95 50 FL190 275")
   check_eq(ex("create SKW15 E175 at 42.3 -87.9, northbound, so heading 010, FL150, 260 knots"),
     "CRE SKW15 E175 42.3 -87.9 10 FL150 260")
-  asked("create SKW16 E175 at 42.3 -87.9, southbound, heading 010, FL150, 260 knots")
+  asked(ex("create SKW16 E175 at 42.3 -87.9, southbound, heading 010, FL150, 260 knots"), "create SKW16 E175 at 42.3 -87.9, southbound, heading 010, FL150, 260 knots")
   -- typed turn shorthand before "hdg"; a Pilatus by its name (PCnn -> Pilatus PC-nn)
   check_eq(ex("dal889 lft hdg 100"), "HDG DAL889 100 LEFT")
   check_eq(ex("DAL889 rgt hdg 300"), "HDG DAL889 300 RIGHT")
@@ -2001,7 +1996,7 @@ do
         "CRE SWA22 B737 32.5 -97.0 090 9000 250" }) do
       check(us:exec(line))
     end
-    local function ex(text) return said(graph.translate(text, { sim = us, mode = "offline" })) end
+    local _, ex = set_up(us, {})
     check_eq(ex("destination for Envoy 3410 is Midway"), "DEST ENY3410 KMDW")
     check_eq(ex("jetblue six fifteen change destination to kennedy"), "DEST JBU615 KJFK")
     check_eq(ex("JBU615 destination la guardia"), "DEST JBU615 KLGA")
@@ -2101,7 +2096,7 @@ do
   -- "v/s" for the vertical speed, "clr rte" for clearing the route, written abbreviations of known words
   check_eq(ex("afr56bq v/s 1500 down"), "VS AFR56BQ -1500")
   check_eq(ex("klm88v clr rte"), "DELRTE KLM88V")
-  check(ex("klm88v clr route as filed"):match("^ASK") ~= nil)
+  asked(ex("klm88v clr route as filed"))
   check_eq(ex("afr56bq inc spd 300"), "SPD AFR56BQ 300")
   check_eq(ex("afr56bq hdg 200 vect ils"), "HDG AFR56BQ 200")
   check_eq(ex("afr56bq r 20 degs"), "HDG AFR56BQ 110 RIGHT")
@@ -2127,7 +2122,7 @@ do
     check_eq(ex("cre ewg77 a320 at betus hdg 120 fl240 spd 280"), "CRE EWG77 A320 BETUS 120 FL240 280")
     check_eq(ex("create ewg78 a320 over spy, hdg 260, fl200, 260 kts"), "CRE EWG78 A320 SPY 260 FL200 260")
     -- a capital anywhere leaves the line as typed
-    check(ex("AFR56BQ add betus"):match("^ASK") ~= nil, ex("AFR56BQ add betus"))
+    asked(ex("AFR56BQ add betus"), ex("AFR56BQ add betus"))
   else
     print("skipped: lowercase place names need navdata (SQUAWK_NAVDATA)")
   end
@@ -2138,7 +2133,7 @@ end
 do
   local east = squawk.sim.new()
   check(east:exec("CRE CPA520 A333 34.9 138.5 060 FL300 280"))
-  local function ex(text) return said(graph.translate(text, { sim = east, mode = "offline" })) end
+  local _, ex = set_up(east, {})
   if #east:airports_named("munchen") == 1 then
     check_eq(ex("Cathay 520 destination Haneda, RJTT"), "DEST CPA520 RJTT")
     check_eq(ex("CPA520 destination Haneda (RJTY)"), "DEST CPA520 RJTY")
@@ -2212,7 +2207,7 @@ do
     "HDG UAL1562 270 LEFT ; HDG ASA1294 250 LEFT")
   check_eq(ex("Alaska 1294 and United 1562 reduce speed to 250 and 220 knots respectively"),
     "SPD ASA1294 250 ; SPD UAL1562 220")
-  check(ex("Alaska 1294 and United 1562 descend to FL150, FL140 and FL130 respectively"):match("^ASK") ~= nil)
+  asked(ex("Alaska 1294 and United 1562 descend to FL150, FL140 and FL130 respectively"))
   check_eq(ex("create FDX1400 MD-11 at 33.9 north 117.5 west heading 270 FL190 300 knots"),
     "CRE FDX1400 MD11 33.9 -117.5 270 FL190 300")
   check(ex("create UPS2120 Boeing 767 at 32.9 north 97.4 west heading 180 FL220 300 knots"):match("^ASK Which variant") ~= nil)
@@ -2256,17 +2251,17 @@ do
   check(ex("speedbird four to turn left heading one zero zero") ~= "HDG BAW42 100 LEFT", "BAW4 flies")
   check_eq(ex("speedbird42 turn right heading two seven zero"), "HDG BAW42 270 RIGHT")
   check_eq(ex("wizzair2lp turn right heading two seven zero"), "HDG WZZ2LP 270 RIGHT")
-  check(ex("speedbird43 turn right heading two seven zero"):match("^ASK") ~= nil, "no BAW43 flies")
+  asked(ex("speedbird43 turn right heading two seven zero"), "no BAW43 flies")
   check_eq(ex("wizz air two lima papa direct toe bix"), "DIRECT WZZ2LP TOBIX")
   check_eq(ex("wizz air two lima papa proceed direct as bin"), "DIRECT WZZ2LP ASBIN")
-  check(ex("wizz air two lima papa direct toe bax"):match("^ASK") ~= nil, "a near miss is asked about")
+  asked(ex("wizz air two lima papa direct toe bax"), "a near miss is asked about")
   -- a digit's homophone inside a level's or heading's three spoken digits is that digit; a level heard as
   -- "zero" alone is asked about
   check_eq(ex("wizz air two lima papa climb flight level three for zero"), "ALT WZZ2LP FL340")
   check_eq(ex("lufthansa four hundred turn left heading won eight zero"), "HDG DLH400 180 LEFT")
   check_eq(ex("lufthansa four hundred turn right heading two ate zero"), "HDG DLH400 280 RIGHT")
-  check(ex("lufthansa four hundred descend flight level for zero"):match("^ASK") ~= nil, "no level 0")
-  check(ex("lufthansa four hundred descend flight level to for zero"):match("^ASK") ~= nil, "FL240 or FL040")
+  asked(ex("lufthansa four hundred descend flight level for zero"), "no level 0")
+  asked(ex("lufthansa four hundred descend flight level to for zero"), "FL240 or FL040")
 end
 
 -- Cycle 19: a navaid's name of three words or more said whole is that navaid, the navdata's short form of it
@@ -2274,7 +2269,7 @@ end
 do
   local mad = squawk.sim.new()
   check(mad:exec("CRE AEA051 B738 40.0 -3.5 350 FL120 250"))
-  local function ex(text) return said(graph.translate(text, { sim = mad, mode = "offline" })) end
+  local _, ex = set_up(mad, {})
   if #mad:navaids_named("s s reyes", 40, -3.5, 100) == 1 then
     check_eq(ex("europa zero five one proceed direct san sebastian de los reyes"), "ADDWPT AEA051 SSY ; DIRECT AEA051 SSY")
     check_eq(ex("AEA051 direct San Sebastian de los Reyes, then climb FL240"),
@@ -2297,7 +2292,7 @@ do
       "ADDWPT SBI1042 VAKNX" }) do
     check(s43:exec(line))
   end
-  local function ex(text) return said(graph.translate(text, { sim = s43, mode = "offline" })) end
+  local _, ex = set_up(s43, {})
   check(ex("Aeroflot 1700 descend to height 600 metres on QFE"):match("^ASK.*QFE") ~= nil, "a QFE height is asked")
   check(ex("SBI1042 descend height 900 m QFE"):match("^ASK.*QFE") ~= nil, "a QFE height is asked")
   check_eq(ex("SBI1042 descend 4000 feet QNH 1003"), "ALT SBI1042 4000")
@@ -2306,18 +2301,18 @@ do
   check_eq(ex("China Southern 6023 descend flight level 8100 metres"), "ALT CSN6023 26575")
   check_eq(ex("CSN6023 occupy flight level 9500 m"), "ALT CSN6023 31168")
   check_eq(ex("China Southern 6023, climb 10700 metres, flight level three five one"), "ALT CSN6023 FL351")
-  check(ex("China Southern 6023, climb 10700 metres, flight level 330"):match("^ASK") ~= nil, "they differ")
+  asked(ex("China Southern 6023, climb 10700 metres, flight level 330"), "they differ")
   check_eq(ex("Siberian 1042 occupy FL110"), "ALT SBI1042 FL110")
   check_eq(ex("Georgian 751, occupy 3600 metres"), "ALT TGZ751 11811")
   check_eq(ex("Siberian 1042 climb FL160 rate not less 1500 feet per minute"), "ALT SBI1042 FL160 1500")
   check_eq(ex("Georgian 751 maintain flight level 170 until further"), "ALT TGZ751 FL170")
   check_eq(ex("Georgian 751 descend FL150, not above speed 250"), "ALT TGZ751 FL150 ; SPD TGZ751 250")
   check_eq(ex("Siberian 1042 keep speed 280 until VAKNX"), "SPD SBI1042 280")
-  check(ex("Siberian 1042 speed 220 till VAKNX then reduce 180"):match("^ASK") ~= nil, "'then' waits")
-  check(ex("Siberian 1042 maintain 170 knots until VAKNX then contact tower"):match("^ASK") ~= nil, "'then' waits")
+  asked(ex("Siberian 1042 speed 220 till VAKNX then reduce 180"), "'then' waits")
+  asked(ex("Siberian 1042 maintain 170 knots until VAKNX then contact tower"), "'then' waits")
   check_eq(ex("Aeroflot 1700, be at PETKX flight level eight zero"), "AT AFL1700 PETKX ALT FL80")
   check_eq(ex("Siberian 1042 after VAKNX expect vectors, now keep speed 280"), "SPD SBI1042 280")
-  check(ex("Siberian 1042 after VAKNX descend FL100"):match("^ASK") ~= nil, "a descent after a place is asked")
+  asked(ex("Siberian 1042 after VAKNX descend FL100"), "a descent after a place is asked")
   check_eq(ex("Aeroflot seventeen hundred turn left heading 120"), "HDG AFL1700 120 LEFT")
   check_eq(ex("What is position of Siberian 1042?"), "POS SBI1042")
   check_eq(ex("instructor here, remove Georgian 751, he is landed"), "DEL TGZ751")
@@ -2327,11 +2322,8 @@ do
   check_eq(ex("create UZB3021 B752 at TKTX heading 080 altitude 0 speed 0"), "CRE UZB3021 B752 TKTX 80 0 0")
   local bru = squawk.sim.new()
   if #bru:airports_named("yuzhny") == 1 then
-    for _, line in ipairs({ "CRE THY398 A321 53.1 28.9 320 FL240 290", "DEFWPT DELOX 53.3 28.5",
-        "ADDWPT THY398 DELOX" }) do
-      check(bru:exec(line))
-    end
-    local function nb(text) return said(graph.translate(text, { sim = bru, mode = "offline" })) end
+    local _, nb = set_up(bru, { "CRE THY398 A321 53.1 28.9 320 FL240 290", "DEFWPT DELOX 53.3 28.5",
+      "ADDWPT THY398 DELOX" })
     check_eq(nb("Turkish 398, after DELOX proceed to Minsk, set destination UMMS"), "DEST THY398 UMMS")
     check_eq(nb("make aircraft UZB3021 Boeing 757 at Tashkent airport, heading 080, altitude zero, speed zero"),
       "CRE UZB3021 B752 UTTT 80 0 0")
@@ -2346,7 +2338,7 @@ do
   for _, line in ipairs({ "CRE FIN7 A320 60.0 24.0 090 FL260 280", "CRE KLM1153 B738 59.5 10.5 040 FL170 280" }) do
     check(nb:exec(line))
   end
-  local function ex(text) return said(graph.translate(text, { sim = nb, mode = "offline" })) end
+  local _, ex = set_up(nb, {})
   local function asks(text, part)
     local got = ex(text)
     check(got:match("^ASK") ~= nil and got:find(part, 1, true) ~= nil, text .. " -> " .. got)
@@ -2378,7 +2370,7 @@ do
   check(up:exec("CRE EZY4DN A320 57.0 23.0 140 FL150 280"))
   check_eq(said(graph.translate("Ryanair 3UP descend FL90", { sim = up, mode = "offline" })), "ALT RYR3UP FL90")
   check_eq(said(graph.translate("Easy 4DN climb FL200", { sim = up, mode = "offline" })), "ALT EZY4DN FL200")
-  check(said(graph.translate("Ryanair 3UP climb FL90", { sim = up, mode = "offline" })):match("^ASK") ~= nil,
+  asked(said(graph.translate("Ryanair 3UP climb FL90", { sim = up, mode = "offline" })),
     "a climb to a lower level is still asked about")
   -- the clock sped up by a factor typed "x2"; a person in the room opens a remark after a comma
   check_eq(ex("speed the sim up x2"), "DTMULT 2")
@@ -2391,7 +2383,7 @@ do
       "CRE ICE306 B752 61.2 9.2 100 FL280 290" }) do
     check(sas:exec(line))
   end
-  local function rb(text) return said(graph.translate(text, { sim = sas, mode = "offline" })) end
+  local _, rb = set_up(sas, {})
   check_eq(rb("descend FL120, Finnair 7"), "ALT FIN7 FL120")
   check_eq(rb("climb to FL300 Finnair 7"), "ALT FIN7 FL300")
   -- an airline's name squawk does not know, before the new callsign it opens, names the new aircraft's airline
@@ -2407,13 +2399,13 @@ end
 do
   local os = squawk.sim.new()
   check(os:exec("CRE KLM1153 B738 59.5 10.5 040 FL170 280"))
-  local function ex(text) return said(graph.translate(text, { sim = os, mode = "offline" })) end
+  local _, ex = set_up(os, {})
   if #os:airports_named("gardermoen") == 1 then
     check_eq(ex("KLM1153 origin Amsterdam, destination Oslo Gardermoen"), "ORIG KLM1153 EHAM ; DEST KLM1153 ENGM")
     check_eq(ex("KLM1153 destination Oslo"), "DEST KLM1153 ENGM")
     check_eq(ex("KLM1153 origin Copenhagen"), "ORIG KLM1153 EKCH")
     -- (Stockholm Tullinge, ESCN, is closed: Arlanda or Bromma is asked about, never the closed field)
-    check(ex("KLM1153 destination Stockholm"):match("^ASK") ~= nil, "no closed airport")
+    asked(ex("KLM1153 destination Stockholm"), "no closed airport")
     -- (a name borne only far away, CYXU in Canada, is never offered where the region's airports lie by
     -- navaids of the name: London's are asked about)
     local london = ex("KLM1153 destination London")
@@ -2432,7 +2424,7 @@ do
       "CRE QTR8 B77W 52.4 4 090 FL350 280" }) do
     check(tm:exec(line))
   end
-  local function ex(text) return said(graph.translate(text, { sim = tm, mode = "offline" })) end
+  local _, ex = set_up(tm, {})
   check_eq(ex("AI, climb KLM1234 to FL340"), "ALT KLM1234 FL340")
   check_eq(ex("teammate: RYR5GH speed 250"), "SPD RYR5GH 250")
   check_eq(ex("hey AI, KLM1234 heading 200"), "HDG KLM1234 200")
@@ -2440,15 +2432,15 @@ do
   check_eq(ex("ok teammate, can you descend the KLM to FL200 for me?"), "ALT KLM1234 FL200")
   check_eq(ex("the Qatar Airways climb FL370"), "ALT QTR8 FL370")
   -- (no concrete instruction: asked, never a clearance invented; "AI" in the callsign position is no label)
-  check(ex("teammate, what's your plan for the KLM?"):match("^ASK") ~= nil, "the teammate's plan is no route")
-  check(ex("AI, you handle the Ryanair from now on"):match("^ASK") ~= nil, "no clearance invented")
-  check(ex("AI 101 climb FL300"):match("^ASK") ~= nil, "a callsign AI 101 is no addressee")
-  check(ex("the AI climbs KLM1234"):match("^ASK") ~= nil, "the AI named inside the request is asked about")
+  asked(ex("teammate, what's your plan for the KLM?"), "the teammate's plan is no route")
+  asked(ex("AI, you handle the Ryanair from now on"), "no clearance invented")
+  asked(ex("AI 101 climb FL300"), "a callsign AI 101 is no addressee")
+  asked(ex("the AI climbs KLM1234"), "the AI named inside the request is asked about")
   check_eq(ex("run it for 90 seconds"), "FF 90")
   check_eq(ex("set the sim running"), "OP")
   check_eq(ex("place an easyJet, EZY12, A320, at 52 4 heading 090 FL200 250 knots"), "CRE EZY12 A320 52 4 90 FL200 250")
   check_eq(ex("freeze the sim, participant needs a break"), "HOLD")
-  check(ex("divert KLM1234 around the weather"):match("^ASK") ~= nil, "a diversion to no airport is asked about")
+  asked(ex("divert KLM1234 around the weather"), "a diversion to no airport is asked about")
   if #tm:airports_named("eindhoven") == 1 then
     check_eq(ex("divert KLM1234 to Eindhoven"), "DEST KLM1234 EHEH")
     check_eq(ex("RYR5GH diverting to Rotterdam"), "DEST RYR5GH EHRD")
@@ -2467,7 +2459,7 @@ do
       "DEFWPT KISMO 6.9 3.9", "ADDWPT ARA512 KISMO" }) do
     check(af:exec(line))
   end
-  local function ex(text) return said(graph.translate(text, { sim = af, mode = "offline" })) end
+  local _, ex = set_up(af, {})
   check_eq(ex("ARA512 rejoin KISMO"), "DIRECT ARA512 KISMO")
   check_eq(ex("ARA512 descend FL150, rejoin the route at KISMO"), "ALT ARA512 FL150 ; DIRECT ARA512 KISMO")
   check_eq(ex("ARA512 you are rejoining your track at KISMO"), "DIRECT ARA512 KISMO")
@@ -2498,7 +2490,7 @@ end
 do
   local ns = squawk.sim.new()
   check(ns:exec("CRE SWG412 B738 42.9 -80.1 040 FL260 280"))
-  local function tr(text) return said(graph.translate(text, { sim = ns, mode = "offline" })) end
+  local _, tr = set_up(ns, {})
   check(not tr("SWG412 speed one zero thousand two hundred and fifty knots"):match("SPD SWG412 10250"),
     "no speed of thousands of knots")
   check_eq(tr("sunwing four twelve descend and maintain one to thousand"), "ALT SWG412 12000")
@@ -2516,10 +2508,10 @@ end
 do
   local ps = squawk.sim.new()
   check(ps:exec("CRE UAL9 B738 40.5 -74.0 090 FL300 280"))
-  local function tp(text) return said(graph.translate(text, { sim = ps, mode = "offline" })) end
+  local _, tp = set_up(ps, {})
   check_eq(tp("move united nine to four zero point eight north seven four point two west"), "MOVE UAL9 40.8 -74.2")
   check_eq(tp("united nine descend and maintain flight level too one zero"), "ALT UAL9 FL210")
-  check(tp("united nine descend and maintain flight level to eight zero"):match("^ASK") ~= nil,
+  asked(tp("united nine descend and maintain flight level to eight zero"),
     "FL280 or FL080 both lie below FL300: asked")
 end
 
@@ -2527,7 +2519,7 @@ end
 do
   local as = squawk.sim.new()
   check(as:exec("CRE WJA123 B38M 48.6 -122.3 300 FL200 280"))
-  local function ta(text) return said(graph.translate(text, { sim = as, mode = "offline" })) end
+  local _, ta = set_up(as, {})
   if as:airport_class("CYVR") ~= "" then
     check_eq(ta("give westjet one twenty three destination c y v r"), "DEST WJA123 CYVR")
     check_eq(ta("westjet one twenty three origin k s e a"), "ORIG WJA123 KSEA")
@@ -2543,7 +2535,7 @@ end
 do
   local hs = squawk.sim.new()
   check(hs:exec("CRE SWR12 A320 47.55 8.30 90 FL240 280"))
-  local function hi(text) return said(graph.translate(text, { sim = hs, mode = "offline" })) end
+  local _, hi = set_up(hs, {})
   check_eq(hi("SWR12 go higher to 36000 and turn right 30 degrees"), "ALT SWR12 36000 ; HDG SWR12 120 RIGHT")
   check_eq(hi("take SWR12 higher to FL360"), "ALT SWR12 FL360")
   check_eq(hi("SWR12 go lower to 8000 and turn left 20 degrees"), "ALT SWR12 8000 ; HDG SWR12 70 LEFT")
@@ -2886,7 +2878,7 @@ do
   check_eq(ex("could you turn our test aircraft left heading 200"), "HDG TEST07 200 LEFT")
   check_eq(ex("the test plane should climb to FL140, please"), "ALT TEST07 FL140")
   check_eq(ex("please set the test aircraft's speed to 230 knots"), "SPD TEST07 230")
-  check(ex("climb the test to FL140"):match("^ASK") ~= nil, "the letters with no aircraft noun name nothing")
+  asked(ex("climb the test to FL140"), "the letters with no aircraft noun name nothing")
   -- "the SAS one": "one" with no digit after it is the pronoun, no flight number 1
   check_eq(ex("could you bring the SAS one down to FL90"), "ALT SAS1421 FL90")
   check_eq(ex("the SAS one, turn it right heading 090 please"), "HDG SAS1421 90 RIGHT")
@@ -2916,13 +2908,13 @@ do
   check_eq(ex("please write 'block 2 begins' into the log"), "ECHO block 2 begins")
   -- a question about a setting, a remark after it; an instruction after it still asks
   check_eq(ex("Is conflict detection on at the moment? The alerts seem quiet."), "ASAS")
-  check(ex("Is conflict detection on? Please switch it on if not."):match("^ASK") ~= nil, "a condition after it")
+  asked(ex("Is conflict detection on? Please switch it on if not."), "a condition after it")
   -- a trailing level condition with its own subject; said with a participle it is read as before
   check_eq(ex("slow the Lufthansa to 240 knots once it reaches FL250 on the way down"),
     "ATALT DLH4AX FL250 SPD DLH4AX 240")
   check_eq(ex("DLH4AX descend FL200, reduce to 240 knots once it passes FL250"),
     "ALT DLH4AX FL200 ; ATALT DLH4AX FL250 SPD DLH4AX 240")
-  check(ex("pause the sim once it reaches FL100"):match("^ASK") ~= nil, "a trailing condition with no aircraft's command")
+  asked(ex("pause the sim once it reaches FL100"), "a trailing condition with no aircraft's command")
   -- CRECONFS's closest point, said in words, and "a conflicting aircraft"
   check_eq(ex("create a conflicting aircraft against the Lufthansa: INT5, an A320, at 45 degrees, 1 mile at "
     .. "closest point, 200 seconds to loss of separation"), "CRECONFS INT5 A320 DLH4AX 45 1 200")
@@ -2930,11 +2922,11 @@ end
 do
   local _, ex = scene({ "CRE TEST07 B738 59.4 18.7 300 FL100 250", "CRE TEST08 B738 59.5 18.7 300 FL100 250",
     "CRE SAS1421 A320 55 12 010 FL120 280", "CRE SAS88 A320 56 12 010 FL160 280" })
-  check(ex("could you turn our test aircraft left heading 200"):match("^ASK") ~= nil, "two test aircraft")
+  asked(ex("could you turn our test aircraft left heading 200"), "two test aircraft")
   check(ex("bring the SAS one down to FL90"):match("^ASK Which SAS") ~= nil, "two SAS")
   -- the airline said again with its flight number in the same sentence names that one
   check_eq(ex("the SAS up north, SAS 88, should climb to FL200"), "ALT SAS88 FL200")
-  check(ex("the SAS should climb to FL200, SAS88 too"):match("^ASK") ~= nil, "an instruction between")
+  asked(ex("the SAS should climb to FL200, SAS88 too"), "an instruction between")
 end
 do
   local _, ex = navscene({ "CRE BTI1AA BCS3 57.5 20.0 120 FL350 280", "ADDWPT BTI1AA EDERA", "ADDWPT BTI1AA EDISA",
@@ -2952,17 +2944,17 @@ do
     -- a remark after a query naming places is its reason; one with an instruction or a value is not
     check_eq(ex("where is the Finnair now? has it passed NATAN already?"), "POS FIN2BB")
     check_eq(ex("show me the airBaltic's route, I want to check that EDERA comes first"), "LISTRTE BTI1AA")
-    check(ex("where is the Finnair? is it at FL300 yet?"):match("^ASK") ~= nil, "a value in the remark")
+    asked(ex("where is the Finnair? is it at FL300 yet?"), "a value in the remark")
     -- a condition at a waypoint of the route is an AT constraint; a heading there, or a place off the
     -- route, is asked
     check_eq(ex("when the Finnair passes MILTA, it should climb to FL370"), "AT FIN2BB MILTA ALT FL370")
     check_eq(ex("once the Finnair gets to MILTA, reduce to 250 knots"), "AT FIN2BB MILTA SPD 250")
     check(ex("when the Finnair passes MILTA, turn it left heading 180"):match("^ASK Should that happen at MILTA")
       ~= nil, "a heading at a waypoint")
-    check(ex("when the Finnair passes EDERA, climb to FL370"):match("^ASK") ~= nil, "off the route")
+    asked(ex("when the Finnair passes EDERA, climb to FL370"), "off the route")
     check_eq(ex("the Finnair should climb to FL370 and, when it is at MILTA, slow to 250 knots"),
       "ALT FIN2BB FL370 ; AT FIN2BB MILTA SPD 250")
-    check(ex("the Finnair should climb to FL370 and, when it is at EDERA, slow to 250 knots"):match("^ASK") ~= nil,
+    asked(ex("the Finnair should climb to FL370 and, when it is at EDERA, slow to 250 knots"),
       "a condition mid-request at a place off the route")
     -- a place said after a correction replaces the one before it (it was dropped in silence)
     check_eq(ex("the Finnair direct NATAN, correction, MILTA"), "DIRECT FIN2BB MILTA")
@@ -2973,7 +2965,7 @@ do
     -- "when it's there" after a direct-to: a level or a speed at that place; a heading there asks
     check_eq(ex("the Finnair direct MILTA, and when it's there climb to FL370"),
       "DIRECT FIN2BB MILTA ; AT FIN2BB MILTA ALT FL370")
-    check(ex("the Finnair direct MILTA and when it's there turn left heading 100"):match("^ASK") ~= nil,
+    asked(ex("the Finnair direct MILTA and when it's there turn left heading 100"),
       "a heading once there")
     -- a place in a reason is no condition at it
     check_eq(ex("could the airBaltic fly 260 knots and the Finnair 280 knots, so they reach EDISA together"),
@@ -3036,7 +3028,7 @@ do
   check_eq(ex("conflict on SAS7: TX8, A319, dpsi 60, cpa 1"), "ASK In how many seconds should TX8 lose separation with SAS7?")
   check_eq(ex("set up a crossing conflict for SAS7: intruder TX11, A321, 90 deg, cpa 1, tlosh 300"),
     "CRECONFS TX11 A321 SAS7 90 1 300")
-  check(ex("there is a conflict between SAS7 and PH101"):match("^ASK") ~= nil, "a conflict described sets up nothing")
+  asked(ex("there is a conflict between SAS7 and PH101"), "a conflict described sets up nothing")
 end
 
 -- The researcher's settings and remarks: "mvp" alone as an item of a list of detection settings is RESO MVP
@@ -3046,14 +3038,14 @@ do
   local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
   check_eq(ex("zoner 4, dtlook 200 and mvp"), "ZONER 4 ; DTLOOK 200 ; RESO MVP")
   check_eq(ex("asas on, mvp"), "ASAS ON ; RESO MVP")
-  check(ex("mvp"):match("^ASK") ~= nil, "the method named alone")
+  asked(ex("mvp"), "the method named alone")
   check_eq(ex("PZ 5 NM; DH 1000 ft; lookahead 300 s; MVP"), "ZONER 5 ; ZONEDH 1000 ; DTLOOK 300 ; RESO MVP")
   check_eq(ex("cd statebased, cr mvp, pz 5"), "ASAS STATEBASED ; RESO MVP ; ZONER 5")
   -- "mvp" is accounted for only by a command that carries it: never dropped
   check_eq(ex("dtlook 300 with mvp"), "ASK I have DTLOOK 300. What does 'mvp' mean?")
   check_eq(ex("let MVP use vertical speed in the resolutions"), "RMETHV V/S")
   check_eq(ex("note to self: seed 9 diverged. dt 0.5"), "DT 0.5")
-  check(ex("note to myself: try pz 4 next"):match("^ASK") ~= nil, "a note to self runs nothing")
+  asked(ex("note to myself: try pz 4 next"), "a note to self runs nothing")
   check_eq(ex("note for the log: pz 4 from now"), "ECHO pz 4 from now")
   -- "after a resolution ... resume nav once past CPA" says when navigation resumes (RESNAV), no method
   check_eq(ex("after a resolution aircraft should resume nav once past CPA"), "RESNAV PASTCPA")
@@ -3069,7 +3061,7 @@ do
   check_eq(ex("move SAS7 to 50.2 6.1, FL310, heading 200, 290"), "MOVE SAS7 50.2 6.1 FL310 200 290")
   check_eq(ex("move SAS7 to 50.2 6.1, FL310, 290"), "ASK To move SAS7 I did not place '290'. Is it an altitude, heading or speed?")
   check_eq(ex("reset PH101 to 51.0, 3.0, FL220, heading 090, 260 kts"), "MOVE PH101 51 3 FL220 90 260")
-  check(ex("reset PH101"):match("^ASK") ~= nil, "reset with an aircraft and no position")
+  asked(ex("reset PH101"), "reset with an aircraft and no position")
 end
 
 -- Southern European controllers' and instructors' phrasing (R49): "make it N" after a value corrects it;
@@ -3079,16 +3071,16 @@ do
   local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300",
     "DEFWPT ROSSA 51.2 3.4" })
   check_eq(ex("PH101 speed 240 knots, make it 230"), "SPD PH101 230")
-  check(ex("PH101 speed 240 knots, make it 230 and climb FL300"):match("^ASK") ~= nil, "a value not said alone")
+  asked(ex("PH101 speed 240 knots, make it 230 and climb FL300"), "a value not said alone")
   check_eq(ex("PH101 speed 240 knots, make it 230 please"), "SPD PH101 230")
   -- "minimum clean speed" names the speed by the configuration: the value said is flown, none said is asked
   check_eq(ex("PH101 reduce minimum clean speed, 210 knots"), "SPD PH101 210")
-  check(ex("PH101 reduce minimum clean speed"):match("^ASK") ~= nil, "no speed said")
+  asked(ex("PH101 reduce minimum clean speed"), "no speed said")
   -- the new callsign's airline by its name before it ("put an ITA, ITY77 A320, ...": ITA Airways)
   check_eq(ex("put an ITA, ITY77 A320, at 43.9 N 7.9 E, heading 240, FL130, 270 kt"), "CRE ITY77 A320 43.9 7.9 240 FL130 270")
   -- a wind's direction in degrees and speed in knots said after its position and level, no "from"
   check_eq(ex("wind at 51.5 north 3.5 east, FL150, 250 degrees 30 knots"), "WIND 51.5 3.5 FL150 250 30")
-  check(ex("wind at 51.5 north 3.5 east, 250 degrees"):match("^ASK") ~= nil, "no wind speed")
+  asked(ex("wind at 51.5 north 3.5 east, 250 degrees"), "no wind speed")
   -- the new callsign's airline said before it in a lead-in ("first aircraft Air Malta AMC412 A320 ...")
   check_eq(ex("first aircraft Speedbird BAW9 A320 51.5N 3.5E heading 100 level 190 speed 280"),
     "CRE BAW9 A320 51.5 3.5 100 FL190 280")
@@ -3099,7 +3091,7 @@ do
   check_eq(ex("add ROSSA to PH101"), "ADDWPT PH101 ROSSA")
   check_eq(ex("instructor: add ROSSA for SAS7"), "ADDWPT SAS7 ROSSA")
   check_eq(ex("add ROSSA to PH101 and descend FL200"), "ADDWPT PH101 ROSSA ; ALT PH101 FL200")
-  check(ex("add ROSSA to PH101 after SAS7"):match("^ASK") ~= nil, "a clause going on past the aircraft")
+  asked(ex("add ROSSA to PH101 after SAS7"), "a clause going on past the aircraft")
 end
 
 -- A station named like an airline's telephony in a hand-off ("contact Brussels one two seven decimal one") is
@@ -3108,7 +3100,7 @@ do
   local _, ex = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300" })
   check_eq(ex("PH101 descend FL200, contact Brussels one two seven decimal one"), "ALT PH101 FL200")
   check_eq(ex("put PH101 at the same flight level as SAS7"), "ALT PH101 FL300")
-  check(ex("PH101 descend FL200, BEL127 climb FL250"):match("^ASK") ~= nil, "an aircraft no one flies, instructed")
+  asked(ex("PH101 descend FL200, BEL127 climb FL250"), "an aircraft no one flies, instructed")
 end
 
 -- A pair created in one request by a researcher: a title before the colon ("symmetric geometry:") names the
@@ -3121,9 +3113,9 @@ do
   check(ex("write a note in the log: trial 4 begins"):match("^ECHO") ~= nil, "an instruction before a colon is no title")
   check_eq(ex("overtake: TX1 A320 at 52.0 4.0 heading 090 and TX2 A320 at 52.0 4.5 heading 090, both FL300, TX1 at 300 kt"),
     "ASK Which of the new aircraft do the values after 'both' belong to?")
-  check(ex("don't: PH101 climb FL300"):match("^ASK") ~= nil, "a negation before the colon is no title")
+  asked(ex("don't: PH101 climb FL300"), "a negation before the colon is no title")
   check_eq(ex("move PH101 closer: 51.2 3.3, FL220, heading 090, 250"), "MOVE PH101 51.2 3.3 FL220 90 250")
-  check(ex("move PH101 closer"):match("^ASK") ~= nil, "closer, no position")
+  asked(ex("move PH101 closer"), "closer, no position")
 end
 
 -- Two aircraft swap their levels, headings or speeds ("swap the levels of A and B", "A and B swap headings"):
@@ -3131,7 +3123,7 @@ end
 do
   local s = scene({ "CRE PH101 A320 51.0 3.0 090 FL220 260", "CRE SAS7 B738 50.0 6.0 180 FL300 300",
     "CRE TX1 A320 50.5 4.0 270 FL260 280" })
-  local function ex(text) return said(graph.translate(text, { sim = s, mode = "offline" })) end
+  local _, ex = set_up(s, {})
   local function swapped(text)
     local r = graph.translate(text, { sim = s, mode = "offline" })
     check(r.ask ~= nil and r.ask:match("^Swap the ") ~= nil and r.confirm ~= nil, text)
@@ -3140,8 +3132,8 @@ do
   check_eq(swapped("swap the levels of PH101 and SAS7"), "ALT PH101 FL300 ; ALT SAS7 FL220")
   check_eq(swapped("PH101 and SAS7 swap headings"), "HDG PH101 180 ; HDG SAS7 90")
   check_eq(swapped("exchange the speeds of PH101 and TX1"), "SPD PH101 280 ; SPD TX1 260")
-  check(ex("swap the levels of PH101"):match("^ASK") ~= nil, "one aircraft")
-  check(ex("swap the levels of PH101, SAS7 and TX1"):match("^ASK") ~= nil, "three aircraft")
+  asked(ex("swap the levels of PH101"), "one aircraft")
+  asked(ex("swap the levels of PH101, SAS7 and TX1"), "three aircraft")
 end
 -- Places given to an aircraft after the verb ("add SUDIK to air malta 77", "add X for Y", a list with
 -- "then"), and a fix written as a proper name in a line with capitals ("Add Willo to Ryanair 4KP's route")
@@ -3156,10 +3148,10 @@ do
     check_eq(ex("add WILLO then MAY to EZY77"), "ADDWPT EZY77 WILLO ; ADDWPT EZY77 MAY")
     check_eq(ex("add WILLO, MAY to easy seven seven"), "ADDWPT EZY77 WILLO ; ADDWPT EZY77 MAY")
     check_eq(ex("Easy 77 direct Willo"), "ADDWPT EZY77 WILLO ; DIRECT EZY77 WILLO")
-    check(ex("add WILLO to KLM999"):match("^ASK") ~= nil, "no such aircraft")
-    check(ex("Add Banana to EZY77's route"):match("^ASK") ~= nil, "no such place")
+    asked(ex("add WILLO to KLM999"), "no such aircraft")
+    asked(ex("Add Banana to EZY77's route"), "no such place")
     -- (in a line with capitals a fix's name in lower case is a word, not read as the place)
-    check(ex("add willo to RYR4KP"):match("^ASK") ~= nil, "lower case in a line with capitals")
+    asked(ex("add willo to RYR4KP"), "lower case in a line with capitals")
   end
 end
 
@@ -3172,7 +3164,7 @@ do
   check_eq(ex("indigo 412 descend FL240"), "ALT IGO412 FL240")
   check_eq(ex("Connie four twelve, climb flight level three five zero"), "ALT CKS412 FL350")
   check_eq(ex("Vietjet 412 turn left heading 320"), "HDG VJC412 320 LEFT")
-  check(ex("Bamboo 412 descend FL240"):match("^ASK") ~= nil, "an airline with no aircraft flying asks")
+  asked(ex("Bamboo 412 descend FL240"), "an airline with no aircraft flying asks")
 end
 
 -- A level passed, left or reached before the instruction that waits for it, with the instruction's own
@@ -3200,7 +3192,7 @@ do
     check_eq(ex("EZY77 when 15 miles from Mayfield descend FL120"), "ATDIST EZY77 MAY 15 ALT EZY77 FL120")
     check_eq(ex("Easy 77, when 25 miles from Detling reduce speed 250 knots"), "ATDIST EZY77 DET 25 SPD EZY77 250")
     check_eq(ex("RYR4KP at 10 miles from Mayfield turn left heading 040"), "ATDIST RYR4KP MAY 10 HDG RYR4KP 40 LEFT")
-    check(ex("EZY77 when 20 miles from Banana descend FL120"):match("^ASK") ~= nil, "no such navaid")
+    asked(ex("EZY77 when 20 miles from Banana descend FL120"), "no such navaid")
   end
 end
 
@@ -3230,7 +3222,7 @@ do
   check_eq(ex("TAP55, flight level 260, descend now"), "ALT TAP55 FL260")
   check_eq(ex("TAP55 FL260, descend, heading 200"), "ALT TAP55 FL260 ; HDG TAP55 200")
   check(ex("TAP55 FL260, climb"):match("^ASK TAP55 is at 30000 ft") ~= nil, "a climb to a lower level")
-  check(ex("TAP55 speed 280 knots until further rubbish"):match("^ASK") ~= nil, "an unknown word after 'further'")
+  asked(ex("TAP55 speed 280 knots until further rubbish"), "an unknown word after 'further'")
 end
 
 -- "what's CALLSIGN doing?" with the callsign said in words of any length
@@ -3290,7 +3282,7 @@ do
     local _, near = navscene({ "CRE BAW1 A320 51.5 -0.3 090 FL200 250" }, "navaids by name and kind")
     check_eq(near("please create DLH42 A320 right over the Lambourne VOR at FL240, heading 180, 280 knots"),
       "CRE DLH42 A320 LAM 180 FL240 280")
-    check(ex("create XY12 A320 above the Lambourne NDB at FL100 heading 090 250 kts"):match("^ASK") ~= nil,
+    asked(ex("create XY12 A320 above the Lambourne NDB at FL100 heading 090 250 kts"),
       "no NDB bears the name: asked")
   end
 end
@@ -3305,7 +3297,7 @@ do
     check_eq(ex("reroute DAL88 to Boston"), "DEST DAL88 KBOS")
     check_eq(ex("route RYR4TK to Charleroi please"), "DEST RYR4TK EBCI")
     check_eq(ex("Ryanair four tango kilo, send him to Ostend"), "DEST RYR4TK EBOS")
-    check_eq(ex("route DAL88 to MERIT"):match("^ASK") ~= nil, true)
+    asked(ex("route DAL88 to MERIT"), "a fix after 'to' is no destination")
     check_eq(ex("route DAL88 via MERIT and on to Boston"), "ADDWPT DAL88 MERIT ; DEST DAL88 KBOS")
   end
 end
@@ -3319,7 +3311,7 @@ do
   check_eq(ex("right, run it and fast forward 90 seconds"), "OP ; FF 90")
   check_eq(ex("run the sim and ff 2 min"), "OP ; FF 120")
   check_eq(ex("run the simulation fast for 45 seconds"), "FF 45")
-  check(ex("pause, then speed"):match("^ASK") ~= nil, "no factor said: asked")
+  asked(ex("pause, then speed"), "no factor said: asked")
 end
 
 -- Destinations and origins as researchers type them: an ICAO code in lower case straight after the word
@@ -3329,12 +3321,12 @@ do
   if nav then
     check_eq(ex("KLM601 orig eddf, dest eham"), "ORIG KLM601 EDDF ; DEST KLM601 EHAM")
     check_eq(ex("KLM601 destination is ebbr"), "DEST KLM601 EBBR")
-    check(ex("KLM601 destination lane"):match("^ASK") ~= nil, "a word that is no airport code asks")
+    asked(ex("KLM601 destination lane"), "a word that is no airport code asks")
     check_eq(ex("give KLM601 Gatwick as its origin and Heathrow as its destination"),
       "ORIG KLM601 EGKK ; DEST KLM601 EGLL")
     check_eq(ex("KLM601 should get a route via SPY and Eindhoven as its destination"),
       "ADDWPT KLM601 SPY ; DEST KLM601 EHEH")
-    check(ex("give KLM601 Gatwick as its origin and Frobnitz as its destination"):match("^ASK") ~= nil,
+    asked(ex("give KLM601 Gatwick as its origin and Frobnitz as its destination"),
       "an unknown name asks")
   end
 end
@@ -3347,14 +3339,14 @@ do
   local _, ex = scene({})
   check_eq(ex("two aircraft please: AB1 A320 at 51.0 3.0 heading 045 FL200 250, and AB2 B738 at 51.5 3.0 heading 135 FL220 260"),
     "CRE AB1 A320 51 3 45 FL200 250 ; CRE AB2 B738 51.5 3 135 FL220 260")
-  check(ex("3 aircraft: AB1 A320 at 51.0 3.0 heading 045 FL200 250"):match("^ASK") ~= nil, "three announced, one given")
+  asked(ex("3 aircraft: AB1 A320 at 51.0 3.0 heading 045 FL200 250"), "three announced, one given")
   check_eq(ex("create AB1 A320 at 51.0 3.0 hdg 045 FL200 250 and then AB2 B738 at 51.5 3.0 hdg 135 FL220 260"),
     "CRE AB1 A320 51 3 45 FL200 250 ; CRE AB2 B738 51.5 3 135 FL220 260")
   check_eq(ex("two aircraft crossing: AB1 A320 at 51.0 3.0 heading 090 and AB2 A320 at 50.7 3.5 heading 000, both FL250 at 270 kts"),
     "CRE AB1 A320 51 3 90 FL250 270 ; CRE AB2 A320 50.7 3.5 0 FL250 270")
   check_eq(ex("create AB1, an A320, at 51.0 3.0 heading 090 at FL250 and 270 knots, and AB2, also an A320, at 51.0 4.0 heading 270, same level and speed"),
     "CRE AB1 A320 51 3 90 FL250 270 ; CRE AB2 A320 51 4 270 FL250 270")
-  check(ex("create AB1 A320 at 51.0 3.0 heading 090 and AB2 A320 at 50.7 3.5 heading 000 FL250 270 kts"):match("^ASK") ~= nil,
+  asked(ex("create AB1 A320 at 51.0 3.0 heading 090 and AB2 A320 at 50.7 3.5 heading 000 FL250 270 kts"),
     "the first one's level unsaid: asked")
 end
 
@@ -3366,7 +3358,7 @@ do
   check_eq(ex("observers, note the conflict between KLM77 and the tanker"):match("^ECHO"), nil)
   check_eq(ex("put a note on the screen saying trial 4 of 8"), "ECHO trial 4 of 8")
   check_eq(ex("display a message that says conflict block starts"), "ECHO conflict block starts")
-  check(ex("leave a message saying"):match("^ASK") ~= nil, "no text: asked")
+  asked(ex("leave a message saying"), "no text: asked")
 end
 
 -- "step size" / "step length" is the simulation's time step (DT), a noun, never a jump of the clock
@@ -3374,7 +3366,7 @@ do
   local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
   check_eq(ex("step size 0.25 s"), "DT 0.25")
   check_eq(ex("make the step length 1 second"), "DT 1")
-  check(ex("step size please"):match("^ASK") ~= nil, "no value: asked")
+  asked(ex("step size please"), "no value: asked")
 end
 
 -- CRECONFS against an aircraft named by its airline ("against the Lufthansa"): the target is that airline's
@@ -3386,7 +3378,7 @@ do
     "CRECONFS INT1 A320 DLH4AX 90 1 200")
   check_eq(ex("conflict against the Lufthansa: INT2 B738 crossing at 60 degrees, passing 2 miles, los in 300 s"),
     "CRECONFS INT2 B738 DLH4AX 60 2 300")
-  check(ex("crecons the Lufthansa INT3 A320 270 1 180"):match("^ASK") ~= nil, "bare values apart from the target")
+  asked(ex("crecons the Lufthansa INT3 A320 270 1 180"), "bare values apart from the target")
 end
 
 -- A condition at a waypoint opening the clause after the callsign, "at" and the waypoint said by its ident,
@@ -3402,8 +3394,8 @@ do
     :match("^ASK Should that happen after OKLAB%?") ~= nil, "after the place: asked, naming it")
   check(ex("CSA seven five two, at Victor Echo Mike India Sierra speed two two zero"):match("^ASK Which waypoint is VEMIS")
     ~= nil, "a spelled waypoint off the route: asked")
-  check(ex("CSA seven five two, at Oscar Kilo Lima speed two two zero"):match("^ASK") ~= nil, "a spelling of no waypoint")
-  check(ex("CSA seven five two, after OKLAB turn left heading 300"):match("^ASK") ~= nil, "a heading there: asked")
+  asked(ex("CSA seven five two, at Oscar Kilo Lima speed two two zero"), "a spelling of no waypoint")
+  asked(ex("CSA seven five two, after OKLAB turn left heading 300"), "a heading there: asked")
 end
 do
   local _, ex = navscene({ "CRE AUA123 A320 48.50 15.60 110 FL110 270", "ADDWPT AUA123 WGM" },
@@ -3456,7 +3448,7 @@ do
   local _, ex = scene({ "CRE SWR1530 A320 47.54 18.49 090 FL90 250" })
   check_eq(ex("Swiss one five three zero, climb flight level one two zero, when reaching increase speed two eight zero"),
     "ALT SWR1530 FL120 ; ATALT SWR1530 FL120 SPD SWR1530 280")
-  check(ex("Swiss one five three zero, when reaching increase speed two eight zero"):match("^ASK") ~= nil,
+  asked(ex("Swiss one five three zero, when reaching increase speed two eight zero"),
     "no level to reach: asked")
 end
 
@@ -3506,7 +3498,7 @@ do
     "ADDWPT WZZ2231 ERGAN" })
   check_eq(ex("Wizz two two three one, put in ROTAX before ERGAN"), "ADDWPT WZZ2231 ROTAX,,,,ERGAN")
   check_eq(ex("WZZ2231 put ROTAX after ERGAN"), "ADDWPT WZZ2231 ROTAX,,,ERGAN")
-  check(ex("Wizz two two three one, put in ROTAX"):match("^ASK") ~= nil, "no place beside it: asked")
+  asked(ex("Wizz two two three one, put in ROTAX"), "no place beside it: asked")
 end
 
 -- A level said after a correction replaces the level said before it, so it is never read as a step
@@ -3515,7 +3507,7 @@ end
 do
   local _, ex = scene({ "CRE AUA456 A320 48 16 090 7000 250" })
   check(ex("AUA456 climb 9000... correction, 5000"):match("^ASK .*climb to 5000") ~= nil, "corrected below")
-  check(ex("AUA456 climb 9000 feet, correction, 5000 feet"):match("^ASK") ~= nil, "corrected below, in feet")
+  asked(ex("AUA456 climb 9000 feet, correction, 5000 feet"), "corrected below, in feet")
   check_eq(ex("AUA456 climb 9000, correction 8000"), "ALT AUA456 8000")
   check_eq(ex("AUA456 climb 2000"), "ALT AUA456 9000")
 end
@@ -3525,7 +3517,7 @@ do
   local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
   check_eq(ex("BAW91 A320 51.5N 003.2E 120/FL240/260kt"), "CRE BAW91 A320 51.5 3.2 120 FL240 260")
   check_eq(ex("create DLH3 A321 52.1/4.4 hdg 200/fl180"), "CRE DLH3 A321 52.1 4.4 200 FL180")
-  check(ex("BAW92 A320 51.5N 003.2E 120/FL240/zz9"):match("^ASK") ~= nil, "a part squawk cannot read is asked about")
+  asked(ex("BAW92 A320 51.5N 003.2E 120/FL240/zz9"), "a part squawk cannot read is asked about")
 end
 
 -- "sim step 0.5 s": the simulation's step, a noun after "sim", is the time step; "step" alone with a time still
@@ -3542,7 +3534,7 @@ do
   local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250" })
   check(ex("conflict resolution -- which method did Jan pick on Monday?"):find("question, no instruction", 1, true),
     "a question about the past: asked")
-  check(ex("did KLM77 get the descent to FL150?"):match("^ASK") ~= nil, "asked")
+  asked(ex("did KLM77 get the descent to FL150?"), "asked")
   check_eq(ex("what's the reso method?"), "RESO")
 end
 
@@ -3551,7 +3543,7 @@ do
   local _, ex = scene({ "CRE KLM77 B738 52 4 090 FL200 250", "CRE DLH4AX A321 52.4 4.4 090 FL300 280" })
   check_eq(ex("DLH4AX and KLM77 -- no, forget the KLM. Just DLH4AX heading 300"), "HDG DLH4AX 300")
   check_eq(ex("KLM77 and DLH4AX descend FL180, forget DLH4AX"), "ALT KLM77 FL180")
-  check(ex("KLM77 speed 220, forget about KLM77"):match("^ASK") ~= nil, "nothing left: asked")
+  asked(ex("KLM77 speed 220, forget about KLM77"), "nothing left: asked")
 end
 
 -- Aircraft described ("X and Y are level at 300", "the Lufthansa keeps FL300", "the KLM's there") are not
@@ -3563,7 +3555,7 @@ do
   check_eq(ex("KLM77 and DLH4AX are level at 300 on crossing tracks, good. Take BAW8CK up to 300 as well."),
     "ALT BAW8CK FL300")
   check_eq(ex("BAW8CK climb FL300 and the Lufthansa keeps FL300 -- the vertical geometry we want"), "ALT BAW8CK FL300")
-  check(ex("BAW8CK descend FL240... no wait, the KLM's there. Make it FL250"):match("^ASK") ~= nil,
+  asked(ex("BAW8CK descend FL240... no wait, the KLM's there. Make it FL250"),
     "the correction after a described aircraft: asked")
   check_eq(ex("KLM77 is too low, climb FL240"), "ALT KLM77 FL240")
   check_eq(ex("DLH4AX is cleared to FL340"), "ALT DLH4AX FL340")
@@ -3593,7 +3585,7 @@ do
   check_eq(ex("VLG1005 descienda nivel de vuelo dos ocho cero"), "ALT VLG1005 FL280")
   check_eq(ex("France Soleil quatre un deux zero, montez niveau 240, merci"), "ALT TVF4120 FL240")
   check_eq(ex("TVF4120 cap 090, bonjour"), "HDG TVF4120 90")
-  check(ex("VLG1005 rumbo"):match("^ASK") ~= nil, "no value: asked")
+  asked(ex("VLG1005 rumbo"), "no value: asked")
 end
 
 -- "asas dt 2 sec", "detection dt 1.5 s": conflict detection's interval (DT ASAS), never the simulation's time
@@ -3603,7 +3595,7 @@ do
   check_eq(ex("asas dt 2 sec"), "DT ASAS 2")
   check_eq(ex("detection dt 1.5 s"), "DT ASAS 1.5")
   check_eq(ex("set the time step to 0.1 s"), "DT 0.1")
-  check(ex("asas dt"):match("^ASK") ~= nil, "no interval said")
+  asked(ex("asas dt"), "no interval said")
 end
 
 -- A level left or passed before a vertical speed, or before an imperative climb or descent with a rate
@@ -3637,7 +3629,7 @@ do
   check_eq(ex("sup: pause the simulation"), "HOLD")
   check_eq(ex("sim sup: WestJet 88 climb FL340"), "ALT WJA88 FL340")
   check_eq(ex("sup, fast forward two minutes"), "FF 120")
-  check(ex("sup"):match("^ASK") ~= nil, "a label alone says nothing")
+  asked(ex("sup"), "a label alone says nothing")
 end
 
 -- The wrong value a pilot read back, named after the corrected instruction ("..., you said seven",
@@ -3649,8 +3641,8 @@ do
     "ALT ROU1766 FL240")
   check_eq(ex("ROU1766 readback incorrect, turn left heading 150, you said 160."), "HDG ROU1766 150 LEFT")
   check_eq(ex("ROU1766 reduce speed 250, your readback was two six zero"), "SPD ROU1766 250")
-  check(ex("ROU1766 you said seven"):match("^ASK") ~= nil, "no instruction before it")
-  check(ex("ROU1766 climb FL240, you said 220 so climb FL250"):match("^ASK") ~= nil, "more after the values")
+  asked(ex("ROU1766 you said seven"), "no instruction before it")
+  asked(ex("ROU1766 climb FL240, you said 220 so climb FL250"), "more after the values")
 end
 
 -- A Canadian registration said after the aircraft's maker or model without its C ("Cessna Foxtrot Alpha
@@ -3660,9 +3652,9 @@ do
   local _, ex = scene({ "CRE CFABK C172 45 -75 090 3000 100", "CRE GOBCD C152 45.2 -75 090 3000 90" })
   check_eq(ex("Cessna Foxtrot Alpha Bravo Kilo turn right heading 120"), "HDG CFABK 120 RIGHT")
   check_eq(ex("Golf Oscar Bravo Charlie Delta descend 2500"), "ALT GOBCD 2500")
-  check(ex("Foxtrot Alpha Bravo Kilo climb to 4500"):match("^ASK") ~= nil, "the letters alone")
-  check(ex("Piper Foxtrot Alpha Bravo Kilo climb to 4500"):match("^ASK") ~= nil, "another maker")
-  check(ex("Cessna Oscar Bravo Charlie Delta descend 2500"):match("^ASK") ~= nil, "no Canadian registration")
+  asked(ex("Foxtrot Alpha Bravo Kilo climb to 4500"), "the letters alone")
+  asked(ex("Piper Foxtrot Alpha Bravo Kilo climb to 4500"), "another maker")
+  asked(ex("Cessna Oscar Bravo Charlie Delta descend 2500"), "no Canadian registration")
 end
 
 -- A new aircraft said with its airline whole and a flight number no aircraft of it has ("Jazz 7455" with
@@ -3681,7 +3673,7 @@ do
     "CRE WJA99 B38M DOTTY 270 FL200 280")
   check_eq(ex("create WestJet 99, Airbus three nineteen, at DOTTY, heading 270, FL200, 280 knots"),
     "CRE WJA99 A319 DOTTY 270 FL200 280")
-  check(ex("create WestJet 99, seven thirty seven, at DOTTY, heading 270, FL200, 280 knots"):match("^ASK") ~= nil,
+  asked(ex("create WestJet 99, seven thirty seven, at DOTTY, heading 270, FL200, 280 knots"),
     "a family names no one variant")
 end
 
@@ -3690,7 +3682,7 @@ end
 do
   local _, ex = scene({ "CRE WJA12 B738 45.5 -75 090 FL250 280", "DEFWPT DOTTY 45.3 -75.3" })
   check_eq(ex("add a Porter DH8D, POE 77, at DOTTY, heading 090, 8000, 220 knots"), "CRE POE77 DH8D DOTTY 90 8000 220")
-  check(ex("add a DH8D, POE 77, at DOTTY, heading 090, 8000, 220 knots"):match("^ASK") ~= nil, "no airline named")
+  asked(ex("add a DH8D, POE 77, at DOTTY, heading 090, 8000, 220 knots"), "no airline named")
 end
 
 -- "knock out" an aircraft, nothing after it: deleted; with an instruction after it, no deletion
@@ -3698,7 +3690,7 @@ do
   local _, ex = scene({ "CRE WJA12 B738 45.5 -75 090 FL250 280", "CRE CFABK C172 45 -75 090 3000 100" })
   check_eq(ex("sup: knock out WestJet 12"), "DEL WJA12")
   check_eq(ex("knock out the Cessna please"), "DEL CFABK")
-  check(ex("knock out WJA12 and climb"):match("^ASK") ~= nil, "an instruction after it")
+  asked(ex("knock out WJA12 and climb"), "an instruction after it")
 end
 
 -- The conflict probe named as a look-ahead's owner; "triple speed"
@@ -3706,7 +3698,7 @@ do
   local _, ex = scene({ "CRE WJA88 B738 50 -100 090 FL300 280" })
   check_eq(ex("probe look-ahead three minutes"), "DTLOOK 180")
   check_eq(ex("set the look ahead on the conflict probe to 4 minutes"), "DTLOOK 240")
-  check(ex("probe WJA88"):match("^ASK") ~= nil, "a probe with no look-ahead")
+  asked(ex("probe WJA88"), "a probe with no look-ahead")
   check_eq(ex("triple speed please"), "DTMULT 3")
   check_eq(ex("run the sim at quadruple speed"), "DTMULT 4")
 end
@@ -3729,7 +3721,7 @@ do
     "airports said as city and name")
   if nav then
     check_eq(ex("ACA4 destination Washington Reagan"), "DEST ACA4 KDCA")
-    check(ex("AAL2 destination Ohare Midway"):match("^ASK") ~= nil, "Ohare is no city")
+    asked(ex("AAL2 destination Ohare Midway"), "Ohare is no city")
   end
 end
 
@@ -3775,9 +3767,9 @@ do
     "DEFWPT CHARL 45.8 -74.4" })
   check_eq(ex("WJA12 add ALPHA then BRAVO, actually just add CHARL at the end of the route"), "ADDWPT WJA12 CHARL")
   check_eq(ex("WJA12 add ALPHA and BRAVO, sorry, add CHARL to the end of his route"), "ADDWPT WJA12 CHARL")
-  check(ex("WJA12 add ALPHA then BRAVO, actually just CHARL"):match("^ASK") ~= nil, "no verb said again")
+  asked(ex("WJA12 add ALPHA then BRAVO, actually just CHARL"), "no verb said again")
   -- (a correction whose "just" is followed by a verb before the aircraft, with no aircraft before it: asked)
-  check(ex("add the ALPHA gate... actually no, just give WJA12 the destination CYUL instead"):match("^ASK") ~= nil,
+  asked(ex("add the ALPHA gate... actually no, just give WJA12 the destination CYUL instead"),
     "a correction naming its aircraft after a verb")
 end
 
@@ -3800,7 +3792,7 @@ do
   check_eq(ex("Block C: KLM12 speed 250"), "SPD KLM12 250")
   check_eq(ex("session 3, block B. cre EZY9 A320 52.5 4.5 180 FL250 260"), "CRE EZY9 A320 52.5 4.5 180 FL250 260")
   check(ex("run 5 min. KLM12 climb FL340"):match("FF 300") ~= nil, "a time is no label")
-  check(ex("exp ATC-NL-BE, run 4."):match("^ASK") ~= nil, "a label alone instructs nothing")
+  asked(ex("exp ATC-NL-BE, run 4."), "a label alone instructs nothing")
 end
 
 -- Route building in an experimenter's shorthand: "route KLM12: ALFA BRAVO" (the aircraft straight after
@@ -3841,11 +3833,11 @@ do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280", "CRE EZY9 A320 52.5 4.5 180 FL250 260" })
   check_eq(ex("climb KLM12 to 340 to make it a quadruple"), "ALT KLM12 FL340")
   check_eq(ex("descend EZY9 to FL230 to get them closer"), "ALT EZY9 FL230")
-  check(ex("climb KLM12 to 340 to make it climb FL360"):match("^ASK") ~= nil, "an instruction in the clause")
+  asked(ex("climb KLM12 to 340 to make it climb FL360"), "an instruction in the clause")
   check_eq(ex("KLM12 hard right heading 140"), "HDG KLM12 140 RIGHT")
-  check(ex("KLM12 turn hard"):match("^ASK") ~= nil, "no heading")
+  asked(ex("KLM12 turn hard"), "no heading")
   check_eq(ex("mcre 5, whatever type, FL280, 260 kt"), "MCRE 5 * FL280 260")
-  check(ex("KLM12, EZY9... whichever one is the A320, climb 360"):match("^ASK") ~= nil, "a choice left open")
+  asked(ex("KLM12, EZY9... whichever one is the A320, climb 360"), "a choice left open")
   check_eq(ex("pause the sim, colleague's got a question"), "HOLD")
 end
 
@@ -3860,7 +3852,7 @@ do
     "CRECONFS EZY3 A320 KLM12 45 0.25 150")
   check_eq(ex("KLM12 descend 7 500 m"), "ALT KLM12 24606")
   check_eq(ex("KLM12 descend 12 000 ft"), "ALT KLM12 12000")
-  check(ex("KLM12 heading 270 200 ft"):match("^ASK") ~= nil, "a heading and a number apart")
+  asked(ex("KLM12 heading 270 200 ft"), "a heading and a number apart")
 end
 
 -- A new aircraft's heading said as a number straight after its compass word ("northbound 010",
@@ -3869,7 +3861,7 @@ do
   local _, ex = scene({ "DEFWPT ALFA 52.2 4.5" })
   check_eq(ex("EZY3, A320, over ALFA, northbound 010, FL300 at 270"), "CRE EZY3 A320 ALFA 10 FL300 270")
   check_eq(ex("EZY3, A320, over ALFA, westerly 260, FL300 at 270"), "CRE EZY3 A320 ALFA 260 FL300 270")
-  check(ex("EZY3, A320, over ALFA, northbound 170, FL300 at 270"):match("^ASK") ~= nil, "170 is no northbound heading")
+  asked(ex("EZY3, A320, over ALFA, northbound 170, FL300 at 270"), "170 is no northbound heading")
 end
 
 -- A conflict set up with its intruder introduced as "new" or "new one" ("creconfs: new one EZY3, A320,
@@ -3911,7 +3903,7 @@ do
   if s then
     check_eq(ex("orig/dest KLM12: EHAM -> EGLL"), "ORIG KLM12 EHAM ; DEST KLM12 EGLL")
     check_eq(ex("origin/destination KLM12 EHAM EGLL"), "ORIG KLM12 EHAM ; DEST KLM12 EGLL")
-    check(ex("orig/dest KLM12: EHAM"):match("^ASK") ~= nil, "one airport for two settings")
+    asked(ex("orig/dest KLM12: EHAM"), "one airport for two settings")
   end
 end
 
@@ -3936,8 +3928,8 @@ do
   check_eq(ex("give the horizontal resolutions a 15 percent margin"), "RFACH 1.15")
   check_eq(ex("give the horizontal resolutions a 25% margin"), "RFACH 1.25")
   check_eq(ex("vertical resolution margin factor 1.08"), "RFACV 1.08")
-  check(ex("give the horizontal resolutions a 20 margin"):match("^ASK") ~= nil, "no percent")
-  check(ex("give the resolutions a 20 percent margin"):match("^ASK") ~= nil, "no direction")
+  asked(ex("give the horizontal resolutions a 20 margin"), "no percent")
+  asked(ex("give the resolutions a 20 percent margin"), "no direction")
 end
 
 -- "point KLM12 at the Spijkerboor VOR": a navaid said by its name with its kind after it, after "point ...
@@ -3946,7 +3938,7 @@ do
   local s, ex = navscene({ "CRE KLM12 B738 52 4 090 FL300 280" }, "pointing at a navaid by its name")
   if s then
     check_eq(ex("point KLM12 at the Spijkerboor VOR"), "ADDWPT KLM12 SPY ; DIRECT KLM12 SPY")
-    check(ex("point KLM12 at the Nowhereville VOR"):match("^ASK") ~= nil, "no such navaid")
+    asked(ex("point KLM12 at the Nowhereville VOR"), "no such navaid")
   end
 end
 
@@ -3962,7 +3954,7 @@ do
   check_eq(ex("KLM12 descend FL240, reaching reduce 250 knots"), "ALT KLM12 FL240 ; ATALT KLM12 FL240 SPD KLM12 250")
   check_eq(ex("KLM12 climb FL360 Mach .80"), "ALT KLM12 FL360 ; SPD KLM12 M0.8")
   -- (a level after "passing" with no instruction before it, "KLM12 passing FL340 Mach .80", is no level to fly)
-  check(ex("KLM12 passing FL340 Mach .80"):match("^ASK") ~= nil, "a level passed")
+  asked(ex("KLM12 passing FL340 Mach .80"), "a level passed")
   check_eq(ex("KLM12 passing FL340 reduce 250 knots"), "ATALT KLM12 FL340 SPD KLM12 250")
   -- (a report asked for is no condition of the Mach said after it)
   check(ex("KLM12 climb FL360 report reaching, Mach .80"):find("ATALT", 1, true) == nil, "a report asked for")
@@ -3980,9 +3972,9 @@ do
   check_eq(ex("KLM12 descend FL240 to be level at ALFA"), "AT KLM12 ALFA ALT FL240")
   check_eq(ex("klm12 desc FL240 to be lvl by ALFA"), "AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12 descend FL240, to be level by ALFA"), "AT KLM12 ALFA ALT FL240")
-  check(ex("KLM12 descend FL240 by ALFA"):match("^ASK") ~= nil, "no 'level' or 'reach': by the waypoint or a change?")
-  check(ex("KLM12 descend FL240 level by BRAVO"):match("^ASK") ~= nil, "BRAVO is off the route")
-  check(ex("KLM12 descend FL240 level by ALFA 250 knots"):match("^ASK") ~= nil, "a speed after the waypoint")
+  asked(ex("KLM12 descend FL240 by ALFA"), "no 'level' or 'reach': by the waypoint or a change?")
+  asked(ex("KLM12 descend FL240 level by BRAVO"), "BRAVO is off the route")
+  asked(ex("KLM12 descend FL240 level by ALFA 250 knots"), "a speed after the waypoint")
 end
 
 -- A navaid said exactly by its name near the aircraft ("direct Pampus": PAM) is that navaid, before a
@@ -4004,11 +3996,11 @@ do
     "ADDWPT KLM12 ALFA" })
   check_eq(ex("KLM12 descend FL260, at ALFA FL240"), "ALT KLM12 FL260 ; AT KLM12 ALFA ALT FL240")
   check_eq(ex("KLM12 descend FL260 then at ALFA 250 knots"), "ALT KLM12 FL260 ; AT KLM12 ALFA SPD 250")
-  check(ex("KLM12 descend FL260, at BRAVO FL240"):match("^ASK") ~= nil, "BRAVO is off the route")
-  check(ex("KLM12 descend FL260, at ALFA turn left heading 200"):match("^ASK") ~= nil, "a turn at a waypoint")
-  check(ex("KLM12 descend FL260, at ALFA FL240, 250 knots"):match("^ASK") ~= nil, "a speed in a clause after it")
+  asked(ex("KLM12 descend FL260, at BRAVO FL240"), "BRAVO is off the route")
+  asked(ex("KLM12 descend FL260, at ALFA turn left heading 200"), "a turn at a waypoint")
+  asked(ex("KLM12 descend FL260, at ALFA FL240, 250 knots"), "a speed in a clause after it")
   -- (after a direct-to, "at ALFA FL240" is asked about, never a level given now)
-  check(ex("KLM12 direct ALFA, at ALFA FL240"):match("^ASK") ~= nil, "a level at the waypoint flown to")
+  asked(ex("KLM12 direct ALFA, at ALFA FL240"), "a level at the waypoint flown to")
 end
 
 -- "when level" before a heading after a climb or descent ("descend FL260 and when level turn right heading
@@ -4019,7 +4011,7 @@ do
   check_eq(ex("KLM12 descend FL260 and when level turn right heading 140"),
     "ALT KLM12 FL260 ; ATALT KLM12 FL260 HDG KLM12 140 RIGHT")
   check_eq(ex("KLM12 descend FL260, when level reduce 250 knots"), "ALT KLM12 FL260 ; ATALT KLM12 FL260 SPD KLM12 250")
-  check(ex("KLM12 descend FL260, when level turn left 20 degrees"):match("^ASK") ~= nil, "a turn by degrees")
+  asked(ex("KLM12 descend FL260, when level turn left 20 degrees"), "a turn by degrees")
   check_eq(ex("KLM12 descend FL260 then turn left heading 200"), "ALT KLM12 FL260 ; HDG KLM12 200 LEFT")
 end
 
@@ -4032,10 +4024,10 @@ do
     "ALT KLM12 FL260 ; ATDIST KLM12 ALFA 20 ALT KLM12 FL240")
   check_eq(ex("KLM12 descend FL260, at 20 miles from ALFA reduce 250 knots"),
     "ALT KLM12 FL260 ; ATDIST KLM12 ALFA 20 SPD KLM12 250")
-  check(ex("KLM12 descend FL260, 20 miles past ALFA descend FL240"):match("^ASK") ~= nil, "past a place")
+  asked(ex("KLM12 descend FL260, 20 miles past ALFA descend FL240"), "past a place")
   -- (a level to be reached by a distance before a place is no condition of reaching that distance)
-  check(ex("KLM12 descend to be level FL240 20 miles before ALFA"):match("^ASK") ~= nil, "level by a distance")
-  check(ex("KLM12 descend FL240, level 20 miles before ALFA"):match("^ASK") ~= nil, "level by a distance")
+  asked(ex("KLM12 descend to be level FL240 20 miles before ALFA"), "level by a distance")
+  asked(ex("KLM12 descend FL240, level 20 miles before ALFA"), "level by a distance")
 end
 
 -- Telephony designators of TUI's airlines said in full ("tuijet" TUI, "beauty" JAF), before any verb: the
@@ -4044,7 +4036,7 @@ do
   local _, ex = scene({ "CRE TUI7RB B738 52 4 090 FL300 280", "CRE JAF2PL B738 52.3 4.3 180 FL320 280" })
   check_eq(ex("remove tuijet seven romeo bravo"), "DEL TUI7RB")
   check_eq(ex("beauty 2PL descend FL280"), "ALT JAF2PL FL280")
-  check(ex("remove tuijet 9ZZ"):match("^ASK") ~= nil, "no such TUI flight")
+  asked(ex("remove tuijet 9ZZ"), "no such TUI flight")
 end
 
 -- "say again your speed": the controller asking the aircraft to say its own value again is a report asked
@@ -4053,7 +4045,7 @@ do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL300 280" })
   check_eq(ex("KLM12 say again your level"), "POS KLM12")
   check_eq(ex("KLM12, say again your heading please"), "POS KLM12")
-  check(ex("KLM12 say again the level"):match("^ASK") ~= nil, "a pilot's question back")
+  asked(ex("KLM12 say again the level"), "a pilot's question back")
 end
 
 -- "pop up N random aircraft": random traffic (MCRE), as "spawn" is; "pop up" with a callsign creates it
@@ -4070,7 +4062,7 @@ do
     "CRE KLM12 B738 52 4 090 FL300 280", "ADDWPT KLM12 ALFA", "ADDWPT KLM12 BRAVO" })
   check_eq(ex("KLM12 delete ALFA and BRAVO"), "DELWPT KLM12 ALFA ; DELWPT KLM12 BRAVO")
   check_eq(ex("KLM12 remove ALFA, BRAVO, then climb FL320"), "DELWPT KLM12 ALFA ; DELWPT KLM12 BRAVO ; ALT KLM12 FL320")
-  check(ex("KLM12 delete ALFA and CHARL"):match("^ASK") ~= nil, "CHARL is off the route")
+  asked(ex("KLM12 delete ALFA and CHARL"), "CHARL is off the route")
 end
 
 -- "rejoin own navigation at BRAVO": the waypoint the route is rejoined at is flown to directly, as after
@@ -4105,7 +4097,7 @@ do
   check_eq(ex("KLM12 reduce to 230 kt by the time it gets to FL150"), "ATALT KLM12 FL150 SPD KLM12 230")
   check_eq(ex("KLM12 speed 240 by FL120"), "ATALT KLM12 FL120 SPD KLM12 240")
   check_eq(ex("KLM12 descend by 3000 feet"), "ALT KLM12 27000")
-  check(ex("KLM12 230 knots by the time it's established"):match("^ASK") ~= nil, "no level to wait for")
+  asked(ex("KLM12 230 knots by the time it's established"), "no level to wait for")
 end
 
 -- The clock started by "go on" or "keep going" said as a clause of its own ("fine, go on, and run at 3x")
@@ -4127,7 +4119,7 @@ do
   check_eq(ex("create a B744 freighter, CLX7, at 52.1 4.3, heading 180, FL240, 260 knots"),
     "CRE CLX7 B744 52.1 4.3 180 FL240 260")
   check_eq(ex("designer's note, no action: KLM12 is the slow one. KLM12 climb FL320"), "ALT KLM12 FL320")
-  check(ex("note, no action: KLM12 flies the ZZZZZ branch. KLM12 climb FL320"):match("^ASK") ~= nil,
+  asked(ex("note, no action: KLM12 flies the ZZZZZ branch. KLM12 climb FL320"),
     "a name in the note is asked about")
 end
 
@@ -4141,8 +4133,8 @@ do
   check_eq(ex("define NEWPT at 52.45 4.7, then slot it in before BRAVO on EZY9"),
     "DEFWPT NEWPT 52.45 4.7 ; ADDWPT EZY9 NEWPT,,,,BRAVO")
   check_eq(ex("define NEWPT 52.45 4.7 and put it after BRAVO on EZY9"), "DEFWPT NEWPT 52.45 4.7 ; ADDWPT EZY9 NEWPT,,,BRAVO")
-  check(ex("place the new gate at 52.9 4.8"):match("^ASK") ~= nil, "a gate with no name")
-  check(ex("put it after BRAVO on EZY9"):match("^ASK") ~= nil, "'it' with nothing defined")
+  asked(ex("place the new gate at 52.9 4.8"), "a gate with no name")
+  asked(ex("put it after BRAVO on EZY9"), "'it' with nothing defined")
 end
 
 -- Small set-up phrasings of a test conductor: the route "given" to the speaker is shown; a level left
@@ -4152,7 +4144,7 @@ do
   local _, ex = scene({ "CRE KLM12 B738 52 4 090 FL140 280", "CRE EZY9 A320 52.5 4.5 180 FL300 260" })
   check_eq(ex("give me the route of KLM12"), "LISTRTE KLM12")
   check_eq(ex("KLM12 leave FL140 for 8000 feet"), "ALT KLM12 8000")
-  check(ex("KLM12 leave FL140"):match("^ASK") ~= nil, "a level left with none to go to")
+  asked(ex("KLM12 leave FL140"), "a level left with none to go to")
   check_eq(ex("remove EZY9, it was generated at the wrong level"), "DEL EZY9")
   check_eq(ex("delete KLM12, it's sitting in the wrong place"), "DEL KLM12")
   check_eq(ex("zone r 6 nm and zone dh 1200 ft"), "ZONER 6 ; ZONEDH 1200")
@@ -4167,7 +4159,7 @@ do
   if ex then
     check_eq(ex("DLH4's origin should be EDDM, not EDDF"), "ORIG DLH4 EDDM")
     check_eq(ex("DLH4 destination EDDH rather than EDDL"), "DEST DLH4 EDDH")
-    check(ex("DLH4's origin should not be EDDF"):match("^ASK") ~= nil, "only the replaced airport")
+    asked(ex("DLH4's origin should not be EDDF"), "only the replaced airport")
   end
   local _, ex2 = scene({})
   check_eq(ex2("new fix GAMMA at 52 30.0 N 4 15.0 E, that's 52.5 4.25 in decimal if that helps"), "DEFWPT GAMMA 52.5 4.25")
@@ -4178,7 +4170,7 @@ end
 do
   local _, ex = scene({ "DEFWPT BRAVO 52.4 4.9", "CRE EZY9 A320 52.5 4.5 180 FL100 260", "ADDWPT EZY9 BRAVO" })
   check_eq(ex("EZY9 cross BRAVO at 7000"), "AT EZY9 BRAVO ALT 7000")
-  check(ex("EZY9 cross BRAVO at 240"):match("^ASK") ~= nil, "a bare number under 1000 at a crossing")
+  asked(ex("EZY9 cross BRAVO at 240"), "a bare number under 1000 at a crossing")
 end
 
 -- An airport's own navdata name said elsewhere in the request than beside its code ("one more departure out
@@ -4188,8 +4180,8 @@ do
   if s then
     check_eq(ex("one more departure out of Schiphol: KLM9 B738 at EHAM heading 240 altitude 3000 ft speed 200"),
       "CRE KLM9 B738 EHAM 240 3000 200")
-    check(ex("one more departure out of Eindhoven: KLM9 B738 at EHAM heading 240 altitude 3000 ft speed 200")
-      :match("^ASK") ~= nil, "another airport's name")
+    asked(ex("one more departure out of Eindhoven: KLM9 B738 at EHAM heading 240 altitude 3000 ft speed 200"),
+      "another airport's name")
   end
 end
 
@@ -4227,7 +4219,7 @@ do
   check(ex("the LATAM descend FL150"):match("^ASK Which LATAM") ~= nil, "two LATAM aircraft")
   -- (an airline capitalised after "for", ending its clause, is its one aircraft; two of it, asked)
   check_eq(ex("climb FL190 for Flybondi"), "ALT FBZ10 FL190")
-  check(ex("climb FL190 for LATAM"):match("^ASK") ~= nil, "two LATAM aircraft after 'for'")
+  asked(ex("climb FL190 for LATAM"), "two LATAM aircraft after 'for'")
 end
 -- ... and a name that is also a fix far from the traffic (LATAM, a fix in France) is the airline
 do
@@ -4303,7 +4295,7 @@ do
     check_eq(ex("show me Ezeiza airport"), "POS SAEZ")
     check_eq(ex("FBZ9 will land at Ezeiza, not Aeroparque"), "DEST FBZ9 SAEZ")
     check_eq(ex("FBZ9 should go to Rosario"), "DEST FBZ9 SAAR")
-    check(ex("FBZ9 land at Rosario"):match("^ASK") ~= nil, "a landing clearance alone")
+    asked(ex("FBZ9 land at Rosario"), "a landing clearance alone")
   end
 end
 
@@ -4335,7 +4327,7 @@ do
   check_eq(ex("resolution only past CPA please"), "RESNAV PASTCPA")
   check_eq(ex("TAM90 climb FL160, vertical resolution"), "ALT TAM90 FL160")
   check_eq(ex("TAM90 keep the speed... no, just maintain 250"), "SPD TAM90 250")
-  check(ex("TAM90 maintain 250"):match("^ASK") ~= nil, "maintain 250 with nothing named")
+  asked(ex("TAM90 maintain 250"), "maintain 250 with nothing named")
 end
 
 -- Aircraft named before the last "so" or sentence end before an instruction, another named after it, are
@@ -4379,7 +4371,7 @@ do
   check_eq(ex("GLO7 reduce 220 level FL080"), "SPD GLO7 220 ; ALT GLO7 FL80")
   check_eq(ex("which is the altitude of GLO7?"), "POS GLO7")
   check_eq(ex("GLO7 return to the route"), "LNAV GLO7 ON")
-  check(ex("GLO7 return to the route at TEXAS"):match("^ASK") ~= nil, "a place to rejoin at")
+  asked(ex("GLO7 return to the route at TEXAS"), "a place to rejoin at")
 end
 
 -- A vertical speed's sign from its whole clause ("descend with vertical speed 2000", "vertical speed 2000
@@ -4390,7 +4382,7 @@ do
   check_eq(ex("JAT9 vertical speed 1500 feet per minute for descend"), "VS JAT9 -1500")
   check_eq(ex("JAT9 climb with vertical speed 1500"), "VS JAT9 1500")
   -- ("go to X" is a direct-to, a waypoint added or a destination as writers mean it: asked)
-  check(ex("JAT9 go to the waypoint KALUX"):match("^ASK") ~= nil, "go to a waypoint")
+  asked(ex("JAT9 go to the waypoint KALUX"), "go to a waypoint")
   check_eq(ex("JAT9 rise to FL200"), "ALT JAT9 FL200")
 end
 
@@ -4408,16 +4400,16 @@ do
   check_eq(ex("SAS31 climb FL190, slow to 230 once you get there"),
     "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
   check_eq(ex("SAS31 climb FL190, speed 230 when you're level"), "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
-  check(ex("SAS31 slow to 230 when you reach it"):match("^ASK") ~= nil, "no level before 'when you reach it'")
-  check(ex("SAS31 speed 230 once there"):match("^ASK") ~= nil, "no level before 'once there'")
-  check(ex("SAS31 on reaching slow to 230"):match("^ASK") ~= nil, "no level before 'on reaching'")
-  check(ex("SAS31 when you reach it, slow to 230"):match("^ASK") ~= nil, "no level before 'when you reach it'")
-  check(ex("SAS31 climb FL190, on reaching turn right 30 degrees"):match("^ASK") ~= nil, "a turn by degrees")
-  check(ex("SAS31 direct KOBRA, slow to 230 when you get there"):match("^ASK") ~= nil, "no level before it")
+  asked(ex("SAS31 slow to 230 when you reach it"), "no level before 'when you reach it'")
+  asked(ex("SAS31 speed 230 once there"), "no level before 'once there'")
+  asked(ex("SAS31 on reaching slow to 230"), "no level before 'on reaching'")
+  asked(ex("SAS31 when you reach it, slow to 230"), "no level before 'when you reach it'")
+  asked(ex("SAS31 climb FL190, on reaching turn right 30 degrees"), "a turn by degrees")
+  asked(ex("SAS31 direct KOBRA, slow to 230 when you get there"), "no level before it")
   -- (said after its instruction with "on reaching"; a level said in the condition holds a switch of navigation)
   check_eq(ex("SAS31 descend FL110, own nav on reaching"), "ALT SAS31 FL110 ; ATALT SAS31 FL110 LNAV SAS31 ON")
   check_eq(ex("SAS31 on reaching FL170 resume own navigation"), "ATALT SAS31 FL170 LNAV SAS31 ON")
-  check(ex("SAS31 slow to 230 on reaching"):match("^ASK") ~= nil, "no level before 'on reaching'")
+  asked(ex("SAS31 slow to 230 on reaching"), "no level before 'on reaching'")
   check_eq(ex("SAS31 climb FL190, slow to 230 after reaching"), "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
   check_eq(ex("SAS31 climb FL190, slow to 230 reaching"), "ALT SAS31 FL190 ; ATALT SAS31 FL190 SPD SAS31 230")
   -- (a report asked for is no condition)
@@ -4448,9 +4440,9 @@ do
   check_eq(ex("sas32 rv hdg 200"), "HDG SAS32 200")
   check_eq(ex("sas32 fh 200"), "HDG SAS32 200")
   check_eq(ex("sas32 tl hdg 060"), "HDG SAS32 60 LEFT")
-  check(ex("sas32 red"):match("^ASK") ~= nil, "'red' with no value is no speed")
-  check(ex("sas32 pd"):match("^ASK") ~= nil, "'pd' alone")
-  check(ex("sas32 cm FL100"):match("^ASK") ~= nil, "a climb to a level below the aircraft")
+  asked(ex("sas32 red"), "'red' with no value is no speed")
+  asked(ex("sas32 pd"), "'pd' alone")
+  asked(ex("sas32 cm FL100"), "a climb to a level below the aircraft")
 end
 
 -- A value held "until established" on the approach ("maint 8000 til established") is flown now, its end not
@@ -4461,9 +4453,9 @@ do
   check_eq(ex("SAS34 heading 200, maint 4000 til established"), "HDG SAS34 200 ; ALT SAS34 4000")
   check_eq(ex("SAS34 maintain 180 knots until established on the localizer"), "SPD SAS34 180")
   check_eq(ex("SAS34 maintain 230 or greater"), "SPD SAS34 230")
-  check(ex("SAS34 maintain 180 knots until established, then descend 3000"):match("^ASK") ~= nil,
+  asked(ex("SAS34 maintain 180 knots until established, then descend 3000"),
     "an instruction waiting for the limit")
-  check(ex("sas34 red 160 kts until 4 dme"):match("^ASK") ~= nil, "a limit at a distance")
+  asked(ex("sas34 red 160 kts until 4 dme"), "a limit at a distance")
 end
 
 -- The online network's words for a pilot gone, given as the reason for removing the aircraft ("pilot dc'd",
@@ -4485,7 +4477,7 @@ do
   check_eq(ex("sim stop"), "HOLD")
   check_eq(ex(".hold"), "HOLD")
   check_eq(ex("scandinavian 35, wind 240 at 12, reduce 200"), "SPD SAS35 200")
-  check(ex("sas35 pilot went afk"):match("^ASK") ~= nil, "a reason with no instruction")
+  asked(ex("sas35 pilot went afk"), "a reason with no instruction")
 end
 
 -- A clause opening "at WPT" before a climb, descent or speed change with a bare number ("at KOBRA desc
@@ -4495,8 +4487,8 @@ do
     "ADDWPT SAS36 KOBRA" })
   check_eq(ex("SAS36 at KOBRA desc 4000"), "AT SAS36 KOBRA ALT 4000")
   check_eq(ex("SAS36 at KOBRA reduce to 210"), "AT SAS36 KOBRA SPD 210")
-  check(ex("SAS36 at LUPUS desc 4000"):match("^ASK") ~= nil, "a waypoint off the route")
-  check(ex("SAS36 at KOBRA descend 40"):match("^ASK") ~= nil, "a bare number under 1000")
+  asked(ex("SAS36 at LUPUS desc 4000"), "a waypoint off the route")
+  asked(ex("SAS36 at KOBRA descend 40"), "a bare number under 1000")
 end
 
 -- Creation places and the reference position: a place where traffic is created is issued by its ident
@@ -4553,8 +4545,8 @@ do
   local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE BAW8CK A320 52.0 4.0 025 FL200 250",
     "DEFWPT TOLIP 52.3 4.6", "ADDWPT KLM77 TOLIP" })
   check_eq(ex("klm77 hdg 1 8 0"), "HDG KLM77 180")
-  check(ex("klm77 hdg 1 80"):match("^ASK") ~= nil, ex("klm77 hdg 1 80"))
-  check(ex("klm77 fl 1 20"):match("^ASK") ~= nil, ex("klm77 fl 1 20"))
+  asked(ex("klm77 hdg 1 80"), ex("klm77 hdg 1 80"))
+  asked(ex("klm77 fl 1 20"), ex("klm77 fl 1 20"))
   check_eq(ex("klm77 dct tolip"), "DIRECT klm77 tolip")
   check_eq(ex("klm77 dct tolpi"), "ASK Did you mean TOLIP? I heard 'tolpi'.")
   check_eq(ex("klm77 baw8ck descend fl90"), "ASK Which aircraft do you mean: KLM77, BAW8CK or both?")
@@ -4566,14 +4558,14 @@ do
     ex("klm77 descend fl100, then level"))
   check(ex("klm77 hdg 200 and spd"):match("^ASK I have HDG KLM77 200%. 'spd' ends") ~= nil, ex("klm77 hdg 200 and spd"))
   check(ex("klm77 descend fl120 hdg"):match("^ASK I have ALT KLM77 FL120%. 'hdg' ends") ~= nil, ex("klm77 descend fl120 hdg"))
-  check(ex("klm77 spd 30"):match("^ASK") ~= nil, ex("klm77 spd 30"))
+  asked(ex("klm77 spd 30"), ex("klm77 spd 30"))
   check_eq(ex("spd klm77 0.78"), "SPD klm77 0.78")
   -- a heading of one digit and a vertical speed under lexicon.min_typed_fpm, typed, are asked
   check(ex("klm77 hdg 3"):match("^ASK What heading") ~= nil, ex("klm77 hdg 3"))
   check(ex("klm77 vs -12"):match("^ASK What vertical speed") ~= nil, ex("klm77 vs -12"))
   check_eq(ex("klm77 vs -1200"), "VS klm77 -1200")
   check_eq(ex("klm77 hdg 007"), "HDG klm77 007")
-  check(ex("cre tst5 b738 52 4 180 fl100 30"):match("^ASK") ~= nil, ex("cre tst5 b738 52 4 180 fl100 30"))
+  asked(ex("cre tst5 b738 52 4 180 fl100 30"), ex("cre tst5 b738 52 4 180 fl100 30"))
   check(ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"):match("^ASK TST5 would fly at 30 kt") ~= nil,
     ex("create tst5 b738 at 52 4 heading 180 fl100 speed 30 knots"))
   check_eq(ex("cre tst6 b738 52 4 180 fl100 300"), "CRE tst6 b738 52 4 180 fl100 300")
@@ -4589,7 +4581,7 @@ do
   check_eq(ex("klm77 spd 230 hmm no 240"), "SPD KLM77 240")
   check_eq(ex("klm77 dct tolip err mavor"), "DIRECT KLM77 MAVOR")
   check_eq(ex("klm77 hdg 240 err"), "HDG KLM77 240")
-  check(ex("klm77 hdg 240 err 250 270"):match("^ASK") ~= nil, ex("klm77 hdg 240 err 250 270"))
+  asked(ex("klm77 hdg 240 err 250 270"), ex("klm77 hdg 240 err 250 270"))
 end
 
 -- What squawk does not simulate, typed short (R61): "squak"/"sqwk" is a transponder code, a controller
@@ -4612,7 +4604,7 @@ do
   -- a plus typed before a vertical speed is its sign; "kits" after a speed is knots
   check_eq(ex("klm77 fl190 vs +1200"), "ALT KLM77 FL190 ; VS KLM77 1200")
   check_eq(ex("klm77 spd 230 kits"), "SPD KLM77 230")
-  check(ex("klm77 spd +20"):match("^ASK") ~= nil, ex("klm77 spd +20"))
+  asked(ex("klm77 spd +20"), ex("klm77 spd +20"))
   check(ex("klm77 climb fl200 .78"):match("^ALT KLM77 FL200") ~= nil, ex("klm77 climb fl200 .78"))
 end
 
@@ -4622,14 +4614,14 @@ do
   local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
   check_eq(ex("klm77climb fl190"), "ALT KLM77 FL190")
   check_eq(ex("klm77hdg 250"), "HDG KLM77 250")
-  check(ex("klm77xyz climb fl190"):match("^ASK") ~= nil, ex("klm77xyz climb fl190"))
+  asked(ex("klm77xyz climb fl190"), ex("klm77xyz climb fl190"))
 end
 
 -- "back to real time" said after the rate typed as 1 explains it (R61); alone it is still asked (OP or DTMULT 1)
 do
   local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
   check_eq(ex("dtmult 1, back to real time"), "DTMULT 1")
-  check(ex("dtmult 4 back to real time"):match("^ASK") ~= nil, ex("dtmult 4 back to real time"))
+  asked(ex("dtmult 4 back to real time"), ex("dtmult 4 back to real time"))
 end
 
 -- Cycle 29 (R62): a bare spoken "maintain NNN" is the level kept when it is the aircraft's own present
@@ -4657,12 +4649,12 @@ do
   check_eq(ex("Volaris 27 proceda directo a ALPHA"), "DIRECT VOI27 ALPHA")
   check_eq(ex("Aeromexico 318 mantenga rumbo actual"), "HDG AMX318 30")
   check_eq(ex("Aeromexico 318 mantenga velocidad actual"), "SPD AMX318 280")
-  check(ex("Aeromexico 318 rumbo actual"):match("^ASK") ~= nil, "rumbo actual with no verb")
+  asked(ex("Aeromexico 318 rumbo actual"), "rumbo actual with no verb")
   check_eq(ex("amx318 dsnd 9000"), "ALT AMX318 9000")
   check_eq(ex("voi27 clmb fl240"), "ALT VOI27 FL240")
   -- where the class stops: a Spanish verb with no value of its own after it is asked about
-  check(ex("Volaris 27 mantenga"):match("^ASK") ~= nil, "mantenga with nothing after it")
-  check(ex("Volaris 27 vire, uh"):match("^ASK") ~= nil, "vire with nothing after it")
+  asked(ex("Volaris 27 mantenga"), "mantenga with nothing after it")
+  asked(ex("Volaris 27 vire, uh"), "vire with nothing after it")
 end
 
 -- Cycle 29 (R62): three digits alone after a level passed, left or reached ("passing two two zero increase
@@ -4672,7 +4664,7 @@ do
   check_eq(ex("Copa 77 climb flight level three one zero, passing two four zero increase mach point seven eight"),
     "ALT CMP77 FL310 ; ATALT CMP77 FL240 SPD CMP77 M0.78")
   check_eq(ex("Copa 77 climb FL310, leaving 250 reduce 270 knots"), "ALT CMP77 FL310 ; ATALT CMP77 FL250 SPD CMP77 270")
-  check(ex("Copa 77 climb flight level three one zero, at two two zero reduce two five zero knots"):match("^ASK") ~= nil,
+  asked(ex("Copa 77 climb flight level three one zero, at two two zero reduce two five zero knots"),
     "at three digits")
 end
 
@@ -4698,7 +4690,7 @@ do
   check_eq(ex("LIAT three sixty climb one one thousand"), "ALT LIA360 11000")
   check_eq(ex("take out Spirit nine zero two"), "DEL NKS902")
   check_eq(ex("Bahamas seven one turn right heading two zero zero"), "HDG BHS71 200 RIGHT")
-  check(ex("Cubana two one six descend flight level one eight zero"):match("^ASK") ~= nil, "CUB216 flies not")
+  asked(ex("Cubana two one six descend flight level one eight zero"), "CUB216 flies not")
 end
 
 -- Cycle 29 (R62): an aircraft and "route", a verb of showing after it ("route please, show it") lists the route;
@@ -4707,7 +4699,7 @@ do
   local _, ex = scene({ "CRE CMP902 B738 9.0 -79.0 090 FL200 280" })
   check_eq(ex("Copa 902 route please, show it"), "LISTRTE CMP902")
   check_eq(ex("cmp902 route, display"), "LISTRTE CMP902")
-  check(ex("Copa 902 route, show it to the students"):match("^ASK") ~= nil, "more after the verb")
+  asked(ex("Copa 902 route, show it to the students"), "more after the verb")
 end
 
 -- Cycle 29 (R62): the region's stations said by their city alone after the callsign ("Iberia 6621, Havana,
@@ -4720,7 +4712,7 @@ do
     check_eq(ex("Caribbean nine, Kingston, turn left heading two five zero"), "HDG BWA9 250 LEFT")
     check_eq(ex("BWA9 new destination Montego Bay"), "DEST BWA9 MKJS")
     -- (a name that is no station nor city there is still asked about)
-    check(ex("Iberia 6621, Habanero, descend flight level two eight zero"):match("^ASK") ~= nil, "no station")
+    asked(ex("Iberia 6621, Habanero, descend flight level two eight zero"), "no station")
   end
 end
 
@@ -4735,8 +4727,8 @@ do
     "CRE IBE44 A333 20 -70 270 FL350 280")
   check_eq(ex("create IBE45, Airbus three three zero dash two hundred, at 20 north 71 west, heading 270, FL330, 280 knots"),
     "CRE IBE45 A332 20 -71 270 FL330 280")
-  check(ex("create CMP72, Boeing seven three seven dash eight, at 9 north 78 west, heading 090, FL240, 290 knots")
-    :match("^ASK") ~= nil, "dash eight")
+  asked(ex("create CMP72, Boeing seven three seven dash eight, at 9 north 78 west, heading 090, FL240, 290 knots"),
+    "dash eight")
 end
 
 -- Cycle 30 (R63): "request your <state>" is the controller asking the aircraft's own value (a report), never an
@@ -4754,7 +4746,7 @@ do
   local _, ex = scene({ "CRE DAH2050 A332 36.5 3.0 090 FL350 280" })
   check_eq(ex("Air Algerie 2050 mach 0,81"), "SPD DAH2050 M0.81")
   check_eq(ex("DAH2050 maintain mach 0,8"), "SPD DAH2050 M0.8")
-  check(ex("DAH2050 mach 1,81"):match("^ASK") ~= nil, "1,81 is no Mach number")
+  asked(ex("DAH2050 mach 1,81"), "1,81 is no Mach number")
 end
 
 -- Cycle 30 (R63): typed thousands and hundreds, "8 thousand 500 feet", "6 thousand 5 hundred": one altitude; a
@@ -4780,7 +4772,7 @@ do
   check_eq(ex("move Royal Maroc 1190 to 33.1 -7.6"), "MOVE RAM1190 33.1 -7.6")
   check_eq(ex("Royal Maroc 1190 turn right heading 060"), "HDG RAM1190 60 RIGHT")
   check_eq(ex("create Nouvelair 703 A320 at 36.2 10.1 heading 180 FL100 240"), "CRE LBT703 A320 36.2 10.1 180 FL100 240")
-  check(ex("Nile Bird 331 climb flight level 210"):match("^ASK") ~= nil, "no such flight")
+  asked(ex("Nile Bird 331 climb flight level 210"), "no such flight")
 end
 
 -- Cycle 30 (R63): "run x4": the clock's multiplier typed straight after "run", nothing after it; "put ... back to
@@ -4826,7 +4818,7 @@ end
 do
   local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
   check(ex("have KLM88 climb 1200 m/min"):match("^ASK .*metres per min") ~= nil, "m/min")
-  check(ex("KLM88 climb 900 metres per minute"):match("^ASK") ~= nil, "metres per minute")
+  asked(ex("KLM88 climb 900 metres per minute"), "metres per minute")
   check(ex("KLM88 climb 16000 m"):match("^ASK Which altitude for KLM88") ~= nil, "16000 m")
   check_eq(ex("KLM88 climb 11600 m"), "ALT KLM88 38058")
 end
@@ -4836,7 +4828,7 @@ end
 do
   local _, ex = scene({ "CRE KLM88 A320 52.0 4.0 090 FL250 280" })
   check(ex("FF until t=30 min"):match("^ASK For how long") ~= nil, "until t=30")
-  check(ex("fast forward until sim time 00:45:00"):match("^ASK") ~= nil, "until a clock time")
+  asked(ex("fast forward until sim time 00:45:00"), "until a clock time")
   check_eq(ex("fast forward until I say stop"), "FF")
 end
 
@@ -4863,5 +4855,5 @@ do
   local _, ex = scene({ "CRE NOZ77 DH8D 60.2 5.1 090 FL100 250" })
   check_eq(ex("NOZ77 descend 3000 feet QNH 1021, 180 knots"), "ALT NOZ77 3000 ; SPD NOZ77 180")
   check_eq(ex("NOZ77 descend 3000 feet QNH 1021"), "ALT NOZ77 3000")
-  check(ex("NOZ77 descend 3000 feet QNH 1021, 180"):match("^ASK") ~= nil, "a bare number after the setting")
+  asked(ex("NOZ77 descend 3000 feet QNH 1021, 180"), "a bare number after the setting")
 end
