@@ -153,13 +153,21 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       } else if (word_at(t, j, {"fpm"})) {
         q.kind = QKind::kVs;
         ++j;
+      } else if (q.kind == QKind::kPlain && !n->has_decimal && std::fabs(q.value) >= 100.0 &&
+                 std::fabs(q.value) < 10000.0 && word_at(t, j, {"per", "a"}) &&
+                 word_at(t, j + 1, {"minute", "min"})) {
+        // "2000 a minute", "1500 per minute": a climb or descent rate [ft/min] said without its
+        // feet
+        q.kind = QKind::kVs;
+        j += 2;
       } else if (word_at(t, j, {"k"})) {
         q.kind = QKind::kAlt;
         q.value *= 1000.0;
         ++j;
         if (word_at(t, j, {"ft", "feet"})) ++j;
-      } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) && word_at(t, j + 1, {"per", "a"}) &&
-                 word_at(t, j + 2, {"s", "second", "sec"}) && q.kind == QKind::kPlain) {
+      } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) &&
+                 word_at(t, j + 1, {"per", "a"}) && word_at(t, j + 2, {"s", "second", "sec"}) &&
+                 q.kind == QKind::kPlain) {
         // "10 metres per second", "m/s" -> [ft/min], whole; from 40 m/s (7874 ft/min, beyond any
         // climb) an airspeed -> [kt], to 0.1 ("velocity 150 m/s")
         if (std::fabs(q.value) >= 40.0) {
@@ -170,7 +178,8 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
           q.value = std::round(q.value / 0.3048 * 60.0);
         }
         j += 3;
-      } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) && q.kind == QKind::kPlain) {
+      } else if (word_at(t, j, {"m", "metres", "meters", "metre", "meter"}) &&
+                 q.kind == QKind::kPlain) {
         q.kind = QKind::kAlt;
         q.value = std::round(q.value / 0.3048);  // [ft], whole
         ++j;

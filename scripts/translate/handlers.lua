@@ -717,7 +717,7 @@ function m:airline_types()
     -- (with one aircraft flying the matcher may have heard "Ryanair 738" as it: inexactly, heard.id)
     local heard = r.kind == "aircraft" and (not r.exists and r.name or (r.heard and r.heard.id ~= "" and r.heard.id))
     local digits = heard and heard:match("^%a+(%d+)$")
-    local ty = digits and (L.airline_variant[digits] or models[digits] or short[digits])
+    local ty = digits and (models[digits] or short[digits])
     if ty and self:word(r.b - 1, "@articles_new more") and nxt and nxt.kind == "aircraft"
         and nxt.b <= self:skip_fillers(r.e, false) + 1 then
       self.refs[k] = { kind = "type", name = ty, b = r.b, e = r.e }

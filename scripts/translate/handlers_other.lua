@@ -151,7 +151,7 @@ return function(H, f, compass)
         for _, d in ipairs(require("translate.names").designators) do
           if d:match("^B" .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
         end
-        return self:need(string.format("Which variant of the %s is meant: %s?", self:raw(types[1].b, types[1].e),
+        return self:need(string.format("Which variant of the %s is meant: %s?", fam,
           table.concat(variants, ", ")))
       end
     end

@@ -431,14 +431,12 @@ return {
   waypoint_nouns = { "waypoint", "wpt", "wp", "fix", "waypoints", "fixes", "wpts", "wps" },
   route_nouns = { "route", "plan", "path", "routing", "rte" },
   articles_new = { "a", "an", "new", "second", "another", "more" },
-  -- a family said with an airline ("a Ryanair 737") is the variant airlines fly (the 737-800), not
-  -- the family's first designator (B737, the 737-700), which a family said alone still names
-  airline_variant = { ["737"] = "B738" },
-  -- families whose first variant in the data is not the one a writer means by the family's name alone
-  -- ("a Boeing 767": B762 in the data, B763 meant; "a United 787": B788 or B789): asked about when an
-  -- aircraft is created; any other family is its first variant (757 -> B752, 777 -> B772, A330 -> A332,
-  -- A350 -> A359, types.lua), as the writers of every round so far read them
-  variant_families = { "767", "787" },
+  -- families whose first variant in the data is not the one every writer means by the family's name alone
+  -- ("a Boeing 767": B762 in the data, B763 meant; "a United 787": B788 or B789; "a 737", "a Southwest 737":
+  -- B737 to some writers, B738 to others, with or without an airline): asked about when an aircraft is
+  -- created; any other family is its first variant (757 -> B752, 777 -> B772, A330 -> A332, A350 -> A359,
+  -- types.lua), as the writers of every round so far read them
+  variant_families = { "737", "767", "787" },
   all = { "all", "both", "every", "everything" },
   -- direction of a change: +1 words and -1 words
   up = { "climb", "clb", "up", "raise", "increase", "faster", "above", "higher", "accelerate", "climbing",

@@ -520,8 +520,8 @@ end
 check_eq(said(tr("resume the simulation at x3")), "OP ; DTMULT 3")
 check_eq(said(tr("resume at double speed")), "OP ; DTMULT 2")
 -- a family said as its number after an article is that type; the orbit "a 360" stays an orbit
-check_eq(said(tr("add a 737 called TST9 at 52.1 north 4.3 east heading 270 FL320 450 knots")),
-  "CRE TST9 B737 52.1 4.3 270 FL320 450")
+check_eq(said(tr("add a 757 called TST9 at 52.1 north 4.3 east heading 270 FL320 450 knots")),
+  "CRE TST9 B752 52.1 4.3 270 FL320 450")
 -- "insert" before a new callsign or a type creates it; before a waypoint and a route it adds the waypoint
 check_eq(said(tr("insert TST7 B736 at 52.2 4.4 heading 180 FL110 260")), "CRE TST7 B736 52.2 4.4 180 FL110 260")
 check_eq(said(tr("insert an A320 TST8 at 52.2 4.4 heading 090 FL150 280")), "CRE TST8 A320 52.2 4.4 90 FL150 280")
@@ -733,9 +733,9 @@ do
   -- a new aircraft introduced by its airline and model number, the callsign after: the number is the type
   check_eq(ft("could we add a Delta 757, DAL77, at 52.6 north 4.9 east heading 180 FL 240 and 280 knots?"),
     "CRE DAL77 B752 52.6 4.9 180 FL240 280")
-  -- (a 737 said with an airline is the 737-800 airlines fly: lexicon.airline_variant)
+  -- (a 737 without its variant, with an airline or not, is asked: writers read it B737 or B738)
   check_eq(ft("let's start with a Ryanair 737, RYR12, at 52.7 north 4.1 east, heading west, FL 300 at 290 knots"),
-    "CRE RYR12 B738 52.7 4.1 270 FL300 290")
+    "ASK Which variant of the 737 is meant: B733, B734, B735, B736, B737, B738, B739?")
   -- a place corrected in the request is the one after the correction, or asked, never the first
   r = graph.translate("I'd like an aircraft SWR18, an A320, at SUGOL... no, sorry, at ARTIP, heading 090, "
     .. "FL 100, 250 knots", { sim = fleet, mode = "offline" })
@@ -968,7 +968,7 @@ end
 -- the turn's direction) before it; a speaker's label is no part of the request; "when you reach"
 -- a level makes the instruction wait for it; a plain "then" lists the next instruction, the
 -- formal "descend and maintain ... then" waits; a waypoint's type said as what it is; "resume own
--- navigation" with no route is asked about; a flight number's letters said apart; an airline's 737
+-- navigation" with no route is asked about; a flight number's letters said apart; an airline's 738
 do
   local lab, lt = scene({ "CRE KLM1234 B738 52.6 4.2 140 FL250 290", "CRE RYR81JC B738 51.2 0.4 310 FL110 250",
       "CRE EIN44 A320 51.75 4.45 315 FL320 290", "CRE BAW123 A321 52.2 3.9 060 FL120 250",
@@ -1003,9 +1003,9 @@ do
   check_eq(lt("RYR81JC go back on your route"), "LNAV RYR81JC ON")
   check_eq(lt("RYR81JC rejoin the route please"), "LNAV RYR81JC ON")
   check_eq(lt("ryanair 81 JC turn left heading 250"), "HDG RYR81JC 250 LEFT")
-  check_eq(lt("add a Ryanair 737, RYR22AB, at 51.5 0.5, heading 090, FL200, 250 knots"),
+  check_eq(lt("add a Ryanair 738, RYR22AB, at 51.5 0.5, heading 090, FL200, 250 knots"),
     "CRE RYR22AB B738 51.5 0.5 90 FL200 250")
-  check_eq(lt("add a 737 called TST4 at ALPHA heading 225 at FL320 doing 280 knots"),
+  check_eq(lt("add a 737-700 called TST4 at ALPHA heading 225 at FL320 doing 280 knots"),
     "CRE TST4 B737 ALPHA 225 FL320 280")
   -- an intruder's time: after "loss of separation", or the one time said with no vertical part
   check_eq(lt("make an intruder named INT7, A320, against BAW123, at 60 degrees, cpa 1, separation lost in 240 seconds"),
@@ -4856,4 +4856,27 @@ do
   check_eq(ex("NOZ77 descend 3000 feet QNH 1021, 180 knots"), "ALT NOZ77 3000 ; SPD NOZ77 180")
   check_eq(ex("NOZ77 descend 3000 feet QNH 1021"), "ALT NOZ77 3000")
   asked(ex("NOZ77 descend 3000 feet QNH 1021, 180"), "a bare number after the setting")
+end
+
+-- Cycle 32 (R66): a 737 said without its variant ("a 737", "a Spirit 737", "Boeing seven three seven") is
+-- asked about as the 767 and 787 are: writers read it B737 or B738; a variant said or written is that one
+do
+  local _, ex = scene({ "CRE NKS44 A320 35.0 -97.0 090 FL150 280" })
+  local which = "ASK Which variant of the 737 is meant: B733, B734, B735, B736, B737, B738, B739?"
+  check_eq(ex("add a Spirit 737, NKS9, at 35.2 -97.1 heading 180 FL200 280 knots"), which)
+  check_eq(ex("put in a boeing seven three seven called TST3 at 35.2 -97.1 heading 180 FL200 280 knots"), which)
+  check_eq(ex("add a Boeing 737-900, NKS10, at 35.2 -97.1 heading 180 FL200 280 knots"),
+    "CRE NKS10 B739 35.2 -97.1 180 FL200 280")
+  check_eq(ex("add a Spirit 738, NKS11, at 35.2 -97.1 heading 180 FL200 280 knots"),
+    "CRE NKS11 B738 35.2 -97.1 180 FL200 280")
+end
+
+-- Cycle 32 (R66): a rate said as a number and "a minute" or "per minute" without its feet is a vertical speed
+-- [ft/min] ("climb at 1800 a minute", "descend at 3000 per minute down to 8000"); a number under 100 a
+-- minute is no climb rate and is still asked about
+do
+  local _, ex = scene({ "CRE NKS44 A320 35.0 -97.0 090 FL150 280" })
+  check_eq(ex("NKS44 climb and maintain flight level two zero zero, climb at 1800 a minute"), "ALT NKS44 FL200 1800")
+  check_eq(ex("NKS44 descend at 3000 per minute down to eight thousand"), "ALT NKS44 8000 3000")
+  asked(ex("NKS44 climb FL200 at 40 a minute"), "40 a minute is no climb rate")
 end
