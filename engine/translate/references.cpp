@@ -399,6 +399,13 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       }
       if (suf.groups.empty() || names.phonetic_letter(t[i + len].text) != 0) break;
       std::string id = *icao + text::upper(suf.joined(suf.groups.size()));
+      // "when you reach 15000", "once it reaches FL200": a telephony that is also a verb of
+      // reaching (Reach, RCH), said after its subject or "when"/"once", is the verb unless it names
+      // a flying aircraft
+      if (len == 1 && i > 0 && (t[i].text == "reach" || t[i].text == "reaches") &&
+          in_list({"you", "it", "he", "she", "they", "we", "when", "once", "to"}, t[i - 1].text) &&
+          !world_id(id))
+        break;
       size_t end = suf.ends.back();
       const bool exists = resolve(id, *icao, phrase, suf, end);
       add(RefKind::kAircraft, id, i, after_weight(t, end), exists, true);

@@ -1096,6 +1096,10 @@ function m:at_altitude(s)
   local got = self:find_word(b, s.trig, "get gets getting")
   local got_to = got < a and self:word(got + 1, "to")
   if got_to then a = got + 1 end
+  -- ("when out of 16000 slow to 280": "out of" after a condition word is a level left; "of" is the verb's)
+  local out = self:find_word(b, a, "out")
+  local left = out < a and self:word(out + 1, "of") and self:word_in(math.max(b, out - 2), out, "@condition")
+  if left then a = out + 1 end
   if a >= s.trig and s.intent ~= "alt" then
     for i = b, self:said("level") and s.trig - 1 or 0 do
       if self:word(i, "level") and not self:word(i - 1, "flight") and self:word_in(math.max(b, i - 3), i, "@condition") then
@@ -1110,7 +1114,7 @@ function m:at_altitude(s)
   -- a value said before the condition is another instruction's, which must not wait for it
   if #self:quantities(b, a) > 0 then return nil end
   if (s.intent == "maintain" or s.intent == "alt" or NAV_INTENTS[s.intent] or s.intent == "vs")
-      and not self:word(a, "passing leaving reaching") and not got_to then
+      and not self:word(a, "passing leaving reaching") and not got_to and not left then
     return nil
   end
   -- "passing FL355 descending FL340" is a pilot's report; "when passing ... descend" and "leaving 11000
@@ -1129,7 +1133,7 @@ function m:at_altitude(s)
   if k ~= s.trig then return nil end
   -- ("passing two two zero increase Mach .78": three digits alone after a level passed, left or reached are
   -- a flight level)
-  local fl_digits = q.kind == "plain" and self:word(a, "passing leaving reaching") and #q.number.digits == 3
+  local fl_digits = q.kind == "plain" and (self:word(a, "passing leaving reaching") or left) and #q.number.digits == 3
     and q.value >= 100 and q.value <= 600 and not q.number.thousand and not q.number.hundred
   if q.kind ~= "alt" and not fl_digits and not (q.kind == "plain" and (q.number.thousand or q.value >= 1000)) then
     return nil

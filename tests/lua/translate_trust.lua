@@ -4880,3 +4880,14 @@ do
   check_eq(ex("NKS44 descend at 3000 per minute down to eight thousand"), "ALT NKS44 8000 3000")
   asked(ex("NKS44 climb FL200 at 40 a minute"), "40 a minute is no climb rate")
 end
+
+-- Cycle 32 (R66): a level the next instruction waits for, said as "when you reach 12000" (Reach, RCH, is the
+-- verb there, no callsign) or "when out of FL160" (a level left): ATALT; "out of" with no level still asks
+do
+  local _, ex = scene({ "CRE DAL19 A320 35.0 -97.0 090 FL200 300" })
+  check_eq(ex("DAL19 descend to 12000 and when you reach 12000 turn right heading 180"),
+    "ALT DAL19 12000 ; ATALT DAL19 12000 HDG DAL19 180 RIGHT")
+  check_eq(ex("DAL19 descend and maintain one one thousand, once out of one four thousand reduce to 250"),
+    "ALT DAL19 11000 ; ATALT DAL19 14000 SPD DAL19 250")
+  asked(ex("DAL19 descend to 11000, when out of fuel slow to 250"), "out of no level")
+end
