@@ -186,6 +186,16 @@ return function(intent, rule, words)
   -- "put the sim 3 times faster, the climb takes too long", "the turn was too late": the instruction word after
   -- "the", the subject of a verb of description, is a noun
   rule { "climb descent turn", false, prev = { 1, "the" }, next = "takes took is was seems looks" }
+  -- "is SKW44 still climbing?", "is the Delta descending", "what's SKW44 up to": a question about what an
+  -- aircraft named is doing, with no value said, asks for its report (POS), never a climb or descent
+  rule { "climbing descending", "pos", when = function(g, i)
+    local q = g:skip_fillers(1)
+    return g:word(q, "is") and g:has_ref(q + 1, i, "aircraft") and #g:quantities(1, #g.t + 1) == 0
+  end }
+  rule { "up", "pos", next = "to", when = function(g, i)
+    local q = g:skip_fillers(1)
+    return g:word(q, "what's whats what") and g:has_ref(q + 1, i, "aircraft") and g:skip_fillers(i + 2) > #g.t
+  end }
   -- altitude
   rule { "climb climbing descend descending altitude alt cruise altitudes drop", false, prev = { 2, "rate" } }
   -- "1800 fpm descending", "a thousand foot a minute descent": the word gives the rate's sign

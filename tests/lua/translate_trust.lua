@@ -4891,3 +4891,12 @@ do
     "ALT DAL19 11000 ; ATALT DAL19 14000 SPD DAL19 250")
   asked(ex("DAL19 descend to 11000, when out of fuel slow to 250"), "out of no level")
 end
+
+-- Cycle 32 (R66): "is X still climbing?", "what's X up to": a question about what an aircraft is doing, no
+-- value said, is its report (POS); with a level said it is still the climb
+do
+  local _, ex = scene({ "CRE SKW44 CRJ9 35.0 -97.0 090 8000 250" })
+  check_eq(ex("is skywest 44 still descending?"), "POS SKW44")
+  check_eq(ex("so what is SKW44 up to?"), "POS SKW44")
+  check_eq(ex("SKW44 climbing FL200"), "ALT SKW44 FL200")
+end
