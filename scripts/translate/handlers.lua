@@ -1163,6 +1163,8 @@ function m:at_time(s)
       if q.b > s.trig and self:word_in(s.trig, w, "and then") then return nil end
       self:mark_used(q.b, q.e)
       self:mark_used(w, w + 1)
+      -- ("pause it at the 20 minute mark": the time's noun after it)
+      if self:word(q.e, "mark") then self:mark_used(q.e, q.e + 1) end
       local t = math.floor(q.value + 0.5)
       local at = self:word(w, "in after") and "DELAY " .. f.num(q.value)
         or string.format("SCHEDULE %02d:%02d:%02d", t // 3600, t % 3600 // 60, t % 60)

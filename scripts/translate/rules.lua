@@ -1199,7 +1199,11 @@ return function(intent, rule, words)
   end }
   -- "pause, time step 0.1, then start again": the clock started again, a clause of its own
   rule { "start", "op", next = "again", when = function(g, i) return g:clause_alone(i, i + 2) end }
-  rule { "run", "op", next = "it", when = function(g, i) return g:alone_but(i, i + 2) end }  -- "run it"
+  -- "run it", "start it", "go ahead and start it": the clock, said alone
+  rule { "run start", "op", next = "it", when = function(g, i)
+    local b = g:word(i - 1, "and") and g:word(i - 2, "ahead") and g:word(i - 3, "go") and i - 3 or i
+    return g:alone_but(b, i + 2)
+  end }
   -- "could you start it again?": the clock, no aircraft named in the request
   rule { "start", "op", next = "it", when = function(g, i)
     return g:word(i + 2, "again") and not g:has_ref(1, #g.t + 1, "aircraft")

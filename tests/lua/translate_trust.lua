@@ -4900,3 +4900,13 @@ do
   check_eq(ex("so what is SKW44 up to?"), "POS SKW44")
   check_eq(ex("SKW44 climbing FL200"), "ALT SKW44 FL200")
 end
+
+-- Cycle 32 (R66): the clock started by "start it" or "go ahead and start it" said alone (OP); a time's "mark"
+-- ("pause it at the 20 minute mark") is the time's noun; "start it" with an aircraft named is no clock
+do
+  local _, ex = scene({ "CRE SKW44 CRJ9 35.0 -97.0 090 8000 250" })
+  check_eq(ex("ok go ahead and start it"), "OP")
+  check_eq(ex("start it please"), "OP")
+  check_eq(ex("freeze it at the 35 minute mark"), "SCHEDULE 00:35:00 HOLD")
+  asked(ex("SKW44 go ahead and start it"), "start it with an aircraft named")
+end
