@@ -286,20 +286,31 @@ end
 
 -- The request with each name of several words as its designator ("a 737 MAX 8" -> "a B38M").
 -- Designators said in the plural where traffic is created ("5 random A320s", "two B738s"): the
--- designator (a word that is a designator itself, or the id of an aircraft of `fleet`, stays).
+-- designator (a word that is a designator itself, or the id of an aircraft of `fleet`, stays); the digits
+-- of exactly one Airbus or Boeing designator in the plural ("8 random 738s", "320s") are that designator,
+-- except a family's number that names no one variant (`families`, lexicon.variant_families: "737s").
 local lower_designators = setmetatable({}, { __mode = "k" })  -- [built] = {[designator in lower case] = true}
-function M.plurals(text, built, fleet)
+local short_designators = setmetatable({}, { __mode = "k" })  -- [built] = {[digits] = designator or false}
+function M.plurals(text, built, fleet, families)
   local designators = lower_designators[built]
   if not designators then
     designators = {}
-    for _, d in ipairs(built.designators) do designators[d:lower()] = true end
-    lower_designators[built] = designators
+    local short = {}
+    for _, d in ipairs(built.designators) do
+      designators[d:lower()] = true
+      local digits = d:match("^[AB](%d%d%d)$")
+      if digits then short[digits] = short[digits] == nil and d or false end
+    end
+    for _, fam in ipairs(families or {}) do short[fam] = false end
+    lower_designators[built], short_designators[built] = designators, short
   end
+  local short = short_designators[built]
   local ids = {}
   for _, a in ipairs(fleet or {}) do ids[a.id:lower()] = true end
   local function known(w) return designators[w] or ids[w] end
   return (text:gsub("%f[%w](%w+)[sS]%f[%W]", function(d)
     if known(d:lower()) and not known((d .. "s"):lower()) then return d end
+    if short[d] then return short[d] end
   end))
 end
 

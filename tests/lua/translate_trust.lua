@@ -4910,3 +4910,13 @@ do
   check_eq(ex("freeze it at the 35 minute mark"), "SCHEDULE 00:35:00 HOLD")
   asked(ex("SKW44 go ahead and start it"), "start it with an aircraft named")
 end
+
+-- Cycle 32 (R66): the digits of one Airbus or Boeing designator in the plural where random traffic is made
+-- ("6 random 738s", "319s") are that designator; a family's number ("737s", "767s") names no one variant and
+-- is still asked about
+do
+  local _, ex = scene({ "CRE SKW44 CRJ9 35.0 -97.0 090 8000 250" })
+  check_eq(ex("add 6 random 738s at FL310"), "MCRE 6 B738 FL310")
+  check_eq(ex("generate 4 random 319s"), "MCRE 4 A319")
+  asked(ex("add 6 random 767s at FL310"), "a family in the plural")
+end
