@@ -308,6 +308,10 @@ function m:as_context(i)
       end
     end
   end
+  -- ("traffic alert, DAL2104 turn left heading 360": an aircraft opening its clause after a comma, its
+  -- instruction word straight after it, is the one instructed)
+  local named = self.t[i - 1] and self.t[i - 1].text == "," and self:refs_in(i, i + 1, "aircraft")[1]
+  if named and self:intent_at(self:skip_fillers(named.e)) then return false end
   for k = i - 1, math.max(1, i - 3), -1 do
     -- (nor across a sentence's end: "OK, conflict time. Jetairfly climb FL310")
     if self:intent_at(k) or (self.t[k].kind == "punct" and self.t[k].text ~= ",") then return false end

@@ -4920,3 +4920,13 @@ do
   check_eq(ex("generate 4 random 319s"), "MCRE 4 A319")
   asked(ex("add 6 random 767s at FL310"), "a family in the plural")
 end
+
+-- Cycle 32 (R66): a remark on the traffic before a comma ("traffic alert, DAL2104 turn left ...") leaves the
+-- aircraft opening the next clause, its instruction straight after it, the one instructed; an aircraft after
+-- "avoid the traffic," with no instruction of its own is still asked about
+do
+  local _, ex = scene({ "CRE DAL2104 A320 35.0 -97.0 090 FL250 280", "CRE AAL31 A320 35.1 -97.2 270 FL250 280" })
+  check_eq(ex("traffic alert, DAL2104 turn right heading 180 now"), "HDG DAL2104 180 RIGHT")
+  check_eq(ex("conflict alert, american 31 descend FL230"), "ALT AAL31 FL230")
+  asked(ex("climb FL270 to avoid the traffic, AAL31"), "the aircraft after the comma, no instruction after it")
+end
