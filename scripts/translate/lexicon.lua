@@ -93,7 +93,7 @@ return {
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
-        "put", "keep", "set", "bring", "take", "ready", "appreciate", "instruct", "sure",
+        "put", "throw", "keep", "set", "bring", "take", "ready", "appreciate", "instruct", "sure",
         -- verbs of opinion that frame a request ("I think the easyJet should go direct")
         "think", "guess", "believe", "suppose", "reckon", "wonder", "hope", "prefer", "realise", "realize",
         "know", "remember", "forget", "forgot", "notice", "grateful", "thankful",

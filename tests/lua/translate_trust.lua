@@ -4918,6 +4918,9 @@ do
   local _, ex = scene({ "CRE SKW44 CRJ9 35.0 -97.0 090 8000 250" })
   check_eq(ex("add 6 random 738s at FL310"), "MCRE 6 B738 FL310")
   check_eq(ex("generate 4 random 319s"), "MCRE 4 A319")
+  -- ("throw in": a verb of framing, as "put in")
+  local _, ex2 = scene({ "CRE SKW44 CRJ9 35.0 -97.0 090 8000 250", "CRE SKW45 CRJ9 35.5 -97.0 090 9000 250" })
+  check_eq(ex2("throw in 5 random 320s at FL280"), "MCRE 5 A320 FL280")
   asked(ex("add 6 random 767s at FL310"), "a family in the plural")
 end
 
