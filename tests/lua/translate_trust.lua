@@ -4857,3 +4857,15 @@ do
   check_eq(ex("NOZ77 descend 3000 feet QNH 1021"), "ALT NOZ77 3000")
   asked(ex("NOZ77 descend 3000 feet QNH 1021, 180"), "a bare number after the setting")
 end
+
+-- Cycle 32 (R65): Scandinavian telephony ("Viking": Sunclass; "Braathens") is a callsign's airline wherever the
+-- callsign stands, after a verb too ("remove Viking 815"); the airline said before a typed callsign is its name;
+-- a flight number no aircraft of that airline flies is still asked about
+do
+  local _, ex = scene({ "CRE VKG815 A321 57.0 11.0 090 FL200 300", "CRE BRX7PA AT76 58.0 12.0 180 7000 210" })
+  check_eq(ex("remove Viking 815"), "DEL VKG815")
+  check_eq(ex("move Braathens 7PA to 57.5 11.5"), "MOVE BRX7PA 57.5 11.5")
+  check_eq(ex("Braathens seven papa alpha say altitude"), "POS BRX7PA")
+  check_eq(ex("create Sunclass VKG22 A320 56.1 12.2 heading 045 FL 150 speed 280"), "CRE VKG22 A320 56.1 12.2 45 FL150 280")
+  asked(ex("delete Viking 816"), "no such Viking flying")
+end
