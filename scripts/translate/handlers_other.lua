@@ -2373,10 +2373,11 @@ return function(H, f, compass)
         and not self:word_in(1, #self.t + 1, "direct dct") then
       return self:need(string.format("%s has no route to navigate by. Which waypoint or heading should it fly?", id))
     end
-    -- "resume own navigation to MIKSI": its route resumed at that place, a direct-to (which turns LNAV on)
+    -- "resume own navigation to MIKSI", "own navigation LILJA": its route resumed at that place (the waypoint
+    -- after "to", or straight after "navigation"), a direct-to (which turns LNAV on)
     if cmd == "LNAV" and on == "ON" then
       for _, r in ipairs(self:refs_in(s.trig + 1, s.e, "waypoint")) do
-        if self:word(r.b - 1, "to") then return self:direct(s) end
+        if self:word(r.b - 1, "to navigation") then return self:direct(s) end
       end
     end
     self:emit(cmd .. " " .. id .. " " .. on)

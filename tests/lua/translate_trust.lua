@@ -4869,3 +4869,14 @@ do
   check_eq(ex("create Sunclass VKG22 A320 56.1 12.2 heading 045 FL 150 speed 280"), "CRE VKG22 A320 56.1 12.2 45 FL150 280")
   asked(ex("delete Viking 816"), "no such Viking flying")
 end
+
+-- Cycle 32 (R65): "own navigation" with a waypoint straight after it ("own navigation ALFA") resumes the route
+-- there, a direct-to, as "own navigation to ALFA" does; a waypoint set off by a comma is still asked about
+do
+  local _, ex = scene({ "DEFWPT ALFA 60.3 24.9", "DEFWPT BRAVO 60.2 24.7", "CRE FIN4TK A320 60.5 25.5 250 FL110 270",
+    "ADDWPT FIN4TK ALFA", "ADDWPT FIN4TK BRAVO" })
+  check_eq(ex("FIN4TK own navigation BRAVO"), "DIRECT FIN4TK BRAVO")
+  check_eq(ex("FIN4TK speed 220, resume own navigation ALFA"), "SPD FIN4TK 220 ; DIRECT FIN4TK ALFA")
+  check_eq(ex("FIN4TK own navigation"), "LNAV FIN4TK ON")
+  asked(ex("FIN4TK resume own navigation, BRAVO"), "a waypoint after a comma")
+end
