@@ -4880,3 +4880,12 @@ do
   check_eq(ex("FIN4TK own navigation"), "LNAV FIN4TK ON")
   asked(ex("FIN4TK resume own navigation, BRAVO"), "a waypoint after a comma")
 end
+
+-- Cycle 32 (R65): "descend 3000 feet" typed from below FL120, in a terminal area, is the approach altitude
+-- cleared; from higher up it is still asked whether to or by, and "from where it is" is still a step
+do
+  local _, ex = scene({ "CRE SAS77K A320 55.6 12.6 090 9000 230", "CRE SAS88 A320 55.9 12.9 180 FL160 280" })
+  check_eq(ex("SAS77K descend 2000 feet, speed 180 knots"), "ALT SAS77K 2000 ; SPD SAS77K 180")
+  check_eq(ex("SAS77K descend 3000 feet from where it is"), "ALT SAS77K 6000")
+  check(ex("SAS88 descend 3000 ft"):match("^ASK Should SAS88 descend to 3000 ft or by 3000 ft") ~= nil, "from FL160")
+end
