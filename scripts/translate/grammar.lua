@@ -2681,8 +2681,11 @@ function G:at_waypoint(s, spec)
   for _, r in ipairs(refs) do
     -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200", "put a constraint on AEA44 at ORBIS,
     -- FL250", "at NORKU cross FL200", "at ELDAR speed 250": a constraint at a waypoint
-    local crossed = self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at")
+    -- ("cross LINSA FL120", "cross KERAB 5000 feet": "at" left out, a level or speed straight after the waypoint)
     local after = self:skip_fillers(r.e)
+    local next_q = self:word(r.b - 1, "cross crossing crosses") and self:quantities(after, s.e)[1]
+    local crossed = self:word(r.b - 1, "cross crossing crosses") and (self:word(after, "at")
+      or (next_q and next_q.b == after and (next_q.kind == "alt" or next_q.kind == "speed" or next_q.kind == "mach")))
     if self.t[after] and self.t[after].kind == "punct" then after = self:skip_fillers(after + 1) end
     local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
       and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")

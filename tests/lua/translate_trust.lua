@@ -4889,3 +4889,14 @@ do
   check_eq(ex("SAS77K descend 3000 feet from where it is"), "ALT SAS77K 6000")
   check(ex("SAS88 descend 3000 ft"):match("^ASK Should SAS88 descend to 3000 ft or by 3000 ft") ~= nil, "from FL160")
 end
+
+-- Cycle 32 (R65): "cross WPT FL120", "cross WPT 5000 feet": a crossing with "at" left out, a level or a speed
+-- straight after a waypoint of the route, is its AT constraint; a waypoint off the route is still asked about
+do
+  local _, ex = scene({ "DEFWPT ALFA 60.3 24.9", "DEFWPT BRAVO 60.2 24.7", "CRE FIN4TK A320 60.5 25.5 250 FL150 270",
+    "ADDWPT FIN4TK ALFA" })
+  check_eq(ex("FIN4TK cross ALFA flight level 90"), "AT FIN4TK ALFA ALT FL90")
+  check_eq(ex("FIN4TK cross ALFA 6000 ft"), "AT FIN4TK ALFA ALT 6000")
+  check_eq(ex("FIN4TK cross ALFA 230 knots"), "AT FIN4TK ALFA SPD 230")
+  asked(ex("FIN4TK cross BRAVO FL90"), "a waypoint off the route")
+end
