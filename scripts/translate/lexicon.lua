@@ -618,10 +618,16 @@ return {
       last = true },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
-    -- "until established, cleared ILS runway 10" closes with the approach clearance). (One ending at a
-    -- distance, "until 4 DME", is asked about: R51's writer read it as a meaning squawk cannot place.)
+    -- "until established, cleared ILS runway 10" closes with the approach clearance)
     { what = "limits that end on the approach", words = "until till", near = { "established" }, window = 1,
       after_instruction = true, last = "established on the localizer localiser ils final approach , cleared for runway rwy" },
+    -- "speed 160 until 4 DME", "170 knots till 5 miles final, cleared ILS 01L": the same limit ending at a
+    -- distance from the runway, its unit said, an approach clearance after it at most (01L is "01" and "l");
+    -- a value after it ("until 5 DME then 140") is not last, and "until 4" names no distance: asked
+    { what = "limits that end at a distance", words = "until till", near = { "dme", "miles", "mile", "nm" },
+      window = 3, after_instruction = true,
+      last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
+        .. "approach runway rwy l r c" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },

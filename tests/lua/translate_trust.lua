@@ -4447,7 +4447,8 @@ end
 
 -- A value held "until established" on the approach ("maint 8000 til established") is flown now, its end not
 -- kept (named as not simulated), when the limit ends the request; an instruction after it, which waits for
--- it, is asked about, and so is a limit at a distance ("until 4 dme"). "maintain 280 or greater" is a speed
+-- it, is asked about (a limit at a distance, "until 4 dme", is read so too: Cycle 32's block). "maintain 280 or
+-- greater" is a speed
 do
   local _, ex = scene({ "CRE SAS34 A320 55.6 12.6 090 FL150 250" })
   check_eq(ex("SAS34 heading 200, maint 4000 til established"), "HDG SAS34 200 ; ALT SAS34 4000")
@@ -4455,7 +4456,7 @@ do
   check_eq(ex("SAS34 maintain 230 or greater"), "SPD SAS34 230")
   asked(ex("SAS34 maintain 180 knots until established, then descend 3000"),
     "an instruction waiting for the limit")
-  asked(ex("sas34 red 160 kts until 4 dme"), "a limit at a distance")
+  check_eq(ex("sas34 red 160 kts until 4 dme"), "SPD SAS34 160")
 end
 
 -- The online network's words for a pilot gone, given as the reason for removing the aircraft ("pilot dc'd",
@@ -4899,4 +4900,15 @@ do
   check_eq(ex("FIN4TK cross ALFA 6000 ft"), "AT FIN4TK ALFA ALT 6000")
   check_eq(ex("FIN4TK cross ALFA 230 knots"), "AT FIN4TK ALFA SPD 230")
   asked(ex("FIN4TK cross BRAVO FL90"), "a waypoint off the route")
+end
+
+-- Cycle 32 (R65): a speed held "until 4 miles", "till 6 DME", said last (an approach clearance after it at
+-- most), is flown now and its end at the distance named as not simulated; a value after it ("until 5 DME then
+-- 150") or a bare number ("until 4") is still asked about
+do
+  local _, ex = scene({ "CRE NOZ41 B738 59.9 10.9 010 6000 210" })
+  check_eq(ex("NOZ41 reduce 180 knots till 6 DME"), "SPD NOZ41 180")
+  check_eq(ex("NOZ41 speed 170 until four miles final, cleared ILS 19R"), "SPD NOZ41 170")
+  asked(ex("NOZ41 speed 170 until 5 DME then 150"), "a speed after the limit")
+  asked(ex("NOZ41 speed 170 until 4"), "no distance named")
 end
