@@ -1431,6 +1431,11 @@ return function(intent, rule, words)
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
+  -- "switch the conflict probe to state based", "conflict probe off": the conflict probe is conflict detection
+  -- (its look-ahead said, it names that setting's owner: "look-ahead five minutes on the conflict probe")
+  rule { "probe", "asas", prev = { 1, "conflict conflicts" }, when = function(g)
+    return not g:word_in(1, #g.t + 1, "look lookahead dtlook")
+  end }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }

@@ -4912,3 +4912,12 @@ do
   asked(ex("NOZ41 speed 170 until 5 DME then 150"), "a speed after the limit")
   asked(ex("NOZ41 speed 170 until 4"), "no distance named")
 end
+
+-- Cycle 32 (R65): the "conflict probe" is conflict detection, switched or set to a method ("switch the conflict
+-- probe to state based"); with its look-ahead said it names that setting's owner, no switch
+do
+  local _, ex = scene({ "CRE SAS34 A320 55.6 12.6 090 FL150 250" })
+  check_eq(ex("set the conflict probe to state-based"), "ASAS STATEBASED")
+  check_eq(ex("conflict probe on please"), "ASAS ON")
+  check_eq(ex("conflict probe look-ahead 4 minutes"), "DTLOOK 240")
+end
