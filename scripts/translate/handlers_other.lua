@@ -2734,6 +2734,12 @@ return function(H, f, compass)
       self:mark_used(saying + 1, s.e)
       return self:emit("ECHO " .. self:raw(saying + 1, s.e))
     end
+    -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request after a
+    -- speaker's label, the words after it as typed
+    if s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") and s.trig + 1 < s.e then
+      self:mark_used(s.trig + 1, s.e)
+      return self:emit("ECHO " .. self:raw(s.trig + 1, s.e))
+    end
     -- "print baseline no reso to the console": the words between the verb and where they go, as typed
     local to = self:find_word(s.trig + 1, s.e, "to on")
     local at = self:word(to + 1, "the") and to + 2 or to + 1

@@ -24,6 +24,7 @@
 -- the retrieval documents of the LLM modes (checked against the registry).
 return function(intent, rule, words)
   local CITY_AIRPORTS = require("translate.lexicon").city_airports
+  local PHONETIC = require("translate.lexicon").phonetic
   intent "alt" { cmd = "ALT", args = { "acid", "alt", "vspd" }, handler = "altitude", value = true, family = "alt" }
   intent "maintain" { cmds = { "ALT", "SPD", "HDG" }, handler = "maintain", value = true, family = "alt" }
   intent "spd" { cmd = "SPD", args = { "acid", "spd" }, handler = "speed", value = true }
@@ -1407,6 +1408,12 @@ return function(intent, rule, words)
     return true
   end }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
+  -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request (after a speaker's
+  -- label) and a word after it that spells nothing ("echo kilo lima ..." is a registration spelled)
+  rule { "echo", "echo", when = function(g, i)
+    local nx = g.t[i + 1]
+    return i == g:skip_fillers(1) and nx ~= nil and nx.kind == "word" and PHONETIC[nx.text] == nil
+  end }
   -- "write 'trial 4 start' into the log", "put 'baseline done' in the log": quoted text for the log
   rule { "write put add enter", "echo", when = function(g, i)
     return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log")

@@ -4921,3 +4921,12 @@ do
   check_eq(ex("conflict probe on please"), "ASAS ON")
   check_eq(ex("conflict probe look-ahead 4 minutes"), "DTLOOK 240")
 end
+
+-- Cycle 32 (R65): TrafScript's ECHO opening the request after a speaker's label ("supervisor: echo ...") prints
+-- the words after it as typed, a time among them too; "echo" before spelled letters is still a registration
+do
+  local _, ex = scene({ "CRE EKLM C172 52.0 4.0 090 3000 100" })
+  check_eq(ex("supervisor: echo break ends in 10 minutes"), "ECHO break ends in 10 minutes")
+  check_eq(ex("echo kilo lima mike climb 4500 ft"), "ALT EKLM 4500")
+  asked(ex("instructor: echo"), "no text")
+end
