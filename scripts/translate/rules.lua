@@ -1391,6 +1391,16 @@ return function(intent, rule, words)
     return q ~= nil and (q.kind == "lat" or q.kind == "lon" or pair) and told
       and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
   end }
+  -- "wind at Arlanda 270 degrees 25 knots", "wind over ESSA from 250 at 20 knots": the request opening with the
+  -- wind at a place, where it blows from told after it (in degrees before its speed, or after "from")
+  rule { "wind winds", "wind", next = "at over", when = function(g, i)
+    if i ~= g:skip_fillers(1) or g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    local told = false
+    for _, v in ipairs(g:quantities(i + 2, #g.t + 1)) do
+      told = told or ((v.kind == "angle" or g:word(v.b - 1, "from")) and (g:quantities(v.e, v.e + 2)[1] or {}).kind == "speed")
+    end
+    return told
+  end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   -- "wind at 30.1 31.4 FL200", "winds over 33N 7W?": the request opening with the wind at a position (a level

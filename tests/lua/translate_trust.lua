@@ -4930,3 +4930,15 @@ do
   check_eq(ex("echo kilo lima mike climb 4500 ft"), "ALT EKLM 4500")
   asked(ex("instructor: echo"), "no text")
 end
+
+-- Cycle 32 (R65): a request opening with the wind at a named place, where it blows from told after it ("wind
+-- at Arlanda 270 degrees 25 knots", "wind over ALFA from 250 at 20 knots"), sets the wind there; with no
+-- direction told it is no setting (asked)
+do
+  local _, ex = scene({ "DEFWPT ALFA 60.3 24.9", "CRE FIN4TK A320 60.5 25.5 250 FL110 270" })
+  check_eq(ex("supervisor: wind over ALFA from 250 at 20 knots"), "WIND ALFA 250 20")
+  check_eq(ex("wind at ALFA 300 degrees 15 knots"), "WIND ALFA 300 15")
+  asked(ex("wind at ALFA 300 degrees"), "no speed told")
+  local _, nx = navscene({ "CRE FIN4TK A320 60.5 25.5 250 FL110 270" }, "winds at an airport by its name")
+  if nx then check_eq(nx("wind at Arlanda 270 degrees 25 knots"), "WIND ESSA 270 25") end
+end
