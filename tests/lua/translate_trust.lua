@@ -4892,7 +4892,8 @@ do
 end
 
 -- Cycle 32 (R65): "cross WPT FL120", "cross WPT 5000 feet": a crossing with "at" left out, a level or a speed
--- straight after a waypoint of the route, is its AT constraint; a waypoint off the route is still asked about
+-- straight after a waypoint of the route and ending the request, is its AT constraint; a waypoint off the route,
+-- or another value after a comma, is still asked about
 do
   local _, ex = scene({ "DEFWPT ALFA 60.3 24.9", "DEFWPT BRAVO 60.2 24.7", "CRE FIN4TK A320 60.5 25.5 250 FL150 270",
     "ADDWPT FIN4TK ALFA" })
@@ -4900,17 +4901,19 @@ do
   check_eq(ex("FIN4TK cross ALFA 6000 ft"), "AT FIN4TK ALFA ALT 6000")
   check_eq(ex("FIN4TK cross ALFA 230 knots"), "AT FIN4TK ALFA SPD 230")
   asked(ex("FIN4TK cross BRAVO FL90"), "a waypoint off the route")
+  asked(ex("FIN4TK cross ALFA FL90, speed 250 knots"), "a speed after a comma: now or at ALFA?")
 end
 
 -- Cycle 32 (R65): a speed held "until 4 miles", "till 6 DME", said last (an approach clearance after it at
 -- most), is flown now and its end at the distance named as not simulated; a value after it ("until 5 DME then
--- 150") or a bare number ("until 4") is still asked about
+-- 150"), a bare number ("until 4") or a limit beyond the final approach's 3 to 6 miles is still asked about
 do
   local _, ex = scene({ "CRE NOZ41 B738 59.9 10.9 010 6000 210" })
   check_eq(ex("NOZ41 reduce 180 knots till 6 DME"), "SPD NOZ41 180")
   check_eq(ex("NOZ41 speed 170 until four miles final, cleared ILS 19R"), "SPD NOZ41 170")
   asked(ex("NOZ41 speed 170 until 5 DME then 150"), "a speed after the limit")
   asked(ex("NOZ41 speed 170 until 4"), "no distance named")
+  asked(ex("NOZ41 reduce 240 knots until 9 miles"), "a limit beyond the final approach")
 end
 
 -- Cycle 32 (R65): the "conflict probe" is conflict detection, switched or set to a method ("switch the conflict
