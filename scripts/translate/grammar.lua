@@ -2565,6 +2565,12 @@ local function tied_to_waypoint(self, r, word)
     .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
     word or "at", r.name, r.name))
 end
+-- True when nothing but fillers and a closing full stop, question or exclamation mark follows token k - 1.
+local function ends_request(self, k)
+  k = self:skip_fillers(k)
+  while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
+  return k > #self.t
+end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then
     -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in a direct's
@@ -2681,8 +2687,13 @@ function G:at_waypoint(s, spec)
   for _, r in ipairs(refs) do
     -- "cross SUGOL at FL200", "set the constraint at ARTIP to FL200", "put a constraint on AEA44 at ORBIS,
     -- FL250", "at NORKU cross FL200", "at ELDAR speed 250": a constraint at a waypoint
-    local crossed = self:word(r.b - 1, "cross crossing crosses") and self:word(self:skip_fillers(r.e), "at")
+    -- ("cross LINSA FL120", "cross KERAB 5000 feet": "at" left out, a level or speed straight after the waypoint
+    -- that ends the request; "cross MAXMO FL220, speed 280 knots", the speed now or there, is asked about)
     local after = self:skip_fillers(r.e)
+    local next_q = self:word(r.b - 1, "cross crossing crosses") and self:quantities(after, s.e)[1]
+    local crossed = self:word(r.b - 1, "cross crossing crosses") and (self:word(after, "at")
+      or (next_q and next_q.b == after and (next_q.kind == "alt" or next_q.kind == "speed" or next_q.kind == "mach")
+        and ends_request(self, next_q.e)))
     if self.t[after] and self.t[after].kind == "punct" then after = self:skip_fillers(after + 1) end
     local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
       and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")
@@ -3868,6 +3879,7 @@ function G:not_simulated()
         and not self:navaid_named_before(i) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
+            and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil))

@@ -1152,10 +1152,12 @@ end
 -- "in 2 min turn KL204 left heading 180", "pause it at 30 minutes", "when the clock hits 45 minutes
 -- pause the sim": the instruction waits for a time, "DELAY s" after "in"/"after" (from now) or
 -- "SCHEDULE hh:mm:ss" after "at", "schedule" or the clock reaching it (simulation time); nil when no time is said
--- or the instruction takes its time as a value (FF, DT, DTLOOK, DTMULT; CRECONFS's time to conflict).
+-- or the instruction takes its time as a value (FF, DT, DTLOOK, DTMULT; CRECONFS's time to conflict) or its
+-- text as typed after it ("echo exercise starts in 2 minutes": the time is ECHO's text).
 local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
 function m:at_time(s)
   if OWN_TIME[s.intent] then return nil end
+  if s.intent == "echo" and s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") then return nil end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     local w = q.b - 1
     while w > 0 and self.t[w].filler do w = w - 1 end

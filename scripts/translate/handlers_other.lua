@@ -2373,10 +2373,11 @@ return function(H, f, compass)
         and not self:word_in(1, #self.t + 1, "direct dct") then
       return self:need(string.format("%s has no route to navigate by. Which waypoint or heading should it fly?", id))
     end
-    -- "resume own navigation to MIKSI": its route resumed at that place, a direct-to (which turns LNAV on)
+    -- "resume own navigation to MIKSI", "own navigation LILJA": its route resumed at that place (the waypoint
+    -- after "to", or straight after "navigation"), a direct-to (which turns LNAV on)
     if cmd == "LNAV" and on == "ON" then
       for _, r in ipairs(self:refs_in(s.trig + 1, s.e, "waypoint")) do
-        if self:word(r.b - 1, "to") then return self:direct(s) end
+        if self:word(r.b - 1, "to navigation") then return self:direct(s) end
       end
     end
     self:emit(cmd .. " " .. id .. " " .. on)
@@ -2732,6 +2733,12 @@ return function(H, f, compass)
       self:explain(s.trig + 1, saying + 1)
       self:mark_used(saying + 1, s.e)
       return self:emit("ECHO " .. self:raw(saying + 1, s.e))
+    end
+    -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request after a
+    -- speaker's label, the words after it as typed
+    if s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") and s.trig + 1 < s.e then
+      self:mark_used(s.trig + 1, s.e)
+      return self:emit("ECHO " .. self:raw(s.trig + 1, s.e))
     end
     -- "print baseline no reso to the console": the words between the verb and where they go, as typed
     local to = self:find_word(s.trig + 1, s.e, "to on")

@@ -325,8 +325,10 @@ return function(H, f, wrap, compass)
       local cur = now.alt_ft or 0
       local by_fits = (dir < 0 and cur - ft >= 0) or (dir > 0 and cur + ft <= 60000)
       local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)
-      -- (a change of 4000 ft or more is a cleared altitude: nobody clears a 4000 ft step by its size)
-      if by_fits and to_fits and ft < 4000 then
+      -- (a change of 4000 ft or more is a cleared altitude: nobody clears a 4000 ft step by its size; a
+      -- descent from below FL120, in a terminal area, is to the approach altitude said in feet)
+      local approach = dir < 0 and cur < 12000
+      if by_fits and to_fits and ft < 4000 and not approach then
         return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
       end
     end

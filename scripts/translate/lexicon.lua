@@ -589,7 +589,8 @@ return {
   -- one of `near` within `window` words after it, 4 by default, when given) and runs to the end
   -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
   -- while, so an instruction after "then" waits for it and is asked about, never sent now; `one_value`:
-  -- the phrase ends at its first number ("QNH 1021, 180 knots": the speed is an instruction)
+  -- the phrase ends at its first number ("QNH 1021, 180 knots": the speed is an instruction); `and_near`:
+  -- { words, n }, one of these within n words after the `near` word too
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -616,10 +617,18 @@ return {
       last = true },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
-    -- "until established, cleared ILS runway 10" closes with the approach clearance). (One ending at a
-    -- distance, "until 4 DME", is asked about: R51's writer read it as a meaning squawk cannot place.)
+    -- "until established, cleared ILS runway 10" closes with the approach clearance)
     { what = "limits that end on the approach", words = "until till", near = { "established" }, window = 1,
       after_instruction = true, last = "established on the localizer localiser ils final approach , cleared for runway rwy" },
+    -- "speed 160 until 4 DME", "170 knots till 5 miles final, cleared ILS 01L": the same limit ending at the
+    -- final approach's 3 to 6 miles, its unit said, an approach clearance after it at most (01L is "01" and
+    -- "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out
+    -- ("250 kts till 10 dme", a point squawk cannot place: R51) are asked
+    { what = "limits that end at a distance", words = "until till",
+      near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
+      and_near = { { "dme", "miles", "mile", "nm" }, 2 }, after_instruction = true,
+      last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
+        .. "approach runway rwy l r c" },
     -- "climb FL250, cancel speed restriction", "cancel level restrictions": a restriction lifted, which squawk
     -- (flying each instruction as given) does not keep
     { what = "restrictions lifted", words = "cancel", near = { "restriction", "restrictions" },

@@ -199,6 +199,13 @@ return {
     { "airbaltic", "BTI" },
     { "iceair", "ICE" },
     { "icelandair", "ICE" },
+    -- airlines of Scandinavia: ICAO telephony, and the airline's own name where controllers there say it
+    -- ("Viking 472": Sunclass Airlines; "Braathens 2KM": Braathens Regional)
+    { "viking", "VKG" },
+    { "sunclass", "VKG" },
+    { "braathens", "BRX" },
+    { "sunscan", "SUS" },  -- (Sun-Air of Scandinavia)
+    { "faroeline", "FLI" },  -- (Atlantic Airways)
     { "martinair", "MPH" },
     { "corsair", "CRL" },
     { "air dolomiti", "DLA" },

@@ -24,6 +24,7 @@
 -- the retrieval documents of the LLM modes (checked against the registry).
 return function(intent, rule, words)
   local CITY_AIRPORTS = require("translate.lexicon").city_airports
+  local PHONETIC = require("translate.lexicon").phonetic
   intent "alt" { cmd = "ALT", args = { "acid", "alt", "vspd" }, handler = "altitude", value = true, family = "alt" }
   intent "maintain" { cmds = { "ALT", "SPD", "HDG" }, handler = "maintain", value = true, family = "alt" }
   intent "spd" { cmd = "SPD", args = { "acid", "spd" }, handler = "speed", value = true }
@@ -1404,6 +1405,16 @@ return function(intent, rule, words)
     return q ~= nil and (q.kind == "lat" or q.kind == "lon" or pair) and told
       and not g:has_ref(1, #g.t + 1, "aircraft") and not g:word_in(math.max(1, i - 3), i, "what what's whats show tell get check")
   end }
+  -- "wind at Arlanda 270 degrees 25 knots", "wind over ESSA from 250 at 20 knots": the request opening with the
+  -- wind at a place, where it blows from told after it (in degrees before its speed, or after "from")
+  rule { "wind winds", "wind", next = "at over", when = function(g, i)
+    if i ~= g:skip_fillers(1) or g:has_ref(1, #g.t + 1, "aircraft") then return false end
+    local told = false
+    for _, v in ipairs(g:quantities(i + 2, #g.t + 1)) do
+      told = told or ((v.kind == "angle" or g:word(v.b - 1, "from")) and (g:quantities(v.e, v.e + 2)[1] or {}).kind == "speed")
+    end
+    return told
+  end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
   -- "wind at 30.1 31.4 FL200", "winds over 33N 7W?": the request opening with the wind at a position (a level
@@ -1421,6 +1432,12 @@ return function(intent, rule, words)
     return true
   end }
   rule { "echo", "echo", when = function(g, i) return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" end }
+  -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request (after a speaker's
+  -- label) and a word after it that spells nothing ("echo kilo lima ..." is a registration spelled)
+  rule { "echo", "echo", when = function(g, i)
+    local nx = g.t[i + 1]
+    return i == g:skip_fillers(1) and nx ~= nil and nx.kind == "word" and PHONETIC[nx.text] == nil
+  end }
   -- "write 'trial 4 start' into the log", "put 'baseline done' in the log": quoted text for the log
   rule { "write put add enter", "echo", when = function(g, i)
     return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log")
@@ -1445,6 +1462,11 @@ return function(intent, rule, words)
   -- "asas dt 2 sec", "dt asas 2": the interval of conflict detection (DT ASAS), no switch
   rule { "detection asas cd", false, near = { 1, "dt timestep" } }
   rule { "detection asas cdmethod cd", "asas" }
+  -- "switch the conflict probe to state based", "conflict probe off": the conflict probe is conflict detection
+  -- (its look-ahead said, it names that setting's owner: "look-ahead five minutes on the conflict probe")
+  rule { "probe", "asas", prev = { 1, "conflict conflicts" }, when = function(g)
+    return not g:word_in(1, #g.t + 1, "look lookahead dtlook")
+  end }
   rule { "cr", "reso", next = "on off mvp" }  -- "CD on, CR off", "cr mvp": conflict resolution by its letters
   -- "vertical resolution factor 1.1", "horizontal reso safety factor to 1.15": the safety factor
   rule { "resolution resolve reso resolutions", false, near = { 3, "factor" } }

@@ -4447,7 +4447,8 @@ end
 
 -- A value held "until established" on the approach ("maint 8000 til established") is flown now, its end not
 -- kept (named as not simulated), when the limit ends the request; an instruction after it, which waits for
--- it, is asked about, and so is a limit at a distance ("until 4 dme"). "maintain 280 or greater" is a speed
+-- it, is asked about (a limit at a distance, "until 4 dme", is read so too: Cycle 32's block). "maintain 280 or
+-- greater" is a speed
 do
   local _, ex = scene({ "CRE SAS34 A320 55.6 12.6 090 FL150 250" })
   check_eq(ex("SAS34 heading 200, maint 4000 til established"), "HDG SAS34 200 ; ALT SAS34 4000")
@@ -4455,7 +4456,7 @@ do
   check_eq(ex("SAS34 maintain 230 or greater"), "SPD SAS34 230")
   asked(ex("SAS34 maintain 180 knots until established, then descend 3000"),
     "an instruction waiting for the limit")
-  asked(ex("sas34 red 160 kts until 4 dme"), "a limit at a distance")
+  check_eq(ex("sas34 red 160 kts until 4 dme"), "SPD SAS34 160")
 end
 
 -- The online network's words for a pilot gone, given as the reason for removing the aircraft ("pilot dc'd",
@@ -4932,4 +4933,91 @@ do
   check_eq(ex("traffic alert, DAL2104 turn right heading 180 now"), "HDG DAL2104 180 RIGHT")
   check_eq(ex("conflict alert, american 31 descend FL230"), "ALT AAL31 FL230")
   asked(ex("climb FL270 to avoid the traffic, AAL31"), "the aircraft after the comma, no instruction after it")
+end
+
+-- Cycle 32 (R65): Scandinavian telephony ("Viking": Sunclass; "Braathens") is a callsign's airline wherever the
+-- callsign stands, after a verb too ("remove Viking 815"); the airline said before a typed callsign is its name;
+-- a flight number no aircraft of that airline flies is still asked about
+do
+  local _, ex = scene({ "CRE VKG815 A321 57.0 11.0 090 FL200 300", "CRE BRX7PA AT76 58.0 12.0 180 7000 210" })
+  check_eq(ex("remove Viking 815"), "DEL VKG815")
+  check_eq(ex("move Braathens 7PA to 57.5 11.5"), "MOVE BRX7PA 57.5 11.5")
+  check_eq(ex("Braathens seven papa alpha say altitude"), "POS BRX7PA")
+  check_eq(ex("create Sunclass VKG22 A320 56.1 12.2 heading 045 FL 150 speed 280"), "CRE VKG22 A320 56.1 12.2 45 FL150 280")
+  asked(ex("delete Viking 816"), "no such Viking flying")
+end
+
+-- Cycle 32 (R65): "own navigation" with a waypoint straight after it ("own navigation ALFA") resumes the route
+-- there, a direct-to, as "own navigation to ALFA" does; a waypoint set off by a comma is still asked about
+do
+  local _, ex = scene({ "DEFWPT ALFA 60.3 24.9", "DEFWPT BRAVO 60.2 24.7", "CRE FIN4TK A320 60.5 25.5 250 FL110 270",
+    "ADDWPT FIN4TK ALFA", "ADDWPT FIN4TK BRAVO" })
+  check_eq(ex("FIN4TK own navigation BRAVO"), "DIRECT FIN4TK BRAVO")
+  check_eq(ex("FIN4TK speed 220, resume own navigation ALFA"), "SPD FIN4TK 220 ; DIRECT FIN4TK ALFA")
+  check_eq(ex("FIN4TK own navigation"), "LNAV FIN4TK ON")
+  asked(ex("FIN4TK resume own navigation, BRAVO"), "a waypoint after a comma")
+end
+
+-- Cycle 32 (R65): "descend 3000 feet" typed from below FL120, in a terminal area, is the approach altitude
+-- cleared; from higher up it is still asked whether to or by, and "from where it is" is still a step
+do
+  local _, ex = scene({ "CRE SAS77K A320 55.6 12.6 090 9000 230", "CRE SAS88 A320 55.9 12.9 180 FL160 280" })
+  check_eq(ex("SAS77K descend 2000 feet, speed 180 knots"), "ALT SAS77K 2000 ; SPD SAS77K 180")
+  check_eq(ex("SAS77K descend 3000 feet from where it is"), "ALT SAS77K 6000")
+  check(ex("SAS88 descend 3000 ft"):match("^ASK Should SAS88 descend to 3000 ft or by 3000 ft") ~= nil, "from FL160")
+end
+
+-- Cycle 32 (R65): "cross WPT FL120", "cross WPT 5000 feet": a crossing with "at" left out, a level or a speed
+-- straight after a waypoint of the route and ending the request, is its AT constraint; a waypoint off the route,
+-- or another value after a comma, is still asked about
+do
+  local _, ex = scene({ "DEFWPT ALFA 60.3 24.9", "DEFWPT BRAVO 60.2 24.7", "CRE FIN4TK A320 60.5 25.5 250 FL150 270",
+    "ADDWPT FIN4TK ALFA" })
+  check_eq(ex("FIN4TK cross ALFA flight level 90"), "AT FIN4TK ALFA ALT FL90")
+  check_eq(ex("FIN4TK cross ALFA 6000 ft"), "AT FIN4TK ALFA ALT 6000")
+  check_eq(ex("FIN4TK cross ALFA 230 knots"), "AT FIN4TK ALFA SPD 230")
+  asked(ex("FIN4TK cross BRAVO FL90"), "a waypoint off the route")
+  asked(ex("FIN4TK cross ALFA FL90, speed 250 knots"), "a speed after a comma: now or at ALFA?")
+end
+
+-- Cycle 32 (R65): a speed held "until 4 miles", "till 6 DME", said last (an approach clearance after it at
+-- most), is flown now and its end at the distance named as not simulated; a value after it ("until 5 DME then
+-- 150"), a bare number ("until 4") or a limit beyond the final approach's 3 to 6 miles is still asked about
+do
+  local _, ex = scene({ "CRE NOZ41 B738 59.9 10.9 010 6000 210" })
+  check_eq(ex("NOZ41 reduce 180 knots till 6 DME"), "SPD NOZ41 180")
+  check_eq(ex("NOZ41 speed 170 until four miles final, cleared ILS 19R"), "SPD NOZ41 170")
+  asked(ex("NOZ41 speed 170 until 5 DME then 150"), "a speed after the limit")
+  asked(ex("NOZ41 speed 170 until 4"), "no distance named")
+  asked(ex("NOZ41 reduce 240 knots until 9 miles"), "a limit beyond the final approach")
+end
+
+-- Cycle 32 (R65): the "conflict probe" is conflict detection, switched or set to a method ("switch the conflict
+-- probe to state based"); with its look-ahead said it names that setting's owner, no switch
+do
+  local _, ex = scene({ "CRE SAS34 A320 55.6 12.6 090 FL150 250" })
+  check_eq(ex("set the conflict probe to state-based"), "ASAS STATEBASED")
+  check_eq(ex("conflict probe on please"), "ASAS ON")
+  check_eq(ex("conflict probe look-ahead 4 minutes"), "DTLOOK 240")
+end
+
+-- Cycle 32 (R65): TrafScript's ECHO opening the request after a speaker's label ("supervisor: echo ...") prints
+-- the words after it as typed, a time among them too; "echo" before spelled letters is still a registration
+do
+  local _, ex = scene({ "CRE EKLM C172 52.0 4.0 090 3000 100" })
+  check_eq(ex("supervisor: echo break ends in 10 minutes"), "ECHO break ends in 10 minutes")
+  check_eq(ex("echo kilo lima mike climb 4500 ft"), "ALT EKLM 4500")
+  asked(ex("instructor: echo"), "no text")
+end
+
+-- Cycle 32 (R65): a request opening with the wind at a named place, where it blows from told after it ("wind
+-- at Arlanda 270 degrees 25 knots", "wind over ALFA from 250 at 20 knots"), sets the wind there; with no
+-- direction told it is no setting (asked)
+do
+  local _, ex = scene({ "DEFWPT ALFA 60.3 24.9", "CRE FIN4TK A320 60.5 25.5 250 FL110 270" })
+  check_eq(ex("supervisor: wind over ALFA from 250 at 20 knots"), "WIND ALFA 250 20")
+  check_eq(ex("wind at ALFA 300 degrees 15 knots"), "WIND ALFA 300 15")
+  asked(ex("wind at ALFA 300 degrees"), "no speed told")
+  local _, nx = navscene({ "CRE FIN4TK A320 60.5 25.5 250 FL110 270" }, "winds at an airport by its name")
+  if nx then check_eq(nx("wind at Arlanda 270 degrees 25 knots"), "WIND ESSA 270 25") end
 end
