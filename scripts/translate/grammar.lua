@@ -2444,9 +2444,10 @@ function G:when_reached(s)
   if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
   if self:word_in(c + 1, s.trig, "there level lvl") then return true end
-  -- ("when reaching", "when you reach it", "once it reaches that": the level of the instruction before)
+  -- ("when reaching", "when you reach it", "once it reaches that", "when you hit it": the level of the
+  -- instruction before)
   if self:word(verb, "you it he she they") then verb = self:skip_fillers(verb + 1) end
-  if not self:word(verb, "reaching reach reaches") then return false end
+  if not self:word(verb, "reaching reach reaches hit hits") then return false end
   local k = self:skip_fillers(verb + 1)
   if self:word(k, "it that") then k = self:skip_fillers(k + 1) end
   return k == s.trig

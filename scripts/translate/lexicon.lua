@@ -342,8 +342,9 @@ return {
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
   -- words between such a level and the instruction word that waits for it, part of the instruction
-  -- ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct HEMEL")
-  condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then" },
+  -- ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct HEMEL", "when at
+  -- 12000 set speed 240")
+  condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then", "set" },
   -- before the level an aircraft leaves, said with the one it is cleared to ("leaving FL260 for FL200")
   level_left = { "leaving", "passing", "vacating" },
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about
