@@ -796,6 +796,12 @@ local function typed_abbreviations(text)
   return changed and table.concat(toks, " ") or text
 end
 
+-- The names after which a signed value with no unit is a change of that value ("speed +20", "alt -2000",
+-- "hdg +20", "climb +3000"): name (lower case) -> "speed" | "alt" | "hdg", or "alt+" | "alt-" for a verb that
+-- says the direction (the other sign contradicts it: "climb -3000" is left as typed, and asked)
+local SIGNED_CHANGE = { speed = "speed", spd = "speed", alt = "alt", altitude = "alt", climb = "alt+",
+                        descend = "alt-", heading = "hdg", hdg = "hdg" }
+
 local function written_forms(text)
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   text = text:gsub("^(%s*)%.(%a)", "%1%2")
@@ -934,6 +940,22 @@ local function written_forms(text)
     if u == "ft" or u == "feet" then return (sign == "+" and "up " or "down ") .. n .. " " .. unit end
     return nil
   end)
+  -- the same change typed with no unit straight after the value's name ("speed +20", "alt -2000", "climb
+  -- +3000", "heading +20"): knots, feet, or degrees of a turn to the right (+) or left (-)
+  text = text:gsub("%f[%a](%a+)(%s+)([%+%-])(%d+)%f[^%w%.]", function(name, space, sign, n)
+    local kind = SIGNED_CHANGE[name:lower()]
+    if kind == "speed" then return name .. space .. n .. " kt" .. (sign == "+" and " faster" or " slower") end
+    if kind == "alt" or kind == "alt" .. sign then
+      return name .. space .. (sign == "+" and "up " or "down ") .. n .. " ft"
+    end
+    if kind == "hdg" then return "turn " .. (sign == "+" and "right " or "left ") .. n .. " degrees" end
+    return nil
+  end)
+  -- "a 180 heading", "the 090 heading": a heading of three digits said before its name
+  text = text:gsub("%f[%a]([Aa]n?%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
+    :gsub("%f[%a]([Tt]he%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
+  -- "45.6,-122.6": a latitude and longitude in decimal degrees typed with a comma and no space between them
+  text = text:gsub("%f[%d%-](%-?%d%d?%.%d+),(%-?%d%d?%d?%.%d+)%f[^%w%.]", "%1 %2")
   return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
     if b == "000" or text:sub(at):match("^%s*[Ff][Ee]?[Ee]?[Tt]%f[%A]") or text:sub(at):match("^%s*[Ff][Oo][Oo][Tt]") then
       return a .. b
