@@ -802,6 +802,12 @@ end
 local SIGNED_CHANGE = { speed = "speed", spd = "speed", alt = "alt", altitude = "alt", climb = "alt+",
                         descend = "alt-", heading = "hdg", hdg = "hdg" }
 
+-- Units of a change said with "more"/"less" after its amount or "gain"/"lose" before it ("20 kt less", "lose
+-- 4000 ft"): unit (lower case) -> "speed" | "alt"; the words -> +1 (faster, up) | -1 (slower, down)
+local UNIT_CHANGE = { kt = "speed", kts = "speed", knots = "speed", ft = "alt", feet = "alt" }
+local MORE_LESS = { more = 1, less = -1 }
+local GAIN_LOSE = { gain = 1, lose = -1 }
+
 local function written_forms(text)
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   text = text:gsub("^(%s*)%.(%a)", "%1%2")
@@ -942,14 +948,31 @@ local function written_forms(text)
   end)
   -- the same change typed with no unit straight after the value's name ("speed +20", "alt -2000", "climb
   -- +3000", "heading +20"): knots, feet, or degrees of a turn to the right (+) or left (-)
-  text = text:gsub("%f[%a](%a+)(%s+)([%+%-])(%d+)%f[^%w%.]", function(name, space, sign, n)
+  -- ("vertical speed -2000" is a rate, its sign its direction)
+  text = text:gsub("()%f[%a](%a+)(%s+)([%+%-])(%d+)%f[^%w%.]", function(at, name, space, sign, n)
     local kind = SIGNED_CHANGE[name:lower()]
+    if kind == "speed" and (text:sub(1, at - 1):match("(%a+)%s*$") or ""):lower() == "vertical" then return nil end
     if kind == "speed" then return name .. space .. n .. " kt" .. (sign == "+" and " faster" or " slower") end
     if kind == "alt" or kind == "alt" .. sign then
       return name .. space .. (sign == "+" and "up " or "down ") .. n .. " ft"
     end
     if kind == "hdg" then return "turn " .. (sign == "+" and "right " or "left ") .. n .. " degrees" end
     return nil
+  end)
+  -- an amount with its unit and "more"/"less" after it, or "gain"/"lose" before it ("20 kt less", "lose 4000
+  -- ft", "gain 1000 feet"): that many faster/slower, up/down
+  -- ("2000 ft more or less", "20 kt less than ...": an estimate or a bound, left as typed)
+  text = text:gsub("%f[%w](%d+)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
+    local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
+    local nx = (text:match("^%s+(%a+)", at) or ""):lower()
+    if not (kind and dir) or nx == "or" or nx == "than" then return nil end
+    if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
+    return (dir > 0 and "up " or "down ") .. n .. space .. unit
+  end):gsub("%f[%a](%a+)(%s+)(%d+)(%s*)(%a+)%f[%A]", function(verb, space, n, space2, unit)
+    local dir, kind = GAIN_LOSE[verb:lower()], UNIT_CHANGE[unit:lower()]
+    if not (kind and dir) then return nil end
+    if kind == "speed" then return n .. space2 .. unit .. (dir > 0 and " faster" or " slower") end
+    return (dir > 0 and "up" or "down") .. space .. n .. space2 .. unit
   end)
   -- "a 180 heading", "the 090 heading": a heading of three digits said before its name
   text = text:gsub("%f[%a]([Aa]n?%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")

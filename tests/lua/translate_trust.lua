@@ -4891,3 +4891,16 @@ do
   check_eq(ex("create QXE4 type DH8D at 37.2,-121.4, heading 090, 5000 ft, 200 kt"), "CRE QXE4 DH8D 37.2 -121.4 90 5000 200")
   asked(ex("SKW7 a heading"), "a heading with no value")
 end
+
+-- Cycle 32 (R64): a change said with "more"/"less" after its amount and unit, or "gain"/"lose" before it
+-- ("15 kt less", "lose 1500 ft", "gain 1000 feet"); "more or less" and "less than" are no change, and a signed
+-- vertical speed stays a rate
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
+  check_eq(ex("SKW7 speed 15 kt less"), "SPD SKW7 205")
+  check_eq(ex("SKW7 10 knots more"), "SPD SKW7 230")
+  check_eq(ex("SKW7 has to lose 1500 ft"), "ALT SKW7 5500")
+  check_eq(ex("SKW7 gain 1000 feet"), "ALT SKW7 8000")
+  check_eq(ex("SKW7 vertical speed -1500"), "VS SKW7 -1500")
+  asked(ex("SKW7 speed 20 kt less than the leader"), "less than: a bound, not a change")
+end
