@@ -4904,3 +4904,14 @@ do
   check_eq(ex("SKW7 vertical speed -1500"), "VS SKW7 -1500")
   asked(ex("SKW7 speed 20 kt less than the leader"), "less than: a bound, not a change")
 end
+
+-- Cycle 32 (R64): a level said after a vertical speed with "to" or "target" is the level it flies to ("800 fpm
+-- down to 5000", "vs 1500 up, target 9000"): a VS and an ALT; a level on the other side from the rate's
+-- direction is asked
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
+  check_eq(ex("SKW7 800 fpm down to 5000"), "VS SKW7 -800 ; ALT SKW7 5000")
+  check_eq(ex("SKW7 vs 1500 up, target 9000"), "VS SKW7 1500 ; ALT SKW7 9000")
+  check_eq(ex("SKW7 vs 1500"), "VS SKW7 1500")
+  asked(ex("SKW7 vs 1500 up to 5000"), "a climb to a lower level")
+end
