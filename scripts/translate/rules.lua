@@ -289,12 +289,10 @@ return function(intent, rule, words)
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
-  -- "fly at 30000 ft with speed 290 and heading 100", "stay at FL300", "stay at 9000": the level flown at (a
-  -- number with no unit is one from 1000 ft on, in whole hundreds: no speed or heading is)
+  -- "fly at 30000 ft with speed 290 and heading 100", "stay at FL300": the level flown at
   rule { "fly flies stay remain cruise", "alt", next = "at", when = function(g, i)
     local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
-    return q ~= nil and q.b == i + 2
-      and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000 and q.value % 100 == 0))
+    return q ~= nil and q.b == i + 2 and q.kind == "alt"
   end }
   rule { "level", "alt", next = "off" }
   -- "occupy flight level 180", "occupy 5700 metres": the level taken (ICAO English of the former USSR)

@@ -4915,11 +4915,3 @@ do
   check_eq(ex("SKW7 vs 1500"), "VS SKW7 1500")
   asked(ex("SKW7 vs 1500 up to 5000"), "a climb to a lower level")
 end
-
--- Cycle 32 (R64): "stay at", "remain at" with a number of whole hundreds from 1000 on and no unit is the level
--- flown at ("stay at 6000"); a smaller number there ("remain at 250") is no level, asked
-do
-  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
-  check_eq(ex("SKW7 heading 300 and stay at 6000"), "HDG SKW7 300 ; ALT SKW7 6000")
-  asked(ex("SKW7 remain at 250"), "no level under 1000")
-end
