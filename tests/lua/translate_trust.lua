@@ -4915,3 +4915,12 @@ do
   check_eq(ex("SKW7 vs 1500"), "VS SKW7 1500")
   asked(ex("SKW7 vs 1500 up to 5000"), "a climb to a lower level")
 end
+
+-- Cycle 32 (R64): "time compression", "time acceleration" name the simulation's rate ("8x time compression",
+-- "time acceleration 2x"); said with no rate it is asked
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220", "CRE UAL5 B738 37.0 -122.0 100 8000 250" })
+  check_eq(ex("8x time compression please"), "DTMULT 8")
+  check_eq(ex("time acceleration 2x, SKW7 descend 5000"), "DTMULT 2 ; ALT SKW7 5000")
+  asked(ex("more time compression"), "no rate said")
+end
