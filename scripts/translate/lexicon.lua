@@ -209,9 +209,11 @@ return {
         -- squawk's own display, where a command shows or draws what it is asked, and the traffic on it
         -- ("put a Delta CRJ900 on the board", "remove the United from the scene")
         "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
-        -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
+        -- the experiment a request is made for ("for the next trial", "the participant keeps missing it", "seed
+        -- 7 for reproducibility")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
-        "experiments",
+        "experiments", "reproducibility", "reproducible", "repeatability", "repeatable", "determinism",
+        "deterministic",
         -- an airspace design put to the test ("we're evaluating reduced separation", "the one that tests the
         -- new branch", "the designer's note", "a quick check before we run"; a verb's plain form, "to test
         -- ...", is left to G:purpose)

@@ -4924,3 +4924,11 @@ do
   check_eq(ex("time acceleration 2x, SKW7 descend 5000"), "DTMULT 2 ; ALT SKW7 5000")
   asked(ex("more time compression"), "no rate said")
 end
+
+-- Cycle 32 (R64): the reproducibility a request is made for is a remark ("seed 13 for repeatability", "keep
+-- it deterministic"); the word alone is no instruction, asked
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
+  check_eq(ex("seed 13 for repeatability"), "SEED 13")
+  asked(ex("reproducible"), "a remark alone")
+end
