@@ -796,6 +796,18 @@ local function typed_abbreviations(text)
   return changed and table.concat(toks, " ") or text
 end
 
+-- The names after which a signed value with no unit is a change of that value ("speed +20", "alt -2000",
+-- "hdg +20", "climb +3000"): name (lower case) -> "speed" | "alt" | "hdg", or "alt+" | "alt-" for a verb that
+-- says the direction (the other sign contradicts it: "climb -3000" is left as typed, and asked)
+local SIGNED_CHANGE = { speed = "speed", spd = "speed", alt = "alt", altitude = "alt", climb = "alt+",
+                        descend = "alt-", heading = "hdg", hdg = "hdg" }
+
+-- Units of a change said with "more"/"less" after its amount or "gain"/"lose" before it ("20 kt less", "lose
+-- 4000 ft"): unit (lower case) -> "speed" | "alt"; the words -> +1 (faster, up) | -1 (slower, down)
+local UNIT_CHANGE = { kt = "speed", kts = "speed", knots = "speed", ft = "alt", feet = "alt" }
+local MORE_LESS = { more = 1, less = -1 }
+local GAIN_LOSE = { gain = 1, lose = -1 }
+
 local function written_forms(text)
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   text = text:gsub("^(%s*)%.(%a)", "%1%2")
@@ -934,6 +946,39 @@ local function written_forms(text)
     if u == "ft" or u == "feet" then return (sign == "+" and "up " or "down ") .. n .. " " .. unit end
     return nil
   end)
+  -- the same change typed with no unit straight after the value's name ("speed +20", "alt -2000", "climb
+  -- +3000", "heading +20"): knots, feet, or degrees of a turn to the right (+) or left (-)
+  -- ("vertical speed -2000" is a rate, its sign its direction)
+  text = text:gsub("()%f[%a](%a+)(%s+)([%+%-])(%d+)%f[^%w%.]", function(at, name, space, sign, n)
+    local kind = SIGNED_CHANGE[name:lower()]
+    if kind == "speed" and (text:sub(1, at - 1):match("(%a+)%s*$") or ""):lower() == "vertical" then return nil end
+    if kind == "speed" then return name .. space .. n .. " kt" .. (sign == "+" and " faster" or " slower") end
+    if kind == "alt" or kind == "alt" .. sign then
+      return name .. space .. (sign == "+" and "up " or "down ") .. n .. " ft"
+    end
+    if kind == "hdg" then return "turn " .. (sign == "+" and "right " or "left ") .. n .. " degrees" end
+    return nil
+  end)
+  -- an amount with its unit and "more"/"less" after it, or "gain"/"lose" before it ("20 kt less", "lose 4000
+  -- ft", "gain 1000 feet"): that many faster/slower, up/down
+  -- ("2000 ft more or less", "20 kt less than ...": an estimate or a bound, left as typed)
+  text = text:gsub("%f[%w](%d+)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
+    local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
+    local nx = (text:match("^%s+(%a+)", at) or ""):lower()
+    if not (kind and dir) or nx == "or" or nx == "than" then return nil end
+    if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
+    return (dir > 0 and "up " or "down ") .. n .. space .. unit
+  end):gsub("%f[%a](%a+)(%s+)(%d+)(%s*)(%a+)%f[%A]", function(verb, space, n, space2, unit)
+    local dir, kind = GAIN_LOSE[verb:lower()], UNIT_CHANGE[unit:lower()]
+    if not (kind and dir) then return nil end
+    if kind == "speed" then return n .. space2 .. unit .. (dir > 0 and " faster" or " slower") end
+    return (dir > 0 and "up" or "down") .. space .. n .. space2 .. unit
+  end)
+  -- "a 180 heading", "the 090 heading": a heading of three digits said before its name
+  text = text:gsub("%f[%a]([Aa]n?%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
+    :gsub("%f[%a]([Tt]he%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
+  -- "45.6,-122.6": a latitude and longitude in decimal degrees typed with a comma and no space between them
+  text = text:gsub("%f[%d%-](%-?%d%d?%.%d+),(%-?%d%d?%d?%.%d+)%f[^%w%.]", "%1 %2")
   return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
     if b == "000" or text:sub(at):match("^%s*[Ff][Ee]?[Ee]?[Tt]%f[%A]") or text:sub(at):match("^%s*[Ff][Oo][Oo][Tt]") then
       return a .. b
@@ -2444,9 +2489,10 @@ function G:when_reached(s)
   if #self:quantities(c, s.trig) > 0 then return false end
   local verb = self:skip_fillers(c + 1)
   if self:word_in(c + 1, s.trig, "there level lvl") then return true end
-  -- ("when reaching", "when you reach it", "once it reaches that": the level of the instruction before)
+  -- ("when reaching", "when you reach it", "once it reaches that", "when you hit it": the level of the
+  -- instruction before)
   if self:word(verb, "you it he she they") then verb = self:skip_fillers(verb + 1) end
-  if not self:word(verb, "reaching reach reaches") then return false end
+  if not self:word(verb, "reaching reach reaches hit hits") then return false end
   local k = self:skip_fillers(verb + 1)
   if self:word(k, "it that") then k = self:skip_fillers(k + 1) end
   return k == s.trig

@@ -1077,7 +1077,7 @@ function m:pick(c, s, repeated)
   return self:take(c[1])
 end
 
--- "at four thousand reduce speed to 210", "(when) passing flight level 130
+-- "at four thousand reduce speed to 210", "when you hit FL180 slow to 250", "(when) passing flight level 130
 -- reduce speed 250", "leaving FL340 maintain Mach .82", "when level flight level 350, speed Mach .78"
 -- ("level" after a condition word, as "reaching"); "after passing FL100 (resume own navigation) direct HEMEL"
 -- (a direct-to waits for a level passed, left or reached; so does a switch of navigation: "on reaching FL120
@@ -1095,7 +1095,7 @@ function m:at_altitude(s)
     b = b - 1
     while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
   end
-  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach")
+  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach hit hits")
   -- ("when you get to FL180 reduce 250", "once it gets to FL180": "to" after "get" is the verb's)
   local got = self:find_word(b, s.trig, "get gets getting")
   local got_to = got < a and self:word(got + 1, "to")
@@ -1113,6 +1113,8 @@ function m:at_altitude(s)
     end
   end
   if a >= s.trig then return nil end
+  -- ("when you hit FL180 slow to 250": "hit" is a verb of reaching only after a condition word)
+  if self:word(a, "hit hits") and not self:word_in(math.max(b, a - 3), a, "@condition") then return nil end
   -- ("fly at 30000 ft and heading 100": the level flown at, an instruction of its own, no condition)
   if self:word(a, "at") and self:word(a - 1, "fly flies stay remain cruise") then return nil end
   -- a value said before the condition is another instruction's, which must not wait for it

@@ -676,7 +676,41 @@ return function(H, f, wrap, compass)
     local down = self:word_in(cb, ce, "descent descend descending")
     local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
+    -- a level said after the rate with "to" or "target" ("1200 fpm down to 13000", "VS 1000 up, target
+    -- 14000"): the level the rate flies to, an ALT beside the VS; one on the other side of the aircraft's
+    -- level from the rate's direction is asked
+    local level = self:rate_target(v, ce)
+    local now = level and self:state(id)
+    if level and now then
+      local ft, cur = level.value, now.alt_ft or 0
+      local way = ft > cur + 50 and 1 or ft < cur - 50 and -1 or 0
+      if way == 0 or (dir ~= 0 and dir ~= way) then
+        return self:need(string.format("%s is at %s ft: %s at %s ft/min to %s? Please confirm the level.", id,
+          f.int(cur), dir < 0 and "descend" or "climb", f.int(math.abs(fpm)), f.alt(ft, level.fl)))
+      end
+      dir = way
+    end
     if fpm > 0 and dir < 0 then fpm = -fpm end
     self:emit("VS " .. id .. " " .. f.int(fpm))
+    if level then
+      self:take(level)
+      self:emit("ALT " .. id .. " " .. f.alt(level.value, level.fl))
+    end
+  end
+
+  -- The level a vertical speed flies to, said after its quantity v with "to" or "target" before it and only
+  -- "up", "down", "a", "of" or one comma between ("1000 fpm up to 12000", "VS 1000 up, target 14000"); the
+  -- search ends at token e or the clause after that comma: the level's quantity or nil.
+  function m:rate_target(v, e)
+    local k = v.e
+    while k <= #self.t and (self:word(k, "up down a of") or (self.t[k].kind == "punct" and self.t[k].text == ",")) do
+      k = k + 1
+    end
+    if not self:word(k, "to target") then return nil end
+    local q = self:quantities(k + 1, math.max(e, k + 4))[1]
+    if not q or q.b ~= k + 1 or not (q.kind == "alt" or (q.kind == "plain" and (q.fl or q.value >= 1000))) then
+      return nil
+    end
+    return q
   end
 end

@@ -209,9 +209,11 @@ return {
         -- squawk's own display, where a command shows or draws what it is asked, and the traffic on it
         -- ("put a Delta CRJ900 on the board", "remove the United from the scene")
         "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
-        -- the experiment a request is made for ("for the next trial", "the participant keeps missing it")
+        -- the experiment a request is made for ("for the next trial", "the participant keeps missing it", "seed
+        -- 7 for reproducibility")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
-        "experiments",
+        "experiments", "reproducibility", "reproducible", "repeatability", "repeatable", "determinism",
+        "deterministic",
         -- an airspace design put to the test ("we're evaluating reduced separation", "the one that tests the
         -- new branch", "the designer's note", "a quick check before we run"; a verb's plain form, "to test
         -- ...", is left to G:purpose)
@@ -342,8 +344,9 @@ return {
   -- ("when passing flight level 130 reduce speed 250": ATALT)
   level_condition = { "when", "once", "passing", "leaving", "reaching", "after" },
   -- words between such a level and the instruction word that waits for it, part of the instruction
-  -- ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct HEMEL")
-  condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then" },
+  -- ("when passing FL90 fly heading 090", "after passing FL100 resume own navigation direct HEMEL", "when at
+  -- 12000 set speed 240")
+  condition_lead = { "fly", "turn", "proceed", "route", "resume", "own", "navigation", "then", "set" },
   -- before the level an aircraft leaves, said with the one it is cleared to ("leaving FL260 for FL200")
   level_left = { "leaving", "passing", "vacating" },
   -- a climb or descent left to the pilot ("descend when ready"): said with no level, asked about

@@ -447,6 +447,8 @@ function M.typed(state, ctx)
         and tonumber(c:match("^%S+[%s,]+%S+[%s,]+(%d+)")) <= 36 then
       return "english"
     end
+    -- ("kl204 hdg -30", "heading +20": a signed heading in lower case is a turn by that much, English)
+    if name == "HDG" and verb ~= verb:upper() and c:match("^%S+[%s,]+%S+[%s,]+[%+%-]%d") then return "english" end
     -- "cre tst9 a320 48 11 90 fl200 25": an aircraft created in the air below lexicon.min_airborne_kt
     -- is English (its speed asked about there)
     if name == "CRE" then

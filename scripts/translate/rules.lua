@@ -416,6 +416,7 @@ return function(intent, rule, words)
   rule { "slow", "dtmult", near = { 5, "half" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "fast faster", "dtmult", prev = { 2, "twice thrice times x" } }  -- "run twice as fast"
   rule { "multiplier", "dtmult" }
+  rule { "compression acceleration", "dtmult", prev = { 1, "time" } }  -- "4x time compression", "time acceleration 8"
   rule { "fast", "ff", next = "time" }  -- "run in fast time": fast time with no end is FF
   -- "run the simulation fast for 30 seconds" (not "run it and fast forward 3 minutes": an instruction of its own)
   rule { "fast", false, prev = { 4, "run advance" },

@@ -775,7 +775,7 @@ do
   check_eq(bt("EZY45 trun lfet heading 200"), "HDG EZY45 200 LEFT")
   check_eq(bt("KL204 up to 300"), "ALT KL204 FL300")
   check_eq(bt("KL204 +10 kts"), "SPD KL204 290")
-  check(bt("KL204 speed +10"):find("^ASK") ~= nil, "a signed value typed as TrafScript is no speed of 10 kt")
+  check_eq(bt("KL204 speed +10"), "SPD KL204 290")  -- a signed value with no unit is a change too, never 10 kt
   check(bt("KL204 to two eight zero"):find("^ASK Heading 280 or flight level 280") ~= nil, bt("KL204 to two eight zero"))
   -- an aircraft the verb instructs is no context; one the aircraft is sent to meet is
   check_eq(bt("for the conflict, get EZY45 up to FL310 to meet KL204"), "ALT EZY45 FL310")
@@ -4605,7 +4605,7 @@ do
   -- a plus typed before a vertical speed is its sign; "kits" after a speed is knots
   check_eq(ex("klm77 fl190 vs +1200"), "ALT KLM77 FL190 ; VS KLM77 1200")
   check_eq(ex("klm77 spd 230 kits"), "SPD KLM77 230")
-  asked(ex("klm77 spd +20"), ex("klm77 spd +20"))
+  check_eq(ex("klm77 spd +20"), "SPD KLM77 270")  -- a signed speed with no unit: 20 kt faster
   check(ex("klm77 climb fl200 .78"):match("^ALT KLM77 FL200") ~= nil, ex("klm77 climb fl200 .78"))
 end
 
@@ -5020,4 +5020,79 @@ do
   asked(ex("wind at ALFA 300 degrees"), "no speed told")
   local _, nx = navscene({ "CRE FIN4TK A320 60.5 25.5 250 FL110 270" }, "winds at an airport by its name")
   if nx then check_eq(nx("wind at Arlanda 270 degrees 25 knots"), "WIND ESSA 270 25") end
+end
+
+-- Cycle 32 (R54, R64): a condition of reaching a level said with "hit" ("when you hit FL120 slow to 250",
+-- "when it hits that, speed 250") or with "when at" and "set" before the instruction waits for that level;
+-- "hit FL120" with no condition word is no condition
+do
+  local _, ex = scene({ "CRE UAL9 B738 37.9 -122.5 140 10000 250" })
+  check_eq(ex("UAL9: when you hit FL120 reduce to 240"), "ATALT UAL9 FL120 SPD UAL9 240")
+  check_eq(ex("UAL9 once at 11000 set speed 230"), "ATALT UAL9 11000 SPD UAL9 230")
+  check_eq(ex("UAL9 climb FL140, when it hits that slow to 230"), "ALT UAL9 FL140 ; ATALT UAL9 FL140 SPD UAL9 230")
+  check_eq(ex("UAL9 hit FL120 and slow to 240"), "ALT UAL9 FL120 ; SPD UAL9 240")
+end
+
+-- Cycle 32 (R64): a signed value with no unit after the value's name is a change ("spd -15", "altitude +1500",
+-- "descend -1000", "hdg +25"); a sign against the verb ("climb -1000") is asked; typed TrafScript in capitals
+-- keeps its own reading
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
+  check_eq(ex("SKW7 spd -15"), "SPD SKW7 205")
+  check_eq(ex("SKW7 altitude +1500"), "ALT SKW7 8500")
+  check_eq(ex("SKW7 descend -1000"), "ALT SKW7 6000")
+  check_eq(ex("SKW7 hdg +25"), "HDG SKW7 295 RIGHT")
+  check_eq(ex("SKW7 heading -40"), "HDG SKW7 230 LEFT")
+  asked(ex("SKW7 climb -1000"), "a sign against the verb")
+end
+
+-- Cycle 32 (R64): a heading said before its name ("fly a 240 heading", "the 090 heading") and a position typed
+-- as "lat,lon" with no space ("37.2,-121.4")
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
+  check_eq(ex("give SKW7 a 240 heading"), "HDG SKW7 240")
+  check_eq(ex("SKW7 back on the 090 heading"), "HDG SKW7 90")
+  check_eq(ex("create QXE4 type DH8D at 37.2,-121.4, heading 090, 5000 ft, 200 kt"), "CRE QXE4 DH8D 37.2 -121.4 90 5000 200")
+  asked(ex("SKW7 a heading"), "a heading with no value")
+end
+
+-- Cycle 32 (R64): a change said with "more"/"less" after its amount and unit, or "gain"/"lose" before it
+-- ("15 kt less", "lose 1500 ft", "gain 1000 feet"); "more or less" and "less than" are no change, and a signed
+-- vertical speed stays a rate
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
+  check_eq(ex("SKW7 speed 15 kt less"), "SPD SKW7 205")
+  check_eq(ex("SKW7 10 knots more"), "SPD SKW7 230")
+  check_eq(ex("SKW7 has to lose 1500 ft"), "ALT SKW7 5500")
+  check_eq(ex("SKW7 gain 1000 feet"), "ALT SKW7 8000")
+  check_eq(ex("SKW7 vertical speed -1500"), "VS SKW7 -1500")
+  asked(ex("SKW7 speed 20 kt less than the leader"), "less than: a bound, not a change")
+end
+
+-- Cycle 32 (R64): a level said after a vertical speed with "to" or "target" is the level it flies to ("800 fpm
+-- down to 5000", "vs 1500 up, target 9000"): a VS and an ALT; a level on the other side from the rate's
+-- direction is asked
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
+  check_eq(ex("SKW7 800 fpm down to 5000"), "VS SKW7 -800 ; ALT SKW7 5000")
+  check_eq(ex("SKW7 vs 1500 up, target 9000"), "VS SKW7 1500 ; ALT SKW7 9000")
+  check_eq(ex("SKW7 vs 1500"), "VS SKW7 1500")
+  asked(ex("SKW7 vs 1500 up to 5000"), "a climb to a lower level")
+end
+
+-- Cycle 32 (R64): "time compression", "time acceleration" name the simulation's rate ("8x time compression",
+-- "time acceleration 2x"); said with no rate it is asked
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220", "CRE UAL5 B738 37.0 -122.0 100 8000 250" })
+  check_eq(ex("8x time compression please"), "DTMULT 8")
+  check_eq(ex("time acceleration 2x, SKW7 descend 5000"), "DTMULT 2 ; ALT SKW7 5000")
+  asked(ex("more time compression"), "no rate said")
+end
+
+-- Cycle 32 (R64): the reproducibility a request is made for is a remark ("seed 13 for repeatability", "keep
+-- it deterministic"); the word alone is no instruction, asked
+do
+  local _, ex = scene({ "CRE SKW7 CRJ9 37.5 -121.9 270 7000 220" })
+  check_eq(ex("seed 13 for repeatability"), "SEED 13")
+  asked(ex("reproducible"), "a remark alone")
 end
