@@ -2927,7 +2927,9 @@ end
 
 -- A value with a unit of its own (a level, feet, knots, Mach, "heading N")
 -- is an instruction wherever it stands; a bare number counts only after
--- the instruction word (one before it is most often a misheard callsign).
+-- the instruction word or a verb that introduces a value (lexicon.clause_verbs:
+-- "fly 270 and maintain 9000"); one elsewhere before it is most often a misheard
+-- callsign.
 local function own_unit(q)
   return q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading"
 end
@@ -2948,7 +2950,7 @@ function G:unexplained(s, n_before)
   end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
-        and q.b > corrected and ((opened and q.b > opened) or own_unit(q))
+        and q.b > corrected and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs"))
         and not value_carried(q, nums) then
       local b = q.b
       for _, r in ipairs(self.refs) do

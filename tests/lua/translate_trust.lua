@@ -5096,3 +5096,14 @@ do
   check_eq(ex("seed 13 for repeatability"), "SEED 13")
   asked(ex("reproducible"), "a remark alone")
 end
+
+-- A bare number right after a verb that introduces a value (lexicon.clause_verbs: "fly 270") before another
+-- instruction is a value of its own: carried by a command or asked about, never dropped ("fly 270 and
+-- maintain 9000" gave the level alone); "turn 270 and maintain 9000" is both instructions
+do
+  local _, ex = scene({ "CRE UAL456 B738 37.0 -122.0 090 FL100 280" })
+  asked(ex("UAL456 fly 270 and maintain 9000"), "heading or level 270, dropped before")
+  asked(ex("UAL456 fly 270, then descend 9000"), "the same after a comma and then")
+  check_eq(ex("UAL456 turn 270 and maintain 9000"), "HDG UAL456 270 ; ALT UAL456 9000")
+  check_eq(ex("UAL456 fly heading 270 and maintain 9000"), "HDG UAL456 270 ; ALT UAL456 9000")
+end
