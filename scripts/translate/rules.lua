@@ -1516,8 +1516,12 @@ return function(intent, rule, words)
       and (after == nil or after.kind == "punct")
       and g:word_in(1, i - 1, "pz rpz zone zoner zonedh dh dtlook lookahead asas cdmethod detection")
   end }
+  -- ("3 mile separation horizontally", "a 1000 ft separation"): a distance or height said just before it,
+  -- no aircraft named (one kept apart from another is an instruction squawk does not read)
+  rule { "separation", "zone", prev = { 1, "nm mile miles ft foot feet" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
-         not_near = { 4, "minimum nm nautical miles radius ft feet" } }
+         not_near = { 4, "minimum nm nautical mile miles radius ft foot feet horizontally vertically laterally" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected protection prot pz rpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"

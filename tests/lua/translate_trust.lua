@@ -5021,3 +5021,12 @@ do
   local _, nx = navscene({ "CRE FIN4TK A320 60.5 25.5 250 FL110 270" }, "winds at an airport by its name")
   if nx then check_eq(nx("wind at Arlanda 270 degrees 25 knots"), "WIND ESSA 270 25") end
 end
+
+-- Cycle 32 (R66): "separation" with a distance or height said just before it ("a 4 nm separation", "2000 ft
+-- separation vertically") sets the protected zone; with an aircraft named it is no setting (asked)
+do
+  local _, ex = scene({ "CRE AFR61 A320 48.9 2.5 270 FL120 260", "CRE AFR62 A320 48.9 2.9 270 FL120 260" })
+  check_eq(ex("we run a 4 nm separation laterally"), "ZONER 4")
+  check_eq(ex("let's try 2000 ft separation vertically"), "ZONEDH 2000")
+  asked(ex("AFR61 keep 6 miles separation from AFR62"), "an aircraft kept apart")
+end
