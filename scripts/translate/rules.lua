@@ -647,9 +647,11 @@ return function(intent, rule, words)
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
-  -- "add Lambourne to the end of the Air France's route": a navaid or airport said by its one-word name
+  -- "add Lambourne to the end of the Air France's route", "add glen rose to skywest 4420's route": a navaid
+  -- or airport said by its name of one or two words
   rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
-    return g:word(i + 2, "to") and g:place_by_name(i + 1, i + 2) ~= nil
+    return (g:word(i + 2, "to") and g:place_by_name(i + 1, i + 2) ~= nil)
+      or (g:word(i + 3, "to") and g:place_by_name(i + 1, i + 3) ~= nil)
   end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
@@ -1504,6 +1506,10 @@ return function(intent, rule, words)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 6), "cpa")
   end }
   rule { "past", "resnav", next = "cpa", when = function(g, i) return g:word_in(1, i, "resolution resolutions resolving reso") end }
+  -- ("resume nav past CPA for resolution", "... after resolving"): the resolution whose end past CPA is
+  -- said straight before it, no setting of its own
+  rule { "resolution resolutions resolving reso", false, prev = { 1, "for after following from of" },
+         when = function(g, i) return g:word_in(math.max(1, i - 4), i, "cpa") end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }

@@ -5030,3 +5030,22 @@ do
   check_eq(ex("let's try 2000 ft separation vertically"), "ZONEDH 2000")
   asked(ex("AFR61 keep 6 miles separation from AFR62"), "an aircraft kept apart")
 end
+
+-- Cycle 32 (R66): "resolution" straight after "for"/"after" with CPA said just before it names whose end the
+-- aircraft resume past ("resume nav past CPA for resolution"), no resolution setting; said on its own after a
+-- comma it is still a setting
+do
+  local _, ex = scene({ "CRE IBE31 A320 40.4 -3.6 090 FL200 260" })
+  check_eq(ex("let them resume navigation past CPA after resolution"), "RESNAV PASTCPA")
+  check_eq(ex("resolution MVP, then resume nav past cpa"), "RESO MVP ; RESNAV PASTCPA")
+end
+
+-- Cycle 32 (R66): a navaid said by its two-word navdata name after "add" and before "to" ("add point reyes to
+-- UAL812's route") is added to the route; two words naming no navaid near the traffic are asked about
+do
+  local _, nx = navscene({ "CRE UAL812 B738 37.6 -122.4 300 FL120 250" }, "two-word navaid names")
+  if nx then
+    check_eq(nx("please add point reyes to UAL812's route"), "ADDWPT UAL812 PYE")
+    asked(nx("add point blank to the route of UAL812"), "no navaid of that name")
+  end
+end
