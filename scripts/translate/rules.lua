@@ -306,6 +306,13 @@ return function(intent, rule, words)
     return q ~= nil and q.b == i + 2 and q.kind == "alt"
   end }
   rule { "level", "alt", next = "off" }
+  -- "is gonna level at niner thousand", "will level at 9000": the level it levels at, an altitude or a bare
+  -- number of hundreds of feet straight after "at" ("level at 40" is no level)
+  rule { "level levels", "alt", next = "at", not_prev = { 1, "flight" }, when = function(g, i)
+    local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and q.b == i + 2 and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000
+      and q.value % 100 == 0))
+  end }
   -- "occupy flight level 180", "occupy 5700 metres": the level taken (ICAO English of the former USSR)
   rule { "occupy occupies occupying", "alt", when = function(g, i)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]

@@ -5049,3 +5049,13 @@ do
     asked(nx("add point blank to the route of UAL812"), "no navaid of that name")
   end
 end
+
+-- Cycle 32 (R66): a level said as what the aircraft is going to level at ("is gonna level at niner thousand",
+-- "will level at FL110") is the level cleared; a bare number too small for a level ("level at 40") is asked
+do
+  local _, ex = scene({ "CRE RYR45 B738 53.4 -6.3 090 FL090 260" })
+  check_eq(ex("ryanair 45 is gonna level at one one thousand, keep him there"), "ALT RYR45 11000")
+  check_eq(ex("RYR45 is going to level at FL130"), "ALT RYR45 FL130")
+  check_eq(ex("RYR45 will level at 7000 then turn right heading 120"), "ALT RYR45 7000 ; HDG RYR45 120 RIGHT")
+  asked(ex("RYR45 level at 40"), "no level")
+end
