@@ -5059,3 +5059,19 @@ do
   check_eq(ex("RYR45 will level at 7000 then turn right heading 120"), "ALT RYR45 7000 ; HDG RYR45 120 RIGHT")
   asked(ex("RYR45 level at 40"), "no level")
 end
+
+-- Cycle 32 (R65, R66): a typed ident of letters and digits that no aircraft bears, said with an aircraft flying
+-- named, is the navdata's fix near the traffic ("SAS4102 direct BR421"), no callsign; one no place bears
+-- is still asked about, and digits with an "x" typed onto them are a rate ("go 2x"), no callsign
+do
+  local _, nx = navscene({ "CRE SAS4102 A320 60.55 4.80 140 FL130 280", "ADDWPT SAS4102 ELDOS" },
+    "fix idents with digits")
+  if nx then
+    check_eq(nx("SAS4102 proceed direct BR421"), "ADDWPT SAS4102 BR421 ; DIRECT SAS4102 BR421")
+    check_eq(nx("SAS4102 add BR421 then ELDOS to the route"), "ADDWPT SAS4102 BR421 ; ADDWPT SAS4102 ELDOS")
+    asked(nx("SAS4102 direct BR499"), "no place of that ident")
+    asked(nx("BR421 climb FL200"), "no aircraft named")
+  end
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL100 250" })
+  check_eq(ex("ok go 3x"), "DTMULT 3")
+end
