@@ -81,6 +81,8 @@ return {
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
         "hard", "sharp", "sharply",
+        -- (spoken hedges: "the clock is running kinda slow, go 2x")
+        "kinda", "sorta", "somewhat",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",

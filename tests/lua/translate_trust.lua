@@ -5074,4 +5074,7 @@ do
   end
   local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL100 250" })
   check_eq(ex("ok go 3x"), "DTMULT 3")
+  -- ("so the ..." opening the request, after fillers only, is no reason: the instruction after it is read)
+  check_eq(ex("ok so the sim is kinda sluggish, go 3x"), "DTMULT 3")
+  check_eq(ex("seed 7 so the runs are repeatable"), "SEED 7")
 end
