@@ -500,11 +500,16 @@ std::vector<Reference> find_references(const std::vector<Token>& t, const WorldV
       return e < t.size() && is_word(t[e]) &&
              std::any_of(std::begin(kUnits), std::end(kUnits), [&](const char* u) { return t[e].text == u; });
     };
+    // Digits with an "x" typed onto them ("go 2x", "run it 4x") are a rate, not a callsign's
+    // digits and letter.
+    const bool rate = !suf.groups.empty() && suf.ends.front() > 0 &&
+                      is_word(t[suf.ends.front() - 1]) && t[suf.ends.front() - 1].glued &&
+                      t[suf.ends.front() - 1].text == "x";
     // Instruction words alone before the digits are that instruction and its value ("seed 1234
     // please", "random seed 42"), no airline misheard (that takes a word of its own: "front turn" =
     // Frontier).
     const bool instruction_alone = keyword && only_keywords && i > words_begin;
-    if (!suf.groups.empty() && !unit_after(suf.ends.back()) && !instruction_alone) {
+    if (!suf.groups.empty() && !unit_after(suf.ends.back()) && !instruction_alone && !rate) {
       CallsignMatch m = match_world("", words, suf, fleet, names);
       // With one aircraft, an opening callsign that sounds like nothing else is that aircraft.
       double need = keyword ? 0.55 : fleet.size() == 1 ? 0.0 : 0.5;

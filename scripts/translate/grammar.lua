@@ -1339,7 +1339,10 @@ function G:in_reason(i)
       elseif punct and self:word(k + 1, "@then_words") then
         -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
         inside = false
-      elseif (w and REASON_WORDS[w]) or (w == "so" and self:word(k + 1, "@reason_after_so"))
+      elseif (w and REASON_WORDS[w])
+          -- ("ok so the clock is running slow, go 2x": "so" opening the request, with only fillers before it,
+          -- gives the reason for nothing said)
+          or (w == "so" and self:word(k + 1, "@reason_after_so") and self:skip_fillers(1) < k)
           or (w == "see" and self:word(k + 1, "@see_whether") and instructed(k)) then
         inside = true
       elseif w == "so" and k > 1 and self.t[k - 1].kind ~= "punct" and not self.t[k - 1].filler
@@ -4664,6 +4667,7 @@ function M.translate(text, world)
   g:airline_refs()
   g:type_refs()
   g:prefix_refs()
+  g:fix_refs()
   g:opening_right()
   g:runway_sides()
   g:level_limits()

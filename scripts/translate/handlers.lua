@@ -687,6 +687,32 @@ function m:prefix_refs()
   end
 end
 
+-- "SAS4102 direct BR421", "add BENTI then BR421 to the route": a typed word of letters and digits that no
+-- aircraft bears, said where an aircraft flying is named too and nothing is created, is the fix, navaid or
+-- airport the navdata holds under it (world.place_known) within lexicon.navaid_range_nm of an aircraft flying:
+-- its aircraft ref becomes a waypoint ref. A word no such place bears stays a callsign (asked about).
+function m:fix_refs()
+  local known = self.world.place_known
+  if not known or self:word_in(1, #self.t + 1, "create cre crecon spawn mcre new") then return end
+  local flying = false
+  for _, r in ipairs(self.refs) do flying = flying or (r.kind == "aircraft" and r.exists) end
+  if not flying then return end
+  for _, r in ipairs(self.refs) do
+    local raw = self.t[r.b].raw
+    if r.kind == "aircraft" and not r.exists and not r.spoken and r.e == r.b + 1 and raw:match("%a")
+        and raw:match("%d") then
+      local lat, lon = known(raw:upper())
+      for _, a in ipairs(lat and self.fleet or {}) do
+        local dlat, dlon = a.lat and (a.lat - lat), a.lat and (a.lon - lon) * math.cos(math.rad(lat))
+        if dlat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm then
+          r.kind, r.name = "waypoint", raw:upper()
+          break
+        end
+      end
+    end
+  end
+end
+
 -- Makers (lower case, "cessna") -> {designator = true} of the types squawk
 -- knows, model names ("737", "a320") -> designator, and designators said
 -- without their maker's letter ("738" -> B738, "319" -> A319: the digits of

@@ -81,6 +81,8 @@ return {
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
         "hard", "sharp", "sharply",
+        -- (spoken hedges: "the clock is running kinda slow, go 2x")
+        "kinda", "sorta", "somewhat",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
         "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
@@ -373,8 +375,8 @@ return {
   -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there"; unless one of `described_not`
   -- follows ("X is cleared FL200", "X is to climb")
   described = { "is", "are", "keeps", "stays", "remains", "sits" },
-  described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "climbing", "descending",
-                    "turning", "both", "also" },
+  described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "gonna", "climbing",
+                    "descending", "turning", "both", "also" },
   -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- words after which a clause is a new instruction

@@ -306,6 +306,13 @@ return function(intent, rule, words)
     return q ~= nil and q.b == i + 2 and q.kind == "alt"
   end }
   rule { "level", "alt", next = "off" }
+  -- "is gonna level at niner thousand", "will level at 9000": the level it levels at, an altitude or a bare
+  -- number of hundreds of feet straight after "at" ("level at 40" is no level)
+  rule { "level levels", "alt", next = "at", not_prev = { 1, "flight" }, when = function(g, i)
+    local q = g:quantities(i + 2, math.min(#g.t + 1, i + 5))[1]
+    return q ~= nil and q.b == i + 2 and (q.kind == "alt" or (q.kind == "plain" and q.value >= 1000
+      and q.value % 100 == 0))
+  end }
   -- "occupy flight level 180", "occupy 5700 metres": the level taken (ICAO English of the former USSR)
   rule { "occupy occupies occupying", "alt", when = function(g, i)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
@@ -648,9 +655,11 @@ return function(intent, rule, words)
   rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
-  -- "add Lambourne to the end of the Air France's route": a navaid or airport said by its one-word name
+  -- "add Lambourne to the end of the Air France's route", "add glen rose to skywest 4420's route": a navaid
+  -- or airport said by its name of one or two words
   rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
-    return g:word(i + 2, "to") and g:place_by_name(i + 1, i + 2) ~= nil
+    return (g:word(i + 2, "to") and g:place_by_name(i + 1, i + 2) ~= nil)
+      or (g:word(i + 3, "to") and g:place_by_name(i + 1, i + 3) ~= nil)
   end }
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
@@ -1505,6 +1514,10 @@ return function(intent, rule, words)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 6), "cpa")
   end }
   rule { "past", "resnav", next = "cpa", when = function(g, i) return g:word_in(1, i, "resolution resolutions resolving reso") end }
+  -- ("resume nav past CPA for resolution", "... after resolving"): the resolution whose end past CPA is
+  -- said straight before it, no setting of its own
+  rule { "resolution resolutions resolving reso", false, prev = { 1, "for after following from of" },
+         when = function(g, i) return g:word_in(math.max(1, i - 4), i, "cpa") end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
@@ -1517,8 +1530,12 @@ return function(intent, rule, words)
       and (after == nil or after.kind == "punct")
       and g:word_in(1, i - 1, "pz rpz zone zoner zonedh dh dtlook lookahead asas cdmethod detection")
   end }
+  -- ("3 mile separation horizontally", "a 1000 ft separation"): a distance or height said just before it,
+  -- no aircraft named (one kept apart from another is an instruction squawk does not read)
+  rule { "separation", "zone", prev = { 1, "nm mile miles ft foot feet" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
-         not_near = { 4, "minimum nm nautical miles radius ft feet" } }
+         not_near = { 4, "minimum nm nautical mile miles radius ft foot feet horizontally vertically laterally" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected protection prot pz rpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"

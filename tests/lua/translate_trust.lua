@@ -5107,3 +5107,60 @@ do
   check_eq(ex("UAL456 turn 270 and maintain 9000"), "HDG UAL456 270 ; ALT UAL456 9000")
   check_eq(ex("UAL456 fly heading 270 and maintain 9000"), "HDG UAL456 270 ; ALT UAL456 9000")
 end
+
+-- Cycle 32 (R66): "separation" with a distance or height said just before it ("a 4 nm separation", "2000 ft
+-- separation vertically") sets the protected zone; with an aircraft named it is no setting (asked)
+do
+  local _, ex = scene({ "CRE AFR61 A320 48.9 2.5 270 FL120 260", "CRE AFR62 A320 48.9 2.9 270 FL120 260" })
+  check_eq(ex("we run a 4 nm separation laterally"), "ZONER 4")
+  check_eq(ex("let's try 2000 ft separation vertically"), "ZONEDH 2000")
+  asked(ex("AFR61 keep 6 miles separation from AFR62"), "an aircraft kept apart")
+end
+
+-- Cycle 32 (R66): "resolution" straight after "for"/"after" with CPA said just before it names whose end the
+-- aircraft resume past ("resume nav past CPA for resolution"), no resolution setting; said on its own after a
+-- comma it is still a setting
+do
+  local _, ex = scene({ "CRE IBE31 A320 40.4 -3.6 090 FL200 260" })
+  check_eq(ex("let them resume navigation past CPA after resolution"), "RESNAV PASTCPA")
+  check_eq(ex("resolution MVP, then resume nav past cpa"), "RESO MVP ; RESNAV PASTCPA")
+end
+
+-- Cycle 32 (R66): a navaid said by its two-word navdata name after "add" and before "to" ("add point reyes to
+-- UAL812's route") is added to the route; two words naming no navaid near the traffic are asked about
+do
+  local _, nx = navscene({ "CRE UAL812 B738 37.6 -122.4 300 FL120 250" }, "two-word navaid names")
+  if nx then
+    check_eq(nx("please add point reyes to UAL812's route"), "ADDWPT UAL812 PYE")
+    asked(nx("add point blank to the route of UAL812"), "no navaid of that name")
+  end
+end
+
+-- Cycle 32 (R66): a level said as what the aircraft is going to level at ("is gonna level at niner thousand",
+-- "will level at FL110") is the level cleared; a bare number too small for a level ("level at 40") is asked
+do
+  local _, ex = scene({ "CRE RYR45 B738 53.4 -6.3 090 FL090 260" })
+  check_eq(ex("ryanair 45 is gonna level at one one thousand, keep him there"), "ALT RYR45 11000")
+  check_eq(ex("RYR45 is going to level at FL130"), "ALT RYR45 FL130")
+  check_eq(ex("RYR45 will level at 7000 then turn right heading 120"), "ALT RYR45 7000 ; HDG RYR45 120 RIGHT")
+  asked(ex("RYR45 level at 40"), "no level")
+end
+
+-- Cycle 32 (R65, R66): a typed ident of letters and digits that no aircraft bears, said with an aircraft flying
+-- named, is the navdata's fix near the traffic ("SAS4102 direct BR421"), no callsign; one no place bears
+-- is still asked about, and digits with an "x" typed onto them are a rate ("go 2x"), no callsign
+do
+  local _, nx = navscene({ "CRE SAS4102 A320 60.55 4.80 140 FL130 280", "ADDWPT SAS4102 ELDOS" },
+    "fix idents with digits")
+  if nx then
+    check_eq(nx("SAS4102 proceed direct BR421"), "ADDWPT SAS4102 BR421 ; DIRECT SAS4102 BR421")
+    check_eq(nx("SAS4102 add BR421 then ELDOS to the route"), "ADDWPT SAS4102 BR421 ; ADDWPT SAS4102 ELDOS")
+    asked(nx("SAS4102 direct BR499"), "no place of that ident")
+    asked(nx("BR421 climb FL200"), "no aircraft named")
+  end
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL100 250" })
+  check_eq(ex("ok go 3x"), "DTMULT 3")
+  -- ("so the ..." opening the request, after fillers only, is no reason: the instruction after it is read)
+  check_eq(ex("ok so the sim is kinda sluggish, go 3x"), "DTMULT 3")
+  check_eq(ex("seed 7 so the runs are repeatable"), "SEED 7")
+end

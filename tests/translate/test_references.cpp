@@ -1,0 +1,39 @@
+// References found in an utterance: aircraft, types and waypoints (references.h).
+#include <doctest/doctest.h>
+
+#include "translate/lexer.h"
+#include "translate/references.h"
+#include "translate/tables.h"
+#include "translate/world_view.h"
+
+using namespace squawk::translate;
+
+namespace {
+
+const Tables& names() {
+  static const Tables t({{"ryanair", "RYR"}}, {}, {}, {{"alpha", 'A'}, {"xray", 'X'}});
+  return t;
+}
+
+// The aircraft references found in `text` with `ids` flying.
+std::vector<std::string> aircraft_in(const std::string& text, const std::vector<std::string>& ids) {
+  StaticWorld world;
+  for (const auto& id : ids) world.add_aircraft({id, {}});
+  const std::vector<Token> toks = lex(text);
+  std::vector<bool> used(toks.size(), false);
+  std::vector<std::string> found;
+  for (const auto& r : find_references(toks, &world, used, names()))
+    if (r.kind == RefKind::kAircraft) found.push_back(r.name);
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("digits with an x typed onto them are a rate, no garbled opening callsign") {
+  CHECK(aircraft_in("go 2x", {"KLM12"}).empty());
+  CHECK(aircraft_in("run it 4x", {"KLM12"}).empty());
+  // a flight number typed with its letters after the airline is still that aircraft
+  CHECK(aircraft_in("ryanair 8UK climb", {"RYR8UK", "KLM12"}) ==
+        std::vector<std::string>{"RYR8UK"});
+  CHECK(aircraft_in("ryanair 2X climb", {"RYR2X", "KLM12"}) == std::vector<std::string>{"RYR2X"});
+}
