@@ -174,14 +174,14 @@ local function know_all(v, seen)
   if type(v) == "string" then return know(v) end
   -- (lexicon.aside and lexicon.self_correction.just_the say where words are set aside or what they
   -- keep, lexicon.foreign_digits are digits only beside another, lexicon.atc_units name a station only
-  -- in the addressing position, lexicon.label_roles only a speaker's label; lexicon.city_airports are places,
+  -- in the addressing position, lexicon.label_roles and lexicon.bare_labels only a speaker's label; lexicon.city_airports are places,
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
   -- their words only where those fit: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
-      or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles
+      or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations then
     return
   end
@@ -632,10 +632,13 @@ end
 -- ("operator, ...", "pseudo-pilot, ...", "sim op please give ..."). The machine teammate
 -- (lexicon.addressed_roles) opening the line is its addressee even without a comma before a word
 -- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...").
+-- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
+-- follows ("sim op pause the simulation"); said alone it is the line.
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local ADDRESSED = set_of(lexicon.addressed_roles.names)
 local GREETINGS = set_of(lexicon.addressed_roles.greetings)
+local BARE_LABELS = set_of(lexicon.bare_labels)
 local function all_roles(words)
   for w in words:lower():gmatch("%a+") do
     if not SPEAKER_ROLES[w] then return false end
@@ -653,6 +656,8 @@ local function role_dropped(text)
   end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] then return next_word end
+  local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
+  if pair and BARE_LABELS[pair:lower():gsub("%s+", " ")] then return request end
   return text
 end
 local ASSENT = set_of(lexicon.assent)

@@ -394,6 +394,9 @@ return {
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
   label_roles = { "operator", "op", "sim", "simulator", "sup", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
                   "ai", "teammate", "assistant", "engineer" },
+  -- labels of two words that open a line without a colon, as speech recognition writes them ("sim op
+  -- delete speedbird one one"): dropped when a request follows
+  bare_labels = { "sim op", "sim operator", "simulator operator", "pseudo pilot", "sim pilot" },
   -- a second speaker's label and assent after the request ("student: ity2011 climb fl150? engineer: yes do
   -- it"): the request stands as said; any other word after such a label leaves the line as typed
   assent = { "yes", "yeah", "yep", "ok", "okay", "sure", "do", "it", "go", "ahead", "fine", "approved",

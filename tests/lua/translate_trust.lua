@@ -5164,3 +5164,13 @@ do
   check_eq(ex("ok so the sim is kinda sluggish, go 3x"), "DTMULT 3")
   check_eq(ex("seed 7 so the runs are repeatable"), "SEED 7")
 end
+
+-- A speaker's label of two words written with no colon, as speech recognition gives it ("sim op delete
+-- speedbird one one", "sim operator pause the simulation"), is no part of the request: "op" in it is no OP
+do
+  local _, ex = scene({ "CRE BAW11 A320 1.0 1.0 000 FL100 250" })
+  check_eq(ex("sim op delete speedbird one one"), "DEL BAW11")
+  check_eq(ex("sim operator pause the simulation"), "HOLD")
+  check_eq(ex("pseudo pilot speedbird one one climb flight level one two zero"), "ALT BAW11 FL120")
+  check_eq(ex("sim op"), "OP")
+end
