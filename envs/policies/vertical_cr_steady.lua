@@ -26,7 +26,7 @@ local LOOKAHEAD_STEPS = 2
 local RETURN_STEPS = 2                 -- steps to get back to the target
 local HOLD_RATE = 0.625                -- [m/s] the hold's vertical speed
 local AIM_M = 100                      -- [m] above the runway's height at the runway
-local START_SHARE = 0.95               -- start down when the glide needs this share of MAX_RATE
+local START_SHARE = 1.0               -- start down when the glide needs this share of MAX_RATE
 local VS_ACCEL = 1.524                 -- [m/s^2] the simulator's V/S ramp
 local RATE_STEP = 0.25                 -- [m/s] resolution of the chosen vertical speed
 
