@@ -13,7 +13,8 @@
 --     above, else below), as fast as the full rate allows, instead of the rule's full rate away and
 --     full rate back, so it stays at the edge until the intruder is past.
 -- The vertical speed that reaches an altitude is chosen through the simulator's V/S ramp
--- (1.524 m/s², engine/sim/simulation.cpp). Observation: envs/policies/vertical_cr.lua's comment.
+-- (1.524 m/s², engine/sim/simulation.cpp). For a clone it keeps 150 m beyond the 1000 ft and holds
+-- at ±1.25 m/s (action ±0.1), clear of BlueSky's "no rate selected" band (docs/gym_envs.md). Observation: envs/policies/vertical_cr.lua's comment.
 -- Units: metres, seconds, m/s.
 
 local Descent = require("descent")

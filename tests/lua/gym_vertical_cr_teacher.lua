@@ -61,9 +61,9 @@ check_near(act(observation(60, {})), HOLD, 1e-12, "60 km out: hold")
 check(act(observation(35, {})) <= -0.5, "35 km out: descend")
 
 -- The steady teacher (envs/policies/vertical_cr_steady.lua): the rule's avoidance held at the edge
--- of an intruder's band (its altitude ± 1000 ft and 75 m) instead of the rule's full rate away
--- and back. Each case is a fresh policy's first look (no closing rate, no ground speed yet).
-local function steady(obs)
+-- of an intruder's band (its altitude ± 1000 ft and 150 m: 455 m) instead of the rule's full rate
+-- away and back. Each case is a fresh policy's first look (no closing rate, no ground speed yet).
+local function steady()
   local t = squawk.gym.load(squawk.home .. "/envs/policies/vertical_cr_steady.lua")
   t:reset(0)
   return t
@@ -72,32 +72,32 @@ local function rule_act(obs)
   rule:reset(0)
   return rule:act(obs)[1]
 end
-local STEADY_HOLD = 0.625 / 12.5
+local STEADY_HOLD = 1.25 / 12.5
 
 -- No intruder near, on the target: hold.
 check_near(steady():act(observation(150, {}))[1], STEADY_HOLD, 1e-12, "steady: holds the target")
--- On the target with an intruder 400 m below within the zone: outside its band (380 m), so hold;
--- the rule climbs away at the full rate.
-local below = {{8, 0, -400, 180, 150}}
-check_near(steady():act(observation(150, below))[1], STEADY_HOLD, 1e-12, "steady: holds 400 m above an intruder")
+-- On the target with an intruder 500 m below within the zone: outside its band, so hold; the rule
+-- climbs away at the full rate.
+local below = {{8, 0, -500, 180, 150}}
+check_near(steady():act(observation(150, below))[1], STEADY_HOLD, 1e-12, "steady: holds 500 m above an intruder")
 check_eq(rule_act(observation(150, below)), 1, "the rule climbs away")
--- 400 m above the target, where an intruder flies within the zone: the way back is in its band, so
--- the teacher stops at the band's edge (20 m down); the rule climbs away again at the full rate,
--- and one step later, 775 m above it, would fly back at the full rate: its flipping.
-local at_target = observation(150, {{8, 0, -400, 180, 150}})
-at_target[23] = (2600 - 1500) / 3000
+-- 500 m above the target, where an intruder flies within the zone: the way back is in its band, so
+-- the teacher stops at the band's edge (45 m down); the rule climbs away again at the full rate,
+-- and one step later, 875 m above it, would fly back at the full rate: its flipping.
+local at_target = observation(150, {{8, 0, -500, 180, 150}})
+at_target[23] = (2500 - 1500) / 3000
 local edge = steady():act(at_target)[1]
-check(edge < 0 and edge > -0.1, "steady: stops at the band's edge: " .. edge)
+check(edge < 0 and edge > -0.2, "steady: stops at the band's edge: " .. edge)
 check_eq(rule_act(at_target), 1, "the rule climbs away from the target")
-local clear = observation(150, {{8, 0, -775, 180, 150}})
-clear[23] = (2225 - 1500) / 3000
-check_eq(rule_act(clear), -1, "775 m above: the rule flies back at the full rate")
+local clear = observation(150, {{8, 0, -875, 180, 150}})
+clear[23] = (2125 - 1500) / 3000
+check_eq(rule_act(clear), -1, "875 m above: the rule flies back at the full rate")
 -- Once the intruder is past (12 km behind, opening) the way back is free.
-local past = observation(150, {{12, 180, -400, 0, 100}})
-past[23] = (2600 - 1500) / 3000
+local past = observation(150, {{12, 180, -500, 0, 100}})
+past[23] = (2500 - 1500) / 3000
 check(steady():act(past)[1] < -0.3, "steady: back towards the target once the intruder is past")
--- An intruder at the same altitude within the zone: to the nearer edge of its band at most of the
--- full rate (380 m in one step needs more than the rate, so the full rate).
+-- An intruder at the same altitude within the zone: to the nearer edge of its band at the full
+-- rate (455 m in one step needs more than it).
 check_eq(math.abs(steady():act(observation(150, {{8, 0, 0, 180, 150}}))[1]), 1, "steady: out of the band")
 
 -- The descent: from the second look (the ground speed from the runway distance flown), down when
