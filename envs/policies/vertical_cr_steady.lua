@@ -8,16 +8,18 @@
 --     runway needs START_SHARE of the full rate, that glide;
 --   the avoidance: an intruder threatens as in the rule (within 5 NM, or closing and within 5 NM
 --     in LOOKAHEAD_STEPS steps at its present closing rate; the closing rate from the step
---     before); the nearest one whose band (its altitude ± SEP_M) holds the wanted altitude
---     decides: the aircraft goes to the band's edge on its own side of the intruder (above it when
---     above, else below), as fast as the full rate allows, instead of the rule's full rate away and
---     full rate back, so it stays at the edge until the intruder is past.
+--     before) and has a band, its altitude ± SEP_M. When the wanted altitude is inside a band,
+--     the aircraft flies to the band edge outside every band that is nearest its present
+--     altitude, as fast as the full rate allows, and stays there until the intruder is past,
+--     where the rule flies away at the full rate and back at the full rate.
 -- The vertical speed that reaches an altitude is chosen through the simulator's V/S ramp
--- (1.524 m/s², engine/sim/simulation.cpp). For a clone it keeps 150 m beyond the 1000 ft and holds
--- at ±1.25 m/s (action ±0.1), clear of BlueSky's "no rate selected" band (docs/gym_envs.md). Observation: envs/policies/vertical_cr.lua's comment.
+-- (1.524 m/s², engine/sim/simulation.cpp). For a clone it keeps 150 m beyond the 1000 ft and
+-- holds at ±1.25 m/s (action ±0.1), clear of BlueSky's "no rate selected" band.
+-- Observation: envs/policies/vertical_cr.lua's comment.
 -- Units: metres, seconds, m/s.
 
 local Descent = require("descent")
+local step_change = require("vertical_cr_teacher").step_change
 
 local NUM_INTRUDERS = 5
 local MAX_RATE, STEP_S = 12.5, 30      -- [m/s], [s] the action's scale and one env step
@@ -27,25 +29,13 @@ local LOOKAHEAD_STEPS = 2
 local RETURN_STEPS = 2                 -- steps to get back to the target
 local HOLD_RATE = 1.25                -- [m/s] the hold's vertical speed
 local AIM_M = 100                      -- [m] above the runway's height at the runway
-local START_SHARE = 1.0               -- start down when the glide needs this share of MAX_RATE
-local VS_ACCEL = 1.524                 -- [m/s^2] the simulator's V/S ramp
+local START_SHARE = 1.0                -- start down when the glide needs this share of MAX_RATE
 local RATE_STEP = 0.25                 -- [m/s] resolution of the chosen vertical speed
 
 local P = {env = "VerticalCREnv-v0"}
 
 function P:reset(seed)
-  self.prev_runway, self.prev_dist, self.descending, self.want = nil, {}, false, nil
-end
-
--- The altitude change [m] over one step from vertical speed v0 when v1 is selected.
-local function step_change(v0, v1)
-  local v, dh = v0, 0
-  for _ = 1, STEP_S do
-    local dv = v1 - v
-    v = math.abs(dv) > VS_ACCEL and v + (dv > 0 and VS_ACCEL or -VS_ACCEL) or v1
-    dh = dh + v
-  end
-  return dh
+  self.prev_runway, self.prev_dist, self.descending = nil, {}, false
 end
 
 -- The wanted altitude [m] at the step's end without intruders; updates the ground speed memory.
@@ -108,12 +98,11 @@ function P:act(obs)
   local vz = 5 * obs[24]
   local wanted = self:wanted(alt, runway_m, target)
   local threats = self:threats(obs)
-  self.want = clear_of(threats, alt, wanted)
-  self.avoiding = self.want ~= wanted
+  local goal = clear_of(threats, alt, wanted)
   -- the vertical speed whose step ends nearest the altitude to fly to
   local best_rate, best = 0, math.huge
   for r = -MAX_RATE, MAX_RATE + 1e-9, RATE_STEP do
-    local miss = math.abs(alt + step_change(vz, r) - self.want)
+    local miss = math.abs(alt + step_change(vz, r) - goal)
     if miss < best then best_rate, best = r, miss end
   end
   if math.abs(best_rate) < HOLD_RATE then best_rate = vz > 0 and -HOLD_RATE or HOLD_RATE end

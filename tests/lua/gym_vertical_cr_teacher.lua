@@ -1,5 +1,6 @@
--- The planning teacher for VerticalCREnv-v0 (envs/policies/vertical_cr_teacher.lua) on first
--- observations built by hand: the ownship level at 3000 m on its target altitude, heading north.
+-- The planning teacher (envs/policies/vertical_cr_teacher.lua) and the steady teacher
+-- (envs/policies/vertical_cr_steady.lua) for VerticalCREnv-v0 on observations built by hand: the
+-- ownship level at 3000 m on its target altitude (unless a case moves the target), heading north.
 local function teacher()
   return squawk.gym.load(squawk.home .. "/envs/policies/vertical_cr_teacher.lua")
 end
