@@ -47,7 +47,8 @@ local function tas(h)
   return math.sqrt(5 * ((qc / p + 1) ^ (2 / 7) - 1)) * math.sqrt(1.4 * 287.05287 * T)
 end
 
--- The altitude change [m] over one step from vertical speed v0 when v1 is selected.
+-- The altitude change [m] over one step from vertical speed v0 when v1 is selected (also
+-- envs/policies/vertical_cr_steady.lua's).
 local function step_change(v0, v1)
   local v, dh = v0, 0
   for _ = 1, STEP_S do
@@ -179,4 +180,5 @@ function P:act(obs)
   return {Descent.rate_action(best_rate)}
 end
 
+P.step_change = step_change
 return P

@@ -86,3 +86,52 @@ for seed = 3, 4 do
   until th or uh
   check_eq(t > 30, true)
 end
+
+-- envs/vertical_cr_conflicts.lua: the history's 45 numbers, then per intruder the closest
+-- approach of its straight line (time / 10 steps, distance / 5 NM, altitude difference / 3000 m)
+-- and a threat flag (within 5 NM now or within two steps); the episodes are the history's.
+local conflicts = squawk.gym.load(squawk.home .. "/envs/vertical_cr_conflicts.lua")
+check_eq(conflicts.id, base.id)
+size = 0
+for _, slice in ipairs(conflicts.observation) do size = size + slice.size end
+check_eq(size, 65)
+check_eq(conflicts.observation[14].name, "cpa_time"); check_eq(conflicts.observation[17].name, "threat")
+local ZONE = 5 * 1.852 / 200   -- the intrusion distance in intruder_distance's units
+for seed = 5, 6 do
+  local oh, oc = hist:reset(seed), conflicts:reset(seed)
+  local seen, t, th, tc = {oc}, 0, false, false
+  repeat
+    t = t + 1
+    local a = act(oh, t)
+    local nh, rh, uh, nc, rc, uc
+    nh, rh, th, uh = hist:step(a)
+    nc, rc, tc, uc = conflicts:step(a)
+    check_eq(rc, rh, "reward, seed " .. seed .. " step " .. t); check_eq(tc, th); check_eq(uc, uh)
+    for i = 1, 45 do check_eq(nc[i], nh[i]) end
+    for i = 1, 5 do
+      if nc[11 + i] < ZONE then check_eq(nc[60 + i], 1, "within 5 NM: a threat") end
+      check(nc[45 + i] >= 0 and nc[45 + i] <= 2 and nc[50 + i] >= 0, "cpa time and distance in range")
+    end
+    seen[#seen + 1] = nc
+    oh = nh
+  until th or uh
+  -- Where the closest approach is predicted 2-8 steps ahead, the intruder comes nearest within a
+  -- step of it (the intruders fly straight and level), and not much further than predicted (the
+  -- steps sample the line every 30 s: at most half a step of closing, about 5 km, on top).
+  local checked = 0
+  for s = 1, #seen do
+    for i = 1, 5 do
+      local steps = seen[s][45 + i] * 10
+      if steps >= 2 and steps <= 8 and s + 9 <= #seen then
+        local nearest, at = math.huge, 0
+        for u = s, s + 9 do
+          if seen[u][11 + i] < nearest then nearest, at = seen[u][11 + i], u - s end
+        end
+        check(math.abs(at - steps) <= 1, "closest approach at step " .. at .. ", predicted " .. steps)
+        check(nearest * 200 <= seen[s][50 + i] * 5 * 1.852 + 5, "nearest distance within the prediction")
+        checked = checked + 1
+      end
+    end
+  end
+  check(checked > 5, "closest approaches checked: " .. checked)
+end
