@@ -18,8 +18,12 @@
 -- Appended, ten areas per block in ascending order of their blocked interval's
 -- angular distance from the waypoint's bearing (0 when it holds it; areas with
 -- no blocked interval after all the others, by d - r), 44-133:
---   blocked_lo, blocked_hi 44-63: the blocked interval's edges, degrees relative
---     to the heading / 45 (action units); th_i / 45 for both when none,
+--   blocked_lo, blocked_hi 44-63: the blocked interval's edges relative to the
+--     waypoint's bearing, wrap(th_i - g) -+ w_i [deg] / 45 (action units; the
+--     heading that clears it on one side is g plus one of them); wrap(th_i - g) / 45
+--     for both when none. Relative to the waypoint, not the heading: an area
+--     behind the aircraft that a long turn must clear would jump by 360 deg as
+--     its bearing crosses 180 deg off the heading,
 --   blocks_goal 64-73: 1 when the segment to the waypoint meets the circle,
 --   blocks_heading 74-83: 1 when the present heading's segment of length L does,
 --   goal_clearance 84-93: the distance from the circle to the segment out to the
@@ -99,12 +103,11 @@ function X.extend(obs)
     local th, d, r = relative(obs[i], obs[33 + i]), obs[13 + i] * DIST_SCALE, obs[23 + i] * RADIUS_SCALE
     local a = {th = th, d = d, r = r, inside = d < r}
     local w = a.inside and 90 or half_width(d, r, len)
+    local off = wrap(th - g)
     if w then
-      a.lo, a.hi = th - w, th + w
-      local off = wrap(g - th)
-      a.key = math.max(0, math.abs(off) - w)
+      a.lo, a.hi, a.key = off - w, off + w, math.max(0, math.abs(off) - w)
     else
-      a.lo, a.hi, a.key = th, th, NO_INTERVAL + d - r
+      a.lo, a.hi, a.key = off, off, NO_INTERVAL + d - r
     end
     a.goal_gap, a.goal_along, a.goal_side = segment(g, len, th, d, r)
     a.hdg_gap, a.hdg_along, a.hdg_side = segment(0, len, th, d, r)

@@ -16,7 +16,7 @@ check_eq(feat.observation[8].name, "blocked_lo"); check_eq(feat.observation[#fea
 -- the line to the waypoint, else towards the waypoint), so that the variant's episode depends on them.
 local function act(obs)
   local turn = obs[134]
-  if obs[135] == 1 then turn = math.abs(obs[137]) < math.abs(obs[138]) and obs[137] - 0.05 or obs[138] + 0.05 end
+  if obs[135] == 1 then turn = turn + (math.abs(obs[137]) < math.abs(obs[138]) and obs[137] - 0.05 or obs[138] + 0.05) end
   return {math.max(-1, math.min(1, turn)), 1}
 end
 
@@ -53,13 +53,14 @@ for seed = 0, 4 do
 end
 check(blocked > 10 and blocked < steps, "the line to the waypoint is blocked on some steps: " .. blocked .. " of " .. steps)
 
--- One observation by hand: the waypoint dead ahead at 100 km; area A 2 deg left at 50 km, radius
--- 10 km (it blocks the line); area B 90 deg right at 30 km, radius 5 km; area C 150 deg right at
--- 3 km, radius 5 km (the aircraft inside it); seven more 160 km behind, radius 1 km (out of reach).
+-- One observation by hand: the waypoint 10 deg right at 100 km; area A 8 deg right (2 deg left of
+-- the waypoint) at 50 km, radius 10 km (it blocks the line and the heading); area B 90 deg right at
+-- 30 km, radius 5 km; area C 150 deg right at 3 km, radius 5 km (the aircraft inside it); seven
+-- more 160 km behind, radius 1 km (out of reach). Interval edges are relative to the waypoint.
 local R = 50 * 1.852  -- [km per unit of radius]
 local obs = {}
 for i = 1, 43 do obs[i] = 0 end
-obs[11], obs[12], obs[13] = 1, 100 / 170, 0
+obs[11], obs[12], obs[13] = math.cos(math.rad(-10)), 100 / 170, math.sin(math.rad(-10))
 local function area(i, th, d, r)  -- th [deg, + right] = -(heading - bearing)
   obs[i], obs[33 + i] = math.cos(math.rad(-th)), math.sin(math.rad(-th))
   obs[13 + i], obs[23 + i] = d / 170, r / R
@@ -67,27 +68,30 @@ end
 area(1, 90, 30, 5)   -- B
 area(2, 150, 3, 5)   -- C
 for i = 3, 9 do area(i, 180, 160, 1 + i / 10) end
-area(10, -2, 50, 10) -- A
+area(10, 8, 50, 10)  -- A
 local x = feat.extend(obs)
 local function near(got, want, what) check(math.abs(got - want) < 1e-9, what .. ": " .. got .. " against " .. want) end
 local wa, wb = math.deg(math.asin(10 / 50)), math.deg(math.asin(5 / 30))
--- sorted: A (holds the waypoint's bearing), C (60 deg from it), B (90 - wb), then the rest
+-- sorted: A (holds the waypoint's bearing), C (50 deg from it), B (80 - wb), then the rest
 near(x[44], (-2 - wa) / 45, "A's left edge"); near(x[54], (-2 + wa) / 45, "A's right edge")
-near(x[45], (150 - 90) / 45, "C's left edge (inside: the headings towards its centre)")
-near(x[46], (90 - wb) / 45, "B's left edge"); near(x[56], (90 + wb) / 45, "B's right edge")
-near(x[47], 180 / 45, "out of reach: no interval, its bearing"); near(x[57], 180 / 45, "out of reach")
+near(x[45], (140 - 90) / 45, "C's left edge (inside: the headings towards its centre)")
+near(x[46], (80 - wb) / 45, "B's left edge"); near(x[56], (80 + wb) / 45, "B's right edge")
+near(x[47], 170 / 45, "out of reach: no interval, its bearing"); near(x[57], 170 / 45, "out of reach")
 check_eq(x[64], 1); check_eq(x[65], 1); check_eq(x[66], 0)     -- blocks_goal: A and C (from inside)
-check_eq(x[74], 1); check_eq(x[75], 1); check_eq(x[76], 0)     -- blocks_heading: the heading is the goal's
+check_eq(x[74], 1); check_eq(x[75], 1); check_eq(x[76], 0)     -- blocks_heading: A and C
 near(x[84], (50 * math.sin(math.rad(2)) - 10) / 50, "A's goal clearance")
 near(x[85], (3 - 5) / 50, "C's goal clearance: the segment starts inside")
-near(x[86], (math.sqrt(30 * 30) - 5) / 50, "B's goal clearance (from the start of the segment)")
-near(x[104], 50 * math.cos(math.rad(2)) / 170, "A's distance along the heading")
+near(x[86], (30 * math.sin(math.rad(80)) - 5) / 50, "B's goal clearance")
+near(x[94], (50 * math.sin(math.rad(8)) - 10) / 50, "A's heading clearance")
+near(x[96], (30 - 5) / 50, "B's heading clearance (from the start of the segment)")
+near(x[104], 50 * math.cos(math.rad(8)) / 170, "A's distance along the heading")
 near(x[106], 0, "B abeam")
 near(x[115], (3 - 5) / 170, "C's edge distance, inside")
 check_eq(x[124], 0); check_eq(x[125], 1); check_eq(x[126], 0)  -- inside: C alone
-near(x[134], 0, "the waypoint dead ahead"); check_eq(x[135], 1)
+near(x[134], 10 / 45, "the waypoint's bearing"); check_eq(x[135], 1)
 check_eq(x[136], -1, "the nearest blocker outside its circle is A, its centre left of the line")
 near(x[137], x[44], "the blocker's left edge"); near(x[138], x[54], "its right edge")
 near(x[139], 50 * math.cos(math.rad(2)) / 170, "its distance along the line")
-check_eq(x[140], -1); near(x[141], x[139], "the heading's blocker is A")
+check_eq(x[140], 1, "the heading's blocker is A, its centre right of the heading")
+near(x[141], x[104], "A's distance along the heading")
 check_eq(x[142], 1); near(x[143], -30 / 45, "straight out of C: 30 deg left")
