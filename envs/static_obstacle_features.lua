@@ -32,7 +32,7 @@
 --   along_heading 104-113: d_i cos(th_i) [km / 170], ahead positive,
 --   edge_distance 114-123: d_i - r_i [km / 170], negative inside,
 --   inside 124-133: 1 inside the circle;
--- then summaries, 134-143:
+-- then summaries, 134-145:
 --   goal_bearing 134: g / 45; goal_blocked 135: 1 when an area the aircraft is
 --   outside of blocks the segment to the waypoint; of the nearest such area along
 --   it (0 when none):
@@ -41,7 +41,12 @@
 --   area blocking the present heading (0 when none): side 140, distance along 141;
 --   inside_any 142: 1 inside a circle; escape_bearing 143: straight out of the
 --   deepest such circle (the most inside relative to its radius), relative to
---   the heading / 45 (0 when none).
+--   the heading / 45 (0 when none); clear_left 144, clear_right 145: the edges of
+--   the union of blocked intervals (of the areas the aircraft is outside of) that
+--   holds the waypoint's bearing, relative to it / 45, capped at -+180 deg (0 for
+--   both when the bearing is clear): the nearest headings either side whose
+--   segment misses every circle, the search the rules run (without their margin,
+--   their 5 deg grid and their escape from inside a circle).
 
 local Base = require("static_obstacle")
 
@@ -60,7 +65,7 @@ for _, name in ipairs({"blocked_lo", "blocked_hi", "blocks_goal", "blocks_headin
 end
 for _, name in ipairs({"goal_bearing", "goal_blocked", "goal_blocker_side", "goal_blocker_lo", "goal_blocker_hi",
                        "goal_blocker_along", "heading_blocker_side", "heading_blocker_along", "inside_any",
-                       "escape_bearing"}) do
+                       "escape_bearing", "clear_left", "clear_right"}) do
   observation[#observation + 1] = {name = name, size = 1}
 end
 
@@ -95,7 +100,22 @@ local function half_width(d, r, len)
   return math.deg(math.acos(math.max(-1, math.min(1, (len * len + d * d - r * r) / (2 * len * d)))))
 end
 
--- The 43 base numbers with the 100 above appended.
+-- The edges [deg] of the union of the intervals {lo, hi} (relative to the waypoint's
+-- bearing) that holds 0, capped at -+180; 0, 0 when no interval holds it.
+local function clear_edges(intervals)
+  local left, right, grown = 0, 0, true
+  while grown do
+    grown = false
+    for _, iv in ipairs(intervals) do
+      if iv.lo <= right and iv.hi >= left and (iv.lo < left or iv.hi > right) then
+        left, right, grown = math.min(left, iv.lo), math.max(right, iv.hi), true
+      end
+    end
+  end
+  return math.max(-180, left), math.min(180, right)
+end
+
+-- The 43 base numbers with the 102 above appended.
 function X.extend(obs)
   local g, len = relative(obs[11], obs[13]), obs[12] * DIST_SCALE
   local areas = {}
@@ -154,6 +174,13 @@ function X.extend(obs)
   out[#out + 1] = hdg_blocker and hdg_blocker.hdg_along / DIST_SCALE or 0
   out[#out + 1] = deepest and 1 or 0
   out[#out + 1] = deepest and wrap(deepest.th + 180) / D_HEADING or 0
+  local outside = {}
+  for _, a in ipairs(areas) do
+    if not a.inside and a.lo < a.hi then outside[#outside + 1] = a end
+  end
+  local left, right = clear_edges(outside)
+  out[#out + 1] = left / D_HEADING
+  out[#out + 1] = right / D_HEADING
   return out
 end
 
