@@ -20,17 +20,20 @@
 -- With `v`, one line per episode. With `margin=KM` a script: policy with a `margin_km` field
 -- flies with that margin (also MARGIN of the classes; default 1.852 km, the rule's own), with
 -- `escape=DEG` one with an `escape_deg` field with that one (envs/policies/static_obstacle.lua).
+-- With `env=FILE` the policy flies that observation variant of the environment (one that appends
+-- numbers to the observation and keeps the episodes, as envs/static_obstacle_features.lua).
 -- usage: squawk run bench/gym_static_obstacle_outcomes.lua POLICY [EPISODES [SEED]] [v] [margin=KM] [escape=DEG]
---          [--openap DIR] [--allow-read DIR]
-local usage = "usage: squawk run bench/gym_static_obstacle_outcomes.lua POLICY [EPISODES [SEED]] [v] [margin=KM] [escape=DEG]"
+--          [env=FILE] [--openap DIR] [--allow-read DIR]
+local usage = "usage: squawk run bench/gym_static_obstacle_outcomes.lua POLICY [EPISODES [SEED]] [v] [margin=KM] [escape=DEG] [env=FILE]"
 local spec = assert(arg[1], usage)
 local episodes, seed = tonumber(arg[2] or 200), tonumber(arg[3] or 0)
-local verbose, margin, escape = false, nil, nil
+local verbose, margin, escape, env_file = false, nil, nil, "envs/static_obstacle.lua"
 for i = 4, #arg do
   if arg[i] == "v" then verbose = true end
-  local m, e = arg[i]:match("^margin=(.*)$"), arg[i]:match("^escape=(.*)$")
+  local m, e, f = arg[i]:match("^margin=(.*)$"), arg[i]:match("^escape=(.*)$"), arg[i]:match("^env=(.*)$")
   if m then margin = assert(tonumber(m), usage) end
   if e then escape = assert(tonumber(e), usage) end
+  if f then env_file = f end
 end
 local MARGIN = margin or 1.852  -- [km]
 local NM2KM, ACID, TURNED_DEG, ESCAPE_STEPS = 1.852, "KL001", 15, 6
@@ -64,7 +67,7 @@ local total, blocked_steps, steps_all = 0, 0, 0
 
 for k = 0, episodes - 1 do
   local s = seed + k
-  local env = gym.load("envs/static_obstacle.lua")
+  local env = gym.load(env_file)
   local policy = gym.policy(spec, env)
   if margin then policy.margin_km = margin end
   if escape then policy.escape_deg = escape end
