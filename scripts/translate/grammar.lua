@@ -4363,6 +4363,27 @@ local function airline_values(text, fleet)
       return nil
     end)
   end
+  -- "VLG12AB velocity 250 knots", "velocity two five zero knots": an airline's telephony that is also the noun
+  -- of a value (lexicon.value_noun_airlines) before a number and its unit is that noun, no callsign, unless
+  -- the airline and the number said digit by digit are an aircraft flying ("Velocity 250, 280 knots")
+  if text:lower():find("velocity", 1, true) then
+    local toks = {}
+    for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+    text = require("translate.tokens").rewrite(text, toks, function(i)
+      local icao = not toks[i]:match("%p$") and lexicon.value_noun_airlines[toks[i]:lower()]
+      if not icao then return nil end
+      local k, digits = i + 1, ""
+      while toks[k] and not toks[k - 1]:match("%p$") do
+        local x = toks[k]:lower()
+        if not (NUMBER_WORDS[x] or x:match("^%d+$")) then break end
+        digits = digits and (SAID_DIGIT[x] or x:match("^%d+$")) and digits .. (SAID_DIGIT[x] or x) or nil
+        k = k + 1
+      end
+      local unit = k > i + 1 and toks[k] and toks[k]:lower():gsub("%p+$", "")
+      if unit and lexicon.value_units[unit] and not (digits and ids[icao .. digits]) then return toks[i] .. ",", i + 1 end
+      return nil
+    end)
+  end
   -- "Shamrock 1 2 3": a flight number typed digit by digit after its airline's telephony, three or four
   -- single digits in a row, is one number
   return (text:gsub("(%f[%a]%a+%s+)(%d[%d%s]*%d)%f[^%d%s]", function(w, run)

@@ -838,6 +838,9 @@ return {
   -- units a value said after an airline name carries ("turn the Ryanair 20 degrees"): no flight number
   value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
                   percent = true },
+  -- airlines' telephony that is also the noun of a value, word -> ICAO prefix: before a number and its unit
+  -- it is that noun ("VLG12AB velocity 250 knots"; grammar.lua airline_values)
+  value_noun_airlines = { velocity = "VOZ" },
   -- speed units that may stand apart from their number ("two one zero, knots")
   speed_units = { "knots", "knot", "kts", "kt", "knts", "kits" },  -- ("250 kits": kts typed with a slip)
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before

@@ -5174,3 +5174,21 @@ do
   check_eq(ex("pseudo pilot speedbird one one climb flight level one two zero"), "ALT BAW11 FL120")
   check_eq(ex("sim op"), "OP")
 end
+
+-- Cycle 33 (R67): airlines of the Asia-Pacific area by their ICAO telephony ("velocity", "hong kong shuttle"
+-- run together or apart, "jetstar asia"), and "jetstar" alone before a flight number naming whichever
+-- Jetstar airline flies it; a flight number none of them flies is still asked about, and "velocity" before
+-- a speed is still the speed noun
+do
+  local _, ex = scene({ "CRE VOZ456 B738 -27.4 153.1 180 FL200 280", "CRE HKE521 A320 22.3 114.2 090 FL150 250",
+    "CRE JSA77 A320 1.4 104.0 270 FL120 250", "CRE JST915 A321 -37.7 144.8 000 FL100 250" })
+  check_eq(ex("velocity four five six climb flight level two four zero"), "ALT VOZ456 FL240")
+  check_eq(ex("hongkong shuttle five two one turn left heading two seven zero"), "HDG HKE521 270 LEFT")
+  check_eq(ex("hong kong shuttle five two one reduce speed two two zero knots"), "SPD HKE521 220")
+  check_eq(ex("jetstar asia seven seven descend five thousand feet"), "ALT JSA77 5000")
+  check_eq(ex("jetstar seven seven descend five thousand feet"), "ALT JSA77 5000")
+  check_eq(ex("jetstar nine one five climb flight level one three zero"), "ALT JST915 FL130")
+  check_eq(ex("HKE521 velocity 240 knots"), "SPD HKE521 240")
+  asked(ex("velocity four five seven climb flight level two four zero"), "no Velocity 457 flies")
+  asked(ex("jetstar nine one six climb flight level one three zero"), "no Jetstar 916 flies")
+end
