@@ -4679,7 +4679,7 @@ function M.translate(text, world)
   if lower:find("%f[%a]create") or lower:find("%f[%a]spawn") or lower:find("%f[%a]generate")
       or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random")
       or lower:find("%f[%a]new%f[%A]") or lower:find("%f[%a]set up%f[%A]") or lower:find("%f[%a]put%f[%A]") then
-    text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft, lexicon.variant_families)
+    text = types.plurals(types.spoken(text, TYPES, lexicon.phonetic), TYPES, world.aircraft, lexicon.variant_families)
   end
   local apart
   text, apart = set_apart(types.join(text, TYPES.phrases))

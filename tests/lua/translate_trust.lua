@@ -5192,3 +5192,18 @@ do
   asked(ex("velocity four five seven climb flight level two four zero"), "no Velocity 457 flies")
   asked(ex("jetstar nine one six climb flight level one three zero"), "no Jetstar 916 flies")
 end
+
+-- Cycle 33 (R67): a new aircraft's type designator spelled in the phonetic alphabet, its digits said singly
+-- ("bravo seven three eight", "bravo seven seven whiskey"), is that designator when squawk knows it; a
+-- spelling of none is still asked about
+do
+  local _, ex = scene({})
+  check_eq(ex("create qantas nine eight bravo seven eight niner at one decimal zero north one zero three decimal "
+    .. "five east heading zero nine zero flight level two zero zero two eight zero knots"),
+    "CRE QFA98 B789 1 103.5 90 FL200 280")
+  check_eq(ex("sim op create singapore four one bravo seven seven whiskey at one decimal two north one zero four "
+    .. "decimal zero east heading one eight zero flight level three one zero two niner zero knots"),
+    "CRE SIA41 B77W 1.2 104 180 FL310 290")
+  asked(ex("create qantas nine eight bravo seven eight three at one decimal zero north one zero three decimal "
+    .. "five east heading zero nine zero flight level two zero zero two eight zero knots"), "no type B783")
+end
