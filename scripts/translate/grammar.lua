@@ -1867,6 +1867,11 @@ function G:segments(b, e)
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
           and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
+        -- ("maintain heading", "maintain your present heading": the heading kept, one instruction)
+        local kept_heading = last.intent == "maintain" and tr.intent == "hdg" and self:word(tr.pos, "heading hdg")
+        for k = last.trig + 1, kept_heading and tr.pos - 1 or 0 do
+          kept_heading = kept_heading and self:word(k, "your the its @present")
+        end
         -- ("descend FL300, 25 miles before KOK descend FL260": a distance from a place opening the second
         -- instruction's clause, after the first's value, is that instruction's condition, no repeat)
         local dist_between = false
@@ -1876,9 +1881,9 @@ function G:segments(b, e)
           dist_between = dist_between or (q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
             and self:word(self:word(k, "out") and k + 1 or k, "from of to before"))
         end
-        if (last.intent == tr.intent or alt_pair) and not this.single and not self:addressee_between(last, tr.pos)
-            and not dist_between then
-          if tr.intent == "alt" then last.intent = "alt" end
+        if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
+            and not self:addressee_between(last, tr.pos) and not dist_between then
+          if tr.intent == "alt" or kept_heading then last.intent = tr.intent end
           merged = true
         end
       end

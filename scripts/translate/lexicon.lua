@@ -521,6 +521,8 @@ return {
   relative = { "present", "current", "actual", "by" },
   -- ("actual": the false friend of the present one, in several languages)
   present = { "present", "current", "actual", "continue" },
+  -- verbs that keep a value as it is ("maintain heading", "keep your heading": said with none, the present one)
+  keep_verbs = { "maintain", "keep", "hold" },
   same_as = { "match", "same", "as" },
   -- switches
   off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },

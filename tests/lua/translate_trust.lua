@@ -5207,3 +5207,14 @@ do
   asked(ex("create qantas nine eight bravo seven eight three at one decimal zero north one zero three decimal "
     .. "five east heading zero nine zero flight level two zero zero two eight zero knots"), "no type B783")
 end
+
+-- Cycle 33 (R67): "maintain heading", "keep your heading", said with no value, is the heading the aircraft
+-- flies; a heading said with it is that heading, and "maintain" alone still asks what is kept
+do
+  local _, ex = scene({ "CRE ANZ88 A320 -36.9 174.8 135 FL110 250" })
+  check_eq(ex("new zealand eight eight maintain heading"), "HDG ANZ88 135")
+  check_eq(ex("new zealand eight eight keep your heading and climb flight level one five zero"),
+    "HDG ANZ88 135 ; ALT ANZ88 FL150")
+  check_eq(ex("new zealand eight eight maintain heading one five zero"), "HDG ANZ88 150")
+  asked(ex("new zealand eight eight maintain"), "nothing said to keep")
+end
