@@ -742,7 +742,11 @@ return {
                     ["n'djamena"] = "ndjamena hassan djamous", ndjamena = "ndjamena hassan djamous",
                     -- (Belgium, Switzerland and New England: the city's airport named after a place beside it)
                     charleroi = "brussels south", ostend = "oostende", antwerp = "deurne", basel = "bale mulhouse",
-                    boston = "general edward lawrence logan" },
+                    boston = "general edward lawrence logan",
+                    -- (South-East Asia: cities whose one large airport the navdata names after a person, a
+                    -- district or the island)
+                    manila = "ninoy aquino intl", jakarta = "soekarno hatta intl", hanoi = "noibai intl",
+                    saigon = "tansonnhat intl", surabaya = "juanda", denpasar = "bali intl" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")

@@ -5218,3 +5218,15 @@ do
   check_eq(ex("new zealand eight eight maintain heading one five zero"), "HDG ANZ88 150")
   asked(ex("new zealand eight eight maintain"), "nothing said to keep")
 end
+
+-- Cycle 33 (R67): South-East Asian cities whose one large airport the navdata names otherwise ("Manila" is
+-- NINOY AQUINO INTL, "Jakarta" SOEKARNO HATTA INTL) are that airport; a city of two airports is still asked
+do
+  local _, nx = navscene({ "CRE PAL215 A321 14.0 121.5 180 FL200 280", "CRE GIA702 A333 -6.5 107.0 180 FL200 280" },
+    "South-East Asian cities")
+  if nx then
+    check_eq(nx("philippine two one five set destination manila"), "DEST PAL215 RPLL")
+    check_eq(nx("garuda seven zero two divert to jakarta"), "DEST GIA702 WIII")
+    asked(nx("garuda seven zero two divert to tokyo"), "two airports")
+  end
+end
