@@ -4368,15 +4368,23 @@ local function airline_values(text, fleet)
       return nil
     end)
   end
-  -- "VLG12AB velocity 250 knots", "velocity two five zero knots": an airline's telephony that is also the noun
-  -- of a value (lexicon.value_noun_airlines) before a number and its unit is that noun, no callsign, unless
-  -- the airline and the number said digit by digit are an aircraft flying ("Velocity 250, 280 knots")
+  -- "VLG12AB velocity 250 knots", "increase the velocity of TAP57": an airline's telephony that is also the
+  -- noun of a value (lexicon.value_noun_airlines: word -> {ICAO prefix, the noun's plain word}) is that noun
+  -- before a number and its unit, unless the airline and the number said digit by digit are an aircraft
+  -- flying ("Velocity 250, 280 knots"), and after an article or a possessive when no aircraft of the airline
+  -- flies
   if text:lower():find("velocity", 1, true) then
     local toks = {}
     for w in text:gmatch("%S+") do toks[#toks + 1] = w end
     text = require("translate.tokens").rewrite(text, toks, function(i)
-      local icao = not toks[i]:match("%p$") and lexicon.value_noun_airlines[toks[i]:lower()]
-      if not icao then return nil end
+      local noun = not toks[i]:match("%p$") and lexicon.value_noun_airlines[toks[i]:lower()]
+      if not noun then return nil end
+      local icao, plain = noun[1], noun[2]
+      if i > 1 and lexicon.value_noun_before[toks[i - 1]:lower()] then
+        local flies = false
+        for id in pairs(ids) do flies = flies or id:sub(1, #icao) == icao and id:sub(#icao + 1):match("^%d") ~= nil end
+        if not flies then return plain, i + 1 end
+      end
       local k, digits = i + 1, ""
       while toks[k] and not toks[k - 1]:match("%p$") do
         local x = toks[k]:lower()
@@ -4385,7 +4393,7 @@ local function airline_values(text, fleet)
         k = k + 1
       end
       local unit = k > i + 1 and toks[k] and toks[k]:lower():gsub("%p+$", "")
-      if unit and lexicon.value_units[unit] and not (digits and ids[icao .. digits]) then return toks[i] .. ",", i + 1 end
+      if unit and lexicon.value_units[unit] and not (digits and ids[icao .. digits]) then return plain, i + 1 end
       return nil
     end)
   end

@@ -844,9 +844,11 @@ return {
   -- units a value said after an airline name carries ("turn the Ryanair 20 degrees"): no flight number
   value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
                   percent = true },
-  -- airlines' telephony that is also the noun of a value, word -> ICAO prefix: before a number and its unit
-  -- it is that noun ("VLG12AB velocity 250 knots"; grammar.lua airline_values)
-  value_noun_airlines = { velocity = "VOZ" },
+  -- airlines' telephony that is also the noun of a value, word -> {ICAO prefix, the noun's plain word}: before
+  -- a number and its unit, or after one of value_noun_before with none of the airline flying, it is that noun
+  -- ("VLG12AB velocity 250 knots", "reduce the velocity"; grammar.lua airline_values)
+  value_noun_airlines = { velocity = { "VOZ", "speed" } },
+  value_noun_before = { the = true, a = true, your = true, its = true, his = true, her = true, their = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
   speed_units = { "knots", "knot", "kts", "kt", "knts", "kits" },  -- ("250 kits": kts typed with a slip)
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before

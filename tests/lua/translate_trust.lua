@@ -5189,6 +5189,8 @@ do
   check_eq(ex("jetstar seven seven descend five thousand feet"), "ALT JSA77 5000")
   check_eq(ex("jetstar nine one five climb flight level one three zero"), "ALT JST915 FL130")
   check_eq(ex("HKE521 velocity 240 knots"), "SPD HKE521 240")
+  local _, ex2 = scene({ "CRE HKE521 A320 22.3 114.2 090 FL150 250" })
+  check_eq(ex2("please reduce the velocity of HKE521 to 220 knots"), "SPD HKE521 220")
   asked(ex("velocity four five seven climb flight level two four zero"), "no Velocity 457 flies")
   asked(ex("jetstar nine one six climb flight level one three zero"), "no Jetstar 916 flies")
 end
