@@ -5232,3 +5232,13 @@ do
     asked(nx("garuda seven zero two divert to tokyo"), "two airports")
   end
 end
+
+-- Cycle 33 (R67): knots said after a word speech recognition writes for "to" or "two" ("reduce speed too two
+-- zero knots") are no change of speed (the assigned speed's first digit may be lost): asked; "reduce speed
+-- two zero knots" with nothing before it is still 20 kt slower
+do
+  local _, ex = scene({ "CRE MAS52 A333 3.0 101.5 045 FL110 260" })
+  asked(ex("malaysian five two reduce speed too two zero knots"), "too before two digits")
+  check_eq(ex("malaysian five two reduce speed two zero knots"), "SPD MAS52 240")
+  check_eq(ex("malaysian five two reduce speed too two two zero knots"), "SPD MAS52 220")
+end
