@@ -411,7 +411,8 @@ return function(H, f, wrap, compass)
       elseif q.kind == "percent" or q.by or (self:word_in(s.b, s.e, "by") and q.value < 100)
           -- ("10 knots faster"; after a word speech recognition writes for "to" or "two", "reduce speed too two
           -- zero knots", the knots are no change: the speed's first digit may be lost, asked)
-          or (q.kind == "speed" and q.value < 40 and dir ~= 0 and not q.to and not self:word(q.b - 1, "@two_heard")) then
+          or (q.kind == "speed" and q.value < 40 and dir ~= 0 and not q.to
+            and not self:word(q.b - 1, "@two_heard")) then
         local a = self:state(id)
         if not a or (a.cas_kt or 0) <= 0 then return self:need("What is the current speed of " .. id .. "?") end
         if dir == 0 then return self:need("Should " .. id .. " fly faster or slower?") end

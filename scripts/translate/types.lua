@@ -210,8 +210,8 @@ local function spelled_designator(toks, i, built, phonetic)
     name, k = name .. c, k + 1
     if toks[k - 1]:match("%p$") and #name < 4 then return nil end
   end
-  if #name == 4 and name:find("%d") and built.known[name] then return name .. (toks[k - 1]:match("%p+$") or ""), k end
-  return nil
+  if #name < 4 or not name:find("%d") or not built.known[name] then return nil end
+  return name .. (toks[k - 1]:match("%p+$") or ""), k
 end
 function M.spoken(text, built, phonetic)
   if not built.known then
