@@ -1867,6 +1867,11 @@ function G:segments(b, e)
       else
         local alt_pair = ((last.intent == "maintain" and tr.intent == "alt") or (last.intent == "alt" and tr.intent == "maintain"))
           and #self:quantities(last.trig, tr.pos) == 0 and not self:word_in(last.trig, tr.pos, "@correction")
+        -- ("maintain heading", "maintain your present heading": the heading kept, one instruction)
+        local kept_heading = last.intent == "maintain" and tr.intent == "hdg" and self:word(tr.pos, "heading hdg")
+        for k = last.trig + 1, kept_heading and tr.pos - 1 or 0 do
+          kept_heading = kept_heading and self:word(k, "your the its @present")
+        end
         -- ("descend FL300, 25 miles before KOK descend FL260": a distance from a place opening the second
         -- instruction's clause, after the first's value, is that instruction's condition, no repeat)
         local dist_between = false
@@ -1876,9 +1881,9 @@ function G:segments(b, e)
           dist_between = dist_between or (q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
             and self:word(self:word(k, "out") and k + 1 or k, "from of to before"))
         end
-        if (last.intent == tr.intent or alt_pair) and not this.single and not self:addressee_between(last, tr.pos)
-            and not dist_between then
-          if tr.intent == "alt" then last.intent = "alt" end
+        if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
+            and not self:addressee_between(last, tr.pos) and not dist_between then
+          if tr.intent == "alt" or kept_heading then last.intent = tr.intent end
           merged = true
         end
       end
@@ -4363,6 +4368,35 @@ local function airline_values(text, fleet)
       return nil
     end)
   end
+  -- "VLG12AB velocity 250 knots", "increase the velocity of TAP57": an airline's telephony that is also the
+  -- noun of a value (lexicon.value_noun_airlines: word -> {ICAO prefix, the noun's plain word}) is that noun
+  -- before a number and its unit, unless the airline and the number said digit by digit are an aircraft
+  -- flying ("Velocity 250, 280 knots"), and after an article or a possessive when no aircraft of the airline
+  -- flies
+  if text:lower():find("velocity", 1, true) then
+    local toks = {}
+    for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+    text = require("translate.tokens").rewrite(text, toks, function(i)
+      local noun = not toks[i]:match("%p$") and lexicon.value_noun_airlines[toks[i]:lower()]
+      if not noun then return nil end
+      local icao, plain = noun[1], noun[2]
+      if i > 1 and lexicon.value_noun_before[toks[i - 1]:lower()] then
+        local flies = false
+        for id in pairs(ids) do flies = flies or id:sub(1, #icao) == icao and id:sub(#icao + 1):match("^%d") ~= nil end
+        if not flies then return plain, i + 1 end
+      end
+      local k, digits = i + 1, ""
+      while toks[k] and not toks[k - 1]:match("%p$") do
+        local x = toks[k]:lower()
+        if not (NUMBER_WORDS[x] or x:match("^%d+$")) then break end
+        digits = digits and (SAID_DIGIT[x] or x:match("^%d+$")) and digits .. (SAID_DIGIT[x] or x) or nil
+        k = k + 1
+      end
+      local unit = k > i + 1 and toks[k] and toks[k]:lower():gsub("%p+$", "")
+      if unit and lexicon.value_units[unit] and not (digits and ids[icao .. digits]) then return plain, i + 1 end
+      return nil
+    end)
+  end
   -- "Shamrock 1 2 3": a flight number typed digit by digit after its airline's telephony, three or four
   -- single digits in a row, is one number
   return (text:gsub("(%f[%a]%a+%s+)(%d[%d%s]*%d)%f[^%d%s]", function(w, run)
@@ -4658,7 +4692,7 @@ function M.translate(text, world)
   if lower:find("%f[%a]create") or lower:find("%f[%a]spawn") or lower:find("%f[%a]generate")
       or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random")
       or lower:find("%f[%a]new%f[%A]") or lower:find("%f[%a]set up%f[%A]") or lower:find("%f[%a]put%f[%A]") then
-    text = types.plurals(types.spoken(text, TYPES), TYPES, world.aircraft, lexicon.variant_families)
+    text = types.plurals(types.spoken(text, TYPES, lexicon.phonetic), TYPES, world.aircraft, lexicon.variant_families)
   end
   local apart
   text, apart = set_apart(types.join(text, TYPES.phrases))

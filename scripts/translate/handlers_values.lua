@@ -409,7 +409,10 @@ return function(H, f, wrap, compass)
       if q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1) then
         spd = f.mach(q.value)
       elseif q.kind == "percent" or q.by or (self:word_in(s.b, s.e, "by") and q.value < 100)
-          or (q.kind == "speed" and q.value < 40 and dir ~= 0 and not q.to) then  -- "10 knots faster"
+          -- ("10 knots faster"; after a word speech recognition writes for "to" or "two", "reduce speed too two
+          -- zero knots", the knots are no change: the speed's first digit may be lost, asked)
+          or (q.kind == "speed" and q.value < 40 and dir ~= 0 and not q.to
+            and not self:word(q.b - 1, "@two_heard")) then
         local a = self:state(id)
         if not a or (a.cas_kt or 0) <= 0 then return self:need("What is the current speed of " .. id .. "?") end
         if dir == 0 then return self:need("Should " .. id .. " fly faster or slower?") end
@@ -595,7 +598,9 @@ return function(H, f, wrap, compass)
       -- (a reversal with no way said: either way is as short, and the way matters to traffic)
       if turn == 0 then return self:need("Should " .. id .. " turn around to the left or to the right?") end
       offset = 180
-    elseif self:word_in(math.max(1, s.trig - 2), s.e, "@present") and now then
+    elseif (self:word_in(math.max(1, s.trig - 2), s.e, "@present") or self:word_in(math.max(1, s.trig - 2), s.trig + 1,
+        "@keep_verbs")) and now then
+      -- ("maintain present heading"; "maintain heading", "keep your heading" with no value said: the one it flies)
       offset = 0
     elseif #refs >= 2 and self:word_in(s.b, s.e, "@same_as") then
       local src = self:state(refs[#refs].name)

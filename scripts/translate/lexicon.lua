@@ -521,6 +521,8 @@ return {
   relative = { "present", "current", "actual", "by" },
   -- ("actual": the false friend of the present one, in several languages)
   present = { "present", "current", "actual", "continue" },
+  -- verbs that keep a value as it is ("maintain heading", "keep your heading": said with none, the present one)
+  keep_verbs = { "maintain", "keep", "hold" },
   same_as = { "match", "same", "as" },
   -- switches
   off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },
@@ -740,7 +742,11 @@ return {
                     ["n'djamena"] = "ndjamena hassan djamous", ndjamena = "ndjamena hassan djamous",
                     -- (Belgium, Switzerland and New England: the city's airport named after a place beside it)
                     charleroi = "brussels south", ostend = "oostende", antwerp = "deurne", basel = "bale mulhouse",
-                    boston = "general edward lawrence logan" },
+                    boston = "general edward lawrence logan",
+                    -- (South-East Asia: cities whose one large airport the navdata names after a person, a
+                    -- district or the island)
+                    manila = "ninoy aquino intl", jakarta = "soekarno hatta intl", hanoi = "noibai intl",
+                    saigon = "tansonnhat intl", surabaya = "juanda", denpasar = "bali intl" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
@@ -838,6 +844,11 @@ return {
   -- units a value said after an airline name carries ("turn the Ryanair 20 degrees"): no flight number
   value_units = { degrees = true, degree = true, knots = true, knot = true, kts = true, feet = true, ft = true,
                   percent = true },
+  -- airlines' telephony that is also the noun of a value, word -> {ICAO prefix, the noun's plain word}: before
+  -- a number and its unit, or after one of value_noun_before with none of the airline flying, it is that noun
+  -- ("VLG12AB velocity 250 knots", "reduce the velocity"; grammar.lua airline_values)
+  value_noun_airlines = { velocity = { "VOZ", "speed" } },
+  value_noun_before = { the = true, a = true, your = true, its = true, his = true, her = true, their = true },
   -- speed units that may stand apart from their number ("two one zero, knots")
   speed_units = { "knots", "knot", "kts", "kt", "knts", "kits" },  -- ("250 kits": kts typed with a slip)
   -- an intruder set up against an aircraft (CRECONFS): the nouns that name it, and the words before

@@ -401,6 +401,26 @@ return {
     { "boliviana", "BOV" },  -- (Boliviana de Aviacion)
     { "passaredo", "PTB" },  -- (VOEPASS)
     { "voepass", "PTB" },
+    -- airlines of the Asia-Pacific area: ICAO telephony as controllers there say it, "Hong Kong" also run
+    -- together as speech recognition writes it ("hongkong shuttle two one seven": HKE217, no SHT217)
+    { "velocity", "VOZ" },  -- (Virgin Australia)
+    { "hongkong shuttle", "HKE" },  -- (HK Express)
+    { "hong kong shuttle", "HKE" },
+    { "jetstar asia", "JSA" },
+    { "orange liner", "JJP" },  -- (Jetstar Japan)
+    { "bauhinia", "CRK" },  -- (Hong Kong Airlines)
+    { "air hongkong", "AHK" },
+    { "air hong kong", "AHK" },
+    { "batik", "BTK" },
+    { "supergreen", "CTV" },  -- (Citilink)
+    { "wagon air", "AWQ" },  -- (Indonesia AirAsia)
+    { "cool red", "APG" },  -- (Philippines AirAsia)
+    { "airphil", "GAP" },  -- (PAL Express)
+    { "firefly", "FFM" },
+    { "sunstate", "SSQ" },  -- (QantasLink)
+    { "eastern australia", "EAQ" },  -- (QantasLink)
+    { "unity", "UTY" },  -- (Alliance Airlines)
+    { "mount cook", "NZM" },  -- (Air New Zealand Link)
   },
   common = {
     { "ba", "BAW" },
@@ -452,6 +472,7 @@ return {
     { "latam", "TAM", "LAN", "LPE", "LNE", "DSM" },  -- (LATAM Brasil, Chile, Peru, Ecuador, Argentina)
     { "jetsmart", "JAT", "JES", "JZR" },  -- (JetSMART, JetSMART Argentina, JetSMART Peru)
     { "sky", "SKU", "SKX" },  -- (Sky Airline, Sky Airline Peru)
+    { "jetstar", "JST", "JSA", "JJP" },  -- (Jetstar Airways, Jetstar Asia, Jetstar Japan)
   },
   designators = { "B712", "B722", "B733", "B734", "B735", "B736", "B737", "B738", "B739", "B744", "B748", "B752",
     "B753", "B762", "B763", "B764", "B772", "B773", "B77W", "B77L", "B788", "B789", "B78X", "B38M", "B39M", "B3XM",

@@ -186,7 +186,8 @@ end
 -- "ninety", "oh"; "three hundred" after a family is its -300 variant) become
 -- the written name, only when that name is one of `built`'s (M.build's result)
 -- and only in a request that creates traffic (`create` true): "a three twenty"
--- anywhere else stays as said.
+-- anywhere else stays as said. So does a designator spelled in the phonetic
+-- alphabet (`phonetic`, lexicon.phonetic: "bravo seven seven whiskey" -> b77w).
 local DIGITS = { zero = "0", oh = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6",
                  seven = "7", eight = "8", nine = "9", niner = "9" }
 local TEENS = { ten = "10", eleven = "11", twelve = "12", thirteen = "13", fourteen = "14", fifteen = "15",
@@ -194,7 +195,25 @@ local TEENS = { ten = "10", eleven = "11", twelve = "12", thirteen = "13", fourt
 local TENS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6", seventy = "7", eighty = "8",
                ninety = "9" }
 local LETTERS = { a = "airbus", b = "boeing", e = "embraer" }
-function M.spoken(text, built)
+-- A designator of four characters spelled in the phonetic alphabet (`phonetic`: word -> letter), its
+-- digits said singly, from token i ("bravo seven three eight", "bravo seven seven whiskey", "charlie romeo
+-- juliet nine"): {name = the designator in lower case, punctuation closing its last word kept; e = the
+-- token after it} when squawk knows that designator, else nil.
+local function spelled_designator(toks, i, built, phonetic)
+  local first = toks[i]:lower():gsub("%p+$", "")
+  if not phonetic[first] then return nil end
+  local name, k = "", i
+  while toks[k] and #name < 4 do
+    local x = toks[k]:lower():gsub("%p+$", "")
+    local c = phonetic[x] and phonetic[x]:lower() or DIGITS[x]
+    if not c then return nil end
+    name, k = name .. c, k + 1
+    if toks[k - 1]:match("%p$") and #name < 4 then return nil end
+  end
+  if #name < 4 or not name:find("%d") or not built.known[name] then return nil end
+  return name .. (toks[k - 1]:match("%p+$") or ""), k
+end
+function M.spoken(text, built, phonetic)
   if not built.known then
     built.known, built.makers, built.prefixes = {}, {}, {}
     for _, r in ipairs(built.types) do
@@ -211,6 +230,8 @@ function M.spoken(text, built)
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   return require("translate.tokens").rewrite(text, toks, function(i)
+    local spelled, after = spelled_designator(toks, i, built, phonetic or {})
+    if spelled then return spelled, after end
     local w = toks[i]:lower()
     local maker = LETTERS[w] and w or nil
     local lead = maker and w or ""

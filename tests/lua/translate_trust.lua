@@ -5174,3 +5174,71 @@ do
   check_eq(ex("pseudo pilot speedbird one one climb flight level one two zero"), "ALT BAW11 FL120")
   check_eq(ex("sim op"), "OP")
 end
+
+-- Cycle 33 (R67): airlines of the Asia-Pacific area by their ICAO telephony ("velocity", "hong kong shuttle"
+-- run together or apart, "jetstar asia"), and "jetstar" alone before a flight number naming whichever
+-- Jetstar airline flies it; a flight number none of them flies is still asked about, and "velocity" before
+-- a speed is still the speed noun
+do
+  local _, ex = scene({ "CRE VOZ456 B738 -27.4 153.1 180 FL200 280", "CRE HKE521 A320 22.3 114.2 090 FL150 250",
+    "CRE JSA77 A320 1.4 104.0 270 FL120 250", "CRE JST915 A321 -37.7 144.8 000 FL100 250" })
+  check_eq(ex("velocity four five six climb flight level two four zero"), "ALT VOZ456 FL240")
+  check_eq(ex("hongkong shuttle five two one turn left heading two seven zero"), "HDG HKE521 270 LEFT")
+  check_eq(ex("hong kong shuttle five two one reduce speed two two zero knots"), "SPD HKE521 220")
+  check_eq(ex("jetstar asia seven seven descend five thousand feet"), "ALT JSA77 5000")
+  check_eq(ex("jetstar seven seven descend five thousand feet"), "ALT JSA77 5000")
+  check_eq(ex("jetstar nine one five climb flight level one three zero"), "ALT JST915 FL130")
+  check_eq(ex("HKE521 velocity 240 knots"), "SPD HKE521 240")
+  local _, ex2 = scene({ "CRE HKE521 A320 22.3 114.2 090 FL150 250" })
+  check_eq(ex2("please reduce the velocity of HKE521 to 220 knots"), "SPD HKE521 220")
+  asked(ex("velocity four five seven climb flight level two four zero"), "no Velocity 457 flies")
+  asked(ex("jetstar nine one six climb flight level one three zero"), "no Jetstar 916 flies")
+end
+
+-- Cycle 33 (R67): a new aircraft's type designator spelled in the phonetic alphabet, its digits said singly
+-- ("bravo seven three eight", "bravo seven seven whiskey"), is that designator when squawk knows it; a
+-- spelling of none is still asked about
+do
+  local _, ex = scene({})
+  check_eq(ex("create qantas nine eight bravo seven eight niner at one decimal zero north one zero three decimal "
+    .. "five east heading zero nine zero flight level two zero zero two eight zero knots"),
+    "CRE QFA98 B789 1 103.5 90 FL200 280")
+  check_eq(ex("sim op create singapore four one bravo seven seven whiskey at one decimal two north one zero four "
+    .. "decimal zero east heading one eight zero flight level three one zero two niner zero knots"),
+    "CRE SIA41 B77W 1.2 104 180 FL310 290")
+  asked(ex("create qantas nine eight bravo seven eight three at one decimal zero north one zero three decimal "
+    .. "five east heading zero nine zero flight level two zero zero two eight zero knots"), "no type B783")
+end
+
+-- Cycle 33 (R67): "maintain heading", "keep your heading", said with no value, is the heading the aircraft
+-- flies; a heading said with it is that heading, and "maintain" alone still asks what is kept
+do
+  local _, ex = scene({ "CRE ANZ88 A320 -36.9 174.8 135 FL110 250" })
+  check_eq(ex("new zealand eight eight maintain heading"), "HDG ANZ88 135")
+  check_eq(ex("new zealand eight eight keep your heading and climb flight level one five zero"),
+    "HDG ANZ88 135 ; ALT ANZ88 FL150")
+  check_eq(ex("new zealand eight eight maintain heading one five zero"), "HDG ANZ88 150")
+  asked(ex("new zealand eight eight maintain"), "nothing said to keep")
+end
+
+-- Cycle 33 (R67): South-East Asian cities whose one large airport the navdata names otherwise ("Manila" is
+-- NINOY AQUINO INTL, "Jakarta" SOEKARNO HATTA INTL) are that airport; a city of two airports is still asked
+do
+  local _, nx = navscene({ "CRE PAL215 A321 14.0 121.5 180 FL200 280", "CRE GIA702 A333 -6.5 107.0 180 FL200 280" },
+    "South-East Asian cities")
+  if nx then
+    check_eq(nx("philippine two one five set destination manila"), "DEST PAL215 RPLL")
+    check_eq(nx("garuda seven zero two divert to jakarta"), "DEST GIA702 WIII")
+    asked(nx("garuda seven zero two divert to tokyo"), "two airports")
+  end
+end
+
+-- Cycle 33 (R67): knots said after a word speech recognition writes for "to" or "two" ("reduce speed too two
+-- zero knots") are no change of speed (the assigned speed's first digit may be lost): asked; "reduce speed
+-- two zero knots" with nothing before it is still 20 kt slower
+do
+  local _, ex = scene({ "CRE MAS52 A333 3.0 101.5 045 FL110 260" })
+  asked(ex("malaysian five two reduce speed too two zero knots"), "too before two digits")
+  check_eq(ex("malaysian five two reduce speed two zero knots"), "SPD MAS52 240")
+  check_eq(ex("malaysian five two reduce speed too two two zero knots"), "SPD MAS52 220")
+end
