@@ -1933,6 +1933,29 @@ function G:segments(b, e)
       end
     end
   end
+  -- "descend FL60 and from 10 NM before LNO 180 kt": a distance from a place opening a clause after the
+  -- instruction's value ("and" or a comma before it), with a value after the place, is that value's
+  -- condition alone: an instruction of its own (G:at_distance)
+  for k = #segs, 1, -1 do
+    local sg = segs[k]
+    local spec = M.intents[sg.intent]
+    if spec and spec.value and sg.intent ~= "create" then
+      for _, q in ipairs(self:quantities(sg.trig + 1, sg.e)) do
+        local c = self:word(q.b - 1, "from at within") and q.b - 1 or q.b
+        local p = self:skip_fillers(q.e)
+        local value_before = #self:quantities(sg.trig, q.b) > 0
+        if q.kind == "dist" and value_before and (self:word(c - 1, "and")
+            or (self.t[c - 1] and self.t[c - 1].kind == "punct" and self.t[c - 1].text == ","))
+            and self:word(p, "from of to before") and self:has_ref(p + 1, p + 2, "waypoint")
+            and #self:quantities(p + 2, sg.e) > 0 then
+          local cut = c - 1
+          table.insert(segs, k + 1, { intent = "infer", b = cut, trig = c, e = sg.e })
+          sg.e = cut
+          break
+        end
+      end
+    end
+  end
   -- "FL 340, M.79, heading 255 - create FIN6PM, A359, ...", "Heading 015, 6,000 feet, 200 knots, at 55 degrees
   -- 40 north 12 degrees 50 east: create SAS88Y, E195": values said before the creation, for no aircraft
   -- named, are the new aircraft's
@@ -2329,7 +2352,7 @@ function G:parse(b, e)
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut
-      if (s.intent == "spd" or s.intent == "hdg") and not at then held, cut = self:trailing_level(s) end
+      if (s.intent == "spd" or s.intent == "hdg" or s.intent == "infer") and not at then held, cut = self:trailing_level(s) end
       -- "descend FL70 and reduce 180 kts when level": the instruction before's value, reached ("reduce 220
       -- when you reach it" with no level before it: asked, never run at once)
       local reached_cut = not held and not at and self:trailing_reached(s)
@@ -2417,8 +2440,25 @@ end
 
 -- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /
 -- reaches / passes FL250 (please)" closing the segment; the level and where its words begin, or nil.
+-- A speed's level said after "above" or "below" closing the segment ("Mach .76 above FL300", "250 kt below
+-- FL100"): the speed held from that level, the same reading ("not above FL300" is a limit, no condition).
 function G:trailing_level(s)
   local c = self:find_word(s.trig + 1, s.e, "when once")
+  if c >= s.e and (s.intent == "spd" or s.intent == "infer") then
+    local a = self:find_word(s.trig + 1, s.e, "above below")
+    local q = a < s.e and not self:word(a - 1, "not") and self:quantities(a + 1, s.e)[1]
+    if not (q and q.kind == "alt" and q.b == self:skip_fillers(a + 1)) then return nil end
+    local spd = self:quantities(s.b, a)
+    spd = spd[#spd]
+    if not (spd and spd.e == a and (spd.kind == "speed" or spd.kind == "mach"
+        or (spd.kind == "plain" and s.intent == "spd" and spd.b > s.trig))) then
+      return nil
+    end
+    for i = q.e, s.e - 1 do
+      if not (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "please thanks thank you cheers")) then return nil end
+    end
+    return q, a
+  end
   if c >= s.e then return nil end
   local cut = c
   while cut - 1 > s.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "but only")) do cut = cut - 1 end

@@ -1216,7 +1216,8 @@ end
 -- said after a place ("10 miles past X") is no such condition: its place
 -- stays uncarried and is asked about.
 function m:at_distance(s)
-  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" and s.intent ~= "vs" then
+  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" and s.intent ~= "vs"
+      and s.intent ~= "infer" then
     return nil
   end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
@@ -1320,7 +1321,14 @@ function m:leftovers(s)
         emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl) .. (rate and " " .. f.int(math.abs(self:take(rate).value)) or ""))
         alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
-        emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        -- ("descend FL120 and 250 kt below FL100": the level after "above" or "below" is the one the speed
+        -- waits for, G:trailing_level's reading)
+        local held = qs[k + 1]
+        held = held and held.kind == "alt" and held.b == q.e + 1 and self:word(q.e, "above below")
+          and not self:word(q.b - 1, "not") and not self.taken[held.b] and held
+        emit((held and "ATALT " .. ids[1] .. " " .. f.alt(held.value, held.fl) .. " " or "") .. "SPD " .. ids[1] .. " "
+          .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        if held then self:take(held) end
         spd_done = self:take(q)
       elseif q.kind == "plain" and q.number.typed and self.t[q.b].raw:match("^%.%d%d?$") and not spd_done
           and q.value >= 0.4 and q.value < 1 then

@@ -359,10 +359,15 @@ return function(H, f, compass)
         self:explain(typed, typed + 1)
       end
     end
-    -- "on the ground", "on ground": altitude 0 ft and speed 0 kt; with a level or speed said as well, asked
+    -- "on the ground", "on ground", "ready for departure" (or take-off): altitude 0 ft and speed 0 kt; with a
+    -- level or speed said as well, asked
     for i = s.trig, s.e - 1 do
       local g = self:word(i, "on") and (self:word(i + 1, "the") and i + 2 or i + 1)
-      if g and self:word(g, "ground") then
+      if self:word(i, "ready") and self:word(i + 1, "for") then
+        g = self:word(i + 2, "take") and self:word(i + 3, "off") and i + 3 or i + 2
+        if not self:word(g, "departure takeoff take-off off") then g = nil end
+      end
+      if g and self:word(g, "ground departure takeoff take-off off") then
         if alt or spd or mach then
           return self:need(string.format("Should %s be on the ground (altitude 0, speed 0) or at the level and speed said?",
             id and id:upper() or "the new aircraft"))

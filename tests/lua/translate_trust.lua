@@ -5174,3 +5174,46 @@ do
   check_eq(ex("pseudo pilot speedbird one one climb flight level one two zero"), "ALT BAW11 FL120")
   check_eq(ex("sim op"), "OP")
 end
+
+-- Cycle 33 (R68): a speed's level after "above" or "below" ("Mach .80 above FL310", "speed 240 below FL90") is
+-- the level the speed waits for (ATALT), never a level to fly; "not below" is no such condition and is asked
+do
+  local _, ex = scene({ "CRE IBE33 A321 40.0 -3.0 045 FL250 290" })
+  check_eq(ex("IBE33 Mach .80 above FL310"), "ATALT IBE33 FL310 SPD IBE33 M0.8")
+  check_eq(ex("IBE33 speed 240 below FL90"), "ATALT IBE33 FL90 SPD IBE33 240")
+  check_eq(ex("IBE33 220 kt below FL120, thanks"), "ATALT IBE33 FL120 SPD IBE33 220")
+  check_eq(ex("IBE33 climb FL330 and Mach .80 above FL310"), "ALT IBE33 FL330 ; ATALT IBE33 FL310 SPD IBE33 M0.8")
+  asked(ex("IBE33 speed 260 not below FL110"), "a limit, no condition")
+  asked(ex("IBE33 below FL110"), "no verb, no speed")
+  -- (two speeds, the level holding only the second: asked, never the level flown nor the condition on both)
+  asked(ex("IBE33 speed 280 kt, Mach .79 above FL290"), "two speeds, one level")
+end
+
+-- Cycle 33 (R68): a distance from a place opening a clause after the instruction's value ("descend FL90 and
+-- from 12 NM before GOLFA 200 kt") holds the value after it alone, not the instruction before
+do
+  local _, ex = scene({ "CRE BEE7Q DH8D 50.0 -4.0 090 FL140 240", "DEFWPT GOLFA 50.1 -3.0" })
+  check_eq(ex("BEE7Q descend FL90 and from 12 NM before GOLFA 200 kt"),
+    "ALT BEE7Q FL90 ; ATDIST BEE7Q GOLFA 12 SPD BEE7Q 200")
+  check_eq(ex("BEE7Q descend FL90, at 15 NM from GOLFA 210 kt"), "ALT BEE7Q FL90 ; ATDIST BEE7Q GOLFA 15 SPD BEE7Q 210")
+  check_eq(ex("BEE7Q 20 NM before GOLFA descend FL90"), "ATDIST BEE7Q GOLFA 20 ALT BEE7Q FL90")
+end
+
+-- Cycle 33 (R68): "climb 4000 ft" or more in feet below the aircraft is a cleared altitude on the wrong side,
+-- asked, never a climb by that much; a small step ("climb 2000 ft") and "up 4000" stay steps
+do
+  local _, ex = scene({ "CRE VLG3C A320 41.0 2.0 300 FL80 230" })
+  asked(ex("VLG3C climb 5000 ft"), "a level below, said after climb")
+  asked(ex("VLG3C climb 4000 ft"), "a level below, said after climb")
+  check_eq(ex("VLG3C climb 2000 ft"), "ALT VLG3C 10000")
+  check_eq(ex("VLG3C climb by 5000 ft"), "ALT VLG3C 13000")
+end
+
+-- Cycle 33 (R68): a creation "ready for departure" or "ready for take-off" is on the ground (altitude 0, speed
+-- 0), as "on the ground" is; with a level said too, asked
+do
+  local _, ex = scene({})
+  check_eq(ex("create BEL4Q A319 at 50.9 4.5 heading 250 ready for departure"), "CRE BEL4Q A319 50.9 4.5 250 0 0")
+  check_eq(ex("create BEL4Q A319 at 50.9 4.5 heading 250, ready for take off"), "CRE BEL4Q A319 50.9 4.5 250 0 0")
+  asked(ex("create BEL4Q A319 at 50.9 4.5 heading 250 ready for departure FL90"), "ground and a level")
+end
