@@ -4660,9 +4660,15 @@ function M.translate(text, world)
   -- "swr18k ,edw22", "dlh4tk,ewg7ma": a comma typed against the next word closes the word before (a comma
   -- between digits, "12,000" or "48.1,16.5", stays)
   if text:find(",%a") then text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2") end
-  -- "vs +1500", "roc +800": a plus typed before a vertical speed is its sign (a climb)
+  -- "HDG SEL 360", "speed selected 250": a flight-deck selector named after the value's name is that value
+  if text:find("[Ss][Ee][Ll]") then
+    text = text:gsub("%f[%w]([%a/]+)%s+([Ss][Ee][Ll]%a*)%f[%A]", function(w, sel)
+      if lexicon.selector_names[w:lower()] and lexicon.selector_words[sel:lower()] then return w end
+    end)
+  end
+  -- "vs +1500", "V/S +2500", "roc +800": a plus typed before a vertical speed is its sign (a climb)
   if text:find("%+%d") then
-    text = text:gsub("%f[%w](%a+)(%s*)%+(%d)", function(w, space, d)
+    text = text:gsub("%f[%w]([%a/]+)(%s*)%+(%d)", function(w, space, d)
       if lexicon.signed_rate_words[w:lower()] then return w .. space .. d end
     end)
   end

@@ -382,7 +382,11 @@ return {
   -- words after which a clause is a new instruction
   then_words = { "then" },
   -- words after which a "+" typed before the number is its sign ("vs +1500"): a climb
-  signed_rate_words = { vs = true, roc = true, rate = true, vspd = true },
+  -- a value's name on the flight deck's selector panel, and the word that says it is selected ("HDG SEL")
+  selector_names = { hdg = true, heading = true, spd = true, speed = true, alt = true, altitude = true, vs = true,
+                     ["v/s"] = true, mach = true, fpa = true },
+  selector_words = { sel = true, select = true, selected = true },
+  signed_rate_words = { vs = true, ["v/s"] = true, roc = true, rate = true, vspd = true },
   -- a value's name that ends a request straight after "then", "and" or a comma ("climb fl300 then fl"):
   -- the request was cut off before the value, asked
   value_names = { "fl", "level", "altitude", "alt", "heading", "hdg", "speed", "spd", "mach", "vs", "rate" },
@@ -523,9 +527,9 @@ return {
   present = { "present", "current", "actual", "continue" },
   same_as = { "match", "same", "as" },
   -- switches
-  off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },
+  off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove", "disengage", "disengaged" },
   off_after = { "anymore", "longer" },
-  on = { "on", "enable", "activate", "show", "start", "use" },
+  on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
   -- a runway, and the sides a runway's number is said with ("runway two seven left"): part of its name

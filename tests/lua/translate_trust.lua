@@ -5217,3 +5217,17 @@ do
   check_eq(ex("create BEL4Q A319 at 50.9 4.5 heading 250, ready for take off"), "CRE BEL4Q A319 50.9 4.5 250 0 0")
   asked(ex("create BEL4Q A319 at 50.9 4.5 heading 250 ready for departure FL90"), "ground and a level")
 end
+
+-- Cycle 33 (R68): flight-deck words: "engage"/"disengage" switch a navigation mode on/off ("engage LNAV",
+-- "VNAV disengaged"); a selector named after the value's name ("HDG SEL 270", "SPD SEL 240") is that value;
+-- "V/S +1800" is a climb of 1800 ft/min; "engage" with no mode named is still asked
+do
+  local _, ex = scene({ "CRE SAS5N A20N 59.0 17.0 200 FL240 280" })
+  check_eq(ex("SAS5N engage LNAV"), "LNAV SAS5N ON")
+  check_eq(ex("SAS5N VNAV disengaged"), "VNAV SAS5N OFF")
+  check_eq(ex("SAS5N disengage LNAV and HDG SEL 230"), "LNAV SAS5N OFF ; HDG SAS5N 230")
+  check_eq(ex("SAS5N SPD SEL 240 and ALT SEL FL200"), "SPD SAS5N 240 ; ALT SAS5N FL200")
+  check_eq(ex("SAS5N V/S +1800"), "VS SAS5N 1800")
+  check_eq(ex("SAS5N V/S -1200"), "VS SAS5N -1200")
+  asked(ex("SAS5N engage"), "no mode named")
+end
