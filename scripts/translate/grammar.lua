@@ -2538,9 +2538,11 @@ function G:when_reached(s)
   local verb = self:skip_fillers(c + 1)
   if self:word_in(c + 1, s.trig, "there level lvl") then return true end
   -- ("when reaching", "when you reach it", "once it reaches that", "when you hit it": the level of the
-  -- instruction before)
-  if self:word(verb, "you it he she they") then verb = self:skip_fillers(verb + 1) end
-  if not self:word(verb, "reaching reach reaches hit hits") then return false end
+  -- instruction before; "once you have it", "when you've got it": its value, held)
+  local subject = self:word(verb, "you it he she they")
+  if subject then verb = self:skip_fillers(verb + 1) end
+  local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
+  if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)
   if self:word(k, "it that") then k = self:skip_fillers(k + 1) end
   return k == s.trig
@@ -3586,8 +3588,10 @@ function G:explained_spans(issued, kinds)
       local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
       -- ("delete KLC21, not needed for this run": a participle's clause, negated)
       local participle = j == k and k > 1 and self:word(j, "not") and nx and nx.kind == "word" and nx.text:match("%aed$")
+      -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
+      local step = nx and nx.kind == "word" and lexicon.session_steps[nx.text]
       if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (self:word(j, "so") and j > 1 and subject)
-          or (self:word(j, "for") and j > 1 and subject) then
+          or (self:word(j, "for") and j > 1 and (subject or step)) then
         comment(j, e)
         break
       end

@@ -1321,11 +1321,14 @@ function m:leftovers(s)
         emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl) .. (rate and " " .. f.int(math.abs(self:take(rate).value)) or ""))
         alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
-        -- ("descend FL120 and 250 kt below FL100": the level after "above" or "below" is the one the speed
-        -- waits for, G:trailing_level's reading)
+        -- ("descend FL120 and 250 kt below FL100", "climb FL170, Mach .74 when passing FL150": the level
+        -- after "above" or "below", or "when"/"once" and a verb of passing, is the one the speed waits for,
+        -- G:trailing_level's reading)
+        local at = self:word(q.e, "above below") and q.e + 1
+        if self:word(q.e, "when once") and self:word(q.e + 1, "passing reaching crossing through") then at = q.e + 2 end
         local held = qs[k + 1]
-        held = held and held.kind == "alt" and held.b == q.e + 1 and self:word(q.e, "above below")
-          and not self:word(q.b - 1, "not") and not self.taken[held.b] and held
+        held = at and held and held.kind == "alt" and held.b == at and not self:word(q.b - 1, "not")
+          and not self.taken[held.b] and held
         emit((held and "ATALT " .. ids[1] .. " " .. f.alt(held.value, held.fl) .. " " or "") .. "SPD " .. ids[1] .. " "
           .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
         if held then self:take(held) end

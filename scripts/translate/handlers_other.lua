@@ -2444,7 +2444,11 @@ return function(H, f, compass)
     local id = self:acid(s, what)
     if id then self:emit(cmd .. " " .. id) end
   end
-  function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
+  function m:listrte(s)
+    -- ("the route page", "the flight plan page": the cockpit's page that shows the route)
+    if self:word(s.trig + 1, "page") then self:explain(s.trig + 1, s.trig + 2) end
+    self:one_acid(s, "LISTRTE", "have its route listed")
+  end
   function m:delrte(s) self:one_acid(s, "DELRTE", "have its route cleared") end
   -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
   function m:pos(s)

@@ -331,7 +331,9 @@ return {
     -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it
     -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
     err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
-    uhm = { word = "uh" }, ehm = { word = "uh" } },
+    uhm = { word = "uh" }, ehm = { word = "uh" },
+    -- (the flight management computer's page typed by its name: "show me the FPLN")
+    fpln = { word = "flight plan" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",
@@ -382,6 +384,9 @@ return {
   -- words after which a clause is a new instruction
   then_words = { "then" },
   -- words after which a "+" typed before the number is its sign ("vs +1500"): a climb
+  -- a step of a study session named after "for" with no determiner ("freeze sim for debrief"): a purpose
+  session_steps = { debrief = true, debriefing = true, briefing = true, discussion = true, lunch = true,
+                    coffee = true, analysis = true, questionnaire = true, questionnaires = true },
   -- a value's name on the flight deck's selector panel, and the word that says it is selected ("HDG SEL")
   selector_names = { hdg = true, heading = true, spd = true, speed = true, alt = true, altitude = true, vs = true,
                      ["v/s"] = true, mach = true, fpa = true },

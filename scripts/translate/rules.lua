@@ -413,6 +413,13 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "sim speed half", "sim speed 2": a multiplier or a bare number straight after the sim's speed, nothing
+  -- after it and no aircraft named, is the clock's rate
+  rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)
+    local q = g:quantities(i + 1, #g.t + 1)[1]
+    local said = g:word(i + 1, "@multipliers") and i + 2 or (q and q.kind == "plain" and q.b == i + 1 and q.e)
+    return said and said > #g.t and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }

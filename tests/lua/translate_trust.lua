@@ -5231,3 +5231,25 @@ do
   check_eq(ex("SAS5N V/S -1200"), "VS SAS5N -1200")
   asked(ex("SAS5N engage"), "no mode named")
 end
+
+-- Cycle 33 (R68): the held value named by "once you have it" ("slow to 240 kt and once you have it V/S -1500":
+-- ATSPD), and a speed with "when passing" and a level after it inside a level clearance ("climb FL190, Mach
+-- .75 when passing FL170": ATALT); "once you have it" with nothing before it is still asked
+do
+  local _, ex = scene({ "CRE DLH9P A320 50.0 8.0 090 FL150 290" })
+  check_eq(ex("DLH9P slow to 240 kt and once you have it V/S -1500"), "SPD DLH9P 240 ; ATSPD DLH9P 240 VS DLH9P -1500")
+  check_eq(ex("DLH9P climb FL190, Mach .75 when passing FL170"), "ALT DLH9P FL190 ; ATALT DLH9P FL170 SPD DLH9P M0.75")
+  asked(ex("DLH9P once you have it descend FL100"), "nothing held before it")
+end
+
+-- Cycle 33 (R68): sim control in pilot terms: "sim speed half" / "sim speed 3" is the clock's rate; "for
+-- debrief" names the session's step (a purpose); the FMS's "FPLN" and "the route page" show the route
+do
+  local _, ex = scene({ "CRE AFR9T A321 45.0 5.0 090 FL300 280" })
+  check_eq(ex("sim speed half"), "DTMULT 0.5")
+  check_eq(ex("sim speed 3"), "DTMULT 3")
+  check_eq(ex("pause the sim for debriefing"), "HOLD")
+  check_eq(ex("AFR9T show me the FPLN"), "LISTRTE AFR9T")
+  check_eq(ex("AFR9T give me the route page"), "LISTRTE AFR9T")
+  asked(ex("AFR9T give me the page"), "no page named")
+end
