@@ -633,7 +633,8 @@ end
 -- (lexicon.addressed_roles) opening the line is its addressee even without a comma before a word
 -- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...").
 -- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
--- follows ("sim op pause the simulation"); said alone it is the line.
+-- follows ("sim op pause the simulation"); said alone it is the line. A role's "note:" ("pseudo-pilot note:
+-- ...") is such a label too.
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local ADDRESSED = set_of(lexicon.addressed_roles.names)
@@ -654,6 +655,9 @@ local function role_dropped(text)
       and all_roles((label:lower():gsub("%s+here$", ""))) then
     return rest
   end
+  -- ("pseudo-pilot note: ...", "instructor notes: ...": the role's note is its line, no ECHO)
+  local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
+  if noted and all_roles(noted) then return line end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")

@@ -332,6 +332,9 @@ return {
     -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
     err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
     uhm = { word = "uh" }, ehm = { word = "uh" },
+    -- (a vertical rate's bound typed before its value: "RoD max 1500", "RoC min 500")
+    rod = { word = "rate of descent", next = "max maximum min minimum" },
+    roc = { word = "rate of climb", next = "max maximum min minimum" },
     -- (the flight management computer's page typed by its name: "show me the FPLN")
     fpln = { word = "flight plan" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside

@@ -5253,3 +5253,15 @@ do
   check_eq(ex("AFR9T give me the route page"), "LISTRTE AFR9T")
   asked(ex("AFR9T give me the page"), "no page named")
 end
+
+-- Cycle 33 (R68): a role's "note:" before the request ("pseudo-pilot note: ...") is a speaker's label, no
+-- ECHO ("note: ..." alone stays a note); a vertical rate's bound typed before its value ("RoD max 1800") is
+-- that rate
+do
+  local _, ex = scene({ "CRE TVS2K B738 49.0 14.0 300 FL200 270" })
+  check_eq(ex("pseudo-pilot note: TVS2K climb FL240"), "ALT TVS2K FL240")
+  check_eq(ex("note: TVS2K is slow today"), "ECHO TVS2K is slow today")
+  check_eq(ex("TVS2K RoD max 1800"), "VS TVS2K -1800")
+  check_eq(ex("TVS2K RoC min 700"), "VS TVS2K 700")
+  asked(ex("TVS2K RoD max"), "no rate said")
+end
