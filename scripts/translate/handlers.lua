@@ -1191,6 +1191,11 @@ function m:at_time(s)
     while w > 0 and self.t[w].filler do w = w - 1 end
     if q.kind == "time" and not self.taken[q.b] then
       local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
+      -- ("at sim time 00:10:00 freeze": the clock's time named before it)
+      if self:word(w, "time") and self:word(w - 1, "@sim") and self:word(w - 2, "at") then
+        self:mark_used(w - 1, w + 1)
+        w = w - 2
+      end
       if not self:word(w, "in after at schedule") and not clock then return nil end
       -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
       -- 2 minutes EZY45 descend": left uncarried, so asked about)

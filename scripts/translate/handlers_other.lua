@@ -1973,11 +1973,11 @@ return function(H, f, compass)
   end
 
   -- The place a wind is at, said by its name or code after a place word ("at Salzburg", "over KPT",
-  -- "at Munich airport"): the ident (WIND and GETWIND take a place for lat, lon), or nil
+  -- "at Munich airport", "overhead BUB"): the ident (WIND and GETWIND take a place for lat, lon), or nil
   local function wind_place(self, s)
     for k = s.b, s.e - 1 do
       local nx = self.t[k + 1]
-      if self:word(k, "at over near around above") and nx and nx.kind == "word" then
+      if self:word(k, "at over overhead near around above") and nx and nx.kind == "word" then
         local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
         if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
         local id = self:place_by_name(k + 1, math.min(s.e, k + 4))

@@ -5265,3 +5265,12 @@ do
   check_eq(ex("TVS2K RoC min 700"), "VS TVS2K 700")
   asked(ex("TVS2K RoD max"), "no rate said")
 end
+
+-- Cycle 33 (R68): "overhead" names the place of a wind as "over" does; "at sim time 00:05:00" is the clock's
+-- time a command is scheduled for; "sim time 00:05:00" with no "at" is still asked
+do
+  local _, ex = scene({ "DEFWPT WINDY 50.9 4.5" })
+  check_eq(ex("what's the wind at FL120 overhead WINDY?"), "GETWIND WINDY FL120")
+  check_eq(ex("at sim time 00:05:00 freeze"), "SCHEDULE 00:05:00 HOLD")
+  asked(ex("sim time 00:05:00 freeze"), "no 'at' before the time")
+end
