@@ -801,8 +801,9 @@ return {
     { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" } },
     { heard = { "nivel de vuelo", "nivel", "niveau" }, means = "flight level", before = { "#number" } },
     { heard = { "velocidad", "vitesse" }, means = "speed", before = { "#number" } },
-    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a", "y" } },
-    { heard = { "ascienda", "suba", "montez" }, means = "climb", before = { "#number", "nivel", "niveau", "a", "y" } },
+    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a", "y", "fl" } },
+    { heard = { "ascienda", "suba", "montez", "monte" }, means = "climb",
+      before = { "#number", "nivel", "niveau", "a", "y", "fl" } },
     -- (and the rest of a Spanish clearance: "descienda y mantenga uno dos mil pies", "mantenga rumbo ...",
     -- "vire izquierda rumbo ...", "reduzca dos cinco cero nudos")
     { heard = { "mantenga", "mantener" }, means = "maintain",

@@ -1455,9 +1455,10 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return i == g:skip_fillers(1) and nx ~= nil and nx.kind == "word" and PHONETIC[nx.text] == nil
   end }
-  -- "write 'trial 4 start' into the log", "put 'baseline done' in the log": quoted text for the log
-  rule { "write put add enter", "echo", when = function(g, i)
-    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log")
+  -- "write 'trial 4 start' into the log", "put 'baseline done' in the log", "put 'Run 3 start' on the
+  -- screen": quoted text for the log or the screen
+  rule { "write put add enter show display", "echo", when = function(g, i)
+    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log screen scope")
   end }
 
   -- conflict detection and resolution

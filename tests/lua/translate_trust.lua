@@ -5274,3 +5274,12 @@ do
   check_eq(ex("at sim time 00:05:00 freeze"), "SCHEDULE 00:05:00 HOLD")
   asked(ex("sim time 00:05:00 freeze"), "no 'at' before the time")
 end
+
+-- Cycle 33 (R68): quoted text put "on the screen" is an ECHO, as for the log; the French "monte" before a
+-- level is a climb ("monte FL150"), "monte" alone still asked
+do
+  local _, ex = scene({ "CRE AFR3Z A320 44.0 1.0 090 FL100 250" })
+  check_eq(ex("put 'Block B start' on the screen"), "ECHO Block B start")
+  check_eq(ex("AFR3Z monte FL140 merci"), "ALT AFR3Z FL140")
+  asked(ex("AFR3Z monte"), "no level said")
+end
