@@ -661,6 +661,9 @@ return {
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",
       near = { "runway", "rwy", "ils", "final", "approach", "localizer", "localiser", "landing", "for" } },
+    -- "turn right heading 090, vector to IDEKO": where a vector leads, told to the pilot; the heading is flown,
+    -- no direct-to is given
+    { what = "vectors toward a place", words = "vectors vectoring vector", near = { "to", "towards" }, window = 1 },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },

@@ -5283,3 +5283,12 @@ do
   check_eq(ex("AFR3Z monte FL140 merci"), "ALT AFR3Z FL140")
   asked(ex("AFR3Z monte"), "no level said")
 end
+
+-- Cycle 33 (R68): "vector to X" after a heading tells the pilot where the vector leads: the heading is flown,
+-- no direct-to; said alone it sends nothing
+do
+  local vsim, ex = scene({ "CRE SAS7V CRJ9 55.0 12.0 020 FL130 270", "DEFWPT VECTA 55.5 12.5" })
+  check_eq(ex("SAS7V turn left heading 350, vector to VECTA"), "HDG SAS7V 350 LEFT")
+  local r = graph.translate("SAS7V vector to VECTA", { sim = vsim, mode = "offline" })
+  check(#(r.commands or {}) == 0, "a vector alone sends nothing")
+end
