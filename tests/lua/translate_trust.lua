@@ -5292,3 +5292,11 @@ do
   local r = graph.translate("SAS7V vector to VECTA", { sim = vsim, mode = "offline" })
   check(#(r.commands or {}) == 0, "a vector alone sends nothing")
 end
+
+-- Cycle 33 (R68): a waypoint added "at the end" (of the route, where ADDWPT puts it) is an ADDWPT; "at the
+-- start" is still asked
+do
+  local _, ex = scene({ "CRE CFG2E A321 53.0 9.0 200 FL300 280", "DEFWPT ENDPT 52.0 8.0" })
+  check_eq(ex("CFG2E add ENDPT at the end"), "ADDWPT CFG2E ENDPT")
+  asked(ex("CFG2E add ENDPT at the start"), "not the end of the route")
+end
