@@ -1585,8 +1585,14 @@ return function(H, f, compass)
     local told = not added and prior and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
       and self:word_in(math.max(s.b, prior.b - 2), prior.b, "add insert append include") and prior.name:upper()
     if told then self:explain(math.max(s.b, prior.b - 2), prior.e) end
+    -- ("EZY82QT to EEL direct": the word closing the clause, the place said after "to" before it; the word
+    -- itself is no place's name heard)
+    local closing = self:word(s.trig, "directly direct dct")
+    for x = closing and s.trig + 1 or s.e, s.e - 1 do closing = closing and (self.t[x].kind == "punct" or self.t[x].filler) end
+    local to = closing and self:find_word(s.b, s.trig, "to") or s.trig
+    local back = to < s.trig and self:has_ref(to + 1, s.trig, "waypoint") and self:waypoint(to + 1, s.trig, id)
     local wp = to_dest or point or told or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
-        and self:word_in(s.trig, s.e, "there it") and added or self:waypoint(s.trig, s.e, id)
+        and self:word_in(s.trig, s.e, "there it") and added or back or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
     -- adverb that ends the clause
     if not wp and self:word(s.trig, "directly direct") then

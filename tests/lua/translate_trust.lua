@@ -5300,3 +5300,11 @@ do
   check_eq(ex("CFG2E add ENDPT at the end"), "ADDWPT CFG2E ENDPT")
   asked(ex("CFG2E add ENDPT at the start"), "not the end of the route")
 end
+
+-- Cycle 33 (R68): "direct" closing the clause after "to" and a place ("to DIRPT direct") flies direct to that
+-- place, the word itself no place's name heard
+do
+  local _, ex = scene({ "CRE EZY4D A320 52.0 4.6 180 FL190 290", "DEFWPT DIRPT 51.5 4.6" })
+  check_eq(ex("EZY4D to DIRPT direct"), "ADDWPT EZY4D DIRPT ; DIRECT EZY4D DIRPT")
+  asked(ex("EZY4D to direct"), "no place said")
+end
