@@ -675,6 +675,8 @@ return {
     -- may be named before its clock position: "traffic, an Emirates 777, at your two o'clock")
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" }, window = 9,
       to_end = true },
+    -- "FPA -3 and speed 180": a flight path angle, which squawk's aircraft do not fly by (its value with it)
+    { what = "flight path angles", words = "fpa", near = { "#number" }, window = 1 },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told
     -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
     { what = "approach sequences", words = "number", near = { "#number" }, window = 1 },

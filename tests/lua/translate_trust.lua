@@ -5308,3 +5308,11 @@ do
   check_eq(ex("EZY4D to DIRPT direct"), "ADDWPT EZY4D DIRPT ; DIRECT EZY4D DIRPT")
   asked(ex("EZY4D to direct"), "no place said")
 end
+
+-- Cycle 33 (R68): a flight path angle ("FPA -3") is not simulated: its value is accounted for and the rest of
+-- the request runs; "FPA" with no value is asked about
+do
+  local _, ex = scene({ "CRE HOP3F E145 47.0 2.0 270 FL60 220" })
+  check_eq(ex("HOP3F FPA -3 and speed 170"), "SPD HOP3F 170")
+  asked(ex("HOP3F FPA and speed 170"), "no angle said")
+end
