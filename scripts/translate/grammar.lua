@@ -633,7 +633,8 @@ end
 -- (lexicon.addressed_roles) opening the line is its addressee even without a comma before a word
 -- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...").
 -- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
--- follows ("sim op pause the simulation"); said alone it is the line.
+-- follows ("sim op pause the simulation"); said alone it is the line. A role's "note:" ("pseudo-pilot note:
+-- ...") is such a label too.
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local ADDRESSED = set_of(lexicon.addressed_roles.names)
@@ -654,6 +655,9 @@ local function role_dropped(text)
       and all_roles((label:lower():gsub("%s+here$", ""))) then
     return rest
   end
+  -- ("pseudo-pilot note: ...", "instructor notes: ...": the role's note is its line, no ECHO)
+  local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
+  if noted and all_roles(noted) then return line end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
@@ -1938,6 +1942,29 @@ function G:segments(b, e)
       end
     end
   end
+  -- "descend FL60 and from 10 NM before LNO 180 kt": a distance from a place opening a clause after the
+  -- instruction's value ("and" or a comma before it), with a value after the place, is that value's
+  -- condition alone: an instruction of its own (G:at_distance)
+  for k = #segs, 1, -1 do
+    local sg = segs[k]
+    local spec = M.intents[sg.intent]
+    if spec and spec.value and sg.intent ~= "create" then
+      for _, q in ipairs(self:quantities(sg.trig + 1, sg.e)) do
+        local c = self:word(q.b - 1, "from at within") and q.b - 1 or q.b
+        local p = self:skip_fillers(q.e)
+        local value_before = #self:quantities(sg.trig, q.b) > 0
+        if q.kind == "dist" and value_before and (self:word(c - 1, "and")
+            or (self.t[c - 1] and self.t[c - 1].kind == "punct" and self.t[c - 1].text == ","))
+            and self:word(p, "from of to before") and self:has_ref(p + 1, p + 2, "waypoint")
+            and #self:quantities(p + 2, sg.e) > 0 then
+          local cut = c - 1
+          table.insert(segs, k + 1, { intent = "infer", b = cut, trig = c, e = sg.e })
+          sg.e = cut
+          break
+        end
+      end
+    end
+  end
   -- "FL 340, M.79, heading 255 - create FIN6PM, A359, ...", "Heading 015, 6,000 feet, 200 knots, at 55 degrees
   -- 40 north 12 degrees 50 east: create SAS88Y, E195": values said before the creation, for no aircraft
   -- named, are the new aircraft's
@@ -2334,7 +2361,7 @@ function G:parse(b, e)
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
       local held, cut
-      if (s.intent == "spd" or s.intent == "hdg") and not at then held, cut = self:trailing_level(s) end
+      if (s.intent == "spd" or s.intent == "hdg" or s.intent == "infer") and not at then held, cut = self:trailing_level(s) end
       -- "descend FL70 and reduce 180 kts when level": the instruction before's value, reached ("reduce 220
       -- when you reach it" with no level before it: asked, never run at once)
       local reached_cut = not held and not at and self:trailing_reached(s)
@@ -2422,8 +2449,25 @@ end
 
 -- The level a segment's instruction waits for, said after it: "..., (but only) when/once it is at /
 -- reaches / passes FL250 (please)" closing the segment; the level and where its words begin, or nil.
+-- A speed's level said after "above" or "below" closing the segment ("Mach .76 above FL300", "250 kt below
+-- FL100"): the speed held from that level, the same reading ("not above FL300" is a limit, no condition).
 function G:trailing_level(s)
   local c = self:find_word(s.trig + 1, s.e, "when once")
+  if c >= s.e and (s.intent == "spd" or s.intent == "infer") then
+    local a = self:find_word(s.trig + 1, s.e, "above below")
+    local q = a < s.e and not self:word(a - 1, "not") and self:quantities(a + 1, s.e)[1]
+    if not (q and q.kind == "alt" and q.b == self:skip_fillers(a + 1)) then return nil end
+    local spd = self:quantities(s.b, a)
+    spd = spd[#spd]
+    if not (spd and spd.e == a and (spd.kind == "speed" or spd.kind == "mach"
+        or (spd.kind == "plain" and s.intent == "spd" and spd.b > s.trig))) then
+      return nil
+    end
+    for i = q.e, s.e - 1 do
+      if not (self.t[i].kind == "punct" or self.t[i].filler or self:word(i, "please thanks thank you cheers")) then return nil end
+    end
+    return q, a
+  end
   if c >= s.e then return nil end
   local cut = c
   while cut - 1 > s.trig and (self.t[cut - 1].kind == "punct" or self:word(cut - 1, "but only")) do cut = cut - 1 end
@@ -2503,9 +2547,11 @@ function G:when_reached(s)
   local verb = self:skip_fillers(c + 1)
   if self:word_in(c + 1, s.trig, "there level lvl") then return true end
   -- ("when reaching", "when you reach it", "once it reaches that", "when you hit it": the level of the
-  -- instruction before)
-  if self:word(verb, "you it he she they") then verb = self:skip_fillers(verb + 1) end
-  if not self:word(verb, "reaching reach reaches hit hits") then return false end
+  -- instruction before; "once you have it", "when you've got it": its value, held)
+  local subject = self:word(verb, "you it he she they")
+  if subject then verb = self:skip_fillers(verb + 1) end
+  local have = subject and self:word(verb, "have got") and self:word(self:skip_fillers(verb + 1), "it that")
+  if not (have or self:word(verb, "reaching reach reaches hit hits")) then return false end
   local k = self:skip_fillers(verb + 1)
   if self:word(k, "it that") then k = self:skip_fillers(k + 1) end
   return k == s.trig
@@ -3551,8 +3597,10 @@ function G:explained_spans(issued, kinds)
       local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
       -- ("delete KLC21, not needed for this run": a participle's clause, negated)
       local participle = j == k and k > 1 and self:word(j, "not") and nx and nx.kind == "word" and nx.text:match("%aed$")
+      -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
+      local step = nx and nx.kind == "word" and lexicon.session_steps[nx.text]
       if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (self:word(j, "so") and j > 1 and subject)
-          or (self:word(j, "for") and j > 1 and subject) then
+          or (self:word(j, "for") and j > 1 and (subject or step)) then
         comment(j, e)
         break
       end
@@ -4654,9 +4702,15 @@ function M.translate(text, world)
   -- "swr18k ,edw22", "dlh4tk,ewg7ma": a comma typed against the next word closes the word before (a comma
   -- between digits, "12,000" or "48.1,16.5", stays)
   if text:find(",%a") then text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2") end
-  -- "vs +1500", "roc +800": a plus typed before a vertical speed is its sign (a climb)
+  -- "HDG SEL 360", "speed selected 250": a flight-deck selector named after the value's name is that value
+  if text:find("[Ss][Ee][Ll]") then
+    text = text:gsub("%f[%w]([%a/]+)%s+([Ss][Ee][Ll]%a*)%f[%A]", function(w, sel)
+      if lexicon.selector_names[w:lower()] and lexicon.selector_words[sel:lower()] then return w end
+    end)
+  end
+  -- "vs +1500", "V/S +2500", "roc +800": a plus typed before a vertical speed is its sign (a climb)
   if text:find("%+%d") then
-    text = text:gsub("%f[%w](%a+)(%s*)%+(%d)", function(w, space, d)
+    text = text:gsub("%f[%w]([%a/]+)(%s*)%+(%d)", function(w, space, d)
       if lexicon.signed_rate_words[w:lower()] then return w .. space .. d end
     end)
   end

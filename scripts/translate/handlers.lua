@@ -1191,6 +1191,11 @@ function m:at_time(s)
     while w > 0 and self.t[w].filler do w = w - 1 end
     if q.kind == "time" and not self.taken[q.b] then
       local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
+      -- ("at sim time 00:10:00 freeze": the clock's time named before it)
+      if self:word(w, "time") and self:word(w - 1, "@sim") and self:word(w - 2, "at") then
+        self:mark_used(w - 1, w + 1)
+        w = w - 2
+      end
       if not self:word(w, "in after at schedule") and not clock then return nil end
       -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
       -- 2 minutes EZY45 descend": left uncarried, so asked about)
@@ -1216,7 +1221,8 @@ end
 -- said after a place ("10 miles past X") is no such condition: its place
 -- stays uncarried and is asked about.
 function m:at_distance(s)
-  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" and s.intent ~= "vs" then
+  if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt" and s.intent ~= "vs"
+      and s.intent ~= "infer" then
     return nil
   end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
@@ -1320,7 +1326,17 @@ function m:leftovers(s)
         emit("ALT " .. ids[1] .. " " .. f.alt(q.value, q.fl) .. (rate and " " .. f.int(math.abs(self:take(rate).value)) or ""))
         alt_done = self:take(q)
       elseif (q.kind == "speed" or q.kind == "mach") and not spd_done then
-        emit("SPD " .. ids[1] .. " " .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        -- ("descend FL120 and 250 kt below FL100", "climb FL170, Mach .74 when passing FL150": the level
+        -- after "above" or "below", or "when"/"once" and a verb of passing, is the one the speed waits for,
+        -- G:trailing_level's reading)
+        local at = self:word(q.e, "above below") and q.e + 1
+        if self:word(q.e, "when once") and self:word(q.e + 1, "passing reaching crossing through") then at = q.e + 2 end
+        local held = qs[k + 1]
+        held = at and held and held.kind == "alt" and held.b == at and not self:word(q.b - 1, "not")
+          and not self.taken[held.b] and held
+        emit((held and "ATALT " .. ids[1] .. " " .. f.alt(held.value, held.fl) .. " " or "") .. "SPD " .. ids[1] .. " "
+          .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
+        if held then self:take(held) end
         spd_done = self:take(q)
       elseif q.kind == "plain" and q.number.typed and self.t[q.b].raw:match("^%.%d%d?$") and not spd_done
           and q.value >= 0.4 and q.value < 1 then

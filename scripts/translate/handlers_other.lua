@@ -359,10 +359,15 @@ return function(H, f, compass)
         self:explain(typed, typed + 1)
       end
     end
-    -- "on the ground", "on ground": altitude 0 ft and speed 0 kt; with a level or speed said as well, asked
+    -- "on the ground", "on ground", "ready for departure" (or take-off): altitude 0 ft and speed 0 kt; with a
+    -- level or speed said as well, asked
     for i = s.trig, s.e - 1 do
       local g = self:word(i, "on") and (self:word(i + 1, "the") and i + 2 or i + 1)
-      if g and self:word(g, "ground") then
+      if self:word(i, "ready") and self:word(i + 1, "for") then
+        g = self:word(i + 2, "take") and self:word(i + 3, "off") and i + 3 or i + 2
+        if not self:word(g, "departure takeoff take-off off") then g = nil end
+      end
+      if g and self:word(g, "ground departure takeoff take-off off") then
         if alt or spd or mach then
           return self:need(string.format("Should %s be on the ground (altitude 0, speed 0) or at the level and speed said?",
             id and id:upper() or "the new aircraft"))
@@ -1580,8 +1585,14 @@ return function(H, f, compass)
     local told = not added and prior and #self:refs_in(s.trig, s.e, "waypoint") == 0 and self:word_in(s.trig, s.e, "there it")
       and self:word_in(math.max(s.b, prior.b - 2), prior.b, "add insert append include") and prior.name:upper()
     if told then self:explain(math.max(s.b, prior.b - 2), prior.e) end
+    -- ("EZY82QT to EEL direct": the word closing the clause, the place said after "to" before it; the word
+    -- itself is no place's name heard)
+    local closing = self:word(s.trig, "directly direct dct")
+    for x = closing and s.trig + 1 or s.e, s.e - 1 do closing = closing and (self.t[x].kind == "punct" or self.t[x].filler) end
+    local to = closing and self:find_word(s.b, s.trig, "to") or s.trig
+    local back = to < s.trig and self:has_ref(to + 1, s.trig, "waypoint") and self:waypoint(to + 1, s.trig, id)
     local wp = to_dest or point or told or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
-        and self:word_in(s.trig, s.e, "there it") and added or self:waypoint(s.trig, s.e, id)
+        and self:word_in(s.trig, s.e, "there it") and added or back or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
     -- adverb that ends the clause
     if not wp and self:word(s.trig, "directly direct") then
@@ -1968,11 +1979,11 @@ return function(H, f, compass)
   end
 
   -- The place a wind is at, said by its name or code after a place word ("at Salzburg", "over KPT",
-  -- "at Munich airport"): the ident (WIND and GETWIND take a place for lat, lon), or nil
+  -- "at Munich airport", "overhead BUB"): the ident (WIND and GETWIND take a place for lat, lon), or nil
   local function wind_place(self, s)
     for k = s.b, s.e - 1 do
       local nx = self.t[k + 1]
-      if self:word(k, "at over near around above") and nx and nx.kind == "word" then
+      if self:word(k, "at over overhead near around above") and nx and nx.kind == "word" then
         local r = self:refs_in(k + 1, k + 2, "waypoint")[1]
         if r and not self:word(r.b, "@navaid_kinds") then return r.name:upper() end
         local id = self:place_by_name(k + 1, math.min(s.e, k + 4))
@@ -2439,7 +2450,11 @@ return function(H, f, compass)
     local id = self:acid(s, what)
     if id then self:emit(cmd .. " " .. id) end
   end
-  function m:listrte(s) self:one_acid(s, "LISTRTE", "have its route listed") end
+  function m:listrte(s)
+    -- ("the route page", "the flight plan page": the cockpit's page that shows the route)
+    if self:word(s.trig + 1, "page") then self:explain(s.trig + 1, s.trig + 2) end
+    self:one_acid(s, "LISTRTE", "have its route listed")
+  end
   function m:delrte(s) self:one_acid(s, "DELRTE", "have its route cleared") end
   -- POS of an aircraft, else of a place named with no aircraft ("where is TP2?")
   function m:pos(s)

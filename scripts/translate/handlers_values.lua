@@ -9,6 +9,11 @@ return function(H, f, wrap, compass)
   function m:infer(s)
     local qs = self:quantities(s.b, s.e)
     for _, q in ipairs(qs) do
+      -- ("... below FL120" with no verb: a bound or a condition, never a level to fly)
+      if q.kind == "alt" and self:word(q.b - 1, "above below") then
+        return self:need(string.format("What should happen %s? A level to fly needs its verb; a speed held "
+          .. "from a level is said 'Mach .78 above FL300'.", self:raw(q.b - 1, q.e)))
+      end
       if q.kind == "alt" or (q.kind == "plain" and q.number.thousand) then return self:altitude(s) end
       if q.kind == "speed" or q.kind == "mach" then return self:speed(s) end
       if q.kind == "heading" then return self:heading(s) end
@@ -307,7 +312,11 @@ return function(H, f, wrap, compass)
     -- is a level, never a step)
     if not relative and now and not q.to and not fl and dir ~= 0 and not self:word_in(s.trig, q.b, "@correction") then
       local cur = now.alt_ft or 0
-      if (dir > 0 and ft <= cur - 50 and ft <= 5000 and not q.number.thousand) or (dir > 0 and ft < 3000 and cur > 10000) then
+      -- (after "climb", 4000 ft or more below the aircraft is a cleared altitude on the wrong side, asked
+      -- below: nobody clears a climb of 4000 ft by its size; "up 4000" is a step)
+      local step_size = ft < 4000 or not self:word(s.trig, "climb clb climbing")
+      if (dir > 0 and ft <= cur - 50 and ft <= 5000 and step_size and not q.number.thousand)
+          or (dir > 0 and ft < 3000 and cur > 10000) then
         relative = true
         -- ("both climb 1000 feet", "all of them up 500 ft": the step read from one aircraft's level, no "by"
         -- said, is asked for several: each by that much, or all to one level?)

@@ -331,7 +331,12 @@ return {
     -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it
     -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
     err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
-    uhm = { word = "uh" }, ehm = { word = "uh" } },
+    uhm = { word = "uh" }, ehm = { word = "uh" },
+    -- (a vertical rate's bound typed before its value: "RoD max 1500", "RoC min 500")
+    rod = { word = "rate of descent", next = "max maximum min minimum" },
+    roc = { word = "rate of climb", next = "max maximum min minimum" },
+    -- (the flight management computer's page typed by its name: "show me the FPLN")
+    fpln = { word = "flight plan" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",
@@ -382,7 +387,14 @@ return {
   -- words after which a clause is a new instruction
   then_words = { "then" },
   -- words after which a "+" typed before the number is its sign ("vs +1500"): a climb
-  signed_rate_words = { vs = true, roc = true, rate = true, vspd = true },
+  -- a step of a study session named after "for" with no determiner ("freeze sim for debrief"): a purpose
+  session_steps = { debrief = true, debriefing = true, briefing = true, discussion = true, lunch = true,
+                    coffee = true, analysis = true, questionnaire = true, questionnaires = true },
+  -- a value's name on the flight deck's selector panel, and the word that says it is selected ("HDG SEL")
+  selector_names = { hdg = true, heading = true, spd = true, speed = true, alt = true, altitude = true, vs = true,
+                     ["v/s"] = true, mach = true, fpa = true },
+  selector_words = { sel = true, select = true, selected = true },
+  signed_rate_words = { vs = true, ["v/s"] = true, roc = true, rate = true, vspd = true },
   -- a value's name that ends a request straight after "then", "and" or a comma ("climb fl300 then fl"):
   -- the request was cut off before the value, asked
   value_names = { "fl", "level", "altitude", "alt", "heading", "hdg", "speed", "spd", "mach", "vs", "rate" },
@@ -525,9 +537,9 @@ return {
   keep_verbs = { "maintain", "keep", "hold" },
   same_as = { "match", "same", "as" },
   -- switches
-  off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove" },
+  off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove", "disengage", "disengaged" },
   off_after = { "anymore", "longer" },
-  on = { "on", "enable", "activate", "show", "start", "use" },
+  on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
   -- a runway, and the sides a runway's number is said with ("runway two seven left"): part of its name
@@ -651,6 +663,9 @@ return {
     -- runway squawk does not fly to
     { what = "approaches to a runway", words = "vectors vectoring vector",
       near = { "runway", "rwy", "ils", "final", "approach", "localizer", "localiser", "landing", "for" } },
+    -- "turn right heading 090, vector to IDEKO": where a vector leads, told to the pilot; the heading is flown,
+    -- no direct-to is given
+    { what = "vectors toward a place", words = "vectors vectoring vector", near = { "to", "towards" }, window = 1 },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },
@@ -662,6 +677,8 @@ return {
     -- may be named before its clock position: "traffic, an Emirates 777, at your two o'clock")
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" }, window = 9,
       to_end = true },
+    -- "FPA -3 and speed 180": a flight path angle, which squawk's aircraft do not fly by (its value with it)
+    { what = "flight path angles", words = "fpa", near = { "#number" }, window = 1 },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told
     -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
     { what = "approach sequences", words = "number", near = { "#number" }, window = 1 },
@@ -795,8 +812,9 @@ return {
     { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" } },
     { heard = { "nivel de vuelo", "nivel", "niveau" }, means = "flight level", before = { "#number" } },
     { heard = { "velocidad", "vitesse" }, means = "speed", before = { "#number" } },
-    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a", "y" } },
-    { heard = { "ascienda", "suba", "montez" }, means = "climb", before = { "#number", "nivel", "niveau", "a", "y" } },
+    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a", "y", "fl" } },
+    { heard = { "ascienda", "suba", "montez", "monte" }, means = "climb",
+      before = { "#number", "nivel", "niveau", "a", "y", "fl" } },
     -- (and the rest of a Spanish clearance: "descienda y mantenga uno dos mil pies", "mantenga rumbo ...",
     -- "vire izquierda rumbo ...", "reduzca dos cinco cero nudos")
     { heard = { "mantenga", "mantener" }, means = "maintain",

@@ -413,6 +413,13 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "sim speed half", "sim speed 2": a multiplier or a bare number straight after the sim's speed, nothing
+  -- after it and no aircraft named, is the clock's rate
+  rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)
+    local q = g:quantities(i + 1, #g.t + 1)[1]
+    local said = g:word(i + 1, "@multipliers") and i + 2 or (q and q.kind == "plain" and q.b == i + 1 and q.e)
+    return said and said > #g.t and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
@@ -722,7 +729,10 @@ return function(intent, rule, words)
     -- ("bel3kf add bitbu fl200", "add resmi fl60 210": the level typed straight after the name)
     local typed = r and g:quantities(r.e, #g.t + 1)[1]
     level = level or (typed and typed.b == r.e and typed.kind == "alt" and typed.fl)
-    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level)
+    -- ("CFG1KZ add RARUP at the end": the end of its route, where ADDWPT puts it)
+    local at_end = r and g:word(r.e, "at") and g:word(r.e + 1, "the") and g:word(r.e + 2, "end")
+    for x = at_end and r.e + 3 or #g.t + 1, #g.t do at_end = at_end and (g.t[x].kind == "punct" or g.t[x].filler) end
+    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level or at_end)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
   -- "add SUDIK to air malta 77", "add ZAGNB for croatia 7TK", "add WILLO then TIMBA to Speedbird 31F": places
@@ -1448,9 +1458,10 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return i == g:skip_fillers(1) and nx ~= nil and nx.kind == "word" and PHONETIC[nx.text] == nil
   end }
-  -- "write 'trial 4 start' into the log", "put 'baseline done' in the log": quoted text for the log
-  rule { "write put add enter", "echo", when = function(g, i)
-    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log")
+  -- "write 'trial 4 start' into the log", "put 'baseline done' in the log", "put 'Run 3 start' on the
+  -- screen": quoted text for the log or the screen
+  rule { "write put add enter show display", "echo", when = function(g, i)
+    return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log screen scope")
   end }
 
   -- conflict detection and resolution

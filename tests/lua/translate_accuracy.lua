@@ -61,7 +61,7 @@ floors("tests/data/translate_round3.tsv", 0.97, 0.0037, true)
 floors("tests/data/translate_round4.tsv", 0.982, 0.0, true)
 floors("tests/data/translate_round5.tsv", 0.969, 0.0, true)
 floors("tests/data/translate_round6.tsv", 0.996, 0.0, true)
-floors("tests/data/translate_round7.tsv", 0.982, 0.0036, true)
+floors("tests/data/translate_round7.tsv", 0.985, 0.0036, true)
 floors("tests/data/translate_round8.tsv", 0.965, 0.0, true)
 floors("tests/data/translate_round9.tsv", 0.97, 0.0075, true)
 floors("tests/data/translate_round10.tsv", 0.96, 0.0034, true)
@@ -122,6 +122,7 @@ floors("tests/data/translate_round64.tsv", 0.945, 0.0037, true)
 floors("tests/data/translate_round65.tsv", 0.989, 0.0, true)
 floors("tests/data/translate_round66.tsv", 0.978, 0.0036, true)
 floors("tests/data/translate_round67.tsv", 0.981, 0.0, true)
+floors("tests/data/translate_round68.tsv", 0.956, 0.0, true)
 floors("tests/data/translate_heldout.tsv", 0.95, 0.01)
 floors("tests/data/translate_fresh.tsv", 0.95, 0.01)
 floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
@@ -131,7 +132,7 @@ floors("../shared/corpora/nl2trafscript_dev.tsv", 0.98, 0.01)
 -- known name too (lexicon.waypoint_confirm: 25 rows); these rows score as asked (a navaid said by
 -- its navdata name won 5 back); a word the recogniser garbled ("December eighteen five thousand",
 -- "Fighting two seven zero") is asked about by name (lexicon.accounted: 66 rows)
-floors("../shared/corpora/vice_trafscript.tsv", 0.571, 0.0044)
+floors("../shared/corpora/vice_trafscript.tsv", 0.573, 0.0044)
 
 -- squawk.translate.evaluate is eval-translate's scorer: a translator that always asks is right
 -- exactly on the rows that expect a question, never wrong; one that issues a command where a

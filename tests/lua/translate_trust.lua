@@ -5242,3 +5242,145 @@ do
   check_eq(ex("malaysian five two reduce speed two zero knots"), "SPD MAS52 240")
   check_eq(ex("malaysian five two reduce speed too two two zero knots"), "SPD MAS52 220")
 end
+
+-- Cycle 33 (R68): a speed's level after "above" or "below" ("Mach .80 above FL310", "speed 240 below FL90") is
+-- the level the speed waits for (ATALT), never a level to fly; "not below" is no such condition and is asked
+do
+  local _, ex = scene({ "CRE IBE33 A321 40.0 -3.0 045 FL250 290" })
+  check_eq(ex("IBE33 Mach .80 above FL310"), "ATALT IBE33 FL310 SPD IBE33 M0.8")
+  check_eq(ex("IBE33 speed 240 below FL90"), "ATALT IBE33 FL90 SPD IBE33 240")
+  check_eq(ex("IBE33 220 kt below FL120, thanks"), "ATALT IBE33 FL120 SPD IBE33 220")
+  check_eq(ex("IBE33 climb FL330 and Mach .80 above FL310"), "ALT IBE33 FL330 ; ATALT IBE33 FL310 SPD IBE33 M0.8")
+  asked(ex("IBE33 speed 260 not below FL110"), "a limit, no condition")
+  asked(ex("IBE33 below FL110"), "no verb, no speed")
+  -- (two speeds, the level holding only the second: asked, never the level flown nor the condition on both)
+  asked(ex("IBE33 speed 280 kt, Mach .79 above FL290"), "two speeds, one level")
+end
+
+-- Cycle 33 (R68): a distance from a place opening a clause after the instruction's value ("descend FL90 and
+-- from 12 NM before GOLFA 200 kt") holds the value after it alone, not the instruction before
+do
+  local _, ex = scene({ "CRE BEE7Q DH8D 50.0 -4.0 090 FL140 240", "DEFWPT GOLFA 50.1 -3.0" })
+  check_eq(ex("BEE7Q descend FL90 and from 12 NM before GOLFA 200 kt"),
+    "ALT BEE7Q FL90 ; ATDIST BEE7Q GOLFA 12 SPD BEE7Q 200")
+  check_eq(ex("BEE7Q descend FL90, at 15 NM from GOLFA 210 kt"), "ALT BEE7Q FL90 ; ATDIST BEE7Q GOLFA 15 SPD BEE7Q 210")
+  check_eq(ex("BEE7Q 20 NM before GOLFA descend FL90"), "ATDIST BEE7Q GOLFA 20 ALT BEE7Q FL90")
+end
+
+-- Cycle 33 (R68): "climb 4000 ft" or more in feet below the aircraft is a cleared altitude on the wrong side,
+-- asked, never a climb by that much; a small step ("climb 2000 ft") and "up 4000" stay steps
+do
+  local _, ex = scene({ "CRE VLG3C A320 41.0 2.0 300 FL80 230" })
+  asked(ex("VLG3C climb 5000 ft"), "a level below, said after climb")
+  asked(ex("VLG3C climb 4000 ft"), "a level below, said after climb")
+  check_eq(ex("VLG3C climb 2000 ft"), "ALT VLG3C 10000")
+  check_eq(ex("VLG3C climb by 5000 ft"), "ALT VLG3C 13000")
+end
+
+-- Cycle 33 (R68): a creation "ready for departure" or "ready for take-off" is on the ground (altitude 0, speed
+-- 0), as "on the ground" is; with a level said too, asked
+do
+  local _, ex = scene({})
+  check_eq(ex("create BEL4Q A319 at 50.9 4.5 heading 250 ready for departure"), "CRE BEL4Q A319 50.9 4.5 250 0 0")
+  check_eq(ex("create BEL4Q A319 at 50.9 4.5 heading 250, ready for take off"), "CRE BEL4Q A319 50.9 4.5 250 0 0")
+  asked(ex("create BEL4Q A319 at 50.9 4.5 heading 250 ready for departure FL90"), "ground and a level")
+end
+
+-- Cycle 33 (R68): flight-deck words: "engage"/"disengage" switch a navigation mode on/off ("engage LNAV",
+-- "VNAV disengaged"); a selector named after the value's name ("HDG SEL 270", "SPD SEL 240") is that value;
+-- "V/S +1800" is a climb of 1800 ft/min; "engage" with no mode named is still asked
+do
+  local _, ex = scene({ "CRE SAS5N A20N 59.0 17.0 200 FL240 280" })
+  check_eq(ex("SAS5N engage LNAV"), "LNAV SAS5N ON")
+  check_eq(ex("SAS5N VNAV disengaged"), "VNAV SAS5N OFF")
+  check_eq(ex("SAS5N disengage LNAV and HDG SEL 230"), "LNAV SAS5N OFF ; HDG SAS5N 230")
+  check_eq(ex("SAS5N SPD SEL 240 and ALT SEL FL200"), "SPD SAS5N 240 ; ALT SAS5N FL200")
+  check_eq(ex("SAS5N V/S +1800"), "VS SAS5N 1800")
+  check_eq(ex("SAS5N V/S -1200"), "VS SAS5N -1200")
+  asked(ex("SAS5N engage"), "no mode named")
+end
+
+-- Cycle 33 (R68): the held value named by "once you have it" ("slow to 240 kt and once you have it V/S -1500":
+-- ATSPD), and a speed with "when passing" and a level after it inside a level clearance ("climb FL190, Mach
+-- .75 when passing FL170": ATALT); "once you have it" with nothing before it is still asked
+do
+  local _, ex = scene({ "CRE DLH9P A320 50.0 8.0 090 FL150 290" })
+  check_eq(ex("DLH9P slow to 240 kt and once you have it V/S -1500"), "SPD DLH9P 240 ; ATSPD DLH9P 240 VS DLH9P -1500")
+  check_eq(ex("DLH9P climb FL190, Mach .75 when passing FL170"), "ALT DLH9P FL190 ; ATALT DLH9P FL170 SPD DLH9P M0.75")
+  asked(ex("DLH9P once you have it descend FL100"), "nothing held before it")
+end
+
+-- Cycle 33 (R68): sim control in pilot terms: "sim speed half" / "sim speed 3" is the clock's rate; "for
+-- debrief" names the session's step (a purpose); the FMS's "FPLN" and "the route page" show the route
+do
+  local _, ex = scene({ "CRE AFR9T A321 45.0 5.0 090 FL300 280" })
+  check_eq(ex("sim speed half"), "DTMULT 0.5")
+  check_eq(ex("sim speed 3"), "DTMULT 3")
+  check_eq(ex("pause the sim for debriefing"), "HOLD")
+  check_eq(ex("AFR9T show me the FPLN"), "LISTRTE AFR9T")
+  check_eq(ex("AFR9T give me the route page"), "LISTRTE AFR9T")
+  asked(ex("AFR9T give me the page"), "no page named")
+end
+
+-- Cycle 33 (R68): a role's "note:" before the request ("pseudo-pilot note: ...") is a speaker's label, no
+-- ECHO ("note: ..." alone stays a note); a vertical rate's bound typed before its value ("RoD max 1800") is
+-- that rate
+do
+  local _, ex = scene({ "CRE TVS2K B738 49.0 14.0 300 FL200 270" })
+  check_eq(ex("pseudo-pilot note: TVS2K climb FL240"), "ALT TVS2K FL240")
+  check_eq(ex("note: TVS2K is slow today"), "ECHO TVS2K is slow today")
+  check_eq(ex("TVS2K RoD max 1800"), "VS TVS2K -1800")
+  check_eq(ex("TVS2K RoC min 700"), "VS TVS2K 700")
+  asked(ex("TVS2K RoD max"), "no rate said")
+end
+
+-- Cycle 33 (R68): "overhead" names the place of a wind as "over" does; "at sim time 00:05:00" is the clock's
+-- time a command is scheduled for; "sim time 00:05:00" with no "at" is still asked
+do
+  local _, ex = scene({ "DEFWPT WINDY 50.9 4.5" })
+  check_eq(ex("what's the wind at FL120 overhead WINDY?"), "GETWIND WINDY FL120")
+  check_eq(ex("at sim time 00:05:00 freeze"), "SCHEDULE 00:05:00 HOLD")
+  asked(ex("sim time 00:05:00 freeze"), "no 'at' before the time")
+end
+
+-- Cycle 33 (R68): quoted text put "on the screen" is an ECHO, as for the log; the French "monte" before a
+-- level is a climb ("monte FL150"), "monte" alone still asked
+do
+  local _, ex = scene({ "CRE AFR3Z A320 44.0 1.0 090 FL100 250" })
+  check_eq(ex("put 'Block B start' on the screen"), "ECHO Block B start")
+  check_eq(ex("AFR3Z monte FL140 merci"), "ALT AFR3Z FL140")
+  asked(ex("AFR3Z monte"), "no level said")
+end
+
+-- Cycle 33 (R68): "vector to X" after a heading tells the pilot where the vector leads: the heading is flown,
+-- no direct-to; said alone it sends nothing
+do
+  local vsim, ex = scene({ "CRE SAS7V CRJ9 55.0 12.0 020 FL130 270", "DEFWPT VECTA 55.5 12.5" })
+  check_eq(ex("SAS7V turn left heading 350, vector to VECTA"), "HDG SAS7V 350 LEFT")
+  local r = graph.translate("SAS7V vector to VECTA", { sim = vsim, mode = "offline" })
+  check(#(r.commands or {}) == 0, "a vector alone sends nothing")
+end
+
+-- Cycle 33 (R68): a waypoint added "at the end" (of the route, where ADDWPT puts it) is an ADDWPT; "at the
+-- start" is still asked
+do
+  local _, ex = scene({ "CRE CFG2E A321 53.0 9.0 200 FL300 280", "DEFWPT ENDPT 52.0 8.0" })
+  check_eq(ex("CFG2E add ENDPT at the end"), "ADDWPT CFG2E ENDPT")
+  asked(ex("CFG2E add ENDPT at the start"), "not the end of the route")
+end
+
+-- Cycle 33 (R68): "direct" closing the clause after "to" and a place ("to DIRPT direct") flies direct to that
+-- place, the word itself no place's name heard
+do
+  local _, ex = scene({ "CRE EZY4D A320 52.0 4.6 180 FL190 290", "DEFWPT DIRPT 51.5 4.6" })
+  check_eq(ex("EZY4D to DIRPT direct"), "ADDWPT EZY4D DIRPT ; DIRECT EZY4D DIRPT")
+  asked(ex("EZY4D to direct"), "no place said")
+end
+
+-- Cycle 33 (R68): a flight path angle ("FPA -3") is not simulated: its value is accounted for and the rest of
+-- the request runs; "FPA" with no value is asked about
+do
+  local _, ex = scene({ "CRE HOP3F E145 47.0 2.0 270 FL60 220" })
+  check_eq(ex("HOP3F FPA -3 and speed 170"), "SPD HOP3F 170")
+  asked(ex("HOP3F FPA and speed 170"), "no angle said")
+end
