@@ -2895,6 +2895,20 @@ function G:at_waypoint(s, spec)
           spd = q
         else other = true end
       end
+      -- "cross DIK at FL110, speed 250 knots": a speed said with no verb after the crossing's level and a comma
+      -- (or "and") is the crossing's or one for now: asked, never flown at once
+      local j = s.e
+      while self.t[j] and (self.t[j].filler or self:word(j, "and") or (self.t[j].kind == "punct" and self.t[j].text == ",")) do
+        j = j + 1
+      end
+      local comma = j > s.e or (self.t[s.e - 1] and (self.t[s.e - 1].text == "," or self:word(s.e - 1, "and")))
+      local next_spd = self:word(j, "speed") and self:quantities(j, #self.t + 1)[1]
+      if crossed and in_route and alt and not spd and comma and next_spd and (next_spd.kind == "speed"
+          or next_spd.kind == "plain") and next_spd.b == self:skip_fillers(j + 1) then
+        return self:need(string.format("Is '%s' to be met at %s with the level, or flown now? Please say "
+          .. "\"cross %s at %s and %s knots\" or give the speed on its own.", self:raw(j, next_spd.e), r.name, r.name,
+          f.alt(alt.value, alt.fl), f.int(next_spd.value)))
+      end
       if in_route and not other and (alt or spd) then
         -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
         -- or below FL150"): its command first, from the words before the crossing. A level to be reached by
@@ -3973,6 +3987,14 @@ function G:said_last(i, near)
   return k > #self.t
 end
 
+-- True when the word before token i is one of `subjects` ("already", "has", "had", "was", "were", "just" and
+-- fillers between them skipped: "the student has just cleared").
+function G:said_after_subject(i, subjects)
+  local k = i - 1
+  while k >= 1 and (self.t[k].filler or self:word(k, "already has had was were just")) do k = k - 1 end
+  return self:word(k, subjects)
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -3992,6 +4014,7 @@ function G:not_simulated()
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil))
+            and (not c.subject or self:said_after_subject(i, c.subject))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
           class = c
           break
@@ -3999,9 +4022,10 @@ function G:not_simulated()
       end
     end
     if class then
-      local e = i + 1
+      local e, comma = i + 1, false
       while e <= #self.t do
         local x = self.t[e]
+        comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
         if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
           break
@@ -4014,8 +4038,10 @@ function G:not_simulated()
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
+        -- (a class with `clause` goes on through instruction words up to its first comma: "expect to resume own
+        -- navigation to MNR" announces all of it)
         if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right")
-            and not (class.through and self:word(e, class.through)) then
+            and not (class.through and self:word(e, class.through)) and not (class.clause and not comma) then
           break
         end
         e = e + 1

@@ -612,7 +612,9 @@ return {
   -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
   -- while, so an instruction after "then" waits for it and is asked about, never sent now; `one_value`:
   -- the phrase ends at its first number ("QNH 1021, 180 knots": the speed is an instruction); `and_near`:
-  -- { words, n }, one of these within n words after the `near` word too
+  -- { words, n }, one of these within n words after the `near` word too; `clause`: the phrase goes on
+  -- through instruction words up to its first comma (all of "expect to resume own navigation to X" is announced);
+  -- `subject`: the phrase is one only straight after one of these words
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -690,9 +692,16 @@ return {
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
       after_instruction = true, to_end = true },
+    -- "the student cleared him direct LUX", "he was already cleared to FL100": what someone did, told in the
+    -- past tense after a person, is a report, no instruction (`subject`: the word before the verb, "already",
+    -- "has", "had", "was", "were" and "just" between them)
+    { what = "reports of what was done", words = "cleared gave vectored turned instructed",
+      subject = "student trainee controller instructor he she they i we someone somebody colleague",
+      clause = true },
     -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the
-    -- pilot's planning, no clearance (lexicon.not_a_clearance)
-    { what = "expected clearances", words = "expect expecting" },
+    -- pilot's planning, no clearance (lexicon.not_a_clearance), up to the end of its clause ("expect to resume
+    -- own navigation to MNR shortly")
+    { what = "expected clearances", words = "expect expecting", clause = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits

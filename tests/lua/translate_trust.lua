@@ -5384,3 +5384,46 @@ do
   check_eq(ex("HOP3F FPA -3 and speed 170"), "SPD HOP3F 170")
   asked(ex("HOP3F FPA and speed 170"), "no angle said")
 end
+
+-- Cycle 34 (R69): an "expect" clause announces all of its instruction words, up to its first comma ("expect to
+-- resume own navigation to X" sends no direct-to); an instruction after the comma is still given
+do
+  local _, ex = scene({ "CRE SXS5E B738 40.0 30.0 090 FL210 280", "DEFWPT EXPTA 40.5 31.0",
+    "ADDWPT SXS5E EXPTA" })
+  check_eq(ex("SXS5E descend flight level 150, expect to resume own navigation to EXPTA in a few minutes"),
+    "ALT SXS5E FL150")
+  check_eq(ex("SXS5E expect to be given direct EXPTA later, turn right heading 120"), "HDG SXS5E 120 RIGHT")
+end
+
+-- Cycle 34 (R69): what a person did, said in the past tense ("the trainee cleared him direct X"), is a report,
+-- no instruction; "cleared" after the callsign is still the clearance
+do
+  local _, ex = scene({ "CRE AEE7N A320 38.0 23.0 180 FL250 290", "DEFWPT NARRA 37.5 23.2",
+    "DEFWPT NARRB 37.0 23.4", "ADDWPT AEE7N NARRA", "ADDWPT AEE7N NARRB" })
+  check_eq(ex("remove NARRA from the route of AEE7N, the trainee already cleared him direct NARRB"),
+    "DELWPT AEE7N NARRA")
+  check_eq(ex("AEE7N cleared direct NARRB"), "DIRECT AEE7N NARRB")
+end
+
+-- Cycle 34 (R69): a speed said with no verb after a crossing's level and a comma or "and" ("cross X at FL110,
+-- speed 250 knots") is the crossing's or one for now: asked; "and 250 knots" in the crossing is its own
+do
+  local _, ex = scene({ "CRE TAP3X A320 39.0 -8.0 000 FL250 290", "DEFWPT CROSA 40.0 -8.0",
+    "ADDWPT TAP3X CROSA" })
+  asked(ex("TAP3X cross CROSA at flight level 120, speed 240 knots"), "the speed's place not said")
+  asked(ex("TAP3X cross CROSA at flight level 120 and speed 240 knots"), "the speed's place not said")
+  check_eq(ex("TAP3X cross CROSA at flight level 120 and 240 knots"),
+    "AT TAP3X CROSA ALT FL120 ; AT TAP3X CROSA SPD 240")
+  check_eq(ex("TAP3X cross CROSA at flight level 120, reduce speed 240 knots"),
+    "AT TAP3X CROSA ALT FL120 ; SPD TAP3X 240")
+end
+
+-- Cycle 34 (R69): "speed up the simulation" with no rate and no duration is asked (DTMULT by how much, or FF
+-- for how long?); with either it is that command, and "fast forward" alone is fast time with no end
+do
+  local _, ex = scene({})
+  asked(ex("Could you speed the simulation up a little?"), "no rate nor duration")
+  check_eq(ex("speed the simulation up by a factor of three"), "DTMULT 3")
+  check_eq(ex("speed up the simulation for ten minutes"), "FF 600")
+  check_eq(ex("fast forward"), "FF")
+end
