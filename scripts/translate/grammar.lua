@@ -634,12 +634,13 @@ end
 -- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...").
 -- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
 -- follows ("sim op pause the simulation"); said alone it is the line. A role's "note:" ("pseudo-pilot note:
--- ...") is such a label too.
+-- ...") is such a label too, and so is a note of the exercise (lexicon.note_owners: "exercise note: ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local ADDRESSED = set_of(lexicon.addressed_roles.names)
 local GREETINGS = set_of(lexicon.addressed_roles.greetings)
 local BARE_LABELS = set_of(lexicon.bare_labels)
+local NOTE_OWNERS = set_of(lexicon.note_owners)
 local function all_roles(words)
   for w in words:lower():gmatch("%a+") do
     if not SPEAKER_ROLES[w] then return false end
@@ -655,9 +656,12 @@ local function role_dropped(text)
       and all_roles((label:lower():gsub("%s+here$", ""))) then
     return rest
   end
+  -- ("instructor to sim operator: ...": one role to another before the colon)
+  local from, to, told = text:match("^%s*(%a+[%s%-]?%a*)%s+[Tt]o%s+(%a+[%s%-]?%a*)%s*:%s*(%S.*)$")
+  if from and all_roles(from) and all_roles(to) then return told end
   -- ("pseudo-pilot note: ...", "instructor notes: ...": the role's note is its line, no ECHO)
   local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
-  if noted and all_roles(noted) then return line end
+  if noted and (all_roles(noted) or NOTE_OWNERS[noted:lower()]) then return line end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")

@@ -406,6 +406,8 @@ return {
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
   label_roles = { "operator", "op", "sim", "simulator", "sup", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
                   "ai", "teammate", "assistant", "engineer" },
+  -- what a note before a colon is of, besides a role ("exercise note: freeze the simulation"): a label
+  note_owners = { "exercise", "scenario", "session", "trial", "run" },
   -- labels of two words that open a line without a colon, as speech recognition writes them ("sim op
   -- delete speedbird one one"): dropped when a request follows
   bare_labels = { "sim op", "sim operator", "simulator operator", "pseudo pilot", "sim pilot" },

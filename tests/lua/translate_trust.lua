@@ -5427,3 +5427,14 @@ do
   check_eq(ex("speed up the simulation for ten minutes"), "FF 600")
   check_eq(ex("fast forward"), "FF")
 end
+
+-- Cycle 34 (R69): simulation control said the instructor's way: the sim's speed "back to normal, real time" is
+-- DTMULT 1; "instructor to sim operator:" and "exercise note:" are labels; the exercise "interrupted" is a pause
+do
+  local _, ex = scene({})
+  check_eq(ex("put the sim speed back to real time"), "DTMULT 1")
+  check_eq(ex("Supervisor to pseudo pilot: pause the simulation"), "HOLD")
+  check_eq(ex("Scenario note: pause the simulation."), "HOLD")
+  check_eq(ex("we interrupt the exercise here"), "HOLD")
+  asked(ex("Budget note: pause the simulation."), "no role's nor exercise's note")
+end
