@@ -1888,6 +1888,10 @@ function G:segments(b, e)
           local k = self:skip_fillers(q.e)
           dist_between = dist_between or (q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
             and self:word(self:word(k, "out") and k + 1 or k, "from of to before"))
+          -- ("reduce speed 250 knots, when passing FL150 reduce speed 210 knots": likewise a level passed,
+          -- reached or left after a condition word)
+            or (q.kind == "alt" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "passing reaching leaving")
+              and self:word(q.b - 2, "@condition"))
         end
         if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between then
@@ -2401,8 +2405,9 @@ function G:parse(b, e)
       elseif unheld and not self.ask then
         self:need("I have " .. table.concat(self.out, " ; ") .. ". No level was cleared before '"
           .. self:raw(reached_cut, s0.e) .. "': which level should the last instruction wait for?")
+      -- (an instruction with a condition of its own, "when passing FL150 reduce 210", waits for that one only)
       elseif (self:then_after(segs, k) or self:when_reached(s) or reached_cut) and before and #self.out == n_before + 1
-          and spec
+          and spec and not at
           and ((spec.value and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD"))
             -- ("climb FL090, on reaching resume own navigation", "when level direct LOREL": a switch of
             -- navigation or a direct-to waits for the value reached as a speed does)

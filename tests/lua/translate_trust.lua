@@ -5438,3 +5438,13 @@ do
   check_eq(ex("we interrupt the exercise here"), "HOLD")
   asked(ex("Budget note: pause the simulation."), "no role's nor exercise's note")
 end
+
+-- Cycle 34 (R69): a speed instruction and, after it, one that waits for a level passed ("reduce speed 250 knots,
+-- when passing FL150 reduce speed 210 knots") are two instructions, the second waiting for that level only; a
+-- correction between two speeds still keeps the last
+do
+  local _, ex = scene({ "CRE SWR4P A320 47.0 8.0 270 FL220 290" })
+  check_eq(ex("SWR4P descend FL120, speed 260 knots, when passing FL160 reduce speed 230 knots"),
+    "ALT SWR4P FL120 ; SPD SWR4P 260 ; ATALT SWR4P FL160 SPD SWR4P 230")
+  check_eq(ex("SWR4P speed 260 knots, correction, speed 240 knots"), "SPD SWR4P 240")
+end
