@@ -3977,7 +3977,7 @@ end
 -- stop or question mark after it at most); with no place, when the words after it do, each a number, a
 -- unit of distance or one of `near` ("reduce 160 knots until 4 DME", "until established"; a comma only where
 -- `near` holds ",": "until established, cleared ILS runway 10").
-function G:said_last(i, near)
+function G:said_last(i, near, own_clause)
   local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
   local k
   if r then
@@ -3991,6 +3991,12 @@ function G:said_last(i, near)
     end
   else
     return false
+  end
+  -- (`own_clause`: "reduce 160 until 5 miles final, descend to 3000 feet": a clause after a comma, opened by
+  -- an imperative verb of lexicon.clause_verbs, is an instruction of its own and waits for no limit)
+  local j = self.t[k] and self.t[k].text == "," and self:skip_fillers(k + 1) or k
+  if own_clause and (j > k or (self.t[k - 1] and self.t[k - 1].text == ",")) and self:word(j, "@clause_verbs") and self:intent_at(j) then
+    return true
   end
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   return k > #self.t
@@ -4022,7 +4028,7 @@ function G:not_simulated()
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
-            and (not c.last or self:said_last(i, c.last ~= true and c.last or nil))
+            and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
             and (not c.subject or self:said_after_subject(i, c.subject))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
           class = c
@@ -4078,7 +4084,7 @@ function G:not_simulated()
       for k = i, e - 1 do self.noted[k] = true end
       if not seen[class.what] then
         seen[class.what] = true
-        found[#found + 1] = string.format("%s ('%s')", class.what, (said:gsub(" ([,.;:])", "%1")))
+        found[#found + 1] = string.format("%s ('%s')", class.what, (said:gsub(" ([,.;:])", "%1"):gsub(",$", "")))
       end
       i = e
     else

@@ -616,7 +616,8 @@ return {
   -- the phrase ends at its first number ("QNH 1021, 180 knots": the speed is an instruction); `and_near`:
   -- { words, n }, one of these within n words after the `near` word too; `clause`: the phrase goes on
   -- through instruction words up to its first comma (all of "expect to resume own navigation to X" is announced);
-  -- `subject`: the phrase is one only straight after one of these words
+  -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
+  -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -640,7 +641,7 @@ return {
     -- "keep speed 280 until VAKNO", "maintain FL200 till DETAK": the value is flown now, its end at the
     -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
-      last = true },
+      last = true, own_clause = true },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
     -- "until established, cleared ILS runway 10" closes with the approach clearance)
@@ -650,7 +651,7 @@ return {
     -- final approach's 3 to 6 miles, its unit said, an approach clearance after it at most (01L is "01" and
     -- "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out
     -- ("250 kts till 10 dme", a point squawk cannot place: R51) are asked
-    { what = "limits that end at a distance", words = "until till",
+    { what = "limits that end at a distance", words = "until till", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
       and_near = { { "dme", "miles", "mile", "nm" }, 2 }, after_instruction = true,
       last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "

@@ -5448,3 +5448,12 @@ do
     "ALT SWR4P FL120 ; SPD SWR4P 260 ; ATALT SWR4P FL160 SPD SWR4P 230")
   check_eq(ex("SWR4P speed 260 knots, correction, speed 240 knots"), "SPD SWR4P 240")
 end
+
+-- Cycle 34 (R69): a limit that ends at a place or a distance ("until 5 miles final") may be
+-- followed by a clause of its own opened by an imperative verb after a comma: that instruction is given; after
+-- "then" it waits for the limit's end, still asked
+do
+  local _, ex = scene({ "CRE AUA9L A320 48.0 16.0 290 FL90 240" })
+  check_eq(ex("AUA9L speed 170 knots until 4 miles final, descend to 3000 feet"), "SPD AUA9L 170 ; ALT AUA9L 3000")
+  asked(ex("AUA9L speed 170 knots until 4 miles final, then descend to 3000 feet"), "waits for the limit's end")
+end
