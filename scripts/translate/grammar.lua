@@ -634,12 +634,13 @@ end
 -- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...").
 -- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
 -- follows ("sim op pause the simulation"); said alone it is the line. A role's "note:" ("pseudo-pilot note:
--- ...") is such a label too.
+-- ...") is such a label too, and so is a note of the exercise (lexicon.note_owners: "exercise note: ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local ADDRESSED = set_of(lexicon.addressed_roles.names)
 local GREETINGS = set_of(lexicon.addressed_roles.greetings)
 local BARE_LABELS = set_of(lexicon.bare_labels)
+local NOTE_OWNERS = set_of(lexicon.note_owners)
 local function all_roles(words)
   for w in words:lower():gmatch("%a+") do
     if not SPEAKER_ROLES[w] then return false end
@@ -655,9 +656,12 @@ local function role_dropped(text)
       and all_roles((label:lower():gsub("%s+here$", ""))) then
     return rest
   end
+  -- ("instructor to sim operator: ...": one role to another before the colon)
+  local from, to, told = text:match("^%s*(%a+[%s%-]?%a*)%s+[Tt]o%s+(%a+[%s%-]?%a*)%s*:%s*(%S.*)$")
+  if from and all_roles(from) and all_roles(to) then return told end
   -- ("pseudo-pilot note: ...", "instructor notes: ...": the role's note is its line, no ECHO)
   local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
-  if noted and all_roles(noted) then return line end
+  if noted and (all_roles(noted) or NOTE_OWNERS[noted:lower()]) then return line end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
@@ -1884,6 +1888,10 @@ function G:segments(b, e)
           local k = self:skip_fillers(q.e)
           dist_between = dist_between or (q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
             and self:word(self:word(k, "out") and k + 1 or k, "from of to before"))
+          -- ("reduce speed 250 knots, when passing FL150 reduce speed 210 knots": likewise a level passed,
+          -- reached or left after a condition word)
+            or (q.kind == "alt" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "passing reaching leaving")
+              and self:word(q.b - 2, "@condition"))
         end
         if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between then
@@ -2397,8 +2405,9 @@ function G:parse(b, e)
       elseif unheld and not self.ask then
         self:need("I have " .. table.concat(self.out, " ; ") .. ". No level was cleared before '"
           .. self:raw(reached_cut, s0.e) .. "': which level should the last instruction wait for?")
+      -- (an instruction with a condition of its own, "when passing FL150 reduce 210", waits for that one only)
       elseif (self:then_after(segs, k) or self:when_reached(s) or reached_cut) and before and #self.out == n_before + 1
-          and spec
+          and spec and not at
           and ((spec.value and (self.out[#self.out]:upper():sub(1, 4) == "SPD ") ~= (before:sub(1, 5) == "ATSPD"))
             -- ("climb FL090, on reaching resume own navigation", "when level direct LOREL": a switch of
             -- navigation or a direct-to waits for the value reached as a speed does)
@@ -2894,6 +2903,20 @@ function G:at_waypoint(s, spec)
             or (q.kind == "plain" and alt and self:skip_fillers(alt.e) == q.b and q.value >= 100 and q.value <= 400)) then
           spd = q
         else other = true end
+      end
+      -- "cross DIK at FL110, speed 250 knots": a speed said with no verb after the crossing's level and a comma
+      -- (or "and") is the crossing's or one for now: asked, never flown at once
+      local j = s.e
+      while self.t[j] and (self.t[j].filler or self:word(j, "and") or (self.t[j].kind == "punct" and self.t[j].text == ",")) do
+        j = j + 1
+      end
+      local comma = j > s.e or (self.t[s.e - 1] and (self.t[s.e - 1].text == "," or self:word(s.e - 1, "and")))
+      local next_spd = self:word(j, "speed") and self:quantities(j, #self.t + 1)[1]
+      if crossed and in_route and alt and not spd and comma and next_spd and (next_spd.kind == "speed"
+          or next_spd.kind == "plain") and next_spd.b == self:skip_fillers(j + 1) then
+        return self:need(string.format("Is '%s' to be met at %s with the level, or flown now? Please say "
+          .. "\"cross %s at %s and %s knots\" or give the speed on its own.", self:raw(j, next_spd.e), r.name, r.name,
+          f.alt(alt.value, alt.fl), f.int(next_spd.value)))
       end
       if in_route and not other and (alt or spd) then
         -- an instruction with its own value said before the crossing ("descend to FL120, cross DESDI at
@@ -3954,7 +3977,7 @@ end
 -- stop or question mark after it at most); with no place, when the words after it do, each a number, a
 -- unit of distance or one of `near` ("reduce 160 knots until 4 DME", "until established"; a comma only where
 -- `near` holds ",": "until established, cleared ILS runway 10").
-function G:said_last(i, near)
+function G:said_last(i, near, own_clause)
   local r = self:refs_in(i + 1, math.min(#self.t + 1, i + 4), "waypoint")[1]
   local k
   if r then
@@ -3969,8 +3992,22 @@ function G:said_last(i, near)
   else
     return false
   end
+  -- (`own_clause`: "reduce 160 until 5 miles final, descend to 3000 feet": a clause after a comma, opened by
+  -- an imperative verb of lexicon.clause_verbs, is an instruction of its own and waits for no limit)
+  local j = self.t[k] and self.t[k].text == "," and self:skip_fillers(k + 1) or k
+  if own_clause and (j > k or (self.t[k - 1] and self.t[k - 1].text == ",")) and self:word(j, "@clause_verbs") and self:intent_at(j) then
+    return true
+  end
   while self.t[k] and self.t[k].kind == "punct" and self.t[k].text ~= "," do k = k + 1 end
   return k > #self.t
+end
+
+-- True when the word before token i is one of `subjects` ("already", "has", "had", "was", "were", "just" and
+-- fillers between them skipped: "the student has just cleared").
+function G:said_after_subject(i, subjects)
+  local k = i - 1
+  while k >= 1 and (self.t[k].filler or self:word(k, "already has had was were just")) do k = k - 1 end
+  return self:word(k, subjects)
 end
 
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
@@ -3991,7 +4028,8 @@ function G:not_simulated()
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
-            and (not c.last or self:said_last(i, c.last ~= true and c.last or nil))
+            and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
+            and (not c.subject or self:said_after_subject(i, c.subject))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
           class = c
           break
@@ -3999,9 +4037,10 @@ function G:not_simulated()
       end
     end
     if class then
-      local e = i + 1
+      local e, comma = i + 1, false
       while e <= #self.t do
         local x = self.t[e]
+        comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
         if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
           break
@@ -4014,8 +4053,10 @@ function G:not_simulated()
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
+        -- (a class with `clause` goes on through instruction words up to its first comma: "expect to resume own
+        -- navigation to MNR" announces all of it)
         if not class.to_end and self:intent_at(e) and not self:word(e, "approach cleared hold holding contact left right")
-            and not (class.through and self:word(e, class.through)) then
+            and not (class.through and self:word(e, class.through)) and not (class.clause and not comma) then
           break
         end
         e = e + 1
@@ -4043,7 +4084,7 @@ function G:not_simulated()
       for k = i, e - 1 do self.noted[k] = true end
       if not seen[class.what] then
         seen[class.what] = true
-        found[#found + 1] = string.format("%s ('%s')", class.what, (said:gsub(" ([,.;:])", "%1")))
+        found[#found + 1] = string.format("%s ('%s')", class.what, (said:gsub(" ([,.;:])", "%1"):gsub(",$", "")))
       end
       i = e
     else

@@ -2600,6 +2600,12 @@ return function(H, f, compass)
         end
       end
       self:explain(till, till + 1)
+      -- "speed up the simulation", "can you speed this simulation up?": faster, by no rate and for no time
+      -- said, is either a rate (DTMULT) or fast time for a while (FF): asked
+      if self:word(s.trig, "speed spd airspeed") and till >= s.e then
+        return self:need("How should the simulation speed up: at a multiple of real time (DTMULT, by how much?) "
+          .. "or in fast time for a while (FF, for how long)?")
+      end
       for i = s.trig + 1, till - 1 do
         local t = self.t[i]
         if t.kind ~= "punct" and not t.filler and not self:word(i, "@sim forward ahead up please this it things the fast") then

@@ -406,6 +406,8 @@ return {
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
   label_roles = { "operator", "op", "sim", "simulator", "sup", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
                   "ai", "teammate", "assistant", "engineer" },
+  -- what a note before a colon is of, besides a role ("exercise note: freeze the simulation"): a label
+  note_owners = { "exercise", "scenario", "session", "trial", "run" },
   -- labels of two words that open a line without a colon, as speech recognition writes them ("sim op
   -- delete speedbird one one"): dropped when a request follows
   bare_labels = { "sim op", "sim operator", "simulator operator", "pseudo pilot", "sim pilot" },
@@ -612,7 +614,10 @@ return {
   -- of its clause; it is named in the reply, never translated. `takes_time`: a manoeuvre flown for a
   -- while, so an instruction after "then" waits for it and is asked about, never sent now; `one_value`:
   -- the phrase ends at its first number ("QNH 1021, 180 knots": the speed is an instruction); `and_near`:
-  -- { words, n }, one of these within n words after the `near` word too
+  -- { words, n }, one of these within n words after the `near` word too; `clause`: the phrase goes on
+  -- through instruction words up to its first comma (all of "expect to resume own navigation to X" is announced);
+  -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
+  -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -636,7 +641,7 @@ return {
     -- "keep speed 280 until VAKNO", "maintain FL200 till DETAK": the value is flown now, its end at the
     -- place is not kept; said last only (anything after it, "then contact tower", waits for it: asked)
     { what = "limits that end at a place", words = "until till", near = { "#waypoint" }, after_instruction = true,
-      last = true },
+      last = true, own_clause = true },
     -- "maintain 8000 until established", "till established on the localizer": the same limit ending on the
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
     -- "until established, cleared ILS runway 10" closes with the approach clearance)
@@ -646,7 +651,7 @@ return {
     -- final approach's 3 to 6 miles, its unit said, an approach clearance after it at most (01L is "01" and
     -- "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out
     -- ("250 kts till 10 dme", a point squawk cannot place: R51) are asked
-    { what = "limits that end at a distance", words = "until till",
+    { what = "limits that end at a distance", words = "until till", own_clause = true,
       near = { "3", "4", "5", "6", "three", "four", "five", "six" }, window = 1,
       and_near = { { "dme", "miles", "mile", "nm" }, 2 }, after_instruction = true,
       last = "dme miles mile nm final out from touchdown threshold the , cleared for ils localizer localiser "
@@ -690,9 +695,16 @@ return {
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },
       after_instruction = true, to_end = true },
+    -- "the student cleared him direct LUX", "he was already cleared to FL100": what someone did, told in the
+    -- past tense after a person, is a report, no instruction (`subject`: the word before the verb, "already",
+    -- "has", "had", "was", "were" and "just" between them)
+    { what = "reports of what was done", words = "cleared gave vectored turned instructed",
+      subject = "student trainee controller instructor he she they i we someone somebody colleague",
+      clause = true },
     -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the
-    -- pilot's planning, no clearance (lexicon.not_a_clearance)
-    { what = "expected clearances", words = "expect expecting" },
+    -- pilot's planning, no clearance (lexicon.not_a_clearance), up to the end of its clause ("expect to resume
+    -- own navigation to MNR shortly")
+    { what = "expected clearances", words = "expect expecting", clause = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits

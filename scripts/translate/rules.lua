@@ -420,6 +420,12 @@ return function(intent, rule, words)
     local said = g:word(i + 1, "@multipliers") and i + 2 or (q and q.kind == "plain" and q.b == i + 1 and q.e)
     return said and said > #g.t and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
+  -- "set the simulation speed back to normal, real time": the clock's rate back to real time (DTMULT reads the
+  -- rate; "normal" alone is asked), never fast time
+  rule { "speed", "dtmult", when = function(g, i)
+    return g:followed_by(i, 6, "real normal") and (g:preceded_by(i, 2, "@sim") or g:followed_by(i, 3, "@sim"))
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "speed spd airspeed", "ff", near = { 3, "@sim" } }
   rule { "speed spd airspeed", "ff", next = "up", prev = { 3, "simulation sim" } }
   rule { "speed spd airspeed", "ff", prev = { 1, "simulation sim" } }
@@ -1145,6 +1151,9 @@ return function(intent, rule, words)
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "pause hold freeze pausing freezing", "hold" }
+  -- "interrupt the exercise", "the exercise will now be interrupted": a pause of the simulation said of it
+  rule { "interrupt interrupted", "hold", near = { 3, "@sim" } }
+  rule { "interrupt interrupted", "hold", prev = { 4, "@sim" } }
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }

@@ -5384,3 +5384,76 @@ do
   check_eq(ex("HOP3F FPA -3 and speed 170"), "SPD HOP3F 170")
   asked(ex("HOP3F FPA and speed 170"), "no angle said")
 end
+
+-- Cycle 34 (R69): an "expect" clause announces all of its instruction words, up to its first comma ("expect to
+-- resume own navigation to X" sends no direct-to); an instruction after the comma is still given
+do
+  local _, ex = scene({ "CRE SXS5E B738 40.0 30.0 090 FL210 280", "DEFWPT EXPTA 40.5 31.0",
+    "ADDWPT SXS5E EXPTA" })
+  check_eq(ex("SXS5E descend flight level 150, expect to resume own navigation to EXPTA in a few minutes"),
+    "ALT SXS5E FL150")
+  check_eq(ex("SXS5E expect to be given direct EXPTA later, turn right heading 120"), "HDG SXS5E 120 RIGHT")
+end
+
+-- Cycle 34 (R69): what a person did, said in the past tense ("the trainee cleared him direct X"), is a report,
+-- no instruction; "cleared" after the callsign is still the clearance
+do
+  local _, ex = scene({ "CRE AEE7N A320 38.0 23.0 180 FL250 290", "DEFWPT NARRA 37.5 23.2",
+    "DEFWPT NARRB 37.0 23.4", "ADDWPT AEE7N NARRA", "ADDWPT AEE7N NARRB" })
+  check_eq(ex("remove NARRA from the route of AEE7N, the trainee already cleared him direct NARRB"),
+    "DELWPT AEE7N NARRA")
+  check_eq(ex("AEE7N cleared direct NARRB"), "DIRECT AEE7N NARRB")
+end
+
+-- Cycle 34 (R69): a speed said with no verb after a crossing's level and a comma or "and" ("cross X at FL110,
+-- speed 250 knots") is the crossing's or one for now: asked; "and 250 knots" in the crossing is its own
+do
+  local _, ex = scene({ "CRE TAP3X A320 39.0 -8.0 000 FL250 290", "DEFWPT CROSA 40.0 -8.0",
+    "ADDWPT TAP3X CROSA" })
+  asked(ex("TAP3X cross CROSA at flight level 120, speed 240 knots"), "the speed's place not said")
+  asked(ex("TAP3X cross CROSA at flight level 120 and speed 240 knots"), "the speed's place not said")
+  check_eq(ex("TAP3X cross CROSA at flight level 120 and 240 knots"),
+    "AT TAP3X CROSA ALT FL120 ; AT TAP3X CROSA SPD 240")
+  check_eq(ex("TAP3X cross CROSA at flight level 120, reduce speed 240 knots"),
+    "AT TAP3X CROSA ALT FL120 ; SPD TAP3X 240")
+end
+
+-- Cycle 34 (R69): "speed up the simulation" with no rate and no duration is asked (DTMULT by how much, or FF
+-- for how long?); with either it is that command, and "fast forward" alone is fast time with no end
+do
+  local _, ex = scene({})
+  asked(ex("Could you speed the simulation up a little?"), "no rate nor duration")
+  check_eq(ex("speed the simulation up by a factor of three"), "DTMULT 3")
+  check_eq(ex("speed up the simulation for ten minutes"), "FF 600")
+  check_eq(ex("fast forward"), "FF")
+end
+
+-- Cycle 34 (R69): simulation control said the instructor's way: the sim's speed "back to normal, real time" is
+-- DTMULT 1; "instructor to sim operator:" and "exercise note:" are labels; the exercise "interrupted" is a pause
+do
+  local _, ex = scene({})
+  check_eq(ex("put the sim speed back to real time"), "DTMULT 1")
+  check_eq(ex("Supervisor to pseudo pilot: pause the simulation"), "HOLD")
+  check_eq(ex("Scenario note: pause the simulation."), "HOLD")
+  check_eq(ex("we interrupt the exercise here"), "HOLD")
+  asked(ex("Budget note: pause the simulation."), "no role's nor exercise's note")
+end
+
+-- Cycle 34 (R69): a speed instruction and, after it, one that waits for a level passed ("reduce speed 250 knots,
+-- when passing FL150 reduce speed 210 knots") are two instructions, the second waiting for that level only; a
+-- correction between two speeds still keeps the last
+do
+  local _, ex = scene({ "CRE SWR4P A320 47.0 8.0 270 FL220 290" })
+  check_eq(ex("SWR4P descend FL120, speed 260 knots, when passing FL160 reduce speed 230 knots"),
+    "ALT SWR4P FL120 ; SPD SWR4P 260 ; ATALT SWR4P FL160 SPD SWR4P 230")
+  check_eq(ex("SWR4P speed 260 knots, correction, speed 240 knots"), "SPD SWR4P 240")
+end
+
+-- Cycle 34 (R69): a limit that ends at a place or a distance ("until 5 miles final") may be
+-- followed by a clause of its own opened by an imperative verb after a comma: that instruction is given; after
+-- "then" it waits for the limit's end, still asked
+do
+  local _, ex = scene({ "CRE AUA9L A320 48.0 16.0 290 FL90 240" })
+  check_eq(ex("AUA9L speed 170 knots until 4 miles final, descend to 3000 feet"), "SPD AUA9L 170 ; ALT AUA9L 3000")
+  asked(ex("AUA9L speed 170 knots until 4 miles final, then descend to 3000 feet"), "waits for the limit's end")
+end
