@@ -2202,7 +2202,8 @@ return function(H, f, compass)
     if not id then return end
     local point = self:point_at(s.trig + 1, s.e, id)
     if point == false then return end
-    local wp = point or self:waypoint(s.trig, s.e, id)
+    -- ("waypoint LOTUS delete": the waypoint said before the verb, in verb-final order)
+    local wp = point or self:waypoint(s.trig, s.e, id) or (s.b < s.trig and self:waypoint(s.b, s.trig, id))
     if not wp then return self:need("Which waypoint should I remove from the route of " .. id .. "?") end
     self:emit("DELWPT " .. id .. " " .. wp)
     -- "delete DEPAX and ROLIS", "remove DEPAX, ROLIS": each further waypoint of its route listed after "and" or
@@ -2751,9 +2752,13 @@ return function(H, f, compass)
     end
     -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request after a
     -- speaker's label, the words after it as typed
+    -- (a courtesy word closing the request, "echo test start please", is said to us, not printed)
     if s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") and s.trig + 1 < s.e then
-      self:mark_used(s.trig + 1, s.e)
-      return self:emit("ECHO " .. self:raw(s.trig + 1, s.e))
+      local e = s.e
+      while e - 1 > s.trig + 1 and self:word(e - 1, "please pls thanks") do e = e - 1 end
+      self:explain(e, s.e)
+      self:mark_used(s.trig + 1, e)
+      return self:emit("ECHO " .. self:raw(s.trig + 1, e))
     end
     -- "print baseline no reso to the console": the words between the verb and where they go, as typed
     local to = self:find_word(s.trig + 1, s.e, "to on")

@@ -218,6 +218,16 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
     return q ~= nil and (q.kind == "speed" or q.kind == "mach")
   end }
+  -- "AAR731 current altitude tell me", "KAL8 speed let me know": the state asked for before the request
+  -- for it (verb-final order) is no instruction
+  rule { "altitude speed heading level position", false, when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 3) do
+      if (g:word(k, "tell") and g:word(k + 1, "me us")) or (g:word(k, "let") and g:word(k + 2, "know")) then
+        return true
+      end
+    end
+    return false
+  end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "rise to FL200", "ascend to FL200": a climb said so, with its level after it
   rule { "ascend rise", "alt", when = function(g, i)
@@ -686,6 +696,11 @@ return function(intent, rule, words)
   end }
   -- "VLG2211 route MERGE then ABRIX", "IBE3421: wpt PPG then GIROM": a route or waypoint word straight after
   -- an aircraft that flies (a colon between or none) and straight before a known place
+  -- "AAR731 waypoint LOTUS delete": the verb said after its object (verb-final order) takes the
+  -- waypoint off the route; the noun before it adds nothing
+  rule { "route rte wpt wp wpts waypoint waypoints", false, when = function(g, i)
+    return g:followed_by(i, 4, "delete remove del drop erase clear")
+  end }
   rule { "route rte wpt wp wpts waypoint waypoints", "addwpt", when = function(g, i)
     local b = (g.t[i - 1] or {}).text == ":" and i - 1 or i
     local flying = false
@@ -829,6 +844,15 @@ return function(intent, rule, words)
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
+  -- verb-final order: "APJ301 route delete all", "EVA15 route all clear" delete the whole route,
+  -- "ANA25 waypoint HYOGO remove" the waypoint named before the verb
+  rule { "clear delete remove erase del", "delrte", prev = { 2, "@route_nouns" },
+         when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
+  rule { "remove delete del drop erase", "delwpt", prev = { 3, "waypoint wpt wp" },
+         when = function(g, i) return g:has_ref(math.max(1, i - 3), i, "waypoint") end }
+  -- a verb of deletion after a noun that is no aircraft ("KAL8 altitude delete"): what is deleted is asked,
+  -- never the aircraft
+  rule { "remove delete del", "delwpt", prev = { 3, "waypoint wpt wp @route_nouns altitude speed heading level" } }
   -- "UAL9 forget ALPHA", "Qatari 1018 delete MISOD": a waypoint of the aircraft's route, said straight
   -- after the verb, left out of it
   rule { "forget delete remove del", "delwpt", when = function(g, i)
@@ -1144,10 +1168,14 @@ return function(intent, rule, words)
   rule { "hold pause", "hold", when = function(g, i) return i == 1 and g.t[2] ~= nil and g.t[2].kind == "punct" end }
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- "run again from pause", "out of pause": the pause is the state left, no new one
+  rule { "pause hold freeze", false, prev = { 2, "from of" } }
   rule { "pause hold freeze pausing freezing", "hold" }
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
+  -- "sim stop for a moment": the simulation named before its verb (verb-final order), no aircraft named
+  rule { "stop", "hold", prev = { 1, "@sim" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "stop a moment the simulation", "stop for a minute the sim": the while said before the object
   rule { "stop", "hold", when = function(g, i)
     local k = g:word(i + 1, "for") and i + 2 or i + 1
@@ -1172,6 +1200,11 @@ return function(intent, rule, words)
     return g.t[#g.t].text == "?" or k > #g.t
   end }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
+  -- "AAR731 current altitude tell me", "KAL8 speed let me know", "heading please tell": the state word said
+  -- before the request for it (verb-final order) asks for the aircraft's report, no instruction
+  rule { "tell know", "pos", prev = { 5, "altitude speed heading position level" }, when = function(g, i)
+    return g:word(i + 1, "me us") or g:word(i - 1, "please") or (g:word(i, "know") and g:word(i - 1, "me"))
+  end }
   -- "give me the position", "give me TEST01's and TEST02's positions"
   rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
