@@ -1170,6 +1170,13 @@ return function(intent, rule, words)
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "run again from pause", "out of pause": the pause is the state left, no new one
   rule { "pause hold freeze", false, prev = { 2, "from of" } }
+  -- "continue from pause", "start again out of the pause": the run resumed from the pause
+  rule { "run start continue resume go", "op", when = function(g, i)
+    local k = g:word(i + 1, "again") and i + 2 or i + 1
+    k = g:word(k, "from") and k + 1 or (g:word(k, "out") and g:word(k + 1, "of") and k + 2) or nil
+    if k and g:word(k, "the") then k = k + 1 end
+    return k ~= nil and g:word(k, "pause hold freeze") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "pause hold freeze pausing freezing", "hold" }
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
@@ -1202,8 +1209,16 @@ return function(intent, rule, words)
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
   -- "AAR731 current altitude tell me", "KAL8 speed let me know", "heading please tell": the state word said
   -- before the request for it (verb-final order) asks for the aircraft's report, no instruction
-  rule { "tell know", "pos", prev = { 5, "altitude speed heading position level" }, when = function(g, i)
-    return g:word(i + 1, "me us") or g:word(i - 1, "please") or (g:word(i, "know") and g:word(i - 1, "me"))
+  rule { "tell know", "pos", when = function(g, i)
+    local k = i - 1
+    if g:word(i, "know") then
+      if not (g:word(i - 1, "me us") and g:word(i - 2, "let")) then return false end
+      k = i - 3
+    elseif not (g:word(i + 1, "me us") or g:word(i - 1, "please")) then
+      return false
+    end
+    if g:word(k, "please") then k = k - 1 end
+    return g:word(k, "altitude speed heading position level")
   end }
   -- "give me the position", "give me TEST01's and TEST02's positions"
   rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }

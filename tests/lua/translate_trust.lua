@@ -5384,3 +5384,33 @@ do
   check_eq(ex("HOP3F FPA -3 and speed 170"), "SPD HOP3F 170")
   asked(ex("HOP3F FPA and speed 170"), "no angle said")
 end
+
+-- Cycle 34 (R70): verb-final deletion: the verb closing the clause acts on the object before it ("waypoint X
+-- delete" takes the waypoint off the route, "route clear" the route); a deletion after a noun that is no
+-- aircraft is asked, never the aircraft deleted
+do
+  local _, ex = scene({ "CRE HVN7D A321 21.0 105.8 090 FL250 280", "DEFWPT PHOWP 21.2 106.2",
+    "DEFWPT QUAWP 21.4 106.6", "ADDWPT HVN7D PHOWP", "ADDWPT HVN7D QUAWP" })
+  check_eq(ex("HVN7D waypoint QUAWP erase"), "DELWPT HVN7D QUAWP")
+  check_eq(ex("HVN7D waypoint PHOWP remove please"), "DELWPT HVN7D PHOWP")
+  check_eq(ex("HVN7D route all delete"), "DELRTE HVN7D")
+  asked(ex("HVN7D level delete"), "a level is no object of a deletion")
+end
+
+-- Cycle 34 (R70): a state word said before "tell me" / "let me know" (verb-final order) asks for the report
+do
+  local _, ex = scene({ "CRE TGW5R A320 1.3 103.9 180 FL330 290" })
+  check_eq(ex("TGW5R present speed let me know"), "POS TGW5R")
+  check_eq(ex("TGW5R heading tell me"), "POS TGW5R")
+  check_eq(ex("TGW5R climb FL350"), "ALT TGW5R FL350")
+end
+
+-- Cycle 34 (R70): the pause left ("from pause") is no new one; the simulation named before "stop" pauses it;
+-- a courtesy word closing ECHO's text is not printed
+do
+  local _, ex = scene({})
+  check_eq(ex("resume from pause"), "OP")
+  check_eq(ex("simulation stop for a second"), "HOLD")
+  check_eq(ex("echo baseline done please"), "ECHO baseline done")
+  check_eq(ex("echo please wait"), "ECHO please wait")
+end
