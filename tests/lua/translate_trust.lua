@@ -5414,3 +5414,15 @@ do
   check_eq(ex("echo baseline done please"), "ECHO baseline done")
   check_eq(ex("echo please wait"), "ECHO please wait")
 end
+
+-- Cycle 34 (R70): "speed 300 to 260 reduce", "heading 090 to 110 change": two values with "to" between, the
+-- first the aircraft's present one, give the value it leaves and the one it flies to; a first value that is
+-- not the present one is asked about
+do
+  local _, ex = scene({ "CRE CPA9V A333 22.3 114.2 270 FL310 290" })
+  check_eq(ex("CPA9V speed 290 to 250 reduce"), "SPD CPA9V 250")
+  check_eq(ex("CPA9V heading 270 to 300 change"), "HDG CPA9V 300")
+  check_eq(ex("CPA9V FL310 to FL270 descend"), "ALT CPA9V FL270")
+  asked(ex("CPA9V heading 180 to 300 change"), "180 is not its heading")
+  asked(ex("CPA9V speed 240 to 250 reduce"), "240 is not its speed")
+end
