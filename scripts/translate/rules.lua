@@ -1031,18 +1031,20 @@ return function(intent, rule, words)
   end }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route rte", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
-  -- "Copa 245 route please, show it", "KLM12 route, display": the same, a verb of showing said after the noun
-  -- (its object "it" or "me" at most) closing the request
-  rule { "route rte", "listrte", when = function(g, i)
+  -- "Copa 245 route please, show it", "KLM12 route, display", "CAL502 route list please", "KAL8 position
+  -- check": the same, a verb of showing said after the noun (verb-final order; its object "it" or "me" at
+  -- most) closing the request
+  local function shown_after(g, i)
     local k = i + 1
     while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler) do k = k + 1 end
-    if not g:word(k, "show display") then return false end
+    if not g:word(k, "show display check list") then return false end
     local e = g:word(k + 1, "it me") and k + 2 or k + 1
     for x = e, #g.t do
       if g.t[x].kind ~= "punct" and not g.t[x].filler then return false end
     end
     return g:alone_with_aircraft(i, k, e)
-  end }
+  end
+  rule { "route rte", "listrte", when = shown_after }
   -- "route of klm1234?", "route of Kenya 480 please": the request opens with the noun and asks, or
   -- names only the aircraft after it
   rule { "route", "listrte", next = "of for", when = function(g, i)
@@ -1132,6 +1134,7 @@ return function(intent, rule, words)
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
+  rule { "position", "pos", when = shown_after }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
   -- "place EZY45, A319, at 38.4 N 6.6 W heading 290", "place a Ryanair, RYR5GH, B738, over LOREL ...": a
   -- callsign no aircraft has, with its type, is created

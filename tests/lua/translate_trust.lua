@@ -5426,3 +5426,12 @@ do
   asked(ex("CPA9V heading 180 to 300 change"), "180 is not its heading")
   asked(ex("CPA9V speed 240 to 250 reduce"), "240 is not its speed")
 end
+
+-- Cycle 34 (R70): a verb of showing closing the request after the noun ("route list please", "position
+-- check") shows it; a verb followed by more words is not read so
+do
+  local _, ex = scene({ "CRE JJA4Q B738 33.5 126.5 010 FL280 280" })
+  check_eq(ex("JJA4Q route list please"), "LISTRTE JJA4Q")
+  check_eq(ex("JJA4Q position check"), "POS JJA4Q")
+  asked(ex("JJA4Q route check twice"), "words after the verb")
+end
