@@ -887,6 +887,11 @@ return function(intent, rule, words)
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
+  -- "KAL123 to ENKAS go straight": the adverb closing the clause after "go", the place said after "to"
+  rule { "straight", "direct", prev = { 1, "go" }, when = function(g, i)
+    local to = g:find_word(1, i, "to")
+    return to < i and g:has_ref(to + 1, i, "waypoint") and g:skip_fillers(i + 1) > #g.t
+  end }
   -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
   -- (the place a waypoint's code, or a navaid's name with its kind after it: "point the Iberia at the Gerona VOR")
   local function to_waypoint(g, i)

@@ -5435,3 +5435,14 @@ do
   check_eq(ex("JJA4Q position check"), "POS JJA4Q")
   asked(ex("JJA4Q route check twice"), "words after the verb")
 end
+
+-- Cycle 34 (R70): a direct-to in verb-final order: "go PLACE direct", "to PLACE direct go", "to PLACE go
+-- straight" fly direct to the place said before the word; no place said is still asked
+do
+  local _, ex = scene({ "CRE ASV3G A320 24.0 121.0 045 FL240 270", "DEFWPT NORWP 24.5 121.5",
+    "DEFWPT EASWP 24.2 122.0", "ADDWPT ASV3G NORWP", "ADDWPT ASV3G EASWP" })
+  check_eq(ex("ASV3G go EASWP direct"), "DIRECT ASV3G EASWP")
+  check_eq(ex("ASV3G to EASWP direct go"), "DIRECT ASV3G EASWP")
+  check_eq(ex("ASV3G to NORWP go straight please"), "DIRECT ASV3G NORWP")
+  asked(ex("ASV3G go straight"), "no place said")
+end
