@@ -94,6 +94,14 @@ return function(H, f, wrap, compass)
         end
       end
     end
+    -- "mach 0.84 maintain please", "FL240 keep": the value with its unit said just before the verb (verb-final
+    -- order)
+    local last = qs[#qs]
+    if last and last.b < s.trig and self:skip_fillers(last.e) == s.trig then
+      if last.kind == "speed" or last.kind == "mach" then return self:speed(s) end
+      if last.kind == "alt" then return self:altitude(s) end
+      if last.kind == "heading" then return self:heading(s) end
+    end
     if self:word_in(s.trig, s.e, "heading") then return self:heading(s) end
     -- "maintain present speed": the speed instruction that follows says it
     if #qs == 0 and self:word(s.e, "speed spd airspeed") then

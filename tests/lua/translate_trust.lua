@@ -5446,3 +5446,12 @@ do
   check_eq(ex("ASV3G to NORWP go straight please"), "DIRECT ASV3G NORWP")
   asked(ex("ASV3G go straight"), "no place said")
 end
+
+-- Cycle 34 (R70): "maintain" / "keep" said after the value with its unit (verb-final order) keeps that value;
+-- a bare number before it is still asked
+do
+  local _, ex = scene({ "CRE TTW6M A320 25.0 121.2 200 FL230 260" })
+  check_eq(ex("TTW6M mach 0.78 maintain please"), "SPD TTW6M M0.78")
+  check_eq(ex("TTW6M FL230 keep"), "ALT TTW6M FL230")
+  asked(ex("TTW6M 290 maintain"), "a number with no unit")
+end
