@@ -5455,3 +5455,12 @@ do
   check_eq(ex("TTW6M FL230 keep"), "ALT TTW6M FL230")
   asked(ex("TTW6M 290 maintain"), "a number with no unit")
 end
+
+-- Cycle 34 (R70): in a list of instructions each said verb-final ("heading 070, FL240 climb, speed 300"), the
+-- value with its unit just before a verb, after a comma closing the instruction before, is that verb's
+do
+  local _, ex = scene({ "CRE EVA3L B789 25.1 121.2 090 FL200 280" })
+  check_eq(ex("EVA3L heading 120, FL260 climb, speed 300"), "HDG EVA3L 120 ; ALT EVA3L FL260 ; SPD EVA3L 300")
+  check_eq(ex("EVA3L FL260 climb, 250 knots reduce"), "ALT EVA3L FL260 ; SPD EVA3L 250")
+  asked(ex("EVA3L heading 120, climb, speed 300"), "no level said")
+end
