@@ -1178,6 +1178,13 @@ return function(intent, rule, words)
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "run again from pause", "out of pause": the pause is the state left, no new one
   rule { "pause hold freeze", false, prev = { 2, "from of" } }
+  -- "pause release", "release the pause": the pause ended, the run resumed
+  rule { "release", "op", when = function(g, i)
+    return (g:word(i - 1, "pause") or g:word(g:word(i + 1, "the") and i + 2 or i + 1, "pause"))
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  rule { "pause", false, next = "release" }
+  rule { "pause", false, prev = { 2, "release" } }
   -- "continue from pause", "start again out of the pause": the run resumed from the pause
   rule { "run start continue resume go", "op", when = function(g, i)
     local k = g:word(i + 1, "again") and i + 2 or i + 1

@@ -5464,3 +5464,11 @@ do
   check_eq(ex("EVA3L FL260 climb, 250 knots reduce"), "ALT EVA3L FL260 ; SPD EVA3L 250")
   asked(ex("EVA3L heading 120, climb, speed 300"), "no level said")
 end
+
+-- Cycle 34 (R70): "pause release", "release the pause": the pause ended (OP), no new one
+do
+  local _, ex = scene({})
+  check_eq(ex("release the pause"), "OP")
+  check_eq(ex("pause release"), "OP")
+  check_eq(ex("pause"), "HOLD")
+end
