@@ -846,8 +846,13 @@ return function(intent, rule, words)
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
   -- verb-final order: "APJ301 route delete all", "EVA15 route all clear" delete the whole route,
   -- "ANA25 waypoint HYOGO remove" the waypoint named before the verb
-  rule { "clear delete remove erase del", "delrte", prev = { 2, "@route_nouns" },
-         when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
+  -- (the verb closes the request, "all" at most after it: "route clear of weather" is no deletion)
+  rule { "clear delete remove erase del", "delrte", when = function(g, i)
+    if not g:word(g:word(i - 1, "all") and i - 2 or i - 1, "@route_nouns") then return false end
+    local k = i + 1
+    while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "all")) do k = k + 1 end
+    return k > #g.t and not g:has_ref(1, #g.t + 1, "waypoint")
+  end }
   rule { "remove delete del drop erase", "delwpt", prev = { 3, "waypoint wpt wp" },
          when = function(g, i) return g:has_ref(math.max(1, i - 3), i, "waypoint") end }
   -- a verb of deletion after a noun that is no aircraft ("KAL8 altitude delete"): what is deleted is asked,

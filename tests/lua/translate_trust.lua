@@ -5395,6 +5395,8 @@ do
   check_eq(ex("HVN7D waypoint PHOWP remove please"), "DELWPT HVN7D PHOWP")
   check_eq(ex("HVN7D route all delete"), "DELRTE HVN7D")
   asked(ex("HVN7D level delete"), "a level is no object of a deletion")
+  asked(ex("HVN7D route is clear"), "a route described, no deletion")
+  asked(ex("HVN7D route clear of weather"), "words after the verb")
 end
 
 -- Cycle 34 (R70): a state word said before "tell me" / "let me know" (verb-final order) asks for the report
