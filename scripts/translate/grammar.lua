@@ -1812,6 +1812,8 @@ function G:addressee_between(last, i)
   return false
 end
 
+-- The kinds of value an instruction said after its value (verb-final order) takes from before its word.
+local VERB_FINAL_KINDS = { alt = { alt = true }, spd = { speed = true, mach = true }, hdg = { heading = true } }
 function G:segments(b, e)
   local trig = {}
   for i = b, e - 1 do
@@ -1917,6 +1919,20 @@ function G:segments(b, e)
         if this.cmd == "HDG" and self:word(start - 1, "@left @right") and start - 1 > last.trig then start = start - 1 end
         for _, r in ipairs(self:refs_in(last.trig + 1, start, "aircraft")) do
           if self:skip_fillers(r.e) == start then start = r.b end
+        end
+        -- "heading 070, FL240 climb, speed 300": a value with this instruction's unit said just before its word,
+        -- after a comma or "and" closing the instruction before with a value of its own, is this one's
+        -- (verb-final order; "to" before the value with it)
+        local own_kinds = VERB_FINAL_KINDS[tr.intent]
+        local qb = own_kinds and self:quantities(last.trig + 1, start) or {}
+        local q, prior = qb[#qb], qb[#qb - 1]
+        if prior and own_kinds[q.kind] and self:skip_fillers(q.e) == start then
+          local qs = self:word(q.b - 1, "to") and q.b - 1 or q.b
+          local closed = false
+          for k = prior.e, qs - 1 do
+            closed = closed or self:word(k, "and") or (self.t[k].kind == "punct" and self.t[k].text == ",")
+          end
+          if closed then start = qs end
         end
         -- "..., when passing flight level 130 reduce speed": the condition belongs to what follows it
         local cond = self:find_word(last.trig + 1, start, "@level_condition")

@@ -1272,6 +1272,20 @@ function m:level_left(q, b)
   return left and true or false
 end
 
+-- "speed 300 to 260 reduce", "heading 090 to 110 change": two values of one kind with only "to" between,
+-- the first within `tol` of the aircraft's present value `now` (degrees when `circle`): the value it leaves,
+-- then the one it flies to. True, the first value taken and explained, when so; a first value that is not
+-- the present one stays a value of its own (the leftover check asks about it).
+function m:value_left(a, b, now, tol, circle)
+  if not (a and b and now and b.b == a.e + 1 and self:word(a.e, "to")) then return false end
+  local d = a.value - now
+  if circle then d = (d + 180) % 360 - 180 end
+  if math.abs(d) > tol then return false end
+  self:take(a)
+  self:explain(a.b, b.b)
+  return true
+end
+
 -- True when value q, said before token `trig`, stands in a sentence that ends (".", "!", ":") before
 -- `trig`: "students see: both at FL150 opposite direction. LATAM 3090 turn right 30 degrees" gives no
 -- instruction the level. A level after "at" in such a sentence with no aircraft and no instruction word

@@ -1587,10 +1587,18 @@ return function(H, f, compass)
     if told then self:explain(math.max(s.b, prior.b - 2), prior.e) end
     -- ("EZY82QT to EEL direct": the word closing the clause, the place said after "to" before it; the word
     -- itself is no place's name heard)
-    local closing = self:word(s.trig, "directly direct dct")
-    for x = closing and s.trig + 1 or s.e, s.e - 1 do closing = closing and (self.t[x].kind == "punct" or self.t[x].filler) end
-    local to = closing and self:find_word(s.b, s.trig, "to") or s.trig
+    -- ("EVA15 go SHAFU direct", "ANA25 to MAIKO direct go", "to ENKAS go straight": "go" before the place or
+    -- after the word, in verb-final order, is the same verb)
+    local closing = self:word(s.trig, "directly direct dct straight")
+    local go_after = closing and self:word(s.trig + 1, "go") and s.trig + 1
+    for x = closing and (go_after or s.trig) + 1 or s.e, s.e - 1 do
+      closing = closing and (self.t[x].kind == "punct" or self.t[x].filler)
+    end
+    local to = closing and self:find_word(s.b, s.trig, "to go") or s.trig
+    if self:word(to, "go") and self:word(s.trig - 1, "go") then to = self:find_word(s.b, s.trig - 1, "to") end
     local back = to < s.trig and self:has_ref(to + 1, s.trig, "waypoint") and self:waypoint(to + 1, s.trig, id)
+    if back and go_after then self:explain(go_after, go_after + 1) end
+    if back and self:word(s.trig - 1, "go") then self:explain(s.trig - 1, s.trig) end
     local wp = to_dest or point or told or added and #self:refs_in(s.trig, s.e, "waypoint") == 0
         and self:word_in(s.trig, s.e, "there it") and added or back or self:waypoint(s.trig, s.e, id)
     -- "send it to TEBBY directly", "go to the Helsinki VOR directly": the place said after "to", before the
@@ -2202,7 +2210,8 @@ return function(H, f, compass)
     if not id then return end
     local point = self:point_at(s.trig + 1, s.e, id)
     if point == false then return end
-    local wp = point or self:waypoint(s.trig, s.e, id)
+    -- ("waypoint LOTUS delete": the waypoint said before the verb, in verb-final order)
+    local wp = point or self:waypoint(s.trig, s.e, id) or (s.b < s.trig and self:waypoint(s.b, s.trig, id))
     if not wp then return self:need("Which waypoint should I remove from the route of " .. id .. "?") end
     self:emit("DELWPT " .. id .. " " .. wp)
     -- "delete DEPAX and ROLIS", "remove DEPAX, ROLIS": each further waypoint of its route listed after "and" or
@@ -2757,9 +2766,13 @@ return function(H, f, compass)
     end
     -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request after a
     -- speaker's label, the words after it as typed
+    -- (a courtesy word closing the request, "echo test start please", is said to us, not printed)
     if s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") and s.trig + 1 < s.e then
-      self:mark_used(s.trig + 1, s.e)
-      return self:emit("ECHO " .. self:raw(s.trig + 1, s.e))
+      local e = s.e
+      while e - 1 > s.trig + 1 and self:word(e - 1, "please pls thanks") do e = e - 1 end
+      self:explain(e, s.e)
+      self:mark_used(s.trig + 1, e)
+      return self:emit("ECHO " .. self:raw(s.trig + 1, e))
     end
     -- "print baseline no reso to the console": the words between the verb and where they go, as typed
     local to = self:find_word(s.trig + 1, s.e, "to on")

@@ -94,6 +94,14 @@ return function(H, f, wrap, compass)
         end
       end
     end
+    -- "mach 0.84 maintain please", "FL240 keep": the value with its unit said just before the verb (verb-final
+    -- order)
+    local last = qs[#qs]
+    if last and last.b < s.trig and self:skip_fillers(last.e) == s.trig then
+      if last.kind == "speed" or last.kind == "mach" then return self:speed(s) end
+      if last.kind == "alt" then return self:altitude(s) end
+      if last.kind == "heading" then return self:heading(s) end
+    end
     if self:word_in(s.trig, s.e, "heading") then return self:heading(s) end
     -- "maintain present speed": the speed instruction that follows says it
     if #qs == 0 and self:word(s.e, "speed spd airspeed") then
@@ -127,6 +135,7 @@ return function(H, f, wrap, compass)
         end
       end
     end
+    local now = self:state(ids[1])
     -- "FL240 -> FL250", "from FL240 to FL250", "leaving FL240 for FL250": the level it leaves, then the one it
     -- flies to
     local a, b = with_unit[1], with_unit[2]
@@ -137,7 +146,7 @@ return function(H, f, wrap, compass)
         if t.kind == "punct" and t.raw:find(">", 1, true) then arrow = true end
         if t.kind ~= "punct" then words = words + 1 end
       end
-      if (arrow and words == 0) or self:level_left(a, b) then
+      if (arrow and words == 0) or self:level_left(a, b) or self:value_left(a, b, now and now.alt_ft, 50) then
         self:take(a)
         self:explain(a.b, b.b)
         table.remove(with_unit, 1)
@@ -167,7 +176,6 @@ return function(H, f, wrap, compass)
       end
     end
     local target = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "maintain")
-    local now = self:state(ids[1])
     local dir = self:direction(s)
     local verb = dir > 0 and "climb" or dir < 0 and "descend" or "fly"
     if self:word_in(s.b, s.e, "double") and now then
@@ -392,6 +400,10 @@ return function(H, f, wrap, compass)
       if q.kind == "speed" or q.kind == "mach" or q.kind == "percent" then with_unit[#with_unit + 1] = q end
       if q.kind == "plain" and (q.b >= s.trig or q.number.typed) then plain[#plain + 1] = q end
     end
+    local now = self:state(ids[1])
+    for _, list in ipairs({ with_unit, plain }) do
+      if now and not now.sel_mach and self:value_left(list[1], list[2], now.cas_kt, 10) then table.remove(list, 1) end
+    end
     local q = self:pick(self:corrected(#with_unit > 0 and with_unit or plain, with_unit, plain, s), s, "speed")
     -- "Match AC02's speed to AC01" / "the same speed as AC01"
     local refs = self:refs_in(s.b, s.e, "aircraft")
@@ -513,6 +525,8 @@ return function(H, f, wrap, compass)
       abs_c[1] = { kind = "heading", value = rel_c[1].value, b = rel_c[1].b, e = rel_c[1].e, number = rel_c[1].number }
       rel_c = {}
     end
+    local now = self:state(ids[1])
+    if now and self:value_left(abs_c[1], abs_c[2], now.hdg_deg, 5, true) then table.remove(abs_c, 1) end
     local abs, rel = self:pick(abs_c, s, "heading"), self:pick(rel_c, s, "heading")
     local correction = self:word_in(s.b, s.e, "@correction")
     local turn = 0
@@ -534,7 +548,6 @@ return function(H, f, wrap, compass)
       end
     end
     local id = ids[1]
-    local now = self:state(id)
     local refs = self:refs_in(s.b, s.e, "aircraft")
     -- the place said after "towards" / "in the direction of" (a waypoint, or a place by its name)
     local toward

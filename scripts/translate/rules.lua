@@ -218,6 +218,16 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 5))[1]
     return q ~= nil and (q.kind == "speed" or q.kind == "mach")
   end }
+  -- "AAR731 current altitude tell me", "KAL8 speed let me know": the state asked for before the request
+  -- for it (verb-final order) is no instruction
+  rule { "altitude speed heading level position", false, when = function(g, i)
+    for k = i + 1, math.min(#g.t, i + 3) do
+      if (g:word(k, "tell") and g:word(k + 1, "me us")) or (g:word(k, "let") and g:word(k + 2, "know")) then
+        return true
+      end
+    end
+    return false
+  end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "rise to FL200", "ascend to FL200": a climb said so, with its level after it
   rule { "ascend rise", "alt", when = function(g, i)
@@ -692,6 +702,11 @@ return function(intent, rule, words)
   end }
   -- "VLG2211 route MERGE then ABRIX", "IBE3421: wpt PPG then GIROM": a route or waypoint word straight after
   -- an aircraft that flies (a colon between or none) and straight before a known place
+  -- "AAR731 waypoint LOTUS delete": the verb said after its object (verb-final order) takes the
+  -- waypoint off the route; the noun before it adds nothing
+  rule { "route rte wpt wp wpts waypoint waypoints", false, when = function(g, i)
+    return g:followed_by(i, 4, "delete remove del drop erase clear")
+  end }
   rule { "route rte wpt wp wpts waypoint waypoints", "addwpt", when = function(g, i)
     local b = (g.t[i - 1] or {}).text == ":" and i - 1 or i
     local flying = false
@@ -835,6 +850,20 @@ return function(intent, rule, words)
   -- ("skip LANAK, route direct TLA": the direct-to passes it; no deletion)
   local function no_direct(g, i) return not g:word(i, "skip") or not g:followed_by(i, 8, "direct directly dct straight") end
   rule { "remove delete del skip", "delwpt", near = { 2, "waypoint wpt wp" }, when = no_direct }
+  -- verb-final order: "APJ301 route delete all", "EVA15 route all clear" delete the whole route,
+  -- "ANA25 waypoint HYOGO remove" the waypoint named before the verb
+  -- (the verb closes the request, "all" at most after it: "route clear of weather" is no deletion)
+  rule { "clear delete remove erase del", "delrte", when = function(g, i)
+    if not g:word(g:word(i - 1, "all") and i - 2 or i - 1, "@route_nouns") then return false end
+    local k = i + 1
+    while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "all")) do k = k + 1 end
+    return k > #g.t and not g:has_ref(1, #g.t + 1, "waypoint")
+  end }
+  rule { "remove delete del drop erase", "delwpt", prev = { 3, "waypoint wpt wp" },
+         when = function(g, i) return g:has_ref(math.max(1, i - 3), i, "waypoint") end }
+  -- a verb of deletion after a noun that is no aircraft ("KAL8 altitude delete"): what is deleted is asked,
+  -- never the aircraft
+  rule { "remove delete del", "delwpt", prev = { 3, "waypoint wpt wp @route_nouns altitude speed heading level" } }
   -- "UAL9 forget ALPHA", "Qatari 1018 delete MISOD": a waypoint of the aircraft's route, said straight
   -- after the verb, left out of it
   rule { "forget delete remove del", "delwpt", when = function(g, i)
@@ -869,6 +898,11 @@ return function(intent, rule, words)
   rule { "proceed", false, near = { 3, "heading" } }
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
+  -- "KAL123 to ENKAS go straight": the adverb closing the clause after "go", the place said after "to"
+  rule { "straight", "direct", prev = { 1, "go" }, when = function(g, i)
+    local to = g:find_word(1, i, "to")
+    return to < i and g:has_ref(to + 1, i, "waypoint") and g:skip_fillers(i + 1) > #g.t
+  end }
   -- "point BAW123 towards SPY", "point it at BRAVO", "UAL9 skip ahead to BRAVO": a waypoint flown to
   -- (the place a waypoint's code, or a navaid's name with its kind after it: "point the Iberia at the Gerona VOR")
   local function to_waypoint(g, i)
@@ -1013,18 +1047,20 @@ return function(intent, rule, words)
   end }
   -- "baw836 route?", "ryr3nk route pls": an aircraft and the noun alone ask for its route
   rule { "route rte", "listrte", when = function(g, i) return g:alone_with_aircraft(i) end }
-  -- "Copa 245 route please, show it", "KLM12 route, display": the same, a verb of showing said after the noun
-  -- (its object "it" or "me" at most) closing the request
-  rule { "route rte", "listrte", when = function(g, i)
+  -- "Copa 245 route please, show it", "KLM12 route, display", "CAL502 route list please", "KAL8 position
+  -- check": the same, a verb of showing said after the noun (verb-final order; its object "it" or "me" at
+  -- most) closing the request
+  local function shown_after(g, i)
     local k = i + 1
     while g.t[k] and (g.t[k].kind == "punct" or g.t[k].filler) do k = k + 1 end
-    if not g:word(k, "show display") then return false end
+    if not g:word(k, "show display check list") then return false end
     local e = g:word(k + 1, "it me") and k + 2 or k + 1
     for x = e, #g.t do
       if g.t[x].kind ~= "punct" and not g.t[x].filler then return false end
     end
     return g:alone_with_aircraft(i, k, e)
-  end }
+  end
+  rule { "route rte", "listrte", when = shown_after }
   -- "route of klm1234?", "route of Kenya 480 please": the request opens with the noun and asks, or
   -- names only the aircraft after it
   rule { "route", "listrte", next = "of for", when = function(g, i)
@@ -1114,6 +1150,7 @@ return function(intent, rule, words)
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
+  rule { "position", "pos", when = shown_after }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
   -- "place EZY45, A319, at 38.4 N 6.6 W heading 290", "place a Ryanair, RYR5GH, B738, over LOREL ...": a
   -- callsign no aircraft has, with its type, is created
@@ -1150,6 +1187,22 @@ return function(intent, rule, words)
   rule { "hold pause", "hold", when = function(g, i) return i == 1 and g.t[2] ~= nil and g.t[2].kind == "punct" end }
   rule { "hold", "hold", near = { 3, "@sim" } }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
+  -- "run again from pause", "out of pause": the pause is the state left, no new one
+  rule { "pause hold freeze", false, prev = { 2, "from of" } }
+  -- "pause release", "release the pause": the pause ended, the run resumed
+  rule { "release", "op", when = function(g, i)
+    return (g:word(i - 1, "pause") or g:word(g:word(i + 1, "the") and i + 2 or i + 1, "pause"))
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
+  rule { "pause", false, next = "release" }
+  rule { "pause", false, prev = { 2, "release" } }
+  -- "continue from pause", "start again out of the pause": the run resumed from the pause
+  rule { "run start continue resume go", "op", when = function(g, i)
+    local k = g:word(i + 1, "again") and i + 2 or i + 1
+    k = g:word(k, "from") and k + 1 or (g:word(k, "out") and g:word(k + 1, "of") and k + 2) or nil
+    if k and g:word(k, "the") then k = k + 1 end
+    return k ~= nil and g:word(k, "pause hold freeze") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   rule { "pause hold freeze pausing freezing", "hold" }
   -- "interrupt the exercise", "the exercise will now be interrupted": a pause of the simulation said of it
   rule { "interrupt interrupted", "hold", near = { 3, "@sim" } }
@@ -1157,6 +1210,8 @@ return function(intent, rule, words)
   -- "run in fast time until I say stop": the stop is when the run ends, not an instruction
   rule { "stop", false, prev = { 3, "until" } }
   rule { "stop", "hold", near = { 3, "@sim" } }
+  -- "sim stop for a moment": the simulation named before its verb (verb-final order), no aircraft named
+  rule { "stop", "hold", prev = { 1, "@sim" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "stop a moment the simulation", "stop for a minute the sim": the while said before the object
   rule { "stop", "hold", when = function(g, i)
     local k = g:word(i + 1, "for") and i + 2 or i + 1
@@ -1181,6 +1236,19 @@ return function(intent, rule, words)
     return g.t[#g.t].text == "?" or k > #g.t
   end }
   rule { "tell", "pos", next = "me us", near = { 5, "altitude speed heading position level" } }
+  -- "AAR731 current altitude tell me", "KAL8 speed let me know", "heading please tell": the state word said
+  -- before the request for it (verb-final order) asks for the aircraft's report, no instruction
+  rule { "tell know", "pos", when = function(g, i)
+    local k = i - 1
+    if g:word(i, "know") then
+      if not (g:word(i - 1, "me us") and g:word(i - 2, "let")) then return false end
+      k = i - 3
+    elseif not (g:word(i + 1, "me us") or g:word(i - 1, "please")) then
+      return false
+    end
+    if g:word(k, "please") then k = k - 1 end
+    return g:word(k, "altitude speed heading position level")
+  end }
   -- "give me the position", "give me TEST01's and TEST02's positions"
   rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance

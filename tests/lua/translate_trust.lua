@@ -5457,3 +5457,93 @@ do
   check_eq(ex("AUA9L speed 170 knots until 4 miles final, descend to 3000 feet"), "SPD AUA9L 170 ; ALT AUA9L 3000")
   asked(ex("AUA9L speed 170 knots until 4 miles final, then descend to 3000 feet"), "waits for the limit's end")
 end
+
+-- Cycle 34 (R70): verb-final deletion: the verb closing the clause acts on the object before it ("waypoint X
+-- delete" takes the waypoint off the route, "route clear" the route); a deletion after a noun that is no
+-- aircraft is asked, never the aircraft deleted
+do
+  local _, ex = scene({ "CRE HVN7D A321 21.0 105.8 090 FL250 280", "DEFWPT PHOWP 21.2 106.2",
+    "DEFWPT QUAWP 21.4 106.6", "ADDWPT HVN7D PHOWP", "ADDWPT HVN7D QUAWP" })
+  check_eq(ex("HVN7D waypoint QUAWP erase"), "DELWPT HVN7D QUAWP")
+  check_eq(ex("HVN7D waypoint PHOWP remove please"), "DELWPT HVN7D PHOWP")
+  check_eq(ex("HVN7D route all delete"), "DELRTE HVN7D")
+  asked(ex("HVN7D level delete"), "a level is no object of a deletion")
+  asked(ex("HVN7D route is clear"), "a route described, no deletion")
+  asked(ex("HVN7D route clear of weather"), "words after the verb")
+end
+
+-- Cycle 34 (R70): a state word said before "tell me" / "let me know" (verb-final order) asks for the report
+do
+  local _, ex = scene({ "CRE TGW5R A320 1.3 103.9 180 FL330 290" })
+  check_eq(ex("TGW5R present speed let me know"), "POS TGW5R")
+  check_eq(ex("TGW5R heading tell me"), "POS TGW5R")
+  check_eq(ex("TGW5R climb FL350"), "ALT TGW5R FL350")
+end
+
+-- Cycle 34 (R70): the pause left ("from pause") is no new one; the simulation named before "stop" pauses it;
+-- a courtesy word closing ECHO's text is not printed
+do
+  local _, ex = scene({})
+  check_eq(ex("resume from pause"), "OP")
+  check_eq(ex("simulation stop for a second"), "HOLD")
+  check_eq(ex("echo baseline done please"), "ECHO baseline done")
+  check_eq(ex("echo please wait"), "ECHO please wait")
+end
+
+-- Cycle 34 (R70): "speed 300 to 260 reduce", "heading 090 to 110 change": two values with "to" between, the
+-- first the aircraft's present one, give the value it leaves and the one it flies to; a first value that is
+-- not the present one is asked about
+do
+  local _, ex = scene({ "CRE CPA9V A333 22.3 114.2 270 FL310 290" })
+  check_eq(ex("CPA9V speed 290 to 250 reduce"), "SPD CPA9V 250")
+  check_eq(ex("CPA9V heading 270 to 300 change"), "HDG CPA9V 300")
+  check_eq(ex("CPA9V FL310 to FL270 descend"), "ALT CPA9V FL270")
+  asked(ex("CPA9V heading 180 to 300 change"), "180 is not its heading")
+  asked(ex("CPA9V speed 240 to 250 reduce"), "240 is not its speed")
+end
+
+-- Cycle 34 (R70): a verb of showing closing the request after the noun ("route list please", "position
+-- check") shows it; a verb followed by more words is not read so
+do
+  local _, ex = scene({ "CRE JJA4Q B738 33.5 126.5 010 FL280 280" })
+  check_eq(ex("JJA4Q route list please"), "LISTRTE JJA4Q")
+  check_eq(ex("JJA4Q position check"), "POS JJA4Q")
+  asked(ex("JJA4Q route check twice"), "words after the verb")
+end
+
+-- Cycle 34 (R70): a direct-to in verb-final order: "go PLACE direct", "to PLACE direct go", "to PLACE go
+-- straight" fly direct to the place said before the word; no place said is still asked
+do
+  local _, ex = scene({ "CRE ASV3G A320 24.0 121.0 045 FL240 270", "DEFWPT NORWP 24.5 121.5",
+    "DEFWPT EASWP 24.2 122.0", "ADDWPT ASV3G NORWP", "ADDWPT ASV3G EASWP" })
+  check_eq(ex("ASV3G go EASWP direct"), "DIRECT ASV3G EASWP")
+  check_eq(ex("ASV3G to EASWP direct go"), "DIRECT ASV3G EASWP")
+  check_eq(ex("ASV3G to NORWP go straight please"), "DIRECT ASV3G NORWP")
+  asked(ex("ASV3G go straight"), "no place said")
+end
+
+-- Cycle 34 (R70): "maintain" / "keep" said after the value with its unit (verb-final order) keeps that value;
+-- a bare number before it is still asked
+do
+  local _, ex = scene({ "CRE TTW6M A320 25.0 121.2 200 FL230 260" })
+  check_eq(ex("TTW6M mach 0.78 maintain please"), "SPD TTW6M M0.78")
+  check_eq(ex("TTW6M FL230 keep"), "ALT TTW6M FL230")
+  asked(ex("TTW6M 290 maintain"), "a number with no unit")
+end
+
+-- Cycle 34 (R70): in a list of instructions each said verb-final ("heading 070, FL240 climb, speed 300"), the
+-- value with its unit just before a verb, after a comma closing the instruction before, is that verb's
+do
+  local _, ex = scene({ "CRE EVA3L B789 25.1 121.2 090 FL200 280" })
+  check_eq(ex("EVA3L heading 120, FL260 climb, speed 300"), "HDG EVA3L 120 ; ALT EVA3L FL260 ; SPD EVA3L 300")
+  check_eq(ex("EVA3L FL260 climb, 250 knots reduce"), "ALT EVA3L FL260 ; SPD EVA3L 250")
+  asked(ex("EVA3L heading 120, climb, speed 300"), "no level said")
+end
+
+-- Cycle 34 (R70): "pause release", "release the pause": the pause ended (OP), no new one
+do
+  local _, ex = scene({})
+  check_eq(ex("release the pause"), "OP")
+  check_eq(ex("pause release"), "OP")
+  check_eq(ex("pause"), "HOLD")
+end
