@@ -785,9 +785,12 @@ end
 
 -- lexicon.typed_abbreviations read as the words they stand for, where the words beside them allow
 local ABBREVIATIONS = {}
-for abbr, a in pairs(lexicon.typed_abbreviations) do
-  ABBREVIATIONS[abbr] = { word = a.word, next = a.next and word_set(a.next, 1), prev = a.prev and word_set(a.prev, 1),
-    not_prev = a.not_prev and word_set(a.not_prev, 1) }
+for abbr, readings in pairs(lexicon.typed_abbreviations) do
+  ABBREVIATIONS[abbr] = {}
+  for _, a in ipairs(readings.word and { readings } or readings) do
+    table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
+      prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1) })
+  end
 end
 local function typed_abbreviations(text)
   local toks = {}
@@ -795,15 +798,18 @@ local function typed_abbreviations(text)
   local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
   local function fits(set, k)
     local w = bare(k)
-    return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil))
+    return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil)
+      or (set["#place"] and toks[k]:match("^%u%u%u%u?%u?%p*$") ~= nil))
   end
   local changed = false
   for k, w in ipairs(toks) do
     local letters, punct = w:match("^(%a+)(%p*)$")
-    local a = letters and ABBREVIATIONS[letters:lower()]
-    if a and (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
-        and not (a.not_prev and fits(a.not_prev, k - 1)) then
-      toks[k], changed = a.word .. punct, true
+    for _, a in ipairs(letters and ABBREVIATIONS[letters:lower()] or {}) do
+      if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
+          and not (a.not_prev and fits(a.not_prev, k - 1)) then
+        toks[k], changed = a.word .. punct, true
+        break
+      end
     end
   end
   return changed and table.concat(toks, " ") or text

@@ -5547,3 +5547,33 @@ do
   check_eq(ex("pause release"), "OP")
   check_eq(ex("pause"), "HOLD")
 end
+
+-- Cycle 35 (R71): a navaid named after a city whose airport lies beside it under a longer name ("Sanford":
+-- the SFB NDB, KSFB "ORLANDO SANFORD INTL") in a direct-to is the one of the two the route holds, else asked;
+-- the navaid's kind said ("the Sanford NDB") is the navaid
+do
+  local _, ex = navscene({ "CRE ASH88 E75L 29.20 -81.10 200 8000 240", "ADDWPT ASH88 KSFB",
+    "CRE EJA301 C680 29.00 -81.40 120 7000 230", "CRE LOF22 E145 28.90 -81.60 090 6000 220", "ADDWPT LOF22 SFB" },
+    "a city's navaid and airport")
+  if ex then
+    check_eq(ex("ASH88 go direct Sanford"), "DIRECT ASH88 KSFB")
+    check_eq(ex("LOF22 direct Sanford"), "DIRECT LOF22 SFB")
+    asked(ex("EJA301 direct Sanford"), "neither in the route")
+    check_eq(ex("EJA301 direct the Sanford NDB"), "ADDWPT EJA301 SFB ; DIRECT EJA301 SFB")
+  end
+end
+
+-- Cycle 35 (R71): FAA typed shorthand: "pd FIX" proceed direct (the fix in capitals), "rs 250" reduce speed,
+-- "exp" expect before an approach or runway, "hvy", "9 thsnd", "adn"; "descend pd 6000" stays pilot's discretion and
+-- "pd" before a word in lower case is asked
+do
+  local _, ex = scene({ "CRE ASQ77 CRJ9 33.0 -84.0 090 12000 280", "DEFWPT WOBBL 33.2 -83.5", "ADDWPT ASQ77 WOBBL" })
+  check_eq(ex("ASQ77 pd WOBBL"), "DIRECT ASQ77 WOBBL")
+  check_eq(ex("ASQ77 rs 230"), "SPD ASQ77 230")
+  check_eq(ex("ASQ77 dm 9 thsnd, rs 240"), "ALT ASQ77 9000 ; SPD ASQ77 240")
+  check_eq(ex("ASQ77 desend adn maintain 7000"), "ALT ASQ77 7000")
+  check_eq(ex("ASQ77 dm 8000 exp ILS rwy 27"), "ALT ASQ77 8000")
+  check_eq(ex("ASQ77 hvy descend 1500 fpm"), "VS ASQ77 -1500")
+  check_eq(ex("ASQ77 descend pd 6000"), "ALT ASQ77 6000")
+  asked(ex("ASQ77 pd wobbl"), "a fix in lower case after pd")
+end
