@@ -4011,6 +4011,12 @@ function G:said_last(i, near, own_clause)
         or (self.t[k].kind == "punct" and self.t[k].text == "," and near:find(" , ", 1, true))) do
       k = k + 1
     end
+    -- (the airport a clearance's runway is at, named last: "until established, cleared ILS 9L Sanford")
+    local with = self.world.airports_with_words
+    if with and k > i + 1 and (self:word(k - 1, "l r c left right center centre") or self.t[k - 1].kind == "number") and self.t[k]
+        and self.t[k].kind == "word" and self.t[k].alpha and not self.t[k].keyword and #with(self.t[k].text) > 0 then
+      k = k + 1
+    end
   else
     return false
   end

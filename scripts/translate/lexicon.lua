@@ -655,7 +655,8 @@ return {
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
     -- "until established, cleared ILS runway 10" closes with the approach clearance)
     { what = "limits that end on the approach", words = "until till", near = { "established" }, window = 1,
-      after_instruction = true, last = "established on the localizer localiser ils final approach , cleared for runway rwy" },
+      after_instruction = true,
+      last = "established on the localizer localiser ils rnav rnp gps visual final approach , cleared for runway rwy l r c" },
     -- "speed 160 until 4 DME", "170 knots till 5 miles final, cleared ILS 01L": the same limit ending at the
     -- final approach's 3 to 6 miles, its unit said, an approach clearance after it at most (01L is "01" and
     -- "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out

@@ -5577,3 +5577,14 @@ do
   check_eq(ex("ASQ77 descend pd 6000"), "ALT ASQ77 6000")
   asked(ex("ASQ77 pd wobbl"), "a fix in lower case after pd")
 end
+
+-- Cycle 35 (R71): "until established" closing with the approach clearance, its kind, runway and the airport
+-- named last ("cleared RNAV 22R Jacksonville") is not simulated; a word after the airport is still asked
+do
+  local _, ex = navscene({ "CRE FDX77 B763 30.3 -81.9 180 5000 210" }, "an approach's airport")
+  if ex then
+    check_eq(ex("FDX77 maintain 3000 until established, cleared RNAV 26 Jacksonville"), "ALT FDX77 3000")
+    check_eq(ex("FDX77 maintain 2500 until established, cleared ILS 8L Jacksonville"), "ALT FDX77 2500")
+    asked(ex("FDX77 maintain 3000 until established, cleared RNAV 26 Jacksonville quickly"), "a word after")
+  end
+end
