@@ -118,7 +118,9 @@ return {
         -- a pilot of an online network gone, given as the reason for removing the aircraft ("dc'd", "he's
         -- disconnected", "went afk", "timed out"; "pilot" with them: courtesy_phrases)
         "dc'd", "dcd", "dced", "disconnected", "disconnect", "disconnects", "afk", "offline", "logged", "timed",
-        "went", "gone", "network", "vatsim", "ivao" },
+        "went", "gone", "network", "vatsim", "ivao",
+        -- an airspace infringed, given as the reason ("delete N512RK he busted the bravo")
+        "busted", "infringed" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",

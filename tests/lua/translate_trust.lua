@@ -5588,3 +5588,15 @@ do
     asked(ex("FDX77 maintain 3000 until established, cleared RNAV 26 Jacksonville quickly"), "a word after")
   end
 end
+
+-- Cycle 35 (R71): an airspace infringed given as the reason for a removal ("busted the charlie") is set aside;
+-- three single digits typed apart before "knots" are one speed, two of them or digits before another word
+-- are not joined
+do
+  local _, ex = scene({ "CRE N733QB C172 28.0 -82.0 270 2500 100", "CRE ASQ5 CRJ7 28.3 -82.3 090 9000 250" })
+  check_eq(ex("remove N733QB, busted the charlie"), "DEL N733QB")
+  check_eq(ex("ASQ5 busted his altitude, descend 8000"), "ALT ASQ5 8000")
+  check_eq(ex("ASQ5 maintain 2 3 0 knots"), "SPD ASQ5 230")
+  check_eq(ex("ASQ5 reduce 1 9 0 kts"), "SPD ASQ5 190")
+  asked(ex("ASQ5 maintain 2 3 knots"), "two digits apart")
+end
