@@ -2922,7 +2922,9 @@ function G:at_waypoint(s, spec)
               and q.value % 100 == 0)) then
           alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
-            or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))
+            -- ("at CWRLD reduce speed to 190": the number after "speed" or "speed to")
+            or (q.kind == "plain" and s.intent == "spd" and (self:word(q.b - 1, "speed spd")
+              or (self:word(q.b - 1, "to") and self:word(q.b - 2, "speed spd"))))
             -- ("at MIRSI reduce 210": a bare number of knots straight after a speed verb)
             or (q.kind == "plain" and s.intent == "spd" and q.value >= 100 and q.value <= 400 and not q.number.decimal
               and (q.b == self:skip_fillers(s.trig + 1) or (self:word(q.b - 1, "to") and q.b - 1 == self:skip_fillers(s.trig + 1))))

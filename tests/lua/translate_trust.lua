@@ -5600,3 +5600,12 @@ do
   check_eq(ex("ASQ5 reduce 1 9 0 kts"), "SPD ASQ5 190")
   asked(ex("ASQ5 maintain 2 3 knots"), "two digits apart")
 end
+
+-- Cycle 35 (R71): at a waypoint of the route, "reduce speed to 190" (a bare number after "speed to") is the
+-- speed constraint there, as "reduce speed 190" is; a waypoint off the route is still asked
+do
+  local _, ex = scene({ "CRE ASH4 E75L 29.0 -81.0 200 9000 240", "DEFWPT TWIRL 28.8 -81.1", "DEFWPT FARFX 27.0 -80.0",
+    "ADDWPT ASH4 TWIRL" })
+  check_eq(ex("ASH4 at TWIRL reduce speed to 190"), "AT ASH4 TWIRL SPD 190")
+  asked(ex("ASH4 at FARFX reduce speed to 190"), "off the route")
+end
