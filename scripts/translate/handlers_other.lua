@@ -1038,7 +1038,8 @@ return function(H, f, compass)
     end
     -- (a navaid named after a city whose airport lies beside it under a longer name, "direct Sanford": the
     -- SFB NDB and KSFB "ORLANDO SANFORD INTL" within lexicon.city_nm, is the one of the two aircraft `a`'s
-    -- route holds, else asked about, the navaid kept)
+    -- route holds; with neither held, asked about when the airport is large or medium, else the navaid:
+    -- "direct Perth" over Scotland is the PTH VOR, not the small Perth/Scone)
     local function city_airport(navaid, phrase)
       local w = self.world
       if not (a and a.lat and phrase and w.airports_beside and w.airports_with_words) then return navaid end
@@ -1055,7 +1056,8 @@ return function(H, f, compass)
       for _, id in ipairs(named) do
         if held[id:upper()] then return id end
       end
-      if named[1] then
+      local class = w.airport_class and named[1] and w.airport_class(named[1])
+      if class == "LARGE" or class == "MEDIUM" then
         self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, named[1]))
       end
       return navaid
