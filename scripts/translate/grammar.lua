@@ -1830,6 +1830,8 @@ function G:segments(b, e)
   for i = b, e - 1 do
     -- (a word in a reason, "so we get the same run each time", starts no instruction)
     local intent = self:intent_at(i)
+    -- ("when level at 8000 reduce 190": "level" after a condition word and before "at" is the condition's)
+    if intent and self:word(i, "level") and self:word(i - 1, "when once") and self:word(i + 1, "at") then intent = nil end
     if intent and not self:in_reason(i) then
       trig[#trig + 1] = { intent = intent, pos = i }
       self.triggers[i] = true

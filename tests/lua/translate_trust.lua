@@ -5609,3 +5609,12 @@ do
   check_eq(ex("ASH4 at TWIRL reduce speed to 190"), "AT ASH4 TWIRL SPD 190")
   asked(ex("ASH4 at FARFX reduce speed to 190"), "off the route")
 end
+
+-- Cycle 35 (R71): "when level at 8000" opening a clause is a level condition ("level" after "when"/"once" and
+-- before "at" is no instruction of its own); "level at 8000" alone is still the level
+do
+  local _, ex = scene({ "CRE ASH9 B739 27.7 -81.1 350 11000 250" })
+  check_eq(ex("ASH9 when level at 9000 reduce 200"), "ATALT ASH9 9000 SPD ASH9 200")
+  check_eq(ex("ASH9 once level at 9000 speed 210"), "ATALT ASH9 9000 SPD ASH9 210")
+  check_eq(ex("ASH9 level at 9000"), "ALT ASH9 9000")
+end
