@@ -442,6 +442,8 @@ end
 -- first group ("hdg 2 7 0", "fl 16 0"): a typed "hdg 2 70" may have lost or gained a digit and stays apart
 -- (asked).
 local SPLIT_AFTER = { fl = "^%d$", hdg = "^%d$", level = "^%d%d?$", heading = "^%d%d?$" }
+-- Three single digits written apart before a speed's unit are one speed ("maintain 2 1 0 knots").
+local SPLIT_BEFORE = { knots = true, kts = true, kt = true, knot = true }
 local function split_digits(text)
   if not text:find("%d%s+%d") then return text end  -- (no two digit groups side by side)
   local toks = {}
@@ -458,6 +460,9 @@ local function split_digits(text)
     end
     if k - i > 2 and #joined >= 2 then
       out[#out + 1], i, changed = joined, k, true
+    elseif toks[i + 3] and SPLIT_BEFORE[toks[i + 3]:lower()] and (toks[i] .. toks[i + 1] .. toks[i + 2]):match("^%d%d%d$")
+        and #toks[i] == 1 and (not toks[i - 1] or not toks[i - 1]:match("^%d$")) then
+      out[#out], i, changed = toks[i] .. toks[i + 1] .. toks[i + 2], i + 3, true
     else
       i = i + 1
     end
@@ -785,9 +790,12 @@ end
 
 -- lexicon.typed_abbreviations read as the words they stand for, where the words beside them allow
 local ABBREVIATIONS = {}
-for abbr, a in pairs(lexicon.typed_abbreviations) do
-  ABBREVIATIONS[abbr] = { word = a.word, next = a.next and word_set(a.next, 1), prev = a.prev and word_set(a.prev, 1),
-    not_prev = a.not_prev and word_set(a.not_prev, 1) }
+for abbr, readings in pairs(lexicon.typed_abbreviations) do
+  ABBREVIATIONS[abbr] = {}
+  for _, a in ipairs(readings.word and { readings } or readings) do
+    table.insert(ABBREVIATIONS[abbr], { word = a.word, next = a.next and word_set(a.next, 1),
+      prev = a.prev and word_set(a.prev, 1), not_prev = a.not_prev and word_set(a.not_prev, 1) })
+  end
 end
 local function typed_abbreviations(text)
   local toks = {}
@@ -795,15 +803,18 @@ local function typed_abbreviations(text)
   local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
   local function fits(set, k)
     local w = bare(k)
-    return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil))
+    return w ~= nil and (set[w] or (set["#number"] and (w:match("^%d") or w:match("^fl%d")) ~= nil)
+      or (set["#place"] and toks[k]:match("^%u%u%u%u?%u?%p*$") ~= nil))
   end
   local changed = false
   for k, w in ipairs(toks) do
     local letters, punct = w:match("^(%a+)(%p*)$")
-    local a = letters and ABBREVIATIONS[letters:lower()]
-    if a and (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
-        and not (a.not_prev and fits(a.not_prev, k - 1)) then
-      toks[k], changed = a.word .. punct, true
+    for _, a in ipairs(letters and ABBREVIATIONS[letters:lower()] or {}) do
+      if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
+          and not (a.not_prev and fits(a.not_prev, k - 1)) then
+        toks[k], changed = a.word .. punct, true
+        break
+      end
     end
   end
   return changed and table.concat(toks, " ") or text
@@ -1819,6 +1830,8 @@ function G:segments(b, e)
   for i = b, e - 1 do
     -- (a word in a reason, "so we get the same run each time", starts no instruction)
     local intent = self:intent_at(i)
+    -- ("when level at 8000 reduce 190": "level" after a condition word and before "at" is the condition's)
+    if intent and self:word(i, "level") and self:word(i - 1, "when once") and self:word(i + 1, "at") then intent = nil end
     if intent and not self:in_reason(i) then
       trig[#trig + 1] = { intent = intent, pos = i }
       self.triggers[i] = true
@@ -2911,7 +2924,9 @@ function G:at_waypoint(s, spec)
               and q.value % 100 == 0)) then
           alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
-            or (q.kind == "plain" and s.intent == "spd" and self:word(q.b - 1, "speed spd"))
+            -- ("at CWRLD reduce speed to 190": the number after "speed" or "speed to")
+            or (q.kind == "plain" and s.intent == "spd" and (self:word(q.b - 1, "speed spd")
+              or (self:word(q.b - 1, "to") and self:word(q.b - 2, "speed spd"))))
             -- ("at MIRSI reduce 210": a bare number of knots straight after a speed verb)
             or (q.kind == "plain" and s.intent == "spd" and q.value >= 100 and q.value <= 400 and not q.number.decimal
               and (q.b == self:skip_fillers(s.trig + 1) or (self:word(q.b - 1, "to") and q.b - 1 == self:skip_fillers(s.trig + 1))))
@@ -4003,6 +4018,12 @@ function G:said_last(i, near, own_clause)
     while self.t[k] and (self.t[k].kind == "number" or self.t[k].number_word or self.t[k].filler
         or self:word(k, "@fraction_units") or self:word(k, near)
         or (self.t[k].kind == "punct" and self.t[k].text == "," and near:find(" , ", 1, true))) do
+      k = k + 1
+    end
+    -- (the airport a clearance's runway is at, named last: "until established, cleared ILS 9L Sanford")
+    local with = self.world.airports_with_words
+    if with and k > i + 1 and (self:word(k - 1, "l r c left right center centre") or self.t[k - 1].kind == "number") and self.t[k]
+        and self.t[k].kind == "word" and self.t[k].alpha and not self.t[k].keyword and #with(self.t[k].text) > 0 then
       k = k + 1
     end
   else

@@ -1036,21 +1036,48 @@ return function(H, f, compass)
       local id = self:airport_by_name(b, e, r)
       if id then return beside(id) end
     end
+    -- (a navaid named after a city whose airport lies beside it under a longer name, "direct Sanford": the
+    -- SFB NDB and KSFB "ORLANDO SANFORD INTL" within lexicon.city_nm, is the one of the two aircraft `a`'s
+    -- route holds; with neither held, asked about when the airport is large or medium, else the navaid:
+    -- "direct Perth" over Scotland is the PTH VOR, not the small Perth/Scone)
+    local function city_airport(navaid, phrase)
+      local w = self.world
+      if not (a and a.lat and phrase and w.airports_beside and w.airports_with_words) then return navaid end
+      local held = {}
+      for _, r in ipairs(a.route or {}) do held[r:upper()] = true end
+      if a.dest and a.dest ~= "" then held[a.dest:upper()] = true end
+      if held[navaid:upper()] then return navaid end
+      local bears = {}
+      for _, id in ipairs(w.airports_with_words(phrase, a.lat, a.lon, L.navaid_range_nm)) do bears[id] = true end
+      local named = {}
+      for _, id in ipairs(w.airports_beside(navaid, a.lat, a.lon, L.city_nm)) do
+        if bears[id] then named[#named + 1] = id end
+      end
+      for _, id in ipairs(named) do
+        if held[id:upper()] then return id end
+      end
+      local class = w.airport_class and named[1] and w.airport_class(named[1])
+      if class == "LARGE" or class == "MEDIUM" then
+        self:need(string.format("Which place is meant: the %s navaid or the %s airport?", navaid, named[1]))
+      end
+      return navaid
+    end
     for _, r in ipairs(near) do
-      local id = self:navaid_by_name(b, e, r)
-      if id then return id end
+      local id, phrase = self:navaid_by_name(b, e, r)
+      if id then return city_airport(id, phrase) end
     end
     local airport = self:airport_by_name(b, e)
     if airport then return beside(airport) end
     if #near > 0 then return nil end
     -- with no traffic to place it near, the name of one navaid anywhere (several are asked about)
-    return self:navaid_by_name(b, e, { lat = 0, lon = 0 }, math.huge)
+    return (self:navaid_by_name(b, e, { lat = 0, lon = 0 }, math.huge))
   end
 
   -- A navaid said by its navdata name ("direct Canarsie" -> CRI, "Point Reyes" -> PYE), where no
   -- airport has that name: one or two words in [b, e) that name navaids within
   -- range_nm (default lexicon.navaid_range_nm) of the aircraft `a`; the question names them when
-  -- several idents fit; `two_words` (true) reads two-word names only.
+  -- several idents fit; `two_words` (true) reads two-word names only. Second result: the name as said, unless
+  -- a navaid's kind follows it ("the Atlanta VOR").
   function m:navaid_by_name(b, e, a, range_nm, two_words)
     local named = self.world.navaids_named
     if not named or not a or not a.lat then return nil end
@@ -1107,7 +1134,7 @@ return function(H, f, compass)
           local id = self:one_named(ids, "navaid", phrase, math.huge)
           if id then
             self:explain(i, p[2])
-            return id
+            return id, not kind and phrase or nil
           end
         end
       end

@@ -118,7 +118,9 @@ return {
         -- a pilot of an online network gone, given as the reason for removing the aircraft ("dc'd", "he's
         -- disconnected", "went afk", "timed out"; "pilot" with them: courtesy_phrases)
         "dc'd", "dcd", "dced", "disconnected", "disconnect", "disconnects", "afk", "offline", "logged", "timed",
-        "went", "gone", "network", "vatsim", "ivao" },
+        "went", "gone", "network", "vatsim", "ivao",
+        -- an airspace infringed, given as the reason ("delete N512RK he busted the bravo")
+        "busted", "infringed" },
     -- radiotelephony courtesy
     radiotelephony = { "good", "day", "morning", "afternoon", "evening", "hello", "hi", "roger", "wilco", "copy",
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
@@ -306,7 +308,7 @@ return {
   -- controllers' typed abbreviations of instruction words (text ATC on the online networks), read as the
   -- words they stand for where a word beside them shows the instruction: `word`, the words read; `next` /
   -- `prev`, words one of which must be the next / the previous word ("#number": a value typed with digits,
-  -- "fl180" too); `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct TRN" is
+  -- "fl180" too; "#place": see pd); a list of such readings is tried in order; `not_prev`, words that keep it as typed. Elsewhere it stays as typed ("direct TRN" is
   -- Turnberry, "trail red" a colour, "Red Cap" an airline).
   typed_abbreviations = {
     expd = { word = "expedite" }, expdt = { word = "expedite" }, til = { word = "until" },
@@ -326,8 +328,17 @@ return {
     recl = { word = "recleared", next = "#number fl flight" }, rv = { word = "radar vectors", next = "hdg heading" },
     blw = { word = "below", next = "#number fl flight" }, abv = { word = "above", next = "#number fl flight" },
     red = { word = "reduce", next = "#number spd speed to", not_prev = "trail colour color a in" },
-    pd = { word = "pilot's discretion", prev = "desc descend dsc dscnd dsnd climb clb clmb",
-           next = "#number fl flight" },
+    -- (several readings: the first whose neighbours fit; "#place", three to five capital letters, a fix,
+    -- navaid or airport typed as its ident: "pd FIGGY" is "proceed direct FIGGY", "pd figgy" stays as typed)
+    pd = { { word = "pilot's discretion", prev = "desc descend dsc dscnd dsnd climb clb clmb",
+             next = "#number fl flight" },
+           { word = "proceed direct", next = "#place", not_prev = "desc descend dsc dscnd dsnd climb clb clmb" } },
+    -- (FAA typed shorthand: "rs 210" reduce speed; "exp ILS" expect; "hvy" heavy; "8 thsnd" eight thousand;
+    -- "adn" and)
+    rs = { word = "reduce speed", next = "#number to" },
+    exp = { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
+    hvy = { word = "heavy" }, adn = { word = "and" },
+    thsnd = { word = "thousand", prev = "#number" }, thsd = { word = "thousand", prev = "#number" },
     -- (hesitations typed as said: "mach .. erm spd 270"; a typed "err" or "sry" is "sorry": what follows it
     -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
     err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
@@ -646,7 +657,8 @@ return {
     -- approach, said straight after the word and last (`last`: the words it may hold, a comma among them:
     -- "until established, cleared ILS runway 10" closes with the approach clearance)
     { what = "limits that end on the approach", words = "until till", near = { "established" }, window = 1,
-      after_instruction = true, last = "established on the localizer localiser ils final approach , cleared for runway rwy" },
+      after_instruction = true,
+      last = "established on the localizer localiser ils rnav rnp gps visual final approach , cleared for runway rwy l r c" },
     -- "speed 160 until 4 DME", "170 knots till 5 miles final, cleared ILS 01L": the same limit ending at the
     -- final approach's 3 to 6 miles, its unit said, an approach clearance after it at most (01L is "01" and
     -- "l"); a value after it ("until 5 DME then 140"), "until 4" (no distance) and a limit further out

@@ -5547,3 +5547,74 @@ do
   check_eq(ex("pause release"), "OP")
   check_eq(ex("pause"), "HOLD")
 end
+
+-- Cycle 35 (R71): a navaid named after a city whose airport lies beside it under a longer name ("Sanford":
+-- the SFB NDB, KSFB "ORLANDO SANFORD INTL") in a direct-to is the one of the two the route holds, else asked;
+-- the navaid's kind said ("the Sanford NDB") is the navaid
+do
+  local _, ex = navscene({ "CRE ASH88 E75L 29.20 -81.10 200 8000 240", "ADDWPT ASH88 KSFB",
+    "CRE EJA301 C680 29.00 -81.40 120 7000 230", "CRE LOF22 E145 28.90 -81.60 090 6000 220", "ADDWPT LOF22 SFB" },
+    "a city's navaid and airport")
+  if ex then
+    check_eq(ex("ASH88 go direct Sanford"), "DIRECT ASH88 KSFB")
+    check_eq(ex("LOF22 direct Sanford"), "DIRECT LOF22 SFB")
+    asked(ex("EJA301 direct Sanford"), "neither in the route")
+    check_eq(ex("EJA301 direct the Sanford NDB"), "ADDWPT EJA301 SFB ; DIRECT EJA301 SFB")
+  end
+end
+
+-- Cycle 35 (R71): FAA typed shorthand: "pd FIX" proceed direct (the fix in capitals), "rs 250" reduce speed,
+-- "exp" expect before an approach or runway, "hvy", "9 thsnd", "adn"; "descend pd 6000" stays pilot's discretion and
+-- "pd" before a word in lower case is asked
+do
+  local _, ex = scene({ "CRE ASQ77 CRJ9 33.0 -84.0 090 12000 280", "DEFWPT WOBBL 33.2 -83.5", "ADDWPT ASQ77 WOBBL" })
+  check_eq(ex("ASQ77 pd WOBBL"), "DIRECT ASQ77 WOBBL")
+  check_eq(ex("ASQ77 rs 230"), "SPD ASQ77 230")
+  check_eq(ex("ASQ77 dm 9 thsnd, rs 240"), "ALT ASQ77 9000 ; SPD ASQ77 240")
+  check_eq(ex("ASQ77 desend adn maintain 7000"), "ALT ASQ77 7000")
+  check_eq(ex("ASQ77 dm 8000 exp ILS rwy 27"), "ALT ASQ77 8000")
+  check_eq(ex("ASQ77 hvy descend 1500 fpm"), "VS ASQ77 -1500")
+  check_eq(ex("ASQ77 descend pd 6000"), "ALT ASQ77 6000")
+  asked(ex("ASQ77 pd wobbl"), "a fix in lower case after pd")
+end
+
+-- Cycle 35 (R71): "until established" closing with the approach clearance, its kind, runway and the airport
+-- named last ("cleared RNAV 22R Jacksonville") is not simulated; a word after the airport is still asked
+do
+  local _, ex = navscene({ "CRE FDX77 B763 30.3 -81.9 180 5000 210" }, "an approach's airport")
+  if ex then
+    check_eq(ex("FDX77 maintain 3000 until established, cleared RNAV 26 Jacksonville"), "ALT FDX77 3000")
+    check_eq(ex("FDX77 maintain 2500 until established, cleared ILS 8L Jacksonville"), "ALT FDX77 2500")
+    asked(ex("FDX77 maintain 3000 until established, cleared RNAV 26 Jacksonville quickly"), "a word after")
+  end
+end
+
+-- Cycle 35 (R71): an airspace infringed given as the reason for a removal ("busted the charlie") is set aside;
+-- three single digits typed apart before "knots" are one speed, two of them or digits before another word
+-- are not joined
+do
+  local _, ex = scene({ "CRE N733QB C172 28.0 -82.0 270 2500 100", "CRE ASQ5 CRJ7 28.3 -82.3 090 9000 250" })
+  check_eq(ex("remove N733QB, busted the charlie"), "DEL N733QB")
+  check_eq(ex("ASQ5 busted his altitude, descend 8000"), "ALT ASQ5 8000")
+  check_eq(ex("ASQ5 maintain 2 3 0 knots"), "SPD ASQ5 230")
+  check_eq(ex("ASQ5 reduce 1 9 0 kts"), "SPD ASQ5 190")
+  asked(ex("ASQ5 maintain 2 3 knots"), "two digits apart")
+end
+
+-- Cycle 35 (R71): at a waypoint of the route, "reduce speed to 190" (a bare number after "speed to") is the
+-- speed constraint there, as "reduce speed 190" is; a waypoint off the route is still asked
+do
+  local _, ex = scene({ "CRE ASH4 E75L 29.0 -81.0 200 9000 240", "DEFWPT TWIRL 28.8 -81.1", "DEFWPT FARFX 27.0 -80.0",
+    "ADDWPT ASH4 TWIRL" })
+  check_eq(ex("ASH4 at TWIRL reduce speed to 190"), "AT ASH4 TWIRL SPD 190")
+  asked(ex("ASH4 at FARFX reduce speed to 190"), "off the route")
+end
+
+-- Cycle 35 (R71): "when level at 8000" opening a clause is a level condition ("level" after "when"/"once" and
+-- before "at" is no instruction of its own); "level at 8000" alone is still the level
+do
+  local _, ex = scene({ "CRE ASH9 B739 27.7 -81.1 350 11000 250" })
+  check_eq(ex("ASH9 when level at 9000 reduce 200"), "ATALT ASH9 9000 SPD ASH9 200")
+  check_eq(ex("ASH9 once level at 9000 speed 210"), "ATALT ASH9 9000 SPD ASH9 210")
+  check_eq(ex("ASH9 level at 9000"), "ALT ASH9 9000")
+end
