@@ -2,9 +2,10 @@
 -- teacher recovers the ownship's heading from the observation alone, its
 -- episodes beat the scripted rule's, and the feature variant's episodes are the
 -- base environment's with the conflict geometry appended (worked out by hand
--- on one observation).
+-- on one observation), and envs/sector_cr_geometry.lua's are those without the costs.
 local base = squawk.gym.load(squawk.home .. "/envs/sector_cr.lua")
 local feat = squawk.gym.load(squawk.home .. "/envs/sector_cr_features.lua")
+local geom = squawk.gym.load(squawk.home .. "/envs/sector_cr_geometry.lua")
 local teacher = squawk.gym.load(squawk.home .. "/envs/policies/sector_cr_teacher.lua")
 local rule = squawk.gym.load(squawk.home .. "/envs/policies/sector_cr.lua")
 
@@ -19,6 +20,7 @@ local steps, worst, turned, sped = 0, 0, 0, 0
 for seed = 0, 2 do
   local ob = base:reset(seed)
   local of = feat:reset(seed)
+  local og = geom:reset(seed)
   for i = 1, 31 do check_eq(of[i], ob[i], "reset obs[" .. i .. "] seed " .. seed) end
   repeat
     local _, _, _, hdg = base.sim:values("KL001")
@@ -30,6 +32,9 @@ for seed = 0, 2 do
     if a[2] == 1 then sped = sped + 1 end
     local nb, rb, tb, ub = base:step(a)
     local nf, rf, tf, uf = feat:step(a)
+    local ng, rg = geom:step(a)
+    check_eq(rg, rf, "geometry variant's reward, seed " .. seed)
+    for i = 1, 76 do check_eq(ng[i], (i >= 61 and i <= 75) and 0 or nf[i], "geometry variant's obs[" .. i .. "]") end
     check_eq(rf, rb, "reward, seed " .. seed)
     check_eq(tf, tb); check_eq(uf, ub)
     for i = 1, 31 do check_eq(nf[i], nb[i], "obs[" .. i .. "] seed " .. seed) end
