@@ -4190,6 +4190,23 @@ function G:discretion_without_level()
   end
 end
 
+-- "X shall cross the fix at FL240", "cross the waypoint at 250 knots": a crossing whose place is a noun
+-- (lexicon.waypoint_nouns, "point") with no place named after it names no place, and the level or speed
+-- said with it would be flown at once: the request is asked about.
+function G:crossing_without_place()
+  if not self:said("cross crosses crossing") then return end
+  for i = 1, #self.t do
+    if self:word(i, "cross crosses crossing") then
+      local k = self:skip_fillers(i + 1)
+      if self:word(k, "the a that this") then k = k + 1 end
+      if self:word(k, "@waypoint_nouns point navaid beacon") and not self:has_ref(k, k + 2, "waypoint") then
+        self.ask = string.format("Which %s should it cross? Please name it.", self.t[k].text)
+        return
+      end
+    end
+  end
+end
+
 -- "turn left heading 140, then when able direct MABOD": a direct-to left to the pilot's discretion, said with a
 -- heading for the same aircraft, is flown later, when the pilot can; squawk would issue both at once and the
 -- direct-to would end the heading, so the request is asked about.
@@ -4817,6 +4834,7 @@ function M.translate(text, world)
   g:airline_refs()
   g:type_refs()
   g:prefix_refs()
+  g:role_refs()
   g:fix_refs()
   g:opening_right()
   g:runway_sides()
@@ -4877,6 +4895,7 @@ function M.translate(text, world)
   if not g.ask then g:passing_level_flown() end
   if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end
+  if not g.ask then g:crossing_without_place() end
   if not g.ask then g:direct_when_able() end
   g:same_again(same)
   if not g.ask then g:forgotten() end

@@ -441,6 +441,13 @@ return {
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  -- the roles of a conflict study (handlers: role_refs): "subject aircraft is X", "intruder X", "X is the
+  -- intruder" declare which aircraft "the intruder" / "the subject aircraft" means later in the request
+  role_nouns = { "intruder", "subject" },
+  -- words of a sentence that only declares roles ("Subject X, intruder Y, both FL310."; "The subject aircraft
+  -- X and the intruder Y are converging;"): with them and values, the sentence is context, never an instruction
+  role_described = { "both", "each", "at", "are", "is", "and", "the", "same", "level", "levels", "flying",
+                     "converging", "diverging", "crossing", "opposite", "co-altitude", "in", "on", "aircraft" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   -- imperative verbs that open an instruction of their own after a comma, even after traffic information
@@ -539,8 +546,11 @@ return {
   keep_verbs = { "maintain", "keep", "hold" },
   same_as = { "match", "same", "as" },
   -- switches
-  off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove", "disengage", "disengaged" },
+  off = { "off", "disable", "disabled", "deactivate", "deactivated", "hide", "stop", "don't", "dont", "without", "remove",
+          "disengage", "disengaged", "disconnect", "disconnected", "inhibit", "inhibited" },
   off_after = { "anymore", "longer" },
+  -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
+  halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },

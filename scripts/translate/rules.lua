@@ -1147,6 +1147,21 @@ return function(intent, rule, words)
     end
     return true
   end }
+  -- "Kindly provide the actual position of RYR72KP", "give the level and speed of RYR5QX": a verb of
+  -- giving, then only state nouns (joined by "and", "/" or commas) and "of" or "for" an aircraft, no value
+  -- said in the request: a question of the aircraft's state (POS)
+  rule { "provide give tell report", "pos", when = function(g, i)
+    if #g:quantities(1, #g.t + 1) > 0 then return false end
+    local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
+    if g:word(k, "the its") then k = k + 1 end
+    if g:word(k, "@present") then k = k + 1 end
+    local nouns = 0
+    while g:word(k, "position level altitude speed heading mach and / ,") do
+      if not g:word(k, "and / ,") then nouns = nouns + 1 end
+      k = k + 1
+    end
+    return nouns > 0 and g:word(k, "of for") and g:has_ref(k + 1, k + 2, "aircraft")
+  end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
