@@ -4190,16 +4190,17 @@ function G:discretion_without_level()
   end
 end
 
--- "X shall cross the fix at FL240", "cross the waypoint at 250 knots": a crossing whose place is a noun
--- (lexicon.waypoint_nouns, "point") with no place named after it names no place, and the level or speed
--- said with it would be flown at once: the request is asked about.
+-- "X shall cross the fix at FL240", "cross the waypoint at 250 knots": the verb "cross" whose place is a
+-- noun (lexicon.waypoint_nouns, "navaid", "beacon") with no place named after it names no place, and the
+-- level or speed said with it would be flown at once: the request is asked about ("a crossing point called
+-- XNG" is a noun, no crossing).
 function G:crossing_without_place()
-  if not self:said("cross crosses crossing") then return end
+  if not self:said("cross crosses") then return end
   for i = 1, #self.t do
-    if self:word(i, "cross crosses crossing") then
+    if self:word(i, "cross crosses") then
       local k = self:skip_fillers(i + 1)
       if self:word(k, "the a that this") then k = k + 1 end
-      if self:word(k, "@waypoint_nouns point navaid beacon") and not self:has_ref(k, k + 2, "waypoint") then
+      if self:word(k, "@waypoint_nouns navaid beacon") and not self:has_ref(k, k + 2, "waypoint") then
         self.ask = string.format("Which %s should it cross? Please name it.", self.t[k].text)
         return
       end
