@@ -4046,7 +4046,8 @@ function G:not_simulated()
             and (not c.after_instruction or self:instruction_before(i))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
             and (not c.subject or self:said_after_subject(i, c.subject))
-            and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
+            and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
+            and not (c.not_after and self:word(i - 1, c.not_after)) then
           class = c
           break
         end

@@ -438,7 +438,9 @@ return {
                                    DIRECT = { "direct", "directs" }, VS = { "rate" } } },
   -- the simulation itself, not an aircraft
   -- (an episode: one run of a learning environment; "env", "environment": the environment itself)
-  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment" },
+  -- (a replay: recorded traffic run again, in an analyst's words: "pause the replay", "remove X from the replay")
+  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment", "replay",
+          "playback" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- the roles of a conflict study (handlers: role_refs): "subject aircraft is X", "intruder X", "X is the
@@ -696,7 +698,8 @@ return {
     { what = "flight path angles", words = "fpa", near = { "#number" }, window = 1 },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told
     -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
-    { what = "approach sequences", words = "number", near = { "#number" }, window = 1 },
+    -- ("Mach number 0.78" names the speed's unit, no sequence)
+    { what = "approach sequences", words = "number", near = { "#number" }, window = 1, not_after = "mach" },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",

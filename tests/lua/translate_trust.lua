@@ -5594,3 +5594,14 @@ do
   check_eq(ex("give me heading and speed for AMC57 please"), "POS AMC57")
   asked(ex("give AMC57 the speed"), "no value said")
 end
+
+-- Cycle 35 (R72): a replay is the simulation ("pause the replay", "remove X from the replay"); "Mach number
+-- 0.78" is a Mach number, no approach sequence; a number after "number" alone is still a sequence
+do
+  local _, ex = scene({ "CRE AMC58 A320 50.0 14.0 090 FL330 270" })
+  check_eq(ex("Kindly pause the replay."), "HOLD")
+  check_eq(ex("please take AMC58 out of the replay"), "DEL AMC58")
+  check_eq(ex("run the replay 3 times faster"), "DTMULT 3")
+  check_eq(ex("AMC58 shall maintain Mach number 0.79"), "SPD AMC58 M0.79")
+  check_eq(ex("AMC58 number 2 for the approach"), "")  -- (not simulated: nothing sent)
+end
