@@ -52,7 +52,7 @@ return {
     -- closed-class English, which carries no instruction of its own
     articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
         "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
-        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further",
+        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "complete", "further",
         "whatever" },
     pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
@@ -124,6 +124,8 @@ return {
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
         -- a request granted, a report acknowledged ("Mach .84 approved", "position report received")
         "approved", "received",
+        -- an airspeed said as indicated ("fly 250 knots indicated": squawk's speeds are calibrated, the same)
+        "indicated",
         -- a clearance given again in place of the one before ("recleared direct CAPER", "re-cleared FL250")
         "recleared", "reclear",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")

@@ -5605,3 +5605,11 @@ do
   check_eq(ex("AMC58 shall maintain Mach number 0.79"), "SPD AMC58 M0.79")
   check_eq(ex("AMC58 number 2 for the approach"), "")  -- (not simulated: nothing sent)
 end
+
+-- Cycle 35 (R72): "the complete route" is the whole route; a speed said "indicated" is the speed flown
+do
+  local _, ex = scene({ "CRE AMC59 A320 50.0 14.0 090 FL330 270", "DEFWPT CMPA 50.2 14.5", "ADDWPT AMC59 CMPA" })
+  check_eq(ex("kindly delete the complete route of AMC59"), "DELRTE AMC59")
+  check_eq(ex("AMC59 shall fly 260 knots indicated"), "SPD AMC59 260")
+  asked(ex("AMC59 complete"), "no instruction")
+end
