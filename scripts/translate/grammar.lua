@@ -4620,6 +4620,13 @@ end
 -- and the ordinals of the commas dashes became are returned as a set (G:in_reason reads commentary after
 -- them). A comma between digits ("6,000") is no comma token and is not counted.
 local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
+-- lexicon.spelled_out as case-blind Lua patterns over whole words, built once: { words, pattern, short }
+local SPELLED_OUT = {}
+for words, short in pairs(lexicon.spelled_out) do
+  local pattern = words:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end):gsub(" ", "%%s+")
+  SPELLED_OUT[#SPELLED_OUT + 1] = { words = words, pattern = "%f[%a]" .. pattern .. "%f[%A]", short = short }
+end
+
 local function set_apart(text)
   if not text:find("%s%-") and not text:find("\xE2\x80[\x93\x94]") then return text, nil end
   local out, marks, n, i = {}, {}, 0, 1
@@ -4801,6 +4808,10 @@ function M.translate(text, world)
         if a.id:lower() == id:lower() then return id .. space .. "m." .. digits end
       end
     end)
+  end
+  -- "the closest point of approach": an abbreviation's words said out (lexicon.spelled_out), read as it
+  for _, x in ipairs(SPELLED_OUT) do
+    if text:lower():find(x.words, 1, true) then text = text:gsub(x.pattern, x.short) end
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)

@@ -445,6 +445,9 @@ return {
           "playback" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  -- an abbreviation's words said out, read as the abbreviation ("resume navigation after passing the closest
+  -- point of approach" is "... the CPA")
+  spelled_out = { ["closest point of approach"] = "CPA" },
   -- the roles of a conflict study (handlers: role_refs): "subject aircraft is X", "intruder X", "X is the
   -- intruder" declare which aircraft "the intruder" / "the subject aircraft" means later in the request
   role_nouns = { "intruder", "subject" },

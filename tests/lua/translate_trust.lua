@@ -5613,3 +5613,10 @@ do
   check_eq(ex("AMC59 shall fly 260 knots indicated"), "SPD AMC59 260")
   asked(ex("AMC59 complete"), "no instruction")
 end
+
+-- Cycle 35 (R72): "the closest point of approach" is the CPA
+do
+  local _, ex = scene({ "CRE AMC60 A320 50.0 14.0 090 FL330 270" })
+  check_eq(ex("aircraft shall resume navigation once past the Closest Point of Approach"), "RESNAV PASTCPA")
+  check_eq(ex("resume navigation past the cpa"), "RESNAV PASTCPA")
+end
