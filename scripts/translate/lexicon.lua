@@ -176,6 +176,8 @@ return {
         "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
         -- the dimensions of a setting ("the vertical size of the PZ")
         "size", "sizes", "dimension", "dimensions", "extent",
+        -- what a clearance is as a move ("the resolution manoeuvre", "avoidance maneuver")
+        "manoeuvre", "manoeuvres", "maneuver", "maneuvers",
         -- an aircraft's present course described ("the Vueling's drifting off its route")
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",

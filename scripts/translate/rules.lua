@@ -1611,6 +1611,21 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "For the resolution manoeuvre LOT3CM shall turn 15 degrees right", "Resolution: aircraft shall resume
+  -- navigation after passing the CPA": the noun naming what an aircraft's instruction said in the same request
+  -- is for (a manoeuvre after it, or a heading closed by ":"), no setting of its own
+  local AIRCRAFT_INTENTS = { alt = true, hdg = true, spd = true, vs = true, resnav = true, lnav = true, direct = true }
+  rule { "resolution", false, when = function(g, i)
+    local t = g.t[i + 1]
+    if not (g:word(i + 1, "manoeuvre maneuver manoeuvres maneuvers")
+        or (t and t.kind == "punct" and t.text == ":" and g:skip_fillers(1) == i)) then
+      return false
+    end
+    for k = i + 2, #g.t do
+      if AIRCRAFT_INTENTS[g:intent_at(k) or ""] then return true end
+    end
+    return false
+  end }
   -- "resolution only past CPA", "keep resolving until past CPA": when a resolution ends and navigation resumes
   -- (RESNAV PASTCPA); "past" before "CPA" names it
   rule { "resolution resolutions resolving reso", false, near = { 4, "past" }, when = function(g, i)

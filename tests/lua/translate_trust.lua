@@ -5620,3 +5620,12 @@ do
   check_eq(ex("aircraft shall resume navigation once past the Closest Point of Approach"), "RESNAV PASTCPA")
   check_eq(ex("resume navigation past the cpa"), "RESNAV PASTCPA")
 end
+
+-- Cycle 35 (R72): "resolution" naming what an aircraft's instruction is for ("for the resolution manoeuvre",
+-- "Resolution:" heading the request) sets no method; said alone with a method it still does
+do
+  local _, ex = scene({ "CRE AMC61 A320 50.0 14.0 090 FL330 270" })
+  check_eq(ex("As the resolution manoeuvre AMC61 shall turn 20 degrees left."), "HDG AMC61 70 LEFT")
+  check_eq(ex("Resolution: AMC61 shall descend to FL310."), "ALT AMC61 FL310")
+  check_eq(ex("Resolution: MVP"), "RESO MVP")
+end
