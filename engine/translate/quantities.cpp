@@ -125,9 +125,13 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       if (q.value < 1000.0) q.value *= 100.0;
       --p;
       if (prev({"flight"})) --p;
-    } else if (prev({"mach", "m"}) || (prev({"mark"}) && n->has_decimal && n->value < 1.0)) {  // "mark point seven" = Mach
+    } else if (prev({"mach", "m"}) ||
+               (prev({"mark"}) && n->has_decimal && n->value < 1.0) ||  // "mark point seven" = Mach
+               (prev({"number"}) && p > floor + 1 &&
+                word_at(t, p - 2, {"mach"}))) {  // "Mach number 0.78"
       q.kind = QKind::kMach;
       if (q.value >= 1.0 && !n->has_decimal) q.value /= 100.0;
+      if (prev({"number"})) --p;
       --p;
     } else if (prev({"heading", "hdg", "headings"})) {
       q.kind = QKind::kHeading;
@@ -136,8 +140,8 @@ std::vector<Quantity> extract_quantities(const std::vector<Token>& t, size_t beg
       q.kind = QKind::kLat;
     } else if (prev({"longitude", "lon", "long"})) {
       q.kind = QKind::kLon;
-    } else if (p > floor && t[i].kind == TokKind::kNumber && t[i].glued && hemisphere(t, p - 1, lat) != 0 &&
-               t[p - 1].text.size() == 1) {
+    } else if (p > floor && t[i].kind == TokKind::kNumber && t[i].glued &&
+               hemisphere(t, p - 1, lat) != 0 && t[p - 1].text.size() == 1) {
       set_position(q, lat, hemisphere(t, p - 1, lat), t);
       --p;
     }

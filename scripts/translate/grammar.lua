@@ -4067,7 +4067,8 @@ function G:not_simulated()
             and (not c.after_instruction or self:instruction_before(i))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
             and (not c.subject or self:said_after_subject(i, c.subject))
-            and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before)) then
+            and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
+            and not (c.not_after and self:word(i - 1, c.not_after)) then
           class = c
           break
         end
@@ -4206,6 +4207,24 @@ function G:discretion_without_level()
             #ids == 1 and ids[1].name or "the aircraft", (self.t[i].text:gsub("ing$", "")))
           return
         end
+      end
+    end
+  end
+end
+
+-- "X shall cross the fix at FL240", "cross the waypoint at 250 knots": the verb "cross" whose place is a
+-- noun (lexicon.waypoint_nouns, "navaid", "beacon") with no place named after it names no place, and the
+-- level or speed said with it would be flown at once: the request is asked about ("a crossing point called
+-- XNG" is a noun, no crossing).
+function G:crossing_without_place()
+  if not self:said("cross crosses") then return end
+  for i = 1, #self.t do
+    if self:word(i, "cross crosses") then
+      local k = self:skip_fillers(i + 1)
+      if self:word(k, "the a that this") then k = k + 1 end
+      if self:word(k, "@waypoint_nouns navaid beacon") and not self:has_ref(k, k + 2, "waypoint") then
+        self.ask = string.format("Which %s should it cross? Please name it.", self.t[k].text)
+        return
       end
     end
   end
@@ -4622,6 +4641,13 @@ end
 -- and the ordinals of the commas dashes became are returned as a set (G:in_reason reads commentary after
 -- them). A comma between digits ("6,000") is no comma token and is not counted.
 local DASHES = { "^%s+%-%-?%s+", "^%s*\xE2\x80[\x93\x94]%s*" }
+-- lexicon.spelled_out as case-blind Lua patterns over whole words, built once: { words, pattern, short }
+local SPELLED_OUT = {}
+for words, short in pairs(lexicon.spelled_out) do
+  local pattern = words:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end):gsub(" ", "%%s+")
+  SPELLED_OUT[#SPELLED_OUT + 1] = { words = words, pattern = "%f[%a]" .. pattern .. "%f[%A]", short = short }
+end
+
 local function set_apart(text)
   if not text:find("%s%-") and not text:find("\xE2\x80[\x93\x94]") then return text, nil end
   local out, marks, n, i = {}, {}, 0, 1
@@ -4804,6 +4830,10 @@ function M.translate(text, world)
       end
     end)
   end
+  -- "the closest point of approach": an abbreviation's words said out (lexicon.spelled_out), read as it
+  for _, x in ipairs(SPELLED_OUT) do
+    if text:lower():find(x.words, 1, true) then text = text:gsub(x.pattern, x.short) end
+  end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   text = spelled_registrations(text, world.aircraft)
@@ -4838,6 +4868,7 @@ function M.translate(text, world)
   g:airline_refs()
   g:type_refs()
   g:prefix_refs()
+  g:role_refs()
   g:fix_refs()
   g:opening_right()
   g:runway_sides()
@@ -4898,6 +4929,7 @@ function M.translate(text, world)
   if not g.ask then g:passing_level_flown() end
   if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end
+  if not g.ask then g:crossing_without_place() end
   if not g.ask then g:direct_when_able() end
   g:same_again(same)
   if not g.ask then g:forgotten() end

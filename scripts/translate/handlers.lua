@@ -83,14 +83,16 @@ end
 -- +1 for up/more words, -1 for down/less words, 0 when none; those after a correction, then those in the
 -- instruction's own clause (from the last punctuation before its trigger)
 -- first: "the Shuttle is a bit slow, could you speed it up by 40 knots" is up.
--- (a word inside a callsign is no direction: "Ryanair 3UP descend FL90" descends)
+-- (a word inside a callsign is no direction: "Ryanair 3UP descend FL90" descends; nor is the object of a
+-- verb of lexicon.halted, "stop its climb and descend with 500 feet per minute" descends)
 function m:direction(s)
   local names = self:refs_in(s.b, s.e, "aircraft")
   local function said(i, list)
     for _, r in ipairs(names) do
       if i >= r.b and i < r.e then return false end
     end
-    return self:word(i, list)
+    local v = self:word(i - 1, "its the his her their your") and i - 2 or i - 1
+    return self:word(i, list) and not self:word(v, "@halted")
   end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
   for i = self:said("@correction") and s.e - 1 or 0, s.b, -1 do
@@ -114,7 +116,8 @@ end
 
 -- 1 on, 0 off, -1 not said.
 function m:on_off(s)
-  local b = (s.b > 1 and self:word(s.b - 1, "off on")) and s.b - 1 or s.b
+  -- (the switching word just before the segment counts: "disconnect LNAV of X")
+  local b = (s.b > 1 and self:word(s.b - 1, "off on @off @on")) and s.b - 1 or s.b
   -- "drifting off its route, put it back on LNAV": switched back on, whatever went off before
   local back = self:find_word(b, s.e, "back")
   if back < s.e and self:word(back + 1, "on") then return 1 end
@@ -684,6 +687,85 @@ function m:prefix_refs()
       end
     end
     i = self:insert_ref(fits, i, i + 2, "by_prefix")
+  end
+end
+
+-- Roles of a conflict study (lexicon.role_nouns). A declaration names the aircraft a role stands for:
+-- "intruder WZZ1652", "subject aircraft is LOT3CM", "WZZ1652 is the intruder". A mention of the role later
+-- in the request ("turn the intruder left": "the", the role, an optional aircraft noun, no callsign after)
+-- becomes a reference to that aircraft (by_role = true); a role declared for two aircraft binds neither. A
+-- sentence (up to ". ; ! ?") holding only declarations, values and lexicon.role_described words, with an
+-- aircraft named or mentioned after it, is context: its references are dropped and its
+-- words accounted for ("Subject LZB412, intruder AUA651, both FL310." clears no one).
+local ROLE_ENDS = { ["."] = true, [";"] = true, ["!"] = true, ["?"] = true }
+function m:role_refs()
+  if not self:said("@role_nouns") then return end
+  local bound, declared, spans = {}, {}, {}
+  local function declare(role, r, b, e)
+    if bound[role] and bound[role] ~= r.name then bound[role] = false elseif bound[role] == nil then bound[role] = r.name end
+    declared[r] = true
+    spans[#spans + 1] = { b = b, e = e }
+  end
+  for i = 1, #self.t do
+    if self:word(i, "@role_nouns") and not self:has_ref(i, i + 1, "aircraft") then
+      local role = self.t[i].text
+      local k = self:word(i + 1, "@aircraft_nouns") and i + 2 or i + 1
+      local is = self:word(k, "is") and k + 1 or k
+      local after = self:refs_in(is, is + 1, "aircraft")[1]
+      local before = self:word(i - 1, "the") and i - 2 or i - 1
+      local by = self:word(before, "is") and self:refs_in(1, before, "aircraft")
+      by = by and by[#by]
+      if after and after.exists then
+        declare(role, after, self:word(i - 1, "the") and i - 1 or i, after.e)
+      elseif by and by.exists and by.e == before then
+        declare(role, by, by.b, k)
+      end
+    end
+  end
+  -- mentions: "the intruder", "the subject aircraft" not part of a declaration
+  local mentions = {}
+  for i = 2, #self.t do
+    local role = self.t[i].text
+    local k = self:word(i + 1, "@aircraft_nouns") and i + 2 or i + 1
+    if bound[role] ~= nil and self:word(i, "@role_nouns") and self:word(i - 1, "the") and not self:word(i - 2, "is")
+        and not self:word(k, "is") and not self:has_ref(i - 1, k + 1, "aircraft") then
+      if not bound[role] then
+        return self:need(string.format("Which aircraft is the %s? It was declared for two.", role))
+      end
+      mentions[#mentions + 1] = { name = bound[role], b = i - 1, e = k }
+    end
+  end
+  for _, x in ipairs(mentions) do self:insert_ref({ x.name }, x.b, x.e, "by_role") end
+  -- sentences that only declare
+  local function in_span(i)
+    for _, sp in ipairs(spans) do if i >= sp.b and i < sp.e then return true end end
+    return false
+  end
+  local b = 1
+  while b <= #self.t do
+    local e = b
+    while e <= #self.t and not (self.t[e].kind == "punct" and ROLE_ENDS[self.t[e].text]) do e = e + 1 end
+    local valued, only, any = {}, true, false
+    for _, q in ipairs(self:quantities(b, e)) do for x = q.b, q.e - 1 do valued[x] = true end end
+    for x = b, e - 1 do
+      any = any or in_span(x)
+      local t = self.t[x]
+      only = only and (in_span(x) or valued[x] or t.kind == "punct" or self:word(x, "@role_described"))
+    end
+    local again = false
+    if any and only and e < #self.t then
+      for _, r in ipairs(self.refs) do again = again or (r.kind == "aircraft" and r.b > e) end
+    end
+    if again then
+      self:mark_used(b, e + 1)
+      for x = b, e do self.noted[x] = true end
+      local refs = {}
+      for _, r in ipairs(self.refs) do
+        if r.b < b or r.b > e then refs[#refs + 1] = r end
+      end
+      self.refs = refs
+    end
+    b = e + 1
   end
 end
 

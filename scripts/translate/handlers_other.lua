@@ -2866,7 +2866,7 @@ return function(H, f, compass)
       return self:mark_used(s.trig, s.trig + 2)
     end
     local all = #self.t + 1
-    local off = self:word_in(1, all, "no not off without don't dont never")
+    local off = self:word_in(1, all, "@off no not never")
     local only = self:word_in(1, all, "only")
     -- ("vertical resolutions only": no method of squawk's; resolutions are horizontal, or horizontal
     -- with vertical speed too)

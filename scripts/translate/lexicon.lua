@@ -52,7 +52,7 @@ return {
     -- closed-class English, which carries no instruction of its own
     articles = { "a", "an", "the", "this", "that", "these", "those", "some", "any", "each", "every", "all", "both",
         "either", "neither", "another", "other", "others", "such", "what", "which", "whose", "much", "many",
-        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "further",
+        "more", "most", "few", "less", "least", "several", "enough", "own", "same", "whole", "entire", "complete", "further",
         "whatever" },
     pronouns = { "i", "me", "my", "mine", "myself", "you", "your", "yours", "yourself", "we", "us", "our", "ours",
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
@@ -126,6 +126,8 @@ return {
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
         -- a request granted, a report acknowledged ("Mach .84 approved", "position report received")
         "approved", "received",
+        -- an airspeed said as indicated ("fly 250 knots indicated": squawk's speeds are calibrated, the same)
+        "indicated",
         -- a clearance given again in place of the one before ("recleared direct CAPER", "re-cleared FL250")
         "recleared", "reclear",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
@@ -176,6 +178,8 @@ return {
         "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
         -- the dimensions of a setting ("the vertical size of the PZ")
         "size", "sizes", "dimension", "dimensions", "extent",
+        -- what a clearance is as a move ("the resolution manoeuvre", "avoidance maneuver")
+        "manoeuvre", "manoeuvres", "maneuver", "maneuvers",
         -- an aircraft's present course described ("the Vueling's drifting off its route")
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
@@ -449,9 +453,21 @@ return {
                                    DIRECT = { "direct", "directs" }, VS = { "rate" } } },
   -- the simulation itself, not an aircraft
   -- (an episode: one run of a learning environment; "env", "environment": the environment itself)
-  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment" },
+  -- (a replay: recorded traffic run again, in an analyst's words: "pause the replay", "remove X from the replay")
+  sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment", "replay",
+          "playback" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  -- an abbreviation's words said out, read as the abbreviation ("resume navigation after passing the closest
+  -- point of approach" is "... the CPA")
+  spelled_out = { ["closest point of approach"] = "CPA" },
+  -- the roles of a conflict study (handlers: role_refs): "subject aircraft is X", "intruder X", "X is the
+  -- intruder" declare which aircraft "the intruder" / "the subject aircraft" means later in the request
+  role_nouns = { "intruder", "subject" },
+  -- words of a sentence that only declares roles ("Subject X, intruder Y, both FL310."; "The subject aircraft
+  -- X and the intruder Y are converging;"): with them and values, the sentence is context, never an instruction
+  role_described = { "both", "each", "at", "are", "is", "and", "the", "same", "level", "levels", "flying",
+                     "converging", "diverging", "crossing", "opposite", "co-altitude", "in", "on", "aircraft" },
   -- aircraft counted with no callsign ("spawn 3 aircraft", "create 20 agents"): random traffic (MCRE)
   counted_aircraft = { "aircraft", "planes", "airplanes", "flights", "agents", "jets", "airliners", "aeroplanes" },
   -- imperative verbs that open an instruction of their own after a comma, even after traffic information
@@ -550,8 +566,11 @@ return {
   keep_verbs = { "maintain", "keep", "hold" },
   same_as = { "match", "same", "as" },
   -- switches
-  off = { "off", "disable", "deactivate", "hide", "stop", "don't", "dont", "without", "remove", "disengage", "disengaged" },
+  off = { "off", "disable", "disabled", "deactivate", "deactivated", "hide", "stop", "don't", "dont", "without", "remove",
+          "disengage", "disengaged", "disconnect", "disconnected", "inhibit", "inhibited" },
   off_after = { "anymore", "longer" },
+  -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
+  halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
@@ -698,7 +717,8 @@ return {
     { what = "flight path angles", words = "fpa", near = { "#number" }, window = 1 },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told
     -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
-    { what = "approach sequences", words = "number", near = { "#number" }, window = 1 },
+    -- ("Mach number 0.78" names the speed's unit, no sequence)
+    { what = "approach sequences", words = "number", near = { "#number" }, window = 1, not_after = "mach" },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",

@@ -1147,6 +1147,21 @@ return function(intent, rule, words)
     end
     return true
   end }
+  -- "Kindly provide the actual position of RYR72KP", "give the level and speed of RYR5QX": a verb of
+  -- giving, then only state nouns (joined by "and", "/" or commas) and "of" or "for" an aircraft, no value
+  -- said in the request: a question of the aircraft's state (POS)
+  rule { "provide give tell report", "pos", when = function(g, i)
+    if #g:quantities(1, #g.t + 1) > 0 then return false end
+    local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
+    if g:word(k, "the its") then k = k + 1 end
+    if g:word(k, "@present") then k = k + 1 end
+    local nouns = 0
+    while g:word(k, "position level altitude speed heading mach and / ,") do
+      if not g:word(k, "and / ,") then nouns = nouns + 1 end
+      k = k + 1
+    end
+    return nouns > 0 and g:word(k, "of for") and g:has_ref(k + 1, k + 2, "aircraft")
+  end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
@@ -1593,6 +1608,21 @@ return function(intent, rule, words)
     for k = 1, i - 2 do
       local intent = g:intent_at(k)
       if intent == "alt" or intent == "hdg" or intent == "spd" or intent == "vs" then return true end
+    end
+    return false
+  end }
+  -- "For the resolution manoeuvre LOT3CM shall turn 15 degrees right", "Resolution: aircraft shall resume
+  -- navigation after passing the CPA": the noun naming what an aircraft's instruction said in the same request
+  -- is for (a manoeuvre after it, or a heading closed by ":"), no setting of its own
+  local AIRCRAFT_INTENTS = { alt = true, hdg = true, spd = true, vs = true, resnav = true, lnav = true, direct = true }
+  rule { "resolution", false, when = function(g, i)
+    local t = g.t[i + 1]
+    if not (g:word(i + 1, "manoeuvre maneuver manoeuvres maneuvers")
+        or (t and t.kind == "punct" and t.text == ":" and g:skip_fillers(1) == i)) then
+      return false
+    end
+    for k = i + 2, #g.t do
+      if AIRCRAFT_INTENTS[g:intent_at(k) or ""] then return true end
     end
     return false
   end }

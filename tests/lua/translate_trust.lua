@@ -5618,3 +5618,85 @@ do
   check_eq(ex("ASH9 once level at 9000 speed 210"), "ATALT ASH9 9000 SPD ASH9 210")
   check_eq(ex("ASH9 level at 9000"), "ALT ASH9 9000")
 end
+
+-- Cycle 35 (R72): roles of a conflict study declared before the instruction ("intruder is X", "subject
+-- aircraft X", "X is the intruder") say which aircraft "the intruder" / "the subject aircraft" means; the
+-- declaration instructs no one, nor does a sentence that only describes the pair ("both FL310")
+do
+  local _, ex = scene({ "CRE CSA4K A320 50.0 14.0 090 FL300 270", "CRE TVS22 B738 50.1 14.6 270 FL300 270" })
+  check_eq(ex("The subject aircraft is CSA4K and the intruder is TVS22. Please turn the intruder right by 20 degrees."),
+    "HDG TVS22 290 RIGHT")
+  check_eq(ex("Intruder TVS22, subject CSA4K, both at FL300. The subject aircraft shall descend to FL280."),
+    "ALT CSA4K FL280")
+  check_eq(ex("TVS22 is the intruder; the intruder shall climb FL320"), "ALT TVS22 FL320")
+  check_eq(ex("The subject aircraft CSA4K and the intruder TVS22 are converging; turn CSA4K left 10 degrees."),
+    "HDG CSA4K 80 LEFT")
+  -- a role no declaration binds, or one declared for both aircraft, names no one
+  asked(ex("Intruder CSA4K, intruder TVS22. Turn the intruder left 20 degrees."), "a role declared twice")
+end
+
+-- Cycle 35 (R72): the direction an instruction stops is not the one it gives ("stop the climb and descend")
+do
+  local _, ex = scene({ "CRE HVN7Q A321 50.0 14.0 090 FL250 270" })
+  check_eq(ex("HVN7Q stop your climb and descend at 800 feet per minute"), "VS HVN7Q -800")
+  check_eq(ex("HVN7Q cease the descent, climb with 1200 feet per minute"), "VS HVN7Q 1200")
+end
+
+-- Cycle 35 (R72): verbs that switch off ("disconnect", "disable", "inhibit") are never dropped
+do
+  local _, ex = scene({ "CRE AMC55 A320 50.0 14.0 090 FL250 270" })
+  check_eq(ex("please disconnect the LNAV of AMC55"), "LNAV AMC55 OFF")
+  check_eq(ex("inhibit VNAV for AMC55"), "VNAV AMC55 OFF")
+  check_eq(ex("disable the vertical resolution manoeuvres"), "RMETHV OFF")
+  check_eq(ex("enable vertical resolution manoeuvres"), "RMETHV V/S")
+end
+
+-- Cycle 35 (R72): a crossing at a fix that is not named is asked, never flown as a level at once
+do
+  local _, ex = scene({ "CRE AMC56 A320 50.0 14.0 090 FL250 270" })
+  asked(ex("AMC56 shall cross the waypoint at FL200"), "no fix named")
+  asked(ex("AMC56 to cross the fix at 250 knots"), "no fix named")
+end
+
+-- Cycle 35 (R72): "provide / give the [actual] position, level and speed of X" asks for its state (POS)
+do
+  local _, ex = scene({ "CRE AMC57 A320 50.0 14.0 090 FL250 270" })
+  check_eq(ex("Kindly provide the present altitude of AMC57."), "POS AMC57")
+  check_eq(ex("give me heading and speed for AMC57 please"), "POS AMC57")
+  asked(ex("give AMC57 the speed"), "no value said")
+end
+
+-- Cycle 35 (R72): a replay is the simulation ("pause the replay", "remove X from the replay"); "Mach number
+-- 0.78" is a Mach number, no approach sequence; a number after "number" alone is still a sequence
+do
+  local _, ex = scene({ "CRE AMC58 A320 50.0 14.0 090 FL330 270" })
+  check_eq(ex("Kindly pause the replay."), "HOLD")
+  check_eq(ex("please take AMC58 out of the replay"), "DEL AMC58")
+  check_eq(ex("run the replay 3 times faster"), "DTMULT 3")
+  check_eq(ex("AMC58 shall maintain Mach number 0.79"), "SPD AMC58 M0.79")
+  check_eq(ex("AMC58 number 2 for the approach"), "")  -- (not simulated: nothing sent)
+end
+
+-- Cycle 35 (R72): "the complete route" is the whole route; a speed said "indicated" is the speed flown
+do
+  local _, ex = scene({ "CRE AMC59 A320 50.0 14.0 090 FL330 270", "DEFWPT CMPA 50.2 14.5", "ADDWPT AMC59 CMPA" })
+  check_eq(ex("kindly delete the complete route of AMC59"), "DELRTE AMC59")
+  check_eq(ex("AMC59 shall fly 260 knots indicated"), "SPD AMC59 260")
+  asked(ex("AMC59 complete"), "no instruction")
+end
+
+-- Cycle 35 (R72): "the closest point of approach" is the CPA
+do
+  local _, ex = scene({ "CRE AMC60 A320 50.0 14.0 090 FL330 270" })
+  check_eq(ex("aircraft shall resume navigation once past the Closest Point of Approach"), "RESNAV PASTCPA")
+  check_eq(ex("resume navigation past the cpa"), "RESNAV PASTCPA")
+end
+
+-- Cycle 35 (R72): "resolution" naming what an aircraft's instruction is for ("for the resolution manoeuvre",
+-- "Resolution:" heading the request) sets no method; said alone with a method it still does
+do
+  local _, ex = scene({ "CRE AMC61 A320 50.0 14.0 090 FL330 270" })
+  check_eq(ex("As the resolution manoeuvre AMC61 shall turn 20 degrees left."), "HDG AMC61 70 LEFT")
+  check_eq(ex("Resolution: AMC61 shall descend to FL310."), "ALT AMC61 FL310")
+  check_eq(ex("Resolution: MVP"), "RESO MVP")
+end
