@@ -26,7 +26,7 @@ return {
       "direction", "same", "match", "double", "present", "current", "vectors", "vector", "traffic", "approach",
       "departure", "contact", "radar", "correction", "negative", "immediately", "until", "advised", "then",
       "when", "once", "reaches", "passes", "through", "below", "above", "fpm", "knot", "airspeed", "sink",
-      "plan", "departed", "shift", "activate", "deactivate", "unpause", "start", "over", "real", "time", "half",
+      "plan", "departed", "shift", "activate", "chuck", "deactivate", "unpause", "start", "over", "real", "time", "half",
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
       "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",

@@ -574,7 +574,7 @@ return function(intent, rule, words)
   end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
-  rule { "create cre spawn generate add", "mcre", near = { 3, "random" } }
+  rule { "create cre spawn generate add chuck", "mcre", near = { 3, "random" } }
   rule { "mcre", "mcre" }
   -- "random traffic, 20 aircraft", "random traffic, 12 b738": the count said after, of aircraft or of a type
   rule { "random", "mcre", next = "traffic", when = function(g, i)
@@ -1305,6 +1305,12 @@ return function(intent, rule, words)
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
+  -- "kick off the episode", "kick off the sim": the run started, said of the simulation
+  rule { "kick", "op", next = "off", near = { 3, "@sim" } }
+  -- "let it rip": the run started (said with no aircraft named; with one it is asked)
+  rule { "rip", "op", when = function(g, i)
+    return g:word(i - 1, "it") and g:word(i - 2, "let") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "let it go", "let it run", "let the sim run": the clock started, said alone or as a clause of its own
   rule { "go run", "op", when = function(g, i)
     local b = g:word(i - 1, "it") and i - 1 or (g:word(i - 1, "@sim") and g:word(i - 2, "the") and i - 2 or nil)

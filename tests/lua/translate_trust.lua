@@ -5721,3 +5721,14 @@ do
     "two targets")
   check_eq(ex("intruder on ANZ34: IN3, B738, 60 degrees, CPA 0, 240 s to LoS"), "CRECONFS IN3 B738 ANZ34 60 0 240")
 end
+
+-- Cycle 36 (R74): Australian slang for starting the run and random traffic: "kick off the episode", "let it
+-- rip" (no aircraft named) are OP; "chuck in 6 random aircraft" is MCRE. Where the class stops it is asked.
+do
+  local _, ex = scene({ "CRE ANZ35 B789 -30.0 150.0 090 FL370 290" })
+  check_eq(ex("kick off the sim"), "OP")
+  check_eq(ex("RESO MVP then let it rip"), "RESO MVP ; OP")
+  check_eq(ex("chuck in 6 random aircraft"), "MCRE 6")
+  asked(ex("kick off"), "no simulation said")
+  asked(ex("ANZ35 let it rip"), "an aircraft named")
+end
