@@ -1176,6 +1176,11 @@ return function(intent, rule, words)
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
   end }
   rule { "move mv reposition teleport shift place relocate", "move" }
+  -- "pop QFA12 over to -27.3 152.8": an aircraft flying "popped over to" a place is moved there
+  rule { "pop", "move", when = function(g, i)
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
+    return r ~= nil and r.exists and g:word(r.e, "over") and g:word(r.e + 1, "to")
+  end }
   rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course route normal real" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place

@@ -5732,3 +5732,11 @@ do
   asked(ex("kick off"), "no simulation said")
   asked(ex("ANZ35 let it rip"), "an aircraft named")
 end
+
+-- Cycle 36 (R74): an aircraft flying "popped over to" a position is moved there (MOVE); "pop" without
+-- "over to" is still asked
+do
+  local _, ex = scene({ "CRE ANZ36 B789 -30.0 150.0 090 FL370 290" })
+  check_eq(ex("pop ANZ36 over to -29.5 151.25"), "MOVE ANZ36 -29.5 151.25")
+  asked(ex("pop ANZ36 to -29.5 151.25"), "no 'over to'")
+end
