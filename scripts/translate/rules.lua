@@ -503,6 +503,12 @@ return function(intent, rule, words)
     local k = g:find_word(i + 1, e, "towards toward direction")
     return k < e and (not g:word(k, "direction") or g:word(k + 1, "of")) and not g:intent_at(k)
   end }
+  -- "point JST501 to 200 degrees", "point it onto 090 degrees": an aircraft pointed at a number of degrees
+  rule { "point", "hdg", when = function(g, i)
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
+    local k = r and r.e or (g:word(i + 1, "it") and i + 2)
+    return k and g:word(k, "to onto") and g:number_at(k + 1) and g:word(k + 2, "degrees degree deg") or false
+  end }
   rule { "due", "hdg", next = "@compass" }
   rule { "go turn", "hdg", next = "@compass" }
   rule { "left right", "hdg", prev = { 1, "go bear then" } }  -- "go left then climb", "speed 250, then left": a turn

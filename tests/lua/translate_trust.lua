@@ -5740,3 +5740,11 @@ do
   check_eq(ex("pop ANZ36 over to -29.5 151.25"), "MOVE ANZ36 -29.5 151.25")
   asked(ex("pop ANZ36 to -29.5 151.25"), "no 'over to'")
 end
+
+-- Cycle 36 (R74): an aircraft "pointed to" a number of degrees flies that heading; the number without
+-- "degrees" is still asked
+do
+  local _, ex = scene({ "CRE ANZ37 B789 -30.0 150.0 090 FL370 290" })
+  check_eq(ex("point ANZ37 to 215 degrees"), "HDG ANZ37 215")
+  asked(ex("point ANZ37 to 215"), "no degrees")
+end
