@@ -715,10 +715,16 @@ function m:role_refs()
       local before = self:word(i - 1, "the") and i - 2 or i - 1
       local by = self:word(before, "is") and self:refs_in(1, before, "aircraft")
       by = by and by[#by]
+      -- ("..., VOZ917 the intruder: ...": the callsign and the role set apart by punctuation, no "is")
+      local appos = self:word(i - 1, "the") and self:refs_in(1, i - 1, "aircraft")
+      appos = appos and appos[#appos]
+      local apart = function(x) return x < 1 or x > #self.t or self.t[x].kind == "punct" end
       if after and after.exists then
         declare(role, after, self:word(i - 1, "the") and i - 1 or i, after.e)
       elseif by and by.exists and by.e == before then
         declare(role, by, by.b, k)
+      elseif appos and appos.exists and appos.e == i - 1 and apart(appos.b - 1) and apart(k) then
+        declare(role, appos, appos.b, k)
       end
     end
   end

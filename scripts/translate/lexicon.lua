@@ -463,9 +463,9 @@ return {
   spelled_out = { ["closest point of approach"] = "CPA", ["own ship"] = "ownship" },
   -- the roles of a conflict study (handlers: role_refs): "subject aircraft is X", "intruder X", "X is the
   -- intruder" declare which aircraft "the intruder" / "the subject aircraft" means later in the request
-  role_nouns = { "intruder", "subject", "ownship", "ego" },
+  role_nouns = { "intruder", "subject", "ownship", "ego", "agent" },
   -- roles mentioned without "the" ("give ownship heading 240")
-  role_bare = { "ownship", "ego" },
+  role_bare = { "ownship", "ego", "agent" },
   -- words of a sentence that only declares roles ("Subject X, intruder Y, both FL310."; "The subject aircraft
   -- X and the intruder Y are converging;"): with them and values, the sentence is context, never an instruction
   role_described = { "both", "each", "at", "are", "is", "and", "the", "same", "level", "levels", "flying",

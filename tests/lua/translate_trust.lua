@@ -5748,3 +5748,14 @@ do
   check_eq(ex("point ANZ37 to 215 degrees"), "HDG ANZ37 215")
   asked(ex("point ANZ37 to 215"), "no degrees")
 end
+
+-- Cycle 36 (R74): "agent" as a study role (mentioned with or without "the"), and a role set beside its
+-- callsign by punctuation alone ("..., TGW10 the intruder: ..."); a callsign and role inside an instruction
+-- ("turn TGW10 the intruder left") is still that instruction's addressee
+do
+  local _, ex = scene({ "CRE ANZ38 B789 -30.0 150.0 090 FL370 290", "CRE TGW10 A320 -30.2 150.6 270 FL370 280" })
+  check_eq(ex("agent ANZ38, intruder TGW10 - give agent heading 120"), "HDG ANZ38 120")
+  check_eq(ex("ANZ38 is the agent, TGW10 the intruder: descend the intruder FL330"), "ALT TGW10 FL330")
+  check_eq(ex("turn TGW10 the intruder left heading 200"), "HDG TGW10 200 LEFT")
+  check_eq(ex("create 4 agents"), "MCRE 4")
+end
