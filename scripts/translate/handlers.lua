@@ -715,32 +715,52 @@ function m:role_refs()
       local before = self:word(i - 1, "the") and i - 2 or i - 1
       local by = self:word(before, "is") and self:refs_in(1, before, "aircraft")
       by = by and by[#by]
+      -- ("..., VOZ917 the intruder: ...": the callsign and the role set apart by punctuation, no "is")
+      local appos = self:word(i - 1, "the") and self:refs_in(1, i - 1, "aircraft")
+      appos = appos and appos[#appos]
+      local apart = function(x) return x < 1 or x > #self.t or self.t[x].kind == "punct" end
       if after and after.exists then
         declare(role, after, self:word(i - 1, "the") and i - 1 or i, after.e)
       elseif by and by.exists and by.e == before then
         declare(role, by, by.b, k)
+      elseif appos and appos.exists and appos.e == i - 1 and apart(appos.b - 1) and apart(k) then
+        declare(role, appos, appos.b, k)
       end
     end
   end
-  -- mentions: "the intruder", "the subject aircraft" not part of a declaration
-  local mentions = {}
-  for i = 2, #self.t do
-    local role = self.t[i].text
-    local k = self:word(i + 1, "@aircraft_nouns") and i + 2 or i + 1
-    if bound[role] ~= nil and self:word(i, "@role_nouns") and self:word(i - 1, "the") and not self:word(i - 2, "is")
-        and not self:word(k, "is") and not self:has_ref(i - 1, k + 1, "aircraft") then
-      if not bound[role] then
-        return self:need(string.format("Which aircraft is the %s? It was declared for two.", role))
-      end
-      mentions[#mentions + 1] = { name = bound[role], b = i - 1, e = k }
-    end
-  end
-  for _, x in ipairs(mentions) do self:insert_ref({ x.name }, x.b, x.e, "by_role") end
-  -- sentences that only declare
   local function in_span(i)
     for _, sp in ipairs(spans) do if i >= sp.b and i < sp.e then return true end end
     return false
   end
+  -- mentions: "the intruder", "the subject aircraft", "ownship" (lexicon.role_bare: no "the") not part of a
+  -- declaration
+  local mentions = {}
+  for i = 2, #self.t do
+    local role = self.t[i].text
+    local k = self:word(i + 1, "@aircraft_nouns") and i + 2 or i + 1
+    local the = self:word(i - 1, "the")
+    local b = the and i - 1 or i
+    if bound[role] ~= nil and self:word(i, "@role_nouns") and (the or self:word(i, "@role_bare"))
+        and not self:word(b - 1, "is") and not in_span(i)
+        and not self:word(k, "is") and not self:has_ref(b, k + 1, "aircraft") then
+      if not bound[role] then
+        return self:need(string.format("Which aircraft is the %s? It was declared for two.", role))
+      end
+      mentions[#mentions + 1] = { name = bound[role], b = b, e = k }
+    end
+  end
+  -- a role mentioned: the declarations are context, never addressees
+  if #mentions > 0 then
+    local refs = {}
+    for _, r in ipairs(self.refs) do if not declared[r] then refs[#refs + 1] = r end end
+    self.refs = refs
+    for _, sp in ipairs(spans) do
+      self:mark_used(sp.b, sp.e)
+      for x = sp.b, sp.e - 1 do self.noted[x] = true end
+    end
+  end
+  for _, x in ipairs(mentions) do self:insert_ref({ x.name }, x.b, x.e, "by_role") end
+  -- sentences that only declare
   local b = 1
   while b <= #self.t do
     local e = b

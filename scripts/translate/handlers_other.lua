@@ -501,9 +501,14 @@ return function(H, f, compass)
   end
 
   function m:conflict_intruder(s)
-    local id, target, target_e
+    local id, target, target_e, other
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do
-      if r.exists then target, target_e = target or r.name, target_e or r.e else id = id or r.name:upper() end
+      if r.exists then
+        if target and r.name ~= target then other = other or r.name end
+        target, target_e = target or r.name, target_e or r.e
+      else
+        id = id or r.name:upper()
+      end
     end
     local named = self:find_word(s.b, s.e, "@named")
     if not id and named + 1 < s.e and self.t[named + 1].kind == "word" then id = self.t[named + 1].raw:upper() end
@@ -519,6 +524,10 @@ return function(H, f, compass)
       end
     end
     if not target then return self:need("Which aircraft should " .. id .. " conflict with?") end
+    -- (two aircraft flying named: CRECONFS sets the intruder against one target, which is not said)
+    if other then
+      return self:need(string.format("Which aircraft should %s conflict with: %s or %s?", id, target, other))
+    end
     local dpsi, cpa, tlosh, dh, tlosv
     -- ("crecons INT6 A320 KLM1234 270 1 180": the command's name typed, its values bare after the target
     -- in the command's order, nothing else)

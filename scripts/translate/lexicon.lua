@@ -26,7 +26,7 @@ return {
       "direction", "same", "match", "double", "present", "current", "vectors", "vector", "traffic", "approach",
       "departure", "contact", "radar", "correction", "negative", "immediately", "until", "advised", "then",
       "when", "once", "reaches", "passes", "through", "below", "above", "fpm", "knot", "airspeed", "sink",
-      "plan", "departed", "shift", "activate", "deactivate", "unpause", "start", "over", "real", "time", "half",
+      "plan", "departed", "shift", "activate", "chuck", "deactivate", "unpause", "start", "over", "real", "time", "half",
       "nautical", "miles", "percent", "degree", "latitude", "longitude", "named", "called", "type", "niner",
       "expect", "localizer", "final", "sequence", "spacing", "decimal", "brake", "limit", "custom", "fix",
       "visual", "runway", "cross", "altimeter", "maintained", "desc", "clb", "rpz",
@@ -460,10 +460,12 @@ return {
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- an abbreviation's words said out, read as the abbreviation ("resume navigation after passing the closest
   -- point of approach" is "... the CPA")
-  spelled_out = { ["closest point of approach"] = "CPA" },
+  spelled_out = { ["closest point of approach"] = "CPA", ["own ship"] = "ownship" },
   -- the roles of a conflict study (handlers: role_refs): "subject aircraft is X", "intruder X", "X is the
   -- intruder" declare which aircraft "the intruder" / "the subject aircraft" means later in the request
-  role_nouns = { "intruder", "subject" },
+  role_nouns = { "intruder", "subject", "ownship", "ego", "agent" },
+  -- roles mentioned without "the" ("give ownship heading 240")
+  role_bare = { "ownship", "ego", "agent" },
   -- words of a sentence that only declares roles ("Subject X, intruder Y, both FL310."; "The subject aircraft
   -- X and the intruder Y are converging;"): with them and values, the sentence is context, never an instruction
   role_described = { "both", "each", "at", "are", "is", "and", "the", "same", "level", "levels", "flying",

@@ -503,6 +503,12 @@ return function(intent, rule, words)
     local k = g:find_word(i + 1, e, "towards toward direction")
     return k < e and (not g:word(k, "direction") or g:word(k + 1, "of")) and not g:intent_at(k)
   end }
+  -- "point JST501 to 200 degrees", "point it onto 090 degrees": an aircraft pointed at a number of degrees
+  rule { "point", "hdg", when = function(g, i)
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
+    local k = r and r.e or (g:word(i + 1, "it") and i + 2)
+    return k and g:word(k, "to onto") and g:number_at(k + 1) and g:word(k + 2, "degrees degree deg") or false
+  end }
   rule { "due", "hdg", next = "@compass" }
   rule { "go turn", "hdg", next = "@compass" }
   rule { "left right", "hdg", prev = { 1, "go bear then" } }  -- "go left then climb", "speed 250, then left": a turn
@@ -574,7 +580,7 @@ return function(intent, rule, words)
   end }
   -- "create ten random aircraft", "five random A320s at FL300": random traffic
   rule { "generate generator", false, prev = { 1, "random number" } }  -- "seed the random generator with 42"
-  rule { "create cre spawn generate add", "mcre", near = { 3, "random" } }
+  rule { "create cre spawn generate add chuck", "mcre", near = { 3, "random" } }
   rule { "mcre", "mcre" }
   -- "random traffic, 20 aircraft", "random traffic, 12 b738": the count said after, of aircraft or of a type
   rule { "random", "mcre", next = "traffic", when = function(g, i)
@@ -1176,6 +1182,11 @@ return function(intent, rule, words)
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
   end }
   rule { "move mv reposition teleport shift place relocate", "move" }
+  -- "pop QFA12 over to -27.3 152.8": an aircraft flying "popped over to" a place is moved there
+  rule { "pop", "move", when = function(g, i)
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
+    return r ~= nil and r.exists and g:word(r.e, "over") and g:word(r.e + 1, "to")
+  end }
   rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course route normal real" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place
@@ -1305,6 +1316,12 @@ return function(intent, rule, words)
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
   rule { "go", "op", next = "again" }  -- "and go again"
+  -- "kick off the episode", "kick off the sim": the run started, said of the simulation
+  rule { "kick", "op", next = "off", near = { 3, "@sim" } }
+  -- "let it rip": the run started (said with no aircraft named; with one it is asked)
+  rule { "rip", "op", when = function(g, i)
+    return g:word(i - 1, "it") and g:word(i - 2, "let") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "let it go", "let it run", "let the sim run": the clock started, said alone or as a clause of its own
   rule { "go run", "op", when = function(g, i)
     local b = g:word(i - 1, "it") and i - 1 or (g:word(i - 1, "@sim") and g:word(i - 2, "the") and i - 2 or nil)

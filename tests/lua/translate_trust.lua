@@ -5700,3 +5700,62 @@ do
   check_eq(ex("Resolution: AMC61 shall descend to FL310."), "ALT AMC61 FL310")
   check_eq(ex("Resolution: MVP"), "RESO MVP")
 end
+
+-- Cycle 36 (R74): the roles of a learning study ("ownship", "own ship", "ego") declared before the
+-- instruction, a dash setting the declarations apart; a role mentioned (with or without "the") names its
+-- aircraft and the declarations address no one. A role declared for two is still asked.
+do
+  local _, ex = scene({ "CRE ANZ33 B789 -30.0 150.0 090 FL370 290", "CRE TGW8 A320 -30.2 150.6 270 FL370 280" })
+  check_eq(ex("ownship ANZ33, intruder TGW8 - turn ownship left heading 030"), "HDG ANZ33 30 LEFT")
+  check_eq(ex("own ship TGW8, intruder ANZ33 - climb own ship to FL390"), "ALT TGW8 FL390")
+  check_eq(ex("ego ANZ33 and intruder TGW8: the intruder descend FL330"), "ALT TGW8 FL330")
+  check_eq(ex("subject ANZ33, intruder TGW8, slow the subject to 250 knots"), "SPD ANZ33 250")
+  asked(ex("ownship ANZ33, ownship TGW8 - ownship heading 200"), "ownship declared for two")
+end
+
+-- Cycle 36 (R74): an intruder (CRECONFS) set up where two aircraft flying are named ("a conflict pair
+-- with ..."): its one target is not said, so it is asked
+do
+  local _, ex = scene({ "CRE ANZ34 B789 -30.0 150.0 090 FL370 290", "CRE TGW9 A320 -30.2 150.6 270 FL370 280" })
+  asked(ex("make ANZ34 a conflict pair with TGW9, B738 intruder IN2 at 60 degrees, CPA 0, 240 s to LoS"),
+    "two targets")
+  check_eq(ex("intruder on ANZ34: IN3, B738, 60 degrees, CPA 0, 240 s to LoS"), "CRECONFS IN3 B738 ANZ34 60 0 240")
+end
+
+-- Cycle 36 (R74): Australian slang for starting the run and random traffic: "kick off the episode", "let it
+-- rip" (no aircraft named) are OP; "chuck in 6 random aircraft" is MCRE. Where the class stops it is asked.
+do
+  local _, ex = scene({ "CRE ANZ35 B789 -30.0 150.0 090 FL370 290" })
+  check_eq(ex("kick off the sim"), "OP")
+  check_eq(ex("RESO MVP then let it rip"), "RESO MVP ; OP")
+  check_eq(ex("chuck in 6 random aircraft"), "MCRE 6")
+  asked(ex("kick off"), "no simulation said")
+  asked(ex("ANZ35 let it rip"), "an aircraft named")
+end
+
+-- Cycle 36 (R74): an aircraft flying "popped over to" a position is moved there (MOVE); "pop" without
+-- "over to" is still asked
+do
+  local _, ex = scene({ "CRE ANZ36 B789 -30.0 150.0 090 FL370 290" })
+  check_eq(ex("pop ANZ36 over to -29.5 151.25"), "MOVE ANZ36 -29.5 151.25")
+  asked(ex("pop ANZ36 to -29.5 151.25"), "no 'over to'")
+end
+
+-- Cycle 36 (R74): an aircraft "pointed to" a number of degrees flies that heading; the number without
+-- "degrees" is still asked
+do
+  local _, ex = scene({ "CRE ANZ37 B789 -30.0 150.0 090 FL370 290" })
+  check_eq(ex("point ANZ37 to 215 degrees"), "HDG ANZ37 215")
+  asked(ex("point ANZ37 to 215"), "no degrees")
+end
+
+-- Cycle 36 (R74): "agent" as a study role (mentioned with or without "the"), and a role set beside its
+-- callsign by punctuation alone ("..., TGW10 the intruder: ..."); a callsign and role inside an instruction
+-- ("turn TGW10 the intruder left") is still that instruction's addressee
+do
+  local _, ex = scene({ "CRE ANZ38 B789 -30.0 150.0 090 FL370 290", "CRE TGW10 A320 -30.2 150.6 270 FL370 280" })
+  check_eq(ex("agent ANZ38, intruder TGW10 - give agent heading 120"), "HDG ANZ38 120")
+  check_eq(ex("ANZ38 is the agent, TGW10 the intruder: descend the intruder FL330"), "ALT TGW10 FL330")
+  check_eq(ex("turn TGW10 the intruder left heading 200"), "HDG TGW10 200 LEFT")
+  check_eq(ex("create 4 agents"), "MCRE 4")
+end
