@@ -5700,3 +5700,11 @@ do
   check_eq(ex("Resolution: AMC61 shall descend to FL310."), "ALT AMC61 FL310")
   check_eq(ex("Resolution: MVP"), "RESO MVP")
 end
+
+-- Cycle 36 (R73): a heading said as three digits one by one over 360 is asked, never re-read as fewer
+do
+  local _, ex = scene({ "CRE JSY7Q DH8D 50.0 -2.0 090 FL120 240" })
+  asked(ex("JSY7Q turn left heading five one zero"), "a heading of 510")
+  asked(ex("JSY7Q fly heading three eight zero"), "a heading of 380")
+  check_eq(ex("JSY7Q turn left heading three five zero"), "HDG JSY7Q 350 LEFT")
+end
