@@ -5708,3 +5708,14 @@ do
   asked(ex("JSY7Q fly heading three eight zero"), "a heading of 380")
   check_eq(ex("JSY7Q turn left heading three five zero"), "HDG JSY7Q 350 LEFT")
 end
+
+-- Cycle 36 (R73): UK telephonies "Stobart" (STK) and "Jersey" (BEE) name their airline, also inside a
+-- clause ("add X to Stobart ...'s route": the route edit, not the route shown)
+do
+  local _, ex = scene({ "CRE STK2KP AT72 54.0 -3.0 090 FL100 220", "CRE BEE3M DH8D 54.2 -3.2 090 FL110 230",
+    "DEFWPT TSTWP 54.3 -2.5" })
+  check_eq(ex("add TSTWP to Stobart two kilo papa's route"), "ADDWPT STK2KP TSTWP")
+  check_eq(ex("insert TSTWP into Jersey three mike's route"), "ADDWPT BEE3M TSTWP")
+  check_eq(ex("show Stobart two kilo papa's route"), "LISTRTE STK2KP")
+  asked(ex("add TSTWP to Stobart two kilo's route"), "no such Stobart")
+end
