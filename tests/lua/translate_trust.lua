@@ -5719,3 +5719,15 @@ do
   check_eq(ex("show Stobart two kilo papa's route"), "LISTRTE STK2KP")
   asked(ex("add TSTWP to Stobart two kilo's route"), "no such Stobart")
 end
+
+-- Cycle 36 (R73): "own navigation" with a navaid said by its name is a direct-to there; a name that is
+-- no navaid near the aircraft is still asked
+do
+  local _, ex = navscene({ "CRE KLM55 B738 52.6 4.6 090 FL120 250", "ADDWPT KLM55 SPY", "ADDWPT KLM55 PAM" },
+    "own navigation to a navaid by name")
+  if ex then
+    check_eq(ex("KLM55, own navigation Spijkerboor"), "DIRECT KLM55 SPY")
+    check_eq(ex("KLM55 resume own navigation to Pampus"), "DIRECT KLM55 PAM")
+    asked(ex("KLM55, own navigation Blorpton"), "no navaid of that name")
+  end
+end
