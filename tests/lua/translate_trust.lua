@@ -5731,3 +5731,15 @@ do
     asked(ex("KLM55, own navigation Blorpton"), "no navaid of that name")
   end
 end
+
+-- Cycle 36 (R73): "level by" a navaid said by its name is the AT constraint at that navaid's ident; a name
+-- that is no navaid near the traffic is still asked
+do
+  local _, ex = navscene({ "CRE KLM56 B738 52.6 4.6 090 FL120 250", "ADDWPT KLM56 SPY", "ADDWPT KLM56 PAM" },
+    "level by a navaid by name")
+  if ex then
+    check_eq(ex("KLM56, descend flight level niner zero, level by Spijkerboor"), "AT KLM56 SPY ALT FL90")
+    check_eq(ex("KLM56 descend FL80 level by Pampus"), "AT KLM56 PAM ALT FL80")
+    asked(ex("KLM56 descend FL90, level by Blorpton"), "no navaid of that name")
+  end
+end
