@@ -5743,3 +5743,13 @@ do
     asked(ex("KLM56 descend FL90, level by Blorpton"), "no navaid of that name")
   end
 end
+
+-- Cycle 36 (R73): "what's X's route" / "what's the <airline> routing", the noun ending the request, shows the
+-- route; the airline alone with two of its aircraft flying is still asked
+do
+  local _, ex = scene({ "CRE EZY7K A319 51.2 0.6 240 FL130 260", "CRE RYR4TM B738 51.4 -1.0 070 FL170 290",
+    "CRE RYR6PQ B738 51.6 -1.2 070 FL190 290" })
+  check_eq(ex("what's Easy seven kilo's route"), "LISTRTE EZY7K")
+  check_eq(ex("what's the Easy routing?"), "LISTRTE EZY7K")
+  asked(ex("what's the Ryanair routing"), "two Ryanair aircraft")
+end
