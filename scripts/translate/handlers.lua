@@ -571,6 +571,21 @@ function m:airline_refs()
       table.insert(self.refs, k, { kind = "waypoint", name = t.raw, b = i, e = i + 1, exists = false })
     end
   end
+  -- ("descend FL160, level by Talla": the navaid or airport said by its name of one or two words after
+  -- "level by", ending the clause, is the waypoint of that ident)
+  for i = 3, #self.t do
+    if self:word(i - 1, "by") and self:word(i - 2, "level") and not self:has_ref(i, i + 1) then
+      for e = math.min(i + 2, #self.t + 1), i + 1, -1 do
+        local id = (not self.t[e] or self.t[e].kind == "punct") and self:place_by_name(i, e)
+        if id then
+          local k = 1
+          while self.refs[k] and self.refs[k].b < i do k = k + 1 end
+          table.insert(self.refs, k, { kind = "waypoint", name = id, b = i, e = e, exists = true })
+          break
+        end
+      end
+    end
+  end
   -- "the SAS one, could it ...", "descend the SAS one to FL80": "one" after "the" and an airline, no digit,
   -- number word or spelled letter after it, is the pronoun (the airline's aircraft), no flight number; the
   -- callsign the matcher heard in it is no reference

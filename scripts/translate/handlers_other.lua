@@ -2435,6 +2435,15 @@ return function(H, f, compass)
       for _, r in ipairs(self:refs_in(s.trig + 1, s.e, "waypoint")) do
         if self:word(r.b - 1, "to navigation") then return self:direct(s) end
       end
+      -- ("own navigation Wallasey": a navaid or airport said by its name of one or two words there, ending
+      -- the clause; "own navigation along the flight plan" names no place)
+      local k = self:find_word(s.trig, s.e, "navigation") + 1
+      if self:word(k - 1, "navigation") and self:word(k, "to") then k = k + 1 end
+      local function ends(x) return x == s.e or (self.t[x] and self.t[x].kind == "punct") end
+      if k < s.e and ((ends(k + 1) and self:place_by_name(k, k + 1, now))
+          or (ends(k + 2) and self:place_by_name(k, k + 2, now))) then
+        return self:direct(s)
+      end
     end
     self:emit(cmd .. " " .. id .. " " .. on)
   end

@@ -252,6 +252,8 @@ return {
     { "estonian", "ELL" },
     { "loganair", "LOG" },
     { "logan", "LOG" },  -- (Loganair's ICAO telephony)
+    { "stobart", "STK" },  -- (Stobart Air)
+    { "jersey", "BEE" },  -- (Flybe's ICAO telephony)
     { "tomjet", "TOM" },  -- (TUI Airways' ICAO telephony)
     { "tuijet", "TUI" },  -- (TUIfly)
     { "beauty", "JAF" },  -- (TUI fly Belgium)

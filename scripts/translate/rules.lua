@@ -1048,6 +1048,10 @@ return function(intent, rule, words)
     local at = g:word(i - 1, "flight") and g:word(i, "plan") and i - 1 or i
     for _, r in ipairs(g:refs_in(1, i, "aircraft")) do
       if r.e == at and g:preceded_by(r.b, 3, "show list display print see pull bring") then return true end
+      -- ("what's Ryanair 8WL's route", "what's the Easy routing": asked with the noun ending the request)
+      if r.e == at and g:preceded_by(r.b, 3, "what what's whats") and (not g.t[i + 1] or g.t[i + 1].kind == "punct") then
+        return true
+      end
     end
     return false
   end }

@@ -5759,3 +5759,56 @@ do
   check_eq(ex("turn TGW10 the intruder left heading 200"), "HDG TGW10 200 LEFT")
   check_eq(ex("create 4 agents"), "MCRE 4")
 end
+
+-- Cycle 36 (R73): a heading said as three digits one by one over 360 is asked, never re-read as fewer
+do
+  local _, ex = scene({ "CRE JSY7Q DH8D 50.0 -2.0 090 FL120 240" })
+  asked(ex("JSY7Q turn left heading five one zero"), "a heading of 510")
+  asked(ex("JSY7Q fly heading three eight zero"), "a heading of 380")
+  check_eq(ex("JSY7Q turn left heading three five zero"), "HDG JSY7Q 350 LEFT")
+end
+
+-- Cycle 36 (R73): UK telephonies "Stobart" (STK) and "Jersey" (BEE) name their airline, also inside a
+-- clause ("add X to Stobart ...'s route": the route edit, not the route shown)
+do
+  local _, ex = scene({ "CRE STK2KP AT72 54.0 -3.0 090 FL100 220", "CRE BEE3M DH8D 54.2 -3.2 090 FL110 230",
+    "DEFWPT TSTWP 54.3 -2.5" })
+  check_eq(ex("add TSTWP to Stobart two kilo papa's route"), "ADDWPT STK2KP TSTWP")
+  check_eq(ex("insert TSTWP into Jersey three mike's route"), "ADDWPT BEE3M TSTWP")
+  check_eq(ex("show Stobart two kilo papa's route"), "LISTRTE STK2KP")
+  asked(ex("add TSTWP to Stobart two kilo's route"), "no such Stobart")
+end
+
+-- Cycle 36 (R73): "own navigation" with a navaid said by its name is a direct-to there; a name that is
+-- no navaid near the aircraft is still asked
+do
+  local _, ex = navscene({ "CRE KLM55 B738 52.6 4.6 090 FL120 250", "ADDWPT KLM55 SPY", "ADDWPT KLM55 PAM" },
+    "own navigation to a navaid by name")
+  if ex then
+    check_eq(ex("KLM55, own navigation Spijkerboor"), "DIRECT KLM55 SPY")
+    check_eq(ex("KLM55 resume own navigation to Pampus"), "DIRECT KLM55 PAM")
+    asked(ex("KLM55, own navigation Blorpton"), "no navaid of that name")
+  end
+end
+
+-- Cycle 36 (R73): "level by" a navaid said by its name is the AT constraint at that navaid's ident; a name
+-- that is no navaid near the traffic is still asked
+do
+  local _, ex = navscene({ "CRE KLM56 B738 52.6 4.6 090 FL120 250", "ADDWPT KLM56 SPY", "ADDWPT KLM56 PAM" },
+    "level by a navaid by name")
+  if ex then
+    check_eq(ex("KLM56, descend flight level niner zero, level by Spijkerboor"), "AT KLM56 SPY ALT FL90")
+    check_eq(ex("KLM56 descend FL80 level by Pampus"), "AT KLM56 PAM ALT FL80")
+    asked(ex("KLM56 descend FL90, level by Blorpton"), "no navaid of that name")
+  end
+end
+
+-- Cycle 36 (R73): "what's X's route" / "what's the <airline> routing", the noun ending the request, shows the
+-- route; the airline alone with two of its aircraft flying is still asked
+do
+  local _, ex = scene({ "CRE EZY7K A319 51.2 0.6 240 FL130 260", "CRE RYR4TM B738 51.4 -1.0 070 FL170 290",
+    "CRE RYR6PQ B738 51.6 -1.2 070 FL190 290" })
+  check_eq(ex("what's Easy seven kilo's route"), "LISTRTE EZY7K")
+  check_eq(ex("what's the Easy routing?"), "LISTRTE EZY7K")
+  asked(ex("what's the Ryanair routing"), "two Ryanair aircraft")
+end
