@@ -246,6 +246,14 @@ return function(H, f, wrap, compass)
         ft = ft * 1000  -- "maintain niner (thousand)"
       elseif ft >= 100 and ft < 1000 and not q.number.hundred then
         ft, fl = ft * 100, true  -- "climb three five zero": a flight level
+      elseif ft >= 100 and ft < 1000 and not q.by then
+        -- "climb one hundred sixty": a level said group-wise is that flight level for an aircraft at or above
+        -- 10000 ft; lower down (feet or a level?) or not a whole ten (a word misheard), asked
+        if ft % 10 ~= 0 or not now or (now.alt_ft or 0) < 10000 then
+          return self:need(string.format("What altitude should %s %s to? I heard '%s'.", ids[1], verb,
+            self:raw(q.b, q.e)))
+        end
+        ft, fl = ft * 100, true
       end
     end
     -- "flight level 9500 metres": a metric flight level (Russia's, China's) is that many metres, converted
@@ -430,6 +438,8 @@ return function(H, f, wrap, compass)
       if q.kind == "mach" or (q.kind == "plain" and q.value > 0 and q.value < 1) then
         spd = f.mach(q.value)
       elseif q.kind == "percent" or q.by or (self:word_in(s.b, s.e, "by") and q.value < 100)
+          -- an amount followed by its direction ("100 faster", "20 knots slower") is a change, never the new speed
+          or ((q.kind == "speed" or q.kind == "plain") and self:word(q.e, "@faster @slower"))
           -- ("10 knots faster"; after a word speech recognition writes for "to" or "two", "reduce speed too two
           -- zero knots", the knots are no change: the speed's first digit may be lost, asked)
           or (q.kind == "speed" and q.value < 40 and dir ~= 0 and not q.to

@@ -5812,3 +5812,23 @@ do
   check_eq(ex("what's the Easy routing?"), "LISTRTE EZY7K")
   asked(ex("what's the Ryanair routing"), "two Ryanair aircraft")
 end
+
+-- an amount followed by "faster"/"slower" is a change of the present speed, never the new speed
+do
+  local _, ex = scene({ "CRE EZY41K A320 51.0 0.5 090 FL200 250", "CRE SAS9TR B738 51.2 0.7 270 FL220 280" })
+  check_eq(ex("tell the easy to go 60 faster"), "SPD EZY41K 310")
+  check_eq(ex("SAS9TR 30 knots slower please"), "SPD SAS9TR 250")
+  check_eq(ex("make EZY41K 120 slower"), "SPD EZY41K 130")
+  -- no aircraft named among two: asked
+  asked(ex("go 40 faster"), "no callsign among two aircraft")
+end
+
+-- a level said group-wise after climb/descend ("one hundred sixty") is that flight level from the flight levels
+do
+  local _, ex = scene({ "CRE AEE47L A320 50.5 3.0 180 FL130 270", "CRE TAP12C A321 50.9 3.4 000 4000 220" })
+  check_eq(ex("AEE47L climb one hundred ninety"), "ALT AEE47L FL190")
+  check_eq(ex("AEE47L descend to one hundred ten"), "ALT AEE47L FL110")
+  -- from 4000 ft (feet or a level?) and a level not of whole tens: asked
+  asked(ex("TAP12C climb one hundred twenty"), "group-wise level from below 10000 ft")
+  asked(ex("AEE47L climb one hundred fifty five"), "a level not of whole tens")
+end
