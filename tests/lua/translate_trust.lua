@@ -5832,5 +5832,6 @@ do
   asked(ex("no lateral resolution manoeuvres please"), "lateral resolutions switched off")
   asked(ex("lateral resolutions off"), "lateral resolutions switched off")
   check_eq(ex("turn off vertical resolutions, horizontal only"), "RMETHV OFF")
+  check_eq(ex("vertical resolutions off, lateral only"), "RMETHV OFF")
   check_eq(ex("resolutions horizontal only please, no vertical"), "RMETHV OFF")
 end
