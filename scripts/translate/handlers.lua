@@ -246,9 +246,10 @@ function m:acids(s)
   end
   -- "EZY45 heading 180, Luxair heading 270": an airline said alone (capitalised, no flight number) in
   -- the instruction's own words names no aircraft; it is asked about, never read as the aircraft named
-  -- before or after (alone in the request, the question below asks for the callsign)
+  -- before or after (alone in the request, the question below asks for the callsign); in lower case
+  -- ("westjet go up to 13000 and the transat ..."), when the instruction's words name no aircraft, so too
   do
-    local u = self:airline_said_alone(s)
+    local u = self:airline_said_alone(s) or (#ids == 0 and self:airline_said_alone(s, true))
     for _, id in ipairs(u and ids or {}) do  -- "BAW177 ..., Speedbird diverting": its own name again
       if id:upper():sub(1, #u.icao) == u.icao then u = nil break end
     end
@@ -417,11 +418,11 @@ function m:airline_at(i)
 end
 
 -- The first airline name (names.lua telephony or common name, a capital in its first word as typed:
--- "Luxair", "easyJet"; "reach" and "easy" are words too) said at a clause's start (the utterance's,
+-- "Luxair", "easyJet"; "reach" and "easy" are words too; in any case with `any_case`) said at a clause's start (the utterance's,
 -- or after punctuation, "and" or "then") with no flight number, letters, "heavy" or a correction
 -- ("United correction Southwest 686") after it and inside no reference, from the start of s's clause
 -- to s.e - 1; nil when there is none. Returns {b, e, icao} (tokens b..e-1, the airline's ICAO prefix).
-function m:airline_said_alone(s)
+function m:airline_said_alone(s, any_case)
   local b = s.b
   while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
   for i = b, s.e - 1 do
@@ -431,7 +432,7 @@ function m:airline_said_alone(s)
       local inside = false
       for _, r in ipairs(self.refs) do inside = inside or (r.b <= i and i < r.e) end
       local starts = i == 1 or self.t[i - 1].kind == "punct" or self:word(i - 1, "and @then_words")
-      if starts and (e > i + 1 or airline_names()[self.t[i].text]) and self.t[i].raw:match("%u") and not inside
+      if starts and (e > i + 1 or airline_names()[self.t[i].text]) and (any_case or self.t[i].raw:match("%u")) and not inside
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
             or self:word(e, "heavy super @correction"))) then
         return { b = i, e = e, icao = icao }

@@ -2886,6 +2886,28 @@ return function(H, f, compass)
     local all = #self.t + 1
     local off = self:word_in(1, all, "@off no not never")
     local only = self:word_in(1, all, "only")
+    -- ("turn off lateral resolution", "horizontal resolutions off", "only resolve vertically"): the
+    -- horizontal resolutions switched, RMETHH, which squawk lacks: asked, never RMETHV switched instead
+    -- (the two words after k, up to punctuation: "vertical reso method off, horizontal only" is RMETHV OFF)
+    local function after(k)
+      local e = math.min(all, k + 3)
+      for j = k + 1, e - 1 do
+        if self.t[j].kind == "punct" then return j end
+      end
+      return e
+    end
+    for k = 1, #self.t do
+      local e = after(k)
+      local horizontal_off = self:word(k, "@off no not never") and self:word_in(k + 1, e, "horizontal lateral")
+        and not self:word_in(k + 1, e, "vertical vertically")
+      local off_horizontal = self:word(k, "horizontal lateral") and self:word_in(k + 1, e, "@off")
+      local vertical_only = self:word(k, "only") and (self:word(k - 1, "vertical vertically")
+        or (self:word_in(k + 1, e, "vertical vertically") and not self:word_in(k + 1, e, "@off no not never")))
+      if horizontal_off or off_horizontal or vertical_only then
+        return self:need("squawk's resolutions are horizontal only (RMETHV OFF) or horizontal with vertical "
+          .. "speed too (RMETHV V/S); horizontal resolutions cannot be switched off: which should it use?")
+      end
+    end
     -- ("vertical resolutions only": no method of squawk's; resolutions are horizontal, or horizontal
     -- with vertical speed too)
     if only and not off and not self:word_in(1, all, "horizontal lateral") then

@@ -5832,3 +5832,26 @@ do
   asked(ex("TAP12C climb one hundred twenty"), "group-wise level from below 10000 ft")
   asked(ex("AEE47L climb one hundred fifty five"), "a level not of whole tens")
 end
+
+-- Cycle 36 (R76): an airline said alone in lower case opening a clause whose instruction names no
+-- aircraft is asked about, never given the aircraft named in another clause; written with a capital,
+-- with more than one kind of instruction, it names the one aircraft of that airline flying
+do
+  local _, ex = scene({ "CRE DLH4KP A320 50.1 8.6 090 FL250 280", "CRE KLM82T B738 52.3 4.8 180 FL180 260" })
+  asked(ex("lufthansa please climb to FL300 and the klm descend to FL150"), "lufthansa in lower case, alone")
+  asked(ex("klm turn left heading 200, DLH4KP climb FL310"), "klm in lower case, alone")
+  check_eq(ex("Lufthansa turn left heading 100 and climb to FL300"), "HDG DLH4KP 100 LEFT ; ALT DLH4KP FL300")
+  check_eq(ex("climb to FL300, DLH4KP"), "ALT DLH4KP FL300")
+end
+
+-- Cycle 36 (R75): switching the lateral (horizontal) resolutions is RMETHH, a command squawk lacks: asked,
+-- never RMETHV switched instead; switching the vertical ones is still RMETHV
+do
+  local _, ex = scene({ "CRE KLM83 B738 52.3 4.8 180 FL180 260" })
+  asked(ex("switch off horizontal resolutions, resolve in the vertical only"), "lateral resolutions switched off")
+  asked(ex("no lateral resolution manoeuvres please"), "lateral resolutions switched off")
+  asked(ex("lateral resolutions off"), "lateral resolutions switched off")
+  check_eq(ex("turn off vertical resolutions, horizontal only"), "RMETHV OFF")
+  check_eq(ex("vertical resolutions off, lateral only"), "RMETHV OFF")
+  check_eq(ex("resolutions horizontal only please, no vertical"), "RMETHV OFF")
+end
