@@ -31,16 +31,16 @@ local TCPA_SCALE = 300           -- [s]
 local POS_SCALE, VEL_SCALE = 13000, 66  -- [m], [m/s]
 local COST_SCALE = 10            -- [intruder-steps]
 
-local observation = {}
-for i, slice in ipairs(Base.observation) do observation[i] = slice end
+local slices = {}
 for _, name in ipairs({"tcpa", "dcpa", "inside", "along", "right", "v_along", "v_right"}) do
-  observation[#observation + 1] = {name = name, size = N}
+  slices[#slices + 1] = {name = name, size = N}
 end
-observation[#observation + 1] = {name = "heading_known", size = 1}
-observation[#observation + 1] = {name = "cost", size = 15}
-observation[#observation + 1] = {name = "inside_count", size = 1}
+slices[#slices + 1] = {name = "heading_known", size = 1}
+slices[#slices + 1] = {name = "cost", size = 15}
+slices[#slices + 1] = {name = "inside_count", size = 1}
 
-local X = setmetatable({observation = observation}, {__index = Base})
+local X
+X = require("observation_variant").of(Base, function(obs) return X.features(obs) end, slices)
 
 -- The base observation `obs` (31 numbers) with the numbers above appended.
 function X.features(obs)
@@ -77,16 +77,6 @@ function X.features(obs)
   end
   out[#out + 1] = inside_count / N
   return out
-end
-
-function X:reset(seed, options)
-  local obs, info = Base.reset(self, seed, options)
-  return X.features(obs), info
-end
-
-function X:step(action)
-  local obs, reward, terminated, truncated, info = Base.step(self, action)
-  return X.features(obs), reward, terminated, truncated, info
 end
 
 return X

@@ -7,21 +7,9 @@ local Features = require("sector_cr_features")
 
 local COSTS_FIRST, COSTS_LAST = 61, 75
 
-local G = setmetatable({}, {__index = Features})
-
 local function without_costs(obs)
   for i = COSTS_FIRST, COSTS_LAST do obs[i] = 0 end
   return obs
 end
 
-function G:reset(seed, options)
-  local obs, info = Features.reset(self, seed, options)
-  return without_costs(obs), info
-end
-
-function G:step(action)
-  local obs, reward, terminated, truncated, info = Features.step(self, action)
-  return without_costs(obs), reward, terminated, truncated, info
-end
-
-return G
+return require("observation_variant").of(Features, without_costs, {})

@@ -57,19 +57,19 @@ local CLEAR_SCALE = 50   -- [km] of a clearance
 local RADIUS_SCALE = 50 * 1.852  -- [km per unit of restricted_area_radius]
 local NO_INTERVAL = 1000 -- [deg] sort key offset of an area with no blocked heading
 
-local observation = {}
-for i, slice in ipairs(Base.observation) do observation[i] = slice end
+local slices = {}
 for _, name in ipairs({"blocked_lo", "blocked_hi", "blocks_goal", "blocks_heading", "goal_clearance",
                        "heading_clearance", "along_heading", "edge_distance", "inside"}) do
-  observation[#observation + 1] = {name = name, size = NUM_AREAS}
+  slices[#slices + 1] = {name = name, size = NUM_AREAS}
 end
 for _, name in ipairs({"goal_bearing", "goal_blocked", "goal_blocker_side", "goal_blocker_lo", "goal_blocker_hi",
                        "goal_blocker_along", "heading_blocker_side", "heading_blocker_along", "inside_any",
                        "escape_bearing", "clear_left", "clear_right"}) do
-  observation[#observation + 1] = {name = name, size = 1}
+  slices[#slices + 1] = {name = name, size = 1}
 end
 
-local X = setmetatable({observation = observation}, {__index = Base})
+local X
+X = require("observation_variant").of(Base, function(obs) return X.extend(obs) end, slices)
 
 -- Relative bearing [deg, + right] from the observation's cos and sin of (heading - bearing).
 local function relative(c, s)
@@ -182,16 +182,6 @@ function X.extend(obs)
   out[#out + 1] = left / D_HEADING
   out[#out + 1] = right / D_HEADING
   return out
-end
-
-function X:reset(seed, options)
-  local obs, info = Base.reset(self, seed, options)
-  return X.extend(obs), info
-end
-
-function X:step(action)
-  local obs, reward, terminated, truncated, info = Base.step(self, action)
-  return X.extend(obs), reward, terminated, truncated, info
 end
 
 return X

@@ -1552,6 +1552,18 @@ function G:mark_used(b, e)
   self.qcache = {}
 end
 
+-- Tokens [b, e] are context read as a whole (a declaration, a remark): used, noted as said, and no
+-- reference in them stands.
+function G:set_aside(b, e)
+  self:mark_used(b, e + 1)
+  for k = b, e do self.noted[k] = true end
+  local refs = {}
+  for _, r in ipairs(self.refs) do
+    if r.b < b or r.b > e then refs[#refs + 1] = r end
+  end
+  self.refs = refs
+end
+
 function G:need(question)
   if not self.ask then self.ask = question end
 end
@@ -2288,13 +2300,7 @@ function G:self_corrected()
           a = e
         elseif q < b and (self:has_ref(c + 1, c + 2, "waypoint")
             or (self:quantities(c + 1, #self.t + 1)[1] or {}).b == c + 1) then
-          self:mark_used(q, c + 1)
-          for k = q, c do self.noted[k] = true end
-          local refs = {}
-          for _, r in ipairs(self.refs) do
-            if r.b < q or r.b > c then refs[#refs + 1] = r end
-          end
-          self.refs = refs
+          self:set_aside(q, c)
           a = c + 1
         else
           local said = self:raw(c, math.min(e, #self.t + 1)):gsub(" ([,.;:])", "%1")

@@ -792,15 +792,7 @@ function m:role_refs()
     if any and only and e < #self.t then
       for _, r in ipairs(self.refs) do again = again or (r.kind == "aircraft" and r.b > e) end
     end
-    if again then
-      self:mark_used(b, e + 1)
-      for x = b, e do self.noted[x] = true end
-      local refs = {}
-      for _, r in ipairs(self.refs) do
-        if r.b < b or r.b > e then refs[#refs + 1] = r end
-      end
-      self.refs = refs
-    end
+    if again then self:set_aside(b, e) end
     b = e + 1
   end
 end
