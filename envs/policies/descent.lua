@@ -29,21 +29,30 @@ local function rate_action(rate)
   return math.max(-1, math.min(1, rate / MAX_RATE))
 end
 
--- The descent rule on altitude, runway distance and target [m]; shared with
--- envs/policies/vertical_cr.lua.
-function P:descent_rate(alt, runway_m, target)
+-- The glide [m/s, downwards] that is `aim` [m] above the runway's height when the episode ends (after
+-- the step that passes the runway), once the descent has started, else nil. The descent starts when
+-- that glide needs `start_share` of MAX_RATE and then stays started. Keeps the runway distance of the
+-- step before in self (the ground speed); shared with envs/policies/vertical_cr_steady.lua.
+function P:glide(alt, runway_m, aim, start_share)
   local gs = self.prev_runway and (self.prev_runway - runway_m) / STEP_S
   self.prev_runway = runway_m
   if gs and gs > 0 then
-    -- the episode ends after the step that passes the runway: arrive at AIM_ALT then
     local time_left = math.ceil(runway_m / (gs * STEP_S)) * STEP_S
-    local glide = (alt - AIM_ALT) / time_left         -- [m/s]
-    if glide >= START_SHARE * MAX_RATE or self.descending then
+    local glide = (alt - aim) / time_left
+    if glide >= start_share * MAX_RATE or self.descending then
       self.descending = true
-      return -glide
+      return glide
     end
   end
   self.descending = false
+  return nil
+end
+
+-- The descent rule on altitude, runway distance and target [m]; shared with
+-- envs/policies/vertical_cr.lua.
+function P:descent_rate(alt, runway_m, target)
+  local glide = self:glide(alt, runway_m, AIM_ALT, START_SHARE)
+  if glide then return -glide end
   return (target - alt) / STEP_S                      -- back to the target within one step
 end
 

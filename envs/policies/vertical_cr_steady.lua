@@ -40,17 +40,8 @@ end
 
 -- The wanted altitude [m] at the step's end without intruders; updates the ground speed memory.
 function P:wanted(alt, runway_m, target)
-  local gs = self.prev_runway and (self.prev_runway - runway_m) / STEP_S
-  self.prev_runway = runway_m
-  if gs and gs > 0 then
-    local time_left = math.ceil(runway_m / (gs * STEP_S)) * STEP_S
-    local glide = (alt - AIM_M) / time_left
-    if glide >= START_SHARE * MAX_RATE or self.descending then
-      self.descending = true
-      return alt - glide * STEP_S
-    end
-  end
-  self.descending = false
+  local glide = Descent.glide(self, alt, runway_m, AIM_M, START_SHARE)
+  if glide then return alt - glide * STEP_S end
   return alt + (target - alt) / RETURN_STEPS
 end
 
