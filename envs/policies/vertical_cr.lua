@@ -44,10 +44,14 @@ function P:threat(obs)
   return dh
 end
 
+-- The ownship's altitude, runway distance and target altitude [m] from the observation; shared with
+-- envs/policies/vertical_cr_steady.lua.
+function P.ownship(obs)
+  return 1500 + 3000 * obs[1], (100 + 200 * obs[17]) * 1000, 1500 + 3000 * obs[23]
+end
+
 function P:act(obs)
-  local alt = 1500 + 3000 * obs[1]
-  local runway_m = (100 + 200 * obs[17]) * 1000
-  local target = 1500 + 3000 * obs[23]
+  local alt, runway_m, target = P.ownship(obs)
   local rate = self:descent_rate(alt, runway_m, target)
   local dh = self:threat(obs)
   if dh then rate = dh > 0 and -12.5 or 12.5 end

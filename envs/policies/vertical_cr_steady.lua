@@ -19,6 +19,7 @@
 -- Units: metres, seconds, m/s.
 
 local Descent = require("descent")
+local Rule = require("vertical_cr")
 local step_change = require("vertical_cr_teacher").step_change
 
 local NUM_INTRUDERS = 5
@@ -83,9 +84,7 @@ local function clear_of(threats, alt, want)
 end
 
 function P:act(obs)
-  local alt = 1500 + 3000 * obs[1]
-  local runway_m = (100 + 200 * obs[17]) * 1000
-  local target = 1500 + 3000 * obs[23]
+  local alt, runway_m, target = Rule.ownship(obs)
   local vz = 5 * obs[24]
   local wanted = self:wanted(alt, runway_m, target)
   local threats = self:threats(obs)
