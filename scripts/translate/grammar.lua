@@ -1743,10 +1743,41 @@ function G:speed_before_level(k)
   return spd
 end
 
+-- The words that may join a condition word to its value when the condition follows the aircraft's callsign
+-- ("ACA102 when you're down to FL150", "ACA871 once it's slowed to 220", "CFG1KZ when you have reached 250
+-- kt"): who reaches it, and a verb of reaching, passing or slowing; any other word is no such condition.
+local ARRIVING = {}
+for w in ([[it it's its he he's she she's they they're you you're is are 's 're has have 've had been be
+  pass passes passed passing reach reaches reached reaching hit hits hitting get gets got getting to at level
+  through cross crosses crossed crossing down up below above under over drop drops dropped climbs climbed
+  descends descended slows slowed slow accelerates accelerated decelerates decelerated out of leaves left
+  leaving]]):gmatch("%S+") do ARRIVING[w] = true end
+
+-- The position after the words that open a condition at i ("when", "once", "after", "as soon as"), or nil.
+function G:condition_word(i)
+  if self:word(i, "@condition") then return i + 1 end
+  if self:word(i, "as") and self:word(i + 1, "soon") and self:word(i + 2, "as") then return i + 3 end
+  return nil
+end
+
 function G:condition()
   local i = 1
   while self.t[i] and self.t[i].kind == "word" and self.t[i].filler do i = i + 1 end
-  if not self:word(i, "@condition") then return nil, 1 end
+  -- "ACA102 when you're down to FL150 slow to 250": a condition said after the aircraft's callsign, its value
+  -- joined to its word by ARRIVING words only
+  local lead = not self:condition_word(i) and self:refs_in(i, i + 1, "aircraft")[1]
+  if lead then
+    local c = self:skip_fillers(lead.e)
+    if self.t[c] and self.t[c].kind == "punct" and self.t[c].text == "," then c = self:skip_fillers(c + 1) end
+    local v = self:condition_word(c)
+    local q = v and self:quantities(v, #self.t + 1)[1]
+    if not q then return nil, 1 end
+    for x = v, q.b - 1 do
+      if not (self.t[x].filler or ARRIVING[self.words[x]]) then return nil, 1 end
+    end
+    i = c
+  end
+  if not self:condition_word(i) then return nil, 1 end
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
   local rest = comma + 1
@@ -1757,12 +1788,18 @@ function G:condition()
     local q = self:quantities(i, #self.t + 1)[1]
     local by_verb = q and q.kind == "plain"
       and self:word(self:word(q.b - 1, "to") and q.b - 2 or q.b - 1, "@speed_verbs")
-    if not q or not (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or by_verb) or not self:any_instruction_in(q.e, #self.t + 1) then
+    -- (after a callsign, a value with its own unit is an instruction too: "ACA102 once you hit FL170 go 260 knots")
+    local nq = lead and q and self:quantities(q.e, #self.t + 1)[1]
+    local valued = nq and (nq.kind == "speed" or nq.kind == "mach" or (nq.kind == "alt" and nq.fl))
+    if not q or not (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or by_verb)
+        or not (valued or self:any_instruction_in(q.e, #self.t + 1)) then
       return nil, 1
     end
     comma, rest = q.e, q.e
   end
   local ids = self:refs_in(i, comma, "aircraft")
+  if lead and #ids > 0 then return nil, 1 end
+  if lead then ids = { lead } end
   if #ids == 0 then return nil, 1 end
   self.subject = ids[1].name
   local f = handlers.format
@@ -1961,6 +1998,9 @@ function G:segments(b, e)
         end
         -- "..., when passing flight level 130 reduce speed": the condition belongs to what follows it
         local cond = self:find_word(last.trig + 1, start, "@level_condition")
+        -- (and ", as soon as it's through FL140 speed 240")
+        local soon = self:find_word(last.trig + 1, cond, "soon")
+        if soon < cond and self:word(soon - 1, "as") and self:word(soon + 1, "as") then cond = soon - 1 end
         if cond < start then start = cond end
         -- (the distance of a condition said before the instruction word, with "at" or "within" before it)
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do

@@ -1219,6 +1219,10 @@ end
 -- (a direct-to waits for a level passed, left or reached; so does a switch of navigation: "on reaching FL120
 -- resume own navigation"): "ATALT id alt" or nil.
 local NAV_INTENTS = { direct = true, lnav = true, vnav = true }
+-- words between the level and a speed's own word, part of the instruction ("when it passes FL130 drop the
+-- speed to 230", "... bring its speed back to 240")
+local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, the = true,
+                     its = true, your = true, his = true, her = true, their = true }
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt"
       and not NAV_INTENTS[s.intent] and s.intent ~= "vs" then
@@ -1269,7 +1273,8 @@ function m:at_altitude(s)
   local q = qs[1]
   if not q or q.b ~= a + 1 then return nil end
   local k = self:skip_fillers(q.e)
-  while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")) do
+  while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
+      or (s.intent == "spd" and SPEED_LEAD[self.words[k]])) do
     k = self:skip_fillers(k + 1)
   end
   if k ~= s.trig then return nil end
