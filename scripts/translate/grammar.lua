@@ -1731,6 +1731,38 @@ function G:passing_level_flown()
   end
 end
 
+-- A level condition the aircraft will not cross is asked about: ATALT runs its command when the aircraft's
+-- altitude crosses the level (Stack::test_conditions, as BlueSky's ATALT), never when it has passed it, so a
+-- level outside the way from the aircraft's altitude to the level it is cleared to (in this request, else its
+-- selected one) would never run it ("ACA871 climb FL170 and when it passes FL100 reduce 230", ACA871 at FL110).
+-- An aircraft level with no clearance may get one later: its condition stands.
+local function level_feet(text)
+  local fl = text:match("^FL(%d+)$")
+  return fl and tonumber(fl) * 100 or tonumber(text)
+end
+function G:level_never_crossed()
+  for _, line in ipairs(self.out) do
+    local id, at = line:match("^ATALT (%S+) (%S+) ")
+    local a, level = id and self:state(id), at and level_feet(at)
+    if a and a.alt_ft and level then
+      local cleared = a.sel_alt_ft
+      for _, other in ipairs(self.out) do
+        local who, to = other:match("^ALT (%S+) (%S+)")
+        if who and who:upper() == id:upper() then cleared = level_feet(to) end
+      end
+      if cleared and math.abs(cleared - a.alt_ft) > 50 and math.abs(level - a.alt_ft) > 50
+          and (level - a.alt_ft) * (level - cleared) > 0 then
+        local function fl(ft)
+          return ft >= 10000 and string.format("FL%03d", math.floor(ft / 100 + 0.5)) or string.format("%d ft", math.floor(ft + 0.5))
+        end
+        return self:need(string.format("I have %s. %s is at %s and cleared to %s: it will not pass %s, so what waits "
+          .. "for that level would never run. Which level should it wait for?", table.concat(self.out, " ; "), id,
+          fl(a.alt_ft), fl(cleared), at))
+      end
+    end
+  end
+end
+
 -- True when the words before position k give a speed instruction and no level one ("speed 250 by FL200",
 -- not "descend by 2000 feet").
 function G:speed_before_level(k)
@@ -3457,11 +3489,12 @@ function G:meaning_carried(i, kinds)
   local text, nx = self.t[i].text, self:skip_fillers(i + 1)
   -- "before we add any traffic", "until I say stop", "before creating anything": the speaker's own next
   -- step, which a command run now precedes; "when you get a sec": the listener's convenience
-  -- (never "when you reach it", "once you get there", "when you're level": the level reached, a condition)
+  -- (never "when you reach it", "once you get there", "when you're level", "when you're down a bit": the level
+  -- reached, a condition)
   local who = self.t[nx] and self.t[nx].kind == "word" and self.t[nx].text
   if who and (((text == "before" or text == "until") and (PERSONS[who] or who:match("%a%aing$")))
       or ((text == "when" or text == "whenever" or text == "once") and who:match("^you")
-        and not self:word_in(nx + 1, math.min(nx + 4, #self.t + 1), "reach reaches reaching there level lvl")
+        and not self:word_in(nx + 1, math.min(nx + 4, #self.t + 1), "reach reaches reaching there level lvl down up below above through past slowed passing passed hit crossing")
         and #self:quantities(nx + 1, math.min(nx + 5, #self.t + 1)) == 0)) then
     return true
   end
@@ -4973,6 +5006,7 @@ function M.translate(text, world)
     end
   end
   if not g.ask then g:passing_level_flown() end
+  if not g.ask then g:level_never_crossed() end
   if not g.ask then g:respectively() end
   if not g.ask then g:discretion_without_level() end
   if not g.ask then g:crossing_without_place() end

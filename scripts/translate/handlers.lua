@@ -1235,7 +1235,7 @@ function m:at_altitude(s)
     b = b - 1
     while b > 1 and self.t[b - 1].kind ~= "punct" do b = b - 1 end
   end
-  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach hit hits")
+  local a = self:find_word(b, s.trig, "at passing leaving reaching through passes leaves reaches pass reach hit hits crossing crosses")
   -- ("when you get to FL180 reduce 250", "once it gets to FL180": "to" after "get" is the verb's)
   local got = self:find_word(b, s.trig, "get gets getting")
   local got_to = got < a and self:word(got + 1, "to")
@@ -1277,6 +1277,8 @@ function m:at_altitude(s)
       or (s.intent == "spd" and SPEED_LEAD[self.words[k]])) do
     k = self:skip_fillers(k + 1)
   end
+  -- ("crossing FL150 ACA102 reduce 250": the instruction's callsign after the condition)
+  for _, r in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(r.e) end
   if k ~= s.trig then return nil end
   -- ("passing two two zero increase Mach .78": three digits alone after a level passed, left or reached are
   -- a flight level)
