@@ -1638,27 +1638,61 @@ for name, spec in pairs(M.intents) do
 end
 
 -- ---- conditions: "When AC01 reaches FL200, ..." ----
+-- The words that may join a condition word to its value ("ACA102 when you're down to FL150", "ACA871 once it's
+-- slowed to 220", "CFG1KZ when you have reached 250 kt", "reduce 250 after it drops below FL150"): who reaches
+-- it (LINKING, with the forms of "be" and "have"), and a verb of reaching, passing or slowing.
+local ARRIVING = {}
+for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
+  pass passes passed passing reach reaches reached reaching hit hits hitting get gets got getting to at level
+  through cross crosses crossed crossing down up below above under over drop drops dropped climbs climbed
+  descends descended slows slowed slow accelerates accelerated decelerates decelerated out of leaves left
+  leaving]]):gmatch("%S+") do ARRIVING[w] = true end
+
+local LINKING = {}
+for w in ([[it it's its he he's she she's they they're you you're you've is are 's 're has have 've had been be
+  to]]):gmatch("%S+") do LINKING[w] = true end
+
 -- A condition said after its instruction, ending the request ("reduce the SAS to 250 knots once it passes
 -- flight level 100 on the way down", "slow EZY45 to 220 when it reaches FL120", "250 knots by the time it's
 -- passing FL200", "by the time it gets to FL200"): "once", "when" or "by the time", "it" or the aircraft, a
 -- verb of reaching, then a level and words with no value, aircraft or instruction of their own to the end;
 -- or, after a speed instruction and no level one, "by" and the level alone ("speed 250 by FL200": the speed
--- held from that level). Returns the position of the condition's first word and the level's quantity, or nil;
--- "by the time" with no level so read is asked about (self.ask).
-local REACHING = { passes = true, reaches = true, crosses = true, hits = true, passing = true, reaching = true,
-                   crossing = true, through = true }
+-- held from that level); or a speed verb and a speed closing the request ("descend to 8000 once it has slowed
+-- to 230"). Returns the position of the condition's first word, the value's quantity and the condition
+-- command ("ATALT" or "ATSPD"), or nil; "by the time" with no level so read is asked about (self.ask).
 function G:trailing_level_condition()
-  if not self:said("by once when") then return nil end
+  if not self:said("by once when after") then return nil end
   for k = 2, #self.t do
     local by_time = self:word(k, "by") and self:word(k + 1, "the") and self:word(k + 2, "time")
     local by_level = self:word(k, "by") and not by_time
-    if self:word(k, "once when") or by_time or by_level then
+    if self:word(k, "once when after") or by_time or by_level then
       local v = by_time and k + 3 or k + 1
       local subject = v
-      if self:word(v, "it it's he's she's") or self:has_ref(v, v + 1, "aircraft") then v = v + 1 end
-      if v > subject and self:word(v, "is 's") then v = v + 1 end
-      if v > subject and self:word(v, "gets") and self:word(v + 1, "to") then v = v + 1 end
-      local reached = v > subject and (REACHING[(self.t[v] or {}).text] or self:word(v - 1, "gets"))
+      if self:word(v, "it it's he he's she she's you you're you've") or self:has_ref(v, v + 1, "aircraft") then
+        v = v + 1
+      end
+      -- (the words up to the value: ARRIVING only, one of them no LINKING word)
+      local first, reached, slowed = self:quantities(v, #self.t + 1)[1], false, false
+      if v > subject and first and first.b > v then
+        local joined = true
+        for x = v, first.b - 1 do
+          local w = self.words[x]
+          joined = joined and (ARRIVING[w] or self.t[x].filler)
+          reached = reached or (ARRIVING[w] and not LINKING[w])
+          slowed = slowed or self:word(x, "@speed_verbs")
+        end
+        reached = joined and reached
+        if reached then v = first.b - 1 end
+      end
+      -- ("descend to 8000 once it has slowed to 230", "... once it's slowed to 230": a speed, ATSPD)
+      if reached and slowed and not by_time then
+        local q = first
+        if (q.kind == "speed" or q.kind == "mach" or (q.kind == "plain" and q.value < 1000))
+            and #self:quantities(q.e, #self.t + 1) == 0 and not self:any_instruction_in(q.e, #self.t + 1) then
+          return k, q, "ATSPD"
+        end
+        return nil
+      end
       if by_level then v = k end
       if reached or by_level then
         local q = self:quantities(v + 1, #self.t + 1)[1]
@@ -1668,7 +1702,7 @@ function G:trailing_level_condition()
             if self:intent_at(x) and not self:word(x, "@up @down") or self:has_ref(x, x + 1, "aircraft") then return nil end
           end
           if #self:quantities(q.e, #self.t + 1) > 0 then return nil end
-          return k, q
+          return k, q, "ATALT"
         end
       end
       -- ("250 knots by the time it's level": a moment squawk cannot wait for, asked about)
@@ -1676,7 +1710,7 @@ function G:trailing_level_condition()
         self.ask = "By the time of what? squawk can wait for a level (ATALT) or a distance from a place (ATDIST): "
           .. "please say the level, or give the instruction when it applies."
       end
-      if not by_level then return nil end
+      if not by_level and not self:word(k, "after") then return nil end
     end
   end
   return nil
@@ -1774,16 +1808,6 @@ function G:speed_before_level(k)
   end
   return spd
 end
-
--- The words that may join a condition word to its value when the condition follows the aircraft's callsign
--- ("ACA102 when you're down to FL150", "ACA871 once it's slowed to 220", "CFG1KZ when you have reached 250
--- kt"): who reaches it, and a verb of reaching, passing or slowing; any other word is no such condition.
-local ARRIVING = {}
-for w in ([[it it's its he he's she she's they they're you you're is are 's 're has have 've had been be
-  pass passes passed passing reach reaches reached reaching hit hits hitting get gets got getting to at level
-  through cross crosses crossed crossing down up below above under over drop drops dropped climbs climbed
-  descends descended slows slowed slow accelerates accelerated decelerates decelerated out of leaves left
-  leaving]]):gmatch("%S+") do ARRIVING[w] = true end
 
 -- The position after the words that open a condition at i ("when", "once", "after", "as soon as"), or nil.
 function G:condition_word(i)
@@ -1983,7 +2007,7 @@ function G:segments(b, e)
         for _, q in ipairs(between or {}) do
           local k = self:skip_fillers(q.e)
           dist_between = dist_between or (q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
-            and self:word(self:word(k, "out") and k + 1 or k, "from of to before"))
+            and self:word(self:word(k, "out prior") and k + 1 or k, "from of to before"))
           -- ("reduce speed 250 knots, when passing FL150 reduce speed 210 knots": likewise a level passed,
           -- reached or left after a condition word)
             or (q.kind == "alt" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "passing reaching leaving")
@@ -2038,7 +2062,7 @@ function G:segments(b, e)
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
           if q.kind == "dist" and #self:quantities(last.trig, q.b) > 0
-              and self:word(self:word(k, "out") and k + 1 or k, "from of to before") then
+              and self:word(self:word(k, "out prior") and k + 1 or k, "from of to before") then
             start = math.min(start, self:word(q.b - 1, "at within") and q.b - 1 or q.b)
             break
           end
@@ -2568,7 +2592,7 @@ end
 -- A speed's level said after "above" or "below" closing the segment ("Mach .76 above FL300", "250 kt below
 -- FL100"): the speed held from that level, the same reading ("not above FL300" is a limit, no condition).
 function G:trailing_level(s)
-  local c = self:find_word(s.trig + 1, s.e, "when once")
+  local c = self:find_word(s.trig + 1, s.e, "when once after")
   if c >= s.e and (s.intent == "spd" or s.intent == "infer") then
     local a = self:find_word(s.trig + 1, s.e, "above below")
     local q = a < s.e and not self:word(a - 1, "not") and self:quantities(a + 1, s.e)[1]
@@ -2591,7 +2615,8 @@ function G:trailing_level(s)
   if not q or not (q.kind == "alt" or (q.kind == "plain" and q.fl)) then return nil end
   local reached = false
   for i = c + 1, q.b - 1 do
-    if self:word(i, "reaches reaching reach passes passing gets get at") then reached = true
+    if self:word(i, "reaches reaching reach passes passing gets get at through below above crosses crossing") then
+      reached = true
     elseif not (self:word(i, "it he she they you you're is are to flight level") or self.t[i].filler
                 or #self:refs_in(i, i + 1, "aircraft") > 0) then
       return nil
@@ -4970,8 +4995,8 @@ function M.translate(text, world)
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()
   if not g.ask then
-    local k, level = nil, nil
-    if not cond then k, level = g:trailing_level_condition() end
+    local k, level, kind = nil, nil, nil
+    if not cond then k, level, kind = g:trailing_level_condition() end
     -- (a trailing condition holds the instruction of its own clause: the one after the last comma, "and"
     -- or "then" before it)
     local clause = rest
@@ -4986,14 +5011,15 @@ function M.translate(text, world)
       g:take(level)
       g:explain(k, #g.t + 1)
       local f = handlers.format
-      local at = level.kind == "alt" and f.alt(level.value, level.fl) or f.int(level.value)
+      local at = level.kind == "alt" and f.alt(level.value, level.fl) or level.kind == "mach" and f.mach(level.value)
+        or f.int(level.value)
       for c = before + 1, #g.out do
         local id = g.out[c]:match("^%u+ (%S+)")
         if not id or not g:state(id) then
           g.ask = "Which aircraft's instruction should wait for " .. at .. "? Please say it with its callsign."
           break
         end
-        g.out[c] = "ATALT " .. id .. " " .. at .. " " .. g.out[c]
+        g.out[c] = kind .. " " .. id .. " " .. at .. " " .. g.out[c]
       end
     end
     if cond and not g.ask then
@@ -5001,7 +5027,17 @@ function M.translate(text, world)
       if g.at_place then
         g:at_condition()
       else
-        for c = 1, #g.out do g.out[c] = cond .. " " .. g.out[c] end
+        -- (what waits is the condition's aircraft's own instruction: "when passing 15000 resume normal speed"
+        -- is no simulation speed)
+        for c = 1, #g.out do
+          local id = g.out[c]:match("^%u+ (%S+)")
+          if not id or id:upper() ~= g.subject:upper() then
+            g.ask = "I have " .. table.concat(g.out, " ; ") .. ". What should " .. g.subject
+              .. " do when the condition is met?"
+            break
+          end
+          g.out[c] = cond .. " " .. g.out[c]
+        end
       end
     end
   end

@@ -1352,7 +1352,7 @@ function m:at_distance(s)
     for i = s.b, self:said("level") and q.b - 1 or 0 do level_at = level_at or (self:word(i, "level") and not self:word(i - 1, "flight")) end
     if (q.kind == "dist" or bare) and not self.taken[q.b] and not level_at then
       local k = self:skip_fillers(q.e)
-      if self:word(k, "out") then k = k + 1 end  -- "20 miles out from X"
+      if self:word(k, "out prior") then k = k + 1 end  -- "20 miles out from X", "15 miles prior to X"
       -- ("cross 15 miles north of Seattle at 10000", "... south east of ...": the side of the place the
       -- aircraft comes from)
       local side = k
@@ -1370,6 +1370,7 @@ function m:at_distance(s)
       if name then
         if #ids ~= 1 then return nil end
         self:mark_used(q.b, q.e)  -- the condition's distance is not the instruction's value
+        self:explain(q.e, p)  -- ("out from", "prior to")
         return "ATDIST " .. ids[1] .. " " .. name .. " " .. f.num(q.value)
       end
     end
