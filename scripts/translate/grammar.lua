@@ -1671,14 +1671,15 @@ function G:trailing_level_condition()
       if self:word(v, "it it's he he's she she's you you're you've") or self:has_ref(v, v + 1, "aircraft") then
         v = v + 1
       end
-      -- (the words up to the value: ARRIVING only, one of them no LINKING word)
+      -- (the words up to the value: ARRIVING only, one of them a verb, no LINKING word nor "at": "but only
+      -- when it is at FL210" is G:trailing_level's)
       local first, reached, slowed = self:quantities(v, #self.t + 1)[1], false, false
       if v > subject and first and first.b > v then
         local joined = true
         for x = v, first.b - 1 do
           local w = self.words[x]
           joined = joined and (ARRIVING[w] or self.t[x].filler)
-          reached = reached or (ARRIVING[w] and not LINKING[w])
+          reached = reached or (ARRIVING[w] and not LINKING[w] and w ~= "at")
           slowed = slowed or self:word(x, "@speed_verbs")
         end
         reached = joined and reached

@@ -1277,8 +1277,9 @@ function m:at_altitude(s)
       or (s.intent == "spd" and SPEED_LEAD[self.words[k]])) do
     k = self:skip_fillers(k + 1)
   end
-  -- ("crossing FL150 ACA102 reduce 250": the instruction's callsign after the condition)
-  for _, r in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(r.e) end
+  -- ("crossing FL150 ACA102 reduce 250": the instruction's callsign after a verb's condition; "both at
+  -- FL150. TAM88 turn" describes the traffic)
+  for _, r in ipairs(self:word(a, "at") and {} or self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(r.e) end
   if k ~= s.trig then return nil end
   -- ("passing two two zero increase Mach .78": three digits alone after a level passed, left or reached are
   -- a flight level)

@@ -5855,3 +5855,39 @@ do
   check_eq(ex("vertical resolutions off, lateral only"), "RMETHV OFF")
   check_eq(ex("resolutions horizontal only please, no vertical"), "RMETHV OFF")
 end
+
+-- Cycle 37 (cond): conditions on a level, a speed or a distance, as people say them
+do
+  local _, ex = scene({ "CRE SWR41 A320 47.0 8.0 090 FL110 250", "CRE EZS77 A319 47.3 8.4 270 FL220 290",
+      "DEFWPT TOBLA 47.5 8.9", "ADDWPT EZS77 TOBLA" })
+  -- said after the callsign: "when/once/as soon as", who reaches it, a verb of reaching, the value
+  check_eq(ex("EZS77 when you're down to FL180 slow to 260"), "ATALT EZS77 FL180 SPD EZS77 260")
+  check_eq(ex("EZS77 once you hit FL190 go 270 knots"), "ATALT EZS77 FL190 SPD EZS77 270")
+  check_eq(ex("EZS77, as soon as you're through FL200, reduce 270"), "ATALT EZS77 FL200 SPD EZS77 270")
+  check_eq(ex("SWR41 once it's slowed to 220 descend to 8000"), "ATSPD SWR41 220 ALT SWR41 8000")
+  check_eq(ex("SWR41 when at 230 knots descend to 9000"), "ATSPD SWR41 230 ALT SWR41 9000")
+  -- in the middle, the verb of the speed and its article between the level and "speed"
+  check_eq(ex("SWR41 climb FL170 and when he gets to FL150 bring the speed back to 240"),
+    "ALT SWR41 FL170 ; ATALT SWR41 FL150 SPD SWR41 240")
+  check_eq(ex("SWR41 climb FL170, as soon as it's through FL140 speed 240"),
+    "ALT SWR41 FL170 ; ATALT SWR41 FL140 SPD SWR41 240")
+  -- after the instruction: a level passed, crossed or dropped below, or a speed slowed to (ATSPD)
+  check_eq(ex("EZS77 reduce to 260 after it drops below FL170"), "ATALT EZS77 FL170 SPD EZS77 260")
+  check_eq(ex("SWR41 descend to 8000 once it has slowed to 230"), "ATSPD SWR41 230 ALT SWR41 8000")
+  check_eq(ex("crossing FL180 EZS77 reduce 260"), "ATALT EZS77 FL180 SPD EZS77 260")
+  check_eq(ex("leaving FL210 EZS77 reduce 280"), "ATALT EZS77 FL210 SPD EZS77 280")
+  -- a distance before or after a fix: "prior to", and a descent said "start (going) down"
+  check_eq(ex("12 miles before TOBLA, EZS77 should start going down to FL150"), "ATDIST EZS77 TOBLA 12 ALT EZS77 FL150")
+  check_eq(ex("20 miles prior to TOBLA EZS77 reduce 250"), "ATDIST EZS77 TOBLA 20 SPD EZS77 250")
+  check_eq(ex("EZS77 start down to FL150 when 15 miles out of TOBLA"), "ATDIST EZS77 TOBLA 15 ALT EZS77 FL150")
+  -- where the class stops: a level the aircraft will not pass (it is at FL110, cleared to FL170; EZS77 at
+  -- FL220 cleared to FL190), a condition with no value, a condition carrying no instruction of its aircraft
+  asked(ex("SWR41 climb FL170 and when it passes FL100 reduce 230"), "a level below the climb")
+  asked(ex("EZS77 descend FL190 and once through FL150 reduce 250"), "a level below the descent")
+  asked(ex("EZS77 when you're down a bit slow to 250"), "a condition with no level")
+  asked(ex("EZS77 slow to 250 when you're down a bit"), "a condition with no level, after")
+  asked(ex("EZS77 when passing one eight thousand resume normal speed"), "no instruction of the aircraft")
+  asked(ex("a few miles before TOBLA EZS77 descend FL150"), "no distance")
+  -- the listener's convenience is no condition
+  check_eq(ex("EZS77 when you get a chance reduce 270"), "SPD EZS77 270")
+end
