@@ -1223,6 +1223,9 @@ local NAV_INTENTS = { direct = true, lnav = true, vnav = true }
 -- speed to 230", "... bring its speed back to 240")
 local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, the = true,
                      its = true, your = true, his = true, her = true, their = true }
+-- who does it, between the level and any instruction ("when passing FL200 it shall reduce the speed to 220")
+local SUBJECT_LEAD = { it = true, he = true, she = true, they = true, you = true, shall = true, should = true,
+                       will = true, can = true, must = true }
 function m:at_altitude(s)
   if s.intent ~= "spd" and s.intent ~= "hdg" and s.intent ~= "maintain" and s.intent ~= "alt"
       and not NAV_INTENTS[s.intent] and s.intent ~= "vs" then
@@ -1274,7 +1277,7 @@ function m:at_altitude(s)
   if not q or q.b ~= a + 1 then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
-      or (s.intent == "spd" and SPEED_LEAD[self.words[k]])) do
+      or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])) do
     k = self:skip_fillers(k + 1)
   end
   -- ("crossing FL150 ACA102 reduce 250": the instruction's callsign after a verb's condition; "both at
