@@ -1845,8 +1845,9 @@ function G:condition()
     local q = self:quantities(i, #self.t + 1)[1]
     local by_verb = q and q.kind == "plain"
       and self:word(self:word(q.b - 1, "to") and q.b - 2 or q.b - 1, "@speed_verbs")
-    -- (after a callsign, a value with its own unit is an instruction too: "ACA102 once you hit FL170 go 260 knots")
-    local nq = lead and q and self:quantities(q.e, #self.t + 1)[1]
+    -- (a value with its own unit is an instruction too: "ACA102 once you hit FL170 go 260 knots", "once QFA12 is
+    -- passing FL340 bring it back to 260 knots")
+    local nq = q and self:quantities(q.e, #self.t + 1)[1]
     local valued = nq and (nq.kind == "speed" or nq.kind == "mach" or (nq.kind == "alt" and nq.fl))
     if not q or not (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or by_verb)
         or not (valued or self:any_instruction_in(q.e, #self.t + 1)) then
@@ -2711,13 +2712,16 @@ function G:trailing_reached(s)
   local named = false
   if on < c and self:word(on, "reaching") then
     c, named = on, true
-  elseif on < c and self:word(self:skip_fillers(on + 1), self:word(on, "after") and "reaching level" or "reaching") then
-    c = on
+  elseif on < c then
+    -- ("slow to 250 after it levels")
+    local nx = self:skip_fillers(on + 1)
+    if self:word(on, "after") and self:word(nx, "it he she you") then nx = self:skip_fillers(nx + 1) end
+    if self:word(nx, self:word(on, "after") and "reaching level levels levelled leveled" or "reaching") then c = on end
   end
   -- (words another reading took, "report reaching", are no condition)
   if c >= s.e or self.u:used(c) or self.u:used(self:skip_fillers(c + 1)) then return nil end
   for i = c + 1, s.e - 1 do
-    if self:word(i, "there level lvl reach reaches reaching") then named = true
+    if self:word(i, "there level lvl reach reaches reaching levels levelled leveled") then named = true
     elseif not (self.t[i].kind == "punct" or self.t[i].filler
         or self:word(i, "it it's its is gets get you you're are that please")) then
       return nil
