@@ -5879,6 +5879,7 @@ do
   check_eq(ex("once EZS77 is passing FL190 bring it back to 260 knots"), "ATALT EZS77 FL190 SPD EZS77 260")
   check_eq(ex("SWR41 climb FL150 and when passing FL130 it shall reduce the speed to 230"),
     "ALT SWR41 FL150 ; ATALT SWR41 FL130 SPD SWR41 230")
+  check_eq(ex("SWR41 climb FL150, at FL130 it shall reduce to 230"), "ALT SWR41 FL150 ; ATALT SWR41 FL130 SPD SWR41 230")
   check_eq(ex("leaving FL210 EZS77 reduce 280"), "ATALT EZS77 FL210 SPD EZS77 280")
   -- a distance before or after a fix: "prior to", and a descent said "start (going) down"
   check_eq(ex("12 miles before TOBLA, EZS77 should start going down to FL150"), "ATDIST EZS77 TOBLA 12 ALT EZS77 FL150")
