@@ -2061,11 +2061,12 @@ function G:segments(b, e)
         if soon < cond and self:word(soon - 1, "as") and self:word(soon + 1, "as") then cond = soon - 1 end
         if cond < start then start = cond end
         -- (the distance of a condition said before the instruction word, with "at" or "within" before it; a
-        -- level after "at" opening a clause after the last instruction's value: "climb FL360, at FL350 it
-        -- shall reduce to Mach .77")
+        -- level after "at" opening a clause after the last instruction's value, before a speed or heading:
+        -- "climb FL360, at FL350 it shall reduce to Mach .77"; never a creation's "..., at 37,000 feet")
         for _, q in ipairs(self:quantities(last.trig + 1, start)) do
           local k = self:skip_fillers(q.e)
-          if q.kind == "alt" and self:word(q.b - 1, "at") and self.t[q.b - 2] and self.t[q.b - 2].kind == "punct"
+          if q.kind == "alt" and (tr.intent == "spd" or tr.intent == "hdg") and last.intent ~= "create"
+              and self:word(q.b - 1, "at") and self.t[q.b - 2] and self.t[q.b - 2].kind == "punct"
               and self.t[q.b - 2].text == "," and #self:quantities(last.trig, q.b) > 0 then
             start = math.min(start, q.b - 1)
             break
