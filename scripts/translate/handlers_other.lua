@@ -1696,8 +1696,10 @@ return function(H, f, compass)
     local k = b
     while k < math.min(e, #self.t + 1) do
       local r = self:refs_in(k, k + 1, "waypoint")[1]
-      -- ("the Walda VOR, WLD": a kind of navaid said after a name is no place of its own)
-      if r and self:word(r.b, "@navaid_kinds") and self.t[r.b - 1] and self.t[r.b - 1].raw:match("^%u%l") then
+      -- ("the Walda VOR, WLD", "the SIE VOR": a kind of navaid said after a name or a place is no place of its own)
+      local prev = self.t[r and r.b - 1 or 0]
+      local after_name = prev and (prev.raw:match("^%u%l") or prev.raw:match("^%u[%u%d]+$"))
+      if r and self:word(r.b, "@navaid_kinds") and after_name then
         k = r.e
       elseif r then
         out[#out + 1] = r
@@ -1756,6 +1758,9 @@ return function(H, f, compass)
     -- (also before the verb: "after REMBI add the waypoint ESAMA")
     local at = self:find_word(s.b, s.e, "after before")
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
+    -- ("insert Midhurst after Compton": the place next to it said by its one-word name)
+    local next_name = at < s.e and not next_to and self:place_by_name(at + 1, at + 2, self:state(id))
+    if next_name then next_to = { name = next_name, b = at + 1, e = at + 2 } end
     -- ("after 54 North 30 West add ...": the named point at a position said in degrees after it; the
     -- position added is said apart from it)
     local said = at < s.e and not next_to and qs[1] and self:quantities(at + 1, at + 3)[1]

@@ -681,9 +681,14 @@ return function(intent, rule, words)
   end }
   -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
   rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
-  rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
+  -- ("append the Siedlce VOR SIE at the end of the route of LOT3CM": the route noun ten words on)
+  rule { "add append insert give put", "addwpt", near = { 10, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
+  -- "stick KMCO on the end of Frontier 2231's route", "tack FLYNN onto the end of its route": a waypoint
+  -- straight after the verb, put at the route's end (not "stick to the route", which adds nothing)
+  rule { "stick tack", "addwpt", near = { 8, "@route_nouns" },
+         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and g:word_in(i + 2, i + 5, "end") end }
   -- "add Lambourne to the end of the Air France's route", "add glen rose to skywest 4420's route": a navaid
   -- or airport said by its name of one or two words
   rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
@@ -777,10 +782,12 @@ return function(intent, rule, words)
   end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
   -- next to another, the place said after "after"/"before" before or after the verb
-  -- ("after NAVPO add Lajes": a navaid or airport said by its one-word name)
+  -- ("after NAVPO add Lajes", "insert Midhurst after Compton": either said by its navaid's or airport's
+  -- one-word name)
   rule { "add append insert route", "addwpt", when = function(g, i)
     local at = g:find_word(1, #g.t + 1, "after before")
-    return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
+    return at <= #g.t and at ~= i + 1
+      and (g:has_ref(at + 1, at + 2, "waypoint") or g:place_by_name(at + 1, at + 2) ~= nil)
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
   -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM", "squeeze MADOT in after BUSIL": the same said with

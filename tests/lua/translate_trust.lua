@@ -5855,3 +5855,21 @@ do
   check_eq(ex("vertical resolutions off, lateral only"), "RMETHV OFF")
   check_eq(ex("resolutions horizontal only please, no vertical"), "RMETHV OFF")
 end
+
+-- Cycle 37 (resid): a waypoint put next to another said by its navaid's name ("insert Detling after
+-- Ockham"), into "route of" an aircraft, or stuck on the route's end; a kind of navaid said after an
+-- ident ("the DET VOR") is no waypoint of its own; a place next to it that names nothing is asked about
+do
+  local _, ex = navscene({ "CRE EZY12 A320 51.2 -0.3 090 FL150 260", "ADDWPT EZY12 OCK", "ADDWPT EZY12 SFD" },
+    "waypoints said by their navaid's name")
+  if ex then
+    check_eq(ex("EZY12 insert Detling after Ockham"), "ADDWPT EZY12 DET,,,OCK")
+    check_eq(ex("EZY12, after Seaford add Detling"), "ADDWPT EZY12 DET,,,SFD")
+    check_eq(ex("add DET into route of EZY12"), "ADDWPT EZY12 DET")
+    check_eq(ex("tack DET onto the end of EZY12's route"), "ADDWPT EZY12 DET")
+    check_eq(ex("add the DET VOR to EZY12's route"), "ADDWPT EZY12 DET")
+    check_eq(ex("please append the DET VOR at the end of the route of EZY12"), "ADDWPT EZY12 DET")
+    asked(ex("EZY12 insert Detling after lunch"), "a place next to it that names nothing")
+    asked(ex("EZY12 stick to the route"), "keeping the route adds nothing")
+  end
+end
