@@ -2783,6 +2783,16 @@ return function(H, f, compass)
       dir = { value = point }
       self:explain(from, self:word(from + 1, "the") and from + 3 or from + 2)
     end
+    -- ("a westerly at 40 knots", "a north-westerly": the wind named by where it blows from)
+    for k = math.max(1, s.b - 2), s.e - 1 do
+      local named = not dir and self.t[k].kind == "word" and L.wind_points[self.t[k].text]
+      if named then
+        local p = (self.t[k - 1] or {}).text == "-" and k - 2 or k - 1
+        local joined = self:word(p, "north south") and L.wind_points[self.t[p].text .. self.t[k].text]
+        dir = { value = joined or named }
+        self:explain(joined and p or k, k + 1)
+      end
+    end
     if not dir or not spd then
       return self:need("From which direction, and how strong in knots, should the wind blow?")
     end

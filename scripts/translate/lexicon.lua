@@ -587,6 +587,9 @@ return {
       "facing", "flies", "headed" },
   compass = { north = 0, east = 90, south = 180, west = 270,
               northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
+  -- a wind named by where it blows from ("a westerly at 40 knots"): that direction in degrees
+  wind_points = { northerly = 360, easterly = 90, southerly = 180, westerly = 270, northeasterly = 45,
+                  southeasterly = 135, southwesterly = 225, northwesterly = 315 },
   -- fractions of an hour, a minute or a second said in words ("half an hour", "a tenth of a second")
   fractions = { half = 0.5, quarter = 0.25, fifth = 0.2, tenth = 0.1, twentieth = 0.05, hundredth = 0.01 },
   -- how many times real time, said in words

@@ -856,6 +856,12 @@ return function(intent, rule, words)
     return true
   end }
   -- "delete the deletion area", "remove the experiment area": the area ended
+  -- "remove the trails", "remove all trails": the trails switched off (TRAIL's own word), no aircraft deleted
+  rule { "remove", false, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    while g:word(k, "the all aircraft") do k = k + 1 end
+    return g:word(k, "trail trails")
+  end }
   rule { "delete remove", false, near = { 3, "area" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "the area, so anything leaving it gets deleted": what a setting does, in the passive, no aircraft named
   rule { "delete deleted remove removed", false, prev = { 1, "gets get got" },
@@ -1518,6 +1524,13 @@ return function(intent, rule, words)
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
+  -- "wind set at 35.5 139.8 from 270 degrees 40 knots": the verb said after the noun
+  rule { "wind winds", "wind", next = "set" }
+  rule { "set", false, prev = { 1, "wind winds" } }
+  -- "set a westerly at 40 knots over -27.4 153.1": a wind named by where it blows from (lexicon.wind_points),
+  -- put somewhere by the verb, no aircraft named
+  rule { "northerly easterly southerly westerly northeasterly southeasterly southwesterly northwesterly", "wind",
+         prev = { 3, "add set define put create" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind from 270 at 40 kt over 55.5 12.5", "a wind of 270 at 40 knots": where it blows from, said after it
   rule { "wind winds", "wind", next = "from of", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind 270 at 30 kt at 52 4": its direction straight after it, its speed in knots after that

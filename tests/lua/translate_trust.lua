@@ -5873,3 +5873,24 @@ do
     asked(ex("EZY12 stick to the route"), "keeping the route adds nothing")
   end
 end
+
+-- Cycle 37 (resid): "remove the trails" switches the trails off, no aircraft deleted ("remove" an aircraft
+-- still deletes it; "clear the trails" is still asked)
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("remove the trails"), "TRAIL OFF")
+  check_eq(ex("please remove all the aircraft trails"), "TRAIL OFF")
+  check_eq(ex("remove KLM51"), "DEL KLM51")
+  asked(ex("clear the trails"), "shown or hidden not said")
+end
+
+-- Cycle 37 (resid): a wind named by where it blows from ("set a northwesterly at 35 knots over ...",
+-- lexicon.wind_points), and "wind set at ...", the verb after the noun; with an aircraft named it is no wind set
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("set a northwesterly at 35 knots over 51.5 3.5, FL200"), "WIND 51.5 3.5 FL200 315 35")
+  check_eq(ex("set a south-westerly at 20 knots over 51.5 3.5"), "WIND 51.5 3.5 225 20")
+  check_eq(ex("add an easterly of 15 knots at 51.5 3.5"), "WIND 51.5 3.5 90 15")
+  check_eq(ex("wind set at 51.5 3.5 from 200 degrees 30 knots"), "WIND 51.5 3.5 200 30")
+  check(not ex("KLM51 expect a westerly at 40 knots"):match("^WIND"), "a wind told to an aircraft sets none")
+end
