@@ -2824,6 +2824,18 @@ return function(H, f, compass)
       self:mark_used(saying + 1, s.e)
       return self:emit("ECHO " .. self:raw(saying + 1, s.e))
     end
+    -- "print baseline no reso to the console", "print hello_3 in the console": the words between the verb
+    -- and where they go, as typed ("echo the text RUN 4 START to the console": after "the text")
+    local to = self:find_word(s.trig + 1, s.e, "to on in")
+    local at = self:word(to + 1, "the") and to + 2 or to + 1
+    local from = self:word(s.trig + 1, "the") and self:word(s.trig + 2, "text message words line") and s.trig + 3
+      or s.trig + 1
+    if to > from and to < s.e and self:word(at, "console screen display window") then
+      self:explain(s.trig + 1, from)
+      self:mark_used(from, to)
+      self:explain(to, at + 1)
+      return self:emit("ECHO " .. self:raw(from, to))
+    end
     -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request after a
     -- speaker's label, the words after it as typed
     -- (a courtesy word closing the request, "echo test start please", is said to us, not printed)
@@ -2833,14 +2845,6 @@ return function(H, f, compass)
       self:explain(e, s.e)
       self:mark_used(s.trig + 1, e)
       return self:emit("ECHO " .. self:raw(s.trig + 1, e))
-    end
-    -- "print baseline no reso to the console": the words between the verb and where they go, as typed
-    local to = self:find_word(s.trig + 1, s.e, "to on")
-    local at = self:word(to + 1, "the") and to + 2 or to + 1
-    if to > s.trig + 1 and to < s.e and self:word(at, "console screen display window") then
-      self:mark_used(s.trig + 1, to)
-      self:explain(to, at + 1)
-      return self:emit("ECHO " .. self:raw(s.trig + 1, to))
     end
     self:need("What text should I print?")
   end

@@ -1495,6 +1495,9 @@ return function(intent, rule, words)
     end
     return true
   end }
+  -- "fast forward the scenario by 10 minutes", "pause the scenario": the scenario running, the object of a
+  -- verb of the clock, no file to load
+  rule { "scenario", false, prev = { 2, "forward ff pause freeze unfreeze unpause resume continue hold" } }
   -- "20 random aircraft for background load", "more traffic load": the noun, no file loaded
   rule { "load", false, prev = { 1, "background traffic high low heavy light more extra" } }
   rule { "scenario load open ic", "ic" }
@@ -1590,6 +1593,11 @@ return function(intent, rule, words)
   rule { "echo", "echo", when = function(g, i)
     local nx = g.t[i + 1]
     return i == g:skip_fillers(1) and nx ~= nil and nx.kind == "word" and PHONETIC[nx.text] == nil
+  end }
+  -- "kindly echo the text RUN 4 START to the console": words sent to the console, screen or window
+  rule { "echo", "echo", when = function(g, i)
+    local k = g:find_word(i + 2, #g.t + 1, "to on in")
+    return k <= #g.t and g:word(g:word(k + 1, "the") and k + 2 or k + 1, "console screen display window")
   end }
   -- "write 'trial 4 start' into the log", "put 'baseline done' in the log", "put 'Run 3 start' on the
   -- screen": quoted text for the log or the screen

@@ -5894,3 +5894,15 @@ do
   check_eq(ex("wind set at 51.5 3.5 from 200 degrees 30 knots"), "WIND 51.5 3.5 200 30")
   check(not ex("KLM51 expect a westerly at 40 knots"):match("^WIND"), "a wind told to an aircraft sets none")
 end
+
+-- Cycle 37 (resid): the experimenter's console and clock: "the scenario" as the object of a verb of the clock
+-- is the simulation running (no file loaded); words sent "to/in the console" are ECHOed as typed, after "the
+-- text"; "load the scenario" still asks which file
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("fast forward the scenario by 3 minutes"), "FF 180")
+  check_eq(ex("please freeze the scenario"), "HOLD")
+  asked(ex("load the scenario"), "no file named")
+  check_eq(ex("please echo the text TRIAL 7 BEGIN to the console"), "ECHO TRIAL 7 BEGIN")
+  check_eq(ex("print batch_9_done in the console"), "ECHO batch_9_done")
+end
