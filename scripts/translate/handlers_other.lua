@@ -723,11 +723,12 @@ return function(H, f, compass)
     local named_at
     if not lat or not lon then
       -- ("move AAL2307 to Cedar Creek": the navaid the words name together, not the fix CREEK)
+      -- ("move JOR1421 to the Floresti VOR FLR": the ident, not the navaid's kind)
       for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do
         local whole
-        if named_at == nil then whole = self:whole_place_name(r, s.trig, s.e, id) end
+        if named_at == nil and not self:navaid_kind_said(r) then whole = self:whole_place_name(r, s.trig, s.e, id) end
         if whole == false then return end
-        named_at = named_at or whole or r.name
+        if not self:navaid_kind_said(r) then named_at = named_at or whole or r.name end
       end
       named_at = named_at or self:place_by_name(s.trig + 1, s.e, self:state(id))
     end
@@ -1689,6 +1690,14 @@ return function(H, f, compass)
 
   -- The places named in tokens [b, e), in order: waypoint references, and
   -- user waypoints whose names read like callsigns ("TEST1"): {{name, b, e}}.
+  -- True when the waypoint ref `r` is a kind of navaid said after a name, an ident or an article ("the Walda
+  -- VOR, WLD", "the SIE VOR", "the VOR"): no place of its own.
+  function m:navaid_kind_said(r)
+    local prev = self.t[r.b - 1]
+    return self:word(r.b, "@navaid_kinds") and prev ~= nil
+      and (prev.raw:match("^%u%l") ~= nil or prev.raw:match("^%u[%u%d]+$") ~= nil or self:word(r.b - 1, "the a"))
+  end
+
   function m:route_places(b, e)
     local user = {}
     for _, w in ipairs(self.world.waypoints or {}) do user[w:upper()] = true end
@@ -1696,10 +1705,7 @@ return function(H, f, compass)
     local k = b
     while k < math.min(e, #self.t + 1) do
       local r = self:refs_in(k, k + 1, "waypoint")[1]
-      -- ("the Walda VOR, WLD", "the SIE VOR": a kind of navaid said after a name or a place is no place of its own)
-      local prev = self.t[r and r.b - 1 or 0]
-      local after_name = prev and (prev.raw:match("^%u%l") or prev.raw:match("^%u[%u%d]+$"))
-      if r and self:word(r.b, "@navaid_kinds") and after_name then
+      if r and self:navaid_kind_said(r) then
         k = r.e
       elseif r then
         out[#out + 1] = r

@@ -58,7 +58,7 @@ return {
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
         "they", "them", "their", "theirs", "themselves", "one", "ones", "someone", "somebody", "anyone",
         "anybody", "everyone", "everybody", "something", "anything", "everything", "nothing", "nobody", "who",
-        "things", "stuff",
+        "things", "stuff", "else",
         "whom", "there",
         "here", "i'm", "i'd", "i'll", "i've", "you're", "you'd", "you'll", "you've", "we're", "we'd", "we'll",
         "we've",

@@ -5906,3 +5906,16 @@ do
   check_eq(ex("please echo the text TRIAL 7 BEGIN to the console"), "ECHO TRIAL 7 BEGIN")
   check_eq(ex("print batch_9_done in the console"), "ECHO batch_9_done")
 end
+
+-- Cycle 37 (resid): a kind of navaid said after its name or ident ("the Siedlce VOR SIE", "the SIE VOR") is
+-- no place of its own where an aircraft is moved; "the VOR" alone names none (asked); "keep everything else"
+-- carries nothing
+do
+  local _, ex = navscene({ "CRE SAS31 A320 52.2 20.9 090 FL250 260" }, "a navaid's kind after its name")
+  if ex then
+    check_eq(ex("move SAS31 to the Siedlce VOR SIE, keep everything else"), "MOVE SAS31 SIE")
+    check_eq(ex("move SAS31 to the SIE VOR"), "MOVE SAS31 SIE")
+    check_eq(ex("move SAS31 to the Siedlce VOR"), "MOVE SAS31 SIE")
+    asked(ex("move SAS31 to the VOR"), "no navaid named")
+  end
+end
