@@ -568,6 +568,13 @@ return function(intent, rule, words)
   rule { "delwpt", "delwpt" }
   rule { "create make", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
+  -- "create a circle area TMA1 centred at ...", "create a box ...": a shape made, no aircraft (the shape's
+  -- own word reads it)
+  rule { "create", false, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    while g:word(k, "a an the new") do k = k + 1 end
+    return g:word(k, "circle circular box")
+  end }
   -- "To create a same-level encounter: SAS1410 climb FL190": the purpose of what follows the colon or comma
   rule { "create set", false, prev = { 1, "to" }, when = function(g, i)
     if g:skip_fillers(1) ~= i - 1 then return false end

@@ -5919,3 +5919,12 @@ do
     asked(ex("move SAS31 to the VOR"), "no navaid named")
   end
 end
+
+-- Cycle 37 (resid): "create a circle/box NAME ..." makes the shape, no aircraft; "create a circle" with nothing
+-- else is asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("create a circle area ZONE4 centred at 51.5 N 4.2 E with radius 15 NM"), "CIRCLE ZONE4 51.5 4.2 15")
+  check_eq(ex("create a box B2 51 3 51.5 3.5"), "BOX B2 51 3 51.5 3.5")
+  asked(ex("create a circle"), "no name, centre or radius")
+end
