@@ -285,12 +285,14 @@ return {
         "separation", "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite",
         "define", "teleport", "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes",
         "timestep", "protected", "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude",
-        "minimum", "horizontal", "forward", "right", "left", "creconfs", },
+        "minimum", "horizontal", "forward", "right", "left", "creconfs", "trail", "trails", "dtmult", },
     common = { "stop", "them", "last", "want", "have", "from", "with", "what", "also", "back", "give", "make",
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
         "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts",
+        -- (words one letter from "trail": "trial 3")
+        "trial", "trials", "train", "trait",
         -- (a controller position named in a hand-off: "contact director 118.82")
         "director", },
   },

@@ -5928,3 +5928,12 @@ do
   check_eq(ex("create a box B2 51 3 51.5 3.5"), "BOX B2 51 3 51.5 3.5")
   asked(ex("create a circle"), "no name, centre or radius")
 end
+
+-- Cycle 37 (resid): typed typos of "trail" and "dtmult" (lexicon.spelling.targets) are read as those words;
+-- the words one letter away that mean something of their own ("trial") are kept
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("tral on"), "TRAIL ON")
+  check_eq(ex("dtmul 6"), "DTMULT 6")
+  asked(ex("trial on"), "a trial is no trail")
+end
