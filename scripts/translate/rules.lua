@@ -261,6 +261,17 @@ return function(intent, rule, words)
   -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "knock out KLM1234", "knock out the Cessna": an aircraft taken out of the simulation, nothing after it
+  -- "take N73WX off the scope", "sup: n73wx off the scope": an aircraft taken off the display is deleted (the
+  -- aircraft straight before "off", opening the request or after "take"/"get"; "N73WX is off the scope" tells)
+  rule { "off", "delete", when = function(g, i)
+    local k = g:word(i + 1, "the my your our") and i + 2 or i + 1
+    if not g:word(k, "scope screen display radar") then return false end
+    local r = g:refs_in(1, i, "aircraft")
+    r = r[#r]
+    if not (r and r.e == i and r.exists) then return false end
+    local b = g:skip_fillers(1)
+    return r.b == b or (g:word(r.b - 1, "take get") and r.b - 1 == b)
+  end }
   rule { "knock", "delete", next = "out", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 2), true) end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its

@@ -5937,3 +5937,12 @@ do
   check_eq(ex("dtmul 6"), "DTMULT 6")
   asked(ex("trial on"), "a trial is no trail")
 end
+
+-- Cycle 37 (resid): an aircraft taken off the scope ("take KLM51 off the scope", "klm51 off the screen") is
+-- deleted; "KLM51 is off the scope" (a report) is asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("take KLM51 off the scope"), "DEL KLM51")
+  check_eq(ex("instructor: afr7 off the screen"), "DEL AFR7")
+  asked(ex("KLM51 is off the scope"), "a report, no request")
+end
