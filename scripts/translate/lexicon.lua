@@ -443,7 +443,7 @@ return {
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
   -- (typed: "210 hmm no 200")
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch", "corr", "hmm" },
+                                "say", "again", "scratch", "corr", "hmm", "typo" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
                                   "corr" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },

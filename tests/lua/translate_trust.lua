@@ -5946,3 +5946,11 @@ do
   check_eq(ex("instructor: afr7 off the screen"), "DEL AFR7")
   asked(ex("KLM51 is off the scope"), "a report, no request")
 end
+
+-- Cycle 37 (resid): "sorry, typo" is a self-correction's word: the value said after it replaces the one before
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("KLM51 climb FL240, sorry typo, FL260"), "ALT KLM51 FL260")
+  check_eq(ex("KLM51, typo, KLM51 heading 150"), "HDG KLM51 150")
+  asked(ex("KLM51 climb FL240 typo FL260"), "no mark sets the correction apart")
+end
