@@ -215,8 +215,9 @@ return {
         -- controllers' written abbreviations of instruction words
         "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb", "degs", "vect", "vects", "vctr", "inc", "incr",
         -- squawk's own display, where a command shows or draws what it is asked, and the traffic on it
-        -- ("put a Delta CRJ900 on the board", "remove the United from the scene")
-        "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
+        -- ("put a Delta CRJ900 on the board", "remove the United from the scene", "to see the trajectories")
+        "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene", "trajectory",
+        "trajectories",
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it", "seed
         -- 7 for reproducibility")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",

@@ -5880,6 +5880,7 @@ do
   local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
   check_eq(ex("remove the trails"), "TRAIL OFF")
   check_eq(ex("please remove all the aircraft trails"), "TRAIL OFF")
+  check_eq(ex("show the trails so we can follow the trajectories"), "TRAIL ON")
   check_eq(ex("remove KLM51"), "DEL KLM51")
   asked(ex("clear the trails"), "shown or hidden not said")
 end
