@@ -555,10 +555,14 @@ return function(H, f, compass)
       if q.kind == "time" then times[#times + 1] = q end
       -- (a bare number beside the closest approach's word is its distance: "cpa 0", "1 mile cpa")
       local beside = self:word(q.b - 1, "@closest_approach distance") or self:word(q.e, "@closest_approach")
-      -- ("dpsi 180", "conflict angle 45": a bare number after CRECONFS's argument name or "angle")
+      -- ("dpsi 180", "conflict angle 45": a bare number after CRECONFS's argument name or "angle"; "relative
+      -- heading 45 degrees": the heading relative to the target's)
       local angle = q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at"))
         or (q.kind == "plain" and self:word(q.b - 1, "dpsi angle"))
-      if angle and not dpsi then
+        or ((q.kind == "heading" or q.kind == "plain") and self:word_in(math.max(s.b, q.b - 2), q.b, "relative"))
+      if q.kind == "plain" and q.value == 1 and self.t[q.b].number_word and self:word(q.e, "intruder @aircraft_nouns") then
+        self:take(q)  -- ("create one intruder INT02": the one aircraft made)
+      elseif angle and not dpsi then
         dpsi = self:take(q).value
       elseif q.value == dpsi and (angle or (q.kind == "plain"
           and not self:word(q.b - 1, "@loss_of_separation @closest_approach"))) then

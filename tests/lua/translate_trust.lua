@@ -5955,3 +5955,12 @@ do
   check_eq(ex("KLM51, typo, KLM51 heading 150"), "HDG KLM51 150")
   asked(ex("KLM51 climb FL240 typo FL260"), "no mark sets the correction apart")
 end
+
+-- Cycle 37 (resid): a conflict made with "relative heading N degrees" crosses at N; "one intruder" is the one
+-- aircraft made; with no angle said it is asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("create one intruder INT7, B738, versus KLM51 with relative heading 60 degrees, CPA 0.5 nm and 200 "
+    .. "seconds to loss of separation"), "CRECONFS INT7 B738 KLM51 60 0.5 200")
+  asked(ex("create one intruder INT8 B738 versus KLM51, CPA 0.5 nm, 200 seconds to loss of separation"), "no angle")
+end
