@@ -3507,6 +3507,21 @@ function G:stations()
   end
 end
 
+-- The name of an exercise, scenario or simulation, capitalised between "the" and the noun ("run the Budapest
+-- exercise at four times real time"), is marked used and explained before the parse: it names the run, no
+-- place or aircraft.
+local EXERCISE_NOUNS = { exercise = true, scenario = true, simulation = true, sim = true, session = true }
+function G:exercise_names()
+  for k = 2, #self.t - 1 do
+    local t = self.t[k]
+    if self:word(k - 1, "the") and EXERCISE_NOUNS[self.t[k + 1].text] and t.kind == "word" and t.alpha
+        and t.raw:match("^%u%l+$") and not t.keyword and #self:refs_in(k, k + 1) == 0 then
+      self:mark_used(k, k + 1)
+      self.noted[k] = true
+    end
+  end
+end
+
 -- True when tokens [b, e), a clause ending in a comma or colon (`after_callsign`: or its part after a
 -- callsign), are a station in the addressing position (G:stations).
 function G:station_clause(b, e, after_callsign)
@@ -4893,6 +4908,7 @@ function M.translate(text, world)
   g:question_back()
   g:refused()
   g:stations()
+  g:exercise_names()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()

@@ -5964,3 +5964,12 @@ do
     .. "seconds to loss of separation"), "CRECONFS INT7 B738 KLM51 60 0.5 200")
   asked(ex("create one intruder INT8 B738 versus KLM51, CPA 0.5 nm, 200 seconds to loss of separation"), "no angle")
 end
+
+-- Cycle 37 (resid): the capitalised name of an exercise or scenario ("the Lisbon exercise") names the run, no
+-- place: it carries nothing; "load the Lisbon scenario" still asks which file
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("run the Lisbon exercise at three times real time"), "DTMULT 3")
+  check_eq(ex("pause the Lisbon simulation"), "HOLD")
+  asked(ex("load the Lisbon scenario"), "no file named")
+end
