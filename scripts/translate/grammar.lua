@@ -3522,6 +3522,26 @@ function G:exercise_names()
   end
 end
 
+-- A place's capitalised name of one or two words said after "at", "over" or "near" and set apart by a comma
+-- before its latitude ("the wind at Sofia, 42.70 N 23.40 E") is marked used and explained before the parse: the
+-- position said after it is the place.
+function G:places_by_position()
+  for k = 2, #self.t - 2 do
+    if self:word(k - 1, "at over near") then
+      local e = k
+      while e < k + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l+$")
+          and not self.t[e].keyword do
+        e = e + 1
+      end
+      local q = e > k and self.t[e] and self.t[e].text == "," and self:quantities(e + 1, e + 2)[1]
+      if q and q.b == e + 1 and q.kind == "lat" and #self:refs_in(k, e, "aircraft") == 0 then
+        self:mark_used(k, e + 1)
+        for x = k, e do self.noted[x] = true end
+      end
+    end
+  end
+end
+
 -- True when tokens [b, e), a clause ending in a comma or colon (`after_callsign`: or its part after a
 -- callsign), are a station in the addressing position (G:stations).
 function G:station_clause(b, e, after_callsign)
@@ -4909,6 +4929,7 @@ function M.translate(text, world)
   g:refused()
   g:stations()
   g:exercise_names()
+  g:places_by_position()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()

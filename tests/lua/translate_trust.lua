@@ -5973,3 +5973,13 @@ do
   check_eq(ex("pause the Lisbon simulation"), "HOLD")
   asked(ex("load the Lisbon scenario"), "no file named")
 end
+
+-- Cycle 37 (resid): a place's name set apart by a comma before its latitude ("at Ghent, 51.1 N 3.7 E") is the
+-- position said after it; a name alone beside a bare decimal pair is still asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("what is the wind at Ghent, 51.1 N 3.7 E?"), "GETWIND 51.1 3.7")
+  check_eq(ex("create KLM52 B738 at Ghent, 51.1 N 3.7 E, heading 090, FL100, 250 knots"),
+    "CRE KLM52 B738 51.1 3.7 90 FL100 250")
+  asked(ex("what is the wind at Ghent, 51.1 3.7?"), "a bare pair beside a name")
+end
