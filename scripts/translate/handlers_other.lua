@@ -736,6 +736,14 @@ return function(H, f, compass)
       end
       named_at = named_at or self:place_by_name(s.trig + 1, s.e, self:state(id))
     end
+    -- ("move the Ryanair to FL360, same position": where it is now, with the values said)
+    local same = self:find_word(s.b, s.e, "same")
+    local here = self:state(id)
+    if (not lat or not lon) and not named_at and same < s.e and self:word(same + 1, "position place spot location")
+        and not self:word(same + 2, "as") and here and here.lat then
+      lat, lon = here.lat, here.lon
+      self:explain(same, same + 2)
+    end
     if (not lat or not lon) and not named_at then
       return self:need("Where should " .. id .. " go? Please give a latitude and longitude.")
     end

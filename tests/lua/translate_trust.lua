@@ -5983,3 +5983,11 @@ do
     "CRE KLM52 B738 51.1 3.7 90 FL100 250")
   asked(ex("what is the wind at Ghent, 51.1 3.7?"), "a bare pair beside a name")
 end
+
+-- Cycle 37 (resid): "move X to FL360, same position" moves it where it is now, at the level said; "the same
+-- position as Y" (another aircraft's) is asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("move KLM51 to FL300, same position"), "MOVE KLM51 52 4 FL300")
+  asked(ex("move KLM51 to the same position as AFR7"), "another aircraft's position")
+end
