@@ -950,6 +950,12 @@ return function(intent, rule, words)
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
+  -- "VOZ1234 track to BURLI": a waypoint (no airport) the aircraft tracks to, flown to directly
+  rule { "track", "direct", next = "to", when = function(g, i)
+    local k = g:skip_fillers(i + 2)
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    return r ~= nil and not r.name:match("^%a%a%a%a$")
+  end }
   -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO", "rejoin own navigation at NORKU":
   -- the waypoint where the route is rejoined is flown to directly ("rejoin the route" alone is LNAV)
   rule { "rejoin rejoining", "direct", when = function(g, i)

@@ -5991,3 +5991,11 @@ do
   check_eq(ex("move KLM51 to FL300, same position"), "MOVE KLM51 52 4 FL300")
   asked(ex("move KLM51 to the same position as AFR7"), "another aircraft's position")
 end
+
+-- Cycle 37 (resid): "track to WAYPOINT" (Australian) is a direct-to; "track to" an airport is asked
+do
+  local _, ex = scene({ "CRE QFA33 B738 -27.0 153.0 180 FL300 280", "DEFWPT KOALA -27.5 153.2",
+    "ADDWPT QFA33 KOALA" })
+  check_eq(ex("QFA33 track to KOALA then descend FL240"), "DIRECT QFA33 KOALA ; ALT QFA33 FL240")
+  asked(ex("QFA33 track to YBBN"), "an airport tracked to")
+end
