@@ -2042,15 +2042,15 @@ function G:split_ellipsis(segs)
   for _, s in ipairs(segs) do
     local cur, e = s, s.e
     out[#out + 1] = cur
-    -- "klm12 fl250 ezy45 fl310", "have the BA at FL260 and the Lufthansa at FL320": with no
-    -- instruction word, an aircraft that flies between values with units of their own (straight
-    -- after it, or after "at") starts a request of its own
+    -- "klm12 fl250 ezy45 fl310", "have the BA at FL260 and the Lufthansa at FL320", "put LOT3CM to FL320
+    -- and WZZ1652 to FL360": with no instruction word, an aircraft that flies between values with units of
+    -- their own (straight after it, or after "at" or "to") starts a request of its own
     if s.intent == "infer" then
       for _, r in ipairs(self:refs_in(s.b + 1, e, "aircraft")) do
         local before, after = self:quantities(cur.b, r.b), self:quantities(r.e, e)
         local own = function(q) return q and (q.kind == "alt" and q.fl or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") end
         local v = self:skip_fillers(r.e)
-        if self:word(v, "at") then v = v + 1 end
+        if self:word(v, "at to") then v = v + 1 end
         if r.exists and #before > 0 and own(before[#before]) and own(after[1]) and after[1].b == v then
           cur.e = r.b
           cur = { intent = "infer", b = r.b, trig = r.b, e = e }

@@ -5999,3 +5999,12 @@ do
   check_eq(ex("QFA33 track to KOALA then descend FL240"), "DIRECT QFA33 KOALA ; ALT QFA33 FL240")
   asked(ex("QFA33 track to YBBN"), "an airport tracked to")
 end
+
+-- Cycle 37 (resid): "put A to FL320 and B to FL360", with no instruction word, gives each aircraft its own
+-- level, never the first level to both; "put A and B to FL360" gives both the one level
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("put KLM51 to FL240 and AFR7 to FL260"), "ALT KLM51 FL240 ; ALT AFR7 FL260")
+  check_eq(ex("set KLM51 to FL240, AFR7 to FL260"), "ALT KLM51 FL240 ; ALT AFR7 FL260")
+  check_eq(ex("put KLM51 and AFR7 to FL300"), "ALT KLM51 FL300 ; ALT AFR7 FL300")
+end
