@@ -2148,15 +2148,15 @@ function G:split_ellipsis(segs)
   for _, s in ipairs(segs) do
     local cur, e = s, s.e
     out[#out + 1] = cur
-    -- "klm12 fl250 ezy45 fl310", "have the BA at FL260 and the Lufthansa at FL320": with no
-    -- instruction word, an aircraft that flies between values with units of their own (straight
-    -- after it, or after "at") starts a request of its own
+    -- "klm12 fl250 ezy45 fl310", "have the BA at FL260 and the Lufthansa at FL320", "put LOT3CM to FL320
+    -- and WZZ1652 to FL360": with no instruction word, an aircraft that flies between values with units of
+    -- their own (straight after it, or after "at" or "to") starts a request of its own
     if s.intent == "infer" then
       for _, r in ipairs(self:refs_in(s.b + 1, e, "aircraft")) do
         local before, after = self:quantities(cur.b, r.b), self:quantities(r.e, e)
         local own = function(q) return q and (q.kind == "alt" and q.fl or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") end
         local v = self:skip_fillers(r.e)
-        if self:word(v, "at") then v = v + 1 end
+        if self:word(v, "at to") then v = v + 1 end
         if r.exists and #before > 0 and own(before[#before]) and own(after[1]) and after[1].b == v then
           cur.e = r.b
           cur = { intent = "infer", b = r.b, trig = r.b, e = e }
@@ -3618,6 +3618,41 @@ function G:stations()
   end
 end
 
+-- The name of an exercise, scenario or simulation, capitalised between "the" and the noun ("run the Budapest
+-- exercise at four times real time"), is marked used and explained before the parse: it names the run, no
+-- place or aircraft.
+local EXERCISE_NOUNS = { exercise = true, scenario = true, simulation = true, sim = true, session = true }
+function G:exercise_names()
+  for k = 2, #self.t - 1 do
+    local t = self.t[k]
+    if self:word(k - 1, "the") and EXERCISE_NOUNS[self.t[k + 1].text] and t.kind == "word" and t.alpha
+        and t.raw:match("^%u%l+$") and not t.keyword and #self:refs_in(k, k + 1) == 0 then
+      self:mark_used(k, k + 1)
+      self.noted[k] = true
+    end
+  end
+end
+
+-- A place's capitalised name of one or two words said after "at", "over" or "near" and set apart by a comma
+-- before its latitude ("the wind at Sofia, 42.70 N 23.40 E") is marked used and explained before the parse: the
+-- position said after it is the place.
+function G:places_by_position()
+  for k = 2, #self.t - 2 do
+    if self:word(k - 1, "at over near") then
+      local e = k
+      while e < k + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l+$")
+          and not self.t[e].keyword do
+        e = e + 1
+      end
+      local q = e > k and self.t[e] and self.t[e].text == "," and self:quantities(e + 1, e + 2)[1]
+      if q and q.b == e + 1 and q.kind == "lat" and #self:refs_in(k, e, "aircraft") == 0 then
+        self:mark_used(k, e + 1)
+        for x = k, e do self.noted[x] = true end
+      end
+    end
+  end
+end
+
 -- True when tokens [b, e), a clause ending in a comma or colon (`after_callsign`: or its part after a
 -- callsign), are a station in the addressing position (G:stations).
 function G:station_clause(b, e, after_callsign)
@@ -5004,6 +5039,8 @@ function M.translate(text, world)
   g:question_back()
   g:refused()
   g:stations()
+  g:exercise_names()
+  g:places_by_position()
   -- only what is not simulated was said: no instruction word and no value left
   if note and not g:any_instruction() and #g:quantities(1, #g.t + 1) == 0 then return { commands = {}, note = note } end
   local cond, rest = g:condition()

@@ -320,9 +320,10 @@ function m:as_context(i)
     -- (nor across a sentence's end: "OK, conflict time. Jetairfly climb FL310")
     if self:intent_at(k) or (self.t[k].kind == "punct" and self.t[k].text ~= ",") then return false end
     if self:word(k, "@aircraft_context") then
-      -- ("insert SUGOL into KLM601's route": the aircraft whose route it is, no traffic turned toward)
+      -- ("insert SUGOL into KLM601's route", "into route of KLM601": the aircraft whose route it is, no
+      -- traffic turned toward)
       local r = self:word(k, "into towards toward") and self:refs_in(i, i + 1, "aircraft")[1]
-      return not (r and self:word(r.e, "@route_nouns"))
+      return not (r and (self:word(r.e, "@route_nouns") or (self:word(i - 1, "of") and self:word(i - 2, "@route_nouns"))))
     end
   end
   return false

@@ -555,10 +555,14 @@ return function(H, f, compass)
       if q.kind == "time" then times[#times + 1] = q end
       -- (a bare number beside the closest approach's word is its distance: "cpa 0", "1 mile cpa")
       local beside = self:word(q.b - 1, "@closest_approach distance") or self:word(q.e, "@closest_approach")
-      -- ("dpsi 180", "conflict angle 45": a bare number after CRECONFS's argument name or "angle")
+      -- ("dpsi 180", "conflict angle 45": a bare number after CRECONFS's argument name or "angle"; "relative
+      -- heading 45 degrees": the heading relative to the target's)
       local angle = q.kind == "angle" or (side and q.kind == "plain" and q.b == side + 2 and self:word(side + 1, "at"))
         or (q.kind == "plain" and self:word(q.b - 1, "dpsi angle"))
-      if angle and not dpsi then
+        or ((q.kind == "heading" or q.kind == "plain") and self:word_in(math.max(s.b, q.b - 2), q.b, "relative"))
+      if q.kind == "plain" and q.value == 1 and self.t[q.b].number_word and self:word(q.e, "intruder @aircraft_nouns") then
+        self:take(q)  -- ("create one intruder INT02": the one aircraft made)
+      elseif angle and not dpsi then
         dpsi = self:take(q).value
       elseif q.value == dpsi and (angle or (q.kind == "plain"
           and not self:word(q.b - 1, "@loss_of_separation @closest_approach"))) then
@@ -723,13 +727,22 @@ return function(H, f, compass)
     local named_at
     if not lat or not lon then
       -- ("move AAL2307 to Cedar Creek": the navaid the words name together, not the fix CREEK)
+      -- ("move JOR1421 to the Floresti VOR FLR": the ident, not the navaid's kind)
       for _, r in ipairs(self:refs_in(s.trig, s.e, "waypoint")) do
         local whole
-        if named_at == nil then whole = self:whole_place_name(r, s.trig, s.e, id) end
+        if named_at == nil and not self:navaid_kind_said(r) then whole = self:whole_place_name(r, s.trig, s.e, id) end
         if whole == false then return end
-        named_at = named_at or whole or r.name
+        if not self:navaid_kind_said(r) then named_at = named_at or whole or r.name end
       end
       named_at = named_at or self:place_by_name(s.trig + 1, s.e, self:state(id))
+    end
+    -- ("move the Ryanair to FL360, same position": where it is now, with the values said)
+    local same = self:find_word(s.b, s.e, "same")
+    local here = self:state(id)
+    if (not lat or not lon) and not named_at and same < s.e and self:word(same + 1, "position place spot location")
+        and not self:word(same + 2, "as") and here and here.lat then
+      lat, lon = here.lat, here.lon
+      self:explain(same, same + 2)
     end
     if (not lat or not lon) and not named_at then
       return self:need("Where should " .. id .. " go? Please give a latitude and longitude.")
@@ -1689,6 +1702,14 @@ return function(H, f, compass)
 
   -- The places named in tokens [b, e), in order: waypoint references, and
   -- user waypoints whose names read like callsigns ("TEST1"): {{name, b, e}}.
+  -- True when the waypoint ref `r` is a kind of navaid said after a name, an ident or an article ("the Walda
+  -- VOR, WLD", "the SIE VOR", "the VOR"): no place of its own.
+  function m:navaid_kind_said(r)
+    local prev = self.t[r.b - 1]
+    return self:word(r.b, "@navaid_kinds") and prev ~= nil
+      and (prev.raw:match("^%u%l") ~= nil or prev.raw:match("^%u[%u%d]+$") ~= nil or self:word(r.b - 1, "the a"))
+  end
+
   function m:route_places(b, e)
     local user = {}
     for _, w in ipairs(self.world.waypoints or {}) do user[w:upper()] = true end
@@ -1696,8 +1717,7 @@ return function(H, f, compass)
     local k = b
     while k < math.min(e, #self.t + 1) do
       local r = self:refs_in(k, k + 1, "waypoint")[1]
-      -- ("the Walda VOR, WLD": a kind of navaid said after a name is no place of its own)
-      if r and self:word(r.b, "@navaid_kinds") and self.t[r.b - 1] and self.t[r.b - 1].raw:match("^%u%l") then
+      if r and self:navaid_kind_said(r) then
         k = r.e
       elseif r then
         out[#out + 1] = r
@@ -1756,6 +1776,9 @@ return function(H, f, compass)
     -- (also before the verb: "after REMBI add the waypoint ESAMA")
     local at = self:find_word(s.b, s.e, "after before")
     local next_to = at < s.e and self:refs_in(at + 1, at + 2, "waypoint")[1]
+    -- ("insert Midhurst after Compton": the place next to it said by its one-word name)
+    local next_name = at < s.e and not next_to and self:place_by_name(at + 1, at + 2, self:state(id))
+    if next_name then next_to = { name = next_name, b = at + 1, e = at + 2 } end
     -- ("after 54 North 30 West add ...": the named point at a position said in degrees after it; the
     -- position added is said apart from it)
     local said = at < s.e and not next_to and qs[1] and self:quantities(at + 1, at + 3)[1]
@@ -2778,6 +2801,16 @@ return function(H, f, compass)
       dir = { value = point }
       self:explain(from, self:word(from + 1, "the") and from + 3 or from + 2)
     end
+    -- ("a westerly at 40 knots", "a north-westerly": the wind named by where it blows from)
+    for k = math.max(1, s.b - 2), s.e - 1 do
+      local named = not dir and self.t[k].kind == "word" and L.wind_points[self.t[k].text]
+      if named then
+        local p = (self.t[k - 1] or {}).text == "-" and k - 2 or k - 1
+        local joined = self:word(p, "north south") and L.wind_points[self.t[p].text .. self.t[k].text]
+        dir = { value = joined or named }
+        self:explain(joined and p or k, k + 1)
+      end
+    end
     if not dir or not spd then
       return self:need("From which direction, and how strong in knots, should the wind blow?")
     end
@@ -2809,6 +2842,18 @@ return function(H, f, compass)
       self:mark_used(saying + 1, s.e)
       return self:emit("ECHO " .. self:raw(saying + 1, s.e))
     end
+    -- "print baseline no reso to the console", "print hello_3 in the console": the words between the verb
+    -- and where they go, as typed ("echo the text RUN 4 START to the console": after "the text")
+    local to = self:find_word(s.trig + 1, s.e, "to on in")
+    local at = self:word(to + 1, "the") and to + 2 or to + 1
+    local from = self:word(s.trig + 1, "the") and self:word(s.trig + 2, "text message words line") and s.trig + 3
+      or s.trig + 1
+    if to > from and to < s.e and self:word(at, "console screen display window") then
+      self:explain(s.trig + 1, from)
+      self:mark_used(from, to)
+      self:explain(to, at + 1)
+      return self:emit("ECHO " .. self:raw(from, to))
+    end
     -- "instructor: echo exercise starts in 2 minutes": TrafScript's ECHO opening the request after a
     -- speaker's label, the words after it as typed
     -- (a courtesy word closing the request, "echo test start please", is said to us, not printed)
@@ -2818,14 +2863,6 @@ return function(H, f, compass)
       self:explain(e, s.e)
       self:mark_used(s.trig + 1, e)
       return self:emit("ECHO " .. self:raw(s.trig + 1, e))
-    end
-    -- "print baseline no reso to the console": the words between the verb and where they go, as typed
-    local to = self:find_word(s.trig + 1, s.e, "to on")
-    local at = self:word(to + 1, "the") and to + 2 or to + 1
-    if to > s.trig + 1 and to < s.e and self:word(at, "console screen display window") then
-      self:mark_used(s.trig + 1, to)
-      self:explain(to, at + 1)
-      return self:emit("ECHO " .. self:raw(s.trig + 1, to))
     end
     self:need("What text should I print?")
   end

@@ -58,7 +58,7 @@ return {
         "ourselves", "he", "him", "his", "himself", "she", "her", "hers", "herself", "it", "its", "itself",
         "they", "them", "their", "theirs", "themselves", "one", "ones", "someone", "somebody", "anyone",
         "anybody", "everyone", "everybody", "something", "anything", "everything", "nothing", "nobody", "who",
-        "things", "stuff",
+        "things", "stuff", "else",
         "whom", "there",
         "here", "i'm", "i'd", "i'll", "i've", "you're", "you'd", "you'll", "you've", "we're", "we'd", "we'll",
         "we've",
@@ -215,8 +215,9 @@ return {
         -- controllers' written abbreviations of instruction words
         "maint", "mnt", "dsc", "dsnd", "dscnd", "clmb", "degs", "vect", "vects", "vctr", "inc", "incr",
         -- squawk's own display, where a command shows or draws what it is asked, and the traffic on it
-        -- ("put a Delta CRJ900 on the board", "remove the United from the scene")
-        "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene",
+        -- ("put a Delta CRJ900 on the board", "remove the United from the scene", "to see the trajectories")
+        "console", "screen", "display", "window", "map", "scope", "draw", "board", "scene", "trajectory",
+        "trajectories",
         -- the experiment a request is made for ("for the next trial", "the participant keeps missing it", "seed
         -- 7 for reproducibility")
         "trial", "trials", "participant", "participants", "session", "sessions", "calibration", "experiment",
@@ -285,12 +286,14 @@ return {
         "separation", "radius", "angle", "callsign", "degrees", "feet", "thousand", "hundred", "expedite",
         "define", "teleport", "reposition", "lateral", "navigation", "enable", "disable", "seconds", "minutes",
         "timestep", "protected", "turn", "pause", "resume", "spawn", "generate", "latitude", "longitude",
-        "minimum", "horizontal", "forward", "right", "left", "creconfs", },
+        "minimum", "horizontal", "forward", "right", "left", "creconfs", "trail", "trails", "dtmult", },
     common = { "stop", "them", "last", "want", "have", "from", "with", "what", "also", "back", "give", "make",
         "take", "need", "into", "onto", "down", "more", "less", "keep", "this", "that", "were", "will", "sure",
         "would", "should", "could", "their", "there", "these", "those", "about", "after", "again", "both",
         "each", "other", "some", "such", "than", "very", "your", "name", "time", "home", "over", "plus", "runs",
         "show", "send", "sent", "held", "lead", "deletion", "circle", "lift", "rights", "lefts",
+        -- (words one letter from "trail": "trial 3")
+        "trial", "trials", "train", "trait",
         -- (a controller position named in a hand-off: "contact director 118.82")
         "director", },
   },
@@ -441,7 +444,7 @@ return {
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
   -- (typed: "210 hmm no 200")
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch", "corr", "hmm" },
+                                "say", "again", "scratch", "corr", "hmm", "typo" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
                                   "corr" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
@@ -587,6 +590,9 @@ return {
       "facing", "flies", "headed" },
   compass = { north = 0, east = 90, south = 180, west = 270,
               northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
+  -- a wind named by where it blows from ("a westerly at 40 knots"): that direction in degrees
+  wind_points = { northerly = 360, easterly = 90, southerly = 180, westerly = 270, northeasterly = 45,
+                  southeasterly = 135, southwesterly = 225, northwesterly = 315 },
   -- fractions of an hour, a minute or a second said in words ("half an hour", "a tenth of a second")
   fractions = { half = 0.5, quarter = 0.25, fifth = 0.2, tenth = 0.1, twentieth = 0.05, hundredth = 0.01 },
   -- how many times real time, said in words

@@ -261,6 +261,17 @@ return function(intent, rule, words)
   -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "knock out KLM1234", "knock out the Cessna": an aircraft taken out of the simulation, nothing after it
+  -- "take N73WX off the scope", "sup: n73wx off the scope": an aircraft taken off the display is deleted (the
+  -- aircraft straight before "off", opening the request or after "take"/"get"; "N73WX is off the scope" tells)
+  rule { "off", "delete", when = function(g, i)
+    local k = g:word(i + 1, "the my your our") and i + 2 or i + 1
+    if not g:word(k, "scope screen display radar") then return false end
+    local r = g:refs_in(1, i, "aircraft")
+    r = r[#r]
+    if not (r and r.e == i and r.exists) then return false end
+    local b = g:skip_fillers(1)
+    return r.b == b or (g:word(r.b - 1, "take get") and r.b - 1 == b)
+  end }
   rule { "knock", "delete", next = "out", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 2), true) end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its
@@ -569,6 +580,13 @@ return function(intent, rule, words)
   rule { "delwpt", "delwpt" }
   rule { "create make", "defwpt", near = { 3, "fix waypoint wpt" } }
   rule { "create", false, prev = { 1, "re" } }  -- "we'll re-create it later"
+  -- "create a circle area TMA1 centred at ...", "create a box ...": a shape made, no aircraft (the shape's
+  -- own word reads it)
+  rule { "create", false, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    while g:word(k, "a an the new") do k = k + 1 end
+    return g:word(k, "circle circular box")
+  end }
   -- "To create a same-level encounter: SAS1410 climb FL190": the purpose of what follows the colon or comma
   rule { "create set", false, prev = { 1, "to" }, when = function(g, i)
     if g:skip_fillers(1) ~= i - 1 then return false end
@@ -682,9 +700,14 @@ return function(intent, rule, words)
   end }
   -- "put a constraint on AEA44 at ORBIS, FL250": a constraint at a waypoint (G:at_waypoint), no move
   rule { "put set", false, near = { 3, "constraint constraints restriction restrictions" } }
-  rule { "add append insert give put", "addwpt", near = { 8, "@route_nouns" },
+  -- ("append the Siedlce VOR SIE at the end of the route of LOT3CM": the route noun ten words on)
+  rule { "add append insert give put", "addwpt", near = { 10, "@route_nouns" },
          when = function(g, i) return g:has_ref(i + 1, i + 9, "waypoint") end }
   rule { "add append insert give", "addwpt", next = "it", near = { 8, "@route_nouns" } }
+  -- "stick KMCO on the end of Frontier 2231's route", "tack FLYNN onto the end of its route": a waypoint
+  -- straight after the verb, put at the route's end (not "stick to the route", which adds nothing)
+  rule { "stick tack", "addwpt", near = { 8, "@route_nouns" },
+         when = function(g, i) return g:has_ref(i + 1, i + 2, "waypoint") and g:word_in(i + 2, i + 5, "end") end }
   -- "add Lambourne to the end of the Air France's route", "add glen rose to skywest 4420's route": a navaid
   -- or airport said by its name of one or two words
   rule { "add append insert", "addwpt", near = { 10, "@route_nouns" }, when = function(g, i)
@@ -778,10 +801,12 @@ return function(intent, rule, words)
   end }
   -- "add INTOP after AMDIL", "after NUSMO add LARSO", "after TOMTO route KORAK": a known waypoint put
   -- next to another, the place said after "after"/"before" before or after the verb
-  -- ("after NAVPO add Lajes": a navaid or airport said by its one-word name)
+  -- ("after NAVPO add Lajes", "insert Midhurst after Compton": either said by its navaid's or airport's
+  -- one-word name)
   rule { "add append insert route", "addwpt", when = function(g, i)
     local at = g:find_word(1, #g.t + 1, "after before")
-    return at <= #g.t and at ~= i + 1 and g:has_ref(at + 1, at + 2, "waypoint")
+    return at <= #g.t and at ~= i + 1
+      and (g:has_ref(at + 1, at + 2, "waypoint") or g:place_by_name(at + 1, at + 2) ~= nil)
       and (g:has_ref(i + 1, i + 2, "waypoint") or g:place_by_name(i + 1, i + 2) ~= nil)
   end }
   -- "put in RUTOL before ERGOM", "put RUTOL after ERGOM", "squeeze MADOT in after BUSIL": the same said with
@@ -850,6 +875,12 @@ return function(intent, rule, words)
     return true
   end }
   -- "delete the deletion area", "remove the experiment area": the area ended
+  -- "remove the trails", "remove all trails": the trails switched off (TRAIL's own word), no aircraft deleted
+  rule { "remove", false, when = function(g, i)
+    local k = g:skip_fillers(i + 1)
+    while g:word(k, "the all aircraft") do k = k + 1 end
+    return g:word(k, "trail trails")
+  end }
   rule { "delete remove", false, near = { 3, "area" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "the area, so anything leaving it gets deleted": what a setting does, in the passive, no aircraft named
   rule { "delete deleted remove removed", false, prev = { 1, "gets get got" },
@@ -920,6 +951,12 @@ return function(intent, rule, words)
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
+  -- "VOZ1234 track to BURLI": a waypoint (no airport) the aircraft tracks to, flown to directly
+  rule { "track", "direct", next = "to", when = function(g, i)
+    local k = g:skip_fillers(i + 2)
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    return r ~= nil and not r.name:match("^%a%a%a%a$")
+  end }
   -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO", "rejoin own navigation at NORKU":
   -- the waypoint where the route is rejoined is flown to directly ("rejoin the route" alone is LNAV)
   rule { "rejoin rejoining", "direct", when = function(g, i)
@@ -1483,6 +1520,9 @@ return function(intent, rule, words)
     end
     return true
   end }
+  -- "fast forward the scenario by 10 minutes", "pause the scenario": the scenario running, the object of a
+  -- verb of the clock, no file to load
+  rule { "scenario", false, prev = { 2, "forward ff pause freeze unfreeze unpause resume continue hold" } }
   -- "20 random aircraft for background load", "more traffic load": the noun, no file loaded
   rule { "load", false, prev = { 1, "background traffic high low heavy light more extra" } }
   rule { "scenario load open ic", "ic" }
@@ -1512,6 +1552,13 @@ return function(intent, rule, words)
   end }
   -- "add wind at 52N 4E, FL300, from 270 at 60 knots": a wind where the verb places it
   rule { "wind winds", "wind", prev = { 2, "add set define put create" } }
+  -- "wind set at 35.5 139.8 from 270 degrees 40 knots": the verb said after the noun
+  rule { "wind winds", "wind", next = "set" }
+  rule { "set", false, prev = { 1, "wind winds" } }
+  -- "set a westerly at 40 knots over -27.4 153.1": a wind named by where it blows from (lexicon.wind_points),
+  -- put somewhere by the verb, no aircraft named
+  rule { "northerly easterly southerly westerly northeasterly southeasterly southwesterly northwesterly", "wind",
+         prev = { 3, "add set define put create" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind from 270 at 40 kt over 55.5 12.5", "a wind of 270 at 40 knots": where it blows from, said after it
   rule { "wind winds", "wind", next = "from of", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind 270 at 30 kt at 52 4": its direction straight after it, its speed in knots after that
@@ -1571,6 +1618,11 @@ return function(intent, rule, words)
   rule { "echo", "echo", when = function(g, i)
     local nx = g.t[i + 1]
     return i == g:skip_fillers(1) and nx ~= nil and nx.kind == "word" and PHONETIC[nx.text] == nil
+  end }
+  -- "kindly echo the text RUN 4 START to the console": words sent to the console, screen or window
+  rule { "echo", "echo", when = function(g, i)
+    local k = g:find_word(i + 2, #g.t + 1, "to on in")
+    return k <= #g.t and g:word(g:word(k + 1, "the") and k + 2 or k + 1, "console screen display window")
   end }
   -- "write 'trial 4 start' into the log", "put 'baseline done' in the log", "put 'Run 3 start' on the
   -- screen": quoted text for the log or the screen

@@ -5896,3 +5896,156 @@ do
   -- the listener's convenience is no condition
   check_eq(ex("EZS77 when you get a chance reduce 270"), "SPD EZS77 270")
 end
+
+-- Cycle 37 (resid): a waypoint put next to another said by its navaid's name ("insert Detling after
+-- Ockham"), into "route of" an aircraft, or stuck on the route's end; a kind of navaid said after an
+-- ident ("the DET VOR") is no waypoint of its own; a place next to it that names nothing is asked about
+do
+  local _, ex = navscene({ "CRE EZY12 A320 51.2 -0.3 090 FL150 260", "ADDWPT EZY12 OCK", "ADDWPT EZY12 SFD" },
+    "waypoints said by their navaid's name")
+  if ex then
+    check_eq(ex("EZY12 insert Detling after Ockham"), "ADDWPT EZY12 DET,,,OCK")
+    check_eq(ex("EZY12, after Seaford add Detling"), "ADDWPT EZY12 DET,,,SFD")
+    check_eq(ex("add DET into route of EZY12"), "ADDWPT EZY12 DET")
+    check_eq(ex("tack DET onto the end of EZY12's route"), "ADDWPT EZY12 DET")
+    check_eq(ex("add the DET VOR to EZY12's route"), "ADDWPT EZY12 DET")
+    check_eq(ex("please append the DET VOR at the end of the route of EZY12"), "ADDWPT EZY12 DET")
+    asked(ex("EZY12 insert Detling after lunch"), "a place next to it that names nothing")
+    asked(ex("EZY12 stick to the route"), "keeping the route adds nothing")
+  end
+end
+
+-- Cycle 37 (resid): "remove the trails" switches the trails off, no aircraft deleted ("remove" an aircraft
+-- still deletes it; "clear the trails" is still asked)
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("remove the trails"), "TRAIL OFF")
+  check_eq(ex("please remove all the aircraft trails"), "TRAIL OFF")
+  check_eq(ex("show the trails so we can follow the trajectories"), "TRAIL ON")
+  check_eq(ex("remove KLM51"), "DEL KLM51")
+  asked(ex("clear the trails"), "shown or hidden not said")
+end
+
+-- Cycle 37 (resid): a wind named by where it blows from ("set a northwesterly at 35 knots over ...",
+-- lexicon.wind_points), and "wind set at ...", the verb after the noun; with an aircraft named it is no wind set
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("set a northwesterly at 35 knots over 51.5 3.5, FL200"), "WIND 51.5 3.5 FL200 315 35")
+  check_eq(ex("set a south-westerly at 20 knots over 51.5 3.5"), "WIND 51.5 3.5 225 20")
+  check_eq(ex("add an easterly of 15 knots at 51.5 3.5"), "WIND 51.5 3.5 90 15")
+  check_eq(ex("wind set at 51.5 3.5 from 200 degrees 30 knots"), "WIND 51.5 3.5 200 30")
+  check(not ex("KLM51 expect a westerly at 40 knots"):match("^WIND"), "a wind told to an aircraft sets none")
+end
+
+-- Cycle 37 (resid): the experimenter's console and clock: "the scenario" as the object of a verb of the clock
+-- is the simulation running (no file loaded); words sent "to/in the console" are ECHOed as typed, after "the
+-- text"; "load the scenario" still asks which file
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("fast forward the scenario by 3 minutes"), "FF 180")
+  check_eq(ex("please freeze the scenario"), "HOLD")
+  asked(ex("load the scenario"), "no file named")
+  check_eq(ex("please echo the text TRIAL 7 BEGIN to the console"), "ECHO TRIAL 7 BEGIN")
+  check_eq(ex("print batch_9_done in the console"), "ECHO batch_9_done")
+end
+
+-- Cycle 37 (resid): a kind of navaid said after its name or ident ("the Siedlce VOR SIE", "the SIE VOR") is
+-- no place of its own where an aircraft is moved; "the VOR" alone names none (asked); "keep everything else"
+-- carries nothing
+do
+  local _, ex = navscene({ "CRE SAS31 A320 52.2 20.9 090 FL250 260" }, "a navaid's kind after its name")
+  if ex then
+    check_eq(ex("move SAS31 to the Siedlce VOR SIE, keep everything else"), "MOVE SAS31 SIE")
+    check_eq(ex("move SAS31 to the SIE VOR"), "MOVE SAS31 SIE")
+    check_eq(ex("move SAS31 to the Siedlce VOR"), "MOVE SAS31 SIE")
+    asked(ex("move SAS31 to the VOR"), "no navaid named")
+  end
+end
+
+-- Cycle 37 (resid): "create a circle/box NAME ..." makes the shape, no aircraft; "create a circle" with nothing
+-- else is asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("create a circle area ZONE4 centred at 51.5 N 4.2 E with radius 15 NM"), "CIRCLE ZONE4 51.5 4.2 15")
+  check_eq(ex("create a box B2 51 3 51.5 3.5"), "BOX B2 51 3 51.5 3.5")
+  asked(ex("create a circle"), "no name, centre or radius")
+end
+
+-- Cycle 37 (resid): typed typos of "trail" and "dtmult" (lexicon.spelling.targets) are read as those words;
+-- the words one letter away that mean something of their own ("trial") are kept
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("tral on"), "TRAIL ON")
+  check_eq(ex("dtmul 6"), "DTMULT 6")
+  asked(ex("trial on"), "a trial is no trail")
+end
+
+-- Cycle 37 (resid): an aircraft taken off the scope ("take KLM51 off the scope", "klm51 off the screen") is
+-- deleted; "KLM51 is off the scope" (a report) is asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("take KLM51 off the scope"), "DEL KLM51")
+  check_eq(ex("instructor: afr7 off the screen"), "DEL AFR7")
+  asked(ex("KLM51 is off the scope"), "a report, no request")
+end
+
+-- Cycle 37 (resid): "sorry, typo" is a self-correction's word: the value said after it replaces the one before
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("KLM51 climb FL240, sorry typo, FL260"), "ALT KLM51 FL260")
+  check_eq(ex("KLM51, typo, KLM51 heading 150"), "HDG KLM51 150")
+  asked(ex("KLM51 climb FL240 typo FL260"), "no mark sets the correction apart")
+end
+
+-- Cycle 37 (resid): a conflict made with "relative heading N degrees" crosses at N; "one intruder" is the one
+-- aircraft made; with no angle said it is asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("create one intruder INT7, B738, versus KLM51 with relative heading 60 degrees, CPA 0.5 nm and 200 "
+    .. "seconds to loss of separation"), "CRECONFS INT7 B738 KLM51 60 0.5 200")
+  asked(ex("create one intruder INT8 B738 versus KLM51, CPA 0.5 nm, 200 seconds to loss of separation"), "no angle")
+end
+
+-- Cycle 37 (resid): the capitalised name of an exercise or scenario ("the Lisbon exercise") names the run, no
+-- place: it carries nothing; "load the Lisbon scenario" still asks which file
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("run the Lisbon exercise at three times real time"), "DTMULT 3")
+  check_eq(ex("pause the Lisbon simulation"), "HOLD")
+  asked(ex("load the Lisbon scenario"), "no file named")
+end
+
+-- Cycle 37 (resid): a place's name set apart by a comma before its latitude ("at Ghent, 51.1 N 3.7 E") is the
+-- position said after it; a name alone beside a bare decimal pair is still asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("what is the wind at Ghent, 51.1 N 3.7 E?"), "GETWIND 51.1 3.7")
+  check_eq(ex("create KLM52 B738 at Ghent, 51.1 N 3.7 E, heading 090, FL100, 250 knots"),
+    "CRE KLM52 B738 51.1 3.7 90 FL100 250")
+  asked(ex("what is the wind at Ghent, 51.1 3.7?"), "a bare pair beside a name")
+end
+
+-- Cycle 37 (resid): "move X to FL360, same position" moves it where it is now, at the level said; "the same
+-- position as Y" (another aircraft's) is asked
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("move KLM51 to FL300, same position"), "MOVE KLM51 52 4 FL300")
+  asked(ex("move KLM51 to the same position as AFR7"), "another aircraft's position")
+end
+
+-- Cycle 37 (resid): "track to WAYPOINT" (Australian) is a direct-to; "track to" an airport is asked
+do
+  local _, ex = scene({ "CRE QFA33 B738 -27.0 153.0 180 FL300 280", "DEFWPT KOALA -27.5 153.2",
+    "ADDWPT QFA33 KOALA" })
+  check_eq(ex("QFA33 track to KOALA then descend FL240"), "DIRECT QFA33 KOALA ; ALT QFA33 FL240")
+  asked(ex("QFA33 track to YBBN"), "an airport tracked to")
+end
+
+-- Cycle 37 (resid): "put A to FL320 and B to FL360", with no instruction word, gives each aircraft its own
+-- level, never the first level to both; "put A and B to FL360" gives both the one level
+do
+  local _, ex = scene({ "CRE KLM51 B738 52.0 4.0 090 FL200 250", "CRE AFR7 A320 52.3 4.4 270 FL220 260" })
+  check_eq(ex("put KLM51 to FL240 and AFR7 to FL260"), "ALT KLM51 FL240 ; ALT AFR7 FL260")
+  check_eq(ex("set KLM51 to FL240, AFR7 to FL260"), "ALT KLM51 FL240 ; ALT AFR7 FL260")
+  check_eq(ex("put KLM51 and AFR7 to FL300"), "ALT KLM51 FL300 ; ALT AFR7 FL300")
+end
