@@ -904,6 +904,7 @@ function m:type_said(i)
   if self:word(i, "dash") and self.t[i + 1] and (self.t[i + 1].text == "8" or self.t[i + 1].text == "eight") then
     return pattern_of({ "^DH8%u$" }), i + 2
   end
+  if self:word(i, "dash-8 dash8") then return pattern_of({ "^DH8%u$" }), i + 1 end
   -- ("the triple seven", "the seven four seven": a family's number said digit by digit)
   local spoken = ""
   for k = i, i + 2 do spoken = spoken .. (self.t[k] and self.t[k].kind == "word" and DIGIT_WORDS[self.t[k].text] or "-") end
@@ -918,7 +919,8 @@ function m:type_said(i)
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
   if t.kind ~= "word" then return nil end
-  if makers()[t.text] then
+  -- ("dash" alone is an English word: the Dash 8 is named with its 8, above)
+  if makers()[t.text] and t.text ~= "dash" then
     local nx = self.t[i + 1]
     if nx and nx.kind == "number" and fams[nx.text] then return set_of(fams[nx.text]), i + 2 end
     return set_of(makers()[t.text]), i + 1
