@@ -919,8 +919,7 @@ function m:type_said(i)
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
   if t.kind ~= "word" then return nil end
-  -- ("dash" alone is an English word: the Dash 8 is named with its 8, above)
-  if makers()[t.text] and t.text ~= "dash" then
+  if makers()[t.text] then
     local nx = self.t[i + 1]
     if nx and nx.kind == "number" and fams[nx.text] then return set_of(fams[nx.text]), i + 2 end
     return set_of(makers()[t.text]), i + 1
@@ -938,7 +937,7 @@ end
 -- "the big Boeing", narrows nothing), or by a type word opening the request before an instruction
 -- ("Cessna, heading 045", "dash 8 turn right 20"), when no callsign is said in the request (an airline
 -- alone may be: "the Cessna ... as the Lufthansa") and exactly one aircraft flying is of a type it
--- names (types_said): a reference to it, as in airline_refs. With several of them flying the words are
+-- names (type_said): a reference to it, as in airline_refs. With several of them flying the words are
 -- kept in self.type_unresolved ({b, e, ids}) and type_only asks which, naming them; with none, nothing
 -- is read. A type said after "a"/"an" ("create a 747") is a new aircraft's type, never a reference.
 function m:type_refs()
@@ -970,11 +969,14 @@ function m:type_refs()
     local opening = i == 1 and self.t[i].kind == "word"
     local test, e
     if the or opening then test, e = self:type_said(i) end
-    -- (a type opening the request addresses its aircraft only before an instruction or a comma, never
-    -- before a number: "Cessna 172 ..." is a type said with its model)
+    -- (a type opening the request addresses its aircraft only when words or a comma follow it, never a
+    -- number, "Cessna 172 ...", a type said with its model, or an article; "dash" opening a request
+    -- without its 8 is the English word, "the dash" the Dash 8)
     if test and opening and not the then
       local nx = self.t[e]
-      if not nx or nx.kind == "number" or nx.number_word or self:word(e, "a an") then test = nil end
+      if not nx or nx.kind == "number" or nx.number_word or self:word(e, "a an") or (self:word(i, "dash") and e == i + 1) then
+        test = nil
+      end
     end
     local k = the and b - 1 or b
     if test and self:word(k - 1, "@airline_context @aircraft_context @below @above") then test = nil end

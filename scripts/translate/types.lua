@@ -119,7 +119,7 @@ M.nicknames = {
   atr = { "^AT[4-7]%w$" },
   -- ("the MAX": any 737 MAX; "the bus": any Airbus airliner)
   max = { "^B3%wM$" },
-  bus = { "^A3%d%w$", "^A%d%dN$", "^A3[45]%w$", "^BCS%d$" },
+  bus = { "^A3%d%w$", "^A%d%dN$", "^BCS%d$" },
 }
 
 function M.build(designators)

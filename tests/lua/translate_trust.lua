@@ -5872,6 +5872,7 @@ do
   check_eq(ex("dash 8 climb to 9000"), "ALT LIN31 9000")
   asked(ex("dash to FL300"), "'dash' without its 8 is no Dash 8")
   check_eq(ex("the Dash-8 descend to 5000"), "ALT LIN31 5000")
+  check_eq(ex("slow the dash to 200"), "SPD LIN31 200")
   check_eq(ex("Cessna, heading 045"), "HDG GKPQR 45")
   check_eq(ex("the 737 climb FL200"), "ALT SKV15 FL200")
   -- two Boeings: the maker alone, a size word with it, asked naming both
