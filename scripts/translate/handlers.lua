@@ -881,8 +881,9 @@ local DIGIT_WORDS = { zero = "0", one = "1", two = "2", three = "3", four = "4",
 -- nothing: several aircraft of the type flying are asked about
 local SIZE_WORDS = { big = true, bigger = true, biggest = true, large = true, small = true, smaller = true,
                      little = true, huge = true, tiny = true }
--- words after "max" that make it the adjective ("the max rate", "the max speed"), never the 737 MAX
-local MAX_OF = { rate = true, speed = true, power = true, thrust = true, climb = true, descent = true, level = true,
+-- nouns after "max" that make it the adjective ("the max rate", "the max speed"), never the 737 MAX ("the max
+-- climb to FL300" is the MAX told to climb)
+local MAX_OF = { rate = true, speed = true, power = true, thrust = true, descent = true, level = true,
                  altitude = true, range = true, bank = true, value = true, performance = true, mach = true }
 
 -- The type said at token i ("777", "Boeing 777", "seven seven seven", "dash 8", "Cessna", "MAX",

@@ -5900,9 +5900,11 @@ do
   -- a 737 MAX is a 737: "the 737" fits both 737s, "the MAX" the one MAX
   check_eq(ex("the 737 turn right 20"), "ASK Which 737 do you mean: SKV15 or SKV16? Please give its callsign.")
   check_eq(ex("the max, heading 150"), "HDG SKV16 150")
+  check_eq(ex("the max climb to FL220"), "ALT SKV16 FL220")
   check_eq(ex("give the MAX a yellow trail"), "TRAIL SKV16 YELLOW")
   -- "max" as an adjective is no aircraft
   asked(ex("climb at the max rate"), "max rate, no aircraft named")
+  asked(ex("give me the max speed"), "max speed, no aircraft named")
 end
 -- an airline said alone before one instruction, with one aircraft of it flying, is still a callsign cut
 -- short and asked (the rounds disagree: docs/translator_trust.md); two of it flying: asked, naming both
