@@ -278,7 +278,10 @@ function m:acids(s)
     if q then self:need(q) end
     if meant then ids[k] = meant end
   end
-  if #ids == 0 then self:airline_only(s) end
+  if #ids == 0 then
+    self:airline_only(s)
+    self:type_only(s)
+  end
   -- "delete the easy and the klm": an airline said alone that names no one aircraft is asked
   -- about, never dropped beside the one that does
   for _, u in ipairs(#ids > 0 and self.airline_unresolved or {}) do
@@ -866,12 +869,79 @@ function m:airline_types()
   end
 end
 
--- An aircraft named by "the" and its type or maker alone ("the Cessna",
--- "the A346", "the Boeing 777"), when no callsign is said in the request (an
--- airline alone may be: "the Cessna ... as the Lufthansa") and
--- exactly one aircraft flying is of that type (or that maker's), is a
--- reference to it, as in airline_refs; a family said ("the 737") is the
--- designator it names, and matches only an aircraft of that designator.
+-- Families by their number ("777" -> {B772 = true, B77W = true, ...}, types.build's families) and
+-- digits said as words ("seven", "niner": "triple seven" is lexed as "seven seven seven").
+local FAMILIES
+local function families()
+  FAMILIES = FAMILIES or require("translate.types").build(require("translate.names").designators).families
+  return FAMILIES
+end
+local DIGIT_WORDS = { zero = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6", seven = "7",
+                      eight = "8", nine = "9", niner = "9" }
+-- words that describe an aircraft's size between "the" and its type ("the big Boeing"); they narrow
+-- nothing: several aircraft of the type flying are asked about
+local SIZE_WORDS = { big = true, bigger = true, biggest = true, large = true, small = true, smaller = true,
+                     little = true, huge = true, tiny = true }
+-- nouns after "max" that make it the adjective ("the max rate", "the max speed"), never the 737 MAX ("the max
+-- climb to FL300" is the MAX told to climb)
+local MAX_OF = { rate = true, speed = true, power = true, thrust = true, descent = true, level = true,
+                 altitude = true, range = true, bank = true, value = true, performance = true, mach = true }
+
+-- The type said at token i ("777", "Boeing 777", "seven seven seven", "dash 8", "Cessna", "MAX",
+-- "Dreamliner", "A320"): (test, e) with test(designator) true for the types it names and e the token
+-- after it, or nil. A family's number names each of its variants; a designator or variant names itself;
+-- a maker names its types; a nickname (types.nicknames) its patterns.
+function m:type_said(i)
+  local t = self.t[i]
+  if not t then return nil end
+  local fams = families()
+  local function set_of(set) return function(d) return set[d] == true end end
+  local function pattern_of(pats)
+    return function(d)
+      for _, p in ipairs(pats) do if d:match(p) then return true end end
+      return false
+    end
+  end
+  -- ("the dash 8": every Dash 8, the Q400 and its elders)
+  if self:word(i, "dash") and self.t[i + 1] and (self.t[i + 1].text == "8" or self.t[i + 1].text == "eight") then
+    return pattern_of({ "^DH8%u$" }), i + 2
+  end
+  if self:word(i, "dash-8 dash8") then return pattern_of({ "^DH8%u$" }), i + 1 end
+  -- ("the triple seven", "the seven four seven": a family's number said digit by digit)
+  local spoken = ""
+  for k = i, i + 2 do spoken = spoken .. (self.t[k] and self.t[k].kind == "word" and DIGIT_WORDS[self.t[k].text] or "-") end
+  if fams[spoken] then return set_of(fams[spoken]), i + 3 end
+  for _, r in ipairs(self.refs) do
+    if r.kind == "type" and r.b == i then
+      -- ("the Boeing 777", "the A330": the family's number, its maker before it or not, is the family)
+      local last = self.t[r.e - 1].text
+      local family = (r.e - r.b == 1 or makers()[t.text]) and fams[last]
+      return set_of(family or { [r.name] = true }), r.e
+    end
+  end
+  if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
+  if t.kind ~= "word" then return nil end
+  if makers()[t.text] then
+    local nx = self.t[i + 1]
+    if nx and nx.kind == "number" and fams[nx.text] then return set_of(fams[nx.text]), i + 2 end
+    return set_of(makers()[t.text]), i + 1
+  end
+  local nick = require("translate.types").nicknames[t.text]
+  if nick and t.text == "max" and (MAX_OF[self.t[i + 1] and self.t[i + 1].text or ""] or self:word(i - 2, "at to")) then
+    return nil
+  end
+  if nick then return pattern_of(nick), i + 1 end
+  return nil
+end
+
+-- An aircraft named by "the" and its type, family, maker or nickname alone ("the Cessna", "the 747",
+-- "the triple seven", "the dash 8", "the MAX", "the Boeing 777", "the A346"; a size word between,
+-- "the big Boeing", narrows nothing), or by a type word opening the request before an instruction
+-- ("Cessna, heading 045", "dash 8 turn right 20"), when no callsign is said in the request (an airline
+-- alone may be: "the Cessna ... as the Lufthansa") and exactly one aircraft flying is of a type it
+-- names (type_said): a reference to it, as in airline_refs. With several of them flying the words are
+-- kept in self.type_unresolved ({b, e, ids}) and type_only asks which, naming them; with none, nothing
+-- is read. A type said after "a"/"an" ("create a 747") is a new aircraft's type, never a reference.
 function m:type_refs()
   -- ("the Pilatus N48TX", "the Baron N218PK": a type, maker or family said between "the" and the callsign of
   -- a flying aircraft of that type describes it)
@@ -893,32 +963,53 @@ function m:type_refs()
   end
   local i = 1
   while i <= #self.t do
-    local prev, t = self.t[i - 1], self.t[i]
-    local set, e, nick
-    if prev and prev.kind == "word" and prev.text == "the" and t.kind == "word" then
-      for _, r in ipairs(self.refs) do
-        if r.kind == "type" and r.b == i then set, e = { [r.name] = true }, r.e end
-      end
-      if not set and makers()[t.text] then set, e = makers()[t.text], i + 1 end
-      -- ("the Citation": a family's name, types.nicknames)
-      nick = not set and require("translate.types").nicknames[t.text]
-      if nick then set, e = {}, i + 1 end
+    local b = i
+    local the = self:word(i - 1, "the")
+    if not the and SIZE_WORDS[self.t[i - 1] and self.t[i - 1].text or ""] and self:word(i - 2, "the") then
+      b, the = i - 1, true
     end
-    local fits = {}
-    if set and not self:word(i - 2, "@airline_context @aircraft_context @below @above") then
-      for _, a in ipairs(self.fleet) do
-        local ty = a.type and a.type:upper()
-        local of_nick = false
-        for _, p in ipairs(ty and nick or {}) do of_nick = of_nick or ty:match(p) ~= nil end
-        if ty and (set[ty] or of_nick) then fits[#fits + 1] = a.id end
+    local opening = i == 1 and self.t[i].kind == "word"
+    local test, e
+    if the or opening then test, e = self:type_said(i) end
+    -- (a type opening the request addresses its aircraft only when words or a comma follow it, never a
+    -- number, "Cessna 172 ...", a type said with its model, or an article; "dash" opening a request
+    -- without its 8 is the English word, "the dash" the Dash 8)
+    if test and opening and not the then
+      local nx = self.t[e]
+      if not nx or nx.kind == "number" or nx.number_word or self:word(e, "a an") or (self:word(i, "dash") and e == i + 1) then
+        test = nil
       end
+    end
+    local k = the and b - 1 or b
+    if test and self:word(k - 1, "@airline_context @aircraft_context @below @above") then test = nil end
+    local fits = {}
+    for _, a in ipairs(test and self.fleet or {}) do
+      if a.type and test(a.type:upper()) then fits[#fits + 1] = a.id end
     end
     -- ("the CRJ": a family in capitals the lexer took for an unknown place)
-    for k = #self.refs, 1, -1 do
-      local r = self.refs[k]
-      if #fits == 1 and r.kind == "waypoint" and not r.exists and r.b == i and r.e == e then table.remove(self.refs, k) end
+    for n = #self.refs, 1, -1 do
+      local r = self.refs[n]
+      if #fits == 1 and r.kind == "waypoint" and not r.exists and r.b == i and r.e == e then table.remove(self.refs, n) end
     end
-    i = self:insert_ref(fits, i, e, "by_type")
+    if #fits > 1 and not self:in_reason(i) then
+      self.type_unresolved = self.type_unresolved or {}
+      table.insert(self.type_unresolved, { b = b, e = e, ids = fits })
+    end
+    if #fits == 1 then  -- (its numbers too: "where's the 777")
+      self:explain(b, e)
+      self:mark_used(i, e)
+    end
+    i = #fits == 1 and self:insert_ref(fits, i, e, "by_type") or i + 1
+  end
+end
+
+-- A type said alone that several aircraft flying are of (type_refs): the question names them.
+function m:type_only(s)
+  for _, u in ipairs(self.type_unresolved or {}) do
+    if u.b < s.e then
+      return self:need(string.format("Which %s do you mean: %s? Please give its callsign.", self:raw(u.b, u.e),
+        table.concat(u.ids, " or ")))
+    end
   end
 end
 

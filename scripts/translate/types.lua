@@ -14,7 +14,8 @@
 --   * a family ("737", "a330") is its base designator when one exists (B737,
 --     A320), else its first variant.
 -- M.build(designators) -> {types = {{maker, model, icao}, ...}, phrases = {{words, designator}, ...},
---   designators = every designator known (the models' and the given ones), sorted}
+--   designators = every designator known (the models' and the given ones), sorted,
+--   families = {[family's number, lower case: "777", "a330"] = {[designator] = true}: its variants}}
 --   phrases: names of several words ("737 max 8", "dash 8-400") and their
 --   designator, which M.join(text, phrases) writes in their place (the
 --   matcher reads one token).
@@ -116,6 +117,9 @@ M.nicknames = {
   -- (regional families named without their variant: "the CRJ" is a CRJ200 to CRJ1000, "the ATR" an ATR 42 or 72)
   crj = { "^CRJ%w$" },
   atr = { "^AT[4-7]%w$" },
+  -- ("the MAX": any 737 MAX; "the bus": any Airbus airliner)
+  max = { "^B3%wM$" },
+  bus = { "^A3%d%w$", "^A%d%dN$", "^BCS%d$" },
 }
 
 function M.build(designators)
@@ -163,7 +167,8 @@ function M.build(designators)
         if n[1] == "boeing" then phrases[#phrases + 1] = { "b" .. n[2], d } end
       end
       if n[2]:find("^%d+%-%d") then phrases[#phrases + 1] = { n[1] .. " " .. n[2], d } end
-      local fam = n[2]:match("^(a?%d%d%d)%-")
+      -- ("737 max 8": a MAX is one of the 737s)
+      local fam = n[2]:match("^(a?%d%d%d)[%-%s]")
       if fam then families[#families + 1] = { n[1], fam, d } end
     end
   end
@@ -173,10 +178,14 @@ function M.build(designators)
     local base = (fam[1] == "boeing" and "B" or "") .. fam[2]:upper()
     add(rows, seen, fam[1], fam[2], known[base] and base or fam[3])
   end
-  local all = {}
+  local all, sets = {}, {}
   for d in pairs(known) do all[#all + 1] = d end
   table.sort(all)
-  return { types = rows, phrases = phrases, designators = all }
+  for _, fam in ipairs(families) do
+    sets[fam[2]] = sets[fam[2]] or {}
+    sets[fam[2]][fam[3]] = true
+  end
+  return { types = rows, phrases = phrases, designators = all, families = sets }
 end
 
 -- Type names as speech recognition writes them, digits as number words: after a

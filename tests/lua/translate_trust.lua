@@ -697,8 +697,9 @@ do
     "CRE DLH9CK A320 52.5 4.1 90 FL200 250")
   -- by type or maker, when no callsign is said and one aircraft of it flies
   check_eq(ft("could you turn the Cessna right onto heading 180?"), "HDG N123AB 180 RIGHT")
+  -- (two Boeings flying: asked, naming both)
   check_eq(ft("please slow the Boeing down to 240 knots"),
-    "ASK Which aircraft should change speed? Please give its callsign.")
+    "ASK Which Boeing do you mean: KLM1234 or KLM77? Please give its callsign.")
   -- an airline said with a number that is not the aircraft's airline asks, never takes the number alone
   check_eq(ft("Scooter 77 climb FL 200"), "ASK Did you mean KLM77? I heard TGW77.")
   -- the request's own words, read as English: "say" before a value, "heading into", "is a bit slow"
@@ -6048,4 +6049,63 @@ do
   check_eq(ex("put KLM51 to FL240 and AFR7 to FL260"), "ALT KLM51 FL240 ; ALT AFR7 FL260")
   check_eq(ex("set KLM51 to FL240, AFR7 to FL260"), "ALT KLM51 FL240 ; ALT AFR7 FL260")
   check_eq(ex("put KLM51 and AFR7 to FL300"), "ALT KLM51 FL300 ; ALT AFR7 FL300")
+end
+
+-- Cycle 37 (ref): an aircraft named by its type, family, maker or nickname alone ("the 777", "the triple
+-- seven", "the dash 8", "the MAX", "Cessna, heading 045") is the one aircraft flying of a type it names;
+-- with several of them flying the question names them; with none, or a designator no aircraft flies, asked
+do
+  local _, ex = scene({ "CRE GLA40 B77W 44.0 -79.0 300 FL220 290", "CRE SKV15 B738 44.2 -79.4 070 FL140 260",
+    "CRE LIN31 DH8C 44.1 -79.2 180 7000 210", "CRE AVN2 A319 44.3 -79.1 230 FL170 270",
+    "CRE GKPQR C172 44.4 -79.3 090 3000 100" })
+  check_eq(ex("take the triple seven down to 12000"), "ALT GLA40 12000")
+  check_eq(ex("the 777 turn left heading 250"), "HDG GLA40 250 LEFT")
+  check_eq(ex("where is the Boeing 777"), "POS GLA40")
+  -- the Dash 8 family is every Dash 8, the DH8C too
+  check_eq(ex("the dash 8, speed 190"), "SPD LIN31 190")
+  check_eq(ex("dash 8 climb to 9000"), "ALT LIN31 9000")
+  asked(ex("dash to FL300"), "'dash' without its 8 is no Dash 8")
+  check_eq(ex("the Dash-8 descend to 5000"), "ALT LIN31 5000")
+  check_eq(ex("slow the dash to 200"), "SPD LIN31 200")
+  check_eq(ex("Cessna, heading 045"), "HDG GKPQR 45")
+  check_eq(ex("the 737 climb FL200"), "ALT SKV15 FL200")
+  -- two Boeings: the maker alone, a size word with it, asked naming both
+  check_eq(ex("the Boeing descend FL120"), "ASK Which Boeing do you mean: GLA40 or SKV15? Please give its callsign.")
+  check_eq(ex("the big boeing go left heading 250"),
+    "ASK Which big boeing do you mean: GLA40 or SKV15? Please give its callsign.")
+  -- a variant's designator is that variant only (a B772 is no B77W); a family none flies is asked
+  asked(ex("the B772 climb FL300"), "B772 said, only a B77W flying")
+  asked(ex("the 747 climb FL300"), "no 747 flying")
+  asked(ex("the MAX climb FL300"), "no 737 MAX flying")
+  -- "Cessna" before its model number is a type said, never the addressee cut short
+  check_eq(ex("Cessna 172 climb to 4000"), "ALT GKPQR 4000")
+  -- a callsign said: the type words are no reference
+  check_eq(ex("SKV15 climb FL200, the 777 is above"), "ALT SKV15 FL200")
+  -- a type word in a creation keeps its meaning
+  check_eq(ex("create a 777 called GLA41 at 44.5 -79.5 heading 240, 3000 ft, 180 kts"),
+    "CRE GLA41 B772 44.5 -79.5 240 3000 180")
+end
+do
+  local _, ex = scene({ "CRE GLA40 B77W 44.0 -79.0 300 FL220 290", "CRE GLA41 B772 44.2 -79.4 070 FL140 260",
+    "CRE SKV15 B738 44.3 -79.1 230 FL170 270", "CRE SKV16 B38M 44.1 -79.2 180 FL190 280" })
+  -- two 777s: the family, said by its number or as "triple seven", is asked about, naming both
+  check_eq(ex("the 777 descend to FL200"), "ASK Which 777 do you mean: GLA40 or GLA41? Please give its callsign.")
+  asked(ex("bring the triple seven down to 11000"), "two 777s flying")
+  -- a 737 MAX is a 737: "the 737" fits both 737s, "the MAX" the one MAX
+  check_eq(ex("the 737 turn right 20"), "ASK Which 737 do you mean: SKV15 or SKV16? Please give its callsign.")
+  check_eq(ex("the max, heading 150"), "HDG SKV16 150")
+  check_eq(ex("the max climb to FL220"), "ALT SKV16 FL220")
+  check_eq(ex("give the MAX a yellow trail"), "TRAIL SKV16 YELLOW")
+  -- "max" as an adjective is no aircraft
+  asked(ex("climb at the max rate"), "max rate, no aircraft named")
+  asked(ex("give me the max speed"), "max speed, no aircraft named")
+end
+-- an airline said alone before one instruction, with one aircraft of it flying, is still a callsign cut
+-- short and asked (the rounds disagree: docs/translator_trust.md); two of it flying: asked, naming both
+do
+  local _, ex = scene({ "CRE POE412 DH8D 43.6 -79.4 180 6000 200", "CRE WJA58 B737 43.5 -79.9 070 FL120 260",
+    "CRE WJA59 B38M 43.7 -79.6 250 FL160 270" })
+  asked(ex("Porter, climb to 8000 feet"), "airline alone, one aircraft of it")
+  check_eq(ex("the Westjet climb FL200"), "ASK Which Westjet: WJA58 or WJA59?")
+  check_eq(ex("the Porter climb to 8000 feet"), "ALT POE412 8000")
 end
