@@ -2123,7 +2123,7 @@ end
 -- FL90"); anything else after "just" but an instruction word is asked about. The words taken back are
 -- marked used and noted.
 local SC = lexicon.self_correction
-local SC_KEPT, SC_ONLY = {}, set_of(SC.only)
+local SC_KEPT, SC_ONLY, SC_SETTING = {}, set_of(SC.only), set_of(SC.setting)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
 -- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
 -- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
@@ -2313,9 +2313,11 @@ function G:self_corrected()
         a = c
       elseif self:value_said_again(p, a, c) then
         a = c
-      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1 or c)
+      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1
+            or self:word(c, SC_SETTING) and (self:word(c + 1, "the") and c + 2 or c + 1) or c)
           and not self:word_in(a, c, "and also then") then
-        -- another instruction said in its place ("direct TWEED... no, make it heading 200", "climb FL200,
+        -- another instruction said in its place ("direct TWEED... no, make it heading 200", "half height 1000...
+        -- no, set zone half height to 500" after a verb of lexicon.self_correction.setting, "climb FL200,
         -- no wait, descend FL90", "..., sorry, I mean just turn to heading 250"): the last one before the
         -- run, from its instruction word, is taken back ("climb FL200, sorry, and turn left": an
         -- instruction added, none taken back)
