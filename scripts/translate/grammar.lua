@@ -3659,8 +3659,22 @@ function G:explained_spans(issued, kinds)
       local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
       -- ("delete KLC21, not needed for this run": a participle's clause, negated)
       local participle = j == k and k > 1 and self:word(j, "not") and nx and nx.kind == "word" and nx.text:match("%aed$")
+      -- ("WZZ1523 is not needed anymore, remove it": the aircraft, a copula and a participle of
+      -- lexicon.unneeded, negated, as the clause's whole predicate)
+      local unneeded = false
+      if j == k then
+        local first = self:refs_in(k, k + 1, "aircraft")[1]
+        local v = first and first.b == k and first.e or k
+        if self:word(v, "is are") then v = v + 1 end
+        unneeded = v > k and self:word(v, "not isn't aren't") and self:word(v + 1, "@unneeded")
+          and #self:quantities(v, e) == 0 and #self:refs_in(v, e) == 0 and v
+      end
       -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
       local step = nx and nx.kind == "word" and lexicon.session_steps[nx.text]
+      if unneeded then
+        for x = unneeded, e - 1 do inside[x] = true end
+        break
+      end
       if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (self:word(j, "so") and j > 1 and subject)
           or (self:word(j, "for") and j > 1 and (subject or step)) then
         comment(j, e)
@@ -4073,6 +4087,8 @@ function G:not_simulated()
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
+            and (not c.named_after or (self.t[i + 1] and self.t[i + 1].kind == "word"
+              and (self.t[i + 1].raw:match("^%u") or #self:refs_in(i + 1, i + 2, "waypoint") > 0)))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
             and (not c.subject or self:said_after_subject(i, c.subject))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))

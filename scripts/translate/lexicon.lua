@@ -614,6 +614,8 @@ return {
   off = { "off", "disable", "disabled", "deactivate", "deactivated", "hide", "stop", "don't", "dont", "without", "remove",
           "disengage", "disengaged", "disconnect", "disconnected", "inhibit", "inhibited" },
   off_after = { "anymore", "longer" },
+  -- an aircraft's being wanted no more, the reason for removing it ("WZZ1523 is not needed anymore, remove it")
+  unneeded = { "needed", "required", "wanted", "necessary" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
@@ -653,6 +655,13 @@ return {
   min_airborne_kt = 40,
   -- a vertical speed [ft/min] typed below this as VS's ("vs 15") may have lost its zeros: asked
   min_typed_fpm = 100,
+  -- a number with no unit after "at" after a cleared flight level, read as the vertical speed [ft/min] within
+  -- these bounds ("descend FL120 at one thousand five hundred"; "at 250" is a speed, asked)
+  rate_after_level = { 500, 6000 },
+  -- a number said group-wise in words ("one hundred twenty") read as a flight level where no unit says so (a
+  -- creation's or a move's level): the flight levels it may name, and the altitude [ft] an aircraft moved must
+  -- fly at for it (lower down, feet or a level? asked)
+  groupwise_levels = { 100, 450 }, groupwise_from_ft = 10000,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)
@@ -747,6 +756,9 @@ return {
     -- "turn right heading 090, vector to IDEKO": where a vector leads, told to the pilot; the heading is flown,
     -- no direct-to is given
     { what = "vectors toward a place", words = "vectors vectoring vector", near = { "to", "towards" }, window = 1 },
+    -- "turn right heading 110, vectors Venice": the place named straight after the word (capitalised, or a
+    -- place squawk knows), after an instruction
+    { what = "vectors toward a place", words = "vectors vectoring", named_after = true, after_instruction = true },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },

@@ -5902,3 +5902,32 @@ do
   check_eq(ex("where is Moonflower seven two one"), "POS NOS721")
   check_eq(ex("Ellinair two zero four descend FL100"), "ALT EXV204 FL100")
 end
+
+-- Cycle 37 (tr79): reasons said with an instruction: an aircraft "not needed (anymore)" before its removal,
+-- and "vectors" with the place they lead to named straight after it; a value in such a clause is still asked
+do
+  local _, ex = scene({ "CRE SXS81 B738 40.1 23.1 100 FL300 280", "CRE EXV12 A320 40.5 23.5 100 FL200 250" })
+  check_eq(ex("SXS81 isn't required any more, delete it"), "DEL SXS81")
+  check_eq(ex("Ellinair twelve not needed anymore, remove it please"), "DEL EXV12")
+  asked(ex("SXS81 is not cleared, remove it"), "a negation that is no reason of lexicon.unneeded")
+  check_eq(ex("EXV12 turn left heading 250, vectors Thessaloniki"), "HDG EXV12 250 LEFT")
+  check_eq(ex("EXV12 fly heading 030, vectoring Larissa, descend FL90"), "HDG EXV12 30 ; ALT EXV12 FL90")
+  asked(ex("EXV12 turn left heading 250, vectors 5"), "a number after vectors")
+end
+
+-- Cycle 37 (tr79): values said without their unit where the construction places them: a number said group-wise
+-- in words ("one hundred twenty") between a creation's heading and speed, or after a move's position for an
+-- aircraft at flight levels, is the flight level; "at" and a number of whole hundreds after a cleared level is the
+-- rate of climb or descent
+do
+  local _, ex = scene({ "CRE SXS81 B738 40.1 23.1 100 FL300 280", "CRE EXV12 A320 40.5 23.5 100 6000 220" })
+  check_eq(ex("create OAL70 A320 at 39.5 22.5, heading two one zero, one hundred forty, two hundred thirty knots"),
+    "CRE OAL70 A320 39.5 22.5 210 FL140 230")
+  asked(ex("create OAL70 A320 at 39.5 22.5, heading two one zero, one hundred forty"), "no speed said to place it")
+  check_eq(ex("move SXS81 to 40.3 23.4, two hundred ten"), "MOVE SXS81 40.3 23.4 FL210")
+  asked(ex("move EXV12 to 40.3 23.4, one hundred ten"), "a group-wise number for an aircraft at 6000 ft")
+  check_eq(ex("SXS81 descend flight level two four zero at two thousand"), "ALT SXS81 FL240 2000")
+  check_eq(ex("SXS81 descend FL240 at 1500"), "ALT SXS81 FL240 1500")
+  asked(ex("SXS81 descend FL240 at 250"), "a speed-sized number after the level")
+  asked(ex("SXS81 descend FL240 at 1500 feet"), "a number in feet after the level")
+end
