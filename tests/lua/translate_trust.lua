@@ -5930,4 +5930,7 @@ do
   check_eq(ex("SXS81 descend FL240 at 1500"), "ALT SXS81 FL240 1500")
   asked(ex("SXS81 descend FL240 at 250"), "a speed-sized number after the level")
   asked(ex("SXS81 descend FL240 at 1500 feet"), "a number in feet after the level")
+  -- a level said group-wise after a direct-to, in its own clause
+  local _, ex2 = scene({ "CRE SXS82 B738 40.1 23.1 100 FL300 280", "DEFWPT ARSOS 40.9 23.9", "ADDWPT SXS82 ARSOS" })
+  check_eq(ex2("SXS82 direct ARSOS, climb three hundred forty"), "DIRECT SXS82 ARSOS ; ALT SXS82 FL340")
 end
