@@ -2229,7 +2229,7 @@ end
 -- FL90"); anything else after "just" but an instruction word is asked about. The words taken back are
 -- marked used and noted.
 local SC = lexicon.self_correction
-local SC_KEPT, SC_ONLY = {}, set_of(SC.only)
+local SC_KEPT, SC_ONLY, SC_SETTING = {}, set_of(SC.only), set_of(SC.setting)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
 -- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
 -- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
@@ -2419,9 +2419,11 @@ function G:self_corrected()
         a = c
       elseif self:value_said_again(p, a, c) then
         a = c
-      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1 or c)
+      elseif self:intent_at(self:word(c, "it") and self:word(c - 1, "make") and c + 1 or self:word(c, SC_ONLY) and c + 1
+            or self:word(c, SC_SETTING) and (self:word(c + 1, "the") and c + 2 or c + 1) or c)
           and not self:word_in(a, c, "and also then") then
-        -- another instruction said in its place ("direct TWEED... no, make it heading 200", "climb FL200,
+        -- another instruction said in its place ("direct TWEED... no, make it heading 200", "half height 1000...
+        -- no, set zone half height to 500" after a verb of lexicon.self_correction.setting, "climb FL200,
         -- no wait, descend FL90", "..., sorry, I mean just turn to heading 250"): the last one before the
         -- run, from its instruction word, is taken back ("climb FL200, sorry, and turn left": an
         -- instruction added, none taken back)
@@ -3803,8 +3805,22 @@ function G:explained_spans(issued, kinds)
       local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
       -- ("delete KLC21, not needed for this run": a participle's clause, negated)
       local participle = j == k and k > 1 and self:word(j, "not") and nx and nx.kind == "word" and nx.text:match("%aed$")
+      -- ("WZZ1523 is not needed anymore, remove it": the aircraft, a copula and a participle of
+      -- lexicon.unneeded, negated, as the clause's whole predicate)
+      local unneeded = false
+      if j == k then
+        local first = self:refs_in(k, k + 1, "aircraft")[1]
+        local v = first and first.b == k and first.e or k
+        if self:word(v, "is are") then v = v + 1 end
+        unneeded = v > k and self:word(v, "not isn't aren't") and self:word(v + 1, "@unneeded")
+          and #self:quantities(v, e) == 0 and #self:refs_in(v, e) == 0 and v
+      end
       -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
       local step = nx and nx.kind == "word" and lexicon.session_steps[nx.text]
+      if unneeded then
+        for x = unneeded, e - 1 do inside[x] = true end
+        break
+      end
       if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (self:word(j, "so") and j > 1 and subject)
           or (self:word(j, "for") and j > 1 and (subject or step)) then
         comment(j, e)
@@ -4217,6 +4233,8 @@ function G:not_simulated()
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
             and (not c.after_callsign or self:callsign_before(i))
             and (not c.after_instruction or self:instruction_before(i))
+            and (not c.named_after or (self.t[i + 1] and self.t[i + 1].kind == "word"
+              and (self.t[i + 1].raw:match("^%u") or #self:refs_in(i + 1, i + 2, "waypoint") > 0)))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
             and (not c.subject or self:said_after_subject(i, c.subject))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))

@@ -418,6 +418,11 @@ return function(H, f, compass)
       end
       if at and at > 0 then alt = table.remove(left, at).value end
     end
+    -- ("over KEA, heading three four zero, one hundred twenty, two hundred ten knots": with the heading and speed
+    -- said, the one number left, said group-wise in words, is the flight level)
+    if not alt and hdg and (spd or mach) and #left == 1 and self:groupwise_level(left[1]) then
+      alt, fl = self:groupwise_level(table.remove(left, 1)), true
+    end
     -- CRE's order for values said bare: heading, altitude, speed ("52.15 4.25 45 fl310 290")
     if #left >= 1 and left[1].kind == "plain" and not hdg and alt and left[1].value >= 0 and left[1].value <= 360
         and (#left == 2 or spd or mach) then
@@ -768,8 +773,13 @@ return function(H, f, compass)
       local read = self.taken[q.b] ~= nil or (lat and math.abs(q.value - lat) < 1e-9)
         or (lon and math.abs(q.value - lon) < 1e-9)
       if q.kind == "plain" and q.b > s.trig and not read and not self:in_reason(q.b) then
+        local now = self:state(id)
         if opt[1] and opt[2] and not opt[3] and k == #qs and q.value >= 40 and q.value <= 700 then
           opt[3] = f.int(q.value)
+        elseif not opt[1] and self:groupwise_level(q) and now and (now.alt_ft or 0) >= L.groupwise_from_ft then
+          -- ("reposition OAL84 at 40.60 north 23.20 east, one hundred": a level said group-wise in words, for an
+          -- aircraft flying flight levels)
+          opt[1] = f.alt(self:groupwise_level(q), true)
         elseif opt[1] or q.value < 1000 or q.value > 60000 or q.value % 100 ~= 0 then
           return self:need(string.format("To move %s I did not place '%s'. Is it an altitude, heading or speed?",
             id, self:raw(q.b, q.e)))

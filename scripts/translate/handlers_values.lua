@@ -112,6 +112,15 @@ return function(H, f, wrap, compass)
     self:altitude(s)
   end
 
+  -- The altitude [ft] of a flight level said group-wise in words ("one hundred twenty": FL120, 12000): spoken,
+  -- with "hundred", a whole ten within lexicon.groupwise_levels [FL]; nil for any other quantity.
+  function m:groupwise_level(q)
+    local n = q.number
+    if q.kind ~= "plain" or not n or n.typed or not n.hundred then return nil end
+    if q.value % 10 ~= 0 or q.value < L.groupwise_levels[1] or q.value > L.groupwise_levels[2] then return nil end
+    return q.value * 100
+  end
+
   function m:altitude(s)
     local ids = self:acids(s)
     if #ids == 0 then return self:need("Which aircraft should change altitude? Please give its callsign.") end
@@ -129,6 +138,23 @@ return function(H, f, wrap, compass)
       if not rate and rate_word < s.e then
         for k, q in ipairs(list) do
           if q.b > rate_word and not q.fl then
+            rate = self:take(table.remove(list, k))
+            break
+          end
+        end
+      end
+    end
+    -- "descend flight level one two zero at one thousand five hundred": a number with no unit straight after
+    -- "at" after the level, in whole hundreds within lexicon.rate_after_level (ft/min; no level or speed of
+    -- that size), is the vertical speed
+    local lvl = with_unit[1]
+    if not rate and lvl and lvl.fl then
+      for _, list in ipairs({ plain, with_unit }) do
+        for k, q in ipairs(list) do
+          local at = self:skip_fillers(lvl.e)
+          if not rate and q.b == at + 1 and self:word(at, "at") and not q.fl and q.value % 100 == 0
+              and q.value >= L.rate_after_level[1] and q.value <= L.rate_after_level[2]
+              and not self:word_in(q.b, q.e, "@feet") and not self:word(q.e, "@feet") then
             rate = self:take(table.remove(list, k))
             break
           end

@@ -148,7 +148,37 @@ return {
         "aitah", "sveiki",
         -- the same in the Central European languages ("dobrý den", "dzień dobry", "szia", "dobar dan", "děkuji")
         "dobry", "dobre", "dobar", "dober", "dzien", "szia", "sziasztok", "szervusz", "czesc", "ahoj", "dekuji",
-        "dakujem", "dziekuje", "dziekujemy", "koszonom", "hvala", "nashledanou", "prosim" },
+        "dakujem", "dziekuje", "dziekujemy", "koszonom", "hvala", "nashledanou", "prosim",
+        -- the greetings, thanks, farewells and "please" of the world's controllers, said in their own language
+        -- in an English clearance ("descend FL180, grazie", "Aegean 412, kalimera, ..."; the words of two or
+        -- more are courtesy_phrases). A fix, airport or aircraft of the scene by the same name is read as
+        -- that name first (G:unknown_names asks), never set aside. Italian:
+        "grazie", "prego", "buongiorno", "buonasera", "buonanotte", "arrivederci", "arrivederla", "ciao", "salve",
+        "favore", "andiamo", "perfetto", "benissimo",
+        -- Spanish and Portuguese (beyond those above)
+        "hola", "saludos", "chao", "tchau", "porfa", "valeu", "obrigadao", "ola",
+        -- French, German and Dutch (beyond those above)
+        "svp", "tschuss", "tschues", "wiedersehen", "wiederhoren", "moin", "bedankt", "dankjewel", "dankuwel",
+        "alstublieft", "alsjeblieft", "goedemorgen", "goedemiddag", "goedenavond", "goedendag", "doei", "hoi",
+        -- the Nordic languages (beyond those above)
+        "tusind", "tusen", "hejsan", "hejda", "huomenta", "paivaa", "moro", "godmorgen", "godmorgon",
+        -- Greek, transliterated
+        "kalimera", "kalispera", "kalinychta", "kalinihta", "efcharisto", "efharisto", "efxaristo", "parakalo",
+        "yassou", "yiasou", "geia", "antio", "taxidi",
+        -- Turkish
+        "merhaba", "gunaydin", "tesekkurler", "tesekkur", "tesekkurlar", "lutfen", "hoscakal", "hosca",
+        -- Polish and Czech (beyond those above)
+        "prosze", "dobranoc", "dekujeme", "diky", "dzieki",
+        -- Russian, transliterated
+        "spasibo", "pozhaluista", "pozhaluysta", "pozhalujsta", "zdravstvuyte", "zdravstvuite", "privet",
+        "svidaniya", "dobroye", "dobryy", "dobrogo",
+        -- Arabic, Hebrew and Hindi, transliterated
+        "shukran", "marhaba", "salam", "salaam", "assalamu", "alaikum", "alaykum", "ahlan", "afwan", "yalla",
+        "inshallah", "shalom", "toda", "namaste", "namaskar", "dhanyavad", "dhanyawad", "shukriya", "kripya",
+        -- Japanese, Korean and Chinese, romanised
+        "arigato", "arigatou", "konnichiwa", "ohayo", "ohayou", "gozaimasu", "onegaishimasu", "sayonara",
+        "sumimasen", "kamsahamnida", "gamsahamnida", "annyeong", "annyeonghaseyo", "annyonghaseyo", "xiexie",
+        "nihao", "zaijian" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -157,7 +187,11 @@ return {
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
         "after that", "after this", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
-        "do widzenia", "do videnia", "at pilot's discretion", "at your discretion", "pilot's discretion",
+        "do widzenia", "do videnia", "kalo taxidi", "kali mera", "kali spera", "buona giornata", "buona serata",
+        "buon viaggio", "grazie mille", "per favore", "bon voyage", "bonne journee", "bonne soiree", "boa tarde",
+        "boa noite", "boa viagem", "bom dia", "buen viaje", "hasta luego", "guten tag", "god dag", "god morgen",
+        "ha det", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "do svidaniya", "ni hao", "ma'a salama",
+        "ma salama", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
         -- help offered with a value given twice ("... -- that's 50.7 / 16.2 in decimal if it helps")
         "if it helps", "if that helps", "in case it helps", "in case that helps",
@@ -423,7 +457,13 @@ return {
                     "colleague", "colleagues" },
   -- more roles read only as such a label, no word of a request ("the pilots' aircraft" is still asked about)
   label_roles = { "operator", "op", "sim", "simulator", "sup", "pilot", "pseudopilot", "pseudo", "researcher", "experimenter",
-                  "ai", "teammate", "assistant", "engineer" },
+                  "ai", "teammate", "assistant", "engineer",
+                  -- the same roles in the speaker's language ("istruttore: ...", "supervisore: ...", "piloto: ...",
+                  -- "Ausbilder: ...", "ekpaideftis: ..."): Italian, Spanish, Portuguese, French, German, Dutch, Greek
+                  "istruttore", "istruttrice", "supervisore", "pilota", "operatore", "controllore", "instructora",
+                  "piloto", "operador", "controlador", "instrutor", "instrutora", "instructeur", "instructrice",
+                  "superviseur", "pilote", "operateur", "controleur", "ausbilder", "ausbilderin", "fluglotse",
+                  "lotse", "pilotin", "betreiber", "piloot", "ekpaideftis", "epoptis", "pilotos", "elegktis" },
   -- what a note before a colon is of, besides a role ("exercise note: freeze the simulation"): a label
   note_owners = { "exercise", "scenario", "session", "trial", "run" },
   -- labels of two words that open a line without a colon, as speech recognition writes them ("sim op
@@ -451,6 +491,9 @@ return {
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
                       only = { "just", "only" },
+                      -- a verb of setting before the instruction said in place of the one taken back ("half
+                      -- height one thousand... no, set zone half height to five hundred feet")
+                      setting = { "set", "put", "change", "reset" },
                       just_the = { ALT = { "descent", "descend", "climb", "altitude", "level", "levels" },
                                    HDG = { "turn", "heading", "vector" }, SPD = { "speed", "slowdown", "mach" },
                                    DIRECT = { "direct", "directs" }, VS = { "rate" } } },
@@ -574,6 +617,8 @@ return {
   off = { "off", "disable", "disabled", "deactivate", "deactivated", "hide", "stop", "don't", "dont", "without", "remove",
           "disengage", "disengaged", "disconnect", "disconnected", "inhibit", "inhibited" },
   off_after = { "anymore", "longer" },
+  -- an aircraft's being wanted no more, the reason for removing it ("WZZ1523 is not needed anymore, remove it")
+  unneeded = { "needed", "required", "wanted", "necessary" },
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
@@ -616,6 +661,13 @@ return {
   min_airborne_kt = 40,
   -- a vertical speed [ft/min] typed below this as VS's ("vs 15") may have lost its zeros: asked
   min_typed_fpm = 100,
+  -- a number with no unit after "at" after a cleared flight level, read as the vertical speed [ft/min] within
+  -- these bounds ("descend FL120 at one thousand five hundred"; "at 250" is a speed, asked)
+  rate_after_level = { 500, 6000 },
+  -- a number said group-wise in words ("one hundred twenty") read as a flight level where no unit says so (a
+  -- creation's or a move's level): the flight levels it may name, and the altitude [ft] an aircraft moved must
+  -- fly at for it (lower down, feet or a level? asked)
+  groupwise_levels = { 100, 450 }, groupwise_from_ft = 10000,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)
@@ -710,6 +762,9 @@ return {
     -- "turn right heading 090, vector to IDEKO": where a vector leads, told to the pilot; the heading is flown,
     -- no direct-to is given
     { what = "vectors toward a place", words = "vectors vectoring vector", near = { "to", "towards" }, window = 1 },
+    -- "turn right heading 110, vectors Venice": the place named straight after the word (capitalised, or a
+    -- place squawk knows), after an instruction
+    { what = "vectors toward a place", words = "vectors vectoring", named_after = true, after_instruction = true },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },

@@ -664,6 +664,13 @@ return function(intent, rule, words)
   rule { "spawn spawned create created generate generated", false, when = function(g, i)
     return g.t[i].raw:lower():match("ed$") ~= nil and g:word_in(math.max(1, i - 2), i, "it's it was were been is are s")
   end }
+  -- "crea AZA612, A321, at ...": the verb in the speaker's language (Italian, Spanish, French, German), read as
+  -- a creation only with an aircraft type said after it and no aircraft of the scene named
+  rule { "crea crear creer erstelle erstellen", "create", when = function(g, i)
+    if not g:has_ref(i + 1, #g.t + 1, "type") then return false end
+    for _, r in ipairs(g:refs_in(i + 1, #g.t + 1, "aircraft")) do if r.exists then return false end end
+    return true
+  end }
   rule { "create spawn generate creat cre creating spawning", "create" }
   rule { "pop", "mcre", next = "up", near = { 4, "random" } }  -- "pop up ten random aircraft"
   rule { "pop", "create", next = "up" }  -- "pop up DAL88 B752 ..."

@@ -6109,3 +6109,82 @@ do
   check_eq(ex("the Westjet climb FL200"), "ASK Which Westjet: WJA58 or WJA59?")
   check_eq(ex("the Porter climb to 8000 feet"), "ALT POE412 8000")
 end
+
+-- Cycle 37 (tr79): a self-correction before a setting said again after a verb of setting ("..., no, set the
+-- zone radius to ...") takes back the value corrected; never both issued
+do
+  local _, ex = scene({ "CRE KLM83 B738 52.3 4.8 180 FL180 260" })
+  check_eq(ex("zone radius four miles... no, set the zone radius to six miles"), "ZONER 6")
+  check_eq(ex("separation 2000 feet, half height two thousand... sorry, set zone half height to one thousand feet"),
+    "ZONEDH 1000")
+  check_eq(ex("KLM83 climb FL240... no, set heading 090"), "HDG KLM83 90")
+  -- a setting added after the first, with no correction, stands beside it
+  check_eq(ex("zone radius 4 nm and set half height 800 ft"), "ZONER 4 ; ZONEDH 800")
+end
+
+-- Cycle 37 (tr79): greetings, thanks, farewells and "please" in the controller's own language are courtesy;
+-- a word of them that names a fix of the scene is that fix, and said elsewhere it is asked about
+do
+  local _, ex = scene({ "CRE AEE47L A320 38.0 23.5 090 FL150 280", "CRE ITY88 A320 42.6 11.8 150 FL240 290",
+    "DEFWPT SALAM 38.2 24.0", "ADDWPT ITY88 SALAM" })
+  check_eq(ex("AEE47L climb flight level one nine zero, kalispera"), "ALT AEE47L FL190")
+  check_eq(ex("ITY88 buonasera, reduce speed two hundred forty, grazie mille"), "SPD ITY88 240")
+  check_eq(ex("AEE47L turn left heading 200, tesekkurler, iyi ucuslar"), "HDG AEE47L 200 LEFT")
+  check_eq(ex("arigato, AEE47L descend FL120"), "ALT AEE47L FL120")
+  check_eq(ex("ITY88 direct SALAM"), "DIRECT ITY88 SALAM")
+  -- SALAM is a fix on ITY88's route: said after an instruction it is asked about, never dropped as a greeting
+  asked(ex("ITY88 descend FL200, salam"), "a courtesy word that is a fix of the scene")
+  -- one word of a farewell of two ("kalo taxidi") alone is no courtesy
+  asked(ex("AEE47L climb FL200, kalo"), "half a farewell")
+end
+
+-- Cycle 37 (tr79): speaker labels in the speaker's language ("istruttore:", "supervisore:", "piloto:"), and a
+-- creation said with the verb in that language when an aircraft type follows and no aircraft flying is named
+do
+  local _, ex = scene({ "CRE NOS55 B738 42.0 12.0 150 FL240 290" })
+  check_eq(ex("istruttrice: NOS55 climb FL300"), "ALT NOS55 FL300")
+  check_eq(ex("superviseur: delete NOS55"), "DEL NOS55")
+  check_eq(ex("supervisore: crea AZA77 A320 at 41.5 12.5 heading 090 FL200 250"), "CRE AZA77 A320 41.5 12.5 90 FL200 250")
+  check_eq(ex("Ausbilder: erstelle DLH12 A321 at 41 12 heading 180 FL220 260"), "CRE DLH12 A321 41 12 180 FL220 260")
+  asked(ex("crea NOS55 A320"), "the foreign verb before an aircraft flying")
+  asked(ex("crea a conflict"), "the foreign verb with no type")
+end
+
+-- Cycle 37 (tr79): the telephony of the airlines of Italy and Greece ("Moonflower" is Neos)
+do
+  local _, ex = scene({ "CRE NOS721 B738 42.6 11.8 150 FL240 290", "CRE EXV204 A320 38.0 23.5 090 FL150 280" })
+  check_eq(ex("where is Moonflower seven two one"), "POS NOS721")
+  check_eq(ex("Ellinair two zero four descend FL100"), "ALT EXV204 FL100")
+end
+
+-- Cycle 37 (tr79): reasons said with an instruction: an aircraft "not needed (anymore)" before its removal,
+-- and "vectors" with the place they lead to named straight after it; a value in such a clause is still asked
+do
+  local _, ex = scene({ "CRE SXS81 B738 40.1 23.1 100 FL300 280", "CRE EXV12 A320 40.5 23.5 100 FL200 250" })
+  check_eq(ex("SXS81 isn't required any more, delete it"), "DEL SXS81")
+  check_eq(ex("Ellinair twelve not needed anymore, remove it please"), "DEL EXV12")
+  asked(ex("SXS81 is not cleared, remove it"), "a negation that is no reason of lexicon.unneeded")
+  check_eq(ex("EXV12 turn left heading 250, vectors Thessaloniki"), "HDG EXV12 250 LEFT")
+  check_eq(ex("EXV12 fly heading 030, vectoring Larissa, descend FL90"), "HDG EXV12 30 ; ALT EXV12 FL90")
+  asked(ex("EXV12 turn left heading 250, vectors 5"), "a number after vectors")
+end
+
+-- Cycle 37 (tr79): values said without their unit where the construction places them: a number said group-wise
+-- in words ("one hundred twenty") between a creation's heading and speed, or after a move's position for an
+-- aircraft at flight levels, is the flight level; "at" and a number of whole hundreds after a cleared level is the
+-- rate of climb or descent
+do
+  local _, ex = scene({ "CRE SXS81 B738 40.1 23.1 100 FL300 280", "CRE EXV12 A320 40.5 23.5 100 6000 220" })
+  check_eq(ex("create OAL70 A320 at 39.5 22.5, heading two one zero, one hundred forty, two hundred thirty knots"),
+    "CRE OAL70 A320 39.5 22.5 210 FL140 230")
+  asked(ex("create OAL70 A320 at 39.5 22.5, heading two one zero, one hundred forty"), "no speed said to place it")
+  check_eq(ex("move SXS81 to 40.3 23.4, two hundred ten"), "MOVE SXS81 40.3 23.4 FL210")
+  asked(ex("move EXV12 to 40.3 23.4, one hundred ten"), "a group-wise number for an aircraft at 6000 ft")
+  check_eq(ex("SXS81 descend flight level two four zero at two thousand"), "ALT SXS81 FL240 2000")
+  check_eq(ex("SXS81 descend FL240 at 1500"), "ALT SXS81 FL240 1500")
+  asked(ex("SXS81 descend FL240 at 250"), "a speed-sized number after the level")
+  asked(ex("SXS81 descend FL240 at 1500 feet"), "a number in feet after the level")
+  -- a level said group-wise after a direct-to, in its own clause
+  local _, ex2 = scene({ "CRE SXS82 B738 40.1 23.1 100 FL300 280", "DEFWPT ARSOS 40.9 23.9", "ADDWPT SXS82 ARSOS" })
+  check_eq(ex2("SXS82 direct ARSOS, climb three hundred forty"), "DIRECT SXS82 ARSOS ; ALT SXS82 FL340")
+end
