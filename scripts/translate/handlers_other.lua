@@ -2409,7 +2409,19 @@ return function(H, f, compass)
     end
     return true
   end
-  function m:dest(s) dest_orig(self, s, "DEST", "destination") end
+  -- "fly to" an airport, said as an order ("ACA1041 fly to YYZ"), may mean a direct-to or a destination:
+  -- asked. Said as a plan ("should/will fly to Frankfurt"), or with the destination named in the same
+  -- request ("fly to Salzburg, set Salzburg as destination"), it is the destination.
+  function m:dest(s)
+    if self:word(s.trig, "fly") and not self:word(s.trig - 1, "@purpose_modals")
+        and not self:word_in(1, #self.t + 1, "destination dest bound land landing") then
+      local id = self:acid(s, "fly there")
+      if not id then return end
+      return self:need(string.format("Should %s fly directly to '%s' now (DIRECT), or is it its destination "
+        .. "(DEST)?", id, self:raw(s.trig + 2, s.e)))
+    end
+    dest_orig(self, s, "DEST", "destination")
+  end
   function m:orig(s) dest_orig(self, s, "ORIG", "origin") end
 
   local function on_off(self, s)

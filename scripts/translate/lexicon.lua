@@ -351,7 +351,15 @@ return {
     rod = { word = "rate of descent", next = "max maximum min minimum" },
     roc = { word = "rate of climb", next = "max maximum min minimum" },
     -- (the flight management computer's page typed by its name: "show me the FPLN")
-    fpln = { word = "flight plan" } },
+    fpln = { word = "flight plan" },
+    -- a game programmer's words for a turn, a heading and a vertical speed ("rotate 90 clockwise", "set its
+    -- rotation to 090", "vertical velocity 0"): clockwise is a right turn
+    clockwise = { word = "right" }, cw = { word = "right", prev = "#number" },
+    counterclockwise = { word = "left" }, anticlockwise = { word = "left" }, ccw = { word = "left", prev = "#number" },
+    rotation = { word = "heading" },
+    velocity = { word = "speed", prev = "vertical" },
+    -- (a collision volume, "the hitbox radius", "vertical hitbox 1000 ft": the protected zone)
+    hitbox = { word = "protected zone" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",

@@ -897,7 +897,8 @@ return function(intent, rule, words)
   rule { "clr", "delrte", next = "@route_nouns",
          when = function(g, i) return not g:has_ref(1, #g.t + 1, "waypoint") and i + 2 > #g.t end }
   -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
-  rule { "delete del remove rid kill rmv bin deleting removing", "delete" }
+  -- ("despawn": a game's word for taking an object out of the world)
+  rule { "delete del remove rid kill rmv bin deleting removing despawn despawned", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
@@ -919,6 +920,9 @@ return function(intent, rule, words)
   end
   rule { "point", "direct", not_near = { 4, "@compass" }, when = to_waypoint }
   rule { "skip", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
+  -- "jump ahead to LINNG", "cut the corner to MILLS": a waypoint of the route flown to directly
+  rule { "jump", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
+  rule { "cut", "direct", near = { 3, "corner corners" }, when = to_waypoint }
   -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO", "rejoin own navigation at NORKU":
   -- the waypoint where the route is rejoined is flown to directly ("rejoin the route" alone is LNAV)
   rule { "rejoin rejoining", "direct", when = function(g, i)
@@ -1185,7 +1189,7 @@ return function(intent, rule, words)
     local r = g:refs_in(k, math.min(#g.t + 1, k + 2), "aircraft")[1]
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
   end }
-  rule { "move mv reposition teleport shift place relocate", "move" }
+  rule { "move mv reposition teleport shift place relocate tp teleported", "move" }
   -- "pop QFA12 over to -27.3 152.8": an aircraft flying "popped over to" a place is moved there
   rule { "pop", "move", when = function(g, i)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]

@@ -5855,3 +5855,16 @@ do
   check_eq(ex("vertical resolutions off, lateral only"), "RMETHV OFF")
   check_eq(ex("resolutions horizontal only please, no vertical"), "RMETHV OFF")
 end
+
+-- Cycle 37 (tr80): "fly to" an airport said as an order may be a direct-to or a destination: asked;
+-- said as a plan ("will fly to"), or with the destination named, it is the destination
+do
+  local _, ex = navscene({ "CRE KLM57 B738 52.6 4.6 090 FL120 250" }, "fly to an airport")
+  if ex then
+    asked(ex("KLM57 fly to EHAM"), "fly to an airport, as an order")
+    asked(ex("klm57 please fly to amsterdam"), "fly to an airport by name, as an order")
+    check_eq(ex("KLM57 will fly to Amsterdam, EHAM"), "DEST KLM57 EHAM")
+    check_eq(ex("KLM57 fly to EHAM, that's the new destination"), "DEST KLM57 EHAM")
+    check_eq(ex("KLM57 is going to EHAM"), "DEST KLM57 EHAM")
+  end
+end
