@@ -2705,6 +2705,13 @@ return function(H, f, compass)
       or self:word(s.trig + 1, "detection asas cd") and s.trig + 1
     if asas then self:explain(asas, asas + 1) end
     local q = first(self, s, { time = true, plain = true })
+    -- ("tick rate 20 hz": a rate in hertz is a step of its inverse in seconds)
+    if q and q.kind == "plain" and self:word(q.e, "hz hertz") then
+      if q.value <= 0 then return self:need("What time step, in seconds, should the simulation use?") end
+      self:mark_used(q.b, q.e + 1)
+      self:explain(q.b, q.e + 1)
+      return self:emit((asas and "DT ASAS " or "DT ") .. f.num(1 / q.value))
+    end
     if q then return self:emit((asas and "DT ASAS " or "DT ") .. f.num(q.value)) end
     if asas then return self:need("How often, in seconds, should conflict detection run?") end
     -- "a tenth of a second", "half a second": a fraction of a second said in words
@@ -2993,8 +3000,8 @@ return function(H, f, compass)
     end
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
-    -- ("draw trails behind the aircraft", "display the trails": shown)
-    local drawn = self:word_in(math.max(1, s.b - 2), s.e, "draw display")
+    -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail": shown)
+    local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give")
     if drawn then self.last_on = self:on_off(s) < 0 and 1 or self.last_on end
     if self:on_off(s) < 0 and not q and self.last_on == nil
         and not self:word_in(math.max(1, s.b - 2), s.b, "@on @off") then

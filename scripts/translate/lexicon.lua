@@ -84,7 +84,9 @@ return {
         -- (spoken hedges: "the clock is running kinda slow, go 2x")
         "kinda", "sorta", "somewhat",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
-        "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
+        "precisely", "roughly", "approximately",
+        -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
+        "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
         -- the same markers in Spanish and Portuguese, said in English by their speakers ("vamos, LATAM 3402 ...",
         -- "bueno, ...", "entonces ...", "bom, ...", "olha: ...")
@@ -114,7 +116,9 @@ return {
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
         "thx", "pls", "haha", "idk",
         -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")
-        "bugged", "buggy", "glitched", "glitchy", "coffee", "lunch", "brb",
+        "bugged", "buggy", "glitched", "glitchy",
+        -- a programmer's look inside the simulation ("debug info on WJA661": its state shown)
+        "debug", "debugging", "coffee", "lunch", "brb",
         -- a pilot of an online network gone, given as the reason for removing the aircraft ("dc'd", "he's
         -- disconnected", "went afk", "timed out"; "pilot" with them: courtesy_phrases)
         "dc'd", "dcd", "dced", "disconnected", "disconnect", "disconnects", "afk", "offline", "logged", "timed",
@@ -167,6 +171,8 @@ return {
         "pilot has disconnected", "connection lost", "lost connection", "lost his connection", "lost her connection",
         -- the rest of a route kept after a direct-to ("dct BIG, rest of route unchanged")
         "rest of route unchanged", "rest of the route unchanged", "rest of route as filed",
+        -- a place said as over a point ("move it right on top of DUDSO")
+        "right on top of", "on top of",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me",
         -- urgency, said with a negation ("descend FL150 without delay")
@@ -184,7 +190,7 @@ return {
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
-        "automatically", "manual", "manually",
+        "automatically", "auto", "manual", "manually",
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac", "acft",
         -- a speed named by the aircraft's configuration ("minimum clean speed, 210 knots")
         "clean",

@@ -522,9 +522,17 @@ return function(intent, rule, words)
   rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
   rule { "vertical", "vs", next = "speed rate" }
+  -- "go vertical 1200 up": a game's vertical speed, its sign said after the value
+  rule { "vertical", "vs", prev = { 1, "go" }, when = function(g, i)
+    return g:number_at(i + 1) and g:word(i + 2, "up down")
+  end }
   rule { "rate", "dtmult", prev = { 2, "@sim" } }  -- "the simulation rate"
+  -- "tick rate 20 hz", "the sim's update rate": a game loop's rate, the simulation's time step (DT)
+  rule { "rate", false, prev = { 1, "tick update frame" } }
+  rule { "tick update", "dt", next = "rate" }
+  rule { "tickrate", "dt" }
   rule { "rate", "vs", not_prev = { 1, "vertical" } }
-  rule { "bank", "bank" }
+  rule { "bank banking", "bank" }
 
   -- waypoints, creation and deletion
   -- ("it's spawned in the wrong place": the noun, no verb of placing)
@@ -1238,6 +1246,8 @@ return function(intent, rule, words)
     return k ~= nil and g:word(k, "pause hold freeze") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "pause hold freeze pausing freezing", "hold" }
+  -- "hit play", "press play": a game's or a player's button, the clock started
+  rule { "play", "op", prev = { 2, "hit press click push" } }
   -- "interrupt the exercise", "the exercise will now be interrupted": a pause of the simulation said of it
   rule { "interrupt interrupted", "hold", near = { 3, "@sim" } }
   rule { "interrupt interrupted", "hold", prev = { 4, "@sim" } }
@@ -1492,6 +1502,9 @@ return function(intent, rule, words)
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
   rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "aircraft") and not g:word_in(i + 1, #g.t + 1, "log") end }
+  -- "print ACA557's state", "dump the state of KLM12": an aircraft's state shown, no text for the log
+  rule { "print dump", "pos", near = { 4, "state status info details" },
+         when = function(g, i) return g:has_ref(i + 1, i + 6, "aircraft") end }
   rule { "print", "echo" }
   -- "note to self: ...", "note for me: ...": the experimenter's own note, no text for the log
   rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }

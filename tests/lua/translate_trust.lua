@@ -5868,3 +5868,37 @@ do
     check_eq(ex("KLM57 is going to EHAM"), "DEST KLM57 EHAM")
   end
 end
+
+-- Cycle 37 (tr80): a game programmer's words: despawn (DEL), tp (MOVE), rotate clockwise (a right turn),
+-- rotation (the heading), vertical velocity and "go vertical N up/down" (VS), banking (BANK), hit play (OP),
+-- tick rate in Hz (DT, its inverse), the hitbox (the protected zone), auto resolution, debug info and an
+-- aircraft's state printed (POS), a trail given (TRAIL ON), "jump ahead to"/"cut the corner to" a waypoint
+-- (DIRECT), "right on top of" a point (MOVE) and a value said "-ish" (read as said, as "roughly 250" is)
+do
+  local _, ex = scene({ "CRE KLM58 B738 52.6 4.6 090 FL120 250", "DEFWPT GAME1 52.7 4.9", "DEFWPT GAME2 52.9 5.2",
+    "ADDWPT KLM58 GAME1", "ADDWPT KLM58 GAME2" })
+  check_eq(ex("despawn KLM58"), "DEL KLM58")
+  check_eq(ex("tp KLM58 to GAME2"), "MOVE KLM58 GAME2")
+  check_eq(ex("teleport KLM58 right on top of GAME1"), "MOVE KLM58 GAME1")
+  check_eq(ex("rotate KLM58 30 degrees clockwise"), "HDG KLM58 120 RIGHT")
+  check_eq(ex("KLM58 rotate 45 anticlockwise"), "HDG KLM58 45 LEFT")
+  check_eq(ex("KLM58 rotation 270"), "HDG KLM58 270")
+  check_eq(ex("KLM58 vertical velocity -1000"), "VS KLM58 -1000")
+  check_eq(ex("KLM58 go vertical 900 down"), "VS KLM58 -900")
+  check_eq(ex("KLM58 banking 20 degrees"), "BANK KLM58 20")
+  check_eq(ex("alright, press play"), "OP")
+  check_eq(ex("tick rate 5 hz"), "DT 0.2")
+  asked(ex("tick rate 0 hz"), "no rate")
+  check_eq(ex("make the hitbox radius 4 nm"), "ZONER 4")
+  check_eq(ex("set the vertical hitbox to 800 ft"), "ZONEDH 800")
+  check_eq(ex("turn on auto conflict resolution"), "RESO MVP")
+  check_eq(ex("show me debug info for KLM58"), "POS KLM58")
+  check_eq(ex("print the state of KLM58"), "POS KLM58")
+  check_eq(ex("give all the planes a trail"), "TRAIL ON")
+  check_eq(ex("KLM58 jump ahead to GAME2"), "DIRECT KLM58 GAME2")
+  check_eq(ex("have KLM58 cut the corner to GAME2"), "DIRECT KLM58 GAME2")
+  check_eq(ex("KLM58 speed 230-ish"), "SPD KLM58 230")
+  -- where the class stops: no place to jump to is a fast-forward's missing time; a word not understood asks
+  asked(ex("jump ahead a bit"), "no time, no place")
+  asked(ex("KLM58 go vertical"), "no vertical speed")
+end
