@@ -38,6 +38,16 @@ return function(H, f, compass)
     return lat, lon
   end
 
+  -- Asks which variant of a family flown in several common variants (lexicon.variant_families: "737") is
+  -- meant, naming the designators of the family.
+  local function ask_variant(self, fam)
+    local variants = {}
+    for _, d in ipairs(require("translate.names").designators) do
+      if d:match("^B" .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
+    end
+    return self:need(string.format("Which variant of the %s is meant: %s?", fam, table.concat(variants, ", ")))
+  end
+
   function m:create(s)
     -- several aircraft in one request: each new id followed closely by a type starts one
     local starts = {}
@@ -146,14 +156,7 @@ return function(H, f, compass)
     -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one
     local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
     for _, fam in ipairs(said and L.variant_families or {}) do
-      if said:sub(-#fam) == fam and not said:sub(1, -#fam - 1):match("%d$") then
-        local variants = {}
-        for _, d in ipairs(require("translate.names").designators) do
-          if d:match("^B" .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
-        end
-        return self:need(string.format("Which variant of the %s is meant: %s?", fam,
-          table.concat(variants, ", ")))
-      end
+      if said:sub(-#fam) == fam and not said:sub(1, -#fam - 1):match("%d$") then return ask_variant(self, fam) end
     end
     -- ("B738... sorry, A320": a type said again after a correction replaces the one before it)
     for k = 2, #types do
@@ -164,6 +167,27 @@ return function(H, f, compass)
     for i = s.b, s.e - 1 do
       for _, p in ipairs(actype and self.t[i].kind == "word" and nicknames[self.t[i].text] or {}) do
         if actype:match(p) then self:explain(i, i + 1) end
+      end
+    end
+    -- ("add a dreamliner ACA855 ...", "spawn a caravan ..."): a family's name said with no type is the one
+    -- designator of that family, else asked about, naming them
+    local family
+    for i = s.b, actype and s.b - 1 or s.e - 1 do
+      if self.t[i].kind == "word" and nicknames[self.t[i].text] then family = family or i end
+    end
+    if family then
+      local word, found = self.t[family].text, {}
+      for _, d in ipairs(require("translate.names").designators) do
+        for _, p in ipairs(nicknames[word]) do
+          if d:match(p) then found[#found + 1] = d break end
+        end
+      end
+      if #found > 1 then
+        return self:need(string.format("Which type of %s is meant: %s?", word, table.concat(found, ", ")))
+      end
+      if #found == 1 then
+        actype = found[1]
+        self:explain(family, family + 1)
       end
     end
     local model, near
@@ -2112,6 +2136,21 @@ return function(H, f, compass)
     end
     if not n then return self:need("How many random aircraft should I create?") end
     local types = self:refs_in(s.b, s.e, "type")
+    -- ("5 random 737s", "ten 787 aircraft"): a family flown in several common variants names no one type, as
+    -- in a creation; a word with digits that is no type read ("foo-800s") is asked about, never dropped
+    for k = s.b, s.e - 1 do
+      local t = self.t[k]
+      if #types == 0 and t.kind == "number" and not self.u:used(k) then
+        for _, fam in ipairs(L.variant_families) do
+          if t.text == fam then return ask_variant(self, fam) end
+        end
+      end
+      if t.kind == "word" and t.raw:find("%d") and not self.u:used(k) and not self:has_ref(k, k + 1, "type")
+          and not self:has_ref(k, k + 1, "aircraft") and not self:has_ref(k, k + 1, "waypoint") then
+        return self:need(string.format("Which aircraft type should the random aircraft be? I heard '%s'; "
+          .. "please give its ICAO designator.", t.raw))
+      end
+    end
     local named = 0
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do if r.b ~= k or not counted then named = named + 1 end end
     if named > 0 then
@@ -2319,6 +2358,23 @@ return function(H, f, compass)
     if b < as then return b, as end
     return nil
   end
+  -- ("going to st hubert, CYHU", "from victoria, CYYJ"): the navdata's name of the airport `code` said
+  -- just before its code `r` (up to three words, a comma between) is accounted for by it; any other words
+  -- stay leftovers, asked about
+  local function name_beside_code(self, r, code)
+    local named = self.world.airports_named
+    local e = (self.t[r.b - 1] or {}).text == "," and r.b - 1 or r.b
+    for b = math.max(1, e - 3), e - 1 do
+      local words = {}
+      for k = b, e - 1 do
+        if self.t[k].kind ~= "word" or self.u:used(k) then words = nil break end
+        words[#words + 1] = self.t[k].text
+      end
+      for _, ident in ipairs(named and words and named(table.concat(words, " ")) or {}) do
+        if ident == code then return self:explain(b, e) end
+      end
+    end
+  end
   local function dest_orig(self, s, cmd, what)
     local id = self:acid(s, "get it")
     if not id then return end
@@ -2383,7 +2439,9 @@ return function(H, f, compass)
     if airport then
       self:emit(cmd .. " " .. id .. " " .. airport)
     elseif #w > 0 then
-      self:emit(cmd .. " " .. id .. " " .. self:airport_meant(w[#w].name, self:state(id)))
+      local code = self:airport_meant(w[#w].name, self:state(id))
+      name_beside_code(self, w[#w], code)
+      self:emit(cmd .. " " .. id .. " " .. code)
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
     elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig))

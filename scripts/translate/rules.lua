@@ -1038,10 +1038,20 @@ return function(intent, rule, words)
   end }
   rule { "fly", "dest", next = "to" }
   rule { "origin departed departing orig", "orig" }
+  -- "make WJA3101 come from victoria, CYYJ", "it came from CYHU": an airport's code (four letters) said
+  -- after "from", within four words, is where the aircraft comes from ("coming from the north" is none)
+  rule { "come comes coming came", "orig", next = "from", when = function(g, i)
+    for _, r in ipairs(g:refs_in(i + 2, math.min(#g.t + 1, i + 7), "waypoint")) do
+      if r.name:match("^%a%a%a%a$") and g:has_ref(1, i, "aircraft") then return true end
+    end
+    return false
+  end }
   rule { "lnav", "lnav" }
   -- "stop BAW123 following its route": its lateral navigation off
   rule { "stop", "lnav", near = { 4, "following follow" }, when = function(g, i)
-    return g:followed_by(i, 7, "@route_nouns") and g:has_ref(i + 1, i + 4, "aircraft")
+    -- ("stop WJA1522 from following its waypoints": the route named by its points)
+    return g:followed_by(i, 7, "@route_nouns waypoints") and not g:word_in(math.max(1, i - 2), i, "don't dont not never")
+      and (g:has_ref(i + 1, i + 4, "aircraft") or g:has_ref(math.max(1, i - 3), i, "aircraft"))
   end }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
@@ -1567,6 +1577,8 @@ return function(intent, rule, words)
   end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
+  -- "wind check at CYVR", "winds check over EHAM": a pilot's "wind check", the wind there shown
+  rule { "wind winds", "getwind", next = "check" }
   -- "wind at 30.1 31.4 FL200", "winds over 33N 7W?": the request opening with the wind at a position (a level
   -- after it at most) and nothing else, no direction nor speed told: the wind there, shown
   rule { "wind winds", "getwind", next = "at over", when = function(g, i)

@@ -5902,3 +5902,35 @@ do
   asked(ex("jump ahead a bit"), "no time, no place")
   asked(ex("KLM58 go vertical"), "no vertical speed")
 end
+
+-- Cycle 37 (tr80): random traffic of a family flown in several variants ("5 random 737s") asks which variant,
+-- as a creation does; a model's name in the plural ("737-800s") is that model; a word with digits that names
+-- no type is asked about, never dropped; a family's nickname said with no type ("a dreamliner") is asked
+-- about, naming its designators
+do
+  local _, ex = scene({ "CRE KLM59 B738 52.6 4.6 090 FL120 250" })
+  asked(ex("spawn 6 random 737s"), "a family in the plural")
+  asked(ex("generate 4 random 787 aircraft"), "a family")
+  check_eq(ex("spawn 3 random 737-800s"), "MCRE 3 B738")
+  check_eq(ex("spawn 3 random A321s"), "MCRE 3 A321")
+  asked(ex("spawn 3 random zz-900s"), "no type of that name")
+  asked(ex("create a dreamliner DLH7 at 52.0 4.0 heading 090 FL200 280 knots"), "the 787 family's nickname")
+  check_eq(ex("create a dreamliner DLH7 B789 at 52.0 4.0 heading 090 FL200 280 knots"),
+    "CRE DLH7 B789 52 4 90 FL200 280")
+end
+
+-- Cycle 37 (tr80): an airport's name said beside its code ("st hubert, CYHU") is accounted for by the code;
+-- a name of another airport is still asked about; "come from" an airport's code is the origin; "wind check at"
+-- a place is GETWIND there; "stop X (from) following its waypoints" is LNAV off
+do
+  local _, ex = navscene({ "CRE JZA77 DH8D 45.4 -73.7 090 6000 220", "ADDWPT JZA77 CYHU" }, "a name beside its code")
+  if ex then
+    check_eq(ex("JZA77 is now headed to st hubert, CYHU, make that the destination"), "DEST JZA77 CYHU")
+    asked(ex("JZA77 is now headed to mirabel, CYHU, make that the destination"), "another airport's name")
+    check_eq(ex("have JZA77 come from st hubert, CYHU"), "ORIG JZA77 CYHU")
+    asked(ex("have JZA77 come from the south"), "no airport after from")
+    check_eq(ex("wind check at CYHU"), "GETWIND CYHU")
+    check_eq(ex("JZA77 stop following your waypoints"), "LNAV JZA77 OFF")
+    asked(ex("JZA77 don't stop following your waypoints"), "a negated stop")
+  end
+end
