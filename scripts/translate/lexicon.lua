@@ -35,7 +35,11 @@ return {
       -- a flight level as typed ("descend FL120, Finnair 7": never a garbled callsign's word)
       "fl",
       -- the wind a request sets ("wind from 270 at 40 kt"): never part of a spoken callsign
-      "wind", "winds", },
+      "wind", "winds",
+      -- a game programmer's words for commands ("despawn", "rotate 90 clockwise", "timescale 4"; not "tp",
+      -- the letters of callsigns: "Easy 81TP")
+      "despawn", "warp", "destroy", "rotate", "rotation", "yaw", "clockwise", "counterclockwise",
+      "anticlockwise", "hitbox", "timescale", "tick", "banking", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a
   -- sentence they name no command; any other registry name said ("rmethv") names its command
   english_command_names = { "after", "area", "at", "bank", "before", "box", "call", "circle", "delay", "help",

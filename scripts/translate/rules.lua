@@ -367,6 +367,9 @@ return function(intent, rule, words)
     return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
   end }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
+  -- "set the timescale to 4", "time scale 2x": a game engine's time scale, the simulation's rate
+  rule { "timescale", "dtmult" }
+  rule { "scale", "dtmult", prev = { 1, "time" } }
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"
     local nx = g.t[i + 1]
@@ -478,7 +481,9 @@ return function(intent, rule, words)
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn turning", "hdg" }
   -- "rotate BAW123 30 degrees to the left", "nudge N123AB 15 degrees left": a turn by an amount
-  rule { "rotate nudge veer swing", "hdg", near = { 6, "left right degrees degree" } }
+  rule { "rotate nudge veer swing yaw", "hdg", near = { 6, "left right degrees degree" } }
+  -- "rotate KLM58 to 180", "yaw to 270": a game's rotation to a heading
+  rule { "rotate yaw", "hdg", next = "to", when = function(g, i) return g:number_at(i + 2) end }
   rule { "left right", "hdg", when = function(g, i)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
@@ -906,7 +911,7 @@ return function(intent, rule, words)
          when = function(g, i) return not g:has_ref(1, #g.t + 1, "waypoint") and i + 2 > #g.t end }
   -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
   -- ("despawn": a game's word for taking an object out of the world)
-  rule { "delete del remove rid kill rmv bin deleting removing despawn despawned", "delete" }
+  rule { "delete del remove rid kill rmv bin deleting removing despawn despawned destroy", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
@@ -1208,6 +1213,8 @@ return function(intent, rule, words)
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
   end }
   rule { "move mv reposition teleport shift place relocate tp teleported", "move" }
+  -- "warp KLM58 to GAME2": an aircraft warped to a place ("time warp" is none)
+  rule { "warp", "move", when = function(g, i) return g:has_ref(i + 1, i + 3, "aircraft") and g:followed_by(i, 4, "to") end }
   -- "pop QFA12 over to -27.3 152.8": an aircraft flying "popped over to" a place is moved there
   rule { "pop", "move", when = function(g, i)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]

@@ -5898,6 +5898,11 @@ do
   check_eq(ex("KLM58 jump ahead to GAME2"), "DIRECT KLM58 GAME2")
   check_eq(ex("have KLM58 cut the corner to GAME2"), "DIRECT KLM58 GAME2")
   check_eq(ex("KLM58 speed 230-ish"), "SPD KLM58 230")
+  check_eq(ex("destroy KLM58"), "DEL KLM58")
+  check_eq(ex("warp KLM58 to GAME1"), "MOVE KLM58 GAME1")
+  check_eq(ex("yaw KLM58 left 20"), "HDG KLM58 70 LEFT")
+  check_eq(ex("KLM58 rotate to 300"), "HDG KLM58 300")
+  check_eq(ex("set the timescale to 3"), "DTMULT 3")
   -- where the class stops: no place to jump to is a fast-forward's missing time; a word not understood asks
   asked(ex("jump ahead a bit"), "no time, no place")
   asked(ex("KLM58 go vertical"), "no vertical speed")
