@@ -38,7 +38,7 @@ return {
       "wind", "winds",
       -- a game programmer's words for commands ("despawn", "rotate 90 clockwise", "timescale 4"; not "tp",
       -- the letters of callsigns: "Easy 81TP")
-      "despawn", "warp", "destroy", "rotate", "rotation", "yaw", "clockwise", "counterclockwise",
+      "despawn", "warp", "destroy", "rotate", "yaw", "clockwise", "counterclockwise",
       "anticlockwise", "hitbox", "timescale", "tick", "banking", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a
   -- sentence they name no command; any other registry name said ("rmethv") names its command
@@ -366,7 +366,7 @@ return {
     -- rotation to 090", "vertical velocity 0"): clockwise is a right turn
     clockwise = { word = "right" }, cw = { word = "right", prev = "#number" },
     counterclockwise = { word = "left" }, anticlockwise = { word = "left" }, ccw = { word = "left", prev = "#number" },
-    rotation = { word = "heading" },
+    rotation = { word = "heading", next = "to #number of" },  -- ("rotation speed", Vr, stays as typed)
     velocity = { word = "speed", prev = "vertical" },
     -- (a collision volume, "the hitbox radius", "vertical hitbox 1000 ft": the protected zone)
     hitbox = { word = "protected zone" } },

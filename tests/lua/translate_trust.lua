@@ -5906,6 +5906,7 @@ do
   -- where the class stops: no place to jump to is a fast-forward's missing time; a word not understood asks
   asked(ex("jump ahead a bit"), "no time, no place")
   asked(ex("KLM58 go vertical"), "no vertical speed")
+  asked(ex("set KLM58 rotation speed to 140"), "a take-off's rotation speed is no heading nor speed")
 end
 
 -- Cycle 37 (tr80): random traffic of a family flown in several variants ("5 random 737s") asks which variant,
