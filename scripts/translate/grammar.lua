@@ -863,6 +863,8 @@ local function written_forms(text)
   text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
+  -- "250-ish", "FL200-ish": the suffix of a loose value is its own word ("ish", lexicon's discourse)
+  text = text:gsub("(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
   -- "un-pause", "un-freeze": the prefix "un-" written with a hyphen is the one word ("unpause")
   text = text:gsub("%f[%a]([Uu][Nn])%-(%a)", "%1%2")
   local sh = lexicon.shorthand

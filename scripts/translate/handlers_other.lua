@@ -38,6 +38,16 @@ return function(H, f, compass)
     return lat, lon
   end
 
+  -- Asks which variant of a family flown in several common variants (lexicon.variant_families: "737") is
+  -- meant, naming the designators of the family.
+  local function ask_variant(self, fam)
+    local variants = {}
+    for _, d in ipairs(require("translate.names").designators) do
+      if d:match("^B" .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
+    end
+    return self:need(string.format("Which variant of the %s is meant: %s?", fam, table.concat(variants, ", ")))
+  end
+
   function m:create(s)
     -- several aircraft in one request: each new id followed closely by a type starts one
     local starts = {}
@@ -146,14 +156,7 @@ return function(H, f, compass)
     -- name alone, names no one variant (lexicon.variant_families); a variant said or written is that one
     local said = #written == 0 and types[1] and self:raw(types[1].b, types[1].e):lower():gsub("[%s%-]", "")
     for _, fam in ipairs(said and L.variant_families or {}) do
-      if said:sub(-#fam) == fam and not said:sub(1, -#fam - 1):match("%d$") then
-        local variants = {}
-        for _, d in ipairs(require("translate.names").designators) do
-          if d:match("^B" .. fam:sub(1, 2) .. "%w$") then variants[#variants + 1] = d end
-        end
-        return self:need(string.format("Which variant of the %s is meant: %s?", fam,
-          table.concat(variants, ", ")))
-      end
+      if said:sub(-#fam) == fam and not said:sub(1, -#fam - 1):match("%d$") then return ask_variant(self, fam) end
     end
     -- ("B738... sorry, A320": a type said again after a correction replaces the one before it)
     for k = 2, #types do
@@ -164,6 +167,27 @@ return function(H, f, compass)
     for i = s.b, s.e - 1 do
       for _, p in ipairs(actype and self.t[i].kind == "word" and nicknames[self.t[i].text] or {}) do
         if actype:match(p) then self:explain(i, i + 1) end
+      end
+    end
+    -- ("add a dreamliner ACA855 ...", "spawn a caravan ..."): a family's name said with no type is the one
+    -- designator of that family, else asked about, naming them
+    local family
+    for i = s.b, actype and s.b - 1 or s.e - 1 do
+      if self.t[i].kind == "word" and nicknames[self.t[i].text] then family = family or i end
+    end
+    if family then
+      local word, found = self.t[family].text, {}
+      for _, d in ipairs(require("translate.names").designators) do
+        for _, p in ipairs(nicknames[word]) do
+          if d:match(p) then found[#found + 1] = d break end
+        end
+      end
+      if #found > 1 then
+        return self:need(string.format("Which type of %s is meant: %s?", word, table.concat(found, ", ")))
+      end
+      if #found == 1 then
+        actype = found[1]
+        self:explain(family, family + 1)
       end
     end
     local model, near
@@ -2145,6 +2169,21 @@ return function(H, f, compass)
     end
     if not n then return self:need("How many random aircraft should I create?") end
     local types = self:refs_in(s.b, s.e, "type")
+    -- ("5 random 737s", "ten 787 aircraft"): a family flown in several common variants names no one type, as
+    -- in a creation; a word with digits that is no type read ("foo-800s") is asked about, never dropped
+    for k = s.b, s.e - 1 do
+      local t = self.t[k]
+      if #types == 0 and t.kind == "number" and not self.u:used(k) then
+        for _, fam in ipairs(L.variant_families) do
+          if t.text == fam then return ask_variant(self, fam) end
+        end
+      end
+      if t.kind == "word" and t.raw:find("%d") and not self.u:used(k) and not self:has_ref(k, k + 1, "type")
+          and not self:has_ref(k, k + 1, "aircraft") and not self:has_ref(k, k + 1, "waypoint") then
+        return self:need(string.format("Which aircraft type should the random aircraft be? I heard '%s'; "
+          .. "please give its ICAO designator.", t.raw))
+      end
+    end
     local named = 0
     for _, r in ipairs(self:refs_in(s.b, s.e, "aircraft")) do if r.b ~= k or not counted then named = named + 1 end end
     if named > 0 then
@@ -2352,6 +2391,23 @@ return function(H, f, compass)
     if b < as then return b, as end
     return nil
   end
+  -- ("going to st hubert, CYHU", "from victoria, CYYJ"): the navdata's name of the airport `code` said
+  -- just before its code `r` (up to three words, a comma between) is accounted for by it; any other words
+  -- stay leftovers, asked about
+  local function name_beside_code(self, r, code)
+    local named = self.world.airports_named
+    local e = (self.t[r.b - 1] or {}).text == "," and r.b - 1 or r.b
+    for b = math.max(1, e - 3), e - 1 do
+      local words = {}
+      for k = b, e - 1 do
+        if self.t[k].kind ~= "word" or self.u:used(k) then words = nil break end
+        words[#words + 1] = self.t[k].text
+      end
+      for _, ident in ipairs(named and words and named(table.concat(words, " ")) or {}) do
+        if ident == code then return self:explain(b, e) end
+      end
+    end
+  end
   local function dest_orig(self, s, cmd, what)
     local id = self:acid(s, "get it")
     if not id then return end
@@ -2416,7 +2472,9 @@ return function(H, f, compass)
     if airport then
       self:emit(cmd .. " " .. id .. " " .. airport)
     elseif #w > 0 then
-      self:emit(cmd .. " " .. id .. " " .. self:airport_meant(w[#w].name, self:state(id)))
+      local code = self:airport_meant(w[#w].name, self:state(id))
+      name_beside_code(self, w[#w], code)
+      self:emit(cmd .. " " .. id .. " " .. code)
     elseif lat and lon then
       self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
     elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig))
@@ -2442,7 +2500,19 @@ return function(H, f, compass)
     end
     return true
   end
-  function m:dest(s) dest_orig(self, s, "DEST", "destination") end
+  -- "fly to" an airport, said as an order ("ACA1041 fly to YYZ"), may mean a direct-to or a destination:
+  -- asked. Said as a plan ("should/will fly to Frankfurt"), or with the destination named in the same
+  -- request ("fly to Salzburg, set Salzburg as destination"), it is the destination.
+  function m:dest(s)
+    if self:word(s.trig, "fly") and not self:word(s.trig - 1, "@purpose_modals")
+        and not self:word_in(1, #self.t + 1, "destination dest bound land landing") then
+      local id = self:acid(s, "fly there")
+      if not id then return end
+      return self:need(string.format("Should %s fly directly to '%s' now (DIRECT), or is it its destination "
+        .. "(DEST)?", id, self:raw(s.trig + 2, s.e)))
+    end
+    dest_orig(self, s, "DEST", "destination")
+  end
   function m:orig(s) dest_orig(self, s, "ORIG", "origin") end
 
   local function on_off(self, s)
@@ -2726,6 +2796,13 @@ return function(H, f, compass)
       or self:word(s.trig + 1, "detection asas cd") and s.trig + 1
     if asas then self:explain(asas, asas + 1) end
     local q = first(self, s, { time = true, plain = true })
+    -- ("tick rate 20 hz": a rate in hertz is a step of its inverse in seconds)
+    if q and q.kind == "plain" and self:word(q.e, "hz hertz") then
+      if q.value <= 0 then return self:need("What time step, in seconds, should the simulation use?") end
+      self:mark_used(q.b, q.e + 1)
+      self:explain(q.b, q.e + 1)
+      return self:emit((asas and "DT ASAS " or "DT ") .. f.num(1 / q.value))
+    end
     if q then return self:emit((asas and "DT ASAS " or "DT ") .. f.num(q.value)) end
     if asas then return self:need("How often, in seconds, should conflict detection run?") end
     -- "a tenth of a second", "half a second": a fraction of a second said in words
@@ -3028,8 +3105,8 @@ return function(H, f, compass)
     end
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
-    -- ("draw trails behind the aircraft", "display the trails": shown)
-    local drawn = self:word_in(math.max(1, s.b - 2), s.e, "draw display")
+    -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail": shown)
+    local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give")
     if drawn then self.last_on = self:on_off(s) < 0 and 1 or self.last_on end
     if self:on_off(s) < 0 and not q and self.last_on == nil
         and not self:word_in(math.max(1, s.b - 2), s.b, "@on @off") then

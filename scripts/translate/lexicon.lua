@@ -35,7 +35,11 @@ return {
       -- a flight level as typed ("descend FL120, Finnair 7": never a garbled callsign's word)
       "fl",
       -- the wind a request sets ("wind from 270 at 40 kt"): never part of a spoken callsign
-      "wind", "winds", },
+      "wind", "winds",
+      -- a game programmer's words for commands ("despawn", "rotate 90 clockwise", "timescale 4"; not "tp",
+      -- the letters of callsigns: "Easy 81TP")
+      "despawn", "warp", "destroy", "rotate", "yaw", "clockwise", "counterclockwise",
+      "anticlockwise", "hitbox", "timescale", "tick", "banking", },
   -- registry command names that are everyday English words ("a delay", "the line"): said in a
   -- sentence they name no command; any other registry name said ("rmethv") names its command
   english_command_names = { "after", "area", "at", "bank", "before", "box", "call", "circle", "delay", "help",
@@ -84,7 +88,9 @@ return {
         -- (spoken hedges: "the clock is running kinda slow, go 2x")
         "kinda", "sorta", "somewhat",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
-        "precisely", "roughly", "approximately", "afterwards", "afterward", "meanwhile", "completely", "fully",
+        "precisely", "roughly", "approximately",
+        -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
+        "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
         -- the same markers in Spanish and Portuguese, said in English by their speakers ("vamos, LATAM 3402 ...",
         -- "bueno, ...", "entonces ...", "bom, ...", "olha: ...")
@@ -114,7 +120,9 @@ return {
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
         "thx", "pls", "haha", "idk",
         -- a fault of the simulation given as the reason ("kill aza204 its bugged"), a break taken ("need coffee")
-        "bugged", "buggy", "glitched", "glitchy", "coffee", "lunch", "brb",
+        "bugged", "buggy", "glitched", "glitchy",
+        -- a programmer's look inside the simulation ("debug info on WJA661": its state shown)
+        "debug", "debugging", "coffee", "lunch", "brb",
         -- a pilot of an online network gone, given as the reason for removing the aircraft ("dc'd", "he's
         -- disconnected", "went afk", "timed out"; "pilot" with them: courtesy_phrases)
         "dc'd", "dcd", "dced", "disconnected", "disconnect", "disconnects", "afk", "offline", "logged", "timed",
@@ -201,6 +209,8 @@ return {
         "pilot has disconnected", "connection lost", "lost connection", "lost his connection", "lost her connection",
         -- the rest of a route kept after a direct-to ("dct BIG, rest of route unchanged")
         "rest of route unchanged", "rest of the route unchanged", "rest of route as filed",
+        -- a place said as over a point ("move it right on top of DUDSO")
+        "right on top of", "on top of",
         -- the speaker holding the room a moment ("hang on, freeze it there")
         "hang on", "bear with me",
         -- urgency, said with a negation ("descend FL150 without delay")
@@ -218,7 +228,7 @@ return {
         "drifting", "drifted", "wandering", "straying", "deviating",
         "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
-        "automatically", "manual", "manually",
+        "automatically", "auto", "manual", "manually",
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac", "acft",
         -- a speed named by the aircraft's configuration ("minimum clean speed, 210 knots")
         "clean",
@@ -388,7 +398,15 @@ return {
     rod = { word = "rate of descent", next = "max maximum min minimum" },
     roc = { word = "rate of climb", next = "max maximum min minimum" },
     -- (the flight management computer's page typed by its name: "show me the FPLN")
-    fpln = { word = "flight plan" } },
+    fpln = { word = "flight plan" },
+    -- a game programmer's words for a turn, a heading and a vertical speed ("rotate 90 clockwise", "set its
+    -- rotation to 090", "vertical velocity 0"): clockwise is a right turn
+    clockwise = { word = "right" }, cw = { word = "right", prev = "#number" },
+    counterclockwise = { word = "left" }, anticlockwise = { word = "left" }, ccw = { word = "left", prev = "#number" },
+    rotation = { word = "heading", next = "to #number of" },  -- ("rotation speed", Vr, stays as typed)
+    velocity = { word = "speed", prev = "vertical" },
+    -- (a collision volume, "the hitbox radius", "vertical hitbox 1000 ft": the protected zone)
+    hitbox = { word = "protected zone" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",

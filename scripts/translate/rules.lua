@@ -379,6 +379,9 @@ return function(intent, rule, words)
     return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
   end }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
+  -- "set the timescale to 4", "time scale 2x": a game engine's time scale, the simulation's rate
+  rule { "timescale", "dtmult" }
+  rule { "scale", "dtmult", prev = { 1, "time" } }
   rule { "speed", "dtmult", prev = { 2, "x times normal" } }  -- "three times normal speed", "at normal speed"
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"
     local nx = g.t[i + 1]
@@ -490,7 +493,9 @@ return function(intent, rule, words)
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn turning", "hdg" }
   -- "rotate BAW123 30 degrees to the left", "nudge N123AB 15 degrees left": a turn by an amount
-  rule { "rotate nudge veer swing", "hdg", near = { 6, "left right degrees degree" } }
+  rule { "rotate nudge veer swing yaw", "hdg", near = { 6, "left right degrees degree" } }
+  -- "rotate KLM58 to 180", "yaw to 270": a game's rotation to a heading
+  rule { "rotate yaw", "hdg", next = "to", when = function(g, i) return g:number_at(i + 2) end }
   rule { "left right", "hdg", when = function(g, i)
     return g:number_at(i + 1) and not g:preceded_by(i, 2, "turn heading")
   end }
@@ -534,9 +539,17 @@ return function(intent, rule, words)
   rule { "sink", "alt", near = { 3, "level fl flight feet ft" } }  -- "sink to flight level 120"
   rule { "vs sink expedite", "vs" }
   rule { "vertical", "vs", next = "speed rate" }
+  -- "go vertical 1200 up": a game's vertical speed, its sign said after the value
+  rule { "vertical", "vs", prev = { 1, "go" }, when = function(g, i)
+    return g:number_at(i + 1) and g:word(i + 2, "up down")
+  end }
   rule { "rate", "dtmult", prev = { 2, "@sim" } }  -- "the simulation rate"
+  -- "tick rate 20 hz", "the sim's update rate": a game loop's rate, the simulation's time step (DT)
+  rule { "rate", false, prev = { 1, "tick update frame" } }
+  rule { "tick update", "dt", next = "rate" }
+  rule { "tickrate", "dt" }
   rule { "rate", "vs", not_prev = { 1, "vertical" } }
-  rule { "bank", "bank" }
+  rule { "bank banking", "bank" }
 
   -- waypoints, creation and deletion
   -- ("it's spawned in the wrong place": the noun, no verb of placing)
@@ -936,7 +949,8 @@ return function(intent, rule, words)
   rule { "clr", "delrte", next = "@route_nouns",
          when = function(g, i) return not g:has_ref(1, #g.t + 1, "waypoint") and i + 2 > #g.t end }
   -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
-  rule { "delete del remove rid kill rmv bin deleting removing", "delete" }
+  -- ("despawn": a game's word for taking an object out of the world)
+  rule { "delete del remove rid kill rmv bin deleting removing despawn despawned destroy", "delete" }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
@@ -964,6 +978,9 @@ return function(intent, rule, words)
     local r = g:refs_in(k, k + 1, "waypoint")[1]
     return r ~= nil and not r.name:match("^%a%a%a%a$")
   end }
+  -- "jump ahead to LINNG", "cut the corner to MILLS": a waypoint of the route flown to directly
+  rule { "jump", "direct", next = "ahead", when = function(g, i) return g:word(i + 2, "to") and to_waypoint(g, i) end }
+  rule { "cut", "direct", near = { 3, "corner corners" }, when = to_waypoint }
   -- "rejoin LISOR", "rejoin the route at OPALA", "rejoin your track at KISMO", "rejoin own navigation at NORKU":
   -- the waypoint where the route is rejoined is flown to directly ("rejoin the route" alone is LNAV)
   rule { "rejoin rejoining", "direct", when = function(g, i)
@@ -1071,10 +1088,20 @@ return function(intent, rule, words)
   end }
   rule { "fly", "dest", next = "to" }
   rule { "origin departed departing orig", "orig" }
+  -- "make WJA3101 come from victoria, CYYJ", "it came from CYHU": an airport's code (four letters) said
+  -- after "from", within four words, is where the aircraft comes from ("coming from the north" is none)
+  rule { "come comes coming came", "orig", next = "from", when = function(g, i)
+    for _, r in ipairs(g:refs_in(i + 2, math.min(#g.t + 1, i + 7), "waypoint")) do
+      if r.name:match("^%a%a%a%a$") and g:has_ref(1, i, "aircraft") then return true end
+    end
+    return false
+  end }
   rule { "lnav", "lnav" }
   -- "stop BAW123 following its route": its lateral navigation off
   rule { "stop", "lnav", near = { 4, "following follow" }, when = function(g, i)
-    return g:followed_by(i, 7, "@route_nouns") and g:has_ref(i + 1, i + 4, "aircraft")
+    -- ("stop WJA1522 from following its waypoints": the route named by its points)
+    return g:followed_by(i, 7, "@route_nouns waypoints") and not g:word_in(math.max(1, i - 2), i, "don't dont not never")
+      and (g:has_ref(i + 1, i + 4, "aircraft") or g:has_ref(math.max(1, i - 3), i, "aircraft"))
   end }
   rule { "lateral", "lnav", next = "navigation" }
   rule { "vnav", "vnav" }
@@ -1230,7 +1257,9 @@ return function(intent, rule, words)
     local r = g:refs_in(k, math.min(#g.t + 1, k + 2), "aircraft")[1]
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
   end }
-  rule { "move mv reposition teleport shift place relocate", "move" }
+  rule { "move mv reposition teleport shift place relocate tp teleported", "move" }
+  -- "warp KLM58 to GAME2": an aircraft warped to a place ("time warp" is none)
+  rule { "warp", "move", when = function(g, i) return g:has_ref(i + 1, i + 3, "aircraft") and g:followed_by(i, 4, "to") end }
   -- "pop QFA12 over to -27.3 152.8": an aircraft flying "popped over to" a place is moved there
   rule { "pop", "move", when = function(g, i)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
@@ -1279,6 +1308,8 @@ return function(intent, rule, words)
     return k ~= nil and g:word(k, "pause hold freeze") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   rule { "pause hold freeze pausing freezing", "hold" }
+  -- "hit play", "press play": a game's or a player's button, the clock started
+  rule { "play", "op", prev = { 2, "hit press click push" } }
   -- "interrupt the exercise", "the exercise will now be interrupted": a pause of the simulation said of it
   rule { "interrupt interrupted", "hold", near = { 3, "@sim" } }
   rule { "interrupt interrupted", "hold", prev = { 4, "@sim" } }
@@ -1536,6 +1567,9 @@ return function(intent, rule, words)
   -- "print UAL9's flight plan", "print the waypoint list for BAW123": an aircraft's route listed
   rule { "print", "listrte", near = { 4, "route plan waypoint waypoints" },
          when = function(g, i) return g:has_ref(i + 1, i + 7, "aircraft") and not g:word_in(i + 1, #g.t + 1, "log") end }
+  -- "print ACA557's state", "dump the state of KLM12": an aircraft's state shown, no text for the log
+  rule { "print dump", "pos", near = { 4, "state status info details" },
+         when = function(g, i) return g:has_ref(i + 1, i + 6, "aircraft") end }
   rule { "print", "echo" }
   -- "note to self: ...", "note for me: ...": the experimenter's own note, no text for the log
   rule { "note", false, next = "to for", when = function(g, i) return g:word(i + 2, "@note_to_self") end }
@@ -1605,6 +1639,8 @@ return function(intent, rule, words)
   end }
   -- "what's the wind at 52.3, 4.7?", "show me the wind at 52N 4E FL300": the wind there, shown
   rule { "wind winds", "getwind", prev = { 3, "what what's whats show tell get check" } }
+  -- "wind check at CYVR", "winds check over EHAM": a pilot's "wind check", the wind there shown
+  rule { "wind winds", "getwind", next = "check" }
   -- "wind at 30.1 31.4 FL200", "winds over 33N 7W?": the request opening with the wind at a position (a level
   -- after it at most) and nothing else, no direction nor speed told: the wind there, shown
   rule { "wind winds", "getwind", next = "at over", when = function(g, i)

@@ -318,9 +318,11 @@ end
 -- Designators said in the plural where traffic is created ("5 random A320s", "two B738s"): the
 -- designator (a word that is a designator itself, or the id of an aircraft of `fleet`, stays); the digits
 -- of exactly one Airbus or Boeing designator in the plural ("8 random 738s", "320s") are that designator,
--- except a family's number that names no one variant (`families`, lexicon.variant_families: "737s").
+-- except a family's number that names no one variant (`families`, lexicon.variant_families: "737s"); a
+-- model's name with a hyphen in the plural ("737-800s") is that name.
 local lower_designators = setmetatable({}, { __mode = "k" })  -- [built] = {[designator in lower case] = true}
 local short_designators = setmetatable({}, { __mode = "k" })  -- [built] = {[digits] = designator or false}
+local hyphen_models = setmetatable({}, { __mode = "k" })  -- [built] = {[model with a hyphen, lower case] = true}
 function M.plurals(text, built, fleet, families)
   local designators = lower_designators[built]
   if not designators then
@@ -332,12 +334,20 @@ function M.plurals(text, built, fleet, families)
       if digits then short[digits] = short[digits] == nil and d or false end
     end
     for _, fam in ipairs(families or {}) do short[fam] = false end
-    lower_designators[built], short_designators[built] = designators, short
+    local hyphened = {}
+    for _, row in ipairs(built.types) do
+      if row[2]:find("-", 1, true) then hyphened[row[2]] = true end
+    end
+    lower_designators[built], short_designators[built], hyphen_models[built] = designators, short, hyphened
   end
+  local hyphened = hyphen_models[built]
   local short = short_designators[built]
   local ids = {}
   for _, a in ipairs(fleet or {}) do ids[a.id:lower()] = true end
   local function known(w) return designators[w] or ids[w] end
+  text = text:gsub("%f[%w](%w+%-%w+)[sS]%f[%W]", function(d)
+    if hyphened[d:lower()] then return d end
+  end)
   return (text:gsub("%f[%w](%w+)[sS]%f[%W]", function(d)
     if known(d:lower()) and not known((d .. "s"):lower()) then return d end
     if short[d] then return short[d] end

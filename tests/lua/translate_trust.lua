@@ -6188,3 +6188,87 @@ do
   local _, ex2 = scene({ "CRE SXS82 B738 40.1 23.1 100 FL300 280", "DEFWPT ARSOS 40.9 23.9", "ADDWPT SXS82 ARSOS" })
   check_eq(ex2("SXS82 direct ARSOS, climb three hundred forty"), "DIRECT SXS82 ARSOS ; ALT SXS82 FL340")
 end
+-- Cycle 37 (tr80): "fly to" an airport said as an order may be a direct-to or a destination: asked;
+-- said as a plan ("will fly to"), or with the destination named, it is the destination
+do
+  local _, ex = navscene({ "CRE KLM57 B738 52.6 4.6 090 FL120 250" }, "fly to an airport")
+  if ex then
+    asked(ex("KLM57 fly to EHAM"), "fly to an airport, as an order")
+    asked(ex("klm57 please fly to amsterdam"), "fly to an airport by name, as an order")
+    check_eq(ex("KLM57 will fly to Amsterdam, EHAM"), "DEST KLM57 EHAM")
+    check_eq(ex("KLM57 fly to EHAM, that's the new destination"), "DEST KLM57 EHAM")
+    check_eq(ex("KLM57 is going to EHAM"), "DEST KLM57 EHAM")
+  end
+end
+
+-- Cycle 37 (tr80): a game programmer's words: despawn (DEL), tp (MOVE), rotate clockwise (a right turn),
+-- rotation (the heading), vertical velocity and "go vertical N up/down" (VS), banking (BANK), hit play (OP),
+-- tick rate in Hz (DT, its inverse), the hitbox (the protected zone), auto resolution, debug info and an
+-- aircraft's state printed (POS), a trail given (TRAIL ON), "jump ahead to"/"cut the corner to" a waypoint
+-- (DIRECT), "right on top of" a point (MOVE) and a value said "-ish" (read as said, as "roughly 250" is)
+do
+  local _, ex = scene({ "CRE KLM58 B738 52.6 4.6 090 FL120 250", "DEFWPT GAME1 52.7 4.9", "DEFWPT GAME2 52.9 5.2",
+    "ADDWPT KLM58 GAME1", "ADDWPT KLM58 GAME2" })
+  check_eq(ex("despawn KLM58"), "DEL KLM58")
+  check_eq(ex("tp KLM58 to GAME2"), "MOVE KLM58 GAME2")
+  check_eq(ex("teleport KLM58 right on top of GAME1"), "MOVE KLM58 GAME1")
+  check_eq(ex("rotate KLM58 30 degrees clockwise"), "HDG KLM58 120 RIGHT")
+  check_eq(ex("KLM58 rotate 45 anticlockwise"), "HDG KLM58 45 LEFT")
+  check_eq(ex("KLM58 rotation 270"), "HDG KLM58 270")
+  check_eq(ex("KLM58 vertical velocity -1000"), "VS KLM58 -1000")
+  check_eq(ex("KLM58 go vertical 900 down"), "VS KLM58 -900")
+  check_eq(ex("KLM58 banking 20 degrees"), "BANK KLM58 20")
+  check_eq(ex("alright, press play"), "OP")
+  check_eq(ex("tick rate 5 hz"), "DT 0.2")
+  asked(ex("tick rate 0 hz"), "no rate")
+  check_eq(ex("make the hitbox radius 4 nm"), "ZONER 4")
+  check_eq(ex("set the vertical hitbox to 800 ft"), "ZONEDH 800")
+  check_eq(ex("turn on auto conflict resolution"), "RESO MVP")
+  check_eq(ex("show me debug info for KLM58"), "POS KLM58")
+  check_eq(ex("print the state of KLM58"), "POS KLM58")
+  check_eq(ex("give all the planes a trail"), "TRAIL ON")
+  check_eq(ex("KLM58 jump ahead to GAME2"), "DIRECT KLM58 GAME2")
+  check_eq(ex("have KLM58 cut the corner to GAME2"), "DIRECT KLM58 GAME2")
+  check_eq(ex("KLM58 speed 230-ish"), "SPD KLM58 230")
+  check_eq(ex("destroy KLM58"), "DEL KLM58")
+  check_eq(ex("warp KLM58 to GAME1"), "MOVE KLM58 GAME1")
+  check_eq(ex("yaw KLM58 left 20"), "HDG KLM58 70 LEFT")
+  check_eq(ex("KLM58 rotate to 300"), "HDG KLM58 300")
+  check_eq(ex("set the timescale to 3"), "DTMULT 3")
+  -- where the class stops: no place to jump to is a fast-forward's missing time; a word not understood asks
+  asked(ex("jump ahead a bit"), "no time, no place")
+  asked(ex("KLM58 go vertical"), "no vertical speed")
+  asked(ex("set KLM58 rotation speed to 140"), "a take-off's rotation speed is no heading nor speed")
+end
+
+-- Cycle 37 (tr80): random traffic of a family flown in several variants ("5 random 737s") asks which variant,
+-- as a creation does; a model's name in the plural ("737-800s") is that model; a word with digits that names
+-- no type is asked about, never dropped; a family's nickname said with no type ("a dreamliner") is asked
+-- about, naming its designators
+do
+  local _, ex = scene({ "CRE KLM59 B738 52.6 4.6 090 FL120 250" })
+  asked(ex("spawn 6 random 737s"), "a family in the plural")
+  asked(ex("generate 4 random 787 aircraft"), "a family")
+  check_eq(ex("spawn 3 random 737-800s"), "MCRE 3 B738")
+  check_eq(ex("spawn 3 random A321s"), "MCRE 3 A321")
+  asked(ex("spawn 3 random zz-900s"), "no type of that name")
+  asked(ex("create a dreamliner DLH7 at 52.0 4.0 heading 090 FL200 280 knots"), "the 787 family's nickname")
+  check_eq(ex("create a dreamliner DLH7 B789 at 52.0 4.0 heading 090 FL200 280 knots"),
+    "CRE DLH7 B789 52 4 90 FL200 280")
+end
+
+-- Cycle 37 (tr80): an airport's name said beside its code ("st hubert, CYHU") is accounted for by the code;
+-- a name of another airport is still asked about; "come from" an airport's code is the origin; "wind check at"
+-- a place is GETWIND there; "stop X (from) following its waypoints" is LNAV off
+do
+  local _, ex = navscene({ "CRE JZA77 DH8D 45.4 -73.7 090 6000 220", "ADDWPT JZA77 CYHU" }, "a name beside its code")
+  if ex then
+    check_eq(ex("JZA77 is now headed to st hubert, CYHU, make that the destination"), "DEST JZA77 CYHU")
+    asked(ex("JZA77 is now headed to mirabel, CYHU, make that the destination"), "another airport's name")
+    check_eq(ex("have JZA77 come from st hubert, CYHU"), "ORIG JZA77 CYHU")
+    asked(ex("have JZA77 come from the south"), "no airport after from")
+    check_eq(ex("wind check at CYHU"), "GETWIND CYHU")
+    check_eq(ex("JZA77 stop following your waypoints"), "LNAV JZA77 OFF")
+    asked(ex("JZA77 don't stop following your waypoints"), "a negated stop")
+  end
+end
