@@ -1750,6 +1750,13 @@ function G:condition()
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
   local rest = comma + 1
+  -- "when the dash 8 gets to GADUM set its speed to 180", "when WJA661 passes ADLER set speed 220": with no
+  -- comma, a waypoint the aircraft reaches (no value before it) ends the condition, an instruction after it
+  local reached = comma > #self.t and self:refs_in(i, #self.t + 1, "waypoint")[1]
+  if reached and self:word(reached.b - 1, "to at passes reaches hits crosses overflies")
+      and #self:quantities(i, reached.b) == 0 and self:any_instruction_in(reached.e, #self.t + 1) then
+    comma, rest = reached.e, reached.e
+  end
   if comma > #self.t then
     -- "when BAW123 reaches FL300 set its speed to 260": with no comma the condition ends at its value,
     -- a level, a speed or Mach ("once AFR1023 slows to 250": a speed by its verb), and an
@@ -1769,7 +1776,11 @@ function G:condition()
   -- "when the Widerøe passes VIBUK, it should descend to 5000 feet", "once DLH2VA gets to MALIX, descend
   -- FL80": a waypoint the aircraft reaches, no value, is a constraint there (G:at_condition)
   local places = self:refs_in(i, comma, "waypoint")
-  if #places == 1 and #self:quantities(i, comma) == 0 and places[1].exists then
+  if #places == 1 and #self:quantities(i, comma) == 0 then
+    if not places[1].exists or not self:on_route(self.subject, places[1].name) then
+      self.ask = self:off_route_question(self.subject, places[1].name)
+      return nil, rest
+    end
     self.at_place = places[1].name
     return "", rest
   end
@@ -1790,25 +1801,44 @@ function G:condition()
   return nil, rest
 end
 
--- The instructions after a condition at a waypoint (G:condition: self.at_place) become BlueSky's AT
--- constraints there ("AT id WPT ALT alt", "AT id WPT SPD spd"), each a level or speed of the condition's
--- aircraft, the waypoint on its route; anything else (a heading, another aircraft, a place off the route)
--- is asked, as at_waypoint asks.
-function G:at_condition()
-  local id, wp = self.subject, self.at_place
-  local on_route = false
-  for _, w in ipairs((self:state(id) or {}).route or {}) do on_route = on_route or w:upper() == wp:upper() end
-  local out = {}
-  for _, line in ipairs(self.out) do
-    local cmd, who, value = line:match("^(%u+) (%S+) (%S+)$")
-    if not on_route or who ~= id or (cmd ~= "ALT" and cmd ~= "SPD") then
-      self.ask = string.format("Should that happen at %s? squawk does not translate instructions tied to a "
-        .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.", wp, wp)
-      return
-    end
-    out[#out + 1] = string.format("AT %s %s %s %s", id, wp, cmd, value)
+-- True when waypoint `wp` is on aircraft `id`'s route (as the simulator has it).
+function G:on_route(id, wp)
+  for _, w in ipairs((self:state(id) or {}).route or {}) do
+    if w:upper() == wp:upper() then return true end
   end
-  self.out = out
+  return false
+end
+
+-- The question when an instruction is tied to waypoint `wp` that is not on aircraft `id`'s route (BlueSky's
+-- AT acid wp DO needs a waypoint of the route: the simulator refuses any other).
+function G:off_route_question(id, wp)
+  return string.format("%s is not on %s's route, so squawk cannot run the instruction there. Should it happen "
+    .. "now, or at a waypoint of the route? (ADDWPT %s %s adds it first.)", wp, id, id, wp)
+end
+
+-- The commands self.out[n0 + 1 ..] (each the aircraft `id`'s own, "CMD id ...") become BlueSky's
+-- "AT id WPT DO CMD id ...": they run when the aircraft passes waypoint `wp` of its route. A command of
+-- another aircraft or of none is asked about, as is a waypoint off the route; true when done.
+function G:do_at(id, wp, n0)
+  if not self:on_route(id, wp) then
+    self.ask = self:off_route_question(id, wp)
+    return false
+  end
+  for c = n0 + 1, #self.out do
+    if self.out[c]:match("^%u+ (%S+)") ~= id then
+      self.ask = string.format("I have %s. Which of these should happen at %s, and for which aircraft?",
+        table.concat(self.out, " ; "), wp)
+      return false
+    end
+  end
+  for c = n0 + 1, #self.out do self.out[c] = "AT " .. id .. " " .. wp .. " DO " .. self.out[c] end
+  return true
+end
+
+-- The instructions after a condition at a waypoint (G:condition: self.at_place) run when the condition's
+-- aircraft passes it: BlueSky's AT acid wp DO with each full command (G:do_at).
+function G:at_condition()
+  self:do_at(self.subject, self.at_place, 0)
 end
 
 -- ---- segments: one instruction each ----
@@ -2901,6 +2931,31 @@ function G:at_waypoint(s, spec)
     -- "show me the constraints AUA123 has at NERDU", "what restrictions does KLM12 have at ARTIP?": asked for
     local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
       and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
+    -- "at DILOP descend flight level 80", "after NERDU descend FL70", "after passing MOSET descend FL180",
+    -- "when at GIVMI descend FL220", "when it is at RIGNO, reduce to 210 knots": an instruction said with its
+    -- verb, after a clause opening with the waypoint, starts when the aircraft passes it: BlueSky's AT acid wp
+    -- DO with the full command (G:do_at; a waypoint off the route is asked about, naming it). A value said
+    -- with no verb ("at ELDAR speed 250", "at KOPOR FL80") stays the constraint there; so does a crossing.
+    local cond_b
+    if r.b == opens and self:word(first, "at after") then
+      cond_b = first
+    elseif self:word(first, "after") and self:word(r.b - 1, "passing") and r.b - 1 == opens then
+      cond_b = first
+    elseif self:word(r.b - 1, "at") and self:word(r.b - 2, "when once") and r.b - 2 == first then
+      cond_b = first
+    elseif opening then
+      cond_b = self:find_word(math.max(s.b, r.b - 4), r.b, "when once")
+    end
+    local verb = s.intent ~= "infer" and not self:word(s.trig, "@instruction_nouns")
+      and not self:word_in(s.b, s.e, "cross crossing crosses")
+    if cond_b and verb and s.trig > r.e - 1 and not (crossed or constrained or be_at or shown or level_by or clause_at)
+        and spec and spec.handler and #self:acids(s) == 1 then
+      local n0 = #self.out
+      self:explain(cond_b, r.e)
+      self[spec.handler](self, s, spec)
+      if not self.ask then self:do_at(self:acids(s)[1], r.name, n0) end
+      return true
+    end
     if crossed or constrained or opening or be_at or shown or level_by or clause_at then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])
