@@ -2430,6 +2430,10 @@ function G:parse(b, e)
       local before = self.last_cond
       self.last_cond = nil
       local n_before = #self.out
+      -- ("maintain 250 knots until SULUR then climb FL200": the instruction after "then" starts at the place,
+      -- never waits for the value before it)
+      local until_wp = self:until_then(segs, k)
+      if until_wp then before = nil end
       local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
@@ -2454,6 +2458,10 @@ function G:parse(b, e)
       end
       local spec = M.intents[s.intent]
       if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
+      if until_wp and not self.ask and #self.out > n_before then
+        self:explain(until_wp.u, until_wp.e)
+        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), until_wp.name, n_before)
+      end
       if not self.ask and #self.out > n_before then
         self:leftovers(s)
         self:unexplained(s, n_before)
@@ -2593,6 +2601,24 @@ function G:linked(i)
   return i > 1 and ((self.t[i - 1].kind == "punct" and self.t[i - 1].text == ",") or self:word(i - 1, "and @then_words"))
 end
 
+
+-- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX then reduce 180": the
+-- instruction before ends at a waypoint, "until" or "till" and its name straight before the "then" that opens
+-- segment k, and segment k's starts there (BlueSky's AT acid wp DO, G:do_at): { u = the "until" token, e =
+-- the token after the waypoint's name, name }, else nil.
+function G:until_then(segs, k)
+  local s, p = segs[k], segs[k - 1]
+  if not p or s["then"] ~= "then" then return nil end
+  for u = p.trig + 1, s.trig - 1 do
+    if self:word(u, "until till") then
+      local r = self:refs_in(u + 1, s.trig, "waypoint")[1]
+      if r and r.b == self:skip_fillers(u + 1) and self:word(self:skip_fillers(r.e), "then") then
+        return { u = u, e = r.e, name = r.name }
+      end
+    end
+  end
+  return nil
+end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
 -- clearance held until reached ("descend and maintain 4000 then reduce speed to 210": it waits for

@@ -2308,7 +2308,7 @@ do
   check_eq(ex("Georgian 751 maintain flight level 170 until further"), "ALT TGZ751 FL170")
   check_eq(ex("Georgian 751 descend FL150, not above speed 250"), "ALT TGZ751 FL150 ; SPD TGZ751 250")
   check_eq(ex("Siberian 1042 keep speed 280 until VAKNX"), "SPD SBI1042 280")
-  asked(ex("Siberian 1042 speed 220 till VAKNX then reduce 180"), "'then' waits")
+  check_eq(ex("Siberian 1042 speed 220 till VAKNX then reduce 180"), "SPD SBI1042 220 ; AT SBI1042 VAKNX DO SPD SBI1042 180")
   asked(ex("Siberian 1042 maintain 170 knots until VAKNX then contact tower"), "'then' waits")
   check_eq(ex("Aeroflot 1700, be at PETKX flight level eight zero"), "AT AFL1700 PETKX ALT FL80")
   check_eq(ex("Siberian 1042 after VAKNX expect vectors, now keep speed 280"), "SPD SBI1042 280")
@@ -5879,6 +5879,11 @@ do
   asked(off, "a waypoint off the route")
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
   off = ex("when SAS31 passes VISBO descend FL100")
+  check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  -- "until FIX then ...": the value now, the instruction after "then" from the waypoint on
+  check_eq(ex("SAS31 maintain 260 knots until OLMAK then descend FL200"), "SPD SAS31 260 ; AT SAS31 OLMAK DO ALT SAS31 FL200")
+  check_eq(ex("SAS31 keep FL240 till TUREN then reduce 220"), "ALT SAS31 FL240 ; AT SAS31 TUREN DO SPD SAS31 220")
+  off = ex("SAS31 maintain 260 knots until VISBO then descend FL200")
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
   -- another aircraft's instruction at the waypoint is asked about, never tied to it
   asked(ex("CRE KLM9 B738 54.0 12.0 090 FL200 250 ; when SAS31 gets to OLMAK, KLM9 descend FL150"), "another aircraft")
