@@ -2449,6 +2449,13 @@ function G:parse(b, e)
         for i = reached_cut, s.e - 1 do self.noted[i] = true end
         s = { b = s.b, e = reached_cut, trig = s.trig, intent = s.intent }
       end
+      -- ("descend FL100 when passing GOTUR": the instruction starts at the waypoint, G:trailing_fix)
+      local tail = not held and not at and not reached_cut and not until_wp and self:trailing_fix(s)
+      if tail then
+        self:mark_used(tail.b, tail.e)
+        self:explain(tail.b, tail.e)
+        s = { b = s.b, e = tail.b, trig = s.trig, intent = s.intent }
+      end
       local ids = held and self:acids(s) or {}
       if #ids == 1 then
         at = "ATALT " .. ids[1] .. " " .. handlers.format.alt(held.value, held.fl)
@@ -2461,6 +2468,8 @@ function G:parse(b, e)
       if until_wp and not self.ask and #self.out > n_before then
         self:explain(until_wp.u, until_wp.e)
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), until_wp.name, n_before)
+      elseif tail and not self.ask and #self.out > n_before then
+        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), tail.name, n_before)
       end
       if not self.ask and #self.out > n_before then
         self:leftovers(s)
@@ -2601,6 +2610,32 @@ function G:linked(i)
   return i > 1 and ((self.t[i - 1].kind == "punct" and self.t[i - 1].text == ",") or self:word(i - 1, "and @then_words"))
 end
 
+
+-- "descend FL100 when passing GOTUR", "reduce 210 once it reaches CANUK", "climb FL200 after passing LUX": a
+-- condition of passing a waypoint that closes the segment, after its instruction's value; the instruction
+-- starts there (AT acid wp DO, G:do_at): { b = the condition's first token, e = the token after the
+-- waypoint's name, name }, else nil. "at CANUK" alone after the value is no such condition (a crossing?).
+function G:trailing_fix(s)
+  local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
+  if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
+  local k = self:skip_fillers(c + 1)
+  if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
+  if self:word(k, "passing passes reaching reaches overflying") then
+    k = self:skip_fillers(k + 1)
+  elseif self:word(k, "gets") and self:word(k + 1, "to") then
+    k = self:skip_fillers(k + 2)
+  elseif not (self:word(k, "is it's") and self:word(k + 1, "at")) then
+    return nil
+  else
+    k = self:skip_fillers(k + 2)
+  end
+  local r = self:refs_in(k, s.e, "waypoint")[1]
+  if not r or r.b ~= k then return nil end
+  local j = self:skip_fillers(r.e)
+  while self.t[j] and self.t[j].kind == "punct" and self.t[j].text ~= "," do j = j + 1 end
+  if j < s.e then return nil end
+  return { b = c, e = r.e, name = r.name }
+end
 
 -- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX then reduce 180": the
 -- instruction before ends at a waypoint, "until" or "till" and its name straight before the "then" that opens
@@ -2761,14 +2796,15 @@ end
 
 -- "cross CAMRN at one one thousand", "cross ARTIP at 220 knots": a crossing
 -- restriction at a waypoint of the aircraft's route is BlueSky's AT
--- constraint ("AT id WPT ALT alt" / "SPD spd"); true when it was emitted.
--- Any other value instruction tied to a waypoint ("at TP2 be at FL200") is
--- an AT condition the grammar does not translate: asked, never issued at once.
+-- constraint ("AT id WPT ALT alt" / "SPD spd"); an instruction said with its
+-- verb to start there is AT acid wp DO (G:do_at); true when emitted.
+-- Any other value instruction tied to a waypoint ("reduce 210 at CANUK": met
+-- there, or started there?) is asked, never issued at once.
 -- (the question about an instruction tied to waypoint r, said with `word`: "at" unless given)
 local function tied_to_waypoint(self, r, word)
-  return self:need(string.format("Should that happen %s %s? squawk does not translate instructions tied to a "
-    .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
-    word or "at", r.name, r.name))
+  return self:need(string.format("Should that happen %s %s? Please say \"cross %s at ...\" for a level or speed "
+    .. "to meet there, \"at %s descend ...\" for an instruction to start there, or give it on its own (a waypoint "
+    .. "off the route needs ADDWPT first).", word or "at", r.name, r.name, r.name))
 end
 -- True when nothing but fillers and a closing full stop, question or exclamation mark follows token k - 1.
 local function ends_request(self, k)

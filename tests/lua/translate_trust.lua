@@ -5885,6 +5885,13 @@ do
   check_eq(ex("SAS31 keep FL240 till TUREN then reduce 220"), "ALT SAS31 FL240 ; AT SAS31 TUREN DO SPD SAS31 220")
   off = ex("SAS31 maintain 260 knots until VISBO then descend FL200")
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  -- the condition of passing the waypoint said after the instruction's value; "at FIX" alone there is asked
+  check_eq(ex("SAS31 descend FL150 when passing TUREN"), "AT SAS31 TUREN DO ALT SAS31 FL150")
+  check_eq(ex("SAS31 reduce 230 once it reaches OLMAK."), "AT SAS31 OLMAK DO SPD SAS31 230")
+  local at_end = ex("SAS31 reduce 230 at OLMAK")
+  check(at_end:match("^ASK Should that happen at OLMAK%?") ~= nil, at_end)
+  off = ex("SAS31 descend FL150 when passing VISBO")
+  check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
   -- another aircraft's instruction at the waypoint is asked about, never tied to it
   asked(ex("CRE KLM9 B738 54.0 12.0 090 FL200 250 ; when SAS31 gets to OLMAK, KLM9 descend FL150"), "another aircraft")
 end
