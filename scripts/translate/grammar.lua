@@ -2806,6 +2806,9 @@ local function tied_to_waypoint(self, r, word)
     .. "to meet there, \"at %s descend ...\" for an instruction to start there, or give it on its own (a waypoint "
     .. "off the route needs ADDWPT first).", word or "at", r.name, r.name, r.name))
 end
+-- The words of radiotelephony courtesy (lexicon.accounted.radiotelephony), as a set.
+local RADIOTELEPHONY = {}
+for _, w in ipairs(lexicon.accounted.radiotelephony) do RADIOTELEPHONY[w] = true end
 -- True when nothing but fillers and a closing full stop, question or exclamation mark follows token k - 1.
 local function ends_request(self, k)
   k = self:skip_fillers(k)
@@ -2904,6 +2907,8 @@ function G:at_waypoint(s, spec)
   -- value at the waypoint, before it is passed): asked, naming the place.
   local first = self:skip_fillers(s.b)
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
+  -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
+  while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
   local opens = self:word(first, "at after") and self:skip_fillers(first + 1)
   if opens and #refs == 0 and opens < s.trig and s.trig < s.e and #self:quantities(opens, s.trig) == 0 then
     local ids = self:acids(s)

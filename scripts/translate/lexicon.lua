@@ -148,7 +148,9 @@ return {
         "aitah", "sveiki",
         -- the same in the Central European languages ("dobrý den", "dzień dobry", "szia", "dobar dan", "děkuji")
         "dobry", "dobre", "dobar", "dober", "dzien", "szia", "sziasztok", "szervusz", "czesc", "ahoj", "dekuji",
-        "dakujem", "dziekuje", "dziekujemy", "koszonom", "hvala", "nashledanou", "prosim" },
+        "dakujem", "dziekuje", "dziekujemy", "koszonom", "hvala", "nashledanou", "prosim",
+        -- and in Greek ("efcharistó", "kaliméra", "parakaló")
+        "efcharisto", "efharisto", "kalimera", "kalispera", "parakalo", "geia", "yassou" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",

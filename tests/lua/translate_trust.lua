@@ -5885,6 +5885,9 @@ do
   check_eq(ex("SAS31 keep FL240 till TUREN then reduce 220"), "ALT SAS31 FL240 ; AT SAS31 TUREN DO SPD SAS31 220")
   off = ex("SAS31 maintain 260 knots until VISBO then descend FL200")
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  -- a word of courtesy between the callsign and the waypoint (Greek too)
+  check_eq(ex("SAS31, parakaló, after TUREN climb FL260"), "AT SAS31 TUREN DO ALT SAS31 FL260")
+  check_eq(ex("SAS31, kiitos, at OLMAK descend FL100"), "AT SAS31 OLMAK DO ALT SAS31 FL100")
   -- the condition of passing the waypoint said after the instruction's value; "at FIX" alone there is asked
   check_eq(ex("SAS31 descend FL150 when passing TUREN"), "AT SAS31 TUREN DO ALT SAS31 FL150")
   check_eq(ex("SAS31 reduce 230 once it reaches OLMAK."), "AT SAS31 OLMAK DO SPD SAS31 230")
