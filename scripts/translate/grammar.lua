@@ -3013,8 +3013,9 @@ function G:at_waypoint(s, spec)
     elseif opening then
       cond_b = self:find_word(math.max(s.b, r.b - 4), r.b, "when once")
     end
+    -- ("after passing GOURA descend... correction, descend now to FL150": taken back, the instruction is now)
     local verb = s.intent ~= "infer" and not self:word(s.trig, "@instruction_nouns")
-      and not self:word_in(s.b, s.e, "cross crossing crosses")
+      and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
     if cond_b and verb and s.trig > r.e - 1 and not (crossed or constrained or be_at or shown or level_by or clause_at)
         and spec and spec.handler and #self:acids(s) == 1 then
       local n0 = #self.out

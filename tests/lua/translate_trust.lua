@@ -5885,6 +5885,9 @@ do
   check_eq(ex("SAS31 keep FL240 till TUREN then reduce 220"), "ALT SAS31 FL240 ; AT SAS31 TUREN DO SPD SAS31 220")
   off = ex("SAS31 maintain 260 knots until VISBO then descend FL200")
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  -- taken back, or said "now": never tied to the waypoint
+  check(not ex("SAS31, after passing OLMAK descend... correction, descend now to FL150"):find("DO", 1, true),
+    "a corrected instruction at a waypoint")
   -- a word of courtesy between the callsign and the waypoint (Greek too)
   check_eq(ex("SAS31, parakaló, after TUREN climb FL260"), "AT SAS31 TUREN DO ALT SAS31 FL260")
   check_eq(ex("SAS31, kiitos, at OLMAK descend FL100"), "AT SAS31 OLMAK DO ALT SAS31 FL100")
