@@ -2399,6 +2399,9 @@ function G:places_corrected()
   end
 end
 
+-- (defined with G:at_waypoint)
+local tied_to_waypoint
+
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
@@ -2434,6 +2437,8 @@ function G:parse(b, e)
       -- never waits for the value before it)
       local until_wp = self:until_then(segs, k)
       if until_wp then before = nil end
+      local at_next = self.at_next
+      self.at_next = nil
       local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
@@ -2470,6 +2475,10 @@ function G:parse(b, e)
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), until_wp.name, n_before)
       elseif tail and not self.ask and #self.out > n_before then
         self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), tail.name, n_before)
+      elseif at_next and not self.ask and #self.out > n_before then
+        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), at_next.name, n_before)
+      elseif at_next and not self.ask then
+        tied_to_waypoint(self, at_next)
       end
       if not self.ask and #self.out > n_before then
         self:leftovers(s)
@@ -2534,6 +2543,9 @@ function G:parse(b, e)
       self:explain(s.trig, nx.b)
     end
   end
+  -- (a waypoint said for the next instruction, with none after it)
+  if self.at_next and not self.ask then tied_to_waypoint(self, self.at_next) end
+  self.at_next = nil
   self:direct_resumes_nav()
   self:destination_not_waypoint()
 end
@@ -2801,7 +2813,7 @@ end
 -- Any other value instruction tied to a waypoint ("reduce 210 at CANUK": met
 -- there, or started there?) is asked, never issued at once.
 -- (the question about an instruction tied to waypoint r, said with `word`: "at" unless given)
-local function tied_to_waypoint(self, r, word)
+function tied_to_waypoint(self, r, word)
   return self:need(string.format("Should that happen %s %s? Please say \"cross %s at ...\" for a level or speed "
     .. "to meet there, \"at %s descend ...\" for an instruction to start there, or give it on its own (a waypoint "
     .. "off the route needs ADDWPT first).", word or "at", r.name, r.name, r.name))
@@ -2834,9 +2846,15 @@ function G:at_waypoint(s, spec)
       -- ("direct HHOOD, then at HHOOD climb FL190": a clause opened by "at" and the waypoint after "then" or a
       -- comma ends there, its instruction the next one: an instruction tied to the waypoint)
       local opener = self.t[r.b - 2] and (self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "@then_words"))
+      -- (the direct-to is made, and the next segment's instruction starts at the waypoint: self.at_next, AT
+      -- acid wp DO, G:parse)
       if r.b - 1 > s.trig and self:word(r.b - 1, "at") and opener and self:skip_fillers(r.e) >= s.e and s.e <= #self.t
           and not self:in_reason(r.b) then
-        return tied_to_waypoint(self, r)
+        if not (spec and spec.handler) then return tied_to_waypoint(self, r) end
+        self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = r.b - 1 }, spec)
+        self:explain(r.b - 2, r.e)
+        self.at_next = r
+        return true
       end
     end
     -- "direct MENLO, cross it at FL150", "direct SLI, cross at 10000": a crossing after the direct, of the one

@@ -4796,13 +4796,13 @@ do
 end
 
 -- Cycle 30 (R64): a crossing said after a direct ("direct ALFA, cross it at FL150") is the AT constraint at
--- the waypoint flown to; "direct ALFA, then at ALFA climb ..." (the instruction in the next clause) is asked
--- about, never run at once
+-- the waypoint flown to; "direct ALFA, then at ALFA climb ..." (the instruction in the next clause) runs
+-- from the waypoint on (Cycle 37: AT acid wp DO), never at once
 do
   local _, ex = scene({ "DEFWPT RIVKA 52.3 4.8", "CRE KLM88 A320 52.0 4.0 090 FL250 280", "ADDWPT KLM88 RIVKA" })
   check_eq(ex("KLM88 go direct RIVKA, cross it at FL170"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT FL170")
   check_eq(ex("KLM88 direct RIVKA, cross at 9000"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT 9000")
-  check(ex("KLM88 direct RIVKA, then at RIVKA descend FL120"):match("^ASK Should that happen at RIVKA") ~= nil, "then at")
+  check_eq(ex("KLM88 direct RIVKA, then at RIVKA descend FL120"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA DO ALT KLM88 FL120")
 end
 
 -- Cycle 30 (R64): a simulation time typed h:mm:ss before a colon ("schedule at 00:15:00: ...") is the time of
@@ -5885,6 +5885,8 @@ do
   check_eq(ex("SAS31 keep FL240 till TUREN then reduce 220"), "ALT SAS31 FL240 ; AT SAS31 TUREN DO SPD SAS31 220")
   off = ex("SAS31 maintain 260 knots until VISBO then descend FL200")
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  -- "direct FIX, then at FIX climb ...": the direct-to now, the next instruction from the waypoint on
+  check_eq(ex("SAS31 direct TUREN, then at TUREN climb FL280"), "DIRECT SAS31 TUREN ; AT SAS31 TUREN DO ALT SAS31 FL280")
   -- taken back, or said "now": never tied to the waypoint
   check(not ex("SAS31, after passing OLMAK descend... correction, descend now to FL150"):find("DO", 1, true),
     "a corrected instruction at a waypoint")
