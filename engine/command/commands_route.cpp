@@ -5,6 +5,7 @@
 
 #include "command/handler_util.h"
 #include "command/line.h"
+#include "command/registry.h"
 #include "core/text.h"
 #include "core/units.h"
 #include "sim/atmosphere.h"
@@ -114,25 +115,70 @@ Status set_constraints(sim::Simulation& s, const std::string& id, const std::str
   return s.set_vnav(id, vnav);
 }
 
-// AT acid wp [ALT x | SPD x | alt/spd]
+// The line AT acid wp DO stores for `cmd`: as BlueSky's Route.at, the
+// aircraft's id is put first when the command takes an aircraft first and
+// `cmd` names none. Checked against the registry and the state now, so that
+// a bad command fails the AT that gives it. Error: argument 4, naming the
+// command and the waypoint.
+Result<std::string> waypoint_command(const Call& c, const std::string& id, const std::string& name,
+                                     std::string_view cmd) {
+  const std::vector<std::string> words = tokenize(cmd);
+  const std::string where = "argument 4: the command to run at " + name;
+  if (words.empty() || words[0].empty()) return Status::invalid(where + " is missing");
+  const sim::Traffic& t = c.stack.sim().traffic();
+  std::string line(cmd);
+  if (t.index_of(words[0]) < 0) {
+    const Registry& reg = Registry::instance();
+    const CommandDecl* d = reg.find(words[0]);
+    if (!d) {
+      const std::string near = reg.closest(words[0]);
+      return Status::not_found(where + ": unknown command " + text::quoted(words[0]) +
+                               (near.empty() ? "" : " (did you mean " + near + "?)"));
+    }
+    const auto& params = d->signature.params;
+    const bool takes_acid = !params.empty() && params[0].alternatives.front() == ArgType::kAcid;
+    if (takes_acid && !(words.size() > 1 && t.index_of(words[1]) >= 0)) line = id + " " + line;
+  }
+  const Status st = c.stack.check(line);
+  if (!st.is_ok()) return Status::error(st.code(), where + ": " + st.message());
+  return line;
+}
+
+// Lists the constraints and the stored commands of route waypoint k, as
+// BlueSky's AT acid wp shows them ("Stack:" then one command a line).
+std::string waypoint_text(const std::string& id, const sim::Waypoint& wp) {
+  std::string out = id + " at " + wp.name + ": " + constraint_text(wp);
+  if (!wp.commands.empty()) out.append("\nStack:");
+  for (const std::string& line : wp.commands) out.append("\n").append(line);
+  return out;
+}
+
+// AT acid wp [ALT x | SPD x | alt/spd | DO command]
 Result<std::string> at(Call& c) {
   const int i = c.acid(0);
   const std::string id = acid_name(c, 0);
   const std::string& name = c[1].text;
   if (name == "*") return Status::invalid("argument 2: needs a waypoint name, not '*'");
   const sim::Route& r = c.stack.sim().traffic().route[i];
-  if (!c.has(2)) return id + " at " + name + ": " + constraint_text(r.waypoints()[r.find(name)]);
+  if (!c.has(2)) return waypoint_text(id, r.waypoints()[r.find(name)]);
   const std::string what = text::upper(c[2].text);
+  const std::string value = c.has(3) ? std::string(text::trim(c[3].text)) : std::string();
   std::optional<double> alt, spd;
+  if (what == "DO" || what == "STACK") {
+    SQUAWK_ASSIGN_OR_RETURN(std::string line, waypoint_command(c, id, name, value));
+    SQUAWK_RETURN_IF_ERROR(c.stack.sim().add_waypoint_command(id, name, std::move(line)));
+    return std::string();
+  }
   if (what == "ALT" || what == "SPD") {
-    if (!c.has(3)) return Status::invalid("argument 4: missing the " + text::lower(what) + " value");
+    if (value.empty())
+      return Status::invalid("argument 4: missing the " + text::lower(what) + " value");
     if (what == "ALT") {
-      SQUAWK_ASSIGN_OR_RETURN(alt, parse_alt(c[3].text));
+      SQUAWK_ASSIGN_OR_RETURN(alt, parse_alt(value));
     } else {
-      SQUAWK_ASSIGN_OR_RETURN(Speed s, parse_spd(c[3].text));
+      SQUAWK_ASSIGN_OR_RETURN(Speed s, parse_spd(value));
       spd = s.value;
     }
-  } else if (what.find('/') != std::string::npos && !c.has(3)) {
+  } else if (what.find('/') != std::string::npos && value.empty()) {
     const auto parts = text::split(what, '/');
     if (parts.size() != 2) return Status::invalid("argument 3: expected alt/spd, got " + text::quoted(what));
     if (!parts[0].empty()) {
@@ -143,8 +189,9 @@ Result<std::string> at(Call& c) {
       spd = s.value;
     }
   } else {
-    return Status::unsupported("argument 3: squawk supports AT acid wpt [ALT x | SPD x | alt/spd], not " +
-                               text::quoted(what));
+    return Status::unsupported(
+        "argument 3: squawk supports AT acid wpt [ALT x | SPD x | alt/spd | DO command], not " +
+        text::quoted(what));
   }
   sim::Simulation scratch = c.stack.sim();
   SQUAWK_RETURN_IF_ERROR(set_constraints(scratch, id, name, alt, spd));
@@ -262,9 +309,23 @@ void add_route_commands(std::vector<CommandDecl>& out) {
   out.push_back({"BEFORE", {}, "acid,wpinroute,word,word,[alt,spd]", "BEFORE acid,wpname,ADDWPT,newwp,[alt,spd]",
                  "Inserts a new waypoint into the route right before an existing one, with optional constraints.",
                  {"KL204 BEFORE SSB ADDWPT PAM"}, before, {}});
-  out.push_back({"AT", {}, "acid,wpinroute,[word,word]", "AT acid,wpname,[ALT alt | SPD spd | alt/spd]",
-                 "Shows or changes the altitude and speed constraints at a waypoint of the route.",
-                 {"KL204 AT SPY ALT FL120", "KL204 AT SPY SPD 250", "KL204 AT SPY FL120/250", "KL204 AT SPY"}, at, {}});
+  out.push_back(
+      {"AT",
+       {},
+       "acid,wpinroute,[word,string]",
+       "AT acid,wpname,[ALT alt | SPD spd | alt/spd | DO command]",
+       "Shows or changes the altitude and speed constraints at a waypoint of the route, or stores "
+       "a "
+       "command (DO, or its synonym STACK) that runs once each time the aircraft passes the "
+       "waypoint, "
+       "at the step after it switches to the next one; the aircraft's id is put first when the "
+       "command takes an aircraft and names none. Several DO commands run in the order given; they "
+       "go with the waypoint when it is deleted. AT acid wpname alone lists the constraints, then "
+       "the stored commands after \"Stack:\".",
+       {"KL204 AT SPY ALT FL120", "KL204 AT SPY SPD 250", "KL204 AT SPY FL120/250",
+        "KL204 AT SPY DO ALT KL204 FL80", "KL204 AT SPY"},
+       at,
+       {}});
   out.push_back({"DELWPT", {"DELWP"}, "acid,wpinroute", "DELWPT acid,wpname",
                  "Removes a waypoint from an aircraft's route; * removes the whole route.",
                  {"DELWPT KL204 SPY"}, delwpt, {}});

@@ -279,9 +279,15 @@ void Stack::test_conditions() {
   conditions_.swap(keep);
 }
 
+void Stack::queue_passages() {
+  for (const sim::Simulation::Passage& p : sim_.passages())
+    for (const std::string& line : p.commands) fired_.push_back({line, p.acid + " AT " + p.wpt});
+}
+
 void Stack::step() {
   process_due();
   sim_.step();
+  queue_passages();
   test_conditions();
 }
 
@@ -294,6 +300,7 @@ Status Stack::run_until(double t_end) {
     if (sim_.simt() + 0.5 * sim_.dt() > t_end) break;
     const double before = sim_.simt();
     sim_.step();
+    queue_passages();
     test_conditions();
     if (!(sim_.simt() > before))
       return Status::invalid("run until: the time step " + text::fmt_double(sim_.dt(), 9) +

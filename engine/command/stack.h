@@ -4,7 +4,9 @@
 // State it owns beside the Simulation (all part of snapshot()):
 //  - the queue of timed commands (scenario lines, SCHEDULE, DELAY, PCALL),
 //    ordered by (time, arrival);
-//  - conditional commands (ATALT / ATSPD / ATDIST);
+//  - conditional commands (ATALT / ATSPD / ATDIST); the commands of route
+//    waypoints (AT acid wp DO) live in the route (sim::Waypoint::commands) and
+//    run, like a met condition's, at the step after the waypoint is passed;
 //  - user waypoints (DEFWPT);
 //  - the reference position (BlueSky's bs.ref, args.h): where the last
 //    successful command's parse left it; a navaid or fix named in a position
@@ -201,6 +203,9 @@ class Stack {
   void merge_entries(const std::string& file, ScnFile scn, const std::vector<std::string>& args,
                      bool relative);
   void test_conditions();
+  // Queues, for the next step, the commands of the route waypoints passed in
+  // the last sim step (sim::Simulation::passages), reported at "ACID AT WPT".
+  void queue_passages();
 
   sim::Simulation sim_;
   std::shared_ptr<const NavDb> navdb_;

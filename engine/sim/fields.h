@@ -122,6 +122,8 @@ inline constexpr Field<W> kWaypoint[] = {
        return w.has_spd() && !is_mach(w.spd) ? Value(units::ms_to_kt(w.spd)) : Value(Absent{}); }},
     {"mach", "", [](const W& w) -> Value {
        return w.has_spd() && is_mach(w.spd) ? Value(w.spd) : Value(Absent{}); }},
+    // The command lines run when the aircraft passes it (AT acid wp DO), in order.
+    {"commands", "", [](const W& w) -> Value { return &w.commands; }},
 };
 
 using C = ConflictRow;

@@ -118,6 +118,14 @@ void Route::clear() {
   orig_lat_ = orig_lon_ = 0.0;
 }
 
+Status Route::add_command(std::string_view name, std::string line) {
+  const int k = find(name);
+  if (k < 0) return not_in_route(name);
+  if (text::trim(line).empty()) return Status::invalid("a waypoint command needs a command line");
+  wps_[k].commands.push_back(std::move(line));
+  return Status::ok();
+}
+
 Status Route::direct_to(std::string_view name) {
   const int k = find(name);
   if (k < 0) return not_in_route(name);
@@ -181,6 +189,8 @@ void Route::serialize(std::string& out) const {
     put(out, w.has_alt() ? w.alt : -1e300);  // one fixed image for "no constraint"
     put(out, w.has_spd() ? w.spd : -1e300);
     put<uint8_t>(out, w.flyover ? 1 : 0);
+    put<int64_t>(out, static_cast<int64_t>(w.commands.size()));
+    for (const std::string& c : w.commands) bytes::put_str(out, c);
   }
   put<int64_t>(out, active_);
   put<uint8_t>(out, flyover_mode_ ? 1 : 0);

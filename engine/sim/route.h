@@ -40,6 +40,10 @@ struct Waypoint {
   double alt = kNoConstraint;    // [m] altitude constraint, NaN when none
   double spd = kNoConstraint;    // CAS [m/s] or Mach (see atmosphere.h is_mach), NaN when none
   bool flyover = false;          // true: fly over it (no turn anticipation)
+  // Command lines (TrafScript, one command each, as stored by AT acid wp DO)
+  // that the command layer runs, in order, each time the aircraft passes this
+  // waypoint (Simulation::passages()).
+  std::vector<std::string> commands;
 
   bool has_alt() const { return alt == alt; }
   bool has_spd() const { return spd == spd; }
@@ -69,6 +73,9 @@ class Route {
   Status remove(std::string_view name);
   // Empties the route, including origin and destination.
   void clear();
+  // Appends `line` to the commands of the waypoint named `name` (the first
+  // of that name). Errors: NotFound naming `name`; an empty line.
+  Status add_command(std::string_view name, std::string line);
   // Makes the named waypoint active (BlueSky's DIRECT).
   Status direct_to(std::string_view name);
   // Sets the destination: replaces a previous destination waypoint, else

@@ -65,6 +65,7 @@ int64_t Simulation::advance(double wall_s, int64_t max_steps) {
 // --- Step ---------------------------------------------------------------------
 
 void Simulation::step() {
+  passages_.clear();
   if (openap_ && simt() + 1e-9 >= next_perf_t_) {
     update_perf();
     next_perf_t_ += kPerfDt;
@@ -264,6 +265,7 @@ void Simulation::update_autopilot() {
     geo::QdrDist qd{s.qdr_deg[i], s.dist_nm[i]};
     t.dist2wp[i] = units::nm_to_m(qd.dist_nm);
     if (waypoint_reached(t.dist2wp[i], qd.qdr_deg, t.curlegdir[i], t.trk[i], t.gs[i], t.turndist[i])) {
+      if (!wp->commands.empty()) passages_.push_back({t.id[i], wp->name, wp->commands});
       if (!r.advance()) {
         t.lnav[i] = t.vnav[i] = 0;
         continue;

@@ -39,6 +39,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/rng.h"
 #include "core/status.h"
@@ -90,6 +91,16 @@ class Simulation {
 
   // One step of dt.
   void step();
+  // The waypoints with commands (Waypoint::commands) that aircraft passed in
+  // the last step(), in aircraft order: the command layer runs them (a
+  // caller that steps with run_for / run_until / advance sees only the last
+  // step's). Output of the step, not state: left out of snapshot().
+  struct Passage {
+    std::string acid;
+    std::string wpt;
+    std::vector<std::string> commands;
+  };
+  const std::vector<Passage>& passages() const { return passages_; }
   // Steps while simt() + dt/2 <= t_end, i.e. the steps that end at or before
   // t_end on the dt grid. Error when t_end is not finite or seconds < 0.
   Status run_for(double seconds);
@@ -169,6 +180,8 @@ class Simulation {
   Status add_waypoint_after(std::string_view acid, std::string_view ref, Waypoint wp);
   Status add_waypoint_before(std::string_view acid, std::string_view ref, Waypoint wp);
   Status delete_waypoint(std::string_view acid, std::string_view name);
+  // AT acid wp DO: appends a command line to waypoint `name`'s commands.
+  Status add_waypoint_command(std::string_view acid, std::string_view name, std::string line);
   // ADDWPT acid FLYOVER / FLYBY: mode of the waypoints added from now on.
   Status set_flyover_mode(std::string_view acid, bool flyover);
   // DELRTE: empties the route and switches LNAV and VNAV off.
@@ -290,6 +303,7 @@ class Simulation {
   struct ApScratch {
     std::vector<double> la, lb, sb, cb, lonb, qdr_deg, dist_nm;
   } ap_;
+  std::vector<Passage> passages_;
 
   Traffic traf_;
   ConflictDetector cd_;

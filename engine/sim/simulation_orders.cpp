@@ -427,6 +427,10 @@ Status Simulation::set_flyover_mode(std::string_view acid, bool flyover) {
 Status Simulation::delete_waypoint(std::string_view acid, std::string_view name) {
   return route_op(acid, [&](Route& r) { return r.remove(name); });
 }
+Status Simulation::add_waypoint_command(std::string_view acid, std::string_view name,
+                                        std::string line) {
+  return route_op(acid, [&](Route& r) { return r.add_command(name, std::move(line)); });
+}
 Status Simulation::delete_route(std::string_view acid) {
   return route_op(acid, [](Route& r) {
     r.clear();

@@ -187,6 +187,17 @@ bool same_command(std::string_view produced, std::string_view expected) {
     return same_command(text::join(std::vector<std::string>(p.begin() + 3, p.end()), " "),
                         text::join(std::vector<std::string>(e.begin() + 3, e.end()), " "));
   }
+  // AT acid wpt DO CMD ... (STACK is DO): the aircraft and waypoint, then the command run there,
+  // compared as one
+  auto stored = [](const std::vector<std::string>& v) {
+    return v.size() > 4 && (text::iequals(v[3], "DO") || text::iequals(v[3], "STACK"));
+  };
+  if (cmd == "AT" && (stored(p) || stored(e))) {
+    if (!stored(p) || !stored(e) || !text::iequals(p[1], e[1]) || !text::iequals(p[2], e[2]))
+      return false;
+    return same_command(text::join(std::vector<std::string>(p.begin() + 4, p.end()), " "),
+                        text::join(std::vector<std::string>(e.begin() + 4, e.end()), " "));
+  }
   // ATDIST acid wpt dist CMD ...: the place and distance [NM], then the command it runs, compared
   // as one
   if (cmd == "ATDIST" && p.size() > 4 && e.size() > 4) {

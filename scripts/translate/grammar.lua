@@ -1840,6 +1840,13 @@ function G:condition()
   local comma = i + 1
   while comma <= #self.t and not (self.t[comma].kind == "punct" and self.t[comma].text == ",") do comma = comma + 1 end
   local rest = comma + 1
+  -- "when the dash 8 gets to GADUM set its speed to 180", "when WJA661 passes ADLER set speed 220": with no
+  -- comma, a waypoint the aircraft reaches (no value before it) ends the condition, an instruction after it
+  local reached = comma > #self.t and self:refs_in(i, #self.t + 1, "waypoint")[1]
+  if reached and self:word(reached.b - 1, "to at passes reaches hits crosses overflies")
+      and #self:quantities(i, reached.b) == 0 and self:any_instruction_in(reached.e, #self.t + 1) then
+    comma, rest = reached.e, reached.e
+  end
   if comma > #self.t then
     -- "when BAW123 reaches FL300 set its speed to 260": with no comma the condition ends at its value,
     -- a level, a speed or Mach ("once AFR1023 slows to 250": a speed by its verb), and an
@@ -1866,7 +1873,11 @@ function G:condition()
   -- "when the Widerøe passes VIBUK, it should descend to 5000 feet", "once DLH2VA gets to MALIX, descend
   -- FL80": a waypoint the aircraft reaches, no value, is a constraint there (G:at_condition)
   local places = self:refs_in(i, comma, "waypoint")
-  if #places == 1 and #self:quantities(i, comma) == 0 and places[1].exists then
+  if #places == 1 and #self:quantities(i, comma) == 0 then
+    if not places[1].exists or not self:on_route(self.subject, places[1].name) then
+      self.ask = self:off_route_question(self.subject, places[1].name)
+      return nil, rest
+    end
     self.at_place = places[1].name
     return "", rest
   end
@@ -1887,25 +1898,44 @@ function G:condition()
   return nil, rest
 end
 
--- The instructions after a condition at a waypoint (G:condition: self.at_place) become BlueSky's AT
--- constraints there ("AT id WPT ALT alt", "AT id WPT SPD spd"), each a level or speed of the condition's
--- aircraft, the waypoint on its route; anything else (a heading, another aircraft, a place off the route)
--- is asked, as at_waypoint asks.
-function G:at_condition()
-  local id, wp = self.subject, self.at_place
-  local on_route = false
-  for _, w in ipairs((self:state(id) or {}).route or {}) do on_route = on_route or w:upper() == wp:upper() end
-  local out = {}
-  for _, line in ipairs(self.out) do
-    local cmd, who, value = line:match("^(%u+) (%S+) (%S+)$")
-    if not on_route or who ~= id or (cmd ~= "ALT" and cmd ~= "SPD") then
-      self.ask = string.format("Should that happen at %s? squawk does not translate instructions tied to a "
-        .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.", wp, wp)
-      return
-    end
-    out[#out + 1] = string.format("AT %s %s %s %s", id, wp, cmd, value)
+-- True when waypoint `wp` is on aircraft `id`'s route (as the simulator has it).
+function G:on_route(id, wp)
+  for _, w in ipairs((self:state(id) or {}).route or {}) do
+    if w:upper() == wp:upper() then return true end
   end
-  self.out = out
+  return false
+end
+
+-- The question when an instruction is tied to waypoint `wp` that is not on aircraft `id`'s route (BlueSky's
+-- AT acid wp DO needs a waypoint of the route: the simulator refuses any other).
+function G:off_route_question(id, wp)
+  return string.format("%s is not on %s's route, so squawk cannot run the instruction there. Should it happen "
+    .. "now, or at a waypoint of the route? (ADDWPT %s %s adds it first.)", wp, id, id, wp)
+end
+
+-- The commands self.out[n0 + 1 ..] (each the aircraft `id`'s own, "CMD id ...") become BlueSky's
+-- "AT id WPT DO CMD id ...": they run when the aircraft passes waypoint `wp` of its route. A command of
+-- another aircraft or of none is asked about, as is a waypoint off the route; true when done.
+function G:do_at(id, wp, n0)
+  if not self:on_route(id, wp) then
+    self.ask = self:off_route_question(id, wp)
+    return false
+  end
+  for c = n0 + 1, #self.out do
+    if self.out[c]:match("^%u+ (%S+)") ~= id then
+      self.ask = string.format("I have %s. Which of these should happen at %s, and for which aircraft?",
+        table.concat(self.out, " ; "), wp)
+      return false
+    end
+  end
+  for c = n0 + 1, #self.out do self.out[c] = "AT " .. id .. " " .. wp .. " DO " .. self.out[c] end
+  return true
+end
+
+-- The instructions after a condition at a waypoint (G:condition: self.at_place) run when the condition's
+-- aircraft passes it: BlueSky's AT acid wp DO with each full command (G:do_at).
+function G:at_condition()
+  self:do_at(self.subject, self.at_place, 0)
 end
 
 -- ---- segments: one instruction each ----
@@ -2479,6 +2509,9 @@ function G:places_corrected()
   end
 end
 
+-- (defined with G:at_waypoint)
+local tied_to_waypoint
+
 function G:parse(b, e)
   local segs = self:split_ellipsis(self:segments(b, e))
   local prev_out = #self.out
@@ -2510,6 +2543,12 @@ function G:parse(b, e)
       local before = self.last_cond
       self.last_cond = nil
       local n_before = #self.out
+      -- ("maintain 250 knots until SULUR then climb FL200": the instruction after "then" starts at the place,
+      -- never waits for the value before it)
+      local until_wp = self:until_then(segs, k)
+      if until_wp then before = nil end
+      local at_next = self.at_next
+      self.at_next = nil
       local at = self:at_altitude(s) or self:at_distance(s) or self:at_time(s) or self.at_all
       -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
       -- FL250": a level said as a condition after the speed or heading instruction it holds
@@ -2525,6 +2564,13 @@ function G:parse(b, e)
         for i = reached_cut, s.e - 1 do self.noted[i] = true end
         s = { b = s.b, e = reached_cut, trig = s.trig, intent = s.intent }
       end
+      -- ("descend FL100 when passing GOTUR": the instruction starts at the waypoint, G:trailing_fix)
+      local tail = not held and not at and not reached_cut and not until_wp and self:trailing_fix(s)
+      if tail then
+        self:mark_used(tail.b, tail.e)
+        self:explain(tail.b, tail.e)
+        s = { b = s.b, e = tail.b, trig = s.trig, intent = s.intent }
+      end
       local ids = held and self:acids(s) or {}
       if #ids == 1 then
         at = "ATALT " .. ids[1] .. " " .. handlers.format.alt(held.value, held.fl)
@@ -2534,6 +2580,16 @@ function G:parse(b, e)
       end
       local spec = M.intents[s.intent]
       if not self:at_waypoint(s, spec) then self[spec and spec.handler or "infer"](self, s, spec) end
+      if until_wp and not self.ask and #self.out > n_before then
+        self:explain(until_wp.u, until_wp.e)
+        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), until_wp.name, n_before)
+      elseif tail and not self.ask and #self.out > n_before then
+        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), tail.name, n_before)
+      elseif at_next and not self.ask and #self.out > n_before then
+        self:do_at(self.out[n_before + 1]:match("^%u+ (%S+)"), at_next.name, n_before)
+      elseif at_next and not self.ask then
+        tied_to_waypoint(self, at_next)
+      end
       if not self.ask and #self.out > n_before then
         self:leftovers(s)
         self:unexplained(s, n_before)
@@ -2597,6 +2653,9 @@ function G:parse(b, e)
       self:explain(s.trig, nx.b)
     end
   end
+  -- (a waypoint said for the next instruction, with none after it)
+  if self.at_next and not self.ask then tied_to_waypoint(self, self.at_next) end
+  self.at_next = nil
   self:direct_resumes_nav()
   self:destination_not_waypoint()
 end
@@ -2674,6 +2733,50 @@ function G:linked(i)
   return i > 1 and ((self.t[i - 1].kind == "punct" and self.t[i - 1].text == ",") or self:word(i - 1, "and @then_words"))
 end
 
+
+-- "descend FL100 when passing GOTUR", "reduce 210 once it reaches CANUK", "climb FL200 after passing LUX": a
+-- condition of passing a waypoint that closes the segment, after its instruction's value; the instruction
+-- starts there (AT acid wp DO, G:do_at): { b = the condition's first token, e = the token after the
+-- waypoint's name, name }, else nil. "at CANUK" alone after the value is no such condition (a crossing?).
+function G:trailing_fix(s)
+  local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
+  if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
+  local k = self:skip_fillers(c + 1)
+  if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
+  if self:word(k, "passing passes reaching reaches overflying") then
+    k = self:skip_fillers(k + 1)
+  elseif self:word(k, "gets") and self:word(k + 1, "to") then
+    k = self:skip_fillers(k + 2)
+  elseif not (self:word(k, "is it's") and self:word(k + 1, "at")) then
+    return nil
+  else
+    k = self:skip_fillers(k + 2)
+  end
+  local r = self:refs_in(k, s.e, "waypoint")[1]
+  if not r or r.b ~= k then return nil end
+  local j = self:skip_fillers(r.e)
+  while self.t[j] and self.t[j].kind == "punct" and self.t[j].text ~= "," do j = j + 1 end
+  if j < s.e then return nil end
+  return { b = c, e = r.e, name = r.name }
+end
+
+-- "maintain 250 knots until SULUR then climb FL200", "speed 220 till VAKNX then reduce 180": the
+-- instruction before ends at a waypoint, "until" or "till" and its name straight before the "then" that opens
+-- segment k, and segment k's starts there (BlueSky's AT acid wp DO, G:do_at): { u = the "until" token, e =
+-- the token after the waypoint's name, name }, else nil.
+function G:until_then(segs, k)
+  local s, p = segs[k], segs[k - 1]
+  if not p or s["then"] ~= "then" then return nil end
+  for u = p.trig + 1, s.trig - 1 do
+    if self:word(u, "until till") then
+      local r = self:refs_in(u + 1, s.trig, "waypoint")[1]
+      if r and r.b == self:skip_fillers(u + 1) and self:word(self:skip_fillers(r.e), "then") then
+        return { u = u, e = r.e, name = r.name }
+      end
+    end
+  end
+  return nil
+end
 
 -- True when segment k follows the one before it by a bare "then" in the formal phraseology of a
 -- clearance held until reached ("descend and maintain 4000 then reduce speed to 210": it waits for
@@ -2819,15 +2922,19 @@ end
 
 -- "cross CAMRN at one one thousand", "cross ARTIP at 220 knots": a crossing
 -- restriction at a waypoint of the aircraft's route is BlueSky's AT
--- constraint ("AT id WPT ALT alt" / "SPD spd"); true when it was emitted.
--- Any other value instruction tied to a waypoint ("at TP2 be at FL200") is
--- an AT condition the grammar does not translate: asked, never issued at once.
+-- constraint ("AT id WPT ALT alt" / "SPD spd"); an instruction said with its
+-- verb to start there is AT acid wp DO (G:do_at); true when emitted.
+-- Any other value instruction tied to a waypoint ("reduce 210 at CANUK": met
+-- there, or started there?) is asked, never issued at once.
 -- (the question about an instruction tied to waypoint r, said with `word`: "at" unless given)
-local function tied_to_waypoint(self, r, word)
-  return self:need(string.format("Should that happen %s %s? squawk does not translate instructions tied to a "
-    .. "waypoint: please give it on its own, or add %s to the route with ADDWPT and its level or speed.",
-    word or "at", r.name, r.name))
+function tied_to_waypoint(self, r, word)
+  return self:need(string.format("Should that happen %s %s? Please say \"cross %s at ...\" for a level or speed "
+    .. "to meet there, \"at %s descend ...\" for an instruction to start there, or give it on its own (a waypoint "
+    .. "off the route needs ADDWPT first).", word or "at", r.name, r.name, r.name))
 end
+-- The words of radiotelephony courtesy (lexicon.accounted.radiotelephony), as a set.
+local RADIOTELEPHONY = {}
+for _, w in ipairs(lexicon.accounted.radiotelephony) do RADIOTELEPHONY[w] = true end
 -- True when nothing but fillers and a closing full stop, question or exclamation mark follows token k - 1.
 local function ends_request(self, k)
   k = self:skip_fillers(k)
@@ -2853,9 +2960,15 @@ function G:at_waypoint(s, spec)
       -- ("direct HHOOD, then at HHOOD climb FL190": a clause opened by "at" and the waypoint after "then" or a
       -- comma ends there, its instruction the next one: an instruction tied to the waypoint)
       local opener = self.t[r.b - 2] and (self.t[r.b - 2].kind == "punct" or self:word(r.b - 2, "@then_words"))
+      -- (the direct-to is made, and the next segment's instruction starts at the waypoint: self.at_next, AT
+      -- acid wp DO, G:parse)
       if r.b - 1 > s.trig and self:word(r.b - 1, "at") and opener and self:skip_fillers(r.e) >= s.e and s.e <= #self.t
           and not self:in_reason(r.b) then
-        return tied_to_waypoint(self, r)
+        if not (spec and spec.handler) then return tied_to_waypoint(self, r) end
+        self[spec.handler](self, { intent = s.intent, b = s.b, trig = s.trig, e = r.b - 1 }, spec)
+        self:explain(r.b - 2, r.e)
+        self.at_next = r
+        return true
       end
     end
     -- "direct MENLO, cross it at FL150", "direct SLI, cross at 10000": a crossing after the direct, of the one
@@ -2926,6 +3039,8 @@ function G:at_waypoint(s, spec)
   -- value at the waypoint, before it is passed): asked, naming the place.
   local first = self:skip_fillers(s.b)
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
+  -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
+  while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
   local opens = self:word(first, "at after") and self:skip_fillers(first + 1)
   if opens and #refs == 0 and opens < s.trig and s.trig < s.e and #self:quantities(opens, s.trig) == 0 then
     local ids = self:acids(s)
@@ -3015,6 +3130,32 @@ function G:at_waypoint(s, spec)
     -- "show me the constraints AUA123 has at NERDU", "what restrictions does KLM12 have at ARTIP?": asked for
     local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
       and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
+    -- "at DILOP descend flight level 80", "after NERDU descend FL70", "after passing MOSET descend FL180",
+    -- "when at GIVMI descend FL220", "when it is at RIGNO, reduce to 210 knots": an instruction said with its
+    -- verb, after a clause opening with the waypoint, starts when the aircraft passes it: BlueSky's AT acid wp
+    -- DO with the full command (G:do_at; a waypoint off the route is asked about, naming it). A value said
+    -- with no verb ("at ELDAR speed 250", "at KOPOR FL80") stays the constraint there; so does a crossing.
+    local cond_b
+    if r.b == opens and self:word(first, "at after") then
+      cond_b = first
+    elseif self:word(first, "after") and self:word(r.b - 1, "passing") and r.b - 1 == opens then
+      cond_b = first
+    elseif self:word(r.b - 1, "at") and self:word(r.b - 2, "when once") and r.b - 2 == first then
+      cond_b = first
+    elseif opening then
+      cond_b = self:find_word(math.max(s.b, r.b - 4), r.b, "when once")
+    end
+    -- ("after passing GOURA descend... correction, descend now to FL150": taken back, the instruction is now)
+    local verb = s.intent ~= "infer" and not self:word(s.trig, "@instruction_nouns")
+      and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
+    if cond_b and verb and s.trig > r.e - 1 and not (crossed or constrained or be_at or shown or level_by or clause_at)
+        and spec and spec.handler and #self:acids(s) == 1 then
+      local n0 = #self.out
+      self:explain(cond_b, r.e)
+      self[spec.handler](self, s, spec)
+      if not self.ask then self:do_at(self:acids(s)[1], r.name, n0) end
+      return true
+    end
     if crossed or constrained or opening or be_at or shown or level_by or clause_at then
       local ids = self:acids(s)
       local now = #ids == 1 and self:state(ids[1])

@@ -413,6 +413,9 @@ return {
                    "multiplier", "speedup", "timestep", "step", "radius" },
   -- labels of text for the log, before a colon opening the request ("log: seed=7 baseline"): kept as typed
   note_labels = { note = true, log = true, comment = true, message = true, memo = true, echo = true },
+  -- the words an instruction is named by when it is said with no verb ("at ELDAR speed 250", "at BRAVO:
+  -- altitude FL300"): a value there, said so, is the constraint at the waypoint, not an instruction to start
+  instruction_nouns = { "speed", "spd", "altitude", "alt", "level", "fl", "flight", "heading", "hdg", "mach" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
   -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")

@@ -24,7 +24,7 @@ Repl.__index = Repl
 local HELP = [[
   English text      translate to TrafScript, show it, run it, show what changed
   !CMD              run TrafScript as typed, e.g. !HDG KL204 270, !FF 300, !HOLD
-  :state            the clock, the aircraft (current -> selected values, route)
+  :state            the clock, the aircraft (current -> selected values, route, AT ... DO commands)
                     and the conflicts (tLOS, tCPA, dCPA)
   :run SECONDS      advance the simulation now, reporting conflicts and ECHO lines
   :clock X | off    run the clock at X times real time (OP), or stop it (HOLD)
@@ -70,6 +70,12 @@ local function fmt_aircraft(a)
       names[#names + 1] = w.name .. (w.name == a.active_wpt and "*" or "")
     end
     s = s .. "\n      route " .. table.concat(names, " ") .. (a.lnav and "  (LNAV on, * active)" or "  (LNAV off)")
+    -- the commands a waypoint runs when passed (AT acid wp DO), in order
+    for _, w in ipairs(a.route) do
+      if w.commands and #w.commands > 0 then
+        s = s .. "\n      at " .. w.name .. " do: " .. table.concat(w.commands, "; ")
+      end
+    end
   end
   return s
 end

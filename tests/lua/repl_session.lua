@@ -101,6 +101,9 @@ do
   check_eq(a.sel_hdg_deg ~= nil, true)
   check_eq(a.active_wpt, "KL204001")
   check_eq(#a.route, 1)
+  -- the commands a waypoint runs when passed (AT acid wp DO), under the route
+  text = r:handle("!AT KL204 KL204001 DO ALT KL204 FL100")
+  check(find(text, "at KL204001 do: ALT KL204 FL100"), text)
 end
 
 -- A scenario whose commands fail is summarised like `squawk scn`; its ECHO

@@ -60,3 +60,13 @@ local s5 = squawk.sim.new{dt_s = 5}
 local ok5, dt5 = s5:exec("DT")
 check(ok5 and dt5:find("dt 5 s", 1, true) ~= nil, dt5)
 check(not pcall(squawk.sim.new, {dt_s = -1}), "a negative step is refused")
+
+-- A route waypoint's stored commands (AT acid wp DO) are in its route table, in order.
+local sr = squawk.sim.new()
+for _, l in ipairs({ "CRE KL204 B744 52 4 90 FL200 250", "DEFWPT ALPHA 52 4.3", "ADDWPT KL204 ALPHA",
+    "AT KL204 ALPHA DO ALT KL204 FL80", "AT KL204 ALPHA DO SPD 220" }) do
+  check(sr:exec(l), l)
+end
+local wp1 = sr:get("KL204").route[1]
+check_eq(wp1.name, "ALPHA")
+check_eq(table.concat(wp1.commands, " | "), "ALT KL204 FL80 | KL204 SPD 220")

@@ -1328,7 +1328,7 @@ do
   check(ex:exec("DEFWPT TULIP 52.5 4.6"))
   check(ex:exec("ADDWPT KLM77 TULIP"))
   local function wt(text) return said(graph.translate(text, { sim = ex, mode = "offline", waypoints = { "TULIP" } })) end
-  check_eq(wt("KLM77 at TULIP descend FL100"), "AT KLM77 TULIP ALT FL100")
+  check_eq(wt("KLM77 at TULIP descend FL100"), "AT KLM77 TULIP DO ALT KLM77 FL100")
   check_eq(wt("KLM77 at TULIP speed 220"), "AT KLM77 TULIP SPD 220")
   check(wt("DLH4AX at TULIP speed 220"):find("^ASK Should that happen at TULIP") ~= nil, "TULIP is no waypoint of DLH4AX")
 end
@@ -2309,11 +2309,11 @@ do
   check_eq(ex("Georgian 751 maintain flight level 170 until further"), "ALT TGZ751 FL170")
   check_eq(ex("Georgian 751 descend FL150, not above speed 250"), "ALT TGZ751 FL150 ; SPD TGZ751 250")
   check_eq(ex("Siberian 1042 keep speed 280 until VAKNX"), "SPD SBI1042 280")
-  asked(ex("Siberian 1042 speed 220 till VAKNX then reduce 180"), "'then' waits")
+  check_eq(ex("Siberian 1042 speed 220 till VAKNX then reduce 180"), "SPD SBI1042 220 ; AT SBI1042 VAKNX DO SPD SBI1042 180")
   asked(ex("Siberian 1042 maintain 170 knots until VAKNX then contact tower"), "'then' waits")
   check_eq(ex("Aeroflot 1700, be at PETKX flight level eight zero"), "AT AFL1700 PETKX ALT FL80")
   check_eq(ex("Siberian 1042 after VAKNX expect vectors, now keep speed 280"), "SPD SBI1042 280")
-  asked(ex("Siberian 1042 after VAKNX descend FL100"), "a descent after a place is asked")
+  check_eq(ex("Siberian 1042 after VAKNX descend FL100"), "AT SBI1042 VAKNX DO ALT SBI1042 FL100")
   check_eq(ex("Aeroflot seventeen hundred turn left heading 120"), "HDG AFL1700 120 LEFT")
   check_eq(ex("What is position of Siberian 1042?"), "POS SBI1042")
   check_eq(ex("instructor here, remove Georgian 751, he is landed"), "DEL TGZ751")
@@ -2946,15 +2946,14 @@ do
     check_eq(ex("where is the Finnair now? has it passed NATAN already?"), "POS FIN2BB")
     check_eq(ex("show me the airBaltic's route, I want to check that EDERA comes first"), "LISTRTE BTI1AA")
     asked(ex("where is the Finnair? is it at FL300 yet?"), "a value in the remark")
-    -- a condition at a waypoint of the route is an AT constraint; a heading there, or a place off the
-    -- route, is asked
-    check_eq(ex("when the Finnair passes MILTA, it should climb to FL370"), "AT FIN2BB MILTA ALT FL370")
-    check_eq(ex("once the Finnair gets to MILTA, reduce to 250 knots"), "AT FIN2BB MILTA SPD 250")
-    check(ex("when the Finnair passes MILTA, turn it left heading 180"):match("^ASK Should that happen at MILTA")
-      ~= nil, "a heading at a waypoint")
+    -- a condition at a waypoint of the route runs its instruction there (AT acid wp DO), a heading too; a
+    -- place off the route is asked
+    check_eq(ex("when the Finnair passes MILTA, it should climb to FL370"), "AT FIN2BB MILTA DO ALT FIN2BB FL370")
+    check_eq(ex("once the Finnair gets to MILTA, reduce to 250 knots"), "AT FIN2BB MILTA DO SPD FIN2BB 250")
+    check_eq(ex("when the Finnair passes MILTA, turn it left heading 180"), "AT FIN2BB MILTA DO HDG FIN2BB 180 LEFT")
     asked(ex("when the Finnair passes EDERA, climb to FL370"), "off the route")
     check_eq(ex("the Finnair should climb to FL370 and, when it is at MILTA, slow to 250 knots"),
-      "ALT FIN2BB FL370 ; AT FIN2BB MILTA SPD 250")
+      "ALT FIN2BB FL370 ; AT FIN2BB MILTA DO SPD FIN2BB 250")
     asked(ex("the Finnair should climb to FL370 and, when it is at EDERA, slow to 250 knots"),
       "a condition mid-request at a place off the route")
     -- a place said after a correction replaces the one before it (it was dropped in silence)
@@ -3383,26 +3382,26 @@ do
 end
 
 -- A condition at a waypoint opening the clause after the callsign, "at" and the waypoint said by its ident,
--- spelled in the phonetic alphabet or by its navaid's name: BlueSky's AT constraint there when the waypoint is
--- on the aircraft's route; a spelling that names no waypoint of the route, a heading there, or an instruction
--- "after" the place (AT would meet the value before it) is asked about, naming the place (the spelled place was
--- dropped before: the speed ran at once)
+-- spelled in the phonetic alphabet or by its navaid's name: the instruction runs there (AT acid wp DO) when the
+-- waypoint is on the aircraft's route, "at" or "after" it, a heading too; a spelling that names no waypoint of
+-- the route is asked about, naming the place (the spelled place was dropped before: the speed ran at once)
 do
   local _, ex = scene({ "DEFWPT OKLAB 49.9 13.6", "DEFWPT VEMIS 50.1 14.0", "CRE CSA752 A319 49.85 13.30 050 FL140 280",
     "ADDWPT CSA752 OKLAB" })
-  check_eq(ex("CSA seven five two, at Oscar Kilo Lima Alpha Bravo reduce speed two two zero"), "AT CSA752 OKLAB SPD 220")
-  check(ex("CSA seven five two, after Oscar Kilo Lima Alpha Bravo descend flight level one two zero")
-    :match("^ASK Should that happen after OKLAB%?") ~= nil, "after the place: asked, naming it")
+  check_eq(ex("CSA seven five two, at Oscar Kilo Lima Alpha Bravo reduce speed two two zero"),
+    "AT CSA752 OKLAB DO SPD CSA752 220")
+  check_eq(ex("CSA seven five two, after Oscar Kilo Lima Alpha Bravo descend flight level one two zero"),
+    "AT CSA752 OKLAB DO ALT CSA752 FL120")
   check(ex("CSA seven five two, at Victor Echo Mike India Sierra speed two two zero"):match("^ASK Which waypoint is VEMIS")
     ~= nil, "a spelled waypoint off the route: asked")
   asked(ex("CSA seven five two, at Oscar Kilo Lima speed two two zero"), "a spelling of no waypoint")
-  asked(ex("CSA seven five two, after OKLAB turn left heading 300"), "a heading there: asked")
+  check_eq(ex("CSA seven five two, after OKLAB turn left heading 300"), "AT CSA752 OKLAB DO HDG CSA752 300 LEFT")
 end
 do
   local _, ex = navscene({ "CRE AUA123 A320 48.50 15.60 110 FL110 270", "ADDWPT AUA123 WGM" },
     "a condition at a navaid said by its name")
   if ex then
-    check_eq(ex("Austrian one two three, at Wagram descend flight level eight zero"), "AT AUA123 WGM ALT FL80")
+    check_eq(ex("Austrian one two three, at Wagram descend flight level eight zero"), "AT AUA123 WGM DO ALT AUA123 FL80")
   end
 end
 
@@ -4483,12 +4482,12 @@ do
 end
 
 -- A clause opening "at WPT" before a climb, descent or speed change with a bare number ("at KOBRA desc
--- 4000", "at KOBRA reduce 210") is the AT constraint there, as the instruction alone reads the number
+-- 4000", "at KOBRA reduce 210") runs there (AT acid wp DO), the number read as the instruction alone reads it
 do
   local _, ex = scene({ "CRE SAS36 A320 55.6 12.6 090 7000 250", "DEFWPT KOBRA 55.8 13.4", "DEFWPT LUPUS 55.1 13.0",
     "ADDWPT SAS36 KOBRA" })
-  check_eq(ex("SAS36 at KOBRA desc 4000"), "AT SAS36 KOBRA ALT 4000")
-  check_eq(ex("SAS36 at KOBRA reduce to 210"), "AT SAS36 KOBRA SPD 210")
+  check_eq(ex("SAS36 at KOBRA desc 4000"), "AT SAS36 KOBRA DO ALT SAS36 4000")
+  check_eq(ex("SAS36 at KOBRA reduce to 210"), "AT SAS36 KOBRA DO SPD SAS36 210")
   asked(ex("SAS36 at LUPUS desc 4000"), "a waypoint off the route")
   asked(ex("SAS36 at KOBRA descend 40"), "a bare number under 1000")
 end
@@ -4798,13 +4797,13 @@ do
 end
 
 -- Cycle 30 (R64): a crossing said after a direct ("direct ALFA, cross it at FL150") is the AT constraint at
--- the waypoint flown to; "direct ALFA, then at ALFA climb ..." (the instruction in the next clause) is asked
--- about, never run at once
+-- the waypoint flown to; "direct ALFA, then at ALFA climb ..." (the instruction in the next clause) runs
+-- from the waypoint on (Cycle 37: AT acid wp DO), never at once
 do
   local _, ex = scene({ "DEFWPT RIVKA 52.3 4.8", "CRE KLM88 A320 52.0 4.0 090 FL250 280", "ADDWPT KLM88 RIVKA" })
   check_eq(ex("KLM88 go direct RIVKA, cross it at FL170"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT FL170")
   check_eq(ex("KLM88 direct RIVKA, cross at 9000"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA ALT 9000")
-  check(ex("KLM88 direct RIVKA, then at RIVKA descend FL120"):match("^ASK Should that happen at RIVKA") ~= nil, "then at")
+  check_eq(ex("KLM88 direct RIVKA, then at RIVKA descend FL120"), "DIRECT KLM88 RIVKA ; AT KLM88 RIVKA DO ALT KLM88 FL120")
 end
 
 -- Cycle 30 (R64): a simulation time typed h:mm:ss before a colon ("schedule at 00:15:00: ...") is the time of
@@ -5603,11 +5602,11 @@ do
 end
 
 -- Cycle 35 (R71): at a waypoint of the route, "reduce speed to 190" (a bare number after "speed to") is the
--- speed constraint there, as "reduce speed 190" is; a waypoint off the route is still asked
+-- speed to fly from there (AT acid wp DO), as "reduce speed 190" is; a waypoint off the route is still asked
 do
   local _, ex = scene({ "CRE ASH4 E75L 29.0 -81.0 200 9000 240", "DEFWPT TWIRL 28.8 -81.1", "DEFWPT FARFX 27.0 -80.0",
     "ADDWPT ASH4 TWIRL" })
-  check_eq(ex("ASH4 at TWIRL reduce speed to 190"), "AT ASH4 TWIRL SPD 190")
+  check_eq(ex("ASH4 at TWIRL reduce speed to 190"), "AT ASH4 TWIRL DO SPD ASH4 190")
   asked(ex("ASH4 at FARFX reduce speed to 190"), "off the route")
 end
 
@@ -6271,4 +6270,53 @@ do
     check_eq(ex("JZA77 stop following your waypoints"), "LNAV JZA77 OFF")
     asked(ex("JZA77 don't stop following your waypoints"), "a negated stop")
   end
+end
+
+-- Cycle 37 (atdo): an instruction said with its verb, to start at a waypoint of the route ("at FIX descend",
+-- "after FIX climb", "after passing FIX", "when X gets to FIX ..."), is BlueSky's AT acid wp DO with the
+-- full command; a value said there with no verb, or a crossing, stays the AT constraint; a waypoint off the
+-- route is asked about, naming it
+do
+  local s, ex = scene({ "CRE SAS31 A320 55.0 12.0 090 FL240 280", "DEFWPT OLMAK 55.0 12.6", "DEFWPT TUREN 55.0 13.2",
+    "DEFWPT VISBO 55.4 12.4", "ADDWPT SAS31 OLMAK", "ADDWPT SAS31 TUREN" })
+  check_eq(ex("SAS31 at OLMAK descend flight level nine zero"), "AT SAS31 OLMAK DO ALT SAS31 FL90")
+  check_eq(ex("SAS31, after TUREN climb to FL260"), "AT SAS31 TUREN DO ALT SAS31 FL260")
+  check_eq(ex("SAS31 after passing OLMAK reduce speed to 230 knots"), "AT SAS31 OLMAK DO SPD SAS31 230")
+  check_eq(ex("SAS31 when at TUREN descend FL200"), "AT SAS31 TUREN DO ALT SAS31 FL200")
+  check_eq(ex("when SAS31 gets to OLMAK slow it to 240"), "AT SAS31 OLMAK DO SPD SAS31 240")
+  check_eq(ex("once SAS31 passes TUREN, have it climb to flight level 300"), "AT SAS31 TUREN DO ALT SAS31 FL300")
+  -- the command checks and runs on the simulator: stored on the waypoint, run when it is passed
+  check(s:exec("AT SAS31 OLMAK DO ALT SAS31 FL90"), "AT DO runs")
+  -- no verb, or a crossing: the constraint at the waypoint
+  check_eq(ex("SAS31 at OLMAK FL150"), "AT SAS31 OLMAK ALT FL150")
+  check_eq(ex("SAS31 cross TUREN at FL180"), "AT SAS31 TUREN ALT FL180")
+  check_eq(ex("SAS31 at OLMAK speed 250"), "AT SAS31 OLMAK SPD 250")
+  -- off the route: asked, naming the waypoint
+  local off = ex("SAS31 at VISBO descend FL100")
+  asked(off, "a waypoint off the route")
+  check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  off = ex("when SAS31 passes VISBO descend FL100")
+  check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  -- "until FIX then ...": the value now, the instruction after "then" from the waypoint on
+  check_eq(ex("SAS31 maintain 260 knots until OLMAK then descend FL200"), "SPD SAS31 260 ; AT SAS31 OLMAK DO ALT SAS31 FL200")
+  check_eq(ex("SAS31 keep FL240 till TUREN then reduce 220"), "ALT SAS31 FL240 ; AT SAS31 TUREN DO SPD SAS31 220")
+  off = ex("SAS31 maintain 260 knots until VISBO then descend FL200")
+  check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  -- "direct FIX, then at FIX climb ...": the direct-to now, the next instruction from the waypoint on
+  check_eq(ex("SAS31 direct TUREN, then at TUREN climb FL280"), "DIRECT SAS31 TUREN ; AT SAS31 TUREN DO ALT SAS31 FL280")
+  -- taken back, or said "now": never tied to the waypoint
+  check(not ex("SAS31, after passing OLMAK descend... correction, descend now to FL150"):find("DO", 1, true),
+    "a corrected instruction at a waypoint")
+  -- a word of courtesy between the callsign and the waypoint (Greek too)
+  check_eq(ex("SAS31, parakaló, after TUREN climb FL260"), "AT SAS31 TUREN DO ALT SAS31 FL260")
+  check_eq(ex("SAS31, kiitos, at OLMAK descend FL100"), "AT SAS31 OLMAK DO ALT SAS31 FL100")
+  -- the condition of passing the waypoint said after the instruction's value; "at FIX" alone there is asked
+  check_eq(ex("SAS31 descend FL150 when passing TUREN"), "AT SAS31 TUREN DO ALT SAS31 FL150")
+  check_eq(ex("SAS31 reduce 230 once it reaches OLMAK."), "AT SAS31 OLMAK DO SPD SAS31 230")
+  local at_end = ex("SAS31 reduce 230 at OLMAK")
+  check(at_end:match("^ASK Should that happen at OLMAK%?") ~= nil, at_end)
+  off = ex("SAS31 descend FL150 when passing VISBO")
+  check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
+  -- another aircraft's instruction at the waypoint is asked about, never tied to it
+  asked(ex("CRE KLM9 B738 54.0 12.0 090 FL200 250 ; when SAS31 gets to OLMAK, KLM9 descend FL150"), "another aircraft")
 end

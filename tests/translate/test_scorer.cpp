@@ -137,6 +137,13 @@ TEST_CASE("conditionals compare the condition and the nested command") {
   CHECK_FALSE(same_command("ATDIST KL1 OKE 25 ALT KL1 FL80", "ATDIST KL1 OKE 20 ALT KL1 FL80"));
   CHECK_FALSE(same_command("ATDIST KL1 OKE 20 ALT KL1 FL90", "ATDIST KL1 OKE 20 ALT KL1 FL80"));
   CHECK_FALSE(same_command("ATDIST KL1 SPY 20 ALT KL1 FL80", "ATDIST KL1 OKE 20 ALT KL1 FL80"));
+  // AT acid wpt DO (or STACK) command: the waypoint, then the stored command
+  CHECK(same_command("AT KL1 OKE DO ALT KL1 FL80", "AT KL1 OKE DO ALT KL1 FL080"));
+  CHECK(same_command("KL1 AT OKE STACK KL1 ALT 8000", "AT KL1 OKE DO ALT KL1 FL080"));
+  CHECK_FALSE(same_command("AT KL1 OKE DO ALT KL1 FL90", "AT KL1 OKE DO ALT KL1 FL80"));
+  CHECK_FALSE(same_command("AT KL1 SPY DO ALT KL1 FL80", "AT KL1 OKE DO ALT KL1 FL80"));
+  CHECK_FALSE(same_command("AT KL1 OKE ALT FL80",
+                           "AT KL1 OKE DO ALT KL1 FL80"));  // a constraint is not a command
 }
 
 TEST_CASE("arguments left out between commas keep their places; a comma at a word's end only separates") {
