@@ -63,8 +63,8 @@ int cmd_serve(const ArgV& argv) {
   auto session = script::ServeSession::open(vm, scenario, args->get_or("--mode", ""));
   if (!session) return failure(session.status());
   command::Stack& stack = (*session)->stack();
+  if (!args->has("--paused")) stack.sim().op();  // OP sets DTMULT 1: the speed comes after
   stack.set_dtmult(mult);
-  if (!args->has("--paused")) stack.sim().op();
 
   std::unique_ptr<ScopeTeammate> teammate;
   if (args->has("--agent")) {

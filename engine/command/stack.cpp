@@ -434,7 +434,6 @@ void Stack::reset() {
   fired_.clear();
   user_wpts_.clear();
   ref_ = GeoPoint{};
-  dtmult_ = 1.0;
   noise_ = false;
   trails_ = Trails();
 }
@@ -498,7 +497,7 @@ std::string Stack::snapshot() const {
   b::put<double>(out, ref_.lat);
   b::put<double>(out, ref_.lon);
   b::put<uint64_t>(out, seed_);
-  b::put<double>(out, dtmult_);
+  b::put<double>(out, sim_.dtmult());
   b::put<uint8_t>(out, noise_ ? 1 : 0);
   b::put<uint8_t>(out, trails_.on ? 1 : 0);
   b::put<double>(out, trails_.dt);

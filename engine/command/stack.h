@@ -174,8 +174,8 @@ class Stack {
   void reset();
   uint64_t seed() const { return seed_; }
   void set_seed(uint64_t seed);
-  double dtmult() const { return dtmult_; }
-  void set_dtmult(double m) { dtmult_ = m; }
+  double dtmult() const { return sim_.dtmult(); }
+  void set_dtmult(double m) { sim_.set_dtmult(m); }
   bool noise() const { return noise_; }
   void set_noise(bool on) { noise_ = on; }
   // TRAIL: the radar display's aircraft trails (state only; squawk's
@@ -218,7 +218,6 @@ class Stack {
   std::map<std::string, GeoPoint> user_wpts_;
   GeoPoint ref_;  // the reference position [deg]
   uint64_t seed_ = 0;
-  double dtmult_ = 1.0;
   bool noise_ = false;
   Trails trails_;
   // Counts and logs a failure that belongs to no single command.

@@ -45,8 +45,7 @@ int64_t Simulation::advance(double wall_s, int64_t max_steps) {
   if (ff_) {
     while (k < max_steps) {
       if (ff_end_ && simt() + 0.5 * dt_ > *ff_end_) {
-        ff_ = false;
-        ff_end_.reset();
+        op();
         break;
       }
       step();

@@ -76,16 +76,22 @@ class Simulation {
   // Error unless 0 < dt <= 60 s and finite.
   Status set_dt(double dt);
   RunState run_state() const { return run_state_; }
-  void op();    // run (BlueSky OP)
-  void hold();  // pause (BlueSky HOLD)
+  // Run in real time (BlueSky OP): ends fast-time and sets dtmult() to 1.
+  void op();
+  void hold();  // pause (BlueSky HOLD); ends fast-time, dtmult() kept
   // Fast-time: with a duration [s] >= 0, until simt() + duration; without,
-  // until hold(). Also sets OP.
+  // until hold() or op(). Also sets the run state OP; dtmult() kept.
   Status fast_forward(std::optional<double> duration);
   bool fast() const { return ff_; }
   std::optional<double> ff_end() const { return ff_end_; }  // [s]
+  // DTMULT: the multiple of real time an interactive clock runs at in OP [-]
+  // (> 0; 1 after reset and op()). advance() does not read it.
+  double dtmult() const { return dtmult_; }
+  void set_dtmult(double m) { dtmult_ = m; }
   // Steps as the run state asks, at most max_steps: HOLD none; FF until the
-  // end time (FF then ends, OP stays); OP real-time, wall_s seconds of wall
-  // clock worth of steps (the fraction of a step is carried over).
+  // end time, which then does op() as BlueSky does (real time, dtmult() 1);
+  // OP real-time, wall_s seconds of wall clock worth of steps (the fraction
+  // of a step is carried over).
   // Returns the number of steps taken.
   int64_t advance(double wall_s, int64_t max_steps);
 
@@ -330,6 +336,7 @@ class Simulation {
   RunState run_state_ = RunState::kHold;
   bool ff_ = false;
   std::optional<double> ff_end_;  // [s]
+  double dtmult_ = 1.0;           // [-]
   double wall_carry_ = 0.0;       // [s] real time not yet stepped (not observable)
 };
 

@@ -91,7 +91,12 @@ Status Simulation::set_dt(double dt) {
   return Status::ok();
 }
 
-void Simulation::op() { run_state_ = RunState::kOp; }
+void Simulation::op() {
+  run_state_ = RunState::kOp;
+  ff_ = false;
+  ff_end_.reset();
+  dtmult_ = 1.0;
+}
 
 void Simulation::hold() {
   run_state_ = RunState::kHold;

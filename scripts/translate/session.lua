@@ -239,7 +239,8 @@ function Session:run(seconds)
   return self:advance(seconds, {})
 end
 
--- Fast-time with an end: run to it now, then the clock goes on as before FF.
+-- Fast-time with an end: run to it now; then a clock running before FF runs
+-- on at real time (OP: DTMULT 1, as BlueSky's FF end), a held one stays held.
 -- At most kMaxFfCpu of processor time per call: a longer FF stays in
 -- fast-time and goes on at the next call (the session's tick), so one
 -- "FF 1e9" cannot hold the simulation's thread for days.
@@ -253,8 +254,9 @@ function Session:finish_fast_forward(events, resume)
     return string.format("fast-forwarding: t = %.1f s -> %.1f s of %.1f s (goes on while the session runs; HOLD stops it)",
       t0, self.sim:time(), ff_end)
   end
-  self.sim:exec("HOLD")
-  if self.ff_resume == "op" then self.sim:exec("OP") end
+  -- OP ends fast-time at real time (DTMULT 1), as BlueSky's FF end does;
+  -- a clock held before FF stays held.
+  self.sim:exec(self.ff_resume == "op" and "OP" or "HOLD")
   self.ff_resume = nil
   return string.format("fast-forwarded %.0f s: t = %.1f s -> %.1f s", self.sim:time() - t0, t0, self.sim:time())
 end
@@ -262,12 +264,11 @@ end
 function Session:clock_text()
   local state, ff_end = self.sim:run_state()
   if state == "hold" then
-    return string.format("clock stopped (HOLD; OP runs it at %g x real time): time moves with :run and FF",
-      self.sim:dtmult())
+    return "clock stopped (HOLD; OP runs it in real time): time moves with :run and FF"
   end
   if state == "ff" then
     return ff_end and string.format("fast-time until t = %.0f s", ff_end)
-      or string.format("fast-time until HOLD (%g x real time)", M.kOpenFfRate)
+      or string.format("fast-time until HOLD or OP (%g x real time)", M.kOpenFfRate)
   end
   return string.format("clock running at %g x real time", self.sim:dtmult())
 end
@@ -276,9 +277,9 @@ function Session:set_clock(multiplier)
   if multiplier == nil then
     self.sim:exec("HOLD")
   else
+    self.sim:exec("OP")  -- OP sets DTMULT 1 (as BlueSky): the multiplier comes after it
     local ok, msg = self.sim:exec("DTMULT " .. multiplier)
     if not ok then return msg end
-    self.sim:exec("OP")
   end
   return self:clock_text()
 end

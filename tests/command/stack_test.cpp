@@ -321,6 +321,24 @@ TEST_CASE("CRECONFS with ASAS ON gives a conflict at the set geometry") {
   CHECK(s.sim().cr_settings().enabled);
 }
 
+TEST_CASE("OP ends fast-time and sets DTMULT 1; DTMULT after OP keeps its rate; RESET sets 1") {
+  Stack s(1);
+  REQUIRE(s.exec("FF"));
+  REQUIRE(s.exec("OP"));
+  CHECK(!s.sim().fast());
+  CHECK(s.sim().run_state() == sim::RunState::kOp);
+  REQUIRE(s.exec("DTMULT 4"));
+  REQUIRE(s.exec("OP"));
+  CHECK(s.dtmult() == 1.0);
+  REQUIRE(s.exec("DTMULT 4"));
+  CHECK(s.dtmult() == 4.0);
+  CHECK(s.sim().run_state() == sim::RunState::kOp);
+  REQUIRE(s.exec("HOLD"));
+  CHECK(s.dtmult() == 4.0);
+  REQUIRE(s.exec("RESET"));
+  CHECK(s.dtmult() == 1.0);
+}
+
 TEST_CASE("copies are independent (the translator validates on a scratch copy)") {
   Stack s = with_kl204();
   Stack scratch = s;

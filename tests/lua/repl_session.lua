@@ -56,6 +56,32 @@ do
   check_eq(s.sim:time(), 667)
 end
 
+-- OP is BlueSky's: it ends fast-time and runs at real time (DTMULT 1);
+-- :clock X runs at X all the same; an FF with a time ends at real time.
+do
+  local s = session.new({ mode = "offline" })
+  local r = s:command("!FF")
+  check_eq(s:state().clock.state, "ff")
+  r = s:command("!OP")
+  check_eq(s:state().clock.state, "op")
+  check(find(r.clock, "clock running at 1 x real time"), r.clock)
+  local t0 = s.sim:time()
+  s:tick(2.0)
+  check_eq(s.sim:time(), t0 + 2)
+  s:command("!DTMULT 4")
+  s:command("!OP")
+  check_eq(s.sim:dtmult(), 1)
+  check(find(s:set_clock(4), "4 x real time"))
+  check_eq(s.sim:dtmult(), 4)
+  t0 = s.sim:time()
+  s:tick(1.0)
+  check_eq(s.sim:time(), t0 + 4)
+  r = s:command("!FF 60")
+  check(find(r.clock, "fast-forwarded 60 s"), r.clock)
+  check_eq(s:state().clock.state, "op")
+  check_eq(s.sim:dtmult(), 1)
+end
+
 -- Head-on at FL300 with ASAS ON: the conflict is reported when it starts and
 -- ends, and :state lists it with tLOS, tCPA and dCPA.
 do
@@ -196,6 +222,7 @@ do
   check_eq(state, "ff")
   check_eq(ff_end, 30)
   check(sim:exec("OP"))
+  check_eq(sim:run_state(), "op")
   check(sim:exec("DTMULT 3"))
   check_eq(sim:dtmult(), 3)
   local t = sim:tally()

@@ -69,6 +69,27 @@ TEST_CASE("HOLD, OP and FF with and without end time") {
   CHECK(!sim.fast_forward(-1.0).is_ok());
 }
 
+TEST_CASE("OP ends fast-time and sets DTMULT 1, as BlueSky; so does the end of an FF with a time") {
+  Simulation sim;
+  REQUIRE(sim.fast_forward(std::nullopt).is_ok());
+  sim.set_dtmult(4.0);
+  sim.op();
+  CHECK(!sim.fast());
+  CHECK(!sim.ff_end());
+  CHECK(sim.run_state() == RunState::kOp);
+  CHECK(sim.dtmult() == 1.0);
+  CHECK(sim.advance(0.1, 1000) == 2);  // real time: 0.1 s of wall time -> 2 steps of 0.05 s
+  sim.set_dtmult(4.0);
+  sim.hold();
+  CHECK(sim.dtmult() == 4.0);  // HOLD keeps the multiplier
+  REQUIRE(sim.fast_forward(10.0).is_ok());
+  CHECK(sim.dtmult() == 4.0);  // FF keeps it while it runs
+  sim.advance(0.0, 1000000);
+  CHECK(!sim.fast());
+  CHECK(sim.run_state() == RunState::kOp);  // a held clock runs on after FF, as BlueSky
+  CHECK(sim.dtmult() == 1.0);
+}
+
 TEST_CASE("create validates and names the culprit") {
   Simulation sim;
   REQUIRE(sim.create("kl204", "b744", 52.0, 4.0, 370.0, 3000.0, 0.8).is_ok());
