@@ -2657,13 +2657,24 @@ return function(H, f, compass)
   function m:bare(_, spec) self:emit(spec.cmd) end
   -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
   function m:resume(s)
-    -- "back to real time" with no word that starts the clock: the clock started again (OP) or
-    -- its rate set back to 1 (DTMULT 1)? Writers mean either; asked. "real time speed" is the rate
-    if self:word(s.trig, "real") and self:word(s.trig + 2, "speed") then return self:emit("DTMULT 1") end
-    -- ("dtmult 1 back to realtime": said after the rate set back to 1, it explains that rate)
+    -- "back to real time" with no word that starts the clock, and "real time speed", read from
+    -- the clock's state (world.run_state, or an FF said before in the request): in fast-time OP
+    -- (only OP ends it); otherwise DTMULT 1, the rate, which starts nothing (a held clock stays
+    -- held). A clock state not known, or another rate said before it, is asked ("real time speed"
+    -- is the rate all the same).
     local back = self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
+    -- ("dtmult 1 back to realtime": said after the rate set back to 1, it explains that rate)
     if back and self.out[#self.out] == "DTMULT 1" then return self:explain(s.b, s.e) end
-    if back and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
+    local speed = self:word(s.trig, "real") and self:word(s.trig + 2, "speed")
+    if speed or back and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
+      local state = self.world.run_state
+      for _, c in ipairs(self.out) do
+        local cmd = c:match("^(%u+)")
+        if cmd == "FF" then state = "ff" elseif cmd == "OP" or cmd == "HOLD" then state = cmd:lower() end
+        if cmd == "DTMULT" then state = nil end  -- another rate just said ("dtmult 4 back to real time")
+      end
+      if state == "ff" then return self:emit("OP") end
+      if speed or state == "op" or state == "hold" then return self:emit("DTMULT 1") end
       return self:need("Should the simulation start running (OP), or run at real-time rate again (DTMULT 1)?")
     end
     self:emit("OP")

@@ -2775,12 +2775,12 @@ do
   check_eq(ex("could you draw trails behind the aircraft"), "TRAIL ON")
 end
 
--- "back to real time" with no word that starts the clock asks: started (OP) or its rate back to 1 (DTMULT 1)?
+-- "back to real time" with no word that starts the clock, on a held clock: its rate back to 1 (DTMULT 1);
 -- "real time speed" is the rate; "run it in real time again" starts it
 do
   local _, ex = scene({})
-  check(ex("back to real time"):match("^ASK .*%(OP%).*%(DTMULT 1%)") ~= nil, ex("back to real time"))
-  check(ex("ok go back to real time pls"):match("^ASK ") ~= nil, ex("ok go back to real time pls"))
+  check_eq(ex("back to real time"), "DTMULT 1")
+  check_eq(ex("ok go back to real time pls"), "DTMULT 1")
   check_eq(ex("back to real time speed"), "DTMULT 1")
   check_eq(ex("run it in real time again"), "OP")
   check_eq(ex("ok run"), "OP")
@@ -4618,7 +4618,7 @@ do
   asked(ex("klm77xyz climb fl190"), ex("klm77xyz climb fl190"))
 end
 
--- "back to real time" said after the rate typed as 1 explains it (R61); alone it is still asked (OP or DTMULT 1)
+-- "back to real time" said after the rate typed as 1 explains it (R61); after another rate it is still asked
 do
   local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
   check_eq(ex("dtmult 1, back to real time"), "DTMULT 1")
@@ -6319,4 +6319,26 @@ do
   check(off:find("VISBO is not on SAS31's route", 1, true) ~= nil, off)
   -- another aircraft's instruction at the waypoint is asked about, never tied to it
   asked(ex("CRE KLM9 B738 54.0 12.0 090 FL200 250 ; when SAS31 gets to OLMAK, KLM9 descend FL150"), "another aircraft")
+end
+
+-- Cycle 38 (clock): "back to real time" is read from the clock's state. In fast-time OP (only OP ends
+-- it, at DTMULT 1); running or held, DTMULT 1 (the rate: a held clock stays held); an FF said before it
+-- in the same request is fast-time. Words that start the clock still start it (OP).
+do
+  local _, fast = scene({ "CRE PTR61 A320 48 11 270 FL210 260", "FF" })
+  check_eq(fast("right, go back to real time now"), "OP")
+  check_eq(fast("back to realtime please"), "OP")
+  check_eq(fast("real time speed again"), "OP")
+  local _, held = scene({ "CRE PTR61 A320 48 11 270 FL210 260" })
+  check_eq(held("right, go back to real time now"), "DTMULT 1")
+  check_eq(held("skip ahead ten minutes, then back to real time"), "FF 600 ; OP")
+  check_eq(held("let it run, back to real time"), "OP")
+  local quick, at4 = scene({ "CRE PTR61 A320 48 11 270 FL210 260", "OP", "DTMULT 4" })
+  check_eq(at4("ok, back to real time"), "DTMULT 1")
+  check_eq(quick:dtmult(), 4)  -- translating runs nothing
+  -- a clock state not known (a world without one) is asked
+  local grammar = require("translate.grammar")
+  local r = grammar.translate("back to real time", { aircraft = {}, waypoints = {} })
+  check(r.ask ~= nil and r.ask:find("(OP)", 1, true) ~= nil and r.ask:find("(DTMULT 1)", 1, true) ~= nil,
+    tostring(r.ask))
 end
