@@ -214,7 +214,8 @@ def test_teammate(squawk):
         # it cannot expire while being decided); a few tries on a loaded machine.
         b, last = None, a["id"]
         for _ in range(5):
-            command(addr, "!OP")
+            command(addr, "!OP")  # real time (DTMULT 1, as BlueSky's OP): the speed again after it
+            command(addr, "!DTMULT 50")
             deadline = time.time() + 20
             cand = None
             while time.time() < deadline and not cand:
@@ -239,6 +240,7 @@ def test_teammate(squawk):
 
         request(addr, "/api/auto", {"on": True})
         command(addr, "!OP")
+        command(addr, "!DTMULT 50")
         deadline = time.time() + 20
         auto = []
         while time.time() < deadline and not auto:

@@ -93,7 +93,8 @@ def check_labels(browser, squawk):
             assert text.startswith(ids.replace(" ", " – ")), text
         print(f"ok   t = 0, clock held: {len(rows)} predicted conflicts listed, sorted by tLOS "
               f"({shown[0]:.0f} s .. {shown[-1]:.0f} s), coloured by urgency")
-        post(addr, "/api/command", {"text": "!OP"})
+        post(addr, "/api/command", {"text": "!OP"})  # real time (DTMULT 1, as BlueSky's OP); then x10
+        post(addr, "/api/command", {"text": "!DTMULT 10"})
         browser.wait_for("Scope.labels().filter(l => l.kind === 'conflict').length >= 6", what="six conflict labels")
         for _ in range(5):  # several frames of a moving scene
             labels, symbols = browser.eval("[Scope.labels(), Scope.symbols()]")
@@ -120,6 +121,7 @@ def check_labels(browser, squawk):
         off = browser.wait_for("Scope.offset('KLM88A')", what="a dragged offset")
         assert abs(off[0] - (dx0 + 60)) < 2 and abs(off[1] - (dy0 + 45)) < 2, (off, dx0, dy0)
         post(addr, "/api/command", {"text": "!OP"})
+        post(addr, "/api/command", {"text": "!DTMULT 10"})
         time.sleep(0.5)  # the aircraft moves on; the block keeps its offset from it
         b = browser.eval("Scope.labels().find(l => l.key === 'KLM88A')")
         assert abs(b["x"] - b["ax"] - off[0]) < 0.01 and abs(b["y"] - b["ay"] - off[1]) < 0.01, (b, off)
