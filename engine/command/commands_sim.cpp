@@ -139,17 +139,29 @@ Result<std::string> near(Call& c) {
 }  // namespace
 
 void add_sim_commands(std::vector<CommandDecl>& out) {
-  out.push_back({"OP", {"CONTINUE", "RUN", "START"}, "", "OP",
-                 "Sets the simulation running in real time: ends fast-time and sets DTMULT to 1, as BlueSky. Headless "
-                 "runs advance regardless.",
-                 {"OP"}, op, {}});
+  out.push_back(
+      {"OP",
+       {"CONTINUE", "RUN", "START"},
+       "",
+       "OP",
+       "Sets the simulation running in real time: ends fast-time and sets DTMULT to 1, as "
+       "BlueSky. Headless runs advance regardless.",
+       {"OP"},
+       op,
+       {}});
   out.push_back({"HOLD", {"PAUSE"}, "", "HOLD",
                  "Pauses the simulation clock of an interactive session. Headless runs advance regardless.",
                  {"HOLD"}, hold, {}});
-  out.push_back({"FF", {"FWD"}, "[time]", "FF [seconds]",
-                 "Runs in fast-time, for the given time (SS, MM:SS or HH:MM:SS) or until HOLD or OP; at the end of "
-                 "the time the simulation runs on in real time (OP: DTMULT 1), as BlueSky.",
-                 {"FF", "FF 0:05:00"}, ff, {}});
+  out.push_back(
+      {"FF",
+       {"FWD"},
+       "[time]",
+       "FF [seconds]",
+       "Runs in fast-time, for the given time (SS, MM:SS or HH:MM:SS) or until HOLD or OP; "
+       "when the time is up it runs on in real time (OP: DTMULT 1), as BlueSky.",
+       {"FF", "FF 0:05:00"},
+       ff,
+       {}});
   out.push_back({"DT", {}, "[float/txt,float]", "DT [dt] or DT ASAS,dt",
                  "Sets the simulation time step in seconds (default 0.05), or the interval of conflict "
                  "detection with DT ASAS; without arguments shows both.",
