@@ -581,6 +581,15 @@ return function(H, f, wrap, compass)
       -- a compass word of a callsign ("Southwest 963") or a place ("northeast of") is no heading
       if self.t[i].kind == "word" and compass(self.t[i].text) and not self.u:used(i) and not self:word(i + 1, "of") then
         named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "", i + 2 < s.e and self.t[i + 2].text or "")
+        -- a compass point leaned toward ("more to the north", "a bit further east") names no heading
+        local v = named and self:find_word(math.max(s.b, i - 3), i, "@vague_direction") or i
+        if v < i or named and self:word_in(i + 1, math.min(s.e, i + 3), "@vague_direction") then
+          v = math.min(v, i)
+          if self:word(v - 1, "a") then v = v - 1 end
+          local last = i
+          while last + 1 < math.min(s.e, i + 3) and self:word(last + 1, "a @vague_direction") do last = last + 1 end
+          return self:need(string.format("What heading should %s fly? '%s' names no heading.", ids[1], self:raw(v, last + 1)))
+        end
       end
     end
     local id = ids[1]

@@ -6320,3 +6320,18 @@ do
   -- another aircraft's instruction at the waypoint is asked about, never tied to it
   asked(ex("CRE KLM9 B738 54.0 12.0 090 FL200 250 ; when SAS31 gets to OLMAK, KLM9 descend FL150"), "another aircraft")
 end
+
+-- Cycle 38 (fix78): a compass point leaned toward ("more to the north", "a bit further east", "north a
+-- little", "northwards") names no heading: asked; a compass point said plainly ("fly west") is its heading
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270" })
+  local q = ex("turn NLX40 somewhat more to the west")
+  check(q:find("'more to the west' names no heading", 1, true) ~= nil, q)
+  asked(ex("NLX40, turn a little further south"), "a little further south")
+  asked(ex("NLX40 come north slightly"), "north slightly")
+  asked(ex("could NLX40 go a touch farther east"), "farther east")
+  asked(ex("make NLX40 head southwards"), "southwards")
+  asked(ex("create NLX41, an A320 at SPY, FL90, 230 kt, flying westwards"), "westwards in a creation")
+  check_eq(ex("NLX40 fly west"), "HDG NLX40 270")
+  check_eq(ex("NLX40 turn left to the south"), "HDG NLX40 180 LEFT")
+end
