@@ -6335,3 +6335,20 @@ do
   check_eq(ex("NLX40 fly west"), "HDG NLX40 270")
   check_eq(ex("NLX40 turn left to the south"), "HDG NLX40 180 LEFT")
 end
+
+-- Cycle 38 (fix78): numbered steps ("1. ... 2. ...", "Step 1: ... Step 2: ...", "1) ...", "(1) ...") and an
+-- answer's label ("Q2b answer:") are structure: each step an instruction for the aircraft it names or the one
+-- before; a number that breaks the count from 1 is no marker
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250" })
+  check_eq(ex("1. climb NLX40 to FL260 2. speed 250 knots 3. turn right heading 240"),
+    "ALT NLX40 FL260 ; SPD NLX40 250 ; HDG NLX40 240 RIGHT")
+  check_eq(ex("Step 1: EWG9 heading 045. Step 2: descend FL120."), "HDG EWG9 45 ; ALT EWG9 FL120")
+  check_eq(ex("1) EWG9 speed 220 kt 2) NLX40 descend to FL200"), "SPD EWG9 220 ; ALT NLX40 FL200")
+  check_eq(ex("(1) NLX40 climb FL300 (2) EWG9 left heading 330"), "ALT NLX40 FL300 ; HDG EWG9 330 LEFT")
+  check_eq(ex("Q4b answer: NLX40 reduces to 240 knots"), "SPD NLX40 240")
+  check_eq(ex("Question 5: EWG9 climb to FL200"), "ALT EWG9 FL200")
+  -- a count that does not start at 1, or skips, leaves the number in the sentence: asked
+  asked(ex("NLX40 turn left 2. climb"), "a number after a turn")
+  asked(ex("1. NLX40 climb to FL300 3. turn left"), "a count that skips")
+end
