@@ -549,6 +549,12 @@ return function(intent, rule, words)
   rule { "tick update", "dt", next = "rate" }
   rule { "tickrate", "dt" }
   rule { "rate", "vs", not_prev = { 1, "vertical" } }
+  -- "bank left to heading 200", "bank to heading 045": a turn to the heading said (the bank is how), no bank limit
+  rule { "bank banking", "hdg", when = function(g, i)
+    local k = g:word(i + 1, "@left @right") and i + 2 or i + 1
+    if g:word(k, "to onto") then k = k + 1 end
+    return g:word(k, "heading hdg")
+  end }
   rule { "bank banking", "bank" }
 
   -- waypoints, creation and deletion
@@ -1245,6 +1251,11 @@ return function(intent, rule, words)
     return nouns > 0 and g:word(k, "of for") and g:has_ref(k + 1, k + 2, "aircraft")
   end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
+  -- "show me the data of KLM12", "display KLM12's flight data": an aircraft's data shown is its state (POS)
+  rule { "data", "pos", prev = { 5, "show display see give" }, when = function(g, i)
+    return g:word(i + 1, "of for") and g:has_ref(i + 2, i + 3, "aircraft")
+      or g:has_ref(g:word(i - 1, "flight") and i - 2 or i - 1, i, "aircraft")
+  end }
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", when = shown_after }
