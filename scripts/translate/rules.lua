@@ -1743,6 +1743,14 @@ return function(intent, rule, words)
   -- navigation after passing the CPA": the noun naming what an aircraft's instruction said in the same request
   -- is for (a manoeuvre after it, or a heading closed by ":"), no setting of its own
   local AIRCRAFT_INTENTS = { alt = true, hdg = true, spd = true, vs = true, resnav = true, lnav = true, direct = true }
+  -- an aircraft's instruction (level, heading, speed) said somewhere in the request but at word i
+  local function instructed(g, i)
+    for k = 1, #g.t do
+      local intent = k ~= i and g:intent_at(k)
+      if intent == "alt" or intent == "hdg" or intent == "spd" or intent == "vs" then return true end
+    end
+    return false
+  end
   rule { "resolution", false, when = function(g, i)
     local t = g.t[i + 1]
     if not (g:word(i + 1, "manoeuvre maneuver manoeuvres maneuvers")
@@ -1764,6 +1772,11 @@ return function(intent, rule, words)
   -- said straight before it, no setting of its own
   rule { "resolution resolutions resolving reso", false, prev = { 1, "for after following from of" },
          when = function(g, i) return g:word_in(math.max(1, i - 4), i, "cpa") end }
+  -- "resolve the conflict by turning DLH4AB right to heading 300", "turn KLM12 left 20 degrees to solve the
+  -- conflict": the conflict an aircraft's instruction in the request is for (a purpose), no method to set
+  rule { "resolve solve resolving solving", false, next = "the this that a", when = function(g, i)
+    return g:word(i + 2, "conflict conflicts") and instructed(g, i)
+  end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
@@ -1778,6 +1791,12 @@ return function(intent, rule, words)
   end }
   -- ("3 mile separation horizontally", "a 1000 ft separation"): a distance or height said just before it,
   -- no aircraft named (one kept apart from another is an instruction squawk does not read)
+  -- "descend to FL280 to get vertical separation", "climb FL300 for separation from TRA345": the purpose of an
+  -- aircraft's instruction in the request, no value of the protected zone said with it
+  rule { "separation", false, prev = { 3, "get gain ensure provide keep maintain achieve establish for" },
+         when = function(g, i)
+    return #g:quantities(i + 1, math.min(#g.t + 1, i + 4)) == 0 and instructed(g, i)
+  end }
   rule { "separation", "zone", prev = { 1, "nm mile miles ft foot feet" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
