@@ -549,9 +549,12 @@ return function(intent, rule, words)
   rule { "tick update", "dt", next = "rate" }
   rule { "tickrate", "dt" }
   rule { "rate", "vs", not_prev = { 1, "vertical" } }
-  -- "bank left to heading 200", "bank to heading 045": a turn to the heading said (the bank is how), no bank limit
+  -- "bank left to heading 200", "bank KLM12 to heading 045": a turn to the heading said (the bank is how), no
+  -- bank limit
   rule { "bank banking", "hdg", when = function(g, i)
-    local k = g:word(i + 1, "@left @right") and i + 2 or i + 1
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
+    local k = r and r.e or i + 1
+    if g:word(k, "@left @right") then k = k + 1 end
     if g:word(k, "to onto") then k = k + 1 end
     return g:word(k, "heading hdg")
   end }
@@ -1267,6 +1270,16 @@ return function(intent, rule, words)
     if g.t[k] and g.t[k].kind == "punct" then k = k + 1 end
     local r = g:refs_in(k, math.min(#g.t + 1, k + 2), "aircraft")[1]
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
+  end }
+  -- "place a Boeing 747 with callsign VIR3 at DVR ...", "place an A320 called EZY9 ...": a type, then a callsign
+  -- no aircraft has, is created
+  rule { "place", "create", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 9)
+    if not g:has_ref(i + 1, math.min(#g.t + 1, i + 5), "type") then return false end
+    for _, r in ipairs(g:refs_in(i + 1, e, "aircraft")) do
+      if not r.exists then return true end
+    end
+    return false
   end }
   rule { "move mv reposition teleport shift place relocate tp teleported", "move" }
   -- "warp KLM58 to GAME2": an aircraft warped to a place ("time warp" is none)

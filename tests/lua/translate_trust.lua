@@ -6352,3 +6352,24 @@ do
   asked(ex("NLX40 turn left 2. climb"), "a number after a turn")
   asked(ex("1. NLX40 climb to FL300 3. turn left"), "a count that skips")
 end
+
+-- Cycle 38 (fix78): textbook words. "bank (left) to heading N" is a turn ("bank angle 25" stays BANK); an
+-- aircraft's data shown is POS; a conflict resolved or separation gained by an aircraft's instruction is its
+-- purpose (no RESO, no ZONEDH); "place" a type with a new callsign creates it
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250" })
+  check_eq(ex("NLX40, bank right onto heading 250"), "HDG NLX40 250 RIGHT")
+  check_eq(ex("bank EWG9 to heading 100"), "HDG EWG9 100")
+  check_eq(ex("NLX40 bank angle 20 degrees"), "BANK NLX40 20")
+  check_eq(ex("display the data for EWG9"), "POS EWG9")
+  check_eq(ex("can you show me NLX40's flight data"), "POS NLX40")
+  check_eq(ex("solve the conflict by turning EWG9 left to heading 320"), "HDG EWG9 320 LEFT")
+  check_eq(ex("NLX40 climb FL260 to resolve this conflict"), "ALT NLX40 FL260")
+  check_eq(ex("EWG9 descend to FL160 to ensure vertical separation"), "ALT EWG9 FL160")
+  check_eq(ex("place an Airbus A321 with callsign DLH7Q at 52.5 4.5, heading 180, FL150, 260 knots"),
+    "CRE DLH7Q A321 52.5 4.5 180 FL150 260")
+  check_eq(ex("place NLX40 at 52.0 4.0"), "MOVE NLX40 52 4")
+  -- with no instruction for an aircraft, the setting is still asked or set
+  asked(ex("resolve the conflict"), "a resolution with no method")
+  check_eq(ex("set vertical separation to 1000 ft"), "ZONEDH 1000")
+end
