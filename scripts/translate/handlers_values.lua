@@ -379,7 +379,11 @@ return function(H, f, wrap, compass)
       -- (a change of 4000 ft or more is a cleared altitude: nobody clears a 4000 ft step by its size; a
       -- descent from below FL120, in a terminal area, is to the approach altitude said in feet)
       local approach = dir < 0 and cur < 12000
-      if by_fits and to_fits and ft < 4000 and not approach then
+      -- (from FL200 up, a descent straight to below 4000 ft is no clearance anyone gives: the step, one aircraft)
+      local en_route = dir < 0 and cur >= 20000 and #ids == 1
+      if by_fits and to_fits and ft < 4000 and not approach and en_route then
+        relative = true
+      elseif by_fits and to_fits and ft < 4000 and not approach then
         return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
       end
     end

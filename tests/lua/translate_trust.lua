@@ -6373,3 +6373,13 @@ do
   asked(ex("resolve the conflict"), "a resolution with no method")
   check_eq(ex("set vertical separation to 1000 ft"), "ZONEDH 1000")
 end
+
+-- Cycle 38 (fix78): "descend 2000 feet" typed after the verb from FL200 up is the step (nobody clears an
+-- aircraft in the flight levels straight to below 4000 ft); lower down, or for several aircraft, asked
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL310 270", "CRE EWG9 A320 52.1 4.1 020 FL150 250" })
+  check_eq(ex("NLX40 descend 3000 ft"), "ALT NLX40 28000")
+  asked(ex("EWG9 descend 3000 ft"), "to or by from FL150")
+  asked(ex("NLX40 and EWG9 descend 2000 feet"), "to or by for two aircraft")
+  check_eq(ex("NLX40 descend to 3000 ft"), "ALT NLX40 3000")
+end
