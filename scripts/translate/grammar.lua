@@ -5087,12 +5087,15 @@ local DESCRIBED_AFTER = { there = true, here = true, already = true, still = tru
 -- A homework answer's label opening the text ("Q3a answer:", "Question 2:", "Answer:"): no instruction
 local ANSWER_LABELS = { "^%s*[Qq]%d%d?%a?%)?%s*[Aa]nswer%s*[:.%-]%s*", "^%s*[Qq]uestion%s*%d%d?%a?%)?%s*[:.%-]%s*",
   "^%s*[Aa]nswer%s*[:.%-]%s+", "^%s*[Qq]%d%d?%a?[:)]%s+" }
--- A step's marker ("Step 1:", "step 2", "1.", "2)", "(3)"), its number captured; a letter follows it
-local STEP_MARKERS = { "^[Ss]tep%s*(%d%d?)%s*[:.)%-]?%s+", "^(%d%d?)[.)]%s+", "^%((%d%d?)%)%s+" }
+-- A step's marker ("Step 1:", "step two", "1.", "2)", "3:", "4 -", "(5)"), its number captured; a letter
+-- follows it
+local STEP_MARKERS = { "^[Ss]tep%s*(%w+)%s*[:.)%-]?%s+", "^(%d%d?)[.):]%s+", "^(%d%d?)%s+%-%s+", "^%((%d%d?)%)%s+" }
+local STEP_WORDS = { one = 1, two = 2, three = 3, four = 4, five = 5, six = 6, seven = 7, eight = 8, nine = 9 }
 local function step_marker(text, at)
   for _, p in ipairs(STEP_MARKERS) do
     local _, e, n = text:find(p, at)
-    if e and text:find("^%a", e + 1) then return tonumber(n), e end
+    n = n and (tonumber(n) or STEP_WORDS[n:lower()])
+    if n and text:find("^%a", e + 1) then return n, e end
   end
 end
 -- "1. descend TRA345 to FL150 2. reduce speed to 240 knots", "Step 1: ... Step 2: ...", "1) ... 2) ...":
@@ -5121,6 +5124,8 @@ local function numbered_steps(text)
     end
     at = b + 1
   end
+  -- (one step alone marked with no punctuation, "step 1 second", is no list: the words stay)
+  if #parts == 0 and not text:sub(first, e):find("[:.)%-]") then return text end
   parts[#parts + 1] = text:sub(from)
   return table.concat(parts, ". ")
 end

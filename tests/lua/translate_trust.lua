@@ -6348,6 +6348,11 @@ do
   check_eq(ex("(1) NLX40 climb FL300 (2) EWG9 left heading 330"), "ALT NLX40 FL300 ; HDG EWG9 330 LEFT")
   check_eq(ex("Q4b answer: NLX40 reduces to 240 knots"), "SPD NLX40 240")
   check_eq(ex("Question 5: EWG9 climb to FL200"), "ALT EWG9 FL200")
+  check_eq(ex("step one: NLX40 speed 240. step two: EWG9 climb FL220"), "SPD NLX40 240 ; ALT EWG9 FL220")
+  check_eq(ex("1 - EWG9 turn left heading 300 2 - NLX40 descend FL180"), "HDG EWG9 300 LEFT ; ALT NLX40 FL180")
+  check_eq(ex("1: NLX40 climb FL250 2: speed 260 knots"), "ALT NLX40 FL250 ; SPD NLX40 260")
+  -- one step marked with no punctuation is no list ("step 1 second": the clock stepped on)
+  check_eq(ex("step 1 second"), "FF 1")
   -- a count that does not start at 1, or skips, leaves the number in the sentence: asked
   asked(ex("NLX40 turn left 2. climb"), "a number after a turn")
   asked(ex("1. NLX40 climb to FL300 3. turn left"), "a count that skips")
