@@ -5084,11 +5084,57 @@ local function typed_places(text, world)
 end
 
 local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true }
+-- A homework answer's label opening the text ("Q3a answer:", "Question 2:", "Answer:"): no instruction
+local ANSWER_LABELS = { "^%s*[Qq]%d%d?%a?%)?%s*[Aa]nswer%s*[:.%-]%s*", "^%s*[Qq]uestion%s*%d%d?%a?%)?%s*[:.%-]%s*",
+  "^%s*[Aa]nswer%s*[:.%-]%s+", "^%s*[Qq]%d%d?%a?[:)]%s+" }
+-- A step's marker ("Step 1:", "step two", "1.", "2)", "3:", "4 -", "(5)"), its number captured; a letter
+-- follows it
+local STEP_MARKERS = { "^[Ss]tep%s*(%w+)%s*[:.)%-]?%s+", "^(%d%d?)[.):]%s+", "^(%d%d?)%s+%-%s+", "^%((%d%d?)%)%s+" }
+local STEP_WORDS = { one = 1, two = 2, three = 3, four = 4, five = 5, six = 6, seven = 7, eight = 8, nine = 9 }
+local function step_marker(text, at)
+  for _, p in ipairs(STEP_MARKERS) do
+    local _, e, n = text:find(p, at)
+    n = n and (tonumber(n) or STEP_WORDS[n:lower()])
+    if n and text:find("^%a", e + 1) then return n, e end
+  end
+end
+-- "1. descend TRA345 to FL150 2. reduce speed to 240 knots", "Step 1: ... Step 2: ...", "1) ... 2) ...":
+-- numbered steps are structure, each step a sentence of its own. The markers count from 1, in order, the
+-- first opening the text (after an answer's label); a number that breaks the count is a value and stays.
+local function numbered_steps(text)
+  for _, p in ipairs(ANSWER_LABELS) do
+    local _, e = text:find(p)
+    if e and text:find("^%a", e + 1) then
+      text = text:sub(e + 1)
+      break
+    end
+  end
+  local first = text:find("%S")
+  local n, e = step_marker(text, first or 1)
+  if n ~= 1 then return text end
+  local parts, from, want = {}, e + 1, 2
+  local at = from
+  while true do
+    local b = text:find("[%s,;]%S", at)
+    if not b then break end
+    local m, me = step_marker(text, b + 1)
+    if m == want then
+      parts[#parts + 1] = (text:sub(from, b):gsub("[%s%.,;]+$", ""))
+      from, want = me + 1, want + 1
+    end
+    at = b + 1
+  end
+  -- (one step alone marked with no punctuation, "step 1 second", is no list: the words stay)
+  if #parts == 0 and not text:sub(first, e):find("[:.)%-]") then return text end
+  parts[#parts + 1] = text:sub(from)
+  return table.concat(parts, ". ")
+end
 function M.translate(text, world)
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
   text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
+  text = numbered_steps(text)
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
   text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between

@@ -267,12 +267,12 @@ return function(H, f, compass)
       end
     end
     -- "westbound", "on a northerly heading", "flying south": a compass point as the heading (not "10 nm
-    -- north of ...", a position); with a heading said, one within 90 degrees of it describes it ("an
-    -- eastbound, ... heading 080")
+    -- north of ...", a position; not "northwards", a way to lean that names no heading); with a heading
+    -- said, one within 90 degrees of it describes it ("an eastbound, ... heading 080")
     for i = s.b, s.e - 1 do
       local t = self.t[i]
       local point = t.kind == "word" and not self:word(i + 1, "of")
-        and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$") or t.text:match("^(%a+)wards?$")
+        and (t.text:match("^(%a+)bound$") or t.text:match("^(%a+)erly$")
           or (self:word(i - 1, "@compass_verbs") and t.text))
       local c = point and L.compass[point]
       if c and (not hdg or math.abs((c - hdg + 180) % 360 - 180) < 90) then

@@ -379,7 +379,11 @@ return function(H, f, wrap, compass)
       -- (a change of 4000 ft or more is a cleared altitude: nobody clears a 4000 ft step by its size; a
       -- descent from below FL120, in a terminal area, is to the approach altitude said in feet)
       local approach = dir < 0 and cur < 12000
-      if by_fits and to_fits and ft < 4000 and not approach then
+      -- (from FL200 up, a descent straight to below 4000 ft is no clearance anyone gives: the step, one aircraft)
+      local en_route = dir < 0 and cur >= 20000 and #ids == 1
+      if by_fits and to_fits and ft < 4000 and not approach and en_route then
+        relative = true
+      elseif by_fits and to_fits and ft < 4000 and not approach then
         return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
       end
     end
@@ -581,6 +585,15 @@ return function(H, f, wrap, compass)
       -- a compass word of a callsign ("Southwest 963") or a place ("northeast of") is no heading
       if self.t[i].kind == "word" and compass(self.t[i].text) and not self.u:used(i) and not self:word(i + 1, "of") then
         named = compass(self.t[i].text, i + 1 < s.e and self.t[i + 1].text or "", i + 2 < s.e and self.t[i + 2].text or "")
+        -- a compass point leaned toward ("more to the north", "a bit further east") names no heading
+        local v = named and self:find_word(math.max(s.b, i - 3), i, "@vague_direction") or i
+        if v < i or named and self:word_in(i + 1, math.min(s.e, i + 3), "@vague_direction") then
+          v = math.min(v, i)
+          if self:word(v - 1, "a") then v = v - 1 end
+          local last = i
+          while last + 1 < math.min(s.e, i + 3) and self:word(last + 1, "a @vague_direction") do last = last + 1 end
+          return self:need(string.format("What heading should %s fly? '%s' names no heading.", ids[1], self:raw(v, last + 1)))
+        end
       end
     end
     local id = ids[1]

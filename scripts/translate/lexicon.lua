@@ -654,6 +654,9 @@ return {
   -- verbs of going before a compass point that is the heading ("flying south")
   compass_verbs = { "flying", "heading", "going", "tracking", "travelling", "traveling", "moving", "pointing",
       "facing", "flies", "headed" },
+  -- words that make a compass point a direction to lean toward, not a heading ("more to the north", "a bit
+  -- further east", "slightly west"): no heading value, asked
+  vague_direction = { "more", "further", "farther", "slightly", "bit", "little", "somewhat", "something" },
   compass = { north = 0, east = 90, south = 180, west = 270,
               northeast = 45, southeast = 135, southwest = 225, northwest = 315 },
   -- a wind named by where it blows from ("a westerly at 40 knots"): that direction in degrees

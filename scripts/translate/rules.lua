@@ -549,6 +549,15 @@ return function(intent, rule, words)
   rule { "tick update", "dt", next = "rate" }
   rule { "tickrate", "dt" }
   rule { "rate", "vs", not_prev = { 1, "vertical" } }
+  -- "bank left to heading 200", "bank KLM12 to heading 045": a turn to the heading said (the bank is how), no
+  -- bank limit
+  rule { "bank banking", "hdg", when = function(g, i)
+    local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
+    local k = r and r.e or i + 1
+    if g:word(k, "@left @right") then k = k + 1 end
+    if g:word(k, "to onto") then k = k + 1 end
+    return g:word(k, "heading hdg")
+  end }
   rule { "bank banking", "bank" }
 
   -- waypoints, creation and deletion
@@ -1245,6 +1254,11 @@ return function(intent, rule, words)
     return nouns > 0 and g:word(k, "of for") and g:has_ref(k + 1, k + 2, "aircraft")
   end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
+  -- "show me the data of KLM12", "display KLM12's flight data": an aircraft's data shown is its state (POS)
+  rule { "data", "pos", prev = { 5, "show display see give" }, when = function(g, i)
+    return g:word(i + 1, "of for") and g:has_ref(i + 2, i + 3, "aircraft")
+      or g:has_ref(g:word(i - 1, "flight") and i - 2 or i - 1, i, "aircraft")
+  end }
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", when = shown_after }
@@ -1256,6 +1270,16 @@ return function(intent, rule, words)
     if g.t[k] and g.t[k].kind == "punct" then k = k + 1 end
     local r = g:refs_in(k, math.min(#g.t + 1, k + 2), "aircraft")[1]
     return r ~= nil and not r.exists and g:has_ref(r.e, math.min(#g.t + 1, r.e + 4), "type")
+  end }
+  -- "place a Boeing 747 with callsign VIR3 at DVR ...", "place an A320 called EZY9 ...": a type, then a callsign
+  -- no aircraft has, is created
+  rule { "place", "create", when = function(g, i)
+    local e = math.min(#g.t + 1, i + 9)
+    if not g:has_ref(i + 1, math.min(#g.t + 1, i + 5), "type") then return false end
+    for _, r in ipairs(g:refs_in(i + 1, e, "aircraft")) do
+      if not r.exists then return true end
+    end
+    return false
   end }
   rule { "move mv reposition teleport shift place relocate tp teleported", "move" }
   -- "warp KLM58 to GAME2": an aircraft warped to a place ("time warp" is none)
@@ -1732,6 +1756,14 @@ return function(intent, rule, words)
   -- navigation after passing the CPA": the noun naming what an aircraft's instruction said in the same request
   -- is for (a manoeuvre after it, or a heading closed by ":"), no setting of its own
   local AIRCRAFT_INTENTS = { alt = true, hdg = true, spd = true, vs = true, resnav = true, lnav = true, direct = true }
+  -- an aircraft's instruction (level, heading, speed) said somewhere in the request but at word i
+  local function instructed(g, i)
+    for k = 1, #g.t do
+      local intent = k ~= i and g:intent_at(k)
+      if intent == "alt" or intent == "hdg" or intent == "spd" or intent == "vs" then return true end
+    end
+    return false
+  end
   rule { "resolution", false, when = function(g, i)
     local t = g.t[i + 1]
     if not (g:word(i + 1, "manoeuvre maneuver manoeuvres maneuvers")
@@ -1753,6 +1785,11 @@ return function(intent, rule, words)
   -- said straight before it, no setting of its own
   rule { "resolution resolutions resolving reso", false, prev = { 1, "for after following from of" },
          when = function(g, i) return g:word_in(math.max(1, i - 4), i, "cpa") end }
+  -- "resolve the conflict by turning DLH4AB right to heading 300", "turn KLM12 left 20 degrees to solve the
+  -- conflict": the conflict an aircraft's instruction in the request is for (a purpose), no method to set
+  rule { "resolve solve resolving solving", false, next = "the this that a", when = function(g, i)
+    return g:word(i + 2, "conflict conflicts") and instructed(g, i)
+  end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }
@@ -1767,6 +1804,12 @@ return function(intent, rule, words)
   end }
   -- ("3 mile separation horizontally", "a 1000 ft separation"): a distance or height said just before it,
   -- no aircraft named (one kept apart from another is an instruction squawk does not read)
+  -- "descend to FL280 to get vertical separation", "climb FL300 for separation from TRA345": the purpose of an
+  -- aircraft's instruction in the request, no value of the protected zone said with it
+  rule { "separation", false, prev = { 3, "get gain ensure provide keep maintain achieve establish for" },
+         when = function(g, i)
+    return #g:quantities(i + 1, math.min(#g.t + 1, i + 4)) == 0 and instructed(g, i)
+  end }
   rule { "separation", "zone", prev = { 1, "nm mile miles ft foot feet" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },

@@ -6342,3 +6342,71 @@ do
   check(r.ask ~= nil and r.ask:find("(OP)", 1, true) ~= nil and r.ask:find("(DTMULT 1)", 1, true) ~= nil,
     tostring(r.ask))
 end
+
+-- Cycle 38 (fix78): a compass point leaned toward ("more to the north", "a bit further east", "north a
+-- little", "northwards") names no heading: asked; a compass point said plainly ("fly west") is its heading
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270" })
+  local q = ex("turn NLX40 somewhat more to the west")
+  check(q:find("'more to the west' names no heading", 1, true) ~= nil, q)
+  asked(ex("NLX40, turn a little further south"), "a little further south")
+  asked(ex("NLX40 come north slightly"), "north slightly")
+  asked(ex("could NLX40 go a touch farther east"), "farther east")
+  asked(ex("make NLX40 head southwards"), "southwards")
+  asked(ex("create NLX41, an A320 at SPY, FL90, 230 kt, flying westwards"), "westwards in a creation")
+  check_eq(ex("NLX40 fly west"), "HDG NLX40 270")
+  check_eq(ex("NLX40 turn left to the south"), "HDG NLX40 180 LEFT")
+end
+
+-- Cycle 38 (fix78): numbered steps ("1. ... 2. ...", "Step 1: ... Step 2: ...", "1) ...", "(1) ...") and an
+-- answer's label ("Q2b answer:") are structure: each step an instruction for the aircraft it names or the one
+-- before; a number that breaks the count from 1 is no marker
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250" })
+  check_eq(ex("1. climb NLX40 to FL260 2. speed 250 knots 3. turn right heading 240"),
+    "ALT NLX40 FL260 ; SPD NLX40 250 ; HDG NLX40 240 RIGHT")
+  check_eq(ex("Step 1: EWG9 heading 045. Step 2: descend FL120."), "HDG EWG9 45 ; ALT EWG9 FL120")
+  check_eq(ex("1) EWG9 speed 220 kt 2) NLX40 descend to FL200"), "SPD EWG9 220 ; ALT NLX40 FL200")
+  check_eq(ex("(1) NLX40 climb FL300 (2) EWG9 left heading 330"), "ALT NLX40 FL300 ; HDG EWG9 330 LEFT")
+  check_eq(ex("Q4b answer: NLX40 reduces to 240 knots"), "SPD NLX40 240")
+  check_eq(ex("Question 5: EWG9 climb to FL200"), "ALT EWG9 FL200")
+  check_eq(ex("step one: NLX40 speed 240. step two: EWG9 climb FL220"), "SPD NLX40 240 ; ALT EWG9 FL220")
+  check_eq(ex("1 - EWG9 turn left heading 300 2 - NLX40 descend FL180"), "HDG EWG9 300 LEFT ; ALT NLX40 FL180")
+  check_eq(ex("1: NLX40 climb FL250 2: speed 260 knots"), "ALT NLX40 FL250 ; SPD NLX40 260")
+  -- one step marked with no punctuation is no list ("step 1 second": the clock stepped on)
+  check_eq(ex("step 1 second"), "FF 1")
+  -- a count that does not start at 1, or skips, leaves the number in the sentence: asked
+  asked(ex("NLX40 turn left 2. climb"), "a number after a turn")
+  asked(ex("1. NLX40 climb to FL300 3. turn left"), "a count that skips")
+end
+
+-- Cycle 38 (fix78): textbook words. "bank (left) to heading N" is a turn ("bank angle 25" stays BANK); an
+-- aircraft's data shown is POS; a conflict resolved or separation gained by an aircraft's instruction is its
+-- purpose (no RESO, no ZONEDH); "place" a type with a new callsign creates it
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250" })
+  check_eq(ex("NLX40, bank right onto heading 250"), "HDG NLX40 250 RIGHT")
+  check_eq(ex("bank EWG9 to heading 100"), "HDG EWG9 100")
+  check_eq(ex("NLX40 bank angle 20 degrees"), "BANK NLX40 20")
+  check_eq(ex("display the data for EWG9"), "POS EWG9")
+  check_eq(ex("can you show me NLX40's flight data"), "POS NLX40")
+  check_eq(ex("solve the conflict by turning EWG9 left to heading 320"), "HDG EWG9 320 LEFT")
+  check_eq(ex("NLX40 climb FL260 to resolve this conflict"), "ALT NLX40 FL260")
+  check_eq(ex("EWG9 descend to FL160 to ensure vertical separation"), "ALT EWG9 FL160")
+  check_eq(ex("place an Airbus A321 with callsign DLH7Q at 52.5 4.5, heading 180, FL150, 260 knots"),
+    "CRE DLH7Q A321 52.5 4.5 180 FL150 260")
+  check_eq(ex("place NLX40 at 52.0 4.0"), "MOVE NLX40 52 4")
+  -- with no instruction for an aircraft, the setting is still asked or set
+  asked(ex("resolve the conflict"), "a resolution with no method")
+  check_eq(ex("set vertical separation to 1000 ft"), "ZONEDH 1000")
+end
+
+-- Cycle 38 (fix78): "descend 2000 feet" typed after the verb from FL200 up is the step (nobody clears an
+-- aircraft in the flight levels straight to below 4000 ft); lower down, or for several aircraft, asked
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL310 270", "CRE EWG9 A320 52.1 4.1 020 FL150 250" })
+  check_eq(ex("NLX40 descend 3000 ft"), "ALT NLX40 28000")
+  asked(ex("EWG9 descend 3000 ft"), "to or by from FL150")
+  asked(ex("NLX40 and EWG9 descend 2000 feet"), "to or by for two aircraft")
+  check_eq(ex("NLX40 descend to 3000 ft"), "ALT NLX40 3000")
+end
