@@ -4358,6 +4358,19 @@ function G:said_after_subject(i, subjects)
   return self:word(k, subjects)
 end
 
+-- True when a heading value ends just before token i, with only fillers, "to", "vectors" (or "vector",
+-- "vectoring") and commas between ("heading 060, vectors to rejoin ...").
+function G:after_heading(i)
+  local k = i - 1
+  while k >= 1 and (self.t[k].filler or self.t[k].text == "," or self:word(k, "to vectors vector vectoring")) do
+    k = k - 1
+  end
+  for _, q in ipairs(self:quantities(math.max(1, k - 2), k + 1)) do
+    if q.kind == "heading" and q.e == k + 1 then return true end
+  end
+  return false
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -4380,6 +4393,7 @@ function G:not_simulated()
               and (self.t[i + 1].raw:match("^%u") or #self:refs_in(i + 1, i + 2, "waypoint") > 0)))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
             and (not c.subject or self:said_after_subject(i, c.subject))
+            and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
             and not (c.not_after and self:word(i - 1, c.not_after)) then
           class = c

@@ -728,7 +728,9 @@ return {
   -- { words, n }, one of these within n words after the `near` word too; `clause`: the phrase goes on
   -- through instruction words up to its first comma (all of "expect to resume own navigation to X" is announced);
   -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
-  -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it
+  -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
+  -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
+  -- between them (G:after_heading)
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -786,6 +788,11 @@ return {
     -- "turn right heading 110, vectors Venice": the place named straight after the word (capitalised, or a
     -- place squawk knows), after an instruction
     { what = "vectors toward a place", words = "vectors vectoring", named_after = true, after_instruction = true },
+    -- "turn left heading 060, vectors to rejoin the track at DOBAK", "heading 200 to intercept the airway at
+    -- LAMSO": what the heading is flown for, the place where it ends; the heading is flown, no direct-to is given
+    -- ("heading 200, then rejoin the route at DOBAK" and "cleared to rejoin ..." are instructions of their own)
+    { what = "what a heading is flown for", words = "rejoin rejoining intercept intercepting join joining regain",
+      subject = "to", after_heading = true, clause = true },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },

@@ -6320,3 +6320,16 @@ do
   -- another aircraft's instruction at the waypoint is asked about, never tied to it
   asked(ex("CRE KLM9 B738 54.0 12.0 090 FL200 250 ; when SAS31 gets to OLMAK, KLM9 descend FL150"), "another aircraft")
 end
+
+-- Cycle 38 (fix77): what a heading is flown for ("vectors to rejoin the track at FIX", "heading 200 to intercept
+-- the airway at FIX") names a place where the vector ends, no direct-to: the heading alone is flown. A clause
+-- of its own ("then rejoin the route at FIX", "cleared to rejoin ...") is still a direct-to.
+do
+  local _, ex = scene({ "CRE TUI4KM B738 51.0 8.0 270 FL240 280", "DEFWPT MOKSA 51.3 7.2", "ADDWPT TUI4KM MOKSA" })
+  check_eq(ex("TUI4KM turn right heading 310, vectors to rejoin the airway at MOKSA"), "HDG TUI4KM 310 RIGHT")
+  check_eq(ex("TUI4KM fly heading 250 to intercept the route at MOKSA"), "HDG TUI4KM 250")
+  check_eq(ex("TUI4KM heading 250 vectoring to join the track at MOKSA, descend FL200"),
+    "HDG TUI4KM 250 ; ALT TUI4KM FL200")
+  check_eq(ex("TUI4KM heading 250, then rejoin the route at MOKSA"), "HDG TUI4KM 250 ; DIRECT TUI4KM MOKSA")
+  check_eq(ex("TUI4KM climb FL260, cleared to rejoin the route at MOKSA"), "ALT TUI4KM FL260 ; DIRECT TUI4KM MOKSA")
+end
