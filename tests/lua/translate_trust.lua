@@ -6333,3 +6333,18 @@ do
   check_eq(ex("TUI4KM heading 250, then rejoin the route at MOKSA"), "HDG TUI4KM 250 ; DIRECT TUI4KM MOKSA")
   check_eq(ex("TUI4KM climb FL260, cleared to rejoin the route at MOKSA"), "ALT TUI4KM FL260 ; DIRECT TUI4KM MOKSA")
 end
+
+-- Cycle 38 (fix77): the world's air forces ("<nation> air force" and "<nation> airforce", names.lua's air_forces)
+-- and military transport telephony ("Ascot", "Rafair", "Cotam", "Canforce") are read as their ICAO prefixes; a
+-- callsign flown under the word itself ("ASCOT41") is still that callsign, and a number no aircraft flies is asked.
+do
+  local _, ex = scene({ "CRE NAF330 C130 52.0 5.0 090 FL180 250", "CRE RRR2201 A332 52.5 4.0 270 FL300 290",
+    "CRE ASCOT41 C130 52.2 4.5 180 FL150 230", "CRE FAF1704 A400 52.8 5.5 010 FL260 280" })
+  check_eq(ex("Netherlands Air Force 330, climb FL200"), "ALT NAF330 FL200")
+  check_eq(ex("where is netherlands airforce three three zero"), "POS NAF330")
+  check_eq(ex("Ascot 2201 descend flight level 280"), "ALT RRR2201 FL280")
+  check_eq(ex("Ascot 41 turn left heading 150"), "HDG ASCOT41 150 LEFT")
+  check_eq(ex("French Air Force 1704, reduce speed 250"), "SPD FAF1704 250")
+  asked(ex("Netherlands Air Force 303 climb FL200"), "an air force callsign no aircraft flies")
+  asked(ex("Ascot, climb FL310"), "Ascot said alone, two aircraft fly under it")
+end
