@@ -863,6 +863,17 @@ local function written_forms(text)
   text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
+  -- "angels two six", "angels 22": military brevity for an altitude in thousands of feet (one or two digits,
+  -- typed or said one by one), read as that many thousand feet
+  local function angels(digits)
+    for d in digits:gmatch("%a+") do
+      if not DIGIT_WORDS[d:lower()] then return nil end
+    end
+    return digits .. " thousand ft"
+  end
+  text = text:gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%d%d?)%f[^%w%.]", "%1000 ft")
+    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%s+%a+)%f[%A]", angels)
+    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+)%f[%A]", angels)
   -- "250-ish", "FL200-ish": the suffix of a loose value is its own word ("ish", lexicon's discourse)
   text = text:gsub("(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
   -- "un-pause", "un-freeze": the prefix "un-" written with a hyphen is the one word ("unpause")
@@ -2742,6 +2753,18 @@ function G:trailing_fix(s)
   local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
   if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
   local k = self:skip_fillers(c + 1)
+  -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" and the waypoint, its code or a name of the
+  -- aircraft's route, closing the request)
+  if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying") then
+    local e = s.e
+    while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
+    local r = self:refs_in(k, e, "waypoint")[1]
+    if r then return r.b == k and r.e == e and { b = c, e = r.e, name = r.name } or nil end
+    local a = self:refs_in(1, s.trig, "aircraft")
+    local now = #a == 1 and self:state(a[1].name)
+    local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now)
+    return name and { b = c, e = e, name = name } or nil
+  end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
   if self:word(k, "passing passes reaching reaches overflying") then
     k = self:skip_fillers(k + 1)

@@ -6348,3 +6348,40 @@ do
   asked(ex("Netherlands Air Force 303 climb FL200"), "an air force callsign no aircraft flies")
   asked(ex("Ascot, climb FL310"), "Ascot said alone, two aircraft fly under it")
 end
+
+-- Cycle 38 (fix77): military and exercise words. "angels N" is N thousand feet; "track NNN" (up to 360) a
+-- heading; "knots IAS" the speed; a serial is the exercise's run ("resume the serial", "serial 2:" a label);
+-- "separation minima"; "set up trails" shows them; "dt multiplier" is DTMULT; a box named after a colon; "after
+-- FIX" closing the request starts the instruction there; a navaid of the route said by name is removed from it;
+-- the flight number said again after the callsign is the same aircraft. Where each stops, it asks.
+do
+  local _, ex = scene({ "CRE CFC4410 C130 52.0 6.0 090 FL180 250", "CRE TRA62K B738 52.4 5.0 270 FL330 280",
+    "DEFWPT LOBAR 52.1 6.6", "DEFWPT TOMVA 52.3 7.2",
+    "ADDWPT CFC4410 LOBAR", "ADDWPT CFC4410 TOMVA" })
+  check_eq(ex("Canforce 4410 descend angels one five"), "ALT CFC4410 15000")
+  check_eq(ex("CFC4410 climb to angels 21"), "ALT CFC4410 21000")
+  asked(ex("CFC4410 climb angels twenty one"), "angels said as a compound number")
+  check_eq(ex("CFC4410 track 135"), "HDG CFC4410 135")
+  check_eq(ex("CFC4410 climb FL200 and fly track 070"), "ALT CFC4410 FL200 ; HDG CFC4410 70")
+  asked(ex("CFC4410 track 520"), "a track past 360")
+  check_eq(ex("CFC4410 increase to 280 knots IAS"), "SPD CFC4410 280")
+  check_eq(ex("resume the serial"), "OP")
+  check_eq(ex("serial two: CFC4410 climb FL200"), "ALT CFC4410 FL200")
+  check_eq(ex("horizontal separation minima 3 NM"), "ZONER 3")
+  check_eq(ex("please set up trails"), "TRAIL ON")
+  check_eq(ex("set dt multiplier 4"), "DTMULT 4")
+  check_eq(ex("draw the box: AREA7 from 52.0N 005.0E to 52.5N 006.0E"), "BOX AREA7 52 5 52.5 6")
+  check_eq(ex("CFC4410 climb FL220 after TOMVA"), "AT CFC4410 TOMVA DO ALT CFC4410 FL220")
+  asked(ex("CFC4410 climb FL220 after departure"), "after no waypoint")
+  check_eq(ex("Canforce 4410, 4410, reduce 230 knots"), "SPD CFC4410 230")
+end
+do
+  local _, ex = navscene({ "CRE GAF620 A400 53.0 8.2 090 FL200 250", "ADDWPT GAF620 BMN", "ADDWPT GAF620 DLE",
+    "CRE GAF163 A332 53.7 8.4 200 FL270 290", "ADDWPT GAF163 WSR" }, "navaids of the route by name")
+  if ex then
+    check_eq(ex("GAF620, remove Leine from the route please"), "DELWPT GAF620 DLE")
+    check_eq(ex("German Air Force 620 delete Bremen from its route"), "DELWPT GAF620 BMN")
+    asked(ex("GAF620 remove Weser from the route"), "a navaid another aircraft's route holds")
+    check_eq(ex("German Air Force 163 descend FL250 after Weser"), "AT GAF163 WSR DO ALT GAF163 FL250")
+  end
+end
