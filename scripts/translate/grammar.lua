@@ -4913,12 +4913,16 @@ for _, list in ipairs({ names.airlines, names.common }) do
   end
 end
 -- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
--- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies.
+-- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies. A word that
+-- opens the id of an aircraft flying ("ASCOT42" with ASCOT41 flying) is an id's prefix, typed as such.
 local function glued_telephony(text, fleet)
-  local ids = {}
-  for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
+  local ids, prefixes = {}, {}
+  for _, a in ipairs(fleet) do
+    ids[a.id:upper()] = a.id
+    prefixes[(a.id:match("^%a+") or ""):upper()] = true
+  end
   return (text:gsub("()%f[%w](%a+)(%d%w*)%f[%W]", function(at, word, number)
-    local icao = GLUED_AIRLINES[word:lower()]
+    local icao = not prefixes[word:upper()] and GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]
     if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$") then
       for w in text:sub(1, at - 1):lower():gmatch("%a+") do

@@ -6399,3 +6399,11 @@ do
   check_eq(ex("create CTM1001, a C-130, 50 3, heading 010, FL160, 220 knots"), "CRE CTM1001 C130 50 3 10 FL160 220")
   asked(ex("create FAF2201, Rafale, 50 3, heading 010, FL160, 420 knots"), "a fighter squawk has no name for")
 end
+
+-- Cycle 38 (fix77): a telephony word glued to a new callsign's number ("speedbird44") is the airline's prefix,
+-- but not where an aircraft flies with that word as its id's prefix ("ASCOT42" with ASCOT41 flying stays ASCOT42).
+do
+  local _, ex = scene({ "CRE ASCOT41 C130 52.6 7.6 030 FL160 230", "CRE BAW12 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("create ASCOT42 C130 at 52 7 heading 060 FL140 220 knots"), "CRE ASCOT42 C130 52 7 60 FL140 220")
+  check_eq(ex("create speedbird44 A320 at 52 6 heading 090 FL200 250 knots"), "CRE BAW44 A320 52 6 90 FL200 250")
+end
