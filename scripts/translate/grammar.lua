@@ -4913,8 +4913,9 @@ for _, list in ipairs({ names.airlines, names.common }) do
   end
 end
 -- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
--- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies. A word that
--- opens the id of an aircraft flying ("ASCOT42" with ASCOT41 flying) is an id's prefix, typed as such.
+-- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies; typed in capitals
+-- as an id of up to eight characters ("create ASCOT42 ..."), it is the id as typed. A word that opens the id of an aircraft flying ("ascot42" with
+-- ASCOT41 flying) is an id's prefix, typed as such.
 local function glued_telephony(text, fleet)
   local ids, prefixes = {}, {}
   for _, a in ipairs(fleet) do
@@ -4924,7 +4925,8 @@ local function glued_telephony(text, fleet)
   return (text:gsub("()%f[%w](%a+)(%d%w*)%f[%W]", function(at, word, number)
     local icao = not prefixes[word:upper()] and GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]
-    if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$") then
+    if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$")
+        and not (word:match("^%u%u+$") and #word + #number <= 8) then
       for w in text:sub(1, at - 1):lower():gmatch("%a+") do
         if lexicon.creation_verbs[w] then id = (icao .. number):upper() end
       end

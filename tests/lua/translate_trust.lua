@@ -6401,9 +6401,13 @@ do
 end
 
 -- Cycle 38 (fix77): a telephony word glued to a new callsign's number ("speedbird44") is the airline's prefix,
--- but not where an aircraft flies with that word as its id's prefix ("ASCOT42" with ASCOT41 flying stays ASCOT42).
+-- but not where an aircraft flies with that word as its id's prefix ("ascot43" with ASCOT41 flying), nor typed in
+-- capitals as an id ("REACH77").
 do
   local _, ex = scene({ "CRE ASCOT41 C130 52.6 7.6 030 FL160 230", "CRE BAW12 A320 52.0 4.0 090 FL300 280" })
   check_eq(ex("create ASCOT42 C130 at 52 7 heading 060 FL140 220 knots"), "CRE ASCOT42 C130 52 7 60 FL140 220")
   check_eq(ex("create speedbird44 A320 at 52 6 heading 090 FL200 250 knots"), "CRE BAW44 A320 52 6 90 FL200 250")
+  check_eq(ex("create ascot43 C130 at 52 6 heading 090 FL200 250 knots"), "CRE ASCOT43 C130 52 6 90 FL200 250")
+  -- typed in capitals, the id as typed; with no aircraft of its prefix flying too
+  check_eq(ex("create REACH77, C-17, at 52 6, heading 090, FL300, 300 knots"), "CRE REACH77 C17 52 6 90 FL300 300")
 end
