@@ -2749,13 +2749,19 @@ end
 -- condition of passing a waypoint that closes the segment, after its instruction's value; the instruction
 -- starts there (AT acid wp DO, G:do_at): { b = the condition's first token, e = the token after the
 -- waypoint's name, name }, else nil. "at CANUK" alone after the value is no such condition (a crossing?).
+local VALUE_INTENTS = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
 function G:trailing_fix(s)
   local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
   if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
   local k = self:skip_fillers(c + 1)
-  -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" and the waypoint, its code or a name of the
-  -- aircraft's route, closing the request)
+  -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" straight after the value of a level, speed,
+  -- heading or rate, and the waypoint, its code or a name of the aircraft's route, closing the request;
+  -- "expect lower after KURDI" is no such condition, nor ADDWPT's "after")
   if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying") then
+    local v = c - 1
+    while v > s.trig and (self.t[v].filler or self.t[v].text == ",") do v = v - 1 end
+    local last = self:quantities(s.trig, v + 1)
+    if self.u:used(c) or not VALUE_INTENTS[s.intent] or #last == 0 or last[#last].e ~= v + 1 then return nil end
     local e = s.e
     while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
     local r = self:refs_in(k, e, "waypoint")[1]

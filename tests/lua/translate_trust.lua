@@ -6373,6 +6373,8 @@ do
   check_eq(ex("draw the box: AREA7 from 52.0N 005.0E to 52.5N 006.0E"), "BOX AREA7 52 5 52.5 6")
   check_eq(ex("CFC4410 climb FL220 after TOMVA"), "AT CFC4410 TOMVA DO ALT CFC4410 FL220")
   asked(ex("CFC4410 climb FL220 after departure"), "after no waypoint")
+  -- ("after FIX" closing an expected clearance is no condition on the instruction before it)
+  check_eq(ex("CFC4410 descend FL160, expect lower after TOMVA"), "ALT CFC4410 FL160")
   check_eq(ex("Canforce 4410, 4410, reduce 230 knots"), "SPD CFC4410 230")
 end
 do
