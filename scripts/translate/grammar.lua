@@ -4920,8 +4920,8 @@ for _, list in ipairs({ names.airlines, names.common }) do
 end
 -- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
 -- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies; typed in capitals
--- as an id of up to eight characters ("create ASCOT42 ..."), it is the id as typed. A word that opens the id of an aircraft flying ("ascot42" with
--- ASCOT41 flying) is an id's prefix, typed as such.
+-- as an id of up to eight characters ("create ASCOT42 ..."), it is the id as typed. A word that opens the id
+-- of an aircraft flying ("ascot42" with ASCOT41 flying) is an id's prefix, typed as such.
 local function glued_telephony(text, fleet)
   local ids, prefixes = {}, {}
   for _, a in ipairs(fleet) do

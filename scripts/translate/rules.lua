@@ -1798,7 +1798,8 @@ return function(intent, rule, words)
   rule { "separation", "zone", prev = { 1, "nm mile miles ft foot feet" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "separation", false, not_prev = { 2, "minimum minima horizontal vertical lateral" },
-         not_near = { 4, "minimum minima nm nautical mile miles radius ft foot feet horizontally vertically laterally" } }
+         not_near = { 4, "minimum minima nm nautical mile miles radius ft foot feet horizontally vertically "
+           .. "laterally" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected protection prot pz rpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"

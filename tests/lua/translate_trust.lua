@@ -6396,7 +6396,8 @@ do
   check_eq(ex("create RCH612, C-17, 53 5, heading 090, FL300, 300 knots"), "CRE RCH612 C17 53 5 90 FL300 300")
   check_eq(ex("put a tanker in: QID31, KC-135, 54 6, heading 180, FL260, 310 knots"),
     "CRE QID31 K35R 54 6 180 FL260 310")
-  check_eq(ex("new track NATO05, E-3, 53.5 6.5, heading 045, FL300, 280 knots"), "CRE NATO05 E3TF 53.5 6.5 45 FL300 280")
+  check_eq(ex("new track NATO05, E-3, 53.5 6.5, heading 045, FL300, 280 knots"),
+    "CRE NATO05 E3TF 53.5 6.5 45 FL300 280")
   check_eq(ex("create BAF605 A400M at 51 4 heading 270 FL180 240 knots"), "CRE BAF605 A400 51 4 270 FL180 240")
   check_eq(ex("create CTM1001, a C-130, 50 3, heading 010, FL160, 220 knots"), "CRE CTM1001 C130 50 3 10 FL160 220")
   asked(ex("create FAF2201, Rafale, 50 3, heading 010, FL160, 420 knots"), "a fighter squawk has no name for")
