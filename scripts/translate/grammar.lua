@@ -863,6 +863,17 @@ local function written_forms(text)
   text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
+  -- "angels two six", "angels 22": military brevity for an altitude in thousands of feet (one or two digits,
+  -- typed or said one by one), read as that many thousand feet
+  local function angels(digits)
+    for d in digits:gmatch("%a+") do
+      if not DIGIT_WORDS[d:lower()] then return nil end
+    end
+    return digits .. " thousand ft"
+  end
+  text = text:gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%d%d?)%f[^%w%.]", "%1000 ft")
+    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%s+%a+)%f[%A]", angels)
+    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+)%f[%A]", angels)
   -- "250-ish", "FL200-ish": the suffix of a loose value is its own word ("ish", lexicon's discourse)
   text = text:gsub("(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
   -- "un-pause", "un-freeze": the prefix "un-" written with a hyphen is the one word ("unpause")
@@ -2738,10 +2749,28 @@ end
 -- condition of passing a waypoint that closes the segment, after its instruction's value; the instruction
 -- starts there (AT acid wp DO, G:do_at): { b = the condition's first token, e = the token after the
 -- waypoint's name, name }, else nil. "at CANUK" alone after the value is no such condition (a crossing?).
+local VALUE_INTENTS = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
 function G:trailing_fix(s)
   local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
   if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
   local k = self:skip_fillers(c + 1)
+  -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" straight after the value of a level, speed,
+  -- heading or rate, and the waypoint, its code or a name of the aircraft's route, closing the request;
+  -- "expect lower after KURDI" is no such condition, nor ADDWPT's "after")
+  if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying") then
+    local v = c - 1
+    while v > s.trig and (self.t[v].filler or self.t[v].text == ",") do v = v - 1 end
+    local last = self:quantities(s.trig, v + 1)
+    if self.u:used(c) or not VALUE_INTENTS[s.intent] or #last == 0 or last[#last].e ~= v + 1 then return nil end
+    local e = s.e
+    while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
+    local r = self:refs_in(k, e, "waypoint")[1]
+    if r then return r.b == k and r.e == e and { b = c, e = r.e, name = r.name } or nil end
+    local a = self:refs_in(1, s.trig, "aircraft")
+    local now = #a == 1 and self:state(a[1].name)
+    local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now)
+    return name and { b = c, e = e, name = name } or nil
+  end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
   if self:word(k, "passing passes reaching reaches overflying") then
     k = self:skip_fillers(k + 1)
@@ -4358,6 +4387,19 @@ function G:said_after_subject(i, subjects)
   return self:word(k, subjects)
 end
 
+-- True when a heading value ends just before token i, with only fillers, "to", "vectors" (or "vector",
+-- "vectoring") and commas between ("heading 060, vectors to rejoin ...").
+function G:after_heading(i)
+  local k = i - 1
+  while k >= 1 and (self.t[k].filler or self.t[k].text == "," or self:word(k, "to vectors vector vectoring")) do
+    k = k - 1
+  end
+  for _, q in ipairs(self:quantities(math.max(1, k - 2), k + 1)) do
+    if q.kind == "heading" and q.e == k + 1 then return true end
+  end
+  return false
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -4380,6 +4422,7 @@ function G:not_simulated()
               and (self.t[i + 1].raw:match("^%u") or #self:refs_in(i + 1, i + 2, "waypoint") > 0)))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
             and (not c.subject or self:said_after_subject(i, c.subject))
+            and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
             and not (c.not_after and self:word(i - 1, c.not_after)) then
           class = c
@@ -4876,14 +4919,20 @@ for _, list in ipairs({ names.airlines, names.common }) do
   end
 end
 -- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
--- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies.
+-- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies; typed in capitals
+-- as an id of up to eight characters ("create ASCOT42 ..."), it is the id as typed. A word that opens the id
+-- of an aircraft flying ("ascot42" with ASCOT41 flying) is an id's prefix, typed as such.
 local function glued_telephony(text, fleet)
-  local ids = {}
-  for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
+  local ids, prefixes = {}, {}
+  for _, a in ipairs(fleet) do
+    ids[a.id:upper()] = a.id
+    prefixes[(a.id:match("^%a+") or ""):upper()] = true
+  end
   return (text:gsub("()%f[%w](%a+)(%d%w*)%f[%W]", function(at, word, number)
-    local icao = GLUED_AIRLINES[word:lower()]
+    local icao = not prefixes[word:upper()] and GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]
-    if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$") then
+    if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$")
+        and not (word:match("^%u%u+$") and #word + #number <= 8) then
       for w in text:sub(1, at - 1):lower():gmatch("%a+") do
         if lexicon.creation_verbs[w] then id = (icao .. number):upper() end
       end

@@ -1054,6 +1054,20 @@ function m:settle_callsigns()
       end
     end
   end
+  -- "Lufthansa 9CK, 9CK, reduce 250": the flight number said again alone after a comma, up to the next
+  -- punctuation, is the same reference
+  for _, r in ipairs(self.refs) do
+    local suffix = r.kind == "aircraft" and r.name:match("^%a%a%a(%w%w+)$")
+    local k = suffix and self.t[r.e] and self.t[r.e].text == "," and r.e + 1
+    local said, m = "", k
+    while m and self.t[m] and self.t[m].kind ~= "punct" and #said < #suffix do
+      said, m = said .. self.t[m].raw:upper(), m + 1
+    end
+    if said == suffix and self.t[m] and self.t[m].kind == "punct" and #self:refs_in(k, m) == 0 then
+      r.e = m
+      self:mark_used(k, m)
+    end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then
       local k = self:skip_fillers(r.e, false)

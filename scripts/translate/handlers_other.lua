@@ -3116,8 +3116,12 @@ return function(H, f, compass)
     end
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
-    -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail": shown)
+    -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail", "set up trails for all
+    -- tracks": shown)
     local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give")
+    for k = math.max(1, s.b - 4), s.e - 1 do
+      drawn = drawn or (self:word(k, "set") and self:word(k + 1, "up"))
+    end
     if drawn then self.last_on = self:on_off(s) < 0 and 1 or self.last_on end
     if self:on_off(s) < 0 and not q and self.last_on == nil
         and not self:word_in(math.max(1, s.b - 2), s.b, "@on @off") then

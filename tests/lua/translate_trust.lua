@@ -6410,3 +6410,97 @@ do
   asked(ex("NLX40 and EWG9 descend 2000 feet"), "to or by for two aircraft")
   check_eq(ex("NLX40 descend to 3000 ft"), "ALT NLX40 3000")
 end
+
+-- Cycle 38 (fix77): what a heading is flown for ("vectors to rejoin the track at FIX", "heading 200 to intercept
+-- the airway at FIX") names a place where the vector ends, no direct-to: the heading alone is flown. A clause
+-- of its own ("then rejoin the route at FIX", "cleared to rejoin ...") is still a direct-to.
+do
+  local _, ex = scene({ "CRE TUI4KM B738 51.0 8.0 270 FL240 280", "DEFWPT MOKSA 51.3 7.2", "ADDWPT TUI4KM MOKSA" })
+  check_eq(ex("TUI4KM turn right heading 310, vectors to rejoin the airway at MOKSA"), "HDG TUI4KM 310 RIGHT")
+  check_eq(ex("TUI4KM fly heading 250 to intercept the route at MOKSA"), "HDG TUI4KM 250")
+  check_eq(ex("TUI4KM heading 250 vectoring to join the track at MOKSA, descend FL200"),
+    "HDG TUI4KM 250 ; ALT TUI4KM FL200")
+  check_eq(ex("TUI4KM heading 250, then rejoin the route at MOKSA"), "HDG TUI4KM 250 ; DIRECT TUI4KM MOKSA")
+  check_eq(ex("TUI4KM climb FL260, cleared to rejoin the route at MOKSA"), "ALT TUI4KM FL260 ; DIRECT TUI4KM MOKSA")
+end
+
+-- Cycle 38 (fix77): the world's air forces ("<nation> air force" and "<nation> airforce", names.lua's air_forces)
+-- and military transport telephony ("Ascot", "Rafair", "Cotam", "Canforce") are read as their ICAO prefixes; a
+-- callsign flown under the word itself ("ASCOT41") is still that callsign, and a number no aircraft flies is asked.
+do
+  local _, ex = scene({ "CRE NAF330 C130 52.0 5.0 090 FL180 250", "CRE RRR2201 A332 52.5 4.0 270 FL300 290",
+    "CRE ASCOT41 C130 52.2 4.5 180 FL150 230", "CRE FAF1704 A400 52.8 5.5 010 FL260 280" })
+  check_eq(ex("Netherlands Air Force 330, climb FL200"), "ALT NAF330 FL200")
+  check_eq(ex("where is netherlands airforce three three zero"), "POS NAF330")
+  check_eq(ex("Ascot 2201 descend flight level 280"), "ALT RRR2201 FL280")
+  check_eq(ex("Ascot 41 turn left heading 150"), "HDG ASCOT41 150 LEFT")
+  check_eq(ex("French Air Force 1704, reduce speed 250"), "SPD FAF1704 250")
+  asked(ex("Netherlands Air Force 303 climb FL200"), "an air force callsign no aircraft flies")
+  asked(ex("Ascot, climb FL310"), "Ascot said alone, two aircraft fly under it")
+end
+
+-- Cycle 38 (fix77): military and exercise words. "angels N" is N thousand feet; "track NNN" (up to 360) a
+-- heading; "knots IAS" the speed; a serial is the exercise's run ("resume the serial", "serial 2:" a label);
+-- "separation minima"; "set up trails" shows them; "dt multiplier" is DTMULT; a box named after a colon; "after
+-- FIX" closing the request starts the instruction there; a navaid of the route said by name is removed from it;
+-- the flight number said again after the callsign is the same aircraft. Where each stops, it asks.
+do
+  local _, ex = scene({ "CRE CFC4410 C130 52.0 6.0 090 FL180 250", "CRE TRA62K B738 52.4 5.0 270 FL330 280",
+    "DEFWPT LOBAR 52.1 6.6", "DEFWPT TOMVA 52.3 7.2",
+    "ADDWPT CFC4410 LOBAR", "ADDWPT CFC4410 TOMVA" })
+  check_eq(ex("Canforce 4410 descend angels one five"), "ALT CFC4410 15000")
+  check_eq(ex("CFC4410 climb to angels 21"), "ALT CFC4410 21000")
+  asked(ex("CFC4410 climb angels twenty one"), "angels said as a compound number")
+  check_eq(ex("CFC4410 track 135"), "HDG CFC4410 135")
+  check_eq(ex("CFC4410 climb FL200 and fly track 070"), "ALT CFC4410 FL200 ; HDG CFC4410 70")
+  asked(ex("CFC4410 track 520"), "a track past 360")
+  check_eq(ex("CFC4410 increase to 280 knots IAS"), "SPD CFC4410 280")
+  check_eq(ex("resume the serial"), "OP")
+  check_eq(ex("serial two: CFC4410 climb FL200"), "ALT CFC4410 FL200")
+  check_eq(ex("horizontal separation minima 3 NM"), "ZONER 3")
+  check_eq(ex("please set up trails"), "TRAIL ON")
+  check_eq(ex("set dt multiplier 4"), "DTMULT 4")
+  check_eq(ex("draw the box: AREA7 from 52.0N 005.0E to 52.5N 006.0E"), "BOX AREA7 52 5 52.5 6")
+  check_eq(ex("CFC4410 climb FL220 after TOMVA"), "AT CFC4410 TOMVA DO ALT CFC4410 FL220")
+  asked(ex("CFC4410 climb FL220 after departure"), "after no waypoint")
+  -- ("after FIX" closing an expected clearance is no condition on the instruction before it)
+  check_eq(ex("CFC4410 descend FL160, expect lower after TOMVA"), "ALT CFC4410 FL160")
+  check_eq(ex("Canforce 4410, 4410, reduce 230 knots"), "SPD CFC4410 230")
+end
+do
+  local _, ex = navscene({ "CRE GAF620 A400 53.0 8.2 090 FL200 250", "ADDWPT GAF620 BMN", "ADDWPT GAF620 DLE",
+    "CRE GAF163 A332 53.7 8.4 200 FL270 290", "ADDWPT GAF163 WSR" }, "navaids of the route by name")
+  if ex then
+    check_eq(ex("GAF620, remove Leine from the route please"), "DELWPT GAF620 DLE")
+    check_eq(ex("German Air Force 620 delete Bremen from its route"), "DELWPT GAF620 BMN")
+    asked(ex("GAF620 remove Weser from the route"), "a navaid another aircraft's route holds")
+    check_eq(ex("German Air Force 163 descend FL250 after Weser"), "AT GAF163 WSR DO ALT GAF163 FL250")
+  end
+end
+
+-- Cycle 38 (fix77): military types at creation by the names their air forces give them ("C-17", "KC-135", "E-3",
+-- "A400M", "C-130"); each is modelled (the class model flies an unlisted designator as a jet, the A400 and C130 as
+-- turboprops); a type squawk has no name for is asked about.
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280" })
+  check_eq(ex("create RCH612, C-17, 53 5, heading 090, FL300, 300 knots"), "CRE RCH612 C17 53 5 90 FL300 300")
+  check_eq(ex("put a tanker in: QID31, KC-135, 54 6, heading 180, FL260, 310 knots"),
+    "CRE QID31 K35R 54 6 180 FL260 310")
+  check_eq(ex("new track NATO05, E-3, 53.5 6.5, heading 045, FL300, 280 knots"),
+    "CRE NATO05 E3TF 53.5 6.5 45 FL300 280")
+  check_eq(ex("create BAF605 A400M at 51 4 heading 270 FL180 240 knots"), "CRE BAF605 A400 51 4 270 FL180 240")
+  check_eq(ex("create CTM1001, a C-130, 50 3, heading 010, FL160, 220 knots"), "CRE CTM1001 C130 50 3 10 FL160 220")
+  asked(ex("create FAF2201, Rafale, 50 3, heading 010, FL160, 420 knots"), "a fighter squawk has no name for")
+end
+
+-- Cycle 38 (fix77): a telephony word glued to a new callsign's number ("speedbird44") is the airline's prefix,
+-- but not where an aircraft flies with that word as its id's prefix ("ascot43" with ASCOT41 flying), nor typed in
+-- capitals as an id ("REACH77").
+do
+  local _, ex = scene({ "CRE ASCOT41 C130 52.6 7.6 030 FL160 230", "CRE BAW12 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("create ASCOT42 C130 at 52 7 heading 060 FL140 220 knots"), "CRE ASCOT42 C130 52 7 60 FL140 220")
+  check_eq(ex("create speedbird44 A320 at 52 6 heading 090 FL200 250 knots"), "CRE BAW44 A320 52 6 90 FL200 250")
+  check_eq(ex("create ascot43 C130 at 52 6 heading 090 FL200 250 knots"), "CRE ASCOT43 C130 52 6 90 FL200 250")
+  -- typed in capitals, the id as typed; with no aircraft of its prefix flying too
+  check_eq(ex("create REACH77, C-17, at 52 6, heading 090, FL300, 300 knots"), "CRE REACH77 C17 52 6 90 FL300 300")
+end
