@@ -3352,14 +3352,18 @@ function G:unexplained(s, n_before)
     if not opened and own_unit(q) then opened = q.b end
   end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
+    -- the aircraft said straight before the value, if any
+    local callsign
+    for _, r in ipairs(self.refs) do
+      if r.kind == "aircraft" and r.e <= q.b and self:skip_fillers(r.e) == q.b then callsign = r end
+    end
+    -- (a bare value between the callsign and the instruction word, "BAW256 9 climb FL300", is named alone)
+    local before_verb = callsign and not (opened and q.b > opened)
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
-        and q.b > corrected and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs"))
+        and q.b > corrected
+        and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb)
         and not value_carried(q, nums) then
-      local b = q.b
-      for _, r in ipairs(self.refs) do
-        if r.kind == "aircraft" and r.e <= q.b and self:skip_fillers(r.e) == q.b then b = r.b end
-      end
-      self.leftover = self:raw(b, q.e)
+      self.leftover = self:raw((callsign and not before_verb) and callsign.b or q.b, q.e)
       return
     end
   end

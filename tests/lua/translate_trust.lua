@@ -6504,3 +6504,15 @@ do
   -- typed in capitals, the id as typed; with no aircraft of its prefix flying too
   check_eq(ex("create REACH77, C-17, at 52 6, heading 090, FL300, 300 knots"), "CRE REACH77 C17 52 6 90 FL300 300")
 end
+
+-- Cycle 39 (lead): a bare value between the callsign and the instruction word ("BAW256 9 climb FL300",
+-- "BAW256, 345, climb FL300") is explained by nothing and asked about by name, never dropped; the flight
+-- number said again ("DLH9CK, 9CK, reduce 250") is the callsign's
+do
+  local _, ex = scene({ "CRE BAW256 B738 52 4 090 FL200 250", "CRE DLH9CK A320 52 5 090 FL200 250" })
+  asked(ex("BAW256 9 climb FL300"), "a stray number before the verb")
+  asked(ex("BAW256, 345, climb FL300"), "a stray number set off by commas")
+  asked(ex("BAW256 one two three turn left heading 300"), "stray digits said as words")
+  check_eq(ex("BAW256 climb FL300"), "ALT BAW256 FL300")
+  check_eq(ex("Lufthansa 9CK, 9CK, reduce 250"), "SPD DLH9CK 250")
+end
