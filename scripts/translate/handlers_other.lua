@@ -872,24 +872,7 @@ return function(H, f, compass)
       if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
         local whole = self:whole_place_name(r, b, e, id)
         if whole ~= nil then return whole or nil end
-        -- ("direct TEBBY": the name of the one navaid near the aircraft, TEB, before a fix of that ident
-        -- elsewhere, off its route)
-        local a = self:state(id)
-        local near = a and a.lat and self.world.navaids_named
-          and self.world.navaids_named(r.name, a.lat, a.lon, L.navaid_range_nm) or {}
-        local keep = false
-        for _, w in ipairs(a and a.route or {}) do keep = keep or w:upper() == r.name:upper() end
-        -- (a fix of that ident near the aircraft stays that fix)
-        local flat, flon = nil, nil
-        if #near == 1 and self.world.user_waypoint_at then flat, flon = self.world.user_waypoint_at(r.name) end
-        if flat then
-          local dlat, dlon = flat - a.lat, (flon - a.lon) * math.cos(math.rad(a.lat))
-          keep = keep or 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm
-        end
-        if #near == 1 and near[1]:upper() ~= r.name:upper() and not keep then
-          self:explain(r.b, r.e)
-          return near[1]
-        end
+        -- (a navaid's name in capitals, "direct TEBBY", is its ident already: m:navaid_name_refs)
         return r.name
       end
     end

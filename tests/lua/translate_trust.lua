@@ -6410,3 +6410,23 @@ do
   asked(ex("NLX40 and EWG9 descend 2000 feet"), "to or by for two aircraft")
   check_eq(ex("NLX40 descend to 3000 ft"), "ALT NLX40 3000")
 end
+
+-- Cycle 39 (fix79): a navaid said by its navdata name in capitals ("LIMA" is the LIM VOR-DME over Peru, not
+-- the Italian airfield of that ident) is its ident for every place argument; a place of that ident near the
+-- traffic elsewhere than the navaid (the fix LAMAR 40 NM from the LAMAR VOR, LAA) is asked about
+do
+  local _, ex = navscene({ "CRE LPE77 A320 -12.3 -76.9 330 FL150 250", "CRE SKU301 A20N -11.8 -77.4 150 FL200 280" },
+    "navaid names in capitals")
+  if ex then
+    check_eq(ex("LPE77, when 15 miles from LIMA, descend FL100"), "ATDIST LPE77 LIM 15 ALT LPE77 FL100")
+    check_eq(ex("where is the LIMA VOR?"), "POS LIM")
+    check_eq(ex("SKU301 proceed direct LIMA"), "ADDWPT SKU301 LIM ; DIRECT SKU301 LIM")
+    check_eq(ex("LPE77 add LIMA to the route"), "ADDWPT LPE77 LIM")
+    -- a waypoint being defined under that name is no navaid
+    check_eq(ex("define waypoint LIMA at 12 south 77 west"), "DEFWPT LIMA -12 -77")
+  end
+  local _, far = navscene({ "CRE N123AB C172 38.3 -102.9 090 8000 110" }, "a navaid name that a fix bears")
+  if far then
+    check(far("N123AB direct LAMAR"):match("^ASK .*LAA") ~= nil, "the fix LAMAR or the LAMAR VOR")
+  end
+end
