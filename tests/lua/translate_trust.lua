@@ -6430,3 +6430,26 @@ do
     check(far("N123AB direct LAMAR"):match("^ASK .*LAA") ~= nil, "the fix LAMAR or the LAMAR VOR")
   end
 end
+
+-- Cycle 39 (fix79): the country airlines of a group by the name said with the country ("LAN Ecuador 1422":
+-- LNE, "LAN Peru": LPE) and by their ICAO telephony ("Aerolane", "Aerorepublica")
+do
+  local _, ex = scene({ "CRE LNE902 A320 -0.8 -78.9 045 FL190 280", "CRE LAN902 B788 -1.5 -79.5 200 FL300 290",
+    "CRE RPB55 A320 4.8 -73.8 250 FL150 240" })
+  check_eq(ex("set the destination of the LAN Ecuador 902 to SEQU"), "DEST LNE902 SEQU")
+  check_eq(ex("aerolane nine zero two climb flight level two one zero"), "ALT LNE902 FL210")
+  check_eq(ex("LAN nine zero two descend flight level two six zero"), "ALT LAN902 FL260")
+  check_eq(ex("aerorepublica five five turn right heading zero nine zero"), "HDG RPB55 90 RIGHT")
+  -- the group's name alone with a flight number two of its airlines fly is asked
+  asked(ex("LATAM 902 climb FL320"), "LATAM 902: LAN or LNE")
+end
+
+-- Cycle 39 (fix79): "be level FL190 over PUNPU", "to reach ... overhead X": a level to be reached over a
+-- waypoint of the route is its AT constraint; over a waypoint off the route it is asked
+do
+  local _, ex = scene({ "CRE CMP40 B738 9.4 -79.0 210 FL260 290", "DEFWPT KARIN 8.9 -79.3", "DEFWPT TOMAS 9.9 -79.9",
+    "ADDWPT CMP40 KARIN" })
+  check_eq(ex("CMP40 be level flight level one seven zero over KARIN"), "AT CMP40 KARIN ALT FL170")
+  check_eq(ex("CMP40 descend to reach FL150 overhead KARIN"), "AT CMP40 KARIN ALT FL150")
+  asked(ex("CMP40 be level FL170 over TOMAS"), "over a waypoint off the route")
+end
