@@ -3098,16 +3098,17 @@ function G:at_waypoint(s, spec)
       local qs = self:quantities(k + 2, r.b - 1)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
     end
-    -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES": the level
-    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there (`level_by`: that
-    -- level, the only value said before "by" or "at"; only "level", "reach", "be", "to" and fillers beside it)
+    -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES", "be level
+    -- one niner zero over PUNPU": the level of a climb or descent, to be reached by a waypoint, is its AT
+    -- constraint there (`level_by`: that level, the only value said before "by", "at", "over" or "overhead"; only "level",
+    -- "reach", "be", "to" and fillers beside it)
     local level_by
     local from = s.intent == "infer" and first or s.trig + 1
     local said_level = false  -- ("level" said as a word of its own, not in "flight level")
     for i = s.intent == "infer" and first or s.trig, r.b - 2 do
       said_level = said_level or self:word(i, "reach reaching lvl") or (self:word(i, "level") and not self:word(i - 1, "flight"))
     end
-    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at") and said_level then
+    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at over overhead") and said_level then
       local qs = self:quantities(s.b, r.b - 1)
       level_by = #qs == 1 and qs[1].kind == "alt" and qs[1] or nil
       for i = from, r.b - 2 do

@@ -6453,3 +6453,42 @@ do
   check_eq(ex("CMP40 descend to reach FL150 overhead KARIN"), "AT CMP40 KARIN ALT FL150")
   asked(ex("CMP40 be level FL170 over TOMAS"), "over a waypoint off the route")
 end
+
+-- Cycle 39 (fix79): "to" between a callsign's digits said in words and a latitude in words is the preposition
+-- when the digits with it would make no latitude ("move the Avianca two four to nine north": 2429 north)
+do
+  local _, ex = scene({ "CRE AVA36 A320 8.4 -79.3 350 FL200 280", "CRE AVA3628 A319 9.4 -79.6 170 FL220 280" })
+  check_eq(ex("move the Avianca three six to eight north seventy eight west"), "MOVE AVA36 8 -78")
+  check_eq(ex("move Avianca three six to one zero point five north, seventy nine west"), "MOVE AVA36 10.5 -79")
+  -- digits that with it still make a latitude stay the digit: another callsign
+  check_eq(ex("Avianca three six two eight climb flight level two four zero"), "ALT AVA3628 FL240")
+end
+
+-- Cycle 39 (fix79): "put the simulation at times four": a multiplier said of the simulation, "times" before or
+-- after its number, no aircraft named
+do
+  local _, ex = scene({ "CRE CMP40 B738 9.4 -79.0 210 FL260 290" })
+  check_eq(ex("put the simulation at times four"), "DTMULT 4")
+  check_eq(ex("simulation times two please"), "DTMULT 2")
+  -- an aircraft named: no clock's rate
+  asked(ex("put CMP40 at times four"), "an aircraft at times four")
+end
+
+-- Cycle 39 (fix79): a city whose name lexicon.city_airports gives is its one large airport ("Bogota" is SKBO,
+-- not the medium EL DORADO in Venezuela); a navaid's kind said before its name (the Spanish order, "the VOR
+-- Bogota", "from VOR BOG") names the navaid, no approach clearance
+do
+  local _, ex = navscene({}, "a city's large airport")
+  if ex then
+    check_eq(ex("set the wind at Bogota at FL120 to 250 degrees 15 knots"), "WIND SKBO FL120 250 15")
+  end
+  local _, ava = navscene({ "CRE AVA77 A320 4.9 -74.4 135 FL190 280" }, "the kind before a navaid's name")
+  if ava then
+    check_eq(ava("AVA77 proceed to the VOR Bogota"), "ADDWPT AVA77 BOG ; DIRECT AVA77 BOG")
+    check_eq(ava("AVA77 at two zero miles from the VOR Bogota descend one four thousand feet"),
+      "ATDIST AVA77 BOG 20 ALT AVA77 14000")
+    asked(ava("AVA77 direct to Bogota"), "the city: the BOG VOR or SKBO")
+    -- "VOR approach" stays an approach clearance, not simulated: no place
+    check_eq(ava("AVA77 cleared VOR approach runway 13L"), "")
+  end
+end
