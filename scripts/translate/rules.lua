@@ -392,6 +392,17 @@ return function(intent, rule, words)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
   end }
+  -- "put the simulation at times four", "set the sim to four times": a multiplier ("times" before or after its
+  -- number) said of the simulation itself,
+  -- no aircraft named and no instruction word before it ("run the simulation at times four" is run's)
+  rule { "sim simulation simulator", "dtmult", when = function(g, i)
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
+      if q.kind == "mult" or (q.kind == "plain" and g:word(q.b - 1, "times x")) then
+        return not g:has_ref(1, #g.t + 1, "aircraft") and not g:any_instruction_in(1, i)
+      end
+    end
+    return false
+  end }
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
