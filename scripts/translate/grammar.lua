@@ -4293,14 +4293,19 @@ for _, c in ipairs(lexicon.not_simulated) do
   for w in pairs(word_set(c.words, 1)) do NOT_SIMULATED_WORDS[w] = true end
 end
 
--- True when token i is a navaid's kind said after its name ("relocate to TKT VOR at FL300", "direct
--- Minsk NDB", "over the Spijkerboor VOR at FL180"): the place, no approach (a kind followed by
--- "approach", "TKT VOR approach", is one). The name is an ident read as a waypoint, or the one or two
--- words before the kind that name a navaid of that kind anywhere in the navdata.
-function G:navaid_named_before(i)
+-- True when token i is a navaid's kind said beside its name: after it ("relocate to TKT VOR at FL300",
+-- "direct Minsk NDB", "over the Spijkerboor VOR at FL180") or before it in the Spanish order ("from the VOR
+-- Bogota", "direct VOR BOG"): the place, no approach (a kind followed by "approach", "TKT VOR approach",
+-- "VOR approach", is one). The name is an ident read as a waypoint, or the one or two words beside the kind
+-- that name a navaid of that kind anywhere in the navdata.
+function G:navaid_named_beside(i)
   if not self:word(i, "@navaid_kinds") or self:word(self:skip_fillers(i + 1), "approach") then return false end
+  local after = not self:word(i + 1, "@navaid_kinds") and not self:word(i + 2, "approach")
   for _, r in ipairs(self.refs) do
-    if r.kind == "waypoint" and r.b < i and r.e >= i and not self:word(r.b, "@navaid_kinds") then return true end
+    if r.kind == "waypoint" and not self:word(r.b, "@navaid_kinds")
+        and ((r.b < i and r.e >= i) or (after and r.b == i + 1)) then
+      return true
+    end
   end
   local named, kind = self.world.navaids_named, lexicon.navaid_types[self.t[i].text]
   local function name_word(k)
@@ -4311,6 +4316,12 @@ function G:navaid_named_before(i)
   for k = i - 1, math.max(1, i - 2), -1 do
     if not named or not name_word(k) then break end
     phrase = self.t[k].text .. (phrase == "" and "" or " " .. phrase)
+    if #named(phrase, 0, 0, math.huge, kind) > 0 then return true end
+  end
+  phrase = ""
+  for k = i + 1, after and i + 2 or 0 do
+    if not named or not name_word(k) then break end
+    phrase = (phrase == "" and "" or phrase .. " ") .. self.t[k].text
     if #named(phrase, 0, 0, math.huge, kind) > 0 then return true end
   end
   return false
@@ -4371,7 +4382,7 @@ function G:not_simulated()
     local t = self.t[i]
     local class
     if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
-        and not self:navaid_named_before(i) then
+        and not self:navaid_named_beside(i) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))

@@ -1518,6 +1518,8 @@ function m:at_distance(s)
         k = side
       end
       local p = self:word(k, "from of to before") and self:skip_fillers(k + 1)
+      -- (the navaid's kind said before its name, "from the VOR Bogota", is no place of its own)
+      if p and self:word(p, "@navaid_kinds") and self.t[p + 1] and self.t[p + 1].kind == "word" then p = p + 1 end
       local r = p and self:refs_in(p, p + 1, "waypoint")[1]
       local ids = p and self:acids(s) or {}
       -- ("when 20 miles from Minna descend FL200", "ten miles from Zurich East descend": a navaid or airport

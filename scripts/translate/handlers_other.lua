@@ -1152,7 +1152,9 @@ return function(H, f, compass)
           -- ("Nantucket airport" is the airport, not the navaid of that name)
           -- (with `two_words`, a name an airport bears too stays the airport's: "London City")
           local airport = two_words and self.world.airports_named and #self.world.airports_named(phrase) > 0
+          -- (its kind said after it, or before it in the Spanish order: "the VOR Bogota")
           local kind = self.t[p[2]] and self.t[p[2]].kind == "word" and L.navaid_types[self.t[p[2]].text]
+            or (i > 1 and self.t[i - 1].kind == "word" and L.navaid_types[self.t[i - 1].text])
           local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
             or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, kind or nil)
           -- ("the Ottawa VOR": the VOR YOW, not the DME IOW of the same name that the navdata types TACAN)
@@ -1208,10 +1210,17 @@ return function(H, f, compass)
         end
         return out
       end
+      -- (the name lexicon.city_airports gives is the city's one large airport's: "Bogota" is SKBO "ELDORADO
+      -- INTL", not the medium SVED "EL DORADO" in Venezuela)
       local function said(phrase, ...)
         local ids = kept(list(phrase, ...))
         if #ids == 0 and L.city_airports[phrase] then
           ids = kept(list(L.city_airports[phrase], ...))
+          local large = {}
+          for _, id in ipairs(class and ids or {}) do
+            if class(id) == "LARGE" then large[#large + 1] = id end
+          end
+          if #large > 0 then ids = large end
           for _, id in ipairs(ids) do self.city_airport[id] = true end
         end
         return ids
@@ -1430,8 +1439,9 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
-          -- ("Eelde VOR" is the navaid, not the airport that bears its name)
-          local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")) and {}
+          -- ("Eelde VOR", "the VOR Bogota" in the Spanish order, is the navaid, not the airport that bears its name)
+          local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")
+              or self:word(i - 1, "@navaid_kinds")) and {}
             or named(phrase)
           -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the only large or medium airport
           -- of the name near the aircraft, when the two words together name none)
