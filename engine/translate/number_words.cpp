@@ -56,7 +56,8 @@ bool speed_follows(const std::vector<Token>& t, size_t i) {
 bool position_after_to(const std::vector<Token>& t, size_t i) {
   if (t[i].text != "to" && t[i].text != "too") return false;
   std::string before;
-  for (size_t k = i; k > 0 && digit_at(t, k - 1) >= 0; --k) before.insert(before.begin(), static_cast<char>('0' + digit_at(t, k - 1)));
+  for (size_t k = i; k > 0 && digit_at(t, k - 1) >= 0; --k)
+    before.insert(before.begin(), static_cast<char>('0' + digit_at(t, k - 1)));
   std::string digits;
   size_t j = i + 1;
   while (digit_at(t, j) >= 0) digits += static_cast<char>('0' + digit_at(t, j++));
@@ -67,7 +68,8 @@ bool position_after_to(const std::vector<Token>& t, size_t i) {
   const double limit = is_word(t, j, "north") || is_word(t, j, "south") ? 90.0
                        : is_word(t, j, "east") || is_word(t, j, "west") ? 180.0
                                                                         : 0.0;
-  return limit > 0.0 && !digits.empty() && std::strtod((before + "2" + digits).c_str(), nullptr) > limit &&
+  return limit > 0.0 && !digits.empty() &&
+         std::strtod((before + "2" + digits).c_str(), nullptr) > limit &&
          std::strtod(digits.c_str(), nullptr) <= limit;
 }
 
@@ -165,7 +167,7 @@ int digit_word(const std::string& w) {
   for (size_t i = 0; i < kDigits.size(); ++i)
     if (w == kDigits[i]) return static_cast<int>(i);
   if (w == "niner") return 9;
-  if (w == "fife") return 5;
+  if (w == "fife" || w == "fiver") return 5;
   if (w == "tree") return 3;
   if (w == "fower") return 4;
   return -1;

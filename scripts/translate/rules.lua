@@ -320,6 +320,8 @@ return function(intent, rule, words)
   -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
   rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
+  -- ("expedite your descent to FL120", "expedite the climb to ...": the level after it)
+  rule { "expedite", "alt", next = "your the", near = { 2, "climb descent" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
   -- "fly at 30000 ft with speed 290 and heading 100", "stay at FL300": the level flown at

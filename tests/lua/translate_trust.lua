@@ -6492,3 +6492,16 @@ do
     check_eq(ava("AVA77 cleared VOR approach runway 13L"), "")
   end
 end
+
+-- Cycle 39 (fix79): English typed by Spanish speakers: "procede direct" (as "proceder" is spelled), "expedite
+-- your/the descent to ...", the digit "fiver"; "is for traffic", "until further advise" are reasons and
+-- limits, no values
+do
+  local _, ex = scene({ "CRE AVA51 A320 4.9 -74.4 135 FL190 280", "DEFWPT GAVIN 5.2 -74.0", "ADDWPT AVA51 GAVIN" })
+  check_eq(ex("AVA51 procede direct GAVIN"), "DIRECT AVA51 GAVIN")
+  check_eq(ex("AVA51 expedite your descent to flight level one one zero"), "ALT AVA51 FL110")
+  asked(ex("AVA51 expedite your descent"), "a descent with no level")
+  check_eq(ex("AVA51 reduce to two fiver zero knots"), "SPD AVA51 250")
+  check_eq(ex("AVA51 turn to the left heading tree four zero, is for traffic"), "HDG AVA51 340 LEFT")
+  check_eq(ex("AVA51 maintain flight level one niner zero until further advise"), "ALT AVA51 FL190")
+end
