@@ -3127,16 +3127,17 @@ function G:at_waypoint(s, spec)
       local qs = self:quantities(k + 2, r.b - 1)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
     end
-    -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES": the level
-    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there (`level_by`: that
-    -- level, the only value said before "by" or "at"; only "level", "reach", "be", "to" and fillers beside it)
+    -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES", "be level
+    -- one niner zero over PUNPU": the level of a climb or descent, to be reached by a waypoint, is its AT
+    -- constraint there (`level_by`: that level, the only value said before "by", "at", "over" or "overhead"; only "level",
+    -- "reach", "be", "to" and fillers beside it)
     local level_by
     local from = s.intent == "infer" and first or s.trig + 1
     local said_level = false  -- ("level" said as a word of its own, not in "flight level")
     for i = s.intent == "infer" and first or s.trig, r.b - 2 do
       said_level = said_level or self:word(i, "reach reaching lvl") or (self:word(i, "level") and not self:word(i - 1, "flight"))
     end
-    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at") and said_level then
+    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at over overhead") and said_level then
       local qs = self:quantities(s.b, r.b - 1)
       level_by = #qs == 1 and qs[1].kind == "alt" and qs[1] or nil
       for i = from, r.b - 2 do
@@ -4325,14 +4326,19 @@ for _, c in ipairs(lexicon.not_simulated) do
   for w in pairs(word_set(c.words, 1)) do NOT_SIMULATED_WORDS[w] = true end
 end
 
--- True when token i is a navaid's kind said after its name ("relocate to TKT VOR at FL300", "direct
--- Minsk NDB", "over the Spijkerboor VOR at FL180"): the place, no approach (a kind followed by
--- "approach", "TKT VOR approach", is one). The name is an ident read as a waypoint, or the one or two
--- words before the kind that name a navaid of that kind anywhere in the navdata.
-function G:navaid_named_before(i)
+-- True when token i is a navaid's kind said beside its name: after it ("relocate to TKT VOR at FL300",
+-- "direct Minsk NDB", "over the Spijkerboor VOR at FL180") or before it in the Spanish order ("from the VOR
+-- Bogota", "direct VOR BOG"): the place, no approach (a kind followed by "approach", "TKT VOR approach",
+-- "VOR approach", is one). The name is an ident read as a waypoint, or the one or two words beside the kind
+-- that name a navaid of that kind anywhere in the navdata.
+function G:navaid_named_beside(i)
   if not self:word(i, "@navaid_kinds") or self:word(self:skip_fillers(i + 1), "approach") then return false end
+  local after = not self:word(i + 1, "@navaid_kinds") and not self:word(i + 2, "approach")
   for _, r in ipairs(self.refs) do
-    if r.kind == "waypoint" and r.b < i and r.e >= i and not self:word(r.b, "@navaid_kinds") then return true end
+    if r.kind == "waypoint" and not self:word(r.b, "@navaid_kinds")
+        and ((r.b < i and r.e >= i) or (after and r.b == i + 1)) then
+      return true
+    end
   end
   local named, kind = self.world.navaids_named, lexicon.navaid_types[self.t[i].text]
   local function name_word(k)
@@ -4343,6 +4349,12 @@ function G:navaid_named_before(i)
   for k = i - 1, math.max(1, i - 2), -1 do
     if not named or not name_word(k) then break end
     phrase = self.t[k].text .. (phrase == "" and "" or " " .. phrase)
+    if #named(phrase, 0, 0, math.huge, kind) > 0 then return true end
+  end
+  phrase = ""
+  for k = i + 1, after and i + 2 or 0 do
+    if not named or not name_word(k) then break end
+    phrase = (phrase == "" and "" or phrase .. " ") .. self.t[k].text
     if #named(phrase, 0, 0, math.huge, kind) > 0 then return true end
   end
   return false
@@ -4416,7 +4428,7 @@ function G:not_simulated()
     local t = self.t[i]
     local class
     if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
-        and not self:navaid_named_before(i) then
+        and not self:navaid_named_beside(i) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
@@ -5282,6 +5294,7 @@ function M.translate(text, world)
   g:prefix_refs()
   g:role_refs()
   g:fix_refs()
+  g:navaid_name_refs()
   g:opening_right()
   g:runway_sides()
   g:level_limits()

@@ -872,24 +872,7 @@ return function(H, f, compass)
       if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
         local whole = self:whole_place_name(r, b, e, id)
         if whole ~= nil then return whole or nil end
-        -- ("direct TEBBY": the name of the one navaid near the aircraft, TEB, before a fix of that ident
-        -- elsewhere, off its route)
-        local a = self:state(id)
-        local near = a and a.lat and self.world.navaids_named
-          and self.world.navaids_named(r.name, a.lat, a.lon, L.navaid_range_nm) or {}
-        local keep = false
-        for _, w in ipairs(a and a.route or {}) do keep = keep or w:upper() == r.name:upper() end
-        -- (a fix of that ident near the aircraft stays that fix)
-        local flat, flon = nil, nil
-        if #near == 1 and self.world.user_waypoint_at then flat, flon = self.world.user_waypoint_at(r.name) end
-        if flat then
-          local dlat, dlon = flat - a.lat, (flon - a.lon) * math.cos(math.rad(a.lat))
-          keep = keep or 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm
-        end
-        if #near == 1 and near[1]:upper() ~= r.name:upper() and not keep then
-          self:explain(r.b, r.e)
-          return near[1]
-        end
+        -- (a navaid's name in capitals, "direct TEBBY", is its ident already: m:navaid_name_refs)
         return r.name
       end
     end
@@ -1169,7 +1152,9 @@ return function(H, f, compass)
           -- ("Nantucket airport" is the airport, not the navaid of that name)
           -- (with `two_words`, a name an airport bears too stays the airport's: "London City")
           local airport = two_words and self.world.airports_named and #self.world.airports_named(phrase) > 0
+          -- (its kind said after it, or before it in the Spanish order: "the VOR Bogota")
           local kind = self.t[p[2]] and self.t[p[2]].kind == "word" and L.navaid_types[self.t[p[2]].text]
+            or (i > 1 and self.t[i - 1].kind == "word" and L.navaid_types[self.t[i - 1].text])
           local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
             or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, kind or nil)
           -- ("the Ottawa VOR": the VOR YOW, not the DME IOW of the same name that the navdata types TACAN)
@@ -1225,10 +1210,17 @@ return function(H, f, compass)
         end
         return out
       end
+      -- (the name lexicon.city_airports gives is the city's one large airport's: "Bogota" is SKBO "ELDORADO
+      -- INTL", not the medium SVED "EL DORADO" in Venezuela)
       local function said(phrase, ...)
         local ids = kept(list(phrase, ...))
         if #ids == 0 and L.city_airports[phrase] then
           ids = kept(list(L.city_airports[phrase], ...))
+          local large = {}
+          for _, id in ipairs(class and ids or {}) do
+            if class(id) == "LARGE" then large[#large + 1] = id end
+          end
+          if #large > 0 then ids = large end
           for _, id in ipairs(ids) do self.city_airport[id] = true end
         end
         return ids
@@ -1447,8 +1439,9 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
-          -- ("Eelde VOR" is the navaid, not the airport that bears its name)
-          local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")) and {}
+          -- ("Eelde VOR", "the VOR Bogota" in the Spanish order, is the navaid, not the airport that bears its name)
+          local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")
+              or self:word(i - 1, "@navaid_kinds")) and {}
             or named(phrase)
           -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the only large or medium airport
           -- of the name near the aircraft, when the two words together name none)

@@ -975,6 +975,8 @@ return {
     { heard = { "velocidad actual" }, means = "present speed", after = { "mantenga", "mantener", "maintain" } },
     { heard = { "nivel actual" }, means = "present level", after = { "mantenga", "mantener", "maintain" } },
     { heard = { "proceda" }, means = "proceed", before = { "directo", "direct", "direct-to" } },
+    -- (English typed by a Spanish speaker: "procede direct GAVOL", as "proceder" is spelled)
+    { heard = { "procede", "proced" }, means = "proceed", before = { "directo", "direct", "direct-to", "to" } },
     { heard = { "directo" }, means = "direct", before = { "a", "al" }, after = { "proceda", "proceed", "vuele" } },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",

@@ -426,6 +426,35 @@ local names = {
     { "boliviana", "BOV" },  -- (Boliviana de Aviacion)
     { "passaredo", "PTB" },  -- (VOEPASS)
     { "voepass", "PTB" },
+    -- (the country airlines of a group, by telephony and by the name said with the country: "LAN Ecuador 1422")
+    { "lanperu", "LPE" },
+    { "lan peru", "LPE" },
+    { "latam peru", "LPE" },
+    { "aerolane", "LNE" },  -- (LATAM Ecuador)
+    { "lan ecuador", "LNE" },
+    { "latam ecuador", "LNE" },
+    { "lan colombia", "ARE" },
+    { "latam colombia", "ARE" },
+    { "lan argentina", "DSM" },
+    { "latam argentina", "DSM" },
+    { "lanex", "LXP" },  -- (LAN Express)
+    { "lan express", "LXP" },
+    { "latam chile", "LAN" },
+    { "latam brasil", "TAM" },
+    { "latam brazil", "TAM" },
+    { "aerogal", "GLG" },  -- (Avianca Ecuador)
+    { "avianca ecuador", "GLG" },
+    { "avianca costa rica", "LRC" },
+    { "avianca el salvador", "TAI" },
+    { "aviateca", "GUG" },  -- (Avianca Guatemala)
+    { "avianca guatemala", "GUG" },
+    { "aerorepublica", "RPB" },  -- (Copa Airlines Colombia)
+    { "copa colombia", "RPB" },
+    { "satena", "NSE" },
+    { "easyfly", "EFY" },
+    { "avior", "ROI" },
+    { "laser", "LER" },
+    { "conviasa", "VCV" },
     -- airlines of the Asia-Pacific area: ICAO telephony as controllers there say it, "Hong Kong" also run
     -- together as speech recognition writes it ("hongkong shuttle two one seven": HKE217, no SHT217)
     { "velocity", "VOZ" },  -- (Virgin Australia)

@@ -321,6 +321,8 @@ return function(intent, rule, words)
   -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
   rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
+  -- ("expedite your descent to FL120", "expedite the climb to ...": the level after it)
+  rule { "expedite", "alt", next = "your the", near = { 2, "climb descent" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
   -- "fly at 30000 ft with speed 290 and heading 100", "stay at FL300": the level flown at
@@ -392,6 +394,17 @@ return function(intent, rule, words)
   rule { "sim simulation simulator", "dtmult", when = function(g, i)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
+  end }
+  -- "put the simulation at times four", "set the sim to four times": a multiplier ("times" before or after its
+  -- number) said of the simulation itself,
+  -- no aircraft named and no instruction word before it ("run the simulation at times four" is run's)
+  rule { "sim simulation simulator", "dtmult", when = function(g, i)
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
+      if q.kind == "mult" or (q.kind == "plain" and g:word(q.b - 1, "times x")) then
+        return not g:has_ref(1, #g.t + 1, "aircraft") and not g:any_instruction_in(1, i)
+      end
+    end
+    return false
   end }
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }

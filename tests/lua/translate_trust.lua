@@ -6516,3 +6516,98 @@ do
   check_eq(ex("BAW256 climb FL300"), "ALT BAW256 FL300")
   check_eq(ex("Lufthansa 9CK, 9CK, reduce 250"), "SPD DLH9CK 250")
 end
+
+-- Cycle 39 (fix79): a navaid said by its navdata name in capitals ("LIMA" is the LIM VOR-DME over Peru, not
+-- the Italian airfield of that ident) is its ident for every place argument; a place of that ident near the
+-- traffic elsewhere than the navaid (the fix LAMAR 40 NM from the LAMAR VOR, LAA) is asked about
+do
+  local _, ex = navscene({ "CRE LPE77 A320 -12.3 -76.9 330 FL150 250", "CRE SKU301 A20N -11.8 -77.4 150 FL200 280" },
+    "navaid names in capitals")
+  if ex then
+    check_eq(ex("LPE77, when 15 miles from LIMA, descend FL100"), "ATDIST LPE77 LIM 15 ALT LPE77 FL100")
+    check_eq(ex("where is the LIMA VOR?"), "POS LIM")
+    check_eq(ex("SKU301 proceed direct LIMA"), "ADDWPT SKU301 LIM ; DIRECT SKU301 LIM")
+    check_eq(ex("LPE77 add LIMA to the route"), "ADDWPT LPE77 LIM")
+    -- a waypoint being defined under that name is no navaid
+    check_eq(ex("define waypoint LIMA at 12 south 77 west"), "DEFWPT LIMA -12 -77")
+  end
+  local _, far = navscene({ "CRE N123AB C172 38.3 -102.9 090 8000 110" }, "a navaid name that a fix bears")
+  if far then
+    check(far("N123AB direct LAMAR"):match("^ASK .*LAA") ~= nil, "the fix LAMAR or the LAMAR VOR")
+  end
+end
+
+-- Cycle 39 (fix79): the country airlines of a group by the name said with the country ("LAN Ecuador 1422":
+-- LNE, "LAN Peru": LPE) and by their ICAO telephony ("Aerolane", "Aerorepublica")
+do
+  local _, ex = scene({ "CRE LNE902 A320 -0.8 -78.9 045 FL190 280", "CRE LAN902 B788 -1.5 -79.5 200 FL300 290",
+    "CRE RPB55 A320 4.8 -73.8 250 FL150 240" })
+  check_eq(ex("set the destination of the LAN Ecuador 902 to SEQU"), "DEST LNE902 SEQU")
+  check_eq(ex("aerolane nine zero two climb flight level two one zero"), "ALT LNE902 FL210")
+  check_eq(ex("LAN nine zero two descend flight level two six zero"), "ALT LAN902 FL260")
+  check_eq(ex("aerorepublica five five turn right heading zero nine zero"), "HDG RPB55 90 RIGHT")
+  -- the group's name alone with a flight number two of its airlines fly is asked
+  asked(ex("LATAM 902 climb FL320"), "LATAM 902: LAN or LNE")
+end
+
+-- Cycle 39 (fix79): "be level FL190 over PUNPU", "to reach ... overhead X": a level to be reached over a
+-- waypoint of the route is its AT constraint; over a waypoint off the route it is asked
+do
+  local _, ex = scene({ "CRE CMP40 B738 9.4 -79.0 210 FL260 290", "DEFWPT KARIN 8.9 -79.3", "DEFWPT TOMAS 9.9 -79.9",
+    "ADDWPT CMP40 KARIN" })
+  check_eq(ex("CMP40 be level flight level one seven zero over KARIN"), "AT CMP40 KARIN ALT FL170")
+  check_eq(ex("CMP40 descend to reach FL150 overhead KARIN"), "AT CMP40 KARIN ALT FL150")
+  asked(ex("CMP40 be level FL170 over TOMAS"), "over a waypoint off the route")
+end
+
+-- Cycle 39 (fix79): "to" between a callsign's digits said in words and a latitude in words is the preposition
+-- when the digits with it would make no latitude ("move the Avianca two four to nine north": 2429 north)
+do
+  local _, ex = scene({ "CRE AVA36 A320 8.4 -79.3 350 FL200 280", "CRE AVA3628 A319 9.4 -79.6 170 FL220 280" })
+  check_eq(ex("move the Avianca three six to eight north seventy eight west"), "MOVE AVA36 8 -78")
+  check_eq(ex("move Avianca three six to one zero point five north, seventy nine west"), "MOVE AVA36 10.5 -79")
+  -- digits that with it still make a latitude stay the digit: another callsign
+  check_eq(ex("Avianca three six two eight climb flight level two four zero"), "ALT AVA3628 FL240")
+end
+
+-- Cycle 39 (fix79): "put the simulation at times four": a multiplier said of the simulation, "times" before or
+-- after its number, no aircraft named
+do
+  local _, ex = scene({ "CRE CMP40 B738 9.4 -79.0 210 FL260 290" })
+  check_eq(ex("put the simulation at times four"), "DTMULT 4")
+  check_eq(ex("simulation times two please"), "DTMULT 2")
+  -- an aircraft named: no clock's rate
+  asked(ex("put CMP40 at times four"), "an aircraft at times four")
+end
+
+-- Cycle 39 (fix79): a city whose name lexicon.city_airports gives is its one large airport ("Bogota" is SKBO,
+-- not the medium EL DORADO in Venezuela); a navaid's kind said before its name (the Spanish order, "the VOR
+-- Bogota", "from VOR BOG") names the navaid, no approach clearance
+do
+  local _, ex = navscene({}, "a city's large airport")
+  if ex then
+    check_eq(ex("set the wind at Bogota at FL120 to 250 degrees 15 knots"), "WIND SKBO FL120 250 15")
+  end
+  local _, ava = navscene({ "CRE AVA77 A320 4.9 -74.4 135 FL190 280" }, "the kind before a navaid's name")
+  if ava then
+    check_eq(ava("AVA77 proceed to the VOR Bogota"), "ADDWPT AVA77 BOG ; DIRECT AVA77 BOG")
+    check_eq(ava("AVA77 at two zero miles from the VOR Bogota descend one four thousand feet"),
+      "ATDIST AVA77 BOG 20 ALT AVA77 14000")
+    asked(ava("AVA77 direct to Bogota"), "the city: the BOG VOR or SKBO")
+    -- "VOR approach" stays an approach clearance, not simulated: no place
+    check_eq(ava("AVA77 cleared VOR approach runway 13L"), "")
+  end
+end
+
+-- Cycle 39 (fix79): English typed by Spanish speakers: "procede direct" (as "proceder" is spelled), "expedite
+-- your/the descent to ...", the digit "fiver"; "is for traffic", "until further advise" are reasons and
+-- limits, no values
+do
+  local _, ex = scene({ "CRE AVA51 A320 4.9 -74.4 135 FL190 280", "DEFWPT GAVIN 5.2 -74.0", "ADDWPT AVA51 GAVIN" })
+  check_eq(ex("AVA51 procede direct GAVIN"), "DIRECT AVA51 GAVIN")
+  check_eq(ex("AVA51 expedite your descent to flight level one one zero"), "ALT AVA51 FL110")
+  asked(ex("AVA51 expedite your descent"), "a descent with no level")
+  check_eq(ex("AVA51 reduce to two fiver zero knots"), "SPD AVA51 250")
+  check_eq(ex("AVA51 turn to the left heading tree four zero, is for traffic"), "HDG AVA51 340 LEFT")
+  check_eq(ex("AVA51 maintain flight level one niner zero until further advise"), "ALT AVA51 FL190")
+end
