@@ -3776,6 +3776,12 @@ function G:meaning_carried(i, kinds)
     return true
   end
   if self:word(i, "@off") and kinds.off then return true end
+  -- "cancel that heading, put it back on the route", "undo the vectors, resume own navigation": the heading
+  -- taken back by the route resumed
+  if self:word(i, "cancel cancels cancelled canceled undo") and kinds.route
+      and self:word_in(i + 1, math.min(#self.t + 1, i + 4), "heading headings hdg vector vectors vectoring") then
+    return true
+  end
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
       if self:has_ref(k, k + 1, "waypoint") then return true end
@@ -3785,7 +3791,8 @@ function G:meaning_carried(i, kinds)
 end
 
 -- The commands issued, as a set of their lower-case words (a name said as it is issued: "direct
--- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to.
+-- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to, the
+-- route resumed (LNAV ON).
 function G:issued()
   local words, kinds = {}, {}
   for _, line in ipairs(self.out) do
@@ -3795,6 +3802,7 @@ function G:issued()
       if CONDITIONAL[name] then kinds.conditional = true end
       if name == "DIRECT" then kinds.direct = true end
       if name == "ALT" then kinds.alt = true end
+      if name == "LNAV" and part:upper():find("%f[%w]ON%f[%W]") then kinds.route = true end
       if name == "DTMULT" or name == "FF" then kinds.clock = true end
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
     end
@@ -4469,6 +4477,12 @@ function G:not_simulated()
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
+        -- ("expect further descent in five minutes, for now FL180": a class with `clause` ends at a comma before
+        -- a clause said for the meantime, "now" in its first three words, with a level, speed or heading)
+        if class.clause and x.text == "," and self:word_in(e + 1, e + 4, "now meanwhile meantime")
+            and self:clause_value(e + 1) then
+          break
+        end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
         -- (a class with `clause` goes on through instruction words up to its first comma: "expect to resume own
         -- navigation to MNR" announces all of it)
