@@ -403,8 +403,9 @@ return function(H, f, compass)
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
     -- order: heading, altitude, speed: "fl300 290"); others are asked about
-    -- (each value read accounts for one value said: "hdg 270 FL350 270" leaves the second 270 to read)
-    local read = { lat, lon, hdg, alt, spd, mach }
+    -- (each value read accounts for one value said: "hdg 270 FL350 270" leaves the second 270 to read as the
+    -- speed; with the speed said, a value said again is a repeat, "runway heading 240 so 240")
+    local read, used = { lat, lon, hdg, alt, spd, mach }, {}
     local left = {}
     local from = s.e  -- values before the callsign or type count aircraft ("create two aircraft: ...")
     for _, r in ipairs(self.refs) do
@@ -413,10 +414,14 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.b < from or self:in_reason(q.b) then goto continue end  -- (nor "one" in a remark: "- the long-haul one")
       local seen = self.taken[q.b] ~= nil  -- (read already: an offset's distance)
+      local again = false
       for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
         local v = read[k]
-        if not seen and v and math.abs(v - q.value) < 1e-9 then seen, read[k] = true, nil end
+        if not seen and v and math.abs(v - q.value) < 1e-9 then
+          if used[k] then again = true else seen, used[k] = true, true end
+        end
       end
+      seen = seen or (again and (spd or mach) ~= nil)
       -- ("United 455, seven three niner, B739": the designator's digits said just before it)
       for _, r in ipairs(types) do
         seen = seen or (r.name == actype and q.kind == "plain" and self:skip_fillers(q.e) == r.b

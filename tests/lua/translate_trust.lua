@@ -6461,6 +6461,8 @@ do
     "CRE XY1 A320 52 4 250 FL250 250 ; CRE XY2 A320 52.5 4 90 FL250 290")
   check_eq(ex("let's do a crossing pair, XY4 B738 at 52.0 4.0 heading 180 FL300 280 and XY5 B738 at 51.5 4.5 "
     .. "heading 360 FL300 280"), "CRE XY4 B738 52 4 180 FL300 280 ; CRE XY5 B738 51.5 4.5 360 FL300 280")
+  -- with the speed said, a value said again is a repeat
+  check_eq(ex("create XY7 A320 at 52.0 4.0, heading 240 so 240, FL100, 200 kt"), "CRE XY7 A320 52 4 240 FL100 200")
   -- a lead-in that names an aircraft flying is no label
   ex = select(2, scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270" }))
   asked(ex("NLX40 first, XY6 B738 at 52.0 4.0 heading 180 FL300 280"), "an aircraft before the new one")
