@@ -530,7 +530,28 @@ local function holds_word(lower, patterns)
   end
   return false
 end
+-- "30 degrees right, er, left": a side, hesitations only (lexicon.hesitations, "hmm") and the other side is
+-- the side corrected ("right, correction, left")
+local SIDE_HESITATIONS = set_of(lexicon.hesitations)
+SIDE_HESITATIONS.hmm = true
+local function hesitated_sides(text)
+  local lower = text:lower()
+  if not lower:find("%f[%a]left%f[%A]") or not lower:find("%f[%a]right%f[%A]") then return text end
+  local toks = bare_words(text)
+  local pieces, from = {}, 1
+  for k, t in ipairs(toks) do
+    local j = k + 1
+    while SIDES[t.bare] and toks[j] and SIDE_HESITATIONS[toks[j].bare] do j = j + 1 end
+    if j > k + 1 and toks[j] and SIDES[toks[j].bare] and toks[j].bare ~= t.bare then
+      pieces[#pieces + 1] = text:sub(from, t.e - 1) .. ", correction, "
+      from = toks[j].at
+    end
+  end
+  pieces[#pieces + 1] = text:sub(from)
+  return table.concat(pieces)
+end
 local function self_corrections(text)
+  text = hesitated_sides(text)
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
   local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
@@ -1229,6 +1250,16 @@ local function title_end(self, k)
   return e
 end
 
+-- The comma or colon ending a lead-in clause at k that opens the request before the new aircraft it lists ("I'd
+-- like a head-on pair, AEA10 B738 at ...": the creation rule read them so, G.opening_create); nil when none.
+local function creation_label_end(self, k)
+  local e = k
+  while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+  if not (self.t[e] and (self.t[e].text == "," or self.t[e].text == ":")) then return nil end
+  self:intent_at(e + 1)  -- (the creation rule, tried at any word, settles G.opening_create)
+  return (self.opening_create or 0) > e and self:commentary(k, e) and e or nil
+end
+
 -- The full stop or colon ending an experiment's label that opens a sentence at k ("exp CDR-FR-ES, run 1.",
 -- "Trial 3B:"; lexicon.aside.study_labels): label words, each followed by one to three identifiers (plain
 -- numbers, words written with a capital or a digit; no aircraft, type or instruction word), commas
@@ -1342,6 +1373,9 @@ function G:in_reason(i)
       elseif start and t.kind == "word" and study_label_end(self, k) then
         -- ("exp CDR-FR-ES, run 1. cre AFR1234 ...": an experiment's label, up to its full stop or colon)
         inside, reason[k] = true, true
+      elseif k == opening and t.kind == "word" and creation_label_end(self, k) then
+        -- ("I'd like a head-on pair, AEA10 B738 at ...")
+        inside, lead_end, self.reason[k] = true, creation_label_end(self, k), true
       elseif k == opening and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
           and title_end(self, k) then
         -- ("converging pair please: KLM401 B738 at ...": a title opening the request, up to its colon)
@@ -2365,6 +2399,29 @@ function G:question_back()
   end
 end
 
+-- The end of the clause of the last instruction of intent `kind` ("hdg", "alt", ...) said before token a: the
+-- first comma, "and" or word of lexicon.then_words after its instruction word and its first value; nil when
+-- none was said.
+function G:kept_clause_end(kind, a)
+  local p = a - 1
+  while p >= 1 and self:intent_at(p) ~= kind do p = p - 1 end
+  if p < 1 then return nil end
+  local q = self:quantities(p, a)[1]
+  local k = q and q.e or p + 1
+  while k < a and not (self.t[k].kind == "punct" or self:word(k, "and @then_words")) do k = k + 1 end
+  return k
+end
+
+-- True when the clause from token b (to its next punctuation) holds a level, speed, Mach or heading.
+function G:clause_value(b)
+  local e = b
+  while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+  for _, q in ipairs(self:quantities(b, e)) do
+    if q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading" then return true end
+  end
+  return false
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -2444,8 +2501,16 @@ function G:self_corrected()
           a = n
         elseif kept and (e > #self.t or self.t[e].kind == "punct") then
           self.kept = kept
-          self:mark_used(b, e)
-          for k = b, e - 1 do self.noted[k] = true end
+          -- (what was said after the kept instruction's clause is taken back with the rest: "turn left heading
+          -- 180, and at 15 miles from ARGAS, hmm, no, just the heading" drops the distance)
+          local from = math.min(b, self:kept_clause_end(kept:lower(), a) or b)
+          self:mark_used(from, e)
+          for k = from, e - 1 do self.noted[k] = true end
+          local refs = {}
+          for _, r in ipairs(self.refs) do
+            if r.b < from or r.b >= e then refs[#refs + 1] = r end
+          end
+          self.refs = refs
           a = e
         elseif q < b and (self:has_ref(c + 1, c + 2, "waypoint")
             or (self:quantities(c + 1, #self.t + 1)[1] or {}).b == c + 1) then
@@ -3438,14 +3503,15 @@ function G:uncarried()
       and not self.u:used(first) and self:word(first, "@up @down go")) do
     first = first + 1
   end
-  -- (a number straight after an aircraft flying, "at" between or not, and closed by a comma or "and",
-  -- "KLM12 330, turn left 090", "AEA6062 at 330, direct XING2", is a value said for it, however early)
+  -- (a number straight after an aircraft flying, "at" or "to" between or not, and closed by a comma or "and",
+  -- "KLM12 330, turn left 090", "AEA6062 at 330, direct XING2", "the Ryanair to 110 and 230 knots", is a value
+  -- said for it, however early)
   local function said_for_aircraft(q)
     if not (self.t[q.e] and ((self.t[q.e].kind == "punct" and self.t[q.e].text == ",") or self:word(q.e, "and"))) then
       return false
     end
     for _, r in ipairs(self:refs_in(1, q.b + 1, "aircraft")) do
-      if r.exists and (r.e == q.b or (r.e == q.b - 1 and self:word(r.e, "at"))) then return true end
+      if r.exists and (r.e == q.b or (r.e == q.b - 1 and self:word(r.e, "at to"))) then return true end
     end
     return false
   end
@@ -3744,6 +3810,12 @@ function G:meaning_carried(i, kinds)
     return true
   end
   if self:word(i, "@off") and kinds.off then return true end
+  -- "cancel that heading, put it back on the route", "undo the vectors, resume own navigation": the heading
+  -- taken back by the route resumed
+  if self:word(i, "cancel cancels cancelled canceled undo") and kinds.route
+      and self:word_in(i + 1, math.min(#self.t + 1, i + 4), "heading headings hdg vector vectors vectoring") then
+    return true
+  end
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
       if self:has_ref(k, k + 1, "waypoint") then return true end
@@ -3753,7 +3825,8 @@ function G:meaning_carried(i, kinds)
 end
 
 -- The commands issued, as a set of their lower-case words (a name said as it is issued: "direct
--- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to.
+-- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to, the
+-- route resumed (LNAV ON).
 function G:issued()
   local words, kinds = {}, {}
   for _, line in ipairs(self.out) do
@@ -3763,6 +3836,7 @@ function G:issued()
       if CONDITIONAL[name] then kinds.conditional = true end
       if name == "DIRECT" then kinds.direct = true end
       if name == "ALT" then kinds.alt = true end
+      if name == "LNAV" and part:upper():find("%f[%w]ON%f[%W]") then kinds.route = true end
       if name == "DTMULT" or name == "FF" then kinds.clock = true end
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
     end
@@ -4462,6 +4536,12 @@ function G:not_simulated()
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
+        -- ("expect further descent in five minutes, for now FL180": a class with `clause` ends at a comma before
+        -- a clause said for the meantime, "now" in its first three words, with a level, speed or heading)
+        if class.clause and x.text == "," and self:word_in(e + 1, e + 4, "now meanwhile meantime")
+            and self:clause_value(e + 1) then
+          break
+        end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
         -- (a class with `clause` goes on through instruction words up to its first comma: "expect to resume own
         -- navigation to MNR" announces all of it)

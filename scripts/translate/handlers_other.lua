@@ -403,7 +403,9 @@ return function(H, f, compass)
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
     -- order: heading, altitude, speed: "fl300 290"); others are asked about
-    local read = { lat, lon, hdg, alt, spd, mach }
+    -- (each value read accounts for one value said: "hdg 270 FL350 270" leaves the second 270 to read as the
+    -- speed; with the speed said, a value said again is a repeat, "runway heading 240 so 240")
+    local read, used = { lat, lon, hdg, alt, spd, mach }, {}
     local left = {}
     local from = s.e  -- values before the callsign or type count aircraft ("create two aircraft: ...")
     for _, r in ipairs(self.refs) do
@@ -412,10 +414,14 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.b < from or self:in_reason(q.b) then goto continue end  -- (nor "one" in a remark: "- the long-haul one")
       local seen = self.taken[q.b] ~= nil  -- (read already: an offset's distance)
+      local again = false
       for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
         local v = read[k]
-        if v and math.abs(v - q.value) < 1e-9 then seen = true end
+        if not seen and v and math.abs(v - q.value) < 1e-9 then
+          if used[k] then again = true else seen, used[k] = true, true end
+        end
       end
+      seen = seen or (again and (spd or mach) ~= nil)
       -- ("United 455, seven three niner, B739": the designator's digits said just before it)
       for _, r in ipairs(types) do
         seen = seen or (r.name == actype and q.kind == "plain" and self:skip_fillers(q.e) == r.b
@@ -2626,7 +2632,15 @@ return function(H, f, compass)
       -- (none near: the traffic's region's, "where is Cordoba airport?" over Argentina is SACO, not LEBA)
       named = named or self:airport_of_region(s.b, s.e, self.fleet[1])
     end
-    named = named or (no_aircraft and self:place_by_name(s.b, s.e))
+    -- (aircraft described, "where is the Iberia" with Iberias flying, are never a place of that name: they are
+    -- read, or asked about, below)
+    local described = false
+    for i = s.b, no_aircraft and not named and s.e - 1 or 0 do
+      local icao, _, codes = self:airline_at(i)
+      described = described or (icao ~= nil and #self:airline_fleet(icao, codes) > 0)
+    end
+    for _, u in ipairs(self.type_unresolved or {}) do described = described or (u.b >= s.b and u.b < s.e) end
+    named = named or (no_aircraft and not described and self:place_by_name(s.b, s.e))
     if named then return self:emit("POS " .. named) end
     if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end
     -- "show me where TEST01 and TEST03 are": each aircraft named

@@ -575,6 +575,11 @@ return function(H, f, wrap, compass)
     if self:word_in(tb, s.e, "@right") and self:find_word(tb, s.e, "@right") < self:find_word(tb, s.e, "@left") then
       turn = 1
     end
+    -- (a side corrected after the angle, "30 degrees right, sorry, left": that many degrees the corrected way)
+    if rel and rel.turn ~= 0 and turn ~= 0 and tb > rel.b then
+      rel = { kind = rel.kind, value = rel.value, b = rel.b, e = rel.e, turn = turn, number = rel.number, to = rel.to,
+              changed = rel.changed }
+    end
     local named
     for i = s.b, s.e - 1 do
       if named then break end

@@ -227,7 +227,7 @@ return {
         "manoeuvre", "manoeuvres", "maneuver", "maneuvers",
         -- an aircraft's present course described ("the Vueling's drifting off its route")
         "drifting", "drifted", "wandering", "straying", "deviating",
-        "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
+        "flying", "flew", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
         "automatically", "auto", "manual", "manually",
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac", "acft",
@@ -307,7 +307,7 @@ return {
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
-        "can't", "cannot", "won't", "shouldn't", "mustn't", "isn't", "aren't", "wasn't", "without", "except" },
+        "undo", "can't", "cannot", "won't", "shouldn't", "mustn't", "isn't", "aren't", "wasn't", "without", "except" },
     condition = { "if", "after", "until", "till", "before", "once", "when", "whenever", "unless" },
   },
   -- letters with accents written as navdata writes names, in plain letters ("Düsseldorf" DUSSELDORF)

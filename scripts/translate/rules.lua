@@ -101,6 +101,17 @@ return function(intent, rule, words)
           break
         end
       end
+      -- ("I'd like a head-on pair, AEA10 B738 at ...": a first clause up to its comma that names no value and
+      -- nothing (aircraft, type, place) and holds no instruction word is a label too)
+      for k = 1, colon == 0 and #g.t or 0 do
+        if g.t[k].kind == "punct" then
+          local bare = g.t[k].text == "," and #g:quantities(1, k) == 0
+          for _, r0 in ipairs(g.refs) do bare = bare and r0.b >= k end
+          for x = 1, bare and k - 1 or 0 do bare = bare and g:intent_at(x) == nil end
+          if bare then colon = k end
+          break
+        end
+      end
       local j = colon + 1
       while g.t[j] and (g.t[j].kind == "punct" or g.t[j].filler) do j = j + 1 end
       -- ("first one is KLM88 B789 ...", "can we have a Vueling A320 VLG88 ...": a lead-in of at most four

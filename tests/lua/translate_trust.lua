@@ -6611,3 +6611,83 @@ do
   check_eq(ex("AVA51 turn to the left heading tree four zero, is for traffic"), "HDG AVA51 340 LEFT")
   check_eq(ex("AVA51 maintain flight level one niner zero until further advise"), "ALT AVA51 FL190")
 end
+
+-- Cycle 39 (fix80a): a turn's side corrected after its angle ("20 degrees left, sorry, right"; "left, um,
+-- right": hesitations alone between two sides) turns that many degrees the corrected way
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250" })
+  check_eq(ex("EWG9 turn 20 degrees left, sorry, right"), "HDG EWG9 40 RIGHT")
+  check_eq(ex("EWG9 turn 20 degrees left, um, right"), "HDG EWG9 40 RIGHT")
+  check_eq(ex("turn NLX40 right 30, I mean left"), "HDG NLX40 170 LEFT")
+  -- the same side said again after a hesitation is no correction
+  check_eq(ex("EWG9 turn 20 degrees left, er, left"), "HDG EWG9 360 LEFT")
+end
+
+-- Cycle 39 (fix80a): a value straight after an aircraft and "to", closed by "and" or a comma, is said for it:
+-- never dropped beside the instruction after it ("the Ryanair to 110 and 230 knots"); digits with no unit
+-- are asked about
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270" })
+  asked(ex("NLX40 to two four zero and two five zero knots"), "a level or heading said bare after 'to'")
+  asked(ex("NLX40 to two four zero, and two five zero knots"), "the same with a comma")
+  check_eq(ex("NLX40 to FL240 and 250 knots"), "ALT NLX40 FL240 ; SPD NLX40 250")
+end
+
+-- Cycle 39 (fix80a): aircraft described ("where is the Iberia") are never a place of that name (navdata's
+-- IBERIA airfield): one that fits is shown, several are asked about
+do
+  local _, ex = navscene({ "CRE IBE31 A320 40.5 -3.5 180 FL150 250", "CRE IBE77 A321 40.2 -3.2 320 FL120 240",
+    "CRE AEA12 B738 40.6 -2.9 250 FL200 280" }, "aircraft described, never a place")
+  if ex then
+    asked(ex("where is the Iberia"), "two Iberias")
+    asked(ex("where is Iberia"), "two Iberias, no article")
+    check_eq(ex("where is the Air Europa"), "POS AEA12")
+  end
+end
+
+-- Cycle 39 (fix80a): "..., no, just the heading" takes back what was said after the kept instruction's clause
+-- (a condition and its instruction), not only the other kinds of command
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250" })
+  check_eq(ex("EWG9 heading 090 and at FL200 speed 230, actually no, just the heading"), "HDG EWG9 90")
+  check_eq(ex("NLX40 turn left heading 150, and at FL200 reduce 240, hmm no, only the heading"), "HDG NLX40 150 LEFT")
+  asked(ex("EWG9 heading 090, no, just the climb"), "the kept kind never said")
+end
+
+-- Cycle 39 (fix80a): new aircraft listed each get their own fields (a value equal to another field's is read
+-- in its place: "hdg 250 FL250 250"); a lead-in clause naming nothing, up to its comma, labels the list
+do
+  local _, ex = scene({})
+  check_eq(ex("two aircraft: XY1 A320 52.0 4.0 hdg 250 FL250 250, XY2 A320 52.5 4.0 hdg 090 FL250 290"),
+    "CRE XY1 A320 52 4 250 FL250 250 ; CRE XY2 A320 52.5 4 90 FL250 290")
+  check_eq(ex("let's do a crossing pair, XY4 B738 at 52.0 4.0 heading 180 FL300 280 and XY5 B738 at 51.5 4.5 "
+    .. "heading 360 FL300 280"), "CRE XY4 B738 52 4 180 FL300 280 ; CRE XY5 B738 51.5 4.5 360 FL300 280")
+  -- with the speed said, a value said again is a repeat
+  check_eq(ex("create XY7 A320 at 52.0 4.0, heading 240 so 240, FL100, 200 kt"), "CRE XY7 A320 52 4 240 FL100 200")
+  -- a lead-in that names an aircraft flying is no label
+  ex = select(2, scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270" }))
+  asked(ex("NLX40 first, XY6 B738 at 52.0 4.0 heading 180 FL300 280"), "an aircraft before the new one")
+end
+
+-- Cycle 39 (fix80a): corrections read: "flew" (a wish's past tense), a heading cancelled ("undo", "cancel")
+-- by the route resumed, an expected clearance up to a comma before a value for now; a heading cancelled with
+-- nothing in its place is still asked
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250",
+    "DEFWPT WPA 52.6 5.0", "ADDWPT NLX40 WPA" })
+  check_eq(ex("EWG9, I'd prefer it flew heading 100"), "HDG EWG9 100")
+  check_eq(ex("undo the heading on NLX40, back on its route please"), "LNAV NLX40 ON")
+  check_eq(ex("cancel the vectors for NLX40 and resume own navigation"), "LNAV NLX40 ON")
+  asked(ex("cancel the heading on NLX40 and climb FL260"), "a heading cancelled, a climb given")
+  check_eq(ex("EWG9 expect further climb in ten minutes, for now FL200"), "ALT EWG9 FL200")
+  check_eq(ex("EWG9 expect higher in ten minutes, FL240"), "")
+end
+
+-- Cycle 39 (fix80a): a list of simulation commands and instructions ("pause, then move ...") is translated on
+-- the traffic its setup creates, as one request is
+do
+  local function set(text, setup) return said(graph.translate(text, { setup = setup, mode = "offline" })) end
+  check_eq(set("hold, then move NLX40 to 52.2 4.2", "CRE NLX40 B738 52.3 4.8 200 FL220 270"),
+    "HOLD ; MOVE NLX40 52.2 4.2")
+  asked(set("hold, then move XX99 to 52.2 4.2", "CRE NLX40 B738 52.3 4.8 200 FL220 270"), "no such aircraft")
+end
