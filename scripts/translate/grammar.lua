@@ -517,6 +517,7 @@ local function bare_words(text)
 end
 local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
   set_of(lexicon.self_correction.markers), set_of(lexicon.self_correction.after)
+local SC_CLOSING = set_of(lexicon.self_correction.closing)
 -- patterns finding the first word of each marker as a whole word in lower-case text (a marker's word is
 -- a token's bare text only where one of these finds it)
 local SC_MARKER_PATTERNS = {}
@@ -3443,6 +3444,24 @@ function G:dangling_correction()
   if last > 0 and self:word(last, "@correction") then
     self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
       self.t[last].raw:lower()))
+    return
+  end
+  -- the same for a self-correction in words closing the request ("turn left 20, sorry", "climb FL300, no
+  -- wait"): a run of lexicon.self_correction's words holding one of its closing markers, as said (a typed "err" or
+  -- "sry", read as "sorry", is a hesitation there: "hdg 240 err")
+  local first = last + 1
+  while first > 1 and (self.t[first - 1].kind == "punct" or SC_WORDS[self.words[first - 1]]) do first = first - 1 end
+  local said = {}
+  for w in (self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
+  local marked = false
+  for k = math.max(1, #said - (last - first)), #said do
+    marked = marked or SC_CLOSING[said[k]] or (said[k + 1] ~= nil and SC_CLOSING[said[k] .. " " .. said[k + 1]])
+      or false
+  end
+  while first <= last and self.t[first].kind == "punct" do first = first + 1 end
+  if marked and first > 1 then
+    self:need(string.format("You said '%s' with nothing after it. What is the corrected instruction?",
+      self:raw(first, last + 1)))
   end
 end
 
@@ -5275,6 +5294,7 @@ local function numbered_steps(text)
   return table.concat(parts, ". ")
 end
 function M.translate(text, world)
+  local said = text
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
@@ -5365,7 +5385,8 @@ function M.translate(text, world)
   local u = squawk.translate.utterance(text, world, NAMES)
   local toks = u:tokens()
   local g = setmetatable({ u = u, t = toks, words = word_texts(toks), refs = u:refs(), world = world,
-    fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart }, G)
+    fleet = world.aircraft, out = {}, qcache = {}, taken = {}, noted = {}, triggers = {}, apart = apart,
+    text_said = said }, G)
   g:settle_callsigns()
   local same = g:same_for()
   g:airline_types()

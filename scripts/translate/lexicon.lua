@@ -509,6 +509,10 @@ return {
                                 "say", "again", "scratch", "corr", "hmm", "typo" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
                                   "corr" },
+                      -- the markers that, closing the request, take back what came before with nothing said
+                      -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
+                      -- it follows ("the Wideroe, I mean"), "from scratch" is no correction
+                      closing = { "no", "wait", "sorry", "actually", "make that", "say again", "corr" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)

@@ -6691,3 +6691,19 @@ do
     "HOLD ; MOVE NLX40 52.2 4.2")
   asked(set("hold, then move XX99 to 52.2 4.2", "CRE NLX40 B738 52.3 4.8 200 FL220 270"), "no such aircraft")
 end
+
+-- Cycle 39 (lead): a self-correction in words closing the request ("turn left 20, sorry", "climb FL300, no
+-- wait", "..., make that") takes the instruction back with nothing in its place: asked, naming the words; a
+-- hesitation alone ("uh"), a courtesy, "I mean" pointing back ("the Wideroe, I mean") or "from scratch" is none
+do
+  local _, ex = scene({ "CRE EWG9 A320 52 4 090 FL200 250" })
+  check_eq(ex("EWG9 turn left 20, sorry"),
+    "ASK You said 'sorry' with nothing after it. What is the corrected instruction?")
+  asked(ex("EWG9 climb FL300, no wait"), "'no wait' closing the request")
+  asked(ex("EWG9 climb FL300, make that"), "'make that' closing the request")
+  check_eq(ex("clear the sim and start over from scratch"):match("^ASK You said") == nil, true)
+  check_eq(ex("EWG9 climb FL300, no wait, FL320"), "ALT EWG9 FL320")
+  check_eq(ex("EWG9 climb FL300 uh"), "ALT EWG9 FL300")
+  check_eq(ex("EWG9 climb FL300 thanks"), "ALT EWG9 FL300")
+  check_eq(ex("sorry, EWG9 climb FL300"), "ALT EWG9 FL300")
+end
