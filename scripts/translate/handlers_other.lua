@@ -2622,6 +2622,12 @@ return function(H, f, compass)
     end
     local no_aircraft = #self:refs_in(s.b, s.e, "aircraft") == 0
     if no_aircraft and #places > 0 then return self:emit("POS " .. places[1].name) end
+    -- "where is AFR1234 relative to ANETO", "... in relation to GIROM", "... with respect to LAPOS": the place
+    -- the position is wanted from, which POS shows beside the aircraft's own
+    if not no_aircraft and #places == 1 and self:word(places[1].b - 1, "to")
+        and self:word(places[1].b - 2, "relative relation respect") then
+      self:explain(places[1].b - 2, places[1].e)
+    end
     -- a place by its name ("where is Schiphol?", "where is Munich airport?", "where the Kempten VOR is"); an
     -- airport said as such by the name of its city's navaids near the traffic ("show me Ezeiza airport": SAEZ
     -- "MINISTRO PISTARINI" beside the EZEIZA VOR), as a destination is

@@ -894,7 +894,9 @@ return {
                     -- (South-East Asia: cities whose one large airport the navdata names after a person, a
                     -- district or the island)
                     manila = "ninoy aquino intl", jakarta = "soekarno hatta intl", hanoi = "noibai intl",
-                    saigon = "tansonnhat intl", surabaya = "juanda", denpasar = "bali intl" },
+                    saigon = "tansonnhat intl", surabaya = "juanda", denpasar = "bali intl",
+                    -- (southern France: the city's airport named after the village beside it)
+                    perpignan = "rivesaltes", carcassonne = "salvaza" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")

@@ -122,6 +122,7 @@ return {
     { "sky airline", "SKU" },
     { "iberexpres", "IBS" },  -- (Iberia Express)
     { "air nostrum", "ANE" },
+    { "nostrum", "ANE" },  -- (said short, as "europa" is)
     { "binter", "IBB" },
     { "caribbean airlines", "BWA" },
     { "caribbean", "BWA" },

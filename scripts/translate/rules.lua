@@ -262,7 +262,8 @@ return function(intent, rule, words)
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "knock out KLM1234", "knock out the Cessna": an aircraft taken out of the simulation, nothing after it
   -- "take N73WX off the scope", "sup: n73wx off the scope": an aircraft taken off the display is deleted (the
-  -- aircraft straight before "off", opening the request or after "take"/"get"; "N73WX is off the scope" tells)
+  -- aircraft straight before "off", opening the request or after "take"/"get", "the" between them: "get the Air
+  -- France off the screen"; "N73WX is off the scope" tells)
   rule { "off", "delete", when = function(g, i)
     local k = g:word(i + 1, "the my your our") and i + 2 or i + 1
     if not g:word(k, "scope screen display radar") then return false end
@@ -270,9 +271,13 @@ return function(intent, rule, words)
     r = r[#r]
     if not (r and r.e == i and r.exists) then return false end
     local b = g:skip_fillers(1)
-    return r.b == b or (g:word(r.b - 1, "take get") and r.b - 1 == b)
+    local v = g:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+    return r.b == b or (g:word(v, "take get") and v == b)
   end }
   rule { "knock", "delete", next = "out", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 2), true) end }
+  -- "lose the Air Europa", "lose KLM12": an aircraft that flies lost from the simulation, nothing after it
+  -- ("lose 2000 feet", "lose the speed" name no aircraft)
+  rule { "lose", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), true) end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its
   -- aircraft between them, is no change of level
@@ -1020,7 +1025,10 @@ return function(intent, rule, words)
     if not named or not t or t.kind ~= "word" or not t.alpha or #t.text < 4 then return false end
     -- (or a city whose airport lies by navaids of its name: "Ezeiza", SAEZ beside the EZEIZA VOR)
     local beside = g.world.airports_beside_navaids
+    -- (a city named for its airport, lexicon.city_airports: "going to Perpignan", RIVESALTES)
+    local city = CITY_AIRPORTS[t.text]
     return #named(t.text) > 0 or (nx ~= nil and nx.kind == "word" and #named(t.text .. " " .. nx.text) > 0)
+      or (city ~= nil and #named(city) > 0)
       or (beside ~= nil and t.raw:match("^%u") ~= nil and #beside(t.text) > 0)
   end
   local function earlier(g, i, intent)
@@ -1168,6 +1176,12 @@ return function(intent, rule, words)
     return false
   end }
   rule { "listrte", "listrte" }
+  -- "what's IBE32 got left on its flight plan", "what's left of the Vueling's route", "what remains of KLM12's
+  -- routing": the rest of its route asked, the question opening the request (no value said)
+  rule { "route plan routing waypoints", "listrte", when = function(g, i)
+    return g:word(g:skip_fillers(1), "what what's whats") and g:word_in(math.max(1, i - 5), i, "left remaining remains")
+      and g:has_ref(1, i, "aircraft") and #g:quantities(1, #g.t + 1) == 0
+  end }
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
@@ -1200,6 +1214,10 @@ return function(intent, rule, words)
   -- "where's the MERIT intersection?"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
+  -- "tell me about the easyJet", "tell us about KLM12": an aircraft and nothing after it, its state asked
+  rule { "about", "pos", when = function(g, i)
+    return g:word(i - 1, "me us") and g:word(i - 2, "tell") and aircraft_alone(g, g:skip_fillers(i + 1), true)
+  end }
   rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
   -- "exp1 where", "KL204 where now?": the question typed after the aircraft, nothing after it
   rule { "where", "pos", when = function(g, i)
