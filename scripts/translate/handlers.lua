@@ -516,6 +516,44 @@ function m:asked_where(b, e)
   return self:word(k, "where wheres") or (self:word(k, "what whats") and self:word(e, "doing"))
 end
 
+-- "the two Vuelings", "both easyJets", "both the Air Europas", "all the Ryanairs": an airline said in the
+-- plural after "the", "all" or "both" (a count, a digit or a number word, after "the" or "all"), with
+-- exactly that many of it flying ("both": two; "the" or "all" with no count: two or more), names each of
+-- them: one reference per aircraft over the words (kind "aircraft", by_airline = true). Another count
+-- flying is left to the words' question. `inside`: the tokens other references hold.
+local COUNTS = { two = 2, three = 3, four = 4, ["2"] = 2, ["3"] = 3, ["4"] = 4 }
+function m:airline_group_refs(inside)
+  if not AIRLINE_NAMES then airline_names() end
+  for i = 1, #self.t do
+    local b = self:word(i, "the all both") and i
+    local k = b and (self:word(i + 1, "the") and i + 2 or i + 1)
+    local count = b and COUNTS[self.t[k] and self.t[k].text or ""]
+    if count then k = k + 1 end
+    if self:word(i, "both") then count = count or 2 end
+    for n = 3, 1, -1 do
+      local last = b and self.t[k + n - 1]
+      if last and last.kind == "word" and last.text:match("%as$") and not inside[k] then
+        local words = {}
+        for x = k, k + n - 1 do words[#words + 1] = self.t[x].kind == "word" and self.t[x].text or "" end
+        words[n] = words[n]:sub(1, -2)  -- ("vuelings": the airline's name and its plural's "s")
+        local said = table.concat(words, " ")
+        local icao = AIRLINE_NAMES[said]
+        local fits = icao and self:airline_fleet(icao, BRANDS[said]) or {}
+        if icao and (#fits == count or (not count and #fits >= 2)) then
+          local at = 1
+          while self.refs[at] and self.refs[at].b < b do at = at + 1 end
+          for j, id in ipairs(fits) do
+            table.insert(self.refs, at + j - 1, { kind = "aircraft", name = id, b = b, e = k + n, exists = true,
+              by_airline = true })
+          end
+          for x = b, k + n - 1 do inside[x] = true end
+          break
+        end
+      end
+    end
+  end
+end
+
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
 -- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
 -- airline flying, is a reference to it (added to self.refs, kind "aircraft",
@@ -632,6 +670,7 @@ function m:airline_refs()
       end
     end
   end
+  self:airline_group_refs(inside)
   local i = 1
   while i <= #self.t do
     local icao, e, codes = self:airline_at(i)
