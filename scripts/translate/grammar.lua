@@ -1362,6 +1362,10 @@ function G:in_reason(i)
         inside = false
       elseif self:purpose(k) then
         inside = true
+      elseif w == "before" and (instructed(k) or #self:quantities(1, k) > 0) and self:deadline_clause(k) then
+        -- ("climb FL340 before it reaches the boundary", "I'd like AFR1234 at FL340 before the boundary":
+        -- lexicon.deadline_places)
+        inside, reason[k] = true, true
       elseif punct and self:word(k + 1, "@then_words") then
         -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
         inside = false
@@ -1390,6 +1394,20 @@ function G:in_reason(i)
     end
   end
   return self.reason[i] or false
+end
+-- True when "before" at k opens a clause (to the next punctuation) that names one of lexicon.deadline_places
+-- and holds no value, place, type or instruction word ("before it gets to the Spanish boundary").
+function G:deadline_clause(k)
+  local e = k + 1
+  while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+  if not self:word_in(k + 1, e, "@deadline_places") or #self:quantities(k + 1, e) > 0 then return false end
+  for _, r in ipairs(self.refs) do
+    if r.kind ~= "aircraft" and r.b > k and r.b < e then return false end
+  end
+  for x = k + 1, e - 1 do
+    if self:intent_at(x) then return false end
+  end
+  return true
 end
 function G:preceded_by(i, span, words) return self:word_in(math.max(1, i - span), i, words) end
 function G:number_at(i) local t = self.t[i] return t ~= nil and not self.u:used(i) and t.number_word end

@@ -85,6 +85,9 @@ return {
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
         "hard", "sharp", "sharply",
+        -- (how gently an instruction is flown, which squawk's performance model does not take: "climb at 800
+        -- feet a minute, nice and gentle")
+        "nice", "gentle", "gently", "smooth", "smoothly",
         -- (spoken hedges: "the clock is running kinda slow, go 2x")
         "kinda", "sorta", "somewhat",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
@@ -219,7 +222,8 @@ return {
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
-        "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
+        "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval", "shorten",
+        "lengthen",
         -- the dimensions of a setting ("the vertical size of the PZ")
         "size", "sizes", "dimension", "dimensions", "extent",
         -- what a clearance is as a move ("the resolution manoeuvre", "avoidance maneuver")
@@ -617,6 +621,11 @@ return {
           study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
                            "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
                            "participant", "subject", "iteration", "rep", "replication", "day" } },
+  -- "before it reaches the boundary", "before the Spanish border": a deadline at a part of the airspace squawk
+  -- does not simulate, set aside after an instruction (flown now, it is met); its clause holds one of these,
+  -- no value, place or instruction word ("before GIROM" and "before 10 minutes" are asked)
+  deadline_places = { "boundary", "border", "sector", "fir", "uir", "airspace", "frontier", "handoff", "handover",
+      "tma", "cta" },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
