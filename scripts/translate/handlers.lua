@@ -539,6 +539,12 @@ function m:airline_group_refs(inside)
         local said = table.concat(words, " ")
         local icao = AIRLINE_NAMES[said]
         local fits = icao and self:airline_fleet(icao, BRANDS[said]) or {}
+        -- ("both Lufthansas, DLH4AX FL210 and DLH9KM FL240": named by their callsigns too, each its own)
+        for _, r in ipairs(self.refs) do
+          for _, id in ipairs(fits) do
+            if r.kind == "aircraft" and r.name == id then fits = {} end
+          end
+        end
         if icao and (#fits == count or (not count and #fits >= 2)) then
           local at = 1
           while self.refs[at] and self.refs[at].b < b do at = at + 1 end

@@ -1104,6 +1104,12 @@ return function(intent, rule, words)
     return g:word(i + 2, "heading hdg flight fl level altitude speed") or g.t[i + 2] ~= nil and g.t[i + 2].kind == "number"
   end }
   rule { "fly", "dest", next = "to" }
+  -- "can it fly .78", "fly point eight two": a Mach number said bare after the verb (a fraction of one, no
+  -- unit) is the speed flown
+  rule { "fly", "spd", when = function(g, i)
+    local q = g:quantities(i + 1, i + 3)[1]
+    return q ~= nil and q.b == i + 1 and (q.kind == "mach" or (q.kind == "plain" and q.value > 0.3 and q.value < 1))
+  end }
   rule { "origin departed departing orig", "orig" }
   -- "make WJA3101 come from victoria, CYYJ", "it came from CYHU": an airport's code (four letters) said
   -- after "from", within four words, is where the aircraft comes from ("coming from the north" is none)
