@@ -3065,6 +3065,14 @@ return function(H, f, compass)
   end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical") or self:registry_word(s.trig) == "ZONEDH"
+    -- ("give IBE32 1000 ft of separation from RYR7QD": one aircraft kept apart from another named, which
+    -- squawk does not fly; no protected zone, no level)
+    local k = self:word(s.trig, "separation") and self:word(s.trig + 1, "from with")
+      and (self:word(s.trig + 2, "the") and s.trig + 3 or s.trig + 2)
+    if k and (self:has_ref(s.trig + 2, k + 1, "aircraft") or self:airline_at(k)) then
+      return self:need("squawk keeps no aircraft apart from another by itself: what level, heading or speed "
+        .. "should it fly?")
+    end
     if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then
       return self:emit(vertical and "ZONEDH" or "ZONER")
     end

@@ -1834,6 +1834,19 @@ return function(intent, rule, words)
          when = function(g, i)
     return #g:quantities(i + 1, math.min(#g.t + 1, i + 4)) == 0 and instructed(g, i)
   end }
+  -- "give IBE32 some vertical separation from the Ryanair, put it at FL320": separation from an aircraft
+  -- named after it is the purpose of the level, heading or speed given, never the protected zone ("give
+  -- IBE32 1000 ft of separation from the Ryanair", a height said just before it, is left to the zone's reading,
+  -- which asks about the aircraft)
+  rule { "separation", false, next = "from with", when = function(g, i)
+    local k = g:word(i + 2, "the") and i + 3 or i + 2
+    return (g:has_ref(i + 2, k + 1, "aircraft") or g:airline_at(k) ~= nil)
+      and #g:quantities(math.max(1, i - 4), i) == 0
+  end }
+  rule { "separation", "zone", next = "from with", when = function(g, i)
+    local k = g:word(i + 2, "the") and i + 3 or i + 2
+    return (g:has_ref(i + 2, k + 1, "aircraft") or g:airline_at(k) ~= nil) and #g:quantities(math.max(1, i - 4), i) > 0
+  end }
   rule { "separation", "zone", prev = { 1, "nm mile miles ft foot feet" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
