@@ -1862,7 +1862,8 @@ function G:condition()
   -- comma, a waypoint the aircraft reaches (no value before it) ends the condition, an instruction after it
   local reached = comma > #self.t and self:refs_in(i, #self.t + 1, "waypoint")[1]
   if reached and self:word(reached.b - 1, "to at passes reaches hits crosses overflies")
-      and #self:quantities(i, reached.b) == 0 and self:any_instruction_in(reached.e, #self.t + 1) then
+      and #self:quantities(i, reached.b) == 0
+      and (self:any_instruction_in(reached.e, #self.t + 1) or self:held_value(reached.e)) then
     comma, rest = reached.e, reached.e
   end
   if comma > #self.t then
@@ -1897,6 +1898,7 @@ function G:condition()
       return nil, rest
     end
     self.at_place = places[1].name
+    self.at_held = self:held_value(rest)
     return "", rest
   end
   for _, q in ipairs(self:quantities(i, comma)) do
@@ -1905,8 +1907,9 @@ function G:condition()
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "plain" and rest == q.e then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
-    -- "when BAW123 is 20 miles from LEKKO, ...": ATDIST [NM]
-    local from = q.kind == "dist" and self:word(q.e, "from of to before") and self:skip_fillers(q.e + 1)
+    -- "when BAW123 is 20 miles from LEKKO, ...", "once the Vueling is 20 miles out from SIJAN": ATDIST [NM]
+    local at = self:word(q.e, "out") and q.e + 1 or q.e
+    local from = q.kind == "dist" and self:word(at, "from of to before") and self:skip_fillers(at + 1)
     local r = from and self:refs_in(from, from + 1, "waypoint")[1]
     -- ("when the Swiss is 10 miles from Munich airport": a place said by its name, near the aircraft)
     local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject)))
@@ -1950,10 +1953,38 @@ function G:do_at(id, wp, n0)
   return true
 end
 
+-- True when the words from k are a level or speed wanted, no instruction word: "I want it at FL250", ", I'd like
+-- him at 250 knots", "it should be at FL250" (words of lexicon.held_value, then the value ending the request).
+local HELD = set_of(lexicon.held_value)
+function G:held_value(k)
+  local q = self:quantities(k, #self.t + 1)[1]
+  if not q or not ((q.kind == "alt" and q.fl) or q.kind == "speed" or q.kind == "mach") or not self:word(q.b - 1, "at") then
+    return false
+  end
+  for x = k, #self.t do
+    local t = self.t[x]
+    if (x < q.b or x >= q.e) and not (t.kind == "punct" or t.filler or (x < q.b and HELD[self.words[x]])) then
+      return false
+    end
+  end
+  return not self:any_instruction_in(k, #self.t + 1)
+end
+
 -- The instructions after a condition at a waypoint (G:condition: self.at_place) run when the condition's
--- aircraft passes it: BlueSky's AT acid wp DO with each full command (G:do_at).
+-- aircraft passes it: BlueSky's AT acid wp DO with each full command (G:do_at). A level or speed wanted
+-- there (G:held_value: "when AFR1234 gets to GIROM I want it at FL250") is met there: the constraint
+-- AT acid wp ALT/SPD, as "be at FL250 over GIROM".
 function G:at_condition()
-  self:do_at(self.subject, self.at_place, 0)
+  if not self.at_held then return self:do_at(self.subject, self.at_place, 0) end
+  for c = 1, #self.out do
+    local cmd, id, v = self.out[c]:match("^(%u+) (%S+) (%S+)$")
+    if not ((cmd == "ALT" or cmd == "SPD") and id == self.subject) then
+      self.ask = string.format("I have %s. Which of these should be met at %s, and for which aircraft?",
+        table.concat(self.out, " ; "), self.at_place)
+      return
+    end
+    self.out[c] = string.format("AT %s %s %s %s", id, self.at_place, cmd, v)
+  end
 end
 
 -- ---- segments: one instruction each ----

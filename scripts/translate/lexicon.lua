@@ -628,6 +628,10 @@ return {
   -- no value, place or instruction word ("before GIROM" and "before 10 minutes" are asked)
   deadline_places = { "boundary", "border", "sector", "fir", "uir", "airspace", "frontier", "handoff", "handover",
       "tma", "cta" },
+  -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
+  -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
+  held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",
+      "should", "must", "it's", "have", "then" },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
