@@ -1504,8 +1504,8 @@ end
 -- ("horizontal resolutions only": resolutions without the vertical)
 function G:vertical_resolutions(i)
   local horizontal_only = self:word(i, "horizontal lateral") and self:word_in(math.max(1, i - 2), i + 4, "only")
-  return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp")
-    and not self:word_in(1, #self.t + 1, "factor zone pz rpz zonedh separation sep")
+  return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp resolver")
+    and not self:word_in(1, #self.t + 1, "factor margin zone pz rpz zonedh separation sep")
     and not self:has_ref(1, #self.t + 1, "aircraft")
 end
 

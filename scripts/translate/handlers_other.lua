@@ -3003,7 +3003,9 @@ return function(H, f, compass)
       -- ("the vertical one": a pronoun, no value)
       local pronoun = self.t[q.b].text == "one" and self:word(q.b - 1, "vertical horizontal lateral")
       local margin = by_margin and q.kind == "percent"
-      if (q.kind == "plain" and not pronoun and not by_margin) or margin then
+      -- ("the horizontal resolution margin 1.2": a factor of 1 to 3 said after the noun is the factor itself)
+      local factor = by_margin and q.kind == "plain" and not pronoun and q.b > s.trig and q.value >= 1 and q.value <= 3
+      if (q.kind == "plain" and not pronoun and not by_margin) or margin or factor then
         local cmd = kind(q.b)
         local value = margin and 1 + q.value / 100 or q.value
         if not cmd then
