@@ -177,12 +177,14 @@ local function know_all(v, seen)
   -- in the addressing position, lexicon.label_roles and lexicon.bare_labels only a speaker's label; lexicon.city_airports are places,
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
-  -- their words only where those fit: they account for no word)
+  -- their words only where those fit; lexicon.manner, deadline_places and held_value only where their reading
+  -- holds: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
-      or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations then
+      or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
+      or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value then
     return
   end
   seen[v] = true
@@ -4148,6 +4150,14 @@ end
 -- condition the commands do not carry ("climb FL340 unless BAW12 is there"), or a word squawk does not
 -- know ("climb FL340 gently"). Words inside a callsign, place, type or value, a reason, a reply about
 -- what squawk does not simulate, or a courtesy phrase ("when you get a chance") are explained.
+local MANNER = set_of(lexicon.manner)
+-- True when a vertical speed was issued: VS, or ALT with its rate ("ALT KLM1 FL340 1000").
+function G:rate_issued()
+  for _, c in ipairs(self.out) do
+    if c:match("^VS ") or c:match("^ALT %S+ %S+ %S+$") then return true end
+  end
+  return false
+end
 function G:unaccounted()
   -- the words no list explains, and the negations and conditions: only these need the parse's account
   local explained, said, ignored = self.explained or {}, {}, self.world.ignored or {}
@@ -4179,6 +4189,7 @@ function G:unaccounted()
   for _, i in ipairs(said) do
     local t = self.t[i]
     if not inside[i] and not issued[COMMAND_ONLY[t.text] or t.text] and not self:in_reason(i)
+        and not (MANNER[t.text] and self:rate_issued())
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end

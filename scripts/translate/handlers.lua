@@ -517,10 +517,12 @@ function m:asked_where(b, e)
 end
 
 -- "the two Vuelings", "both easyJets", "both the Air Europas", "all the Ryanairs": an airline said in the
--- plural after "the", "all" or "both" (a count, a digit or a number word, after "the" or "all"), with
--- exactly that many of it flying ("both": two; "the" or "all" with no count: two or more), names each of
--- them: one reference per aircraft over the words (kind "aircraft", by_airline = true). Another count
--- flying is left to the words' question. `inside`: the tokens other references hold.
+-- plural after "the", "all" or "both" (a count, a digit or a number word, after "the" or "all"; with neither
+-- count nor "both", written with a capital), with exactly that many of it flying ("both": two; "the" or "all" with no count: two or more),
+-- names each of them: one reference per aircraft over the words (kind "aircraft", by_airline = true), in
+-- place of any the callsign matcher heard in them ("three" as AEA3). Another count flying is asked, naming
+-- those that fly; aircraft of it named by callsign elsewhere in the request are each their own (no group).
+-- `inside`: the tokens other references hold.
 local COUNTS = { two = 2, three = 3, four = 4, ["2"] = 2, ["3"] = 3, ["4"] = 4 }
 function m:airline_group_refs(inside)
   if not AIRLINE_NAMES then airline_names() end
@@ -532,7 +534,8 @@ function m:airline_group_refs(inside)
     if self:word(i, "both") then count = count or 2 end
     for n = 3, 1, -1 do
       local last = b and self.t[k + n - 1]
-      if last and last.kind == "word" and last.text:match("%as$") and not inside[k] then
+      if last and last.kind == "word" and last.text:match("%as$") and not inside[k]
+          and (count or self.t[k].raw:match("^%a*%u")) then
         local words = {}
         for x = k, k + n - 1 do words[#words + 1] = self.t[x].kind == "word" and self.t[x].text or "" end
         words[n] = words[n]:sub(1, -2)  -- ("vuelings": the airline's name and its plural's "s")
@@ -540,12 +543,23 @@ function m:airline_group_refs(inside)
         local icao = AIRLINE_NAMES[said]
         local fits = icao and self:airline_fleet(icao, BRANDS[said]) or {}
         -- ("both Lufthansas, DLH4AX FL210 and DLH9KM FL240": named by their callsigns too, each its own)
+        local named = false
         for _, r in ipairs(self.refs) do
           for _, id in ipairs(fits) do
-            if r.kind == "aircraft" and r.name == id then fits = {} end
+            named = named or (r.kind == "aircraft" and r.name == id and (r.b < b or r.e > k + n))
           end
         end
-        if icao and (#fits == count or (not count and #fits >= 2)) then
+        -- (the words the callsign matcher heard as an aircraft, "two Vuelings" as VLG21, "three" as AEA3,
+        -- are the group's)
+        for x = #self.refs, 1, -1 do
+          if icao and not named and self.refs[x].b >= b and self.refs[x].e <= k + n then table.remove(self.refs, x) end
+        end
+        if icao and not named and not (#fits == count or (not count and #fits >= 2)) then
+          self:need(string.format("Which aircraft does '%s' mean? %s", self:raw(b, k + n),
+            #fits > 0 and ("Those flying: " .. table.concat(fits, ", ") .. ".") or "None of them flies."))
+          for x = b, k + n - 1 do inside[x] = true end
+          break
+        elseif icao and not named then
           local at = 1
           while self.refs[at] and self.refs[at].b < b do at = at + 1 end
           for j, id in ipairs(fits) do

@@ -85,9 +85,6 @@ return {
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
         "hard", "sharp", "sharply",
-        -- (how gently an instruction is flown, which squawk's performance model does not take: "climb at 800
-        -- feet a minute, nice and gentle")
-        "nice", "gentle", "gently", "smooth", "smoothly",
         -- (spoken hedges: "the clock is running kinda slow, go 2x")
         "kinda", "sorta", "somewhat",
         "ok", "okay", "oh", "hmm", "hm", "ehm", "erm", "uhm", "hey", "yes", "yeah", "sorry", "anyway", "righto", "exactly", "possibly", "currently",
@@ -628,6 +625,9 @@ return {
   -- no value, place or instruction word ("before GIROM" and "before 10 minutes" are asked)
   deadline_places = { "boundary", "border", "sector", "fir", "uir", "airspace", "frontier", "handoff", "handover",
       "tma", "cta" },
+  -- how gently a climb or descent is flown ("climb at 800 feet a minute, nice and gentle"): said beside the
+  -- vertical speed given, it restates it; with none ("climb FL340 gently") it is asked, no rate being known
+  manner = { "nice", "gentle", "gently", "smooth", "smoothly" },
   -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
   -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
   held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",
