@@ -228,13 +228,14 @@ return function(intent, rule, words)
     end
     return false
   end }
-  -- "climb via the route", "descend via the STAR", "climb via SID": the route's own levels flown (VNAV), no
-  -- level said in the clause ("climb via the route to FL300" is the level)
+  -- "climb via the route", "descend via its route": the route's own levels flown (VNAV), no level said in the
+  -- clause ("climb via the route to FL300" is the level; "descend via STAR", a procedure squawk does not fly,
+  -- is asked)
   rule { "climb climbing descend descending", "vnav", next = "via", when = function(g, i)
     local e = i + 1
     while g.t[e] and g.t[e].kind ~= "punct" do e = e + 1 end
     local k = g:word(i + 2, "the its") and i + 3 or i + 2
-    return g:word(k, "route sid star profile procedure") and e == k + 1 and #g:quantities(i, e) == 0
+    return g:word(k, "route") and e == k + 1 and #g:quantities(i, e) == 0
   end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "rise to FL200", "ascend to FL200": a climb said so, with its level after it

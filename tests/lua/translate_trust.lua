@@ -6467,7 +6467,8 @@ end
 
 -- Cycle 39 (fix80b): settings said by purpose. "shorten the look-ahead", a factor said after "resolution
 -- margin" (RFACH/RFACV; no vertical resolutions), the resolver's vertical speed (RMETHV; "only" vertical is
--- asked, squawk's resolutions are never vertical alone), "climb/descend via the route/SID/STAR" (VNAV)
+-- asked, squawk's resolutions are never vertical alone), "climb/descend via the route" (VNAV; via a SID or STAR
+-- asked)
 do
   local _, ex = scene({ "CRE SAS77 B738 52.4 4.2 180 FL340 280" })
   check_eq(ex("could we shorten the look-ahead to 4 minutes"), "DTLOOK 240")
@@ -6476,6 +6477,7 @@ do
   check_eq(ex("vertical resolution margin 10 percent"), "RFACV 1.1")
   check_eq(ex("the resolver may use vertical speed"), "RMETHV V/S")
   asked(ex("the resolver should only use vertical speed changes"), "vertical-only resolutions")
-  check_eq(ex("SAS77 descend via the STAR"), "VNAV SAS77 ON")
+  check_eq(ex("SAS77 descend via its route"), "VNAV SAS77 ON")
+  asked(ex("SAS77 descend via the STAR"), "a STAR, which squawk does not fly")
   check_eq(ex("SAS77 climb via the route to FL360"), "ALT SAS77 FL360")
 end
