@@ -1926,6 +1926,20 @@ return function(H, f, compass)
         last = r.e
       end
     end
+    -- ("a route via BIDAC then Bilbao": a place said by its one-word name, capitalised, after "then", "and" or
+    -- a comma straight after the route's last place and ending the request, is the next place)
+    local k = last
+    while self:word(k, "then and") or (self.t[k] and self.t[k].text == ",") do k = k + 1 end
+    local nx = self.t[k + 1]
+    if k > last and k < s.e and (not nx or nx.kind == "punct") and self.t[k].kind == "word"
+        and self.t[k].raw:match("^%u%l") then
+      local place = self:place_by_name(k, k + 1, self:state(id))
+      if place then
+        self:explain(last, k + 1)
+        self:emit("ADDWPT " .. id .. " " .. place)
+        return
+      end
+    end
     -- "... and on to Boston", "then into Heathrow": an airport said by its name after the
     -- route's last place and "to"/"into" is the destination; a name that names no airport is
     -- asked about, never dropped

@@ -6439,7 +6439,8 @@ end
 -- Cycle 39 (fix80b): aircraft described and what is asked about them. "lose", "take out" and "get ... off the
 -- screen" delete the aircraft described; "tell me about" it is POS; what is left of its route LISTRTE; a position
 -- "relative to" a place POS; "the Nostrum" Air Nostrum; an airline in the plural ("the two Vuelings", "both
--- Vuelings") each of it flying when the count fits, else asked; a city named for its airport the destination
+-- Vuelings") each of it flying when the count fits, else asked; a city named for its airport the destination;
+-- a place by its name ending a route ("via BIDAC then Bilbao") the route's next place
 do
   local _, ex = scene({ "DEFWPT LUMEK 52.1 4.6", "CRE VLG21 A320 52.0 4.0 090 FL300 270",
     "CRE VLG88 A321 52.4 4.2 180 FL340 280", "CRE ANE40 CRJ9 52.2 4.8 270 FL220 240",
@@ -6458,10 +6459,13 @@ do
   check_eq(ex("both Vuelings, VLG21 FL200 and VLG88 FL220"), "ALT VLG21 FL200 ; ALT VLG88 FL220")
   asked(ex("the three Vuelings, speed 240"), "three Vuelings, two flying")
   asked(ex("the three ryanairs, speed 240"), "a count of an airline none of which flies, never a callsign's digits")
-  local nav, nex = navscene({ "CRE EZY9 A319 43.0 2.5 010 FL280 260" }, "a city's airport as destination")
+  local nav, nex = navscene({ "CRE EZY9 A319 43.0 2.5 010 FL280 260", "CRE AEA3 B738 43.9 -0.5 250 FL240 260" },
+    "a city's airport as destination and a place by its name in a route")
   if nav then
     check_eq(nex("the easyJet's going to Carcassonne"), "DEST EZY9 LFMK")
     check_eq(nex("EZY9's going to Perpignan"), "DEST EZY9 LFMP")
+    check_eq(nex("route AEA3 via LAPOS and then Bilbao"), "ADDWPT AEA3 LAPOS ; ADDWPT AEA3 LEBB")
+    asked(nex("route AEA3 via LAPOS then Bilbao then SOSTO"), "a name between the route's places")
   end
 end
 
