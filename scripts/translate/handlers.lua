@@ -1587,6 +1587,17 @@ end
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
 local CARRIES_OTHERS = { hdg = true, alt = true, spd = true, infer = true, maintain = true, vs = true, direct = true }
+-- "once level", "when it's level", "when there" said straight before the value at b (punctuation between):
+-- the token of "once"/"when", or nil
+local function level_reached_before(self, b)
+  local k = b - 1
+  while self.t[k] and self.t[k].kind == "punct" do k = k - 1 end
+  if not self:word(k, "level lvl there") then return nil end
+  local c = k - 1
+  if self:word(c, "is it's you're") then c = c - 1 end
+  if self:word(c, "it you") then c = c - 1 end
+  return self:word(c, "once when") and c or nil
+end
 function m:leftovers(s)
   if not CARRIES_OTHERS[s.intent] then return end
   local ids = self:acids(s)
@@ -1621,7 +1632,12 @@ function m:leftovers(s)
         local held = qs[k + 1]
         held = at and held and held.kind == "alt" and held.b == at and not self:word(q.b - 1, "not")
           and not self.taken[held.b] and held
-        emit((held and "ATALT " .. ids[1] .. " " .. f.alt(held.value, held.fl) .. " " or "") .. "SPD " .. ids[1] .. " "
+        -- ("climb FL370 and once level, Mach .80": the speed waits for the level this request gave the aircraft)
+        local c = not held and level_reached_before(self, q.b)
+        local level = c and table.concat(self.out, " ; "):match("ALT " .. ids[1]:gsub("%p", "%%%0") .. " (FL%d+)")
+        if level then self:explain(c, q.b) end
+        emit((held and "ATALT " .. ids[1] .. " " .. f.alt(held.value, held.fl) .. " "
+            or level and "ATALT " .. ids[1] .. " " .. level .. " " or "") .. "SPD " .. ids[1] .. " "
           .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
         if held then self:take(held) end
         spd_done = self:take(q)

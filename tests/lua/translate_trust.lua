@@ -6415,7 +6415,8 @@ end
 -- ("before it reaches the boundary") is met by the instruction flown now; one at a place, a time or with an
 -- instruction of its own is asked. "nice and gentle" is how it is flown; "can it fly .80" a Mach number;
 -- separation from a named aircraft the purpose of the level given (a height of separation from one asked); a
--- level wanted when an aircraft reaches a waypoint the constraint there; "N miles out from FIX" ATDIST
+-- level wanted when an aircraft reaches a waypoint the constraint there; "N miles out from FIX" ATDIST; "and once
+-- level, Mach .80" the speed waiting for the level given
 do
   local _, ex = scene({ "DEFWPT LUMEK 52.1 4.6", "DEFWPT ORVAL 52.3 5.0", "CRE TAP21 A320 52.0 4.0 090 FL300 270",
     "ADDWPT TAP21 LUMEK", "ADDWPT TAP21 ORVAL", "CRE SAS77 B738 52.4 4.2 180 FL340 280",
@@ -6434,6 +6435,8 @@ do
   check_eq(ex("when TAP21 reaches ORVAL, it should be at 250 knots"), "AT TAP21 ORVAL SPD 250")
   check_eq(ex("when TAP21 gets to ORVAL descend it to FL280"), "AT TAP21 ORVAL DO ALT TAP21 FL280")
   check_eq(ex("once TAP21 is 15 miles out from ORVAL, descend FL280"), "ATDIST TAP21 ORVAL 15 ALT TAP21 FL280")
+  check_eq(ex("SAS77 descend FL300 and once level, Mach .74"), "ALT SAS77 FL300 ; ATALT SAS77 FL300 SPD SAS77 M0.74")
+  asked(ex("SAS77 once level, Mach .74"), "no level given to wait for")
 end
 
 -- Cycle 39 (fix80b): aircraft described and what is asked about them. "lose", "take out" and "get ... off the
