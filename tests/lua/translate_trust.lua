@@ -6437,6 +6437,9 @@ do
   check_eq(ex("once TAP21 is 15 miles out from ORVAL, descend FL280"), "ATDIST TAP21 ORVAL 15 ALT TAP21 FL280")
   check_eq(ex("SAS77 descend FL300 and once level, Mach .74"), "ALT SAS77 FL300 ; ATALT SAS77 FL300 SPD SAS77 M0.74")
   asked(ex("SAS77 once level, Mach .74"), "no level given to wait for")
+  -- a rate with no direction said descends to the level given below the aircraft (never climbs away from it)
+  check_eq(ex("TAP21, be at FL280 by ORVAL, rate 1500"), "AT TAP21 ORVAL ALT FL280 ; VS TAP21 -1500")
+  check_eq(ex("SAS77 FL360, rate 1500"), "ALT SAS77 FL360 ; VS SAS77 1500")
 end
 
 -- Cycle 39 (fix80b): aircraft described and what is asked about them. "lose", "take out" and "get ... off the
