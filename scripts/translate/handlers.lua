@@ -518,16 +518,20 @@ end
 
 -- "the two Vuelings", "both easyJets", "both the Air Europas", "all the Ryanairs": an airline said in the
 -- plural after "the", "all" or "both" (a count, a digit or a number word, after "the" or "all"; with neither
--- count nor "both", written with a capital), with exactly that many of it flying ("both": two; "the" or "all" with no count: two or more),
--- names each of them: one reference per aircraft over the words (kind "aircraft", by_airline = true), in
--- place of any the callsign matcher heard in them ("three" as AEA3). Another count flying is asked, naming
--- those that fly; aircraft of it named by callsign elsewhere in the request are each their own (no group).
--- `inside`: the tokens other references hold.
+-- count nor "both", written with a capital), with exactly that many of it flying ("both": two; "the" or "all"
+-- with no count: two or more), names each of them: one reference per aircraft over the words (kind
+-- "aircraft", by_airline = true), in place of any the callsign matcher heard in them ("three" as AEA3).
+-- Another count flying is asked, naming those that fly; aircraft of it named by callsign elsewhere in the
+-- request are each their own (no group). Said after a word of other traffic (lexicon.airline_context,
+-- aircraft_context, below, above, "from", "of") it is no group. `inside`: the tokens other references hold.
 local COUNTS = { two = 2, three = 3, four = 4, ["2"] = 2, ["3"] = 3, ["4"] = 4 }
 function m:airline_group_refs(inside)
   if not AIRLINE_NAMES then airline_names() end
   for i = 1, #self.t do
-    local b = self:word(i, "the all both") and i
+    -- (other traffic: "away from the Vuelings", "above the two Vuelings", "behind both Vuelings", "clear of the
+    -- Vuelings")
+    local b = self:word(i, "the all both") and not self:word(i - 1, "@airline_context @aircraft_context @below @above")
+      and not self:word(i - 1, "from of") and i
     local k = b and (self:word(i + 1, "the") and i + 2 or i + 1)
     local count = b and COUNTS[self.t[k] and self.t[k].text or ""]
     if count then k = k + 1 end

@@ -6464,6 +6464,11 @@ do
   check_eq(ex("the two Vuelings descend FL200"), "ALT VLG21 FL200 ; ALT VLG88 FL200")
   check_eq(ex("both Vuelings, VLG21 FL200 and VLG88 FL220"), "ALT VLG21 FL200 ; ALT VLG88 FL220")
   asked(ex("the three Vuelings, speed 240"), "three Vuelings, two flying")
+  -- other traffic said in the plural is never instructed
+  check_eq(ex("turn EZY9 left 20, away from the Vuelings"), "HDG EZY9 350 LEFT")
+  check_eq(ex("climb EZY9 above the two Vuelings to FL350"), "ALT EZY9 FL350")
+  check_eq(ex("EZY9 climb FL350 to stay clear of the Vuelings"), "ALT EZY9 FL350")
+  check_eq(ex("EZY9 climb FL350 because the Vuelings are close"), "ALT EZY9 FL350")
   asked(ex("the three ryanairs, speed 240"), "a count of an airline none of which flies, never a callsign's digits")
   local nav, nex = navscene({ "CRE EZY9 A319 43.0 2.5 010 FL280 260", "CRE AEA3 B738 43.9 -0.5 250 FL240 260" },
     "a city's airport as destination and a place by its name in a route")
