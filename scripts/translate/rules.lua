@@ -1117,7 +1117,7 @@ return function(intent, rule, words)
   -- unit) is the speed flown
   rule { "fly", "spd", when = function(g, i)
     local q = g:quantities(i + 1, i + 3)[1]
-    return q ~= nil and q.b == i + 1 and (q.kind == "mach" or (q.kind == "plain" and q.value > 0.3 and q.value < 1))
+    return q ~= nil and q.b == i + 1 and (q.kind == "mach" or (q.kind == "plain" and q.value >= 0.4 and q.value < 1))
   end }
   rule { "origin departed departing orig", "orig" }
   -- "make WJA3101 come from victoria, CYYJ", "it came from CYHU": an airport's code (four letters) said
