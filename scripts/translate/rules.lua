@@ -1115,8 +1115,19 @@ return function(intent, rule, words)
   rule { "fly", "dest", next = "to" }
   -- "can it fly .78", "fly point eight two": a Mach number said bare after the verb (a fraction of one, no
   -- unit) is the speed flown
+  -- "VLG1003 point seven four": a Mach number said in words after an aircraft, nothing else in the request
+  rule { "point", "spd", when = function(g, i)
+    local q = g:quantities(i, i + 4)[1]
+    if not (q and q.b == i and q.kind == "plain" and q.value >= 0.4 and q.value < 1) then return false end
+    for k = 1, #g.t do
+      if (k < q.b or k >= q.e) and g.t[k].kind ~= "punct" and not g.t[k].filler and not g:has_ref(k, k + 1, "aircraft") then
+        return false
+      end
+    end
+    return g:has_ref(1, i, "aircraft")
+  end }
   rule { "fly", "spd", when = function(g, i)
-    local q = g:quantities(i + 1, i + 3)[1]
+    local q = g:quantities(i + 1, i + 5)[1]
     return q ~= nil and q.b == i + 1 and (q.kind == "mach" or (q.kind == "plain" and q.value >= 0.4 and q.value < 1))
   end }
   rule { "origin departed departing orig", "orig" }
