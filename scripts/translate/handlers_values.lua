@@ -513,8 +513,13 @@ return function(H, f, wrap, compass)
     local ids = self:acids(s)
     if #ids == 0 then return self:need("Which aircraft should turn? Please give its callsign.") end
     local abs_c, rel_c = {}, {}
+    -- ("240 on the heading": a number of three digits straight before "on the heading" is the heading; "add
+    -- 20 on the heading" is no heading)
+    local on = self:word(s.trig - 1, "the its") and s.trig - 2 or s.trig - 1
+    on = self:word(on, "on") and on
     for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if q.kind == "heading" or (q.kind == "plain" and q.b > s.trig and not q.number.thousand) then
+      if q.kind == "heading" or (q.kind == "plain" and q.b > s.trig and not q.number.thousand)
+          or (q.kind == "plain" and on and q.e == on and q.value <= 360 and #(q.number.digits or "") == 3) then
         abs_c[#abs_c + 1] = q
       elseif q.kind == "angle" then
         rel_c[#rel_c + 1] = q

@@ -6431,6 +6431,8 @@ do
   check_eq(ex("could SAS77 fly point seven eight"), "SPD SAS77 M0.78")
   check_eq(ex("SAS77, point seven six"), "SPD SAS77 M0.76")
   asked(ex("SAS77 heading 200 point seven"), "a fraction after another value")
+  check_eq(ex("SAS77 to FL300, 250 on the heading, and 260 knots"), "ALT SAS77 FL300 ; HDG SAS77 250 ; SPD SAS77 260")
+  asked(ex("SAS77 20 on the heading"), "two digits before 'on the heading'")
   check_eq(ex("let's give TAP21 some vertical separation from the Ryanair, take it to FL280"), "ALT TAP21 FL280")
   check_eq(ex("SAS77 climb FL360 for separation from RYR3"), "ALT SAS77 FL360")
   asked(ex("give TAP21 2000 ft of separation from RYR3"), "a height of separation from an aircraft")
