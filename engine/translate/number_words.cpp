@@ -50,10 +50,14 @@ bool speed_follows(const std::vector<Token>& t, size_t i) {
 }
 
 // True when "to" at i opens a latitude or longitude said in digits ("move UAL9 to four zero point
-// eight north"): as the digit two it would make a degree beyond the pole or the antimeridian (240.8
+// eight north", "move the Avianca two four to nine north"): as the digit two, with the digits said
+// straight before it, it would make a degree beyond the pole or the antimeridian (240.8 north, 2429
 // north).
 bool position_after_to(const std::vector<Token>& t, size_t i) {
   if (t[i].text != "to" && t[i].text != "too") return false;
+  std::string before;
+  for (size_t k = i; k > 0 && digit_at(t, k - 1) >= 0; --k)
+    before.insert(before.begin(), static_cast<char>('0' + digit_at(t, k - 1)));
   std::string digits;
   size_t j = i + 1;
   while (digit_at(t, j) >= 0) digits += static_cast<char>('0' + digit_at(t, j++));
@@ -64,7 +68,8 @@ bool position_after_to(const std::vector<Token>& t, size_t i) {
   const double limit = is_word(t, j, "north") || is_word(t, j, "south") ? 90.0
                        : is_word(t, j, "east") || is_word(t, j, "west") ? 180.0
                                                                         : 0.0;
-  return limit > 0.0 && !digits.empty() && std::strtod(("2" + digits).c_str(), nullptr) > limit &&
+  return limit > 0.0 && !digits.empty() &&
+         std::strtod((before + "2" + digits).c_str(), nullptr) > limit &&
          std::strtod(digits.c_str(), nullptr) <= limit;
 }
 
@@ -162,7 +167,7 @@ int digit_word(const std::string& w) {
   for (size_t i = 0; i < kDigits.size(); ++i)
     if (w == kDigits[i]) return static_cast<int>(i);
   if (w == "niner") return 9;
-  if (w == "fife") return 5;
+  if (w == "fife" || w == "fiver") return 5;
   if (w == "tree") return 3;
   if (w == "fower") return 4;
   return -1;

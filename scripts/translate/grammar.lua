@@ -532,7 +532,28 @@ local function holds_word(lower, patterns)
   end
   return false
 end
+-- "30 degrees right, er, left": a side, hesitations only (lexicon.hesitations, "hmm") and the other side is
+-- the side corrected ("right, correction, left")
+local SIDE_HESITATIONS = set_of(lexicon.hesitations)
+SIDE_HESITATIONS.hmm = true
+local function hesitated_sides(text)
+  local lower = text:lower()
+  if not lower:find("%f[%a]left%f[%A]") or not lower:find("%f[%a]right%f[%A]") then return text end
+  local toks = bare_words(text)
+  local pieces, from = {}, 1
+  for k, t in ipairs(toks) do
+    local j = k + 1
+    while SIDES[t.bare] and toks[j] and SIDE_HESITATIONS[toks[j].bare] do j = j + 1 end
+    if j > k + 1 and toks[j] and SIDES[toks[j].bare] and toks[j].bare ~= t.bare then
+      pieces[#pieces + 1] = text:sub(from, t.e - 1) .. ", correction, "
+      from = toks[j].at
+    end
+  end
+  pieces[#pieces + 1] = text:sub(from)
+  return table.concat(pieces)
+end
 local function self_corrections(text)
+  text = hesitated_sides(text)
   if not holds_word(text:lower(), SC_MARKER_PATTERNS) then return text end
   local words, markers, after = SC_WORDS, SC_MARKERS, SC_AFTER
   local toks = bare_words(text)
@@ -865,6 +886,17 @@ local function written_forms(text)
   text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
+  -- "angels two six", "angels 22": military brevity for an altitude in thousands of feet (one or two digits,
+  -- typed or said one by one), read as that many thousand feet
+  local function angels(digits)
+    for d in digits:gmatch("%a+") do
+      if not DIGIT_WORDS[d:lower()] then return nil end
+    end
+    return digits .. " thousand ft"
+  end
+  text = text:gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%d%d?)%f[^%w%.]", "%1000 ft")
+    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%s+%a+)%f[%A]", angels)
+    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+)%f[%A]", angels)
   -- "250-ish", "FL200-ish": the suffix of a loose value is its own word ("ish", lexicon's discourse)
   text = text:gsub("(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
   -- "un-pause", "un-freeze": the prefix "un-" written with a hyphen is the one word ("unpause")
@@ -1220,6 +1252,16 @@ local function title_end(self, k)
   return e
 end
 
+-- The comma or colon ending a lead-in clause at k that opens the request before the new aircraft it lists ("I'd
+-- like a head-on pair, AEA10 B738 at ...": the creation rule read them so, G.opening_create); nil when none.
+local function creation_label_end(self, k)
+  local e = k
+  while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+  if not (self.t[e] and (self.t[e].text == "," or self.t[e].text == ":")) then return nil end
+  self:intent_at(e + 1)  -- (the creation rule, tried at any word, settles G.opening_create)
+  return (self.opening_create or 0) > e and self:commentary(k, e) and e or nil
+end
+
 -- The full stop or colon ending an experiment's label that opens a sentence at k ("exp CDR-FR-ES, run 1.",
 -- "Trial 3B:"; lexicon.aside.study_labels): label words, each followed by one to three identifiers (plain
 -- numbers, words written with a capital or a digit; no aircraft, type or instruction word), commas
@@ -1333,6 +1375,9 @@ function G:in_reason(i)
       elseif start and t.kind == "word" and study_label_end(self, k) then
         -- ("exp CDR-FR-ES, run 1. cre AFR1234 ...": an experiment's label, up to its full stop or colon)
         inside, reason[k] = true, true
+      elseif k == opening and t.kind == "word" and creation_label_end(self, k) then
+        -- ("I'd like a head-on pair, AEA10 B738 at ...")
+        inside, lead_end, self.reason[k] = true, creation_label_end(self, k), true
       elseif k == opening and t.kind == "word" and not (CM_LEADS[t.text] or CM_LABELS[t.text])
           and title_end(self, k) then
         -- ("converging pair please: KLM401 B738 at ...": a title opening the request, up to its colon)
@@ -2405,6 +2450,29 @@ function G:question_back()
   end
 end
 
+-- The end of the clause of the last instruction of intent `kind` ("hdg", "alt", ...) said before token a: the
+-- first comma, "and" or word of lexicon.then_words after its instruction word and its first value; nil when
+-- none was said.
+function G:kept_clause_end(kind, a)
+  local p = a - 1
+  while p >= 1 and self:intent_at(p) ~= kind do p = p - 1 end
+  if p < 1 then return nil end
+  local q = self:quantities(p, a)[1]
+  local k = q and q.e or p + 1
+  while k < a and not (self.t[k].kind == "punct" or self:word(k, "and @then_words")) do k = k + 1 end
+  return k
+end
+
+-- True when the clause from token b (to its next punctuation) holds a level, speed, Mach or heading.
+function G:clause_value(b)
+  local e = b
+  while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+  for _, q in ipairs(self:quantities(b, e)) do
+    if q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading" then return true end
+  end
+  return false
+end
+
 function G:self_corrected()
   local a = 2
   while a <= #self.t do
@@ -2484,8 +2552,16 @@ function G:self_corrected()
           a = n
         elseif kept and (e > #self.t or self.t[e].kind == "punct") then
           self.kept = kept
-          self:mark_used(b, e)
-          for k = b, e - 1 do self.noted[k] = true end
+          -- (what was said after the kept instruction's clause is taken back with the rest: "turn left heading
+          -- 180, and at 15 miles from ARGAS, hmm, no, just the heading" drops the distance)
+          local from = math.min(b, self:kept_clause_end(kept:lower(), a) or b)
+          self:mark_used(from, e)
+          for k = from, e - 1 do self.noted[k] = true end
+          local refs = {}
+          for _, r in ipairs(self.refs) do
+            if r.b < from or r.b >= e then refs[#refs + 1] = r end
+          end
+          self.refs = refs
           a = e
         elseif q < b and (self:has_ref(c + 1, c + 2, "waypoint")
             or (self:quantities(c + 1, #self.t + 1)[1] or {}).b == c + 1) then
@@ -2789,10 +2865,28 @@ end
 -- condition of passing a waypoint that closes the segment, after its instruction's value; the instruction
 -- starts there (AT acid wp DO, G:do_at): { b = the condition's first token, e = the token after the
 -- waypoint's name, name }, else nil. "at CANUK" alone after the value is no such condition (a crossing?).
+local VALUE_INTENTS = { alt = true, spd = true, hdg = true, vs = true, maintain = true, infer = true }
 function G:trailing_fix(s)
   local c = self:find_word(s.trig + 1, s.e, "when once after upon on")
   if c >= s.e or #self:quantities(s.trig, c) == 0 then return nil end
   local k = self:skip_fillers(c + 1)
+  -- ("descend FL250 after Weser", "reduce 250 after WSR": "after" straight after the value of a level, speed,
+  -- heading or rate, and the waypoint, its code or a name of the aircraft's route, closing the request;
+  -- "expect lower after KURDI" is no such condition, nor ADDWPT's "after")
+  if self:word(c, "after") and not self:word(k, "it you passing passes reaching reaches overflying") then
+    local v = c - 1
+    while v > s.trig and (self.t[v].filler or self.t[v].text == ",") do v = v - 1 end
+    local last = self:quantities(s.trig, v + 1)
+    if self.u:used(c) or not VALUE_INTENTS[s.intent] or #last == 0 or last[#last].e ~= v + 1 then return nil end
+    local e = s.e
+    while e > k and self.t[e - 1].kind == "punct" and self.t[e - 1].text ~= "," do e = e - 1 end
+    local r = self:refs_in(k, e, "waypoint")[1]
+    if r then return r.b == k and r.e == e and { b = c, e = r.e, name = r.name } or nil end
+    local a = self:refs_in(1, s.trig, "aircraft")
+    local now = #a == 1 and self:state(a[1].name)
+    local name = now and e > k and e <= k + 2 and self:place_by_name(k, e, now)
+    return name and { b = c, e = e, name = name } or nil
+  end
   if self:word(k, "it you") then k = self:skip_fillers(k + 1) end
   if self:word(k, "passing passes reaching reaches overflying") then
     k = self:skip_fillers(k + 1)
@@ -3149,16 +3243,17 @@ function G:at_waypoint(s, spec)
       local qs = self:quantities(k + 2, r.b - 1)
       if k < r.b - 1 and self:word(k + 1, "at") and #qs > 0 and qs[#qs].e == r.b - 1 then be_at = k + 2 end
     end
-    -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES": the level
-    -- of a climb or descent, to be reached by a waypoint, is its AT constraint there (`level_by`: that
-    -- level, the only value said before "by" or "at"; only "level", "reach", "be", "to" and fillers beside it)
+    -- "descend FL310 level by HELEN", "descend to reach FL300 by FERDI", "be level FL350 at PITES", "be level
+    -- one niner zero over PUNPU": the level of a climb or descent, to be reached by a waypoint, is its AT
+    -- constraint there (`level_by`: that level, the only value said before "by", "at", "over" or "overhead"; only "level",
+    -- "reach", "be", "to" and fillers beside it)
     local level_by
     local from = s.intent == "infer" and first or s.trig + 1
     local said_level = false  -- ("level" said as a word of its own, not in "flight level")
     for i = s.intent == "infer" and first or s.trig, r.b - 2 do
       said_level = said_level or self:word(i, "reach reaching lvl") or (self:word(i, "level") and not self:word(i - 1, "flight"))
     end
-    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at") and said_level then
+    if (s.intent == "alt" or s.intent == "infer") and self:word(r.b - 1, "by at over overhead") and said_level then
       local qs = self:quantities(s.b, r.b - 1)
       level_by = #qs == 1 and qs[1].kind == "alt" and qs[1] or nil
       for i = from, r.b - 2 do
@@ -3374,14 +3469,18 @@ function G:unexplained(s, n_before)
     if not opened and own_unit(q) then opened = q.b end
   end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
+    -- the aircraft said straight before the value, if any
+    local callsign
+    for _, r in ipairs(self.refs) do
+      if r.kind == "aircraft" and r.e <= q.b and self:skip_fillers(r.e) == q.b then callsign = r end
+    end
+    -- (a bare value between the callsign and the instruction word, "BAW256 9 climb FL300", is named alone)
+    local before_verb = callsign and not (opened and q.b > opened)
     if not self.taken[q.b] and not SELF_READ[q.kind] and not relative and not q.by and q.turn == 0
-        and q.b > corrected and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs"))
+        and q.b > corrected
+        and ((opened and q.b > opened) or own_unit(q) or self:word(q.b - 1, "@clause_verbs") or before_verb)
         and not value_carried(q, nums) then
-      local b = q.b
-      for _, r in ipairs(self.refs) do
-        if r.kind == "aircraft" and r.e <= q.b and self:skip_fillers(r.e) == q.b then b = r.b end
-      end
-      self.leftover = self:raw(b, q.e)
+      self.leftover = self:raw((callsign and not before_verb) and callsign.b or q.b, q.e)
       return
     end
   end
@@ -3455,14 +3554,15 @@ function G:uncarried()
       and not self.u:used(first) and self:word(first, "@up @down go")) do
     first = first + 1
   end
-  -- (a number straight after an aircraft flying, "at" between or not, and closed by a comma or "and",
-  -- "KLM12 330, turn left 090", "AEA6062 at 330, direct XING2", is a value said for it, however early)
+  -- (a number straight after an aircraft flying, "at" or "to" between or not, and closed by a comma or "and",
+  -- "KLM12 330, turn left 090", "AEA6062 at 330, direct XING2", "the Ryanair to 110 and 230 knots", is a value
+  -- said for it, however early)
   local function said_for_aircraft(q)
     if not (self.t[q.e] and ((self.t[q.e].kind == "punct" and self.t[q.e].text == ",") or self:word(q.e, "and"))) then
       return false
     end
     for _, r in ipairs(self:refs_in(1, q.b + 1, "aircraft")) do
-      if r.exists and (r.e == q.b or (r.e == q.b - 1 and self:word(r.e, "at"))) then return true end
+      if r.exists and (r.e == q.b or (r.e == q.b - 1 and self:word(r.e, "at to"))) then return true end
     end
     return false
   end
@@ -3761,6 +3861,12 @@ function G:meaning_carried(i, kinds)
     return true
   end
   if self:word(i, "@off") and kinds.off then return true end
+  -- "cancel that heading, put it back on the route", "undo the vectors, resume own navigation": the heading
+  -- taken back by the route resumed
+  if self:word(i, "cancel cancels cancelled canceled undo") and kinds.route
+      and self:word_in(i + 1, math.min(#self.t + 1, i + 4), "heading headings hdg vector vectors vectoring") then
+    return true
+  end
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
       if self:has_ref(k, k + 1, "waypoint") then return true end
@@ -3770,7 +3876,8 @@ function G:meaning_carried(i, kinds)
 end
 
 -- The commands issued, as a set of their lower-case words (a name said as it is issued: "direct
--- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to.
+-- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to, the
+-- route resumed (LNAV ON).
 function G:issued()
   local words, kinds = {}, {}
   for _, line in ipairs(self.out) do
@@ -3780,6 +3887,7 @@ function G:issued()
       if CONDITIONAL[name] then kinds.conditional = true end
       if name == "DIRECT" then kinds.direct = true end
       if name == "ALT" then kinds.alt = true end
+      if name == "LNAV" and part:upper():find("%f[%w]ON%f[%W]") then kinds.route = true end
       if name == "DTMULT" or name == "FF" then kinds.clock = true end
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
     end
@@ -4352,14 +4460,19 @@ for _, c in ipairs(lexicon.not_simulated) do
   for w in pairs(word_set(c.words, 1)) do NOT_SIMULATED_WORDS[w] = true end
 end
 
--- True when token i is a navaid's kind said after its name ("relocate to TKT VOR at FL300", "direct
--- Minsk NDB", "over the Spijkerboor VOR at FL180"): the place, no approach (a kind followed by
--- "approach", "TKT VOR approach", is one). The name is an ident read as a waypoint, or the one or two
--- words before the kind that name a navaid of that kind anywhere in the navdata.
-function G:navaid_named_before(i)
+-- True when token i is a navaid's kind said beside its name: after it ("relocate to TKT VOR at FL300",
+-- "direct Minsk NDB", "over the Spijkerboor VOR at FL180") or before it in the Spanish order ("from the VOR
+-- Bogota", "direct VOR BOG"): the place, no approach (a kind followed by "approach", "TKT VOR approach",
+-- "VOR approach", is one). The name is an ident read as a waypoint, or the one or two words beside the kind
+-- that name a navaid of that kind anywhere in the navdata.
+function G:navaid_named_beside(i)
   if not self:word(i, "@navaid_kinds") or self:word(self:skip_fillers(i + 1), "approach") then return false end
+  local after = not self:word(i + 1, "@navaid_kinds") and not self:word(i + 2, "approach")
   for _, r in ipairs(self.refs) do
-    if r.kind == "waypoint" and r.b < i and r.e >= i and not self:word(r.b, "@navaid_kinds") then return true end
+    if r.kind == "waypoint" and not self:word(r.b, "@navaid_kinds")
+        and ((r.b < i and r.e >= i) or (after and r.b == i + 1)) then
+      return true
+    end
   end
   local named, kind = self.world.navaids_named, lexicon.navaid_types[self.t[i].text]
   local function name_word(k)
@@ -4370,6 +4483,12 @@ function G:navaid_named_before(i)
   for k = i - 1, math.max(1, i - 2), -1 do
     if not named or not name_word(k) then break end
     phrase = self.t[k].text .. (phrase == "" and "" or " " .. phrase)
+    if #named(phrase, 0, 0, math.huge, kind) > 0 then return true end
+  end
+  phrase = ""
+  for k = i + 1, after and i + 2 or 0 do
+    if not named or not name_word(k) then break end
+    phrase = (phrase == "" and "" or phrase .. " ") .. self.t[k].text
     if #named(phrase, 0, 0, math.huge, kind) > 0 then return true end
   end
   return false
@@ -4418,6 +4537,19 @@ function G:said_after_subject(i, subjects)
   return self:word(k, subjects)
 end
 
+-- True when a heading value ends just before token i, with only fillers, "to", "vectors" (or "vector",
+-- "vectoring") and commas between ("heading 060, vectors to rejoin ...").
+function G:after_heading(i)
+  local k = i - 1
+  while k >= 1 and (self.t[k].filler or self.t[k].text == "," or self:word(k, "to vectors vector vectoring")) do
+    k = k - 1
+  end
+  for _, q in ipairs(self:quantities(math.max(1, k - 2), k + 1)) do
+    if q.kind == "heading" and q.e == k + 1 then return true end
+  end
+  return false
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -4430,7 +4562,7 @@ function G:not_simulated()
     local t = self.t[i]
     local class
     if t.kind == "word" and NOT_SIMULATED_WORDS[t.text] and (not self.u:used(i) or #self:refs_in(i, i + 1, "waypoint") > 0)
-        and not self:navaid_named_before(i) then
+        and not self:navaid_named_beside(i) then
       for _, c in ipairs(lexicon.not_simulated) do
         if word_set(c.words, 1)[t.text] and (not c.near or self:near_any(i, c.near, c.window))
             and (not c.and_near or self:near_any(i + (c.window or 4), c.and_near[1], c.and_near[2]))
@@ -4440,6 +4572,7 @@ function G:not_simulated()
               and (self.t[i + 1].raw:match("^%u") or #self:refs_in(i + 1, i + 2, "waypoint") > 0)))
             and (not c.last or self:said_last(i, c.last ~= true and c.last or nil, c.own_clause))
             and (not c.subject or self:said_after_subject(i, c.subject))
+            and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
             and not (c.not_after and self:word(i - 1, c.not_after)) then
           class = c
@@ -4463,6 +4596,12 @@ function G:not_simulated()
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
+        -- ("expect further descent in five minutes, for now FL180": a class with `clause` ends at a comma before
+        -- a clause said for the meantime, "now" in its first three words, with a level, speed or heading)
+        if class.clause and x.text == "," and self:word_in(e + 1, e + 4, "now meanwhile meantime")
+            and self:clause_value(e + 1) then
+          break
+        end
         -- (a turn direction goes on: "make a left three sixty" is one orbit)
         -- (a class with `clause` goes on through instruction words up to its first comma: "expect to resume own
         -- navigation to MNR" announces all of it)
@@ -4936,14 +5075,20 @@ for _, list in ipairs({ names.airlines, names.common }) do
   end
 end
 -- In a creation ("create a new aircraft delta1022 b739 ..."), after one of lexicon.creation_verbs, it is the
--- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies.
+-- new aircraft's id: the airline's ICAO code and the number, as for an aircraft that flies; typed in capitals
+-- as an id of up to eight characters ("create ASCOT42 ..."), it is the id as typed. A word that opens the id
+-- of an aircraft flying ("ascot42" with ASCOT41 flying) is an id's prefix, typed as such.
 local function glued_telephony(text, fleet)
-  local ids = {}
-  for _, a in ipairs(fleet) do ids[a.id:upper()] = a.id end
+  local ids, prefixes = {}, {}
+  for _, a in ipairs(fleet) do
+    ids[a.id:upper()] = a.id
+    prefixes[(a.id:match("^%a+") or ""):upper()] = true
+  end
   return (text:gsub("()%f[%w](%a+)(%d%w*)%f[%W]", function(at, word, number)
-    local icao = GLUED_AIRLINES[word:lower()]
+    local icao = not prefixes[word:upper()] and GLUED_AIRLINES[word:lower()]
     local id = icao and ids[(icao .. number):upper()]
-    if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$") then
+    if icao and not id and #number <= 4 and number:match("^%d+%a?%a?$")
+        and not (word:match("^%u%u+$") and #word + #number <= 8) then
       for w in text:sub(1, at - 1):lower():gmatch("%a+") do
         if lexicon.creation_verbs[w] then id = (icao .. number):upper() end
       end
@@ -5289,6 +5434,7 @@ function M.translate(text, world)
   g:prefix_refs()
   g:role_refs()
   g:fix_refs()
+  g:navaid_name_refs()
   g:opening_right()
   g:runway_sides()
   g:level_limits()

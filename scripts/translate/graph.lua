@@ -229,13 +229,25 @@ function M.command_clauses(text)
   return #parts >= 2 and parts or nil
 end
 
+-- The simulator a request is translated against: opts.sim, else a new one after opts.setup's commands; and
+-- notes naming the setup lines that did not run.
+local function simulator(opts)
+  if opts.sim then return opts.sim, {} end
+  local sim, notes = squawk.sim.new(), {}
+  for _, line in ipairs(nodes.split_commands(opts.setup or "")) do
+    local ok, msg = sim:exec(line)
+    if not ok then notes[#notes + 1] = "setup line skipped: " .. msg end
+  end
+  return sim, notes
+end
+
 function M.translate(text, opts)
   opts = opts or {}
-  -- a list of command clauses: each translated on the state the ones before it leave
+  -- a list of command clauses: each translated on the state the ones before it leave (the setup's traffic
+  -- too: "pause, then move IBE32 to ...")
   local parts = not opts.in_list and M.command_clauses(text)
   if parts then
-    local sim = opts.sim or squawk.sim.new()
-    local scratch = sim:copy()
+    local scratch = simulator(opts):copy()
     local all, trace, seen = {}, {}, {}
     for _, part in ipairs(parts) do
       local r = M.translate(part, setmetatable({ sim = scratch, in_list = true }, { __index = opts }))
@@ -262,14 +274,7 @@ function M.translate(text, opts)
   end
   local requested = mode
   if mode ~= "offline" and not llm then mode = "offline" end
-  local sim, setup_notes = opts.sim, {}
-  if not sim then
-    sim = squawk.sim.new()
-    for _, line in ipairs(nodes.split_commands(opts.setup or "")) do
-      local ok, msg = sim:exec(line)
-      if not ok then setup_notes[#setup_notes + 1] = "setup line skipped: " .. msg end
-    end
-  end
+  local sim, setup_notes = simulator(opts)
   local waypoints = {}
   for _, w in ipairs(opts.waypoints or {}) do waypoints[#waypoints + 1] = w end
   for _, w in ipairs(nodes.defined_waypoints(opts.setup or "")) do waypoints[#waypoints + 1] = w end

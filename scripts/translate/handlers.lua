@@ -890,6 +890,66 @@ function m:fix_refs()
   end
 end
 
+-- "at 10 miles from LIMA", "position of the LIMA VOR", "direct TEBBY": a navaid said by its navdata name in
+-- capitals. A one-word waypoint ref that no route or DEFWPT holds, whose ident the navdata holds nowhere
+-- within lexicon.navaid_range_nm of an aircraft flying (LIMA is an airfield in Italy), and that names
+-- navaids within that range of one (anywhere, with none flying), becomes the navaid's ident (LIM) for every
+-- instruction that reads places; several navaids of the name are asked about, and so is a place of that
+-- ident within range too, unless it lies where the navaid is (the fix LAMAR 40 NM from the LAMAR VOR, LAA:
+-- which one?; with none flying, the place of that ident anywhere stays). Letters of a spelled callsign
+-- ("two zero LIMA") are no name, nor is the name of a waypoint being defined ("define waypoint TANGO at ...").
+function m:navaid_name_refs()
+  local named, locate = self.world.navaids_named, self.world.locate
+  if not named or not locate then return end
+  local defining = self:word_in(1, #self.t + 1, "create define defwpt make add new")
+  local near = {}
+  for _, a in ipairs(self.fleet) do
+    if a.lat then near[#near + 1] = a end
+  end
+  local flying = #near > 0
+  local range = flying and L.navaid_range_nm or math.huge
+  if not flying then near = { { lat = 0, lon = 0 } } end
+  local function nm(lat1, lon1, lat2, lon2)
+    local dlat, dlon = lat1 - lat2, (lon1 - lon2) * math.cos(math.rad(lat2))
+    return 60 * math.sqrt(dlat * dlat + dlon * dlon)
+  end
+  for _, r in ipairs(self.refs) do
+    local before = self.t[r.b - 1]
+    local no_name = before and (before.kind == "number" or before.number_word or L.phonetic[before.text]
+      or (defining and self:word(r.b - 1, "@waypoint_nouns")))
+    if r.kind == "waypoint" and not r.exists and r.e == r.b + 1 and self.t[r.b].raw == r.name and not no_name
+        and not self:word(r.b, "@navaid_kinds") then
+      local ids, at, seen = {}, {}, {}
+      for _, a in ipairs(near) do
+        local found, where = named(r.name, a.lat, a.lon, range)
+        for k, id in ipairs(found) do
+          if not seen[id] and id:upper() ~= r.name then
+            seen[id] = true
+            ids[#ids + 1] = id
+            at[#ids] = where and where[k]
+          end
+        end
+      end
+      -- (the place of that ident within range of an aircraft flying, and whether a navaid of the name is there)
+      local other, same = false, false
+      for _, a in ipairs(#ids > 0 and near or {}) do
+        local lat, lon = locate(r.name, nil, a.lat, a.lon)
+        if lat and nm(lat, lon, a.lat, a.lon) <= range then
+          other = true
+          for k = 1, #ids do same = same or (at[k] ~= nil and nm(lat, lon, at[k][1], at[k][2]) <= 1) end
+        end
+      end
+      -- (with no traffic, a place of that ident anywhere is the one typed)
+      if other and not same and flying then
+        self:need(string.format("Which place is '%s': the navaid %s of that name, or %s?", r.name,
+          table.concat(ids, " or "), r.name))
+      elseif #ids > 0 and not other then
+        r.name = self:one_named(ids, "navaid", r.name, math.huge)
+      end
+    end
+  end
+end
+
 -- Makers (lower case, "cessna") -> {designator = true} of the types squawk
 -- knows, model names ("737", "a320") -> designator, and designators said
 -- without their maker's letter ("738" -> B738, "319" -> A319: the digits of
@@ -1115,6 +1175,20 @@ function m:settle_callsigns()
         r.e = nxt.e
         table.remove(self.refs, k + 1)
       end
+    end
+  end
+  -- "Lufthansa 9CK, 9CK, reduce 250": the flight number said again alone after a comma, up to the next
+  -- punctuation, is the same reference
+  for _, r in ipairs(self.refs) do
+    local suffix = r.kind == "aircraft" and r.name:match("^%a%a%a(%w%w+)$")
+    local k = suffix and self.t[r.e] and self.t[r.e].text == "," and r.e + 1
+    local said, m = "", k
+    while m and self.t[m] and self.t[m].kind ~= "punct" and #said < #suffix do
+      said, m = said .. self.t[m].raw:upper(), m + 1
+    end
+    if said == suffix and self.t[m] and self.t[m].kind == "punct" and #self:refs_in(k, m) == 0 then
+      r.e = m
+      self:mark_used(k, m)
     end
   end
   for _, r in ipairs(self.refs) do
@@ -1521,6 +1595,8 @@ function m:at_distance(s)
         k = side
       end
       local p = self:word(k, "from of to before") and self:skip_fillers(k + 1)
+      -- (the navaid's kind said before its name, "from the VOR Bogota", is no place of its own)
+      if p and self:word(p, "@navaid_kinds") and self.t[p + 1] and self.t[p + 1].kind == "word" then p = p + 1 end
       local r = p and self:refs_in(p, p + 1, "waypoint")[1]
       local ids = p and self:acids(s) or {}
       -- ("when 20 miles from Minna descend FL200", "ten miles from Zurich East descend": a navaid or airport

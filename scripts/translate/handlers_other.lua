@@ -403,7 +403,9 @@ return function(H, f, compass)
     end
     -- values left unread: one after the level with no speed said is the speed (CRE's
     -- order: heading, altitude, speed: "fl300 290"); others are asked about
-    local read = { lat, lon, hdg, alt, spd, mach }
+    -- (each value read accounts for one value said: "hdg 270 FL350 270" leaves the second 270 to read as the
+    -- speed; with the speed said, a value said again is a repeat, "runway heading 240 so 240")
+    local read, used = { lat, lon, hdg, alt, spd, mach }, {}
     local left = {}
     local from = s.e  -- values before the callsign or type count aircraft ("create two aircraft: ...")
     for _, r in ipairs(self.refs) do
@@ -412,10 +414,14 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.b < from or self:in_reason(q.b) then goto continue end  -- (nor "one" in a remark: "- the long-haul one")
       local seen = self.taken[q.b] ~= nil  -- (read already: an offset's distance)
+      local again = false
       for k = 1, 6 do  -- (read has holes: a position by name leaves lat and lon nil)
         local v = read[k]
-        if v and math.abs(v - q.value) < 1e-9 then seen = true end
+        if not seen and v and math.abs(v - q.value) < 1e-9 then
+          if used[k] then again = true else seen, used[k] = true, true end
+        end
       end
+      seen = seen or (again and (spd or mach) ~= nil)
       -- ("United 455, seven three niner, B739": the designator's digits said just before it)
       for _, r in ipairs(types) do
         seen = seen or (r.name == actype and q.kind == "plain" and self:skip_fillers(q.e) == r.b
@@ -872,24 +878,7 @@ return function(H, f, compass)
       if not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
         local whole = self:whole_place_name(r, b, e, id)
         if whole ~= nil then return whole or nil end
-        -- ("direct TEBBY": the name of the one navaid near the aircraft, TEB, before a fix of that ident
-        -- elsewhere, off its route)
-        local a = self:state(id)
-        local near = a and a.lat and self.world.navaids_named
-          and self.world.navaids_named(r.name, a.lat, a.lon, L.navaid_range_nm) or {}
-        local keep = false
-        for _, w in ipairs(a and a.route or {}) do keep = keep or w:upper() == r.name:upper() end
-        -- (a fix of that ident near the aircraft stays that fix)
-        local flat, flon = nil, nil
-        if #near == 1 and self.world.user_waypoint_at then flat, flon = self.world.user_waypoint_at(r.name) end
-        if flat then
-          local dlat, dlon = flat - a.lat, (flon - a.lon) * math.cos(math.rad(a.lat))
-          keep = keep or 60 * math.sqrt(dlat * dlat + dlon * dlon) <= L.navaid_range_nm
-        end
-        if #near == 1 and near[1]:upper() ~= r.name:upper() and not keep then
-          self:explain(r.b, r.e)
-          return near[1]
-        end
+        -- (a navaid's name in capitals, "direct TEBBY", is its ident already: m:navaid_name_refs)
         return r.name
       end
     end
@@ -1169,7 +1158,9 @@ return function(H, f, compass)
           -- ("Nantucket airport" is the airport, not the navaid of that name)
           -- (with `two_words`, a name an airport bears too stays the airport's: "London City")
           local airport = two_words and self.world.airports_named and #self.world.airports_named(phrase) > 0
+          -- (its kind said after it, or before it in the Spanish order: "the VOR Bogota")
           local kind = self.t[p[2]] and self.t[p[2]].kind == "word" and L.navaid_types[self.t[p[2]].text]
+            or (i > 1 and self.t[i - 1].kind == "word" and L.navaid_types[self.t[i - 1].text])
           local ids = (airport or self:word(p[2], "@airport_nouns")) and {}
             or named(phrase, a.lat, a.lon, range_nm or L.navaid_range_nm, kind or nil)
           -- ("the Ottawa VOR": the VOR YOW, not the DME IOW of the same name that the navdata types TACAN)
@@ -1225,10 +1216,17 @@ return function(H, f, compass)
         end
         return out
       end
+      -- (the name lexicon.city_airports gives is the city's one large airport's: "Bogota" is SKBO "ELDORADO
+      -- INTL", not the medium SVED "EL DORADO" in Venezuela)
       local function said(phrase, ...)
         local ids = kept(list(phrase, ...))
         if #ids == 0 and L.city_airports[phrase] then
           ids = kept(list(L.city_airports[phrase], ...))
+          local large = {}
+          for _, id in ipairs(class and ids or {}) do
+            if class(id) == "LARGE" then large[#large + 1] = id end
+          end
+          if #large > 0 then ids = large end
           for _, id in ipairs(ids) do self.city_airport[id] = true end
         end
         return ids
@@ -1447,8 +1445,9 @@ return function(H, f, compass)
         for _, p in ipairs(phrases) do
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
-          -- ("Eelde VOR" is the navaid, not the airport that bears its name)
-          local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")) and {}
+          -- ("Eelde VOR", "the VOR Bogota" in the Spanish order, is the navaid, not the airport that bears its name)
+          local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")
+              or self:word(i - 1, "@navaid_kinds")) and {}
             or named(phrase)
           -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the only large or medium airport
           -- of the name near the aircraft, when the two words together name none)
@@ -2653,7 +2652,15 @@ return function(H, f, compass)
       -- (none near: the traffic's region's, "where is Cordoba airport?" over Argentina is SACO, not LEBA)
       named = named or self:airport_of_region(s.b, s.e, self.fleet[1])
     end
-    named = named or (no_aircraft and self:place_by_name(s.b, s.e))
+    -- (aircraft described, "where is the Iberia" with Iberias flying, are never a place of that name: they are
+    -- read, or asked about, below)
+    local described = false
+    for i = s.b, no_aircraft and not named and s.e - 1 or 0 do
+      local icao, _, codes = self:airline_at(i)
+      described = described or (icao ~= nil and #self:airline_fleet(icao, codes) > 0)
+    end
+    for _, u in ipairs(self.type_unresolved or {}) do described = described or (u.b >= s.b and u.b < s.e) end
+    named = named or (no_aircraft and not described and self:place_by_name(s.b, s.e))
     if named then return self:emit("POS " .. named) end
     if kind_said and no_aircraft then return self:need("Which navaid do you mean? Please give its identifier.") end
     -- "show me where TEST01 and TEST03 are": each aircraft named
@@ -3146,8 +3153,12 @@ return function(H, f, compass)
     end
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
-    -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail": shown)
+    -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail", "set up trails for all
+    -- tracks": shown)
     local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give")
+    for k = math.max(1, s.b - 4), s.e - 1 do
+      drawn = drawn or (self:word(k, "set") and self:word(k + 1, "up"))
+    end
     if drawn then self.last_on = self:on_off(s) < 0 and 1 or self.last_on end
     if self:on_off(s) < 0 and not q and self.last_on == nil
         and not self:word_in(math.max(1, s.b - 2), s.b, "@on @off") then

@@ -132,34 +132,30 @@ return function(H, f, wrap, compass)
       if q.kind == "alt" then with_unit[#with_unit + 1] = q end
       if q.kind == "plain" and q.b >= s.trig then plain[#plain + 1] = q end
     end
-    -- "rate fifteen hundred": a plain number after "rate" is the vertical speed
-    local rate_word = self:find_word(s.b, s.e, "rate")
-    for _, list in ipairs({ plain, with_unit }) do
-      if not rate and rate_word < s.e then
+    -- the first value (plain ones first) that fits, taken out of its list as the vertical speed
+    local function take_rate(fits)
+      for _, list in ipairs({ plain, with_unit }) do
         for k, q in ipairs(list) do
-          if q.b > rate_word and not q.fl then
-            rate = self:take(table.remove(list, k))
-            break
-          end
+          if fits(q) then return self:take(table.remove(list, k)) end
         end
       end
+    end
+    -- "rate fifteen hundred": a plain number after "rate" is the vertical speed
+    local rate_word = self:find_word(s.b, s.e, "rate")
+    if not rate and rate_word < s.e then
+      rate = take_rate(function(q) return q.b > rate_word and not q.fl end)
     end
     -- "descend flight level one two zero at one thousand five hundred": a number with no unit straight after
     -- "at" after the level, in whole hundreds within lexicon.rate_after_level (ft/min; no level or speed of
     -- that size), is the vertical speed
     local lvl = with_unit[1]
     if not rate and lvl and lvl.fl then
-      for _, list in ipairs({ plain, with_unit }) do
-        for k, q in ipairs(list) do
-          local at = self:skip_fillers(lvl.e)
-          if not rate and q.b == at + 1 and self:word(at, "at") and not q.fl and q.value % 100 == 0
-              and q.value >= L.rate_after_level[1] and q.value <= L.rate_after_level[2]
-              and not self:word_in(q.b, q.e, "@feet") and not self:word(q.e, "@feet") then
-            rate = self:take(table.remove(list, k))
-            break
-          end
-        end
-      end
+      local at = self:skip_fillers(lvl.e)
+      rate = take_rate(function(q)
+        return q.b == at + 1 and self:word(at, "at") and not q.fl and q.value % 100 == 0
+          and q.value >= L.rate_after_level[1] and q.value <= L.rate_after_level[2]
+          and not self:word_in(q.b, q.e, "@feet") and not self:word(q.e, "@feet")
+      end)
     end
     local now = self:state(ids[1])
     -- "FL240 -> FL250", "from FL240 to FL250", "leaving FL240 for FL250": the level it leaves, then the one it
@@ -583,6 +579,11 @@ return function(H, f, wrap, compass)
     if self:word_in(tb, s.e, "@left") then turn = -1 end
     if self:word_in(tb, s.e, "@right") and self:find_word(tb, s.e, "@right") < self:find_word(tb, s.e, "@left") then
       turn = 1
+    end
+    -- (a side corrected after the angle, "30 degrees right, sorry, left": that many degrees the corrected way)
+    if rel and rel.turn ~= 0 and turn ~= 0 and tb > rel.b then
+      rel = { kind = rel.kind, value = rel.value, b = rel.b, e = rel.e, turn = turn, number = rel.number, to = rel.to,
+              changed = rel.changed }
     end
     local named
     for i = s.b, s.e - 1 do

@@ -14,8 +14,8 @@ return {
       "left", "right", "speed", "knots", "reduce", "increase", "decrease", "delete", "remove", "waypoint",
       "waypoints", "direct", "directly", "proceed", "create", "aircraft", "destination", "origin", "vertical",
       "rate", "pause", "resume", "continue", "simulation", "scenario", "trail", "trails", "turbulence", "noise",
-      "conflict", "conflicts", "detection", "resolution", "resolve", "separation", "minimum", "radius", "bank",
-      "angle", "callsign", "degrees", "north", "south", "east", "west", "feet", "thousand", "hundred",
+      "conflict", "conflicts", "detection", "resolution", "resolve", "separation", "minimum", "minima", "radius",
+      "bank", "angle", "callsign", "degrees", "north", "south", "east", "west", "feet", "thousand", "hundred",
       "expedite", "cleared", "define", "route", "position", "reposition", "teleport", "move", "spawn",
       "generate", "place", "lateral", "navigation", "enable", "disable", "switch", "heavy", "mach", "seconds",
       "minutes", "minute", "second", "hours", "speedbird", "lufthansa", "descending", "climbing", "faster",
@@ -134,8 +134,9 @@ return {
         "copied", "affirm", "affirmative", "understood", "g'day", "bye",
         -- a request granted, a report acknowledged ("Mach .84 approved", "position report received")
         "approved", "received",
-        -- an airspeed said as indicated ("fly 250 knots indicated": squawk's speeds are calibrated, the same)
-        "indicated",
+        -- an airspeed said as indicated ("fly 250 knots indicated", "320 knots IAS": squawk's speeds are
+        -- calibrated, the same)
+        "indicated", "ias",
         -- a clearance given again in place of the one before ("recleared direct CAPER", "re-cleared FL250")
         "recleared", "reclear",
         -- a readback the controller corrects ("readback incorrect, I said FL350, not 340")
@@ -227,7 +228,7 @@ return {
         "manoeuvre", "manoeuvres", "maneuver", "maneuvers",
         -- an aircraft's present course described ("the Vueling's drifting off its route")
         "drifting", "drifted", "wandering", "straying", "deviating",
-        "flying", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
+        "flying", "flew", "proceeding", "track", "tracking", "action", "side", "velocity", "instruction",
         "instructions", "clearance", "reclearance", "amendment", "reroute", "request", "requested", "automatic",
         "automatically", "auto", "manual", "manually",
         "default", "restriction", "unrestricted", "constraint", "divert", "diversion", "high", "low", "intersection", "ac", "acft",
@@ -307,7 +308,7 @@ return {
     -- words that change what an instruction means: a leftover unless the parse carried them (a condition
     -- command, a switch turned off, a direct-to past a place, a handler that read it)
     negation = { "not", "instead", "don't", "dont", "doesn't", "didn't", "never", "unless", "cancel", "cancels", "cancelled", "canceled", "cancelling", "canceling",
-        "can't", "cannot", "won't", "shouldn't", "mustn't", "isn't", "aren't", "wasn't", "without", "except" },
+        "undo", "can't", "cannot", "won't", "shouldn't", "mustn't", "isn't", "aren't", "wasn't", "without", "except" },
     condition = { "if", "after", "until", "till", "before", "once", "when", "whenever", "unless" },
   },
   -- letters with accents written as navdata writes names, in plain letters ("Düsseldorf" DUSSELDORF)
@@ -522,8 +523,9 @@ return {
   -- the simulation itself, not an aircraft
   -- (an episode: one run of a learning environment; "env", "environment": the environment itself)
   -- (a replay: recorded traffic run again, in an analyst's words: "pause the replay", "remove X from the replay")
+  -- (a serial: one run of a military exercise, "resume the serial")
   sim = { "simulation", "sim", "simulator", "time", "exercise", "clock", "episode", "env", "environment", "replay",
-          "playback" },
+          "playback", "serial" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
   -- an abbreviation's words said out, read as the abbreviation ("resume navigation after passing the closest
@@ -619,7 +621,7 @@ return {
           -- capitals or with digits), and nothing else up to the full stop or colon
           study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
                            "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
-                           "participant", "subject", "iteration", "rep", "replication", "day" } },
+                           "participant", "subject", "iteration", "rep", "replication", "day", "serial" } },
   -- "before it reaches the boundary", "before the Spanish border": a deadline at a part of the airspace squawk
   -- does not simulate, set aside after an instruction (flown now, it is met); its clause holds one of these,
   -- no value, place or instruction word ("before GIROM" and "before 10 minutes" are asked)
@@ -636,7 +638,7 @@ return {
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
-      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz",
+      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz", "ias",
       -- a study's questionnaires and measures ("fill in the NASA-TLX")
       "nasa", "tlx", "nasa-tlx" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")
@@ -746,7 +748,9 @@ return {
   -- { words, n }, one of these within n words after the `near` word too; `clause`: the phrase goes on
   -- through instruction words up to its first comma (all of "expect to resume own navigation to X" is announced);
   -- `subject`: the phrase is one only straight after one of these words; `own_clause`: with `last`, a clause
-  -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it
+  -- after a comma opened by an imperative verb ("until 5 miles final, descend to 3000 feet") may follow it;
+  -- `after_heading`: the phrase is one only after a heading value, with at most "to", "vectors" or a comma
+  -- between them (G:after_heading)
   not_simulated = {
     -- ("squak", "sqwk": squawk typed short)
     { what = "transponder codes", words = "squawk squawking sq squak sqwk sqk",
@@ -804,6 +808,11 @@ return {
     -- "turn right heading 110, vectors Venice": the place named straight after the word (capitalised, or a
     -- place squawk knows), after an instruction
     { what = "vectors toward a place", words = "vectors vectoring", named_after = true, after_instruction = true },
+    -- "turn left heading 060, vectors to rejoin the track at DOBAK", "heading 200 to intercept the airway at
+    -- LAMSO": what the heading is flown for, the place where it ends; the heading is flown, no direct-to is given
+    -- ("heading 200, then rejoin the route at DOBAK" and "cleared to rejoin ..." are instructions of their own)
+    { what = "what a heading is flown for", words = "rejoin rejoining intercept intercepting join joining regain",
+      subject = "to", after_heading = true, clause = true },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
     -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
     { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },
@@ -983,6 +992,8 @@ return {
     { heard = { "velocidad actual" }, means = "present speed", after = { "mantenga", "mantener", "maintain" } },
     { heard = { "nivel actual" }, means = "present level", after = { "mantenga", "mantener", "maintain" } },
     { heard = { "proceda" }, means = "proceed", before = { "directo", "direct", "direct-to" } },
+    -- (English typed by a Spanish speaker: "procede direct GAVOL", as "proceder" is spelled)
+    { heard = { "procede", "proced" }, means = "proceed", before = { "directo", "direct", "direct-to", "to" } },
     { heard = { "directo" }, means = "direct", before = { "a", "al" }, after = { "proceda", "proceed", "vuele" } },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",

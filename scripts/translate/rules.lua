@@ -25,6 +25,7 @@
 return function(intent, rule, words)
   local CITY_AIRPORTS = require("translate.lexicon").city_airports
   local PHONETIC = require("translate.lexicon").phonetic
+  local NAVAID_RANGE_NM = require("translate.lexicon").navaid_range_nm
   intent "alt" { cmd = "ALT", args = { "acid", "alt", "vspd" }, handler = "altitude", value = true, family = "alt" }
   intent "maintain" { cmds = { "ALT", "SPD", "HDG" }, handler = "maintain", value = true, family = "alt" }
   intent "spd" { cmd = "SPD", args = { "acid", "spd" }, handler = "speed", value = true }
@@ -97,6 +98,17 @@ return function(intent, rule, words)
       for k = 1, colon == 0 and #g.t or 0 do
         if g.t[k].kind == "punct" and g.t[k].text == "." then
           if #g:quantities(1, k) == 0 and #g:refs_in(1, k, "aircraft") == 0 then colon = k end
+          break
+        end
+      end
+      -- ("I'd like a head-on pair, AEA10 B738 at ...": a first clause up to its comma that names no value and
+      -- nothing (aircraft, type, place) and holds no instruction word is a label too)
+      for k = 1, colon == 0 and #g.t or 0 do
+        if g.t[k].kind == "punct" then
+          local bare = g.t[k].text == "," and #g:quantities(1, k) == 0
+          for _, r0 in ipairs(g.refs) do bare = bare and r0.b >= k end
+          for x = 1, bare and k - 1 or 0 do bare = bare and g:intent_at(x) == nil end
+          if bare then colon = k end
           break
         end
       end
@@ -334,6 +346,8 @@ return function(intent, rule, words)
   -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
   rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
+  -- ("expedite your descent to FL120", "expedite the climb to ...": the level after it)
+  rule { "expedite", "alt", next = "your the", near = { 2, "climb descent" } }
   rule { "descent climbs", false, prev = { 2, "expedite rate" } }
   rule { "descent climbs", "alt" }
   -- "fly at 30000 ft with speed 290 and heading 100", "stay at FL300": the level flown at
@@ -405,6 +419,17 @@ return function(intent, rule, words)
   rule { "sim simulation simulator", "dtmult", when = function(g, i)
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil and i + 2 > #g.t
+  end }
+  -- "put the simulation at times four", "set the sim to four times": a multiplier ("times" before or after its
+  -- number) said of the simulation itself,
+  -- no aircraft named and no instruction word before it ("run the simulation at times four" is run's)
+  rule { "sim simulation simulator", "dtmult", when = function(g, i)
+    for _, q in ipairs(g:quantities(i + 1, math.min(#g.t + 1, i + 5))) do
+      if q.kind == "mult" or (q.kind == "plain" and g:word(q.b - 1, "times x")) then
+        return not g:has_ref(1, #g.t + 1, "aircraft") and not g:any_instruction_in(1, i)
+      end
+    end
+    return false
   end }
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
@@ -504,6 +529,12 @@ return function(intent, rule, words)
   -- "it's heading into the other traffic": the aircraft's present course described, no instruction
   rule { "heading", false, prev = { 1, "it's is was are they're" } }
   rule { "heading hdg headings", "hdg" }
+  -- "NATO01 track 090", "fly track 240", "descend FL250 and track 220": a track of three digits (up to 360) flown
+  -- as a heading; a track named with a noun before it ("inbound track 270", "the tanker track") is none
+  rule { "track", "hdg", not_prev = { 1, "inbound outbound the a your its tanker" }, when = function(g, i)
+    local t = g.t[i + 1]
+    return t ~= nil and t.kind == "number" and t.text:match("^%d%d%d$") ~= nil and tonumber(t.text) <= 360
+  end }
   rule { "turn switch", false, when = function(g, i) return g:switch_follows(i) end }
   rule { "turn turning", "hdg" }
   -- "rotate BAW123 30 degrees to the left", "nudge N123AB 15 degrees left": a turn by an amount
@@ -964,6 +995,25 @@ return function(intent, rule, words)
   -- "Virgin 3 delete 54 North 30 West": a position said in degrees straight after the verb, for an aircraft
   -- that flies, is a point of its route (no deletion of the aircraft)
   rule { "forget delete remove del", "delwpt", when = degrees_for_flying }
+  -- "GAF612 remove Leine from the route": a navaid said by its name (one or two words before "from") that the
+  -- route of the one aircraft named holds
+  rule { "remove delete del drop", "delwpt", near = { 8, "@route_nouns" }, when = function(g, i)
+    local f = g:find_word(i + 2, math.min(#g.t + 1, i + 4), "from")
+    local a = g:refs_in(1, #g.t + 1, "aircraft")
+    local st = f <= #g.t and #a == 1 and a[1].exists and g.world.navaids_named and g:state(a[1].name)
+    if not (st and st.lat) then return false end
+    local words = {}
+    for k = i + 1, f - 1 do
+      if g.t[k].kind ~= "word" or not g.t[k].alpha then return false end
+      words[#words + 1] = g.t[k].text
+    end
+    local held = {}
+    for _, w in ipairs(st.route or {}) do held[w:upper()] = true end
+    for _, id in ipairs(g.world.navaids_named(table.concat(words, " "), st.lat, st.lon, NAVAID_RANGE_NM)) do
+      if held[id:upper()] then return true end
+    end
+    return false
+  end }
   -- "clear the route of EWG7LP", "clear UAL485's route completely", "kill the whole route on ASA31": the
   -- whole route, no waypoint named
   rule { "clear delete remove erase wipe kill", "delrte", near = { 4, "@route_nouns" },
@@ -1599,6 +1649,8 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 8))[1]
     return q ~= nil and q.kind == "time" and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
+  -- ("set dt multiplier 3": the time step's name before the multiplier's, DTMULT's)
+  rule { "dt", false, next = "multiplier mult" }
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   rule { "step", "dt", next = "size length" }  -- "step size 0.5 s": the simulation's time step, a noun
@@ -1869,8 +1921,9 @@ return function(intent, rule, words)
   end }
   rule { "separation", "zone", prev = { 1, "nm mile miles ft foot feet" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
-  rule { "separation", false, not_prev = { 2, "minimum horizontal vertical lateral" },
-         not_near = { 4, "minimum nm nautical mile miles radius ft foot feet horizontally vertically laterally" } }
+  rule { "separation", false, not_prev = { 2, "minimum minima horizontal vertical lateral" },
+         not_near = { 4, "minimum minima nm nautical mile miles radius ft foot feet horizontally vertically "
+           .. "laterally" } }
   rule { "radius", false, prev = { 12, "circle circular" } }  -- "a circle ... with a 20 mile radius"
   rule { "protected protection prot pz rpz separation zone zoner zonedh radius", "zone" }  -- ("prot zone")
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
@@ -1920,8 +1973,10 @@ return function(intent, rule, words)
   -- "Polygon LTMA: 51.2 -1.0, 51.9 -1.0, ...", "a line REF1 from 55.68 -3.27 to 56.12 -3.20": a shape's
   -- word with the corners after it (three or more for a polygon, two for a line)
   rule { "polygon poly", "poly", when = function(g, i) return corners_after(g, i) >= 3 end }
+  -- ("draw the box: TANKER1 from 54.0N 005.0E to 54.5N 006.5E": the name after a colon)
   rule { "box", "box", when = function(g, i)
-    return corners_after(g, i) == 2 and (g:has_ref(i + 1, i + 2, "waypoint") or g:has_ref(i + 1, i + 2, "aircraft"))
+    local k = g.t[i + 1] and g.t[i + 1].text == ":" and i + 2 or i + 1
+    return corners_after(g, i) == 2 and (g:has_ref(k, k + 1, "waypoint") or g:has_ref(k, k + 1, "aircraft"))
   end }
   rule { "line", "line", when = function(g, i)
     return corners_after(g, i) == 2 and (g:followed_by(i, 3, "@named") or g:has_ref(i + 1, i + 3, "waypoint")

@@ -94,6 +94,12 @@ local function pattern_names(d)
   if d == "B350" then out[#out + 1] = { "beechcraft", "king air 350" } end
   if d == "BE20" then out[#out + 1] = { "beechcraft", "king air 200" } end
   if d == "E75L" or d == "E75S" then out[#out + 1] = { "embraer", "e175" }; out[#out + 1] = { "embraer", "175" } end
+  -- military transports and tankers, by the names their air forces give them ("C-17", "KC-135", "E-3", "A400M")
+  if d == "C17" then out[#out + 1] = { "boeing", "c-17" } end
+  if d == "C130" then out[#out + 1] = { "lockheed", "c-130" } end
+  if d == "K35R" then out[#out + 1] = { "boeing", "kc-135" }; out[#out + 1] = { "boeing", "kc-135r" } end
+  if d == "E3TF" then out[#out + 1] = { "boeing", "e-3" }; out[#out + 1] = { "boeing", "e-3a" } end
+  if d == "A400" then out[#out + 1] = { "airbus", "a400m" } end
   return out
 end
 

@@ -7,11 +7,13 @@
 #include <filesystem>
 
 #include "command/stack.h"
+#include "failed_exec.h"
 #include "core/files.h"
 #include "core/units.h"
 
 using namespace squawk;
 using namespace squawk::command;
+using squawk::test::error_of;
 namespace fs = std::filesystem;
 
 namespace {
@@ -24,14 +26,6 @@ Stack eastbound() {
                            "DEFWPT BRAVO 52.0 4.8", "ADDWPT KL204 ALPHA", "ADDWPT KL204 BRAVO"})
     REQUIRE_MESSAGE(s.exec(line), line);
   return s;
-}
-
-std::string error_of(Stack& s, const std::string& line) {
-  const std::string before = s.snapshot();
-  auto r = s.exec(line);
-  REQUIRE_MESSAGE(!r, line);
-  CHECK_MESSAGE(s.snapshot() == before, line);
-  return r.status().message();
 }
 
 bool has(const std::string& text, const std::string& part) {

@@ -7,12 +7,14 @@
 
 #include "command/registry.h"
 #include "command/stack.h"
+#include "failed_exec.h"
 #include "core/files.h"
 #include "core/geo.h"
 #include "core/units.h"
 
 using namespace squawk;
 using namespace squawk::command;
+using squawk::test::error_of;
 namespace fs = std::filesystem;
 
 namespace {
@@ -22,14 +24,6 @@ Stack with_kl204() {
   auto r = s.exec("CRE KL204 B744 52.0 4.0 90 FL200 250");
   REQUIRE(r);
   return s;
-}
-
-std::string error_of(Stack& s, const std::string& line) {
-  const std::string before = s.snapshot();
-  auto r = s.exec(line);
-  REQUIRE_MESSAGE(!r, line);
-  CHECK_MESSAGE(s.snapshot() == before, line);
-  return r.status().message();
 }
 
 fs::path temp_dir(const char* name) {

@@ -6411,6 +6411,287 @@ do
   check_eq(ex("NLX40 descend to 3000 ft"), "ALT NLX40 3000")
 end
 
+-- Cycle 38 (fix77): what a heading is flown for ("vectors to rejoin the track at FIX", "heading 200 to intercept
+-- the airway at FIX") names a place where the vector ends, no direct-to: the heading alone is flown. A clause
+-- of its own ("then rejoin the route at FIX", "cleared to rejoin ...") is still a direct-to.
+do
+  local _, ex = scene({ "CRE TUI4KM B738 51.0 8.0 270 FL240 280", "DEFWPT MOKSA 51.3 7.2", "ADDWPT TUI4KM MOKSA" })
+  check_eq(ex("TUI4KM turn right heading 310, vectors to rejoin the airway at MOKSA"), "HDG TUI4KM 310 RIGHT")
+  check_eq(ex("TUI4KM fly heading 250 to intercept the route at MOKSA"), "HDG TUI4KM 250")
+  check_eq(ex("TUI4KM heading 250 vectoring to join the track at MOKSA, descend FL200"),
+    "HDG TUI4KM 250 ; ALT TUI4KM FL200")
+  check_eq(ex("TUI4KM heading 250, then rejoin the route at MOKSA"), "HDG TUI4KM 250 ; DIRECT TUI4KM MOKSA")
+  check_eq(ex("TUI4KM climb FL260, cleared to rejoin the route at MOKSA"), "ALT TUI4KM FL260 ; DIRECT TUI4KM MOKSA")
+end
+
+-- Cycle 38 (fix77): the world's air forces ("<nation> air force" and "<nation> airforce", names.lua's air_forces)
+-- and military transport telephony ("Ascot", "Rafair", "Cotam", "Canforce") are read as their ICAO prefixes; a
+-- callsign flown under the word itself ("ASCOT41") is still that callsign, and a number no aircraft flies is asked.
+do
+  local _, ex = scene({ "CRE NAF330 C130 52.0 5.0 090 FL180 250", "CRE RRR2201 A332 52.5 4.0 270 FL300 290",
+    "CRE ASCOT41 C130 52.2 4.5 180 FL150 230", "CRE FAF1704 A400 52.8 5.5 010 FL260 280" })
+  check_eq(ex("Netherlands Air Force 330, climb FL200"), "ALT NAF330 FL200")
+  check_eq(ex("where is netherlands airforce three three zero"), "POS NAF330")
+  check_eq(ex("Ascot 2201 descend flight level 280"), "ALT RRR2201 FL280")
+  check_eq(ex("Ascot 41 turn left heading 150"), "HDG ASCOT41 150 LEFT")
+  check_eq(ex("French Air Force 1704, reduce speed 250"), "SPD FAF1704 250")
+  asked(ex("Netherlands Air Force 303 climb FL200"), "an air force callsign no aircraft flies")
+  asked(ex("Ascot, climb FL310"), "Ascot said alone, two aircraft fly under it")
+end
+
+-- Cycle 38 (fix77): military and exercise words. "angels N" is N thousand feet; "track NNN" (up to 360) a
+-- heading; "knots IAS" the speed; a serial is the exercise's run ("resume the serial", "serial 2:" a label);
+-- "separation minima"; "set up trails" shows them; "dt multiplier" is DTMULT; a box named after a colon; "after
+-- FIX" closing the request starts the instruction there; a navaid of the route said by name is removed from it;
+-- the flight number said again after the callsign is the same aircraft. Where each stops, it asks.
+do
+  local _, ex = scene({ "CRE CFC4410 C130 52.0 6.0 090 FL180 250", "CRE TRA62K B738 52.4 5.0 270 FL330 280",
+    "DEFWPT LOBAR 52.1 6.6", "DEFWPT TOMVA 52.3 7.2",
+    "ADDWPT CFC4410 LOBAR", "ADDWPT CFC4410 TOMVA" })
+  check_eq(ex("Canforce 4410 descend angels one five"), "ALT CFC4410 15000")
+  check_eq(ex("CFC4410 climb to angels 21"), "ALT CFC4410 21000")
+  asked(ex("CFC4410 climb angels twenty one"), "angels said as a compound number")
+  check_eq(ex("CFC4410 track 135"), "HDG CFC4410 135")
+  check_eq(ex("CFC4410 climb FL200 and fly track 070"), "ALT CFC4410 FL200 ; HDG CFC4410 70")
+  asked(ex("CFC4410 track 520"), "a track past 360")
+  check_eq(ex("CFC4410 increase to 280 knots IAS"), "SPD CFC4410 280")
+  check_eq(ex("resume the serial"), "OP")
+  check_eq(ex("serial two: CFC4410 climb FL200"), "ALT CFC4410 FL200")
+  check_eq(ex("horizontal separation minima 3 NM"), "ZONER 3")
+  check_eq(ex("please set up trails"), "TRAIL ON")
+  check_eq(ex("set dt multiplier 4"), "DTMULT 4")
+  check_eq(ex("draw the box: AREA7 from 52.0N 005.0E to 52.5N 006.0E"), "BOX AREA7 52 5 52.5 6")
+  check_eq(ex("CFC4410 climb FL220 after TOMVA"), "AT CFC4410 TOMVA DO ALT CFC4410 FL220")
+  asked(ex("CFC4410 climb FL220 after departure"), "after no waypoint")
+  -- ("after FIX" closing an expected clearance is no condition on the instruction before it)
+  check_eq(ex("CFC4410 descend FL160, expect lower after TOMVA"), "ALT CFC4410 FL160")
+  check_eq(ex("Canforce 4410, 4410, reduce 230 knots"), "SPD CFC4410 230")
+end
+do
+  local _, ex = navscene({ "CRE GAF620 A400 53.0 8.2 090 FL200 250", "ADDWPT GAF620 BMN", "ADDWPT GAF620 DLE",
+    "CRE GAF163 A332 53.7 8.4 200 FL270 290", "ADDWPT GAF163 WSR" }, "navaids of the route by name")
+  if ex then
+    check_eq(ex("GAF620, remove Leine from the route please"), "DELWPT GAF620 DLE")
+    check_eq(ex("German Air Force 620 delete Bremen from its route"), "DELWPT GAF620 BMN")
+    asked(ex("GAF620 remove Weser from the route"), "a navaid another aircraft's route holds")
+    check_eq(ex("German Air Force 163 descend FL250 after Weser"), "AT GAF163 WSR DO ALT GAF163 FL250")
+  end
+end
+
+-- Cycle 38 (fix77): military types at creation by the names their air forces give them ("C-17", "KC-135", "E-3",
+-- "A400M", "C-130"); each is modelled (the class model flies an unlisted designator as a jet, the A400 and C130 as
+-- turboprops); a type squawk has no name for is asked about.
+do
+  local _, ex = scene({ "CRE KLM1234 B738 52.2 4.2 300 FL250 280" })
+  check_eq(ex("create RCH612, C-17, 53 5, heading 090, FL300, 300 knots"), "CRE RCH612 C17 53 5 90 FL300 300")
+  check_eq(ex("put a tanker in: QID31, KC-135, 54 6, heading 180, FL260, 310 knots"),
+    "CRE QID31 K35R 54 6 180 FL260 310")
+  check_eq(ex("new track NATO05, E-3, 53.5 6.5, heading 045, FL300, 280 knots"),
+    "CRE NATO05 E3TF 53.5 6.5 45 FL300 280")
+  check_eq(ex("create BAF605 A400M at 51 4 heading 270 FL180 240 knots"), "CRE BAF605 A400 51 4 270 FL180 240")
+  check_eq(ex("create CTM1001, a C-130, 50 3, heading 010, FL160, 220 knots"), "CRE CTM1001 C130 50 3 10 FL160 220")
+  asked(ex("create FAF2201, Rafale, 50 3, heading 010, FL160, 420 knots"), "a fighter squawk has no name for")
+end
+
+-- Cycle 38 (fix77): a telephony word glued to a new callsign's number ("speedbird44") is the airline's prefix,
+-- but not where an aircraft flies with that word as its id's prefix ("ascot43" with ASCOT41 flying), nor typed in
+-- capitals as an id ("REACH77").
+do
+  local _, ex = scene({ "CRE ASCOT41 C130 52.6 7.6 030 FL160 230", "CRE BAW12 A320 52.0 4.0 090 FL300 280" })
+  check_eq(ex("create ASCOT42 C130 at 52 7 heading 060 FL140 220 knots"), "CRE ASCOT42 C130 52 7 60 FL140 220")
+  check_eq(ex("create speedbird44 A320 at 52 6 heading 090 FL200 250 knots"), "CRE BAW44 A320 52 6 90 FL200 250")
+  check_eq(ex("create ascot43 C130 at 52 6 heading 090 FL200 250 knots"), "CRE ASCOT43 C130 52 6 90 FL200 250")
+  -- typed in capitals, the id as typed; with no aircraft of its prefix flying too
+  check_eq(ex("create REACH77, C-17, at 52 6, heading 090, FL300, 300 knots"), "CRE REACH77 C17 52 6 90 FL300 300")
+end
+
+-- Cycle 39 (lead): a bare value between the callsign and the instruction word ("BAW256 9 climb FL300",
+-- "BAW256, 345, climb FL300") is explained by nothing and asked about by name, never dropped; the flight
+-- number said again ("DLH9CK, 9CK, reduce 250") is the callsign's
+do
+  local _, ex = scene({ "CRE BAW256 B738 52 4 090 FL200 250", "CRE DLH9CK A320 52 5 090 FL200 250" })
+  asked(ex("BAW256 9 climb FL300"), "a stray number before the verb")
+  asked(ex("BAW256, 345, climb FL300"), "a stray number set off by commas")
+  asked(ex("BAW256 one two three turn left heading 300"), "stray digits said as words")
+  check_eq(ex("BAW256 climb FL300"), "ALT BAW256 FL300")
+  check_eq(ex("Lufthansa 9CK, 9CK, reduce 250"), "SPD DLH9CK 250")
+end
+
+-- Cycle 39 (fix79): a navaid said by its navdata name in capitals ("LIMA" is the LIM VOR-DME over Peru, not
+-- the Italian airfield of that ident) is its ident for every place argument; a place of that ident near the
+-- traffic elsewhere than the navaid (the fix LAMAR 40 NM from the LAMAR VOR, LAA) is asked about
+do
+  local _, ex = navscene({ "CRE LPE77 A320 -12.3 -76.9 330 FL150 250", "CRE SKU301 A20N -11.8 -77.4 150 FL200 280" },
+    "navaid names in capitals")
+  if ex then
+    check_eq(ex("LPE77, when 15 miles from LIMA, descend FL100"), "ATDIST LPE77 LIM 15 ALT LPE77 FL100")
+    check_eq(ex("where is the LIMA VOR?"), "POS LIM")
+    check_eq(ex("SKU301 proceed direct LIMA"), "ADDWPT SKU301 LIM ; DIRECT SKU301 LIM")
+    check_eq(ex("LPE77 add LIMA to the route"), "ADDWPT LPE77 LIM")
+    -- a waypoint being defined under that name is no navaid
+    check_eq(ex("define waypoint LIMA at 12 south 77 west"), "DEFWPT LIMA -12 -77")
+  end
+  local _, far = navscene({ "CRE N123AB C172 38.3 -102.9 090 8000 110" }, "a navaid name that a fix bears")
+  if far then
+    check(far("N123AB direct LAMAR"):match("^ASK .*LAA") ~= nil, "the fix LAMAR or the LAMAR VOR")
+  end
+end
+
+-- Cycle 39 (fix79): the country airlines of a group by the name said with the country ("LAN Ecuador 1422":
+-- LNE, "LAN Peru": LPE) and by their ICAO telephony ("Aerolane", "Aerorepublica")
+do
+  local _, ex = scene({ "CRE LNE902 A320 -0.8 -78.9 045 FL190 280", "CRE LAN902 B788 -1.5 -79.5 200 FL300 290",
+    "CRE RPB55 A320 4.8 -73.8 250 FL150 240" })
+  check_eq(ex("set the destination of the LAN Ecuador 902 to SEQU"), "DEST LNE902 SEQU")
+  check_eq(ex("aerolane nine zero two climb flight level two one zero"), "ALT LNE902 FL210")
+  check_eq(ex("LAN nine zero two descend flight level two six zero"), "ALT LAN902 FL260")
+  check_eq(ex("aerorepublica five five turn right heading zero nine zero"), "HDG RPB55 90 RIGHT")
+  -- the group's name alone with a flight number two of its airlines fly is asked
+  asked(ex("LATAM 902 climb FL320"), "LATAM 902: LAN or LNE")
+end
+
+-- Cycle 39 (fix79): "be level FL190 over PUNPU", "to reach ... overhead X": a level to be reached over a
+-- waypoint of the route is its AT constraint; over a waypoint off the route it is asked
+do
+  local _, ex = scene({ "CRE CMP40 B738 9.4 -79.0 210 FL260 290", "DEFWPT KARIN 8.9 -79.3", "DEFWPT TOMAS 9.9 -79.9",
+    "ADDWPT CMP40 KARIN" })
+  check_eq(ex("CMP40 be level flight level one seven zero over KARIN"), "AT CMP40 KARIN ALT FL170")
+  check_eq(ex("CMP40 descend to reach FL150 overhead KARIN"), "AT CMP40 KARIN ALT FL150")
+  asked(ex("CMP40 be level FL170 over TOMAS"), "over a waypoint off the route")
+end
+
+-- Cycle 39 (fix79): "to" between a callsign's digits said in words and a latitude in words is the preposition
+-- when the digits with it would make no latitude ("move the Avianca two four to nine north": 2429 north)
+do
+  local _, ex = scene({ "CRE AVA36 A320 8.4 -79.3 350 FL200 280", "CRE AVA3628 A319 9.4 -79.6 170 FL220 280" })
+  check_eq(ex("move the Avianca three six to eight north seventy eight west"), "MOVE AVA36 8 -78")
+  check_eq(ex("move Avianca three six to one zero point five north, seventy nine west"), "MOVE AVA36 10.5 -79")
+  -- digits that with it still make a latitude stay the digit: another callsign
+  check_eq(ex("Avianca three six two eight climb flight level two four zero"), "ALT AVA3628 FL240")
+end
+
+-- Cycle 39 (fix79): "put the simulation at times four": a multiplier said of the simulation, "times" before or
+-- after its number, no aircraft named
+do
+  local _, ex = scene({ "CRE CMP40 B738 9.4 -79.0 210 FL260 290" })
+  check_eq(ex("put the simulation at times four"), "DTMULT 4")
+  check_eq(ex("simulation times two please"), "DTMULT 2")
+  -- an aircraft named: no clock's rate
+  asked(ex("put CMP40 at times four"), "an aircraft at times four")
+end
+
+-- Cycle 39 (fix79): a city whose name lexicon.city_airports gives is its one large airport ("Bogota" is SKBO,
+-- not the medium EL DORADO in Venezuela); a navaid's kind said before its name (the Spanish order, "the VOR
+-- Bogota", "from VOR BOG") names the navaid, no approach clearance
+do
+  local _, ex = navscene({}, "a city's large airport")
+  if ex then
+    check_eq(ex("set the wind at Bogota at FL120 to 250 degrees 15 knots"), "WIND SKBO FL120 250 15")
+  end
+  local _, ava = navscene({ "CRE AVA77 A320 4.9 -74.4 135 FL190 280" }, "the kind before a navaid's name")
+  if ava then
+    check_eq(ava("AVA77 proceed to the VOR Bogota"), "ADDWPT AVA77 BOG ; DIRECT AVA77 BOG")
+    check_eq(ava("AVA77 at two zero miles from the VOR Bogota descend one four thousand feet"),
+      "ATDIST AVA77 BOG 20 ALT AVA77 14000")
+    asked(ava("AVA77 direct to Bogota"), "the city: the BOG VOR or SKBO")
+    -- "VOR approach" stays an approach clearance, not simulated: no place
+    check_eq(ava("AVA77 cleared VOR approach runway 13L"), "")
+  end
+end
+
+-- Cycle 39 (fix79): English typed by Spanish speakers: "procede direct" (as "proceder" is spelled), "expedite
+-- your/the descent to ...", the digit "fiver"; "is for traffic", "until further advise" are reasons and
+-- limits, no values
+do
+  local _, ex = scene({ "CRE AVA51 A320 4.9 -74.4 135 FL190 280", "DEFWPT GAVIN 5.2 -74.0", "ADDWPT AVA51 GAVIN" })
+  check_eq(ex("AVA51 procede direct GAVIN"), "DIRECT AVA51 GAVIN")
+  check_eq(ex("AVA51 expedite your descent to flight level one one zero"), "ALT AVA51 FL110")
+  asked(ex("AVA51 expedite your descent"), "a descent with no level")
+  check_eq(ex("AVA51 reduce to two fiver zero knots"), "SPD AVA51 250")
+  check_eq(ex("AVA51 turn to the left heading tree four zero, is for traffic"), "HDG AVA51 340 LEFT")
+  check_eq(ex("AVA51 maintain flight level one niner zero until further advise"), "ALT AVA51 FL190")
+end
+
+-- Cycle 39 (fix80a): a turn's side corrected after its angle ("20 degrees left, sorry, right"; "left, um,
+-- right": hesitations alone between two sides) turns that many degrees the corrected way
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250" })
+  check_eq(ex("EWG9 turn 20 degrees left, sorry, right"), "HDG EWG9 40 RIGHT")
+  check_eq(ex("EWG9 turn 20 degrees left, um, right"), "HDG EWG9 40 RIGHT")
+  check_eq(ex("turn NLX40 right 30, I mean left"), "HDG NLX40 170 LEFT")
+  -- the same side said again after a hesitation is no correction
+  check_eq(ex("EWG9 turn 20 degrees left, er, left"), "HDG EWG9 360 LEFT")
+end
+
+-- Cycle 39 (fix80a): a value straight after an aircraft and "to", closed by "and" or a comma, is said for it:
+-- never dropped beside the instruction after it ("the Ryanair to 110 and 230 knots"); digits with no unit
+-- are asked about
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270" })
+  asked(ex("NLX40 to two four zero and two five zero knots"), "a level or heading said bare after 'to'")
+  asked(ex("NLX40 to two four zero, and two five zero knots"), "the same with a comma")
+  check_eq(ex("NLX40 to FL240 and 250 knots"), "ALT NLX40 FL240 ; SPD NLX40 250")
+end
+
+-- Cycle 39 (fix80a): aircraft described ("where is the Iberia") are never a place of that name (navdata's
+-- IBERIA airfield): one that fits is shown, several are asked about
+do
+  local _, ex = navscene({ "CRE IBE31 A320 40.5 -3.5 180 FL150 250", "CRE IBE77 A321 40.2 -3.2 320 FL120 240",
+    "CRE AEA12 B738 40.6 -2.9 250 FL200 280" }, "aircraft described, never a place")
+  if ex then
+    asked(ex("where is the Iberia"), "two Iberias")
+    asked(ex("where is Iberia"), "two Iberias, no article")
+    check_eq(ex("where is the Air Europa"), "POS AEA12")
+  end
+end
+
+-- Cycle 39 (fix80a): "..., no, just the heading" takes back what was said after the kept instruction's clause
+-- (a condition and its instruction), not only the other kinds of command
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250" })
+  check_eq(ex("EWG9 heading 090 and at FL200 speed 230, actually no, just the heading"), "HDG EWG9 90")
+  check_eq(ex("NLX40 turn left heading 150, and at FL200 reduce 240, hmm no, only the heading"), "HDG NLX40 150 LEFT")
+  asked(ex("EWG9 heading 090, no, just the climb"), "the kept kind never said")
+end
+
+-- Cycle 39 (fix80a): new aircraft listed each get their own fields (a value equal to another field's is read
+-- in its place: "hdg 250 FL250 250"); a lead-in clause naming nothing, up to its comma, labels the list
+do
+  local _, ex = scene({})
+  check_eq(ex("two aircraft: XY1 A320 52.0 4.0 hdg 250 FL250 250, XY2 A320 52.5 4.0 hdg 090 FL250 290"),
+    "CRE XY1 A320 52 4 250 FL250 250 ; CRE XY2 A320 52.5 4 90 FL250 290")
+  check_eq(ex("let's do a crossing pair, XY4 B738 at 52.0 4.0 heading 180 FL300 280 and XY5 B738 at 51.5 4.5 "
+    .. "heading 360 FL300 280"), "CRE XY4 B738 52 4 180 FL300 280 ; CRE XY5 B738 51.5 4.5 360 FL300 280")
+  -- with the speed said, a value said again is a repeat
+  check_eq(ex("create XY7 A320 at 52.0 4.0, heading 240 so 240, FL100, 200 kt"), "CRE XY7 A320 52 4 240 FL100 200")
+  -- a lead-in that names an aircraft flying is no label
+  ex = select(2, scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270" }))
+  asked(ex("NLX40 first, XY6 B738 at 52.0 4.0 heading 180 FL300 280"), "an aircraft before the new one")
+end
+
+-- Cycle 39 (fix80a): corrections read: "flew" (a wish's past tense), a heading cancelled ("undo", "cancel")
+-- by the route resumed, an expected clearance up to a comma before a value for now; a heading cancelled with
+-- nothing in its place is still asked
+do
+  local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL220 270", "CRE EWG9 A320 52.1 4.1 020 FL180 250",
+    "DEFWPT WPA 52.6 5.0", "ADDWPT NLX40 WPA" })
+  check_eq(ex("EWG9, I'd prefer it flew heading 100"), "HDG EWG9 100")
+  check_eq(ex("undo the heading on NLX40, back on its route please"), "LNAV NLX40 ON")
+  check_eq(ex("cancel the vectors for NLX40 and resume own navigation"), "LNAV NLX40 ON")
+  asked(ex("cancel the heading on NLX40 and climb FL260"), "a heading cancelled, a climb given")
+  check_eq(ex("EWG9 expect further climb in ten minutes, for now FL200"), "ALT EWG9 FL200")
+  check_eq(ex("EWG9 expect higher in ten minutes, FL240"), "")
+end
+
+-- Cycle 39 (fix80a): a list of simulation commands and instructions ("pause, then move ...") is translated on
+-- the traffic its setup creates, as one request is
+do
+  local function set(text, setup) return said(graph.translate(text, { setup = setup, mode = "offline" })) end
+  check_eq(set("hold, then move NLX40 to 52.2 4.2", "CRE NLX40 B738 52.3 4.8 200 FL220 270"),
+    "HOLD ; MOVE NLX40 52.2 4.2")
+  asked(set("hold, then move XX99 to 52.2 4.2", "CRE NLX40 B738 52.3 4.8 200 FL220 270"), "no such aircraft")
+end
+
 -- Cycle 39 (fix80b): wishes and their tails. A deadline at a part of the airspace squawk does not simulate
 -- ("before it reaches the boundary") is met by the instruction flown now; one at a place, a time or with an
 -- instruction of its own is asked. "nice and gentle" is how it is flown; "can it fly .80" a Mach number;
