@@ -177,12 +177,14 @@ local function know_all(v, seen)
   -- in the addressing position, lexicon.label_roles and lexicon.bare_labels only a speaker's label; lexicon.city_airports are places,
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
-  -- their words only where those fit: they account for no word)
+  -- their words only where those fit; lexicon.manner, deadline_places and held_value only where their reading
+  -- holds: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
-      or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations then
+      or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
+      or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value then
     return
   end
   seen[v] = true
@@ -1408,6 +1410,10 @@ function G:in_reason(i)
         inside = false
       elseif self:purpose(k) then
         inside = true
+      elseif w == "before" and (instructed(k) or #self:quantities(1, k) > 0) and self:deadline_clause(k) then
+        -- ("climb FL340 before it reaches the boundary", "I'd like AFR1234 at FL340 before the boundary":
+        -- lexicon.deadline_places)
+        inside, reason[k] = true, true
       elseif punct and self:word(k + 1, "@then_words") then
         -- (", then ..." ends the reason: "up to FL320 so it conflicts with TRA6021, then ff 1 min")
         inside = false
@@ -1436,6 +1442,20 @@ function G:in_reason(i)
     end
   end
   return self.reason[i] or false
+end
+-- True when "before" at k opens a clause (to the next punctuation) that names one of lexicon.deadline_places
+-- and holds no value, place, type or instruction word ("before it gets to the Spanish boundary").
+function G:deadline_clause(k)
+  local e = k + 1
+  while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+  if not self:word_in(k + 1, e, "@deadline_places") or #self:quantities(k + 1, e) > 0 then return false end
+  for _, r in ipairs(self.refs) do
+    if r.kind ~= "aircraft" and r.b > k and r.b < e then return false end
+  end
+  for x = k + 1, e - 1 do
+    if self:intent_at(x) then return false end
+  end
+  return true
 end
 function G:preceded_by(i, span, words) return self:word_in(math.max(1, i - span), i, words) end
 function G:number_at(i) local t = self.t[i] return t ~= nil and not self.u:used(i) and t.number_word end
@@ -1532,8 +1552,8 @@ end
 -- ("horizontal resolutions only": resolutions without the vertical)
 function G:vertical_resolutions(i)
   local horizontal_only = self:word(i, "horizontal lateral") and self:word_in(math.max(1, i - 2), i + 4, "only")
-  return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp")
-    and not self:word_in(1, #self.t + 1, "factor zone pz rpz zonedh separation sep")
+  return (self:word(i, "vertical") or horizontal_only) and self:word_in(1, #self.t + 1, "resolution resolutions reso mvp resolver")
+    and not self:word_in(1, #self.t + 1, "factor margin zone pz rpz zonedh separation sep")
     and not self:has_ref(1, #self.t + 1, "aircraft")
 end
 
@@ -1890,7 +1910,8 @@ function G:condition()
   -- comma, a waypoint the aircraft reaches (no value before it) ends the condition, an instruction after it
   local reached = comma > #self.t and self:refs_in(i, #self.t + 1, "waypoint")[1]
   if reached and self:word(reached.b - 1, "to at passes reaches hits crosses overflies")
-      and #self:quantities(i, reached.b) == 0 and self:any_instruction_in(reached.e, #self.t + 1) then
+      and #self:quantities(i, reached.b) == 0
+      and (self:any_instruction_in(reached.e, #self.t + 1) or self:held_value(reached.e)) then
     comma, rest = reached.e, reached.e
   end
   if comma > #self.t then
@@ -1925,6 +1946,7 @@ function G:condition()
       return nil, rest
     end
     self.at_place = places[1].name
+    self.at_held = self:held_value(rest)
     return "", rest
   end
   for _, q in ipairs(self:quantities(i, comma)) do
@@ -1933,8 +1955,9 @@ function G:condition()
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "plain" and rest == q.e then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
-    -- "when BAW123 is 20 miles from LEKKO, ...": ATDIST [NM]
-    local from = q.kind == "dist" and self:word(q.e, "from of to before") and self:skip_fillers(q.e + 1)
+    -- "when BAW123 is 20 miles from LEKKO, ...", "once the Vueling is 20 miles out from SIJAN": ATDIST [NM]
+    local at = self:word(q.e, "out") and q.e + 1 or q.e
+    local from = q.kind == "dist" and self:word(at, "from of to before") and self:skip_fillers(at + 1)
     local r = from and self:refs_in(from, from + 1, "waypoint")[1]
     -- ("when the Swiss is 10 miles from Munich airport": a place said by its name, near the aircraft)
     local place = r and r.name or (from and self:place_by_name(from, comma, self:state(self.subject)))
@@ -1978,10 +2001,38 @@ function G:do_at(id, wp, n0)
   return true
 end
 
+-- True when the words from k are a level or speed wanted, no instruction word: "I want it at FL250", ", I'd like
+-- him at 250 knots", "it should be at FL250" (words of lexicon.held_value, then the value ending the request).
+local HELD = set_of(lexicon.held_value)
+function G:held_value(k)
+  local q = self:quantities(k, #self.t + 1)[1]
+  if not q or not ((q.kind == "alt" and q.fl) or q.kind == "speed" or q.kind == "mach") or not self:word(q.b - 1, "at") then
+    return false
+  end
+  for x = k, #self.t do
+    local t = self.t[x]
+    if (x < q.b or x >= q.e) and not (t.kind == "punct" or t.filler or (x < q.b and HELD[self.words[x]])) then
+      return false
+    end
+  end
+  return not self:any_instruction_in(k, #self.t + 1)
+end
+
 -- The instructions after a condition at a waypoint (G:condition: self.at_place) run when the condition's
--- aircraft passes it: BlueSky's AT acid wp DO with each full command (G:do_at).
+-- aircraft passes it: BlueSky's AT acid wp DO with each full command (G:do_at). A level or speed wanted
+-- there (G:held_value: "when AFR1234 gets to GIROM I want it at FL250") is met there: the constraint
+-- AT acid wp ALT/SPD, as "be at FL250 over GIROM".
 function G:at_condition()
-  self:do_at(self.subject, self.at_place, 0)
+  if not self.at_held then return self:do_at(self.subject, self.at_place, 0) end
+  for c = 1, #self.out do
+    local cmd, id, v = self.out[c]:match("^(%u+) (%S+) (%S+)$")
+    if not ((cmd == "ALT" or cmd == "SPD") and id == self.subject) then
+      self.ask = string.format("I have %s. Which of these should be met at %s, and for which aircraft?",
+        table.concat(self.out, " ; "), self.at_place)
+      return
+    end
+    self.out[c] = string.format("AT %s %s %s %s", id, self.at_place, cmd, v)
+  end
 end
 
 -- ---- segments: one instruction each ----
@@ -4226,6 +4277,14 @@ end
 -- condition the commands do not carry ("climb FL340 unless BAW12 is there"), or a word squawk does not
 -- know ("climb FL340 gently"). Words inside a callsign, place, type or value, a reason, a reply about
 -- what squawk does not simulate, or a courtesy phrase ("when you get a chance") are explained.
+local MANNER = set_of(lexicon.manner)
+-- True when a vertical speed was issued: VS, or ALT with its rate ("ALT KLM1 FL340 1000").
+function G:rate_issued()
+  for _, c in ipairs(self.out) do
+    if c:match("^VS ") or c:match("^ALT %S+ %S+ %S+$") then return true end
+  end
+  return false
+end
 function G:unaccounted()
   -- the words no list explains, and the negations and conditions: only these need the parse's account
   local explained, said, ignored = self.explained or {}, {}, self.world.ignored or {}
@@ -4257,6 +4316,7 @@ function G:unaccounted()
   for _, i in ipairs(said) do
     local t = self.t[i]
     if not inside[i] and not issued[COMMAND_ONLY[t.text] or t.text] and not self:in_reason(i)
+        and not (MANNER[t.text] and self:rate_issued())
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end

@@ -516,6 +516,68 @@ function m:asked_where(b, e)
   return self:word(k, "where wheres") or (self:word(k, "what whats") and self:word(e, "doing"))
 end
 
+-- "the two Vuelings", "both easyJets", "both the Air Europas", "all the Ryanairs": an airline said in the
+-- plural after "the", "all" or "both" (a count, a digit or a number word, after "the" or "all"; with neither
+-- count nor "both", written with a capital), with exactly that many of it flying ("both": two; "the" or "all"
+-- with no count: two or more), names each of them: one reference per aircraft over the words (kind
+-- "aircraft", by_airline = true), in place of any the callsign matcher heard in them ("three" as AEA3).
+-- Another count flying is asked, naming those that fly; aircraft of it named by callsign elsewhere in the
+-- request are each their own (no group). Said after a word of other traffic (lexicon.airline_context,
+-- aircraft_context, below, above, "from", "of") it is no group. `inside`: the tokens other references hold.
+local COUNTS = { two = 2, three = 3, four = 4, ["2"] = 2, ["3"] = 3, ["4"] = 4 }
+function m:airline_group_refs(inside)
+  if not AIRLINE_NAMES then airline_names() end
+  for i = 1, #self.t do
+    -- (other traffic: "away from the Vuelings", "above the two Vuelings", "behind both Vuelings", "clear of the
+    -- Vuelings")
+    local b = self:word(i, "the all both") and not self:word(i - 1, "@airline_context @aircraft_context @below @above")
+      and not self:word(i - 1, "from of") and i
+    local k = b and (self:word(i + 1, "the") and i + 2 or i + 1)
+    local count = b and COUNTS[self.t[k] and self.t[k].text or ""]
+    if count then k = k + 1 end
+    if self:word(i, "both") then count = count or 2 end
+    for n = 3, 1, -1 do
+      local last = b and self.t[k + n - 1]
+      if last and last.kind == "word" and last.text:match("%as$") and not inside[k]
+          and (count or self.t[k].raw:match("^%a*%u")) then
+        local words = {}
+        for x = k, k + n - 1 do words[#words + 1] = self.t[x].kind == "word" and self.t[x].text or "" end
+        words[n] = words[n]:sub(1, -2)  -- ("vuelings": the airline's name and its plural's "s")
+        local said = table.concat(words, " ")
+        local icao = AIRLINE_NAMES[said]
+        local fits = icao and self:airline_fleet(icao, BRANDS[said]) or {}
+        -- ("both Lufthansas, DLH4AX FL210 and DLH9KM FL240": named by their callsigns too, each its own)
+        local named = false
+        for _, r in ipairs(self.refs) do
+          for _, id in ipairs(fits) do
+            named = named or (r.kind == "aircraft" and r.name == id and (r.b < b or r.e > k + n))
+          end
+        end
+        -- (the words the callsign matcher heard as an aircraft, "two Vuelings" as VLG21, "three" as AEA3,
+        -- are the group's)
+        for x = #self.refs, 1, -1 do
+          if icao and not named and self.refs[x].b >= b and self.refs[x].e <= k + n then table.remove(self.refs, x) end
+        end
+        if icao and not named and not (#fits == count or (not count and #fits >= 2)) then
+          self:need(string.format("Which aircraft does '%s' mean? %s", self:raw(b, k + n),
+            #fits > 0 and ("Those flying: " .. table.concat(fits, ", ") .. ".") or "None of them flies."))
+          for x = b, k + n - 1 do inside[x] = true end
+          break
+        elseif icao and not named then
+          local at = 1
+          while self.refs[at] and self.refs[at].b < b do at = at + 1 end
+          for j, id in ipairs(fits) do
+            table.insert(self.refs, at + j - 1, { kind = "aircraft", name = id, b = b, e = k + n, exists = true,
+              by_airline = true })
+          end
+          for x = b, k + n - 1 do inside[x] = true end
+          break
+        end
+      end
+    end
+  end
+end
+
 -- An aircraft named by "the" and its airline alone ("could the Ryanair come
 -- down", "the easyJet's route", "the BA"), with exactly one aircraft of that
 -- airline flying, is a reference to it (added to self.refs, kind "aircraft",
@@ -632,6 +694,7 @@ function m:airline_refs()
       end
     end
   end
+  self:airline_group_refs(inside)
   local i = 1
   while i <= #self.t do
     local icao, e, codes = self:airline_at(i)
@@ -1604,6 +1667,17 @@ end
 -- units of another kind around a value instruction or a direct-to are
 -- instructions too.
 local CARRIES_OTHERS = { hdg = true, alt = true, spd = true, infer = true, maintain = true, vs = true, direct = true }
+-- "once level", "when it's level", "when there" said straight before the value at b (punctuation between):
+-- the token of "once"/"when", or nil
+local function level_reached_before(self, b)
+  local k = b - 1
+  while self.t[k] and self.t[k].kind == "punct" do k = k - 1 end
+  if not self:word(k, "level lvl there") then return nil end
+  local c = k - 1
+  if self:word(c, "is it's you're") then c = c - 1 end
+  if self:word(c, "it you") then c = c - 1 end
+  return self:word(c, "once when") and c or nil
+end
 function m:leftovers(s)
   if not CARRIES_OTHERS[s.intent] then return end
   local ids = self:acids(s)
@@ -1638,7 +1712,12 @@ function m:leftovers(s)
         local held = qs[k + 1]
         held = at and held and held.kind == "alt" and held.b == at and not self:word(q.b - 1, "not")
           and not self.taken[held.b] and held
-        emit((held and "ATALT " .. ids[1] .. " " .. f.alt(held.value, held.fl) .. " " or "") .. "SPD " .. ids[1] .. " "
+        -- ("climb FL370 and once level, Mach .80": the speed waits for the level this request gave the aircraft)
+        local c = not held and level_reached_before(self, q.b)
+        local level = c and table.concat(self.out, " ; "):match("ALT " .. ids[1]:gsub("%p", "%%%0") .. " (FL%d+)")
+        if level then self:explain(c, q.b) end
+        emit((held and "ATALT " .. ids[1] .. " " .. f.alt(held.value, held.fl) .. " "
+            or level and "ATALT " .. ids[1] .. " " .. level .. " " or "") .. "SPD " .. ids[1] .. " "
           .. (q.kind == "mach" and f.mach(q.value) or f.int(q.value)))
         if held then self:take(held) end
         spd_done = self:take(q)

@@ -1925,6 +1925,20 @@ return function(H, f, compass)
         last = r.e
       end
     end
+    -- ("a route via BIDAC then Bilbao": a place said by its one-word name, capitalised, after "then", "and" or
+    -- a comma straight after the route's last place and ending the request, is the next place)
+    local k = last
+    while self:word(k, "then and") or (self.t[k] and self.t[k].text == ",") do k = k + 1 end
+    local nx = self.t[k + 1]
+    if k > last and k < s.e and (not nx or nx.kind == "punct") and self.t[k].kind == "word"
+        and self.t[k].raw:match("^%u%l") then
+      local place = self:place_by_name(k, k + 1, self:state(id))
+      if place then
+        self:explain(last, k + 1)
+        self:emit("ADDWPT " .. id .. " " .. place)
+        return
+      end
+    end
     -- "... and on to Boston", "then into Heathrow": an airport said by its name after the
     -- route's last place and "to"/"into" is the destination; a name that names no airport is
     -- asked about, never dropped
@@ -2621,6 +2635,12 @@ return function(H, f, compass)
     end
     local no_aircraft = #self:refs_in(s.b, s.e, "aircraft") == 0
     if no_aircraft and #places > 0 then return self:emit("POS " .. places[1].name) end
+    -- "where is AFR1234 relative to ANETO", "... in relation to GIROM", "... with respect to LAPOS": the place
+    -- the position is wanted from, which POS shows beside the aircraft's own
+    if not no_aircraft and #places == 1 and self:word(places[1].b - 1, "to")
+        and self:word(places[1].b - 2, "relative relation respect") then
+      self:explain(places[1].b - 2, places[1].e)
+    end
     -- a place by its name ("where is Schiphol?", "where is Munich airport?", "where the Kempten VOR is"); an
     -- airport said as such by the name of its city's navaids near the traffic ("show me Ezeiza airport": SAEZ
     -- "MINISTRO PISTARINI" beside the EZEIZA VOR), as a destination is
@@ -3004,7 +3024,9 @@ return function(H, f, compass)
       -- ("the vertical one": a pronoun, no value)
       local pronoun = self.t[q.b].text == "one" and self:word(q.b - 1, "vertical horizontal lateral")
       local margin = by_margin and q.kind == "percent"
-      if (q.kind == "plain" and not pronoun and not by_margin) or margin then
+      -- ("the horizontal resolution margin 1.2": a factor of 1 to 3 said after the noun is the factor itself)
+      local factor = by_margin and q.kind == "plain" and not pronoun and q.b > s.trig and q.value >= 1 and q.value <= 3
+      if (q.kind == "plain" and not pronoun and not by_margin) or margin or factor then
         local cmd = kind(q.b)
         local value = margin and 1 + q.value / 100 or q.value
         if not cmd then
@@ -3066,6 +3088,14 @@ return function(H, f, compass)
   end
   function m:zone(s)
     local vertical = self:word_in(s.b, s.e, "@vertical") or self:registry_word(s.trig) == "ZONEDH"
+    -- ("give IBE32 1000 ft of separation from RYR7QD": one aircraft kept apart from another named, which
+    -- squawk does not fly; no protected zone, no level)
+    local k = self:word(s.trig, "separation") and self:word(s.trig + 1, "from with")
+      and (self:word(s.trig + 2, "the") and s.trig + 3 or s.trig + 2)
+    if k and (self:has_ref(s.trig + 2, k + 1, "aircraft") or self:airline_at(k)) then
+      return self:need("squawk keeps no aircraft apart from another by itself: what level, heading or speed "
+        .. "should it fly?")
+    end
     if self:asks_setting(true) and #self:quantities(s.b, s.e) == 0 then
       return self:emit(vertical and "ZONEDH" or "ZONER")
     end

@@ -509,8 +509,13 @@ return function(H, f, wrap, compass)
     local ids = self:acids(s)
     if #ids == 0 then return self:need("Which aircraft should turn? Please give its callsign.") end
     local abs_c, rel_c = {}, {}
+    -- ("240 on the heading": a number of three digits straight before "on the heading" is the heading; "add
+    -- 20 on the heading" is no heading)
+    local on = self:word(s.trig - 1, "the its") and s.trig - 2 or s.trig - 1
+    on = self:word(on, "on") and on
     for _, q in ipairs(self:quantities(s.b, s.e)) do
-      if q.kind == "heading" or (q.kind == "plain" and q.b > s.trig and not q.number.thousand) then
+      if q.kind == "heading" or (q.kind == "plain" and q.b > s.trig and not q.number.thousand)
+          or (q.kind == "plain" and on and q.e == on and q.value <= 360 and #(q.number.digits or "") == 3) then
         abs_c[#abs_c + 1] = q
       elseif q.kind == "angle" then
         rel_c[#rel_c + 1] = q
@@ -754,6 +759,14 @@ return function(H, f, wrap, compass)
     local down = self:word_in(cb, ce, "descent descend descending")
     local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
+    -- ("be at FL300 by LAPOS, rate 2500": no direction said, the way to the level given it before in the
+    -- request, a constraint's too)
+    local now, own = self:state(id), id:gsub("%p", "%%%0")
+    for _, c in ipairs(dir == 0 and now and self.out or {}) do
+      local fl = c:match("^ALT " .. own .. " FL(%d+)") or c:match("^AT " .. own .. " %S+ ALT FL(%d+)$")
+      local ft = fl and tonumber(fl) * 100
+      if ft and math.abs(ft - (now.alt_ft or 0)) > 50 then dir = ft > (now.alt_ft or 0) and 1 or -1 end
+    end
     -- a level said after the rate with "to" or "target" ("1200 fpm down to 13000", "VS 1000 up, target
     -- 14000"): the level the rate flies to, an ALT beside the VS; one on the other side of the aircraft's
     -- level from the rate's direction is asked

@@ -220,7 +220,8 @@ return {
     -- introduce a value ("flying 180"), and nouns and verbs that frame a clearance ("avoiding action",
     -- "track direct", "to the left side", "the velocity")
     accompaniments = { "change", "changes", "alter", "adjust", "modify", "update", "amend", "make", "makes",
-        "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval",
+        "shrink", "enlarge", "widen", "expand", "tighten", "relax", "margin", "buffer", "interval", "shorten",
+        "lengthen",
         -- the dimensions of a setting ("the vertical size of the PZ")
         "size", "sizes", "dimension", "dimensions", "extent",
         -- what a clearance is as a move ("the resolution manoeuvre", "avoidance maneuver")
@@ -511,8 +512,9 @@ return {
                                   "corr" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
-                      -- it follows ("the Wideroe, I mean"), "from scratch" is no correction
-                      closing = { "no", "wait", "sorry", "actually", "make that", "say again", "corr" },
+                      -- it follows ("the Wideroe, I mean"), "actually" closing it is "in fact" ("going to
+                      -- Valencia actually"), "from scratch" is no correction
+                      closing = { "no", "wait", "sorry", "make that", "say again", "corr" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
@@ -575,7 +577,9 @@ return {
                        -- "out of the way of INT1"
                        "way",
                        -- "turn left 20 into the Vueling 1723", "turn towards VLG1723": the traffic turned toward
-                       "into", "towards", "toward" },
+                       "into", "towards", "toward",
+                       -- "vertical separation from RYR7QD": the traffic kept apart from
+                       "separation" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",
@@ -623,6 +627,18 @@ return {
           study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
                            "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
                            "participant", "subject", "iteration", "rep", "replication", "day", "serial" } },
+  -- "before it reaches the boundary", "before the Spanish border": a deadline at a part of the airspace squawk
+  -- does not simulate, set aside after an instruction (flown now, it is met); its clause holds one of these,
+  -- no value, place or instruction word ("before GIROM" and "before 10 minutes" are asked)
+  deadline_places = { "boundary", "border", "sector", "fir", "uir", "airspace", "frontier", "handoff", "handover",
+      "tma", "cta" },
+  -- how gently a climb or descent is flown ("climb at 800 feet a minute, nice and gentle"): said beside the
+  -- vertical speed given, it restates it; with none ("climb FL340 gently") it is asked, no rate being known
+  manner = { "nice", "gentle", "gently", "smooth", "smoothly" },
+  -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
+  -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
+  held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",
+      "should", "must", "it's", "have", "then" },
   -- after a value or a dash, a clause opening with one of these says what should follow, no instruction
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
@@ -907,7 +923,9 @@ return {
                     -- (South-East Asia: cities whose one large airport the navdata names after a person, a
                     -- district or the island)
                     manila = "ninoy aquino intl", jakarta = "soekarno hatta intl", hanoi = "noibai intl",
-                    saigon = "tansonnhat intl", surabaya = "juanda", denpasar = "bali intl" },
+                    saigon = "tansonnhat intl", surabaya = "juanda", denpasar = "bali intl",
+                    -- (southern France: the city's airport named after the village beside it)
+                    perpignan = "rivesaltes", carcassonne = "salvaza" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")

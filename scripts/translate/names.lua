@@ -134,6 +134,7 @@ local names = {
     { "sky airline", "SKU" },
     { "iberexpres", "IBS" },  -- (Iberia Express)
     { "air nostrum", "ANE" },
+    { "nostrum", "ANE" },  -- (said short, as "europa" is)
     { "binter", "IBB" },
     { "caribbean airlines", "BWA" },
     { "caribbean", "BWA" },

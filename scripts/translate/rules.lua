@@ -240,6 +240,15 @@ return function(intent, rule, words)
     end
     return false
   end }
+  -- "climb via the route", "descend via its route": the route's own levels flown (VNAV), no level said in the
+  -- clause ("climb via the route to FL300" is the level; "descend via STAR", a procedure squawk does not fly,
+  -- is asked)
+  rule { "climb climbing descend descending", "vnav", next = "via", when = function(g, i)
+    local e = i + 1
+    while g.t[e] and g.t[e].kind ~= "punct" do e = e + 1 end
+    local k = g:word(i + 2, "the its") and i + 3 or i + 2
+    return g:word(k, "route") and e == k + 1 and #g:quantities(i, e) == 0
+  end }
   rule { "climb climbing descend descending altitude alt cruise altitudes desc clb", "alt" }
   -- "rise to FL200", "ascend to FL200": a climb said so, with its level after it
   rule { "ascend rise", "alt", when = function(g, i)
@@ -274,7 +283,8 @@ return function(intent, rule, words)
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "knock out KLM1234", "knock out the Cessna": an aircraft taken out of the simulation, nothing after it
   -- "take N73WX off the scope", "sup: n73wx off the scope": an aircraft taken off the display is deleted (the
-  -- aircraft straight before "off", opening the request or after "take"/"get"; "N73WX is off the scope" tells)
+  -- aircraft straight before "off", opening the request or after "take"/"get", "the" between them: "get the Air
+  -- France off the screen"; "N73WX is off the scope" tells)
   rule { "off", "delete", when = function(g, i)
     local k = g:word(i + 1, "the my your our") and i + 2 or i + 1
     if not g:word(k, "scope screen display radar") then return false end
@@ -282,9 +292,13 @@ return function(intent, rule, words)
     r = r[#r]
     if not (r and r.e == i and r.exists) then return false end
     local b = g:skip_fillers(1)
-    return r.b == b or (g:word(r.b - 1, "take get") and r.b - 1 == b)
+    local v = g:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+    return r.b == b or (g:word(v, "take get") and v == b)
   end }
   rule { "knock", "delete", next = "out", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 2), true) end }
+  -- "lose the Air Europa", "lose KLM12": an aircraft that flies lost from the simulation, nothing after it
+  -- ("lose 2000 feet", "lose the speed" name no aircraft)
+  rule { "lose", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), true) end }
   rule { "drop", "alt", not_near = { 2, "speed" } }
   -- "slow the Ryanair down to 250", "speed it up to 300": the particle of a speed verb, its
   -- aircraft between them, is no change of level
@@ -1070,7 +1084,10 @@ return function(intent, rule, words)
     if not named or not t or t.kind ~= "word" or not t.alpha or #t.text < 4 then return false end
     -- (or a city whose airport lies by navaids of its name: "Ezeiza", SAEZ beside the EZEIZA VOR)
     local beside = g.world.airports_beside_navaids
+    -- (a city named for its airport, lexicon.city_airports: "going to Perpignan", RIVESALTES)
+    local city = CITY_AIRPORTS[t.text]
     return #named(t.text) > 0 or (nx ~= nil and nx.kind == "word" and #named(t.text .. " " .. nx.text) > 0)
+      or (city ~= nil and #named(city) > 0)
       or (beside ~= nil and t.raw:match("^%u") ~= nil and #beside(t.text) > 0)
   end
   local function earlier(g, i, intent)
@@ -1146,6 +1163,23 @@ return function(intent, rule, words)
     return g:word(i + 2, "heading hdg flight fl level altitude speed") or g.t[i + 2] ~= nil and g.t[i + 2].kind == "number"
   end }
   rule { "fly", "dest", next = "to" }
+  -- "can it fly .78", "fly point eight two": a Mach number said bare after the verb (a fraction of one, no
+  -- unit) is the speed flown
+  -- "VLG1003 point seven four": a Mach number said in words after an aircraft, nothing else in the request
+  rule { "point", "spd", when = function(g, i)
+    local q = g:quantities(i, i + 4)[1]
+    if not (q and q.b == i and q.kind == "plain" and q.value >= 0.4 and q.value < 1) then return false end
+    for k = 1, #g.t do
+      if (k < q.b or k >= q.e) and g.t[k].kind ~= "punct" and not g.t[k].filler and not g:has_ref(k, k + 1, "aircraft") then
+        return false
+      end
+    end
+    return g:has_ref(1, i, "aircraft")
+  end }
+  rule { "fly", "spd", when = function(g, i)
+    local q = g:quantities(i + 1, i + 5)[1]
+    return q ~= nil and q.b == i + 1 and (q.kind == "mach" or (q.kind == "plain" and q.value >= 0.4 and q.value < 1))
+  end }
   rule { "origin departed departing orig", "orig" }
   -- "make WJA3101 come from victoria, CYYJ", "it came from CYHU": an airport's code (four letters) said
   -- after "from", within four words, is where the aircraft comes from ("coming from the north" is none)
@@ -1218,6 +1252,12 @@ return function(intent, rule, words)
     return false
   end }
   rule { "listrte", "listrte" }
+  -- "what's IBE32 got left on its flight plan", "what's left of the Vueling's route", "what remains of KLM12's
+  -- routing": the rest of its route asked, the question opening the request (no value said)
+  rule { "route plan routing waypoints", "listrte", when = function(g, i)
+    return g:word(g:skip_fillers(1), "what what's whats") and g:word_in(math.max(1, i - 5), i, "left remaining remains")
+      and g:has_ref(1, i, "aircraft") and #g:quantities(1, #g.t + 1) == 0
+  end }
 
   -- information and repositioning
   rule { "where", false, near = { 5, "route" } }  -- "show me where its route goes": the route is listed
@@ -1250,6 +1290,10 @@ return function(intent, rule, words)
   -- "where's the MERIT intersection?"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
   rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
+  -- "tell me about the easyJet", "tell us about KLM12": an aircraft and nothing after it, its state asked
+  rule { "about", "pos", when = function(g, i)
+    return g:word(i - 1, "me us") and g:word(i - 2, "tell") and aircraft_alone(g, g:skip_fillers(i + 1), true)
+  end }
   rule { "where", "pos", when = function(g, i) return g:skip_fillers(1) == i end }  -- "where's Schiphol"
   -- "exp1 where", "KL204 where now?": the question typed after the aircraft, nothing after it
   rule { "where", "pos", when = function(g, i)
@@ -1861,6 +1905,19 @@ return function(intent, rule, words)
   rule { "separation", false, prev = { 3, "get gain ensure provide keep maintain achieve establish for" },
          when = function(g, i)
     return #g:quantities(i + 1, math.min(#g.t + 1, i + 4)) == 0 and instructed(g, i)
+  end }
+  -- "give IBE32 some vertical separation from the Ryanair, put it at FL320": separation from an aircraft
+  -- named after it is the purpose of the level, heading or speed given, never the protected zone ("give
+  -- IBE32 1000 ft of separation from the Ryanair", a height said just before it, is left to the zone's reading,
+  -- which asks about the aircraft)
+  rule { "separation", false, next = "from with", when = function(g, i)
+    local k = g:word(i + 2, "the") and i + 3 or i + 2
+    return (g:has_ref(i + 2, k + 1, "aircraft") or g:airline_at(k) ~= nil)
+      and #g:quantities(math.max(1, i - 4), i) == 0
+  end }
+  rule { "separation", "zone", next = "from with", when = function(g, i)
+    local k = g:word(i + 2, "the") and i + 3 or i + 2
+    return (g:has_ref(i + 2, k + 1, "aircraft") or g:airline_at(k) ~= nil) and #g:quantities(math.max(1, i - 4), i) > 0
   end }
   rule { "separation", "zone", prev = { 1, "nm mile miles ft foot feet" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }

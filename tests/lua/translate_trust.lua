@@ -6707,3 +6707,94 @@ do
   check_eq(ex("EWG9 climb FL300 thanks"), "ALT EWG9 FL300")
   check_eq(ex("sorry, EWG9 climb FL300"), "ALT EWG9 FL300")
 end
+
+-- Cycle 39 (fix80b): wishes and their tails. A deadline at a part of the airspace squawk does not simulate
+-- ("before it reaches the boundary") is met by the instruction flown now; one at a place, a time or with an
+-- instruction of its own is asked. "nice and gentle" is how it is flown; "can it fly .80" a Mach number;
+-- separation from a named aircraft the purpose of the level given (a height of separation from one asked); a
+-- level wanted when an aircraft reaches a waypoint the constraint there; "N miles out from FIX" ATDIST; "and once
+-- level, Mach .80" the speed waiting for the level given
+do
+  local _, ex = scene({ "DEFWPT LUMEK 52.1 4.6", "DEFWPT ORVAL 52.3 5.0", "CRE TAP21 A320 52.0 4.0 090 FL300 270",
+    "ADDWPT TAP21 LUMEK", "ADDWPT TAP21 ORVAL", "CRE SAS77 B738 52.4 4.2 180 FL340 280",
+    "CRE RYR3 B738 52.2 4.8 270 FL320 260" })
+  check_eq(ex("TAP21 climb FL320 before it crosses the sector boundary"), "ALT TAP21 FL320")
+  check_eq(ex("I'd want SAS77 at FL360 before the French border"), "ALT SAS77 FL360")
+  asked(ex("TAP21 climb FL320 before LUMEK"), "a deadline at a waypoint")
+  asked(ex("TAP21 climb FL320 before it turns at the boundary"), "a deadline holding an instruction")
+  asked(ex("TAP21 climb FL320 before 5 minutes"), "a deadline in time")
+  check_eq(ex("SAS77 descend at 1200 feet a minute, nice and smooth"), "VS SAS77 -1200")
+  check_eq(ex("could SAS77 fly .80"), "SPD SAS77 M0.8")
+  check_eq(ex("could SAS77 fly point seven eight"), "SPD SAS77 M0.78")
+  check_eq(ex("SAS77, point seven six"), "SPD SAS77 M0.76")
+  asked(ex("SAS77 heading 200 point seven"), "a fraction after another value")
+  check_eq(ex("SAS77 to FL300, 250 on the heading, and 260 knots"), "ALT SAS77 FL300 ; HDG SAS77 250 ; SPD SAS77 260")
+  asked(ex("SAS77 20 on the heading"), "two digits before 'on the heading'")
+  check_eq(ex("let's give TAP21 some vertical separation from the Ryanair, take it to FL280"), "ALT TAP21 FL280")
+  check_eq(ex("SAS77 climb FL360 for separation from RYR3"), "ALT SAS77 FL360")
+  asked(ex("give TAP21 2000 ft of separation from RYR3"), "a height of separation from an aircraft")
+  check_eq(ex("when TAP21 gets to ORVAL I'd like it at FL280"), "AT TAP21 ORVAL ALT FL280")
+  check_eq(ex("when TAP21 reaches ORVAL, it should be at 250 knots"), "AT TAP21 ORVAL SPD 250")
+  check_eq(ex("when TAP21 gets to ORVAL descend it to FL280"), "AT TAP21 ORVAL DO ALT TAP21 FL280")
+  check_eq(ex("once TAP21 is 15 miles out from ORVAL, descend FL280"), "ATDIST TAP21 ORVAL 15 ALT TAP21 FL280")
+  check_eq(ex("SAS77 descend FL300 and once level, Mach .74"), "ALT SAS77 FL300 ; ATALT SAS77 FL300 SPD SAS77 M0.74")
+  asked(ex("SAS77 once level, Mach .74"), "no level given to wait for")
+  -- a rate with no direction said descends to the level given below the aircraft (never climbs away from it)
+  check_eq(ex("TAP21, be at FL280 by ORVAL, rate 1500"), "AT TAP21 ORVAL ALT FL280 ; VS TAP21 -1500")
+  check_eq(ex("SAS77 FL360, rate 1500"), "ALT SAS77 FL360 ; VS SAS77 1500")
+end
+
+-- Cycle 39 (fix80b): aircraft described and what is asked about them. "lose", "take out" and "get ... off the
+-- screen" delete the aircraft described; "tell me about" it is POS; what is left of its route LISTRTE; a position
+-- "relative to" a place POS; "the Nostrum" Air Nostrum; an airline in the plural ("the two Vuelings", "both
+-- Vuelings") each of it flying when the count fits, else asked; a city named for its airport the destination;
+-- a place by its name ending a route ("via BIDAC then Bilbao") the route's next place
+do
+  local _, ex = scene({ "DEFWPT LUMEK 52.1 4.6", "CRE VLG21 A320 52.0 4.0 090 FL300 270",
+    "CRE VLG88 A321 52.4 4.2 180 FL340 280", "CRE ANE40 CRJ9 52.2 4.8 270 FL220 240",
+    "CRE EZY9 A319 52.6 4.4 010 FL280 260", "CRE AEA3 B738 52.3 3.8 150 FL260 250" })
+  check_eq(ex("lose the Nostrum"), "DEL ANE40")
+  check_eq(ex("take out the easyJet"), "DEL EZY9")
+  check_eq(ex("get the Air Europa off the display"), "DEL AEA3")
+  check_eq(ex("ANE40 lose 20 knots"), "SPD ANE40 220")
+  check_eq(ex("tell us about the Nostrum"), "POS ANE40")
+  asked(ex("tell me about the Vueling"), "two Vuelings fly")
+  check_eq(ex("what has EZY9 got left on its route"), "LISTRTE EZY9")
+  check_eq(ex("what's left of the easyJet's flight plan"), "LISTRTE EZY9")
+  check_eq(ex("where's EZY9 relative to LUMEK"), "POS EZY9")
+  check_eq(ex("both Vuelings, speed 240"), "SPD VLG21 240 ; SPD VLG88 240")
+  check_eq(ex("the two Vuelings descend FL200"), "ALT VLG21 FL200 ; ALT VLG88 FL200")
+  check_eq(ex("both Vuelings, VLG21 FL200 and VLG88 FL220"), "ALT VLG21 FL200 ; ALT VLG88 FL220")
+  asked(ex("the three Vuelings, speed 240"), "three Vuelings, two flying")
+  -- other traffic said in the plural is never instructed
+  check_eq(ex("turn EZY9 left 20, away from the Vuelings"), "HDG EZY9 350 LEFT")
+  check_eq(ex("climb EZY9 above the two Vuelings to FL350"), "ALT EZY9 FL350")
+  check_eq(ex("EZY9 climb FL350 to stay clear of the Vuelings"), "ALT EZY9 FL350")
+  check_eq(ex("EZY9 climb FL350 because the Vuelings are close"), "ALT EZY9 FL350")
+  asked(ex("the three ryanairs, speed 240"), "a count of an airline none of which flies, never a callsign's digits")
+  local nav, nex = navscene({ "CRE EZY9 A319 43.0 2.5 010 FL280 260", "CRE AEA3 B738 43.9 -0.5 250 FL240 260" },
+    "a city's airport as destination and a place by its name in a route")
+  if nav then
+    check_eq(nex("the easyJet's going to Carcassonne"), "DEST EZY9 LFMK")
+    check_eq(nex("EZY9's going to Perpignan"), "DEST EZY9 LFMP")
+    check_eq(nex("route AEA3 via LAPOS and then Bilbao"), "ADDWPT AEA3 LAPOS ; ADDWPT AEA3 LEBB")
+    asked(nex("route AEA3 via LAPOS then Bilbao then SOSTO"), "a name between the route's places")
+  end
+end
+
+-- Cycle 39 (fix80b): settings said by purpose. "shorten the look-ahead", a factor said after "resolution
+-- margin" (RFACH/RFACV; no vertical resolutions), the resolver's vertical speed (RMETHV; "only" vertical is
+-- asked, squawk's resolutions are never vertical alone), "climb/descend via the route" (VNAV; via a SID or STAR
+-- asked)
+do
+  local _, ex = scene({ "CRE SAS77 B738 52.4 4.2 180 FL340 280" })
+  check_eq(ex("could we shorten the look-ahead to 4 minutes"), "DTLOOK 240")
+  check_eq(ex("set the vertical resolution margin to 1.3"), "RFACV 1.3")
+  check_eq(ex("horizontal resolution margin 1.15"), "RFACH 1.15")
+  check_eq(ex("vertical resolution margin 10 percent"), "RFACV 1.1")
+  check_eq(ex("the resolver may use vertical speed"), "RMETHV V/S")
+  asked(ex("the resolver should only use vertical speed changes"), "vertical-only resolutions")
+  check_eq(ex("SAS77 descend via its route"), "VNAV SAS77 ON")
+  asked(ex("SAS77 descend via the STAR"), "a STAR, which squawk does not fly")
+  check_eq(ex("SAS77 climb via the route to FL360"), "ALT SAS77 FL360")
+end
