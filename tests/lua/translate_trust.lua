@@ -6798,3 +6798,13 @@ do
   asked(ex("SAS77 descend via the STAR"), "a STAR, which squawk does not fly")
   check_eq(ex("SAS77 climb via the route to FL360"), "ALT SAS77 FL360")
 end
+
+-- Cycle 40 (d84): "lateral nav" and "vertical nav" are LNAV and VNAV ("nav" is navigation's short word), so a
+-- switch said before another instruction is issued, never dropped; the mode with no on or off is asked
+do
+  local _, ex = scene({ "CRE QTR7 A320 25.0 55.0 090 FL150 260" })
+  check_eq(ex("QTR7 lateral nav off, fly heading 040"), "LNAV QTR7 OFF ; HDG QTR7 40")
+  check_eq(ex("QTR7 vertical nav off, climb FL170"), "VNAV QTR7 OFF ; ALT QTR7 FL170")
+  check_eq(ex("QTR7 vertical nav on"), "VNAV QTR7 ON")
+  asked(ex("QTR7 lateral nav"), "a navigation mode with no on or off")
+end
