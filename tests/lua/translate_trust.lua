@@ -6808,3 +6808,17 @@ do
   check_eq(ex("QTR7 vertical nav on"), "VNAV QTR7 ON")
   asked(ex("QTR7 lateral nav"), "a navigation mode with no on or off")
 end
+
+-- Cycle 40 (d84): Indian airlines by their names: "Akasa" and "Akasa Air" (AKJ), "Air India Express" (AXB), so
+-- the words around such a callsign stay the instruction's ("add a waypoint to Akasa 1401's route" is no listing
+-- of its route); a flight number no aircraft has is still asked
+do
+  local _, ex = scene({ "CRE AKJ1401 B38M 12.9 77.6 040 FL150 270", "CRE AXB1721 B738 13.1 80.2 200 FL190 280" })
+  check_eq(ex("Air India Express 1721 reduce two six zero knots"), "SPD AXB1721 260")
+  check_eq(ex("Akasa Air 1401, descend flight level one one zero"), "ALT AKJ1401 FL110")
+  asked(ex("Akasa 1410 descend FL110"), "an Akasa flight number none flies")
+  local nav, nex = navscene({ "CRE AKJ1401 B38M 12.9 77.6 040 FL150 270" }, "a waypoint added to an Akasa's route")
+  if nav then
+    check_eq(nex("add GURAS to Akasa 1401's route"), "ADDWPT AKJ1401 GURAS")
+  end
+end
