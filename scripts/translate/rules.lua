@@ -1497,6 +1497,8 @@ return function(intent, rule, words)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  -- ("report with your present level": the value "with" the reply)
+  rule { "report", "pos", next = "with", near = { 4, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   -- "request your present heading", "request your level": the controller asking the aircraft's own value
   -- (a report, as "say"), never an instruction to keep it
   rule { "request", "pos", next = "your", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }

@@ -6822,3 +6822,17 @@ do
     check_eq(nex("add GURAS to Akasa 1401's route"), "ADDWPT AKJ1401 GURAS")
   end
 end
+
+-- Cycle 40 (d84): Indian English "revert" (reply) before "your" or "with" asks the aircraft's own value, as
+-- "report your level" (POS); "revert to heading 270" is no such request and stays asked; "sir" and "madam"
+-- address the listener and carry nothing
+do
+  local _, ex = scene({ "CRE SEJ811 B738 19.1 72.9 090 FL160 270" })
+  check_eq(ex("SpiceJet 811 revert your level"), "POS SEJ811")
+  check_eq(ex("SpiceJet 811, revert with your present speed"), "POS SEJ811")
+  check_eq(ex("SpiceJet 811 report with your heading"), "POS SEJ811")
+  asked(ex("SpiceJet 811 revert to heading 270"), "'revert to': going back, not a reply")
+  asked(ex("SpiceJet 811 revert your level FL150"), "a value after the request for a reply")
+  check_eq(ex("sir where is SpiceJet 811 showing"), "POS SEJ811")
+  check_eq(ex("SpiceJet 811 climb FL180 sir"), "ALT SEJ811 FL180")
+end
