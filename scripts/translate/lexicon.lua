@@ -115,7 +115,9 @@ return {
     audience = { "folks", "guys", "observers", "observer", "team", "gentlemen", "ladies", "y'all", "everybody",
         -- the same in Spanish and Portuguese, where instructors teach in English ("chicos, look:", "ok pessoal")
         "chicos", "chicas", "muchachos", "alumnos", "estudiantes", "amigos", "pessoal", "galera", "alunos",
-        "turma" },
+        "turma",
+        -- a person addressed with respect, as Indian controllers do ("sir where is IFLY 2171 showing")
+        "sir", "madam", "ma'am" },
     -- chat shorthand and interjections of typed notes ("what's ryanair doing rn", "lol", "ugh", "thx")
     chat = { "rn", "atm", "asap", "lol", "lmao", "ugh", "argh", "meh", "oops", "tbh", "imo", "btw", "fyi", "plz",
         "thx", "pls", "haha", "idk",
@@ -396,6 +398,9 @@ return {
     -- corrects what it follows, "fl130 err fl150", "dir ridar err rokil")
     err = { word = "sorry" }, sry = { word = "sorry" }, erm = { word = "uh" }, umm = { word = "uh" }, uhh = { word = "uh" },
     uhm = { word = "uh" }, ehm = { word = "uh" },
+    -- (Indian English "revert" for "reply", the aircraft's own value asked for: "revert your level", "revert with
+    -- your present speed"; "revert to heading 270" stays as said, and asked)
+    revert = { { word = "report", next = "your" }, { word = "report", next = "with" } },
     -- (a vertical rate's bound typed before its value: "RoD max 1500", "RoC min 500")
     rod = { word = "rate of descent", next = "max maximum min minimum" },
     roc = { word = "rate of climb", next = "max maximum min minimum" },

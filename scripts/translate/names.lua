@@ -300,6 +300,9 @@ local names = {
     { "spicejet", "SEJ" },
     { "vistara", "VTI" },
     { "express india", "AXB" },  -- (Air India Express)
+    { "air india express", "AXB" },
+    { "akasa air", "AKJ" },
+    { "akasa", "AKJ" },  -- (Akasa Air)
     { "pakistan", "PIA" },
     { "bangladesh", "BBC" },  -- (Biman Bangladesh)
     { "srilankan", "ALK" },

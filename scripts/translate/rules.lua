@@ -1196,10 +1196,11 @@ return function(intent, rule, words)
     return g:followed_by(i, 7, "@route_nouns waypoints") and not g:word_in(math.max(1, i - 2), i, "don't dont not never")
       and (g:has_ref(i + 1, i + 4, "aircraft") or g:has_ref(math.max(1, i - 3), i, "aircraft"))
   end }
-  rule { "lateral", "lnav", next = "navigation" }
+  -- ("lateral nav off", "vertical nav on": "nav" is navigation's short word)
+  rule { "lateral", "lnav", next = "navigation nav" }
   rule { "vnav", "vnav" }
   rule { "vertical vertically", "vnav", prev = { 4, "plan route" } }  -- "follow its flight plan vertically"
-  rule { "vertical", "vnav", next = "profile navigation" }
+  rule { "vertical", "vnav", next = "profile navigation nav" }
   rule { "route rte waypoints", "listrte", prev = { 4, "show list display what print see look where check" } }
   -- ("what's your plan for the Transavia?" asks the addressee's own intentions: no route listed)
   rule { "plan", "listrte", prev = { 4, "show list display what print see look where check" },
@@ -1496,6 +1497,8 @@ return function(intent, rule, words)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  -- ("report with your present level": the value "with" the reply)
+  rule { "report", "pos", next = "with", near = { 4, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   -- "request your present heading", "request your level": the controller asking the aircraft's own value
   -- (a report, as "say"), never an instruction to keep it
   rule { "request", "pos", next = "your", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }

@@ -6798,3 +6798,41 @@ do
   asked(ex("SAS77 descend via the STAR"), "a STAR, which squawk does not fly")
   check_eq(ex("SAS77 climb via the route to FL360"), "ALT SAS77 FL360")
 end
+
+-- Cycle 40 (d84): "lateral nav" and "vertical nav" are LNAV and VNAV ("nav" is navigation's short word), so a
+-- switch said before another instruction is issued, never dropped; the mode with no on or off is asked
+do
+  local _, ex = scene({ "CRE QTR7 A320 25.0 55.0 090 FL150 260" })
+  check_eq(ex("QTR7 lateral nav off, fly heading 040"), "LNAV QTR7 OFF ; HDG QTR7 40")
+  check_eq(ex("QTR7 vertical nav off, climb FL170"), "VNAV QTR7 OFF ; ALT QTR7 FL170")
+  check_eq(ex("QTR7 vertical nav on"), "VNAV QTR7 ON")
+  asked(ex("QTR7 lateral nav"), "a navigation mode with no on or off")
+end
+
+-- Cycle 40 (d84): Indian airlines by their names: "Akasa" and "Akasa Air" (AKJ), "Air India Express" (AXB), so
+-- the words around such a callsign stay the instruction's ("add a waypoint to Akasa 1401's route" is no listing
+-- of its route); a flight number no aircraft has is still asked
+do
+  local _, ex = scene({ "CRE AKJ1401 B38M 12.9 77.6 040 FL150 270", "CRE AXB1721 B738 13.1 80.2 200 FL190 280" })
+  check_eq(ex("Air India Express 1721 reduce two six zero knots"), "SPD AXB1721 260")
+  check_eq(ex("Akasa Air 1401, descend flight level one one zero"), "ALT AKJ1401 FL110")
+  asked(ex("Akasa 1410 descend FL110"), "an Akasa flight number none flies")
+  local nav, nex = navscene({ "CRE AKJ1401 B38M 12.9 77.6 040 FL150 270" }, "a waypoint added to an Akasa's route")
+  if nav then
+    check_eq(nex("add GURAS to Akasa 1401's route"), "ADDWPT AKJ1401 GURAS")
+  end
+end
+
+-- Cycle 40 (d84): Indian English "revert" (reply) before "your" or "with" asks the aircraft's own value, as
+-- "report your level" (POS); "revert to heading 270" is no such request and stays asked; "sir" and "madam"
+-- address the listener and carry nothing
+do
+  local _, ex = scene({ "CRE SEJ811 B738 19.1 72.9 090 FL160 270" })
+  check_eq(ex("SpiceJet 811 revert your level"), "POS SEJ811")
+  check_eq(ex("SpiceJet 811, revert with your present speed"), "POS SEJ811")
+  check_eq(ex("SpiceJet 811 report with your heading"), "POS SEJ811")
+  asked(ex("SpiceJet 811 revert to heading 270"), "'revert to': going back, not a reply")
+  asked(ex("SpiceJet 811 revert your level FL150"), "a value after the request for a reply")
+  check_eq(ex("sir where is SpiceJet 811 showing"), "POS SEJ811")
+  check_eq(ex("SpiceJet 811 climb FL180 sir"), "ALT SEJ811 FL180")
+end
