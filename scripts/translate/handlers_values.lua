@@ -484,6 +484,9 @@ return function(H, f, wrap, compass)
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
       else
         local kt = q.value
+        -- a speed said in another unit ("400 km/h", "150 m/s") is its conversion, to the nearest knot
+        -- (400 km/h = 216 kt): never rounded further, never re-read as knots
+        local converted = q.kind == "speed" and q.value ~= q.number.value
         -- an aircraft flying slower than 200 kt (a light aircraft) is given two-digit speeds
         -- ("niner zero knots"); others' assigned speeds are said as three digits: see H.cut_off
         local a = self:state(id)
@@ -491,13 +494,20 @@ return function(H, f, wrap, compass)
         if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) and not slow then
           return self:need("What speed should " .. id .. " fly? I heard " .. q.number.digits .. ".")
         end
-        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 and not slow then
+        if not converted and not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 and not slow then
           kt = kt * 10  -- "speed one ninety"
         end
-        local r = self:repaired(q, kt, 40, 700, 10)
-        if not r then return self:need("What speed should " .. id .. " fly? I heard " .. f.int(kt) .. ".") end
-        -- assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error
-        if not q.number.typed and r % 5 ~= 0 then r = math.floor(r / 10) * 10 end
+        local r
+        if converted then
+          r = kt >= 40 and kt <= 700 and math.floor(kt + 0.5) or nil
+        else
+          r = self:repaired(q, kt, 40, 700, 10)
+          -- assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error
+          if r and not q.number.typed and r % 5 ~= 0 then r = math.floor(r / 10) * 10 end
+        end
+        if not r then
+          return self:need("What speed should " .. id .. " fly? I heard " .. self:raw(q.b, q.e) .. ".")
+        end
         spd = f.int(r)
       end
       self:emit("SPD " .. id .. " " .. spd)
