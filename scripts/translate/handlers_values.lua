@@ -308,8 +308,13 @@ return function(H, f, wrap, compass)
     if not fl and q.kind == "alt" and self:word(q.e - 1, "@metres") then
       -- a level in metres is the whole number said, converted exactly (8100 m = 26575 ft); a spoken one
       -- is whole hundreds of metres ("eight thousand one hundred metres"), else a word was misheard; above
-      -- FL450 (13716 m) no airliner flies: "15000 m" is feet or a slip, asked
-      if ft < 100 or ft > 45000 or (not q.number.typed and q.number.value % 100 ~= 0) then
+      -- FL450 (13716 m) no airliner flies: "15000 m" is feet or a slip, asked. Metres are said digit by
+      -- digit ("niner five zero zero") or with their multipliers ("nine thousand five hundred"): digits said
+      -- one by one before "hundred" with no "thousand" ("nine five hundred metres": 9500, or 500 after a
+      -- slip?) are asked
+      local n = q.number
+      if ft < 100 or ft > 45000 or (not n.typed and n.value % 100 ~= 0)
+          or (not n.typed and n.hundred and not n.thousand and n.lead_digit and n.groups >= 2) then
         return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(q.number.value) .. " metres.")
       end
     elseif not fl then

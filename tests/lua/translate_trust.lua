@@ -6798,3 +6798,19 @@ do
   asked(ex("SAS77 descend via the STAR"), "a STAR, which squawk does not fly")
   check_eq(ex("SAS77 climb via the route to FL360"), "ALT SAS77 FL360")
 end
+
+-- Cycle 40 (d81): a speed in another unit is its conversion to the nearest knot, never rounded to tens nor
+-- re-read as knots (km/h, m/s); a metric level said as digits one by one before "hundred" is asked
+do
+  local _, ex = scene({ "CRE CSN512 A320 30.0 114.0 090 FL250 280", "CRE CCA88 B738 31.0 115.0 180 FL200 270" })
+  check_eq(ex("CSN512 reduce speed to four hundred kilometres per hour"), "SPD CSN512 216")
+  check_eq(ex("CSN512 speed four four zero kilometers per hour"), "SPD CSN512 238")
+  check_eq(ex("CCA88 reduce to 390 km/h"), "SPD CCA88 211")
+  check_eq(ex("CCA88 speed one two five metres per second"), "SPD CCA88 243")
+  asked(ex("CCA88 speed 2000 km/h"), "1080 kt: no speed an airliner flies")
+  check_eq(ex("CCA88 reduce speed two five zero knots"), "SPD CCA88 250")
+  asked(ex("CSN512 climb to eight six hundred metres"), "digits one by one before hundred: 8600 m or a slip?")
+  check_eq(ex("CSN512 climb to eight thousand six hundred metres"), "ALT CSN512 28215")
+  check_eq(ex("CSN512 climb to eight six zero zero metres"), "ALT CSN512 28215")
+  check_eq(ex("CSN512 climb to eighty six hundred metres"), "ALT CSN512 28215")
+end
