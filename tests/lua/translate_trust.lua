@@ -6814,3 +6814,16 @@ do
   check_eq(ex("CSN512 climb to eight six zero zero metres"), "ALT CSN512 28215")
   check_eq(ex("CSN512 climb to eighty six hundred metres"), "ALT CSN512 28215")
 end
+
+-- Cycle 40 (d81): a metric level or a flight level said with "standard" ("9800 metres, standard", "on standard
+-- pressure"): flown on the standard setting, as every level is; "standard" after feet, or naming something else,
+-- is still asked
+do
+  local _, ex = scene({ "CRE CXA71 B738 25.0 118.0 045 FL250 280" })
+  check_eq(ex("CXA71 climb to eight four zero zero metres, standard"), "ALT CXA71 27559")
+  check_eq(ex("CXA71 descend and maintain 6600 metres on standard pressure"), "ALT CXA71 21654")
+  check_eq(ex("CXA71 climb flight level 310 standard"), "ALT CXA71 FL310")
+  asked(ex("CXA71 descend to 4000 feet standard"), "standard after an altitude in feet")
+  asked(ex("CXA71 climb to 8400 metres standard rate"), "a standard rate, no altimeter setting")
+  check_eq(ex("CXA71 descend to six five hundred metres, correct, six thousand five hundred metres"), "ALT CXA71 21325")
+end
