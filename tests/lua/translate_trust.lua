@@ -6827,3 +6827,15 @@ do
   asked(ex("CXA71 climb to 8400 metres standard rate"), "a standard rate, no altimeter setting")
   check_eq(ex("CXA71 descend to six five hundred metres, correct, six thousand five hundred metres"), "ALT CXA71 21325")
 end
+
+-- Cycle 40 (d81): mainland China's airlines by telephony, after a verb too ("delete Lucky Air ...", "where is Shun
+-- Feng ..."); an airline said with no aircraft of its number flying is still asked
+do
+  local _, ex = scene({ "CRE LKE5203 A320 25.0 102.0 090 FL250 280", "CRE CSS3301 B752 23.0 113.0 180 FL200 270",
+      "CRE CAO808 B744 31.0 121.0 270 FL300 280", "CRE CCA977 A332 40.0 116.0 000 FL320 290" })
+  check_eq(ex("sim op: delete Lucky Air five two zero three"), "DEL LKE5203")
+  check_eq(ex("where is Shun Feng three three zero one"), "POS CSS3301")
+  check_eq(ex("remove air china cargo eight zero eight"), "DEL CAO808")
+  check_eq(ex("Air China 977 climb to 10100 metres"), "ALT CCA977 33136")
+  asked(ex("delete Lucky Air five two zero four"), "no Lucky Air 5204 flies")
+end
