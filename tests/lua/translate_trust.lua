@@ -6839,3 +6839,13 @@ do
   check_eq(ex("Air China 977 climb to 10100 metres"), "ALT CCA977 33136")
   asked(ex("delete Lucky Air five two zero four"), "no Lucky Air 5204 flies")
 end
+
+-- Cycle 40 (d81): a crossing's value said with its noun after "at" ("cross FIX at speed 250 knots") is the
+-- constraint; a plain number after the noun is still asked
+do
+  local _, ex = scene({ "CRE CES771 A320 31.0 121.0 090 FL250 280", "ADDWPT CES771 52.0 4.0", "DEFWPT DUMIX 31.2 121.8",
+      "ADDWPT CES771 DUMIX" })
+  check_eq(ex("CES771 cross DUMIX at speed 250 knots"), "AT CES771 DUMIX SPD 250")
+  check_eq(ex("CES771 cross DUMIX at speed 250 knots, descend FL200"), "AT CES771 DUMIX SPD 250 ; ALT CES771 FL200")
+  asked(ex("CES771 cross DUMIX at speed 250"), "a plain number after the noun")
+end
