@@ -1023,6 +1023,14 @@ return function(intent, rule, words)
   -- whole route, no waypoint named
   rule { "clear delete remove erase wipe kill", "delrte", near = { 4, "@route_nouns" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
+  -- "cancel your route", "cancel the route of CHH7423": the whole route, the noun straight after the verb (or its
+  -- article), no waypoint named, and nothing after it that a cancelled route would not be ("cancel route
+  -- restrictions": a restriction lifted)
+  rule { "cancel", "delrte", when = function(g, i)
+    local k = g:word(i + 1, "the your its his her their") and i + 2 or i + 1
+    return g:word(k, "route rte") and not g:word(k + 1, "restriction restrictions clearance")
+      and not g:has_ref(1, #g.t + 1, "waypoint")
+  end }
   -- "clr rte", "clr route" typed short, the noun ending the request ("clr route as filed" is no deletion)
   rule { "clr", "delrte", next = "@route_nouns",
          when = function(g, i) return not g:has_ref(1, #g.t + 1, "waypoint") and i + 2 > #g.t end }

@@ -6849,3 +6849,14 @@ do
   check_eq(ex("CES771 cross DUMIX at speed 250 knots, descend FL200"), "AT CES771 DUMIX SPD 250 ; ALT CES771 FL200")
   asked(ex("CES771 cross DUMIX at speed 250"), "a plain number after the noun")
 end
+
+-- Cycle 40 (d81): "cancel your route" deletes the route (DELRTE); a waypoint named with it, a negation, or route
+-- restrictions are not this
+do
+  local _, ex = scene({ "CRE CSC4417 A320 30.5 104.0 090 FL250 280", "DEFWPT BOTAN 30.6 104.5", "ADDWPT CSC4417 BOTAN" })
+  check_eq(ex("CSC4417 cancel your route"), "DELRTE CSC4417")
+  check_eq(ex("cancel the route of CSC4417"), "DELRTE CSC4417")
+  asked(ex("CSC4417 cancel the route via BOTAN"), "a waypoint named: which part?")
+  asked(ex("CSC4417 don't cancel your route"), "a negation")
+  check(not ex("CSC4417 cancel route restrictions"):find("DELRTE", 1, true), "restrictions lifted, no route deleted")
+end
