@@ -3886,6 +3886,11 @@ function G:meaning_carried(i, kinds)
       and self:word_in(i + 1, math.min(#self.t + 1, i + 4), "heading headings hdg vector vectors vectoring") then
     return true
   end
+  -- "cancel your route": the route deleted
+  if self:word(i, "cancel cancels cancelled canceled") and kinds.delrte
+      and self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") then
+    return true
+  end
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
       if self:has_ref(k, k + 1, "waypoint") then return true end
@@ -3896,7 +3901,7 @@ end
 
 -- The commands issued, as a set of their lower-case words (a name said as it is issued: "direct
 -- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to, the
--- route resumed (LNAV ON).
+-- route resumed (LNAV ON), the route deleted (DELRTE).
 function G:issued()
   local words, kinds = {}, {}
   for _, line in ipairs(self.out) do
@@ -3906,6 +3911,7 @@ function G:issued()
       if CONDITIONAL[name] then kinds.conditional = true end
       if name == "DIRECT" then kinds.direct = true end
       if name == "ALT" then kinds.alt = true end
+      if name == "DELRTE" then kinds.delrte = true end
       if name == "LNAV" and part:upper():find("%f[%w]ON%f[%W]") then kinds.route = true end
       if name == "DTMULT" or name == "FF" then kinds.clock = true end
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end

@@ -305,11 +305,33 @@ return function(H, f, wrap, compass)
       return self:need("What altitude or vertical speed for " .. ids[1] .. "? I heard " .. f.int(q.number.value)
         .. " metres per " .. self.t[q.e + 1].text .. ".")
     end
+    -- "9800 metres, standard", "6300 metres on standard pressure": a metric level (or a flight level) flown on
+    -- the standard altimeter setting, as every level above the transition is; the words restate that
+    if fl or q.kind == "metric" or self:word(q.e - 1, "@metres") then
+      local k = q.e
+      while self:word(k, "@metres") or (self.t[k] and self.t[k].kind == "punct") do k = k + 1 end
+      local on = self:word(k, "on") and k + 1 or k
+      -- (a "standard" that names something else, "standard speed", "standard rate", is not this)
+      if self:word(on, "standard") and not self:word(on + 1, "speed rate turn route routing arrival departure star sid") then
+        local last = self:word(on + 1, "pressure setting altimeter") and on + 1 or on
+        self:explain(k, last + 1)
+      end
+    end
     if not fl and q.kind == "alt" and self:word(q.e - 1, "@metres") then
       -- a level in metres is the whole number said, converted exactly (8100 m = 26575 ft); a spoken one
       -- is whole hundreds of metres ("eight thousand one hundred metres"), else a word was misheard; above
-      -- FL450 (13716 m) no airliner flies: "15000 m" is feet or a slip, asked
-      if ft < 100 or ft > 45000 or (not q.number.typed and q.number.value % 100 ~= 0) then
+      -- FL450 (13716 m) no airliner flies: "15000 m" is feet or a slip, asked. Metres are said digit by
+      -- digit ("niner five zero zero") or with their multipliers ("nine thousand five hundred"): digits said
+      -- one by one before "hundred" with no "thousand" ("nine five hundred metres": 9500, or 500 after a
+      -- slip?) are asked, unless the request says the same level again in a clear form ("eight nine hundred
+      -- metres, correct, eight thousand nine hundred metres")
+      local function unclear(n) return not n.typed and n.hundred and not n.thousand and n.lead_digit and n.groups >= 2 end
+      local n = q.number
+      local unsure = unclear(n)
+      for _, o in ipairs(unsure and self:quantities(s.b, s.e) or {}) do
+        if o.b ~= q.b and o.value == q.value and o.number and not unclear(o.number) then unsure = false end
+      end
+      if ft < 100 or ft > 45000 or (not n.typed and n.value % 100 ~= 0) or unsure then
         return self:need("Which altitude for " .. ids[1] .. "? I heard " .. f.int(q.number.value) .. " metres.")
       end
     elseif not fl then
@@ -484,6 +506,9 @@ return function(H, f, wrap, compass)
         spd = f.int(a.cas_kt + (dir < 0 and -delta or delta))
       else
         local kt = q.value
+        -- a speed said in another unit ("400 km/h", "150 m/s") is its conversion, to the nearest knot
+        -- (400 km/h = 216 kt): never rounded further, never re-read as knots
+        local converted = q.kind == "speed" and q.value ~= q.number.value
         -- an aircraft flying slower than 200 kt (a light aircraft) is given two-digit speeds
         -- ("niner zero knots"); others' assigned speeds are said as three digits: see H.cut_off
         local a = self:state(id)
@@ -491,13 +516,20 @@ return function(H, f, wrap, compass)
         if not q.number.typed and q.number.lead_digit and H.cut_off(q.number) and not slow then
           return self:need("What speed should " .. id .. " fly? I heard " .. q.number.digits .. ".")
         end
-        if not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 and not slow then
+        if not converted and not q.number.typed and kt >= 10 and kt < 100 and q.number.groups == 2 and not slow then
           kt = kt * 10  -- "speed one ninety"
         end
-        local r = self:repaired(q, kt, 40, 700, 10)
-        if not r then return self:need("What speed should " .. id .. " fly? I heard " .. f.int(kt) .. ".") end
-        -- assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error
-        if not q.number.typed and r % 5 ~= 0 then r = math.floor(r / 10) * 10 end
+        local r
+        if converted then
+          r = kt >= 40 and kt <= 700 and math.floor(kt + 0.5) or nil
+        else
+          r = self:repaired(q, kt, 40, 700, 10)
+          -- assigned speeds are multiples of 5 kt; a spoken odd last digit is a recognition error
+          if r and not q.number.typed and r % 5 ~= 0 then r = math.floor(r / 10) * 10 end
+        end
+        if not r then
+          return self:need("What speed should " .. id .. " fly? I heard " .. self:raw(q.b, q.e) .. ".")
+        end
         spd = f.int(r)
       end
       self:emit("SPD " .. id .. " " .. spd)

@@ -361,6 +361,22 @@ local names = {
     { "xiamen air", "CXA" },
     { "air juneyao", "DKH" },
     { "juneyao", "DKH" },
+    -- mainland China's other airlines by ICAO telephony, and the airline's own name where controllers there
+    -- say it ("Air China Cargo 1041", "Spring 8821")
+    { "shun feng", "CSS" },
+    { "shunfeng", "CSS" },
+    { "airchina freight", "CAO" },
+    { "air china cargo", "CAO" },
+    { "cargo king", "CKK" },
+    { "lucky air", "LKE" },
+    { "tibet", "TBA" },
+    { "shandong", "CDG" },
+    { "air spring", "CQH" },
+    { "loong air", "CDC" },
+    { "capital jet", "CBJ" },
+    { "china express", "HXA" },
+    { "west china", "CHB" },
+    { "kunming air", "KNA" },
     { "csa lines", "CSA" },
     -- airlines of the Middle East and North Africa: ICAO telephony, and the airline's own name where
     -- controllers there say it ("Nile Bird 201", "Nas 45", "Nouvelair 1420", "Royal Maroc 205")

@@ -385,6 +385,11 @@ return function(intent, rule, words)
   -- ("swap their headings", "exchange the speeds of ..."): what is swapped, no value of its own
   rule { "heading headings speed speeds level levels altitude altitudes", false, prev = { 4, "swap exchange" } }
   rule { "speed spd airspeed", false, prev = { 1, "vertical" } }
+  -- "cross ATAGA at speed 280 knots": the value's noun after "at" in a crossing is the constraint's (AT ... SPD)
+  rule { "speed spd airspeed", false, prev = { 1, "at" }, when = function(g, i)
+    local r = g:refs_in(i - 2, i - 1, "waypoint")[1]
+    return r ~= nil and r.e == i - 1 and g:word(r.b - 1, "cross crossing")
+  end }
   -- "climb FL380, passing FL360 Mach .79", "when passing FL300 M.77", "climb FL370, reaching Mach .79": a
   -- Mach number said with no verb straight after a level passed or reached (or "reaching" alone: the
   -- level cleared) is a speed instruction of its own, which waits for that level (m:at_altitude); only after
@@ -1018,6 +1023,14 @@ return function(intent, rule, words)
   -- whole route, no waypoint named
   rule { "clear delete remove erase wipe kill", "delrte", near = { 4, "@route_nouns" },
          when = function(g) return not g:has_ref(1, #g.t + 1, "waypoint") end }
+  -- "cancel your route", "cancel the route of CHH7423": the whole route, the noun straight after the verb (or its
+  -- article), no waypoint named, and nothing after it that a cancelled route would not be ("cancel route
+  -- restrictions": a restriction lifted)
+  rule { "cancel", "delrte", when = function(g, i)
+    local k = g:word(i + 1, "the your its his her their") and i + 2 or i + 1
+    return g:word(k, "route rte") and not g:word(k + 1, "restriction restrictions clearance")
+      and not g:has_ref(1, #g.t + 1, "waypoint")
+  end }
   -- "clr rte", "clr route" typed short, the noun ending the request ("clr route as filed" is no deletion)
   rule { "clr", "delrte", next = "@route_nouns",
          when = function(g, i) return not g:has_ref(1, #g.t + 1, "waypoint") and i + 2 > #g.t end }

@@ -6836,3 +6836,65 @@ do
   check_eq(ex("sir where is SpiceJet 811 showing"), "POS SEJ811")
   check_eq(ex("SpiceJet 811 climb FL180 sir"), "ALT SEJ811 FL180")
 end
+
+-- Cycle 40 (d81): a speed in another unit is its conversion to the nearest knot, never rounded to tens nor
+-- re-read as knots (km/h, m/s); a metric level said as digits one by one before "hundred" is asked
+do
+  local _, ex = scene({ "CRE CSN512 A320 30.0 114.0 090 FL250 280", "CRE CCA88 B738 31.0 115.0 180 FL200 270" })
+  check_eq(ex("CSN512 reduce speed to four hundred kilometres per hour"), "SPD CSN512 216")
+  check_eq(ex("CSN512 speed four four zero kilometers per hour"), "SPD CSN512 238")
+  check_eq(ex("CCA88 reduce to 390 km/h"), "SPD CCA88 211")
+  check_eq(ex("CCA88 speed one two five metres per second"), "SPD CCA88 243")
+  asked(ex("CCA88 speed 2000 km/h"), "1080 kt: no speed an airliner flies")
+  check_eq(ex("CCA88 reduce speed two five zero knots"), "SPD CCA88 250")
+  asked(ex("CSN512 climb to eight six hundred metres"), "digits one by one before hundred: 8600 m or a slip?")
+  check_eq(ex("CSN512 climb to eight thousand six hundred metres"), "ALT CSN512 28215")
+  check_eq(ex("CSN512 climb to eight six zero zero metres"), "ALT CSN512 28215")
+  check_eq(ex("CSN512 climb to eighty six hundred metres"), "ALT CSN512 28215")
+end
+
+-- Cycle 40 (d81): a metric level or a flight level said with "standard" ("9800 metres, standard", "on standard
+-- pressure"): flown on the standard setting, as every level is; "standard" after feet, or naming something else,
+-- is still asked
+do
+  local _, ex = scene({ "CRE CXA71 B738 25.0 118.0 045 FL250 280" })
+  check_eq(ex("CXA71 climb to eight four zero zero metres, standard"), "ALT CXA71 27559")
+  check_eq(ex("CXA71 descend and maintain 6600 metres on standard pressure"), "ALT CXA71 21654")
+  check_eq(ex("CXA71 climb flight level 310 standard"), "ALT CXA71 FL310")
+  asked(ex("CXA71 descend to 4000 feet standard"), "standard after an altitude in feet")
+  asked(ex("CXA71 climb to 8400 metres standard rate"), "a standard rate, no altimeter setting")
+  check_eq(ex("CXA71 descend to six five hundred metres, correct, six thousand five hundred metres"), "ALT CXA71 21325")
+end
+
+-- Cycle 40 (d81): mainland China's airlines by telephony, after a verb too ("delete Lucky Air ...", "where is Shun
+-- Feng ..."); an airline said with no aircraft of its number flying is still asked
+do
+  local _, ex = scene({ "CRE LKE5203 A320 25.0 102.0 090 FL250 280", "CRE CSS3301 B752 23.0 113.0 180 FL200 270",
+      "CRE CAO808 B744 31.0 121.0 270 FL300 280", "CRE CCA977 A332 40.0 116.0 000 FL320 290" })
+  check_eq(ex("sim op: delete Lucky Air five two zero three"), "DEL LKE5203")
+  check_eq(ex("where is Shun Feng three three zero one"), "POS CSS3301")
+  check_eq(ex("remove air china cargo eight zero eight"), "DEL CAO808")
+  check_eq(ex("Air China 977 climb to 10100 metres"), "ALT CCA977 33136")
+  asked(ex("delete Lucky Air five two zero four"), "no Lucky Air 5204 flies")
+end
+
+-- Cycle 40 (d81): a crossing's value said with its noun after "at" ("cross FIX at speed 250 knots") is the
+-- constraint; a plain number after the noun is still asked
+do
+  local _, ex = scene({ "CRE CES771 A320 31.0 121.0 090 FL250 280", "ADDWPT CES771 52.0 4.0", "DEFWPT DUMIX 31.2 121.8",
+      "ADDWPT CES771 DUMIX" })
+  check_eq(ex("CES771 cross DUMIX at speed 250 knots"), "AT CES771 DUMIX SPD 250")
+  check_eq(ex("CES771 cross DUMIX at speed 250 knots, descend FL200"), "AT CES771 DUMIX SPD 250 ; ALT CES771 FL200")
+  asked(ex("CES771 cross DUMIX at speed 250"), "a plain number after the noun")
+end
+
+-- Cycle 40 (d81): "cancel your route" deletes the route (DELRTE); a waypoint named with it, a negation, or route
+-- restrictions are not this
+do
+  local _, ex = scene({ "CRE CSC4417 A320 30.5 104.0 090 FL250 280", "DEFWPT BOTAN 30.6 104.5", "ADDWPT CSC4417 BOTAN" })
+  check_eq(ex("CSC4417 cancel your route"), "DELRTE CSC4417")
+  check_eq(ex("cancel the route of CSC4417"), "DELRTE CSC4417")
+  asked(ex("CSC4417 cancel the route via BOTAN"), "a waypoint named: which part?")
+  asked(ex("CSC4417 don't cancel your route"), "a negation")
+  check(not ex("CSC4417 cancel route restrictions"):find("DELRTE", 1, true), "restrictions lifted, no route deleted")
+end
