@@ -2776,13 +2776,15 @@ do
 end
 
 -- "back to real time" with no word that starts the clock, on a held clock: its rate back to 1 (DTMULT 1);
--- "real time speed" is the rate; "run it in real time again" starts it
+-- "real time speed" is the rate; "run it in real time again" returns to real time as "back to real time" does
+-- (Cycle 40, d82); "start it in real time again" starts it
 do
   local _, ex = scene({})
   check_eq(ex("back to real time"), "DTMULT 1")
   check_eq(ex("ok go back to real time pls"), "DTMULT 1")
   check_eq(ex("back to real time speed"), "DTMULT 1")
-  check_eq(ex("run it in real time again"), "OP")
+  check_eq(ex("run it in real time again"), "DTMULT 1")
+  check_eq(ex("start it in real time again"), "OP")
   check_eq(ex("ok run"), "OP")
 end
 
@@ -6797,4 +6799,38 @@ do
   check_eq(ex("SAS77 descend via its route"), "VNAV SAS77 ON")
   asked(ex("SAS77 descend via the STAR"), "a STAR, which squawk does not fly")
   check_eq(ex("SAS77 climb via the route to FL360"), "ALT SAS77 FL360")
+end
+
+-- Cycle 40 (d82): terse setting notes. A distance and a height paired before the zone's word ("a 4nm / 800ft
+-- zone", "4 nm and 800 ft zone", "4 nm by 800 ft PZ") are both the zone's (ZONER and ZONEDH), after other
+-- settings too; a bare number or a flight level before it is not
+do
+  local _, ex = scene({ "CRE SAS77 B738 52.4 4.2 180 FL340 280" })
+  check_eq(ex("detection on, reso mvp, 4nm / 800ft zone, 3 min lookahead"),
+    "ASAS ON ; RESO MVP ; ZONER 4 ; ZONEDH 800 ; DTLOOK 180")
+  check_eq(ex("resolution MVP, 4 nm and 800 ft zone"), "RESO MVP ; ZONER 4 ; ZONEDH 800")
+  check_eq(ex("mvp resolution, a 4 nm by 800 ft pz"), "RESO MVP ; ZONER 4 ; ZONEDH 800")
+  asked(ex("resolution MVP, FL100 / 4 nm zone"), "a flight level is no half height of the zone")
+end
+
+-- Cycle 40 (d82): "real time again" is "back to real time": read from the clock's state, fast time OP, else
+-- DTMULT 1 (a held clock stays held); a word that starts the clock with it still starts it
+do
+  local _, ex = scene({})
+  check_eq(ex("real time again please"), "DTMULT 1")
+  check_eq(ex("could you run the sim in real time again"), "DTMULT 1")
+  check_eq(ex("ff 60; run it in real time again"), "FF 60 ; OP")
+  check_eq(ex("resume in real time again"), "OP")
+end
+
+-- Cycle 40 (d82): an A320neo is an A320: "the A320" with an A320 and an A20N flying asks which, naming both;
+-- "the A320neo" is the neo; "the A320" with only the neo flying is the neo
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 090 FL200 250", "CRE FIN34 A20N 60.3 24.5 270 FL220 260",
+    "CRE FIN56 A321 60.6 24.9 180 FL240 270" })
+  check(ex("the A320 hdg 170"):match("^ASK .*FIN12.*FIN34") ~= nil, ex("the A320 hdg 170"))
+  check_eq(ex("the A320neo hdg 170"), "HDG FIN34 170")
+  check_eq(ex("the A321 hdg 170"), "HDG FIN56 170")
+  local _, ex2 = scene({ "CRE FIN34 A20N 60.3 24.5 270 FL220 260", "CRE FIN56 A321 60.6 24.9 180 FL240 270" })
+  check_eq(ex2("the A320 hdg 170"), "HDG FIN34 170")
 end
