@@ -949,10 +949,13 @@ local function written_forms(text)
       return setting .. space .. to
     end)
     -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
-    -- after a setting's name, is no place)
+    -- after a setting's name, is no place); before a word that opens an instruction (a value's name, a verb
+    -- of climb or descent, a turn: "KLM56 -> hdg 210 L", "passing FL120 -> spd 280") it separates that
+    -- instruction from what is before it, as a comma
     text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
       local b, a = before:lower(), after:lower()
       if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
+      if word_set("turn left right lt rt @instruction_nouns @up @down", 1)[a] then return before .. ", " .. after end
       return before .. " direct " .. after
     end)
   end

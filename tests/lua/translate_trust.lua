@@ -6834,3 +6834,16 @@ do
   local _, ex2 = scene({ "CRE FIN34 A20N 60.3 24.5 270 FL220 260", "CRE FIN56 A321 60.6 24.9 180 FL240 270" })
   check_eq(ex2("the A320 hdg 170"), "HDG FIN34 170")
 end
+
+-- Cycle 40 (d82): an arrow typed before a word that opens an instruction (a value's name, a verb of climb or
+-- descent, a turn) separates it, no direct-to: "FIN12 -> hdg 250", "passing FL150 -> spd 260"; before a place's
+-- name it is still the direct-to, and before another word it is still asked
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 090 FL200 250" })
+  check_eq(ex("FIN12 -> hdg 250"), "HDG FIN12 250")
+  check_eq(ex("FIN12 -> desc FL90"), "ALT FIN12 FL90")
+  check_eq(ex("FIN12 -> turn left 20"), "HDG FIN12 70 LEFT")
+  check_eq(ex("FIN12 passing FL150 -> spd 260"), "ATALT FIN12 FL150 SPD FIN12 260")
+  check_eq(ex("FIN12 once slowed to 230 kt -> descend FL120"), "ATSPD FIN12 230 ALT FIN12 FL120")
+  asked(ex("FIN12 -> hold"), "an arrow before a word of no instruction is a direct-to, to no place")
+end
