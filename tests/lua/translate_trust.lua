@@ -6847,3 +6847,14 @@ do
   check_eq(ex("FIN12 once slowed to 230 kt -> descend FL120"), "ATSPD FIN12 230 ALT FIN12 FL120")
   asked(ex("FIN12 -> hold"), "an arrow before a word of no instruction is a direct-to, to no place")
 end
+
+-- Cycle 40 (d82): a height typed with its unit in feet before the instruction word of a terse note ("FIN12:
+-- 9000ft, spd 220") is the level to fly, as a flight level there is; after "below"/"above" it is not
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 090 FL200 250" })
+  check_eq(ex("FIN12: 9000ft, spd 220"), "ALT FIN12 9000 ; SPD FIN12 220")
+  check_eq(ex("FIN12 7000 ft spd 210"), "ALT FIN12 7000 ; SPD FIN12 210")
+  check_eq(ex("FIN12 spd 220, 9000ft"), "SPD FIN12 220 ; ALT FIN12 9000")
+  check(not ex("FIN12 below 9000 ft spd 220"):find("ALT FIN12 9000", 1, true), ex("FIN12 below 9000 ft spd 220"))
+  asked(ex("FIN12: 9000, spd 220"), "a bare number before the speed is no level")
+end
