@@ -5365,6 +5365,11 @@ function M.translate(text, world)
   text = numbered_steps(text)
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
   text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+  -- "hdg 220 -> 250", "spd 280 -> 250": an arrow between two values after the name of a heading or speed, from
+  -- the one to the other
+  text = text:gsub("%f[%w](%a+)(%s*)(%d+)%s*[%-=]+>%s*(%d+)%f[^%w%.]", function(name, space, from, to)
+    if word_set("heading hdg speed spd", 1)[name:lower()] then return name .. space .. "from " .. from .. " to " .. to end
+  end)
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between
   if text:lower():find("wind", 1, true) then
     text = text:gsub("%f[%w%.](%d%d%d)/(%d%d?%d?)%s*[Kk]?[Tt]?[Ss]?%f[^%w%.]", "from %1 at %2 knots")

@@ -6858,3 +6858,13 @@ do
   check(not ex("FIN12 below 9000 ft spd 220"):find("ALT FIN12 9000", 1, true), ex("FIN12 below 9000 ft spd 220"))
   asked(ex("FIN12: 9000, spd 220"), "a bare number before the speed is no level")
 end
+
+-- Cycle 40 (d82): an arrow between two values after the name of a heading or speed ("hdg 220 -> 250", "spd 280
+-- -> 250") is a change from the one to the other: the second is flown
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 220 FL200 280" })
+  check_eq(ex("FIN12 hdg 220 -> 250"), "HDG FIN12 250")
+  check_eq(ex("FIN12 heading 220->240"), "HDG FIN12 240")
+  check_eq(ex("FIN12 spd 280 -> 250"), "SPD FIN12 250")
+  asked(ex("FIN12 fl 200 -> 150"), "digits after an arrow with no level's name are no flight level")
+end
