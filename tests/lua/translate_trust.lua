@@ -6868,3 +6868,12 @@ do
   check_eq(ex("FIN12 spd 280 -> 250"), "SPD FIN12 250")
   asked(ex("FIN12 fl 200 -> 150"), "digits after an arrow with no level's name are no flight level")
 end
+
+-- Cycle 40 (d82): a callsign alone with a question mark ("LOT55?") is shown as the callsign alone is (POS);
+-- another word beside it is still read or asked
+do
+  local _, ex = scene({ "CRE LOT55 E195 55.2 24.0 090 FL340 290" })
+  check_eq(ex("LOT55?"), "POS LOT55")
+  check_eq(ex("lot55 ?"), "POS LOT55")
+  asked(ex("LOT55 blue?"), "a word beside the callsign that names nothing")
+end
