@@ -859,6 +859,8 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 local function written_forms(text)
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   text = text:gsub("^(%s*)%.(%a)", "%1%2")
+  -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
+  text = text:gsub("(%s)@%s*(%w)", "%1at %2")
   text = typed_abbreviations(lone_multipliers(text))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57

@@ -6877,3 +6877,13 @@ do
   check_eq(ex("lot55 ?"), "POS LOT55")
   asked(ex("LOT55 blue?"), "a word beside the callsign that names nothing")
 end
+
+-- Cycle 40 (d82): typed "x" before a fix's ident is "cross", an at sign typed apart is "at": "FIN12 x ALPHA @
+-- FL200" is the constraint at the fix; "x" before anything else stays as typed
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 090 FL240 280", "DEFWPT ALPHA 60.1 25", "ADDWPT FIN12 ALPHA" })
+  check_eq(ex("FIN12 x ALPHA @ FL200"), "AT FIN12 ALPHA ALT FL200")
+  check_eq(ex("FIN12 @ FL200"), "ALT FIN12 FL200")
+  check_eq(ex("FIN12 x ALPHA at 250 kt"), "AT FIN12 ALPHA SPD 250")
+  asked(ex("FIN12 x alpha"), "a lower-case x before a lower-case name is no crossing")
+end
