@@ -859,6 +859,8 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 local function written_forms(text)
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   text = text:gsub("^(%s*)%.(%a)", "%1%2")
+  -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
+  text = text:gsub("(%s)@%s*(%w)", "%1at %2")
   text = typed_abbreviations(lone_multipliers(text))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
@@ -949,10 +951,13 @@ local function written_forms(text)
       return setting .. space .. to
     end)
     -- "KLM1234 -> SUGOL": an arrow typed before a place's name is a direct-to ("alt -> FL330", a value
-    -- after a setting's name, is no place)
+    -- after a setting's name, is no place); before a word that opens an instruction (a value's name, a verb
+    -- of climb or descent, a turn: "KLM56 -> hdg 210 L", "passing FL120 -> spd 280") it separates that
+    -- instruction from what is before it, as a comma
     text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
       local b, a = before:lower(), after:lower()
       if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
+      if word_set("turn left right lt rt @instruction_nouns @up @down", 1)[a] then return before .. ", " .. after end
       return before .. " direct " .. after
     end)
   end
@@ -5368,6 +5373,11 @@ function M.translate(text, world)
   text = numbered_steps(text)
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
   text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+  -- "hdg 220 -> 250", "spd 280 -> 250": an arrow between two values after the name of a heading or speed, from
+  -- the one to the other
+  text = text:gsub("%f[%w](%a+)(%s*)(%d+)%s*[%-=]+>%s*(%d+)%f[^%w%.]", function(name, space, from, to)
+    if word_set("heading hdg speed spd", 1)[name:lower()] then return name .. space .. "from " .. from .. " to " .. to end
+  end)
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between
   if text:lower():find("wind", 1, true) then
     text = text:gsub("%f[%w%.](%d%d%d)/(%d%d?%d?)%s*[Kk]?[Tt]?[Ss]?%f[^%w%.]", "from %1 at %2 knots")

@@ -1690,8 +1690,10 @@ function m:leftovers(s)
   for k, q in ipairs(qs) do
     -- (the level left, "leaving FL260 for FL200", is no instruction: the one after it is)
     if q.kind == "alt" and not alt_done and self:level_left(q, qs[k + 1]) then self:take(q) end
-    -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300")
-    local unit = (q.kind == "alt" and q.fl) or q.kind == "speed" or q.kind == "mach"
+    -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300", "FIN3CA:
+    -- 9000ft, spd 220"; a height in feet after "below"/"above" bounds something else, no level to fly)
+    local feet = self:word(q.e - 1, "@feet") and not self:word(q.b - 1, "@below @above")
+    local unit = (q.kind == "alt" and (q.fl or feet)) or q.kind == "speed" or q.kind == "mach"
     -- in spoken order: one said before the instruction word goes before its command
     local emit = q.b < s.trig and function(line) table.insert(self.out, #self.out, line) end
       or function(line) self:emit(line) end

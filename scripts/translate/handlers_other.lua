@@ -2689,11 +2689,15 @@ return function(H, f, compass)
     -- (only OP ends it); otherwise DTMULT 1, the rate, which starts nothing (a held clock stays
     -- held). A clock state not known, or another rate said before it, is asked ("real time speed"
     -- is the rate all the same).
-    local back = self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
+    -- "real time again" ("run it in real time again") returns to real time as "back to real time" does; its
+    -- "run" and "again" are the return's, no start of the clock
+    local again = self:word(s.trig, "real") and self:word(s.trig + 2, "again")
+    local back = again or self:word(s.trig, "real") and self:word(s.trig - 1, "to") and self:word(s.trig - 2, "back")
     -- ("dtmult 1 back to realtime": said after the rate set back to 1, it explains that rate)
     if back and self.out[#self.out] == "DTMULT 1" then return self:explain(s.b, s.e) end
     local speed = self:word(s.trig, "real") and self:word(s.trig + 2, "speed")
-    if speed or back and not self:word_in(s.b, s.e, "run running start resume unpause continue again") then
+    local starts = again and "running start resume unpause continue" or "run running start resume unpause continue again"
+    if speed or back and not self:word_in(s.b, s.e, starts) then
       local state = self.world.run_state
       for _, c in ipairs(self.out) do
         local cmd = c:match("^(%u+)")
@@ -3103,11 +3107,22 @@ return function(H, f, compass)
     local heights = {}  -- { value (ft), index of its ZONEDH line in self.out }
     local qs, named = {}, false
     -- a value before the zone's word is its own only with a unit, said just before it ("a 3 mile PZ";
-    -- "detection on with a 3 mile PZ", where detection set it already); a bare number there ("Run 2
-    -- setup: ZONER 5") is not
+    -- "detection on with a 3 mile PZ", where detection set it already), or the other dimension paired
+    -- with that one just before it ("a 5nm / 1000ft zone", "5 nm and 1000 ft zone": a distance and a
+    -- height joined by one mark or "and" or "by"); a bare number there ("Run 2 setup: ZONER 5") is not
+    local last
     for _, q in ipairs(self:quantities(math.max(1, s.trig - 3), s.trig)) do
       if (q.kind == "dist" or q.kind == "alt") and self:skip_fillers(q.e) == s.trig then
         if self.taken[q.b] then named = true else qs[#qs + 1] = q end
+        last = q
+      end
+    end
+    if last and last.b > 2 and (self.t[last.b - 1].kind == "punct" or self:word(last.b - 1, "and by")) then
+      local pair = last.kind == "dist" and "alt" or "dist"
+      for _, q in ipairs(self:quantities(math.max(1, last.b - 4), last.b - 1)) do
+        if q.kind == pair and q.e == last.b - 1 and not q.fl then
+          if self.taken[q.b] then named = true else qs[#qs + 1] = q end
+        end
       end
     end
     for _, q in ipairs(self:quantities(s.b, s.e)) do

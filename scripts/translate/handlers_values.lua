@@ -37,7 +37,9 @@ return function(H, f, wrap, compass)
         return self:heading(s)
       end
     end
-    if #self:acids(s) > 0 and #qs == 0 and #self:refs_in(s.b, s.e, "aircraft") == 1 and s.e - s.b == 1 then
+    -- ("LOT771", "LOT771?": a callsign alone, asked about or not, is shown)
+    local e = self.t[s.e - 1] and self.t[s.e - 1].text == "?" and s.e - 1 or s.e
+    if #self:acids(s) > 0 and #qs == 0 and #self:refs_in(s.b, e, "aircraft") == 1 and e - s.b == 1 then
       return self:one_acid(s, "POS", "be shown")
     end
     self:need(require("translate.grammar").not_understood)

@@ -391,6 +391,8 @@ return {
     -- (FAA typed shorthand: "rs 210" reduce speed; "exp ILS" expect; "hvy" heavy; "8 thsnd" eight thousand;
     -- "adn" and)
     rs = { word = "reduce speed", next = "#number to" },
+    -- ("SAS902 x NAXEL @ FL200": "x" before a fix's ident is "cross")
+    x = { word = "cross", next = "#place" },
     exp = { word = "expect", next = "ils rnav vis visual loc rwy runway approach app #number" },
     hvy = { word = "heavy" }, adn = { word = "and" },
     thsnd = { word = "thousand", prev = "#number" }, thsd = { word = "thousand", prev = "#number" },

@@ -29,6 +29,12 @@ local function add(rows, seen, maker, model, icao)
   rows[#rows + 1] = { maker, model, icao }
 end
 
+-- The family's number of a model's name in lower case ("737-800", "737 max 8" -> "737"; "a320-200",
+-- "a320neo" -> "a320": the neo is a variant of its family), or nil
+local function family_of(model)
+  return model:match("^(a?%d%d%d)[%-%s]") or model:match("^(a%d%d%d)neo$")
+end
+
 -- Spellings of one model as written in a title ("737 MAX 8", "A321neo").
 local function spellings(model)
   local m = model:lower():gsub("%s*%(.-%)", ""):gsub("^%s+", ""):gsub("%s+$", "")
@@ -156,7 +162,7 @@ function M.build(designators)
             -- the family said as its designator ("B737 MAX 8")
             if maker == "boeing" then phrases[#phrases + 1] = { "b" .. a:lower(), d } end
           end
-          local fam = a:lower():match("^(a?%d%d%d)[%-%s]")
+          local fam = family_of(a:lower())
           if fam then families[#families + 1] = { maker, fam, d } end
         end
       end
@@ -174,7 +180,7 @@ function M.build(designators)
       end
       if n[2]:find("^%d+%-%d") then phrases[#phrases + 1] = { n[1] .. " " .. n[2], d } end
       -- ("737 max 8": a MAX is one of the 737s)
-      local fam = n[2]:match("^(a?%d%d%d)[%-%s]")
+      local fam = family_of(n[2])
       if fam then families[#families + 1] = { n[1], fam, d } end
     end
   end
@@ -190,6 +196,9 @@ function M.build(designators)
   for _, fam in ipairs(families) do
     sets[fam[2]] = sets[fam[2]] or {}
     sets[fam[2]][fam[3]] = true
+    -- (the base designator is of its family too: "a320" names the A320 and the A20N)
+    local base = (fam[1] == "boeing" and "B" or "") .. fam[2]:upper()
+    if known[base] then sets[fam[2]][base] = true end
   end
   return { types = rows, phrases = phrases, designators = all, families = sets }
 end

@@ -263,7 +263,9 @@ do -- the display's trails: on/off with the point interval, a colour per aircraf
   check_eq(tr("Show aircraft trails"), "TRAIL ON")
   check_eq(tr("Hide the trails"), "TRAIL OFF")
   check_eq(tr("turn on trails every 5 seconds"), "TRAIL ON 5")
-  check_eq(tr("run it in real time again and turn the trails off"), "OP ; TRAIL OFF")
+  check_eq(tr("start it in real time again and turn the trails off"), "OP ; TRAIL OFF")
+  -- ("run it in real time again" is "back to real time": with the clock's state unknown, asked)
+  check(asks("run it in real time again and turn the trails off"), "real time again, the clock unknown")
   check_eq(tr("show the trail of KLM123 in red", w), "TRAIL KLM123 RED")
   check(asks("make the trail yellow"), "a colour needs an aircraft")
 end

@@ -2776,13 +2776,15 @@ do
 end
 
 -- "back to real time" with no word that starts the clock, on a held clock: its rate back to 1 (DTMULT 1);
--- "real time speed" is the rate; "run it in real time again" starts it
+-- "real time speed" is the rate; "run it in real time again" returns to real time as "back to real time" does
+-- (Cycle 40, d82); "start it in real time again" starts it
 do
   local _, ex = scene({})
   check_eq(ex("back to real time"), "DTMULT 1")
   check_eq(ex("ok go back to real time pls"), "DTMULT 1")
   check_eq(ex("back to real time speed"), "DTMULT 1")
-  check_eq(ex("run it in real time again"), "OP")
+  check_eq(ex("run it in real time again"), "DTMULT 1")
+  check_eq(ex("start it in real time again"), "OP")
   check_eq(ex("ok run"), "OP")
 end
 
@@ -6897,4 +6899,91 @@ do
   asked(ex("CSC4417 cancel the route via BOTAN"), "a waypoint named: which part?")
   asked(ex("CSC4417 don't cancel your route"), "a negation")
   check(not ex("CSC4417 cancel route restrictions"):find("DELRTE", 1, true), "restrictions lifted, no route deleted")
+end
+
+-- Cycle 40 (d82): terse setting notes. A distance and a height paired before the zone's word ("a 4nm / 800ft
+-- zone", "4 nm and 800 ft zone", "4 nm by 800 ft PZ") are both the zone's (ZONER and ZONEDH), after other
+-- settings too; a bare number or a flight level before it is not
+do
+  local _, ex = scene({ "CRE SAS77 B738 52.4 4.2 180 FL340 280" })
+  check_eq(ex("detection on, reso mvp, 4nm / 800ft zone, 3 min lookahead"),
+    "ASAS ON ; RESO MVP ; ZONER 4 ; ZONEDH 800 ; DTLOOK 180")
+  check_eq(ex("resolution MVP, 4 nm and 800 ft zone"), "RESO MVP ; ZONER 4 ; ZONEDH 800")
+  check_eq(ex("mvp resolution, a 4 nm by 800 ft pz"), "RESO MVP ; ZONER 4 ; ZONEDH 800")
+  asked(ex("resolution MVP, FL100 / 4 nm zone"), "a flight level is no half height of the zone")
+end
+
+-- Cycle 40 (d82): "real time again" is "back to real time": read from the clock's state, fast time OP, else
+-- DTMULT 1 (a held clock stays held); a word that starts the clock with it still starts it
+do
+  local _, ex = scene({})
+  check_eq(ex("real time again please"), "DTMULT 1")
+  check_eq(ex("could you run the sim in real time again"), "DTMULT 1")
+  check_eq(ex("ff 60; run it in real time again"), "FF 60 ; OP")
+  check_eq(ex("resume in real time again"), "OP")
+end
+
+-- Cycle 40 (d82): an A320neo is an A320: "the A320" with an A320 and an A20N flying asks which, naming both;
+-- "the A320neo" is the neo; "the A320" with only the neo flying is the neo
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 090 FL200 250", "CRE FIN34 A20N 60.3 24.5 270 FL220 260",
+    "CRE FIN56 A321 60.6 24.9 180 FL240 270" })
+  check(ex("the A320 hdg 170"):match("^ASK .*FIN12.*FIN34") ~= nil, ex("the A320 hdg 170"))
+  check_eq(ex("the A320neo hdg 170"), "HDG FIN34 170")
+  check_eq(ex("the A321 hdg 170"), "HDG FIN56 170")
+  local _, ex2 = scene({ "CRE FIN34 A20N 60.3 24.5 270 FL220 260", "CRE FIN56 A321 60.6 24.9 180 FL240 270" })
+  check_eq(ex2("the A320 hdg 170"), "HDG FIN34 170")
+end
+
+-- Cycle 40 (d82): an arrow typed before a word that opens an instruction (a value's name, a verb of climb or
+-- descent, a turn) separates it, no direct-to: "FIN12 -> hdg 250", "passing FL150 -> spd 260"; before a place's
+-- name it is still the direct-to, and before another word it is still asked
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 090 FL200 250" })
+  check_eq(ex("FIN12 -> hdg 250"), "HDG FIN12 250")
+  check_eq(ex("FIN12 -> desc FL90"), "ALT FIN12 FL90")
+  check_eq(ex("FIN12 -> turn left 20"), "HDG FIN12 70 LEFT")
+  check_eq(ex("FIN12 passing FL150 -> spd 260"), "ATALT FIN12 FL150 SPD FIN12 260")
+  check_eq(ex("FIN12 once slowed to 230 kt -> descend FL120"), "ATSPD FIN12 230 ALT FIN12 FL120")
+  asked(ex("FIN12 -> hold"), "an arrow before a word of no instruction is a direct-to, to no place")
+end
+
+-- Cycle 40 (d82): a height typed with its unit in feet before the instruction word of a terse note ("FIN12:
+-- 9000ft, spd 220") is the level to fly, as a flight level there is; after "below"/"above" it is not
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 090 FL200 250" })
+  check_eq(ex("FIN12: 9000ft, spd 220"), "ALT FIN12 9000 ; SPD FIN12 220")
+  check_eq(ex("FIN12 7000 ft spd 210"), "ALT FIN12 7000 ; SPD FIN12 210")
+  check_eq(ex("FIN12 spd 220, 9000ft"), "SPD FIN12 220 ; ALT FIN12 9000")
+  check(not ex("FIN12 below 9000 ft spd 220"):find("ALT FIN12 9000", 1, true), ex("FIN12 below 9000 ft spd 220"))
+  asked(ex("FIN12: 9000, spd 220"), "a bare number before the speed is no level")
+end
+
+-- Cycle 40 (d82): an arrow between two values after the name of a heading or speed ("hdg 220 -> 250", "spd 280
+-- -> 250") is a change from the one to the other: the second is flown
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 220 FL200 280" })
+  check_eq(ex("FIN12 hdg 220 -> 250"), "HDG FIN12 250")
+  check_eq(ex("FIN12 heading 220->240"), "HDG FIN12 240")
+  check_eq(ex("FIN12 spd 280 -> 250"), "SPD FIN12 250")
+  asked(ex("FIN12 fl 200 -> 150"), "digits after an arrow with no level's name are no flight level")
+end
+
+-- Cycle 40 (d82): a callsign alone with a question mark ("LOT55?") is shown as the callsign alone is (POS);
+-- another word beside it is still read or asked
+do
+  local _, ex = scene({ "CRE LOT55 E195 55.2 24.0 090 FL340 290" })
+  check_eq(ex("LOT55?"), "POS LOT55")
+  check_eq(ex("lot55 ?"), "POS LOT55")
+  asked(ex("LOT55 blue?"), "a word beside the callsign that names nothing")
+end
+
+-- Cycle 40 (d82): typed "x" before a fix's ident is "cross", an at sign typed apart is "at": "FIN12 x ALPHA @
+-- FL200" is the constraint at the fix; "x" before anything else stays as typed
+do
+  local _, ex = scene({ "CRE FIN12 A320 60 24 090 FL240 280", "DEFWPT ALPHA 60.1 25", "ADDWPT FIN12 ALPHA" })
+  check_eq(ex("FIN12 x ALPHA @ FL200"), "AT FIN12 ALPHA ALT FL200")
+  check_eq(ex("FIN12 @ FL200"), "ALT FIN12 FL200")
+  check_eq(ex("FIN12 x ALPHA at 250 kt"), "AT FIN12 ALPHA SPD 250")
+  asked(ex("FIN12 x alpha"), "a lower-case x before a lower-case name is no crossing")
 end
