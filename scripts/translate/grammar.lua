@@ -660,13 +660,16 @@ end
 -- is no label) is dropped, as is a role of one or two words addressed before a comma or "please"
 -- ("operator, ...", "pseudo-pilot, ...", "sim op please give ..."). The machine teammate
 -- (lexicon.addressed_roles) opening the line is its addressee even without a comma before a word
--- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...").
+-- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...");
+-- after a greeting, a name of the voice assistant (lexicon.addressed_roles.greeted: "hey squawk ...") is one.
 -- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
 -- follows ("sim op pause the simulation"); said alone it is the line. A role's "note:" ("pseudo-pilot note:
 -- ...") is such a label too, and so is a note of the exercise (lexicon.note_owners: "exercise note: ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local ADDRESSED = set_of(lexicon.addressed_roles.names)
+-- (ADDRESSED: a name of `names` -> true; of `greeted` -> "greeted", an addressee only after a greeting)
+for _, w in ipairs(lexicon.addressed_roles.greeted) do ADDRESSED[w] = "greeted" end
 local GREETINGS = set_of(lexicon.addressed_roles.greetings)
 local BARE_LABELS = set_of(lexicon.bare_labels)
 local NOTE_OWNERS = set_of(lexicon.note_owners)
@@ -692,7 +695,7 @@ local function role_dropped(text)
   local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
   if noted and (all_roles(noted) or NOTE_OWNERS[noted:lower()]) then return line end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
-  if name and ADDRESSED[name:lower()] then return next_word end
+  if name and ADDRESSED[name:lower()] == true then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
   if pair and BARE_LABELS[pair:lower():gsub("%s+", " ")] then return request end
   return text
@@ -711,6 +714,8 @@ local function unlabelled(text)
   text = assent_dropped(text)
   local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
   if greeting and GREETINGS[greeting:lower()] then
+    local name, next_word = after:match("^(%a+)%s*,?%s+(%a.*)$")
+    if name and ADDRESSED[name:lower()] == "greeted" then return role_dropped(next_word) end
     local said = role_dropped(after)
     if said ~= after then return said end
   end

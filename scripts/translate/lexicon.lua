@@ -498,8 +498,11 @@ return {
              "affirm", "correct", "please", "that", "right", "send" },
   -- of those, the machine teammate a controller talks to: it opens a line as its addressee even without a comma
   -- ("AI what's the Virgin's altitude?", "hey teammate descend ..."); a greeting of `greetings` may come first
-  -- ("ok AI, ...", "hey teammate: ...")
-  addressed_roles = { names = { "ai", "teammate", "assistant" }, greetings = { "ok", "okay", "hey", "hi", "right", "alright", "so" } },
+  -- ("ok AI, ...", "hey teammate: ..."); `greeted`: names of the voice assistant a line is dictated to, its
+  -- addressee only after a greeting and before a word ("hey squawk united 452 ...", "ok computer ..."), so
+  -- "squawk 4721" and "squawk ident" stay transponder codes
+  addressed_roles = { names = { "ai", "teammate", "assistant" }, greeted = { "squawk", "computer" },
+                      greetings = { "ok", "okay", "hey", "hi", "right", "alright", "so" } },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
   -- "heading 090, oh no, right heading 200"): a run of `words` between a value and the next value,
   -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
