@@ -4308,6 +4308,25 @@ function G:unaccounted()
     end
     return true
   end
+  -- ("at x q z descend 8000", "cross j v x at FL190": a place spelled letter by letter that no part of the
+  -- parse read, two single letters in a row or more after a word that names a place, is asked, its letters
+  -- quoted: the instruction it anchors never goes alone)
+  local function letter(k)
+    local x = self.t[k]
+    return x and x.kind == "word" and x.text:match("^%a$") and not explained[k] and not self.noted[k]
+      and not self.u:used(k)
+  end
+  for i in ipairs(self.t) do
+    local b = i - 1
+    while self.t[b] and self.t[b].filler do b = b - 1 end
+    if letter(i) and letter(i + 1) and not letter(i - 1)
+        and self:word(b, "at after over via cross crossing abeam direct from") then
+      local e = i
+      while letter(e) do e = e + 1 end
+      self.leftover = self:raw(i, e)
+      return
+    end
+  end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
@@ -5289,6 +5308,20 @@ local function typed_places(text, world)
     local named = w and slot and #w >= 3 and #w <= 5 and (not capitals or raw:match("^%u%l+$"))
       and not known_word(w) and not ids[w] and not lexicon.shorthand[w] and near(w)
     k = k + 1
+    -- ("cross e c k at FL190", "at j v l descend ...": an ident spelled letter by letter, the whole run of
+    -- two to five single letters, on an aircraft's route or, of three letters or more, near the traffic)
+    if w and slot and #w == 1 and rest == "" and parts[k] and parts[k][2]:match("^%a%p*$") then
+      local j, joined, punct = k, w, ""
+      while parts[j] and #joined < 6 and punct == "" do
+        local x, p = parts[j][2]:match("^(%a)(%p*)$")
+        if not x then break end
+        joined, punct, j = joined .. x:lower(), p, j + 1
+      end
+      if #joined <= 5 and not (parts[j] and parts[j][2]:match("^%a%p*$")) and not ids[joined]
+          and (routed[joined] or (#joined >= 3 and near(joined))) then
+        named, w, rest, k = true, joined, punct, j
+      end
+    end
     if w and not capitals and w:match("^%a+$") and slot and not named and rest == "" and not PLACE_SLOTS[w]
         and w ~= "to" and not routed[w] then
       local joined = w
