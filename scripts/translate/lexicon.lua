@@ -968,6 +968,8 @@ return {
     { heard = { "the send", "this end", "the scent", "decent", "dissent" }, means = "descend",
       before = { "#number", "flight", "level", "altitude", "to" } },
     { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },
+    -- ("run the simulation at for times real time": a multiplier's digit heard as a word)
+    { heard = { "for", "fore" }, means = "four", before = { "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
     { heard = { "two", "too" }, means = "to",
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
