@@ -6798,3 +6798,27 @@ do
   asked(ex("SAS77 descend via the STAR"), "a STAR, which squawk does not fly")
   check_eq(ex("SAS77 climb via the route to FL360"), "ALT SAS77 FL360")
 end
+
+-- Cycle 40 (d83a): a line dictated to a voice assistant. The assistant named after a greeting ("hey squawk",
+-- "ok computer") is the line's addressee, never a transponder code that swallows the condition after it; a
+-- place spelled letter by letter ("cross s p y at ...") is the ident the route or the navdata holds, else
+-- asked, naming the letters, and the instruction it anchors is never sent alone; "real time" said bare is
+-- the clock's rate; "for times" is "four times"
+do
+  local _, ex = scene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280" })
+  check_eq(ex("hey squawk KLM55 descend FL100"), "ALT KLM55 FL100")
+  check_eq(ex("ok computer, KLM55 turn left heading 250"), "HDG KLM55 250 LEFT")
+  check_eq(ex("hey squawk run the simulation at for times real time"), "DTMULT 4")
+  check_eq(ex("real time please"), "DTMULT 1")
+  check_eq(ex("KLM55 squawk 4721"), "")
+  asked(ex("KLM55 at x q z descend FL100"), "a place spelled in letters no route or navdata holds")
+  asked(ex("KLM55 when 20 miles from uh x q z descend FL100"), "a distance from letters nothing read")
+  local nav, nex = navscene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280", "ADDWPT KLM55 SPY" },
+    "spelled idents read from the route and the navdata")
+  if nav then
+    check_eq(nex("hey squawk KLM55 when 20 miles from SPY descend FL100"), "ATDIST KLM55 SPY 20 ALT KLM55 FL100")
+    check_eq(nex("hey squawk KLM55 at s p y descend FL100"), "AT KLM55 SPY DO ALT KLM55 FL100")
+    check_eq(nex("KLM55 cross s p y at FL120"), "AT KLM55 SPY ALT FL120")
+    check_eq(nex("KLM55 direct p a m"), nex("KLM55 direct PAM"))
+  end
+end
