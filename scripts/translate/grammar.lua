@@ -4636,6 +4636,15 @@ function G:not_simulated()
           e = e + 1
           break
         end
+        -- ("squawk 4721 at GRR descend FL290", "contact Chicago when 40 miles from GRR descend FL290"): a
+        -- condition after the phrase of a class that takes no time anchors the instruction said after it with
+        -- no punctuation between, so the phrase ends before it
+        if not class.takes_time and (self:word(e, "@condition") or (self:word(e, "at")
+            and #self:refs_in(e + 1, e + 2, "waypoint") > 0)) then
+          local k = e + 1
+          while self.t[k] and self.t[k].kind ~= "punct" and not self:intent_at(k) do k = k + 1 end
+          if self.t[k] and self.t[k].kind ~= "punct" then break end
+        end
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end

@@ -6811,6 +6811,8 @@ do
   check_eq(ex("hey squawk run the simulation at for times real time"), "DTMULT 4")
   check_eq(ex("real time please"), "DTMULT 1")
   check_eq(ex("KLM55 squawk 4721"), "")
+  -- a transponder code or a frequency ends before a condition that anchors the instruction said after it
+  check_eq(ex("KLM55 squawk 4721 when passing FL120 reduce 250"), "ATALT KLM55 FL120 SPD KLM55 250")
   asked(ex("KLM55 at x q z descend FL100"), "a place spelled in letters no route or navdata holds")
   asked(ex("KLM55 when 20 miles from uh x q z descend FL100"), "a distance from letters nothing read")
   local nav, nex = navscene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280", "ADDWPT KLM55 SPY" },
@@ -6820,5 +6822,7 @@ do
     check_eq(nex("hey squawk KLM55 at s p y descend FL100"), "AT KLM55 SPY DO ALT KLM55 FL100")
     check_eq(nex("KLM55 cross s p y at FL120"), "AT KLM55 SPY ALT FL120")
     check_eq(nex("KLM55 direct p a m"), nex("KLM55 direct PAM"))
+    check_eq(nex("KLM55 squawk 4721 when 20 miles from SPY descend FL100"), "ATDIST KLM55 SPY 20 ALT KLM55 FL100")
+    asked(nex("squawk KLM55 at SPY descend FL100"), "'squawk' before the callsign, no greeting: the place kept")
   end
 end
