@@ -178,13 +178,14 @@ local function know_all(v, seen)
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
   -- their words only where those fit; lexicon.manner, deadline_places and held_value only where their reading
-  -- holds: they account for no word)
+  -- holds; lexicon.dictated_punctuation is the marks it names: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
-      or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value then
+      or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
+      or v == lexicon.dictated_punctuation then
     return
   end
   seen[v] = true
@@ -5407,6 +5408,13 @@ function M.translate(text, world)
   world.waypoints = world.waypoints or {}
   text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
+  -- punctuation dictated as words: the marks (lexicon.dictated_punctuation)
+  for _, d in ipairs(lexicon.dictated_punctuation) do
+    text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)
+      if d.not_before and text:match("^%s*(%a+)", at) == d.not_before then return nil end
+      return d.mark
+    end)
+  end
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
   text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between

@@ -501,6 +501,12 @@ return {
   -- ("ok AI, ...", "hey teammate: ..."); `greeted`: names of the voice assistant a line is dictated to, its
   -- addressee only after a greeting and before a word ("hey squawk united 452 ...", "ok computer ..."), so
   -- "squawk 4721" and "squawk ident" stay transponder codes
+  -- punctuation dictated as words to a voice assistant ("descend 9000 comma reduce 250 period", "where is
+  -- UAL1 question mark", "... new line AAL1187 climb ..."): `said` (its words apart, in lower case, after
+  -- another word) is `mark`, except before the word `not_before` ("a period of ten minutes")
+  dictated_punctuation = { { said = "comma", mark = "," }, { said = "period", mark = ".", not_before = "of" },
+    { said = "full stop", mark = "." }, { said = "question mark", mark = "?" }, { said = "new line", mark = "." },
+    { said = "new paragraph", mark = "." } },
   addressed_roles = { names = { "ai", "teammate", "assistant" }, greeted = { "squawk", "computer" },
                       greetings = { "ok", "okay", "hey", "hi", "right", "alright", "so" } },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
