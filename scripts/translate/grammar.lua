@@ -445,7 +445,9 @@ end
 -- first group ("hdg 2 7 0", "fl 16 0"): a typed "hdg 2 70" may have lost or gained a digit and stays apart
 -- (asked).
 local SPLIT_AFTER = { fl = "^%d$", hdg = "^%d$", level = "^%d%d?$", heading = "^%d%d?$" }
--- Three single digits written apart before a speed's unit are one speed ("maintain 2 1 0 knots").
+-- Three single digits written apart before a speed's unit are one speed ("maintain 2 1 0 knots"); two, the
+-- first no zero and no digit before them, before "thousand" are one count of thousands ("descend to 1 1
+-- thousand" is 11 thousand).
 local SPLIT_BEFORE = { knots = true, kts = true, kt = true, knot = true }
 local function split_digits(text)
   if not text:find("%d%s+%d") then return text end  -- (no two digit groups side by side)
@@ -466,6 +468,9 @@ local function split_digits(text)
     elseif toks[i + 3] and SPLIT_BEFORE[toks[i + 3]:lower()] and (toks[i] .. toks[i + 1] .. toks[i + 2]):match("^%d%d%d$")
         and #toks[i] == 1 and (not toks[i - 1] or not toks[i - 1]:match("^%d$")) then
       out[#out], i, changed = toks[i] .. toks[i + 1] .. toks[i + 2], i + 3, true
+    elseif toks[i + 2] and toks[i + 2]:lower():match("^thousand%p*$") and toks[i]:match("^[1-9]$") and toks[i + 1]:match("^%d$")
+        and (not toks[i - 1] or not toks[i - 1]:match("%d$")) then
+      out[#out], i, changed = toks[i] .. toks[i + 1], i + 2, true
     else
       i = i + 1
     end
