@@ -5425,6 +5425,11 @@ function M.translate(text, world)
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between
   if text:lower():find("wind", 1, true) then
     text = text:gsub("%f[%w%.](%d%d%d)/(%d%d?%d?)%s*[Kk]?[Tt]?[Ss]?%f[^%w%.]", "from %1 at %2 knots")
+    -- ("set the wind ... to 2 7 0 at 50 knots": a direction's three digits said apart after "to" or "from")
+    text = text:gsub("(%f[%a][TtFf][or]o?m?%s+)([0-3])%s+(%d)%s+(%d)%f[%D]", function(w, a, b, c)
+      if not (w:lower():match("^to%s") or w:lower():match("^from%s")) then return nil end
+      return w .. a .. b .. c
+    end)
   end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")

@@ -6826,3 +6826,18 @@ do
     asked(nex("squawk KLM55 at SPY descend FL100"), "'squawk' before the callsign, no greeting: the place kept")
   end
 end
+
+-- Cycle 40 (d83a): dictation's spoken punctuation and digits said apart. "comma", "period", "question mark",
+-- "new line" dictated are the marks ("a period of" stays a word); two digits apart before "thousand" are one
+-- count of thousands; a wind's direction said digit by digit after "to" or "from" is one direction
+do
+  local _, ex = scene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280", "CRE DLH12 A320 52.5 4.9 270 FL200 280" })
+  check_eq(ex("KLM55 descend to 1 2 thousand comma reduce speed to 250 knots period"),
+    "ALT KLM55 12000 ; SPD KLM55 250")
+  check_eq(ex("where is KLM55 question mark"), "POS KLM55")
+  check_eq(ex("KLM55 descend to 1 1 thousand new line DLH12 climb flight level 2 4 0"),
+    "ALT KLM55 11000 ; ALT DLH12 FL240")
+  check_eq(ex("set the wind at 52 comma 4 to 2 7 0 at 30 knots"), "WIND 52 4 270 30")
+  asked(ex("KLM55 descend to 0 1 thousand"), "a count of thousands opening with zero stays apart")
+  asked(ex("KLM55 descend 9000 after a period of ten minutes"), "'a period of' is no full stop")
+end
