@@ -453,6 +453,22 @@ local function split_digits(text)
   if not text:find("%d%s+%d") then return text end  -- (no two digit groups side by side)
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  -- (lexicon.speed_split: groups of one or two digits straight after a speed word, or after "to" after one,
+  -- that make three digits, 100 to 399, with no digit after them, are one speed: "reduce to 2 5 0", "speed 2
+  -- 40"; the last may carry punctuation. Returns the speed and the token after it, or nil)
+  local function speed_at(i)
+    local w, before = toks[i]:lower(), toks[i - 1] and toks[i - 1]:lower()
+    if not (lexicon.speed_split[w] or (w == "to" and lexicon.speed_split[before])) then return nil end
+    local j, digits, punct = i + 1, "", ""
+    while toks[j] and punct == "" do
+      local d, p = toks[j]:match("^(%d%d?)(%p*)$")
+      if not d or #digits + #d > 3 then break end
+      digits, punct, j = digits .. d, p, j + 1
+    end
+    if j - i > 2 and digits:match("^[1-3]%d%d$") and not (punct == "" and toks[j] and toks[j]:match("^%d")) then
+      return digits .. punct, j
+    end
+  end
   local out, i, changed = {}, 1, false
   while i <= #toks do
     out[#out + 1] = toks[i]
@@ -463,8 +479,11 @@ local function split_digits(text)
         joined, k = joined .. toks[k], k + 1
       end
     end
+    local speed, after = speed_at(i)
     if k - i > 2 and #joined >= 2 then
       out[#out + 1], i, changed = joined, k, true
+    elseif speed then
+      out[#out + 1], i, changed = speed, after, true
     elseif toks[i + 3] and SPLIT_BEFORE[toks[i + 3]:lower()] and (toks[i] .. toks[i + 1] .. toks[i + 2]):match("^%d%d%d$")
         and #toks[i] == 1 and (not toks[i - 1] or not toks[i - 1]:match("^%d$")) then
       out[#out], i, changed = toks[i] .. toks[i + 1] .. toks[i + 2], i + 3, true

@@ -504,6 +504,8 @@ return {
   -- punctuation dictated as words to a voice assistant ("descend 9000 comma reduce 250 period", "where is
   -- UAL1 question mark", "... new line AAL1187 climb ..."): `said` (its words apart, in lower case, after
   -- another word) is `mark`, except before the word `not_before` ("a period of ten minutes")
+  -- words after which a speed's digits said in groups ("reduce to 2 5 0", "speed 2 40") are one speed
+  speed_split = { speed = true, reduce = true, slow = true, increase = true, accelerate = true },
   dictated_punctuation = { { said = "comma", mark = "," }, { said = "period", mark = ".", not_before = "of" },
     { said = "full stop", mark = "." }, { said = "question mark", mark = "?" }, { said = "new line", mark = "." },
     { said = "new paragraph", mark = "." } },
