@@ -3330,7 +3330,9 @@ function G:at_waypoint(s, spec)
       local n0 = #self.out
       self:explain(cond_b, r.e)
       self[spec.handler](self, s, spec)
-      if not self.ask then self:do_at(self:acids(s)[1], r.name, n0) end
+      if not self.ask and self:do_at(self:acids(s)[1], r.name, n0) then
+        self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out }
+      end
       return true
     end
     if crossed or constrained or opening or be_at or shown or level_by or clause_at then
@@ -5588,6 +5590,16 @@ function M.translate(text, world)
           break
         end
         g.out[c] = kind .. " " .. id .. " " .. at .. " " .. g.out[c]
+      end
+    end
+    -- ("after DLL descend FL180 and slow to 290": an instruction of the same aircraft after one tied to a waypoint,
+    -- itself tied to no place or condition, may wait for the waypoint too or run now: asked, never sent now)
+    local wd = g.waypoint_do
+    for c = wd and not g.ask and wd.n + 1 or 1, wd and not g.ask and #g.out or 0 do
+      if g.out[c]:match("^%u+ (%S+)") == wd.id and not g.out[c]:match("^AT") then  -- (one tied elsewhere stands)
+        g.ask = string.format("I have %s. Should %s also wait until %s passes %s, or run now?",
+          table.concat(g.out, " ; "), g.out[c], wd.id, wd.wp)
+        break
       end
     end
     if cond and not g.ask then
