@@ -5434,6 +5434,13 @@ function M.translate(text, world)
   world.waypoints = world.waypoints or {}
   text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
+  -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number
+  -- written, with one or two digits after the point, its whole part of one or two digits or after "minus" (a
+  -- heading's "270 point 5" stays apart, asked)
+  for _, whole in ipairs({ "%f[%w](%d%d?)", "(%f[%a][Mm]inus%s+%d%d%d)" }) do
+    text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
+  end
+  text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
   -- punctuation dictated as words: the marks (lexicon.dictated_punctuation)
   for _, d in ipairs(lexicon.dictated_punctuation) do
     text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)

@@ -6859,3 +6859,13 @@ do
     check_eq(nex("KLM55 descend FL120 and after SPY slow to 2 9 0"), "ALT KLM55 FL120 ; AT KLM55 SPY DO SPD KLM55 290")
   end
 end
+
+-- Cycle 40 (d83a): a decimal said with "point" ("52 point 4", "mach point 7 8", "0 point 5") is the number
+-- written, one or two digits after the point
+do
+  local _, ex = scene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280" })
+  check_eq(ex("move KLM55 to 52 point 4 comma 4 point 9"), "MOVE KLM55 52.4 4.9")
+  check_eq(ex("KLM55 mach point 7 8"), ex("KLM55 mach .78"))
+  check_eq(ex("set time step to 0 point 5 seconds"), "DT 0.5")
+  asked(ex("KLM55 mach point 7"), "one digit after 'mach point' is no Mach number")
+end
