@@ -178,13 +178,14 @@ local function know_all(v, seen)
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
   -- their words only where those fit; lexicon.manner, deadline_places and held_value only where their reading
-  -- holds: they account for no word)
+  -- holds; lexicon.dictated_punctuation is the marks it names: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
-      or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value then
+      or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
+      or v == lexicon.dictated_punctuation then
     return
   end
   seen[v] = true
@@ -444,12 +445,30 @@ end
 -- first group ("hdg 2 7 0", "fl 16 0"): a typed "hdg 2 70" may have lost or gained a digit and stays apart
 -- (asked).
 local SPLIT_AFTER = { fl = "^%d$", hdg = "^%d$", level = "^%d%d?$", heading = "^%d%d?$" }
--- Three single digits written apart before a speed's unit are one speed ("maintain 2 1 0 knots").
+-- Three single digits written apart before a speed's unit are one speed ("maintain 2 1 0 knots"); two, the
+-- first no zero and no digit before them, before "thousand" are one count of thousands ("descend to 1 1
+-- thousand" is 11 thousand).
 local SPLIT_BEFORE = { knots = true, kts = true, kt = true, knot = true }
 local function split_digits(text)
   if not text:find("%d%s+%d") then return text end  -- (no two digit groups side by side)
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
+  -- (lexicon.speed_split: groups of one or two digits straight after a speed word, or after "to" after one,
+  -- that make three digits, 100 to 399, with no digit after them, are one speed: "reduce to 2 5 0", "speed 2
+  -- 40"; the last may carry punctuation. Returns the speed and the token after it, or nil)
+  local function speed_at(i)
+    local w, before = toks[i]:lower(), toks[i - 1] and toks[i - 1]:lower()
+    if not (lexicon.speed_split[w] or (w == "to" and lexicon.speed_split[before])) then return nil end
+    local j, digits, punct = i + 1, "", ""
+    while toks[j] and punct == "" do
+      local d, p = toks[j]:match("^(%d%d?)(%p*)$")
+      if not d or #digits + #d > 3 then break end
+      digits, punct, j = digits .. d, p, j + 1
+    end
+    if j - i > 2 and digits:match("^[1-3]%d%d$") and not (punct == "" and toks[j] and toks[j]:match("^%d")) then
+      return digits .. punct, j
+    end
+  end
   local out, i, changed = {}, 1, false
   while i <= #toks do
     out[#out + 1] = toks[i]
@@ -460,11 +479,17 @@ local function split_digits(text)
         joined, k = joined .. toks[k], k + 1
       end
     end
+    local speed, after = speed_at(i)
     if k - i > 2 and #joined >= 2 then
       out[#out + 1], i, changed = joined, k, true
+    elseif speed then
+      out[#out + 1], i, changed = speed, after, true
     elseif toks[i + 3] and SPLIT_BEFORE[toks[i + 3]:lower()] and (toks[i] .. toks[i + 1] .. toks[i + 2]):match("^%d%d%d$")
         and #toks[i] == 1 and (not toks[i - 1] or not toks[i - 1]:match("^%d$")) then
       out[#out], i, changed = toks[i] .. toks[i + 1] .. toks[i + 2], i + 3, true
+    elseif toks[i + 2] and toks[i + 2]:lower():match("^thousand%p*$") and toks[i]:match("^[1-9]$") and toks[i + 1]:match("^%d$")
+        and (not toks[i - 1] or not toks[i - 1]:match("%d$")) then
+      out[#out], i, changed = toks[i] .. toks[i + 1], i + 2, true
     else
       i = i + 1
     end
@@ -660,13 +685,16 @@ end
 -- is no label) is dropped, as is a role of one or two words addressed before a comma or "please"
 -- ("operator, ...", "pseudo-pilot, ...", "sim op please give ..."). The machine teammate
 -- (lexicon.addressed_roles) opening the line is its addressee even without a comma before a word
--- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...").
+-- ("AI what's ...", not "AI 101 ..."), and a greeting may come before an addressed role ("ok AI, ...");
+-- after a greeting, a name of the voice assistant (lexicon.addressed_roles.greeted: "hey squawk ...") is one.
 -- A label of two words (lexicon.bare_labels) opening the line with no colon is dropped when a request
 -- follows ("sim op pause the simulation"); said alone it is the line. A role's "note:" ("pseudo-pilot note:
 -- ...") is such a label too, and so is a note of the exercise (lexicon.note_owners: "exercise note: ...").
 local SPEAKER_ROLES = set_of(lexicon.speaker_roles)
 for _, w in ipairs(lexicon.label_roles) do SPEAKER_ROLES[w] = true end
 local ADDRESSED = set_of(lexicon.addressed_roles.names)
+-- (ADDRESSED: a name of `names` -> true; of `greeted` -> "greeted", an addressee only after a greeting)
+for _, w in ipairs(lexicon.addressed_roles.greeted) do ADDRESSED[w] = "greeted" end
 local GREETINGS = set_of(lexicon.addressed_roles.greetings)
 local BARE_LABELS = set_of(lexicon.bare_labels)
 local NOTE_OWNERS = set_of(lexicon.note_owners)
@@ -692,7 +720,7 @@ local function role_dropped(text)
   local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
   if noted and (all_roles(noted) or NOTE_OWNERS[noted:lower()]) then return line end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
-  if name and ADDRESSED[name:lower()] then return next_word end
+  if name and ADDRESSED[name:lower()] == true then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
   if pair and BARE_LABELS[pair:lower():gsub("%s+", " ")] then return request end
   return text
@@ -711,6 +739,8 @@ local function unlabelled(text)
   text = assent_dropped(text)
   local greeting, after = text:match("^%s*(%a+)%s*,?%s+(.+)$")
   if greeting and GREETINGS[greeting:lower()] then
+    local name, next_word = after:match("^(%a+)%s*,?%s+(%a.*)$")
+    if name and ADDRESSED[name:lower()] == "greeted" then return role_dropped(next_word) end
     local said = role_dropped(after)
     if said ~= after then return said end
   end
@@ -3305,7 +3335,9 @@ function G:at_waypoint(s, spec)
       local n0 = #self.out
       self:explain(cond_b, r.e)
       self[spec.handler](self, s, spec)
-      if not self.ask then self:do_at(self:acids(s)[1], r.name, n0) end
+      if not self.ask and self:do_at(self:acids(s)[1], r.name, n0) then
+        self.waypoint_do = { id = self:acids(s)[1], wp = r.name, n = #self.out }
+      end
       return true
     end
     if crossed or constrained or opening or be_at or shown or level_by or clause_at then
@@ -4314,6 +4346,25 @@ function G:unaccounted()
     end
     return true
   end
+  -- ("at x q z descend 8000", "cross j v x at FL190": a place spelled letter by letter that no part of the
+  -- parse read, two single letters in a row or more after a word that names a place, is asked, its letters
+  -- quoted: the instruction it anchors never goes alone)
+  local function letter(k)
+    local x = self.t[k]
+    return x and x.kind == "word" and x.text:match("^%a$") and not explained[k] and not self.noted[k]
+      and not self.u:used(k)
+  end
+  for i in ipairs(self.t) do
+    local b = i - 1
+    while self.t[b] and self.t[b].filler do b = b - 1 end
+    if letter(i) and letter(i + 1) and not letter(i - 1)
+        and self:word(b, "at after over via cross crossing abeam direct from") then
+      local e = i
+      while letter(e) do e = e + 1 end
+      self.leftover = self:raw(i, e)
+      return
+    end
+  end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
@@ -4622,6 +4673,15 @@ function G:not_simulated()
         if class.one_value and x.kind == "number" then
           e = e + 1
           break
+        end
+        -- ("squawk 4721 at GRR descend FL290", "contact Chicago when 40 miles from GRR descend FL290"): a
+        -- condition after the phrase of a class that takes no time anchors the instruction said after it with
+        -- no punctuation between, so the phrase ends before it
+        if not class.takes_time and (self:word(e, "@condition") or (self:word(e, "at")
+            and #self:refs_in(e + 1, e + 2, "waypoint") > 0)) then
+          local k = e + 1
+          while self.t[k] and self.t[k].kind ~= "punct" and not self:intent_at(k) do k = k + 1 end
+          if self.t[k] and self.t[k].kind ~= "punct" then break end
         end
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
@@ -5295,6 +5355,20 @@ local function typed_places(text, world)
     local named = w and slot and #w >= 3 and #w <= 5 and (not capitals or raw:match("^%u%l+$"))
       and not known_word(w) and not ids[w] and not lexicon.shorthand[w] and near(w)
     k = k + 1
+    -- ("cross e c k at FL190", "at j v l descend ...": an ident spelled letter by letter, the whole run of
+    -- two to five single letters, on an aircraft's route or, of three letters or more, near the traffic)
+    if w and slot and #w == 1 and rest == "" and parts[k] and parts[k][2]:match("^%a%p*$") then
+      local j, joined, punct = k, w, ""
+      while parts[j] and #joined < 6 and punct == "" do
+        local x, p = parts[j][2]:match("^(%a)(%p*)$")
+        if not x then break end
+        joined, punct, j = joined .. x:lower(), p, j + 1
+      end
+      if #joined <= 5 and not (parts[j] and parts[j][2]:match("^%a%p*$")) and not ids[joined]
+          and (routed[joined] or (#joined >= 3 and near(joined))) then
+        named, w, rest, k = true, joined, punct, j
+      end
+    end
     if w and not capitals and w:match("^%a+$") and slot and not named and rest == "" and not PLACE_SLOTS[w]
         and w ~= "to" and not routed[w] then
       local joined = w
@@ -5371,6 +5445,20 @@ function M.translate(text, world)
   world.waypoints = world.waypoints or {}
   text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
+  -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number
+  -- written, with one or two digits after the point, its whole part of one or two digits or after "minus" (a
+  -- heading's "270 point 5" stays apart, asked)
+  for _, whole in ipairs({ "%f[%w](%d%d?)", "(%f[%a][Mm]inus%s+%d%d%d)" }) do
+    text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
+  end
+  text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
+  -- punctuation dictated as words: the marks (lexicon.dictated_punctuation)
+  for _, d in ipairs(lexicon.dictated_punctuation) do
+    text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)
+      if d.not_before and text:match("^%s*(%a+)", at) == d.not_before then return nil end
+      return d.mark
+    end)
+  end
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
   text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
   -- "hdg 220 -> 250", "spd 280 -> 250": an arrow between two values after the name of a heading or speed, from
@@ -5381,6 +5469,11 @@ function M.translate(text, world)
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between
   if text:lower():find("wind", 1, true) then
     text = text:gsub("%f[%w%.](%d%d%d)/(%d%d?%d?)%s*[Kk]?[Tt]?[Ss]?%f[^%w%.]", "from %1 at %2 knots")
+    -- ("set the wind ... to 2 7 0 at 50 knots": a direction's three digits said apart after "to" or "from")
+    text = text:gsub("(%f[%a][TtFf][or]o?m?%s+)([0-3])%s+(%d)%s+(%d)%f[%D]", function(w, a, b, c)
+      if not (w:lower():match("^to%s") or w:lower():match("^from%s")) then return nil end
+      return w .. a .. b .. c
+    end)
   end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
@@ -5520,6 +5613,16 @@ function M.translate(text, world)
           break
         end
         g.out[c] = kind .. " " .. id .. " " .. at .. " " .. g.out[c]
+      end
+    end
+    -- ("after DLL descend FL180 and slow to 290": an instruction of the same aircraft after one tied to a waypoint,
+    -- itself tied to no place or condition, may wait for the waypoint too or run now: asked, never sent now)
+    local wd = g.waypoint_do
+    for c = wd and not g.ask and wd.n + 1 or 1, wd and not g.ask and #g.out or 0 do
+      if g.out[c]:match("^%u+ (%S+)") == wd.id and not g.out[c]:match("^AT") then  -- (one tied elsewhere stands)
+        g.ask = string.format("I have %s. Should %s also wait until %s passes %s, or run now?",
+          table.concat(g.out, " ; "), g.out[c], wd.id, wd.wp)
+        break
       end
     end
     if cond and not g.ask then

@@ -2684,7 +2684,7 @@ return function(H, f, compass)
   function m:bare(_, spec) self:emit(spec.cmd) end
   -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
   function m:resume(s)
-    -- "back to real time" with no word that starts the clock, and "real time speed", read from
+    -- "back to real time" or "real time" with no word that starts the clock, and "real time speed", read from
     -- the clock's state (world.run_state, or an FF said before in the request): in fast-time OP
     -- (only OP ends it); otherwise DTMULT 1, the rate, which starts nothing (a held clock stays
     -- held). A clock state not known, or another rate said before it, is asked ("real time speed"
@@ -2697,7 +2697,7 @@ return function(H, f, compass)
     if back and self.out[#self.out] == "DTMULT 1" then return self:explain(s.b, s.e) end
     local speed = self:word(s.trig, "real") and self:word(s.trig + 2, "speed")
     local starts = again and "running start resume unpause continue" or "run running start resume unpause continue again"
-    if speed or back and not self:word_in(s.b, s.e, starts) then
+    if speed or self:word(s.trig, "real") and not self:word_in(s.b, s.e, starts) then
       local state = self.world.run_state
       for _, c in ipairs(self.out) do
         local cmd = c:match("^(%u+)")

@@ -505,8 +505,19 @@ return {
              "affirm", "correct", "please", "that", "right", "send" },
   -- of those, the machine teammate a controller talks to: it opens a line as its addressee even without a comma
   -- ("AI what's the Virgin's altitude?", "hey teammate descend ..."); a greeting of `greetings` may come first
-  -- ("ok AI, ...", "hey teammate: ...")
-  addressed_roles = { names = { "ai", "teammate", "assistant" }, greetings = { "ok", "okay", "hey", "hi", "right", "alright", "so" } },
+  -- ("ok AI, ...", "hey teammate: ..."); `greeted`: names of the voice assistant a line is dictated to, its
+  -- addressee only after a greeting and before a word ("hey squawk united 452 ...", "ok computer ..."), so
+  -- "squawk 4721" and "squawk ident" stay transponder codes
+  -- punctuation dictated as words to a voice assistant ("descend 9000 comma reduce 250 period", "where is
+  -- UAL1 question mark", "... new line AAL1187 climb ..."): `said` (its words apart, in lower case, after
+  -- another word) is `mark`, except before the word `not_before` ("a period of ten minutes")
+  -- words after which a speed's digits said in groups ("reduce to 2 5 0", "speed 2 40") are one speed
+  speed_split = { speed = true, reduce = true, slow = true, increase = true, accelerate = true },
+  dictated_punctuation = { { said = "comma", mark = "," }, { said = "period", mark = ".", not_before = "of" },
+    { said = "full stop", mark = "." }, { said = "question mark", mark = "?" }, { said = "new line", mark = "." },
+    { said = "new paragraph", mark = "." } },
+  addressed_roles = { names = { "ai", "teammate", "assistant" }, greeted = { "squawk", "computer" },
+                      greetings = { "ok", "okay", "hey", "hi", "right", "alright", "so" } },
   -- a speaker correcting the value just said ("270, no wait, 260", "180 ... actually make that 170",
   -- "heading 090, oh no, right heading 200"): a run of `words` between a value and the next value,
   -- direction or value noun, holding one of `markers` (a word, or two in a row: "make" alone is no
@@ -972,6 +983,8 @@ return {
     { heard = { "the send", "this end", "the scent", "decent", "dissent" }, means = "descend",
       before = { "#number", "flight", "level", "altitude", "to" } },
     { heard = { "head in", "heading's" }, means = "heading", before = { "#number" } },
+    -- ("run the simulation at for times real time": a multiplier's digit heard as a word)
+    { heard = { "for", "fore" }, means = "four", before = { "times" } },
     { heard = { "nots", "notts", "nuts", "knot's" }, means = "knots", after = { "#number" } },
     { heard = { "two", "too" }, means = "to",
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },

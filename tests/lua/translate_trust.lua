@@ -6987,3 +6987,74 @@ do
   check_eq(ex("FIN12 x ALPHA at 250 kt"), "AT FIN12 ALPHA SPD 250")
   asked(ex("FIN12 x alpha"), "a lower-case x before a lower-case name is no crossing")
 end
+
+-- Cycle 40 (d83a): a line dictated to a voice assistant. The assistant named after a greeting ("hey squawk",
+-- "ok computer") is the line's addressee, never a transponder code that swallows the condition after it; a
+-- place spelled letter by letter ("cross s p y at ...") is the ident the route or the navdata holds, else
+-- asked, naming the letters, and the instruction it anchors is never sent alone; "real time" said bare is
+-- the clock's rate; "for times" is "four times"
+do
+  local _, ex = scene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280" })
+  check_eq(ex("hey squawk KLM55 descend FL100"), "ALT KLM55 FL100")
+  check_eq(ex("ok computer, KLM55 turn left heading 250"), "HDG KLM55 250 LEFT")
+  check_eq(ex("hey squawk run the simulation at for times real time"), "DTMULT 4")
+  check_eq(ex("real time please"), "DTMULT 1")
+  check_eq(ex("KLM55 squawk 4721"), "")
+  -- a transponder code or a frequency ends before a condition that anchors the instruction said after it
+  check_eq(ex("KLM55 squawk 4721 when passing FL120 reduce 250"), "ATALT KLM55 FL120 SPD KLM55 250")
+  asked(ex("KLM55 at x q z descend FL100"), "a place spelled in letters no route or navdata holds")
+  asked(ex("KLM55 when 20 miles from uh x q z descend FL100"), "a distance from letters nothing read")
+  local nav, nex = navscene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280", "ADDWPT KLM55 SPY" },
+    "spelled idents read from the route and the navdata")
+  if nav then
+    check_eq(nex("hey squawk KLM55 when 20 miles from SPY descend FL100"), "ATDIST KLM55 SPY 20 ALT KLM55 FL100")
+    check_eq(nex("hey squawk KLM55 at s p y descend FL100"), "AT KLM55 SPY DO ALT KLM55 FL100")
+    check_eq(nex("KLM55 cross s p y at FL120"), "AT KLM55 SPY ALT FL120")
+    check_eq(nex("KLM55 direct p a m"), nex("KLM55 direct PAM"))
+    check_eq(nex("KLM55 squawk 4721 when 20 miles from SPY descend FL100"), "ATDIST KLM55 SPY 20 ALT KLM55 FL100")
+    asked(nex("squawk KLM55 at SPY descend FL100"), "'squawk' before the callsign, no greeting: the place kept")
+  end
+end
+
+-- Cycle 40 (d83a): dictation's spoken punctuation and digits said apart. "comma", "period", "question mark",
+-- "new line" dictated are the marks ("a period of" stays a word); two digits apart before "thousand" are one
+-- count of thousands; a wind's direction said digit by digit after "to" or "from" is one direction
+do
+  local _, ex = scene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280", "CRE DLH12 A320 52.5 4.9 270 FL200 280" })
+  check_eq(ex("KLM55 descend to 1 2 thousand comma reduce speed to 250 knots period"),
+    "ALT KLM55 12000 ; SPD KLM55 250")
+  check_eq(ex("where is KLM55 question mark"), "POS KLM55")
+  check_eq(ex("KLM55 descend to 1 1 thousand new line DLH12 climb flight level 2 4 0"),
+    "ALT KLM55 11000 ; ALT DLH12 FL240")
+  check_eq(ex("set the wind at 52 comma 4 to 2 7 0 at 30 knots"), "WIND 52 4 270 30")
+  asked(ex("KLM55 descend to 0 1 thousand"), "a count of thousands opening with zero stays apart")
+  asked(ex("KLM55 descend 9000 after a period of ten minutes"), "'a period of' is no full stop")
+end
+
+-- Cycle 40 (d83a): a speed's digits said in groups after a speed word ("reduce to 2 5 0", "speed 2 40") are
+-- one speed of 100 to 399; an instruction of the same aircraft after one tied to a waypoint ("after SPY descend
+-- FL180 and slow to 290") is asked (wait for the waypoint too, or now?), never sent now
+do
+  local _, ex = scene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280" })
+  check_eq(ex("KLM55 reduce to 2 5 0"), "SPD KLM55 250")
+  check_eq(ex("KLM55 speed 2 40 comma descend 9000"), "SPD KLM55 240 ; ALT KLM55 9000")
+  check_eq(ex("KLM55 slow to 1 80 knots"), "SPD KLM55 180")
+  asked(ex("KLM55 reduce to 2 5"), "two digits are no speed")
+  asked(ex("KLM55 reduce speed 2 5 0 0"), "a digit after the three")
+  local nav, nex = navscene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280", "ADDWPT KLM55 SPY" },
+    "an instruction after one tied to a waypoint of the route")
+  if nav then
+    asked(nex("KLM55 after SPY descend FL120 and slow to 2 9 0"), "the speed after the waypoint's instruction")
+    check_eq(nex("KLM55 descend FL120 and after SPY slow to 2 9 0"), "ALT KLM55 FL120 ; AT KLM55 SPY DO SPD KLM55 290")
+  end
+end
+
+-- Cycle 40 (d83a): a decimal said with "point" ("52 point 4", "mach point 7 8", "0 point 5") is the number
+-- written, one or two digits after the point
+do
+  local _, ex = scene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280" })
+  check_eq(ex("move KLM55 to 52 point 4 comma 4 point 9"), "MOVE KLM55 52.4 4.9")
+  check_eq(ex("KLM55 mach point 7 8"), ex("KLM55 mach .78"))
+  check_eq(ex("set time step to 0 point 5 seconds"), "DT 0.5")
+  asked(ex("KLM55 mach point 7"), "one digit after 'mach point' is no Mach number")
+end
