@@ -7,9 +7,9 @@
 #include <filesystem>
 
 #include "command/stack.h"
-#include "failed_exec.h"
 #include "core/files.h"
 #include "core/units.h"
+#include "failed_exec.h"
 
 using namespace squawk;
 using namespace squawk::command;

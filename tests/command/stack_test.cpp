@@ -7,10 +7,10 @@
 
 #include "command/registry.h"
 #include "command/stack.h"
-#include "failed_exec.h"
 #include "core/files.h"
 #include "core/geo.h"
 #include "core/units.h"
+#include "failed_exec.h"
 
 using namespace squawk;
 using namespace squawk::command;
