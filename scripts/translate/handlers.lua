@@ -1691,9 +1691,15 @@ function m:leftovers(s)
     -- (the level left, "leaving FL260 for FL200", is no instruction: the one after it is)
     if q.kind == "alt" and not alt_done and self:level_left(q, qs[k + 1]) then self:take(q) end
     -- a level or speed with its unit, before the instruction word too ("klm1234 fl280 spd 300", "FIN3CA:
-    -- 9000ft, spd 220"; a height in feet after "below"/"above" bounds something else, no level to fly)
-    local feet = self:word(q.e - 1, "@feet") and not self:word(q.b - 1, "@below @above")
-    local unit = (q.kind == "alt" and (q.fl or feet)) or q.kind == "speed" or q.kind == "mach"
+    -- 9000ft, spd 220"; a level or height after "below"/"above" is a condition or a limit on something
+    -- else, no level to fly: left over, it is asked)
+    local bound = self:word(q.b - 1, "@below @above")
+    local feet = self:word(q.e - 1, "@feet")
+    local unit = (q.kind == "alt" and not bound and (q.fl or feet)) or q.kind == "speed" or q.kind == "mach"
+    if bound and q.kind == "alt" and (q.fl or feet) and q.b < s.trig and not self.taken[q.b] then
+      self:need(string.format("What does '%s' mean for %s: a level to fly, or one the instruction waits for or "
+        .. "keeps to?", self:raw(q.b - 1, q.e), ids[1]))
+    end
     -- in spoken order: one said before the instruction word goes before its command
     local emit = q.b < s.trig and function(line) table.insert(self.out, #self.out, line) end
       or function(line) self:emit(line) end
