@@ -885,8 +885,8 @@ return {
       near = { "at", "over", "published", "short", "fix", "inbound", "turns", "#waypoint" }, takes_time = true,
       not_before = "@sim" },
     { what = "holding patterns", words = "enter", near = { "hold", "holding" }, takes_time = true },
-    -- "KL204, hold": said to an aircraft, no pause of the simulation
-    { what = "holding patterns", words = "hold", after_callsign = true },
+    -- "KL204, hold": said to an aircraft, no pause of the simulation; what follows "then" waits for it
+    { what = "holding patterns", words = "hold", after_callsign = true, takes_time = true },
   },
   -- answers that decline a yes/no question ("delete 5 aircraft?")
   no = { "no", "negative", "nope", "don't", "dont", "stop" },
