@@ -4717,8 +4717,13 @@ function G:not_simulated()
       local said = self:raw(i, e)
       -- "make one orbit, then resume own navigation": what follows "then" waits for what is not flown
       local k = self:word(e, "and") and e + 1 or e
-      if class.takes_time and self:word(k, "then") then
-        after[#after + 1] = { at = k + 1, what = class.what, said = said }
+      -- ("hold for ten minutes, after that descend 9000": a word of sequence the phrase ran through is the same)
+      local later = self:word(k, "then") and k + 1
+      for x = i + 1, e - 1 do
+        if self:word(x, "afterwards thereafter") or (self:word(x, "after") and self:word(x + 1, "that")) then later = e end
+      end
+      if class.takes_time and later then
+        after[#after + 1] = { at = later, what = class.what, said = said }
       end
       self:mark_used(i, e)
       for k = i, e - 1 do self.noted[k] = true end
@@ -4734,7 +4739,7 @@ function G:not_simulated()
   if #found == 0 then return nil end
   for _, a in ipairs(after) do
     if self:any_instruction_in(a.at, #self.t + 1) then
-      self:need(string.format("squawk does not simulate %s ('%s'), and what follows 'then' waits for it: "
+      self:need(string.format("squawk does not simulate %s ('%s'), and what is said after it waits for it: "
         .. "please give that instruction when it applies.", a.what, (a.said:gsub(" ([,.;:])", "%1"):gsub(",$", ""))))
     end
   end
