@@ -443,6 +443,17 @@ return function(H, f, wrap, compass)
         end
       end
       if target_ft < 0 then return self:need("Which altitude for " .. id .. "? " .. alt .. " ft is below the ground.") end
+      -- ("descend FL300, rate of climb 2000": the motion a rate's words name, in the three words before it,
+      -- against the way to the level, is asked)
+      local cur = a and a.alt_ft
+      local way = cur and (target_ft > cur + 50 and 1 or target_ft < cur - 50 and -1 or 0) or dir
+      local rb = rate and math.max(s.b, rate.b - 3)
+      local named = rate and ((self:word_in(rb, rate.b, "descent descend descending") and -1 or 0)
+        + (self:word_in(rb, rate.b, "climb climbing") and 1 or 0))
+      if rate and named ~= 0 and way ~= 0 and named ~= way then
+        return self:need(string.format("%s: %s to %s at a rate of %s %s ft/min? Please confirm the rate.", id,
+          way < 0 and "descend" or "climb", alt, named < 0 and "descent" or "climb", f.int(math.abs(rate.value))))
+      end
       local cmd = "ALT " .. id .. " " .. alt
       if rate then cmd = cmd .. " " .. f.int(rate.value) end
       self:emit(cmd)
@@ -794,12 +805,29 @@ return function(H, f, wrap, compass)
     local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
     -- ("be at FL300 by LAPOS, rate 2500": no direction said, the way to the level given it before in the
-    -- request, a constraint's too)
+    -- request, a constraint's too; "FL300, rate of climb 2500" said to an aircraft above FL300 names the
+    -- other way: asked)
     local now, own = self:state(id), id:gsub("%p", "%%%0")
-    for _, c in ipairs(dir == 0 and now and self.out or {}) do
+    local levels = {}  -- feet
+    for _, c in ipairs(now and self.out or {}) do
       local fl = c:match("^ALT " .. own .. " FL(%d+)") or c:match("^AT " .. own .. " %S+ ALT FL(%d+)$")
-      local ft = fl and tonumber(fl) * 100
-      if ft and math.abs(ft - (now.alt_ft or 0)) > 50 then dir = ft > (now.alt_ft or 0) and 1 or -1 end
+      levels[#levels + 1] = fl and tonumber(fl) * 100
+    end
+    -- (a flight level said before the rate's word in its segment, "FL380 rate of descent 2000", is flown too)
+    for _, q in ipairs(now and self:quantities(s.b, v.b) or {}) do
+      if q.kind == "alt" and q.fl and q.b < s.trig and not self.taken[q.b] then levels[#levels + 1] = q.value end
+    end
+    for _, ft in ipairs(levels) do
+      local cur = now.alt_ft or 0
+      if math.abs(ft - cur) > 50 then
+        local way = ft > cur and 1 or -1
+        if dir ~= 0 and dir ~= way then
+          return self:need(string.format("%s is at %s ft, %s is %s it: %s at %s ft/min? Please confirm the rate.",
+            id, f.int(cur), f.alt(ft, true), way < 0 and "below" or "above", dir < 0 and "descend" or "climb",
+            f.int(math.abs(fpm))))
+        end
+        dir = way
+      end
     end
     -- a level said after the rate with "to" or "target" ("1200 fpm down to 13000", "VS 1000 up, target
     -- 14000"): the level the rate flies to, an ALT beside the VS; one on the other side of the aircraft's
