@@ -7058,3 +7058,35 @@ do
   check_eq(ex("set time step to 0 point 5 seconds"), "DT 0.5")
   asked(ex("KLM55 mach point 7"), "one digit after 'mach point' is no Mach number")
 end
+
+-- Cycle 40 (hzA): a level after "below" or "above" before the instruction word, with no verb of its own, is a
+-- condition or a limit, never a clearance: asked ("below FL90 spd 220"); a level with its verb is still flown
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.3 4.7 090 FL150 280" })
+  asked(ex("KLM12 below FL80 spd 210"), "a level after 'below' is no level to fly")
+  asked(ex("KLM12 above FL110 reduce speed 260"), "a level after 'above' is no level to fly")
+  asked(ex("KLM12 below 7000 ft speed 210"), "a height after 'below' is no level to fly")
+  check_eq(ex("KLM12 descend FL80 spd 210"), "ALT KLM12 FL80 ; SPD KLM12 210")
+  check_eq(ex("KLM12 reduce speed 210 below FL80"), "ATALT KLM12 FL80 SPD KLM12 210")
+end
+
+-- Cycle 40 (hzA): a hold said to an aircraft takes time: an instruction after it with "then", "after that" or
+-- "afterwards" waits for the hold squawk does not fly, so it is asked, never sent now
+do
+  local _, ex = scene({ "CRE KLM55 B738 52.3 4.7 090 FL150 280" })
+  asked(ex("KLM55 hold for a period of five minutes then climb FL170"), "after a hold of a period")
+  asked(ex("KLM55 hold for twenty minutes, after that turn left heading 040"), "'after that' waits too")
+  asked(ex("KLM55 hold for five minutes and then reduce speed 230"), "'and then' waits too")
+end
+
+-- Cycle 40 (hzA): a rate whose words name the other way than the level given ("FL300, rate of climb 2500" to an
+-- aircraft above FL300; "descend FL120, rate of climb 1500") is asked; a rate the same way is read
+do
+  local _, ex = scene({ "CRE AFR7312 A320 52.0 4.0 090 FL350 280" })
+  asked(ex("AFR7312 FL310, rate of climb 1800"), "a climb rate to a lower level")
+  asked(ex("AFR7312 FL390 rate of descent 1500"), "a descent rate to a higher level")
+  asked(ex("AFR7312 descend FL310 rate of climb 1800"), "ALT's rate named the other way")
+  check_eq(ex("AFR7312 FL310, rate of descent 1800"), "ALT AFR7312 FL310 ; VS AFR7312 -1800")
+  check_eq(ex("AFR7312 FL390, rate of climb 1500"), "ALT AFR7312 FL390 ; VS AFR7312 1500")
+  check_eq(ex("AFR7312 descend FL310 at 1800 feet per minute"), "ALT AFR7312 FL310 1800")
+end
