@@ -7058,3 +7058,26 @@ do
   check_eq(ex("set time step to 0 point 5 seconds"), "DT 0.5")
   asked(ex("KLM55 mach point 7"), "one digit after 'mach point' is no Mach number")
 end
+
+-- Cycle 40 (hzB): a clause between punctuation of known words closed by "off" or "on" ("lateral drift off")
+-- that nothing read is asked about by name, never dropped while the rest runs; a switch squawk reads ("lnav
+-- off") and a clause with an instruction in it stand
+do
+  local _, ex = scene({ "CRE QTR7 B77W 52.0 4.0 025 FL200 250" })
+  check_eq(ex("QTR7 lateral drift off, fly heading 040"), "ASK I have HDG QTR7 40. What does 'lateral drift off' mean?")
+  check_eq(ex("QTR7 turn left heading 300, autopilot on"), "ASK I have HDG QTR7 300 LEFT. What does 'autopilot on' mean?")
+  check_eq(ex("QTR7 lnav off, fly heading 040"), "LNAV QTR7 OFF ; HDG QTR7 40")
+  check_eq(ex("QTR7 fly heading 040, vnav on"), "HDG QTR7 40 ; VNAV QTR7 ON")
+  check_eq(ex("QTR7 turn heading 040, carry on"), "HDG QTR7 40 ; OP")
+end
+
+-- Cycle 40 (hzB): an instruction tied to a waypoint of the route that reads as a condition of its own ("I want
+-- it at FL250 and heading 200": ATALT ... HDG ...) is asked, never nested in AT ... DO
+do
+  local nav, nex = navscene({ "CRE AFR1234 A320 52.2 4.2 300 FL250 280", "ADDWPT AFR1234 GIROM" },
+    "a condition inside an instruction tied to a waypoint")
+  if nav then
+    asked(nex("when AFR1234 gets to GIROM I want it at FL250 and heading 200"), "a condition nested in AT ... DO")
+    check_eq(nex("when AFR1234 gets to GIROM turn heading 200"), "AT AFR1234 GIROM DO HDG AFR1234 200")
+  end
+end
