@@ -4871,8 +4871,9 @@ function G:direct_when_able()
 end
 
 -- A clause between punctuation that names something and switches it ("QTR7 lateral drift off, fly heading 040":
--- words, then "off" or "on" closing the clause, no callsign after it) with nothing of it read (no instruction word, no value, no word
--- used, explained or noted, the callsign aside) is an instruction squawk did not understand: it becomes the
+-- two words or more, then "off" or "on" closing the clause, no callsign after it; one word and the switch, "carry
+-- on", "level off", "hands off", is most often a phrase the commands carry) with nothing of it read (no instruction word, no value, no word
+-- used, explained or noted, none inside what the commands issued explain, the callsign aside) is an instruction squawk did not understand: it becomes the
 -- leftover asked about by name, never dropped in silence while the rest runs.
 function G:unread_switch()
   local callsign = {}
@@ -4880,20 +4881,22 @@ function G:unread_switch()
     if r.kind == "aircraft" then for i = r.b, r.e - 1 do callsign[i] = true end end
   end
   local explained = self.explained or {}
+  local inside = self:explained_spans(self:issued())
   local b = 1
   for k = 1, #self.t + 1 do
     local t = self.t[k]
     if not t or t.kind == "punct" then
-      local first, last, tail, read = nil, nil, nil, false
+      local first, last, tail, n, read = nil, nil, nil, 0, false
       for i = b, k - 1 do
         local x = self.t[i]
         if not x.filler then tail = i end
         if not callsign[i] then
-          read = read or x.kind ~= "word" or explained[i] or self.noted[i] or self.u:used(i) or self:intent_at(i)
-          if x.kind == "word" and not x.filler then first, last = first or i, i end
+          read = read or x.kind ~= "word" or explained[i] or inside[i] or self.noted[i] or self.u:used(i)
+            or self:intent_at(i)
+          if x.kind == "word" and not x.filler then first, last, n = first or i, i, n + 1 end
         end
       end
-      if not read and first and last > first and tail == last and self:word(last, "off on") then
+      if not read and n >= 3 and tail == last and self:word(last, "off on") then
         self.leftover = self:raw(first, last + 1)
         return
       end

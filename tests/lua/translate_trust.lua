@@ -7059,13 +7059,15 @@ do
   asked(ex("KLM55 mach point 7"), "one digit after 'mach point' is no Mach number")
 end
 
--- Cycle 40 (hzB): a clause between punctuation of known words closed by "off" or "on" ("lateral drift off")
--- that nothing read is asked about by name, never dropped while the rest runs; a switch squawk reads ("lnav
--- off") and a clause with an instruction in it stand
+-- Cycle 40 (hzB): a clause between punctuation of two known words or more closed by "off" or "on" ("lateral
+-- drift off") that nothing read is asked about by name, never dropped while the rest runs; one word and the
+-- switch ("level off"), a switch squawk reads ("lnav off") and a clause with an instruction in it stand
 do
   local _, ex = scene({ "CRE QTR7 B77W 52.0 4.0 025 FL200 250" })
   check_eq(ex("QTR7 lateral drift off, fly heading 040"), "ASK I have HDG QTR7 40. What does 'lateral drift off' mean?")
-  check_eq(ex("QTR7 turn left heading 300, autopilot on"), "ASK I have HDG QTR7 300 LEFT. What does 'autopilot on' mean?")
+  check_eq(ex("QTR7 turn left heading 300, cabin pressure warning off"),
+    "ASK I have HDG QTR7 300 LEFT. What does 'cabin pressure warning off' mean?")
+  check_eq(ex("QTR7 descend FL150, level off"), "ALT QTR7 FL150")
   check_eq(ex("QTR7 lnav off, fly heading 040"), "LNAV QTR7 OFF ; HDG QTR7 40")
   check_eq(ex("QTR7 fly heading 040, vnav on"), "HDG QTR7 40 ; VNAV QTR7 ON")
   check_eq(ex("QTR7 turn heading 040, carry on"), "HDG QTR7 40 ; OP")
