@@ -2017,15 +2017,26 @@ function G:off_route_question(id, wp)
     .. "now, or at a waypoint of the route? (ADDWPT %s %s adds it first.)", wp, id, id, wp)
 end
 
+-- The commands that wait for a condition before they run (BlueSky's conditional commands).
+local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELAY = true, SCHEDULE = true }
+
 -- The commands self.out[n0 + 1 ..] (each the aircraft `id`'s own, "CMD id ...") become BlueSky's
 -- "AT id WPT DO CMD id ...": they run when the aircraft passes waypoint `wp` of its route. A command of
--- another aircraft or of none is asked about, as is a waypoint off the route; true when done.
+-- another aircraft or of none is asked about, as is a waypoint off the route, and so is a command that is itself
+-- a condition ("I want it at FL250 and heading 200" read as ATALT ... HDG ...): a condition is never nested in
+-- another; true when done.
 function G:do_at(id, wp, n0)
   if not self:on_route(id, wp) then
     self.ask = self:off_route_question(id, wp)
     return false
   end
   for c = n0 + 1, #self.out do
+    local name = self.out[c]:match("^(%u+)")
+    if CONDITIONAL[name] then
+      self.ask = string.format("I have %s, a condition of its own, to run at %s, and squawk does not nest one "
+        .. "condition in another. What should %s do at %s?", self.out[c], wp, id, wp)
+      return false
+    end
     if self.out[c]:match("^%u+ (%S+)") ~= id then
       self.ask = string.format("I have %s. Which of these should happen at %s, and for which aircraft?",
         table.concat(self.out, " ; "), wp)
@@ -3838,7 +3849,6 @@ function G:purpose(k)
   local before = self:quantities(1, k)
   return #before > 0 and before[#before].e <= k and #self:quantities(k, e) == 0
 end
-local CONDITIONAL = { AT = true, ATALT = true, ATSPD = true, ATDIST = true, DELAY = true, SCHEDULE = true }
 
 -- The forms a word may be inflected from or to ("keeping" keep, "switched" switch, "pass" passing).
 local function inflections(w)
@@ -4865,6 +4875,41 @@ function G:direct_when_able()
   end
 end
 
+-- A clause between punctuation that names something and switches it ("QTR7 lateral drift off, fly heading 040":
+-- two words or more, then "off" or "on" closing the clause, no callsign after it; one word and the switch, "carry
+-- on", "level off", "hands off", is most often a phrase the commands carry) with nothing of it read (no instruction word, no value, no word
+-- used, explained or noted, none inside what the commands issued explain, the callsign aside) is an instruction squawk did not understand: it becomes the
+-- leftover asked about by name, never dropped in silence while the rest runs.
+function G:unread_switch()
+  local callsign = {}
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" then for i = r.b, r.e - 1 do callsign[i] = true end end
+  end
+  local explained = self.explained or {}
+  local inside = self:explained_spans(self:issued())
+  local b = 1
+  for k = 1, #self.t + 1 do
+    local t = self.t[k]
+    if not t or t.kind == "punct" then
+      local first, last, tail, n, read = nil, nil, nil, 0, false
+      for i = b, k - 1 do
+        local x = self.t[i]
+        if not x.filler then tail = i end
+        if not callsign[i] then
+          read = read or x.kind ~= "word" or explained[i] or inside[i] or self.noted[i] or self.u:used(i)
+            or self:intent_at(i)
+          if x.kind == "word" and not x.filler then first, last, n = first or i, i, n + 1 end
+        end
+      end
+      if not read and n >= 3 and tail == last and self:word(last, "off on") then
+        self.leftover = self:raw(first, last + 1)
+        return
+      end
+      b = k + 1
+    end
+  end
+end
+
 -- True when some unused word of the request (of tokens b..e-1) still starts an instruction.
 function G:any_instruction_in(b, e)
   for i = b, e - 1 do
@@ -5676,6 +5721,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end
   if not g.ask and not g.leftover then g:uncarried_names() end
+  if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and g.leftover then
     g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)

@@ -7090,3 +7090,28 @@ do
   check_eq(ex("AFR7312 FL390, rate of climb 1500"), "ALT AFR7312 FL390 ; VS AFR7312 1500")
   check_eq(ex("AFR7312 descend FL310 at 1800 feet per minute"), "ALT AFR7312 FL310 1800")
 end
+
+-- Cycle 40 (hzB): a clause between punctuation of two known words or more closed by "off" or "on" ("lateral
+-- drift off") that nothing read is asked about by name, never dropped while the rest runs; one word and the
+-- switch ("level off"), a switch squawk reads ("lnav off") and a clause with an instruction in it stand
+do
+  local _, ex = scene({ "CRE QTR7 B77W 52.0 4.0 025 FL200 250" })
+  check_eq(ex("QTR7 lateral drift off, fly heading 040"), "ASK I have HDG QTR7 40. What does 'lateral drift off' mean?")
+  check_eq(ex("QTR7 turn left heading 300, cabin pressure warning off"),
+    "ASK I have HDG QTR7 300 LEFT. What does 'cabin pressure warning off' mean?")
+  check_eq(ex("QTR7 descend FL150, level off"), "ALT QTR7 FL150")
+  check_eq(ex("QTR7 lnav off, fly heading 040"), "LNAV QTR7 OFF ; HDG QTR7 40")
+  check_eq(ex("QTR7 fly heading 040, vnav on"), "HDG QTR7 40 ; VNAV QTR7 ON")
+  check_eq(ex("QTR7 turn heading 040, carry on"), "HDG QTR7 40 ; OP")
+end
+
+-- Cycle 40 (hzB): an instruction tied to a waypoint of the route that reads as a condition of its own ("I want
+-- it at FL250 and heading 200": ATALT ... HDG ...) is asked, never nested in AT ... DO
+do
+  local nav, nex = navscene({ "CRE AFR1234 A320 52.2 4.2 300 FL250 280", "ADDWPT AFR1234 GIROM" },
+    "a condition inside an instruction tied to a waypoint")
+  if nav then
+    asked(nex("when AFR1234 gets to GIROM I want it at FL250 and heading 200"), "a condition nested in AT ... DO")
+    check_eq(nex("when AFR1234 gets to GIROM turn heading 200"), "AT AFR1234 GIROM DO HDG AFR1234 200")
+  end
+end
