@@ -1531,10 +1531,12 @@ end
 -- pause the sim": the instruction waits for a time, "DELAY s" after "in"/"after" (from now) or
 -- "SCHEDULE hh:mm:ss" after "at", "schedule" or the clock reaching it (simulation time); nil when no time is said
 -- or the instruction takes its time as a value (FF, DT, DTLOOK, DTMULT; CRECONFS's time to conflict) or its
--- text as typed after it ("echo exercise starts in 2 minutes": the time is ECHO's text).
+-- text as typed after it ("echo exercise starts in 2 minutes": the time is ECHO's text). A rate set by
+-- the simulation's speed ("in 300 seconds set the simulation speed to 2") is no fast-forward: its time
+-- after "in"/"after" waits as any instruction's does.
 local OWN_TIME = { ff = true, dt = true, dtlook = true, dtmult = true, creconfs = true }
 function m:at_time(s)
-  if OWN_TIME[s.intent] then return nil end
+  if OWN_TIME[s.intent] and not (s.intent == "ff" and self:word(s.trig, "speed spd airspeed")) then return nil end
   if s.intent == "echo" and s.trig == self:skip_fillers(1) and self:word(s.trig, "echo") then return nil end
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     local w = q.b - 1

@@ -2421,9 +2421,15 @@ return function(H, f, compass)
       end
     end
   end
+  -- (every aircraft said gets the place: "set YMML as the destination for JST614 and TGW202"; the place is
+  -- read from the first one's position)
   local function dest_orig(self, s, cmd, what)
-    local id = self:acid(s, "get it")
-    if not id then return end
+    local ids = self:acids(s)
+    if #ids == 0 then return self:need("Which aircraft should get it? Please give its callsign.") end
+    local id = ids[1]
+    local function each(rest)
+      for _, a in ipairs(ids) do self:emit(cmd .. " " .. a .. rest) end
+    end
     -- "Amsterdam as its origin and Heathrow as its destination": each place before its own word
     local b, as = nil, nil
     if s.b == s.trig then b, as = placed_as(self, s.trig) end
@@ -2483,16 +2489,16 @@ return function(H, f, compass)
       return self:need(string.format("Which should be the %s of %s: %s or %s?", what, id, w[#w].name, airport))
     end
     if airport then
-      self:emit(cmd .. " " .. id .. " " .. airport)
+      each(" " .. airport)
     elseif #w > 0 then
       local code = self:airport_meant(w[#w].name, self:state(id))
       name_beside_code(self, w[#w], code)
-      self:emit(cmd .. " " .. id .. " " .. code)
+      each(" " .. code)
     elseif lat and lon then
-      self:emit(cmd .. " " .. id .. " " .. f.num(lat) .. " " .. f.num(lon))
+      each(" " .. f.num(lat) .. " " .. f.num(lon))
     elseif (self:word_in(s.b, s.e, "what what's whats which where") or self:noun_asked(s.trig))
         and #self:quantities(s.b, s.e) == 0 then
-      self:emit(cmd .. " " .. id)  -- "what's the easyJet's destination?": shown
+      each("")  -- "what's the easyJet's destination?": shown
     else
       self:need("Which airport should be the " .. what .. " of " .. id .. "? Please give its ICAO code.")
     end

@@ -1579,8 +1579,10 @@ return function(intent, rule, words)
   rule { "return returns", "lnav", next = "to", when = function(g, i)
     return g:word(i + 2, "the its your his her") and g:word(i + 3, "route") and not g:has_ref(i + 4, #g.t + 1, "waypoint")
   end }
+  -- ("follow its route vertically", "... the altitudes of its route" is VNAV alone; VNAV named as a switch
+  -- beside it, "follow its route again with VNAV engaged", is one more instruction)
   rule { "follow", "lnav", next = "your its the", near = { 3, "route" },  -- "follow your route again"
-         not_near = { 6, "vertically vertical vnav profile altitude altitudes level levels" } }
+         not_near = { 6, "vertically vertical profile altitude altitudes level levels" } }
   rule { "run", "op", next = "again" }  -- "let it run again"
   rule { "run", "ff", next = "forward ahead" }  -- "run forward 45 seconds"
   rule { "run", "dtmult", near = { 4, "times x" } }

@@ -7115,3 +7115,44 @@ do
     check_eq(nex("when AFR1234 gets to GIROM turn heading 200"), "AT AFR1234 GIROM DO HDG AFR1234 200")
   end
 end
+
+-- Cycle 40 (hzC): a destination or origin said for several aircraft ("for KLM12 and EZY45") is set for each
+-- one named, never for the first alone
+do
+  local nav, nex = navscene({ "CRE KLM12 B738 52.0 4.0 090 FL200 250", "CRE EZY45 A320 52.2 4.4 180 FL150 240",
+    "CRE TRA6 B738 52.4 4.6 270 FL120 240" }, "a destination for several aircraft")
+  if nav then
+    check_eq(nex("Make EGLL the destination for KLM12 and EZY45"), "DEST KLM12 EGLL ; DEST EZY45 EGLL")
+    check_eq(nex("TRA6, EZY45 and KLM12 origin EHAM"), "ORIG TRA6 EHAM ; ORIG EZY45 EHAM ; ORIG KLM12 EHAM")
+    check_eq(nex("KLM12 destination EGLL, EZY45 descend FL100"), "DEST KLM12 EGLL ; ALT EZY45 FL100")
+  end
+end
+
+-- Cycle 40 (hzC): a time after "in"/"after" before the simulation's speed set ("in 90 seconds, set the simulation
+-- speed to 3") waits as any instruction's does: never a fast-forward of that time (the rate itself is asked)
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 250" })
+  asked(ex("In 90 seconds, set the simulation speed to 3"), "a delay before the simulation's speed")
+  asked(ex("set the sim speed to 4 after 2 minutes"), "a delay after the simulation's speed")
+  check_eq(ex("speed up the simulation for 5 minutes"), "FF 300")
+  check_eq(ex("fast forward 300 seconds"), "FF 300")
+end
+
+-- Cycle 40 (hzC): VNAV named as a switch beside "follow its route (again)" is one more instruction: the route is
+-- flown (LNAV) too; the route followed "vertically" or by its altitudes is VNAV alone
+do
+  local _, ex = scene({ "DEFWPT HZC1 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL200 250", "ADDWPT KLM12 HZC1" })
+  check_eq(ex("KLM12 should follow its route again with VNAV engaged"), "LNAV KLM12 ON ; VNAV KLM12 ON")
+  check_eq(ex("KLM12 follow the route again and engage VNAV"), "LNAV KLM12 ON ; VNAV KLM12 ON")
+  check_eq(ex("KLM12 should follow its route vertically"), "VNAV KLM12 ON")
+  check_eq(ex("KLM12 follow the altitudes of its route, vnav on"), "VNAV KLM12 ON")
+end
+
+-- Cycle 40 (hzC): an instruction whose value is named by what it is ("minimum clean speed", "max speed"), no
+-- number squawk can give, is asked, never dropped beside a report or another instruction
+do
+  local _, ex = scene({ "CRE EZY45 A320 52.2 4.4 180 FL150 240" })
+  asked(ex("EZY45 for spacing reduce to minimum clean speed, say altitude"), "a speed named by what it is")
+  asked(ex("EZY45 reduce to max speed, turn left heading 090"), "a speed named by what it is, beside a heading")
+  check_eq(ex("EZY45 reduce to minimum clean speed, 210 knots"), "SPD EZY45 210")
+end
