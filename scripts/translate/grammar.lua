@@ -2774,9 +2774,10 @@ function G:parse(b, e)
       -- A value instruction said without its value next to other, complete
       -- instructions is left out; it becomes the question only when nothing
       -- else was understood. One whose value is named by what it is ("reduce to minimum clean speed, say
-      -- speed") is asked all the same.
+      -- speed") is asked all the same (the words kept out of the lexicon's lists, so that one nothing read
+      -- elsewhere is still asked about by name).
       if self.ask and spec and spec.value and self:values_after_trigger(s) == 0 and not self:change_word(s.trig)
-          and not self:word_in(s.trig + 1, s.e, "@named_values") then
+          and not self:word_in(s.trig + 1, s.e, "minimum maximum min max best optimum optimal clean econ economy") then
         self.pending = self.pending or self.ask
         self.ask = nil
       elseif unheld and not self.ask then

@@ -683,8 +683,6 @@ return {
   -- verbs that end a movement: the direction after them is the one stopped, not the one flown (handlers:direction)
   halted = { "stop", "stops", "stopping", "cease", "halt", "discontinue", "terminate", "interrupt", "arrest" },
   on = { "on", "enable", "activate", "show", "start", "use", "engage", "engaged" },
-  -- a value named by what it is, no number squawk can give ("reduce to minimum clean speed", "best rate")
-  named_values = { "minimum", "maximum", "min", "max", "best", "optimum", "optimal", "clean", "econ", "economy" },
   -- a change of speed said by its direction alone ("go faster", "slow down")
   faster_slower = { "faster", "slower", "accelerate", "decelerate" },
   -- a runway, and the sides a runway's number is said with ("runway two seven left"): part of its name
