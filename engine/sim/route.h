@@ -43,7 +43,7 @@ struct Waypoint {
   // Command lines (TrafScript, one command each, as stored by AT acid wp DO)
   // that the command layer runs, in order, each time the aircraft passes this
   // waypoint (Simulation::passages()).
-  std::vector<std::string> commands;
+  std::vector<std::string> commands = {};
 
   bool has_alt() const { return alt == alt; }
   bool has_spd() const { return spd == spd; }
