@@ -10,7 +10,7 @@
 --     (B738 -> 737-800), A3FV -> A3F0-V00 (A332 -> A330-200), ATFV -> ATR F2-V00
 --     (AT76 -> ATR 72-600), DH8x -> Dash 8-x00 and Q x00, CRJn -> CRJ n00,
 --     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn, E75L/E75S -> E175, BCSn -> Airbus A220-n00,
---     SRnn -> Cirrus SRnn, PCnn -> Pilatus PC-nn;
+--     SRnn -> Cirrus SRnn, PCnn -> Pilatus PC-nn, F28/F50/F70/F100 -> Fokker nn;
 --   * a family ("737", "a330") is its base designator when one exists (B737,
 --     A320), else its first variant.
 -- M.build(designators) -> {types = {{maker, model, icao}, ...}, phrases = {{words, designator}, ...},
@@ -97,6 +97,8 @@ local function pattern_names(d)
   if c then out[#out + 1] = { "pilatus", "pc-" .. c } end
   c = d:match("^SF(%d%d)$")
   if c then out[#out + 1] = { "saab", c .. "0" } end
+  c = d:match("^F(%d+)$")  -- (Fokker's airliners: F28, F50, F70, F100; never a fighter's F16)
+  if c == "28" or c == "50" or c == "70" or c == "100" then out[#out + 1] = { "fokker", c } end
   if d == "B350" then out[#out + 1] = { "beechcraft", "king air 350" } end
   if d == "BE20" then out[#out + 1] = { "beechcraft", "king air 200" } end
   if d == "E75L" or d == "E75S" then out[#out + 1] = { "embraer", "e175" }; out[#out + 1] = { "embraer", "175" } end
