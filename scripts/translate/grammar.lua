@@ -1702,7 +1702,7 @@ end
 function G:intent_at(i)
   local texts = self.words
   local w = texts[i]
-  if not w or self.u:used(i) then return nil end
+  if not w or (self.u:used(i) and not (self.unheld or {})[i]) then return nil end
   local next_word = texts[i + 1]
   local said = self.said_sets or sets_said(self)
   local rules = RULES_BY_WORD[w]

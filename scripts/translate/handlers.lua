@@ -1160,8 +1160,23 @@ end
 --    heard one said again straight after itself, was a false start
 --    (r.false_start); the later one counts;
 --  * "KLM12 climb FL300, correction KLM21": a callsign after a correction
---    that ends the request replaces the one named before it.
+--    that ends the request replaces the one named before it;
+--  * "where is Serene eight four two": the words of a question about where
+--    an aircraft is (QUESTION_WORDS) said before a callsign the matcher heard
+--    with them are no part of it (its airline's name heard from them or not).
+local QUESTION_WORDS = { where = true, wheres = true, ["where's"] = true, is = true, what = true, whats = true,
+                         ["what's"] = true, show = true, me = true, tell = true }
 function m:settle_callsigns()
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" then
+      while r.e - r.b > 1 and self.t[r.b].kind == "word" and QUESTION_WORDS[self.t[r.b].text]
+          and not self:airline_at(r.b) do
+        self.unheld = self.unheld or {}  -- (tokens the matcher used that no reference holds now: G:intent_at)
+        self.unheld[r.b] = true
+        r.b = r.b + 1
+      end
+    end
+  end
   -- "Austrian 123, AUA123, an A320 ...", "Ryanair 1WT, that's RYR1WT": a callsign said and then written (or
   -- said again) as the same id, with punctuation, "that's" or "callsign" between, is one reference
   for k = #self.refs - 1, 1, -1 do

@@ -1489,6 +1489,20 @@ return function(intent, rule, words)
   end }
   -- "give me the position", "give me TEST01's and TEST02's positions"
   rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }
+  -- "THY2KP give me your speed", "give us your present level": the aircraft's own state asked for, no value
+  -- said straight after it (POS)
+  rule { "give", "pos", next = "me us", when = function(g, i)
+    local k = g:skip_fillers(i + 2)
+    if g:word(k, "your its the") then k = k + 1 end
+    if g:word(k, "@present") then k = k + 1 end
+    local nouns = 0
+    while g:word(k, "level altitude speed heading mach and / ,") do
+      if not g:word(k, "and / ,") then nouns = nouns + 1 end
+      k = k + 1
+    end
+    local q = g:quantities(i, #g.t + 1)[1]
+    return nouns > 0 and not (q and q.b <= k + 1)
+  end }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
