@@ -1041,6 +1041,11 @@ return function(intent, rule, words)
 
   -- route
   rule { "proceed", false, near = { 3, "heading" } }
+  -- "proceed to flight level 120", "proceed to FL80": a level proceeded to is a climb or descent to it
+  rule { "proceed", "alt", next = "to", when = function(g, i)
+    local q = g:quantities(i + 2, #g.t + 1)[1]
+    return q ~= nil and q.kind == "alt" and q.b == g:skip_fillers(i + 2)
+  end }
   rule { "direct directly dct dtc drct dir proceed direct-to", "direct" }  -- ("dtc": dct's letters swapped)
   rule { "straight", "direct", next = "to" }  -- "send IBE3141 straight to MITUM"
   -- "KAL123 to ENKAS go straight": the adverb closing the clause after "go", the place said after "to"
