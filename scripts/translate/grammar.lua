@@ -3236,7 +3236,14 @@ function G:at_waypoint(s, spec)
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
-  local opens = self:word(first, "at after") and self:skip_fillers(first + 1)
+  -- (the clause's opening words: "at", "after", "after/when/on/upon/once passing" or "leaving", "leave", "leaving")
+  local opens
+  if self:word(first, "at after leave leaving") then
+    opens = self:skip_fillers(first + 1)
+    if self:word(first, "after") and self:word(opens, "passing leaving") then opens = self:skip_fillers(opens + 1) end
+  elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), "passing leaving") then
+    opens = self:skip_fillers(self:skip_fillers(first + 1) + 1)
+  end
   if opens and #refs == 0 and opens < s.trig and s.trig < s.e and #self:quantities(opens, s.trig) == 0 then
     local ids = self:acids(s)
     local now = #ids == 1 and self:state(ids[1])
@@ -3262,11 +3269,25 @@ function G:at_waypoint(s, spec)
     -- FL250", "at NORKU cross FL200", "at ELDAR speed 250": a constraint at a waypoint
     -- ("cross LINSA FL120", "cross KERAB 5000 feet": "at" left out, a level or speed straight after the waypoint
     -- that ends the request; "cross MAXMO FL220, speed 280 knots", the speed now or there, is asked about)
+    -- ("cross BUK speed 250", "cross RABAN FL150 speed 250": the number after "speed" is the speed there)
     local after = self:skip_fillers(r.e)
     local next_q = self:word(r.b - 1, "cross crossing crosses") and self:quantities(after, s.e)[1]
+    local function speed_said(q)
+      return q.kind == "plain" and self:word(q.b - 1, "speed spd") and q.value >= 100 and q.value <= 400
+        and not q.number.decimal
+    end
+    local crossed_q = next_q
+    if next_q and next_q.kind == "alt" and next_q.b == after then
+      local q2 = self:quantities(next_q.e, s.e)[1]
+      if q2 and (q2.kind == "speed" or q2.kind == "mach" or speed_said(q2))
+          and self:skip_fillers(next_q.e) == (self:word(q2.b - 1, "speed spd") and q2.b - 1 or q2.b) then
+        crossed_q = q2
+      end
+    end
     local crossed = self:word(r.b - 1, "cross crossing crosses") and (self:word(after, "at")
-      or (next_q and next_q.b == after and (next_q.kind == "alt" or next_q.kind == "speed" or next_q.kind == "mach")
-        and ends_request(self, next_q.e)))
+      or (next_q and (next_q.b == after or (self:word(after, "speed spd") and next_q.b == self:skip_fillers(after + 1)))
+        and (next_q.kind == "alt" or next_q.kind == "speed" or next_q.kind == "mach" or speed_said(next_q))
+        and ends_request(self, crossed_q.e)))
     if self.t[after] and self.t[after].kind == "punct" then after = self:skip_fillers(after + 1) end
     local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
       and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")
@@ -3332,9 +3353,7 @@ function G:at_waypoint(s, spec)
     -- DO with the full command (G:do_at; a waypoint off the route is asked about, naming it). A value said
     -- with no verb ("at ELDAR speed 250", "at KOPOR FL80") stays the constraint there; so does a crossing.
     local cond_b
-    if r.b == opens and self:word(first, "at after") then
-      cond_b = first
-    elseif self:word(first, "after") and self:word(r.b - 1, "passing") and r.b - 1 == opens then
+    if r.b == opens then
       cond_b = first
     elseif self:word(r.b - 1, "at") and self:word(r.b - 2, "when once") and r.b - 2 == first then
       cond_b = first
@@ -3342,7 +3361,9 @@ function G:at_waypoint(s, spec)
       cond_b = self:find_word(math.max(s.b, r.b - 4), r.b, "when once")
     end
     -- ("after passing GOURA descend... correction, descend now to FL150": taken back, the instruction is now)
-    local verb = s.intent ~= "infer" and not self:word(s.trig, "@instruction_nouns")
+    -- ("leave NAGMA heading 200": "leave" is the verb, the heading flown from the waypoint on)
+    local verb = s.intent ~= "infer" and (not self:word(s.trig, "@instruction_nouns")
+        or (cond_b == first and self:word(first, "leave leaving") and s.intent == "hdg"))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
     if cond_b and verb and s.trig > r.e - 1 and not (crossed or constrained or be_at or shown or level_by or clause_at)
         and spec and spec.handler and #self:acids(s) == 1 then
@@ -3380,12 +3401,14 @@ function G:at_waypoint(s, spec)
         -- (so is one after a climb or descent: "at MIRSI descend 4000", as the climb or descent alone reads it)
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)
             or ((crossed or s.intent == "alt") and q.kind == "plain" and q.value >= 1000 and q.value <= 60000
-              and q.value % 100 == 0)) then
+              and q.value % 100 == 0 and not self:word(q.b - 1, "speed spd"))) then
           alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
             -- ("at CWRLD reduce speed to 190": the number after "speed" or "speed to")
             or (q.kind == "plain" and s.intent == "spd" and (self:word(q.b - 1, "speed spd")
               or (self:word(q.b - 1, "to") and self:word(q.b - 2, "speed spd"))))
+            -- ("cross BUK speed 250": in a crossing, a whole number of knots, 100 to 400, after "speed")
+            or (crossed and speed_said(q))
             -- ("at MIRSI reduce 210": a bare number of knots straight after a speed verb)
             or (q.kind == "plain" and s.intent == "spd" and q.value >= 100 and q.value <= 400 and not q.number.decimal
               and (q.b == self:skip_fillers(s.trig + 1) or (self:word(q.b - 1, "to") and q.b - 1 == self:skip_fillers(s.trig + 1))))
@@ -3394,15 +3417,14 @@ function G:at_waypoint(s, spec)
           spd = q
         else other = true end
       end
-      -- "cross DIK at FL110, speed 250 knots": a speed said with no verb after the crossing's level and a comma
-      -- (or "and") is the crossing's or one for now: asked, never flown at once
+      -- "cross DIK at FL110, speed 250 knots", "cross DIK at FL110 speed 250": a speed said with no verb after the
+      -- crossing's level, in a clause of its own, is the crossing's or one for now: asked, never flown at once
       local j = s.e
       while self.t[j] and (self.t[j].filler or self:word(j, "and") or (self.t[j].kind == "punct" and self.t[j].text == ",")) do
         j = j + 1
       end
-      local comma = j > s.e or (self.t[s.e - 1] and (self.t[s.e - 1].text == "," or self:word(s.e - 1, "and")))
       local next_spd = self:word(j, "speed") and self:quantities(j, #self.t + 1)[1]
-      if crossed and in_route and alt and not spd and comma and next_spd and (next_spd.kind == "speed"
+      if crossed and in_route and alt and not spd and next_spd and (next_spd.kind == "speed"
           or next_spd.kind == "plain") and next_spd.b == self:skip_fillers(j + 1) then
         return self:need(string.format("Is '%s' to be met at %s with the level, or flown now? Please say "
           .. "\"cross %s at %s and %s knots\" or give the speed on its own.", self:raw(j, next_spd.e), r.name, r.name,
@@ -3439,7 +3461,8 @@ function G:at_waypoint(s, spec)
       end
     end
     if (self:word(r.b - 1, "at cross crossing over abeam overhead") or r.b == opens) and not self:in_reason(r.b) then
-      return tied_to_waypoint(self, r, r.b == opens and self.t[first].text or "at")
+      return tied_to_waypoint(self, r, r.b == opens and (self:word(first, "at after") and self.t[first].text
+        or "after passing") or "at")
     end
   end
 end

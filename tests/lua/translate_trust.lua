@@ -6881,13 +6881,14 @@ do
 end
 
 -- Cycle 40 (d81): a crossing's value said with its noun after "at" ("cross FIX at speed 250 knots") is the
--- constraint; a plain number after the noun is still asked
+-- constraint; so is a plain number of knots after the noun (Cycle 41, d87), one no speed is still asked
 do
   local _, ex = scene({ "CRE CES771 A320 31.0 121.0 090 FL250 280", "ADDWPT CES771 52.0 4.0", "DEFWPT DUMIX 31.2 121.8",
       "ADDWPT CES771 DUMIX" })
   check_eq(ex("CES771 cross DUMIX at speed 250 knots"), "AT CES771 DUMIX SPD 250")
   check_eq(ex("CES771 cross DUMIX at speed 250 knots, descend FL200"), "AT CES771 DUMIX SPD 250 ; ALT CES771 FL200")
-  asked(ex("CES771 cross DUMIX at speed 250"), "a plain number after the noun")
+  check_eq(ex("CES771 cross DUMIX at speed 250"), "AT CES771 DUMIX SPD 250")
+  asked(ex("CES771 cross DUMIX at speed 25"), "a plain number after the noun that is no speed")
 end
 
 -- Cycle 40 (d81): "cancel your route" deletes the route (DELRTE); a waypoint named with it, a negation, or route
@@ -7155,4 +7156,67 @@ do
   asked(ex("EZY45 for spacing reduce to minimum clean speed, say altitude"), "a speed named by what it is")
   asked(ex("EZY45 reduce to max speed, turn left heading 090"), "a speed named by what it is, beside a heading")
   check_eq(ex("EZY45 reduce to minimum clean speed, 210 knots"), "SPD EZY45 210")
+end
+
+-- Cycle 41 (d87): a condition of passing a waypoint opening the clause ("when passing FIX", "on passing FIX",
+-- "after leaving FIX", "leave FIX heading 200") starts the instruction said after it there (AT ... DO); a value
+-- with no verb after "leave FIX" other than a heading is asked, as is a waypoint off the route
+do
+  local _, ex = scene({ "DEFWPT DQA 41.2 29.2", "DEFWPT DQB 41.4 29.4", "DEFWPT DQC 41.6 29.6",
+    "CRE TKZ31 A321 41.0 29.0 045 FL180 280", "ADDWPT TKZ31 DQA", "ADDWPT TKZ31 DQB" })
+  check_eq(ex("TKZ31 leave DQA heading 090"), "AT TKZ31 DQA DO HDG TKZ31 90")
+  check_eq(ex("TKZ31 leaving DQB turn right heading 120"), "AT TKZ31 DQB DO HDG TKZ31 120 RIGHT")
+  check_eq(ex("TKZ31 when passing DQA descend flight level 150"), "AT TKZ31 DQA DO ALT TKZ31 FL150")
+  check_eq(ex("TKZ31 on passing DQB reduce speed 240 knots"), "AT TKZ31 DQB DO SPD TKZ31 240")
+  check_eq(ex("TKZ31 after leaving DQA climb FL200"), "AT TKZ31 DQA DO ALT TKZ31 FL200")
+  asked(ex("TKZ31 leave DQA flight level 150"), "a level with no verb after 'leave FIX'")
+  asked(ex("TKZ31 when passing DQC descend FL150"), "a waypoint off the route")
+  check_eq(ex("TKZ31 leaving FL170 turn left heading 300"), "ATALT TKZ31 FL170 HDG TKZ31 300 LEFT")
+end
+
+-- Cycle 41 (d87): a crossing with "at" left out and the speed said with its noun ("cross FIX speed 250",
+-- "cross FIX FL150 speed 250") is the constraint there; a number after "speed" that is no speed is asked, never
+-- a level; a speed after "cross FIX at FL150" with no verb of its own is asked (there or now)
+do
+  local _, ex = scene({ "DEFWPT DQA 41.2 29.2", "CRE TKZ31 A321 41.0 29.0 045 FL180 280", "ADDWPT TKZ31 DQA" })
+  check_eq(ex("TKZ31 cross DQA speed 260"), "AT TKZ31 DQA SPD 260")
+  check_eq(ex("TKZ31 cross DQA speed two four zero knots"), "AT TKZ31 DQA SPD 240")
+  check_eq(ex("TKZ31 cross DQA flight level 160 speed 240"), "AT TKZ31 DQA ALT FL160 ; AT TKZ31 DQA SPD 240")
+  asked(ex("TKZ31 cross DQA speed 24"), "a number after 'speed' that is no speed")
+  asked(ex("TKZ31 cross DQA at speed 3000"), "a number after 'speed' that is no speed, never a level")
+  asked(ex("TKZ31 cross DQA at FL160 speed 240"), "a speed after the crossing's level, there or now")
+  asked(ex("TKZ31 cross DQA FL160, speed 240"), "a speed after a comma")
+end
+
+-- Cycle 41 (d87): "proceed to" a level is a climb or descent to it; "proceed to" a waypoint stays the direct-to
+do
+  local _, ex = scene({ "DEFWPT DQA 41.2 29.2", "DEFWPT DQB 41.4 29.4", "CRE TKZ31 A321 41.0 29.0 045 FL180 280",
+    "ADDWPT TKZ31 DQA", "ADDWPT TKZ31 DQB" })
+  check_eq(ex("TKZ31 proceed to flight level 210"), "ALT TKZ31 FL210")
+  check_eq(ex("TKZ31 after DQA proceed to FL140"), "AT TKZ31 DQA DO ALT TKZ31 FL140")
+  check_eq(ex("TKZ31 proceed to DQB"), "DIRECT TKZ31 DQB")
+  asked(ex("TKZ31 proceed to"), "nothing proceeded to")
+end
+
+-- Cycle 41 (d87): Fokker's airliners (F28, F50, F70, F100) are types by their maker's name ("the Fokker",
+-- "the Fokker 100"); a Fokker type none flies is asked
+do
+  local _, ex = scene({ "CRE KFK20 F100 35.6 50.9 090 FL090 240", "CRE IRZ40 A320 35.1 51.0 030 FL200 290" })
+  check_eq(ex("the Fokker descend flight level 70"), "ALT KFK20 FL70")
+  check_eq(ex("the Fokker 100 turn left heading 200"), "HDG KFK20 200 LEFT")
+  asked(ex("the Fokker 70 descend FL80"), "no Fokker 70 flies")
+end
+
+-- Cycle 41 (d87): a question of where an aircraft is, said before a callsign whose airline squawk does not
+-- know by name ("where is Serene eight four two"), is its position (POS); "give me your speed" asks for the
+-- aircraft's state; a callsign no aircraft has is still asked
+do
+  local _, ex = scene({ "CRE SEP842 B738 31.9 74.7 230 FL170 280", "CRE PIA305 A320 32.0 74.0 170 FL130 260" })
+  check_eq(ex("where is Serene eight four two"), "POS SEP842")
+  check_eq(ex("show me Serene eight four two"), "POS SEP842")
+  check_eq(ex("tell me where Serene eight four two is"), "POS SEP842")
+  check_eq(ex("SEP842 give me your speed"), "POS SEP842")
+  check_eq(ex("PIA305 give me your present level and heading"), "POS PIA305")
+  check_eq(ex("SEP842 give me speed 250"), "SPD SEP842 250")
+  asked(ex("where is Serene four four two"), "no such flight number flies")
 end
