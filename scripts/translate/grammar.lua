@@ -3236,9 +3236,10 @@ function G:at_waypoint(s, spec)
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
-  -- (the clause's opening words: "at", "after", "after/when/on/upon/once passing" or "leaving", "leave", "leaving")
+  -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing" or
+  -- "leaving", "passing", "leave", "leaving")
   local opens
-  if self:word(first, "at after leave leaving") then
+  if self:word(first, "at over overhead after passing leave leaving") then
     opens = self:skip_fillers(first + 1)
     if self:word(first, "after") and self:word(opens, "passing leaving") then opens = self:skip_fillers(opens + 1) end
   elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), "passing leaving") then
@@ -3362,8 +3363,11 @@ function G:at_waypoint(s, spec)
     end
     -- ("after passing GOURA descend... correction, descend now to FL150": taken back, the instruction is now)
     -- ("leave NAGMA heading 200": "leave" is the verb, the heading flown from the waypoint on)
+    -- ("passing VURAL descending FL100", no "when" or "after": a pilot's report, no instruction)
     local verb = s.intent ~= "infer" and (not self:word(s.trig, "@instruction_nouns")
         or (cond_b == first and self:word(first, "leave leaving") and s.intent == "hdg"))
+      and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
+        and not self:word(s.trig, "@instruction_nouns"))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
     if cond_b and verb and s.trig > r.e - 1 and not (crossed or constrained or be_at or shown or level_by or clause_at)
         and spec and spec.handler and #self:acids(s) == 1 then
@@ -3461,8 +3465,8 @@ function G:at_waypoint(s, spec)
       end
     end
     if (self:word(r.b - 1, "at cross crossing over abeam overhead") or r.b == opens) and not self:in_reason(r.b) then
-      return tied_to_waypoint(self, r, r.b == opens and (self:word(first, "at after") and self.t[first].text
-        or "after passing") or "at")
+      return tied_to_waypoint(self, r, r.b == opens and (self:word(first, "after") and "after"
+        or not self:word(first, "at over overhead") and "after passing") or "at")
     end
   end
 end

@@ -7172,6 +7172,15 @@ do
   asked(ex("TKZ31 leave DQA flight level 150"), "a level with no verb after 'leave FIX'")
   asked(ex("TKZ31 when passing DQC descend FL150"), "a waypoint off the route")
   check_eq(ex("TKZ31 leaving FL170 turn left heading 300"), "ATALT TKZ31 FL170 HDG TKZ31 300 LEFT")
+  -- ("passing FIX" and "over"/"overhead FIX" open the clause as "at FIX" does; a verb in -ing after a bare
+  -- "passing" is a pilot's report, asked; "abeam FIX" is no passing of it)
+  check_eq(ex("TKZ31 passing DQB descend FL140"), "AT TKZ31 DQB DO ALT TKZ31 FL140")
+  check_eq(ex("TKZ31 overhead DQA turn left heading 330"), "AT TKZ31 DQA DO HDG TKZ31 330 LEFT")
+  check_eq(ex("TKZ31 over DQB reduce speed 230"), "AT TKZ31 DQB DO SPD TKZ31 230")
+  check_eq(ex("TKZ31 leaving DQB heading 250"), "AT TKZ31 DQB DO HDG TKZ31 250")
+  asked(ex("TKZ31 passing DQB descending FL140"), "a pilot's report of passing a waypoint")
+  asked(ex("TKZ31 over DQB FL140"), "a level with no verb after 'over FIX'")
+  asked(ex("TKZ31 abeam DQB descend FL140"), "abeam a waypoint")
 end
 
 -- Cycle 41 (d87): a crossing with "at" left out and the speed said with its noun ("cross FIX speed 250",
