@@ -3285,10 +3285,15 @@ function G:at_waypoint(s, spec)
         crossed_q = q2
       end
     end
+    -- (a bound after it, "cross RABAN FL150 or above", is one more word of the constraint: confirmed below)
+    local last = crossed_q and crossed_q.e
+    if last and self:word(last, "or") and self:word(last + 1, "above below higher lower less greater more") then
+      last = last + 2
+    end
     local crossed = self:word(r.b - 1, "cross crossing crosses") and (self:word(after, "at")
       or (next_q and (next_q.b == after or (self:word(after, "speed spd") and next_q.b == self:skip_fillers(after + 1)))
         and (next_q.kind == "alt" or next_q.kind == "speed" or next_q.kind == "mach" or speed_said(next_q))
-        and ends_request(self, crossed_q.e)))
+        and ends_request(self, last)))
     if self.t[after] and self.t[after].kind == "punct" then after = self:skip_fillers(after + 1) end
     local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
       and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")

@@ -7195,6 +7195,9 @@ do
   asked(ex("TKZ31 cross DQA at speed 3000"), "a number after 'speed' that is no speed, never a level")
   asked(ex("TKZ31 cross DQA at FL160 speed 240"), "a speed after the crossing's level, there or now")
   asked(ex("TKZ31 cross DQA FL160, speed 240"), "a speed after a comma")
+  -- (a bound after the value, "or above", "or less": the exact constraint is confirmed first)
+  check(ex("TKZ31 cross DQA flight level 160 or above"):find("exactly FL160", 1, true) ~= nil, "a level's bound")
+  check(ex("TKZ31 cross DQA speed 240 knots or less"):find("exactly 240 knots", 1, true) ~= nil, "a speed's bound")
 end
 
 -- Cycle 41 (d87): "proceed to" a level is a climb or descent to it; "proceed to" a waypoint stays the direct-to
