@@ -3236,13 +3236,14 @@ function G:at_waypoint(s, spec)
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
-  -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing" or
-  -- "leaving", "passing", "leave", "leaving")
+  -- (the clause's opening words: "at", "over", "overhead", "after", "after/when/on/upon/once passing",
+  -- "leaving", "overflying", "reaching", "past" or "over", "passing", "leave", "leaving")
   local opens
+  local passed = "passing leaving overflying reaching past over"
   if self:word(first, "at over overhead after passing leave leaving") then
     opens = self:skip_fillers(first + 1)
-    if self:word(first, "after") and self:word(opens, "passing leaving") then opens = self:skip_fillers(opens + 1) end
-  elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), "passing leaving") then
+    if self:word(first, "after") and self:word(opens, passed) then opens = self:skip_fillers(opens + 1) end
+  elseif self:word(first, "when on upon once") and self:word(self:skip_fillers(first + 1), passed) then
     opens = self:skip_fillers(self:skip_fillers(first + 1) + 1)
   end
   if opens and #refs == 0 and opens < s.trig and s.trig < s.e and #self:quantities(opens, s.trig) == 0 then

@@ -7181,6 +7181,10 @@ do
   asked(ex("TKZ31 passing DQB descending FL140"), "a pilot's report of passing a waypoint")
   asked(ex("TKZ31 over DQB FL140"), "a level with no verb after 'over FIX'")
   asked(ex("TKZ31 abeam DQB descend FL140"), "abeam a waypoint")
+  check_eq(ex("TKZ31 after overflying DQA climb FL220"), "AT TKZ31 DQA DO ALT TKZ31 FL220")
+  check_eq(ex("TKZ31 on reaching DQB reduce speed 220"), "AT TKZ31 DQB DO SPD TKZ31 220")
+  check_eq(ex("TKZ31 once past DQA turn right heading 070"), "AT TKZ31 DQA DO HDG TKZ31 70 RIGHT")
+  asked(ex("TKZ31 when reaching DQB FL140"), "a level with no verb after 'when reaching FIX'")
 end
 
 -- Cycle 41 (d87): a crossing with "at" left out and the speed said with its noun ("cross FIX speed 250",
