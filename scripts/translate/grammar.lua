@@ -3360,7 +3360,10 @@ function G:at_waypoint(s, spec)
     -- DO with the full command (G:do_at; a waypoint off the route is asked about, naming it). A value said
     -- with no verb ("at ELDAR speed 250", "at KOPOR FL80") stays the constraint there; so does a crossing.
     local cond_b
-    if r.b == opens then
+    -- ("leave NAGMA heading 200": after "leave" or "leaving" only a heading said straight after the waypoint is
+    -- flown from it; "leave FDO, fly heading 290" leaves the routing to it now)
+    local opened = r.b == opens and not (self:word(first, "leave leaving") and not self:word(r.e, "heading hdg"))
+    if opened then
       cond_b = first
     elseif self:word(r.b - 1, "at") and self:word(r.b - 2, "when once") and r.b - 2 == first then
       cond_b = first
@@ -3371,7 +3374,7 @@ function G:at_waypoint(s, spec)
     -- ("leave NAGMA heading 200": "leave" is the verb, the heading flown from the waypoint on)
     -- ("passing VURAL descending FL100", no "when" or "after": a pilot's report, no instruction)
     local verb = s.intent ~= "infer" and (not self:word(s.trig, "@instruction_nouns")
-        or (cond_b == first and self:word(first, "leave leaving") and s.intent == "hdg"))
+        or (opened and self:word(first, "leave leaving")))
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
@@ -3470,8 +3473,8 @@ function G:at_waypoint(s, spec)
         return true
       end
     end
-    if (self:word(r.b - 1, "at cross crossing over abeam overhead") or r.b == opens) and not self:in_reason(r.b) then
-      return tied_to_waypoint(self, r, r.b == opens and (self:word(first, "after") and "after"
+    if (self:word(r.b - 1, "at cross crossing over abeam overhead") or opened) and not self:in_reason(r.b) then
+      return tied_to_waypoint(self, r, opened and (self:word(first, "after") and "after"
         or not self:word(first, "at over overhead") and "after passing") or "at")
     end
   end

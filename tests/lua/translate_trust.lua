@@ -7165,7 +7165,9 @@ do
   local _, ex = scene({ "DEFWPT DQA 41.2 29.2", "DEFWPT DQB 41.4 29.4", "DEFWPT DQC 41.6 29.6",
     "CRE TKZ31 A321 41.0 29.0 045 FL180 280", "ADDWPT TKZ31 DQA", "ADDWPT TKZ31 DQB" })
   check_eq(ex("TKZ31 leave DQA heading 090"), "AT TKZ31 DQA DO HDG TKZ31 90")
-  check_eq(ex("TKZ31 leaving DQB turn right heading 120"), "AT TKZ31 DQB DO HDG TKZ31 120 RIGHT")
+  -- (after "leave FIX" only a heading straight after it waits; "leave FIX, fly heading" may be now: asked)
+  asked(ex("TKZ31 leave DQB, fly heading 120"), "a heading after 'leave FIX' and a comma")
+  asked(ex("TKZ31 leaving DQB turn right heading 120"), "a turn after 'leaving FIX'")
   check_eq(ex("TKZ31 when passing DQA descend flight level 150"), "AT TKZ31 DQA DO ALT TKZ31 FL150")
   check_eq(ex("TKZ31 on passing DQB reduce speed 240 knots"), "AT TKZ31 DQB DO SPD TKZ31 240")
   check_eq(ex("TKZ31 after leaving DQA climb FL200"), "AT TKZ31 DQA DO ALT TKZ31 FL200")
