@@ -3327,16 +3327,16 @@ function G:at_waypoint(s, spec)
     local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
       and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
     -- "at DILOP descend flight level 80", "after NERDU descend FL70", "after passing MOSET descend FL180",
-    -- "when at GIVMI descend FL220", "when it is at RIGNO, reduce to 210 knots": an instruction said with its
-    -- verb, after a clause opening with the waypoint, starts when the aircraft passes it: BlueSky's AT acid wp
-    -- DO with the full command (G:do_at; a waypoint off the route is asked about, naming it). A value said
-    -- with no verb ("at ELDAR speed 250", "at KOPOR FL80") stays the constraint there; so does a crossing.
+    -- "when at GIVMI descend FL220", "once past GIVMI, descend FL220", "when it is at RIGNO, reduce to 210
+    -- knots": an instruction said with its verb, after a clause opening with the waypoint, starts when the
+    -- aircraft passes it: BlueSky's AT acid wp DO with the full command (G:do_at; a waypoint off the route
+    -- is asked about, naming it). A value said with no verb ("at ELDAR speed 250", "at KOPOR FL80") stays the constraint there; so does a crossing.
     local cond_b
     if r.b == opens and self:word(first, "at after") then
       cond_b = first
     elseif self:word(first, "after") and self:word(r.b - 1, "passing") and r.b - 1 == opens then
       cond_b = first
-    elseif self:word(r.b - 1, "at") and self:word(r.b - 2, "when once") and r.b - 2 == first then
+    elseif self:word(r.b - 1, "at past") and self:word(r.b - 2, "when once") and r.b - 2 == first then
       cond_b = first
     elseif opening then
       cond_b = self:find_word(math.max(s.b, r.b - 4), r.b, "when once")

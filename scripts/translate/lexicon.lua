@@ -258,6 +258,8 @@ return {
         -- verbs that go with an instruction's direction or place: informal ones ("bump the speed up", "crank
         -- the look-ahead up") and those of staying and going ("stay on 250 knots", "returning to Orly")
         "bump", "crank", "push", "knock", "dial", "stay", "remain", "return", "sit", "head", "hand",
+        -- verbs that open the move an instruction names ("begin its descent to FL200", "commence descent")
+        "begin", "begins", "commence", "commences", "initiate", "initiates",
         -- legs of an approach a vector is for ("vectors for base"), and alerts
         "base", "downwind", "final", "spacing", "sequencing", "alert",
         -- controllers' written abbreviations of instruction words

@@ -7156,3 +7156,20 @@ do
   asked(ex("EZY45 reduce to max speed, turn left heading 090"), "a speed named by what it is, beside a heading")
   check_eq(ex("EZY45 reduce to minimum clean speed, 210 knots"), "SPD EZY45 210")
 end
+
+-- Cycle 41 (resid2): a verb after "is to", "should" or "have X" ("At FIX, X is to slow down to 220 knots", "should
+-- begin its descent") and a condition "once past FIX" make the instruction start at the waypoint (AT ... DO);
+-- "is slow" said of an aircraft stays a description, and a value with no verb stays the constraint
+do
+  local _, ex = scene({ "DEFWPT RSA 52.5 4.5", "DEFWPT RSB 52.8 4.8", "CRE KLM12 B738 52.0 4.0 090 FL200 250",
+    "ADDWPT KLM12 RSA", "ADDWPT KLM12 RSB" })
+  check_eq(ex("At RSA, KLM12 is to slow down to 230 knots."), "AT KLM12 RSA DO SPD KLM12 230")
+  check_eq(ex("KLM12 is to slow to 230 knots"), "SPD KLM12 230")
+  check_eq(ex("At RSB KLM12 should commence its descent to FL120"), "AT KLM12 RSB DO ALT KLM12 FL120")
+  check_eq(ex("KLM12 begin descent to FL150"), "ALT KLM12 FL150")
+  check_eq(ex("Once past RSA, have KLM12 slow to 210 knots"), "AT KLM12 RSA DO SPD KLM12 210")
+  check_eq(ex("KLM12 when past RSB descend FL100"), "AT KLM12 RSB DO ALT KLM12 FL100")
+  check_eq(ex("at RSA KLM12 FL180"), "AT KLM12 RSA ALT FL180")
+  asked(ex("KLM12 is a bit slow"), "a description, no instruction")
+  asked(ex("Once past RSA, KLM12 FL180"), "a value with no verb after 'once past'")
+end
