@@ -2488,7 +2488,21 @@ function G:question_back()
       local ce = phrase_end(i, qb.confirm)
       if ce then
         local e = clause_end(ce)
-        if #self:quantities(ce, e) > 0 or #self:refs_in(ce, e, "waypoint") > 0 then
+        -- ("confirm heading 180? Fly heading 180": the question asked, then the instruction given with its verb
+        -- and its own value, which is read; the question itself is no instruction)
+        local asked_q = self.t[e] and self.t[e].text == "?"
+        local answered = asked_q and self:any_instruction_in(e + 1, #self.t + 1)
+          and #self:quantities(e + 1, #self.t + 1) > 0
+        -- ("confirm level 290? Maintain": a bare "maintain" after a level asked about keeps that level)
+        local qs = self:quantities(ce, e)
+        local m = self:skip_fillers(e + 1)
+        local kept = asked_q and #qs == 1 and qs[1].kind == "alt" and self:word(m, "maintain")
+        for k = m + 1, #self.t do kept = kept and self.t[k].kind == "punct" end
+        if answered then
+          self:set_aside(i, e)
+        elseif kept then
+          self:set_aside(i, qs[1].b - 1)
+        elseif #self:quantities(ce, e) > 0 or #self:refs_in(ce, e, "waypoint") > 0 then
           return self:need(string.format("'%s' asks whether a clearance stands: it is a question, no "
             .. "instruction. Please give the instruction itself.", said(i, e)))
         end

@@ -7173,3 +7173,16 @@ do
   asked(ex("KLM12 is a bit slow"), "a description, no instruction")
   asked(ex("Once past RSA, KLM12 FL180"), "a value with no verb after 'once past'")
 end
+
+-- Cycle 41 (resid2): a confirmation question followed by the instruction itself ("confirm heading 180? Fly
+-- heading 180") reads the instruction; "confirm level 290? Maintain" keeps the level asked about; the question
+-- alone, or followed by what is no instruction with its value, is still asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL290 250", "CRE AFR77 A320 52.2 4.2 180 FL250 260" })
+  check_eq(ex("KLM12, confirm heading 090? Turn right heading 120"), "HDG KLM12 120 RIGHT")
+  check_eq(ex("AFR77 confirm you are descending to FL230? Descend FL230"), "ALT AFR77 FL230")
+  check_eq(ex("KLM12 confirm level 290? Maintain."), "ALT KLM12 FL290")
+  asked(ex("KLM12, confirm level 290?"), "the question alone")
+  asked(ex("KLM12, confirm level 290? Maintain speed"), "a bare 'maintain' with more after it")
+  asked(ex("AFR77 confirm speed 260? Maintain"), "'maintain' after a speed asked about")
+end
