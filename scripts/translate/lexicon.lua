@@ -849,6 +849,11 @@ return {
     -- may be named before its clock position: "traffic, an Emirates 777, at your two o'clock")
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" }, window = 9,
       to_end = true },
+    -- ("descend FL320, traffic opposite direction FL340", "maintain FL370, traffic crossing left to right, a
+    -- Volotea at FL350": after an instruction, traffic told by the way it flies; its level is the other aircraft's)
+    { what = "traffic information", words = "traffic", window = 2, after_instruction = true, to_end = true,
+      near = { "opposite", "crossing", "converging", "overtaking", "same", "reciprocal", "climbing", "descending",
+               "ahead", "behind", "passing", "below", "above" } },
     -- "FPA -3 and speed 180": a flight path angle, which squawk's aircraft do not fly by (its value with it)
     { what = "flight path angles", words = "fpa", near = { "#number" }, window = 1 },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told

@@ -7186,3 +7186,14 @@ do
   asked(ex("KLM12, confirm level 290? Maintain speed"), "a bare 'maintain' with more after it")
   asked(ex("AFR77 confirm speed 260? Maintain"), "'maintain' after a speed asked about")
 end
+
+-- Cycle 41 (resid2): traffic information told after an instruction by the way the other aircraft flies ("traffic
+-- opposite direction FL340", "traffic crossing left to right, a Volotea at 350") instructs nobody: its level is
+-- no value; an instruction after it with its own verb is read
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL290 250" })
+  check_eq(ex("KLM12 descend flight level two seven zero, traffic opposite direction two six zero"), "ALT KLM12 FL270")
+  check_eq(ex("KLM12 maintain FL290, traffic converging from the right, an easyJet at three one zero"), "ALT KLM12 FL290")
+  check_eq(ex("KLM12 descend FL270, traffic crossing at FL260, turn left heading 060"), "ALT KLM12 FL270 ; HDG KLM12 60 LEFT")
+  asked(ex("KLM12 descend FL270 and 260 for the traffic"), "a level with no verb beside traffic")
+end
