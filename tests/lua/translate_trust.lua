@@ -7197,3 +7197,14 @@ do
   check_eq(ex("KLM12 descend FL270, traffic crossing at FL260, turn left heading 060"), "ALT KLM12 FL270 ; HDG KLM12 60 LEFT")
   asked(ex("KLM12 descend FL270 and 260 for the traffic"), "a level with no verb beside traffic")
 end
+
+-- Cycle 41 (resid2): an aircraft described by "the", its airline and its type ("the Emirates A380", "the Jetstar
+-- A320") is the one aircraft of that airline flying of that type; two of them, or none, are asked
+do
+  local _, ex = scene({ "CRE EZY45 A320 52.0 4.0 090 FL290 250", "CRE EZY46 A321 52.2 4.2 180 FL250 260",
+    "CRE EZY47 A321 52.4 4.4 270 FL230 260", "CRE DLH4 A388 52.6 4.6 000 FL380 290" })
+  check_eq(ex("The easyJet A320 should descend to FL250."), "ALT EZY45 FL250")
+  check_eq(ex("the Lufthansa A380 is to climb to FL400"), "ALT DLH4 FL400")
+  asked(ex("the easyJet A321 descend FL200"), "two of the airline flying of that type")
+  asked(ex("the easyJet 777 descend FL200"), "none of the airline flying of that type")
+end
