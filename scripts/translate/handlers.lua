@@ -735,6 +735,11 @@ function m:airline_refs()
             or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
           and (typed or not self:new_aircraft_follows(e - 1))
       local fits = typed or (ok and self:airline_fleet(icao, codes)) or {}
+      -- ("Ryanair descend FL200 and RYR4411 speed 250": an airline alone addressed, without "the", whose one
+      -- aircraft flying the request names by its callsign elsewhere is a callsign cut short, never that aircraft)
+      for _, r in ipairs(ok and not the and #fits == 1 and self.refs or {}) do
+        if r.kind == "aircraft" and r.name == fits[1] and (r.b >= e or r.e <= i) then fits = {} end
+      end
       if typed then
         for k = #self.refs, 1, -1 do
           if self.refs[k].b >= e and self.refs[k].b < type_e then table.remove(self.refs, k) end

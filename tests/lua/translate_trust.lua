@@ -7208,3 +7208,13 @@ do
   asked(ex("the easyJet A321 descend FL200"), "two of the airline flying of that type")
   asked(ex("the easyJet 777 descend FL200"), "none of the airline flying of that type")
 end
+
+-- Cycle 41 (resid2): an airline said alone as an addressee ("Ryanair descend ..."), whose one aircraft flying the
+-- request also names by its full callsign, is a callsign cut short: asked, never that aircraft; named by "the"
+-- it stays the aircraft described
+do
+  local _, ex = scene({ "CRE RYR77 B738 52.0 4.0 090 FL290 250", "CRE KLM12 B738 52.2 4.2 180 FL250 260" })
+  asked(ex("Ryanair climb to FL310 and RYR77 speed 240"), "the airline alone beside its aircraft's callsign")
+  asked(ex("KLM12 turn left heading 200, RYR77 speed 240, Ryanair descend FL250"), "the same, said last")
+  check_eq(ex("Ryanair climb to FL310 and KLM12 speed 240"), "ALT RYR77 FL310 ; SPD KLM12 240")
+end
