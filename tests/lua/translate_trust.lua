@@ -7218,3 +7218,14 @@ do
   asked(ex("KLM12 turn left heading 200, RYR77 speed 240, Ryanair descend FL250"), "the same, said last")
   check_eq(ex("Ryanair climb to FL310 and KLM12 speed 240"), "ALT RYR77 FL310 ; SPD KLM12 240")
 end
+
+-- Cycle 41 (resid2): "say distance to FIX" asks the aircraft's position (POS), the place part of the question;
+-- "accelerate the time four times" is the clock's rate (DTMULT), an aircraft's acceleration stays its speed
+do
+  local _, ex = scene({ "DEFWPT RSC 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL290 250" })
+  check_eq(ex("KLM12, say distance to RSC"), "POS KLM12")
+  check_eq(ex("KLM12 report your distance from RSC, then climb FL310"), "POS KLM12 ; ALT KLM12 FL310")
+  check_eq(ex("please accelerate the simulation three times"), "DTMULT 3")
+  check_eq(ex("KLM12 accelerate to 280 knots"), "SPD KLM12 280")
+  asked(ex("accelerate the time"), "a rate not said")
+end
