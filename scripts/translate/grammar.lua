@@ -2164,6 +2164,15 @@ function G:segments(b, e)
       -- a verb after "and", is a speed of its own)
       local own_verb = last.intent == "addwpt" and self:word(tr.pos - 1, "and")
         and not self:word(tr.pos, "speed spd altitude alt heading hdg level fl")
+      -- ("create JST802 ... 3000 feet, 180 knots, and instruct it to climb to FL280": a verb of its own after a
+      -- creation that already holds the value that verb sets is an instruction to the new aircraft)
+      -- (its own value said after it: "..., going to climb" with none stays the creation's question)
+      local sets = VERB_FINAL_KINDS[tr.intent]
+      local next_q = sets and self:quantities(tr.pos, e)[1]
+      for _, q in ipairs(last.intent == "create" and next_q and sets[next_q.kind] and self:word(tr.pos, "@clause_verbs")
+          and self:quantities(last.trig, tr.pos) or {}) do
+        own_verb = own_verb or sets[q.kind] == true
+      end
       if (li.absorbs and this.value and not own_verb)
           or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
         merged = true

@@ -7229,3 +7229,15 @@ do
   check_eq(ex("KLM12 accelerate to 280 knots"), "SPD KLM12 280")
   asked(ex("accelerate the time"), "a rate not said")
 end
+
+-- Cycle 41 (resid2): after a creation that holds its level, speed or heading, a verb of its own that sets that value
+-- again ("..., and instruct it to climb to FL280") is an instruction to the new aircraft; a creation without
+-- that value still takes it
+do
+  local _, ex = scene({ "DEFWPT RSD 52.5 4.5" })
+  check_eq(ex("Create KLM88 (B738) at RSD, heading 090, 4000 feet, 200 knots, and instruct it to climb to FL150."),
+    "CRE KLM88 B738 RSD 90 4000 200 ; ALT KLM88 FL150")
+  check_eq(ex("create KLM88 B738 at RSD heading 090 FL100 250 knots and have it turn right heading 120"),
+    "CRE KLM88 B738 RSD 90 FL100 250 ; HDG KLM88 120 RIGHT")
+  check_eq(ex("create KLM88 B738 at RSD heading 090 250 knots and climb FL120"), "CRE KLM88 B738 RSD 90 FL120 250")
+end
