@@ -3259,7 +3259,7 @@ function G:at_waypoint(s, spec)
   for _, a in ipairs(self:refs_in(first, first + 1, "aircraft")) do first = self:skip_fillers(a.e) end
   -- ("Aegean 603, efcharistó, at DILOP descend ...": a word of courtesy after the callsign)
   while self:word(first, RADIOTELEPHONY) do first = self:skip_fillers(first + 1) end
-  local opens = self:word(first, "at after") and self:skip_fillers(first + 1)
+  local opens = self:word(first, "at after over") and self:skip_fillers(first + 1)
   if opens and #refs == 0 and opens < s.trig and s.trig < s.e and #self:quantities(opens, s.trig) == 0 then
     local ids = self:acids(s)
     local now = #ids == 1 and self:state(ids[1])
@@ -3297,7 +3297,7 @@ function G:at_waypoint(s, spec)
     -- "SULUR speed constraint 230 kt": the constraint named after the waypoint
     constrained = constrained or self:word_in(r.e, r.e + 3, "constraint constraints restriction")
     -- "at ELDAR speed 250", "Delta 889, at PAPPI maintain 250": "at" opening the clause, after its callsign
-    local opening = r.b == opens and self:word(first, "at")
+    local opening = r.b == opens and self:word(first, "at over")
     -- ("descend to FL60 and, when it is at RIGNO, reduce to 210 knots", "once it's at RIGNO, speed 210": a
     -- condition of reaching the waypoint, opening its clause, is a constraint there)
     local k = r.b - 2
@@ -3353,9 +3353,12 @@ function G:at_waypoint(s, spec)
     -- "when at GIVMI descend FL220", "once past GIVMI, descend FL220", "when it is at RIGNO, reduce to 210
     -- knots": an instruction said with its verb, after a clause opening with the waypoint, starts when the
     -- aircraft passes it: BlueSky's AT acid wp DO with the full command (G:do_at; a waypoint off the route
-    -- is asked about, naming it). A value said with no verb ("at ELDAR speed 250", "at KOPOR FL80") stays the constraint there; so does a crossing.
+    -- is asked about, naming it; "over ZYG reduce speed 250" the same). A value said with no verb ("at ELDAR
+    -- speed 250", "over KOPOR FL80") stays the constraint there; so does a crossing. After the waypoint, a
+    -- value said with its noun ("after CUERS speed 250 knots") is the instruction there too: no constraint
+    -- can be met once the waypoint is passed.
     local cond_b
-    if r.b == opens and self:word(first, "at after") then
+    if r.b == opens and self:word(first, "at after over") then
       cond_b = first
     elseif self:word(first, "after") and self:word(r.b - 1, "passing") and r.b - 1 == opens then
       cond_b = first
@@ -3365,7 +3368,8 @@ function G:at_waypoint(s, spec)
       cond_b = self:find_word(math.max(s.b, r.b - 4), r.b, "when once")
     end
     -- ("after passing GOURA descend... correction, descend now to FL150": taken back, the instruction is now)
-    local verb = s.intent ~= "infer" and not self:word(s.trig, "@instruction_nouns")
+    local verb = s.intent ~= "infer"
+      and (not self:word(s.trig, "@instruction_nouns") or (r.b == opens and self:word(first, "after")))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")
     if cond_b and verb and s.trig > r.e - 1 and not (crossed or constrained or be_at or shown or level_by or clause_at)
         and spec and spec.handler and #self:acids(s) == 1 then

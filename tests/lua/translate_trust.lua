@@ -7241,3 +7241,15 @@ do
     "CRE KLM88 B738 RSD 90 FL100 250 ; HDG KLM88 120 RIGHT")
   check_eq(ex("create KLM88 B738 at RSD heading 090 250 knots and climb FL120"), "CRE KLM88 B738 RSD 90 FL120 250")
 end
+
+-- Cycle 41 (resid2): "over FIX" opening a clause reads as "at FIX" (a verb: the instruction there, AT ... DO; a
+-- value with no verb: the constraint there); "after FIX speed 250 knots", a value with its noun after the
+-- waypoint, is the instruction there (no constraint can be met once it is passed); a bare level after it is asked
+do
+  local _, ex = scene({ "DEFWPT RSE 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL290 250", "ADDWPT KLM12 RSE" })
+  check_eq(ex("KLM12 over RSE reduce speed two three zero"), "AT KLM12 RSE DO SPD KLM12 230")
+  check_eq(ex("KLM12 over RSE FL200"), "AT KLM12 RSE ALT FL200")
+  check_eq(ex("KLM12, after RSE speed two one zero knots"), "AT KLM12 RSE DO SPD KLM12 210")
+  check_eq(ex("KLM12 after RSE descend FL180"), "AT KLM12 RSE DO ALT KLM12 FL180")
+  asked(ex("KLM12 after RSE FL180"), "a bare level after the waypoint")
+end
