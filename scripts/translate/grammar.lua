@@ -891,7 +891,7 @@ local function written_forms(text)
   text = text:gsub("^(%s*)%.(%a)", "%1%2")
   -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
   text = text:gsub("(%s)@%s*(%w)", "%1at %2")
-  text = typed_abbreviations(lone_multipliers(text))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more

@@ -7253,3 +7253,15 @@ do
   check_eq(ex("KLM12 after RSE descend FL180"), "AT KLM12 RSE DO ALT KLM12 FL180")
   asked(ex("KLM12 after RSE FL180"), "a bare level after the waypoint")
 end
+
+-- Cycle 41 (resid2): a value's three digits said one by one and transcribed as numerals apart ("heading 2 7 0",
+-- "flight level 1 9 0", "2 niner zero") are one value, as the same digits said in words; a lone digit, or one
+-- that punctuation parts, stays as it was
+do
+  local _, ex = scene({ "CRE UAL1298 B738 52.0 4.0 090 FL150 250", "CRE KLM12 B738 52.2 4.2 180 FL250 260" })
+  check_eq(ex("united 1298 turn left heading 2 7 0"), "HDG UAL1298 270 LEFT")
+  check_eq(ex("KLM12 climb flight level 2 9 0 comma speed 2 8 zero"), "ALT KLM12 FL290 ; SPD KLM12 280")
+  check_eq(ex("KLM12 fly heading 1 niner 0"), "HDG KLM12 190")
+  asked(ex("KLM12 fly heading 2"), "a lone digit for a heading")
+  asked(ex("KLM12 turn left heading 2, 7 0"), "digits that a comma parts")
+end
