@@ -3287,9 +3287,12 @@ function G:at_waypoint(s, spec)
     -- that ends the request; "cross MAXMO FL220, speed 280 knots", the speed now or there, is asked about)
     local after = self:skip_fillers(r.e)
     local next_q = self:word(r.b - 1, "cross crossing crosses") and self:quantities(after, s.e)[1]
+    -- ("cross AKMIL FL120 or below": the bound said after the value, which AT meets exactly, ends it as well)
+    local q_end = next_q and (self:word(next_q.e, "or") and self:word(next_q.e + 1, "below above") and next_q.e + 2
+      or next_q.e)
     local crossed = self:word(r.b - 1, "cross crossing crosses") and (self:word(after, "at")
       or (next_q and next_q.b == after and (next_q.kind == "alt" or next_q.kind == "speed" or next_q.kind == "mach")
-        and ends_request(self, next_q.e)))
+        and ends_request(self, q_end)))
     if self.t[after] and self.t[after].kind == "punct" then after = self:skip_fillers(after + 1) end
     local constrained = self:word(r.b - 1, "at") and self:word_in(math.max(s.b, r.b - 5), r.b - 1, "constraint restriction")
       and (self:word(self:skip_fillers(r.e), "to of") or (self.t[after] and self.t[after].kind == "number")

@@ -1494,6 +1494,8 @@ return function(intent, rule, words)
   end }
   -- "give me the position", "give me TEST01's and TEST02's positions"
   rule { "give", "pos", next = "me us", near = { 6, "position positions status details" } }
+  -- "give the position of the Canberra VOR": the same asked with no one named to give it to
+  rule { "give", "pos", next = "the", near = { 2, "position positions" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }

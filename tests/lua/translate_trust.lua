@@ -7265,3 +7265,15 @@ do
   asked(ex("KLM12 fly heading 2"), "a lone digit for a heading")
   asked(ex("KLM12 turn left heading 2, 7 0"), "digits that a comma parts")
 end
+
+-- Cycle 41 (resid2): "give the position of X" asks for X's position (POS), a place's too; a crossing's value said
+-- straight after the waypoint with its bound ("cross RSF FL120 or below") is the bounded constraint, confirmed
+-- before it is set exactly, as "cross RSF at FL120 or below" is
+do
+  local s, ex = scene({ "DEFWPT RSF 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL290 250", "ADDWPT KLM12 RSF" })
+  check_eq(ex("Give the position of KLM12."), "POS KLM12")
+  check_eq(ex("give the position of RSF"), "POS RSF")
+  local r = graph.translate("KLM12 cross RSF FL120 or below", { sim = s, mode = "offline" })
+  check(r.ask ~= nil and r.ask:find("exactly FL120", 1, true) ~= nil, said(r))
+  check_eq(ex("KLM12 cross RSF FL120"), "AT KLM12 RSF ALT FL120")
+end
