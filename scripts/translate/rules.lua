@@ -513,7 +513,8 @@ return function(intent, rule, words)
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
   -- "the Shuttle is a bit slow": a description ("X is to slow down to 220 knots": the verb after "to", an instruction)
-  rule { "slow fast", false, prev = { 3, "is it's are was isn't" }, when = function(g, i) return not g:word(i - 1, "to") end }
+  rule { "slow fast", false, prev = { 3, "is it's are was isn't" },
+         when = function(g, i) return not g:word(i - 1, "to") end }
   rule { "slow fast", false, prev = { 1, "a an" }, next = "one ones aircraft plane mover" }  -- "a slow one": a description
   -- "accelerate the time four times", "decelerate the simulation": the clock's rate, said straight after the verb
   rule { "accelerate decelerate", "dtmult", when = function(g, i)

@@ -7193,8 +7193,10 @@ end
 do
   local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL290 250" })
   check_eq(ex("KLM12 descend flight level two seven zero, traffic opposite direction two six zero"), "ALT KLM12 FL270")
-  check_eq(ex("KLM12 maintain FL290, traffic converging from the right, an easyJet at three one zero"), "ALT KLM12 FL290")
-  check_eq(ex("KLM12 descend FL270, traffic crossing at FL260, turn left heading 060"), "ALT KLM12 FL270 ; HDG KLM12 60 LEFT")
+  check_eq(ex("KLM12 maintain FL290, traffic converging from the right, an easyJet at three one zero"),
+    "ALT KLM12 FL290")
+  check_eq(ex("KLM12 descend FL270, traffic crossing at FL260, turn left heading 060"),
+    "ALT KLM12 FL270 ; HDG KLM12 60 LEFT")
   asked(ex("KLM12 descend FL270 and 260 for the traffic"), "a level with no verb beside traffic")
 end
 
