@@ -891,7 +891,7 @@ local function written_forms(text)
   text = text:gsub("^(%s*)%.(%a)", "%1%2")
   -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
   text = text:gsub("(%s)@%s*(%w)", "%1at %2")
-  text = typed_abbreviations(lone_multipliers(text))
+  text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
@@ -2164,6 +2164,15 @@ function G:segments(b, e)
       -- a verb after "and", is a speed of its own)
       local own_verb = last.intent == "addwpt" and self:word(tr.pos - 1, "and")
         and not self:word(tr.pos, "speed spd altitude alt heading hdg level fl")
+      -- ("create JST802 ... 3000 feet, 180 knots, and instruct it to climb to FL280": a verb of its own after a
+      -- creation that already holds the value that verb sets is an instruction to the new aircraft)
+      -- (its own value said after it: "..., going to climb" with none stays the creation's question)
+      local sets = VERB_FINAL_KINDS[tr.intent]
+      local next_q = sets and self:quantities(tr.pos, e)[1]
+      for _, q in ipairs(last.intent == "create" and next_q and sets[next_q.kind] and self:word(tr.pos, "@clause_verbs")
+          and self:quantities(last.trig, tr.pos) or {}) do
+        own_verb = own_verb or sets[q.kind] == true
+      end
       if (li.absorbs and this.value and not own_verb)
           or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
         merged = true
@@ -2488,7 +2497,21 @@ function G:question_back()
       local ce = phrase_end(i, qb.confirm)
       if ce then
         local e = clause_end(ce)
-        if #self:quantities(ce, e) > 0 or #self:refs_in(ce, e, "waypoint") > 0 then
+        -- ("confirm heading 180? Fly heading 180": the question asked, then the instruction given with its verb
+        -- and its own value, which is read; the question itself is no instruction)
+        local asked_q = self.t[e] and self.t[e].text == "?"
+        local answered = asked_q and self:any_instruction_in(e + 1, #self.t + 1)
+          and #self:quantities(e + 1, #self.t + 1) > 0
+        -- ("confirm level 290? Maintain": a bare "maintain" after a level asked about keeps that level)
+        local qs = self:quantities(ce, e)
+        local m = self:skip_fillers(e + 1)
+        local kept = asked_q and #qs == 1 and qs[1].kind == "alt" and self:word(m, "maintain")
+        for k = m + 1, #self.t do kept = kept and self.t[k].kind == "punct" end
+        if answered then
+          self:set_aside(i, e)
+        elseif kept then
+          self:set_aside(i, qs[1].b - 1)
+        elseif #self:quantities(ce, e) > 0 or #self:refs_in(ce, e, "waypoint") > 0 then
           return self:need(string.format("'%s' asks whether a clearance stands: it is a question, no "
             .. "instruction. Please give the instruction itself.", said(i, e)))
         end
@@ -3302,7 +3325,7 @@ function G:at_waypoint(s, spec)
     -- "SULUR speed constraint 230 kt": the constraint named after the waypoint
     constrained = constrained or self:word_in(r.e, r.e + 3, "constraint constraints restriction")
     -- "at ELDAR speed 250", "Delta 889, at PAPPI maintain 250": "at" opening the clause, after its callsign
-    local opening = r.b == opens and self:word(first, "at")
+    local opening = r.b == opens and self:word(first, "at over")
     -- ("descend to FL60 and, when it is at RIGNO, reduce to 210 knots", "once it's at RIGNO, speed 210": a
     -- condition of reaching the waypoint, opening its clause, is a constraint there)
     local k = r.b - 2
@@ -3355,26 +3378,30 @@ function G:at_waypoint(s, spec)
     local shown = self:word(r.b - 1, "at") and self:word_in(s.b, r.b, "constraint constraints restriction restrictions")
       and self:word_in(s.b, r.b, "show list display what which") and #self:quantities(s.b, s.e) == 0
     -- "at DILOP descend flight level 80", "after NERDU descend FL70", "after passing MOSET descend FL180",
-    -- "when at GIVMI descend FL220", "when it is at RIGNO, reduce to 210 knots": an instruction said with its
-    -- verb, after a clause opening with the waypoint, starts when the aircraft passes it: BlueSky's AT acid wp
-    -- DO with the full command (G:do_at; a waypoint off the route is asked about, naming it). A value said
-    -- with no verb ("at ELDAR speed 250", "at KOPOR FL80") stays the constraint there; so does a crossing.
+    -- "when at GIVMI descend FL220", "once past GIVMI, descend FL220", "when it is at RIGNO, reduce to 210
+    -- knots": an instruction said with its verb, after a clause opening with the waypoint, starts when the
+    -- aircraft passes it: BlueSky's AT acid wp DO with the full command (G:do_at; a waypoint off the route
+    -- is asked about, naming it; "over ZYG reduce speed 250" the same). A value said with no verb ("at ELDAR
+    -- speed 250", "over KOPOR FL80") stays the constraint there; so does a crossing. After the waypoint, a
+    -- value said with its noun ("after CUERS speed 250 knots") is the instruction there too: no constraint
+    -- can be met once the waypoint is passed.
     local cond_b
     -- ("leave NAGMA heading 200": after "leave" or "leaving" only a heading said straight after the waypoint is
     -- flown from it; "leave FDO, fly heading 290" leaves the routing to it now)
     local opened = r.b == opens and not (self:word(first, "leave leaving") and not self:word(r.e, "heading hdg"))
     if opened then
       cond_b = first
-    elseif self:word(r.b - 1, "at") and self:word(r.b - 2, "when once") and r.b - 2 == first then
+    elseif self:word(r.b - 1, "at past") and self:word(r.b - 2, "when once") and r.b - 2 == first then
       cond_b = first
     elseif opening then
       cond_b = self:find_word(math.max(s.b, r.b - 4), r.b, "when once")
     end
     -- ("after passing GOURA descend... correction, descend now to FL150": taken back, the instruction is now)
     -- ("leave NAGMA heading 200": "leave" is the verb, the heading flown from the waypoint on)
+    -- ("after CUERS speed 250 knots": a value with its noun after the waypoint is the instruction there)
     -- ("passing VURAL descending FL100", no "when" or "after": a pilot's report, no instruction)
     local verb = s.intent ~= "infer" and (not self:word(s.trig, "@instruction_nouns")
-        or (opened and self:word(first, "leave leaving")))
+        or (opened and self:word(first, "leave leaving after")))
       and not (self:word(first, "passing leaving") and self.t[s.trig].text:match("ing$")
         and not self:word(s.trig, "@instruction_nouns"))
       and not self:word_in(s.b, s.e, "cross crossing crosses now immediately @correction")

@@ -709,12 +709,44 @@ function m:airline_refs()
       -- ("insert PTA after DORVO for Flybondi": the airline capitalised after "for", ending its clause, is the
       -- aircraft the instruction is for)
       local for_it = self:word(i - 1, "for") and self.t[i].raw:match("^%u") ~= nil and (not nxt or nxt.kind == "punct")
+      -- ("the Emirates A380 should descend", "the Jetstar A320": a type said straight after "the" and the airline,
+      -- no request to create, describes the airline's aircraft flying of that type; `typed`: those, and the token
+      -- after the type)
+      local typed, type_e
+      local test, te
+      if the and not inside[i] then test, te = self:type_said(e) end
+      for k = 1, test and #self.t or 0 do
+        if self:intent_at(k) == "create" then test = nil end
+      end
+      if test then
+        for _, a in ipairs(test and self.fleet or {}) do
+          for _, id in ipairs(test(a.type and a.type:upper() or "") and self:airline_fleet(icao, codes) or {}) do
+            if id == a.id then
+              typed = typed or {}
+              typed[#typed + 1] = id
+            end
+          end
+        end
+        type_e = typed and te
+      end
       local ok = not inside[i] and not inside[e - 1]
           and (the or for_it or self:addressed_alone(i, e) or self:asked_where(i, e))
           and not (nxt and (nxt.kind == "number" or nxt.number_word or L.phonetic[nxt.text]
             or self:word(e, "heavy super")) and not (the and pronoun_one(e)))
-          and not self:new_aircraft_follows(e - 1)
-      local fits = ok and self:airline_fleet(icao, codes) or {}
+          and (typed or not self:new_aircraft_follows(e - 1))
+      local fits = typed or (ok and self:airline_fleet(icao, codes)) or {}
+      -- ("Ryanair descend FL200 and RYR4411 speed 250": an airline alone addressed, without "the", whose one
+      -- aircraft flying the request names by its callsign elsewhere is a callsign cut short, never that aircraft)
+      for _, r in ipairs(ok and not the and #fits == 1 and self.refs or {}) do
+        if r.kind == "aircraft" and r.name == fits[1] and (r.b >= e or r.e <= i) then fits = {} end
+      end
+      if typed then
+        for k = #self.refs, 1, -1 do
+          if self.refs[k].b >= e and self.refs[k].b < type_e then table.remove(self.refs, k) end
+        end
+        self:explain(e, type_e)
+        e = type_e
+      end
       -- asked about by acids, also beside an aircraft that is resolved (not in a reason; capitals that
       -- name no airline flying, "the ILS", are no airline)
       -- ("The SAS that's coming from the south, SAS 517, could it descend": the airline said again with its

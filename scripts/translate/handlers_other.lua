@@ -2647,6 +2647,11 @@ return function(H, f, compass)
         and self:word(places[1].b - 2, "relative relation respect") then
       self:explain(places[1].b - 2, places[1].e)
     end
+    -- ("say distance to TELIN", "report your distance from BIG": the distance asked, from the same)
+    if not no_aircraft and #places == 1 and self:word(places[1].b - 1, "to from")
+        and self:word(places[1].b - 2, "distance range") then
+      self:explain(places[1].b - 2, places[1].e)
+    end
     -- a place by its name ("where is Schiphol?", "where is Munich airport?", "where the Kempten VOR is"); an
     -- airport said as such by the name of its city's navaids near the traffic ("show me Ezeiza airport": SAEZ
     -- "MINISTRO PISTARINI" beside the EZEIZA VOR), as a destination is

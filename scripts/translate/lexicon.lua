@@ -258,6 +258,8 @@ return {
         -- verbs that go with an instruction's direction or place: informal ones ("bump the speed up", "crank
         -- the look-ahead up") and those of staying and going ("stay on 250 knots", "returning to Orly")
         "bump", "crank", "push", "knock", "dial", "stay", "remain", "return", "sit", "head", "hand",
+        -- verbs that open the move an instruction names ("begin its descent to FL200", "commence descent")
+        "begin", "begins", "commence", "commences", "initiate", "initiates",
         -- legs of an approach a vector is for ("vectors for base"), and alerts
         "base", "downwind", "final", "spacing", "sequencing", "alert",
         -- controllers' written abbreviations of instruction words
@@ -847,6 +849,11 @@ return {
     -- may be named before its clock position: "traffic, an Emirates 777, at your two o'clock")
     { what = "traffic information", words = "traffic", near = { "o'clock", "oclock", "clock" }, window = 9,
       to_end = true },
+    -- ("descend FL320, traffic opposite direction FL340", "maintain FL370, traffic crossing left to right, a
+    -- Volotea at FL350": after an instruction, traffic told by the way it flies; its level is the other aircraft's)
+    { what = "traffic information", words = "traffic", window = 2, after_instruction = true, to_end = true,
+      near = { "opposite", "crossing", "converging", "overtaking", "same", "reciprocal", "climbing", "descending",
+               "ahead", "behind", "passing", "below", "above" } },
     -- "FPA -3 and speed 180": a flight path angle, which squawk's aircraft do not fly by (its value with it)
     { what = "flight path angles", words = "fpa", near = { "#number" }, window = 1 },
     -- "you are number two behind the Emirates", "number one for the approach": a place in the sequence, told

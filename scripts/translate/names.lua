@@ -334,6 +334,8 @@ local names = {
     { "air asia", "AXM" },
     { "airasia", "AXM" },
     { "scoot", "TGW" },
+    { "tigerair", "TGW" },  -- (Tiger Airways, merged into Scoot, which kept its designator)
+    { "tiger airways", "TGW" },
     { "vietnam", "HVN" },
     { "vietnam airlines", "HVN" },
     { "vietjet", "VJC" },

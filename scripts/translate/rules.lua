@@ -512,8 +512,14 @@ return function(intent, rule, words)
          when = function(g, i) return not (g:word(i - 1, "and") and g:word(i + 1, "forward")) end }
   rule { "fast faster slower", "dtmult", prev = { 4, "@sim" }, not_near = { 1, "forward" } }  -- ("fast-forward": FF)
   rule { "faster slower", false, prev = { 2, "times x" } }
-  rule { "slow fast", false, prev = { 3, "is it's are was isn't" } }  -- "the Shuttle is a bit slow": a description
+  -- "the Shuttle is a bit slow": a description ("X is to slow down to 220 knots": the verb after "to", an instruction)
+  rule { "slow fast", false, prev = { 3, "is it's are was isn't" },
+         when = function(g, i) return not g:word(i - 1, "to") end }
   rule { "slow fast", false, prev = { 1, "a an" }, next = "one ones aircraft plane mover" }  -- "a slow one": a description
+  -- "accelerate the time four times", "decelerate the simulation": the clock's rate, said straight after the verb
+  rule { "accelerate decelerate", "dtmult", when = function(g, i)
+    return g:word(i + 1, "@sim") or (g:word(i + 1, "the") and g:word(i + 2, "@sim"))
+  end }
   rule { "slow slower faster accelerate decelerate", "spd" }
   -- "and give it 280 knots": a speed given to the aircraft
   rule { "give", "spd", next = "it him her them", near = { 4, "@speed_units" } }
@@ -1508,6 +1514,8 @@ return function(intent, rule, words)
     local q = g:quantities(i, #g.t + 1)[1]
     return nouns > 0 and not (q and q.b <= k + 1)
   end }
+  -- "give the position of the Canberra VOR": the same asked with no one named to give it to
+  rule { "give", "pos", next = "the", near = { 2, "position positions" } }
   -- "are you able (for) FL370", "confirm on heading south": a question to the pilot, not a clearance
   rule { "able", "pos", prev = { 2, "you" } }
   rule { "confirm", "pos", near = { 3, "heading altitude level speed mach" } }
@@ -1529,6 +1537,8 @@ return function(intent, rule, words)
     return g:word(i - 1, "to") and g:word(i - 2, "able") and g:preceded_by(i - 2, 3, "advise report")
   end }
   rule { "say report", "pos", near = { 3, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
+  -- "say distance to TELIN", "report your distance from BIG": the aircraft's position asked, to judge it by
+  rule { "say report", "pos", near = { 2, "distance" } }
   -- ("report with your present level": the value "with" the reply)
   rule { "report", "pos", next = "with", near = { 4, "altitude speed heading position level airspeed mach alt lvl hdg spd pos fl" } }
   -- "request your present heading", "request your level": the controller asking the aircraft's own value

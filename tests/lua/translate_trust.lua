@@ -7175,13 +7175,14 @@ do
   asked(ex("TKZ31 when passing DQC descend FL150"), "a waypoint off the route")
   check_eq(ex("TKZ31 leaving FL170 turn left heading 300"), "ATALT TKZ31 FL170 HDG TKZ31 300 LEFT")
   -- ("passing FIX" and "over"/"overhead FIX" open the clause as "at FIX" does; a verb in -ing after a bare
-  -- "passing" is a pilot's report, asked; "abeam FIX" is no passing of it)
+  -- "passing" is a pilot's report, asked; "abeam FIX" is no passing of it; a level with no verb after "over
+  -- FIX" is the constraint there, as after "at")
   check_eq(ex("TKZ31 passing DQB descend FL140"), "AT TKZ31 DQB DO ALT TKZ31 FL140")
   check_eq(ex("TKZ31 overhead DQA turn left heading 330"), "AT TKZ31 DQA DO HDG TKZ31 330 LEFT")
   check_eq(ex("TKZ31 over DQB reduce speed 230"), "AT TKZ31 DQB DO SPD TKZ31 230")
   check_eq(ex("TKZ31 leaving DQB heading 250"), "AT TKZ31 DQB DO HDG TKZ31 250")
   asked(ex("TKZ31 passing DQB descending FL140"), "a pilot's report of passing a waypoint")
-  asked(ex("TKZ31 over DQB FL140"), "a level with no verb after 'over FIX'")
+  check_eq(ex("TKZ31 over DQB FL140"), "AT TKZ31 DQB ALT FL140")
   asked(ex("TKZ31 abeam DQB descend FL140"), "abeam a waypoint")
   check_eq(ex("TKZ31 after overflying DQA climb FL220"), "AT TKZ31 DQA DO ALT TKZ31 FL220")
   check_eq(ex("TKZ31 on reaching DQB reduce speed 220"), "AT TKZ31 DQB DO SPD TKZ31 220")
@@ -7237,4 +7238,127 @@ do
   check_eq(ex("PIA305 give me your present level and heading"), "POS PIA305")
   check_eq(ex("SEP842 give me speed 250"), "SPD SEP842 250")
   asked(ex("where is Serene four four two"), "no such flight number flies")
+end
+
+-- Cycle 41 (resid2): a verb after "is to", "should" or "have X" ("At FIX, X is to slow down to 220 knots", "should
+-- begin its descent") and a condition "once past FIX" make the instruction start at the waypoint (AT ... DO);
+-- "is slow" said of an aircraft stays a description, and a value with no verb stays the constraint
+do
+  local _, ex = scene({ "DEFWPT RSA 52.5 4.5", "DEFWPT RSB 52.8 4.8", "CRE KLM12 B738 52.0 4.0 090 FL200 250",
+    "ADDWPT KLM12 RSA", "ADDWPT KLM12 RSB" })
+  check_eq(ex("At RSA, KLM12 is to slow down to 230 knots."), "AT KLM12 RSA DO SPD KLM12 230")
+  check_eq(ex("KLM12 is to slow to 230 knots"), "SPD KLM12 230")
+  check_eq(ex("At RSB KLM12 should commence its descent to FL120"), "AT KLM12 RSB DO ALT KLM12 FL120")
+  check_eq(ex("KLM12 begin descent to FL150"), "ALT KLM12 FL150")
+  check_eq(ex("Once past RSA, have KLM12 slow to 210 knots"), "AT KLM12 RSA DO SPD KLM12 210")
+  check_eq(ex("KLM12 when past RSB descend FL100"), "AT KLM12 RSB DO ALT KLM12 FL100")
+  check_eq(ex("at RSA KLM12 FL180"), "AT KLM12 RSA ALT FL180")
+  asked(ex("KLM12 is a bit slow"), "a description, no instruction")
+  asked(ex("Once past RSA, KLM12 FL180"), "a value with no verb after 'once past'")
+end
+
+-- Cycle 41 (resid2): a confirmation question followed by the instruction itself ("confirm heading 180? Fly
+-- heading 180") reads the instruction; "confirm level 290? Maintain" keeps the level asked about; the question
+-- alone, or followed by what is no instruction with its value, is still asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL290 250", "CRE AFR77 A320 52.2 4.2 180 FL250 260" })
+  check_eq(ex("KLM12, confirm heading 090? Turn right heading 120"), "HDG KLM12 120 RIGHT")
+  check_eq(ex("AFR77 confirm you are descending to FL230? Descend FL230"), "ALT AFR77 FL230")
+  check_eq(ex("KLM12 confirm level 290? Maintain."), "ALT KLM12 FL290")
+  asked(ex("KLM12, confirm level 290?"), "the question alone")
+  asked(ex("KLM12, confirm level 290? Maintain speed"), "a bare 'maintain' with more after it")
+  asked(ex("AFR77 confirm speed 260? Maintain"), "'maintain' after a speed asked about")
+end
+
+-- Cycle 41 (resid2): traffic information told after an instruction by the way the other aircraft flies ("traffic
+-- opposite direction FL340", "traffic crossing left to right, a Volotea at 350") instructs nobody: its level is
+-- no value; an instruction after it with its own verb is read
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL290 250" })
+  check_eq(ex("KLM12 descend flight level two seven zero, traffic opposite direction two six zero"), "ALT KLM12 FL270")
+  check_eq(ex("KLM12 maintain FL290, traffic converging from the right, an easyJet at three one zero"),
+    "ALT KLM12 FL290")
+  check_eq(ex("KLM12 descend FL270, traffic crossing at FL260, turn left heading 060"),
+    "ALT KLM12 FL270 ; HDG KLM12 60 LEFT")
+  asked(ex("KLM12 descend FL270 and 260 for the traffic"), "a level with no verb beside traffic")
+end
+
+-- Cycle 41 (resid2): an aircraft described by "the", its airline and its type ("the Emirates A380", "the Jetstar
+-- A320") is the one aircraft of that airline flying of that type; two of them, or none, are asked
+do
+  local _, ex = scene({ "CRE EZY45 A320 52.0 4.0 090 FL290 250", "CRE EZY46 A321 52.2 4.2 180 FL250 260",
+    "CRE EZY47 A321 52.4 4.4 270 FL230 260", "CRE DLH4 A388 52.6 4.6 000 FL380 290" })
+  check_eq(ex("The easyJet A320 should descend to FL250."), "ALT EZY45 FL250")
+  check_eq(ex("the Lufthansa A380 is to climb to FL400"), "ALT DLH4 FL400")
+  asked(ex("the easyJet A321 descend FL200"), "two of the airline flying of that type")
+  asked(ex("the easyJet 777 descend FL200"), "none of the airline flying of that type")
+end
+
+-- Cycle 41 (resid2): an airline said alone as an addressee ("Ryanair descend ..."), whose one aircraft flying the
+-- request also names by its full callsign, is a callsign cut short: asked, never that aircraft; named by "the"
+-- it stays the aircraft described
+do
+  local _, ex = scene({ "CRE RYR77 B738 52.0 4.0 090 FL290 250", "CRE KLM12 B738 52.2 4.2 180 FL250 260" })
+  asked(ex("Ryanair climb to FL310 and RYR77 speed 240"), "the airline alone beside its aircraft's callsign")
+  asked(ex("KLM12 turn left heading 200, RYR77 speed 240, Ryanair descend FL250"), "the same, said last")
+  check_eq(ex("Ryanair climb to FL310 and KLM12 speed 240"), "ALT RYR77 FL310 ; SPD KLM12 240")
+end
+
+-- Cycle 41 (resid2): "say distance to FIX" asks the aircraft's position (POS), the place part of the question;
+-- "accelerate the time four times" is the clock's rate (DTMULT), an aircraft's acceleration stays its speed
+do
+  local _, ex = scene({ "DEFWPT RSC 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL290 250" })
+  check_eq(ex("KLM12, say distance to RSC"), "POS KLM12")
+  check_eq(ex("KLM12 report your distance from RSC, then climb FL310"), "POS KLM12 ; ALT KLM12 FL310")
+  check_eq(ex("please accelerate the simulation three times"), "DTMULT 3")
+  check_eq(ex("KLM12 accelerate to 280 knots"), "SPD KLM12 280")
+  asked(ex("accelerate the time"), "a rate not said")
+end
+
+-- Cycle 41 (resid2): after a creation that holds its level, speed or heading, a verb of its own that sets that value
+-- again ("..., and instruct it to climb to FL280") is an instruction to the new aircraft; a creation without
+-- that value still takes it
+do
+  local _, ex = scene({ "DEFWPT RSD 52.5 4.5" })
+  check_eq(ex("Create KLM88 (B738) at RSD, heading 090, 4000 feet, 200 knots, and instruct it to climb to FL150."),
+    "CRE KLM88 B738 RSD 90 4000 200 ; ALT KLM88 FL150")
+  check_eq(ex("create KLM88 B738 at RSD heading 090 FL100 250 knots and have it turn right heading 120"),
+    "CRE KLM88 B738 RSD 90 FL100 250 ; HDG KLM88 120 RIGHT")
+  check_eq(ex("create KLM88 B738 at RSD heading 090 250 knots and climb FL120"), "CRE KLM88 B738 RSD 90 FL120 250")
+end
+
+-- Cycle 41 (resid2): "over FIX" opening a clause reads as "at FIX" (a verb: the instruction there, AT ... DO; a
+-- value with no verb: the constraint there); "after FIX speed 250 knots", a value with its noun after the
+-- waypoint, is the instruction there (no constraint can be met once it is passed); a bare level after it is asked
+do
+  local _, ex = scene({ "DEFWPT RSE 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL290 250", "ADDWPT KLM12 RSE" })
+  check_eq(ex("KLM12 over RSE reduce speed two three zero"), "AT KLM12 RSE DO SPD KLM12 230")
+  check_eq(ex("KLM12 over RSE FL200"), "AT KLM12 RSE ALT FL200")
+  check_eq(ex("KLM12, after RSE speed two one zero knots"), "AT KLM12 RSE DO SPD KLM12 210")
+  check_eq(ex("KLM12 after RSE descend FL180"), "AT KLM12 RSE DO ALT KLM12 FL180")
+  asked(ex("KLM12 after RSE FL180"), "a bare level after the waypoint")
+end
+
+-- Cycle 41 (resid2): a value's three digits said one by one and transcribed as numerals apart ("heading 2 7 0",
+-- "flight level 1 9 0", "2 niner zero") are one value, as the same digits said in words; a lone digit, or one
+-- that punctuation parts, stays as it was
+do
+  local _, ex = scene({ "CRE UAL1298 B738 52.0 4.0 090 FL150 250", "CRE KLM12 B738 52.2 4.2 180 FL250 260" })
+  check_eq(ex("united 1298 turn left heading 2 7 0"), "HDG UAL1298 270 LEFT")
+  check_eq(ex("KLM12 climb flight level 2 9 0 comma speed 2 8 zero"), "ALT KLM12 FL290 ; SPD KLM12 280")
+  check_eq(ex("KLM12 fly heading 1 niner 0"), "HDG KLM12 190")
+  asked(ex("KLM12 fly heading 2"), "a lone digit for a heading")
+  asked(ex("KLM12 turn left heading 2, 7 0"), "digits that a comma parts")
+end
+
+-- Cycle 41 (resid2): "give the position of X" asks for X's position (POS), a place's too; a crossing's value said
+-- straight after the waypoint with its bound ("cross RSF FL120 or below") is the bounded constraint, confirmed
+-- before it is set exactly, as "cross RSF at FL120 or below" is
+do
+  local s, ex = scene({ "DEFWPT RSF 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL290 250", "ADDWPT KLM12 RSF" })
+  check_eq(ex("Give the position of KLM12."), "POS KLM12")
+  check_eq(ex("give the position of RSF"), "POS RSF")
+  local r = graph.translate("KLM12 cross RSF FL120 or below", { sim = s, mode = "offline" })
+  check(r.ask ~= nil and r.ask:find("exactly FL120", 1, true) ~= nil, said(r))
+  check_eq(ex("KLM12 cross RSF FL120"), "AT KLM12 RSF ALT FL120")
 end
