@@ -1402,6 +1402,16 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase")
         inside = true
+      elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
+          and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft")
+          and self:commentary(k + 1, commentary_end(self, k + 1)) then
+        -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done")
+        inside = true
+      elseif not start and self:word(k, "@past_relatives") and self:word_in(k + 1, k + 4, "@past_verbs")
+          and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0
+          and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft") then
+        -- ("resume the simulation from the point at which it was paused": the past told, nothing instructed)
+        inside, reason[k] = true, true
       elseif ((w and CM_WHILE[w] and self:word(k + 1, CM_OWN))
           or (punct and t.text == "," and self:word(k + 1, CM_OWN)
               and self:word_in(k + 2, commentary_end(self, k + 1), CM_LATER)))
@@ -5491,11 +5501,58 @@ local function numbered_steps(text)
   parts[#parts + 1] = text:sub(from)
   return table.concat(parts, ". ")
 end
+-- The translation of a clearance quoted whole in double quotes that the words outside name to be given again
+-- (lexicon.quoted_clearance), else nil. Outside, the words hold no value but a callsign (an aircraft of `fleet`)
+-- or a time of day h:mm:ss: the quoted clearance is read alone, for the aircraft named outside when it asks for
+-- one; an outside aircraft other than the one the quote instructs is asked about.
+M.quoted_words = { frames = set_of(lexicon.quoted_clearance.frames), not_frames = set_of(lexicon.quoted_clearance.not_frames) }
+function M.quoted_clearance(text, world)
+  local pre, quoted, post = text:match('^([^"\226]*)["\226\128\156]+([^"\226]+)["\226\128\157]+([^"\226]*)$')
+  if not quoted or not quoted:find("%a") then return nil end
+  local outside = pre .. " " .. post
+  local framed, rest = false, {}
+  for w in outside:lower():gmatch("[%a']+") do
+    if M.quoted_words.not_frames[w] then return nil end
+    framed = framed or M.quoted_words.frames[w] == true
+    if not M.quoted_words.frames[w] then rest[#rest + 1] = w end
+  end
+  -- (an instruction word outside, "... replay it and pause the simulation", is a request of its own: read whole)
+  if not framed or M.has_instruction(table.concat(rest, " ")) then return nil end
+  local fleet = world.aircraft
+  outside = airline_values(named_airline_ids(split_ids(unglued_ids(outside, fleet), fleet)), fleet)
+  outside = outside:gsub("%f[%d:]%d%d?:[0-5]%d:[0-5]%d%f[^%d:]", " ")
+  -- (an aircraft named outside: an id of the fleet, or a word with a digit after one to three capitalised words,
+  -- "Air Europa 5507"; any other word with a digit is a value)
+  local named, words = nil, {}
+  for w in outside:gmatch("%S+") do words[#words + 1] = w:gsub("['\226\128\153]s$", ""):gsub("%p+$", "") end
+  for i, w in ipairs(words) do
+    if w:find("%d") then
+      local b = i
+      local known = false
+      for _, a in ipairs(fleet) do known = known or a.id:upper() == w:upper() end
+      while not known and b > 1 and i - b < 3 and words[b - 1]:match("^%u%a+$") do b = b - 1 end
+      if named or (b == i and not known) then return nil end
+      named = table.concat(words, " ", b, i)
+    end
+  end
+  local r = M.translate(quoted, world)
+  if not named then return r end
+  local r2 = M.translate(named .. ", " .. quoted, world)
+  if #(r.commands or {}) == 0 then return r2 end
+  if table.concat(r.commands, ";") ~= table.concat(r2.commands or {}, ";") then
+    return { commands = {}, ask = string.format("The quoted clearance is '%s', but '%s' is named outside it. Which "
+      .. "aircraft do you mean?", quoted, named) }
+  end
+  return r
+end
+
 function M.translate(text, world)
   local said = text
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
+  local quoted = M.quoted_clearance(text, world)
+  if quoted then return quoted end
   text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
   -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number

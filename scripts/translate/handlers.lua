@@ -1552,6 +1552,13 @@ function m:at_time(s)
       -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
       -- 2 minutes EZY45 descend": left uncarried, so asked about)
       if q.b > s.trig and self:word_in(s.trig, w, "and then") then return nil end
+      -- (a time of the record compared with, "descend FL110, as the controller did at 10:42:15", "as recorded at
+      -- 10:42:15, ...", "... at 10:42:15, as recorded", is no time to act)
+      local after = self.t[q.e]
+      if (q.b > s.trig and self:word_in(s.trig, w, "@record_time")) or self:word(w - 1, "@record_time")
+          or (after and after.text == "," and self:word(q.e + 1, "@aside_comments")) then
+        return nil
+      end
       self:mark_used(q.b, q.e)
       self:mark_used(w, w + 1)
       -- ("pause it at the 20 minute mark": the time's noun after it)
