@@ -1233,13 +1233,15 @@ end
 -- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
 -- create a same-level encounter:")
-function G:commentary(b, e, lead)
+function G:commentary(b, e, lead, record)
   if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
   for _, q in ipairs(self:quantities(b, e)) do
     -- ("- this one is the Linate overflight", "- the long-haul one": "one" after a word standing for an aircraft)
     local pronoun = q.kind == "plain" and q.e == q.b + 1 and self:word(q.b, "one") and q.b > b
       and self.t[q.b - 1].kind == "word" and not self.t[q.b - 1].number_word
-    if not pronoun then return false end
+    -- (`record`: a time after a word of lexicon.record_past is the record's, ", as the controller did at 10:42:15")
+    local recorded = record and q.kind == "time" and self:word_in(b, q.b, "@record_past")
+    if not (pronoun or recorded) then return false end
   end
   for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
@@ -1404,8 +1406,9 @@ function G:in_reason(i)
         inside = true
       elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
           and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft")
-          and self:commentary(k + 1, commentary_end(self, k + 1)) then
-        -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done")
+          and self:commentary(k + 1, commentary_end(self, k + 1), false, true) then
+        -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
+        -- ", as the controller did at 10:42:15")
         inside = true
       elseif not start and self:word(k, "@past_relatives") and self:word_in(k + 1, k + 4, "@past_verbs")
           and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0

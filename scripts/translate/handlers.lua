@@ -1541,6 +1541,11 @@ function m:at_time(s)
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     local w = q.b - 1
     while w > 0 and self.t[w].filler do w = w - 1 end
+    -- (a time of the record in an aside set apart, ", as the controller did at 10:42:15", G:in_reason: accounted)
+    if q.kind == "time" and self:in_reason(q.b) and self:word_in(math.max(1, q.b - 6), q.b, "@record_past") then
+      self:mark_used(q.b, q.e)
+      return nil
+    end
     if q.kind == "time" and not self.taken[q.b] then
       local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
       -- ("at sim time 00:10:00 freeze": the clock's time named before it)

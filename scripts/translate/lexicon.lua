@@ -665,8 +665,12 @@ return {
   past_verbs = { "was", "were", "had" },
   -- words before a time said after an instruction that make it a time of the record compared with, never when to
   -- act ("as the controller did at 10:42:15", "as recorded at 15:21:40", "which is its position at 08:10:00"):
-  -- such a time schedules nothing and is asked about
-  record_time = { "as", "which", "recorded", "according", "did", "was", "were", "had", "logged", "observed" },
+  -- such a time schedules nothing and is asked about; after one of `record_past` in an aside of a report that
+  -- holds nothing else (aside_comments: ", as the controller did at 10:42:15") it is the record's, set aside
+  record_time = { "as", "which", "recorded", "according", "did", "was", "were", "had", "logged", "observed",
+      "corresponds", "corresponding" },
+  record_past = { "recorded", "according", "did", "was", "were", "had", "logged", "observed", "corresponds",
+      "corresponding" },
   -- "before it reaches the boundary", "before the Spanish border": a deadline at a part of the airspace squawk
   -- does not simulate, set aside after an instruction (flown now, it is met); its clause holds one of these,
   -- no value, place or instruction word ("before GIROM" and "before 10 minutes" are asked)

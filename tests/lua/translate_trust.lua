@@ -7158,12 +7158,15 @@ do
 end
 
 -- Cycle 41 (d88a): a time of day in a clause of record or comparison after an instruction ("as the controller did
--- at 09:14:30", "as logged at ...", "..., as recorded") schedules nothing: it is asked about; a time said as when to
--- act still schedules
+-- at 09:14:30", "as logged at ...", "..., as recorded") schedules nothing: after a word of record in an aside that
+-- holds nothing else it is set aside, else asked about; a time said as when to act still schedules
 do
   local _, ex = scene({ "DEFWPT DGA1 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL200 250", "CRE EZY45 A320 52.2 4.4 180 FL150 240" })
-  asked(ex("KLM12 should be told to climb to FL240, as the trainee did at 09:14:30"), "a time the trainee acted at")
-  asked(ex("Route EZY45 direct to DGA1, as logged at 11:02:10"), "a time of the log")
+  check_eq(ex("KLM12 should be told to climb to FL240, as the trainee did at 09:14:30"), "ALT KLM12 FL240")
+  check_eq(ex("Reduce EZY45 to 220 knots, as logged at 11:02:10."), "SPD EZY45 220")
+  asked(ex("KLM12 climb FL240, as the trainee will do in 2 minutes"), "a time to come in the remark")
+  asked(ex("KLM12 climb FL240, which is at 09:14:30"), "a time in a remark with no word of record")
+  asked(ex("KLM12 climb FL240, as the trainee did at 09:14:30 at 250 knots"), "a value beside the time of record")
   asked(ex("As recorded at 11:02:10, EZY45 reduce speed to 220 knots"), "a time of the record before the instruction")
   asked(ex("KLM12 climb FL240 at 09:14:30, as recorded"), "a time followed by a remark of record")
   asked(ex("Put EZY45 back at FL150, which was its level at 10:00:00"), "a time in a clause of record")
