@@ -5505,10 +5505,11 @@ local function numbered_steps(text)
   return table.concat(parts, ". ")
 end
 -- The translation of a clearance quoted whole in double quotes that the words outside name to be given again
--- (lexicon.quoted_clearance), else nil. Outside, the words hold no value but a callsign (an aircraft of `fleet`)
--- or a time of day h:mm:ss: the quoted clearance is read alone, for the aircraft named outside when it asks for
--- one; an outside aircraft other than the one the quote instructs is asked about.
-M.quoted_words = { frames = set_of(lexicon.quoted_clearance.frames), not_frames = set_of(lexicon.quoted_clearance.not_frames) }
+-- (lexicon.quoted_clearance), else nil. Outside, the words hold no value or word in capitals but a callsign (an
+-- aircraft of `fleet`) or a time of day h:mm:ss: the quoted clearance is read alone, for the aircraft named outside
+-- when it asks for one; an outside aircraft other than the one the quote instructs is asked about.
+M.quoted_words = { frames = set_of(lexicon.quoted_clearance.frames),
+  not_frames = set_of(lexicon.quoted_clearance.not_frames) }
 function M.quoted_clearance(text, world)
   local pre, quoted, post = text:match('^([^"\226]*)["\226\128\156]+([^"\226]+)["\226\128\157]+([^"\226]*)$')
   if not quoted or not quoted:find("%a") then return nil end
@@ -5529,11 +5530,13 @@ function M.quoted_clearance(text, world)
   local named, words = nil, {}
   for w in outside:gmatch("%S+") do words[#words + 1] = w:gsub("['\226\128\153]s$", ""):gsub("%p+$", "") end
   for i, w in ipairs(words) do
-    if w:find("%d") then
+    -- (a word in capitals that is no aircraft of the fleet, "over GIROM", names a place: read whole)
+    local caps = w:match("^%u%u+$") ~= nil
+    if w:find("%d") or caps then
       local b = i
       local known = false
       for _, a in ipairs(fleet) do known = known or a.id:upper() == w:upper() end
-      while not known and b > 1 and i - b < 3 and words[b - 1]:match("^%u%a+$") do b = b - 1 end
+      while not known and not caps and b > 1 and i - b < 3 and words[b - 1]:match("^%u%a+$") do b = b - 1 end
       if named or (b == i and not known) then return nil end
       named = table.concat(words, " ", b, i)
     end

@@ -647,13 +647,17 @@ return {
                            "participant", "subject", "iteration", "rep", "replication", "day", "serial" } },
   -- a clearance quoted whole in double quotes ('the transcript reads "KLM12, turn left heading 230"; replay it'):
   -- the words outside the quotes name it to be given again with one of `frames` and hold none of `not_frames`
-  -- (text for the log, a negation or a correction) and no value but a callsign or a time of day; then the quoted
-  -- clearance is the request, for the aircraft named outside when it names none
+  -- (text for the log, a negation, a correction or a condition), no value but a callsign or a time of day and no
+  -- other word in capitals (a place); then the quoted clearance is the request, for the aircraft named outside when
+  -- it names none
   quoted_clearance = {
     frames = { "replay", "replayed", "reproduce", "reproduced", "given", "give", "entered", "enter", "issued",
       "issue", "repeat", "repeated", "reissue", "reissued", "executed", "execute", "input", "applied", "apply" },
     not_frames = { "echo", "print", "log", "screen", "note", "display", "type", "typed", "write", "message", "text",
-      "not", "don't", "dont", "instead", "but", "except", "correction", "without", "rather", "wrong", "never" } },
+      "not", "don't", "dont", "instead", "but", "except", "correction", "without", "rather", "wrong", "never",
+      -- (a condition said outside: "... over GIROM", "when level")
+      "if", "when", "whenever", "once", "after", "until", "till", "before", "unless", "over", "abeam", "passing",
+      "reaching", "overhead" } },
   -- a clause after a comma opening with one of these that compares an instruction with a record or justifies
   -- it (", as the transcript shows", ", which is what the controller ought to have done"): set aside when it
   -- is commentary (G:commentary: no value, place, aircraft or instruction word), else asked

@@ -7198,9 +7198,11 @@ end
 
 -- Cycle 41 (d88a): a clearance quoted whole in double quotes that the words outside give again ("replay it", "must now be
 -- given", "should be entered") is the request, for the aircraft named outside when it names none; an outside aircraft
--- other than the quote's, a value, a negation or an instruction outside keeps the whole read (asked)
+-- other than the quote's, a value, a place, a condition, a negation or an instruction outside keeps the whole read
+-- (asked)
 do
-  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 250", "CRE EZY45 A320 52.2 4.4 180 FL150 240" })
+  local _, ex = scene({ "DEFWPT DGA1 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL200 250",
+    "CRE EZY45 A320 52.2 4.4 180 FL150 240" })
   check_eq(ex('The tape has "KLM12, descend flight level one six zero"; replay it.'), "ALT KLM12 FL160")
   check_eq(ex('The instruction given to EZY45 at 10:05:00, "turn left heading one two zero", should now be entered.'),
     "HDG EZY45 120 LEFT")
@@ -7210,5 +7212,7 @@ do
   asked(ex('The tape has "KLM12, descend flight level one six zero", but replay it with 150.'), "a change outside")
   asked(ex('The tape has "descend flight level one six zero"; replay it and pause the simulation.'),
     "an instruction outside")
+  asked(ex('The tape has "KLM12, descend flight level one six zero" over DGA1; replay it.'), "a place outside")
+  asked(ex('The tape has "KLM12, descend flight level one six zero" once level; replay it.'), "a condition outside")
   check_eq(ex('echo "KLM12 descend FL160" to the log'), 'ECHO "KLM12 descend FL160" to the log')
 end
