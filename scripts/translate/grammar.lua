@@ -1358,6 +1358,20 @@ local function whole_note(self, k)
   return true
 end
 
+-- True when the relative clause at k tells what was done before ("at which it was paused", "where it was
+-- stopped"): one of lexicon.past_relatives, one of past_verbs within three words, then no value, aircraft or
+-- instruction word up to the clause's end but the participle right after the past verb.
+function G:past_told(k)
+  if not self:word(k, "@past_relatives") then return false end
+  local p = self:find_word(k + 1, k + 4, "@past_verbs")
+  local e = commentary_end(self, k + 1)
+  if p >= k + 4 or #self:quantities(k + 1, e) > 0 or self:has_ref(k + 1, e, "aircraft") then return false end
+  for x = p + 2, e - 1 do
+    if self:intent_at(x) then return false end
+  end
+  return true
+end
+
 local REASON_WORDS = word_set("@reason")
 function G:in_reason(i)
   if not self.reason then
@@ -1410,9 +1424,7 @@ function G:in_reason(i)
         -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
         -- ", as the controller did at 10:42:15")
         inside = true
-      elseif not start and self:word(k, "@past_relatives") and self:word_in(k + 1, k + 4, "@past_verbs")
-          and #self:quantities(k + 1, commentary_end(self, k + 1)) == 0
-          and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft") then
+      elseif not start and self:past_told(k) then
         -- ("resume the simulation from the point at which it was paused": the past told, nothing instructed)
         inside, reason[k] = true, true
       elseif ((w and CM_WHILE[w] and self:word(k + 1, CM_OWN))

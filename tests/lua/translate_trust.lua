@@ -7175,13 +7175,16 @@ do
 end
 
 -- Cycle 41 (d88a): a relative clause telling what was done before ("from the point at which it was halted", "where it
--- was paused") instructs nothing: its verb is no second instruction, nor its "at" a rate
+-- was paused") instructs nothing: its verb is no second instruction, nor its "at" a rate; one holding a value or
+-- another instruction word is asked
 do
   local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 250" })
   check_eq(ex("Resume the simulation from where it was paused"), "OP")
   check_eq(ex("Resume the exercise from the moment at which it was frozen"), "OP")
   check_eq(ex("resume the simulation at 3x"), "OP ; DTMULT 3")
   asked(ex("Resume the simulation from the point at which it was paused at 01:00:00"), "a value in the past clause")
+  asked(ex("Turn KLM12 left heading 090, which was the heading it flew when it was cleared to descend."),
+    "an instruction word in the past clause")
 end
 
 -- Cycle 41 (d88a): a remark after a complete instruction opening with "as", "which" or "according" (", as the
