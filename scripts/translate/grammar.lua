@@ -1233,13 +1233,15 @@ end
 -- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
 -- create a same-level encounter:")
-function G:commentary(b, e, lead)
+function G:commentary(b, e, lead, record)
   if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
   for _, q in ipairs(self:quantities(b, e)) do
     -- ("- this one is the Linate overflight", "- the long-haul one": "one" after a word standing for an aircraft)
     local pronoun = q.kind == "plain" and q.e == q.b + 1 and self:word(q.b, "one") and q.b > b
       and self.t[q.b - 1].kind == "word" and not self.t[q.b - 1].number_word
-    if not pronoun then return false end
+    -- (`record`: a time after a word of lexicon.record_past is the record's, ", as the controller did at 10:42:15")
+    local recorded = record and q.kind == "time" and self:word_in(b, q.b, "@record_past")
+    if not (pronoun or recorded) then return false end
   end
   for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
@@ -1356,6 +1358,20 @@ local function whole_note(self, k)
   return true
 end
 
+-- True when the relative clause at k tells what was done before ("at which it was paused", "where it was
+-- stopped"): one of lexicon.past_relatives, one of past_verbs within three words, then no value, aircraft or
+-- instruction word up to the clause's end but the participle right after the past verb.
+function G:past_told(k)
+  if not self:word(k, "@past_relatives") then return false end
+  local p = self:find_word(k + 1, k + 4, "@past_verbs")
+  local e = commentary_end(self, k + 1)
+  if p >= k + 4 or #self:quantities(k + 1, e) > 0 or self:has_ref(k + 1, e, "aircraft") then return false end
+  for x = p + 2, e - 1 do
+    if self:intent_at(x) then return false end
+  end
+  return true
+end
+
 local REASON_WORDS = word_set("@reason")
 function G:in_reason(i)
   if not self.reason then
@@ -1402,6 +1418,15 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase")
         inside = true
+      elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
+          and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft")
+          and self:commentary(k + 1, commentary_end(self, k + 1), false, true) then
+        -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
+        -- ", as the controller did at 10:42:15")
+        inside = true
+      elseif not start and self:past_told(k) then
+        -- ("resume the simulation from the point at which it was paused": the past told, nothing instructed)
+        inside, reason[k] = true, true
       elseif ((w and CM_WHILE[w] and self:word(k + 1, CM_OWN))
           or (punct and t.text == "," and self:word(k + 1, CM_OWN)
               and self:word_in(k + 2, commentary_end(self, k + 1), CM_LATER)))
@@ -5554,11 +5579,61 @@ local function numbered_steps(text)
   parts[#parts + 1] = text:sub(from)
   return table.concat(parts, ". ")
 end
+-- The translation of a clearance quoted whole in double quotes that the words outside name to be given again
+-- (lexicon.quoted_clearance), else nil. Outside, the words hold no value or word in capitals but a callsign (an
+-- aircraft of `fleet`) or a time of day h:mm:ss: the quoted clearance is read alone, for the aircraft named outside
+-- when it asks for one; an outside aircraft other than the one the quote instructs is asked about.
+M.quoted_words = { frames = set_of(lexicon.quoted_clearance.frames),
+  not_frames = set_of(lexicon.quoted_clearance.not_frames) }
+function M.quoted_clearance(text, world)
+  local pre, quoted, post = text:match('^([^"\226]*)["\226\128\156]+([^"\226]+)["\226\128\157]+([^"\226]*)$')
+  if not quoted or not quoted:find("%a") then return nil end
+  local outside = pre .. " " .. post
+  local framed, rest = false, {}
+  for w in outside:lower():gmatch("[%a']+") do
+    if M.quoted_words.not_frames[w] then return nil end
+    framed = framed or M.quoted_words.frames[w] == true
+    if not M.quoted_words.frames[w] then rest[#rest + 1] = w end
+  end
+  -- (an instruction word outside, "... replay it and pause the simulation", is a request of its own: read whole)
+  if not framed or M.has_instruction(table.concat(rest, " ")) then return nil end
+  local fleet = world.aircraft
+  outside = airline_values(named_airline_ids(split_ids(unglued_ids(outside, fleet), fleet)), fleet)
+  outside = outside:gsub("%f[%d:]%d%d?:[0-5]%d:[0-5]%d%f[^%d:]", " ")
+  -- (an aircraft named outside: an id of the fleet, or a word with a digit after one to three capitalised words,
+  -- "Air Europa 5507"; any other word with a digit is a value)
+  local named, words = nil, {}
+  for w in outside:gmatch("%S+") do words[#words + 1] = w:gsub("['\226\128\153]s$", ""):gsub("%p+$", "") end
+  for i, w in ipairs(words) do
+    -- (a word in capitals that is no aircraft of the fleet, "over GIROM", names a place: read whole)
+    local caps = w:match("^%u%u+$") ~= nil
+    if w:find("%d") or caps then
+      local b = i
+      local known = false
+      for _, a in ipairs(fleet) do known = known or a.id:upper() == w:upper() end
+      while not known and not caps and b > 1 and i - b < 3 and words[b - 1]:match("^%u%a+$") do b = b - 1 end
+      if named or (b == i and not known) then return nil end
+      named = table.concat(words, " ", b, i)
+    end
+  end
+  local r = M.translate(quoted, world)
+  if not named then return r end
+  local r2 = M.translate(named .. ", " .. quoted, world)
+  if #(r.commands or {}) == 0 then return r2 end
+  if table.concat(r.commands, ";") ~= table.concat(r2.commands or {}, ";") then
+    return { commands = {}, ask = string.format("The quoted clearance is '%s', but '%s' is named outside it. Which "
+      .. "aircraft do you mean?", quoted, named) }
+  end
+  return r
+end
+
 function M.translate(text, world)
   local said = text
   world = world or {}
   world.aircraft = world.aircraft or {}
   world.waypoints = world.waypoints or {}
+  local quoted = M.quoted_clearance(text, world)
+  if quoted then return quoted end
   text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
   -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number

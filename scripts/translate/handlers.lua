@@ -1588,6 +1588,11 @@ function m:at_time(s)
   for _, q in ipairs(self:quantities(s.b, s.e)) do
     local w = q.b - 1
     while w > 0 and self.t[w].filler do w = w - 1 end
+    -- (a time of the record in an aside set apart, ", as the controller did at 10:42:15", G:in_reason: accounted)
+    if q.kind == "time" and self:in_reason(q.b) and self:word_in(math.max(1, q.b - 6), q.b, "@record_past") then
+      self:mark_used(q.b, q.e)
+      return nil
+    end
     if q.kind == "time" and not self.taken[q.b] then
       local clock = self:word(w, "@clock_reaches") and self:word_in(math.max(1, w - 3), w, "@sim")
       -- ("at sim time 00:10:00 freeze": the clock's time named before it)
@@ -1599,6 +1604,13 @@ function m:at_time(s)
       -- (after "and" past the instruction word it opens the next instruction: "KL204 climb FL300 and in
       -- 2 minutes EZY45 descend": left uncarried, so asked about)
       if q.b > s.trig and self:word_in(s.trig, w, "and then") then return nil end
+      -- (a time of the record compared with, "descend FL110, as the controller did at 10:42:15", "as recorded at
+      -- 10:42:15, ...", "... at 10:42:15, as recorded", is no time to act)
+      local after = self.t[q.e]
+      if (q.b > s.trig and self:word_in(s.trig, w, "@record_time")) or self:word(w - 1, "@record_time")
+          or (after and after.text == "," and self:word(q.e + 1, "@aside_comments")) then
+        return nil
+      end
       self:mark_used(q.b, q.e)
       self:mark_used(w, w + 1)
       -- ("pause it at the 20 minute mark": the time's noun after it)

@@ -2720,7 +2720,9 @@ return function(H, f, compass)
       return self:need("Should the simulation start running (OP), or run at real-time rate again (DTMULT 1)?")
     end
     self:emit("OP")
-    if self:find_word(s.trig + 1, s.e, "at") < s.e then self:time_mult(s) end
+    -- ("from the point at which it was paused": an "at" opening a remark, G:in_reason, says no rate)
+    local at = self:find_word(s.trig + 1, s.e, "at")
+    if at < s.e and not self:in_reason(at + 1) then self:time_mult(s) end
   end
 
   -- first quantity of one of `kinds` in the segment, or nil

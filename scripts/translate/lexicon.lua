@@ -647,6 +647,36 @@ return {
           study_labels = { "exp", "expt", "experiment", "run", "trial", "session", "block", "condition", "cond",
                            "scenario", "scen", "case", "batch", "series", "phase", "episode", "test", "config",
                            "participant", "subject", "iteration", "rep", "replication", "day", "serial" } },
+  -- a clearance quoted whole in double quotes ('the transcript reads "KLM12, turn left heading 230"; replay it'):
+  -- the words outside the quotes name it to be given again with one of `frames` and hold none of `not_frames`
+  -- (text for the log, a negation, a correction or a condition), no value but a callsign or a time of day and no
+  -- other word in capitals (a place); then the quoted clearance is the request, for the aircraft named outside when
+  -- it names none
+  quoted_clearance = {
+    frames = { "replay", "replayed", "reproduce", "reproduced", "given", "give", "entered", "enter", "issued",
+      "issue", "repeat", "repeated", "reissue", "reissued", "executed", "execute", "input", "applied", "apply" },
+    not_frames = { "echo", "print", "log", "screen", "note", "display", "type", "typed", "write", "message", "text",
+      "not", "don't", "dont", "instead", "but", "except", "correction", "without", "rather", "wrong", "never",
+      -- (a condition said outside: "... over GIROM", "when level")
+      "if", "when", "whenever", "once", "after", "until", "till", "before", "unless", "over", "abeam", "passing",
+      "reaching", "overhead" } },
+  -- a clause after a comma opening with one of these that compares an instruction with a record or justifies
+  -- it (", as the transcript shows", ", which is what the controller ought to have done"): set aside when it
+  -- is commentary (G:commentary: no value, place, aircraft or instruction word), else asked
+  aside_comments = { "as", "which", "according" },
+  -- a relative clause telling what was done in the past ("from the point at which it was paused", "where it
+  -- was stopped"): one of `past_relatives` not opening its sentence, then within three words one of `past_verbs`;
+  -- set aside when it holds no value or aircraft (its verb instructs nothing)
+  past_relatives = { "which", "where", "when" },
+  past_verbs = { "was", "were", "had" },
+  -- words before a time said after an instruction that make it a time of the record compared with, never when to
+  -- act ("as the controller did at 10:42:15", "as recorded at 15:21:40", "which is its position at 08:10:00"):
+  -- such a time schedules nothing and is asked about; after one of `record_past` in an aside of a report that
+  -- holds nothing else (aside_comments: ", as the controller did at 10:42:15") it is the record's, set aside
+  record_time = { "as", "which", "recorded", "according", "did", "was", "were", "had", "logged", "observed",
+      "corresponds", "corresponding" },
+  record_past = { "recorded", "according", "did", "was", "were", "had", "logged", "observed", "corresponds",
+      "corresponding" },
   -- "before it reaches the boundary", "before the Spanish border": a deadline at a part of the airspace squawk
   -- does not simulate, set aside after an instruction (flown now, it is met); its clause holds one of these,
   -- no value, place or instruction word ("before GIROM" and "before 10 minutes" are asked)
@@ -663,7 +693,7 @@ return {
   purpose_modals = { "should", "will", "would", "must" },
   -- abbreviations written in capitals that name no place
   not_names = { "vfr", "ifr", "fms", "atis", "qnh", "qfe", "cpa", "los", "eta", "etd", "sid", "star", "nm",
-      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz", "ias",
+      "kts", "fpm", "agl", "msl", "amsl", "rnp", "ctr", "tma", "atz", "ias", "stca", "fdr",
       -- a study's questionnaires and measures ("fill in the NASA-TLX")
       "nasa", "tlx", "nasa-tlx" },
   -- words before a waypoint that a direct-to flies past ("skip TP1 and go direct TP2")

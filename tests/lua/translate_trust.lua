@@ -7362,3 +7362,66 @@ do
   check(r.ask ~= nil and r.ask:find("exactly FL120", 1, true) ~= nil, said(r))
   check_eq(ex("KLM12 cross RSF FL120"), "AT KLM12 RSF ALT FL120")
 end
+
+-- Cycle 41 (d88a): a time of day in a clause of record or comparison after an instruction ("as the controller did
+-- at 09:14:30", "as logged at ...", "..., as recorded") schedules nothing: after a word of record in an aside that
+-- holds nothing else it is set aside, else asked about; a time said as when to act still schedules
+do
+  local _, ex = scene({ "DEFWPT DGA1 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL200 250", "CRE EZY45 A320 52.2 4.4 180 FL150 240" })
+  check_eq(ex("KLM12 should be told to climb to FL240, as the trainee did at 09:14:30"), "ALT KLM12 FL240")
+  check_eq(ex("Reduce EZY45 to 220 knots, as logged at 11:02:10."), "SPD EZY45 220")
+  asked(ex("KLM12 climb FL240, as the trainee will do in 2 minutes"), "a time to come in the remark")
+  asked(ex("KLM12 climb FL240, which is at 09:14:30"), "a time in a remark with no word of record")
+  asked(ex("KLM12 climb FL240, as the trainee did at 09:14:30 at 250 knots"), "a value beside the time of record")
+  asked(ex("As recorded at 11:02:10, EZY45 reduce speed to 220 knots"), "a time of the record before the instruction")
+  asked(ex("KLM12 climb FL240 at 09:14:30, as recorded"), "a time followed by a remark of record")
+  asked(ex("Put EZY45 back at FL150, which was its level at 10:00:00"), "a time in a clause of record")
+  check_eq(ex("KLM12 climb FL240 at 09:14:30"), "SCHEDULE 09:14:30 ALT KLM12 FL240")
+  check_eq(ex("at 09:14:30 EZY45 reduce speed to 220 knots"), "SCHEDULE 09:14:30 SPD EZY45 220")
+end
+
+-- Cycle 41 (d88a): a relative clause telling what was done before ("from the point at which it was halted", "where it
+-- was paused") instructs nothing: its verb is no second instruction, nor its "at" a rate; one holding a value or
+-- another instruction word is asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 250" })
+  check_eq(ex("Resume the simulation from where it was paused"), "OP")
+  check_eq(ex("Resume the exercise from the moment at which it was frozen"), "OP")
+  check_eq(ex("resume the simulation at 3x"), "OP ; DTMULT 3")
+  asked(ex("Resume the simulation from the point at which it was paused at 01:00:00"), "a value in the past clause")
+  asked(ex("Turn KLM12 left heading 090, which was the heading it flew when it was cleared to descend."),
+    "an instruction word in the past clause")
+end
+
+-- Cycle 41 (d88a): a remark after a complete instruction opening with "as", "which" or "according" (", as the
+-- recording shows", ", which is what the supervisor wanted") is set aside when it holds no value, place, aircraft or
+-- instruction word; one holding a value or an aircraft is asked about
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL200 250", "CRE EZY45 A320 52.2 4.4 180 FL150 240" })
+  check_eq(ex("Climb KLM12 to FL260, as the recording shows."), "ALT KLM12 FL260")
+  check_eq(ex("Turn EZY45 right heading 200, which is what the supervisor would have preferred."), "HDG EZY45 200 RIGHT")
+  check_eq(ex("Set the protected zone radius to 4 nautical miles, as the STCA of that centre would have used."), "ZONER 4")
+  asked(ex("Climb KLM12 to FL260, which matches the climb of the other one."), "an aircraft meant in the remark")
+  asked(ex("Climb KLM12 to FL260, as the recording shows, and reduce speed."), "an instruction after the remark")
+end
+
+-- Cycle 41 (d88a): a clearance quoted whole in double quotes that the words outside give again ("replay it", "must now be
+-- given", "should be entered") is the request, for the aircraft named outside when it names none; an outside aircraft
+-- other than the quote's, a value, a place, a condition, a negation or an instruction outside keeps the whole read
+-- (asked)
+do
+  local _, ex = scene({ "DEFWPT DGA1 52.5 4.5", "CRE KLM12 B738 52.0 4.0 090 FL200 250",
+    "CRE EZY45 A320 52.2 4.4 180 FL150 240" })
+  check_eq(ex('The tape has "KLM12, descend flight level one six zero"; replay it.'), "ALT KLM12 FL160")
+  check_eq(ex('The instruction given to EZY45 at 10:05:00, "turn left heading one two zero", should now be entered.'),
+    "HDG EZY45 120 LEFT")
+  check_eq(ex('Her next call, "KLM12, reduce speed two two zero knots, climb flight level two one zero", must now be given.'),
+    "SPD KLM12 220 ; ALT KLM12 FL210")
+  asked(ex('The call to EZY45 was "KLM12, descend flight level one six zero"; replay it.'), "two aircraft")
+  asked(ex('The tape has "KLM12, descend flight level one six zero", but replay it with 150.'), "a change outside")
+  asked(ex('The tape has "descend flight level one six zero"; replay it and pause the simulation.'),
+    "an instruction outside")
+  asked(ex('The tape has "KLM12, descend flight level one six zero" over DGA1; replay it.'), "a place outside")
+  asked(ex('The tape has "KLM12, descend flight level one six zero" once level; replay it.'), "a condition outside")
+  check_eq(ex('echo "KLM12 descend FL160" to the log'), 'ECHO "KLM12 descend FL160" to the log')
+end
