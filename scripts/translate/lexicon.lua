@@ -91,6 +91,8 @@ return {
         "precisely", "roughly", "approximately",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
+        -- (a report's order of events and degree: "was subsequently given", "disable it altogether")
+        "subsequently", "thereafter", "altogether",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
         -- the same markers in Spanish and Portuguese, said in English by their speakers ("vamos, LATAM 3402 ...",
         -- "bueno, ...", "entonces ...", "bom, ...", "olha: ...")
@@ -283,7 +285,10 @@ return {
         "eye", "tracker", "eye-tracker", "nasa", "tlx", "nasa-tlx", "questionnaire", "workload", "geometry",
         "calibrated", "crossing", "condition", "conditions", "baseline", "measurement", "measurements",
         -- a part of the airspace a study is run in ("for the terminal area trials")
-        "terminal", "en-route", "enroute" },
+        "terminal", "en-route", "enroute",
+        -- an incident investigation's reconstruction and its narration of what was cleared ("the second
+        -- aircraft of the pair", "an additional aircraft", "was then given a descent to FL120")
+        "reconstruction", "investigation", "investigators", "investigator", "pair", "additional", "given", "reduction" },
 
     -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
     prefixes = { "co", "non", "pre", "semi", "sub", "multi", "re" },

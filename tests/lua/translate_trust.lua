@@ -7156,3 +7156,33 @@ do
   asked(ex("EZY45 reduce to max speed, turn left heading 090"), "a speed named by what it is, beside a heading")
   check_eq(ex("EZY45 reduce to minimum clean speed, 210 knots"), "SPD EZY45 210")
 end
+
+-- Cycle 41 (d88b): a report's narration of a clearance to replay ("X was subsequently given a speed
+-- reduction to 250 knots", "the Lufthansa was then instructed to descend"), its words of the reconstruction
+-- ("the second aircraft of the pair", "an additional aircraft"), and Portugalia (PGA) by its telephony
+do
+  local _, ex = scene({ "CRE IBE7721 A320 40.9 -3.5 190 FL150 280", "CRE DLH604 A321 41.2 -3.1 100 FL200 290",
+    "CRE PGA2044 E195 41.3 -8.2 270 9000 260" })
+  check_eq(ex("IBE7721 was subsequently given a speed reduction to 230 knots."), "SPD IBE7721 230")
+  check_eq(ex("The Lufthansa was thereafter instructed to climb to flight level 240."), "ALT DLH604 FL240")
+  check_eq(ex("Lufthansa 604 was then given a climb to FL220; please enter that."), "ALT DLH604 FL220")
+  check_eq(ex("Remove Portugalia 2044."), "DEL PGA2044")
+  check_eq(ex("Create an additional aircraft, IBE118, type A319, at 40.5 north 3.2 west, heading 045, FL090, 220 knots."),
+    "CRE IBE118 A319 40.5 -3.2 45 FL90 220")
+  check_eq(ex("Create the other aircraft of the pair, IBE119, an A320, at 40.6 north, 3.1 west, heading 100, FL100, 240 knots."),
+    "CRE IBE119 A320 40.6 -3.1 100 FL100 240")
+  -- still asked: narration with no value given, and a word of the report that is not narration
+  asked(ex("IBE7721 was subsequently given a speed reduction."), "a reduction with no speed")
+  asked(ex("DLH604 was then given a descent to FL120 by mistake, contrary to procedure."), "a remark beside it")
+end
+
+-- Cycle 41 (d88b): a report requested as what is needed or wanted ("I need the position of X", "we want the
+-- level and speed of X"), and where an aircraft is, asked to be indicated
+do
+  local _, ex = scene({ "CRE TAP2210 A320 38.5 -9.1 350 FL080 250", "CRE EZY31K A320 41.0 -3.0 100 FL200 280" })
+  check_eq(ex("I need the position of TAP2210."), "POS TAP2210")
+  check_eq(ex("We want the level and speed of EZY31K, please."), "POS EZY31K")
+  check_eq(ex("Please indicate where EZY31K is."), "POS EZY31K")
+  -- still asked: something to be done with the state, not a report of it
+  asked(ex("I need the position of TAP2210 changed"), "a state wanted changed")
+end
