@@ -286,9 +286,9 @@ return {
         "calibrated", "crossing", "condition", "conditions", "baseline", "measurement", "measurements",
         -- a part of the airspace a study is run in ("for the terminal area trials")
         "terminal", "en-route", "enroute",
-        -- an incident investigation's reconstruction and its narration of what was cleared ("the second
-        -- aircraft of the pair", "an additional aircraft", "was then given a descent to FL120")
-        "reconstruction", "investigation", "investigators", "investigator", "pair", "additional", "given", "reduction" },
+        -- an incident investigation's reconstruction and its narration of what was cleared ("an additional
+        -- aircraft", "was then given a descent to FL120", "a speed reduction to 250 knots")
+        "reconstruction", "investigation", "investigators", "investigator", "additional", "given", "reduction" },
 
     -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
     prefixes = { "co", "non", "pre", "semi", "sub", "multi", "re" },
@@ -900,7 +900,7 @@ return {
   named = { "named", "called" },
   -- a place name's "Saint" said in full or short, each tried as the other in navaid names ("saint prex", ST. PREX)
   saint_forms = { saint = "st", st = "saint" },
-  id_words = { "named", "called", "callsign", "id" },
+  id_words = { "named", "called", "callsign", "id", "registration", "registered" },
   -- words after an airport's name ("Beijing Capital airport")
   -- air traffic units named by no airport or city ("Shanwick", "Scottish"; the rest are the navdata's
   -- airport and city names): a station in the addressing position (G:explained_spans)
