@@ -933,6 +933,11 @@ return function(intent, rule, words)
   rule { "start like", "create", near = { 2, "@articles_new" }, when = function(g, i)
     return g:has_ref(i + 1, i + 7, "type") and g:new_aircraft_follows(g:find_word(i + 1, i + 7, "@articles_new"))
   end }
+  -- "We begin the reconstruction with IBE3142, an Airbus A320, at ...": a new callsign after "begin", its type
+  -- said with it
+  rule { "begin", "create", when = function(g, i)
+    return g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 10, "type")
+  end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...", "insert SAS19K B736 at ...": a type or a new callsign
   -- right after the verb
   rule { "add put new spawn insert adding", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
