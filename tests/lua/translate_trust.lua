@@ -7202,3 +7202,13 @@ do
   asked(ex("Create Binter 406, call sign IBB460, an ATR 72-600, at 41.5 north, 8.4 west, heading 200, FL120, 230 knots."),
     "a spoken and a written callsign that differ")
 end
+
+-- Cycle 41 (d88b): trails asked for as something added ("add trail lines so the tracks can be compared") are
+-- shown; a request that says neither shown nor hidden is still asked
+do
+  local _, ex = scene({ "CRE IBE7721 A320 40.9 -3.5 190 FL150 280" })
+  check_eq(ex("Add trail lines so that the two tracks can be compared later."), "TRAIL ON")
+  check_eq(ex("add trails every 20 seconds"), "TRAIL ON 20")
+  check_eq(ex("remove the trails"), "TRAIL OFF")
+  asked(ex("clear trails"), "trails neither shown nor hidden")
+end
