@@ -72,7 +72,9 @@ return {
     auxiliaries = { "be", "am", "is", "are", "was", "were", "been", "being", "have", "has", "had", "having", "do",
         "does", "did", "doing", "done", "get", "gets", "got", "getting", "go", "goes", "going", "gonna" },
     modals = { "can", "could", "may", "might", "must", "shall", "should", "will", "would", "ought", "need",
-        "needs", "wanna" },
+        "needs", "wanna",
+        -- (an obligation a report states: "X is required to cross CNR at FL120")
+        "required", "obliged" },
     prepositions = { "about", "above", "across", "against", "along", "among", "around", "as", "at", "behind",
         "below", "beneath", "beside", "between", "beyond", "by", "down", "during", "for", "from", "in", "inside",
         "into", "like", "near", "of", "off", "on", "onto", "out", "outside", "over", "past", "per", "than",
@@ -465,10 +467,10 @@ return {
   forget = { "forget" },
   -- an aircraft named as the subject of one of `described` is described, not instructed (G:described): "X and Y are
   -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there"; unless one of `described_not`
-  -- follows ("X is cleared FL200", "X is to climb")
+  -- follows ("X is cleared FL200", "X is to climb", "X is required to cross CNR at FL120")
   described = { "is", "are", "keeps", "stays", "remains", "sits" },
   described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "gonna", "climbing",
-                    "descending", "turning", "both", "also" },
+                    "descending", "turning", "both", "also", "required", "obliged" },
   -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- words after which a clause is a new instruction

@@ -7212,3 +7212,13 @@ do
   check_eq(ex("remove the trails"), "TRAIL OFF")
   asked(ex("clear trails"), "trails neither shown nor hidden")
 end
+
+-- Cycle 41 (d88b): an obligation a report states ("X is required to cross CNR at FL120", "X is obliged to
+-- turn left heading 200") is the instruction, as "X is to ..." is; "is required" with nothing to do is asked
+do
+  local _, ex = scene({ "DEFWPT DBB1 40.5 -3.5", "CRE IBE7721 A320 40.9 -3.5 190 FL150 280", "ADDWPT IBE7721 DBB1" })
+  check_eq(ex("IBE7721 is required to cross DBB1 at flight level 130."), "AT IBE7721 DBB1 ALT FL130")
+  check_eq(ex("IBE7721 is obliged to turn left heading 200."), "HDG IBE7721 200 LEFT")
+  asked(ex("IBE7721 is required"), "an obligation with nothing to do")
+  asked(ex("IBE7721 is expected at FL200"), "an expectation, no obligation")
+end
