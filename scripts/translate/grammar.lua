@@ -5207,8 +5207,16 @@ local AIRLINE_WORDS = {}
 for _, a in ipairs(names.airlines) do AIRLINE_WORDS[a[1]] = a[2] end
 for _, a in ipairs(names.common) do AIRLINE_WORDS[a[1]] = AIRLINE_WORDS[a[1]] or a[2] end
 -- "put in a Transat A321, TSC 302, at FRANX": an airline's ICAO code typed in capitals apart from its flight
--- number is joined to it when the request names that airline by a word of its own ("Transat": TSC)
+-- number is joined to it when the request names that airline by a word of its own ("Transat": TSC).
+-- "Create Portugalia 1921, call sign PGA1921, ...": a callsign said by its airline's one-word telephony and
+-- then written out after "callsign" (the same airline, the same flight number) is said once, as written.
 local function named_airline_ids(text)
+  if text:find("[Cc]all[%s%-]*[Ss]ign") then
+    text = text:gsub("%f[%a](%a+)%s+(%d+%a*)%s*,%s*[Cc]all[%s%-]*[Ss]ign%s+(%u%u%u)(%w+)%f[%W]", function(w, n, code, num)
+      if AIRLINE_WORDS[w:lower()] == code and n:upper() == num:upper() then return code .. num end
+      return nil
+    end)
+  end
   if not text:find("%u%u%u%s+%d") then return text end
   local said = {}
   for w in text:gmatch("%a+") do

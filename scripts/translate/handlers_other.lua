@@ -3181,9 +3181,9 @@ return function(H, f, compass)
     end
     local q = first(self, s, { time = true })
     -- ("clear trails": neither shown nor hidden said, no interval and no switch before it: asked)
-    -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail", "set up trails for all
-    -- tracks": shown)
-    local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give")
+    -- ("draw trails behind the aircraft", "display the trails", "give every plane a trail", "add trail lines",
+    -- "set up trails for all tracks": shown)
+    local drawn = self:word_in(math.max(1, s.b - 4), s.e, "draw display give add")
     for k = math.max(1, s.b - 4), s.e - 1 do
       drawn = drawn or (self:word(k, "set") and self:word(k + 1, "up"))
     end

@@ -72,7 +72,9 @@ return {
     auxiliaries = { "be", "am", "is", "are", "was", "were", "been", "being", "have", "has", "had", "having", "do",
         "does", "did", "doing", "done", "get", "gets", "got", "getting", "go", "goes", "going", "gonna" },
     modals = { "can", "could", "may", "might", "must", "shall", "should", "will", "would", "ought", "need",
-        "needs", "wanna" },
+        "needs", "wanna",
+        -- (an obligation a report states: "X is required to cross CNR at FL120")
+        "required", "obliged" },
     prepositions = { "about", "above", "across", "against", "along", "among", "around", "as", "at", "behind",
         "below", "beneath", "beside", "between", "beyond", "by", "down", "during", "for", "from", "in", "inside",
         "into", "like", "near", "of", "off", "on", "onto", "out", "outside", "over", "past", "per", "than",
@@ -91,6 +93,8 @@ return {
         "precisely", "roughly", "approximately",
         -- (a value said loosely, "250-ish", "like 250ish": the value said is the one flown, as "roughly 250")
         "ish", "afterwards", "afterward", "meanwhile", "completely", "fully",
+        -- (a report's order of events and degree: "was subsequently given", "disable it altogether")
+        "subsequently", "thereafter", "altogether",
         "entirely", "moment", "away", "back", "aside", "apart", "nearer", "farther",
         -- the same markers in Spanish and Portuguese, said in English by their speakers ("vamos, LATAM 3402 ...",
         -- "bueno, ...", "entonces ...", "bom, ...", "olha: ...")
@@ -285,7 +289,10 @@ return {
         "eye", "tracker", "eye-tracker", "nasa", "tlx", "nasa-tlx", "questionnaire", "workload", "geometry",
         "calibrated", "crossing", "condition", "conditions", "baseline", "measurement", "measurements",
         -- a part of the airspace a study is run in ("for the terminal area trials")
-        "terminal", "en-route", "enroute" },
+        "terminal", "en-route", "enroute",
+        -- an incident investigation's reconstruction and its narration of what was cleared ("an additional
+        -- aircraft", "was then given a descent to FL120", "a speed reduction to 250 knots")
+        "reconstruction", "investigation", "investigators", "investigator", "additional", "given", "reduction" },
 
     -- prefixes of hyphenated words, written apart by the lexer ("co-altitude", "non-conflicting")
     prefixes = { "co", "non", "pre", "semi", "sub", "multi", "re" },
@@ -462,10 +469,10 @@ return {
   forget = { "forget" },
   -- an aircraft named as the subject of one of `described` is described, not instructed (G:described): "X and Y are
   -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there"; unless one of `described_not`
-  -- follows ("X is cleared FL200", "X is to climb")
+  -- follows ("X is cleared FL200", "X is to climb", "X is required to cross CNR at FL120")
   described = { "is", "are", "keeps", "stays", "remains", "sits" },
   described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "gonna", "climbing",
-                    "descending", "turning", "both", "also" },
+                    "descending", "turning", "both", "also", "required", "obliged" },
   -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
   -- words after which a clause is a new instruction
@@ -932,7 +939,7 @@ return {
   named = { "named", "called" },
   -- a place name's "Saint" said in full or short, each tried as the other in navaid names ("saint prex", ST. PREX)
   saint_forms = { saint = "st", st = "saint" },
-  id_words = { "named", "called", "callsign", "id" },
+  id_words = { "named", "called", "callsign", "id", "registration", "registered" },
   -- words after an airport's name ("Beijing Capital airport")
   -- air traffic units named by no airport or city ("Shanwick", "Scottish"; the rest are the navdata's
   -- airport and city names): a station in the addressing position (G:explained_spans)

@@ -53,6 +53,7 @@ local names = {
     { "alitalia", "AZA" },
     { "tap", "TAP" },
     { "air portugal", "TAP" },
+    { "portugalia", "PGA" },
     { "brussels", "BEL" },
     { "beeline", "BEL" },
     { "transavia", "TRA" },

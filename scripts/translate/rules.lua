@@ -939,6 +939,11 @@ return function(intent, rule, words)
   rule { "start like", "create", near = { 2, "@articles_new" }, when = function(g, i)
     return g:has_ref(i + 1, i + 7, "type") and g:new_aircraft_follows(g:find_word(i + 1, i + 7, "@articles_new"))
   end }
+  -- "We begin the reconstruction with IBE3142, an Airbus A320, at ...": a new callsign after "begin", its type
+  -- said with it
+  rule { "begin", "create", when = function(g, i)
+    return g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 10, "type")
+  end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...", "insert SAS19K B736 at ...": a type or a new callsign
   -- right after the verb
   rule { "add put new spawn insert adding", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
@@ -1314,7 +1319,7 @@ return function(intent, rule, words)
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 5, "aircraft") end }
   -- "where's the MERIT intersection?"
   rule { "where", "pos", when = function(g, i) return g:has_ref(i + 1, i + 4, "waypoint") end }
-  rule { "where", "pos", prev = { 3, "know show tell" } }  -- "show me where GATE1 is"
+  rule { "where", "pos", prev = { 3, "know show tell indicate" } }  -- "show me where GATE1 is"
   -- "tell me about the easyJet", "tell us about KLM12": an aircraft and nothing after it, its state asked
   rule { "about", "pos", when = function(g, i)
     return g:word(i - 1, "me us") and g:word(i - 2, "tell") and aircraft_alone(g, g:skip_fillers(i + 1), true)
@@ -1359,9 +1364,10 @@ return function(intent, rule, words)
   end }
   -- "Kindly provide the actual position of RYR72KP", "give the level and speed of RYR5QX": a verb of
   -- giving, then only state nouns (joined by "and", "/" or commas) and "of" or "for" an aircraft, no value
-  -- said in the request: a question of the aircraft's state (POS)
-  rule { "provide give tell report", "pos", when = function(g, i)
-    if #g:quantities(1, #g.t + 1) > 0 then return false end
+  -- said in the request: a question of the aircraft's state (POS). state_asked gives that aircraft's
+  -- reference, or nil.
+  local function state_asked(g, i)
+    if #g:quantities(1, #g.t + 1) > 0 then return nil end
     local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
     if g:word(k, "the its") then k = k + 1 end
     if g:word(k, "@present") then k = k + 1 end
@@ -1370,7 +1376,17 @@ return function(intent, rule, words)
       if not g:word(k, "and / ,") then nouns = nouns + 1 end
       k = k + 1
     end
-    return nouns > 0 and g:word(k, "of for") and g:has_ref(k + 1, k + 2, "aircraft")
+    if nouns == 0 or not g:word(k, "of for") then return nil end
+    return g:refs_in(k + 1, k + 2, "aircraft")[1]
+  end
+  rule { "provide give tell report", "pos", when = function(g, i) return state_asked(g, i) ~= nil end }
+  -- "I need the position of TAP1017": the same wanted, when the clause ends with the aircraft (not "I want
+  -- the position of TAP1017 changed")
+  rule { "need want require", "pos", when = function(g, i)
+    local r = state_asked(g, i)
+    if not r then return false end
+    local k = g:skip_fillers(r.e)
+    return k > #g.t or g.t[k].kind == "punct"
   end }
   rule { "position", "pos", prev = { 4, "show display see look log record dump" } }  -- "show me BAW87L's position"
   -- "show me the data of KLM12", "display KLM12's flight data": an aircraft's data shown is its state (POS)

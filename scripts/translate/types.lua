@@ -8,7 +8,7 @@
 --     Airbus models without their letter ("321neo") and "neo" apart;
 --   * a designator gives the name its pattern spells: B7FV -> 7F7-V00
 --     (B738 -> 737-800), A3FV -> A3F0-V00 (A332 -> A330-200), ATFV -> ATR F2-V00
---     (AT76 -> ATR 72-600), DH8x -> Dash 8-x00 and Q x00, CRJn -> CRJ n00,
+--     (AT76 -> ATR 72-600), DH8x -> Dash 8-x00 and Q x00, CRJn -> CRJ n00, CRJX -> CRJ1000,
 --     Cnnn -> Cessna nnn, E1nn -> Embraer E1nn, E75L/E75S -> E175, BCSn -> Airbus A220-n00,
 --     SRnn -> Cirrus SRnn, PCnn -> Pilatus PC-nn, F28/F50/F70/F100 -> Fokker nn;
 --   * a family ("737", "a330") is its base designator when one exists (B737,
@@ -85,6 +85,7 @@ local function pattern_names(d)
   if d == "A35K" then out[#out + 1] = { "airbus", "a350-1000" } end
   local c = d:match("^CRJ(%d)$")
   if c then out[#out + 1] = { "bombardier", "crj" .. c .. "00" } end
+  if d == "CRJX" then out[#out + 1] = { "bombardier", "crj1000" } end
   c = d:match("^C(%d%d%d)$")
   if c then out[#out + 1] = { "cessna", c } end
   c = d:match("^E(1%d%d)$")

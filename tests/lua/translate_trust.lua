@@ -7425,3 +7425,69 @@ do
   asked(ex('The tape has "KLM12, descend flight level one six zero" once level; replay it.'), "a condition outside")
   check_eq(ex('echo "KLM12 descend FL160" to the log'), 'ECHO "KLM12 descend FL160" to the log')
 end
+
+-- Cycle 41 (d88b): a report's narration of a clearance to replay ("X was subsequently given a speed
+-- reduction to 250 knots", "the Lufthansa was then instructed to descend"), its words of the reconstruction
+-- ("an additional aircraft"), and Portugalia (PGA) by its telephony
+do
+  local _, ex = scene({ "CRE IBE7721 A320 40.9 -3.5 190 FL150 280", "CRE DLH604 A321 41.2 -3.1 100 FL200 290",
+    "CRE PGA2044 E195 41.3 -8.2 270 9000 260" })
+  check_eq(ex("IBE7721 was subsequently given a speed reduction to 230 knots."), "SPD IBE7721 230")
+  check_eq(ex("The Lufthansa was thereafter instructed to climb to flight level 240."), "ALT DLH604 FL240")
+  check_eq(ex("Lufthansa 604 was then given a climb to FL220; please enter that."), "ALT DLH604 FL220")
+  check_eq(ex("Remove Portugalia 2044."), "DEL PGA2044")
+  check_eq(ex("Create an additional aircraft, IBE118, type A319, at 40.5 north 3.2 west, heading 045, FL090, 220 knots."),
+    "CRE IBE118 A319 40.5 -3.2 45 FL90 220")
+  -- still asked: narration with no value given, and a word of the report that is not narration
+  asked(ex("IBE7721 was subsequently given a speed reduction."), "a reduction with no speed")
+  asked(ex("DLH604 was then given a descent to FL120 by mistake, contrary to procedure."), "a remark beside it")
+end
+
+-- Cycle 41 (d88b): a report requested as what is needed or wanted ("I need the position of X", "we want the
+-- level and speed of X"), and where an aircraft is, asked to be indicated
+do
+  local _, ex = scene({ "CRE TAP2210 A320 38.5 -9.1 350 FL080 250", "CRE EZY31K A320 41.0 -3.0 100 FL200 280" })
+  check_eq(ex("I need the position of TAP2210."), "POS TAP2210")
+  check_eq(ex("We want the level and speed of EZY31K, please."), "POS EZY31K")
+  check_eq(ex("Please indicate where EZY31K is."), "POS EZY31K")
+  -- still asked: something to be done with the state, not a report of it
+  asked(ex("I need the position of TAP2210 changed"), "a state wanted changed")
+end
+
+-- Cycle 41 (d88b): a creation said as a report writer says it: the CRJ1000 by name, a registration named
+-- ("registration ECXYZ"), the callsign said by its telephony and then written ("Binter 406, call sign
+-- IBB406"), and "we begin (the reconstruction) with" a new aircraft and its type
+do
+  local _, ex = scene({ "CRE IBE7721 A320 40.9 -3.5 190 FL150 280" })
+  check_eq(ex("Create an Air Nostrum CRJ1000, callsign ANE301, at 40.1 north 3.2 west, heading 300, FL110, 250 knots."),
+    "CRE ANE301 CRJX 40.1 -3.2 300 FL110 250")
+  check_eq(ex("Create a Cessna 152, registration ECXYZ, at 38.6 north 9.1 west, heading 090, 3000 feet, 90 knots."),
+    "CRE ECXYZ C152 38.6 -9.1 90 3000 90")
+  check_eq(ex("Create Binter 406, call sign IBB406, an ATR 72-600, at 41.5 north, 8.4 west, heading 200, FL120, 230 knots."),
+    "CRE IBB406 AT76 41.5 -8.4 200 FL120 230")
+  check_eq(ex("We begin the reconstruction with IBE905, an Airbus A321, at 40.8 north 3.7 west, heading 010, FL130, 270 knots."),
+    "CRE IBE905 A321 40.8 -3.7 10 FL130 270")
+  -- still asked: the telephony and the written callsign disagree (which one is meant)
+  asked(ex("Create Binter 406, call sign IBB460, an ATR 72-600, at 41.5 north, 8.4 west, heading 200, FL120, 230 knots."),
+    "a spoken and a written callsign that differ")
+end
+
+-- Cycle 41 (d88b): trails asked for as something added ("add trail lines so the tracks can be compared") are
+-- shown; a request that says neither shown nor hidden is still asked
+do
+  local _, ex = scene({ "CRE IBE7721 A320 40.9 -3.5 190 FL150 280" })
+  check_eq(ex("Add trail lines so that the two tracks can be compared later."), "TRAIL ON")
+  check_eq(ex("add trails every 20 seconds"), "TRAIL ON 20")
+  check_eq(ex("remove the trails"), "TRAIL OFF")
+  asked(ex("clear trails"), "trails neither shown nor hidden")
+end
+
+-- Cycle 41 (d88b): an obligation a report states ("X is required to cross CNR at FL120", "X is obliged to
+-- turn left heading 200") is the instruction, as "X is to ..." is; "is required" with nothing to do is asked
+do
+  local _, ex = scene({ "DEFWPT DBB1 40.5 -3.5", "CRE IBE7721 A320 40.9 -3.5 190 FL150 280", "ADDWPT IBE7721 DBB1" })
+  check_eq(ex("IBE7721 is required to cross DBB1 at flight level 130."), "AT IBE7721 DBB1 ALT FL130")
+  check_eq(ex("IBE7721 is obliged to turn left heading 200."), "HDG IBE7721 200 LEFT")
+  asked(ex("IBE7721 is required"), "an obligation with nothing to do")
+  asked(ex("IBE7721 is expected at FL200"), "an expectation, no obligation")
+end
