@@ -4132,28 +4132,30 @@ function G:explained_spans(issued, kinds)
       inside[r.b - 2] = true
     end
   end
-  local replaced = self:said("instead rather")
+  local texts = self.words
+  local passed = kinds.direct and word_set("@passed_over", 1)
   for i = 1, #self.t do
+    local w, nw = texts[i], texts[i + 1]
     -- "to SFO instead of Oakland", "Stansted rather than Luton": the name replaced
-    if replaced and ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
+    if ((w == "instead" and nw == "of") or (w == "rather" and nw == "than"))
         and self.t[i + 2] and self.t[i + 2].raw:match("^%u") then
       inside[i], inside[i + 2] = true, true
     end
     -- "go straight to Ockham, skipping Mayfield": a name a direct-to passes
-    if kinds.direct and self:word(i, "@passed_over") and self.t[i + 1] and self.t[i + 1].raw:match("^%u") then
+    if passed and w and passed[w] == true and self.t[i + 1] and self.t[i + 1].raw:match("^%u") then
       inside[i + 1] = true
     end
     -- "New York departure", "Boston approach": the unit's place
-    if self:word(i, FACILITIES) then
+    if w and FACILITIES[w] then
       for k = math.max(1, i - 2), i - 1 do
         if self.t[k].kind == "word" and not MEANING[self.t[k].text] and not self.triggers[k] then inside[k] = true end
       end
     end
     -- "climb FL360, not above": the level said is a limit too, when nothing follows in its clause ("not
     -- above FL370" names another level, asked about)
-    local nx = self.t[i + 2]
-    if self:word(i, "not") and self:word(i + 1, "above below") and (not nx or nx.kind == "punct") then
-      inside[i], inside[i + 1] = true, true
+    if w == "not" and (nw == "above" or nw == "below") then
+      local nx = self.t[i + 2]
+      if not nx or nx.kind == "punct" then inside[i], inside[i + 1] = true, true end
     end
     for _, p in ipairs(PHRASES[self.t[i].text] or {}) do
       local ok = true
@@ -4178,10 +4180,10 @@ function G:explained_spans(issued, kinds)
     local e = k
     while e <= #self.t and not (self.t[e].kind == "punct" and self.t[e].text ~= "'") do e = e + 1 end
     for j = k, e - 1 do
-      local t, nx = self.t[j], self.t[j + 1]
+      local t, nx, w = self.t[j], self.t[j + 1], texts[j]
       local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
       -- ("delete KLC21, not needed for this run": a participle's clause, negated)
-      local participle = j == k and k > 1 and self:word(j, "not") and nx and nx.kind == "word" and nx.text:match("%aed$")
+      local participle = j == k and k > 1 and w == "not" and nx and nx.kind == "word" and nx.text:match("%aed$")
       -- ("WZZ1523 is not needed anymore, remove it": the aircraft, a copula and a participle of
       -- lexicon.unneeded, negated, as the clause's whole predicate)
       local unneeded = false
@@ -4192,14 +4194,13 @@ function G:explained_spans(issued, kinds)
         unneeded = v > k and self:word(v, "not isn't aren't") and self:word(v + 1, "@unneeded")
           and #self:quantities(v, e) == 0 and #self:refs_in(v, e) == 0 and v
       end
-      -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
-      local step = nx and nx.kind == "word" and lexicon.session_steps[nx.text]
       if unneeded then
         for x = unneeded, e - 1 do inside[x] = true end
         break
       end
-      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (self:word(j, "so") and j > 1 and subject)
-          or (self:word(j, "for") and j > 1 and (subject or step)) then
+      -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
+      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (w == "so" and j > 1 and subject)
+          or (w == "for" and j > 1 and (subject or (nx and nx.kind == "word" and lexicon.session_steps[nx.text]))) then
         comment(j, e)
         break
       end
