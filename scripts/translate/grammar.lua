@@ -1705,26 +1705,29 @@ function G:intent_at(i)
   if not w or self.u:used(i) then return nil end
   local next_word = texts[i + 1]
   local said = self.said_sets or sets_said(self)
-  local rules = RULES_BY_WORD[w]
+  local all = RULES_BY_WORD[w] or ANY_RULES
+  -- (per request and list: the rules whose near and prev sets are said, the others never fire)
+  local live = self.live_rules
+  if not live then
+    live = {}
+    self.live_rules = live
+  end
+  local rules = live[all]
   if not rules then
-    -- (per request: the "*" rules whose near or prev set is said, the others never fire)
-    rules = self.any_rules
-    if not rules then
-      rules = {}
-      for _, r in ipairs(ANY_RULES) do
-        if (not r.near or said[r.near[2]]) and (not r.prev or said[r.prev[2]]) then rules[#rules + 1] = r end
-      end
-      self.any_rules = rules
+    rules = {}
+    for _, r in ipairs(all) do
+      if (not r.near or said[r.near[2]]) and (not r.prev or said[r.prev[2]]) then rules[#rules + 1] = r end
     end
+    live[all] = rules
   end
   for _, r in ipairs(rules) do
     -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
     -- of whose words is said is not looked for)
     local near, not_near, prev, not_prev = r.near, r.not_near, r.prev, r.not_prev
     if (not r.next or (next_word and r.next[next_word] == true))
-        and (not near or (said[near[2]] and word_among(texts, i + 1, i + 1 + near[1], near[2])))
+        and (not near or word_among(texts, i + 1, i + 1 + near[1], near[2]))
         and (not not_near or not (said[not_near[2]] and word_among(texts, i + 1, i + 1 + not_near[1], not_near[2])))
-        and (not prev or (said[prev[2]] and word_among(texts, i > prev[1] and i - prev[1] or 1, i, prev[2])))
+        and (not prev or word_among(texts, i > prev[1] and i - prev[1] or 1, i, prev[2]))
         and (not not_prev
           or not (said[not_prev[2]] and word_among(texts, i > not_prev[1] and i - not_prev[1] or 1, i, not_prev[2])))
         and (not r.when or r.when(self, i)) then
@@ -4157,10 +4160,11 @@ function G:explained_spans(issued, kinds)
       local nx = self.t[i + 2]
       if not nx or nx.kind == "punct" then inside[i], inside[i + 1] = true, true end
     end
-    for _, p in ipairs(PHRASES[self.t[i].text] or {}) do
-      local ok = true
-      for k = 2, #p do ok = ok and self.t[i + k - 1] ~= nil and self.t[i + k - 1].text == p[k] end
-      if ok then for k = i, i + #p - 1 do inside[k] = true end end
+    local phrases = PHRASES[self.t[i].text]
+    for k = 1, phrases and #phrases or 0 do
+      local p, ok = phrases[k], true
+      for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
+      if ok then for x = i, i + #p - 1 do inside[x] = true end end
     end
   end
   -- Comments and purposes that name no instruction, value or place, to the end of their clause: a
