@@ -863,7 +863,9 @@ local function typed_abbreviations(text)
   local changed = false
   for k, w in ipairs(toks) do
     local letters, punct = w:match("^(%a+)(%p*)$")
-    for _, a in ipairs(letters and ABBREVIATIONS[letters:lower()] or {}) do
+    local readings = letters and ABBREVIATIONS[letters:lower()]
+    for j = 1, readings and #readings or 0 do
+      local a = readings[j]
       if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
           and not (a.not_prev and fits(a.not_prev, k - 1)) then
         toks[k], changed = a.word .. punct, true

@@ -634,7 +634,7 @@ function m:airline_refs()
   local typed = self:has_ref(1, #self.t + 1, "type")
   for i = 1, typed and 0 or #self.t do
     local t, nx = self.t[i], self.t[i + 1]
-    local icao = t.kind == "word" and t.raw:match("^%u%u%u%u%u$") and airline_names()[t.text]
+    local icao = t.kind == "word" and #t.raw == 5 and t.raw:match("^%u%u%u%u%u$") and airline_names()[t.text]
     if icao and not self:has_ref(i, i + 1) and #self:airline_fleet(icao, BRANDS[t.text]) == 0
         and not (nx and (nx.kind == "number" or nx.number_word))
         and self.world.user_waypoint_at and self.world.user_waypoint_at(t.raw) then
@@ -645,8 +645,9 @@ function m:airline_refs()
   end
   -- ("descend FL160, level by Talla": the navaid or airport said by its name of one or two words after
   -- "level by", ending the clause, is the waypoint of that ident)
+  local texts = self.words
   for i = 3, #self.t do
-    if self:word(i - 1, "by") and self:word(i - 2, "level") and not self:has_ref(i, i + 1) then
+    if texts[i - 1] == "by" and texts[i - 2] == "level" and not self:has_ref(i, i + 1) then
       for e = math.min(i + 2, #self.t + 1), i + 1, -1 do
         local id = (not self.t[e] or self.t[e].kind == "punct") and self:place_by_name(i, e)
         if id then
