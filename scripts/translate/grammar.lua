@@ -4009,7 +4009,7 @@ local EXERCISE_NOUNS = { exercise = true, scenario = true, simulation = true, si
 function G:exercise_names()
   for k = 2, #self.t - 1 do
     local t = self.t[k]
-    if self:word(k - 1, "the") and EXERCISE_NOUNS[self.t[k + 1].text] and t.kind == "word" and t.alpha
+    if self.words[k - 1] == "the" and EXERCISE_NOUNS[self.t[k + 1].text] and t.kind == "word" and t.alpha
         and t.raw:match("^%u%l+$") and not t.keyword and #self:refs_in(k, k + 1) == 0 then
       self:mark_used(k, k + 1)
       self.noted[k] = true
@@ -4021,8 +4021,10 @@ end
 -- before its latitude ("the wind at Sofia, 42.70 N 23.40 E") is marked used and explained before the parse: the
 -- position said after it is the place.
 function G:places_by_position()
+  local texts = self.words
   for k = 2, #self.t - 2 do
-    if self:word(k - 1, "at over near") then
+    local w = texts[k - 1]
+    if w == "at" or w == "over" or w == "near" then
       local e = k
       while e < k + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l+$")
           and not self.t[e].keyword do

@@ -206,7 +206,7 @@ function m:acids(s)
     local from = s.b
     for k = s.trig - 1, s.b, -1 do
       local t = self.t[k]
-      if self:word(k, "so") or (t.kind == "punct" and (t.text == "." or t.text == ":" or t.text == ";" or t.text == "!")) then
+      if self.words[k] == "so" or (t.kind == "punct" and (t.text == "." or t.text == ":" or t.text == ";" or t.text == "!")) then
         if self:has_ref(k + 1, s.trig, "aircraft") then from = k + 1 end
         break
       end
