@@ -863,7 +863,9 @@ local function typed_abbreviations(text)
   local changed = false
   for k, w in ipairs(toks) do
     local letters, punct = w:match("^(%a+)(%p*)$")
-    for _, a in ipairs(letters and ABBREVIATIONS[letters:lower()] or {}) do
+    local readings = letters and ABBREVIATIONS[letters:lower()]
+    for j = 1, readings and #readings or 0 do
+      local a = readings[j]
       if (not a.next or fits(a.next, k + 1)) and (not a.prev or fits(a.prev, k - 1))
           and not (a.not_prev and fits(a.not_prev, k - 1)) then
         toks[k], changed = a.word .. punct, true
@@ -1730,26 +1732,29 @@ function G:intent_at(i)
   if not w or (self.u:used(i) and not (self.unheld or {})[i]) then return nil end
   local next_word = texts[i + 1]
   local said = self.said_sets or sets_said(self)
-  local rules = RULES_BY_WORD[w]
+  local all = RULES_BY_WORD[w] or ANY_RULES
+  -- (per request and list: the rules whose near and prev sets are said, the others never fire)
+  local live = self.live_rules
+  if not live then
+    live = {}
+    self.live_rules = live
+  end
+  local rules = live[all]
   if not rules then
-    -- (per request: the "*" rules whose near or prev set is said, the others never fire)
-    rules = self.any_rules
-    if not rules then
-      rules = {}
-      for _, r in ipairs(ANY_RULES) do
-        if (not r.near or said[r.near[2]]) and (not r.prev or said[r.prev[2]]) then rules[#rules + 1] = r end
-      end
-      self.any_rules = rules
+    rules = {}
+    for _, r in ipairs(all) do
+      if (not r.near or said[r.near[2]]) and (not r.prev or said[r.prev[2]]) then rules[#rules + 1] = r end
     end
+    live[all] = rules
   end
   for _, r in ipairs(rules) do
     -- (r.near: followed within r.near[1] tokens by a word of r.near[2]; r.prev: preceded so; a set none
     -- of whose words is said is not looked for)
     local near, not_near, prev, not_prev = r.near, r.not_near, r.prev, r.not_prev
     if (not r.next or (next_word and r.next[next_word] == true))
-        and (not near or (said[near[2]] and word_among(texts, i + 1, i + 1 + near[1], near[2])))
+        and (not near or word_among(texts, i + 1, i + 1 + near[1], near[2]))
         and (not not_near or not (said[not_near[2]] and word_among(texts, i + 1, i + 1 + not_near[1], not_near[2])))
-        and (not prev or (said[prev[2]] and word_among(texts, i > prev[1] and i - prev[1] or 1, i, prev[2])))
+        and (not prev or word_among(texts, i > prev[1] and i - prev[1] or 1, i, prev[2]))
         and (not not_prev
           or not (said[not_prev[2]] and word_among(texts, i > not_prev[1] and i - not_prev[1] or 1, i, not_prev[2])))
         and (not r.when or r.when(self, i)) then
@@ -4092,7 +4097,7 @@ local EXERCISE_NOUNS = { exercise = true, scenario = true, simulation = true, si
 function G:exercise_names()
   for k = 2, #self.t - 1 do
     local t = self.t[k]
-    if self:word(k - 1, "the") and EXERCISE_NOUNS[self.t[k + 1].text] and t.kind == "word" and t.alpha
+    if self.words[k - 1] == "the" and EXERCISE_NOUNS[self.t[k + 1].text] and t.kind == "word" and t.alpha
         and t.raw:match("^%u%l+$") and not t.keyword and #self:refs_in(k, k + 1) == 0 then
       self:mark_used(k, k + 1)
       self.noted[k] = true
@@ -4104,8 +4109,10 @@ end
 -- before its latitude ("the wind at Sofia, 42.70 N 23.40 E") is marked used and explained before the parse: the
 -- position said after it is the place.
 function G:places_by_position()
+  local texts = self.words
   for k = 2, #self.t - 2 do
-    if self:word(k - 1, "at over near") then
+    local w = texts[k - 1]
+    if w == "at" or w == "over" or w == "near" then
       local e = k
       while e < k + 2 and self.t[e] and self.t[e].kind == "word" and self.t[e].alpha and self.t[e].raw:match("^%u%l+$")
           and not self.t[e].keyword do
@@ -4220,33 +4227,36 @@ function G:explained_spans(issued, kinds)
       inside[r.b - 2] = true
     end
   end
-  local replaced = self:said("instead rather")
+  local texts = self.words
+  local passed = kinds.direct and word_set("@passed_over", 1)
   for i = 1, #self.t do
+    local w, nw = texts[i], texts[i + 1]
     -- "to SFO instead of Oakland", "Stansted rather than Luton": the name replaced
-    if replaced and ((self:word(i, "instead") and self:word(i + 1, "of")) or (self:word(i, "rather") and self:word(i + 1, "than")))
+    if ((w == "instead" and nw == "of") or (w == "rather" and nw == "than"))
         and self.t[i + 2] and self.t[i + 2].raw:match("^%u") then
       inside[i], inside[i + 2] = true, true
     end
     -- "go straight to Ockham, skipping Mayfield": a name a direct-to passes
-    if kinds.direct and self:word(i, "@passed_over") and self.t[i + 1] and self.t[i + 1].raw:match("^%u") then
+    if passed and w and passed[w] == true and self.t[i + 1] and self.t[i + 1].raw:match("^%u") then
       inside[i + 1] = true
     end
     -- "New York departure", "Boston approach": the unit's place
-    if self:word(i, FACILITIES) then
+    if w and FACILITIES[w] then
       for k = math.max(1, i - 2), i - 1 do
         if self.t[k].kind == "word" and not MEANING[self.t[k].text] and not self.triggers[k] then inside[k] = true end
       end
     end
     -- "climb FL360, not above": the level said is a limit too, when nothing follows in its clause ("not
     -- above FL370" names another level, asked about)
-    local nx = self.t[i + 2]
-    if self:word(i, "not") and self:word(i + 1, "above below") and (not nx or nx.kind == "punct") then
-      inside[i], inside[i + 1] = true, true
+    if w == "not" and (nw == "above" or nw == "below") then
+      local nx = self.t[i + 2]
+      if not nx or nx.kind == "punct" then inside[i], inside[i + 1] = true, true end
     end
-    for _, p in ipairs(PHRASES[self.t[i].text] or {}) do
-      local ok = true
-      for k = 2, #p do ok = ok and self.t[i + k - 1] ~= nil and self.t[i + k - 1].text == p[k] end
-      if ok then for k = i, i + #p - 1 do inside[k] = true end end
+    local phrases = PHRASES[self.t[i].text]
+    for k = 1, phrases and #phrases or 0 do
+      local p, ok = phrases[k], true
+      for x = 2, #p do ok = ok and self.t[i + x - 1] ~= nil and self.t[i + x - 1].text == p[x] end
+      if ok then for x = i, i + #p - 1 do inside[x] = true end end
     end
   end
   -- Comments and purposes that name no instruction, value or place, to the end of their clause: a
@@ -4266,10 +4276,10 @@ function G:explained_spans(issued, kinds)
     local e = k
     while e <= #self.t and not (self.t[e].kind == "punct" and self.t[e].text ~= "'") do e = e + 1 end
     for j = k, e - 1 do
-      local t, nx = self.t[j], self.t[j + 1]
+      local t, nx, w = self.t[j], self.t[j + 1], texts[j]
       local subject = nx and nx.kind == "word" and SUBJECTS[nx.text]
       -- ("delete KLC21, not needed for this run": a participle's clause, negated)
-      local participle = j == k and k > 1 and self:word(j, "not") and nx and nx.kind == "word" and nx.text:match("%aed$")
+      local participle = j == k and k > 1 and w == "not" and nx and nx.kind == "word" and nx.text:match("%aed$")
       -- ("WZZ1523 is not needed anymore, remove it": the aircraft, a copula and a participle of
       -- lexicon.unneeded, negated, as the clause's whole predicate)
       local unneeded = false
@@ -4280,14 +4290,13 @@ function G:explained_spans(issued, kinds)
         unneeded = v > k and self:word(v, "not isn't aren't") and self:word(v + 1, "@unneeded")
           and #self:quantities(v, e) == 0 and #self:refs_in(v, e) == 0 and v
       end
-      -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
-      local step = nx and nx.kind == "word" and lexicon.session_steps[nx.text]
       if unneeded then
         for x = unneeded, e - 1 do inside[x] = true end
         break
       end
-      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (self:word(j, "so") and j > 1 and subject)
-          or (self:word(j, "for") and j > 1 and (subject or step)) then
+      -- ("freeze sim for debrief": a session's own step named after "for", with no determiner)
+      if (j == k and k > 1 and t.kind == "word" and SUBJECTS[t.text]) or participle or (w == "so" and j > 1 and subject)
+          or (w == "for" and j > 1 and (subject or (nx and nx.kind == "word" and lexicon.session_steps[nx.text]))) then
         comment(j, e)
         break
       end

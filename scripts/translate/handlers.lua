@@ -88,11 +88,12 @@ end
 function m:direction(s)
   local names = self:refs_in(s.b, s.e, "aircraft")
   local function said(i, list)
+    if not self:word(i, list) then return false end
     for _, r in ipairs(names) do
       if i >= r.b and i < r.e then return false end
     end
     local v = self:word(i - 1, "its the his her their your") and i - 2 or i - 1
-    return self:word(i, list) and not self:word(v, "@halted")
+    return not self:word(v, "@halted")
   end
   -- a direction said after a correction replaces the one before it ("climb FL260, correction, descend FL220")
   for i = self:said("@correction") and s.e - 1 or 0, s.b, -1 do
@@ -205,7 +206,7 @@ function m:acids(s)
     local from = s.b
     for k = s.trig - 1, s.b, -1 do
       local t = self.t[k]
-      if self:word(k, "so") or (t.kind == "punct" and (t.text == "." or t.text == ":" or t.text == ";" or t.text == "!")) then
+      if self.words[k] == "so" or (t.kind == "punct" and (t.text == "." or t.text == ":" or t.text == ";" or t.text == "!")) then
         if self:has_ref(k + 1, s.trig, "aircraft") then from = k + 1 end
         break
       end
@@ -527,51 +528,55 @@ end
 local COUNTS = { two = 2, three = 3, four = 4, ["2"] = 2, ["3"] = 3, ["4"] = 4 }
 function m:airline_group_refs(inside)
   if not AIRLINE_NAMES then airline_names() end
+  local texts = self.words
   for i = 1, #self.t do
-    -- (other traffic: "away from the Vuelings", "above the two Vuelings", "behind both Vuelings", "clear of the
-    -- Vuelings")
-    local b = self:word(i, "the all both") and not self:word(i - 1, "@airline_context @aircraft_context @below @above")
-      and not self:word(i - 1, "from of") and i
-    local k = b and (self:word(i + 1, "the") and i + 2 or i + 1)
-    local count = b and COUNTS[self.t[k] and self.t[k].text or ""]
-    if count then k = k + 1 end
-    if self:word(i, "both") then count = count or 2 end
-    for n = 3, 1, -1 do
-      local last = b and self.t[k + n - 1]
-      if last and last.kind == "word" and last.text:match("%as$") and not inside[k]
-          and (count or self.t[k].raw:match("^%a*%u")) then
-        local words = {}
-        for x = k, k + n - 1 do words[#words + 1] = self.t[x].kind == "word" and self.t[x].text or "" end
-        words[n] = words[n]:sub(1, -2)  -- ("vuelings": the airline's name and its plural's "s")
-        local said = table.concat(words, " ")
-        local icao = AIRLINE_NAMES[said]
-        local fits = icao and self:airline_fleet(icao, BRANDS[said]) or {}
-        -- ("both Lufthansas, DLH4AX FL210 and DLH9KM FL240": named by their callsigns too, each its own)
-        local named = false
-        for _, r in ipairs(self.refs) do
-          for _, id in ipairs(fits) do
-            named = named or (r.kind == "aircraft" and r.name == id and (r.b < b or r.e > k + n))
+    local w = texts[i]
+    if w == "the" or w == "all" or w == "both" then
+      -- (other traffic: "away from the Vuelings", "above the two Vuelings", "behind both Vuelings", "clear of the
+      -- Vuelings")
+      local b = self:word(i, "the all both") and not self:word(i - 1, "@airline_context @aircraft_context @below @above")
+        and not self:word(i - 1, "from of") and i
+      local k = b and (self:word(i + 1, "the") and i + 2 or i + 1)
+      local count = b and COUNTS[self.t[k] and self.t[k].text or ""]
+      if count then k = k + 1 end
+      if self:word(i, "both") then count = count or 2 end
+      for n = 3, 1, -1 do
+        local last = b and self.t[k + n - 1]
+        if last and last.kind == "word" and last.text:match("%as$") and not inside[k]
+            and (count or self.t[k].raw:match("^%a*%u")) then
+          local words = {}
+          for x = k, k + n - 1 do words[#words + 1] = self.t[x].kind == "word" and self.t[x].text or "" end
+          words[n] = words[n]:sub(1, -2)  -- ("vuelings": the airline's name and its plural's "s")
+          local said = table.concat(words, " ")
+          local icao = AIRLINE_NAMES[said]
+          local fits = icao and self:airline_fleet(icao, BRANDS[said]) or {}
+          -- ("both Lufthansas, DLH4AX FL210 and DLH9KM FL240": named by their callsigns too, each its own)
+          local named = false
+          for _, r in ipairs(self.refs) do
+            for _, id in ipairs(fits) do
+              named = named or (r.kind == "aircraft" and r.name == id and (r.b < b or r.e > k + n))
+            end
           end
-        end
-        -- (the words the callsign matcher heard as an aircraft, "two Vuelings" as VLG21, "three" as AEA3,
-        -- are the group's)
-        for x = #self.refs, 1, -1 do
-          if icao and not named and self.refs[x].b >= b and self.refs[x].e <= k + n then table.remove(self.refs, x) end
-        end
-        if icao and not named and not (#fits == count or (not count and #fits >= 2)) then
-          self:need(string.format("Which aircraft does '%s' mean? %s", self:raw(b, k + n),
-            #fits > 0 and ("Those flying: " .. table.concat(fits, ", ") .. ".") or "None of them flies."))
-          for x = b, k + n - 1 do inside[x] = true end
-          break
-        elseif icao and not named then
-          local at = 1
-          while self.refs[at] and self.refs[at].b < b do at = at + 1 end
-          for j, id in ipairs(fits) do
-            table.insert(self.refs, at + j - 1, { kind = "aircraft", name = id, b = b, e = k + n, exists = true,
-              by_airline = true })
+          -- (the words the callsign matcher heard as an aircraft, "two Vuelings" as VLG21, "three" as AEA3,
+          -- are the group's)
+          for x = #self.refs, 1, -1 do
+            if icao and not named and self.refs[x].b >= b and self.refs[x].e <= k + n then table.remove(self.refs, x) end
           end
-          for x = b, k + n - 1 do inside[x] = true end
-          break
+          if icao and not named and not (#fits == count or (not count and #fits >= 2)) then
+            self:need(string.format("Which aircraft does '%s' mean? %s", self:raw(b, k + n),
+              #fits > 0 and ("Those flying: " .. table.concat(fits, ", ") .. ".") or "None of them flies."))
+            for x = b, k + n - 1 do inside[x] = true end
+            break
+          elseif icao and not named then
+            local at = 1
+            while self.refs[at] and self.refs[at].b < b do at = at + 1 end
+            for j, id in ipairs(fits) do
+              table.insert(self.refs, at + j - 1, { kind = "aircraft", name = id, b = b, e = k + n, exists = true,
+                by_airline = true })
+            end
+            for x = b, k + n - 1 do inside[x] = true end
+            break
+          end
         end
       end
     end
@@ -629,7 +634,7 @@ function m:airline_refs()
   local typed = self:has_ref(1, #self.t + 1, "type")
   for i = 1, typed and 0 or #self.t do
     local t, nx = self.t[i], self.t[i + 1]
-    local icao = t.kind == "word" and t.raw:match("^%u%u%u%u%u$") and airline_names()[t.text]
+    local icao = t.kind == "word" and #t.raw == 5 and t.raw:match("^%u%u%u%u%u$") and airline_names()[t.text]
     if icao and not self:has_ref(i, i + 1) and #self:airline_fleet(icao, BRANDS[t.text]) == 0
         and not (nx and (nx.kind == "number" or nx.number_word))
         and self.world.user_waypoint_at and self.world.user_waypoint_at(t.raw) then
@@ -640,8 +645,9 @@ function m:airline_refs()
   end
   -- ("descend FL160, level by Talla": the navaid or airport said by its name of one or two words after
   -- "level by", ending the clause, is the waypoint of that ident)
+  local texts = self.words
   for i = 3, #self.t do
-    if self:word(i - 1, "by") and self:word(i - 2, "level") and not self:has_ref(i, i + 1) then
+    if texts[i - 1] == "by" and texts[i - 2] == "level" and not self:has_ref(i, i + 1) then
       for e = math.min(i + 2, #self.t + 1), i + 1, -1 do
         local id = (not self.t[e] or self.t[e].kind == "punct") and self:place_by_name(i, e)
         if id then

@@ -233,8 +233,10 @@ return function(intent, rule, words)
   -- "AAR731 current altitude tell me", "KAL8 speed let me know": the state asked for before the request
   -- for it (verb-final order) is no instruction
   rule { "altitude speed heading level position", false, when = function(g, i)
+    local texts = g.words
     for k = i + 1, math.min(#g.t, i + 3) do
-      if (g:word(k, "tell") and g:word(k + 1, "me us")) or (g:word(k, "let") and g:word(k + 2, "know")) then
+      local w = texts[k]
+      if (w == "tell" and (texts[k + 1] == "me" or texts[k + 1] == "us")) or (w == "let" and texts[k + 2] == "know") then
         return true
       end
     end
