@@ -5215,10 +5215,10 @@ end
 -- last characters of its US registration, three or more holding a letter, said in digits, letters or
 -- phonetics (or any registration whole), is written as that registration when exactly one aircraft flying
 -- has a US registration (N and a digit) ending with them and the prefix fits it (November: any; a type word
--- without digits: the aircraft's type). Two that end so, or a prefix that does not fit, are left as said
--- (asked: "Did you mean ...?" or which aircraft).
+-- without digits: the aircraft's type). Returns the text and, when two aircraft end so or the prefix does not
+-- fit the one that does (a suffix, not the whole id), the question to ask instead, else nil.
 local function abbreviated_registrations(text, fleet)
-  if #fleet == 0 then return text end
+  if #fleet == 0 then return text, nil end
   local words = {}  -- {text, b, e} of each word
   for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
   local nicknames = require("translate.types").nicknames
@@ -5259,11 +5259,22 @@ local function abbreviated_registrations(text, fleet)
           -- (read again: a prefix before this one, "Skyhawk November ...", is the same aircraft's)
           return abbreviated_registrations(text:sub(1, words[k][2] - 1) .. ending[1].id .. text:sub(words[ends[n]][3]), fleet)
         end
+        local heard = text:sub(words[k][2], words[ends[n]][3] - 1)
+        if #ending > 1 then
+          local ids = {}
+          for _, a in ipairs(ending) do ids[#ids + 1] = a.id end
+          return text, string.format("Which aircraft is '%s': %s? Please give its callsign.", heard,
+            table.concat(ids, " or "))
+        end
+        if ending[1].id:upper() ~= chars then
+          return text, string.format("Which aircraft is '%s'? %s ends with %s but is a %s. Please give its callsign.",
+            heard, ending[1].id, chars, ending[1].type or "other type")
+        end
         break
       end
     end
   end
-  return text
+  return text, nil
 end
 
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
@@ -5798,7 +5809,10 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
-  text = spelled_registrations(abbreviated_registrations(text, world.aircraft), world.aircraft)
+  local abbreviated
+  text, abbreviated = abbreviated_registrations(text, world.aircraft)
+  if abbreviated then return { commands = {}, ask = abbreviated } end
+  text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   local dm = impossible_minutes(text)
   if dm then

@@ -127,8 +127,8 @@ M.nicknames = {
   baron = { "^BE5[58]$" },
   bonanza = { "^BE3[356]$" },
   piper = { "^P28%w$", "^PA%d%d%w?$" },
-  archer = { "^P28A$" },
-  cherokee = { "^P28%w$" },
+  archer = { "^P28A$", "^PA28$" },
+  cherokee = { "^P28%w$", "^PA28$" },
   skylane = { "^C182$" },
   mooney = { "^M20%w$" },
   -- (two words, read together where a nickname opens an abbreviated callsign or follows "the")

@@ -7526,10 +7526,12 @@ do
   check_eq(ex("Skylane N918SL turn left heading 090"), "HDG N918SL 90 LEFT")
   -- still asked: two registrations end with "8SL" (both Cessnas; one a Skylane); a type word that does not fit;
   -- a bare suffix
-  asked(ex("Cessna eight sierra lima climb 6000"), "two Cessnas end with 8SL")
+  check_eq(ex("Cessna eight sierra lima climb 6000"),
+    "ASK Which aircraft is 'Cessna eight sierra lima': N918SL or N218SL? Please give its callsign.")
   asked(ex("Skylane 8SL climb 6000"), "two registrations end with 8SL, one of them a Skylane")
   asked(ex("November eight sierra lima, climb 6000"), "two US registrations end with 8SL")
   asked(ex("Bonanza 4KA climb 10000"), "a Bonanza prefix before a King Air's letters")
-  asked(ex("Piper 7BZ climb 8000"), "a maker the aircraft is not of")
+  check_eq(ex("Piper 7BZ climb 8000"), "ASK Which aircraft is 'Piper 7BZ'? N47BZ ends with 7BZ but is a BE35. "
+    .. "Please give its callsign.")
   asked(ex("seven bravo zulu, turn right heading 140"), "a bare suffix")
 end
