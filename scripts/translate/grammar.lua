@@ -5143,22 +5143,26 @@ end
 -- registration spelled in the phonetic alphabet anywhere, four letters or more, that is exactly the
 -- id of an aircraft flying is written as that id; a maker or model said before it is the aircraft's
 -- own and is written into the id too when the aircraft is of that maker or model.
-local TYPE_WORDS  -- maker or model (lower case) -> {designator = true}
+-- G.type_words(): maker or model (lower case, "cessna", "sr22") -> {designator = true}, built once.
+function G.type_words()
+  if not G.type_words_built then
+    local words = {}
+    for _, row in ipairs(TYPES.types) do
+      for _, w in ipairs({ row[1]:lower(), row[2]:lower() }) do
+        words[w] = words[w] or {}
+        words[w][row[3]] = true
+      end
+    end
+    G.type_words_built = words
+  end
+  return G.type_words_built
+end
 local SAID_DIGIT = { zero = "0", oh = "0", one = "1", two = "2", three = "3", tree = "3", four = "4", fower = "4",
   five = "5", fife = "5", six = "6", seven = "7", eight = "8", nine = "9", niner = "9" }
 local NATIONLESS = set_of(lexicon.nationless_registrations)
 local function spelled_registrations(text, fleet)
   if #fleet == 0 then return text end
   text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")  -- ("X-ray", "x ray": the letter X, as the lexer reads it)
-  if not TYPE_WORDS then
-    TYPE_WORDS = {}
-    for _, row in ipairs(TYPES.types) do
-      for _, w in ipairs({ row[1]:lower(), row[2]:lower() }) do
-        TYPE_WORDS[w] = TYPE_WORDS[w] or {}
-        TYPE_WORDS[w][row[3]] = true
-      end
-    end
-  end
   local spelling = false  -- (a phonetic letter said)
   for w in text:gmatch("[%w]+") do
     if lexicon.phonetic[w:lower()] then
@@ -5174,7 +5178,7 @@ local function spelled_registrations(text, fleet)
     -- (a spelling starts at the first letter of a run, said at k or after a maker or model at k)
     if (not lexicon.phonetic[w[1]] or k == 1 or not lexicon.phonetic[words[k - 1][1]])
         and words[first] and lexicon.phonetic[words[first][1]] then
-      local set = TYPE_WORDS[w[1]]
+      local set = G.type_words()[w[1]]
       -- (after two letters or more, digits said or typed and more letters: "Hotel Kilo five zero one two"
       -- is HK5012, "Delta Lima Hotel six Charlie Kilo" DLH6CK, when such an aircraft flies)
       local letters, last, lead = "", nil, 0
@@ -5203,6 +5207,74 @@ local function spelled_registrations(text, fleet)
     end
   end
   return text
+end
+
+-- "Skyhawk 3AB", "Cessna three alpha bravo", "King Air 0KA", "November three alpha bravo", "Skyhawk November
+-- one two three alpha bravo": a civil aircraft's abbreviated callsign (FAA JO 7110.65 2-4-20), a prefix
+-- (November or N, or a maker, model or nickname of types.lua: "Cessna", "Skyhawk", "King Air") and then the
+-- last characters of its US registration, three or more holding a letter, said in digits, letters or
+-- phonetics (or any registration whole), is written as that registration when exactly one aircraft flying
+-- has a US registration (N and a digit) ending with them and the prefix fits it (November: any; a type word
+-- without digits: the aircraft's type). Returns the text and, when two aircraft end so or the prefix does not
+-- fit the one that does (a suffix, not the whole id), the question to ask instead, else nil.
+local function abbreviated_registrations(text, fleet)
+  if #fleet == 0 then return text, nil end
+  local words = {}  -- {text, b, e} of each word
+  for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
+  local nicknames = require("translate.types").nicknames
+  local function fits(prefix, a)
+    local id, ty = a.id:upper(), (a.type or ""):upper()
+    if prefix == "november" or prefix == "n" then return id:match("^N%d") ~= nil end
+    if (G.type_words()[prefix] or {})[ty] then return true end
+    for _, p in ipairs(nicknames[prefix] or {}) do if ty:match(p) then return true end end
+    return false
+  end
+  for k = 1, #words do
+    local w = words[k][1]
+    local two = words[k + 1] and (w .. " " .. words[k + 1][1])
+    local prefix = (two and nicknames[two] and two) or ((w == "november" or w == "n" or G.type_words()[w]
+      or nicknames[w]) and not w:match("%d") and w)
+    local first = prefix and k + (prefix == two and 2 or 1)
+    -- (the characters said after the prefix, one word apart each, up to the first word that is none)
+    local said, ends = {}, {}
+    for j = first or #words + 1, #words do
+      if not text:sub(words[j - 1][3], words[j][2] - 1):match("^%s+$") then break end
+      local c = lexicon.phonetic[words[j][1]] or SAID_DIGIT[words[j][1]]
+          or (words[j][1]:match("%d") and words[j][1]:upper())
+      if not c then break end
+      said[#said + 1] = (said[#said] or "") .. c:upper()
+      ends[#said] = j
+    end
+    for n = #said, 1, -1 do
+      local chars = said[n]
+      local ending = {}
+      if #chars >= 3 and chars:match("%a") then
+        for _, a in ipairs(fleet) do
+          local id = a.id:upper()
+          if id == chars or (id:match("^N%d") and #id > #chars and id:sub(-#chars) == chars) then ending[#ending + 1] = a end
+        end
+      end
+      if #ending > 0 then
+        if #ending == 1 and fits(prefix, ending[1]) then
+          -- (read again: a prefix before this one, "Skyhawk November ...", is the same aircraft's)
+          return abbreviated_registrations(text:sub(1, words[k][2] - 1) .. ending[1].id .. text:sub(words[ends[n]][3]), fleet)
+        end
+        local heard = text:sub(words[k][2], words[ends[n]][3] - 1)
+        if #ending > 1 then
+          local ids = {}
+          for _, a in ipairs(ending) do ids[#ids + 1] = a.id end
+          return text, string.format("Which aircraft is '%s': %s? Please give its callsign.", heard,
+            table.concat(ids, " or "))
+        end
+        if ending[1].id:upper() ~= chars then
+          return text, string.format("Which aircraft is '%s'? %s ends with %s but is a %s. Please give its callsign.",
+            heard, ending[1].id, chars, ending[1].type or "other type")
+        end
+        break
+      end
+    end
+  end
+  return text, nil
 end
 
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
@@ -5737,6 +5809,9 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
+  local abbreviated
+  text, abbreviated = abbreviated_registrations(text, world.aircraft)
+  if abbreviated then return { commands = {}, ask = abbreviated } end
   text = spelled_registrations(text, world.aircraft)
   local types = require("translate.types")
   local dm = impossible_minutes(text)

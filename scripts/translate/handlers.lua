@@ -1049,7 +1049,7 @@ local MAX_OF = { rate = true, speed = true, power = true, thrust = true, descent
                  altitude = true, range = true, bank = true, value = true, performance = true, mach = true }
 
 -- The type said at token i ("777", "Boeing 777", "seven seven seven", "dash 8", "Cessna", "MAX",
--- "Dreamliner", "A320"): (test, e) with test(designator) true for the types it names and e the token
+-- "Dreamliner", "King Air", "A320"): (test, e) with test(designator) true for the types it names and e the token
 -- after it, or nil. A family's number names each of its variants; a designator or variant names itself;
 -- a maker names its types; a nickname (types.nicknames) its patterns.
 function m:type_said(i)
@@ -1082,12 +1082,15 @@ function m:type_said(i)
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
   if t.kind ~= "word" then return nil end
+  local nicknames = require("translate.types").nicknames
+  local two = self.t[i + 1] and nicknames[t.text .. " " .. self.t[i + 1].text]  -- ("the King Air")
+  if two then return pattern_of(two), i + 2 end
   if makers()[t.text] then
     local nx = self.t[i + 1]
     if nx and nx.kind == "number" and fams[nx.text] then return set_of(fams[nx.text]), i + 2 end
     return set_of(makers()[t.text]), i + 1
   end
-  local nick = require("translate.types").nicknames[t.text]
+  local nick = nicknames[t.text]
   if nick and t.text == "max" and (MAX_OF[self.t[i + 1] and self.t[i + 1].text or ""] or self:word(i - 2, "at to")) then
     return nil
   end
@@ -1097,12 +1100,13 @@ end
 
 -- An aircraft named by "the" and its type, family, maker or nickname alone ("the Cessna", "the 747",
 -- "the triple seven", "the dash 8", "the MAX", "the Boeing 777", "the A346"; a size word between,
--- "the big Boeing", narrows nothing), or by a type word opening the request before an instruction
--- ("Cessna, heading 045", "dash 8 turn right 20"), when no callsign is said in the request (an airline
--- alone may be: "the Cessna ... as the Lufthansa") and exactly one aircraft flying is of a type it
--- names (type_said): a reference to it, as in airline_refs. With several of them flying the words are
--- kept in self.type_unresolved ({b, e, ids}) and type_only asks which, naming them; with none, nothing
--- is read. A type said after "a"/"an" ("create a 747") is a new aircraft's type, never a reference.
+-- "the big Boeing", narrows nothing), when no callsign is said in the request (an airline alone may be:
+-- "the Cessna ... as the Lufthansa") and exactly one aircraft flying is of a type it names (type_said): a
+-- reference to it, as in airline_refs. With several of them flying the words are kept in
+-- self.type_unresolved ({b, e, ids}) and type_only asks which, naming them; with none, nothing is read.
+-- A type word opening the request before an instruction with no "the" ("Cessna, heading 045", "dash 8
+-- turn right 20") calls the aircraft without its registration: kept too ({..., called = true}) and asked,
+-- with one aircraft of the type flying as well. A type said after "a"/"an" ("create a 747") is a new aircraft's type, never a reference.
 function m:type_refs()
   -- ("the Pilatus N48TX", "the Baron N218PK": a type, maker or family said between "the" and the callsign of
   -- a flying aircraft of that type describes it)
@@ -1152,21 +1156,29 @@ function m:type_refs()
       local r = self.refs[n]
       if #fits == 1 and r.kind == "waypoint" and not r.exists and r.b == i and r.e == e then table.remove(self.refs, n) end
     end
-    if #fits > 1 and not self:in_reason(i) then
+    -- (a type word opening the request with no "the", "Cirrus, descend ...", calls the aircraft by its type
+    -- with no registration, as an airline said without its flight number: asked, the one that fits too)
+    local called = test and opening and not the
+    if (#fits > 1 or (called and #fits == 1)) and not self:in_reason(i) then
       self.type_unresolved = self.type_unresolved or {}
-      table.insert(self.type_unresolved, { b = b, e = e, ids = fits })
+      table.insert(self.type_unresolved, { b = b, e = e, ids = fits, called = called })
     end
-    if #fits == 1 then  -- (its numbers too: "where's the 777")
+    local read = #fits == 1 and not called
+    if read then  -- (its numbers too: "where's the 777")
       self:explain(b, e)
       self:mark_used(i, e)
     end
-    i = #fits == 1 and self:insert_ref(fits, i, e, "by_type") or i + 1
+    i = read and self:insert_ref(fits, i, e, "by_type") or i + 1
   end
 end
 
 -- A type said alone that several aircraft flying are of (type_refs): the question names them.
 function m:type_only(s)
   for _, u in ipairs(self.type_unresolved or {}) do
+    if u.b < s.e and u.called and #u.ids == 1 then
+      return self:need(string.format("Which aircraft is '%s'? Please give its callsign (or its registration's "
+        .. "last three characters after its type).", self:raw(u.b, u.e)))
+    end
     if u.b < s.e then
       return self:need(string.format("Which %s do you mean: %s? Please give its callsign.", self:raw(u.b, u.e),
         table.concat(u.ids, " or ")))

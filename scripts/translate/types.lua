@@ -127,6 +127,12 @@ M.nicknames = {
   baron = { "^BE5[58]$" },
   bonanza = { "^BE3[356]$" },
   piper = { "^P28%w$", "^PA%d%d%w?$" },
+  archer = { "^P28A$", "^PA28$" },
+  cherokee = { "^P28%w$", "^PA28$" },
+  skylane = { "^C182$" },
+  mooney = { "^M20%w$" },
+  -- (two words, read together where a nickname opens an abbreviated callsign or follows "the")
+  ["king air"] = { "^BE[29]0$", "^B350$" },
   hercules = { "^C130$" },
   herc = { "^C130$" },
   -- (regional families named without their variant: "the CRJ" is a CRJ200 to CRJ1000, "the ATR" an ATR 42 or 72)

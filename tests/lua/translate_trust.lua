@@ -6053,7 +6053,8 @@ do
 end
 
 -- Cycle 37 (ref): an aircraft named by its type, family, maker or nickname alone ("the 777", "the triple
--- seven", "the dash 8", "the MAX", "Cessna, heading 045") is the one aircraft flying of a type it names;
+-- seven", "the dash 8", "the MAX") is the one aircraft flying of a type it names (opening the request with no
+-- "the", "Cessna, heading 045", it is a call by type with no registration, asked: cycle 42);
 -- with several of them flying the question names them; with none, or a designator no aircraft flies, asked
 do
   local _, ex = scene({ "CRE GLA40 B77W 44.0 -79.0 300 FL220 290", "CRE SKV15 B738 44.2 -79.4 070 FL140 260",
@@ -6064,11 +6065,11 @@ do
   check_eq(ex("where is the Boeing 777"), "POS GLA40")
   -- the Dash 8 family is every Dash 8, the DH8C too
   check_eq(ex("the dash 8, speed 190"), "SPD LIN31 190")
-  check_eq(ex("dash 8 climb to 9000"), "ALT LIN31 9000")
+  asked(ex("dash 8 climb to 9000"), "a type called with no registration")
   asked(ex("dash to FL300"), "'dash' without its 8 is no Dash 8")
   check_eq(ex("the Dash-8 descend to 5000"), "ALT LIN31 5000")
   check_eq(ex("slow the dash to 200"), "SPD LIN31 200")
-  check_eq(ex("Cessna, heading 045"), "HDG GKPQR 45")
+  asked(ex("Cessna, heading 045"), "a maker called with no registration")
   check_eq(ex("the 737 climb FL200"), "ALT SKV15 FL200")
   -- two Boeings: the maker alone, a size word with it, asked naming both
   check_eq(ex("the Boeing descend FL120"), "ASK Which Boeing do you mean: GLA40 or SKV15? Please give its callsign.")
@@ -6078,8 +6079,8 @@ do
   asked(ex("the B772 climb FL300"), "B772 said, only a B77W flying")
   asked(ex("the 747 climb FL300"), "no 747 flying")
   asked(ex("the MAX climb FL300"), "no 737 MAX flying")
-  -- "Cessna" before its model number is a type said, never the addressee cut short
-  check_eq(ex("Cessna 172 climb to 4000"), "ALT GKPQR 4000")
+  -- "Cessna" before its model number is a type said, never the addressee cut short: still no registration
+  asked(ex("Cessna 172 climb to 4000"), "a type said in full called with no registration")
   -- a callsign said: the type words are no reference
   check_eq(ex("SKV15 climb FL200, the 777 is above"), "ALT SKV15 FL200")
   -- a type word in a creation keeps its meaning
@@ -7490,4 +7491,47 @@ do
   check_eq(ex("IBE7721 is obliged to turn left heading 200."), "HDG IBE7721 200 LEFT")
   asked(ex("IBE7721 is required"), "an obligation with nothing to do")
   asked(ex("IBE7721 is expected at FL200"), "an expectation, no obligation")
+end
+
+-- Cycle 42 (g89a): a type or maker word used as the callsign with no registration ("Bonanza, climb ...",
+-- "Skylane turn left ...") is asked, as an airline said without its flight number, with one aircraft of the
+-- type flying too; "the Bonanza" described stays read when exactly one fits
+do
+  local _, ex = scene({ "CRE N47BZ BE35 40.1 -105.1 090 6500 140", "CRE N918SL C182 40.3 -105.3 180 5500 130",
+    "CRE UAL415 A320 40.5 -105.5 270 FL150 280" })
+  check_eq(ex("Bonanza, climb and maintain eight thousand"),
+    "ASK Which aircraft is 'Bonanza'? Please give its callsign (or its registration's last three characters after its type).")
+  asked(ex("Skylane turn left heading 200"), "a nickname opening the request, no registration")
+  asked(ex("Cessna, reduce speed 110"), "a maker opening the request, no registration")
+  check_eq(ex("the Bonanza, climb and maintain eight thousand"), "ALT N47BZ 8000")
+  check_eq(ex("where is the Skylane"), "POS N918SL")
+end
+
+-- Cycle 42 (g89a): FAA abbreviated civil callsigns: a prefix (November or N, or the aircraft's maker, model or
+-- nickname: "Bonanza", "Cessna", "Skylane", "King Air") and the last three characters of a US registration or
+-- more, in digits, letters or phonetics, or the whole registration, name the one aircraft whose registration
+-- ends so when the prefix fits its type; two that end so, a prefix that does not fit, or a bare suffix are asked
+do
+  local _, ex = scene({ "CRE N47BZ BE35 40.1 -105.1 090 6500 140", "CRE N918SL C182 40.3 -105.3 180 5500 130",
+    "CRE N218SL C172 40.4 -105.2 180 4500 110", "CRE N64KA BE20 40.6 -105.6 200 9500 210",
+    "CRE UAL415 A320 40.5 -105.5 270 FL150 280" })
+  check_eq(ex("Bonanza 7BZ, turn right heading 140"), "HDG N47BZ 140 RIGHT")
+  check_eq(ex("Bonanza seven bravo zulu descend and maintain five thousand"), "ALT N47BZ 5000")
+  check_eq(ex("November seven bravo zulu, reduce speed 120"), "SPD N47BZ 120")
+  check_eq(ex("Skylane 918SL climb 7500"), "ALT N918SL 7500")
+  check_eq(ex("King Air four kilo alpha, say altitude"), "POS N64KA")
+  check_eq(ex("King Air 64KA descend 8000"), "ALT N64KA 8000")
+  -- the whole registration after its type, said or typed
+  check_eq(ex("Bonanza November four seven bravo zulu, climb 8500"), "ALT N47BZ 8500")
+  check_eq(ex("Skylane N918SL turn left heading 090"), "HDG N918SL 90 LEFT")
+  -- still asked: two registrations end with "8SL" (both Cessnas; one a Skylane); a type word that does not fit;
+  -- a bare suffix
+  check_eq(ex("Cessna eight sierra lima climb 6000"),
+    "ASK Which aircraft is 'Cessna eight sierra lima': N918SL or N218SL? Please give its callsign.")
+  asked(ex("Skylane 8SL climb 6000"), "two registrations end with 8SL, one of them a Skylane")
+  asked(ex("November eight sierra lima, climb 6000"), "two US registrations end with 8SL")
+  asked(ex("Bonanza 4KA climb 10000"), "a Bonanza prefix before a King Air's letters")
+  check_eq(ex("Piper 7BZ climb 8000"), "ASK Which aircraft is 'Piper 7BZ'? N47BZ ends with 7BZ but is a BE35. "
+    .. "Please give its callsign.")
+  asked(ex("seven bravo zulu, turn right heading 140"), "a bare suffix")
 end
