@@ -7491,3 +7491,14 @@ do
   asked(ex("IBE7721 is required"), "an obligation with nothing to do")
   asked(ex("IBE7721 is expected at FL200"), "an expectation, no obligation")
 end
+
+-- Cycle 42 (g89b): "let it run" / "let the sim run" with a rate said starts the clock (OP) and sets the rate
+-- after it (OP sets DTMULT 1); a rate said of the simulation with no "let ... run" stays the rate alone
+do
+  local _, ex = scene({ "CRE N77QP C172 33.6 -111.9 090 4500 100" })
+  check_eq(ex("let the simulation run, times six"), "OP ; DTMULT 6")
+  check_eq(ex("let it run at 3x"), "OP ; DTMULT 3")
+  check_eq(ex("let it run"), "OP")
+  check_eq(ex("run the simulation at times six"), "DTMULT 6")
+  asked(ex("let the simulation run, much faster"), "a rate with no factor")
+end
