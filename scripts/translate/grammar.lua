@@ -3143,9 +3143,9 @@ function G:destination_not_waypoint()
 end
 
 -- The navaid said by its name after "cross" at token i ("cross Bowie at and maintain 13000", "cross the
--- Bowie VOR at": the UKW VORTAC, one word or two, with "the" before and its kind after, before "at")
--- within lexicon.navaid_range_nm of one aircraft flying: a ref {kind = "waypoint", name, b, e, words (how
--- many words its name has)}, else nil. Reads only; explains nothing.
+-- Bowie VOR at": the UKW VORTAC, one word or two, with "the" before and its kind after, before "at") within
+-- lexicon.navaid_range_nm of one aircraft flying, of the kind said if one is: a ref {kind = "waypoint", name,
+-- b, e, words (how many words its name has)}, else nil. Reads only; explains nothing.
 function G:crossed_navaid(i)
   local named = self.world.navaids_named
   if not named or not self:word(i, "cross crossing crosses") then return nil end
@@ -3158,9 +3158,10 @@ function G:crossed_navaid(i)
       words[#words + 1] = t and t.text
     end
     local e = self:word(b + n, "@navaid_kinds") and b + n + 1 or b + n
+    local kind = e > b + n and lexicon.navaid_types[self.t[b + n].text] or nil  -- (a navaid of the kind said)
     if ok and self:word(e, "at") then
       for _, a in ipairs(self.fleet) do
-        local ids = a.lat and named(table.concat(words, " "), a.lat, a.lon, lexicon.navaid_range_nm) or {}
+        local ids = a.lat and named(table.concat(words, " "), a.lat, a.lon, lexicon.navaid_range_nm, kind) or {}
         if #ids == 1 then return { kind = "waypoint", name = ids[1], b = i + 1, e = e, words = n } end
       end
     end
@@ -3264,15 +3265,20 @@ function G:at_waypoint(s, spec)
   end
   -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at"; a fix
   -- said whole stays that fix: "cross METRO at")
-  -- (a place named in a phrase of what squawk does not simulate, "hold at KUDES", is no constraint's)
+  -- (a place named in a phrase of what squawk does not simulate, "hold at KUDES", is no constraint's; a
+  -- navaid's kind read as an ident, "the Phoenix VOR", names no place of its own)
   local refs = {}
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    if not (self.noted[r.b] and self.u:used(r.b)) then refs[#refs + 1] = r end
+    if not (self.noted[r.b] and self.u:used(r.b)) and not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
+      refs[#refs + 1] = r
+    end
   end
   for i = s.b, self:said("cross crossing crosses") and s.e - 1 or 0 do
     local r = self:crossed_navaid(i)
     local part = r and #self:refs_in(r.b, r.e, "waypoint") > 0
-    for _, f in ipairs(part and self:refs_in(r.b, r.e, "waypoint") or {}) do part = part and f.e - f.b < r.words end
+    for _, f in ipairs(part and self:refs_in(r.b, r.e, "waypoint") or {}) do
+      part = part and (f.e - f.b < r.words or (f.e == f.b + 1 and self:word(f.b, "@navaid_kinds")))
+    end
     if r and (#refs == 0 or part) then
       refs = { r }
       self:explain(r.b, r.e)

@@ -7502,3 +7502,16 @@ do
   check_eq(ex("run the simulation at times six"), "DTMULT 6")
   asked(ex("let the simulation run, much faster"), "a rate with no factor")
 end
+
+-- Cycle 42 (g89b): "cross the NAME VOR at ...": a navaid said by its name and its kind after "cross" is the
+-- constraint's waypoint (the kind, read as an ident of its own, names no other place); a kind that no navaid
+-- of that name bears is asked
+do
+  local _, ex = navscene({ "CRE N4471T PA28 33.3 -111.6 270 5500 110", "ADDWPT N4471T PXR" },
+    "crossing a navaid said with its kind")
+  if ex then
+    check_eq(ex("N4471T, cross the Phoenix VORTAC at four thousand five hundred"), "AT N4471T PXR ALT 4500")
+    check_eq(ex("N4471T cross Phoenix VOR at 100 knots"), "AT N4471T PXR SPD 100")
+    asked(ex("N4471T cross the Phoenix NDB at 4500"), "no NDB of that name")
+  end
+end
