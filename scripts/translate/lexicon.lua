@@ -876,8 +876,9 @@ return {
     { what = "what a heading is flown for", words = "rejoin rejoining intercept intercepting join joining regain",
       subject = "to", after_heading = true, clause = true },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
-    -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
-    { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },
+    -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude ("maintain
+    -- VFR at 4500", one level, is the altitude to fly)
+    { what = "flight rules", words = "vfr", near = { "below", "above", "on", "conditions" } },
     -- "caution similar callsign", "caution wake turbulence": a warning to the pilot, no instruction
     -- (`through`: instruction words that stay in the phrase: wake turbulence is no NOISE command)
     { what = "cautions", words = "caution", through = "turbulence" },

@@ -7515,3 +7515,13 @@ do
     asked(ex("N4471T cross the Phoenix NDB at 4500"), "no NDB of that name")
   end
 end
+
+-- Cycle 42 (g89b): "maintain VFR at 5500" names the altitude to fly (ALT); a level that VFR limits, "at or
+-- below", "on top", stays asked
+do
+  local _, ex = scene({ "CRE N4471T PA28 33.3 -111.6 270 5500 110", "DEFWPT PRAC1 33.4 -111.7" })
+  check_eq(ex("N4471T maintain VFR at three thousand five hundred"), "ALT N4471T 3500")
+  check_eq(ex("N4471T proceed direct PRAC1, maintain VFR at 6500"), "ADDWPT N4471T PRAC1 ; DIRECT N4471T PRAC1 ; ALT N4471T 6500")
+  asked(ex("N4471T maintain VFR at or above 4500"), "a VFR limit, no altitude")
+  asked(ex("N4471T maintain VFR"), "VFR alone")
+end
