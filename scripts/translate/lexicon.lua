@@ -424,7 +424,9 @@ return {
     rotation = { word = "heading", next = "to #number of" },  -- ("rotation speed", Vr, stays as typed)
     velocity = { word = "speed", prev = "vertical" },
     -- (a collision volume, "the hitbox radius", "vertical hitbox 1000 ft": the protected zone)
-    hitbox = { word = "protected zone" } },
+    hitbox = { word = "protected zone" },
+    -- ("make the separation bubble 3 nm", "the safety bubble": the protected zone around each aircraft)
+    bubble = { word = "protected zone", prev = "separation safety" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",

@@ -7525,3 +7525,12 @@ do
   asked(ex("N4471T maintain VFR at or above 4500"), "a VFR limit, no altitude")
   asked(ex("N4471T maintain VFR"), "VFR alone")
 end
+
+-- Cycle 42 (g89b): "the separation bubble", "the safety bubble" is the protected zone (ZONER by its radius);
+-- a bubble said alone names no setting and is asked
+do
+  local _, ex = scene({ "CRE N4471T PA28 33.3 -111.6 270 5500 110" })
+  check_eq(ex("set the separation bubble to 4 nm"), "ZONER 4")
+  check_eq(ex("make the safety bubble radius 2.5 nautical miles"), "ZONER 2.5")
+  asked(ex("make the bubble 4 nm"), "a bubble that is no separation's")
+end
