@@ -3192,6 +3192,37 @@ local function ends_request(self, k)
 end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then
+    -- "after SMO direct LAX", "at SMO, proceed direct LAX", "after passing Santa Monica direct LAX": the request
+    -- opening, after its callsign, with "at", "after" or "over" and a place of the aircraft's route, the direct-to
+    -- said after it, to a waypoint of the route, and nothing more, starts there (AT acid wp DO DIRECT ...,
+    -- G:do_at; a place off the route is asked about)
+    local ids = s.intent == "direct" and spec and spec.handler and self:acids(s) or {}
+    for j = s.e, #self.t do
+      if not (self.t[j].filler or self.t[j].kind == "punct") then ids = {} end
+    end
+    local to = self:refs_in(s.trig + 1, s.e, "waypoint")
+    if #ids == 1 and not (#to == 1 and self:on_route(ids[1], to[1].name)) then ids = {} end
+    local k = self:skip_fillers(s.b)
+    for _, a in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(a.e) end
+    if self.t[k] and self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
+    local opener, verb = k, self:word(s.trig - 1, "proceed go fly") and s.trig - 1 or s.trig
+    if self.t[verb - 1] and self.t[verb - 1].kind == "punct" then verb = verb - 1 end
+    if #ids == 1 and self:word(opener, "at after over overhead") and verb > opener + 1 then
+      k = self:skip_fillers(opener + 1)
+      if self:word(opener, "after") and self:word(k, "passing") then k = self:skip_fillers(k + 1) end
+      local r = self:refs_in(k, verb, "waypoint")[1]
+      local name = r and r.b == k and r.e == verb and r.name
+      if not name and not r and self:state(ids[1]) and verb <= k + 3 then
+        name = self:place_by_name(k, verb, self:state(ids[1]))
+      end
+      if name and not self.ask then
+        local n0 = #self.out
+        self:explain(opener, verb)
+        self[spec.handler](self, s, spec)
+        if not self.ask then self:do_at(ids[1], name, n0) end
+        return true
+      end
+    end
     -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in a direct's
     -- clause)
     for _, r in ipairs(s.intent == "direct" and self:refs_in(s.b, s.e, "waypoint") or {}) do

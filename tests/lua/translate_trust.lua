@@ -7534,3 +7534,15 @@ do
   check_eq(ex("make the safety bubble radius 2.5 nautical miles"), "ZONER 2.5")
   asked(ex("make the bubble 4 nm"), "a bubble that is no separation's")
 end
+
+-- Cycle 42 (g89b): "after/at/over FIX direct WPT": a request that opens with a waypoint of the route and gives a
+-- direct-to (to a waypoint of the route) after it starts the direct-to there (AT acid FIX DO DIRECT ...); a
+-- place off the route is asked, and an instruction said after the direct-to leaves it asked
+do
+  local _, ex = scene({ "DEFWPT PRAC1 33.4 -111.7", "DEFWPT PRAC2 33.5 -111.8", "DEFWPT PRAC3 33.6 -111.6",
+    "CRE N4471T PA28 33.3 -111.6 270 5500 110", "ADDWPT N4471T PRAC1", "ADDWPT N4471T PRAC2" })
+  check_eq(ex("N4471T, after PRAC1 proceed direct PRAC2"), "AT N4471T PRAC1 DO DIRECT N4471T PRAC2")
+  check_eq(ex("N4471T over PRAC1, direct PRAC2 please"), "AT N4471T PRAC1 DO DIRECT N4471T PRAC2")
+  asked(ex("N4471T after PRAC3 direct PRAC2"), "a waypoint off the route")
+  asked(ex("N4471T after PRAC1, direct PRAC2, climb to 6500"), "whether the climb is now or there")
+end
