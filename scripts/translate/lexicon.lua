@@ -985,6 +985,8 @@ return {
                     -- (Belgium, Switzerland and New England: the city's airport named after a place beside it)
                     charleroi = "brussels south", ostend = "oostende", antwerp = "deurne", basel = "bale mulhouse",
                     boston = "general edward lawrence logan",
+                    -- (California: the city's airport named after a person)
+                    burbank = "bob hope",
                     -- (South-East Asia: cities whose one large airport the navdata names after a person, a
                     -- district or the island)
                     manila = "ninoy aquino intl", jakarta = "soekarno hatta intl", hanoi = "noibai intl",

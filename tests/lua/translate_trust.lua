@@ -7546,3 +7546,13 @@ do
   asked(ex("N4471T after PRAC3 direct PRAC2"), "a waypoint off the route")
   asked(ex("N4471T after PRAC1, direct PRAC2, climb to 6500"), "whether the climb is now or there")
 end
+
+-- Cycle 42 (g89b): Burbank is named by its city where the navdata names its airport after a person (KBUR,
+-- BOB HOPE); Los Angeles, a city of several large airports, stays asked
+do
+  local _, ex = navscene({ "CRE N4471T C172 34.1 -118.5 090 3500 100" }, "Burbank by its city")
+  if ex then
+    check_eq(ex("N4471T, destination Burbank"), "DEST N4471T KBUR")
+    asked(ex("N4471T, your destination is Los Angeles"), "a city of several large airports")
+  end
+end
