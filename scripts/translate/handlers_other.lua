@@ -2167,6 +2167,12 @@ return function(H, f, compass)
         n = self:take(q)
       end
       if q.kind == "alt" and not alt then alt = self:take(q) end
+      -- ("at 4500 and 100 knots": after the count, a bare number of whole hundreds from 1000 to 60000 said
+      -- after "at" is the altitude [ft], as in a creation)
+      if not alt and n and q ~= n and q.kind == "plain" and self:word(q.b - 1, "at") and q.value >= 1000
+          and q.value <= 60000 and q.value % 100 == 0 then
+        alt = self:take(q)
+      end
       -- "speed 280", "280 kts": MCRE's speed [kt]
       if not spd and (q.kind == "speed" or (q.kind == "plain" and n and q ~= n and self:word(q.b - 1, "speed spd"))) then
         spd = self:take(q)

@@ -7556,3 +7556,12 @@ do
     asked(ex("N4471T, your destination is Los Angeles"), "a city of several large airports")
   end
 end
+
+-- Cycle 42 (g89b): random traffic "at 4500": after the count, a bare number of whole hundreds after "at" is the
+-- altitude in feet, as in a creation; a bare number with no "at", or no altitude's size, is asked
+do
+  local _, ex = scene({})
+  check_eq(ex("put in six random Cessna 172s at 3500 and 95 knots"), "MCRE 6 C172 3500 95")
+  asked(ex("put in six random Cessna 172s, 3500"), "a bare number, no 'at'")
+  asked(ex("put in six random Cessna 172s at 350"), "no altitude's size")
+end
