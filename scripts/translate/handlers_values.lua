@@ -811,7 +811,9 @@ return function(H, f, wrap, compass)
     local levels = {}  -- feet
     for _, c in ipairs(now and self.out or {}) do
       local fl = c:match("^ALT " .. own .. " FL(%d+)") or c:match("^AT " .. own .. " %S+ ALT FL(%d+)$")
-      levels[#levels + 1] = fl and tonumber(fl) * 100
+      -- (an altitude in feet too: "descend to 2500, vertical speed 500" descends)
+      local ft = c:match("^ALT " .. own .. " (%d+)$") or c:match("^AT " .. own .. " %S+ ALT (%d+)$")
+      levels[#levels + 1] = fl and tonumber(fl) * 100 or tonumber(ft)
     end
     -- (a flight level said before the rate's word in its segment, "FL380 rate of descent 2000", is flown too)
     for _, q in ipairs(now and self:quantities(s.b, v.b) or {}) do

@@ -7565,3 +7565,13 @@ do
   asked(ex("put in six random Cessna 172s, 3500"), "a bare number, no 'at'")
   asked(ex("put in six random Cessna 172s at 350"), "no altitude's size")
 end
+
+-- Cycle 42 (g89b): a vertical speed said unsigned after an altitude in feet ("descend to 2500, vertical speed
+-- 500") takes the way to that altitude, as after a flight level; said alone it is the rate as given
+do
+  local _, ex = scene({ "CRE N4471T C172 33.3 -111.6 270 5500 110" })
+  check_eq(ex("N4471T descend to three thousand, vertical speed 600"), "ALT N4471T 3000 ; VS N4471T -600")
+  check_eq(ex("N4471T climb to 7500, vertical speed 400"), "ALT N4471T 7500 ; VS N4471T 400")
+  check_eq(ex("N4471T maintain 4000, vertical speed 700"), "ALT N4471T 4000 ; VS N4471T -700")
+  asked(ex("N4471T maintain 4000, rate of climb 700"), "a climb rate toward a lower altitude")
+end
