@@ -7575,3 +7575,13 @@ do
   check_eq(ex("N4471T maintain 4000, vertical speed 700"), "ALT N4471T 4000 ; VS N4471T -700")
   asked(ex("N4471T maintain 4000, rate of climb 700"), "a climb rate toward a lower altitude")
 end
+
+-- Cycle 42 (g89b): "hold your altitude", "maintain present altitude" said to several aircraft: each keeps its
+-- own current level; a verb of keeping with no "your" or "present" ("hold altitude") is still asked
+do
+  local _, ex = scene({ "CRE N4471T C172 33.3 -111.6 270 5500 110", "CRE N9920K SR22 33.5 -111.8 090 8500 150" })
+  check_eq(ex("N4471T and N9920K, hold your altitude"), "ALT N4471T 5500 ; ALT N9920K 8500")
+  check_eq(ex("N9920K keep your altitude"), "ALT N9920K 8500")
+  check_eq(ex("N4471T, N9920K, maintain present altitude"), "ALT N4471T 5500 ; ALT N9920K 8500")
+  asked(ex("N4471T hold altitude"), "no level said and none named as its own")
+end
