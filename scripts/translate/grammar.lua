@@ -3194,7 +3194,7 @@ function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then
     -- "after SMO direct LAX", "at SMO, proceed direct LAX", "after passing Santa Monica direct LAX": the request
     -- opening, after its callsign, with "at", "after" or "over" and a place of the aircraft's route, the direct-to
-    -- said after it, to a waypoint of the route, and nothing more, starts there (AT acid wp DO DIRECT ...,
+    -- said after it, to the next waypoint of the route, and nothing more, starts there (AT acid wp DO DIRECT ...,
     -- G:do_at; a place off the route is asked about)
     local ids = s.intent == "direct" and spec and spec.handler and self:acids(s) or {}
     for j = s.e, #self.t do
@@ -3215,7 +3215,13 @@ function G:at_waypoint(s, spec)
       if not name and not r and self:state(ids[1]) and verb <= k + 3 then
         name = self:place_by_name(k, verb, self:state(ids[1]))
       end
-      if name and not self.ask then
+      -- (with waypoints of the route between the two, which of them the shortcut leaves out is asked)
+      local route, at, target = (self:state(ids[1]) or {}).route or {}, nil, nil
+      for i, w in ipairs(route) do
+        if name and w:upper() == name:upper() then at = i end
+        if w:upper() == to[1].name:upper() then target = i end
+      end
+      if name and not self.ask and at and target == at + 1 then
         local n0 = #self.out
         self:explain(opener, verb)
         self[spec.handler](self, s, spec)

@@ -2877,11 +2877,14 @@ return function(H, f, compass)
     self:need("What time step, in seconds, should the simulation use?")
   end
   function m:time_mult(s)
-    -- "let it run at 4x", "let the sim run, times eight": the clock started (OP, which sets DTMULT 1, as
-    -- BlueSky's does) and its rate after it
+    -- "let the sim run, times eight", "let it run. x4": the clock started, said as a clause of its own (OP, which
+    -- sets DTMULT 1, as BlueSky's does), and its rate after it ("let it run at 5 times speed" is the rate alone)
     local run = self:word(s.trig, "@sim") and s.trig + 1 or s.trig
     local let = self:word(run - 1, "it") and run - 1 or (self:word(run - 1, "@sim") and self:word(run - 2, "the") and run - 2)
-    if let and self:word(let - 1, "let") and self:word(run, "run") and self.out[#self.out] ~= "OP" then self:emit("OP") end
+    if let and self:word(let - 1, "let") and self:word(run, "run") and self.t[run + 1] and self.t[run + 1].kind == "punct"
+        and self.out[#self.out] ~= "OP" then
+      self:emit("OP")
+    end
     local q = first(self, s, { mult = true, plain = true })
     if q then return self:emit("DTMULT " .. f.num(q.value)) end
     -- "pause, then 3x speed", "and then 5 times faster": a factor said before the instruction word, in

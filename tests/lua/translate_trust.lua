@@ -7492,12 +7492,14 @@ do
   asked(ex("IBE7721 is expected at FL200"), "an expectation, no obligation")
 end
 
--- Cycle 42 (g89b): "let it run" / "let the sim run" with a rate said starts the clock (OP) and sets the rate
--- after it (OP sets DTMULT 1); a rate said of the simulation with no "let ... run" stays the rate alone
+-- Cycle 42 (g89b): "let it run" / "let the sim run" said as a clause of its own, with a rate after it, starts the
+-- clock (OP) and sets the rate after it (OP sets DTMULT 1); a rate said as the run's manner ("let it run at 3x")
+-- or of the simulation with no "let ... run" stays the rate alone
 do
   local _, ex = scene({ "CRE N77QP C172 33.6 -111.9 090 4500 100" })
   check_eq(ex("let the simulation run, times six"), "OP ; DTMULT 6")
-  check_eq(ex("let it run at 3x"), "OP ; DTMULT 3")
+  check_eq(ex("let it run. x3"), "OP ; DTMULT 3")
+  check_eq(ex("let it run at 3x"), "DTMULT 3")
   check_eq(ex("let it run"), "OP")
   check_eq(ex("run the simulation at times six"), "DTMULT 6")
   asked(ex("let the simulation run, much faster"), "a rate with no factor")
@@ -7536,14 +7538,17 @@ do
 end
 
 -- Cycle 42 (g89b): "after/at/over FIX direct WPT": a request that opens with a waypoint of the route and gives a
--- direct-to (to a waypoint of the route) after it starts the direct-to there (AT acid FIX DO DIRECT ...); a
--- place off the route is asked, and an instruction said after the direct-to leaves it asked
+-- direct-to to the next waypoint of the route after it starts the direct-to there (AT acid FIX DO DIRECT ...); a
+-- place off the route, a shortcut past waypoints of the route (which are left out?) and an instruction said
+-- after the direct-to are asked
 do
   local _, ex = scene({ "DEFWPT PRAC1 33.4 -111.7", "DEFWPT PRAC2 33.5 -111.8", "DEFWPT PRAC3 33.6 -111.6",
-    "CRE N4471T PA28 33.3 -111.6 270 5500 110", "ADDWPT N4471T PRAC1", "ADDWPT N4471T PRAC2" })
+    "DEFWPT PRAC4 33.7 -111.9", "CRE N4471T PA28 33.3 -111.6 270 5500 110", "ADDWPT N4471T PRAC1",
+    "ADDWPT N4471T PRAC2", "ADDWPT N4471T PRAC4" })
   check_eq(ex("N4471T, after PRAC1 proceed direct PRAC2"), "AT N4471T PRAC1 DO DIRECT N4471T PRAC2")
   check_eq(ex("N4471T over PRAC1, direct PRAC2 please"), "AT N4471T PRAC1 DO DIRECT N4471T PRAC2")
   asked(ex("N4471T after PRAC3 direct PRAC2"), "a waypoint off the route")
+  asked(ex("N4471T after PRAC1 direct PRAC4"), "a shortcut past PRAC2")
   asked(ex("N4471T after PRAC1, direct PRAC2, climb to 6500"), "whether the climb is now or there")
 end
 
