@@ -3143,9 +3143,9 @@ function G:destination_not_waypoint()
 end
 
 -- The navaid said by its name after "cross" at token i ("cross Bowie at and maintain 13000", "cross the
--- Bowie VOR at": the UKW VORTAC, one word or two, with "the" before and its kind after, before "at")
--- within lexicon.navaid_range_nm of one aircraft flying: a ref {kind = "waypoint", name, b, e, words (how
--- many words its name has)}, else nil. Reads only; explains nothing.
+-- Bowie VOR at": the UKW VORTAC, one word or two, with "the" before and its kind after, before "at") within
+-- lexicon.navaid_range_nm of one aircraft flying, of the kind said if one is: a ref {kind = "waypoint", name,
+-- b, e, words (how many words its name has)}, else nil. Reads only; explains nothing.
 function G:crossed_navaid(i)
   local named = self.world.navaids_named
   if not named or not self:word(i, "cross crossing crosses") then return nil end
@@ -3158,9 +3158,10 @@ function G:crossed_navaid(i)
       words[#words + 1] = t and t.text
     end
     local e = self:word(b + n, "@navaid_kinds") and b + n + 1 or b + n
+    local kind = e > b + n and lexicon.navaid_types[self.t[b + n].text] or nil  -- (a navaid of the kind said)
     if ok and self:word(e, "at") then
       for _, a in ipairs(self.fleet) do
-        local ids = a.lat and named(table.concat(words, " "), a.lat, a.lon, lexicon.navaid_range_nm) or {}
+        local ids = a.lat and named(table.concat(words, " "), a.lat, a.lon, lexicon.navaid_range_nm, kind) or {}
         if #ids == 1 then return { kind = "waypoint", name = ids[1], b = i + 1, e = e, words = n } end
       end
     end
@@ -3191,6 +3192,43 @@ local function ends_request(self, k)
 end
 function G:at_waypoint(s, spec)
   if not (spec and spec.value) and s.intent ~= "infer" then
+    -- "after SMO direct LAX", "at SMO, proceed direct LAX", "after passing Santa Monica direct LAX": the request
+    -- opening, after its callsign, with "at", "after" or "over" and a place of the aircraft's route, the direct-to
+    -- said after it, to the next waypoint of the route, and nothing more, starts there (AT acid wp DO DIRECT ...,
+    -- G:do_at; a place off the route is asked about)
+    local ids = s.intent == "direct" and spec and spec.handler and self:acids(s) or {}
+    for j = s.e, #self.t do
+      if not (self.t[j].filler or self.t[j].kind == "punct") then ids = {} end
+    end
+    local to = self:refs_in(s.trig + 1, s.e, "waypoint")
+    if #ids == 1 and not (#to == 1 and self:on_route(ids[1], to[1].name)) then ids = {} end
+    local k = self:skip_fillers(s.b)
+    for _, a in ipairs(self:refs_in(k, k + 1, "aircraft")) do k = self:skip_fillers(a.e) end
+    if self.t[k] and self.t[k].kind == "punct" then k = self:skip_fillers(k + 1) end
+    local opener, verb = k, self:word(s.trig - 1, "proceed go fly") and s.trig - 1 or s.trig
+    if self.t[verb - 1] and self.t[verb - 1].kind == "punct" then verb = verb - 1 end
+    if #ids == 1 and self:word(opener, "at after over overhead") and verb > opener + 1 then
+      k = self:skip_fillers(opener + 1)
+      if self:word(opener, "after") and self:word(k, "passing") then k = self:skip_fillers(k + 1) end
+      local r = self:refs_in(k, verb, "waypoint")[1]
+      local name = r and r.b == k and r.e == verb and r.name
+      if not name and not r and self:state(ids[1]) and verb <= k + 3 then
+        name = self:place_by_name(k, verb, self:state(ids[1]))
+      end
+      -- (with waypoints of the route between the two, which of them the shortcut leaves out is asked)
+      local route, at, target = (self:state(ids[1]) or {}).route or {}, nil, nil
+      for i, w in ipairs(route) do
+        if name and w:upper() == name:upper() then at = i end
+        if w:upper() == to[1].name:upper() then target = i end
+      end
+      if name and not self.ask and at and target == at + 1 then
+        local n0 = #self.out
+        self:explain(opener, verb)
+        self[spec.handler](self, s, spec)
+        if not self.ask then self:do_at(ids[1], name, n0) end
+        return true
+      end
+    end
     -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in a direct's
     -- clause)
     for _, r in ipairs(s.intent == "direct" and self:refs_in(s.b, s.e, "waypoint") or {}) do
@@ -3264,15 +3302,20 @@ function G:at_waypoint(s, spec)
   end
   -- (a navaid's name after "cross", over a fix named like one of its words: "cross Cedar Creek at"; a fix
   -- said whole stays that fix: "cross METRO at")
-  -- (a place named in a phrase of what squawk does not simulate, "hold at KUDES", is no constraint's)
+  -- (a place named in a phrase of what squawk does not simulate, "hold at KUDES", is no constraint's; a
+  -- navaid's kind read as an ident, "the Phoenix VOR", names no place of its own)
   local refs = {}
   for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
-    if not (self.noted[r.b] and self.u:used(r.b)) then refs[#refs + 1] = r end
+    if not (self.noted[r.b] and self.u:used(r.b)) and not (r.e == r.b + 1 and self:word(r.b, "@navaid_kinds")) then
+      refs[#refs + 1] = r
+    end
   end
   for i = s.b, self:said("cross crossing crosses") and s.e - 1 or 0 do
     local r = self:crossed_navaid(i)
     local part = r and #self:refs_in(r.b, r.e, "waypoint") > 0
-    for _, f in ipairs(part and self:refs_in(r.b, r.e, "waypoint") or {}) do part = part and f.e - f.b < r.words end
+    for _, f in ipairs(part and self:refs_in(r.b, r.e, "waypoint") or {}) do
+      part = part and (f.e - f.b < r.words or (f.e == f.b + 1 and self:word(f.b, "@navaid_kinds")))
+    end
     if r and (#refs == 0 or part) then
       refs = { r }
       self:explain(r.b, r.e)

@@ -2167,6 +2167,12 @@ return function(H, f, compass)
         n = self:take(q)
       end
       if q.kind == "alt" and not alt then alt = self:take(q) end
+      -- ("at 4500 and 100 knots": after the count, a bare number of whole hundreds from 1000 to 60000 said
+      -- after "at" is the altitude [ft], as in a creation)
+      if not alt and n and q ~= n and q.kind == "plain" and self:word(q.b - 1, "at") and q.value >= 1000
+          and q.value <= 60000 and q.value % 100 == 0 then
+        alt = self:take(q)
+      end
       -- "speed 280", "280 kts": MCRE's speed [kt]
       if not spd and (q.kind == "speed" or (q.kind == "plain" and n and q ~= n and self:word(q.b - 1, "speed spd"))) then
         spd = self:take(q)
@@ -2871,6 +2877,14 @@ return function(H, f, compass)
     self:need("What time step, in seconds, should the simulation use?")
   end
   function m:time_mult(s)
+    -- "let the sim run, times eight", "let it run. x4": the clock started, said as a clause of its own (OP, which
+    -- sets DTMULT 1, as BlueSky's does), and its rate after it ("let it run at 5 times speed" is the rate alone)
+    local run = self:word(s.trig, "@sim") and s.trig + 1 or s.trig
+    local let = self:word(run - 1, "it") and run - 1 or (self:word(run - 1, "@sim") and self:word(run - 2, "the") and run - 2)
+    if let and self:word(let - 1, "let") and self:word(run, "run") and self.t[run + 1] and self.t[run + 1].kind == "punct"
+        and self.out[#self.out] ~= "OP" then
+      self:emit("OP")
+    end
     local q = first(self, s, { mult = true, plain = true })
     if q then return self:emit("DTMULT " .. f.num(q.value)) end
     -- "pause, then 3x speed", "and then 5 times faster": a factor said before the instruction word, in

@@ -219,10 +219,16 @@ return function(H, f, wrap, compass)
       return self:emit("ALT " .. refs[1].name .. " " .. (ft >= 10000 and f.alt(ft, true) or f.int(ft)))
     end
     if not target and rate then return self:vspeed(s) end
-    -- "maintain present altitude": the current level, read from the traffic
-    if not target and now and self:word_in(s.b, s.e, "present current")
+    -- "maintain present altitude", "hold your altitude" (a verb of keeping, the aircraft's own level): each
+    -- aircraft's current level, read from the traffic
+    local own = self:word_in(math.max(1, s.trig - 2), s.trig + 1, "@keep_verbs") and self:word_in(s.b, s.e, "your its their")
+    if not target and now and (own or self:word_in(s.b, s.e, "present current"))
         and not self:word_in(s.b, s.e + 1, "heading hdg speed") then
-      return self:emit("ALT " .. ids[1] .. " " .. f.int(now.alt_ft or 0))
+      for _, id in ipairs(ids) do
+        if not self:state(id) then return self:need("What is the altitude of " .. id .. "?") end
+      end
+      for _, id in ipairs(ids) do self:emit("ALT " .. id .. " " .. f.int(self:state(id).alt_ft or 0)) end
+      return
     end
     if not target then return self:need("What altitude should " .. ids[1] .. " " .. verb .. " to?") end
     local q = target
@@ -811,7 +817,9 @@ return function(H, f, wrap, compass)
     local levels = {}  -- feet
     for _, c in ipairs(now and self.out or {}) do
       local fl = c:match("^ALT " .. own .. " FL(%d+)") or c:match("^AT " .. own .. " %S+ ALT FL(%d+)$")
-      levels[#levels + 1] = fl and tonumber(fl) * 100
+      -- (an altitude in feet too: "descend to 2500, vertical speed 500" descends)
+      local ft = c:match("^ALT " .. own .. " (%d+)$") or c:match("^AT " .. own .. " %S+ ALT (%d+)$")
+      levels[#levels + 1] = fl and tonumber(fl) * 100 or tonumber(ft)
     end
     -- (a flight level said before the rate's word in its segment, "FL380 rate of descent 2000", is flown too)
     for _, q in ipairs(now and self:quantities(s.b, v.b) or {}) do

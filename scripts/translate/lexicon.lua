@@ -424,7 +424,9 @@ return {
     rotation = { word = "heading", next = "to #number of" },  -- ("rotation speed", Vr, stays as typed)
     velocity = { word = "speed", prev = "vertical" },
     -- (a collision volume, "the hitbox radius", "vertical hitbox 1000 ft": the protected zone)
-    hitbox = { word = "protected zone" } },
+    hitbox = { word = "protected zone" },
+    -- ("make the separation bubble 3 nm", "the safety bubble": the protected zone around each aircraft)
+    bubble = { word = "protected zone", prev = "separation safety" } },
   -- words that, typed before "=", name a setting or a value ("pz=5nm", "lookahead=300", "altitude=fl300"), beside
   -- the registry's names and the shorthand
   setting_keys = { "pz", "rpz", "lookahead", "altitude", "speed", "heading", "level", "fl", "mach", "rate",
@@ -876,8 +878,9 @@ return {
     { what = "what a heading is flown for", words = "rejoin rejoining intercept intercepting join joining regain",
       subject = "to", after_heading = true, clause = true },
     -- "maintain VFR at or below 4500", "VFR on top", "remain VFR conditions": flight rules, with the levels
-    -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude
-    { what = "flight rules", words = "vfr", near = { "at", "below", "above", "on", "conditions" } },
+    -- they allow; squawk flies no flight rules, and the level said with them is no cleared altitude ("maintain
+    -- VFR at 4500", one level, is the altitude to fly)
+    { what = "flight rules", words = "vfr", near = { "below", "above", "on", "conditions" } },
     -- "caution similar callsign", "caution wake turbulence": a warning to the pilot, no instruction
     -- (`through`: instruction words that stay in the phrase: wake turbulence is no NOISE command)
     { what = "cautions", words = "caution", through = "turbulence" },
@@ -982,6 +985,8 @@ return {
                     -- (Belgium, Switzerland and New England: the city's airport named after a place beside it)
                     charleroi = "brussels south", ostend = "oostende", antwerp = "deurne", basel = "bale mulhouse",
                     boston = "general edward lawrence logan",
+                    -- (California: the city's airport named after a person)
+                    burbank = "bob hope",
                     -- (South-East Asia: cities whose one large airport the navdata names after a person, a
                     -- district or the island)
                     manila = "ninoy aquino intl", jakarta = "soekarno hatta intl", hanoi = "noibai intl",

@@ -7535,3 +7535,102 @@ do
     .. "Please give its callsign.")
   asked(ex("seven bravo zulu, turn right heading 140"), "a bare suffix")
 end
+
+-- Cycle 42 (g89b): "let it run" / "let the sim run" said as a clause of its own, with a rate after it, starts the
+-- clock (OP) and sets the rate after it (OP sets DTMULT 1); a rate said as the run's manner ("let it run at 3x")
+-- or of the simulation with no "let ... run" stays the rate alone
+do
+  local _, ex = scene({ "CRE N77QP C172 33.6 -111.9 090 4500 100" })
+  check_eq(ex("let the simulation run, times six"), "OP ; DTMULT 6")
+  check_eq(ex("let it run. x3"), "OP ; DTMULT 3")
+  check_eq(ex("let it run at 3x"), "DTMULT 3")
+  check_eq(ex("let it run"), "OP")
+  check_eq(ex("run the simulation at times six"), "DTMULT 6")
+  asked(ex("let the simulation run, much faster"), "a rate with no factor")
+end
+
+-- Cycle 42 (g89b): "cross the NAME VOR at ...": a navaid said by its name and its kind after "cross" is the
+-- constraint's waypoint (the kind, read as an ident of its own, names no other place); a kind that no navaid
+-- of that name bears is asked
+do
+  local _, ex = navscene({ "CRE N4471T PA28 33.3 -111.6 270 5500 110", "ADDWPT N4471T PXR" },
+    "crossing a navaid said with its kind")
+  if ex then
+    check_eq(ex("N4471T, cross the Phoenix VORTAC at four thousand five hundred"), "AT N4471T PXR ALT 4500")
+    check_eq(ex("N4471T cross Phoenix VOR at 100 knots"), "AT N4471T PXR SPD 100")
+    asked(ex("N4471T cross the Phoenix NDB at 4500"), "no NDB of that name")
+  end
+end
+
+-- Cycle 42 (g89b): "maintain VFR at 5500" names the altitude to fly (ALT); a level that VFR limits, "at or
+-- below", "on top", stays asked
+do
+  local _, ex = scene({ "CRE N4471T PA28 33.3 -111.6 270 5500 110", "DEFWPT PRAC1 33.4 -111.7" })
+  check_eq(ex("N4471T maintain VFR at three thousand five hundred"), "ALT N4471T 3500")
+  check_eq(ex("N4471T proceed direct PRAC1, maintain VFR at 6500"), "ADDWPT N4471T PRAC1 ; DIRECT N4471T PRAC1 ; ALT N4471T 6500")
+  asked(ex("N4471T maintain VFR at or above 4500"), "a VFR limit, no altitude")
+  asked(ex("N4471T maintain VFR"), "VFR alone")
+end
+
+-- Cycle 42 (g89b): "the separation bubble", "the safety bubble" is the protected zone (ZONER by its radius);
+-- a bubble said alone names no setting and is asked
+do
+  local _, ex = scene({ "CRE N4471T PA28 33.3 -111.6 270 5500 110" })
+  check_eq(ex("set the separation bubble to 4 nm"), "ZONER 4")
+  check_eq(ex("make the safety bubble radius 2.5 nautical miles"), "ZONER 2.5")
+  asked(ex("make the bubble 4 nm"), "a bubble that is no separation's")
+end
+
+-- Cycle 42 (g89b): "after/at/over FIX direct WPT": a request that opens with a waypoint of the route and gives a
+-- direct-to to the next waypoint of the route after it starts the direct-to there (AT acid FIX DO DIRECT ...); a
+-- place off the route, a shortcut past waypoints of the route (which are left out?) and an instruction said
+-- after the direct-to are asked
+do
+  local _, ex = scene({ "DEFWPT PRAC1 33.4 -111.7", "DEFWPT PRAC2 33.5 -111.8", "DEFWPT PRAC3 33.6 -111.6",
+    "DEFWPT PRAC4 33.7 -111.9", "CRE N4471T PA28 33.3 -111.6 270 5500 110", "ADDWPT N4471T PRAC1",
+    "ADDWPT N4471T PRAC2", "ADDWPT N4471T PRAC4" })
+  check_eq(ex("N4471T, after PRAC1 proceed direct PRAC2"), "AT N4471T PRAC1 DO DIRECT N4471T PRAC2")
+  check_eq(ex("N4471T over PRAC1, direct PRAC2 please"), "AT N4471T PRAC1 DO DIRECT N4471T PRAC2")
+  asked(ex("N4471T after PRAC3 direct PRAC2"), "a waypoint off the route")
+  asked(ex("N4471T after PRAC1 direct PRAC4"), "a shortcut past PRAC2")
+  asked(ex("N4471T after PRAC1, direct PRAC2, climb to 6500"), "whether the climb is now or there")
+end
+
+-- Cycle 42 (g89b): Burbank is named by its city where the navdata names its airport after a person (KBUR,
+-- BOB HOPE); Los Angeles, a city of several large airports, stays asked
+do
+  local _, ex = navscene({ "CRE N4471T C172 34.1 -118.5 090 3500 100" }, "Burbank by its city")
+  if ex then
+    check_eq(ex("N4471T, destination Burbank"), "DEST N4471T KBUR")
+    asked(ex("N4471T, your destination is Los Angeles"), "a city of several large airports")
+  end
+end
+
+-- Cycle 42 (g89b): random traffic "at 4500": after the count, a bare number of whole hundreds after "at" is the
+-- altitude in feet, as in a creation; a bare number with no "at", or no altitude's size, is asked
+do
+  local _, ex = scene({})
+  check_eq(ex("put in six random Cessna 172s at 3500 and 95 knots"), "MCRE 6 C172 3500 95")
+  asked(ex("put in six random Cessna 172s, 3500"), "a bare number, no 'at'")
+  asked(ex("put in six random Cessna 172s at 350"), "no altitude's size")
+end
+
+-- Cycle 42 (g89b): a vertical speed said unsigned after an altitude in feet ("descend to 2500, vertical speed
+-- 500") takes the way to that altitude, as after a flight level; said alone it is the rate as given
+do
+  local _, ex = scene({ "CRE N4471T C172 33.3 -111.6 270 5500 110" })
+  check_eq(ex("N4471T descend to three thousand, vertical speed 600"), "ALT N4471T 3000 ; VS N4471T -600")
+  check_eq(ex("N4471T climb to 7500, vertical speed 400"), "ALT N4471T 7500 ; VS N4471T 400")
+  check_eq(ex("N4471T maintain 4000, vertical speed 700"), "ALT N4471T 4000 ; VS N4471T -700")
+  asked(ex("N4471T maintain 4000, rate of climb 700"), "a climb rate toward a lower altitude")
+end
+
+-- Cycle 42 (g89b): "hold your altitude", "maintain present altitude" said to several aircraft: each keeps its
+-- own current level; a verb of keeping with no "your" or "present" ("hold altitude") is still asked
+do
+  local _, ex = scene({ "CRE N4471T C172 33.3 -111.6 270 5500 110", "CRE N9920K SR22 33.5 -111.8 090 8500 150" })
+  check_eq(ex("N4471T and N9920K, hold your altitude"), "ALT N4471T 5500 ; ALT N9920K 8500")
+  check_eq(ex("N9920K keep your altitude"), "ALT N9920K 8500")
+  check_eq(ex("N4471T, N9920K, maintain present altitude"), "ALT N4471T 5500 ; ALT N9920K 8500")
+  asked(ex("N4471T hold altitude"), "no level said and none named as its own")
+end
