@@ -630,7 +630,7 @@ return function(H, f, wrap, compass)
       rel = { kind = rel.kind, value = rel.value, b = rel.b, e = rel.e, turn = turn, number = rel.number, to = rel.to,
               changed = rel.changed }
     end
-    local named
+    local named, general  -- general: the first token of "to the west" / "towards the north" when said so
     for i = s.b, s.e - 1 do
       if named then break end
       -- a compass word of a callsign ("Southwest 963") or a place ("northeast of") is no heading
@@ -645,6 +645,8 @@ return function(H, f, wrap, compass)
           while last + 1 < math.min(s.e, i + 3) and self:word(last + 1, "a @vague_direction") do last = last + 1 end
           return self:need(string.format("What heading should %s fly? '%s' names no heading.", ids[1], self:raw(v, last + 1)))
         end
+        -- ("to the west", "towards the north": a general direction, not a heading; "fly west" is 270)
+        if named and self:word(i - 1, "the") and self:word(i - 2, "to towards toward") then general = i - 2 end
       end
     end
     local id = ids[1]
@@ -710,6 +712,11 @@ return function(H, f, wrap, compass)
       local dir = rel.turn ~= 0 and rel.turn or turn
       if dir == 0 then return self:need("Should " .. id .. " turn left or right?") end
       offset = dir * rel.value
+    elseif general then
+      local last = general + 3
+      while last < s.e and self.t[last].kind == "word" and compass(self.t[last].text) do last = last + 1 end
+      return self:need(string.format("What heading should %s fly? '%s' is a general direction, not a heading.", id,
+        self:raw(general, last)))
     elseif named then
       hdg = named
     elseif toward then

@@ -6357,7 +6357,7 @@ do
   asked(ex("make NLX40 head southwards"), "southwards")
   asked(ex("create NLX41, an A320 at SPY, FL90, 230 kt, flying westwards"), "westwards in a creation")
   check_eq(ex("NLX40 fly west"), "HDG NLX40 270")
-  check_eq(ex("NLX40 turn left to the south"), "HDG NLX40 180 LEFT")
+  asked(ex("NLX40 turn left to the south"), "'to the south' is a general direction (cycle 42)")
 end
 
 -- Cycle 38 (fix78): numbered steps ("1. ... 2. ...", "Step 1: ... Step 2: ...", "1) ...", "(1) ...") and an
@@ -7490,4 +7490,48 @@ do
   check_eq(ex("IBE7721 is obliged to turn left heading 200."), "HDG IBE7721 200 LEFT")
   asked(ex("IBE7721 is required"), "an obligation with nothing to do")
   asked(ex("IBE7721 is expected at FL200"), "an expectation, no obligation")
+end
+
+-- Cycle 42 (g90): a maker's name ("the Embraer", "the Bombardier") names every type of that maker, its
+-- designators written otherwise too (E75L is an E175): "the X" is read only when exactly one aircraft of any
+-- type of that maker flies, and asked about, naming them, when several do
+do
+  local _, ex = scene({ "CRE JIA77 E75L 35.9 -81.6 130 FL200 280", "CRE ASH3 E145 34.2 -80.6 340 FL170 260",
+    "CRE FFT9 A320 35.0 -80.0 090 FL300 280" })
+  local q = ex("remove the Embraer")
+  check(q:find("JIA77", 1, true) ~= nil and q:find("ASH3", 1, true) ~= nil, q)
+  check_eq(ex("the Airbus descend to FL260"), "ALT FFT9 FL260")
+  local _, ex2 = scene({ "CRE JIA77 E75L 35.9 -81.6 130 FL200 280", "CRE FFT9 A320 35.0 -80.0 090 FL300 280" })
+  check_eq(ex2("the Embraer climb to FL240"), "ALT JIA77 FL240")
+  local _, ex3 = scene({ "CRE JZA1 CRJ9 45.0 -75.0 090 FL240 280", "CRE JZA2 DH8D 45.3 -75.4 270 FL160 240" })
+  asked(ex3("drop the Bombardier"), "a CRJ900 and a Q400 are both Bombardiers")
+end
+
+-- Cycle 42 (g90): "to the west", "towards the north" is a general direction, not a heading: asked, naming it;
+-- a compass point said as the heading ("fly west", "heading west", "turn west") is its heading, and a heading
+-- said with the direction ("round to the north, heading 010") is that heading
+do
+  local _, ex = scene({ "CRE UAL88 B739 40.0 -88.0 180 FL300 290" })
+  local q = ex("have United 88 turn over to the east please")
+  check(q:find("'to the east' is a general direction", 1, true) ~= nil, q)
+  asked(ex("UAL88 turn right towards the north west"), "towards the north west")
+  asked(ex("have UAL88 veer off toward the south"), "toward the south")
+  check_eq(ex("UAL88 turn left to the south, heading 170"), "HDG UAL88 170 LEFT")
+  check_eq(ex("UAL88 heading west"), "HDG UAL88 270")
+  check_eq(ex("UAL88 turn east"), "HDG UAL88 90")
+end
+
+-- Cycle 42 (g90): a city's name after "over" that several large airports bear and a navaid beside them bears
+-- too ("over Spartanburg": KSPA, GREENVILLE SPARTANBURG INTL, the SPA VORTAC) is asked about where traffic is
+-- created; "Spartanburg airport" is the airport, "the Spartanburg VOR" the navaid, "over Ottawa" (one large
+-- airport of the name) still the airport
+do
+  local nav, ex = navscene({}, "a city's name several large airports bear")
+  if nav then
+    check(ex("add Delta 9, DAL9, a 737-800, over Spartanburg heading 180 FL200 250 knots"):match("^ASK Which place is meant")
+      ~= nil, "airport or navaid")
+    check_eq(ex("add Delta 9, DAL9, a 737-800, over Spartanburg airport heading 180 FL200 250 knots"),
+      "CRE DAL9 B738 KSPA 180 FL200 250")
+    check_eq(ex("create JZA55 DH8D over Ottawa heading 090 7000 200 knots"), "CRE JZA55 DH8D CYOW 90 7000 200")
+  end
 end
