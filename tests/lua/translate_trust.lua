@@ -3086,7 +3086,7 @@ do
   -- the new callsign's airline said before it in a lead-in ("first aircraft Air Malta AMC412 A320 ...")
   check_eq(ex("first aircraft Speedbird BAW9 A320 51.5N 3.5E heading 100 level 190 speed 280"),
     "CRE BAW9 A320 51.5 3.5 100 FL190 280")
-  check_eq(ex("PH101 climb FL240, make it snappy"), "ASK I have ALT PH101 FL240. What does 'snappy' mean?")
+  check_eq(ex("PH101 climb FL240, make it snappy"), "ALT PH101 FL240")  -- (as "make it quick" is)
   check_eq(ex("PH101 maintain 250 knots until further advice"), "SPD PH101 250")
   check_eq(ex("which time step is set"), "DT")
   check_eq(ex("which resolution method is active"), "RESO")
@@ -6357,7 +6357,7 @@ do
   asked(ex("make NLX40 head southwards"), "southwards")
   asked(ex("create NLX41, an A320 at SPY, FL90, 230 kt, flying westwards"), "westwards in a creation")
   check_eq(ex("NLX40 fly west"), "HDG NLX40 270")
-  asked(ex("NLX40 turn left to the south"), "'to the south' is a general direction (cycle 42)")
+  asked(ex("NLX40 turn left to the south"), "'to the south' is a general direction")
 end
 
 -- Cycle 38 (fix78): numbered steps ("1. ... 2. ...", "Step 1: ... Step 2: ...", "1) ...", "(1) ...") and an
@@ -7534,4 +7534,18 @@ do
       "CRE DAL9 B738 KSPA 180 FL200 250")
     check_eq(ex("create JZA55 DH8D over Ottawa heading 090 7000 200 knots"), "CRE JZA55 DH8D CYOW 90 7000 200")
   end
+end
+
+-- Cycle 42 (g90): a demonstration's remarks to its audience ("make it snappy", "for realism", "for fun", "watch
+-- the data block", "here's the fun part") account for no instruction and are set aside; a block of levels
+-- ("block FL200 to FL240") and a data block to show are still asked
+do
+  local _, ex = scene({ "CRE ASA31 B739 47.4 -122.3 180 FL240 290" })
+  check_eq(ex("Alaska 31 down to FL180 and make it snappy"), "ALT ASA31 FL180")
+  check_eq(ex("for realism, ASA31 reduce speed to 250 knots"), "SPD ASA31 250")
+  check_eq(ex("ASA31 turn left heading 150 just for fun"), "HDG ASA31 150 LEFT")
+  check_eq(ex("ASA31 climb to flight level 280, keep an eye on his data block"), "ALT ASA31 FL280")
+  check_eq(ex("now the fun part: ASA31 descend to FL200"), "ALT ASA31 FL200")
+  asked(ex("ASA31 climb block FL250 to FL270"), "a block of levels")
+  asked(ex("show the data block for ASA31"), "a data block to show")
 end
