@@ -345,8 +345,8 @@ return function(intent, rule, words)
     local t = g.t[i + 1]
     return t ~= nil and t.kind == "number"
   end }
-  -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
-  rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
+  -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300", "take him up to 340"
+  rule { "up down", "alt", prev = { 4, "get bring take" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   -- ("expedite your descent to FL120", "expedite the climb to ...": the level after it)
   rule { "expedite", "alt", next = "your the", near = { 2, "climb descent" } }

@@ -7549,3 +7549,15 @@ do
   asked(ex("ASA31 climb block FL250 to FL270"), "a block of levels")
   asked(ex("show the data block for ASA31"), "a data block to show")
 end
+
+-- Cycle 42 (g90): "take him up to 340", "take her down to 240": "take" before "up"/"down" and a level is a change
+-- of level, as "bring him up to" is; a speed or heading said with it stays that value, a "take up" with no level
+-- is asked
+do
+  local _, ex = scene({ "CRE SKW77 CRJ9 41.9 -87.9 270 FL260 280" })
+  check_eq(ex("SkyWest 77, take him up to 310"), "ALT SKW77 FL310")
+  check_eq(ex("take SKW77 down to one four thousand"), "ALT SKW77 14000")
+  check_eq(ex("SKW77 take the speed up to 300"), "SPD SKW77 300")
+  asked(ex("SKW77 take it up to 300 knots"), "a speed after 'take it up'")
+  asked(ex("SKW77, take him up"), "no level")
+end
