@@ -413,6 +413,13 @@ return function(intent, rule, words)
     if g:word(verb - 1, "on when once") then verb = verb - 1 end
     return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
   end }
+  -- "go to 250 knots", "go Mach point eight": a speed with its unit straight after "go" (or "go to") is a speed
+  -- instruction (waiting for a level said before it: "when you're passing FL300 go Mach .8", m:at_altitude)
+  rule { "go", "spd", when = function(g, i)
+    local at = g:word(i + 1, "to") and i + 2 or i + 1
+    local q = g:quantities(at, math.min(#g.t + 1, at + 4))[1]
+    return q ~= nil and q.b == at and (q.kind == "speed" or q.kind == "mach")
+  end }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
   -- "set the timescale to 4", "time scale 2x": a game engine's time scale, the simulation's rate
   rule { "timescale", "dtmult" }

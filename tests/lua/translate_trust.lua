@@ -7561,3 +7561,16 @@ do
   asked(ex("SKW77 take it up to 300 knots"), "a speed after 'take it up'")
   asked(ex("SKW77, take him up"), "no level")
 end
+
+-- Cycle 42 (g90): "go to 250 knots", "go Mach point eight": a speed with its unit after "go" is a speed
+-- instruction, and after a level passed ("when you're passing FL300 go Mach .8") it waits for that level; a bare
+-- number after "go to" is no speed
+do
+  local _, ex = scene({ "CRE FDX5 B763 35.0 -90.0 090 FL250 300" })
+  check_eq(ex("FedEx 5 climb to FL350 and when you're passing FL310 go Mach point seven eight"),
+    "ALT FDX5 FL350 ; ATALT FDX5 FL310 SPD FDX5 M0.78")
+  check_eq(ex("FDX5 descend FL150, when he's passing FL200 go to 260 knots"),
+    "ALT FDX5 FL150 ; ATALT FDX5 FL200 SPD FDX5 260")
+  check_eq(ex("FDX5 go to 270 knots"), "SPD FDX5 270")
+  asked(ex("FDX5 go to 270"), "a bare number after 'go to'")
+end
