@@ -1958,6 +1958,11 @@ return function(intent, rule, words)
   rule { "resolve solve resolving solving", false, next = "the this that a", when = function(g, i)
     return g:word(i + 2, "conflict conflicts") and instructed(g, i)
   end }
+  -- ("fast forward a minute and watch the resolution kick in"): the resolution watched after an instruction is
+  -- what the run will show, no method to set
+  rule { "resolution resolutions", false, prev = { 3, "watch watching see observe" }, when = function(g, i)
+    return g:any_instruction_in(1, i - 1)
+  end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it
   rule { "mvp", "reso", prev = { 3, "@on switch" } }

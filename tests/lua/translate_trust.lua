@@ -7574,3 +7574,12 @@ do
   check_eq(ex("FDX5 go to 270 knots"), "SPD FDX5 270")
   asked(ex("FDX5 go to 270"), "a bare number after 'go to'")
 end
+
+-- Cycle 42 (g90): the resolution watched after an instruction ("fast forward two minutes and watch the
+-- resolution kick in") is what the run will show, no method to set; "watch the resolution" alone is still asked
+do
+  local _, ex = scene({ "CRE KAL9 B77W 37.0 127.0 090 FL330 300", "CRE AAR2 A333 37.0 127.6 270 FL330 300" })
+  check_eq(ex("now fast forward two minutes and watch the resolution kick in"), "FF 120")
+  check_eq(ex("KAL9 descend FL310, then see the resolution"), "ALT KAL9 FL310")
+  asked(ex("watch the resolution"), "no instruction before it")
+end
