@@ -7583,3 +7583,16 @@ do
   check_eq(ex("KAL9 descend FL310, then see the resolution"), "ALT KAL9 FL310")
   asked(ex("watch the resolution"), "no instruction before it")
 end
+
+-- Cycle 42 (g90): a waypoint reached said after the aircraft's callsign ("DAL415, when you get to ERLIN, go direct
+-- ATL", "... once you pass ERLIN turn left ...") is the condition, AT ... DO, as "when DAL415 reaches ERLIN" is;
+-- a waypoint off the route, or one only seen, is still asked
+do
+  local _, ex = scene({ "DEFWPT KOLBY 45.0 -93.0", "DEFWPT LAKER 45.5 -92.5", "DEFWPT OFFRT 44.0 -94.0",
+    "CRE SCX31 B738 44.5 -93.5 045 FL240 280", "ADDWPT SCX31 KOLBY", "ADDWPT SCX31 LAKER" })
+  check_eq(ex("Sun Country 31, when you get to KOLBY, proceed direct LAKER"), "AT SCX31 KOLBY DO DIRECT SCX31 LAKER")
+  check_eq(ex("SCX31 once you pass KOLBY descend to FL180"), "AT SCX31 KOLBY DO ALT SCX31 FL180")
+  check_eq(ex("SCX31 when you're down to FL200 reduce to 250 knots"), "ATALT SCX31 FL200 SPD SCX31 250")
+  asked(ex("SCX31 when you reach OFFRT descend to FL180"), "a waypoint off the route")
+  asked(ex("SCX31 when you see KOLBY descend to FL180"), "a waypoint seen, not reached")
+end
