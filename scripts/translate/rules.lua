@@ -257,6 +257,11 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
     return q ~= nil and q.kind == "alt"
   end }
+  -- "drop in a Southwest 737, SWA455, ...", "pop in an A320 ...": an aircraft put in, a new callsign or a type
+  -- straight after the article
+  rule { "drop pop", "create", next = "in", when = function(g, i)
+    return g:word(i + 2, "a an another") and g:new_aircraft_follows(i + 2)
+  end }
   -- "drop LAMUT from AFR7516", "take KOPOR off the Iberia": a known waypoint said straight after the verb
   -- and taken "from" or "off" an aircraft that flies
   rule { "drop remove delete take", "delwpt", when = function(g, i)

@@ -7596,3 +7596,13 @@ do
   asked(ex("SCX31 when you reach OFFRT descend to FL180"), "a waypoint off the route")
   asked(ex("SCX31 when you see KOLBY descend to FL180"), "a waypoint seen, not reached")
 end
+
+-- Cycle 42 (g90): "drop in a ...", "pop in an ..." with a new callsign or a type after the article puts an aircraft
+-- in (a creation); "drop" of a flying aircraft's level, or "drop in" with no new aircraft, is not one
+do
+  local _, ex = scene({ "DEFWPT BANTY 41.0 -81.0", "CRE RPA61 E75L 41.2 -81.3 090 FL200 270" })
+  check_eq(ex("drop in an A320, JBU718, over BANTY, heading 270, FL150, 260 knots"), "CRE JBU718 A320 BANTY 270 FL150 260")
+  check_eq(ex("pop in a CRJ900, ENY33, at BANTY, heading 180, 9000 feet, 240 knots"), "CRE ENY33 CRJ9 BANTY 180 9000 240")
+  check_eq(ex("RPA61 drop in altitude to FL160"), "ALT RPA61 FL160")
+  check(not ex("drop in a few more aircraft"):match("^CRE"), "no new aircraft named")
+end
