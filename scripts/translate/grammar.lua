@@ -1961,6 +1961,13 @@ function G:condition()
     if self.t[c] and self.t[c].kind == "punct" and self.t[c].text == "," then c = self:skip_fillers(c + 1) end
     local v = self:condition_word(c)
     local q = v and self:quantities(v, #self.t + 1)[1]
+    -- ("DAL415, when you get to ERLIN, go direct ATL": a waypoint reached by a verb of reaching, said before any
+    -- value; never with the instruction taken back or said to be flown now)
+    local wp = v and self:refs_in(v, #self.t + 1, "waypoint")[1]
+    if wp and (not q or wp.b < q.b) and self:word_in(v, wp.b, "get gets reach reaches pass passes cross crosses")
+        and not self:word_in(v, #self.t + 1, "@correction now") then
+      q = wp
+    end
     if not q then return nil, 1 end
     for x = v, q.b - 1 do
       if not (self.t[x].filler or ARRIVING[self.words[x]]) then return nil, 1 end
@@ -1974,7 +1981,7 @@ function G:condition()
   -- "when the dash 8 gets to GADUM set its speed to 180", "when WJA661 passes ADLER set speed 220": with no
   -- comma, a waypoint the aircraft reaches (no value before it) ends the condition, an instruction after it
   local reached = comma > #self.t and self:refs_in(i, #self.t + 1, "waypoint")[1]
-  if reached and self:word(reached.b - 1, "to at passes reaches hits crosses overflies")
+  if reached and self:word(reached.b - 1, "to at pass passes reach reaches hit hits cross crosses overflies")
       and #self:quantities(i, reached.b) == 0
       and (self:any_instruction_in(reached.e, #self.t + 1) or self:held_value(reached.e)) then
     comma, rest = reached.e, reached.e

@@ -995,15 +995,10 @@ end
 local MAKERS, MODELS, SHORT
 local function makers()
   if MAKERS then return MAKERS, MODELS, SHORT end
-  MAKERS, MODELS, SHORT = {}, {}, {}
   local names = require("translate.names")
   local types = require("translate.types").build(names.designators)
-  for _, row in ipairs(types.types) do
-    local m = row[1]:lower()
-    MAKERS[m] = MAKERS[m] or {}
-    MAKERS[m][row[3]] = true
-    MODELS[row[2]] = MODELS[row[2]] or row[3]
-  end
+  MAKERS, MODELS, SHORT = types.makers, {}, {}
+  for _, row in ipairs(types.types) do MODELS[row[2]] = MODELS[row[2]] or row[3] end
   for _, d in ipairs(types.designators) do
     local digits = d:match("^[AB](%d%d%d)$")
     if digits then SHORT[digits] = SHORT[digits] == nil and d or false end

@@ -1059,12 +1059,14 @@ return function(H, f, compass)
     -- (where no aircraft is meant, a name said after "over", "above", ... that an airport other than a large
     -- one and a navaid within lexicon.city_nm of it both bear under other idents, "over Sherbrooke": the
     -- medium CYSC and the YSC VORTAC, is asked about, the airport kept; "at Sherbrooke" is the airport, and so
-    -- is "over Schiphol", a large airport, as a large airport is what its name means)
+    -- is "over Schiphol", a large airport, as a large airport is what its name means, unless the name is a
+    -- city's that several large airports bear, "over Spartanburg": KSPA, KGSP and the SPA VORTAC)
     local function beside(airport)
       local at, class = self.world.user_waypoint_at, self.world.airport_class
       local lat, lon = nil, nil
       local k = self.airport_said_at
-      if at and class and class(airport) ~= "LARGE" and not a and k and self:word(k - 1, "@place_words")
+      if at and class and (class(airport) ~= "LARGE" or self.airport_said_city) and not a and k
+          and self:word(k - 1, "@place_words")
           and not self:word(k - 1, "at") then
         lat, lon = at(airport)
       end
@@ -1463,6 +1465,11 @@ return function(H, f, compass)
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             self.airport_said_at = i
+            -- (a name without "airport" after it that two large airports bear, "Spartanburg": KSPA and
+            -- GREENVILLE SPARTANBURG INTL, is a city's name, not one airport's)
+            local with, large = not city and cls and self.world.airports_with_words, 0
+            for _, a in ipairs(with and with(phrase) or {}) do large = large + (cls(a) == "LARGE" and 1 or 0) end
+            self.airport_said_city = large > 1
             -- (with "airport" after it, a capitalised word before the name is its city: "Beijing Capital")
             self:explain(((city or with_city) and proper(i - 1)) and i - 1 or i, city and after + 1 or after)
             -- (the name said again, "go to Stuttgart, so Stuttgart is its destination", is the same place)

@@ -101,7 +101,9 @@ return {
         "vamos", "bueno", "entonces", "listo", "dale", "vale", "mira", "ojo", "bom", "entao", "então", "olha",
         "pronto", "beleza",
         -- comparatives of a remark on the set-up ("a bit nicer", "closer to 90", "a shorter look-ahead")
-        "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger" },
+        "nicer", "better", "closer", "shorter", "longer", "smaller", "larger", "bigger",
+        -- a demonstration's remarks to its audience ("make it snappy", "for realism", "here's the fun part")
+        "snappy", "realism", "realistic", "fun" },
     -- courtesy and framing of a request
     courtesy = { "please", "kindly", "thanks", "thank", "cheers", "like", "want", "wants", "wish", "let", "lets",
         "mind", "able", "possible", "chance", "ask", "tell", "make", "have", "try", "see", "help", "give",
@@ -201,7 +203,9 @@ return {
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
-        "after that", "after this", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
+        "after that", "after this",
+        -- a demonstration's pointers to the audience ("watch the data block", "here's the fun part")
+        "data block", "data blocks", "data tag", "the fun part", "dobry den", "dobar dan", "dober dan", "jo napot", "na shledanou",
         "do widzenia", "do videnia", "kalo taxidi", "kali mera", "kali spera", "buona giornata", "buona serata",
         "buon viaggio", "grazie mille", "per favore", "bon voyage", "bonne journee", "bonne soiree", "boa tarde",
         "boa noite", "boa viagem", "bom dia", "buen viaje", "hasta luego", "guten tag", "god dag", "god morgen",

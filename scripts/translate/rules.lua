@@ -257,6 +257,11 @@ return function(intent, rule, words)
     local q = g:quantities(i + 1, math.min(#g.t + 1, i + 4))[1]
     return q ~= nil and q.kind == "alt"
   end }
+  -- "drop in a Southwest 737, SWA455, ...", "pop in an A320 ...": an aircraft put in, a new callsign or a type
+  -- straight after the article
+  rule { "drop pop", "create", next = "in", when = function(g, i)
+    return g:word(i + 2, "a an another") and g:new_aircraft_follows(i + 2)
+  end }
   -- "drop LAMUT from AFR7516", "take KOPOR off the Iberia": a known waypoint said straight after the verb
   -- and taken "from" or "off" an aircraft that flies
   rule { "drop remove delete take", "delwpt", when = function(g, i)
@@ -345,8 +350,8 @@ return function(intent, rule, words)
     local t = g.t[i + 1]
     return t ~= nil and t.kind == "number"
   end }
-  -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300"
-  rule { "up down", "alt", prev = { 4, "get bring" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
+  -- "could we get United 9 down to 12,000 feet", "bring the KLM up to FL300", "take him up to 340"
+  rule { "up down", "alt", prev = { 4, "get bring take" }, not_prev = { 3, "speed spd" }, not_near = { 2, "speed knots" } }
   rule { "expedite", "alt", near = { 1, "climb descent descend" } }
   -- ("expedite your descent to FL120", "expedite the climb to ...": the level after it)
   rule { "expedite", "alt", next = "your the", near = { 2, "climb descent" } }
@@ -412,6 +417,13 @@ return function(intent, rule, words)
     end
     if g:word(verb - 1, "on when once") then verb = verb - 1 end
     return not g:word(verb - 1, "report") and g:any_instruction_in(1, verb)
+  end }
+  -- "go to 250 knots", "go Mach point eight": a speed with its unit straight after "go" (or "go to") is a speed
+  -- instruction (waiting for a level said before it: "when you're passing FL300 go Mach .8", m:at_altitude)
+  rule { "go", "spd", when = function(g, i)
+    local at = g:word(i + 1, "to") and i + 2 or i + 1
+    local q = g:quantities(at, math.min(#g.t + 1, at + 4))[1]
+    return q ~= nil and q.b == at and (q.kind == "speed" or q.kind == "mach")
   end }
   rule { "speed", "dtmult", near = { 3, "factor multiplier" } }  -- "speed-up factor 2"
   -- "set the timescale to 4", "time scale 2x": a game engine's time scale, the simulation's rate
@@ -1950,6 +1962,11 @@ return function(intent, rule, words)
   -- conflict": the conflict an aircraft's instruction in the request is for (a purpose), no method to set
   rule { "resolve solve resolving solving", false, next = "the this that a", when = function(g, i)
     return g:word(i + 2, "conflict conflicts") and instructed(g, i)
+  end }
+  -- ("fast forward a minute and watch the resolution kick in"): the resolution watched after an instruction is
+  -- what the run will show, no method to set
+  rule { "resolution resolutions", false, prev = { 3, "watch watching see observe" }, when = function(g, i)
+    return g:any_instruction_in(1, i - 1)
   end }
   rule { "resolution resolve reso", "reso" }
   -- "enable MVP", "switch to MVP": the method named alone is resolution by it

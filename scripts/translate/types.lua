@@ -15,13 +15,18 @@
 --     A320), else its first variant.
 -- M.build(designators) -> {types = {{maker, model, icao}, ...}, phrases = {{words, designator}, ...},
 --   designators = every designator known (the models' and the given ones), sorted,
---   families = {[family's number, lower case: "777", "a330"] = {[designator] = true}: its variants}}
+--   families = {[family's number, lower case: "777", "a330"] = {[designator] = true}: its variants},
+--   makers = {[maker, lower case] = {[designator] = true}: every type of that maker, its E75L as its E175}}
 --   phrases: names of several words ("737 max 8", "dash 8-400") and their
 --   designator, which M.join(text, phrases) writes in their place (the
 --   matcher reads one token).
 local M = {}
 
-local function add(rows, seen, maker, model, icao)
+-- (`makers`: maker -> {designator = true}, every designator a maker's name is given to, kept when the
+-- name itself is a row of another designator already: "Embraer" names the E75L as well as the E175)
+local function add(rows, seen, makers, maker, model, icao)
+  makers[maker] = makers[maker] or {}
+  makers[maker][icao] = true
   model = model:lower()
   local key = maker .. "|" .. model
   if model == "" or seen[key] then return end
@@ -144,7 +149,7 @@ M.nicknames = {
 }
 
 function M.build(designators)
-  local rows, seen, phrases, known = {}, {}, {}, {}
+  local rows, seen, phrases, known, makers = {}, {}, {}, {}, {}
   local list = {}
   for _, t in ipairs(squawk.sim.types()) do list[#list + 1] = t end
   for _, d in ipairs(designators or {}) do list[#list + 1] = { designator = d } end
@@ -165,7 +170,7 @@ function M.build(designators)
         end
         for _, a in ipairs(alts) do
           a = a:gsub("^%s+", ""):gsub("%s+$", "")
-          for _, s in ipairs(spellings(a)) do add(rows, seen, maker, s, d) end
+          for _, s in ipairs(spellings(a)) do add(rows, seen, makers, maker, s, d) end
           if a:find(" ") then
             phrases[#phrases + 1] = { a:lower(), d }
             -- the family said as its designator ("B737 MAX 8")
@@ -178,7 +183,7 @@ function M.build(designators)
     end
     for _, n in ipairs(pattern_names(d)) do
       for _, sp in ipairs(spellings(n[2])) do
-        add(rows, seen, n[1], sp, d)
+        add(rows, seen, makers, n[1], sp, d)
         -- ("a320 neo", "320 neo": the variant said apart is a name of several words too)
         if sp:find(" ") and not n[2]:find(" ") then phrases[#phrases + 1] = { sp, d } end
       end
@@ -197,7 +202,7 @@ function M.build(designators)
   table.sort(families, function(a, b) return a[3] < b[3] end)
   for _, fam in ipairs(families) do
     local base = (fam[1] == "boeing" and "B" or "") .. fam[2]:upper()
-    add(rows, seen, fam[1], fam[2], known[base] and base or fam[3])
+    add(rows, seen, makers, fam[1], fam[2], known[base] and base or fam[3])
   end
   local all, sets = {}, {}
   for d in pairs(known) do all[#all + 1] = d end
@@ -209,7 +214,7 @@ function M.build(designators)
     local base = (fam[1] == "boeing" and "B" or "") .. fam[2]:upper()
     if known[base] then sets[fam[2]][base] = true end
   end
-  return { types = rows, phrases = phrases, designators = all, families = sets }
+  return { types = rows, phrases = phrases, designators = all, families = sets, makers = makers }
 end
 
 -- Type names as speech recognition writes them, digits as number words: after a

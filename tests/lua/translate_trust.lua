@@ -3086,7 +3086,7 @@ do
   -- the new callsign's airline said before it in a lead-in ("first aircraft Air Malta AMC412 A320 ...")
   check_eq(ex("first aircraft Speedbird BAW9 A320 51.5N 3.5E heading 100 level 190 speed 280"),
     "CRE BAW9 A320 51.5 3.5 100 FL190 280")
-  check_eq(ex("PH101 climb FL240, make it snappy"), "ASK I have ALT PH101 FL240. What does 'snappy' mean?")
+  check_eq(ex("PH101 climb FL240, make it snappy"), "ALT PH101 FL240")  -- (as "make it quick" is)
   check_eq(ex("PH101 maintain 250 knots until further advice"), "SPD PH101 250")
   check_eq(ex("which time step is set"), "DT")
   check_eq(ex("which resolution method is active"), "RESO")
@@ -7633,4 +7633,116 @@ do
   check_eq(ex("N9920K keep your altitude"), "ALT N9920K 8500")
   check_eq(ex("N4471T, N9920K, maintain present altitude"), "ALT N4471T 5500 ; ALT N9920K 8500")
   asked(ex("N4471T hold altitude"), "no level said and none named as its own")
+end
+
+-- Cycle 42 (g90): a maker's name ("the Embraer", "the Bombardier") names every type of that maker, its
+-- designators written otherwise too (E75L is an E175): "the X" is read only when exactly one aircraft of any
+-- type of that maker flies, and asked about, naming them, when several do
+do
+  local _, ex = scene({ "CRE JIA77 E75L 35.9 -81.6 130 FL200 280", "CRE ASH3 E145 34.2 -80.6 340 FL170 260",
+    "CRE FFT9 A320 35.0 -80.0 090 FL300 280" })
+  local q = ex("remove the Embraer")
+  check(q:find("JIA77", 1, true) ~= nil and q:find("ASH3", 1, true) ~= nil, q)
+  check_eq(ex("the Airbus descend to FL260"), "ALT FFT9 FL260")
+  local _, ex2 = scene({ "CRE JIA77 E75L 35.9 -81.6 130 FL200 280", "CRE FFT9 A320 35.0 -80.0 090 FL300 280" })
+  check_eq(ex2("the Embraer climb to FL240"), "ALT JIA77 FL240")
+  local _, ex3 = scene({ "CRE JZA1 CRJ9 45.0 -75.0 090 FL240 280", "CRE JZA2 DH8D 45.3 -75.4 270 FL160 240" })
+  asked(ex3("drop the Bombardier"), "a CRJ900 and a Q400 are both Bombardiers")
+end
+
+-- Cycle 42 (g90): "to the east", "towards the north west" is the compass point's heading, as "fly west" is
+-- (most writers read it so); a heading said with the direction ("to the south, heading 170") is that heading
+do
+  local _, ex = scene({ "CRE UAL88 B739 40.0 -88.0 180 FL300 290" })
+  check_eq(ex("have United 88 turn over to the east please"), "HDG UAL88 90")
+  check_eq(ex("UAL88 turn right towards the north west"), "HDG UAL88 315 RIGHT")
+  check_eq(ex("UAL88 turn left to the south, heading 170"), "HDG UAL88 170 LEFT")
+  check_eq(ex("UAL88 heading west"), "HDG UAL88 270")
+  check_eq(ex("UAL88 turn east"), "HDG UAL88 90")
+end
+
+-- Cycle 42 (g90): a city's name after "over" that several large airports bear and a navaid beside them bears
+-- too ("over Spartanburg": KSPA, GREENVILLE SPARTANBURG INTL, the SPA VORTAC) is asked about where traffic is
+-- created; "Spartanburg airport" is the airport, "the Spartanburg VOR" the navaid, "over Ottawa" (one large
+-- airport of the name) still the airport
+do
+  local nav, ex = navscene({}, "a city's name several large airports bear")
+  if nav then
+    check(ex("add Delta 9, DAL9, a 737-800, over Spartanburg heading 180 FL200 250 knots"):match("^ASK Which place is meant")
+      ~= nil, "airport or navaid")
+    check_eq(ex("add Delta 9, DAL9, a 737-800, over Spartanburg airport heading 180 FL200 250 knots"),
+      "CRE DAL9 B738 KSPA 180 FL200 250")
+    check_eq(ex("create JZA55 DH8D over Ottawa heading 090 7000 200 knots"), "CRE JZA55 DH8D CYOW 90 7000 200")
+  end
+end
+
+-- Cycle 42 (g90): a demonstration's remarks to its audience ("make it snappy", "for realism", "for fun", "watch
+-- the data block", "here's the fun part") account for no instruction and are set aside; a block of levels
+-- ("block FL200 to FL240") and a data block to show are still asked
+do
+  local _, ex = scene({ "CRE ASA31 B739 47.4 -122.3 180 FL240 290" })
+  check_eq(ex("Alaska 31 down to FL180 and make it snappy"), "ALT ASA31 FL180")
+  check_eq(ex("for realism, ASA31 reduce speed to 250 knots"), "SPD ASA31 250")
+  check_eq(ex("ASA31 turn left heading 150 just for fun"), "HDG ASA31 150 LEFT")
+  check_eq(ex("ASA31 climb to flight level 280, keep an eye on his data block"), "ALT ASA31 FL280")
+  check_eq(ex("now the fun part: ASA31 descend to FL200"), "ALT ASA31 FL200")
+  asked(ex("ASA31 climb block FL250 to FL270"), "a block of levels")
+  asked(ex("show the data block for ASA31"), "a data block to show")
+end
+
+-- Cycle 42 (g90): "take him up to 340", "take her down to 240": "take" before "up"/"down" and a level is a change
+-- of level, as "bring him up to" is; a speed or heading said with it stays that value, a "take up" with no level
+-- is asked
+do
+  local _, ex = scene({ "CRE SKW77 CRJ9 41.9 -87.9 270 FL260 280" })
+  check_eq(ex("SkyWest 77, take him up to 310"), "ALT SKW77 FL310")
+  check_eq(ex("take SKW77 down to one four thousand"), "ALT SKW77 14000")
+  check_eq(ex("SKW77 take the speed up to 300"), "SPD SKW77 300")
+  asked(ex("SKW77 take it up to 300 knots"), "a speed after 'take it up'")
+  asked(ex("SKW77, take him up"), "no level")
+end
+
+-- Cycle 42 (g90): "go to 250 knots", "go Mach point eight": a speed with its unit after "go" is a speed
+-- instruction, and after a level passed ("when you're passing FL300 go Mach .8") it waits for that level; a bare
+-- number after "go to" is no speed
+do
+  local _, ex = scene({ "CRE FDX5 B763 35.0 -90.0 090 FL250 300" })
+  check_eq(ex("FedEx 5 climb to FL350 and when you're passing FL310 go Mach point seven eight"),
+    "ALT FDX5 FL350 ; ATALT FDX5 FL310 SPD FDX5 M0.78")
+  check_eq(ex("FDX5 descend FL150, when he's passing FL200 go to 260 knots"),
+    "ALT FDX5 FL150 ; ATALT FDX5 FL200 SPD FDX5 260")
+  check_eq(ex("FDX5 go to 270 knots"), "SPD FDX5 270")
+  asked(ex("FDX5 go to 270"), "a bare number after 'go to'")
+end
+
+-- Cycle 42 (g90): the resolution watched after an instruction ("fast forward two minutes and watch the
+-- resolution kick in") is what the run will show, no method to set; "watch the resolution" alone is still asked
+do
+  local _, ex = scene({ "CRE KAL9 B77W 37.0 127.0 090 FL330 300", "CRE AAR2 A333 37.0 127.6 270 FL330 300" })
+  check_eq(ex("now fast forward two minutes and watch the resolution kick in"), "FF 120")
+  check_eq(ex("KAL9 descend FL310, then see the resolution"), "ALT KAL9 FL310")
+  asked(ex("watch the resolution"), "no instruction before it")
+end
+
+-- Cycle 42 (g90): a waypoint reached said after the aircraft's callsign ("DAL415, when you get to ERLIN, go direct
+-- ATL", "... once you pass ERLIN turn left ...") is the condition, AT ... DO, as "when DAL415 reaches ERLIN" is;
+-- a waypoint off the route, or one only seen, is still asked
+do
+  local _, ex = scene({ "DEFWPT KOLBY 45.0 -93.0", "DEFWPT LAKER 45.5 -92.5", "DEFWPT OFFRT 44.0 -94.0",
+    "CRE SCX31 B738 44.5 -93.5 045 FL240 280", "ADDWPT SCX31 KOLBY", "ADDWPT SCX31 LAKER" })
+  check_eq(ex("Sun Country 31, when you get to KOLBY, proceed direct LAKER"), "AT SCX31 KOLBY DO DIRECT SCX31 LAKER")
+  check_eq(ex("SCX31 once you pass KOLBY descend to FL180"), "AT SCX31 KOLBY DO ALT SCX31 FL180")
+  check_eq(ex("SCX31 when you're down to FL200 reduce to 250 knots"), "ATALT SCX31 FL200 SPD SCX31 250")
+  asked(ex("SCX31 when you reach OFFRT descend to FL180"), "a waypoint off the route")
+  asked(ex("SCX31 when you see KOLBY descend to FL180"), "a waypoint seen, not reached")
+end
+
+-- Cycle 42 (g90): "drop in a ...", "pop in an ..." with a new callsign or a type after the article puts an aircraft
+-- in (a creation); "drop" of a flying aircraft's level, or "drop in" with no new aircraft, is not one
+do
+  local _, ex = scene({ "DEFWPT BANTY 41.0 -81.0", "CRE RPA61 E75L 41.2 -81.3 090 FL200 270" })
+  check_eq(ex("drop in an A320, JBU718, over BANTY, heading 270, FL150, 260 knots"), "CRE JBU718 A320 BANTY 270 FL150 260")
+  check_eq(ex("pop in a CRJ900, ENY33, at BANTY, heading 180, 9000 feet, 240 knots"), "CRE ENY33 CRJ9 BANTY 180 9000 240")
+  check_eq(ex("RPA61 drop in altitude to FL160"), "ALT RPA61 FL160")
+  check(not ex("drop in a few more aircraft"):match("^CRE"), "no new aircraft named")
 end
