@@ -1490,8 +1490,11 @@ function G:in_reason(i)
         -- ("slow VIR9 to 260 kt so the Speedbird catches up": "so" after an instruction's words, before an
         -- aircraft, says what the instruction brings about; "so" opening a clause is a filler)
         inside = true
-      elseif punct and self:word(k + 1, "that this which") and self:word(k + 2, "@purpose_modals") then
-        -- (", that should put him across the Beeline's track": what the instruction should bring about)
+      elseif punct and self:word(k + 1, "that this which") and self:word(k + 2, "@purpose_modals")
+          and not (self:word_in(k + 3, commentary_end(self, k + 1), "also too likewise same")
+            and self:has_ref(k + 3, commentary_end(self, k + 1), "aircraft")) then
+        -- (", that should put him across the Beeline's track": what the instruction should bring about;
+        -- ", which should also be done for EZY45" names an aircraft the instruction is repeated for)
         inside = true
       elseif punct and (self:word(k + 1, "we") or self:word(k + 1, "i") and not self:word(k + 3, "to"))
           and self:word(k + 2, "@purpose_verbs")
@@ -3783,7 +3786,7 @@ function G:unknown_names()
     -- does: "- we want ICE44 lower")
     if r.kind == "aircraft" and (not r.exists or (added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
           and self.t[r.e + 1] and self.t[r.e + 1].kind == "word" and not self:intent_at(r.e + 1)))
-          or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
+          or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b) or self:compared_with(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not self.noted[r.b]  -- (in a phrase of what squawk does not simulate: "contact Brussels one two seven")

@@ -139,6 +139,13 @@ function m:acids(s)
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
           and not self:as_context(r.b) and not self:in_reason(r.b) and not self:compared_with(r.b) then
+        -- ("climb KLM12 to FL260 as EZY45 passes", ", as for EZY45": a second aircraft after "as" or "as
+        -- for" that is no comparison may be a time, a reason or a topic as well as an aircraft added: asked)
+        local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+        if #ids > 0 and (self:word(k, "as") or self:word(k, "for") and self:word(k - 1, "as")) then
+          self:need(string.format("Is %s to get this instruction too, or is it named for another reason? "
+            .. "Please give each aircraft its own instruction.", r.name:upper()))
+        end
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -318,6 +325,11 @@ function m:as_context(i)
   end
   -- ("traffic alert, DAL2104 turn left heading 360": an aircraft opening its clause after a comma, its
   -- instruction word straight after it, is the one instructed)
+  -- ("reduce to 220 ahead of EZY45", "in front of the Iberia": the traffic placed against)
+  local k = self:word(i - 1, "the") and i - 2 or i - 1
+  if self:word(k, "of") and (self:word(k - 1, "ahead") or self:word(k - 1, "front") and self:word(k - 2, "in")) then
+    return true
+  end
   local named = self.t[i - 1] and self.t[i - 1].text == "," and self:refs_in(i, i + 1, "aircraft")[1]
   if named and self:intent_at(self:skip_fillers(named.e)) then return false end
   for k = i - 1, math.max(1, i - 3), -1 do
@@ -334,10 +346,17 @@ function m:as_context(i)
 end
 
 -- True when the aircraft named at i is the one compared with ("on the same level as the Iberia, FL330"):
--- "as" (and "the") before it, "same" within the 5 words before that.
+-- "as" (and "the") before it, "same" within the 5 words before that; "as" before it and a verb of
+-- what it did or is after it ("as EZY45 did", "as EZY45 has"); "as did" or "as with" before it;
+-- "like" before it, not after a wish ("like EZY45", "just like EZY45 did"; "I'd like EZY45 at FL260"
+-- instructs). An aircraft compared with is never instructed.
 function m:compared_with(i)
   local k = self:word(i - 1, "the") and i - 2 or i - 1
-  return self:word(k, "as") and self:word_in(math.max(1, k - 5), k, "same")
+  if self:word(k, "as") and self:word_in(math.max(1, k - 5), k, "same") then return true end
+  local r = self:refs_in(i, i + 1, "aircraft")[1]
+  if self:word(k, "as") and r and self:word(r.e, "@compared_doings") then return true end
+  if self:word(k, "did does has had with") and self:word(k - 1, "as") then return true end
+  return self:word(k, "like") and not self:word(k - 1, "@wish_before_like")
 end
 
 -- An airline said with no flight number ("KLM, climb ..."): the question

@@ -713,6 +713,11 @@ return {
   -- verbs that keep a value as it is ("maintain heading", "keep your heading": said with none, the present one)
   keep_verbs = { "maintain", "keep", "hold" },
   same_as = { "match", "same", "as" },
+  -- After "as" and an aircraft, what it did or is: the aircraft is compared with ("as EZY45 did")
+  compared_doings = { "did", "does", "do", "has", "had", "was", "were", "is" },
+  -- Before "like", words that make it a wish ("I'd like", "we would like"), not a comparison
+  wish_before_like = { "would", "i'd", "we'd", "you'd", "they'd", "i", "we", "you", "they", "should", "'d",
+      "really", "also", "now" },
   -- switches
   off = { "off", "disable", "disabled", "deactivate", "deactivated", "hide", "stop", "don't", "dont", "without", "remove",
           "disengage", "disengaged", "disconnect", "disconnected", "inhibit", "inhibited" },

@@ -7491,3 +7491,53 @@ do
   asked(ex("IBE7721 is required"), "an obligation with nothing to do")
   asked(ex("IBE7721 is expected at FL200"), "an expectation, no obligation")
 end
+
+-- Cycle 42 (hz41): an aircraft named in a comparison ("as X did", "as did X", "like X", "same as X", "as with
+-- X") is not instructed; one after "as" or "as for" that is no comparison ("as X passes") is asked about
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("Climb SAS310 to FL270, as BEE71 did"), "ALT SAS310 FL270")
+  check_eq(ex("climb SAS310 to FL270 as BEE71 did"), "ALT SAS310 FL270")
+  check_eq(ex("Climb SAS310 to FL270, as did BEE71"), "ALT SAS310 FL270")
+  check_eq(ex("SAS310 up to FL270, just like BEE71"), "ALT SAS310 FL270")
+  check_eq(ex("SAS310 climb FL270 like BEE71"), "ALT SAS310 FL270")
+  check_eq(ex("SAS310 climb FL270, as with BEE71"), "ALT SAS310 FL270")
+  -- a wish is no comparison, and an aircraft added is still instructed
+  check_eq(ex("we would like BEE71 at FL190"), "ALT BEE71 FL190")
+  check_eq(ex("climb SAS310 to FL270, BEE71 as well"), "ALT SAS310 FL270 ; ALT BEE71 FL270")
+  asked(ex("climb SAS310 to FL270 as BEE71 passes"), "'as' and an aircraft: a time or an aircraft added?")
+  asked(ex("climb SAS310 to FL270, as for BEE71"), "'as for' an aircraft after the instruction")
+  asked(ex("climb SAS310 to FL270 as BEE71 will"), "'as' and what an aircraft will do")
+  -- "as for X, ..." opening an instruction of its own names its aircraft
+  check_eq(ex("SAS310 climb FL270; as for BEE71, descend it to FL150"), "ALT SAS310 FL270 ; ALT BEE71 FL150")
+end
+
+-- Cycle 42 (hz41): ", which should also be done for X" (a relative clause with "also", "too", "likewise" or
+-- "same" and an aircraft) gives the instruction to that aircraft too; a clause of what the instruction should
+-- bring about names traffic that is not instructed
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("Climb SAS310 to FL270, which should also be done for BEE71"), "ALT SAS310 FL270 ; ALT BEE71 FL270")
+  check_eq(ex("SAS310 speed 230, that should apply to BEE71 too"), "SPD SAS310 230 ; SPD BEE71 230")
+  check_eq(ex("Climb SAS310 to FL270, which should keep it clear of BEE71"), "ALT SAS310 FL270")
+end
+
+-- Cycle 42 (hz41): traffic "ahead of" or "in front of" which an instruction places an aircraft is not instructed
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("climb SAS310 to FL270 ahead of BEE71"), "ALT SAS310 FL270")
+  check_eq(ex("SAS310 increase speed to 280 kt and fly heading 100 ahead of the BEE71"),
+    "SPD SAS310 280 ; HDG SAS310 100")
+  check_eq(ex("SAS310 speed 280 to stay in front of BEE71"), "SPD SAS310 280")
+end
+
+-- Cycle 42 (hz41): a level said as an offset from another aircraft ("1000 ft below X") that is 10000 ft or more,
+-- under the ground, or against the verb's direction is asked, never sent
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL150 220" })
+  check_eq(ex("SAS310 descend to 1000 ft above BEE71"), "ALT SAS310 16000")
+  check_eq(ex("BEE71 climb to 1000 feet below SAS310"), "ALT BEE71 19000")
+  asked(ex("climb BEE71 to 23000 feet below SAS310"), "an offset under the ground")
+  asked(ex("BEE71 descend to 1000 feet below SAS310"), "a descent to a level above")
+  asked(ex("SAS310 climb to 2000 ft above BEE71"), "a climb to a level below")
+end
