@@ -4744,6 +4744,13 @@ function G:after_heading(i)
   return false
 end
 
+-- The aircraft reference named at i (after fillers) when "to" follows it ("expect IBE3142 to climb": the
+-- speaker's expectation of that aircraft, asked), else nil.
+function G:aircraft_then_to(i)
+  local r = self:refs_in(self:skip_fillers(i), self:skip_fillers(i) + 1, "aircraft")[1]
+  return r and self:word(r.e, "to") and r or nil
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -4769,6 +4776,12 @@ function G:not_simulated()
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
             and not (c.not_after and self:word(i - 1, c.not_after)) then
+          local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
+          if expected then
+            self:need(string.format("Is '%s' an instruction to send now, or what you expect to happen? Please "
+              .. "say the instruction itself.", self:raw(i, expected.e)))
+            break
+          end
           class = c
           break
         end

@@ -918,8 +918,9 @@ return {
       clause = true },
     -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the
     -- pilot's planning, no clearance (lexicon.not_a_clearance), up to the end of its clause ("expect to resume
-    -- own navigation to MNR shortly")
-    { what = "expected clearances", words = "expect expecting", clause = true },
+    -- own navigation to MNR shortly"); an aircraft then "to" after it ("expect IBE3142 to climb to FL200") is the
+    -- speaker's expectation of that aircraft, no pilot's planning (`not_aircraft_to`): asked whether it is sent
+    { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits

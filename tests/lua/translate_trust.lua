@@ -7541,3 +7541,15 @@ do
   asked(ex("BEE71 descend to 1000 feet below SAS310"), "a descent to a level above")
   asked(ex("SAS310 climb to 2000 ft above BEE71"), "a climb to a level below")
 end
+
+-- Cycle 42 (hz41): "expect" then an aircraft and "to" ("expect X to climb to FL200") is the speaker's expectation
+-- of that aircraft, neither sent nor set aside as an expected clearance: asked; "X expect FL200" stays the
+-- expected clearance squawk does not simulate
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("expect BEE71 to climb to FL240"),
+    "ASK Is 'expect BEE71' an instruction to send now, or what you expect to happen? Please say the instruction itself.")
+  asked(ex("we'd expect SAS310 to descend to FL150 and BEE71 to climb FL240"), "an expectation of two aircraft")
+  local r = graph.translate("BEE71 expect FL240 in 10 miles", { sim = squawk.sim.new(), mode = "offline" })
+  check(r.note and r.note:find("expected clearances", 1, true) ~= nil, tostring(r.note))
+end
