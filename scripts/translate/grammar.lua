@@ -4025,7 +4025,8 @@ function G:meaning_carried(i, kinds)
     self:explain(nx, nx + 1)
     return true
   end
-  if self:word(i, "@off") and kinds.off then return true end
+  -- (never "don't have to", "doesn't need to": what is not needed switches nothing off)
+  if self:word(i, "@off") and kinds.off and not self:word(nx, "have has need needs") then return true end
   -- "cancel that heading, put it back on the route", "undo the vectors, resume own navigation": the heading
   -- taken back by the route resumed
   if self:word(i, "cancel cancels cancelled canceled undo") and kinds.route
@@ -4037,8 +4038,10 @@ function G:meaning_carried(i, kinds)
       and self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") then
     return true
   end
+  -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
+      if self:intent_at(k) then break end
       if self:has_ref(k, k + 1, "waypoint") then return true end
     end
   end
@@ -4475,6 +4478,15 @@ function G:unaccounted()
       local e = i
       while letter(e) do e = e + 1 end
       self.leftover = self:raw(i, e)
+      return
+    end
+  end
+  -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
+  -- need" is asked wherever it stands outside a reason
+  for i, t in ipairs(self.t) do
+    if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
+        and not self.noted[i] and not self:in_reason(i) then
+      self.leftover = self:raw(i, i + 2)
       return
     end
   end

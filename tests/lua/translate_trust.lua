@@ -7553,3 +7553,26 @@ do
   local r = graph.translate("BEE71 expect FL240 in 10 miles", { sim = squawk.sim.new(), mode = "offline" })
   check(r.note and r.note:find("expected clearances", 1, true) ~= nil, tostring(r.note))
 end
+
+-- Cycle 42 (hz41): what is said not to be needed ("no need to climb", "no need for the descent", "you don't have
+-- to resume own navigation") is no instruction and is asked; "don't resume own navigation" still switches it off
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  asked(ex("SAS310 no need to climb to FL240"), "no need to climb")
+  asked(ex("there's no need to delete BEE71"), "no need to delete")
+  asked(ex("BEE71, no need to turn left heading 090"), "no need to turn")
+  asked(ex("you don't have to resume own navigation BEE71"), "a route not needed is not switched off")
+  check_eq(ex("BEE71 don't resume own navigation"), "LNAV BEE71 OFF")
+end
+
+-- Cycle 42 (hz41): a direct-to negated by "not", "don't" or "never" before its verb ("do not go direct X") is
+-- asked; "not" before a place with no verb between ("direct B, not A", "not to A but direct B") is the place
+-- passed over
+do
+  local _, ex = scene({ "DEFWPT HZQ1 55.3 12.6", "DEFWPT HZQ2 54.9 12.0", "CRE SAS310 A320 55.0 12.0 090 FL200 250",
+    "ADDWPT SAS310 HZQ1", "ADDWPT SAS310 HZQ2" })
+  asked(ex("do not direct HZQ1 SAS310."), "a direct-to negated")
+  asked(ex("SAS310 never go direct HZQ2"), "a direct-to negated by 'never'")
+  check_eq(ex("SAS310 direct HZQ2, not HZQ1"), "DIRECT SAS310 HZQ2")
+  check_eq(ex("SAS310 not to HZQ1 but direct HZQ2"), "DIRECT SAS310 HZQ2")
+end
