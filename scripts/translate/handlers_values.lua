@@ -355,11 +355,13 @@ return function(H, f, wrap, compass)
     if (below or above) and #others >= 2 and not fl and not self:in_reason(others[#others].b) then
       local ref = self:state(others[#others].name)
       if not ref then return self:need("What is the altitude of " .. others[#others].name .. "?") end
-      -- (an offset of 10000 ft or more, a level under the ground, or one on the other side of the verb's
-      -- direction is no separation anyone gives: "climb to 23000 feet below KLM12" is asked)
+      -- (an offset of 10000 ft or more, a level under the ground, or one on the other side of the verb said,
+      -- "climb" or "descend", is no separation anyone gives: "climb to 23000 feet below KLM12" is asked; "put
+      -- AC02 1000 ft below AC01" says no direction)
       local target = (ref.alt_ft or 0) + (above and ft or -ft)
       local cur = now and now.alt_ft or target
-      if ft >= 10000 or target < 0 or (dir > 0 and target < cur - 50) or (dir < 0 and target > cur + 50) then
+      local said = self:word(s.trig, "climb climbs climbing") and 1 or self:word(s.trig, "descend descends descending") and -1 or 0
+      if ft >= 10000 or target < 0 or (said > 0 and target < cur - 50) or (said < 0 and target > cur + 50) then
         return self:need(string.format("Is %s ft a level for %s, or how far %s %s it should be?",
           f.int(ft), ids[1], above and "above" or "below", others[#others].name:upper()))
       end
