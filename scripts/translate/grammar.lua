@@ -4787,7 +4787,7 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
-            and not (c.not_after and self:word(i - 1, c.not_after)) then
+            and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not") then
           local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
           if expected then
             self:need(string.format("Is '%s' an instruction to send now, or what you expect to happen? Please "
@@ -4805,7 +4805,9 @@ function G:not_simulated()
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
-        if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
+        -- (nor does it take a negation: "hold present level, do not climb to FL350" leaves "do not" to be read)
+        if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then"))
+            or self:word(e, "not never don't dont") or (self:word(e, "do") and self:word(e + 1, "not")) then
           break
         end
         if class.one_value and x.kind == "number" then

@@ -269,6 +269,24 @@ function m:acids(s)
       return ids
     end
   end
+  -- "KLM12 heading 270. all aircraft climb FL300", "both climb FL300, EZY45 ...": a group said before the
+  -- instruction word in its own clause, that no aircraft named in it resolves, is never one aircraft named
+  -- before or after it: asked, unless the aircraft instructed together before are that group (two for
+  -- "both", every aircraft flying for "all")
+  local before = self.subjects and self.subject == (self.subjects or {})[1] and #self.subjects or 0
+  if #ids == 0 then
+    for k = s.trig - 1, 1, -1 do
+      local t = self.t[k]
+      if t.kind == "punct" or self:intent_at(k) then break end
+      local both, all = self:word(k, "both"), self:word(k, "everyone everybody")
+        or (self:word(k, "all each every") and self:word(k + 1, "aircraft traffic planes flights of the"))
+      if (both and before ~= 2) or (all and not (before >= 2 and before == #self.fleet)) then
+        self:need(string.format("Which aircraft does '%s' mean? Please give their callsigns.",
+          self:raw(k, self:word(k, "all each every") and k + 2 or k + 1)))
+        return ids
+      end
+    end
+  end
   if #ids == 0 and self.subject then
     -- the aircraft named for the instruction before ("EZY45 and AFR1234 maintain present heading")
     local all = self.subjects and self.subjects[1] == self.subject and self.subjects or { self.subject }

@@ -7576,3 +7576,27 @@ do
   check_eq(ex("SAS310 direct HZQ2, not HZQ1"), "DIRECT SAS310 HZQ2")
   check_eq(ex("SAS310 not to HZQ1 but direct HZQ2"), "DIRECT SAS310 HZQ2")
 end
+
+-- Cycle 42 (hz41): a group ("both", "all aircraft", "everyone") said before the instruction word in its own clause
+-- is never one aircraft named before or after it: asked, unless the aircraft instructed together before are the
+-- group
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220",
+    "CRE FIN5 A321 55.1 12.4 270 FL160 260" })
+  asked(ex("SAS310 heading 100. both climb to FL300"), "'both' after one aircraft")
+  asked(ex("SAS310 heading 100. all aircraft climb to FL300"), "'all aircraft' after one aircraft")
+  asked(ex("everyone climb to FL350 then BEE71 descend to FL120"), "'everyone' before an aircraft named later")
+  check_eq(ex("SAS310 and BEE71 heading 100, both climb FL300"),
+    "HDG SAS310 100 ; HDG BEE71 100 ; ALT SAS310 FL300 ; ALT BEE71 FL300")
+  check_eq(ex("SAS310, BEE71 and FIN5 heading 100, all climb FL300"),
+    "HDG SAS310 100 ; HDG BEE71 100 ; HDG FIN5 100 ; ALT SAS310 FL300 ; ALT BEE71 FL300 ; ALT FIN5 FL300")
+end
+
+-- Cycle 42 (hz41): a phrase of what squawk does not simulate ("hold ...", "do a 360") never takes a negation
+-- after it: "hold present level, do not climb to FL350" asks about the "not", never climbs
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250" })
+  asked(ex("SAS310 hold present level, do not climb to FL350"), "a negation after a hold")
+  asked(ex("do not heading 360 SAS310"), "'do not' is no orbit")
+  asked(ex("SAS310 squawk 7000, never climb above FL300"), "a negation after a squawk code")
+end
