@@ -343,9 +343,11 @@ function m:as_context(i)
   end
   -- ("traffic alert, DAL2104 turn left heading 360": an aircraft opening its clause after a comma, its
   -- instruction word straight after it, is the one instructed)
-  -- ("reduce to 220 ahead of EZY45", "in front of the Iberia": the traffic placed against)
+  -- ("reduce to 220 ahead of EZY45", "in front of the Iberia", "FL130 below KLM12", "clear of", "away from",
+  -- "instead of": the traffic placed against or replaced)
   local k = self:word(i - 1, "the") and i - 2 or i - 1
-  if self:word(k, "of") and (self:word(k - 1, "ahead") or self:word(k - 1, "front") and self:word(k - 2, "in")) then
+  if (self:word(k, "of") and (self:word(k - 1, "ahead clear instead") or self:word(k - 1, "front") and self:word(k - 2, "in")))
+      or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above") then
     return true
   end
   local named = self.t[i - 1] and self.t[i - 1].text == "," and self:refs_in(i, i + 1, "aircraft")[1]

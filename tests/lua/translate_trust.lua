@@ -7522,9 +7522,15 @@ do
   check_eq(ex("Climb SAS310 to FL270, which should keep it clear of BEE71"), "ALT SAS310 FL270")
 end
 
--- Cycle 42 (hz41): traffic "ahead of" or "in front of" which an instruction places an aircraft is not instructed
+-- Cycle 42 (hz41): traffic "ahead of", "in front of", "below", "above", "clear of" or "away from" which an
+-- instruction places an aircraft, or "instead of" which it is given, is not instructed
 do
   local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("BEE71 climb to 19000 feet and then maintain flight level 190 below SAS310"),
+    "ALT BEE71 19000 ; ALT BEE71 FL190")
+  check_eq(ex("BEE71 reduce speed to 200 knots instead of SAS310"), "SPD BEE71 200")
+  check_eq(ex("SAS310 descend to FL150 clear of the BEE71"), "ALT SAS310 FL150")
+  check_eq(ex("climb to FL250 SAS310 away from BEE71"), "ALT SAS310 FL250")
   check_eq(ex("climb SAS310 to FL270 ahead of BEE71"), "ALT SAS310 FL270")
   check_eq(ex("SAS310 increase speed to 280 kt and fly heading 100 ahead of the BEE71"),
     "SPD SAS310 280 ; HDG SAS310 100")
