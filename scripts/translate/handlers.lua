@@ -192,16 +192,35 @@ function m:acids(s)
     end
   end
   take(s.trig, upto)
-  -- "EZY45 reduce to 240, the KLM will come right over it": an aircraft after a comma that a clause of its
-  -- own follows is talked about, not addressed, when the instruction's own aircraft was named before it
-  if #ids > 0 and self:has_ref(s.b, s.trig, "aircraft") then
+  -- "EZY45 reduce to 240, the KLM will come right over it", "..., keep KLM12 as is", "and direct HZA, KLM12 no
+  -- change": an aircraft in a clause after a comma that words of its own follow is talked about, not addressed,
+  -- when the instruction's own aircraft was named before it (in the segment, for the instruction before, or after the
+  -- instruction word before the comma)
+  if #ids > 0 and (self:has_ref(s.b, s.trig, "aircraft") or self.subject or #ids > 1) then
     for _, r in ipairs(self:refs_in(s.trig, upto, "aircraft")) do
-      local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      local k = r.b - 1
+      while k > s.trig and self.t[k].kind == "word" and not self:intent_at(k) and #self:quantities(k, k + 1) == 0 do
+        k = k - 1
+      end
       local nx = self.t[r.e]
-      if r.name == ids[1] and self.t[k] and self.t[k].kind == "punct" and nx and nx.kind == "word"
-          and not nx.filler then
-        ids, seen = {}, {}
-        take(s.b, s.trig)
+      -- (", as for KLM12, no change": a topic; never one added: "..., KLM12 too", "..., KLM12 as well")
+      -- (its clause, to the next punctuation, holds no value and no instruction word: "N52RG at 90 knots" is
+      -- an instruction of its own)
+      local own = (nx and nx.kind == "word" and not nx.filler) or (self:word(r.b - 1, "for") and self:word(r.b - 2, "as"))
+      local e = r.e
+      while own and self.t[e] and self.t[e].kind ~= "punct" do
+        if self:intent_at(e) or #self:quantities(e, e + 1) > 0 then own = false end
+        e = e + 1
+      end
+      if seen[r.name] and self.t[k] and self.t[k].kind == "punct" and own and not self:word(r.e, "too also")
+          and not (self:word(r.e, "as") and self:word(r.e + 1, "well")) then
+        local kept = {}
+        for _, id in ipairs(ids) do
+          if id ~= r.name then kept[#kept + 1] = id end
+        end
+        ids, seen = kept, { [r.name] = true }
+        for _, id in ipairs(ids) do seen[id] = true end
+        if #ids == 0 then take(s.b, s.trig) end
         break
       end
     end

@@ -7606,3 +7606,19 @@ do
   asked(ex("do not heading 360 SAS310"), "'do not' is no orbit")
   asked(ex("SAS310 squawk 7000, never climb above FL300"), "a negation after a squawk code")
 end
+
+-- Cycle 42 (hz41): an aircraft in a clause after a comma that words of its own follow, with no value and no
+-- instruction word ("..., keep X as is", "..., X no change", "..., X will follow", ", as for X, no change"), is
+-- talked about, never given the instruction before the comma; "..., X too" and "..., X at 90 knots" still are
+do
+  local _, ex = scene({ "DEFWPT HZQ1 55.3 12.6", "CRE SAS310 A320 55.0 12.0 090 FL200 250",
+    "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("SAS310 proceed direct HZQ1, keep BEE71 as is"), "ADDWPT SAS310 HZQ1 ; DIRECT SAS310 HZQ1")
+  check_eq(ex("SAS310 speed 280 and direct HZQ1, as for BEE71, no change"),
+    "SPD SAS310 280 ; ADDWPT SAS310 HZQ1 ; DIRECT SAS310 HZQ1")
+  check_eq(ex("climb to FL250 SAS310, BEE71 will follow"), "ALT SAS310 FL250")
+  asked(ex("SAS310 speed 280 and direct HZQ1, BEE71 no change"), "an aircraft with no change said")
+  check_eq(ex("SAS310 climb FL300 and turn left heading 270, BEE71 too"),
+    "ALT SAS310 FL300 ; HDG SAS310 270 LEFT ; ALT BEE71 FL300 ; HDG BEE71 270 LEFT")
+  check_eq(ex("SAS310 at FL300, BEE71 at 190 knots"), "ALT SAS310 FL300 ; SPD BEE71 190")
+end
