@@ -139,10 +139,13 @@ function m:acids(s)
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
           and not self:as_context(r.b) and not self:in_reason(r.b) and not self:compared_with(r.b) then
-        -- ("climb KLM12 to FL260 as EZY45 passes", ", as for EZY45": a second aircraft after "as" or "as
-        -- for" that is no comparison may be a time, a reason or a topic as well as an aircraft added: asked)
+        -- ("climb KLM12 to FL260 as EZY45 passes", ", as for EZY45", "while EZY45 holds", "with EZY45": a
+        -- second aircraft after "as", "as for", "while" or "with" that is no comparison may be a time, a reason,
+        -- a topic or company as well as an aircraft added; after "as" or "while" and the instruction word also
+        -- when the instruction before named its own aircraft: asked)
         local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
-        if #ids > 0 and (self:word(k, "as") or self:word(k, "for") and self:word(k - 1, "as")) then
+        if (#ids > 0 and (self:word(k, "as while whilst with") or self:word(k, "for") and self:word(k - 1, "as")))
+            or (self.subject and r.b > s.trig and self:word(k, "as while whilst")) then
           self:need(string.format("Is %s to get this instruction too, or is it named for another reason? "
             .. "Please give each aircraft its own instruction.", r.name:upper()))
         end

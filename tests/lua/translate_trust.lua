@@ -7508,6 +7508,9 @@ do
   asked(ex("climb SAS310 to FL270 as BEE71 passes"), "'as' and an aircraft: a time or an aircraft added?")
   asked(ex("climb SAS310 to FL270, as for BEE71"), "'as for' an aircraft after the instruction")
   asked(ex("climb SAS310 to FL270 as BEE71 will"), "'as' and what an aircraft will do")
+  asked(ex("speed SAS310 230 while BEE71 holds"), "'while' and an aircraft")
+  asked(ex("SAS310 speed 230 and fly heading 200 while BEE71 holds"), "'while' and an aircraft, second instruction")
+  asked(ex("descend and maintain flight level 110 SAS310 with BEE71"), "'with' and a second aircraft")
   -- "as for X, ..." opening an instruction of its own names its aircraft
   check_eq(ex("SAS310 climb FL270; as for BEE71, descend it to FL150"), "ALT SAS310 FL270 ; ALT BEE71 FL150")
 end
