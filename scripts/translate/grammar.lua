@@ -4805,9 +4805,11 @@ function G:not_simulated()
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
-        -- (nor does it take a negation: "hold present level, do not climb to FL350" leaves "do not" to be read)
+        -- (nor does it take a negation: "hold present level, do not climb to FL350" leaves "do not" to be read,
+        -- "cancel speed restriction but no need to ..." leaves "no need")
         if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then"))
-            or self:word(e, "not never don't dont") or (self:word(e, "do") and self:word(e + 1, "not")) then
+            or self:word(e, "not never don't dont") or (self:word(e, "do") and self:word(e + 1, "not"))
+            or (self:word(e, "no") and self:word(e + 1, "need needs")) then
           break
         end
         if class.one_value and x.kind == "number" then

@@ -7608,6 +7608,7 @@ do
   asked(ex("SAS310 hold present level, do not climb to FL350"), "a negation after a hold")
   asked(ex("do not heading 360 SAS310"), "'do not' is no orbit")
   asked(ex("SAS310 squawk 7000, never climb above FL300"), "a negation after a squawk code")
+  asked(ex("SAS310 cancel speed restriction but no need to climb to FL300"), "'no need' after a restriction lifted")
 end
 
 -- Cycle 42 (hz41): an aircraft in a clause after a comma that words of its own follow, with no value and no
