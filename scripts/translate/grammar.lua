@@ -1490,8 +1490,11 @@ function G:in_reason(i)
         -- ("slow VIR9 to 260 kt so the Speedbird catches up": "so" after an instruction's words, before an
         -- aircraft, says what the instruction brings about; "so" opening a clause is a filler)
         inside = true
-      elseif punct and self:word(k + 1, "that this which") and self:word(k + 2, "@purpose_modals") then
-        -- (", that should put him across the Beeline's track": what the instruction should bring about)
+      elseif punct and self:word(k + 1, "that this which") and self:word(k + 2, "@purpose_modals")
+          and not (self:word_in(k + 3, commentary_end(self, k + 1), "also too likewise same")
+            and self:has_ref(k + 3, commentary_end(self, k + 1), "aircraft")) then
+        -- (", that should put him across the Beeline's track": what the instruction should bring about;
+        -- ", which should also be done for EZY45" names an aircraft the instruction is repeated for)
         inside = true
       elseif punct and (self:word(k + 1, "we") or self:word(k + 1, "i") and not self:word(k + 3, "to"))
           and self:word(k + 2, "@purpose_verbs")
@@ -3833,7 +3836,7 @@ function G:unknown_names()
     -- does: "- we want ICE44 lower")
     if r.kind == "aircraft" and (not r.exists or (added(r) and not (self:in_reason(r.b) and self:word(r.e, "also")
           and self.t[r.e + 1] and self.t[r.e + 1].kind == "word" and not self:intent_at(r.e + 1)))
-          or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b)))
+          or not (compared or self:in_reason(r.b) or lead_context(r) or self:as_context(r.b) or self:compared_with(r.b)))
         and not r.false_start
         and not (self.explained or {})[r.b]  -- (read as a value: "sim speed x2")
         and not self.noted[r.b]  -- (in a phrase of what squawk does not simulate: "contact Brussels one two seven")
@@ -4072,7 +4075,8 @@ function G:meaning_carried(i, kinds)
     self:explain(nx, nx + 1)
     return true
   end
-  if self:word(i, "@off") and kinds.off then return true end
+  -- (never "don't have to", "doesn't need to": what is not needed switches nothing off)
+  if self:word(i, "@off") and kinds.off and not self:word(nx, "have has need needs") then return true end
   -- "cancel that heading, put it back on the route", "undo the vectors, resume own navigation": the heading
   -- taken back by the route resumed
   if self:word(i, "cancel cancels cancelled canceled undo") and kinds.route
@@ -4084,8 +4088,10 @@ function G:meaning_carried(i, kinds)
       and self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") then
     return true
   end
+  -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)
   if self:word(i, "@passed_over") and kinds.direct then
     for k = i + 1, math.min(#self.t, i + 3) do
+      if self:intent_at(k) then break end
       if self:has_ref(k, k + 1, "waypoint") then return true end
     end
   end
@@ -4525,6 +4531,15 @@ function G:unaccounted()
       return
     end
   end
+  -- ("KLM12 no need to climb to FL240", "no need for the descent"): what is not needed is no instruction; "no
+  -- need" is asked wherever it stands outside a reason
+  for i, t in ipairs(self.t) do
+    if t.text == "no" and self:word(i + 1, "need needs") and self:word(i + 2, "to for") and not explained[i]
+        and not self.noted[i] and not self:in_reason(i) then
+      self.leftover = self:raw(i, i + 2)
+      return
+    end
+  end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
@@ -4791,6 +4806,13 @@ function G:after_heading(i)
   return false
 end
 
+-- The aircraft reference named at i (after fillers) when "to" follows it ("expect IBE3142 to climb": the
+-- speaker's expectation of that aircraft, asked), else nil.
+function G:aircraft_then_to(i)
+  local r = self:refs_in(self:skip_fillers(i), self:skip_fillers(i) + 1, "aircraft")[1]
+  return r and self:word(r.e, "to") and r or nil
+end
+
 -- Finds the phrases of lexicon.not_simulated, marks their tokens used (the
 -- rest of the request is read as if they were not there) and returns the
 -- reply naming them, or nil. A phrase runs from its word to the next
@@ -4815,7 +4837,13 @@ function G:not_simulated()
             and (not c.subject or self:said_after_subject(i, c.subject))
             and (not c.after_heading or self:after_heading(i))
             and not (c.not_before and self:word(self:skip_fillers(i + 1), c.not_before))
-            and not (c.not_after and self:word(i - 1, c.not_after)) then
+            and not (c.not_after and self:word(i - 1, c.not_after)) and not self:word(i + 1, "not") then
+          local expected = c.not_aircraft_to and self:aircraft_then_to(i + 1)
+          if expected then
+            self:need(string.format("Is '%s' an instruction to send now, or what you expect to happen? Please "
+              .. "say the instruction itself.", self:raw(i, expected.e)))
+            break
+          end
           class = c
           break
         end
@@ -4827,7 +4855,11 @@ function G:not_simulated()
         local x = self.t[e]
         comma = comma or (x.kind == "punct" and x.text == ",")
         -- (a comma goes on: "hold at BAKUR, left hand pattern, inbound track 270" is one clearance)
-        if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then")) then
+        -- (nor does it take a negation: "hold present level, do not climb to FL350" leaves "do not" to be read,
+        -- "cancel speed restriction but no need to ..." leaves "no need")
+        if (x.kind == "punct" and x.text ~= ",") or (x.kind == "word" and (x.text == "and" or x.text == "then"))
+            or self:word(e, "not never don't dont") or (self:word(e, "do") and self:word(e + 1, "not"))
+            or (self:word(e, "no") and self:word(e + 1, "need needs")) then
           break
         end
         if class.one_value and x.kind == "number" then

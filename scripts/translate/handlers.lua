@@ -139,6 +139,16 @@ function m:acids(s)
       -- (one named as context, "to avoid a conflict with KLM77", is not instructed)
       if (r.exists or not any_known) and not seen[r.name] and not r.false_start
           and not self:as_context(r.b) and not self:in_reason(r.b) and not self:compared_with(r.b) then
+        -- ("climb KLM12 to FL260 as EZY45 passes", ", as for EZY45", "while EZY45 holds", "with EZY45": a
+        -- second aircraft after "as", "as for", "while" or "with" that is no comparison may be a time, a reason,
+        -- a topic or company as well as an aircraft added; after "as" or "while" and the instruction word also
+        -- when the instruction before named its own aircraft: asked)
+        local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+        if (#ids > 0 and (self:word(k, "as while whilst with") or self:word(k, "for") and self:word(k - 1, "as")))
+            or (self.subject and r.b > s.trig and self:word(k, "as while whilst")) then
+          self:need(string.format("Is %s to get this instruction too, or is it named for another reason? "
+            .. "Please give each aircraft its own instruction.", r.name:upper()))
+        end
         seen[r.name] = true
         ids[#ids + 1] = r.name
       end
@@ -185,16 +195,35 @@ function m:acids(s)
     end
   end
   take(s.trig, upto)
-  -- "EZY45 reduce to 240, the KLM will come right over it": an aircraft after a comma that a clause of its
-  -- own follows is talked about, not addressed, when the instruction's own aircraft was named before it
-  if #ids > 0 and self:has_ref(s.b, s.trig, "aircraft") then
+  -- "EZY45 reduce to 240, the KLM will come right over it", "..., keep KLM12 as is", "and direct HZA, KLM12 no
+  -- change": an aircraft in a clause after a comma that words of its own follow is talked about, not addressed,
+  -- when the instruction's own aircraft was named before it (in the segment, for the instruction before, or after the
+  -- instruction word before the comma)
+  if #ids > 0 and (self:has_ref(s.b, s.trig, "aircraft") or self.subject or #ids > 1) then
     for _, r in ipairs(self:refs_in(s.trig, upto, "aircraft")) do
-      local k = self:word(r.b - 1, "the") and r.b - 2 or r.b - 1
+      local k = r.b - 1
+      while k > s.trig and self.t[k].kind == "word" and not self:intent_at(k) and #self:quantities(k, k + 1) == 0 do
+        k = k - 1
+      end
       local nx = self.t[r.e]
-      if r.name == ids[1] and self.t[k] and self.t[k].kind == "punct" and nx and nx.kind == "word"
-          and not nx.filler then
-        ids, seen = {}, {}
-        take(s.b, s.trig)
+      -- (", as for KLM12, no change": a topic; never one added: "..., KLM12 too", "..., KLM12 as well")
+      -- (its clause, to the next punctuation, holds no value and no instruction word: "N52RG at 90 knots" is
+      -- an instruction of its own)
+      local own = (nx and nx.kind == "word" and not nx.filler) or (self:word(r.b - 1, "for") and self:word(r.b - 2, "as"))
+      local e = r.e
+      while own and self.t[e] and self.t[e].kind ~= "punct" do
+        if self:intent_at(e) or #self:quantities(e, e + 1) > 0 then own = false end
+        e = e + 1
+      end
+      if seen[r.name] and self.t[k] and self.t[k].kind == "punct" and own and not self:word(r.e, "too also")
+          and not (self:word(r.e, "as") and self:word(r.e + 1, "well")) then
+        local kept = {}
+        for _, id in ipairs(ids) do
+          if id ~= r.name then kept[#kept + 1] = id end
+        end
+        ids, seen = kept, { [r.name] = true }
+        for _, id in ipairs(ids) do seen[id] = true end
+        if #ids == 0 then take(s.b, s.trig) end
         break
       end
     end
@@ -262,6 +291,24 @@ function m:acids(s)
       return ids
     end
   end
+  -- "KLM12 heading 270. all aircraft climb FL300", "both climb FL300, EZY45 ...": a group said before the
+  -- instruction word in its own clause, that no aircraft named in it resolves, is never one aircraft named
+  -- before or after it: asked, unless the aircraft instructed together before are that group (two for
+  -- "both", every aircraft flying for "all")
+  local before = self.subjects and self.subject == (self.subjects or {})[1] and #self.subjects or 0
+  if #ids == 0 then
+    for k = s.trig - 1, 1, -1 do
+      local t = self.t[k]
+      if t.kind == "punct" or self:intent_at(k) then break end
+      local both, all = self:word(k, "both"), self:word(k, "everyone everybody")
+        or (self:word(k, "all each every") and self:word(k + 1, "aircraft traffic planes flights of the"))
+      if (both and before ~= 2) or (all and not (before >= 2 and before == #self.fleet)) then
+        self:need(string.format("Which aircraft does '%s' mean? Please give their callsigns.",
+          self:raw(k, self:word(k, "all each every") and k + 2 or k + 1)))
+        return ids
+      end
+    end
+  end
   if #ids == 0 and self.subject then
     -- the aircraft named for the instruction before ("EZY45 and AFR1234 maintain present heading")
     local all = self.subjects and self.subjects[1] == self.subject and self.subjects or { self.subject }
@@ -318,6 +365,13 @@ function m:as_context(i)
   end
   -- ("traffic alert, DAL2104 turn left heading 360": an aircraft opening its clause after a comma, its
   -- instruction word straight after it, is the one instructed)
+  -- ("reduce to 220 ahead of EZY45", "in front of the Iberia", "FL130 below KLM12", "clear of", "away from",
+  -- "instead of": the traffic placed against or replaced)
+  local k = self:word(i - 1, "the") and i - 2 or i - 1
+  if (self:word(k, "of") and (self:word(k - 1, "ahead clear instead") or self:word(k - 1, "front") and self:word(k - 2, "in")))
+      or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above") then
+    return true
+  end
   local named = self.t[i - 1] and self.t[i - 1].text == "," and self:refs_in(i, i + 1, "aircraft")[1]
   if named and self:intent_at(self:skip_fillers(named.e)) then return false end
   for k = i - 1, math.max(1, i - 3), -1 do
@@ -334,10 +388,17 @@ function m:as_context(i)
 end
 
 -- True when the aircraft named at i is the one compared with ("on the same level as the Iberia, FL330"):
--- "as" (and "the") before it, "same" within the 5 words before that.
+-- "as" (and "the") before it, "same" within the 5 words before that; "as" before it and a verb of
+-- what it did or is after it ("as EZY45 did", "as EZY45 has"); "as did" or "as with" before it;
+-- "like" before it, not after a wish ("like EZY45", "just like EZY45 did"; "I'd like EZY45 at FL260"
+-- instructs). An aircraft compared with is never instructed.
 function m:compared_with(i)
   local k = self:word(i - 1, "the") and i - 2 or i - 1
-  return self:word(k, "as") and self:word_in(math.max(1, k - 5), k, "same")
+  if self:word(k, "as") and self:word_in(math.max(1, k - 5), k, "same") then return true end
+  local r = self:refs_in(i, i + 1, "aircraft")[1]
+  if self:word(k, "as") and r and self:word(r.e, "@compared_doings") then return true end
+  if self:word(k, "did does has had with") and self:word(k - 1, "as") then return true end
+  return self:word(k, "like") and not self:word(k - 1, "@wish_before_like")
 end
 
 -- An airline said with no flight number ("KLM, climb ..."): the question

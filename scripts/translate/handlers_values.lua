@@ -361,7 +361,17 @@ return function(H, f, wrap, compass)
     if (below or above) and #others >= 2 and not fl and not self:in_reason(others[#others].b) then
       local ref = self:state(others[#others].name)
       if not ref then return self:need("What is the altitude of " .. others[#others].name .. "?") end
-      return self:emit("ALT " .. ids[1] .. " " .. f.int((ref.alt_ft or 0) + (above and ft or -ft)))
+      -- (an offset of 10000 ft or more, a level under the ground, or one on the other side of the verb said,
+      -- "climb" or "descend", is no separation anyone gives: "climb to 23000 feet below KLM12" is asked; "put
+      -- AC02 1000 ft below AC01" says no direction)
+      local target = (ref.alt_ft or 0) + (above and ft or -ft)
+      local cur = now and now.alt_ft or target
+      local said = self:word(s.trig, "climb climbs climbing") and 1 or self:word(s.trig, "descend descends descending") and -1 or 0
+      if ft >= 10000 or target < 0 or (said > 0 and target < cur - 50) or (said < 0 and target > cur + 50) then
+        return self:need(string.format("Is %s ft a level for %s, or how far %s %s it should be?",
+          f.int(ft), ids[1], above and "above" or "below", others[#others].name:upper()))
+      end
+      return self:emit("ALT " .. ids[1] .. " " .. f.int(target))
     end
     -- ("by" before the instruction belongs to something else: "time by departure, climb ..."; a
     -- flight level is a level: "FL240 and hold its current heading", "FL130, lower by the time ...")

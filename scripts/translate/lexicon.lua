@@ -719,6 +719,11 @@ return {
   -- verbs that keep a value as it is ("maintain heading", "keep your heading": said with none, the present one)
   keep_verbs = { "maintain", "keep", "hold" },
   same_as = { "match", "same", "as" },
+  -- After "as" and an aircraft, what it did or is: the aircraft is compared with ("as EZY45 did")
+  compared_doings = { "did", "does", "do", "has", "had", "was", "were", "is" },
+  -- Before "like", words that make it a wish ("I'd like", "we would like"), not a comparison
+  wish_before_like = { "would", "i'd", "we'd", "you'd", "they'd", "i", "we", "you", "they", "should", "'d",
+      "really", "also", "now" },
   -- switches
   off = { "off", "disable", "disabled", "deactivate", "deactivated", "hide", "stop", "don't", "dont", "without", "remove",
           "disengage", "disengaged", "disconnect", "disconnected", "inhibit", "inhibited" },
@@ -920,8 +925,9 @@ return {
       clause = true },
     -- "expect runway 30 left", "expect ILS approach", "expect lower in 10 miles": information for the
     -- pilot's planning, no clearance (lexicon.not_a_clearance), up to the end of its clause ("expect to resume
-    -- own navigation to MNR shortly")
-    { what = "expected clearances", words = "expect expecting", clause = true },
+    -- own navigation to MNR shortly"); an aircraft then "to" after it ("expect IBE3142 to climb to FL200") is the
+    -- speaker's expectation of that aircraft, no pilot's planning (`not_aircraft_to`): asked whether it is sent
+    { what = "expected clearances", words = "expect expecting", clause = true, not_aircraft_to = true },
     -- "expedite through FL170": a rate while crossing a level, which squawk does not model
     { what = "expedite instructions", words = "expedite", near = { "through", "passing" } },
     -- "make a left three sixty", "orbit right": squawk flies no orbits

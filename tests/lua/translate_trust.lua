@@ -7746,3 +7746,138 @@ do
   check_eq(ex("RPA61 drop in altitude to FL160"), "ALT RPA61 FL160")
   check(not ex("drop in a few more aircraft"):match("^CRE"), "no new aircraft named")
 end
+
+-- Cycle 42 (hz41): an aircraft named in a comparison ("as X did", "as did X", "like X", "same as X", "as with
+-- X") is not instructed; one after "as" or "as for" that is no comparison ("as X passes") is asked about
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("Climb SAS310 to FL270, as BEE71 did"), "ALT SAS310 FL270")
+  check_eq(ex("climb SAS310 to FL270 as BEE71 did"), "ALT SAS310 FL270")
+  check_eq(ex("Climb SAS310 to FL270, as did BEE71"), "ALT SAS310 FL270")
+  check_eq(ex("SAS310 up to FL270, just like BEE71"), "ALT SAS310 FL270")
+  check_eq(ex("SAS310 climb FL270 like BEE71"), "ALT SAS310 FL270")
+  check_eq(ex("SAS310 climb FL270, as with BEE71"), "ALT SAS310 FL270")
+  -- a wish is no comparison, and an aircraft added is still instructed
+  check_eq(ex("we would like BEE71 at FL190"), "ALT BEE71 FL190")
+  check_eq(ex("climb SAS310 to FL270, BEE71 as well"), "ALT SAS310 FL270 ; ALT BEE71 FL270")
+  asked(ex("climb SAS310 to FL270 as BEE71 passes"), "'as' and an aircraft: a time or an aircraft added?")
+  asked(ex("climb SAS310 to FL270, as for BEE71"), "'as for' an aircraft after the instruction")
+  asked(ex("climb SAS310 to FL270 as BEE71 will"), "'as' and what an aircraft will do")
+  asked(ex("speed SAS310 230 while BEE71 holds"), "'while' and an aircraft")
+  asked(ex("SAS310 speed 230 and fly heading 200 while BEE71 holds"), "'while' and an aircraft, second instruction")
+  asked(ex("descend and maintain flight level 110 SAS310 with BEE71"), "'with' and a second aircraft")
+  -- "as for X, ..." opening an instruction of its own names its aircraft
+  check_eq(ex("SAS310 climb FL270; as for BEE71, descend it to FL150"), "ALT SAS310 FL270 ; ALT BEE71 FL150")
+end
+
+-- Cycle 42 (hz41): ", which should also be done for X" (a relative clause with "also", "too", "likewise" or
+-- "same" and an aircraft) gives the instruction to that aircraft too; a clause of what the instruction should
+-- bring about names traffic that is not instructed
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("Climb SAS310 to FL270, which should also be done for BEE71"), "ALT SAS310 FL270 ; ALT BEE71 FL270")
+  check_eq(ex("SAS310 speed 230, that should apply to BEE71 too"), "SPD SAS310 230 ; SPD BEE71 230")
+  check_eq(ex("Climb SAS310 to FL270, which should keep it clear of BEE71"), "ALT SAS310 FL270")
+end
+
+-- Cycle 42 (hz41): traffic "ahead of", "in front of", "below", "above", "clear of" or "away from" which an
+-- instruction places an aircraft, or "instead of" which it is given, is not instructed
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("BEE71 climb to 19000 feet and then maintain flight level 190 below SAS310"),
+    "ALT BEE71 19000 ; ALT BEE71 FL190")
+  check_eq(ex("BEE71 reduce speed to 200 knots instead of SAS310"), "SPD BEE71 200")
+  check_eq(ex("SAS310 descend to FL150 clear of the BEE71"), "ALT SAS310 FL150")
+  check_eq(ex("climb to FL250 SAS310 away from BEE71"), "ALT SAS310 FL250")
+  check_eq(ex("climb SAS310 to FL270 ahead of BEE71"), "ALT SAS310 FL270")
+  check_eq(ex("SAS310 increase speed to 280 kt and fly heading 100 ahead of the BEE71"),
+    "SPD SAS310 280 ; HDG SAS310 100")
+  check_eq(ex("SAS310 speed 280 to stay in front of BEE71"), "SPD SAS310 280")
+end
+
+-- Cycle 42 (hz41): a level said as an offset from another aircraft ("1000 ft below X") that is 10000 ft or more,
+-- under the ground, or against the verb's direction is asked, never sent
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL150 220" })
+  check_eq(ex("SAS310 descend to 1000 ft above BEE71"), "ALT SAS310 16000")
+  check_eq(ex("BEE71 climb to 1000 feet below SAS310"), "ALT BEE71 19000")
+  asked(ex("climb BEE71 to 23000 feet below SAS310"), "an offset under the ground")
+  asked(ex("BEE71 descend to 1000 feet below SAS310"), "a descent to a level above")
+  asked(ex("SAS310 climb to 2000 ft above BEE71"), "a climb to a level below")
+end
+
+-- Cycle 42 (hz41): "expect" then an aircraft and "to" ("expect X to climb to FL200") is the speaker's expectation
+-- of that aircraft, neither sent nor set aside as an expected clearance: asked; "X expect FL200" stays the
+-- expected clearance squawk does not simulate
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("expect BEE71 to climb to FL240"),
+    "ASK Is 'expect BEE71' an instruction to send now, or what you expect to happen? Please say the instruction itself.")
+  asked(ex("we'd expect SAS310 to descend to FL150 and BEE71 to climb FL240"), "an expectation of two aircraft")
+  local r = graph.translate("BEE71 expect FL240 in 10 miles", { sim = squawk.sim.new(), mode = "offline" })
+  check(r.note and r.note:find("expected clearances", 1, true) ~= nil, tostring(r.note))
+end
+
+-- Cycle 42 (hz41): what is said not to be needed ("no need to climb", "no need for the descent", "you don't have
+-- to resume own navigation") is no instruction and is asked; "don't resume own navigation" still switches it off
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  asked(ex("SAS310 no need to climb to FL240"), "no need to climb")
+  asked(ex("there's no need to delete BEE71"), "no need to delete")
+  asked(ex("BEE71, no need to turn left heading 090"), "no need to turn")
+  asked(ex("you don't have to resume own navigation BEE71"), "a route not needed is not switched off")
+  check_eq(ex("BEE71 don't resume own navigation"), "LNAV BEE71 OFF")
+end
+
+-- Cycle 42 (hz41): a direct-to negated by "not", "don't" or "never" before its verb ("do not go direct X") is
+-- asked; "not" before a place with no verb between ("direct B, not A", "not to A but direct B") is the place
+-- passed over
+do
+  local _, ex = scene({ "DEFWPT HZQ1 55.3 12.6", "DEFWPT HZQ2 54.9 12.0", "CRE SAS310 A320 55.0 12.0 090 FL200 250",
+    "ADDWPT SAS310 HZQ1", "ADDWPT SAS310 HZQ2" })
+  asked(ex("do not direct HZQ1 SAS310."), "a direct-to negated")
+  asked(ex("SAS310 never go direct HZQ2"), "a direct-to negated by 'never'")
+  check_eq(ex("SAS310 direct HZQ2, not HZQ1"), "DIRECT SAS310 HZQ2")
+  check_eq(ex("SAS310 not to HZQ1 but direct HZQ2"), "DIRECT SAS310 HZQ2")
+end
+
+-- Cycle 42 (hz41): a group ("both", "all aircraft", "everyone") said before the instruction word in its own clause
+-- is never one aircraft named before or after it: asked, unless the aircraft instructed together before are the
+-- group
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250", "CRE BEE71 DH8D 55.2 12.2 090 FL180 220",
+    "CRE FIN5 A321 55.1 12.4 270 FL160 260" })
+  asked(ex("SAS310 heading 100. both climb to FL300"), "'both' after one aircraft")
+  asked(ex("SAS310 heading 100. all aircraft climb to FL300"), "'all aircraft' after one aircraft")
+  asked(ex("everyone climb to FL350 then BEE71 descend to FL120"), "'everyone' before an aircraft named later")
+  check_eq(ex("SAS310 and BEE71 heading 100, both climb FL300"),
+    "HDG SAS310 100 ; HDG BEE71 100 ; ALT SAS310 FL300 ; ALT BEE71 FL300")
+  check_eq(ex("SAS310, BEE71 and FIN5 heading 100, all climb FL300"),
+    "HDG SAS310 100 ; HDG BEE71 100 ; HDG FIN5 100 ; ALT SAS310 FL300 ; ALT BEE71 FL300 ; ALT FIN5 FL300")
+end
+
+-- Cycle 42 (hz41): a phrase of what squawk does not simulate ("hold ...", "do a 360") never takes a negation
+-- after it: "hold present level, do not climb to FL350" asks about the "not", never climbs
+do
+  local _, ex = scene({ "CRE SAS310 A320 55.0 12.0 090 FL200 250" })
+  asked(ex("SAS310 hold present level, do not climb to FL350"), "a negation after a hold")
+  asked(ex("do not heading 360 SAS310"), "'do not' is no orbit")
+  asked(ex("SAS310 squawk 7000, never climb above FL300"), "a negation after a squawk code")
+  asked(ex("SAS310 cancel speed restriction but no need to climb to FL300"), "'no need' after a restriction lifted")
+end
+
+-- Cycle 42 (hz41): an aircraft in a clause after a comma that words of its own follow, with no value and no
+-- instruction word ("..., keep X as is", "..., X no change", "..., X will follow", ", as for X, no change"), is
+-- talked about, never given the instruction before the comma; "..., X too" and "..., X at 90 knots" still are
+do
+  local _, ex = scene({ "DEFWPT HZQ1 55.3 12.6", "CRE SAS310 A320 55.0 12.0 090 FL200 250",
+    "CRE BEE71 DH8D 55.2 12.2 090 FL180 220" })
+  check_eq(ex("SAS310 proceed direct HZQ1, keep BEE71 as is"), "ADDWPT SAS310 HZQ1 ; DIRECT SAS310 HZQ1")
+  check_eq(ex("SAS310 speed 280 and direct HZQ1, as for BEE71, no change"),
+    "SPD SAS310 280 ; ADDWPT SAS310 HZQ1 ; DIRECT SAS310 HZQ1")
+  check_eq(ex("climb to FL250 SAS310, BEE71 will follow"), "ALT SAS310 FL250")
+  asked(ex("SAS310 speed 280 and direct HZQ1, BEE71 no change"), "an aircraft with no change said")
+  check_eq(ex("SAS310 climb FL300 and turn left heading 270, BEE71 too"),
+    "ALT SAS310 FL300 ; HDG SAS310 270 LEFT ; ALT BEE71 FL300 ; HDG BEE71 270 LEFT")
+  check_eq(ex("SAS310 at FL300, BEE71 at 190 knots"), "ALT SAS310 FL300 ; SPD BEE71 190")
+end
