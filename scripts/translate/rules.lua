@@ -1380,16 +1380,22 @@ return function(intent, rule, words)
   -- giving, then only state nouns (joined by "and", "/" or commas) and "of" or "for" an aircraft, no value
   -- said in the request: a question of the aircraft's state (POS). state_asked gives that aircraft's
   -- reference, or nil.
-  local function state_asked(g, i)
-    if #g:quantities(1, #g.t + 1) > 0 then return nil end
-    local k = g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1)
-    if g:word(k, "the its") then k = k + 1 end
+  -- state_words: from token k, a determiner (one of `determiners`), "present", then the state nouns
+  -- (`nouns_said`) joined by "and", "/" or commas; the token after them and how many nouns were said.
+  local function state_words(g, k, determiners, nouns_said)
+    if g:word(k, determiners) then k = k + 1 end
     if g:word(k, "@present") then k = k + 1 end
     local nouns = 0
-    while g:word(k, "position level altitude speed heading mach and / ,") do
+    while g:word(k, nouns_said) or g:word(k, "and / ,") do
       if not g:word(k, "and / ,") then nouns = nouns + 1 end
       k = k + 1
     end
+    return k, nouns
+  end
+  local function state_asked(g, i)
+    if #g:quantities(1, #g.t + 1) > 0 then return nil end
+    local k, nouns = state_words(g, g:skip_fillers(g:word(i + 1, "me us") and i + 2 or i + 1), "the its",
+      "position level altitude speed heading mach")
     if nouns == 0 or not g:word(k, "of for") then return nil end
     return g:refs_in(k + 1, k + 2, "aircraft")[1]
   end
@@ -1533,14 +1539,7 @@ return function(intent, rule, words)
   -- "THY2KP give me your speed", "give us your present level": the aircraft's own state asked for, no value
   -- said straight after it (POS)
   rule { "give", "pos", next = "me us", when = function(g, i)
-    local k = g:skip_fillers(i + 2)
-    if g:word(k, "your its the") then k = k + 1 end
-    if g:word(k, "@present") then k = k + 1 end
-    local nouns = 0
-    while g:word(k, "level altitude speed heading mach and / ,") do
-      if not g:word(k, "and / ,") then nouns = nouns + 1 end
-      k = k + 1
-    end
+    local k, nouns = state_words(g, g:skip_fillers(i + 2), "your its the", "level altitude speed heading mach")
     local q = g:quantities(i, #g.t + 1)[1]
     return nouns > 0 and not (q and q.b <= k + 1)
   end }
