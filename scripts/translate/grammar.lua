@@ -754,6 +754,7 @@ local function hyphened_types(text)
   if not KNOWN_TYPES then
     KNOWN_TYPES = {}
     for _, d in ipairs(TYPES.designators) do KNOWN_TYPES[d:upper()] = true end
+    for d in pairs(TYPES.aliases) do KNOWN_TYPES[d] = true end  -- ("E-175": the E75L)
   end
   return (text:gsub("%f[%w](%a%a?)%-(%d%d%d?)%f[%W]", function(a, n)
     if KNOWN_TYPES[(a .. n):upper()] then return a .. n end
