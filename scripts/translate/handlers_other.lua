@@ -2708,6 +2708,22 @@ return function(H, f, compass)
   function m:bare(_, spec) self:emit(spec.cmd) end
   -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
   function m:resume(s)
+    -- An unpause to come, said by its speaker ("when I unpause", "until we resume"), starts nothing now: "pause
+    -- until I resume" is the pause alone; a rate said with it would not outlast it (OP runs at DTMULT 1, as
+    -- BlueSky's: "pause and go 2x when I unpause" is asked), nor is anything else said to happen then
+    if self:word(s.trig - 1, "i we you") and self:word(s.trig - 2, "when once after until till") then
+      local rate = false
+      for _, c in ipairs(self.out) do rate = rate or c:match("^DTMULT") ~= nil end
+      for _, q in ipairs(self:quantities(1, #self.t + 1)) do rate = rate or q.kind == "mult" end
+      if rate then
+        return self:need("Unpausing (OP) sets the rate back to 1x, so a rate set now would not hold then: please "
+          .. "give the rate as you unpause (\"resume at 2x\").")
+      end
+      if self:word(s.trig - 2, "until till") and self.out[#self.out] == "HOLD" then
+        return self:explain(s.trig - 2, s.trig + 1)
+      end
+      return self:need("Nothing is run when you unpause later: what should happen now?")
+    end
     -- "back to real time" or "real time" with no word that starts the clock, and "real time speed", read from
     -- the clock's state (world.run_state, or an FF said before in the request): in fast-time OP
     -- (only OP ends it); otherwise DTMULT 1, the rate, which starts nothing (a held clock stays
