@@ -171,12 +171,15 @@ return function(H, f, compass)
     end
     -- ("add a dreamliner ACA855 ...", "spawn a caravan ..."): a family's name said with no type is the one
     -- designator of that family, else asked about, naming them
-    local family
+    -- (a name of two words, "a King Air", read whole)
+    local family, word
     for i = s.b, actype and s.b - 1 or s.e - 1 do
-      if self.t[i].kind == "word" and nicknames[self.t[i].text] then family = family or i end
+      local two = self.t[i + 1] and self.t[i].kind == "word" and self.t[i].text .. " " .. self.t[i + 1].text
+      if not family and two and nicknames[two] then family, word = i, two end
+      if not family and self.t[i].kind == "word" and nicknames[self.t[i].text] then family, word = i, self.t[i].text end
     end
     if family then
-      local word, found = self.t[family].text, {}
+      local found = {}
       for _, d in ipairs(require("translate.names").designators) do
         for _, p in ipairs(nicknames[word]) do
           if d:match(p) then found[#found + 1] = d break end
@@ -187,7 +190,7 @@ return function(H, f, compass)
       end
       if #found == 1 then
         actype = found[1]
-        self:explain(family, family + 1)
+        self:explain(family, family + select(2, word:gsub("%S+", "")))
       end
     end
     local model, near

@@ -7777,3 +7777,16 @@ do
   asked(ex("once I unpause, make it 3x"), "a rate for an unpause to come")
   asked(ex("pause it, and when I resume"), "nothing said to happen now")
 end
+
+-- Cycle 43 (k89): a family's name of two words said where traffic is created ("a King Air") is read whole, as
+-- one word is ("a caravan"): with several designators of the family known it is asked, naming them; a variant
+-- said ("King Air 350") or a designator written is that type
+do
+  local _, ex = scene({ "CRE N61TX C172 33.8 -118.3 315 2500 95" })
+  local q = ex("create a King Air, N481KA, at 33.9 -118.1, heading 090, 8000, 210 knots")
+  check(q:match("^ASK") and q:find("BE20", 1, true) and q:find("B350", 1, true), q)
+  check_eq(ex("add a King Air 350, N481KA, at 33.9 -118.1, heading 090, 8000, 210 knots"),
+    "CRE N481KA B350 33.9 -118.1 90 8000 210")
+  check_eq(ex("spawn a King Air, N481KA, BE20, at 33.9 -118.1, heading 090, 8000, 210 knots"),
+    "CRE N481KA BE20 33.9 -118.1 90 8000 210")
+end
