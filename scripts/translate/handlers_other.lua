@@ -1465,6 +1465,12 @@ return function(H, f, compass)
             end
             if #ids > 1 then ids = {} end  -- ("Gotham City": no airport of that city, one of several "City")
           end
+          -- (with no aircraft to place it near, the whole name of one airport that is the city of other large
+          -- airports too, "Phoenix": ZJSY "PHOENIX INTL" and KPHX "PHOENIX SKY HARBOR INTL", is any of them)
+          local of_city = not nearby and not city and #ids == 1 and cls and self.world.airports_of_city
+          for _, a in ipairs(of_city and of_city(phrase) or {}) do
+            if a ~= ids[1] and cls(a) == "LARGE" and #ids < 4 then ids[#ids + 1] = a end
+          end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             self.airport_said_at = i
@@ -2956,6 +2962,13 @@ return function(H, f, compass)
     if q then return self:emit("SEED " .. f.int(q.value)) end
     self:need("Which random seed should I set?")
   end
+  -- A wind as it is reported, "270 at 15": `dir` three digits typed up to 360, "at", and `spd` a bare number
+  -- of knots up to 200 straight after it (quantities): true when so
+  function m:wind_reported(dir, spd)
+    return dir.kind == "plain" and spd.kind == "plain" and dir.number ~= nil and dir.number.typed
+      and #(dir.number.digits or "") == 3 and dir.value <= 360 and self:word(dir.e, "at") and spd.b == dir.e + 1
+      and spd.value > 0 and spd.value <= 200
+  end
   -- WIND lat lon [alt] dir spd: where the wind blows from ("from 270", or the heading said) and its speed
   function m:wind(s)
     local qs = self:quantities(s.b, s.e)
@@ -2967,13 +2980,16 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.kind == "alt" and not alt then alt = self:take(q) end
       if q.kind == "speed" and not spd then spd = self:take(q) end
-      -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt")
+      -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt",
+      -- "270 at 40" as a wind is reported)
       local before_speed = self:word(q.e, "at") and self:quantities(q.e + 1, q.e + 2)[1]
+      local reported = before_speed and not dir and not spd and self:wind_reported(q, before_speed)
       local said = self:word(q.b - 1, "from") or (self:word(q.b - 1, "of") and self:word(q.b - 2, "wind winds"))
-        or (before_speed and before_speed.kind == "speed")
+        or (before_speed and before_speed.kind == "speed") or reported
       if (q.kind == "heading" or q.kind == "angle" or (q.kind == "plain" and said))
           and not dir and q.value >= 0 and q.value <= 360 then
         dir = self:take(q)
+        if reported then spd = self:take(before_speed) end
       end
     end
     -- ("from the west": a compass point)

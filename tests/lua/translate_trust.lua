@@ -7790,3 +7790,25 @@ do
   check_eq(ex("spawn a King Air, N481KA, BE20, at 33.9 -118.1, heading 090, 8000, 210 knots"),
     "CRE N481KA BE20 33.9 -118.1 90 8000 210")
 end
+
+-- Cycle 43 (k89): a wind as it is reported, "wind 250 at 12" (three digits, "at", a bare number of knots), is its
+-- direction and speed, as "250 at 12 knots" is; a direction of fewer digits or a speed past 200 is no such report
+do
+  local _, ex = scene({ "DEFWPT LAKEY 45.0 -93.0" })
+  check_eq(ex("wind 250 at 12 at 45.1 -93.2"), "WIND 45.1 -93.2 250 12")
+  check_eq(ex("wind 040 at 8 over LAKEY"), "WIND LAKEY 40 8")
+  asked(ex("wind 25 at 12 over LAKEY"), "two digits are no reported direction")
+  asked(ex("wind 250 at 320 over LAKEY"), "320 is no wind speed in knots")
+end
+-- with no aircraft to place it near, the whole name of one airport that is the city of other large airports too
+-- ("Phoenix": ZJSY "PHOENIX INTL" in China, KPHX "PHOENIX SKY HARBOR INTL") is asked after "at" as after "over";
+-- the airport's full name is that one
+do
+  local _, ex = navscene({}, "a city's name of several large airports")
+  if ex then
+    local q = ex("wind 250 at 12 at Phoenix")
+    check(q:match("^ASK") and q:find("KPHX", 1, true) and q:find("ZJSY", 1, true), q)
+    asked(ex("create N41PX C172 at Phoenix heading 090 5500 100 knots"), "Phoenix is two large airports")
+    check_eq(ex("wind 250 at 12 over Phoenix Sky Harbor"), "WIND KPHX 250 12")
+  end
+end
