@@ -5325,6 +5325,26 @@ local function abbreviated_registrations(text, fleet)
       end
     end
   end
+  -- (a bare suffix typed after the request's first word, "reposition 3AB to ...", "from 8ND's route": the
+  -- digits and capitals that end exactly one flying US registration, not said whole, are asked about; at the
+  -- start the callsign matcher asks whether it is that aircraft)
+  for b, tok in text:gmatch("()(%d+%u+)%f[%W]") do
+    if #tok >= 3 and not text:sub(b - 1, b - 1):match("%w") and text:sub(1, b - 1):match("%w") then
+      local ending = {}
+      for _, a in ipairs(fleet) do
+        local id = a.id:upper()
+        if id:match("^N%d") and #id > #tok and id:sub(-#tok) == tok and not text:upper():find(id, 1, true) then
+          ending[#ending + 1] = a.id
+        end
+      end
+      if #ending == 1 then
+        return text, string.format("Which aircraft is '%s'? %s ends with it. Please give its callsign.", tok, ending[1])
+      end
+      if #ending > 1 then
+        return text, string.format("Which aircraft is '%s': %s? Please give its callsign.", tok, table.concat(ending, " or "))
+      end
+    end
+  end
   return text, nil
 end
 

@@ -7812,3 +7812,19 @@ do
     check_eq(ex("wind 250 at 12 over Phoenix Sky Harbor"), "WIND KPHX 250 12")
   end
 end
+
+-- Cycle 43 (k89): a bare registration suffix typed after the request's first word ("relocate 7QX to ...", "from
+-- 7QX's route") is asked about, naming the one aircraft whose US registration ends with it (or the several);
+-- the registration said whole is read
+do
+  local _, ex = scene({ "CRE N517QX C172 40.1 -105.1 090 6500 100", "CRE N88TR SR22 40.3 -105.3 180 8500 150",
+    "CRE N44TR P28A 40.2 -105.0 270 7500 95", "DEFWPT BOLDR 40.2 -105.2", "ADDWPT N517QX BOLDR" })
+  local q = ex("relocate 7QX to 40.0 north 105.0 west")
+  check(q:match("^ASK") and q:find("N517QX", 1, true) ~= nil, q)
+  q = ex("take BOLDR out of 7QX's route")
+  check(q:match("^ASK") and q:find("N517QX", 1, true) ~= nil, q)
+  q = ex("remove 8TR")
+  check(q:match("^ASK") and q:find("N88TR", 1, true) ~= nil and q:find("N44TR", 1, true) == nil, q)
+  check_eq(ex("relocate N517QX to 40.0 north 105.0 west"), "MOVE N517QX 40 -105")
+  check_eq(ex("take BOLDR out of N517QX's route"), "DELWPT N517QX BOLDR")
+end
