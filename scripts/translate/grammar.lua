@@ -5328,12 +5328,14 @@ local function abbreviated_registrations(text, fleet)
   -- (a bare suffix typed after the request's first word, "reposition 3AB to ...", "from 8ND's route": the
   -- digits and capitals that end exactly one flying US registration, not said whole, are asked about; at the
   -- start the callsign matcher asks whether it is that aircraft)
+  local upper = nil
   for b, tok in text:gmatch("()(%d+%u+)%f[%W]") do
     if #tok >= 3 and not text:sub(b - 1, b - 1):match("%w") and text:sub(1, b - 1):match("%w") then
       local ending = {}
+      upper = upper or text:upper()
       for _, a in ipairs(fleet) do
         local id = a.id:upper()
-        if id:match("^N%d") and #id > #tok and id:sub(-#tok) == tok and not text:upper():find(id, 1, true) then
+        if id:match("^N%d") and #id > #tok and id:sub(-#tok) == tok and not upper:find(id, 1, true) then
           ending[#ending + 1] = a.id
         end
       end
