@@ -337,6 +337,9 @@ function M.spoken(text, built, phonetic)
           break
         elseif DIGITS[x] then
           digits, k = digits .. DIGITS[x], k + 1
+        elseif x:match("^%d%d%d$") and digits == "" and (w == "e" or w == "b") then
+          -- ("an e 175", "a b 738": the letter said apart from its digits typed; "a 320" is an article)
+          digits, k = x, k + 1
         elseif TEENS[x] then
           digits, k = digits .. TEENS[x], k + 1
         elseif TENS[x] then

@@ -7828,3 +7828,12 @@ do
   check_eq(ex("relocate N517QX to 40.0 north 105.0 west"), "MOVE N517QX 40 -105")
   check_eq(ex("take BOLDR out of N517QX's route"), "DELWPT N517QX BOLDR")
 end
+
+-- Cycle 43 (k89): a designator's letter said apart from its digits typed, where traffic is created ("an e 190",
+-- "a b 738"), is that type when squawk knows it; "a 320" (an article) and digits no type has are not
+do
+  local _, ex = scene({})
+  check_eq(ex("create RPA12 an e 175 at 41.0 -87.0 heading 090 9000 feet 240 knots"), "CRE RPA12 E75L 41 -87 90 9000 240")
+  check_eq(ex("create DLH5 a b 738 at 50.0 8.0 heading 090 FL200 250 knots"), "CRE DLH5 B738 50 8 90 FL200 250")
+  asked(ex("create RPA13 an e 555 at 41.0 -87.0 heading 090 9000 feet 240 knots"), "no type is E555")
+end
