@@ -1467,7 +1467,7 @@ return function(H, f, compass)
           end
           -- (with no aircraft to place it near, the whole name of one airport that is the city of other large
           -- airports too, "Phoenix": ZJSY "PHOENIX INTL" and KPHX "PHOENIX SKY HARBOR INTL", is any of them)
-          local of_city = not nearby and not city and #ids == 1 and cls and self.world.airports_of_city
+          local of_city = #self.fleet == 0 and not city and #ids == 1 and cls and self.world.airports_of_city
           for _, a in ipairs(of_city and of_city(phrase) or {}) do
             if a ~= ids[1] and cls(a) == "LARGE" and #ids < 4 then ids[#ids + 1] = a end
           end
