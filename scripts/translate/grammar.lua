@@ -754,6 +754,7 @@ local function hyphened_types(text)
   if not KNOWN_TYPES then
     KNOWN_TYPES = {}
     for _, d in ipairs(TYPES.designators) do KNOWN_TYPES[d:upper()] = true end
+    for d in pairs(TYPES.aliases) do KNOWN_TYPES[d] = true end  -- ("E-175": the E75L)
   end
   return (text:gsub("%f[%w](%a%a?)%-(%d%d%d?)%f[%W]", function(a, n)
     if KNOWN_TYPES[(a .. n):upper()] then return a .. n end
@@ -5353,6 +5354,28 @@ local function abbreviated_registrations(text, fleet)
             heard, ending[1].id, chars, ending[1].type or "other type")
         end
         break
+      end
+    end
+  end
+  -- (a bare suffix typed after the request's first word, "reposition 3AB to ...", "from 8ND's route": the
+  -- digits and capitals that end exactly one flying US registration, not said whole, are asked about; at the
+  -- start the callsign matcher asks whether it is that aircraft)
+  local upper = nil
+  for b, tok in text:gmatch("()(%d+%u+)%f[%W]") do
+    if #tok >= 3 and not text:sub(b - 1, b - 1):match("%w") and text:sub(1, b - 1):match("%w") then
+      local ending = {}
+      upper = upper or text:upper()
+      for _, a in ipairs(fleet) do
+        local id = a.id:upper()
+        if id:match("^N%d") and #id > #tok and id:sub(-#tok) == tok and not upper:find(id, 1, true) then
+          ending[#ending + 1] = a.id
+        end
+      end
+      if #ending == 1 then
+        return text, string.format("Which aircraft is '%s'? %s ends with it. Please give its callsign.", tok, ending[1])
+      end
+      if #ending > 1 then
+        return text, string.format("Which aircraft is '%s': %s? Please give its callsign.", tok, table.concat(ending, " or "))
       end
     end
   end

@@ -1086,6 +1086,13 @@ function m:airline_types()
   end
 end
 
+-- Designators read as others (types.build's aliases: E175 -> E75L)
+local ALIASES
+local function aliases()
+  ALIASES = ALIASES or require("translate.types").build(require("translate.names").designators).aliases
+  return ALIASES
+end
+
 -- Families by their number ("777" -> {B772 = true, B77W = true, ...}, types.build's families) and
 -- digits said as words ("seven", "niner": "triple seven" is lexed as "seven seven seven").
 local FAMILIES
@@ -1133,7 +1140,8 @@ function m:type_said(i)
       -- ("the Boeing 777", "the A330": the family's number, its maker before it or not, is the family)
       local last = self.t[r.e - 1].text
       local family = (r.e - r.b == 1 or makers()[t.text]) and fams[last]
-      return set_of(family or { [r.name] = true }), r.e
+      -- (a designator read as another names aircraft flying under either: "the E175" is an E75L or an E175)
+      return family and set_of(family) or function(d) return d == r.name or aliases()[d] == r.name end, r.e
     end
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end

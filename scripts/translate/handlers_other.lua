@@ -171,12 +171,15 @@ return function(H, f, compass)
     end
     -- ("add a dreamliner ACA855 ...", "spawn a caravan ..."): a family's name said with no type is the one
     -- designator of that family, else asked about, naming them
-    local family
+    -- (a name of two words, "a King Air", read whole)
+    local family, word
     for i = s.b, actype and s.b - 1 or s.e - 1 do
-      if self.t[i].kind == "word" and nicknames[self.t[i].text] then family = family or i end
+      local two = self.t[i + 1] and self.t[i].kind == "word" and self.t[i].text .. " " .. self.t[i + 1].text
+      if not family and two and nicknames[two] then family, word = i, two end
+      if not family and self.t[i].kind == "word" and nicknames[self.t[i].text] then family, word = i, self.t[i].text end
     end
     if family then
-      local word, found = self.t[family].text, {}
+      local found = {}
       for _, d in ipairs(require("translate.names").designators) do
         for _, p in ipairs(nicknames[word]) do
           if d:match(p) then found[#found + 1] = d break end
@@ -187,7 +190,7 @@ return function(H, f, compass)
       end
       if #found == 1 then
         actype = found[1]
-        self:explain(family, family + 1)
+        self:explain(family, family + select(2, word:gsub("%S+", "")))
       end
     end
     local model, near
@@ -1462,6 +1465,12 @@ return function(H, f, compass)
             end
             if #ids > 1 then ids = {} end  -- ("Gotham City": no airport of that city, one of several "City")
           end
+          -- (with no aircraft to place it near, the whole name of one airport that is the city of other large
+          -- airports too, "Phoenix": ZJSY "PHOENIX INTL" and KPHX "PHOENIX SKY HARBOR INTL", is any of them)
+          local of_city = #self.fleet == 0 and not city and #ids == 1 and cls and self.world.airports_of_city
+          for _, a in ipairs(of_city and of_city(phrase) or {}) do
+            if a ~= ids[1] and cls(a) == "LARGE" and #ids < 4 then ids[#ids + 1] = a end
+          end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             self.airport_said_at = i
@@ -2708,6 +2717,22 @@ return function(H, f, compass)
   function m:bare(_, spec) self:emit(spec.cmd) end
   -- OP; "resume at 2x", "resume the simulation at x3": a rate said after "at" is a DTMULT too
   function m:resume(s)
+    -- An unpause to come, said by its speaker ("when I unpause", "until we resume"), starts nothing now: "pause
+    -- until I resume" is the pause alone; a rate said with it would not outlast it (OP runs at DTMULT 1, as
+    -- BlueSky's: "pause and go 2x when I unpause" is asked), nor is anything else said to happen then
+    if self:word(s.trig - 1, "i we you") and self:word(s.trig - 2, "when once after until till") then
+      local rate = false
+      for _, c in ipairs(self.out) do rate = rate or c:match("^DTMULT") ~= nil end
+      for _, q in ipairs(self:quantities(1, #self.t + 1)) do rate = rate or q.kind == "mult" end
+      if rate then
+        return self:need("Unpausing (OP) sets the rate back to 1x, so a rate set now would not hold then: please "
+          .. "give the rate as you unpause (\"resume at 2x\").")
+      end
+      if self:word(s.trig - 2, "until till") and self.out[#self.out] == "HOLD" then
+        return self:explain(s.trig - 2, s.trig + 1)
+      end
+      return self:need("Nothing is run when you unpause later: what should happen now?")
+    end
     -- "back to real time" or "real time" with no word that starts the clock, and "real time speed", read from
     -- the clock's state (world.run_state, or an FF said before in the request): in fast-time OP
     -- (only OP ends it); otherwise DTMULT 1, the rate, which starts nothing (a held clock stays
@@ -2937,6 +2962,13 @@ return function(H, f, compass)
     if q then return self:emit("SEED " .. f.int(q.value)) end
     self:need("Which random seed should I set?")
   end
+  -- A wind as it is reported, "270 at 15": `dir` three digits typed up to 360, "at", and `spd` a bare number
+  -- of knots up to 200 straight after it (quantities): true when so
+  function m:wind_reported(dir, spd)
+    return dir.kind == "plain" and spd.kind == "plain" and dir.number ~= nil and dir.number.typed
+      and #(dir.number.digits or "") == 3 and dir.value <= 360 and self:word(dir.e, "at") and spd.b == dir.e + 1
+      and spd.value > 0 and spd.value <= 200
+  end
   -- WIND lat lon [alt] dir spd: where the wind blows from ("from 270", or the heading said) and its speed
   function m:wind(s)
     local qs = self:quantities(s.b, s.e)
@@ -2948,13 +2980,16 @@ return function(H, f, compass)
     for _, q in ipairs(qs) do
       if q.kind == "alt" and not alt then alt = self:take(q) end
       if q.kind == "speed" and not spd then spd = self:take(q) end
-      -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt")
+      -- (the direction said after "from", after "wind of", or straight before "at" and the speed: "270 at 40 kt",
+      -- "270 at 40" as a wind is reported)
       local before_speed = self:word(q.e, "at") and self:quantities(q.e + 1, q.e + 2)[1]
+      local reported = before_speed and not dir and not spd and self:wind_reported(q, before_speed)
       local said = self:word(q.b - 1, "from") or (self:word(q.b - 1, "of") and self:word(q.b - 2, "wind winds"))
-        or (before_speed and before_speed.kind == "speed")
+        or (before_speed and before_speed.kind == "speed") or reported
       if (q.kind == "heading" or q.kind == "angle" or (q.kind == "plain" and said))
           and not dir and q.value >= 0 and q.value <= 360 then
         dir = self:take(q)
+        if reported then spd = self:take(before_speed) end
       end
     end
     -- ("from the west": a compass point)

@@ -1798,10 +1798,12 @@ return function(intent, rule, words)
          prev = { 3, "add set define put create" }, when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "wind from 270 at 40 kt over 55.5 12.5", "a wind of 270 at 40 knots": where it blows from, said after it
   rule { "wind winds", "wind", next = "from of", when = function(g) return not g:has_ref(1, #g.t + 1, "aircraft") end }
-  -- "wind 270 at 30 kt at 52 4": its direction straight after it, its speed in knots after that
+  -- "wind 270 at 30 kt at 52 4": its direction straight after it, its speed in knots after that ("wind 270 at
+  -- 15 over Phoenix": three digits, "at" and a bare number, as a wind is reported, are the two)
   rule { "wind winds", "wind", when = function(g, i)
     local qs = g:quantities(i + 1, math.min(#g.t + 1, i + 6))
-    return qs[1] ~= nil and qs[1].b == i + 1 and qs[2] ~= nil and qs[2].kind == "speed"
+    return qs[1] ~= nil and qs[1].b == i + 1 and qs[2] ~= nil
+      and (qs[2].kind == "speed" or g:wind_reported(qs[1], qs[2]))
       and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "wind at 6.5 north 3.3 east from 220 at 15 knots", "a harmattan wind at 12N 8.5E, from 050, 20 knots": a

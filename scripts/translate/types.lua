@@ -16,7 +16,10 @@
 -- M.build(designators) -> {types = {{maker, model, icao}, ...}, phrases = {{words, designator}, ...},
 --   designators = every designator known (the models' and the given ones), sorted,
 --   families = {[family's number, lower case: "777", "a330"] = {[designator] = true}: its variants},
---   makers = {[maker, lower case] = {[designator] = true}: every type of that maker, its E75L as its E175}}
+--   makers = {[maker, lower case] = {[designator] = true}: every type of that maker, its E75L as its E175},
+--   aliases = {[designator] = designator}: a designator whose spelling is a model's name that the
+--   performance data's titles or another designator's pattern give to that other designator ("E175", the
+--   Embraer 175's model name, is the E75L): read as the other, never written (its rows name the other)}
 --   phrases: names of several words ("737 max 8", "dash 8-400") and their
 --   designator, which M.join(text, phrases) writes in their place (the
 --   matcher reads one token).
@@ -150,6 +153,7 @@ M.nicknames = {
 
 function M.build(designators)
   local rows, seen, phrases, known, makers = {}, {}, {}, {}, {}
+  local given = {}  -- {{name in lower case, designator}, ...}: every name a title or pattern gives, in order
   local list = {}
   for _, t in ipairs(squawk.sim.types()) do list[#list + 1] = t end
   for _, d in ipairs(designators or {}) do list[#list + 1] = { designator = d } end
@@ -170,7 +174,10 @@ function M.build(designators)
         end
         for _, a in ipairs(alts) do
           a = a:gsub("^%s+", ""):gsub("%s+$", "")
-          for _, s in ipairs(spellings(a)) do add(rows, seen, makers, maker, s, d) end
+          for _, s in ipairs(spellings(a)) do
+            add(rows, seen, makers, maker, s, d)
+            given[#given + 1] = { s, d }
+          end
           if a:find(" ") then
             phrases[#phrases + 1] = { a:lower(), d }
             -- the family said as its designator ("B737 MAX 8")
@@ -184,6 +191,7 @@ function M.build(designators)
     for _, n in ipairs(pattern_names(d)) do
       for _, sp in ipairs(spellings(n[2])) do
         add(rows, seen, makers, n[1], sp, d)
+        given[#given + 1] = { sp, d }
         -- ("a320 neo", "320 neo": the variant said apart is a name of several words too)
         if sp:find(" ") and not n[2]:find(" ") then phrases[#phrases + 1] = { sp, d } end
       end
@@ -204,6 +212,20 @@ function M.build(designators)
     local base = (fam[1] == "boeing" and "B" or "") .. fam[2]:upper()
     add(rows, seen, makers, fam[1], fam[2], known[base] and base or fam[3])
   end
+  -- a designator that is another's model name given first ("e175": E75L's title or pattern) is that other
+  local aliases = {}
+  for _, g in ipairs(given) do
+    local d = g[1]:upper()
+    if known[d] and d ~= g[2] and not aliases[d] then aliases[d] = g[2] end
+  end
+  for d in pairs(aliases) do known[d] = nil end
+  for _, row in ipairs(rows) do row[3] = aliases[row[3]] or row[3] end
+  for _, set in pairs(makers) do
+    for d, target in pairs(aliases) do
+      if set[d] then set[target] = true end  -- (the alias kept: an aircraft flying as an E175 is an Embraer)
+    end
+  end
+  for _, fam in ipairs(families) do fam[3] = aliases[fam[3]] or fam[3] end
   local all, sets = {}, {}
   for d in pairs(known) do all[#all + 1] = d end
   table.sort(all)
@@ -214,7 +236,8 @@ function M.build(designators)
     local base = (fam[1] == "boeing" and "B" or "") .. fam[2]:upper()
     if known[base] then sets[fam[2]][base] = true end
   end
-  return { types = rows, phrases = phrases, designators = all, families = sets, makers = makers }
+  for _, p in ipairs(phrases) do p[2] = aliases[p[2]] or p[2] end
+  return { types = rows, phrases = phrases, designators = all, families = sets, makers = makers, aliases = aliases }
 end
 
 -- Type names as speech recognition writes them, digits as number words: after a
@@ -314,6 +337,9 @@ function M.spoken(text, built, phonetic)
           break
         elseif DIGITS[x] then
           digits, k = digits .. DIGITS[x], k + 1
+        elseif x:match("^%d%d%d$") and digits == "" and (w == "e" or w == "b") then
+          -- ("an e 175", "a b 738": the letter said apart from its digits typed; "a 320" is an article)
+          digits, k = x, k + 1
         elseif TEENS[x] then
           digits, k = digits .. TEENS[x], k + 1
         elseif TENS[x] then
@@ -362,6 +388,7 @@ function M.plurals(text, built, fleet, families)
       local digits = d:match("^[AB](%d%d%d)$")
       if digits then short[digits] = short[digits] == nil and d or false end
     end
+    for d in pairs(built.aliases or {}) do designators[d:lower()] = true end  -- ("E175s": read as the E75L)
     for _, fam in ipairs(families or {}) do short[fam] = false end
     local hyphened = {}
     for _, row in ipairs(built.types) do

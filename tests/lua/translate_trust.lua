@@ -640,7 +640,7 @@ check_eq(heard("create TST3 airbus a three two one at 52.1 4.3 heading 090 FL200
 check_eq(heard("create TST4 boeing seven three seven eight hundred at 52.1 4.3 heading 090 FL200 250 knots"),
   "CRE TST4 B738 52.1 4.3 90 FL200 250")
 check_eq(heard("create TST5 e one seventy five at 52.1 4.3 heading 090 FL200 250 knots"),
-  "CRE TST5 E175 52.1 4.3 90 FL200 250")
+  "CRE TST5 E75L 52.1 4.3 90 FL200 250")
 -- (a family reads as its typed name does)
 check_eq(heard("spawn TST6 an a three thirty at 52.1 4.3 heading 090 FL200 250 knots"),
   heard("spawn TST6 an a330 at 52.1 4.3 heading 090 FL200 250 knots"))
@@ -1848,7 +1848,7 @@ do
   check_eq(ex("and a little Cessna 152, N52KT, 42.0 -88.3, 3500 ft, heading 270, 95 knots"),
     "CRE N52KT C152 42 -88.3 270 3500 95")
   check_eq(ex("next one is SKW20 E175 at 42.2 -87.8 heading 300, FL110, 250 knots"),
-    "CRE SKW20 E175 42.2 -87.8 300 FL110 250")
+    "CRE SKW20 E75L 42.2 -87.8 300 FL110 250")
   check_eq(ex("could we have an Alaska B738 ASA51 at 41.6 -88.4, FL230 heading 045 at 280 kt"),
     "CRE ASA51 B738 41.6 -88.4 45 FL230 280")
   check_eq(ex("create Delta 77, DAL77, an A320 at 42.3 -87.9, FL180, heading 200, 270 knots"),
@@ -1862,11 +1862,11 @@ do
   -- a remark in a sentence of its own, "one" standing for the aircraft in a remark, the experimenter's own
   -- doing after "then I'll", what a setting is for ("for when we ..."): set aside; one that instructs is asked
   check_eq(ex("create SKW9 E175 at 42.2 -87.8 heading 300 FL110 250 knots. Second arrival of the evening wave."),
-    "CRE SKW9 E175 42.2 -87.8 300 FL110 250")
+    "CRE SKW9 E75L 42.2 -87.8 300 FL110 250")
   check_eq(ex("Warm-up pair first. SKW10 E175 at 42.2 -87.8 heading 300 FL110 250 knots"),
-    "CRE SKW10 E175 42.2 -87.8 300 FL110 250")
+    "CRE SKW10 E75L 42.2 -87.8 300 FL110 250")
   check_eq(ex("cre SKW11 E175 42.2 -87.8 300 FL110 250 - the slow one of the stream"),
-    "CRE SKW11 E175 42.2 -87.8 300 FL110 250")
+    "CRE SKW11 E75L 42.2 -87.8 300 FL110 250")
   check_eq(ex("fast forward 2 minutes then I'll explain the display to the visitors"), "FF 120")
   check_eq(ex("set the sim rate to 3 for when we reconvene"), "DTMULT 3")
   asked(ex("DAL889 climb FL240. Then N731RS."), "DAL889 climb FL240. Then N731RS.")
@@ -1896,9 +1896,9 @@ do
   check_eq(ex("waypoints: EN1 at 42.1 -88.1 and EN2 at 42.2 -88.2"), "DEFWPT EN1 42.1 -88.1 ; DEFWPT EN2 42.2 -88.2")
   asked(ex("DAL889 fix at 42.5 N 87.9 W"), "DAL889 fix at 42.5 N 87.9 W")
   -- a position written with a slash; a compass point that agrees with the heading said describes it
-  check_eq(ex("new ac: SKW14 E175 42.35/-87.95 hdg 050 FL190 spd 275"), "CRE SKW14 E175 42.35 -87.95 50 FL190 275")
+  check_eq(ex("new ac: SKW14 E175 42.35/-87.95 hdg 050 FL190 spd 275"), "CRE SKW14 E75L 42.35 -87.95 50 FL190 275")
   check_eq(ex("create SKW15 E175 at 42.3 -87.9, northbound, so heading 010, FL150, 260 knots"),
-    "CRE SKW15 E175 42.3 -87.9 10 FL150 260")
+    "CRE SKW15 E75L 42.3 -87.9 10 FL150 260")
   asked(ex("create SKW16 E175 at 42.3 -87.9, southbound, heading 010, FL150, 260 knots"), "create SKW16 E175 at 42.3 -87.9, southbound, heading 010, FL150, 260 knots")
   -- typed turn shorthand before "hdg"; a Pilatus by its name (PCnn -> Pilatus PC-nn)
   check_eq(ex("dal889 lft hdg 100"), "HDG DAL889 100 LEFT")
@@ -7880,4 +7880,95 @@ do
   check_eq(ex("SAS310 climb FL300 and turn left heading 270, BEE71 too"),
     "ALT SAS310 FL300 ; HDG SAS310 270 LEFT ; ALT BEE71 FL300 ; HDG BEE71 270 LEFT")
   check_eq(ex("SAS310 at FL300, BEE71 at 190 knots"), "ALT SAS310 FL300 ; SPD BEE71 190")
+end
+
+-- Cycle 43 (k89): a type's model name that the performance data (OpenAP's titles, else another designator's
+-- pattern) gives to another designator is that designator: "E175", "Embraer 175", "E-175" are the E75L (no ICAO
+-- designator is E175); E170, E190 and E195 are their own; "the E175" still describes an aircraft flying as one
+do
+  local _, ex = scene({ "CRE LOT455 E175 52.2 4.6 040 FL150 270", "CRE KLM9 E190 52.0 4.0 180 FL200 270" })
+  check_eq(ex("add RPA702, an E175, at 52.4 4.9, heading 210, FL160, 260 knots"), "CRE RPA702 E75L 52.4 4.9 210 FL160 260")
+  check_eq(ex("new traffic: Embraer 175 RPA703 at 52.4 4.9 heading 210 at 9000 feet 240 knots"),
+    "CRE RPA703 E75L 52.4 4.9 210 9000 240")
+  check_eq(ex("create RPA704 E-175 at 52.4 4.9 heading 210 FL160 260 knots"), "CRE RPA704 E75L 52.4 4.9 210 FL160 260")
+  check_eq(ex("spawn 4 random E175s"), "MCRE 4 E75L")
+  check_eq(ex("add KLM705, an E170, at 52.4 4.9, heading 210, FL160, 260 knots"), "CRE KLM705 E170 52.4 4.9 210 FL160 260")
+  check_eq(ex("add KLM706, an Embraer 190, at 52.4 4.9, heading 210, FL160, 260 knots"), "CRE KLM706 E190 52.4 4.9 210 FL160 260")
+  check_eq(ex("add KLM707, an E195, at 52.4 4.9, heading 210, FL160, 260 knots"), "CRE KLM707 E195 52.4 4.9 210 FL160 260")
+  check_eq(ex("the E175 climb to FL240"), "ALT LOT455 FL240")
+  asked(ex("add KLM708, an Embraer, at 52.4 4.9, heading 210, FL160, 260 knots"), "a maker names no one type")
+end
+
+-- Cycle 43 (k89): an unpause to come, said by its speaker ("when I unpause", "until we resume"), starts nothing
+-- now: "pause until I resume" is the pause alone; a rate said with it is asked (OP, which unpauses, runs at
+-- DTMULT 1, so a rate set before it would not hold), as is anything else said to happen then
+do
+  local _, ex = scene({ "CRE KLM9 E190 52.0 4.0 180 FL200 270" })
+  check_eq(ex("freeze the sim until we unpause"), "HOLD")
+  check_eq(ex("pause the simulation"), "HOLD")
+  check_eq(ex("unpause at 3x"), "OP ; DTMULT 3")
+  local q = ex("hold the clock and run at 4x once we resume")
+  check(q:match("^ASK") and q:find("1x", 1, true) ~= nil, q)
+  asked(ex("once I unpause, make it 3x"), "a rate for an unpause to come")
+  asked(ex("pause it, and when I resume"), "nothing said to happen now")
+end
+
+-- Cycle 43 (k89): a family's name of two words said where traffic is created ("a King Air") is read whole, as
+-- one word is ("a caravan"): with several designators of the family known it is asked, naming them; a variant
+-- said ("King Air 350") or a designator written is that type
+do
+  local _, ex = scene({ "CRE N61TX C172 33.8 -118.3 315 2500 95" })
+  local q = ex("create a King Air, N481KA, at 33.9 -118.1, heading 090, 8000, 210 knots")
+  check(q:match("^ASK") and q:find("BE20", 1, true) and q:find("B350", 1, true), q)
+  check_eq(ex("add a King Air 350, N481KA, at 33.9 -118.1, heading 090, 8000, 210 knots"),
+    "CRE N481KA B350 33.9 -118.1 90 8000 210")
+  check_eq(ex("spawn a King Air, N481KA, BE20, at 33.9 -118.1, heading 090, 8000, 210 knots"),
+    "CRE N481KA BE20 33.9 -118.1 90 8000 210")
+end
+
+-- Cycle 43 (k89): a wind as it is reported, "wind 250 at 12" (three digits, "at", a bare number of knots), is its
+-- direction and speed, as "250 at 12 knots" is; a direction of fewer digits or a speed past 200 is no such report
+do
+  local _, ex = scene({ "DEFWPT LAKEY 45.0 -93.0" })
+  check_eq(ex("wind 250 at 12 at 45.1 -93.2"), "WIND 45.1 -93.2 250 12")
+  check_eq(ex("wind 040 at 8 over LAKEY"), "WIND LAKEY 40 8")
+  asked(ex("wind 25 at 12 over LAKEY"), "two digits are no reported direction")
+  asked(ex("wind 250 at 320 over LAKEY"), "320 is no wind speed in knots")
+end
+-- with no aircraft to place it near, the whole name of one airport that is the city of other large airports too
+-- ("Phoenix": ZJSY "PHOENIX INTL" in China, KPHX "PHOENIX SKY HARBOR INTL") is asked after "at" as after "over";
+-- the airport's full name is that one
+do
+  local _, ex = navscene({}, "a city's name of several large airports")
+  if ex then
+    local q = ex("wind 250 at 12 at Phoenix")
+    check(q:match("^ASK") and q:find("KPHX", 1, true) and q:find("ZJSY", 1, true), q)
+    asked(ex("create N41PX C172 at Phoenix heading 090 5500 100 knots"), "Phoenix is two large airports")
+    check_eq(ex("wind 250 at 12 over Phoenix Sky Harbor"), "WIND KPHX 250 12")
+  end
+end
+
+-- Cycle 43 (k89): a bare registration suffix typed after the request's first word ("relocate 7QX to ...", "from
+-- 7QX's route") is asked about, naming the one aircraft whose US registration ends with it (or the several);
+-- the registration said whole is read
+do
+  local _, ex = scene({ "CRE N517QX C172 40.1 -105.1 090 6500 100", "CRE N88TR SR22 40.3 -105.3 180 8500 150",
+    "CRE N44TR P28A 40.2 -105.0 270 7500 95", "DEFWPT BOLDR 40.2 -105.2", "ADDWPT N517QX BOLDR" })
+  local q = ex("relocate 7QX to 40.0 north 105.0 west")
+  check(q:match("^ASK") and q:find("N517QX", 1, true) ~= nil, q)
+  q = ex("take BOLDR out of 7QX's route")
+  check(q:match("^ASK") and q:find("N517QX", 1, true) ~= nil, q)
+  q = ex("remove 8TR")
+  check(q:match("^ASK") and q:find("N88TR", 1, true) ~= nil and q:find("N44TR", 1, true) == nil, q)
+  check_eq(ex("relocate N517QX to 40.0 north 105.0 west"), "MOVE N517QX 40 -105")
+  check_eq(ex("take BOLDR out of N517QX's route"), "DELWPT N517QX BOLDR")
+end
+
+-- Cycle 43 (k89): a designator's letter said apart from its digits typed, where traffic is created ("an e 190",
+-- "a b 738"), is that type when squawk knows it; "a 320" (an article) and digits no type has are not
+do
+  local _, ex = scene({})
+  check_eq(ex("create RPA12 an e 175 at 41.0 -87.0 heading 090 9000 feet 240 knots"), "CRE RPA12 E75L 41 -87 90 9000 240")
+  check_eq(ex("create DLH5 a b 738 at 50.0 8.0 heading 090 FL200 250 knots"), "CRE DLH5 B738 50 8 90 FL200 250")
+  asked(ex("create RPA13 an e 555 at 41.0 -87.0 heading 090 9000 feet 240 knots"), "no type is E555")
 end

@@ -44,3 +44,12 @@ if titled then
 else
   print("skipped: OpenAP titles need OpenAP data (SQUAWK_OPENAP)")
 end
+
+-- a designator that is another's model name is read as that one, never written ("E175": the E75L); the
+-- others of its maker are their own
+check_eq(built.aliases.E175, "E75L")
+for _, d in ipairs(built.designators) do check(d ~= "E175", "E175 is no designator of its own") end
+for _, d in ipairs({ "E170", "E190", "E195", "E75L", "E75S" }) do check_eq(built.aliases[d], nil, d) end
+check_eq(type_of("create X1 E175 at 52 4"), "E75L")
+check_eq(type_of("create X1 Embraer 175 at 52 4"), "E75L")
+check_eq(type_of("create X1 E190 at 52 4"), "E190")
