@@ -46,8 +46,9 @@ return {
       "hold", "line", "lines", "noise", "run", "start", "wind", "trail", "trails", "load", "open", "continue",
       "polygon", "reset", "seed", "echo", "perf" },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
+  -- (the particles of Singapore and Malaysian English: "ok lah", "can lah", "like that lor")
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
-      "and", "now", },
+      "and", "now", "lah", "leh", "lor", },
   -- Every word accounted for (docs/translator_trust.md): a request becomes commands only when each of its
   -- words is part of a callsign, place, type or value the parse read, an instruction word (the rules' words
   -- and this file's lists), or a word of one of these classes; any other word is a leftover, asked about by
@@ -195,7 +196,10 @@ return {
         -- Japanese, Korean and Chinese, romanised
         "arigato", "arigatou", "konnichiwa", "ohayo", "ohayou", "gozaimasu", "onegaishimasu", "sayonara",
         "sumimasen", "kamsahamnida", "gamsahamnida", "annyeong", "annyeonghaseyo", "annyonghaseyo", "xiexie",
-        "nihao", "zaijian" },
+        "nihao", "zaijian",
+        -- Thai, Malay, Indonesian and Filipino, romanised ("sawasdee khrap", "terima kasih", "salamat")
+        "sawasdee", "sawatdee", "sawadee", "khrap", "krap", "khob", "khun", "terima", "kasih", "selamat", "pagi",
+        "salamat", "maraming" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",

@@ -7746,3 +7746,43 @@ do
   check_eq(ex("RPA61 drop in altitude to FL160"), "ALT RPA61 FL160")
   check(not ex("drop in a few more aircraft"):match("^CRE"), "no new aircraft named")
 end
+
+-- Cycle 43 (k9192): the run taken up again ("resume run", "continue the run") is OP, said alone or as a clause
+-- of its own; "resume run" after a callsign is no clock started
+do
+  local _, ex = scene({ "CRE SIA22 A359 1.3 103.9 090 FL310 290" })
+  check_eq(ex("resume run"), "OP")
+  check_eq(ex("ok, continue the run please"), "OP")
+  check_eq(ex("SIA22 turn left heading 050, then resume the run"), "HDG SIA22 50 LEFT ; OP")
+  asked(ex("SIA22 resume run"), "a callsign before 'resume run'")
+end
+
+-- Cycle 43 (k9192): the discourse particles of Singapore and Malaysian English ("ok lah", "can lah") carry no
+-- instruction, and the courtesy of Thai, Malay and Filipino controllers ("terima kasih", "sawasdee khrap") is
+-- courtesy; a word that is neither is still asked about
+do
+  local _, ex = scene({ "CRE SIA22 A359 1.3 103.9 090 FL310 290" })
+  check_eq(ex("SIA22 ok lah, descend FL250"), "ALT SIA22 FL250")
+  check_eq(ex("SIA22 turn right heading 140 can lah"), "HDG SIA22 140 RIGHT")
+  check_eq(ex("SIA22 sawasdee khrap, climb FL330, terima kasih"), "ALT SIA22 FL330")
+  asked(ex("SIA22 ok lah, descend FL250 mampu"), "an unknown word after the particle")
+end
+
+-- Cycle 43 (k9192): text for the screen or the log said after a colon ("write on the screen: ...", "show on the
+-- scope: ...") is ECHO of that text; a colon with no screen or log named before it is no ECHO
+do
+  local _, ex = scene({ "CRE SIA22 A359 1.3 103.9 090 FL310 290" })
+  check_eq(ex("write on the screen: second block begins"), "ECHO second block begins")
+  check_eq(ex("please show in the log: SIA22 handed over"), "ECHO SIA22 handed over")
+  asked(ex("write this down: second block"), "no screen or log named")
+end
+
+-- Cycle 43 (k9192): "departure airport" / "departure aerodrome" with an airport named is the origin (ORIG);
+-- with no airport, or no aircraft of several, it is asked
+do
+  local _, ex = scene({ "CRE SIA22 A359 1.3 103.9 090 FL310 290", "CRE MAS7 B738 2.7 101.7 180 FL200 270" })
+  check_eq(ex("SIA22 set departure airport WSSS"), "ORIG SIA22 WSSS")
+  check_eq(ex("make the departure aerodrome of SIA22 WMKK"), "ORIG SIA22 WMKK")
+  asked(ex("set departure airport WSSS"), "no aircraft named")
+  asked(ex("SIA22 set departure airport"), "no airport named")
+end
