@@ -406,7 +406,7 @@ for _, h in ipairs(lexicon.heard_as) do
     for w in form:gmatch("%S+") do words[#words + 1] = w end
     HEARD[words[1]] = HEARD[words[1]] or {}
     table.insert(HEARD[words[1]], { words = words, means = h.means, before = h.before and set_of(h.before),
-                                    after = h.after and set_of(h.after),
+                                    after = h.after and set_of(h.after), not_after = h.not_after and set_of(h.not_after),
                                     between = h.between and { set_of(h.between[1]), set_of(h.between[2]) } })
   end
 end
@@ -424,7 +424,7 @@ local function heard_forms(text)
       -- punctuation may close the last word only ("turn write, heading")
       for k = 2, n do ok = ok and bare[i + k - 1] == h.words[k] end
       for k = 1, n - 1 do ok = ok and not toks[i + k - 1]:match("%p$") end
-      if ok then
+      if ok and not (h.not_after and heard_word_is(toks[i - 1], h.not_after)) then
         local last = toks[i + n - 1]
         local closed = last:match("%p$") ~= nil
         local joined_before = toks[i - 1] ~= nil and not toks[i - 1]:match("%p$")

@@ -1031,7 +1031,8 @@ return {
   -- A heard form is that word ONLY where the word is expected: `before` (the
   -- next word is one of these; "#number" any number, digits or number words),
   -- `after` (the word before it is one of these), or `between` (both: after
-  -- one of between[1] and before one of between[2]). Anywhere else it stays
+  -- one of between[1] and before one of between[2]); never after a word of
+  -- `not_after` (a name the heard form ends: "red cap 712" is AirAsia). Anywhere else it stays
   -- what it is ("write the heading down", "head into the wind", "the send
   -- button", "climb two four thousand").
   heard_as = {
@@ -1048,7 +1049,7 @@ return {
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
     -- Spanish and French phraseology before its value, read the same way ("rumbo dos cero cero", "descienda
     -- nivel de vuelo tres uno cero", "cap 270", "montez niveau 350")
-    { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" } },
+    { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" }, not_after = { "red" } },
     { heard = { "nivel de vuelo", "nivel", "niveau" }, means = "flight level", before = { "#number" } },
     { heard = { "velocidad", "vitesse" }, means = "speed", before = { "#number" } },
     { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a", "y", "fl" } },

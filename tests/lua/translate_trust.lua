@@ -7786,3 +7786,13 @@ do
   asked(ex("set departure airport WSSS"), "no aircraft named")
   asked(ex("SIA22 set departure airport"), "no airport named")
 end
+
+-- Cycle 43 (k9192): "cap" before a number is French for heading, but not after "red": "Red Cap" is AirAsia's
+-- telephony ("delete the red cap 712", "remove red cap 6015"); a "cap" of its own before a number is still heading
+do
+  local _, ex = scene({ "CRE AXM712 A320 2.3 101.4 040 FL130 260", "CRE AXM6015 A320 3.6 101.5 170 FL200 290" })
+  check_eq(ex("delete the red cap 712"), "DEL AXM712")
+  check_eq(ex("red cap 712 climb FL200, then remove red cap 6015"), "ALT AXM712 FL200 ; DEL AXM6015")
+  check_eq(ex("red cap 6015 cap 090"), "HDG AXM6015 90")
+  asked(ex("red cap 712 turn red cap 090"), "a heading said as the airline")
+end
