@@ -2454,17 +2454,22 @@ local SC_KEPT, SC_ONLY, SC_SETTING = {}, set_of(SC.only), set_of(SC.setting)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
 -- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
 -- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
--- the instruction word at p, replaces it; true when it did.
+-- the instruction word at p, replaces it; true when it did. Said "exactly" ("at or below FL090, sorry make it
+-- exactly FL090"), it takes back the bound said before the value too (its words noted).
 function G:value_said_again(p, a, c)
   local v = self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c
+  local exact = self:word(v, "exactly precisely")
+  if exact then v = v + 1 end
   local new = self:quantities(v, #self.t + 1)[1]
   local old = self:quantities(p + 1, a)
   if not (new and new.b == v and #old == 1 and (new.kind == old[1].kind or new.kind == "plain")) then return false end
   local nx = new.e  -- (a filler after it, "make it 240 please", still ends its clause)
   while self.t[nx] and self.t[nx].filler do nx = nx + 1 end
   if self.t[nx] and self.t[nx].kind ~= "punct" then return false end
-  self:mark_used(old[1].b, v)
-  for k = old[1].b, v - 1 do self.noted[k] = true end
+  local b = old[1].b
+  while exact and b - 1 > p and self:word(b - 1, "or above below least most") do b = b - 1 end
+  self:mark_used(b, v)
+  for k = b, v - 1 do self.noted[k] = true end
   return true
 end
 
@@ -3415,8 +3420,9 @@ function G:at_waypoint(s, spec)
     -- "to be at AMPEG at FL120", "be at FL200 over ARTIP": the value the aircraft is to be at there, said
     -- after the waypoint or between "be at" and it (`be_at`: the first token of that value)
     local be_at
-    -- ("be at PETKA flight level 80": the value straight after the waypoint, "at" left out)
-    if self:word(r.b - 1, "at") and self:word(r.b - 2, "be")
+    -- ("be at PETKA flight level 80": the value straight after the waypoint, "at" left out; "be over AMIKI at
+    -- 8000 feet": "over" for "at")
+    if self:word(r.b - 1, "at over overhead") and self:word(r.b - 2, "be")
         and (self:word(after, "at") or (self:quantities(after, s.e)[1] or {}).b == after) then
       be_at = r.b
     elseif self:word(r.b - 1, "at over by") then
@@ -3561,8 +3567,11 @@ function G:at_waypoint(s, spec)
         end
         -- "cross SUGOL at or above FL150", "at least 250 knots": BlueSky's AT sets the exact value, so a
         -- bound runs only after a yes to that exact constraint
-        local bound = self:word_in(be_at or r.e, s.e, "above below higher lower least most greater less")
-        if bound and (alt or spd) then
+        -- (a bound taken back by a self-correction, "at or below FL090, sorry make it exactly FL090", is noted)
+        local bounds = "above below higher lower least most greater less"
+        local bk = self:find_word(be_at or r.e, s.e, bounds)
+        while bk < s.e and self.noted[bk] do bk = self:find_word(bk + 1, s.e, bounds) end
+        if bk < s.e and (alt or spd) then
           local exact = alt and f.alt(alt.value, alt.fl)
             or (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value) .. " knots")
           self:confirm_before(string.format("squawk can set only an exact constraint at %s: %s would cross it at "

@@ -7796,3 +7796,25 @@ do
   check_eq(ex("red cap 6015 cap 090"), "HDG AXM6015 90")
   asked(ex("red cap 712 turn red cap 090"), "a heading said as the airline")
 end
+
+-- Cycle 43 (k9192): "be over FIX at ALT" / "be overhead FIX FL070" is the crossing constraint there (AT ... ALT),
+-- as "be at FIX at ALT" is; "be over FIX" with no value, or with a verb after it, is still asked
+do
+  local _, ex = scene({ "DEFWPT TOLAK 47.6 9.3", "DEFWPT MEROS 47.4 9.0", "CRE SWR7 A20N 47.8 9.6 240 FL110 250",
+    "ADDWPT SWR7 TOLAK", "ADDWPT SWR7 MEROS" })
+  check_eq(ex("SWR7 be over TOLAK at 9000 feet"), "AT SWR7 TOLAK ALT 9000")
+  check_eq(ex("SWR7 please be overhead MEROS at FL070 and 210 knots"), "AT SWR7 MEROS ALT FL70 ; AT SWR7 MEROS SPD 210")
+  asked(ex("SWR7 be over TOLAK"), "no value to meet there")
+  asked(ex("SWR7 be over TOLAK and descend"), "a verb with no value")
+end
+
+-- Cycle 43 (k9192): a value said again "exactly" after a self-correction ("at or below FL090, sorry make it
+-- exactly FL090") replaces the value and takes back the bound said before it; a new value with no "exactly" after
+-- a bound still leaves the bound to confirm
+do
+  local _, ex = scene({ "DEFWPT PAKSE 14.0 100.5", "CRE THA9 A359 13.9 100.9 230 FL150 280", "ADDWPT THA9 PAKSE" })
+  check_eq(ex("THA9 cross PAKSE at or below FL120, sorry make it exactly FL120"), "AT THA9 PAKSE ALT FL120")
+  check_eq(ex("THA9 cross PAKSE at or above FL100, no wait, make it exactly FL110"), "AT THA9 PAKSE ALT FL110")
+  check_eq(ex("THA9 reduce speed 250, sorry make it exactly 240"), "SPD THA9 240")
+  asked(ex("THA9 cross PAKSE at or below FL120, sorry make it FL110"), "the bound not taken back")
+end
