@@ -5180,6 +5180,8 @@ end
 -- written with its hyphen ("C-GKQM", "D-EABC": CGKQM, DEABC); so are a flight number's letters
 -- said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
+  -- (a registration written in capitals with its hyphen, "D-EABC", "OE-LDA", is the one id, flying or new)
+  text = text:gsub("%f[%w](%u%u?)%-(%u%u%u%u?)%f[%W]", "%1%2")
   if #fleet == 0 then return text end
   local ids, tails = {}, {}
   for _, a in ipairs(fleet) do

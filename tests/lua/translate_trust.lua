@@ -7818,3 +7818,16 @@ do
   check_eq(ex("THA9 reduce speed 250, sorry make it exactly 240"), "SPD THA9 240")
   asked(ex("THA9 cross PAKSE at or below FL120, sorry make it FL110"), "the bound not taken back")
 end
+
+-- Cycle 43 (k9192): a new aircraft's callsign said as a registration in capitals ("D-EABC", "DEABC") straight
+-- after or before its type, and a designator written as one word with the type named after "type" ("create
+-- BCS1 type B744"), are the callsign; a fix's name there, or no such word, is still asked
+do
+  local _, ex = scene({ "DEFWPT TOLAK 47.6 9.3" })
+  check_eq(ex("please create a Piper PA28 D-EFGH at 49.5 8.4, heading 090, 2500 ft, 95 knots"),
+    "CRE DEFGH PA28 49.5 8.4 90 2500 95")
+  check_eq(ex("create HB-KLM C172 at 47.5 8.5"), "CRE HBKLM C172 47.5 8.5")
+  check_eq(ex("create A20N1 type A388 at 47.0 8.0"), "CRE A20N1 A388 47 8")
+  asked(ex("create a C172 TOLAK at 49.9 8.6"), "a fix's name after the type")
+  asked(ex("create a C172 at 49.9 8.6"), "no callsign")
+end
