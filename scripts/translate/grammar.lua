@@ -2594,8 +2594,10 @@ function G:self_corrected()
         -- ("no" straight before what it negates is no correction: "conflict detection only, no resolution")
         local nx = self.t[c + 1]
         -- ("250 knots or less... make it 240": "make it" after a mark, its value said alone, G:value_said_again)
+        -- (a marker of two words: "never mind")
         marked = marked or (SC_MARKERS[self.t[c].text]
           and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
+          or (nx ~= nil and SC_MARKERS[self.t[c].text .. " " .. nx.text])
           or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil)
         c = c + 1
       end

@@ -7831,3 +7831,13 @@ do
   asked(ex("create a C172 TOLAK at 49.9 8.6"), "a fix's name after the type")
   asked(ex("create a C172 at 49.9 8.6"), "no callsign")
 end
+
+-- Cycle 43 (k9192): "never mind" after punctuation is a self-correction: what it follows is taken back and what
+-- is said after it stands ("direct KALOP... never mind, just heading 300"); closing the request it is asked
+do
+  local _, ex = scene({ "DEFWPT KALOP 13.9 100.7", "CRE NOK55 B738 13.6 101.1 290 FL180 290", "ADDWPT NOK55 KALOP" })
+  check_eq(ex("NOK55 direct KALOP... never mind, just heading 300"), "HDG NOK55 300")
+  check_eq(ex("NOK55 delete waypoint, never mind, turn left heading 250"), "HDG NOK55 250 LEFT")
+  check_eq(ex("NOK55 climb FL200, never mind, descend FL140"), "ALT NOK55 FL140")
+  asked(ex("NOK55 climb FL200, never mind"), "nothing after 'never mind'")
+end
