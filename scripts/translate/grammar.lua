@@ -1969,8 +1969,11 @@ function G:condition()
       q = wp
     end
     if not q then return nil, 1 end
+    -- ("DLH4AB when reaching speed 250, descend FL200": the speed's noun straight before its number)
     for x = v, q.b - 1 do
-      if not (self.t[x].filler or ARRIVING[self.words[x]]) then return nil, 1 end
+      if not (self.t[x].filler or ARRIVING[self.words[x]] or (x == q.b - 1 and self:word(x, "speed airspeed"))) then
+        return nil, 1
+      end
     end
     i = c
   end
@@ -1991,8 +1994,9 @@ function G:condition()
     -- a level, a speed or Mach ("once AFR1023 slows to 250": a speed by its verb), and an
     -- instruction must follow it
     local q = self:quantities(i, #self.t + 1)[1]
+    -- ("when reaching speed 250 descend FL200": by its noun)
     local by_verb = q and q.kind == "plain"
-      and self:word(self:word(q.b - 1, "to") and q.b - 2 or q.b - 1, "@speed_verbs")
+      and self:word(self:word(q.b - 1, "to") and q.b - 2 or q.b - 1, "@speed_verbs speed airspeed")
     -- (a value with its own unit is an instruction too: "ACA102 once you hit FL170 go 260 knots", "once QFA12 is
     -- passing FL340 bring it back to 260 knots")
     local nq = q and self:quantities(q.e, #self.t + 1)[1]
@@ -2026,7 +2030,9 @@ function G:condition()
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
-    if q.kind == "plain" and rest == q.e then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
+    if q.kind == "plain" and (rest == q.e or self:word(q.b - 1, "speed airspeed")) then
+      return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest
+    end
     -- "when BAW123 is 20 miles from LEKKO, ...", "once the Vueling is 20 miles out from SIJAN": ATDIST [NM]
     local at = self:word(q.e, "out") and q.e + 1 or q.e
     local from = q.kind == "dist" and self:word(at, "from of to before") and self:skip_fillers(at + 1)

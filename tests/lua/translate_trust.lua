@@ -7841,3 +7841,12 @@ do
   check_eq(ex("NOK55 climb FL200, never mind, descend FL140"), "ALT NOK55 FL140")
   asked(ex("NOK55 climb FL200, never mind"), "nothing after 'never mind'")
 end
+
+-- Cycle 43 (k9192): a speed condition said by its noun ("when reaching speed 250", "when DLH4AB reaches speed 250,")
+-- is ATSPD, as "when reaching 250 knots" is; the condition with no instruction after it is still asked
+do
+  local _, ex = scene({ "CRE AUA31 A320 48.1 16.5 270 FL240 280" })
+  check_eq(ex("AUA31 when reaching speed 260 descend flight level 180"), "ATSPD AUA31 260 ALT AUA31 FL180")
+  check_eq(ex("when AUA31 reaches speed 260, turn right heading 300"), "ATSPD AUA31 260 HDG AUA31 300 RIGHT")
+  asked(ex("AUA31 when reaching speed 260"), "no instruction after the condition")
+end
