@@ -3248,6 +3248,13 @@ function G:at_waypoint(s, spec)
         if not self.ask then self:do_at(ids[1], name, n0) end
         return true
       end
+      if name and not self.ask and at and target and target > at + 1 then
+        local skipped = {}
+        for i = at + 1, target - 1 do skipped[#skipped + 1] = route[i] end
+        return self:need(string.format("Should %s fly direct %s once past %s, leaving out %s of its route (AT %s %s DO "
+          .. "DIRECT %s %s), or delete %s from the route?", ids[1], to[1].name, name, table.concat(skipped, ", "),
+          ids[1], name, ids[1], to[1].name, table.concat(skipped, ", ")))
+      end
     end
     -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in a direct's
     -- clause)

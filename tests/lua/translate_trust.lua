@@ -7850,3 +7850,13 @@ do
   check_eq(ex("when AUA31 reaches speed 260, turn right heading 300"), "ATSPD AUA31 260 HDG AUA31 300 RIGHT")
   asked(ex("AUA31 when reaching speed 260"), "no instruction after the condition")
 end
+
+-- Cycle 43 (k9192): "after FIX direct WPT" with waypoints of the route between the two is asked by name (the
+-- shortcut flown from FIX, or the waypoints between deleted?); to the next waypoint it is AT ... DO DIRECT
+do
+  local _, ex = scene({ "DEFWPT KOTAB 3.3 101.9", "DEFWPT SIBEK 3.2 101.7", "DEFWPT RAWAN 3.1 101.5",
+    "CRE MAS88 B738 3.5 102.1 200 FL160 280", "ADDWPT MAS88 KOTAB", "ADDWPT MAS88 SIBEK", "ADDWPT MAS88 RAWAN" })
+  check_eq(ex("MAS88 after KOTAB direct RAWAN"), "ASK Should MAS88 fly direct RAWAN once past KOTAB, leaving out SIBEK "
+    .. "of its route (AT MAS88 KOTAB DO DIRECT MAS88 RAWAN), or delete SIBEK from the route?")
+  check_eq(ex("MAS88 after KOTAB direct SIBEK"), "AT MAS88 KOTAB DO DIRECT MAS88 SIBEK")
+end
