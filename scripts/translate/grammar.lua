@@ -3909,13 +3909,33 @@ end
 -- direct-to ("skip TP1 and go direct TP2") and names in an instruction only
 -- announced ("expect direct X", "advise when able direct X") are explained, and so are names a
 -- handler explained (a route said to go on as it does: "direct TWEED then GIRVA").
+-- True when waypoint ref r is cancelled ("direct LEMON now, cancel GRANT") by the word before it and lies on the
+-- route of an aircraft sent direct (self.out) before that direct-to's waypoint: the direct-to leaves it out
+-- (the word and the name explained).
+function G:cancelled_by_direct(r)
+  if not self:word(r.b - 1, "cancel cancelled canceled omit") then return false end
+  for _, line in ipairs(self.out) do
+    local id, to = line:match("^DIRECT (%S+) (%S+)$")
+    local at, target
+    for i, w in ipairs(id and (self:state(id) or {}).route or {}) do
+      if w:upper() == r.name:upper() then at = at or i end
+      if w:upper() == to:upper() then target = i end
+    end
+    if at and target and at < target then
+      self:explain(r.b - 1, r.e)
+      return true
+    end
+  end
+  return false
+end
+
 function G:uncarried_names()
   local out = " " .. table.concat(self.out, " "):upper():gsub("[,;]", " ") .. " "
   local direct = out:find(" DIRECT ", 1, true) ~= nil
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b]
         and not (self.explained and self.explained[r.b]) and not self:in_reason(r.b)
-        and not (direct and self:preceded_by(r.b, 3, "@passed_over"))
+        and not (direct and (self:preceded_by(r.b, 3, "@passed_over") or self:cancelled_by_direct(r)))
         and not self:preceded_by(r.b, 4, "@not_a_clearance advise") then
       local name = r.name:upper()
       -- (an airport said by its three-letter code is carried by its ICAO name: SFO -> KSFO)

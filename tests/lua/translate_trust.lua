@@ -7860,3 +7860,13 @@ do
     .. "of its route (AT MAS88 KOTAB DO DIRECT MAS88 RAWAN), or delete SIBEK from the route?")
   check_eq(ex("MAS88 after KOTAB direct SIBEK"), "AT MAS88 KOTAB DO DIRECT MAS88 SIBEK")
 end
+
+-- Cycle 43 (k9192): "cancel FIX" said with a direct-to past FIX on the route ("direct LEMON now, cancel GRANT") is
+-- what the direct-to does; a waypoint after the direct-to's is still asked
+do
+  local _, ex = scene({ "DEFWPT TAPAK 14.0 100.8", "DEFWPT LUMOT 14.1 100.6", "CRE THA5 A359 13.9 100.9 230 FL150 280",
+    "ADDWPT THA5 TAPAK", "ADDWPT THA5 LUMOT" })
+  check_eq(ex("THA5 direct to LUMOT now, cancel TAPAK"), "DIRECT THA5 LUMOT")
+  check_eq(ex("THA5 direct LUMOT, cancel TAPAK and descend FL100"), "DIRECT THA5 LUMOT ; ALT THA5 FL100")
+  asked(ex("THA5 direct TAPAK, cancel LUMOT"), "a waypoint after the direct-to's")
+end
