@@ -544,14 +544,15 @@ return {
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
   -- (typed: "210 hmm no 200")
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind" },
+                                "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "forget" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
-                                  "corr", "never mind" },
+                                  "corr", "never mind", "nevermind", "forget that" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
                       -- it follows ("the Wideroe, I mean"), "actually" closing it is "in fact" ("going to
                       -- Valencia actually"), "from scratch" is no correction
-                      closing = { "no", "wait", "sorry", "make that", "say again", "corr", "never mind" },
+                      closing = { "no", "wait", "sorry", "make that", "say again", "corr", "never mind", "nevermind",
+                                  "forget that" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)

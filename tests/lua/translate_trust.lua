@@ -7840,6 +7840,10 @@ do
   check_eq(ex("NOK55 delete waypoint, never mind, turn left heading 250"), "HDG NOK55 250 LEFT")
   check_eq(ex("NOK55 climb FL200, never mind, descend FL140"), "ALT NOK55 FL140")
   asked(ex("NOK55 climb FL200, never mind"), "nothing after 'never mind'")
+  -- ("forget that", "nevermind" the same)
+  check_eq(ex("NOK55 climb FL200... forget that, just heading 300"), "HDG NOK55 300")
+  check_eq(ex("NOK55 turn left heading 200, nevermind, 210"), "HDG NOK55 210 LEFT")
+  asked(ex("NOK55 climb FL200, forget that"), "nothing after 'forget that'")
 end
 
 -- Cycle 43 (k9192): a speed condition said by its noun ("when reaching speed 250", "when DLH4AB reaches speed 250,")
