@@ -406,7 +406,7 @@ for _, h in ipairs(lexicon.heard_as) do
     for w in form:gmatch("%S+") do words[#words + 1] = w end
     HEARD[words[1]] = HEARD[words[1]] or {}
     table.insert(HEARD[words[1]], { words = words, means = h.means, before = h.before and set_of(h.before),
-                                    after = h.after and set_of(h.after),
+                                    after = h.after and set_of(h.after), not_after = h.not_after and set_of(h.not_after),
                                     between = h.between and { set_of(h.between[1]), set_of(h.between[2]) } })
   end
 end
@@ -424,7 +424,7 @@ local function heard_forms(text)
       -- punctuation may close the last word only ("turn write, heading")
       for k = 2, n do ok = ok and bare[i + k - 1] == h.words[k] end
       for k = 1, n - 1 do ok = ok and not toks[i + k - 1]:match("%p$") end
-      if ok then
+      if ok and not (h.not_after and heard_word_is(toks[i - 1], h.not_after)) then
         local last = toks[i + n - 1]
         local closed = last:match("%p$") ~= nil
         local joined_before = toks[i - 1] ~= nil and not toks[i - 1]:match("%p$")
@@ -1973,8 +1973,11 @@ function G:condition()
       q = wp
     end
     if not q then return nil, 1 end
+    -- ("DLH4AB when reaching speed 250, descend FL200": the speed's noun straight before its number)
     for x = v, q.b - 1 do
-      if not (self.t[x].filler or ARRIVING[self.words[x]]) then return nil, 1 end
+      if not (self.t[x].filler or ARRIVING[self.words[x]] or (x == q.b - 1 and self:word(x, "speed airspeed"))) then
+        return nil, 1
+      end
     end
     i = c
   end
@@ -1995,8 +1998,9 @@ function G:condition()
     -- a level, a speed or Mach ("once AFR1023 slows to 250": a speed by its verb), and an
     -- instruction must follow it
     local q = self:quantities(i, #self.t + 1)[1]
+    -- ("when reaching speed 250 descend FL200": by its noun)
     local by_verb = q and q.kind == "plain"
-      and self:word(self:word(q.b - 1, "to") and q.b - 2 or q.b - 1, "@speed_verbs")
+      and self:word(self:word(q.b - 1, "to") and q.b - 2 or q.b - 1, "@speed_verbs speed airspeed")
     -- (a value with its own unit is an instruction too: "ACA102 once you hit FL170 go 260 knots", "once QFA12 is
     -- passing FL340 bring it back to 260 knots")
     local nq = q and self:quantities(q.e, #self.t + 1)[1]
@@ -2030,7 +2034,9 @@ function G:condition()
     if q.kind == "speed" then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
     if q.kind == "mach" then return "ATSPD " .. self.subject .. " " .. f.mach(q.value), rest end
     if q.kind == "plain" and q.value >= 1000 then return "ATALT " .. self.subject .. " " .. f.int(q.value), rest end
-    if q.kind == "plain" and rest == q.e then return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest end
+    if q.kind == "plain" and (rest == q.e or self:word(q.b - 1, "speed airspeed")) then
+      return "ATSPD " .. self.subject .. " " .. f.int(q.value), rest
+    end
     -- "when BAW123 is 20 miles from LEKKO, ...", "once the Vueling is 20 miles out from SIJAN": ATDIST [NM]
     local at = self:word(q.e, "out") and q.e + 1 or q.e
     local from = q.kind == "dist" and self:word(at, "from of to before") and self:skip_fillers(at + 1)
@@ -2458,17 +2464,22 @@ local SC_KEPT, SC_ONLY, SC_SETTING = {}, set_of(SC.only), set_of(SC.setting)
 for cmd, nouns in pairs(SC.just_the) do for _, w in ipairs(nouns) do SC_KEPT[w] = cmd end end
 -- "reduce speed 220... no, make it 210", "descend to 26 thousand ft, sorry, 27 thousand": a value alone after
 -- the self-correction run [a, c) (after "make it" too), ending its clause, of the kind of the value said since
--- the instruction word at p, replaces it; true when it did.
+-- the instruction word at p, replaces it; true when it did. Said "exactly" ("at or below FL090, sorry make it
+-- exactly FL090"), it takes back the bound said before the value too (its words noted).
 function G:value_said_again(p, a, c)
   local v = self:word(c, "it") and self:word(c - 1, "make") and c + 1 or c
+  local exact = self:word(v, "exactly precisely")
+  if exact then v = v + 1 end
   local new = self:quantities(v, #self.t + 1)[1]
   local old = self:quantities(p + 1, a)
   if not (new and new.b == v and #old == 1 and (new.kind == old[1].kind or new.kind == "plain")) then return false end
   local nx = new.e  -- (a filler after it, "make it 240 please", still ends its clause)
   while self.t[nx] and self.t[nx].filler do nx = nx + 1 end
   if self.t[nx] and self.t[nx].kind ~= "punct" then return false end
-  self:mark_used(old[1].b, v)
-  for k = old[1].b, v - 1 do self.noted[k] = true end
+  local b = old[1].b
+  while exact and b - 1 > p and self:word(b - 1, "or above below least most") do b = b - 1 end
+  self:mark_used(b, v)
+  for k = b, v - 1 do self.noted[k] = true end
   return true
 end
 
@@ -2593,8 +2604,10 @@ function G:self_corrected()
         -- ("no" straight before what it negates is no correction: "conflict detection only, no resolution")
         local nx = self.t[c + 1]
         -- ("250 knots or less... make it 240": "make it" after a mark, its value said alone, G:value_said_again)
+        -- (a marker of two words: "never mind")
         marked = marked or (SC_MARKERS[self.t[c].text]
           and (self.t[c].text ~= "no" or (nx and (nx.kind == "punct" or SC_WORDS[nx.text]))))
+          or (nx ~= nil and SC_MARKERS[self.t[c].text .. " " .. nx.text])
           or (self.t[c].text == "make" and self:word(c + 1, "it") and self:quantities(c + 2, c + 3)[1] ~= nil)
         c = c + 1
       end
@@ -3239,6 +3252,13 @@ function G:at_waypoint(s, spec)
         if not self.ask then self:do_at(ids[1], name, n0) end
         return true
       end
+      if name and not self.ask and at and target and target > at + 1 then
+        local skipped = {}
+        for i = at + 1, target - 1 do skipped[#skipped + 1] = route[i] end
+        return self:need(string.format("Should %s fly direct %s once past %s, leaving out %s of its route (AT %s %s DO "
+          .. "DIRECT %s %s), or delete %s from the route?", ids[1], to[1].name, name, table.concat(skipped, ", "),
+          ids[1], name, ids[1], to[1].name, table.concat(skipped, ", ")))
+      end
     end
     -- ("direct CNF1, FL340 at CNF1": a level or speed said straight before "at" and a waypoint, in a direct's
     -- clause)
@@ -3419,8 +3439,9 @@ function G:at_waypoint(s, spec)
     -- "to be at AMPEG at FL120", "be at FL200 over ARTIP": the value the aircraft is to be at there, said
     -- after the waypoint or between "be at" and it (`be_at`: the first token of that value)
     local be_at
-    -- ("be at PETKA flight level 80": the value straight after the waypoint, "at" left out)
-    if self:word(r.b - 1, "at") and self:word(r.b - 2, "be")
+    -- ("be at PETKA flight level 80": the value straight after the waypoint, "at" left out; "be over AMIKI at
+    -- 8000 feet": "over" for "at")
+    if self:word(r.b - 1, "at over overhead") and self:word(r.b - 2, "be")
         and (self:word(after, "at") or (self:quantities(after, s.e)[1] or {}).b == after) then
       be_at = r.b
     elseif self:word(r.b - 1, "at over by") then
@@ -3565,8 +3586,11 @@ function G:at_waypoint(s, spec)
         end
         -- "cross SUGOL at or above FL150", "at least 250 knots": BlueSky's AT sets the exact value, so a
         -- bound runs only after a yes to that exact constraint
-        local bound = self:word_in(be_at or r.e, s.e, "above below higher lower least most greater less")
-        if bound and (alt or spd) then
+        -- (a bound taken back by a self-correction, "at or below FL090, sorry make it exactly FL090", is noted)
+        local bounds = "above below higher lower least most greater less"
+        local bk = self:find_word(be_at or r.e, s.e, bounds)
+        while bk < s.e and self.noted[bk] do bk = self:find_word(bk + 1, s.e, bounds) end
+        if bk < s.e and (alt or spd) then
           local exact = alt and f.alt(alt.value, alt.fl)
             or (spd.kind == "mach" and f.mach(spd.value) or f.int(spd.value) .. " knots")
           self:confirm_before(string.format("squawk can set only an exact constraint at %s: %s would cross it at "
@@ -3889,13 +3913,33 @@ end
 -- direct-to ("skip TP1 and go direct TP2") and names in an instruction only
 -- announced ("expect direct X", "advise when able direct X") are explained, and so are names a
 -- handler explained (a route said to go on as it does: "direct TWEED then GIRVA").
+-- True when waypoint ref r is cancelled ("direct LEMON now, cancel GRANT") by the word before it and lies on the
+-- route of an aircraft sent direct (self.out) before that direct-to's waypoint: the direct-to leaves it out
+-- (the word and the name explained).
+function G:cancelled_by_direct(r)
+  if not self:word(r.b - 1, "cancel cancelled canceled omit") then return false end
+  for _, line in ipairs(self.out) do
+    local id, to = line:match("^DIRECT (%S+) (%S+)$")
+    local at, target
+    for i, w in ipairs(id and (self:state(id) or {}).route or {}) do
+      if w:upper() == r.name:upper() then at = at or i end
+      if w:upper() == to:upper() then target = i end
+    end
+    if at and target and at < target then
+      self:explain(r.b - 1, r.e)
+      return true
+    end
+  end
+  return false
+end
+
 function G:uncarried_names()
   local out = " " .. table.concat(self.out, " "):upper():gsub("[,;]", " ") .. " "
   local direct = out:find(" DIRECT ", 1, true) ~= nil
   for _, r in ipairs(self.refs) do
     if r.kind == "waypoint" and not self:word(r.b, "@not_names @navaid_kinds") and not self.noted[r.b]
         and not (self.explained and self.explained[r.b]) and not self:in_reason(r.b)
-        and not (direct and self:preceded_by(r.b, 3, "@passed_over"))
+        and not (direct and (self:preceded_by(r.b, 3, "@passed_over") or self:cancelled_by_direct(r)))
         and not self:preceded_by(r.b, 4, "@not_a_clearance advise") then
       local name = r.name:upper()
       -- (an airport said by its three-letter code is carried by its ICAO name: SFO -> KSFO)
@@ -5204,6 +5248,8 @@ end
 -- written with its hyphen ("C-GKQM", "D-EABC": CGKQM, DEABC); so are a flight number's letters
 -- said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
+  -- (a registration written in capitals with its hyphen, "D-EABC", "OE-LDA", is the one id, flying or new)
+  text = text:gsub("%f[%w](%u%u?)%-(%u%u%u%u?)%f[%W]", "%1%2")
   if #fleet == 0 then return text end
   local ids, tails = {}, {}
   for _, a in ipairs(fleet) do

@@ -135,6 +135,37 @@ return function(H, f, compass)
       local k = self:find_word(s.b, s.e, "@id_words")
       if k + 1 < s.e and self.t[k + 1].kind == "word" then id = self.t[k + 1].raw end
     end
+    -- ("create BCS1 type B744 ..."): with the type named after "type", another designator written as one word
+    -- (letters, then digits) is the new callsign; ("create a Cessna 172 D-EABC at ..."): a registration written
+    -- in capitals (five letters, no word squawk knows) straight after or before the type is the callsign
+    local id_type
+    if not id then
+      local types = self:refs_in(s.b, s.e, "type")
+      local declared
+      for _, t in ipairs(types) do
+        if self:word(t.b - 1, "type") then declared = declared or t end
+      end
+      for _, t in ipairs(declared and types or {}) do
+        local raw = self.t[t.b].raw
+        if t ~= declared and t.e == t.b + 1 and raw:match("^%u+%d+$") then
+          id, id_type = raw, t
+          break
+        end
+      end
+      for _, t in ipairs((id or #types ~= 1) and {} or types) do
+        for _, k in ipairs({ t.e, t.b - 1 }) do
+          local w = self.t[k]
+          -- (a fix, navaid or airport of that name, the scene's or the navdata's: no callsign)
+          local place = w ~= nil and self.world.place_known ~= nil and self.world.place_known(w.raw) ~= nil
+          for _, r in ipairs(self:refs_in(k, k + 1, "waypoint")) do place = place or r.exists end
+          if not id and w and w.kind == "word" and w.raw:match("^%u%u%u%u%u$") and not self:known_word(k)
+              and not place then
+            id = w.raw
+            self:explain(k, k + 1)
+          end
+        end
+      end
+    end
     -- ("an intruder for VIR9: DLH9KW ...", "a head-on for ICE204: spawn ICE205 ..."): the aircraft flying
     -- that the new one is set up against is named as context
     for _, r in ipairs(self.refs) do
@@ -144,6 +175,9 @@ return function(H, f, compass)
       end
     end
     local types = self:refs_in(s.b, s.e, "type")
+    for k, t in ipairs(types) do
+      if t == id_type then table.remove(types, k) break end
+    end
     local actype = types[1] and types[1].name
     -- ("a United triple seven, UAL9, B77W": a designator written as such is the variant meant, over a
     -- family said by its spoken name; two designators written keep the first)

@@ -46,8 +46,9 @@ return {
       "hold", "line", "lines", "noise", "run", "start", "wind", "trail", "trails", "load", "open", "continue",
       "polygon", "reset", "seed", "echo", "perf" },
   -- words that carry none ("please", "uh"): skipped before a callsign or condition
+  -- (the particles of Singapore and Malaysian English: "ok lah", "can lah", "like that lor")
   fillers = { "ah", "uh", "um", "er", "eh", "oh", "the", "a", "an", "please", "pls", "okay", "ok", "yeah", "so",
-      "and", "now", },
+      "and", "now", "lah", "leh", "lor", },
   -- Every word accounted for (docs/translator_trust.md): a request becomes commands only when each of its
   -- words is part of a callsign, place, type or value the parse read, an instruction word (the rules' words
   -- and this file's lists), or a word of one of these classes; any other word is a leftover, asked about by
@@ -195,7 +196,10 @@ return {
         -- Japanese, Korean and Chinese, romanised
         "arigato", "arigatou", "konnichiwa", "ohayo", "ohayou", "gozaimasu", "onegaishimasu", "sayonara",
         "sumimasen", "kamsahamnida", "gamsahamnida", "annyeong", "annyeonghaseyo", "annyonghaseyo", "xiexie",
-        "nihao", "zaijian" },
+        "nihao", "zaijian",
+        -- Thai, Malay, Indonesian and Filipino, romanised ("sawasdee khrap", "terima kasih", "salamat")
+        "sawasdee", "sawatdee", "sawadee", "khrap", "krap", "khob", "khun", "terima", "kasih", "selamat", "pagi",
+        "salamat", "maraming" },
     -- phrases of courtesy that hold a word which means something elsewhere ("when", "if"):
     -- explained whole
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
@@ -540,14 +544,15 @@ return {
   -- (radiotelephony's "FL260, I say again 260" repeats the value: read as a correction, it keeps it)
   -- (typed: "210 hmm no 200")
   self_correction = { words = { "oh", "no", "wait", "sorry", "actually", "make", "that", "i", "mean", "uh", "um", "er",
-                                "say", "again", "scratch", "corr", "hmm", "typo" },
+                                "say", "again", "scratch", "corr", "hmm", "typo", "never", "mind", "nevermind", "forget" },
                       markers = { "no", "wait", "sorry", "actually", "make that", "mean", "say again", "scratch",
-                                  "corr" },
+                                  "corr", "never mind", "nevermind", "forget that" },
                       -- the markers that, closing the request, take back what came before with nothing said
                       -- in its place ("turn left 20, sorry": asked); "I mean" closing it points back at what
                       -- it follows ("the Wideroe, I mean"), "actually" closing it is "in fact" ("going to
                       -- Valencia actually"), "from scratch" is no correction
-                      closing = { "no", "wait", "sorry", "make that", "say again", "corr" },
+                      closing = { "no", "wait", "sorry", "make that", "say again", "corr", "never mind", "nevermind",
+                                  "forget that" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
@@ -1033,7 +1038,8 @@ return {
   -- A heard form is that word ONLY where the word is expected: `before` (the
   -- next word is one of these; "#number" any number, digits or number words),
   -- `after` (the word before it is one of these), or `between` (both: after
-  -- one of between[1] and before one of between[2]). Anywhere else it stays
+  -- one of between[1] and before one of between[2]); never after a word of
+  -- `not_after` (a name the heard form ends: "red cap 712" is AirAsia). Anywhere else it stays
   -- what it is ("write the heading down", "head into the wind", "the send
   -- button", "climb two four thousand").
   heard_as = {
@@ -1050,7 +1056,7 @@ return {
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
     -- Spanish and French phraseology before its value, read the same way ("rumbo dos cero cero", "descienda
     -- nivel de vuelo tres uno cero", "cap 270", "montez niveau 350")
-    { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" } },
+    { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" }, not_after = { "red" } },
     { heard = { "nivel de vuelo", "nivel", "niveau" }, means = "flight level", before = { "#number" } },
     { heard = { "velocidad", "vitesse" }, means = "speed", before = { "#number" } },
     { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a", "y", "fl" } },

@@ -1224,6 +1224,8 @@ return function(intent, rule, words)
     return q ~= nil and q.b == i + 1 and (q.kind == "mach" or (q.kind == "plain" and q.value >= 0.4 and q.value < 1))
   end }
   rule { "origin departed departing orig", "orig" }
+  -- "set departure airport EDDL", "CFG7TK departure aerodrome EDDF": the airport it departed named
+  rule { "departure", "orig", next = "airport aerodrome airfield" }
   -- "make WJA3101 come from victoria, CYYJ", "it came from CYHU": an airport's code (four letters) said
   -- after "from", within four words, is where the aircraft comes from ("coming from the north" is none)
   rule { "come comes coming came", "orig", next = "from", when = function(g, i)
@@ -1587,6 +1589,11 @@ return function(intent, rule, words)
   end }
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
+  -- "resume run", "continue the run": the run (the simulation's) taken up again, said alone or as a clause of its own
+  rule { "resume continue unpause", "op", when = function(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    return g:word(k, "run") and (g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
+  end }
   rule { "go", "op", next = "again" }  -- "and go again"
   -- "kick off the episode", "kick off the sim": the run started, said of the simulation
   rule { "kick", "op", next = "off", near = { 3, "@sim" } }
@@ -1869,6 +1876,15 @@ return function(intent, rule, words)
   -- screen": quoted text for the log or the screen
   rule { "write put add enter show display", "echo", when = function(g, i)
     return g.t[i + 1] ~= nil and g.t[i + 1].kind == "quoted" and g:word_in(i + 2, math.min(#g.t + 1, i + 6), "log screen scope")
+  end }
+
+  -- "write on the screen: exercise starts now", "show in the log: run 2 done": the text after the colon, for the
+  -- screen or the log named between the verb and the colon
+  rule { "write put show display", "echo", when = function(g, i)
+    for k = i + 1, math.min(#g.t - 1, i + 5) do
+      if g.t[k].kind == "punct" then return g.t[k].text == ":" and g:word_in(i + 1, k, "log screen scope console") end
+    end
+    return false
   end }
 
   -- conflict detection and resolution

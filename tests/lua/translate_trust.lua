@@ -7972,3 +7972,131 @@ do
   check_eq(ex("create DLH5 a b 738 at 50.0 8.0 heading 090 FL200 250 knots"), "CRE DLH5 B738 50 8 90 FL200 250")
   asked(ex("create RPA13 an e 555 at 41.0 -87.0 heading 090 9000 feet 240 knots"), "no type is E555")
 end
+
+-- Cycle 43 (k9192): the run taken up again ("resume run", "continue the run") is OP, said alone or as a clause
+-- of its own; "resume run" after a callsign is no clock started
+do
+  local _, ex = scene({ "CRE SIA22 A359 1.3 103.9 090 FL310 290" })
+  check_eq(ex("resume run"), "OP")
+  check_eq(ex("ok, continue the run please"), "OP")
+  check_eq(ex("SIA22 turn left heading 050, then resume the run"), "HDG SIA22 50 LEFT ; OP")
+  asked(ex("SIA22 resume run"), "a callsign before 'resume run'")
+end
+
+-- Cycle 43 (k9192): the discourse particles of Singapore and Malaysian English ("ok lah", "can lah") carry no
+-- instruction, and the courtesy of Thai, Malay and Filipino controllers ("terima kasih", "sawasdee khrap") is
+-- courtesy; a word that is neither is still asked about
+do
+  local _, ex = scene({ "CRE SIA22 A359 1.3 103.9 090 FL310 290" })
+  check_eq(ex("SIA22 ok lah, descend FL250"), "ALT SIA22 FL250")
+  check_eq(ex("SIA22 turn right heading 140 can lah"), "HDG SIA22 140 RIGHT")
+  check_eq(ex("SIA22 sawasdee khrap, climb FL330, terima kasih"), "ALT SIA22 FL330")
+  asked(ex("SIA22 ok lah, descend FL250 mampu"), "an unknown word after the particle")
+end
+
+-- Cycle 43 (k9192): text for the screen or the log said after a colon ("write on the screen: ...", "show on the
+-- scope: ...") is ECHO of that text; a colon with no screen or log named before it is no ECHO
+do
+  local _, ex = scene({ "CRE SIA22 A359 1.3 103.9 090 FL310 290" })
+  check_eq(ex("write on the screen: second block begins"), "ECHO second block begins")
+  check_eq(ex("please show in the log: SIA22 handed over"), "ECHO SIA22 handed over")
+  asked(ex("write this down: second block"), "no screen or log named")
+end
+
+-- Cycle 43 (k9192): "departure airport" / "departure aerodrome" with an airport named is the origin (ORIG);
+-- with no airport, or no aircraft of several, it is asked
+do
+  local _, ex = scene({ "CRE SIA22 A359 1.3 103.9 090 FL310 290", "CRE MAS7 B738 2.7 101.7 180 FL200 270" })
+  check_eq(ex("SIA22 set departure airport WSSS"), "ORIG SIA22 WSSS")
+  check_eq(ex("make the departure aerodrome of SIA22 WMKK"), "ORIG SIA22 WMKK")
+  asked(ex("set departure airport WSSS"), "no aircraft named")
+  asked(ex("SIA22 set departure airport"), "no airport named")
+end
+
+-- Cycle 43 (k9192): "cap" before a number is French for heading, but not after "red": "Red Cap" is AirAsia's
+-- telephony ("delete the red cap 712", "remove red cap 6015"); a "cap" of its own before a number is still heading
+do
+  local _, ex = scene({ "CRE AXM712 A320 2.3 101.4 040 FL130 260", "CRE AXM6015 A320 3.6 101.5 170 FL200 290" })
+  check_eq(ex("delete the red cap 712"), "DEL AXM712")
+  check_eq(ex("red cap 712 climb FL200, then remove red cap 6015"), "ALT AXM712 FL200 ; DEL AXM6015")
+  check_eq(ex("red cap 6015 cap 090"), "HDG AXM6015 90")
+  asked(ex("red cap 712 turn red cap 090"), "a heading said as the airline")
+end
+
+-- Cycle 43 (k9192): "be over FIX at ALT" / "be overhead FIX FL070" is the crossing constraint there (AT ... ALT),
+-- as "be at FIX at ALT" is; "be over FIX" with no value, or with a verb after it, is still asked
+do
+  local _, ex = scene({ "DEFWPT TOLAK 47.6 9.3", "DEFWPT MEROS 47.4 9.0", "CRE SWR7 A20N 47.8 9.6 240 FL110 250",
+    "ADDWPT SWR7 TOLAK", "ADDWPT SWR7 MEROS" })
+  check_eq(ex("SWR7 be over TOLAK at 9000 feet"), "AT SWR7 TOLAK ALT 9000")
+  check_eq(ex("SWR7 please be overhead MEROS at FL070 and 210 knots"), "AT SWR7 MEROS ALT FL70 ; AT SWR7 MEROS SPD 210")
+  asked(ex("SWR7 be over TOLAK"), "no value to meet there")
+  asked(ex("SWR7 be over TOLAK and descend"), "a verb with no value")
+end
+
+-- Cycle 43 (k9192): a value said again "exactly" after a self-correction ("at or below FL090, sorry make it
+-- exactly FL090") replaces the value and takes back the bound said before it; a new value with no "exactly" after
+-- a bound still leaves the bound to confirm
+do
+  local _, ex = scene({ "DEFWPT PAKSE 14.0 100.5", "CRE THA9 A359 13.9 100.9 230 FL150 280", "ADDWPT THA9 PAKSE" })
+  check_eq(ex("THA9 cross PAKSE at or below FL120, sorry make it exactly FL120"), "AT THA9 PAKSE ALT FL120")
+  check_eq(ex("THA9 cross PAKSE at or above FL100, no wait, make it exactly FL110"), "AT THA9 PAKSE ALT FL110")
+  check_eq(ex("THA9 reduce speed 250, sorry make it exactly 240"), "SPD THA9 240")
+  asked(ex("THA9 cross PAKSE at or below FL120, sorry make it FL110"), "the bound not taken back")
+end
+
+-- Cycle 43 (k9192): a new aircraft's callsign said as a registration in capitals ("D-EABC", "DEABC") straight
+-- after or before its type, and a designator written as one word with the type named after "type" ("create
+-- BCS1 type B744"), are the callsign; a fix's name there, or no such word, is still asked
+do
+  local _, ex = scene({ "DEFWPT TOLAK 47.6 9.3" })
+  check_eq(ex("please create a Piper PA28 D-EFGH at 49.5 8.4, heading 090, 2500 ft, 95 knots"),
+    "CRE DEFGH PA28 49.5 8.4 90 2500 95")
+  check_eq(ex("create HB-KLM C172 at 47.5 8.5"), "CRE HBKLM C172 47.5 8.5")
+  check_eq(ex("create A20N1 type A388 at 47.0 8.0"), "CRE A20N1 A388 47 8")
+  asked(ex("create a C172 TOLAK at 49.9 8.6"), "a fix's name after the type")
+  asked(ex("create a C172 at 49.9 8.6"), "no callsign")
+end
+
+-- Cycle 43 (k9192): "never mind" after punctuation is a self-correction: what it follows is taken back and what
+-- is said after it stands ("direct KALOP... never mind, just heading 300"); closing the request it is asked
+do
+  local _, ex = scene({ "DEFWPT KALOP 13.9 100.7", "CRE NOK55 B738 13.6 101.1 290 FL180 290", "ADDWPT NOK55 KALOP" })
+  check_eq(ex("NOK55 direct KALOP... never mind, just heading 300"), "HDG NOK55 300")
+  check_eq(ex("NOK55 delete waypoint, never mind, turn left heading 250"), "HDG NOK55 250 LEFT")
+  check_eq(ex("NOK55 climb FL200, never mind, descend FL140"), "ALT NOK55 FL140")
+  asked(ex("NOK55 climb FL200, never mind"), "nothing after 'never mind'")
+  -- ("forget that", "nevermind" the same)
+  check_eq(ex("NOK55 climb FL200... forget that, just heading 300"), "HDG NOK55 300")
+  check_eq(ex("NOK55 turn left heading 200, nevermind, 210"), "HDG NOK55 210 LEFT")
+  asked(ex("NOK55 climb FL200, forget that"), "nothing after 'forget that'")
+end
+
+-- Cycle 43 (k9192): a speed condition said by its noun ("when reaching speed 250", "when DLH4AB reaches speed 250,")
+-- is ATSPD, as "when reaching 250 knots" is; the condition with no instruction after it is still asked
+do
+  local _, ex = scene({ "CRE AUA31 A320 48.1 16.5 270 FL240 280" })
+  check_eq(ex("AUA31 when reaching speed 260 descend flight level 180"), "ATSPD AUA31 260 ALT AUA31 FL180")
+  check_eq(ex("when AUA31 reaches speed 260, turn right heading 300"), "ATSPD AUA31 260 HDG AUA31 300 RIGHT")
+  asked(ex("AUA31 when reaching speed 260"), "no instruction after the condition")
+end
+
+-- Cycle 43 (k9192): "after FIX direct WPT" with waypoints of the route between the two is asked by name (the
+-- shortcut flown from FIX, or the waypoints between deleted?); to the next waypoint it is AT ... DO DIRECT
+do
+  local _, ex = scene({ "DEFWPT KOTAB 3.3 101.9", "DEFWPT SIBEK 3.2 101.7", "DEFWPT RAWAN 3.1 101.5",
+    "CRE MAS88 B738 3.5 102.1 200 FL160 280", "ADDWPT MAS88 KOTAB", "ADDWPT MAS88 SIBEK", "ADDWPT MAS88 RAWAN" })
+  check_eq(ex("MAS88 after KOTAB direct RAWAN"), "ASK Should MAS88 fly direct RAWAN once past KOTAB, leaving out SIBEK "
+    .. "of its route (AT MAS88 KOTAB DO DIRECT MAS88 RAWAN), or delete SIBEK from the route?")
+  check_eq(ex("MAS88 after KOTAB direct SIBEK"), "AT MAS88 KOTAB DO DIRECT MAS88 SIBEK")
+end
+
+-- Cycle 43 (k9192): "cancel FIX" said with a direct-to past FIX on the route ("direct LEMON now, cancel GRANT") is
+-- what the direct-to does; a waypoint after the direct-to's is still asked
+do
+  local _, ex = scene({ "DEFWPT TAPAK 14.0 100.8", "DEFWPT LUMOT 14.1 100.6", "CRE THA5 A359 13.9 100.9 230 FL150 280",
+    "ADDWPT THA5 TAPAK", "ADDWPT THA5 LUMOT" })
+  check_eq(ex("THA5 direct to LUMOT now, cancel TAPAK"), "DIRECT THA5 LUMOT")
+  check_eq(ex("THA5 direct LUMOT, cancel TAPAK and descend FL100"), "DIRECT THA5 LUMOT ; ALT THA5 FL100")
+  asked(ex("THA5 direct TAPAK, cancel LUMOT"), "a waypoint after the direct-to's")
+end
