@@ -1220,8 +1220,18 @@ return function(H, f, compass)
       end
       -- (the name lexicon.city_airports gives is the city's one large airport's: "Bogota" is SKBO "ELDORADO
       -- INTL", not the medium SVED "EL DORADO" in Venezuela)
+      -- (anywhere, a name is also its city's: the large airports whose names start with it are candidates
+      -- beside the airports of that name, "Phoenix" is ZJSY "PHOENIX INTL" or KPHX "PHOENIX SKY HARBOR INTL",
+      -- asked)
       local function said(phrase, ...)
         local ids = kept(list(phrase, ...))
+        if not near and city and list == named and #ids > 0 then
+          local known = {}
+          for _, id in ipairs(ids) do known[id] = true end
+          for _, id in ipairs(kept(city(phrase))) do
+            if not known[id] then ids[#ids + 1] = id end
+          end
+        end
         if #ids == 0 and L.city_airports[phrase] then
           ids = kept(list(L.city_airports[phrase], ...))
           local large = {}

@@ -7746,3 +7746,21 @@ do
   check_eq(ex("RPA61 drop in altitude to FL160"), "ALT RPA61 FL160")
   check(not ex("drop in a few more aircraft"):match("^CRE"), "no new aircraft named")
 end
+
+-- Cycle 43 (cpp43): a place name said with no traffic to place it near is also its city's: the large airports
+-- whose names start with it are candidates beside the airports of that name, several asked ("Phoenix": ZJSY
+-- "PHOENIX INTL" or KPHX "PHOENIX SKY HARBOR INTL"); a name one airport bears, or traffic beside one, decides
+do
+  local _, ex = navscene({}, "a city's airports anywhere")
+  if ex then
+    local q = ex("wind from 250 at 20 knots over Phoenix")
+    check(q:find("ZJSY", 1, true) ~= nil and q:find("KPHX", 1, true) ~= nil, q)
+    asked(ex("create AAL7 A320 at Phoenix heading 090 FL100 250 knots"), "two airports of the name")
+    check_eq(ex("wind from 250 at 20 knots at Phoenix Sky Harbor"), "WIND KPHX 250 20")
+    check_eq(ex("wind from 250 at 20 knots at Denver"), "WIND KDEN 250 20")
+  end
+  local _, near = navscene({ "CRE AAL1 A320 33.5 -112.2 090 FL100 250" }, "a city's airport near the traffic")
+  if near then
+    check_eq(near("create AAL7 A320 at Phoenix heading 090 FL100 250 knots"), "CRE AAL7 A320 KPHX 90 FL100 250")
+  end
+end
