@@ -322,6 +322,13 @@ return function(H, f, compass)
           if whole == false then return end
           if named_at == nil and not whole then
             named_at = (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+            -- (a code a navaid bears that, after one letter, names an airport standing off it, farther than
+            -- lexicon.on_airport_nm, is two places: "at LAX" is asked, "at LAX airport" is the airport; a navaid
+            -- on its airport, "at JFK", is one place, the airport)
+            if named_at ~= r.name and not self:word(r.e, "@airport_nouns") and self:off_airport(r.name, named_at, near) then
+              return self:need(string.format("Which place is meant: the %s navaid or the %s airport?",
+                r.name:upper(), named_at))
+            end
             -- (said as its name, "over Lambourne", or typed as the ident, "over LAM")
             named_at = self:creation_place(named_at, self.t[r.b].raw:upper() ~= r.name:upper() and self:raw(r.b, r.e))
             if not named_at then return end
@@ -1585,6 +1592,18 @@ return function(H, f, compass)
       if w:upper() == name:upper() then return name end  -- a user waypoint of that name
     end
     return self:one_named(coded(name, a.lat, a.lon), "airport", name, 4) or name
+  end
+
+  -- True when the navaid `code` nearest `near` {lat, lon} [deg] stands farther than lexicon.on_airport_nm from
+  -- the airport `airport` (the two are two places to put an aircraft, not one).
+  function m:off_airport(code, airport, near)
+    local locate = self.world.locate
+    if not locate then return false end
+    local lat, lon = locate(code, nil, near.lat, near.lon)
+    local alat, alon = locate(airport)
+    if not (lat and alat) then return false end
+    return math.abs(alat - lat) * 60 + math.abs((alon - lon + 180) % 360 - 180) * 60 * math.cos(math.rad(lat))
+      > L.on_airport_nm
   end
 
   -- A name said after "direct (to)" that matches nothing known: the word as

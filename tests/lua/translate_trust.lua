@@ -7764,3 +7764,17 @@ do
     check_eq(near("create AAL7 A320 at Phoenix heading 090 FL100 250 knots"), "CRE AAL7 A320 KPHX 90 FL100 250")
   end
 end
+
+-- Cycle 43 (cpp43): an aircraft created "at CODE", a code a navaid bears that after one letter names an airport
+-- standing off it (farther than lexicon.on_airport_nm: the LAX VORTAC and KLAX), is two places, asked; "airport"
+-- or the navaid's kind said decides; a navaid on its airport ("at JFK") is one place, the airport
+do
+  local _, ex = navscene({}, "a navaid's code and its airport")
+  if ex then
+    local q = ex("put in AAL8, a B738, at LAX, heading 250, FL100, 250 knots")
+    check(q:find("^ASK") ~= nil and q:find("KLAX", 1, true) ~= nil, q)
+    check_eq(ex("put in AAL8, a B738, at LAX airport, heading 250, FL100, 250 knots"), "CRE AAL8 B738 KLAX 250 FL100 250")
+    check_eq(ex("put in AAL8, a B738, at the LAX VOR, heading 250, FL100, 250 knots"), "CRE AAL8 B738 LAX 250 FL100 250")
+    check_eq(ex("put in AAL8, a B738, at JFK, heading 250, FL100, 250 knots"), "CRE AAL8 B738 KJFK 250 FL100 250")
+  end
+end
