@@ -2776,24 +2776,17 @@ return function(H, f, compass)
     return nil
   end
 
-  -- "two and a half minutes", "an hour and a half", "1 and a half hours": [s] and the tokens' end, or nil
+  -- "an hour and a half", "two minutes and a half": [s] and the tokens' end, or nil ("two and a half minutes" is
+  -- a time the quantities read whole, 150 s)
   local UNIT_S = { second = 1, seconds = 1, sec = 1, secs = 1, minute = 60, minutes = 60, min = 60, mins = 60,
                    hour = 3600, hours = 3600 }
   local function and_a_half(self, b, e)
-    local function count(k)
-      if self:word(k, "a an") then return 1 end
-      local q = self:quantities(k, k + 1)[1]
-      return q and q.e == k + 1 and q.kind == "plain" and q.value or nil
-    end
-    for k = b, e - 1 do
-      local n = count(k)
-      if n and self:word(k + 1, "and") and self:word(k + 2, "a") and self:word(k + 3, "half")
-          and UNIT_S[(self.t[k + 4] or {}).text or ""] then
-        return (n + 0.5) * UNIT_S[self.t[k + 4].text], k + 5
-      end
-      if n and UNIT_S[(self.t[k + 1] or {}).text or ""] and self:word(k + 2, "and") and self:word(k + 3, "a")
-          and self:word(k + 4, "half") then
-        return (n + 0.5) * UNIT_S[self.t[k + 1].text], k + 5
+    for k = b, e - 2 do
+      local unit = UNIT_S[self.t[k + 1].text]
+      local q = unit and not self:word(k, "a an") and self:quantities(k, k + 2)[1]
+      local said = self:word(k, "a an") and unit or (q and q.b == k and q.e == k + 2 and q.kind == "time" and q.value)
+      if said and self:word(k + 2, "and") and self:word(k + 3, "a") and self:word(k + 4, "half") then
+        return said + unit / 2, k + 5
       end
     end
     return nil

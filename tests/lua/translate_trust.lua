@@ -7778,3 +7778,17 @@ do
     check_eq(ex("put in AAL8, a B738, at JFK, heading 250, FL100, 250 knots"), "CRE AAL8 B738 KJFK 250 FL100 250")
   end
 end
+
+-- Cycle 43 (cpp43): a fraction after a whole number ("two and a half", "one and a half thousand", "five and a
+-- quarter") is read with it; after a multiplier, a flight level or a heading it is no value's and is asked
+do
+  local _, ex = scene({ "CRE SWA40 B737 36.0 -115.0 090 FL80 250" })
+  check_eq(ex("make the protected zone radius four and a half nautical miles"), "ZONER 4.5")
+  check_eq(ex("zone radius 3 and a quarter nm"), "ZONER 3.25")
+  check_eq(ex("set the separation radius to six and a quarter miles"), "ZONER 6.25")
+  check_eq(ex("SWA40 descend to two and a half thousand feet"), "ALT SWA40 2500")
+  check_eq(ex("jump ahead four minutes and a half"), "FF 270")
+  check_eq(ex("jump ahead four and a half minutes"), "FF 270")
+  asked(ex("SWA40 climb to six thousand and a half"), "a fraction after thousand")
+  asked(ex("SWA40 climb to FL120 and a half"), "a flight level has no fraction")
+end
