@@ -1227,12 +1227,12 @@ return function(H, f, compass)
       end
       -- (the name lexicon.city_airports gives is the city's one large airport's: "Bogota" is SKBO "ELDORADO
       -- INTL", not the medium SVED "EL DORADO" in Venezuela)
-      -- (anywhere, a name is also its city's: the large airports whose names start with it are candidates
+      -- (with no traffic, a name is also its city's: the large airports whose names start with it are candidates
       -- beside the airports of that name, "Phoenix" is ZJSY "PHOENIX INTL" or KPHX "PHOENIX SKY HARBOR INTL",
-      -- asked)
+      -- asked; not a name said after its city, "Beijing Capital airport", m:airport_named_in)
       local function said(phrase, ...)
         local ids = kept(list(phrase, ...))
-        if not near and city and list == named and #ids > 0 then
+        if not near and #self.fleet == 0 and city and list == named and #ids > 0 and not self.name_after_city then
           local known = {}
           for _, id in ipairs(ids) do known[id] = true end
           for _, id in ipairs(kept(city(phrase))) do
@@ -1465,9 +1465,12 @@ return function(H, f, compass)
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
           -- ("Eelde VOR", "the VOR Bogota" in the Spanish order, is the navaid, not the airport that bears its name)
+          -- (self.name_after_city: a capitalised word, its city, said before the phrase; m:airport_by_name)
+          self.name_after_city = proper(i - 1)
           local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")
               or self:word(i - 1, "@navaid_kinds")) and {}
             or named(phrase)
+          self.name_after_city = nil
           -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the only large or medium airport
           -- of the name near the aircraft, when the two words together name none)
           local cls = self.world.airport_class
