@@ -73,6 +73,45 @@ bool position_after_to(const std::vector<Token>& t, size_t i) {
          std::strtod(digits.c_str(), nullptr) <= limit;
 }
 
+// The fraction "and a half" / "and one half" (0.5), "and a quarter" / "and one quarter" (0.25) or
+// "and three quarters" (0.75) said at i, with `end` set one past it; 0 when none is said there.
+double and_fraction(const std::vector<Token>& t, size_t i, size_t& end) {
+  if (!is_word(t, i, "and")) return 0.0;
+  double f = 0.0;
+  if (is_word(t, i + 1, "a") || is_word(t, i + 1, "one")) {
+    f = is_word(t, i + 2, "half") ? 0.5 : is_word(t, i + 2, "quarter") ? 0.25 : 0.0;
+  } else if (is_word(t, i + 1, "three") && is_word(t, i + 2, "quarters")) {
+    f = 0.75;
+  }
+  if (f > 0.0) end = i + 3;
+  return f;
+}
+
+// A whole number `n` read up to j, with no multiplier said, followed by a fraction ("two and a
+// half", "one and a half thousand" = 1500, "two and a quarter hundred"): adds the fraction and the
+// multiplier after it to n and moves j past them. A number said as a flight level, a heading, a
+// Mach number or a code ("FL100 and a half") takes none: no such value has a fraction.
+void add_fraction(const std::vector<Token>& t, SpokenNumber& n, size_t& j) {
+  static const std::array<const char*, 8> kWhole = {"fl",   "level",  "heading", "hdg",
+                                                    "mach", "squawk", "code",    "flight"};
+  for (const char* w : kWhole)
+    if (n.begin > 0 && is_word(t, n.begin - 1, w)) return;
+  size_t k = j;
+  const double f = n.has_thousand || n.has_hundred || n.has_decimal ? 0.0 : and_fraction(t, j, k);
+  if (f == 0.0) return;
+  n.value += f;
+  if (is_word(t, k, "thousand")) {
+    n.value *= 1000.0;
+    n.has_thousand = true;
+    ++k;
+  } else if (is_word(t, k, "hundred")) {
+    n.value *= 100.0;
+    n.has_hundred = true;
+    ++k;
+  }
+  j = k;
+}
+
 double value_of(const std::string& digits) { return digits.empty() ? 0.0 : std::strtod(digits.c_str(), nullptr); }
 
 // Digits after "point"/"decimal" starting at i; advances i.
@@ -191,6 +230,7 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
     n.has_decimal = t[i].spelled;
     n.groups = 1;
     size_t j = i + 1;
+    add_fraction(t, n, j);
     if (is_word(t, j, "thousand")) {
       n.value *= 1000.0;
       n.has_thousand = true;
@@ -291,6 +331,7 @@ std::optional<SpokenNumber> read_number(const std::vector<Token>& t, size_t i) {
   }
   if (!any) return std::nullopt;
   n.value = acc + value_of(cur);
+  add_fraction(t, n, j);
   n.end = j;
   return n;
 }

@@ -11,7 +11,11 @@
 //    thousand two five zero", "seven thousand two twenty": 11000, 7000;
 //    "four thousand five hundred" is one number);
 //  - a decimal part after "point" / "decimal" ("point seven eight" = 0.78),
-//    unless "thousand"/"hundred" follows (speech errors for "descend").
+//    unless "thousand"/"hundred" follows (speech errors for "descend");
+//  - a fraction after a whole number said with no multiplier, and a multiplier
+//    after the fraction ("two and a half" = 2.5, "2 and a quarter" = 2.25,
+//    "one and three quarters", "one and a half thousand" = 1500); none is read
+//    after "hundred"/"thousand" ("four thousand and a half" ends at 4000).
 // `digits` is the concatenation of the spoken groups with multipliers left
 // out ("fifty one twenty" -> "5120"), which is how callsign digits are read.
 // Returns nullopt when no number starts at i.

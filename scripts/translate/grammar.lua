@@ -914,8 +914,11 @@ local function written_forms(text)
   text = text:gsub("%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
     if lexicon.fraction_units[unit:lower()] then return "0.5 nm" end
   end)
-  text = text:gsub("%f[%a][Aa]%s+([Qq]uarter)%s+o?f?%s*a?%s*(%a+)", function(_, unit)
-    if lexicon.fraction_units[unit:lower()] then return "0.25 nm" end
+  -- (not after a whole number and "and": "two and a quarter miles" is the number 2.25 and its unit)
+  text = text:gsub("()%f[%a][Aa]%s+([Qq]uarter)%s+o?f?%s*a?%s*(%a+)", function(at, _, unit)
+    if lexicon.fraction_units[unit:lower()] and not text:sub(1, at - 1):match("%f[%a][Aa][Nn][Dd]%s+$") then
+      return "0.25 nm"
+    end
   end)
   -- "descend 8 500 m", "12 000 ft": a number with a space between its thousands and its last three digits,
   -- typed with its unit straight after, is one number
@@ -4585,10 +4588,14 @@ function G:unaccounted()
       return
     end
   end
+  -- ("climb to four thousand and a half": a fraction said after "and" that no value read is asked, never dropped)
+  local function fraction_left(i)
+    return self:word(i, "half quarter quarters") and self:word(i - 1, "a one three") and self:word(i - 2, "and")
+  end
   for i, t in ipairs(self.t) do
     if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text) or airline_left(i)) then
+        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text) or airline_left(i) or fraction_left(i)) then
       said[#said + 1] = i
     end
   end

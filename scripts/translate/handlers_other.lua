@@ -359,6 +359,13 @@ return function(H, f, compass)
           if whole == false then return end
           if named_at == nil and not whole then
             named_at = (self:word(r.b - 1, "at") and self:airport_meant(r.name, near)) or r.name
+            -- (a code a navaid bears that, after one letter, names an airport standing off it, farther than
+            -- lexicon.on_airport_nm, is two places: "at LAX" is asked, "at LAX airport" is the airport; a navaid
+            -- on its airport, "at JFK", is one place, the airport)
+            if named_at ~= r.name and not self:word(r.e, "@airport_nouns") and self:off_airport(r.name, named_at, near) then
+              return self:need(string.format("Which place is meant: the %s navaid or the %s airport?",
+                r.name:upper(), named_at))
+            end
             -- (said as its name, "over Lambourne", or typed as the ident, "over LAM")
             named_at = self:creation_place(named_at, self.t[r.b].raw:upper() ~= r.name:upper() and self:raw(r.b, r.e))
             if not named_at then return end
@@ -1257,8 +1264,18 @@ return function(H, f, compass)
       end
       -- (the name lexicon.city_airports gives is the city's one large airport's: "Bogota" is SKBO "ELDORADO
       -- INTL", not the medium SVED "EL DORADO" in Venezuela)
+      -- (with no traffic, a name is also its city's: the large airports whose names start with it are candidates
+      -- beside the airports of that name, "Phoenix" is ZJSY "PHOENIX INTL" or KPHX "PHOENIX SKY HARBOR INTL",
+      -- asked; not a name said after its city, "Beijing Capital airport", m:airport_named_in)
       local function said(phrase, ...)
         local ids = kept(list(phrase, ...))
+        if not near and #self.fleet == 0 and city and list == named and #ids > 0 and not self.name_after_city then
+          local known = {}
+          for _, id in ipairs(ids) do known[id] = true end
+          for _, id in ipairs(kept(city(phrase))) do
+            if not known[id] then ids[#ids + 1] = id end
+          end
+        end
         if #ids == 0 and L.city_airports[phrase] then
           ids = kept(list(L.city_airports[phrase], ...))
           local large = {}
@@ -1485,9 +1502,12 @@ return function(H, f, compass)
           local phrase, after = p[1], p[2]
           local city = self:word(after, "@airport_nouns")
           -- ("Eelde VOR", "the VOR Bogota" in the Spanish order, is the navaid, not the airport that bears its name)
+          -- (self.name_after_city: a capitalised word, its city, said before the phrase; m:airport_by_name)
+          self.name_after_city = proper(i - 1)
           local ids = ((proper(i - 1) and not city) or proper(after) or self:word(after, "@navaid_kinds")
               or self:word(i - 1, "@navaid_kinds")) and {}
             or named(phrase)
+          self.name_after_city = nil
           -- ("Amsterdam Schiphol", "Groningen Eelde": the city before the only large or medium airport
           -- of the name near the aircraft, when the two words together name none)
           local cls = self.world.airport_class
@@ -1618,6 +1638,18 @@ return function(H, f, compass)
       if w:upper() == name:upper() then return name end  -- a user waypoint of that name
     end
     return self:one_named(coded(name, a.lat, a.lon), "airport", name, 4) or name
+  end
+
+  -- True when the navaid `code` nearest `near` {lat, lon} [deg] stands farther than lexicon.on_airport_nm from
+  -- the airport `airport` (the two are two places to put an aircraft, not one).
+  function m:off_airport(code, airport, near)
+    local locate = self.world.locate
+    if not locate then return false end
+    local lat, lon = locate(code, nil, near.lat, near.lon)
+    local alat, alon = locate(airport)
+    if not (lat and alat) then return false end
+    return math.abs(alat - lat) * 60 + math.abs((alon - lon + 180) % 360 - 180) * 60 * math.cos(math.rad(lat))
+      > L.on_airport_nm
   end
 
   -- A name said after "direct (to)" that matches nothing known: the word as
@@ -2806,24 +2838,17 @@ return function(H, f, compass)
     return nil
   end
 
-  -- "two and a half minutes", "an hour and a half", "1 and a half hours": [s] and the tokens' end, or nil
+  -- "an hour and a half", "two minutes and a half": [s] and the tokens' end, or nil ("two and a half minutes" is
+  -- a time the quantities read whole, 150 s)
   local UNIT_S = { second = 1, seconds = 1, sec = 1, secs = 1, minute = 60, minutes = 60, min = 60, mins = 60,
                    hour = 3600, hours = 3600 }
   local function and_a_half(self, b, e)
-    local function count(k)
-      if self:word(k, "a an") then return 1 end
-      local q = self:quantities(k, k + 1)[1]
-      return q and q.e == k + 1 and q.kind == "plain" and q.value or nil
-    end
-    for k = b, e - 1 do
-      local n = count(k)
-      if n and self:word(k + 1, "and") and self:word(k + 2, "a") and self:word(k + 3, "half")
-          and UNIT_S[(self.t[k + 4] or {}).text or ""] then
-        return (n + 0.5) * UNIT_S[self.t[k + 4].text], k + 5
-      end
-      if n and UNIT_S[(self.t[k + 1] or {}).text or ""] and self:word(k + 2, "and") and self:word(k + 3, "a")
-          and self:word(k + 4, "half") then
-        return (n + 0.5) * UNIT_S[self.t[k + 1].text], k + 5
+    for k = b, e - 2 do
+      local unit = UNIT_S[self.t[k + 1].text]
+      local q = unit and not self:word(k, "a an") and self:quantities(k, k + 2)[1]
+      local said = self:word(k, "a an") and unit or (q and q.b == k and q.e == k + 2 and q.kind == "time" and q.value)
+      if said and self:word(k + 2, "and") and self:word(k + 3, "a") and self:word(k + 4, "half") then
+        return said + unit / 2, k + 5
       end
     end
     return nil

@@ -8100,3 +8100,49 @@ do
   check_eq(ex("THA5 direct LUMOT, cancel TAPAK and descend FL100"), "DIRECT THA5 LUMOT ; ALT THA5 FL100")
   asked(ex("THA5 direct TAPAK, cancel LUMOT"), "a waypoint after the direct-to's")
 end
+
+-- Cycle 43 (cpp43): a place name said with no traffic to place it near is also its city's: the large airports
+-- whose names start with it are candidates beside the airports of that name, several asked ("Phoenix": ZJSY
+-- "PHOENIX INTL" or KPHX "PHOENIX SKY HARBOR INTL"); a name one airport bears, or traffic beside one, decides
+do
+  local _, ex = navscene({}, "a city's airports anywhere")
+  if ex then
+    local q = ex("wind from 250 at 20 knots over Phoenix")
+    check(q:find("ZJSY", 1, true) ~= nil and q:find("KPHX", 1, true) ~= nil, q)
+    asked(ex("create AAL7 A320 at Phoenix heading 090 FL100 250 knots"), "two airports of the name")
+    check_eq(ex("wind from 250 at 20 knots at Phoenix Sky Harbor"), "WIND KPHX 250 20")
+    check_eq(ex("wind from 250 at 20 knots at Denver"), "WIND KDEN 250 20")
+  end
+  local _, near = navscene({ "CRE AAL1 A320 33.5 -112.2 090 FL100 250" }, "a city's airport near the traffic")
+  if near then
+    check_eq(near("create AAL7 A320 at Phoenix heading 090 FL100 250 knots"), "CRE AAL7 A320 KPHX 90 FL100 250")
+  end
+end
+
+-- Cycle 43 (cpp43): an aircraft created "at CODE", a code a navaid bears that after one letter names an airport
+-- standing off it (farther than lexicon.on_airport_nm: the LAX VORTAC and KLAX), is two places, asked; "airport"
+-- or the navaid's kind said decides; a navaid on its airport ("at JFK") is one place, the airport
+do
+  local _, ex = navscene({}, "a navaid's code and its airport")
+  if ex then
+    local q = ex("put in AAL8, a B738, at LAX, heading 250, FL100, 250 knots")
+    check(q:find("^ASK") ~= nil and q:find("KLAX", 1, true) ~= nil, q)
+    check_eq(ex("put in AAL8, a B738, at LAX airport, heading 250, FL100, 250 knots"), "CRE AAL8 B738 KLAX 250 FL100 250")
+    check_eq(ex("put in AAL8, a B738, at the LAX VOR, heading 250, FL100, 250 knots"), "CRE AAL8 B738 LAX 250 FL100 250")
+    check_eq(ex("put in AAL8, a B738, at JFK, heading 250, FL100, 250 knots"), "CRE AAL8 B738 KJFK 250 FL100 250")
+  end
+end
+
+-- Cycle 43 (cpp43): a fraction after a whole number ("two and a half", "one and a half thousand", "five and a
+-- quarter") is read with it; after a multiplier, a flight level or a heading it is no value's and is asked
+do
+  local _, ex = scene({ "CRE SWA40 B737 36.0 -115.0 090 FL80 250" })
+  check_eq(ex("make the protected zone radius four and a half nautical miles"), "ZONER 4.5")
+  check_eq(ex("zone radius 3 and a quarter nm"), "ZONER 3.25")
+  check_eq(ex("set the separation radius to six and a quarter miles"), "ZONER 6.25")
+  check_eq(ex("SWA40 descend to two and a half thousand feet"), "ALT SWA40 2500")
+  check_eq(ex("jump ahead four minutes and a half"), "FF 270")
+  check_eq(ex("jump ahead four and a half minutes"), "FF 270")
+  asked(ex("SWA40 climb to six thousand and a half"), "a fraction after thousand")
+  asked(ex("SWA40 climb to FL120 and a half"), "a flight level has no fraction")
+end

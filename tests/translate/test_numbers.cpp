@@ -63,6 +63,28 @@ TEST_CASE("number words: decimals") {
   CHECK(n.value == 9);
 }
 
+TEST_CASE("number words: a fraction after a whole number, and a multiplier after it") {
+  CHECK(num("two and a half").value == 2.5);
+  CHECK(num("2 and a half").value == 2.5);
+  CHECK(num("three and a quarter").value == 3.25);
+  CHECK(num("one and three quarters").value == 1.75);
+  CHECK(num("four and one half").end == 4);
+  auto n = num("one and a half thousand feet");
+  CHECK(n.value == 1500);
+  CHECK(n.has_thousand);
+  CHECK(n.end == 5);
+  CHECK(num("7 and a half hundred").value == 750);
+  // none after a multiplier, and no fraction without its article
+  CHECK(num("four thousand and a half").value == 4000);
+  CHECK(num("four thousand and a half").end == 2);
+  CHECK(num("two and half").value == 2);
+  CHECK(qty("radius two and a half nm")[0].value == 2.5);
+  CHECK(qty("radius two and a half nm")[0].kind == QKind::kDist);
+  // a flight level or a heading has no fraction
+  CHECK(qty("FL100 and a half")[0].value == 10000);
+  CHECK(qty("heading two and a half")[0].value == 2);
+}
+
 TEST_CASE("lexer: glued units, ids, possessives, quotes, degrees") {
   auto t = lex("Climb AC01's altitude to 30k, FL250 and M.78 \"hello there\" 41,000 N52\xC2\xB0" "18.6'");
   std::vector<std::string> words;
