@@ -254,6 +254,21 @@ function m:acids(s)
     for _, id in ipairs(u and ids or {}) do  -- "BAW177 ..., Speedbird diverting": its own name again
       if id:upper():sub(1, #u.icao) == u.icao then u = nil break end
     end
+    -- ("Jazz, uh, JIA5301 descend ...": the airline said, then straight after it, commas and hesitations between,
+    -- a flying aircraft's exact callsign of that airline, or of another when none of the airline said flies: the
+    -- callsign said whole names the aircraft, the airline's name its false start)
+    for _, r in ipairs(u and self.refs or {}) do
+      if r.kind == "aircraft" and r.exists and r.b >= u.e and (r.name:upper():sub(1, #u.icao) == u.icao
+          or #self:airline_fleet(u.icao) == 0) then
+        local k = u.e
+        while k < r.b and (self.t[k].kind == "punct" or self:word(k, "@hesitations")) do k = k + 1 end
+        if k == r.b and k > u.e then
+          self:explain(u.b, u.e)
+          u = nil
+        end
+        break
+      end
+    end
     local later = false  -- an aircraft named after the instruction ("turn left 090, EZY45")
     for _, r in ipairs(self.refs) do later = later or (r.kind == "aircraft" and r.b >= s.e and not self:in_reason(r.b)) end
     if u and (#ids > 0 or self.subject or later) then

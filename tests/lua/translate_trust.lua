@@ -7746,3 +7746,44 @@ do
   check_eq(ex("RPA61 drop in altitude to FL160"), "ALT RPA61 FL160")
   check(not ex("drop in a few more aircraft"):match("^CRE"), "no new aircraft named")
 end
+
+-- Cycle 43 (k90): "nav" is navigation's short word after "put ... back on its own" (LNAV ON, no move);
+-- "put X back at" a position is still the move, "put X back on nav" with no "own" still asked
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA" })
+  check_eq(ex("ok now I'll put FFT88 back on its own nav"), "LNAV FFT88 ON")
+  check_eq(ex("put Frontier 88 back on its own nav, LNAV on"), "LNAV FFT88 ON")
+  check_eq(ex("put FFT88 back at 40.2 -100.2"), "MOVE FFT88 40.2 -100.2")
+  asked(ex("put FFT88 back on nav"), "no 'own' before 'nav'")
+end
+
+-- Cycle 43 (k90): "stop it / everything for a moment" with no aircraft named pauses the run (HOLD); with an
+-- aircraft named, or with no while said, it is asked
+do
+  local _, ex = scene({ "CRE FFT88 A20N 40.5 -100.5 090 FL280 270" })
+  check_eq(ex("ok stop it for a second, I want to explain the picture"), "HOLD")
+  check_eq(ex("stop everything for a minute"), "HOLD")
+  asked(ex("FFT88 stop it for a moment"), "an aircraft named")
+  asked(ex("stop it"), "no while said")
+end
+
+-- Cycle 43 (k90): the run resumed, said in the passive of the simulation named before it ("the exercise can be
+-- resumed from where it stopped") starts the clock (OP); the passive of an aircraft's route is no OP
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA" })
+  check_eq(ex("The exercise can now be resumed from where it was frozen."), "OP")
+  check_eq(ex("the simulation is to be resumed now"), "OP")
+  check(not ex("FFT88's route can be resumed now"):match("^OP"), "an aircraft's route resumed")
+end
+
+-- Cycle 43 (k90): an airline's name said, then straight after it (a comma, a hesitation) a flying aircraft's exact
+-- callsign ("Frontier, uh, FFT88 climb ..."), names that aircraft, also where the name is another airline's and none
+-- of that airline flies; with one of the named airline flying, or no comma between, it is still asked
+do
+  local _, ex = scene({ "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "CRE SKW3411 CRJ7 40.0 -101.0 270 FL300 280",
+    "CRE SKW3412 CRJ7 40.2 -101.2 270 FL320 280" })
+  check_eq(ex("Frontier, uh, FFT88 climb to FL320"), "ALT FFT88 FL320")
+  check_eq(ex("Alaska, um, SKW3411, descend to FL260"), "ALT SKW3411 FL260")
+  asked(ex("SkyWest, uh, FFT88 climb to FL320"), "a SkyWest aircraft flies")
+  asked(ex("Frontier FFT88 SKW3411 climb to FL320"), "nothing between the name and two callsigns")
+end
