@@ -212,6 +212,8 @@ return {
         "ha det", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "do svidaniya", "ni hao", "ma'a salama",
         "ma salama", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
+        -- a place asked about beside another ("where is DILUM in relation to the aircraft")
+        "in relation to", "with respect to", "with regard to",
         -- help offered with a value given twice ("... -- that's 50.7 / 16.2 in decimal if it helps")
         "if it helps", "if that helps", "in case it helps", "in case that helps",
         -- the pilot of an online network gone, the reason for removing the aircraft ("pilot dc'd")
@@ -999,6 +1001,15 @@ return {
                     perpignan = "rivesaltes", carcassonne = "salvaza" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
+  -- A city or airport named to describe an aircraft or airspace, no place instructed: said before one of
+  -- `before` ("a Charlotte arrival", "the Madrid TMA", "Barcelona ACC"), or after one of `after` said straight
+  -- after one of `leads` ("the arrival into Atlanta", "inbound to Lisbon", "bound for Vigo"); a place an aircraft
+  -- comes from ("inbound from Vigo") is no description here (it is asked)
+  described_places = {
+    before = { "arrival", "arrivals", "departures", "inbound", "inbounds", "outbound", "tma", "acc", "fir", "cta",
+        "uac", "sector", "airspace", "flow", "stream", "push", "bank" },
+    after = { "into", "for", "to" },
+    leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights" } },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
   -- the navdata types a kind said after a navaid's name means ("the Eelde VOR" is EEL, not the NDB SO)

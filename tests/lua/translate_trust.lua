@@ -7787,3 +7787,21 @@ do
   asked(ex("SkyWest, uh, FFT88 climb to FL320"), "a SkyWest aircraft flies")
   asked(ex("Frontier FFT88 SKW3411 climb to FL320"), "nothing between the name and two callsigns")
 end
+
+-- Cycle 43 (k90): a city or airport named to describe an aircraft or airspace ("a Munich arrival", "the arrival
+-- into Oslo", "the Lisbon TMA") is explained, no place instructed; a city said with no such word around it, or where
+-- the aircraft comes from ("inbound from ..."), is still asked; a place beside another "in relation to" it is framing
+do
+  local _, ex = scene({ "DEFWPT ROKKI 48.0 11.0", "CRE DLH4AX A321 48.3 11.3 200 FL210 280", "ADDWPT DLH4AX ROKKI" })
+  check_eq(ex("ok so here we have a Munich arrival, DLH4AX, bring him down to FL150"), "ALT DLH4AX FL150")
+  check_eq(ex("DLH4AX is on the arrival into Munich, have it cross ROKKI at FL120"), "AT DLH4AX ROKKI ALT FL120")
+  check_eq(ex("set the protected zone radius to 3 nm, as used in the Lisbon TMA"), "ZONER 3")
+  asked(ex("DLH4AX descend FL150 Munich"), "a city with no word of description")
+  asked(ex("DLH4AX inbound from Oslo, descend FL150"), "the place it comes from")
+  check_eq(ex("where is ROKKI in relation to the traffic? just its position please"), "POS ROKKI")
+  local _, nx = navscene({ "CRE AAL61 A321 35.6 -80.6 200 FL230 300" }, "a city by the navdata's airport names")
+  if nx then
+    check_eq(nx("this is a Charlotte arrival, American 61, descend to FL190"), "ALT AAL61 FL190")
+    asked(nx("American 61 descend to FL190 Charlotte"), "a city with no word of description")
+  end
+end
