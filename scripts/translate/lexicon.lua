@@ -256,6 +256,8 @@ return {
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
+        -- (aircraft set up together: "the second aircraft of the pair", "the other one of the encounter")
+        "pair", "pairs", "encounter", "encounters",
         "danger", "restricted", "prohibited",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing", "mountains", "mountain", "hills",
         -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")
@@ -965,6 +967,8 @@ return {
                     naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter",
                     amsterdam = "schiphol", oslo = "gardermoen", bergen = "flesland", stavanger = "sola",
                     trondheim = "vaernes",
+                    -- (an airport's own name the navdata does not give, said with its city or alone)
+                    ["el prat"] = "barcelona", ["barcelona el prat"] = "barcelona",
                     delhi = "indira gandhi", ["new delhi"] = "indira gandhi", mumbai = "chhatrapati shivaji",
                     bombay = "chhatrapati shivaji", kolkata = "netaji subhash chandra bose",
                     calcutta = "netaji subhash chandra bose", hyderabad = "rajiv gandhi", karachi = "jinnah",

@@ -7805,3 +7805,22 @@ do
     asked(nx("American 61 descend to FL190 Charlotte"), "a city with no word of description")
   end
 end
+
+-- Cycle 43 (k90): aircraft set up together named as such ("the first aircraft of the pair", "the other one of the
+-- encounter") describe the creation; a pair said with no instruction is still asked
+do
+  local _, ex = scene({ "CRE EZY47 A319 45.0 6.0 100 FL150 260" })
+  check_eq(ex("now make the second aircraft of the pair, EZY48, an A319 at 45.2 north 6.4 east, heading 280, FL150, 260 knots"),
+    "CRE EZY48 A319 45.2 6.4 280 FL150 260")
+  asked(ex("EZY47 and the pair"), "no instruction")
+end
+
+-- Cycle 43 (k90): an airport's own name the navdata does not give, said with its city ("Barcelona El Prat"), is that
+-- airport; said alone where the grammar has no airport phrase for it, it is still asked
+do
+  local _, ex = navscene({ "CRE VLG77 A320 41.0 2.0 045 FL100 250" }, "an airport's own name")
+  if ex then
+    check_eq(ex("VLG77's destination is now Barcelona El Prat"), "DEST VLG77 LEBL")
+    asked(ex("VLG77 destination Prat"), "a part of the name alone")
+  end
+end
