@@ -5814,6 +5814,9 @@ function M.translate(text, world)
     text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
   end
   text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
+  -- "at twelve nautical miles from BRA": a distance said after "at" in nautical miles is that many miles (the
+  -- letters of "at" and the number before "nautical" are no callsign)
+  text = text:gsub("(%f[%a][Aa][Tt]%s+[%w%.%-]+%s+)[Nn]autical%s+([Mm]iles?%f[%A])", "%1%2")
   -- punctuation dictated as words: the marks (lexicon.dictated_punctuation)
   for _, d in ipairs(lexicon.dictated_punctuation) do
     text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)

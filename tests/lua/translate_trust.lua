@@ -7824,3 +7824,14 @@ do
     asked(ex("VLG77 destination Prat"), "a part of the name alone")
   end
 end
+
+-- Cycle 43 (k90): a distance said after "at" in nautical miles ("At fifteen nautical miles from TOLKA, ...") is the
+-- distance of an ATDIST condition, its "at" and number no callsign; with no instruction after it, it is still asked
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA",
+    "CRE SKW3411 CRJ7 40.0 -101.0 270 FL300 280" })
+  check_eq(ex("At fifteen nautical miles from TOLKA, Frontier 88 should slow to 250 knots."),
+    "ATDIST FFT88 TOLKA 15 SPD FFT88 250")
+  check_eq(ex("FFT88, at 20 nautical miles from TOLKA descend FL200"), "ATDIST FFT88 TOLKA 20 ALT FFT88 FL200")
+  asked(ex("At fifteen nautical miles from TOLKA, Frontier 88"), "no instruction")
+end
