@@ -727,6 +727,18 @@ function m:airline_refs()
       local the = prev and prev.kind == "word" and prev.text == "the"
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
             or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
+      -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
+      -- and "from" before the airline capitalised name its aircraft, as "the Republic jet" does; `from_the`: the
+      -- position of that "the")
+      local from_the
+      if self:word(i - 1, "from") and self.t[i].raw:match("^%u") then
+        local k = i - 2
+        while k > i - 5 and self:word(k, "@aircraft_nouns @aircraft_described") do k = k - 1 end
+        if k < i - 2 and self:word(k, "the") and not self:word(k - 1, "@airline_context @aircraft_context @below @above") then
+          from_the = k
+        end
+      end
+      the = the or from_the ~= nil
       -- ("insert PTA after DORVO for Flybondi": the airline capitalised after "for", ending its clause, is the
       -- aircraft the instruction is for)
       local for_it = self:word(i - 1, "for") and self.t[i].raw:match("^%u") ~= nil and (not nxt or nxt.kind == "punct")
@@ -794,6 +806,7 @@ function m:airline_refs()
           if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
         end
       end
+      if from_the and #fits == 1 and ok then self:explain(from_the, i) end
       if ok and the and pronoun_one(e) then  -- (the pronoun is part of the name, no value)
         self:mark_used(e, e + 1)
         e = e + 1

@@ -570,6 +570,9 @@ return {
           "playback", "serial" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  -- words that describe an aircraft before "from" and its airline ("the regional jet from Republic")
+  aircraft_described = { "jet", "jets", "regional", "airliner", "one", "small", "big", "heavy", "little", "widebody",
+      "narrowbody", "turboprop", "prop", "aeroplane" },
   -- an abbreviation's words said out, read as the abbreviation ("resume navigation after passing the closest
   -- point of approach" is "... the CPA")
   spelled_out = { ["closest point of approach"] = "CPA", ["own ship"] = "ownship" },

@@ -7835,3 +7835,14 @@ do
   check_eq(ex("FFT88, at 20 nautical miles from TOLKA descend FL200"), "ATDIST FFT88 TOLKA 20 ALT FFT88 FL200")
   asked(ex("At fifteen nautical miles from TOLKA, Frontier 88"), "no instruction")
 end
+
+-- Cycle 43 (k90): an airline called by its name ("Republic") and an aircraft described "from" it ("the regional jet
+-- from Republic, climb ...") name its one aircraft flying; with two of it flying, or none, it is asked
+do
+  local _, ex = scene({ "CRE RPA3301 E75L 39.0 -86.0 090 FL200 280", "CRE UAL7 B738 39.5 -86.5 270 FL330 300",
+    "CRE UAL8 B738 39.2 -86.2 270 FL350 300" })
+  check_eq(ex("the regional jet from Republic, descend to FL160"), "ALT RPA3301 FL160")
+  check_eq(ex("the Republic, turn left heading 040"), "HDG RPA3301 40 LEFT")
+  asked(ex("the jet from United, descend to FL300"), "two United aircraft flying")
+  asked(ex("the jet from Frontier, descend to FL300"), "no Frontier aircraft flying")
+end
