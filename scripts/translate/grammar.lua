@@ -2595,6 +2595,20 @@ function G:self_corrected()
         c = c + 1
       end
     end
+    -- ("insert SINCA... no wait, it's already there, add BURNY": the reason the instruction is taken back, a clause
+    -- of at most six words opened by a pronoun of lexicon.self_correction_reason_openers and ending in a comma,
+    -- no value, place or instruction in it, belongs to the run)
+    if marked and self:word(c, "@self_correction_reason_openers") then
+      local k = c + 1
+      while k < c + 7 and self.t[k] and self.t[k].kind == "word" and not self:intent_at(k)
+          and not self:has_ref(k, k + 1) and #self:quantities(k, k + 1) == 0 do
+        k = k + 1
+      end
+      if self.t[k] and self.t[k].text == "," then
+        c = k
+        while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
+      end
+    end
     local p = a - 1  -- the last instruction word before the run
     while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
     -- ("add BOBTA then DEBEK, actually just add ERBUS at the end of his route": with no instruction word

@@ -500,6 +500,9 @@ return {
   -- the request was cut off before the value, asked
   value_names = { "fl", "level", "altitude", "alt", "heading", "hdg", "speed", "spd", "mach", "vs", "rate" },
   correction = { "correction", "disregard", "negative" },
+  -- pronouns that open the reason an instruction is taken back, said after the correction ("insert SINCA... no
+  -- wait, it's already there, add BURNY before CANUK": G:taken_back)
+  self_correction_reason_openers = { "it's", "that's", "its", "it", "that", "he's", "she's", "they're" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee",

@@ -7846,3 +7846,14 @@ do
   asked(ex("the jet from United, descend to FL300"), "two United aircraft flying")
   asked(ex("the jet from Frontier, descend to FL300"), "no Frontier aircraft flying")
 end
+
+-- Cycle 43 (k90): the reason an instruction is taken back, said after the correction ("... no wait, it's already on
+-- the route, add ..."), belongs to the correction; with no correction word, or a value in the reason, it is asked
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "DEFWPT BIRDO 40.2 -100.2", "DEFWPT MESSA 40.4 -100.4",
+    "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA", "ADDWPT FFT88 MESSA" })
+  check_eq(ex("FFT88 add TOLKA... oh wait it's in there already, add BIRDO before MESSA"), "ADDWPT FFT88 BIRDO,,,,MESSA")
+  check_eq(ex("FFT88 climb FL340, no wait, it's too high, descend FL260"), "ALT FFT88 FL260")
+  asked(ex("FFT88 add TOLKA, it's in there already, add BIRDO before MESSA"), "no correction word")
+  asked(ex("FFT88 add TOLKA... no wait it's at FL200, add BIRDO before MESSA"), "a value in the reason")
+end
