@@ -256,8 +256,6 @@ return {
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
-        -- (aircraft set up together: "the second aircraft of the pair", "the other one of the encounter")
-        "pair", "pairs", "encounter", "encounters",
         "danger", "restricted", "prohibited",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing", "mountains", "mountain", "hills",
         -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")

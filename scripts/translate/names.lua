@@ -529,8 +529,6 @@ local names = {
     { "smartwings", "TVS" },
     { "pegasus", "PGT" },
     { "netjets", "NJE" },  -- (a brand: NetJets Europe, NJE, and NetJets Aviation, EJA)
-    { "republic", "RPA" },  -- (Republic Airways, telephony Brickyard)
-    { "republic airways", "RPA" },
   },
   brands = {
     { "transavia", "TRA", "TVF" },
