@@ -2615,6 +2615,20 @@ function G:self_corrected()
         c = c + 1
       end
     end
+    -- ("insert SINCA... no wait, it's already there, add BURNY": the reason the instruction is taken back, a clause
+    -- of at most six words opened by a pronoun of lexicon.self_correction_reason_openers and ending in a comma,
+    -- no value, place or instruction in it, belongs to the run)
+    if marked and self:word(c, "@self_correction_reason_openers") then
+      local k = c + 1
+      while k < c + 7 and self.t[k] and self.t[k].kind == "word" and not self:intent_at(k)
+          and not self:has_ref(k, k + 1) and #self:quantities(k, k + 1) == 0 do
+        k = k + 1
+      end
+      if self.t[k] and self.t[k].text == "," then
+        c = k
+        while self.t[c] and (self.t[c].kind == "punct" or self.t[c].filler) do c = c + 1 end
+      end
+    end
     local p = a - 1  -- the last instruction word before the run
     while marked and p >= 1 and not (self:intent_at(p) and not self:in_reason(p)) do p = p - 1 end
     -- ("add BOBTA then DEBEK, actually just add ERBUS at the end of his route": with no instruction word
@@ -4259,6 +4273,35 @@ function G:station_clause(b, e, after_callsign)
   return navaids ~= nil and #navaids(name, 0, 0, 1e5) > 0
 end
 
+-- The end of the city or airport of one or two capitalised words starting at i (lexicon.city_airports, or words
+-- of a navdata airport's name) said to describe an aircraft or airspace, lexicon.described_places: before
+-- a noun of `before` ("a Charlotte arrival", "the Madrid TMA"), or after a word of `after` said straight after one
+-- of `leads` ("the arrival into Atlanta", "bound for Vigo"); nil when it is none.
+function G:described_place(i)
+  local D = G.described_sets
+  if not D then
+    local L = lexicon.described_places
+    D = { before = set_of(L.before), after = set_of(L.after), leads = set_of(L.leads) }
+    G.described_sets = D
+  end
+  local function capital(k)
+    local t = self.t[k]
+    return t ~= nil and t.kind == "word" and t.alpha and t.raw:match("^%u") ~= nil and not t.keyword
+      and not MEANING[t.text] and not self.triggers[k] and #self:refs_in(k, k + 1, "aircraft") == 0
+  end
+  if not capital(i) then return nil end
+  local words, w = self.words, self.world
+  local after = words[i - 1] and D.after[words[i - 1]] and words[i - 2] and D.leads[words[i - 2]]
+  for e = capital(i + 1) and i + 2 or i + 1, i + 1, -1 do
+    local name = e > i + 1 and self.t[i].text .. " " .. self.t[i + 1].text or self.t[i].text
+    if (after or (words[e] and D.before[words[e]])) and (lexicon.city_airports[name]
+        or (w.airports_named and #w.airports_named(name) > 0) or (w.airports_with_words and #w.airports_with_words(name) > 0)) then
+      return e
+    end
+  end
+  return nil
+end
+
 -- The positions of tokens the parse explains beyond the words themselves: callsigns, places, types and
 -- values; a place's name beside its issued code; the name "instead of" replaces or a direct-to passes
 -- (`kinds`: G:issued); an ATC unit's place; comments and purposes; courtesy and value phrases.
@@ -4350,6 +4393,9 @@ function G:explained_spans(issued, kinds)
         if self.t[k].kind == "word" and not MEANING[self.t[k].text] and not self.triggers[k] then inside[k] = true end
       end
     end
+    -- "a Charlotte arrival", "the arrival into Atlanta": a city named to describe (G:described_place)
+    local place_e = self:described_place(i)
+    for k = i, place_e and place_e - 1 or 0 do inside[k] = true end
     -- "climb FL360, not above": the level said is a limit too, when nothing follows in its clause ("not
     -- above FL370" names another level, asked about)
     if w == "not" and (nw == "above" or nw == "below") then
@@ -5890,6 +5936,9 @@ function M.translate(text, world)
     text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
   end
   text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
+  -- "at twelve nautical miles from BRA": a distance said after "at" in nautical miles is that many miles (the
+  -- letters of "at" and the number before "nautical" are no callsign)
+  text = text:gsub("(%f[%a][Aa][Tt]%s+[%w%.%-]+%s+)[Nn]autical%s+([Mm]iles?%f[%A])", "%1%2")
   -- punctuation dictated as words: the marks (lexicon.dictated_punctuation)
   for _, d in ipairs(lexicon.dictated_punctuation) do
     text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)

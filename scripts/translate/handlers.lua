@@ -283,6 +283,21 @@ function m:acids(s)
     for _, id in ipairs(u and ids or {}) do  -- "BAW177 ..., Speedbird diverting": its own name again
       if id:upper():sub(1, #u.icao) == u.icao then u = nil break end
     end
+    -- ("Jazz, uh, JIA5301 descend ...": the airline said, then straight after it, commas and hesitations between,
+    -- a flying aircraft's exact callsign of that airline, or of another when none of the airline said flies: the
+    -- callsign said whole names the aircraft, the airline's name its false start)
+    for _, r in ipairs(u and self.refs or {}) do
+      if r.kind == "aircraft" and r.exists and r.b >= u.e and (r.name:upper():sub(1, #u.icao) == u.icao
+          or #self:airline_fleet(u.icao) == 0) then
+        local k = u.e
+        while k < r.b and (self.t[k].kind == "punct" or self:word(k, "@hesitations")) do k = k + 1 end
+        if k == r.b and k > u.e then
+          self:explain(u.b, u.e)
+          u = nil
+        end
+        break
+      end
+    end
     local later = false  -- an aircraft named after the instruction ("turn left 090, EZY45")
     for _, r in ipairs(self.refs) do later = later or (r.kind == "aircraft" and r.b >= s.e and not self:in_reason(r.b)) end
     if u and (#ids > 0 or self.subject or later) then
@@ -773,6 +788,18 @@ function m:airline_refs()
       local the = prev and prev.kind == "word" and prev.text == "the"
           and (not self:word(i - 2, "@airline_context @aircraft_context @below @above")
             or self:word(e, "@route_nouns"))  -- "add X to the KLM's route" (the lexer drops "'s")
+      -- ("the regional jet from Republic, climb ...", "the plane from Delta": "the", words of an aircraft described
+      -- and "from" before the airline capitalised name its aircraft, as "the Republic jet" does; `from_the`: the
+      -- position of that "the")
+      local from_the
+      if self:word(i - 1, "from") and self.t[i].raw:match("^%u") then
+        local k = i - 2
+        while k > i - 5 and self:word(k, "@aircraft_nouns @aircraft_described") do k = k - 1 end
+        if k < i - 2 and self:word(k, "the") and not self:word(k - 1, "@airline_context @aircraft_context @below @above") then
+          from_the = k
+        end
+      end
+      the = the or from_the ~= nil
       -- ("insert PTA after DORVO for Flybondi": the airline capitalised after "for", ending its clause, is the
       -- aircraft the instruction is for)
       local for_it = self:word(i - 1, "for") and self.t[i].raw:match("^%u") ~= nil and (not nxt or nxt.kind == "punct")
@@ -840,6 +867,7 @@ function m:airline_refs()
           if self.refs[k].b == i and unknown_place(self.refs[k]) then table.remove(self.refs, k) end
         end
       end
+      if from_the and #fits == 1 and ok then self:explain(from_the, i) end
       if ok and the and pronoun_one(e) then  -- (the pronoun is part of the name, no value)
         self:mark_used(e, e + 1)
         e = e + 1

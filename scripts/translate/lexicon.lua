@@ -216,6 +216,8 @@ return {
         "ha det", "dank je", "dank u", "iyi gunler", "iyi ucuslar", "do svidaniya", "ni hao", "ma'a salama",
         "ma salama", "at pilot's discretion", "at your discretion", "pilot's discretion",
         "pilot discretion", "your discretion", "at pilot discretion", "pilots discretion", "at pilots discretion",
+        -- a place asked about beside another ("where is DILUM in relation to the aircraft")
+        "in relation to", "with respect to", "with regard to",
         -- help offered with a value given twice ("... -- that's 50.7 / 16.2 in decimal if it helps")
         "if it helps", "if that helps", "in case it helps", "in case that helps",
         -- the pilot of an online network gone, the reason for removing the aircraft ("pilot dc'd")
@@ -500,6 +502,9 @@ return {
   -- the request was cut off before the value, asked
   value_names = { "fl", "level", "altitude", "alt", "heading", "hdg", "speed", "spd", "mach", "vs", "rate" },
   correction = { "correction", "disregard", "negative" },
+  -- pronouns that open the reason an instruction is taken back, said after the correction ("insert SINCA... no
+  -- wait, it's already there, add BURNY before CANUK": G:taken_back)
+  self_correction_reason_openers = { "it's", "that's", "its", "it", "that", "he's", "she's", "they're" },
   -- who speaks, said as a label before the request ("instructor: KLM101 turn right", "instructor here:
   -- create ...", "sim op: ..."): the label is no part of the request
   speaker_roles = { "instructor", "controller", "atc", "trainer", "supervisor", "examiner", "student", "trainee",
@@ -571,6 +576,9 @@ return {
           "playback", "serial" },
   -- (an agent: an aircraft, in a learning environment's words)
   aircraft_nouns = { "aircraft", "plane", "airplane", "flight", "agent" },
+  -- words that describe an aircraft before "from" and its airline ("the regional jet from Republic")
+  aircraft_described = { "jet", "jets", "regional", "airliner", "one", "small", "big", "heavy", "little", "widebody",
+      "narrowbody", "turboprop", "prop", "aeroplane" },
   -- an abbreviation's words said out, read as the abbreviation ("resume navigation after passing the closest
   -- point of approach" is "... the CPA")
   spelled_out = { ["closest point of approach"] = "CPA", ["own ship"] = "ownship" },
@@ -974,6 +982,8 @@ return {
                     naples = "capodichino", budapest = "ferihegy", gothenburg = "landvetter",
                     amsterdam = "schiphol", oslo = "gardermoen", bergen = "flesland", stavanger = "sola",
                     trondheim = "vaernes",
+                    -- (an airport's own name the navdata does not give, said with its city or alone)
+                    ["el prat"] = "barcelona", ["barcelona el prat"] = "barcelona",
                     delhi = "indira gandhi", ["new delhi"] = "indira gandhi", mumbai = "chhatrapati shivaji",
                     bombay = "chhatrapati shivaji", kolkata = "netaji subhash chandra bose",
                     calcutta = "netaji subhash chandra bose", hyderabad = "rajiv gandhi", karachi = "jinnah",
@@ -1010,6 +1020,15 @@ return {
                     perpignan = "rivesaltes", carcassonne = "salvaza" },
   -- prepositions before a place named by its name ("at Barajas", "over Schiphol")
   place_words = { "at", "over", "above", "near", "from", "overhead" },
+  -- A city or airport named to describe an aircraft or airspace, no place instructed: said before one of
+  -- `before` ("a Charlotte arrival", "the Madrid TMA", "Barcelona ACC"), or after one of `after` said straight
+  -- after one of `leads` ("the arrival into Atlanta", "inbound to Lisbon", "bound for Vigo"); a place an aircraft
+  -- comes from ("inbound from Vigo") is no description here (it is asked)
+  described_places = {
+    before = { "arrival", "arrivals", "departures", "inbound", "inbounds", "outbound", "tma", "acc", "fir", "cta",
+        "uac", "sector", "airspace", "flow", "stream", "push", "bank" },
+    after = { "into", "for", "to" },
+    leads = { "arrival", "arrivals", "inbound", "arriving", "bound", "flight", "flights" } },
   -- kinds of navaid, said beside a navaid's name ("the Pampus VOR, PAM")
   navaid_kinds = { "vor", "ndb", "dme", "vortac", "navaid", "beacon" },
   -- the navdata types a kind said after a navaid's name means ("the Eelde VOR" is EEL, not the NDB SO)

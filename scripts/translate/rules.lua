@@ -1446,7 +1446,7 @@ return function(intent, rule, words)
     local r = g:refs_in(i + 1, math.min(#g.t + 1, i + 2), "aircraft")[1]
     return r ~= nil and r.exists and g:word(r.e, "over") and g:word(r.e + 1, "to")
   end }
-  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation heading course route normal real" } }
+  rule { "put", "move", near = { 3, "back" }, not_near = { 8, "lnav vnav navigation nav heading course route normal real" } }
   -- "Put the Cessna N345CS at 42.0 -88.3, 3000 feet", "put BAW123 over SPY at fl200": an aircraft
   -- that flies put at a position or over a place
   rule { "put place", "move", when = function(g, i)
@@ -1481,6 +1481,12 @@ return function(intent, rule, words)
   end }
   rule { "pause", false, next = "release" }
   rule { "pause", false, prev = { 2, "release" } }
+  -- "the simulation may now be resumed (from where it was paused)", "the exercise is to be resumed": the run
+  -- resumed, said in the passive of the simulation named before it, no aircraft named
+  rule { "resume resumed restarted unpaused continued", "op", prev = { 6, "@sim" }, when = function(g, i)
+    return g.t[i].raw:lower():match("ed$") ~= nil and g:word(i - 1, "be been is are")
+      and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "continue from pause", "start again out of the pause": the run resumed from the pause
   rule { "run start continue resume go", "op", when = function(g, i)
     local k = g:word(i + 1, "again") and i + 2 or i + 1
@@ -1505,6 +1511,12 @@ return function(intent, rule, words)
     if not (g:word(k, "a") and g:word(k + 1, "moment second minute bit while")) then return false end
     k = g:word(k + 2, "the") and k + 3 or k + 2
     return g:word(k, "@sim")
+  end }
+  -- "stop it for a moment", "stop everything for a second": the run stopped a while, said with no
+  -- aircraft named anywhere in the request ("KLM12, stop it for a moment" is no pause)
+  rule { "stop", "hold", next = "it everything", when = function(g, i)
+    local k = g:word(i + 2, "for") and i + 3 or i + 2
+    return g:word(k, "a") and g:word(k + 1, "moment second minute bit while") and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "restart the clock", "start the clock again": the clock runs on (OP); the simulation, exercise or
   -- scenario restarted is a reset (confirmed first)

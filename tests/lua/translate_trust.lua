@@ -8146,3 +8146,105 @@ do
   asked(ex("SWA40 climb to six thousand and a half"), "a fraction after thousand")
   asked(ex("SWA40 climb to FL120 and a half"), "a flight level has no fraction")
 end
+
+-- Cycle 43 (k90): "nav" is navigation's short word after "put ... back on its own" (LNAV ON, no move);
+-- "put X back at" a position is still the move, "put X back on nav" with no "own" still asked
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA" })
+  check_eq(ex("ok now I'll put FFT88 back on its own nav"), "LNAV FFT88 ON")
+  check_eq(ex("put Frontier 88 back on its own nav, LNAV on"), "LNAV FFT88 ON")
+  check_eq(ex("put FFT88 back at 40.2 -100.2"), "MOVE FFT88 40.2 -100.2")
+  asked(ex("put FFT88 back on nav"), "no 'own' before 'nav'")
+end
+
+-- Cycle 43 (k90): "stop it / everything for a moment" with no aircraft named pauses the run (HOLD); with an
+-- aircraft named, or with no while said, it is asked
+do
+  local _, ex = scene({ "CRE FFT88 A20N 40.5 -100.5 090 FL280 270" })
+  check_eq(ex("ok stop it for a second, I want to explain the picture"), "HOLD")
+  check_eq(ex("stop everything for a minute"), "HOLD")
+  asked(ex("FFT88 stop it for a moment"), "an aircraft named")
+  asked(ex("stop it"), "no while said")
+end
+
+-- Cycle 43 (k90): the run resumed, said in the passive of the simulation named before it ("the exercise can be
+-- resumed from where it stopped") starts the clock (OP); the passive of an aircraft's route is no OP
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA" })
+  check_eq(ex("The exercise can now be resumed from where it was frozen."), "OP")
+  check_eq(ex("the simulation is to be resumed now"), "OP")
+  check(not ex("FFT88's route can be resumed now"):match("^OP"), "an aircraft's route resumed")
+end
+
+-- Cycle 43 (k90): an airline's name said, then straight after it (a comma, a hesitation) a flying aircraft's exact
+-- callsign ("Frontier, uh, FFT88 climb ..."), names that aircraft, also where the name is another airline's and none
+-- of that airline flies; with one of the named airline flying, or no comma between, it is still asked
+do
+  local _, ex = scene({ "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "CRE SKW3411 CRJ7 40.0 -101.0 270 FL300 280",
+    "CRE SKW3412 CRJ7 40.2 -101.2 270 FL320 280" })
+  check_eq(ex("Frontier, uh, FFT88 climb to FL320"), "ALT FFT88 FL320")
+  check_eq(ex("Alaska, um, SKW3411, descend to FL260"), "ALT SKW3411 FL260")
+  asked(ex("SkyWest, uh, FFT88 climb to FL320"), "a SkyWest aircraft flies")
+  asked(ex("Frontier FFT88 SKW3411 climb to FL320"), "nothing between the name and two callsigns")
+end
+
+-- Cycle 43 (k90): a city or airport named to describe an aircraft or airspace ("a Munich arrival", "the arrival
+-- into Oslo", "the Lisbon TMA") is explained, no place instructed; a city said with no such word around it, or where
+-- the aircraft comes from ("inbound from ..."), is still asked; a place beside another "in relation to" it is framing
+do
+  local _, ex = scene({ "DEFWPT ROKKI 48.0 11.0", "CRE DLH4AX A321 48.3 11.3 200 FL210 280", "ADDWPT DLH4AX ROKKI" })
+  check_eq(ex("ok so here we have a Munich arrival, DLH4AX, bring him down to FL150"), "ALT DLH4AX FL150")
+  check_eq(ex("DLH4AX is on the arrival into Munich, have it cross ROKKI at FL120"), "AT DLH4AX ROKKI ALT FL120")
+  check_eq(ex("set the protected zone radius to 3 nm, as used in the Lisbon TMA"), "ZONER 3")
+  asked(ex("DLH4AX descend FL150 Munich"), "a city with no word of description")
+  asked(ex("DLH4AX inbound from Oslo, descend FL150"), "the place it comes from")
+  check_eq(ex("where is ROKKI in relation to the traffic? just its position please"), "POS ROKKI")
+  local _, nx = navscene({ "CRE AAL61 A321 35.6 -80.6 200 FL230 300" }, "a city by the navdata's airport names")
+  if nx then
+    check_eq(nx("this is a Charlotte arrival, American 61, descend to FL190"), "ALT AAL61 FL190")
+    asked(nx("American 61 descend to FL190 Charlotte"), "a city with no word of description")
+  end
+end
+
+-- Cycle 43 (k90): an airport's own name the navdata does not give, said with its city ("Barcelona El Prat"), is that
+-- airport; said alone where the grammar has no airport phrase for it, it is still asked
+do
+  local _, ex = navscene({ "CRE VLG77 A320 41.0 2.0 045 FL100 250" }, "an airport's own name")
+  if ex then
+    check_eq(ex("VLG77's destination is now Barcelona El Prat"), "DEST VLG77 LEBL")
+    asked(ex("VLG77 destination Prat"), "a part of the name alone")
+  end
+end
+
+-- Cycle 43 (k90): a distance said after "at" in nautical miles ("At fifteen nautical miles from TOLKA, ...") is the
+-- distance of an ATDIST condition, its "at" and number no callsign; with no instruction after it, it is still asked
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA",
+    "CRE SKW3411 CRJ7 40.0 -101.0 270 FL300 280" })
+  check_eq(ex("At fifteen nautical miles from TOLKA, Frontier 88 should slow to 250 knots."),
+    "ATDIST FFT88 TOLKA 15 SPD FFT88 250")
+  check_eq(ex("FFT88, at 20 nautical miles from TOLKA descend FL200"), "ATDIST FFT88 TOLKA 20 ALT FFT88 FL200")
+  asked(ex("At fifteen nautical miles from TOLKA, Frontier 88"), "no instruction")
+end
+
+-- Cycle 43 (k90): an aircraft described "from" its airline ("the regional jet from Delta, climb ...") names that
+-- airline's one aircraft flying; with two of it flying, or none, it is asked
+do
+  local _, ex = scene({ "CRE DAL3301 CRJ9 39.0 -86.0 090 FL200 280", "CRE UAL7 B738 39.5 -86.5 270 FL330 300",
+    "CRE UAL8 B738 39.2 -86.2 270 FL350 300" })
+  check_eq(ex("the regional jet from Delta, descend to FL160"), "ALT DAL3301 FL160")
+  check_eq(ex("the plane from Delta turn left heading 040"), "HDG DAL3301 40 LEFT")
+  asked(ex("the jet from United, descend to FL300"), "two United aircraft flying")
+  asked(ex("the jet from Frontier, descend to FL300"), "no Frontier aircraft flying")
+end
+
+-- Cycle 43 (k90): the reason an instruction is taken back, said after the correction ("... no wait, it's already on
+-- the route, add ..."), belongs to the correction; with no correction word, or a value in the reason, it is asked
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "DEFWPT BIRDO 40.2 -100.2", "DEFWPT MESSA 40.4 -100.4",
+    "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA", "ADDWPT FFT88 MESSA" })
+  check_eq(ex("FFT88 add TOLKA... oh wait it's in there already, add BIRDO before MESSA"), "ADDWPT FFT88 BIRDO,,,,MESSA")
+  check_eq(ex("FFT88 climb FL340, no wait, it's too high, descend FL260"), "ALT FFT88 FL260")
+  asked(ex("FFT88 add TOLKA, it's in there already, add BIRDO before MESSA"), "no correction word")
+  asked(ex("FFT88 add TOLKA... no wait it's at FL200, add BIRDO before MESSA"), "a value in the reason")
+end
