@@ -1519,12 +1519,6 @@ return function(H, f, compass)
             end
             if #ids > 1 then ids = {} end  -- ("Gotham City": no airport of that city, one of several "City")
           end
-          -- (with no aircraft to place it near, the whole name of one airport that is the city of other large
-          -- airports too, "Phoenix": ZJSY "PHOENIX INTL" and KPHX "PHOENIX SKY HARBOR INTL", is any of them)
-          local of_city = #self.fleet == 0 and not city and #ids == 1 and cls and self.world.airports_of_city
-          for _, a in ipairs(of_city and of_city(phrase) or {}) do
-            if a ~= ids[1] and cls(a) == "LARGE" and #ids < 4 then ids[#ids + 1] = a end
-          end
           local id = self:one_named(ids, "airport", phrase, 4)
           if id then
             self.airport_said_at = i
