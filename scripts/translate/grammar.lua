@@ -2710,7 +2710,19 @@ function G:self_corrected()
         -- no wait, descend FL90", "..., sorry, I mean just turn to heading 250"): the last one before the
         -- run, from its instruction word, is taken back ("climb FL200, sorry, and turn left": an
         -- instruction added, none taken back)
-        if self:word(c, SC_ONLY) then c = c + 1 end
+        -- (of another kind, with no word saying it replaces, "climb FL200, sorry, turn left heading 250", it is
+        -- asked as G:parse asks after "correction")
+        local w = self:word(c, SC_ONLY) and c + 1 or c
+        -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
+        if w == c and not self:word(c, "it") and not SC_SETTING[self.words[c]]
+            and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
+            and not same_family(self:intent_at(p), self:intent_at(c)) then
+          local e = c
+          while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+          local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
+          return self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c, e), said(p, a)))
+        end
+        c = w
         self:mark_used(p, c)
         for k = p, c - 1 do self.noted[k] = true end
         local refs = {}
@@ -2772,8 +2784,18 @@ function G:parse(b, e)
     local skip = false
     -- "descend and maintain four th- correction descend and maintain three
     -- thousand": the corrected instruction replaces the one before it.
-    if k > 1 and self:word_in(segs[k - 1].trig, s.trig, "@correction") and same_family(segs[k - 1].intent, s.intent) then
+    -- "climb FL200, no wait, heading 300": one of another kind said in the place of an instruction that was
+    -- issued takes it back, or adds to it; which is not knowable, so it is asked, naming both
+    local fixed = k > 1 and self:word_in(segs[k - 1].trig, s.trig, "@correction")
+    if fixed and same_family(segs[k - 1].intent, s.intent) then
       for c = #self.out, prev_out + 1, -1 do self.out[c] = nil end
+    elseif fixed and #self.out > prev_out then
+      local c = s.trig - 1
+      while not self:word(c, "@correction") do c = c - 1 end
+      local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
+      self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c + 1, s.e):gsub("^[%s%p]+", ""),
+        said(segs[k - 1].trig, c)))
+      break
     end
     self:taken_back(s)
     -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at
