@@ -2792,10 +2792,15 @@ function G:parse(b, e)
     elseif fixed and #self.out > prev_out then
       local c = s.trig - 1
       while not self:word(c, "@correction") do c = c - 1 end
-      local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
-      self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c + 1, s.e):gsub("^[%s%p]+", ""),
-        said(segs[k - 1].trig, c)))
-      break
+      -- (the new instruction's word straight after the correction, with a value or place of its own: "I say again
+      -- FL110, reduce 230" says the level again; "no speed restrictions" names no instruction in its place)
+      if #self:quantities(c + 1, s.trig) == 0
+          and (#self:quantities(s.trig, s.e) > 0 or #self:refs_in(s.trig, s.e, "waypoint") > 0) then
+        local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
+        self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c + 1, s.e):gsub("^[%s%p]+", ""),
+          said(segs[k - 1].trig, c)))
+        break
+      end
     end
     self:taken_back(s)
     -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at

@@ -8117,6 +8117,9 @@ do
   check_eq(ex("TAP18 heading 310 correction 320"), "HDG TAP18 320")
   check_eq(ex("TAP18 climb FL240, sorry, descend FL100"), "ALT TAP18 FL100")
   check_eq(ex("TAP18 climb FL240, sorry, and heading 310"), "ALT TAP18 FL240 ; HDG TAP18 310")
+  -- (the value said again before the next instruction, or no instruction with a value after the correction word)
+  check_eq(ex("TAP18 climb FL240, I say again two four zero, reduce 230"), "ALT TAP18 FL240 ; SPD TAP18 230")
+  check_eq(ex("TAP18 descend FL120, no speed restrictions"), "ALT TAP18 FL120")
 end
 
 -- Cycle 43 (hz43): a rate said after the clock's start with no "at" ("resume and go 4x", "unpause and run 5 times")
