@@ -545,6 +545,8 @@ end
 local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
   set_of(lexicon.self_correction.markers), set_of(lexicon.self_correction.after)
 local SC_CLOSING = set_of(lexicon.self_correction.closing)
+-- (G.sc_dropping: the first words of the markers that take back in words, a set)
+G.sc_dropping = set_of(lexicon.self_correction.dropping)
 -- patterns finding the first word of each marker as a whole word in lower-case text (a marker's word is
 -- a token's bare text only where one of these finds it)
 local SC_MARKER_PATTERNS = {}
@@ -586,10 +588,11 @@ local function self_corrections(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from, k = {}, 1, 1
   while k <= #toks do
-    local j, marked = k, false
+    local j, marked, dropping = k, false, false
     -- (punctuation alone, "...", belongs to the run)
     while toks[j] and (words[toks[j].bare] or toks[j].bare == "") do
       marked = marked or markers[toks[j].bare] or (toks[j + 1] and markers[toks[j].bare .. " " .. toks[j + 1].bare])
+      dropping = dropping or G.sc_dropping[toks[j].bare]
       j = j + 1
     end
     local nxt = toks[j]
@@ -598,7 +601,10 @@ local function self_corrections(text)
     local position = toks[k - 1] and toks[k - 1].raw:match("^[NnSsEeWw]%p*$") and value(toks[k - 2])
       and nxt and nxt.bare == "at" and toks[j + 1] and toks[j + 1].raw:match("^%-?%d")
     -- (a turn's side corrected: "turn left... I mean right heading 200")
-    if j > k and marked and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
+    -- (a run that takes back in words, "never mind", "forget that", before an instruction's word is no value
+    -- corrected: G:self_corrected reads the instruction said in its place)
+    if j > k and marked and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
+        and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
       pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
       from = nxt.at

@@ -8120,6 +8120,10 @@ do
   -- (the value said again before the next instruction, or no instruction with a value after the correction word)
   check_eq(ex("TAP18 climb FL240, I say again two four zero, reduce 230"), "ALT TAP18 FL240 ; SPD TAP18 230")
   check_eq(ex("TAP18 descend FL120, no speed restrictions"), "ALT TAP18 FL120")
+  -- (words that take back, "never mind", "forget that", "scratch that", leave the instruction said after them)
+  check_eq(ex("TAP18 climb FL240, never mind, heading 310"), "HDG TAP18 310")
+  check_eq(ex("TAP18 climb FL240, oh forget that, speed 220"), "SPD TAP18 220")
+  check_eq(ex("TAP18 climb FL240, scratch that, FL230"), "ALT TAP18 FL230")
 end
 
 -- Cycle 43 (hz43): a rate said after the clock's start with no "at" ("resume and go 4x", "unpause and run 5 times")
