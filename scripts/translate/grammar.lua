@@ -545,6 +545,8 @@ end
 local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
   set_of(lexicon.self_correction.markers), set_of(lexicon.self_correction.after)
 local SC_CLOSING = set_of(lexicon.self_correction.closing)
+-- (G.sc_dropping: the first words of the markers that take back in words, a set)
+G.sc_dropping = set_of(lexicon.self_correction.dropping)
 -- patterns finding the first word of each marker as a whole word in lower-case text (a marker's word is
 -- a token's bare text only where one of these finds it)
 local SC_MARKER_PATTERNS = {}
@@ -586,10 +588,11 @@ local function self_corrections(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from, k = {}, 1, 1
   while k <= #toks do
-    local j, marked = k, false
+    local j, marked, dropping = k, false, false
     -- (punctuation alone, "...", belongs to the run)
     while toks[j] and (words[toks[j].bare] or toks[j].bare == "") do
       marked = marked or markers[toks[j].bare] or (toks[j + 1] and markers[toks[j].bare .. " " .. toks[j + 1].bare])
+      dropping = dropping or G.sc_dropping[toks[j].bare]
       j = j + 1
     end
     local nxt = toks[j]
@@ -598,7 +601,10 @@ local function self_corrections(text)
     local position = toks[k - 1] and toks[k - 1].raw:match("^[NnSsEeWw]%p*$") and value(toks[k - 2])
       and nxt and nxt.bare == "at" and toks[j + 1] and toks[j + 1].raw:match("^%-?%d")
     -- (a turn's side corrected: "turn left... I mean right heading 200")
-    if j > k and marked and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
+    -- (a run that takes back in words, "never mind", "forget that", before an instruction's word is no value
+    -- corrected: G:self_corrected reads the instruction said in its place)
+    if j > k and marked and not (dropping and after[nxt and nxt.bare or ""] and not SIDES[nxt.bare])
+        and (value(toks[k - 1]) or (toks[k - 1] and SIDES[toks[k - 1].bare]) or position) and nxt
         and (nxt.bare:match("^%a?%a?%.?%d") or NUMBER_WORDS[nxt.bare] or after[nxt.bare] or position) then
       pieces[#pieces + 1] = text:sub(from, toks[k].at - 1) .. ", correction, "
       from = nxt.at
@@ -2727,7 +2733,19 @@ function G:self_corrected()
         -- no wait, descend FL90", "..., sorry, I mean just turn to heading 250"): the last one before the
         -- run, from its instruction word, is taken back ("climb FL200, sorry, and turn left": an
         -- instruction added, none taken back)
-        if self:word(c, SC_ONLY) then c = c + 1 end
+        -- (of another kind, with no word saying it replaces, "climb FL200, sorry, turn left heading 250", it is
+        -- asked as G:parse asks after "correction")
+        local w = self:word(c, SC_ONLY) and c + 1 or c
+        -- ("never mind", "forget that", "scratch that" take it back in words; the same verb is no other kind)
+        if w == c and not self:word(c, "it") and not SC_SETTING[self.words[c]]
+            and not self:word_in(a, c, "never nevermind forget scratch") and self.words[c] ~= self.words[p]
+            and not same_family(self:intent_at(p), self:intent_at(c)) then
+          local e = c
+          while self.t[e] and self.t[e].kind ~= "punct" do e = e + 1 end
+          local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
+          return self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c, e), said(p, a)))
+        end
+        c = w
         self:mark_used(p, c)
         for k = p, c - 1 do self.noted[k] = true end
         local refs = {}
@@ -2789,8 +2807,23 @@ function G:parse(b, e)
     local skip = false
     -- "descend and maintain four th- correction descend and maintain three
     -- thousand": the corrected instruction replaces the one before it.
-    if k > 1 and self:word_in(segs[k - 1].trig, s.trig, "@correction") and same_family(segs[k - 1].intent, s.intent) then
+    -- "climb FL200, no wait, heading 300": one of another kind said in the place of an instruction that was
+    -- issued takes it back, or adds to it; which is not knowable, so it is asked, naming both
+    local fixed = k > 1 and self:word_in(segs[k - 1].trig, s.trig, "@correction")
+    if fixed and same_family(segs[k - 1].intent, s.intent) then
       for c = #self.out, prev_out + 1, -1 do self.out[c] = nil end
+    elseif fixed and #self.out > prev_out then
+      local c = s.trig - 1
+      while not self:word(c, "@correction") do c = c - 1 end
+      -- (the new instruction's word straight after the correction, with a value or place of its own: "I say again
+      -- FL110, reduce 230" says the level again; "no speed restrictions" names no instruction in its place)
+      if #self:quantities(c + 1, s.trig) == 0
+          and (#self:quantities(s.trig, s.e) > 0 or #self:refs_in(s.trig, s.e, "waypoint") > 0) then
+        local function said(b, e) return (self:raw(b, e):gsub(" ([,.;:])", "%1"):gsub("[%s%p]+$", "")) end
+        self:need(string.format("Should I do '%s' instead of '%s', or as well?", said(c + 1, s.e):gsub("^[%s%p]+", ""),
+          said(segs[k - 1].trig, c)))
+        break
+      end
     end
     self:taken_back(s)
     -- "slow to 240 knots when it reaches flight level 200", "turn heading 180, but only when it is at

@@ -2818,9 +2818,12 @@ return function(H, f, compass)
       return self:need("Should the simulation start running (OP), or run at real-time rate again (DTMULT 1)?")
     end
     self:emit("OP")
-    -- ("from the point at which it was paused": an "at" opening a remark, G:in_reason, says no rate)
+    -- ("from the point at which it was paused": an "at" opening a remark, G:in_reason, says no rate; "resume
+    -- and go 3x": a factor said in the segment is its rate, with or without "at")
     local at = self:find_word(s.trig + 1, s.e, "at")
-    if at < s.e and not self:in_reason(at + 1) then self:time_mult(s) end
+    local factor = false
+    for _, q in ipairs(self:quantities(s.trig + 1, s.e)) do factor = factor or (q.kind == "mult" and not self:in_reason(q.b)) end
+    if (at < s.e and not self:in_reason(at + 1)) or factor then self:time_mult(s) end
   end
 
   -- first quantity of one of `kinds` in the segment, or nil

@@ -559,6 +559,9 @@ return {
                       closing = { "no", "wait", "sorry", "make that", "say again", "corr", "never mind", "nevermind",
                                   "forget that" },
                       after = { "fl", "flight", "level", "heading", "left", "right", "speed", "mach", "altitude" },
+                      -- the first words of the markers that take back what they follow in words ("never mind",
+                      -- "forget that", "scratch that"): before an instruction's word, no value is corrected
+                      dropping = { "never", "nevermind", "forget", "scratch" },
                       -- "... actually no, just the descent": after a self-correction, "just"/"only" and one of these
                       -- names the instructions said before it that stand (by the command they issued)
                       only = { "just", "only" },

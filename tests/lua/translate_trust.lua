@@ -8248,3 +8248,40 @@ do
   asked(ex("FFT88 add TOLKA, it's in there already, add BIRDO before MESSA"), "no correction word")
   asked(ex("FFT88 add TOLKA... no wait it's at FL200, add BIRDO before MESSA"), "a value in the reason")
 end
+
+-- Cycle 43 (hz43): a self-correction that puts an instruction of another kind in the place of one issued
+-- ("climb FL200, no wait, heading 300") takes it back or adds to it, which is not knowable: asked, naming both;
+-- of the same kind the corrected value alone is read, and "and" after it adds
+do
+  local _, ex = scene({ "CRE TAP18 A320 38.8 -9.1 040 FL150 260" })
+  check_eq(ex("TAP18 climb FL240, no wait, heading 310"),
+    "ASK Should I do 'heading 310' instead of 'climb fl 240', or as well?")
+  asked(ex("TAP18 climb FL240, no, heading 310"), "'no' before a heading")
+  asked(ex("TAP18 descend FL120, correction, turn left 280"), "'correction' before a turn")
+  asked(ex("TAP18 reduce 230, negative, heading 010"), "'negative' before a heading")
+  check_eq(ex("TAP18 turn right heading 090, sorry, descend FL110"),
+    "ASK Should I do 'descend fl 110' instead of 'heading 090', or as well?")
+  check_eq(ex("TAP18 climb FL240, no wait, FL250"), "ALT TAP18 FL250")
+  check_eq(ex("TAP18 heading 310 correction 320"), "HDG TAP18 320")
+  check_eq(ex("TAP18 climb FL240, sorry, descend FL100"), "ALT TAP18 FL100")
+  check_eq(ex("TAP18 climb FL240, sorry, and heading 310"), "ALT TAP18 FL240 ; HDG TAP18 310")
+  -- (the value said again before the next instruction, or no instruction with a value after the correction word)
+  check_eq(ex("TAP18 climb FL240, I say again two four zero, reduce 230"), "ALT TAP18 FL240 ; SPD TAP18 230")
+  check_eq(ex("TAP18 descend FL120, no speed restrictions"), "ALT TAP18 FL120")
+  -- (words that take back, "never mind", "forget that", "scratch that", leave the instruction said after them)
+  check_eq(ex("TAP18 climb FL240, never mind, heading 310"), "HDG TAP18 310")
+  check_eq(ex("TAP18 climb FL240, oh forget that, speed 220"), "SPD TAP18 220")
+  check_eq(ex("TAP18 climb FL240, scratch that, FL230"), "ALT TAP18 FL230")
+end
+
+-- Cycle 43 (hz43): a rate said after the clock's start with no "at" ("resume and go 4x", "unpause and run 5 times")
+-- is DTMULT after OP, never dropped
+do
+  local _, ex = scene({})
+  check_eq(ex("resume and go 4x"), "OP ; DTMULT 4")
+  check_eq(ex("unpause and go 5 times"), "OP ; DTMULT 5")
+  check_eq(ex("unpause and run at 6 times"), "OP ; DTMULT 6")
+  check_eq(ex("continue at double speed"), "OP ; DTMULT 2")
+  check_eq(ex("resume and go"), "OP")
+  asked(ex("resume and go 4 qz"), "a word not understood after the start")
+end
