@@ -487,6 +487,8 @@ return {
                     "descending", "turning", "both", "also", "required", "obliged" },
   -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
+  -- a word between the copula and what the aircraft are doing, read past ("KLM12 and EZY45 are both at FL350")
+  described_quantifiers = { "both", "all" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   -- words after which a "+" typed before the number is its sign ("vs +1500"): a climb
