@@ -4540,6 +4540,9 @@ function G:forgotten()
   end
 end
 
+-- A described value's kind -> the command it would be read as (G:described drops that command)
+G.described_verb = { alt = "ALT", speed = "SPD", heading = "HDG" }
+
 -- "TVF52KL and AFR1234 are co-altitude at 350, good. Push AFR7516 down to 350 too", "AFR7706 stop at FL170 and
 -- the Transavia keeps FL170 -- that's our conflict": aircraft named as the subject of a verb of
 -- lexicon.described (and not told to do anything after it: lexicon.described_not) are described, not
@@ -4558,7 +4561,8 @@ function G:described()
         local o = self:refs_in(k + 1, k + 2, "aircraft")[1]
         group[#group + 1], k, grouped[o.b] = o, o.e, true
       end
-      if self:word(k, "@described") and not self:word(k + 1, "@described_not")
+      local verb_at = self:word(k + 1, "@described_quantifiers") and k + 2 or k + 1
+      if self:word(k, "@described") and not self:word(verb_at, "@described_not")
           and not self:word(self:word(r.b - 1, "the") and r.b - 2 or r.b - 1, "@described_after") then
         -- (the clause ends at punctuation, or at an instruction word after its first value: "KLM12 is at FL300
         -- climb FL320")
@@ -4604,6 +4608,26 @@ function G:described()
         self.out = kept
         for x = span.b, span.e - 1 do self.noted[x] = true end
         for _, q in ipairs(self:quantities(span.b, span.e)) do self:take(q) end
+      end
+    else
+      -- (named again with an instruction of its own: "KLM12 is at FL350, climb KLM12 to FL370"; each level, speed
+      -- or heading of the description drops the one command of its own kind for the aircraft that carries it)
+      local dropped = false
+      for _, q in ipairs(self:quantities(span.b, span.e)) do
+        local verb = G.described_verb[q.kind]
+        local v = verb and tostring(math.floor(q.kind == "alt" and q.value / 100 or q.value))
+        for i, line in ipairs(verb and self.out or {}) do
+          local cv, cid, cval = line:match("^(%u+) (%S+) %a*(%d+)")
+          if cv == verb and cid == id and cval == v then
+            table.remove(self.out, i)
+            self:take(q)
+            dropped = true
+            break
+          end
+        end
+      end
+      if dropped then
+        for x = span.b, span.e - 1 do self.noted[x] = true end
       end
     end
   end
@@ -5859,7 +5883,8 @@ local function typed_places(text, world)
   return table.concat(out)
 end
 
-local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true }
+local DESCRIBED_AFTER = { there = true, here = true, already = true, still = true, at = true, currently = true,
+  maintaining = true, cruising = true, established = true }
 -- A homework answer's label opening the text ("Q3a answer:", "Question 2:", "Answer:"): no instruction
 local ANSWER_LABELS = { "^%s*[Qq]%d%d?%a?%)?%s*[Aa]nswer%s*[:.%-]%s*", "^%s*[Qq]uestion%s*%d%d?%a?%)?%s*[:.%-]%s*",
   "^%s*[Aa]nswer%s*[:.%-]%s+", "^%s*[Qq]%d%d?%a?[:)]%s+" }
@@ -5997,7 +6022,8 @@ function M.translate(text, world)
   end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
   text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
-  -- "the Transavia's there", "KLM12's already at FL300": a name's "'s" before a word of place or time is "is"
+  -- "the Transavia's there", "KLM12's already at FL300", "KLM12's at FL350": a name's "'s" before a word of place,
+  -- time or level kept is "is"
   if text:find("'s ", 1, true) or text:find("\xE2\x80\x99s ", 1, true) then
     text = text:gsub("(%f[%w][%u%d][%w]*)['\xE2\x80\x99]+s (%l+)", function(name, w)
       if DESCRIBED_AFTER[w] then return name .. " is " .. w end
@@ -6197,7 +6223,8 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and g.leftover then
-    g.ask = string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
+    g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
+      or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)
   end
   if two_part and not g.ask and g.out[1] and not g.out[1]:find("^FF") then
     g.ask = string.format("I have %s. Which time is '%s': hours and minutes, or minutes and seconds? Please "

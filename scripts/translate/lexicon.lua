@@ -480,13 +480,16 @@ return {
   -- an aircraft named straight after one of these is left out of the request (G:forgotten): "forget the Iberia"
   forget = { "forget" },
   -- an aircraft named as the subject of one of `described` is described, not instructed (G:described): "X and Y are
-  -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there"; unless one of `described_not`
+  -- co-altitude at 350", "the Transavia keeps FL170", "the Transavia's there", "KLM12 currently at FL350" (no
+  -- copula); unless one of `described_not`
   -- follows ("X is cleared FL200", "X is to climb", "X is required to cross CNR at FL120")
-  described = { "is", "are", "keeps", "stays", "remains", "sits" },
+  described = { "is", "are", "keeps", "stays", "remains", "sits", "currently" },
   described_not = { "cleared", "to", "instructed", "told", "requested", "now", "going", "gonna", "climbing",
                     "descending", "turning", "both", "also", "required", "obliged" },
   -- (nor after one of these: "once EZY45 is at 250 knots", "log where AFR1023 is")
   described_after = { "once", "when", "if", "until", "after", "before", "where", "whether", "unless", "while" },
+  -- a word between the copula and what the aircraft are doing, read past ("KLM12 and EZY45 are both at FL350")
+  described_quantifiers = { "both", "all" },
   -- words after which a clause is a new instruction
   then_words = { "then" },
   -- words after which a "+" typed before the number is its sign ("vs +1500"): a climb

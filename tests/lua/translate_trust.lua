@@ -8285,3 +8285,28 @@ do
   check_eq(ex("resume and go"), "OP")
   asked(ex("resume and go 4 qz"), "a word not understood after the start")
 end
+
+-- Cycle 43 (hz43b): a level, speed or heading said after a copula describing the present ("is at", "are head on
+-- at", "are both at", "'s at", "is maintaining", "currently at") issues nothing, even where the aircraft is named
+-- again with an instruction of its own; an instruction ("is to climb", "is cleared to"), a shorthand value and a
+-- condition ("when ... is at") are still read, and a description alone is asked
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.0 10.0 090 FL330 280", "CRE SAS32 A320 55.0 11.0 270 FL330 280",
+    "CRE NAX7 B738 55.5 10.5 180 FL290 270" })
+  check_eq(ex("SAS31 and SAS32 are nose to nose at FL330, climb SAS31 to FL350"), "ALT SAS31 FL350")
+  check_eq(ex("SAS31 and SAS32 are head on at FL330, climb SAS31 to FL350"), "ALT SAS31 FL350")
+  check_eq(ex("NAX7 is at FL290, descend NAX7 to FL250"), "ALT NAX7 FL250")
+  check_eq(ex("NAX7's at FL290, descend NAX7 to FL250"), "ALT NAX7 FL250")
+  check_eq(ex("SAS31 and NAX7 are converging at FL310, turn NAX7 right heading 220"), "HDG NAX7 220 RIGHT")
+  check_eq(ex("SAS31 and SAS32 are both level at FL330, climb SAS32 to FL370"), "ALT SAS32 FL370")
+  check_eq(ex("NAX7 is currently maintaining 270 knots, slow NAX7 to 240 knots"), "SPD NAX7 240")
+  check_eq(ex("NAX7 currently at FL290, descend NAX7 to FL250"), "ALT NAX7 FL250")
+  check_eq(ex("NAX7 is at FL290, turn NAX7 left heading 290"), "HDG NAX7 290 LEFT")
+  check_eq(ex("NAX7 is cleared to FL310"), "ALT NAX7 FL310")
+  check_eq(ex("NAX7 FL250"), "ALT NAX7 FL250")
+  check_eq(ex("when NAX7 is at FL250, turn left heading 100"), "ATALT NAX7 FL250 HDG NAX7 100 LEFT")
+  check_eq(ex("when NAX7's at FL250, turn left heading 100"), "ATALT NAX7 FL250 HDG NAX7 100 LEFT")
+  asked(ex("NAX7 is at FL290"), "a description alone")
+  asked(ex("NAX7's at FL290"), "a contracted description alone")
+  asked(ex("NAX7 is at FL290, NAX7"), "a description with the callsign again and no instruction")
+end
