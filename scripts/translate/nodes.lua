@@ -519,9 +519,39 @@ local function is_setting(name)
   return settings[name] == true
 end
 
+-- Two commands read from English that set the same target of one aircraft now to different values ("ALT
+-- KLM12 FL350 ; ALT KLM12 FL370", a level described and a level cleared): the two, or nil ("19000 ; FL190",
+-- one value said twice, is no contradiction). Typed TrafScript runs as typed.
+local ONE_TARGET = { ALT = true, HDG = true, SPD = true, VS = true }
+local function target_value(c)
+  local v = (c:match("^%S+%s+%S+%s+(%S+)") or ""):upper()
+  return v:match("^FL(%d+)$") and tonumber(v:match("^FL(%d+)$")) * 100 or tonumber(v) or v
+end
+local function contradicting(cmds)
+  local seen = {}
+  for _, c in ipairs(cmds) do
+    local name, acid = canonical_name(c:match("^(%S+)")), c:match("^%S+%s+(%S+)")
+    if name and ONE_TARGET[name] and acid then
+      local key = name .. " " .. acid:upper()
+      if seen[key] and target_value(seen[key]) ~= target_value(c) then return seen[key], c end
+      seen[key] = c
+    end
+  end
+  return nil
+end
+
 function M.validate(state, ctx)
   local cmds = M.split_commands(state.candidate or "")
   if #cmds == 0 then return rejected(state, ctx, "validate", "no command was produced") end
+  local first, second
+  if state.source ~= "typed" then first, second = contradicting(cmds) end
+  if first and state.source == "llm" then
+    return rejected(state, ctx, "validate", string.format("'%s' and '%s' set the same target", first, second))
+  elseif first then
+    state.ask = string.format("I have both '%s' and '%s'. Which one do you mean?", first, second)
+    M.say(state, "validate", "asks: " .. state.ask)
+    return "ask"
+  end
   local scratch = ctx.sim:copy()
   local outputs = {}
   for _, c in ipairs(cmds) do

@@ -8310,3 +8310,15 @@ do
   asked(ex("NAX7's at FL290"), "a contracted description alone")
   asked(ex("NAX7 is at FL290, NAX7"), "a description with the callsign again and no instruction")
 end
+
+-- Cycle 43 (lead): two commands read from English that set the same target of one aircraft now (a level described
+-- and a level cleared, a heading said twice) are asked, naming both; typed TrafScript runs as typed
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.0 090 FL300 250", "CRE EZY45 A320 52.2 4.4 180 FL300 240" })
+  local q = ex("we have KLM12 at FL350, climb KLM12 to FL370")
+  check(q:find("'ALT KLM12 FL350' and 'ALT KLM12 FL370'", 1, true) ~= nil, q)
+  asked(ex("KLM12's heading 090, turn KLM12 left heading 060"), "two headings for one aircraft")
+  check_eq(ex("KLM12 climb FL370, EZY45 climb FL350"), "ALT KLM12 FL370 ; ALT EZY45 FL350")
+  check_eq(ex("KLM12 climb FL370 and reduce 230"), "ALT KLM12 FL370 ; SPD KLM12 230")
+  check_eq(ex("ALT KLM12 FL350 ; ALT KLM12 FL370"), "ALT KLM12 FL350 ; ALT KLM12 FL370")
+end
