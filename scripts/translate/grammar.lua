@@ -895,6 +895,9 @@ local UNIT_CHANGE = { kt = "speed", kts = "speed", knots = "speed", ft = "alt", 
 local MORE_LESS = { more = 1, less = -1 }
 local GAIN_LOSE = { gain = 1, lose = -1 }
 
+-- lexicon.value_names as a set (written_forms: a name glued to its value)
+G.value_name_set = set_of(lexicon.value_names)
+
 local function written_forms(text)
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
   text = text:gsub("^(%s*)%.(%a)", "%1%2")
@@ -967,6 +970,15 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  -- "mach.76", "mach0.76", "fl.300", "hdg.240": a value's name glued to its value by a dot is the name,
+  -- then the value (Mach keeps its decimal point)
+  if text:find("%a0?%.%d") then
+    text = text:gsub("%f[%a](%a+)(0?)%.(%d)", function(name, zero, d)
+      local n = name:lower()
+      if n == "mach" then return name .. " " .. zero .. "." .. d end
+      if G.value_name_set[n] and zero == "" then return name .. " " .. d end
+    end)
+  end
   -- a position typed as one word of whole degrees ("55N030W", "37N020W"), as oceanic points are written
   text = text:gsub("%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
   -- a rate glued to its unit ("1000ft/min", "1500ft/m")
@@ -4695,10 +4707,21 @@ function G:unaccounted()
   local function fraction_left(i)
     return self:word(i, "half quarter quarters") and self:word(i - 1, "a one three") and self:word(i - 2, "and")
   end
+  -- ("heading 240 and mach,76", "foo.76"): a word with a digit and a mark inside it is no name and no value
+  -- the lexer read; unexplained, it is asked about
+  local function glued_value(i)
+    local w = self.t[i].text
+    if not (w:find("%d") and w:find("[^%w]")) then return false end
+    for _, r in ipairs(self.refs) do
+      if r.b <= i and r.e > i then return false end
+    end
+    return true
+  end
   for i, t in ipairs(self.t) do
-    if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
+    if t.kind == "word" and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text) or airline_left(i) or fraction_left(i)) then
+        and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text)
+          or airline_left(i) or fraction_left(i))) or glued_value(i)) then
       said[#said + 1] = i
     end
   end
@@ -4712,6 +4735,27 @@ function G:unaccounted()
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end
+      return
+    end
+  end
+end
+
+-- A hedge of lexicon.trailing_hedges straight after a value, closing its clause (the request's end or a
+-- mark after it: "descend fl300 maybe", "hdg 240, i think"), makes the request uncertain: asked, naming it.
+G.hedge_words = table.concat(lexicon.trailing_hedges.words, " ")
+function G:hedged()
+  local h = lexicon.trailing_hedges
+  local function closes(k) return self.t[k] == nil or self.t[k].kind == "punct" end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    local k, said = q.e, nil
+    if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
+    for _, p in ipairs(said and {} or h.pairs) do
+      if self:word(k, p[1]) and self:word(k + 1, p[2]) and closes(k + 2) then said = self:raw(k, k + 2) end
+    end
+    if said then
+      self.ask = string.format("%s. You said '%s' after '%s': should I send it as said, or which value do you mean?",
+        #self.out > 0 and "I have " .. table.concat(self.out, " ; ") or "I have no instruction",
+        said, self:raw(q.b, q.e))
       return
     end
   end
@@ -6222,6 +6266,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
+  if not g.ask and not g.leftover then g:hedged() end
   if not g.ask and g.leftover then
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)

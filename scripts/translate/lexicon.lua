@@ -717,6 +717,12 @@ return {
   -- how gently a climb or descent is flown ("climb at 800 feet a minute, nice and gentle"): said beside the
   -- vertical speed given, it restates it; with none ("climb FL340 gently") it is asked, no rate being known
   manner = { "nice", "gentle", "gently", "smooth", "smoothly" },
+  -- a hedge said straight after a value, closing its clause ("descend fl300 maybe", "heading 240 I think"): the
+  -- speaker is unsure of the value, which is asked; a hedge before it is courtesy ("could you maybe descend",
+  -- "maybe 280 knots"), and a value said loosely ("ish", "about", "or so") is the value said
+  trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure" },
+                      pairs = { { "not", "sure" }, { "i", "think" }, { "i", "guess" }, { "i", "believe" },
+                                { "not", "certain" } } },
   -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
   -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
   held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",
