@@ -3505,13 +3505,14 @@ end
 
 -- A level said after a correction replaces the level said before it, so it is never read as a step
 -- ("climb 9000... correction, 5000" from 7000 is a climb to 5000: the verb contradicts it, asked; it
--- was cleared as 12000); without a correction a small typed amount after "climb" stays a step
+-- was cleared as 12000); without a correction a small typed amount after "climb" below the aircraft is asked
+-- (to that level, or by that much?)
 do
   local _, ex = scene({ "CRE AUA456 A320 48 16 090 7000 250" })
   check(ex("AUA456 climb 9000... correction, 5000"):match("^ASK .*climb to 5000") ~= nil, "corrected below")
   asked(ex("AUA456 climb 9000 feet, correction, 5000 feet"), "corrected below, in feet")
   check_eq(ex("AUA456 climb 9000, correction 8000"), "ALT AUA456 8000")
-  check_eq(ex("AUA456 climb 2000"), "ALT AUA456 9000")
+  check(ex("AUA456 climb 2000"):match("^ASK AUA456 is at 7000 ft: climb to 2000 ft, or by 2000 ft%?") ~= nil, "to or by")
 end
 -- Values written with slashes between ("280/FL250/250kt") are values apart, each accounted for; a fraction stays
 -- whole and words with slashes are no values
@@ -4254,11 +4255,11 @@ do
   check_eq(ex("LAN9 turn right heading 150"), "HDG LAN9 150 RIGHT")
 end
 
--- A climb step read from the aircraft's level with no "by" ("climb 2000 feet" at FL200) is one aircraft's:
--- for several ("both climb 2000 feet") it asks; "by" said, each climbs that much
+-- "climb 2000 feet" at FL200 with no "by" (to a level below, or by that much?) is asked, for one aircraft or
+-- several ("both climb 2000 feet"); "by" said, each climbs that much
 do
   local _, ex = scene({ "CRE ARG1 B738 -34.0 -60.0 090 FL200 280", "CRE ARG2 B738 -34.5 -59.0 270 FL200 280" })
-  check_eq(ex("ARG1 climb 2000 feet"), "ALT ARG1 22000")
+  asked(ex("ARG1 climb 2000 feet"), "a climb to below the aircraft, no 'by': to or by?")
   check(ex("both climb 2000 feet"):match("^ASK Should ARG1 and ARG2 each climb by 2000 ft") ~= nil, "a step for two")
   check_eq(ex("both climb by 2000 feet"), "ALT ARG1 22000 ; ALT ARG2 22000")
 end
@@ -5270,12 +5271,12 @@ do
 end
 
 -- Cycle 33 (R68): "climb 4000 ft" or more in feet below the aircraft is a cleared altitude on the wrong side,
--- asked, never a climb by that much; a small step ("climb 2000 ft") and "up 4000" stay steps
+-- asked, never a climb by that much; so is a small amount ("climb 2000 ft"); "up 4000" and "by 5000" are steps
 do
   local _, ex = scene({ "CRE VLG3C A320 41.0 2.0 300 FL80 230" })
   asked(ex("VLG3C climb 5000 ft"), "a level below, said after climb")
   asked(ex("VLG3C climb 4000 ft"), "a level below, said after climb")
-  check_eq(ex("VLG3C climb 2000 ft"), "ALT VLG3C 10000")
+  asked(ex("VLG3C climb 2000 ft"), "a small amount below the aircraft, no 'by': to or by?")
   check_eq(ex("VLG3C climb by 5000 ft"), "ALT VLG3C 13000")
 end
 
@@ -6404,11 +6405,11 @@ do
   check_eq(ex("set vertical separation to 1000 ft"), "ZONEDH 1000")
 end
 
--- Cycle 38 (fix78): "descend 2000 feet" typed after the verb from FL200 up is the step (nobody clears an
--- aircraft in the flight levels straight to below 4000 ft); lower down, or for several aircraft, asked
+-- Cycle 38 (fix78): "descend 2000 feet" typed after the verb, from the flight levels or lower down, for one
+-- aircraft or several, is asked: to or by?
 do
   local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL310 270", "CRE EWG9 A320 52.1 4.1 020 FL150 250" })
-  check_eq(ex("NLX40 descend 3000 ft"), "ALT NLX40 28000")
+  asked(ex("NLX40 descend 3000 ft"), "to or by from FL310 (cycle 44: a step to some writers, the approach altitude to others)")
   asked(ex("EWG9 descend 3000 ft"), "to or by from FL150")
   asked(ex("NLX40 and EWG9 descend 2000 feet"), "to or by for two aircraft")
   check_eq(ex("NLX40 descend to 3000 ft"), "ALT NLX40 3000")
@@ -8321,4 +8322,65 @@ do
   check_eq(ex("KLM12 climb FL370, EZY45 climb FL350"), "ALT KLM12 FL370 ; ALT EZY45 FL350")
   check_eq(ex("KLM12 climb FL370 and reduce 230"), "ALT KLM12 FL370 ; SPD KLM12 230")
   check_eq(ex("ALT KLM12 FL350 ; ALT KLM12 FL370"), "ALT KLM12 FL350 ; ALT KLM12 FL370")
+end
+
+-- Cycle 44 (hz44): a climb to a value below the aircraft, or a descent to one above it, with no "by" said, is
+-- asked (to that level, or by that much?), never read as a step; "by", "up", "another" say the step
+do
+  local _, ex = scene({ "CRE PHLOW C172 52.0 4.0 090 2500 100", "CRE KLM61 B738 52.2 4.2 270 FL240 280",
+    "CRE TRA7 B738 52.4 4.4 180 FL330 280" })
+  local q = ex("PHLOW climb 2000")
+  check(q:match("^ASK PHLOW is at 2500 ft: climb to 2000 ft, or by 2000 ft%?") ~= nil, q)
+  asked(ex("PHLOW climb 1500 feet"), "a climb to below, in feet")
+  asked(ex("KLM61 climb 1000 ft"), "a small amount from the flight levels")
+  asked(ex("PHLOW descend 3000"), "a descent to above the aircraft")
+  asked(ex("PHLOW descend to 3200 ft"), "a descent to a little above the aircraft")
+  check_eq(ex("PHLOW climb 4500"), "ALT PHLOW 4500")
+  check_eq(ex("PHLOW climb by 1500 feet"), "ALT PHLOW 4000")
+  check_eq(ex("KLM61 up 2000 feet"), "ALT KLM61 26000")
+  check_eq(ex("KLM61 climb another 1000 feet"), "ALT KLM61 25000")
+  -- "descend 3000 feet" from the flight levels: the step to some, the approach altitude to others
+  asked(ex("TRA7, descend 2000 feet"), "to or by from FL330")
+  asked(ex("TRA7 cleared ILS runway two seven, descend 3000 feet"), "to or by after an approach clearance")
+  check_eq(ex("TRA7 descend to 3000 feet"), "ALT TRA7 3000")
+  check_eq(ex("TRA7 descend by 3000 feet"), "ALT TRA7 30000")
+  check_eq(ex("TRA7 runway two seven, descend one zero thousand"), "ALT TRA7 10000")
+end
+
+-- Cycle 44 (hz44): a value's name glued to its value by a dot ("mach.78", "mach0.78", "fl.250") is the name and
+-- the value; a word holding a digit and a mark that nothing read ("mach,78", "zz.80") is asked about by name
+do
+  local _, ex = scene({ "CRE SWR83 A333 47.0 8.0 090 FL350 290" })
+  check_eq(ex("swr83 turn left heading 100 and mach.81"), "HDG SWR83 100 LEFT ; SPD SWR83 M0.81")
+  check_eq(ex("swr83 mach0.79"), "SPD SWR83 M0.79")
+  check_eq(ex("swr83 fl.370 and heading 120"), "ALT SWR83 FL370 ; HDG SWR83 120")
+  check_eq(ex("swr83 heading 100 and mach,81"), "ASK I have HDG SWR83 100. What does 'mach,81' mean?")
+  check_eq(ex("swr83 heading 100 zz.80"), "ASK I have HDG SWR83 100. What does 'zz.80' mean?")
+end
+
+-- Cycle 44 (hz44): a level said after "through" ("expedite climb through FL200") is one to pass: with no level
+-- to fly to it is asked; with one ("through FL180 to FL120") the aircraft flies to that one
+do
+  local _, ex = scene({ "CRE DLH5T A320 50.0 8.5 180 FL280 280" })
+  local q = ex("DLH5T descend through flight level one eight zero")
+  check(q:find("'through flight level one eight zero' is a level to pass", 1, true) ~= nil, q)
+  asked(ex("DLH5T descend thru FL180"), "through, typed thru")
+  asked(ex("DLH5T climb through 30000 feet"), "through, in feet")
+  check_eq(ex("DLH5T descend through FL180 to FL120"), "ALT DLH5T FL120")
+end
+
+-- Cycle 44 (hz44): a hedge straight after a value, closing its clause ("fl200 perhaps", "heading 090 I guess")
+-- is asked, naming the hedge; a hedge before the value is courtesy, a loose value ("ish", "about", "or so") is
+-- the value said
+do
+  local _, ex = scene({ "CRE AFR71 A320 45.0 5.0 090 FL300 280" })
+  local q = ex("afr71 descend fl220 perhaps")
+  check(q:find("You said 'perhaps' after", 1, true) ~= nil, q)
+  asked(ex("afr71 heading 140 i guess"), "I guess")
+  asked(ex("afr71 speed 250 probably, and heading 140"), "a hedge closing its clause before a comma")
+  asked(ex("afr71 descend fl220 maybe?"), "a hedge before a question mark")
+  check_eq(ex("afr71 descend fl220 or so"), "ALT AFR71 FL220")
+  check_eq(ex("afr71 speed 250ish"), "SPD AFR71 250")
+  check_eq(ex("could you maybe descend afr71 to fl220"), "ALT AFR71 FL220")
+  check_eq(ex("afr71 a bit slower, maybe 260 knots"), "SPD AFR71 260")
 end
