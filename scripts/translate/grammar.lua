@@ -185,7 +185,7 @@ local function know_all(v, seen)
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
-      or v == lexicon.dictated_punctuation then
+      or v == lexicon.dictated_punctuation or v == lexicon.acknowledged then
     return
   end
   seen[v] = true
@@ -4865,6 +4865,44 @@ function G:refused()
   end
 end
 
+-- "roger Mayday, descend FL100", "pan pan acknowledged, turn left heading 210", "emergency descent approved,
+-- descend and maintain 10000": a distress or urgency call acknowledged, or a request granted
+-- (lexicon.acknowledged), is set aside: no command, the instructions beside it read alone. The call's words
+-- end there: at punctuation, the end, or an instruction word other than "descent" ("roger the emergency
+-- descent ..." asks); a call said with no acknowledgement ("Mayday", "declare an emergency") still asks.
+G.acknowledged_sets = {}
+for _, k in ipairs({ "calls", "before", "articles", "after" }) do
+  G.acknowledged_sets[k] = set_of(lexicon.acknowledged[k])
+end
+function G:acknowledged()
+  local A = G.acknowledged_sets
+  if not self:said(A.calls) and not self:said("deviation deviations") then return end
+  local function ends(k)
+    local t = self.t[k]
+    return not t or t.kind == "punct" or (self:intent_at(k) ~= nil and not self:word(k, "descent"))
+  end
+  for i = 1, #self.t do
+    if self:word(i, A.calls) and not self.u:used(i) then
+      -- the run of call words ("pan pan pan"), an acknowledgement before or after it
+      local b, e = i, i
+      while self:word(e + 1, A.calls) do e = e + 1 end
+      if self:word(b - 1, A.articles) then b = b - 1 end
+      if self.t[b - 1] and self.t[b - 1].text == "," and self:word(b - 2, A.before) then b = b - 1 end
+      local before = self:word(b - 1, A.before)
+      if before then b = b - 1 end
+      local after = self:word(e + 1, A.after)
+      if after then e = e + 1 end
+      if (before or after) and ends(e + 1) then self:set_aside(b, e) end
+    end
+    for _, p in ipairs(lexicon.acknowledged.granted) do
+      local ok = true
+      for x = 1, #p do ok = ok and self:word(i + x - 1, p[x]) end
+      local t = self.t[i + #p]
+      if ok and (not t or t.kind == "punct") then self:set_aside(i, i + #p - 1) end
+    end
+  end
+end
+
 -- Every word that starts a phrase of lexicon.not_simulated.
 local NOT_SIMULATED_WORDS = {}
 for _, c in ipairs(lexicon.not_simulated) do
@@ -6130,6 +6168,7 @@ function M.translate(text, world)
   g:places_corrected()
   g:question_back()
   g:refused()
+  g:acknowledged()
   g:stations()
   g:exercise_names()
   g:places_by_position()

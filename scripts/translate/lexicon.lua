@@ -928,6 +928,10 @@ return {
     -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
     -- ("Mach number 0.78" names the speed's unit, no sequence)
     { what = "approach sequences", words = "number", near = { "#number" }, window = 1, not_after = "mach" },
+    -- "say fuel remaining", "souls on board?": what a controller asks of an aircraft in distress, answered by
+    -- the pilot
+    { what = "reports of fuel and persons on board", words = "fuel souls persons", window = 2,
+      near = { "remaining", "endurance", "board" } },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
@@ -1173,6 +1177,19 @@ return {
   perf_models = { openap = "OPENAP", class = "CLASS", classes = "CLASS", legacy = "CLASS", simple = "CLASS" },
   -- the colours TRAIL acid accepts
   trail_colours = { "blue", "red", "yellow" },
+  -- what a controller acknowledges or refuses beside an instruction, set aside with no command of its own
+  -- (G:acknowledged, G:refused); accounted for only there ("Mayday" or "deviation" anywhere else asks):
+  acknowledged = {
+    -- a distress or urgency call, acknowledged before it ("roger Mayday", "copy your pan pan", "roger the
+    -- emergency") or after it ("Mayday acknowledged", "pan pan received")
+    calls = { "mayday", "pan", "emergency" },
+    before = { "roger", "copy", "copied", "understood", "acknowledge" },
+    articles = { "the", "your" },
+    after = { "acknowledged", "received", "copied", "understood", "noted" },
+    -- a request granted, said whole and ending its clause ("emergency descent approved, descend ...",
+    -- "deviation approved, when able proceed direct BRISS")
+    granted = { { "emergency", "descent", "approved" }, { "deviation", "approved" }, { "deviations", "approved" } },
+  },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of

@@ -8322,3 +8322,25 @@ do
   check_eq(ex("KLM12 climb FL370 and reduce 230"), "ALT KLM12 FL370 ; SPD KLM12 230")
   check_eq(ex("ALT KLM12 FL350 ; ALT KLM12 FL370"), "ALT KLM12 FL350 ; ALT KLM12 FL370")
 end
+
+-- Cycle 44 (f96): a distress or urgency call acknowledged ("roger Mayday", "pan pan acknowledged", "roger the
+-- emergency"), a request granted ("emergency descent approved", "deviation approved") ending its clause, and a
+-- controller's questions of an aircraft in distress ("say fuel remaining") carry no command: the instructions
+-- beside them are read alone. A call with no acknowledgement, or a grant with a value in its clause, asks.
+do
+  local _, ex = scene({ "CRE UAL418 B739 40.5 -74.5 090 FL280 290", "CRE EXS22M B738 53.2 -2.1 180 FL200 270" })
+  check_eq(ex("United 418 roger your Mayday, descend and maintain one two thousand"), "ALT UAL418 12000")
+  check_eq(ex("Jet2 22 mike, pan pan received, turn right heading 150"), "HDG EXS22M 150 RIGHT")
+  check_eq(ex("United 418, copy, Mayday, turn left heading 020 descend FL150"), "HDG UAL418 20 LEFT ; ALT UAL418 FL150")
+  check_eq(ex("united four one eight roger mayday descend flight level one six zero"), "ALT UAL418 FL160")
+  check_eq(ex("United 418 understood the emergency, fly heading 330"), "HDG UAL418 330")
+  check_eq(ex("Jet2 22M emergency descent approved, descend FL120"), "ALT EXS22M FL120")
+  check_eq(ex("United 418 deviations approved, when able turn right heading 090"), "HDG UAL418 90 RIGHT")
+  check_eq(ex("Jet2 22M roger pan, say persons on board, descend FL100"), "ALT EXS22M FL100")
+  asked(ex("United 418 Mayday, descend FL150"), "a call with no acknowledgement")
+  asked(ex("United 418 roger Mayday"), "an acknowledgement alone")
+  asked(ex("United 418 roger the emergency descent FL150"), "an acknowledgement running into a descent")
+  asked(ex("Jet2 22M emergency descent, descend FL120"), "an emergency descent not granted")
+  asked(ex("United 418 deviation approved 20 degrees right"), "a deviation granted with a value")
+  asked(ex("United 418 Mayday relay, descend FL150"), "a relay")
+end
