@@ -4851,16 +4851,46 @@ function G:instruction_before(i)
   return false
 end
 
--- "unable FL380, maintain FL360": the value said straight after "unable" is one the controller cannot
--- give (a request refused); its tokens are marked used and explained, no instruction of their own ("if
--- unable FL380, ..." is a condition on the pilot, left to the parse).
+-- "unable FL380, maintain FL360", "unable direct BOYNE, fly heading 070", "unable that heading, turn left
+-- heading 230", "unable higher due traffic, ...", "unable, maintain present heading": what the controller
+-- refuses straight after "unable" (a value, a direct-to, a word of lexicon.acknowledged.refused, or nothing
+-- before punctuation), with a reason after it that ends its clause and names no value and no aircraft, is set
+-- aside: no instruction of its own. "unable" after a word of lexicon.acknowledged.pilots ("if unable FL380,
+-- ...") is a condition on the pilot, left to the parse; "unable" before anything else is left to be asked.
+G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
+  articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
 function G:refused()
   if not self:said("unable") then return end
+  local R = G.refused_sets
   for i = 1, #self.t - 1 do
-    local q = self:word(i, "unable") and not self:word(i - 1, "if") and self:quantities(i + 1, #self.t + 1)[1]
-    if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
-      self:mark_used(i, q.e)
-      for k = i, q.e - 1 do self.noted[k] = true end
+    local e  -- the last token refused
+    if self:word(i, "unable") and not self:word(i - 1, R.pilots) then
+      local q = self:quantities(i + 1, #self.t + 1)[1]
+      local k = self:word(i + 1, "direct") and (self:word(i + 2, "to") and i + 3 or i + 2)
+      local place = k and self:refs_in(k, k + 1, "waypoint")[1]
+      local noun = self:word(i + 1, R.articles) and i + 2 or i + 1
+      if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
+        e = q.e - 1
+      elseif place then
+        e = place.e - 1
+      elseif self:word(noun, R.refused) then
+        e = noun
+      elseif self.t[i + 1].kind == "punct" or self:word(i + 1, "@reason") then
+        e = i
+      end
+    end
+    if e then
+      -- ("due traffic", "because of the weather": the reason, to its clause's end)
+      if self:word(e + 1, "@reason") then
+        local p = e + 1
+        while self.t[p] and self.t[p].kind ~= "punct" do p = p + 1 end
+        if #self:quantities(e + 1, p) == 0 and #self:refs_in(e + 1, p, "aircraft") == 0
+            and #self:refs_in(e + 1, p, "waypoint") == 0 then
+          self:blank(e + 1)  -- (no reason of the instructions after it)
+          e = p - 1
+        end
+      end
+      self:set_aside(i, e)
     end
   end
 end

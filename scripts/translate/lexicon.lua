@@ -1189,6 +1189,12 @@ return {
     -- a request granted, said whole and ending its clause ("emergency descent approved, descend ...",
     -- "deviation approved, when able proceed direct BRISS")
     granted = { { "emergency", "descent", "approved" }, { "deviation", "approved" }, { "deviations", "approved" } },
+    -- what "unable" refuses, said after it with "that", "the", "your" or "this" or alone ("unable that heading",
+    -- "unable higher"); "unable" is the pilot's own after these words ("if unable", "advise when unable")
+    refused = { "heading", "level", "altitude", "speed", "request", "routing", "route", "climb", "descent", "turn",
+      "shortcut", "higher", "lower" },
+    refused_articles = { "that", "the", "your", "this" },
+    pilots = { "if", "when", "you", "you're", "are", "not" },
   },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },

@@ -1781,7 +1781,7 @@ do
   -- a position no command carries is asked about, also beside a relative word or "by"
   asked(ex("Shamrock 105, climb FL380, cross 30 West at or above FL370"), "Shamrock 105, climb FL380, cross 30 West at or above FL370")
   asked(ex("Shamrock 105, climb to reach FL380 by 20 West"), "Shamrock 105, climb to reach FL380 by 20 West")
-  asked(ex("Shamrock 105 unable direct MALOT, turn left heading 250"), "Shamrock 105 unable direct MALOT, turn left heading 250")
+  check_eq(ex("Shamrock 105 unable direct MALOT, turn left heading 250"), "HDG EIN105 250 LEFT")
   check_eq(ex("WJA3 climb to FL360, not above"), "ALT WJA3 FL360")
   asked(ex("WJA3 climb FL380, not above FL370"), "WJA3 climb FL380, not above FL370")
   check_eq(ex("Air Portugal 237, Mach decimal seven eight approved"), "SPD TAP237 M0.78")
@@ -8343,4 +8343,22 @@ do
   asked(ex("Jet2 22M emergency descent, descend FL120"), "an emergency descent not granted")
   asked(ex("United 418 deviation approved 20 degrees right"), "a deviation granted with a value")
   asked(ex("United 418 Mayday relay, descend FL150"), "a relay")
+end
+
+-- Cycle 44 (f96): what "unable" refuses (a value, a direct-to, "that heading", "higher", or nothing before a
+-- comma), with a reason after it ending its clause, is set aside; the instruction after it is read alone.
+-- "unable" of the pilot ("if unable", "when unable") or before anything else asks.
+do
+  local _, ex = scene({ "CRE UAL418 B739 40.5 -74.5 090 FL280 290", "CRE EXS22M B738 53.2 -2.1 180 FL200 270" })
+  check_eq(ex("United 418 unable FL320 due to traffic, maintain FL280, turn left heading 060"),
+    "ALT UAL418 FL280 ; HDG UAL418 60 LEFT")
+  check_eq(ex("United 418 unable higher because of crossing traffic, fly heading 100"), "HDG UAL418 100")
+  check_eq(ex("Jet2 22M unable your request, reduce speed 250 knots"), "SPD EXS22M 250")
+  check_eq(ex("Jet2 22M unable, turn right heading 200"), "HDG EXS22M 200 RIGHT")
+  check_eq(ex("Jet2 22M unable due weather, descend FL160"), "ALT EXS22M FL160")
+  asked(ex("Jet2 22M unable direct to nowhere, turn right heading 200"), "a refusal of no place")
+  asked(ex("Jet2 22M unable to comply, turn right heading 200"), "unable before something else")
+  asked(ex("Jet2 22M, if unable FL240, turn right heading 200"), "the pilot's unable")
+  asked(ex("Jet2 22M unable FL240 due traffic at FL230, turn right heading 200"), "a reason naming a value")
+  asked(ex("Jet2 22M unable"), "unable alone")
 end
