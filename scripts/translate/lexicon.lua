@@ -1060,6 +1060,8 @@ return {
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
     -- letters said by their English names where that name is no everyday word ("five kay alfa")
     kay = "K", aitch = "H", dee = "D", vee = "V", zed = "Z",
+    -- the older alphabet's word for F, still said by some controllers ("Virgin two five fox")
+    fox = "F",
   },
   -- what speech recognition writes for an instruction word that sounds alike
   -- ("the send flight level one niner zero", "turn write heading 040",

@@ -8362,3 +8362,12 @@ do
   asked(ex("Jet2 22M unable FL240 due traffic at FL230, turn right heading 200"), "a reason naming a value")
   asked(ex("Jet2 22M unable"), "unable alone")
 end
+
+-- Cycle 44 (f96): "fox", the older alphabet's word for F, is that letter of a callsign; a callsign it makes that
+-- no aircraft bears is asked, as with "foxtrot"
+do
+  local _, ex = scene({ "CRE DLH7F A320 50.0 8.0 090 FL280 290", "CRE BAW51 B738 51.2 -0.1 180 FL200 270" })
+  check_eq(ex("Lufthansa seven fox, climb flight level three one zero"), "ALT DLH7F FL310")
+  check_eq(ex("lufthansa 7 fox turn right heading 120"), "HDG DLH7F 120 RIGHT")
+  asked(ex("Speedbird 51 fox, climb FL240"), "a letter no aircraft's callsign holds")
+end
