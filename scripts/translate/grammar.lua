@@ -4179,8 +4179,9 @@ function G:meaning_carried(i, kinds)
     return true
   end
   -- "cancel your route": the route deleted
+  -- ("flight plan cancel, delete the route": the plan named straight before it)
   if self:word(i, "cancel cancels cancelled canceled") and kinds.delrte
-      and self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") then
+      and (self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") or self:word(i - 1, "plan rte route")) then
     return true
   end
   -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)

@@ -229,7 +229,9 @@ return {
         -- a place said as over a point ("move it right on top of DUDSO")
         "right on top of", "on top of",
         -- the speaker holding the room a moment ("hang on, freeze it there")
-        "hang on", "bear with me",
+        "hang on", "bear with me", "stand by",
+        -- the simulation's conflict resolution named by a pilot's word for it ("resolution advisories on, MVP")
+        "resolution advisories", "resolution advisory",
         -- urgency, said with a negation ("descend FL150 without delay")
         "without delay", "with no delay", "without any delay" },
     -- the ordinary accompaniments of instructions: verbs of changing a setting, participles that

@@ -8371,3 +8371,27 @@ do
   check_eq(ex("lufthansa 7 fox turn right heading 120"), "HDG DLH7F 120 RIGHT")
   asked(ex("Speedbird 51 fox, climb FL240"), "a letter no aircraft's callsign holds")
 end
+
+-- Cycle 44 (f96): a sim operator's words: "inject" an aircraft (CRE), "drop X from the exercise" (DEL), "speed it
+-- up to times N" (DTMULT), "stand by", "resolution advisories" (RESO); a route's edits: "take out FIX" (DELWPT),
+-- "read me back your route" (LISTRTE), "flight plan cancel, delete the route" (DELRTE); CityJet by its name
+do
+  local _, ex = scene({ "CRE BCY41 E190 53.4 -6.0 320 FL120 250", "CRE EIN88 A320 53.6 -6.8 090 FL300 280",
+      "DEFWPT LIFFY 53.5 -5.5", "DEFWPT NIMAT 53.6 -4.5", "ADDWPT EIN88 LIFFY", "ADDWPT EIN88 NIMAT" })
+  check_eq(ex("inject Ryanair 7TK, B738, at 53.2 -6.4 heading 180 FL240 290 kts"), "CRE RYR7TK B738 53.2 -6.4 180 FL240 290")
+  check_eq(ex("exercise control: drop Cityjet 41 from the sim"), "DEL BCY41")
+  check_eq(ex("City Ireland four one, descend FL100"), "ALT BCY41 FL100")
+  check_eq(ex("speed it up to times 3"), "DTMULT 3")
+  check_eq(ex("pause the simulation, stand by"), "HOLD")
+  check_eq(ex("resolution advisories on, MVP"), "RESO MVP")
+  check_eq(ex("Shamrock 88 take out NIMAT"), "DELWPT EIN88 NIMAT")
+  check_eq(ex("Shamrock 88 take LIFFY out"), "DELWPT EIN88 LIFFY")
+  check_eq(ex("Shamrock 88 read back your routing"), "LISTRTE EIN88")
+  check_eq(ex("Shamrock 88, flight plan cancelled, delete the route"), "DELRTE EIN88")
+  asked(ex("inject a fault into Shamrock 88"), "an injection of no aircraft")
+  asked(ex("drop Cityjet 41 from the list"), "dropped from no run")
+  asked(ex("speed it up to times 3, Shamrock 88"), "an aircraft named beside the rate")
+  asked(ex("Shamrock 88 traffic advisory, climb FL320"), "an advisory of no resolution")
+  asked(ex("Shamrock 88 flight plan cancel, climb FL320"), "a plan cancelled with no deletion")
+  asked(ex("Shamrock 88 read back your heading"), "a readback of no route")
+end
