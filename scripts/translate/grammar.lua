@@ -185,7 +185,7 @@ local function know_all(v, seen)
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
-      or v == lexicon.dictated_punctuation then
+      or v == lexicon.dictated_punctuation or v == lexicon.acknowledged then
     return
   end
   seen[v] = true
@@ -4191,8 +4191,9 @@ function G:meaning_carried(i, kinds)
     return true
   end
   -- "cancel your route": the route deleted
+  -- ("flight plan cancel, delete the route": the plan named straight before it)
   if self:word(i, "cancel cancels cancelled canceled") and kinds.delrte
-      and self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") then
+      and (self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") or self:word(i - 1, "plan rte route")) then
     return true
   end
   -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)
@@ -4895,16 +4896,84 @@ function G:instruction_before(i)
   return false
 end
 
--- "unable FL380, maintain FL360": the value said straight after "unable" is one the controller cannot
--- give (a request refused); its tokens are marked used and explained, no instruction of their own ("if
--- unable FL380, ..." is a condition on the pilot, left to the parse).
+-- "unable FL380, maintain FL360", "unable direct BOYNE, fly heading 070", "unable that heading, turn left
+-- heading 230", "unable higher due traffic, ...", "unable, maintain present heading": what the controller
+-- refuses straight after "unable" (a value, a direct-to, a word of lexicon.acknowledged.refused, or nothing
+-- before punctuation), with a reason after it that ends its clause and names no value and no aircraft, is set
+-- aside: no instruction of its own. "unable" after a word of lexicon.acknowledged.pilots ("if unable FL380,
+-- ...") is a condition on the pilot, left to the parse; "unable" before anything else is left to be asked.
+G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
+  articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
 function G:refused()
   if not self:said("unable") then return end
+  local R = G.refused_sets
   for i = 1, #self.t - 1 do
-    local q = self:word(i, "unable") and not self:word(i - 1, "if") and self:quantities(i + 1, #self.t + 1)[1]
-    if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
-      self:mark_used(i, q.e)
-      for k = i, q.e - 1 do self.noted[k] = true end
+    local e  -- the last token refused
+    if self:word(i, "unable") and not self:word(i - 1, R.pilots) then
+      local q = self:quantities(i + 1, #self.t + 1)[1]
+      local k = self:word(i + 1, "direct") and (self:word(i + 2, "to") and i + 3 or i + 2)
+      local place = k and self:refs_in(k, k + 1, "waypoint")[1]
+      local noun = self:word(i + 1, R.articles) and i + 2 or i + 1
+      if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
+        e = q.e - 1
+      elseif place then
+        e = place.e - 1
+      elseif self:word(noun, R.refused) then
+        e = noun
+      elseif self.t[i + 1].kind == "punct" or self:word(i + 1, "@reason") then
+        e = i
+      end
+    end
+    if e then
+      -- ("due traffic", "because of the weather": the reason, to its clause's end)
+      if self:word(e + 1, "@reason") then
+        local p = e + 1
+        while self.t[p] and self.t[p].kind ~= "punct" do p = p + 1 end
+        if #self:quantities(e + 1, p) == 0 and #self:refs_in(e + 1, p, "aircraft") == 0
+            and #self:refs_in(e + 1, p, "waypoint") == 0 then
+          self:blank(e + 1)  -- (no reason of the instructions after it)
+          e = p - 1
+        end
+      end
+      self:set_aside(i, e)
+    end
+  end
+end
+
+-- "roger Mayday, descend FL100", "pan pan acknowledged, turn left heading 210", "emergency descent approved,
+-- descend and maintain 10000": a distress or urgency call acknowledged, or a request granted
+-- (lexicon.acknowledged), is set aside: no command, the instructions beside it read alone. The call's words
+-- end there: at punctuation, the end, or an instruction word other than "descent" ("roger the emergency
+-- descent ..." asks); a call said with no acknowledgement ("Mayday", "declare an emergency") still asks.
+G.acknowledged_sets = {}
+for _, k in ipairs({ "calls", "before", "articles", "after" }) do
+  G.acknowledged_sets[k] = set_of(lexicon.acknowledged[k])
+end
+function G:acknowledged()
+  local A = G.acknowledged_sets
+  if not self:said(A.calls) and not self:said("deviation deviations") then return end
+  local function ends(k)
+    local t = self.t[k]
+    return not t or t.kind == "punct" or (self:intent_at(k) ~= nil and not self:word(k, "descent"))
+  end
+  for i = 1, #self.t do
+    if self:word(i, A.calls) and not self.u:used(i) then
+      -- the run of call words ("pan pan pan"), an acknowledgement before or after it
+      local b, e = i, i
+      while self:word(e + 1, A.calls) do e = e + 1 end
+      if self:word(b - 1, A.articles) then b = b - 1 end
+      if self.t[b - 1] and self.t[b - 1].text == "," and self:word(b - 2, A.before) then b = b - 1 end
+      local before = self:word(b - 1, A.before)
+      if before then b = b - 1 end
+      local after = self:word(e + 1, A.after)
+      if after then e = e + 1 end
+      if (before or after) and ends(e + 1) then self:set_aside(b, e) end
+    end
+    for _, p in ipairs(lexicon.acknowledged.granted) do
+      local ok = true
+      for x = 1, #p do ok = ok and self:word(i + x - 1, p[x]) end
+      local t = self.t[i + #p]
+      if ok and (not t or t.kind == "punct") then self:set_aside(i, i + #p - 1) end
     end
   end
 end
@@ -6174,6 +6243,7 @@ function M.translate(text, world)
   g:places_corrected()
   g:question_back()
   g:refused()
+  g:acknowledged()
   g:stations()
   g:exercise_names()
   g:places_by_position()

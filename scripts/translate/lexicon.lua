@@ -229,7 +229,9 @@ return {
         -- a place said as over a point ("move it right on top of DUDSO")
         "right on top of", "on top of",
         -- the speaker holding the room a moment ("hang on, freeze it there")
-        "hang on", "bear with me",
+        "hang on", "bear with me", "stand by",
+        -- the simulation's conflict resolution named by a pilot's word for it ("resolution advisories on, MVP")
+        "resolution advisories", "resolution advisory",
         -- urgency, said with a negation ("descend FL150 without delay")
         "without delay", "with no delay", "without any delay" },
     -- the ordinary accompaniments of instructions: verbs of changing a setting, participles that
@@ -934,6 +936,10 @@ return {
     -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
     -- ("Mach number 0.78" names the speed's unit, no sequence)
     { what = "approach sequences", words = "number", near = { "#number" }, window = 1, not_after = "mach" },
+    -- "say fuel remaining", "souls on board?": what a controller asks of an aircraft in distress, answered by
+    -- the pilot
+    { what = "reports of fuel and persons on board", words = "fuel souls persons", window = 2,
+      near = { "remaining", "endurance", "board" } },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
@@ -1062,6 +1068,8 @@ return {
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
     -- letters said by their English names where that name is no everyday word ("five kay alfa")
     kay = "K", aitch = "H", dee = "D", vee = "V", zed = "Z",
+    -- the older alphabet's word for F, still said by some controllers ("Virgin two five fox")
+    fox = "F",
   },
   -- what speech recognition writes for an instruction word that sounds alike
   -- ("the send flight level one niner zero", "turn write heading 040",
@@ -1179,6 +1187,25 @@ return {
   perf_models = { openap = "OPENAP", class = "CLASS", classes = "CLASS", legacy = "CLASS", simple = "CLASS" },
   -- the colours TRAIL acid accepts
   trail_colours = { "blue", "red", "yellow" },
+  -- what a controller acknowledges or refuses beside an instruction, set aside with no command of its own
+  -- (G:acknowledged, G:refused); accounted for only there ("Mayday" or "deviation" anywhere else asks):
+  acknowledged = {
+    -- a distress or urgency call, acknowledged before it ("roger Mayday", "copy your pan pan", "roger the
+    -- emergency") or after it ("Mayday acknowledged", "pan pan received")
+    calls = { "mayday", "pan", "emergency" },
+    before = { "roger", "copy", "copied", "understood", "acknowledge" },
+    articles = { "the", "your" },
+    after = { "acknowledged", "received", "copied", "understood", "noted" },
+    -- a request granted, said whole and ending its clause ("emergency descent approved, descend ...",
+    -- "deviation approved, when able proceed direct BRISS")
+    granted = { { "emergency", "descent", "approved" }, { "deviation", "approved" }, { "deviations", "approved" } },
+    -- what "unable" refuses, said after it with "that", "the", "your" or "this" or alone ("unable that heading",
+    -- "unable higher"); "unable" is the pilot's own after these words ("if unable", "advise when unable")
+    refused = { "heading", "level", "altitude", "speed", "request", "routing", "route", "climb", "descent", "turn",
+      "shortcut", "higher", "lower" },
+    refused_articles = { "that", "the", "your", "this" },
+    pilots = { "if", "when", "you", "you're", "are", "not" },
+  },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of

@@ -181,6 +181,9 @@ local names = {
     { "cobalt", "FCB" },
     { "jetset", "JSX" },
     { "aer lingus", "EIN" },
+    -- CityJet, Dublin: its telephony and its name
+    { "city ireland", "BCY" },
+    { "cityjet", "BCY" },
     { "aero lloyd", "AEF" },
     { "hapag lloyd", "HLF" },
     { "germanwings", "GWI" },

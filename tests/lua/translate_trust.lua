@@ -1781,7 +1781,7 @@ do
   -- a position no command carries is asked about, also beside a relative word or "by"
   asked(ex("Shamrock 105, climb FL380, cross 30 West at or above FL370"), "Shamrock 105, climb FL380, cross 30 West at or above FL370")
   asked(ex("Shamrock 105, climb to reach FL380 by 20 West"), "Shamrock 105, climb to reach FL380 by 20 West")
-  asked(ex("Shamrock 105 unable direct MALOT, turn left heading 250"), "Shamrock 105 unable direct MALOT, turn left heading 250")
+  check_eq(ex("Shamrock 105 unable direct MALOT, turn left heading 250"), "HDG EIN105 250 LEFT")
   check_eq(ex("WJA3 climb to FL360, not above"), "ALT WJA3 FL360")
   asked(ex("WJA3 climb FL380, not above FL370"), "WJA3 climb FL380, not above FL370")
   check_eq(ex("Air Portugal 237, Mach decimal seven eight approved"), "SPD TAP237 M0.78")
@@ -8383,4 +8383,77 @@ do
   check_eq(ex("afr71 speed 250ish"), "SPD AFR71 250")
   check_eq(ex("could you maybe descend afr71 to fl220"), "ALT AFR71 FL220")
   check_eq(ex("afr71 a bit slower, maybe 260 knots"), "SPD AFR71 260")
+end
+
+-- Cycle 44 (f96): a distress or urgency call acknowledged ("roger Mayday", "pan pan acknowledged", "roger the
+-- emergency"), a request granted ("emergency descent approved", "deviation approved") ending its clause, and a
+-- controller's questions of an aircraft in distress ("say fuel remaining") carry no command: the instructions
+-- beside them are read alone. A call with no acknowledgement, or a grant with a value in its clause, asks.
+do
+  local _, ex = scene({ "CRE UAL418 B739 40.5 -74.5 090 FL280 290", "CRE EXS22M B738 53.2 -2.1 180 FL200 270" })
+  check_eq(ex("United 418 roger your Mayday, descend and maintain one two thousand"), "ALT UAL418 12000")
+  check_eq(ex("Jet2 22 mike, pan pan received, turn right heading 150"), "HDG EXS22M 150 RIGHT")
+  check_eq(ex("United 418, copy, Mayday, turn left heading 020 descend FL150"), "HDG UAL418 20 LEFT ; ALT UAL418 FL150")
+  check_eq(ex("united four one eight roger mayday descend flight level one six zero"), "ALT UAL418 FL160")
+  check_eq(ex("United 418 understood the emergency, fly heading 330"), "HDG UAL418 330")
+  check_eq(ex("Jet2 22M emergency descent approved, descend FL120"), "ALT EXS22M FL120")
+  check_eq(ex("United 418 deviations approved, when able turn right heading 090"), "HDG UAL418 90 RIGHT")
+  check_eq(ex("Jet2 22M roger pan, say persons on board, descend FL100"), "ALT EXS22M FL100")
+  asked(ex("United 418 Mayday, descend FL150"), "a call with no acknowledgement")
+  asked(ex("United 418 roger Mayday"), "an acknowledgement alone")
+  asked(ex("United 418 roger the emergency descent FL150"), "an acknowledgement running into a descent")
+  asked(ex("Jet2 22M emergency descent, descend FL120"), "an emergency descent not granted")
+  asked(ex("United 418 deviation approved 20 degrees right"), "a deviation granted with a value")
+  asked(ex("United 418 Mayday relay, descend FL150"), "a relay")
+end
+
+-- Cycle 44 (f96): what "unable" refuses (a value, a direct-to, "that heading", "higher", or nothing before a
+-- comma), with a reason after it ending its clause, is set aside; the instruction after it is read alone.
+-- "unable" of the pilot ("if unable", "when unable") or before anything else asks.
+do
+  local _, ex = scene({ "CRE UAL418 B739 40.5 -74.5 090 FL280 290", "CRE EXS22M B738 53.2 -2.1 180 FL200 270" })
+  check_eq(ex("United 418 unable FL320 due to traffic, maintain FL280, turn left heading 060"),
+    "ALT UAL418 FL280 ; HDG UAL418 60 LEFT")
+  check_eq(ex("United 418 unable higher because of crossing traffic, fly heading 100"), "HDG UAL418 100")
+  check_eq(ex("Jet2 22M unable your request, reduce speed 250 knots"), "SPD EXS22M 250")
+  check_eq(ex("Jet2 22M unable, turn right heading 200"), "HDG EXS22M 200 RIGHT")
+  check_eq(ex("Jet2 22M unable due weather, descend FL160"), "ALT EXS22M FL160")
+  asked(ex("Jet2 22M unable direct to nowhere, turn right heading 200"), "a refusal of no place")
+  asked(ex("Jet2 22M unable to comply, turn right heading 200"), "unable before something else")
+  asked(ex("Jet2 22M, if unable FL240, turn right heading 200"), "the pilot's unable")
+  asked(ex("Jet2 22M unable FL240 due traffic at FL230, turn right heading 200"), "a reason naming a value")
+  asked(ex("Jet2 22M unable"), "unable alone")
+end
+
+-- Cycle 44 (f96): "fox", the older alphabet's word for F, is that letter of a callsign; a callsign it makes that
+-- no aircraft bears is asked, as with "foxtrot"
+do
+  local _, ex = scene({ "CRE DLH7F A320 50.0 8.0 090 FL280 290", "CRE BAW51 B738 51.2 -0.1 180 FL200 270" })
+  check_eq(ex("Lufthansa seven fox, climb flight level three one zero"), "ALT DLH7F FL310")
+  check_eq(ex("lufthansa 7 fox turn right heading 120"), "HDG DLH7F 120 RIGHT")
+  asked(ex("Speedbird 51 fox, climb FL240"), "a letter no aircraft's callsign holds")
+end
+
+-- Cycle 44 (f96): a sim operator's words: "inject" an aircraft (CRE), "drop X from the exercise" (DEL), "speed it
+-- up to times N" (DTMULT), "stand by", "resolution advisories" (RESO); a route's edits: "take out FIX" (DELWPT),
+-- "read me back your route" (LISTRTE), "flight plan cancel, delete the route" (DELRTE); CityJet by its name
+do
+  local _, ex = scene({ "CRE BCY41 E190 53.4 -6.0 320 FL120 250", "CRE EIN88 A320 53.6 -6.8 090 FL300 280",
+      "DEFWPT LIFFY 53.5 -5.5", "DEFWPT NIMAT 53.6 -4.5", "ADDWPT EIN88 LIFFY", "ADDWPT EIN88 NIMAT" })
+  check_eq(ex("inject Ryanair 7TK, B738, at 53.2 -6.4 heading 180 FL240 290 kts"), "CRE RYR7TK B738 53.2 -6.4 180 FL240 290")
+  check_eq(ex("exercise control: drop Cityjet 41 from the sim"), "DEL BCY41")
+  check_eq(ex("City Ireland four one, descend FL100"), "ALT BCY41 FL100")
+  check_eq(ex("speed it up to times 3"), "DTMULT 3")
+  check_eq(ex("pause the simulation, stand by"), "HOLD")
+  check_eq(ex("resolution advisories on, MVP"), "RESO MVP")
+  check_eq(ex("Shamrock 88 take out NIMAT"), "DELWPT EIN88 NIMAT")
+  check_eq(ex("Shamrock 88 take LIFFY out"), "DELWPT EIN88 LIFFY")
+  check_eq(ex("Shamrock 88 read back your routing"), "LISTRTE EIN88")
+  check_eq(ex("Shamrock 88, flight plan cancelled, delete the route"), "DELRTE EIN88")
+  asked(ex("inject a fault into Shamrock 88"), "an injection of no aircraft")
+  asked(ex("drop Cityjet 41 from the list"), "dropped from no run")
+  asked(ex("speed it up to times 3, Shamrock 88"), "an aircraft named beside the rate")
+  asked(ex("Shamrock 88 traffic advisory, climb FL320"), "an advisory of no resolution")
+  asked(ex("Shamrock 88 flight plan cancel, climb FL320"), "a plan cancelled with no deletion")
+  asked(ex("Shamrock 88 read back your heading"), "a readback of no route")
 end
