@@ -70,6 +70,10 @@ local function spelling_kept()
   for _, n in ipairs(lexicon.not_simulated) do
     for w in n.words:gmatch("%S+") do kept[#kept + 1] = w end
   end
+  -- (a word of an airline's telephony is a name of its own: "Air Crete" is no "create")
+  for _, a in ipairs(names.airlines) do
+    for w in a[1]:gmatch("%S+") do kept[#kept + 1] = w end
+  end
   return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept }, keywords = keywords },
     { __index = lexicon })
 end

@@ -328,6 +328,8 @@ local names = {
     -- there say it ("Garuda 412", "IndiGo 2231", "AirAsia 88", "Vietnam 251")
     { "garuda", "GIA" },
     { "jordanian", "RJA" },
+    { "israir", "ISR" },
+    { "arkia", "AIZ" },  -- (Arkia Israeli Airlines)
     { "anatolian", "TKJ" },  -- (AJet)
     { "flydubai", "FDB" },
     { "indigo", "IGO" },
@@ -424,6 +426,7 @@ local names = {
     { "africa world", "AFW" },
     { "taag", "DTA" },
     { "angola", "DTA" },
+    { "mozambique", "LAM" },  -- (LAM Mozambique Airlines)
     { "royalair maroc", "RAM" },
     { "tunair", "TAR" },
     { "tunisair", "TAR" },
