@@ -185,7 +185,7 @@ local function know_all(v, seen)
   -- holds; lexicon.dictated_punctuation is the marks it names: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
-      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
+      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
@@ -386,11 +386,26 @@ local function foreign_digits(text)
   local function digit(k)
     local w = bare[k]
     return w ~= nil and (F[w] ~= nil or NUMBER_WORDS[w] == true or w:match("^%d+$") ~= nil
-      or lexicon.phonetic[w] ~= nil)
+      or lexicon.phonetic[w] ~= nil or lexicon.foreign_hesitation_digits[w] ~= nil)
+  end
+  -- (true when the run of digit words about token i, no punctuation parting them, holds a word of F)
+  local function foreign_run(i)
+    for step = -1, 1, 2 do
+      local k = i + step
+      while digit(k) and not toks[math.min(k, k - step)]:match("%p$") do
+        if F[bare[k]] then return true end
+        k = k + step
+      end
+    end
+    return false
   end
   return tokens.rewrite(text, toks, function(i)
     local en = F[bare[i]]
-    if not en then return nil end
+    if not en then
+      en = lexicon.foreign_hesitation_digits[bare[i]]
+      if en and foreign_run(i) then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
+      return nil
+    end
     -- (punctuation closing the word before parts the two: "Iberia tres uno... Iberia three")
     local beside = (digit(i - 1) and not toks[i - 1]:match("%p$")) or (digit(i + 1) and not toks[i]:match("%p$"))
     if beside then return en .. (toks[i]:match("%p+$") or ""), i + 1 end

@@ -1120,7 +1120,11 @@ return {
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
     nove = "nine",
     -- and French ("France Soleil quatre un deux zero"; "six" and "zero" as in English)
-    un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine" },
+    un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine",
+    uma = "one" },
+  -- Portuguese "um" (one), a hesitation in English: one only inside a run of digit words holding one of
+  -- foreign_digits ("nível três um zero"); "three um zero" keeps its hesitation
+  foreign_hesitation_digits = { um = "one" },
   -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
   -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
   -- read is exactly one aircraft's (grammar.lua homophone_ids)
