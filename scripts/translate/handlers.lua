@@ -1215,6 +1215,23 @@ function m:type_refs()
       if ty and (of or (makers()[self.t[k].text] or {})[ty]) then self:explain(k, k + 1) end
     end
   end
+  -- ("the triple seven, descend ..." with GLO1077 and one B77W flying): a family's number said after "the", no
+  -- airline with it, heard only as a slip for a callsign, is the type described when exactly one aircraft
+  -- flying is of that family (else the callsign heard stays, asked about)
+  for n = #self.refs, 1, -1 do
+    local r, test, e = self.refs[n], nil, nil
+    local h = r.kind == "aircraft" and r.heard
+    if h and h.airline == 0 and self:word(r.b - 1, "the") and not self:airline_and_digits_match(h.id, r.name) then
+      test, e = self:type_said(r.b)
+    end
+    if test and e >= r.e then
+      local fits = 0
+      for _, a in ipairs(self.fleet) do
+        if a.type and test(a.type:upper()) then fits = fits + 1 end
+      end
+      if fits == 1 then table.remove(self.refs, n) end
+    end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and not r.by_airline then return end
   end
