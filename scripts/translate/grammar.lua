@@ -2249,7 +2249,8 @@ function G:segments(b, e)
         own_verb = own_verb or sets[q.kind] == true
       end
       if (li.absorbs and this.value and not own_verb)
-          or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
+          or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")
+            and not self:word_in(last.trig + 1, tr.pos, "@level_condition")) then
         merged = true
       elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
         merged = true  -- "make a new ...": one request

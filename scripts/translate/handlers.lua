@@ -1626,6 +1626,10 @@ local NAV_INTENTS = { direct = true, lnav = true, vnav = true }
 -- speed to 230", "... bring its speed back to 240")
 local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, the = true,
                      its = true, your = true, his = true, her = true, their = true }
+-- words between the level and a rate's own word, part of the instruction ("passing 150 reduce rate to 1000",
+-- "leaving FL100 increase your rate to 2000")
+local RATE_LEAD = { reduce = true, increase = true, decrease = true, the = true, its = true, your = true,
+                    his = true, her = true, their = true }
 -- who does it, between the level and any instruction ("when passing FL200 it shall reduce the speed to 220")
 local SUBJECT_LEAD = { it = true, he = true, she = true, they = true, you = true, shall = true, should = true,
                        will = true, can = true, must = true }
@@ -1680,7 +1684,8 @@ function m:at_altitude(s)
   if not q or q.b ~= a + 1 then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
-      or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])) do
+      or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])
+      or (s.intent == "vs" and RATE_LEAD[self.words[k]])) do
     k = self:skip_fillers(k + 1)
   end
   -- ("crossing FL150 ACA102 reduce 250": the instruction's callsign after a verb's condition; "both at
