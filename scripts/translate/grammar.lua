@@ -1047,6 +1047,18 @@ local function written_forms(text)
   end
   text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
+  -- ("set conflict vertical zone thousand feet": "thousand feet" after a word that is no number, nor a word
+  -- heard for a digit ("to thousand"), is one thousand feet)
+  if text:find("housand", 1, true) then
+    text = text:gsub("%f[%a](%a+)(%s+)([Tt]housand)(%s+)(%a+)", function(w, s1, th, s2, unit)
+      local lw, u = w:lower(), unit:lower()
+      if (u == "feet" or u == "ft" or u == "foot") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
+          and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw] then
+        return w .. s1 .. "one " .. th .. s2 .. unit
+      end
+      return nil
+    end)
+  end
   -- ("another thousand feet", "a further hundred feet": one more of it)
   text = text:gsub("%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
     :gsub("%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")

@@ -343,6 +343,10 @@ return {
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
   hesitations = { "ah", "uh", "um", "er" },
+  -- words that count the "thousand" after them ("two and a half thousand feet", "a few thousand feet"): no
+  -- "thousand feet" said bare, read as one thousand, after them
+  thousand_counted = { hundred = true, half = true, quarter = true, few = true, several = true, many = true,
+                       couple = true, tens = true, t = true },
   -- typos are corrected to these words (one edit away, two for 7+ letters);
   -- short everyday words are left out: speech recognition makes real words
   -- near them ("loan", "train") far more often than typists misspell them
