@@ -1071,6 +1071,13 @@ function m:navaid_name_refs()
         self:need(string.format("Which place is '%s': the navaid %s of that name, or %s?", r.name,
           table.concat(ids, " or "), r.name))
       elseif #ids > 0 and not other then
+        -- ("direct RODOS": several navaids of the name, all of one station, are its one VOR)
+        local station = #ids > 1 and at[1] ~= nil
+        for k = 2, station and #ids or 0 do
+          station = station and at[k] ~= nil and nm(at[1][1], at[1][2], at[k][1], at[k][2]) <= L.navaid_station_nm
+        end
+        local vor = station and named(r.name, at[1][1], at[1][2], L.navaid_station_nm, "VOR") or {}
+        if #vor == 1 and seen[vor[1]] then ids = vor end
         r.name = self:one_named(ids, "navaid", r.name, math.huge)
       end
     end

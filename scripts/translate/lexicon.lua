@@ -807,6 +807,9 @@ return {
   groupwise_levels = { 100, 450 }, groupwise_from_ft = 10000,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
+  -- navaids of one name this near each other [NM] are one station ("Rodos": the NDB ROS, the VOR-DME RDS and
+  -- the TACAN ROD); its name said alone is its VOR
+  navaid_station_nm = 5,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)
   city_nm = 30,
   -- an airport this near a navaid named after a city [NM] is one of that city's ("Montreal": CYUL, 4 NM from the
