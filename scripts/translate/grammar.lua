@@ -70,6 +70,10 @@ local function spelling_kept()
   for _, n in ipairs(lexicon.not_simulated) do
     for w in n.words:gmatch("%S+") do kept[#kept + 1] = w end
   end
+  -- (a word of an airline's telephony is a name of its own: "Air Crete" is no "create")
+  for _, a in ipairs(names.airlines) do
+    for w in a[1]:gmatch("%S+") do kept[#kept + 1] = w end
+  end
   return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept }, keywords = keywords },
     { __index = lexicon })
 end
@@ -181,7 +185,7 @@ local function know_all(v, seen)
   -- holds; lexicon.dictated_punctuation is the marks it names: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
-      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
+      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
@@ -382,11 +386,26 @@ local function foreign_digits(text)
   local function digit(k)
     local w = bare[k]
     return w ~= nil and (F[w] ~= nil or NUMBER_WORDS[w] == true or w:match("^%d+$") ~= nil
-      or lexicon.phonetic[w] ~= nil)
+      or lexicon.phonetic[w] ~= nil or lexicon.foreign_hesitation_digits[w] ~= nil)
+  end
+  -- (true when the run of digit words about token i, no punctuation parting them, holds a word of F)
+  local function foreign_run(i)
+    for step = -1, 1, 2 do
+      local k = i + step
+      while digit(k) and not toks[math.min(k, k - step)]:match("%p$") do
+        if F[bare[k]] then return true end
+        k = k + step
+      end
+    end
+    return false
   end
   return tokens.rewrite(text, toks, function(i)
     local en = F[bare[i]]
-    if not en then return nil end
+    if not en then
+      en = lexicon.foreign_hesitation_digits[bare[i]]
+      if en and foreign_run(i) then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
+      return nil
+    end
     -- (punctuation closing the word before parts the two: "Iberia tres uno... Iberia three")
     local beside = (digit(i - 1) and not toks[i - 1]:match("%p$")) or (digit(i + 1) and not toks[i]:match("%p$"))
     if beside then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
@@ -1040,6 +1059,18 @@ local function written_forms(text)
   end
   text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
+  -- ("set conflict vertical zone thousand feet": "thousand feet" after a word that is no number, nor a word
+  -- heard for a digit ("to thousand"), is one thousand feet)
+  if text:find("housand", 1, true) then
+    text = text:gsub("%f[%a](%a+)(%s+)([Tt]housand)(%s+)(%a+)", function(w, s1, th, s2, unit)
+      local lw, u = w:lower(), unit:lower()
+      if (u == "feet" or u == "ft" or u == "foot") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
+          and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw] then
+        return w .. s1 .. "one " .. th .. s2 .. unit
+      end
+      return nil
+    end)
+  end
   -- ("another thousand feet", "a further hundred feet": one more of it)
   text = text:gsub("%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
     :gsub("%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
@@ -2242,7 +2273,8 @@ function G:segments(b, e)
         own_verb = own_verb or sets[q.kind] == true
       end
       if (li.absorbs and this.value and not own_verb)
-          or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
+          or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")
+            and not self:word_in(last.trig + 1, tr.pos, "@level_condition")) then
         merged = true
       elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
         merged = true  -- "make a new ...": one request

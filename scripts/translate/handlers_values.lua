@@ -828,6 +828,9 @@ return function(H, f, wrap, compass)
     local down = self:word_in(cb, ce, "descent descend descending")
     local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
+    -- ("climb FL230, passing 150 reduce rate to 1000": "reduce" or "increase" said of the rate, no motion named,
+    -- changes its size, not its way: a level flown to in the request gives the way)
+    local resized = not down and not up and self:word_in(cb, ce, "rate") and self:word_in(cb, ce, "reduce increase decrease")
     -- ("be at FL300 by LAPOS, rate 2500": no direction said, the way to the level given it before in the
     -- request, a constraint's too; "FL300, rate of climb 2500" said to an aircraft above FL300 names the
     -- other way: asked)
@@ -847,7 +850,7 @@ return function(H, f, wrap, compass)
       local cur = now.alt_ft or 0
       if math.abs(ft - cur) > 50 then
         local way = ft > cur and 1 or -1
-        if dir ~= 0 and dir ~= way then
+        if dir ~= 0 and dir ~= way and not resized then
           return self:need(string.format("%s is at %s ft, %s is %s it: %s at %s ft/min? Please confirm the rate.",
             id, f.int(cur), f.alt(ft, true), way < 0 and "below" or "above", dir < 0 and "descend" or "climb",
             f.int(math.abs(fpm))))

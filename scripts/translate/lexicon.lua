@@ -345,6 +345,10 @@ return {
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
   hesitations = { "ah", "uh", "um", "er" },
+  -- words that count the "thousand" after them ("two and a half thousand feet", "a few thousand feet"): no
+  -- "thousand feet" said bare, read as one thousand, after them
+  thousand_counted = { hundred = true, half = true, quarter = true, few = true, several = true, many = true,
+                       couple = true, tens = true, t = true },
   -- typos are corrected to these words (one edit away, two for 7+ letters);
   -- short everyday words are left out: speech recognition makes real words
   -- near them ("loan", "train") far more often than typists misspell them
@@ -811,6 +815,9 @@ return {
   groupwise_levels = { 100, 450 }, groupwise_from_ft = 10000,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
+  -- navaids of one name this near each other [NM] are one station ("Rodos": the NDB ROS, the VOR-DME RDS and
+  -- the TACAN ROD); its name said alone is its VOR
+  navaid_station_nm = 5,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)
   city_nm = 30,
   -- an airport this near a navaid named after a city [NM] is one of that city's ("Montreal": CYUL, 4 NM from the
@@ -1134,7 +1141,11 @@ return {
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
     nove = "nine",
     -- and French ("France Soleil quatre un deux zero"; "six" and "zero" as in English)
-    un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine" },
+    un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine",
+    uma = "one" },
+  -- Portuguese "um" (one), a hesitation in English: one only inside a run of digit words holding one of
+  -- foreign_digits ("nível três um zero"); "three um zero" keeps its hesitation
+  foreign_hesitation_digits = { um = "one" },
   -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
   -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
   -- read is exactly one aircraft's (grammar.lua homophone_ids)

@@ -8457,3 +8457,84 @@ do
   asked(ex("Shamrock 88 flight plan cancel, climb FL320"), "a plan cancelled with no deletion")
   asked(ex("Shamrock 88 read back your heading"), "a readback of no route")
 end
+
+-- Cycle 44 (f9599): a new aircraft's callsign by its airline's telephony ("Air Crete", whose "Crete" is no typo
+-- for "create"; "Mozambique", "Israir", "Arkia") or by the airline's ICAO code written in capitals apart from
+-- its flight number ("LAM 733"); a code squawk knows no airline by is asked
+do
+  local _, ex = scene({ "CRE SEH902 A320 35.3 25.2 090 FL200 260", "CRE OAL61 A320 37.9 23.7 270 FL150 250" })
+  check_eq(ex("create Air Crete seven one two, A321, at 35.0 24.0, heading 090, FL140, 250 knots"),
+    "CRE SEH712 A321 35 24 90 FL140 250")
+  check_eq(ex("delete Air Crete nine zero two"), "DEL SEH902")
+  check_eq(ex("create Mozambique 733 B737 at -19.8 34.8 heading 010 FL190 280 knots"),
+    "CRE LAM733 B737 -19.8 34.8 10 FL190 280")
+  check_eq(ex("create Israir 88 A320 at 31.9 34.9 heading 180 FL100 250 knots"), "CRE ISR88 A320 31.9 34.9 180 FL100 250")
+  check_eq(ex("create LAM 733 B737 at -19.8 34.8 heading 010 FL190 280 knots"), "CRE LAM733 B737 -19.8 34.8 10 FL190 280")
+  check_eq(ex("create DTA 12, A332, at -8.9 13.2, heading 200, FL310, 290 knots"), "CRE DTA12 A332 -8.9 13.2 200 FL310 290")
+  asked(ex("create QQX 733 B737 at -19.8 34.8 heading 010 FL190 280 knots"), "an ICAO code squawk knows no airline by")
+end
+
+-- Cycle 44 (f9599): a Boeing family said digit by digit ("triple seven", "seven four seven") or typed ("777") with
+-- a variant said straight after it ("300ER", "200 LR", "four hundred") is that variant where traffic is created;
+-- the family so said alone names no type
+do
+  local _, ex = scene({})
+  check_eq(ex("create UAE44 triple seven 200LR at 25.2 55.3 heading 300 FL350 mach .84"),
+    "CRE UAE44 B77L 25.2 55.3 300 FL350 M0.84")
+  check_eq(ex("create UAE45 777 300 ER at 25.2 55.3 heading 300 FL350 mach .84"), "CRE UAE45 B77W 25.2 55.3 300 FL350 M0.84")
+  check_eq(ex("create KLM46 seven four seven four hundred at 52.3 4.8 heading 270 FL330 290 knots"),
+    "CRE KLM46 B744 52.3 4.8 270 FL330 290")
+  asked(ex("create UAE47 triple seven at 25.2 55.3 heading 300 FL350 mach .84"), "a family with no variant said")
+end
+
+-- Cycle 44 (f9599): Portuguese "um" (one) inside digits said in Portuguese ("nível dois um zero"); with no
+-- Portuguese digit beside it "um" stays a hesitation
+do
+  local _, ex = scene({ "CRE TAP441 A320 38.7 -9.1 180 FL330 270" })
+  check_eq(ex("TAP441 descend nível dois um zero"), "ALT TAP441 FL210")
+  check_eq(ex("TAP441 descend flight level dois uma zero"), "ALT TAP441 FL210")
+  asked(ex("TAP441 descend flight level um um zero"), "'um' with no Portuguese digit beside it")
+end
+
+-- Cycle 44 (f9599): a family's number said after "the" that the callsign matcher heard as a slip for a callsign
+-- ("the seven four seven" with CLX7447 flying) is the aircraft described when exactly one of that family flies;
+-- with none or two of it flying the slip is asked about
+do
+  local _, ex = scene({ "CRE CLX7447 B738 49.6 6.2 090 FL200 280", "CRE CLX790 B744 49.8 6.0 270 FL310 290" })
+  check_eq(ex("the seven four seven, climb FL350"), "ALT CLX790 FL350")
+  check_eq(ex("the 747 turn left heading 240"), "HDG CLX790 240 LEFT")
+  local _, ex2 = scene({ "CRE CLX7447 B738 49.6 6.2 090 FL200 280", "CRE CLX790 B744 49.8 6.0 270 FL310 290",
+    "CRE GTI8 B748 49.9 6.4 180 FL330 290" })
+  asked(ex2("the seven four seven, climb FL350"), "two of the family flying")
+end
+
+-- Cycle 44 (f9599): a level said bare after "passing" (or "leaving", "reaching") after a climb or descent, then
+-- the rate made smaller or larger ("reduce rate to 1000"), waits for that level (ATALT ... VS), the rate's sign
+-- the way to the level cleared
+do
+  local _, ex = scene({ "CRE GLO77 B738 -23.5 -46.6 090 FL100 260" })
+  check_eq(ex("GLO77 climb FL 260, passing 180 reduce rate to fifteen hundred"),
+    "ALT GLO77 FL260 ; ATALT GLO77 FL180 VS GLO77 1500")
+  check_eq(ex("GLO77 descend FL 60, leaving FL80 increase your rate to 2000"),
+    "ALT GLO77 FL60 ; ATALT GLO77 FL80 VS GLO77 -2000")
+  check_eq(ex("GLO77 climb FL260, reduce rate to 1500"), "ALT GLO77 FL260 1500")
+  asked(ex("GLO77 climb FL 260, passing 90 reduce rate to fifteen hundred"), "a level the climb will not pass")
+end
+
+-- Cycle 44 (f9599): "thousand feet" said bare (no number before it) is one thousand feet; a fraction or count
+-- before it keeps its own reading
+do
+  local _, ex = scene({ "CRE AEE61 A320 37.9 23.7 090 FL120 250" })
+  check_eq(ex("set the vertical protected zone thousand feet"), "ZONEDH 1000")
+  check_eq(ex("AEE61 descend to one and a half thousand feet"), "ALT AEE61 1500")
+  asked(ex("AEE61 climb to thousand feet"), "'to thousand' may be 'two thousand'")
+end
+
+-- Cycle 44 (f9599): a navaid said by its name that several navaids of one station bear (within
+-- lexicon.navaid_station_nm of each other: Rhodes's NDB ROS, VOR-DME RDS and TACAN ROD) is the station's VOR
+do
+  local s, ex = navscene({ "CRE OAL90 A320 36.2 27.5 090 FL150 260" }, "a station's navaids by name")
+  if s then
+    check_eq(ex("OAL90 direct RODOS"), "ADDWPT OAL90 RDS ; DIRECT OAL90 RDS")
+  end
+end
