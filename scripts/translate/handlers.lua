@@ -1167,7 +1167,9 @@ function m:type_said(i)
     if r.kind == "type" and r.b == i then
       -- ("the Boeing 777", "the A330": the family's number, its maker before it or not, is the family)
       local last = self.t[r.e - 1].text
-      local family = (r.e - r.b == 1 or makers()[t.text]) and fams[last]
+      -- ("the Airbus 330": an Airbus family's number said without its letter)
+      local family = (r.e - r.b == 1 or makers()[t.text])
+        and (fams[last] or (t.text == "airbus" and r.e - r.b == 2 and fams["a" .. last]))
       -- (a designator read as another names aircraft flying under either: "the E175" is an E75L or an E175)
       return family and set_of(family) or function(d) return d == r.name or aliases()[d] == r.name end, r.e
     end
