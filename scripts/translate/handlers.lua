@@ -195,6 +195,17 @@ function m:acids(s)
     end
   end
   take(s.trig, upto)
+  -- "AFR1234 and KLM605 are head on, climb the Air France to FL340": with the instruction's aircraft named after
+  -- its word, a clause opening the segment that describes aircraft with "is" or "are", holds no value and ends
+  -- at a comma is talked about, not instructed (explained)
+  if #ids > 0 then
+    local comma = s.trig - 1
+    while comma > s.b and self.t[comma].kind ~= "punct" do comma = comma - 1 end
+    if comma > s.b and self.t[comma].text == "," and self:has_ref(s.b, comma, "aircraft")
+        and self:word_in(s.b, comma, "is are") and #self:quantities(s.b, comma) == 0 then
+      self:explain(s.b, comma)
+    end
+  end
   -- "EZY45 reduce to 240, the KLM will come right over it", "..., keep KLM12 as is", "and direct HZA, KLM12 no
   -- change": an aircraft in a clause after a comma that words of its own follow is talked about, not addressed,
   -- when the instruction's own aircraft was named before it (in the segment, for the instruction before, or after the
