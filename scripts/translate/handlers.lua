@@ -403,7 +403,8 @@ function m:as_context(i)
   for k = i - 1, math.max(1, i - 3), -1 do
     -- (nor across a sentence's end: "OK, conflict time. Jetairfly climb FL310")
     if self:intent_at(k) or (self.t[k].kind == "punct" and self.t[k].text ~= ",") then return false end
-    if self:word(k, "@aircraft_context") then
+    -- ("..., head on with KLM605": the traffic met)
+    if self:word(k, "@aircraft_context") or (self:word(k, "on") and self:word(k - 1, "head")) then
       -- ("insert SUGOL into KLM601's route", "into route of KLM601": the aircraft whose route it is, no
       -- traffic turned toward)
       local r = self:word(k, "into towards toward") and self:refs_in(i, i + 1, "aircraft")[1]
