@@ -1323,6 +1323,20 @@ end
 local QUESTION_WORDS = { where = true, wheres = true, ["where's"] = true, is = true, what = true, whats = true,
                          ["what's"] = true, show = true, me = true, tell = true }
 function m:settle_callsigns()
+  -- "KLM 1394 and 1349, both descend FL80": typed digits after a flying aircraft's callsign and "and" that are,
+  -- with its airline, another flying aircraft's callsign exactly name that aircraft too
+  for k = #self.refs, 1, -1 do
+    local r = self.refs[k]
+    local x = r.e + 1
+    local t, nx = self.t[x], self.refs[k + 1]
+    local a = r.kind == "aircraft" and r.exists and self:word(r.e, "and") and t and t.kind == "number"
+      and t.text:match("^%d+$") and not self.u:used(x) and not (nx and nx.b == x) and airline_digits(r.name)
+    local id = a and a ~= "" and (a .. t.text):upper()
+    if id and id ~= r.name:upper() and self:state(id) and not L.value_units[self.words[x + 1] or ""] then
+      table.insert(self.refs, k + 1, { kind = "aircraft", name = self:state(id).id, b = x, e = x + 1, exists = true })
+      self:mark_used(x, x + 1)
+    end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then
       while r.e - r.b > 1 and self.t[r.b].kind == "word" and QUESTION_WORDS[self.t[r.b].text]
