@@ -286,6 +286,15 @@ return function(intent, rule, words)
     end
     return false
   end
+  -- "drop TRA5K at 52.3 4.0": an aircraft flying set down at a position (a latitude or a decimal straight after
+  -- "at", another value after it) is moved there
+  rule { "drop", "move", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 3, "aircraft")[1]
+    if not (r and r.exists and g:word(r.e, "at")) then return false end
+    local qs = g:quantities(r.e + 1, math.min(#g.t + 1, r.e + 8))
+    return qs[1] ~= nil and qs[2] ~= nil and qs[1].b == r.e + 1
+      and (qs[1].kind == "lat" or (qs[1].kind == "plain" and qs[1].number.decimal))
+  end }
   -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "knock out KLM1234", "knock out the Cessna": an aircraft taken out of the simulation, nothing after it
