@@ -1989,10 +1989,13 @@ return function(intent, rule, words)
   end }
   -- "resolution only past CPA", "keep resolving until past CPA": when a resolution ends and navigation resumes
   -- (RESNAV PASTCPA); "past" before "CPA" names it
-  rule { "resolution resolutions resolving reso", false, near = { 4, "past" }, when = function(g, i)
+  -- ("resolve past CPA": resolving until past it)
+  rule { "resolution resolutions resolving reso resolve", false, near = { 4, "past" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 6), "cpa")
   end }
-  rule { "past", "resnav", next = "cpa", when = function(g, i) return g:word_in(1, i, "resolution resolutions resolving reso") end }
+  rule { "past", "resnav", next = "cpa", when = function(g, i)
+    return g:word_in(1, i, "resolution resolutions resolving reso resolve")
+  end }
   -- ("resume nav past CPA for resolution", "... after resolving"): the resolution whose end past CPA is
   -- said straight before it, no setting of its own
   rule { "resolution resolutions resolving reso", false, prev = { 1, "for after following from of" },
