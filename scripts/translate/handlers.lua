@@ -1229,9 +1229,14 @@ function m:type_refs()
       if ty and (of or (makers()[self.t[k].text] or {})[ty]) then self:explain(k, k + 1) end
     end
   end
+  -- (with a callsign said in the request, a type names an aircraft only after "the" opening a clause, an
+  -- instruction word straight after it, when it fits one aircraft no callsign names: "AFR1234 turn right 20,
+  -- and the 777 turn right 20 as well")
+  local named = {}
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and not r.by_airline then return end
+    if r.kind == "aircraft" and not r.by_airline then named[r.name] = true end
   end
+  local callsigns = next(named) ~= nil
   local i = 1
   while i <= #self.t do
     local b = i
@@ -1256,6 +1261,10 @@ function m:type_refs()
     local fits = {}
     for _, a in ipairs(test and self.fleet or {}) do
       if a.type and test(a.type:upper()) then fits[#fits + 1] = a.id end
+    end
+    if callsigns and test then
+      local opens = the and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and @then_words"))
+      if not (opens and self:intent_at(e) and #fits == 1 and not named[fits[1]]) then test, fits = nil, {} end
     end
     -- ("the CRJ": a family in capitals the lexer took for an unknown place)
     for n = #self.refs, 1, -1 do
