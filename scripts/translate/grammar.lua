@@ -4147,10 +4147,10 @@ function G:meaning_carried(i, kinds)
   -- "descend until 7000 feet": "until" as "to", before the value the instruction took
   if text == "until" and self.taken[nx] then return true end
   -- "to SFO instead of Oakland", "to LFPG instead": the value said replaces another; "no, descend KLM12
-  -- instead, FL250", "descend KLM12 instead FL250": the instruction said replaces another, "instead" before
-  -- its pause or the value it took
+  -- instead, FL250", "descend KLM12 instead FL250", "turn KLM12 instead heading 200": the instruction said
+  -- replaces another, "instead" before its pause, the value it took or that value's word
   if text == "instead" and (self:word(nx, "of") or not self.t[nx] or self.t[nx].kind == "punct"
-      or (self.t[i + 1] and self.t[i + 1].kind == "punct") or self.taken[nx]) then
+      or (self.t[i + 1] and self.t[i + 1].kind == "punct") or self.taken[nx] or self.taken[nx + 1]) then
     return true
   end
   -- "if" opening a polite request ("I'd appreciate it if the Ryanair could turn ...") or a clause of

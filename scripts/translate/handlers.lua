@@ -398,13 +398,17 @@ function m:as_context(i)
       or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above") then
     return true
   end
+  -- ("..., head on with KLM605", "converging with the Ryanair": the traffic met)
+  if self:word(k, "with") and (self:word(k - 1, "converging converge converges head-on")
+      or (self:word(k - 1, "on") and self:word(k - 2, "head"))) then
+    return true
+  end
   local named = self.t[i - 1] and self.t[i - 1].text == "," and self:refs_in(i, i + 1, "aircraft")[1]
   if named and self:intent_at(self:skip_fillers(named.e)) then return false end
   for k = i - 1, math.max(1, i - 3), -1 do
     -- (nor across a sentence's end: "OK, conflict time. Jetairfly climb FL310")
     if self:intent_at(k) or (self.t[k].kind == "punct" and self.t[k].text ~= ",") then return false end
-    -- ("..., head on with KLM605": the traffic met)
-    if self:word(k, "@aircraft_context") or (self:word(k, "on") and self:word(k - 1, "head")) then
+    if self:word(k, "@aircraft_context") then
       -- ("insert SUGOL into KLM601's route", "into route of KLM601": the aircraft whose route it is, no
       -- traffic turned toward)
       local r = self:word(k, "into towards toward") and self:refs_in(i, i + 1, "aircraft")[1]

@@ -631,9 +631,7 @@ return {
                        -- "turn left 20 into the Vueling 1723", "turn towards VLG1723": the traffic turned toward
                        "into", "towards", "toward",
                        -- "vertical separation from RYR7QD": the traffic kept apart from
-                       "separation",
-                       -- "..., converging with KLM605", "head-on with KLM605": the traffic met
-                       "converging", "converge", "converges", "head-on" },
+                       "separation" },
   -- words before an airline said alone ("pointing at the Lufthansa", "too close to the BA", "into the
   -- Austrian's level", "climb through the Lufthansa's level") that make it other traffic, not the aircraft instructed
   airline_context = { "at", "into", "to", "with", "near", "from", "past", "towards", "toward", "except", "but",
