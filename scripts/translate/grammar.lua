@@ -4190,8 +4190,13 @@ function G:meaning_carried(i, kinds)
   if text == "after" and self.triggers[nx] then return true end
   -- "descend until 7000 feet": "until" as "to", before the value the instruction took
   if text == "until" and self.taken[nx] then return true end
-  -- "to SFO instead of Oakland", "to LFPG instead": the value said replaces another
-  if text == "instead" and (self:word(nx, "of") or not self.t[nx] or self.t[nx].kind == "punct") then return true end
+  -- "to SFO instead of Oakland", "to LFPG instead": the value said replaces another; "no, descend KLM12
+  -- instead, FL250", "descend KLM12 instead FL250", "turn KLM12 instead heading 200": the instruction said
+  -- replaces another, "instead" before its pause, the value it took or that value's word
+  if text == "instead" and (self:word(nx, "of") or not self.t[nx] or self.t[nx].kind == "punct"
+      or (self.t[i + 1] and self.t[i + 1].kind == "punct") or self.taken[nx] or self.taken[nx + 1]) then
+    return true
+  end
   -- "if" opening a polite request ("I'd appreciate it if the Ryanair could turn ...") or a clause of
   -- framing words only ("if that's alright")
   if text == "if" then
@@ -5727,13 +5732,23 @@ local function airline_values(text, fleet)
     end
     return nil
   end)
-  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
-    local icao = AIRLINE_WORDS[w:lower()]
-    if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then
-      return the .. w .. "," .. s1 .. n .. s2 .. unit
-    end
-    return nil
-  end)
+  -- ("give the easyJet 30 left", "the Air France 20 right": the degrees of a turn, 1 to 180, before its side
+  -- with no number after it; "turn the easyJet 30 left 20" keeps the callsign, matched or asked)
+  local function turn_by(n, side, pos)
+    local nx = text:match("^[%s,]*([%w%-]*)", pos)
+    return (side == "left" or side == "right") and tonumber(n) >= 1 and tonumber(n) <= 180
+      and not nx:match("^%d") and not NUMBER_WORDS[nx:lower()]
+  end
+  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)()",
+                             "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)(%d+)(%s+)(%a+)()" }) do
+    text = text:gsub(pattern, function(the, w, s1, n, s2, unit, pos)
+      local icao = AIRLINE_WORDS[w:lower():gsub("%s+", " ")]
+      if icao and not ids[icao .. n] and (lexicon.value_units[unit:lower()] or turn_by(n, unit:lower(), pos)) then
+        return the .. w .. "," .. s1 .. n .. s2 .. unit
+      end
+      return nil
+    end)
+  end
   -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
   -- thirty five degrees right")
   local function spoken(ws)
