@@ -1742,7 +1742,7 @@ end
 function G:intent_at(i)
   local texts = self.words
   local w = texts[i]
-  if not w or (self.u:used(i) and not (self.unheld or {})[i]) then return nil end
+  if not w or (self.u:used(i) and not (self.unheld and self.unheld[i])) then return nil end
   local next_word = texts[i + 1]
   local said = self.said_sets or sets_said(self)
   local all = RULES_BY_WORD[w] or ANY_RULES
@@ -5218,6 +5218,7 @@ end
 -- used, explained or noted, none inside what the commands issued explain, the callsign aside) is an instruction squawk did not understand: it becomes the
 -- leftover asked about by name, never dropped in silence while the rest runs.
 function G:unread_switch()
+  if not self:said("off on") then return end  -- (the clause must close with "off" or "on")
   local callsign = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then for i = r.b, r.e - 1 do callsign[i] = true end end
