@@ -4195,8 +4195,12 @@ end
 
 -- The commands issued, as a set of their lower-case words (a name said as it is issued: "direct
 -- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to, the
--- route resumed (LNAV ON), the route deleted (DELRTE).
+-- route resumed (LNAV ON), the route deleted (DELRTE). Read once per content of self.out (the checks after
+-- the parse each ask; the two tables are read, never changed).
 function G:issued()
+  local key = table.concat(self.out, "\n")
+  local memo = self.issued_memo
+  if memo and memo.key == key then return memo.words, memo.kinds end
   local words, kinds = {}, {}
   for _, line in ipairs(self.out) do
     for w in line:lower():gmatch("[^%s,;]+") do words[w] = true end
@@ -4211,6 +4215,7 @@ function G:issued()
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
     end
   end
+  self.issued_memo = { key = key, words = words, kinds = kinds }
   return words, kinds
 end
 
