@@ -1785,7 +1785,7 @@ end
 function G:intent_at(i)
   local texts = self.words
   local w = texts[i]
-  if not w or (self.u:used(i) and not (self.unheld or {})[i]) then return nil end
+  if not w or (self.u:used(i) and not (self.unheld and self.unheld[i])) then return nil end
   local next_word = texts[i + 1]
   local said = self.said_sets or sets_said(self)
   local all = RULES_BY_WORD[w] or ANY_RULES
@@ -4245,8 +4245,12 @@ end
 
 -- The commands issued, as a set of their lower-case words (a name said as it is issued: "direct
 -- spijkerboor"), and which kinds were issued: conditional (AT, ATALT, ...), a switch off, a direct-to, the
--- route resumed (LNAV ON), the route deleted (DELRTE).
+-- route resumed (LNAV ON), the route deleted (DELRTE). Read once per content of self.out (the checks after
+-- the parse each ask; the two tables are read, never changed).
 function G:issued()
+  local key = table.concat(self.out, "\n")
+  local memo = self.issued_memo
+  if memo and memo.key == key then return memo.words, memo.kinds end
   local words, kinds = {}, {}
   for _, line in ipairs(self.out) do
     for w in line:lower():gmatch("[^%s,;]+") do words[w] = true end
@@ -4261,6 +4265,7 @@ function G:issued()
       if part:upper():find("%f[%w]OFF%f[%W]") then kinds.off = true end
     end
   end
+  self.issued_memo = { key = key, words = words, kinds = kinds }
   return words, kinds
 end
 
@@ -5368,6 +5373,7 @@ end
 -- used, explained or noted, none inside what the commands issued explain, the callsign aside) is an instruction squawk did not understand: it becomes the
 -- leftover asked about by name, never dropped in silence while the rest runs.
 function G:unread_switch()
+  if not self:said("off on") then return end  -- (the clause must close with "off" or "on")
   local callsign = {}
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then for i = r.b, r.e - 1 do callsign[i] = true end end

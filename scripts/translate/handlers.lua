@@ -514,17 +514,35 @@ function m:airline_at(i)
   return nil
 end
 
+-- The positions i where G:airline_at reads an airline, ascending: read once per request, when first asked in
+-- the parse (G:blank, which changes what a position reads, runs before it).
+local function airline_positions(self)
+  local at = self.airline_positions
+  if not at then
+    at = {}
+    for i = 1, #self.t do
+      if self:airline_at(i) then at[#at + 1] = i end
+    end
+    self.airline_positions = at
+  end
+  return at
+end
+
 -- The first airline name (names.lua telephony or common name, a capital in its first word as typed:
 -- "Luxair", "easyJet"; "reach" and "easy" are words too; in any case with `any_case`) said at a clause's start (the utterance's,
 -- or after punctuation, "and" or "then") with no flight number, letters, "heavy" or a correction
 -- ("United correction Southwest 686") after it and inside no reference, from the start of s's clause
 -- to s.e - 1; nil when there is none. Returns {b, e, icao} (tokens b..e-1, the airline's ICAO prefix).
 function m:airline_said_alone(s, any_case)
-  local b = s.b
-  while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
-  for i = b, s.e - 1 do
-    local icao, e = self:airline_at(i)
-    if icao then
+  local b  -- the start of s's clause, found once an airline is named before s.b
+  for _, i in ipairs(airline_positions(self)) do
+    if i >= s.e then break end
+    if i < s.b and not b then
+      b = s.b
+      while b > 1 and self.t[b - 1].kind ~= "punct" and not self:word(b - 1, "and @then_words") do b = b - 1 end
+    end
+    if i >= (b or s.b) then
+      local icao, e = self:airline_at(i)
       local nxt = self.t[e]
       local inside = false
       for _, r in ipairs(self.refs) do inside = inside or (r.b <= i and i < r.e) end

@@ -229,6 +229,30 @@ function M.defined_waypoints(line)
   return names
 end
 
+-- lookup(name, lat, lon, nm, types) read once per world (per request: the navdata does not change while it
+-- is read) and arguments; each call gets fresh copies of the one or two lists it returned.
+local function remembered(lookup)
+  local seen = {}  -- seen[name]: the calls made with that name, {lat =, lon =, nm =, types =, lists}
+  local function copy(list) return list and table.move(list, 1, #list, 1, {}) end
+  return function(name, lat, lon, nm, types)
+    local calls = seen[name]
+    if not calls then
+      calls = {}
+      seen[name] = calls
+    end
+    local hit
+    for _, c in ipairs(calls) do
+      if c.lat == lat and c.lon == lon and c.nm == nm and c.types == types then hit = c break end
+    end
+    if not hit then
+      hit = { lat = lat, lon = lon, nm = nm, types = types }
+      hit[1], hit[2] = lookup(name, lat, lon, nm, types)
+      calls[#calls + 1] = hit
+    end
+    return copy(hit[1]), copy(hit[2])
+  end
+end
+
 -- What the offline grammar may know of the simulation: the aircraft
 -- (sim:aircraft() tables, the route as waypoint names), the user waypoints,
 -- the clock's run state ("hold", "op" or "ff": sim:run_state()), and the
@@ -241,14 +265,16 @@ function M.world(sim, waypoints)
     a.route = names
   end
   return { aircraft = aircraft, waypoints = waypoints or {}, run_state = (sim:run_state()),
-           airports_named = function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end,
+           airports_named = remembered(function(name, lat, lon, nm) return sim:airports_named(name, lat, lon, nm) end),
            airports_of_city = function(name, lat, lon, nm) return sim:airports_of_city(name, lat, lon, nm) end,
            airports_with_words = function(words, lat, lon, nm) return sim:airports_with_words(words, lat, lon, nm) end,
            airports_beside_navaids = function(name, lat, lon, nm)
              return sim:airports_beside_navaids(name, lat, lon, nm)
            end,
            airport_class = function(id) return sim:airport_class(id) end,
-           navaids_named = function(name, lat, lon, nm, types) return sim:navaids_named(name, lat, lon, nm, types) end,
+           navaids_named = remembered(function(name, lat, lon, nm, types)
+             return sim:navaids_named(name, lat, lon, nm, types)
+           end),
            airports_coded = function(code, lat, lon) return sim:airports_coded(code, lat, lon) end,
            airports_beside = function(id, lat, lon, nm) return sim:airports_beside(id, lat, lon, nm) end,
            waypoints_at = function(lat, lon) return sim:waypoints_at(lat, lon) end,
