@@ -6242,4 +6242,12 @@ function M.translate(text, world)
   return { commands = out, note = note, confirm_first = g.confirm_first }
 end
 
+-- A request asked about is read again with its typing slips (translate/typos.lua) read as the words they may be.
+M.read_typed, M.typos = M.translate, require("translate.typos")
+function M.translate(text, world)
+  local r = M.read_typed(text, world)
+  if not r.ask then return r end
+  return M.typos.reread(text, world or {}, r, M.read_typed)
+end
+
 return M
