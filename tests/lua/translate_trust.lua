@@ -8349,3 +8349,22 @@ do
   if ex then asked(ex("AUA12 tun left heading 200"), "TUN is a navaid near the traffic") end
 end
 
+-- Cycle 44 (f97): values typed with a slip: a comma after "FL" ("fl,110") or, after a verb of a level change, a space
+-- inside its three figures ("climb FL3 10", "climb fl 3 20"; a unit after the figures, or no verb, keeps them apart),
+-- "mach.79", a plus after "vertical speed" (the sign of a climb; after "speed" alone it is still a change of speed),
+-- a comma with no space after a value
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("KLM77 descend fl,110"), "ALT KLM77 FL110")
+  check_eq(ex("KLM1234 climb FL3 10"), "ALT KLM1234 FL310")
+  check_eq(ex("klm1234 climb fl 3 20"), "ALT KLM1234 FL320")
+  check(ex("KLM77 descend fl 1 20 kts") ~= "ALT KLM77 FL120", "a unit after the figures keeps them apart")
+  asked(ex("klm77 fl 2 40"), "figures apart with no verb")
+  check_eq(ex("DLH4AX mach.79"), "SPD DLH4AX M0.79")
+  check_eq(ex("DLH4AX climb FL320 and mach.80"), "ALT DLH4AX FL320 ; SPD DLH4AX M0.8")
+  check_eq(ex("BAW8CK vertical speed +900"), "VS BAW8CK 900")
+  check_eq(ex("BAW8CK speed +20"), "SPD BAW8CK 270")
+  check_eq(ex("KLM1234 heading 200,climb FL300"), "HDG KLM1234 200 ; ALT KLM1234 FL300")
+end
+
