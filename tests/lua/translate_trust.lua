@@ -8368,3 +8368,12 @@ do
   check_eq(ex("KLM1234 heading 200,climb FL300"), "HDG KLM1234 200 ; ALT KLM1234 FL300")
 end
 
+-- Cycle 44 (f97): "add point LAT,LON to X's route": a point given by decimal degrees is the waypoint added; with no
+-- route and no aircraft said it is asked
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("add point 52.15,4.35 to KLM77's route"), "ADDWPT KLM77 52.15 4.35")
+  check_eq(ex("add point 52.15 4.35 to the route of KLM77"), "ADDWPT KLM77 52.15 4.35")
+  asked(ex("add point 52.15,4.35"), "a point with no route")
+end
+
