@@ -1173,6 +1173,9 @@ function m:type_said(i)
     end
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
+  -- ("the 321": the digits of one Airbus or Boeing designator, A321)
+  local short = select(3, makers())[t.text]
+  if t.kind == "number" and short then return function(d) return d == short or aliases()[d] == short end, i + 1 end
   if t.kind ~= "word" then return nil end
   local nicknames = require("translate.types").nicknames
   local two = self.t[i + 1] and nicknames[t.text .. " " .. self.t[i + 1].text]  -- ("the King Air")
@@ -1214,6 +1217,19 @@ function m:type_refs()
       for _, t in ipairs(self:refs_in(k, k + 1, "type")) do of = of or t.name == ty end
       if ty and (of or (makers()[self.t[k].text] or {})[ty]) then self:explain(k, k + 1) end
     end
+  end
+  -- ("the 321 reduce 240": a designator's digits said after "the", which the matcher heard inexactly as a
+  -- callsign, describe the one aircraft of that type flying; with none or several it stays the callsign heard)
+  local short = select(3, makers())
+  for n = #self.refs, 1, -1 do
+    local r = self.refs[n]
+    local ty = r.kind == "aircraft" and r.heard and r.e == r.b + 1 and self.t[r.b].kind == "number"
+      and self:word(r.b - 1, "the") and short[self.t[r.b].text]
+    local fits = 0
+    for _, a in ipairs(ty and self.fleet or {}) do
+      if a.type and (a.type:upper() == ty or aliases()[a.type:upper()] == ty) then fits = fits + 1 end
+    end
+    if fits == 1 then table.remove(self.refs, n) end
   end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and not r.by_airline then return end

@@ -8377,3 +8377,12 @@ do
   asked(ex("add point 52.15,4.35"), "a point with no route")
 end
 
+-- Cycle 44 (f97): "the 321": a designator's digits after "the" describe the one aircraft of that type flying, not a
+-- callsign heard inexactly; with several of the type flying it is asked
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("the 321 descend FL250"), "ALT DLH4AX FL250")
+  check_eq(ex("the 320 turn left heading 100"), "HDG BAW8CK 100 LEFT")
+  asked(ex("the 738 climb FL330"), "two 738s flying")
+end
