@@ -6262,6 +6262,7 @@ function M.translate(text, world)
 end
 -- A request asked about is read again with its typing slips (translate/typos.lua) read as the words they may be.
 M.read_typed, M.typos = M.translate, require("translate.typos")
+M.typos.not_understood = UNDERSTOOD
 function M.translate(text, world)
   local r = M.read_typed(text, world)
   if not r.ask then return r end

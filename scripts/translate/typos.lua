@@ -12,6 +12,8 @@
 --     "leftheading"): those two words.
 -- A word holding a digit or a capital after its first letter, a flying aircraft's id or its airline's letters, and
 -- a fix, navaid or airport the navdata holds near the traffic (world.place_known) are never such a slip.
+-- Only a request whose question names the one word it did not read ("What does 'tun' mean?") is read again, for that
+-- word, or one of which nothing was understood (M.not_understood, set by the grammar), for each word.
 -- Each reading of the slips (at most MAX_READINGS) is translated; when those that issue commands with nothing
 -- asked all issue the same ones, one of them reading every slip as an instruction word, that is the answer;
 -- otherwise (none, two that differ, or only a word of no instruction read: "abd 250" read as "abv 250") `asked`
@@ -24,11 +26,13 @@ local M = {}
 local MAX_READINGS = 8
 local LETTERS = "abcdefghijklmnopqrstuvwxyz"
 
--- KNOWN: word -> true (lower case letters), built once
-local KNOWN = {}
+-- KNOWN: word -> true (lower case letters), built once; CODES: those that are written in capitals in
+-- translate/names.lua (an airline's ICAO letters, a designator), never read alone as a slip's reading (an airline
+-- without its flight number is asked)
+local KNOWN, CODES = {}, {}
 do
   local seen = {}
-  local function walk(t)
+  local function walk(t, codes)
     if seen[t] then return end
     seen[t] = true
     for k, v in pairs(t) do
@@ -37,13 +41,19 @@ do
       end
       if type(v) == "string" then
         for w in v:lower():gmatch("%a+") do KNOWN[w] = true end
+        if codes and v:match("^%u+$") then CODES[v:lower()] = true end
       elseif type(v) == "table" then
-        walk(v)
+        walk(v, codes)
       end
     end
   end
-  walk(lexicon)
-  walk(names)
+  walk(lexicon, false)
+  walk(names, true)
+  -- (number words, which the lexer reads, not the lexicon)
+  for w in ("zero one two three four five six seven eight nine niner ten eleven twelve thirteen fourteen fifteen "
+      .. "sixteen seventeen eighteen nineteen twenty thirty forty fifty sixty seventy eighty ninety hundred thousand"):gmatch("%a+") do
+    KNOWN[w] = true
+  end
   for _, c in ipairs(squawk.sim.commands()) do
     KNOWN[c.name:lower()] = true
     for _, a in ipairs(c.aliases or {}) do KNOWN[a:lower()] = true end
@@ -100,7 +110,7 @@ local function readings(w)
   end
   local near, target = {}, false
   for _, e in ipairs(edits(w)) do
-    if KNOWN[e] then
+    if KNOWN[e] and not CODES[e] then
       near[#near + 1] = e
       -- (the instruction word begins as w does, or with its first two letters swapped: "nad" and)
       target = target or (#e >= 3 and TARGETS[e] == true
@@ -128,12 +138,15 @@ local function named(w, world)
 end
 
 function M.reread(text, world, asked, read)
+  -- (only the word asked about, "What does 'tun' mean?", or any word where nothing was understood)
+  local named_word = asked.ask:match("What does '(%a+)' mean%?$")
+  if not named_word and asked.ask ~= M.not_understood then return asked end
   -- slips: { b =, e = (the word's bytes in text), options = { readings } }
   local slips = {}
   for b, w, e in text:gmatch("()(%a+)()") do
     local lw = w:lower()
     local before, after = text:sub(b - 1, b - 1), text:sub(e, e)
-    if not KNOWN[lw] and not w:sub(2):find("%u") and not before:find("[%w%.%-_/]") and not after:find("[%w%.%-_/']")
+    if (not named_word or named_word:lower() == lw) and not KNOWN[lw] and not w:sub(2):find("%u") and not before:find("[%w%.%-_/]") and not after:find("[%w%.%-_/']")
         and not named(w, world) then
       local options = readings(lw)
       if #options > 0 then slips[#slips + 1] = { b = b, e = e, options = options } end
