@@ -6046,7 +6046,8 @@ function M.translate(text, world)
   -- between digits, "12,000" or "48.1,16.5", stays)
   -- (so after a value: "hdg 250,descend fl300")
   if text:find(",%a") then
-    text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2"):gsub("(%f[%w]%d+),(%a%a)", "%1, %2")
+    text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2")
+      :gsub("(%f[%w]%d+),(%a%a)", "%1, %2")
   end
   -- "HDG SEL 360", "speed selected 250": a flight-deck selector named after the value's name is that value
   if text:find("[Ss][Ee][Ll]") then
@@ -6058,7 +6059,8 @@ function M.translate(text, world)
   -- (and after "vertical speed": "vertical speed +1200")
   if text:find("%+%d") then
     text = text:gsub("()%f[%w]([%a/]+)(%s*)%+(%d)", function(at, w, space, d)
-      if lexicon.signed_rate_words[w:lower()] or (w:lower() == "speed" and text:sub(1, at - 1):lower():find("vertical%s+$")) then
+      if lexicon.signed_rate_words[w:lower()]
+          or (w:lower() == "speed" and text:sub(1, at - 1):lower():find("vertical%s+$")) then
         return w .. space .. d
       end
     end)
@@ -6070,7 +6072,9 @@ function M.translate(text, world)
     text = text:gsub("%f[%a]([Ff][Ll]),%s*(%d%d%d?)%f[%D]", "%1%2")
     text = text:gsub("(%a+)(%s+)([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()", function(verb, space, fl, two, at)
       local unit = text:match("^%s*(%a+)", at)
-      if not lexicon.level_split_verbs[verb:lower()] or (unit and lexicon.level_split_units[unit:lower()]) then return nil end
+      if not lexicon.level_split_verbs[verb:lower()] or (unit and lexicon.level_split_units[unit:lower()]) then
+        return nil
+      end
       return verb .. space .. fl .. two
     end)
   end

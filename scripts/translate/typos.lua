@@ -50,8 +50,10 @@ do
   walk(lexicon, false)
   walk(names, true)
   -- (number words, which the lexer reads, not the lexicon)
-  for w in ("zero one two three four five six seven eight nine niner ten eleven twelve thirteen fourteen fifteen "
-      .. "sixteen seventeen eighteen nineteen twenty thirty forty fifty sixty seventy eighty ninety hundred thousand"):gmatch("%a+") do
+  local numbers = "zero one two three four five six seven eight nine niner ten eleven twelve thirteen fourteen "
+    .. "fifteen sixteen seventeen eighteen nineteen twenty thirty forty fifty sixty seventy eighty ninety hundred "
+    .. "thousand"
+  for w in numbers:gmatch("%a+") do
     KNOWN[w] = true
   end
   for _, c in ipairs(squawk.sim.commands()) do
@@ -98,23 +100,27 @@ local function near_target(w)
   return false
 end
 
--- The readings of the unknown word w (lower case): a list of strings, empty when it is no slip.
+-- The readings of the unknown word w (lower case): a list of { word =, instruction = true when it is the
+-- instruction word the slip was searched for, or two words apart }, empty when w is no slip.
 local function readings(w)
   if #w < 3 or #w > 20 then return {} end
   if not near_target(w) then
-    for k = 2, #w - 2 do
+    for k = 2, #w >= 6 and #w - 2 or 0 do
       local a, b = w:sub(1, k), w:sub(k + 1)
-      if KNOWN[a] and KNOWN[b] and (TARGETS[a] or TARGETS[b]) and #w >= 6 then return { a .. " " .. b } end
+      if KNOWN[a] and KNOWN[b] and (TARGETS[a] or TARGETS[b]) then
+        return { { word = a .. " " .. b, instruction = true } }
+      end
     end
     return {}
   end
   local near, target = {}, false
   for _, e in ipairs(edits(w)) do
     if KNOWN[e] and not CODES[e] then
-      near[#near + 1] = e
       -- (the instruction word begins as w does, or with its first two letters swapped: "nad" and)
-      target = target or (#e >= 3 and TARGETS[e] == true
-        and (e:sub(1, 1) == w:sub(1, 1) or e:sub(1, 2) == w:sub(2, 2) .. w:sub(1, 1)))
+      local instruction = #e >= 3 and TARGETS[e] == true
+        and (e:sub(1, 1) == w:sub(1, 1) or e:sub(1, 2) == w:sub(2, 2) .. w:sub(1, 1))
+      near[#near + 1] = { word = e, instruction = instruction }
+      target = target or instruction
     end
   end
   return target and near or {}
@@ -146,8 +152,8 @@ function M.reread(text, world, asked, read)
   for b, w, e in text:gmatch("()(%a+)()") do
     local lw = w:lower()
     local before, after = text:sub(b - 1, b - 1), text:sub(e, e)
-    if (not named_word or named_word:lower() == lw) and not KNOWN[lw] and not w:sub(2):find("%u") and not before:find("[%w%.%-_/]") and not after:find("[%w%.%-_/']")
-        and not named(w, world) then
+    if (not named_word or named_word:lower() == lw) and not KNOWN[lw] and not w:sub(2):find("%u")
+        and not before:find("[%w%.%-_/]") and not after:find("[%w%.%-_/']") and not named(w, world) then
       local options = readings(lw)
       if #options > 0 then slips[#slips + 1] = { b = b, e = e, options = options } end
     end
@@ -162,8 +168,8 @@ function M.reread(text, world, asked, read)
     for _, s in ipairs(slips) do
       local option = s.options[rest % #s.options + 1]
       parts[#parts + 1] = text:sub(at, s.b - 1)
-      parts[#parts + 1] = option
-      all_targets = all_targets and (TARGETS[option] or option:find(" ", 1, true)) ~= nil
+      parts[#parts + 1] = option.word
+      all_targets = all_targets and option.instruction
       rest, at = rest // #s.options, s.e
     end
     parts[#parts + 1] = text:sub(at)
