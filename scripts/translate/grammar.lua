@@ -6210,7 +6210,11 @@ function M.translate(text, world)
   end
   -- "swr18k ,edw22", "dlh4tk,ewg7ma": a comma typed against the next word closes the word before (a comma
   -- between digits, "12,000" or "48.1,16.5", stays)
-  if text:find(",%a") then text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2") end
+  -- (so after a value: "hdg 250,descend fl300")
+  if text:find(",%a") then
+    text = text:gsub("(%S)%s+,(%a)", "%1, %2"):gsub("(%f[%w]%a[%w]*),(%a)", "%1, %2")
+      :gsub("(%f[%w]%d+),(%a%a)", "%1, %2")
+  end
   -- "HDG SEL 360", "speed selected 250": a flight-deck selector named after the value's name is that value
   if text:find("[Ss][Ee][Ll]") then
     text = text:gsub("%f[%w]([%a/]+)%s+([Ss][Ee][Ll]%a*)%f[%A]", function(w, sel)
@@ -6218,11 +6222,30 @@ function M.translate(text, world)
     end)
   end
   -- "vs +1500", "V/S +2500", "roc +800": a plus typed before a vertical speed is its sign (a climb)
+  -- (and after "vertical speed": "vertical speed +1200")
   if text:find("%+%d") then
-    text = text:gsub("%f[%w]([%a/]+)(%s*)%+(%d)", function(w, space, d)
-      if lexicon.signed_rate_words[w:lower()] then return w .. space .. d end
+    text = text:gsub("()%f[%w]([%a/]+)(%s*)%+(%d)", function(at, w, space, d)
+      if lexicon.signed_rate_words[w:lower()]
+          or (w:lower() == "speed" and text:sub(1, at - 1):lower():find("vertical%s+$")) then
+        return w .. space .. d
+      end
     end)
   end
+  -- "fl,260": a comma typed after "FL" is no break in the level; "climb FL2 70", "descend fl 2 10": nor is a space
+  -- inside its three figures (one figure, then two) straight after a verb of a level change
+  -- (lexicon.level_split_verbs; "klm77 fl 1 20" with none is asked), unless a unit follows ("fl 2 10 knots")
+  if text:find("[Ff][Ll]") then
+    text = text:gsub("%f[%a]([Ff][Ll]),%s*(%d%d%d?)%f[%D]", "%1%2")
+    text = text:gsub("(%a+)(%s+)([Ff][Ll]%s?%d)%s+(%d%d)%f[%D]()", function(verb, space, fl, two, at)
+      local unit = text:match("^%s*(%a+)", at)
+      if not lexicon.level_split_verbs[verb:lower()] or (unit and lexicon.level_split_units[unit:lower()]) then
+        return nil
+      end
+      return verb .. space .. fl .. two
+    end)
+  end
+  -- "mach.82": a Mach number typed against its word
+  if text:find("[Mm][Aa][Cc][Hh]%.%d") then text = text:gsub("%f[%a]([Mm][Aa][Cc][Hh])%.(%d)", "%1 .%2") end
   -- "spd 2o0", "hdg 12O": a letter O typed for a zero in a value of three figures or more, a digit first
   if text:find("%d[oO]") then
     text = text:gsub("%f[%w](%d[%doO][%doO]+)%f[%W]", function(v) return (v:gsub("[oO]", "0")) end)
@@ -6408,6 +6431,14 @@ function M.translate(text, world)
     if not seen[line] then out[#out + 1], seen[line] = line, true end
   end
   return { commands = out, note = note, confirm_first = g.confirm_first }
+end
+-- A request asked about is read again with its typing slips (translate/typos.lua) read as the words they may be.
+M.read_typed, M.typos = M.translate, require("translate.typos")
+M.typos.not_understood = UNDERSTOOD
+function M.translate(text, world)
+  local r = M.read_typed(text, world)
+  if not r.ask then return r end
+  return M.typos.reread(text, world or {}, r, M.read_typed)
 end
 
 return M

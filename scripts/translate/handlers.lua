@@ -1216,6 +1216,9 @@ function m:type_said(i)
     end
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
+  -- ("the 321": the digits of one Airbus or Boeing designator, A321)
+  local short = select(3, makers())[t.text]
+  if t.kind == "number" and short then return function(d) return d == short or aliases()[d] == short end, i + 1 end
   if t.kind ~= "word" then return nil end
   local nicknames = require("translate.types").nicknames
   local two = self.t[i + 1] and nicknames[t.text .. " " .. self.t[i + 1].text]  -- ("the King Air")

@@ -370,6 +370,17 @@ return {
         -- (a controller position named in a hand-off: "contact director 118.82")
         "director", },
   },
+  -- instruction words of three letters or more that a typing slip one edit from them is read as, beside
+  -- spelling.targets (translate/typos.lua: only in a request asked about, every reading of the slip tried), and
+  -- how far from the traffic a fix, navaid or airport of the slip's letters keeps it as typed (nautical miles)
+  typo_targets = { "and", "then", "fpm", "route", "hdg", "mach", "level", "proceed" },
+  typo_place_nm = 250,
+  -- verbs of a level change before which "FL 2 10" is FL210 (grammar's text pass)
+  level_split_verbs = { climb = true, descend = true, to = true, maintain = true },
+  -- units after a value that keep "FL 2 10" two values ("fl 2 10 knots"): a level's figures are never split before them
+  level_split_units = { knots = true, kts = true, kt = true, knot = true, degrees = true, deg = true, nm = true,
+                        miles = true, mile = true, minutes = true, min = true, seconds = true, sec = true, fpm = true,
+                        feet = true, ft = true, percent = true },
   -- airport settings named before "A -> B" ("dest eidw -> einn"): changed from A to B
   arrow_settings = { dest = true, destination = true, orig = true, origin = true },
   -- settings named before an arrow and their value ("alt -> FL330"): the arrow is no direct-to

@@ -835,6 +835,15 @@ return function(intent, rule, words)
   -- "add the point EXIT2": a point that is a known waypoint
   rule { "add append insert", "addwpt", near = { 3, "point" },
          when = function(g, i) return g:has_ref(g:find_word(i + 1, i + 4, "point") + 1, i + 5, "waypoint") end }
+  -- "add point 40.45,-3.55 to RYR8WH's route": a point given by its latitude and longitude in decimal degrees
+  -- (a pair typed with a comma, or two numbers), a route noun after it
+  rule { "add append insert", "addwpt", near = { 3, "point" }, when = function(g, i)
+    local k = g:find_word(i + 1, i + 4, "point") + 1
+    local t, u = g.t[k], g.t[k + 1]
+    local pair = t and (t.text:match("^%-?%d+%.%d+,%-?%d+%.%d+$")
+      or (t.text:match("^%-?%d+%.%d+$") and u and u.text:match("^%-?%d+%.%d+$")))
+    return pair ~= nil and g:word_in(k + 1, math.min(#g.t + 1, k + 8), "@route_nouns")
+  end }
   rule { "via through", "addwpt", prev = { 3, "route" } }
   -- "EZY45 route: SPY, BERGI", "route for UAL9: BEDUM, EEL, then ARTIP": a route written as a list
   rule { "route rte", "addwpt", when = function(g, i)

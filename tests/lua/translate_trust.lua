@@ -8629,3 +8629,67 @@ do
   asked(ex("SAS31 turn left 10, and the 737 turn left 10 as well"), "two 737s flying")
   asked(ex("SAS31 turn left 10, and the 777 as well"), "no instruction word after the type")
 end
+
+-- Cycle 44 (f97): a typing slip in a request that is otherwise asked about (translate/typos.lua): a word no list
+-- knows, one edit from an instruction word, is read as each known word one edit from it; the reading stands when
+-- every reading that issues commands issues the same ones and one of them is the instruction word's. Two words
+-- typed together ("turnleft") are read apart. Words in capitals and places near the traffic stay as typed.
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250", "DEFWPT WP1 52.1 4.1" })
+  check_eq(ex("KLM77 tun left heading 200"), "HDG KLM77 200 LEFT")
+  check_eq(ex("KLM77 descend FL100 nad reduce 220"), "ALT KLM77 FL100 ; SPD KLM77 220")
+  check_eq(ex("KLM1234 climb FL300 tehn turn left heading 200"), "ALT KLM1234 FL300 ; HDG KLM1234 200 LEFT")
+  check_eq(ex("KLM77 descend FL100 at 1800 fpn"), "ALT KLM77 FL100 1800")
+  check_eq(ex("add WP1 to KLM77 ruote"), "ADDWPT KLM77 WP1")
+  check_eq(ex("BAW8CK turnleft heading 090"), "HDG BAW8CK 90 LEFT")
+  check_eq(ex("KLM77 righthdg 300"), "HDG KLM77 300 RIGHT")
+  -- (in capitals a word is a name; two edits from "turn" is no slip; a reading only by a word of no instruction,
+  -- "abv", is no answer)
+  check_eq(ex("KLM77 TUN left heading 200"), "ASK I have HDG KLM77 200 LEFT. What does 'TUN' mean?")
+  check_eq(ex("KLM77 tum right 20 degrees"), "ASK I have HDG KLM77 200 RIGHT. What does 'tum' mean?")
+  asked(ex("KLM77 climb FL200 abd 250"), "a slip whose only reading is 'abv'")
+end
+-- (a navaid of the slip's letters near the traffic, TUN at Tulln, keeps it as typed)
+do
+  local _, ex = navscene({ "CRE AUA12 A320 48.2 16.2 090 FL150 250" }, "a slip that is a navaid near the traffic")
+  if ex then asked(ex("AUA12 tun left heading 200"), "TUN is a navaid near the traffic") end
+end
+
+-- Cycle 44 (f97): values typed with a slip: a comma after "FL" ("fl,110") or, after a verb of a level change, a space
+-- inside its three figures ("climb FL3 10", "climb fl 3 20"; a unit after the figures, or no verb, keeps them apart),
+-- "mach.79", a plus after "vertical speed" (the sign of a climb; after "speed" alone it is still a change of speed),
+-- a comma with no space after a value
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("KLM77 descend fl,110"), "ALT KLM77 FL110")
+  check_eq(ex("KLM1234 climb FL3 10"), "ALT KLM1234 FL310")
+  check_eq(ex("klm1234 climb fl 3 20"), "ALT KLM1234 FL320")
+  check(ex("KLM77 descend fl 1 20 kts") ~= "ALT KLM77 FL120", "a unit after the figures keeps them apart")
+  asked(ex("klm77 fl 2 40"), "figures apart with no verb")
+  check_eq(ex("DLH4AX mach.79"), "SPD DLH4AX M0.79")
+  check_eq(ex("DLH4AX climb FL320 and mach.80"), "ALT DLH4AX FL320 ; SPD DLH4AX M0.8")
+  check_eq(ex("BAW8CK vertical speed +900"), "VS BAW8CK 900")
+  check_eq(ex("BAW8CK speed +20"), "SPD BAW8CK 270")
+  check_eq(ex("KLM1234 heading 200,climb FL300"), "HDG KLM1234 200 ; ALT KLM1234 FL300")
+end
+
+-- Cycle 44 (f97): "add point LAT,LON to X's route": a point given by decimal degrees is the waypoint added; with no
+-- route and no aircraft said it is asked
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("add point 52.15,4.35 to KLM77's route"), "ADDWPT KLM77 52.15 4.35")
+  check_eq(ex("add point 52.15 4.35 to the route of KLM77"), "ADDWPT KLM77 52.15 4.35")
+  asked(ex("add point 52.15,4.35"), "a point with no route")
+end
+
+-- Cycle 44 (f97): "the 321": a designator's digits after "the" describe the one aircraft of that type flying, not a
+-- callsign heard inexactly; with several of the type flying it is asked
+do
+  local _, ex = scene({ "CRE BAW8CK A320 52.0 4.0 025 FL200 250", "CRE KLM1234 B738 52.2 4.2 300 FL250 280",
+    "CRE DLH4AX A321 52.4 4.4 090 FL300 280", "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("the 321 descend FL250"), "ALT DLH4AX FL250")
+  check_eq(ex("the 320 turn left heading 100"), "HDG BAW8CK 100 LEFT")
+  asked(ex("the 738 climb FL330"), "two 738s flying")
+end

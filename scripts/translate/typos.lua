@@ -1,0 +1,186 @@
+-- Typing slips in a request the grammar asked about (translate/grammar.lua's M.translate), read again.
+--
+-- reread(text, world, asked, read) -> a translation: `asked` is read(text, world)'s answer, an ask; read is the
+-- grammar's own reading (text, world) -> { commands =, ask =, ... }. The words of text that no list of squawk
+-- knows (KNOWN: every word of translate/lexicon.lua and translate/names.lua, the registry's names and aliases)
+-- and that a slip of the fingers makes of an instruction word are read again as the words they may be:
+--   - one edit (a letter left out, added, changed, or two neighbouring letters swapped) from an instruction word
+--     (lexicon.spelling.targets, lexicon.typo_targets) that begins with its letter, or with its first two letters
+--     swapped ("nad": and; "unable" is no "enable"): every known word one edit from it is a reading of it ("tun":
+--     turn, run, fun, trn, un);
+--   - two known words typed with no space between, one an instruction word, six letters in all ("turnright",
+--     "leftheading"): those two words.
+-- A word holding a digit or a capital after its first letter, a flying aircraft's id or its airline's letters, and
+-- a fix, navaid or airport the navdata holds near the traffic (world.place_known) are never such a slip.
+-- Only a request whose question names the one word it did not read ("What does 'tun' mean?") is read again, for that
+-- word, or one of which nothing was understood (M.not_understood, set by the grammar), for each word.
+-- Each reading of the slips (at most MAX_READINGS) is translated; when those that issue commands with nothing
+-- asked all issue the same ones, one of them reading every slip as an instruction word, that is the answer;
+-- otherwise (none, two that differ, or only a word of no instruction read: "abd 250" read as "abv 250") `asked`
+-- stands, naming the word as typed. Only an ask comes here, and a word is searched only when KNOWN lacks it.
+local lexicon = require("translate.lexicon")
+local names = require("translate.names")
+
+local M = {}
+
+local MAX_READINGS = 8
+local LETTERS = "abcdefghijklmnopqrstuvwxyz"
+
+-- KNOWN: word -> true (lower case letters), built once; CODES: those that are written in capitals in
+-- translate/names.lua (an airline's ICAO letters, a designator), never read alone as a slip's reading (an airline
+-- without its flight number is asked)
+local KNOWN, CODES = {}, {}
+do
+  local seen = {}
+  local function walk(t, codes)
+    if seen[t] then return end
+    seen[t] = true
+    for k, v in pairs(t) do
+      if type(k) == "string" then
+        for w in k:lower():gmatch("%a+") do KNOWN[w] = true end
+      end
+      if type(v) == "string" then
+        for w in v:lower():gmatch("%a+") do KNOWN[w] = true end
+        if codes and v:match("^%u+$") then CODES[v:lower()] = true end
+      elseif type(v) == "table" then
+        walk(v, codes)
+      end
+    end
+  end
+  walk(lexicon, false)
+  walk(names, true)
+  -- (number words, which the lexer reads, not the lexicon)
+  local numbers = "zero one two three four five six seven eight nine niner ten eleven twelve thirteen fourteen "
+    .. "fifteen sixteen seventeen eighteen nineteen twenty thirty forty fifty sixty seventy eighty ninety hundred "
+    .. "thousand"
+  for w in numbers:gmatch("%a+") do
+    KNOWN[w] = true
+  end
+  for _, c in ipairs(squawk.sim.commands()) do
+    KNOWN[c.name:lower()] = true
+    for _, a in ipairs(c.aliases or {}) do KNOWN[a:lower()] = true end
+  end
+end
+-- TARGETS: the instruction words a slip is read as, three letters or more
+local TARGETS = {}
+for _, w in ipairs(lexicon.spelling.targets) do TARGETS[w] = true end
+for _, w in ipairs(lexicon.typo_targets) do TARGETS[w] = true end
+
+-- The words one edit from w (each once), w itself left out.
+local function edits(w)
+  local out, seen = {}, { [w] = true }
+  local function add(e)
+    if not seen[e] then out[#out + 1], seen[e] = e, true end
+  end
+  for i = 1, #w do add(w:sub(1, i - 1) .. w:sub(i + 1)) end
+  for i = 1, #w - 1 do add(w:sub(1, i - 1) .. w:sub(i + 1, i + 1) .. w:sub(i, i) .. w:sub(i + 2)) end
+  for i = 1, #w + 1 do
+    for c in LETTERS:gmatch(".") do
+      if i <= #w then add(w:sub(1, i - 1) .. c .. w:sub(i + 1)) end
+      add(w:sub(1, i - 1) .. c .. w:sub(i))
+    end
+  end
+  return out
+end
+
+-- DELETED: each instruction word of three letters or more, and each with one letter left out (built once): a
+-- word one edit from such a word is in it, or is with one letter of its own left out
+local DELETED = {}
+for t in pairs(TARGETS) do
+  if #t >= 3 then
+    DELETED[t] = true
+    for i = 1, #t do DELETED[t:sub(1, i - 1) .. t:sub(i + 1)] = true end
+  end
+end
+local function near_target(w)
+  if DELETED[w] then return true end
+  for i = 1, #w do
+    if DELETED[w:sub(1, i - 1) .. w:sub(i + 1)] then return true end
+  end
+  return false
+end
+
+-- The readings of the unknown word w (lower case): a list of { word =, instruction = true when it is the
+-- instruction word the slip was searched for, or two words apart }, empty when w is no slip.
+local function readings(w)
+  if #w < 3 or #w > 20 then return {} end
+  if not near_target(w) then
+    for k = 2, #w >= 6 and #w - 2 or 0 do
+      local a, b = w:sub(1, k), w:sub(k + 1)
+      if KNOWN[a] and KNOWN[b] and (TARGETS[a] or TARGETS[b]) then
+        return { { word = a .. " " .. b, instruction = true } }
+      end
+    end
+    return {}
+  end
+  local near, target = {}, false
+  for _, e in ipairs(edits(w)) do
+    if KNOWN[e] and not CODES[e] then
+      -- (the instruction word begins as w does, or with its first two letters swapped: "nad" and)
+      local instruction = #e >= 3 and TARGETS[e] == true
+        and (e:sub(1, 1) == w:sub(1, 1) or e:sub(1, 2) == w:sub(2, 2) .. w:sub(1, 1))
+      near[#near + 1] = { word = e, instruction = instruction }
+      target = target or instruction
+    end
+  end
+  return target and near or {}
+end
+
+-- True when the word (as typed) may be a name: an aircraft's id or its airline's letters, or a place near traffic.
+local function named(w, world)
+  local lw = w:lower()
+  for _, a in ipairs(world.aircraft or {}) do
+    local id = (a.id or ""):lower()
+    if id == lw or id:match("^%a+") == lw then return true end
+  end
+  local lat, lon
+  if world.place_known then lat, lon = world.place_known(w:upper()) end
+  if not lat then return false end
+  for _, a in ipairs(world.aircraft or {}) do
+    local dlat, dlon = lat - (a.lat or 0), (lon - (a.lon or 0)) * math.cos(math.rad(lat))
+    if a.lat and 60 * math.sqrt(dlat * dlat + dlon * dlon) <= lexicon.typo_place_nm then return true end
+  end
+  return #(world.aircraft or {}) == 0
+end
+
+function M.reread(text, world, asked, read)
+  -- (only the word asked about, "What does 'tun' mean?", or any word where nothing was understood)
+  local named_word = asked.ask:match("What does '(%a+)' mean%?$")
+  if not named_word and asked.ask ~= M.not_understood then return asked end
+  -- slips: { b =, e = (the word's bytes in text), options = { readings } }
+  local slips = {}
+  for b, w, e in text:gmatch("()(%a+)()") do
+    local lw = w:lower()
+    local before, after = text:sub(b - 1, b - 1), text:sub(e, e)
+    if (not named_word or named_word:lower() == lw) and not KNOWN[lw] and not w:sub(2):find("%u")
+        and not before:find("[%w%.%-_/]") and not after:find("[%w%.%-_/']") and not named(w, world) then
+      local options = readings(lw)
+      if #options > 0 then slips[#slips + 1] = { b = b, e = e, options = options } end
+    end
+  end
+  if #slips == 0 then return asked end
+  local n = 1
+  for _, s in ipairs(slips) do n = n * #s.options end
+  if n > MAX_READINGS then return asked end
+  local agreed, instructed
+  for k = 0, n - 1 do
+    local parts, at, rest, all_targets = {}, 1, k, true
+    for _, s in ipairs(slips) do
+      local option = s.options[rest % #s.options + 1]
+      parts[#parts + 1] = text:sub(at, s.b - 1)
+      parts[#parts + 1] = option.word
+      all_targets = all_targets and option.instruction
+      rest, at = rest // #s.options, s.e
+    end
+    parts[#parts + 1] = text:sub(at)
+    local r = read(table.concat(parts), world)
+    if not r.ask and r.commands and #r.commands > 0 then
+      local said = table.concat(r.commands, " ; ")
+      if agreed and agreed.said ~= said then return asked end
+      agreed, instructed = agreed or { said = said, r = r }, instructed or all_targets
+    end
+  end
+  return instructed and agreed.r or asked
+end
+
+return M
