@@ -823,10 +823,10 @@ local function value_homophones(text)
   end)
 end
 -- digits, "point" or "decimal" in any case, digits, a word: written_forms reads a hemisphere's decimal point
-local POINT_SAID = {}
+local POINT_SAID = {}  -- {word =, pattern =}
 for _, word in ipairs({ "point", "decimal" }) do
   local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
-  POINT_SAID[#POINT_SAID + 1] = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]"
+  POINT_SAID[#POINT_SAID + 1] = { word = word, pattern = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]" }
 end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x"): the
 -- simulation's rate, written out as "sim speed x4" (a callsign-like "x4" or a bare "4x" names no aircraft)
@@ -896,16 +896,23 @@ local MORE_LESS = { more = 1, less = -1 }
 local GAIN_LOSE = { gain = 1, lose = -1 }
 
 local function written_forms(text)
+  -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
+  -- pattern requires, its first argument)
+  local low = text:lower()
+  local function where(needle, pattern, repl)
+    text, low = tokens.gsub_where(text, low, needle, pattern, repl)
+  end
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
-  text = text:gsub("^(%s*)%.(%a)", "%1%2")
+  where("%.", "^(%s*)%.(%a)", "%1%2")
   -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
-  text = text:gsub("(%s)@%s*(%w)", "%1at %2")
+  where("@", "(%s)@%s*(%w)", "%1at %2")
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
+  low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
   -- leave it as typed
-  text = text:gsub("%f[%w]([NnSs])(%d%d?)%s+(%d%d?%.?%d*)%s+([EeWw])(%d%d?%d?)%s+(%d%d?%.?%d*)%f[^%w%.]",
+  where("[ns]%d", "%f[%w]([NnSs])(%d%d?)%s+(%d%d?%.?%d*)%s+([EeWw])(%d%d?%d?)%s+(%d%d?%.?%d*)%f[^%w%.]",
     function(ns, lat, lat_min, ew, lon, lon_min)
       lat_min, lon_min = tonumber(lat_min), tonumber(lon_min)
       if not lat_min or not lon_min or lat_min >= 60 or lon_min >= 60 then return nil end
@@ -913,22 +920,22 @@ local function written_forms(text)
     end)
   -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds, also before a colon that opens
   -- what follows ("schedule at 00:15:00: ..."); mm:ss or hh:mm stays as typed
-  text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
+  where("%d:%d", "%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
     return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds" .. colon
   end)
   -- "CPA half a mile", "a quarter of a mile": a fraction of a mile said in words is that many nautical miles
-  text = text:gsub("%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
+  where("half", "%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
     if lexicon.fraction_units[unit:lower()] then return "0.5 nm" end
   end)
   -- (not after a whole number and "and": "two and a quarter miles" is the number 2.25 and its unit)
-  text = text:gsub("()%f[%a][Aa]%s+([Qq]uarter)%s+o?f?%s*a?%s*(%a+)", function(at, _, unit)
+  where("quarter", "()%f[%a][Aa]%s+([Qq]uarter)%s+o?f?%s*a?%s*(%a+)", function(at, _, unit)
     if lexicon.fraction_units[unit:lower()] and not text:sub(1, at - 1):match("%f[%a][Aa][Nn][Dd]%s+$") then
       return "0.25 nm"
     end
   end)
   -- "descend 8 500 m", "12 000 ft": a number with a space between its thousands and its last three digits,
   -- typed with its unit straight after, is one number
-  text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
+  where("%d %d", "%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
   -- "angels two six", "angels 22": military brevity for an altitude in thousands of feet (one or two digits,
@@ -939,56 +946,60 @@ local function written_forms(text)
     end
     return digits .. " thousand ft"
   end
-  text = text:gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%d%d?)%f[^%w%.]", "%1000 ft")
-    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%s+%a+)%f[%A]", angels)
-    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+)%f[%A]", angels)
+  where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%d%d?)%f[^%w%.]", "%1000 ft")
+  where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%s+%a+)%f[%A]", angels)
+  where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+)%f[%A]", angels)
   -- "250-ish", "FL200-ish": the suffix of a loose value is its own word ("ish", lexicon's discourse)
-  text = text:gsub("(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
+  where("%-ish", "(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
   -- "un-pause", "un-freeze": the prefix "un-" written with a hyphen is the one word ("unpause")
-  text = text:gsub("%f[%a]([Uu][Nn])%-(%a)", "%1%2")
+  where("un%-", "%f[%a]([Uu][Nn])%-(%a)", "%1%2")
   local sh = lexicon.shorthand
   -- "zone r 4 nm": ZONER's name typed apart, no right turn
-  text = text:gsub("%f[%a]([Zz][Oo][Nn][Ee])%s+([Rr])%f[%A]", "%1 radius")
+  where("zone", "%f[%a]([Zz][Oo][Nn][Ee])%s+([Rr])%f[%A]", "%1 radius")
   text = turn_letters(text, sh)
+  low = text:lower()
   -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7" (only a key that names
   -- a command or a setting: "t=300" in a note stays as typed, as does all of "log: seed=7 baseline")
   local label = text:match("^%s*(%a+)%s*:")
   if not (label and lexicon.note_labels[label:lower()]) then
-    text = text:gsub("%f[%w](%a[%w_]*)(%s*=%s*)([%w%.%-])", function(key, _, v)
+    where("=", "%f[%w](%a[%w_]*)(%s*=%s*)([%w%.%-])", function(key, _, v)
       if SETTING_KEYS[key:lower()] then return key .. ": " .. v end
     end)
   end
   -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
-  text = text:gsub("%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
+  where("ff", "%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
   -- "realtime" written as one word
-  text = text:gsub("%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
+  where("realtime", "%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
-  text = text:gsub("%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
+  where("v/s", "%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
-  text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
-  text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  where("fl%d", "%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
+  where("m%d", "%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
   -- a position typed as one word of whole degrees ("55N030W", "37N020W"), as oceanic points are written
-  text = text:gsub("%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
+  where("%d[ns]%d", "%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
   -- a rate glued to its unit ("1000ft/min", "1500ft/m")
-  text = text:gsub("(%d)([Ff][Tt]/[Mm][Ii]?[Nn]?)%f[%A]", "%1 %2")
+  where("ft/m", "(%d)([Ff][Tt]/[Mm][Ii]?[Nn]?)%f[%A]", "%1 %2")
   -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
   -- as after a dash (set_apart)
-  text = text:gsub("%s*%((%a[^()]*)%)", " - %1,")
+  where("%(", "%s*%((%a[^()]*)%)", " - %1,")
   -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
   -- end) is quoted text, as in double quotes
-  text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
+  if low:find("'", 1, true) then
+    text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
+    low = text:lower()
+  end
   -- "jet2 44m", "Jet 2 one two": the airline's brand name (its telephony is Channex, EXS) before a flight number
-  text = text:gsub("%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
+  where("jet", "%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
     if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
   end)
   -- "orig/dest AFR1234: LFPG -> LFML", "origin/destination EZY45 EGKK EHAM": both settings written as one
   -- with a slash, then the aircraft and the two airports in that order (an arrow between them or none)
-  text = text:gsub("%f[%a]([Oo][Rr][Ii][Gg]%a*)%s*/%s*([Dd][Ee][Ss][Tt]%a*)%s+(%w+):?%s+(%a%a%a%a)%s*%-*>?%s*(%a%a%a%a)%f[%A]",
+  where("orig", "%f[%a]([Oo][Rr][Ii][Gg]%a*)%s*/%s*([Dd][Ee][Ss][Tt]%a*)%s+(%w+):?%s+(%a%a%a%a)%s*%-*>?%s*(%a%a%a%a)%f[%A]",
     "%3 origin %4, destination %5")
   -- "dest eidw -> einn": an arrow between two places after the name of an airport setting changes it
   -- from the one to the other: the setting takes the second
-  if text:find("->", 1, true) then
-    text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
+  if low:find("->", 1, true) then
+    where("%->", "(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
       if not lexicon.arrow_settings[setting:lower()] then return nil end
       return setting .. space .. to
     end)
@@ -996,7 +1007,7 @@ local function written_forms(text)
     -- after a setting's name, is no place); before a word that opens an instruction (a value's name, a verb
     -- of climb or descent, a turn: "KLM56 -> hdg 210 L", "passing FL120 -> spd 280") it separates that
     -- instruction from what is before it, as a comma
-    text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
+    where("%->", "(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
       local b, a = before:lower(), after:lower()
       if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
       if word_set("turn left right lt rt @instruction_nouns @up @down", 1)[a] then return before .. ", " .. after end
@@ -1004,11 +1015,12 @@ local function written_forms(text)
     end)
   end
   text = value_homophones(split_digits(text))
-  text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
+  low = text:lower()
+  where("%a%d", "%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil
   end)
-  text = text:gsub("()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
+  where("%a%s+%d", "()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
     local w = sh[pre:lower()]
     -- ("when it's 15 miles from HEL": the letter of a contraction is no shorthand)
     if not w or text:sub(at - 1, at - 1) == "'" or text:sub(math.max(1, at - 3), at - 1) == "\u{2019}" then
@@ -1020,33 +1032,37 @@ local function written_forms(text)
     return w .. space .. digit
   end)
   -- a coordinate typed in digits with its point said ("55 decimal 5 north"): 55.5, only before a hemisphere
-  for _, pattern in ipairs(POINT_SAID) do
-    text = text:gsub(pattern, function(whole, frac, space, hemi)
+  for _, p in ipairs(POINT_SAID) do
+    where(p.word, p.pattern, function(whole, frac, space, hemi)
       if HEMISPHERES[hemi:lower()] then return whole .. "." .. frac .. space .. hemi end
       return nil
     end)
   end
-  text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
-  text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
+  where("a thousand", "%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
+  where("a hundred", "%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   -- ("another thousand feet", "a further hundred feet": one more of it)
-  text = text:gsub("%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
-    :gsub("%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
-  text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
-  text = text:gsub("%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
+  where("another thousand", "%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2")
+  where("another hundred", "%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
+  where("further thousand", "%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2")
+  where("further hundred", "%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
+  where("flightlevel", "%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
+  where("call", "%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
   -- "Egyptair triple seven", "double two": a digit said twice or three times
-  text = text:gsub("%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
+  where("double", "%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
     if DIGIT_WORDS[d:lower()] then return d .. " " .. d end
     return nil
-  end):gsub("%f[%a]([Tt][Rr][Ii][Pp][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
+  end)
+  where("triple", "%f[%a]([Tt][Rr][Ii][Pp][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
     if DIGIT_WORDS[d:lower()] then return d .. " " .. d .. " " .. d end
     return nil
   end)
-  text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
-  text = text:gsub("%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
-  text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
-  text = text:gsub("(%d)\xC2\xB0(%s)", "%1 degrees%2"):gsub("(%d)\xC2\xB0$", "%1 degrees")
+  where("ray", "%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
+  where("trot", "%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
+  where("nine her", "%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
+  where("\xC2\xB0", "(%d)\xC2\xB0(%s)", "%1 degrees%2")
+  where("\xC2\xB0", "(%d)\xC2\xB0$", "%1 degrees")
   -- a change typed with its sign and unit ("+20 kts", "-1000 ft"): that many faster/slower, up/down
-  text = text:gsub("%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]", function(sign, n, unit)
+  where("[%+%-]%d", "%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]", function(sign, n, unit)
     local u = unit:lower()
     if u == "kts" or u == "kt" or u == "knots" then
       return n .. " " .. unit .. (sign == "+" and " faster" or " slower")
@@ -1057,7 +1073,7 @@ local function written_forms(text)
   -- the same change typed with no unit straight after the value's name ("speed +20", "alt -2000", "climb
   -- +3000", "heading +20"): knots, feet, or degrees of a turn to the right (+) or left (-)
   -- ("vertical speed -2000" is a rate, its sign its direction)
-  text = text:gsub("()%f[%a](%a+)(%s+)([%+%-])(%d+)%f[^%w%.]", function(at, name, space, sign, n)
+  where("[%+%-]%d", "()%f[%a](%a+)(%s+)([%+%-])(%d+)%f[^%w%.]", function(at, name, space, sign, n)
     local kind = SIGNED_CHANGE[name:lower()]
     if kind == "speed" and (text:sub(1, at - 1):match("(%a+)%s*$") or ""):lower() == "vertical" then return nil end
     if kind == "speed" then return name .. space .. n .. " kt" .. (sign == "+" and " faster" or " slower") end
@@ -1070,29 +1086,37 @@ local function written_forms(text)
   -- an amount with its unit and "more"/"less" after it, or "gain"/"lose" before it ("20 kt less", "lose 4000
   -- ft", "gain 1000 feet"): that many faster/slower, up/down
   -- ("2000 ft more or less", "20 kt less than ...": an estimate or a bound, left as typed)
-  text = text:gsub("%f[%w](%d+)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
-    local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
-    local nx = (text:match("^%s+(%a+)", at) or ""):lower()
-    if not (kind and dir) or nx == "or" or nx == "than" then return nil end
-    if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
-    return (dir > 0 and "up " or "down ") .. n .. space .. unit
-  end):gsub("%f[%a](%a+)(%s+)(%d+)(%s*)(%a+)%f[%A]", function(verb, space, n, space2, unit)
-    local dir, kind = GAIN_LOSE[verb:lower()], UNIT_CHANGE[unit:lower()]
-    if not (kind and dir) then return nil end
-    if kind == "speed" then return n .. space2 .. unit .. (dir > 0 and " faster" or " slower") end
-    return (dir > 0 and "up" or "down") .. space .. n .. space2 .. unit
-  end)
+  if low:find("more", 1, true) or low:find("less", 1, true) then
+    text = text:gsub("%f[%w](%d+)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
+      local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
+      local nx = (text:match("^%s+(%a+)", at) or ""):lower()
+      if not (kind and dir) or nx == "or" or nx == "than" then return nil end
+      if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
+      return (dir > 0 and "up " or "down ") .. n .. space .. unit
+    end)
+    low = text:lower()
+  end
+  if low:find("gain", 1, true) or low:find("lose", 1, true) then
+    text = text:gsub("%f[%a](%a+)(%s+)(%d+)(%s*)(%a+)%f[%A]", function(verb, space, n, space2, unit)
+      local dir, kind = GAIN_LOSE[verb:lower()], UNIT_CHANGE[unit:lower()]
+      if not (kind and dir) then return nil end
+      if kind == "speed" then return n .. space2 .. unit .. (dir > 0 and " faster" or " slower") end
+      return (dir > 0 and "up" or "down") .. space .. n .. space2 .. unit
+    end)
+    low = text:lower()
+  end
   -- "a 180 heading", "the 090 heading": a heading of three digits said before its name
-  text = text:gsub("%f[%a]([Aa]n?%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
-    :gsub("%f[%a]([Tt]he%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
+  where("%d%s+heading", "%f[%a]([Aa]n?%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
+  where("%d%s+heading", "%f[%a]([Tt]he%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
   -- "45.6,-122.6": a latitude and longitude in decimal degrees typed with a comma and no space between them
-  text = text:gsub("%f[%d%-](%-?%d%d?%.%d+),(%-?%d%d?%d?%.%d+)%f[^%w%.]", "%1 %2")
-  return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
+  where("%d,", "%f[%d%-](%-?%d%d?%.%d+),(%-?%d%d?%d?%.%d+)%f[^%w%.]", "%1 %2")
+  where("%d %d", "%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
     if b == "000" or text:sub(at):match("^%s*[Ff][Ee]?[Ee]?[Tt]%f[%A]") or text:sub(at):match("^%s*[Ff][Oo][Oo][Tt]") then
       return a .. b
     end
     return nil
-  end))
+  end)
+  return text
 end
 
 -- ---- the state of one translation ----
@@ -5985,32 +6009,43 @@ function M.translate(text, world)
   world.waypoints = world.waypoints or {}
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
-  text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
+  if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
   -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number
   -- written, with one or two digits after the point, its whole part of one or two digits or after "minus" (a
   -- heading's "270 point 5" stays apart, asked)
-  for _, whole in ipairs({ "%f[%w](%d%d?)", "(%f[%a][Mm]inus%s+%d%d%d)" }) do
-    text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
+  if text:find("point", 1, true) then
+    for _, whole in ipairs({ "%f[%w](%d%d?)", "(%f[%a][Mm]inus%s+%d%d%d)" }) do
+      text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
+    end
+    text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
   end
-  text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
   -- "at twelve nautical miles from BRA": a distance said after "at" in nautical miles is that many miles (the
   -- letters of "at" and the number before "nautical" are no callsign)
-  text = text:gsub("(%f[%a][Aa][Tt]%s+[%w%.%-]+%s+)[Nn]autical%s+([Mm]iles?%f[%A])", "%1%2")
+  if text:find("autical", 1, true) then
+    text = text:gsub("(%f[%a][Aa][Tt]%s+[%w%.%-]+%s+)[Nn]autical%s+([Mm]iles?%f[%A])", "%1%2")
+  end
   -- punctuation dictated as words: the marks (lexicon.dictated_punctuation)
   for _, d in ipairs(lexicon.dictated_punctuation) do
-    text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)
-      if d.not_before and text:match("^%s*(%a+)", at) == d.not_before then return nil end
-      return d.mark
-    end)
+    -- (only where the text holds the last of the said words, as the pattern requires)
+    if text:find(d.said:match("%S+$"), 1, true) then
+      text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)
+        if d.not_before and text:match("^%s*(%a+)", at) == d.not_before then return nil end
+        return d.mark
+      end)
+    end
   end
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
-  text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+  if text:find(">", 1, true) then
+    text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+  end
   -- "hdg 220 -> 250", "spd 280 -> 250": an arrow between two values after the name of a heading or speed, from
   -- the one to the other
-  text = text:gsub("%f[%w](%a+)(%s*)(%d+)%s*[%-=]+>%s*(%d+)%f[^%w%.]", function(name, space, from, to)
-    if word_set("heading hdg speed spd", 1)[name:lower()] then return name .. space .. "from " .. from .. " to " .. to end
-  end)
+  if text:find(">", 1, true) then
+    text = text:gsub("%f[%w](%a+)(%s*)(%d+)%s*[%-=]+>%s*(%d+)%f[^%w%.]", function(name, space, from, to)
+      if word_set("heading hdg speed spd", 1)[name:lower()] then return name .. space .. "from " .. from .. " to " .. to end
+    end)
+  end
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between
   if text:lower():find("wind", 1, true) then
     text = text:gsub("%f[%w%.](%d%d%d)/(%d%d?%d?)%s*[Kk]?[Tt]?[Ss]?%f[^%w%.]", "from %1 at %2 knots")
@@ -6021,7 +6056,7 @@ function M.translate(text, world)
     end)
   end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
-  text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
+  if text:find("/", 1, true) then text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2") end
   -- "the Transavia's there", "KLM12's already at FL300", "KLM12's at FL350": a name's "'s" before a word of place,
   -- time or level kept is "is"
   if text:find("'s ", 1, true) or text:find("\xE2\x80\x99s ", 1, true) then
@@ -6070,8 +6105,12 @@ function M.translate(text, world)
     end)
   end
   -- "the closest point of approach": an abbreviation's words said out (lexicon.spelled_out), read as it
+  local lower = text:lower()
   for _, x in ipairs(SPELLED_OUT) do
-    if text:lower():find(x.words, 1, true) then text = text:gsub(x.pattern, x.short) end
+    if lower:find(x.words, 1, true) then
+      text = text:gsub(x.pattern, x.short)
+      lower = text:lower()
+    end
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
