@@ -324,6 +324,16 @@ local function turn_letters(text, sh)
   local padded, heading = " " .. text:lower() .. " ", false
   for _, p in ipairs(HEADING_PATTERNS) do heading = heading or padded:find(p) ~= nil end
   if not heading then return text end
+  -- (a turn letter is a word of letters alone, so one of the text's runs of letters)
+  local turn = false
+  for letters in text:gmatch("%a+") do
+    local d = sh[letters:lower()]
+    if d == "left" or d == "right" then
+      turn = true
+      break
+    end
+  end
+  if not turn then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   local changed = false
@@ -547,16 +557,18 @@ local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
 local SC_CLOSING = set_of(lexicon.self_correction.closing)
 -- (G.sc_dropping: the first words of the markers that take back in words, a set)
 G.sc_dropping = set_of(lexicon.self_correction.dropping)
--- patterns finding the first word of each marker as a whole word in lower-case text (a marker's word is
--- a token's bare text only where one of these finds it)
+-- {word, pattern} of the first word of each marker, the pattern finding it as a whole word in lower-case
+-- text (a marker's word is a token's bare text only where one of these finds it)
 local SC_MARKER_PATTERNS = {}
 for _, m in ipairs(lexicon.self_correction.markers) do
-  SC_MARKER_PATTERNS[#SC_MARKER_PATTERNS + 1] = "%f[%w]" .. m:match("^%S+") .. "%f[%W]"
+  local w = m:match("^%S+")
+  SC_MARKER_PATTERNS[#SC_MARKER_PATTERNS + 1] = { word = w, pattern = "%f[%w]" .. w .. "%f[%W]" }
 end
--- True when the lower-case text holds one of the words of `patterns` (whole-word patterns, as above).
+-- True when the lower-case text holds one of the words of `patterns` whole ({word, pattern} as above; the
+-- pattern is tried only where a plain find sees the word).
 local function holds_word(lower, patterns)
   for _, p in ipairs(patterns) do
-    if lower:find(p) then return true end
+    if lower:find(p.word, 1, true) and lower:find(p.pattern) then return true end
   end
   return false
 end
@@ -629,7 +641,9 @@ for _, p in ipairs(lexicon.readback_heard) do
   table.insert(READBACK_HEARD[first], p)
 end
 local READBACK_HEARD_PATTERNS = {}
-for first in pairs(READBACK_HEARD) do READBACK_HEARD_PATTERNS[#READBACK_HEARD_PATTERNS + 1] = "%f[%w]" .. first .. "%f[%W]" end
+for first in pairs(READBACK_HEARD) do
+  READBACK_HEARD_PATTERNS[#READBACK_HEARD_PATTERNS + 1] = { word = first, pattern = "%f[%w]" .. first .. "%f[%W]" }
+end
 local function readback_heard(text)
   if not holds_word(text:lower(), READBACK_HEARD_PATTERNS) then return text end
   local toks = bare_words(text)
@@ -663,6 +677,7 @@ end
 -- not 300 speed 250") the "not" stays, and is asked about.
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
 local function negated_values(text)
+  if not text:lower():find("not", 1, true) then return text end  -- (no "not" said)
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from = {}, 1
@@ -711,20 +726,26 @@ local function all_roles(words)
   return true
 end
 local function role_dropped(text)
-  local role, said = text:match("^%s*(%a+[%s%-]?%a*)%s*,%s*(.+)$")
-  if not role then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s+([Pp]lease%s.+)$") end
+  -- (each form is matched only where the text holds its comma, "lease", colon or dash)
+  local colon = text:find(":", 1, true)
+  local role, said
+  if text:find(",", 1, true) then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s*,%s*(.+)$") end
+  if not role and text:find("lease", 1, true) then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s+([Pp]lease%s.+)$") end
   if role and all_roles(role) then return said end
-  local label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$")
+  local label, before, sep, after, rest
+  if colon or text:find("-", 1, true) then label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$") end
   if label and rest ~= "" and not (sep == "-" and (before == "" or after == ""))
       and all_roles((label:lower():gsub("%s+here$", ""))) then
     return rest
   end
-  -- ("instructor to sim operator: ...": one role to another before the colon)
-  local from, to, told = text:match("^%s*(%a+[%s%-]?%a*)%s+[Tt]o%s+(%a+[%s%-]?%a*)%s*:%s*(%S.*)$")
-  if from and all_roles(from) and all_roles(to) then return told end
-  -- ("pseudo-pilot note: ...", "instructor notes: ...": the role's note is its line, no ECHO)
-  local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
-  if noted and (all_roles(noted) or NOTE_OWNERS[noted:lower()]) then return line end
+  if colon then
+    -- ("instructor to sim operator: ...": one role to another before the colon)
+    local from, to, told = text:match("^%s*(%a+[%s%-]?%a*)%s+[Tt]o%s+(%a+[%s%-]?%a*)%s*:%s*(%S.*)$")
+    if from and all_roles(from) and all_roles(to) then return told end
+    -- ("pseudo-pilot note: ...", "instructor notes: ...": the role's note is its line, no ECHO)
+    local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
+    if noted and (all_roles(noted) or NOTE_OWNERS[noted:lower()]) then return line end
+  end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] == true then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
@@ -734,6 +755,7 @@ end
 local ASSENT = set_of(lexicon.assent)
 -- "... climb fl150? engineer: yes do it": a second speaker's label and assent after the request are dropped
 local function assent_dropped(text)
+  if not text:find(":", 1, true) then return text end  -- (no label's colon)
   local said, label, reply = text:match("^(.-[%?%.!])%s*(%a+[%s%-]?%a*)%s*:%s*(.-)%s*[%.!]?$")
   if not said or not all_roles(label) or reply == "" then return text end
   for w in reply:lower():gmatch("[^%s,]+") do
@@ -762,6 +784,7 @@ local function hyphened_types(text)
     for _, d in ipairs(TYPES.designators) do KNOWN_TYPES[d:upper()] = true end
     for d in pairs(TYPES.aliases) do KNOWN_TYPES[d] = true end  -- ("E-175": the E75L)
   end
+  if not text:find("-", 1, true) then return text end
   return (text:gsub("%f[%w](%a%a?)%-(%d%d%d?)%f[%W]", function(a, n)
     if KNOWN_TYPES[(a .. n):upper()] then return a .. n end
     return nil
@@ -775,6 +798,8 @@ local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w
 -- re-read as other numbers (the hemisphere dropped, the degrees taken for a heading).
 local function impossible_minutes(text)
   local low = text:lower()
+  -- (the first two forms hold digits, space and digits; the third "deg")
+  if not low:find("%d%s+%d") and not low:find("deg", 1, true) then return nil end
   local function bad(deg, min) return deg:match("^%d+$") and tonumber(deg) <= 180 and tonumber(min) >= 60 end
   local function said(b, e) return (text:sub(b, e - 1):gsub("[%s%.]+$", "")) end
   -- the hemisphere before the degrees: "N55 75 W003 20"
@@ -859,6 +884,15 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
   end
 end
 local function typed_abbreviations(text)
+  -- (a word typed of letters alone is one of its runs of letters: with none an abbreviation, none is read)
+  local typed = false
+  for letters in text:gmatch("%a+") do
+    if ABBREVIATIONS[letters:lower()] then
+      typed = true
+      break
+    end
+  end
+  if not typed then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
@@ -973,7 +1007,7 @@ local function written_forms(text)
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
   where("v/s", "%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
-  where("fl%d", "%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
+  where("%wfl%d", "%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   where("m%d", "%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
   -- a position typed as one word of whole degrees ("55N030W", "37N020W"), as oceanic points are written
   where("%d[ns]%d", "%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
@@ -5383,7 +5417,8 @@ end
 -- said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
   -- (a registration written in capitals with its hyphen, "D-EABC", "OE-LDA", is the one id, flying or new)
-  text = text:gsub("%f[%w](%u%u?)%-(%u%u%u%u?)%f[%W]", "%1%2")
+  local hyphen = text:find("-", 1, true)
+  if hyphen then text = text:gsub("%f[%w](%u%u?)%-(%u%u%u%u?)%f[%W]", "%1%2") end
   if #fleet == 0 then return text end
   local ids, tails = {}, {}
   for _, a in ipairs(fleet) do
@@ -5395,7 +5430,9 @@ local function split_ids(text, fleet)
     if ids[(a .. b):lower()] then return a .. b end
     return nil
   end
-  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined):gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined)
+  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined)
+  if hyphen then text = text:gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined) end
+  if not next(tails) then return text end
   return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
     if tails[(d .. l):lower()] == 1 then return d .. l end
     return nil
@@ -5480,11 +5517,29 @@ end
 -- has a US registration (N and a digit) ending with them and the prefix fits it (November: any; a type word
 -- without digits: the aircraft's type). Returns the text and, when two aircraft end so or the prefix does not
 -- fit the one that does (a suffix, not the whole id), the question to ask instead, else nil.
+-- G.nickname_heads: the first word of each nickname of two words (types.nicknames), a set
+G.nickname_heads = {}
+for name in pairs(require("translate.types").nicknames) do
+  local head = name:match("^(%S+) ")
+  if head then G.nickname_heads[head] = true end
+end
 local function abbreviated_registrations(text, fleet)
   if #fleet == 0 then return text, nil end
-  local words = {}  -- {text, b, e} of each word
-  for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
   local nicknames = require("translate.types").nicknames
+  -- (the words are read only where one may open a prefix: November or N, a maker, model or nickname, or
+  -- the first word of a nickname of two; else only the bare suffix below is)
+  local prefixed = false
+  for w in text:gmatch("[%w]+") do
+    w = w:lower()
+    if w == "november" or w == "n" or G.type_words()[w] or nicknames[w] or G.nickname_heads[w] then
+      prefixed = true
+      break
+    end
+  end
+  local words = {}  -- {text, b, e} of each word, where a prefix may be said
+  if prefixed then
+    for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
+  end
   local function fits(prefix, a)
     local id, ty = a.id:upper(), (a.type or ""):upper()
     if prefix == "november" or prefix == "n" then return id:match("^N%d") ~= nil end
@@ -5597,38 +5652,41 @@ end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
-  -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
-  -- aircraft has that id, or a number follows: "the Ryanair one two three")
-  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
-    local icao = AIRLINE_WORDS[w:lower()]
-    if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
-      return the .. w .. s1 .. "aircraft" .. s2 .. nx
-    end
-    return nil
-  end)
-  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
-    local icao = AIRLINE_WORDS[w:lower()]
-    if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then
-      return the .. w .. "," .. s1 .. n .. s2 .. unit
-    end
-    return nil
-  end)
-  -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
-  -- thirty five degrees right")
-  local function spoken(ws)
-    for w in ws:gmatch("[^%s%-]+") do
-      if not NUMBER_WORDS[w:lower()] then return false end
-    end
-    return true
-  end
-  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
-                             "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" }) do
-    text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
-      if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
+  -- (the passes after "the" only where the text holds it)
+  if text:lower():find("the", 1, true) then
+    -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
+    -- aircraft has that id, or a number follows: "the Ryanair one two three")
+    text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
+      local icao = AIRLINE_WORDS[w:lower()]
+      if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
+        return the .. w .. s1 .. "aircraft" .. s2 .. nx
+      end
+      return nil
+    end)
+    text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
+      local icao = AIRLINE_WORDS[w:lower()]
+      if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then
         return the .. w .. "," .. s1 .. n .. s2 .. unit
       end
       return nil
     end)
+    -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
+    -- thirty five degrees right")
+    local function spoken(ws)
+      for w in ws:gmatch("[^%s%-]+") do
+        if not NUMBER_WORDS[w:lower()] then return false end
+      end
+      return true
+    end
+    for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
+                               "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" }) do
+      text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
+        if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
+          return the .. w .. "," .. s1 .. n .. s2 .. unit
+        end
+        return nil
+      end)
+    end
   end
   -- "VLG12AB velocity 250 knots", "increase the velocity of TAP57": an airline's telephony that is also the
   -- noun of a value (lexicon.value_noun_airlines: word -> {ICAO prefix, the noun's plain word}) is that noun
@@ -5661,6 +5719,7 @@ local function airline_values(text, fleet)
   end
   -- "Shamrock 1 2 3": a flight number typed digit by digit after its airline's telephony, three or four
   -- single digits in a row, is one number
+  if not text:find("%d %d %d") then return text end
   return (text:gsub("(%f[%a]%a+%s+)(%d[%d%s]*%d)%f[^%d%s]", function(w, run)
     if not AIRLINE_WORDS[w:match("%a+"):lower()] or not run:match("^%d %d %d$") and not run:match("^%d %d %d %d$") then
       return nil
@@ -5804,8 +5863,8 @@ local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc 
   after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
 local TYPED_PLACE_NM = 250
 -- patterns finding a word of PLACE_SLOTS as a whole word in " " .. lower-case text .. " "
-local PLACE_SLOT_PATTERNS = {}
-for w in pairs(PLACE_SLOTS) do PLACE_SLOT_PATTERNS[#PLACE_SLOT_PATTERNS + 1] = "%s" .. w .. "%s" end
+local PLACE_SLOT_PATTERNS = {}  -- {word, pattern}
+for w in pairs(PLACE_SLOTS) do PLACE_SLOT_PATTERNS[#PLACE_SLOT_PATTERNS + 1] = { word = w, pattern = "%s" .. w .. "%s" } end
 -- "destination c y v r", "origin boston k b o s": four single letters spelled in a row (none before or after)
 -- that join into an airport's ICAO code the navdata holds (world.airport_class), and no aircraft's id, are
 -- that code
@@ -5833,7 +5892,7 @@ local function typed_places(text, world)
   -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
   local padded, slots = " " .. text:lower() .. " ", false
   for _, p in ipairs(PLACE_SLOT_PATTERNS) do
-    if padded:find(p) then
+    if padded:find(p.word, 1, true) and padded:find(p.pattern) then
       slots = true
       break
     end
@@ -5961,6 +6020,7 @@ end
 M.quoted_words = { frames = set_of(lexicon.quoted_clearance.frames),
   not_frames = set_of(lexicon.quoted_clearance.not_frames) }
 function M.quoted_clearance(text, world)
+  if not text:find('["\226\128\156]') then return nil end  -- (no byte that may open a quote, as the pattern below requires)
   local pre, quoted, post = text:match('^([^"\226]*)["\226\128\156]+([^"\226]+)["\226\128\157]+([^"\226]*)$')
   if not quoted or not quoted:find("%a") then return nil end
   local outside = pre .. " " .. post
@@ -6105,11 +6165,11 @@ function M.translate(text, world)
     end)
   end
   -- "the closest point of approach": an abbreviation's words said out (lexicon.spelled_out), read as it
-  local lower = text:lower()
+  local low = text:lower()
   for _, x in ipairs(SPELLED_OUT) do
-    if lower:find(x.words, 1, true) then
+    if low:find(x.words, 1, true) then
       text = text:gsub(x.pattern, x.short)
-      lower = text:lower()
+      low = text:lower()
     end
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
@@ -6131,10 +6191,13 @@ function M.translate(text, world)
   local two_part = text:match("%f[%d:](%d%d?:[0-5]%d):?%f[^%d:]")
   -- type names with their digits said as words, where traffic is created (random traffic too)
   local lower = text:lower()
+  -- (a word opening a word of the text, or `whole` one; the pattern is tried only where a plain find sees it)
+  local function cue(word, whole)
+    return lower:find(word, 1, true) and lower:find("%f[%a]" .. word .. (whole and "%f[%A]" or ""))
+  end
   -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen")
-  if lower:find("%f[%a]create") or lower:find("%f[%a]spawn") or lower:find("%f[%a]generate")
-      or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random")
-      or lower:find("%f[%a]new%f[%A]") or lower:find("%f[%a]set up%f[%A]") or lower:find("%f[%a]put%f[%A]") then
+  if cue("create") or cue("spawn") or cue("generate") or cue("add") or cue("mcre") or cue("random")
+      or cue("new", true) or cue("set up", true) or cue("put", true) then
     text = types.plurals(types.spoken(text, TYPES, lexicon.phonetic), TYPES, world.aircraft, lexicon.variant_families)
   end
   local apart
