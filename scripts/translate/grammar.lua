@@ -931,7 +931,7 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 
 local function written_forms(text)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
-  -- pattern requires, its first argument)
+  -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
   local low = text:lower()
   local function where(needle, pattern, repl)
     text, low = tokens.gsub_where(text, low, needle, pattern, repl)
