@@ -70,6 +70,10 @@ local function spelling_kept()
   for _, n in ipairs(lexicon.not_simulated) do
     for w in n.words:gmatch("%S+") do kept[#kept + 1] = w end
   end
+  -- (a word of an airline's telephony is a name of its own: "Air Crete" is no "create")
+  for _, a in ipairs(names.airlines) do
+    for w in a[1]:gmatch("%S+") do kept[#kept + 1] = w end
+  end
   return setmetatable({ spelling = { targets = lexicon.spelling.targets, common = kept }, keywords = keywords },
     { __index = lexicon })
 end
@@ -181,11 +185,11 @@ local function know_all(v, seen)
   -- holds; lexicon.dictated_punctuation is the marks it names: they account for no word)
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
-      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits
+      or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
-      or v == lexicon.dictated_punctuation then
+      or v == lexicon.dictated_punctuation or v == lexicon.acknowledged then
     return
   end
   seen[v] = true
@@ -392,11 +396,26 @@ local function foreign_digits(text)
   local function digit(k)
     local w = bare[k]
     return w ~= nil and (F[w] ~= nil or NUMBER_WORDS[w] == true or w:match("^%d+$") ~= nil
-      or lexicon.phonetic[w] ~= nil)
+      or lexicon.phonetic[w] ~= nil or lexicon.foreign_hesitation_digits[w] ~= nil)
+  end
+  -- (true when the run of digit words about token i, no punctuation parting them, holds a word of F)
+  local function foreign_run(i)
+    for step = -1, 1, 2 do
+      local k = i + step
+      while digit(k) and not toks[math.min(k, k - step)]:match("%p$") do
+        if F[bare[k]] then return true end
+        k = k + step
+      end
+    end
+    return false
   end
   return tokens.rewrite(text, toks, function(i)
     local en = F[bare[i]]
-    if not en then return nil end
+    if not en then
+      en = lexicon.foreign_hesitation_digits[bare[i]]
+      if en and foreign_run(i) then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
+      return nil
+    end
     -- (punctuation closing the word before parts the two: "Iberia tres uno... Iberia three")
     local beside = (digit(i - 1) and not toks[i - 1]:match("%p$")) or (digit(i + 1) and not toks[i]:match("%p$"))
     if beside then return en .. (toks[i]:match("%p+$") or ""), i + 1 end
@@ -929,6 +948,9 @@ local UNIT_CHANGE = { kt = "speed", kts = "speed", knots = "speed", ft = "alt", 
 local MORE_LESS = { more = 1, less = -1 }
 local GAIN_LOSE = { gain = 1, lose = -1 }
 
+-- lexicon.value_names as a set (written_forms: a name glued to its value)
+G.value_name_set = set_of(lexicon.value_names)
+
 local function written_forms(text)
   -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
   -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
@@ -1009,6 +1031,13 @@ local function written_forms(text)
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
   where("%wfl%d", "%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
   where("m%d", "%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  -- "mach.76", "mach0.76", "fl.300", "hdg.240": a value's name glued to its value by a dot is the name,
+  -- then the value (Mach keeps its decimal point)
+  where("%a0?%.%d", "%f[%a](%a+)(0?)%.(%d)", function(name, zero, d)
+    local n = name:lower()
+    if n == "mach" then return name .. " " .. zero .. "." .. d end
+    if G.value_name_set[n] and zero == "" then return name .. " " .. d end
+  end)
   -- a position typed as one word of whole degrees ("55N030W", "37N020W"), as oceanic points are written
   where("%d[ns]%d", "%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
   -- a rate glued to its unit ("1000ft/min", "1500ft/m")
@@ -1074,6 +1103,16 @@ local function written_forms(text)
   end
   where("a thousand", "%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
   where("a hundred", "%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
+  -- ("set conflict vertical zone thousand feet": "thousand feet" after a word that is no number, nor a word
+  -- heard for a digit ("to thousand"), is one thousand feet)
+  where("housand", "%f[%a](%a+)(%s+)([Tt]housand)(%s+)(%a+)", function(w, s1, th, s2, unit)
+    local lw, u = w:lower(), unit:lower()
+    if (u == "feet" or u == "ft" or u == "foot") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
+        and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw] then
+      return w .. s1 .. "one " .. th .. s2 .. unit
+    end
+    return nil
+  end)
   -- ("another thousand feet", "a further hundred feet": one more of it)
   where("another thousand", "%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2")
   where("another hundred", "%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
@@ -2288,7 +2327,8 @@ function G:segments(b, e)
         own_verb = own_verb or sets[q.kind] == true
       end
       if (li.absorbs and this.value and not own_verb)
-          or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")) then
+          or (last.intent == "alt" and tr.intent == "vs" and self:word(tr.pos, "rate")
+            and not self:word_in(last.trig + 1, tr.pos, "@level_condition")) then
         merged = true
       elseif last.intent == "create" and tr.intent == "create" and #self:refs_in(last.trig, tr.pos, "aircraft") == 0 then
         merged = true  -- "make a new ...": one request
@@ -4237,8 +4277,9 @@ function G:meaning_carried(i, kinds)
     return true
   end
   -- "cancel your route": the route deleted
+  -- ("flight plan cancel, delete the route": the plan named straight before it)
   if self:word(i, "cancel cancels cancelled canceled") and kinds.delrte
-      and self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") then
+      and (self:word_in(i + 1, math.min(#self.t + 1, i + 3), "route rte") or self:word(i - 1, "plan rte route")) then
     return true
   end
   -- (an instruction word between them negates the instruction: "do not go direct HZA" is no place passed)
@@ -4753,10 +4794,21 @@ function G:unaccounted()
   local function fraction_left(i)
     return self:word(i, "half quarter quarters") and self:word(i - 1, "a one three") and self:word(i - 2, "and")
   end
+  -- ("heading 240 and mach,76", "foo.76"): a word with a digit and a mark inside it is no name and no value
+  -- the lexer read; unexplained, it is asked about
+  local function glued_value(i)
+    local w = self.t[i].text
+    if not (w:find("%d") and w:find("[^%w]")) then return false end
+    for _, r in ipairs(self.refs) do
+      if r.b <= i and r.e > i then return false end
+    end
+    return true
+  end
   for i, t in ipairs(self.t) do
-    if t.kind == "word" and t.text:match("^%a[%a'%-/]*$") and not t.filler and not t.number_word
+    if t.kind == "word" and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text) or airline_left(i) or fraction_left(i)) then
+        and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text)
+          or airline_left(i) or fraction_left(i))) or glued_value(i)) then
       said[#said + 1] = i
     end
   end
@@ -4770,6 +4822,27 @@ function G:unaccounted()
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end
+      return
+    end
+  end
+end
+
+-- A hedge of lexicon.trailing_hedges straight after a value, closing its clause (the request's end or a
+-- mark after it: "descend fl300 maybe", "hdg 240, i think"), makes the request uncertain: asked, naming it.
+G.hedge_words = table.concat(lexicon.trailing_hedges.words, " ")
+function G:hedged()
+  local h = lexicon.trailing_hedges
+  local function closes(k) return self.t[k] == nil or self.t[k].kind == "punct" end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    local k, said = q.e, nil
+    if self:word(k, G.hedge_words) and closes(k + 1) then said = self:raw(k, k + 1) end
+    for _, p in ipairs(said and {} or h.pairs) do
+      if self:word(k, p[1]) and self:word(k + 1, p[2]) and closes(k + 2) then said = self:raw(k, k + 2) end
+    end
+    if said then
+      self.ask = string.format("%s. You said '%s' after '%s': should I send it as said, or which value do you mean?",
+        #self.out > 0 and "I have " .. table.concat(self.out, " ; ") or "I have no instruction",
+        said, self:raw(q.b, q.e))
       return
     end
   end
@@ -4909,16 +4982,84 @@ function G:instruction_before(i)
   return false
 end
 
--- "unable FL380, maintain FL360": the value said straight after "unable" is one the controller cannot
--- give (a request refused); its tokens are marked used and explained, no instruction of their own ("if
--- unable FL380, ..." is a condition on the pilot, left to the parse).
+-- "unable FL380, maintain FL360", "unable direct BOYNE, fly heading 070", "unable that heading, turn left
+-- heading 230", "unable higher due traffic, ...", "unable, maintain present heading": what the controller
+-- refuses straight after "unable" (a value, a direct-to, a word of lexicon.acknowledged.refused, or nothing
+-- before punctuation), with a reason after it that ends its clause and names no value and no aircraft, is set
+-- aside: no instruction of its own. "unable" after a word of lexicon.acknowledged.pilots ("if unable FL380,
+-- ...") is a condition on the pilot, left to the parse; "unable" before anything else is left to be asked.
+G.refused_sets = { refused = set_of(lexicon.acknowledged.refused),
+  articles = set_of(lexicon.acknowledged.refused_articles), pilots = set_of(lexicon.acknowledged.pilots) }
 function G:refused()
   if not self:said("unable") then return end
+  local R = G.refused_sets
   for i = 1, #self.t - 1 do
-    local q = self:word(i, "unable") and not self:word(i - 1, "if") and self:quantities(i + 1, #self.t + 1)[1]
-    if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
-      self:mark_used(i, q.e)
-      for k = i, q.e - 1 do self.noted[k] = true end
+    local e  -- the last token refused
+    if self:word(i, "unable") and not self:word(i - 1, R.pilots) then
+      local q = self:quantities(i + 1, #self.t + 1)[1]
+      local k = self:word(i + 1, "direct") and (self:word(i + 2, "to") and i + 3 or i + 2)
+      local place = k and self:refs_in(k, k + 1, "waypoint")[1]
+      local noun = self:word(i + 1, R.articles) and i + 2 or i + 1
+      if q and q.b == i + 1 and (q.kind == "alt" or q.kind == "speed" or q.kind == "mach" or q.kind == "heading") then
+        e = q.e - 1
+      elseif place then
+        e = place.e - 1
+      elseif self:word(noun, R.refused) then
+        e = noun
+      elseif self.t[i + 1].kind == "punct" or self:word(i + 1, "@reason") then
+        e = i
+      end
+    end
+    if e then
+      -- ("due traffic", "because of the weather": the reason, to its clause's end)
+      if self:word(e + 1, "@reason") then
+        local p = e + 1
+        while self.t[p] and self.t[p].kind ~= "punct" do p = p + 1 end
+        if #self:quantities(e + 1, p) == 0 and #self:refs_in(e + 1, p, "aircraft") == 0
+            and #self:refs_in(e + 1, p, "waypoint") == 0 then
+          self:blank(e + 1)  -- (no reason of the instructions after it)
+          e = p - 1
+        end
+      end
+      self:set_aside(i, e)
+    end
+  end
+end
+
+-- "roger Mayday, descend FL100", "pan pan acknowledged, turn left heading 210", "emergency descent approved,
+-- descend and maintain 10000": a distress or urgency call acknowledged, or a request granted
+-- (lexicon.acknowledged), is set aside: no command, the instructions beside it read alone. The call's words
+-- end there: at punctuation, the end, or an instruction word other than "descent" ("roger the emergency
+-- descent ..." asks); a call said with no acknowledgement ("Mayday", "declare an emergency") still asks.
+G.acknowledged_sets = {}
+for _, k in ipairs({ "calls", "before", "articles", "after" }) do
+  G.acknowledged_sets[k] = set_of(lexicon.acknowledged[k])
+end
+function G:acknowledged()
+  local A = G.acknowledged_sets
+  if not self:said(A.calls) and not self:said("deviation deviations") then return end
+  local function ends(k)
+    local t = self.t[k]
+    return not t or t.kind == "punct" or (self:intent_at(k) ~= nil and not self:word(k, "descent"))
+  end
+  for i = 1, #self.t do
+    if self:word(i, A.calls) and not self.u:used(i) then
+      -- the run of call words ("pan pan pan"), an acknowledgement before or after it
+      local b, e = i, i
+      while self:word(e + 1, A.calls) do e = e + 1 end
+      if self:word(b - 1, A.articles) then b = b - 1 end
+      if self.t[b - 1] and self.t[b - 1].text == "," and self:word(b - 2, A.before) then b = b - 1 end
+      local before = self:word(b - 1, A.before)
+      if before then b = b - 1 end
+      local after = self:word(e + 1, A.after)
+      if after then e = e + 1 end
+      if (before or after) and ends(e + 1) then self:set_aside(b, e) end
+    end
+    for _, p in ipairs(lexicon.acknowledged.granted) do
+      local ok = true
+      for x = 1, #p do ok = ok and self:word(i + x - 1, p[x]) end
+      local t = self.t[i + #p]
+      if ok and (not t or t.kind == "punct") then self:set_aside(i, i + #p - 1) end
     end
   end
 end
@@ -6232,6 +6373,7 @@ function M.translate(text, world)
   g:places_corrected()
   g:question_back()
   g:refused()
+  g:acknowledged()
   g:stations()
   g:exercise_names()
   g:places_by_position()
@@ -6324,6 +6466,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:uncarried_names() end
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
+  if not g.ask and not g.leftover then g:hedged() end
   if not g.ask and g.leftover then
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)

@@ -1071,6 +1071,13 @@ function m:navaid_name_refs()
         self:need(string.format("Which place is '%s': the navaid %s of that name, or %s?", r.name,
           table.concat(ids, " or "), r.name))
       elseif #ids > 0 and not other then
+        -- ("direct RODOS": several navaids of the name, all of one station, are its one VOR)
+        local station = #ids > 1 and at[1] ~= nil
+        for k = 2, station and #ids or 0 do
+          station = station and at[k] ~= nil and nm(at[1][1], at[1][2], at[k][1], at[k][2]) <= L.navaid_station_nm
+        end
+        local vor = station and named(r.name, at[1][1], at[1][2], L.navaid_station_nm, "VOR") or {}
+        if #vor == 1 and seen[vor[1]] then ids = vor end
         r.name = self:one_named(ids, "navaid", r.name, math.huge)
       end
     end
@@ -1213,6 +1220,23 @@ function m:type_refs()
       end
       for _, t in ipairs(self:refs_in(k, k + 1, "type")) do of = of or t.name == ty end
       if ty and (of or (makers()[self.t[k].text] or {})[ty]) then self:explain(k, k + 1) end
+    end
+  end
+  -- ("the triple seven, descend ..." with GLO1077 and one B77W flying): a family's number said after "the", no
+  -- airline with it, heard only as a slip for a callsign, is the type described when exactly one aircraft
+  -- flying is of that family (else the callsign heard stays, asked about)
+  for n = #self.refs, 1, -1 do
+    local r, test, e = self.refs[n], nil, nil
+    local h = r.kind == "aircraft" and r.heard
+    if h and h.airline == 0 and self:word(r.b - 1, "the") and not self:airline_and_digits_match(h.id, r.name) then
+      test, e = self:type_said(r.b)
+    end
+    if test and e >= r.e then
+      local fits = 0
+      for _, a in ipairs(self.fleet) do
+        if a.type and test(a.type:upper()) then fits = fits + 1 end
+      end
+      if fits == 1 then table.remove(self.refs, n) end
     end
   end
   for _, r in ipairs(self.refs) do
@@ -1609,6 +1633,10 @@ local NAV_INTENTS = { direct = true, lnav = true, vnav = true }
 -- speed to 230", "... bring its speed back to 240")
 local SPEED_LEAD = { drop = true, bring = true, cut = true, take = true, pull = true, knock = true, the = true,
                      its = true, your = true, his = true, her = true, their = true }
+-- words between the level and a rate's own word, part of the instruction ("passing 150 reduce rate to 1000",
+-- "leaving FL100 increase your rate to 2000")
+local RATE_LEAD = { reduce = true, increase = true, decrease = true, the = true, its = true, your = true,
+                    his = true, her = true, their = true }
 -- who does it, between the level and any instruction ("when passing FL200 it shall reduce the speed to 220")
 local SUBJECT_LEAD = { it = true, he = true, she = true, they = true, you = true, shall = true, should = true,
                        will = true, can = true, must = true }
@@ -1663,7 +1691,8 @@ function m:at_altitude(s)
   if not q or q.b ~= a + 1 then return nil end
   local k = self:skip_fillers(q.e)
   while k < s.trig and (self:word(k, "@condition_lead") or (self.t[k].kind == "punct" and self.t[k].text == ",")
-      or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])) do
+      or SUBJECT_LEAD[self.words[k]] or (s.intent == "spd" and SPEED_LEAD[self.words[k]])
+      or (s.intent == "vs" and RATE_LEAD[self.words[k]])) do
     k = self:skip_fillers(k + 1)
   end
   -- ("crossing FL150 ACA102 reduce 250": the instruction's callsign after a verb's condition; "both at

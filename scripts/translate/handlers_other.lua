@@ -5,6 +5,9 @@
 local L = require("translate.lexicon")
 local PARTICLES = {}
 for _, w in ipairs(L.name_particles) do PARTICLES[w] = true end
+-- the ICAO codes of the airlines squawk knows (names.lua: "DTA", "LAM")
+local AIRLINE_CODES = {}
+for _, a in ipairs(require("translate.names").airlines) do AIRLINE_CODES[a[2]] = true end
 
 return function(H, f, compass)
   local m = H.methods
@@ -134,6 +137,22 @@ return function(H, f, compass)
     if not id then
       local k = self:find_word(s.b, s.e, "@id_words")
       if k + 1 < s.e and self.t[k + 1].kind == "word" then id = self.t[k + 1].raw end
+    end
+    -- ("create DTA 110 Boeing 737-700 ...", "create LAM 1200, E190, ..."): a known airline's ICAO code written in
+    -- capitals apart from its flight number (digits written, four at most), before the type, is the new
+    -- callsign; a code squawk knows no airline by is no callsign (asked for)
+    if not id then
+      local first = self:refs_in(s.b, s.e, "type")[1]
+      for k = s.b, (first and first.b or s.e) - 2 do
+        local w, q = self.t[k], self:quantities(k + 1, k + 2)[1]
+        if w.kind == "word" and AIRLINE_CODES[w.raw] and q and q.b == k + 1 and q.kind == "plain"
+            and self.t[k + 1].raw:match("^%d%d?%d?%d?$") and not self:refs_in(k, k + 2, "aircraft")[1] then
+          id = w.raw .. self.t[k + 1].raw
+          self:mark_used(k + 1, k + 2)
+          self:explain(k, k + 2)
+          break
+        end
+      end
     end
     -- ("create BCS1 type B744 ..."): with the type named after "type", another designator written as one word
     -- (letters, then digits) is the new callsign; ("create a Cessna 172 D-EABC at ..."): a registration written

@@ -129,10 +129,23 @@ return function(H, f, wrap, compass)
     local qs = self:quantities(s.b, s.e)
     local rate
     local with_unit, plain = {}, {}
+    -- ("expedite climb through FL200": a level said after "through" is one to pass, no level to fly to)
+    local passed
     for _, q in ipairs(qs) do
       if q.kind == "vs" and not rate then rate = self:take(q) end
-      if q.kind == "alt" then with_unit[#with_unit + 1] = q end
-      if q.kind == "plain" and q.b >= s.trig then plain[#plain + 1] = q end
+      if (q.kind == "alt" or (q.kind == "plain" and q.b >= s.trig)) and self:word(q.b - 1, "through thru") then
+        passed = passed or q
+      else
+        if q.kind == "alt" then with_unit[#with_unit + 1] = q end
+        if q.kind == "plain" and q.b >= s.trig then plain[#plain + 1] = q end
+      end
+    end
+    if passed and #with_unit == 0 and #plain == 0 then
+      return self:need(string.format("Which level should %s fly to? '%s' is a level to pass, not one to level off at.",
+        ids[1], self:raw(passed.b - 1, passed.e)))
+    elseif passed then
+      self:take(passed)
+      self:explain(passed.b - 1, passed.b)
     end
     -- the first value (plain ones first) that fits, taken out of its list as the vertical speed
     local function take_rate(fits)
@@ -388,20 +401,17 @@ return function(H, f, wrap, compass)
       or self:word(q.b - 1, "another further"))
     -- (a value said after a correction replaces a level said before it: "climb 9000... correction, 5000"
     -- is a level, never a step)
-    if not relative and now and not q.to and not fl and dir ~= 0 and not self:word_in(s.trig, q.b, "@correction") then
+    -- ("climb 3000" below the aircraft, no "by" said: a climb to a level below it, or a climb by that much?
+    -- Asked, naming both; "up 2000 feet", "by 2000 ft", "another 1000 ft" are the step)
+    if not relative and now and not q.to and not fl and dir > 0 and not self:word_in(s.trig, q.b, "@correction") then
       local cur = now.alt_ft or 0
-      -- (after "climb", 4000 ft or more below the aircraft is a cleared altitude on the wrong side, asked
-      -- below: nobody clears a climb of 4000 ft by its size; "up 4000" is a step)
-      local step_size = ft < 4000 or not self:word(s.trig, "climb clb climbing")
-      if (dir > 0 and ft <= cur - 50 and ft <= 5000 and step_size and not q.number.thousand)
-          or (dir > 0 and ft < 3000 and cur > 10000) then
-        relative = true
-        -- ("both climb 1000 feet", "all of them up 500 ft": the step read from one aircraft's level, no "by"
-        -- said, is asked for several: each by that much, or all to one level?)
+      if (ft <= cur - 50 and ft <= 5000) or (ft < 3000 and cur > 10000) then
         if #ids > 1 then
           return self:need(string.format("Should %s each climb by %s ft? I heard '%s' with no 'by'.",
             table.concat(ids, " and "), f.int(ft), self:raw(q.b, q.e)))
         end
+        return self:need(string.format("%s is at %s ft: climb to %s ft, or by %s ft? I heard '%s' with no 'by'.",
+          ids[1], f.int(cur), f.int(ft), f.int(ft), self:raw(q.b, q.e)))
       end
     end
     -- "descend 3000 ft" typed right after the verb, from higher up: to or by? Both read as
@@ -414,12 +424,10 @@ return function(H, f, wrap, compass)
       local to_fits = (dir < 0 and ft < cur - 50) or (dir > 0 and ft > cur + 50)
       -- (a change of 4000 ft or more is a cleared altitude: nobody clears a 4000 ft step by its size; a
       -- descent from below FL120, in a terminal area, is to the approach altitude said in feet)
+      -- (from the flight levels too: "descend 3000 feet" is the step to some, the approach altitude after an
+      -- approach clearance to others)
       local approach = dir < 0 and cur < 12000
-      -- (from FL200 up, a descent straight to below 4000 ft is no clearance anyone gives: the step, one aircraft)
-      local en_route = dir < 0 and cur >= 20000 and #ids == 1
-      if by_fits and to_fits and ft < 4000 and not approach and en_route then
-        relative = true
-      elseif by_fits and to_fits and ft < 4000 and not approach then
+      if by_fits and to_fits and ft < 4000 and not approach then
         return self:need(string.format("Should %s %s to %s ft or by %s ft?", ids[1], verb, f.int(ft), f.int(ft)))
       end
     end
@@ -453,7 +461,7 @@ return function(H, f, wrap, compass)
             target_ft, alt = alt_to, f.alt(alt_to, false)
           end
         end
-        if (dir > 0 and target_ft < cur - 1000) or (dir < 0 and target_ft > cur + 1000) then
+        if (dir > 0 and target_ft < cur - 50) or (dir < 0 and target_ft > cur + 50) then
           return self:need(string.format("%s is at %s ft: %s to %s? Please confirm the altitude.", id, f.int(cur),
             verb, alt))
         end
@@ -820,6 +828,9 @@ return function(H, f, wrap, compass)
     local down = self:word_in(cb, ce, "descent descend descending")
     local up = self:word_in(cb, ce, "climb climbing")
     local dir = (down and not up) and -1 or (up and not down) and 1 or self:direction(s)
+    -- ("climb FL230, passing 150 reduce rate to 1000": "reduce" or "increase" said of the rate, no motion named,
+    -- changes its size, not its way: a level flown to in the request gives the way)
+    local resized = not down and not up and self:word_in(cb, ce, "rate") and self:word_in(cb, ce, "reduce increase decrease")
     -- ("be at FL300 by LAPOS, rate 2500": no direction said, the way to the level given it before in the
     -- request, a constraint's too; "FL300, rate of climb 2500" said to an aircraft above FL300 names the
     -- other way: asked)
@@ -839,7 +850,7 @@ return function(H, f, wrap, compass)
       local cur = now.alt_ft or 0
       if math.abs(ft - cur) > 50 then
         local way = ft > cur and 1 or -1
-        if dir ~= 0 and dir ~= way then
+        if dir ~= 0 and dir ~= way and not resized then
           return self:need(string.format("%s is at %s ft, %s is %s it: %s at %s ft/min? Please confirm the rate.",
             id, f.int(cur), f.alt(ft, true), way < 0 and "below" or "above", dir < 0 and "descend" or "climb",
             f.int(math.abs(fpm))))

@@ -229,7 +229,9 @@ return {
         -- a place said as over a point ("move it right on top of DUDSO")
         "right on top of", "on top of",
         -- the speaker holding the room a moment ("hang on, freeze it there")
-        "hang on", "bear with me",
+        "hang on", "bear with me", "stand by",
+        -- the simulation's conflict resolution named by a pilot's word for it ("resolution advisories on, MVP")
+        "resolution advisories", "resolution advisory",
         -- urgency, said with a negation ("descend FL150 without delay")
         "without delay", "with no delay", "without any delay" },
     -- the ordinary accompaniments of instructions: verbs of changing a setting, participles that
@@ -343,6 +345,10 @@ return {
   -- hesitations: skipped inside a spoken number, but a number said with one is not
   -- completed by guessing ("heading uh two two" asks which heading)
   hesitations = { "ah", "uh", "um", "er" },
+  -- words that count the "thousand" after them ("two and a half thousand feet", "a few thousand feet"): no
+  -- "thousand feet" said bare, read as one thousand, after them
+  thousand_counted = { hundred = true, half = true, quarter = true, few = true, several = true, many = true,
+                       couple = true, tens = true, t = true },
   -- typos are corrected to these words (one edit away, two for 7+ letters);
   -- short everyday words are left out: speech recognition makes real words
   -- near them ("loan", "train") far more often than typists misspell them
@@ -717,6 +723,12 @@ return {
   -- how gently a climb or descent is flown ("climb at 800 feet a minute, nice and gentle"): said beside the
   -- vertical speed given, it restates it; with none ("climb FL340 gently") it is asked, no rate being known
   manner = { "nice", "gentle", "gently", "smooth", "smoothly" },
+  -- a hedge said straight after a value, closing its clause ("descend fl300 maybe", "heading 240 I think"): the
+  -- speaker is unsure of the value, which is asked; a hedge before it is courtesy ("could you maybe descend",
+  -- "maybe 280 knots"), and a value said loosely ("ish", "about", "or so") is the value said
+  trailing_hedges = { words = { "maybe", "perhaps", "probably", "possibly", "unsure" },
+                      pairs = { { "not", "sure" }, { "i", "think" }, { "i", "guess" }, { "i", "believe" },
+                                { "not", "certain" } } },
   -- a level or speed wanted at a waypoint said without an instruction word ("when AFR1234 gets to GIROM I want it
   -- at FL250", "it should be at FL250"): the words that may come before its "at" (G:held_value)
   held_value = { "i", "i'd", "we", "we'd", "want", "like", "need", "it", "him", "her", "them", "to", "be", "at",
@@ -803,6 +815,9 @@ return {
   groupwise_levels = { 100, 450 }, groupwise_from_ft = 10000,
   -- a navaid said by its navdata name ("direct Canarsie") is looked for this near the aircraft [NM]
   navaid_range_nm = 250,
+  -- navaids of one name this near each other [NM] are one station ("Rodos": the NDB ROS, the VOR-DME RDS and
+  -- the TACAN ROD); its name said alone is its VOR
+  navaid_station_nm = 5,
   -- a navaid this near an airport [NM] stands for the same city ("Sherbrooke": the YSC VORTAC, 8 NM from CYSC)
   city_nm = 30,
   -- an airport this near a navaid named after a city [NM] is one of that city's ("Montreal": CYUL, 4 NM from the
@@ -928,6 +943,10 @@ return {
     -- to the pilot, its number straight after the word ("the random number generator with 7" is none)
     -- ("Mach number 0.78" names the speed's unit, no sequence)
     { what = "approach sequences", words = "number", near = { "#number" }, window = 1, not_after = "mach" },
+    -- "say fuel remaining", "souls on board?": what a controller asks of an aircraft in distress, answered by
+    -- the pilot
+    { what = "reports of fuel and persons on board", words = "fuel souls persons", window = 2,
+      near = { "remaining", "endurance", "board" } },
     -- "report passing FL100", "report established", "report steady": a report the pilot makes, no instruction
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
@@ -1056,6 +1075,8 @@ return {
     uniform = "U", victor = "V", whiskey = "W", whisky = "W", xray = "X", yankee = "Y", zulu = "Z",
     -- letters said by their English names where that name is no everyday word ("five kay alfa")
     kay = "K", aitch = "H", dee = "D", vee = "V", zed = "Z",
+    -- the older alphabet's word for F, still said by some controllers ("Virgin two five fox")
+    fox = "F",
   },
   -- what speech recognition writes for an instruction word that sounds alike
   -- ("the send flight level one niner zero", "turn write heading 040",
@@ -1120,7 +1141,11 @@ return {
     dois = "two", duas = "two", quatro = "four", meia = "six", sete = "seven", oito = "eight",
     nove = "nine",
     -- and French ("France Soleil quatre un deux zero"; "six" and "zero" as in English)
-    un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine" },
+    un = "one", deux = "two", trois = "three", quatre = "four", cinq = "five", sept = "seven", huit = "eight", neuf = "nine",
+    uma = "one" },
+  -- Portuguese "um" (one), a hesitation in English: one only inside a run of digit words holding one of
+  -- foreign_digits ("nível três um zero"); "three um zero" keeps its hesitation
+  foreign_hesitation_digits = { um = "one" },
   -- words speech recognition writes for a digit said inside a callsign ("wizzair to lima papa" is WZZ2LP,
   -- "lufthansa for hundred" DLH400, "europa oh five one" AEA051): that digit only where the callsign so
   -- read is exactly one aircraft's (grammar.lua homophone_ids)
@@ -1173,6 +1198,25 @@ return {
   perf_models = { openap = "OPENAP", class = "CLASS", classes = "CLASS", legacy = "CLASS", simple = "CLASS" },
   -- the colours TRAIL acid accepts
   trail_colours = { "blue", "red", "yellow" },
+  -- what a controller acknowledges or refuses beside an instruction, set aside with no command of its own
+  -- (G:acknowledged, G:refused); accounted for only there ("Mayday" or "deviation" anywhere else asks):
+  acknowledged = {
+    -- a distress or urgency call, acknowledged before it ("roger Mayday", "copy your pan pan", "roger the
+    -- emergency") or after it ("Mayday acknowledged", "pan pan received")
+    calls = { "mayday", "pan", "emergency" },
+    before = { "roger", "copy", "copied", "understood", "acknowledge" },
+    articles = { "the", "your" },
+    after = { "acknowledged", "received", "copied", "understood", "noted" },
+    -- a request granted, said whole and ending its clause ("emergency descent approved, descend ...",
+    -- "deviation approved, when able proceed direct BRISS")
+    granted = { { "emergency", "descent", "approved" }, { "deviation", "approved" }, { "deviations", "approved" } },
+    -- what "unable" refuses, said after it with "that", "the", "your" or "this" or alone ("unable that heading",
+    -- "unable higher"); "unable" is the pilot's own after these words ("if unable", "advise when unable")
+    refused = { "heading", "level", "altitude", "speed", "request", "routing", "route", "climb", "descent", "turn",
+      "shortcut", "higher", "lower" },
+    refused_articles = { "that", "the", "your", "this" },
+    pilots = { "if", "when", "you", "you're", "are", "not" },
+  },
   -- resolution methods said in words
   mvp = { "mvp", "voltage", "potential" },
   -- abbreviations a recogniser may spell letter by letter ("f l one two zero"), beside the words of

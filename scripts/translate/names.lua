@@ -181,6 +181,9 @@ local names = {
     { "cobalt", "FCB" },
     { "jetset", "JSX" },
     { "aer lingus", "EIN" },
+    -- CityJet, Dublin: its telephony and its name
+    { "city ireland", "BCY" },
+    { "cityjet", "BCY" },
     { "aero lloyd", "AEF" },
     { "hapag lloyd", "HLF" },
     { "germanwings", "GWI" },
@@ -231,7 +234,6 @@ local names = {
     { "blue panorama", "BPA" },
     { "airmerci", "MSA" },
     { "albastar", "LAV" },
-    { "ellinair", "EXV" },
     { "sky express", "SEH" },
     { "corsica", "CCM" },
     { "air corsica", "CCM" },
@@ -328,6 +330,8 @@ local names = {
     -- there say it ("Garuda 412", "IndiGo 2231", "AirAsia 88", "Vietnam 251")
     { "garuda", "GIA" },
     { "jordanian", "RJA" },
+    { "israir", "ISR" },
+    { "arkia", "AIZ" },  -- (Arkia Israeli Airlines)
     { "anatolian", "TKJ" },  -- (AJet)
     { "flydubai", "FDB" },
     { "indigo", "IGO" },
@@ -424,6 +428,7 @@ local names = {
     { "africa world", "AFW" },
     { "taag", "DTA" },
     { "angola", "DTA" },
+    { "mozambique", "LAM" },  -- (LAM Mozambique Airlines)
     { "royalair maroc", "RAM" },
     { "tunair", "TAR" },
     { "tunisair", "TAR" },

@@ -288,6 +288,12 @@ return function(intent, rule, words)
   end
   -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
+  -- "drop Cityjet 62 from the exercise": an aircraft that flies dropped from the run
+  rule { "drop", "delete", when = function(g, i)
+    local a = g:refs_in(i + 1, i + 2, "aircraft")[1]
+    local k = a and a.exists and g:word(a.e, "from") and (g:word(a.e + 1, "the this") and a.e + 2 or a.e + 1)
+    return k and g:word(k, "@sim") or false
+  end }
   -- "knock out KLM1234", "knock out the Cessna": an aircraft taken out of the simulation, nothing after it
   -- "take N73WX off the scope", "sup: n73wx off the scope": an aircraft taken off the display is deleted (the
   -- aircraft straight before "off", opening the request or after "take"/"get", "the" between them: "get the Air
@@ -453,6 +459,10 @@ return function(intent, rule, words)
   -- "double the sim speed", "twice the simulation speed": a multiplier said of the sim's speed
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i) return g:preceded_by(i, 4, "@multipliers") end }
   rule { "speed", "dtmult", next = "up", near = { 3, "times x" } }  -- "speed up 10x"
+  -- "speed it up to times 5": "it" the run, when no aircraft is named
+  rule { "speed", "dtmult", next = "it", near = { 5, "times" }, when = function(g, i)
+    return g:word(i + 2, "up") and not g:has_ref(1, #g.t + 1, "aircraft")
+  end }
   -- "a speed-up of 8", "speedup factor 4": the clock's rate as a noun, no aircraft named
   rule { "speed speedup speed-up", "dtmult", near = { 4, "of factor" }, when = function(g, i)
     return (g:word(i, "speedup speed-up") or g:word(i + 1, "up")) and not g:has_ref(1, #g.t + 1, "aircraft")
@@ -960,7 +970,7 @@ return function(intent, rule, words)
   end }
   -- "add a320 ezy12 at ...", "new: DLH9CK A321neo ...", "insert SAS19K B736 at ...": a type or a new callsign
   -- right after the verb
-  rule { "add put new spawn insert adding", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
+  rule { "add put new spawn insert adding inject injecting", "create", when = function(g, i) return g:new_aircraft_follows(i) end }
   -- "callsign SWR19, A333, FL360, ...": a request that opens with a new callsign and its type
   rule { "callsign", "create", when = function(g, i)
     return g:skip_fillers(1) == i and g:new_aircraft_follows(i) and g:has_ref(i + 1, i + 6, "type")
@@ -1005,7 +1015,9 @@ return function(intent, rule, words)
          when = function(g, i) return g:has_ref(math.max(1, i - 3), i, "waypoint") end }
   -- a verb of deletion after a noun that is no aircraft ("KAL8 altitude delete"): what is deleted is asked,
   -- never the aircraft
-  rule { "remove delete del", "delwpt", prev = { 3, "waypoint wpt wp @route_nouns altitude speed heading level" } }
+  -- ("flight plan cancel, delete the route": the route named after the verb is the whole route, below)
+  rule { "remove delete del", "delwpt", prev = { 3, "waypoint wpt wp @route_nouns altitude speed heading level" },
+         when = function(g, i) return not g:followed_by(i, 2, "@route_nouns") end }
   -- "UAL9 forget ALPHA", "Qatari 1018 delete MISOD": a waypoint of the aircraft's route, said straight
   -- after the verb, left out of it
   rule { "forget delete remove del", "delwpt", when = function(g, i)
@@ -1062,6 +1074,12 @@ return function(intent, rule, words)
   -- ("bin it": British for delete; "I'm deleting United 1542 now": a controller saying what he does)
   -- ("despawn": a game's word for taking an object out of the world)
   rule { "delete del remove rid kill rmv bin deleting removing despawn despawned destroy", "delete" }
+  -- "take out BAGSO", "take BAGSO out": a waypoint taken out of the route of the aircraft addressed
+  rule { "take", "delwpt", near = { 3, "out" }, when = function(g, i)
+    local k = g:word(i + 1, "out") and i + 2 or i + 1
+    local r = g:refs_in(k, k + 1, "waypoint")[1]
+    return r ~= nil and (k == i + 2 or g:word(r.e, "out")) and not g:has_ref(1, #g.t + 1, "type")
+  end }
   rule { "take", "delete", near = { 5, "out" } }
 
   -- route
@@ -1253,6 +1271,10 @@ return function(intent, rule, words)
   rule { "list", "listrte", prev = { 1, "waypoint" }, near = { 3, "for of" } }  -- "the waypoint list for BAW123"
   -- "ryr8gn say route", "say your routing": the aircraft asked for its route, as "say altitude" for its state
   rule { "route rte routing", "listrte", prev = { 2, "say" } }
+  -- "read me back your route", "read back the routing": the pilot asked to say the route
+  rule { "read", "listrte", next = "back me", when = function(g, i)
+    return g:followed_by(i, 4, "route rte routing") and not g:has_ref(1, #g.t + 1, "waypoint")
+  end }
   -- "show me KLM one two seven six's route": the verb before the aircraft the route is of
   -- ("pull up Air Canada 871's flight plan", "bring up the KLM's route")
   rule { "route waypoints plan routing", "listrte", when = function(g, i)
@@ -1651,6 +1673,7 @@ return function(intent, rule, words)
   rule { "own", false, prev = { 2, "rejoin rejoining" }, near = { 3, "at to over by" } }
   rule { "own", "lnav", near = { 2, "navigation nav" } }  -- "its own (route) navigation"
   rule { "own", "lnav", next = "route", prev = { 3, "fly follow back resume" } }  -- "fly its own route again"
+  rule { "back", false, prev = { 2, "read" } }  -- ("read me back your route": LISTRTE)
   rule { "back rejoin", "lnav", near = { 3, "route" } }  -- "go back on your route", "rejoin the route"
   -- "return to the route", "return to its route": the route flown again (a place named is a direct-to)
   rule { "return returns", "lnav", next = "to", when = function(g, i)

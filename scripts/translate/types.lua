@@ -318,6 +318,26 @@ function M.spoken(text, built, phonetic)
       best = { name = family .. (after or ""), e = e }
       maker = nil
     end
+    -- ("triple seven 300ER", lexed "seven seven seven 300ER"; "777 300ER"; "seven four seven four hundred"): a
+    -- Boeing family said digit by digit or typed, with one of its variants said straight after it ("300ER",
+    -- "300 ER", "three hundred ER"), is that variant; the family so said alone stays as said (digits)
+    if not best then
+      local function bare(j) return toks[j] and (toks[j]:lower():gsub("%p+$", "")) or "" end
+      local function open(j) return toks[j] ~= nil and not toks[j]:match("%p$") end
+      local fam, j
+      if w:match("^7%d7$") then
+        fam, j = w, i + 1
+      elseif w == "seven" and open(i) and open(i + 1) and DIGITS[bare(i + 1)] and bare(i + 2) == "seven" then
+        fam, j = "7" .. DIGITS[bare(i + 1)] .. "7", i + 3
+      end
+      if fam and built.known["boeing " .. fam] and open(j - 1) and toks[j] then
+        local v, k = bare(j):match("^%-?(%d00%a*)$"), j + 1
+        if not v and DIGITS[bare(j)] and open(j) and bare(j + 1) == "hundred" then v, k = DIGITS[bare(j)] .. "00", j + 2 end
+        if v and v:match("%d$") and open(k - 1) and (bare(k) == "er" or bare(k) == "lr") then v, k = v .. bare(k), k + 1 end
+        local name = v and fam .. "-" .. v
+        if name and built.known[name] then best = { name = name .. (toks[k - 1]:match("%p+$") or ""), e = k } end
+      end
+    end
     if maker then
       -- the digits said after the letter, one spoken group at a time, and the name each step spells
       local digits, variant = "", nil

@@ -1781,7 +1781,7 @@ do
   -- a position no command carries is asked about, also beside a relative word or "by"
   asked(ex("Shamrock 105, climb FL380, cross 30 West at or above FL370"), "Shamrock 105, climb FL380, cross 30 West at or above FL370")
   asked(ex("Shamrock 105, climb to reach FL380 by 20 West"), "Shamrock 105, climb to reach FL380 by 20 West")
-  asked(ex("Shamrock 105 unable direct MALOT, turn left heading 250"), "Shamrock 105 unable direct MALOT, turn left heading 250")
+  check_eq(ex("Shamrock 105 unable direct MALOT, turn left heading 250"), "HDG EIN105 250 LEFT")
   check_eq(ex("WJA3 climb to FL360, not above"), "ALT WJA3 FL360")
   asked(ex("WJA3 climb FL380, not above FL370"), "WJA3 climb FL380, not above FL370")
   check_eq(ex("Air Portugal 237, Mach decimal seven eight approved"), "SPD TAP237 M0.78")
@@ -3505,13 +3505,14 @@ end
 
 -- A level said after a correction replaces the level said before it, so it is never read as a step
 -- ("climb 9000... correction, 5000" from 7000 is a climb to 5000: the verb contradicts it, asked; it
--- was cleared as 12000); without a correction a small typed amount after "climb" stays a step
+-- was cleared as 12000); without a correction a small typed amount after "climb" below the aircraft is asked
+-- (to that level, or by that much?)
 do
   local _, ex = scene({ "CRE AUA456 A320 48 16 090 7000 250" })
   check(ex("AUA456 climb 9000... correction, 5000"):match("^ASK .*climb to 5000") ~= nil, "corrected below")
   asked(ex("AUA456 climb 9000 feet, correction, 5000 feet"), "corrected below, in feet")
   check_eq(ex("AUA456 climb 9000, correction 8000"), "ALT AUA456 8000")
-  check_eq(ex("AUA456 climb 2000"), "ALT AUA456 9000")
+  check(ex("AUA456 climb 2000"):match("^ASK AUA456 is at 7000 ft: climb to 2000 ft, or by 2000 ft%?") ~= nil, "to or by")
 end
 -- Values written with slashes between ("280/FL250/250kt") are values apart, each accounted for; a fraction stays
 -- whole and words with slashes are no values
@@ -4254,11 +4255,11 @@ do
   check_eq(ex("LAN9 turn right heading 150"), "HDG LAN9 150 RIGHT")
 end
 
--- A climb step read from the aircraft's level with no "by" ("climb 2000 feet" at FL200) is one aircraft's:
--- for several ("both climb 2000 feet") it asks; "by" said, each climbs that much
+-- "climb 2000 feet" at FL200 with no "by" (to a level below, or by that much?) is asked, for one aircraft or
+-- several ("both climb 2000 feet"); "by" said, each climbs that much
 do
   local _, ex = scene({ "CRE ARG1 B738 -34.0 -60.0 090 FL200 280", "CRE ARG2 B738 -34.5 -59.0 270 FL200 280" })
-  check_eq(ex("ARG1 climb 2000 feet"), "ALT ARG1 22000")
+  asked(ex("ARG1 climb 2000 feet"), "a climb to below the aircraft, no 'by': to or by?")
   check(ex("both climb 2000 feet"):match("^ASK Should ARG1 and ARG2 each climb by 2000 ft") ~= nil, "a step for two")
   check_eq(ex("both climb by 2000 feet"), "ALT ARG1 22000 ; ALT ARG2 22000")
 end
@@ -5270,12 +5271,12 @@ do
 end
 
 -- Cycle 33 (R68): "climb 4000 ft" or more in feet below the aircraft is a cleared altitude on the wrong side,
--- asked, never a climb by that much; a small step ("climb 2000 ft") and "up 4000" stay steps
+-- asked, never a climb by that much; so is a small amount ("climb 2000 ft"); "up 4000" and "by 5000" are steps
 do
   local _, ex = scene({ "CRE VLG3C A320 41.0 2.0 300 FL80 230" })
   asked(ex("VLG3C climb 5000 ft"), "a level below, said after climb")
   asked(ex("VLG3C climb 4000 ft"), "a level below, said after climb")
-  check_eq(ex("VLG3C climb 2000 ft"), "ALT VLG3C 10000")
+  asked(ex("VLG3C climb 2000 ft"), "a small amount below the aircraft, no 'by': to or by?")
   check_eq(ex("VLG3C climb by 5000 ft"), "ALT VLG3C 13000")
 end
 
@@ -6404,11 +6405,11 @@ do
   check_eq(ex("set vertical separation to 1000 ft"), "ZONEDH 1000")
 end
 
--- Cycle 38 (fix78): "descend 2000 feet" typed after the verb from FL200 up is the step (nobody clears an
--- aircraft in the flight levels straight to below 4000 ft); lower down, or for several aircraft, asked
+-- Cycle 38 (fix78): "descend 2000 feet" typed after the verb, from the flight levels or lower down, for one
+-- aircraft or several, is asked: to or by?
 do
   local _, ex = scene({ "CRE NLX40 B738 52.3 4.8 200 FL310 270", "CRE EWG9 A320 52.1 4.1 020 FL150 250" })
-  check_eq(ex("NLX40 descend 3000 ft"), "ALT NLX40 28000")
+  asked(ex("NLX40 descend 3000 ft"), "to or by from FL310 (cycle 44: a step to some writers, the approach altitude to others)")
   asked(ex("EWG9 descend 3000 ft"), "to or by from FL150")
   asked(ex("NLX40 and EWG9 descend 2000 feet"), "to or by for two aircraft")
   check_eq(ex("NLX40 descend to 3000 ft"), "ALT NLX40 3000")
@@ -8321,4 +8322,219 @@ do
   check_eq(ex("KLM12 climb FL370, EZY45 climb FL350"), "ALT KLM12 FL370 ; ALT EZY45 FL350")
   check_eq(ex("KLM12 climb FL370 and reduce 230"), "ALT KLM12 FL370 ; SPD KLM12 230")
   check_eq(ex("ALT KLM12 FL350 ; ALT KLM12 FL370"), "ALT KLM12 FL350 ; ALT KLM12 FL370")
+end
+
+-- Cycle 44 (hz44): a climb to a value below the aircraft, or a descent to one above it, with no "by" said, is
+-- asked (to that level, or by that much?), never read as a step; "by", "up", "another" say the step
+do
+  local _, ex = scene({ "CRE PHLOW C172 52.0 4.0 090 2500 100", "CRE KLM61 B738 52.2 4.2 270 FL240 280",
+    "CRE TRA7 B738 52.4 4.4 180 FL330 280" })
+  local q = ex("PHLOW climb 2000")
+  check(q:match("^ASK PHLOW is at 2500 ft: climb to 2000 ft, or by 2000 ft%?") ~= nil, q)
+  asked(ex("PHLOW climb 1500 feet"), "a climb to below, in feet")
+  asked(ex("KLM61 climb 1000 ft"), "a small amount from the flight levels")
+  asked(ex("PHLOW descend 3000"), "a descent to above the aircraft")
+  asked(ex("PHLOW descend to 3200 ft"), "a descent to a little above the aircraft")
+  check_eq(ex("PHLOW climb 4500"), "ALT PHLOW 4500")
+  check_eq(ex("PHLOW climb by 1500 feet"), "ALT PHLOW 4000")
+  check_eq(ex("KLM61 up 2000 feet"), "ALT KLM61 26000")
+  check_eq(ex("KLM61 climb another 1000 feet"), "ALT KLM61 25000")
+  -- "descend 3000 feet" from the flight levels: the step to some, the approach altitude to others
+  asked(ex("TRA7, descend 2000 feet"), "to or by from FL330")
+  asked(ex("TRA7 cleared ILS runway two seven, descend 3000 feet"), "to or by after an approach clearance")
+  check_eq(ex("TRA7 descend to 3000 feet"), "ALT TRA7 3000")
+  check_eq(ex("TRA7 descend by 3000 feet"), "ALT TRA7 30000")
+  check_eq(ex("TRA7 runway two seven, descend one zero thousand"), "ALT TRA7 10000")
+end
+
+-- Cycle 44 (hz44): a value's name glued to its value by a dot ("mach.78", "mach0.78", "fl.250") is the name and
+-- the value; a word holding a digit and a mark that nothing read ("mach,78", "zz.80") is asked about by name
+do
+  local _, ex = scene({ "CRE SWR83 A333 47.0 8.0 090 FL350 290" })
+  check_eq(ex("swr83 turn left heading 100 and mach.81"), "HDG SWR83 100 LEFT ; SPD SWR83 M0.81")
+  check_eq(ex("swr83 mach0.79"), "SPD SWR83 M0.79")
+  check_eq(ex("swr83 fl.370 and heading 120"), "ALT SWR83 FL370 ; HDG SWR83 120")
+  check_eq(ex("swr83 heading 100 and mach,81"), "ASK I have HDG SWR83 100. What does 'mach,81' mean?")
+  check_eq(ex("swr83 heading 100 zz.80"), "ASK I have HDG SWR83 100. What does 'zz.80' mean?")
+end
+
+-- Cycle 44 (hz44): a level said after "through" ("expedite climb through FL200") is one to pass: with no level
+-- to fly to it is asked; with one ("through FL180 to FL120") the aircraft flies to that one
+do
+  local _, ex = scene({ "CRE DLH5T A320 50.0 8.5 180 FL280 280" })
+  local q = ex("DLH5T descend through flight level one eight zero")
+  check(q:find("'through flight level one eight zero' is a level to pass", 1, true) ~= nil, q)
+  asked(ex("DLH5T descend thru FL180"), "through, typed thru")
+  asked(ex("DLH5T climb through 30000 feet"), "through, in feet")
+  check_eq(ex("DLH5T descend through FL180 to FL120"), "ALT DLH5T FL120")
+end
+
+-- Cycle 44 (hz44): a hedge straight after a value, closing its clause ("fl200 perhaps", "heading 090 I guess")
+-- is asked, naming the hedge; a hedge before the value is courtesy, a loose value ("ish", "about", "or so") is
+-- the value said
+do
+  local _, ex = scene({ "CRE AFR71 A320 45.0 5.0 090 FL300 280" })
+  local q = ex("afr71 descend fl220 perhaps")
+  check(q:find("You said 'perhaps' after", 1, true) ~= nil, q)
+  asked(ex("afr71 heading 140 i guess"), "I guess")
+  asked(ex("afr71 speed 250 probably, and heading 140"), "a hedge closing its clause before a comma")
+  asked(ex("afr71 descend fl220 maybe?"), "a hedge before a question mark")
+  check_eq(ex("afr71 descend fl220 or so"), "ALT AFR71 FL220")
+  check_eq(ex("afr71 speed 250ish"), "SPD AFR71 250")
+  check_eq(ex("could you maybe descend afr71 to fl220"), "ALT AFR71 FL220")
+  check_eq(ex("afr71 a bit slower, maybe 260 knots"), "SPD AFR71 260")
+end
+
+-- Cycle 44 (f96): a distress or urgency call acknowledged ("roger Mayday", "pan pan acknowledged", "roger the
+-- emergency"), a request granted ("emergency descent approved", "deviation approved") ending its clause, and a
+-- controller's questions of an aircraft in distress ("say fuel remaining") carry no command: the instructions
+-- beside them are read alone. A call with no acknowledgement, or a grant with a value in its clause, asks.
+do
+  local _, ex = scene({ "CRE UAL418 B739 40.5 -74.5 090 FL280 290", "CRE EXS22M B738 53.2 -2.1 180 FL200 270" })
+  check_eq(ex("United 418 roger your Mayday, descend and maintain one two thousand"), "ALT UAL418 12000")
+  check_eq(ex("Jet2 22 mike, pan pan received, turn right heading 150"), "HDG EXS22M 150 RIGHT")
+  check_eq(ex("United 418, copy, Mayday, turn left heading 020 descend FL150"), "HDG UAL418 20 LEFT ; ALT UAL418 FL150")
+  check_eq(ex("united four one eight roger mayday descend flight level one six zero"), "ALT UAL418 FL160")
+  check_eq(ex("United 418 understood the emergency, fly heading 330"), "HDG UAL418 330")
+  check_eq(ex("Jet2 22M emergency descent approved, descend FL120"), "ALT EXS22M FL120")
+  check_eq(ex("United 418 deviations approved, when able turn right heading 090"), "HDG UAL418 90 RIGHT")
+  check_eq(ex("Jet2 22M roger pan, say persons on board, descend FL100"), "ALT EXS22M FL100")
+  asked(ex("United 418 Mayday, descend FL150"), "a call with no acknowledgement")
+  asked(ex("United 418 roger Mayday"), "an acknowledgement alone")
+  asked(ex("United 418 roger the emergency descent FL150"), "an acknowledgement running into a descent")
+  asked(ex("Jet2 22M emergency descent, descend FL120"), "an emergency descent not granted")
+  asked(ex("United 418 deviation approved 20 degrees right"), "a deviation granted with a value")
+  asked(ex("United 418 Mayday relay, descend FL150"), "a relay")
+end
+
+-- Cycle 44 (f96): what "unable" refuses (a value, a direct-to, "that heading", "higher", or nothing before a
+-- comma), with a reason after it ending its clause, is set aside; the instruction after it is read alone.
+-- "unable" of the pilot ("if unable", "when unable") or before anything else asks.
+do
+  local _, ex = scene({ "CRE UAL418 B739 40.5 -74.5 090 FL280 290", "CRE EXS22M B738 53.2 -2.1 180 FL200 270" })
+  check_eq(ex("United 418 unable FL320 due to traffic, maintain FL280, turn left heading 060"),
+    "ALT UAL418 FL280 ; HDG UAL418 60 LEFT")
+  check_eq(ex("United 418 unable higher because of crossing traffic, fly heading 100"), "HDG UAL418 100")
+  check_eq(ex("Jet2 22M unable your request, reduce speed 250 knots"), "SPD EXS22M 250")
+  check_eq(ex("Jet2 22M unable, turn right heading 200"), "HDG EXS22M 200 RIGHT")
+  check_eq(ex("Jet2 22M unable due weather, descend FL160"), "ALT EXS22M FL160")
+  asked(ex("Jet2 22M unable direct to nowhere, turn right heading 200"), "a refusal of no place")
+  asked(ex("Jet2 22M unable to comply, turn right heading 200"), "unable before something else")
+  asked(ex("Jet2 22M, if unable FL240, turn right heading 200"), "the pilot's unable")
+  asked(ex("Jet2 22M unable FL240 due traffic at FL230, turn right heading 200"), "a reason naming a value")
+  asked(ex("Jet2 22M unable"), "unable alone")
+end
+
+-- Cycle 44 (f96): "fox", the older alphabet's word for F, is that letter of a callsign; a callsign it makes that
+-- no aircraft bears is asked, as with "foxtrot"
+do
+  local _, ex = scene({ "CRE DLH7F A320 50.0 8.0 090 FL280 290", "CRE BAW51 B738 51.2 -0.1 180 FL200 270" })
+  check_eq(ex("Lufthansa seven fox, climb flight level three one zero"), "ALT DLH7F FL310")
+  check_eq(ex("lufthansa 7 fox turn right heading 120"), "HDG DLH7F 120 RIGHT")
+  asked(ex("Speedbird 51 fox, climb FL240"), "a letter no aircraft's callsign holds")
+end
+
+-- Cycle 44 (f96): a sim operator's words: "inject" an aircraft (CRE), "drop X from the exercise" (DEL), "speed it
+-- up to times N" (DTMULT), "stand by", "resolution advisories" (RESO); a route's edits: "take out FIX" (DELWPT),
+-- "read me back your route" (LISTRTE), "flight plan cancel, delete the route" (DELRTE); CityJet by its name
+do
+  local _, ex = scene({ "CRE BCY41 E190 53.4 -6.0 320 FL120 250", "CRE EIN88 A320 53.6 -6.8 090 FL300 280",
+      "DEFWPT LIFFY 53.5 -5.5", "DEFWPT NIMAT 53.6 -4.5", "ADDWPT EIN88 LIFFY", "ADDWPT EIN88 NIMAT" })
+  check_eq(ex("inject Ryanair 7TK, B738, at 53.2 -6.4 heading 180 FL240 290 kts"), "CRE RYR7TK B738 53.2 -6.4 180 FL240 290")
+  check_eq(ex("exercise control: drop Cityjet 41 from the sim"), "DEL BCY41")
+  check_eq(ex("City Ireland four one, descend FL100"), "ALT BCY41 FL100")
+  check_eq(ex("speed it up to times 3"), "DTMULT 3")
+  check_eq(ex("pause the simulation, stand by"), "HOLD")
+  check_eq(ex("resolution advisories on, MVP"), "RESO MVP")
+  check_eq(ex("Shamrock 88 take out NIMAT"), "DELWPT EIN88 NIMAT")
+  check_eq(ex("Shamrock 88 take LIFFY out"), "DELWPT EIN88 LIFFY")
+  check_eq(ex("Shamrock 88 read back your routing"), "LISTRTE EIN88")
+  check_eq(ex("Shamrock 88, flight plan cancelled, delete the route"), "DELRTE EIN88")
+  asked(ex("inject a fault into Shamrock 88"), "an injection of no aircraft")
+  asked(ex("drop Cityjet 41 from the list"), "dropped from no run")
+  asked(ex("speed it up to times 3, Shamrock 88"), "an aircraft named beside the rate")
+  asked(ex("Shamrock 88 traffic advisory, climb FL320"), "an advisory of no resolution")
+  asked(ex("Shamrock 88 flight plan cancel, climb FL320"), "a plan cancelled with no deletion")
+  asked(ex("Shamrock 88 read back your heading"), "a readback of no route")
+end
+
+-- Cycle 44 (f9599): a new aircraft's callsign by its airline's telephony ("Air Crete", whose "Crete" is no typo
+-- for "create"; "Mozambique", "Israir", "Arkia") or by the airline's ICAO code written in capitals apart from
+-- its flight number ("LAM 733"); a code squawk knows no airline by is asked
+do
+  local _, ex = scene({ "CRE SEH902 A320 35.3 25.2 090 FL200 260", "CRE OAL61 A320 37.9 23.7 270 FL150 250" })
+  check_eq(ex("create Air Crete seven one two, A321, at 35.0 24.0, heading 090, FL140, 250 knots"),
+    "CRE SEH712 A321 35 24 90 FL140 250")
+  check_eq(ex("delete Air Crete nine zero two"), "DEL SEH902")
+  check_eq(ex("create Mozambique 733 B737 at -19.8 34.8 heading 010 FL190 280 knots"),
+    "CRE LAM733 B737 -19.8 34.8 10 FL190 280")
+  check_eq(ex("create Israir 88 A320 at 31.9 34.9 heading 180 FL100 250 knots"), "CRE ISR88 A320 31.9 34.9 180 FL100 250")
+  check_eq(ex("create LAM 733 B737 at -19.8 34.8 heading 010 FL190 280 knots"), "CRE LAM733 B737 -19.8 34.8 10 FL190 280")
+  check_eq(ex("create DTA 12, A332, at -8.9 13.2, heading 200, FL310, 290 knots"), "CRE DTA12 A332 -8.9 13.2 200 FL310 290")
+  asked(ex("create QQX 733 B737 at -19.8 34.8 heading 010 FL190 280 knots"), "an ICAO code squawk knows no airline by")
+end
+
+-- Cycle 44 (f9599): a Boeing family said digit by digit ("triple seven", "seven four seven") or typed ("777") with
+-- a variant said straight after it ("300ER", "200 LR", "four hundred") is that variant where traffic is created;
+-- the family so said alone names no type
+do
+  local _, ex = scene({})
+  check_eq(ex("create UAE44 triple seven 200LR at 25.2 55.3 heading 300 FL350 mach .84"),
+    "CRE UAE44 B77L 25.2 55.3 300 FL350 M0.84")
+  check_eq(ex("create UAE45 777 300 ER at 25.2 55.3 heading 300 FL350 mach .84"), "CRE UAE45 B77W 25.2 55.3 300 FL350 M0.84")
+  check_eq(ex("create KLM46 seven four seven four hundred at 52.3 4.8 heading 270 FL330 290 knots"),
+    "CRE KLM46 B744 52.3 4.8 270 FL330 290")
+  asked(ex("create UAE47 triple seven at 25.2 55.3 heading 300 FL350 mach .84"), "a family with no variant said")
+end
+
+-- Cycle 44 (f9599): Portuguese "um" (one) inside digits said in Portuguese ("nível dois um zero"); with no
+-- Portuguese digit beside it "um" stays a hesitation
+do
+  local _, ex = scene({ "CRE TAP441 A320 38.7 -9.1 180 FL330 270" })
+  check_eq(ex("TAP441 descend nível dois um zero"), "ALT TAP441 FL210")
+  check_eq(ex("TAP441 descend flight level dois uma zero"), "ALT TAP441 FL210")
+  asked(ex("TAP441 descend flight level um um zero"), "'um' with no Portuguese digit beside it")
+end
+
+-- Cycle 44 (f9599): a family's number said after "the" that the callsign matcher heard as a slip for a callsign
+-- ("the seven four seven" with CLX7447 flying) is the aircraft described when exactly one of that family flies;
+-- with none or two of it flying the slip is asked about
+do
+  local _, ex = scene({ "CRE CLX7447 B738 49.6 6.2 090 FL200 280", "CRE CLX790 B744 49.8 6.0 270 FL310 290" })
+  check_eq(ex("the seven four seven, climb FL350"), "ALT CLX790 FL350")
+  check_eq(ex("the 747 turn left heading 240"), "HDG CLX790 240 LEFT")
+  local _, ex2 = scene({ "CRE CLX7447 B738 49.6 6.2 090 FL200 280", "CRE CLX790 B744 49.8 6.0 270 FL310 290",
+    "CRE GTI8 B748 49.9 6.4 180 FL330 290" })
+  asked(ex2("the seven four seven, climb FL350"), "two of the family flying")
+end
+
+-- Cycle 44 (f9599): a level said bare after "passing" (or "leaving", "reaching") after a climb or descent, then
+-- the rate made smaller or larger ("reduce rate to 1000"), waits for that level (ATALT ... VS), the rate's sign
+-- the way to the level cleared
+do
+  local _, ex = scene({ "CRE GLO77 B738 -23.5 -46.6 090 FL100 260" })
+  check_eq(ex("GLO77 climb FL 260, passing 180 reduce rate to fifteen hundred"),
+    "ALT GLO77 FL260 ; ATALT GLO77 FL180 VS GLO77 1500")
+  check_eq(ex("GLO77 descend FL 60, leaving FL80 increase your rate to 2000"),
+    "ALT GLO77 FL60 ; ATALT GLO77 FL80 VS GLO77 -2000")
+  check_eq(ex("GLO77 climb FL260, reduce rate to 1500"), "ALT GLO77 FL260 1500")
+  asked(ex("GLO77 climb FL 260, passing 90 reduce rate to fifteen hundred"), "a level the climb will not pass")
+end
+
+-- Cycle 44 (f9599): "thousand feet" said bare (no number before it) is one thousand feet; a fraction or count
+-- before it keeps its own reading
+do
+  local _, ex = scene({ "CRE AEE61 A320 37.9 23.7 090 FL120 250" })
+  check_eq(ex("set the vertical protected zone thousand feet"), "ZONEDH 1000")
+  check_eq(ex("AEE61 descend to one and a half thousand feet"), "ALT AEE61 1500")
+  asked(ex("AEE61 climb to thousand feet"), "'to thousand' may be 'two thousand'")
+end
+
+-- Cycle 44 (f9599): a navaid said by its name that several navaids of one station bear (within
+-- lexicon.navaid_station_nm of each other: Rhodes's NDB ROS, VOR-DME RDS and TACAN ROD) is the station's VOR
+do
+  local s, ex = navscene({ "CRE OAL90 A320 36.2 27.5 090 FL150 260" }, "a station's navaids by name")
+  if s then
+    check_eq(ex("OAL90 direct RODOS"), "ADDWPT OAL90 RDS ; DIRECT OAL90 RDS")
+  end
 end
