@@ -4244,8 +4244,13 @@ function G:meaning_carried(i, kinds)
   if text == "after" and self.triggers[nx] then return true end
   -- "descend until 7000 feet": "until" as "to", before the value the instruction took
   if text == "until" and self.taken[nx] then return true end
-  -- "to SFO instead of Oakland", "to LFPG instead": the value said replaces another
-  if text == "instead" and (self:word(nx, "of") or not self.t[nx] or self.t[nx].kind == "punct") then return true end
+  -- "to SFO instead of Oakland", "to LFPG instead": the value said replaces another; "no, descend KLM12
+  -- instead, FL250", "descend KLM12 instead FL250", "turn KLM12 instead heading 200": the instruction said
+  -- replaces another, "instead" before its pause, the value it took or that value's word
+  if text == "instead" and (self:word(nx, "of") or not self.t[nx] or self.t[nx].kind == "punct"
+      or (self.t[i + 1] and self.t[i + 1].kind == "punct") or self.taken[nx] or self.taken[nx + 1]) then
+    return true
+  end
   -- "if" opening a polite request ("I'd appreciate it if the Ryanair could turn ...") or a clause of
   -- framing words only ("if that's alright")
   if text == "if" then
@@ -5793,41 +5798,48 @@ end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
-  -- (the passes after "the" only where the text holds it)
-  if text:lower():find("the", 1, true) then
-    -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
-    -- aircraft has that id, or a number follows: "the Ryanair one two three")
-    text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
-      local icao = AIRLINE_WORDS[w:lower()]
-      if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
-        return the .. w .. s1 .. "aircraft" .. s2 .. nx
-      end
-      return nil
-    end)
-    text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)", function(the, w, s1, n, s2, unit)
-      local icao = AIRLINE_WORDS[w:lower()]
-      if icao and not ids[icao .. n] and lexicon.value_units[unit:lower()] then
+  -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
+  -- aircraft has that id, or a number follows: "the Ryanair one two three")
+  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
+    local icao = AIRLINE_WORDS[w:lower()]
+    if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
+      return the .. w .. s1 .. "aircraft" .. s2 .. nx
+    end
+    return nil
+  end)
+  -- ("give the easyJet 30 left", "the Air France 20 right": the degrees of a turn, 1 to 180, before its side
+  -- with no number after it; "turn the easyJet 30 left 20" keeps the callsign, matched or asked)
+  local function turn_by(n, side, pos)
+    local nx = text:match("^[%s,]*([%w%-]*)", pos)
+    return (side == "left" or side == "right") and tonumber(n) >= 1 and tonumber(n) <= 180
+      and not nx:match("^%d") and not NUMBER_WORDS[nx:lower()]
+  end
+  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)()",
+                             "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)(%d+)(%s+)(%a+)()" }) do
+    text = text:gsub(pattern, function(the, w, s1, n, s2, unit, pos)
+      local icao = AIRLINE_WORDS[w:lower():gsub("%s+", " ")]
+      if icao and not ids[icao .. n] and (lexicon.value_units[unit:lower()] or turn_by(n, unit:lower(), pos)) then
         return the .. w .. "," .. s1 .. n .. s2 .. unit
       end
       return nil
     end)
-    -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
-    -- thirty five degrees right")
-    local function spoken(ws)
-      for w in ws:gmatch("[^%s%-]+") do
-        if not NUMBER_WORDS[w:lower()] then return false end
+  end
+  -- (the value said in words, one or two of them: "turn the Lufthansa ten degrees left", "the Finnair
+  -- thirty five degrees right")
+  local function spoken(ws)
+    for w in ws:gmatch("[^%s%-]+") do
+      if not NUMBER_WORDS[w:lower()] then return false end
+    end
+    return true
+  end
+  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
+                             "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" }) do
+    text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
+      if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
+        return the .. w .. "," .. s1 .. n .. s2 .. unit
       end
-      return true
-    end
-    for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
-                               "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" }) do
-      text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
-        if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
-          return the .. w .. "," .. s1 .. n .. s2 .. unit
-        end
-        return nil
-      end)
-    end
+      return nil
+    end)
   end
   -- "VLG12AB velocity 250 knots", "increase the velocity of TAP57": an airline's telephony that is also the
   -- noun of a value (lexicon.value_noun_airlines: word -> {ICAO prefix, the noun's plain word}) is that noun

@@ -195,6 +195,17 @@ function m:acids(s)
     end
   end
   take(s.trig, upto)
+  -- "AFR1234 and KLM605 are head on, climb the Air France to FL340": with the instruction's aircraft named after
+  -- its word, a clause opening the segment that describes aircraft with "is" or "are", holds no value and ends
+  -- at a comma is talked about, not instructed (explained)
+  if #ids > 0 then
+    local comma = s.trig - 1
+    while comma > s.b and self.t[comma].kind ~= "punct" do comma = comma - 1 end
+    if comma > s.b and self.t[comma].text == "," and self:has_ref(s.b, comma, "aircraft")
+        and self:word_in(s.b, comma, "is are") and #self:quantities(s.b, comma) == 0 then
+      self:explain(s.b, comma)
+    end
+  end
   -- "EZY45 reduce to 240, the KLM will come right over it", "..., keep KLM12 as is", "and direct HZA, KLM12 no
   -- change": an aircraft in a clause after a comma that words of its own follow is talked about, not addressed,
   -- when the instruction's own aircraft was named before it (in the segment, for the instruction before, or after the
@@ -385,6 +396,11 @@ function m:as_context(i)
   local k = self:word(i - 1, "the") and i - 2 or i - 1
   if (self:word(k, "of") and (self:word(k - 1, "ahead clear instead") or self:word(k - 1, "front") and self:word(k - 2, "in")))
       or (self:word(k, "from") and self:word(k - 1, "away")) or self:word(k, "below under beneath above") then
+    return true
+  end
+  -- ("..., head on with KLM605", "converging with the Ryanair": the traffic met)
+  if self:word(k, "with") and (self:word(k - 1, "converging converge converges head-on")
+      or (self:word(k - 1, "on") and self:word(k - 2, "head"))) then
     return true
   end
   local named = self.t[i - 1] and self.t[i - 1].text == "," and self:refs_in(i, i + 1, "aircraft")[1]
@@ -1174,7 +1190,9 @@ function m:type_said(i)
     if r.kind == "type" and r.b == i then
       -- ("the Boeing 777", "the A330": the family's number, its maker before it or not, is the family)
       local last = self.t[r.e - 1].text
-      local family = (r.e - r.b == 1 or makers()[t.text]) and fams[last]
+      -- ("the Airbus 330": an Airbus family's number said without its letter)
+      local family = (r.e - r.b == 1 or makers()[t.text])
+        and (fams[last] or (t.text == "airbus" and r.e - r.b == 2 and fams["a" .. last]))
       -- (a designator read as another names aircraft flying under either: "the E175" is an E75L or an E175)
       return family and set_of(family) or function(d) return d == r.name or aliases()[d] == r.name end, r.e
     end
@@ -1239,9 +1257,14 @@ function m:type_refs()
       if fits == 1 then table.remove(self.refs, n) end
     end
   end
+  -- (with a callsign said in the request, a type names an aircraft only after "the" opening a clause, an
+  -- instruction word straight after it, when it fits one aircraft no callsign names: "AFR1234 turn right 20,
+  -- and the 777 turn right 20 as well")
+  local named = {}
   for _, r in ipairs(self.refs) do
-    if r.kind == "aircraft" and not r.by_airline then return end
+    if r.kind == "aircraft" and not r.by_airline then named[r.name] = true end
   end
+  local callsigns = next(named) ~= nil
   local i = 1
   while i <= #self.t do
     local b = i
@@ -1266,6 +1289,10 @@ function m:type_refs()
     local fits = {}
     for _, a in ipairs(test and self.fleet or {}) do
       if a.type and test(a.type:upper()) then fits[#fits + 1] = a.id end
+    end
+    if callsigns and test then
+      local opens = the and (k == 1 or self.t[k - 1].kind == "punct" or self:word(k - 1, "and @then_words"))
+      if not (opens and self:intent_at(e) and #fits == 1 and not named[fits[1]]) then test, fits = nil, {} end
     end
     -- ("the CRJ": a family in capitals the lexer took for an unknown place)
     for n = #self.refs, 1, -1 do
@@ -1333,6 +1360,20 @@ end
 local QUESTION_WORDS = { where = true, wheres = true, ["where's"] = true, is = true, what = true, whats = true,
                          ["what's"] = true, show = true, me = true, tell = true }
 function m:settle_callsigns()
+  -- "KLM 1394 and 1349, both descend FL80": typed digits after a flying aircraft's callsign and "and" that are,
+  -- with its airline, another flying aircraft's callsign exactly name that aircraft too
+  for k = #self.refs, 1, -1 do
+    local r = self.refs[k]
+    local x = r.e + 1
+    local t, nx = self.t[x], self.refs[k + 1]
+    local a = r.kind == "aircraft" and r.exists and self:word(r.e, "and") and t and t.kind == "number"
+      and t.text:match("^%d+$") and not self.u:used(x) and not (nx and nx.b == x) and airline_digits(r.name)
+    local id = a and a ~= "" and (a .. t.text):upper()
+    if id and id ~= r.name:upper() and self:state(id) and not L.value_units[self.words[x + 1] or ""] then
+      table.insert(self.refs, k + 1, { kind = "aircraft", name = self:state(id).id, b = x, e = x + 1, exists = true })
+      self:mark_used(x, x + 1)
+    end
+  end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" then
       while r.e - r.b > 1 and self.t[r.b].kind == "word" and QUESTION_WORDS[self.t[r.b].text]

@@ -286,6 +286,15 @@ return function(intent, rule, words)
     end
     return false
   end
+  -- "drop TRA5K at 52.3 4.0": an aircraft flying set down at a position (a latitude or a decimal straight after
+  -- "at", another value after it) is moved there
+  rule { "drop", "move", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 3, "aircraft")[1]
+    if not (r and r.exists and g:word(r.e, "at")) then return false end
+    local qs = g:quantities(r.e + 1, math.min(#g.t + 1, r.e + 8))
+    return qs[1] ~= nil and qs[2] ~= nil and qs[1].b == r.e + 1
+      and (qs[1].kind == "lat" or (qs[1].kind == "plain" and qs[1].number.decimal))
+  end }
   -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "drop Cityjet 62 from the exercise": an aircraft that flies dropped from the run
@@ -1623,10 +1632,11 @@ return function(intent, rule, words)
   end }
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
-  -- "resume run", "continue the run": the run (the simulation's) taken up again, said alone or as a clause of its own
+  -- "resume run", "continue the run", "resume the scenario": the run (the simulation's) taken up again, said alone
+  -- or as a clause of its own
   rule { "resume continue unpause", "op", when = function(g, i)
     local k = g:word(i + 1, "the") and i + 2 or i + 1
-    return g:word(k, "run") and (g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
+    return g:word(k, "run scenario scen") and (g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
   end }
   rule { "go", "op", next = "again" }  -- "and go again"
   -- "kick off the episode", "kick off the sim": the run started, said of the simulation
@@ -2002,10 +2012,13 @@ return function(intent, rule, words)
   end }
   -- "resolution only past CPA", "keep resolving until past CPA": when a resolution ends and navigation resumes
   -- (RESNAV PASTCPA); "past" before "CPA" names it
-  rule { "resolution resolutions resolving reso", false, near = { 4, "past" }, when = function(g, i)
+  -- ("resolve past CPA": resolving until past it)
+  rule { "resolution resolutions resolving reso resolve", false, near = { 4, "past" }, when = function(g, i)
     return g:word_in(i + 1, math.min(#g.t + 1, i + 6), "cpa")
   end }
-  rule { "past", "resnav", next = "cpa", when = function(g, i) return g:word_in(1, i, "resolution resolutions resolving reso") end }
+  rule { "past", "resnav", next = "cpa", when = function(g, i)
+    return g:word_in(1, i, "resolution resolutions resolving reso resolve")
+  end }
   -- ("resume nav past CPA for resolution", "... after resolving"): the resolution whose end past CPA is
   -- said straight before it, no setting of its own
   rule { "resolution resolutions resolving reso", false, prev = { 1, "for after following from of" },

@@ -6155,21 +6155,21 @@ end
 
 -- Cycle 37 (tr79): the telephony of the airlines of Italy and Greece ("Moonflower" is Neos)
 do
-  local _, ex = scene({ "CRE NOS721 B738 42.6 11.8 150 FL240 290", "CRE EXV204 A320 38.0 23.5 090 FL150 280" })
+  local _, ex = scene({ "CRE NOS721 B738 42.6 11.8 150 FL240 290", "CRE ELB204 A320 38.0 23.5 090 FL150 280" })
   check_eq(ex("where is Moonflower seven two one"), "POS NOS721")
-  check_eq(ex("Ellinair two zero four descend FL100"), "ALT EXV204 FL100")
+  check_eq(ex("Ellinair two zero four descend FL100"), "ALT ELB204 FL100")
 end
 
 -- Cycle 37 (tr79): reasons said with an instruction: an aircraft "not needed (anymore)" before its removal,
 -- and "vectors" with the place they lead to named straight after it; a value in such a clause is still asked
 do
-  local _, ex = scene({ "CRE SXS81 B738 40.1 23.1 100 FL300 280", "CRE EXV12 A320 40.5 23.5 100 FL200 250" })
+  local _, ex = scene({ "CRE SXS81 B738 40.1 23.1 100 FL300 280", "CRE ELB12 A320 40.5 23.5 100 FL200 250" })
   check_eq(ex("SXS81 isn't required any more, delete it"), "DEL SXS81")
-  check_eq(ex("Ellinair twelve not needed anymore, remove it please"), "DEL EXV12")
+  check_eq(ex("Ellinair twelve not needed anymore, remove it please"), "DEL ELB12")
   asked(ex("SXS81 is not cleared, remove it"), "a negation that is no reason of lexicon.unneeded")
-  check_eq(ex("EXV12 turn left heading 250, vectors Thessaloniki"), "HDG EXV12 250 LEFT")
-  check_eq(ex("EXV12 fly heading 030, vectoring Larissa, descend FL90"), "HDG EXV12 30 ; ALT EXV12 FL90")
-  asked(ex("EXV12 turn left heading 250, vectors 5"), "a number after vectors")
+  check_eq(ex("ELB12 turn left heading 250, vectors Thessaloniki"), "HDG ELB12 250 LEFT")
+  check_eq(ex("ELB12 fly heading 030, vectoring Larissa, descend FL90"), "HDG ELB12 30 ; ALT ELB12 FL90")
+  asked(ex("ELB12 turn left heading 250, vectors 5"), "a number after vectors")
 end
 
 -- Cycle 37 (tr79): values said without their unit where the construction places them: a number said group-wise
@@ -8537,4 +8537,95 @@ do
   if s then
     check_eq(ex("OAL90 direct RODOS"), "ADDWPT OAL90 RDS ; DIRECT OAL90 RDS")
   end
+end
+
+-- Cycle 44 (f98): "instead" ending the instruction's clause or before the value it took fills a correction
+-- ("no, climb SAS31 instead, FL350"); an instruction to a pronoun is still asked
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.0 10.0 090 FL330 280", "CRE NAX7 B738 55.5 10.5 180 FL290 270" })
+  check_eq(ex("no, climb SAS31 instead, FL350"), "ALT SAS31 FL350")
+  check_eq(ex("negative, turn NAX7 instead heading 200"), "HDG NAX7 200")
+  asked(ex("no, climb it instead, FL350"), "a pronoun with two aircraft flying")
+  asked(ex("climb SAS31 instead to FL350 unless NAX7 objects"), "a condition after 'instead'")
+end
+
+-- Cycle 44 (f98): "give the Vueling 25 right": typed degrees (1 to 180) after "the" and an airline, then a turn's
+-- side with no number after it, are the turn's value when no aircraft has that callsign; an airline called bare
+-- with the number, a callsign that flies, a number after the side and two of the airline flying are not read so
+do
+  local _, ex = scene({ "CRE VLG12 A320 41.0 2.0 100 FL300 280", "CRE IBE33 A321 41.5 2.5 200 FL320 280",
+    "CRE IBE4 A320 41.3 2.8 300 FL280 270", "CRE AEA61 B738 41.2 2.2 010 FL260 270" })
+  check_eq(ex("give the Vueling 25 right"), "HDG VLG12 125 RIGHT")
+  check_eq(ex("the Vueling 25 degrees left please"), "HDG VLG12 75 LEFT")
+  check_eq(ex("give the Air Europa 10 left"), "HDG AEA61 360 LEFT")
+  asked(ex("give Vueling 25 right"), "an airline called bare with its number")
+  asked(ex("turn the Vueling 25 right 30"), "a number after the side")
+  asked(ex("give the Iberia 25 right"), "two of the airline flying")
+  local _, ex2 = scene({ "CRE VLG30 A320 41.5 2.5 200 FL320 280", "CRE IBE33 A321 41.0 2.0 100 FL300 280" })
+  asked(ex2("give the Vueling 30 right"), "the callsign VLG30 flies")
+end
+
+-- Cycle 44 (f98): "the Airbus 321": an Airbus family's number said without its letter names its one aircraft
+-- flying; two of it flying are asked
+do
+  local _, ex = scene({ "CRE VLG12 A320 41.0 2.0 100 FL300 280", "CRE IBE33 A321 41.5 2.5 200 FL320 280",
+    "CRE RYR4 B738 41.3 2.8 300 FL280 270", "CRE EZY9 A320 41.1 2.1 010 FL260 270" })
+  check_eq(ex("get rid of the Airbus 321"), "DEL IBE33")
+  check_eq(ex("climb the Airbus 321 to FL360"), "ALT IBE33 FL360")
+  asked(ex("get rid of the Airbus 320"), "two A320s flying")
+end
+
+-- Cycle 44 (f98): a clause opening the request that describes aircraft with "is"/"are", no value, ended by a comma,
+-- before an instruction naming its own aircraft after its word, is talked about; with no aircraft after the
+-- instruction word it is still asked
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.0 10.0 090 FL330 280", "CRE NAX7 B738 55.5 10.5 270 FL330 270" })
+  check_eq(ex("SAS31 and NAX7 are nose to nose, descend the Norwegian to FL310"), "ALT NAX7 FL310")
+  check_eq(ex("SAS31 is closing on NAX7, climb SAS31 to FL350"), "ALT SAS31 FL350")
+  asked(ex("SAS31 and NAX7 are nose to nose, descend to FL310"), "no aircraft after the instruction word")
+end
+
+-- Cycle 44 (f98): "head on with X", "converging with X" after a creation or an instruction name the traffic met
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.0 10.0 090 FL330 280" })
+  check_eq(ex("create NAX9 B738 at 55.0 11.0 heading 270 FL330 speed 270, head on with SAS31"),
+    "CRE NAX9 B738 55 11 270 FL330 270")
+  check_eq(ex("create NAX9 B738 at 55.5 10.5 heading 180 FL330 speed 270 converging with SAS31"),
+    "CRE NAX9 B738 55.5 10.5 180 FL330 270")
+end
+
+-- Cycle 44 (f98): "SAS 1402 and 1420": typed digits after a callsign and "and" that are, with its airline, another
+-- aircraft flying name it too; digits no aircraft has are asked
+do
+  local _, ex = scene({ "CRE SAS1402 A320 55.0 10.0 090 FL330 280", "CRE SAS1420 A320 55.5 10.5 270 FL310 270" })
+  check_eq(ex("SAS 1402 and 1420, both climb FL370"), "ALT SAS1402 FL370 ; ALT SAS1420 FL370")
+  check_eq(ex("SAS1402 and 1420 reduce 250"), "SPD SAS1402 250 ; SPD SAS1420 250")
+  asked(ex("SAS 1402 and 1440, both climb FL370"), "digits of no aircraft")
+end
+
+-- Cycle 44 (f98): "drop X at LAT LON" moves the aircraft; "drop X at FL80" stays a descent
+do
+  local _, ex = scene({ "CRE NAX7 B738 55.5 10.5 270 FL330 270" })
+  check_eq(ex("drop NAX7 at 55.1 10.2"), "MOVE NAX7 55.1 10.2")
+  check_eq(ex("drop NAX7 at FL250"), "ALT NAX7 FL250")
+end
+
+-- Cycle 44 (f98): "resume the scenario" starts the clock; "resolve past CPA" is RESNAV PASTCPA
+do
+  local _, ex = scene({})
+  check_eq(ex("resume the scenario please"), "OP")
+  check_eq(ex("continue scenario"), "OP")
+  check_eq(ex("resolve past CPA"), "RESNAV PASTCPA")
+  check_eq(ex("resolve with MVP"), "RESO MVP")
+end
+
+-- Cycle 44 (f98): with callsigns said, "the TYPE" opening a clause with its instruction word straight after names
+-- the one aircraft of that type; two of it flying, or no instruction after it, are asked
+do
+  local _, ex = scene({ "CRE SAS31 A320 55.0 10.0 090 FL330 280", "CRE NAX7 B77W 55.5 10.5 270 FL330 270",
+    "CRE NAX8 B738 55.2 10.2 180 FL300 270", "CRE SAS40 B738 55.3 10.6 010 FL280 270" })
+  check_eq(ex("SAS31 turn left 10, and the 777 turn left 10 as well"), "HDG SAS31 80 LEFT ; HDG NAX7 260 LEFT")
+  check_eq(ex("SAS31 climb FL350 then the 777 descend FL310"), "ALT SAS31 FL350 ; ALT NAX7 FL310")
+  asked(ex("SAS31 turn left 10, and the 737 turn left 10 as well"), "two 737s flying")
+  asked(ex("SAS31 turn left 10, and the 777 as well"), "no instruction word after the type")
 end
