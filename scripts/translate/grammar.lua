@@ -328,6 +328,16 @@ local function turn_letters(text, sh)
   local padded, heading = " " .. text:lower() .. " ", false
   for _, p in ipairs(HEADING_PATTERNS) do heading = heading or padded:find(p) ~= nil end
   if not heading then return text end
+  -- (a turn letter is a word of letters alone, so one of the text's runs of letters)
+  local turn = false
+  for letters in text:gmatch("%a+") do
+    local d = sh[letters:lower()]
+    if d == "left" or d == "right" then
+      turn = true
+      break
+    end
+  end
+  if not turn then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   local changed = false
@@ -566,16 +576,18 @@ local SC_WORDS, SC_MARKERS, SC_AFTER = set_of(lexicon.self_correction.words),
 local SC_CLOSING = set_of(lexicon.self_correction.closing)
 -- (G.sc_dropping: the first words of the markers that take back in words, a set)
 G.sc_dropping = set_of(lexicon.self_correction.dropping)
--- patterns finding the first word of each marker as a whole word in lower-case text (a marker's word is
--- a token's bare text only where one of these finds it)
+-- {word, pattern} of the first word of each marker, the pattern finding it as a whole word in lower-case
+-- text (a marker's word is a token's bare text only where one of these finds it)
 local SC_MARKER_PATTERNS = {}
 for _, m in ipairs(lexicon.self_correction.markers) do
-  SC_MARKER_PATTERNS[#SC_MARKER_PATTERNS + 1] = "%f[%w]" .. m:match("^%S+") .. "%f[%W]"
+  local w = m:match("^%S+")
+  SC_MARKER_PATTERNS[#SC_MARKER_PATTERNS + 1] = { word = w, pattern = "%f[%w]" .. w .. "%f[%W]" }
 end
--- True when the lower-case text holds one of the words of `patterns` (whole-word patterns, as above).
+-- True when the lower-case text holds one of the words of `patterns` whole ({word, pattern} as above; the
+-- pattern is tried only where a plain find sees the word).
 local function holds_word(lower, patterns)
   for _, p in ipairs(patterns) do
-    if lower:find(p) then return true end
+    if lower:find(p.word, 1, true) and lower:find(p.pattern) then return true end
   end
   return false
 end
@@ -648,7 +660,9 @@ for _, p in ipairs(lexicon.readback_heard) do
   table.insert(READBACK_HEARD[first], p)
 end
 local READBACK_HEARD_PATTERNS = {}
-for first in pairs(READBACK_HEARD) do READBACK_HEARD_PATTERNS[#READBACK_HEARD_PATTERNS + 1] = "%f[%w]" .. first .. "%f[%W]" end
+for first in pairs(READBACK_HEARD) do
+  READBACK_HEARD_PATTERNS[#READBACK_HEARD_PATTERNS + 1] = { word = first, pattern = "%f[%w]" .. first .. "%f[%W]" }
+end
 local function readback_heard(text)
   if not holds_word(text:lower(), READBACK_HEARD_PATTERNS) then return text end
   local toks = bare_words(text)
@@ -682,6 +696,7 @@ end
 -- not 300 speed 250") the "not" stays, and is asked about.
 local NEGATED_NOUNS = set_of({ "fl", "flight", "level", "heading", "speed", "mach", "point" })
 local function negated_values(text)
+  if not text:lower():find("not", 1, true) then return text end  -- (no "not" said)
   local toks = bare_words(text)
   local function value(t) return t and (t.raw:match("%d%p*$") or NUMBER_WORDS[t.bare] or UNIT_WORDS[t.bare]) end
   local pieces, from = {}, 1
@@ -730,20 +745,26 @@ local function all_roles(words)
   return true
 end
 local function role_dropped(text)
-  local role, said = text:match("^%s*(%a+[%s%-]?%a*)%s*,%s*(.+)$")
-  if not role then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s+([Pp]lease%s.+)$") end
+  -- (each form is matched only where the text holds its comma, "lease", colon or dash)
+  local colon = text:find(":", 1, true)
+  local role, said
+  if text:find(",", 1, true) then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s*,%s*(.+)$") end
+  if not role and text:find("lease", 1, true) then role, said = text:match("^%s*(%a+[%s%-]?%a*)%s+([Pp]lease%s.+)$") end
   if role and all_roles(role) then return said end
-  local label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$")
+  local label, before, sep, after, rest
+  if colon or text:find("-", 1, true) then label, before, sep, after, rest = text:match("^%s*(%a+%s*%a*)(%s*)([:%-])(%s*)(.*)$") end
   if label and rest ~= "" and not (sep == "-" and (before == "" or after == ""))
       and all_roles((label:lower():gsub("%s+here$", ""))) then
     return rest
   end
-  -- ("instructor to sim operator: ...": one role to another before the colon)
-  local from, to, told = text:match("^%s*(%a+[%s%-]?%a*)%s+[Tt]o%s+(%a+[%s%-]?%a*)%s*:%s*(%S.*)$")
-  if from and all_roles(from) and all_roles(to) then return told end
-  -- ("pseudo-pilot note: ...", "instructor notes: ...": the role's note is its line, no ECHO)
-  local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
-  if noted and (all_roles(noted) or NOTE_OWNERS[noted:lower()]) then return line end
+  if colon then
+    -- ("instructor to sim operator: ...": one role to another before the colon)
+    local from, to, told = text:match("^%s*(%a+[%s%-]?%a*)%s+[Tt]o%s+(%a+[%s%-]?%a*)%s*:%s*(%S.*)$")
+    if from and all_roles(from) and all_roles(to) then return told end
+    -- ("pseudo-pilot note: ...", "instructor notes: ...": the role's note is its line, no ECHO)
+    local noted, line = text:match("^%s*(%a+[%s%-]?%a*)%s+[Nn]otes?%s*:%s*(%S.*)$")
+    if noted and (all_roles(noted) or NOTE_OWNERS[noted:lower()]) then return line end
+  end
   local name, next_word = text:match("^%s*(%a+)%s+(%a.*)$")
   if name and ADDRESSED[name:lower()] == true then return next_word end
   local pair, request = text:match("^%s*(%a+%s+%a+)%s+(%S.*)$")
@@ -753,6 +774,7 @@ end
 local ASSENT = set_of(lexicon.assent)
 -- "... climb fl150? engineer: yes do it": a second speaker's label and assent after the request are dropped
 local function assent_dropped(text)
+  if not text:find(":", 1, true) then return text end  -- (no label's colon)
   local said, label, reply = text:match("^(.-[%?%.!])%s*(%a+[%s%-]?%a*)%s*:%s*(.-)%s*[%.!]?$")
   if not said or not all_roles(label) or reply == "" then return text end
   for w in reply:lower():gmatch("[^%s,]+") do
@@ -781,6 +803,7 @@ local function hyphened_types(text)
     for _, d in ipairs(TYPES.designators) do KNOWN_TYPES[d:upper()] = true end
     for d in pairs(TYPES.aliases) do KNOWN_TYPES[d] = true end  -- ("E-175": the E75L)
   end
+  if not text:find("-", 1, true) then return text end
   return (text:gsub("%f[%w](%a%a?)%-(%d%d%d?)%f[%W]", function(a, n)
     if KNOWN_TYPES[(a .. n):upper()] then return a .. n end
     return nil
@@ -794,6 +817,8 @@ local HEMISPHERES = set_of({ "north", "south", "east", "west", "n", "s", "e", "w
 -- re-read as other numbers (the hemisphere dropped, the degrees taken for a heading).
 local function impossible_minutes(text)
   local low = text:lower()
+  -- (the first two forms hold digits, space and digits; the third "deg")
+  if not low:find("%d%s+%d") and not low:find("deg", 1, true) then return nil end
   local function bad(deg, min) return deg:match("^%d+$") and tonumber(deg) <= 180 and tonumber(min) >= 60 end
   local function said(b, e) return (text:sub(b, e - 1):gsub("[%s%.]+$", "")) end
   -- the hemisphere before the degrees: "N55 75 W003 20"
@@ -842,10 +867,10 @@ local function value_homophones(text)
   end)
 end
 -- digits, "point" or "decimal" in any case, digits, a word: written_forms reads a hemisphere's decimal point
-local POINT_SAID = {}
+local POINT_SAID = {}  -- {word =, pattern =}
 for _, word in ipairs({ "point", "decimal" }) do
   local said = word:gsub("%a", function(c) return "[" .. c:lower() .. c:upper() .. "]" end)
-  POINT_SAID[#POINT_SAID + 1] = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]"
+  POINT_SAID[#POINT_SAID + 1] = { word = word, pattern = "%f[%d](%d+)%s+" .. said .. "%s+(%d+)(%s+)(%a+)%f[%A]" }
 end
 -- A clock multiplier typed alone as a clause ("seed 99 then 30 random a320 then x4", "hold, 4x"): the
 -- simulation's rate, written out as "sim speed x4" (a callsign-like "x4" or a bare "4x" names no aircraft)
@@ -878,6 +903,15 @@ for abbr, readings in pairs(lexicon.typed_abbreviations) do
   end
 end
 local function typed_abbreviations(text)
+  -- (a word typed of letters alone is one of its runs of letters: with none an abbreviation, none is read)
+  local typed = false
+  for letters in text:gmatch("%a+") do
+    if ABBREVIATIONS[letters:lower()] then
+      typed = true
+      break
+    end
+  end
+  if not typed then return text end
   local toks = {}
   for w in text:gmatch("%S+") do toks[#toks + 1] = w end
   local function bare(k) return toks[k] and toks[k]:lower():match("^(.-)%p*$") end
@@ -918,16 +952,23 @@ local GAIN_LOSE = { gain = 1, lose = -1 }
 G.value_name_set = set_of(lexicon.value_names)
 
 local function written_forms(text)
+  -- (each pattern pass runs through where(): only where `low`, the text in lower case, holds what the
+  -- pattern requires, its first argument; a rewrite outside where() sets `low` again)
+  local low = text:lower()
+  local function where(needle, pattern, repl)
+    text, low = tokens.gsub_where(text, low, needle, pattern, repl)
+  end
   -- ".hold", ".run": a command typed with a text client's leading dot is the word
-  text = text:gsub("^(%s*)%.(%a)", "%1%2")
+  where("%.", "^(%s*)%.(%a)", "%1%2")
   -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
-  text = text:gsub("(%s)@%s*(%w)", "%1at %2")
+  where("@", "(%s)@%s*(%w)", "%1at %2")
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
   text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(text))))))))
+  low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more
   -- leave it as typed
-  text = text:gsub("%f[%w]([NnSs])(%d%d?)%s+(%d%d?%.?%d*)%s+([EeWw])(%d%d?%d?)%s+(%d%d?%.?%d*)%f[^%w%.]",
+  where("[ns]%d", "%f[%w]([NnSs])(%d%d?)%s+(%d%d?%.?%d*)%s+([EeWw])(%d%d?%d?)%s+(%d%d?%.?%d*)%f[^%w%.]",
     function(ns, lat, lat_min, ew, lon, lon_min)
       lat_min, lon_min = tonumber(lat_min), tonumber(lon_min)
       if not lat_min or not lon_min or lat_min >= 60 or lon_min >= 60 then return nil end
@@ -935,22 +976,22 @@ local function written_forms(text)
     end)
   -- a simulation time typed h:mm:ss ("at 00:20:00") is that many seconds, also before a colon that opens
   -- what follows ("schedule at 00:15:00: ..."); mm:ss or hh:mm stays as typed
-  text = text:gsub("%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
+  where("%d:%d", "%f[%d:](%d%d?):([0-5]%d):([0-5]%d)(:?)%f[^%d:]", function(h, m, sec, colon)
     return tostring(tonumber(h) * 3600 + tonumber(m) * 60 + tonumber(sec)) .. " seconds" .. colon
   end)
   -- "CPA half a mile", "a quarter of a mile": a fraction of a mile said in words is that many nautical miles
-  text = text:gsub("%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
+  where("half", "%f[%a]([Hh]alf)%s+an?%s+(%a+)", function(_, unit)
     if lexicon.fraction_units[unit:lower()] then return "0.5 nm" end
   end)
   -- (not after a whole number and "and": "two and a quarter miles" is the number 2.25 and its unit)
-  text = text:gsub("()%f[%a][Aa]%s+([Qq]uarter)%s+o?f?%s*a?%s*(%a+)", function(at, _, unit)
+  where("quarter", "()%f[%a][Aa]%s+([Qq]uarter)%s+o?f?%s*a?%s*(%a+)", function(at, _, unit)
     if lexicon.fraction_units[unit:lower()] and not text:sub(1, at - 1):match("%f[%a][Aa][Nn][Dd]%s+$") then
       return "0.25 nm"
     end
   end)
   -- "descend 8 500 m", "12 000 ft": a number with a space between its thousands and its last three digits,
   -- typed with its unit straight after, is one number
-  text = text:gsub("%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
+  where("%d %d", "%f[%w.](%d%d?) (%d%d%d)(%s*)(%a+)%f[%A]", function(th, rest, space, unit)
     if lexicon.thousands_units[unit:lower()] then return th .. rest .. space .. unit end
   end)
   -- "angels two six", "angels 22": military brevity for an altitude in thousands of feet (one or two digits,
@@ -961,65 +1002,67 @@ local function written_forms(text)
     end
     return digits .. " thousand ft"
   end
-  text = text:gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%d%d?)%f[^%w%.]", "%1000 ft")
-    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%s+%a+)%f[%A]", angels)
-    :gsub("%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+)%f[%A]", angels)
+  where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%d%d?)%f[^%w%.]", "%1000 ft")
+  where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+%s+%a+)%f[%A]", angels)
+  where("angels", "%f[%a][Aa][Nn][Gg][Ee][Ll][Ss]%s+(%a+)%f[%A]", angels)
   -- "250-ish", "FL200-ish": the suffix of a loose value is its own word ("ish", lexicon's discourse)
-  text = text:gsub("(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
+  where("%-ish", "(%w)%-([Ii][Ss][Hh])%f[%A]", "%1 %2")
   -- "un-pause", "un-freeze": the prefix "un-" written with a hyphen is the one word ("unpause")
-  text = text:gsub("%f[%a]([Uu][Nn])%-(%a)", "%1%2")
+  where("un%-", "%f[%a]([Uu][Nn])%-(%a)", "%1%2")
   local sh = lexicon.shorthand
   -- "zone r 4 nm": ZONER's name typed apart, no right turn
-  text = text:gsub("%f[%a]([Zz][Oo][Nn][Ee])%s+([Rr])%f[%A]", "%1 radius")
+  where("zone", "%f[%a]([Zz][Oo][Nn][Ee])%s+([Rr])%f[%A]", "%1 radius")
   text = turn_letters(text, sh)
+  low = text:lower()
   -- "seed=7", "dt = 0.5", "reso=mvp": a setting typed key=value, read as "seed: 7" (only a key that names
   -- a command or a setting: "t=300" in a note stays as typed, as does all of "log: seed=7 baseline")
   local label = text:match("^%s*(%a+)%s*:")
   if not (label and lexicon.note_labels[label:lower()]) then
-    text = text:gsub("%f[%w](%a[%w_]*)(%s*=%s*)([%w%.%-])", function(key, _, v)
+    where("=", "%f[%w](%a[%w_]*)(%s*=%s*)([%w%.%-])", function(key, _, v)
       if SETTING_KEYS[key:lower()] then return key .. ": " .. v end
     end)
   end
   -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
-  text = text:gsub("%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
+  where("ff", "%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
   -- "realtime" written as one word
-  text = text:gsub("%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
+  where("realtime", "%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
-  text = text:gsub("%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
+  where("v/s", "%f[%w]([Vv])/([Ss])%f[%W]", "%1%2")
   -- a typed callsign glued to its level ("klm12fl240"), Mach typed as "m78"
-  text = text:gsub("%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
-  text = text:gsub("%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
+  where("%wfl%d", "%f[%w](%a%a%a?%d+%a?%a?)([Ff][Ll]%d%d%d?)%f[%W]", "%1 %2")
+  where("m%d", "%f[%w][Mm](%d%d)%f[%W]", "mach .%1")
   -- "mach.76", "mach0.76", "fl.300", "hdg.240": a value's name glued to its value by a dot is the name,
   -- then the value (Mach keeps its decimal point)
-  if text:find("%a0?%.%d") then
-    text = text:gsub("%f[%a](%a+)(0?)%.(%d)", function(name, zero, d)
-      local n = name:lower()
-      if n == "mach" then return name .. " " .. zero .. "." .. d end
-      if G.value_name_set[n] and zero == "" then return name .. " " .. d end
-    end)
-  end
+  where("%a0?%.%d", "%f[%a](%a+)(0?)%.(%d)", function(name, zero, d)
+    local n = name:lower()
+    if n == "mach" then return name .. " " .. zero .. "." .. d end
+    if G.value_name_set[n] and zero == "" then return name .. " " .. d end
+  end)
   -- a position typed as one word of whole degrees ("55N030W", "37N020W"), as oceanic points are written
-  text = text:gsub("%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
+  where("%d[ns]%d", "%f[%w](%d%d)([NnSs])(%d%d%d)([EeWw])%f[%W]", "%1 %2 %3 %4")
   -- a rate glued to its unit ("1000ft/min", "1500ft/m")
-  text = text:gsub("(%d)([Ff][Tt]/[Mm][Ii]?[Nn]?)%f[%A]", "%1 %2")
+  where("ft/m", "(%d)([Ff][Tt]/[Mm][Ii]?[Nn]?)%f[%A]", "%1 %2")
   -- "hdg 45 (it should drift away from the others)": a bracketed remark is a clause of its own, set apart
   -- as after a dash (set_apart)
-  text = text:gsub("%s*%((%a[^()]*)%)", " - %1,")
+  where("%(", "%s*%((%a[^()]*)%)", " - %1,")
   -- "print 'episode 12 start' to the log": text in single quotes (after a space, before a space or the
   -- end) is quoted text, as in double quotes
-  text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
+  if low:find("'", 1, true) then
+    text = (" " .. text .. " "):gsub("(%s)'([^'%s][^']-)'([%s,%.;:!%?])", '%1"%2"%3'):sub(2, -2)
+    low = text:lower()
+  end
   -- "jet2 44m", "Jet 2 one two": the airline's brand name (its telephony is Channex, EXS) before a flight number
-  text = text:gsub("%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
+  where("jet", "%f[%w][Jj][Ee][Tt]%s?2(%s+)(%w+)", function(space, nx)
     if nx:match("^%d") or DIGIT_WORDS[nx:lower()] then return "channex" .. space .. nx end
   end)
   -- "orig/dest AFR1234: LFPG -> LFML", "origin/destination EZY45 EGKK EHAM": both settings written as one
   -- with a slash, then the aircraft and the two airports in that order (an arrow between them or none)
-  text = text:gsub("%f[%a]([Oo][Rr][Ii][Gg]%a*)%s*/%s*([Dd][Ee][Ss][Tt]%a*)%s+(%w+):?%s+(%a%a%a%a)%s*%-*>?%s*(%a%a%a%a)%f[%A]",
+  where("orig", "%f[%a]([Oo][Rr][Ii][Gg]%a*)%s*/%s*([Dd][Ee][Ss][Tt]%a*)%s+(%w+):?%s+(%a%a%a%a)%s*%-*>?%s*(%a%a%a%a)%f[%A]",
     "%3 origin %4, destination %5")
   -- "dest eidw -> einn": an arrow between two places after the name of an airport setting changes it
   -- from the one to the other: the setting takes the second
-  if text:find("->", 1, true) then
-    text = text:gsub("(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
+  if low:find("->", 1, true) then
+    where("%->", "(%a+)(%s+)%a+%s*%-+>%s*(%a+)", function(setting, space, to)
       if not lexicon.arrow_settings[setting:lower()] then return nil end
       return setting .. space .. to
     end)
@@ -1027,7 +1070,7 @@ local function written_forms(text)
     -- after a setting's name, is no place); before a word that opens an instruction (a value's name, a verb
     -- of climb or descent, a turn: "KLM56 -> hdg 210 L", "passing FL120 -> spd 280") it separates that
     -- instruction from what is before it, as a comma
-    text = text:gsub("(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
+    where("%->", "(%w+)%s*%-+>%s*(%a[%w%.]*)", function(before, after)
       local b, a = before:lower(), after:lower()
       if lexicon.shorthand[b] or lexicon.direct_arrow_not[b] or a:match("^fl%d") or a:match("^m%.?%d") then return nil end
       if word_set("turn left right lt rt @instruction_nouns @up @down", 1)[a] then return before .. ", " .. after end
@@ -1035,11 +1078,12 @@ local function written_forms(text)
     end)
   end
   text = value_homophones(split_digits(text))
-  text = text:gsub("%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
+  low = text:lower()
+  where("%a%d", "%f[%w](%a+)(%d+)%f[^%w%.]", function(pre, digits)
     local w = sh[pre:lower()]
     return w and (w .. " " .. digits) or nil
   end)
-  text = text:gsub("()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
+  where("%a%s+%d", "()%f[%w](%a+)(%s+)(%d)", function(at, pre, space, digit)
     local w = sh[pre:lower()]
     -- ("when it's 15 miles from HEL": the letter of a contraction is no shorthand)
     if not w or text:sub(at - 1, at - 1) == "'" or text:sub(math.max(1, at - 3), at - 1) == "\u{2019}" then
@@ -1051,45 +1095,47 @@ local function written_forms(text)
     return w .. space .. digit
   end)
   -- a coordinate typed in digits with its point said ("55 decimal 5 north"): 55.5, only before a hemisphere
-  for _, pattern in ipairs(POINT_SAID) do
-    text = text:gsub(pattern, function(whole, frac, space, hemi)
+  for _, p in ipairs(POINT_SAID) do
+    where(p.word, p.pattern, function(whole, frac, space, hemi)
       if HEMISPHERES[hemi:lower()] then return whole .. "." .. frac .. space .. hemi end
       return nil
     end)
   end
-  text = text:gsub("%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
-  text = text:gsub("%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
+  where("a thousand", "%f[%a][Aa] ([Tt][Hh][Oo][Uu][Ss][Aa][Nn][Dd])%f[%A]", "one %1")
+  where("a hundred", "%f[%a][Aa] ([Hh][Uu][Nn][Dd][Rr][Ee][Dd])%f[%A]", "one %1")
   -- ("set conflict vertical zone thousand feet": "thousand feet" after a word that is no number, nor a word
   -- heard for a digit ("to thousand"), is one thousand feet)
-  if text:find("housand", 1, true) then
-    text = text:gsub("%f[%a](%a+)(%s+)([Tt]housand)(%s+)(%a+)", function(w, s1, th, s2, unit)
-      local lw, u = w:lower(), unit:lower()
-      if (u == "feet" or u == "ft" or u == "foot") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
-          and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw] then
-        return w .. s1 .. "one " .. th .. s2 .. unit
-      end
-      return nil
-    end)
-  end
+  where("housand", "%f[%a](%a+)(%s+)([Tt]housand)(%s+)(%a+)", function(w, s1, th, s2, unit)
+    local lw, u = w:lower(), unit:lower()
+    if (u == "feet" or u == "ft" or u == "foot") and not NUMBER_WORDS[lw] and not lexicon.digit_homophones[lw]
+        and not lexicon.foreign_digits[lw] and not lexicon.thousand_counted[lw] then
+      return w .. s1 .. "one " .. th .. s2 .. unit
+    end
+    return nil
+  end)
   -- ("another thousand feet", "a further hundred feet": one more of it)
-  text = text:gsub("%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
-    :gsub("%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2"):gsub("%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
-  text = text:gsub("%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
-  text = text:gsub("%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
+  where("another thousand", "%f[%a]([Aa]nother) ([Tt]housand)%f[%A]", "%1 one %2")
+  where("another hundred", "%f[%a]([Aa]nother) ([Hh]undred)%f[%A]", "%1 one %2")
+  where("further thousand", "%f[%a]([Ff]urther) ([Tt]housand)%f[%A]", "%1 one %2")
+  where("further hundred", "%f[%a]([Ff]urther) ([Hh]undred)%f[%A]", "%1 one %2")
+  where("flightlevel", "%f[%a][Ff][Ll][Ii][Gg][Hh][Tt]([Ll][Ee][Vv][Ee][Ll])%f[%A]", "flight %1")
+  where("call", "%f[%a]([Cc][Aa][Ll][Ll])[%- ]([Ss][Ii][Gg][Nn])%f[%A]", "%1%2")  -- "call sign"
   -- "Egyptair triple seven", "double two": a digit said twice or three times
-  text = text:gsub("%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
+  where("double", "%f[%a]([Dd][Oo][Uu][Bb][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
     if DIGIT_WORDS[d:lower()] then return d .. " " .. d end
     return nil
-  end):gsub("%f[%a]([Tt][Rr][Ii][Pp][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
+  end)
+  where("triple", "%f[%a]([Tt][Rr][Ii][Pp][Ll][Ee])%s+(%a+)%f[%A]", function(_, d)
     if DIGIT_WORDS[d:lower()] then return d .. " " .. d .. " " .. d end
     return nil
   end)
-  text = text:gsub("%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
-  text = text:gsub("%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
-  text = text:gsub("%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
-  text = text:gsub("(%d)\xC2\xB0(%s)", "%1 degrees%2"):gsub("(%d)\xC2\xB0$", "%1 degrees")
+  where("ray", "%f[%a]([Xx])[%- ]([Rr][Aa][Yy])%f[%A]", "%1%2")
+  where("trot", "%f[%a]([Ff][Oo][Xx])[%- ]([Tt][Rr][Oo][Tt])%f[%A]", "%1%2")
+  where("nine her", "%f[%a]([Nn][Ii][Nn])[Ee] [Hh][Ee][Rr]%f[%A]", "%1er")
+  where("\xC2\xB0", "(%d)\xC2\xB0(%s)", "%1 degrees%2")
+  where("\xC2\xB0", "(%d)\xC2\xB0$", "%1 degrees")
   -- a change typed with its sign and unit ("+20 kts", "-1000 ft"): that many faster/slower, up/down
-  text = text:gsub("%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]", function(sign, n, unit)
+  where("[%+%-]%d", "%f[^%s]([%+%-])(%d+)%s*(%a+)%f[%A]", function(sign, n, unit)
     local u = unit:lower()
     if u == "kts" or u == "kt" or u == "knots" then
       return n .. " " .. unit .. (sign == "+" and " faster" or " slower")
@@ -1100,7 +1146,7 @@ local function written_forms(text)
   -- the same change typed with no unit straight after the value's name ("speed +20", "alt -2000", "climb
   -- +3000", "heading +20"): knots, feet, or degrees of a turn to the right (+) or left (-)
   -- ("vertical speed -2000" is a rate, its sign its direction)
-  text = text:gsub("()%f[%a](%a+)(%s+)([%+%-])(%d+)%f[^%w%.]", function(at, name, space, sign, n)
+  where("[%+%-]%d", "()%f[%a](%a+)(%s+)([%+%-])(%d+)%f[^%w%.]", function(at, name, space, sign, n)
     local kind = SIGNED_CHANGE[name:lower()]
     if kind == "speed" and (text:sub(1, at - 1):match("(%a+)%s*$") or ""):lower() == "vertical" then return nil end
     if kind == "speed" then return name .. space .. n .. " kt" .. (sign == "+" and " faster" or " slower") end
@@ -1113,29 +1159,37 @@ local function written_forms(text)
   -- an amount with its unit and "more"/"less" after it, or "gain"/"lose" before it ("20 kt less", "lose 4000
   -- ft", "gain 1000 feet"): that many faster/slower, up/down
   -- ("2000 ft more or less", "20 kt less than ...": an estimate or a bound, left as typed)
-  text = text:gsub("%f[%w](%d+)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
-    local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
-    local nx = (text:match("^%s+(%a+)", at) or ""):lower()
-    if not (kind and dir) or nx == "or" or nx == "than" then return nil end
-    if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
-    return (dir > 0 and "up " or "down ") .. n .. space .. unit
-  end):gsub("%f[%a](%a+)(%s+)(%d+)(%s*)(%a+)%f[%A]", function(verb, space, n, space2, unit)
-    local dir, kind = GAIN_LOSE[verb:lower()], UNIT_CHANGE[unit:lower()]
-    if not (kind and dir) then return nil end
-    if kind == "speed" then return n .. space2 .. unit .. (dir > 0 and " faster" or " slower") end
-    return (dir > 0 and "up" or "down") .. space .. n .. space2 .. unit
-  end)
+  if low:find("more", 1, true) or low:find("less", 1, true) then
+    text = text:gsub("%f[%w](%d+)(%s*)(%a+)%s+(%a+)%f[%A]()", function(n, space, unit, word, at)
+      local kind, dir = UNIT_CHANGE[unit:lower()], MORE_LESS[word:lower()]
+      local nx = (text:match("^%s+(%a+)", at) or ""):lower()
+      if not (kind and dir) or nx == "or" or nx == "than" then return nil end
+      if kind == "speed" then return n .. space .. unit .. (dir > 0 and " faster" or " slower") end
+      return (dir > 0 and "up " or "down ") .. n .. space .. unit
+    end)
+    low = text:lower()
+  end
+  if low:find("gain", 1, true) or low:find("lose", 1, true) then
+    text = text:gsub("%f[%a](%a+)(%s+)(%d+)(%s*)(%a+)%f[%A]", function(verb, space, n, space2, unit)
+      local dir, kind = GAIN_LOSE[verb:lower()], UNIT_CHANGE[unit:lower()]
+      if not (kind and dir) then return nil end
+      if kind == "speed" then return n .. space2 .. unit .. (dir > 0 and " faster" or " slower") end
+      return (dir > 0 and "up" or "down") .. space .. n .. space2 .. unit
+    end)
+    low = text:lower()
+  end
   -- "a 180 heading", "the 090 heading": a heading of three digits said before its name
-  text = text:gsub("%f[%a]([Aa]n?%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
-    :gsub("%f[%a]([Tt]he%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
+  where("%d%s+heading", "%f[%a]([Aa]n?%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
+  where("%d%s+heading", "%f[%a]([Tt]he%s+)(%d%d%d)%s+([Hh][Ee][Aa][Dd][Ii][Nn][Gg])%f[%A]", "%1%3 %2")
   -- "45.6,-122.6": a latitude and longitude in decimal degrees typed with a comma and no space between them
-  text = text:gsub("%f[%d%-](%-?%d%d?%.%d+),(%-?%d%d?%d?%.%d+)%f[^%w%.]", "%1 %2")
-  return (text:gsub("%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
+  where("%d,", "%f[%d%-](%-?%d%d?%.%d+),(%-?%d%d?%d?%.%d+)%f[^%w%.]", "%1 %2")
+  where("%d %d", "%f[%d](%d%d?%d?) (%d%d%d)%f[%D]()", function(a, b, at)
     if b == "000" or text:sub(at):match("^%s*[Ff][Ee]?[Ee]?[Tt]%f[%A]") or text:sub(at):match("^%s*[Ff][Oo][Oo][Tt]") then
       return a .. b
     end
     return nil
-  end))
+  end)
+  return text
 end
 
 -- ---- the state of one translation ----
@@ -5515,7 +5569,8 @@ end
 -- said apart from its digits ("ryanair 81 JC") when exactly one aircraft's id ends so.
 local function split_ids(text, fleet)
   -- (a registration written in capitals with its hyphen, "D-EABC", "OE-LDA", is the one id, flying or new)
-  text = text:gsub("%f[%w](%u%u?)%-(%u%u%u%u?)%f[%W]", "%1%2")
+  local hyphen = text:find("-", 1, true)
+  if hyphen then text = text:gsub("%f[%w](%u%u?)%-(%u%u%u%u?)%f[%W]", "%1%2") end
   if #fleet == 0 then return text end
   local ids, tails = {}, {}
   for _, a in ipairs(fleet) do
@@ -5527,7 +5582,9 @@ local function split_ids(text, fleet)
     if ids[(a .. b):lower()] then return a .. b end
     return nil
   end
-  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined):gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined)
+  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined)
+  if hyphen then text = text:gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined) end
+  if not next(tails) then return text end
   return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
     if tails[(d .. l):lower()] == 1 then return d .. l end
     return nil
@@ -5612,11 +5669,29 @@ end
 -- has a US registration (N and a digit) ending with them and the prefix fits it (November: any; a type word
 -- without digits: the aircraft's type). Returns the text and, when two aircraft end so or the prefix does not
 -- fit the one that does (a suffix, not the whole id), the question to ask instead, else nil.
+-- G.nickname_heads: the first word of each nickname of two words (types.nicknames), a set
+G.nickname_heads = {}
+for name in pairs(require("translate.types").nicknames) do
+  local head = name:match("^(%S+) ")
+  if head then G.nickname_heads[head] = true end
+end
 local function abbreviated_registrations(text, fleet)
   if #fleet == 0 then return text, nil end
-  local words = {}  -- {text, b, e} of each word
-  for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
   local nicknames = require("translate.types").nicknames
+  -- (the words are read only where one may open a prefix: November or N, a maker, model or nickname, or
+  -- the first word of a nickname of two; else only the bare suffix below is)
+  local prefixed = false
+  for w in text:gmatch("[%w]+") do
+    w = w:lower()
+    if w == "november" or w == "n" or G.type_words()[w] or nicknames[w] or G.nickname_heads[w] then
+      prefixed = true
+      break
+    end
+  end
+  local words = {}  -- {text, b, e} of each word, where a prefix may be said
+  if prefixed then
+    for b, w, e in text:gmatch("()([%w]+)()") do words[#words + 1] = { w:lower(), b, e } end
+  end
   local function fits(prefix, a)
     local id, ty = a.id:upper(), (a.type or ""):upper()
     if prefix == "november" or prefix == "n" then return id:match("^N%d") ~= nil end
@@ -5803,6 +5878,7 @@ local function airline_values(text, fleet)
   end
   -- "Shamrock 1 2 3": a flight number typed digit by digit after its airline's telephony, three or four
   -- single digits in a row, is one number
+  if not text:find("%d %d %d") then return text end
   return (text:gsub("(%f[%a]%a+%s+)(%d[%d%s]*%d)%f[^%d%s]", function(w, run)
     if not AIRLINE_WORDS[w:match("%a+"):lower()] or not run:match("^%d %d %d$") and not run:match("^%d %d %d %d$") then
       return nil
@@ -5946,8 +6022,8 @@ local PLACE_SLOTS = { add = true, append = true, insert = true, dct = true, dtc 
   after = true, before = true, via = true, over = true, cross = true, at = true, ["then"] = true }
 local TYPED_PLACE_NM = 250
 -- patterns finding a word of PLACE_SLOTS as a whole word in " " .. lower-case text .. " "
-local PLACE_SLOT_PATTERNS = {}
-for w in pairs(PLACE_SLOTS) do PLACE_SLOT_PATTERNS[#PLACE_SLOT_PATTERNS + 1] = "%s" .. w .. "%s" end
+local PLACE_SLOT_PATTERNS = {}  -- {word, pattern}
+for w in pairs(PLACE_SLOTS) do PLACE_SLOT_PATTERNS[#PLACE_SLOT_PATTERNS + 1] = { word = w, pattern = "%s" .. w .. "%s" } end
 -- "destination c y v r", "origin boston k b o s": four single letters spelled in a row (none before or after)
 -- that join into an airport's ICAO code the navdata holds (world.airport_class), and no aircraft's id, are
 -- that code
@@ -5975,7 +6051,7 @@ local function typed_places(text, world)
   -- (a name is read only after a word of PLACE_SLOTS: with none said, the words stand as they are)
   local padded, slots = " " .. text:lower() .. " ", false
   for _, p in ipairs(PLACE_SLOT_PATTERNS) do
-    if padded:find(p) then
+    if padded:find(p.word, 1, true) and padded:find(p.pattern) then
       slots = true
       break
     end
@@ -6103,6 +6179,7 @@ end
 M.quoted_words = { frames = set_of(lexicon.quoted_clearance.frames),
   not_frames = set_of(lexicon.quoted_clearance.not_frames) }
 function M.quoted_clearance(text, world)
+  if not text:find('["\226\128\156]') then return nil end  -- (no byte that may open a quote, as the pattern below requires)
   local pre, quoted, post = text:match('^([^"\226]*)["\226\128\156]+([^"\226]+)["\226\128\157]+([^"\226]*)$')
   if not quoted or not quoted:find("%a") then return nil end
   local outside = pre .. " " .. post
@@ -6151,32 +6228,43 @@ function M.translate(text, world)
   world.waypoints = world.waypoints or {}
   local quoted = M.quoted_clearance(text, world)
   if quoted then return quoted end
-  text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents)  -- (UTF-8 Latin-1 letters)
+  if text:find("\xC3", 1, true) then text = text:gsub("[\xC3][\x80-\xBF]", lexicon.accents) end  -- (UTF-8 Latin-1 letters)
   text = numbered_steps(text)
   -- a decimal said with "point" ("42 point 2", "minus 122 point 4", "0 point 5", "mach point 7 8"): the number
   -- written, with one or two digits after the point, its whole part of one or two digits or after "minus" (a
   -- heading's "270 point 5" stays apart, asked)
-  for _, whole in ipairs({ "%f[%w](%d%d?)", "(%f[%a][Mm]inus%s+%d%d%d)" }) do
-    text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
+  if text:find("point", 1, true) then
+    for _, whole in ipairs({ "%f[%w](%d%d?)", "(%f[%a][Mm]inus%s+%d%d%d)" }) do
+      text = text:gsub(whole .. "%s+point%s+(%d)%s+(%d)%f[%D]", "%1.%2%3"):gsub(whole .. "%s+point%s+(%d%d?)%f[%D]", "%1.%2")
+    end
+    text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
   end
-  text = text:gsub("%f[%a]([Mm]ach)%s+point%s+(%d)%s+(%d)%f[%D]", "%1 .%2%3"):gsub("%f[%a]([Mm]ach)%s+point%s+(%d%d)%f[%D]", "%1 .%2")
   -- "at twelve nautical miles from BRA": a distance said after "at" in nautical miles is that many miles (the
   -- letters of "at" and the number before "nautical" are no callsign)
-  text = text:gsub("(%f[%a][Aa][Tt]%s+[%w%.%-]+%s+)[Nn]autical%s+([Mm]iles?%f[%A])", "%1%2")
+  if text:find("autical", 1, true) then
+    text = text:gsub("(%f[%a][Aa][Tt]%s+[%w%.%-]+%s+)[Nn]autical%s+([Mm]iles?%f[%A])", "%1%2")
+  end
   -- punctuation dictated as words: the marks (lexicon.dictated_punctuation)
   for _, d in ipairs(lexicon.dictated_punctuation) do
-    text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)
-      if d.not_before and text:match("^%s*(%a+)", at) == d.not_before then return nil end
-      return d.mark
-    end)
+    -- (only where the text holds the last of the said words, as the pattern requires)
+    if text:find(d.said:match("%S+$"), 1, true) then
+      text = text:gsub("%s+" .. d.said:gsub(" ", "%%s+") .. "%f[%A]()", function(at)
+        if d.not_before and text:match("^%s*(%a+)", at) == d.not_before then return nil end
+        return d.mark
+      end)
+    end
   end
   -- "FL240 -> FL250": an arrow between two levels, from the one to the other
-  text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+  if text:find(">", 1, true) then
+    text = text:gsub("([Ff][Ll]%s?%d%d%d?)%s*[%-=]+>%s*([Ff][Ll]%s?%d%d%d?)", "from %1 to %2")
+  end
   -- "hdg 220 -> 250", "spd 280 -> 250": an arrow between two values after the name of a heading or speed, from
   -- the one to the other
-  text = text:gsub("%f[%w](%a+)(%s*)(%d+)%s*[%-=]+>%s*(%d+)%f[^%w%.]", function(name, space, from, to)
-    if word_set("heading hdg speed spd", 1)[name:lower()] then return name .. space .. "from " .. from .. " to " .. to end
-  end)
+  if text:find(">", 1, true) then
+    text = text:gsub("%f[%w](%a+)(%s*)(%d+)%s*[%-=]+>%s*(%d+)%f[^%w%.]", function(name, space, from, to)
+      if word_set("heading hdg speed spd", 1)[name:lower()] then return name .. space .. "from " .. from .. " to " .. to end
+    end)
+  end
   -- "wind ... 270/25(kt)": a wind written as its direction and speed in knots with a slash between
   if text:lower():find("wind", 1, true) then
     text = text:gsub("%f[%w%.](%d%d%d)/(%d%d?%d?)%s*[Kk]?[Tt]?[Ss]?%f[^%w%.]", "from %1 at %2 knots")
@@ -6187,7 +6275,7 @@ function M.translate(text, world)
     end)
   end
   -- "47.35/15.30": a latitude and longitude in decimal degrees written with a slash between
-  text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2")
+  if text:find("/", 1, true) then text = text:gsub("(%f[%w%.%-]%-?%d+%.%d+)/(%-?%d+%.%d+%f[^%w%.])", "%1 %2") end
   -- "the Transavia's there", "KLM12's already at FL300", "KLM12's at FL350": a name's "'s" before a word of place,
   -- time or level kept is "is"
   if text:find("'s ", 1, true) or text:find("\xE2\x80\x99s ", 1, true) then
@@ -6259,8 +6347,12 @@ function M.translate(text, world)
     end)
   end
   -- "the closest point of approach": an abbreviation's words said out (lexicon.spelled_out), read as it
+  local low = text:lower()
   for _, x in ipairs(SPELLED_OUT) do
-    if text:lower():find(x.words, 1, true) then text = text:gsub(x.pattern, x.short) end
+    if low:find(x.words, 1, true) then
+      text = text:gsub(x.pattern, x.short)
+      low = text:lower()
+    end
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
@@ -6281,10 +6373,13 @@ function M.translate(text, world)
   local two_part = text:match("%f[%d:](%d%d?:[0-5]%d):?%f[^%d:]")
   -- type names with their digits said as words, where traffic is created (random traffic too)
   local lower = text:lower()
+  -- (a word opening a word of the text, or `whole` one; the pattern is tried only where a plain find sees it)
+  local function cue(word, whole)
+    return lower:find(word, 1, true) and lower:find("%f[%a]" .. word .. (whole and "%f[%A]" or ""))
+  end
   -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen")
-  if lower:find("%f[%a]create") or lower:find("%f[%a]spawn") or lower:find("%f[%a]generate")
-      or lower:find("%f[%a]add") or lower:find("%f[%a]mcre") or lower:find("%f[%a]random")
-      or lower:find("%f[%a]new%f[%A]") or lower:find("%f[%a]set up%f[%A]") or lower:find("%f[%a]put%f[%A]") then
+  if cue("create") or cue("spawn") or cue("generate") or cue("add") or cue("mcre") or cue("random")
+      or cue("new", true) or cue("set up", true) or cue("put", true) then
     text = types.plurals(types.spoken(text, TYPES, lexicon.phonetic), TYPES, world.aircraft, lexicon.variant_families)
   end
   local apart

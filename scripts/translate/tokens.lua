@@ -19,6 +19,17 @@ function M.rewrite(text, toks, at)
   return out and table.concat(out, " ") or text
 end
 
+-- string.gsub(text, pattern, repl) run only where `lower`, text in lower case, holds `needle` (a pattern, or
+-- a literal without magic characters, which string.find searches plainly): `needle` states what every match
+-- of `pattern` holds in lower case, so a plain find stands in for a pattern scan of the whole text where it
+-- is absent. Returns the text and its lower case, both current.
+function M.gsub_where(text, lower, needle, pattern, repl)
+  if not lower:find(needle) then return text, lower end
+  local out = text:gsub(pattern, repl)
+  if out == text then return text, lower end
+  return out, out:lower()
+end
+
 -- A value's three digits said one by one and written as numerals apart ("heading 2 7 0", "flight level 1 9 0",
 -- "2 niner zero"): a run of exactly three single digits, numerals or words of `digit_words` (a set of lower-case
 -- words), one at least a numeral, is read as the digits said: its numerals are written as words, which the
