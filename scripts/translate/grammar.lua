@@ -1259,6 +1259,7 @@ local CM_SUBJECTS, CM_OWN, CM_LEADS, CM_LABELS = set_of(COMMENTARY.subjects), se
 local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.determiners)
 local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_of(COMMENTARY.later),
   set_of(COMMENTARY.lead_context)
+COMMENTARY.reason_set = set_of(COMMENTARY.reasons)
 local CM_NEGATION = set_of(lexicon.accounted.negation)
 for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
 -- (a person in the room opens a remark as "we" does: "freeze the sim, trainee needs a break")
@@ -1287,8 +1288,9 @@ end
 -- no value, no place, no aircraft first ("- TOM6RT too"), no instruction word (one after a determiner is
 -- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
--- create a same-level encounter:")
-function G:commentary(b, e, lead, record)
+-- create a same-level encounter:"; `places`: a place named is the remark's, an airport code that is an airline's
+-- too, "- he's inbound to FRA")
+function G:commentary(b, e, lead, record, places)
   if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
   for _, q in ipairs(self:quantities(b, e)) do
     -- ("- this one is the Linate overflight", "- the long-haul one": "one" after a word standing for an aircraft)
@@ -1298,7 +1300,7 @@ function G:commentary(b, e, lead, record)
     local recorded = record and q.kind == "time" and self:word_in(b, q.b, "@record_past")
     if not (pronoun or recorded) then return false end
   end
-  for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
+  for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
   end
   local own = self:word(b, CM_OWN)
@@ -1308,14 +1310,18 @@ function G:commentary(b, e, lead, record)
     if t.kind == "word" then
       local last = x == e - 1 or self.t[x + 1].kind == "punct"
       if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
-          or self:word(x, "@correction") or airline_bare(self, x)
+          or self:word(x, "@correction") or (airline_bare(self, x) and not places)
           or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
         return false
       end
       -- (a word some rule starts an instruction with, before an aircraft, whether or not it starts one
       -- here: "- hold TOM6RT", "- move the easyJet")
       local verb = RULES_BY_WORD[t.text] and self:has_ref(self:word(x + 1, "the") and x + 2 or x + 1, x + 3, "aircraft")
-      if (verb or self:intent_at(x)) and not self:word(x - 1, CM_DETERMINERS) then return false end
+      -- (`places`: a noun after a reason's word is the reason's, "- ride reports")
+      if (verb or self:intent_at(x)) and not self:word(x - 1, CM_DETERMINERS)
+          and not (places and self:word(x - 1, COMMENTARY.reason_set)) then
+        return false
+      end
     end
   end
   return true
@@ -1472,6 +1478,11 @@ function G:in_reason(i)
       elseif punct and t.text == "," and self:word(k + 1, CM_SUBJECTS) and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase")
+        inside = true
+      elseif punct and t.text == "," and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
+          and (instructed(k) or #self:quantities(1, k) > 0)
+          and self:commentary(k + 1, commentary_end(self, k + 1), false, false, true) then
+        -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering": the operational reason, its place too)
         inside = true
       elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
           and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft")

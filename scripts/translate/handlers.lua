@@ -1382,6 +1382,10 @@ function m:settle_callsigns()
         self.unheld[r.b] = true
         r.b = r.b + 1
       end
+    elseif r.kind == "waypoint" and r.e == r.b + 1 and self:word(r.b, "eta") then
+      -- ("DLH458 ETA?": the estimate asked, written in capitals as a place is, G:intent_at reads it)
+      self.unheld = self.unheld or {}
+      self.unheld[r.b] = true
     end
   end
   -- "Austrian 123, AUA123, an A320 ...", "Ryanair 1WT, that's RYR1WT": a callsign said and then written (or

@@ -132,6 +132,9 @@ return {
         "bugged", "buggy", "glitched", "glitchy",
         -- a programmer's look inside the simulation ("debug info on WJA661": its state shown)
         "debug", "debugging", "coffee", "lunch", "brb",
+        -- a telephone call taken, the reason for a pause or a break in the request ("pause the sim, phone",
+        -- "sorry phone - ...")
+        "phone",
         -- a pilot of an online network gone, given as the reason for removing the aircraft ("dc'd", "he's
         -- disconnected", "went afk", "timed out"; "pilot" with them: courtesy_phrases)
         "dc'd", "dcd", "dced", "disconnected", "disconnect", "disconnects", "afk", "offline", "logged", "timed",
@@ -668,6 +671,12 @@ return {
                          "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too",
                          "participant", "participants", "experimenter", "researcher" },
           own = { "we", "i", "we're", "we'll", "we'd", "i'm", "i'll", "i'd" },
+          -- the operational reason for a complete instruction, said after a comma ("he's inbound to FRA",
+          -- "sequencing into DXB", "DFW metering", "ride reports", "wx at DFW"): a clause holding one of these is
+          -- set aside even when it names a place, which is the reason's, never a place or condition of the instruction
+          reasons = { "inbound", "sequencing", "sequence", "metering", "flow", "spacing", "ride", "rides",
+                      "reports", "weather", "wx", "closed", "closure", "congestion", "sick", "medical", "arrivals",
+                      "departures" },
           while_words = { "while", "whilst" },
           later = { "later", "afterwards", "afterward" },
           lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },

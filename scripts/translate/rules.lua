@@ -1449,6 +1449,8 @@ return function(intent, rule, words)
   end }
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
+  -- "DLH458 ETA?", "eta QTR1015": the estimate asked with the aircraft alone, answered by its state (POS)
+  rule { "eta", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", when = shown_after }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
   -- "place EZY45, A319, at 38.4 N 6.6 W heading 290", "place a Ryanair, RYR5GH, B738, over LOREL ...": a

@@ -8629,3 +8629,28 @@ do
   asked(ex("SAS31 turn left 10, and the 737 turn left 10 as well"), "two 737s flying")
   asked(ex("SAS31 turn left 10, and the 777 as well"), "no instruction word after the type")
 end
+
+-- Cycle 45 (s103b): the operational reason said after a comma behind a complete instruction ("inbound to ...",
+-- "sequencing into ...", "<airport> metering", "ride reports") is set aside, the place it names too; a place
+-- after a comma with no reason's word, or with "at" and no reason, is still asked
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE SAS31 A320 55.0 10.0 090 FL330 280" })
+  check_eq(ex("KLM77 descend FL90, he's inbound to AMS"), "ALT KLM77 FL90")
+  check_eq(ex("KLM77 reduce 230, sequencing into LHR"), "SPD KLM77 230")
+  check_eq(ex("KLM77 slow to 220, CDG metering"), "SPD KLM77 220")
+  check_eq(ex("SAS31 down to FL310, ride reports"), "ALT SAS31 FL310")
+  asked(ex("KLM77 descend FL90, AMS"), "a place after a comma with no reason word")
+  asked(ex("KLM77 descend FL90, SAS31 inbound"), "an aircraft in the clause")
+  asked(ex("KLM77 descend FL90, flow restricted to 240"), "a value in the clause")
+end
+
+-- Cycle 45 (s103b): a telephone call as the reason for a pause or a break ("pause the sim, phone"); "ETA" with
+-- the aircraft alone asks its state (POS)
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("freeze the sim, phone"), "HOLD")
+  check_eq(ex("sorry phone - KLM77 climb FL170"), "ALT KLM77 FL170")
+  check_eq(ex("KLM77 ETA?"), "POS KLM77")
+  check_eq(ex("eta klm77"), "POS KLM77")
+  asked(ex("ETA"), "no aircraft named")
+end
