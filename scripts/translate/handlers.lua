@@ -1198,6 +1198,11 @@ function m:type_said(i)
     end
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
+  -- ("the 350", "the 321": an Airbus family's number said after "the" without its letter, when it names no
+  -- callsign heard)
+  if t.kind == "number" and self:word(i - 1, "the") and fams["a" .. t.text] and not self:has_ref(i, i + 1, "aircraft") then
+    return set_of(fams["a" .. t.text]), i + 1
+  end
   if t.kind ~= "word" then return nil end
   local nicknames = require("translate.types").nicknames
   local two = self.t[i + 1] and nicknames[t.text .. " " .. self.t[i + 1].text]  -- ("the King Air")
@@ -1386,6 +1391,16 @@ function m:settle_callsigns()
       -- ("DLH458 ETA?": the estimate asked, written in capitals as a place is, G:intent_at reads it)
       self.unheld = self.unheld or {}
       self.unheld[r.b] = true
+    end
+  end
+  -- ("get rid of the Condor" with the VOR RID in the scene: "rid" between "get" and "of" is the verb, no place)
+  for k = #self.refs, 1, -1 do
+    local r = self.refs[k]
+    if r.kind == "waypoint" and r.e == r.b + 1 and self:word(r.b, "rid") and self:word(r.b - 1, "get got getting gets")
+        and self:word(r.e, "of") then
+      self.unheld = self.unheld or {}
+      self.unheld[r.b] = true
+      table.remove(self.refs, k)
     end
   end
   -- "Austrian 123, AUA123, an A320 ...", "Ryanair 1WT, that's RYR1WT": a callsign said and then written (or

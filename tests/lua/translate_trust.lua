@@ -8654,3 +8654,28 @@ do
   check_eq(ex("eta klm77"), "POS KLM77")
   asked(ex("ETA"), "no aircraft named")
 end
+
+-- Cycle 45 (s103b): an Airbus family's number after "the" without its letter ("the 350", "the 321") describes the
+-- one aircraft of that family flying, beside a level of the same digits; two of the family, or "to the 350", are
+-- not read so
+do
+  local _, ex = scene({ "CRE DLH47 A359 50.0 8.0 045 FL370 280", "CRE UAE9 A388 50.2 8.7 300 FL360 290",
+    "CRE DLH9 A321 50.1 8.9 270 FL120 250", "CRE BER2 A21N 50.4 8.1 090 FL140 250" })
+  check_eq(ex("the 350 descend to FL350"), "ALT DLH47 FL350")
+  check_eq(ex("the 380 level 310"), "ALT UAE9 FL310")
+  check_eq(ex("slow the 380 down, 270"), "SPD UAE9 270")
+  asked(ex("the 321 climb 160"), "two A321 family aircraft flying")
+  asked(ex("climb to the 350"), "a level after 'to the', no aircraft")
+end
+
+-- Cycle 45 (s103b): "the Qatar" (the airline's name, its telephony Qatari) describes its one aircraft flying;
+-- "get rid of" stays the removal where a navaid RID is in the scene
+do
+  local _, ex = scene({ "DEFWPT RID 50.0 8.5", "CRE QTR15 A359 25.6 54.6 120 FL380 280",
+    "CRE CFG1 A20N 50.5 8.6 180 FL340 270", "CRE CFG2 A20N 50.6 8.7 180 FL320 270", "ADDWPT CFG1 RID" })
+  check_eq(ex("the Qatar down to 360"), "ALT QTR15 FL360")
+  check_eq(ex("get rid of CFG2"), "DEL CFG2")
+  check_eq(ex("CFG1 direct RID"), "DIRECT CFG1 RID")
+  asked(ex("get rid of the condor"), "two Condor aircraft flying")
+  asked(ex("Qatar descend 360"), "an airline called without its number")
+end
