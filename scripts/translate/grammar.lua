@@ -3877,6 +3877,43 @@ function G:side_by_side_callsigns()
   end
 end
 
+-- A bare number closing a list of instructions for one aircraft, after a comma or "then" ("direct FINGR, FL170,
+-- 250", "speed 210 then 7000"), is the one value that the instructions said leave it able to be: an altitude in
+-- feet (whole hundreds, 1000 to 45000: no heading, speed or flight level is so large) when no level was given,
+-- a speed (100 to 400 kt) when a level and a direct-to or heading were given and no speed. Any other such
+-- number stays a leftover, asked about. (Another leftover said first stands: nothing is read then.)
+G.list_commands = { ALT = true, SPD = true, HDG = true, DIRECT = true, ADDWPT = true, VS = true }
+function G:list_value()
+  local LIST_COMMANDS = G.list_commands
+  if self.leftover and not self.leftover:match("^%d+$") then return end
+  local id
+  local said = {}
+  for _, line in ipairs(self.out) do
+    local cmd, acid = line:match("^(%u+) (%S+)")
+    if not (acid and LIST_COMMANDS[cmd]) or (id and acid ~= id) then return end
+    id, said[cmd] = acid, true
+  end
+  if not id then return end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    local before, after = self.t[q.b - 1], self.t[q.e]
+    if q.kind == "plain" and not self.taken[q.b] and q.number and not q.number.decimal
+        and (not self.leftover or self.leftover == self:raw(q.b, q.e))
+        and before and (before.text == "," or self:word(q.b - 1, "then"))
+        and (not after or after.kind == "punct") and self:has_ref(1, q.b, "aircraft") then
+      local line
+      if not said.ALT and q.value >= 1000 and q.value <= 45000 and q.value % 100 == 0 then
+        line = string.format("ALT %s %d", id, q.value)
+      elseif said.ALT and (said.DIRECT or said.HDG) and not said.SPD and q.value >= 100 and q.value <= 400 then
+        line = string.format("SPD %s %d", id, q.value)
+      end
+      if not line then return end
+      self:take(q)
+      self.out[#self.out + 1], self.leftover = line, nil
+      return
+    end
+  end
+end
+
 -- A time, position, level or speed said that no command carries ("in 5
 -- minutes, delete TEST03": a delay the grammar does not give; "define A1 at
 -- 52.0 4.0 and A2 at 52.0 5.0": a second waypoint not made) is a leftover,
@@ -6388,6 +6425,7 @@ function M.translate(text, world)
   if not g.ask then g:dangling_correction() end
   if not g.ask and #g.out > 0 then g:dangling_value_name() end
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
+  if not g.ask then g:list_value() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end

@@ -8679,3 +8679,27 @@ do
   asked(ex("get rid of the condor"), "two Condor aircraft flying")
   asked(ex("Qatar descend 360"), "an airline called without its number")
 end
+
+-- Cycle 45 (s103b): a rate in whole hundreds straight after "at" following a flight level said bare ("descend 340
+-- at 1500") is the vertical speed, as after "FL340"; a number out of the rates' range there is still asked
+do
+  local _, ex = scene({ "CRE QTR15 A359 25.6 54.6 120 FL380 280" })
+  check_eq(ex("QTR15 descend 340 at 1500"), "ALT QTR15 FL340 1500")
+  check_eq(ex("QTR15 M.80, descend 320 at 2000"), "SPD QTR15 M0.8 ; ALT QTR15 FL320 2000")
+  asked(ex("QTR15 descend 340 at 15000"), "no rate of that size")
+end
+
+-- Cycle 45 (s103b): a bare number closing a list of one aircraft's instructions after a comma or "then" is the one
+-- value left it: feet with no level given ("speed 210 then 7000"), a speed after a level and a direct-to or
+-- heading ("direct FINGR, FL170, 250"); where a heading or a speed both remain, or a level was given, it is asked
+do
+  local _, ex = scene({ "DEFWPT FINGR 33.0 -97.0", "CRE SWA38 B737 33.0 -96.6 270 FL190 270",
+    "CRE ENY35 E75L 32.6 -97.6 045 8000 230", "ADDWPT SWA38 FINGR" })
+  check_eq(ex("SWA38 direct FINGR, FL170, 250"), "DIRECT SWA38 FINGR ; ALT SWA38 FL170 ; SPD SWA38 250")
+  check_eq(ex("SWA38 heading 240, FL170, 260"), "HDG SWA38 240 ; ALT SWA38 FL170 ; SPD SWA38 260")
+  check_eq(ex("ENY35 speed 210 then 6000"), "SPD ENY35 210 ; ALT ENY35 6000")
+  asked(ex("SWA38 FL170, 250"), "a heading or a speed")
+  asked(ex("SWA38 descend FL170, 2000"), "a level given: a rate or another level")
+  asked(ex("ENY35 speed 210, 070"), "a heading or a level")
+  asked(ex("SWA38 direct FINGR, FL170, speed 250, 7000"), "a level given")
+end
