@@ -982,6 +982,8 @@ local function written_forms(text)
   end
   -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
   text = text:gsub("%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
+  -- "whats" typed without its apostrophe is "what's" ("whats DERLA's position")
+  if text:find("[Hh][Aa][Tt][Ss]") then text = text:gsub("%f[%a]([Ww])[Hh][Aa][Tt][Ss]%f[%A]", "%1hat's") end
   -- "realtime" written as one word
   text = text:gsub("%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash

@@ -8703,3 +8703,19 @@ do
   asked(ex("ENY35 speed 210, 070"), "a heading or a level")
   asked(ex("SWA38 direct FINGR, FL170, speed 250, 7000"), "a level given")
 end
+
+-- Cycle 45 (s103b): "drag X to LAT LON ..." moves the aircraft (as "drop X at" does); "speed x10" opening the request
+-- alone is the clock's rate; "whats" typed without its apostrophe is "what's"; the aircraft's or the simulation's
+-- ability ("if the sim lets him", "if performance allows") is courtesy, as "if able"
+do
+  local _, ex = scene({ "DEFWPT DERLA 25.0 55.0", "CRE SWA38 B737 33.0 -96.6 270 FL190 270" })
+  check_eq(ex("drag SWA38 to 33.1 -96.9 FL180 heading 270"), "MOVE SWA38 33.1 -96.9 FL180 270")
+  check_eq(ex("drag SWA38 to FL180"), "ALT SWA38 FL180")
+  check_eq(ex("speed x10"), "DTMULT 10")
+  asked(ex("SWA38 speed x10"), "an aircraft's speed with no value")
+  check_eq(ex("whats DERLA's position"), "POS DERLA")
+  check_eq(ex("whats SWA38 doing"), "POS SWA38")
+  check_eq(ex("SWA38 up to 390 if the sim lets him"), "ALT SWA38 FL390")
+  check_eq(ex("SWA38 climb FL390 if performance allows"), "ALT SWA38 FL390")
+  asked(ex("SWA38 climb FL390 if DERLA"), "a place after 'if'")
+end
