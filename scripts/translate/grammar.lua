@@ -1482,9 +1482,11 @@ function G:in_reason(i)
         -- ("Fast-forward 20 minutes, we only care about the descent phase")
         inside = true
       elseif punct and t.text == "," and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
+          and not self:word_in(k + 1, commentary_end(self, k + 1), "from")
           and (instructed(k) or #self:quantities(1, k) > 0)
           and self:commentary(k + 1, commentary_end(self, k + 1), false, false, true) then
-        -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering": the operational reason, its place too)
+        -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering": the operational reason, its place too;
+        -- "inbound from Vigo" names where the aircraft comes from, no reason)
         inside = true
       elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
           and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft")

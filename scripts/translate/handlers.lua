@@ -1200,7 +1200,8 @@ function m:type_said(i)
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
   -- ("the 350", "the 321": an Airbus family's number said after "the" without its letter, when it names no
   -- callsign heard)
-  if t.kind == "number" and self:word(i - 1, "the") and fams["a" .. t.text] and not self:has_ref(i, i + 1, "aircraft") then
+  if t.kind == "number" and self:word(i - 1, "the") and fams["a" .. t.text]
+      and not self:has_ref(i, i + 1, "aircraft") then
     return set_of(fams["a" .. t.text]), i + 1
   end
   if t.kind ~= "word" then return nil end

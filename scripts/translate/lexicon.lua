@@ -678,6 +678,7 @@ return {
           -- the operational reason for a complete instruction, said after a comma ("he's inbound to FRA",
           -- "sequencing into DXB", "DFW metering", "ride reports", "wx at DFW"): a clause holding one of these is
           -- set aside even when it names a place, which is the reason's, never a place or condition of the instruction
+          -- (one with "from" names where the aircraft comes from: asked)
           reasons = { "inbound", "sequencing", "sequence", "metering", "flow", "spacing", "ride", "rides",
                       "reports", "weather", "wx", "closed", "closure", "congestion", "sick", "medical", "arrivals",
                       "departures" },

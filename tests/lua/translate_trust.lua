@@ -8642,6 +8642,7 @@ do
   asked(ex("KLM77 descend FL90, AMS"), "a place after a comma with no reason word")
   asked(ex("KLM77 descend FL90, SAS31 inbound"), "an aircraft in the clause")
   asked(ex("KLM77 descend FL90, flow restricted to 240"), "a value in the clause")
+  asked(ex("KLM77 descend FL90, inbound from Vigo"), "where it comes from: no reason")
 end
 
 -- Cycle 45 (s103b): a telephone call as the reason for a pause or a break ("pause the sim, phone"); "ETA" with
