@@ -681,7 +681,7 @@ return {
           -- (one with "from" names where the aircraft comes from: asked)
           reasons = { "inbound", "sequencing", "sequence", "metering", "flow", "spacing", "ride", "rides",
                       "reports", "weather", "wx", "closed", "closure", "congestion", "sick", "medical", "arrivals",
-                      "departures" },
+                      "departures", "turbulence", "chop", "choppy", "bumpy", "icing" },
           while_words = { "while", "whilst" },
           later = { "later", "afterwards", "afterward" },
           lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },

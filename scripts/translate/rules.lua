@@ -2096,6 +2096,12 @@ return function(intent, rule, words)
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }
+  -- "UAE45 step down to FL340, turbulence", "... for turbulence": with an aircraft named, turbulence is its reason
+  -- or its situation, no switch of the simulation's noise (unless switched: "UAE45 climb, and turbulence on")
+  rule { "turbulence", false, when = function(g, i)
+    return g:has_ref(1, #g.t + 1, "aircraft")
+      and not g:word_in(math.max(1, i - 3), i + 4, "on off enable disable switch activate deactivate noise")
+  end }
   rule { "turbulence noise", "noise" }
 
   -- shapes and the deletion area ("in the area" alone names no area)

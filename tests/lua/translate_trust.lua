@@ -8720,3 +8720,14 @@ do
   check_eq(ex("SWA38 climb FL390 if performance allows"), "ALT SWA38 FL390")
   asked(ex("SWA38 climb FL390 if DERLA"), "a place after 'if'")
 end
+
+-- Cycle 45 (s103b): turbulence said beside an instruction to a named aircraft is its reason ("..., turbulence",
+-- "for turbulence"), no switch of the simulation's noise; said alone, or switched, it stays NOISE
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("KLM77 descend FL130, turbulence"), "ALT KLM77 FL130")
+  check_eq(ex("KLM77 descend FL130 for turbulence"), "ALT KLM77 FL130")
+  check_eq(ex("KLM77 descend FL130, moderate chop"), "ALT KLM77 FL130")
+  check_eq(ex("turbulence on"), "NOISE ON")
+  check_eq(ex("switch off the turbulence"), "NOISE OFF")
+end
