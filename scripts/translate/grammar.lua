@@ -3652,9 +3652,10 @@ function G:at_waypoint(s, spec)
       end
       for _, q in ipairs(said) do
         -- ("cross BEBEX at 6000": after a crossing, a bare number in hundreds of feet, 1000 or more, is a level)
-        -- (so is one after a climb or descent: "at MIRSI descend 4000", as the climb or descent alone reads it)
+        -- (so is one after a climb or descent: "at MIRSI descend 4000", as the climb or descent alone reads it,
+        -- and one to "be at": "be at 15000 at ANVIX")
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)
-            or ((crossed or s.intent == "alt") and q.kind == "plain" and q.value >= 1000 and q.value <= 60000
+            or ((crossed or be_at or s.intent == "alt") and q.kind == "plain" and q.value >= 1000 and q.value <= 60000
               and q.value % 100 == 0 and not self:word(q.b - 1, "speed spd"))) then
           alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"

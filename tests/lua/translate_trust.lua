@@ -8731,3 +8731,12 @@ do
   check_eq(ex("turbulence on"), "NOISE ON")
   check_eq(ex("switch off the turbulence"), "NOISE OFF")
 end
+
+-- Cycle 45 (s103b): a bare number of feet (whole hundreds, 1000 or more) to "be at" by a waypoint of the route is
+-- the crossing's level, as after "cross"; a bare 250 there (a speed or FL250) is asked
+do
+  local _, ex = scene({ "DEFWPT ANVIX 25.4 55.2", "CRE FDB21 B38M 25.3 54.8 090 FL220 280", "ADDWPT FDB21 ANVIX" })
+  check_eq(ex("FDB21 be at 15000 at ANVIX"), "AT FDB21 ANVIX ALT 15000")
+  check_eq(ex("FDB21 should be at 16000 at ANVIX"), "AT FDB21 ANVIX ALT 16000")
+  asked(ex("FDB21 be at 250 at ANVIX"), "a speed or a level")
+end
