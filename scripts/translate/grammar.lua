@@ -1024,6 +1024,8 @@ local function written_forms(text)
   end
   -- "ff 2m": minutes after fast-forward's abbreviation (no metres of time)
   where("ff", "%f[%w]([Ff][Ff]%s+%d+%.?%d*)%s?[Mm]%f[%W]", "%1 min")
+  -- "whats" typed without its apostrophe is "what\'s" ("whats DERLA\'s position")
+  where("whats", "%f[%a]([Ww])[Hh][Aa][Tt][Ss]%f[%A]", "%1hat\'s")
   -- "realtime" written as one word
   where("realtime", "%f[%a]([Rr][Ee][Aa][Ll])([Tt][Ii][Mm][Ee])%f[%A]", "%1 %2")
   -- "v/s 2500 down": the vertical speed's abbreviation written with a slash
@@ -1313,6 +1315,7 @@ local CM_SUBJECTS, CM_OWN, CM_LEADS, CM_LABELS = set_of(COMMENTARY.subjects), se
 local CM_BLOCKS, CM_DETERMINERS = set_of(COMMENTARY.blocks), set_of(COMMENTARY.determiners)
 local CM_WHILE, CM_LATER, CM_LEAD_CONTEXT = set_of(COMMENTARY.while_words), set_of(COMMENTARY.later),
   set_of(COMMENTARY.lead_context)
+COMMENTARY.reason_set = set_of(COMMENTARY.reasons)
 local CM_NEGATION = set_of(lexicon.accounted.negation)
 for _, w in ipairs(lexicon.accounted.condition) do CM_NEGATION[w] = true end
 -- (a person in the room opens a remark as "we" does: "freeze the sim, trainee needs a break")
@@ -1341,8 +1344,9 @@ end
 -- no value, no place, no aircraft first ("- TOM6RT too"), no instruction word (one after a determiner is
 -- a noun: "the turn model"), none of commentary.blocks, "too" or "as well" at its end, and no negation or
 -- condition unless it opens with commentary.own. (`lead`: a lead-in before a colon, "same" in it aside: "To
--- create a same-level encounter:")
-function G:commentary(b, e, lead, record)
+-- create a same-level encounter:"; `places`: a place named is the remark's, an airport code that is an airline's
+-- too, "- he's inbound to FRA")
+function G:commentary(b, e, lead, record, places)
   if b >= e or self:has_ref(b, b + 1, "aircraft") then return false end
   for _, q in ipairs(self:quantities(b, e)) do
     -- ("- this one is the Linate overflight", "- the long-haul one": "one" after a word standing for an aircraft)
@@ -1352,7 +1356,7 @@ function G:commentary(b, e, lead, record)
     local recorded = record and q.kind == "time" and self:word_in(b, q.b, "@record_past")
     if not (pronoun or recorded) then return false end
   end
-  for _, r in ipairs(self:refs_in(b, e, "waypoint")) do
+  for _, r in ipairs(places and {} or self:refs_in(b, e, "waypoint")) do
     if not self:word(r.b, "@not_names") then return false end
   end
   local own = self:word(b, CM_OWN)
@@ -1362,14 +1366,18 @@ function G:commentary(b, e, lead, record)
     if t.kind == "word" then
       local last = x == e - 1 or self.t[x + 1].kind == "punct"
       if (CM_BLOCKS[t.text] and not (lead and t.text == "same")) or (not own and CM_NEGATION[t.text])
-          or self:word(x, "@correction") or airline_bare(self, x)
+          or self:word(x, "@correction") or (airline_bare(self, x) and not places)
           or (last and (t.text == "too" or (t.text == "well" and self:word(x - 1, "as")))) then
         return false
       end
       -- (a word some rule starts an instruction with, before an aircraft, whether or not it starts one
       -- here: "- hold TOM6RT", "- move the easyJet")
       local verb = RULES_BY_WORD[t.text] and self:has_ref(self:word(x + 1, "the") and x + 2 or x + 1, x + 3, "aircraft")
-      if (verb or self:intent_at(x)) and not self:word(x - 1, CM_DETERMINERS) then return false end
+      -- (`places`: a noun after a reason's word is the reason's, "- ride reports")
+      if (verb or self:intent_at(x)) and not self:word(x - 1, CM_DETERMINERS)
+          and not (places and self:word(x - 1, COMMENTARY.reason_set)) then
+        return false
+      end
     end
   end
   return true
@@ -1526,6 +1534,13 @@ function G:in_reason(i)
       elseif punct and t.text == "," and self:word(k + 1, CM_SUBJECTS) and instructed(k)
           and self:commentary(k + 1, commentary_end(self, k + 1)) then
         -- ("Fast-forward 20 minutes, we only care about the descent phase")
+        inside = true
+      elseif punct and t.text == "," and self:word_in(k + 1, commentary_end(self, k + 1), COMMENTARY.reason_set)
+          and not self:word_in(k + 1, commentary_end(self, k + 1), "from")
+          and (instructed(k) or #self:quantities(1, k) > 0)
+          and self:commentary(k + 1, commentary_end(self, k + 1), false, false, true) then
+        -- ("reduce 260, sequencing into DXB", "slow to 210, DFW metering": the operational reason, its place too;
+        -- "inbound from Vigo" names where the aircraft comes from, no reason)
         inside = true
       elseif punct and t.text == "," and self:word(k + 1, "@aside_comments") and instructed(k)
           and not self:has_ref(k + 1, commentary_end(self, k + 1), "aircraft")
@@ -3691,9 +3706,10 @@ function G:at_waypoint(s, spec)
       end
       for _, q in ipairs(said) do
         -- ("cross BEBEX at 6000": after a crossing, a bare number in hundreds of feet, 1000 or more, is a level)
-        -- (so is one after a climb or descent: "at MIRSI descend 4000", as the climb or descent alone reads it)
+        -- (so is one after a climb or descent: "at MIRSI descend 4000", as the climb or descent alone reads it,
+        -- and one to "be at": "be at 15000 at ANVIX")
         if not alt and (q.kind == "alt" or (q.kind == "plain" and q.number.thousand)
-            or ((crossed or s.intent == "alt") and q.kind == "plain" and q.value >= 1000 and q.value <= 60000
+            or ((crossed or be_at or s.intent == "alt") and q.kind == "plain" and q.value >= 1000 and q.value <= 60000
               and q.value % 100 == 0 and not self:word(q.b - 1, "speed spd"))) then
           alt = q
         elseif not spd and (q.kind == "speed" or q.kind == "mach"
@@ -3916,6 +3932,43 @@ function G:side_by_side_callsigns()
         return
       end
       prev = r
+    end
+  end
+end
+
+-- A bare number closing a list of instructions for one aircraft, after a comma or "then" ("direct FINGR, FL170,
+-- 250", "speed 210 then 7000"), is the one value that the instructions said leave it able to be: an altitude in
+-- feet (whole hundreds, 1000 to 45000: no heading, speed or flight level is so large) when no level was given,
+-- a speed (100 to 400 kt) when a level and a direct-to or heading were given and no speed. Any other such
+-- number stays a leftover, asked about. (Another leftover said first stands: nothing is read then.)
+G.list_commands = { ALT = true, SPD = true, HDG = true, DIRECT = true, ADDWPT = true, VS = true }
+function G:list_value()
+  local LIST_COMMANDS = G.list_commands
+  if self.leftover and not self.leftover:match("^%d+$") then return end
+  local id
+  local said = {}
+  for _, line in ipairs(self.out) do
+    local cmd, acid = line:match("^(%u+) (%S+)")
+    if not (acid and LIST_COMMANDS[cmd]) or (id and acid ~= id) then return end
+    id, said[cmd] = acid, true
+  end
+  if not id then return end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    local before, after = self.t[q.b - 1], self.t[q.e]
+    if q.kind == "plain" and not self.taken[q.b] and q.number and not q.number.decimal
+        and (not self.leftover or self.leftover == self:raw(q.b, q.e))
+        and before and (before.text == "," or self:word(q.b - 1, "then"))
+        and (not after or after.kind == "punct") and self:has_ref(1, q.b, "aircraft") then
+      local line
+      if not said.ALT and q.value >= 1000 and q.value <= 45000 and q.value % 100 == 0 then
+        line = string.format("ALT %s %d", id, q.value)
+      elseif said.ALT and (said.DIRECT or said.HDG) and not said.SPD and q.value >= 100 and q.value <= 400 then
+        line = string.format("SPD %s %d", id, q.value)
+      end
+      if not line then return end
+      self:take(q)
+      self.out[#self.out + 1], self.leftover = line, nil
+      return
     end
   end
 end
@@ -6501,6 +6554,7 @@ function M.translate(text, world)
   if not g.ask then g:dangling_correction() end
   if not g.ask and #g.out > 0 then g:dangling_value_name() end
   if not g.ask and #g.out > 1 then g:side_by_side_callsigns() end
+  if not g.ask then g:list_value() end
   if not g.ask and not g.leftover then g:unknown_names() end
   if not g.ask and not g.leftover then g:clock_remark() end
   if not g.ask and not g.leftover then g:uncarried() end

@@ -1216,7 +1216,12 @@ function m:type_said(i)
     end
   end
   if t.kind == "number" and fams[t.text] then return set_of(fams[t.text]), i + 1 end
-  -- ("the 321": the digits of one Airbus or Boeing designator, A321)
+  -- ("the 350", "the 321": an Airbus family's number without its letter, the whole family, when it names no
+  -- callsign heard; "the 738": else the digits of one Airbus or Boeing designator, B738)
+  if t.kind == "number" and self:word(i - 1, "the") and fams["a" .. t.text]
+      and not self:has_ref(i, i + 1, "aircraft") then
+    return set_of(fams["a" .. t.text]), i + 1
+  end
   local short = select(3, makers())[t.text]
   if t.kind == "number" and short then return function(d) return d == short or aliases()[d] == short end, i + 1 end
   if t.kind ~= "word" then return nil end
@@ -1403,6 +1408,20 @@ function m:settle_callsigns()
         self.unheld[r.b] = true
         r.b = r.b + 1
       end
+    elseif r.kind == "waypoint" and r.e == r.b + 1 and self:word(r.b, "eta") then
+      -- ("DLH458 ETA?": the estimate asked, written in capitals as a place is, G:intent_at reads it)
+      self.unheld = self.unheld or {}
+      self.unheld[r.b] = true
+    end
+  end
+  -- ("get rid of the Condor" with the VOR RID in the scene: "rid" between "get" and "of" is the verb, no place)
+  for k = #self.refs, 1, -1 do
+    local r = self.refs[k]
+    if r.kind == "waypoint" and r.e == r.b + 1 and self:word(r.b, "rid") and self:word(r.b - 1, "get got getting gets")
+        and self:word(r.e, "of") then
+      self.unheld = self.unheld or {}
+      self.unheld[r.b] = true
+      table.remove(self.refs, k)
     end
   end
   -- "Austrian 123, AUA123, an A320 ...", "Ryanair 1WT, that's RYR1WT": a callsign said and then written (or

@@ -162,8 +162,11 @@ return function(H, f, wrap, compass)
     end
     -- "descend flight level one two zero at one thousand five hundred": a number with no unit straight after
     -- "at" after the level, in whole hundreds within lexicon.rate_after_level (ft/min; no level or speed of
-    -- that size), is the vertical speed
+    -- that size), is the vertical speed; so after a flight level said bare ("descend 340 at 1500": 10 to 600)
     local lvl = with_unit[1]
+    if not lvl and plain[1] and plain[1].value >= 10 and plain[1].value <= 600 then
+      lvl = { fl = true, e = plain[1].e }
+    end
     if not rate and lvl and lvl.fl then
       local at = self:skip_fillers(lvl.e)
       rate = take_rate(function(q)

@@ -132,6 +132,9 @@ return {
         "bugged", "buggy", "glitched", "glitchy",
         -- a programmer's look inside the simulation ("debug info on WJA661": its state shown)
         "debug", "debugging", "coffee", "lunch", "brb",
+        -- a telephone call taken, the reason for a pause or a break in the request ("pause the sim, phone",
+        -- "sorry phone - ...")
+        "phone",
         -- a pilot of an online network gone, given as the reason for removing the aircraft ("dc'd", "he's
         -- disconnected", "went afk", "timed out"; "pilot" with them: courtesy_phrases)
         "dc'd", "dcd", "dced", "disconnected", "disconnect", "disconnects", "afk", "offline", "logged", "timed",
@@ -205,6 +208,10 @@ return {
     courtesy_phrases = { "pull up", "when you get a chance", "when you can", "when you're ready", "when ready",
         "when able", "if able", "if you can", "if you could", "if you would", "if possible",
         "if you don't mind", "if it's not too much trouble", "as soon as possible", "as soon as you can",
+        -- the aircraft's (or the simulation's) ability, as "if able" ("up to 390 if the sim lets him")
+        "if he can", "if she can", "if it can", "if he's able", "if she's able", "if it's able", "if the sim lets him",
+        "if the sim lets her", "if the sim lets it", "if the sim allows", "if the sim allows it", "if the sim can",
+        "if performance allows", "if performance permits",
         "at the moment", "for a moment", "for now", "right now", "for the moment", "in order to", "in that order",
         "in this order", "sorry to bother you", "to be safe", "to be sure", "to be on the safe side", "just in case",
         "after that", "after this",
@@ -679,6 +686,13 @@ return {
                          "we'll", "we'd", "i'm", "i'll", "i'd", "he's", "she's", "they're", "there's", "too",
                          "participant", "participants", "experimenter", "researcher" },
           own = { "we", "i", "we're", "we'll", "we'd", "i'm", "i'll", "i'd" },
+          -- the operational reason for a complete instruction, said after a comma ("he's inbound to FRA",
+          -- "sequencing into DXB", "DFW metering", "ride reports", "wx at DFW"): a clause holding one of these is
+          -- set aside even when it names a place, which is the reason's, never a place or condition of the instruction
+          -- (one with "from" names where the aircraft comes from: asked)
+          reasons = { "inbound", "sequencing", "sequence", "metering", "flow", "spacing", "ride", "rides",
+                      "reports", "weather", "wx", "closed", "closure", "congestion", "sick", "medical", "arrivals",
+                      "departures", "turbulence", "chop", "choppy", "bumpy", "icing" },
           while_words = { "while", "whilst" },
           later = { "later", "afterwards", "afterward" },
           lead_context = { "for", "behind", "against", "on", "with", "near", "versus", "vs" },

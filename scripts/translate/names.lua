@@ -528,6 +528,7 @@ local names = {
     { "spirit", "NKS" },  -- (Spirit Airlines, telephony Spirit Wings)
     { "spirit airlines", "NKS" },
     { "qatar airways", "QTR" },
+    { "qatar", "QTR" },
     { "cathay pacific", "CPA" },
     { "ita", "ITY" },  -- (ITA Airways, telephony Itarrow)
     { "ita airways", "ITY" },

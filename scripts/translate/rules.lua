@@ -295,6 +295,15 @@ return function(intent, rule, words)
     return qs[1] ~= nil and qs[2] ~= nil and qs[1].b == r.e + 1
       and (qs[1].kind == "lat" or (qs[1].kind == "plain" and qs[1].number.decimal))
   end }
+  -- "drag SWA3388 to 33.1 -96.9 FL180 heading 270": an aircraft flying dragged (on the scope) to a position (a
+  -- latitude or a decimal straight after "to" or "at", another value after it) is moved there
+  rule { "drag dragged", "move", when = function(g, i)
+    local r = g:refs_in(i + 1, i + 3, "aircraft")[1]
+    if not (r and r.exists and g:word(r.e, "to at")) then return false end
+    local qs = g:quantities(r.e + 1, math.min(#g.t + 1, r.e + 8))
+    return qs[1] ~= nil and qs[2] ~= nil and qs[1].b == r.e + 1
+      and (qs[1].kind == "lat" or (qs[1].kind == "plain" and qs[1].number.decimal))
+  end }
   -- "drop KLM1234", "drop the KLM agent": an aircraft and nothing after it
   rule { "drop", "delete", when = function(g, i) return aircraft_alone(g, g:skip_fillers(i + 1), false) end }
   -- "drop Cityjet 62 from the exercise": an aircraft that flies dropped from the run
@@ -448,6 +457,14 @@ return function(intent, rule, words)
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)  -- "sim speed x2"
     local nx = g.t[i + 1]
     return nx ~= nil and nx.kind == "word" and nx.text:match("^x%d") ~= nil
+  end }
+  -- "speed x10": the multiplier typed straight after "speed" opening the request, nothing after it (no aircraft
+  -- bears its name: "x10" reads like a callsign)
+  rule { "speed", "dtmult", when = function(g, i)
+    local nx, last = g.t[i + 1], #g.t
+    while last > i + 1 and g.t[last].kind == "punct" do last = last - 1 end
+    return g:skip_fillers(1) == i and nx ~= nil and nx.kind == "word" and nx.text:match("^x%d+$") ~= nil
+      and last == i + 1 and not (g:refs_in(i + 1, i + 2, "aircraft")[1] or {}).exists
   end }
   -- "sim x4": the multiplier typed straight after the simulation, nothing after it
   rule { "sim simulation simulator", "dtmult", when = function(g, i)
@@ -1458,6 +1475,8 @@ return function(intent, rule, words)
   end }
   -- "Position of Sunturk two papa alpha?", "KLM1234 position?": the noun and an aircraft ask for it
   rule { "position", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
+  -- "DLH458 ETA?", "eta QTR1015": the estimate asked with the aircraft alone, answered by its state (POS)
+  rule { "eta", "pos", when = function(g, i) return g:alone_with_aircraft(i) end }
   rule { "position", "pos", when = shown_after }
   rule { "position", "pos", next = "of", when = function(g, i) return g:skip_fillers(1) == i end }
   -- "place EZY45, A319, at 38.4 N 6.6 W heading 290", "place a Ryanair, RYR5GH, B738, over LOREL ...": a
@@ -2086,6 +2105,12 @@ return function(intent, rule, words)
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
   rule { "lookahead dtlook", "dtlook" }
+  -- "UAE45 step down to FL340, turbulence", "... for turbulence": with an aircraft named, turbulence is its reason
+  -- or its situation, no switch of the simulation's noise (unless switched: "UAE45 climb, and turbulence on")
+  rule { "turbulence", false, when = function(g, i)
+    return g:has_ref(1, #g.t + 1, "aircraft")
+      and not g:word_in(math.max(1, i - 3), i + 4, "on off enable disable switch activate deactivate noise")
+  end }
   rule { "turbulence noise", "noise" }
 
   -- shapes and the deletion area ("in the area" alone names no area)

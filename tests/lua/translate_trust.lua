@@ -8693,3 +8693,114 @@ do
   check_eq(ex("the 320 turn left heading 100"), "HDG BAW8CK 100 LEFT")
   asked(ex("the 738 climb FL330"), "two 738s flying")
 end
+
+-- Cycle 45 (s103b): the operational reason said after a comma behind a complete instruction ("inbound to ...",
+-- "sequencing into ...", "<airport> metering", "ride reports") is set aside, the place it names too; a place
+-- after a comma with no reason's word, or with "at" and no reason, is still asked
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250", "CRE SAS31 A320 55.0 10.0 090 FL330 280" })
+  check_eq(ex("KLM77 descend FL90, he's inbound to AMS"), "ALT KLM77 FL90")
+  check_eq(ex("KLM77 reduce 230, sequencing into LHR"), "SPD KLM77 230")
+  check_eq(ex("KLM77 slow to 220, CDG metering"), "SPD KLM77 220")
+  check_eq(ex("SAS31 down to FL310, ride reports"), "ALT SAS31 FL310")
+  asked(ex("KLM77 descend FL90, AMS"), "a place after a comma with no reason word")
+  asked(ex("KLM77 descend FL90, SAS31 inbound"), "an aircraft in the clause")
+  asked(ex("KLM77 descend FL90, flow restricted to 240"), "a value in the clause")
+  asked(ex("KLM77 descend FL90, inbound from Vigo"), "where it comes from: no reason")
+end
+
+-- Cycle 45 (s103b): a telephone call as the reason for a pause or a break ("pause the sim, phone"); "ETA" with
+-- the aircraft alone asks its state (POS)
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("freeze the sim, phone"), "HOLD")
+  check_eq(ex("sorry phone - KLM77 climb FL170"), "ALT KLM77 FL170")
+  check_eq(ex("KLM77 ETA?"), "POS KLM77")
+  check_eq(ex("eta klm77"), "POS KLM77")
+  asked(ex("ETA"), "no aircraft named")
+end
+
+-- Cycle 45 (s103b): an Airbus family's number after "the" without its letter ("the 350", "the 321") describes the
+-- one aircraft of that family flying, beside a level of the same digits; two of the family, or "to the 350", are
+-- not read so
+do
+  local _, ex = scene({ "CRE DLH47 A359 50.0 8.0 045 FL370 280", "CRE UAE9 A388 50.2 8.7 300 FL360 290",
+    "CRE DLH9 A321 50.1 8.9 270 FL120 250", "CRE BER2 A21N 50.4 8.1 090 FL140 250" })
+  check_eq(ex("the 350 descend to FL350"), "ALT DLH47 FL350")
+  check_eq(ex("the 380 level 310"), "ALT UAE9 FL310")
+  check_eq(ex("slow the 380 down, 270"), "SPD UAE9 270")
+  asked(ex("the 321 climb 160"), "two A321 family aircraft flying")
+  asked(ex("climb to the 350"), "a level after 'to the', no aircraft")
+end
+
+-- Cycle 45 (s103b): "the Qatar" (the airline's name, its telephony Qatari) describes its one aircraft flying;
+-- "get rid of" stays the removal where a navaid RID is in the scene
+do
+  local _, ex = scene({ "DEFWPT RID 50.0 8.5", "CRE QTR15 A359 25.6 54.6 120 FL380 280",
+    "CRE CFG1 A20N 50.5 8.6 180 FL340 270", "CRE CFG2 A20N 50.6 8.7 180 FL320 270", "ADDWPT CFG1 RID" })
+  check_eq(ex("the Qatar down to 360"), "ALT QTR15 FL360")
+  check_eq(ex("get rid of CFG2"), "DEL CFG2")
+  check_eq(ex("CFG1 direct RID"), "DIRECT CFG1 RID")
+  asked(ex("get rid of the condor"), "two Condor aircraft flying")
+  asked(ex("Qatar descend 360"), "an airline called without its number")
+end
+
+-- Cycle 45 (s103b): a rate in whole hundreds straight after "at" following a flight level said bare ("descend 340
+-- at 1500") is the vertical speed, as after "FL340"; a number out of the rates' range there is still asked
+do
+  local _, ex = scene({ "CRE QTR15 A359 25.6 54.6 120 FL380 280" })
+  check_eq(ex("QTR15 descend 340 at 1500"), "ALT QTR15 FL340 1500")
+  check_eq(ex("QTR15 M.80, descend 320 at 2000"), "SPD QTR15 M0.8 ; ALT QTR15 FL320 2000")
+  asked(ex("QTR15 descend 340 at 15000"), "no rate of that size")
+end
+
+-- Cycle 45 (s103b): a bare number closing a list of one aircraft's instructions after a comma or "then" is the one
+-- value left it: feet with no level given ("speed 210 then 7000"), a speed after a level and a direct-to or
+-- heading ("direct FINGR, FL170, 250"); where a heading or a speed both remain, or a level was given, it is asked
+do
+  local _, ex = scene({ "DEFWPT FINGR 33.0 -97.0", "CRE SWA38 B737 33.0 -96.6 270 FL190 270",
+    "CRE ENY35 E75L 32.6 -97.6 045 8000 230", "ADDWPT SWA38 FINGR" })
+  check_eq(ex("SWA38 direct FINGR, FL170, 250"), "DIRECT SWA38 FINGR ; ALT SWA38 FL170 ; SPD SWA38 250")
+  check_eq(ex("SWA38 heading 240, FL170, 260"), "HDG SWA38 240 ; ALT SWA38 FL170 ; SPD SWA38 260")
+  check_eq(ex("ENY35 speed 210 then 6000"), "SPD ENY35 210 ; ALT ENY35 6000")
+  asked(ex("SWA38 FL170, 250"), "a heading or a speed")
+  asked(ex("SWA38 descend FL170, 2000"), "a level given: a rate or another level")
+  asked(ex("ENY35 speed 210, 070"), "a heading or a level")
+  asked(ex("SWA38 direct FINGR, FL170, speed 250, 7000"), "a level given")
+end
+
+-- Cycle 45 (s103b): "drag X to LAT LON ..." moves the aircraft (as "drop X at" does); "speed x10" opening the request
+-- alone is the clock's rate; "whats" typed without its apostrophe is "what's"; the aircraft's or the simulation's
+-- ability ("if the sim lets him", "if performance allows") is courtesy, as "if able"
+do
+  local _, ex = scene({ "DEFWPT DERLA 25.0 55.0", "CRE SWA38 B737 33.0 -96.6 270 FL190 270" })
+  check_eq(ex("drag SWA38 to 33.1 -96.9 FL180 heading 270"), "MOVE SWA38 33.1 -96.9 FL180 270")
+  check_eq(ex("drag SWA38 to FL180"), "ALT SWA38 FL180")
+  check_eq(ex("speed x10"), "DTMULT 10")
+  asked(ex("SWA38 speed x10"), "an aircraft's speed with no value")
+  check_eq(ex("whats DERLA's position"), "POS DERLA")
+  check_eq(ex("whats SWA38 doing"), "POS SWA38")
+  check_eq(ex("SWA38 up to 390 if the sim lets him"), "ALT SWA38 FL390")
+  check_eq(ex("SWA38 climb FL390 if performance allows"), "ALT SWA38 FL390")
+  asked(ex("SWA38 climb FL390 if DERLA"), "a place after 'if'")
+end
+
+-- Cycle 45 (s103b): turbulence said beside an instruction to a named aircraft is its reason ("..., turbulence",
+-- "for turbulence"), no switch of the simulation's noise; said alone, or switched, it stays NOISE
+do
+  local _, ex = scene({ "CRE KLM77 B738 52.1 4.5 180 FL150 250" })
+  check_eq(ex("KLM77 descend FL130, turbulence"), "ALT KLM77 FL130")
+  check_eq(ex("KLM77 descend FL130 for turbulence"), "ALT KLM77 FL130")
+  check_eq(ex("KLM77 descend FL130, moderate chop"), "ALT KLM77 FL130")
+  check_eq(ex("turbulence on"), "NOISE ON")
+  check_eq(ex("switch off the turbulence"), "NOISE OFF")
+end
+
+-- Cycle 45 (s103b): a bare number of feet (whole hundreds, 1000 or more) to "be at" by a waypoint of the route is
+-- the crossing's level, as after "cross"; a bare 250 there (a speed or FL250) is asked
+do
+  local _, ex = scene({ "DEFWPT ANVIX 25.4 55.2", "CRE FDB21 B38M 25.3 54.8 090 FL220 280", "ADDWPT FDB21 ANVIX" })
+  check_eq(ex("FDB21 be at 15000 at ANVIX"), "AT FDB21 ANVIX ALT 15000")
+  check_eq(ex("FDB21 should be at 16000 at ANVIX"), "AT FDB21 ANVIX ALT 16000")
+  asked(ex("FDB21 be at 250 at ANVIX"), "a speed or a level")
+end
