@@ -515,11 +515,12 @@ return function(intent, rule, words)
     end
     return false
   end }
-  -- "sim speed half", "sim speed 2": a multiplier or a bare number straight after the sim's speed, nothing
+  -- "sim speed half", "sim speed one half", "sim speed 2": a multiplier, a fraction or a bare number straight after the sim's speed, nothing
   -- after it and no aircraft named, is the clock's rate
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)
     local q = g:quantities(i + 1, #g.t + 1)[1]
-    local said = g:word(i + 1, "@multipliers") and i + 2 or (q and q.kind == "plain" and q.b == i + 1 and q.e)
+    local said = g:word(i + 1, "@multipliers") and i + 2 or g:fraction_said(i + 1)
+      or (q and q.kind == "plain" and q.b == i + 1 and q.e)
     return said and said > #g.t and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "set the simulation speed back to normal, real time": the clock's rate back to real time (DTMULT reads the
@@ -885,14 +886,23 @@ return function(intent, rule, words)
     while g.t[k] and (g.t[k].kind == "punct" or g:word(k, "it")) do k = k + 1 end
     return created and g:has_ref(k, k + 1, "waypoint")
   end }
-  -- "CFG4RK add NORKU, dest Bremen": a waypoint, a clause of its own, added for an aircraft that flies;
+  -- "CFG4RK add NORKU, dest Bremen", "CFG4RK add NORKU then BANUB": waypoints, a clause of their own, added for
+  -- an aircraft that flies;
   -- "WZZ1PM add VALA at 9000 ft", "add BENOT at flight level 180, 250 knots": with the level it is
   -- crossed at ("at" and an altitude straight after it)
   rule { "add append", "addwpt", when = function(g, i)
     local flying = false
     for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do flying = flying or r.exists end
     local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
-    local nx = r and g.t[r.e]
+    -- ("add CANES then COTOS", "add WILLO and TIMBA": places listed, "then", "and" or a comma between them)
+    local last = r
+    while last do
+      local k = last.e
+      local more = (g:word(k, "then and") or (g.t[k] or {}).text == ",") and g:refs_in(k + 1, k + 2, "waypoint")[1]
+      if not more then break end
+      last = more
+    end
+    local nx = last and g.t[last.e]
     local q = r and g:word(r.e, "at") and g:quantities(r.e + 1, #g.t + 1)[1]
     local level = q and q.b == r.e + 1 and q.kind == "alt"
     -- ("bel3kf add bitbu fl200", "add resmi fl60 210": the level typed straight after the name)
@@ -1779,6 +1789,7 @@ return function(intent, rule, words)
   end }
   -- ("set dt multiplier 3": the time step's name before the multiplier's, DTMULT's)
   rule { "dt", false, next = "multiplier mult" }
+  rule { "dt", false, next = "look lookahead" }  -- "dt look 180": DTLOOK typed apart, no time step
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   rule { "step", "dt", next = "size length" }  -- "step size 0.5 s": the simulation's time step, a noun
@@ -2076,6 +2087,7 @@ return function(intent, rule, words)
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
+  rule { "look", "dtlook", prev = { 1, "dt" } }
   rule { "lookahead dtlook", "dtlook" }
   rule { "turbulence noise", "noise" }
 
