@@ -902,7 +902,8 @@ return function(intent, rule, words)
       if not more then break end
       last = more
     end
-    local nx = last and g.t[last.e]
+    local nx = r and g.t[r.e]
+    local tail = last and g.t[last.e]
     local q = r and g:word(r.e, "at") and g:quantities(r.e + 1, #g.t + 1)[1]
     local level = q and q.b == r.e + 1 and q.kind == "alt"
     -- ("bel3kf add bitbu fl200", "add resmi fl60 210": the level typed straight after the name)
@@ -911,7 +912,8 @@ return function(intent, rule, words)
     -- ("CFG1KZ add RARUP at the end": the end of its route, where ADDWPT puts it)
     local at_end = r and g:word(r.e, "at") and g:word(r.e + 1, "the") and g:word(r.e + 2, "end")
     for x = at_end and r.e + 3 or #g.t + 1, #g.t do at_end = at_end and (g.t[x].kind == "punct" or g.t[x].filler) end
-    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level or at_end)
+    local listed = last ~= r and (not tail or (tail.kind == "punct" and tail.text ~= "."))
+    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level or at_end or listed)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
   -- "add SUDIK to air malta 77", "add ZAGNB for croatia 7TK", "add WILLO then TIMBA to Speedbird 31F": places
