@@ -1246,6 +1246,13 @@ function G:word_in(b, e, words)
   return self:said(words) and word_among(self.words, b, e, set_cache[words] or word_set(words, 2))
 end
 
+-- A fraction said in words after "one" or "a" at i ("one half", "a quarter": lexicon.fractions), not the part
+-- of a number after "and" ("one and a half"): the position after it, or nil.
+function G:fraction_said(i)
+  return self:word(i + 1, "@fractions") and not self:word(i - 1, "and") and (self:word(i, "a one") or (self.t[i] and self.t[i].kind == "number"
+    and self.t[i].text == "1" and self.t[i].raw:lower() == "one")) and i + 2 or nil
+end
+
 -- The first position in [b, e) holding one of `words`, or e.
 function G:find_word(b, e, words)
   if not self:said(words) then return e end
@@ -2367,6 +2374,14 @@ function G:segments(b, e)
           -- reached or left after a condition word)
             or (q.kind == "alt" and #self:quantities(last.trig, q.b) > 0 and self:word(q.b - 1, "passing reaching leaving")
               and self:word(q.b - 2, "@condition"))
+        end
+        -- ("reduce 270 after GAVOL speed 250": a waypoint passed after the first's value, straight before the
+        -- second instruction word, is the second's condition)
+        if between and #between > 0 then
+          local w = self:refs_in(between[1].e, tr.pos, "waypoint")
+          local r = w[#w]
+          dist_between = dist_between or (r ~= nil and self:skip_fillers(r.e) == tr.pos
+            and self:word(r.b - 1, "after passing over leaving"))
         end
         if (last.intent == tr.intent or alt_pair or kept_heading) and not this.single
             and not self:addressee_between(last, tr.pos) and not dist_between then
@@ -4250,7 +4265,10 @@ local function inflections(w)
   local out = { w .. "ing", w .. "s", w .. "ed" }
   for _, suffix in ipairs({ "ing", "ed", "es", "s", "ly" }) do
     local stem = w:match("^(%a%a+)" .. suffix .. "$")
-    if stem then
+    -- ("-es" follows s, x, z, ch, sh or o: "passes" pass, "goes" go; "canes" is no form of "can")
+    if stem and suffix == "es" and not (stem:match("[sxzo]$") or stem:match("[cs]h$")) then
+      out[#out + 1], out[#out + 2] = stem .. "e", stem .. "ing"
+    elseif stem then
       out[#out + 1], out[#out + 2], out[#out + 3] = stem, stem .. "e", stem .. "ing"  -- ("leaves" leaving)
       if stem:match("(%a)%1$") then out[#out + 1] = stem:sub(1, -2) end  -- "running" run
       if stem:match("i$") then out[#out + 1] = stem:sub(1, -2) .. "y" end  -- "carried" carry
@@ -5295,6 +5313,14 @@ function G:not_simulated()
         -- ("traffic eleven o'clock, turn left 20 degrees": a clause opening with an imperative verb of
         -- lexicon.clause_verbs after a comma is an instruction, also after traffic information)
         if class.to_end and x.text == "," and self:word(e + 1, "@clause_verbs") and self:intent_at(e + 1) then break end
+        -- ("expect ILS runway 05 right descend 11000": a runway designator, its number and side, completes what
+        -- a class with `clause` announces; an imperative verb of lexicon.clause_verbs after it is an instruction)
+        if class.clause and self:word(e, "@clause_verbs") and self:intent_at(e) then
+          local r = e - 1
+          local side = self.t[r] and self.t[r].kind == "word" and self.t[r].raw:lower()
+          if side == "left" or side == "right" or side == "center" or side == "centre" then r = r - 1 end
+          if self.t[r] and self.t[r].kind == "number" and self:word(r - 1, "runway rwy") then break end
+        end
         -- ("expect further descent in five minutes, for now FL180": a class with `clause` ends at a comma before
         -- a clause said for the meantime, "now" in its first three words, with a level, speed or heading)
         if class.clause and x.text == "," and self:word_in(e + 1, e + 4, "now meanwhile meantime")
@@ -6430,8 +6456,9 @@ function M.translate(text, world)
   local function cue(word, whole)
     return lower:find(word, 1, true) and lower:find("%f[%a]" .. word .. (whole and "%f[%A]" or ""))
   end
-  -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen")
-  if cue("create") or cue("spawn") or cue("generate") or cue("add") or cue("mcre") or cue("random")
+  -- ("new traffic: ...", "set up Austrian 719, Embraer one ninety five, ...", "put a CSA ..., A three nineteen";
+  -- "crea", "crear", "creer": the verb in the speaker's language)
+  if cue("crea") or cue("cree") or cue("spawn") or cue("generate") or cue("add") or cue("mcre") or cue("random")
       or cue("new", true) or cue("set up", true) or cue("put", true) then
     text = types.plurals(types.spoken(text, TYPES, lexicon.phonetic), TYPES, world.aircraft, lexicon.variant_families)
   end

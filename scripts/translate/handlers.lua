@@ -1171,6 +1171,8 @@ local function families()
 end
 local DIGIT_WORDS = { zero = "0", one = "1", two = "2", three = "3", four = "4", five = "5", six = "6", seven = "7",
                       eight = "8", nine = "9", niner = "9" }
+local TENS_WORDS = { twenty = "2", thirty = "3", forty = "4", fifty = "5", sixty = "6", seventy = "7", eighty = "8",
+                     ninety = "9" }
 -- words that describe an aircraft's size between "the" and its type ("the big Boeing"); they narrow
 -- nothing: several aircraft of the type flying are asked about
 local SIZE_WORDS = { big = true, bigger = true, biggest = true, large = true, small = true, smaller = true,
@@ -1231,6 +1233,18 @@ function m:type_said(i)
   if makers()[t.text] then
     local nx = self.t[i + 1]
     if nx and nx.kind == "number" and fams[nx.text] then return set_of(fams[nx.text]), i + 2 end
+    -- ("the Airbus three thirty", "the Boeing seven eighty seven", "the Airbus three three zero": a family's
+    -- number said in words after its maker, the Airbus letter left out)
+    local function said(k) return self.t[k] and self.t[k].kind == "word" and self.t[k].text or "" end
+    local d1, tens, d3 = DIGIT_WORDS[said(i + 1)], TENS_WORDS[said(i + 2)], DIGIT_WORDS[said(i + 3)]
+    local num, e
+    if d1 and tens then
+      num, e = d1 .. tens .. ((d3 and d3 ~= "0") and d3 or "0"), (d3 and d3 ~= "0") and i + 4 or i + 3
+    elseif d1 and DIGIT_WORDS[said(i + 2)] and d3 then
+      num, e = d1 .. DIGIT_WORDS[said(i + 2)] .. d3, i + 4
+    end
+    local fam = num and (fams[num] or (t.text == "airbus" and fams["a" .. num]))
+    if fam then return set_of(fam), e end
     return set_of(makers()[t.text]), i + 1
   end
   local nick = nicknames[t.text]

@@ -2992,6 +2992,14 @@ return function(H, f, compass)
         and self.out[#self.out] ~= "OP" then
       self:emit("OP")
     end
+    -- ("sim speed one half": a fraction said in words after "one" or "a")
+    for i = s.b, s.e - 1 do
+      local e = self:fraction_said(i)
+      if e and e <= s.e then
+        self:mark_used(i, e)
+        return self:emit("DTMULT " .. f.num(L.fractions[self.t[e - 1].text]))
+      end
+    end
     local q = first(self, s, { mult = true, plain = true })
     if q then return self:emit("DTMULT " .. f.num(q.value)) end
     -- "pause, then 3x speed", "and then 5 times faster": a factor said before the instruction word, in

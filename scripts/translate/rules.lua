@@ -532,11 +532,12 @@ return function(intent, rule, words)
     end
     return false
   end }
-  -- "sim speed half", "sim speed 2": a multiplier or a bare number straight after the sim's speed, nothing
+  -- "sim speed half", "sim speed one half", "sim speed 2": a multiplier, a fraction or a bare number straight after the sim's speed, nothing
   -- after it and no aircraft named, is the clock's rate
   rule { "speed", "dtmult", prev = { 1, "@sim" }, when = function(g, i)
     local q = g:quantities(i + 1, #g.t + 1)[1]
-    local said = g:word(i + 1, "@multipliers") and i + 2 or (q and q.kind == "plain" and q.b == i + 1 and q.e)
+    local said = g:word(i + 1, "@multipliers") and i + 2 or g:fraction_said(i + 1)
+      or (q and q.kind == "plain" and q.b == i + 1 and q.e)
     return said and said > #g.t and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "set the simulation speed back to normal, real time": the clock's rate back to real time (DTMULT reads the
@@ -911,14 +912,24 @@ return function(intent, rule, words)
     while g.t[k] and (g.t[k].kind == "punct" or g:word(k, "it")) do k = k + 1 end
     return created and g:has_ref(k, k + 1, "waypoint")
   end }
-  -- "CFG4RK add NORKU, dest Bremen": a waypoint, a clause of its own, added for an aircraft that flies;
+  -- "CFG4RK add NORKU, dest Bremen", "CFG4RK add NORKU then BANUB": waypoints, a clause of their own, added for
+  -- an aircraft that flies;
   -- "WZZ1PM add VALA at 9000 ft", "add BENOT at flight level 180, 250 knots": with the level it is
   -- crossed at ("at" and an altitude straight after it)
   rule { "add append", "addwpt", when = function(g, i)
     local flying = false
     for _, r in ipairs(g:refs_in(1, #g.t + 1, "aircraft")) do flying = flying or r.exists end
     local r = g:refs_in(i + 1, i + 2, "waypoint")[1]
+    -- ("add CANES then COTOS", "add WILLO and TIMBA": places listed, "then", "and" or a comma between them)
+    local last = r
+    while last do
+      local k = last.e
+      local more = (g:word(k, "then and") or (g.t[k] or {}).text == ",") and g:refs_in(k + 1, k + 2, "waypoint")[1]
+      if not more then break end
+      last = more
+    end
     local nx = r and g.t[r.e]
+    local tail = last and g.t[last.e]
     local q = r and g:word(r.e, "at") and g:quantities(r.e + 1, #g.t + 1)[1]
     local level = q and q.b == r.e + 1 and q.kind == "alt"
     -- ("bel3kf add bitbu fl200", "add resmi fl60 210": the level typed straight after the name)
@@ -927,7 +938,8 @@ return function(intent, rule, words)
     -- ("CFG1KZ add RARUP at the end": the end of its route, where ADDWPT puts it)
     local at_end = r and g:word(r.e, "at") and g:word(r.e + 1, "the") and g:word(r.e + 2, "end")
     for x = at_end and r.e + 3 or #g.t + 1, #g.t do at_end = at_end and (g.t[x].kind == "punct" or g.t[x].filler) end
-    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level or at_end)
+    local listed = last ~= r and (not tail or (tail.kind == "punct" and tail.text ~= "."))
+    return flying and r ~= nil and (not nx or (nx.kind == "punct" and nx.text ~= ".") or level or at_end or listed)
       and not g:new_aircraft_follows(i) and not g:word_in(1, #g.t + 1, "@correction no")
   end }
   -- "add SUDIK to air malta 77", "add ZAGNB for croatia 7TK", "add WILLO then TIMBA to Speedbird 31F": places
@@ -1807,6 +1819,7 @@ return function(intent, rule, words)
   end }
   -- ("set dt multiplier 3": the time step's name before the multiplier's, DTMULT's)
   rule { "dt", false, next = "multiplier mult" }
+  rule { "dt", false, next = "look lookahead" }  -- "dt look 180": DTLOOK typed apart, no time step
   rule { "timestep dt", "dt" }
   rule { "time", "dt", next = "step" }
   rule { "step", "dt", next = "size length" }  -- "step size 0.5 s": the simulation's time step, a noun
@@ -2104,6 +2117,7 @@ return function(intent, rule, words)
   rule { "sep", "zone", prev = { 1, "horizontal lateral vertical" } }  -- "horizontal sep back to 5nm"
   rule { "half", "zone", next = "height" }
   rule { "look", "dtlook", next = "ahead" }
+  rule { "look", "dtlook", prev = { 1, "dt" } }
   rule { "lookahead dtlook", "dtlook" }
   -- "UAE45 step down to FL340, turbulence", "... for turbulence": with an aircraft named, turbulence is its reason
   -- or its situation, no switch of the simulation's noise (unless switched: "UAE45 climb, and turbulence on")

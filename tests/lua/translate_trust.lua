@@ -8804,3 +8804,77 @@ do
   check_eq(ex("FDB21 should be at 16000 at ANVIX"), "AT FDB21 ANVIX ALT 16000")
   asked(ex("FDB21 be at 250 at ANVIX"), "a speed or a level")
 end
+
+-- Cycle 45 (s102): an "expect" phrase ends after a runway designator: an imperative verb after it is an instruction
+do
+  local _, ex = scene({ "CRE TAP212 A320 38.9 -9.0 180 FL150 250" })
+  check_eq(ex("TAP212 expect ILS runway 21 left descend 9000"), "ALT TAP212 9000")
+  check_eq(ex("TAP212 expect runway 03 turn right heading 220"), "HDG TAP212 220 RIGHT")
+  -- (the expectation alone sends nothing; an expected descent is no clearance)
+  check_eq(ex("TAP212 expect ILS runway 21 left"), "")
+  check_eq(ex("TAP212 expect descent to 9000 in 10 miles"), "")
+end
+
+-- Cycle 45 (s102): "dt look 180" is DTLOOK typed apart, never the time step
+do
+  local _, ex = scene({})
+  check_eq(ex("dt look 240 seconds"), "DTLOOK 240")
+  check_eq(ex("dt lookahead 4 minutes"), "DTLOOK 240")
+  check_eq(ex("dt 0.2"), "DT 0.2")
+end
+
+-- Cycle 45 (s102): "simulation speed one half", "sim speed a quarter": a fraction in words is the clock's rate
+do
+  local _, ex = scene({})
+  check_eq(ex("simulation speed one half"), "DTMULT 0.5")
+  check_eq(ex("sim speed a quarter"), "DTMULT 0.25")
+  check_eq(ex("simulation speed two and a half"), "DTMULT 2.5")
+  check_eq(ex("simulation speed one and a half"), "DTMULT 1.5")
+end
+
+-- Cycle 45 (s102): "the Airbus three thirty": a family's number said in words after its maker describes it
+do
+  local _, ex = scene({ "CRE TAP212 A320 38.9 -9.0 180 FL150 250", "CRE TAP88 A332 39.0 -9.2 000 FL300 280",
+    "CRE RYR5E B738 39.1 -9.1 090 FL200 260" })
+  check_eq(ex("the airbus three thirty descend flight level two eight zero"), "ALT TAP88 FL280")
+  check_eq(ex("the airbus three three zero descend fl280"), "ALT TAP88 FL280")
+  check_eq(ex("the boeing seven thirty seven climb fl240"), "ALT RYR5E FL240")
+  asked(ex("the airbus descend fl280"), "two Airbuses flying")
+  asked(ex("the airbus three forty descend fl280"), "no A340 flying")
+end
+
+-- Cycle 45 (s102): "crea"/"crear" (a creation in the speaker's language) reads a type said in words or apart
+-- as "create" does; the callsign's digits stay its flight number
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0" })
+  check_eq(ex("crea iberia 777 boeing 737 800 at TOLKA heading 090 fl160 250"), "CRE IBE777 B738 TOLKA 90 FL160 250")
+  check_eq(ex("crear iberia 320 boeing seven three seven eight hundred at TOLKA heading 090 fl160 250"),
+    "CRE IBE320 B738 TOLKA 90 FL160 250")
+  asked(ex("crea iberia 777 boeing 737 at TOLKA heading 090 fl160 250"), "a 737 of no variant")
+end
+
+-- Cycle 45 (s102): "add CANES then COTOS": places listed after "add", "then", "and" or a comma between, are
+-- added in order; a place that is an English word only by a false "-es" ending ("canes") is a name
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "DEFWPT BIRDO 40.2 -100.2", "DEFWPT MESSA 40.4 -100.4",
+    "CRE FFT88 A20N 40.5 -100.5 090 FL280 270" })
+  check_eq(ex("FFT88 add TOLKA then BIRDO"), "ADDWPT FFT88 TOLKA ; ADDWPT FFT88 BIRDO")
+  check_eq(ex("FFT88 add TOLKA and BIRDO then MESSA"), "ADDWPT FFT88 TOLKA ; ADDWPT FFT88 BIRDO ; ADDWPT FFT88 MESSA")
+  check_eq(ex("FFT88 add TOLKA then BIRDO, climb fl300"), "ADDWPT FFT88 TOLKA ; ADDWPT FFT88 BIRDO ; ALT FFT88 FL300")
+  asked(ex("FFT88 add TOLKA then bogus"), "a name no place bears")
+  local _, nx = navscene({ "CRE AEA77 B738 40.1 -3.0 300 FL150 260" }, "lower-case fix names near the traffic")
+  if nx then
+    check_eq(nx("air europa 77 add canes then cotos"), "ADDWPT AEA77 CANES ; ADDWPT AEA77 COTOS")
+    check_eq(nx("air europa 77 add canes"), "ADDWPT AEA77 CANES")
+  end
+end
+
+-- Cycle 45 (s102): "reduce 270 after GAVOL speed 250": a waypoint passed between two instructions of one kind is the
+-- second's condition (AT ... DO), never the two merged
+do
+  local _, ex = scene({ "DEFWPT TOLKA 40.0 -100.0", "CRE FFT88 A20N 40.5 -100.5 090 FL280 270", "ADDWPT FFT88 TOLKA" })
+  check_eq(ex("FFT88 reduce 260 after TOLKA speed 240"), "SPD FFT88 260 ; AT FFT88 TOLKA DO SPD FFT88 240")
+  check_eq(ex("FFT88 descend fl250 after TOLKA descend fl200"), "ALT FFT88 FL250 ; AT FFT88 TOLKA DO ALT FFT88 FL200")
+  check_eq(ex("FFT88 reduce 260 after TOLKA"), "AT FFT88 TOLKA DO SPD FFT88 260")
+  asked(ex("FFT88 reduce 260 after TOLKA 240"), "a value with no instruction word after the waypoint")
+end
