@@ -77,11 +77,12 @@ return function(H, f, compass)
   end
 
   -- The callsign of the new aircraft `r` (an aircraft reference no aircraft has): said with the name
-  -- of a brand separate airlines fly under (names.lua's brands marked `shared`: "Virgin 1219" is VIR
-  -- or VOZ), the prefix of the one of them flying now, else asked about (the name's own airline kept).
+  -- of a brand several airlines fly under (names.lua's brands: "Virgin 1219" is VIR or VOZ, "LATAM 4411"
+  -- TAM or LAN or ...), the prefix of the one of them flying now; with none or several flying, the name's
+  -- own airline, asked about where the brand is `shared`.
   function m:brand_callsign(r)
     local icao, _, codes = self:airline_at(r.b)
-    if not codes or not codes.shared or r.name:upper():sub(1, #icao) ~= icao then return r.name end
+    if not codes or r.name:upper():sub(1, #icao) ~= icao then return r.name end
     local flying = {}
     for _, c in ipairs(codes) do
       if #self:airline_fleet(c) > 0 then flying[#flying + 1] = c end
@@ -90,6 +91,7 @@ return function(H, f, compass)
       self:explain(r.b, r.e)
       return flying[1] .. r.name:sub(#icao + 1)
     end
+    if not codes.shared then return r.name end
     self:need(string.format("Which airline is the new %s of: %s?", self:raw(r.b, r.e),
       table.concat(codes, " or ")))
     return r.name

@@ -1125,37 +1125,80 @@ return {
     { heard = { "two", "too" }, means = "to",
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
-    -- Spanish and French phraseology before its value, read the same way ("rumbo dos cero cero", "descienda
-    -- nivel de vuelo tres uno cero", "cap 270", "montez niveau 350")
-    { heard = { "rumbo", "cap" }, means = "heading", before = { "#number" }, not_after = { "red" } },
-    { heard = { "nivel de vuelo", "nivel", "niveau" }, means = "flight level", before = { "#number" } },
-    { heard = { "velocidad", "vitesse" }, means = "speed", before = { "#number" } },
-    { heard = { "descienda", "descendez" }, means = "descend", before = { "#number", "nivel", "niveau", "a", "y", "fl" } },
-    { heard = { "ascienda", "suba", "montez", "monte" }, means = "climb",
-      before = { "#number", "nivel", "niveau", "a", "y", "fl" } },
-    -- (and the rest of a Spanish clearance: "descienda y mantenga uno dos mil pies", "mantenga rumbo ...",
-    -- "vire izquierda rumbo ...", "reduzca dos cinco cero nudos")
-    { heard = { "mantenga", "mantener" }, means = "maintain",
-      before = { "#number", "nivel", "rumbo", "velocidad", "a", "flight", "fl", "level", "heading", "speed",
-                 "present" } },
-    { heard = { "y" }, means = "and", between = { { "descienda", "ascienda", "suba", "descend", "climb" },
-                                                  { "mantenga", "mantener", "maintain" } } },
-    { heard = { "vire", "gire" }, means = "turn",
-      before = { "izquierda", "derecha", "left", "right", "rumbo", "heading", "#number" } },
-    { heard = { "izquierda" }, means = "left", after = { "vire", "gire", "turn" } },
-    { heard = { "derecha" }, means = "right", after = { "vire", "gire", "turn" } },
-    { heard = { "reduzca" }, means = "reduce", before = { "#number", "velocidad", "a", "speed" } },
-    { heard = { "aumente" }, means = "increase", before = { "#number", "velocidad", "a", "speed" } },
+    -- French phraseology before its value, read the same way ("cap 270", "montez niveau 350"; Spanish is
+    -- lexicon.spanish)
+    { heard = { "cap" }, means = "heading", before = { "#number" }, not_after = { "red" } },
+    { heard = { "niveau" }, means = "flight level", before = { "#number" } },
+    { heard = { "vitesse" }, means = "speed", before = { "#number" } },
+    { heard = { "descendez" }, means = "descend", before = { "#number", "niveau", "a", "fl" } },
+    { heard = { "montez", "monte" }, means = "climb", before = { "#number", "niveau", "a", "fl" } },
+    -- Spanish words said in an English clearance that are also Portuguese or Italian, read only where
+    -- the instruction word is expected (lexicon.spanish.joining: "suba flight level 260", "descend y
+    -- maintain", "climb 5 mil feet")
+    { heard = { "suba" }, means = "climb", before = { "#number", "a", "y", "fl", "flight", "level", "to" } },
+    { heard = { "y" }, means = "and", between = { { "suba", "descend", "climb" }, { "maintain" } } },
     { heard = { "mil" }, means = "thousand", after = { "#number" } },
-    { heard = { "pies" }, means = "feet", after = { "#number", "mil", "thousand" } },
-    { heard = { "nudos" }, means = "knots", after = { "#number" } },
-    { heard = { "rumbo actual" }, means = "present heading", after = { "mantenga", "mantener", "maintain" } },
-    { heard = { "velocidad actual" }, means = "present speed", after = { "mantenga", "mantener", "maintain" } },
-    { heard = { "nivel actual" }, means = "present level", after = { "mantenga", "mantener", "maintain" } },
-    { heard = { "proceda" }, means = "proceed", before = { "directo", "direct", "direct-to" } },
     -- (English typed by a Spanish speaker: "procede direct GAVOL", as "proceder" is spelled)
-    { heard = { "procede", "proced" }, means = "proceed", before = { "directo", "direct", "direct-to", "to" } },
-    { heard = { "directo" }, means = "direct", before = { "a", "al" }, after = { "proceda", "proceed", "vuele" } },
+    { heard = { "procede", "proced" }, means = "proceed", before = { "direct", "direct-to", "to" } },
+  },
+  -- Spanish said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia 6253",
+  -- "corre la simulacion"), read as its English word for word (grammar.lua G.spanish): Spanish word or
+  -- phrase (lower case, with and without its accents) -> English. A sentence holding a word or phrase of
+  -- `words` not in `shared` is Spanish: there every word or phrase of `words` and `joining` and every digit
+  -- of foreign_digits is read as its English; elsewhere only those of `words`. A Spanish word of none of them
+  -- stays unaccounted for, and is asked.
+  spanish = {
+    words = {
+      -- instructions and their nouns
+      vire = "turn", gire = "turn", izquierda = "left", derecha = "right", ["a la izquierda"] = "left",
+      ["a la derecha"] = "right", ["por la izquierda"] = "left", ["por la derecha"] = "right",
+      grados = "degrees", rumbo = "heading", nivel = "level", ["nivel de vuelo"] = "flight level",
+      velocidad = "speed", ["velocidad doble"] = "double speed", baje = "descend", descienda = "descend",
+      ascienda = "climb", mantenga = "maintain", mantener = "maintain",
+      -- (what is flown now, kept: read with its verb only; false: said alone, the phrase stays as said, and
+      -- is asked)
+      ["rumbo actual"] = false, ["velocidad actual"] = false, ["nivel actual"] = false,
+      ["mantenga rumbo actual"] = "maintain present heading", ["mantener rumbo actual"] = "maintain present heading",
+      ["mantenga velocidad actual"] = "maintain present speed", ["mantener velocidad actual"] = "maintain present speed",
+      ["mantenga nivel actual"] = "maintain present level", ["mantener nivel actual"] = "maintain present level",
+      reduzca = "reduce", aumente = "increase", proceda = "proceed", vuele = "fly", directo = "direct",
+      ["directo a"] = "direct to", ["directo al"] = "direct to", cruce = "cross", cruzar = "cross",
+      cruza = "cross", indique = "say", ["donde esta"] = "where is", ["dónde está"] = "where is",
+      ["donde está"] = "where is", ["cual es"] = "what is", ["cuál es"] = "what is",
+      -- (the informal imperative and the infinitive: "baja a nivel 90", "virar derecha")
+      baja = "descend", bajar = "descend", descender = "descend", sube = "climb", subir = "climb",
+      ascender = "climb", vira = "turn", gira = "turn", virar = "turn", girar = "turn", grado = "degree",
+      altitud = "altitude", ["velocidad vertical"] = "vertical speed", descenso = "descent", ascenso = "climb",
+      ["despues de"] = "after", ["después de"] = "after", ["antes de"] = "before", ahora = "now",
+      metros = "metres", milla = "mile", nauticas = "nautical", ["náuticas"] = "nautical",
+      -- the rate of a climb or descent ("descienda con régimen 1000 pies por minuto"; "regimo" as heard)
+      ["régimen"] = "rate", regimen = "rate", regimo = "rate", ["por minuto"] = "per minute",
+      pies = "feet", nudos = "knots", millas = "miles", minutos = "minutes", minuto = "minute",
+      segundos = "seconds",
+      -- the experimenter's commands
+      borra = "delete", borre = "delete", borrar = "delete", elimina = "delete", elimine = "delete",
+      mueve = "move", mueva = "move", mover = "move", crea = "create", cree = "create", crear = "create",
+      destino = "destination", origen = "origin", listar = "list", liste = "list", ruta = "route",
+      continua = "continue", ["continúa"] = "continue", corre = "run", ["dale play"] = "press play",
+      simulacion = "simulation", ["simulación"] = "simulation", adelanta = "advance", adelante = "advance",
+      activa = "activate", activar = "activate", desactiva = "deactivate",
+      resolucion = "resolution", ["resolución"] = "resolution", ["zona protegida"] = "protected zone",
+      ["tiempo de anticipacion"] = "look-ahead time", ["tiempo de anticipación"] = "look-ahead time",
+      doble = "double", veces = "times", pausa = "pause", pausar = "pause", pause = "pause",
+      inicia = "start", iniciar = "start", inicie = "start", arranca = "start", comienza = "start",
+      empieza = "start", ["detén"] = "stop", deten = "stop", detenga = "stop", detener = "stop",
+      reinicia = "reset", reiniciar = "reset", reinicie = "reset", escenario = "scenario", carga = "load",
+      cargue = "load", cargar = "load", agrega = "add", agregue = "add", ["añade"] = "add", anade = "add",
+      ["añada"] = "add", anada = "add", quita = "remove", quite = "remove", retira = "remove",
+      nuevo = "new", nueva = "new", avion = "aircraft", ["avión"] = "aircraft", aeronave = "aircraft",
+      ["deteccion de conflictos"] = "conflict detection", ["detección de conflictos"] = "conflict detection",
+    },
+    -- words of `words` said the same in Portuguese or Italian: no sign of Spanish alone
+    shared = { destino = true, crea = true, continua = true, minuto = true, nivel = true, pause = true, vira = true,
+      gira = true, carga = true, metros = true, altitud = true },
+    -- small words also English, Portuguese or Italian ("a", "con", "en", "suba")
+    joining = { a = "at", al = "to the", la = "the", el = "the", los = "the", las = "the", un = "a", una = "a",
+      en = "at", con = "at", y = "and", mil = "thousand", suba = "climb", de = "of", del = "of the" },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",
   -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit

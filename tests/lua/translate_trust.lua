@@ -8878,3 +8878,46 @@ do
   check_eq(ex("FFT88 reduce 260 after TOLKA"), "AT FFT88 TOLKA DO SPD FFT88 260")
   asked(ex("FFT88 reduce 260 after TOLKA 240"), "a value with no instruction word after the waypoint")
 end
+-- Cycle 45 (es102): Spanish said whole is read word for word as its English (lexicon.spanish): turns with
+-- their side and degrees, levels, rates, crossings, the experimenter's commands; a Spanish word the table does
+-- not know is asked
+do
+  local _, ex = scene({ "CRE IBE52 A320 40.5 -3.6 200 FL180 280", "CRE AVA81 A320 4.5 -74.0 100 FL160 260",
+    "DEFWPT TORMO 40.7 -3.7", "ADDWPT IBE52 TORMO" })
+  check_eq(ex("iberia 52 vire a la derecha rumbo 250"), "HDG IBE52 250 RIGHT")
+  check_eq(ex("avianca 81 gire por la izquierda rumbo 040"), "HDG AVA81 40 LEFT")
+  check_eq(ex("avianca 81 derecha 15 grados"), "HDG AVA81 115 RIGHT")
+  check_eq(ex("avianca 81 gire 25 grados izquierda"), "HDG AVA81 75 LEFT")
+  check_eq(ex("iberia 52 baje a nivel 90"), "ALT IBE52 FL90")
+  check_eq(ex("iberia 52 descienda con régimen 1500 pies por minuto"), "VS IBE52 -1500")
+  check_eq(ex("iberia 52 cruce tormo a nivel 150"), "AT IBE52 TORMO ALT FL150")
+  check_eq(ex("borre el avianca 81"), "DEL AVA81")
+  check_eq(ex("donde esta el iberia 52"), "POS IBE52")
+  check_eq(ex("iberia 52 listar ruta"), "LISTRTE IBE52")
+  check_eq(ex("mueva avianca 81 a 4.9 -74.3 nivel 120"), "MOVE AVA81 4.9 -74.3 FL120")
+  check_eq(ex("corre la simulación"), "OP")
+  check_eq(ex("adelanta 5 minutos"), "FF 300")
+  check_eq(ex("zona protegida cinco millas"), "ZONER 5")
+  check(ex("reinicia la simulación"):match("^ASK Reset the simulation%?") ~= nil, "a reset confirmed first")
+  check_eq(ex("cual es el nivel del avianca 81"), "POS AVA81")
+  check_eq(ex("avianca 81 virar izquierda rumbo 350"), "HDG AVA81 350 LEFT")
+  check_eq(ex("iberia 52 suba nivel 200 y mantenga velocidad 250"), "ALT IBE52 FL200 ; SPD IBE52 250")
+  check_eq(ex("iberia 52 mantenga rumbo actual"), "HDG IBE52 200")
+  asked(ex("iberia 52 rumbo actual"), "rumbo actual with no verb")
+  -- ("urgente", "inmediatamente": Spanish the table does not know)
+  asked(ex("iberia 52 vire a la derecha rumbo 250 urgente"), "a Spanish word unknown to the table")
+  asked(ex("avianca 81 descienda inmediatamente nivel 100"), "a Spanish word unknown to the table")
+  -- (the joining words are English outside a Spanish sentence: "a" stays the article)
+  check_eq(ex("iberia 52 descend to flight level 120, a bit quicker please"), "ALT IBE52 FL120")
+end
+
+-- Cycle 45 (es102): a new aircraft said with a brand's name takes the brand's airline flying in the scene
+-- ("crear latam 4411" with LAN flying is LAN4411)
+do
+  local _, ex = navscene({ "CRE LAN3095 A320 4.9 -74.4 130 FL200 280", "CRE AVA93 A319 4.5 -74.0 310 FL160 260" },
+    "a new aircraft of a brand at a fix")
+  if ex then
+    check_eq(ex("crear latam 4411 airbus 320 en gavol rumbo 150 nivel 220 280 nudos"),
+      "CRE LAN4411 A320 GAVOL 150 FL220 280")
+  end
+end
