@@ -5688,6 +5688,39 @@ local function abbreviated_registrations(text, fleet)
   return text, nil
 end
 
+-- "LH400 descend FL210", "EK201 down to 250": an airline's IATA designator typed in capitals against a flight
+-- number (names.iata) is the aircraft flying under the airline's ICAO prefix with the same characters after it
+-- ("LH400": DLH400), when that aircraft flies, no aircraft flies under the two letters themselves, the word is
+-- no aircraft type ("PC12") and the two letters are nothing else squawk reads (G.IATA holds only those: no
+-- command or alias, "VS", "DT"; no setting key, "FL"; no unit, "FT", "KT"). Else the word stays as typed: a
+-- callsign of no aircraft, asked about.
+G.IATA = {}
+do
+  local read = {}
+  for w in pairs(SETTING_KEYS) do read[w] = true end  -- (registry names and aliases, shorthand, setting keys)
+  for w in pairs(lexicon.value_units) do read[w] = true end
+  for _, w in ipairs(lexicon.speed_units) do read[w] = true end
+  for code, icao in pairs(names.iata) do
+    if not read[code:lower()] then G.IATA[code] = icao end
+  end
+  G.IATA_TYPES = {}
+  for _, d in ipairs(TYPES.designators) do G.IATA_TYPES[d:upper()] = true end
+end
+function G.iata_ids(text, fleet)
+  if #fleet == 0 or not text:find("%u%u%d") then return text end
+  local ids, own = {}, {}
+  for _, a in ipairs(fleet) do
+    ids[a.id:upper()] = a.id
+    own[a.id:upper():match("^%a*")] = true
+  end
+  return (text:gsub("%f[%w](%u%u)(%d%w*)%f[%W]", function(code, rest)
+    local icao, typed = G.IATA[code], (code .. rest):upper()
+    local id = icao and ids[(icao .. rest):upper()]
+    if id and not own[code] and not ids[typed] and not G.IATA_TYPES[typed] then return id end
+    return nil
+  end))
+end
+
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
 -- number with a unit is the instruction's value, no flight number (unless an
 -- aircraft has that id); a comma keeps the callsign matcher off it.
@@ -6109,7 +6142,7 @@ function M.quoted_clearance(text, world)
   -- (an instruction word outside, "... replay it and pause the simulation", is a request of its own: read whole)
   if not framed or M.has_instruction(table.concat(rest, " ")) then return nil end
   local fleet = world.aircraft
-  outside = airline_values(named_airline_ids(split_ids(unglued_ids(outside, fleet), fleet)), fleet)
+  outside = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(outside, fleet), fleet), fleet)), fleet)
   outside = outside:gsub("%f[%d:]%d%d?:[0-5]%d:[0-5]%d%f[^%d:]", " ")
   -- (an aircraft named outside: an id of the fleet, or a word with a digit after one to three capitalised words,
   -- "Air Europa 5507"; any other word with a digit is a value)
@@ -6233,7 +6266,8 @@ function M.translate(text, world)
   for _, x in ipairs(SPELLED_OUT) do
     if text:lower():find(x.words, 1, true) then text = text:gsub(x.pattern, x.short) end
   end
-  text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
+  text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
+    world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)

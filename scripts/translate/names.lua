@@ -504,6 +504,31 @@ local names = {
     { "unity", "UTY" },  -- (Alliance Airlines)
     { "mount cook", "NZM" },  -- (Air New Zealand Link)
   },
+  -- iata: an airline's IATA designator (two capital letters) -> its ICAO prefix, for airlines above whose
+  -- pair is certain; read before a flight number typed against it ("LH400": DLH400) only where that aircraft
+  -- flies (translate/grammar.lua G.iata_ids). Codes with a digit ("U2", "B6") and those that are English words
+  -- ("AS", "AT", "BY", "ME", "OK", "TO", "UP": Alaska, Royal Air Maroc, TUI, MEA, CSA, Transavia France,
+  -- Bahamasair) are left out; a code that is a command, a setting or a unit squawk reads ("VS", "DT") is
+  -- never read as an airline's.
+  iata = {
+    -- Europe
+    LH = "DLH", CL = "CLH", EN = "DLA", DE = "CFG", EW = "EWG", LX = "SWR", WK = "EDW", OS = "AUA", SN = "BEL",
+    KL = "KLM", HV = "TRA", AF = "AFR", BA = "BAW", IB = "IBE", UX = "AEA", VY = "VLG", EI = "EIN", FR = "RYR",
+    LS = "EXS", LM = "LOG", VS = "VIR", TP = "TAP", SK = "SAS", DY = "NAX", WF = "WIF", AY = "FIN", FI = "ICE",
+    BT = "BTI", LO = "LOT", QS = "TVS", RO = "ROT", FB = "LZB", OU = "CTN", JU = "ASL", OA = "OAL", LG = "LGL",
+    TK = "THY", PC = "PGT", XQ = "SXS", PS = "AUI", SU = "AFL", FV = "SDM", DP = "PBD",
+    -- the Middle East, Africa and Asia
+    EK = "UAE", FZ = "FDB", QR = "QTR", EY = "ETD", GF = "GFA", KU = "KAC", WY = "OMA", SV = "SVA", RJ = "RJA",
+    LY = "ELY", MS = "MSR", AH = "DAH", TU = "TAR", ET = "ETH", KQ = "KQA", SA = "SAA", DT = "DTA", TM = "LAM",
+    MK = "MAU", KP = "SKK", KC = "KZR", HY = "UZB", AI = "AIC", PK = "PIA", UL = "ALK", SQ = "SIA", TG = "THA",
+    MH = "MAS", GA = "GIA", PR = "PAL", VN = "HVN", CX = "CPA", CI = "CAL", BR = "EVA", JL = "JAL", NH = "ANA",
+    KE = "KAL", OZ = "AAR", CA = "CCA", MU = "CES", CZ = "CSN", HU = "CHH", QF = "QFA", NZ = "ANZ",
+    -- the Americas
+    AA = "AAL", UA = "UAL", DL = "DAL", WN = "SWA", NK = "NKS", MQ = "ENY", OO = "SKW", YX = "RPA", YV = "ASH",
+    ZW = "AWI", QX = "QXE", HA = "HAL", SY = "SCX", FX = "FDX", AC = "ACA", QK = "JZA", TS = "TSC", PD = "POE",
+    WS = "WJA", WG = "SWG", AV = "AVA", CM = "CMP", LA = "LAN", JJ = "TAM", LP = "LPE", XL = "LNE", AR = "ARG",
+    CV = "CLX",
+  },
   common = {
     { "ba", "BAW" },
     { "british airways", "BAW" },

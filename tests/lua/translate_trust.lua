@@ -8629,3 +8629,42 @@ do
   asked(ex("SAS31 turn left 10, and the 737 turn left 10 as well"), "two 737s flying")
   asked(ex("SAS31 turn left 10, and the 777 as well"), "no instruction word after the type")
 end
+
+-- Cycle 45 (s103a): an airline's IATA designator typed in capitals against a flight number ("QF12") is the
+-- aircraft flying under its ICAO prefix with the same characters; anything else is asked, and two letters that
+-- squawk reads otherwise (a command, a setting, a type) or that an aircraft flies under are never an airline's
+do
+  local _, ex = scene({ "CRE QFA12 B789 50.0 8.0 090 FL300 280", "CRE SIA3TK A359 50.2 8.2 270 FL340 280",
+    "CRE VIR77 A35K 50.4 8.4 180 FL360 280", "CRE DTA515 B77W 50.6 8.6 090 FL320 280",
+    "CRE PGT12 A20N 50.8 8.8 090 FL200 250" })
+  check_eq(ex("QF12 descend FL260 for the sequence"), "ALT QFA12 FL260")
+  check_eq(ex("SQ3TK turn left heading 240"), "HDG SIA3TK 240 LEFT")
+  check_eq(ex("QFA12 climb FL320"), "ALT QFA12 FL320")
+  -- (the ICAO designator plus the characters typed flies no aircraft: asked, naming the aircraft one slip away)
+  check_eq(ex("QF13 descend FL260"), "ASK Did you mean QFA12? There is no QF13.")
+  check_eq(ex("SQ3TX descend FL260"), "ASK Did you mean SIA3TK? There is no SQ3TX.")
+  -- (lower case is no IATA designator typed: asked)
+  asked(ex("qf12 descend FL260"), "an IATA code in lower case")
+  -- (VS is the vertical speed command and DT a registry name: Virgin's and TAAG's codes are never read)
+  asked(ex("VS77 climb FL380"), "VS is a command")
+  asked(ex("DT515 climb FL340"), "DT is a registry name")
+  -- (FL and a type designator stay what they are: "PC12" is the Pilatus, not Pegasus 12)
+  check_eq(ex("QF12 FL280"), "ALT QFA12 FL280")
+  asked(ex("PC12 climb FL240"), "PC12 is a type")
+end
+do
+  -- (an aircraft flying under the two letters themselves: no IATA reading, the near callsigns asked)
+  local _, ex = scene({ "CRE QFA12 B789 50.0 8.0 090 FL300 280", "CRE QF13 C172 50.2 8.2 270 5000 110" })
+  check_eq(ex("QF12 descend FL260"), "ASK Did you mean QFA12 or QF13? There is no QF12.")
+  check_eq(ex("QF13 climb 6000"), "ALT QF13 6000")
+end
+-- every IATA designator names an airline names.lua knows by its telephony or its name
+do
+  local names = require("translate.names")
+  local known = {}
+  for _, a in ipairs(names.airlines) do known[a[2]] = true end
+  for _, a in ipairs(names.common) do known[a[2]] = true end
+  for code, icao in pairs(names.iata) do
+    check(code:match("^%u%u$") ~= nil and known[icao], "names.iata " .. code .. " -> " .. icao)
+  end
+end
