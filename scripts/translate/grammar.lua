@@ -1427,6 +1427,28 @@ function G:past_told(k)
   return true
 end
 
+-- True when the comma at k ends a diversion ("divert IAH, wx at DFW", "divert to DXB, DOH closed", "send it to
+-- MUC instead, crew sick"): the last instruction word before it in its sentence is "divert", "diverting" or
+-- "send" read as a destination, and the clause after it, to the sentence's end, holds no instruction word,
+-- aircraft or value, opens with none of lexicon.diversion_not_reason and holds a word beside its places: why the
+-- aircraft diverts (a place named in it is no second destination).
+function G:diversion_reason(k)
+  local x = k - 1
+  while x > 0 and not (self.t[x].kind == "punct" and self.t[x].text ~= ",") and not self:intent_at(x) do x = x - 1 end
+  if x < 1 or self:intent_at(x) ~= "dest" or not self:word(x, "divert diverting send") then return false end
+  local e = commentary_end(self, k + 1)
+  if e == k + 1 or self:word(k + 1, "@diversion_not_reason") or #self:quantities(k + 1, e) > 0
+      or self:has_ref(k + 1, e, "aircraft") then
+    return false
+  end
+  local words = 0  -- (words beside the places: a place alone, "Send UPS2971 to Louisville, KSDF", names it again)
+  for y = k + 1, e - 1 do
+    if self:intent_at(y) then return false end
+    if self.t[y].kind == "word" and not self:has_ref(y, y + 1, "waypoint") then words = words + 1 end
+  end
+  return words > 0
+end
+
 local REASON_WORDS = word_set("@reason")
 function G:in_reason(i)
   if not self.reason then
@@ -1478,6 +1500,8 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1), false, true) then
         -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
         -- ", as the controller did at 10:42:15")
+        inside = true
+      elseif punct and t.text == "," and self:diversion_reason(k) then
         inside = true
       elseif not start and self:past_told(k) then
         -- ("resume the simulation from the point at which it was paused": the past told, nothing instructed)
@@ -5694,7 +5718,7 @@ end
 -- no aircraft type ("PC12") and the two letters are nothing else squawk reads (G.IATA holds only those: no
 -- command or alias, "VS", "DT"; no setting key, "FL"; no unit, "FT", "KT"). Else the word stays as typed: a
 -- callsign of no aircraft, asked about.
-G.IATA = {}
+G.IATA, G.IATA_AIRPORTS = {}, names.iata_airports
 do
   local read = {}
   for w in pairs(SETTING_KEYS) do read[w] = true end  -- (registry names and aliases, shorthand, setting keys)

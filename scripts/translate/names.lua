@@ -529,6 +529,29 @@ local names = {
     WS = "WJA", WG = "SWG", AV = "AVA", CM = "CMP", LA = "LAN", JJ = "TAM", LP = "LPE", XL = "LNE", AR = "ARG",
     CV = "CLX",
   },
+  -- iata_airports: a large airport's IATA code (three capital letters) -> its ICAO code, for codes certain; read
+  -- typed in capitals where an airport is meant ("divert AUH", "send it to MUC": translate/handlers_other.lua
+  -- dest_orig). Three capitals not listed are asked after "divert" or "send", never guessed from navdata names.
+  iata_airports = {
+    -- Europe
+    FRA = "EDDF", MUC = "EDDM", DUS = "EDDL", CGN = "EDDK", STR = "EDDS", HAM = "EDDH", BER = "EDDB",
+    LHR = "EGLL", LGW = "EGKK", MAN = "EGCC", CDG = "LFPG", ORY = "LFPO", AMS = "EHAM", BRU = "EBBR",
+    ZRH = "LSZH", GVA = "LSGG", VIE = "LOWW", CPH = "EKCH", ARN = "ESSA", OSL = "ENGM", HEL = "EFHK",
+    DUB = "EIDW", MAD = "LEMD", BCN = "LEBL", LIS = "LPPT", FCO = "LIRF", MXP = "LIMC", IST = "LTFM",
+    ATH = "LGAV", WAW = "EPWA", PRG = "LKPR", BUD = "LHBP",
+    -- the Middle East, Africa, Asia and the Pacific
+    DXB = "OMDB", DWC = "OMDW", AUH = "OMAA", SHJ = "OMSJ", DOH = "OTHH", BAH = "OBBI", KWI = "OKBK",
+    MCT = "OOMS", RUH = "OERK", JED = "OEJN", CAI = "HECA", TLV = "LLBG", JNB = "FAOR", CPT = "FACT",
+    NBO = "HKJK", ADD = "HAAB", DEL = "VIDP", BOM = "VABB", SIN = "WSSS", HKG = "VHHH", BKK = "VTBS",
+    KUL = "WMKK", NRT = "RJAA", HND = "RJTT", ICN = "RKSI", PEK = "ZBAA", PVG = "ZSPD", SYD = "YSSY",
+    MEL = "YMML", AKL = "NZAA",
+    -- the Americas
+    DFW = "KDFW", DAL = "KDAL", IAH = "KIAH", HOU = "KHOU", AUS = "KAUS", SAT = "KSAT", JFK = "KJFK",
+    EWR = "KEWR", LGA = "KLGA", BOS = "KBOS", ORD = "KORD", ATL = "KATL", LAX = "KLAX", SFO = "KSFO",
+    SEA = "KSEA", DEN = "KDEN", MIA = "KMIA", PHX = "KPHX", LAS = "KLAS", MCO = "KMCO", IAD = "KIAD",
+    DCA = "KDCA", CLT = "KCLT", MSP = "KMSP", DTW = "KDTW", PHL = "KPHL", YYZ = "CYYZ", YUL = "CYUL",
+    YVR = "CYVR", MEX = "MMMX", GRU = "SBGR", EZE = "SAEZ", SCL = "SCEL", BOG = "SKBO", LIM = "SPJC",
+  },
   common = {
     { "ba", "BAW" },
     { "british airways", "BAW" },
