@@ -5715,9 +5715,9 @@ end
 -- "LH400 descend FL210", "EK201 down to 250": an airline's IATA designator typed in capitals against a flight
 -- number (names.iata) is the aircraft flying under the airline's ICAO prefix with the same characters after it
 -- ("LH400": DLH400), when that aircraft flies, no aircraft flies under the two letters themselves, the word is
--- no aircraft type ("PC12") and the two letters are nothing else squawk reads (G.IATA holds only those: no
--- command or alias, "VS", "DT"; no setting key, "FL"; no unit, "FT", "KT"). Else the word stays as typed: a
--- callsign of no aircraft, asked about.
+-- no aircraft type ("PC12"), not the id after a creation verb (lexicon.creation_verbs) and the two letters are
+-- nothing else squawk reads (G.IATA holds only those: no command or alias, "VS", "DT"; no setting key, "FL"; no
+-- unit, "FT", "KT"). Else the word stays as typed: a callsign of no aircraft, asked about.
 G.IATA, G.IATA_AIRPORTS = {}, names.iata_airports
 do
   local read = {}
@@ -5737,10 +5737,15 @@ function G.iata_ids(text, fleet)
     ids[a.id:upper()] = a.id
     own[a.id:upper():match("^%a*")] = true
   end
-  return (text:gsub("%f[%w](%u%u)(%d%w*)%f[%W]", function(code, rest)
+  return (text:gsub("()%f[%w](%u%u)(%d%w*)%f[%W]", function(at, code, rest)
     local icao, typed = G.IATA[code], (code .. rest):upper()
     local id = icao and ids[(icao .. rest):upper()]
-    if id and not own[code] and not ids[typed] and not G.IATA_TYPES[typed] then return id end
+    -- (the id of an aircraft created, "create LH400, a B738 ...", is new, as typed)
+    local before = id and text:sub(math.max(1, at - 12), at - 1):match("(%a+)%W*$")
+    if id and not own[code] and not ids[typed] and not G.IATA_TYPES[typed]
+        and not (before and lexicon.creation_verbs[before:lower()]) then
+      return id
+    end
     return nil
   end))
 end

@@ -8652,6 +8652,8 @@ do
   -- (FL and a type designator stay what they are: "PC12" is the Pilatus, not Pegasus 12)
   check_eq(ex("QF12 FL280"), "ALT QFA12 FL280")
   asked(ex("PC12 climb FL240"), "PC12 is a type")
+  -- (the id after a creation verb is the new aircraft's, as typed)
+  check_eq(ex("create QF12, a B738 at 51 9 heading 090 FL100 250 knots"), "CRE QF12 B738 51 9 90 FL100 250")
 end
 do
   -- (an aircraft flying under the two letters themselves: no IATA reading, the near callsigns asked)
