@@ -1179,11 +1179,6 @@ return function(intent, rule, words)
     local at = g:word(i + 1, "at in") and i + 1 or g:word(i + 1, "it him her them") and g:word(i + 2, "at in") and i + 2
     return at and earlier(g, i, "addwpt") and airport_at(g, at + 1) or false
   end }
-  -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
-  -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata ("divert Ryanair
-  -- 23AB to Eindhoven", "KLM1234 divert to EHRD": diverted to an airport, the new destination)
-  -- ("route VIR9 to Heathrow", "send him to Charleroi": a city said for its airport, lexicon.city_airports,
-  -- is an airport too)
   -- True when the word at k names an airport where one is meant: an airport's ICAO code, a name of the navdata's
   -- airports, a city of lexicon.city_airports, or (`placed`: said where a place is, after "to" or "divert")
   -- three capitals (an IATA code, names.iata_airports, or asked by the handler: "send it to MUC") or a
@@ -1198,6 +1193,11 @@ return function(intent, rule, words)
     return named ~= nil and t.alpha and #t.text >= 4 and (#named(t.text) > 0 or CITY_AIRPORTS[t.text] ~= nil
       or (placed and t.raw:match("^%u") ~= nil and #city(t.text) > 0))
   end
+  -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
+  -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata ("divert Ryanair
+  -- 23AB to Eindhoven", "KLM1234 divert to EHRD": diverted to an airport, the new destination)
+  -- ("route VIR9 to Heathrow", "send him to Charleroi": a city said for its airport, lexicon.city_airports,
+  -- is an airport too)
   local function sent_to_airport(g, i)
     local to = g:find_word(i + 1, math.min(#g.t + 1, i + 5), "to")
     if g:word(to - 1, "straight direct directly") then return false end  -- ("send it straight to Barcelona")
