@@ -1552,6 +1552,28 @@ function G:past_told(k)
   return true
 end
 
+-- True when the comma at k ends a diversion ("divert IAH, wx at DFW", "divert to DXB, DOH closed", "send it to
+-- MUC instead, crew sick"): the last instruction word before it in its sentence is "divert", "diverting" or
+-- "send" read as a destination, and the clause after it, to the sentence's end, holds no instruction word,
+-- aircraft or value, opens with none of lexicon.diversion_not_reason and holds a word beside its places: why the
+-- aircraft diverts (a place named in it is no second destination).
+function G:diversion_reason(k)
+  local x = k - 1
+  while x > 0 and not (self.t[x].kind == "punct" and self.t[x].text ~= ",") and not self:intent_at(x) do x = x - 1 end
+  if x < 1 or self:intent_at(x) ~= "dest" or not self:word(x, "divert diverting send") then return false end
+  local e = commentary_end(self, k + 1)
+  if e == k + 1 or self:word(k + 1, "@diversion_not_reason") or #self:quantities(k + 1, e) > 0
+      or self:has_ref(k + 1, e, "aircraft") then
+    return false
+  end
+  local words = 0  -- (words beside the places: a place alone, "Send UPS2971 to Louisville, KSDF", names it again)
+  for y = k + 1, e - 1 do
+    if self:intent_at(y) then return false end
+    if self.t[y].kind == "word" and not self:has_ref(y, y + 1, "waypoint") then words = words + 1 end
+  end
+  return words > 0
+end
+
 local REASON_WORDS = word_set("@reason")
 function G:in_reason(i)
   if not self.reason then
@@ -1610,6 +1632,8 @@ function G:in_reason(i)
           and self:commentary(k + 1, commentary_end(self, k + 1), false, true) then
         -- ("Descend KLM12 to FL120, as the transcript shows", ", which is what the controller ought to have done",
         -- ", as the controller did at 10:42:15")
+        inside = true
+      elseif punct and t.text == "," and self:diversion_reason(k) then
         inside = true
       elseif not start and self:past_told(k) then
         -- ("resume the simulation from the point at which it was paused": the past told, nothing instructed)
@@ -5904,6 +5928,44 @@ local function abbreviated_registrations(text, fleet)
   return text, nil
 end
 
+-- "LH400 descend FL210", "EK201 down to 250": an airline's IATA designator typed in capitals against a flight
+-- number (names.iata) is the aircraft flying under the airline's ICAO prefix with the same characters after it
+-- ("LH400": DLH400), when that aircraft flies, no aircraft flies under the two letters themselves, the word is
+-- no aircraft type ("PC12"), not the id after a creation verb (lexicon.creation_verbs) and the two letters are
+-- nothing else squawk reads (G.IATA holds only those: no command or alias, "VS", "DT"; no setting key, "FL"; no
+-- unit, "FT", "KT"). Else the word stays as typed: a callsign of no aircraft, asked about.
+G.IATA, G.IATA_AIRPORTS = {}, names.iata_airports
+do
+  local read = {}
+  for w in pairs(SETTING_KEYS) do read[w] = true end  -- (registry names and aliases, shorthand, setting keys)
+  for w in pairs(lexicon.value_units) do read[w] = true end
+  for _, w in ipairs(lexicon.speed_units) do read[w] = true end
+  for code, icao in pairs(names.iata) do
+    if not read[code:lower()] then G.IATA[code] = icao end
+  end
+  G.IATA_TYPES = {}
+  for _, d in ipairs(TYPES.designators) do G.IATA_TYPES[d:upper()] = true end
+end
+function G.iata_ids(text, fleet)
+  if #fleet == 0 or not text:find("%u%u%d") then return text end
+  local ids, own = {}, {}
+  for _, a in ipairs(fleet) do
+    ids[a.id:upper()] = a.id
+    own[a.id:upper():match("^%a*")] = true
+  end
+  return (text:gsub("()%f[%w](%u%u)(%d%w*)%f[%W]", function(at, code, rest)
+    local icao, typed = G.IATA[code], (code .. rest):upper()
+    local id = icao and ids[(icao .. rest):upper()]
+    -- (the id of an aircraft created, "create LH400, a B738 ...", is new, as typed)
+    local before = id and text:sub(math.max(1, at - 12), at - 1):match("(%a+)%W*$")
+    if id and not own[code] and not ids[typed] and not G.IATA_TYPES[typed]
+        and not (before and lexicon.creation_verbs[before:lower()]) then
+      return id
+    end
+    return nil
+  end))
+end
+
 -- "turn the Ryanair 20 degrees to the right": after "the" and an airline, a
 -- number with a unit is the instruction's value, no flight number (unless an
 -- aircraft has that id); a comma keeps the callsign matcher off it.
@@ -6327,7 +6389,7 @@ function M.quoted_clearance(text, world)
   -- (an instruction word outside, "... replay it and pause the simulation", is a request of its own: read whole)
   if not framed or M.has_instruction(table.concat(rest, " ")) then return nil end
   local fleet = world.aircraft
-  outside = airline_values(named_airline_ids(split_ids(unglued_ids(outside, fleet), fleet)), fleet)
+  outside = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(outside, fleet), fleet), fleet)), fleet)
   outside = outside:gsub("%f[%d:]%d%d?:[0-5]%d:[0-5]%d%f[^%d:]", " ")
   -- (an aircraft named outside: an id of the fleet, or a word with a digit after one to three capitalised words,
   -- "Air Europa 5507"; any other word with a digit is a value)
@@ -6489,7 +6551,8 @@ function M.translate(text, world)
       low = text:lower()
     end
   end
-  text = airline_values(named_airline_ids(split_ids(unglued_ids(text, world.aircraft), world.aircraft)), world.aircraft)
+  text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
+    world.aircraft)), world.aircraft)
   text = homophone_ids(glued_telephony(text, world.aircraft), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)

@@ -1605,9 +1605,13 @@ function m:near_callsigns(heard)
   end
   local out = {}
   local ha, hr = heard:upper():match("^(%a*)(.*)$")
+  -- (an airline's IATA designator for its ICAO prefix, "LH401" with DLH400 flying: grammar.lua G.iata_ids)
+  local icao = #ha == 2 and self.IATA[ha]
   for _, a in ipairs(self.fleet) do
     local aa, ar = a.id:upper():match("^(%a*)(.*)$")
-    if (aa == ha and slips(ar, hr) == 1) or (ar == hr and slips(aa, ha) == 1) then out[#out + 1] = a.id end
+    if ((aa == ha or aa == icao) and slips(ar, hr) == 1) or (ar == hr and slips(aa, ha) == 1) then
+      out[#out + 1] = a.id
+    end
   end
   return out
 end

@@ -2493,6 +2493,34 @@ return function(H, f, compass)
     self:explain(k, k + 1)
     return code
   end
+  -- "divert AUH", "send it to DXB", "destination MUC": three capitals typed where the place is said, straight after
+  -- the instruction word (an aircraft, "to", "it", "him", "her" or "them" between). A large airport's IATA code
+  -- (names.iata_airports) whose airport the navdata holds is that airport, returned with the code's token (marked
+  -- used); after "divert" or "send", any other (and any without navdata) is false, asked, never guessed from the
+  -- navdata's names; nil when no such word stands there.
+  local function iata_airport(self, s)
+    local k = s.trig + 1
+    while k < s.e do
+      local r = self:refs_in(k, k + 1, "aircraft")[1]
+      if r and r.b == k then
+        k = r.e
+      elseif self:word(k, "to it him her them") then
+        k = k + 1
+      else
+        break
+      end
+    end
+    local t = self.t[k]
+    if k >= s.e or t.kind ~= "word" or not t.raw:match("^%u%u%u$") then return nil end
+    local code, class = self.IATA_AIRPORTS[t.raw], self.world.airport_class
+    if code and class and (class(code) or "") ~= "" then
+      self:mark_used(k, k + 1)
+      self:explain(k, k + 1)
+      return code, k
+    end
+    if self:word(s.trig, "divert diverting send") then return false, k end
+    return nil
+  end
   -- "Heathrow as its destination": the first token of the place said before "as (its|the)" and the
   -- instruction word at `trig` (at most four words, after "and", "then", "with" or punctuation), and the
   -- token of "as"; nil when the word stands otherwise
@@ -2558,13 +2586,21 @@ return function(H, f, compass)
         break
       end
     end
-    local w = self:refs_in(s.b, s.e, "waypoint")
+    local coded, at = iata_airport(self, s)
+    if coded == false then
+      return self:need(string.format("Which airport is '%s'? Please give its ICAO code.", self.t[at].raw))
+    end
+    local w = {}
+    for _, r in ipairs(self:refs_in(s.b, s.e, "waypoint")) do
+      -- (not the IATA code read, "FRA" beside the FRA VOR, nor a place in the reason: "divert IAH, wx at DFW")
+      if r.b ~= at and not self:in_reason(r.b) then w[#w + 1] = r end
+    end
     local lat, lon = position(self:quantities(s.b, s.e), s.trig, self)
     -- (an airport of that name near the aircraft before one anywhere: "Birmingham" over England is EGBB)
     local a = here
     -- (a code spelled beside a name, "Athens, Lima Golf Alpha Victor", is the one meant; one typed in lower
     -- case straight after the word, "orig eddf, dest eham", is that airport)
-    local spelled = spelled_airport(self, s) or typed_airport(self, s)
+    local spelled = coded or spelled_airport(self, s) or typed_airport(self, s)
     local near = spelled or (a and self:airport_of_city_said(s.b, s.e, a)) or (a and self:airport_by_name(s.b, s.e, a, true))
     local airport = near or self:airport_by_name(s.b, s.e)
     -- (a city whose airport lies farther, none of its name read through lexicon.city_airports: the region's,

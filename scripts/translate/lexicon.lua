@@ -472,6 +472,10 @@ return {
   instruction_nouns = { "speed", "spd", "altitude", "alt", "level", "fl", "flight", "heading", "hdg", "mach" },
   -- words that open a condition: "when AC01 reaches FL200, ..."
   condition = { "when", "once", "after" },
+  -- words that, opening the clause after a diversion and its comma, make it no reason but when or where it
+  -- happens ("divert to EDDK, at TAU", "send it to MUC, after KERAX": asked; grammar.lua G:diversion_reason)
+  diversion_not_reason = { "at", "after", "over", "passing", "abeam", "when", "once", "before", "by", "via",
+                           "leaving", "reaching", "until", "till", "in", "on", "then", "and" },
   -- verbs that make a bare number in a condition a speed ("once AFR1023 slows to 250")
   speed_verbs = { "slows", "slowed", "slow", "accelerates", "accelerated", "decelerates", "decelerated" },
   -- words before a level that make the next instruction wait for it

@@ -504,6 +504,54 @@ local names = {
     { "unity", "UTY" },  -- (Alliance Airlines)
     { "mount cook", "NZM" },  -- (Air New Zealand Link)
   },
+  -- iata: an airline's IATA designator (two capital letters) -> its ICAO prefix, for airlines above whose
+  -- pair is certain; read before a flight number typed against it ("LH400": DLH400) only where that aircraft
+  -- flies (translate/grammar.lua G.iata_ids). Codes with a digit ("U2", "B6") and those that are English words
+  -- ("AS", "AT", "BY", "ME", "OK", "TO", "UP": Alaska, Royal Air Maroc, TUI, MEA, CSA, Transavia France,
+  -- Bahamasair) are left out; a code that is a command, a setting or a unit squawk reads ("VS", "DT") is
+  -- never read as an airline's.
+  iata = {
+    -- Europe
+    LH = "DLH", CL = "CLH", EN = "DLA", DE = "CFG", EW = "EWG", LX = "SWR", WK = "EDW", OS = "AUA", SN = "BEL",
+    KL = "KLM", HV = "TRA", AF = "AFR", BA = "BAW", IB = "IBE", UX = "AEA", VY = "VLG", EI = "EIN", FR = "RYR",
+    LS = "EXS", LM = "LOG", VS = "VIR", TP = "TAP", SK = "SAS", DY = "NAX", WF = "WIF", AY = "FIN", FI = "ICE",
+    BT = "BTI", LO = "LOT", QS = "TVS", RO = "ROT", FB = "LZB", OU = "CTN", JU = "ASL", OA = "OAL", LG = "LGL",
+    TK = "THY", PC = "PGT", XQ = "SXS", PS = "AUI", SU = "AFL", FV = "SDM", DP = "PBD",
+    -- the Middle East, Africa and Asia
+    EK = "UAE", FZ = "FDB", QR = "QTR", EY = "ETD", GF = "GFA", KU = "KAC", WY = "OMA", SV = "SVA", RJ = "RJA",
+    LY = "ELY", MS = "MSR", AH = "DAH", TU = "TAR", ET = "ETH", KQ = "KQA", SA = "SAA", DT = "DTA", TM = "LAM",
+    MK = "MAU", KP = "SKK", KC = "KZR", HY = "UZB", AI = "AIC", PK = "PIA", UL = "ALK", SQ = "SIA", TG = "THA",
+    MH = "MAS", GA = "GIA", PR = "PAL", VN = "HVN", CX = "CPA", CI = "CAL", BR = "EVA", JL = "JAL", NH = "ANA",
+    KE = "KAL", OZ = "AAR", CA = "CCA", MU = "CES", CZ = "CSN", HU = "CHH", QF = "QFA", NZ = "ANZ",
+    -- the Americas
+    AA = "AAL", UA = "UAL", DL = "DAL", WN = "SWA", NK = "NKS", MQ = "ENY", OO = "SKW", YX = "RPA", YV = "ASH",
+    ZW = "AWI", QX = "QXE", HA = "HAL", SY = "SCX", FX = "FDX", AC = "ACA", QK = "JZA", TS = "TSC", PD = "POE",
+    WS = "WJA", WG = "SWG", AV = "AVA", CM = "CMP", LA = "LAN", JJ = "TAM", LP = "LPE", XL = "LNE", AR = "ARG",
+    CV = "CLX",
+  },
+  -- iata_airports: a large airport's IATA code (three capital letters) -> its ICAO code, for codes certain; read
+  -- typed in capitals where an airport is meant ("divert AUH", "send it to MUC": translate/handlers_other.lua
+  -- dest_orig). Three capitals not listed are asked after "divert" or "send", never guessed from navdata names.
+  iata_airports = {
+    -- Europe
+    FRA = "EDDF", MUC = "EDDM", DUS = "EDDL", CGN = "EDDK", STR = "EDDS", HAM = "EDDH", BER = "EDDB",
+    LHR = "EGLL", LGW = "EGKK", MAN = "EGCC", CDG = "LFPG", ORY = "LFPO", AMS = "EHAM", BRU = "EBBR",
+    ZRH = "LSZH", GVA = "LSGG", VIE = "LOWW", CPH = "EKCH", ARN = "ESSA", OSL = "ENGM", HEL = "EFHK",
+    DUB = "EIDW", MAD = "LEMD", BCN = "LEBL", LIS = "LPPT", FCO = "LIRF", MXP = "LIMC", IST = "LTFM",
+    ATH = "LGAV", WAW = "EPWA", PRG = "LKPR", BUD = "LHBP",
+    -- the Middle East, Africa, Asia and the Pacific
+    DXB = "OMDB", DWC = "OMDW", AUH = "OMAA", SHJ = "OMSJ", DOH = "OTHH", BAH = "OBBI", KWI = "OKBK",
+    MCT = "OOMS", RUH = "OERK", JED = "OEJN", CAI = "HECA", TLV = "LLBG", JNB = "FAOR", CPT = "FACT",
+    NBO = "HKJK", ADD = "HAAB", DEL = "VIDP", BOM = "VABB", SIN = "WSSS", HKG = "VHHH", BKK = "VTBS",
+    KUL = "WMKK", NRT = "RJAA", HND = "RJTT", ICN = "RKSI", PEK = "ZBAA", PVG = "ZSPD", SYD = "YSSY",
+    MEL = "YMML", AKL = "NZAA",
+    -- the Americas
+    DFW = "KDFW", DAL = "KDAL", IAH = "KIAH", HOU = "KHOU", AUS = "KAUS", SAT = "KSAT", JFK = "KJFK",
+    EWR = "KEWR", LGA = "KLGA", BOS = "KBOS", ORD = "KORD", ATL = "KATL", LAX = "KLAX", SFO = "KSFO",
+    SEA = "KSEA", DEN = "KDEN", MIA = "KMIA", PHX = "KPHX", LAS = "KLAS", MCO = "KMCO", IAD = "KIAD",
+    DCA = "KDCA", CLT = "KCLT", MSP = "KMSP", DTW = "KDTW", PHL = "KPHL", YYZ = "CYYZ", YUL = "CYUL",
+    YVR = "CYVR", MEX = "MMMX", GRU = "SBGR", EZE = "SAEZ", SCL = "SCEL", BOG = "SKBO", LIM = "SPJC",
+  },
   common = {
     { "ba", "BAW" },
     { "british airways", "BAW" },

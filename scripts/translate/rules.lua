@@ -1217,6 +1217,20 @@ return function(intent, rule, words)
     local at = g:word(i + 1, "at in") and i + 1 or g:word(i + 1, "it him her them") and g:word(i + 2, "at in") and i + 2
     return at and earlier(g, i, "addwpt") and airport_at(g, at + 1) or false
   end }
+  -- True when the word at k names an airport where one is meant: an airport's ICAO code, a name of the navdata's
+  -- airports, a city of lexicon.city_airports, or (`placed`: said where a place is, after "to" or "divert")
+  -- three capitals (an IATA code, names.iata_airports, or asked by the handler: "send it to MUC") or a
+  -- capitalised word a large airport's name starts with ("Austin")
+  local function airport_word(g, k, placed)
+    for _, r in ipairs(g:refs_in(k, k + 1, "waypoint")) do
+      if r.b == k and r.name:match("^%a%a%a%a$") then return true end
+    end
+    local t, named, city = g.t[k], g.world.airports_named, g.world.airports_of_city
+    if t == nil or t.kind ~= "word" then return false end
+    if placed and t.raw:match("^%u%u%u$") then return true end
+    return named ~= nil and t.alpha and #t.text >= 4 and (#named(t.text) > 0 or CITY_AIRPORTS[t.text] ~= nil
+      or (placed and t.raw:match("^%u") ~= nil and #city(t.text) > 0))
+  end
   -- "Send UPS2971 to Louisville, KSDF", "send AAL100 to KBOS and have it climb": an airport (four letters) sent
   -- to; "send it to Heathrow": the one word after "to" names an airport of the navdata ("divert Ryanair
   -- 23AB to Eindhoven", "KLM1234 divert to EHRD": diverted to an airport, the new destination)
@@ -1228,11 +1242,18 @@ return function(intent, rule, words)
     for _, r in ipairs(g:refs_in(to + 1, math.min(#g.t + 1, to + 5), "waypoint")) do
       if r.name:match("^%a%a%a%a$") then return true end
     end
-    local t, named = g.t[to + 1], g.world.airports_named
-    return named ~= nil and t ~= nil and t.kind == "word" and t.alpha and #t.text >= 4
-      and (#named(t.text) > 0 or CITY_AIRPORTS[t.text] ~= nil)
+    return airport_word(g, to + 1, g:word(to, "to"))
   end
   rule { "send divert diverting", "dest", when = sent_to_airport }
+  -- "UAE201 divert AUH", "divert Cologne", "divert DLH458 EDDK": the place straight after "divert" (and the
+  -- aircraft diverted), no "to"
+  rule { "divert diverting", "dest", when = function(g, i)
+    local k = i + 1
+    for _, r in ipairs(g:refs_in(k, k + 1, "aircraft")) do
+      if r.b == k then k = r.e end
+    end
+    return airport_word(g, k, true)
+  end }
   -- "route VIR9 to Heathrow", "reroute the Air France to Lyon": the aircraft straight after the verb, then
   -- "to" and an airport ("route DAL88 via MERIT ..." lists waypoints)
   rule { "route reroute", "dest", when = function(g, i)

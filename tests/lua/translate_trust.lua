@@ -349,12 +349,13 @@ if #sim:airports_named("schiphol") == 1 then
   local _, cht = set_up(ch, {})
   check(cht("swiss one two proceed direct zurich east"):find("DIRECT SWR12 ZUE", 1, true) ~= nil)
   check(cht("swiss one two proceed direct zurich"):find("DIRECT SWR12 LSZH", 1, true) ~= nil)
-  -- an airport meant by its three-letter code beside its VOR (JFK -> KJFK), near or far; a code
-  -- whose nearest navaid has no such airport beside it (LHR: the Lahr NDB) stays as said
+  -- an airport meant by its three-letter code beside its VOR (JFK -> KJFK), near or far; a large airport's
+  -- IATA code (names.iata_airports) is that airport though another navaid of the code is nearer (LHR: the
+  -- Lahr NDB)
   check_eq(ustr("set FDX1288's origin to JFK"), "ORIG FDX1288 KJFK")
   check_eq(ustr("JBU1116 destination SFO"), "DEST JBU1116 KSFO")
   check_eq(ukt("set the origin of BAW12 to JFK"), "ORIG BAW12 KJFK")
-  check_eq(ukt("BAW12 destination LHR"), "DEST BAW12 LHR")
+  check_eq(ukt("BAW12 destination LHR"), "DEST BAW12 EGLL")
   -- "send X to <airport by name>" is a destination
   check_eq(ukt("send Speedbird 12 to Gatwick"), "DEST BAW12 EGKK")
   check_eq(etr("create KLM5 a B738 at JFK heading 090 FL100 250 knots"), "CRE KLM5 B738 KJFK 90 FL100 250")
@@ -8919,5 +8920,96 @@ do
   if ex then
     check_eq(ex("crear latam 4411 airbus 320 en gavol rumbo 150 nivel 220 280 nudos"),
       "CRE LAN4411 A320 GAVOL 150 FL220 280")
+  end
+end
+
+-- Cycle 45 (s103a): an airline's IATA designator typed in capitals against a flight number ("QF12") is the
+-- aircraft flying under its ICAO prefix with the same characters; anything else is asked, and two letters that
+-- squawk reads otherwise (a command, a setting, a type) or that an aircraft flies under are never an airline's
+do
+  local _, ex = scene({ "CRE QFA12 B789 50.0 8.0 090 FL300 280", "CRE SIA3TK A359 50.2 8.2 270 FL340 280",
+    "CRE VIR77 A35K 50.4 8.4 180 FL360 280", "CRE DTA515 B77W 50.6 8.6 090 FL320 280",
+    "CRE PGT12 A20N 50.8 8.8 090 FL200 250" })
+  check_eq(ex("QF12 descend FL260 for the sequence"), "ALT QFA12 FL260")
+  check_eq(ex("SQ3TK turn left heading 240"), "HDG SIA3TK 240 LEFT")
+  check_eq(ex("QFA12 climb FL320"), "ALT QFA12 FL320")
+  -- (the ICAO designator plus the characters typed flies no aircraft: asked, naming the aircraft one slip away)
+  check_eq(ex("QF13 descend FL260"), "ASK Did you mean QFA12? There is no QF13.")
+  check_eq(ex("SQ3TX descend FL260"), "ASK Did you mean SIA3TK? There is no SQ3TX.")
+  -- (lower case is no IATA designator typed: asked)
+  asked(ex("qf12 descend FL260"), "an IATA code in lower case")
+  -- (VS is the vertical speed command and DT a registry name: Virgin's and TAAG's codes are never read)
+  asked(ex("VS77 climb FL380"), "VS is a command")
+  asked(ex("DT515 climb FL340"), "DT is a registry name")
+  -- (FL and a type designator stay what they are: "PC12" is the Pilatus, not Pegasus 12)
+  check_eq(ex("QF12 FL280"), "ALT QFA12 FL280")
+  asked(ex("PC12 climb FL240"), "PC12 is a type")
+  -- (the id after a creation verb is the new aircraft's, as typed)
+  check_eq(ex("create QF12, a B738 at 51 9 heading 090 FL100 250 knots"), "CRE QF12 B738 51 9 90 FL100 250")
+end
+do
+  -- (an aircraft flying under the two letters themselves: no IATA reading, the near callsigns asked)
+  local _, ex = scene({ "CRE QFA12 B789 50.0 8.0 090 FL300 280", "CRE QF13 C172 50.2 8.2 270 5000 110" })
+  check_eq(ex("QF12 descend FL260"), "ASK Did you mean QFA12 or QF13? There is no QF12.")
+  check_eq(ex("QF13 climb 6000"), "ALT QF13 6000")
+end
+-- every IATA designator names an airline names.lua knows by its telephony or its name
+do
+  local names = require("translate.names")
+  local known = {}
+  for _, a in ipairs(names.airlines) do known[a[2]] = true end
+  for _, a in ipairs(names.common) do known[a[2]] = true end
+  for code, icao in pairs(names.iata) do
+    check(code:match("^%u%u$") ~= nil and known[icao], "names.iata " .. code .. " -> " .. icao)
+  end
+end
+
+-- Cycle 45 (s103a): a diversion said by airline operations: "divert" with or without "to", "send it to", a large
+-- airport's IATA code typed in capitals (names.iata_airports) or a city; three capitals not in that list (or
+-- without navdata) are asked; a reason after the comma ("DOH closed", "wx at DFW", "crew sick") is no
+-- instruction, condition or place
+do
+  local s, ex = scene({ "CRE DLH77 A359 50.0 8.0 090 FL350 280", "CRE SWA88 B737 32.8 -97.0 180 FL200 270" })
+  -- (three capitals that are no listed airport's code are asked, never guessed; so is any without navdata)
+  check_eq(ex("DLH77 divert XQZ"), "ASK Which airport is 'XQZ'? Please give its ICAO code.")
+  check_eq(ex("SWA88 send it to ACT"), "ASK Which airport is 'ACT'? Please give its ICAO code.")
+  if s:airport_class("EDDH") == "" then
+    check_eq(ex("DLH77 divert to HAM"), "ASK Which airport is 'HAM'? Please give its ICAO code.")
+  end
+end
+do
+  local _, ex = navscene({ "CRE DLH77 A359 50.0 8.0 090 FL350 280", "CRE UAE9 A388 25.0 55.0 270 FL360 290",
+    "CRE SWA88 B737 32.8 -97.0 180 FL200 270" }, "diversions by city and IATA code")
+  if ex then
+    check_eq(ex("UAE9 divert SHJ"), "DEST UAE9 OMSJ")
+    check_eq(ex("DLH77 divert to HAM, pax medical"), "DEST DLH77 EDDH")
+    check_eq(ex("send it to HOU, SWA88"), "DEST SWA88 KHOU")
+    check_eq(ex("SWA88 send him to AUS instead"), "DEST SWA88 KAUS")
+    check_eq(ex("divert SWA88 SAT"), "DEST SWA88 KSAT")
+    check_eq(ex("DLH77 destination MUC"), "DEST DLH77 EDDM")
+    check_eq(ex("DLH77 divert Cologne"), "DEST DLH77 EDDK")
+    check_eq(ex("SWA88 divert to Austin"), "DEST SWA88 KAUS")
+    check_eq(ex("DLH77 divert FRA"), "DEST DLH77 EDDF")  -- (the airport, not the FRA VOR)
+    -- (a reason after the comma, places in it included, is no second destination nor a condition)
+    check_eq(ex("UAE9 divert to AUH, DXB fog"), "DEST UAE9 OMAA")
+    check_eq(ex("DLH77 divert to Stuttgart, FRA closed"), "DEST DLH77 EDDS")
+    check_eq(ex("SWA88 divert DAL, wx at DFW"), "DEST SWA88 KDAL")
+    check_eq(ex("SWA88 divert to IAH, storms over DAL"), "DEST SWA88 KIAH")
+    -- (the place alone after the comma names the airport again: no reason; "Louisville" alone is KLOU or KSDF)
+    check_eq(ex("SWA88 divert to Louisville, KSDF"), "DEST SWA88 KSDF")
+    -- (an instruction, an aircraft or a value after the comma is no reason; a clause opening with "at" or
+    -- "after" says where, asked)
+    check_eq(ex("DLH77 divert to HAM, descend FL200"), "DEST DLH77 EDDH ; ALT DLH77 FL200")
+    asked(ex("DLH77 divert to HAM, FL200"), "a value after the comma")
+    asked(ex("DLH77 divert to HAM, at KERAX"), "where the diversion starts")
+    asked(ex("DLH77 divert to HAM, after KERAX"), "when the diversion starts")
+    -- (a listed code whose airport the navdata lacks, Hamad OTHH: asked)
+    asked(ex("DLH77 divert DOH"), "an airport the navdata lacks")
+  end
+end
+-- every IATA airport code is three capitals and names an ICAO code of four
+do
+  for code, icao in pairs(require("translate.names").iata_airports) do
+    check(code:match("^%u%u%u$") ~= nil and icao:match("^%u%u%u%u$") ~= nil, "names.iata_airports " .. code)
   end
 end
