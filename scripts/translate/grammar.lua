@@ -185,7 +185,8 @@ local function know_all(v, seen)
   -- holds; lexicon.dictated_punctuation is the marks it names: they account for no word; lexicon.heard_as's
   -- words are read only where their neighbours fit, becoming the word they mean, so a heard form left as it was
   -- ("vire a la izquierda": no neighbour fits) is no word squawk knows; lexicon.name_particles are words of a
-  -- place's name ("de los reyes"), accounted for only inside the name read)
+  -- place's name ("de los reyes"), accounted for only inside the name read, and lexicon.digit_homophones digits only
+  -- inside a callsign read ("won", "ate"))
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
@@ -193,7 +194,7 @@ local function know_all(v, seen)
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
       or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.heard_as
-      or v == lexicon.name_particles then
+      or v == lexicon.name_particles or v == lexicon.digit_homophones then
     return
   end
   seen[v] = true
@@ -4800,13 +4801,18 @@ end
 
 -- Two things of one kind joined by "or" ("KLM12 or KLM21 climb", "aeromexico four five zero or four zero five",
 -- "FL240 or FL250", "heading 090 or 100"): a choice squawk may not make for the speaker, asked, naming both. Each
--- side is a value (a token with a digit or a number word) or a callsign or place read; a bound after "or" ("FL240
+-- side is a value (a token with a digit or a number word) or a callsign or place read, or the first an instruction
+-- word after a value ("climb FL300 or turn left heading 200"), or both sides of a turn ("turn left or right
+-- heading 200"); a bound after "or" ("FL240
 -- or above", "250 or less") is no second thing, nor is a multiplier ("nine or thousand": "nine thousand" misheard),
 -- and an "or" inside a reason is no instruction's.
 function G:alternatives()
   local function span(k)  -- the callsign, place or run of value tokens holding token k, as {b, e}; nil if none
     for _, r in ipairs(self.refs) do
       if (r.kind == "aircraft" or r.kind == "waypoint") and r.b <= k and k < r.e then return r.b, r.e end
+    end
+    for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+      if q.b <= k and k < q.e then return q.b, q.e end
     end
     local function value(x)
       local t = self.t[x]
@@ -4824,6 +4830,13 @@ function G:alternatives()
       while self.t[l] and (self.t[l].filler or self.t[l].kind == "punct") do l = l - 1 end
       while self.t[r] and self.t[r].filler do r = r + 1 end
       local lb, re = span(l), select(2, span(r))
+      -- (a value or callsign, then an instruction of its own: "climb FL300 or turn left heading 200"; two sides of
+      -- a turn: "turn left or right")
+      if lb and not re and self.triggers[r] then
+        local q = self:quantities(r, #self.t + 1)[1]
+        re = q and q.e or r + 1
+      end
+      if self:word(l, "left right") and self:word(r, "left right") then lb, re = l, r + 1 end
       if lb and re and not self:word(r, "above below higher lower less greater more so faster slower better thousand hundred") then
         self.ask = string.format("You said '%s': which one do you mean? Please say it again with one.",
           self:raw(lb, re))

@@ -1634,12 +1634,14 @@ return function(intent, rule, words)
   rule { "unpause unfreeze op", "op" }
   -- "resume run", "continue the run", "resume the scenario": the run (the simulation's) taken up again, said alone,
   -- as a clause of its own, or opening the request before a mark, "and" or "then" ("resume the run and climb KLM12
-  -- FL300")
-  rule { "resume continue unpause", "op", when = function(g, i)
+  -- FL300"); "start the run and ..." starts it, "stop the run and ..." stops it
+  local function the_run(g, i)
     local k = g:word(i + 1, "the") and i + 2 or i + 1
     local opens = g:skip_fillers(1) == i and (g.t[k + 1] == nil or g.t[k + 1].kind == "punct" or g:word(k + 1, "and then"))
     return g:word(k, "run scenario scen") and (opens or g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
-  end }
+  end
+  rule { "resume continue unpause start", "op", when = the_run }
+  rule { "stop", "hold", when = the_run }
   rule { "go", "op", next = "again" }  -- "and go again"
   -- "kick off the episode", "kick off the sim": the run started, said of the simulation
   rule { "kick", "op", next = "off", near = { 3, "@sim" } }
