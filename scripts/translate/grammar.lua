@@ -4803,7 +4803,7 @@ end
 -- "FL240 or FL250", "heading 090 or 100"): a choice squawk may not make for the speaker, asked, naming both. Each
 -- side is a value (a token with a digit or a number word) or a callsign or place read, or the first an instruction
 -- word after a value ("climb FL300 or turn left heading 200"), or both sides of a turn ("turn left or right
--- heading 200"); a bound after "or" ("FL240
+-- heading 200"); an "or" a value holds ("plus or minus 800 ft") joins nothing, and a bound after "or" ("FL240
 -- or above", "250 or less") is no second thing, nor is a multiplier ("nine or thousand": "nine thousand" misheard),
 -- and an "or" inside a reason is no instruction's.
 function G:alternatives()
@@ -4825,7 +4825,7 @@ function G:alternatives()
     return b, e
   end
   for i, t in ipairs(self.t) do
-    if t.text == "or" and t.kind == "word" and not self:in_reason(i) then
+    if t.text == "or" and t.kind == "word" and not self:in_reason(i) and select(2, span(i)) == nil then
       local l, r = i - 1, i + 1
       while self.t[l] and (self.t[l].filler or self.t[l].kind == "punct") do l = l - 1 end
       while self.t[r] and self.t[r].filler do r = r + 1 end

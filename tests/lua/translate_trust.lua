@@ -8706,3 +8706,26 @@ do
   check_eq(ex("create Lufthansa 90 B738 at 37.0 24.0 heading 090 FL300 280"), "CRE DLH90 B738 37 24 90 FL300 280")
   asked(ex("Aegean 718 climb FL300"), "no Aegean flying: asked")
 end
+
+-- Cycle 45 (hz45): a word speech recognition writes for a digit ("won", "ate") is read only inside a callsign;
+-- anywhere else it is asked about
+do
+  local _, ex = scene({ "CRE DLH123 A320 52.0 4.0 090 FL200 250", "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
+  check_eq(ex("KLM12 reduce 240 ate"), "ASK I have SPD KLM12 240. What does 'ate' mean?")
+  check_eq(ex("lufthansa won two three climb FL300"), "ALT DLH123 FL300")
+end
+
+-- Cycle 45 (hz45): a value, then "or" and an instruction of its own, and a turn "left or right", are choices: asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
+  asked(ex("KLM12 descend FL150 or turn right heading 120"), "a level or a turn")
+  asked(ex("KLM12 turn right or left heading 040"), "either side")
+  check_eq(ex("KLM12 descend FL150 or below"), "ALT KLM12 FL150")
+end
+
+-- Cycle 45 (hz45): "start the run and ..." starts the clock, "stop the run and ..." stops it, with the instruction
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
+  check_eq(ex("start the run and KLM12 reduce 230"), "OP ; SPD KLM12 230")
+  check_eq(ex("stop the run, KLM12 heading 300"), "HOLD ; HDG KLM12 300")
+end
