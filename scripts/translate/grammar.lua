@@ -4846,11 +4846,11 @@ function G:alternatives()
   end
 end
 
--- The aircraft flying that the digits of quantity q name with the airline of an aircraft the request names
--- ("KLM1394 climb and 1349": KLM1349), or nil; digits inside a callsign read are none.
+-- The aircraft flying that the digits of plain quantity q (typed or said) name with the airline of an aircraft the
+-- request names ("KLM1394 climb and 1349": KLM1349), or nil; digits inside a callsign read are none.
 function G:and_digits_aircraft(q)
-  local digits = self.t[q.b].text
-  if q.e ~= q.b + 1 or not digits:match("^%d+$") then return nil end
+  local digits = q.number and q.number.digits or self.t[q.b].text
+  if q.kind ~= "plain" or not digits:match("^%d+$") then return nil end
   for _, r in ipairs(self.refs) do
     if r.kind == "aircraft" and r.b <= q.b and q.b < r.e then return nil end
   end
@@ -4866,7 +4866,8 @@ end
 -- "reduce from 250", "leaving FL260") is the value the aircraft leaves, never the one it flies to; a number with
 -- a decimal fraction ("drop TRA5K at 52.3") is no level, speed or heading: a command issued with either is asked,
 -- naming the value. ("away from" is a direction's; the value's noun may stand between: "from heading 090"; a bare
--- number matches a level, speed or heading; a Mach number is no whole value.) Digits after "and" that name,
+-- number matches a level, speed or heading; a Mach number is no whole value.) Digits after "and" (or "then",
+-- "also", "plus", a comma) that name,
 -- with the airline of an aircraft named, another aircraft flying ("KLM1394 climb and 1349") may be that aircraft
 -- or a value: asked, whatever was read.
 function G:values_misread()
@@ -4895,9 +4896,10 @@ function G:values_misread()
         self:raw(self:word(k, "of") and k - 1 or k, q.e))
       return
     end
-    if self:word(q.b - 1, "and") and self:and_digits_aircraft(q) then
-      self.ask = string.format("I heard '%s' after 'and': is it %s, or a value? Please say the instruction again.",
-        self:raw(q.b, q.e), self:and_digits_aircraft(q))
+    local joined = self.t[q.b - 1] and (self:word(q.b - 1, "and then also plus") or self.t[q.b - 1].text == ",")
+    if joined and self:and_digits_aircraft(q) then
+      self.ask = string.format("I heard '%s' after '%s': is it %s, or a value? Please say the instruction again.",
+        self:raw(q.b, q.e), self.t[q.b - 1].raw, self:and_digits_aircraft(q))
       return
     end
     if line and q.value ~= math.floor(q.value) and self:raw(q.b, q.e):find("%d[.,]%d") then
@@ -6515,10 +6517,7 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and not g.leftover then g:hedged() end
   if not g.ask and not g.leftover and lower:find("or", 1, true) then g:alternatives() end
-  if not g.ask and (lower:find("from", 1, true) or lower:find("of", 1, true) or lower:find("leav", 1, true)
-      or lower:find("vacat", 1, true) or lower:find(".", 1, true) or lower:find("and", 1, true)) then
-    g:values_misread()
-  end
+  if not g.ask then g:values_misread() end
   if not g.ask and g.leftover then
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)

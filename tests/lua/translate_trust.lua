@@ -8729,3 +8729,12 @@ do
   check_eq(ex("start the run and KLM12 reduce 230"), "OP ; SPD KLM12 230")
   check_eq(ex("stop the run, KLM12 heading 300"), "HOLD ; HDG KLM12 300")
 end
+
+-- Cycle 45 (hz45): digits of another aircraft of the callsign's airline after "then", "also" or a comma are asked
+-- as after "and"
+do
+  local _, ex = scene({ "CRE KLM2156 E190 52.6 5.9 240 FL100 250", "CRE KLM2165 E190 52.8 4.3 150 FL110 250" })
+  asked(ex("KLM2156 descend then 2165"), "digits of another KLM after 'then'")
+  asked(ex("KLM2156 descend, 2165"), "digits of another KLM after a comma")
+  check_eq(ex("KLM2156 descend FL90, KLM2165 FL80"), "ALT KLM2156 FL90 ; ALT KLM2165 FL80")
+end
