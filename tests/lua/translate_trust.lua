@@ -8728,6 +8728,7 @@ do
   local _, ex = scene({ "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
   check_eq(ex("start the run and KLM12 reduce 230"), "OP ; SPD KLM12 230")
   check_eq(ex("stop the run, KLM12 heading 300"), "HOLD ; HDG KLM12 300")
+  check_eq(ex("hold the run and KLM12 descend FL120"), "HOLD ; ALT KLM12 FL120")
 end
 
 -- Cycle 45 (hz45): digits of another aircraft of the callsign's airline after "then", "also" or a comma are asked
