@@ -183,14 +183,18 @@ local function know_all(v, seen)
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
   -- their words only where those fit; lexicon.manner, deadline_places and held_value only where their reading
   -- holds; lexicon.dictated_punctuation is the marks it names; lexicon.spanish is read as its English: they
-  -- account for no word)
+  -- account for no word; lexicon.heard_as's words are read only where their neighbours fit, becoming the word
+  -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
+  -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
+  -- and lexicon.digit_homophones digits only inside a callsign read ("won", "ate"))
   if type(v) ~= "table" or seen[v] or v == lexicon.accounted.courtesy_phrases or v == lexicon.accounted.value_phrases
       or v == lexicon.typed_abbreviations
       or v == lexicon.aside or v == lexicon.self_correction.just_the or v == lexicon.foreign_digits or v == lexicon.foreign_hesitation_digits
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
-      or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.spanish then
+      or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.spanish or v == lexicon.heard_as
+      or v == lexicon.name_particles or v == lexicon.digit_homophones then
     return
   end
   seen[v] = true
@@ -1755,13 +1759,18 @@ function G:type_or_aircraft_word(b, e)
   return self:has_ref(b, e, "type") or self:word_in(b, e, "@aircraft_nouns")
 end
 
+-- True when heard callsign h (a reference's `heard`) said its airline whole: the airline of the aircraft it was
+-- matched to, or one with nothing of it (similarity 0: "Aegean 455" matched to SEH902, which the matcher does
+-- only when exactly one aircraft flies): either way its flight number is said as meant.
+function G:airline_heard_whole(h) return h.airline >= 1 or h.airline == 0 end
+
 -- True when aircraft reference r names a callsign no aircraft has: not matched to one, or heard with its
 -- airline said whole and a flight number no aircraft of that airline has ("Jazz 7455" with JZA7721 flying:
 -- a new aircraft, no slip for JZA7721).
 function G:new_callsign(r)
   if not r.exists then return true end
   local h = r.heard
-  return h ~= nil and h.airline >= 1 and h.id:match("^%u%u%u?%d+%u*$") ~= nil and not self:state(h.id)
+  return h ~= nil and self:airline_heard_whole(h) and h.id:match("^%u%u%u?%d+%u*$") ~= nil and not self:state(h.id)
     and not self:airline_and_digits_match(h.id, r.name)
 end
 
@@ -4895,7 +4904,8 @@ end
 
 -- Once the request is read, a word no part of the parse explains is a leftover: a negation or a
 -- condition the commands do not carry ("climb FL340 unless BAW12 is there"), or a word squawk does not
--- know ("climb FL340 gently"). Words inside a callsign, place, type or value, a reason, a reply about
+-- know ("climb FL340 gently"), or a verb of lexicon.clock_verbs no instruction was read from and none follows
+-- ("resume everything and climb KLM12 FL300"). Words inside a callsign, place, type or value, a reason, a reply about
 -- what squawk does not simulate, or a courtesy phrase ("when you get a chance") are explained.
 local MANNER = set_of(lexicon.manner)
 -- True when a vertical speed was issued: VS, or ALT with its rate ("ALT KLM1 FL340 1000").
@@ -4904,6 +4914,15 @@ function G:rate_issued()
     if c:match("^VS ") or c:match("^ALT %S+ %S+ %S+$") then return true end
   end
   return false
+end
+-- True when the verb at i is said straight before an instruction word of its own ("resume climb FL300", "resume the
+-- descent", "resume own heading", "resume Mach .82"): the instruction's manner, read with it; or after "to", no
+-- imperative.
+function G:resumes_instruction(i)
+  if self:word(i - 1, "to") then return true end  -- ("advise when able to resume": no imperative)
+  local k = self:word(i + 1, "the own your normal its") and i + 2 or i + 1
+  local q = self:quantities(k, k + 2)[1]
+  return self.triggers[k] == true or (q ~= nil and q.b == k)
 end
 function G:unaccounted()
   -- the words no list explains, and the negations and conditions: only these need the parse's account
@@ -4969,7 +4988,8 @@ function G:unaccounted()
     if t.kind == "word" and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
         and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text)
-          or airline_left(i) or fraction_left(i))) or glued_value(i)) then
+          or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
+          or glued_value(i)) then
       said[#said + 1] = i
     end
   end
@@ -4983,6 +5003,117 @@ function G:unaccounted()
         and not (MEANING[t.text] and self:meaning_carried(i, kinds)) then
       self.leftover = t.raw
       if not MEANING[t.text] then self.ignorable = t.text end
+      return
+    end
+  end
+end
+
+-- Two things of one kind joined by "or" ("KLM12 or KLM21 climb", "aeromexico four five zero or four zero five",
+-- "FL240 or FL250", "heading 090 or 100"): a choice squawk may not make for the speaker, asked, naming both. Each
+-- side is a value (a token with a digit or a number word) or a callsign or place read, or the first an instruction
+-- word after a value ("climb FL300 or turn left heading 200"), or both sides of a turn ("turn left or right
+-- heading 200"); an "or" a value holds ("plus or minus 800 ft") joins nothing, and a bound after "or" ("FL240
+-- or above", "250 or less") is no second thing, nor is a multiplier ("nine or thousand": "nine thousand" misheard),
+-- and an "or" inside a reason is no instruction's.
+function G:alternatives()
+  local function span(k)  -- the callsign, place or run of value tokens holding token k, as {b, e}; nil if none
+    for _, r in ipairs(self.refs) do
+      if (r.kind == "aircraft" or r.kind == "waypoint") and r.b <= k and k < r.e then return r.b, r.e end
+    end
+    for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+      if q.b <= k and k < q.e then return q.b, q.e end
+    end
+    local function value(x)
+      local t = self.t[x]
+      return t ~= nil and t.kind ~= "punct" and (t.number_word or t.text:find("%d") ~= nil)
+    end
+    if not value(k) then return nil end
+    local b, e = k, k + 1
+    while value(b - 1) do b = b - 1 end
+    while value(e) do e = e + 1 end
+    return b, e
+  end
+  for i, t in ipairs(self.t) do
+    if t.text == "or" and t.kind == "word" and not self:in_reason(i) and select(2, span(i)) == nil then
+      local l, r = i - 1, i + 1
+      while self.t[l] and (self.t[l].filler or self.t[l].kind == "punct") do l = l - 1 end
+      while self.t[r] and self.t[r].filler do r = r + 1 end
+      local lb, re = span(l), select(2, span(r))
+      -- (a value or callsign, then an instruction of its own: "climb FL300 or turn left heading 200"; two sides of
+      -- a turn: "turn left or right")
+      if lb and not re and self.triggers[r] then
+        local q = self:quantities(r, #self.t + 1)[1]
+        re = q and q.e or r + 1
+      end
+      if self:word(l, "left right") and self:word(r, "left right") then lb, re = l, r + 1 end
+      if lb and re and not self:word(r, "above below higher lower less greater more so faster slower better thousand hundred") then
+        self.ask = string.format("You said '%s': which one do you mean? Please say it again with one.",
+          self:raw(lb, re))
+        return
+      end
+    end
+  end
+end
+
+-- The aircraft flying that the digits of plain quantity q (typed or said) name with the airline of an aircraft the
+-- request names ("KLM1394 climb and 1349": KLM1349), or nil; digits inside a callsign read are none.
+function G:and_digits_aircraft(q)
+  local digits = q.number and q.number.digits or self.t[q.b].text
+  if q.kind ~= "plain" or not digits:match("^%d+$") then return nil end
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.b <= q.b and q.b < r.e then return nil end
+  end
+  for _, r in ipairs(self.refs) do
+    local airline = r.kind == "aircraft" and r.name:upper():match("^(%a+)%d")
+    local a = airline and self:state(airline .. digits)
+    if a then return a.id:upper() end
+  end
+  return nil
+end
+
+-- A level, speed or heading said after "from", "out of" or a word of lexicon.level_left ("drop KLM12 from FL350",
+-- "reduce from 250", "leaving FL260") is the value the aircraft leaves, never the one it flies to; a number with
+-- a decimal fraction ("drop TRA5K at 52.3") is no level, speed or heading: a command issued with either is asked,
+-- naming the value. ("away from" is a direction's; the value's noun may stand between: "from heading 090"; a bare
+-- number matches a level, speed or heading; a Mach number is no whole value.) Digits after "and" (or "then",
+-- "also", "plus", a comma) that name,
+-- with the airline of an aircraft named, another aircraft flying ("KLM1394 climb and 1349") may be that aircraft
+-- or a value: asked, whatever was read.
+function G:values_misread()
+  -- the ALT, SPD or HDG line of `verbs` carrying q's value made whole (cut, rounded, or a level in hundreds of
+  -- feet: "120.5" ALT 12050), or nil
+  local function issued(q, verbs)
+    local v = q.value
+    local whole = { [math.floor(v)] = true, [math.floor(v + 0.5)] = true, [math.floor(v * 100 + 0.5)] = true }
+    if q.kind == "alt" then whole[math.floor(v / 100)] = true end
+    for _, line in ipairs(self.out) do
+      local cv, cval = line:match("^(%u+) %S+ %a*(%d+)$")
+      if not cv then cv, cval = line:match("^(%u+) %S+ %a*(%d+) ") end
+      cval = tonumber(cval)
+      if cv and verbs:find(cv, 1, true) and whole[cval] then
+        return line
+      end
+    end
+  end
+  for _, q in ipairs(self:quantities(1, #self.t + 1)) do
+    local verbs = G.described_verb[q.kind] or (q.kind == "plain" and "ALT SPD HDG")
+    local k = self:word(q.b - 1, "heading speed level altitude") and q.b - 2 or q.b - 1
+    local line = verbs and issued(q, verbs)
+    if line and ((self:word(k, "from") and not self:word(k - 1, "away")) or (self:word(k, "of") and self:word(k - 1, "out"))
+        or self:word(k, "@level_left leave vacate")) then
+      self.ask = string.format("I have %s, but '%s' is the value it leaves. What should it fly to?", line,
+        self:raw(self:word(k, "of") and k - 1 or k, q.e))
+      return
+    end
+    local joined = self.t[q.b - 1] and (self:word(q.b - 1, "and then also plus") or self.t[q.b - 1].text == ",")
+    if joined and self:and_digits_aircraft(q) then
+      self.ask = string.format("I heard '%s' after '%s': is it %s, or a value? Please say the instruction again.",
+        self:raw(q.b, q.e), self.t[q.b - 1].raw, self:and_digits_aircraft(q))
+      return
+    end
+    if line and q.value ~= math.floor(q.value) and self:raw(q.b, q.e):find("%d[.,]%d") then
+      self.ask = string.format("I have %s, but I heard '%s', with a decimal. Which value do you mean?", line,
+        self:raw(q.b, q.e))
       return
     end
   end
@@ -6708,6 +6839,8 @@ function M.translate(text, world)
   if not g.ask and not g.leftover then g:unread_switch() end
   if not g.ask and not g.leftover then g:unaccounted() end
   if not g.ask and not g.leftover then g:hedged() end
+  if not g.ask and not g.leftover and lower:find("or", 1, true) then g:alternatives() end
+  if not g.ask then g:values_misread() end
   if not g.ask and g.leftover then
     g.ask = #g.out == 0 and string.format("I have no instruction. What does '%s' mean?", g.leftover)
       or string.format("I have %s. What does '%s' mean?", table.concat(g.out, " ; "), g.leftover)

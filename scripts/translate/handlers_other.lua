@@ -100,10 +100,11 @@ return function(H, f, compass)
   function m:create_one(s, id_from)
     local id
     -- ("create Alaska six eleven" with ASA331 flying: the airline heard whole and a flight number
-    -- no aircraft has is the new aircraft's callsign, not a slip for ASA331)
+    -- no aircraft has is the new aircraft's callsign, not a slip for ASA331; so is another airline's callsign
+    -- matched to the one aircraft flying, G:airline_heard_whole)
     for _, r in ipairs(self:refs_in(id_from, s.e, "aircraft")) do
       local h = r.heard
-      if r.exists and h and h.airline >= 1 and h.id:match("^%u%u%u?%d+%u*$") then
+      if r.exists and h and self:airline_heard_whole(h) and h.id:match("^%u%u%u?%d+%u*$") then
         -- (the rest of the flight number said straight after: "Frontier one | one five")
         -- ("Southwest thirty-one | oh five": "oh" is a zero)
         local oh = self:word(r.e, "oh o") and 1 or 0

@@ -1226,6 +1226,9 @@ return {
   -- verbs that open a creation ("create", "make a cactus 1496 ..."): an airline's telephony run into its
   -- number after one is the new aircraft's id (grammar.lua glued_telephony)
   creation_verbs = { create = true, creat = true, cre = true, spawn = true, generate = true, make = true },
+  -- verbs that start, stop or restart the run or an aircraft's navigation: one no instruction was read from is a
+  -- leftover, asked about (grammar.lua G:unaccounted), never set aside
+  clock_verbs = { resume = true, unpause = true, unfreeze = true, restart = true },
   -- tens words, which join the unit digit after them into one number
   tens = { "twenty", "thirty", "forty", "fourty", "fifty", "sixty", "seventy", "eighty", "ninety" },
   -- words speech recognition writes for a spoken "two" before digits

@@ -1557,12 +1557,21 @@ return function(intent, rule, words)
       and near ~= nil and a ~= nil and a.lat ~= nil and #near(t.text, a.lat, a.lon, require("translate.lexicon").navaid_range_nm) > 0
   end }
 
+  -- "resume run", "continue the run", "resume the scenario": the run (the simulation's) taken up again, said alone,
+  -- as a clause of its own, or opening the request before a mark, "and" or "then" ("resume the run and climb KLM12
+  -- FL300"); "start the run and ..." starts it, "stop/hold the run and ..." stops it
+  local function the_run(g, i)
+    local k = g:word(i + 1, "the") and i + 2 or i + 1
+    local opens = g:skip_fillers(1) == i and (g.t[k + 1] == nil or g.t[k + 1].kind == "punct" or g:word(k + 1, "and then"))
+    return g:word(k, "run scenario scen") and (opens or g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
+  end
   -- simulation control; "hold present heading" keeps a value, and "KL204 hold"
   -- (a holding pattern) is no pause of the simulation
   rule { "hold", "maintain", near = { 2, "heading hdg altitude level speed" } }
   -- "hold, move EZY45 ...": a first word on its own before a comma pauses the simulation
   rule { "hold pause", "hold", when = function(g, i) return i == 1 and g.t[2] ~= nil and g.t[2].kind == "punct" end }
   rule { "hold", "hold", near = { 3, "@sim" } }
+  rule { "hold", "hold", when = the_run }
   rule { "hold", false, when = function(g) return g:has_ref(1, #g.t + 1, "aircraft") end }
   -- "run again from pause", "out of pause": the pause is the state left, no new one
   rule { "pause hold freeze", false, prev = { 2, "from of" } }
@@ -1693,12 +1702,8 @@ return function(intent, rule, words)
   end }
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
   rule { "unpause unfreeze op", "op" }
-  -- "resume run", "continue the run", "resume the scenario": the run (the simulation's) taken up again, said alone
-  -- or as a clause of its own
-  rule { "resume continue unpause", "op", when = function(g, i)
-    local k = g:word(i + 1, "the") and i + 2 or i + 1
-    return g:word(k, "run scenario scen") and (g:alone_but(i, k + 1) or g:clause_alone(i, k + 1))
-  end }
+  rule { "resume continue unpause start", "op", when = the_run }
+  rule { "stop", "hold", when = the_run }
   rule { "go", "op", next = "again" }  -- "and go again"
   -- "kick off the episode", "kick off the sim": the run started, said of the simulation
   rule { "kick", "op", next = "off", near = { 3, "@sim" } }

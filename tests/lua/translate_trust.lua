@@ -9013,3 +9013,114 @@ do
     check(code:match("^%u%u%u$") ~= nil and icao:match("^%u%u%u%u$") ~= nil, "names.iata_airports " .. code)
   end
 end
+
+-- Cycle 45 (hz45): a word of lexicon.heard_as left as it was heard (its neighbours did not fit: "climb FL300
+-- montez") or a name particle outside a name read is no word squawk knows: asked, never set aside (Spanish
+-- said whole is read through lexicon.spanish)
+do
+  local _, ex = scene({ "CRE IBE3241 A320 40.6 -3.8 200 FL180 280", "CRE VLG12 A320 40.8 -3.4 160 FL240 290" })
+  check_eq(ex("iberia 3241 gire a la derecha rumbo 250"), "HDG IBE3241 250 RIGHT")
+  check_eq(ex("IBE3241 climb FL300 montez"), "ASK I have ALT IBE3241 FL300. What does 'montez' mean?")
+  check_eq(ex("IBE3241 descend FL120 la"), "ASK I have ALT IBE3241 FL120. What does 'la' mean?")
+  -- where the neighbours fit, the heard form is read as the word it means
+  check_eq(ex("iberia 3241 vire izquierda rumbo 170"), "HDG IBE3241 170 LEFT")
+  check_eq(ex("vueling 12 ascienda nivel 300"), "ALT VLG12 FL300")
+end
+
+-- Cycle 45 (hz45): two callsigns or values joined by "or" are a choice squawk does not make: asked; a bound after
+-- "or" ("or above", "or less") is no choice
+do
+  local _, ex = scene({ "CRE AMX450 B738 20.0 -99.0 020 FL120 250", "CRE AMX405 B738 20.3 -99.2 200 FL140 250" })
+  asked(ex("aeromexico four zero five or four five zero descend fl 100"), "two callsigns said as digits, with 'or'")
+  asked(ex("AMX405 or AMX450 turn left heading 300"), "two callsigns typed, with 'or'")
+  asked(ex("AMX405 climb FL200 or FL210"), "two levels with 'or'")
+  asked(ex("AMX450 turn right heading 060 or 070"), "two headings with 'or'")
+  check_eq(ex("AMX450 climb FL200 or above"), "ALT AMX450 FL200")
+  check_eq(ex("AMX405 reduce 230 or less"), "SPD AMX405 230")
+end
+
+-- Cycle 45 (hz45): a value said after "from", "out of" or "leaving" is the one the aircraft leaves: a command
+-- issued with it is asked; with the value it flies to said as well, that one is issued
+do
+  local _, ex = scene({ "CRE EIN77 A320 53.0 -8.0 090 FL340 280", "CRE RYR9K B738 53.2 -7.5 270 FL200 250" })
+  asked(ex("bring Shamrock 77 down from FL340"), "a descent from the level flown, no target")
+  asked(ex("RYR9K slow down from 250"), "a speed left, no target")
+  asked(ex("RYR9K climb out of FL200"), "a level left, no target")
+  check_eq(ex("EIN77 descend from FL340 to FL300"), "ALT EIN77 FL300")
+  check_eq(ex("RYR9K reduce from 250 to 220"), "SPD RYR9K 220")
+  check_eq(ex("RYR9K turn away from heading 180 left heading 200"), "HDG RYR9K 200 LEFT")
+end
+
+-- Cycle 45 (hz45): a number with a decimal fraction is no level: an altitude read from one is asked; a
+-- position's degrees, a Mach number and a converted unit stay read
+do
+  local _, ex = scene({ "CRE TRA7M B738 52.2 3.8 045 FL90 240" })
+  asked(ex("take TRA7M down to 61.4"), "a level with a decimal")
+  asked(ex("TRA7M descend 45.5"), "a level with a decimal")
+  check_eq(ex("drop TRA7M at 52.4 4.1"), "MOVE TRA7M 52.4 4.1")
+  check_eq(ex("TRA7M mach 0.74"), "SPD TRA7M M0.74")
+end
+
+-- Cycle 45 (hz45): digits after "and" that, with the airline of a callsign said, name another aircraft flying may
+-- be that aircraft or a value: asked, whatever was read
+do
+  local _, ex = scene({ "CRE KLM2156 E190 52.6 5.9 240 FL100 250", "CRE KLM2165 E190 52.8 4.3 150 FL110 250" })
+  asked(ex("KLM2156 descend and 2165"), "digits of another KLM after 'and'")
+  asked(ex("KLM2156 reduce 220 and 2165"), "digits of another KLM after 'and', a value before")
+  check_eq(ex("KLM2156 and 2165 descend FL80"), "ALT KLM2156 FL80 ; ALT KLM2165 FL80")
+end
+
+-- Cycle 45 (hz45): "resume the run" opening a request before "and" or a mark starts the clock with the
+-- instruction after it; a clock verb no instruction was read from is asked, never set aside
+do
+  local _, ex = scene({ "CRE BAW41 A320 51.5 0.0 090 FL200 250" })
+  check_eq(ex("continue the run and descend BAW41 FL150"), "OP ; ALT BAW41 FL150")
+  check_eq(ex("resume the run, then BAW41 reduce 220"), "OP ; SPD BAW41 220")
+  check_eq(ex("resume all of it and BAW41 climb FL240"), "ASK I have ALT BAW41 FL240. What does 'resume' mean?")
+  asked(ex("restart the run and turn BAW41 left heading 010"), "restart, no command read")
+  -- said straight before an instruction of its own, the verb is that instruction's manner
+  check_eq(ex("BAW41 resume climb FL240"), "ALT BAW41 FL240")
+  check_eq(ex("BAW41 turn left 20 degrees, advise when able to resume"), "HDG BAW41 70 LEFT")
+end
+
+-- Cycle 45 (hz45): with exactly one aircraft flying, another airline's callsign said to create an aircraft is the
+-- new callsign (the matcher had tied it to the one aircraft)
+do
+  local _, ex = scene({ "CRE SEH311 A320 36.0 25.0 090 FL200 250" })
+  check_eq(ex("create Aegean 718 A321 at 37.5 23.5 heading 180 FL240 270"), "CRE AEE718 A321 37.5 23.5 180 FL240 270")
+  check_eq(ex("create Lufthansa 90 B738 at 37.0 24.0 heading 090 FL300 280"), "CRE DLH90 B738 37 24 90 FL300 280")
+  asked(ex("Aegean 718 climb FL300"), "no Aegean flying: asked")
+end
+
+-- Cycle 45 (hz45): a word speech recognition writes for a digit ("won", "ate") is read only inside a callsign;
+-- anywhere else it is asked about
+do
+  local _, ex = scene({ "CRE DLH123 A320 52.0 4.0 090 FL200 250", "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
+  check_eq(ex("KLM12 reduce 240 ate"), "ASK I have SPD KLM12 240. What does 'ate' mean?")
+  check_eq(ex("lufthansa won two three climb FL300"), "ALT DLH123 FL300")
+end
+
+-- Cycle 45 (hz45): a value, then "or" and an instruction of its own, and a turn "left or right", are choices: asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
+  asked(ex("KLM12 descend FL150 or turn right heading 120"), "a level or a turn")
+  asked(ex("KLM12 turn right or left heading 040"), "either side")
+  check_eq(ex("KLM12 descend FL150 or below"), "ALT KLM12 FL150")
+end
+
+-- Cycle 45 (hz45): "start the run and ..." starts the clock, "stop the run and ..." stops it, with the instruction
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
+  check_eq(ex("start the run and KLM12 reduce 230"), "OP ; SPD KLM12 230")
+  check_eq(ex("stop the run, KLM12 heading 300"), "HOLD ; HDG KLM12 300")
+  check_eq(ex("hold the run and KLM12 descend FL120"), "HOLD ; ALT KLM12 FL120")
+end
+
+-- Cycle 45 (hz45): digits of another aircraft of the callsign's airline after "then", "also" or a comma are asked
+-- as after "and"
+do
+  local _, ex = scene({ "CRE KLM2156 E190 52.6 5.9 240 FL100 250", "CRE KLM2165 E190 52.8 4.3 150 FL110 250" })
+  asked(ex("KLM2156 descend then 2165"), "digits of another KLM after 'then'")
+  asked(ex("KLM2156 descend, 2165"), "digits of another KLM after a comma")
+  check_eq(ex("KLM2156 descend FL90, KLM2165 FL80"), "ALT KLM2156 FL90 ; ALT KLM2165 FL80")
+end
