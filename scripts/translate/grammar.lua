@@ -5933,15 +5933,19 @@ local AIRLINE_LAST = {}  -- the last word of each airline's telephony or name
 for _, list in ipairs({ names.airlines, names.common, names.brands }) do
   for _, a in ipairs(list) do AIRLINE_LAST[a[1]:match("(%S+)$")] = true end
 end
-local function exact_aircraft(text, world)
+-- (`parsed`: text -> its set, the reads of one request already parsed; each parse costs ~10 us)
+local function exact_aircraft(text, world, parsed)
+  if parsed[text] then return parsed[text] end
   local found = {}
   for _, r in ipairs(squawk.translate.utterance(text, world, NAMES):refs()) do
     if r.kind == "aircraft" and r.exists and not r.heard then found[r.name:upper()] = true end
   end
+  parsed[text] = found
   return found
 end
-local function homophone_ids(text, world)
+local function homophone_ids(text, world, parsed)
   if #world.aircraft == 0 then return text end
+  parsed = parsed or {}
   local toks, bare = plain_words(text)
   local said
   for i, w in ipairs(bare) do
@@ -5961,16 +5965,16 @@ local function homophone_ids(text, world)
         end
         if h then words[k] = h .. (toks[k]:match("%p+$") or "") end
       end
-      said = said or exact_aircraft(text, world)
+      said = said or exact_aircraft(text, world, parsed)
       for _, read in ipairs({ table.concat(words, " "), table.concat(alone, " ") }) do
         local new
-        for id in pairs(exact_aircraft(read, world)) do
+        for id in pairs(exact_aircraft(read, world, parsed)) do
           if not said[id] then new = new == nil and id or false end
         end
         for id in pairs(new and said or {}) do
           if new:sub(1, #id) == id then new = false end
         end
-        if new then return homophone_ids(read, world) end
+        if new then return homophone_ids(read, world, parsed) end
       end
     end
   end
