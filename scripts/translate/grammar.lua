@@ -5947,7 +5947,7 @@ local function homophone_ids(text, world, parsed)
   if #world.aircraft == 0 then return text end
   parsed = parsed or {}
   local toks, bare = plain_words(text)
-  local said
+  local said, held
   for i, w in ipairs(bare) do
     local digit = lexicon.digit_homophones[w]
     local prev, nxt = bare[i - 1], bare[i + 1]
@@ -5958,15 +5958,26 @@ local function homophone_ids(text, world, parsed)
       local words, alone = {}, {}
       for k, t in ipairs(toks) do words[k], alone[k] = t, t end
       alone[i] = digit .. (toks[i]:match("%p+$") or "")
+      -- (a read names an aircraft the text does not only by a digit it reads there: the reads are parsed
+      -- only when a digit read is in the id of an aircraft flying; `held`: their ids joined)
+      if not held then
+        held = {}
+        for _, a in ipairs(world.aircraft) do held[#held + 1] = a.id end
+        held = table.concat(held, " ")
+      end
+      local holds = false
       for k = i, #toks do
         local h = lexicon.digit_homophones[bare[k]]
         if k > i and (toks[k - 1]:match("%p$") or not (h or CALLSIGN_WORDS[bare[k]] or bare[k]:match("^%d+$"))) then
           break
         end
-        if h then words[k] = h .. (toks[k]:match("%p+$") or "") end
+        if h then
+          words[k] = h .. (toks[k]:match("%p+$") or "")
+          holds = holds or held:find(SAID_DIGIT[h], 1, true) ~= nil
+        end
       end
-      said = said or exact_aircraft(text, world, parsed)
-      for _, read in ipairs({ table.concat(words, " "), table.concat(alone, " ") }) do
+      said = holds and (said or exact_aircraft(text, world, parsed))
+      for _, read in ipairs(holds and { table.concat(words, " "), table.concat(alone, " ") } or {}) do
         local new
         for id in pairs(exact_aircraft(read, world, parsed)) do
           if not said[id] then new = new == nil and id or false end
