@@ -3873,7 +3873,9 @@ function G:dangling_correction()
   local first = last + 1
   while first > 1 and (self.t[first - 1].kind == "punct" or SC_WORDS[self.words[first - 1]]) do first = first - 1 end
   local said = {}
-  for w in (self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
+  if first <= last then  -- (the words as said are read only where such a run closes the request)
+    for w in (self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
+  end
   local marked = false
   for k = math.max(1, #said - (last - first)), #said do
     marked = marked or SC_CLOSING[said[k]] or (said[k + 1] ~= nil and SC_CLOSING[said[k] .. " " .. said[k + 1]])
