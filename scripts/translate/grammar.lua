@@ -5806,15 +5806,19 @@ end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
+  -- (the passes up to "velocity" read an airline after "the" ("The"): with no "the" said, none changes the text)
+  local the_said = text:find("the", 1, true) or text:find("The", 1, true)
   -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
   -- aircraft has that id, or a number follows: "the Ryanair one two three")
-  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
-    local icao = AIRLINE_WORDS[w:lower()]
-    if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
-      return the .. w .. s1 .. "aircraft" .. s2 .. nx
-    end
-    return nil
-  end)
+  if the_said then
+    text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
+      local icao = AIRLINE_WORDS[w:lower()]
+      if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
+        return the .. w .. s1 .. "aircraft" .. s2 .. nx
+      end
+      return nil
+    end)
+  end
   -- ("give the easyJet 30 left", "the Air France 20 right": the degrees of a turn, 1 to 180, before its side
   -- with no number after it; "turn the easyJet 30 left 20" keeps the callsign, matched or asked)
   local function turn_by(n, side, pos)
@@ -5822,8 +5826,8 @@ local function airline_values(text, fleet)
     return (side == "left" or side == "right") and tonumber(n) >= 1 and tonumber(n) <= 180
       and not nx:match("^%d") and not NUMBER_WORDS[nx:lower()]
   end
-  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)()",
-                             "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)(%d+)(%s+)(%a+)()" }) do
+  for _, pattern in ipairs(the_said and { "(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)()",
+                                          "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)(%d+)(%s+)(%a+)()" } or {}) do
     text = text:gsub(pattern, function(the, w, s1, n, s2, unit, pos)
       local icao = AIRLINE_WORDS[w:lower():gsub("%s+", " ")]
       if icao and not ids[icao .. n] and (lexicon.value_units[unit:lower()] or turn_by(n, unit:lower(), pos)) then
@@ -5840,8 +5844,8 @@ local function airline_values(text, fleet)
     end
     return true
   end
-  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
-                             "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" }) do
+  for _, pattern in ipairs(the_said and { "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
+                                          "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" } or {}) do
     text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
       if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
         return the .. w .. "," .. s1 .. n .. s2 .. unit
