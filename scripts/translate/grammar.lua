@@ -5575,16 +5575,21 @@ local function split_ids(text, fleet)
   if hyphen then text = text:gsub("%f[%w](%u%u?)%-(%u%u%u%u?)%f[%W]", "%1%2") end
   if #fleet == 0 then return text end
   local ids, tails = {}, {}
+  -- (`headed`: the letters opening an id before its digits are in the text, as typed or in capitals: a word
+  -- and a number are joined only then)
+  local low, headed = text:lower(), false
   for _, a in ipairs(fleet) do
     ids[a.id:lower()] = true
     local tail = a.id:lower():match("^%a+(%d+%a+)$")
     if tail then tails[tail] = (tails[tail] or 0) + 1 end
+    local head = a.id:lower():match("^%a+%f[%d]")
+    headed = headed or (head ~= nil and low:find(head, 1, true) ~= nil)
   end
   local function joined(a, b)
     if ids[(a .. b):lower()] then return a .. b end
     return nil
   end
-  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined)
+  if headed then text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined) end
   if hyphen then text = text:gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined) end
   if not next(tails) then return text end
   return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
