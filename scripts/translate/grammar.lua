@@ -3993,7 +3993,9 @@ function G:dangling_correction()
   local first = last + 1
   while first > 1 and (self.t[first - 1].kind == "punct" or SC_WORDS[self.words[first - 1]]) do first = first - 1 end
   local said = {}
-  for w in (self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
+  if first <= last then  -- (the words as said are read only where such a run closes the request)
+    for w in (self.text_said or ""):lower():gmatch("[%a']+") do said[#said + 1] = w end
+  end
   local marked = false
   for k = math.max(1, #said - (last - first)), #said do
     marked = marked or SC_CLOSING[said[k]] or (said[k + 1] ~= nil and SC_CLOSING[said[k] .. " " .. said[k + 1]])
@@ -5863,16 +5865,21 @@ local function split_ids(text, fleet)
   if hyphen then text = text:gsub("%f[%w](%u%u?)%-(%u%u%u%u?)%f[%W]", "%1%2") end
   if #fleet == 0 then return text end
   local ids, tails = {}, {}
+  -- (`headed`: the letters opening an id before its digits are in the text, as typed or in capitals: a word
+  -- and a number are joined only then)
+  local low, headed = text:lower(), false
   for _, a in ipairs(fleet) do
     ids[a.id:lower()] = true
     local tail = a.id:lower():match("^%a+(%d+%a+)$")
     if tail then tails[tail] = (tails[tail] or 0) + 1 end
+    local head = a.id:lower():match("^%a+%f[%d]")
+    headed = headed or (head ~= nil and low:find(head, 1, true) ~= nil)
   end
   local function joined(a, b)
     if ids[(a .. b):lower()] then return a .. b end
     return nil
   end
-  text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined)
+  if headed then text = text:gsub("%f[%w](%a+)%s+(%d%w*)%f[%W]", joined) end
   if hyphen then text = text:gsub("%f[%w](%a%a?)%-(%w+)%f[%W]", joined) end
   if not next(tails) then return text end
   return (text:gsub("%f[%w](%d+)%s+(%a%a?)%f[%W]", function(d, l)
@@ -6132,15 +6139,19 @@ end
 local function airline_values(text, fleet)
   local ids = {}
   for _, a in ipairs(fleet) do ids[a.id:upper()] = true end
+  -- (the passes up to "velocity" read an airline after "the" ("The"): with no "the" said, none changes the text)
+  local the_said = text:find("the", 1, true) or text:find("The", 1, true)
   -- "the Ryanair one", "the lufthansa one": "one" is the aircraft, no flight number 1 (unless an
   -- aircraft has that id, or a number follows: "the Ryanair one two three")
-  text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
-    local icao = AIRLINE_WORDS[w:lower()]
-    if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
-      return the .. w .. s1 .. "aircraft" .. s2 .. nx
-    end
-    return nil
-  end)
+  if the_said then
+    text = text:gsub("(%f[%a][Tt]he%s+)(%a+)(%s+)[Oo]ne(%f[%A][%s,]*)([%w%-]*)", function(the, w, s1, s2, nx)
+      local icao = AIRLINE_WORDS[w:lower()]
+      if icao and not ids[icao .. "1"] and not nx:match("%d") and not SPOKEN_DIGITS[nx:lower()] then
+        return the .. w .. s1 .. "aircraft" .. s2 .. nx
+      end
+      return nil
+    end)
+  end
   -- ("give the easyJet 30 left", "the Air France 20 right": the degrees of a turn, 1 to 180, before its side
   -- with no number after it; "turn the easyJet 30 left 20" keeps the callsign, matched or asked)
   local function turn_by(n, side, pos)
@@ -6148,8 +6159,8 @@ local function airline_values(text, fleet)
     return (side == "left" or side == "right") and tonumber(n) >= 1 and tonumber(n) <= 180
       and not nx:match("^%d") and not NUMBER_WORDS[nx:lower()]
   end
-  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)()",
-                             "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)(%d+)(%s+)(%a+)()" }) do
+  for _, pattern in ipairs(the_said and { "(%f[%a][Tt]he%s+)(%a+)(%s+)(%d+)(%s+)(%a+)()",
+                                          "(%f[%a][Tt]he%s+)(%a+%s+%a+)(%s+)(%d+)(%s+)(%a+)()" } or {}) do
     text = text:gsub(pattern, function(the, w, s1, n, s2, unit, pos)
       local icao = AIRLINE_WORDS[w:lower():gsub("%s+", " ")]
       if icao and not ids[icao .. n] and (lexicon.value_units[unit:lower()] or turn_by(n, unit:lower(), pos)) then
@@ -6166,8 +6177,8 @@ local function airline_values(text, fleet)
     end
     return true
   end
-  for _, pattern in ipairs({ "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
-                             "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" }) do
+  for _, pattern in ipairs(the_said and { "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+%s+[%a%-]+)(%s+)(%a+)",
+                                          "(%f[%a][Tt]he%s+)(%a+)(%s+)([%a%-]+)(%s+)(%a+)" } or {}) do
     text = text:gsub(pattern, function(the, w, s1, n, s2, unit)
       if AIRLINE_WORDS[w:lower()] and spoken(n) and lexicon.value_units[unit:lower()] then
         return the .. w .. "," .. s1 .. n .. s2 .. unit
@@ -6261,17 +6272,21 @@ local AIRLINE_LAST = {}  -- the last word of each airline's telephony or name
 for _, list in ipairs({ names.airlines, names.common, names.brands }) do
   for _, a in ipairs(list) do AIRLINE_LAST[a[1]:match("(%S+)$")] = true end
 end
-local function exact_aircraft(text, world)
+-- (`parsed`: text -> its set, the reads of one request already parsed; each parse costs ~10 us)
+local function exact_aircraft(text, world, parsed)
+  if parsed[text] then return parsed[text] end
   local found = {}
   for _, r in ipairs(squawk.translate.utterance(text, world, NAMES):refs()) do
     if r.kind == "aircraft" and r.exists and not r.heard then found[r.name:upper()] = true end
   end
+  parsed[text] = found
   return found
 end
-local function homophone_ids(text, world)
+local function homophone_ids(text, world, parsed)
   if #world.aircraft == 0 then return text end
+  parsed = parsed or {}
   local toks, bare = plain_words(text)
-  local said
+  local said, held
   for i, w in ipairs(bare) do
     local digit = lexicon.digit_homophones[w]
     local prev, nxt = bare[i - 1], bare[i + 1]
@@ -6282,23 +6297,34 @@ local function homophone_ids(text, world)
       local words, alone = {}, {}
       for k, t in ipairs(toks) do words[k], alone[k] = t, t end
       alone[i] = digit .. (toks[i]:match("%p+$") or "")
+      -- (a read names an aircraft the text does not only by a digit it reads there: the reads are parsed
+      -- only when a digit read is in the id of an aircraft flying; `held`: their ids joined)
+      if not held then
+        held = {}
+        for _, a in ipairs(world.aircraft) do held[#held + 1] = a.id end
+        held = table.concat(held, " ")
+      end
+      local holds = false
       for k = i, #toks do
         local h = lexicon.digit_homophones[bare[k]]
         if k > i and (toks[k - 1]:match("%p$") or not (h or CALLSIGN_WORDS[bare[k]] or bare[k]:match("^%d+$"))) then
           break
         end
-        if h then words[k] = h .. (toks[k]:match("%p+$") or "") end
+        if h then
+          words[k] = h .. (toks[k]:match("%p+$") or "")
+          holds = holds or held:find(SAID_DIGIT[h], 1, true) ~= nil
+        end
       end
-      said = said or exact_aircraft(text, world)
-      for _, read in ipairs({ table.concat(words, " "), table.concat(alone, " ") }) do
+      said = holds and (said or exact_aircraft(text, world, parsed))
+      for _, read in ipairs(holds and { table.concat(words, " "), table.concat(alone, " ") } or {}) do
         local new
-        for id in pairs(exact_aircraft(read, world)) do
+        for id in pairs(exact_aircraft(read, world, parsed)) do
           if not said[id] then new = new == nil and id or false end
         end
         for id in pairs(new and said or {}) do
           if new:sub(1, #id) == id then new = false end
         end
-        if new then return homophone_ids(read, world) end
+        if new then return homophone_ids(read, world, parsed) end
       end
     end
   end

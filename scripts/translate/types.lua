@@ -463,7 +463,16 @@ function M.join(text, phrases)
     p.pattern = p.pattern or ("%f[%w]" .. p[1]:gsub("%p", "%%%0")
       :gsub("%a", function(ch) return "[" .. ch:lower() .. ch:upper() .. "]" end)
       :gsub(" ", "[%%s%%-]+") .. "%f[%W]")
-    text = text:gsub(p.pattern, p[2])
+    -- (matched only where `text` holds each word of the phrase: a phrase's code put in before is none of them)
+    local words = p.words
+    if not words then
+      words = {}
+      for w in p[1]:lower():gmatch("%S+") do words[#words + 1] = w end
+      p.words = words
+    end
+    local all = true
+    for j = 2, #words do all = all and lower:find(words[j], 1, true) ~= nil end
+    if all then text = text:gsub(p.pattern, p[2]) end
   end
   return text
 end
