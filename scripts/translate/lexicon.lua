@@ -269,6 +269,7 @@ return {
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
+        "atlantic", "pacific",  -- (oceans a position is said over: "over the Atlantic at 45N 30W")
         "danger", "restricted", "prohibited",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing", "mountains", "mountain", "hills",
         -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")
