@@ -9141,6 +9141,9 @@ do
   check_eq(ex("the Aer Lingus turn left heading 200"), "HDG EIN55 200 LEFT")
   check_eq(ex("Aer Lingus EIN55 turn left heading 200"), "HDG EIN55 200 LEFT")
   check_eq(ex("KLM12 speed it up a lot, 300 knots"), "SPD KLM12 300")
+  -- an ocean a position is said over is a region, known apart from "Virgin Atlantic"
+  check_eq(ex("create VIR8 A333 over the Pacific at 30N 150W heading 270 FL380 Mach .82"),
+    "CRE VIR8 A333 30 -150 270 FL380 M0.82")
   -- an airline said whole that no command carries is asked in lower case too where the name is no English word
   check_eq(ex("KLM12 climb FL300 el al"), "ASK I have ALT KLM12 FL300. What does 'el' mean?")
   check_eq(ex("KLM12 climb FL300 lufthansa"), "ASK I have ALT KLM12 FL300. What does 'lufthansa' mean?")
