@@ -4268,8 +4268,53 @@ local CONDITION = set_of(ACCOUNTED.condition)
 local MEANING = set_of(ACCOUNTED.negation)
 for w in pairs(CONDITION) do MEANING[w] = true end
 know_all(lexicon, {})
-know_all(names.airlines, {})
-know_all(names.common or {}, {})
+-- (an airline's name of one word is a word squawk knows; the words of a name of several, "el al", "air
+-- express", are accounted for only inside the name said whole or beside a callsign of that airline
+-- (G:airline_word), and an ICAO prefix only as one. G.name_words[w]: the ICAO prefixes whose names of several
+-- words hold w; {} for a name of one word that no list knows as English, "lufthansa": false for "reach")
+G.name_words = {}
+for _, list in ipairs({ names.airlines, names.common }) do
+  for _, a in ipairs(list) do
+    if not a[1]:find(" ", 1, true) then
+      G.name_words[a[1]] = G.name_words[a[1]] or (not KNOWN[a[1]] and {})
+      know(a[1])
+    end
+    for w in a[1]:gmatch("%S+") do
+      if a[1]:find(" ", 1, true) then
+        G.name_words[w] = G.name_words[w] or {}
+        G.name_words[w][a[2]] = true
+      end
+    end
+  end
+end
+-- True when the word at i is a word of an airline's name of several words (G.name_words) said whole ("Royal
+-- Air Maroc"), or one of the name of the airline of a callsign read within three words after it ("one Korean
+-- cargo KAL5933"): a name squawk reads, as one of a single word is.
+function G:airline_word(i)
+  local of = G.name_words[self.t[i].text]
+  if not of or not next(of) then return false end
+  for k = math.max(1, i - 3), i do
+    local _, e = self:airline_at(k)
+    if e and e > i and e - k > 1 then return true end
+  end
+  for _, r in ipairs(self.refs) do
+    if r.kind == "aircraft" and r.b > i and r.b <= i + 3 and of[r.name:upper():match("^(%u+)%d") or ""] then
+      return true
+    end
+  end
+  return false
+end
+-- True when the word at i is a particle of a place's name (lexicon.name_particles) straight before a place read,
+-- as a reference or by a handler ("direct El Palomar": the navaid PAL, a name in capitals): the name's article.
+function G:place_particle(i)
+  if not self:word(i, "@name_particles") then return false end
+  for _, r in ipairs(self.refs) do
+    if r.b == i + 1 then return r.kind == "waypoint" end
+  end
+  local nx = self.t[i + 1]
+  return nx ~= nil and nx.kind == "word" and (self.u:used(i + 1) or (self.explained or {})[i + 1]) and nx.raw:match("^%u%l") ~= nil and not nx.keyword
+    and not nx.number_word and not self.triggers[i + 1]
+end
 know_all(TYPES.types, {})
 -- A registry command's name or alias that no rule or list knows ("rmethv"), by its lower-case
 -- word: the command's lower-case name. Said in English, it is accounted for only by its command.
@@ -4933,11 +4978,13 @@ function G:unaccounted()
   -- creates one, "a KLM Cityhopper Embraer", no word before it makes it other traffic, "for Speedbird", and
   -- no correction after it takes it back, "United correction Southwest six eighty six")
   local function airline_left(i)
-    if not airline_bare(self, i) or not self.t[i].raw:match("^%u%l")
-        or self:word(i - 1, "@airline_context @aircraft_context for") then
+    -- (in lower case too where the name is no English word: "climb FL300 el al", "... lufthansa")
+    local icao, e = self:airline_at(i)
+    if not icao or self.t[i].kind ~= "word" or self:word(i - 1, "@airline_context @aircraft_context for")
+        or not (airline_bare(self, i) and self.t[i].raw:match("^%u%l")
+          or (not self:word(i - 1, CM_DETERMINERS) and (e - i > 1 or G.name_words[self.t[i].text]))) then
       return false
     end
-    local icao, e = self:airline_at(i)
     if self:word(self:skip_fillers(e, false), "@correction") then return false end
     for _, c in ipairs(self.out) do
       if c:find("%f[%w]" .. icao .. "%w") or c:match("^CRE ") then return false end
@@ -4989,7 +5036,7 @@ function G:unaccounted()
   for i, t in ipairs(self.t) do
     if t.kind == "word" and not t.filler and not t.number_word
         and not explained[i] and not self.noted[i] and not self.u:used(i) and not ignored[t.text]
-        and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not known_word(t.text)
+        and ((t.text:match("^%a[%a'%-/]*$") and (MEANING[t.text] or COMMAND_ONLY[t.text] or not (known_word(t.text) or self:airline_word(i) or self:place_particle(i))
           or airline_left(i) or fraction_left(i) or (lexicon.clock_verbs[t.text] and not self.triggers[i] and not self:resumes_instruction(i))))
           or glued_value(i)) then
       said[#said + 1] = i

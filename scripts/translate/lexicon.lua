@@ -83,7 +83,7 @@ return {
     conjunctions = { "and", "but", "or", "nor", "so", "yet", "also", "because", "that", "though", "although",
         "whether", "while", "where", "how", "why", "then", "plus" },
     -- discourse markers and degree adverbs
-    discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit",
+    discourse = { "well", "right", "alright", "just", "also", "too", "very", "really", "quite", "rather", "bit", "lot",
         "little", "only", "even", "still", "already", "again", "actually", "maybe", "perhaps", "probably",
         "now", "first", "next", "last", "soon", "quickly", "slightly", "fine", "good", "great", "sure",
         -- (how hard a turn is flown, which squawk's turn model does not take: "hard left heading 350")
@@ -269,6 +269,7 @@ return {
         "margin",
         -- kinds of traffic, parts of the airspace, and what a vector avoids
         "arrival", "arrivals", "departures", "overflight", "overflights", "sector", "airspace", "area", "region",
+        "atlantic", "pacific",  -- (oceans a position is said over: "over the Atlantic at 45N 30W")
         "danger", "restricted", "prohibited",
         "weather", "terrain", "storm", "cell", "cloud", "thunderstorm", "icing", "mountains", "mountain", "hills",
         -- what a shape drawn on the scope is for ("a reference line", "the sector boundary")
@@ -864,7 +865,7 @@ return {
   -- the little words inside a place's name ("San Sebastian de los Reyes") that the navdata's short form of
   -- it leaves out ("S.S. REYES"); a name of three words or more said whole is looked for as said and as the
   -- initials of its words before the last, these left out, then the last word
-  name_particles = { "de", "del", "la", "las", "los", "le", "les", "du", "des", "da", "do", "dos", "di",
+  name_particles = { "el", "de", "del", "la", "las", "los", "le", "les", "du", "des", "da", "do", "dos", "di",
     "van", "von", "der", "den" },
   -- a navaid said by its name within this of a large airport stands on it: "create ... at Marseille" is the
   -- airport (LFML), not its NDB (MJ) [NM]

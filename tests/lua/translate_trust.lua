@@ -9124,3 +9124,39 @@ do
   asked(ex("KLM2156 descend, 2165"), "digits of another KLM after a comma")
   check_eq(ex("KLM2156 descend FL90, KLM2165 FL80"), "ALT KLM2156 FL90 ; ALT KLM2165 FL80")
 end
+
+-- Cycle 46 (hz46): a word of an airline's name of several words ("el" of "El Al", "lingus", "royal", "express") or an
+-- airline's ICAO prefix said as a word is accounted for only inside the name said whole or beside a callsign of that
+-- airline; anywhere else it is asked about, never set aside. A name of one word and the fillers ("a lot") stay read.
+do
+  local _, ex = scene({ "CRE ELY12 B738 32.0 34.9 090 FL200 250", "CRE EIN55 A320 53.4 -6.3 270 FL220 260",
+    "CRE KLM12 B738 52.0 4.6 090 FL200 250" })
+  check_eq(ex("KLM12 climb FL300 el"), "ASK I have ALT KLM12 FL300. What does 'el' mean?")
+  check_eq(ex("lingus KLM12 climb FL300"), "ASK I have ALT KLM12 FL300. What does 'lingus' mean?")
+  asked(ex("KLM12 reduce 230 royal"), "a word of 'Royal Air Maroc' alone")
+  asked(ex("KLM12 descend FL150 express"), "a word of an airline's name alone")
+  asked(ex("KLM12 descend FL150 aal"), "an ICAO prefix said as a word")
+  -- said whole, the name is read; beside a callsign of its airline, a word of its name describes it
+  check_eq(ex("El Al one two climb FL300"), "ALT ELY12 FL300")
+  check_eq(ex("the Aer Lingus turn left heading 200"), "HDG EIN55 200 LEFT")
+  check_eq(ex("Aer Lingus EIN55 turn left heading 200"), "HDG EIN55 200 LEFT")
+  check_eq(ex("KLM12 speed it up a lot, 300 knots"), "SPD KLM12 300")
+  -- an ocean a position is said over is a region, known apart from "Virgin Atlantic"
+  check_eq(ex("create VIR8 A333 over the Pacific at 30N 150W heading 270 FL380 Mach .82"),
+    "CRE VIR8 A333 30 -150 270 FL380 M0.82")
+  -- an airline said whole that no command carries is asked in lower case too where the name is no English word
+  check_eq(ex("KLM12 climb FL300 el al"), "ASK I have ALT KLM12 FL300. What does 'el' mean?")
+  check_eq(ex("KLM12 climb FL300 lufthansa"), "ASK I have ALT KLM12 FL300. What does 'lufthansa' mean?")
+  check_eq(ex("KLM12 climb FL300, traffic Aer Lingus crossing left to right"), "ALT KLM12 FL300")
+end
+
+-- Cycle 46 (hz46): a particle of a place's name straight before the place read ("direct El Palomar") is the name's;
+-- alone it is asked
+do
+  local _, ex = navscene({ "CRE FBZ5120 B738 -34.90 -57.60 290 FL100 250", "ADDWPT FBZ5120 PAL" },
+    "a navaid named with its particle")
+  if ex then
+    check_eq(ex("FBZ5120 proceed direct El Palomar"), "DIRECT FBZ5120 PAL")
+    asked(ex("FBZ5120 climb FL120 el"), "a particle alone")
+  end
+end
