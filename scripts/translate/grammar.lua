@@ -182,7 +182,7 @@ local function know_all(v, seen)
   -- accounted for only where one is read; lexicon.readback_heard is dropped with its values only, and
   -- lexicon.nationless_registrations are letters of a registration; lexicon.typed_abbreviations are read as
   -- their words only where those fit; lexicon.manner, deadline_places and held_value only where their reading
-  -- holds; lexicon.dictated_punctuation is the marks it names; lexicon.spanish is read as its English: they
+  -- holds; lexicon.dictated_punctuation is the marks it names; lexicon.said_whole is read as its English: they
   -- account for no word; lexicon.heard_as's words are read only where their neighbours fit, becoming the word
   -- they mean, so a heard form left as it was ("vire a la izquierda": no neighbour fits) is no word squawk knows;
   -- lexicon.name_particles are words of a place's name ("de los reyes"), accounted for only inside the name read,
@@ -193,7 +193,7 @@ local function know_all(v, seen)
       or v == lexicon.atc_units or v == lexicon.city_airports or v == lexicon.label_roles or v == lexicon.bare_labels
       or v == lexicon.addressed_roles or v == lexicon.readback_heard or v == lexicon.nationless_registrations
       or v == lexicon.manner or v == lexicon.deadline_places or v == lexicon.held_value
-      or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.spanish or v == lexicon.heard_as
+      or v == lexicon.dictated_punctuation or v == lexicon.acknowledged or v == lexicon.said_whole or v == lexicon.heard_as
       or v == lexicon.name_particles or v == lexicon.digit_homophones then
     return
   end
@@ -473,59 +473,75 @@ local function heard_forms(text)
   end)
 end
 
--- lexicon.spanish's words and phrases by their first word: first word -> { {words, means, joining, marks},
--- ... }, longest first (`means` false: kept as said); `joining` for a form of lexicon.spanish.joining, `marks` when the form makes its
--- sentence Spanish. Built once, on first use.
-function G.spanish_index()
-  if not G.spanish_built then
-    local S, index = lexicon.spanish, {}
-    local function add(key, means, joining, marks)
-      local words = {}
-      for w in key:gmatch("%S+") do words[#words + 1] = w end
-      index[words[1]] = index[words[1]] or {}
-      table.insert(index[words[1]], { words = words, means = means, joining = joining, marks = marks })
+-- lexicon.said_whole's words and phrases by language, then by their first word: language -> first word ->
+-- { {words, means, joining, marks}, ... }, longest first (`means` false: kept as said); `joining` for a form
+-- of the language's `joining`, `marks` when the form makes its sentence that language's. Built once, on
+-- first use.
+function G.said_whole_index()
+  if not G.said_whole_built then
+    G.said_whole_built = {}
+    for language, S in pairs(lexicon.said_whole) do
+      local index = {}
+      local function add(key, means, joining, marks)
+        local words = {}
+        for w in key:gmatch("%S+") do words[#words + 1] = w end
+        index[words[1]] = index[words[1]] or {}
+        table.insert(index[words[1]], { words = words, means = means, joining = joining, marks = marks })
+      end
+      for key, means in pairs(S.words) do add(key, means, false, not S.shared[key]) end
+      for key, means in pairs(S.joining) do add(key, means, true, false) end
+      for _, forms in pairs(index) do
+        table.sort(forms, function(x, y)
+          if #x.words ~= #y.words then return #x.words > #y.words end
+          return x.marks and not y.marks
+        end)
+      end
+      G.said_whole_built[language] = index
     end
-    for key, means in pairs(S.words) do add(key, means, false, not S.shared[key]) end
-    for key, means in pairs(S.joining) do add(key, means, true, false) end
-    for _, forms in pairs(index) do
-      table.sort(forms, function(x, y)
-        if #x.words ~= #y.words then return #x.words > #y.words end
-        return x.marks and not y.marks
-      end)
-    end
-    G.spanish_built = index
   end
-  return G.spanish_built
+  return G.said_whole_built
 end
--- Spanish said whole (lexicon.spanish), read as its English: "vire a la izquierda rumbo 170" -> "turn left
--- heading 170".
-function G.spanish(text)
-  local toks, bare = plain_words(text)
-  local index = G.spanish_index()
-  if not any_of(bare, index) then return text end
-  -- (the form of lexicon.spanish starting at token i, or nil; punctuation may close its last word only;
-  -- `joining` forms only when `spanish`)
-  local function form_at(i, spanish)
+-- One language said whole (lexicon.said_whole), read as its English: "vire a la izquierda rumbo 170" ->
+-- "turn left heading 170", "montez au niveau 140" -> "climb to flight level 140". A sentence holding a
+-- marking word of a language (the first of G.said_whole_order holding one) is read in that language alone;
+-- one holding none, in every language's words that mark none.
+G.said_whole_order = { "spanish", "french" }
+function G.said_whole(text)
+  local indexes = G.said_whole_index()
+  -- (the form of `index` starting at token i, or nil; punctuation may close its last word only; `joining`
+  -- forms only when `marked`)
+  local function form_at(index, toks, bare, i, marked)
     local forms = index[bare[i]]
     if not forms then return nil end
     for _, h in ipairs(forms) do
-      local ok = spanish or not h.joining
+      local ok = marked or not h.joining
       for k = 2, #h.words do ok = ok and bare[i + k - 1] == h.words[k] and not toks[i + k - 2]:match("%p$") end
       if ok then return h end
     end
   end
-  local spanish = false
-  for i = 1, #toks do
-    local h = form_at(i, false)
-    if h and h.marks then spanish = true break end
+  local function read(index, marked)
+    local toks, bare = plain_words(text)
+    if not any_of(bare, index) then return text end
+    return tokens.rewrite(text, toks, function(i)
+      local h = form_at(index, toks, bare, i, marked)
+      local n = h and #h.words or 1
+      if h and h.means == false then return table.concat(toks, " ", i, i + n - 1), i + n end
+      local en = h and h.means or (marked and lexicon.foreign_digits[bare[i]])
+      if en then return en .. (toks[i + n - 1]:match("%p+$") or ""), i + n end
+    end)
   end
-  return tokens.rewrite(text, toks, function(i)
-    local h = form_at(i, spanish)
-    local n = h and #h.words or 1
-    if h and h.means == false then return table.concat(toks, " ", i, i + n - 1), i + n end
-    local en = h and h.means or (spanish and lexicon.foreign_digits[bare[i]])
-    if en then return en .. (toks[i + n - 1]:match("%p+$") or ""), i + n end
-  end)
+  local toks, bare = plain_words(text)
+  for _, language in ipairs(G.said_whole_order) do
+    local index = indexes[language]
+    if any_of(bare, index) then
+      for i = 1, #toks do
+        local h = form_at(index, toks, bare, i, false)
+        if h and h.marks then return read(index, true) end
+      end
+    end
+  end
+  for _, language in ipairs(G.said_whole_order) do text = read(indexes[language], false) end
+  return text
 end
 
 -- A level or heading whose digits were written apart ("fl 3 4 0", "flight level 1 30", "heading 0 90"):
@@ -1023,7 +1039,7 @@ local function written_forms(text)
   -- "@ FL200", "x NAXEL @ 250": an at sign typed apart before a value or a name is "at"
   where("@", "(%s)@%s*(%w)", "%1at %2")
   text = typed_abbreviations(lone_multipliers(tokens.numerals_apart(text, DIGIT_WORDS)))
-  text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(G.spanish(text)))))))))
+  text = hyphened_types(spelled(heard_forms(negated_values(readback_heard(self_corrections(unlabelled(foreign_digits(G.said_whole(text)))))))))
   low = text:lower()
   -- a position typed as whole degrees after the hemisphere, then minutes ("N55 50.0 W003 20.0", "S33 57
   -- E151 10"): decimal degrees before their hemisphere ("55.833333 N 3.333333 W"); minutes of 60 or more

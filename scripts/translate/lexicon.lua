@@ -1130,15 +1130,13 @@ return {
     { heard = { "two", "too" }, means = "to",
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
-    -- French phraseology before its value, read the same way ("cap 270", "montez niveau 350"; Spanish is
-    -- lexicon.spanish)
+    -- French phraseology before its value said in English, read the same way ("cap 270"; French said
+    -- whole is lexicon.said_whole.french)
     { heard = { "cap" }, means = "heading", before = { "#number" }, not_after = { "red" } },
     { heard = { "niveau" }, means = "flight level", before = { "#number" } },
     { heard = { "vitesse" }, means = "speed", before = { "#number" } },
-    { heard = { "descendez" }, means = "descend", before = { "#number", "niveau", "a", "fl" } },
-    { heard = { "montez", "monte" }, means = "climb", before = { "#number", "niveau", "a", "fl" } },
     -- Spanish words said in an English clearance that are also Portuguese or Italian, read only where
-    -- the instruction word is expected (lexicon.spanish.joining: "suba flight level 260", "descend y
+    -- the instruction word is expected (lexicon.said_whole.spanish.joining: "suba flight level 260", "descend y
     -- maintain", "climb 5 mil feet")
     { heard = { "suba" }, means = "climb", before = { "#number", "a", "y", "fl", "flight", "level", "to" } },
     { heard = { "y" }, means = "and", between = { { "suba", "descend", "climb" }, { "maintain" } } },
@@ -1146,12 +1144,14 @@ return {
     -- (English typed by a Spanish speaker: "procede direct GAVOL", as "proceder" is spelled)
     { heard = { "procede", "proced" }, means = "proceed", before = { "direct", "direct-to", "to" } },
   },
-  -- Spanish said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia 6253",
-  -- "corre la simulacion"), read as its English word for word (grammar.lua G.spanish): Spanish word or
-  -- phrase (lower case, with and without its accents) -> English. A sentence holding a word or phrase of
-  -- `words` not in `shared` is Spanish: there every word or phrase of `words` and `joining` and every digit
-  -- of foreign_digits is read as its English; elsewhere only those of `words`. A Spanish word of none of them
-  -- stays unaccounted for, and is asked.
+  -- A language said whole by a controller or instructor ("vire a la izquierda rumbo 170", "borra el iberia
+  -- 6253", "montez au niveau 140", "tournez à gauche cap 030"), read as its English word for word (grammar.lua
+  -- G.said_whole): one table per language, word or phrase (lower case, with and without its accents) ->
+  -- English. A sentence holding a word or phrase of a language's `words` not in its `shared` is in that
+  -- language: there every word or phrase of its `words` and `joining` and every digit of foreign_digits is
+  -- read as its English; elsewhere only those of `words`. A word of the language in none of them stays
+  -- unaccounted for, and is asked.
+  said_whole = {
   spanish = {
     words = {
       -- instructions and their nouns
@@ -1204,6 +1204,37 @@ return {
     -- small words also English, Portuguese or Italian ("a", "con", "en", "suba")
     joining = { a = "at", al = "to the", la = "the", el = "the", los = "the", las = "the", un = "a", una = "a",
       en = "at", con = "at", y = "and", mil = "thousand", suba = "climb", de = "of", del = "of the" },
+  },
+  french = {
+    words = {
+      -- instructions and their nouns (the formal imperative, the familiar and the infinitive)
+      montez = "climb", monte = "climb", monter = "climb", descendez = "descend", descendre = "descend", tournez = "turn", tourne = "turn", tourner = "turn", virez = "turn", vire = "turn",
+      virer = "turn", prenez = "fly", ["prenez le"] = "fly", prends = "fly", maintenez = "maintain",
+      maintiens = "maintain", maintenir = "maintain", ["réduisez"] = "reduce", reduisez = "reduce",
+      ["réduis"] = "reduce", reduis = "reduce", ["réduire"] = "reduce", reduire = "reduce",
+      augmentez = "increase", augmente = "increase", augmenter = "increase", ["accélérez"] = "increase",
+      accelerez = "increase",
+      gauche = "left", droite = "right", ["à gauche"] = "left", ["à droite"] = "right",
+      ["sur la gauche"] = "left", ["sur la droite"] = "right",
+      ["niveau de vol"] = "flight level", ["vitesse verticale"] = "vertical speed",
+      ["au niveau"] = "to flight level", ["au cap"] = "heading", pieds = "feet", noeuds = "knots",
+      ["nœuds"] = "knots", ["degrés"] = "degrees", degres = "degrees", ["par minute"] = "per minute",
+      ["directement"] = "direct", ["direct sur"] = "direct to", ["directement sur"] = "direct to",
+      -- the experimenter's commands and courtesy ("pause s'il vous plaît", "accélère fois deux")
+      ["s'il vous plaît"] = "please", ["s'il vous plait"] = "please", ["s'il te plaît"] = "please",
+      ["s'il te plait"] = "please", merci = "thanks", ["accélère"] = "speed up", accelere = "speed up",
+      fois = "times", supprimez = "delete", supprime = "delete", ["créez"] = "create", creez = "create",
+      ["crée"] = "create",
+    },
+    -- words of `words` said the same in English or Spanish: no sign of French alone
+    shared = { vire = true },
+    -- small words, number words and words lexicon.heard_as reads before a value in English ("niveau"),
+    -- read only in a French sentence
+    joining = { ["à"] = "to", a = "to", au = "to", le = "the", la = "the", les = "the", et = "and", de = "of",
+      du = "of the", ["à la"] = "to", cap = "heading", niveau = "flight level", vitesse = "speed", dix = "ten", vingt = "twenty", trente = "thirty",
+      quarante = "forty", cinquante = "fifty", soixante = "sixty", cent = "hundred", cents = "hundred",
+      mille = "thousand" },
+  },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",
   -- "Iberia tres uno seis seis", "Azul quatro zero cinco zero"; Brazilian "meia" is six): that digit

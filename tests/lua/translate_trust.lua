@@ -8879,7 +8879,7 @@ do
   check_eq(ex("FFT88 reduce 260 after TOLKA"), "AT FFT88 TOLKA DO SPD FFT88 260")
   asked(ex("FFT88 reduce 260 after TOLKA 240"), "a value with no instruction word after the waypoint")
 end
--- Cycle 45 (es102): Spanish said whole is read word for word as its English (lexicon.spanish): turns with
+-- Cycle 45 (es102): Spanish said whole is read word for word as its English (lexicon.said_whole.spanish): turns with
 -- their side and degrees, levels, rates, crossings, the experimenter's commands; a Spanish word the table does
 -- not know is asked
 do
@@ -9015,12 +9015,12 @@ do
 end
 
 -- Cycle 45 (hz45): a word of lexicon.heard_as left as it was heard (its neighbours did not fit: "climb FL300
--- montez") or a name particle outside a name read is no word squawk knows: asked, never set aside (Spanish
--- said whole is read through lexicon.spanish)
+-- niveau") or a name particle outside a name read is no word squawk knows: asked, never set aside (Spanish
+-- said whole is read through lexicon.said_whole.spanish)
 do
   local _, ex = scene({ "CRE IBE3241 A320 40.6 -3.8 200 FL180 280", "CRE VLG12 A320 40.8 -3.4 160 FL240 290" })
   check_eq(ex("iberia 3241 gire a la derecha rumbo 250"), "HDG IBE3241 250 RIGHT")
-  check_eq(ex("IBE3241 climb FL300 montez"), "ASK I have ALT IBE3241 FL300. What does 'montez' mean?")
+  check_eq(ex("IBE3241 climb FL300 niveau"), "ASK I have ALT IBE3241 FL300. What does 'niveau' mean?")
   check_eq(ex("IBE3241 descend FL120 la"), "ASK I have ALT IBE3241 FL120. What does 'la' mean?")
   -- where the neighbours fit, the heard form is read as the word it means
   check_eq(ex("iberia 3241 vire izquierda rumbo 170"), "HDG IBE3241 170 LEFT")
@@ -9159,4 +9159,30 @@ do
     check_eq(ex("FBZ5120 proceed direct El Palomar"), "DIRECT FBZ5120 PAL")
     asked(ex("FBZ5120 climb FL120 el"), "a particle alone")
   end
+end
+
+-- Cycle 46 (fr101): French said whole is read word for word as its English through the same mechanism as
+-- Spanish (lexicon.said_whole.french): verbs in the formal and familiar imperative, sides, "niveau", "cap",
+-- "vitesse", units and French number words in a French sentence; a French word the table does not know is asked
+do
+  local _, ex = scene({ "CRE AFR346 A320 45.5 -73.6 090 FL150 280", "CRE TSC77 A321 46.8 -71.2 200 9000 250" })
+  check_eq(ex("AFR346 montez au niveau 210"), "ALT AFR346 FL210")
+  check_eq(ex("Air France 346, descendez niveau 090 et réduisez 240"), "ALT AFR346 FL90 ; SPD AFR346 240")
+  check_eq(ex("AFR346 virez à droite cap 140"), "HDG AFR346 140 RIGHT")
+  check_eq(ex("AFR346 tourne à gauche cap 320"), "HDG AFR346 320 LEFT")
+  check_eq(ex("TSC77 vitesse deux cent dix noeuds"), "SPD TSC77 210")
+  check_eq(ex("TSC77 descendez 7000 pieds"), "ALT TSC77 7000")
+  check_eq(ex("TSC77, prenez le cap 150 à droite"), "HDG TSC77 150 RIGHT")
+  check_eq(ex("accélère fois quatre"), "DTMULT 4")
+  -- English with one French level word before its value, and a French courtesy
+  check_eq(ex("Transat 77 climb to niveau one-two-zero, merci"), "ALT TSC77 FL120")
+  -- the experimenter in French
+  check_eq(ex("pause s'il vous plaît"), "HOLD")
+  -- a French word the table does not know is asked, never set aside
+  asked(ex("AFR346 montez niveau 210 rapidement"), "an unknown French word")
+  asked(ex("AFR346 virez à gauche cap 300 doucement"), "an unknown French word")
+  -- outside a French sentence the joining words stay English or are asked
+  check_eq(ex("AFR346 climb FL300 et"), "ASK I have ALT AFR346 FL300. What does 'et' mean?")
+  -- Spanish said whole is unchanged
+  check_eq(ex("TSC77 vire a la izquierda rumbo 170"), "HDG TSC77 170 LEFT")
 end
