@@ -120,6 +120,12 @@ local names = {
     { "transat", "TSC" },
     { "rouge", "ROU" },
     { "porter", "POE" },
+    -- Canada's regional airlines by ICAO telephony
+    { "pascan", "PSC" },
+    { "air inuit", "AIE" },
+    { "calm air", "CAV" },
+    { "perimeter", "PAG" },
+    { "air north", "ANT" },
     { "aeromexico", "AMX" },
     { "volaris", "VOI" },
     { "avianca", "AVA" },

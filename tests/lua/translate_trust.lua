@@ -9186,3 +9186,15 @@ do
   -- Spanish said whole is unchanged
   check_eq(ex("TSC77 vire a la izquierda rumbo 170"), "HDG TSC77 170 LEFT")
 end
+
+-- Cycle 46 (fr101): Canada's regional airlines by telephony (Pascan, Air Inuit, Calm Air, Perimeter, Air North):
+-- read after a verb and described with the aircraft's type; an unknown number of theirs is asked
+do
+  local _, ex = scene({ "CRE PSC77 PC12 46.8 -71.4 090 8000 200", "CRE AIE55 DH8C 46.9 -71.1 200 FL110 230",
+    "CRE CAV9 ATR72 58.7 -94.1 180 FL150 250" })
+  check_eq(ex("delete Pascan 77"), "DEL PSC77")
+  check_eq(ex("the Air Inuit Dash 8, increase to 250 knots"), "SPD AIE55 250")
+  check_eq(ex("calm air nine descend FL100"), "ALT CAV9 FL100")
+  check_eq(ex("create Pascan 88, PC-12, at CYQB, heading 120, 6000 feet, 190 knots"), "CRE PSC88 PC12 CYQB 120 6000 190")
+  asked(ex("Pascan 78 descend 5000"), "a Pascan flight not flying")
+end
