@@ -9198,3 +9198,14 @@ do
   check_eq(ex("create Pascan 88, PC-12, at CYQB, heading 120, 6000 feet, 190 knots"), "CRE PSC88 PC12 CYQB 120 6000 190")
   asked(ex("Pascan 78 descend 5000"), "a Pascan flight not flying")
 end
+
+-- Cycle 46 (fr101): "show me IDENT" with no traffic: an ident the navdata holds is shown where it is; one it does
+-- not hold is asked
+do
+  local _, ex = navscene({}, "idents shown with no traffic")
+  if ex then
+    check_eq(ex("show me EHAM"), "POS EHAM")
+    check_eq(ex("show SPY"), "POS SPY")
+    asked(ex("show me QQXZV"), "an ident the navdata does not hold")
+  end
+end
