@@ -9209,3 +9209,12 @@ do
     asked(ex("show me QQXZV"), "an ident the navdata does not hold")
   end
 end
+
+-- Cycle 46 (fr101): "back to real time, speed one": one after "speed" beside real time, no aircraft named, is the
+-- clock's rate; another number there is asked
+do
+  local _, ex = scene({ "CRE KLM12 B738 52.0 4.6 090 FL200 250", "CRE KLM14 B738 52.2 4.8 090 FL220 250" })
+  check_eq(ex("ok back to real time now, speed one"), "DTMULT 1")
+  check_eq(ex("real time again, speed 1"), "DTMULT 1")
+  asked(ex("back to real time, speed 240"), "a speed beside real time with no aircraft")
+end
