@@ -6394,6 +6394,46 @@ local function homophone_ids(text, world, parsed)
   return text
 end
 
+-- "Air Canada four hundred twelve", "Air Canada four-hundred-twelve": a flight number said in hundreds straight
+-- after an airline's word (a digit one to nine, "hundred", then one to ninety-nine in words) is its three
+-- digits ("Air Canada 412") when the text so read names exactly one aircraft flying, matched exactly, that the
+-- text as said does not; else the text stays as said.
+G.below_hundred = { one = 1, two = 2, three = 3, four = 4, five = 5, six = 6, seven = 7, eight = 8, nine = 9,
+  ten = 10, eleven = 11, twelve = 12, thirteen = 13, fourteen = 14, fifteen = 15, sixteen = 16, seventeen = 17,
+  eighteen = 18, nineteen = 19, twenty = 20, thirty = 30, forty = 40, fifty = 50, sixty = 60, seventy = 70,
+  eighty = 80, ninety = 90 }
+function G.hundreds_callsign(text, world)
+  if #world.aircraft == 0 or not text:find("[Hh][Uu][Nn][Dd][Rr][Ee][Dd]") then return text end
+  local spaced = text:gsub("%S*[Hh][Uu][Nn][Dd][Rr][Ee][Dd]%S*", function(w) return (w:gsub("(%a)%-(%a)", "%1 %2")) end)
+    :gsub("([Hh][Uu][Nn][Dd][Rr][Ee][Dd]%s+%a+)%-(%a)", "%1 %2")
+  local toks, bare = plain_words(spaced)
+  local N = G.below_hundred
+  for i = 2, #toks - 2 do
+    local d = SAID_DIGIT[bare[i]]
+    local at = bare[i + 2] == "and" and not toks[i + 1]:match("%p$") and i + 3 or i + 2  -- ("four hundred and twelve")
+    local n = N[bare[at]]
+    if AIRLINE_LAST[bare[i - 1]] and d and d ~= "0" and bare[i + 1] == "hundred" and n
+        and not toks[i]:match("%p$") and not toks[at - 1]:match("%p$") then
+      local last = at
+      local ones = N[bare[at + 1]]
+      if n >= 20 and n % 10 == 0 and ones and ones < 10 and not toks[at]:match("%p$") then
+        n, last = n + ones, at + 1
+      end
+      local words = {}
+      for k = 1, i - 1 do words[#words + 1] = toks[k] end
+      words[#words + 1] = string.format("%s%02d", d, n) .. (toks[last]:match("%p+$") or "")
+      for k = last + 1, #toks do words[#words + 1] = toks[k] end
+      local read, parsed = table.concat(words, " "), {}
+      local said, new = exact_aircraft(text, world, parsed), nil
+      for id in pairs(exact_aircraft(read, world, parsed)) do
+        if not said[id] then new = new == nil and id or false end
+      end
+      if new then return read end
+    end
+  end
+  return text
+end
+
 -- A dash standing alone (" - ", " -- ", an en or em dash; a bracket written_forms made one: "800 ft
 -- (testing reduced vertical)") sets what follows apart: it is read as a comma (the lexer drops dashes),
 -- and the ordinals of the commas dashes became are returned as a set (G:in_reason reads commentary after
@@ -6773,7 +6813,7 @@ function M.translate(text, world)
   end
   text = airline_values(named_airline_ids(split_ids(unglued_ids(G.iata_ids(text, world.aircraft), world.aircraft),
     world.aircraft)), world.aircraft)
-  text = homophone_ids(glued_telephony(text, world.aircraft), world)
+  text = homophone_ids(G.hundreds_callsign(glued_telephony(text, world.aircraft), world), world)
   local abbreviated
   text, abbreviated = abbreviated_registrations(text, world.aircraft)
   if abbreviated then return { commands = {}, ask = abbreviated } end

@@ -9218,3 +9218,15 @@ do
   check_eq(ex("real time again, speed 1"), "DTMULT 1")
   asked(ex("back to real time, speed 240"), "a speed beside real time with no aircraft")
 end
+
+-- Cycle 46 (fr101): a flight number said in hundreds after the airline ("four hundred twelve", "four-hundred-
+-- twelve", "six hundred and five") is its three digits when exactly one aircraft flying is so named; else asked
+do
+  local _, ex = scene({ "CRE ACA412 A320 45.6 -73.3 250 FL110 280", "CRE ACA605 A320 45.9 -73.6 250 FL130 280",
+    "CRE JZA731 DH8D 45.3 -74.1 060 8000 220" })
+  check_eq(ex("Air Canada four-hundred-twelve, you turn left heading 200"), "HDG ACA412 200 LEFT")
+  check_eq(ex("Air Canada six hundred and five climb FL150"), "ALT ACA605 FL150")
+  check_eq(ex("Jazz seven hundred thirty-one descend 5000"), "ALT JZA731 5000")
+  asked(ex("Air Canada four hundred thirteen, turn left heading 200"), "a flight number in hundreds no aircraft has")
+  asked(ex("ACA412 descend four hundred twelve"), "hundreds that are no flight number")
+end
