@@ -981,6 +981,10 @@ return {
     { what = "position reports", words = "report reporting",
       near = { "passing", "reaching", "leaving", "established", "abeam", "overhead", "over", "crossing",
                "vacating", "when", "at", "steady" } },
+    -- "descend 4000, report the field in sight", "report traffic in sight": after an instruction, a sighting the
+    -- pilot reports, no instruction (alone it is asked)
+    { what = "position reports", words = "report", near = { "sight", "visual" }, window = 4,
+      after_instruction = true, clause = true },
     -- "turn right 15 degrees, report heading": after an instruction, the readback of what it set is a
     -- report the pilot makes (alone, "report heading" asks for the aircraft's state: POS)
     { what = "position reports", words = "report", near = { "heading", "level", "altitude", "speed", "mach" },

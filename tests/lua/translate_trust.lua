@@ -9230,3 +9230,14 @@ do
   asked(ex("Air Canada four hundred thirteen, turn left heading 200"), "a flight number in hundreds no aircraft has")
   asked(ex("ACA412 descend four hundred twelve"), "hundreds that are no flight number")
 end
+
+-- Cycle 46 (fr101): "report the field in sight" after an instruction is a sighting the pilot reports, set aside to
+-- the end of its clause; an instruction after it is read; alone it is asked
+do
+  local _, ex = scene({ "CRE PSC77 PC12 46.8 -71.4 090 8000 200", "CRE PSC78 PC12 46.9 -71.5 090 9000 200" })
+  check_eq(ex("PSC77 descend 3000, report the runway in sight"), "ALT PSC77 3000")
+  check_eq(ex("PSC77 turn right heading 120, report traffic in sight"), "HDG PSC77 120 RIGHT")
+  check_eq(ex("PSC77 descend 3000, report the field in sight, then turn left heading 200"),
+    "ALT PSC77 3000 ; HDG PSC77 200 LEFT")
+  asked(ex("PSC77 report the field in sight"), "a sighting alone")
+end
