@@ -430,7 +430,7 @@ local function heard_word_is(w, set)
   if not w then return false end
   w = w:lower():gsub("%p+$", "")
   return set[w] == true or (set["#number"] == true and (NUMBER_WORDS[w] == true or w:match("^%d") ~= nil
-    or w:match("^fl%d+$") ~= nil))
+    or w:match("^fl%d+$") ~= nil or NUMBER_WORDS[w:match("^(%a+)%-%a") or ""] == true))  -- ("one-two-zero")
 end
 -- lexicon.heard_as by the first word of each heard form
 local HEARD = {}

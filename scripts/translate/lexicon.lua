@@ -1226,7 +1226,7 @@ return {
       ["directement"] = "direct", ["direct sur"] = "direct to", ["directement sur"] = "direct to",
       -- the experimenter's commands and courtesy ("pause s'il vous plaît", "accélère fois deux")
       ["s'il vous plaît"] = "please", ["s'il vous plait"] = "please", ["s'il te plaît"] = "please",
-      ["s'il te plait"] = "please", merci = "thanks", ["accélère"] = "speed up", accelere = "speed up",
+      ["s'il te plait"] = "please", ["accélère"] = "speed up", accelere = "speed up",
       fois = "times", supprimez = "delete", supprime = "delete", ["créez"] = "create", creez = "create",
       ["crée"] = "create",
     },
