@@ -1212,7 +1212,8 @@ return {
   french = {
     words = {
       -- instructions and their nouns (the formal imperative, the familiar and the infinitive)
-      montez = "climb", monte = "climb", monter = "climb", descendez = "descend", descendre = "descend", tournez = "turn", tourne = "turn", tourner = "turn", virez = "turn", vire = "turn",
+      montez = "climb", monter = "climb", descendez = "descend", descendre = "descend", tournez = "turn",
+      tourne = "turn", tourner = "turn", virez = "turn", vire = "turn",
       virer = "turn", prenez = "fly", ["prenez le"] = "fly", prends = "fly", maintenez = "maintain",
       maintiens = "maintain", maintenir = "maintain", ["réduisez"] = "reduce", reduisez = "reduce",
       ["réduis"] = "reduce", reduis = "reduce", ["réduire"] = "reduce", reduire = "reduce",
@@ -1235,9 +1236,9 @@ return {
     -- small words, number words and words lexicon.heard_as reads before a value in English ("niveau"),
     -- read only in a French sentence
     joining = { ["à"] = "to", a = "to", au = "to", le = "the", la = "the", les = "the", et = "and", de = "of",
-      du = "of the", ["à la"] = "to", cap = "heading", niveau = "flight level", vitesse = "speed", dix = "ten", vingt = "twenty", trente = "thirty",
-      quarante = "forty", cinquante = "fifty", soixante = "sixty", cent = "hundred", cents = "hundred",
-      mille = "thousand" },
+      du = "of the", ["à la"] = "to", cap = "heading", niveau = "flight level", vitesse = "speed", dix = "ten",
+      vingt = "twenty", trente = "thirty", quarante = "forty", cinquante = "fifty", soixante = "sixty",
+      cent = "hundred", cents = "hundred", mille = "thousand" },
   },
   },
   -- digits said in Spanish, Portuguese or French by a controller speaking English ("Avianca cero one nine",

@@ -544,8 +544,9 @@ return function(intent, rule, words)
   -- before and no aircraft named, is the clock's rate (another number there is asked)
   rule { "speed", "dtmult", when = function(g, i)
     local q = g:quantities(i + 1, #g.t + 1)[1]
-    return q ~= nil and q.kind == "plain" and q.value == 1 and q.b == i + 1 and q.e > #g.t and g:preceded_by(i, 5, "real")
-      and g:word_in(math.max(1, i - 4), i, "time") and not g:has_ref(1, #g.t + 1, "aircraft")
+    return q ~= nil and q.kind == "plain" and q.value == 1 and q.b == i + 1 and q.e > #g.t
+      and g:preceded_by(i, 5, "real") and g:word_in(math.max(1, i - 4), i, "time")
+      and not g:has_ref(1, #g.t + 1, "aircraft")
   end }
   -- "set the simulation speed back to normal, real time": the clock's rate back to real time (DTMULT reads the
   -- rate; "normal" alone is asked), never fast time
