@@ -1134,11 +1134,12 @@ return {
     { heard = { "two", "too" }, means = "to",
       between = { { "climb", "descend", "maintain", "turn", "left", "right", "reduce", "increase" },
                   { "flight", "level", "fl", "heading", "speed", "altitude" } } },
-    -- French phraseology before its value said in English, read the same way ("cap 270"; French said
-    -- whole is lexicon.said_whole.french)
+    -- French phraseology before its value said in English, read the same way ("cap 270", "monte FL150", a
+    -- place name's word elsewhere; French said whole is lexicon.said_whole.french)
     { heard = { "cap" }, means = "heading", before = { "#number" }, not_after = { "red" } },
     { heard = { "niveau" }, means = "flight level", before = { "#number" } },
     { heard = { "vitesse" }, means = "speed", before = { "#number" } },
+    { heard = { "monte" }, means = "climb", before = { "#number", "niveau", "a", "fl" } },
     -- Spanish words said in an English clearance that are also Portuguese or Italian, read only where
     -- the instruction word is expected (lexicon.said_whole.spanish.joining: "suba flight level 260", "descend y
     -- maintain", "climb 5 mil feet")

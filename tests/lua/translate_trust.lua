@@ -9176,6 +9176,7 @@ do
   check_eq(ex("accélère fois quatre"), "DTMULT 4")
   -- English with one French level word before its value, and a French courtesy
   check_eq(ex("Transat 77 climb to niveau one-two-zero, merci"), "ALT TSC77 FL120")
+  check_eq(ex("AFR346 monte FL250"), "ALT AFR346 FL250")
   -- the experimenter in French
   check_eq(ex("pause s'il vous plaît"), "HOLD")
   -- a French word the table does not know is asked, never set aside
