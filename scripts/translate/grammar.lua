@@ -6538,7 +6538,8 @@ local STEP_WORDS = { one = 1, two = 2, three = 3, four = 4, five = 5, six = 6, s
 local function step_marker(text, at)
   for _, p in ipairs(STEP_MARKERS) do
     local _, e, n = text:find(p, at)
-    n = n and (tonumber(n) or STEP_WORDS[n:lower()])
+    -- ("Step 1b:", "Step 6a:": a step's part, lettered, is that step)
+    n = n and (tonumber(n) or STEP_WORDS[n:lower()] or tonumber(n:match("^(%d%d?)%l$")))
     if n and text:find("^%a", e + 1) then return n, e end
   end
 end
@@ -6555,8 +6556,20 @@ local function numbered_steps(text)
   end
   local first = text:find("%S")
   local n, e = step_marker(text, first or 1)
-  if n ~= 1 then return text end
-  local parts, from, want = {}, e + 1, 2
+  if not n then return text end
+  -- (a protocol's step named by the word, "Step 7: ...", "step 4 - ...", "Step 6a: ...", or a punctuated number
+  -- before an instruction, "7: set ...", may open the text at any number: the label is set apart whole and the
+  -- count goes on from it; otherwise a number other than 1 is a value)
+  local label = text:sub(first, e)
+  local punctuated = label:find("[:.)%-]") ~= nil
+  local worded = label:find("^[Ss]tep") ~= nil
+  local rest = text:sub(e + 1)
+  -- (a label with no punctuation is one when an instruction follows it: "Step 7 set time multiplier to 4"; a
+  -- time unit after the number is a time step, "step 5 seconds")
+  local labelled = (worded or punctuated) and (punctuated and (worded or M.has_instruction(rest))
+    or (not lexicon.step_units[rest:match("^%a+"):lower()] and M.has_instruction(rest)))
+  if n ~= 1 and not labelled then return text end
+  local parts, from, want = {}, e + 1, n + 1
   local at = from
   while true do
     local b = text:find("[%s,;]%S", at)
@@ -6569,7 +6582,7 @@ local function numbered_steps(text)
     at = b + 1
   end
   -- (one step alone marked with no punctuation, "step 1 second", is no list: the words stay)
-  if #parts == 0 and not text:sub(first, e):find("[:.)%-]") then return text end
+  if #parts == 0 and not punctuated and not labelled then return text end
   parts[#parts + 1] = text:sub(from)
   return table.concat(parts, ". ")
 end

@@ -1311,4 +1311,7 @@ return {
   zone_radius = { "radius", "zoner" },
   -- bare nouns naming what to show, after a handled instruction
   shown = { "altitude", "speed", "heading", "airspeed" },
+  -- units after "step N" that make it the simulation's time step, never a protocol's step label (set)
+  step_units = { s = true, sec = true, secs = true, second = true, seconds = true, ms = true, hz = true,
+    min = true, mins = true, minute = true, minutes = true },
 }

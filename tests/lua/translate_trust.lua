@@ -9160,3 +9160,16 @@ do
     asked(ex("FBZ5120 climb FL120 el"), "a particle alone")
   end
 end
+
+-- Cycle 46 (s100): a protocol's step label opening the text ("Step 7:", "Step 1b:", "step 4 -", "7:", "Step 7" before
+-- an instruction) is set apart whole at any number and never gives a value; "step 5 seconds" stays the time step
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("Step 9: set the time multiplier to 3"), "DTMULT 3")
+  check_eq(ex("Step 3b: AC001 descend FL200"), "ALT AC001 FL200")
+  check_eq(ex("step 5 - AC001 turn left heading 250"), "HDG AC001 250 LEFT")
+  check_eq(ex("8: set the lookahead to 240 s"), "DTLOOK 240")
+  check_eq(ex("Step 6 set the time multiplier to 2"), "DTMULT 2")
+  check_eq(ex("Step 4: AC001 reduce speed 250 Step 5: AC001 descend FL250"), "SPD AC001 250 ; ALT AC001 FL250")
+  check(not ex("step 5 seconds"):find("DTMULT", 1, true), "a time step is no label")
+end
