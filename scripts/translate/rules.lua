@@ -1701,6 +1701,14 @@ return function(intent, rule, words)
     return g:word(k, "and") and g:word(k + 1, "fast ff")
   end }
   rule { "go resume continue unpause run", "op", when = function(g, i) return g:clause_alone(i, i + 1) end }
+  -- "set multiplier 8 and run", "descend FL080 then run (it)": the clock started after another instruction, the
+  -- verb ending the text ("and run at 4x" is the rate's)
+  rule { "run", "op", prev = { 1, "and then" }, when = function(g, i)
+    local k = i + 1
+    if g:word(k, "the") and g:word(k + 1, "@sim") then k = k + 2 elseif g:word(k, "it @sim") then k = k + 1 end
+    while k <= #g.t and (g.t[k].kind == "punct" or g.t[k].filler or g:word(k, "now")) do k = k + 1 end
+    return k > #g.t
+  end }
   rule { "unpause unfreeze op", "op" }
   rule { "resume continue unpause start", "op", when = the_run }
   rule { "stop", "hold", when = the_run }

@@ -9173,3 +9173,13 @@ do
   check_eq(ex("Step 4: AC001 reduce speed 250 Step 5: AC001 descend FL250"), "SPD AC001 250 ; ALT AC001 FL250")
   check(not ex("step 5 seconds"):find("DTMULT", 1, true), "a time step is no label")
 end
+
+-- Cycle 46 (s100): "run" ending the text after another instruction ("... and run", "... then run it") starts the
+-- clock (OP); with a rate after it, "and run at 4x", it stays the rate's
+do
+  local _, ex = scene({ "CRE AC001 B744 52.0 4.0 090 FL300 300" })
+  check_eq(ex("set the time multiplier to 6 and run"), "DTMULT 6 ; OP")
+  check_eq(ex("AC001 climb FL340 then run it"), "ALT AC001 FL340 ; OP")
+  check_eq(ex("lookahead 240 s and then run the simulation"), "DTLOOK 240 ; OP")
+  check(not ex("set the time multiplier to 6 and run at 3x"):find("OP", 1, true), "a rate after 'run' is no start")
+end
